@@ -1,0 +1,13 @@
+//! `handling`: a vehicle handling simulator and analysis toolkit around a
+//! 2-DOF (sideslip β, yaw rate r) model with lateral load transfer and
+//! pluggable nonlinear tyres (Gim, simplified Magic Formula, UniTire, PAC89).
+//!
+//! SI units and radians everywhere; ISO 8855 axes (x forward, y left, z up;
+//! positive steer turns left). See the README for the file formats.
+
+pub mod error;
+pub mod manoeuvre;
+pub mod metrics;
+pub mod sim;
+pub mod tyre;
+pub mod vehicle;

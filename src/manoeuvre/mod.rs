@@ -1,0 +1,259 @@
+//! Open-loop manoeuvres: front road-wheel steer δ(t) and forward speed u(t).
+//!
+//! Step steer as GB/T 6323-2014 and ISO 7401:2011 define it (a ramp from 0 to
+//! the amplitude in `rise_time`, time zero of the metrics at 50 % of the
+//! steer input), ramp steer, sine, linear frequency sweep and the replay of a
+//! measured run (linear interpolation of its steer and speed).
+//! Units: s, rad, m/s, Hz. Positive steer turns left.
+
+use serde::{Deserialize, Serialize};
+
+/// Step steer: δ rises linearly from 0 to `amplitude` between `start` and
+/// `start + rise_time`, at constant speed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct StepSteer {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Final steer angle, rad.
+    pub amplitude: f64,
+    /// Time the steer starts to move, s.
+    pub start: f64,
+    /// 0–100 % rise time of the steer, s (GB/T 6323: ≤ 0.2 s).
+    pub rise_time: f64,
+    /// End of the run, s.
+    pub end: f64,
+}
+
+/// Ramp steer at constant speed: δ = rate·(t − start) after `start`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RampSteer {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Steer rate, rad/s.
+    pub rate: f64,
+    /// Time the ramp starts, s.
+    pub start: f64,
+    /// End of the run, s.
+    pub end: f64,
+}
+
+/// Sine steer at constant speed from `start` on.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SineSteer {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Steer amplitude, rad.
+    pub amplitude: f64,
+    /// Frequency, Hz.
+    pub frequency: f64,
+    /// Time the sine starts (at zero phase), s.
+    pub start: f64,
+    /// End of the run, s.
+    pub end: f64,
+}
+
+/// Linear frequency sweep (chirp) at constant speed from `start` to `end`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SweepSteer {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Steer amplitude, rad.
+    pub amplitude: f64,
+    /// Frequency at `start`, Hz.
+    pub f_start: f64,
+    /// Frequency at `end`, Hz.
+    pub f_end: f64,
+    /// Start of the sweep, s.
+    pub start: f64,
+    /// End of the sweep and of the run, s.
+    pub end: f64,
+}
+
+/// A measured run's steer and speed, replayed by linear interpolation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Replay {
+    /// Sample times, s, strictly increasing.
+    pub t: Vec<f64>,
+    /// Steer, rad.
+    pub steer: Vec<f64>,
+    /// Speed, m/s.
+    pub speed: Vec<f64>,
+}
+
+impl Replay {
+    /// Index `i` with `t[i] ≤ t < t[i+1]`, clamped to the ends.
+    fn segment(&self, t: f64) -> usize {
+        let n = self.t.len();
+        match self.t.partition_point(|&x| x <= t) {
+            0 => 0,
+            k if k >= n => n - 2,
+            k => k - 1,
+        }
+    }
+    fn interp(&self, y: &[f64], t: f64) -> f64 {
+        if self.t.len() == 1 {
+            return y[0];
+        }
+        let i = self.segment(t);
+        let (t0, t1) = (self.t[i], self.t[i + 1]);
+        let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
+        y[i] + w * (y[i + 1] - y[i])
+    }
+}
+
+/// Any manoeuvre.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Manoeuvre {
+    /// Step steer.
+    StepSteer(StepSteer),
+    /// Ramp steer.
+    RampSteer(RampSteer),
+    /// Sine steer.
+    Sine(SineSteer),
+    /// Frequency sweep.
+    Sweep(SweepSteer),
+    /// Replay of a measured run.
+    Replay(Replay),
+}
+
+impl Manoeuvre {
+    /// Front road-wheel steer at `t`, rad.
+    pub fn steer(&self, t: f64) -> f64 {
+        use std::f64::consts::TAU;
+        match self {
+            Manoeuvre::StepSteer(s) => {
+                // Right-continuous at `start`, so an ideal step (rise time 0)
+                // acts from the first integration stage at `start` on.
+                if t < s.start {
+                    0.0
+                } else if s.rise_time <= 0.0 || t >= s.start + s.rise_time {
+                    s.amplitude
+                } else {
+                    s.amplitude * (t - s.start) / s.rise_time
+                }
+            }
+            Manoeuvre::RampSteer(r) => r.rate * (t - r.start).max(0.0),
+            Manoeuvre::Sine(s) => {
+                if t <= s.start {
+                    0.0
+                } else {
+                    s.amplitude * (TAU * s.frequency * (t - s.start)).sin()
+                }
+            }
+            Manoeuvre::Sweep(s) => {
+                if t <= s.start || t >= s.end {
+                    return 0.0;
+                }
+                let tau = t - s.start;
+                let k = (s.f_end - s.f_start) / (s.end - s.start);
+                s.amplitude * (TAU * (s.f_start * tau + 0.5 * k * tau * tau)).sin()
+            }
+            Manoeuvre::Replay(r) => r.interp(&r.steer, t),
+        }
+    }
+
+    /// Forward speed at `t`, m/s.
+    pub fn speed(&self, t: f64) -> f64 {
+        match self {
+            Manoeuvre::StepSteer(s) => s.speed,
+            Manoeuvre::RampSteer(s) => s.speed,
+            Manoeuvre::Sine(s) => s.speed,
+            Manoeuvre::Sweep(s) => s.speed,
+            Manoeuvre::Replay(r) => r.interp(&r.speed, t),
+        }
+    }
+
+    /// du/dt at `t`, m/s² (the slope of the current segment for a replay).
+    pub fn speed_rate(&self, t: f64) -> f64 {
+        match self {
+            Manoeuvre::Replay(r) if r.t.len() > 1 => {
+                let i = r.segment(t);
+                (r.speed[i + 1] - r.speed[i]) / (r.t[i + 1] - r.t[i])
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// First time of the run, s.
+    pub fn start_time(&self) -> f64 {
+        match self {
+            Manoeuvre::Replay(r) => r.t[0],
+            _ => 0.0,
+        }
+    }
+
+    /// Last time of the run, s.
+    pub fn end_time(&self) -> f64 {
+        match self {
+            Manoeuvre::StepSteer(s) => s.end,
+            Manoeuvre::RampSteer(s) => s.end,
+            Manoeuvre::Sine(s) => s.end,
+            Manoeuvre::Sweep(s) => s.end,
+            Manoeuvre::Replay(r) => *r.t.last().expect("a replay has samples"),
+        }
+    }
+
+    /// The same manoeuvre with the steer mirrored (δ → −δ).
+    pub fn mirrored(&self) -> Manoeuvre {
+        let mut m = self.clone();
+        match &mut m {
+            Manoeuvre::StepSteer(s) => s.amplitude = -s.amplitude,
+            Manoeuvre::RampSteer(s) => s.rate = -s.rate,
+            Manoeuvre::Sine(s) => s.amplitude = -s.amplitude,
+            Manoeuvre::Sweep(s) => s.amplitude = -s.amplitude,
+            Manoeuvre::Replay(r) => r.steer.iter_mut().for_each(|d| *d = -*d),
+        }
+        m
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn step_steer_reaches_half_amplitude_at_mid_rise() {
+        let m = Manoeuvre::StepSteer(StepSteer {
+            speed: 20.0,
+            amplitude: 0.02,
+            start: 1.0,
+            rise_time: 0.2,
+            end: 5.0,
+        });
+        assert_eq!(m.steer(0.5), 0.0);
+        assert!((m.steer(1.1) - 0.01).abs() < 1e-15);
+        assert_eq!(m.steer(2.0), 0.02);
+        assert_eq!(m.mirrored().steer(2.0), -0.02);
+    }
+
+    #[test]
+    fn replay_interpolates_and_differentiates_speed() {
+        let m = Manoeuvre::Replay(Replay {
+            t: vec![0.0, 1.0, 3.0],
+            steer: vec![0.0, 0.1, 0.3],
+            speed: vec![10.0, 12.0, 12.0],
+        });
+        assert!((m.steer(2.0) - 0.2).abs() < 1e-15);
+        assert!((m.speed(0.5) - 11.0).abs() < 1e-15);
+        assert_eq!(m.speed_rate(0.5), 2.0);
+        assert_eq!(m.speed_rate(2.5), 0.0);
+        assert_eq!(m.steer(10.0), 0.3);
+        assert_eq!(m.end_time(), 3.0);
+    }
+
+    #[test]
+    fn sweep_frequency_rises_linearly() {
+        let s = SweepSteer {
+            speed: 20.0,
+            amplitude: 1.0,
+            f_start: 0.0,
+            f_end: 2.0,
+            start: 0.0,
+            end: 10.0,
+        };
+        let m = Manoeuvre::Sweep(s);
+        // Phase 2π·(0.1·τ²): zero crossings at τ = sqrt(k/0.2)·... at τ = √10.
+        let tz = (10.0f64).sqrt();
+        assert!(m.steer(tz).abs() < 1e-12);
+    }
+}

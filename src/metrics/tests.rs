@@ -1,0 +1,95 @@
+use super::*;
+use approx::assert_relative_eq;
+
+fn grid(dt: f64, end: f64) -> Vec<f64> {
+    (0..=((end / dt).round() as usize))
+        .map(|i| i as f64 * dt)
+        .collect()
+}
+
+/// An ideal step at t = 1 s and a response built from `f(t − 1)`.
+fn record(f: impl Fn(f64) -> f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let t = grid(1e-4, 12.0);
+    let steer: Vec<f64> = t
+        .iter()
+        .map(|&x| if x >= 1.0 { 0.02 } else { 0.0 })
+        .collect();
+    let y: Vec<f64> = t
+        .iter()
+        .map(|&x| if x >= 1.0 { f(x - 1.0) } else { 0.0 })
+        .collect();
+    (t, steer, y)
+}
+
+#[test]
+fn pure_delay_gives_total_variance_equal_to_the_delay() {
+    let d = 0.3;
+    let (t, steer, y) = record(|s| if s >= d { 0.4 } else { 0.0 });
+    let m = step_metrics(&t, &steer, &y, &y, None, &MetricSettings::default()).unwrap();
+    assert_relative_eq!(m.yaw_rate_total_variance, d, max_relative = 1e-3);
+    assert_relative_eq!(m.er, 2.0 * d, max_relative = 1e-3);
+    assert_relative_eq!(m.yaw_rate_gain, 20.0, max_relative = 1e-12);
+    assert!(m.yaw_rate_peak_time.is_none() && m.yaw_rate_overshoot == 0.0);
+}
+
+#[test]
+fn first_order_lag_gives_half_its_time_constant() {
+    let tau = 0.25;
+    let (t, steer, y) = record(|s| 1.0 - (-s / tau).exp());
+    let m = step_metrics(&t, &steer, &y, &y, None, &MetricSettings::default()).unwrap();
+    assert_relative_eq!(m.yaw_rate_total_variance, tau / 2.0, max_relative = 1e-3);
+    // 90 % of a first-order lag is reached at τ·ln 10.
+    assert_relative_eq!(m.yaw_rate_response_time, tau * 10f64.ln(), epsilon = 2e-4);
+}
+
+#[test]
+fn second_order_overshoot_and_peak_time() {
+    let (zeta, wn) = (0.4, 8.0);
+    let wd = wn * (1.0 - zeta * zeta as f64).sqrt();
+    let (t, steer, y) = record(|s| {
+        1.0 - (-zeta * wn * s).exp() * ((wd * s).cos() + zeta * wn / wd * (wd * s).sin())
+    });
+    let beta: Vec<f64> = y.iter().map(|v| -0.01 * v).collect();
+    let m = step_metrics(&t, &steer, &y, &y, Some(&beta), &MetricSettings::default()).unwrap();
+    let os = 100.0 * (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
+    let tp = std::f64::consts::PI / wd;
+    assert_relative_eq!(m.yaw_rate_overshoot, os, max_relative = 1e-4);
+    assert_relative_eq!(m.yaw_rate_peak_time.unwrap(), tp, epsilon = 2e-4);
+    assert_relative_eq!(m.beta_steady.unwrap(), -0.01, max_relative = 1e-6);
+    assert_relative_eq!(
+        m.tb.unwrap(),
+        tp * 0.01f64.to_degrees(),
+        max_relative = 1e-3
+    );
+    assert!(m.settled);
+}
+
+#[test]
+fn mirrored_step_gives_the_same_metrics() {
+    let (t, steer, y) = record(|s| 1.0 - (-s / 0.2).exp() * (1.0 + 0.3 * (9.0 * s).sin()));
+    let neg = |v: &[f64]| v.iter().map(|x| -x).collect::<Vec<_>>();
+    let s = MetricSettings::default();
+    let a = step_metrics(&t, &steer, &y, &y, Some(&y), &s).unwrap();
+    let b = step_metrics(&t, &neg(&steer), &neg(&y), &neg(&y), Some(&neg(&y)), &s).unwrap();
+    assert_eq!(a.yaw_rate_response_time, b.yaw_rate_response_time);
+    assert_eq!(a.er, b.er);
+    assert_eq!(a.yaw_rate_gain, b.yaw_rate_gain);
+    assert_eq!(a.beta_steady.map(|x| -x), b.beta_steady);
+}
+
+#[test]
+fn refuses_records_without_a_step() {
+    let t = grid(0.01, 5.0);
+    let z = vec![0.0; t.len()];
+    let e = step_metrics(&t, &z, &z, &z, None, &MetricSettings::default()).unwrap_err();
+    assert!(matches!(e, MetricsError::NoStep(_)), "{e}");
+    let e = step_metrics(
+        &t[..5],
+        &z[..5],
+        &z[..5],
+        &z[..5],
+        None,
+        &MetricSettings::default(),
+    );
+    assert_eq!(e.unwrap_err(), MetricsError::Shape);
+}

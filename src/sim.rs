@@ -1,0 +1,166 @@
+//! Fixed-step fourth-order Runge–Kutta integration of the vehicle model and
+//! the recorded time history.
+//!
+//! Inputs are sampled at t, t + h/2 and t + h within each step; outputs are
+//! recorded from the first stage of each step, so every recorded row is the
+//! model evaluated at exactly that state. The step loop allocates nothing: the
+//! history's columns are reserved before it starts. Units: SI, rad.
+
+use crate::manoeuvre::Manoeuvre;
+use crate::vehicle::{Inputs, Outputs, State, VehicleModel};
+
+/// A recorded simulation: one column per signal, one row per time step.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct TimeHistory {
+    /// Time, s.
+    pub t: Vec<f64>,
+    /// Front road-wheel steer, rad.
+    pub steer: Vec<f64>,
+    /// Forward speed, m/s.
+    pub speed: Vec<f64>,
+    /// Sideslip, rad.
+    pub beta: Vec<f64>,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: Vec<f64>,
+    /// Lateral acceleration, m/s².
+    pub ay: Vec<f64>,
+    /// Front slip angle, rad.
+    pub alpha_front: Vec<f64>,
+    /// Rear slip angle, rad.
+    pub alpha_rear: Vec<f64>,
+    /// Front axle force, N.
+    pub fy_front: Vec<f64>,
+    /// Rear axle force, N.
+    pub fy_rear: Vec<f64>,
+    /// Wheel loads FL, FR, RL, RR, N.
+    pub fz: [Vec<f64>; 4],
+}
+
+impl TimeHistory {
+    fn with_capacity(n: usize) -> Self {
+        let v = || Vec::with_capacity(n);
+        Self {
+            t: v(),
+            steer: v(),
+            speed: v(),
+            beta: v(),
+            yaw_rate: v(),
+            ay: v(),
+            alpha_front: v(),
+            alpha_rear: v(),
+            fy_front: v(),
+            fy_rear: v(),
+            fz: [v(), v(), v(), v()],
+        }
+    }
+
+    fn push(&mut self, t: f64, x: &State, inp: &Inputs, o: &Outputs) {
+        self.t.push(t);
+        self.steer.push(inp.steer);
+        self.speed.push(inp.speed);
+        self.beta.push(x.beta);
+        self.yaw_rate.push(x.yaw_rate);
+        self.ay.push(o.ay);
+        self.alpha_front.push(o.alpha_front);
+        self.alpha_rear.push(o.alpha_rear);
+        self.fy_front.push(o.fy_front);
+        self.fy_rear.push(o.fy_rear);
+        for (c, f) in self.fz.iter_mut().zip(o.fz) {
+            c.push(f);
+        }
+    }
+
+    /// Number of recorded rows.
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    /// True when nothing was recorded.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+
+    /// Column names and columns, in output order (for CSV).
+    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
+        vec![
+            ("t", &self.t),
+            ("steer", &self.steer),
+            ("speed", &self.speed),
+            ("beta", &self.beta),
+            ("yaw_rate", &self.yaw_rate),
+            ("ay", &self.ay),
+            ("alpha_front", &self.alpha_front),
+            ("alpha_rear", &self.alpha_rear),
+            ("fy_front", &self.fy_front),
+            ("fy_rear", &self.fy_rear),
+            ("fz_fl", &self.fz[0]),
+            ("fz_fr", &self.fz[1]),
+            ("fz_rl", &self.fz[2]),
+            ("fz_rr", &self.fz[3]),
+        ]
+    }
+}
+
+/// Integration settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Integrator {
+    /// Step, s.
+    pub step: f64,
+    /// Road friction scale.
+    pub friction: f64,
+}
+
+impl Default for Integrator {
+    fn default() -> Self {
+        Self {
+            step: 1e-3,
+            friction: 1.0,
+        }
+    }
+}
+
+impl Integrator {
+    fn inputs(&self, m: &Manoeuvre, t: f64) -> Inputs {
+        Inputs {
+            steer: m.steer(t),
+            speed: m.speed(t),
+            speed_rate: m.speed_rate(t),
+            friction: self.friction,
+        }
+    }
+
+    /// Simulates `manoeuvre` from `x0` over its duration, recording every step.
+    pub fn run(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> TimeHistory {
+        let h = self.step;
+        let t0 = manoeuvre.start_time();
+        let n = ((manoeuvre.end_time() - t0) / h).round().max(0.0) as usize;
+        let mut hist = TimeHistory::with_capacity(n + 1);
+        let mut x = x0;
+        let add = |x: &State, k: &Outputs, s: f64| State {
+            beta: x.beta + s * k.beta_rate,
+            yaw_rate: x.yaw_rate + s * k.yaw_acceleration,
+        };
+        for i in 0..=n {
+            let t = t0 + i as f64 * h;
+            let inp1 = self.inputs(manoeuvre, t);
+            let k1 = model.evaluate(&x, &inp1);
+            hist.push(t, &x, &inp1, &k1);
+            if i == n {
+                break;
+            }
+            let inp2 = self.inputs(manoeuvre, t + 0.5 * h);
+            let inp4 = self.inputs(manoeuvre, t + h);
+            let k2 = model.evaluate(&add(&x, &k1, 0.5 * h), &inp2);
+            let k3 = model.evaluate(&add(&x, &k2, 0.5 * h), &inp2);
+            let k4 = model.evaluate(&add(&x, &k3, h), &inp4);
+            x.beta +=
+                h / 6.0 * (k1.beta_rate + 2.0 * k2.beta_rate + 2.0 * k3.beta_rate + k4.beta_rate);
+            x.yaw_rate += h / 6.0
+                * (k1.yaw_acceleration
+                    + 2.0 * k2.yaw_acceleration
+                    + 2.0 * k3.yaw_acceleration
+                    + k4.yaw_acceleration);
+        }
+        hist
+    }
+}

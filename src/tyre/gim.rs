@@ -1,0 +1,153 @@
+//! Gim's analytical tyre model (Gim & Nikravesh 1990), pure cornering, as
+//! seed 004 uses it: a brush model with a parabolic pressure distribution, an
+//! adhesion region at the leading edge and a sliding region behind it.
+//!
+//! With `ln = 1 − K·|tan α| / (3·μ·Fz)` the normalised adhesion length
+//! (Pacejka, *Tire and Vehicle Dynamics*, eq. 3.15–3.17, brush model):
+//! `Fy = μ·Fz·(1 − ln³)·sgn α` and `Mz = μ·Fz·(l/2)·θ·tan α·ln³` with
+//! `θ = K/(3μFz)`, full sliding (`ln ≤ 0`) from `|tan α| = 3μFz/K`, and the
+//! pneumatic trail `l/6` at small slip. Gim's sliding friction falls with the
+//! slip: `μ = μ0·(1 − A_s·|tan α|)` (floored at 10 % of μ0 so it never
+//! vanishes); `A_s = 0` gives the classic Fiala / brush closed form.
+//!
+//! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
+
+use super::{safe_tan, Parameterised, SlipState, TyreForces, TyreModel};
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Gim / brush tyre parameters for one wheel.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Gim {
+    /// Cornering stiffness at the reference load, N/rad.
+    pub cornering_stiffness: f64,
+    /// Contact patch length l′, m.
+    pub contact_length: f64,
+    /// Peak friction coefficient μ0 on the reference surface.
+    #[serde(default = "one")]
+    pub friction: f64,
+    /// Gim's friction fall-off with slip A_s (0 = constant friction).
+    #[serde(default)]
+    pub friction_decay: f64,
+    /// Load at which `cornering_stiffness` holds, N (only used when
+    /// `load_exponent ≠ 0`).
+    #[serde(default = "default_reference_load")]
+    pub reference_load: f64,
+    /// Stiffness load sensitivity: K = K_ref·(Fz/Fz_ref)^n (0 = constant K,
+    /// as in seed 004).
+    #[serde(default)]
+    pub load_exponent: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+fn default_reference_load() -> f64 {
+    4000.0
+}
+
+/// Floor on μ/μ0 so that large `friction_decay` never removes all grip.
+const MIN_FRICTION_RATIO: f64 = 0.1;
+
+impl Gim {
+    /// A Gim tyre with constant friction and load-independent stiffness.
+    pub fn new(cornering_stiffness: f64, contact_length: f64, friction: f64) -> Self {
+        Self {
+            cornering_stiffness,
+            contact_length,
+            friction,
+            friction_decay: 0.0,
+            reference_load: default_reference_load(),
+            load_exponent: 0.0,
+        }
+    }
+
+    fn stiffness_at(&self, fz: f64) -> f64 {
+        if self.load_exponent == 0.0 {
+            self.cornering_stiffness
+        } else {
+            self.cornering_stiffness * (fz / self.reference_load).powf(self.load_exponent)
+        }
+    }
+
+    /// (fy, mz) for pure cornering.
+    fn cornering(&self, s: &SlipState) -> (f64, f64) {
+        if s.fz <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let k = self.stiffness_at(s.fz);
+        let t = safe_tan(s.alpha);
+        let ratio = (1.0 - self.friction_decay * t.abs()).max(MIN_FRICTION_RATIO);
+        let mu = self.friction * s.mu_scale * ratio;
+        if mu <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let theta = k / (3.0 * mu * s.fz);
+        let ln = 1.0 - theta * t.abs();
+        if ln <= 0.0 {
+            return (mu * s.fz * t.signum(), 0.0);
+        }
+        let ln3 = ln * ln * ln;
+        let fy = mu * s.fz * (1.0 - ln3) * t.signum();
+        let mz = mu * s.fz * 0.5 * self.contact_length * theta * t * ln3;
+        (fy, mz)
+    }
+
+    pub(crate) fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("cornering_stiffness", self.cornering_stiffness)?;
+        ParamError::positive("contact_length", self.contact_length)?;
+        ParamError::positive("friction", self.friction)?;
+        ParamError::non_negative("friction_decay", self.friction_decay)?;
+        ParamError::positive("reference_load", self.reference_load)?;
+        ParamError::finite("load_exponent", self.load_exponent)
+    }
+}
+
+impl TyreModel for Gim {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        let (fy, mz) = self.cornering(s);
+        TyreForces { fx: 0.0, fy, mz }
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        self.cornering(s).0
+    }
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        if fz <= 0.0 {
+            0.0
+        } else {
+            self.stiffness_at(fz)
+        }
+    }
+}
+
+impl Parameterised for Gim {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        vec![
+            "cornering_stiffness",
+            "contact_length",
+            "friction",
+            "friction_decay",
+            "load_exponent",
+        ]
+    }
+    fn parameters(&self) -> Vec<f64> {
+        vec![
+            self.cornering_stiffness,
+            self.contact_length,
+            self.friction,
+            self.friction_decay,
+            self.load_exponent,
+        ]
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        self.cornering_stiffness = p[0];
+        self.contact_length = p[1];
+        self.friction = p[2];
+        self.friction_decay = p[3];
+        self.load_exponent = p[4];
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        vec![(1e3, 5e5), (0.02, 0.5), (0.1, 3.0), (0.0, 1.0), (0.0, 1.5)]
+    }
+}

@@ -1,0 +1,74 @@
+//! Linear tyre `Fy = C_α·α`, `Mz = t_p·Fy`: the tyre of the textbook linear
+//! bicycle model, used for closed-form checks. It has no friction limit, so
+//! `mu_scale` does not act on it.
+//!
+//! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`.
+
+use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Linear tyre parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Linear {
+    /// Cornering stiffness C_α, N/rad (per wheel).
+    pub cornering_stiffness: f64,
+    /// Pneumatic trail, m.
+    #[serde(default)]
+    pub pneumatic_trail: f64,
+}
+
+impl Linear {
+    /// A linear tyre with stiffness `c` (N/rad) and no trail.
+    pub fn new(c: f64) -> Self {
+        Self {
+            cornering_stiffness: c,
+            pneumatic_trail: 0.0,
+        }
+    }
+    pub(crate) fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("cornering_stiffness", self.cornering_stiffness)?;
+        ParamError::finite("pneumatic_trail", self.pneumatic_trail)
+    }
+}
+
+impl TyreModel for Linear {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        let fy = self.lateral_force(s);
+        TyreForces {
+            fx: 0.0,
+            fy,
+            mz: self.pneumatic_trail * fy,
+        }
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        if s.fz <= 0.0 {
+            0.0
+        } else {
+            self.cornering_stiffness * s.alpha
+        }
+    }
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        if fz <= 0.0 {
+            0.0
+        } else {
+            self.cornering_stiffness
+        }
+    }
+}
+
+impl Parameterised for Linear {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        vec!["cornering_stiffness"]
+    }
+    fn parameters(&self) -> Vec<f64> {
+        vec![self.cornering_stiffness]
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        self.cornering_stiffness = p[0];
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        vec![(1e3, 5e5)]
+    }
+}

@@ -1,0 +1,88 @@
+//! Simplified Magic Formula of seed 003: `Fy = D·μ·Fz·sin(C·atan(B·α))`.
+//!
+//! Seed 003 writes it per axle with the road friction μ in front; here it acts
+//! per wheel (linear in Fz, so an axle is two wheels at half the axle load),
+//! `D` is the friction on the reference surface (1 reproduces the paper) and
+//! the road friction is `mu_scale`. As in the paper, μ scales the whole curve,
+//! cornering stiffness `B·C·D·μ·Fz` included. No aligning moment, no camber.
+//!
+//! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
+
+use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Simplified Magic Formula parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MagicSimple {
+    /// Stiffness factor B, 1/rad.
+    pub b: f64,
+    /// Shape factor C.
+    pub c: f64,
+    /// Peak friction D on the reference surface (1 in seed 003).
+    #[serde(default = "one")]
+    pub d: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+impl MagicSimple {
+    /// A simplified Magic Formula with D = 1.
+    pub fn new(b: f64, c: f64) -> Self {
+        Self { b, c, d: 1.0 }
+    }
+    pub(crate) fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("b", self.b)?;
+        ParamError::in_range(
+            "c",
+            self.c,
+            0.0,
+            2.0,
+            "a shape factor outside (0, 2] has no physical meaning",
+        )?;
+        ParamError::positive("d", self.d)
+    }
+}
+
+impl TyreModel for MagicSimple {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        TyreForces {
+            fx: 0.0,
+            fy: self.lateral_force(s),
+            mz: 0.0,
+        }
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        if s.fz <= 0.0 {
+            return 0.0;
+        }
+        self.d * s.mu_scale * s.fz * (self.c * (self.b * s.alpha).atan()).sin()
+    }
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        if fz <= 0.0 {
+            0.0
+        } else {
+            self.b * self.c * self.d * fz
+        }
+    }
+}
+
+impl Parameterised for MagicSimple {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        vec!["b", "c", "d"]
+    }
+    fn parameters(&self) -> Vec<f64> {
+        vec![self.b, self.c, self.d]
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        self.b = p[0];
+        self.c = p[1];
+        self.d = p[2];
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        vec![(1.0, 40.0), (0.5, 2.0), (0.1, 3.0)]
+    }
+}

@@ -1,0 +1,268 @@
+//! Tyre models: lateral force, longitudinal force and aligning moment from the
+//! slip state of one wheel.
+//!
+//! Units: SI and radians at this interface (N, N·m, rad, m/s). A published
+//! model's own units (PAC89: kN, degrees, percent) live only inside its file.
+//!
+//! Sign convention (`FORMATS.md`, ISO 8855 axes with the crate's slip sign):
+//! a positive slip angle gives a positive lateral force near zero slip
+//! (`fy ≈ C_α·α`), a positive slip ratio a positive longitudinal force, and
+//! `mz` is positive when it turns the wheel back toward zero slip, so it has
+//! the sign of `fy` at small slip. In the vehicle model the slip angle of a
+//! wheel is therefore `α = δ − atan(v_wheel / u_wheel)`.
+//!
+//! Road friction: every model has its own friction parameters, measured on the
+//! rig's surface. The road's friction enters as a scale `mu_scale` on them
+//! (1 reproduces the file), like the MF scaling factor λ_μ.
+
+mod gim;
+mod linear;
+mod magic_simple;
+pub mod pac89;
+pub mod unitire;
+
+pub use gim::Gim;
+pub use linear::Linear;
+pub use magic_simple::MagicSimple;
+pub use pac89::{Pac89, Pac89Form};
+pub use unitire::{UniTire, UniTireLateral, UniTireLongitudinal};
+
+use serde::{Deserialize, Serialize};
+
+/// The slip state of one wheel: everything a tyre model may read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlipState {
+    /// Slip angle α, rad (positive gives positive `fy`).
+    pub alpha: f64,
+    /// Longitudinal slip ratio κ = (Ω·R_e − V_x)/V_x, dimensionless.
+    pub kappa: f64,
+    /// Vertical load, N (≤ 0 means the wheel is off the ground).
+    pub fz: f64,
+    /// Inclination (camber) angle, rad.
+    pub camber: f64,
+    /// Road friction as a scale on the tyre's own friction (1 = as measured).
+    pub mu_scale: f64,
+    /// Forward speed of the wheel centre, m/s; models with a sliding-speed
+    /// friction law derive the sliding speed from it.
+    pub speed: f64,
+}
+
+impl SlipState {
+    /// Pure cornering at load `fz`: no longitudinal slip, no camber, μ scale 1,
+    /// 20 m/s.
+    pub fn lateral(alpha: f64, fz: f64) -> Self {
+        Self {
+            alpha,
+            kappa: 0.0,
+            fz,
+            camber: 0.0,
+            mu_scale: 1.0,
+            speed: 20.0,
+        }
+    }
+
+    /// Pure longitudinal slip at load `fz`.
+    pub fn longitudinal(kappa: f64, fz: f64) -> Self {
+        Self {
+            kappa,
+            ..Self::lateral(0.0, fz)
+        }
+    }
+
+    /// Lateral sliding speed of the contact patch, m/s: `V·|sin α|`.
+    pub fn lateral_sliding_speed(&self) -> f64 {
+        self.speed.abs() * self.alpha.sin().abs()
+    }
+
+    /// Longitudinal sliding speed of the contact patch, m/s: `V·|κ|`.
+    pub fn longitudinal_sliding_speed(&self) -> f64 {
+        self.speed.abs() * self.kappa.abs()
+    }
+}
+
+/// Forces and moment at the contact patch in the wheel frame.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TyreForces {
+    /// Longitudinal force, N.
+    pub fx: f64,
+    /// Lateral force, N.
+    pub fy: f64,
+    /// Aligning moment, N·m (sign of `fy` at small slip).
+    pub mz: f64,
+}
+
+/// Step of the central difference for the slip stiffness at zero slip. Brush
+/// models have a `|α|·α` term, so the truncation error is first order in the
+/// step (relative error ≈ K·h/(3μFz) ≈ 5e-8 here); rounding stays far below.
+const STIFFNESS_STEP: f64 = 1e-8;
+
+/// A tyre model. One required method; the rest have defaults that models with a
+/// closed form may override.
+pub trait TyreModel {
+    /// Forces and aligning moment for the given slip state.
+    fn forces(&self, s: &SlipState) -> TyreForces;
+
+    /// Lateral force only; the vehicle's hot loop calls this, so models whose
+    /// full evaluation is expensive override it.
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        self.forces(s).fy
+    }
+
+    /// Cornering stiffness ∂fy/∂α at α = 0, N/rad, at load `fz` (no camber).
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        let s = |a| SlipState::lateral(a, fz);
+        (self.lateral_force(&s(STIFFNESS_STEP)) - self.lateral_force(&s(-STIFFNESS_STEP)))
+            / (2.0 * STIFFNESS_STEP)
+    }
+
+    /// Peak lateral force magnitude over 0 < α ≤ 30°, N, at load `fz` and
+    /// friction scale `mu_scale` (a scan at 0.05°, then a golden refine).
+    fn peak_lateral_force(&self, fz: f64, mu_scale: f64) -> f64 {
+        let f = |a: f64| {
+            self.lateral_force(&SlipState {
+                mu_scale,
+                ..SlipState::lateral(a, fz)
+            })
+            .abs()
+        };
+        let step = 0.05_f64.to_radians();
+        let n = 600;
+        let (mut best_i, mut best) = (1, f(step));
+        for i in 2..=n {
+            let v = f(i as f64 * step);
+            if v > best {
+                best = v;
+                best_i = i;
+            }
+        }
+        let (mut lo, mut hi) = ((best_i - 1) as f64 * step, (best_i + 1) as f64 * step);
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..60 {
+            let m1 = hi - g * (hi - lo);
+            let m2 = lo + g * (hi - lo);
+            if f(m1) < f(m2) {
+                lo = m1;
+            } else {
+                hi = m2;
+            }
+        }
+        best.max(f(0.5 * (lo + hi)))
+    }
+}
+
+/// A named, bounded parameter vector: what identification works on.
+pub trait Parameterised {
+    /// Parameter names, in vector order.
+    fn parameter_names(&self) -> Vec<&'static str>;
+    /// Current values, in vector order.
+    fn parameters(&self) -> Vec<f64>;
+    /// Replaces the parameters; `p.len()` equals the number of names.
+    fn set_parameters(&mut self, p: &[f64]);
+    /// Plausible search box (lower, upper) for each parameter.
+    fn bounds(&self) -> Vec<(f64, f64)>;
+}
+
+/// A tyre of any supported model, selected at run time by the `model` key of
+/// its TOML file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "model", rename_all = "kebab-case")]
+pub enum Tyre {
+    /// Gim / brush model with adhesion and sliding regions.
+    Gim(Gim),
+    /// Simplified Magic Formula `Fy = μ·Fz·sin(C·atan(B·α))` (seed 003).
+    MagicSimple(MagicSimple),
+    /// UniTire pure-slip model (seed 000).
+    Unitire(UniTire),
+    /// PAC89 Magic Formula in the Adams numbering (seed 001).
+    Pac89(Pac89),
+    /// Linear tyre `Fy = C_α·α` (the textbook bicycle model).
+    Linear(Linear),
+}
+
+/// Names accepted by the `model` key.
+pub const MODEL_NAMES: [&str; 5] = ["gim", "magic-simple", "unitire", "pac89", "linear"];
+
+impl Tyre {
+    /// The `model` key of this tyre.
+    pub fn model_name(&self) -> &'static str {
+        match self {
+            Tyre::Gim(_) => "gim",
+            Tyre::MagicSimple(_) => "magic-simple",
+            Tyre::Unitire(_) => "unitire",
+            Tyre::Pac89(_) => "pac89",
+            Tyre::Linear(_) => "linear",
+        }
+    }
+
+    fn inner(&self) -> &dyn TyreModel {
+        match self {
+            Tyre::Gim(t) => t,
+            Tyre::MagicSimple(t) => t,
+            Tyre::Unitire(t) => t,
+            Tyre::Pac89(t) => t,
+            Tyre::Linear(t) => t,
+        }
+    }
+
+    /// Scales the tyre so that its cornering stiffness at load `fz` becomes
+    /// `target` (N/rad) while its friction limit stays: the stiffness
+    /// parameters are scaled, not the peak force.
+    pub fn with_cornering_stiffness(&self, target: f64, fz: f64) -> Tyre {
+        let mut t = self.clone();
+        // One multiplicative step is exact for models whose stiffness is
+        // proportional to the scaled parameter; offsets (PAC89's Sh) make it
+        // only nearly so, hence the few corrective passes.
+        for _ in 0..20 {
+            let k = target / t.cornering_stiffness(fz);
+            if !k.is_finite() || (k - 1.0).abs() < 1e-12 {
+                break;
+            }
+            match &mut t {
+                Tyre::Gim(g) => g.cornering_stiffness *= k,
+                Tyre::MagicSimple(m) => m.b *= k,
+                Tyre::Unitire(u) => u.lateral.scale_stiffness(k),
+                Tyre::Pac89(p) => p.a[3] *= k,
+                Tyre::Linear(l) => l.cornering_stiffness *= k,
+            }
+        }
+        t
+    }
+
+    /// Checks the parameters for physical sense; the error names the key.
+    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
+        match self {
+            Tyre::Gim(t) => t.validate(),
+            Tyre::MagicSimple(t) => t.validate(),
+            Tyre::Unitire(t) => t.validate(),
+            Tyre::Pac89(t) => t.validate(),
+            Tyre::Linear(t) => t.validate(),
+        }
+    }
+}
+
+impl TyreModel for Tyre {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        self.inner().forces(s)
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        match self {
+            Tyre::Gim(t) => t.lateral_force(s),
+            Tyre::MagicSimple(t) => t.lateral_force(s),
+            Tyre::Unitire(t) => t.lateral_force(s),
+            Tyre::Pac89(t) => t.lateral_force(s),
+            Tyre::Linear(t) => t.lateral_force(s),
+        }
+    }
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        self.inner().cornering_stiffness(fz)
+    }
+}
+
+/// `tan α` that keeps its sign and stays finite up to |α| = 90°.
+pub(crate) fn safe_tan(alpha: f64) -> f64 {
+    let c = alpha.cos().abs().max(1e-12);
+    alpha.sin() / c
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,271 @@
+//! PAC89 Magic Formula (Bakker, Nyborg & Pacejka 1989) in the coefficient
+//! numbering of the Adams "PAC89" tyre property file: lateral a0..a13,
+//! longitudinal b0..b10, aligning c0..c17 (seed 001 uses the lateral set).
+//!
+//! `Y = D·sin(C·atan(B·x − E·(B·x − atan(B·x)))) + Sv`, `x = X + Sh`, with
+//! lateral (X = α in degrees, γ camber in degrees, Fz in kN):
+//! `C = a0`, `D = a1·Fz² + a2·Fz`, `BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|)`,
+//! `E = a6·Fz + a7`, `Sh = a8·γ + a9·Fz + a10`, `Sv = a11·Fz·γ + a12·Fz + a13`;
+//! longitudinal (X = κ in percent): `C = b0`, `D = b1·Fz² + b2·Fz`,
+//! `BCD = (b3·Fz² + b4·Fz)·exp(−b5·Fz)`, `E = b6·Fz² + b7·Fz + b8`,
+//! `Sh = b9·Fz + b10`, `Sv = 0`;
+//! aligning (X = α in degrees): `C = c0`, `D = c1·Fz² + c2·Fz`,
+//! `BCD = (c3·Fz² + c4·Fz)·(1 − c6·|γ|)·exp(−c5·Fz)`,
+//! `E = (c7·Fz² + c8·Fz + c9)·(1 − c10·|γ|)`, `Sh = c11·γ + c12·Fz + c13`,
+//! `Sv = (c14·Fz² + c15·Fz)·γ + c16·Fz + c17`.
+//!
+//! The raw equations give Fy > 0 for α > 0 (as this crate wants) and an
+//! aligning moment of the opposite sign (SAE); `mz` is returned negated so
+//! that it has the sign of `fy` at small slip. The 1987 paper numbers its
+//! coefficients differently; a file must name its `form`, and only
+//! `adams-pac89` is accepted. Road friction scales D and divides B, so the
+//! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
+//! does not depend on the road). The offsets Sh, Sv make the model not odd.
+
+use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Which coefficient numbering a PAC89 file uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Pac89Form {
+    /// The Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): supported.
+    AdamsPac89,
+    /// The 1987 paper's numbering (a1..a13 ...): refused.
+    Pacejka1987,
+}
+
+/// PAC89 coefficients in the Adams numbering.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Pac89 {
+    /// Coefficient numbering; must be `adams-pac89`.
+    pub form: Pac89Form,
+    /// Lateral coefficients a0..a13.
+    pub a: [f64; 14],
+    /// Longitudinal coefficients b0..b10 (absent: no longitudinal force).
+    #[serde(default)]
+    pub b: Option<[f64; 11]>,
+    /// Aligning coefficients c0..c17 (absent: no aligning moment).
+    #[serde(default)]
+    pub c: Option<[f64; 18]>,
+}
+
+/// The Adams example coefficient set (the Adams/Tire PAC89 documentation).
+pub const ADAMS_EXAMPLE_A: [f64; 14] = [
+    1.65, -34.0, 1250.0, 3036.0, 12.8, 0.00501, -0.02103, 0.77394, 0.002289, 0.013442, 0.003709,
+    19.1656, 1.21356, 6.26206,
+];
+/// Longitudinal part of the Adams example set.
+pub const ADAMS_EXAMPLE_B: [f64; 11] = [
+    1.67272, -9.46, 1490.0, 30.0, 176.0, 0.0886, 0.00402, -0.0615, 0.20, 0.0299, -0.176,
+];
+/// Aligning part of the Adams example set.
+pub const ADAMS_EXAMPLE_C: [f64; 18] = [
+    2.34, 1.495, 6.416654, -3.57403, -0.087737, 0.09841, 0.0027699, -0.0001151, 0.10, -1.3329,
+    0.025501, -0.02357, 0.03027, -0.0647, 0.0211329, 0.89469, -0.099443, -3.336941,
+];
+
+/// The Magic Formula sine curve `D·sin(C·atan(B·x − E·(B·x − atan(B·x))))`.
+#[inline]
+pub fn magic_formula(b: f64, c: f64, d: f64, e: f64, x: f64) -> f64 {
+    let bx = b * x;
+    d * (c * (bx - e * (bx - bx.atan())).atan()).sin()
+}
+
+/// Coefficients of one Magic Formula curve at a given load and camber.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurveCoefficients {
+    /// Stiffness factor B (per degree or per percent).
+    pub b: f64,
+    /// Shape factor C.
+    pub c: f64,
+    /// Peak value D (N or N·m).
+    pub d: f64,
+    /// Curvature factor E.
+    pub e: f64,
+    /// Horizontal shift (degrees or percent).
+    pub sh: f64,
+    /// Vertical shift (N or N·m).
+    pub sv: f64,
+}
+
+impl CurveCoefficients {
+    /// The curve at input `x` (degrees or percent) in the model's units.
+    pub fn eval(&self, x: f64) -> f64 {
+        magic_formula(self.b, self.c, self.d, self.e, x + self.sh) + self.sv
+    }
+}
+
+/// B = BCD/(C·D) without 0/0 at vanishing load.
+fn stiffness_factor(bcd: f64, c: f64, d: f64) -> f64 {
+    let cd = c * d;
+    if cd.abs() < 1e-12 {
+        0.0
+    } else {
+        bcd / cd
+    }
+}
+
+impl Pac89 {
+    /// The Adams example tyre (all three sets).
+    pub fn adams_example() -> Self {
+        Self {
+            form: Pac89Form::AdamsPac89,
+            a: ADAMS_EXAMPLE_A,
+            b: Some(ADAMS_EXAMPLE_B),
+            c: Some(ADAMS_EXAMPLE_C),
+        }
+    }
+
+    /// Lateral curve at `fz_kn` (kN) and camber `gamma_deg` (degrees), raw units.
+    pub fn lateral_curve(&self, fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
+        let a = &self.a;
+        let c = a[0];
+        let d = a[1] * fz_kn * fz_kn + a[2] * fz_kn;
+        let bcd = a[3] * (2.0 * (fz_kn / a[4]).atan()).sin() * (1.0 - a[5] * gamma_deg.abs());
+        CurveCoefficients {
+            b: stiffness_factor(bcd, c, d),
+            c,
+            d,
+            e: a[6] * fz_kn + a[7],
+            sh: a[8] * gamma_deg + a[9] * fz_kn + a[10],
+            sv: a[11] * fz_kn * gamma_deg + a[12] * fz_kn + a[13],
+        }
+    }
+
+    /// Longitudinal curve at `fz_kn` (kN), raw units (x in percent).
+    pub fn longitudinal_curve(b: &[f64; 11], fz_kn: f64) -> CurveCoefficients {
+        let c = b[0];
+        let d = b[1] * fz_kn * fz_kn + b[2] * fz_kn;
+        let bcd = (b[3] * fz_kn * fz_kn + b[4] * fz_kn) * (-b[5] * fz_kn).exp();
+        CurveCoefficients {
+            b: stiffness_factor(bcd, c, d),
+            c,
+            d,
+            e: b[6] * fz_kn * fz_kn + b[7] * fz_kn + b[8],
+            sh: b[9] * fz_kn + b[10],
+            sv: 0.0,
+        }
+    }
+
+    /// Aligning curve at `fz_kn` (kN) and camber `gamma_deg`, raw units (SAE sign).
+    pub fn aligning_curve(c: &[f64; 18], fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
+        let shape = c[0];
+        let d = c[1] * fz_kn * fz_kn + c[2] * fz_kn;
+        let bcd = (c[3] * fz_kn * fz_kn + c[4] * fz_kn)
+            * (1.0 - c[6] * gamma_deg.abs())
+            * (-c[5] * fz_kn).exp();
+        CurveCoefficients {
+            b: stiffness_factor(bcd, shape, d),
+            c: shape,
+            d,
+            e: (c[7] * fz_kn * fz_kn + c[8] * fz_kn + c[9]) * (1.0 - c[10] * gamma_deg.abs()),
+            sh: c[11] * gamma_deg + c[12] * fz_kn + c[13],
+            sv: (c[14] * fz_kn * fz_kn + c[15] * fz_kn) * gamma_deg + c[16] * fz_kn + c[17],
+        }
+    }
+
+    /// Lateral force with friction scaling applied to a curve.
+    fn scaled(curve: CurveCoefficients, mu: f64, x: f64) -> f64 {
+        let k = if mu > 0.0 { mu } else { return 0.0 };
+        magic_formula(curve.b / k, curve.c, curve.d * k, curve.e, x + curve.sh) + curve.sv * k
+    }
+
+    pub(crate) fn validate(&self) -> Result<(), ParamError> {
+        if self.form != Pac89Form::AdamsPac89 {
+            return Err(ParamError::new(
+                "form",
+                f64::NAN,
+                "the file uses the 1987 paper's coefficient numbering; this crate implements \
+                 the Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): convert the file and \
+                 set form = \"adams-pac89\"",
+            ));
+        }
+        for (i, v) in self.a.iter().enumerate() {
+            ParamError::finite(&format!("a[{i}]"), *v)?;
+        }
+        ParamError::positive("a[0]", self.a[0])?;
+        if self.a[4] == 0.0 {
+            return Err(ParamError::new(
+                "a[4]",
+                0.0,
+                "a4 divides the load and must not be zero",
+            ));
+        }
+        for (i, v) in self.b.iter().flatten().enumerate() {
+            ParamError::finite(&format!("b[{i}]"), *v)?;
+        }
+        for (i, v) in self.c.iter().flatten().enumerate() {
+            ParamError::finite(&format!("c[{i}]"), *v)?;
+        }
+        Ok(())
+    }
+}
+
+impl TyreModel for Pac89 {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        if s.fz <= 0.0 {
+            return TyreForces::default();
+        }
+        let fz_kn = s.fz / 1000.0;
+        let gamma = s.camber.to_degrees();
+        let alpha = s.alpha.to_degrees();
+        let fy = Self::scaled(self.lateral_curve(fz_kn, gamma), s.mu_scale, alpha);
+        let fx = self.b.as_ref().map_or(0.0, |b| {
+            Self::scaled(
+                Self::longitudinal_curve(b, fz_kn),
+                s.mu_scale,
+                100.0 * s.kappa,
+            )
+        });
+        let mz = self.c.as_ref().map_or(0.0, |c| {
+            -Self::scaled(Self::aligning_curve(c, fz_kn, gamma), s.mu_scale, alpha)
+        });
+        TyreForces { fx, fy, mz }
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        if s.fz <= 0.0 {
+            return 0.0;
+        }
+        let fz_kn = s.fz / 1000.0;
+        Self::scaled(
+            self.lateral_curve(fz_kn, s.camber.to_degrees()),
+            s.mu_scale,
+            s.alpha.to_degrees(),
+        )
+    }
+}
+
+impl Parameterised for Pac89 {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        vec![
+            "a0", "a1", "a2", "a3", "a4", "a5", "a6", "a7", "a8", "a9", "a10", "a11", "a12", "a13",
+        ]
+    }
+    fn parameters(&self) -> Vec<f64> {
+        self.a.to_vec()
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        self.a.copy_from_slice(p);
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        vec![
+            (1.0, 2.0),
+            (-200.0, 200.0),
+            (500.0, 3000.0),
+            (500.0, 10000.0),
+            (1.0, 50.0),
+            (-0.1, 0.1),
+            (-1.0, 1.0),
+            (-2.0, 1.0),
+            (-0.5, 0.5),
+            (-0.5, 0.5),
+            (-1.0, 1.0),
+            (-100.0, 100.0),
+            (-100.0, 100.0),
+            (-200.0, 200.0),
+        ]
+    }
+}

@@ -1,0 +1,218 @@
+//! UniTire pure-slip model (Guo Konghui), in the form identified by seed 000
+//! (Zhang & Li 2017, eqs. 3–15).
+//!
+//! Dimensionless force `F̄ = 1 − exp(−φ − E·φ² − (E² + 1/12)·φ³)` with
+//! `φy = Ky·tan α/(μy·Fz)` (cornering) or `φx = Kx·Sx/(μx·Fz)` (longitudinal);
+//! `Fy = F̄y·μy·Fz`, `Fx = F̄x·μx·Fz`, `Mz = Fy·Dx`.
+//! Load dependence with `Fzn = Fz/Fz_rated`:
+//! `E = ½ + (p1/2)·exp(−(Fzn/p2)²)`, `K = Fz·(p3 + p4·Fzn + p5·Fzn²)`,
+//! friction against sliding speed Vs:
+//! `μ = μs + (μ0 − μs)·exp(−μh²·ln²(Vs/Vsm + exp(−Vs/Vsm)))`,
+//! `μ0 = p6·exp(−Fzn/p7)`, `μs = p8·μ0`, `μh = p9·μ0`, `Vsm = p10·μ0`.
+//! Aligning arm `Dx = (Dx0 + De)·exp(−D1·φy − D2·φy²) − De`, with
+//! `Dx0 = c1 + c2·Fz + c3·Fz²`, `De = c4 + c5·Fz + c6·Fz²`,
+//! `D1 = c7·exp(−Fz/c8)`, `D2 = c9·exp(−Fz/c10)`, Fz in **kN** in these ten
+//! (the paper leaves the unit open; kN keeps the coefficients of order one),
+//! Dx in m. φy enters Dx by magnitude so that Mz stays odd.
+//!
+//! Slip: seed 000's `Sx = (ΩRe − V cos α)/(ΩRe)` relates to this crate's
+//! `κ = (ΩRe − V)/V` as `Sx = κ/(1 + κ)` at zero slip angle.
+//! The road friction scales the final μ. Odd in α and in Sx.
+
+use super::{safe_tan, Parameterised, SlipState, TyreForces, TyreModel};
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Ten parameters of one direction (seed 000's a1..a10 or b1..b10).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UniTireLateral {
+    /// p1..p10 as in the module docs.
+    pub p: [f64; 10],
+}
+
+/// Ten longitudinal parameters a1..a10 (same laws as the lateral ones).
+pub type UniTireLongitudinal = UniTireLateral;
+
+/// Ten aligning-arm parameters c1..c10.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UniTireAligning {
+    /// c1..c10 as in the module docs (Fz in kN, Dx in m).
+    pub c: [f64; 10],
+}
+
+/// UniTire parameters for one wheel.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UniTire {
+    /// Rated load Fz_rated, N.
+    pub rated_load: f64,
+    /// Cornering parameters b1..b10.
+    pub lateral: UniTireLateral,
+    /// Longitudinal parameters a1..a10 (absent: no longitudinal force).
+    #[serde(default)]
+    pub longitudinal: Option<UniTireLongitudinal>,
+    /// Aligning arm parameters c1..c10 (absent: no aligning moment).
+    #[serde(default)]
+    pub aligning: Option<UniTireAligning>,
+}
+
+/// Dimensionless UniTire force F̄(φ, E), odd in φ.
+pub fn dimensionless_force(phi: f64, e: f64) -> f64 {
+    let a = phi.abs();
+    let f = 1.0 - (-a - e * a * a - (e * e + 1.0 / 12.0) * a * a * a).exp();
+    f.copysign(phi)
+}
+
+impl UniTireLateral {
+    /// Curvature factor E at normalised load.
+    pub fn curvature(&self, fzn: f64) -> f64 {
+        0.5 + 0.5 * self.p[0] * (-(fzn / self.p[1]).powi(2)).exp()
+    }
+    /// Slip stiffness K, N per unit slip.
+    pub fn stiffness(&self, fz: f64, fzn: f64) -> f64 {
+        fz * (self.p[2] + self.p[3] * fzn + self.p[4] * fzn * fzn)
+    }
+    /// Friction coefficient at sliding speed `vs` (m/s).
+    pub fn friction(&self, fzn: f64, vs: f64) -> f64 {
+        let mu0 = self.p[5] * (-fzn / self.p[6]).exp();
+        let mus = self.p[7] * mu0;
+        let muh = self.p[8] * mu0;
+        let vsm = self.p[9] * mu0;
+        let l = (vs / vsm + (-vs / vsm).exp()).ln();
+        mus + (mu0 - mus) * (-muh * muh * l * l).exp()
+    }
+    pub(crate) fn scale_stiffness(&mut self, k: f64) {
+        self.p[2] *= k;
+        self.p[3] *= k;
+        self.p[4] *= k;
+    }
+    /// (force, φ) for slip `s` (tan α or Sx) at load `fz`.
+    fn force(&self, slip: f64, fz: f64, rated: f64, vs: f64, mu_scale: f64) -> (f64, f64) {
+        let fzn = fz / rated;
+        let mu = self.friction(fzn, vs) * mu_scale;
+        if mu <= 0.0 {
+            return (0.0, f64::INFINITY);
+        }
+        let phi = self.stiffness(fz, fzn) * slip / (mu * fz);
+        (dimensionless_force(phi, self.curvature(fzn)) * mu * fz, phi)
+    }
+    fn validate(&self, table: &str) -> Result<(), ParamError> {
+        for (i, v) in self.p.iter().enumerate() {
+            ParamError::finite(&format!("{table}.p[{i}]"), *v)?;
+        }
+        ParamError::positive(&format!("{table}.p[1]"), self.p[1])?;
+        ParamError::positive(&format!("{table}.p[5]"), self.p[5])?;
+        ParamError::positive(&format!("{table}.p[6]"), self.p[6])?;
+        ParamError::non_negative(&format!("{table}.p[7]"), self.p[7])?;
+        ParamError::positive(&format!("{table}.p[9]"), self.p[9])
+    }
+}
+
+impl UniTireAligning {
+    /// Aligning arm Dx, m, at load `fz_kn` (kN) and |φy|.
+    pub fn arm(&self, fz_kn: f64, phi: f64) -> f64 {
+        let c = &self.c;
+        let dx0 = c[0] + c[1] * fz_kn + c[2] * fz_kn * fz_kn;
+        let de = c[3] + c[4] * fz_kn + c[5] * fz_kn * fz_kn;
+        let d1 = c[6] * (-fz_kn / c[7]).exp();
+        let d2 = c[8] * (-fz_kn / c[9]).exp();
+        let p = phi.abs();
+        (dx0 + de) * (-d1 * p - d2 * p * p).exp() - de
+    }
+}
+
+impl UniTire {
+    pub(crate) fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("rated_load", self.rated_load)?;
+        self.lateral.validate("lateral")?;
+        if let Some(l) = &self.longitudinal {
+            l.validate("longitudinal")?;
+        }
+        if let Some(a) = &self.aligning {
+            for (i, v) in a.c.iter().enumerate() {
+                ParamError::finite(&format!("aligning.c[{i}]"), *v)?;
+            }
+            ParamError::positive("aligning.c[7]", a.c[7])?;
+            ParamError::positive("aligning.c[9]", a.c[9])?;
+        }
+        Ok(())
+    }
+
+    fn cornering(&self, s: &SlipState) -> (f64, f64) {
+        self.lateral.force(
+            safe_tan(s.alpha),
+            s.fz,
+            self.rated_load,
+            s.lateral_sliding_speed(),
+            s.mu_scale,
+        )
+    }
+}
+
+impl TyreModel for UniTire {
+    fn forces(&self, s: &SlipState) -> TyreForces {
+        if s.fz <= 0.0 {
+            return TyreForces::default();
+        }
+        let (fy, phi) = self.cornering(s);
+        let mz = match &self.aligning {
+            Some(a) if phi.is_finite() => fy * a.arm(s.fz / 1000.0, phi),
+            _ => 0.0,
+        };
+        let fx = match &self.longitudinal {
+            Some(l) => {
+                let sx = s.kappa / (1.0 + s.kappa).abs().max(1e-9);
+                l.force(
+                    sx,
+                    s.fz,
+                    self.rated_load,
+                    s.longitudinal_sliding_speed(),
+                    s.mu_scale,
+                )
+                .0
+            }
+            None => 0.0,
+        };
+        TyreForces { fx, fy, mz }
+    }
+    fn lateral_force(&self, s: &SlipState) -> f64 {
+        if s.fz <= 0.0 {
+            return 0.0;
+        }
+        self.cornering(s).0
+    }
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        if fz <= 0.0 {
+            return 0.0;
+        }
+        self.lateral.stiffness(fz, fz / self.rated_load)
+    }
+}
+
+impl Parameterised for UniTire {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        vec!["b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8", "b9", "b10"]
+    }
+    fn parameters(&self) -> Vec<f64> {
+        self.lateral.p.to_vec()
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        self.lateral.p.copy_from_slice(p);
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        vec![
+            (-1.0, 1.0),
+            (0.2, 5.0),
+            (1.0, 40.0),
+            (-20.0, 20.0),
+            (-10.0, 10.0),
+            (0.3, 3.0),
+            (0.5, 50.0),
+            (0.3, 1.0),
+            (0.0, 2.0),
+            (0.5, 50.0),
+        ]
+    }
+}

@@ -1,0 +1,308 @@
+//! The 2-DOF lateral/yaw vehicle model (states sideslip β and yaw rate r)
+//! with four wheels and lateral load transfer.
+//!
+//! Equations (seed 003 eq. 1–2, seed 004 eq. 1–4), ISO 8855 axes, positive
+//! steer δ turns left:
+//! `m·(v̇ + u·r) = Fyf·cos δ + Fyr`, `Iz·ṙ = a·Fyf·cos δ − b·Fyr`, `v = u·tan β`,
+//! with `Fyf`, `Fyr` the axle forces (sum of the two wheels), both wheels of an
+//! axle at the same slip angle (seed 004). Slip angles use the crate's tyre
+//! sign (positive α gives positive force):
+//! exact `αf = δ − atan((v + a·r)/u)`, `αr = −atan((v − b·r)/u)`;
+//! small-angle (seed 003) `αf = δ − β − a·r/u`, `αr = −β + b·r/u`, with
+//! `m·u·(β̇ + r) + m·u̇·β = Fyf + Fyr` (no cos δ).
+//!
+//! Wheel loads (seed 004 eq. 4): static axle loads `m·g·b/l` and `m·g·a/l`
+//! split evenly, plus a lateral transfer `ΔFz = χ·m·ay·h/d_f` (front) and
+//! `(1 − χ)·m·ay·h/d_r` (rear) from the inner (left, for ay > 0) to the outer
+//! wheel, with χ = b/l by default (transfer in proportion to static axle
+//! load). A wheel whose load would go negative is off the ground (load 0).
+//!
+//! The algebraic loop: the loads depend on ay and ay on the forces, which
+//! depend on the loads. It is solved at every derivative evaluation by a
+//! secant iteration on `g(ay) = ay − Y(ay)/m` started from the fixed-point
+//! step, to |Δay| ≤ 1e-12·(1 + |ay|) — not lagged by a step. `g` is strictly
+//! increasing for any tyre whose force does not grow faster with load than
+//! `m/(h/d)` allows, so the root is unique.
+//!
+//! Units: SI, rad. Speeds below `MIN_SPEED` are held at it, because the slip
+//! angles of a 2-DOF model are undefined at standstill.
+
+mod params;
+pub mod steady;
+
+pub use params::Vehicle;
+
+use crate::tyre::{SlipState, Tyre, TyreModel};
+use serde::{Deserialize, Serialize};
+
+/// Standard gravity, m/s².
+pub const G: f64 = 9.80665;
+/// Lowest forward speed the model evaluates, m/s.
+pub const MIN_SPEED: f64 = 0.5;
+
+/// How slip angles and force projections are computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kinematics {
+    /// atan slip angles, cos δ projection, v = u·tan β (default).
+    #[default]
+    Exact,
+    /// Seed 003's small-angle form.
+    SmallAngle,
+}
+
+/// Model options; defaults are exact kinematics with load transfer.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelOptions {
+    /// Slip-angle kinematics.
+    #[serde(default)]
+    pub kinematics: Kinematics,
+    /// Lateral load transfer on (seed 004) or off (axle tyres, seed 003).
+    #[serde(default = "yes")]
+    pub load_transfer: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        Self {
+            kinematics: Kinematics::Exact,
+            load_transfer: true,
+        }
+    }
+}
+
+/// Inputs at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Inputs {
+    /// Front road-wheel steer angle δ, rad.
+    pub steer: f64,
+    /// Forward speed u of the centre of gravity, m/s.
+    pub speed: f64,
+    /// du/dt, m/s².
+    pub speed_rate: f64,
+    /// Road friction as a scale on the tyres' own friction.
+    pub friction: f64,
+}
+
+/// The state (β, r).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct State {
+    /// Sideslip angle at the centre of gravity, rad.
+    pub beta: f64,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+}
+
+/// Everything the model computes at one instant besides the derivatives.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Outputs {
+    /// dβ/dt, rad/s.
+    pub beta_rate: f64,
+    /// dr/dt, rad/s².
+    pub yaw_acceleration: f64,
+    /// Lateral acceleration of the centre of gravity (body y), m/s².
+    pub ay: f64,
+    /// Front and rear slip angles, rad.
+    pub alpha_front: f64,
+    /// Rear slip angle, rad.
+    pub alpha_rear: f64,
+    /// Front axle lateral force (both wheels, wheel frame), N.
+    pub fy_front: f64,
+    /// Rear axle lateral force, N.
+    pub fy_rear: f64,
+    /// Wheel loads front-left, front-right, rear-left, rear-right, N.
+    pub fz: [f64; 4],
+    /// Secant iterations the load-transfer loop took (0 without transfer).
+    pub load_iterations: u32,
+}
+
+/// A vehicle with its tyres and options: the right-hand side of the ODE.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VehicleModel {
+    /// Mass and geometry.
+    pub vehicle: Vehicle,
+    /// Tyre of each front wheel.
+    pub front: Tyre,
+    /// Tyre of each rear wheel.
+    pub rear: Tyre,
+    /// Kinematics and load-transfer options.
+    pub options: ModelOptions,
+}
+
+impl VehicleModel {
+    /// A model with default options.
+    pub fn new(vehicle: Vehicle, front: Tyre, rear: Tyre) -> Self {
+        Self {
+            vehicle,
+            front,
+            rear,
+            options: ModelOptions::default(),
+        }
+    }
+
+    /// Front and rear slip angles for a state and inputs.
+    pub fn slip_angles(&self, x: &State, inp: &Inputs) -> (f64, f64) {
+        let u = inp.speed.max(MIN_SPEED);
+        let (a, b) = (self.vehicle.a, self.vehicle.b);
+        match self.options.kinematics {
+            Kinematics::Exact => {
+                let v = u * x.beta.tan();
+                (
+                    inp.steer - ((v + a * x.yaw_rate) / u).atan(),
+                    -((v - b * x.yaw_rate) / u).atan(),
+                )
+            }
+            Kinematics::SmallAngle => (
+                inp.steer - x.beta - a * x.yaw_rate / u,
+                -x.beta + b * x.yaw_rate / u,
+            ),
+        }
+    }
+
+    fn wheel_force(tyre: &Tyre, alpha: f64, fz: f64, inp: &Inputs) -> f64 {
+        tyre.lateral_force(&SlipState {
+            alpha,
+            kappa: 0.0,
+            fz,
+            camber: 0.0,
+            mu_scale: inp.friction,
+            speed: inp.speed,
+        })
+    }
+
+    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay`.
+    pub fn wheel_loads(&self, ay: f64) -> [f64; 4] {
+        let v = &self.vehicle;
+        let (sf, sr) = v.static_axle_loads();
+        if !self.options.load_transfer {
+            return [0.5 * sf, 0.5 * sf, 0.5 * sr, 0.5 * sr];
+        }
+        let chi = v.front_transfer_share();
+        let dfz = v.mass * ay * v.cg_height;
+        let df = chi * dfz / v.track_front;
+        let dr = (1.0 - chi) * dfz / v.track_rear;
+        [
+            (0.5 * sf - df).max(0.0),
+            (0.5 * sf + df).max(0.0),
+            (0.5 * sr - dr).max(0.0),
+            (0.5 * sr + dr).max(0.0),
+        ]
+    }
+
+    /// Axle forces (front, rear) at slip angles and wheel loads.
+    fn axle_forces(&self, af: f64, ar: f64, fz: &[f64; 4], inp: &Inputs) -> (f64, f64) {
+        (
+            Self::wheel_force(&self.front, af, fz[0], inp)
+                + Self::wheel_force(&self.front, af, fz[1], inp),
+            Self::wheel_force(&self.rear, ar, fz[2], inp)
+                + Self::wheel_force(&self.rear, ar, fz[3], inp),
+        )
+    }
+
+    fn lateral_force_sum(&self, fyf: f64, fyr: f64, steer: f64) -> f64 {
+        match self.options.kinematics {
+            Kinematics::Exact => fyf * steer.cos() + fyr,
+            Kinematics::SmallAngle => fyf + fyr,
+        }
+    }
+
+    /// Solves the load-transfer loop; returns (ay, fyf, fyr, loads, iterations).
+    fn solve_lateral(&self, af: f64, ar: f64, inp: &Inputs) -> (f64, f64, f64, [f64; 4], u32) {
+        let m = self.vehicle.mass;
+        let eval = |ay: f64| {
+            let fz = self.wheel_loads(ay);
+            let (f, r) = self.axle_forces(af, ar, &fz, inp);
+            (self.lateral_force_sum(f, r, inp.steer) / m, f, r, fz)
+        };
+        let (y0, f0, r0, fz0) = eval(0.0);
+        if !self.options.load_transfer {
+            return (y0, f0, r0, fz0, 0);
+        }
+        // Secant on g(ay) = ay − Y(ay)/m from (0, g(0)) and the fixed-point
+        // step (y0, g(y0)).
+        let (mut x0, mut g0) = (0.0, -y0);
+        let mut x1 = y0;
+        let (mut y1, mut f1, mut r1, mut fz1) = eval(x1);
+        let mut g1 = x1 - y1;
+        let mut it = 1;
+        while g1.abs() > 1e-12 * (1.0 + x1.abs()) && it < 60 {
+            let slope = (g1 - g0) / (x1 - x0);
+            let x2 = if slope.is_finite() && slope > 1e-6 {
+                x1 - g1 / slope
+            } else {
+                y1 // fixed-point step when the secant is ill-conditioned
+            };
+            x0 = x1;
+            g0 = g1;
+            x1 = x2;
+            (y1, f1, r1, fz1) = eval(x1);
+            g1 = x1 - y1;
+            it += 1;
+        }
+        (y1, f1, r1, fz1, it)
+    }
+
+    /// State derivatives and outputs.
+    pub fn evaluate(&self, x: &State, inp: &Inputs) -> Outputs {
+        let (af, ar) = self.slip_angles(x, inp);
+        let (ay, fyf, fyr, fz, it) = self.solve_lateral(af, ar, inp);
+        let v = &self.vehicle;
+        let fyf_x = match self.options.kinematics {
+            Kinematics::Exact => fyf * inp.steer.cos(),
+            Kinematics::SmallAngle => fyf,
+        };
+        let yaw_acceleration = (v.a * fyf_x - v.b * fyr) / v.yaw_inertia;
+        let u = inp.speed.max(MIN_SPEED);
+        let beta_rate = match self.options.kinematics {
+            Kinematics::Exact => {
+                let vy = u * x.beta.tan();
+                let vy_dot = ay - u * x.yaw_rate;
+                (u * vy_dot - vy * inp.speed_rate) / (u * u + vy * vy)
+            }
+            Kinematics::SmallAngle => ay / u - x.yaw_rate - inp.speed_rate * x.beta / u,
+        };
+        Outputs {
+            beta_rate,
+            yaw_acceleration,
+            ay,
+            alpha_front: af,
+            alpha_rear: ar,
+            fy_front: fyf,
+            fy_rear: fyr,
+            fz,
+            load_iterations: it,
+        }
+    }
+
+    /// Understeer gradient K (rad per m/s² of lateral acceleration) of the
+    /// linearised model at zero slip, from the axle cornering stiffnesses at
+    /// static load: `K = (m/l)·(b/Cf − a/Cr)` (positive: understeer).
+    pub fn understeer_gradient(&self) -> f64 {
+        let v = &self.vehicle;
+        let (cf, cr) = self.axle_cornering_stiffness();
+        v.mass / v.wheelbase() * (v.b / cf - v.a / cr)
+    }
+
+    /// Axle cornering stiffness (front, rear) at static load, N/rad.
+    pub fn axle_cornering_stiffness(&self) -> (f64, f64) {
+        let (sf, sr) = self.vehicle.static_axle_loads();
+        (
+            2.0 * self.front.cornering_stiffness(0.5 * sf),
+            2.0 * self.rear.cornering_stiffness(0.5 * sr),
+        )
+    }
+
+    /// Textbook steady-state yaw-rate gain r/δ = u/(l + K·u²) of the linear
+    /// bicycle model, 1/s.
+    pub fn linear_yaw_rate_gain(&self, speed: f64) -> f64 {
+        speed / (self.vehicle.wheelbase() + self.understeer_gradient() * speed * speed)
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,117 @@
+//! Vehicle mass and geometry: the `[vehicle]` table of `FORMATS.md`.
+//!
+//! Units: kg, kg·m², m. `a`, `b` are the distances from the centre of gravity
+//! to the front and rear axle.
+
+use super::G;
+use crate::error::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Vehicle {
+    /// Mass m, kg.
+    pub mass: f64,
+    /// Yaw moment of inertia Iz, kg·m².
+    pub yaw_inertia: f64,
+    /// Centre of gravity to front axle, m.
+    pub a: f64,
+    /// Centre of gravity to rear axle, m.
+    pub b: f64,
+    /// Front track width, m.
+    pub track_front: f64,
+    /// Rear track width, m.
+    pub track_rear: f64,
+    /// Centre-of-gravity height, m.
+    pub cg_height: f64,
+    /// Wheelbase, m: optional; when given it must equal a + b (to 1 mm).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wheelbase: Option<f64>,
+    /// Front share χ of the lateral load transfer (default b/l, seed 004).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_transfer_front_share: Option<f64>,
+    /// Steering ratio (steering-wheel angle / road-wheel angle): optional,
+    /// only used to report steering-wheel angles.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub steering_ratio: Option<f64>,
+}
+
+/// Tolerance on a + b = wheelbase, m.
+const WHEELBASE_TOLERANCE: f64 = 1e-3;
+
+impl Vehicle {
+    /// Wheelbase l = a + b, m.
+    pub fn wheelbase(&self) -> f64 {
+        self.a + self.b
+    }
+
+    /// Static axle loads (front, rear), N.
+    pub fn static_axle_loads(&self) -> (f64, f64) {
+        let w = self.mass * G / self.wheelbase();
+        (w * self.b, w * self.a)
+    }
+
+    /// Front share of lateral load transfer χ.
+    pub fn front_transfer_share(&self) -> f64 {
+        self.load_transfer_front_share
+            .unwrap_or(self.b / self.wheelbase())
+    }
+
+    /// Checks every value for physical sense; the error names the key.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("mass", self.mass)?;
+        ParamError::positive("yaw_inertia", self.yaw_inertia)?;
+        ParamError::positive("a", self.a)?;
+        ParamError::positive("b", self.b)?;
+        ParamError::positive("track_front", self.track_front)?;
+        ParamError::positive("track_rear", self.track_rear)?;
+        ParamError::non_negative("cg_height", self.cg_height)?;
+        if let Some(l) = self.wheelbase {
+            ParamError::positive("wheelbase", l)?;
+            if (l - self.wheelbase()).abs() > WHEELBASE_TOLERANCE {
+                return Err(ParamError::new(
+                    "wheelbase",
+                    l,
+                    &format!(
+                        "a + b = {} + {} = {} m differs from the wheelbase by more than 1 mm",
+                        self.a,
+                        self.b,
+                        self.wheelbase()
+                    ),
+                ));
+            }
+        }
+        if let Some(chi) = self.load_transfer_front_share {
+            if !(0.0..=1.0).contains(&chi) {
+                return Err(ParamError::new(
+                    "load_transfer_front_share",
+                    chi,
+                    "a share of the load transfer must lie in [0, 1]",
+                ));
+            }
+        }
+        if let Some(r) = self.steering_ratio {
+            ParamError::positive("steering_ratio", r)?;
+        }
+        Ok(())
+    }
+
+    /// Seed 004's reference passenger car (a compact sedan with Gim tyres).
+    /// Seed 004's Table 1 did not survive; these are typical values of its
+    /// class, stated so that results can be reproduced.
+    pub fn seed004_sedan() -> Self {
+        Self {
+            mass: 1530.0,
+            yaw_inertia: 2315.0,
+            a: 1.11,
+            b: 1.67,
+            track_front: 1.55,
+            track_rear: 1.55,
+            cg_height: 0.55,
+            wheelbase: None,
+            load_transfer_front_share: None,
+            steering_ratio: None,
+        }
+    }
+}

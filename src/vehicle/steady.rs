@@ -1,0 +1,125 @@
+//! Steady states of the 2-DOF model: the steer angle that holds a target
+//! lateral acceleration (GB/T 6323 sets the step amplitude by it).
+//!
+//! At a steady state β̇ = ṙ = 0, so `ay = u·r` and the unknowns for a target
+//! ay are (β, δ). A damped Newton iteration with a central-difference Jacobian
+//! solves it from the linear bicycle model's answer. Units: SI, rad.
+
+use super::{Inputs, State, VehicleModel, MIN_SPEED};
+
+/// A steady state of the model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyState {
+    /// Sideslip, rad.
+    pub beta: f64,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+    /// Front road-wheel steer, rad.
+    pub steer: f64,
+    /// Lateral acceleration, m/s².
+    pub ay: f64,
+}
+
+/// Damped Newton iteration for a 2×2 system with a central-difference
+/// Jacobian. Returns the root and the final residual norm, or `None` when it
+/// stalls before `tol`.
+pub fn newton2(
+    f: impl Fn([f64; 2]) -> [f64; 2],
+    x0: [f64; 2],
+    scale: [f64; 2],
+    tol: f64,
+    max_iter: usize,
+) -> Option<([f64; 2], f64)> {
+    let norm = |r: [f64; 2]| r[0].hypot(r[1]);
+    let mut x = x0;
+    let mut r = f(x);
+    for _ in 0..max_iter {
+        let n = norm(r);
+        if !n.is_finite() {
+            return None;
+        }
+        if n <= tol {
+            return Some((x, n));
+        }
+        let mut jac = [[0.0; 2]; 2];
+        for j in 0..2 {
+            let h = 1e-7 * scale[j].max(x[j].abs());
+            let (mut xp, mut xm) = (x, x);
+            xp[j] += h;
+            xm[j] -= h;
+            let (fp, fm) = (f(xp), f(xm));
+            for i in 0..2 {
+                jac[i][j] = (fp[i] - fm[i]) / (2.0 * h);
+            }
+        }
+        let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let dx = [
+            (jac[1][1] * r[0] - jac[0][1] * r[1]) / det,
+            (-jac[1][0] * r[0] + jac[0][0] * r[1]) / det,
+        ];
+        // Backtrack until the residual falls: keeps Newton inside the basin
+        // near the friction limit, where the Jacobian changes fast.
+        let mut step = 1.0;
+        loop {
+            let xn = [x[0] - step * dx[0], x[1] - step * dx[1]];
+            let rn = f(xn);
+            if norm(rn) < n || step < 1e-6 {
+                x = xn;
+                r = rn;
+                break;
+            }
+            step *= 0.5;
+        }
+    }
+    let n = norm(r);
+    (n <= tol).then_some((x, n))
+}
+
+impl VehicleModel {
+    /// The steady state at `speed` with lateral acceleration `ay`: the steer
+    /// angle that holds it and the sideslip. Fails beyond the friction limit.
+    pub fn steady_state_for_lateral_acceleration(
+        &self,
+        speed: f64,
+        friction: f64,
+        ay: f64,
+    ) -> Result<SteadyState, String> {
+        let u = speed.max(MIN_SPEED);
+        let r = ay / u;
+        let v = &self.vehicle;
+        let l = v.wheelbase();
+        let (_, cr) = self.axle_cornering_stiffness();
+        let steer0 = r * (l + self.understeer_gradient() * u * u) / u;
+        let beta0 = (v.b - v.mass * v.a * u * u / (l * cr)) * r / u;
+        let f = |x: [f64; 2]| {
+            let o = self.evaluate(
+                &State {
+                    beta: x[0],
+                    yaw_rate: r,
+                },
+                &Inputs {
+                    steer: x[1],
+                    speed: u,
+                    speed_rate: 0.0,
+                    friction,
+                },
+            );
+            [o.beta_rate, o.yaw_acceleration]
+        };
+        let (x, _) = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100).ok_or_else(|| {
+            format!(
+                "no steady state at {u} m/s with ay = {ay} m/s²: beyond the vehicle's \
+                 lateral limit or the solver did not converge"
+            )
+        })?;
+        Ok(SteadyState {
+            beta: x[0],
+            yaw_rate: r,
+            steer: x[1],
+            ay,
+        })
+    }
+}

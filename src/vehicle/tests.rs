@@ -1,0 +1,222 @@
+use super::*;
+use crate::manoeuvre::{Manoeuvre, StepSteer};
+use crate::sim::Integrator;
+use crate::tyre::{Gim, Linear, Pac89, Tyre};
+use approx::assert_relative_eq;
+use nalgebra::{Matrix2, Vector2};
+
+fn sedan() -> Vehicle {
+    Vehicle::seed004_sedan()
+}
+
+fn linear_model() -> VehicleModel {
+    let mut m = VehicleModel::new(
+        sedan(),
+        Tyre::Linear(Linear::new(55_000.0)),
+        Tyre::Linear(Linear::new(60_000.0)),
+    );
+    m.options = ModelOptions {
+        kinematics: Kinematics::SmallAngle,
+        load_transfer: false,
+    };
+    m
+}
+
+fn step(speed: f64, amplitude: f64) -> Manoeuvre {
+    Manoeuvre::StepSteer(StepSteer {
+        speed,
+        amplitude,
+        start: 0.5,
+        rise_time: 0.0,
+        end: 8.0,
+    })
+}
+
+#[test]
+fn linear_steady_yaw_gain_matches_the_bicycle_model() {
+    let m = linear_model();
+    let (cf, cr) = (110_000.0, 120_000.0);
+    let v = sedan();
+    let l = v.a + v.b;
+    let k = v.mass / l * (v.b / cf - v.a / cr);
+    assert_relative_eq!(m.understeer_gradient(), k, max_relative = 1e-6);
+    for u in [10.0, 22.2, 35.0] {
+        let gain = u / (l + k * u * u);
+        let h = Integrator::default().run(&m, &step(u, 0.01), State::default());
+        let r_end = *h.yaw_rate.last().unwrap();
+        assert_relative_eq!(r_end / 0.01, gain, max_relative = 1e-6);
+        let ss = m
+            .steady_state_for_lateral_acceleration(u, 1.0, 2.0)
+            .unwrap();
+        assert_relative_eq!(ss.yaw_rate / ss.steer, gain, max_relative = 1e-9);
+    }
+}
+
+/// The linear model's step response in closed form, x(t) = A⁻¹(e^{At} − I)·B·δ,
+/// against the RK4 record.
+#[test]
+fn linear_transient_matches_the_matrix_exponential() {
+    let m = linear_model();
+    let v = sedan();
+    let (cf, cr) = (110_000.0, 120_000.0);
+    let u = 25.0;
+    let a = Matrix2::new(
+        -(cf + cr) / (v.mass * u),
+        (v.b * cr - v.a * cf) / (v.mass * u * u) - 1.0,
+        (v.b * cr - v.a * cf) / v.yaw_inertia,
+        -(v.a * v.a * cf + v.b * v.b * cr) / (v.yaw_inertia * u),
+    );
+    let b = Vector2::new(cf / (v.mass * u), v.a * cf / v.yaw_inertia);
+    let delta = 0.01;
+    // Steered from t = 0 on (start before the record), so no discontinuity
+    // falls inside an integration step and RK4's O(h⁴) accuracy shows.
+    let man = Manoeuvre::StepSteer(StepSteer {
+        start: -1.0,
+        ..match step(u, delta) {
+            Manoeuvre::StepSteer(s) => s,
+            _ => unreachable!(),
+        }
+    });
+    let h = Integrator::default().run(&m, &man, State::default());
+    let inv = a.try_inverse().unwrap();
+    for (i, &t) in h.t.iter().enumerate().step_by(97) {
+        let x = inv * ((a * t).exp() - Matrix2::identity()) * b * delta;
+        assert_relative_eq!(h.beta[i], x[0], epsilon = 1e-11);
+        assert_relative_eq!(h.yaw_rate[i], x[1], epsilon = 1e-11);
+    }
+}
+
+#[test]
+fn rk4_is_fourth_order() {
+    let mut m = VehicleModel::new(
+        sedan(),
+        Tyre::Pac89(Pac89::adams_example()),
+        Tyre::Pac89(Pac89::adams_example()),
+    );
+    m.options.load_transfer = true;
+    let man = Manoeuvre::StepSteer(StepSteer {
+        speed: 22.0,
+        amplitude: 0.03,
+        start: -1.0, // steered from t = 0: a smooth forcing
+        rise_time: 0.0,
+        end: 1.0,
+    });
+    let run = |h: f64| {
+        let hist = Integrator {
+            step: h,
+            friction: 1.0,
+        }
+        .run(&m, &man, State::default());
+        *hist.yaw_rate.last().unwrap()
+    };
+    let (r1, r2, r3) = (run(0.02), run(0.01), run(0.005));
+    let ratio = (r1 - r2) / (r2 - r3);
+    assert!((12.0..20.0).contains(&ratio), "error ratio {ratio}");
+}
+
+fn nonlinear_model() -> VehicleModel {
+    VehicleModel::new(
+        sedan(),
+        Tyre::Gim(Gim::new(55_000.0, 0.18, 1.0)),
+        Tyre::Pac89(Pac89 {
+            a: {
+                let mut a = crate::tyre::pac89::ADAMS_EXAMPLE_A;
+                // No offsets so the model is symmetric.
+                a[8..].iter_mut().for_each(|x| *x = 0.0);
+                a
+            },
+            ..Pac89::adams_example()
+        }),
+    )
+}
+
+#[test]
+fn mirrored_steer_mirrors_every_output() {
+    let m = nonlinear_model();
+    let man = step(25.0, 0.05);
+    let integ = Integrator::default();
+    let p = integ.run(&m, &man, State::default());
+    let n = integ.run(&m, &man.mirrored(), State::default());
+    for i in 0..p.len() {
+        assert_eq!(p.beta[i], -n.beta[i]);
+        assert_eq!(p.yaw_rate[i], -n.yaw_rate[i]);
+        assert_eq!(p.ay[i], -n.ay[i]);
+        assert_eq!(p.fy_front[i], -n.fy_front[i]);
+        assert_eq!(p.fz[0][i], n.fz[1][i]);
+        assert_eq!(p.fz[2][i], n.fz[3][i]);
+    }
+}
+
+#[test]
+fn load_transfer_loop_is_solved_not_lagged() {
+    let m = nonlinear_model();
+    let x = State {
+        beta: -0.02,
+        yaw_rate: 0.35,
+    };
+    let inp = Inputs {
+        steer: 0.06,
+        speed: 22.0,
+        speed_rate: 0.0,
+        friction: 1.0,
+    };
+    let o = m.evaluate(&x, &inp);
+    assert!(
+        o.load_iterations > 1 && o.load_iterations < 15,
+        "{}",
+        o.load_iterations
+    );
+    // The loads of the answer give back exactly the answer's ay.
+    let fz = m.wheel_loads(o.ay);
+    for (a, b) in fz.iter().zip(o.fz) {
+        assert_relative_eq!(*a, b, max_relative = 1e-12);
+    }
+    let (f, r) = m.axle_forces(o.alpha_front, o.alpha_rear, &fz, &inp);
+    assert_relative_eq!(
+        (f * inp.steer.cos() + r) / m.vehicle.mass,
+        o.ay,
+        max_relative = 1e-12
+    );
+    // Load transfer conserves the total load and balances the roll moment.
+    let (sf, sr) = m.vehicle.static_axle_loads();
+    assert_relative_eq!(fz.iter().sum::<f64>(), sf + sr, max_relative = 1e-12);
+    let v = &m.vehicle;
+    let moment = (fz[1] - fz[0]) / 2.0 * v.track_front + (fz[3] - fz[2]) / 2.0 * v.track_rear;
+    assert_relative_eq!(moment, v.mass * o.ay * v.cg_height, max_relative = 1e-12);
+    // Positive ay (left turn) loads the right (outer) wheels.
+    assert!(o.ay > 0.0 && fz[1] > fz[0] && fz[3] > fz[2]);
+}
+
+#[test]
+fn load_transfer_lowers_the_axle_force_of_a_saturating_tyre() {
+    let mut m = nonlinear_model();
+    let x = State {
+        beta: 0.0,
+        yaw_rate: 0.3,
+    };
+    let inp = Inputs {
+        steer: 0.08,
+        speed: 20.0,
+        speed_rate: 0.0,
+        friction: 1.0,
+    };
+    let with = m.evaluate(&x, &inp).fy_front;
+    m.options.load_transfer = false;
+    let without = m.evaluate(&x, &inp).fy_front;
+    assert!(with < without, "{with} vs {without}");
+}
+
+#[test]
+fn vehicle_validation_names_the_key() {
+    let mut v = sedan();
+    v.mass = -3.0;
+    assert_eq!(v.validate().unwrap_err().key, "mass");
+    let mut v = sedan();
+    v.wheelbase = Some(2.9);
+    let e = v.validate().unwrap_err();
+    assert_eq!(e.key, "wheelbase");
+    assert!(e.reason.contains("a + b"));
+    let mut v = sedan();
+    v.wheelbase = Some(2.7805);
+    assert!(v.validate().is_ok());
+}

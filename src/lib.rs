@@ -6,8 +6,10 @@
 //! positive steer turns left). See the README for the file formats.
 
 pub mod error;
+pub mod io;
 pub mod manoeuvre;
 pub mod metrics;
+pub mod report;
 pub mod sim;
 pub mod tyre;
 pub mod vehicle;

@@ -7,7 +7,7 @@
 //! history's columns are reserved before it starts. Units: SI, rad.
 
 use crate::manoeuvre::Manoeuvre;
-use crate::vehicle::{Inputs, Outputs, State, VehicleModel};
+use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, VehicleModel};
 
 /// A recorded simulation: one column per signal, one row per time step.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -34,6 +34,9 @@ pub struct TimeHistory {
     pub fy_rear: Vec<f64>,
     /// Wheel loads FL, FR, RL, RR, N.
     pub fz: [Vec<f64>; 4],
+    /// Evaluations of the tyre set made by the load-transfer solves, over all
+    /// RK stages (a cost diagnostic).
+    pub load_evaluations: u64,
 }
 
 impl TimeHistory {
@@ -51,6 +54,7 @@ impl TimeHistory {
             fy_front: v(),
             fy_rear: v(),
             fz: [v(), v(), v(), v()],
+            load_evaluations: 0,
         }
     }
 
@@ -136,6 +140,9 @@ impl Integrator {
         let n = ((manoeuvre.end_time() - t0) / h).round().max(0.0) as usize;
         let mut hist = TimeHistory::with_capacity(n + 1);
         let mut x = x0;
+        // One seed per RK stage: stage j of step n is predicted from stage j
+        // of steps n − 1 and n − 2, which sit at evenly spaced times.
+        let mut seeds = [LoadTransferSeed::default(); 4];
         let add = |x: &State, k: &Outputs, s: f64| State {
             beta: x.beta + s * k.beta_rate,
             yaw_rate: x.yaw_rate + s * k.yaw_acceleration,
@@ -143,16 +150,19 @@ impl Integrator {
         for i in 0..=n {
             let t = t0 + i as f64 * h;
             let inp1 = self.inputs(manoeuvre, t);
-            let k1 = model.evaluate(&x, &inp1);
+            let k1 = model.evaluate_seeded(&x, &inp1, &mut seeds[0]);
             hist.push(t, &x, &inp1, &k1);
             if i == n {
                 break;
             }
             let inp2 = self.inputs(manoeuvre, t + 0.5 * h);
             let inp4 = self.inputs(manoeuvre, t + h);
-            let k2 = model.evaluate(&add(&x, &k1, 0.5 * h), &inp2);
-            let k3 = model.evaluate(&add(&x, &k2, 0.5 * h), &inp2);
-            let k4 = model.evaluate(&add(&x, &k3, h), &inp4);
+            let k2 = model.evaluate_seeded(&add(&x, &k1, 0.5 * h), &inp2, &mut seeds[1]);
+            let k3 = model.evaluate_seeded(&add(&x, &k2, 0.5 * h), &inp2, &mut seeds[2]);
+            let k4 = model.evaluate_seeded(&add(&x, &k3, h), &inp4, &mut seeds[3]);
+            hist.load_evaluations += u64::from(
+                k1.load_iterations + k2.load_iterations + k3.load_iterations + k4.load_iterations,
+            );
             x.beta +=
                 h / 6.0 * (k1.beta_rate + 2.0 * k2.beta_rate + 2.0 * k3.beta_rate + k4.beta_rate);
             x.yaw_rate += h / 6.0

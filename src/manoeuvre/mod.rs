@@ -8,14 +8,23 @@
 
 use serde::{Deserialize, Serialize};
 
+fn default_start() -> f64 {
+    1.0
+}
+
 /// Step steer: δ rises linearly from 0 to `amplitude` between `start` and
 /// `start + rise_time`, at constant speed.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StepSteer {
     /// Forward speed, m/s.
     pub speed: f64,
-    /// Final steer angle, rad.
+    /// Steer step, rad (added to `trim`).
     pub amplitude: f64,
+    /// Steer held before the step, rad: the straight-running steer of a
+    /// vehicle whose tyres have offsets (0 for symmetric tyres).
+    #[serde(default)]
+    pub trim: f64,
     /// Time the steer starts to move, s.
     pub start: f64,
     /// 0–100 % rise time of the steer, s (GB/T 6323: ≤ 0.2 s).
@@ -26,12 +35,14 @@ pub struct StepSteer {
 
 /// Ramp steer at constant speed: δ = rate·(t − start) after `start`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct RampSteer {
     /// Forward speed, m/s.
     pub speed: f64,
     /// Steer rate, rad/s.
     pub rate: f64,
-    /// Time the ramp starts, s.
+    /// Time the ramp starts, s. Default 1 s.
+    #[serde(default = "default_start")]
     pub start: f64,
     /// End of the run, s.
     pub end: f64,
@@ -39,6 +50,7 @@ pub struct RampSteer {
 
 /// Sine steer at constant speed from `start` on.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SineSteer {
     /// Forward speed, m/s.
     pub speed: f64,
@@ -46,7 +58,8 @@ pub struct SineSteer {
     pub amplitude: f64,
     /// Frequency, Hz.
     pub frequency: f64,
-    /// Time the sine starts (at zero phase), s.
+    /// Time the sine starts (at zero phase), s. Default 1 s.
+    #[serde(default = "default_start")]
     pub start: f64,
     /// End of the run, s.
     pub end: f64,
@@ -54,6 +67,7 @@ pub struct SineSteer {
 
 /// Linear frequency sweep (chirp) at constant speed from `start` to `end`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SweepSteer {
     /// Forward speed, m/s.
     pub speed: f64,
@@ -63,7 +77,8 @@ pub struct SweepSteer {
     pub f_start: f64,
     /// Frequency at `end`, Hz.
     pub f_end: f64,
-    /// Start of the sweep, s.
+    /// Start of the sweep, s. Default 1 s.
+    #[serde(default = "default_start")]
     pub start: f64,
     /// End of the sweep and of the run, s.
     pub end: f64,
@@ -124,13 +139,14 @@ impl Manoeuvre {
             Manoeuvre::StepSteer(s) => {
                 // Right-continuous at `start`, so an ideal step (rise time 0)
                 // acts from the first integration stage at `start` on.
-                if t < s.start {
+                let ramp = if t < s.start {
                     0.0
                 } else if s.rise_time <= 0.0 || t >= s.start + s.rise_time {
-                    s.amplitude
+                    1.0
                 } else {
-                    s.amplitude * (t - s.start) / s.rise_time
-                }
+                    (t - s.start) / s.rise_time
+                };
+                s.trim + s.amplitude * ramp
             }
             Manoeuvre::RampSteer(r) => r.rate * (t - r.start).max(0.0),
             Manoeuvre::Sine(s) => {
@@ -197,7 +213,10 @@ impl Manoeuvre {
     pub fn mirrored(&self) -> Manoeuvre {
         let mut m = self.clone();
         match &mut m {
-            Manoeuvre::StepSteer(s) => s.amplitude = -s.amplitude,
+            Manoeuvre::StepSteer(s) => {
+                s.amplitude = -s.amplitude;
+                s.trim = -s.trim;
+            }
             Manoeuvre::RampSteer(s) => s.rate = -s.rate,
             Manoeuvre::Sine(s) => s.amplitude = -s.amplitude,
             Manoeuvre::Sweep(s) => s.amplitude = -s.amplitude,
@@ -216,6 +235,7 @@ mod tests {
         let m = Manoeuvre::StepSteer(StepSteer {
             speed: 20.0,
             amplitude: 0.02,
+            trim: 0.0,
             start: 1.0,
             rise_time: 0.2,
             end: 5.0,

@@ -15,6 +15,7 @@
 //! - total variance `E_x = ∫ (δ̂ − x̂)² dt` over the record (trapezoid), so a
 //!   pure delay d gives E = d and a first-order lag τ gives E = τ/2;
 //!   `Er = e1·E_r + e2·E_ay`.
+//!
 //! Crossings are interpolated linearly between samples. Signs: any step
 //! direction; the normalisation makes left and right steps give equal metrics.
 
@@ -228,10 +229,7 @@ pub fn step_metrics(
     // window's scatter is not a peak.
     let has_peak = peak > 1.0 + 2.0 * r.spread.max(1e-9) && i_peak + 1 < n;
     let peak_time = has_peak.then(|| t[i_peak] - t0);
-    let beta_steady = match beta {
-        Some(b) => Some(normalise(t, b, s, "sideslip").map_or(0.0, |nb| nb.steady)),
-        None => None,
-    };
+    let beta_steady = beta.map(|b| normalise(t, b, s, "sideslip").map_or(0.0, |nb| nb.steady));
     let tb = match (peak_time, beta_steady) {
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,

@@ -44,8 +44,8 @@ fn first_order_lag_gives_half_its_time_constant() {
 
 #[test]
 fn second_order_overshoot_and_peak_time() {
-    let (zeta, wn) = (0.4, 8.0);
-    let wd = wn * (1.0 - zeta * zeta as f64).sqrt();
+    let (zeta, wn): (f64, f64) = (0.4, 8.0);
+    let wd = wn * (1.0 - zeta * zeta).sqrt();
     let (t, steer, y) = record(|s| {
         1.0 - (-zeta * wn * s).exp() * ((wd * s).cos() + zeta * wn / wd * (wd * s).sin())
     });

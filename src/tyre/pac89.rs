@@ -33,6 +33,7 @@ pub enum Pac89Form {
     /// The Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): supported.
     AdamsPac89,
     /// The 1987 paper's numbering (a1..a13 ...): refused.
+    #[serde(rename = "pacejka-1987")]
     Pacejka1987,
 }
 
@@ -124,7 +125,10 @@ impl Pac89 {
         let a = &self.a;
         let c = a[0];
         let d = a[1] * fz_kn * fz_kn + a[2] * fz_kn;
-        let bcd = a[3] * (2.0 * (fz_kn / a[4]).atan()).sin() * (1.0 - a[5] * gamma_deg.abs());
+        // sin(2·atan z) = 2z/(1 + z²): the same value without two
+        // transcendental calls in the hot loop.
+        let z = fz_kn / a[4];
+        let bcd = a[3] * (2.0 * z / (1.0 + z * z)) * (1.0 - a[5] * gamma_deg.abs());
         CurveCoefficients {
             b: stiffness_factor(bcd, c, d),
             c,

@@ -18,11 +18,14 @@
 //! load). A wheel whose load would go negative is off the ground (load 0).
 //!
 //! The algebraic loop: the loads depend on ay and ay on the forces, which
-//! depend on the loads. It is solved at every derivative evaluation by a
-//! secant iteration on `g(ay) = ay − Y(ay)/m` started from the fixed-point
-//! step, to |Δay| ≤ 1e-12·(1 + |ay|) — not lagged by a step. `g` is strictly
-//! increasing for any tyre whose force does not grow faster with load than
-//! `m/(h/d)` allows, so the root is unique.
+//! depend on the loads. It is solved at every derivative evaluation (every RK
+//! stage) by a secant iteration on `g(ay) = ay − Y(ay)/m` to
+//! |g| ≤ 1e-9·(1 + |ay|) — not lagged by a step. The integrator seeds each
+//! solve with a quadratic extrapolation of the same RK stage's solutions in
+//! the three previous steps, so a solve usually costs one evaluation of the four
+//! tyres. `g` is strictly increasing
+//! for any tyre whose force does not grow faster with load than `m/(h/d)`
+//! allows, so the root is unique.
 //!
 //! Units: SI, rad. Speeds below `MIN_SPEED` are held at it, because the slip
 //! angles of a 2-DOF model are undefined at standstill.
@@ -98,6 +101,67 @@ pub struct State {
     pub yaw_rate: f64,
 }
 
+/// Relative tolerance of the load-transfer loop on g(ay). The loads then
+/// belong to an ay within 1e-9·(1 + |ay|) of the returned one; since the axle
+/// forces change with ay by about 5 % of m per m/s², the forces are
+/// consistent to ~1e-10 relative: two orders below RK4's own truncation error
+/// at a 1 ms step (≈ (h·λ)⁴ ≈ 1e-7 with λ ≈ 20 1/s).
+const LOAD_TOLERANCE: f64 = 1e-9;
+
+/// Where the load-transfer solve starts: the last three solutions (the solve
+/// starts from their quadratic extrapolation) and the last slope of
+/// g(ay) = ay − Y(ay)/m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadTransferSeed {
+    /// Last three solutions, newest first, m/s².
+    pub ay: [f64; 3],
+    /// dg/day estimate.
+    pub slope: f64,
+}
+
+impl Default for LoadTransferSeed {
+    fn default() -> Self {
+        Self {
+            ay: [0.0; 3],
+            slope: 1.0,
+        }
+    }
+}
+
+impl LoadTransferSeed {
+    fn predict(&self) -> f64 {
+        let [a, b, c] = self.ay;
+        3.0 * a - 3.0 * b + c
+    }
+    fn push(&mut self, ay: f64) {
+        self.ay = [ay, self.ay[0], self.ay[1]];
+    }
+}
+
+/// Static wheel loads (N) and lateral load transfer per unit ay (N per m/s²).
+#[derive(Debug, Clone, Copy)]
+struct LoadSplit {
+    front: f64,
+    rear: f64,
+    kf: f64,
+    kr: f64,
+}
+
+impl LoadSplit {
+    /// FL, FR, RL, RR at `ay`; a wheel whose load would be negative has
+    /// lifted off (load 0).
+    #[inline]
+    fn at(&self, ay: f64) -> [f64; 4] {
+        let (df, dr) = (self.kf * ay, self.kr * ay);
+        [
+            (self.front - df).max(0.0),
+            (self.front + df).max(0.0),
+            (self.rear - dr).max(0.0),
+            (self.rear + dr).max(0.0),
+        ]
+    }
+}
+
 /// Everything the model computes at one instant besides the derivatives.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Outputs {
@@ -117,7 +181,7 @@ pub struct Outputs {
     pub fy_rear: f64,
     /// Wheel loads front-left, front-right, rear-left, rear-right, N.
     pub fz: [f64; 4],
-    /// Secant iterations the load-transfer loop took (0 without transfer).
+    /// Tyre-set evaluations the load-transfer loop took (0 without transfer).
     pub load_iterations: u32,
 }
 
@@ -175,23 +239,30 @@ impl VehicleModel {
         })
     }
 
-    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay`.
-    pub fn wheel_loads(&self, ay: f64) -> [f64; 4] {
+    /// Static wheel loads and the load transferred per m/s² of lateral
+    /// acceleration on each axle: computed once per derivative evaluation,
+    /// not once per load-transfer iteration.
+    fn load_split(&self) -> LoadSplit {
         let v = &self.vehicle;
         let (sf, sr) = v.static_axle_loads();
-        if !self.options.load_transfer {
-            return [0.5 * sf, 0.5 * sf, 0.5 * sr, 0.5 * sr];
+        let (kf, kr) = if self.options.load_transfer {
+            let chi = v.front_transfer_share();
+            let k = v.mass * v.cg_height;
+            (chi * k / v.track_front, (1.0 - chi) * k / v.track_rear)
+        } else {
+            (0.0, 0.0)
+        };
+        LoadSplit {
+            front: 0.5 * sf,
+            rear: 0.5 * sr,
+            kf,
+            kr,
         }
-        let chi = v.front_transfer_share();
-        let dfz = v.mass * ay * v.cg_height;
-        let df = chi * dfz / v.track_front;
-        let dr = (1.0 - chi) * dfz / v.track_rear;
-        [
-            (0.5 * sf - df).max(0.0),
-            (0.5 * sf + df).max(0.0),
-            (0.5 * sr - dr).max(0.0),
-            (0.5 * sr + dr).max(0.0),
-        ]
+    }
+
+    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay`.
+    pub fn wheel_loads(&self, ay: f64) -> [f64; 4] {
+        self.load_split().at(ay)
     }
 
     /// Axle forces (front, rear) at slip angles and wheel loads.
@@ -204,58 +275,80 @@ impl VehicleModel {
         )
     }
 
-    fn lateral_force_sum(&self, fyf: f64, fyr: f64, steer: f64) -> f64 {
+    /// cos δ of the force projection (1 in the small-angle form).
+    fn steer_projection(&self, steer: f64) -> f64 {
         match self.options.kinematics {
-            Kinematics::Exact => fyf * steer.cos() + fyr,
-            Kinematics::SmallAngle => fyf + fyr,
+            Kinematics::Exact => steer.cos(),
+            Kinematics::SmallAngle => 1.0,
         }
     }
 
-    /// Solves the load-transfer loop; returns (ay, fyf, fyr, loads, iterations).
-    fn solve_lateral(&self, af: f64, ar: f64, inp: &Inputs) -> (f64, f64, f64, [f64; 4], u32) {
-        let m = self.vehicle.mass;
+    /// Solves the load-transfer loop from `seed`; returns (ay, fyf, fyr,
+    /// loads, evaluations) and leaves the solution and slope in `seed`.
+    fn solve_lateral(
+        &self,
+        af: f64,
+        ar: f64,
+        inp: &Inputs,
+        cos_steer: f64,
+        seed: &mut LoadTransferSeed,
+    ) -> (f64, f64, f64, [f64; 4], u32) {
+        let inv_m = 1.0 / self.vehicle.mass;
+        let split = self.load_split();
         let eval = |ay: f64| {
-            let fz = self.wheel_loads(ay);
+            let fz = split.at(ay);
             let (f, r) = self.axle_forces(af, ar, &fz, inp);
-            (self.lateral_force_sum(f, r, inp.steer) / m, f, r, fz)
+            ((f * cos_steer + r) * inv_m, f, r, fz)
         };
-        let (y0, f0, r0, fz0) = eval(0.0);
         if !self.options.load_transfer {
-            return (y0, f0, r0, fz0, 0);
+            let (y, f, r, fz) = eval(0.0);
+            return (y, f, r, fz, 0);
         }
-        // Secant on g(ay) = ay − Y(ay)/m from (0, g(0)) and the fixed-point
-        // step (y0, g(y0)).
-        let (mut x0, mut g0) = (0.0, -y0);
-        let mut x1 = y0;
+        // Quasi-Newton (secant) on g(ay) = ay − Y(ay)/m from the seed's
+        // prediction, with the seed's slope as the first derivative estimate.
+        // The integrator keeps one seed per RK stage, so the prediction is a
+        // quadratic extrapolation in time and a solve usually ends after one
+        // evaluation of the four tyres.
+        let mut x1 = seed.predict();
         let (mut y1, mut f1, mut r1, mut fz1) = eval(x1);
         let mut g1 = x1 - y1;
-        let mut it = 1;
-        while g1.abs() > 1e-12 * (1.0 + x1.abs()) && it < 60 {
-            let slope = (g1 - g0) / (x1 - x0);
-            let x2 = if slope.is_finite() && slope > 1e-6 {
-                x1 - g1 / slope
+        let mut slope = seed.slope;
+        let mut evals = 1;
+        while g1.abs() > LOAD_TOLERANCE * (1.0 + x1.abs()) && evals < 60 {
+            let x2 = x1 - g1 / slope;
+            let (y2, f2, r2, fz2) = eval(x2);
+            let g2 = x2 - y2;
+            let s = (g2 - g1) / (x2 - x1);
+            // g' = 1 − Y'/m stays near 1; a wild secant (wheel lift-off kinks
+            // Y) falls back to the fixed-point slope 1.
+            slope = if s.is_finite() && (0.1..10.0).contains(&s) {
+                s
             } else {
-                y1 // fixed-point step when the secant is ill-conditioned
+                1.0
             };
-            x0 = x1;
-            g0 = g1;
-            x1 = x2;
-            (y1, f1, r1, fz1) = eval(x1);
-            g1 = x1 - y1;
-            it += 1;
+            (x1, y1, f1, r1, fz1, g1) = (x2, y2, f2, r2, fz2, g2);
+            evals += 1;
         }
-        (y1, f1, r1, fz1, it)
+        seed.push(y1);
+        seed.slope = slope;
+        (y1, f1, r1, fz1, evals)
     }
 
-    /// State derivatives and outputs.
+    /// State derivatives and outputs, solving the load-transfer loop from
+    /// scratch.
     pub fn evaluate(&self, x: &State, inp: &Inputs) -> Outputs {
+        self.evaluate_seeded(x, inp, &mut LoadTransferSeed::default())
+    }
+
+    /// State derivatives and outputs, with the load-transfer solve started
+    /// from (and updated into) `seed`: the integrator passes the previous
+    /// stage's solution. The answer is the same to the loop's tolerance.
+    pub fn evaluate_seeded(&self, x: &State, inp: &Inputs, seed: &mut LoadTransferSeed) -> Outputs {
         let (af, ar) = self.slip_angles(x, inp);
-        let (ay, fyf, fyr, fz, it) = self.solve_lateral(af, ar, inp);
+        let cos_steer = self.steer_projection(inp.steer);
+        let (ay, fyf, fyr, fz, it) = self.solve_lateral(af, ar, inp, cos_steer, seed);
         let v = &self.vehicle;
-        let fyf_x = match self.options.kinematics {
-            Kinematics::Exact => fyf * inp.steer.cos(),
-            Kinematics::SmallAngle => fyf,
-        };
+        let fyf_x = fyf * cos_steer;
         let yaw_acceleration = (v.a * fyf_x - v.b * fyr) / v.yaw_inertia;
         let u = inp.speed.max(MIN_SPEED);
         let beta_rate = match self.options.kinematics {

@@ -7,6 +7,10 @@
 
 use super::{Inputs, State, VehicleModel, MIN_SPEED};
 
+/// Largest sideslip or steer a steady state may have, rad (45°): beyond it
+/// the 2-DOF model's assumptions no longer hold.
+const MAX_ANGLE: f64 = std::f64::consts::FRAC_PI_4;
+
 /// A steady state of the model.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyState {
@@ -107,14 +111,20 @@ impl VehicleModel {
                     friction,
                 },
             );
-            [o.beta_rate, o.yaw_acceleration]
+            // (ay − u·r)/u rather than β̇: β̇ carries a cos²β factor that
+            // would let Newton 'converge' by running off to β = ±90°.
+            [(o.ay - u * r) / u, o.yaw_acceleration]
         };
-        let (x, _) = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100).ok_or_else(|| {
+        let fail = || {
             format!(
                 "no steady state at {u} m/s with ay = {ay} m/s²: beyond the vehicle's \
-                 lateral limit or the solver did not converge"
+                 lateral limit (or the solver did not converge)"
             )
-        })?;
+        };
+        let (x, _) = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100).ok_or_else(fail)?;
+        if x[0].abs() > MAX_ANGLE || x[1].abs() > MAX_ANGLE {
+            return Err(fail());
+        }
         Ok(SteadyState {
             beta: x[0],
             yaw_rate: r,

@@ -1,0 +1,65 @@
+//! Argument parsing and printing; all work is done by the library.
+
+mod simulate;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "handling",
+    version,
+    about = "Vehicle handling simulator: 2-DOF model with load transfer and nonlinear tyres"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Simulate a scenario; writes history.csv, metrics.json and response.png.
+    Simulate {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Output folder (default: out/<scenario name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Step-steer metrics of a measured run (CSV, FORMATS.md).
+    Metrics {
+        /// The run file.
+        run: PathBuf,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Initial-value window, s.
+        #[arg(long, default_value_t = 0.5)]
+        pre_window: f64,
+        /// Steady-value window, s.
+        #[arg(long, default_value_t = 1.0)]
+        steady_window: f64,
+    },
+}
+
+/// Parses the arguments, runs the command, prints errors; exit code 1 on error.
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Simulate { scenario, out } => simulate::simulate(&scenario, out.as_deref()),
+        Command::Metrics {
+            run,
+            json,
+            pre_window,
+            steady_window,
+        } => simulate::metrics(&run, json, pre_window, steady_window),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

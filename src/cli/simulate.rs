@@ -1,0 +1,203 @@
+//! `simulate` and `metrics`.
+
+use anyhow::{Context, Result};
+use handling::io::{load_scenario, read_run};
+use handling::manoeuvre::Manoeuvre;
+use handling::metrics::{step_metrics, MetricSettings, StepMetrics};
+use handling::report::plot::{Figure, Panel, Series, Style};
+use handling::report::{refuse_overwrite, write_columns, write_json};
+use handling::sim::TimeHistory;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+#[derive(Serialize)]
+struct MetricsReport<'a> {
+    scenario: &'a str,
+    units: &'static str,
+    #[serde(flatten)]
+    metrics: &'a StepMetrics,
+}
+
+const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot in %; \
+                     tb in s·deg (GB/T 6323); total variances and er in s";
+
+fn print_metrics(m: &StepMetrics) {
+    let opt =
+        |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
+    println!(
+        "  steer step               {:>10.4} deg",
+        m.steer_step.to_degrees()
+    );
+    println!(
+        "  yaw-rate response time   {:>10.4} s",
+        m.yaw_rate_response_time
+    );
+    println!(
+        "  yaw-rate peak time       {:>10} s",
+        opt(m.yaw_rate_peak_time, 1.0)
+    );
+    println!(
+        "  yaw-rate overshoot       {:>10.2} %",
+        m.yaw_rate_overshoot
+    );
+    println!("  ay response time         {:>10.4} s", m.ay_response_time);
+    println!("  yaw-rate gain            {:>10.4} 1/s", m.yaw_rate_gain);
+    println!("  steady ay                {:>10.4} m/s²", m.ay_steady);
+    println!(
+        "  steady sideslip          {:>10} deg",
+        opt(m.beta_steady, 180.0 / std::f64::consts::PI)
+    );
+    println!("  TB                       {:>10} s·deg", opt(m.tb, 1.0));
+    println!(
+        "  E_r (yaw rate)           {:>10.4} s",
+        m.yaw_rate_total_variance
+    );
+    println!("  E_ay                     {:>10.4} s", m.ay_total_variance);
+    println!("  Er                       {:>10.4} s", m.er);
+    if !m.settled {
+        println!("  warning: the response has not settled in the steady window");
+    }
+}
+
+fn history_figure(
+    name: &str,
+    h: &TimeHistory,
+    measured: Option<&handling::io::MeasuredRun>,
+) -> Figure {
+    let deg = |v: &[f64]| v.iter().map(|x| x.to_degrees()).collect::<Vec<_>>();
+    let mut panels = vec![
+        Panel {
+            title: format!("{name}: front road-wheel steer"),
+            x_label: "t [s]".into(),
+            y_label: "δ [deg]".into(),
+            series: vec![Series::line("", &h.t, &deg(&h.steer), 0)],
+        },
+        Panel {
+            title: "yaw rate".into(),
+            x_label: "t [s]".into(),
+            y_label: "r [deg/s]".into(),
+            series: vec![Series::line("model", &h.t, &deg(&h.yaw_rate), 0)],
+        },
+        Panel {
+            title: "lateral acceleration".into(),
+            x_label: "t [s]".into(),
+            y_label: "ay [m/s²]".into(),
+            series: vec![Series::line("model", &h.t, &h.ay, 0)],
+        },
+        Panel {
+            title: "sideslip".into(),
+            x_label: "t [s]".into(),
+            y_label: "β [deg]".into(),
+            series: vec![Series::line("model", &h.t, &deg(&h.beta), 0)],
+        },
+    ];
+    if let Some(run) = measured {
+        let add = |p: &mut Panel, y: &[f64]| {
+            p.series
+                .push(Series::line("measured", &run.t, y, 1).styled(Style::Dashed));
+        };
+        add(&mut panels[1], &deg(&run.yaw_rate));
+        if let Some(ay) = &run.ay {
+            add(&mut panels[2], ay);
+        }
+        if let Some(b) = &run.beta {
+            add(&mut panels[3], &deg(b));
+        }
+    }
+    Figure::stack(panels)
+}
+
+/// `handling simulate`.
+pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
+    let sc = load_scenario(path)?;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
+    let h = sc.integrator.run(&sc.model, &sc.manoeuvre, sc.initial);
+    let files = [
+        out_dir.join("history.csv"),
+        out_dir.join("metrics.json"),
+        out_dir.join("response.png"),
+    ];
+    for f in &files {
+        refuse_overwrite(f, &sc.inputs)?;
+    }
+    println!(
+        "{}: {} steps of {} s, tyres {} / {}, friction {}",
+        sc.name,
+        h.len() - 1,
+        sc.integrator.step,
+        sc.model.front.model_name(),
+        sc.model.rear.model_name(),
+        sc.integrator.friction
+    );
+    // Everything is computed before the first file is written, so a failure
+    // leaves no outputs behind.
+    let metrics = match sc.manoeuvre {
+        Manoeuvre::StepSteer(_) => Some(
+            step_metrics(
+                &h.t,
+                &h.steer,
+                &h.yaw_rate,
+                &h.ay,
+                Some(&h.beta),
+                &sc.metrics,
+            )
+            .context("step-steer metrics")?,
+        ),
+        _ => None,
+    };
+    write_columns(&files[0], &h.columns())?;
+    if let Some(m) = &metrics {
+        print_metrics(m);
+        write_json(
+            &files[1],
+            &MetricsReport {
+                scenario: &sc.name,
+                units: UNITS,
+                metrics: m,
+            },
+        )?;
+    }
+    history_figure(&sc.name, &h, sc.measured.as_ref()).save(&files[2])?;
+    println!("wrote {}", out_dir.display());
+    Ok(())
+}
+
+/// `handling metrics`.
+pub fn metrics(path: &Path, json: bool, pre_window: f64, steady_window: f64) -> Result<()> {
+    let run = read_run(path)?;
+    let ay = run.ay.as_ref().with_context(|| {
+        format!(
+            "{}: the run has no `ay` column; lateral-acceleration metrics need it",
+            path.display()
+        )
+    })?;
+    let settings = MetricSettings {
+        pre_window,
+        steady_window,
+        ..MetricSettings::default()
+    };
+    let m = step_metrics(
+        &run.t,
+        &run.steer,
+        &run.yaw_rate,
+        ay,
+        run.beta.as_deref(),
+        &settings,
+    )
+    .with_context(|| format!("{}: step-steer metrics", path.display()))?;
+    let name = path.display().to_string();
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&MetricsReport {
+                scenario: &name,
+                units: UNITS,
+                metrics: &m
+            })?
+        );
+    } else {
+        println!("{name}");
+        print_metrics(&m);
+    }
+    Ok(())
+}

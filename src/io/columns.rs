@@ -1,0 +1,113 @@
+//! Column-wise CSV reading for the measured-data formats of `FORMATS.md`:
+//! one header line naming the columns, any column order, unknown columns
+//! ignored; a missing required column, a non-numeric cell, a NaN or an
+//! infinite value is an error naming the file, the line and the column.
+
+use crate::error::InputError;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// Numeric columns read from a CSV file, with the line number of each row.
+#[derive(Debug, Clone, Default)]
+pub struct Columns {
+    /// Column name → values.
+    pub data: BTreeMap<String, Vec<f64>>,
+    /// 1-based file line of each row.
+    pub lines: Vec<usize>,
+}
+
+impl Columns {
+    /// A column that was required (present by construction).
+    pub fn take(&mut self, name: &str) -> Vec<f64> {
+        self.data.remove(name).unwrap_or_default()
+    }
+    /// An optional column.
+    pub fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
+        self.data.remove(name)
+    }
+    /// Number of rows.
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+    /// True with no rows.
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+}
+
+/// Reads the `required` and `optional` columns of a CSV file.
+pub fn read_columns(
+    path: &Path,
+    required: &[&str],
+    optional: &[&str],
+) -> Result<Columns, InputError> {
+    let file_err = |message: String| InputError::File {
+        path: path.to_path_buf(),
+        message,
+    };
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_path(path)
+        .map_err(|e| match e.into_kind() {
+            csv::ErrorKind::Io(source) => InputError::Io {
+                path: path.to_path_buf(),
+                source,
+            },
+            other => file_err(format!("{other:?}")),
+        })?;
+    let headers = rdr
+        .headers()
+        .map_err(|e| file_err(format!("cannot read the header line: {e}")))?
+        .clone();
+    let mut wanted: Vec<(usize, String)> = Vec::new();
+    for name in required.iter().chain(optional) {
+        match headers.iter().position(|h| h == *name) {
+            Some(i) => wanted.push((i, name.to_string())),
+            None if required.contains(name) => {
+                return Err(file_err(format!(
+                    "missing required column `{name}` (the header has: {})",
+                    headers.iter().collect::<Vec<_>>().join(", ")
+                )))
+            }
+            None => {}
+        }
+    }
+    let mut out = Columns::default();
+    for (_, name) in &wanted {
+        out.data.insert(name.clone(), Vec::new());
+    }
+    for rec in rdr.records() {
+        let rec = rec.map_err(|e| {
+            let line = e.position().map_or(0, |p| p.line() as usize);
+            InputError::At {
+                path: path.to_path_buf(),
+                line,
+                column: 1,
+                message: format!("malformed CSV row: {e}"),
+            }
+        })?;
+        let line = rec.position().map_or(0, |p| p.line() as usize);
+        for (idx, name) in &wanted {
+            let cell = rec.get(*idx).unwrap_or("");
+            let at = |message: String| InputError::At {
+                path: path.to_path_buf(),
+                line,
+                column: idx + 1,
+                message,
+            };
+            let v: f64 = cell
+                .parse()
+                .map_err(|_| at(format!("column `{name}`: `{cell}` is not a number")))?;
+            if !v.is_finite() {
+                return Err(at(format!("column `{name}`: {cell} is not a finite value")));
+            }
+            out.data.get_mut(name).expect("inserted above").push(v);
+        }
+        out.lines.push(line);
+    }
+    if out.is_empty() {
+        return Err(file_err("no data rows".into()));
+    }
+    Ok(out)
+}

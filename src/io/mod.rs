@@ -1,0 +1,15 @@
+//! Readers with validation: TOML files (scenarios, tyres, vehicles) and CSV
+//! files (measured runs, tyre rig data, `FORMATS.md`).
+//!
+//! Every error names the file, and where there is one the line and column,
+//! the key or column, the value and why it is wrong. Inputs are only read.
+
+mod columns;
+mod run;
+mod scenario;
+mod toml_file;
+
+pub use columns::{read_columns, Columns};
+pub use run::{read_run, MeasuredRun};
+pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
+pub use toml_file::{load_toml, param_error, TomlSource};

@@ -1,0 +1,70 @@
+//! Measured vehicle runs (`FORMATS.md`): t, speed, steer, yaw_rate required;
+//! ay, beta, roll, ax optional. SI units, radians, ISO 8855 signs.
+
+use super::columns::read_columns;
+use crate::error::InputError;
+use std::path::{Path, PathBuf};
+
+/// One measured manoeuvre.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeasuredRun {
+    /// The file it came from.
+    pub path: PathBuf,
+    /// Time, s, strictly increasing.
+    pub t: Vec<f64>,
+    /// Forward speed, m/s.
+    pub speed: Vec<f64>,
+    /// Front road-wheel steer, rad.
+    pub steer: Vec<f64>,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: Vec<f64>,
+    /// Lateral acceleration, m/s².
+    pub ay: Option<Vec<f64>>,
+    /// Sideslip at the centre of gravity, rad.
+    pub beta: Option<Vec<f64>>,
+    /// Body roll (or road bank), as logged.
+    pub roll: Option<Vec<f64>>,
+    /// Longitudinal acceleration, m/s².
+    pub ax: Option<Vec<f64>>,
+}
+
+/// Reads and checks a measured run.
+pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
+    let mut c = read_columns(
+        path,
+        &["t", "speed", "steer", "yaw_rate"],
+        &["ay", "beta", "roll", "ax"],
+    )?;
+    let t = c.take("t");
+    for i in 1..t.len() {
+        if t[i] <= t[i - 1] {
+            return Err(InputError::At {
+                path: path.to_path_buf(),
+                line: c.lines[i],
+                column: 1,
+                message: format!(
+                    "column `t`: {} does not follow {} (time must be strictly increasing)",
+                    t[i],
+                    t[i - 1]
+                ),
+            });
+        }
+    }
+    if t.len() < 2 {
+        return Err(InputError::File {
+            path: path.to_path_buf(),
+            message: "a run needs at least two samples".into(),
+        });
+    }
+    Ok(MeasuredRun {
+        path: path.to_path_buf(),
+        t,
+        speed: c.take("speed"),
+        steer: c.take("steer"),
+        yaw_rate: c.take("yaw_rate"),
+        ay: c.take_optional("ay"),
+        beta: c.take_optional("beta"),
+        roll: c.take_optional("roll"),
+        ax: c.take_optional("ax"),
+    })
+}

@@ -1,0 +1,356 @@
+//! Scenario files: a vehicle, its tyres, the road, model options, a
+//! manoeuvre, integration and metric settings (README, "Scenario files").
+//!
+//! Tyre and run paths are relative to the scenario file. Units: SI, rad;
+//! speeds in m/s.
+
+use super::toml_file::{param_error, TomlSource};
+use super::{read_run, MeasuredRun};
+use crate::error::{InputError, ParamError};
+use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
+use crate::metrics::MetricSettings;
+use crate::sim::Integrator;
+use crate::tyre::Tyre;
+use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Paths of the tyre files.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TyreRefs {
+    /// Tyre file of the front wheels.
+    pub front: PathBuf,
+    /// Tyre file of the rear wheels (default: the front one).
+    #[serde(default)]
+    pub rear: Option<PathBuf>,
+}
+
+/// The road.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Road {
+    /// Friction coefficient, a scale on the tyres' own friction.
+    #[serde(default = "one")]
+    pub friction: f64,
+}
+
+impl Default for Road {
+    fn default() -> Self {
+        Self { friction: 1.0 }
+    }
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// Integration settings.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SimulationSettings {
+    /// RK4 step, s.
+    #[serde(default = "default_step")]
+    pub step: f64,
+}
+
+fn default_step() -> f64 {
+    1e-3
+}
+
+impl Default for SimulationSettings {
+    fn default() -> Self {
+        Self { step: 1e-3 }
+    }
+}
+
+/// Step steer as written in a file: the amplitude is either a steer angle or
+/// the steady lateral acceleration it must produce (GB/T 6323: 2 m/s²).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StepSteerSpec {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Steer step, rad, from the straight-running steer.
+    #[serde(default)]
+    pub steer: Option<f64>,
+    /// Steady lateral acceleration to reach from straight running, m/s²
+    /// (sign gives the direction).
+    #[serde(default)]
+    pub lateral_acceleration: Option<f64>,
+    /// Time the steer starts, s.
+    #[serde(default = "default_start")]
+    pub start: f64,
+    /// 0–100 % rise time, s (GB/T 6323 / ISO 7401: at most 0.2 s).
+    #[serde(default = "default_rise")]
+    pub rise_time: f64,
+    /// End of the run, s.
+    #[serde(default = "default_end")]
+    pub end: f64,
+}
+
+fn default_start() -> f64 {
+    1.0
+}
+fn default_rise() -> f64 {
+    0.1
+}
+fn default_end() -> f64 {
+    6.0
+}
+
+/// Replay of a measured run's steer and speed.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReplaySpec {
+    /// The run file (`FORMATS.md`), relative to the scenario.
+    pub run: PathBuf,
+}
+
+/// A manoeuvre as written in a file; `kind` selects it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum ManoeuvreSpec {
+    /// GB/T 6323 / ISO 7401 step steer.
+    StepSteer(StepSteerSpec),
+    /// Ramp steer.
+    RampSteer(RampSteer),
+    /// Sine steer.
+    Sine(SineSteer),
+    /// Linear frequency sweep.
+    Sweep(SweepSteer),
+    /// Replay of a measured run.
+    Replay(ReplaySpec),
+}
+
+/// A scenario file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioFile {
+    /// Short name used in reports.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Free text.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// The `[vehicle]` table of `FORMATS.md`.
+    pub vehicle: Vehicle,
+    /// Tyre files.
+    pub tyres: TyreRefs,
+    /// Road.
+    #[serde(default)]
+    pub road: Road,
+    /// Model options.
+    #[serde(default)]
+    pub model: ModelOptions,
+    /// The manoeuvre.
+    pub manoeuvre: ManoeuvreSpec,
+    /// Integration.
+    #[serde(default)]
+    pub simulation: SimulationSettings,
+    /// Metric settings.
+    #[serde(default)]
+    pub metrics: MetricSettings,
+}
+
+/// A loaded, validated scenario ready to run.
+#[derive(Debug, Clone)]
+pub struct Scenario {
+    /// Name (file stem when the file has none).
+    pub name: String,
+    /// The vehicle model.
+    pub model: VehicleModel,
+    /// The manoeuvre, amplitudes resolved.
+    pub manoeuvre: Manoeuvre,
+    /// Integration settings with the road friction.
+    pub integrator: Integrator,
+    /// Metric settings.
+    pub metrics: MetricSettings,
+    /// Initial state.
+    pub initial: State,
+    /// The measured run a replay came from.
+    pub measured: Option<MeasuredRun>,
+    /// Every file read (the CLI never writes over one of them).
+    pub inputs: Vec<PathBuf>,
+}
+
+/// Reads and validates a tyre file.
+pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
+    let src = TomlSource::read(path)?;
+    let tyre: Tyre = src.parse()?;
+    tyre.validate().map_err(|e| param_error(&src, None, e))?;
+    Ok(tyre)
+}
+
+fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {
+    r.map_err(|e| param_error(src, Some("manoeuvre"), e))
+}
+
+/// Reads, validates and resolves a scenario file.
+pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
+    let src = TomlSource::read(path)?;
+    let f: ScenarioFile = src.parse()?;
+    f.vehicle
+        .validate()
+        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+    ParamError::positive("friction", f.road.friction)
+        .map_err(|e| param_error(&src, Some("road"), e))?;
+    ParamError::in_range(
+        "step",
+        f.simulation.step,
+        0.0,
+        0.05,
+        "an RK4 step above 50 ms misses the yaw mode",
+    )
+    .map_err(|e| param_error(&src, Some("simulation"), e))?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let front_path = dir.join(&f.tyres.front);
+    let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
+    let front = load_tyre(&front_path)?;
+    let rear = load_tyre(&rear_path)?;
+    let mut inputs = vec![path.to_path_buf(), front_path, rear_path];
+    let mut model = VehicleModel::new(f.vehicle.clone(), front, rear);
+    model.options = f.model;
+    let integrator = Integrator {
+        step: f.simulation.step,
+        friction: f.road.friction,
+    };
+    let mut initial = State::default();
+    let mut measured = None;
+    let manoeuvre = match &f.manoeuvre {
+        ManoeuvreSpec::StepSteer(s) => {
+            check(&src, ParamError::positive("speed", s.speed))?;
+            check(&src, ParamError::non_negative("start", s.start))?;
+            check(
+                &src,
+                ParamError::in_range(
+                    "rise_time",
+                    s.rise_time,
+                    -1e-12,
+                    0.2,
+                    "GB/T 6323 and ISO 7401 require a steer rise time of at most 0.2 s",
+                ),
+            )?;
+            check(&src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
+            // Start from straight running: the steer and sideslip that give
+            // zero lateral acceleration (non-zero only for tyres with offsets).
+            let solve = |ay: f64| {
+                model
+                    .steady_state_for_lateral_acceleration(s.speed, f.road.friction, ay)
+                    .map_err(|m| {
+                        param_error(
+                            &src,
+                            Some("manoeuvre"),
+                            ParamError::new("lateral_acceleration", ay, &m),
+                        )
+                    })
+            };
+            let trim = solve(0.0)?;
+            initial = State {
+                beta: trim.beta,
+                yaw_rate: trim.yaw_rate,
+            };
+            let amplitude = match (s.steer, s.lateral_acceleration) {
+                (Some(d), None) => {
+                    check(&src, ParamError::finite("steer", d))?;
+                    d
+                }
+                (None, Some(ay)) => {
+                    check(&src, ParamError::finite("lateral_acceleration", ay))?;
+                    solve(ay)?.steer - trim.steer
+                }
+                _ => {
+                    return Err(param_error(
+                        &src,
+                        Some("manoeuvre"),
+                        ParamError::new("kind", f64::NAN, "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)"),
+                    ))
+                }
+            };
+            Manoeuvre::StepSteer(StepSteer {
+                speed: s.speed,
+                amplitude,
+                trim: trim.steer,
+                start: s.start,
+                rise_time: s.rise_time,
+                end: s.end,
+            })
+        }
+        ManoeuvreSpec::RampSteer(r) => {
+            check(&src, ParamError::positive("speed", r.speed))?;
+            check(&src, ParamError::finite("rate", r.rate))?;
+            check(
+                &src,
+                ParamError::in_range(
+                    "end",
+                    r.end,
+                    r.start,
+                    1e6,
+                    "the run must end after it starts",
+                ),
+            )?;
+            Manoeuvre::RampSteer(*r)
+        }
+        ManoeuvreSpec::Sine(s) => {
+            check(&src, ParamError::positive("speed", s.speed))?;
+            check(&src, ParamError::positive("frequency", s.frequency))?;
+            check(
+                &src,
+                ParamError::in_range(
+                    "end",
+                    s.end,
+                    s.start,
+                    1e6,
+                    "the run must end after it starts",
+                ),
+            )?;
+            Manoeuvre::Sine(*s)
+        }
+        ManoeuvreSpec::Sweep(s) => {
+            check(&src, ParamError::positive("speed", s.speed))?;
+            check(&src, ParamError::non_negative("f_start", s.f_start))?;
+            check(&src, ParamError::positive("f_end", s.f_end))?;
+            check(
+                &src,
+                ParamError::in_range(
+                    "end",
+                    s.end,
+                    s.start,
+                    1e6,
+                    "the sweep must end after it starts",
+                ),
+            )?;
+            Manoeuvre::Sweep(*s)
+        }
+        ManoeuvreSpec::Replay(r) => {
+            let run_path = dir.join(&r.run);
+            let run = read_run(&run_path)?;
+            inputs.push(run_path);
+            initial = State {
+                beta: run.beta.as_ref().map_or(0.0, |b| b[0]),
+                yaw_rate: run.yaw_rate[0],
+            };
+            let m = Manoeuvre::Replay(Replay {
+                t: run.t.clone(),
+                steer: run.steer.clone(),
+                speed: run.speed.clone(),
+            });
+            measured = Some(run);
+            m
+        }
+    };
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Scenario {
+        name,
+        model,
+        manoeuvre,
+        integrator,
+        metrics: f.metrics,
+        initial,
+        measured,
+        inputs,
+    })
+}

@@ -1,0 +1,145 @@
+//! TOML loading with errors located in the file: parse and type errors come
+//! with toml's own span, value errors found after parsing (a negative mass)
+//! are located by looking the key path up in the document's spans.
+
+use crate::error::{InputError, ParamError};
+use serde::de::DeserializeOwned;
+use std::path::{Path, PathBuf};
+
+/// A TOML file's path and text, kept to locate errors found after parsing.
+#[derive(Debug, Clone)]
+pub struct TomlSource {
+    /// The file.
+    pub path: PathBuf,
+    /// Its text.
+    pub text: String,
+}
+
+/// 1-based (line, column) of byte offset `pos` in `text`.
+pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
+    let before = &text[..pos.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before
+        .rfind('\n')
+        .map_or(before.len(), |i| before.len() - i - 1)
+        + 1;
+    (line, col)
+}
+
+impl TomlSource {
+    /// Reads a file.
+    pub fn read(path: &Path) -> Result<Self, InputError> {
+        let text = std::fs::read_to_string(path).map_err(|source| InputError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Ok(Self {
+            path: path.to_path_buf(),
+            text,
+        })
+    }
+
+    /// Deserialises the whole file.
+    pub fn parse<T: DeserializeOwned>(&self) -> Result<T, InputError> {
+        toml::from_str(&self.text).map_err(|e| self.toml_error(&e))
+    }
+
+    fn toml_error(&self, e: &toml::de::Error) -> InputError {
+        let message = e.message().trim().to_string();
+        // Errors inside a `model`-tagged table come without a span; an
+        // unknown field can still be found by its name.
+        let span = e.span().or_else(|| {
+            let name = message.strip_prefix("unknown field `")?.split('`').next()?;
+            self.find_key(name)
+        });
+        match span {
+            Some(span) => {
+                let (line, column) = line_col(&self.text, span.start);
+                InputError::At {
+                    path: self.path.clone(),
+                    line,
+                    column,
+                    message,
+                }
+            }
+            None => InputError::File {
+                path: self.path.clone(),
+                message,
+            },
+        }
+    }
+
+    /// Byte span of the key at dotted `key_path` (`vehicle.mass`,
+    /// `lateral.p[3]` looks up `lateral.p`).
+    pub fn key_span(&self, key_path: &str) -> Option<std::ops::Range<usize>> {
+        let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
+        let mut table: &dyn toml_edit::TableLike = doc.as_table();
+        let parts: Vec<&str> = key_path
+            .split('.')
+            .map(|p| p.split('[').next().unwrap_or(p))
+            .collect();
+        for (i, part) in parts.iter().enumerate() {
+            let (key, item) = table.get_key_value(part)?;
+            if i + 1 == parts.len() {
+                return key.span().or_else(|| item.span());
+            }
+            table = item.as_table_like()?;
+        }
+        None
+    }
+
+    /// Span of the first key called `name` at any depth.
+    fn find_key(&self, name: &str) -> Option<std::ops::Range<usize>> {
+        fn walk(t: &dyn toml_edit::TableLike, name: &str) -> Option<std::ops::Range<usize>> {
+            for (k, item) in t.iter() {
+                if k == name {
+                    return t.get_key_value(k).and_then(|(key, _)| key.span());
+                }
+                if let Some(inner) = item.as_table_like() {
+                    if let Some(s) = walk(inner, name) {
+                        return Some(s);
+                    }
+                }
+            }
+            None
+        }
+        let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
+        walk(doc.as_table(), name)
+    }
+
+    /// A located error for a value that failed validation.
+    pub fn value_error(&self, e: &ParamError) -> InputError {
+        let message = e.to_string();
+        match self.key_span(&e.key) {
+            Some(span) => {
+                let (line, column) = line_col(&self.text, span.start);
+                InputError::At {
+                    path: self.path.clone(),
+                    line,
+                    column,
+                    message,
+                }
+            }
+            None => InputError::File {
+                path: self.path.clone(),
+                message,
+            },
+        }
+    }
+}
+
+/// Reads and deserialises a TOML file.
+pub fn load_toml<T: DeserializeOwned>(path: &Path) -> Result<(T, TomlSource), InputError> {
+    let src = TomlSource::read(path)?;
+    let value = src.parse()?;
+    Ok((value, src))
+}
+
+/// A validation error located in `src`, with the key prefixed by `table`.
+pub fn param_error(src: &TomlSource, table: Option<&str>, e: ParamError) -> InputError {
+    let e = match table {
+        Some(t) => e.within(t),
+        None => e,
+    };
+    src.value_error(&e)
+}

@@ -5,10 +5,12 @@
 //! SI units and radians everywhere; ISO 8855 axes (x forward, y left, z up;
 //! positive steer turns left). See the README for the file formats.
 
+pub mod equilibria;
 pub mod error;
 pub mod io;
 pub mod manoeuvre;
 pub mod metrics;
+pub mod optim;
 pub mod report;
 pub mod sim;
 pub mod tyre;

@@ -297,3 +297,62 @@ fn an_input_is_never_overwritten() {
         .unwrap()
         .starts_with("t,speed,steer,yaw_rate\n0,20"));
 }
+
+#[test]
+fn equilibria_sweep_writes_tables_and_figures() {
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&[
+        "equilibria",
+        "scenarios/seed003_steer.toml",
+        "--out",
+        out.path().to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("agree at 11/11 conditions"), "{stdout}");
+    let csv = fs::read_to_string(out.path().join("equilibria.csv")).unwrap();
+    assert!(csv.starts_with("steer,friction,speed,beta,yaw_rate,kind,"));
+    assert!(csv.lines().count() > 11);
+    let bif = fs::read_to_string(out.path().join("bifurcations.csv")).unwrap();
+    assert!(
+        bif.lines().nth(1).unwrap().starts_with("pitchfork,steer,"),
+        "{bif}"
+    );
+    for png in [
+        "branches_steer.png",
+        "phase_portrait_0.png",
+        "phase_portrait_1.png",
+    ] {
+        assert!(
+            fs::metadata(out.path().join(png)).unwrap().len() > 10_000,
+            "{png}"
+        );
+    }
+    let s: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(out.path().join("summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(s["seed"], 1);
+    assert_eq!(s["agreeing"], 11);
+}
+
+#[test]
+fn sweep_with_an_unknown_unit_is_refused() {
+    let text = fs::read_to_string(root().join("scenarios/seed003_steer.toml")).unwrap();
+    let text = text
+        .replace("unit = \"km/h\"", "unit = \"mph\"")
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let dir = scratch(&[("sweep.toml", &text)]);
+    let o = run(&[
+        "equilibria",
+        dir.path().join("sweep.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("sweep.toml:") && e.contains("mph") && e.contains("sweep.speed"),
+        "{e}"
+    );
+    assert!(!dir.path().join("out").exists());
+}

@@ -1,5 +1,6 @@
 //! Argument parsing and printing; all work is done by the library.
 
+mod equilibria;
 mod simulate;
 
 use clap::{Parser, Subcommand};
@@ -27,6 +28,15 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Steering equilibria over a sweep: PSO and exact solver, stability,
+    /// bifurcations; writes equilibria.csv, bifurcations.csv, summary.json, PNGs.
+    Equilibria {
+        /// Sweep file (TOML).
+        sweep: PathBuf,
+        /// Output folder (default: out/<sweep name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics {
         /// The run file.
@@ -48,6 +58,7 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Simulate { scenario, out } => simulate::simulate(&scenario, out.as_deref()),
+        Command::Equilibria { sweep, out } => equilibria::equilibria(&sweep, out.as_deref()),
         Command::Metrics {
             run,
             json,

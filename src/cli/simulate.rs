@@ -71,24 +71,28 @@ fn history_figure(
             x_label: "t [s]".into(),
             y_label: "δ [deg]".into(),
             series: vec![Series::line("", &h.t, &deg(&h.steer), 0)],
+            ..Panel::default()
         },
         Panel {
             title: "yaw rate".into(),
             x_label: "t [s]".into(),
             y_label: "r [deg/s]".into(),
             series: vec![Series::line("model", &h.t, &deg(&h.yaw_rate), 0)],
+            ..Panel::default()
         },
         Panel {
             title: "lateral acceleration".into(),
             x_label: "t [s]".into(),
             y_label: "ay [m/s²]".into(),
             series: vec![Series::line("model", &h.t, &h.ay, 0)],
+            ..Panel::default()
         },
         Panel {
             title: "sideslip".into(),
             x_label: "t [s]".into(),
             y_label: "β [deg]".into(),
             series: vec![Series::line("model", &h.t, &deg(&h.beta), 0)],
+            ..Panel::default()
         },
     ];
     if let Some(run) = measured {

@@ -6,7 +6,8 @@
 
 mod columns;
 mod run;
-mod scenario;
+pub mod scenario;
+pub mod sweep;
 mod toml_file;
 
 pub use columns::{read_columns, Columns};

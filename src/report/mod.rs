@@ -3,6 +3,7 @@
 //! half-written file; and a refusal to write over any input file.
 
 pub mod plot;
+pub mod progress;
 
 use anyhow::{bail, Context, Result};
 use std::fs;

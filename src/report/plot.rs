@@ -20,14 +20,22 @@ fn ensure_font() {
 }
 
 /// How a series is drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Style {
     /// Solid line.
     Line,
     /// Dashed line.
     Dashed,
-    /// Markers only.
-    Points,
+    /// Filled circles of the given radius (px).
+    Points(u32),
+    /// Separate segments: points 2k and 2k + 1 are joined.
+    Segments,
+    /// Filled rectangles of size (dx, dy) in data units centred on each point,
+    /// in the series colour.
+    Cells(f64, f64),
+    /// As `Cells`, coloured by the series' `values` on a blue–yellow map
+    /// between the given (min, max).
+    Heat(f64, f64, f64, f64),
 }
 
 /// One named series.
@@ -41,8 +49,32 @@ pub struct Series {
     pub y: Vec<f64>,
     /// Drawing style.
     pub style: Style,
+    /// Values for `Style::Heat`.
+    pub values: Option<Vec<f64>>,
     /// Palette index.
     pub color: usize,
+}
+
+/// A blue → green → yellow colour map (viridis-like) for t in [0, 1].
+pub fn colormap(t: f64) -> RGBColor {
+    const STOPS: [(f64, f64, f64); 5] = [
+        (68.0, 1.0, 84.0),
+        (59.0, 82.0, 139.0),
+        (33.0, 145.0, 140.0),
+        (94.0, 201.0, 98.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let x = t * (STOPS.len() - 1) as f64;
+    let i = (x.floor() as usize).min(STOPS.len() - 2);
+    let w = x - i as f64;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    let mix = |p: f64, q: f64| (p + w * (q - p)).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 impl Series {
@@ -54,6 +86,7 @@ impl Series {
             y: y.to_vec(),
             style: Style::Line,
             color,
+            values: None,
         }
     }
     /// The same series with another style.
@@ -74,6 +107,10 @@ pub struct Panel {
     pub y_label: String,
     /// Series drawn in order.
     pub series: Vec<Series>,
+    /// Fixed x range (default: the data's).
+    pub x_range: Option<(f64, f64)>,
+    /// Fixed y range (default: the data's).
+    pub y_range: Option<(f64, f64)>,
 }
 
 /// A stack of panels (or a grid with `columns` > 1).
@@ -160,8 +197,12 @@ impl Figure {
         root.fill(&WHITE)?;
         let areas = root.split_evenly((rows, self.columns));
         for (area, panel) in areas.iter().zip(&self.panels) {
-            let (x0, x1) = range(panel.series.iter().flat_map(|s| s.x.iter().copied()));
-            let (y0, y1) = range(panel.series.iter().flat_map(|s| s.y.iter().copied()));
+            let (x0, x1) = panel
+                .x_range
+                .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.x.iter().copied())));
+            let (y0, y1) = panel
+                .y_range
+                .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.y.iter().copied())));
             let mut chart = ChartBuilder::on(area)
                 .caption(&panel.title, ("sans-serif", 16))
                 .margin(8)
@@ -178,20 +219,46 @@ impl Figure {
             let mut labelled = false;
             for s in &panel.series {
                 let c = palette(s.color);
-                let pts = thin(&s.x, &s.y, 4000);
+                let all = || s.x.iter().copied().zip(s.y.iter().copied());
+                let cell = |x: f64, y: f64, dx: f64, dy: f64| {
+                    [(x - 0.5 * dx, y - 0.5 * dy), (x + 0.5 * dx, y + 0.5 * dy)]
+                };
                 let anno = match s.style {
-                    Style::Line => chart.draw_series(LineSeries::new(pts, c.stroke_width(2)))?,
-                    Style::Dashed => {
-                        chart.draw_series(DashedLineSeries::new(pts, 6, 4, c.stroke_width(2)))?
+                    Style::Line => chart
+                        .draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?,
+                    Style::Dashed => chart.draw_series(DashedLineSeries::new(
+                        thin(&s.x, &s.y, 4000),
+                        6,
+                        4,
+                        c.stroke_width(2),
+                    ))?,
+                    Style::Points(r) => {
+                        chart.draw_series(all().map(|p| Circle::new(p, r, c.filled())))?
                     }
-                    Style::Points => {
-                        chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 2, c.filled())))?
+                    Style::Segments => {
+                        let pts: Vec<(f64, f64)> = all().collect();
+                        chart.draw_series(
+                            pts.chunks_exact(2)
+                                .map(|w| PathElement::new(vec![w[0], w[1]], c.stroke_width(1))),
+                        )?
+                    }
+                    Style::Cells(dx, dy) => chart.draw_series(
+                        all().map(|(x, y)| Rectangle::new(cell(x, y, dx, dy), c.filled())),
+                    )?,
+                    Style::Heat(dx, dy, lo, hi) => {
+                        let vals = s.values.clone().unwrap_or_default();
+                        chart.draw_series(all().zip(vals).map(|((x, y), v)| {
+                            Rectangle::new(
+                                cell(x, y, dx, dy),
+                                colormap((v - lo) / (hi - lo)).filled(),
+                            )
+                        }))?
                     }
                 };
                 if !s.label.is_empty() {
                     labelled = true;
                     anno.label(s.label.clone()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
+                        Rectangle::new([(x, y - 4), (x + 16, y + 4)], c.filled())
                     });
                 }
             }

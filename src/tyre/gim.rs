@@ -7,8 +7,11 @@
 //! `Fy = μ·Fz·(1 − ln³)·sgn α` and `Mz = μ·Fz·(l/2)·θ·tan α·ln³` with
 //! `θ = K/(3μFz)`, full sliding (`ln ≤ 0`) from `|tan α| = 3μFz/K`, and the
 //! pneumatic trail `l/6` at small slip. Gim's sliding friction falls with the
-//! slip: `μ = μ0·(1 − A_s·|tan α|)` (floored at 10 % of μ0 so it never
-//! vanishes); `A_s = 0` gives the classic Fiala / brush closed form.
+//! slip, `μ = μ0·(1 − A_s·s)` with `s = |tan α|`; it is written here as
+//! `μ = μ0/(1 + A_s·s)`, equal to first order, so that it stays positive and
+//! keeps falling at large slip instead of turning negative (a floor would
+//! give a constant sliding force and with it a continuum of equilibria).
+//! `A_s = 0` gives the classic Fiala / brush closed form.
 //!
 //! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
@@ -47,9 +50,6 @@ fn default_reference_load() -> f64 {
     4000.0
 }
 
-/// Floor on μ/μ0 so that large `friction_decay` never removes all grip.
-const MIN_FRICTION_RATIO: f64 = 0.1;
-
 impl Gim {
     /// A Gim tyre with constant friction and load-independent stiffness.
     pub fn new(cornering_stiffness: f64, contact_length: f64, friction: f64) -> Self {
@@ -78,8 +78,7 @@ impl Gim {
         }
         let k = self.stiffness_at(s.fz);
         let t = safe_tan(s.alpha);
-        let ratio = (1.0 - self.friction_decay * t.abs()).max(MIN_FRICTION_RATIO);
-        let mu = self.friction * s.mu_scale * ratio;
+        let mu = self.friction * s.mu_scale / (1.0 + self.friction_decay * t.abs());
         if mu <= 0.0 {
             return (0.0, 0.0);
         }

@@ -292,6 +292,7 @@ impl VehicleModel {
         inp: &Inputs,
         cos_steer: f64,
         seed: &mut LoadTransferSeed,
+        tolerance: f64,
     ) -> (f64, f64, f64, [f64; 4], u32) {
         let inv_m = 1.0 / self.vehicle.mass;
         let split = self.load_split();
@@ -314,7 +315,7 @@ impl VehicleModel {
         let mut g1 = x1 - y1;
         let mut slope = seed.slope;
         let mut evals = 1;
-        while g1.abs() > LOAD_TOLERANCE * (1.0 + x1.abs()) && evals < 60 {
+        while g1.abs() > tolerance * (1.0 + x1.abs()) && evals < 60 {
             let x2 = x1 - g1 / slope;
             let (y2, f2, r2, fz2) = eval(x2);
             let g2 = x2 - y2;
@@ -344,9 +345,23 @@ impl VehicleModel {
     /// from (and updated into) `seed`: the integrator passes the previous
     /// stage's solution. The answer is the same to the loop's tolerance.
     pub fn evaluate_seeded(&self, x: &State, inp: &Inputs, seed: &mut LoadTransferSeed) -> Outputs {
+        self.evaluate_to(x, inp, seed, LOAD_TOLERANCE)
+    }
+
+    /// As [`VehicleModel::evaluate_seeded`] with the load-transfer loop solved
+    /// to relative `tolerance` on g(ay): equilibrium and stability analysis
+    /// differentiate the right-hand side numerically and want it smooth to
+    /// near rounding (1e-13), not to the simulation's 1e-9.
+    pub fn evaluate_to(
+        &self,
+        x: &State,
+        inp: &Inputs,
+        seed: &mut LoadTransferSeed,
+        tolerance: f64,
+    ) -> Outputs {
         let (af, ar) = self.slip_angles(x, inp);
         let cos_steer = self.steer_projection(inp.steer);
-        let (ay, fyf, fyr, fz, it) = self.solve_lateral(af, ar, inp, cos_steer, seed);
+        let (ay, fyf, fyr, fz, it) = self.solve_lateral(af, ar, inp, cos_steer, seed, tolerance);
         let v = &self.vehicle;
         let fyf_x = fyf * cos_steer;
         let yaw_acceleration = (v.a * fyf_x - v.b * fyr) / v.yaw_inertia;

@@ -66,14 +66,19 @@ pub fn newton2(
         ];
         // Backtrack until the residual falls: keeps Newton inside the basin
         // near the friction limit, where the Jacobian changes fast.
+        // A step that cannot lower the residual even at 1/1024 of its
+        // length means Newton is stuck (a fold, a kink): give up early.
         let mut step = 1.0;
         loop {
             let xn = [x[0] - step * dx[0], x[1] - step * dx[1]];
             let rn = f(xn);
-            if norm(rn) < n || step < 1e-6 {
+            if norm(rn) < n {
                 x = xn;
                 r = rn;
                 break;
+            }
+            if step < 1e-3 {
+                return None;
             }
             step *= 0.5;
         }

@@ -1,0 +1,374 @@
+//! Exact reference solver for the steering equilibria, independent of chance.
+//!
+//! At an equilibrium ay = u·r, and the force and moment balances fix both
+//! axle forces by the yaw rate: `Fyr = m·u·r·a/l`, `Fyf·cos δ = m·u·r·b/l`
+//! (cos δ = 1 in the small-angle form). Parameterised by the rear slip angle
+//! αr, the rear balance gives r (directly without load transfer; with it, the
+//! loads depend on ay = u·r, so r solves the nested scalar equation
+//! `m·u·a·r/l = Fyr(αr, loads(u·r))` by secant iteration with a Brent
+//! fallback), the kinematics then give β and αf, and every equilibrium is a
+//! root of the one scalar function
+//! `h(αr) = Fyf(αf, loads(u·r))·cos δ − m·u·r·b/l`.
+//! Its roots over |αr| < 85° are found completely by a sign scan (500 cells),
+//! Brent's method on every sign change, and a golden-section search at every
+//! local minimum of |h| for pairs of roots inside one cell (and double roots,
+//! exactly at a fold). Where h vanishes identically over an interval (tyres
+//! whose sliding force does not fall with slip, both axles sliding) the
+//! interval is reported as a continuum of equilibria, not as roots.
+
+use super::{describe, Condition, Equilibrium};
+use crate::tyre::{SlipState, TyreModel};
+use crate::vehicle::{Kinematics, VehicleModel, MIN_SPEED};
+
+/// Largest |αr| scanned, rad (85°).
+const ALPHA_MAX: f64 = 85.0 * std::f64::consts::PI / 180.0;
+
+/// Scan cells.
+const CELLS: usize = 500;
+
+/// Width of one scan cell in rear slip angle, rad: a continuum's true ends lie
+/// within one cell of the scanned ones.
+pub const CELL: f64 = 2.0 * ALPHA_MAX / CELLS as f64;
+
+/// Brent's method for a root of `f` in [a, b] with f(a)·f(b) ≤ 0.
+pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
+    let (mut fa, mut fb) = (f(a), f(b));
+    if fa == 0.0 {
+        return a;
+    }
+    if fb == 0.0 {
+        return b;
+    }
+    if fa.abs() < fb.abs() {
+        std::mem::swap(&mut a, &mut b);
+        std::mem::swap(&mut fa, &mut fb);
+    }
+    let (mut c, mut fc) = (a, fa);
+    let mut mflag = true;
+    let mut d = 0.0;
+    for _ in 0..200 {
+        if fb == 0.0 || (b - a).abs() <= tol {
+            return b;
+        }
+        let mut s = if fa != fc && fb != fc {
+            a * fb * fc / ((fa - fb) * (fa - fc))
+                + b * fa * fc / ((fb - fa) * (fb - fc))
+                + c * fa * fb / ((fc - fa) * (fc - fb))
+        } else {
+            b - fb * (b - a) / (fb - fa)
+        };
+        let lo = (3.0 * a + b) / 4.0;
+        let between = (s > lo.min(b)) && (s < lo.max(b));
+        if !between
+            || (mflag && (s - b).abs() >= (b - c).abs() / 2.0)
+            || (!mflag && (s - b).abs() >= (c - d).abs() / 2.0)
+            || (mflag && (b - c).abs() < tol)
+            || (!mflag && (c - d).abs() < tol)
+        {
+            s = 0.5 * (a + b);
+            mflag = true;
+        } else {
+            mflag = false;
+        }
+        let fs = f(s);
+        d = c;
+        c = b;
+        fc = fb;
+        if fa * fs < 0.0 {
+            b = s;
+            fb = fs;
+        } else {
+            a = s;
+            fa = fs;
+        }
+        if fa.abs() < fb.abs() {
+            std::mem::swap(&mut a, &mut b);
+            std::mem::swap(&mut fa, &mut fb);
+        }
+    }
+    b
+}
+
+/// The reduced problem at one condition.
+pub struct Reduced<'a> {
+    model: &'a VehicleModel,
+    c: Condition,
+    u: f64,
+}
+
+/// What the reduced problem gives at one rear slip angle.
+#[derive(Debug, Clone, Copy)]
+pub struct Point {
+    /// h(αr), N.
+    pub h: f64,
+    /// Sideslip, rad.
+    pub beta: f64,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+}
+
+impl<'a> Reduced<'a> {
+    /// The reduced problem of `model` at `c`.
+    pub fn new(model: &'a VehicleModel, c: Condition) -> Self {
+        Self {
+            model,
+            c,
+            u: c.speed.max(MIN_SPEED),
+        }
+    }
+
+    fn axle(&self, front: bool, alpha: f64, ay: f64) -> f64 {
+        let fz = self.model.wheel_loads(ay);
+        let (tyre, l, r) = if front {
+            (&self.model.front, fz[0], fz[1])
+        } else {
+            (&self.model.rear, fz[2], fz[3])
+        };
+        let s = |fz| SlipState {
+            alpha,
+            kappa: 0.0,
+            fz,
+            camber: 0.0,
+            mu_scale: self.c.friction,
+            speed: self.u,
+        };
+        tyre.lateral_force(&s(l)) + tyre.lateral_force(&s(r))
+    }
+
+    /// Yaw rate that balances the rear axle at slip angle `ar`.
+    fn yaw_rate(&self, ar: f64) -> f64 {
+        let v = &self.model.vehicle;
+        let k = v.mass * self.u * v.a / v.wheelbase();
+        let r0 = self.axle(false, ar, 0.0) / k;
+        if !self.model.options.load_transfer {
+            return r0;
+        }
+        let g = |r: f64| k * r - self.axle(false, ar, self.u * r);
+        // Secant from the no-transfer answer; g' ≈ k, so it converges in a
+        // few steps. Brent over a bracket that must contain the root (the
+        // axle force cannot exceed the whole vehicle weight times the peak
+        // friction) takes over if it does not.
+        let (mut x0, mut g0) = (r0, g(r0));
+        if g0 == 0.0 {
+            return r0;
+        }
+        let mut x1 = r0 - g0 / k;
+        for _ in 0..30 {
+            let g1 = g(x1);
+            if g1.abs() <= 1e-13 * k * (1e-3 + x1.abs()) {
+                return x1;
+            }
+            let s = (g1 - g0) / (x1 - x0);
+            if !s.is_finite() || s <= 0.0 {
+                break;
+            }
+            (x0, g0) = (x1, g1);
+            x1 -= g1 / s;
+        }
+        let fmax = 3.0 * self.c.friction.max(1.0) * v.mass * crate::vehicle::G;
+        let bound = 2.0 * fmax / k;
+        brent(g, -bound, bound, 1e-15 * bound)
+    }
+
+    /// The reduced function and the state at rear slip angle `ar`.
+    pub fn at(&self, ar: f64) -> Point {
+        let v = &self.model.vehicle;
+        let u = self.u;
+        let r = self.yaw_rate(ar);
+        let (beta, af, proj) = match self.model.options.kinematics {
+            Kinematics::Exact => {
+                let vy = v.b * r - u * ar.tan();
+                (
+                    (vy / u).atan(),
+                    self.c.steer - ((vy + v.a * r) / u).atan(),
+                    self.c.steer.cos(),
+                )
+            }
+            Kinematics::SmallAngle => {
+                let beta = v.b * r / u - ar;
+                (beta, self.c.steer - beta - v.a * r / u, 1.0)
+            }
+        };
+        let need = v.mass * u * r * v.b / v.wheelbase();
+        Point {
+            h: self.axle(true, af, u * r) * proj - need,
+            beta,
+            yaw_rate: r,
+        }
+    }
+
+    /// Every root of h over |αr| < 85°, ascending in αr, double roots (a
+    /// tangency within rounding, exactly at a fold) included.
+    pub fn roots(&self) -> Vec<f64> {
+        self.roots_with(true)
+    }
+
+    /// The simple roots only: the count that changes by exactly two across a
+    /// fold (a double root counted once would split the change in two).
+    pub fn simple_roots(&self) -> Vec<f64> {
+        self.roots_with(false)
+    }
+
+    /// The scan: rear slip angles and h at them.
+    fn scan(&self) -> (Vec<f64>, Vec<f64>) {
+        let n = CELLS;
+        let a: Vec<f64> = (0..=n)
+            .map(|i| -ALPHA_MAX + 2.0 * ALPHA_MAX * i as f64 / n as f64)
+            .collect();
+        let h: Vec<f64> = a.iter().map(|&x| self.at(x).h).collect();
+        (a, h)
+    }
+
+    /// Which scan samples lie in a continuum of equilibria: runs of at least
+    /// three consecutive samples where h vanishes to 1e-9 of the weight. With
+    /// a tyre whose sliding force does not fall with slip (the classic brush
+    /// model) and both axles sliding, the forces no longer depend on the slip
+    /// angles and a whole curve of states is in equilibrium.
+    fn flat(&self, h: &[f64]) -> Vec<bool> {
+        let tol = 1e-9 * self.model.vehicle.mass * crate::vehicle::G;
+        let small: Vec<bool> = h.iter().map(|v| v.abs() <= tol).collect();
+        let mut flat = vec![false; h.len()];
+        let mut i = 0;
+        while i < h.len() {
+            if !small[i] {
+                i += 1;
+                continue;
+            }
+            let mut j = i;
+            while j < h.len() && small[j] {
+                j += 1;
+            }
+            if j - i >= 3 {
+                flat[i..j].iter_mut().for_each(|f| *f = true);
+            }
+            i = j;
+        }
+        flat
+    }
+
+    /// Intervals of rear slip angle (rad) that are continua of equilibria.
+    pub fn continua(&self) -> Vec<(f64, f64)> {
+        let (a, h) = self.scan();
+        let flat = self.flat(&h);
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < a.len() {
+            if flat[i] {
+                let j = (i..a.len()).take_while(|&k| flat[k]).last().unwrap_or(i);
+                out.push((a[i], a[j]));
+                i = j + 1;
+            } else {
+                i += 1;
+            }
+        }
+        out
+    }
+
+    fn roots_with(&self, doubles: bool) -> Vec<f64> {
+        let n = CELLS;
+        let (a, h) = self.scan();
+        let flat = self.flat(&h);
+        let f = |x: f64| self.at(x).h;
+        let tol = 1e-15;
+        let mut roots = Vec::new();
+        for i in 0..n {
+            if flat[i] || flat[i + 1] {
+                continue;
+            }
+            if h[i] == 0.0 {
+                roots.push(a[i]);
+            } else if h[i] * h[i + 1] < 0.0 {
+                roots.push(brent(f, a[i], a[i + 1], tol));
+            }
+        }
+        // Pairs of roots inside one cell, and double roots: at each interior
+        // local minimum of |h| without a sign change nearby, minimise s·h
+        // (s = sign of h there) over the two neighbouring cells.
+        for i in 1..n {
+            if flat[i - 1] || flat[i] || flat[i + 1] {
+                continue;
+            }
+            let (p, q, r) = (h[i - 1], h[i], h[i + 1]);
+            if q == 0.0
+                || !(q.abs() <= p.abs() && q.abs() <= r.abs())
+                || p * q <= 0.0
+                || q * r <= 0.0
+            {
+                continue;
+            }
+            let s = q.signum();
+            let (mut lo, mut hi) = (a[i - 1], a[i + 1]);
+            let g = 0.5 * (5f64.sqrt() - 1.0);
+            for _ in 0..80 {
+                let m1 = hi - g * (hi - lo);
+                let m2 = lo + g * (hi - lo);
+                if s * f(m1) < s * f(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            let xm = 0.5 * (lo + hi);
+            let hm = f(xm);
+            let scale = self.model.vehicle.mass * crate::vehicle::G;
+            if s * hm < 0.0 {
+                roots.push(brent(f, a[i - 1], xm, tol));
+                roots.push(brent(f, xm, a[i + 1], tol));
+            } else if doubles && hm.abs() <= 1e-12 * scale {
+                roots.push(xm);
+            }
+        }
+        roots.sort_by(f64::total_cmp);
+        roots.dedup_by(|x, y| (*x - *y).abs() < 1e-12);
+        roots
+    }
+}
+
+/// A continuum of equilibria: an interval of rear slip angle over which the
+/// reduced function vanishes (both axles sliding at constant force).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Continuum {
+    /// Rear slip angle interval, rad.
+    pub alpha_rear: (f64, f64),
+    /// Sideslip at its ends, rad.
+    pub beta: (f64, f64),
+    /// Yaw rate at its ends, rad/s.
+    pub yaw_rate: (f64, f64),
+}
+
+/// The continua of equilibria at a condition (usually none).
+pub fn continua(model: &VehicleModel, c: &Condition) -> Vec<Continuum> {
+    let red = Reduced::new(model, *c);
+    red.continua()
+        .into_iter()
+        .map(|(lo, hi)| {
+            let (p, q) = (red.at(lo), red.at(hi));
+            Continuum {
+                alpha_rear: (lo, hi),
+                beta: (p.beta, q.beta),
+                yaw_rate: (p.yaw_rate, q.yaw_rate),
+            }
+        })
+        .collect()
+}
+
+/// All isolated equilibria at a condition (anywhere, not only in a box; see
+/// [`continua`] for curves of them), in ascending
+/// rear slip angle. Each root is polished by Newton on the full model so the
+/// residual is at machine precision.
+pub fn solve(model: &VehicleModel, c: &Condition) -> Vec<Equilibrium> {
+    let red = Reduced::new(model, *c);
+    red.roots()
+        .into_iter()
+        .map(|ar| {
+            let p = red.at(ar);
+            let x0 = [p.beta, p.yaw_rate];
+            // Keep the polish only if it stayed at this root (near a fold,
+            // Newton could jump to the partner root).
+            let x = super::polish(model, c, x0)
+                .filter(|x| super::distance(*x, x0, [1.0, 1.0]) < 1e-6)
+                .unwrap_or(x0);
+            describe(model, c, x)
+        })
+        .collect()
+}

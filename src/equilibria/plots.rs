@@ -1,0 +1,402 @@
+//! PNG reports of equilibrium sweeps: branch diagrams (stable solid, unstable
+//! dashed, folds marked), phase portraits (vector field, trajectories,
+//! equilibria, saddle separatrices) and stability maps over two swept
+//! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
+
+use super::bifurcation::{Axis, Bifurcation, BifurcationKind};
+use super::stability::{self, Kind};
+use super::sweep::{axis_lines, SweepResult};
+use super::{residual, Condition, Equilibrium, SearchBox};
+use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::vehicle::VehicleModel;
+use anyhow::Result;
+use std::path::Path;
+
+const STABLE: usize = 0;
+const UNSTABLE: usize = 1;
+const FOLD: usize = 7;
+
+/// A parameter in display units and its label.
+fn display(axis: Axis, v: f64) -> f64 {
+    match axis {
+        Axis::Steer => v.to_degrees(),
+        Axis::Friction => v,
+        Axis::Speed => v * 3.6,
+    }
+}
+
+fn axis_label(axis: Axis) -> &'static str {
+    match axis {
+        Axis::Steer => "steer δ [deg]",
+        Axis::Friction => "friction μ [-]",
+        Axis::Speed => "speed u [km/h]",
+    }
+}
+
+fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
+    eqs.iter()
+        .copied()
+        .filter(|e| bx.contains([e.beta, e.yaw_rate]))
+        .collect()
+}
+
+/// β and r of the equilibria against the swept parameter, along the first
+/// line of `axis`.
+pub fn branch_diagram(res: &SweepResult, axis: Axis, bx: &SearchBox, path: &Path) -> Result<()> {
+    let line = &axis_lines(&res.grid, axis)[0];
+    let mut beta = Panel {
+        title: format!("steering equilibria: sideslip against {}", axis.name()),
+        x_label: axis_label(axis).into(),
+        y_label: "β_e [deg]".into(),
+        ..Panel::default()
+    };
+    let mut yaw = Panel {
+        title: format!("yaw rate against {}", axis.name()),
+        x_label: axis_label(axis).into(),
+        y_label: "r_e [deg/s]".into(),
+        ..Panel::default()
+    };
+    for w in line.windows(2) {
+        let (a, b) = (&res.points[w[0]], &res.points[w[1]]);
+        let (ea, eb) = (in_box(&a.exact, bx), in_box(&b.exact, bx));
+        if ea.len() != eb.len() {
+            continue;
+        }
+        let (pa, pb) = (
+            display(axis, axis.get(&a.condition)),
+            display(axis, axis.get(&b.condition)),
+        );
+        for (x, y) in ea.iter().zip(&eb) {
+            let stable = x.stability.kind.is_stable() && y.stability.kind.is_stable();
+            let (style, color) = if stable {
+                (Style::Line, STABLE)
+            } else {
+                (Style::Dashed, UNSTABLE)
+            };
+            let seg =
+                |v0: f64, v1: f64| Series::line("", &[pa, pb], &[v0, v1], color).styled(style);
+            beta.series
+                .push(seg(x.beta.to_degrees(), y.beta.to_degrees()));
+            yaw.series
+                .push(seg(x.yaw_rate.to_degrees(), y.yaw_rate.to_degrees()));
+        }
+    }
+    for &i in line {
+        let p = &res.points[i];
+        for e in in_box(&p.exact, bx) {
+            let c = if e.stability.kind.is_stable() {
+                STABLE
+            } else {
+                UNSTABLE
+            };
+            let x = [display(axis, axis.get(&p.condition))];
+            beta.series
+                .push(Series::line("", &x, &[e.beta.to_degrees()], c).styled(Style::Points(3)));
+            yaw.series
+                .push(Series::line("", &x, &[e.yaw_rate.to_degrees()], c).styled(Style::Points(3)));
+        }
+    }
+    let first = &res.points[line[0]].condition;
+    let on_line = |b: &&Bifurcation| {
+        b.axis == axis
+            && [Axis::Steer, Axis::Friction, Axis::Speed]
+                .iter()
+                .all(|&o| o == axis || (o.get(&b.at) - o.get(first)).abs() < 1e-12)
+    };
+    let folds: Vec<&Bifurcation> = res.bifurcations.iter().filter(on_line).collect();
+    let fx: Vec<f64> = folds
+        .iter()
+        .map(|b| display(axis, axis.get(&b.at)))
+        .collect();
+    let label = |k: BifurcationKind| match k {
+        BifurcationKind::Fold => "fold",
+        BifurcationKind::Pitchfork => "pitchfork",
+        BifurcationKind::Hopf => "Hopf",
+    };
+    if !folds.is_empty() {
+        let l = label(folds[0].kind);
+        beta.series.push(
+            Series::line(
+                l,
+                &fx,
+                &folds
+                    .iter()
+                    .map(|b| b.beta.to_degrees())
+                    .collect::<Vec<_>>(),
+                FOLD,
+            )
+            .styled(Style::Points(7)),
+        );
+        yaw.series.push(
+            Series::line(
+                l,
+                &fx,
+                &folds
+                    .iter()
+                    .map(|b| b.yaw_rate.to_degrees())
+                    .collect::<Vec<_>>(),
+                FOLD,
+            )
+            .styled(Style::Points(7)),
+        );
+    }
+    for p in [&mut beta, &mut yaw] {
+        p.series.push(Series::line("stable", &[], &[], STABLE));
+        p.series
+            .push(Series::line("unstable", &[], &[], UNSTABLE).styled(Style::Dashed));
+    }
+    Figure::stack(vec![beta, yaw]).save(path)
+}
+
+/// RK4 trajectory of the autonomous (β, r) system from `x0`, `dt` signed
+/// (negative integrates backward), stopping outside the box.
+fn trajectory(
+    model: &VehicleModel,
+    c: &Condition,
+    bx: &SearchBox,
+    x0: [f64; 2],
+    dt: f64,
+    steps: usize,
+) -> Vec<[f64; 2]> {
+    let f = |x: [f64; 2]| residual(model, c, x);
+    let add = |x: [f64; 2], k: [f64; 2], s: f64| [x[0] + s * k[0], x[1] + s * k[1]];
+    let mut x = x0;
+    let mut out = vec![x];
+    for _ in 0..steps {
+        let k1 = f(x);
+        let k2 = f(add(x, k1, 0.5 * dt));
+        let k3 = f(add(x, k2, 0.5 * dt));
+        let k4 = f(add(x, k3, dt));
+        x = [
+            x[0] + dt / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
+            x[1] + dt / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
+        ];
+        if !x[0].is_finite() || !bx.contains(x) {
+            break;
+        }
+        out.push(x);
+    }
+    out
+}
+
+/// Eigenvector of a 2×2 matrix for a real eigenvalue λ, unit length in
+/// box-scaled units.
+fn eigenvector(j: [[f64; 2]; 2], lambda: f64, scale: [f64; 2]) -> [f64; 2] {
+    let v = if (j[0][1]).abs() > 1e-14 {
+        [j[0][1], lambda - j[0][0]]
+    } else if (j[1][0]).abs() > 1e-14 {
+        [lambda - j[1][1], j[1][0]]
+    } else if (j[0][0] - lambda).abs() < (j[1][1] - lambda).abs() {
+        [1.0, 0.0]
+    } else {
+        [0.0, 1.0]
+    };
+    let n = (v[0] / scale[0]).hypot(v[1] / scale[1]);
+    [v[0] / n, v[1] / n]
+}
+
+/// Phase portrait at one condition.
+pub fn phase_portrait(
+    model: &VehicleModel,
+    c: &Condition,
+    search: &SearchBox,
+    eqs: &[Equilibrium],
+    path: &Path,
+) -> Result<()> {
+    // Trajectories and separatrices leave the search box (which only bounds
+    // where equilibria can be): draw twice its yaw-rate range.
+    let bx = &SearchBox {
+        beta_max: search.beta_max,
+        yaw_rate_max: 2.0 * search.yaw_rate_max,
+    };
+    let deg = |v: &[[f64; 2]]| -> (Vec<f64>, Vec<f64>) {
+        v.iter()
+            .map(|x| (x[0].to_degrees(), x[1].to_degrees()))
+            .unzip()
+    };
+    let scale = bx.scale();
+    let mut series = Vec::new();
+    // Vector field: unit arrows in box-scaled units.
+    let n = 21;
+    let mut arrows = Vec::new();
+    for i in 0..n {
+        for k in 0..n {
+            let x = [
+                -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / n as f64,
+                -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / n as f64,
+            ];
+            let f = residual(model, c, x);
+            let d = [f[0] / scale[0], f[1] / scale[1]];
+            let len = d[0].hypot(d[1]);
+            if !len.is_finite() || len == 0.0 {
+                continue;
+            }
+            let s = 0.7 / n as f64;
+            arrows.push(x);
+            arrows.push([
+                x[0] + s * d[0] / len * scale[0],
+                x[1] + s * d[1] / len * scale[1],
+            ]);
+        }
+    }
+    let (ax, ay) = deg(&arrows);
+    series.push(Series::line("", &ax, &ay, 7).styled(Style::Segments));
+    // Trajectories from a grid of starts.
+    let m = 7;
+    for i in 0..m {
+        for k in 0..m {
+            let x0 = [
+                -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / m as f64,
+                -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / m as f64,
+            ];
+            let (tx, ty) = deg(&trajectory(model, c, bx, x0, 0.01, 600));
+            series.push(Series::line("", &tx, &ty, 0));
+        }
+    }
+    // Separatrices: the stable (backward) and unstable (forward) manifolds of
+    // every saddle.
+    let mut first = true;
+    for e in eqs.iter().filter(|e| e.stability.kind == Kind::Saddle) {
+        let x = [e.beta, e.yaw_rate];
+        let j = stability::jacobian(model, c, x);
+        for (lambda, dir, color) in [
+            (e.stability.eigenvalues[1].0, -1.0, 1),
+            (e.stability.eigenvalues[0].0, 1.0, 3),
+        ] {
+            let v = eigenvector(j, lambda, scale);
+            for sgn in [-1.0, 1.0] {
+                let x0 = [
+                    x[0] + sgn * 1e-4 * v[0] * scale[0],
+                    x[1] + sgn * 1e-4 * v[1] * scale[1],
+                ];
+                let (tx, ty) = deg(&trajectory(model, c, bx, x0, dir * 0.005, 2000));
+                let label = match (first && sgn < 0.0, color) {
+                    (true, 1) => "stable manifold (separatrix)",
+                    (true, _) => "unstable manifold",
+                    _ => "",
+                };
+                series.push(Series::line(label, &tx, &ty, color));
+            }
+        }
+        first = false;
+    }
+    for (kind_ok, label, color) in [
+        (
+            &(|k: Kind| k.is_stable()) as &dyn Fn(Kind) -> bool,
+            "stable equilibrium",
+            2,
+        ),
+        (&|k: Kind| k == Kind::Saddle, "saddle", 1),
+        (
+            &|k: Kind| !k.is_stable() && k != Kind::Saddle,
+            "unstable equilibrium",
+            4,
+        ),
+    ] {
+        let pts: Vec<[f64; 2]> = eqs
+            .iter()
+            .filter(|e| kind_ok(e.stability.kind) && bx.contains([e.beta, e.yaw_rate]))
+            .map(|e| [e.beta, e.yaw_rate])
+            .collect();
+        if !pts.is_empty() {
+            let (px, py) = deg(&pts);
+            series.push(Series::line(label, &px, &py, color).styled(Style::Points(7)));
+        }
+    }
+    let panel = Panel {
+        title: format!(
+            "phase portrait: δ = {:.2}°, μ = {:.2}, u = {:.1} km/h",
+            c.steer.to_degrees(),
+            c.friction,
+            c.speed * 3.6
+        ),
+        x_label: "β [deg]".into(),
+        y_label: "r [deg/s]".into(),
+        series,
+        x_range: Some((-bx.beta_max.to_degrees(), bx.beta_max.to_degrees())),
+        y_range: Some((-bx.yaw_rate_max.to_degrees(), bx.yaw_rate_max.to_degrees())),
+    };
+    Figure {
+        panels: vec![panel],
+        columns: 1,
+        width: 900,
+        row_height: 800,
+    }
+    .save(path)
+}
+
+/// Stability map over two swept axes (the third at its first value).
+pub fn stability_map(
+    res: &SweepResult,
+    ax: Axis,
+    ay: Axis,
+    bx: &SearchBox,
+    path: &Path,
+) -> Result<()> {
+    let cats: [(&str, usize); 4] = [
+        ("no equilibrium in the box", 7),
+        ("stable only", 2),
+        ("stable and saddles", 0),
+        ("no stable equilibrium", 1),
+    ];
+    let mut pts: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
+    let first = res.points[0].condition;
+    let others: Vec<Axis> = [Axis::Steer, Axis::Friction, Axis::Speed]
+        .into_iter()
+        .filter(|a| *a != ax && *a != ay)
+        .collect();
+    for p in &res.points {
+        if others
+            .iter()
+            .any(|o| (o.get(&p.condition) - o.get(&first)).abs() > 1e-12)
+        {
+            continue;
+        }
+        let e = in_box(&p.exact, bx);
+        let stable = e.iter().filter(|q| q.stability.kind.is_stable()).count();
+        let saddles = e
+            .iter()
+            .filter(|q| q.stability.kind == Kind::Saddle)
+            .count();
+        let cat = match (e.len(), stable, saddles) {
+            (0, _, _) => 0,
+            (_, s, 0) if s > 0 => 1,
+            (_, s, _) if s > 0 => 2,
+            _ => 3,
+        };
+        pts[cat].push((
+            display(ax, ax.get(&p.condition)),
+            display(ay, ay.get(&p.condition)),
+        ));
+    }
+    let step = |a: Axis| {
+        let v = res.grid.values(a);
+        v.windows(2)
+            .map(|w| display(a, w[1]) - display(a, w[0]))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (dx, dy) = (step(ax), step(ay));
+    let series = cats
+        .iter()
+        .zip(&pts)
+        .filter(|(_, p)| !p.is_empty())
+        .map(|((label, color), p)| {
+            let (x, y): (Vec<f64>, Vec<f64>) = p.iter().copied().unzip();
+            Series::line(label, &x, &y, *color).styled(Style::Cells(dx, dy))
+        })
+        .collect();
+    let panel = Panel {
+        title: "stability map (equilibria in the search box)".into(),
+        x_label: axis_label(ax).into(),
+        y_label: axis_label(ay).into(),
+        series,
+        ..Panel::default()
+    };
+    Figure {
+        panels: vec![panel],
+        columns: 1,
+        width: 900,
+        row_height: 700,
+    }
+    .save(path)
+}

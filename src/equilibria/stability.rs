@@ -1,0 +1,121 @@
+//! Local stability of an equilibrium from the eigenvalues of the 2×2
+//! Jacobian ∂(β̇, ṙ)/∂(β, r) (central differences, step 1e-7 scaled).
+
+use super::{residual, Condition};
+use crate::vehicle::VehicleModel;
+use serde::{Deserialize, Serialize};
+
+/// Kind of equilibrium.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kind {
+    /// Real negative eigenvalues.
+    StableNode,
+    /// Complex eigenvalues with negative real part.
+    StableFocus,
+    /// Real eigenvalues of opposite sign.
+    Saddle,
+    /// Real positive eigenvalues.
+    UnstableNode,
+    /// Complex eigenvalues with positive real part.
+    UnstableFocus,
+    /// Zero trace with positive determinant, or a zero eigenvalue.
+    Degenerate,
+}
+
+impl Kind {
+    /// Whether small disturbances decay.
+    pub fn is_stable(self) -> bool {
+        matches!(self, Kind::StableNode | Kind::StableFocus)
+    }
+    /// Short name used in CSV files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::StableNode => "stable-node",
+            Kind::StableFocus => "stable-focus",
+            Kind::Saddle => "saddle",
+            Kind::UnstableNode => "unstable-node",
+            Kind::UnstableFocus => "unstable-focus",
+            Kind::Degenerate => "degenerate",
+        }
+    }
+}
+
+/// Eigenvalues and classification.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Stability {
+    /// Kind.
+    pub kind: Kind,
+    /// Eigenvalues (re, im), the one with the larger real part first.
+    pub eigenvalues: [(f64, f64); 2],
+    /// Trace of the Jacobian, 1/s.
+    pub trace: f64,
+    /// Determinant of the Jacobian, 1/s².
+    pub determinant: f64,
+}
+
+/// Jacobian of (β̇, ṙ) with respect to (β, r) by central differences.
+pub fn jacobian(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [[f64; 2]; 2] {
+    let mut j = [[0.0; 2]; 2];
+    for k in 0..2 {
+        let h = 1e-7 * x[k].abs().max(0.01);
+        let (mut xp, mut xm) = (x, x);
+        xp[k] += h;
+        xm[k] -= h;
+        let (fp, fm) = (residual(model, c, xp), residual(model, c, xm));
+        for i in 0..2 {
+            j[i][k] = (fp[i] - fm[i]) / (2.0 * h);
+        }
+    }
+    j
+}
+
+/// Classifies a 2×2 Jacobian.
+pub fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
+    let tr = j[0][0] + j[1][1];
+    let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    let disc = 0.25 * tr * tr - det;
+    let eigenvalues = if disc >= 0.0 {
+        let s = disc.sqrt();
+        [(0.5 * tr + s, 0.0), (0.5 * tr - s, 0.0)]
+    } else {
+        let s = (-disc).sqrt();
+        [(0.5 * tr, s), (0.5 * tr, -s)]
+    };
+    // Relative thresholds: a determinant or trace this close to zero is
+    // numerically a bifurcation point.
+    let scale = j
+        .iter()
+        .flatten()
+        .map(|v| v.abs())
+        .fold(0.0, f64::max)
+        .max(1e-300);
+    let kind = if det.abs() <= 1e-10 * scale * scale {
+        Kind::Degenerate
+    } else if det < 0.0 {
+        Kind::Saddle
+    } else if tr.abs() <= 1e-10 * scale {
+        Kind::Degenerate
+    } else if disc >= 0.0 {
+        if tr < 0.0 {
+            Kind::StableNode
+        } else {
+            Kind::UnstableNode
+        }
+    } else if tr < 0.0 {
+        Kind::StableFocus
+    } else {
+        Kind::UnstableFocus
+    };
+    Stability {
+        kind,
+        eigenvalues,
+        trace: tr,
+        determinant: det,
+    }
+}
+
+/// Stability of the equilibrium at `x`.
+pub fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
+    from_jacobian(jacobian(model, c, x))
+}

@@ -1,0 +1,298 @@
+use super::*;
+use crate::tyre::{Linear, MagicSimple, Tyre};
+use crate::vehicle::{Kinematics, ModelOptions, Vehicle};
+use approx::assert_relative_eq;
+
+pub(crate) fn seed003_model(load_transfer: bool) -> VehicleModel {
+    let mut m = VehicleModel::new(
+        Vehicle::seed004_sedan(),
+        Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
+        Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
+    );
+    m.options = ModelOptions {
+        kinematics: Kinematics::SmallAngle,
+        load_transfer,
+    };
+    m
+}
+
+fn cond(steer: f64, friction: f64, kmh: f64) -> Condition {
+    Condition {
+        steer,
+        friction,
+        speed: kmh / 3.6,
+    }
+}
+
+const BOX: SearchBox = SearchBox {
+    beta_max: 0.6,
+    yaw_rate_max: 1.5,
+};
+
+fn steer_grid(lt: bool) -> (VehicleModel, sweep::Grid) {
+    (
+        seed003_model(lt),
+        sweep::Grid {
+            steer: (0..=10).map(|i| 0.02 * i as f64).collect(),
+            friction: vec![0.8],
+            speed: vec![70.0 / 3.6],
+        },
+    )
+}
+
+fn run(m: &VehicleModel, g: &sweep::Grid, s: &pso::PsoSearch) -> sweep::SweepResult {
+    sweep::run(m, g, &BOX, s, true, &std::sync::atomic::AtomicUsize::new(0))
+}
+
+#[test]
+fn linear_tyres_give_the_closed_form_steady_state() {
+    let mut m = VehicleModel::new(
+        Vehicle::seed004_sedan(),
+        Tyre::Linear(Linear::new(55_000.0)),
+        Tyre::Linear(Linear::new(60_000.0)),
+    );
+    m.options = ModelOptions {
+        kinematics: Kinematics::SmallAngle,
+        load_transfer: false,
+    };
+    let v = &m.vehicle;
+    let (cf, cr, u, d) = (110_000.0, 120_000.0, 20.0, 0.03);
+    // Linear bicycle model: A·x + B·δ = 0.
+    let a11 = -(cf + cr) / (v.mass * u);
+    let a12 = (v.b * cr - v.a * cf) / (v.mass * u * u) - 1.0;
+    let a21 = (v.b * cr - v.a * cf) / v.yaw_inertia;
+    let a22 = -(v.a * v.a * cf + v.b * v.b * cr) / (v.yaw_inertia * u);
+    let (b1, b2) = (cf / (v.mass * u) * d, v.a * cf / v.yaw_inertia * d);
+    let det = a11 * a22 - a12 * a21;
+    let beta = -(a22 * b1 - a12 * b2) / det;
+    let r = -(-a21 * b1 + a11 * b2) / det;
+    let c = Condition {
+        steer: d,
+        friction: 1.0,
+        speed: u,
+    };
+    let ex = exact::solve(&m, &c);
+    let (ps, _) = pso::search(&m, &c, &BOX, &pso::PsoSearch::default(), &[]);
+    assert_eq!(ex.len(), 1);
+    assert_eq!(ps.len(), 1);
+    for e in [ex[0], ps[0]] {
+        assert_relative_eq!(e.beta, beta, max_relative = 1e-10);
+        assert_relative_eq!(e.yaw_rate, r, max_relative = 1e-10);
+        assert!(e.stability.kind.is_stable());
+    }
+    assert_relative_eq!(r / d, m.linear_yaw_rate_gain(u), max_relative = 1e-10);
+}
+
+#[test]
+fn mirrored_steer_mirrors_the_equilibria() {
+    for lt in [false, true] {
+        let mut m = seed003_model(lt);
+        m.options.kinematics = Kinematics::Exact;
+        for d in [0.01, 0.05, 0.13] {
+            let p = exact::solve(&m, &cond(d, 0.8, 70.0));
+            let n = exact::solve(&m, &cond(-d, 0.8, 70.0));
+            assert_eq!(p.len(), n.len());
+            // Ascending αr on one side is descending on the other.
+            for (a, b) in p.iter().zip(n.iter().rev()) {
+                assert_relative_eq!(a.beta, -b.beta, epsilon = 1e-12);
+                assert_relative_eq!(a.yaw_rate, -b.yaw_rate, epsilon = 1e-12);
+                assert_eq!(a.stability.kind, b.stability.kind);
+            }
+            let s = pso::PsoSearch::default();
+            let (pp, _) = pso::search(&m, &cond(d, 0.8, 70.0), &BOX, &s, &[]);
+            let (pn, _) = pso::search(&m, &cond(-d, 0.8, 70.0), &BOX, &s, &[]);
+            assert_eq!(pp.len(), pn.len());
+            for (a, b) in pp.iter().zip(pn.iter().rev()) {
+                assert_relative_eq!(a.beta, -b.beta, epsilon = 1e-12);
+            }
+        }
+    }
+}
+
+#[test]
+fn pso_and_exact_agree_on_seed003_sweeps() {
+    for lt in [false, true] {
+        let (m, g) = steer_grid(lt);
+        let r = run(&m, &g, &pso::PsoSearch::default());
+        assert_eq!(r.agreeing(), r.points.len(), "load transfer {lt}");
+        for p in &r.points {
+            assert!(!p.found.is_empty());
+            for f in &p.found {
+                assert!(f.equilibrium.residual <= 1e-10, "{:?}", f);
+            }
+        }
+        // The three equilibria at small steer: two saddles around a stable
+        // straight-running node.
+        let kinds: Vec<Kind> = r.points[0].exact.iter().map(|e| e.stability.kind).collect();
+        assert_eq!(kinds, [Kind::Saddle, Kind::StableNode, Kind::Saddle]);
+    }
+    let friction = sweep::Grid {
+        steer: vec![0.1],
+        friction: (2..=10).map(|i| 0.1 * i as f64).collect(),
+        speed: vec![30.0 / 3.6],
+    };
+    let speed = sweep::Grid {
+        steer: vec![0.1],
+        friction: vec![0.8],
+        speed: (3..=12).map(|i| 10.0 * i as f64 / 3.6).collect(),
+    };
+    for g in [friction, speed] {
+        let r = run(&seed003_model(false), &g, &pso::PsoSearch::default());
+        assert_eq!(r.agreeing(), r.points.len());
+    }
+}
+
+#[test]
+fn seed003_fitness_misses_the_stable_node_the_newton_step_finds() {
+    let (m, g) = steer_grid(false);
+    let raw = pso::PsoSearch {
+        fitness: pso::Fitness::Residual,
+        certify: false,
+        ..Default::default()
+    };
+    let r = run(&m, &g, &raw);
+    let missed = r.points.len() - r.agreeing();
+    assert!(missed > 0, "seed 003's fitness found everything this time");
+    let missed_nodes = r
+        .points
+        .iter()
+        .flat_map(|p| &p.found)
+        .filter(|f| {
+            f.in_box && f.found_by == FoundBy::Exact && f.equilibrium.stability.kind.is_stable()
+        })
+        .count();
+    assert!(missed_nodes > 0);
+    // The winding-number certificate makes even seed 003's fitness complete:
+    // it keeps searching until the indices add up.
+    let certified = run(
+        &m,
+        &g,
+        &pso::PsoSearch {
+            certify: true,
+            ..raw
+        },
+    );
+    assert_eq!(certified.agreeing(), certified.points.len());
+}
+
+#[test]
+fn winding_number_equals_the_index_sum() {
+    let m = seed003_model(false);
+    for d in [0.0, 0.03, 0.1] {
+        let c = cond(d, 0.8, 70.0);
+        let w = pso::winding_number(&m, &c, &BOX).unwrap();
+        let sum: i32 = exact::solve(&m, &c)
+            .iter()
+            .filter(|e| BOX.contains([e.beta, e.yaw_rate]))
+            .map(|e| if e.stability.determinant > 0.0 { 1 } else { -1 })
+            .sum();
+        assert_eq!(w, sum, "δ = {d}");
+    }
+}
+
+#[test]
+fn the_steer_sweep_has_one_verified_fold_where_node_and_saddle_meet() {
+    // A softer rear axle (b = 9): a generic fold. (With identical axles
+    // three equilibria meet at once: the pitchfork checked below.)
+    let (mut m, g) = steer_grid(false);
+    m.rear = Tyre::MagicSimple(MagicSimple::new(9.0, 1.3));
+    let r = run(&m, &g, &pso::PsoSearch::default());
+    assert_eq!(r.agreeing(), r.points.len());
+    let folds: Vec<_> = r
+        .bifurcations
+        .iter()
+        .filter(|b| b.kind == bifurcation::BifurcationKind::Fold)
+        .collect();
+    assert_eq!(folds.len(), 1, "{folds:?}");
+    let f = folds[0];
+    assert!(f.verified, "{f:?}");
+    assert!(f.residual < 1e-8 && f.criterion.abs() < 1e-3);
+    assert!(f.kinds.contains(&Kind::Saddle) && f.kinds.iter().any(|k| k.is_stable()));
+    // Just before the fold the pair is there, just after it is gone.
+    let before = exact::solve(
+        &m,
+        &Condition {
+            steer: f.at.steer - 1e-9,
+            ..f.at
+        },
+    );
+    let after = exact::solve(
+        &m,
+        &Condition {
+            steer: f.at.steer + 1e-9,
+            ..f.at
+        },
+    );
+    assert_eq!(before.len(), after.len() + 2);
+}
+
+#[test]
+fn identical_axles_meet_in_a_pitchfork() {
+    let (m, g) = steer_grid(false);
+    let r = run(&m, &g, &pso::PsoSearch::default());
+    assert_eq!(r.bifurcations.len(), 1, "{:?}", r.bifurcations);
+    let b = r.bifurcations[0];
+    assert_eq!(b.kind, bifurcation::BifurcationKind::Pitchfork);
+    assert!(b.verified && b.at.steer > 0.057 && b.at.steer < 0.058);
+    // Just before it four equilibria, just after two.
+    let n = |d: f64| exact::solve(&m, &Condition { steer: d, ..b.at }).len();
+    assert_eq!((n(b.at.steer - 1e-7), n(b.at.steer + 1e-7)), (4, 2));
+}
+
+#[test]
+fn approaching_equilibria_without_a_count_change_are_not_a_fold() {
+    // Along a speed line at small steer the node and a saddle move toward
+    // each other, but no pair is created or destroyed.
+    let g = sweep::Grid {
+        steer: vec![0.01],
+        friction: vec![0.8],
+        speed: (3..=6).map(|i| 10.0 * i as f64 / 3.6).collect(),
+    };
+    let r = run(&seed003_model(false), &g, &pso::PsoSearch::default());
+    let counts: Vec<usize> = r.points.iter().map(|p| p.exact.len()).collect();
+    assert!(counts.windows(2).all(|w| w[0] == w[1]), "{counts:?}");
+    assert!(r.bifurcations.is_empty(), "{:?}", r.bifurcations);
+}
+
+#[test]
+fn sweeps_are_deterministic_for_a_seed() {
+    let (m, g) = steer_grid(true);
+    let s = pso::PsoSearch {
+        seed: 9,
+        ..Default::default()
+    };
+    let a = run(&m, &g, &s);
+    let b = run(&m, &g, &s);
+    assert_eq!(a, b);
+}
+
+#[test]
+fn classic_brush_tyres_give_a_continuum_when_both_axles_slide() {
+    let mut m = seed003_model(false);
+    m.front = Tyre::Gim(crate::tyre::Gim::new(57_000.0, 0.18, 1.0));
+    m.rear = m.front.clone();
+    let c = cond(0.05, 0.8, 70.0);
+    let cont = exact::continua(&m, &c);
+    assert_eq!(cont.len(), 2, "{cont:?}");
+    // On the continuum both axles slide: r = μ·g/u.
+    for k in &cont {
+        assert_relative_eq!(
+            k.yaw_rate.0.abs(),
+            0.8 * crate::vehicle::G / c.speed,
+            max_relative = 1e-9
+        );
+    }
+    // Isolated equilibria remain few, and PSO agrees on them.
+    let ex = exact::solve(&m, &c);
+    assert!(ex.len() <= 3, "{}", ex.len());
+    let (ps, _) = pso::search(&m, &c, &BOX, &pso::PsoSearch::default(), &[]);
+    let (_, agree) = sweep::cross_check(&ex, &ps, &cont, &BOX);
+    assert!(agree);
+    // With Gim's friction fall-off the continuum is gone.
+    m.front = Tyre::Gim(crate::tyre::Gim {
+        friction_decay: 0.2,
+        ..crate::tyre::Gim::new(57_000.0, 0.18, 1.0)
+    });
+    m.rear = m.front.clone();
+    assert!(exact::continua(&m, &c).is_empty());
+}

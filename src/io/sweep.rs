@@ -1,0 +1,295 @@
+//! Equilibrium sweep files (README, "Sweep files"): a vehicle, its tyres,
+//! model options, the swept steer / friction / speed values, the search box,
+//! PSO settings and report options. Values are SI unless a `unit` says
+//! otherwise (`deg`, `km/h`), converted on reading.
+
+use super::scenario::{load_tyre, TyreRefs};
+use super::toml_file::{param_error, TomlSource};
+use crate::equilibria::pso::PsoSearch;
+use crate::equilibria::sweep::Grid;
+use crate::equilibria::{Condition, SearchBox};
+use crate::error::{InputError, ParamError};
+use crate::tyre::TyreModel;
+use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, G};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// A range `from..=to` by `step`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RangeSpec {
+    from: f64,
+    to: f64,
+    step: f64,
+    #[serde(default)]
+    unit: Option<String>,
+}
+
+/// A list with a unit.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ListSpec {
+    values: Vec<f64>,
+    #[serde(default)]
+    unit: Option<String>,
+}
+
+/// Swept values: a number, a list, `{from, to, step, unit}` or `{values, unit}`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum Values {
+    /// One value.
+    One(f64),
+    /// A list.
+    List(Vec<f64>),
+    /// A range.
+    Range(RangeSpec),
+    /// A list with a unit.
+    Units(ListSpec),
+}
+
+/// The three swept inputs.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepAxes {
+    /// Steer (rad, or `unit = "deg"`).
+    pub steer: Values,
+    /// Friction scale.
+    pub friction: Values,
+    /// Speed (m/s, or `unit = "km/h"`).
+    pub speed: Values,
+}
+
+/// A condition for a phase portrait.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PortraitSpec {
+    /// Steer, rad.
+    pub steer: f64,
+    /// Friction scale.
+    pub friction: f64,
+    /// Speed, m/s.
+    pub speed: f64,
+}
+
+/// Report options.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReportSpec {
+    /// Locate bifurcations along every swept axis.
+    #[serde(default = "yes")]
+    pub bifurcations: bool,
+    /// Write PNG figures.
+    #[serde(default = "yes")]
+    pub plots: bool,
+    /// Conditions for phase portraits (default: first and last sweep point).
+    #[serde(default)]
+    pub phase_portraits: Vec<PortraitSpec>,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for ReportSpec {
+    fn default() -> Self {
+        Self {
+            bifurcations: true,
+            plots: true,
+            phase_portraits: Vec::new(),
+        }
+    }
+}
+
+/// A sweep file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepFile {
+    /// Name used for the output folder.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Free text.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// The vehicle.
+    pub vehicle: Vehicle,
+    /// Tyre files.
+    pub tyres: TyreRefs,
+    /// Model options.
+    #[serde(default)]
+    pub model: ModelOptions,
+    /// Swept values.
+    pub sweep: SweepAxes,
+    /// Search box (default: |β| ≤ 0.6 rad, |r| ≤ 1.2·μ_peak·μ·g/u_min).
+    #[serde(default, rename = "box")]
+    pub search_box: Option<SearchBox>,
+    /// PSO search settings.
+    #[serde(default)]
+    pub pso: PsoSearch,
+    /// Report options.
+    #[serde(default)]
+    pub report: ReportSpec,
+}
+
+/// A loaded sweep.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    /// Name.
+    pub name: String,
+    /// The model.
+    pub model: VehicleModel,
+    /// The grid, SI.
+    pub grid: Grid,
+    /// The box.
+    pub search_box: SearchBox,
+    /// PSO settings.
+    pub pso: PsoSearch,
+    /// Report options.
+    pub report: ReportSpec,
+    /// Phase portrait conditions.
+    pub portraits: Vec<Condition>,
+    /// Files read.
+    pub inputs: Vec<PathBuf>,
+}
+
+fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputError> {
+    let key = format!("sweep.{axis}");
+    let err = |value: f64, why: &str| param_error(src, None, ParamError::new(&key, value, why));
+    let scale = |unit: &Option<String>| -> Result<f64, InputError> {
+        Ok(match (axis, unit.as_deref()) {
+            (_, None) => 1.0,
+            ("steer", Some("rad")) | ("speed", Some("m/s")) => 1.0,
+            ("steer", Some("deg")) => std::f64::consts::PI / 180.0,
+            ("speed", Some("km/h")) => 1.0 / 3.6,
+            (_, Some(u)) => {
+                return Err(err(
+                    f64::NAN,
+                    &format!(
+                    "unknown unit `{u}` (steer: rad or deg; speed: m/s or km/h; friction: none)"
+                ),
+                ))
+            }
+        })
+    };
+    let values = match v {
+        Values::One(x) => vec![*x],
+        Values::List(l) => l.clone(),
+        Values::Units(l) => {
+            let k = scale(&l.unit)?;
+            l.values.iter().map(|x| x * k).collect()
+        }
+        Values::Range(r) => {
+            let k = scale(&r.unit)?;
+            if r.step.is_nan() || r.step <= 0.0 || r.to.is_nan() || r.to < r.from {
+                return Err(err(r.step, "a range needs step > 0 and to ≥ from"));
+            }
+            let n = ((r.to - r.from) / r.step + 1e-9).floor() as usize;
+            if n > 1_000_000 {
+                return Err(err(r.step, "more than a million values"));
+            }
+            (0..=n).map(|i| (r.from + i as f64 * r.step) * k).collect()
+        }
+    };
+    if values.is_empty() {
+        return Err(err(f64::NAN, "no values"));
+    }
+    for &x in &values {
+        let ok = x.is_finite()
+            && match axis {
+                "friction" => x > 0.0,
+                "speed" => x > 0.0,
+                _ => x.abs() < std::f64::consts::FRAC_PI_2,
+            };
+        if !ok {
+            return Err(err(
+                x,
+                "steer must lie within ±90°, friction and speed must be positive",
+            ));
+        }
+    }
+    Ok(values)
+}
+
+/// Reads and validates a sweep file.
+pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
+    let src = TomlSource::read(path)?;
+    let f: SweepFile = src.parse()?;
+    f.vehicle
+        .validate()
+        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let front_path = dir.join(&f.tyres.front);
+    let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
+    let mut model = VehicleModel::new(
+        f.vehicle.clone(),
+        load_tyre(&front_path)?,
+        load_tyre(&rear_path)?,
+    );
+    model.options = f.model;
+    let grid = Grid {
+        steer: expand(&f.sweep.steer, "steer", &src)?,
+        friction: expand(&f.sweep.friction, "friction", &src)?,
+        speed: expand(&f.sweep.speed, "speed", &src)?,
+    };
+    let search_box = match f.search_box {
+        Some(b) => {
+            ParamError::positive("beta_max", b.beta_max)
+                .map_err(|e| param_error(&src, Some("box"), e))?;
+            ParamError::positive("yaw_rate_max", b.yaw_rate_max)
+                .map_err(|e| param_error(&src, Some("box"), e))?;
+            b
+        }
+        None => {
+            let (sf, sr) = model.vehicle.static_axle_loads();
+            let peak = |t: &crate::tyre::Tyre, fz: f64| t.peak_lateral_force(fz, 1.0) / fz;
+            let mu_peak = peak(&model.front, 0.5 * sf).max(peak(&model.rear, 0.5 * sr));
+            let fmax = grid.friction.iter().copied().fold(0.0, f64::max);
+            let umin = grid.speed.iter().copied().fold(f64::INFINITY, f64::min);
+            SearchBox {
+                beta_max: 0.6,
+                yaw_rate_max: 1.2 * mu_peak * fmax * G / umin,
+            }
+        }
+    };
+    let portraits = if f.report.phase_portraits.is_empty() {
+        let first = Condition {
+            steer: grid.steer[0],
+            friction: grid.friction[0],
+            speed: grid.speed[0],
+        };
+        let last = Condition {
+            steer: *grid.steer.last().unwrap_or(&grid.steer[0]),
+            friction: *grid.friction.last().unwrap_or(&grid.friction[0]),
+            speed: *grid.speed.last().unwrap_or(&grid.speed[0]),
+        };
+        if first == last {
+            vec![first]
+        } else {
+            vec![first, last]
+        }
+    } else {
+        f.report
+            .phase_portraits
+            .iter()
+            .map(|p| Condition {
+                steer: p.steer,
+                friction: p.friction,
+                speed: p.speed,
+            })
+            .collect()
+    };
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map_or("sweep".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Sweep {
+        name,
+        model,
+        grid,
+        search_box,
+        pso: f.pso,
+        report: f.report,
+        portraits,
+        inputs: vec![path.to_path_buf(), front_path, rear_path],
+    })
+}

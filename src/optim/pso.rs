@@ -1,0 +1,432 @@
+//! Particle swarm optimisation (minimisation over a box).
+//!
+//! Update (seed 000 eq. 16–17): `v ← w·v + c1·r1·(p_best − x) + c2·r2·(g − x)`,
+//! `x ← x + v`, velocities clamped to a fraction of the box width (seed 003).
+//! Inertia either decreases linearly,
+//! `w_k = (k_max − k)/k_max·(w_max − w_min) + w_min` (seed 000), or adapts
+//! per particle, `w = w_min + (w_max − w_min)·
+//! (f − f_min)/(f_avg − f_min)` for `f ≤ f_avg` and `w_max` otherwise
+//! (seed 001). Natural selection (seed 001): after each iteration the worse
+//! half of the swarm takes the positions and velocities of the better half,
+//! keeping its own personal bests. Positions leaving the box are either
+//! clamped or wrapped back by whole widths (seed 003). The attractor `g` is
+//! the global best or, with a ring topology, the best of each particle's
+//! neighbourhood, which keeps sub-swarms on different minima (used to find
+//! several equilibria in one run).
+//!
+//! Random numbers come from one ChaCha8 stream seeded by `seed` and are drawn
+//! in a fixed order, so results do not depend on thread count; objective
+//! evaluations may run in parallel (rayon).
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// Inertia schedule.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Inertia {
+    /// Seed 000: linear decrease from `w_max` to `w_min`.
+    LinearDecreasing,
+    /// Seed 001: adaptive per particle from its fitness rank.
+    Adaptive,
+}
+
+/// What happens to a particle that leaves the box.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Boundary {
+    /// Put it on the bound and stop its motion in that coordinate.
+    Clamp,
+    /// Wrap it back by whole box widths (seed 003).
+    Wrap,
+}
+
+/// Which best attracts a particle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Topology {
+    /// The whole swarm's best.
+    Global,
+    /// The best of the particle and its `k` neighbours on each side of a ring.
+    Ring(usize),
+}
+
+/// PSO settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Pso {
+    /// Number of particles.
+    pub particles: usize,
+    /// Maximum iterations.
+    pub iterations: usize,
+    /// Cognitive coefficient c1.
+    pub c1: f64,
+    /// Social coefficient c2.
+    pub c2: f64,
+    /// Smallest inertia.
+    pub w_min: f64,
+    /// Largest inertia.
+    pub w_max: f64,
+    /// Inertia schedule.
+    pub inertia: Inertia,
+    /// Seed 001's natural selection.
+    pub natural_selection: bool,
+    /// Box boundary handling.
+    pub boundary: Boundary,
+    /// Attractor topology.
+    pub topology: Topology,
+    /// Velocity limit as a fraction of each coordinate's box width.
+    pub velocity_limit: f64,
+    /// Stop as soon as the best value is at or below this.
+    pub target: f64,
+    /// Random seed.
+    pub seed: u64,
+    /// Evaluate the particles in parallel.
+    pub parallel: bool,
+}
+
+impl Default for Pso {
+    fn default() -> Self {
+        Self {
+            particles: 40,
+            iterations: 200,
+            c1: 2.0,
+            c2: 2.0,
+            w_min: 0.4,
+            w_max: 0.9,
+            inertia: Inertia::LinearDecreasing,
+            natural_selection: false,
+            boundary: Boundary::Clamp,
+            topology: Topology::Global,
+            velocity_limit: 0.2,
+            target: f64::NEG_INFINITY,
+            seed: 0,
+            parallel: false,
+        }
+    }
+}
+
+/// The outcome of a PSO run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PsoResult {
+    /// Best position found.
+    pub best: Vec<f64>,
+    /// Objective at `best`.
+    pub value: f64,
+    /// Iterations run.
+    pub iterations: usize,
+    /// Objective evaluations made.
+    pub evaluations: usize,
+    /// Every particle's personal best (position, value).
+    pub personal_bests: Vec<(Vec<f64>, f64)>,
+    /// Best value after each iteration.
+    pub history: Vec<f64>,
+}
+
+/// Objective value with NaN treated as the worst possible.
+fn sane(v: f64) -> f64 {
+    if v.is_nan() {
+        f64::INFINITY
+    } else {
+        v
+    }
+}
+
+impl Pso {
+    /// Minimises `f` over the box `bounds` (lower, upper per coordinate).
+    pub fn minimize<F>(&self, f: F, bounds: &[(f64, f64)]) -> PsoResult
+    where
+        F: Fn(&[f64]) -> f64 + Sync,
+    {
+        self.minimize_from(f, bounds, &[])
+    }
+
+    /// As [`Pso::minimize`], with some particles started at given positions
+    /// (e.g. a previous solution); the rest start uniformly in the box.
+    pub fn minimize_from<F>(&self, f: F, bounds: &[(f64, f64)], starts: &[Vec<f64>]) -> PsoResult
+    where
+        F: Fn(&[f64]) -> f64 + Sync,
+    {
+        let n = self.particles.max(2);
+        let d = bounds.len();
+        let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
+        let width: Vec<f64> = bounds.iter().map(|(lo, hi)| hi - lo).collect();
+        let vmax: Vec<f64> = width.iter().map(|w| w * self.velocity_limit).collect();
+        let mut x = vec![0.0; n * d];
+        let mut v = vec![0.0; n * d];
+        for i in 0..n {
+            for j in 0..d {
+                x[i * d + j] = match starts.get(i) {
+                    Some(s) => s[j].clamp(bounds[j].0, bounds[j].1),
+                    None => bounds[j].0 + rng.random::<f64>() * width[j],
+                };
+                v[i * d + j] = (2.0 * rng.random::<f64>() - 1.0) * vmax[j];
+            }
+        }
+        let eval = |x: &[f64], out: &mut Vec<f64>| {
+            if self.parallel {
+                x.par_chunks(d).map(|p| sane(f(p))).collect_into_vec(out);
+            } else {
+                out.clear();
+                out.extend(x.chunks(d).map(|p| sane(f(p))));
+            }
+        };
+        let mut fx = Vec::with_capacity(n);
+        eval(&x, &mut fx);
+        let mut evaluations = n;
+        let mut pbest = x.clone();
+        let mut pval = fx.clone();
+        let mut history = Vec::with_capacity(self.iterations);
+        let mut attract = vec![0usize; n];
+        let mut order: Vec<usize> = (0..n).collect();
+        let mut iterations = 0;
+        let best_of = |pval: &[f64]| (0..n).fold(0, |b, i| if pval[i] < pval[b] { i } else { b });
+        for k in 0..self.iterations {
+            let g = best_of(&pval);
+            history.push(pval[g]);
+            if pval[g] <= self.target {
+                break;
+            }
+            iterations = k + 1;
+            for (i, a) in attract.iter_mut().enumerate() {
+                *a = match self.topology {
+                    Topology::Global => g,
+                    Topology::Ring(r) => {
+                        let mut best = i;
+                        for o in 1..=r.min(n / 2) {
+                            for nb in [(i + o) % n, (i + n - o) % n] {
+                                if pval[nb] < pval[best] {
+                                    best = nb;
+                                }
+                            }
+                        }
+                        best
+                    }
+                };
+            }
+            let (f_min, f_avg) = {
+                let finite: Vec<f64> = fx.iter().copied().filter(|v| v.is_finite()).collect();
+                let min = finite.iter().copied().fold(f64::INFINITY, f64::min);
+                let avg = finite.iter().sum::<f64>() / finite.len().max(1) as f64;
+                (min, avg)
+            };
+            let linear_w = (self.iterations - k) as f64 / self.iterations as f64
+                * (self.w_max - self.w_min)
+                + self.w_min;
+            for i in 0..n {
+                let w = match self.inertia {
+                    Inertia::LinearDecreasing => linear_w,
+                    Inertia::Adaptive => {
+                        if fx[i] <= f_avg && f_avg > f_min {
+                            self.w_min
+                                + (self.w_max - self.w_min) * (fx[i] - f_min) / (f_avg - f_min)
+                        } else if fx[i] <= f_avg {
+                            self.w_min
+                        } else {
+                            self.w_max
+                        }
+                    }
+                };
+                let a = attract[i];
+                for j in 0..d {
+                    let idx = i * d + j;
+                    let r1: f64 = rng.random();
+                    let r2: f64 = rng.random();
+                    let mut vel = w * v[idx]
+                        + self.c1 * r1 * (pbest[idx] - x[idx])
+                        + self.c2 * r2 * (pbest[a * d + j] - x[idx]);
+                    vel = vel.clamp(-vmax[j], vmax[j]);
+                    let mut pos = x[idx] + vel;
+                    let (lo, hi) = bounds[j];
+                    if pos < lo || pos > hi {
+                        match self.boundary {
+                            Boundary::Clamp => {
+                                pos = pos.clamp(lo, hi);
+                                vel = 0.0;
+                            }
+                            Boundary::Wrap => pos = lo + (pos - lo).rem_euclid(width[j]),
+                        }
+                    }
+                    v[idx] = vel;
+                    x[idx] = pos;
+                }
+            }
+            eval(&x, &mut fx);
+            evaluations += n;
+            for i in 0..n {
+                if fx[i] < pval[i] {
+                    pval[i] = fx[i];
+                    pbest[i * d..(i + 1) * d].copy_from_slice(&x[i * d..(i + 1) * d]);
+                }
+            }
+            if self.natural_selection {
+                order.sort_by(|&p, &q| fx[p].total_cmp(&fx[q]));
+                let half = n / 2;
+                for r in 0..half {
+                    let (good, bad) = (order[r], order[n - 1 - r]);
+                    if fx[bad] > fx[good] {
+                        let (gs, bs) = (good * d, bad * d);
+                        for j in 0..d {
+                            x[bs + j] = x[gs + j];
+                            v[bs + j] = v[gs + j];
+                        }
+                        fx[bad] = fx[good];
+                    }
+                }
+            }
+        }
+        let g = best_of(&pval);
+        if history.last() != Some(&pval[g]) {
+            history.push(pval[g]);
+        }
+        PsoResult {
+            best: pbest[g * d..(g + 1) * d].to_vec(),
+            value: pval[g],
+            iterations,
+            evaluations,
+            personal_bests: (0..n)
+                .map(|i| (pbest[i * d..(i + 1) * d].to_vec(), pval[i]))
+                .collect(),
+            history,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rosenbrock(x: &[f64]) -> f64 {
+        x.windows(2)
+            .map(|w| 100.0 * (w[1] - w[0] * w[0]).powi(2) + (1.0 - w[0]).powi(2))
+            .sum()
+    }
+
+    fn rastrigin(x: &[f64]) -> f64 {
+        10.0 * x.len() as f64
+            + x.iter()
+                .map(|v| v * v - 10.0 * (std::f64::consts::TAU * v).cos())
+                .sum::<f64>()
+    }
+
+    #[test]
+    fn finds_the_rosenbrock_valley_minimum() {
+        for (inertia, ns) in [
+            (Inertia::LinearDecreasing, false),
+            (Inertia::Adaptive, true),
+        ] {
+            for seed in 0..3 {
+                let pso = Pso {
+                    particles: 60,
+                    iterations: 1500,
+                    inertia,
+                    natural_selection: ns,
+                    seed,
+                    ..Pso::default()
+                };
+                let r = pso.minimize(rosenbrock, &[(-2.0, 2.0); 2]);
+                assert!(r.value < 1e-6, "{inertia:?} seed {seed}: {}", r.value);
+                assert!(
+                    (r.best[0] - 1.0).abs() < 1e-2 && (r.best[1] - 1.0).abs() < 2e-2,
+                    "{:?}",
+                    r.best
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn escapes_the_local_minima_of_rastrigin() {
+        // 3-D Rastrigin has ~10³ local minima in the box; the global one is 0.
+        let mut hits = 0;
+        for seed in 0..5 {
+            let pso = Pso {
+                particles: 80,
+                iterations: 600,
+                inertia: Inertia::Adaptive,
+                natural_selection: true,
+                seed,
+                ..Pso::default()
+            };
+            let r = pso.minimize(rastrigin, &[(-5.12, 5.12); 3]);
+            if r.value < 1e-6 {
+                hits += 1;
+            }
+        }
+        assert!(hits >= 4, "global minimum found in {hits}/5 runs");
+    }
+
+    #[test]
+    fn same_seed_same_answer_regardless_of_threads() {
+        let base = Pso {
+            seed: 42,
+            iterations: 100,
+            ..Pso::default()
+        };
+        let a = base.minimize(rosenbrock, &[(-2.0, 2.0); 3]);
+        let b = Pso {
+            parallel: true,
+            ..base
+        }
+        .minimize(rosenbrock, &[(-2.0, 2.0); 3]);
+        assert_eq!(a.best, b.best);
+        assert_eq!(a.history, b.history);
+        let c = Pso { seed: 43, ..base }.minimize(rosenbrock, &[(-2.0, 2.0); 3]);
+        assert_ne!(a.best, c.best);
+    }
+
+    #[test]
+    fn wrapped_positions_stay_in_the_box() {
+        let pso = Pso {
+            boundary: Boundary::Wrap,
+            velocity_limit: 0.9,
+            iterations: 50,
+            ..Pso::default()
+        };
+        // Minimum outside the box on the right: wrapping must keep every
+        // personal best inside anyway.
+        let r = pso.minimize(|x| (x[0] - 5.0).powi(2), &[(0.0, 1.0)]);
+        for (p, _) in &r.personal_bests {
+            assert!((0.0..=1.0).contains(&p[0]));
+        }
+        assert!(r.best[0] > 0.99, "{:?}", r.best);
+    }
+
+    #[test]
+    fn ring_topology_keeps_several_minima() {
+        // Two equal minima at ±1: a ring swarm keeps particles at both.
+        let pso = Pso {
+            particles: 40,
+            iterations: 300,
+            topology: Topology::Ring(1),
+            seed: 7,
+            ..Pso::default()
+        };
+        let r = pso.minimize(|x| (x[0] * x[0] - 1.0).powi(2), &[(-2.0, 2.0)]);
+        let near = |c: f64| {
+            r.personal_bests
+                .iter()
+                .filter(|(p, v)| (p[0] - c).abs() < 1e-2 && *v < 1e-6)
+                .count()
+        };
+        assert!(
+            near(1.0) > 0 && near(-1.0) > 0,
+            "{} {}",
+            near(1.0),
+            near(-1.0)
+        );
+    }
+
+    #[test]
+    fn stops_at_the_target() {
+        let pso = Pso {
+            target: 1e-3,
+            iterations: 10_000,
+            ..Pso::default()
+        };
+        let r = pso.minimize(|x| x[0] * x[0], &[(-1.0, 1.0)]);
+        assert!(r.value <= 1e-3 && r.iterations < 10_000);
+    }
+}

@@ -53,5 +53,34 @@ fn tyre_evaluation(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, step_steer, tyre_evaluation);
+/// One combination of the stiffness study (Gim, load transfer, 4.5 s at
+/// 2 ms): the 100 × 100 map is 10,000 of these.
+fn study_combination(c: &mut Criterion) {
+    use handling::study::Study;
+    let st = Study {
+        model: VehicleModel::new(
+            Vehicle::seed004_sedan(),
+            Tyre::Gim(Gim::new(28_648.0, 0.16, 1.0)),
+            Tyre::Gim(Gim::new(30_940.0, 0.16, 1.0)),
+        ),
+        manoeuvre: Manoeuvre::StepSteer(StepSteer {
+            speed: 22.2222,
+            amplitude: 0.0174533,
+            trim: 0.0,
+            start: 0.5,
+            rise_time: 0.1,
+            end: 4.5,
+        }),
+        integrator: Integrator {
+            step: 2e-3,
+            friction: 1.0,
+        },
+        metrics: handling::metrics::MetricSettings::default(),
+    };
+    c.bench_function("study_one_combination_gim_2ms", |b| {
+        b.iter(|| st.evaluate(black_box(30_000.0), black_box(32_000.0)))
+    });
+}
+
+criterion_group!(benches, step_steer, tyre_evaluation, study_combination);
 criterion_main!(benches);

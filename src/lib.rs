@@ -13,5 +13,6 @@ pub mod metrics;
 pub mod optim;
 pub mod report;
 pub mod sim;
+pub mod study;
 pub mod tyre;
 pub mod vehicle;

@@ -61,7 +61,11 @@ fn every_bundled_scenario_runs_and_writes_its_outputs() {
     for entry in fs::read_dir(root().join("scenarios")).unwrap() {
         let p = entry.unwrap().path();
         let text = fs::read_to_string(&p).unwrap();
-        if p.extension().is_none_or(|e| e != "toml") || !text.contains("[manoeuvre]") {
+        // Scenarios only: study files carry a [manoeuvre] table too.
+        if p.extension().is_none_or(|e| e != "toml")
+            || !text.contains("[manoeuvre]")
+            || text.contains("\n[stiffness]")
+        {
             continue;
         }
         n += 1;
@@ -355,4 +359,36 @@ fn sweep_with_an_unknown_unit_is_refused() {
         "{e}"
     );
     assert!(!dir.path().join("out").exists());
+}
+
+#[test]
+fn seed004_study_writes_map_rbf_and_inverse() {
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&[
+        "study",
+        "scenarios/seed004_study.toml",
+        "--out",
+        out.path().to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("676 map combinations + 51 RBF pairs"),
+        "{stdout}"
+    );
+    let csv = fs::read_to_string(out.path().join("study.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 676 + 51);
+    let rbf: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(out.path().join("rbf.json")).unwrap()).unwrap();
+    assert_eq!(rbf["training_pairs"], 46);
+    assert_eq!(rbf["validation"].as_array().unwrap().len(), 5);
+    let inv: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(out.path().join("inverse.json")).unwrap())
+            .unwrap();
+    for t in inv["targets"].as_array().unwrap() {
+        let target = t["target"].as_f64().unwrap();
+        let er = t["best"]["er_resimulated"].as_f64().unwrap();
+        assert!((er - target).abs() <= 1e-5 * target, "{er} vs {target}");
+    }
+    assert!(fs::metadata(out.path().join("maps.png")).unwrap().len() > 10_000);
 }

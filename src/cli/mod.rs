@@ -2,6 +2,7 @@
 
 mod equilibria;
 mod simulate;
+mod study;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -37,6 +38,15 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Cornering stiffness against handling (seed 004): map, RBF, inverse;
+    /// writes study.csv, maps.png, rbf.json, rbf.png, inverse.json.
+    Study {
+        /// Study file (TOML).
+        study: PathBuf,
+        /// Output folder (default: out/<study name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics {
         /// The run file.
@@ -59,6 +69,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command {
         Command::Simulate { scenario, out } => simulate::simulate(&scenario, out.as_deref()),
         Command::Equilibria { sweep, out } => equilibria::equilibria(&sweep, out.as_deref()),
+        Command::Study { study, out } => study::study(&study, out.as_deref()),
         Command::Metrics {
             run,
             json,

@@ -7,6 +7,7 @@
 mod columns;
 mod run;
 pub mod scenario;
+pub mod study;
 pub mod sweep;
 mod toml_file;
 

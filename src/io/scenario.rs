@@ -190,11 +190,18 @@ fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> 
 pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
     let src = TomlSource::read(path)?;
     let f: ScenarioFile = src.parse()?;
+    resolve_scenario(&f, &src)
+}
+
+/// Validates and resolves a parsed scenario whose text is `src` (other file
+/// kinds that embed a scenario's tables use it too).
+pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
+    let path = src.path.as_path();
     f.vehicle
         .validate()
-        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+        .map_err(|e| param_error(src, Some("vehicle"), e))?;
     ParamError::positive("friction", f.road.friction)
-        .map_err(|e| param_error(&src, Some("road"), e))?;
+        .map_err(|e| param_error(src, Some("road"), e))?;
     ParamError::in_range(
         "step",
         f.simulation.step,
@@ -202,7 +209,7 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
         0.05,
         "an RK4 step above 50 ms misses the yaw mode",
     )
-    .map_err(|e| param_error(&src, Some("simulation"), e))?;
+    .map_err(|e| param_error(src, Some("simulation"), e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let front_path = dir.join(&f.tyres.front);
     let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
@@ -219,10 +226,10 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
     let mut measured = None;
     let manoeuvre = match &f.manoeuvre {
         ManoeuvreSpec::StepSteer(s) => {
-            check(&src, ParamError::positive("speed", s.speed))?;
-            check(&src, ParamError::non_negative("start", s.start))?;
+            check(src, ParamError::positive("speed", s.speed))?;
+            check(src, ParamError::non_negative("start", s.start))?;
             check(
-                &src,
+                src,
                 ParamError::in_range(
                     "rise_time",
                     s.rise_time,
@@ -231,7 +238,7 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
                     "GB/T 6323 and ISO 7401 require a steer rise time of at most 0.2 s",
                 ),
             )?;
-            check(&src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
+            check(src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
             // Start from straight running: the steer and sideslip that give
             // zero lateral acceleration (non-zero only for tyres with offsets).
             let solve = |ay: f64| {
@@ -239,7 +246,7 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
                     .steady_state_for_lateral_acceleration(s.speed, f.road.friction, ay)
                     .map_err(|m| {
                         param_error(
-                            &src,
+                            src,
                             Some("manoeuvre"),
                             ParamError::new("lateral_acceleration", ay, &m),
                         )
@@ -252,16 +259,16 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
             };
             let amplitude = match (s.steer, s.lateral_acceleration) {
                 (Some(d), None) => {
-                    check(&src, ParamError::finite("steer", d))?;
+                    check(src, ParamError::finite("steer", d))?;
                     d
                 }
                 (None, Some(ay)) => {
-                    check(&src, ParamError::finite("lateral_acceleration", ay))?;
+                    check(src, ParamError::finite("lateral_acceleration", ay))?;
                     solve(ay)?.steer - trim.steer
                 }
                 _ => {
                     return Err(param_error(
-                        &src,
+                        src,
                         Some("manoeuvre"),
                         ParamError::new("kind", f64::NAN, "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)"),
                     ))
@@ -277,10 +284,10 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
             })
         }
         ManoeuvreSpec::RampSteer(r) => {
-            check(&src, ParamError::positive("speed", r.speed))?;
-            check(&src, ParamError::finite("rate", r.rate))?;
+            check(src, ParamError::positive("speed", r.speed))?;
+            check(src, ParamError::finite("rate", r.rate))?;
             check(
-                &src,
+                src,
                 ParamError::in_range(
                     "end",
                     r.end,
@@ -292,10 +299,10 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
             Manoeuvre::RampSteer(*r)
         }
         ManoeuvreSpec::Sine(s) => {
-            check(&src, ParamError::positive("speed", s.speed))?;
-            check(&src, ParamError::positive("frequency", s.frequency))?;
+            check(src, ParamError::positive("speed", s.speed))?;
+            check(src, ParamError::positive("frequency", s.frequency))?;
             check(
-                &src,
+                src,
                 ParamError::in_range(
                     "end",
                     s.end,
@@ -307,11 +314,11 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
             Manoeuvre::Sine(*s)
         }
         ManoeuvreSpec::Sweep(s) => {
-            check(&src, ParamError::positive("speed", s.speed))?;
-            check(&src, ParamError::non_negative("f_start", s.f_start))?;
-            check(&src, ParamError::positive("f_end", s.f_end))?;
+            check(src, ParamError::positive("speed", s.speed))?;
+            check(src, ParamError::non_negative("f_start", s.f_start))?;
+            check(src, ParamError::positive("f_end", s.f_end))?;
             check(
-                &src,
+                src,
                 ParamError::in_range(
                     "end",
                     s.end,

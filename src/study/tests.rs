@@ -1,0 +1,107 @@
+use super::inverse::{best_on_curve, distance, solve_rear, Map};
+use super::*;
+use crate::manoeuvre::StepSteer;
+use crate::tyre::{Gim, Tyre, TyreModel};
+use crate::vehicle::Vehicle;
+use std::sync::atomic::AtomicUsize;
+
+const DEG: f64 = 180.0 / std::f64::consts::PI;
+
+fn study() -> Study {
+    Study {
+        model: VehicleModel::new(
+            Vehicle::seed004_sedan(),
+            Tyre::Gim(Gim::new(500.0 * DEG, 0.16, 1.0)),
+            Tyre::Gim(Gim::new(540.0 * DEG, 0.16, 1.0)),
+        ),
+        manoeuvre: Manoeuvre::StepSteer(StepSteer {
+            speed: 22.2222,
+            amplitude: 1f64.to_radians(),
+            trim: 0.0,
+            start: 0.5,
+            rise_time: 0.1,
+            end: 4.5,
+        }),
+        integrator: Integrator {
+            step: 2e-3,
+            friction: 1.0,
+        },
+        metrics: MetricSettings::default(),
+    }
+}
+
+#[test]
+fn more_rear_stiffness_means_more_understeer() {
+    let st = study();
+    let gains: Vec<f64> = [300.0, 400.0, 500.0, 600.0, 700.0]
+        .iter()
+        .map(|kr| {
+            st.evaluate(500.0 * DEG, kr * DEG)
+                .metrics
+                .unwrap()
+                .yaw_rate_gain
+        })
+        .collect();
+    assert!(gains.windows(2).all(|w| w[1] < w[0]), "{gains:?}");
+    // And more front stiffness, less understeer: a larger gain.
+    let front: Vec<f64> = [300.0, 500.0, 700.0]
+        .iter()
+        .map(|kf| {
+            st.evaluate(kf * DEG, 540.0 * DEG)
+                .metrics
+                .unwrap()
+                .yaw_rate_gain
+        })
+        .collect();
+    assert!(front.windows(2).all(|w| w[1] > w[0]), "{front:?}");
+}
+
+#[test]
+fn scaled_tyres_have_the_asked_stiffness() {
+    let st = study();
+    let m = st.model_for(321.0 * DEG, 654.0 * DEG);
+    let (sf, sr) = m.vehicle.static_axle_loads();
+    assert!((m.front.cornering_stiffness(0.5 * sf) / DEG - 321.0).abs() < 1e-6);
+    assert!((m.rear.cornering_stiffness(0.5 * sr) / DEG - 654.0).abs() < 1e-6);
+}
+
+#[test]
+fn inverse_answers_resimulate_to_the_target() {
+    let st = study();
+    let front: Vec<f64> = (0..8).map(|i| (300.0 + 50.0 * i as f64) * DEG).collect();
+    let rear: Vec<f64> = (0..8).map(|i| (320.0 + 50.0 * i as f64) * DEG).collect();
+    let pairs: Vec<(f64, f64)> = front
+        .iter()
+        .flat_map(|&f| rear.iter().map(move |&r| (f, r)))
+        .collect();
+    let map = Map {
+        front: front.clone(),
+        rear,
+        samples: st.evaluate_all(&pairs, &AtomicUsize::new(0)),
+    };
+    let target = 0.13;
+    let curve = map.iso_curve("er", target);
+    assert!(curve.len() >= 5, "{curve:?}");
+    // Every curve point is an interpolation: re-simulated it is near the target.
+    for p in curve.iter().step_by(3) {
+        let e = st.er(p.0, p.1);
+        assert!((e - target).abs() < 0.01 * target, "{p:?}: {e}");
+    }
+    // The solved rear stiffness meets the target to the solver's tolerance.
+    let kr = solve_rear(&st, 450.0 * DEG, 500.0 * DEG, target, 1e-7).unwrap();
+    assert!((st.er(450.0 * DEG, kr) - target).abs() <= 1e-7);
+    // The refined best point is on the curve and no farther from the
+    // reference than any interpolated curve point.
+    let reference = (500.0 * DEG, 540.0 * DEG);
+    let (kf, kr, e) = best_on_curve(&st, &curve, reference, target, 100.0 * DEG).unwrap();
+    assert!((e - target).abs() <= 1e-6 * target);
+    let best_curve = curve
+        .iter()
+        .map(|p| distance(*p, reference))
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        distance((kf, kr), reference) <= best_curve + 1e-3,
+        "{} vs {best_curve}",
+        distance((kf, kr), reference)
+    );
+}

@@ -7,6 +7,7 @@
 
 pub mod equilibria;
 pub mod error;
+pub mod identify;
 pub mod io;
 pub mod manoeuvre;
 pub mod metrics;

@@ -1,6 +1,7 @@
 //! Argument parsing and printing; all work is done by the library.
 
 mod equilibria;
+mod identify;
 mod simulate;
 mod study;
 
@@ -47,6 +48,34 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Fit a tyre model's lateral force to rig data (CSV, FORMATS.md): PSO
+    /// then Levenberg–Marquardt or modified Gauss–Newton; writes a tyre file,
+    /// a JSON report and a PNG.
+    Identify {
+        /// Rig data file.
+        data: PathBuf,
+        /// gim, magic-simple, unitire, pac89 or linear.
+        #[arg(long)]
+        model: String,
+        /// Random seed of the swarm.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Tyre file to write (default: out/<data>_<model>.toml).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Keep only the pressure level nearest this, Pa.
+        #[arg(long)]
+        pressure: Option<f64>,
+        /// Keep only the camber level nearest this, rad (default: all).
+        #[arg(long)]
+        camber: Option<f64>,
+        /// Local polish: lm, gn (seed 000's modified Gauss-Newton) or none.
+        #[arg(long, default_value = "lm")]
+        local: String,
+        /// Slip-angle bin for thinning, degrees (0: no thinning).
+        #[arg(long, default_value_t = 0.25)]
+        bin_deg: f64,
+    },
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics {
         /// The run file.
@@ -70,6 +99,25 @@ pub fn run() -> ExitCode {
         Command::Simulate { scenario, out } => simulate::simulate(&scenario, out.as_deref()),
         Command::Equilibria { sweep, out } => equilibria::equilibria(&sweep, out.as_deref()),
         Command::Study { study, out } => study::study(&study, out.as_deref()),
+        Command::Identify {
+            data,
+            model,
+            seed,
+            out,
+            pressure,
+            camber,
+            local,
+            bin_deg,
+        } => identify::identify(&identify::Options {
+            data: &data,
+            model: &model,
+            seed,
+            out: out.as_deref(),
+            pressure,
+            camber,
+            local: &local,
+            alpha_bin_deg: bin_deg,
+        }),
         Command::Metrics {
             run,
             json,

@@ -83,6 +83,6 @@ impl Parameterised for MagicSimple {
         self.d = p[2];
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
-        vec![(1.0, 40.0), (0.5, 2.0), (0.1, 3.0)]
+        vec![(1.0, 60.0), (0.5, 2.0), (0.1, 4.0)]
     }
 }

@@ -240,6 +240,88 @@ impl Tyre {
     }
 }
 
+impl Parameterised for Tyre {
+    fn parameter_names(&self) -> Vec<&'static str> {
+        self.parameterised().parameter_names()
+    }
+    fn parameters(&self) -> Vec<f64> {
+        self.parameterised().parameters()
+    }
+    fn set_parameters(&mut self, p: &[f64]) {
+        match self {
+            Tyre::Gim(t) => t.set_parameters(p),
+            Tyre::MagicSimple(t) => t.set_parameters(p),
+            Tyre::Unitire(t) => t.set_parameters(p),
+            Tyre::Pac89(t) => t.set_parameters(p),
+            Tyre::Linear(t) => t.set_parameters(p),
+        }
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        self.parameterised().bounds()
+    }
+}
+
+impl Tyre {
+    fn parameterised(&self) -> &dyn Parameterised {
+        match self {
+            Tyre::Gim(t) => t,
+            Tyre::MagicSimple(t) => t,
+            Tyre::Unitire(t) => t,
+            Tyre::Pac89(t) => t,
+            Tyre::Linear(t) => t,
+        }
+    }
+
+    /// Which parameters a lateral-force fit can identify from data with
+    /// `loads` distinct loads and `cambers` distinct cambers: the rest stay
+    /// at their start values (Gim's contact length only acts on Mz, camber
+    /// terms need more than one camber, load exponents more than one load,
+    /// and UniTire's sliding-speed friction law — μs/μ0, μh, Vsm — trades
+    /// off against its other terms within the noise of a rig test at one
+    /// speed, so it is held).
+    pub fn lateral_free(&self, loads: usize, cambers: usize) -> Vec<bool> {
+        match self {
+            Tyre::Gim(_) => vec![true, false, true, true, loads > 1],
+            Tyre::MagicSimple(_) | Tyre::Linear(_) => vec![true; self.parameters().len()],
+            Tyre::Unitire(_) => (0..10).map(|i| i < 7).collect(),
+            Tyre::Pac89(_) => (0..14)
+                .map(|i| cambers > 1 || ![5, 8, 11].contains(&i))
+                .collect(),
+        }
+    }
+
+    /// The same tyre with parameters that enter only through an even function
+    /// set to their positive value (UniTire's p2 appears as (Fzn/p2)²;
+    /// PAC89's a3·sin(2·atan(Fz/a4)) is unchanged when both a3 and a4 change
+    /// sign), so fits that land on the mirror image report the conventional
+    /// one.
+    pub fn canonical(&self) -> Tyre {
+        let mut t = self.clone();
+        match &mut t {
+            Tyre::Unitire(u) => {
+                u.lateral.p[1] = u.lateral.p[1].abs();
+                if let Some(l) = &mut u.longitudinal {
+                    l.p[1] = l.p[1].abs();
+                }
+            }
+            Tyre::Pac89(p) if p.a[4] < 0.0 => {
+                p.a[3] = -p.a[3];
+                p.a[4] = -p.a[4];
+            }
+            _ => {}
+        }
+        t
+    }
+
+    /// Fewest distinct loads a lateral fit of this model needs.
+    pub fn loads_needed(&self) -> usize {
+        match self {
+            Tyre::Unitire(_) | Tyre::Pac89(_) => 3,
+            _ => 1,
+        }
+    }
+}
+
 impl TyreModel for Tyre {
     fn forces(&self, s: &SlipState) -> TyreForces {
         self.inner().forces(s)

@@ -1,0 +1,206 @@
+//! `identify`: fit a tyre model to rig data.
+
+use anyhow::{anyhow, Context, Result};
+use handling::identify::data::{group, read_lateral, Grouping};
+use handling::identify::{fit_lateral, FitSettings, LocalMethod};
+use handling::report::plot::{Figure, Panel, Series, Style};
+use handling::report::{refuse_overwrite, write_bytes, write_json};
+use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel, UniTire};
+use std::path::{Path, PathBuf};
+
+/// The start tyre of a model for data whose median load is `fz`.
+fn start(model: &str, fz: f64) -> Result<Tyre> {
+    Ok(match model {
+        "gim" => Tyre::Gim(Gim {
+            reference_load: fz,
+            ..Gim::new(50_000.0, 0.15, 1.0)
+        }),
+        "magic-simple" => Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
+        "unitire" => {
+            let mut u: UniTire =
+                match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml"))? {
+                    Tyre::Unitire(u) => u,
+                    _ => unreachable!("the bundled UniTire file"),
+                };
+            u.rated_load = fz;
+            Tyre::Unitire(u)
+        }
+        "pac89" => Tyre::Pac89(Pac89::adams_example()),
+        "linear" => Tyre::Linear(Linear::new(50_000.0)),
+        m => {
+            return Err(anyhow!(
+                "unknown tyre model `{m}`: one of gim, magic-simple, unitire, pac89, linear"
+            ))
+        }
+    })
+}
+
+/// Options of `identify`.
+pub struct Options<'a> {
+    pub data: &'a Path,
+    pub model: &'a str,
+    pub seed: u64,
+    pub out: Option<&'a Path>,
+    pub pressure: Option<f64>,
+    pub camber: Option<f64>,
+    pub local: &'a str,
+    pub alpha_bin_deg: f64,
+}
+
+/// `handling identify`.
+pub fn identify(o: &Options) -> Result<()> {
+    let mut settings = FitSettings::new(o.seed);
+    settings.local = match o.local {
+        "lm" => LocalMethod::LevenbergMarquardt,
+        "gn" => LocalMethod::GaussNewton,
+        "none" => LocalMethod::None,
+        l => return Err(anyhow!("unknown local method `{l}`: lm, gn or none")),
+    };
+    // The model name is checked before the data are read.
+    start(o.model, 1.0)?;
+    let data = read_lateral(o.data)?;
+    let grouping = Grouping {
+        pressure: o.pressure,
+        camber: o.camber,
+        alpha_bin: o.alpha_bin_deg.to_radians(),
+        ..Grouping::default()
+    };
+    let conditions = group(&data, &grouping);
+    if conditions.is_empty() {
+        return Err(anyhow!(
+            "{}: no test condition found in the data",
+            o.data.display()
+        ));
+    }
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.sort_by(f64::total_cmp);
+    let tyre0 = start(o.model, loads[loads.len() / 2])?;
+    let out = o.out.map_or_else(
+        || {
+            let stem = o
+                .data
+                .file_stem()
+                .map_or("data".into(), |s| s.to_string_lossy().into_owned());
+            PathBuf::from("out").join(format!("{stem}_{}.toml", o.model))
+        },
+        Path::to_path_buf,
+    );
+    let report_path = out.with_extension("report.json");
+    let png_path = out.with_extension("png");
+    for f in [&out, &report_path, &png_path] {
+        refuse_overwrite(f, &[o.data.to_path_buf()])?;
+    }
+    let used: usize = conditions.iter().map(|c| c.samples).sum();
+    let points: usize = conditions.iter().map(|c| c.points.len()).sum();
+    println!(
+        "{}: {} of {} samples in {} conditions, thinned to {} points ({}° slip-angle bins); model {}, seed {}",
+        o.data.display(),
+        used,
+        data.len(),
+        conditions.len(),
+        points,
+        o.alpha_bin_deg,
+        o.model,
+        o.seed
+    );
+    let fit = fit_lateral(&tyre0, &conditions, &settings)
+        .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
+    println!(
+        "  σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {} evaluations, {:.2} s",
+        fit.sigma_percent, fit.sigma_pso_percent, fit.rms, fit.evaluations, fit.seconds
+    );
+    for c in &fit.curves {
+        println!(
+            "    Fz {:>7.0} N, camber {:>5.2}°, pressure {}: {:>4} points, σ {:.3} %, RMS {:.1} N",
+            c.fz,
+            c.camber.to_degrees(),
+            c.pressure
+                .map_or("—".into(), |p| format!("{:.0} kPa", p / 1000.0)),
+            c.points,
+            c.sigma_percent,
+            c.rms
+        );
+    }
+    for p in fit.parameters.iter().filter(|p| p.warning.is_some()) {
+        println!(
+            "  warning: {} = {:.6}: {}",
+            p.name,
+            p.value,
+            p.warning.as_deref().unwrap_or("")
+        );
+    }
+    let header = format!(
+        "# Identified by `handling identify {} --model {} --seed {}`: sigma {:.3} %.\n",
+        o.data.display(),
+        o.model,
+        o.seed,
+        fit.sigma_percent
+    );
+    let text = toml::to_string(&fit.tyre).context("serialising the fitted tyre")?;
+    write_bytes(&out, format!("{header}{text}").as_bytes())?;
+    let mut report = serde_json::to_value(&fit)?;
+    report["data"] = serde_json::json!(o.data.display().to_string());
+    report["samples_used"] = serde_json::json!(used);
+    report["samples_total"] = serde_json::json!(data.len());
+    report["points"] = serde_json::json!(points);
+    report["alpha_bin_deg"] = serde_json::json!(o.alpha_bin_deg);
+    write_json(&report_path, &report)?;
+    // Measured points against fitted curves, one panel per camber.
+    let mut cambers: Vec<f64> = conditions.iter().map(|c| c.camber).collect();
+    cambers.sort_by(f64::total_cmp);
+    cambers.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    let panels = cambers
+        .iter()
+        .map(|&g| {
+            let mut series = Vec::new();
+            for (k, c) in conditions
+                .iter()
+                .filter(|c| (c.camber - g).abs() < 1e-3)
+                .enumerate()
+            {
+                let (x, y): (Vec<f64>, Vec<f64>) =
+                    c.points.iter().map(|q| (q[0].to_degrees(), q[4])).unzip();
+                series.push(Series::line("", &x, &y, k).styled(Style::Points(2)));
+                let amax = c.points.iter().map(|q| q[0].abs()).fold(0.0, f64::max);
+                let speed = c.points.first().map_or(10.0, |q| q[3]);
+                let xs: Vec<f64> = (0..=200)
+                    .map(|i| -amax + 2.0 * amax * i as f64 / 200.0)
+                    .collect();
+                let ys: Vec<f64> = xs
+                    .iter()
+                    .map(|a| {
+                        fit.tyre.lateral_force(&SlipState {
+                            alpha: *a,
+                            kappa: 0.0,
+                            fz: c.fz,
+                            camber: c.camber,
+                            mu_scale: 1.0,
+                            speed,
+                        })
+                    })
+                    .collect();
+                let xd: Vec<f64> = xs.iter().map(|a| a.to_degrees()).collect();
+                series.push(Series::line(&format!("{:.0} N", c.fz), &xd, &ys, k));
+            }
+            Panel {
+                title: format!(
+                    "{} fit, camber {:.2}°: points measured, lines fitted",
+                    o.model,
+                    g.to_degrees()
+                ),
+                x_label: "slip angle [deg]".into(),
+                y_label: "Fy [N]".into(),
+                series,
+                ..Panel::default()
+            }
+        })
+        .collect();
+    Figure::stack(panels).save(&png_path)?;
+    println!(
+        "wrote {}, {} and {}",
+        out.display(),
+        report_path.display(),
+        png_path.display()
+    );
+    Ok(())
+}

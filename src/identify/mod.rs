@@ -1,0 +1,355 @@
+//! Tyre parameter identification from rig data (seed 000, seed 001): a
+//! particle swarm over the model's bounded parameter box finds the
+//! neighbourhood of the global optimum of `ε = ½·Σ(F_sim − F_test)²`, and a
+//! local least-squares method polishes it (Levenberg–Marquardt by default, or
+//! seed 000's modified Gauss–Newton). Residual metric (seed 000):
+//! `σ = sqrt(Σ(F_sim − F_test)²/Σ F_test²)·100 %` per condition and overall.
+//! Standard errors come from the Jacobian at the optimum,
+//! `cov = s²·(JᵀJ)⁻¹` with `s² = Σe²/(m − n)`; a parameter on its bound or
+//! with a standard error larger than itself is flagged.
+//!
+//! This module fits the lateral force of every model; the parameters the
+//! data cannot identify stay at their start values
+//! ([`crate::tyre::Tyre::lateral_free`]). Units: SI inside; the models'
+//! own units stay in their files.
+
+pub mod data;
+
+use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
+use crate::optim::{Inertia, Pso};
+use crate::tyre::{Parameterised, SlipState, Tyre, TyreModel};
+use data::Condition;
+use serde::Serialize;
+use std::time::Instant;
+
+/// The local polish after PSO.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LocalMethod {
+    /// Levenberg–Marquardt (crate).
+    LevenbergMarquardt,
+    /// Seed 000's modified Gauss–Newton.
+    GaussNewton,
+    /// PSO only.
+    None,
+}
+
+/// Fit settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitSettings {
+    /// The swarm (its seed is the fit's seed).
+    pub pso: Pso,
+    /// The polish.
+    pub local: LocalMethod,
+}
+
+impl FitSettings {
+    /// Seed 001's improved PSO (adaptive inertia, natural selection) sized for
+    /// tyre fits, then Levenberg–Marquardt.
+    pub fn new(seed: u64) -> Self {
+        Self {
+            pso: Pso {
+                particles: 60,
+                iterations: 300,
+                inertia: Inertia::Adaptive,
+                natural_selection: true,
+                w_min: 0.4,
+                w_max: 0.9,
+                c1: 1.5,
+                c2: 1.5,
+                velocity_limit: 0.2,
+                seed,
+                parallel: true,
+                ..Pso::default()
+            },
+            local: LocalMethod::LevenbergMarquardt,
+        }
+    }
+}
+
+/// Per-condition residuals.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveReport {
+    /// Nominal load, N.
+    pub fz: f64,
+    /// Nominal camber, rad.
+    pub camber: f64,
+    /// Nominal pressure, Pa.
+    pub pressure: Option<f64>,
+    /// Points fitted.
+    pub points: usize,
+    /// Raw samples behind them.
+    pub samples: usize,
+    /// σ, %.
+    pub sigma_percent: f64,
+    /// RMS error, N.
+    pub rms: f64,
+}
+
+/// A fitted parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParameterReport {
+    /// Name.
+    pub name: String,
+    /// Value.
+    pub value: f64,
+    /// Whether it was fitted (false: held at its start value).
+    pub free: bool,
+    /// Approximate standard error.
+    pub std_error: Option<f64>,
+    /// Search bounds.
+    pub bounds: (f64, f64),
+    /// Warning, if any.
+    pub warning: Option<String>,
+}
+
+/// The outcome of a fit.
+#[derive(Debug, Clone, Serialize)]
+pub struct Fit {
+    /// Model name.
+    pub model: &'static str,
+    /// Random seed.
+    pub seed: u64,
+    /// The fitted tyre.
+    #[serde(skip)]
+    pub tyre: Tyre,
+    /// σ overall after the polish, %.
+    pub sigma_percent: f64,
+    /// σ overall after PSO alone, %.
+    pub sigma_pso_percent: f64,
+    /// RMS error overall, N.
+    pub rms: f64,
+    /// Per condition.
+    pub curves: Vec<CurveReport>,
+    /// Parameters.
+    pub parameters: Vec<ParameterReport>,
+    /// Model evaluations of the whole data set (PSO + polish).
+    pub evaluations: usize,
+    /// Wall time, s.
+    pub seconds: f64,
+    /// The polish used.
+    pub local: LocalMethod,
+    /// Covariance of the free parameters (in their order), from the Jacobian.
+    #[serde(skip)]
+    pub covariance: Option<nalgebra::DMatrix<f64>>,
+}
+
+/// The lateral-force least-squares problem over the free parameters.
+pub struct LateralProblem<'a> {
+    base: Tyre,
+    free: Vec<usize>,
+    points: Vec<[f64; 5]>,
+    _c: std::marker::PhantomData<&'a ()>,
+}
+
+impl LateralProblem<'_> {
+    /// The problem of fitting `start`'s free parameters to `conditions`.
+    pub fn new(start: &Tyre, free: &[bool], conditions: &[Condition]) -> Self {
+        Self {
+            base: start.clone(),
+            free: (0..free.len()).filter(|i| free[*i]).collect(),
+            points: conditions
+                .iter()
+                .flat_map(|c| c.points.iter().copied())
+                .collect(),
+            _c: std::marker::PhantomData,
+        }
+    }
+
+    /// The tyre with free parameters `p`.
+    pub fn tyre(&self, p: &[f64]) -> Tyre {
+        let mut full = self.base.parameters();
+        for (k, &i) in self.free.iter().enumerate() {
+            full[i] = p[k];
+        }
+        let mut t = self.base.clone();
+        t.set_parameters(&full);
+        t
+    }
+}
+
+fn lateral(t: &Tyre, q: &[f64; 5]) -> f64 {
+    t.lateral_force(&SlipState {
+        alpha: q[0],
+        kappa: 0.0,
+        fz: q[1],
+        camber: q[2],
+        mu_scale: 1.0,
+        speed: q[3],
+    })
+}
+
+impl Residuals for LateralProblem<'_> {
+    fn count(&self) -> usize {
+        self.points.len()
+    }
+    fn residuals(&self, p: &[f64], out: &mut [f64]) {
+        let t = self.tyre(p);
+        for (o, q) in out.iter_mut().zip(&self.points) {
+            *o = lateral(&t, q) - q[4];
+        }
+    }
+}
+
+/// σ (%) and RMS (N) of a tyre on some points.
+pub fn sigma(t: &Tyre, points: &[[f64; 5]]) -> (f64, f64) {
+    let (mut e2, mut y2) = (0.0, 0.0);
+    for q in points {
+        let e = lateral(t, q) - q[4];
+        e2 += e * e;
+        y2 += q[4] * q[4];
+    }
+    (
+        100.0 * (e2 / y2).sqrt(),
+        (e2 / points.len().max(1) as f64).sqrt(),
+    )
+}
+
+/// Fits `start`'s lateral parameters to the conditions.
+pub fn fit_lateral(
+    start: &Tyre,
+    conditions: &[Condition],
+    settings: &FitSettings,
+) -> Result<Fit, String> {
+    let t0 = Instant::now();
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.dedup_by(|a, b| (*a - *b).abs() < 1.0);
+    loads.sort_by(f64::total_cmp);
+    loads.dedup_by(|a, b| (*a - *b).abs() < 1.0);
+    let mut cambers: Vec<f64> = conditions.iter().map(|c| c.camber).collect();
+    cambers.sort_by(f64::total_cmp);
+    cambers.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    if loads.len() < start.loads_needed() {
+        return Err(format!(
+            "the {} model's load dependence needs at least {} loads; the data has {} ({:?} N)",
+            start.model_name(),
+            start.loads_needed(),
+            loads.len(),
+            loads.iter().map(|l| l.round()).collect::<Vec<_>>()
+        ));
+    }
+    let free = start.lateral_free(loads.len(), cambers.len());
+    let problem = LateralProblem::new(start, &free, conditions);
+    if problem.count() <= problem.free.len() {
+        return Err(format!(
+            "{} points cannot fit {} parameters",
+            problem.count(),
+            problem.free.len()
+        ));
+    }
+    let all_bounds = start.bounds();
+    let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
+    let start_p: Vec<f64> = problem
+        .free
+        .iter()
+        .map(|&i| start.parameters()[i])
+        .collect();
+    let r =
+        settings
+            .pso
+            .minimize_from(|p| problem.cost(p), &bounds, std::slice::from_ref(&start_p));
+    let mut evaluations = r.evaluations;
+    let pso_tyre = problem.tyre(&r.best);
+    let all_points: Vec<[f64; 5]> = problem.points.clone();
+    let (sigma_pso, _) = sigma(&pso_tyre, &all_points);
+    // Polish the swarm's best and, as a second start, the user's start
+    // values; keep the better (a cheap guard against a swarm that settled in
+    // a neighbouring basin).
+    let polish = |x: &[f64]| match settings.local {
+        LocalMethod::LevenbergMarquardt => Some(levenberg_marquardt(&problem, x)),
+        LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(&problem, x)),
+        LocalMethod::None => None,
+    };
+    let start_free: Vec<f64> = problem
+        .free
+        .iter()
+        .map(|&i| start.parameters()[i])
+        .collect();
+    let mut p = r.best.clone();
+    let mut best_cost = r.value;
+    for l in [polish(&r.best), polish(&start_p)].into_iter().flatten() {
+        evaluations += l.evaluations;
+        if l.cost.is_finite() && l.cost < best_cost {
+            best_cost = l.cost;
+            p = l.params;
+        }
+    }
+    let tyre = problem.tyre(&p).canonical();
+    let full = tyre.parameters();
+    let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
+    // Standard errors from the Jacobian at the optimum.
+    let mut res = vec![0.0; problem.count()];
+    problem.residuals(&p, &mut res);
+    let j = jacobian(&problem, &p, &res);
+    let (m, n) = (problem.count(), p.len());
+    let s2 = res.iter().map(|e| e * e).sum::<f64>() / (m - n) as f64;
+    let svd = (j.transpose() * &j).svd(true, true);
+    let smax = svd.singular_values.max();
+    let cov = svd.pseudo_inverse(1e-14 * smax).ok();
+    let names = start.parameter_names();
+    let values = tyre.parameters();
+    let mut parameters = Vec::new();
+    let mut k = 0;
+    for (i, name) in names.iter().enumerate() {
+        let (lo, hi) = all_bounds[i];
+        let mut rep = ParameterReport {
+            name: name.to_string(),
+            value: values[i],
+            free: free[i],
+            std_error: None,
+            bounds: (lo, hi),
+            warning: None,
+        };
+        if free[i] {
+            let se = cov.as_ref().map(|c| (s2 * c[(k, k)]).max(0.0).sqrt());
+            rep.std_error = se;
+            let w = hi - lo;
+            if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
+                rep.warning = Some("at or beyond its search bound".into());
+            } else if values[i] < lo || values[i] > hi {
+                rep.warning = Some("outside its search box after the polish".into());
+            }
+            if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
+                rep.warning = Some(
+                    "not identifiable from these data (standard error larger than the value)"
+                        .into(),
+                );
+            }
+            k += 1;
+        }
+        parameters.push(rep);
+    }
+    let curves = conditions
+        .iter()
+        .map(|c| {
+            let (s, rms) = sigma(&tyre, &c.points);
+            CurveReport {
+                fz: c.fz,
+                camber: c.camber,
+                pressure: c.pressure,
+                points: c.points.len(),
+                samples: c.samples,
+                sigma_percent: s,
+                rms,
+            }
+        })
+        .collect();
+    let (s, rms) = sigma(&tyre, &all_points);
+    Ok(Fit {
+        model: start.model_name(),
+        seed: settings.pso.seed,
+        tyre,
+        sigma_percent: s,
+        sigma_pso_percent: sigma_pso,
+        rms,
+        curves,
+        parameters,
+        evaluations,
+        seconds: t0.elapsed().as_secs_f64(),
+        local: settings.local,
+        covariance: cov.map(|c| c * s2),
+    })
+}
+
+#[cfg(test)]
+mod tests;

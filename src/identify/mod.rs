@@ -260,11 +260,6 @@ pub fn fit_lateral(
         LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(&problem, x)),
         LocalMethod::None => None,
     };
-    let start_free: Vec<f64> = problem
-        .free
-        .iter()
-        .map(|&i| start.parameters()[i])
-        .collect();
     let mut p = r.best.clone();
     let mut best_cost = r.value;
     for l in [polish(&r.best), polish(&start_p)].into_iter().flatten() {

@@ -14,6 +14,7 @@
 //! own units stay in their files.
 
 pub mod data;
+pub mod pac89_two_stage;
 
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{Inertia, Pso};

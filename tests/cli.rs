@@ -409,10 +409,24 @@ fn identify_refuses_bad_rig_data_clearly() {
         "identify",
         dir.path().join("rig.csv").to_str().unwrap(),
         "--model",
+        "gim",
+    ]));
+    assert!(
+        e.contains("rig.csv")
+            && e.contains("no lateral data")
+            && e.contains("no longitudinal force"),
+        "{e}"
+    );
+    // Neither lateral nor longitudinal columns.
+    let dir2 = scratch(&[("rig.csv", "fz,speed\n4000,10\n")]);
+    let e = stderr(&run(&[
+        "identify",
+        dir2.path().join("rig.csv").to_str().unwrap(),
+        "--model",
         "pac89",
     ]));
     assert!(
-        e.contains("rig.csv") && e.contains("no lateral data"),
+        e.contains("no lateral data") && e.contains("no longitudinal data"),
         "{e}"
     );
     // Unknown model.
@@ -539,4 +553,46 @@ fn real_hoosier_rig_data_fits_within_a_few_percent() {
         5,
         "five loads at one pressure and camber"
     );
+}
+
+#[test]
+fn identify_fits_longitudinal_only_rig_data() {
+    // Fx of the Adams PAC89 example at three loads (kN inside the model):
+    // D·sin(C·atan(B·x − E·(B·x − atan(B·x)))), x = 100·κ + Sh.
+    let b = [
+        1.67272, -9.46, 1490.0, 30.0, 176.0, 0.0886, 0.00402, -0.0615, 0.20, 0.0299, -0.176,
+    ];
+    let mut s = String::from("fz,kappa,fx\n");
+    for fz in [2000.0, 4000.0, 6000.0] {
+        let z: f64 = fz / 1000.0;
+        let c = b[0];
+        let d = b[1] * z * z + b[2] * z;
+        let bb = (b[3] * z * z + b[4] * z) * (-b[5] * z).exp() / (c * d);
+        let e = b[6] * z * z + b[7] * z + b[8];
+        for i in -25..=25 {
+            let kappa = 0.01 * i as f64;
+            let x = 100.0 * kappa + b[9] * z + b[10];
+            let fx = d * (c * (bb * x - e * (bb * x - (bb * x).atan())).atan()).sin();
+            s.push_str(&format!("{fz},{kappa},{fx}\n"));
+        }
+    }
+    let dir = scratch(&[("rig.csv", &s)]);
+    let out = dir.path().join("fx.toml");
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--bin-deg",
+        "0",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(dir.path().join("fx.report.json")).unwrap())
+            .unwrap();
+    assert_eq!(report["channel"], "longitudinal-force");
+    assert!(report["sigma_percent"].as_f64().unwrap() < 0.01, "{report}");
+    assert!(fs::read_to_string(&out).unwrap().contains("b = ["));
 }

@@ -1,11 +1,11 @@
 //! `identify`: fit a tyre model to rig data.
 
 use anyhow::{anyhow, Context, Result};
-use handling::identify::data::{group, read_lateral, Grouping};
-use handling::identify::{fit_lateral, FitSettings, LocalMethod};
+use handling::identify::data::{group, read_rig, Grouping};
+use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_bytes, write_json};
-use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel, UniTire};
+use handling::tyre::{Gim, Linear, MagicSimple, Pac89, Tyre, UniTire};
 use std::path::{Path, PathBuf};
 
 /// The start tyre of a model for data whose median load is `fz`.
@@ -66,14 +66,26 @@ pub fn identify(o: &Options) -> Result<()> {
     };
     // The model name is checked before the data are read.
     start(o.model, 1.0)?;
-    let data = read_lateral(o.data)?;
+    let data = read_rig(o.data)?;
+    if !data.has_lateral() && start(o.model, 1.0)?.longitudinal_names().is_empty() {
+        return Err(anyhow!(
+            "{}: no lateral data (columns `alpha` and `fy`), and the {} model has no longitudinal force",
+            o.data.display(),
+            o.model
+        ));
+    }
     let grouping = Grouping {
         pressure: o.pressure,
         camber: o.camber,
         alpha_bin: o.alpha_bin_deg.to_radians(),
         ..Grouping::default()
     };
-    let conditions = group(&data, &grouping);
+    let long_view = data.longitudinal_view();
+    let conditions = if data.has_lateral() {
+        group(&data, &grouping)
+    } else {
+        group(long_view.as_ref().expect("checked above"), &grouping)
+    };
     if conditions.is_empty() {
         return Err(anyhow!(
             "{}: no test condition found in the data",
@@ -111,11 +123,16 @@ pub fn identify(o: &Options) -> Result<()> {
         o.model,
         o.seed
     );
-    let mut fit = fit_lateral(&tyre0, &conditions, &settings)
+    let first = if data.has_lateral() {
+        Channel::LateralForce
+    } else {
+        Channel::LongitudinalForce
+    };
+    let mut fit = fit_channel(&tyre0, first, &conditions, &settings)
         .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
     // PAC89: seed 001's two-stage identification as well; both are reported
     // and the better of the two is written.
-    let two_stage = if o.model == "pac89" {
+    let two_stage = if o.model == "pac89" && first == Channel::LateralForce {
         let r = handling::identify::pac89_two_stage::identify(&conditions, &settings)
             .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
         println!(
@@ -160,7 +177,7 @@ pub fn identify(o: &Options) -> Result<()> {
     let mut report = serde_json::to_value(&fit)?;
     if let Some(r) = &two_stage {
         report["two_stage"] = serde_json::to_value(r)?;
-        let all: Vec<[f64; 5]> = conditions
+        let all: Vec<handling::identify::data::Point> = conditions
             .iter()
             .flat_map(|c| c.points.iter().copied())
             .collect();
@@ -188,6 +205,51 @@ pub fn identify(o: &Options) -> Result<()> {
             report["written"] = serde_json::json!("direct");
         }
     }
+    // The aligning moment, where the data have it and the model has one,
+    // with the lateral parameters just fitted held.
+    let mut fitted_mz = false;
+    if first == Channel::LateralForce && data.mz.is_some() && !fit.tyre.aligning_names().is_empty()
+    {
+        let mz = fit_channel(&fit.tyre, Channel::AligningMoment, &conditions, &settings)
+            .map_err(|e| anyhow!("{}: aligning moment: {e}", o.data.display()))?;
+        println!(
+            "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {:.2} N·m, {:.2} s",
+            mz.sigma_percent, mz.sigma_pso_percent, mz.rms, mz.seconds
+        );
+        for p in mz.parameters.iter().filter(|p| p.warning.is_some()) {
+            println!(
+                "  warning: {} = {:.6}: {}",
+                p.name,
+                p.value,
+                p.warning.as_deref().unwrap_or("")
+            );
+        }
+        report["aligning"] = serde_json::to_value(&mz)?;
+        fit.tyre = mz.tyre;
+        fitted_mz = true;
+    }
+    // The longitudinal force, where the data have it and the model has one.
+    let mut fitted_fx = first == Channel::LongitudinalForce;
+    let mut long_conditions = Vec::new();
+    if let (Some(view), true, Channel::LateralForce) =
+        (&long_view, !fit.tyre.longitudinal_names().is_empty(), first)
+    {
+        long_conditions = group(view, &grouping);
+        let fx = fit_channel(
+            &fit.tyre,
+            Channel::LongitudinalForce,
+            &long_conditions,
+            &settings,
+        )
+        .map_err(|e| anyhow!("{}: longitudinal force: {e}", o.data.display()))?;
+        println!(
+            "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {:.2} s",
+            fx.sigma_percent, fx.sigma_pso_percent, fx.rms, fx.seconds
+        );
+        report["longitudinal"] = serde_json::to_value(&fx)?;
+        fit.tyre = fx.tyre;
+        fitted_fx = true;
+    }
     report["data"] = serde_json::json!(o.data.display().to_string());
     report["samples_used"] = serde_json::json!(used);
     report["samples_total"] = serde_json::json!(data.len());
@@ -200,17 +262,46 @@ pub fn identify(o: &Options) -> Result<()> {
     let mut cambers: Vec<f64> = conditions.iter().map(|c| c.camber).collect();
     cambers.sort_by(f64::total_cmp);
     cambers.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
-    let panels = cambers
+    let mut channels = Vec::new();
+    if first == Channel::LateralForce {
+        channels.push(Channel::LateralForce);
+    }
+    if fitted_mz {
+        channels.push(Channel::AligningMoment);
+    }
+    if fitted_fx {
+        channels.push(Channel::LongitudinalForce);
+    }
+    let cond_of = |ch: Channel| -> &[handling::identify::data::Condition] {
+        if ch == Channel::LongitudinalForce && first == Channel::LateralForce {
+            &long_conditions
+        } else {
+            &conditions
+        }
+    };
+    let panels = channels
         .iter()
-        .map(|&g| {
+        .flat_map(|&ch| cambers.iter().map(move |&g| (ch, g)))
+        .map(|(ch, g)| {
+            let slip = |v: f64| {
+                if ch == Channel::LongitudinalForce {
+                    100.0 * v
+                } else {
+                    v.to_degrees()
+                }
+            };
             let mut series = Vec::new();
-            for (k, c) in conditions
+            for (k, c) in cond_of(ch)
                 .iter()
                 .filter(|c| (c.camber - g).abs() < 1e-3)
                 .enumerate()
             {
-                let (x, y): (Vec<f64>, Vec<f64>) =
-                    c.points.iter().map(|q| (q[0].to_degrees(), q[4])).unzip();
+                let (x, y): (Vec<f64>, Vec<f64>) = c
+                    .points
+                    .iter()
+                    .map(|q| (slip(q[0]), ch.measured(q)))
+                    .filter(|p| p.1.is_finite())
+                    .unzip();
                 series.push(Series::line("", &x, &y, k).styled(Style::Points(2)));
                 let amax = c.points.iter().map(|q| q[0].abs()).fold(0.0, f64::max);
                 let speed = c.points.first().map_or(10.0, |q| q[3]);
@@ -219,18 +310,9 @@ pub fn identify(o: &Options) -> Result<()> {
                     .collect();
                 let ys: Vec<f64> = xs
                     .iter()
-                    .map(|a| {
-                        fit.tyre.lateral_force(&SlipState {
-                            alpha: *a,
-                            kappa: 0.0,
-                            fz: c.fz,
-                            camber: c.camber,
-                            mu_scale: 1.0,
-                            speed,
-                        })
-                    })
+                    .map(|a| ch.model(&fit.tyre, &[*a, c.fz, c.camber, speed, 0.0, 0.0]))
                     .collect();
-                let xd: Vec<f64> = xs.iter().map(|a| a.to_degrees()).collect();
+                let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
                 series.push(Series::line(&format!("{:.0} N", c.fz), &xd, &ys, k));
             }
             Panel {
@@ -239,8 +321,16 @@ pub fn identify(o: &Options) -> Result<()> {
                     o.model,
                     g.to_degrees()
                 ),
-                x_label: "slip angle [deg]".into(),
-                y_label: "Fy [N]".into(),
+                x_label: if ch == Channel::LongitudinalForce {
+                    "slip ratio [%]".into()
+                } else {
+                    "slip angle [deg]".into()
+                },
+                y_label: match ch {
+                    Channel::LateralForce => "Fy [N]".into(),
+                    Channel::AligningMoment => "Mz [N·m]".into(),
+                    Channel::LongitudinalForce => "Fx [N]".into(),
+                },
                 series,
                 ..Panel::default()
             }

@@ -30,6 +30,8 @@ pub struct RigData {
     pub pressure: Option<Vec<f64>>,
     /// Rig speed, m/s (if measured).
     pub speed: Option<Vec<f64>>,
+    /// Longitudinal slip ratio and force (if a longitudinal test).
+    pub longitudinal: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl RigData {
@@ -43,8 +45,9 @@ impl RigData {
     }
 }
 
-/// Reads lateral rig data; a file without `alpha` and `fy` is refused.
-pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
+/// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
+/// `fx`) sweeps; a file with neither pair is refused.
+pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     let mut c = read_columns(
         path,
         &["fz"],
@@ -52,15 +55,6 @@ pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
             "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
         ],
     )?;
-    let (alpha, fy) = match (c.take_optional("alpha"), c.take_optional("fy")) {
-        (Some(a), Some(f)) => (a, f),
-        _ => {
-            return Err(InputError::File {
-                path: path.to_path_buf(),
-                message: "no lateral data: a lateral fit needs the columns `alpha` and `fy`".into(),
-            })
-        }
-    };
     let fz = c.take("fz");
     for (i, v) in fz.iter().enumerate() {
         if *v < 0.0 {
@@ -75,15 +69,63 @@ pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
         }
     }
     let n = fz.len();
+    let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
+        (Some(a), Some(f)) => Some((a, f)),
+        _ => None,
+    };
+    let longitudinal = match (c.take_optional("kappa"), c.take_optional("fx")) {
+        (Some(k), Some(f)) => Some((k, f)),
+        _ => None,
+    };
+    if lateral.is_none() && longitudinal.is_none() {
+        return Err(InputError::File {
+            path: path.to_path_buf(),
+            message: "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)".into(),
+        });
+    }
+    let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
     Ok(RigData {
         camber: c.take_optional("camber").unwrap_or_else(|| vec![0.0; n]),
         mz: c.take_optional("mz"),
         pressure: c.take_optional("pressure"),
         speed: c.take_optional("speed"),
+        longitudinal,
         fz,
         alpha,
         fy,
     })
+}
+
+/// Reads rig data and refuses a file without lateral data.
+pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
+    let d = read_rig(path)?;
+    if d.fy.iter().all(|v| v.is_nan()) {
+        return Err(InputError::File {
+            path: path.to_path_buf(),
+            message: "no lateral data: a lateral fit needs the columns `alpha` and `fy`".into(),
+        });
+    }
+    Ok(d)
+}
+
+impl RigData {
+    /// Whether lateral force was measured.
+    pub fn has_lateral(&self) -> bool {
+        self.fy.iter().any(|v| v.is_finite())
+    }
+
+    /// The longitudinal sweeps as rig data whose slip column holds κ and
+    /// force column Fx, so the same grouping and thinning apply.
+    pub fn longitudinal_view(&self) -> Option<RigData> {
+        let (k, fx) = self.longitudinal.as_ref()?;
+        Some(RigData {
+            alpha: k.clone(),
+            fy: fx.clone(),
+            mz: None,
+            longitudinal: None,
+            ..self.clone()
+        })
+    }
 }
 
 /// A level of a grouping variable: [lo, hi] and its nominal value.
@@ -141,6 +183,10 @@ pub fn levels(values: &[f64], bin: f64) -> Vec<Level> {
     out
 }
 
+/// One fit point: slip angle (rad), load (N), camber (rad), speed (m/s),
+/// lateral force (N), aligning moment (N·m, NaN when not measured).
+pub type Point = [f64; 6];
+
 /// One test condition and the points of it used in the fit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
@@ -152,8 +198,8 @@ pub struct Condition {
     pub pressure: Option<f64>,
     /// Raw samples in it.
     pub samples: usize,
-    /// Fit points (thinned): slip angle, load, camber, speed, fy.
-    pub points: Vec<[f64; 5]>,
+    /// Fit points (thinned).
+    pub points: Vec<Point>,
 }
 
 /// Grouping and thinning settings.
@@ -233,17 +279,15 @@ pub fn group(d: &RigData, g: &Grouping) -> Vec<Condition> {
     out.into_iter()
         .map(|(l, c, p, idx)| {
             let speed = |i: usize| d.speed.as_ref().map_or(g.default_speed, |s| s[i]);
-            let points = if g.alpha_bin > 0.0 {
-                let mut bins: std::collections::BTreeMap<i64, ([f64; 5], usize)> =
-                    Default::default();
+            let mz = |i: usize| d.mz.as_ref().map_or(f64::NAN, |m| m[i]);
+            let point = |i: usize| [d.alpha[i], d.fz[i], d.camber[i], speed(i), d.fy[i], mz(i)];
+            let points: Vec<Point> = if g.alpha_bin > 0.0 {
+                let mut bins: std::collections::BTreeMap<i64, (Point, usize)> = Default::default();
                 for &i in &idx {
                     let e = bins
                         .entry((d.alpha[i] / g.alpha_bin).round() as i64)
-                        .or_insert(([0.0; 5], 0));
-                    for (acc, v) in
-                        e.0.iter_mut()
-                            .zip([d.alpha[i], d.fz[i], d.camber[i], speed(i), d.fy[i]])
-                    {
+                        .or_insert(([0.0; 6], 0));
+                    for (acc, v) in e.0.iter_mut().zip(point(i)) {
                         *acc += v;
                     }
                     e.1 += 1;
@@ -253,9 +297,7 @@ pub fn group(d: &RigData, g: &Grouping) -> Vec<Condition> {
                     .map(|(s, n)| s.map(|v| v / n as f64))
                     .collect()
             } else {
-                idx.iter()
-                    .map(|&i| [d.alpha[i], d.fz[i], d.camber[i], speed(i), d.fy[i]])
-                    .collect()
+                idx.iter().map(|&i| point(i)).collect()
             };
             Condition {
                 fz: loads[l].nominal,
@@ -271,8 +313,9 @@ pub fn group(d: &RigData, g: &Grouping) -> Vec<Condition> {
 /// Seed 000's test points generated from a known tyre: loads 2800 / 5700 /
 /// 8600 N, slip angles 0 … ±12.0321° in 0.2865° steps (85 per load), camber
 /// 0, 10 m/s, with multiplicative Gaussian noise of relative size `noise`
-/// (seeded). Returns the conditions and the noise's own σ (%), the floor a
-/// fit cannot beat on average.
+/// (seeded) on the lateral force and the aligning moment. Returns the
+/// conditions and the lateral-force noise's own σ (%), the floor a fit
+/// cannot beat on average.
 pub fn seed000_conditions(
     truth: &crate::tyre::Tyre,
     noise: f64,
@@ -280,26 +323,30 @@ pub fn seed000_conditions(
 ) -> (Vec<Condition>, f64) {
     use crate::tyre::{SlipState, TyreModel};
     use rand::{RngExt, SeedableRng};
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut gauss = || {
+    // Separate streams for Fy and Mz noise, so adding one channel does not
+    // change the other's draws.
+    let gauss = |rng: &mut rand_chacha::ChaCha8Rng| {
         let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
         (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
     };
+    let mut rng_fy = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut rng_mz = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 0x9E37_79B9_7F4A_7C15);
     let (mut e2, mut y2) = (0.0, 0.0);
     let conditions = [2800.0, 5700.0, 8600.0]
         .iter()
         .map(|&fz| {
-            let points: Vec<[f64; 5]> = (-42..=42)
+            let points: Vec<Point> = (-42..=42)
                 .map(|i| {
                     let alpha = (0.2865 * i as f64).to_radians();
-                    let y = truth.lateral_force(&SlipState {
+                    let f = truth.forces(&SlipState {
                         speed: 10.0,
                         ..SlipState::lateral(alpha, fz)
                     });
-                    let noisy = y * (1.0 + noise * gauss());
-                    e2 += (noisy - y) * (noisy - y);
+                    let noisy = f.fy * (1.0 + noise * gauss(&mut rng_fy));
+                    let noisy_mz = f.mz * (1.0 + noise * gauss(&mut rng_mz));
+                    e2 += (noisy - f.fy) * (noisy - f.fy);
                     y2 += noisy * noisy;
-                    [alpha, fz, 0.0, 10.0, noisy]
+                    [alpha, fz, 0.0, 10.0, noisy, noisy_mz]
                 })
                 .collect();
             Condition {

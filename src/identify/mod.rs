@@ -8,8 +8,10 @@
 //! `cov = s²·(JᵀJ)⁻¹` with `s² = Σe²/(m − n)`; a parameter on its bound or
 //! with a standard error larger than itself is flagged.
 //!
-//! This module fits the lateral force of every model; the parameters the
-//! data cannot identify stay at their start values
+//! The lateral force of every model is fitted first; then, where the data
+//! have `mz` and the model an aligning moment, its aligning parameters with
+//! the lateral ones held. The parameters the data cannot identify stay at
+//! their start values
 //! ([`crate::tyre::Tyre::lateral_free`]). Units: SI inside; the models'
 //! own units stay in their files.
 
@@ -22,6 +24,93 @@ use crate::tyre::{Parameterised, SlipState, Tyre, TyreModel};
 use data::Condition;
 use serde::Serialize;
 use std::time::Instant;
+
+/// The measured quantity a fit matches.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Channel {
+    /// Lateral force Fy, N.
+    LateralForce,
+    /// Aligning moment Mz, N·m (with the lateral parameters held).
+    AligningMoment,
+    /// Longitudinal force Fx, N, on points whose slip column holds κ and
+    /// force column Fx ([`data::RigData::longitudinal_view`]).
+    LongitudinalForce,
+}
+
+impl Channel {
+    /// The measured value of a point.
+    pub fn measured(self, q: &data::Point) -> f64 {
+        match self {
+            Channel::LateralForce | Channel::LongitudinalForce => q[4],
+            Channel::AligningMoment => q[5],
+        }
+    }
+
+    /// The model's value at a point.
+    pub fn model(self, t: &Tyre, q: &data::Point) -> f64 {
+        let s = SlipState {
+            alpha: q[0],
+            kappa: 0.0,
+            fz: q[1],
+            camber: q[2],
+            mu_scale: 1.0,
+            speed: q[3],
+        };
+        match self {
+            Channel::LateralForce => t.lateral_force(&s),
+            Channel::AligningMoment => t.forces(&s).mz,
+            Channel::LongitudinalForce => {
+                t.forces(&SlipState {
+                    alpha: 0.0,
+                    kappa: q[0],
+                    ..s
+                })
+                .fx
+            }
+        }
+    }
+
+    fn names(self, t: &Tyre) -> Vec<String> {
+        match self {
+            Channel::LateralForce => t.parameter_names().iter().map(|n| n.to_string()).collect(),
+            Channel::AligningMoment => t.aligning_names(),
+            Channel::LongitudinalForce => t.longitudinal_names(),
+        }
+    }
+
+    fn parameters(self, t: &Tyre) -> Vec<f64> {
+        match self {
+            Channel::LateralForce => t.parameters(),
+            Channel::AligningMoment => t.aligning_parameters(),
+            Channel::LongitudinalForce => t.longitudinal_parameters(),
+        }
+    }
+
+    fn set(self, t: &mut Tyre, p: &[f64]) {
+        match self {
+            Channel::LateralForce => t.set_parameters(p),
+            Channel::AligningMoment => t.set_aligning_parameters(p),
+            Channel::LongitudinalForce => t.set_longitudinal_parameters(p),
+        }
+    }
+
+    fn bounds(self, t: &Tyre) -> Vec<(f64, f64)> {
+        match self {
+            Channel::LateralForce => t.bounds(),
+            Channel::AligningMoment => t.aligning_bounds(),
+            Channel::LongitudinalForce => t.longitudinal_bounds(),
+        }
+    }
+
+    fn free(self, t: &Tyre, loads: usize, cambers: usize) -> Vec<bool> {
+        match self {
+            Channel::LateralForce => t.lateral_free(loads, cambers),
+            Channel::AligningMoment => t.aligning_free(cambers),
+            Channel::LongitudinalForce => t.longitudinal_free(),
+        }
+    }
+}
 
 /// The local polish after PSO.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -107,6 +196,8 @@ pub struct ParameterReport {
 /// The outcome of a fit.
 #[derive(Debug, Clone, Serialize)]
 pub struct Fit {
+    /// The channel fitted.
+    pub channel: Channel,
     /// Model name.
     pub model: &'static str,
     /// Random seed.
@@ -135,23 +226,37 @@ pub struct Fit {
     pub covariance: Option<nalgebra::DMatrix<f64>>,
 }
 
-/// The lateral-force least-squares problem over the free parameters.
+/// The least-squares problem of one channel over the free parameters.
 pub struct LateralProblem<'a> {
     base: Tyre,
+    channel: Channel,
     free: Vec<usize>,
-    points: Vec<[f64; 5]>,
+    points: Vec<data::Point>,
     _c: std::marker::PhantomData<&'a ()>,
 }
 
 impl LateralProblem<'_> {
-    /// The problem of fitting `start`'s free parameters to `conditions`.
+    /// The problem of fitting `start`'s free lateral-force parameters.
     pub fn new(start: &Tyre, free: &[bool], conditions: &[Condition]) -> Self {
+        Self::for_channel(start, Channel::LateralForce, free, conditions)
+    }
+
+    /// The problem of fitting `start`'s free parameters of `channel` to the
+    /// points where that channel was measured.
+    pub fn for_channel(
+        start: &Tyre,
+        channel: Channel,
+        free: &[bool],
+        conditions: &[Condition],
+    ) -> Self {
         Self {
             base: start.clone(),
+            channel,
             free: (0..free.len()).filter(|i| free[*i]).collect(),
             points: conditions
                 .iter()
                 .flat_map(|c| c.points.iter().copied())
+                .filter(|q| channel.measured(q).is_finite())
                 .collect(),
             _c: std::marker::PhantomData,
         }
@@ -159,25 +264,14 @@ impl LateralProblem<'_> {
 
     /// The tyre with free parameters `p`.
     pub fn tyre(&self, p: &[f64]) -> Tyre {
-        let mut full = self.base.parameters();
+        let mut full = self.channel.parameters(&self.base);
         for (k, &i) in self.free.iter().enumerate() {
             full[i] = p[k];
         }
         let mut t = self.base.clone();
-        t.set_parameters(&full);
+        self.channel.set(&mut t, &full);
         t
     }
-}
-
-fn lateral(t: &Tyre, q: &[f64; 5]) -> f64 {
-    t.lateral_force(&SlipState {
-        alpha: q[0],
-        kappa: 0.0,
-        fz: q[1],
-        camber: q[2],
-        mu_scale: 1.0,
-        speed: q[3],
-    })
 }
 
 impl Residuals for LateralProblem<'_> {
@@ -187,32 +281,58 @@ impl Residuals for LateralProblem<'_> {
     fn residuals(&self, p: &[f64], out: &mut [f64]) {
         let t = self.tyre(p);
         for (o, q) in out.iter_mut().zip(&self.points) {
-            *o = lateral(&t, q) - q[4];
+            *o = self.channel.model(&t, q) - self.channel.measured(q);
         }
     }
 }
 
-/// σ (%) and RMS (N) of a tyre on some points.
-pub fn sigma(t: &Tyre, points: &[[f64; 5]]) -> (f64, f64) {
-    let (mut e2, mut y2) = (0.0, 0.0);
-    for q in points {
-        let e = lateral(t, q) - q[4];
-        e2 += e * e;
-        y2 += q[4] * q[4];
-    }
-    (
-        100.0 * (e2 / y2).sqrt(),
-        (e2 / points.len().max(1) as f64).sqrt(),
-    )
+/// σ (%) and RMS (N) of a tyre's lateral force on some points.
+pub fn sigma(t: &Tyre, points: &[data::Point]) -> (f64, f64) {
+    sigma_of(Channel::LateralForce, t, points)
 }
 
-/// Fits `start`'s lateral parameters to the conditions.
+/// σ (%) and RMS of one channel on the points where it was measured.
+pub fn sigma_of(ch: Channel, t: &Tyre, points: &[data::Point]) -> (f64, f64) {
+    let (mut e2, mut y2, mut n) = (0.0, 0.0, 0usize);
+    for q in points.iter().filter(|q| ch.measured(q).is_finite()) {
+        let e = ch.model(t, q) - ch.measured(q);
+        e2 += e * e;
+        y2 += ch.measured(q) * ch.measured(q);
+        n += 1;
+    }
+    (100.0 * (e2 / y2).sqrt(), (e2 / n.max(1) as f64).sqrt())
+}
+
+/// Fits `start`'s lateral-force parameters to the conditions.
 pub fn fit_lateral(
     start: &Tyre,
     conditions: &[Condition],
     settings: &FitSettings,
 ) -> Result<Fit, String> {
+    fit_channel(start, Channel::LateralForce, conditions, settings)
+}
+
+/// Fits `start`'s parameters of `channel` to the conditions (for the
+/// aligning moment, with the lateral-force parameters held at `start`'s).
+pub fn fit_channel(
+    start: &Tyre,
+    channel: Channel,
+    conditions: &[Condition],
+    settings: &FitSettings,
+) -> Result<Fit, String> {
     let t0 = Instant::now();
+    if channel == Channel::AligningMoment && start.aligning_names().is_empty() {
+        return Err(format!(
+            "the {} model has no aligning moment to fit",
+            start.model_name()
+        ));
+    }
+    if channel == Channel::LongitudinalForce && start.longitudinal_names().is_empty() {
+        return Err(format!(
+            "the {} model has no longitudinal force to fit",
+            start.model_name()
+        ));
+    }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.dedup_by(|a, b| (*a - *b).abs() < 1.0);
     loads.sort_by(f64::total_cmp);
@@ -229,30 +349,32 @@ pub fn fit_lateral(
             loads.iter().map(|l| l.round()).collect::<Vec<_>>()
         ));
     }
-    let free = start.lateral_free(loads.len(), cambers.len());
-    let problem = LateralProblem::new(start, &free, conditions);
+    let free = channel.free(start, loads.len(), cambers.len());
+    let problem = LateralProblem::for_channel(start, channel, &free, conditions);
     if problem.count() <= problem.free.len() {
         return Err(format!(
-            "{} points cannot fit {} parameters",
+            "{} points with a measured {} cannot fit {} parameters",
             problem.count(),
+            match channel {
+                Channel::LateralForce => "lateral force",
+                Channel::AligningMoment => "aligning moment",
+                Channel::LongitudinalForce => "longitudinal force",
+            },
             problem.free.len()
         ));
     }
-    let all_bounds = start.bounds();
+    let all_bounds = channel.bounds(start);
     let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
-    let start_p: Vec<f64> = problem
-        .free
-        .iter()
-        .map(|&i| start.parameters()[i])
-        .collect();
+    let start_all = channel.parameters(start);
+    let start_p: Vec<f64> = problem.free.iter().map(|&i| start_all[i]).collect();
     let r =
         settings
             .pso
             .minimize_from(|p| problem.cost(p), &bounds, std::slice::from_ref(&start_p));
     let mut evaluations = r.evaluations;
     let pso_tyre = problem.tyre(&r.best);
-    let all_points: Vec<[f64; 5]> = problem.points.clone();
-    let (sigma_pso, _) = sigma(&pso_tyre, &all_points);
+    let all_points: Vec<data::Point> = problem.points.clone();
+    let (sigma_pso, _) = sigma_of(channel, &pso_tyre, &all_points);
     // Polish the swarm's best and, as a second start, the user's start
     // values; keep the better (a cheap guard against a swarm that settled in
     // a neighbouring basin).
@@ -271,7 +393,7 @@ pub fn fit_lateral(
         }
     }
     let tyre = problem.tyre(&p).canonical();
-    let full = tyre.parameters();
+    let full = channel.parameters(&tyre);
     let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
     // Standard errors from the Jacobian at the optimum.
     let mut res = vec![0.0; problem.count()];
@@ -282,8 +404,8 @@ pub fn fit_lateral(
     let svd = (j.transpose() * &j).svd(true, true);
     let smax = svd.singular_values.max();
     let cov = svd.pseudo_inverse(1e-14 * smax).ok();
-    let names = start.parameter_names();
-    let values = tyre.parameters();
+    let names = channel.names(start);
+    let values = channel.parameters(&tyre);
     let mut parameters = Vec::new();
     let mut k = 0;
     for (i, name) in names.iter().enumerate() {
@@ -318,7 +440,7 @@ pub fn fit_lateral(
     let curves = conditions
         .iter()
         .map(|c| {
-            let (s, rms) = sigma(&tyre, &c.points);
+            let (s, rms) = sigma_of(channel, &tyre, &c.points);
             CurveReport {
                 fz: c.fz,
                 camber: c.camber,
@@ -330,8 +452,9 @@ pub fn fit_lateral(
             }
         })
         .collect();
-    let (s, rms) = sigma(&tyre, &all_points);
+    let (s, rms) = sigma_of(channel, &tyre, &all_points);
     Ok(Fit {
+        channel,
         model: start.model_name(),
         seed: settings.pso.seed,
         tyre,

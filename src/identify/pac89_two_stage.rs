@@ -54,7 +54,7 @@ pub struct TwoStage {
     pub polished: [f64; 14],
 }
 
-struct Curve<'a>(&'a [[f64; 5]]);
+struct Curve<'a>(&'a [super::data::Point]);
 
 impl Residuals for Curve<'_> {
     fn count(&self) -> usize {

@@ -313,6 +313,160 @@ impl Tyre {
         t
     }
 
+    /// Names of the aligning-moment parameters (empty: the model has no
+    /// aligning moment to fit).
+    pub fn aligning_names(&self) -> Vec<String> {
+        let n = self.aligning_parameters().len();
+        match self {
+            Tyre::Gim(_) => vec!["contact_length".into()],
+            Tyre::Unitire(_) => (1..=n).map(|i| format!("c{i}")).collect(),
+            Tyre::Pac89(_) => (0..n).map(|i| format!("c{i}")).collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The aligning-moment parameters (a model without them set gets the
+    /// bundled example's as a start).
+    pub fn aligning_parameters(&self) -> Vec<f64> {
+        match self {
+            Tyre::Gim(g) => vec![g.contact_length],
+            Tyre::Unitire(u) => u
+                .aligning
+                .as_ref()
+                .map_or(unitire::DEFAULT_ALIGNING.to_vec(), |a| a.c.to_vec()),
+            Tyre::Pac89(p) => p.c.unwrap_or(pac89::ADAMS_EXAMPLE_C).to_vec(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// Replaces the aligning-moment parameters.
+    pub fn set_aligning_parameters(&mut self, v: &[f64]) {
+        match self {
+            Tyre::Gim(g) => g.contact_length = v[0],
+            Tyre::Unitire(u) => {
+                let mut c = [0.0; 10];
+                c.copy_from_slice(v);
+                u.aligning = Some(unitire::UniTireAligning { c });
+            }
+            Tyre::Pac89(p) => {
+                let mut c = [0.0; 18];
+                c.copy_from_slice(v);
+                p.c = Some(c);
+            }
+            _ => {}
+        }
+    }
+
+    /// Search box of the aligning-moment parameters.
+    pub fn aligning_bounds(&self) -> Vec<(f64, f64)> {
+        match self {
+            Tyre::Gim(_) => vec![(0.02, 0.5)],
+            Tyre::Unitire(_) => vec![
+                (-0.1, 0.2),
+                (-0.05, 0.05),
+                (-0.01, 0.01),
+                (-0.2, 0.2),
+                (-0.05, 0.05),
+                (-0.01, 0.01),
+                (0.0, 10.0),
+                (0.1, 100.0),
+                (0.0, 10.0),
+                (0.1, 100.0),
+            ],
+            // Around the Adams example: every coefficient within ±(5|c| + 1),
+            // C within (1, 3).
+            Tyre::Pac89(_) => pac89::ADAMS_EXAMPLE_C
+                .iter()
+                .enumerate()
+                .map(|(i, c)| {
+                    if i == 0 {
+                        (1.0, 3.0)
+                    } else {
+                        (c - 5.0 * c.abs() - 1.0, c + 5.0 * c.abs() + 1.0)
+                    }
+                })
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// Which aligning parameters the data can identify (camber terms need
+    /// more than one camber).
+    pub fn aligning_free(&self, cambers: usize) -> Vec<bool> {
+        match self {
+            Tyre::Pac89(_) => (0..18)
+                .map(|i| cambers > 1 || ![6, 10, 11, 14, 15].contains(&i))
+                .collect(),
+            _ => vec![true; self.aligning_parameters().len()],
+        }
+    }
+
+    /// Names of the longitudinal-force parameters (empty: none to fit).
+    pub fn longitudinal_names(&self) -> Vec<String> {
+        match self {
+            Tyre::Unitire(_) => (1..=10).map(|i| format!("a{i}")).collect(),
+            Tyre::Pac89(_) => (0..11).map(|i| format!("b{i}")).collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The longitudinal parameters (the bundled example's when unset).
+    pub fn longitudinal_parameters(&self) -> Vec<f64> {
+        match self {
+            Tyre::Unitire(u) => u
+                .longitudinal
+                .as_ref()
+                .map_or(unitire::DEFAULT_LONGITUDINAL.to_vec(), |l| l.p.to_vec()),
+            Tyre::Pac89(p) => p.b.unwrap_or(pac89::ADAMS_EXAMPLE_B).to_vec(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// Replaces the longitudinal parameters.
+    pub fn set_longitudinal_parameters(&mut self, v: &[f64]) {
+        match self {
+            Tyre::Unitire(u) => {
+                let mut p = [0.0; 10];
+                p.copy_from_slice(v);
+                u.longitudinal = Some(UniTireLongitudinal { p });
+            }
+            Tyre::Pac89(t) => {
+                let mut b = [0.0; 11];
+                b.copy_from_slice(v);
+                t.b = Some(b);
+            }
+            _ => {}
+        }
+    }
+
+    /// Search box of the longitudinal parameters.
+    pub fn longitudinal_bounds(&self) -> Vec<(f64, f64)> {
+        match self {
+            Tyre::Unitire(u) => u.bounds(),
+            Tyre::Pac89(_) => pac89::ADAMS_EXAMPLE_B
+                .iter()
+                .enumerate()
+                .map(|(i, b)| {
+                    if i == 0 {
+                        (1.0, 3.0)
+                    } else {
+                        (b - 5.0 * b.abs() - 1.0, b + 5.0 * b.abs() + 1.0)
+                    }
+                })
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// Which longitudinal parameters a fit frees (UniTire's sliding-speed
+    /// law held, as for the lateral force).
+    pub fn longitudinal_free(&self) -> Vec<bool> {
+        match self {
+            Tyre::Unitire(_) => (0..10).map(|i| i < 7).collect(),
+            _ => vec![true; self.longitudinal_parameters().len()],
+        }
+    }
+
     /// Fewest distinct loads a lateral fit of this model needs.
     pub fn loads_needed(&self) -> usize {
         match self {

@@ -315,3 +315,28 @@ fn tyre_files_parse_by_model_name() {
             .unwrap_err();
     assert!(e.to_string().contains("cornering_stifness"), "{e}");
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Every model gives finite forces anywhere in its input range, zero
+        /// force at zero or negative load, and (without offsets) odd symmetry.
+        #[test]
+        fn finite_and_odd(alpha in -1.5f64..1.5, fz in -1000.0f64..20_000.0, mu in 0.05f64..2.0, speed in 0.0f64..60.0) {
+            for t in all_models() {
+                let s = SlipState { alpha, kappa: 0.0, fz, camber: 0.0, mu_scale: mu, speed };
+                let f = t.forces(&s);
+                prop_assert!(f.fx.is_finite() && f.fy.is_finite() && f.mz.is_finite());
+                if fz <= 0.0 {
+                    prop_assert_eq!(f, TyreForces::default());
+                }
+                if t.model_name() != "pac89" {
+                    let m = t.forces(&SlipState { alpha: -alpha, ..s });
+                    prop_assert!((f.fy + m.fy).abs() <= 1e-9 * f.fy.abs().max(1.0));
+                }
+            }
+        }
+    }
+}

@@ -34,6 +34,13 @@ pub struct UniTireLateral {
 /// Ten longitudinal parameters a1..a10 (same laws as the lateral ones).
 pub type UniTireLongitudinal = UniTireLateral;
 
+/// A neutral start for the aligning arm: 35 mm trail at zero slip falling to
+/// −10 mm as φ grows.
+pub const DEFAULT_ALIGNING: [f64; 10] = [0.035, 0.004, 0.0, 0.01, 0.0, 0.0, 1.2, 10.0, 0.3, 10.0];
+
+/// A start for the longitudinal parameters (the bundled example's).
+pub const DEFAULT_LONGITUDINAL: [f64; 10] = [0.2, 1.0, 18.0, -1.5, 0.1, 1.15, 9.0, 0.75, 0.5, 4.0];
+
 /// Ten aligning-arm parameters c1..c10.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

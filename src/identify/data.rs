@@ -322,13 +322,9 @@ pub fn seed000_conditions(
     seed: u64,
 ) -> (Vec<Condition>, f64) {
     use crate::tyre::{SlipState, TyreModel};
-    use rand::{RngExt, SeedableRng};
+    use rand::SeedableRng;
     // Separate streams for Fy and Mz noise, so adding one channel does not
     // change the other's draws.
-    let gauss = |rng: &mut rand_chacha::ChaCha8Rng| {
-        let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-    };
     let mut rng_fy = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let mut rng_mz = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 0x9E37_79B9_7F4A_7C15);
     let (mut e2, mut y2) = (0.0, 0.0);
@@ -359,4 +355,11 @@ pub fn seed000_conditions(
         })
         .collect();
     (conditions, 100.0 * (e2 / y2).sqrt())
+}
+
+/// A standard normal draw (Box–Muller) from a seeded stream.
+pub fn gauss(rng: &mut rand_chacha::ChaCha8Rng) -> f64 {
+    use rand::RngExt;
+    let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }

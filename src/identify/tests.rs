@@ -174,7 +174,7 @@ fn recovers_aligning_moment_parameters_with_the_lateral_ones_held() {
 /// Longitudinal sweeps (κ in the slip column, Fx in the force column) at
 /// seed 000's loads, slip ratios 0 … ±0.3 by 0.01, 1 % noise.
 fn longitudinal_data(truth: &Tyre, seed: u64) -> (Vec<Condition>, f64) {
-    use rand::{RngExt, SeedableRng};
+    use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let (mut e2, mut y2) = (0.0, 0.0);
     let conditions = [2800.0, 5700.0, 8600.0]
@@ -185,10 +185,7 @@ fn longitudinal_data(truth: &Tyre, seed: u64) -> (Vec<Condition>, f64) {
                     let kappa = 0.01 * i as f64;
                     let fx = Channel::LongitudinalForce
                         .model(truth, &[kappa, fz, 0.0, 10.0, 0.0, f64::NAN]);
-                    let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
-                    let noisy = fx
-                        * (1.0
-                            + 0.01 * (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos());
+                    let noisy = fx * (1.0 + 0.01 * super::data::gauss(&mut rng));
                     e2 += (noisy - fx) * (noisy - fx);
                     y2 += noisy * noisy;
                     [kappa, fz, 0.0, 10.0, noisy, f64::NAN]

@@ -52,21 +52,7 @@ impl TomlSource {
             let name = message.strip_prefix("unknown field `")?.split('`').next()?;
             self.find_key(name)
         });
-        match span {
-            Some(span) => {
-                let (line, column) = line_col(&self.text, span.start);
-                InputError::At {
-                    path: self.path.clone(),
-                    line,
-                    column,
-                    message,
-                }
-            }
-            None => InputError::File {
-                path: self.path.clone(),
-                message,
-            },
-        }
+        self.located(span, message)
     }
 
     /// Byte span of the key at dotted `key_path` (`vehicle.mass`,
@@ -110,7 +96,12 @@ impl TomlSource {
     /// A located error for a value that failed validation.
     pub fn value_error(&self, e: &ParamError) -> InputError {
         let message = e.to_string();
-        match self.key_span(&e.key) {
+        self.located(self.key_span(&e.key), message)
+    }
+
+    /// An error at `span` of this file, or of the whole file without one.
+    fn located(&self, span: Option<std::ops::Range<usize>>, message: String) -> InputError {
+        match span {
             Some(span) => {
                 let (line, column) = line_col(&self.text, span.start);
                 InputError::At {

@@ -373,19 +373,7 @@ impl Tyre {
                 (0.0, 10.0),
                 (0.1, 100.0),
             ],
-            // Around the Adams example: every coefficient within ±(5|c| + 1),
-            // C within (1, 3).
-            Tyre::Pac89(_) => pac89::ADAMS_EXAMPLE_C
-                .iter()
-                .enumerate()
-                .map(|(i, c)| {
-                    if i == 0 {
-                        (1.0, 3.0)
-                    } else {
-                        (c - 5.0 * c.abs() - 1.0, c + 5.0 * c.abs() + 1.0)
-                    }
-                })
-                .collect(),
+            Tyre::Pac89(_) => pac89::bounds_around(&pac89::ADAMS_EXAMPLE_C),
             _ => Vec::new(),
         }
     }
@@ -443,17 +431,7 @@ impl Tyre {
     pub fn longitudinal_bounds(&self) -> Vec<(f64, f64)> {
         match self {
             Tyre::Unitire(u) => u.bounds(),
-            Tyre::Pac89(_) => pac89::ADAMS_EXAMPLE_B
-                .iter()
-                .enumerate()
-                .map(|(i, b)| {
-                    if i == 0 {
-                        (1.0, 3.0)
-                    } else {
-                        (b - 5.0 * b.abs() - 1.0, b + 5.0 * b.abs() + 1.0)
-                    }
-                })
-                .collect(),
+            Tyre::Pac89(_) => pac89::bounds_around(&pac89::ADAMS_EXAMPLE_B),
             _ => Vec::new(),
         }
     }

@@ -68,6 +68,21 @@ pub const ADAMS_EXAMPLE_C: [f64; 18] = [
     0.025501, -0.02357, 0.03027, -0.0647, 0.0211329, 0.89469, -0.099443, -3.336941,
 ];
 
+/// A search box around a coefficient set: the shape factor C (index 0)
+/// within (1, 3), every other coefficient within ±(5·|c| + 1) of its value.
+pub fn bounds_around(set: &[f64]) -> Vec<(f64, f64)> {
+    set.iter()
+        .enumerate()
+        .map(|(i, c)| {
+            if i == 0 {
+                (1.0, 3.0)
+            } else {
+                (c - 5.0 * c.abs() - 1.0, c + 5.0 * c.abs() + 1.0)
+            }
+        })
+        .collect()
+}
+
 /// The Magic Formula sine curve `D·sin(C·atan(B·x − E·(B·x − atan(B·x))))`.
 #[inline]
 pub fn magic_formula(b: f64, c: f64, d: f64, e: f64, x: f64) -> f64 {

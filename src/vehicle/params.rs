@@ -31,8 +31,9 @@ pub struct Vehicle {
     /// Front share χ of the lateral load transfer (default b/l, seed 004).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_transfer_front_share: Option<f64>,
-    /// Steering ratio (steering-wheel angle / road-wheel angle): optional,
-    /// only used to report steering-wheel angles.
+    /// Steering ratio (steering-wheel angle / road-wheel angle): optional;
+    /// accepted (FORMATS.md allows it) and validated, not used by the 2-DOF
+    /// model, whose input is the road-wheel angle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub steering_ratio: Option<f64>,
 }

@@ -5,6 +5,7 @@
 //! SI units and radians everywhere; ISO 8855 axes (x forward, y left, z up;
 //! positive steer turns left). See the README for the file formats.
 
+pub mod diagnose;
 pub mod equilibria;
 pub mod error;
 pub mod identify;

@@ -596,3 +596,46 @@ fn identify_fits_longitudinal_only_rig_data() {
     assert!(report["sigma_percent"].as_f64().unwrap() < 0.01, "{report}");
     assert!(fs::read_to_string(&out).unwrap().contains("b = ["));
 }
+
+#[test]
+fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&[
+        "simulate",
+        "scenarios/seed004_step.toml",
+        "--out",
+        out.path().to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let hist = out.path().join("history.csv");
+    let scenario = |tyre: &str| {
+        format!(
+            "{VEHICLE}\n[tyres]\nfront = \"{}\"\nrear = \"{}\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"{}\"\n",
+            root().join(format!("tyres/{tyre}")).display(),
+            root().join("tyres/gim_seed004_rear.toml").display(),
+            hist.display()
+        )
+    };
+    let gap = |tyre: &str, name: &str| -> serde_json::Value {
+        let dir = out.path().join(name);
+        fs::create_dir_all(&dir).unwrap();
+        fs::write(dir.join("replay.toml"), scenario(tyre)).unwrap();
+        let o = run(&[
+            "simulate",
+            dir.join("replay.toml").to_str().unwrap(),
+            "--out",
+            dir.join("o").to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        serde_json::from_str(&fs::read_to_string(dir.join("o/gap.json")).unwrap()).unwrap()
+    };
+    let same = gap("gim_seed004_front.toml", "same");
+    for ch in same["channels"].as_array().unwrap() {
+        assert_eq!(ch["significant"], false, "{ch}");
+    }
+    // A front tyre twice as stiff: the replay no longer matches.
+    let other = gap("gim.toml", "other");
+    let yaw = &other["channels"][0];
+    assert_eq!(yaw["channel"], "yaw_rate");
+    assert_eq!(yaw["significant"], true, "{yaw}");
+}

@@ -161,6 +161,19 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
             },
         )?;
     }
+    // A replayed measurement: where the model and the run disagree.
+    if let Some(run) = &sc.measured {
+        let gap = handling::diagnose::gap::run_gap(run, &h);
+        for g in &gap {
+            println!("  {}: {}", g.channel, g.verdict);
+        }
+        let path = out_dir.join("gap.json");
+        refuse_overwrite(&path, &sc.inputs)?;
+        write_json(
+            &path,
+            &serde_json::json!({ "run": run.path.display().to_string(), "channels": gap }),
+        )?;
+    }
     history_figure(&sc.name, &h, sc.measured.as_ref()).save(&files[2])?;
     println!("wrote {}", out_dir.display());
     Ok(())

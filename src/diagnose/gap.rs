@@ -1,0 +1,508 @@
+//! Where simulation and measurement disagree, for one replayed run.
+//!
+//! Per channel (yaw rate, and lateral acceleration and sideslip where
+//! measured): the residual e = simulated − measured at the measurement times
+//! (the simulation linearly interpolated), its RMS, bias and largest value;
+//! the Sprague–Geers split (Sprague & Geers 2004, simulated m against
+//! measured c): magnitude error `M = sqrt(∫m²/∫c²) − 1`, phase error
+//! `P = acos(∫mc/sqrt(∫m²·∫c²))/π`, comprehensive `C = sqrt(M² + P²)`; the
+//! residual's lag-1 autocorrelation (near 0: white, measurement-like; near 1:
+//! a slow, model-like error) and its largest correlation with the steer input
+//! over lags 0–1 s (a residual that follows the input points to a dynamic
+//! error: a lag, a stiffness, a gain). The residual is also split by time
+//! window (before the input, the first 0.5 s after it starts, 0.5–2 s, the
+//! rest) and by regime (lateral-acceleration level, speed band).
+//!
+//! The noise floor of each channel is its standard deviation in the
+//! pre-input window (the steer not yet moved) when that window has at least
+//! ten samples, else the first-difference estimate `std(Δx)/√2` (an upper
+//! bound for smooth signals). A gap is significant when the RMS residual
+//! exceeds three noise floors (and 1e-6 of the signal, for noise-free data),
+//! so "no significant gap" is a possible answer.
+//! Units: SI, rad; times in s.
+
+use serde::Serialize;
+
+/// The residual over a part of the run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PartGap {
+    /// Name of the window or regime.
+    pub name: String,
+    /// Samples in it.
+    pub samples: usize,
+    /// RMS residual.
+    pub rms: f64,
+    /// Mean residual (simulated − measured).
+    pub bias: f64,
+}
+
+/// The gap of one channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelGap {
+    /// Channel name (`yaw_rate`, `ay`, `beta`).
+    pub channel: String,
+    /// Its unit.
+    pub unit: String,
+    /// Noise floor (standard deviation of the measurement noise).
+    pub noise_floor: f64,
+    /// How the noise floor was estimated.
+    pub noise_source: String,
+    /// RMS residual.
+    pub rms: f64,
+    /// Mean residual.
+    pub bias: f64,
+    /// Largest |residual|.
+    pub max_abs: f64,
+    /// Sprague–Geers magnitude error.
+    pub magnitude_error: f64,
+    /// Sprague–Geers phase error (0 … 1).
+    pub phase_error: f64,
+    /// Sprague–Geers comprehensive error.
+    pub comprehensive_error: f64,
+    /// Lag-1 autocorrelation of the residual.
+    pub lag1_autocorrelation: f64,
+    /// Largest |correlation| of the residual with the steer over lags 0–1 s.
+    pub input_correlation: f64,
+    /// The lag of that largest correlation, s.
+    pub input_correlation_lag: f64,
+    /// By time window.
+    pub windows: Vec<PartGap>,
+    /// By regime.
+    pub regimes: Vec<PartGap>,
+    /// RMS above three noise floors.
+    pub significant: bool,
+    /// The finding in words.
+    pub verdict: String,
+}
+
+/// Linear interpolation of (xs, ys) at x (clamped to the ends).
+pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    let k = xs.partition_point(|v| *v <= x);
+    if k == 0 {
+        return ys[0];
+    }
+    if k >= xs.len() {
+        return ys[ys.len() - 1];
+    }
+    let (x0, x1) = (xs[k - 1], xs[k]);
+    let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
+    ys[k - 1] + w * (ys[k] - ys[k - 1])
+}
+
+fn trapezoid(t: &[f64], f: impl Fn(usize) -> f64) -> f64 {
+    (1..t.len())
+        .map(|i| 0.5 * (f(i - 1) + f(i)) * (t[i] - t[i - 1]))
+        .sum()
+}
+
+/// Sprague–Geers (M, P, C) of `m` (simulated) against `c` (measured).
+pub fn sprague_geers(t: &[f64], m: &[f64], c: &[f64]) -> (f64, f64, f64) {
+    let mm = trapezoid(t, |i| m[i] * m[i]);
+    let cc = trapezoid(t, |i| c[i] * c[i]);
+    let mc = trapezoid(t, |i| m[i] * c[i]);
+    if mm <= 0.0 || cc <= 0.0 {
+        return (f64::NAN, f64::NAN, f64::NAN);
+    }
+    let mag = (mm / cc).sqrt() - 1.0;
+    let phase = (mc / (mm * cc).sqrt()).clamp(-1.0, 1.0).acos() / std::f64::consts::PI;
+    (mag, phase, mag.hypot(phase))
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+fn std_dev(v: &[f64]) -> f64 {
+    let m = mean(v);
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len().max(1) as f64).sqrt()
+}
+
+/// Correlation of `a[i]` with `b[i − lag]`.
+fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
+    let n = a.len();
+    if lag + 2 > n {
+        return 0.0;
+    }
+    let (x, y) = (&a[lag..], &b[..n - lag]);
+    let (mx, my) = (mean(x), mean(y));
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for (p, q) in x.iter().zip(y) {
+        sxy += (p - mx) * (q - my);
+        sxx += (p - mx) * (p - mx);
+        syy += (q - my) * (q - my);
+    }
+    if sxx <= 0.0 || syy <= 0.0 {
+        0.0
+    } else {
+        sxy / (sxx * syy).sqrt()
+    }
+}
+
+/// Index ranges of the time windows: before the input, its first 0.5 s,
+/// 0.5–2 s, the rest. The input starts where the steer first leaves its
+/// initial value by more than 5 % of its largest excursion (and 1 mrad).
+fn windows(t: &[f64], steer: &[f64]) -> Vec<(String, Vec<usize>)> {
+    let d0 = steer[0];
+    let excursion = steer.iter().map(|d| (d - d0).abs()).fold(0.0, f64::max);
+    let threshold = (0.05 * excursion).max(1e-3);
+    let start = steer
+        .iter()
+        .position(|d| (d - d0).abs() > threshold)
+        .map_or(t[t.len() - 1], |i| t[i]);
+    let bands = [
+        ("before the input", f64::NEG_INFINITY, start),
+        ("first 0.5 s of the input", start, start + 0.5),
+        ("0.5–2 s after the input", start + 0.5, start + 2.0),
+        ("later", start + 2.0, f64::INFINITY),
+    ];
+    bands
+        .iter()
+        .map(|(name, lo, hi)| {
+            (
+                name.to_string(),
+                (0..t.len())
+                    .filter(|&i| t[i] >= *lo && t[i] < *hi)
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+fn part(name: String, idx: &[usize], e: &[f64]) -> PartGap {
+    let v: Vec<f64> = idx.iter().map(|&i| e[i]).collect();
+    PartGap {
+        name,
+        samples: v.len(),
+        rms: (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt(),
+        bias: mean(&v),
+    }
+}
+
+/// What a run shares between its channels: sample times, the steer input,
+/// and the lateral acceleration (measured, or u·r) and speed that define the
+/// regimes.
+#[derive(Debug, Clone, Copy)]
+pub struct Record<'a> {
+    /// Sample times, s.
+    pub t: &'a [f64],
+    /// Steer, rad.
+    pub steer: &'a [f64],
+    /// Lateral acceleration for the regimes, m/s².
+    pub ay: &'a [f64],
+    /// Speed, m/s.
+    pub speed: &'a [f64],
+}
+
+/// The gap of one channel of a record.
+pub fn channel_gap(
+    channel: &str,
+    unit: &str,
+    rec: &Record,
+    measured: &[f64],
+    simulated: &[f64],
+) -> ChannelGap {
+    let Record {
+        t,
+        steer,
+        ay,
+        speed,
+    } = *rec;
+    let n = t.len();
+    let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
+    let win = windows(t, steer);
+    let pre: Vec<f64> = win[0].1.iter().map(|&i| measured[i]).collect();
+    let (noise_floor, noise_source) = if pre.len() >= 10 {
+        (std_dev(&pre), "standard deviation before the input")
+    } else {
+        let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
+        (
+            std_dev(&d) / 2f64.sqrt(),
+            "first differences (an upper bound)",
+        )
+    };
+    let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
+    let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
+    let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
+    let max_lag = ((1.0 / dt).round() as usize).min(n / 2);
+    let (lag, rho) = (0..=max_lag)
+        .map(|l| (l, correlation(&e, steer, l)))
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .unwrap_or((0, 0.0));
+    let windows: Vec<PartGap> = win
+        .into_iter()
+        .filter(|w| !w.1.is_empty())
+        .map(|(name, idx)| part(name, &idx, &e))
+        .collect();
+    let mut regimes = Vec::new();
+    for (lo, hi) in [
+        (0.0, 2.0),
+        (2.0, 4.0),
+        (4.0, 6.0),
+        (6.0, 8.0),
+        (8.0, f64::INFINITY),
+    ] {
+        let idx: Vec<usize> = (0..n)
+            .filter(|&i| ay[i].abs() >= lo && ay[i].abs() < hi)
+            .collect();
+        if !idx.is_empty() {
+            regimes.push(part(format!("|ay| {lo}–{hi} m/s²"), &idx, &e));
+        }
+    }
+    let vmax = speed.iter().copied().fold(0.0, f64::max);
+    let mut lo = 0.0;
+    while lo <= vmax {
+        let idx: Vec<usize> = (0..n)
+            .filter(|&i| speed[i] >= lo && speed[i] < lo + 10.0)
+            .collect();
+        if !idx.is_empty() {
+            regimes.push(part(format!("speed {lo}–{} m/s", lo + 10.0), &idx, &e));
+        }
+        lo += 10.0;
+    }
+    // Noise-free data (a simulation replayed) have a zero floor: a residual
+    // below 1e-6 of the signal is numerical, not a gap.
+    let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
+    let significant = rms > 3.0 * noise_floor && rms > 1e-6 * signal;
+    let verdict = if !significant {
+        format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})")
+    } else {
+        let worst = |v: &[PartGap]| {
+            v.iter()
+                .filter(|p| p.samples >= 5)
+                .max_by(|a, b| a.rms.total_cmp(&b.rms))
+                .map(|p| p.name.clone())
+        };
+        let mut s = format!(
+            "gap: RMS {rms:.4} {unit} ({:.1} noise floors), bias {:.4} {unit}; magnitude error {:+.1} %, phase error {:.3}",
+            rms / noise_floor.max(1e-300),
+            mean(&e),
+            100.0 * magnitude_error,
+            phase_error
+        );
+        if let Some(w) = worst(&windows) {
+            s += &format!("; largest in the window '{w}'");
+        }
+        if let Some(r) = worst(&regimes) {
+            s += &format!(", regime '{r}'");
+        }
+        let l1 = correlation(&e, &e, 1);
+        if rho.abs() > 0.5 {
+            s += &format!("; the residual follows the steer (ρ = {rho:.2} at {:.2} s): a dynamic error (gain, lag or stiffness)", lag as f64 * dt);
+        } else if l1 > 0.9 {
+            s += "; the residual is slow and smooth: a model error rather than noise";
+        }
+        s
+    };
+    ChannelGap {
+        channel: channel.into(),
+        unit: unit.into(),
+        noise_floor,
+        noise_source: noise_source.into(),
+        rms,
+        bias: mean(&e),
+        max_abs: e.iter().map(|x| x.abs()).fold(0.0, f64::max),
+        magnitude_error,
+        phase_error,
+        comprehensive_error,
+        lag1_autocorrelation: correlation(&e, &e, 1),
+        input_correlation: rho,
+        input_correlation_lag: lag as f64 * dt,
+        windows,
+        regimes,
+        significant,
+        verdict,
+    }
+}
+
+/// The gap of every measured channel of a replayed run.
+pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> Vec<ChannelGap> {
+    let at =
+        |ys: &[f64]| -> Vec<f64> { run.t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
+    let ay_regime: Vec<f64> = match &run.ay {
+        Some(ay) => ay.clone(),
+        None => run
+            .yaw_rate
+            .iter()
+            .zip(&run.speed)
+            .map(|(r, u)| r * u)
+            .collect(),
+    };
+    let rec = Record {
+        t: &run.t,
+        steer: &run.steer,
+        ay: &ay_regime,
+        speed: &run.speed,
+    };
+    let mut out = vec![channel_gap(
+        "yaw_rate",
+        "rad/s",
+        &rec,
+        &run.yaw_rate,
+        &at(&sim.yaw_rate),
+    )];
+    if let Some(ay) = &run.ay {
+        out.push(channel_gap("ay", "m/s²", &rec, ay, &at(&sim.ay)));
+    }
+    if let Some(beta) = &run.beta {
+        out.push(channel_gap("beta", "rad", &rec, beta, &at(&sim.beta)));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn grid(n: usize, dt: f64) -> Vec<f64> {
+        (0..n).map(|i| i as f64 * dt).collect()
+    }
+
+    #[test]
+    fn sprague_geers_of_scaled_and_shifted_sines() {
+        let t = grid(10_001, 1e-3);
+        let c: Vec<f64> = t.iter().map(|x| (2.0 * PI * x).sin()).collect();
+        let m: Vec<f64> = c.iter().map(|v| 1.1 * v).collect();
+        let (mag, ph, _) = sprague_geers(&t, &m, &c);
+        assert!((mag - 0.1).abs() < 1e-9 && ph.abs() < 1e-6, "{mag} {ph}");
+        let phi = 0.3;
+        let m: Vec<f64> = t.iter().map(|x| (2.0 * PI * x - phi).sin()).collect();
+        let (mag, ph, comp) = sprague_geers(&t, &m, &c);
+        assert!(
+            mag.abs() < 1e-6 && (ph - phi / PI).abs() < 1e-4,
+            "{mag} {ph}"
+        );
+        assert!((comp - ph).abs() < 1e-6);
+    }
+
+    #[test]
+    fn identical_records_have_no_gap_and_noise_is_not_a_gap() {
+        let t = grid(2000, 0.01);
+        let steer: Vec<f64> = t
+            .iter()
+            .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
+            .collect();
+        let truth: Vec<f64> = t
+            .iter()
+            .map(|x| {
+                if *x > 5.0 {
+                    0.2 * (1.0 - (-(x - 5.0) / 0.3).exp())
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let ay = vec![1.0; t.len()];
+        let speed = vec![20.0; t.len()];
+        let g = channel_gap(
+            "yaw_rate",
+            "rad/s",
+            &Record {
+                t: &t,
+                steer: &steer,
+                ay: &ay,
+                speed: &speed,
+            },
+            &truth,
+            &truth,
+        );
+        assert_eq!(g.rms, 0.0);
+        assert!(!g.significant);
+        // White measurement noise of 0.002 rad/s: the floor is estimated from
+        // the 5 s before the input and the model is not blamed for it.
+        let mut state = 12345u64;
+        let mut white = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.002 * 12f64.sqrt()
+        };
+        let measured: Vec<f64> = truth.iter().map(|v| v + white()).collect();
+        let g = channel_gap(
+            "yaw_rate",
+            "rad/s",
+            &Record {
+                t: &t,
+                steer: &steer,
+                ay: &ay,
+                speed: &speed,
+            },
+            &measured,
+            &truth,
+        );
+        assert!((g.noise_floor - 0.002).abs() < 0.0004, "{}", g.noise_floor);
+        assert!(!g.significant, "{}", g.verdict);
+        assert!(
+            g.lag1_autocorrelation.abs() < 0.1,
+            "{}",
+            g.lag1_autocorrelation
+        );
+    }
+
+    #[test]
+    fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
+        let t = grid(2000, 0.01);
+        let steer: Vec<f64> = t
+            .iter()
+            .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
+            .collect();
+        let response = |tau: f64| -> Vec<f64> {
+            t.iter()
+                .map(|x| {
+                    if *x > 5.0 {
+                        0.2 * (1.0 - (-(x - 5.0) / tau).exp())
+                    } else {
+                        0.0
+                    }
+                })
+                .collect()
+        };
+        let (measured, simulated) = (response(0.2), response(0.5));
+        let mut state = 7u64;
+        let measured: Vec<f64> = measured
+            .iter()
+            .map(|v| {
+                state = state
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                v + ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.003
+            })
+            .collect();
+        let ay = vec![1.0; t.len()];
+        let speed = vec![20.0; t.len()];
+        let g = channel_gap(
+            "yaw_rate",
+            "rad/s",
+            &Record {
+                t: &t,
+                steer: &steer,
+                ay: &ay,
+                speed: &speed,
+            },
+            &measured,
+            &simulated,
+        );
+        assert!(g.significant, "{}", g.verdict);
+        // The gap lies in the transient, not before the input or late.
+        let w = |name: &str| {
+            g.windows
+                .iter()
+                .find(|p| p.name.starts_with(name))
+                .unwrap()
+                .rms
+        };
+        assert!(w("first 0.5 s") > 5.0 * w("before"));
+        assert!(w("first 0.5 s") > 5.0 * w("later"));
+        assert!(g.bias < 0.0, "a slower model lags: negative residual");
+        assert!(g.lag1_autocorrelation > 0.9);
+    }
+
+    #[test]
+    fn interpolation_clamps_and_interpolates() {
+        let xs = [0.0, 1.0, 2.0];
+        let ys = [0.0, 10.0, 30.0];
+        assert_eq!(interpolate(&xs, &ys, -1.0), 0.0);
+        assert_eq!(interpolate(&xs, &ys, 1.5), 20.0);
+        assert_eq!(interpolate(&xs, &ys, 3.0), 30.0);
+    }
+}

@@ -4,7 +4,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::identify::data::seed000_conditions;
-use handling::identify::{fit_lateral, FitSettings, LateralProblem};
+use handling::identify::{fit_lateral, FitProblem, FitSettings};
 use handling::optim::local::Residuals;
 use handling::tyre::{Pac89, Parameterised, Tyre};
 
@@ -28,7 +28,7 @@ fn pac89_fit(c: &mut Criterion) {
         b.iter(|| fit_lateral(black_box(&start), &data, &settings).unwrap())
     });
     let free = start.lateral_free(3, 1);
-    let problem = LateralProblem::new(&start, &free, &data);
+    let problem = FitProblem::new(&start, &free, &data);
     let p: Vec<f64> = start
         .parameters()
         .iter()

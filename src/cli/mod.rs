@@ -40,7 +40,7 @@ enum Command {
         out: Option<PathBuf>,
     },
     /// Cornering stiffness against handling (seed 004): map, RBF, inverse;
-    /// writes study.csv, maps.png, rbf.json, rbf.png, inverse.json.
+    /// writes study.csv, maps.png, rbf.json, rbf.png, inverse.json, summary.json.
     Study {
         /// Study file (TOML).
         study: PathBuf,

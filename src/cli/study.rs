@@ -109,6 +109,7 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
         "rbf.json",
         "rbf.png",
         "inverse.json",
+        "summary.json",
     ]
     .map(|f| out_dir.join(f));
     for f in &files {
@@ -314,6 +315,8 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
         heat_maps(&map, unit, k, &curves, &files[1])?;
     }
     report["combinations"] = json!(all.len());
+    report["without_steady_state"] = json!(samples.iter().filter(|s| s.metrics.is_none()).count());
+    write_json(&files[5], &report)?;
     println!("wrote {}", out_dir.display());
     Ok(())
 }

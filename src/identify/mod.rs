@@ -227,15 +227,14 @@ pub struct Fit {
 }
 
 /// The least-squares problem of one channel over the free parameters.
-pub struct LateralProblem<'a> {
+pub struct FitProblem {
     base: Tyre,
     channel: Channel,
     free: Vec<usize>,
     points: Vec<data::Point>,
-    _c: std::marker::PhantomData<&'a ()>,
 }
 
-impl LateralProblem<'_> {
+impl FitProblem {
     /// The problem of fitting `start`'s free lateral-force parameters.
     pub fn new(start: &Tyre, free: &[bool], conditions: &[Condition]) -> Self {
         Self::for_channel(start, Channel::LateralForce, free, conditions)
@@ -258,7 +257,6 @@ impl LateralProblem<'_> {
                 .flat_map(|c| c.points.iter().copied())
                 .filter(|q| channel.measured(q).is_finite())
                 .collect(),
-            _c: std::marker::PhantomData,
         }
     }
 
@@ -274,7 +272,7 @@ impl LateralProblem<'_> {
     }
 }
 
-impl Residuals for LateralProblem<'_> {
+impl Residuals for FitProblem {
     fn count(&self) -> usize {
         self.points.len()
     }
@@ -334,7 +332,6 @@ pub fn fit_channel(
         ));
     }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
-    loads.dedup_by(|a, b| (*a - *b).abs() < 1.0);
     loads.sort_by(f64::total_cmp);
     loads.dedup_by(|a, b| (*a - *b).abs() < 1.0);
     let mut cambers: Vec<f64> = conditions.iter().map(|c| c.camber).collect();
@@ -350,7 +347,7 @@ pub fn fit_channel(
         ));
     }
     let free = channel.free(start, loads.len(), cambers.len());
-    let problem = LateralProblem::for_channel(start, channel, &free, conditions);
+    let problem = FitProblem::for_channel(start, channel, &free, conditions);
     if problem.count() <= problem.free.len() {
         return Err(format!(
             "{} points with a measured {} cannot fit {} parameters",

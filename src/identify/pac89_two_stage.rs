@@ -265,7 +265,7 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
     // camber data).
     let start = tyre(a);
     let free = start.lateral_free(conditions.len(), if with_camber { 2 } else { 1 });
-    let problem = super::LateralProblem::new(&start, &free, conditions);
+    let problem = super::FitProblem::new(&start, &free, conditions);
     let p0: Vec<f64> = a
         .iter()
         .zip(&free)

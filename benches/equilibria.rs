@@ -19,6 +19,7 @@ fn models() -> Vec<(&'static str, VehicleModel)> {
     ms.options = ModelOptions {
         kinematics: Kinematics::SmallAngle,
         load_transfer: false,
+        ..ModelOptions::default()
     };
     let pac = VehicleModel::new(
         Vehicle::seed004_sedan(),

@@ -1,7 +1,8 @@
 //! Exact reference solver for the steering equilibria, independent of chance.
 //!
-//! At an equilibrium ay = u·r, and the force and moment balances fix both
-//! axle forces by the yaw rate: `Fyr = m·u·r·a/l`, `Fyf·cos δ = m·u·r·b/l`
+//! At an equilibrium ay = u·r (plus g·sin θ on a banked road), and the force
+//! and moment balances fix both axle forces by the yaw rate:
+//! `Fyr = m·u·r·a/l`, `Fyf·cos δ = m·u·r·b/l`
 //! (cos δ = 1 in the small-angle form). Parameterised by the rear slip angle
 //! αr, the rear balance gives r (directly without load transfer; with it, the
 //! loads depend on ay = u·r, so r solves the nested scalar equation
@@ -118,7 +119,7 @@ impl<'a> Reduced<'a> {
     }
 
     fn axle(&self, front: bool, alpha: f64, ay: f64) -> f64 {
-        let fz = self.model.wheel_loads(ay);
+        let fz = self.model.wheel_loads_at(ay, self.u);
         let (tyre, l, r) = if front {
             (&self.model.front, fz[0], fz[1])
         } else {
@@ -135,15 +136,19 @@ impl<'a> Reduced<'a> {
         tyre.lateral_force(&s(l)) + tyre.lateral_force(&s(r))
     }
 
-    /// Yaw rate that balances the rear axle at slip angle `ar`.
+    /// Yaw rate that balances the rear axle at slip angle `ar`: the tyres
+    /// carry `m·(u·r + g·sin θ)` (the bank's pull included), the rear its
+    /// a/l share.
     fn yaw_rate(&self, ar: f64) -> f64 {
         let v = &self.model.vehicle;
         let k = v.mass * self.u * v.a / v.wheelbase();
-        let r0 = self.axle(false, ar, 0.0) / k;
+        let gb = self.model.bank_acceleration();
+        let bank = v.mass * v.a / v.wheelbase() * gb;
+        let r0 = (self.axle(false, ar, gb) - bank) / k;
         if !self.model.options.load_transfer {
             return r0;
         }
-        let g = |r: f64| k * r - self.axle(false, ar, self.u * r);
+        let g = |r: f64| k * r + bank - self.axle(false, ar, self.u * r + gb);
         // Secant from the no-transfer answer; g' ≈ k, so it converges in a
         // few steps. Brent over a bracket that must contain the root (the
         // axle force cannot exceed the whole vehicle weight times the peak
@@ -189,9 +194,10 @@ impl<'a> Reduced<'a> {
                 (beta, self.c.steer - beta - v.a * r / u, 1.0)
             }
         };
-        let need = v.mass * u * r * v.b / v.wheelbase();
+        let ay = u * r + self.model.bank_acceleration();
+        let need = v.mass * ay * v.b / v.wheelbase();
         Point {
-            h: self.axle(true, af, u * r) * proj - need,
+            h: self.axle(true, af, ay) * proj - need,
             beta,
             yaw_rate: r,
         }

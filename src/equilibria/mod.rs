@@ -114,7 +114,7 @@ pub fn residual(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [f64; 2] {
 /// The right-hand side with the load-transfer loop solved to `tolerance`
 /// (the PSO fitness needs no more than the simulation's 1e-9).
 pub fn residual_to(model: &VehicleModel, c: &Condition, x: [f64; 2], tolerance: f64) -> [f64; 2] {
-    let ay = c.speed * x[1];
+    let ay = c.speed * x[1] + model.bank_acceleration();
     let mut seed = LoadTransferSeed {
         ay: [ay; 3],
         slope: 1.0,

@@ -12,6 +12,7 @@ pub(crate) fn seed003_model(load_transfer: bool) -> VehicleModel {
     m.options = ModelOptions {
         kinematics: Kinematics::SmallAngle,
         load_transfer,
+        ..ModelOptions::default()
     };
     m
 }
@@ -54,6 +55,7 @@ fn linear_tyres_give_the_closed_form_steady_state() {
     m.options = ModelOptions {
         kinematics: Kinematics::SmallAngle,
         load_transfer: false,
+        ..ModelOptions::default()
     };
     let v = &m.vehicle;
     let (cf, cr, u, d) = (110_000.0, 120_000.0, 20.0, 0.03);

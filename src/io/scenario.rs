@@ -200,6 +200,10 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
     f.vehicle
         .validate()
         .map_err(|e| param_error(src, Some("vehicle"), e))?;
+    f.model
+        .effects
+        .validate()
+        .map_err(|e| param_error(src, Some("model.effects"), e))?;
     ParamError::positive("friction", f.road.friction)
         .map_err(|e| param_error(src, Some("road"), e))?;
     ParamError::in_range(

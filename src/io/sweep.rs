@@ -217,6 +217,10 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     f.vehicle
         .validate()
         .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+    f.model
+        .effects
+        .validate()
+        .map_err(|e| param_error(&src, Some("model.effects"), e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let front_path = dir.join(&f.tyres.front);
     let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));

@@ -64,6 +64,41 @@ pub struct ModelOptions {
     /// Lateral load transfer on (seed 004) or off (axle tyres, seed 003).
     #[serde(default = "yes")]
     pub load_transfer: bool,
+    /// Effects beyond the papers' model, all off by default.
+    #[serde(default)]
+    pub effects: Effects,
+}
+
+/// Effects beyond the papers' model (candidates of the sim-to-real
+/// diagnosis). Every one is off by default, and off it changes nothing: the
+/// base model stays exactly seed 003's / seed 004's.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Effects {
+    /// Aerodynamic down-force per axle (front, rear), N per (m/s)²: each
+    /// wheel of the axle carries half of `k·u²` on top of its static load.
+    pub aero_load: [f64; 2],
+    /// Road bank angle θ, rad, positive when the road's left edge is higher:
+    /// gravity then pulls the car to the right with `m·g·sin θ`, the static
+    /// loads scale by `cos θ`, and the accelerometer (`ay`, the tyres' force
+    /// over the mass) reads `g·sin θ` more than the path's acceleration.
+    pub road_bank: f64,
+}
+
+impl Effects {
+    /// Checks the values for physical sense.
+    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
+        use crate::error::ParamError;
+        ParamError::non_negative("aero_load[0]", self.aero_load[0])?;
+        ParamError::non_negative("aero_load[1]", self.aero_load[1])?;
+        ParamError::in_range(
+            "road_bank",
+            self.road_bank.abs(),
+            -1.0,
+            0.5,
+            "a bank steeper than 0.5 rad (29°) is not a road",
+        )
+    }
 }
 
 fn yes() -> bool {
@@ -75,6 +110,7 @@ impl Default for ModelOptions {
         Self {
             kinematics: Kinematics::Exact,
             load_transfer: true,
+            effects: Effects::default(),
         }
     }
 }
@@ -242,9 +278,19 @@ impl VehicleModel {
     /// Static wheel loads and the load transferred per m/s² of lateral
     /// acceleration on each axle: computed once per derivative evaluation,
     /// not once per load-transfer iteration.
-    fn load_split(&self) -> LoadSplit {
+    fn load_split(&self, speed: f64) -> LoadSplit {
         let v = &self.vehicle;
-        let (sf, sr) = v.static_axle_loads();
+        let e = &self.options.effects;
+        let (mut sf, mut sr) = v.static_axle_loads();
+        if e.road_bank != 0.0 {
+            let c = e.road_bank.cos();
+            sf *= c;
+            sr *= c;
+        }
+        if e.aero_load != [0.0; 2] {
+            sf += e.aero_load[0] * speed * speed;
+            sr += e.aero_load[1] * speed * speed;
+        }
         let (kf, kr) = if self.options.load_transfer {
             let chi = v.front_transfer_share();
             let k = v.mass * v.cg_height;
@@ -260,9 +306,26 @@ impl VehicleModel {
         }
     }
 
-    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay`.
+    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay` (the
+    /// tyres' force over the mass) and standstill.
     pub fn wheel_loads(&self, ay: f64) -> [f64; 4] {
-        self.load_split().at(ay)
+        self.load_split(0.0).at(ay)
+    }
+
+    /// Wheel loads at lateral acceleration `ay` and speed `speed` (aero).
+    pub fn wheel_loads_at(&self, ay: f64, speed: f64) -> [f64; 4] {
+        self.load_split(speed).at(ay)
+    }
+
+    /// g·sin θ of the road bank, m/s².
+    pub fn bank_acceleration(&self) -> f64 {
+        let bank = self.options.effects.road_bank;
+        // No sine in the hot loop of the base model.
+        if bank == 0.0 {
+            0.0
+        } else {
+            G * bank.sin()
+        }
     }
 
     /// Axle forces (front, rear) at slip angles and wheel loads.
@@ -295,7 +358,7 @@ impl VehicleModel {
         tolerance: f64,
     ) -> (f64, f64, f64, [f64; 4], u32) {
         let inv_m = 1.0 / self.vehicle.mass;
-        let split = self.load_split();
+        let split = self.load_split(inp.speed.max(MIN_SPEED));
         let eval = |ay: f64| {
             let fz = split.at(ay);
             let (f, r) = self.axle_forces(af, ar, &fz, inp);
@@ -366,13 +429,16 @@ impl VehicleModel {
         let fyf_x = fyf * cos_steer;
         let yaw_acceleration = (v.a * fyf_x - v.b * fyr) / v.yaw_inertia;
         let u = inp.speed.max(MIN_SPEED);
+        // The path's lateral acceleration is the tyres' (ay) less the bank's
+        // pull g·sin θ (zero without a bank).
+        let ay_path = ay - self.bank_acceleration();
         let beta_rate = match self.options.kinematics {
             Kinematics::Exact => {
                 let vy = u * x.beta.tan();
-                let vy_dot = ay - u * x.yaw_rate;
+                let vy_dot = ay_path - u * x.yaw_rate;
                 (u * vy_dot - vy * inp.speed_rate) / (u * u + vy * vy)
             }
-            Kinematics::SmallAngle => ay / u - x.yaw_rate - inp.speed_rate * x.beta / u,
+            Kinematics::SmallAngle => ay_path / u - x.yaw_rate - inp.speed_rate * x.beta / u,
         };
         Outputs {
             beta_rate,

@@ -97,7 +97,9 @@ impl VehicleModel {
         ay: f64,
     ) -> Result<SteadyState, String> {
         let u = speed.max(MIN_SPEED);
-        let r = ay / u;
+        // `ay` is what the accelerometer reads (the tyres' force over the
+        // mass); on a banked road the path needs g·sin θ less.
+        let r = (ay - self.bank_acceleration()) / u;
         let v = &self.vehicle;
         let l = v.wheelbase();
         let (_, cr) = self.axle_cornering_stiffness();
@@ -116,9 +118,9 @@ impl VehicleModel {
                     friction,
                 },
             );
-            // (ay − u·r)/u rather than β̇: β̇ carries a cos²β factor that
-            // would let Newton 'converge' by running off to β = ±90°.
-            [(o.ay - u * r) / u, o.yaw_acceleration]
+            // (ay_tyres − ay)/u rather than β̇: β̇ carries a cos²β factor
+            // that would let Newton 'converge' by running off to β = ±90°.
+            [(o.ay - ay) / u, o.yaw_acceleration]
         };
         let fail = || {
             format!(

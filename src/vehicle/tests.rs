@@ -18,6 +18,7 @@ fn linear_model() -> VehicleModel {
     m.options = ModelOptions {
         kinematics: Kinematics::SmallAngle,
         load_transfer: false,
+        ..ModelOptions::default()
     };
     m
 }
@@ -250,5 +251,88 @@ fn seeded_load_transfer_solves_cost_little_and_agree_with_fresh_ones() {
             friction: 1.0,
         };
         assert_relative_eq!(model.evaluate(&x, &inp).ay, h.ay[i], epsilon = 1e-9);
+    }
+}
+
+#[test]
+fn effects_are_off_by_default_and_change_nothing_then() {
+    assert_eq!(ModelOptions::default().effects, Effects::default());
+    let opts: ModelOptions = toml::from_str("kinematics = \"exact\"\n").unwrap();
+    assert_eq!(opts.effects, Effects::default());
+    // A zero bank and zero aero load are exactly the base model.
+    let base = nonlinear_model();
+    let mut zero = base.clone();
+    zero.options.effects = Effects {
+        aero_load: [0.0, 0.0],
+        road_bank: 0.0,
+    };
+    let x = State {
+        beta: -0.01,
+        yaw_rate: 0.3,
+    };
+    let inp = Inputs {
+        steer: 0.05,
+        speed: 25.0,
+        speed_rate: 0.3,
+        friction: 0.9,
+    };
+    assert_eq!(base.evaluate(&x, &inp), zero.evaluate(&x, &inp));
+}
+
+#[test]
+fn a_banked_road_pulls_the_car_down_the_slope() {
+    let mut m = linear_model();
+    let bank = 0.05;
+    m.options.effects.road_bank = bank;
+    // Straight, no steer, no sideslip: the tyres carry nothing, the
+    // accelerometer reads 0 and the path curves down the slope at g·sin θ.
+    let o = m.evaluate(
+        &State::default(),
+        &Inputs {
+            steer: 0.0,
+            speed: 20.0,
+            speed_rate: 0.0,
+            friction: 1.0,
+        },
+    );
+    assert_eq!(o.ay, 0.0);
+    assert_relative_eq!(o.beta_rate, -G * bank.sin() / 20.0, max_relative = 1e-12);
+    // Holding a straight line on the bank: the accelerometer reads g·sin θ
+    // at zero yaw rate.
+    let ss = m
+        .steady_state_for_lateral_acceleration(20.0, 1.0, G * bank.sin())
+        .unwrap();
+    assert_relative_eq!(ss.yaw_rate, 0.0, epsilon = 1e-12);
+    assert!(ss.steer > 0.0, "steering up the slope: {}", ss.steer);
+}
+
+#[test]
+fn aero_load_adds_speed_squared_axle_loads() {
+    let mut m = nonlinear_model();
+    m.options.effects.aero_load = [0.4, 0.6];
+    let (sf, sr) = m.vehicle.static_axle_loads();
+    let fz = m.wheel_loads_at(0.0, 30.0);
+    assert_relative_eq!(fz[0], 0.5 * sf + 0.5 * 0.4 * 900.0, max_relative = 1e-12);
+    assert_relative_eq!(fz[3], 0.5 * sr + 0.5 * 0.6 * 900.0, max_relative = 1e-12);
+    assert_eq!(m.wheel_loads_at(0.0, 0.0), m.wheel_loads(0.0));
+}
+
+#[test]
+fn the_exact_equilibrium_solver_follows_bank_and_aero() {
+    use crate::equilibria::{exact, Condition};
+    let mut m = nonlinear_model();
+    m.options.effects = Effects {
+        aero_load: [0.3, 0.5],
+        road_bank: 0.04,
+    };
+    let c = Condition {
+        steer: 0.03,
+        friction: 0.9,
+        speed: 25.0,
+    };
+    let eqs = exact::solve(&m, &c);
+    assert!(!eqs.is_empty());
+    for e in eqs {
+        assert!(e.residual < 1e-10, "{e:?}");
     }
 }

@@ -375,62 +375,72 @@ mod tests {
         assert!((comp - ph).abs() < 1e-6);
     }
 
+    /// A 20 s record at 100 Hz with a steer step at 5 s, and the first-order
+    /// yaw-rate response of time constant `tau` to it.
+    struct Step {
+        t: Vec<f64>,
+        steer: Vec<f64>,
+        ay: Vec<f64>,
+        speed: Vec<f64>,
+    }
+
+    impl Step {
+        fn new() -> Self {
+            let t = grid(2000, 0.01);
+            let n = t.len();
+            Self {
+                steer: t
+                    .iter()
+                    .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
+                    .collect(),
+                ay: vec![1.0; n],
+                speed: vec![20.0; n],
+                t,
+            }
+        }
+        fn response(&self, tau: f64) -> Vec<f64> {
+            self.t
+                .iter()
+                .map(|x| {
+                    if *x > 5.0 {
+                        0.2 * (1.0 - (-(x - 5.0) / tau).exp())
+                    } else {
+                        0.0
+                    }
+                })
+                .collect()
+        }
+        fn record(&self) -> Record<'_> {
+            Record {
+                t: &self.t,
+                steer: &self.steer,
+                ay: &self.ay,
+                speed: &self.speed,
+            }
+        }
+    }
+
+    /// `y` plus white Gaussian noise of standard deviation `sigma` (seeded).
+    fn noisy(y: &[f64], sigma: f64, seed: u64) -> Vec<f64> {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        y.iter()
+            .map(|v| v + sigma * crate::identify::data::gauss(&mut rng))
+            .collect()
+    }
+
     #[test]
     fn identical_records_have_no_gap_and_noise_is_not_a_gap() {
-        let t = grid(2000, 0.01);
-        let steer: Vec<f64> = t
-            .iter()
-            .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
-            .collect();
-        let truth: Vec<f64> = t
-            .iter()
-            .map(|x| {
-                if *x > 5.0 {
-                    0.2 * (1.0 - (-(x - 5.0) / 0.3).exp())
-                } else {
-                    0.0
-                }
-            })
-            .collect();
-        let ay = vec![1.0; t.len()];
-        let speed = vec![20.0; t.len()];
-        let g = channel_gap(
-            "yaw_rate",
-            "rad/s",
-            &Record {
-                t: &t,
-                steer: &steer,
-                ay: &ay,
-                speed: &speed,
-            },
-            &truth,
-            &truth,
-        );
+        let s = Step::new();
+        let truth = s.response(0.3);
+        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &truth, &truth);
         assert_eq!(g.rms, 0.0);
         assert!(!g.significant);
         // White measurement noise of 0.002 rad/s: the floor is estimated from
         // the 5 s before the input and the model is not blamed for it.
-        let mut state = 12345u64;
-        let mut white = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.002 * 12f64.sqrt()
-        };
-        let measured: Vec<f64> = truth.iter().map(|v| v + white()).collect();
-        let g = channel_gap(
-            "yaw_rate",
-            "rad/s",
-            &Record {
-                t: &t,
-                steer: &steer,
-                ay: &ay,
-                speed: &speed,
-            },
-            &measured,
-            &truth,
-        );
-        assert!((g.noise_floor - 0.002).abs() < 0.0004, "{}", g.noise_floor);
+        let measured = noisy(&truth, 0.002, 12345);
+        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &measured, &truth);
+        assert!((g.noise_floor - 0.002).abs() < 0.0003, "{}", g.noise_floor);
         assert!(!g.significant, "{}", g.verdict);
         assert!(
             g.lag1_autocorrelation.abs() < 0.1,
@@ -441,47 +451,9 @@ mod tests {
 
     #[test]
     fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
-        let t = grid(2000, 0.01);
-        let steer: Vec<f64> = t
-            .iter()
-            .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
-            .collect();
-        let response = |tau: f64| -> Vec<f64> {
-            t.iter()
-                .map(|x| {
-                    if *x > 5.0 {
-                        0.2 * (1.0 - (-(x - 5.0) / tau).exp())
-                    } else {
-                        0.0
-                    }
-                })
-                .collect()
-        };
-        let (measured, simulated) = (response(0.2), response(0.5));
-        let mut state = 7u64;
-        let measured: Vec<f64> = measured
-            .iter()
-            .map(|v| {
-                state = state
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                v + ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.003
-            })
-            .collect();
-        let ay = vec![1.0; t.len()];
-        let speed = vec![20.0; t.len()];
-        let g = channel_gap(
-            "yaw_rate",
-            "rad/s",
-            &Record {
-                t: &t,
-                steer: &steer,
-                ay: &ay,
-                speed: &speed,
-            },
-            &measured,
-            &simulated,
-        );
+        let s = Step::new();
+        let (measured, simulated) = (noisy(&s.response(0.2), 0.001, 7), s.response(0.5));
+        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &measured, &simulated);
         assert!(g.significant, "{}", g.verdict);
         // The gap lies in the transient, not before the input or late.
         let w = |name: &str| {

@@ -263,8 +263,10 @@ pub fn search(
                 .product();
             fitness(x) * m
         };
+        // Rounds past the minimum run only while new equilibria keep turning
+        // up or the index certificate fails: each brings a larger swarm.
         let pso = Pso {
-            particles: settings.particles,
+            particles: settings.particles * (1 + round.saturating_sub(settings.min_rounds)),
             iterations: settings.iterations,
             boundary: Boundary::Wrap,
             topology: Topology::Ring(1),

@@ -21,6 +21,7 @@
 //! so "no significant gap" is a possible answer.
 //! Units: SI, rad; times in s.
 
+use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
 /// The residual over a part of the run.
@@ -73,20 +74,6 @@ pub struct ChannelGap {
     pub significant: bool,
     /// The finding in words.
     pub verdict: String,
-}
-
-/// Linear interpolation of (xs, ys) at x (clamped to the ends).
-pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    let k = xs.partition_point(|v| *v <= x);
-    if k == 0 {
-        return ys[0];
-    }
-    if k >= xs.len() {
-        return ys[ys.len() - 1];
-    }
-    let (x0, x1) = (xs[k - 1], xs[k]);
-    let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
-    ys[k - 1] + w * (ys[k] - ys[k - 1])
 }
 
 fn trapezoid(t: &[f64], f: impl Fn(usize) -> f64) -> f64 {
@@ -467,14 +454,5 @@ mod tests {
         assert!(w("first 0.5 s") > 5.0 * w("later"));
         assert!(g.bias < 0.0, "a slower model lags: negative residual");
         assert!(g.lag1_autocorrelation > 0.9);
-    }
-
-    #[test]
-    fn interpolation_clamps_and_interpolates() {
-        let xs = [0.0, 1.0, 2.0];
-        let ys = [0.0, 10.0, 30.0];
-        assert_eq!(interpolate(&xs, &ys, -1.0), 0.0);
-        assert_eq!(interpolate(&xs, &ys, 1.5), 20.0);
-        assert_eq!(interpolate(&xs, &ys, 3.0), 30.0);
     }
 }

@@ -67,7 +67,7 @@ impl Sensors {
                 y.to_vec()
             } else {
                 h.t.iter()
-                    .map(|&t| super::gap::interpolate(&h.t, y, t - self.delay))
+                    .map(|&t| crate::manoeuvre::interpolate(&h.t, y, t - self.delay))
                     .collect()
             }
         };

@@ -106,14 +106,23 @@ impl Replay {
         }
     }
     fn interp(&self, y: &[f64], t: f64) -> f64 {
-        if self.t.len() == 1 {
-            return y[0];
-        }
-        let i = self.segment(t);
-        let (t0, t1) = (self.t[i], self.t[i + 1]);
-        let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
-        y[i] + w * (y[i + 1] - y[i])
+        interpolate(&self.t, y, t)
     }
+}
+
+/// Linear interpolation of (xs, ys) at x, xs increasing, clamped to the
+/// ends (the replay of a run and the comparison with one both use it).
+pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    let k = xs.partition_point(|v| *v <= x);
+    if k == 0 {
+        return ys[0];
+    }
+    if k >= xs.len() {
+        return ys[ys.len() - 1];
+    }
+    let (x0, x1) = (xs[k - 1], xs[k]);
+    let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
+    ys[k - 1] + w * (ys[k] - ys[k - 1])
 }
 
 /// Any manoeuvre.
@@ -254,6 +263,7 @@ mod tests {
             speed: vec![10.0, 12.0, 12.0],
         });
         assert!((m.steer(2.0) - 0.2).abs() < 1e-15);
+        assert_eq!(m.steer(-1.0), 0.0);
         assert!((m.speed(0.5) - 11.0).abs() < 1e-15);
         assert_eq!(m.speed_rate(0.5), 2.0);
         assert_eq!(m.speed_rate(2.5), 0.0);

@@ -56,11 +56,7 @@ fn bifurcations_csv(r: &SweepResult) -> String {
         let _ = writeln!(
             s,
             "{},{},{},{},{},{},{},{:e},{:e},{},{},{}",
-            match b.kind {
-                handling::equilibria::bifurcation::BifurcationKind::Fold => "fold",
-                handling::equilibria::bifurcation::BifurcationKind::Hopf => "hopf",
-                handling::equilibria::bifurcation::BifurcationKind::Pitchfork => "pitchfork",
-            },
+            b.kind.name(),
             b.axis.name(),
             b.at.steer,
             b.at.friction,

@@ -78,6 +78,17 @@ pub enum BifurcationKind {
     Hopf,
 }
 
+impl BifurcationKind {
+    /// Name used in files and legends.
+    pub fn name(self) -> &'static str {
+        match self {
+            BifurcationKind::Fold => "fold",
+            BifurcationKind::Pitchfork => "pitchfork",
+            BifurcationKind::Hopf => "hopf",
+        }
+    }
+}
+
 /// A located bifurcation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Bifurcation {

@@ -3,7 +3,7 @@
 //! equilibria, saddle separatrices) and stability maps over two swept
 //! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
 
-use super::bifurcation::{Axis, Bifurcation, BifurcationKind};
+use super::bifurcation::{Axis, Bifurcation};
 use super::stability::{self, Kind};
 use super::sweep::{axis_lines, SweepResult};
 use super::{residual, Condition, Equilibrium, SearchBox};
@@ -108,13 +108,8 @@ pub fn branch_diagram(res: &SweepResult, axis: Axis, bx: &SearchBox, path: &Path
         .iter()
         .map(|b| display(axis, axis.get(&b.at)))
         .collect();
-    let label = |k: BifurcationKind| match k {
-        BifurcationKind::Fold => "fold",
-        BifurcationKind::Pitchfork => "pitchfork",
-        BifurcationKind::Hopf => "Hopf",
-    };
     if !folds.is_empty() {
-        let l = label(folds[0].kind);
+        let l = folds[0].kind.name();
         beta.series.push(
             Series::line(
                 l,

@@ -174,6 +174,13 @@ pub struct Scenario {
     pub inputs: Vec<PathBuf>,
 }
 
+/// The checks every timed manoeuvre shares: a positive speed and an end
+/// after the start.
+fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
+    ParamError::positive("speed", speed)?;
+    ParamError::in_range("end", end, start, 1e6, "the run must end after it starts")
+}
+
 /// Reads and validates a tyre file.
 pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
     let src = TomlSource::read(path)?;
@@ -288,49 +295,19 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
             })
         }
         ManoeuvreSpec::RampSteer(r) => {
-            check(src, ParamError::positive("speed", r.speed))?;
+            check(src, timing(r.speed, r.start, r.end))?;
             check(src, ParamError::finite("rate", r.rate))?;
-            check(
-                src,
-                ParamError::in_range(
-                    "end",
-                    r.end,
-                    r.start,
-                    1e6,
-                    "the run must end after it starts",
-                ),
-            )?;
             Manoeuvre::RampSteer(*r)
         }
         ManoeuvreSpec::Sine(s) => {
-            check(src, ParamError::positive("speed", s.speed))?;
+            check(src, timing(s.speed, s.start, s.end))?;
             check(src, ParamError::positive("frequency", s.frequency))?;
-            check(
-                src,
-                ParamError::in_range(
-                    "end",
-                    s.end,
-                    s.start,
-                    1e6,
-                    "the run must end after it starts",
-                ),
-            )?;
             Manoeuvre::Sine(*s)
         }
         ManoeuvreSpec::Sweep(s) => {
-            check(src, ParamError::positive("speed", s.speed))?;
+            check(src, timing(s.speed, s.start, s.end))?;
             check(src, ParamError::non_negative("f_start", s.f_start))?;
             check(src, ParamError::positive("f_end", s.f_end))?;
-            check(
-                src,
-                ParamError::in_range(
-                    "end",
-                    s.end,
-                    s.start,
-                    1e6,
-                    "the sweep must end after it starts",
-                ),
-            )?;
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::Replay(r) => {

@@ -255,7 +255,10 @@ impl<'a> Reduced<'a> {
     /// Intervals of rear slip angle (rad) that are continua of equilibria.
     pub fn continua(&self) -> Vec<(f64, f64)> {
         let (a, h) = self.scan();
-        let flat = self.flat(&h);
+        Self::continua_of(&a, &self.flat(&h))
+    }
+
+    fn continua_of(a: &[f64], flat: &[bool]) -> Vec<(f64, f64)> {
         let mut out = Vec::new();
         let mut i = 0;
         while i < a.len() {
@@ -270,10 +273,24 @@ impl<'a> Reduced<'a> {
         out
     }
 
-    fn roots_with(&self, doubles: bool) -> Vec<f64> {
-        let n = CELLS;
+    /// Every root (double roots included) and every continuum, from one scan.
+    pub fn analyse(&self) -> (Vec<f64>, Vec<(f64, f64)>) {
         let (a, h) = self.scan();
         let flat = self.flat(&h);
+        (
+            self.roots_of(&a, &h, &flat, true),
+            Self::continua_of(&a, &flat),
+        )
+    }
+
+    fn roots_with(&self, doubles: bool) -> Vec<f64> {
+        let (a, h) = self.scan();
+        let flat = self.flat(&h);
+        self.roots_of(&a, &h, &flat, doubles)
+    }
+
+    fn roots_of(&self, a: &[f64], h: &[f64], flat: &[bool], doubles: bool) -> Vec<f64> {
+        let n = CELLS;
         let f = |x: f64| self.at(x).h;
         let tol = 1e-15;
         let mut roots = Vec::new();
@@ -344,27 +361,25 @@ pub struct Continuum {
 
 /// The continua of equilibria at a condition (usually none).
 pub fn continua(model: &VehicleModel, c: &Condition) -> Vec<Continuum> {
-    let red = Reduced::new(model, *c);
-    red.continua()
-        .into_iter()
-        .map(|(lo, hi)| {
-            let (p, q) = (red.at(lo), red.at(hi));
-            Continuum {
-                alpha_rear: (lo, hi),
-                beta: (p.beta, q.beta),
-                yaw_rate: (p.yaw_rate, q.yaw_rate),
-            }
-        })
-        .collect()
+    solve_with_continua(model, c).1
 }
 
 /// All isolated equilibria at a condition (anywhere, not only in a box; see
-/// [`continua`] for curves of them), in ascending
-/// rear slip angle. Each root is polished by Newton on the full model so the
-/// residual is at machine precision.
+/// [`continua`] for curves of them), in ascending rear slip angle. Each root
+/// is polished by Newton on the full model so the residual is at machine
+/// precision.
 pub fn solve(model: &VehicleModel, c: &Condition) -> Vec<Equilibrium> {
+    solve_with_continua(model, c).0
+}
+
+/// The isolated equilibria and the continua of a condition from one scan.
+pub fn solve_with_continua(
+    model: &VehicleModel,
+    c: &Condition,
+) -> (Vec<Equilibrium>, Vec<Continuum>) {
     let red = Reduced::new(model, *c);
-    red.roots()
+    let (roots, cont) = red.analyse();
+    let equilibria = roots
         .into_iter()
         .map(|ar| {
             let p = red.at(ar);
@@ -376,5 +391,17 @@ pub fn solve(model: &VehicleModel, c: &Condition) -> Vec<Equilibrium> {
                 .unwrap_or(x0);
             describe(model, c, x)
         })
-        .collect()
+        .collect();
+    let continua = cont
+        .into_iter()
+        .map(|(lo, hi)| {
+            let (p, q) = (red.at(lo), red.at(hi));
+            Continuum {
+                alpha_rear: (lo, hi),
+                beta: (p.beta, q.beta),
+                yaw_rate: (p.yaw_rate, q.yaw_rate),
+            }
+        })
+        .collect();
+    (equilibria, continua)
 }

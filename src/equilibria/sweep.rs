@@ -190,8 +190,7 @@ pub fn run(
                         friction: grid.friction[i_f],
                         speed: grid.speed[i_s],
                     };
-                    let ex = exact::solve(model, &c);
-                    let continua = exact::continua(model, &c);
+                    let (ex, continua) = exact::solve_with_continua(model, &c);
                     let (ps, stats) = pso::search(model, &c, bx, search, &prev);
                     prev = ps.iter().map(|e| [e.beta, e.yaw_rate]).collect();
                     let (found, agree) = cross_check(&ex, &ps, &continua, bx);

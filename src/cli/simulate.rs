@@ -120,6 +120,7 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
         out_dir.join("history.csv"),
         out_dir.join("metrics.json"),
         out_dir.join("response.png"),
+        out_dir.join("gap.json"),
     ];
     for f in &files {
         refuse_overwrite(f, &sc.inputs)?;
@@ -167,10 +168,8 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
         for g in &gap {
             println!("  {}: {}", g.channel, g.verdict);
         }
-        let path = out_dir.join("gap.json");
-        refuse_overwrite(&path, &sc.inputs)?;
         write_json(
-            &path,
+            &files[3],
             &serde_json::json!({ "run": run.path.display().to_string(), "channels": gap }),
         )?;
     }

@@ -1,8 +1,9 @@
-//! The sim-to-real gap (issue 6). So far: where the gap lies ([`gap`]) for a
-//! measured run replayed with its own steer and speed, and the sensor effects
-//! ([`sensors`]); the vehicle-side effects live in
-//! [`crate::vehicle::Effects`]. The candidate-effect fitting and ranking and
-//! the synthetic proving ground are not built yet.
+//! The sim-to-real gap (issue 6): where a replayed run and its measurement
+//! disagree ([`gap`]), the library of candidate effects ([`effects`]) and
+//! the augmented model that carries them ([`model`]), the sensor effects
+//! ([`sensors`]).
 
+pub mod effects;
 pub mod gap;
+pub mod model;
 pub mod sensors;

@@ -1,0 +1,348 @@
+//! The library of candidate effects of the sim-to-real diagnosis (issue 6):
+//! each is a model extension with one to three physical parameters, off in
+//! the base model. [`EffectKind`] names them (the issue's vocabulary),
+//! gives their parameters, units, search bounds and the values that switch
+//! them off; [`EffectSet`] holds the values of all of them at once, and is
+//! what the augmented model ([`super::model`]) evaluates.
+//!
+//! Signs follow ISO 8855 (x forward, y left, z up, positive steer left,
+//! positive roll φ puts the right side down, as in a left turn). Units: SI,
+//! rad; scales are dimensionless factors on the base model's value.
+
+use super::sensors::Sensors;
+use serde::Serialize;
+
+/// One candidate effect.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EffectKind {
+    /// Tyre lag: first-order slip-angle response over a relaxation length.
+    RelaxationLength,
+    /// Steer angle lost to the front axle force through the steering system.
+    SteeringCompliance,
+    /// Axle steer proportional to body roll (needs the roll degree of freedom).
+    RollSteer,
+    /// Camber thrust proportional to body roll and load.
+    RollCamber,
+    /// Front share of the lateral load transfer.
+    LoadTransferDistribution,
+    /// Aerodynamic down-force growing with speed squared.
+    AeroLoad,
+    /// Road friction differing from the tyre data's.
+    RoadFriction,
+    /// Constant road bank (cross slope).
+    RoadBank,
+    /// Axle cornering stiffness differing from the tyre data's.
+    CorneringStiffness,
+    /// Yaw moment of inertia differing from the vehicle file's.
+    YawInertia,
+    /// All measured channels reported late.
+    SensorDelay,
+    /// Constant offsets of the yaw-rate and lateral-acceleration sensors.
+    SensorBias,
+    /// A body-fixed accelerometer that rolls with the body and feels g·sin φ.
+    AccelerometerRoll,
+    /// An accelerometer ahead of or behind the centre of gravity.
+    AccelerometerPosition,
+}
+
+/// A parameter of an effect.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Parameter {
+    /// Name in reports.
+    pub name: &'static str,
+    /// Unit.
+    pub unit: &'static str,
+    /// Value that switches the effect off.
+    pub off: f64,
+    /// Search bounds (lower, upper).
+    pub bounds: (f64, f64),
+}
+
+const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64) -> Parameter {
+    Parameter {
+        name,
+        unit,
+        off,
+        bounds: (lo, hi),
+    }
+}
+
+impl EffectKind {
+    /// Every effect, in the issue's order.
+    pub const ALL: [EffectKind; 14] = [
+        EffectKind::RelaxationLength,
+        EffectKind::SteeringCompliance,
+        EffectKind::RollSteer,
+        EffectKind::RollCamber,
+        EffectKind::LoadTransferDistribution,
+        EffectKind::AeroLoad,
+        EffectKind::RoadFriction,
+        EffectKind::RoadBank,
+        EffectKind::CorneringStiffness,
+        EffectKind::YawInertia,
+        EffectKind::SensorDelay,
+        EffectKind::SensorBias,
+        EffectKind::AccelerometerRoll,
+        EffectKind::AccelerometerPosition,
+    ];
+
+    /// The name in the issue's vocabulary (and in diagnosis.json).
+    pub fn name(self) -> &'static str {
+        match self {
+            EffectKind::RelaxationLength => "relaxation_length",
+            EffectKind::SteeringCompliance => "steering_compliance",
+            EffectKind::RollSteer => "roll_steer",
+            EffectKind::RollCamber => "roll_camber",
+            EffectKind::LoadTransferDistribution => "load_transfer_distribution",
+            EffectKind::AeroLoad => "aero_load",
+            EffectKind::RoadFriction => "road_friction",
+            EffectKind::RoadBank => "road_bank",
+            EffectKind::CorneringStiffness => "cornering_stiffness",
+            EffectKind::YawInertia => "yaw_inertia",
+            EffectKind::SensorDelay => "sensor_delay",
+            EffectKind::SensorBias => "sensor_bias",
+            EffectKind::AccelerometerRoll => "accelerometer_roll",
+            EffectKind::AccelerometerPosition => "accelerometer_position",
+        }
+    }
+
+    /// The effect of a name, if it is one.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|e| e.name() == name)
+    }
+
+    /// Its parameters. The bounds are wide physical ranges: the search must
+    /// be able to find a value the truth did not use.
+    pub fn parameters(self) -> &'static [Parameter] {
+        const RELAXATION: [Parameter; 1] = [par("relaxation_length", "m", 0.0, 0.0, 3.0)];
+        const COMPLIANCE: [Parameter; 1] =
+            [par("steer_per_front_force", "rad/kN", 0.0, -0.02, 0.05)];
+        const ROLL_STEER: [Parameter; 2] = [
+            par("front", "rad/rad", 0.0, -0.5, 0.5),
+            par("rear", "rad/rad", 0.0, -0.5, 0.5),
+        ];
+        const ROLL_CAMBER: [Parameter; 2] = [
+            par("front", "N/N per rad", 0.0, -8.0, 8.0),
+            par("rear", "N/N per rad", 0.0, -8.0, 8.0),
+        ];
+        const SHARE: [Parameter; 1] = [par("front_share", "-", f64::NAN, 0.0, 1.0)];
+        const AERO: [Parameter; 2] = [
+            par("front", "N/(m/s)^2", 0.0, 0.0, 6.0),
+            par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0),
+        ];
+        const FRICTION: [Parameter; 1] = [par("friction_scale", "-", 1.0, 0.3, 1.5)];
+        const BANK: [Parameter; 1] = [par("bank", "rad", 0.0, -0.15, 0.15)];
+        const STIFFNESS: [Parameter; 2] = [
+            par("front_scale", "-", 1.0, 0.4, 2.0),
+            par("rear_scale", "-", 1.0, 0.4, 2.0),
+        ];
+        const INERTIA: [Parameter; 1] = [par("scale", "-", 1.0, 0.4, 2.5)];
+        const DELAY: [Parameter; 1] = [par("delay", "s", 0.0, 0.0, 0.3)];
+        const BIAS: [Parameter; 2] = [
+            par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
+            par("ay", "m/s^2", 0.0, -1.0, 1.0),
+        ];
+        const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s^2)", 0.0, -0.03, 0.03)];
+        const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
+        match self {
+            EffectKind::RelaxationLength => &RELAXATION,
+            EffectKind::SteeringCompliance => &COMPLIANCE,
+            EffectKind::RollSteer => &ROLL_STEER,
+            EffectKind::RollCamber => &ROLL_CAMBER,
+            EffectKind::LoadTransferDistribution => &SHARE,
+            EffectKind::AeroLoad => &AERO,
+            EffectKind::RoadFriction => &FRICTION,
+            EffectKind::RoadBank => &BANK,
+            EffectKind::CorneringStiffness => &STIFFNESS,
+            EffectKind::YawInertia => &INERTIA,
+            EffectKind::SensorDelay => &DELAY,
+            EffectKind::SensorBias => &BIAS,
+            EffectKind::AccelerometerRoll => &ROLL,
+            EffectKind::AccelerometerPosition => &POSITION,
+        }
+    }
+
+    /// What the effect does to the measurements that no other effect does:
+    /// the experiment that separates it from a look-alike.
+    pub fn signature(self) -> &'static str {
+        match self {
+            EffectKind::RelaxationLength => {
+                "a lag that shrinks with speed (time constant σ/u): compare runs at two speeds"
+            }
+            EffectKind::SteeringCompliance => {
+                "understeer that grows with front axle force, not with roll: compare steady turns at one lateral acceleration and different speeds"
+            }
+            EffectKind::RollSteer => {
+                "a steer change that follows body roll through the tyre's slip curve (saturates at the limit): a ramp steer to the limit"
+            }
+            EffectKind::RollCamber => {
+                "a force change proportional to roll and load that does not saturate with slip: a ramp steer to the limit"
+            }
+            EffectKind::LoadTransferDistribution => {
+                "a balance change only at high lateral acceleration: compare low- and high-level steps at one speed"
+            }
+            EffectKind::AeroLoad => {
+                "grip and balance that change with speed squared at equal lateral acceleration: steps at two speeds, same level"
+            }
+            EffectKind::RoadFriction => {
+                "no change in the linear range, a lower limit: a ramp steer to the limit"
+            }
+            EffectKind::RoadBank => {
+                "a constant drift present before any steer: a straight run in both directions of travel"
+            }
+            EffectKind::CorneringStiffness => {
+                "a change of the linear gains at every speed and level: steps at two speeds"
+            }
+            EffectKind::YawInertia => {
+                "yaw-rate transient only, same steady state: a frequency sweep (yaw-rate phase)"
+            }
+            EffectKind::SensorDelay => {
+                "a lag independent of speed and of frequency-dependent dynamics (phase ∝ frequency): a sweep at two speeds"
+            }
+            EffectKind::SensorBias => {
+                "a constant offset that does not depend on the vehicle's direction of travel: a straight run both ways"
+            }
+            EffectKind::AccelerometerRoll => {
+                "lateral acceleration reads high by g·sin φ while the yaw rate agrees: compare ay with u·r in steady turns"
+            }
+            EffectKind::AccelerometerPosition => {
+                "ay error proportional to yaw acceleration, none in steady state: a frequency sweep"
+            }
+        }
+    }
+}
+
+/// Roll degree of freedom used by roll steer and roll camber: a second-order
+/// response of the body roll φ to lateral acceleration,
+/// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RollModel {
+    /// Steady roll per lateral acceleration k, rad per m/s².
+    pub gradient: f64,
+    /// Undamped natural frequency, Hz.
+    pub frequency: f64,
+    /// Damping ratio ζ.
+    pub damping: f64,
+}
+
+impl Default for RollModel {
+    /// A passenger car: 4°/g, 1.5 Hz, ζ = 0.5.
+    fn default() -> Self {
+        Self {
+            gradient: 4f64.to_radians() / crate::vehicle::G,
+            frequency: 1.5,
+            damping: 0.5,
+        }
+    }
+}
+
+/// The values of every effect; [`EffectSet::default`] is the base model.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct EffectSet {
+    /// Relaxation length σ of both axles, m (0: no lag).
+    pub relaxation_length: f64,
+    /// Steer lost per front axle force, rad/N.
+    pub steering_compliance: f64,
+    /// Roll steer (front, rear), rad of axle steer per rad of roll.
+    pub roll_steer: [f64; 2],
+    /// Camber thrust per roll (front, rear): lateral force per wheel load per
+    /// rad of roll.
+    pub roll_camber: [f64; 2],
+    /// Front share of the lateral load transfer (None: the vehicle's).
+    pub load_transfer_front_share: Option<f64>,
+    /// Aerodynamic down-force per axle, N per (m/s)².
+    pub aero_load: [f64; 2],
+    /// Road friction scale (None: the campaign's road friction).
+    pub friction_scale: Option<f64>,
+    /// Road bank, rad.
+    pub road_bank: f64,
+    /// Cornering-stiffness scale (front, rear) (None: 1).
+    pub cornering_stiffness_scale: Option<[f64; 2]>,
+    /// Yaw-inertia scale (None: 1).
+    pub yaw_inertia_scale: Option<f64>,
+    /// The measurement system.
+    pub sensors: Sensors,
+}
+
+impl EffectSet {
+    /// Sets `kind`'s parameters to `p` (as many as it has).
+    pub fn set(&mut self, kind: EffectKind, p: &[f64]) {
+        match kind {
+            EffectKind::RelaxationLength => self.relaxation_length = p[0],
+            EffectKind::SteeringCompliance => self.steering_compliance = p[0] * 1e-3,
+            EffectKind::RollSteer => self.roll_steer = [p[0], p[1]],
+            EffectKind::RollCamber => self.roll_camber = [p[0], p[1]],
+            EffectKind::LoadTransferDistribution => self.load_transfer_front_share = Some(p[0]),
+            EffectKind::AeroLoad => self.aero_load = [p[0], p[1]],
+            EffectKind::RoadFriction => self.friction_scale = Some(p[0]),
+            EffectKind::RoadBank => self.road_bank = p[0],
+            EffectKind::CorneringStiffness => self.cornering_stiffness_scale = Some([p[0], p[1]]),
+            EffectKind::YawInertia => self.yaw_inertia_scale = Some(p[0]),
+            EffectKind::SensorDelay => self.sensors.delay = p[0],
+            EffectKind::SensorBias => {
+                self.sensors.yaw_rate_bias = p[0];
+                self.sensors.ay_bias = p[1];
+            }
+            EffectKind::AccelerometerRoll => self.sensors.roll_gradient = p[0],
+            EffectKind::AccelerometerPosition => self.sensors.accelerometer_x = p[0],
+        }
+    }
+
+    /// `kind`'s parameters as set here (its "off" values when it is off;
+    /// the load-transfer share then takes `nominal_share`).
+    pub fn get(&self, kind: EffectKind, nominal_share: f64) -> Vec<f64> {
+        match kind {
+            EffectKind::RelaxationLength => vec![self.relaxation_length],
+            EffectKind::SteeringCompliance => vec![self.steering_compliance * 1e3],
+            EffectKind::RollSteer => self.roll_steer.to_vec(),
+            EffectKind::RollCamber => self.roll_camber.to_vec(),
+            EffectKind::LoadTransferDistribution => {
+                vec![self.load_transfer_front_share.unwrap_or(nominal_share)]
+            }
+            EffectKind::AeroLoad => self.aero_load.to_vec(),
+            EffectKind::RoadFriction => vec![self.friction_scale.unwrap_or(1.0)],
+            EffectKind::RoadBank => vec![self.road_bank],
+            EffectKind::CorneringStiffness => {
+                self.cornering_stiffness_scale.unwrap_or([1.0; 2]).to_vec()
+            }
+            EffectKind::YawInertia => vec![self.yaw_inertia_scale.unwrap_or(1.0)],
+            EffectKind::SensorDelay => vec![self.sensors.delay],
+            EffectKind::SensorBias => vec![self.sensors.yaw_rate_bias, self.sensors.ay_bias],
+            EffectKind::AccelerometerRoll => vec![self.sensors.roll_gradient],
+            EffectKind::AccelerometerPosition => vec![self.sensors.accelerometer_x],
+        }
+    }
+
+    /// True when any effect needs the roll degree of freedom.
+    pub fn uses_roll(&self) -> bool {
+        self.roll_steer != [0.0; 2] || self.roll_camber != [0.0; 2]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_off_values_are_the_base_model() {
+        for k in EffectKind::ALL {
+            assert_eq!(EffectKind::from_name(k.name()), Some(k));
+            let p = k.parameters();
+            assert!((1..=3).contains(&p.len()), "{}", k.name());
+            for q in p {
+                assert!(q.bounds.0 < q.bounds.1);
+                assert!(q.off.is_nan() || (q.bounds.0..=q.bounds.1).contains(&q.off));
+            }
+            // Setting the off values gives the base model back (the share's
+            // off value is the vehicle's own, tested in the model).
+            if k != EffectKind::LoadTransferDistribution {
+                let mut e = EffectSet::default();
+                let off: Vec<f64> = p.iter().map(|q| q.off).collect();
+                e.set(k, &off);
+                assert_eq!(e.get(k, 0.5), off);
+            }
+        }
+        assert_eq!(EffectKind::from_name("relaxation"), None);
+    }
+}

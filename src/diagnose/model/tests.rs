@@ -1,0 +1,196 @@
+use super::*;
+use crate::manoeuvre::{SineSteer, StepSteer};
+use crate::sim::Integrator;
+use crate::tyre::{Linear, Pac89};
+use crate::vehicle::{ModelOptions, State, Vehicle};
+
+fn pac89_model() -> VehicleModel {
+    let t = Tyre::Pac89(Pac89::adams_example());
+    VehicleModel::new(Vehicle::seed004_sedan(), t.clone(), t)
+}
+
+/// Linear tyres, small-angle kinematics, no load transfer: the textbook
+/// bicycle model, whose steady gains are closed-form.
+fn linear_model() -> VehicleModel {
+    let mut m = VehicleModel::new(
+        Vehicle::seed004_sedan(),
+        Tyre::Linear(Linear::new(55_000.0)),
+        Tyre::Linear(Linear::new(60_000.0)),
+    );
+    m.options = ModelOptions {
+        kinematics: Kinematics::SmallAngle,
+        load_transfer: false,
+        ..ModelOptions::default()
+    };
+    m
+}
+
+fn step(speed: f64, amplitude: f64, end: f64) -> Manoeuvre {
+    Manoeuvre::StepSteer(StepSteer {
+        speed,
+        amplitude,
+        trim: 0.0,
+        start: 0.5,
+        rise_time: 0.1,
+        end,
+    })
+}
+
+fn steady_yaw_rate(model: &Augmented, speed: f64, steer: f64) -> f64 {
+    let drive = Drive::new(&step(speed, steer, 15.0), 0.002);
+    let r = model.simulate(&drive, [0.0; 6]);
+    *r.history.yaw_rate.last().unwrap()
+}
+
+#[test]
+fn with_every_effect_off_it_is_the_base_model() {
+    let base = pac89_model();
+    let m = step(25.0, 0.04, 4.0);
+    let reference = Integrator {
+        step: 1e-3,
+        friction: 0.9,
+    }
+    .run(&base, &m, State::default());
+    let a = Augmented::new(base, 0.9);
+    let r = a.simulate(&Drive::new(&m, 1e-3), [0.0; 6]);
+    assert_eq!(r.history.t.len(), reference.t.len());
+    for i in 0..reference.t.len() {
+        assert!((r.history.yaw_rate[i] - reference.yaw_rate[i]).abs() < 1e-9);
+        assert!((r.history.beta[i] - reference.beta[i]).abs() < 1e-9);
+        assert!((r.history.ay[i] - reference.ay[i]).abs() < 1e-7);
+    }
+}
+
+#[test]
+fn roll_steer_changes_the_understeer_gradient_by_its_closed_form() {
+    // δ = l/R + (K − (ε_f − ε_r)·k)·ay in the steady state.
+    let base = linear_model();
+    let (u, steer) = (20.0, 0.01);
+    let l = base.vehicle.wheelbase();
+    let k_base = base.understeer_gradient();
+    let mut a = Augmented::new(base, 1.0);
+    a.effects.roll_steer = [-0.1, 0.05];
+    let k = k_base - (-0.1 - 0.05) * a.roll.gradient;
+    let expected = steer * u / (l + k * u * u);
+    let got = steady_yaw_rate(&a, u, steer);
+    assert!((got / expected - 1.0).abs() < 1e-6, "{got} {expected}");
+    // Without it, the base gain.
+    a.effects.roll_steer = [0.0; 2];
+    let base_gain = steer * u / (l + k_base * u * u);
+    assert!((steady_yaw_rate(&a, u, steer) / base_gain - 1.0).abs() < 1e-6);
+}
+
+#[test]
+fn compliance_and_stiffness_scale_act_as_a_softer_front_axle() {
+    // Steering compliance c in series with the front axle's stiffness Cf:
+    // Cf' = Cf / (1 + c·Cf); a stiffness scale s: Cf' = s·Cf.
+    let base = linear_model();
+    let (u, steer) = (25.0, 0.01);
+    let (cf, cr) = base.axle_cornering_stiffness();
+    let v = base.vehicle.clone();
+    let gain = |cf: f64| {
+        let k = v.mass / v.wheelbase() * (v.b / cf - v.a / cr);
+        steer * u / (v.wheelbase() + k * u * u)
+    };
+    let mut a = Augmented::new(base, 1.0);
+    a.effects.steering_compliance = 2e-6;
+    let expected = gain(cf / (1.0 + 2e-6 * cf));
+    let got = steady_yaw_rate(&a, u, steer);
+    assert!((got / expected - 1.0).abs() < 1e-6, "{got} {expected}");
+    a.effects.steering_compliance = 0.0;
+    a.effects.cornering_stiffness_scale = Some([0.8, 1.0]);
+    let got = steady_yaw_rate(&a, u, steer);
+    assert!((got / gain(0.8 * cf) - 1.0).abs() < 1e-6);
+    // A lag state with compliance reaches the same steady state.
+    a.effects.cornering_stiffness_scale = None;
+    a.effects.steering_compliance = 2e-6;
+    a.effects.relaxation_length = 0.5;
+    let got = steady_yaw_rate(&a, u, steer);
+    assert!((got / gain(cf / (1.0 + 2e-6 * cf)) - 1.0).abs() < 1e-6);
+}
+
+#[test]
+fn relaxation_length_is_a_first_order_lag_of_the_slip_angles() {
+    // A lag of time constant σ/u slows the response but keeps its steady
+    // state; as σ → 0 the response tends to the base model's.
+    let base = linear_model();
+    let m = step(20.0, 0.02, 6.0);
+    let drive = Drive::new(&m, 1e-3);
+    let mut a = Augmented::new(base, 1.0);
+    let r0 = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+    let mut gaps = Vec::new();
+    for sigma in [0.8, 0.08, 0.008] {
+        a.effects.relaxation_length = sigma;
+        let r = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+        let gap = r
+            .iter()
+            .zip(&r0)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max);
+        assert!((r.last().unwrap() / r0.last().unwrap() - 1.0).abs() < 1e-6);
+        gaps.push(gap);
+    }
+    // The largest difference shrinks in proportion to σ.
+    assert!(
+        gaps[0] > 5.0 * gaps[1] && gaps[1] > 5.0 * gaps[2],
+        "{gaps:?}"
+    );
+    // At 0.5 s + 0.1 s (the end of the steer ramp) a lagging tyre has built
+    // less yaw rate.
+    a.effects.relaxation_length = 0.8;
+    let r = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+    assert!(r[650] < 0.9 * r0[650]);
+}
+
+#[test]
+fn steer_reversal_mirrors_the_response_with_effects_on() {
+    let mut a = Augmented::new(pac89_model(), 1.0);
+    // PAC89's offsets break the mirror; symmetric tyres keep it.
+    let t = Tyre::MagicSimple(crate::tyre::MagicSimple::new(10.0, 1.3));
+    a.base.front = t.clone();
+    a.base.rear = t;
+    a.effects.relaxation_length = 0.6;
+    a.effects.steering_compliance = 3e-6;
+    a.effects.roll_steer = [-0.1, 0.02];
+    a.effects.roll_camber = [-1.0, 0.5];
+    a.effects.aero_load = [1.0, 1.5];
+    a.effects.load_transfer_front_share = Some(0.7);
+    a.effects.sensors.delay = 0.03;
+    a.effects.sensors.accelerometer_x = 0.4;
+    a.effects.sensors.roll_gradient = 0.005;
+    let sine = |amp: f64| {
+        Manoeuvre::Sine(SineSteer {
+            speed: 22.0,
+            amplitude: amp,
+            frequency: 0.7,
+            start: 0.2,
+            end: 4.0,
+        })
+    };
+    let times: Vec<f64> = (0..380).map(|i| 0.2 + 0.01 * i as f64).collect();
+    let obs = |amp: f64| {
+        let d = Drive::new(&sine(amp), 2e-3);
+        a.observe(&a.simulate(&d, [0.0; 6]), &times)
+    };
+    let (p, n) = (obs(0.05), obs(-0.05));
+    for i in 0..times.len() {
+        assert_eq!(p.yaw_rate[i], -n.yaw_rate[i]);
+        assert_eq!(p.ay[i], -n.ay[i]);
+        assert_eq!(p.beta[i], -n.beta[i]);
+        assert_eq!(p.roll[i], -n.roll[i]);
+    }
+    assert!(p.yaw_rate.iter().any(|r| r.abs() > 0.1));
+}
+
+#[test]
+fn roll_follows_lateral_acceleration_and_camber_thrust_adds_force() {
+    let mut a = Augmented::new(linear_model(), 1.0);
+    let drive = Drive::new(&step(20.0, 0.02, 10.0), 1e-3);
+    let r = a.simulate(&drive, [0.0; 6]);
+    let n = r.roll.len() - 1;
+    assert!((r.roll[n] - a.roll.gradient * r.history.ay[n]).abs() < 1e-9);
+    // Rear camber thrust toward the turn adds rear force: less yaw rate.
+    a.effects.roll_camber = [0.0, 2.0];
+    let r2 = a.simulate(&drive, [0.0; 6]);
+    assert!(r2.history.yaw_rate[n] < 0.99 * r.history.yaw_rate[n]);
+}

@@ -639,3 +639,223 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
     assert_eq!(yaw["channel"], "yaw_rate");
     assert_eq!(yaw["significant"], true, "{yaw}");
 }
+
+// ---- diagnose / synth (issue 6) ----
+
+/// Writes a synthetic campaign folder with `effects` into `dir/name`.
+fn synth(dir: &Path, name: &str, effects: &str, seed: &str) -> PathBuf {
+    let out = dir.join(name);
+    let o = run(&[
+        "synth",
+        "--effects",
+        effects,
+        "--seed",
+        seed,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    out
+}
+
+fn read_json(p: &Path) -> serde_json::Value {
+    serde_json::from_str(&fs::read_to_string(p).unwrap()).unwrap()
+}
+
+#[test]
+fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
+    let dir = tempfile::tempdir().unwrap();
+    let campaign = synth(dir.path(), "delay", "sensor_delay", "3");
+    for f in ["vehicle.toml", "tyre_rig.csv", "runs/sweep_080kph.csv"] {
+        assert!(campaign.join(f).is_file(), "{f}");
+    }
+    // synth never overwrites.
+    let again = run(&["synth", "--out", campaign.to_str().unwrap()]);
+    assert!(!again.status.success() && stderr(&again).contains("exists"));
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("verdict: sensor_delay explains the gap"),
+        "{stdout}"
+    );
+    for f in ["diagnosis.json", "gap_map.png", "overlays.png"] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    let d = read_json(&out.join("diagnosis.json"));
+    assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
+    assert_eq!(d["seed"], 3);
+    let top = &d["ranking"][0];
+    assert_eq!(top["effect"], "sensor_delay");
+    // The delay is recovered (truth 0.05 s) and most of the gap goes.
+    let delay = top["parameters"][0]["value"].as_f64().unwrap();
+    assert!((delay - 0.05).abs() < 0.005, "{delay}");
+    assert!(top["reduction_percent"].as_f64().unwrap() > 70.0);
+    for key in ["heldout_error_before", "heldout_error_after", "bic"] {
+        assert!(top[key].is_number(), "{key}");
+    }
+    assert!(d["gap"]["significant"].as_bool().unwrap());
+    assert!(d["confounded"].is_array());
+}
+
+fn campaign_err(dir: &Path) -> String {
+    let o = run(&[
+        "diagnose",
+        dir.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success(), "expected failure");
+    assert!(
+        !dir.join("out").exists(),
+        "a failed run must not leave outputs"
+    );
+    stderr(&o)
+}
+
+/// A run CSV: a 0.02 rad step at 1 s, first-order yaw response, at `rate` Hz
+/// for `seconds`, with `gap` seconds missing after 2 s when given.
+fn run_csv(rate: f64, seconds: f64, with_ay: bool, gap: Option<f64>) -> String {
+    let mut s = String::from(if with_ay {
+        "t,speed,steer,yaw_rate,ay\n"
+    } else {
+        "t,speed,steer,yaw_rate\n"
+    });
+    let n = (seconds * rate) as usize;
+    for i in 0..=n {
+        let mut t = i as f64 / rate;
+        if let Some(g) = gap {
+            if t > 2.0 {
+                t += g;
+            }
+        }
+        let on = t > 1.0;
+        let steer = if on { 0.02 } else { 0.0 };
+        let r = if on {
+            0.2 * (1.0 - (-(t - 1.0) / 0.15).exp())
+        } else {
+            0.0
+        };
+        if with_ay {
+            s += &format!("{t:.4},20,{steer},{r:.6},{:.5}\n", 20.0 * r);
+        } else {
+            s += &format!("{t:.4},20,{steer},{r:.6}\n");
+        }
+    }
+    s
+}
+
+fn campaign_folder(vehicle: &str, runs: &[(&str, String)]) -> tempfile::TempDir {
+    let dir = scratch(&[("vehicle.toml", vehicle)]);
+    fs::create_dir(dir.path().join("runs")).unwrap();
+    for (name, text) in runs {
+        fs::write(dir.path().join("runs").join(name), text).unwrap();
+    }
+    dir
+}
+
+#[test]
+fn diagnose_refuses_bad_campaigns_clearly() {
+    // A vehicle file missing a key.
+    let no_cg = VEHICLE.replace("cg_height = 0.55\n", "");
+    let dir = campaign_folder(&no_cg, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
+    let e = campaign_err(dir.path());
+    assert!(e.contains("vehicle.toml") && e.contains("cg_height"), "{e}");
+    // A run too short for the windows.
+    let dir = campaign_folder(
+        VEHICLE,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("short.csv", run_csv(100.0, 1.0, true, None)),
+        ],
+    );
+    let e = campaign_err(dir.path());
+    assert!(e.contains("short.csv") && e.contains("1.00 s long"), "{e}");
+    // One run: nothing to hold out.
+    let dir = campaign_folder(VEHICLE, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
+    let e = campaign_err(dir.path());
+    assert!(e.contains("held-out scoring needs at least two"), "{e}");
+    // An unknown effect is named with the list of known ones.
+    let v = format!("{VEHICLE}\n[diagnose]\neffects = [\"relaxation\"]\n");
+    let dir = campaign_folder(
+        &v,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("b.csv", run_csv(100.0, 6.0, true, None)),
+        ],
+    );
+    let e = campaign_err(dir.path());
+    assert!(
+        e.contains("unknown effect `relaxation`") && e.contains("relaxation_length"),
+        "{e}"
+    );
+    // A NaN in a run names file, line and column.
+    let mut bad = run_csv(100.0, 6.0, true, None);
+    bad = bad.replacen(
+        "\n0.0500,20,0,0.000000,0.00000\n",
+        "\n0.0500,20,0,NaN,0.00000\n",
+        1,
+    );
+    let dir = campaign_folder(
+        VEHICLE,
+        &[("a.csv", bad), ("b.csv", run_csv(100.0, 6.0, true, None))],
+    );
+    let e = campaign_err(dir.path());
+    assert!(e.contains("a.csv:7:") && e.contains("yaw_rate"), "{e}");
+    // A folder without vehicle.toml.
+    let empty = tempfile::tempdir().unwrap();
+    let e = campaign_err(empty.path());
+    assert!(e.contains("vehicle.toml"), "{e}");
+}
+
+#[test]
+fn diagnose_handles_mixed_rates_gaps_and_missing_channels() {
+    // Linear tyres given, one candidate: the point is the input handling.
+    let v = format!(
+        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+    );
+    let dir = campaign_folder(
+        &v,
+        &[
+            ("a_100hz.csv", run_csv(100.0, 6.0, true, None)),
+            ("b_40hz_no_ay.csv", run_csv(40.0, 6.0, false, None)),
+            ("c_gap.csv", run_csv(100.0, 8.0, true, Some(1.5))),
+        ],
+    );
+    fs::write(
+        dir.path().join("tyre.toml"),
+        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        dir.path().to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("c_gap.csv: time gaps at 2.000–3.510 s"),
+        "{stdout}"
+    );
+    let d = read_json(&out.join("diagnosis.json"));
+    // The gap split c into two pieces: four runs replayed.
+    assert_eq!(d["runs"].as_array().unwrap().len(), 4);
+    // The run without ay is compared on yaw rate only.
+    let b = d["gap"]["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["run"].as_str().unwrap().ends_with("b_40hz_no_ay.csv"))
+        .unwrap();
+    assert_eq!(b["channels"].as_array().unwrap().len(), 1);
+    assert_eq!(b["channels"][0]["channel"], "yaw_rate");
+}

@@ -5,42 +5,12 @@ use handling::identify::data::{group, read_rig, Grouping};
 use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_bytes, write_json};
-use handling::tyre::{Gim, Linear, MagicSimple, Pac89, Tyre, UniTire};
+use handling::tyre::{Pac89, Tyre};
 use std::path::{Path, PathBuf};
 
 /// The start tyre of a model for data whose median load is `fz`.
 fn start(model: &str, fz: f64) -> Result<Tyre> {
-    Ok(match model {
-        "gim" => Tyre::Gim(Gim {
-            reference_load: fz,
-            ..Gim::new(50_000.0, 0.15, 1.0)
-        }),
-        "magic-simple" => Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
-        "unitire" => {
-            let mut u: UniTire =
-                match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml"))? {
-                    Tyre::Unitire(u) => u,
-                    _ => unreachable!("the bundled UniTire file"),
-                };
-            u.rated_load = fz;
-            u.longitudinal = None;
-            u.aligning = None;
-            Tyre::Unitire(u)
-        }
-        // Only the lateral set is fitted: no borrowed Fx or Mz coefficients
-        // go into the written file.
-        "pac89" => Tyre::Pac89(Pac89 {
-            b: None,
-            c: None,
-            ..Pac89::adams_example()
-        }),
-        "linear" => Tyre::Linear(Linear::new(50_000.0)),
-        m => {
-            return Err(anyhow!(
-                "unknown tyre model `{m}`: one of gim, magic-simple, unitire, pac89, linear"
-            ))
-        }
-    })
+    handling::identify::start_tyre(model, fz).map_err(|e| anyhow!(e))
 }
 
 /// Options of `identify`.

@@ -1,5 +1,6 @@
 //! Argument parsing and printing; all work is done by the library.
 
+mod diagnose;
 mod equilibria;
 mod identify;
 mod simulate;
@@ -76,6 +77,31 @@ enum Command {
         #[arg(long, default_value_t = 0.25)]
         bin_deg: f64,
     },
+    /// The sim-to-real gap of a campaign (a TOML file or a folder with
+    /// vehicle.toml, runs/*.csv and optionally tyre_rig.csv): where the base
+    /// model is wrong, which candidate effect explains it, how far the
+    /// held-out gap shrinks; writes diagnosis.json, gap_map.png, overlays.png.
+    Diagnose {
+        /// Campaign file or folder.
+        campaign: PathBuf,
+        /// Output folder (default: out/<campaign name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Virtual proving ground: writes a campaign folder measured on a truth
+    /// model with the given effects on (noise, UniTire tyres; the diagnosis
+    /// fits PAC89 to its rig data).
+    Synth {
+        /// Effects to switch on, comma-separated (`none` for none).
+        #[arg(long, value_delimiter = ',', default_value = "none")]
+        effects: Vec<String>,
+        /// Noise seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Campaign folder to create.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics {
         /// The run file.
@@ -118,6 +144,8 @@ pub fn run() -> ExitCode {
             local: &local,
             alpha_bin_deg: bin_deg,
         }),
+        Command::Diagnose { campaign, out } => diagnose::diagnose(&campaign, out.as_deref()),
+        Command::Synth { effects, seed, out } => diagnose::synth(&effects, seed, &out),
         Command::Metrics {
             run,
             json,

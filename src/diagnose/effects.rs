@@ -216,7 +216,8 @@ impl EffectKind {
 /// Roll degree of freedom used by roll steer and roll camber: a second-order
 /// response of the body roll φ to lateral acceleration,
 /// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields, default)]
 pub struct RollModel {
     /// Steady roll per lateral acceleration k, rad per m/s².
     pub gradient: f64,
@@ -224,6 +225,16 @@ pub struct RollModel {
     pub frequency: f64,
     /// Damping ratio ζ.
     pub damping: f64,
+}
+
+impl RollModel {
+    /// Checks the values for physical sense; the error names the key.
+    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
+        use crate::error::ParamError;
+        ParamError::non_negative("gradient", self.gradient)?;
+        ParamError::positive("frequency", self.frequency)?;
+        ParamError::positive("damping", self.damping)
+    }
 }
 
 impl Default for RollModel {

@@ -1,9 +1,15 @@
 //! The sim-to-real gap (issue 6): where a replayed run and its measurement
 //! disagree ([`gap`]), the library of candidate effects ([`effects`]) and
 //! the augmented model that carries them ([`model`]), the sensor effects
-//! ([`sensors`]).
+//! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis
+//! that ranks the effects on held-out runs ([`diagnosis`]).
 
+pub mod diagnosis;
 pub mod effects;
+pub mod fit;
 pub mod gap;
 pub mod model;
 pub mod sensors;
+pub mod synth;
+
+pub use diagnosis::{diagnose, Diagnosis};

@@ -31,7 +31,7 @@ use super::effects::{EffectSet, RollModel};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::sim::TimeHistory;
 use crate::tyre::{SlipState, Tyre, TyreModel};
-use crate::vehicle::{Kinematics, VehicleModel, MIN_SPEED};
+use crate::vehicle::{Kinematics, LoadTransferSeed, VehicleModel, MIN_SPEED};
 
 /// The state vector: β, r, front and rear lagged slip angle, roll, roll rate.
 pub type AugmentedState = [f64; 6];
@@ -138,15 +138,15 @@ impl Applied<'_> {
         f(fz[0]) + f(fz[1]) + camber_thrust * (fz[0] + fz[1])
     }
 
-    /// Derivatives and the tyres' lateral acceleration; `ay_seed` carries the
-    /// load-transfer solution from one call to the next.
+    /// Derivatives and the tyres' lateral acceleration; `seed` carries the
+    /// load-transfer solutions of this RK stage in earlier steps.
     fn rhs(
         &self,
         x: &AugmentedState,
         steer: f64,
         speed: f64,
         speed_rate: f64,
-        ay_seed: &mut f64,
+        seed: &mut LoadTransferSeed,
     ) -> (AugmentedState, f64) {
         let m = &self.model;
         let v = &m.vehicle;
@@ -210,10 +210,11 @@ impl Applied<'_> {
         };
         // Secant on g(ay) = ay − Y(ay)/m, as the base model's loop.
         let (mut ay, mut out) = if m.options.load_transfer {
-            let mut x1 = *ay_seed;
+            let [s0, s1, s2] = seed.ay;
+            let mut x1 = 3.0 * s0 - 3.0 * s1 + s2;
             let mut o1 = eval(x1);
             let mut g1 = x1 - o1.0;
-            let mut slope = 1.0;
+            let mut slope = seed.slope;
             let mut n = 0;
             while g1.abs() > 1e-9 * (1.0 + x1.abs()) && n < 60 {
                 let x2 = x1 - g1 / slope;
@@ -228,6 +229,7 @@ impl Applied<'_> {
                 (x1, o1, g1) = (x2, o2, g2);
                 n += 1;
             }
+            seed.slope = slope;
             (o1.0, o1)
         } else {
             let o = eval(0.0);
@@ -237,7 +239,7 @@ impl Applied<'_> {
             ay = 0.0;
             out = (0.0, 0.0, 0.0, 1.0);
         }
-        *ay_seed = ay;
+        seed.ay = [ay, seed.ay[0], seed.ay[1]];
         let (_, fyf, fyr, cos) = out;
         let iz = v.yaw_inertia;
         let yaw_acceleration = (v.a * fyf * cos - v.b * fyr) / iz;
@@ -331,7 +333,7 @@ impl Augmented {
             roll: col(),
         };
         let mut x = x0;
-        let mut seeds = [0.0; 4];
+        let mut seeds = [LoadTransferSeed::default(); 4];
         let add = |x: &AugmentedState, k: &AugmentedState, s: f64| {
             let mut y = *x;
             for (yi, ki) in y.iter_mut().zip(k) {

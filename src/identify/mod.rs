@@ -469,3 +469,39 @@ pub fn fit_channel(
 
 #[cfg(test)]
 mod tests;
+
+/// The start tyre of a fit of `model` (gim, magic-simple, unitire, pac89,
+/// linear) to data whose median load is `fz`: the lateral parameters only,
+/// so that no borrowed aligning or longitudinal coefficients are written.
+pub fn start_tyre(model: &str, fz: f64) -> Result<Tyre, String> {
+    use crate::tyre::{Gim, Linear, MagicSimple, Pac89, UniTire};
+    Ok(match model {
+        "gim" => Tyre::Gim(Gim {
+            reference_load: fz,
+            ..Gim::new(50_000.0, 0.15, 1.0)
+        }),
+        "magic-simple" => Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
+        "unitire" => {
+            let mut u: UniTire =
+                match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml")) {
+                    Ok(Tyre::Unitire(u)) => u,
+                    _ => unreachable!("the bundled UniTire file"),
+                };
+            u.rated_load = fz;
+            u.longitudinal = None;
+            u.aligning = None;
+            Tyre::Unitire(u)
+        }
+        "pac89" => Tyre::Pac89(Pac89 {
+            b: None,
+            c: None,
+            ..Pac89::adams_example()
+        }),
+        "linear" => Tyre::Linear(Linear::new(50_000.0)),
+        m => {
+            return Err(format!(
+                "unknown tyre model `{m}`: one of gim, magic-simple, unitire, pac89, linear"
+            ))
+        }
+    })
+}

@@ -1,0 +1,61 @@
+//! Diagnosis speed (issue 6 asks for a campaign of 8 runs diagnosed against
+//! the full library in under 60 s on 2 cores): the synthetic proving-ground
+//! campaign (8 runs, 66 s of data at 100 Hz, a sensor delay withheld, PAC89
+//! fitted to its rig data) against all 14 effects, and the cost of one
+//! replay of its 8 runs, which every fit evaluation pays.
+//!
+//! `RAYON_NUM_THREADS=2 cargo bench --bench diagnose`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use handling::diagnose::diagnose;
+use handling::diagnose::effects::EffectKind;
+use handling::diagnose::fit::Prepared;
+use handling::diagnose::model::Augmented;
+use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+use handling::io::campaign::DiagnoseSettings;
+use handling::report::write_columns;
+use handling::tyre::{Pac89, Tyre};
+use handling::vehicle::VehicleModel;
+use std::time::Duration;
+
+fn diagnosis(c: &mut Criterion) {
+    let spec = SynthSpec {
+        effects: vec![(
+            EffectKind::SensorDelay,
+            truth_values(EffectKind::SensorDelay),
+        )],
+        seed: 1,
+        noise: Noise::default(),
+    };
+    let s = generate(&spec);
+    let dir = tempfile::tempdir().unwrap();
+    let rig = dir.path().join("rig.csv");
+    let [fz, alpha, fy] = s.rig_columns();
+    write_columns(&rig, &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)]).unwrap();
+    let campaign = s.campaign(rig, EffectKind::ALL.to_vec(), DiagnoseSettings::default());
+
+    let runs: Vec<Prepared> = s
+        .runs
+        .iter()
+        .map(|r| Prepared::new(r, 0.01, 25.0))
+        .collect();
+    let t = Tyre::Pac89(Pac89::adams_example());
+    let model = Augmented::new(VehicleModel::new(s.vehicle.clone(), t.clone(), t), 1.0);
+    let mut g = c.benchmark_group("diagnose");
+    g.bench_function("replay_8_runs_66s_pac89", |b| {
+        b.iter(|| {
+            for r in &runs {
+                black_box(r.errors(black_box(&model)));
+            }
+        })
+    });
+    g.sample_size(10);
+    g.measurement_time(Duration::from_secs(200));
+    g.bench_function("campaign_8_runs_full_library", |b| {
+        b.iter(|| diagnose(black_box(&campaign), None).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, diagnosis);
+criterion_main!(benches);

@@ -1,0 +1,336 @@
+//! Fitting model parameters (effect parameters, or axle tyre
+//! characteristics) to measured runs by output error: every evaluation
+//! replays the runs with the augmented model and compares what its sensors
+//! would read with what was measured.
+//!
+//! The residual of channel c at a sample is `(simulated − measured)/s_c`,
+//! with `s_c` the channel's scale (its noise floor, at least 2 % of its RMS
+//! signal, so that a very quiet channel does not drown the others).
+//! Residuals are taken at a fixed rate (default 25 Hz) rather than at every
+//! sample: neighbouring samples of a 100 Hz log say nearly the same thing.
+//! The search is the crate's PSO (the box of each parameter, one particle at
+//! the start point, so the fit is never worse than the model it starts
+//! from), polished by Levenberg–Marquardt; the parameters' standard errors
+//! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
+
+use super::model::{Augmented, Drive};
+use crate::io::MeasuredRun;
+use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
+use crate::optim::pso::Pso;
+use serde::Serialize;
+
+/// A measured channel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Channel {
+    /// Yaw rate, rad/s.
+    YawRate,
+    /// Lateral acceleration (accelerometer), m/s².
+    Ay,
+    /// Sideslip, rad.
+    Beta,
+}
+
+impl Channel {
+    /// All channels.
+    pub const ALL: [Channel; 3] = [Channel::YawRate, Channel::Ay, Channel::Beta];
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Channel::YawRate => "yaw_rate",
+            Channel::Ay => "ay",
+            Channel::Beta => "beta",
+        }
+    }
+    /// Unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Channel::YawRate => "rad/s",
+            Channel::Ay => "m/s²",
+            Channel::Beta => "rad",
+        }
+    }
+    /// Index in per-channel arrays.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+    /// The channel of a run, if measured.
+    pub fn of(self, run: &MeasuredRun) -> Option<&[f64]> {
+        match self {
+            Channel::YawRate => Some(&run.yaw_rate),
+            Channel::Ay => run.ay.as_deref(),
+            Channel::Beta => run.beta.as_deref(),
+        }
+    }
+}
+
+/// A run made ready for repeated replays.
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    /// Name (the file).
+    pub name: String,
+    /// Its inputs on the replay grid.
+    pub drive: Drive,
+    /// Times at which residuals are taken, s.
+    pub times: Vec<f64>,
+    /// Measured channels at those times.
+    pub measured: Vec<(Channel, Vec<f64>)>,
+    /// Initial sideslip (measured, else 0) and yaw rate.
+    pub start: (f64, f64),
+}
+
+impl Prepared {
+    /// Prepares `run` for replays with RK4 step `step` and residuals taken
+    /// at `rate` Hz (at the samples nearest to it).
+    pub fn new(run: &MeasuredRun, step: f64, rate: f64) -> Self {
+        let mut idx = vec![0];
+        for i in 1..run.t.len() {
+            if run.t[i] - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
+                idx.push(i);
+            }
+        }
+        let times: Vec<f64> = idx.iter().map(|&i| run.t[i]).collect();
+        let measured = Channel::ALL
+            .into_iter()
+            .filter_map(|c| c.of(run).map(|v| (c, idx.iter().map(|&i| v[i]).collect())))
+            .collect();
+        Self {
+            name: run.path.display().to_string(),
+            drive: Drive::replay(&run.t, &run.steer, &run.speed, step),
+            times,
+            measured,
+            start: (run.beta.as_ref().map_or(0.0, |b| b[0]), run.yaw_rate[0]),
+        }
+    }
+
+    /// Number of residuals of this run.
+    pub fn count(&self) -> usize {
+        self.measured.iter().map(|(_, v)| v.len()).sum()
+    }
+
+    /// Replays the run with `model` and writes the scaled residuals into
+    /// `out` (length [`Prepared::count`]).
+    pub fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
+        let x0 = model.initial_state(&self.drive, self.start.0, self.start.1);
+        let obs = model.observe(&model.simulate(&self.drive, x0), &self.times);
+        let mut k = 0;
+        for (c, m) in &self.measured {
+            let sim = match c {
+                Channel::YawRate => &obs.yaw_rate,
+                Channel::Ay => &obs.ay,
+                Channel::Beta => &obs.beta,
+            };
+            let s = scales[c.index()];
+            for (y, x) in sim.iter().zip(m) {
+                // A diverged replay is a very bad fit, not a NaN for LM.
+                out[k] = if y.is_finite() { (y - x) / s } else { 1e6 };
+                k += 1;
+            }
+        }
+    }
+
+    /// Sum of squared unscaled residuals and sample count per channel.
+    pub fn errors(&self, model: &Augmented) -> ChannelErrors {
+        let mut r = vec![0.0; self.count()];
+        self.residuals(model, &[1.0; 3], &mut r);
+        let mut e = ChannelErrors::default();
+        let mut k = 0;
+        for (c, v) in &self.measured {
+            for _ in 0..v.len() {
+                e.sum_sq[c.index()] += r[k] * r[k];
+                e.count[c.index()] += 1;
+                k += 1;
+            }
+        }
+        e
+    }
+}
+
+/// Squared residuals and counts per channel, to be pooled over runs.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ChannelErrors {
+    /// Σ e² per channel (units²).
+    pub sum_sq: [f64; 3],
+    /// Samples per channel.
+    pub count: [usize; 3],
+}
+
+impl ChannelErrors {
+    /// Adds another run's errors.
+    pub fn add(&mut self, o: &ChannelErrors) {
+        for c in 0..3 {
+            self.sum_sq[c] += o.sum_sq[c];
+            self.count[c] += o.count[c];
+        }
+    }
+    /// RMS of a channel (None when not measured).
+    pub fn rms(&self, c: Channel) -> Option<f64> {
+        let i = c.index();
+        (self.count[i] > 0).then(|| (self.sum_sq[i] / self.count[i] as f64).sqrt())
+    }
+    /// The combined error `J = sqrt(Σ_c n_c·(rms_c/s_c)² / Σ n_c)`.
+    pub fn combined(&self, scales: &[f64; 3]) -> f64 {
+        let n: usize = self.count.iter().sum();
+        let s: f64 = (0..3)
+            .map(|c| self.sum_sq[c] / (scales[c] * scales[c]))
+            .sum();
+        (s / n.max(1) as f64).sqrt()
+    }
+}
+
+/// Output-error least squares over a set of runs: `build` turns the
+/// parameter vector into the model to replay.
+pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
+    /// The model of a parameter vector.
+    pub build: F,
+    /// The runs.
+    pub runs: Vec<&'a Prepared>,
+    /// Channel scales.
+    pub scales: [f64; 3],
+    /// Parameter bounds: parameters are clamped into them.
+    pub bounds: Vec<(f64, f64)>,
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
+    fn clamp(&self, p: &[f64]) -> Vec<f64> {
+        p.iter()
+            .zip(&self.bounds)
+            .map(|(x, (lo, hi))| x.clamp(*lo, *hi))
+            .collect()
+    }
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
+    fn count(&self) -> usize {
+        self.runs.iter().map(|r| r.count()).sum()
+    }
+    fn residuals(&self, p: &[f64], out: &mut [f64]) {
+        let model = (self.build)(&self.clamp(p));
+        let mut k = 0;
+        for r in &self.runs {
+            let n = r.count();
+            r.residuals(&model, &self.scales, &mut out[k..k + n]);
+            k += n;
+        }
+    }
+}
+
+/// The outcome of a fit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitOutcome {
+    /// Parameters.
+    pub params: Vec<f64>,
+    /// Standard errors (NaN when not identifiable).
+    pub std_errors: Vec<f64>,
+    /// ½·Σ e² of the scaled residuals.
+    pub cost: f64,
+    /// Number of residuals.
+    pub residuals: usize,
+    /// Replays of the whole run set made.
+    pub evaluations: usize,
+}
+
+impl FitOutcome {
+    /// Bayesian information criterion of a Gaussian error model with the
+    /// variance estimated: `N·ln(RSS/N) + k·ln N`.
+    pub fn bic(&self) -> f64 {
+        let n = self.residuals.max(1) as f64;
+        n * (2.0 * self.cost / n).max(1e-300).ln() + self.params.len() as f64 * n.ln()
+    }
+}
+
+/// The local polish of a fit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Polish {
+    /// Levenberg–Marquardt to convergence.
+    LevenbergMarquardt,
+    /// A few damped Gauss–Newton steps: a refit from a nearby optimum (the
+    /// cross-validation folds start from the all-run fit).
+    Steps(usize),
+}
+
+/// Fits `problem` from `start`: PSO over the bounds (when `pso` is given)
+/// then the polish.
+pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: Option<&Pso>,
+    polish: Polish,
+) -> FitOutcome {
+    let mut evaluations = 0;
+    let mut p0 = problem.clamp(start);
+    if let Some(pso) = pso.filter(|_| !start.is_empty()) {
+        let r = pso.minimize_from(|p| problem.cost(p), &problem.bounds, &[p0.clone()]);
+        evaluations += r.evaluations;
+        p0 = r.best;
+    }
+    let (params, cost) = if start.is_empty() {
+        (Vec::new(), problem.cost(&[]))
+    } else {
+        match polish {
+            Polish::LevenbergMarquardt => {
+                let lm = levenberg_marquardt(problem, &p0);
+                evaluations += lm.evaluations;
+                // LM may leave the box, where the residuals are clamped.
+                let p = problem.clamp(&lm.params);
+                let c = problem.cost(&p);
+                let c0 = problem.cost(&p0);
+                if c <= c0 {
+                    (p, c)
+                } else {
+                    (p0, c0)
+                }
+            }
+            Polish::Steps(n) => {
+                let gn = GaussNewton {
+                    lambda0: 1e-4,
+                    q: 0.5,
+                    iterations: n,
+                }
+                .minimize(problem, &p0);
+                evaluations += gn.evaluations;
+                (problem.clamp(&gn.params), gn.cost)
+            }
+        }
+    };
+    let std_errors = match polish {
+        Polish::LevenbergMarquardt => standard_errors(problem, &params, cost),
+        Polish::Steps(_) => vec![f64::NAN; params.len()],
+    };
+    FitOutcome {
+        params,
+        std_errors,
+        cost,
+        residuals: problem.count(),
+        evaluations: evaluations + 1,
+    }
+}
+
+fn standard_errors<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    cost: f64,
+) -> Vec<f64> {
+    let k = p.len();
+    if k == 0 {
+        return Vec::new();
+    }
+    let n = problem.count();
+    let mut r = vec![0.0; n];
+    problem.residuals(p, &mut r);
+    let j = jacobian(problem, p, &r);
+    let s2 = 2.0 * cost / (n.saturating_sub(k)).max(1) as f64;
+    match (j.transpose() * &j).try_inverse() {
+        Some(inv) => (0..k)
+            .map(|i| {
+                let v = s2 * inv[(i, i)];
+                if v.is_finite() && v >= 0.0 {
+                    v.sqrt()
+                } else {
+                    f64::NAN
+                }
+            })
+            .collect(),
+        None => vec![f64::NAN; k],
+    }
+}

@@ -1,0 +1,487 @@
+//! Test campaigns for the sim-to-real diagnosis (issue 6): a vehicle, its
+//! road, optionally its tyres or tyre rig data, and measured runs
+//! (`FORMATS.md`). A campaign is a TOML file, or a folder laid out as
+//!
+//! ```text
+//! vehicle.toml   # [vehicle] (FORMATS.md); optional [road], [roll], [diagnose]
+//! tyre_rig.csv   # optional rig data: the base tyre model is fitted to it
+//! runs/*.csv     # measured runs
+//! ```
+//!
+//! A campaign file has the same tables plus `[tyres]` (`file` or `front` and
+//! `rear` tyre files, or `rig` data with the `model` to fit) and `[runs]`
+//! (`files` and/or a `dir`, and `segment`, s, to cut long logs into
+//! pieces); paths are relative to the file.
+//!
+//! Runs are checked here: time gaps longer than five median sample
+//! intervals split a run (the pieces are replayed separately, with a note);
+//! a run shorter than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] is refused;
+//! different sample rates between runs are fine (each run is compared at its
+//! own sample times). Units: SI, rad.
+
+use super::scenario::{load_tyre, Road};
+use super::toml_file::{param_error, TomlSource};
+use super::{read_run, MeasuredRun};
+use crate::diagnose::effects::{EffectKind, RollModel};
+use crate::error::{InputError, ParamError};
+use crate::tyre::Tyre;
+use crate::vehicle::Vehicle;
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Shortest run a diagnosis accepts, s: a step response needs its
+/// pre-input window, rise and settling.
+pub const MIN_RUN_SECONDS: f64 = 2.0;
+/// Fewest samples a run must have.
+pub const MIN_RUN_SAMPLES: usize = 20;
+
+/// The `[tyres]` table.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TyreSpec {
+    /// One tyre file for all four wheels.
+    pub file: Option<PathBuf>,
+    /// Front tyre file.
+    pub front: Option<PathBuf>,
+    /// Rear tyre file.
+    pub rear: Option<PathBuf>,
+    /// Tyre rig data (CSV, FORMATS.md).
+    pub rig: Option<PathBuf>,
+    /// Model fitted to the rig data (default pac89).
+    pub model: Option<String>,
+}
+
+/// The `[runs]` table.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunSpec {
+    /// Run files.
+    #[serde(default)]
+    pub files: Vec<PathBuf>,
+    /// A folder whose `*.csv` files are runs.
+    pub dir: Option<PathBuf>,
+    /// Cut every run into pieces of this length, s (long logs).
+    pub segment: Option<f64>,
+}
+
+/// The `[diagnose]` table: settings of the diagnosis.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DiagnoseSettings {
+    /// Seed of every random search.
+    pub seed: u64,
+    /// Candidate effects (default: the whole library).
+    pub effects: Option<Vec<String>>,
+    /// RK4 step of the replays, s.
+    pub step: f64,
+    /// Rate at which residuals are sampled for the fits, Hz.
+    pub sample_rate: f64,
+    /// Largest number of effects combined.
+    pub max_effects: usize,
+    /// PSO swarm size and iterations of each effect fit.
+    pub particles: usize,
+    /// PSO iterations.
+    pub iterations: usize,
+}
+
+impl Default for DiagnoseSettings {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            effects: None,
+            step: 0.01,
+            sample_rate: 25.0,
+            max_effects: 3,
+            particles: 10,
+            iterations: 12,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CampaignFile {
+    #[serde(default)]
+    name: Option<String>,
+    vehicle: Vehicle,
+    #[serde(default)]
+    road: Road,
+    #[serde(default)]
+    tyres: Option<TyreSpec>,
+    #[serde(default)]
+    runs: Option<RunSpec>,
+    #[serde(default)]
+    roll: RollModel,
+    #[serde(default)]
+    diagnose: DiagnoseSettings,
+}
+
+/// Where the base model's tyres come from.
+#[derive(Debug, Clone)]
+pub enum BaseTyres {
+    /// Given tyre files (front, rear).
+    Given(Box<Tyre>, Box<Tyre>),
+    /// Rig data and the model to fit to it.
+    Rig {
+        /// The data file.
+        path: PathBuf,
+        /// The model name.
+        model: String,
+    },
+    /// No tyre data: axle characteristics identified from the runs.
+    FromRuns,
+}
+
+/// A loaded and checked campaign.
+#[derive(Debug, Clone)]
+pub struct Campaign {
+    /// Name (the file stem or folder name unless given).
+    pub name: String,
+    /// The campaign file or folder.
+    pub source: PathBuf,
+    /// Every input file read (so outputs never overwrite one).
+    pub inputs: Vec<PathBuf>,
+    /// Mass and geometry.
+    pub vehicle: Vehicle,
+    /// Road friction scale.
+    pub friction: f64,
+    /// The base tyres.
+    pub tyres: BaseTyres,
+    /// The runs (after splitting at gaps and into segments).
+    pub runs: Vec<MeasuredRun>,
+    /// Roll degree of freedom.
+    pub roll: RollModel,
+    /// Diagnosis settings.
+    pub settings: DiagnoseSettings,
+    /// The candidate effects.
+    pub effects: Vec<EffectKind>,
+    /// What was done to the inputs (split runs, …), for the report.
+    pub notes: Vec<String>,
+}
+
+fn file_error(path: &Path, message: String) -> InputError {
+    InputError::File {
+        path: path.to_path_buf(),
+        message,
+    }
+}
+
+/// Loads a campaign from a TOML file or a folder.
+pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
+    let folder = path.is_dir();
+    let file = if folder {
+        path.join("vehicle.toml")
+    } else {
+        path.to_path_buf()
+    };
+    if folder && !file.is_file() {
+        return Err(file_error(
+            path,
+            "a campaign folder needs vehicle.toml (with a [vehicle] table), runs/*.csv and optionally tyre_rig.csv".into(),
+        ));
+    }
+    let src = TomlSource::read(&file)?;
+    let f: CampaignFile = src.parse()?;
+    let base = file.parent().unwrap_or(Path::new(".")).to_path_buf();
+    f.vehicle
+        .validate()
+        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+    ParamError::positive("friction", f.road.friction)
+        .map_err(|e| param_error(&src, Some("road"), e))?;
+    f.roll
+        .validate()
+        .map_err(|e| param_error(&src, Some("roll"), e))?;
+    let s = &f.diagnose;
+    ParamError::in_range(
+        "step",
+        s.step,
+        0.0,
+        0.05,
+        "a replay step must lie in (0, 0.05] s",
+    )
+    .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
+    .map_err(|e| param_error(&src, Some("diagnose"), e))?;
+    let effects = match &s.effects {
+        None => EffectKind::ALL.to_vec(),
+        Some(names) => names
+            .iter()
+            .map(|n| {
+                EffectKind::from_name(n).ok_or_else(|| {
+                    let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
+                    src.value_error(&ParamError::new(
+                        "diagnose.effects",
+                        f64::NAN,
+                        &format!("unknown effect `{n}`: one of {}", all.join(", ")),
+                    ))
+                })
+            })
+            .collect::<Result<_, _>>()?,
+    };
+    let mut inputs = vec![file.clone()];
+    let tyre_spec = f.tyres.clone().unwrap_or_default();
+    let rig_default = base.join("tyre_rig.csv");
+    let tyres =
+        match (
+            &tyre_spec.file,
+            &tyre_spec.front,
+            &tyre_spec.rear,
+            &tyre_spec.rig,
+        ) {
+            (Some(t), None, None, None) => {
+                let t = load_tyre(&base.join(t))?;
+                BaseTyres::Given(Box::new(t.clone()), Box::new(t))
+            }
+            (None, Some(fr), Some(re), None) => BaseTyres::Given(
+                Box::new(load_tyre(&base.join(fr))?),
+                Box::new(load_tyre(&base.join(re))?),
+            ),
+            (None, None, None, Some(rig)) => BaseTyres::Rig {
+                path: base.join(rig),
+                model: tyre_spec.model.clone().unwrap_or_else(|| "pac89".into()),
+            },
+            (None, None, None, None) if folder && rig_default.is_file() => BaseTyres::Rig {
+                path: rig_default,
+                model: tyre_spec.model.clone().unwrap_or_else(|| "pac89".into()),
+            },
+            (None, None, None, None) => BaseTyres::FromRuns,
+            _ => return Err(src.value_error(&ParamError::new(
+                "tyres",
+                f64::NAN,
+                "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
+            ))),
+        };
+    match &tyres {
+        BaseTyres::Rig { path, model } => {
+            crate::identify::start_tyre(model, 1.0)
+                .map_err(|m| src.value_error(&ParamError::new("tyres.model", f64::NAN, &m)))?;
+            inputs.push(path.clone());
+        }
+        BaseTyres::Given(..) => {
+            for p in [&tyre_spec.file, &tyre_spec.front, &tyre_spec.rear]
+                .into_iter()
+                .flatten()
+            {
+                inputs.push(base.join(p));
+            }
+        }
+        BaseTyres::FromRuns => {}
+    }
+    let run_spec = f.runs.clone().unwrap_or_default();
+    let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| base.join(p)).collect();
+    let dir = run_spec
+        .dir
+        .as_ref()
+        .map(|d| base.join(d))
+        .or_else(|| (folder && files.is_empty()).then(|| path.join("runs")));
+    if let Some(d) = dir {
+        let entries = std::fs::read_dir(&d).map_err(|source| InputError::Io {
+            path: d.clone(),
+            source,
+        })?;
+        let mut found: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "csv"))
+            .collect();
+        found.sort();
+        files.extend(found);
+    }
+    if files.is_empty() {
+        return Err(file_error(
+            &file,
+            "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)".into(),
+        ));
+    }
+    if let Some(seg) = run_spec.segment {
+        ParamError::in_range(
+            "segment",
+            seg,
+            MIN_RUN_SECONDS,
+            f64::INFINITY,
+            &format!("a segment must be longer than {MIN_RUN_SECONDS} s"),
+        )
+        .map_err(|e| param_error(&src, Some("runs"), e))?;
+    }
+    let mut runs = Vec::new();
+    let mut notes = Vec::new();
+    for p in &files {
+        let run = read_run(p)?;
+        check_length(&run, &run.path.display().to_string())?;
+        inputs.push(p.clone());
+        for piece in split_at_gaps(run, &mut notes) {
+            match run_spec.segment {
+                Some(seg) => runs.extend(segments(piece, seg)),
+                None => runs.push(piece),
+            }
+        }
+    }
+    if runs.len() < 2 {
+        return Err(file_error(
+            &file,
+            format!(
+                "{} run(s) after checking: held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
+                runs.len()
+            ),
+        ));
+    }
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Campaign {
+        name,
+        source: path.to_path_buf(),
+        inputs,
+        vehicle: f.vehicle,
+        friction: f.road.friction,
+        tyres,
+        runs,
+        roll: f.roll,
+        settings: f.diagnose,
+        effects,
+        notes,
+    })
+}
+
+fn check_length(run: &MeasuredRun, name: &str) -> Result<(), InputError> {
+    let n = run.t.len();
+    let span = run.t[n - 1] - run.t[0];
+    if span < MIN_RUN_SECONDS || n < MIN_RUN_SAMPLES {
+        return Err(file_error(
+            &run.path,
+            format!(
+                "{name} is {span:.2} s long with {n} samples: a run needs at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples to show a response"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The rows `lo..hi` of a run.
+fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: String) -> MeasuredRun {
+    let cut = |v: &Vec<f64>| v[lo..hi].to_vec();
+    let mut path = run.path.clone().into_os_string();
+    path.push(label);
+    MeasuredRun {
+        path: PathBuf::from(path),
+        t: cut(&run.t),
+        speed: cut(&run.speed),
+        steer: cut(&run.steer),
+        yaw_rate: cut(&run.yaw_rate),
+        ay: run.ay.as_ref().map(cut),
+        beta: run.beta.as_ref().map(cut),
+        roll: run.roll.as_ref().map(cut),
+        ax: run.ax.as_ref().map(cut),
+    }
+}
+
+/// Splits a run where the time between samples exceeds five median
+/// intervals: a replay cannot bridge a logging dropout. Pieces too short to
+/// diagnose are dropped; both are noted.
+pub fn split_at_gaps(run: MeasuredRun, notes: &mut Vec<String>) -> Vec<MeasuredRun> {
+    let mut dt: Vec<f64> = run.t.windows(2).map(|w| w[1] - w[0]).collect();
+    dt.sort_by(f64::total_cmp);
+    let median = dt[dt.len() / 2];
+    let cuts: Vec<usize> = (1..run.t.len())
+        .filter(|&i| run.t[i] - run.t[i - 1] > 5.0 * median)
+        .collect();
+    if cuts.is_empty() {
+        return vec![run];
+    }
+    let mut bounds = vec![0];
+    bounds.extend(&cuts);
+    bounds.push(run.t.len());
+    let mut out = Vec::new();
+    for (k, w) in bounds.windows(2).enumerate() {
+        let piece = slice(&run, w[0], w[1], format!("#{}", k + 1));
+        let span = piece.t[piece.t.len() - 1] - piece.t[0];
+        if span >= MIN_RUN_SECONDS && piece.t.len() >= MIN_RUN_SAMPLES {
+            out.push(piece);
+        } else {
+            notes.push(format!(
+                "{}: piece {} ({:.2} s, {} samples) between time gaps is too short and was left out",
+                run.path.display(),
+                k + 1,
+                span,
+                piece.t.len()
+            ));
+        }
+    }
+    let gaps: Vec<String> = cuts
+        .iter()
+        .map(|&i| format!("{:.3}–{:.3} s", run.t[i - 1], run.t[i]))
+        .collect();
+    notes.push(format!(
+        "{}: time gaps at {} (median interval {:.4} s): split into {} pieces replayed separately",
+        run.path.display(),
+        gaps.join(", "),
+        median,
+        out.len()
+    ));
+    out
+}
+
+/// Cuts a run into pieces of `length` seconds (the last one joins its
+/// predecessor when shorter than half a piece).
+fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
+    let t0 = run.t[0];
+    let total = run.t[run.t.len() - 1] - t0;
+    let count = ((total / length).round() as usize).max(1);
+    let mut out = Vec::new();
+    let mut lo = 0;
+    for k in 0..count {
+        let end = if k + 1 == count {
+            run.t.len()
+        } else {
+            run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
+        };
+        if end > lo + 1 {
+            out.push(slice(&run, lo, end, format!("[{}]", k + 1)));
+        }
+        lo = end;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(t: Vec<f64>) -> MeasuredRun {
+        let n = t.len();
+        MeasuredRun {
+            path: PathBuf::from("r.csv"),
+            speed: vec![20.0; n],
+            steer: vec![0.0; n],
+            yaw_rate: vec![0.0; n],
+            ay: None,
+            beta: None,
+            roll: None,
+            ax: None,
+            t,
+        }
+    }
+
+    #[test]
+    fn a_time_gap_splits_a_run_and_short_pieces_are_noted() {
+        let mut t: Vec<f64> = (0..500).map(|i| i as f64 * 0.01).collect();
+        t.extend((0..300).map(|i| 10.0 + i as f64 * 0.01));
+        t.extend((0..10).map(|i| 20.0 + i as f64 * 0.01));
+        let mut notes = Vec::new();
+        let pieces = split_at_gaps(run(t), &mut notes);
+        assert_eq!(pieces.len(), 2);
+        assert_eq!(pieces[0].t.len(), 500);
+        assert_eq!(pieces[1].t[0], 10.0);
+        assert_eq!(notes.len(), 2, "{notes:?}");
+        assert!(notes[0].contains("too short"));
+        assert!(notes[1].contains("4.990–10.000 s"));
+    }
+
+    #[test]
+    fn segments_cover_the_run() {
+        let t: Vec<f64> = (0..4600).map(|i| i as f64 * 0.1).collect();
+        let s = segments(run(t), 30.0);
+        assert_eq!(s.len(), 15);
+        assert_eq!(s.iter().map(|r| r.t.len()).sum::<usize>(), 4600);
+        assert!(s[0].path.to_string_lossy().ends_with("[1]"));
+    }
+}

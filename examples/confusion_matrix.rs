@@ -34,8 +34,8 @@ fn main() -> anyhow::Result<()> {
         truths = vec![chosen];
     }
     let dir = tempfile::tempdir()?;
-    println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | s |");
-    println!("|---|---|---|---|---|---|---|");
+    println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s |");
+    println!("|---|---|---|---|---|---|---|---|");
     for truth in &truths {
         for seed in 1..=seeds {
             let spec = SynthSpec {
@@ -68,8 +68,21 @@ fn main() -> anyhow::Result<()> {
                     .iter()
                     .find(|r| r.effects == d.verdict.effects))
                 .map_or(d.gap.heldout_error, |r| r.heldout_error_after);
+            let truth_params: Vec<f64> = spec.effects.iter().flat_map(|(_, p)| p.clone()).collect();
+            let fitted: Vec<String> = d
+                .verdict
+                .parameters
+                .iter()
+                .map(|p| {
+                    format!(
+                        "{} {:.3}",
+                        p.name.split('.').next_back().unwrap_or(""),
+                        p.value
+                    )
+                })
+                .collect();
             println!(
-                "| {} | {seed} | {} | {} | {:.2} → {:.2} ({:.2}) | {:.0} | {:.1} |",
+                "| {} | {seed} | {} | {} | {:.2} → {:.2} ({:.2}) | {:.0} | {} ({:?}) | {:.1} |",
                 s.name(),
                 if d.verdict.effects.is_empty() {
                     "—".into()
@@ -85,6 +98,8 @@ fn main() -> anyhow::Result<()> {
                     .chain(&d.combinations)
                     .find(|r| r.effects == d.verdict.effects)
                     .map_or(0.0, |r| r.reduction_percent),
+                fitted.join(", "),
+                truth_params,
                 t0.elapsed().as_secs_f64()
             );
             for r in d.ranking.iter().take(4) {

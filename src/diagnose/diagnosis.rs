@@ -272,12 +272,48 @@ struct Bases {
     all: Augmented,
     folds: Vec<Augmented>,
     nominal_share: f64,
+    /// Axle characteristics identified from the runs (all runs, per fold):
+    /// refitted jointly with every candidate, since an effect changes what
+    /// the tyres must have been.
+    axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
 }
 
-fn with_effects(base: &Augmented, fixed: &EffectSet, kinds: &[EffectKind], p: &[f64]) -> Augmented {
+/// Bounds of the axle characteristics fitted from runs: B front, B rear
+/// (1/rad), peak friction D.
+const AXLE_BOUNDS: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+
+/// The simplified Magic Formula axle tyres of parameters (B_f, B_r, D).
+fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
+    (
+        Tyre::MagicSimple(MagicSimple {
+            b: p[0],
+            c: 1.3,
+            d: p[2],
+        }),
+        Tyre::MagicSimple(MagicSimple {
+            b: p[1],
+            c: 1.3,
+            d: p[2],
+        }),
+    )
+}
+
+/// The model of a candidate's parameter vector: the axle characteristics
+/// first when they are fitted (`axle`), then each effect's parameters.
+fn with_effects(
+    base: &Augmented,
+    fixed: &EffectSet,
+    kinds: &[EffectKind],
+    axle: bool,
+    p: &[f64],
+) -> Augmented {
     let mut m = base.clone();
     m.effects = *fixed;
     let mut k = 0;
+    if axle {
+        (m.base.front, m.base.rear) = axle_tyres(&p[..3]);
+        k = 3;
+    }
     for e in kinds {
         let n = e.parameters().len();
         m.effects.set(*e, &p[k..k + n]);
@@ -287,16 +323,25 @@ fn with_effects(base: &Augmented, fixed: &EffectSet, kinds: &[EffectKind], p: &[
 }
 
 impl Setting<'_> {
+    fn axle(&self) -> bool {
+        self.base.axle.is_some()
+    }
     fn bounds(&self) -> Vec<(f64, f64)> {
-        self.kinds
-            .iter()
-            .flat_map(|e| e.parameters().iter().map(|q| q.bounds))
+        let axle = if self.axle() { &AXLE_BOUNDS[..] } else { &[] };
+        axle.iter()
+            .copied()
+            .chain(
+                self.kinds
+                    .iter()
+                    .flat_map(|e| e.parameters().iter().map(|q| q.bounds)),
+            )
             .collect()
     }
     fn off(&self) -> Vec<f64> {
-        self.kinds
-            .iter()
-            .flat_map(|e| {
+        let axle = self.base.axle.as_ref().map_or(&[][..], |a| &a.0[..]);
+        axle.iter()
+            .copied()
+            .chain(self.kinds.iter().flat_map(|e| {
                 e.parameters().iter().map(|q| {
                     if q.off.is_nan() {
                         self.base.nominal_share
@@ -304,7 +349,7 @@ impl Setting<'_> {
                         q.off
                     }
                 })
-            })
+            }))
             .collect()
     }
 }
@@ -357,7 +402,7 @@ impl Context<'_> {
             fixed,
         };
         let problem = Problem {
-            build: |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, p),
+            build: |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
             runs: self.runs.iter().collect(),
             scales: self.scales,
             bounds: s.bounds(),
@@ -375,13 +420,13 @@ impl Context<'_> {
             .map(|k| {
                 let base = &self.bases.folds[k];
                 let problem = Problem {
-                    build: |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, p),
+                    build: |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
                     runs: self.training(k),
                     scales: self.scales,
                     bounds: s.bounds(),
                 };
                 let f = fit(&problem, &full.params, None, Polish::Steps(FOLD_STEPS));
-                let model = with_effects(base, &s.fixed, &s.kinds, &f.params);
+                let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {
                     e.add(&self.runs[i].errors(&model));
@@ -407,15 +452,18 @@ impl Context<'_> {
         let mut out = vec![Observed::default(); self.runs.len()];
         for (k, fold) in self.folds.iter().enumerate() {
             let model = match sc {
-                Some(sc) => {
-                    with_effects(&self.bases.folds[k], fixed, &sc.kinds, &sc.fold_params[k])
-                }
+                Some(sc) => with_effects(
+                    &self.bases.folds[k],
+                    fixed,
+                    &sc.kinds,
+                    self.bases.axle.is_some(),
+                    &sc.fold_params[k],
+                ),
                 None => self.bases.folds[k].clone(),
             };
             for &i in fold {
                 let r = &self.runs[i];
-                let x0 = model.initial_state(&r.drive, r.start.0, r.start.1);
-                out[i] = model.observe(&model.simulate(&r.drive, x0), &r.times);
+                out[i] = r.observe(&model);
             }
         }
         out
@@ -474,6 +522,7 @@ fn base_models(
                     folds: vec![m.clone(); folds.len()],
                     all: m,
                     nominal_share,
+                    axle: None,
                 },
                 "given tyre files".into(),
             ))
@@ -501,6 +550,7 @@ fn base_models(
                     folds: vec![m.clone(); folds.len()],
                     all: m,
                     nominal_share,
+                    axle: None,
                 },
                 format!(
                     "{} fitted to the rig data {} (σ {:.2} % of the force)",
@@ -513,31 +563,15 @@ fn base_models(
         BaseTyres::FromRuns => {
             // Axle characteristics from the runs: B per axle and a shared
             // peak friction D of a simplified Magic Formula (C = 1.3).
-            let tyres = |p: &[f64]| {
-                (
-                    Tyre::MagicSimple(MagicSimple {
-                        b: p[0],
-                        c: 1.3,
-                        d: p[2],
-                    }),
-                    Tyre::MagicSimple(MagicSimple {
-                        b: p[1],
-                        c: 1.3,
-                        d: p[2],
-                    }),
-                )
-            };
             let build = |p: &[f64]| {
-                let (f, r) = tyres(p);
+                let (f, r) = axle_tyres(p);
                 make(f, r)
             };
-            let bounds = vec![(2.0, 40.0), (2.0, 40.0), (0.3, 3.5)];
-            let all_runs: Vec<&Prepared> = runs.iter().collect();
             let problem = Problem {
                 build,
-                runs: all_runs,
+                runs: runs.iter().collect(),
                 scales: scales_hint,
-                bounds: bounds.clone(),
+                bounds: AXLE_BOUNDS.to_vec(),
             };
             let full = fit(
                 &problem,
@@ -545,7 +579,7 @@ fn base_models(
                 Some(pso),
                 Polish::LevenbergMarquardt,
             );
-            let fold_models: Vec<Augmented> = (0..folds.len())
+            let fold_params: Vec<Vec<f64>> = (0..folds.len())
                 .into_par_iter()
                 .map(|k| {
                     let train: Vec<&Prepared> = (0..runs.len())
@@ -556,20 +590,21 @@ fn base_models(
                         build,
                         runs: train,
                         scales: scales_hint,
-                        bounds: bounds.clone(),
+                        bounds: AXLE_BOUNDS.to_vec(),
                     };
-                    build(&fit(&p, &full.params, None, Polish::Steps(FOLD_STEPS)).params)
+                    fit(&p, &full.params, None, Polish::Steps(FOLD_STEPS)).params
                 })
                 .collect();
             let p = &full.params;
             Ok((
                 Bases {
                     all: build(p),
-                    folds: fold_models,
+                    folds: fold_params.iter().map(|q| build(q)).collect(),
                     nominal_share,
+                    axle: Some((p.clone(), fold_params)),
                 },
                 format!(
-                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3): B front {:.2} ± {:.2}, B rear {:.2} ± {:.2} 1/rad, D {:.3} ± {:.3}",
+                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): B front {:.2} ± {:.2}, B rear {:.2} ± {:.2} 1/rad, D {:.3} ± {:.3}",
                     p[0], full.std_errors[0], p[1], full.std_errors[1], p[2], full.std_errors[2]
                 ),
             ))
@@ -577,9 +612,11 @@ fn base_models(
     }
 }
 
-fn parameter_values(kinds: &[EffectKind], f: &FitOutcome) -> Vec<ParameterValue> {
+/// The effect parameters of a fit whose first `skip` parameters are the
+/// axle characteristics.
+fn parameter_values(kinds: &[EffectKind], f: &FitOutcome, skip: usize) -> Vec<ParameterValue> {
     let mut out = Vec::new();
-    let mut k = 0;
+    let mut k = skip;
     for e in kinds {
         for q in e.parameters() {
             out.push(ParameterValue {
@@ -717,13 +754,14 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         .enumerate()
         .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), None, i as u64 + 1))
         .collect();
+    let axle_count = if bases.axle.is_some() { 3 } else { 0 };
     let rank = |sc: &Scored| -> Ranked {
         let j = sc.heldout.combined(&scales);
         let names: Vec<String> = sc.kinds.iter().map(|e| e.name().to_string()).collect();
         Ranked {
             effect: names.join("+"),
             effects: names,
-            parameters: parameter_values(&sc.kinds, &sc.full),
+            parameters: parameter_values(&sc.kinds, &sc.full, axle_count),
             heldout_error_before: j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),
@@ -806,7 +844,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
                         kinds.push(*e);
                         let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
                         let mut start = cur.full.params.clone();
-                        start.extend(&single.full.params);
+                        start.extend(&single.full.params[axle_count..]);
                         ctx.score(kinds, EffectSet::default(), Some(start), 1000 + i as u64)
                     })
                     .collect();

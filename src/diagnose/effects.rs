@@ -38,7 +38,8 @@ pub enum EffectKind {
     YawInertia,
     /// All measured channels reported late.
     SensorDelay,
-    /// Constant offsets of the yaw-rate and lateral-acceleration sensors.
+    /// Constant offsets of the yaw-rate, lateral-acceleration and sideslip
+    /// sensors.
     SensorBias,
     /// A body-fixed accelerometer that rolls with the body and feels g·sin φ.
     AccelerometerRoll,
@@ -139,9 +140,10 @@ impl EffectKind {
         ];
         const INERTIA: [Parameter; 1] = [par("scale", "-", 1.0, 0.4, 2.5)];
         const DELAY: [Parameter; 1] = [par("delay", "s", 0.0, 0.0, 0.3)];
-        const BIAS: [Parameter; 2] = [
+        const BIAS: [Parameter; 3] = [
             par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
             par("ay", "m/s^2", 0.0, -1.0, 1.0),
+            par("beta", "rad", 0.0, -0.05, 0.05),
         ];
         const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s^2)", 0.0, -0.03, 0.03)];
         const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
@@ -294,6 +296,7 @@ impl EffectSet {
             EffectKind::SensorBias => {
                 self.sensors.yaw_rate_bias = p[0];
                 self.sensors.ay_bias = p[1];
+                self.sensors.beta_bias = p[2];
             }
             EffectKind::AccelerometerRoll => self.sensors.roll_gradient = p[0],
             EffectKind::AccelerometerPosition => self.sensors.accelerometer_x = p[0],
@@ -319,7 +322,11 @@ impl EffectSet {
             }
             EffectKind::YawInertia => vec![self.yaw_inertia_scale.unwrap_or(1.0)],
             EffectKind::SensorDelay => vec![self.sensors.delay],
-            EffectKind::SensorBias => vec![self.sensors.yaw_rate_bias, self.sensors.ay_bias],
+            EffectKind::SensorBias => vec![
+                self.sensors.yaw_rate_bias,
+                self.sensors.ay_bias,
+                self.sensors.beta_bias,
+            ],
             EffectKind::AccelerometerRoll => vec![self.sensors.roll_gradient],
             EffectKind::AccelerometerPosition => vec![self.sensors.accelerometer_x],
         }

@@ -13,7 +13,7 @@
 //! from), polished by Levenberg–Marquardt; the parameters' standard errors
 //! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
 
-use super::model::{Augmented, Drive};
+use super::model::{Augmented, Drive, Observed};
 use crate::io::MeasuredRun;
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::pso::Pso;
@@ -108,11 +108,23 @@ impl Prepared {
         self.measured.iter().map(|(_, v)| v.len()).sum()
     }
 
+    /// Replays the run with `model` from its first measured state (less the
+    /// model's sensor offsets) and returns what the sensors would read at
+    /// the residual times.
+    pub fn observe(&self, model: &Augmented) -> Observed {
+        let sensors = &model.effects.sensors;
+        let x0 = model.initial_state(
+            &self.drive,
+            self.start.0 - sensors.beta_bias,
+            self.start.1 - sensors.yaw_rate_bias,
+        );
+        model.observe(&model.simulate(&self.drive, x0), &self.times)
+    }
+
     /// Replays the run with `model` and writes the scaled residuals into
     /// `out` (length [`Prepared::count`]).
     pub fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
-        let x0 = model.initial_state(&self.drive, self.start.0, self.start.1);
-        let obs = model.observe(&model.simulate(&self.drive, x0), &self.times);
+        let obs = self.observe(model);
         let mut k = 0;
         for (c, m) in &self.measured {
             let sim = match c {

@@ -2,7 +2,8 @@
 //! issue 6's candidates. All zero is an ideal measurement.
 //!
 //! - `delay` (s): every channel reports its value `delay` seconds late;
-//! - `yaw_rate_bias` (rad/s), `ay_bias` (m/s²): constant offsets;
+//! - `yaw_rate_bias` (rad/s), `ay_bias` (m/s²), `beta_bias` (rad): constant
+//!   offsets (a sideslip sensor's misalignment is one);
 //! - `accelerometer_x` (m, positive ahead of the centre of gravity): the
 //!   accelerometer also feels the yaw acceleration, `ay + x·ṙ`;
 //! - `roll_gradient` (rad per m/s²): the body rolls by φ = k·ay (ISO 8855:
@@ -27,6 +28,8 @@ pub struct Sensors {
     pub yaw_rate_bias: f64,
     /// Lateral-acceleration offset, m/s².
     pub ay_bias: f64,
+    /// Sideslip offset, rad.
+    pub beta_bias: f64,
     /// Accelerometer position ahead of the centre of gravity, m.
     pub accelerometer_x: f64,
     /// Body roll per unit lateral acceleration, rad per m/s².
@@ -78,7 +81,12 @@ impl Sensors {
             steer: h.steer.clone(),
             yaw_rate: late(&yaw_seen),
             ay: Some(late(&ay_seen)),
-            beta: Some(late(&h.beta)),
+            beta: Some(if self.beta_bias == 0.0 {
+                late(&h.beta)
+            } else {
+                let b: Vec<f64> = h.beta.iter().map(|b| b + self.beta_bias).collect();
+                late(&b)
+            }),
             roll: None,
             ax: None,
         }
@@ -126,9 +134,11 @@ mod tests {
         let biased = Sensors {
             yaw_rate_bias: 0.01,
             ay_bias: -0.2,
+            beta_bias: 0.003,
             ..Default::default()
         }
         .measure(&h);
+        assert!((biased.beta.as_ref().unwrap()[i] - h.beta[i] - 0.003).abs() < 1e-15);
         assert!((biased.yaw_rate[i] - h.yaw_rate[i] - 0.01).abs() < 1e-15);
         assert!((biased.ay.unwrap()[i] - h.ay[i] + 0.2).abs() < 1e-12);
         let ahead = Sensors {

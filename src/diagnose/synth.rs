@@ -75,7 +75,7 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
         EffectKind::CorneringStiffness => vec![0.8, 1.0],
         EffectKind::YawInertia => vec![1.3],
         EffectKind::SensorDelay => vec![0.05],
-        EffectKind::SensorBias => vec![0.008, 0.2],
+        EffectKind::SensorBias => vec![0.008, 0.2, 0.004],
         EffectKind::AccelerometerRoll => vec![RollModel::default().gradient],
         EffectKind::AccelerometerPosition => vec![0.8],
     }

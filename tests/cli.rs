@@ -39,10 +39,12 @@ fn scenario(vehicle: &str, tyre: &str, manoeuvre: &str) -> tempfile::TempDir {
     scratch(&[("scenario.toml", &sc), ("tyre.toml", tyre)])
 }
 
-fn simulate_err(dir: &Path) -> String {
+/// Runs `command input --out dir/out`, expects it to fail without leaving
+/// outputs, and returns its stderr.
+fn fails_cleanly(command: &str, input: &Path, dir: &Path) -> String {
     let o = run(&[
-        "simulate",
-        dir.join("scenario.toml").to_str().unwrap(),
+        command,
+        input.to_str().unwrap(),
         "--out",
         dir.join("out").to_str().unwrap(),
     ]);
@@ -52,6 +54,10 @@ fn simulate_err(dir: &Path) -> String {
         "a failed run must not leave outputs"
     );
     stderr(&o)
+}
+
+fn simulate_err(dir: &Path) -> String {
+    fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }
 
 #[test]
@@ -705,18 +711,7 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
 }
 
 fn campaign_err(dir: &Path) -> String {
-    let o = run(&[
-        "diagnose",
-        dir.to_str().unwrap(),
-        "--out",
-        dir.join("out").to_str().unwrap(),
-    ]);
-    assert!(!o.status.success(), "expected failure");
-    assert!(
-        !dir.join("out").exists(),
-        "a failed run must not leave outputs"
-    );
-    stderr(&o)
+    fails_cleanly("diagnose", dir, dir)
 }
 
 /// A run CSV: a 0.02 rad step at 1 s, first-order yaw response, at `rate` Hz

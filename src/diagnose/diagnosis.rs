@@ -31,7 +31,7 @@
 
 use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, Channel, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
-use super::gap::{channel_gap, ChannelGap, PartGap, Record};
+use super::gap::{channel_gap, regime_acceleration, run_gap, ChannelGap, PartGap, Record};
 use super::model::{Augmented, Observed};
 use crate::identify::data::{group, read_rig, Grouping};
 use crate::identify::{fit_lateral, start_tyre, FitSettings};
@@ -514,19 +514,18 @@ fn base_models(
         roll: c.roll,
         ..Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction)
     };
+    // Tyres not fitted to the runs: one model for all runs and every fold.
+    let fixed = |m: Augmented| Bases {
+        folds: vec![m.clone(); folds.len()],
+        all: m,
+        nominal_share,
+        axle: None,
+    };
     match &c.tyres {
-        BaseTyres::Given(f, r) => {
-            let m = make((**f).clone(), (**r).clone());
-            Ok((
-                Bases {
-                    folds: vec![m.clone(); folds.len()],
-                    all: m,
-                    nominal_share,
-                    axle: None,
-                },
-                "given tyre files".into(),
-            ))
-        }
+        BaseTyres::Given(f, r) => Ok((
+            fixed(make((**f).clone(), (**r).clone())),
+            "given tyre files".into(),
+        )),
         BaseTyres::Rig { path, model } => {
             let data = read_rig(path).map_err(|e| e.to_string())?;
             let conditions = group(&data, &Grouping::default());
@@ -544,14 +543,8 @@ fn base_models(
             settings.pso.iterations = 150;
             let f = fit_lateral(&t0, &conditions, &settings)
                 .map_err(|e| format!("{}: {e}", path.display()))?;
-            let m = make(f.tyre.clone(), f.tyre.clone());
             Ok((
-                Bases {
-                    folds: vec![m.clone(); folds.len()],
-                    all: m,
-                    nominal_share,
-                    axle: None,
-                },
+                fixed(make(f.tyre.clone(), f.tyre.clone())),
                 format!(
                     "{} fitted to the rig data {} (σ {:.2} % of the force)",
                     model,
@@ -994,39 +987,21 @@ pub fn observed_channel(o: &Observed, c: Channel) -> &[f64] {
     }
 }
 
-/// The base model's gap on one run, at the run's own samples.
+/// The base model's gap on one run, at the run's own samples (the base
+/// model has no sensor effects: its history is what the sensors read).
 fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let x0 = base.initial_state(&p.drive, p.start.0, p.start.1);
-    let response = base.simulate(&p.drive, x0);
-    let obs = base.observe(&response, &run.t);
-    let ay_regime: Vec<f64> = match &run.ay {
-        Some(ay) => ay.clone(),
-        None => run
-            .yaw_rate
-            .iter()
-            .zip(&run.speed)
-            .map(|(r, u)| r * u)
-            .collect(),
-    };
-    let rec = Record {
-        t: &run.t,
-        steer: &run.steer,
-        ay: &ay_regime,
-        speed: &run.speed,
-    };
-    let channels: Vec<ChannelGap> = Channel::ALL
-        .into_iter()
-        .filter_map(|c| {
-            c.of(run)
-                .map(|m| channel_gap(c.name(), c.unit(), &rec, m, observed_channel(&obs, c)))
-        })
+    let history = base.simulate(&p.drive, x0).history;
+    let yaw_rate: Vec<f64> = run
+        .t
+        .iter()
+        .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
         .collect();
-    let bands = super::gap::band_gaps(&run.t, &run.steer, &run.yaw_rate, &obs.yaw_rate);
     RunGap {
         run: run.path.display().to_string(),
-        channels,
-        bands,
+        channels: run_gap(run, &history),
+        bands: super::gap::band_gaps(&run.t, &run.steer, &run.yaw_rate, &yaw_rate),
     }
 }
 
@@ -1047,14 +1022,7 @@ fn parts_table(
         };
         let steer = at(&run.steer);
         let speed = at(&run.speed);
-        let ay = match &run.ay {
-            Some(a) => at(a),
-            None => at(&run.yaw_rate)
-                .iter()
-                .zip(&speed)
-                .map(|(r, u)| r * u)
-                .collect(),
-        };
+        let ay = at(&regime_acceleration(run));
         let rec = Record {
             t: &p.times,
             steer: &steer,

@@ -301,11 +301,10 @@ pub fn channel_gap(
     }
 }
 
-/// The gap of every measured channel of a replayed run.
-pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> Vec<ChannelGap> {
-    let at =
-        |ys: &[f64]| -> Vec<f64> { run.t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
-    let ay_regime: Vec<f64> = match &run.ay {
+/// The lateral acceleration that defines a run's regimes: measured, or u·r
+/// when the run has no accelerometer.
+pub fn regime_acceleration(run: &crate::io::MeasuredRun) -> Vec<f64> {
+    match &run.ay {
         Some(ay) => ay.clone(),
         None => run
             .yaw_rate
@@ -313,7 +312,14 @@ pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> V
             .zip(&run.speed)
             .map(|(r, u)| r * u)
             .collect(),
-    };
+    }
+}
+
+/// The gap of every measured channel of a replayed run.
+pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> Vec<ChannelGap> {
+    let at =
+        |ys: &[f64]| -> Vec<f64> { run.t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
+    let ay_regime = regime_acceleration(run);
     let rec = Record {
         t: &run.t,
         steer: &run.steer,

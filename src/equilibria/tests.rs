@@ -1,5 +1,5 @@
 use super::*;
-use crate::tyre::{Linear, MagicSimple, Tyre};
+use crate::tyre::{MagicSimple, Tyre};
 use crate::vehicle::{Kinematics, ModelOptions, Vehicle};
 use approx::assert_relative_eq;
 
@@ -47,16 +47,7 @@ fn run(m: &VehicleModel, g: &sweep::Grid, s: &pso::PsoSearch) -> sweep::SweepRes
 
 #[test]
 fn linear_tyres_give_the_closed_form_steady_state() {
-    let mut m = VehicleModel::new(
-        Vehicle::seed004_sedan(),
-        Tyre::Linear(Linear::new(55_000.0)),
-        Tyre::Linear(Linear::new(60_000.0)),
-    );
-    m.options = ModelOptions {
-        kinematics: Kinematics::SmallAngle,
-        load_transfer: false,
-        ..ModelOptions::default()
-    };
+    let m = crate::vehicle::linear_bicycle();
     let v = &m.vehicle;
     let (cf, cr, u, d) = (110_000.0, 120_000.0, 20.0, 0.03);
     // Linear bicycle model: A·x + B·δ = 0.

@@ -478,5 +478,24 @@ impl VehicleModel {
     }
 }
 
+/// The textbook bicycle model the unit tests check against closed forms:
+/// seed 004's sedan on linear tyres (55 and 60 kN/rad per wheel),
+/// small-angle kinematics, no load transfer.
+#[cfg(test)]
+pub(crate) fn linear_bicycle() -> VehicleModel {
+    use crate::tyre::Linear;
+    let mut m = VehicleModel::new(
+        Vehicle::seed004_sedan(),
+        Tyre::Linear(Linear::new(55_000.0)),
+        Tyre::Linear(Linear::new(60_000.0)),
+    );
+    m.options = ModelOptions {
+        kinematics: Kinematics::SmallAngle,
+        load_transfer: false,
+        ..ModelOptions::default()
+    };
+    m
+}
+
 #[cfg(test)]
 mod tests;

@@ -1,7 +1,7 @@
 use super::*;
 use crate::manoeuvre::{Manoeuvre, StepSteer};
 use crate::sim::Integrator;
-use crate::tyre::{Gim, Linear, Pac89, Tyre};
+use crate::tyre::{Gim, Pac89, Tyre};
 use approx::assert_relative_eq;
 use nalgebra::{Matrix2, Vector2};
 
@@ -10,17 +10,7 @@ fn sedan() -> Vehicle {
 }
 
 fn linear_model() -> VehicleModel {
-    let mut m = VehicleModel::new(
-        sedan(),
-        Tyre::Linear(Linear::new(55_000.0)),
-        Tyre::Linear(Linear::new(60_000.0)),
-    );
-    m.options = ModelOptions {
-        kinematics: Kinematics::SmallAngle,
-        load_transfer: false,
-        ..ModelOptions::default()
-    };
-    m
+    super::linear_bicycle()
 }
 
 fn step(speed: f64, amplitude: f64) -> Manoeuvre {

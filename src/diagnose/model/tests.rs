@@ -1,8 +1,8 @@
 use super::*;
 use crate::manoeuvre::{SineSteer, StepSteer};
 use crate::sim::Integrator;
-use crate::tyre::{Linear, Pac89};
-use crate::vehicle::{ModelOptions, State, Vehicle};
+use crate::tyre::Pac89;
+use crate::vehicle::{State, Vehicle};
 
 fn pac89_model() -> VehicleModel {
     let t = Tyre::Pac89(Pac89::adams_example());
@@ -12,17 +12,7 @@ fn pac89_model() -> VehicleModel {
 /// Linear tyres, small-angle kinematics, no load transfer: the textbook
 /// bicycle model, whose steady gains are closed-form.
 fn linear_model() -> VehicleModel {
-    let mut m = VehicleModel::new(
-        Vehicle::seed004_sedan(),
-        Tyre::Linear(Linear::new(55_000.0)),
-        Tyre::Linear(Linear::new(60_000.0)),
-    );
-    m.options = ModelOptions {
-        kinematics: Kinematics::SmallAngle,
-        load_transfer: false,
-        ..ModelOptions::default()
-    };
-    m
+    crate::vehicle::linear_bicycle()
 }
 
 fn step(speed: f64, amplitude: f64, end: f64) -> Manoeuvre {

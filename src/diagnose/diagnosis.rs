@@ -413,7 +413,12 @@ impl Context<'_> {
         };
         let full = match start {
             Some(p) => fit(&problem, &p, None, Polish::LevenbergMarquardt),
-            None => fit(&problem, &s.off(), Some(&pso), Polish::LevenbergMarquardt),
+            None => fit(
+                &problem,
+                &s.off(),
+                Some((&pso, if s.axle() { 3 } else { 0 })),
+                Polish::LevenbergMarquardt,
+            ),
         };
         self.tick();
         let per_fold: Vec<(ChannelErrors, Vec<f64>)> = (0..self.folds.len())
@@ -569,7 +574,7 @@ fn base_models(
             let full = fit(
                 &problem,
                 &[10.0, 10.0, 1.0],
-                Some(pso),
+                Some((pso, 0)),
                 Polish::LevenbergMarquardt,
             );
             let fold_params: Vec<Vec<f64>> = (0..folds.len())

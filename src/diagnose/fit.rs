@@ -261,20 +261,31 @@ pub enum Polish {
     Steps(usize),
 }
 
-/// Fits `problem` from `start`: PSO over the bounds (when `pso` is given)
-/// then the polish.
+/// Fits `problem` from `start`: PSO over the bounds (when `pso` is given;
+/// `(swarm, held)` holds the first `held` parameters at their start values
+/// during the swarm search — the axle characteristics, which the polish
+/// then frees) then the polish.
 pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
-    pso: Option<&Pso>,
+    pso: Option<(&Pso, usize)>,
     polish: Polish,
 ) -> FitOutcome {
     let mut evaluations = 0;
     let mut p0 = problem.clamp(start);
-    if let Some(pso) = pso.filter(|_| !start.is_empty()) {
-        let r = pso.minimize_from(|p| problem.cost(p), &problem.bounds, &[p0.clone()]);
+    if let Some((pso, held)) = pso.filter(|(_, held)| start.len() > *held) {
+        let full = |q: &[f64]| {
+            let mut p = p0[..held].to_vec();
+            p.extend_from_slice(q);
+            p
+        };
+        let r = pso.minimize_from(
+            |q| problem.cost(&full(q)),
+            &problem.bounds[held..],
+            &[p0[held..].to_vec()],
+        );
         evaluations += r.evaluations;
-        p0 = r.best;
+        p0 = full(&r.best);
     }
     let (params, cost) = if start.is_empty() {
         (Vec::new(), problem.cost(&[]))
@@ -332,17 +343,24 @@ fn standard_errors<F: Fn(&[f64]) -> Augmented + Sync>(
     problem.residuals(p, &mut r);
     let j = jacobian(problem, p, &r);
     let s2 = 2.0 * cost / (n.saturating_sub(k)).max(1) as f64;
-    match (j.transpose() * &j).try_inverse() {
-        Some(inv) => (0..k)
-            .map(|i| {
-                let v = s2 * inv[(i, i)];
-                if v.is_finite() && v >= 0.0 {
-                    v.sqrt()
-                } else {
-                    f64::NAN
-                }
-            })
-            .collect(),
-        None => vec![f64::NAN; k],
+    // A parameter the data cannot see (an ay offset without an ay channel,
+    // a parameter pinned at its bound) has a zero column: it gets NaN and
+    // the others are computed without it.
+    let norms: Vec<f64> = (0..k).map(|c| j.column(c).norm()).collect();
+    let largest = norms.iter().copied().fold(0.0, f64::max);
+    let seen: Vec<usize> = (0..k).filter(|&c| norms[c] > 1e-9 * largest).collect();
+    let mut out = vec![f64::NAN; k];
+    if seen.is_empty() {
+        return out;
     }
+    let js = j.select_columns(seen.iter());
+    if let Some(inv) = (js.transpose() * &js).try_inverse() {
+        for (i, &c) in seen.iter().enumerate() {
+            let v = s2 * inv[(i, i)];
+            if v.is_finite() && v >= 0.0 {
+                out[c] = v.sqrt();
+            }
+        }
+    }
+    out
 }

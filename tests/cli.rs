@@ -17,6 +17,17 @@ fn run(args: &[&str]) -> Output {
     bin().args(args).current_dir(root()).output().expect("runs")
 }
 
+/// Says on the terminal that a test skipped itself: written to the process's
+/// stderr directly, past the test harness's capture of `eprintln!`.
+fn skipped(test: &str, missing: &Path) {
+    use std::io::Write;
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "SKIPPED {test}: {} is absent",
+        missing.display()
+    );
+}
+
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
@@ -529,10 +540,7 @@ fn an_identified_tyre_file_loads_and_simulates() {
 fn real_hoosier_rig_data_fits_within_a_few_percent() {
     let data = root().join("../shared/data/tyre_ttc_hoosier_43075/cornering.csv");
     if !data.exists() {
-        eprintln!(
-            "SKIPPED real_hoosier_rig_data_fits_within_a_few_percent: {} is absent",
-            data.display()
-        );
+        skipped("real_hoosier_rig_data_fits_within_a_few_percent", &data);
         return;
     }
     let out = tempfile::tempdir().unwrap();
@@ -945,7 +953,10 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
 fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     let log = root().join("../shared/data/run_iac_putnam/putnam_run4_2.csv");
     if !log.is_file() {
-        println!("SKIPPED: {} is absent", log.display());
+        skipped(
+            "real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs",
+            &log,
+        );
         return;
     }
     // The bundled campaign, cut to 40 s pieces and two candidates to keep

@@ -780,7 +780,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     // Verdict: the best single, then greedy additions.
     let mut chosen: Option<Scored> = None;
     let mut combinations = Vec::new();
-    let mut confounded = Vec::new();
+    let mut lookalikes: Vec<usize> = Vec::new();
     if significant && !order.is_empty() {
         let best = &singles[order[0]];
         let r = rank(best);
@@ -788,32 +788,19 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         // pair of effects: the greedy search starts from it when it is
         // promising, and the set found must pass as a whole.
         if r.reduction_percent >= 100.0 * PROMISING && r.delta_bic < 0.0 {
-            // Look-alikes of the accepted effect.
-            let mut group = vec![r.effect.clone()];
-            let mut reductions = vec![r.reduction_percent];
-            let mut tests = vec![best.kinds[0].signature().to_string()];
-            for &i in &order[1..] {
-                let o = rank(&singles[i]);
-                let (g_best, g_other) = (
-                    gap_above(r.heldout_error_after, jn),
-                    gap_above(o.heldout_error_after, jn),
-                );
-                if o.reduction_percent >= 100.0 * ACCEPT
-                    && g_other <= CONFOUNDED * g_best + CONFOUNDED_NOISE * jn
-                {
-                    group.push(o.effect.clone());
-                    reductions.push(o.reduction_percent);
-                    tests.push(format!("{}: {}", o.effect, singles[i].kinds[0].signature()));
-                }
-            }
-            if group.len() > 1 {
-                tests[0] = format!("{}: {}", r.effect, tests[0]);
-                confounded.push(Confounded {
-                    effects: group,
-                    reduction_percent: reductions,
-                    separating_test: tests.join("; "),
-                });
-            }
+            // Look-alikes of the accepted effect: singles that also pass and
+            // leave about as small a gap.
+            let g_best = gap_above(r.heldout_error_after, jn);
+            lookalikes = order[1..]
+                .iter()
+                .copied()
+                .filter(|&i| {
+                    let o = rank(&singles[i]);
+                    o.reduction_percent >= 100.0 * ACCEPT
+                        && gap_above(o.heldout_error_after, jn)
+                            <= CONFOUNDED * g_best + CONFOUNDED_NOISE * jn
+                })
+                .collect();
             let mut current = Scored {
                 kinds: best.kinds.clone(),
                 full: best.full.clone(),
@@ -866,29 +853,40 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             let total = reduction(j0, current.heldout.combined(&scales), jn);
             if total >= 100.0 * ACCEPT && current.full.bic() < bic0 {
                 chosen = Some(current);
-            } else {
-                confounded.clear();
             }
         }
     }
     combinations.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
-    // An effect the verdict took in as well is not a look-alike of the
-    // first one.
+    // The accepted first effect's look-alikes, less those the verdict took
+    // in as well, with the experiments that would separate them.
+    let mut confounded = Vec::new();
     if let Some(sc) = &chosen {
-        let names: Vec<&str> = sc.kinds.iter().skip(1).map(|e| e.name()).collect();
-        for g in &mut confounded {
-            let keep: Vec<bool> = g
-                .effects
-                .iter()
-                .enumerate()
-                .map(|(i, e)| i == 0 || !names.contains(&e.as_str()))
-                .collect();
-            let mut k = keep.iter();
-            g.effects.retain(|_| *k.next().unwrap_or(&true));
-            let mut k = keep.iter();
-            g.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
+        let first = singles
+            .iter()
+            .find(|x| x.kinds[0] == sc.kinds[0])
+            .expect("the verdict starts from a scored single");
+        let members: Vec<&Scored> = std::iter::once(first)
+            .chain(
+                lookalikes
+                    .iter()
+                    .map(|&i| &singles[i])
+                    .filter(|x| !sc.kinds.contains(&x.kinds[0])),
+            )
+            .collect();
+        if members.len() > 1 {
+            confounded.push(Confounded {
+                effects: members
+                    .iter()
+                    .map(|x| x.kinds[0].name().to_string())
+                    .collect(),
+                reduction_percent: members.iter().map(|x| rank(x).reduction_percent).collect(),
+                separating_test: members
+                    .iter()
+                    .map(|x| format!("{}: {}", x.kinds[0].name(), x.kinds[0].signature()))
+                    .collect::<Vec<_>>()
+                    .join("; "),
+            });
         }
-        confounded.retain(|g| g.effects.len() > 1);
     }
 
     // Before and after on held-out runs, per channel, window and regime.

@@ -32,6 +32,11 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// Parses a JSON output file.
+fn read_json(p: &Path) -> serde_json::Value {
+    serde_json::from_str(&fs::read_to_string(p).unwrap()).unwrap()
+}
+
 /// Writes `files` into a fresh folder and returns it.
 fn scratch(files: &[(&str, &str)]) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
@@ -98,9 +103,7 @@ fn every_bundled_scenario_runs_and_writes_its_outputs() {
         assert!(hist.starts_with("t,steer,speed,beta,yaw_rate,ay"));
         assert!(fs::metadata(dir.join("response.png")).unwrap().len() > 10_000);
         if text.contains("step-steer") {
-            let m: serde_json::Value =
-                serde_json::from_str(&fs::read_to_string(dir.join("metrics.json")).unwrap())
-                    .unwrap();
+            let m: serde_json::Value = read_json(&dir.join("metrics.json"));
             for key in [
                 "yaw_rate_response_time",
                 "yaw_rate_peak_time",
@@ -141,9 +144,7 @@ fn metrics_of_a_written_history_match_the_simulation() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let a: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let b: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.path().join("metrics.json")).unwrap())
-            .unwrap();
+    let b: serde_json::Value = read_json(&out.path().join("metrics.json"));
     for key in ["yaw_rate_response_time", "yaw_rate_overshoot", "er", "tb"] {
         let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
         assert!(
@@ -349,9 +350,7 @@ fn equilibria_sweep_writes_tables_and_figures() {
             "{png}"
         );
     }
-    let s: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.path().join("summary.json")).unwrap())
-            .unwrap();
+    let s: serde_json::Value = read_json(&out.path().join("summary.json"));
     assert_eq!(s["seed"], 1);
     assert_eq!(s["agreeing"], 11);
 }
@@ -395,13 +394,10 @@ fn seed004_study_writes_map_rbf_and_inverse() {
     );
     let csv = fs::read_to_string(out.path().join("study.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 676 + 51);
-    let rbf: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.path().join("rbf.json")).unwrap()).unwrap();
+    let rbf: serde_json::Value = read_json(&out.path().join("rbf.json"));
     assert_eq!(rbf["training_pairs"], 46);
     assert_eq!(rbf["validation"].as_array().unwrap().len(), 5);
-    let inv: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.path().join("inverse.json")).unwrap())
-            .unwrap();
+    let inv: serde_json::Value = read_json(&out.path().join("inverse.json"));
     for t in inv["targets"].as_array().unwrap() {
         let target = t["target"].as_f64().unwrap();
         let er = t["best"]["er_resimulated"].as_f64().unwrap();
@@ -515,9 +511,7 @@ fn an_identified_tyre_file_loads_and_simulates() {
         tyre.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let report: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(dir.path().join("fitted.report.json")).unwrap())
-            .unwrap();
+    let report: serde_json::Value = read_json(&dir.path().join("fitted.report.json"));
     assert_eq!(report["seed"], 3);
     assert!(report["sigma_percent"].as_f64().unwrap() < 1e-6, "{report}");
     for key in ["model", "curves", "parameters", "evaluations", "seconds"] {
@@ -557,9 +551,7 @@ fn real_hoosier_rig_data_fits_within_a_few_percent() {
         out.path().join("pac89.toml").to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let report: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.path().join("pac89.report.json")).unwrap())
-            .unwrap();
+    let report: serde_json::Value = read_json(&out.path().join("pac89.report.json"));
     let sigma = report["sigma_percent"].as_f64().unwrap();
     assert!(sigma < 3.0, "σ {sigma} %");
     assert_eq!(
@@ -603,9 +595,7 @@ fn identify_fits_longitudinal_only_rig_data() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let report: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(dir.path().join("fx.report.json")).unwrap())
-            .unwrap();
+    let report: serde_json::Value = read_json(&dir.path().join("fx.report.json"));
     assert_eq!(report["channel"], "longitudinal-force");
     assert!(report["sigma_percent"].as_f64().unwrap() < 0.01, "{report}");
     assert!(fs::read_to_string(&out).unwrap().contains("b = ["));
@@ -641,7 +631,7 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
             dir.join("o").to_str().unwrap(),
         ]);
         assert!(o.status.success(), "{}", stderr(&o));
-        serde_json::from_str(&fs::read_to_string(dir.join("o/gap.json")).unwrap()).unwrap()
+        read_json(&dir.join("o/gap.json"))
     };
     let same = gap("gim_seed004_front.toml", "same");
     for ch in same["channels"].as_array().unwrap() {
@@ -670,10 +660,6 @@ fn synth(dir: &Path, name: &str, effects: &str, seed: &str) -> PathBuf {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     out
-}
-
-fn read_json(p: &Path) -> serde_json::Value {
-    serde_json::from_str(&fs::read_to_string(p).unwrap()).unwrap()
 }
 
 #[test]

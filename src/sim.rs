@@ -105,6 +105,74 @@ impl TimeHistory {
     }
 }
 
+/// A wheel of the four-wheel load model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Wheel {
+    /// Front left.
+    FrontLeft,
+    /// Front right.
+    FrontRight,
+    /// Rear left.
+    RearLeft,
+    /// Rear right.
+    RearRight,
+}
+
+impl Wheel {
+    /// The wheels in the order of [`TimeHistory::fz`].
+    pub const ALL: [Wheel; 4] = [
+        Wheel::FrontLeft,
+        Wheel::FrontRight,
+        Wheel::RearLeft,
+        Wheel::RearRight,
+    ];
+}
+
+/// An interval during which a wheel carried no load.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct LiftOff {
+    /// The wheel off the ground.
+    pub wheel: Wheel,
+    /// First recorded time with zero load, s.
+    pub start: f64,
+    /// Last recorded time with zero load, s.
+    pub end: f64,
+}
+
+impl TimeHistory {
+    /// Every interval of recorded rows in which a wheel's load is zero, in
+    /// wheel order then time order.
+    pub fn lift_offs(&self) -> Vec<LiftOff> {
+        let mut out = Vec::new();
+        for (wheel, fz) in Wheel::ALL.iter().zip(&self.fz) {
+            let mut start = None;
+            for (i, &f) in fz.iter().enumerate() {
+                match (f <= 0.0, start) {
+                    (true, None) => start = Some(i),
+                    (false, Some(s)) => {
+                        out.push(LiftOff {
+                            wheel: *wheel,
+                            start: self.t[s],
+                            end: self.t[i - 1],
+                        });
+                        start = None;
+                    }
+                    _ => {}
+                }
+            }
+            if let Some(s) = start {
+                out.push(LiftOff {
+                    wheel: *wheel,
+                    start: self.t[s],
+                    end: self.t[fz.len() - 1],
+                });
+            }
+        }
+        out
+    }
+}
+
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Integrator {

@@ -58,14 +58,12 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     let fz = c.take("fz");
     for (i, v) in fz.iter().enumerate() {
         if *v < 0.0 {
-            return Err(InputError::At {
-                path: path.to_path_buf(),
-                line: c.lines[i],
-                column: 1,
-                message: format!(
-                    "column `fz`: {v} N is negative (loads are positive in FORMATS.md)"
-                ),
-            });
+            return Err(c.error_at(
+                path,
+                i,
+                "fz",
+                format!("column `fz`: {v} N is negative (loads are positive in FORMATS.md)"),
+            ));
         }
     }
     let n = fz.len();

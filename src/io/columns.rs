@@ -14,6 +14,9 @@ pub struct Columns {
     pub data: BTreeMap<String, Vec<f64>>,
     /// 1-based file line of each row.
     pub lines: Vec<usize>,
+    /// Column name → its 1-based position in the header, for errors found
+    /// after parsing (a negative load, time running backwards).
+    pub positions: BTreeMap<String, usize>,
 }
 
 impl Columns {
@@ -24,6 +27,20 @@ impl Columns {
     /// An optional column.
     pub fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
         self.data.remove(name)
+    }
+    /// 1-based header position of a column that was read (1 if unknown).
+    pub fn column(&self, name: &str) -> usize {
+        self.positions.get(name).copied().unwrap_or(1)
+    }
+    /// An error at row `row` (0-based) of column `name`: file, line, the
+    /// column's real position and the message.
+    pub fn error_at(&self, path: &Path, row: usize, name: &str, message: String) -> InputError {
+        InputError::At {
+            path: path.to_path_buf(),
+            line: self.lines.get(row).copied().unwrap_or(0),
+            column: self.column(name),
+            message,
+        }
     }
     /// Number of rows.
     pub fn len(&self) -> usize {
@@ -74,8 +91,9 @@ pub fn read_columns(
         }
     }
     let mut out = Columns::default();
-    for (_, name) in &wanted {
+    for (i, name) in &wanted {
         out.data.insert(name.clone(), Vec::new());
+        out.positions.insert(name.clone(), i + 1);
     }
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {

@@ -38,16 +38,16 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     let t = c.take("t");
     for i in 1..t.len() {
         if t[i] <= t[i - 1] {
-            return Err(InputError::At {
-                path: path.to_path_buf(),
-                line: c.lines[i],
-                column: 1,
-                message: format!(
+            return Err(c.error_at(
+                path,
+                i,
+                "t",
+                format!(
                     "column `t`: {} does not follow {} (time must be strictly increasing)",
                     t[i],
                     t[i - 1]
                 ),
-            });
+            ));
         }
     }
     if t.len() < 2 {

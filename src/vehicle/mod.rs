@@ -181,19 +181,35 @@ struct LoadSplit {
     rear: f64,
     kf: f64,
     kr: f64,
+    /// Track ratio t_f / t_r: a transfer moment that the front axle cannot
+    /// carry, expressed as rear transfer.
+    front_to_rear: f64,
 }
 
 impl LoadSplit {
-    /// FL, FR, RL, RR at `ay`; a wheel whose load would be negative has
-    /// lifted off (load 0).
+    /// FL, FR, RL, RR at `ay`. The roll moment m·ay·h is shared between the
+    /// axles by the transfer share; an axle whose inner wheel has lifted off
+    /// carries no more than its whole load on the outer wheel, and the moment
+    /// it cannot carry goes to the other axle (the body pivots on the outer
+    /// wheels), so the four loads always add up to the axle loads (m·g·cos θ
+    /// plus aero) until both inner wheels are off the ground (roll-over).
     #[inline]
     fn at(&self, ay: f64) -> [f64; 4] {
-        let (df, dr) = (self.kf * ay, self.kr * ay);
+        let (mut df, mut dr) = (self.kf * ay, self.kr * ay);
+        if df.abs() > self.front {
+            dr += (df - self.front.copysign(df)) * self.front_to_rear;
+            df = self.front.copysign(df);
+        }
+        if dr.abs() > self.rear {
+            df += (dr - self.rear.copysign(dr)) / self.front_to_rear;
+            df = df.clamp(-self.front, self.front);
+            dr = self.rear.copysign(dr);
+        }
         [
-            (self.front - df).max(0.0),
-            (self.front + df).max(0.0),
-            (self.rear - dr).max(0.0),
-            (self.rear + dr).max(0.0),
+            self.front - df,
+            self.front + df,
+            self.rear - dr,
+            self.rear + dr,
         ]
     }
 }
@@ -303,6 +319,7 @@ impl VehicleModel {
             rear: 0.5 * sr,
             kf,
             kr,
+            front_to_rear: v.track_front / v.track_rear,
         }
     }
 

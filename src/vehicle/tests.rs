@@ -326,3 +326,78 @@ fn the_exact_equilibrium_solver_follows_bank_and_aero() {
         assert!(e.residual < 1e-10, "{e:?}");
     }
 }
+
+#[test]
+fn wheel_loads_conserve_weight_through_lift_off() {
+    let mut m = nonlinear_model();
+    // A tall, narrow vehicle lifts its inner front wheel well before roll-over.
+    m.vehicle.cg_height = 0.9;
+    m.vehicle.track_front = 1.3;
+    m.vehicle.track_rear = 1.4;
+    let (sf, sr) = m.vehicle.static_axle_loads();
+    let (v, chi) = (&m.vehicle, m.vehicle.front_transfer_share());
+    // Inner front wheel off at ay = (sf/2)·t_f/(χ·m·h).
+    let lift_front = 0.5 * sf * v.track_front / (chi * v.mass * v.cg_height);
+    let roll_over = G * (v.track_front * sf + v.track_rear * sr) / (2.0 * G * v.mass * v.cg_height);
+    let mut lifted = 0;
+    for i in -200..=200 {
+        let ay = 0.08 * i as f64;
+        let fz = m.wheel_loads(ay);
+        assert!(fz.iter().all(|f| *f >= 0.0), "ay {ay}: {fz:?}");
+        let total: f64 = fz.iter().sum();
+        assert_relative_eq!(total, sf + sr, max_relative = 1e-12);
+        if ay.abs() < roll_over {
+            // Below roll-over the transferred moment is the whole m·h·ay.
+            let moment =
+                0.5 * (fz[1] - fz[0]) * v.track_front + 0.5 * (fz[3] - fz[2]) * v.track_rear;
+            assert_relative_eq!(
+                moment,
+                v.mass * v.cg_height * ay,
+                max_relative = 1e-9,
+                epsilon = 1e-6
+            );
+        }
+        if ay.abs() > lift_front {
+            lifted += 1;
+            let inner = if ay > 0.0 { fz[0] } else { fz[1] };
+            assert_eq!(inner, 0.0, "ay {ay}");
+        }
+    }
+    assert!(
+        lifted > 0 && lift_front < roll_over,
+        "the sweep must cross lift-off"
+    );
+}
+
+#[test]
+fn a_simulated_lift_off_is_reported_with_its_wheel_and_time() {
+    let mut m = nonlinear_model();
+    m.vehicle.cg_height = 1.2;
+    m.vehicle.track_front = 0.9;
+    let h = Integrator::default().run(&m, &step(20.0, 0.1), State::default());
+    let lifts = h.lift_offs();
+    let ay_max = h.ay.iter().fold(0.0f64, |a, b| a.max(*b));
+    assert!(
+        !lifts.is_empty(),
+        "a 0.1 rad step at 20 m/s (ay up to {ay_max}) lifts the inner front wheel"
+    );
+    for l in &lifts {
+        // Steering left loads the right wheels: the left ones lift.
+        assert!(
+            matches!(
+                l.wheel,
+                crate::sim::Wheel::FrontLeft | crate::sim::Wheel::RearLeft
+            ),
+            "{l:?}"
+        );
+        assert!(l.start > 0.5 && l.end >= l.start);
+    }
+    for i in 0..h.len() {
+        let total: f64 = (0..4).map(|w| h.fz[w][i]).sum();
+        assert_relative_eq!(
+            total,
+            h.fz[0][0] + h.fz[1][0] + h.fz[2][0] + h.fz[3][0],
+            max_relative = 1e-12
+        );
+    }
+}

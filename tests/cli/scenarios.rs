@@ -245,3 +245,29 @@ fn an_input_is_never_overwritten() {
         .unwrap()
         .starts_with("t,speed,steer,yaw_rate\n0,20"));
 }
+
+#[test]
+fn checks_after_parsing_name_the_real_column() {
+    // `t` is the third column and runs backwards on line 4.
+    let dir = scratch(&[(
+        "run.csv",
+        "speed,steer,t,yaw_rate\n20,0,0.00,0\n20,0,0.01,0\n20,0,0.005,0\n20,0,0.02,0\n",
+    )]);
+    let o = run(&["metrics", dir.path().join("run.csv").to_str().unwrap()]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(e.contains("run.csv:4:3:") && e.contains("0.005"), "{e}");
+    // A negative load in the rig file's second column, line 3.
+    let dir = scratch(&[("rig.csv", "alpha,fz,fy\n0.01,3000,500\n0.02,-3000,900\n")]);
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--out",
+        dir.path().join("t.toml").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(e.contains("rig.csv:3:2:") && e.contains("-3000"), "{e}");
+}

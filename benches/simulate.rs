@@ -1,10 +1,11 @@
-//! Simulation speed: a 10 s step steer at 1 kHz with PAC89 tyres and load
-//! transfer (issue #2 asks for ≥ 1000× real time on one core), and the cost
-//! of one lateral-force evaluation per tyre model.
+//! Simulation speed: a 10 s step steer with PAC89 tyres on four wheels and
+//! load transfer — fixed-step RK4 at 1 ms, and Dormand–Prince 5(4) at the
+//! default tolerances (the dense solution alone, and with 1 kHz rows) — and
+//! the cost of one lateral-force evaluation per tyre model.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::manoeuvre::{Manoeuvre, StepSteer};
-use handling::sim::Integrator;
+use handling::sim::{Integrator, Method, Tolerances};
 use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel};
 use handling::vehicle::{State, Vehicle, VehicleModel};
 
@@ -26,6 +27,24 @@ fn step_steer(c: &mut Criterion) {
     c.bench_function("step_steer_10s_1khz_pac89_load_transfer", |b| {
         b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
     });
+    let tol = Tolerances::default();
+    let dopri = Integrator {
+        method: Method::Dopri5(tol),
+        ..Integrator::default()
+    };
+    let mut g = c.benchmark_group("step_steer_10s_pac89_load_transfer");
+    g.bench_function("rk4_1ms", |b| {
+        b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
+    });
+    g.bench_function("dopri5_rows_1ms", |b| {
+        b.iter(|| dopri.run(black_box(&model), black_box(&man), State::default()))
+    });
+    // The rows every 0.1 s: what the metrics need besides the dense output.
+    let coarse = Integrator { step: 0.1, ..dopri };
+    g.bench_function("dopri5_dense", |b| {
+        b.iter(|| coarse.run_dopri5(black_box(&model), black_box(&man), State::default(), &tol))
+    });
+    g.finish();
 }
 
 fn tyre_evaluation(c: &mut Criterion) {
@@ -74,6 +93,7 @@ fn study_combination(c: &mut Criterion) {
         integrator: Integrator {
             step: 2e-3,
             friction: 1.0,
+            ..Integrator::default()
         },
         metrics: handling::metrics::MetricSettings::default(),
     };

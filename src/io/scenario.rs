@@ -232,6 +232,7 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
     let integrator = Integrator {
         step: f.simulation.step,
         friction: f.road.friction,
+        ..Integrator::default()
     };
     let mut initial = State::default();
     let mut measured = None;

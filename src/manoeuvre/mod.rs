@@ -218,6 +218,19 @@ impl Manoeuvre {
         }
     }
 
+    /// Times where the steer or speed input has a kink or a jump (ramp
+    /// ends, the start of a sine, every sample of a replay): an adaptive
+    /// integrator restarts there instead of stepping across.
+    pub fn breakpoints(&self) -> Vec<f64> {
+        match self {
+            Manoeuvre::StepSteer(s) => vec![s.start, s.start + s.rise_time.max(0.0)],
+            Manoeuvre::RampSteer(r) => vec![r.start],
+            Manoeuvre::Sine(s) => vec![s.start],
+            Manoeuvre::Sweep(s) => vec![s.start, s.end],
+            Manoeuvre::Replay(r) => r.t.clone(),
+        }
+    }
+
     /// The same manoeuvre with the steer mirrored (δ → −δ).
     pub fn mirrored(&self) -> Manoeuvre {
         let mut m = self.clone();

@@ -25,6 +25,7 @@ fn study() -> Study {
         integrator: Integrator {
             step: 2e-3,
             friction: 1.0,
+            ..Integrator::default()
         },
         metrics: MetricSettings::default(),
     }

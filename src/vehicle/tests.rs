@@ -98,6 +98,7 @@ fn rk4_is_fourth_order() {
         let hist = Integrator {
             step: h,
             friction: 1.0,
+            ..Integrator::default()
         }
         .run(&m, &man, State::default());
         *hist.yaw_rate.last().unwrap()
@@ -400,4 +401,49 @@ fn a_simulated_lift_off_is_reported_with_its_wheel_and_time() {
             max_relative = 1e-12
         );
     }
+}
+
+#[test]
+fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
+    use crate::sim::{Method, Tolerances};
+    let m = nonlinear_model();
+    let man = Manoeuvre::StepSteer(StepSteer {
+        speed: 22.2222,
+        amplitude: 0.04,
+        trim: 0.0,
+        start: 0.5,
+        rise_time: 0.1,
+        end: 4.0,
+    });
+    let fine = Integrator {
+        step: 1e-4,
+        ..Integrator::default()
+    }
+    .run(&m, &man, State::default());
+    let tol = Tolerances {
+        rtol: 1e-9,
+        atol: 1e-11,
+        max_step: 0.05,
+    };
+    let (h, sol) = Integrator {
+        step: 1e-3,
+        method: Method::Dopri5(tol),
+        ..Integrator::default()
+    }
+    .run_dopri5(&m, &man, State::default(), &tol);
+    assert_eq!(h.len(), 4001);
+    let r_ss = fine.yaw_rate.last().copied().unwrap();
+    for (i, t) in h.t.iter().enumerate() {
+        let j = i * 10;
+        assert!((fine.t[j] - t).abs() < 1e-12);
+        assert!(
+            (h.yaw_rate[i] - fine.yaw_rate[j]).abs() < 1e-7 * r_ss.abs(),
+            "t {t}: {} vs {}",
+            h.yaw_rate[i],
+            fine.yaw_rate[j]
+        );
+        assert!((h.ay[i] - fine.ay[j]).abs() < 1e-6, "t {t}");
+    }
+    // A few hundred steps, not thousands.
+    assert!(sol.stats.accepted < 400, "{:?}", sol.stats);
 }

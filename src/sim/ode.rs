@@ -1,0 +1,589 @@
+//! Explicit Runge–Kutta integration of small ODE systems `ẋ = f(t, x)` with a
+//! state of `N` reals: the error-controlled Dormand–Prince 5(4) pair with its
+//! continuous (dense) output, and the classical fixed-step RK4.
+//!
+//! Method: Dormand & Prince (1980), "A family of embedded Runge–Kutta
+//! formulae", J. Comp. Appl. Math. 6; step-size control (PI controller with
+//! β = 0.04, safety 0.9, growth within [0.2, 10]) and the fourth-order dense
+//! output as in Hairer, Nørsett & Wanner, *Solving Ordinary Differential
+//! Equations I* (2nd ed., 1993), §II.4–II.6. The local error is measured in
+//! the weighted RMS norm with weights `atol + rtol·max(|x_old|, |x_new|)`.
+//!
+//! Why not a crate: `ode_solvers` (the maintained Rust DOPRI5) records its
+//! output at uniform intervals into vectors it allocates, has no output at
+//! arbitrary times (measured runs are sampled irregularly), no event location
+//! and no way to restart at the input's breakpoints; the method itself is a
+//! table of published coefficients and forty lines of control logic.
+//!
+//! Inputs with kinks (a step steer's ramp start and end) are handled by
+//! breakpoints: the solution is restarted at each, so no step straddles a
+//! discontinuity of the right-hand side's derivatives. Nothing allocates per
+//! step except the growth of the stored dense solution (one segment of
+//! `5·N` reals per accepted step). Units are whatever the system uses.
+
+/// An ODE system with `N` states. `&mut self` lets a system keep caches
+/// (the load-transfer solve's starting point) between evaluations; the
+/// result must not depend on them beyond the system's own tolerance.
+pub trait OdeSystem<const N: usize> {
+    /// The derivatives at time `t` and state `x`.
+    fn derivatives(&mut self, t: f64, x: &[f64; N]) -> [f64; N];
+}
+
+/// Error tolerances of the adaptive integrator.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tolerances {
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance, in the states' units.
+    pub atol: f64,
+    /// Largest step, s (also bounds how coarsely events are bracketed).
+    pub max_step: f64,
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Self {
+            rtol: 1e-8,
+            atol: 1e-10,
+            max_step: 0.05,
+        }
+    }
+}
+
+/// Counts of the work an integration did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Stats {
+    /// Accepted steps.
+    pub accepted: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Right-hand-side evaluations.
+    pub evaluations: usize,
+}
+
+/// One accepted step's continuous extension: the state at `t0 + θ·h` is
+/// `r0 + θ(r1 + (1−θ)(r2 + θ(r3 + (1−θ) r4)))`, fourth order in θ ∈ [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Segment<const N: usize> {
+    t0: f64,
+    h: f64,
+    r: [[f64; N]; 5],
+}
+
+impl<const N: usize> Segment<N> {
+    fn at(&self, t: f64) -> [f64; N] {
+        let th = ((t - self.t0) / self.h).clamp(0.0, 1.0);
+        let th1 = 1.0 - th;
+        let r = &self.r;
+        std::array::from_fn(|i| {
+            r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
+        })
+    }
+}
+
+/// The continuous solution of an adaptive integration over [t_start, t_end].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DenseSolution<const N: usize> {
+    segments: Vec<Segment<N>>,
+    /// Work done.
+    pub stats: Stats,
+}
+
+impl<const N: usize> DenseSolution<N> {
+    /// Start of the solution, s.
+    pub fn start(&self) -> f64 {
+        self.segments.first().map_or(f64::NAN, |s| s.t0)
+    }
+    /// End of the solution, s.
+    pub fn end(&self) -> f64 {
+        self.segments.last().map_or(f64::NAN, |s| s.t0 + s.h)
+    }
+    /// Accepted step boundaries (start, every step end).
+    pub fn step_times(&self) -> impl Iterator<Item = f64> + '_ {
+        self.segments
+            .first()
+            .map(|s| s.t0)
+            .into_iter()
+            .chain(self.segments.iter().map(|s| s.t0 + s.h))
+    }
+    fn segment(&self, t: f64) -> &Segment<N> {
+        let k = self.segments.partition_point(|s| s.t0 + s.h < t);
+        &self.segments[k.min(self.segments.len() - 1)]
+    }
+    /// The state at `t` (clamped to the solution's interval).
+    pub fn state(&self, t: f64) -> [f64; N] {
+        self.segment(t).at(t)
+    }
+    /// States at sorted times `ts`, written into `out` (one walk over the
+    /// segments, no search per time).
+    pub fn states_into(&self, ts: &[f64], out: &mut Vec<[f64; N]>) {
+        out.clear();
+        out.reserve(ts.len());
+        let mut k = 0;
+        for &t in ts {
+            while k + 1 < self.segments.len() && self.segments[k].t0 + self.segments[k].h < t {
+                k += 1;
+            }
+            out.push(self.segments[k].at(t));
+        }
+    }
+    /// The first time after `after` at which `g(t, x(t))` changes sign
+    /// (from the value it has at `after`), located by bisection on the dense
+    /// output to `tol` seconds; `g` is sampled at least at every step end and
+    /// `probe` apart, so a crossing and recrossing inside one probe interval
+    /// can be missed.
+    pub fn first_crossing(
+        &self,
+        after: f64,
+        probe: f64,
+        tol: f64,
+        mut g: impl FnMut(f64, &[f64; N]) -> f64,
+    ) -> Option<f64> {
+        let end = self.end();
+        let mut t_a = after.max(self.start());
+        let mut g_a = g(t_a, &self.state(t_a));
+        while t_a < end {
+            let step_end = self.segment(t_a).t0 + self.segment(t_a).h;
+            let t_b = if step_end > t_a + 1e-15 {
+                step_end
+            } else {
+                end
+            }
+            .min(t_a + probe)
+            .min(end);
+            let g_b = g(t_b, &self.state(t_b));
+            if g_a == 0.0 {
+                return Some(t_a);
+            }
+            if g_a.signum() != g_b.signum() {
+                let (mut lo, mut hi, g_lo) = (t_a, t_b, g_a);
+                while hi - lo > tol {
+                    let mid = 0.5 * (lo + hi);
+                    let g_mid = g(mid, &self.state(mid));
+                    if g_mid.signum() == g_lo.signum() && g_mid != 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Some(0.5 * (lo + hi));
+            }
+            (t_a, g_a) = (t_b, g_b);
+        }
+        None
+    }
+}
+
+// Dormand–Prince 5(4) coefficients (Dormand & Prince 1980).
+const C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
+const A2: [f64; 1] = [0.2];
+const A3: [f64; 2] = [3.0 / 40.0, 9.0 / 40.0];
+const A4: [f64; 3] = [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0];
+const A5: [f64; 4] = [
+    19372.0 / 6561.0,
+    -25360.0 / 2187.0,
+    64448.0 / 6561.0,
+    -212.0 / 729.0,
+];
+const A6: [f64; 5] = [
+    9017.0 / 3168.0,
+    -355.0 / 33.0,
+    46732.0 / 5247.0,
+    49.0 / 176.0,
+    -5103.0 / 18656.0,
+];
+/// Fifth-order weights (also the seventh stage's row: first same as last).
+const B: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+/// Fifth- minus fourth-order weights, stages 1..7.
+const E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+/// Dense-output weights, stages 1..7 (Hairer et al. 1993, §II.6).
+const D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
+fn combine<const N: usize>(x: &[f64; N], h: f64, ks: &[[f64; N]], w: &[f64]) -> [f64; N] {
+    std::array::from_fn(|i| {
+        let mut s = 0.0;
+        for (k, wj) in ks.iter().zip(w) {
+            s += wj * k[i];
+        }
+        x[i] + h * s
+    })
+}
+
+fn rms_norm<const N: usize>(e: &[f64; N], x0: &[f64; N], x1: &[f64; N], tol: &Tolerances) -> f64 {
+    let mut s = 0.0;
+    for i in 0..N {
+        let w = tol.atol + tol.rtol * x0[i].abs().max(x1[i].abs());
+        s += (e[i] / w).powi(2);
+    }
+    (s / N as f64).sqrt()
+}
+
+/// Integrates `sys` from `x0` at `t_start` to `t_end` with Dormand–Prince
+/// 5(4), restarting at every breakpoint inside the interval (sorted or not),
+/// and returns the dense solution.
+pub fn dopri5<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t_start: f64,
+    t_end: f64,
+    x0: [f64; N],
+    breakpoints: &[f64],
+    tol: &Tolerances,
+) -> DenseSolution<N> {
+    let mut sol = DenseSolution {
+        segments: Vec::with_capacity(64),
+        stats: Stats::default(),
+    };
+    let mut cuts: Vec<f64> = breakpoints
+        .iter()
+        .copied()
+        .filter(|b| *b > t_start && *b < t_end)
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.push(t_end);
+    let (mut t, mut x) = (t_start, x0);
+    let mut h = 0.0;
+    for &stop in &cuts {
+        if stop <= t {
+            continue;
+        }
+        let mut k1 = sys.derivatives(t, &x);
+        sol.stats.evaluations += 1;
+        if h == 0.0 {
+            h = initial_step(sys, t, &x, &k1, stop - t, tol, &mut sol.stats);
+        }
+        let mut err_old: f64 = 1e-4;
+        let mut last_rejected = false;
+        while t < stop {
+            h = h.min(tol.max_step);
+            // Land exactly on the stop; avoid a sliver step before it.
+            let remaining = stop - t;
+            let last = h >= remaining * (1.0 - 1e-12) || remaining - h < 1e-3 * h;
+            if last {
+                h = remaining;
+            }
+            let k2 = sys.derivatives(t + C[1] * h, &combine(&x, h, &[k1], &A2));
+            let k3 = sys.derivatives(t + C[2] * h, &combine(&x, h, &[k1, k2], &A3));
+            let k4 = sys.derivatives(t + C[3] * h, &combine(&x, h, &[k1, k2, k3], &A4));
+            let k5 = sys.derivatives(t + C[4] * h, &combine(&x, h, &[k1, k2, k3, k4], &A5));
+            // A step that ends on a breakpoint sees the input's left limit
+            // there (an ideal step steer acts from the next step on).
+            let t_new = if last { stop } else { t + h };
+            let t_right = if last { stop.next_down() } else { t_new };
+            let k6 = sys.derivatives(t_right, &combine(&x, h, &[k1, k2, k3, k4, k5], &A6));
+            let x_new = combine(&x, h, &[k1, k2, k3, k4, k5, k6], &B);
+            let k7 = sys.derivatives(t_right, &x_new);
+            sol.stats.evaluations += 6;
+            let ks = [k1, k2, k3, k4, k5, k6, k7];
+            let e: [f64; N] =
+                std::array::from_fn(|i| h * ks.iter().zip(&E).map(|(k, w)| w * k[i]).sum::<f64>());
+            let err = rms_norm(&e, &x, &x_new, tol);
+            if !err.is_finite() {
+                h *= 0.1;
+                sol.stats.rejected += 1;
+                last_rejected = true;
+                continue;
+            }
+            // PI step-size control.
+            let fac11 = err.powf(0.2 - 0.04 * 0.75);
+            if err <= 1.0 {
+                let fac = (fac11 / err_old.powf(0.04) / 0.9).clamp(0.1, 5.0);
+                let mut h_new = h / fac;
+                if last_rejected {
+                    h_new = h_new.min(h);
+                }
+                err_old = err.max(1e-4);
+                let dx: [f64; N] = std::array::from_fn(|i| x_new[i] - x[i]);
+                let bspl: [f64; N] = std::array::from_fn(|i| h * k1[i] - dx[i]);
+                sol.segments.push(Segment {
+                    t0: t,
+                    h: t_new - t,
+                    r: [
+                        x,
+                        dx,
+                        bspl,
+                        std::array::from_fn(|i| dx[i] - h * k7[i] - bspl[i]),
+                        std::array::from_fn(|i| {
+                            h * ks.iter().zip(&D).map(|(k, w)| w * k[i]).sum::<f64>()
+                        }),
+                    ],
+                });
+                sol.stats.accepted += 1;
+                (t, x, k1) = (t_new, x_new, k7);
+                if !last {
+                    h = h_new;
+                }
+                last_rejected = false;
+            } else {
+                h /= (fac11 / 0.9).min(5.0);
+                sol.stats.rejected += 1;
+                last_rejected = true;
+            }
+        }
+    }
+    sol
+}
+
+/// Hairer's starting step: small enough that an explicit Euler step's
+/// error stays near the tolerance.
+fn initial_step<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t: f64,
+    x: &[f64; N],
+    f0: &[f64; N],
+    span: f64,
+    tol: &Tolerances,
+    stats: &mut Stats,
+) -> f64 {
+    let scale = |i: usize| tol.atol + tol.rtol * x[i].abs();
+    let norm =
+        |v: &[f64; N]| ((0..N).map(|i| (v[i] / scale(i)).powi(2)).sum::<f64>() / N as f64).sqrt();
+    let (d0, d1) = (norm(x), norm(f0));
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        1e-6
+    } else {
+        0.01 * d0 / d1
+    }
+    .min(span)
+    .min(tol.max_step);
+    let x1: [f64; N] = std::array::from_fn(|i| x[i] + h0 * f0[i]);
+    let f1 = sys.derivatives(t + h0, &x1);
+    stats.evaluations += 1;
+    let diff: [f64; N] = std::array::from_fn(|i| f1[i] - f0[i]);
+    let d2 = norm(&diff) / h0;
+    let h1 = if d1.max(d2) <= 1e-15 {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / d1.max(d2)).powf(0.2)
+    };
+    (100.0 * h0).min(h1).min(span).min(tol.max_step)
+}
+
+/// One classical fourth-order Runge–Kutta step of `sys` from (t, x).
+pub fn rk4_step<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t: f64,
+    x: &[f64; N],
+    h: f64,
+) -> [f64; N] {
+    let k1 = sys.derivatives(t, x);
+    let k2 = sys.derivatives(t + 0.5 * h, &combine(x, h, &[k1], &[0.5]));
+    let k3 = sys.derivatives(t + 0.5 * h, &combine(x, h, &[k2], &[0.5]));
+    let k4 = sys.derivatives(t + h, &combine(x, h, &[k3], &[1.0]));
+    combine(
+        x,
+        h,
+        &[k1, k2, k3, k4],
+        &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A damped oscillator ẍ + 2ζω ẋ + ω² x = 0 with a closed form.
+    struct Oscillator {
+        omega: f64,
+        zeta: f64,
+        calls: usize,
+    }
+
+    impl OdeSystem<2> for Oscillator {
+        fn derivatives(&mut self, _t: f64, x: &[f64; 2]) -> [f64; 2] {
+            self.calls += 1;
+            [
+                x[1],
+                -2.0 * self.zeta * self.omega * x[1] - self.omega * self.omega * x[0],
+            ]
+        }
+    }
+
+    fn exact(o: &Oscillator, t: f64) -> f64 {
+        // x(0) = 1, ẋ(0) = 0, underdamped.
+        let wd = o.omega * (1.0 - o.zeta * o.zeta).sqrt();
+        let s = o.zeta * o.omega;
+        (-s * t).exp() * ((wd * t).cos() + s / wd * (wd * t).sin())
+    }
+
+    #[test]
+    fn dopri5_meets_its_tolerance_on_a_damped_oscillator() {
+        let mut errs = Vec::new();
+        for rtol in [1e-4, 1e-6, 1e-8, 1e-10] {
+            let mut o = Oscillator {
+                omega: 12.0,
+                zeta: 0.3,
+                calls: 0,
+            };
+            let tol = Tolerances {
+                rtol,
+                atol: rtol * 1e-2,
+                max_step: 1.0,
+            };
+            let sol = dopri5(&mut o, 0.0, 3.0, [1.0, 0.0], &[], &tol);
+            assert_eq!(sol.stats.evaluations, o.calls);
+            // Dense output between steps as well as at them.
+            let err = (0..=3000)
+                .map(|i| 1e-3 * i as f64)
+                .map(|t| (sol.state(t)[0] - exact(&o, t)).abs())
+                .fold(0.0, f64::max);
+            errs.push((rtol, err, sol.stats.accepted));
+        }
+        for (rtol, err, _) in &errs {
+            // The global error of a tolerance-controlled method stays within a
+            // modest multiple of the tolerance.
+            assert!(*err < 50.0 * rtol, "rtol {rtol}: error {err}");
+        }
+        // Fifth order: 100× tighter tolerance costs about 100^(1/5) ≈ 2.5× the steps.
+        let ratio = errs[3].2 as f64 / errs[2].2 as f64;
+        assert!((1.8..3.5).contains(&ratio), "{errs:?}");
+    }
+
+    #[test]
+    fn dense_output_is_fourth_order_between_steps() {
+        // With steps forced long, the interpolant's own error dominates and
+        // must fall as h^5 per step (local order of a 4th-order interpolant).
+        let run = |h: f64| {
+            let mut o = Oscillator {
+                omega: 1.0,
+                zeta: 0.0,
+                calls: 0,
+            };
+            let tol = Tolerances {
+                rtol: 1.0,
+                atol: 1.0,
+                max_step: h,
+            };
+            let sol = dopri5(&mut o, 0.0, h, [1.0, 0.0], &[], &tol);
+            (0..=20)
+                .map(|i| h * i as f64 / 20.0)
+                .map(|t| (sol.state(t)[0] - t.cos()).abs())
+                .fold(0.0, f64::max)
+        };
+        let (e1, e2) = (run(0.2), run(0.1));
+        let order = (e1 / e2).log2();
+        assert!(
+            (4.5..6.0).contains(&order),
+            "local order {order} ({e1}, {e2})"
+        );
+    }
+
+    /// ẋ = min(t, 1): a kink in the input (as at the end of a steer ramp)
+    /// that the solver must not straddle; x = t²/2, then 1/2 + (t − 1).
+    struct Ramp;
+    impl OdeSystem<1> for Ramp {
+        fn derivatives(&mut self, t: f64, _x: &[f64; 1]) -> [f64; 1] {
+            [t.min(1.0)]
+        }
+    }
+
+    #[test]
+    fn breakpoints_land_exactly_and_keep_kinks_exact() {
+        let tol = Tolerances::default();
+        let sol = dopri5(&mut Ramp, 0.0, 2.0, [0.0], &[1.0, 5.0, -1.0], &tol);
+        assert!(sol.step_times().any(|t| t == 1.0));
+        assert_eq!(sol.end(), 2.0);
+        let exact = |t: f64| if t <= 1.0 { 0.5 * t * t } else { t - 0.5 };
+        // Each piece is a polynomial the fifth-order method integrates exactly.
+        for t in [0.3, 0.999, 1.0, 1.001, 1.5, 2.0] {
+            assert!((sol.state(t)[0] - exact(t)).abs() < 1e-13, "t {t}");
+        }
+        // Without the breakpoint a step straddles the kink and is inexact.
+        let loose = Tolerances {
+            rtol: 1e-3,
+            atol: 1e-3,
+            max_step: 0.3,
+        };
+        let straddled = dopri5(&mut Ramp, 0.0, 2.0, [0.0], &[], &loose);
+        assert!(!straddled.step_times().any(|t| t == 1.0));
+        assert!((straddled.state(2.0)[0] - 1.5).abs() > 1e-8);
+    }
+
+    /// ẋ = 1 before t = 1, 0 from t = 1 on: a jump (an ideal step input).
+    struct Jump;
+    impl OdeSystem<1> for Jump {
+        fn derivatives(&mut self, t: f64, _x: &[f64; 1]) -> [f64; 1] {
+            [if t < 1.0 { 1.0 } else { 0.0 }]
+        }
+    }
+
+    #[test]
+    fn a_jump_at_a_breakpoint_acts_from_the_breakpoint_on() {
+        let sol = dopri5(&mut Jump, 0.0, 2.0, [0.0], &[1.0], &Tolerances::default());
+        for t in [0.5, 0.999, 1.0, 1.5, 2.0] {
+            assert!(
+                (sol.state(t)[0] - t.min(1.0)).abs() < 1e-13,
+                "t {t}: {}",
+                sol.state(t)[0]
+            );
+        }
+    }
+
+    #[test]
+    fn crossings_are_located_to_the_tolerance() {
+        let mut o = Oscillator {
+            omega: 2.0,
+            zeta: 0.0,
+            calls: 0,
+        };
+        let sol = dopri5(&mut o, 0.0, 4.0, [1.0, 0.0], &[], &Tolerances::default());
+        // cos(2t) = 0.5 first at t = π/6.
+        let t = sol
+            .first_crossing(0.0, 0.01, 1e-12, |_, x| x[0] - 0.5)
+            .unwrap();
+        assert!((t - std::f64::consts::PI / 6.0).abs() < 1e-8, "{t}");
+        // After it, the next crossing is where cos(2t) = 0.5 again: 5π/6.
+        let t2 = sol
+            .first_crossing(t + 1e-6, 0.01, 1e-12, |_, x| x[0] - 0.5)
+            .unwrap();
+        assert!((t2 - 5.0 * std::f64::consts::PI / 6.0).abs() < 1e-8, "{t2}");
+        assert!(sol
+            .first_crossing(0.0, 0.01, 1e-12, |_, x| x[0] - 2.0)
+            .is_none());
+    }
+
+    #[test]
+    fn rk4_is_fourth_order_on_the_oscillator() {
+        let run = |h: f64| {
+            let mut o = Oscillator {
+                omega: 3.0,
+                zeta: 0.1,
+                calls: 0,
+            };
+            let n = (2.0 / h).round() as usize;
+            let mut x = [1.0, 0.0];
+            let mut worst: f64 = 0.0;
+            for i in 0..n {
+                x = rk4_step(&mut o, i as f64 * h, &x, h);
+                worst = worst.max((x[0] - exact(&o, (i + 1) as f64 * h)).abs());
+            }
+            worst
+        };
+        let order = (run(0.02) / run(0.01)).log2();
+        assert!((3.8..4.2).contains(&order), "{order}");
+    }
+}

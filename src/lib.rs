@@ -3,7 +3,39 @@
 //! pluggable nonlinear tyres (Gim, simplified Magic Formula, UniTire, PAC89).
 //!
 //! SI units and radians everywhere; ISO 8855 axes (x forward, y left, z up;
-//! positive steer turns left). See the README for the file formats.
+//! positive steer turns left). The measured-data formats are in
+//! `docs/FORMATS.md`, the project's own files in the README.
+//!
+//! # Capabilities and where they live
+//! | capability | module |
+//! |---|---|
+//! | tyre models (one file each) and their parameter vectors | [`tyre`] |
+//! | vehicle parameters and the right-hand side of the 2-DOF model | [`vehicle`] |
+//! | integration (RK4, Dormand–Prince 5(4) with dense output) | [`sim`] |
+//! | step, ramp, sine, sweep and replayed manoeuvres | [`manoeuvre`] |
+//! | GB/T 6323 / ISO 7401 step-steer metrics, total variances, Er | [`metrics`] |
+//! | PSO variants, Levenberg–Marquardt, modified Gauss–Newton | [`optim`] |
+//! | steering equilibria, stability, bifurcations | [`equilibria`] |
+//! | tyre identification from rig data | [`identify`] |
+//! | cornering stiffness ↔ handling maps and their inverse | [`study`] |
+//! | the sim-to-real gap of measured runs | [`diagnose`] |
+//! | reading and validating files | [`io`] |
+//! | CSV, JSON and PNG outputs | [`report`] |
+//!
+//! # References
+//! - Zhang Jiaxu, Li Jing (2017): UniTire parameter identification by a
+//!   hybrid of PSO and a modified Gauss–Newton method. J. Jilin Univ.
+//!   (Eng. Techn.) 47(1). Used in [`identify`], [`tyre`] (UniTire), [`optim`].
+//! - Zhang Lixia, Liu Jiaqi, Pan Fuquan, Zhang Wencai, Zheng Chaoyi (2021):
+//!   two-stage identification of PAC89 parameters by an improved PSO. Science
+//!   Technology and Engineering 21(16). Used in [`identify`], [`optim`].
+//! - Wei Yaobing et al. (2010): MF-Tyre 6.1.1 identification by
+//!   Levenberg–Marquardt, with a survey of tyre models.
+//! - Li Jie, Jia Changwang, Zhao Qi (Jilin University, undated): nonlinear
+//!   steering equilibria of a 2-DOF vehicle by PSO. Used in [`equilibria`].
+//! - Wang Guolin, Liang Xinxin (Jiangsu University, undated): tyre cornering
+//!   stiffness and handling by inverse dynamics. Used in [`study`],
+//!   [`metrics`].
 
 pub mod diagnose;
 pub mod equilibria;

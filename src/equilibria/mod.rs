@@ -119,13 +119,26 @@ pub fn residual_to(model: &VehicleModel, c: &Condition, x: [f64; 2], tolerance: 
         ay: [ay; 3],
         slope: 1.0,
     };
+    residual_seeded(model, c, x, tolerance, &mut seed)
+}
+
+/// The right-hand side with the load-transfer solve started from `seed`
+/// (and its solution left there): a point next to one just evaluated (a
+/// finite-difference neighbour) then costs one or two tyre-set evaluations.
+pub fn residual_seeded(
+    model: &VehicleModel,
+    c: &Condition,
+    x: [f64; 2],
+    tolerance: f64,
+    seed: &mut LoadTransferSeed,
+) -> [f64; 2] {
     let o = model.evaluate_to(
         &State {
             beta: x[0],
             yaw_rate: x[1],
         },
         &c.inputs(),
-        &mut seed,
+        seed,
         tolerance,
     );
     [o.beta_rate, o.yaw_acceleration]

@@ -19,9 +19,11 @@
 //! `F(x)·Π(1 + ρ²/‖x − x_i‖²)`, so the swarm is pushed away from them; the
 //! search stops after a round that finds nothing new.
 
-use super::{describe, distance, polish, residual_to, Condition, Equilibrium, SearchBox};
+use super::{
+    describe, distance, polish, residual_seeded, residual_to, Condition, Equilibrium, SearchBox,
+};
 use crate::optim::{Boundary, Pso, Topology};
-use crate::vehicle::VehicleModel;
+use crate::vehicle::{LoadTransferSeed, VehicleModel};
 use serde::{Deserialize, Serialize};
 
 /// PSO fitness.
@@ -204,8 +206,11 @@ pub fn search(
     // the box: β̇ relative to β_max, ṙ relative to r_max per second.
     let fitness = |x: &[f64]| {
         let x = [x[0], x[1]];
-        let residual = |x| residual_to(model, c, x, 1e-9);
-        let f = residual(x);
+        let mut solved = LoadTransferSeed {
+            ay: [c.speed * x[1] + model.bank_acceleration(); 3],
+            slope: 1.0,
+        };
+        let f = residual_seeded(model, c, x, 1e-9, &mut solved);
         match settings.fitness {
             Fitness::Residual => (f[0] / scale[0]).powi(2) + (f[1] / scale[1]).powi(2),
             Fitness::NewtonStep => {
@@ -214,7 +219,13 @@ pub fn search(
                     let h = 1e-6 * scale[k];
                     let mut xp = x;
                     xp[k] += h;
-                    let fp = residual(xp);
+                    // The neighbour's load-transfer solve starts from the
+                    // base point's solution (a constant prediction).
+                    let mut seed = LoadTransferSeed {
+                        ay: [solved.ay[0]; 3],
+                        slope: solved.slope,
+                    };
+                    let fp = residual_seeded(model, c, xp, 1e-9, &mut seed);
                     j[0][k] = (fp[0] - f[0]) / h;
                     j[1][k] = (fp[1] - f[1]) / h;
                 }

@@ -271,3 +271,37 @@ fn checks_after_parsing_name_the_real_column() {
     let e = stderr(&o);
     assert!(e.contains("rig.csv:3:2:") && e.contains("-3000"), "{e}");
 }
+
+#[test]
+fn wheel_lift_off_keeps_the_weight_and_is_reported() {
+    // A tall, narrow vehicle in a hard step: the inner wheels lift.
+    let tall = VEHICLE
+        .replace("cg_height = 0.55", "cg_height = 1.2")
+        .replace("track_front = 1.55", "track_front = 0.9");
+    let step = STEP.replace("steer = 0.0174533", "steer = 0.1");
+    let dir = scenario(&tall, GIM, &step);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("lift-off"), "{text}");
+    let csv = fs::read_to_string(out.join("history.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
+    let fz = ["fz_fl", "fz_fr", "fz_rl", "fz_rr"].map(col);
+    let weight = 1530.0 * 9.80665;
+    let mut zero_rows = 0;
+    for line in lines {
+        let v: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
+        let total: f64 = fz.iter().map(|&i| v[i]).sum();
+        assert!((total - weight).abs() < 1e-6 * weight, "{line}");
+        zero_rows += usize::from(v[fz[0]] == 0.0);
+    }
+    assert!(zero_rows > 0, "the inner front wheel must lift");
+}

@@ -1,0 +1,147 @@
+//! The jobs that `peer/scipy_peer.py` times in SciPy, timed here in the
+//! crate on the same machine, printed as one JSON object:
+//! - a 10 s GB/T 6323 step steer (80 km/h, 0.012 rad, 0.1 s rise) of the
+//!   compact sedan on four PAC89 wheels (the Adams example) with lateral load
+//!   transfer and exact kinematics, by Dormand–Prince 5(4) at the default
+//!   tolerances; its yaw rate every 10 ms goes to `peer/out/step_crate.csv`
+//!   so the script checks it against its own tight reference;
+//! - the three steering-equilibrium sweeps of Li, Jia & Zhao (steer,
+//!   friction, speed; `scenarios/seed003_*.toml`, without the bifurcation
+//!   search), equilibria per condition;
+//! - a PAC89 lateral fit (PSO + Levenberg–Marquardt) of 3 loads × 85 slip
+//!   angles with 1 % noise, from the Adams example scaled by 1.1; the data
+//!   go to `peer/out/fit_data.csv` so the script fits the same points.
+//!
+//! Run: `cargo run --release --example peer_jobs -- [repeats]`.
+
+use handling::equilibria::sweep;
+use handling::identify::data::seed000_conditions;
+use handling::identify::{fit_lateral, FitSettings};
+use handling::io::sweep::load_sweep;
+use handling::manoeuvre::{Manoeuvre, StepSteer};
+use handling::sim::{Integrator, Method, Tolerances};
+use handling::tyre::{Pac89, Tyre};
+use handling::vehicle::{Kinematics, State, Vehicle, VehicleModel};
+use std::path::Path;
+use std::sync::atomic::AtomicUsize;
+use std::time::Instant;
+
+fn median_seconds(repeats: usize, mut job: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..repeats)
+        .map(|_| {
+            let s = Instant::now();
+            job();
+            s.elapsed().as_secs_f64()
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+fn main() {
+    let repeats: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(50);
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    std::fs::create_dir_all(root.join("peer/out")).expect("peer/out");
+
+    // Step steer.
+    let mut model = VehicleModel::new(
+        Vehicle::seed004_sedan(),
+        Tyre::Pac89(Pac89::adams_example()),
+        Tyre::Pac89(Pac89::adams_example()),
+    );
+    model.options.kinematics = Kinematics::Exact;
+    model.options.load_transfer = true;
+    let man = Manoeuvre::StepSteer(StepSteer {
+        speed: 22.2222,
+        amplitude: 0.012,
+        trim: 0.0,
+        start: 1.0,
+        rise_time: 0.1,
+        end: 10.0,
+    });
+    let tol = Tolerances::default();
+    let integ = Integrator {
+        step: 0.01,
+        method: Method::Dopri5(tol),
+        ..Integrator::default()
+    };
+    let (h, sol) = integ.run_dopri5(&model, &man, State::default(), &tol);
+    let csv: String = std::iter::once("t,yaw_rate,beta\n".to_string())
+        .chain(
+            h.t.iter()
+                .zip(&h.yaw_rate)
+                .zip(&h.beta)
+                .map(|((t, r), b)| format!("{t},{r:e},{b:e}\n")),
+        )
+        .collect();
+    std::fs::write(root.join("peer/out/step_crate.csv"), csv).expect("write");
+    let step_steer = median_seconds(repeats * 10, || {
+        std::hint::black_box(integ.run_dopri5(&model, &man, State::default(), &tol));
+    });
+
+    // Equilibrium sweeps.
+    let mut sweeps = Vec::new();
+    for name in ["steer", "friction", "speed"] {
+        let s = load_sweep(&root.join(format!("scenarios/seed003_{name}.toml"))).expect("sweep");
+        let run = || {
+            sweep::run(
+                &s.model,
+                &s.grid,
+                &s.search_box,
+                &s.pso,
+                false,
+                &AtomicUsize::new(0),
+            )
+        };
+        let r = run();
+        let counts: Vec<usize> = r
+            .points
+            .iter()
+            .map(|p| p.found.iter().filter(|f| f.in_box).count())
+            .collect();
+        let seconds = median_seconds(repeats.div_ceil(5).max(3), || {
+            std::hint::black_box(run());
+        });
+        sweeps.push(format!(
+            "{{\"sweep\": \"{name}\", \"seconds\": {seconds:e}, \"equilibria_in_box\": {counts:?}}}"
+        ));
+    }
+
+    // PAC89 fit.
+    let truth = Tyre::Pac89(Pac89::adams_example());
+    let (data, noise_sigma) = seed000_conditions(&truth, 0.01, 1);
+    let mut start = Pac89::adams_example();
+    start
+        .a
+        .iter_mut()
+        .enumerate()
+        .filter(|(i, _)| ![5, 8, 11].contains(i))
+        .for_each(|(_, v)| *v *= 1.1);
+    let start = Tyre::Pac89(start);
+    let rows: String = std::iter::once("alpha,fz,fy\n".to_string())
+        .chain(
+            data.iter()
+                .flat_map(|c| c.points.iter())
+                .map(|p| format!("{:e},{:e},{:e}\n", p[0], p[1], p[4])),
+        )
+        .collect();
+    std::fs::write(root.join("peer/out/fit_data.csv"), rows).expect("write");
+    let settings = FitSettings::new(1);
+    let fit = fit_lateral(&start, &data, &settings).expect("fit");
+    let fit_seconds = median_seconds(3, || {
+        std::hint::black_box(fit_lateral(&start, &data, &settings).unwrap());
+    });
+    println!(
+        "{{\"threads\": {}, \"step_steer\": {{\"seconds\": {step_steer:e}, \"steps\": {}, \"evaluations\": {}, \"rtol\": {:e}}}, \
+         \"equilibria\": [{}], \"pac89_fit\": {{\"seconds\": {fit_seconds:e}, \"sigma_percent\": {}, \"noise_sigma_percent\": {noise_sigma}}}}}",
+        rayon::current_num_threads(),
+        sol.stats.accepted,
+        sol.stats.evaluations,
+        tol.rtol,
+        sweeps.join(", "),
+        fit.sigma_percent,
+    );
+}

@@ -1,7 +1,8 @@
 //! `identify`: fit a tyre model to rig data.
 
 use anyhow::{anyhow, Context, Result};
-use handling::identify::data::{group, read_rig, Grouping};
+use handling::identify::data::read_rig;
+use handling::identify::grouping::{group, Grouping, SlipAxis};
 use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_bytes, write_json};
@@ -23,6 +24,7 @@ pub struct Options<'a> {
     pub camber: Option<f64>,
     pub local: &'a str,
     pub alpha_bin_deg: f64,
+    pub kappa_bin: f64,
 }
 
 /// `handling identify`.
@@ -48,14 +50,17 @@ pub fn identify(o: &Options) -> Result<()> {
         pressure: o.pressure,
         camber: o.camber,
         alpha_bin: o.alpha_bin_deg.to_radians(),
+        kappa_bin: o.kappa_bin,
         ..Grouping::default()
     };
     let long_view = data.longitudinal_view();
-    let conditions = if data.has_lateral() {
-        group(&data, &grouping)
+    let grouped = if data.has_lateral() {
+        group(o.data, &data, &grouping, SlipAxis::Angle)?
     } else {
-        group(long_view.as_ref().expect("checked above"), &grouping)
+        let view = long_view.as_ref().expect("checked above");
+        group(o.data, view, &grouping, SlipAxis::Ratio)?
     };
+    let conditions = grouped.conditions;
     if conditions.is_empty() {
         return Err(anyhow!(
             "{}: no test condition found in the data",
@@ -80,19 +85,16 @@ pub fn identify(o: &Options) -> Result<()> {
     for f in [&out, &report_path, &png_path] {
         refuse_overwrite(f, &[o.data.to_path_buf()])?;
     }
-    let used: usize = conditions.iter().map(|c| c.samples).sum();
-    let points: usize = conditions.iter().map(|c| c.points.len()).sum();
     println!(
-        "{}: {} of {} samples in {} conditions, thinned to {} points ({}° slip-angle bins); model {}, seed {}",
+        "{}: {} conditions; model {}, seed {}",
         o.data.display(),
-        used,
-        data.len(),
         conditions.len(),
-        points,
-        o.alpha_bin_deg,
         o.model,
         o.seed
     );
+    for line in grouped.report.lines() {
+        println!("  {line}");
+    }
     let first = if data.has_lateral() {
         Channel::LateralForce
     } else {
@@ -201,10 +203,17 @@ pub fn identify(o: &Options) -> Result<()> {
     // The longitudinal force, where the data have it and the model has one.
     let mut fitted_fx = first == Channel::LongitudinalForce;
     let mut long_conditions = Vec::new();
+    let mut long_report = None;
     if let (Some(view), true, Channel::LateralForce) =
         (&long_view, !fit.tyre.longitudinal_names().is_empty(), first)
     {
-        long_conditions = group(view, &grouping);
+        // The same pressure and camber selection as the lateral data.
+        let g = group(o.data, view, &grouping, SlipAxis::Ratio)?;
+        for line in g.report.lines() {
+            println!("  longitudinal: {line}");
+        }
+        long_conditions = g.conditions;
+        long_report = Some(g.report);
         let fx = fit_channel(
             &fit.tyre,
             Channel::LongitudinalForce,
@@ -221,10 +230,10 @@ pub fn identify(o: &Options) -> Result<()> {
         fitted_fx = true;
     }
     report["data"] = serde_json::json!(o.data.display().to_string());
-    report["samples_used"] = serde_json::json!(used);
-    report["samples_total"] = serde_json::json!(data.len());
-    report["points"] = serde_json::json!(points);
-    report["alpha_bin_deg"] = serde_json::json!(o.alpha_bin_deg);
+    report["grouping"] = serde_json::to_value(&grouped.report)?;
+    if let Some(r) = &long_report {
+        report["longitudinal_grouping"] = serde_json::to_value(r)?;
+    }
     let text = toml::to_string(&fit.tyre).context("serialising the fitted tyre")?;
     write_bytes(&out, format!("{header}{text}").as_bytes())?;
     write_json(&report_path, &report)?;

@@ -64,18 +64,25 @@ enum Command {
         /// Tyre file to write (default: out/<data>_<model>.toml).
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Keep only the pressure level nearest this, Pa.
+        /// Keep only the pressure level holding this value, Pa (an error when
+        /// the file has no pressure column or no level near it).
         #[arg(long)]
         pressure: Option<f64>,
-        /// Keep only the camber level nearest this, rad (default: all).
+        /// Keep only the camber level holding this value, rad (default: all;
+        /// an error when the file has no camber column or no level near it).
         #[arg(long)]
         camber: Option<f64>,
         /// Local polish: lm, gn (seed 000's modified Gauss-Newton) or none.
         #[arg(long, default_value = "lm")]
         local: String,
-        /// Slip-angle bin for thinning, degrees (0: no thinning).
+        /// Slip-angle bin for thinning, degrees (0: no thinning): the
+        /// samples of one condition in one bin are averaged; a lone sample is
+        /// kept as it is.
         #[arg(long, default_value_t = 0.25)]
         bin_deg: f64,
+        /// Slip-ratio bin for thinning longitudinal data (0: no thinning).
+        #[arg(long, default_value_t = 0.0025)]
+        bin_kappa: f64,
     },
     /// The sim-to-real gap of a campaign (a TOML file or a folder with
     /// vehicle.toml, runs/*.csv and optionally tyre_rig.csv): where the base
@@ -134,6 +141,7 @@ pub fn run() -> ExitCode {
             camber,
             local,
             bin_deg,
+            bin_kappa,
         } => identify::identify(&identify::Options {
             data: &data,
             model: &model,
@@ -143,6 +151,7 @@ pub fn run() -> ExitCode {
             camber,
             local: &local,
             alpha_bin_deg: bin_deg,
+            kappa_bin: bin_kappa,
         }),
         Command::Diagnose { campaign, out } => diagnose::diagnose(&campaign, out.as_deref()),
         Command::Synth { effects, seed, out } => diagnose::synth(&effects, seed, &out),

@@ -33,7 +33,8 @@ use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, Channel, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::gap::{channel_gap, regime_acceleration, run_gap, ChannelGap, PartGap, Record};
 use super::model::{Augmented, Observed};
-use crate::identify::data::{group, read_rig, Grouping};
+use crate::identify::data::read_rig;
+use crate::identify::grouping::{group, Grouping, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre, FitSettings};
 use crate::io::campaign::{BaseTyres, Campaign};
 use crate::io::MeasuredRun;
@@ -533,7 +534,9 @@ fn base_models(
         )),
         BaseTyres::Rig { path, model } => {
             let data = read_rig(path).map_err(|e| e.to_string())?;
-            let conditions = group(&data, &Grouping::default());
+            let conditions = group(path, &data, &Grouping::default(), SlipAxis::Angle)
+                .map_err(|e| e.to_string())?
+                .conditions;
             if conditions.is_empty() {
                 return Err(format!(
                     "{}: no lateral test condition in the rig data",

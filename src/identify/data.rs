@@ -1,13 +1,7 @@
-//! Tyre rig data (`FORMATS.md`): reading, grouping of continuous sweeps into
-//! test conditions (nominal load, camber, pressure) and thinning.
-//!
-//! Real rig data is continuous sweeps with transitions between conditions.
-//! Each grouping variable is histogrammed; bins holding at least 1 % of the
-//! samples are kept, adjacent kept bins merge into a level, the level's
-//! nominal value is the median of its samples, and samples in transitions
-//! (outside every level) are dropped. Thinning averages the samples of each
-//! condition in slip-angle bins (default 0.25°), which also averages the
-//! hysteresis of up and down sweeps. Units: N, rad, Pa, m/s.
+//! Tyre rig data (`docs/FORMATS.md`): reading and checking a rig file, and
+//! test points generated from a known tyre at the identification papers'
+//! conditions. Grouping into test conditions is in [`super::grouping`].
+//! Units: N, rad, Pa, m/s.
 
 use crate::error::InputError;
 use crate::io::read_columns;
@@ -26,6 +20,8 @@ pub struct RigData {
     pub mz: Option<Vec<f64>>,
     /// Camber, rad (0 when absent).
     pub camber: Vec<f64>,
+    /// Whether the file has a `camber` column.
+    pub camber_measured: bool,
     /// Inflation pressure, Pa (if measured).
     pub pressure: Option<Vec<f64>>,
     /// Rig speed, m/s (if measured).
@@ -82,8 +78,10 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         });
     }
     let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
+    let camber = c.take_optional("camber");
     Ok(RigData {
-        camber: c.take_optional("camber").unwrap_or_else(|| vec![0.0; n]),
+        camber_measured: camber.is_some(),
+        camber: camber.unwrap_or_else(|| vec![0.0; n]),
         mz: c.take_optional("mz"),
         pressure: c.take_optional("pressure"),
         speed: c.take_optional("speed"),
@@ -126,187 +124,11 @@ impl RigData {
     }
 }
 
-/// A level of a grouping variable: [lo, hi] and its nominal value.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Level {
-    /// Lower edge.
-    pub lo: f64,
-    /// Upper edge.
-    pub hi: f64,
-    /// Median of the samples in it.
-    pub nominal: f64,
-}
-
-/// Levels of `values` from a histogram of bin width `bin`.
-pub fn levels(values: &[f64], bin: f64) -> Vec<Level> {
-    let (min, max) = values
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-            (a.min(v), b.max(v))
-        });
-    if !min.is_finite() {
-        return Vec::new();
-    }
-    let nb = (((max - min) / bin).floor() as usize + 1).min(100_000);
-    let mut counts = vec![0usize; nb];
-    for v in values {
-        counts[(((v - min) / bin) as usize).min(nb - 1)] += 1;
-    }
-    let keep = (values.len() / 100).max(1);
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < nb {
-        if counts[i] < keep {
-            i += 1;
-            continue;
-        }
-        let mut j = i;
-        while j + 1 < nb && counts[j + 1] >= keep {
-            j += 1;
-        }
-        let (lo, hi) = (min + i as f64 * bin, min + (j + 1) as f64 * bin);
-        let mut inside: Vec<f64> = values
-            .iter()
-            .copied()
-            .filter(|v| *v >= lo && *v <= hi)
-            .collect();
-        inside.sort_by(f64::total_cmp);
-        out.push(Level {
-            lo,
-            hi,
-            nominal: inside[inside.len() / 2],
-        });
-        i = j + 1;
-    }
-    out
-}
-
 /// One fit point: slip angle (rad), load (N), camber (rad), speed (m/s),
 /// lateral force (N), aligning moment (N·m, NaN when not measured).
 pub type Point = [f64; 6];
 
-/// One test condition and the points of it used in the fit.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Condition {
-    /// Nominal load, N.
-    pub fz: f64,
-    /// Nominal camber, rad.
-    pub camber: f64,
-    /// Nominal pressure, Pa (if measured).
-    pub pressure: Option<f64>,
-    /// Raw samples in it.
-    pub samples: usize,
-    /// Fit points (thinned).
-    pub points: Vec<Point>,
-}
-
-/// Grouping and thinning settings.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Grouping {
-    /// Load histogram bin, N.
-    pub load_bin: f64,
-    /// Camber histogram bin, rad.
-    pub camber_bin: f64,
-    /// Pressure histogram bin, Pa.
-    pub pressure_bin: f64,
-    /// Slip-angle bin for thinning, rad (0: no thinning).
-    pub alpha_bin: f64,
-    /// Keep only this pressure level (nearest nominal), Pa.
-    pub pressure: Option<f64>,
-    /// Keep only this camber level (nearest nominal), rad.
-    pub camber: Option<f64>,
-    /// Speed when the data has none, m/s.
-    pub default_speed: f64,
-}
-
-impl Default for Grouping {
-    fn default() -> Self {
-        Self {
-            load_bin: 100.0,
-            camber_bin: 0.25f64.to_radians(),
-            pressure_bin: 2000.0,
-            alpha_bin: 0.25f64.to_radians(),
-            pressure: None,
-            camber: None,
-            default_speed: 10.0,
-        }
-    }
-}
-
-fn nearest(levels: &[Level], want: Option<f64>) -> Option<usize> {
-    let w = want?;
-    (0..levels.len()).min_by(|a, b| {
-        (levels[*a].nominal - w)
-            .abs()
-            .total_cmp(&(levels[*b].nominal - w).abs())
-    })
-}
-
-fn find(levels: &[Level], v: f64) -> Option<usize> {
-    levels.iter().position(|l| v >= l.lo && v <= l.hi)
-}
-
-/// Groups the samples into conditions and thins each.
-pub fn group(d: &RigData, g: &Grouping) -> Vec<Condition> {
-    let loads = levels(&d.fz, g.load_bin);
-    let cambers = levels(&d.camber, g.camber_bin);
-    let pressures = d.pressure.as_ref().map(|p| levels(p, g.pressure_bin));
-    let want_p = pressures.as_ref().and_then(|p| nearest(p, g.pressure));
-    let want_c = nearest(&cambers, g.camber);
-    let mut out: Vec<(usize, usize, Option<usize>, Vec<usize>)> = Vec::new();
-    for i in 0..d.len() {
-        let (Some(l), Some(c)) = (find(&loads, d.fz[i]), find(&cambers, d.camber[i])) else {
-            continue;
-        };
-        let p = match (&pressures, &d.pressure) {
-            (Some(levels), Some(p)) => match find(levels, p[i]) {
-                Some(k) => Some(k),
-                None => continue,
-            },
-            _ => None,
-        };
-        if want_c.is_some_and(|w| w != c) || (want_p.is_some() && p != want_p) {
-            continue;
-        }
-        match out.iter_mut().find(|e| e.0 == l && e.1 == c && e.2 == p) {
-            Some(e) => e.3.push(i),
-            None => out.push((l, c, p, vec![i])),
-        }
-    }
-    out.sort_by_key(|a| (a.2, a.1, a.0));
-    out.into_iter()
-        .map(|(l, c, p, idx)| {
-            let speed = |i: usize| d.speed.as_ref().map_or(g.default_speed, |s| s[i]);
-            let mz = |i: usize| d.mz.as_ref().map_or(f64::NAN, |m| m[i]);
-            let point = |i: usize| [d.alpha[i], d.fz[i], d.camber[i], speed(i), d.fy[i], mz(i)];
-            let points: Vec<Point> = if g.alpha_bin > 0.0 {
-                let mut bins: std::collections::BTreeMap<i64, (Point, usize)> = Default::default();
-                for &i in &idx {
-                    let e = bins
-                        .entry((d.alpha[i] / g.alpha_bin).round() as i64)
-                        .or_insert(([0.0; 6], 0));
-                    for (acc, v) in e.0.iter_mut().zip(point(i)) {
-                        *acc += v;
-                    }
-                    e.1 += 1;
-                }
-                bins.into_values()
-                    .filter(|(_, n)| *n >= 3)
-                    .map(|(s, n)| s.map(|v| v / n as f64))
-                    .collect()
-            } else {
-                idx.iter().map(|&i| point(i)).collect()
-            };
-            Condition {
-                fz: loads[l].nominal,
-                camber: cambers[c].nominal,
-                pressure: p.and_then(|k| pressures.as_ref().map(|ps| ps[k].nominal)),
-                samples: idx.len(),
-                points,
-            }
-        })
-        .collect()
-}
+pub use super::grouping::Condition;
 
 /// Seed 000's test points generated from a known tyre: loads 2800 / 5700 /
 /// 8600 N, slip angles 0 … ±12.0321° in 0.2865° steps (85 per load), camber

@@ -16,6 +16,7 @@
 //! own units stay in their files.
 
 pub mod data;
+pub mod grouping;
 pub mod pac89_two_stage;
 
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};

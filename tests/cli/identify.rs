@@ -71,8 +71,6 @@ fn identify_refuses_bad_rig_data_clearly() {
         dir.path().join("rig.csv").to_str().unwrap(),
         "--model",
         "pac89",
-        "--bin-deg",
-        "0",
         "--out",
         dir.path().join("t.toml").to_str().unwrap(),
     ]);
@@ -99,8 +97,6 @@ fn an_identified_tyre_file_loads_and_simulates() {
         dir.path().join("rig.csv").to_str().unwrap(),
         "--model",
         "magic-simple",
-        "--bin-deg",
-        "0",
         "--seed",
         "3",
         "--out",
@@ -185,8 +181,6 @@ fn identify_fits_longitudinal_only_rig_data() {
         dir.path().join("rig.csv").to_str().unwrap(),
         "--model",
         "pac89",
-        "--bin-deg",
-        "0",
         "--out",
         out.to_str().unwrap(),
     ]);

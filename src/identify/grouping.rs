@@ -378,7 +378,9 @@ pub fn group(
         }
         Some(c) => Some(select(&cambers, c)?),
     };
-    let mut groups: Vec<((usize, usize, Option<usize>), Vec<usize>)> = Vec::new();
+    // (load, camber, pressure) level indices and the samples there.
+    type Key = (usize, usize, Option<usize>);
+    let mut groups: Vec<(Key, Vec<usize>)> = Vec::new();
     let (mut transitions, mut not_selected) = (0, 0);
     for i in 0..d.len() {
         let p_val = d.pressure.as_ref().map(|p| p[i]);

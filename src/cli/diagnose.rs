@@ -67,8 +67,8 @@ fn report(d: &Diagnosis) {
         d.folds, d.gap.heldout_error, d.gap.noise_level
     );
     println!(
-        "  {:<28} {:>8} {:>11} {:>12}  parameters",
-        "effect", "J after", "reduction", "ΔBIC"
+        "  {:<28} {:>8} {:>11} {:>10} {:>12}  parameters",
+        "effect", "J after", "held out", "in sample", "ΔBIC"
     );
     for r in d.ranking.iter().chain(d.combinations.iter()) {
         let p: Vec<String> = r
@@ -82,13 +82,17 @@ fn report(d: &Diagnosis) {
             })
             .collect();
         println!(
-            "  {:<28} {:>8.3} {:>10.1} % {:>12.0}  {}",
+            "  {:<28} {:>8.3} {:>9.1} % {:>8.1} % {:>12.0}  {}",
             r.effect,
             r.heldout_error_after,
             r.reduction_percent,
+            r.insample_reduction_percent,
             r.delta_bic,
             p.join(", ")
         );
+        if let Some(w) = &r.warning {
+            println!("  {:<28} warning: {w}", "");
+        }
     }
     println!("verdict: {}", d.verdict.statement);
     for c in &d.confounded {

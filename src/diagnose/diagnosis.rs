@@ -60,8 +60,9 @@ pub const SIGNIFICANT: f64 = 1.3;
 /// Share of the gap a best single effect must remove for the greedy search
 /// to start from it (a pair whose halves each remove less than [`ACCEPT`]).
 pub const PROMISING: f64 = 0.1;
-/// Gauss–Newton steps of a fold's refit from the all-run optimum.
-pub const FOLD_STEPS: usize = 3;
+/// In-sample minus held-out reduction (percentage points) past which a
+/// candidate's cross-validation disagrees with its fit: a warning.
+pub const DISAGREEMENT: f64 = 25.0;
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
 
@@ -107,6 +108,17 @@ pub struct Ranked {
     pub heldout_channels: Vec<ChannelError>,
     /// Share of the held-out gap above noise removed, %.
     pub reduction_percent: f64,
+    /// Combined error J of the all-run fit on all runs (in sample).
+    pub insample_error_after: f64,
+    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    pub insample_reduction_percent: f64,
+    /// Folds whose refit converged (of `folds`).
+    pub folds_converged: usize,
+    /// Folds refitted.
+    pub folds: usize,
+    /// Cross-validation that disagrees with the fit, or refits that did not
+    /// converge.
+    pub warning: Option<String>,
     /// BIC of the all-run fit.
     pub bic: f64,
     /// BIC minus the base model's (negative: better).
@@ -359,8 +371,11 @@ impl Setting<'_> {
 struct Scored {
     kinds: Vec<EffectKind>,
     full: FitOutcome,
+    /// Errors of the all-run fit on all runs.
+    insample: ChannelErrors,
     heldout: ChannelErrors,
     fold_params: Vec<Vec<f64>>,
+    folds_converged: usize,
 }
 
 struct Context<'a> {
@@ -387,7 +402,8 @@ impl Context<'_> {
     }
 
     /// Fits a candidate on all runs (PSO from `start`) and scores it on
-    /// every fold (LM from the all-run optimum).
+    /// every fold: LM to convergence from the all-run optimum, and again from
+    /// the effect-free start when that does not converge.
     /// A `start` skips the swarm: the polish starts from it (combinations
     /// start from their members' single fits).
     fn score(
@@ -421,8 +437,13 @@ impl Context<'_> {
                 Polish::LevenbergMarquardt,
             ),
         };
+        let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
+        let mut insample = ChannelErrors::default();
+        for r in &self.runs {
+            insample.add(&r.errors(&all_model));
+        }
         self.tick();
-        let per_fold: Vec<(ChannelErrors, Vec<f64>)> = (0..self.folds.len())
+        let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
             .map(|k| {
                 let base = &self.bases.folds[k];
                 let problem = Problem {
@@ -431,25 +452,33 @@ impl Context<'_> {
                     scales: self.scales,
                     bounds: s.bounds(),
                 };
-                let f = fit(&problem, &full.params, None, Polish::Steps(FOLD_STEPS));
+                let mut f = fit(&problem, &full.params, None, Polish::Refit);
+                if !f.converged {
+                    let g = fit(&problem, &s.off(), None, Polish::Refit);
+                    if g.cost < f.cost || (g.converged && g.cost <= f.cost * (1.0 + 1e-9)) {
+                        f = g;
+                    }
+                }
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {
                     e.add(&self.runs[i].errors(&model));
                 }
                 self.tick();
-                (e, f.params)
+                (e, f.params, f.converged)
             })
             .collect();
         let mut heldout = ChannelErrors::default();
-        for (e, _) in &per_fold {
+        for (e, _, _) in &per_fold {
             heldout.add(e);
         }
         Scored {
             kinds: s.kinds,
             full,
+            insample,
             heldout,
-            fold_params: per_fold.into_iter().map(|(_, p)| p).collect(),
+            folds_converged: per_fold.iter().filter(|f| f.2).count(),
+            fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
         }
     }
 
@@ -593,7 +622,7 @@ fn base_models(
                         scales: scales_hint,
                         bounds: AXLE_BOUNDS.to_vec(),
                     };
-                    fit(&p, &full.params, None, Polish::Steps(FOLD_STEPS)).params
+                    fit(&p, &full.params, None, Polish::Refit).params
                 })
                 .collect();
             let p = &full.params;
@@ -746,6 +775,8 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let j0 = base_scored.heldout.combined(&scales);
     let jn = noise_level(&base_scored.heldout);
     let bic0 = base_scored.full.bic();
+    let j0_in = base_scored.insample.combined(&scales);
+    let jn_in = noise_level(&base_scored.insample);
     let significant = j0 > SIGNIFICANT * jn;
 
     // Single effects.
@@ -759,6 +790,23 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let rank = |sc: &Scored| -> Ranked {
         let j = sc.heldout.combined(&scales);
         let names: Vec<String> = sc.kinds.iter().map(|e| e.name().to_string()).collect();
+        let held = reduction(j0, j, jn);
+        let j_in = sc.insample.combined(&scales);
+        let inside = reduction(j0_in, j_in, jn_in);
+        let folds = ctx.folds.len();
+        let mut warnings = Vec::new();
+        if inside - held > DISAGREEMENT && inside >= 100.0 * ACCEPT {
+            warnings.push(format!(
+                "the fit on all runs removes {inside:.0} % of the gap but only {held:.0} % on held-out runs: \
+                 the effect does not generalise across runs, or the runs cannot pin its parameters"
+            ));
+        }
+        if sc.folds_converged < folds {
+            warnings.push(format!(
+                "{} of {folds} fold refits did not converge",
+                folds - sc.folds_converged
+            ));
+        }
         Ranked {
             effect: names.join("+"),
             effects: names,
@@ -766,7 +814,12 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             heldout_error_before: j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),
-            reduction_percent: reduction(j0, j, jn),
+            reduction_percent: held,
+            insample_error_after: j_in,
+            insample_reduction_percent: inside,
+            folds_converged: sc.folds_converged,
+            folds,
+            warning: (!warnings.is_empty()).then(|| warnings.join("; ")),
             bic: sc.full.bic(),
             delta_bic: sc.full.bic() - bic0,
         }
@@ -807,8 +860,10 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             let mut current = Scored {
                 kinds: best.kinds.clone(),
                 full: best.full.clone(),
+                insample: best.insample,
                 heldout: best.heldout,
                 fold_params: best.fold_params.clone(),
+                folds_converged: best.folds_converged,
             };
             // Greedy: add the effect that best closes what is left.
             while current.kinds.len() < set.max_effects {

@@ -15,7 +15,7 @@
 
 use super::model::{Augmented, Drive, Observed};
 use crate::io::MeasuredRun;
-use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
+use crate::optim::local::{jacobian, levenberg_marquardt, Residuals};
 use crate::optim::pso::Pso;
 use serde::Serialize;
 
@@ -212,17 +212,38 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     }
 }
 
-impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
-    fn count(&self) -> usize {
+/// Weight of the bound residuals: a step one thousandth of a parameter's
+/// range outside its box costs as much as one scaled data residual of 1.
+const BOUND_PENALTY: f64 = 1e3;
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
+    /// Residuals of the data (without the bound residuals).
+    pub fn data_count(&self) -> usize {
         self.runs.iter().map(|r| r.count()).sum()
     }
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
+    /// The data residuals, then one residual per parameter that is zero
+    /// inside its bounds and grows outside: the model sees clamped
+    /// parameters, and without these a least-squares step toward an optimum
+    /// on a bound would meet a flat cost beyond it and shrink its trust
+    /// region hundreds of times instead of stopping there.
+    fn count(&self) -> usize {
+        self.data_count() + self.bounds.len()
+    }
     fn residuals(&self, p: &[f64], out: &mut [f64]) {
-        let model = (self.build)(&self.clamp(p));
+        let q = self.clamp(p);
+        let model = (self.build)(&q);
         let mut k = 0;
         for r in &self.runs {
             let n = r.count();
             r.residuals(&model, &self.scales, &mut out[k..k + n]);
             k += n;
+        }
+        for ((x, c), (lo, hi)) in p.iter().zip(&q).zip(&self.bounds) {
+            out[k] = BOUND_PENALTY * (x - c) / (hi - lo).max(1e-300);
+            k += 1;
         }
     }
 }
@@ -240,6 +261,8 @@ pub struct FitOutcome {
     pub residuals: usize,
     /// Replays of the whole run set made.
     pub evaluations: usize,
+    /// Whether the polish stopped on its convergence test.
+    pub converged: bool,
 }
 
 impl FitOutcome {
@@ -256,9 +279,10 @@ impl FitOutcome {
 pub enum Polish {
     /// Levenberg–Marquardt to convergence.
     LevenbergMarquardt,
-    /// A few damped Gauss–Newton steps: a refit from a nearby optimum (the
-    /// cross-validation folds start from the all-run fit).
-    Steps(usize),
+    /// A refit from a nearby optimum (the cross-validation folds start from
+    /// the all-run fit): Levenberg–Marquardt to convergence, without the
+    /// standard errors.
+    Refit,
 }
 
 /// Fits `problem` from `start`: PSO over the bounds (when `pso` is given;
@@ -287,45 +311,32 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         evaluations += r.evaluations;
         p0 = full(&r.best);
     }
-    let (params, cost) = if start.is_empty() {
-        (Vec::new(), problem.cost(&[]))
+    let (params, cost, converged) = if start.is_empty() {
+        (Vec::new(), problem.cost(&[]), true)
     } else {
-        match polish {
-            Polish::LevenbergMarquardt => {
-                let lm = levenberg_marquardt(problem, &p0);
-                evaluations += lm.evaluations;
-                // LM may leave the box, where the residuals are clamped.
-                let p = problem.clamp(&lm.params);
-                let c = problem.cost(&p);
-                let c0 = problem.cost(&p0);
-                if c <= c0 {
-                    (p, c)
-                } else {
-                    (p0, c0)
-                }
-            }
-            Polish::Steps(n) => {
-                let gn = GaussNewton {
-                    lambda0: 1e-4,
-                    q: 0.5,
-                    iterations: n,
-                }
-                .minimize(problem, &p0);
-                evaluations += gn.evaluations;
-                (problem.clamp(&gn.params), gn.cost)
-            }
+        let lm = levenberg_marquardt(problem, &p0);
+        evaluations += lm.evaluations;
+        // LM may leave the box, where the residuals are clamped.
+        let p = problem.clamp(&lm.params);
+        let c = problem.cost(&p);
+        let c0 = problem.cost(&p0);
+        if c <= c0 {
+            (p, c, lm.converged)
+        } else {
+            (p0, c0, lm.converged)
         }
     };
     let std_errors = match polish {
         Polish::LevenbergMarquardt => standard_errors(problem, &params, cost),
-        Polish::Steps(_) => vec![f64::NAN; params.len()],
+        Polish::Refit => vec![f64::NAN; params.len()],
     };
     FitOutcome {
         params,
         std_errors,
         cost,
-        residuals: problem.count(),
+        residuals: problem.data_count(),
         evaluations: evaluations + 1,
+        converged,
     }
 }
 

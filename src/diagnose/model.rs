@@ -33,6 +33,12 @@ use crate::sim::TimeHistory;
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::{Kinematics, LoadTransferSeed, VehicleModel, MIN_SPEED};
 
+/// Relaxation lengths below this (m) are no lag: 1 mm is 50 µs at 20 m/s,
+/// far below what a logged run resolves, and a shorter lag would make the
+/// lag states stiff for the explicit integration (a fit that drives σ toward
+/// zero would otherwise chase it through ever stiffer models).
+pub const MIN_RELAXATION_LENGTH: f64 = 1e-3;
+
 /// The state vector: β, r, front and rear lagged slip angle, roll, roll rate.
 pub type AugmentedState = [f64; 6];
 
@@ -162,7 +168,7 @@ impl Applied<'_> {
         };
         let steer_front = steer + e.roll_steer[0] * phi;
         let steer_rear = e.roll_steer[1] * phi;
-        let lagged = e.relaxation_length > 0.0;
+        let lagged = e.relaxation_length >= MIN_RELAXATION_LENGTH;
         let camber = [e.roll_camber[0] * phi, e.roll_camber[1] * phi];
         let [sf, sr] = self.scale;
         let projection = |d: f64| match m.options.kinematics {

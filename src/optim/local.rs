@@ -52,6 +52,9 @@ pub struct LocalResult {
     pub cost: f64,
     /// Residual evaluations (Jacobian columns included).
     pub evaluations: usize,
+    /// Whether the method stopped on its convergence test (not on its
+    /// iteration limit or a failure).
+    pub converged: bool,
 }
 
 struct Adapter<'a> {
@@ -98,6 +101,13 @@ pub fn levenberg_marquardt(problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
     LocalResult {
         cost: problem.cost(&params),
         evaluations: report.number_of_evaluations * (1 + p0.len()),
+        // "No improvement possible" is convergence to machine precision
+        // (a parameter pinned at a bound of a clamped problem ends so).
+        converged: report.termination.was_successful()
+            || matches!(
+                report.termination,
+                levenberg_marquardt::TerminationReason::NoImprovementPossible(_)
+            ),
         params,
     }
 }
@@ -132,6 +142,7 @@ impl GaussNewton {
         problem.residuals(&p, &mut r);
         let mut cost = 0.5 * r.iter().map(|e| e * e).sum::<f64>();
         let mut evaluations = 1;
+        let mut converged = false;
         for k in 0..self.iterations {
             let j = jacobian(problem, &p, &r);
             evaluations += n;
@@ -160,6 +171,7 @@ impl GaussNewton {
                 t *= 0.5;
             }
             if !improved {
+                converged = true;
                 break;
             }
         }
@@ -167,6 +179,7 @@ impl GaussNewton {
             params: p,
             cost,
             evaluations,
+            converged,
         }
     }
 }

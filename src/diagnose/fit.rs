@@ -91,8 +91,8 @@ impl Prepared {
         }
         let first = (0..run.t.len()).find(|&i| !masked[i]).unwrap_or(0);
         let mut idx = vec![first];
-        for i in first + 1..run.t.len() {
-            if !masked[i] && run.t[i] - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
+        for (i, (&t, &m)) in run.t.iter().zip(&masked).enumerate().skip(first + 1) {
+            if !m && t - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
                 idx.push(i);
             }
         }

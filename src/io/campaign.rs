@@ -316,9 +316,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     }
     let mut runs = Vec::new();
     let mut notes = Vec::new();
-    let clean = CleanSettings {
-        min_speed: s.min_speed,
-    };
+    let clean = CleanSettings::diagnosis(s.min_speed);
     let mut cleaning = CleaningReport::new(s.min_speed);
     for p in &files {
         let run = read_run(p)?;

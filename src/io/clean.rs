@@ -30,8 +30,10 @@
 //! - Samples slower than `min_speed` (a standstill when the car stops in
 //!   the span, below [`STANDSTILL_SPEED`]; else a crawl) are excluded: the model is a
 //!   driving model, and at a standstill its output chatters on sensor noise.
-//!   The moving pieces they leave are replayed separately; pieces shorter
-//!   than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] are dropped.
+//!   The moving pieces they leave are replayed separately; in a diagnosis
+//!   pieces shorter than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] are
+//!   dropped; a single replay or the metrics of a run take its longest
+//!   piece and list the others as dropped.
 //!
 //! Everything found, excluded or dropped is in the [`CleaningReport`].
 //! Units: SI, rad, times in s.
@@ -344,13 +346,35 @@ impl CleaningReport {
 pub struct CleanSettings {
     /// Lowest speed replayed, m/s.
     pub min_speed: f64,
+    /// Shortest piece kept, s.
+    pub min_piece_seconds: f64,
+    /// Fewest samples of a piece kept.
+    pub min_piece_samples: usize,
+}
+
+impl CleanSettings {
+    /// For a diagnosis: pieces must show a response
+    /// ([`MIN_RUN_SECONDS`], [`MIN_RUN_SAMPLES`]).
+    pub fn diagnosis(min_speed: f64) -> Self {
+        Self {
+            min_speed,
+            min_piece_seconds: MIN_RUN_SECONDS,
+            min_piece_samples: MIN_RUN_SAMPLES,
+        }
+    }
+    /// For one replay or one set of metrics: any piece of two samples.
+    pub fn single(min_speed: f64) -> Self {
+        Self {
+            min_speed,
+            min_piece_seconds: 0.0,
+            min_piece_samples: 2,
+        }
+    }
 }
 
 impl Default for CleanSettings {
     fn default() -> Self {
-        Self {
-            min_speed: DEFAULT_MIN_SPEED,
-        }
+        Self::diagnosis(DEFAULT_MIN_SPEED)
     }
 }
 
@@ -652,9 +676,9 @@ fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, us
     bounds.windows(2).map(|w| (w[0], w[1])).collect()
 }
 
-fn long_enough(run: &MeasuredRun) -> bool {
+fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
     let n = run.t.len();
-    n >= MIN_RUN_SAMPLES && run.t[n - 1] - run.t[0] >= MIN_RUN_SECONDS
+    n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
 }
 
 fn piece_of(run: &MeasuredRun) -> Piece {
@@ -718,7 +742,7 @@ pub fn clean_run(
         if !whole {
             piece.path = PathBuf::from(format!("{name}#{}", k + 1));
         }
-        if long_enough(&piece) {
+        if long_enough(&piece, settings) {
             report.samples_kept += piece.t.len();
             report.samples_masked += piece.masked.len();
             report.pieces.push(piece_of(&piece));
@@ -745,17 +769,31 @@ pub fn clean_runs(
     (out, report)
 }
 
-/// Cleans a run for a single replay or for step-steer metrics: the longest
-/// moving piece, with masked response samples filled by interpolation
-/// across them (metrics read every sample). `None` when no piece is long
-/// enough.
+/// Cleans a run for a single replay: the longest moving piece (the other
+/// pieces are listed as dropped). `None` when no piece is long enough.
 pub fn clean_single(
     run: MeasuredRun,
     settings: &CleanSettings,
     report: &mut CleaningReport,
 ) -> Option<MeasuredRun> {
+    let first = report.pieces.len();
     let pieces = clean_run(run, settings, report);
-    pieces.into_iter().max_by_key(|p| p.t.len())
+    let best = (0..pieces.len()).max_by_key(|&k| pieces[k].t.len())?;
+    // The other moving pieces are left out: listed as dropped.
+    let others: Vec<Piece> = report
+        .pieces
+        .drain(first..)
+        .enumerate()
+        .filter_map(|(k, p)| (k != best).then_some(p))
+        .collect();
+    report.pieces.push(piece_of(&pieces[best]));
+    for (_, p) in pieces.iter().enumerate().filter(|(k, _)| *k != best) {
+        report.samples_kept -= p.t.len();
+        report.samples_masked -= p.masked.len();
+        report.samples_in_dropped_pieces += p.t.len();
+    }
+    report.dropped_pieces.extend(others);
+    pieces.into_iter().nth(best)
 }
 
 /// Cleans a run read from `path` for tools that read every sample (the
@@ -768,11 +806,11 @@ pub fn clean_for_metrics(
 ) -> Result<(MeasuredRun, CleaningReport), crate::error::InputError> {
     let path = run.path.clone();
     let mut report = CleaningReport::new(min_speed);
-    let piece = clean_single(run, &CleanSettings { min_speed }, &mut report).ok_or_else(|| {
+    let piece = clean_single(run, &CleanSettings::single(min_speed), &mut report).ok_or_else(|| {
         crate::error::InputError::File {
             path,
             message: format!(
-                "no piece of the run is at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples long at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
+                "no two successive samples at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
                 report.samples_slow, report.samples_read
             ),
         }
@@ -1032,7 +1070,7 @@ mod tests {
         r.steer[500] = 0.0;
         r.yaw_rate[4500] += 0.5;
         let mut rep = CleaningReport::new(5.0);
-        let pieces = clean_run(r, &CleanSettings::default(), &mut rep);
+        let pieces = clean_run(r, &CleanSettings::diagnosis(5.0), &mut rep);
         assert_eq!(pieces.len(), 3, "{:?}", rep.pieces);
         assert_eq!(rep.dropped_pieces.len(), 1, "{:?}", rep.dropped_pieces);
         assert_eq!(rep.slow.len(), 2);

@@ -4,7 +4,6 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
-use super::campaign::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 use crate::error::{InputError, ParamError};
@@ -325,16 +324,14 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
         ManoeuvreSpec::Replay(r) => {
             let run_path = dir.join(&r.run);
             check(src, ParamError::non_negative("min_speed", r.min_speed))?;
-            let settings = super::clean::CleanSettings {
-                min_speed: r.min_speed,
-            };
+            let settings = super::clean::CleanSettings::single(r.min_speed);
             let mut report = super::clean::CleaningReport::new(r.min_speed);
             let read = read_run(&run_path)?;
             let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
                 InputError::File {
                     path: run_path.clone(),
                     message: format!(
-                        "no piece of the run is at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples long at or above min_speed = {} m/s ({} of {} samples below it)",
+                        "no two successive samples at or above min_speed = {} m/s ({} of {} samples below it)",
                         r.min_speed, report.samples_slow, report.samples_read
                     ),
                 }

@@ -13,8 +13,8 @@
 //!   channels. The detection threshold is `T = max(K·σ_d, floor)`, K =
 //!   [`SPIKE_MADS`].
 //!   - zero read: one to [`MAX_ZERO_RUN`] samples read as exactly 0 while the
-//!     samples on both sides (two on the one side at an end of the run) lie
-//!     beyond T, with the same sign;
+//!     two samples on each side (on the one side at an end of the run) lie
+//!     beyond T, all with one sign;
 //!   - isolated spike: a sample beyond T from the line through its two
 //!     neighbours, on the same side of both, while the neighbours agree with
 //!     each other better than with it (a step has one side only; a peak of a
@@ -462,24 +462,29 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
             j += 1;
         }
         let len = j - i;
-        let sides: Option<(f64, f64)> = if i > 0 && j < n {
-            Some((x[i - 1], x[j]))
-        } else if i == 0 && j + 1 < n {
-            Some((x[j], x[j + 1]))
-        } else if j == n && i >= 2 {
-            Some((x[i - 1], x[i - 2]))
-        } else {
-            None
-        };
-        if let Some((a, b)) = sides {
-            if len <= MAX_ZERO_RUN && far(a) && far(b) && a.signum() == b.signum() {
-                flagged[i..j].iter_mut().for_each(|f| *f = true);
-                out.push(Found {
-                    start: i,
-                    len,
-                    kind: GlitchKind::ZeroRead,
-                });
+        // Two samples on each side (two on the one side at an end of the
+        // run), all far from 0 with one sign: a lone value next to the
+        // zeros (a spike beside a stretch of true zeros) is not enough.
+        let (mut count, mut all_far, mut sign) = (0, true, 0.0);
+        for k in [i.checked_sub(2), i.checked_sub(1), Some(j), Some(j + 1)]
+            .into_iter()
+            .flatten()
+            .filter(|&k| k < n)
+        {
+            if count == 0 {
+                sign = x[k].signum();
             }
+            all_far &= far(x[k]) && x[k].signum() == sign;
+            count += 1;
+        }
+        let accepted = count >= 2 && (i > 0 || j + 1 < n) && (j < n || i >= 2) && all_far;
+        if len <= MAX_ZERO_RUN && accepted {
+            flagged[i..j].iter_mut().for_each(|f| *f = true);
+            out.push(Found {
+                start: i,
+                len,
+                kind: GlitchKind::ZeroRead,
+            });
         }
         i = j;
     }
@@ -1110,5 +1115,51 @@ mod tests {
             );
         }
         assert_eq!(rep.glitches.len(), injected.len(), "{:?}", rep.glitches);
+    }
+
+    #[test]
+    fn glitches_injected_into_synthetic_runs_are_all_found_and_nothing_else() {
+        use crate::diagnose::effects::EffectKind;
+        use crate::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+        for (seed, effects) in [
+            (1, vec![]),
+            (2, vec![EffectKind::SensorDelay]),
+            (3, vec![EffectKind::RelaxationLength]),
+            (
+                4,
+                vec![EffectKind::SensorBias, EffectKind::AccelerometerRoll],
+            ),
+            (5, vec![EffectKind::CorneringStiffness]),
+            (6, vec![EffectKind::RoadBank]),
+        ] {
+            let s = generate(&SynthSpec {
+                effects: effects.iter().map(|e| (*e, truth_values(*e))).collect(),
+                seed,
+                noise: Noise::default(),
+            });
+            let mut injected = Vec::new();
+            let mut runs = s.runs.clone();
+            for (k, r) in runs.iter_mut().enumerate() {
+                injected.extend(inject_glitches(r, seed * 100 + k as u64));
+            }
+            let (clean, rep) = clean_runs(runs, &CleanSettings::default());
+            assert_eq!(clean.len(), s.runs.len());
+            let key = |g: &Glitch| {
+                (
+                    g.run.clone(),
+                    g.channel.name(),
+                    g.kind.name(),
+                    g.t.to_bits(),
+                )
+            };
+            let mut found: Vec<_> = rep.glitches.iter().map(key).collect();
+            let mut want: Vec<_> = injected.iter().map(key).collect();
+            found.sort();
+            want.sort();
+            assert_eq!(found, want, "seed {seed}");
+            // Spikes and holds always find a place; zero reads need a value far
+            // from 0.
+            assert!(injected.len() >= 7 * s.runs.len(), "{}", injected.len());
+        }
     }
 }

@@ -35,6 +35,9 @@ pub fn diagnose(path: &Path, out: Option<&Path>) -> Result<()> {
     for n in &campaign.notes {
         println!("  note: {n}");
     }
+    for line in campaign.cleaning.summary(5) {
+        println!("  cleaning: {line}");
+    }
     let t0 = Instant::now();
     let d = {
         let progress = Progress::start("diagnose", work_units(&campaign));

@@ -122,6 +122,9 @@ enum Command {
         /// Steady-value window, s.
         #[arg(long, default_value_t = 1.0)]
         steady_window: f64,
+        /// Lowest speed kept, m/s: standstills and crawling are excluded.
+        #[arg(long, default_value_t = 5.0)]
+        min_speed: f64,
     },
 }
 
@@ -160,7 +163,8 @@ pub fn run() -> ExitCode {
             json,
             pre_window,
             steady_window,
-        } => simulate::metrics(&run, json, pre_window, steady_window),
+            min_speed,
+        } => simulate::metrics(&run, json, pre_window, steady_window, min_speed),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -164,6 +164,9 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     }
     // A replayed measurement: where the model and the run disagree.
     if let Some(run) = &sc.measured {
+        for line in sc.cleaning.iter().flat_map(|c| c.summary(5)) {
+            println!("  cleaning: {line}");
+        }
         let gap = handling::diagnose::gap::run_gap(run, &h);
         for g in &gap {
             println!("  {}: {}", g.channel, g.verdict);
@@ -179,8 +182,17 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
 }
 
 /// `handling metrics`.
-pub fn metrics(path: &Path, json: bool, pre_window: f64, steady_window: f64) -> Result<()> {
-    let run = read_run(path)?;
+pub fn metrics(
+    path: &Path,
+    json: bool,
+    pre_window: f64,
+    steady_window: f64,
+    min_speed: f64,
+) -> Result<()> {
+    let (run, cleaning) = handling::io::clean::clean_for_metrics(read_run(path)?, min_speed)?;
+    for line in cleaning.summary(5) {
+        eprintln!("cleaning: {line}");
+    }
     let ay = run.ay.as_ref().with_context(|| {
         format!(
             "{}: the run has no `ay` column; lateral-acceleration metrics need it",

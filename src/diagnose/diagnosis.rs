@@ -236,6 +236,9 @@ pub struct Diagnosis {
     pub folds: usize,
     /// Notes on the inputs.
     pub notes: Vec<String>,
+    /// Glitches, standstills and crawling found in the runs and what was
+    /// excluded, repaired or masked.
+    pub cleaning: crate::io::clean::CleaningReport,
     /// The base model.
     pub base: BaseReport,
     /// Where the gap lies.
@@ -1016,6 +1019,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),
         folds: ctx.folds.len(),
         notes: c.notes.clone(),
+        cleaning: c.cleaning.clone(),
         base: BaseReport {
             tyres: tyre_source,
             front: bases.all.base.front.clone(),
@@ -1054,15 +1058,17 @@ fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let x0 = base.initial_state(&p.drive, p.start.0, p.start.1);
     let history = base.simulate(&p.drive, x0).history;
-    let yaw_rate: Vec<f64> = run
-        .t
+    let idx = super::gap::scored_samples(run);
+    let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
+    let t = pick(&run.t);
+    let yaw_rate: Vec<f64> = t
         .iter()
         .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
         .collect();
     RunGap {
         run: run.path.display().to_string(),
         channels: run_gap(run, &history),
-        bands: super::gap::band_gaps(&run.t, &run.steer, &run.yaw_rate, &yaw_rate),
+        bands: super::gap::band_gaps(&t, &pick(&run.steer), &pick(&run.yaw_rate), &yaw_rate),
     }
 }
 

@@ -82,10 +82,17 @@ pub struct Prepared {
 impl Prepared {
     /// Prepares `run` for replays with RK4 step `step` and residuals taken
     /// at `rate` Hz (at the samples nearest to it).
+    /// Masked samples (logger glitches in a response channel) are skipped:
+    /// the next unmasked sample takes their place.
     pub fn new(run: &MeasuredRun, step: f64, rate: f64) -> Self {
-        let mut idx = vec![0];
-        for i in 1..run.t.len() {
-            if run.t[i] - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
+        let mut masked = vec![false; run.t.len()];
+        for &i in &run.masked {
+            masked[i] = true;
+        }
+        let first = (0..run.t.len()).find(|&i| !masked[i]).unwrap_or(0);
+        let mut idx = vec![first];
+        for (i, (&t, &m)) in run.t.iter().zip(&masked).enumerate().skip(first + 1) {
+            if !m && t - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
                 idx.push(i);
             }
         }
@@ -99,7 +106,10 @@ impl Prepared {
             drive: Drive::replay(&run.t, &run.steer, &run.speed, step),
             times,
             measured,
-            start: (run.beta.as_ref().map_or(0.0, |b| b[0]), run.yaw_rate[0]),
+            start: (
+                run.beta.as_ref().map_or(0.0, |b| b[first]),
+                run.yaw_rate[first],
+            ),
         }
     }
 

@@ -315,29 +315,49 @@ pub fn regime_acceleration(run: &crate::io::MeasuredRun) -> Vec<f64> {
     }
 }
 
-/// The gap of every measured channel of a replayed run.
+/// The samples of a run that are scored: all but the masked ones (logger
+/// glitches in a response channel).
+pub fn scored_samples(run: &crate::io::MeasuredRun) -> Vec<usize> {
+    let mut keep = vec![true; run.t.len()];
+    for &i in &run.masked {
+        keep[i] = false;
+    }
+    (0..run.t.len()).filter(|&i| keep[i]).collect()
+}
+
+/// The gap of every measured channel of a replayed run, on its unmasked
+/// samples.
 pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> Vec<ChannelGap> {
-    let at =
-        |ys: &[f64]| -> Vec<f64> { run.t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
-    let ay_regime = regime_acceleration(run);
+    let idx = scored_samples(run);
+    let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
+    let t = pick(&run.t);
+    let at = |ys: &[f64]| -> Vec<f64> { t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
+    let ay_regime = pick(&regime_acceleration(run));
+    let (steer, speed) = (pick(&run.steer), pick(&run.speed));
     let rec = Record {
-        t: &run.t,
-        steer: &run.steer,
+        t: &t,
+        steer: &steer,
         ay: &ay_regime,
-        speed: &run.speed,
+        speed: &speed,
     };
     let mut out = vec![channel_gap(
         "yaw_rate",
         "rad/s",
         &rec,
-        &run.yaw_rate,
+        &pick(&run.yaw_rate),
         &at(&sim.yaw_rate),
     )];
     if let Some(ay) = &run.ay {
-        out.push(channel_gap("ay", "m/s²", &rec, ay, &at(&sim.ay)));
+        out.push(channel_gap("ay", "m/s²", &rec, &pick(ay), &at(&sim.ay)));
     }
     if let Some(beta) = &run.beta {
-        out.push(channel_gap("beta", "rad", &rec, beta, &at(&sim.beta)));
+        out.push(channel_gap(
+            "beta",
+            "rad",
+            &rec,
+            &pick(beta),
+            &at(&sim.beta),
+        ));
     }
     out
 }

@@ -88,7 +88,9 @@ impl Sensors {
                 late(&b)
             }),
             roll: None,
+            bank: None,
             ax: None,
+            masked: Vec::new(),
         }
     }
 }

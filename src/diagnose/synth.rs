@@ -190,7 +190,9 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
                 ay: Some(noisy(&obs.ay, n.ay)),
                 beta: Some(noisy(&obs.beta, n.beta)),
                 roll: None,
+                bank: None,
                 ax: None,
+                masked: Vec::new(),
                 t: times,
             }
         })
@@ -242,6 +244,7 @@ impl Synthetic {
             settings,
             effects,
             notes: Vec::new(),
+            cleaning: Default::default(),
         }
     }
 

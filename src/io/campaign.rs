@@ -13,12 +13,18 @@
 //! (`files` and/or a `dir`, and `segment`, s, to cut long logs into
 //! pieces); paths are relative to the file.
 //!
-//! Runs are checked here: time gaps longer than five median sample
-//! intervals split a run (the pieces are replayed separately, with a note);
-//! a run shorter than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] is refused;
+//! Runs are checked here: a run shorter than [`MIN_RUN_SECONDS`] or
+//! [`MIN_RUN_SAMPLES`] is refused; then each is cleaned ([`super::clean`]):
+//! split at time gaps, glitches repaired or masked, samples below
+//! `[diagnose] min_speed` (default 5 m/s) excluded, the moving pieces
+//! replayed separately and the short ones dropped, all in the campaign's
+//! [`CleaningReport`];
 //! different sample rates between runs are fine (each run is compared at its
 //! own sample times). Units: SI, rad.
 
+use super::clean::{
+    clean_run, slice, CleanSettings, CleaningReport, GlitchKind, DEFAULT_MIN_SPEED,
+};
 use super::scenario::{load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
@@ -82,6 +88,9 @@ pub struct DiagnoseSettings {
     pub particles: usize,
     /// PSO iterations.
     pub iterations: usize,
+    /// Lowest speed replayed and scored, m/s (standstills and crawling
+    /// below it are excluded).
+    pub min_speed: f64,
 }
 
 impl Default for DiagnoseSettings {
@@ -94,6 +103,7 @@ impl Default for DiagnoseSettings {
             max_effects: 3,
             particles: 10,
             iterations: 12,
+            min_speed: DEFAULT_MIN_SPEED,
         }
     }
 }
@@ -157,6 +167,8 @@ pub struct Campaign {
     pub effects: Vec<EffectKind>,
     /// What was done to the inputs (split runs, …), for the report.
     pub notes: Vec<String>,
+    /// Glitches, slow spans and pieces found while cleaning the runs.
+    pub cleaning: CleaningReport,
 }
 
 fn file_error(path: &Path, message: String) -> InputError {
@@ -200,6 +212,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         "a replay step must lie in (0, 0.05] s",
     )
     .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
+    .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
     .map_err(|e| param_error(&src, Some("diagnose"), e))?;
     let effects = match &s.effects {
         None => EffectKind::ALL.to_vec(),
@@ -303,11 +316,32 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     }
     let mut runs = Vec::new();
     let mut notes = Vec::new();
+    let clean = CleanSettings::diagnosis(s.min_speed);
+    let mut cleaning = CleaningReport::new(s.min_speed);
     for p in &files {
         let run = read_run(p)?;
         check_length(&run, &run.path.display().to_string())?;
         inputs.push(p.clone());
-        for piece in split_at_gaps(run, &mut notes) {
+        let name = run.path.display().to_string();
+        let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
+        let pieces = clean_run(run, &clean, &mut cleaning);
+        let gaps: Vec<String> = cleaning.glitches[listed..]
+            .iter()
+            .filter(|g| g.kind == GlitchKind::TimeGap)
+            .map(|g| format!("{:.3}–{:.3} s", g.t, g.t + g.value))
+            .collect();
+        if !gaps.is_empty() || cleaning.pieces.len() - kept != 1 {
+            notes.push(format!(
+                "{name}: {}split into {} pieces replayed separately",
+                if gaps.is_empty() {
+                    String::new()
+                } else {
+                    format!("time gaps at {}; ", gaps.join(", "))
+                },
+                cleaning.pieces.len() - kept
+            ));
+        }
+        for piece in pieces {
             match run_spec.segment {
                 Some(seg) => runs.extend(segments(piece, seg)),
                 None => runs.push(piece),
@@ -318,8 +352,11 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         return Err(file_error(
             &file,
             format!(
-                "{} run(s) after checking: held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
-                runs.len()
+                "{} run(s) after checking ({} of {} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
+                runs.len(),
+                cleaning.samples_kept,
+                cleaning.samples_read,
+                s.min_speed
             ),
         ));
     }
@@ -339,6 +376,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         settings: f.diagnose,
         effects,
         notes,
+        cleaning,
     })
 }
 
@@ -356,70 +394,6 @@ fn check_length(run: &MeasuredRun, name: &str) -> Result<(), InputError> {
     Ok(())
 }
 
-/// The rows `lo..hi` of a run.
-fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: String) -> MeasuredRun {
-    let cut = |v: &Vec<f64>| v[lo..hi].to_vec();
-    let mut path = run.path.clone().into_os_string();
-    path.push(label);
-    MeasuredRun {
-        path: PathBuf::from(path),
-        t: cut(&run.t),
-        speed: cut(&run.speed),
-        steer: cut(&run.steer),
-        yaw_rate: cut(&run.yaw_rate),
-        ay: run.ay.as_ref().map(cut),
-        beta: run.beta.as_ref().map(cut),
-        roll: run.roll.as_ref().map(cut),
-        ax: run.ax.as_ref().map(cut),
-    }
-}
-
-/// Splits a run where the time between samples exceeds five median
-/// intervals: a replay cannot bridge a logging dropout. Pieces too short to
-/// diagnose are dropped; both are noted.
-pub fn split_at_gaps(run: MeasuredRun, notes: &mut Vec<String>) -> Vec<MeasuredRun> {
-    let mut dt: Vec<f64> = run.t.windows(2).map(|w| w[1] - w[0]).collect();
-    dt.sort_by(f64::total_cmp);
-    let median = dt[dt.len() / 2];
-    let cuts: Vec<usize> = (1..run.t.len())
-        .filter(|&i| run.t[i] - run.t[i - 1] > 5.0 * median)
-        .collect();
-    if cuts.is_empty() {
-        return vec![run];
-    }
-    let mut bounds = vec![0];
-    bounds.extend(&cuts);
-    bounds.push(run.t.len());
-    let mut out = Vec::new();
-    for (k, w) in bounds.windows(2).enumerate() {
-        let piece = slice(&run, w[0], w[1], format!("#{}", k + 1));
-        let span = piece.t[piece.t.len() - 1] - piece.t[0];
-        if span >= MIN_RUN_SECONDS && piece.t.len() >= MIN_RUN_SAMPLES {
-            out.push(piece);
-        } else {
-            notes.push(format!(
-                "{}: piece {} ({:.2} s, {} samples) between time gaps is too short and was left out",
-                run.path.display(),
-                k + 1,
-                span,
-                piece.t.len()
-            ));
-        }
-    }
-    let gaps: Vec<String> = cuts
-        .iter()
-        .map(|&i| format!("{:.3}–{:.3} s", run.t[i - 1], run.t[i]))
-        .collect();
-    notes.push(format!(
-        "{}: time gaps at {} (median interval {:.4} s): split into {} pieces replayed separately",
-        run.path.display(),
-        gaps.join(", "),
-        median,
-        out.len()
-    ));
-    out
-}
-
 /// Cuts a run into pieces of `length` seconds (the last one joins its
 /// predecessor when shorter than half a piece).
 fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
@@ -435,7 +409,7 @@ fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
             run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
         };
         if end > lo + 1 {
-            out.push(slice(&run, lo, end, format!("[{}]", k + 1)));
+            out.push(slice(&run, lo, end, &format!("[{}]", k + 1)));
         }
         lo = end;
     }
@@ -456,24 +430,11 @@ mod tests {
             ay: None,
             beta: None,
             roll: None,
+            bank: None,
             ax: None,
+            masked: Vec::new(),
             t,
         }
-    }
-
-    #[test]
-    fn a_time_gap_splits_a_run_and_short_pieces_are_noted() {
-        let mut t: Vec<f64> = (0..500).map(|i| i as f64 * 0.01).collect();
-        t.extend((0..300).map(|i| 10.0 + i as f64 * 0.01));
-        t.extend((0..10).map(|i| 20.0 + i as f64 * 0.01));
-        let mut notes = Vec::new();
-        let pieces = split_at_gaps(run(t), &mut notes);
-        assert_eq!(pieces.len(), 2);
-        assert_eq!(pieces[0].t.len(), 500);
-        assert_eq!(pieces[1].t[0], 10.0);
-        assert_eq!(notes.len(), 2, "{notes:?}");
-        assert!(notes[0].contains("too short"));
-        assert!(notes[1].contains("4.990–10.000 s"));
     }
 
     #[test]

@@ -5,6 +5,7 @@
 //! the key or column, the value and why it is wrong. Inputs are only read.
 
 pub mod campaign;
+pub mod clean;
 mod columns;
 mod run;
 pub mod scenario;

@@ -1,5 +1,5 @@
 //! Measured vehicle runs (`FORMATS.md`): t, speed, steer, yaw_rate required;
-//! ay, beta, roll, ax optional. SI units, radians, ISO 8855 signs.
+//! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs.
 
 use super::columns::read_columns;
 use crate::error::InputError;
@@ -22,10 +22,15 @@ pub struct MeasuredRun {
     pub ay: Option<Vec<f64>>,
     /// Sideslip at the centre of gravity, rad.
     pub beta: Option<Vec<f64>>,
-    /// Body roll (or road bank), as logged.
+    /// Body roll relative to the road, rad (ISO: positive right side down).
     pub roll: Option<Vec<f64>>,
+    /// Road bank under the car, rad (positive: the road's left edge higher).
+    pub bank: Option<Vec<f64>>,
     /// Longitudinal acceleration, m/s².
     pub ax: Option<Vec<f64>>,
+    /// Samples whose response channels (yaw rate, ay, beta) are left out of
+    /// fits and scores (logger glitches, see `io::clean`), ascending.
+    pub masked: Vec<usize>,
 }
 
 /// Reads and checks a measured run.
@@ -33,7 +38,7 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     let mut c = read_columns(
         path,
         &["t", "speed", "steer", "yaw_rate"],
-        &["ay", "beta", "roll", "ax"],
+        &["ay", "beta", "roll", "bank", "ax"],
     )?;
     let t = c.take("t");
     for i in 1..t.len() {
@@ -65,6 +70,8 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
         ay: c.take_optional("ay"),
         beta: c.take_optional("beta"),
         roll: c.take_optional("roll"),
+        bank: c.take_optional("bank"),
         ax: c.take_optional("ax"),
+        masked: Vec::new(),
     })
 }

@@ -105,6 +105,14 @@ fn default_end() -> f64 {
 pub struct ReplaySpec {
     /// The run file (`FORMATS.md`), relative to the scenario.
     pub run: PathBuf,
+    /// Lowest speed replayed, m/s (default 5): the longest piece at or
+    /// above it is replayed, glitches repaired or masked (`io::clean`).
+    #[serde(default = "default_min_speed")]
+    pub min_speed: f64,
+}
+
+fn default_min_speed() -> f64 {
+    super::clean::DEFAULT_MIN_SPEED
 }
 
 /// A manoeuvre as written in a file; `kind` selects it.
@@ -172,6 +180,8 @@ pub struct Scenario {
     pub measured: Option<MeasuredRun>,
     /// Every file read (the CLI never writes over one of them).
     pub inputs: Vec<PathBuf>,
+    /// What cleaning the replayed run found and excluded.
+    pub cleaning: Option<super::clean::CleaningReport>,
 }
 
 /// The checks every timed manoeuvre shares: a positive speed and an end
@@ -236,6 +246,7 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
     };
     let mut initial = State::default();
     let mut measured = None;
+    let mut cleaning = None;
     let manoeuvre = match &f.manoeuvre {
         ManoeuvreSpec::StepSteer(s) => {
             check(src, ParamError::positive("speed", s.speed))?;
@@ -313,11 +324,28 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
         }
         ManoeuvreSpec::Replay(r) => {
             let run_path = dir.join(&r.run);
-            let run = read_run(&run_path)?;
+            check(src, ParamError::non_negative("min_speed", r.min_speed))?;
+            let settings = super::clean::CleanSettings::single(r.min_speed);
+            let mut report = super::clean::CleaningReport::new(r.min_speed);
+            let read = read_run(&run_path)?;
+            let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
+                InputError::File {
+                    path: run_path.clone(),
+                    message: format!(
+                        "no two successive samples at or above min_speed = {} m/s ({} of {} samples below it)",
+                        r.min_speed, report.samples_slow, report.samples_read
+                    ),
+                }
+            })?;
+            cleaning = Some(report);
             inputs.push(run_path);
+            // A masked first sample is a glitch, not the initial state.
+            let first = (0..run.t.len())
+                .find(|i| !run.masked.contains(i))
+                .unwrap_or(0);
             initial = State {
-                beta: run.beta.as_ref().map_or(0.0, |b| b[0]),
-                yaw_rate: run.yaw_rate[0],
+                beta: run.beta.as_ref().map_or(0.0, |b| b[first]),
+                yaw_rate: run.yaw_rate[first],
             };
             let m = Manoeuvre::Replay(Replay {
                 t: run.t.clone(),
@@ -341,5 +369,6 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
         initial,
         measured,
         inputs,
+        cleaning,
     })
 }

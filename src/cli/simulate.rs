@@ -16,6 +16,9 @@ struct MetricsReport<'a> {
     units: &'static str,
     #[serde(flatten)]
     metrics: &'a StepMetrics,
+    /// Intervals with a wheel off the ground (simulated runs only).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    lift_offs: &'a [handling::sim::LiftOff],
 }
 
 const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot in %; \
@@ -150,6 +153,7 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
         ),
         _ => None,
     };
+    let lift_offs = h.lift_offs();
     write_columns(&files[0], &h.columns())?;
     if let Some(m) = &metrics {
         print_metrics(m);
@@ -159,8 +163,17 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
                 scenario: &sc.name,
                 units: UNITS,
                 metrics: m,
+                lift_offs: &lift_offs,
             },
         )?;
+    }
+    // The four loads always add up to the weight; a wheel at zero load has
+    // lifted off, and the 2-DOF model then carries its axle on one wheel.
+    for l in &lift_offs {
+        println!(
+            "  wheel lift-off: {:?} off the ground from {:.3} s to {:.3} s",
+            l.wheel, l.start, l.end
+        );
     }
     // A replayed measurement: where the model and the run disagree.
     if let Some(run) = &sc.measured {
@@ -220,7 +233,8 @@ pub fn metrics(
             serde_json::to_string_pretty(&MetricsReport {
                 scenario: &name,
                 units: UNITS,
-                metrics: &m
+                metrics: &m,
+                lift_offs: &[],
             })?
         );
     } else {

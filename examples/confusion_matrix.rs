@@ -4,17 +4,30 @@
 //! with the effect withheld from the base model, and tabulate what the
 //! verdict names and how far the held-out gap shrinks.
 //!
-//! `cargo run --release --example confusion_matrix [seeds] [effect ...]`
+//! `cargo run --release --example confusion_matrix [seeds] [effect ...]
+//! [--truth four-wheel]`
+//!
+//! With `--truth four-wheel` the car is the independent four-wheel model
+//! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
+//! row for no effect and one for each effect that truth implements (its
+//! own parameter values, in its own units, in the `fitted (truth)` column).
 
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
 use handling::io::campaign::DiagnoseSettings;
 use handling::report::write_columns;
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut model = Truth::Augmented;
+    if let Some(k) = args.iter().position(|a| a == "--truth") {
+        let name = args.get(k + 1).cloned().unwrap_or_default();
+        model = Truth::from_name(&name)
+            .ok_or_else(|| anyhow::anyhow!("unknown truth `{name}`: augmented or four-wheel"))?;
+        args.drain(k..(k + 2).min(args.len()));
+    }
     let seeds: u64 = args.first().and_then(|s| s.parse().ok()).unwrap_or(3);
     let chosen: Vec<EffectKind> = args
         .iter()
@@ -22,7 +35,9 @@ fn main() -> anyhow::Result<()> {
         .filter_map(|n| EffectKind::from_name(n))
         .collect();
     let mut truths: Vec<Vec<EffectKind>> = vec![Vec::new()];
-    if chosen.is_empty() {
+    if chosen.is_empty() && model == Truth::FourWheel {
+        truths.extend(model.effects().into_iter().map(|e| vec![e]));
+    } else if chosen.is_empty() {
         truths.extend(EffectKind::ALL.iter().map(|e| vec![*e]));
         truths.push(vec![EffectKind::RelaxationLength, EffectKind::SensorBias]);
         truths.push(vec![
@@ -34,16 +49,22 @@ fn main() -> anyhow::Result<()> {
         truths = vec![chosen];
     }
     let dir = tempfile::tempdir()?;
+    if model != Truth::Augmented {
+        println!("truth model: {}\n", model.name());
+    }
     println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s |");
     println!("|---|---|---|---|---|---|---|---|");
     for truth in &truths {
         for seed in 1..=seeds {
             let spec = SynthSpec {
-                effects: truth.iter().map(|e| (*e, truth_values(*e))).collect(),
+                effects: truth
+                    .iter()
+                    .filter_map(|e| Some((*e, model.values(*e)?)))
+                    .collect(),
                 seed,
                 noise: Noise::default(),
             };
-            let s = generate(&spec);
+            let s = generate_with(&spec, model)?;
             let rig = dir.path().join(format!("rig_{}_{seed}.csv", s.name()));
             let [fz, alpha, fy] = s.rig_columns();
             write_columns(&rig, &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)])?;

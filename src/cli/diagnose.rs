@@ -5,7 +5,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use handling::diagnose::diagnosis::{observed_channel, Diagnosis, Shrinkage};
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::fit::Channel;
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
 use handling::diagnose::{diagnose as run_diagnosis, diagnosis::work_units};
 use handling::io::campaign::load_campaign;
 use handling::report::plot::{Figure, Panel, Series, Style};
@@ -263,15 +263,25 @@ fn overlays(d: &Diagnosis) -> Figure {
 }
 
 /// `handling synth`: writes a campaign folder generated with `effects`.
-pub fn synth(effects: &[String], seed: u64, out: &Path) -> Result<()> {
+pub fn synth(effects: &[String], seed: u64, truth: &str, out: &Path) -> Result<()> {
+    let truth = Truth::from_name(truth).ok_or_else(|| {
+        let all: Vec<&str> = Truth::ALL.iter().map(|t| t.name()).collect();
+        anyhow!("unknown truth `{truth}`: one of {}", all.join(", "))
+    })?;
     let kinds: Vec<EffectKind> = effects
         .iter()
         .filter(|e| e.as_str() != "none")
         .map(|e| {
-            EffectKind::from_name(e).ok_or_else(|| {
-                let all: Vec<&str> = EffectKind::ALL.iter().map(|k| k.name()).collect();
-                anyhow!("unknown effect `{e}`: one of none, {}", all.join(", "))
-            })
+            EffectKind::from_name(e)
+                .filter(|k| truth.values(*k).is_some())
+                .ok_or_else(|| {
+                    let all: Vec<&str> = truth.effects().iter().map(|k| k.name()).collect();
+                    anyhow!(
+                        "unknown effect `{e}` for the {} truth: one of none, {}",
+                        truth.name(),
+                        all.join(", ")
+                    )
+                })
         })
         .collect::<Result<_>>()?;
     if out.exists() {
@@ -281,11 +291,14 @@ pub fn synth(effects: &[String], seed: u64, out: &Path) -> Result<()> {
         );
     }
     let spec = SynthSpec {
-        effects: kinds.iter().map(|k| (*k, truth_values(*k))).collect(),
+        effects: kinds
+            .iter()
+            .filter_map(|k| Some((*k, truth.values(*k)?)))
+            .collect(),
         seed,
         noise: Noise::default(),
     };
-    let s = generate(&spec);
+    let s = generate_with(&spec, truth)?;
     // Written into a sibling temporary folder, renamed when complete: a
     // failed run leaves no half-written campaign.
     let parent = out
@@ -305,9 +318,10 @@ pub fn synth(effects: &[String], seed: u64, out: &Path) -> Result<()> {
     }
     std::fs::rename(&tmp, out).with_context(|| format!("{}: cannot create", out.display()))?;
     println!(
-        "wrote {} ({} runs, rig data, truth: {}, noise seed {seed}); diagnose it with `handling diagnose {}`",
+        "wrote {} ({} runs, rig data, {} truth with {}, noise seed {seed}); diagnose it with `handling diagnose {}`",
         out.display(),
         s.runs.len(),
+        truth.name(),
         s.name(),
         out.display()
     );

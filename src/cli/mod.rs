@@ -105,6 +105,11 @@ enum Command {
         /// Noise seed.
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// The model that plays the car: `augmented` (the diagnosis's own
+        /// model) or `four-wheel` (an independent four-wheel model with roll
+        /// and its own tyre).
+        #[arg(long, default_value = "augmented")]
+        truth: String,
         /// Campaign folder to create.
         #[arg(long)]
         out: PathBuf,
@@ -157,7 +162,12 @@ pub fn run() -> ExitCode {
             kappa_bin: bin_kappa,
         }),
         Command::Diagnose { campaign, out } => diagnose::diagnose(&campaign, out.as_deref()),
-        Command::Synth { effects, seed, out } => diagnose::synth(&effects, seed, &out),
+        Command::Synth {
+            effects,
+            seed,
+            truth,
+            out,
+        } => diagnose::synth(&effects, seed, &truth, &out),
         Command::Metrics {
             run,
             json,

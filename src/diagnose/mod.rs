@@ -9,6 +9,7 @@ pub mod effects;
 pub mod fit;
 pub mod gap;
 pub mod model;
+pub mod proving_ground;
 pub mod sensors;
 pub mod synth;
 

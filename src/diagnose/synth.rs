@@ -15,9 +15,17 @@
 //!
 //! A cornering-stiffness or friction truth means the car's tyres differ
 //! from the rig's: the rig data are generated without it. Units: SI, rad.
+//!
+//! Two truths ([`Truth`]): the augmented model of the diagnosis itself with
+//! effects switched on (the default), or the independent four-wheel model
+//! of [`super::proving_ground`] with its own Magic-Formula tyre and effects
+//! of its own, whose campaign's `[roll]` settings deliberately differ from
+//! the truth's roll (the diagnosis is not handed the truth).
 
 use super::effects::{EffectKind, EffectSet, RollModel};
 use super::model::{Augmented, Drive};
+use super::proving_ground::{FourWheel, FourWheelEffects, FourWheelVehicle};
+use crate::error::ParamError;
 use crate::identify::data::gauss;
 use crate::io::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::io::MeasuredRun;
@@ -26,6 +34,7 @@ use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::{Vehicle, VehicleModel};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
 use std::path::PathBuf;
 
 /// Noise standard deviations of the synthetic measurements.
@@ -46,6 +55,117 @@ impl Default for Noise {
             ay: 0.05,
             beta: 0.002,
         }
+    }
+}
+
+/// The model that plays the car.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Truth {
+    /// The diagnosis's own augmented 2-DOF model on the UniTire tyre.
+    #[default]
+    Augmented,
+    /// The independent four-wheel model with roll and its own tyre.
+    FourWheel,
+}
+
+impl Truth {
+    /// Every truth.
+    pub const ALL: [Truth; 2] = [Truth::Augmented, Truth::FourWheel];
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Truth::Augmented => "augmented",
+            Truth::FourWheel => "four-wheel",
+        }
+    }
+
+    /// The truth of a name, if it is one.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|t| t.name() == name)
+    }
+
+    /// The effects this truth can switch on.
+    pub fn effects(self) -> Vec<EffectKind> {
+        EffectKind::ALL
+            .into_iter()
+            .filter(|k| self.values(*k).is_some())
+            .collect()
+    }
+
+    /// The truth value of `kind` in this truth's own parameters (None: the
+    /// truth has no such effect). For the four-wheel truth: relaxation
+    /// length m; steering compliance rad/kN of front axle force; roll steer
+    /// (front, rear) rad/rad; roll camber (front, rear) wheel lean per body
+    /// roll, rad/rad; aero (front, rear) N/(m/s)²; friction and stiffness
+    /// scales; yaw-inertia scale; delay s; offsets as the diagnosis's; a
+    /// rolling accelerometer 1.
+    pub fn values(self, kind: EffectKind) -> Option<Vec<f64>> {
+        match self {
+            Truth::Augmented => Some(truth_values(kind)),
+            Truth::FourWheel => match kind {
+                EffectKind::RelaxationLength => Some(vec![0.7]),
+                EffectKind::SteeringCompliance => Some(vec![0.003]),
+                EffectKind::RollSteer => Some(vec![-0.12, 0.05]),
+                EffectKind::RollCamber => Some(vec![0.8, 0.6]),
+                EffectKind::AeroLoad => Some(vec![1.5, 2.0]),
+                EffectKind::RoadFriction => Some(vec![0.75]),
+                EffectKind::CorneringStiffness => Some(vec![0.8, 1.0]),
+                EffectKind::YawInertia => Some(vec![1.3]),
+                EffectKind::SensorDelay => Some(vec![0.05]),
+                EffectKind::SensorBias => Some(vec![0.008, 0.2, 0.004]),
+                EffectKind::AccelerometerRoll => Some(vec![1.0]),
+                EffectKind::LoadTransferDistribution
+                | EffectKind::RoadBank
+                | EffectKind::AccelerometerPosition => None,
+            },
+        }
+    }
+}
+
+/// The four-wheel truth's effects from (kind, parameters) pairs.
+fn four_wheel_effects(effects: &[(EffectKind, Vec<f64>)]) -> Result<FourWheelEffects, ParamError> {
+    let mut e = FourWheelEffects::default();
+    for (k, p) in effects {
+        let need = Truth::FourWheel.values(*k).ok_or_else(|| {
+            ParamError::new(k.name(), f64::NAN, "not an effect of the four-wheel truth")
+        })?;
+        if p.len() != need.len() {
+            return Err(ParamError::new(
+                k.name(),
+                p.len() as f64,
+                &format!("takes {} parameters", need.len()),
+            ));
+        }
+        match k {
+            EffectKind::RelaxationLength => e.relaxation_length = p[0],
+            EffectKind::SteeringCompliance => e.steering_compliance = p[0] * 1e-3,
+            EffectKind::RollSteer => e.roll_steer = [p[0], p[1]],
+            EffectKind::RollCamber => e.roll_camber = [p[0], p[1]],
+            EffectKind::AeroLoad => e.aero_load = [p[0], p[1]],
+            EffectKind::RoadFriction => e.friction_scale = p[0],
+            EffectKind::CorneringStiffness => e.stiffness_scale = [p[0], p[1]],
+            EffectKind::YawInertia => e.yaw_inertia_scale = p[0],
+            EffectKind::SensorDelay => e.sensor_delay = p[0],
+            EffectKind::SensorBias => e.sensor_bias = [p[0], p[1], p[2]],
+            EffectKind::AccelerometerRoll => e.accelerometer_rolls = p[0] != 0.0,
+            EffectKind::LoadTransferDistribution
+            | EffectKind::RoadBank
+            | EffectKind::AccelerometerPosition => {}
+        }
+    }
+    Ok(e)
+}
+
+/// The roll the four-wheel truth's campaign file states: a generic
+/// passenger-car guess (3°/g, 1.2 Hz, ζ = 0.6), not the truth's 6°/g,
+/// about 1.8 Hz, ζ = 0.35.
+pub fn four_wheel_campaign_roll() -> RollModel {
+    RollModel {
+        gradient: 3f64.to_radians() / crate::vehicle::G,
+        frequency: 1.2,
+        damping: 0.6,
     }
 }
 
@@ -86,7 +206,9 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
 pub struct Synthetic {
     /// Vehicle.
     pub vehicle: Vehicle,
-    /// Truth tyre (all wheels).
+    /// Truth tyre (all wheels) of the augmented truth; the four-wheel
+    /// truth's own tyre is [`FourWheelVehicle::tyre`] (this field then holds
+    /// the UniTire it replaces).
     pub tyre: Tyre,
     /// Rig samples: fz, alpha, fy.
     pub rig: Vec<[f64; 3]>,
@@ -94,6 +216,11 @@ pub struct Synthetic {
     pub runs: Vec<MeasuredRun>,
     /// The specification.
     pub spec: SynthSpec,
+    /// The model that played the car.
+    pub truth: Truth,
+    /// The roll the campaign file states (for the four-wheel truth it
+    /// differs from the truth's).
+    pub roll: RollModel,
 }
 
 /// The bundled UniTire of the truth.
@@ -156,29 +283,52 @@ fn programme(model: &VehicleModel) -> Vec<(String, Manoeuvre)> {
     ]
 }
 
-/// Generates a campaign.
+/// Generates a campaign with the augmented truth.
 pub fn generate(spec: &SynthSpec) -> Synthetic {
+    generate_with(spec, Truth::Augmented).expect("every effect is one of the augmented truth")
+}
+
+/// Generates a campaign with `truth`; an error when `truth` lacks one of
+/// the effects asked for.
+pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
     let vehicle = Vehicle::seed004_sedan();
     let tyre = truth_tyre();
     let base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
-    let mut truth = Augmented::new(base.clone(), 1.0);
+    let mut augmented = Augmented::new(base.clone(), 1.0);
     let mut effects = EffectSet::default();
     for (k, p) in &spec.effects {
         effects.set(*k, p);
     }
-    truth.effects = effects;
+    augmented.effects = effects;
+    let four_wheel = FourWheel {
+        vehicle: FourWheelVehicle::sedan(),
+        effects: match truth {
+            Truth::FourWheel => four_wheel_effects(&spec.effects)?,
+            Truth::Augmented => FourWheelEffects::default(),
+        },
+    };
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
     let runs = programme(&base)
         .into_iter()
         .map(|(name, m)| {
-            let drive = Drive::new(&m, 1e-3);
-            let response = truth.simulate(&drive, [0.0; 6]);
             let times: Vec<f64> = (0..)
                 .map(|i| 3.0 + 0.01 * i as f64)
                 .take_while(|t| *t <= m.end_time() + 1e-9)
                 .collect();
-            let obs = truth.observe(&response, &times);
+            let (yaw_rate, ay, beta) = match truth {
+                Truth::Augmented => {
+                    let drive = Drive::new(&m, 1e-3);
+                    let response = augmented.simulate(&drive, [0.0; 6]);
+                    let o = augmented.observe(&response, &times);
+                    (o.yaw_rate, o.ay, o.beta)
+                }
+                Truth::FourWheel => {
+                    let response = four_wheel.simulate(&m, 1e-3);
+                    let o = four_wheel.observe(&response, &times);
+                    (o.yaw_rate, o.ay, o.beta)
+                }
+            };
             let mut noisy = |v: &[f64], s: f64| -> Vec<f64> {
                 v.iter().map(|x| x + s * gauss(&mut rng)).collect()
             };
@@ -186,9 +336,9 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
                 path: PathBuf::from(format!("{name}.csv")),
                 speed: times.iter().map(|&t| m.speed(t)).collect(),
                 steer: times.iter().map(|&t| m.steer(t)).collect(),
-                yaw_rate: noisy(&obs.yaw_rate, n.yaw_rate),
-                ay: Some(noisy(&obs.ay, n.ay)),
-                beta: Some(noisy(&obs.beta, n.beta)),
+                yaw_rate: noisy(&yaw_rate, n.yaw_rate),
+                ay: Some(noisy(&ay, n.ay)),
+                beta: Some(noisy(&beta, n.beta)),
                 roll: None,
                 bank: None,
                 ax: None,
@@ -198,21 +348,30 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
         })
         .collect();
     let mut rig = Vec::new();
+    let rig_tyre = four_wheel.vehicle.tyre;
     for fz in [2500.0, 4000.0, 5500.0, 7000.0] {
         for k in -240..=240 {
             let alpha = (k as f64 * 0.05).to_radians();
-            let fy = tyre.lateral_force(&SlipState::lateral(alpha, fz));
+            let fy = match truth {
+                Truth::Augmented => tyre.lateral_force(&SlipState::lateral(alpha, fz)),
+                Truth::FourWheel => rig_tyre.lateral_force(alpha, fz, 0.0, 1.0, 1.0),
+            };
             let sigma = 0.01 * fy.abs() + 20.0;
             rig.push([fz, alpha, fy + sigma * gauss(&mut rng)]);
         }
     }
-    Synthetic {
+    Ok(Synthetic {
         vehicle,
         tyre,
         rig,
         runs,
         spec: spec.clone(),
-    }
+        truth,
+        roll: match truth {
+            Truth::Augmented => RollModel::default(),
+            Truth::FourWheel => four_wheel_campaign_roll(),
+        },
+    })
 }
 
 impl Synthetic {
@@ -240,7 +399,7 @@ impl Synthetic {
                 model: "pac89".into(),
             },
             runs: self.runs.clone(),
-            roll: RollModel::default(),
+            roll: self.roll,
             settings,
             effects,
             notes: Vec::new(),
@@ -271,10 +430,32 @@ impl Synthetic {
             .iter()
             .map(|(k, p)| format!("#   {} = {:?}", k.name(), p))
             .collect();
+        let (model, roll) = match self.truth {
+            Truth::Augmented => ("UniTire tyres".to_string(), String::new()),
+            Truth::FourWheel => {
+                let t = FourWheelVehicle::sedan();
+                (
+                    format!(
+                        "four-wheel model with roll (roll gradient {:.2} deg/g, roll stiffness {:.0}/{:.0} N m/rad, \
+                         damping {:.0}/{:.0} N m s/rad front/rear), its own Magic-Formula tyres",
+                        (t.roll_gradient() * crate::vehicle::G).to_degrees(),
+                        t.roll_stiffness[0],
+                        t.roll_stiffness[1],
+                        t.roll_damping[0],
+                        t.roll_damping[1]
+                    ),
+                    format!(
+                        "# The roll below is a generic guess that differs from the truth's.\n[roll]\ngradient = {}\nfrequency = {}\ndamping = {}\n\n",
+                        self.roll.gradient, self.roll.frequency, self.roll.damping
+                    ),
+                )
+            }
+        };
         format!(
-            "# Synthetic campaign (handling synth), noise seed {}.\n# Truth (withheld from the diagnosis): UniTire tyres, effects:\n{}\n\
+            "# Synthetic campaign (handling synth --truth {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n\
              [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
-             [tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n[diagnose]\nseed = {}\n",
+             [tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n{roll}[diagnose]\nseed = {}\n",
+            self.truth.name(),
             self.spec.seed,
             if truth.is_empty() { "#   none".to_string() } else { truth.join("\n") },
             v.mass,

@@ -4,23 +4,33 @@
 //! with the effect withheld from the base model, and tabulate what the
 //! verdict names and how far the held-out gap shrinks.
 //!
-//! `cargo run --release --example confusion_matrix [seeds] [effect ...]
-//! [--truth four-wheel]`
+//! `cargo run --release --example confusion_matrix [seeds] [effect ... |
+//! none] [--truth four-wheel] [--glitches]`
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
 //! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
 //! row for no effect and one for each effect that truth implements (its
 //! own parameter values, in its own units, in the `fitted (truth)` column).
+//!
+//! With `--glitches` each campaign is diagnosed a second time from a copy of
+//! its runs with logger glitches injected ([`handling::io::clean::inject_glitches`]:
+//! a zero read, a spike and a held value per response channel, a steer
+//! spike) and cleaned as `diagnose` cleans a campaign read from files; the
+//! row then also shows that copy's verdict and how many of the injected
+//! glitches the cleaning listed.
 
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
 use handling::io::campaign::DiagnoseSettings;
+use handling::io::clean::{clean_runs, inject_glitches, CleanSettings};
 use handling::report::write_columns;
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let glitches = args.iter().any(|a| a == "--glitches");
+    args.retain(|a| a != "--glitches");
     let mut model = Truth::Augmented;
     if let Some(k) = args.iter().position(|a| a == "--truth") {
         let name = args.get(k + 1).cloned().unwrap_or_default();
@@ -35,7 +45,9 @@ fn main() -> anyhow::Result<()> {
         .filter_map(|n| EffectKind::from_name(n))
         .collect();
     let mut truths: Vec<Vec<EffectKind>> = vec![Vec::new()];
-    if chosen.is_empty() && model == Truth::FourWheel {
+    if args.iter().skip(1).any(|a| a == "none") {
+        // `none`: the no-effect row alone.
+    } else if chosen.is_empty() && model == Truth::FourWheel {
         truths.extend(model.effects().into_iter().map(|e| vec![e]));
     } else if chosen.is_empty() {
         truths.extend(EffectKind::ALL.iter().map(|e| vec![*e]));
@@ -52,8 +64,13 @@ fn main() -> anyhow::Result<()> {
     if model != Truth::Augmented {
         println!("truth model: {}\n", model.name());
     }
-    println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s |");
-    println!("|---|---|---|---|---|---|---|---|");
+    if glitches {
+        println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s | verdict with glitches | glitches listed / injected |");
+        println!("|---|---|---|---|---|---|---|---|---|---|");
+    } else {
+        println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s |");
+        println!("|---|---|---|---|---|---|---|---|");
+    }
     for truth in &truths {
         for seed in 1..=seeds {
             let spec = SynthSpec {
@@ -73,6 +90,31 @@ fn main() -> anyhow::Result<()> {
                 ..DiagnoseSettings::default()
             };
             let c = s.campaign(rig, EffectKind::ALL.to_vec(), settings);
+            let glitched = if glitches {
+                let mut g = c.clone();
+                let mut injected = 0;
+                for (k, run) in g.runs.iter_mut().enumerate() {
+                    injected += inject_glitches(run, 1000 * seed + k as u64).len();
+                }
+                let (runs, report) = clean_runs(g.runs, &CleanSettings::diagnosis(5.0));
+                g.runs = runs;
+                let listed = report.glitches.len();
+                g.cleaning = report;
+                let v = diagnose(&g, None)
+                    .map_err(anyhow::Error::msg)?
+                    .verdict
+                    .effects;
+                Some((
+                    if v.is_empty() {
+                        "—".into()
+                    } else {
+                        v.join("+")
+                    },
+                    format!("{listed} / {injected}"),
+                ))
+            } else {
+                None
+            };
             let t0 = Instant::now();
             let d = diagnose(&c, None).map_err(anyhow::Error::msg)?;
             let conf: Vec<String> = d
@@ -102,7 +144,7 @@ fn main() -> anyhow::Result<()> {
                     )
                 })
                 .collect();
-            println!(
+            print!(
                 "| {} | {seed} | {} | {} | {:.2} → {:.2} ({:.2}) | {:.0} | {} ({:?}) | {:.1} |",
                 s.name(),
                 if d.verdict.effects.is_empty() {
@@ -123,6 +165,10 @@ fn main() -> anyhow::Result<()> {
                 truth_params,
                 t0.elapsed().as_secs_f64()
             );
+            match &glitched {
+                Some((v, n)) => println!(" {v} | {n} |"),
+                None => println!(),
+            }
             for r in d.ranking.iter().take(4) {
                 eprintln!(
                     "    {} J {:.3} red {:.0}% dBIC {:.0} {:?}",

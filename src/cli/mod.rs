@@ -130,6 +130,13 @@ enum Command {
         /// Lowest speed kept, m/s: standstills and crawling are excluded.
         #[arg(long, default_value_t = 5.0)]
         min_speed: f64,
+        /// Cut-off of the zero-phase low-pass applied to the run first, Hz
+        /// (0: unfiltered).
+        #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ)]
+        filter_hz: f64,
+        /// Total-variance window from the steer onset, s.
+        #[arg(long, default_value_t = 4.0)]
+        variance_window: f64,
     },
 }
 
@@ -174,7 +181,20 @@ pub fn run() -> ExitCode {
             pre_window,
             steady_window,
             min_speed,
-        } => simulate::metrics(&run, json, pre_window, steady_window, min_speed),
+            filter_hz,
+            variance_window,
+        } => simulate::metrics(
+            &run,
+            json,
+            handling::metrics::MetricSettings {
+                pre_window,
+                steady_window,
+                variance_window,
+                filter_hz: (filter_hz > 0.0).then_some(filter_hz),
+                ..handling::metrics::MetricSettings::default()
+            },
+            min_speed,
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

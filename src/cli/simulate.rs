@@ -57,6 +57,15 @@ fn print_metrics(m: &StepMetrics) {
     );
     println!("  E_ay                     {:>10.4} s", m.ay_total_variance);
     println!("  Er                       {:>10.4} s", m.er);
+    if let Some(f) = m.filter_hz {
+        println!(
+            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {:.2} % of the step",
+            100.0 * m.yaw_rate_noise
+        );
+    }
+    if m.yaw_rate_peak_time.is_none() {
+        println!("  no overshoot: no yaw-rate maximum stands above the steady state by more than the noise");
+    }
     if !m.settled {
         println!("  warning: the response has not settled in the steady window");
     }
@@ -195,13 +204,7 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
 }
 
 /// `handling metrics`.
-pub fn metrics(
-    path: &Path,
-    json: bool,
-    pre_window: f64,
-    steady_window: f64,
-    min_speed: f64,
-) -> Result<()> {
+pub fn metrics(path: &Path, json: bool, settings: MetricSettings, min_speed: f64) -> Result<()> {
     let (run, cleaning) = handling::io::clean::clean_for_metrics(read_run(path)?, min_speed)?;
     for line in cleaning.summary(5) {
         eprintln!("cleaning: {line}");
@@ -212,11 +215,6 @@ pub fn metrics(
             path.display()
         )
     })?;
-    let settings = MetricSettings {
-        pre_window,
-        steady_window,
-        ..MetricSettings::default()
-    };
     let m = step_metrics(
         &run.t,
         &run.steer,

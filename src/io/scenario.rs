@@ -81,7 +81,8 @@ pub struct StepSteerSpec {
     /// Time the steer starts, s.
     #[serde(default = "default_start")]
     pub start: f64,
-    /// 0–100 % rise time, s (GB/T 6323 / ISO 7401: at most 0.2 s).
+    /// 0–100 % rise time of the linear steer ramp, s (ISO 7401: 10–90 %
+    /// within 0.15 s, so at most 0.1875 s; GB/T 6323: at most 0.2 s).
     #[serde(default = "default_rise")]
     pub rise_time: f64,
     /// End of the run, s.
@@ -92,6 +93,10 @@ pub struct StepSteerSpec {
 fn default_start() -> f64 {
     1.0
 }
+/// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
+/// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
+pub const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
+
 fn default_rise() -> f64 {
     0.1
 }
@@ -257,8 +262,8 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
                     "rise_time",
                     s.rise_time,
                     -1e-12,
-                    0.2,
-                    "GB/T 6323 and ISO 7401 require a steer rise time of at most 0.2 s",
+                    MAX_RAMP_TIME,
+                    "ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)",
                 ),
             )?;
             check(src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;

@@ -93,3 +93,31 @@ fn refuses_records_without_a_step() {
     );
     assert_eq!(e.unwrap_err(), MetricsError::Shape);
 }
+
+#[test]
+fn the_zero_phase_low_pass_halves_its_cutoff_and_moves_nothing() {
+    // Forward-backward: the magnitude is |H|², ½ at the cut-off, and the
+    // phase is zero, so a sine's peaks stay where they are.
+    let dt = 0.001;
+    let t = grid(dt, 20.0);
+    for (f, gain) in [(10.0, 0.5), (1.0, 1.0)] {
+        let x: Vec<f64> = t
+            .iter()
+            .map(|&s| (std::f64::consts::TAU * f * s).sin())
+            .collect();
+        let y = zero_phase_low_pass(&x, dt, 10.0);
+        // Away from the ends.
+        let mid = &y[5000..15000];
+        let amp = mid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        assert!((amp - gain).abs() < 2e-3, "{f} Hz: {amp}");
+        let i = 5000 + mid.iter().position(|v| (v - amp).abs() < 1e-12).unwrap();
+        let phase = (f * t[i]).fract();
+        assert!(
+            (phase - 0.25).abs() < 1e-3 * f.max(1.0),
+            "{f} Hz peak at phase {phase}"
+        );
+    }
+    // A constant passes unchanged, ends included.
+    let c = zero_phase_low_pass(&vec![3.5; 500], dt, 10.0);
+    assert!(c.iter().all(|v| (v - 3.5).abs() < 1e-12));
+}

@@ -166,9 +166,22 @@ fn step_beyond_the_rise_time_limit_is_refused() {
     let dir = scenario(VEHICLE, GIM, &format!("{STEP}rise_time = 0.5\n"));
     let e = simulate_err(dir.path());
     assert!(
-        e.contains("manoeuvre.rise_time") && e.contains("0.2 s"),
+        e.contains("manoeuvre.rise_time") && e.contains("10–90 %") && e.contains("0.15 s"),
         "{e}"
     );
+    // A 0.2 s ramp takes 0.16 s from 10 % to 90 %: beyond ISO 7401.
+    let dir = scenario(VEHICLE, GIM, &format!("{STEP}rise_time = 0.2\n"));
+    assert!(simulate_err(dir.path()).contains("manoeuvre.rise_time"));
+    // 0.18 s takes 0.144 s: accepted.
+    let dir = scenario(VEHICLE, GIM, &format!("{STEP}rise_time = 0.18\n"));
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
 }
 
 #[test]

@@ -35,8 +35,10 @@ fn run_csv(cols: &[Vec<f64>; 6], noise: f64, seed: u64) -> String {
     ];
     let mut s = String::from("t,speed,steer,yaw_rate,ay,beta\n");
     for i in 0..cols[0].len() {
-        let row: Vec<String> = (0..6)
-            .map(|k| format!("{}", cols[k][i] + noise * scale[k] * g.next()))
+        let row: Vec<String> = cols
+            .iter()
+            .zip(scale)
+            .map(|(c, sc)| format!("{}", c[i] + noise * sc * g.next()))
             .collect();
         s += &row.join(",");
         s.push('\n');
@@ -129,9 +131,9 @@ fn a_longer_noisy_record_has_the_same_total_variance() {
     let n = cols[0].len();
     for i in 1..=6000 {
         long[0].push(cols[0][n - 1] + i as f64 * dt);
-        for k in 1..6 {
-            let v = long[k][n - 1];
-            long[k].push(v);
+        for c in long.iter_mut().skip(1) {
+            let v = c[n - 1];
+            c.push(v);
         }
     }
     let dir = tempfile::tempdir().unwrap();

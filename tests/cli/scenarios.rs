@@ -63,20 +63,35 @@ fn metrics_of_a_written_history_match_the_simulation() {
         out.path().to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let o = run(&[
-        "metrics",
-        out.path().join("history.csv").to_str().unwrap(),
-        "--json",
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let a: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let history = out.path().join("history.csv");
+    let metrics = |extra: &[&str]| -> serde_json::Value {
+        let mut args = vec!["metrics", history.to_str().unwrap(), "--json"];
+        args.extend_from_slice(extra);
+        let o = run(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        serde_json::from_slice(&o.stdout).unwrap()
+    };
     let b: serde_json::Value = read_json(&out.path().join("metrics.json"));
+    // Unfiltered, as a simulated record is measured: the same numbers.
+    let a = metrics(&["--filter-hz", "0"]);
     for key in ["yaw_rate_response_time", "yaw_rate_overshoot", "er", "tb"] {
         let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
         assert!(
             (x - y).abs() <= 1e-9 * y.abs().max(1.0),
             "{key}: {x} vs {y}"
         );
+    }
+    // The default 10 Hz low-pass for measured runs barely moves them.
+    let a = metrics(&[]);
+    assert_eq!(a["filter_hz"], 10.0);
+    for (key, tol) in [
+        ("yaw_rate_response_time", 1e-3),
+        ("yaw_rate_peak_time", 2e-3),
+        ("yaw_rate_overshoot", 0.05),
+        ("er", 1e-3),
+    ] {
+        let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
+        assert!((x - y).abs() <= tol, "{key}: {x} vs {y}");
     }
 }
 

@@ -7,38 +7,20 @@ use super::*;
 #[test]
 fn roll_camber_on_an_independent_truth_is_named_and_its_scores_agree() {
     let dir = tempfile::tempdir().unwrap();
-    let campaign = dir.path().join("c");
-    let o = run(&[
-        "synth",
+    let args = [
         "--truth",
         "four-wheel",
         "--effects",
         "roll_camber",
         "--seed",
         "1",
-        "--out",
-        campaign.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    ];
+    let campaign = synth_campaign(dir.path(), "c", &args);
     // The campaign's roll model is not the truth's (3°/g against 6°/g).
     let vehicle = fs::read_to_string(campaign.join("vehicle.toml")).unwrap();
     assert!(vehicle.contains("[roll]"), "{vehicle}");
-    let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let d = read_json(&out.join("diagnosis.json"));
-    let named: Vec<&str> = d["verdict"]["effects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|e| e.as_str().unwrap())
-        .collect();
-    assert_eq!(named, vec!["roll_camber"], "{}", d["verdict"]);
+    let (_, d) = diagnose_campaign(&campaign);
+    assert_eq!(verdict_of(&d), vec!["roll_camber"], "{}", d["verdict"]);
     let r = d["ranking"]
         .as_array()
         .unwrap()

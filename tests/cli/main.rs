@@ -88,3 +88,41 @@ mod real_logs;
 mod rig_layouts;
 mod scenarios;
 mod sweeps;
+
+/// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
+pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+    let out = dir.join(name);
+    let mut all = vec!["synth"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    let o = run(&all);
+    assert!(o.status.success(), "{}", stderr(&o));
+    out
+}
+
+/// Runs `diagnose` on a campaign (outputs beside it, `<campaign>.out`):
+/// its stdout and `diagnosis.json`.
+pub(crate) fn diagnose_campaign(campaign: &Path) -> (String, serde_json::Value) {
+    let out = campaign.with_extension("out");
+    let o = run(&[
+        "diagnose",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        read_json(&out.join("diagnosis.json")),
+    )
+}
+
+/// The effects a diagnosis's verdict names.
+pub(crate) fn verdict_of(d: &serde_json::Value) -> Vec<String> {
+    d["verdict"]["effects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e.as_str().unwrap().to_string())
+        .collect()
+}

@@ -5,37 +5,12 @@ use super::*;
 
 /// `synth --truth four-wheel` into `dir/name`; returns the folder.
 fn synth_four_wheel(dir: &Path, name: &str, effects: &str) -> PathBuf {
-    let out = dir.join(name);
-    let o = run(&[
-        "synth",
-        "--truth",
-        "four-wheel",
-        "--effects",
-        effects,
-        "--seed",
-        "2",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("four-wheel truth"));
-    out
+    let args = ["--truth", "four-wheel", "--effects", effects, "--seed", "2"];
+    synth_campaign(dir, name, &args)
 }
 
-/// `diagnose` of a campaign folder: (stdout, diagnosis.json).
 fn diagnose(campaign: &Path) -> (String, serde_json::Value) {
-    let out = campaign.with_extension("out");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    (
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        read_json(&out.join("diagnosis.json")),
-    )
+    diagnose_campaign(campaign)
 }
 
 #[test]

@@ -276,17 +276,8 @@ fn real_hoosier_rig_data_groups_as_before() {
 #[test]
 fn a_campaign_whose_rig_file_has_the_papers_layout_is_diagnosed() {
     let dir = tempfile::tempdir().unwrap();
-    let campaign = dir.path().join("c");
-    let o = run(&[
-        "synth",
-        "--effects",
-        "relaxation_length",
-        "--seed",
-        "2",
-        "--out",
-        campaign.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let args = ["--effects", "relaxation_length", "--seed", "2"];
+    let campaign = synth_campaign(dir.path(), "c", &args);
     // Keep every sixth rig row: one sample per 0.3° of slip, as the papers
     // tabulate them.
     let rig = campaign.join("tyre_rig.csv");
@@ -300,20 +291,11 @@ fn a_campaign_whose_rig_file_has_the_papers_layout_is_diagnosed() {
         }
     }
     fs::write(&rig, thinned).unwrap();
-    let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let d = read_json(&out.join("diagnosis.json"));
-    let named: Vec<&str> = d["verdict"]["effects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|e| e.as_str().unwrap())
-        .collect();
-    assert_eq!(named, vec!["relaxation_length"], "{}", d["verdict"]);
+    let (_, d) = diagnose_campaign(&campaign);
+    assert_eq!(
+        verdict_of(&d),
+        vec!["relaxation_length"],
+        "{}",
+        d["verdict"]
+    );
 }

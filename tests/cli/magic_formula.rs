@@ -221,3 +221,54 @@ fn scenario_with_a_tir_tyre_simulates() {
     // a car with any grip has a positive gain.
     assert!(gain > 1.0 && gain < 8.0, "{m}");
 }
+
+/// Reference rows of an independent implementation: (fz, kappa, alpha_iso,
+/// camber_iso, speed, pressure, fx, fy, mz, mx, my), ISO-W, unmirrored.
+fn reference(v: &str) -> Vec<Vec<f64>> {
+    let text = fs::read_to_string(root().join(format!(
+        "tests/fixtures/tir/reference_tyredyn_mf{v}.csv"
+    )))
+    .unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect()
+}
+
+#[test]
+fn tyre_eval_agrees_with_tyredyn_on_public_files() {
+    for v in ["61", "62"] {
+        let rows = reference(v);
+        assert_eq!(rows.len(), 3 * 2 * 3 * 13 * 7);
+        // The files are TYRESIDE = RIGHT: the left tyre the crate presents
+        // at (α, γ) is the file's tyre at (α_ISO = α, γ_ISO = −γ), with fy
+        // and mx negated (module docs of tyre::mf).
+        let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
+        for r in &rows {
+            pts.push_str(&format!("{},{},{},{},{},{}\n", r[0], r[1], r[2], -r[3], r[4], r[5]));
+        }
+        let dir = scratch(&[("points.csv", &pts)]);
+        let out = dir.path().join("forces.csv");
+        let tir = root().join(format!("tests/fixtures/tir/MagicFormula{v}_Parameters.tir"));
+        let o = run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            dir.path().join("points.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let (head, got) = read_out(&out);
+        let fnomin = 6752.0;
+        for (r, g) in rows.iter().zip(&got) {
+            for (name, i, sign) in [("fx", 6, 1.0), ("fy", 7, -1.0), ("mx", 9, -1.0), ("my", 10, 1.0)] {
+                let (want, have) = (sign * r[i], g[col(&head, name)]);
+                assert!(
+                    (have - want).abs() <= 1e-6 * want.abs() + 1e-6 * fnomin,
+                    "MF{v} {name} at {r:?}: {have} vs {want}"
+                );
+            }
+        }
+    }
+}

@@ -40,6 +40,15 @@
 //! - 6.2 differs from 6.1 only in transient and loaded-radius parts not
 //!   modelled here, so both use the same steady-state equations.
 //!
+//! - `Kyγ0` carries `(1 − PPY5·dpi)`, the sign with which TyreDyn (van
+//!   Rossem, 2025, after MFeval) evaluates it; Pacejka (2012) eq. 4.E30
+//!   prints `(1 + pPy5·dpi)`.
+//! - `cos'α = Vcx/(Vc + εV)` with `εV = 0.1 m/s` (eq. 4.E6); the trail is
+//!   multiplied by `λ_Fz0` (TNO); the equivalent slip angles of combined
+//!   `Mz` combine tangents (TNO eqs. A54/A55), `s` uses `Fy/Fz0` and `γ`.
+//! - the factor on `atan(Bt·Ct·αt)` in `Et`: `2/π` as in the book (default)
+//!   or `π/2` as TyreDyn evaluates it ([`TrailCurvature`]).
+//!
 //! Turn slip is off (all ζ = 1). Low speed: below `VXLOW` the vertical
 //! shifts (`SVx`, `SVy`, `SVyκ`) and `My` fade linearly with `|V|/VXLOW`, so
 //! a standing tyre at zero slip has no force. Zero or negative load gives
@@ -116,6 +125,19 @@ pub struct MfOptions {
     pub alpha_star: AlphaStar,
     /// Use the digressive `λ'_μ` (A_μ = 10) in the vertical shifts.
     pub digressive_mu: bool,
+    /// The factor on `atan(Bt·Ct·αt)` in the trail curvature `Et`.
+    pub trail_curvature: TrailCurvature,
+}
+
+/// The factor on `atan(Bt·Ct·αt)` in the trail curvature `Et`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TrailCurvature {
+    /// `2/π`, as printed in Pacejka (2012) eq. 4.E44.
+    #[default]
+    TwoOverPi,
+    /// `π/2`, as TyreDyn (van Rossem, 2025) evaluates it.
+    PiOverTwo,
 }
 
 impl Default for MfOptions {
@@ -123,6 +145,7 @@ impl Default for MfOptions {
         Self {
             alpha_star: AlphaStar::Tan,
             digressive_mu: true,
+            trail_curvature: TrailCurvature::TwoOverPi,
         }
     }
 }
@@ -176,6 +199,7 @@ pub struct MfOutput {
 }
 
 const EPS: f64 = 1e-6;
+const EPS_V: f64 = 0.1;
 const A_MU: f64 = 10.0;
 
 /// `x` moved away from zero by `EPS` in its own direction.
@@ -313,7 +337,9 @@ impl MagicFormula {
             AlphaStar::Angle => alpha * sgn(vx),
         };
         let gs = gamma.sin();
-        let cos_a = alpha.cos();
+        // cos'α = Vcx/(Vc + εV) with εV = 0.1 m/s (Pacejka 2012 eq. 4.E6).
+        let vsy = vx * astar;
+        let cos_a = vx / ((vx * vx + vsy * vsy).sqrt() + EPS_V);
         // Friction scaling with slip speed (λ*_μ) and its digressive form.
         let vs = vx.abs() * (kappa * kappa + astar * astar).sqrt();
         let lmux_s = c.LMUX * mu_scale / (1.0 + c.LMUV * vs / c.LONGVL);
@@ -379,13 +405,20 @@ impl MagicFormula {
         let at = astar + sht;
         let shf = lat.shy + lat.svy / kya_p;
         let ar = astar + shf;
+        // TNO (Besselink et al. 2010, eqs. A58/A60): γ itself, QBZ4 and
+        // QDZ3 linear in γ; the book's γ*, |γ*| and QBZ6 are not used.
         let bt = (c.QBZ1 + c.QBZ2 * dfz + c.QBZ3 * dfz * dfz)
-            * (1.0 + c.QBZ4 * if v52 { gamma } else { 0.0 } + c.QBZ5 * gz.abs() + c.QBZ6 * gz * gz)
+            * (1.0 + c.QBZ4 * gamma + c.QBZ5 * gamma.abs())
             * c.LKY
             / lmuy_s;
         let ct = c.QCZ1;
-        let dt0 = fz * (r0 / fz0p) * (c.QDZ1 + c.QDZ2 * dfz) * (1.0 - c.PPZ1 * dpi) * c.LTR * sgn(vx);
-        let dt = dt0 * (1.0 + c.QDZ3 * gz.abs() + c.QDZ4 * gz * gz);
+        let dt = fz
+            * (r0 / fz0p)
+            * (c.QDZ1 + c.QDZ2 * dfz)
+            * (1.0 - c.PPZ1 * dpi)
+            * (1.0 + c.QDZ3 * gamma + c.QDZ4 * gamma * gamma)
+            * c.LTR
+            * sgn(vx);
         let br = c.QBZ9 * c.LKY / lmuy_s + c.QBZ10 * lat.by * lat.cy;
         let dr = fz
             * r0
@@ -399,18 +432,25 @@ impl MagicFormula {
             * cos_a;
         let kratio = kxk / kya_p;
         let k2 = kratio * kratio * kappa * kappa;
-        let at_eq = (at * at + k2).sqrt() * sgn(at);
-        let ar_eq = (ar * ar + k2).sqrt() * sgn(ar);
+        // TNO (A54/A55): the equivalent angles combine tangents.
+        let at_eq = (at.tan().powi(2) + k2).sqrt().atan() * sgn(at);
+        let ar_eq = (ar.tan().powi(2) + k2).sqrt().atan() * sgn(ar);
+        let et_factor = match self.options.trail_curvature {
+            TrailCurvature::TwoOverPi => 2.0 / PI,
+            TrailCurvature::PiOverTwo => PI / 2.0,
+        };
         let et_at = |a: f64| {
             ((c.QEZ1 + c.QEZ2 * dfz + c.QEZ3 * dfz * dfz)
-                * (1.0 + (c.QEZ4 + c.QEZ5 * gz) * (2.0 / PI) * (bt * ct * a).atan()))
+                * (1.0 + (c.QEZ4 + c.QEZ5 * gz) * et_factor * (bt * ct * a).atan()))
             .min(1.0)
         };
         let et = et_at(at);
-        let t = dt * mf_cos(bt, ct, et, at_eq) * cos_a;
+        // TNO scales the trail by λ_Fz0 as well.
+        let t = dt * mf_cos(bt, ct, et, at_eq) * cos_a * c.LFZO;
         let mzr = dr * (br * ar_eq).atan().cos() * cos_a;
         let fy_prime = gyk * lat0.fy0;
-        let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0p) + (c.SSZ3 + c.SSZ4 * dfz) * gz) * c.LS;
+        // TNO (A56): Fy/Fz0 with the unscaled Fz0 and γ itself.
+        let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + (c.SSZ3 + c.SSZ4 * dfz) * gamma) * c.LS;
         let mz = -t * fy_prime + mzr + s * fx;
 
         // Overturning moment (TNO 6.1 form).
@@ -472,7 +512,7 @@ impl MagicFormula {
         let shy = if v52 {
             (c.PHY1 + c.PHY2 * dfz) * c.LHY + c.PHY3 * gs
         } else {
-            let kyg0 = fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC;
+            let kyg0 = fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 - c.PPY5 * dpi) * c.LKYC;
             (c.PHY1 + c.PHY2 * dfz) * c.LHY + (kyg0 * gs - svyg) / guard(kya)
         };
         let ay = astar + shy;

@@ -519,4 +519,27 @@ mod tests {
             assert_eq!(n, 3 * 2 * 13 * 7);
         }
     }
+
+    #[test]
+    fn public_file_written_back_gives_identical_forces() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
+        for v in ["52", "61", "62"] {
+            let path = dir.join(format!("MagicFormula{v}_Parameters.tir"));
+            let doc = TirDocument::read(&path).unwrap();
+            let t = doc.magic_formula().unwrap();
+            let text = doc.write(&t).unwrap();
+            let back = TirDocument::parse(&path, &text).unwrap();
+            assert_eq!(back.magic_formula().unwrap(), t);
+            // Keys the model does not read come back unchanged.
+            for key in ["USE_MODE", "MASS", "WIDTH"] {
+                if let Some((_, e)) = doc.get(key) {
+                    assert_eq!(back.get(key).unwrap().1.value, e.value, "{key}");
+                }
+            }
+            assert_eq!(doc.lines.len(), back.lines.len());
+        }
+        let fresh = write_new(&load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
+        let again = TirDocument::parse(Path::new("new.tir"), &fresh).unwrap().magic_formula().unwrap();
+        assert_eq!(again, load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
+    }
 }

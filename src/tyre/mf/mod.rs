@@ -603,3 +603,6 @@ pub fn evaluate_batch(
     out.reserve(points.len());
     out.extend(points.iter().map(|p| tyre.evaluate(p)));
 }
+
+#[cfg(test)]
+mod tests;

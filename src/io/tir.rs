@@ -139,10 +139,7 @@ impl TirDocument {
     }
 
     fn at(&self, line: usize, key: &str, message: String) -> InputError {
-        let column = self.lines[line - 1]
-            .1
-            .as_ref()
-            .map_or(1, |e| e.span.0 + 1);
+        let column = self.lines[line - 1].1.as_ref().map_or(1, |e| e.span.0 + 1);
         InputError::At {
             path: self.path.clone(),
             line,
@@ -410,7 +407,9 @@ fn parse_entry(
             Ok(x) if x.is_finite() => TirValue::Number(x),
             Ok(x) => return Err(at(start + 1, format!("`{key}`: {x} is not finite"))),
             Err(_)
-                if word.starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+' || c == '.') =>
+                if word.starts_with(|c: char| {
+                    c.is_ascii_digit() || c == '-' || c == '+' || c == '.'
+                }) =>
             {
                 return Err(at(start + 1, format!("`{key}`: `{word}` is not a number")))
             }
@@ -447,7 +446,10 @@ mod tests {
         let text = doc.write(&t).unwrap();
         assert!(text.contains("CUSTOM_KEY = 'kept as is'"));
         assert!(text.contains("PCY1 = 1.3e0 ! shape"));
-        let back = TirDocument::parse(p, &text).unwrap().magic_formula().unwrap();
+        let back = TirDocument::parse(p, &text)
+            .unwrap()
+            .magic_formula()
+            .unwrap();
         for &a in &[-0.2, -0.01, 0.0, 0.05, 0.3] {
             let i = MfInput {
                 fz: 3500.0,
@@ -468,7 +470,10 @@ mod tests {
         let e = TirDocument::parse(p, &SMALL.replace("PDY1 = 1.1", "PDY1 = 1.1x"))
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("b.tir:14:") && e.contains("PDY1") && e.contains("1.1x"), "{e}");
+        assert!(
+            e.starts_with("b.tir:14:") && e.contains("PDY1") && e.contains("1.1x"),
+            "{e}"
+        );
         let e = TirDocument::parse(p, &SMALL.replace("FITTYP = 61", "FITTYP = 7"))
             .unwrap()
             .magic_formula()
@@ -480,7 +485,10 @@ mod tests {
             .magic_formula()
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("b.tir:2:") && e.contains("LENGTH") && e.contains("furlong"), "{e}");
+        assert!(
+            e.starts_with("b.tir:2:") && e.contains("LENGTH") && e.contains("furlong"),
+            "{e}"
+        );
     }
 
     /// Mz against TyreDyn's vectors at zero camber (its trail curvature
@@ -539,7 +547,13 @@ mod tests {
             assert_eq!(doc.lines.len(), back.lines.len());
         }
         let fresh = write_new(&load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
-        let again = TirDocument::parse(Path::new("new.tir"), &fresh).unwrap().magic_formula().unwrap();
-        assert_eq!(again, load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
+        let again = TirDocument::parse(Path::new("new.tir"), &fresh)
+            .unwrap()
+            .magic_formula()
+            .unwrap();
+        assert_eq!(
+            again,
+            load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap()
+        );
     }
 }

@@ -120,7 +120,13 @@ fn right_side_file_is_the_mirror_image() {
     let (head, left) = eval("left.tir", "p.csv");
     let (_, right) = eval("right.tir", "m.csv");
     for (l, r) in left.iter().zip(&right) {
-        for (name, sign) in [("fx", 1.0), ("fy", -1.0), ("mz", -1.0), ("mx", -1.0), ("my", 1.0)] {
+        for (name, sign) in [
+            ("fx", 1.0),
+            ("fy", -1.0),
+            ("mz", -1.0),
+            ("mx", -1.0),
+            ("my", 1.0),
+        ] {
             let i = col(&head, name);
             assert!(
                 (l[i] - sign * r[i]).abs() <= 1e-9 * l[i].abs().max(1.0),
@@ -178,7 +184,10 @@ fn broken_tir_and_points_name_file_line_and_key() {
         ("fittyp.tir", &bad_fittyp),
         ("good.tir", &symmetric_tir("LEFT", "")),
         ("p.csv", "fz,kappa,alpha,camber,speed\n4000,0,0.1,0,20\n"),
-        ("bad.csv", "speed,fz,kappa,alpha,camber\n20,4000,0,0.1,0\n20,4000,0,abc,0\n"),
+        (
+            "bad.csv",
+            "speed,fz,kappa,alpha,camber\n20,4000,0,0.1,0\n20,4000,0,abc,0\n",
+        ),
     ]);
     let eval = |tyre: &str, pts: &str| {
         let o = run(&[
@@ -193,11 +202,17 @@ fn broken_tir_and_points_name_file_line_and_key() {
         stderr(&o)
     };
     let e = eval("value.tir", "p.csv");
-    assert!(e.contains("value.tir:26:8:") && e.contains("PDY1") && e.contains("1,1"), "{e}");
+    assert!(
+        e.contains("value.tir:26:8:") && e.contains("PDY1") && e.contains("1,1"),
+        "{e}"
+    );
     let e = eval("fittyp.tir", "p.csv");
     assert!(e.contains("fittyp.tir:12:") && e.contains("FITTYP"), "{e}");
     let e = eval("good.tir", "bad.csv");
-    assert!(e.contains("bad.csv:3:4") && e.contains("alpha") && e.contains("abc"), "{e}");
+    assert!(
+        e.contains("bad.csv:3:4") && e.contains("alpha") && e.contains("abc"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -225,10 +240,9 @@ fn scenario_with_a_tir_tyre_simulates() {
 /// Reference rows of an independent implementation: (fz, kappa, alpha_iso,
 /// camber_iso, speed, pressure, fx, fy, mz, mx, my), ISO-W, unmirrored.
 fn reference(v: &str) -> Vec<Vec<f64>> {
-    let text = fs::read_to_string(root().join(format!(
-        "tests/fixtures/tir/reference_tyredyn_mf{v}.csv"
-    )))
-    .unwrap();
+    let text =
+        fs::read_to_string(root().join(format!("tests/fixtures/tir/reference_tyredyn_mf{v}.csv")))
+            .unwrap();
     text.lines()
         .filter(|l| !l.starts_with('#'))
         .skip(1)
@@ -246,7 +260,10 @@ fn tyre_eval_agrees_with_tyredyn_on_public_files() {
         // and mx negated (module docs of tyre::mf).
         let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
         for r in &rows {
-            pts.push_str(&format!("{},{},{},{},{},{}\n", r[0], r[1], r[2], -r[3], r[4], r[5]));
+            pts.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                r[0], r[1], r[2], -r[3], r[4], r[5]
+            ));
         }
         let dir = scratch(&[("points.csv", &pts)]);
         let out = dir.path().join("forces.csv");
@@ -262,7 +279,12 @@ fn tyre_eval_agrees_with_tyredyn_on_public_files() {
         let (head, got) = read_out(&out);
         let fnomin = 6752.0;
         for (r, g) in rows.iter().zip(&got) {
-            for (name, i, sign) in [("fx", 6, 1.0), ("fy", 7, -1.0), ("mx", 9, -1.0), ("my", 10, 1.0)] {
+            for (name, i, sign) in [
+                ("fx", 6, 1.0),
+                ("fy", 7, -1.0),
+                ("mx", 9, -1.0),
+                ("my", 10, 1.0),
+            ] {
                 let (want, have) = (sign * r[i], g[col(&head, name)]);
                 assert!(
                     (have - want).abs() <= 1e-6 * want.abs() + 1e-6 * fnomin,

@@ -386,10 +386,8 @@ impl MagicFormula {
         let gxa = mf_cos(bxa, cxa, exa, astar + shxa) / mf_cos(bxa, cxa, exa, shxa);
         let fx = gxa * fx0;
 
-        let dvyk = lat.muy
-            * fz
-            * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs)
-            * (c.RVY4 * astar).atan().cos();
+        let dvyk =
+            lat.muy * fz * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs) * (c.RVY4 * astar).atan().cos();
         let svyk = dvyk * (c.RVY5 * (c.RVY6 * kappa).atan()).sin() * c.LVYKA * low;
         let shyk = c.RHY1 + c.RHY2 * dfz;
         let byk = (c.RBY1 + c.RBY4 * gs * gs) * (c.RBY2 * (astar - c.RBY3)).atan().cos() * c.LYKA;
@@ -464,7 +462,8 @@ impl MagicFormula {
                     * (c.QSX5 * (c.QSX6 * fzr).powi(2).atan()).cos()
                     * (c.QSX7 * gamma + c.QSX8 * (c.QSX9 * fy / fz0).atan()).sin()
                 + c.QSX10 * (c.QSX11 * fzr).atan() * gamma)
-            + r0 * c.LMX * (fy * (c.QSX13 + c.QSX14 * gamma.abs()) - fz * c.QSX12 * gamma * gamma.abs());
+            + r0 * c.LMX
+                * (fy * (c.QSX13 + c.QSX14 * gamma.abs()) - fz * c.QSX12 * gamma * gamma.abs());
 
         // Rolling-resistance moment (TNO 6.1 form); 5.2 has no load/pressure powers.
         let vr = vx / c.LONGVL;
@@ -504,8 +503,9 @@ impl MagicFormula {
             * fz0p
             * (1.0 + c.PPY1 * dpi)
             * (1.0 - c.PKY3 * gs.abs())
-            * (c.PKY4 * ((fz / fz0p) / ((c.PKY2 + c.PKY5 * gs * gs) * (1.0 + c.PPY2 * dpi))).atan())
-                .sin()
+            * (c.PKY4
+                * ((fz / fz0p) / ((c.PKY2 + c.PKY5 * gs * gs) * (1.0 + c.PPY2 * dpi))).atan())
+            .sin()
             * c.LKY;
         let svyg = fz * (c.PVY3 + c.PVY4 * dfz) * gs * c.LKYC * lmuy_p * low;
         let svy = fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * lmuy_p * low + svyg;
@@ -594,11 +594,7 @@ impl super::Parameterised for MagicFormula {
 /// Forces and moments at every point of parallel slices (crate convention;
 /// `pressure` `None` uses the file's). `out` is cleared and filled, one row
 /// per point; nothing is allocated per point.
-pub fn evaluate_batch(
-    tyre: &MagicFormula,
-    points: &[MfInput],
-    out: &mut Vec<MfOutput>,
-) {
+pub fn evaluate_batch(tyre: &MagicFormula, points: &[MfInput], out: &mut Vec<MfOutput>) {
     out.clear();
     out.reserve(points.len());
     out.extend(points.iter().map(|p| tyre.evaluate(p)));

@@ -5,6 +5,7 @@ mod equilibria;
 mod identify;
 mod simulate;
 mod study;
+mod tyre_eval;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -114,6 +115,19 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Forces and moments of a tyre file (.tir or .toml) at the points of a
+    /// CSV with columns fz, kappa, alpha, camber, speed and optionally
+    /// pressure (SI, rad, Pa); writes them with fx, fy, mz (and mx, my for
+    /// the Magic Formula).
+    TyreEval {
+        /// Tyre file.
+        tyre: PathBuf,
+        /// Points file (CSV).
+        points: PathBuf,
+        /// Output CSV.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics {
         /// The run file.
@@ -175,6 +189,7 @@ pub fn run() -> ExitCode {
             truth,
             out,
         } => diagnose::synth(&effects, seed, &truth, &out),
+        Command::TyreEval { tyre, points, out } => tyre_eval::tyre_eval(&tyre, &points, &out),
         Command::Metrics {
             run,
             json,

@@ -11,6 +11,7 @@ mod run;
 pub mod scenario;
 pub mod study;
 pub mod sweep;
+pub mod tir;
 mod toml_file;
 
 pub use columns::{read_columns, Columns};

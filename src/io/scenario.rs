@@ -198,6 +198,12 @@ fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
 
 /// Reads and validates a tyre file.
 pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("tir"))
+    {
+        return Ok(Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?)));
+    }
     let src = TomlSource::read(path)?;
     let tyre: Tyre = src.parse()?;
     tyre.validate().map_err(|e| param_error(&src, None, e))?;

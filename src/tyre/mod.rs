@@ -18,12 +18,14 @@
 mod gim;
 mod linear;
 mod magic_simple;
+pub mod mf;
 pub mod pac89;
 pub mod unitire;
 
 pub use gim::Gim;
 pub use linear::Linear;
 pub use magic_simple::MagicSimple;
+pub use mf::MagicFormula;
 pub use pac89::{Pac89, Pac89Form};
 pub use unitire::{UniTire, UniTireLateral, UniTireLongitudinal};
 
@@ -177,10 +179,19 @@ pub enum Tyre {
     Pac89(Pac89),
     /// Linear tyre `Fy = C_α·α` (the textbook bicycle model).
     Linear(Linear),
+    /// Magic Formula 5.2/6.1/6.2, usually read from a `.tir` file.
+    MagicFormula(Box<MagicFormula>),
 }
 
 /// Names accepted by the `model` key.
-pub const MODEL_NAMES: [&str; 5] = ["gim", "magic-simple", "unitire", "pac89", "linear"];
+pub const MODEL_NAMES: [&str; 6] = [
+    "gim",
+    "magic-simple",
+    "unitire",
+    "pac89",
+    "linear",
+    "magic-formula",
+];
 
 impl Tyre {
     /// The `model` key of this tyre.
@@ -191,6 +202,7 @@ impl Tyre {
             Tyre::Unitire(_) => "unitire",
             Tyre::Pac89(_) => "pac89",
             Tyre::Linear(_) => "linear",
+            Tyre::MagicFormula(_) => "magic-formula",
         }
     }
 
@@ -201,6 +213,7 @@ impl Tyre {
             Tyre::Unitire(t) => t,
             Tyre::Pac89(t) => t,
             Tyre::Linear(t) => t,
+            Tyre::MagicFormula(t) => t.as_ref(),
         }
     }
 
@@ -223,6 +236,7 @@ impl Tyre {
                 Tyre::Unitire(u) => u.lateral.scale_stiffness(k),
                 Tyre::Pac89(p) => p.a[3] *= k,
                 Tyre::Linear(l) => l.cornering_stiffness *= k,
+                Tyre::MagicFormula(m) => m.coefficients.LKY *= k,
             }
         }
         t
@@ -236,6 +250,7 @@ impl Tyre {
             Tyre::Unitire(t) => t.validate(),
             Tyre::Pac89(t) => t.validate(),
             Tyre::Linear(t) => t.validate(),
+            Tyre::MagicFormula(t) => t.validate(),
         }
     }
 }
@@ -254,6 +269,7 @@ impl Parameterised for Tyre {
             Tyre::Unitire(t) => t.set_parameters(p),
             Tyre::Pac89(t) => t.set_parameters(p),
             Tyre::Linear(t) => t.set_parameters(p),
+            Tyre::MagicFormula(t) => t.set_parameters(p),
         }
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
@@ -269,6 +285,7 @@ impl Tyre {
             Tyre::Unitire(t) => t,
             Tyre::Pac89(t) => t,
             Tyre::Linear(t) => t,
+            Tyre::MagicFormula(t) => t.as_ref(),
         }
     }
 
@@ -282,7 +299,9 @@ impl Tyre {
     pub fn lateral_free(&self, loads: usize, cambers: usize) -> Vec<bool> {
         match self {
             Tyre::Gim(_) => vec![true, false, true, true, loads > 1],
-            Tyre::MagicSimple(_) | Tyre::Linear(_) => vec![true; self.parameters().len()],
+            Tyre::MagicSimple(_) | Tyre::Linear(_) | Tyre::MagicFormula(_) => {
+                vec![true; self.parameters().len()]
+            }
             Tyre::Unitire(_) => (0..10).map(|i| i < 7).collect(),
             Tyre::Pac89(_) => (0..14)
                 .map(|i| cambers > 1 || ![5, 8, 11].contains(&i))
@@ -465,10 +484,97 @@ impl TyreModel for Tyre {
             Tyre::Unitire(t) => t.lateral_force(s),
             Tyre::Pac89(t) => t.lateral_force(s),
             Tyre::Linear(t) => t.lateral_force(s),
+            Tyre::MagicFormula(t) => t.lateral_force(s),
         }
     }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         self.inner().cornering_stiffness(fz)
+    }
+}
+
+/// Forces and moments of any tyre at one point: the Magic Formula gives all
+/// five (and reads the pressure), the other models `fx`, `fy`, `mz` only.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PointForces {
+    /// Longitudinal force, N.
+    pub fx: f64,
+    /// Lateral force, N.
+    pub fy: f64,
+    /// Aligning moment, N·m.
+    pub mz: f64,
+    /// Overturning moment, N·m (Magic Formula only).
+    pub mx: Option<f64>,
+    /// Rolling-resistance moment, N·m (Magic Formula only).
+    pub my: Option<f64>,
+}
+
+impl Tyre {
+    /// True when [`Tyre::point_forces`] gives `mx` and `my`.
+    pub fn has_wheel_moments(&self) -> bool {
+        matches!(self, Tyre::MagicFormula(_))
+    }
+
+    /// Forces and moments at one point; `pressure` (Pa) is read by the
+    /// Magic Formula only (`None`: the file's inflation pressure).
+    pub fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {
+        match self {
+            Tyre::MagicFormula(m) => {
+                let o = m.evaluate_scaled(
+                    &mf::MfInput {
+                        fz: s.fz,
+                        kappa: s.kappa,
+                        alpha: s.alpha,
+                        camber: s.camber,
+                        speed: s.speed,
+                        pressure,
+                    },
+                    s.mu_scale,
+                );
+                PointForces {
+                    fx: o.fx,
+                    fy: o.fy,
+                    mz: o.mz,
+                    mx: Some(o.mx),
+                    my: Some(o.my),
+                }
+            }
+            _ => {
+                let f = self.forces(s);
+                PointForces {
+                    fx: f.fx,
+                    fy: f.fy,
+                    mz: f.mz,
+                    mx: None,
+                    my: None,
+                }
+            }
+        }
+    }
+
+    /// [`Tyre::point_forces`] over parallel slices (one point per index;
+    /// `pressure` empty or as long as `fz`).
+    pub fn evaluate_points(
+        &self,
+        fz: &[f64],
+        kappa: &[f64],
+        alpha: &[f64],
+        camber: &[f64],
+        speed: &[f64],
+        pressure: &[f64],
+    ) -> Vec<PointForces> {
+        (0..fz.len())
+            .map(|i| {
+                let s = SlipState {
+                    alpha: alpha[i],
+                    kappa: kappa[i],
+                    fz: fz[i],
+                    camber: camber[i],
+                    mu_scale: 1.0,
+                    speed: speed[i],
+                };
+                self.point_forces(&s, pressure.get(i).copied())
+            })
+            .collect()
     }
 }
 

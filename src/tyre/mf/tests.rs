@@ -1,0 +1,111 @@
+//! Invariants of the Magic Formula by property test.
+
+use super::*;
+use proptest::prelude::*;
+
+/// A symmetric 6.1 tyre: no shifts, no asymmetric camber terms.
+fn symmetric() -> MagicFormula {
+    let mut c = MfCoefficients {
+        FNOMIN: 4000.0,
+        UNLOADED_RADIUS: 0.31,
+        NOMPRES: 220_000.0,
+        ..MfCoefficients::default()
+    };
+    for (k, v) in [
+        ("PCX1", 1.6),
+        ("PDX1", 1.2),
+        ("PDX2", -0.1),
+        ("PEX1", 0.3),
+        ("PKX1", 22.0),
+        ("PCY1", 1.3),
+        ("PDY1", 1.1),
+        ("PDY2", -0.15),
+        ("PEY1", -0.8),
+        ("PKY1", -15.0),
+        ("PKY2", 1.7),
+        ("RBX1", 12.0),
+        ("RBX2", 10.0),
+        ("RCX1", 1.0),
+        ("RBY1", 10.0),
+        ("RBY2", 8.0),
+        ("RCY1", 1.0),
+        ("QBZ1", 10.0),
+        ("QCZ1", 1.2),
+        ("QDZ1", 0.1),
+        ("QEZ1", -1.0),
+        ("QBZ10", 0.5),
+    ] {
+        assert!(c.set(k, v));
+    }
+    MagicFormula {
+        version: MfVersion::Mf61,
+        side: TyreSide::Left,
+        options: MfOptions::default(),
+        coefficients: c,
+    }
+}
+
+fn at(fz: f64, kappa: f64, alpha: f64, camber: f64) -> MfInput {
+    MfInput {
+        fz,
+        kappa,
+        alpha,
+        camber,
+        speed: 20.0,
+        pressure: None,
+    }
+}
+
+proptest! {
+    #[test]
+    fn symmetric_tyre_is_odd_in_slip_angle(fz in 500.0..9000.0, a in -1.2..1.2f64, k in -0.5..0.5f64) {
+        let t = symmetric();
+        let (p, m) = (t.evaluate(&at(fz, k, a, 0.0)), t.evaluate(&at(fz, k, -a, 0.0)));
+        prop_assert!((p.fy + m.fy).abs() <= 1e-9 * p.fy.abs().max(1.0));
+        prop_assert!((p.mz + m.mz).abs() <= 1e-9 * p.mz.abs().max(1.0));
+        prop_assert!((p.fx - m.fx).abs() <= 1e-9 * p.fx.abs().max(1.0));
+    }
+
+    #[test]
+    fn combined_force_is_below_pure(fz in 500.0..9000.0, a in -0.6..0.6f64, k in -0.5..0.5f64) {
+        let t = symmetric();
+        let c = t.evaluate(&at(fz, k, a, 0.0));
+        let px = t.evaluate(&at(fz, k, 0.0, 0.0)).fx;
+        let py = t.evaluate(&at(fz, 0.0, a, 0.0)).fy;
+        prop_assert!(c.fx.abs() <= px.abs() + 1e-9);
+        prop_assert!(c.fy.abs() <= py.abs() + 1e-9);
+    }
+
+    #[test]
+    fn no_nan_in_the_documented_ranges(
+        fz in 0.0..20000.0, a in -1.5..1.5f64, k in -1.0..1.0f64,
+        g in -0.2..0.2f64, v in -40.0..60.0f64, p in 100_000.0..400_000.0,
+    ) {
+        let t = symmetric();
+        let o = t.evaluate(&MfInput { fz, kappa: k, alpha: a, camber: g, speed: v, pressure: Some(p) });
+        for x in [o.fx, o.fy, o.mz, o.mx, o.my] {
+            prop_assert!(x.is_finite(), "{o:?}");
+        }
+    }
+
+    #[test]
+    fn continuous_at_zero_slip(fz in 500.0..9000.0, s in -0.3..0.3f64) {
+        let t = symmetric();
+        let h = 1e-9;
+        for (k, a) in [(0.0, s), (s, 0.0)] {
+            let o = t.evaluate(&at(fz, k, a, 0.0));
+            let (kp, ap) = if a == 0.0 { (k, h) } else { (h, a) };
+            let (km, am) = if a == 0.0 { (k, -h) } else { (-h, a) };
+            let (up, dn) = (t.evaluate(&at(fz, kp, ap, 0.0)), t.evaluate(&at(fz, km, am, 0.0)));
+            for (x, y, z) in [(o.fx, up.fx, dn.fx), (o.fy, up.fy, dn.fy), (o.mz, up.mz, dn.mz)] {
+                prop_assert!((y - x).abs() < 1e-3 && (z - x).abs() < 1e-3, "{x} {y} {z}");
+            }
+        }
+    }
+}
+
+#[test]
+fn positive_slip_angle_gives_positive_force_and_restoring_moment() {
+    let o = symmetric().evaluate(&at(4000.0, 0.0, 0.02, 0.0));
+    assert!(o.fy > 0.0 && o.mz > 0.0, "{o:?}");
+}

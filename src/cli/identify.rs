@@ -63,8 +63,9 @@ pub fn identify(o: &Options) -> Result<()> {
     let conditions = grouped.conditions;
     if conditions.is_empty() {
         return Err(anyhow!(
-            "{}: no test condition found in the data",
-            o.data.display()
+            "{}: no test condition found in the data ({})",
+            o.data.display(),
+            grouped.report.lines().join("; ")
         ));
     }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
@@ -108,7 +109,7 @@ pub fn identify(o: &Options) -> Result<()> {
         let r = handling::identify::pac89_two_stage::identify(&conditions, &settings)
             .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
         println!(
-            "  two-stage (seed 001): stage 1 mean σ {:.3} %, stage 2 mean σ {:.3} %, after the joint polish {:.3} %",
+            "  two-stage (Zhang et al. 2021): stage 1 mean σ {:.3} %, stage 2 mean σ {:.3} %, after the joint polish {:.3} %",
             r.stage1_mean_sigma, r.stage2_mean_sigma, r.polished_mean_sigma
         );
         Some(r)

@@ -196,7 +196,7 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
             train.len(),
             net.condition
         );
-        println!("  validation (seed 004 table 3): Er target → predicted k1, k2 [{unit}] → Er re-simulated, error");
+        println!("  validation (Wang & Liang, table 3): Er target → predicted k1, k2 [{unit}] → Er re-simulated, error");
         let mut rows = Vec::new();
         for &i in validation {
             let p = net.predict(er[i]);
@@ -242,7 +242,7 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
             })
             .collect();
         Figure::stack(vec![Panel {
-            title: "seed 004 pairs: Er against front stiffness".into(),
+            title: "Wang & Liang pairs: Er against front stiffness".into(),
             x_label: format!("front k1 [{unit}]"),
             y_label: "Er [s]".into(),
             series,

@@ -132,14 +132,18 @@ pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
     let mut diffs: Vec<f64> = values.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
     diffs.sort_by(f64::total_cmp);
     // For Gaussian noise, |x_{i+1} − x_i| has median 0.6745·√2·σ.
-    let noise = if diffs.is_empty() {
+    let in_order = if diffs.is_empty() {
         0.0
     } else {
         median(&diffs) / (0.6745 * std::f64::consts::SQRT_2)
     };
-    let separation = resolution.max(6.0 * noise);
     let mut sorted: Vec<f64> = values.to_vec();
     sorted.sort_by(f64::total_cmp);
+    // Rows not recorded level by level (a table flattened slip angle by slip
+    // angle, shuffled rows) make neighbours differ by whole level steps: the
+    // spread inside groups split at `resolution` bounds the noise then.
+    let noise = in_order.min(spread_within(&sorted, resolution));
+    let separation = resolution.max(6.0 * noise);
     let mut out = Levels {
         variable,
         separation,
@@ -155,6 +159,26 @@ pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
         }
     }
     out
+}
+
+/// Robust deviation (1.4826·MAD) of the values about the median of their
+/// group, the sorted values split wherever consecutive ones are more than
+/// `resolution` apart.
+fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
+    let mut dev = Vec::with_capacity(sorted.len());
+    let mut start = 0;
+    for i in 1..=sorted.len() {
+        if i == sorted.len() || sorted[i] - sorted[i - 1] > resolution {
+            let m = median(&sorted[start..i]);
+            dev.extend(sorted[start..i].iter().map(|v| (v - m).abs()));
+            start = i;
+        }
+    }
+    if dev.is_empty() {
+        return 0.0;
+    }
+    dev.sort_by(f64::total_cmp);
+    1.4826 * median(&dev)
 }
 
 /// Splits one gap-separated group at density valleys and records its levels.
@@ -487,6 +511,16 @@ mod tests {
         let l = levels(Variable::Load, &v, 10.0);
         assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
         assert_eq!(l.transition_samples, 0);
+    }
+
+    #[test]
+    fn levels_interleaved_row_by_row_stay_apart() {
+        // The papers' table flattened one slip angle at a time: every row
+        // changes load, so neighbours differ by whole level steps.
+        let v: Vec<f64> = (0..85).flat_map(|_| [2800.0, 5700.0, 8600.0]).collect();
+        let l = levels(Variable::Load, &v, 10.0);
+        assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
+        assert_eq!(l.noise, 0.0);
     }
 
     #[test]

@@ -74,6 +74,23 @@ fn the_papers_layout_one_sample_per_slip_angle_is_fitted_whole() {
 }
 
 #[test]
+fn the_papers_table_flattened_slip_angle_by_slip_angle_keeps_its_loads() {
+    // Rows ordered by slip angle, the three loads interleaved.
+    let t = truth();
+    let rows: Vec<Vec<f64>> = (-42..=42)
+        .flat_map(|i| {
+            let a = (0.2865 * i as f64).to_radians();
+            [2800.0, 5700.0, 8600.0]
+                .map(|fz| vec![fz, a, t.lateral_force(&SlipState::lateral(a, fz))])
+        })
+        .collect();
+    let dir = scratch(&[("rig.csv", &csv("fz,alpha,fy", &rows))]);
+    let (report, stdout) = identify(dir.path(), "rig.csv", "pac89", &[]);
+    assert_eq!(report["curves"].as_array().unwrap().len(), 3, "{stdout}");
+    assert_eq!(report["grouping"]["used"], 255);
+}
+
+#[test]
 fn a_single_fine_sweep_loses_no_sample() {
     // 0.1° steps: 2–3 samples per 0.25° bin, all of them averaged in.
     let alphas: Vec<f64> = (-120..=120)

@@ -145,7 +145,10 @@ fn seed003_fitness_misses_the_stable_node_the_newton_step_finds() {
     };
     let r = run(&m, &g, &raw);
     let missed = r.points.len() - r.agreeing();
-    assert!(missed > 0, "the residual fitness of Li, Jia & Zhao found everything this time");
+    assert!(
+        missed > 0,
+        "the residual fitness of Li, Jia & Zhao found everything this time"
+    );
     let missed_nodes = r
         .points
         .iter()

@@ -45,22 +45,11 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
     assert_eq!(yaw["significant"], true, "{yaw}");
 }
 
-// ---- diagnose / synth (issue 6) ----
+// ---- diagnose / synth ----
 
 /// Writes a synthetic campaign folder with `effects` into `dir/name`.
 fn synth(dir: &Path, name: &str, effects: &str, seed: &str) -> PathBuf {
-    let out = dir.join(name);
-    let o = run(&[
-        "synth",
-        "--effects",
-        effects,
-        "--seed",
-        seed,
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    out
+    synth_campaign(dir, name, &["--effects", effects, "--seed", seed])
 }
 
 #[test]

@@ -491,17 +491,8 @@ fn copy_dir(from: &Path, to: &Path) {
 fn glitched_copies_of_synthetic_campaigns_give_the_clean_verdict() {
     let dir = tempfile::tempdir().unwrap();
     for (effects, seed) in [("sensor_delay", "3"), ("none", "4")] {
-        let clean = dir.path().join(format!("{effects}_clean"));
-        let o = run(&[
-            "synth",
-            "--effects",
-            effects,
-            "--seed",
-            seed,
-            "--out",
-            clean.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{}", stderr(&o));
+        let name = format!("{effects}_clean");
+        let clean = synth_campaign(dir.path(), &name, &["--effects", effects, "--seed", seed]);
         // Three candidates keep the test short.
         let mut v = fs::read_to_string(clean.join("vehicle.toml")).unwrap();
         v += "effects = [\"sensor_delay\", \"relaxation_length\", \"cornering_stiffness\"]\n";

@@ -405,8 +405,8 @@ impl Context<'_> {
     }
 
     /// Fits a candidate on all runs (PSO from `start`) and scores it on
-    /// every fold: LM to convergence from the all-run optimum, and again from
-    /// the effect-free start when that does not converge.
+    /// every fold: LM from the all-run optimum to convergence or its refit
+    /// budget (non-converged folds are counted and warned about).
     /// A `start` skips the swarm: the polish starts from it (combinations
     /// start from their members' single fits).
     fn score(
@@ -455,13 +455,7 @@ impl Context<'_> {
                     scales: self.scales,
                     bounds: s.bounds(),
                 };
-                let mut f = fit(&problem, &full.params, None, Polish::Refit);
-                if !f.converged {
-                    let g = fit(&problem, &s.off(), None, Polish::Refit);
-                    if g.cost < f.cost || (g.converged && g.cost <= f.cost * (1.0 + 1e-9)) {
-                        f = g;
-                    }
-                }
+                let f = fit(&problem, &full.params, None, Polish::Refit);
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {

@@ -15,7 +15,7 @@
 
 use super::model::{Augmented, Drive, Observed};
 use crate::io::MeasuredRun;
-use crate::optim::local::{jacobian, levenberg_marquardt, Residuals};
+use crate::optim::local::{jacobian, levenberg_marquardt, levenberg_marquardt_within, Residuals};
 use crate::optim::pso::Pso;
 use serde::Serialize;
 
@@ -284,6 +284,10 @@ impl FitOutcome {
     }
 }
 
+/// Evaluation budget of a fold refit, in units of n + 1 residual
+/// evaluations (about one LM iteration each).
+pub const REFIT_PATIENCE: usize = 8;
+
 /// The local polish of a fit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Polish {
@@ -324,7 +328,12 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     let (params, cost, converged) = if start.is_empty() {
         (Vec::new(), problem.cost(&[]), true)
     } else {
-        let lm = levenberg_marquardt(problem, &p0);
+        // A refit starts next to its optimum: a bounded budget (a fold
+        // that needs more is reported as not converged).
+        let lm = match polish {
+            Polish::LevenbergMarquardt => levenberg_marquardt(problem, &p0),
+            Polish::Refit => levenberg_marquardt_within(problem, &p0, REFIT_PATIENCE),
+        };
         evaluations += lm.evaluations;
         // LM may leave the box, where the residuals are clamped.
         let p = problem.clamp(&lm.params);

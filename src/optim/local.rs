@@ -90,8 +90,18 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Adapter<'_> {
 
 /// Levenberg–Marquardt from `p0`.
 pub fn levenberg_marquardt(problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
+    levenberg_marquardt_within(problem, p0, 200)
+}
+
+/// Levenberg–Marquardt from `p0` with at most `patience`·(n + 1) residual
+/// evaluations (not converged when it runs out).
+pub fn levenberg_marquardt_within(
+    problem: &dyn Residuals,
+    p0: &[f64],
+    patience: usize,
+) -> LocalResult {
     let (adapter, report) = LevenbergMarquardt::new()
-        .with_patience(200)
+        .with_patience(patience)
         .minimize(Adapter {
             problem,
             p: DVector::from_column_slice(p0),

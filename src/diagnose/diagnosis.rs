@@ -29,8 +29,8 @@
 //!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales).
 
-use super::effects::{EffectKind, EffectSet};
-use super::fit::{fit, Channel, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
+use super::effects::{EffectKind, EffectSet, Parameter};
+use super::fit::{fit, refit, Channel, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::gap::{channel_gap, regime_acceleration, run_gap, ChannelGap, PartGap, Record};
 use super::model::{Augmented, Observed};
 use crate::identify::data::read_rig;
@@ -314,8 +314,35 @@ fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
     )
 }
 
+/// The roll degree of freedom's dynamics, fitted with the roll effects: a
+/// campaign's `[roll]` is a guess (no roll channel is needed), and roll
+/// steer or camber seen through the wrong roll frequency and damping is
+/// mimicked by stiffness changes of the wrong sign. The roll gradient stays
+/// the campaign's: it only scales the per-radian roll-steer and roll-camber
+/// values. Off values (NaN) are the campaign's.
+static ROLL_DYNAMICS: [Parameter; 2] = [
+    Parameter {
+        name: "frequency",
+        unit: "Hz",
+        off: f64::NAN,
+        bounds: (0.3, 5.0),
+    },
+    Parameter {
+        name: "damping",
+        unit: "-",
+        off: f64::NAN,
+        bounds: (0.1, 2.0),
+    },
+];
+
+/// Whether a candidate carries the roll-dynamics parameters.
+fn fits_roll(kinds: &[EffectKind]) -> bool {
+    kinds.iter().any(|e| e.uses_roll())
+}
+
 /// The model of a candidate's parameter vector: the axle characteristics
-/// first when they are fitted (`axle`), then each effect's parameters.
+/// first when they are fitted (`axle`), then each effect's parameters, then
+/// the roll dynamics when a roll effect is among them ([`ROLL_DYNAMICS`]).
 fn with_effects(
     base: &Augmented,
     fixed: &EffectSet,
@@ -335,27 +362,64 @@ fn with_effects(
         m.effects.set(*e, &p[k..k + n]);
         k += n;
     }
+    if fits_roll(kinds) {
+        m.roll.frequency = p[k];
+        m.roll.damping = p[k + 1];
+    }
     m
+}
+
+/// The start of a combination: the axle characteristics and effect values
+/// of the current set, the added effect's values from its single fit, and
+/// the roll dynamics from whichever of the two fitted them (the current
+/// set first).
+fn combined_start(
+    current: (&[EffectKind], &[f64]),
+    added: (EffectKind, &[f64]),
+    axle_count: usize,
+) -> Vec<f64> {
+    let (kinds, p) = current;
+    let effect_len: usize = kinds.iter().map(|e| e.parameters().len()).sum();
+    let end = axle_count + effect_len;
+    let n = added.0.parameters().len();
+    let mut start = p[..end].to_vec();
+    start.extend(&added.1[axle_count..axle_count + n]);
+    if fits_roll(kinds) {
+        start.extend(&p[end..end + 2]);
+    } else if added.0.uses_roll() {
+        start.extend(&added.1[axle_count + n..axle_count + n + 2]);
+    }
+    start
 }
 
 impl Setting<'_> {
     fn axle(&self) -> bool {
         self.base.axle.is_some()
     }
+    /// The effect parameters in vector order, the roll dynamics last.
+    fn parameters(&self) -> impl Iterator<Item = &'static Parameter> + '_ {
+        let roll = if fits_roll(&self.kinds) {
+            &ROLL_DYNAMICS[..]
+        } else {
+            &[]
+        };
+        self.kinds
+            .iter()
+            .flat_map(|e| e.parameters().iter())
+            .chain(roll.iter())
+    }
     fn bounds(&self) -> Vec<(f64, f64)> {
         let axle = if self.axle() { &AXLE_BOUNDS[..] } else { &[] };
         axle.iter()
             .copied()
-            .chain(
-                self.kinds
-                    .iter()
-                    .flat_map(|e| e.parameters().iter().map(|q| q.bounds)),
-            )
+            .chain(self.parameters().map(|q| q.bounds))
             .collect()
     }
     fn off(&self) -> Vec<f64> {
         let axle = self.base.axle.as_ref().map_or(&[][..], |a| &a.0[..]);
-        axle.iter()
+        let roll = self.base.all.roll;
+        let mut p: Vec<f64> = axle
+            .iter()
             .copied()
             .chain(self.kinds.iter().flat_map(|e| {
                 e.parameters().iter().map(|q| {
@@ -366,7 +430,11 @@ impl Setting<'_> {
                     }
                 })
             }))
-            .collect()
+            .collect();
+        if fits_roll(&self.kinds) {
+            p.extend([roll.frequency, roll.damping]);
+        }
+        p
     }
 }
 
@@ -405,8 +473,9 @@ impl Context<'_> {
     }
 
     /// Fits a candidate on all runs (PSO from `start`) and scores it on
-    /// every fold: LM from the all-run optimum to convergence or its refit
-    /// budget (non-converged folds are counted and warned about).
+    /// every fold, refitted from the all-run optimum ([`refit`]: its
+    /// linearisation first, Levenberg–Marquardt within a budget when that
+    /// does not converge; non-converged folds are counted and warned about).
     /// A `start` skips the swarm: the polish starts from it (combinations
     /// start from their members' single fits).
     fn score(
@@ -455,7 +524,7 @@ impl Context<'_> {
                     scales: self.scales,
                     bounds: s.bounds(),
                 };
-                let f = fit(&problem, &full.params, None, Polish::Refit);
+                let f = refit(&problem, &full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {
@@ -500,6 +569,21 @@ impl Context<'_> {
         }
         out
     }
+}
+
+/// The residual rows of a fold's training runs (all but `held_out`) in the
+/// all-run problem, whose rows follow the runs' order.
+fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut start = 0;
+    let mut rows = Vec::new();
+    for (i, r) in runs.iter().enumerate() {
+        let n = r.count();
+        if !held_out.contains(&i) {
+            rows.push(start..start + n);
+        }
+        start += n;
+    }
+    rows
 }
 
 fn gap_above(j: f64, jn: f64) -> f64 {
@@ -619,7 +703,7 @@ fn base_models(
                         scales: scales_hint,
                         bounds: AXLE_BOUNDS.to_vec(),
                     };
-                    fit(&p, &full.params, None, Polish::Refit).params
+                    refit(&p, &full, &training_rows(runs, &folds[k])).params
                 })
                 .collect();
             let p = &full.params;
@@ -642,20 +726,20 @@ fn base_models(
 /// The effect parameters of a fit whose first `skip` parameters are the
 /// axle characteristics.
 fn parameter_values(kinds: &[EffectKind], f: &FitOutcome, skip: usize) -> Vec<ParameterValue> {
-    let mut out = Vec::new();
-    let mut k = skip;
-    for e in kinds {
-        for q in e.parameters() {
-            out.push(ParameterValue {
-                name: format!("{}.{}", e.name(), q.name),
-                unit: q.unit.into(),
-                value: f.params[k],
-                std_error: f.std_errors[k],
-            });
-            k += 1;
-        }
-    }
-    out
+    let named = kinds
+        .iter()
+        .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)));
+    let roll = fits_roll(kinds).then_some(ROLL_DYNAMICS.iter().map(|q| ("roll", q)));
+    named
+        .chain(roll.into_iter().flatten())
+        .enumerate()
+        .map(|(i, (group, q))| ParameterValue {
+            name: format!("{group}.{}", q.name),
+            unit: q.unit.into(),
+            value: f.params[skip + i],
+            std_error: f.std_errors[skip + i],
+        })
+        .collect()
 }
 
 fn channel_errors(e: &ChannelErrors) -> Vec<ChannelError> {
@@ -883,8 +967,11 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
                         let mut kinds = cur.kinds.clone();
                         kinds.push(*e);
                         let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
-                        let mut start = cur.full.params.clone();
-                        start.extend(&single.full.params[axle_count..]);
+                        let start = combined_start(
+                            (&cur.kinds, &cur.full.params),
+                            (*e, &single.full.params),
+                            axle_count,
+                        );
                         ctx.score(kinds, EffectSet::default(), Some(start), 1000 + i as u64)
                     })
                     .collect();

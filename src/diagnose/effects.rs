@@ -108,6 +108,12 @@ impl EffectKind {
         }
     }
 
+    /// Whether the effect acts through the roll degree of freedom (whose
+    /// dynamics the diagnosis then fits with it).
+    pub fn uses_roll(self) -> bool {
+        matches!(self, EffectKind::RollSteer | EffectKind::RollCamber)
+    }
+
     /// The effect of a name, if it is one.
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|e| e.name() == name)

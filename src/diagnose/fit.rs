@@ -15,8 +15,10 @@
 
 use super::model::{Augmented, Drive, Observed};
 use crate::io::MeasuredRun;
-use crate::optim::local::{jacobian, levenberg_marquardt, levenberg_marquardt_within, Residuals};
+use crate::optim::bounded::{inward_jacobian, BoundedLm};
+use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
+use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 /// A measured channel.
@@ -222,38 +224,33 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     }
 }
 
-/// Weight of the bound residuals: a step one thousandth of a parameter's
-/// range outside its box costs as much as one scaled data residual of 1.
-const BOUND_PENALTY: f64 = 1e3;
-
 impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
-    /// Residuals of the data (without the bound residuals).
+    /// Number of data residuals.
     pub fn data_count(&self) -> usize {
         self.runs.iter().map(|r| r.count()).sum()
     }
 }
 
 impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
-    /// The data residuals, then one residual per parameter that is zero
-    /// inside its bounds and grows outside: the model sees clamped
-    /// parameters, and without these a least-squares step toward an optimum
-    /// on a bound would meet a flat cost beyond it and shrink its trust
-    /// region hundreds of times instead of stopping there.
+    /// The data residuals of the parameters clamped into their bounds (the
+    /// polish, [`BoundedLm`], stays inside them).
     fn count(&self) -> usize {
-        self.data_count() + self.bounds.len()
+        self.data_count()
     }
     fn residuals(&self, p: &[f64], out: &mut [f64]) {
-        let q = self.clamp(p);
-        let model = (self.build)(&q);
+        self.data_residuals(&self.clamp(p), out);
+    }
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
+    /// The data residuals at `q` (inside the bounds).
+    fn data_residuals(&self, q: &[f64], out: &mut [f64]) {
+        let model = (self.build)(q);
         let mut k = 0;
         for r in &self.runs {
             let n = r.count();
             r.residuals(&model, &self.scales, &mut out[k..k + n]);
             k += n;
-        }
-        for ((x, c), (lo, hi)) in p.iter().zip(&q).zip(&self.bounds) {
-            out[k] = BOUND_PENALTY * (x - c) / (hi - lo).max(1e-300);
-            k += 1;
         }
     }
 }
@@ -273,6 +270,20 @@ pub struct FitOutcome {
     pub evaluations: usize,
     /// Whether the polish stopped on its convergence test.
     pub converged: bool,
+    /// The data residuals and their Jacobian at the optimum (fits polished
+    /// to convergence): the fold refits start from them.
+    #[serde(skip)]
+    pub linear: Option<Linearisation>,
+}
+
+/// Data residuals `r` and Jacobian `J` of a problem at a point, rows in the
+/// order of the problem's runs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Linearisation {
+    /// Residuals.
+    pub residuals: Vec<f64>,
+    /// Jacobian (finite differences stepping into the box at a bound).
+    pub jacobian: DMatrix<f64>,
 }
 
 impl FitOutcome {
@@ -284,9 +295,18 @@ impl FitOutcome {
     }
 }
 
-/// Evaluation budget of a fold refit, in units of n + 1 residual
-/// evaluations (about one LM iteration each).
-pub const REFIT_PATIENCE: usize = 8;
+/// Relative tolerance of the fits' cost and step: the replays are smooth in
+/// the parameters, but a finite-difference Jacobian is good to about √ε,
+/// and a scaled cost that moves by less than this is at its optimum for
+/// every figure the diagnosis reports.
+pub const FIT_TOLERANCE: f64 = 1.5e-8;
+
+/// Iteration budget of a fit on all runs.
+pub const FIT_ITERATIONS: usize = 100;
+
+/// Iteration budget of a fold refit (it starts next to its optimum; a fold
+/// that needs more is reported as not converged).
+pub const REFIT_ITERATIONS: usize = 8;
 
 /// The local polish of a fit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -330,13 +350,17 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     } else {
         // A refit starts next to its optimum: a bounded budget (a fold
         // that needs more is reported as not converged).
-        let lm = match polish {
-            Polish::LevenbergMarquardt => levenberg_marquardt(problem, &p0),
-            Polish::Refit => levenberg_marquardt_within(problem, &p0, REFIT_PATIENCE),
+        let iterations = match polish {
+            Polish::LevenbergMarquardt => FIT_ITERATIONS,
+            Polish::Refit => REFIT_ITERATIONS,
         };
+        let lm = BoundedLm {
+            iterations,
+            tolerance: FIT_TOLERANCE,
+        }
+        .minimize(problem, &p0, &problem.bounds);
         evaluations += lm.evaluations;
-        // LM may leave the box, where the residuals are clamped.
-        let p = problem.clamp(&lm.params);
+        let p = lm.params;
         let c = problem.cost(&p);
         let c0 = problem.cost(&p0);
         if c <= c0 {
@@ -345,9 +369,13 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
             (p0, c0, lm.converged)
         }
     };
-    let std_errors = match polish {
-        Polish::LevenbergMarquardt => standard_errors(problem, &params, cost),
-        Polish::Refit => vec![f64::NAN; params.len()],
+    let (std_errors, linear) = match polish {
+        Polish::LevenbergMarquardt if !params.is_empty() => {
+            let linear = linearise(problem, &params);
+            evaluations += params.len() + 1;
+            (standard_errors(&linear, &params, cost), Some(linear))
+        }
+        _ => (vec![f64::NAN; params.len()], None),
     };
     FitOutcome {
         params,
@@ -356,22 +384,122 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         residuals: problem.data_count(),
         evaluations: evaluations + 1,
         converged,
+        linear,
     }
 }
 
-fn standard_errors<F: Fn(&[f64]) -> Augmented + Sync>(
-    problem: &Problem<F>,
-    p: &[f64],
-    cost: f64,
-) -> Vec<f64> {
-    let k = p.len();
-    if k == 0 {
-        return Vec::new();
-    }
-    let n = problem.count();
-    let mut r = vec![0.0; n];
+/// The data residuals and their Jacobian at `p`.
+fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(problem: &Problem<F>, p: &[f64]) -> Linearisation {
+    let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
-    let j = jacobian(problem, p, &r);
+    let jacobian = inward_jacobian(problem, p, &r, &problem.bounds);
+    Linearisation {
+        residuals: r,
+        jacobian,
+    }
+}
+
+/// A fold refit has converged when the next step of its linear model
+/// would lower the training cost by less than this share: far below what
+/// moves a reported held-out error.
+const REFIT_DECREASE: f64 = 1e-6;
+
+/// Steps of a fold refit on the all-run Jacobian before it falls back to
+/// Levenberg–Marquardt.
+const REFIT_CHORD_STEPS: usize = 4;
+
+/// Refits `problem` (the training runs of a fold, whose residual rows are
+/// `rows` of the all-run problem's) from the all-run fit `full`. The
+/// optimum moves little when one run of several leaves, so the
+/// all-run Jacobian restricted to those rows is kept (a chord method):
+/// damped Gauss–Newton steps projected into the bounds, each costing one
+/// replay of the training runs, the damping raised after a step that does
+/// not lower the cost and lowered after one that does, until the model
+/// predicts a decrease below [`REFIT_DECREASE`] of the cost. Where that does
+/// not happen within [`REFIT_CHORD_STEPS`], Levenberg–Marquardt (fresh
+/// Jacobians) goes on from there within its budget. Without a
+/// linearisation (`full` not polished to convergence) it is
+/// Levenberg–Marquardt from `full`.
+pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    full: &FitOutcome,
+    rows: &[std::ops::Range<usize>],
+) -> FitOutcome {
+    let Some(linear) = full.linear.as_ref().filter(|_| !full.params.is_empty()) else {
+        return fit(problem, &full.params, None, Polish::Refit);
+    };
+    let n = full.params.len();
+    let picked: Vec<usize> = rows.iter().flat_map(|r| r.clone()).collect();
+    let j = linear.jacobian.select_rows(picked.iter());
+    let bounds = &problem.bounds;
+    // The damped step from p with residuals r, and the decrease of ½|r|²
+    // the linear model predicts for it.
+    let step = |p: &[f64], r: &[f64], lambda: f64| -> Option<(Vec<f64>, f64)> {
+        let g = j.transpose() * DVector::from_column_slice(r);
+        let free: Vec<usize> = (0..n)
+            .filter(|&i| {
+                let (lo, hi) = bounds[i];
+                !((p[i] <= lo && g[i] > 0.0) || (p[i] >= hi && g[i] < 0.0))
+            })
+            .collect();
+        let jf = j.select_columns(free.iter());
+        let mut a = jf.transpose() * &jf;
+        let largest = a.diagonal().max().max(1e-300);
+        for k in 0..free.len() {
+            a[(k, k)] += lambda * a[(k, k)].max(1e-12 * largest) + 1e-12 * largest;
+        }
+        let gf = DVector::from_iterator(free.len(), free.iter().map(|&i| g[i]));
+        let d = a.cholesky()?.solve(&gf);
+        let mut out = vec![0.0; n];
+        for (k, &i) in free.iter().enumerate() {
+            out[i] = -d[k];
+        }
+        let jd = &jf * &d;
+        let predicted = gf.dot(&d) - 0.5 * jd.norm_squared();
+        Some((out, predicted))
+    };
+    let mut p = full.params.clone();
+    let mut r: Vec<f64> = picked.iter().map(|&i| linear.residuals[i]).collect();
+    let mut cost = 0.5 * r.iter().map(|e| e * e).sum::<f64>();
+    let mut trial = vec![0.0; r.len()];
+    let mut lambda = 0.0;
+    let mut evaluations = 0;
+    for _ in 0..REFIT_CHORD_STEPS {
+        let Some((d, predicted)) = step(&p, &r, lambda) else {
+            break;
+        };
+        if predicted <= REFIT_DECREASE * cost {
+            return FitOutcome {
+                params: p,
+                std_errors: vec![f64::NAN; n],
+                cost,
+                residuals: problem.data_count(),
+                evaluations,
+                converged: true,
+                linear: None,
+            };
+        }
+        let q: Vec<f64> = problem.clamp(&p.iter().zip(&d).map(|(p, d)| p + d).collect::<Vec<_>>());
+        problem.residuals(&q, &mut trial);
+        evaluations += 1;
+        let c = 0.5 * trial.iter().map(|e| e * e).sum::<f64>();
+        if c.is_finite() && c < cost {
+            (p, cost) = (q, c);
+            std::mem::swap(&mut r, &mut trial);
+            lambda *= 0.1;
+        } else {
+            lambda = (lambda * 10.0).max(1e-3);
+        }
+    }
+    let mut f = fit(problem, &p, None, Polish::Refit);
+    f.evaluations += evaluations;
+    f
+}
+
+fn standard_errors(linear: &Linearisation, p: &[f64], cost: f64) -> Vec<f64> {
+    let k = p.len();
+    let n = linear.residuals.len();
+    let j = &linear.jacobian;
     let s2 = 2.0 * cost / (n.saturating_sub(k)).max(1) as f64;
     // A parameter the data cannot see (an ay offset without an ay channel,
     // a parameter pinned at its bound) has a zero column: it gets NaN and

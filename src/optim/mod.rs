@@ -3,6 +3,7 @@
 //! least-squares polish (Levenberg–Marquardt, seed 000's modified
 //! Gauss–Newton). Every random search takes a seed and is reproducible.
 
+pub mod bounded;
 pub mod local;
 pub mod pso;
 

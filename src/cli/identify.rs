@@ -30,6 +30,7 @@ pub struct Options<'a> {
     pub kappa_bin: f64,
     pub start: StartArg,
     pub template: Option<&'a Path>,
+    pub max_iterations: usize,
 }
 
 /// `--start` of the Magic Formula identification.
@@ -384,6 +385,7 @@ fn identify_mf(o: &Options, version: MfVersion) -> Result<()> {
             StartArg::Template => StartScheme::Template,
         },
         template: template_tyre,
+        max_iterations: o.max_iterations,
     };
     println!(
         "{}: {} samples, {} rows; model {}, start {:?}",

@@ -96,6 +96,9 @@ enum Command {
         /// layout the written file follows.
         #[arg(long)]
         template: Option<PathBuf>,
+        /// mf61/mf62: Levenberg–Marquardt iterations per step.
+        #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
+        max_iterations: usize,
     },
     /// The sim-to-real gap of a campaign (a TOML file or a folder with
     /// vehicle.toml, runs/*.csv and optionally tyre_rig.csv): where the base
@@ -185,6 +188,7 @@ pub fn run() -> ExitCode {
             bin_kappa,
             start,
             template,
+            max_iterations,
         } => identify::identify(&identify::Options {
             data: &data,
             model: &model,
@@ -197,6 +201,7 @@ pub fn run() -> ExitCode {
             kappa_bin: bin_kappa,
             start,
             template: template.as_deref(),
+            max_iterations,
         }),
         Command::Diagnose { campaign, out } => diagnose::diagnose(&campaign, out.as_deref()),
         Command::Synth {

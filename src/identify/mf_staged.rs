@@ -67,15 +67,16 @@ use serde::Serialize;
 use std::path::Path;
 use std::time::Instant;
 
-/// MINPACK's budget: at most about this many iterations per step (the
-/// crate's patience counts residual evaluations in units of n + 1, one per
-/// iteration, the Jacobian's own not counted): enough for these stages to
-/// converge, short enough that a degenerate direction (`RVY1..RVY4` on data
-/// without small slip angles) does not wander for seconds.
-const LM_ITERATIONS: usize = 150;
+/// MINPACK's default budget: at most about this many iterations per step
+/// (the crate's patience counts residual evaluations in units of n + 1, one
+/// per iteration, the Jacobian's own not counted): enough for the synthetic
+/// stages to converge, short enough that a degenerate direction (`RVY1..4`
+/// on data without small slip angles) does not wander for seconds. Real rig
+/// data may want more ([`Settings::max_iterations`]).
+pub const LM_ITERATIONS: usize = 150;
 
-fn lm(problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
-    levenberg_marquardt_within(problem, p0, (LM_ITERATIONS / (p0.len() + 1)).max(2))
+fn lm(problem: &dyn Residuals, p0: &[f64], iterations: usize) -> LocalResult {
+    levenberg_marquardt_within(problem, p0, (iterations / (p0.len() + 1)).max(2))
 }
 
 /// A slip below this is "zero" when rows are sorted into pure and combined.
@@ -484,6 +485,9 @@ pub struct Settings {
     /// `FNOMIN` is the median load, `NOMPRES` the median pressure,
     /// `UNLOADED_RADIUS` 0.3 m and every other coefficient its default.
     pub template: Option<MagicFormula>,
+    /// Levenberg–Marquardt iterations per step ([`LM_ITERATIONS`] by
+    /// default; the paper's scheme runs at least 500).
+    pub max_iterations: usize,
 }
 
 /// A fitted or held parameter of a stage.
@@ -975,7 +979,13 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, Strin
             }
         }
         let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
-        let rep = run_stage(stage, &mut tyre, &sel, settings.start);
+        let rep = run_stage(
+            stage,
+            &mut tyre,
+            &sel,
+            settings.start,
+            settings.max_iterations,
+        );
         if rep.skipped.is_none() {
             let (_, _, e2, y2) = sigma(stage, &tyre, &sel);
             match stage {
@@ -1069,6 +1079,7 @@ fn run_stage(
     tyre: &mut MagicFormula,
     rows: &[&MfRow],
     start: StartScheme,
+    max_iterations: usize,
 ) -> StageReport {
     let t0 = Instant::now();
     let table = stage.parameters();
@@ -1147,7 +1158,7 @@ fn run_stage(
     let (sigma_start, ..) = sigma(stage, &base, rows);
     let mut evaluations = 0;
     let result = match start {
-        StartScheme::Paper => paper_lm(&problem, &starts, 1.0, 500),
+        StartScheme::Paper => paper_lm(&problem, &starts, 1.0, max_iterations.max(500)),
         StartScheme::Data | StartScheme::Template => {
             // First the terms without load/camber/pressure conditions, the
             // others at their start; then everything.
@@ -1175,7 +1186,7 @@ fn run_stage(
                     None if e0 != 0.0 => continue,
                     None => {}
                 }
-                let r = lm(&sub, &q);
+                let r = lm(&sub, &q, max_iterations);
                 evaluations += r.evaluations;
                 if r.cost.is_finite() && r.cost < best.0 {
                     best = (r.cost, r.params);
@@ -1185,7 +1196,7 @@ fn run_stage(
             for (k, &i) in core.iter().enumerate() {
                 p[i] = best.1[k];
             }
-            let r = lm(&problem, &p);
+            let r = lm(&problem, &p, max_iterations);
             if r.cost.is_finite() && r.cost <= problem.cost(&p) {
                 r
             } else {

@@ -3,9 +3,12 @@
 use anyhow::{anyhow, Context, Result};
 use handling::identify::data::read_rig;
 use handling::identify::grouping::{group, Grouping, SlipAxis};
+use handling::identify::mf_staged::{self, StartScheme};
 use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
+use handling::io::tir::TirDocument;
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_bytes, write_json};
+use handling::tyre::mf::MfVersion;
 use handling::tyre::{Pac89, Tyre};
 use std::path::{Path, PathBuf};
 
@@ -25,10 +28,29 @@ pub struct Options<'a> {
     pub local: &'a str,
     pub alpha_bin_deg: f64,
     pub kappa_bin: f64,
+    pub start: StartArg,
+    pub template: Option<&'a Path>,
+    pub max_iterations: usize,
+}
+
+/// `--start` of the Magic Formula identification.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum StartArg {
+    /// Estimates from the data, then MINPACK's Levenberg–Marquardt.
+    Data,
+    /// Wei et al. (2010): every parameter 1, μ = 0.1, β = 5.
+    Paper,
+    /// The `--template` file's values, then MINPACK's Levenberg–Marquardt.
+    Template,
 }
 
 /// `handling identify`.
 pub fn identify(o: &Options) -> Result<()> {
+    match o.model {
+        "mf61" => return identify_mf(o, MfVersion::Mf61),
+        "mf62" => return identify_mf(o, MfVersion::Mf62),
+        _ => {}
+    }
     let mut settings = FitSettings::new(o.seed);
     settings.local = match o.local {
         "lm" => LocalMethod::LevenbergMarquardt,
@@ -322,6 +344,112 @@ pub fn identify(o: &Options) -> Result<()> {
         out.display(),
         report_path.display(),
         png_path.display()
+    );
+    Ok(())
+}
+
+/// `handling identify --model mf61|mf62`: Wei et al. (2010)'s five stages;
+/// writes the .tir and `<out>.report.json`.
+fn identify_mf(o: &Options, version: MfVersion) -> Result<()> {
+    let out = o.out.map_or_else(
+        || {
+            let stem = o
+                .data
+                .file_stem()
+                .map_or("data".into(), |s| s.to_string_lossy().into_owned());
+            PathBuf::from("out").join(format!("{stem}_{}.tir", o.model))
+        },
+        Path::to_path_buf,
+    );
+    let report_path = out.with_extension("report.json");
+    let mut inputs = vec![o.data.to_path_buf()];
+    inputs.extend(o.template.map(Path::to_path_buf));
+    for f in [&out, &report_path] {
+        refuse_overwrite(f, &inputs)?;
+    }
+    let template = o.template.map(TirDocument::read).transpose()?;
+    let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
+    let data = read_rig(o.data)?;
+    let default_speed = template_tyre
+        .as_ref()
+        .map_or(16.7, |t| t.coefficients.LONGVL);
+    let prepared = mf_staged::prepare(o.data, &data, o.alpha_bin_deg.to_radians(), default_speed)?;
+    let settings = mf_staged::Settings {
+        version,
+        start: match o.start {
+            StartArg::Data => StartScheme::Data,
+            StartArg::Paper => StartScheme::Paper,
+            StartArg::Template if o.template.is_none() => {
+                return Err(anyhow!("--start template needs --template <file.tir>"))
+            }
+            StartArg::Template => StartScheme::Template,
+        },
+        template: template_tyre,
+        max_iterations: o.max_iterations,
+    };
+    println!(
+        "{}: {} samples, {} rows; model {}, start {:?}",
+        o.data.display(),
+        prepared.account.samples,
+        prepared.account.rows,
+        o.model,
+        o.start
+    );
+    if let Some(g) = &prepared.account.thinning {
+        for line in g.lines() {
+            println!("  {line}");
+        }
+    }
+    let id = mf_staged::identify(&prepared.rows, &settings)
+        .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
+    for s in &id.report.stages {
+        match &s.skipped {
+            Some(why) => println!("  {:<12} skipped: {why}", s.stage.label()),
+            None => println!(
+                "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %; Wei et al. 2010: {:.2} %), RMS {:.2}, {:.2} s",
+                s.stage.label(),
+                s.points,
+                s.parameters.iter().filter(|p| p.free).count(),
+                s.sigma_percent,
+                s.sigma_start_percent,
+                s.paper_sigma_percent,
+                s.rms,
+                s.seconds
+            ),
+        }
+        for w in &s.warnings {
+            println!("    warning: {w}");
+        }
+        for p in s.parameters.iter().filter(|p| p.warning.is_some()) {
+            println!(
+                "    warning: {} = {:.6}: {}",
+                p.name,
+                p.value,
+                p.warning.as_deref().unwrap_or("")
+            );
+        }
+    }
+    if let Some(s) = id.report.sigma_fy_mz_percent {
+        println!("  Fy and Mz together: σ {s:.3} %");
+    }
+    let text = mf_staged::tir_text(&id.tyre, template.as_ref())?;
+    let back = mf_staged::round_trip_difference(&id.tyre, &text, &prepared.rows)?;
+    if back > 1e-9 {
+        return Err(anyhow!(
+            "the written .tir does not reproduce the fitted forces (relative difference {back:.2e})"
+        ));
+    }
+    let mut report = serde_json::to_value(&id.report)?;
+    report["data"] = serde_json::json!(o.data.display().to_string());
+    report["rows"] = serde_json::to_value(&prepared.account)?;
+    report["round_trip_relative_difference"] = serde_json::json!(back);
+    write_bytes(&out, text.as_bytes())?;
+    write_json(&report_path, &report)?;
+    println!(
+        "identified in {:.2} s; wrote {} and {}",
+        id.report.seconds,
+        out.display(),
+        report_path.display()
     );
     Ok(())
 }

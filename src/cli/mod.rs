@@ -56,7 +56,9 @@ enum Command {
     Identify {
         /// Rig data file.
         data: PathBuf,
-        /// gim, magic-simple, unitire, pac89 or linear.
+        /// gim, magic-simple, unitire, pac89, linear, or mf61 / mf62 (the
+        /// Magic Formula by Wei et al. (2010)'s staged Levenberg–Marquardt;
+        /// writes a .tir).
         #[arg(long)]
         model: String,
         /// Random seed of the swarm.
@@ -84,6 +86,19 @@ enum Command {
         /// Slip-ratio bin for thinning longitudinal data (0: no thinning).
         #[arg(long, default_value_t = 0.0025)]
         bin_kappa: f64,
+        /// mf61/mf62: where the parameters start — `template` (the template's values), `data` (estimates from
+        /// the data, then MINPACK's LM) or `paper` (all 1, Wei et al.'s LM
+        /// with μ = 0.1, β = 5).
+        #[arg(long, value_enum, default_value_t = identify::StartArg::Data)]
+        start: identify::StartArg,
+        /// mf61/mf62: a .tir whose constants (FNOMIN, UNLOADED_RADIUS,
+        /// NOMPRES, side) and unfitted coefficients are kept, and whose
+        /// layout the written file follows.
+        #[arg(long)]
+        template: Option<PathBuf>,
+        /// mf61/mf62: Levenberg–Marquardt iterations per step.
+        #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
+        max_iterations: usize,
     },
     /// The sim-to-real gap of a campaign (a TOML file or a folder with
     /// vehicle.toml, runs/*.csv and optionally tyre_rig.csv): where the base
@@ -171,6 +186,9 @@ pub fn run() -> ExitCode {
             local,
             bin_deg,
             bin_kappa,
+            start,
+            template,
+            max_iterations,
         } => identify::identify(&identify::Options {
             data: &data,
             model: &model,
@@ -181,6 +199,9 @@ pub fn run() -> ExitCode {
             local: &local,
             alpha_bin_deg: bin_deg,
             kappa_bin: bin_kappa,
+            start,
+            template: template.as_deref(),
+            max_iterations,
         }),
         Command::Diagnose { campaign, out } => diagnose::diagnose(&campaign, out.as_deref()),
         Command::Synth {

@@ -17,6 +17,7 @@
 
 pub mod data;
 pub mod grouping;
+pub mod mf_staged;
 pub mod pac89_two_stage;
 
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};

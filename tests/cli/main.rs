@@ -83,6 +83,7 @@ mod diagnose;
 mod identify;
 mod magic_formula;
 mod measured_metrics;
+mod mf_identify;
 mod proving_ground;
 mod real_logs;
 mod rig_layouts;

@@ -228,6 +228,12 @@ fn mf_sin(b: f64, c: f64, e: f64, x: f64) -> f64 {
     (c * (bx - e * (bx - bx.atan())).atan()).sin()
 }
 
+/// `cos(atan(x))` without trigonometry: `1/sqrt(1 + x²)` (exact identity).
+#[inline]
+fn cos_atan(x: f64) -> f64 {
+    1.0 / (1.0 + x * x).sqrt()
+}
+
 #[inline]
 fn mf_cos(b: f64, c: f64, e: f64, x: f64) -> f64 {
     let bx = b * x;
@@ -330,6 +336,9 @@ impl MagicFormula {
             1.0
         };
         let astar = match self.options.alpha_star {
+            // tan α itself inside ±90° (one call instead of sin and cos);
+            // beyond, sin α/|cos α| keeps the slip's direction.
+            AlphaStar::Tan if alpha.abs() < 0.5 * PI => alpha.tan() * sgn(vx),
             AlphaStar::Tan => {
                 let cs = alpha.cos().abs().max(1e-12);
                 alpha.sin() / cs * sgn(vx)
@@ -376,21 +385,24 @@ impl MagicFormula {
 
         // Pure lateral slip, and the same at zero camber for Mz.
         let lat = self.lateral(fz, dfz, dpi, astar, gs, lmuy_s, lmuy_p, low);
-        let lat0 = self.lateral(fz, dfz, dpi, astar, 0.0, lmuy_s, lmuy_p, low);
+        let lat0 = if gs == 0.0 {
+            None
+        } else {
+            Some(self.lateral(fz, dfz, dpi, astar, 0.0, lmuy_s, lmuy_p, low))
+        };
 
         // Combined slip: weighting functions.
-        let bxa = (c.RBX1 + c.RBX3 * gs * gs) * (c.RBX2 * kappa).atan().cos() * c.LXAL;
+        let bxa = (c.RBX1 + c.RBX3 * gs * gs) * cos_atan(c.RBX2 * kappa) * c.LXAL;
         let cxa = c.RCX1;
         let exa = (c.REX1 + c.REX2 * dfz).min(1.0);
         let shxa = c.RHX1;
         let gxa = mf_cos(bxa, cxa, exa, astar + shxa) / mf_cos(bxa, cxa, exa, shxa);
         let fx = gxa * fx0;
 
-        let dvyk =
-            lat.muy * fz * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs) * (c.RVY4 * astar).atan().cos();
+        let dvyk = lat.muy * fz * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs) * cos_atan(c.RVY4 * astar);
         let svyk = dvyk * (c.RVY5 * (c.RVY6 * kappa).atan()).sin() * c.LVYKA * low;
         let shyk = c.RHY1 + c.RHY2 * dfz;
-        let byk = (c.RBY1 + c.RBY4 * gs * gs) * (c.RBY2 * (astar - c.RBY3)).atan().cos() * c.LYKA;
+        let byk = (c.RBY1 + c.RBY4 * gs * gs) * cos_atan(c.RBY2 * (astar - c.RBY3)) * c.LYKA;
         let cyk = c.RCY1;
         let eyk = (c.REY1 + c.REY2 * dfz).min(1.0);
         let gyk = mf_cos(byk, cyk, eyk, kappa + shyk) / mf_cos(byk, cyk, eyk, shyk);
@@ -445,8 +457,8 @@ impl MagicFormula {
         let et = et_at(at);
         // TNO scales the trail by λ_Fz0 as well.
         let t = dt * mf_cos(bt, ct, et, at_eq) * cos_a * c.LFZO;
-        let mzr = dr * (br * ar_eq).atan().cos() * cos_a;
-        let fy_prime = gyk * lat0.fy0;
+        let mzr = dr * cos_atan(br * ar_eq) * cos_a;
+        let fy_prime = gyk * lat0.as_ref().map_or(lat.fy0, |l| l.fy0);
         // TNO (A56): Fy/Fz0 with the unscaled Fz0 and γ itself.
         let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + (c.SSZ3 + c.SSZ4 * dfz) * gamma) * c.LS;
         let mz = -t * fy_prime + mzr + s * fx;
@@ -476,7 +488,8 @@ impl MagicFormula {
             fzr
         } else {
             let pr = if c.NOMPRES > 0.0 { p / c.NOMPRES } else { 1.0 };
-            fzr.powf(c.QSY7) * pr.powf(c.QSY8)
+            // Fz^QSY7·p^QSY8 as one exponential of logarithms.
+            (c.QSY7 * fzr.ln() + c.QSY8 * pr.ln()).exp()
         };
         let my = -r0 * fz0 * c.LMY * poly * powers * sgn(vx) * low;
 

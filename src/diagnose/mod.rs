@@ -4,13 +4,17 @@
 //! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis
 //! that ranks the effects on held-out runs ([`diagnosis`]).
 
+mod candidates;
+mod crossval;
 pub mod diagnosis;
 pub mod effects;
 pub mod fit;
 pub mod gap;
 pub mod model;
 pub mod proving_ground;
+pub mod report;
 pub mod sensors;
+mod summary;
 pub mod synth;
 
 pub use diagnosis::{diagnose, Diagnosis};

@@ -1,0 +1,313 @@
+//! The candidates of a diagnosis as parameter vectors: the base models
+//! (the campaign's tyres, a tyre model fitted to its rig data, or axle
+//! characteristics identified from the runs and refitted with every
+//! candidate), and how a vector of axle characteristics, effect parameters
+//! and roll dynamics becomes a model. Units: SI, rad; the roll frequency in
+//! Hz.
+
+use super::crossval::training_rows;
+use super::effects::{EffectKind, EffectSet, Parameter};
+use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
+use super::model::Augmented;
+use super::report::ParameterValue;
+use crate::identify::data::read_rig;
+use crate::identify::grouping::{group, Grouping, SlipAxis};
+use crate::identify::{fit_lateral, start_tyre, FitSettings};
+use crate::io::campaign::{BaseTyres, Campaign};
+use crate::optim::pso::Pso;
+use crate::tyre::{MagicSimple, Tyre};
+use crate::vehicle::VehicleModel;
+use rayon::prelude::*;
+
+/// A set of effects with their fitted values, and the model builder.
+#[derive(Clone)]
+pub(super) struct Setting<'a> {
+    pub(super) base: &'a Bases,
+    pub(super) kinds: Vec<EffectKind>,
+    pub(super) fixed: EffectSet,
+}
+
+/// The base model of all runs and of every fold.
+pub(super) struct Bases {
+    pub(super) all: Augmented,
+    pub(super) folds: Vec<Augmented>,
+    pub(super) nominal_share: f64,
+    /// Axle characteristics identified from the runs (all runs, per fold):
+    /// refitted jointly with every candidate, since an effect changes what
+    /// the tyres must have been.
+    pub(super) axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
+}
+
+/// Bounds of the axle characteristics fitted from runs: B front, B rear
+/// (1/rad), peak friction D.
+pub(super) const AXLE_BOUNDS: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+
+/// The simplified Magic Formula axle tyres of parameters (B_f, B_r, D).
+pub(super) fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
+    (
+        Tyre::MagicSimple(MagicSimple {
+            b: p[0],
+            c: 1.3,
+            d: p[2],
+        }),
+        Tyre::MagicSimple(MagicSimple {
+            b: p[1],
+            c: 1.3,
+            d: p[2],
+        }),
+    )
+}
+
+/// The roll degree of freedom's dynamics, fitted with the roll effects: a
+/// campaign's `[roll]` is a guess (no roll channel is needed), and roll
+/// steer or camber seen through the wrong roll frequency and damping is
+/// mimicked by stiffness changes of the wrong sign. The roll gradient stays
+/// the campaign's: it only scales the per-radian roll-steer and roll-camber
+/// values. Off values (NaN) are the campaign's.
+pub(super) static ROLL_DYNAMICS: [Parameter; 2] = [
+    Parameter {
+        name: "frequency",
+        unit: "Hz",
+        off: f64::NAN,
+        bounds: (0.3, 5.0),
+    },
+    Parameter {
+        name: "damping",
+        unit: "-",
+        off: f64::NAN,
+        bounds: (0.1, 2.0),
+    },
+];
+
+/// Whether a candidate carries the roll-dynamics parameters.
+pub(super) fn fits_roll(kinds: &[EffectKind]) -> bool {
+    kinds.iter().any(|e| e.uses_roll())
+}
+
+/// The model of a candidate's parameter vector: the axle characteristics
+/// first when they are fitted (`axle`), then each effect's parameters, then
+/// the roll dynamics when a roll effect is among them ([`ROLL_DYNAMICS`]).
+pub(super) fn with_effects(
+    base: &Augmented,
+    fixed: &EffectSet,
+    kinds: &[EffectKind],
+    axle: bool,
+    p: &[f64],
+) -> Augmented {
+    let mut m = base.clone();
+    m.effects = *fixed;
+    let mut k = 0;
+    if axle {
+        (m.base.front, m.base.rear) = axle_tyres(&p[..3]);
+        k = 3;
+    }
+    for e in kinds {
+        let n = e.parameters().len();
+        m.effects.set(*e, &p[k..k + n]);
+        k += n;
+    }
+    if fits_roll(kinds) {
+        m.roll.frequency = p[k];
+        m.roll.damping = p[k + 1];
+    }
+    m
+}
+
+/// The start of a combination: the axle characteristics and effect values
+/// of the current set, the added effect's values from its single fit, and
+/// the roll dynamics from whichever of the two fitted them (the current
+/// set first).
+pub(super) fn combined_start(
+    current: (&[EffectKind], &[f64]),
+    added: (EffectKind, &[f64]),
+    axle_count: usize,
+) -> Vec<f64> {
+    let (kinds, p) = current;
+    let effect_len: usize = kinds.iter().map(|e| e.parameters().len()).sum();
+    let end = axle_count + effect_len;
+    let n = added.0.parameters().len();
+    let mut start = p[..end].to_vec();
+    start.extend(&added.1[axle_count..axle_count + n]);
+    if fits_roll(kinds) {
+        start.extend(&p[end..end + 2]);
+    } else if added.0.uses_roll() {
+        start.extend(&added.1[axle_count + n..axle_count + n + 2]);
+    }
+    start
+}
+
+impl Setting<'_> {
+    pub(super) fn axle(&self) -> bool {
+        self.base.axle.is_some()
+    }
+    /// The effect parameters in vector order, the roll dynamics last.
+    pub(super) fn parameters(&self) -> impl Iterator<Item = &'static Parameter> + '_ {
+        let roll = if fits_roll(&self.kinds) {
+            &ROLL_DYNAMICS[..]
+        } else {
+            &[]
+        };
+        self.kinds
+            .iter()
+            .flat_map(|e| e.parameters().iter())
+            .chain(roll.iter())
+    }
+    pub(super) fn bounds(&self) -> Vec<(f64, f64)> {
+        let axle = if self.axle() { &AXLE_BOUNDS[..] } else { &[] };
+        axle.iter()
+            .copied()
+            .chain(self.parameters().map(|q| q.bounds))
+            .collect()
+    }
+    pub(super) fn off(&self) -> Vec<f64> {
+        let axle = self.base.axle.as_ref().map_or(&[][..], |a| &a.0[..]);
+        let roll = self.base.all.roll;
+        let mut p: Vec<f64> = axle
+            .iter()
+            .copied()
+            .chain(self.kinds.iter().flat_map(|e| {
+                e.parameters().iter().map(|q| {
+                    if q.off.is_nan() {
+                        self.base.nominal_share
+                    } else {
+                        q.off
+                    }
+                })
+            }))
+            .collect();
+        if fits_roll(&self.kinds) {
+            p.extend([roll.frequency, roll.damping]);
+        }
+        p
+    }
+}
+
+/// The base models: all runs and each fold's training runs.
+pub(super) fn base_models(
+    c: &Campaign,
+    runs: &[Prepared],
+    folds: &[Vec<usize>],
+    scales_hint: [f64; 3],
+    pso: &Pso,
+) -> Result<(Bases, String), String> {
+    let vehicle = c.vehicle.clone();
+    let nominal_share = vehicle.front_transfer_share();
+    let make = |f: Tyre, r: Tyre| Augmented {
+        roll: c.roll,
+        ..Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction)
+    };
+    // Tyres not fitted to the runs: one model for all runs and every fold.
+    let fixed = |m: Augmented| Bases {
+        folds: vec![m.clone(); folds.len()],
+        all: m,
+        nominal_share,
+        axle: None,
+    };
+    match &c.tyres {
+        BaseTyres::Given(f, r) => Ok((
+            fixed(make((**f).clone(), (**r).clone())),
+            "given tyre files".into(),
+        )),
+        BaseTyres::Rig { path, model } => {
+            let data = read_rig(path).map_err(|e| e.to_string())?;
+            let conditions = group(path, &data, &Grouping::default(), SlipAxis::Angle)
+                .map_err(|e| e.to_string())?
+                .conditions;
+            if conditions.is_empty() {
+                return Err(format!(
+                    "{}: no lateral test condition in the rig data",
+                    path.display()
+                ));
+            }
+            let mut loads: Vec<f64> = conditions.iter().map(|q| q.fz).collect();
+            loads.sort_by(f64::total_cmp);
+            let t0 = start_tyre(model, loads[loads.len() / 2])?;
+            let mut settings = FitSettings::new(c.settings.seed);
+            settings.pso.particles = 40;
+            settings.pso.iterations = 150;
+            let f = fit_lateral(&t0, &conditions, &settings)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            Ok((
+                fixed(make(f.tyre.clone(), f.tyre.clone())),
+                format!(
+                    "{} fitted to the rig data {} (σ {:.2} % of the force)",
+                    model,
+                    path.display(),
+                    f.sigma_percent
+                ),
+            ))
+        }
+        BaseTyres::FromRuns => {
+            // Axle characteristics from the runs: B per axle and a shared
+            // peak friction D of a simplified Magic Formula (C = 1.3).
+            let build = |p: &[f64]| {
+                let (f, r) = axle_tyres(p);
+                make(f, r)
+            };
+            let problem = Problem {
+                build,
+                runs: runs.iter().collect(),
+                scales: scales_hint,
+                bounds: AXLE_BOUNDS.to_vec(),
+            };
+            let full = fit(
+                &problem,
+                &[10.0, 10.0, 1.0],
+                Some((pso, 0)),
+                Polish::LevenbergMarquardt,
+            );
+            let fold_params: Vec<Vec<f64>> = (0..folds.len())
+                .into_par_iter()
+                .map(|k| {
+                    let train: Vec<&Prepared> = (0..runs.len())
+                        .filter(|i| !folds[k].contains(i))
+                        .map(|i| &runs[i])
+                        .collect();
+                    let p = Problem {
+                        build,
+                        runs: train,
+                        scales: scales_hint,
+                        bounds: AXLE_BOUNDS.to_vec(),
+                    };
+                    refit(&p, &full, &training_rows(runs, &folds[k])).params
+                })
+                .collect();
+            let p = &full.params;
+            Ok((
+                Bases {
+                    all: build(p),
+                    folds: fold_params.iter().map(|q| build(q)).collect(),
+                    nominal_share,
+                    axle: Some((p.clone(), fold_params)),
+                },
+                format!(
+                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): B front {:.2} ± {:.2}, B rear {:.2} ± {:.2} 1/rad, D {:.3} ± {:.3}",
+                    p[0], full.std_errors[0], p[1], full.std_errors[1], p[2], full.std_errors[2]
+                ),
+            ))
+        }
+    }
+}
+
+/// The effect parameters of a fit whose first `skip` parameters are the
+/// axle characteristics.
+pub(super) fn parameter_values(
+    kinds: &[EffectKind],
+    f: &FitOutcome,
+    skip: usize,
+) -> Vec<ParameterValue> {
+    let named = kinds
+        .iter()
+        .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)));
+    let roll = fits_roll(kinds).then_some(ROLL_DYNAMICS.iter().map(|q| ("roll", q)));
+    named
+        .chain(roll.into_iter().flatten())
+        .enumerate()
+        .map(|(i, (group, q))| ParameterValue {
+            name: format!("{group}.{}", q.name),
+            unit: q.unit.into(),
+            value: f.params[skip + i],
+            std_error: f.std_errors[skip + i],
+        })
+        .collect()
+}

@@ -1,0 +1,172 @@
+//! Scoring a candidate: its fit on all runs and its errors on held-out
+//! runs, each fold refitted from the all-run optimum; the held-out gap
+//! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
+
+use super::candidates::{with_effects, Bases, Setting};
+use super::effects::{EffectKind, EffectSet};
+use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
+use super::model::Observed;
+use crate::optim::pso::Pso;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Everything scored for one candidate.
+#[derive(Clone)]
+pub(super) struct Scored {
+    pub(super) kinds: Vec<EffectKind>,
+    pub(super) full: FitOutcome,
+    /// Errors of the all-run fit on all runs.
+    pub(super) insample: ChannelErrors,
+    pub(super) heldout: ChannelErrors,
+    pub(super) fold_params: Vec<Vec<f64>>,
+    pub(super) folds_converged: usize,
+}
+
+pub(super) struct Context<'a> {
+    pub(super) runs: Vec<Prepared>,
+    pub(super) folds: Vec<Vec<usize>>,
+    pub(super) scales: [f64; 3],
+    pub(super) bases: &'a Bases,
+    pub(super) pso: Pso,
+    pub(super) progress: Option<&'a AtomicUsize>,
+}
+
+impl Context<'_> {
+    pub(super) fn tick(&self) {
+        if let Some(p) = self.progress {
+            p.fetch_add(1, Ordering::Relaxed);
+        }
+    }
+
+    pub(super) fn training(&self, fold: usize) -> Vec<&Prepared> {
+        (0..self.runs.len())
+            .filter(|i| !self.folds[fold].contains(i))
+            .map(|i| &self.runs[i])
+            .collect()
+    }
+
+    /// Fits a candidate on all runs (PSO from `start`) and scores it on
+    /// every fold, refitted from the all-run optimum ([`refit`]: its
+    /// linearisation first, Levenberg–Marquardt within a budget when that
+    /// does not converge; non-converged folds are counted and warned about).
+    /// A `start` skips the swarm: the polish starts from it (combinations
+    /// start from their members' single fits).
+    pub(super) fn score(
+        &self,
+        kinds: Vec<EffectKind>,
+        fixed: EffectSet,
+        start: Option<Vec<f64>>,
+        salt: u64,
+    ) -> Scored {
+        let s = Setting {
+            base: self.bases,
+            kinds,
+            fixed,
+        };
+        let problem = Problem {
+            build: |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
+            runs: self.runs.iter().collect(),
+            scales: self.scales,
+            bounds: s.bounds(),
+        };
+        let pso = Pso {
+            seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
+            ..self.pso
+        };
+        let full = match start {
+            Some(p) => fit(&problem, &p, None, Polish::LevenbergMarquardt),
+            None => fit(
+                &problem,
+                &s.off(),
+                Some((&pso, if s.axle() { 3 } else { 0 })),
+                Polish::LevenbergMarquardt,
+            ),
+        };
+        let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
+        let mut insample = ChannelErrors::default();
+        for r in &self.runs {
+            insample.add(&r.errors(&all_model));
+        }
+        self.tick();
+        let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
+            .map(|k| {
+                let base = &self.bases.folds[k];
+                let problem = Problem {
+                    build: |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
+                    runs: self.training(k),
+                    scales: self.scales,
+                    bounds: s.bounds(),
+                };
+                let f = refit(&problem, &full, &training_rows(&self.runs, &self.folds[k]));
+                let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
+                let mut e = ChannelErrors::default();
+                for &i in &self.folds[k] {
+                    e.add(&self.runs[i].errors(&model));
+                }
+                self.tick();
+                (e, f.params, f.converged)
+            })
+            .collect();
+        let mut heldout = ChannelErrors::default();
+        for (e, _, _) in &per_fold {
+            heldout.add(e);
+        }
+        Scored {
+            kinds: s.kinds,
+            full,
+            insample,
+            heldout,
+            folds_converged: per_fold.iter().filter(|f| f.2).count(),
+            fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
+        }
+    }
+
+    /// Held-out replays of every run with a candidate's fold parameters.
+    pub(super) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
+        let mut out = vec![Observed::default(); self.runs.len()];
+        for (k, fold) in self.folds.iter().enumerate() {
+            let model = match sc {
+                Some(sc) => with_effects(
+                    &self.bases.folds[k],
+                    fixed,
+                    &sc.kinds,
+                    self.bases.axle.is_some(),
+                    &sc.fold_params[k],
+                ),
+                None => self.bases.folds[k].clone(),
+            };
+            for &i in fold {
+                let r = &self.runs[i];
+                out[i] = r.observe(&model);
+            }
+        }
+        out
+    }
+}
+
+/// The residual rows of a fold's training runs (all but `held_out`) in the
+/// all-run problem, whose rows follow the runs' order.
+pub(super) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut start = 0;
+    let mut rows = Vec::new();
+    for (i, r) in runs.iter().enumerate() {
+        let n = r.count();
+        if !held_out.contains(&i) {
+            rows.push(start..start + n);
+        }
+        start += n;
+    }
+    rows
+}
+
+pub(super) fn gap_above(j: f64, jn: f64) -> f64 {
+    (j * j - jn * jn).max(0.0).sqrt()
+}
+
+pub(super) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
+    let g0 = gap_above(before, jn);
+    if g0 <= 0.0 {
+        0.0
+    } else {
+        100.0 * (1.0 - gap_above(after, jn) / g0)
+    }
+}

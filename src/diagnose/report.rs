@@ -1,0 +1,219 @@
+//! The typed report of a diagnosis ([`super::diagnose`]): what
+//! `diagnosis.json` holds. Values are SI and rad unless a field names its
+//! unit; held-out errors J are dimensionless (residuals over channel
+//! scales).
+
+use super::fit::Channel;
+use super::gap::ChannelGap;
+use super::model::Observed;
+use crate::tyre::Tyre;
+use serde::Serialize;
+
+/// A fitted parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParameterValue {
+    /// `effect.parameter`.
+    pub name: String,
+    /// Unit.
+    pub unit: String,
+    /// Value fitted on all runs.
+    pub value: f64,
+    /// Its standard error (from the Jacobian; residual autocorrelation makes
+    /// it optimistic).
+    pub std_error: f64,
+}
+
+/// Held-out RMS of one channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelError {
+    /// Channel.
+    pub channel: String,
+    /// Unit.
+    pub unit: String,
+    /// Held-out RMS residual.
+    pub rms: f64,
+}
+
+/// One candidate (an effect or a combination) and its scores.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Ranked {
+    /// The effect names joined by `+`.
+    pub effect: String,
+    /// The effect names.
+    pub effects: Vec<String>,
+    /// Fitted parameters.
+    pub parameters: Vec<ParameterValue>,
+    /// Held-out combined error J of the base model.
+    pub heldout_error_before: f64,
+    /// Held-out combined error J with the effect.
+    pub heldout_error_after: f64,
+    /// Held-out RMS per channel with the effect.
+    pub heldout_channels: Vec<ChannelError>,
+    /// Share of the held-out gap above noise removed, %.
+    pub reduction_percent: f64,
+    /// Combined error J of the all-run fit on all runs (in sample).
+    pub insample_error_after: f64,
+    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    pub insample_reduction_percent: f64,
+    /// Folds whose refit converged (of `folds`).
+    pub folds_converged: usize,
+    /// Folds refitted.
+    pub folds: usize,
+    /// Cross-validation that disagrees with the fit, or refits that did not
+    /// converge.
+    pub warning: Option<String>,
+    /// BIC of the all-run fit.
+    pub bic: f64,
+    /// BIC minus the base model's (negative: better).
+    pub delta_bic: f64,
+}
+
+/// Effects that explain the gap about equally well.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Confounded {
+    /// The effects.
+    pub effects: Vec<String>,
+    /// Their reductions, %.
+    pub reduction_percent: Vec<f64>,
+    /// The experiment that would separate them.
+    pub separating_test: String,
+}
+
+/// The verdict.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Verdict {
+    /// Effects the evidence supports (empty: the gap is within noise or no
+    /// effect explains it).
+    pub effects: Vec<String>,
+    /// Their parameters.
+    pub parameters: Vec<ParameterValue>,
+    /// In words.
+    pub statement: String,
+}
+
+/// Before/after on held-out runs for one part of the data.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Shrinkage {
+    /// Channel.
+    pub channel: String,
+    /// `all`, a time window or a regime.
+    pub part: String,
+    /// Samples.
+    pub samples: usize,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
+    /// Noise floor of the channel.
+    pub noise_floor: f64,
+    /// Share of the gap above noise removed, %.
+    pub reduction_percent: f64,
+}
+
+/// Noise floor and scale of a channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelNoise {
+    /// Channel.
+    pub channel: String,
+    /// Unit.
+    pub unit: String,
+    /// Median over runs of the noise floor.
+    pub noise_floor: f64,
+    /// Residual scale used in the fits.
+    pub scale: f64,
+    /// Runs measuring it.
+    pub runs: usize,
+}
+
+/// The gap of one run with the base model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunGap {
+    /// Run.
+    pub run: String,
+    /// Per channel.
+    pub channels: Vec<ChannelGap>,
+    /// Gain and phase error per frequency band (runs with a rich input).
+    pub bands: Vec<super::gap::BandGap>,
+}
+
+/// Where the gap lies.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GapReport {
+    /// Is there a gap above noise on held-out runs.
+    pub significant: bool,
+    /// Held-out J of the base model.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// Noise floors.
+    pub noise: Vec<ChannelNoise>,
+    /// Per channel, window and regime over all runs (base model replays).
+    pub parts: Vec<Shrinkage>,
+    /// Per run.
+    pub runs: Vec<RunGap>,
+    /// The findings in words.
+    pub summary: Vec<String>,
+}
+
+/// The base model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BaseReport {
+    /// Where its tyres come from.
+    pub tyres: String,
+    /// Front tyre (all-run or rig fit).
+    pub front: Tyre,
+    /// Rear tyre.
+    pub rear: Tyre,
+}
+
+/// Everything the diagnosis found.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Diagnosis {
+    /// Campaign name.
+    pub campaign: String,
+    /// Seed of every random search.
+    pub seed: u64,
+    /// Runs, in order.
+    pub runs: Vec<String>,
+    /// Folds of the cross-validation.
+    pub folds: usize,
+    /// Notes on the inputs.
+    pub notes: Vec<String>,
+    /// Glitches, standstills and crawling found in the runs and what was
+    /// excluded, repaired or masked.
+    pub cleaning: crate::io::clean::CleaningReport,
+    /// The base model.
+    pub base: BaseReport,
+    /// Where the gap lies.
+    pub gap: GapReport,
+    /// Single effects, best first.
+    pub ranking: Vec<Ranked>,
+    /// Combinations tried, best first.
+    pub combinations: Vec<Ranked>,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// Confounded effects.
+    pub confounded: Vec<Confounded>,
+    /// Before and after on held-out runs, per channel, window and regime.
+    pub shrinkage: Vec<Shrinkage>,
+    /// Held-out replays (measured / base / verdict) for the figures.
+    #[serde(skip)]
+    pub overlays: Vec<Overlay>,
+}
+
+/// One run's held-out replays.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlay {
+    /// Run name.
+    pub run: String,
+    /// Times, s.
+    pub t: Vec<f64>,
+    /// Measured channels.
+    pub measured: Vec<(Channel, Vec<f64>)>,
+    /// Base model.
+    pub base: Observed,
+    /// With the verdict's effects.
+    pub after: Observed,
+    /// Base-model combined error of the run.
+    pub gap: f64,
+}

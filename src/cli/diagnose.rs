@@ -61,6 +61,9 @@ pub fn diagnose(path: &Path, out: Option<&Path>) -> Result<()> {
 /// The short human report.
 fn report(d: &Diagnosis) {
     println!("base model: {}", d.base.tyres);
+    for line in d.base.rig_grouping.iter().flat_map(|g| g.lines()) {
+        println!("  rig data: {line}");
+    }
     println!("where the gap lies:");
     for s in &d.gap.summary {
         println!("  {s}");
@@ -78,10 +81,19 @@ fn report(d: &Diagnosis) {
             .parameters
             .iter()
             .map(|p| {
-                format!(
-                    "{} = {:.4} ± {:.2e} {}",
-                    p.name, p.value, p.std_error, p.unit
-                )
+                if p.std_error.is_finite() {
+                    format!(
+                        "{} = {:.4} ± {:.2e} {}",
+                        p.name, p.value, p.std_error, p.unit
+                    )
+                } else {
+                    // No standard error: the runs cannot see it (a channel
+                    // they lack, a parameter pinned by another).
+                    format!(
+                        "{} = {:.4} {} (no standard error: not identifiable from these runs)",
+                        p.name, p.value, p.unit
+                    )
+                }
             })
             .collect();
         println!(

@@ -11,7 +11,7 @@ use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
 use crate::identify::data::read_rig;
-use crate::identify::grouping::{group, Grouping, SlipAxis};
+use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre, FitSettings};
 use crate::io::campaign::{BaseTyres, Campaign};
 use crate::optim::pso::Pso;
@@ -189,7 +189,7 @@ pub(super) fn base_models(
     folds: &[Vec<usize>],
     scales_hint: [f64; 3],
     pso: &Pso,
-) -> Result<(Bases, String), String> {
+) -> Result<(Bases, String, Option<GroupingReport>), String> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
     let make = |f: Tyre, r: Tyre| Augmented {
@@ -207,12 +207,13 @@ pub(super) fn base_models(
         BaseTyres::Given(f, r) => Ok((
             fixed(make((**f).clone(), (**r).clone())),
             "given tyre files".into(),
+            None,
         )),
         BaseTyres::Rig { path, model } => {
             let data = read_rig(path).map_err(|e| e.to_string())?;
-            let conditions = group(path, &data, &Grouping::default(), SlipAxis::Angle)
-                .map_err(|e| e.to_string())?
-                .conditions;
+            let grouped = group(path, &data, &Grouping::default(), SlipAxis::Angle)
+                .map_err(|e| e.to_string())?;
+            let conditions = grouped.conditions;
             if conditions.is_empty() {
                 return Err(format!(
                     "{}: no lateral test condition in the rig data",
@@ -235,6 +236,7 @@ pub(super) fn base_models(
                     path.display(),
                     f.sigma_percent
                 ),
+                Some(grouped.report),
             ))
         }
         BaseTyres::FromRuns => {
@@ -281,9 +283,10 @@ pub(super) fn base_models(
                     axle: Some((p.clone(), fold_params)),
                 },
                 format!(
-                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): B front {:.2} ± {:.2}, B rear {:.2} ± {:.2} 1/rad, D {:.3} ± {:.3}",
+                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): B front {:.2} ± {:.1e}, B rear {:.2} ± {:.1e} 1/rad, D {:.3} ± {:.1e}",
                     p[0], full.std_errors[0], p[1], full.std_errors[1], p[2], full.std_errors[2]
                 ),
+                None,
             ))
         }
     }

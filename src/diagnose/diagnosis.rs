@@ -435,7 +435,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         ..Pso::default()
     };
     let hint = signal_scales(c);
-    let (bases, tyre_source) = base_models(c, &runs, &folds, hint, &pso)?;
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, &pso)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }
@@ -530,6 +530,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             tyres: tyre_source,
             front: bases.all.base.front.clone(),
             rear: bases.all.base.rear.clone(),
+            rig_grouping,
         },
         gap: GapReport {
             significant,

@@ -369,10 +369,20 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
             (p0, c0, lm.converged)
         }
     };
+    let mut params = params;
     let (std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
             let linear = linearise(problem, &params);
             evaluations += params.len() + 1;
+            // A parameter the data cannot see (an accelerometer offset of a
+            // run set without ay) is wherever the swarm left it: report its
+            // start value (the effect off), which fits as well.
+            let start = problem.clamp(start);
+            for (i, seen) in seen_columns(&linear.jacobian).into_iter().enumerate() {
+                if !seen {
+                    params[i] = start[i];
+                }
+            }
             (standard_errors(&linear, &params, cost), Some(linear))
         }
         _ => (vec![f64::NAN; params.len()], None),
@@ -496,6 +506,14 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     f
 }
 
+/// Whether the data see each parameter: its Jacobian column is not zero
+/// next to the largest.
+fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
+    let norms: Vec<f64> = j.column_iter().map(|c| c.norm()).collect();
+    let largest = norms.iter().copied().fold(0.0, f64::max);
+    norms.iter().map(|&n| n > 1e-9 * largest).collect()
+}
+
 fn standard_errors(linear: &Linearisation, p: &[f64], cost: f64) -> Vec<f64> {
     let k = p.len();
     let n = linear.residuals.len();
@@ -504,9 +522,11 @@ fn standard_errors(linear: &Linearisation, p: &[f64], cost: f64) -> Vec<f64> {
     // A parameter the data cannot see (an ay offset without an ay channel,
     // a parameter pinned at its bound) has a zero column: it gets NaN and
     // the others are computed without it.
-    let norms: Vec<f64> = (0..k).map(|c| j.column(c).norm()).collect();
-    let largest = norms.iter().copied().fold(0.0, f64::max);
-    let seen: Vec<usize> = (0..k).filter(|&c| norms[c] > 1e-9 * largest).collect();
+    let seen: Vec<usize> = seen_columns(j)
+        .into_iter()
+        .enumerate()
+        .filter_map(|(c, seen)| seen.then_some(c))
+        .collect();
     let mut out = vec![f64::NAN; k];
     if seen.is_empty() {
         return out;

@@ -6,6 +6,7 @@
 use super::fit::Channel;
 use super::gap::ChannelGap;
 use super::model::Observed;
+use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;
 
@@ -164,6 +165,9 @@ pub struct BaseReport {
     pub front: Tyre,
     /// Rear tyre.
     pub rear: Tyre,
+    /// Where every sample of the rig data went (levels, transitions,
+    /// thinning), when the tyres were fitted to rig data.
+    pub rig_grouping: Option<GroupingReport>,
 }
 
 /// Everything the diagnosis found.

@@ -5,6 +5,7 @@
 
 use crate::error::InputError;
 use crate::io::read_columns;
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
 
 /// Rig samples.
@@ -77,8 +78,29 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             message: "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)".into(),
         });
     }
-    let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
     let camber = c.take_optional("camber");
+    // Angles in degrees are the commonest slip of a hand-made file: a slip
+    // angle past ±90° or a camber past ±45° is not a tyre test in radians.
+    let angles = [
+        ("alpha", lateral.as_ref().map(|l| &l.0), FRAC_PI_2),
+        ("camber", camber.as_ref(), FRAC_PI_4),
+    ];
+    for (name, values, limit) in angles {
+        let Some(values) = values else { continue };
+        if let Some(i) = values.iter().position(|v| v.abs() > limit) {
+            return Err(c.error_at(
+                path,
+                i,
+                name,
+                format!(
+                    "column `{name}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?",
+                    values[i],
+                    limit.to_degrees()
+                ),
+            ));
+        }
+    }
+    let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
     Ok(RigData {
         camber_measured: camber.is_some(),
         camber: camber.unwrap_or_else(|| vec![0.0; n]),

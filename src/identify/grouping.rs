@@ -349,6 +349,10 @@ pub struct Grouped {
     pub report: GroupingReport,
 }
 
+/// A camber request that selects a file without a camber column (whose
+/// samples are at 0), rad.
+const NO_CAMBER_COLUMN_TOLERANCE: f64 = 1e-6;
+
 /// Groups the samples of `d` (from `path`, for errors) into conditions and
 /// thins each along `axis`. Selecting a pressure or camber that the file
 /// lacks, or that no level lies near, is an error.
@@ -395,10 +399,14 @@ pub fn group(
     };
     let want_c = match g.camber {
         None => None,
-        Some(_) if !d.camber_measured => {
-            return Err(refuse(
-                "a camber was requested but the file has no `camber` column".into(),
-            ))
+        // Without the column every sample is at camber 0 (FORMATS.md): a
+        // request for 0 selects them all, any other camber is not there.
+        Some(c) if !d.camber_measured && c.abs() <= NO_CAMBER_COLUMN_TOLERANCE => None,
+        Some(c) if !d.camber_measured => {
+            return Err(refuse(format!(
+                "camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0)",
+                c.to_degrees()
+            )))
         }
         Some(c) => Some(select(&cambers, c)?),
     };
@@ -621,5 +629,29 @@ mod tests {
         d2.pressure = Some(vec![97_000.0; 10]);
         let e = group(Path::new("rig.csv"), &d2, &g, SlipAxis::Angle).unwrap_err();
         assert!(e.to_string().contains("97.0 kPa"), "{e}");
+    }
+
+    #[test]
+    fn a_file_without_camber_is_at_camber_zero() {
+        let d = rig(vec![3000.0; 10], vec![0.0; 10]);
+        let zero = Grouping {
+            camber: Some(0.0),
+            ..Grouping::default()
+        };
+        let all = group(
+            Path::new("rig.csv"),
+            &d,
+            &Grouping::default(),
+            SlipAxis::Angle,
+        )
+        .unwrap();
+        let at_zero = group(Path::new("rig.csv"), &d, &zero, SlipAxis::Angle).unwrap();
+        assert_eq!(at_zero.report, all.report);
+        let two = Grouping {
+            camber: Some(0.035),
+            ..Grouping::default()
+        };
+        let e = group(Path::new("rig.csv"), &d, &two, SlipAxis::Angle).unwrap_err();
+        assert!(e.to_string().contains("no `camber` column"), "{e}");
     }
 }

@@ -330,7 +330,12 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
             .filter(|g| g.kind == GlitchKind::TimeGap)
             .map(|g| format!("{:.3}–{:.3} s", g.t, g.t + g.value))
             .collect();
-        if !gaps.is_empty() || cleaning.pieces.len() - kept != 1 {
+        if cleaning.pieces.len() == kept {
+            notes.push(format!(
+                "{name}: nothing left to replay (every sample below min_speed = {} m/s, or in pieces too short)",
+                clean.min_speed
+            ));
+        } else if !gaps.is_empty() || cleaning.pieces.len() - kept != 1 {
             notes.push(format!(
                 "{name}: {}split into {} pieces replayed separately",
                 if gaps.is_empty() {

@@ -151,6 +151,36 @@ impl GlitchKind {
     }
 }
 
+impl Treatment {
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Treatment::Repaired => "repaired",
+            Treatment::Masked => "masked",
+            Treatment::Split => "split",
+        }
+    }
+}
+
+impl SlowKind {
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            SlowKind::Standstill => "standstill",
+            SlowKind::Crawl => "crawl",
+        }
+    }
+}
+
+/// A value for the terminal: six significant digits, no float noise.
+fn short(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let scale = 10f64.powi(5 - v.abs().log10().floor() as i32);
+    format!("{}", (v * scale).round() / scale)
+}
+
 /// What was done about a glitch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -288,7 +318,7 @@ impl CleaningReport {
     pub fn summary(&self, first: usize) -> Vec<String> {
         let c = &self.counts;
         let mut out = vec![format!(
-            "{} samples read, {} replayed; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces too short dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
+            "{} samples read, {} kept; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces too short dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
             self.samples_read,
             self.samples_kept,
             self.samples_slow,
@@ -306,14 +336,14 @@ impl CleaningReport {
         )];
         for g in self.glitches.iter().take(first) {
             out.push(format!(
-                "{} at {:.3} s in {}: {} {} ({} sample(s), {:?})",
+                "{} at {:.3} s in {}: {} {} ({} sample(s), {})",
                 g.kind.name(),
                 g.t,
                 g.run,
                 g.channel.name(),
-                g.value,
+                short(g.value),
                 g.samples,
-                g.treatment
+                g.treatment.name()
             ));
         }
         if self.glitches.len() > first {
@@ -324,8 +354,13 @@ impl CleaningReport {
         }
         for s in self.slow.iter().take(first) {
             out.push(format!(
-                "{:?} {:.2}–{:.2} s in {} ({} samples, up to {:.2} m/s) excluded",
-                s.kind, s.t_start, s.t_end, s.run, s.samples, s.max_speed
+                "{} {:.2}–{:.2} s in {} ({} samples, up to {:.2} m/s) excluded",
+                s.kind.name(),
+                s.t_start,
+                s.t_end,
+                s.run,
+                s.samples,
+                s.max_speed
             ));
         }
         if self.slow.len() > first {

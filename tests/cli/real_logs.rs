@@ -198,7 +198,7 @@ fn a_140_s_standstill_is_excluded_and_the_pieces_either_side_replayed() {
         stdout.contains("(1 standstill and 0 crawl spans)"),
         "{stdout}"
     );
-    assert!(stdout.contains("Standstill 11.52–152.48 s"), "{stdout}");
+    assert!(stdout.contains("standstill 11.52–152.48 s"), "{stdout}");
     // No glitch in noisy but sound data.
     assert!(
         c["glitches"].as_array().unwrap().is_empty(),
@@ -263,7 +263,7 @@ fn a_crawl_at_2_m_s_is_left_out_of_metrics_and_replay() {
     let (m_moving, _) = metrics(&dir.path().join("moving.csv"), &[]);
     assert_eq!(m_crawl, m_moving);
     assert!(err.contains("(0 standstill and 1 crawl spans)"), "{err}");
-    assert!(err.contains("Crawl 0.00–20.66 s"), "{err}");
+    assert!(err.contains("crawl 0.00–20.66 s"), "{err}");
     // The crawl kept (min speed 1 m/s): a different answer.
     let (m_all, err) = metrics(&dir.path().join("crawl.csv"), &["--min-speed", "1"]);
     assert_ne!(m_all, m_moving);
@@ -298,7 +298,7 @@ fn a_crawl_at_2_m_s_is_left_out_of_metrics_and_replay() {
     };
     let (t0, stdout) = replay("");
     assert!((t0 - rows[from].t).abs() < 1e-9, "{t0}");
-    assert!(stdout.contains("Crawl 0.00–20.66 s"), "{stdout}");
+    assert!(stdout.contains("crawl 0.00–20.66 s"), "{stdout}");
     let (t0, _) = replay("min_speed = 1.0\n");
     assert_eq!(t0, 0.0);
 }

@@ -449,7 +449,20 @@ fn median(v: &mut [f64]) -> f64 {
 /// Robust statistics of a channel: the detection threshold T.
 struct Scale {
     threshold: f64,
+    /// How far from 0 the neighbours of a zero read must be: in a channel
+    /// whose values do not repeat (no quantum, noise on every sample) an
+    /// exact 0 between samples of one sign is itself improbable, so
+    /// `ZERO_MADS`·σ_d suffices; a quantised channel, where 0 is one of its
+    /// levels, keeps the spike threshold.
+    zero_threshold: f64,
 }
+
+/// Robust spreads of the sample-to-sample differences beyond which the
+/// neighbours of an exact 0 in an unquantised channel make it a zero read.
+const ZERO_MADS: f64 = 4.0;
+/// Share of exactly repeated successive samples above which a channel is
+/// quantised.
+const QUANTISED_SHARE: f64 = 0.01;
 
 fn scale(x: &[f64]) -> Scale {
     let mut d: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
@@ -460,8 +473,17 @@ fn scale(x: &[f64]) -> Scale {
     s.sort_by(f64::total_cmp);
     let q = |p: f64| s[((s.len() - 1) as f64 * p).round() as usize];
     let range = q(0.99) - q(0.01);
+    let threshold = (SPIKE_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12);
+    // Repeats other than the zeros themselves.
+    let repeats = x.windows(2).filter(|w| w[0] == w[1] && w[0] != 0.0).count();
+    let quantised = repeats as f64 > QUANTISED_SHARE * d.len().max(1) as f64;
     Scale {
-        threshold: (SPIKE_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12),
+        threshold,
+        zero_threshold: if quantised {
+            threshold
+        } else {
+            (ZERO_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12)
+        },
     }
 }
 
@@ -482,7 +504,6 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
     }
     let sc = scale(x);
     let tt = sc.threshold;
-    let far = |v: f64| v.abs() > tt;
     let mut flagged = vec![false; n];
     let mut out = Vec::new();
     // Zero reads.
@@ -509,7 +530,7 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
             if count == 0 {
                 sign = x[k].signum();
             }
-            all_far &= far(x[k]) && x[k].signum() == sign;
+            all_far &= x[k].abs() > sc.zero_threshold && x[k].signum() == sign;
             count += 1;
         }
         let accepted = count >= 2 && (i > 0 || j + 1 < n) && (j < n || i >= 2) && all_far;
@@ -1150,6 +1171,49 @@ mod tests {
             );
         }
         assert_eq!(rep.glitches.len(), injected.len(), "{:?}", rep.glitches);
+    }
+
+    #[test]
+    fn a_zero_read_of_a_sweep_is_found_below_the_spike_threshold() {
+        // A frequency sweep's yaw rate moves a lot between samples, so the
+        // spike threshold (10 robust spreads of the differences) exceeds
+        // many of its values; an exact 0 amid unquantised samples of one
+        // sign is still a zero read.
+        use crate::diagnose::synth::{generate, Noise, SynthSpec};
+        let s = generate(&SynthSpec {
+            effects: Vec::new(),
+            seed: 3,
+            noise: Noise::default(),
+        });
+        let mut run = s
+            .runs
+            .iter()
+            .find(|r| r.path.to_string_lossy().contains("sweep"))
+            .expect("a sweep run")
+            .clone();
+        let sc = scale(&run.yaw_rate);
+        // A sample well away from 0 but inside the spike threshold, with
+        // neighbours of its sign.
+        let i = (2..run.t.len() - 2)
+            .find(|&i| {
+                let v = run.yaw_rate[i];
+                v.abs() > 0.5 * sc.threshold
+                    && v.abs() < sc.threshold
+                    && (i - 2..=i + 2).all(|k| {
+                        run.yaw_rate[k].signum() == v.signum()
+                            && run.yaw_rate[k].abs() > 0.5 * sc.threshold
+                    })
+            })
+            .expect("a sample inside the spike threshold");
+        run.yaw_rate[i] = 0.0;
+        let (_, rep) = clean_runs(vec![run.clone()], &CleanSettings::default());
+        assert!(
+            rep.glitches.iter().any(|g| g.kind == GlitchKind::ZeroRead
+                && g.channel == RunChannel::YawRate
+                && g.t == run.t[i]),
+            "{:?}",
+            rep.glitches
+        );
     }
 
     #[test]

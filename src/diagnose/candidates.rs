@@ -69,13 +69,13 @@ pub(super) static ROLL_DYNAMICS: [Parameter; 2] = [
         name: "frequency",
         unit: "Hz",
         off: f64::NAN,
-        bounds: (0.3, 5.0),
+        bounds: (0.5, 4.0),
     },
     Parameter {
         name: "damping",
         unit: "-",
         off: f64::NAN,
-        bounds: (0.1, 2.0),
+        bounds: (0.2, 1.5),
     },
 ];
 

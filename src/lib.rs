@@ -43,6 +43,7 @@ pub mod error;
 pub mod identify;
 pub mod io;
 pub mod manoeuvre;
+pub mod measured;
 pub mod metrics;
 pub mod optim;
 pub mod report;

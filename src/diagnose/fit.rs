@@ -14,7 +14,7 @@
 //! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
 
 use super::model::{Augmented, Drive, Observed};
-use crate::io::MeasuredRun;
+use crate::measured::MeasuredRun;
 use crate::optim::bounded::{inward_jacobian, BoundedLm};
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;

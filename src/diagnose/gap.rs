@@ -303,7 +303,7 @@ pub fn channel_gap(
 
 /// The lateral acceleration that defines a run's regimes: measured, or u·r
 /// when the run has no accelerometer.
-pub fn regime_acceleration(run: &crate::io::MeasuredRun) -> Vec<f64> {
+pub fn regime_acceleration(run: &crate::measured::MeasuredRun) -> Vec<f64> {
     match &run.ay {
         Some(ay) => ay.clone(),
         None => run
@@ -317,7 +317,7 @@ pub fn regime_acceleration(run: &crate::io::MeasuredRun) -> Vec<f64> {
 
 /// The samples of a run that are scored: all but the masked ones (logger
 /// glitches in a response channel).
-pub fn scored_samples(run: &crate::io::MeasuredRun) -> Vec<usize> {
+pub fn scored_samples(run: &crate::measured::MeasuredRun) -> Vec<usize> {
     let mut keep = vec![true; run.t.len()];
     for &i in &run.masked {
         keep[i] = false;
@@ -327,7 +327,10 @@ pub fn scored_samples(run: &crate::io::MeasuredRun) -> Vec<usize> {
 
 /// The gap of every measured channel of a replayed run, on its unmasked
 /// samples.
-pub fn run_gap(run: &crate::io::MeasuredRun, sim: &crate::sim::TimeHistory) -> Vec<ChannelGap> {
+pub fn run_gap(
+    run: &crate::measured::MeasuredRun,
+    sim: &crate::sim::TimeHistory,
+) -> Vec<ChannelGap> {
     let idx = scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
     let t = pick(&run.t);

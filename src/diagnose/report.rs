@@ -185,7 +185,7 @@ pub struct Diagnosis {
     pub notes: Vec<String>,
     /// Glitches, standstills and crawling found in the runs and what was
     /// excluded, repaired or masked.
-    pub cleaning: crate::io::clean::CleaningReport,
+    pub cleaning: crate::measured::clean::CleaningReport,
     /// The base model.
     pub base: BaseReport,
     /// Where the gap lies.

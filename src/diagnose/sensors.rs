@@ -12,7 +12,7 @@
 //!
 //! Units: SI, rad.
 
-use crate::io::MeasuredRun;
+use crate::measured::MeasuredRun;
 use crate::sim::TimeHistory;
 use crate::vehicle::G;
 use serde::{Deserialize, Serialize};

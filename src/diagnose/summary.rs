@@ -8,8 +8,8 @@ use super::fit::{Channel, Prepared};
 use super::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use super::model::{Augmented, Observed};
 use super::report::{RunGap, Shrinkage};
-use crate::io::MeasuredRun;
 use crate::manoeuvre::interpolate;
+use crate::measured::MeasuredRun;
 
 /// The base model's gap on one run, at the run's own samples (the base
 /// model has no sensor effects: its history is what the sensors read).

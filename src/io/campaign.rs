@@ -30,16 +30,11 @@ use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{InputError, ParamError};
+pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::Tyre;
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
-
-/// Shortest run a diagnosis accepts, s: a step response needs its
-/// pre-input window, rise and settling.
-pub const MIN_RUN_SECONDS: f64 = 2.0;
-/// Fewest samples a run must have.
-pub const MIN_RUN_SAMPLES: usize = 20;
 
 /// The `[tyres]` table.
 #[derive(Debug, Clone, Default, Deserialize)]

@@ -5,7 +5,6 @@
 //! the key or column, the value and why it is wrong. Inputs are only read.
 
 pub mod campaign;
-pub mod clean;
 mod columns;
 mod run;
 pub mod scenario;
@@ -14,7 +13,8 @@ pub mod sweep;
 pub mod tir;
 mod toml_file;
 
+pub use crate::measured::{clean, MeasuredRun};
 pub use columns::{read_columns, Columns};
-pub use run::{read_run, MeasuredRun};
+pub use run::read_run;
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub use toml_file::{load_toml, param_error, TomlSource};

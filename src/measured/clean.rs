@@ -38,10 +38,16 @@
 //! Everything found, excluded or dropped is in the [`CleaningReport`].
 //! Units: SI, rad, times in s.
 
-use super::campaign::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use super::MeasuredRun;
 use serde::Serialize;
 use std::path::PathBuf;
+
+/// Shortest run a diagnosis accepts, s: a step response needs its
+/// pre-input window, rise and settling.
+pub const MIN_RUN_SECONDS: f64 = 2.0;
+
+/// Fewest samples a run must have.
+pub const MIN_RUN_SAMPLES: usize = 20;
 
 /// Default lowest speed of a replayed sample, m/s.
 pub const DEFAULT_MIN_SPEED: f64 = 5.0;

@@ -127,9 +127,7 @@ fn history_figure(
 pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     let sc = load_scenario(path)?;
     let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
-    let sim = sc
-        .integrator
-        .simulate(&sc.model, &sc.manoeuvre, sc.initial);
+    let sim = sc.integrator.simulate(&sc.model, &sc.manoeuvre, sc.initial);
     let h = &sim.history;
     let files = [
         out_dir.join("history.csv"),

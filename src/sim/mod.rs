@@ -427,9 +427,10 @@ impl Integrator {
         settings: &MetricSettings,
     ) -> Result<StepMetrics, MetricsError> {
         match (&sim.dense, settings.filter_hz) {
-            (Some(sol), None) => {
-                step_metrics_continuous(&mut DenseRecord::new(model, manoeuvre, self, sol), settings)
-            }
+            (Some(sol), None) => step_metrics_continuous(
+                &mut DenseRecord::new(model, manoeuvre, self, sol),
+                settings,
+            ),
             _ => {
                 let h = &sim.history;
                 step_metrics(&h.t, &h.steer, &h.yaw_rate, &h.ay, Some(&h.beta), settings)

@@ -102,6 +102,10 @@ pub struct Reduced<'a> {
     /// evaluations of the rear axle instead of five or six). The answer is
     /// the unique root to the same tolerance wherever it starts.
     last: Cell<Option<(f64, f64)>>,
+    /// The rear slip angles and yaw rates of the last two solves: the next
+    /// solve starts from their linear extrapolation (second-order accurate
+    /// along the evenly spaced scan).
+    history: Cell<[(f64, f64); 2]>,
 }
 
 /// What the reduced problem gives at one rear slip angle.
@@ -123,6 +127,7 @@ impl<'a> Reduced<'a> {
             c,
             u: c.speed.max(MIN_SPEED),
             last: Cell::new(None),
+            history: Cell::new([(f64::NAN, f64::NAN); 2]),
         }
     }
 
@@ -164,11 +169,23 @@ impl<'a> Reduced<'a> {
         // cannot exceed the whole vehicle weight times the peak friction)
         // takes over if the secant does not converge.
         let (mut x0, slope) = match self.last.get() {
-            Some(last) => last,
+            Some((r_last, slope)) => {
+                let [(a1, r1), (a0, r0)] = self.history.get();
+                // Extrapolate only from close neighbours (the scan's order),
+                // never far out.
+                let near = (ar - a1).abs() <= 2.0 * (a1 - a0).abs() && a1 != a0;
+                let pred = r1 + (r1 - r0) / (a1 - a0) * (ar - a1);
+                (if near && pred.is_finite() { pred } else { r_last }, slope)
+            }
             None => ((self.axle(false, ar, gb) - bank) / k, k),
+        };
+        let remember = |r: f64| {
+            let [h1, _] = self.history.get();
+            self.history.set([(ar, r), h1]);
         };
         let mut g0 = g(x0);
         if g0 == 0.0 || converged(x0, g0) {
+            remember(x0);
             return x0;
         }
         let mut x1 = x0 - g0 / slope;
@@ -179,6 +196,7 @@ impl<'a> Reduced<'a> {
                 if s.is_finite() && s > 0.0 {
                     self.last.set(Some((x1, s)));
                 }
+                remember(x1);
                 return x1;
             }
             if !s.is_finite() || s <= 0.0 {
@@ -404,7 +422,7 @@ pub fn solve_with_continua(
             let x0 = [p.beta, p.yaw_rate];
             // Keep the polish only if it stayed at this root (near a fold,
             // Newton could jump to the partner root).
-            let x = super::polish(model, c, x0)
+            let x = super::polish_fast(model, c, x0)
                 .filter(|x| super::distance(*x, x0, [1.0, 1.0]) < 1e-6)
                 .unwrap_or(x0);
             describe(model, c, x)

@@ -213,26 +213,21 @@ pub fn search(
     let scale = bx.scale();
     // Residual scaled so that both components are rates of order one over
     // the box: β̇ relative to β_max, ṙ relative to r_max per second.
-    // The residual with the loads at the equilibrium's ay = u·r: the same
-    // roots as the model's, one tyre-set evaluation per point instead of a
-    // load-transfer solve (the swarm only ranks points; every candidate is
-    // polished on the model itself).
-    let f_eq = |x: [f64; 2]| residual_at_equilibrium_loads(model, c, x);
+    // The residual with the loads at the equilibrium's ay = u·r and its
+    // Jacobian (closed form for PAC89): the same roots as the model's, one
+    // tyre-set evaluation per point instead of a load-transfer solve and two
+    // differenced neighbours (the swarm only ranks points; every candidate
+    // is polished on the model itself).
+    let inputs = c.inputs();
     let fitness = |x: &[f64]| {
-        let x = [x[0], x[1]];
-        let f = f_eq(x);
+        let state = crate::vehicle::State {
+            beta: x[0],
+            yaw_rate: x[1],
+        };
+        let (f, j) = model.equilibrium_residual(&state, &inputs);
         match settings.fitness {
             Fitness::Residual => (f[0] / scale[0]).powi(2) + (f[1] / scale[1]).powi(2),
             Fitness::NewtonStep => {
-                let mut j = [[0.0; 2]; 2];
-                for k in 0..2 {
-                    let h = 1e-6 * scale[k];
-                    let mut xp = x;
-                    xp[k] += h;
-                    let fp = f_eq(xp);
-                    j[0][k] = (fp[0] - f[0]) / h;
-                    j[1][k] = (fp[1] - f[1]) / h;
-                }
                 let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
                 let dx = [
                     (j[1][1] * f[0] - j[0][1] * f[1]) / det,

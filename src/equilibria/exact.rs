@@ -175,7 +175,14 @@ impl<'a> Reduced<'a> {
                 // never far out.
                 let near = (ar - a1).abs() <= 2.0 * (a1 - a0).abs() && a1 != a0;
                 let pred = r1 + (r1 - r0) / (a1 - a0) * (ar - a1);
-                (if near && pred.is_finite() { pred } else { r_last }, slope)
+                (
+                    if near && pred.is_finite() {
+                        pred
+                    } else {
+                        r_last
+                    },
+                    slope,
+                )
             }
             None => ((self.axle(false, ar, gb) - bank) / k, k),
         };

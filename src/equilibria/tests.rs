@@ -315,7 +315,13 @@ fn equilibrium_residual_jacobian_matches_differences_of_the_residual() {
                 friction: 0.8,
                 speed: 20.0,
             };
-            for (b, r) in [(0.0, 0.0), (0.05, 0.3), (-0.2, 0.9), (0.3, -0.4), (0.02, 0.05)] {
+            for (b, r) in [
+                (0.0, 0.0),
+                (0.05, 0.3),
+                (-0.2, 0.9),
+                (0.3, -0.4),
+                (0.02, 0.05),
+            ] {
                 let x = [b, r];
                 let (f, j) = m.equilibrium_residual(
                     &State {

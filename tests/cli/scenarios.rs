@@ -55,14 +55,15 @@ fn every_bundled_scenario_runs_and_writes_its_outputs() {
 
 #[test]
 fn metrics_of_a_written_history_match_the_simulation() {
+    // Under RK4 the rows are the simulation's record: the same numbers.
     let out = tempfile::tempdir().unwrap();
-    let o = run(&[
-        "simulate",
-        "scenarios/seed004_step.toml",
-        "--out",
-        out.path().to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let sc = scenario_with(
+        "seed004_step.toml",
+        out.path(),
+        "rk4.toml",
+        "method = \"rk4\"",
+    );
+    simulate_to(&sc, out.path());
     let history = out.path().join("history.csv");
     let metrics = |extra: &[&str]| -> serde_json::Value {
         let mut args = vec!["metrics", history.to_str().unwrap(), "--json"];
@@ -80,6 +81,27 @@ fn metrics_of_a_written_history_match_the_simulation() {
             (x - y).abs() <= 1e-9 * y.abs().max(1.0),
             "{key}: {x} vs {y}"
         );
+    }
+    // Under Dormand–Prince (the default) the metrics come from the dense
+    // output; the 1 ms rows give them to the rows' accuracy: crossings
+    // interpolated linearly, the peak on a row.
+    let dense = out.path().join("dense");
+    simulate_to(&root().join("scenarios/seed004_step.toml"), &dense);
+    let d: serde_json::Value = read_json(&dense.join("metrics.json"));
+    let mut args = vec!["metrics", "--json", "--filter-hz", "0"];
+    let h = dense.join("history.csv");
+    args.insert(1, h.to_str().unwrap());
+    let o = run(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for (key, tol) in [
+        ("yaw_rate_response_time", 1e-5),
+        ("yaw_rate_peak_time", 5e-4),
+        ("yaw_rate_overshoot", 1e-3),
+        ("er", 1e-5),
+    ] {
+        let (x, y) = (rows[key].as_f64().unwrap(), d[key].as_f64().unwrap());
+        assert!((x - y).abs() <= tol, "{key}: rows {x} vs dense {y}");
     }
     // The default 10 Hz low-pass for measured runs barely moves them.
     let a = metrics(&[]);

@@ -174,12 +174,22 @@ pub fn polish(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64;
 }
 
 /// Newton polish as [`polish`], iterated first on
-/// [`residual_at_equilibrium_loads`] (the same roots at a fraction of the
-/// cost) and then confirmed on the model, which at a root of the former
+/// [`residual_at_equilibrium_loads`] with its closed-form Jacobian
+/// ([`VehicleModel::equilibrium_residual`]: the same roots at a fraction of
+/// the cost) and then confirmed on the model, which at a root of the former
 /// usually takes one evaluation. `None` when either does not converge.
 pub fn polish_fast(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64; 2]> {
-    let f = |x: [f64; 2]| residual_at_equilibrium_loads(model, c, x);
-    crate::vehicle::steady::newton2(f, x0, [0.01, 0.01], 1e-13, 40)
+    let inputs = c.inputs();
+    let f = |x: [f64; 2]| {
+        model.equilibrium_residual(
+            &State {
+                beta: x[0],
+                yaw_rate: x[1],
+            },
+            &inputs,
+        )
+    };
+    crate::vehicle::steady::newton2_analytic(f, x0, 1e-13, 40)
         .and_then(|(x, _)| polish(model, c, x))
 }
 

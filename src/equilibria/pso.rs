@@ -270,7 +270,12 @@ pub fn search(
         let deflated = |x: &[f64]| {
             let m: f64 = known
                 .iter()
-                .map(|k| 1.0 + rho2 / distance([x[0], x[1]], *k, scale).powi(2).max(1e-300))
+                .map(|k| {
+                    // The squared scaled distance, without hypot's square root.
+                    let d2 =
+                        ((x[0] - k[0]) / scale[0]).powi(2) + ((x[1] - k[1]) / scale[1]).powi(2);
+                    1.0 + rho2 / d2.max(1e-300)
+                })
                 .product();
             fitness(x) * m
         };

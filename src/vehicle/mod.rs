@@ -472,16 +472,29 @@ impl VehicleModel {
 
     /// Lateral force of a wheel and its partials in slip angle and load:
     /// closed form for PAC89, forward differences otherwise.
-    fn wheel_force_partials(tyre: &Tyre, alpha: f64, fz: f64, inp: &Inputs) -> (f64, f64, f64) {
+    /// The load partial only when `load_varies` (without load transfer it
+    /// multiplies zero).
+    fn wheel_force_partials(
+        tyre: &Tyre,
+        alpha: f64,
+        fz: f64,
+        inp: &Inputs,
+        load_varies: bool,
+    ) -> (f64, f64, f64) {
         if let Tyre::Pac89(p) = tyre {
             return p.lateral_force_partials(alpha, fz, inp.friction);
         }
         let f = Self::wheel_force(tyre, alpha, fz, inp);
         let (ha, hz) = (1e-7, 1e-6 * fz.abs().max(1.0));
+        let f_z = if load_varies {
+            (Self::wheel_force(tyre, alpha, fz + hz, inp) - f) / hz
+        } else {
+            0.0
+        };
         (
             f,
             (Self::wheel_force(tyre, alpha + ha, fz, inp) - f) / ha,
-            (Self::wheel_force(tyre, alpha, fz + hz, inp) - f) / hz,
+            f_z,
         )
     }
 
@@ -527,7 +540,8 @@ impl VehicleModel {
             let mut force = 0.0;
             let mut grad = [0.0; 2];
             for i in w {
-                let (f, f_a, f_z) = Self::wheel_force_partials(tyre, alpha, fz[i], inp);
+                let (f, f_a, f_z) =
+                    Self::wheel_force_partials(tyre, alpha, fz[i], inp, dfz_dr[i] != 0.0);
                 force += f;
                 grad[0] += f_a * d_alpha[0];
                 grad[1] += f_a * d_alpha[1] + f_z * dfz_dr[i];

@@ -140,8 +140,8 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     }
     let integration = match (sc.integrator.method, sim.stats()) {
         (Method::Dopri5(tol), Some(st)) => format!(
-            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected), rows every {} s",
-            tol.rtol, tol.atol, st.accepted, st.rejected, sc.integrator.step
+            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
+            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
         ),
         _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
     };

@@ -6,7 +6,7 @@ use handling::manoeuvre::Manoeuvre;
 use handling::metrics::{step_metrics, MetricSettings, StepMetrics};
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_columns, write_json};
-use handling::sim::TimeHistory;
+use handling::sim::{Method, TimeHistory};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -127,7 +127,8 @@ fn history_figure(
 pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     let sc = load_scenario(path)?;
     let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
-    let h = sc.integrator.run(&sc.model, &sc.manoeuvre, sc.initial);
+    let sim = sc.integrator.simulate(&sc.model, &sc.manoeuvre, sc.initial);
+    let h = &sim.history;
     let files = [
         out_dir.join("history.csv"),
         out_dir.join("metrics.json"),
@@ -137,11 +138,16 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     for f in &files {
         refuse_overwrite(f, &sc.inputs)?;
     }
+    let integration = match (sc.integrator.method, sim.stats()) {
+        (Method::Dopri5(tol), Some(st)) => format!(
+            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
+            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
+        ),
+        _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
+    };
     println!(
-        "{}: {} steps of {} s, tyres {} / {}, friction {}",
+        "{}: {integration}, tyres {} / {}, friction {}",
         sc.name,
-        h.len() - 1,
-        sc.integrator.step,
         sc.model.front.model_name(),
         sc.model.rear.model_name(),
         sc.integrator.friction
@@ -149,16 +155,12 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
     // Everything is computed before the first file is written, so a failure
     // leaves no outputs behind.
     let metrics = match sc.manoeuvre {
+        // From the dense output under Dormand–Prince (events located to
+        // the tolerance), from the rows under RK4.
         Manoeuvre::StepSteer(_) => Some(
-            step_metrics(
-                &h.t,
-                &h.steer,
-                &h.yaw_rate,
-                &h.ay,
-                Some(&h.beta),
-                &sc.metrics,
-            )
-            .context("step-steer metrics")?,
+            sc.integrator
+                .step_metrics(&sc.model, &sc.manoeuvre, &sim, &sc.metrics)
+                .context("step-steer metrics")?,
         ),
         _ => None,
     };
@@ -189,7 +191,7 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
         for line in sc.cleaning.iter().flat_map(|c| c.summary(5)) {
             println!("  cleaning: {line}");
         }
-        let gap = handling::diagnose::gap::run_gap(run, &h);
+        let gap = handling::diagnose::gap::run_gap(run, h);
         for g in &gap {
             println!("  {}: {}", g.channel, g.verdict);
         }
@@ -198,7 +200,7 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
             &serde_json::json!({ "run": run.path.display().to_string(), "channels": gap }),
         )?;
     }
-    history_figure(&sc.name, &h, sc.measured.as_ref()).save(&files[2])?;
+    history_figure(&sc.name, h, sc.measured.as_ref()).save(&files[2])?;
     println!("wrote {}", out_dir.display());
     Ok(())
 }

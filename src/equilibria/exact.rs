@@ -20,6 +20,7 @@
 use super::{describe, Condition, Equilibrium};
 use crate::tyre::{SlipState, TyreModel};
 use crate::vehicle::{Kinematics, VehicleModel, MIN_SPEED};
+use std::cell::Cell;
 
 /// Largest |αr| scanned, rad (85°).
 const ALPHA_MAX: f64 = 85.0 * std::f64::consts::PI / 180.0;
@@ -95,6 +96,16 @@ pub struct Reduced<'a> {
     model: &'a VehicleModel,
     c: Condition,
     u: f64,
+    /// The last rear-axle solve's yaw rate and the slope of its residual:
+    /// the scan and the root finders call [`Reduced::at`] at neighbouring
+    /// rear slip angles, so the next solve starts there (two or three
+    /// evaluations of the rear axle instead of five or six). The answer is
+    /// the unique root to the same tolerance wherever it starts.
+    last: Cell<Option<(f64, f64)>>,
+    /// The rear slip angles and yaw rates of the last two solves: the next
+    /// solve starts from their linear extrapolation (second-order accurate
+    /// along the evenly spaced scan).
+    history: Cell<[(f64, f64); 2]>,
 }
 
 /// What the reduced problem gives at one rear slip angle.
@@ -115,6 +126,8 @@ impl<'a> Reduced<'a> {
             model,
             c,
             u: c.speed.max(MIN_SPEED),
+            last: Cell::new(None),
+            history: Cell::new([(f64::NAN, f64::NAN); 2]),
         }
     }
 
@@ -144,32 +157,62 @@ impl<'a> Reduced<'a> {
         let k = v.mass * self.u * v.a / v.wheelbase();
         let gb = self.model.bank_acceleration();
         let bank = v.mass * v.a / v.wheelbase() * gb;
-        let r0 = (self.axle(false, ar, gb) - bank) / k;
         if !self.model.options.load_transfer {
-            return r0;
+            return (self.axle(false, ar, gb) - bank) / k;
         }
         let g = |r: f64| k * r + bank - self.axle(false, ar, self.u * r + gb);
-        // Secant from the no-transfer answer; g' ≈ k, so it converges in a
-        // few steps. Brent over a bracket that must contain the root (the
-        // axle force cannot exceed the whole vehicle weight times the peak
-        // friction) takes over if it does not.
-        let (mut x0, mut g0) = (r0, g(r0));
-        if g0 == 0.0 {
-            return r0;
+        let converged = |r: f64, gr: f64| gr.abs() <= 1e-13 * k * (1e-3 + r.abs());
+        // Secant from the last solve's answer and slope, or from the
+        // no-transfer answer with g' ≈ k; g is increasing (the axle force
+        // grows with load more slowly than m·u·a/l), so the root is unique.
+        // Brent over a bracket that must contain the root (the axle force
+        // cannot exceed the whole vehicle weight times the peak friction)
+        // takes over if the secant does not converge.
+        let (mut x0, slope) = match self.last.get() {
+            Some((r_last, slope)) => {
+                let [(a1, r1), (a0, r0)] = self.history.get();
+                // Extrapolate only from close neighbours (the scan's order),
+                // never far out.
+                let near = (ar - a1).abs() <= 2.0 * (a1 - a0).abs() && a1 != a0;
+                let pred = r1 + (r1 - r0) / (a1 - a0) * (ar - a1);
+                (
+                    if near && pred.is_finite() {
+                        pred
+                    } else {
+                        r_last
+                    },
+                    slope,
+                )
+            }
+            None => ((self.axle(false, ar, gb) - bank) / k, k),
+        };
+        let remember = |r: f64| {
+            let [h1, _] = self.history.get();
+            self.history.set([(ar, r), h1]);
+        };
+        let mut g0 = g(x0);
+        if g0 == 0.0 || converged(x0, g0) {
+            remember(x0);
+            return x0;
         }
-        let mut x1 = r0 - g0 / k;
+        let mut x1 = x0 - g0 / slope;
         for _ in 0..30 {
             let g1 = g(x1);
-            if g1.abs() <= 1e-13 * k * (1e-3 + x1.abs()) {
+            let s = (g1 - g0) / (x1 - x0);
+            if converged(x1, g1) {
+                if s.is_finite() && s > 0.0 {
+                    self.last.set(Some((x1, s)));
+                }
+                remember(x1);
                 return x1;
             }
-            let s = (g1 - g0) / (x1 - x0);
             if !s.is_finite() || s <= 0.0 {
                 break;
             }
             (x0, g0) = (x1, g1);
             x1 -= g1 / s;
         }
+        self.last.set(None);
         let fmax = 3.0 * self.c.friction.max(1.0) * v.mass * crate::vehicle::G;
         let bound = 2.0 * fmax / k;
         brent(g, -bound, bound, 1e-15 * bound)
@@ -386,7 +429,7 @@ pub fn solve_with_continua(
             let x0 = [p.beta, p.yaw_rate];
             // Keep the polish only if it stayed at this root (near a fold,
             // Newton could jump to the partner root).
-            let x = super::polish(model, c, x0)
+            let x = super::polish_fast(model, c, x0)
                 .filter(|x| super::distance(*x, x0, [1.0, 1.0]) < 1e-6)
                 .unwrap_or(x0);
             describe(model, c, x)

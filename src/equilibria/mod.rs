@@ -144,6 +144,26 @@ pub fn residual_seeded(
     [o.beta_rate, o.yaw_acceleration]
 }
 
+/// The right-hand side with the wheel loads taken at the lateral
+/// acceleration an equilibrium at `x` would have, ay = u·r (+ g·sin θ),
+/// instead of solving the load-transfer loop: one evaluation of the four
+/// tyres instead of several. Its roots are exactly the equilibria: at a
+/// root β̇ = 0 makes the tyres' Y/m equal u·r (+ g·sin θ), so the loads
+/// taken are the loop's solution and ṙ is the model's; and at an
+/// equilibrium the loop's solution is ay = u·r. Away from the roots it
+/// differs from [`residual`], which is why only the swarm's fitness uses
+/// it: polish, indices and the winding certificate use the model itself.
+pub fn residual_at_equilibrium_loads(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [f64; 2] {
+    let ay = c.speed.max(crate::vehicle::MIN_SPEED) * x[1] + model.bank_acceleration();
+    let mut seed = LoadTransferSeed {
+        ay: [ay; 3],
+        slope: 1.0,
+    };
+    // An infinite tolerance stops the loop after its first evaluation, at
+    // the seed's ay.
+    residual_seeded(model, c, x, f64::INFINITY, &mut seed)
+}
+
 /// Newton polish of a point toward an equilibrium; `None` when it does not
 /// converge to max(|β̇|, |ṙ|) ≤ 1e-12.
 pub fn polish(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64; 2]> {
@@ -151,6 +171,26 @@ pub fn polish(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64;
     let (x, _) = crate::vehicle::steady::newton2(f, x0, [0.01, 0.01], 1e-13, 40)?;
     let r = f(x);
     (r[0].abs().max(r[1].abs()) <= 1e-12 && x[0].abs() < std::f64::consts::FRAC_PI_2).then_some(x)
+}
+
+/// Newton polish as [`polish`], iterated first on
+/// [`residual_at_equilibrium_loads`] with its closed-form Jacobian
+/// ([`VehicleModel::equilibrium_residual`]: the same roots at a fraction of
+/// the cost) and then confirmed on the model, which at a root of the former
+/// usually takes one evaluation. `None` when either does not converge.
+pub fn polish_fast(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64; 2]> {
+    let inputs = c.inputs();
+    let f = |x: [f64; 2]| {
+        model.equilibrium_residual(
+            &State {
+                beta: x[0],
+                yaw_rate: x[1],
+            },
+            &inputs,
+        )
+    };
+    crate::vehicle::steady::newton2_analytic(f, x0, 1e-13, 40)
+        .and_then(|(x, _)| polish(model, c, x))
 }
 
 /// An equilibrium record at a point already known to be one.

@@ -20,10 +20,11 @@
 //! search stops after a round that finds nothing new.
 
 use super::{
-    describe, distance, polish, residual_seeded, residual_to, Condition, Equilibrium, SearchBox,
+    describe, distance, polish_fast, residual_at_equilibrium_loads, Condition, Equilibrium,
+    SearchBox,
 };
 use crate::optim::{Boundary, Pso, Topology};
-use crate::vehicle::{LoadTransferSeed, VehicleModel};
+use crate::vehicle::VehicleModel;
 use serde::{Deserialize, Serialize};
 
 /// PSO fitness.
@@ -96,12 +97,20 @@ pub struct SearchStats {
 /// independently of the exact solver (a missing saddle–node pair cancels and
 /// goes unseen; a single missing equilibrium does not). `None` when the field
 /// nearly vanishes on the boundary.
+///
+/// The field followed is [`residual_at_equilibrium_loads`] (loads at
+/// ay = u·r, no load-transfer solve): it has the model's roots, and at each
+/// its Jacobian's determinant is the model's times `1 − Y'(ay)/m` (the
+/// first rows differ by that factor, the second rows by a multiple of the
+/// first), positive wherever the load-transfer loop has its unique root
+/// (`vehicle`), so every index, and therefore the winding number, is the
+/// model's.
 pub fn winding_number(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Option<i32> {
     let (b, r) = (bx.beta_max, bx.yaw_rate_max);
     let corners = [[-b, -r], [b, -r], [b, r], [-b, r], [-b, -r]];
     let scale = bx.scale();
     let angle = |x: [f64; 2]| {
-        let f = residual_to(model, c, x, 1e-9);
+        let f = residual_at_equilibrium_loads(model, c, x);
         let (u, v) = (f[0] / scale[0], f[1] / scale[1]);
         (u.hypot(v) > 1e-9).then(|| v.atan2(u))
     };
@@ -204,31 +213,21 @@ pub fn search(
     let scale = bx.scale();
     // Residual scaled so that both components are rates of order one over
     // the box: β̇ relative to β_max, ṙ relative to r_max per second.
+    // The residual with the loads at the equilibrium's ay = u·r and its
+    // Jacobian (closed form for PAC89): the same roots as the model's, one
+    // tyre-set evaluation per point instead of a load-transfer solve and two
+    // differenced neighbours (the swarm only ranks points; every candidate
+    // is polished on the model itself).
+    let inputs = c.inputs();
     let fitness = |x: &[f64]| {
-        let x = [x[0], x[1]];
-        let mut solved = LoadTransferSeed {
-            ay: [c.speed * x[1] + model.bank_acceleration(); 3],
-            slope: 1.0,
+        let state = crate::vehicle::State {
+            beta: x[0],
+            yaw_rate: x[1],
         };
-        let f = residual_seeded(model, c, x, 1e-9, &mut solved);
+        let (f, j) = model.equilibrium_residual(&state, &inputs);
         match settings.fitness {
             Fitness::Residual => (f[0] / scale[0]).powi(2) + (f[1] / scale[1]).powi(2),
             Fitness::NewtonStep => {
-                let mut j = [[0.0; 2]; 2];
-                for k in 0..2 {
-                    let h = 1e-6 * scale[k];
-                    let mut xp = x;
-                    xp[k] += h;
-                    // The neighbour's load-transfer solve starts from the
-                    // base point's solution (a constant prediction).
-                    let mut seed = LoadTransferSeed {
-                        ay: [solved.ay[0]; 3],
-                        slope: solved.slope,
-                    };
-                    let fp = residual_seeded(model, c, xp, 1e-9, &mut seed);
-                    j[0][k] = (fp[0] - f[0]) / h;
-                    j[1][k] = (fp[1] - f[1]) / h;
-                }
                 let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
                 let dx = [
                     (j[1][1] * f[0] - j[0][1] * f[1]) / det,
@@ -261,6 +260,7 @@ pub fn search(
             -1
         }
     };
+    let mut indices: Vec<i32> = Vec::new();
     let rho2 = settings.deflation_radius.powi(2);
     for round in 0..settings.rounds {
         stats.rounds = round + 1;
@@ -270,7 +270,12 @@ pub fn search(
         let deflated = |x: &[f64]| {
             let m: f64 = known
                 .iter()
-                .map(|k| 1.0 + rho2 / distance([x[0], x[1]], *k, scale).powi(2).max(1e-300))
+                .map(|k| {
+                    // The squared scaled distance, without hypot's square root.
+                    let d2 =
+                        ((x[0] - k[0]) / scale[0]).powi(2) + ((x[1] - k[1]) / scale[1]).powi(2);
+                    1.0 + rho2 / d2.max(1e-300)
+                })
                 .product();
             fitness(x) * m
         };
@@ -313,7 +318,7 @@ pub fn search(
             }
             tried.push(x0);
             stats.evaluations += 20;
-            if let Some(x) = polish(model, c, x0) {
+            if let Some(x) = polish_fast(model, c, x0) {
                 if bx.contains(x) && !found.iter().any(|k| distance(*k, x, scale) < 1e-7) {
                     found.push(x);
                     new += 1;
@@ -327,7 +332,7 @@ pub fn search(
         while k < found.len() {
             for x0 in partner_probes(model, c, found[k], scale) {
                 stats.evaluations += 20;
-                if let Some(x) = polish(model, c, x0) {
+                if let Some(x) = polish_fast(model, c, x0) {
                     if bx.contains(x) && !found.iter().any(|q| distance(*q, x, scale) < 1e-7) {
                         found.push(x);
                         new += 1;
@@ -336,7 +341,9 @@ pub fn search(
             }
             k += 1;
         }
-        stats.index_sum = found.iter().map(index).sum();
+        // Each equilibrium's index once, when it is first found.
+        indices.extend(found[indices.len()..].iter().map(index));
+        stats.index_sum = indices.iter().sum();
         let certified = stats.winding.is_none_or(|w| w == stats.index_sum);
         if new == 0 && round + 1 >= settings.min_rounds && certified {
             break;

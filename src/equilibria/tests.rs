@@ -292,3 +292,76 @@ fn classic_brush_tyres_give_a_continuum_when_both_axles_slide() {
     m.rear = m.front.clone();
     assert!(exact::continua(&m, &c).is_empty());
 }
+
+#[test]
+fn equilibrium_residual_jacobian_matches_differences_of_the_residual() {
+    // PAC89 on four wheels with load transfer (closed-form tyre partials)
+    // and Gim without (differenced tyres), both kinematics, over the box.
+    use crate::tyre::{Gim, Pac89};
+    use crate::vehicle::{State, VehicleModel};
+    let pac = Tyre::Pac89(Pac89::adams_example());
+    let gim = Tyre::Gim(Gim::new(57_296.0, 0.18, 1.0));
+    let mut checked = 0;
+    for (tyre, load_transfer) in [(pac, true), (gim, false)] {
+        for kinematics in [Kinematics::Exact, Kinematics::SmallAngle] {
+            let mut m = VehicleModel::new(Vehicle::seed004_sedan(), tyre.clone(), tyre.clone());
+            m.options = ModelOptions {
+                kinematics,
+                load_transfer,
+                ..ModelOptions::default()
+            };
+            let c = Condition {
+                steer: 0.06,
+                friction: 0.8,
+                speed: 20.0,
+            };
+            for (b, r) in [
+                (0.0, 0.0),
+                (0.05, 0.3),
+                (-0.2, 0.9),
+                (0.3, -0.4),
+                (0.02, 0.05),
+            ] {
+                let x = [b, r];
+                let (f, j) = m.equilibrium_residual(
+                    &State {
+                        beta: b,
+                        yaw_rate: r,
+                    },
+                    &c.inputs(),
+                );
+                let f_ref = residual_at_equilibrium_loads(&m, &c, x);
+                for i in 0..2 {
+                    // The same function, summed in another order.
+                    assert!(
+                        (f[i] - f_ref[i]).abs() <= 1e-12 * (1.0 + f_ref[i].abs()),
+                        "{f:?} vs {f_ref:?}"
+                    );
+                }
+                for k in 0..2 {
+                    let h = 1e-6;
+                    let (mut xp, mut xm) = (x, x);
+                    xp[k] += h;
+                    xm[k] -= h;
+                    let (fp, fm) = (
+                        residual_at_equilibrium_loads(&m, &c, xp),
+                        residual_at_equilibrium_loads(&m, &c, xm),
+                    );
+                    for i in 0..2 {
+                        let fd = (fp[i] - fm[i]) / (2.0 * h);
+                        // Central differences are good to ~1e-8 relative
+                        // here; Gim's own forward differences to ~1e-5.
+                        let tol = if load_transfer { 1e-6 } else { 1e-4 };
+                        assert!(
+                            (j[i][k] - fd).abs() <= tol * (1.0 + fd.abs()),
+                            "{kinematics:?} x {x:?}: J[{i}][{k}] {} vs {fd}",
+                            j[i][k]
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 80);
+}

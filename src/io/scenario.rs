@@ -9,7 +9,7 @@ use super::{read_run, MeasuredRun};
 use crate::error::{InputError, ParamError};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
-use crate::sim::Integrator;
+use crate::sim::{Integrator, Method, MethodName, Tolerances};
 use crate::tyre::Tyre;
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -45,13 +45,27 @@ fn one() -> f64 {
     1.0
 }
 
-/// Integration settings.
+/// Integration settings (`[simulation]`, or `[integrator]`): the method,
+/// the interval of the recorded rows, and Dormand–Prince's tolerances.
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SimulationSettings {
-    /// RK4 step, s.
+    /// `dopri5` (default: error-controlled, events located on the dense
+    /// output) or `rk4` (fixed step).
+    #[serde(default)]
+    pub method: MethodName,
+    /// Interval of the recorded rows, s, and RK4's step.
     #[serde(default = "default_step")]
     pub step: f64,
+    /// Dormand–Prince relative tolerance (default [`Tolerances::default`]).
+    #[serde(default)]
+    pub rtol: Option<f64>,
+    /// Dormand–Prince absolute tolerance, rad and rad/s.
+    #[serde(default)]
+    pub atol: Option<f64>,
+    /// Dormand–Prince's largest step, s.
+    #[serde(default)]
+    pub max_step: Option<f64>,
 }
 
 fn default_step() -> f64 {
@@ -60,7 +74,74 @@ fn default_step() -> f64 {
 
 impl Default for SimulationSettings {
     fn default() -> Self {
-        Self { step: 1e-3 }
+        Self {
+            method: MethodName::default(),
+            step: default_step(),
+            rtol: None,
+            atol: None,
+            max_step: None,
+        }
+    }
+}
+
+impl SimulationSettings {
+    /// The validated method.
+    pub fn method(&self) -> Result<Method, ParamError> {
+        ParamError::in_range(
+            "step",
+            self.step,
+            0.0,
+            0.05,
+            "rows (and RK4 steps) more than 50 ms apart miss the yaw mode",
+        )?;
+        let d = Tolerances::default();
+        match self.method {
+            MethodName::Rk4 => {
+                for (key, v) in [
+                    ("rtol", self.rtol),
+                    ("atol", self.atol),
+                    ("max_step", self.max_step),
+                ] {
+                    if let Some(v) = v {
+                        return Err(ParamError::new(
+                            key,
+                            v,
+                            "tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`",
+                        ));
+                    }
+                }
+                Ok(Method::Rk4)
+            }
+            MethodName::Dopri5 => {
+                let tol = Tolerances {
+                    rtol: self.rtol.unwrap_or(d.rtol),
+                    atol: self.atol.unwrap_or(d.atol),
+                    max_step: self.max_step.unwrap_or(d.max_step),
+                };
+                ParamError::in_range(
+                    "rtol",
+                    tol.rtol,
+                    1e-14,
+                    1e-2,
+                    "a relative tolerance below 1e-14 is below rounding, above 1e-2 not a simulation",
+                )?;
+                ParamError::in_range(
+                    "atol",
+                    tol.atol,
+                    1e-16,
+                    1e-2,
+                    "the absolute tolerance (rad, rad/s) must lie in [1e-16, 1e-2]",
+                )?;
+                ParamError::in_range(
+                    "max_step",
+                    tol.max_step,
+                    1e-6,
+                    1.0,
+                    "the largest step must lie in [1e-6, 1] s",
+                )?;
+                Ok(Method::Dopri5(tol))
+            }
+        }
     }
 }
 
@@ -158,8 +239,8 @@ pub struct ScenarioFile {
     pub model: ModelOptions,
     /// The manoeuvre.
     pub manoeuvre: ManoeuvreSpec,
-    /// Integration.
-    #[serde(default)]
+    /// Integration (`[simulation]`; `[integrator]` is the same table).
+    #[serde(default, alias = "integrator")]
     pub simulation: SimulationSettings,
     /// Metric settings.
     #[serde(default)]
@@ -234,14 +315,10 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
         .map_err(|e| param_error(src, Some("model.effects"), e))?;
     ParamError::positive("friction", f.road.friction)
         .map_err(|e| param_error(src, Some("road"), e))?;
-    ParamError::in_range(
-        "step",
-        f.simulation.step,
-        0.0,
-        0.05,
-        "an RK4 step above 50 ms misses the yaw mode",
-    )
-    .map_err(|e| param_error(src, Some("simulation"), e))?;
+    let method = f
+        .simulation
+        .method()
+        .map_err(|e| param_error(src, Some("simulation"), e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let front_path = dir.join(&f.tyres.front);
     let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
@@ -253,7 +330,7 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
     let integrator = Integrator {
         step: f.simulation.step,
         friction: f.road.friction,
-        ..Integrator::default()
+        method,
     };
     let mut initial = State::default();
     let mut measured = None;

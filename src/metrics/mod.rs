@@ -32,11 +32,17 @@
 //! designed by the bilinear transform at the record's median sample
 //! interval. Simulated records are not filtered.
 //!
-//! Crossings are interpolated linearly between samples. Signs: any step
+//! Crossings are interpolated linearly between samples. A record that can be
+//! evaluated at any time (a simulation's dense output) is measured by
+//! [`continuous`] instead: integrals by quadrature, events as roots. Signs: any step
 //! direction; the normalisation makes left and right steps give equal metrics.
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
+
+pub mod continuous;
+
+pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
 
 /// Settings of the metric computation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -223,6 +223,55 @@ impl Pac89 {
     }
 }
 
+impl Pac89 {
+    /// Lateral force (N) and its partial derivatives with respect to the
+    /// slip angle (N/rad) and the load (N/N) at zero camber and slip ratio,
+    /// differentiated in closed form through every load-dependent
+    /// coefficient (D, B = BCD/(C·D), E, Sh, Sv) and the friction scaling;
+    /// `lateral_force` gives the same force. Equilibrium searches use the
+    /// partials for their Jacobians instead of differencing the tyres.
+    pub fn lateral_force_partials(&self, alpha: f64, fz: f64, mu: f64) -> (f64, f64, f64) {
+        if fz <= 0.0 || mu <= 0.0 {
+            return (0.0, 0.0, 0.0);
+        }
+        let a = &self.a;
+        let f = fz / 1000.0;
+        let curve = self.lateral_curve(f, 0.0);
+        let (c, e) = (curve.c, curve.e);
+        let (bk, dk) = (curve.b / mu, curve.d * mu);
+        let x = alpha.to_degrees() + curve.sh;
+        let bx = bk * x;
+        let at_bx = bx.atan();
+        let phi = bx - e * (bx - at_bx);
+        let theta = c * phi.atan();
+        let (sin, cos) = theta.sin_cos();
+        let fy = dk * sin + curve.sv * mu;
+        // dY/dφ, and φ's partials in x, B and E.
+        let dy_dphi = dk * cos * c / (1.0 + phi * phi);
+        let q = 1.0 / (1.0 + bx * bx);
+        let dphi_dx = bk * (1.0 - e) + e * bk * q;
+        let dphi_db = x * (1.0 - e) + e * x * q;
+        let dphi_de = -(bx - at_bx);
+        // Load derivatives of the coefficients, per kN.
+        let d = curve.d;
+        let dd = 2.0 * a[1] * f + a[2];
+        let z = f / a[4];
+        let dbcd = a[3] * 2.0 * (1.0 - z * z) / ((1.0 + z * z) * (1.0 + z * z)) / a[4];
+        let db = if (c * d).abs() < 1e-12 {
+            0.0
+        } else {
+            (dbcd / (c * d) - curve.b * dd / d) / mu
+        };
+        let dy_df =
+            dd * mu * sin + dy_dphi * (dphi_db * db + dphi_de * a[6] + dphi_dx * a[9]) + a[12] * mu;
+        (
+            fy,
+            dy_dphi * dphi_dx * 180.0 / std::f64::consts::PI,
+            dy_df / 1000.0,
+        )
+    }
+}
+
 impl TyreModel for Pac89 {
     fn forces(&self, s: &SlipState) -> TyreForces {
         if s.fz <= 0.0 {

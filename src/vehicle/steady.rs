@@ -87,6 +87,52 @@ pub fn newton2(
     (n <= tol).then_some((x, n))
 }
 
+/// Damped Newton iteration as [`newton2`] for a system that returns its
+/// Jacobian with its value (one evaluation per iteration instead of five).
+pub fn newton2_analytic(
+    f: impl Fn([f64; 2]) -> ([f64; 2], [[f64; 2]; 2]),
+    x0: [f64; 2],
+    tol: f64,
+    max_iter: usize,
+) -> Option<([f64; 2], f64)> {
+    let norm = |r: [f64; 2]| r[0].hypot(r[1]);
+    let mut x = x0;
+    let (mut r, mut jac) = f(x);
+    for _ in 0..max_iter {
+        let n = norm(r);
+        if !n.is_finite() {
+            return None;
+        }
+        if n <= tol {
+            return Some((x, n));
+        }
+        let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let dx = [
+            (jac[1][1] * r[0] - jac[0][1] * r[1]) / det,
+            (-jac[1][0] * r[0] + jac[0][0] * r[1]) / det,
+        ];
+        // The same backtracking as `newton2`.
+        let mut step = 1.0;
+        loop {
+            let xn = [x[0] - step * dx[0], x[1] - step * dx[1]];
+            let (rn, jn) = f(xn);
+            if norm(rn) < n {
+                (x, r, jac) = (xn, rn, jn);
+                break;
+            }
+            if step < 1e-3 {
+                return None;
+            }
+            step *= 0.5;
+        }
+    }
+    let n = norm(r);
+    (n <= tol).then_some((x, n))
+}
+
 impl VehicleModel {
     /// The steady state at `speed` with lateral acceleration `ay`: the steer
     /// angle that holds it and the sideslip. Fails beyond the friction limit.

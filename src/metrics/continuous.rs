@@ -1,0 +1,255 @@
+//! Step-steer metrics of a continuous record: the same GB/T 6323-2014 /
+//! ISO 7401:2011 definitions and Guo Konghui's total variances as
+//! [`super::step_metrics`], computed from signals that can be evaluated at any
+//! time (the dense output of an error-controlled integration) instead of from
+//! samples on a grid.
+//!
+//! - Window means and total variances are integrals, taken by 5-point
+//!   Gauss–Legendre quadrature on every interval between the record's knots
+//!   (integration step ends and input kinks, where the signals lose
+//!   smoothness), so their error is the record's own, not a grid's.
+//! - Events are roots, located to [`EVENT_TOLERANCE`] seconds by the
+//!   Illinois variant of regula falsi after a scan that samples at least at
+//!   every knot and every [`PROBE`] seconds: time zero (steer at 50 % of its
+//!   step), the 5 % steer onset of the variance window, the 90 % crossings of
+//!   yaw rate and lateral acceleration; the yaw-rate peak is the first zero
+//!   of the yaw acceleration (a local maximum of the normalised yaw rate)
+//!   after the normalised yaw rate first exceeds its threshold `1 +
+//!   max(2·s_ss, 1e-9)` (s_ss the spread of the steady window; a simulated
+//!   record has no noise), which is the first local maximum above it.
+//!
+//! Units: s, rad, rad/s, m/s² as in [`super::StepMetrics`].
+
+use super::{MetricSettings, MetricsError, StepMetrics, MIN_STEP};
+
+/// How finely events are located, s.
+pub const EVENT_TOLERANCE: f64 = 1e-12;
+/// Longest interval over which a crossing is looked for without sampling
+/// the signal in between, s: the step response's fastest features (the
+/// steer ramp, ≥ 0.05 s in practice, and the yaw mode, ~0.3 s period) are
+/// far longer, so no crossing and recrossing can hide inside one.
+pub const PROBE: f64 = 5e-3;
+
+/// The signals of a step-steer record at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Sample {
+    /// Front road-wheel steer, rad.
+    pub steer: f64,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+    /// Yaw acceleration, rad/s² (locates the yaw-rate peak).
+    pub yaw_acceleration: f64,
+    /// Lateral acceleration, m/s².
+    pub ay: f64,
+    /// Sideslip, rad.
+    pub beta: f64,
+}
+
+/// A record whose signals can be evaluated at any time of its span.
+pub trait ContinuousRecord {
+    /// First and last time, s.
+    fn span(&self) -> (f64, f64);
+    /// Sorted times within the span (ends included) between which every
+    /// signal is smooth.
+    fn knots(&self) -> &[f64];
+    /// The signals at `t`.
+    fn sample(&mut self, t: f64) -> Sample;
+}
+
+/// Gauss–Legendre nodes on [−1, 1] and weights, 5 points (exact for
+/// polynomials of degree 9).
+const GL_X: [f64; 5] = [
+    -0.906_179_845_938_664,
+    -0.538_469_310_105_683,
+    0.0,
+    0.538_469_310_105_683,
+    0.906_179_845_938_664,
+];
+const GL_W: [f64; 5] = [
+    0.236_926_885_056_189,
+    0.478_628_670_499_366,
+    0.568_888_888_888_889,
+    0.478_628_670_499_366,
+    0.236_926_885_056_189,
+];
+
+/// ∫ f over [a, b], f vector-valued, Gauss–Legendre on every knot interval.
+fn integrate<R: ContinuousRecord + ?Sized, const K: usize>(
+    rec: &mut R,
+    a: f64,
+    b: f64,
+    mut f: impl FnMut(f64, &Sample) -> [f64; K],
+) -> [f64; K] {
+    let mut sum = [0.0; K];
+    if b <= a {
+        return sum;
+    }
+    let start = rec.knots().partition_point(|k| *k <= a);
+    let mut lo = a;
+    let mut i = start;
+    loop {
+        let hi = rec.knots().get(i).copied().unwrap_or(b).min(b);
+        if hi > lo {
+            let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+            for (x, w) in GL_X.iter().zip(GL_W) {
+                let t = mid + half * x;
+                let s = rec.sample(t);
+                let v = f(t, &s);
+                for k in 0..K {
+                    sum[k] += w * half * v[k];
+                }
+            }
+        }
+        if hi >= b {
+            return sum;
+        }
+        lo = hi;
+        i += 1;
+    }
+}
+
+/// The first time in [after, end] at which `g ≥ 0`, located to
+/// [`EVENT_TOLERANCE`]; `after` itself when g ≥ 0 there.
+fn first_reach<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    after: f64,
+    mut g: impl FnMut(&Sample) -> f64,
+) -> Option<f64> {
+    let (_, end) = rec.span();
+    let mut ta = after;
+    let mut ga = g(&rec.sample(ta));
+    if ga >= 0.0 {
+        return Some(ta);
+    }
+    let mut i = rec.knots().partition_point(|k| *k <= after);
+    while ta < end {
+        let knot = rec.knots().get(i).copied().unwrap_or(end);
+        let tb = knot.min(ta + PROBE).min(end);
+        if tb >= knot {
+            i += 1;
+        }
+        let gb = g(&rec.sample(tb));
+        if gb >= 0.0 {
+            return Some(illinois(rec, &mut g, (ta, ga), (tb, gb)));
+        }
+        (ta, ga) = (tb, gb);
+    }
+    None
+}
+
+/// Root of g in [a, b] with g(a) < 0 ≤ g(b): the Illinois variant of regula
+/// falsi (superlinear, never leaves the bracket), stopped when the bracket is
+/// below [`EVENT_TOLERANCE`]; returns the first time at which g ≥ 0 within it.
+fn illinois<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    g: &mut impl FnMut(&Sample) -> f64,
+    (mut a, mut ga): (f64, f64),
+    (mut b, mut gb): (f64, f64),
+) -> f64 {
+    let mut side = 0;
+    for _ in 0..200 {
+        if b - a <= EVENT_TOLERANCE {
+            break;
+        }
+        let mut t = (a * gb - b * ga) / (gb - ga);
+        if !(t > a && t < b) {
+            t = 0.5 * (a + b);
+        }
+        let gt = g(&rec.sample(t));
+        if gt >= 0.0 {
+            (b, gb) = (t, gt);
+            if side == 1 {
+                ga *= 0.5;
+            }
+            side = 1;
+        } else {
+            (a, ga) = (t, gt);
+            if side == -1 {
+                gb *= 0.5;
+            }
+            side = -1;
+        }
+        if gt == 0.0 {
+            return t;
+        }
+    }
+    b
+}
+
+/// Step-steer metrics of a continuous record (unfiltered: a simulation).
+pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
+    rec: &mut R,
+    s: &MetricSettings,
+) -> Result<StepMetrics, MetricsError> {
+    let (t_first, t_last) = rec.span();
+    let span = t_last - t_first;
+    if span <= s.pre_window + s.steady_window {
+        return Err(MetricsError::TooShort(span));
+    }
+    let pre = (t_first, t_first + s.pre_window);
+    let steady = (t_last - s.steady_window, t_last);
+    let mean = |rec: &mut R, (a, b): (f64, f64)| {
+        integrate(rec, a, b, |_, x| [x.steer, x.yaw_rate, x.ay, x.beta]).map(|v| v / (b - a))
+    };
+    let [d0, r0, a0, b0] = mean(rec, pre);
+    let [ds, rs, as_, bs] = mean(rec, steady);
+    let (d_step, r_step, a_step) = (ds - d0, rs - r0, as_ - a0);
+    if d_step == 0.0 || !d_step.is_finite() || d_step.abs() < MIN_STEP {
+        return Err(MetricsError::NoStep(d_step));
+    }
+    for (step, name) in [(r_step, "yaw rate"), (a_step, "lateral acceleration")] {
+        if step == 0.0 || !step.is_finite() {
+            return Err(MetricsError::NoResponse(name));
+        }
+    }
+    // Spreads of the normalised responses in the steady window, about the
+    // mean (a second pass: E[x²] − m² would cancel to rounding).
+    let [vr, va] = integrate(rec, steady.0, steady.1, |_, x| {
+        [(x.yaw_rate - rs).powi(2), (x.ay - as_).powi(2)]
+    });
+    let r_spread = (vr / s.steady_window).sqrt() / r_step.abs();
+    let a_spread = (va / s.steady_window).sqrt() / a_step.abs();
+    let dn = |x: &Sample| (x.steer - d0) / d_step;
+    let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
+    let an = |x: &Sample| (x.ay - a0) / a_step;
+    let t0 = first_reach(rec, t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoStep(d_step))?;
+    let tr = first_reach(rec, t0, |x| rn(x) - 0.9).ok_or(MetricsError::NoCrossing("yaw rate"))?;
+    let ta = first_reach(rec, t0, |x| an(x) - 0.9)
+        .ok_or(MetricsError::NoCrossing("lateral acceleration"))?;
+    // The peak: the first local maximum of the normalised yaw rate above the
+    // threshold is the first zero of its derivative after it first exceeds
+    // the threshold; a maximum at the record's end is not one.
+    let level = 1.0 + (2.0 * r_spread).max(1e-9);
+    let peak = first_reach(rec, tr, |x| rn(x) - level).and_then(|above| {
+        let tp = first_reach(rec, above, |x| -x.yaw_acceleration / r_step)?;
+        (tp < t_last).then(|| (tp, rn(&rec.sample(tp))))
+    });
+    let peak_time = peak.map(|(tp, _)| tp - t0);
+    let beta_steady = bs - b0;
+    let tb = peak_time.map(|tp| tp * beta_steady.abs().to_degrees());
+    let onset = first_reach(rec, t_first, |x| dn(x) - 0.05).unwrap_or(t0);
+    let to = (onset + s.variance_window).min(t_last);
+    let [e_r, e_ay] = integrate(rec, onset, to, |_, x| {
+        let d = dn(x);
+        [(d - rn(x)).powi(2), (d - an(x)).powi(2)]
+    });
+    Ok(StepMetrics {
+        steer_step: d_step,
+        time_zero: t0,
+        yaw_rate_response_time: tr - t0,
+        yaw_rate_peak_time: peak_time,
+        yaw_rate_overshoot: peak.map_or(0.0, |(_, v)| (v - 1.0) * 100.0),
+        ay_response_time: ta - t0,
+        yaw_rate_gain: r_step / d_step,
+        yaw_rate_steady: r_step,
+        ay_steady: a_step,
+        beta_steady: Some(beta_steady),
+        tb,
+        yaw_rate_total_variance: e_r,
+        ay_total_variance: e_ay,
+        er: s.e1 * e_r + s.e2 * e_ay,
+        settled: r_spread < 0.02 && a_spread < 0.02,
+        yaw_rate_noise: 0.0,
+        filter_hz: None,
+    })
+}

@@ -3,7 +3,7 @@
 use anyhow::{Context, Result};
 use handling::io::{load_scenario, read_run};
 use handling::manoeuvre::Manoeuvre;
-use handling::metrics::{step_metrics, MetricSettings, StepMetrics};
+use handling::metrics::{MetricSettings, StepMetrics};
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_columns, write_json};
 use handling::sim::{Method, TimeHistory};
@@ -43,9 +43,15 @@ fn print_metrics(m: &StepMetrics) {
         "  yaw-rate overshoot       {:>10.2} %",
         m.yaw_rate_overshoot
     );
-    println!("  ay response time         {:>10.4} s", m.ay_response_time);
+    println!(
+        "  ay response time         {:>10} s",
+        opt(m.ay_response_time, 1.0)
+    );
     println!("  yaw-rate gain            {:>10.4} 1/s", m.yaw_rate_gain);
-    println!("  steady ay                {:>10.4} m/s²", m.ay_steady);
+    println!(
+        "  steady ay                {:>10} m/s²",
+        opt(m.ay_steady, 1.0)
+    );
     println!(
         "  steady sideslip          {:>10} deg",
         opt(m.beta_steady, 180.0 / std::f64::consts::PI)
@@ -55,8 +61,11 @@ fn print_metrics(m: &StepMetrics) {
         "  E_r (yaw rate)           {:>10.4} s",
         m.yaw_rate_total_variance
     );
-    println!("  E_ay                     {:>10.4} s", m.ay_total_variance);
-    println!("  Er                       {:>10.4} s", m.er);
+    println!(
+        "  E_ay                     {:>10} s",
+        opt(m.ay_total_variance, 1.0)
+    );
+    println!("  Er                       {:>10} s", opt(m.er, 1.0));
     if let Some(f) = m.filter_hz {
         println!(
             "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {:.2} % of the step",
@@ -207,39 +216,49 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
 
 /// `handling metrics`.
 pub fn metrics(path: &Path, json: bool, settings: MetricSettings, min_speed: f64) -> Result<()> {
-    let (run, cleaning) = handling::io::clean::clean_for_metrics(read_run(path)?, min_speed)?;
-    for line in cleaning.summary(5) {
+    let m =
+        handling::metrics::measured::measured_step_metrics(read_run(path)?, min_speed, &settings)?;
+    for line in m.cleaning.summary(usize::MAX) {
         eprintln!("cleaning: {line}");
     }
-    let ay = run.ay.as_ref().with_context(|| {
-        format!(
-            "{}: the run has no `ay` column; lateral-acceleration metrics need it",
-            path.display()
-        )
-    })?;
-    let m = step_metrics(
-        &run.t,
-        &run.steer,
-        &run.yaw_rate,
-        ay,
-        run.beta.as_deref(),
-        &settings,
-    )
-    .with_context(|| format!("{}: step-steer metrics", path.display()))?;
+    eprintln!(
+        "measured piece: {} ({:.2}–{:.2} s); steer 10–90 % rise {:.3} s",
+        m.piece, m.t_start, m.t_end, m.steer_rise_time
+    );
+    for w in &m.warnings {
+        eprintln!("warning: {w}");
+    }
     let name = path.display().to_string();
     if json {
         println!(
             "{}",
-            serde_json::to_string_pretty(&MetricsReport {
+            serde_json::to_string_pretty(&MeasuredMetricsReport {
                 scenario: &name,
                 units: UNITS,
-                metrics: &m,
-                lift_offs: &[],
+                metrics: &m.metrics,
+                piece: &m.piece,
+                steer_rise_time: m.steer_rise_time,
+                warnings: &m.warnings,
+                cleaning: &m.cleaning,
             })?
         );
     } else {
         println!("{name}");
-        print_metrics(&m);
+        print_metrics(&m.metrics);
     }
     Ok(())
+}
+
+/// `handling metrics --json`: the metrics, the piece measured and how the
+/// run was cleaned.
+#[derive(Serialize)]
+struct MeasuredMetricsReport<'a> {
+    scenario: &'a str,
+    units: &'static str,
+    #[serde(flatten)]
+    metrics: &'a StepMetrics,
+    piece: &'a str,
+    steer_rise_time: f64,
+    warnings: &'a [String],
+    cleaning: &'a handling::measured::clean::CleaningReport,
 }

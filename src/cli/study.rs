@@ -169,7 +169,7 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
         let (spread, validation) = (&rbf.spread, &rbf.validation);
         let er: Vec<f64> = pair_samples
             .iter()
-            .map(|s| s.metrics.map_or(f64::NAN, |m| m.er))
+            .map(|s| s.metrics.and_then(|m| m.er).unwrap_or(f64::NAN))
             .collect();
         let train: Vec<usize> = (0..pair_samples.len())
             .filter(|i| !validation.contains(i) && er[*i].is_finite())

@@ -256,6 +256,8 @@ pub struct Piece {
     pub t_end: f64,
     /// Samples.
     pub samples: usize,
+    /// Why a dropped piece was dropped (empty for a kept one).
+    pub reason: String,
 }
 
 /// Glitches per kind.
@@ -324,7 +326,7 @@ impl CleaningReport {
     pub fn summary(&self, first: usize) -> Vec<String> {
         let c = &self.counts;
         let mut out = vec![format!(
-            "{} samples read, {} kept; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces too short dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
+            "{} samples read, {} kept; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
             self.samples_read,
             self.samples_kept,
             self.samples_slow,
@@ -374,8 +376,8 @@ impl CleaningReport {
         }
         for p in self.dropped_pieces.iter().take(first) {
             out.push(format!(
-                "piece {} ({:.2}–{:.2} s, {} samples) too short: dropped",
-                p.name, p.t_start, p.t_end, p.samples
+                "piece {} ({:.2}–{:.2} s, {} samples) dropped: {}",
+                p.name, p.t_start, p.t_end, p.samples, p.reason
             ));
         }
         out
@@ -748,12 +750,13 @@ fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
     n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
 }
 
-fn piece_of(run: &MeasuredRun) -> Piece {
+fn piece_of(run: &MeasuredRun, reason: &str) -> Piece {
     Piece {
         name: run.path.display().to_string(),
         t_start: run.t[0],
         t_end: run.t[run.t.len() - 1],
         samples: run.t.len(),
+        reason: reason.into(),
     }
 }
 
@@ -812,11 +815,11 @@ pub fn clean_run(
         if long_enough(&piece, settings) {
             report.samples_kept += piece.t.len();
             report.samples_masked += piece.masked.len();
-            report.pieces.push(piece_of(&piece));
+            report.pieces.push(piece_of(&piece, ""));
             out.push(piece);
         } else {
             report.samples_in_dropped_pieces += piece.t.len();
-            report.dropped_pieces.push(piece_of(&piece));
+            report.dropped_pieces.push(piece_of(&piece, "too short"));
         }
     }
     out
@@ -843,24 +846,52 @@ pub fn clean_single(
     settings: &CleanSettings,
     report: &mut CleaningReport,
 ) -> Option<MeasuredRun> {
+    clean_single_with(run, settings, report, |_| Ok(())).map(|(p, ())| p)
+}
+
+/// Cleans a run for a single use: of its moving pieces, longest first, the
+/// first that `fits` accepts is kept with what `fits` made of it; every
+/// other piece is listed as dropped with its reason (what `fits` said, or
+/// that another piece was used). `None` when no piece is accepted.
+pub fn clean_single_with<T>(
+    run: MeasuredRun,
+    settings: &CleanSettings,
+    report: &mut CleaningReport,
+    mut fits: impl FnMut(&MeasuredRun) -> Result<T, String>,
+) -> Option<(MeasuredRun, T)> {
     let first = report.pieces.len();
     let pieces = clean_run(run, settings, report);
-    let best = (0..pieces.len()).max_by_key(|&k| pieces[k].t.len())?;
-    // The other moving pieces are left out: listed as dropped.
-    let others: Vec<Piece> = report
-        .pieces
-        .drain(first..)
-        .enumerate()
-        .filter_map(|(k, p)| (k != best).then_some(p))
-        .collect();
-    report.pieces.push(piece_of(&pieces[best]));
-    for (_, p) in pieces.iter().enumerate().filter(|(k, _)| *k != best) {
+    report.pieces.truncate(first);
+    let mut order: Vec<usize> = (0..pieces.len()).collect();
+    order.sort_by_key(|&k| std::cmp::Reverse(pieces[k].t.len()));
+    let mut reasons = vec![String::new(); pieces.len()];
+    let mut chosen = None;
+    for &k in &order {
+        match fits(&pieces[k]) {
+            Ok(v) => {
+                chosen = Some((k, v));
+                break;
+            }
+            Err(e) => reasons[k] = e,
+        }
+    }
+    for (k, p) in pieces.iter().enumerate() {
+        if chosen.as_ref().is_some_and(|c| c.0 == k) {
+            report.pieces.push(piece_of(p, ""));
+            continue;
+        }
+        let reason = if reasons[k].is_empty() {
+            "another piece was used".to_string()
+        } else {
+            reasons[k].clone()
+        };
         report.samples_kept -= p.t.len();
         report.samples_masked -= p.masked.len();
         report.samples_in_dropped_pieces += p.t.len();
+        report.dropped_pieces.push(piece_of(p, &reason));
     }
-    report.dropped_pieces.extend(others);
-    pieces.into_iter().nth(best)
+    let (k, v) = chosen?;
+    pieces.into_iter().nth(k).map(|p| (p, v))
 }
 
 /// Cleans a run read from `path` for tools that read every sample (the

@@ -41,6 +41,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 pub mod continuous;
+pub mod measured;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
 
@@ -116,24 +117,24 @@ pub struct StepMetrics {
     pub yaw_rate_peak_time: Option<f64>,
     /// Yaw-rate overshoot, % (0 without a peak).
     pub yaw_rate_overshoot: f64,
-    /// Lateral-acceleration response time, s.
-    pub ay_response_time: f64,
+    /// Lateral-acceleration response time, s (`None` for a run without `ay`).
+    pub ay_response_time: Option<f64>,
     /// Steady-state yaw-rate gain r/δ, 1/s.
     pub yaw_rate_gain: f64,
     /// Steady-state yaw rate change, rad/s.
     pub yaw_rate_steady: f64,
-    /// Steady-state lateral acceleration change, m/s².
-    pub ay_steady: f64,
+    /// Steady-state lateral acceleration change, m/s² (`None` for a run without `ay`).
+    pub ay_steady: Option<f64>,
     /// Steady-state sideslip change, rad (`None` without a β record).
     pub beta_steady: Option<f64>,
     /// TB = peak response time × |steady sideslip|, s·deg (GB/T 6323 unit).
     pub tb: Option<f64>,
     /// Yaw-rate total variance E_r, s.
     pub yaw_rate_total_variance: f64,
-    /// Lateral-acceleration total variance E_ay, s.
-    pub ay_total_variance: f64,
-    /// Er = e1·E_r + e2·E_ay, s.
-    pub er: f64,
+    /// Lateral-acceleration total variance E_ay, s (`None` for a run without `ay`).
+    pub ay_total_variance: Option<f64>,
+    /// Er = e1·E_r + e2·E_ay, s (`None` for a run without `ay`).
+    pub er: Option<f64>,
     /// Whether yaw rate and ay are steady in the steady window (standard
     /// deviation below 2 % of the step).
     pub settled: bool,
@@ -305,7 +306,7 @@ pub fn step_metrics(
     t: &[f64],
     steer: &[f64],
     yaw_rate: &[f64],
-    ay: &[f64],
+    ay: Option<&[f64]>,
     beta: Option<&[f64]>,
     s: &MetricSettings,
 ) -> Result<StepMetrics, MetricsError> {
@@ -313,7 +314,7 @@ pub fn step_metrics(
     if n < 10
         || steer.len() != n
         || yaw_rate.len() != n
-        || ay.len() != n
+        || ay.is_some_and(|a| a.len() != n)
         || beta.is_some_and(|b| b.len() != n)
     {
         return Err(MetricsError::Shape);
@@ -332,19 +333,28 @@ pub fn step_metrics(
         None => x.to_vec(),
     };
     let gain = filter_hz.map_or(1.0, |f| noise_gain(dt, f));
-    let (steer_f, yaw_rate_f, ay_f) = (filtered(steer), filtered(yaw_rate), filtered(ay));
+    let (steer_f, yaw_rate_f) = (filtered(steer), filtered(yaw_rate));
+    let ay_f = ay.map(filtered);
     let beta_f = beta.map(filtered);
     let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| MetricsError::NoStep(0.0))?;
     if d.steady.abs() < MIN_STEP {
         return Err(MetricsError::NoStep(d.steady));
     }
     let r = normalise(t, yaw_rate, &yaw_rate_f, s, "yaw rate")?;
-    let a = normalise(t, ay, &ay_f, s, "lateral acceleration")?;
+    let a = match (ay, ay_f.as_deref()) {
+        (Some(raw), Some(f)) => Some(normalise(t, raw, f, s, "lateral acceleration")?),
+        _ => None,
+    };
     let r_noise = gain * r.noise;
     let t0 = first_crossing(t, &d.values, 0.5, t[0]).ok_or(MetricsError::NoStep(d.steady))?;
     let tr = first_crossing(t, &r.values, 0.9, t0).ok_or(MetricsError::NoCrossing("yaw rate"))?;
-    let ta = first_crossing(t, &a.values, 0.9, t0)
-        .ok_or(MetricsError::NoCrossing("lateral acceleration"))?;
+    let ta = match &a {
+        Some(a) => Some(
+            first_crossing(t, &a.values, 0.9, t0)
+                .ok_or(MetricsError::NoCrossing("lateral acceleration"))?,
+        ),
+        None => None,
+    };
     // The peak: the first local maximum after the 90 % crossing that stands
     // above the steady state by more than the noise allows; a maximum at the
     // record's end is not one.
@@ -363,23 +373,25 @@ pub fn step_metrics(
     let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
     let window = (onset, onset + s.variance_window);
     let e_r = total_variance(t, &d.values, &r.values, window.0, window.1);
-    let e_ay = total_variance(t, &d.values, &a.values, window.0, window.1);
+    let e_ay = a
+        .as_ref()
+        .map(|a| total_variance(t, &d.values, &a.values, window.0, window.1));
     Ok(StepMetrics {
         steer_step: d.steady,
         time_zero: t0,
         yaw_rate_response_time: tr - t0,
         yaw_rate_peak_time: peak_time,
         yaw_rate_overshoot: peak_at.map_or(0.0, |i| (v[i] - 1.0) * 100.0),
-        ay_response_time: ta - t0,
+        ay_response_time: ta.map(|ta| ta - t0),
         yaw_rate_gain: r.steady / d.steady,
         yaw_rate_steady: r.steady,
-        ay_steady: a.steady,
+        ay_steady: a.as_ref().map(|a| a.steady),
         beta_steady,
         tb,
         yaw_rate_total_variance: e_r,
         ay_total_variance: e_ay,
-        er: s.e1 * e_r + s.e2 * e_ay,
-        settled: r.spread < 0.02 && a.spread < 0.02,
+        er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
+        settled: r.spread < 0.02 && a.as_ref().is_none_or(|a| a.spread < 0.02),
         yaw_rate_noise: r_noise,
         filter_hz,
     })

@@ -445,7 +445,14 @@ impl Integrator {
             ),
             _ => {
                 let h = &sim.history;
-                step_metrics(&h.t, &h.steer, &h.yaw_rate, &h.ay, Some(&h.beta), settings)
+                step_metrics(
+                    &h.t,
+                    &h.steer,
+                    &h.yaw_rate,
+                    Some(&h.ay),
+                    Some(&h.beta),
+                    settings,
+                )
             }
         }
     }

@@ -63,7 +63,7 @@ impl Study {
             &h.t,
             &h.steer,
             &h.yaw_rate,
-            &h.ay,
+            Some(&h.ay),
             Some(&h.beta),
             &self.metrics,
         )
@@ -79,7 +79,8 @@ impl Study {
     pub fn er(&self, k_front: f64, k_rear: f64) -> f64 {
         self.evaluate(k_front, k_rear)
             .metrics
-            .map_or(f64::NAN, |m| m.er)
+            .and_then(|m| m.er)
+            .unwrap_or(f64::NAN)
     }
 
     /// Simulates every combination in parallel; `progress` counts them.
@@ -98,11 +99,11 @@ impl Study {
 /// A metric of a sample by name (the CSV column names).
 pub fn metric(m: &StepMetrics, name: &str) -> f64 {
     match name {
-        "er" => m.er,
+        "er" => m.er.unwrap_or(f64::NAN),
         "yaw_rate_total_variance" => m.yaw_rate_total_variance,
-        "ay_total_variance" => m.ay_total_variance,
+        "ay_total_variance" => m.ay_total_variance.unwrap_or(f64::NAN),
         "yaw_rate_response_time" => m.yaw_rate_response_time,
-        "ay_response_time" => m.ay_response_time,
+        "ay_response_time" => m.ay_response_time.unwrap_or(f64::NAN),
         "yaw_rate_overshoot" => m.yaw_rate_overshoot,
         "yaw_rate_peak_time" => m.yaw_rate_peak_time.unwrap_or(f64::NAN),
         "yaw_rate_gain" => m.yaw_rate_gain,

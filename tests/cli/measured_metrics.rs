@@ -184,3 +184,94 @@ fn an_overdamped_noisy_response_has_no_overshoot() {
         assert!(m["tb"].is_null());
     }
 }
+
+/// A measured-run CSV of `cols` (t, speed, steer, yaw_rate, ay, beta) with
+/// the columns named in `keep` only.
+fn csv_of(cols: &[Vec<f64>; 6], keep: &[&str]) -> String {
+    let names = ["t", "speed", "steer", "yaw_rate", "ay", "beta"];
+    let idx: Vec<usize> = keep
+        .iter()
+        .map(|k| names.iter().position(|n| n == k).unwrap())
+        .collect();
+    let mut s = keep.join(",") + "\n";
+    for (i, _) in cols[0].iter().enumerate() {
+        let row: Vec<String> = idx.iter().map(|&k| format!("{}", cols[k][i])).collect();
+        s += &(row.join(",") + "\n");
+    }
+    s
+}
+
+#[test]
+fn a_log_of_several_manoeuvres_is_measured_on_its_step_and_a_run_without_ay_on_yaw_rate() {
+    let cols = simulated_run();
+    let dir = tempfile::tempdir().unwrap();
+    let all = ["t", "speed", "steer", "yaw_rate", "ay", "beta"];
+    let one = metrics(dir.path(), "one.csv", &csv_of(&cols, &all));
+    // The step, a 3 s standstill, then 15 s of straight driving: the longest
+    // moving piece holds no step.
+    let mut log = cols.clone();
+    let (t_end, u) = (cols[0][cols[0].len() - 1], cols[1][0]);
+    for k in 1..=1800 {
+        let t = t_end + 0.01 * k as f64;
+        let moving = t > t_end + 3.0;
+        let row = [t, if moving { u } else { 0.0 }, 0.0, 0.0, 0.0, 0.0];
+        for (c, v) in log.iter_mut().zip(row) {
+            c.push(v);
+        }
+    }
+    let multi = metrics(dir.path(), "multi.csv", &csv_of(&log, &all));
+    for key in [
+        "yaw_rate_response_time",
+        "yaw_rate_gain",
+        "ay_response_time",
+        "er",
+    ] {
+        assert_eq!(multi[key], one[key], "{key}");
+    }
+    let dropped = multi["cleaning"]["dropped_pieces"].as_array().unwrap();
+    assert_eq!(dropped.len(), 1, "{dropped:?}");
+    assert!(
+        dropped[0]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("no steer step"),
+        "{dropped:?}"
+    );
+    assert_eq!(multi["cleaning"]["slow"][0]["kind"], "standstill");
+    // Without ay: the yaw-rate metrics, the ay ones null and a warning.
+    let no_ay = metrics(
+        dir.path(),
+        "no_ay.csv",
+        &csv_of(&cols, &["t", "speed", "steer", "yaw_rate", "beta"]),
+    );
+    for key in [
+        "yaw_rate_response_time",
+        "yaw_rate_overshoot",
+        "yaw_rate_gain",
+        "tb",
+    ] {
+        assert_eq!(no_ay[key], one[key], "{key}");
+    }
+    for key in ["ay_response_time", "ay_steady", "ay_total_variance", "er"] {
+        assert!(no_ay[key].is_null(), "{key}: {}", no_ay[key]);
+    }
+    assert!(no_ay["warnings"][0].as_str().unwrap().contains("no `ay`"));
+    // The scenario's steer rises 10–90 % within ISO 7401's 0.15 s; a steer
+    // ramped over 0.5 s does not, and is flagged.
+    assert!(f(&one, "steer_rise_time") <= 0.15, "{one}");
+    assert!(one["warnings"].as_array().unwrap().is_empty(), "{one}");
+    let mut slow = cols.clone();
+    let (t0, step) = (f(&one, "time_zero"), f(&one, "steer_step"));
+    let start = t0 - 0.05;
+    slow[2] = slow[0]
+        .iter()
+        .map(|t| step * ((t - start) / 0.5).clamp(0.0, 1.0))
+        .collect();
+    let ramp = metrics(dir.path(), "ramp.csv", &csv_of(&slow, &all));
+    let rise = f(&ramp, "steer_rise_time");
+    assert!((rise - 0.4).abs() < 0.02, "10–90 % of a 0.5 s ramp: {rise}");
+    assert!(
+        ramp["warnings"][0].as_str().unwrap().contains("ISO 7401"),
+        "{ramp}"
+    );
+}

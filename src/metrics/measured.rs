@@ -1,0 +1,141 @@
+//! Step-steer metrics of a measured run as a logger wrote it: the run is
+//! cleaned ([`crate::measured::clean`]: standstills, crawling and glitches),
+//! and of its moving pieces, longest first, the first that holds a steer
+//! step is measured ([`step_metrics`]); the others are listed with the reason
+//! they were left out. A run without `ay` gets the yaw-rate metrics (the
+//! lateral-acceleration ones are `None`). The steer's 10–90 % rise time is
+//! reported and checked against ISO 7401, which asks for at most 0.15 s.
+//! Units: SI, rad, s.
+
+use super::{step_metrics, MetricSettings, StepMetrics};
+use crate::error::InputError;
+use crate::measured::clean::{clean_single_with, fill_masked, CleanSettings, CleaningReport};
+use crate::measured::MeasuredRun;
+use serde::Serialize;
+
+/// ISO 7401's limit on the steer's 10–90 % rise, s.
+pub const ISO_7401_RISE: f64 = 0.15;
+
+/// The metrics of a measured run and what was measured.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeasuredMetrics {
+    /// The metrics.
+    pub metrics: StepMetrics,
+    /// The piece measured (file, and `#k` when the run was split).
+    pub piece: String,
+    /// Its first and last sample, s.
+    pub t_start: f64,
+    /// Last sample, s.
+    pub t_end: f64,
+    /// Time for the steer to go from 10 % to 90 % of its step, s.
+    pub steer_rise_time: f64,
+    /// What the user should know (a steer too slow for ISO 7401).
+    pub warnings: Vec<String>,
+    /// How the run was cleaned, every piece left out with its reason.
+    pub cleaning: CleaningReport,
+}
+
+/// The first time after `from` at which `x` crosses `level` (linear
+/// interpolation between samples), in the direction of `sign`.
+fn crossing(t: &[f64], x: &[f64], level: f64, sign: f64, from: f64) -> Option<f64> {
+    (1..t.len()).find_map(|i| {
+        let (a, b) = (sign * (x[i - 1] - level), sign * (x[i] - level));
+        (t[i] >= from && a < 0.0 && b >= 0.0).then(|| t[i - 1] + (t[i] - t[i - 1]) * a / (a - b))
+    })
+}
+
+/// The steer's 10–90 % rise: levels from the mean steer of the pre-input
+/// window (as the metrics take it) and the metrics' steer step.
+fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
+    let pre: Vec<f64> = run
+        .t
+        .iter()
+        .zip(&run.steer)
+        .filter(|(t, _)| **t <= run.t[0] + pre_window)
+        .map(|(_, d)| *d)
+        .collect();
+    let base = pre.iter().sum::<f64>() / pre.len().max(1) as f64;
+    let sign = m.steer_step.signum();
+    let at = |share: f64| {
+        crossing(
+            &run.t,
+            &run.steer,
+            base + share * m.steer_step,
+            sign,
+            run.t[0],
+        )
+    };
+    match (at(0.1), at(0.9)) {
+        (Some(a), Some(b)) if b >= a => b - a,
+        _ => f64::NAN,
+    }
+}
+
+/// Cleans `run`, finds the piece with a steer step and measures it.
+pub fn measured_step_metrics(
+    run: MeasuredRun,
+    min_speed: f64,
+    settings: &MetricSettings,
+) -> Result<MeasuredMetrics, InputError> {
+    let path = run.path.clone();
+    let mut cleaning = CleaningReport::new(min_speed);
+    let found = clean_single_with(
+        run,
+        &CleanSettings::single(min_speed),
+        &mut cleaning,
+        |piece| {
+            let p = fill_masked(piece);
+            step_metrics(
+                &p.t,
+                &p.steer,
+                &p.yaw_rate,
+                p.ay.as_deref(),
+                p.beta.as_deref(),
+                settings,
+            )
+            .map(|m| (m, p))
+            .map_err(|e| format!("no step-steer metrics ({e})"))
+        },
+    );
+    let Some((piece, (metrics, filled))) = found else {
+        let message = if cleaning.dropped_pieces.is_empty() {
+            format!(
+                "no two successive samples at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
+                cleaning.samples_slow, cleaning.samples_read
+            )
+        } else {
+            let why: Vec<String> = cleaning
+                .dropped_pieces
+                .iter()
+                .map(|p| {
+                    format!(
+                        "{} ({:.2}–{:.2} s): {}",
+                        p.name, p.t_start, p.t_end, p.reason
+                    )
+                })
+                .collect();
+            format!("no moving piece holds a steer step: {}", why.join("; "))
+        };
+        return Err(InputError::File { path, message });
+    };
+    let steer_rise_time = steer_rise(&filled, &metrics, settings.pre_window);
+    let mut warnings = Vec::new();
+    if steer_rise_time > ISO_7401_RISE {
+        warnings.push(format!(
+            "the steer rises from 10 % to 90 % of its step in {steer_rise_time:.3} s; ISO 7401 asks for at most {ISO_7401_RISE} s: the response times include the ramp"
+        ));
+    }
+    if metrics.ay_steady.is_none() {
+        warnings
+            .push("the run has no `ay`: lateral-acceleration metrics and Er are left out".into());
+    }
+    Ok(MeasuredMetrics {
+        metrics,
+        piece: piece.path.display().to_string(),
+        t_start: piece.t[0],
+        t_end: piece.t[piece.t.len() - 1],
+        steer_rise_time,
+        warnings,
+        cleaning,
+    })
+}

@@ -206,7 +206,11 @@ pub fn simulate(path: &Path, out: Option<&Path>) -> Result<()> {
         }
         write_json(
             &files[3],
-            &serde_json::json!({ "run": run.path.display().to_string(), "channels": gap }),
+            &serde_json::json!({
+                "run": run.path.display().to_string(),
+                "channels": gap,
+                "cleaning": sc.cleaning,
+            }),
         )?;
     }
     history_figure(&sc.name, h, sc.measured.as_ref()).save(&files[2])?;

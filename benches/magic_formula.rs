@@ -1,5 +1,7 @@
 //! Cost of one full combined-slip Magic Formula 6.1 evaluation (fx, fy, mz,
-//! mx, my) of MFeval's public 6.1 file, over a cycle of 64 operating points.
+//! mx, my) of MFeval's public 6.1 file, over a cycle of 64 operating points;
+//! and of one pure-lateral evaluation (κ = 0, the vehicle model's case) at
+//! the same points.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::io::tir::load_tir;
@@ -28,6 +30,16 @@ fn combined(c: &mut Criterion) {
         b.iter(|| {
             i = (i + 1) & 63;
             black_box(tyre.evaluate(black_box(&points[i])))
+        })
+    });
+    let lateral: Vec<MfInput> = points
+        .iter()
+        .map(|p| MfInput { kappa: 0.0, ..*p })
+        .collect();
+    c.bench_function("mf61_pure_lateral_one_evaluation", |b| {
+        b.iter(|| {
+            i = (i + 1) & 63;
+            black_box(tyre.evaluate(black_box(&lateral[i])))
         })
     });
 }

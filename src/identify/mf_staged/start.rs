@@ -1,0 +1,258 @@
+//! Start values: the base tyre (template or a bare one sized from the
+//! rows), the levels in a stage's rows, and the estimates of friction,
+//! slip stiffness and trail per load level with their load laws fitted by
+//! least squares (`--start data`).
+
+use super::params::Stage;
+use super::{MfRow, Settings};
+use crate::identify::grouping::{levels, Variable};
+use crate::tyre::mf::{MagicFormula, MfCoefficients, MfOptions, TyreSide};
+
+fn median(mut v: Vec<f64>) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// The template, or a bare tyre sized from the rows.
+pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
+    let mut t = s.template.clone().unwrap_or_else(|| {
+        let mut c = MfCoefficients {
+            FNOMIN: (median(rows.iter().map(|r| r.fz).collect()) / 10.0).round() * 10.0,
+            ..MfCoefficients::default()
+        };
+        let p = median(rows.iter().filter_map(|r| r.pressure).collect());
+        if p.is_finite() {
+            c.NOMPRES = (p / 100.0).round() * 100.0;
+        }
+        let v = median(rows.iter().map(|r| r.speed).collect());
+        if v.is_finite() && v > 0.0 {
+            c.LONGVL = v;
+        }
+        MagicFormula {
+            version: s.version,
+            side: TyreSide::Left,
+            options: MfOptions::default(),
+            coefficients: c,
+        }
+    });
+    t.version = s.version;
+    t
+}
+
+/// Counts of load, camber and pressure levels in rows.
+pub(super) fn level_counts(rows: &[&MfRow]) -> [usize; 3] {
+    let fz: Vec<f64> = rows.iter().map(|r| r.fz).collect();
+    let ga: Vec<f64> = rows.iter().map(|r| r.camber).collect();
+    let p: Vec<f64> = rows.iter().filter_map(|r| r.pressure).collect();
+    [
+        levels(Variable::Load, &fz, 10.0).levels.len().max(1),
+        levels(Variable::Camber, &ga, 0.1f64.to_radians())
+            .levels
+            .len()
+            .max(1),
+        if p.len() == rows.len() && !p.is_empty() {
+            levels(Variable::Pressure, &p, 1000.0).levels.len().max(1)
+        } else {
+            1
+        },
+    ]
+}
+
+/// Rows grouped by load level (nominal loads ascending), at the camber
+/// closest to zero and the pressure closest to nominal.
+fn by_load<'a>(rows: &[&'a MfRow], nompres: f64) -> Vec<(f64, Vec<&'a MfRow>)> {
+    let gmin = rows
+        .iter()
+        .map(|r| r.camber.abs())
+        .fold(f64::INFINITY, f64::min);
+    let pbest = rows
+        .iter()
+        .filter_map(|r| r.pressure)
+        .min_by(|a, b| (a - nompres).abs().total_cmp(&(b - nompres).abs()));
+    let sel: Vec<&MfRow> = rows
+        .iter()
+        .copied()
+        .filter(|r| (r.camber.abs() - gmin).abs() < 0.05f64.to_radians())
+        .filter(|r| match (pbest, r.pressure) {
+            (Some(pb), Some(p)) => (p - pb).abs() < 3000.0,
+            _ => true,
+        })
+        .collect();
+    let fz: Vec<f64> = sel.iter().map(|r| r.fz).collect();
+    let lv = levels(Variable::Load, &fz, 10.0);
+    let mut out: Vec<(f64, Vec<&MfRow>)> =
+        lv.levels.iter().map(|l| (l.nominal, Vec::new())).collect();
+    for r in sel {
+        if let Some(k) = (0..out.len()).min_by(|a, b| {
+            (out[*a].0 - r.fz)
+                .abs()
+                .total_cmp(&(out[*b].0 - r.fz).abs())
+        }) {
+            out[k].1.push(r);
+        }
+    }
+    out.retain(|(_, v)| v.len() >= 3);
+    out
+}
+
+/// Least-squares slope of `y` on `x` (with intercept) over the points whose
+/// `|x|` is within `range`, or the four smallest `|x|` if fewer than three.
+fn slope(pts: &[(f64, f64)], range: f64) -> Option<f64> {
+    let mut p: Vec<(f64, f64)> = pts.iter().copied().filter(|q| q.0.abs() <= range).collect();
+    if p.len() < 3 {
+        let mut all = pts.to_vec();
+        all.sort_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+        p = all.into_iter().take(4).collect();
+    }
+    let n = p.len() as f64;
+    let (mx, my) = (
+        p.iter().map(|q| q.0).sum::<f64>() / n,
+        p.iter().map(|q| q.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = p.iter().map(|q| (q.0 - mx).powi(2)).sum();
+    let sxy: f64 = p.iter().map(|q| (q.0 - mx) * (q.1 - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx).filter(|s| s.is_finite())
+}
+
+/// `y ≈ a + b·x` by least squares (`b = 0` from one point).
+fn line(pts: &[(f64, f64)]) -> (f64, f64) {
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|q| q.0).sum::<f64>() / n,
+        pts.iter().map(|q| q.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = pts.iter().map(|q| (q.0 - mx).powi(2)).sum();
+    let sxy: f64 = pts.iter().map(|q| (q.0 - mx) * (q.1 - my)).sum();
+    if pts.len() < 2 || sxx <= 0.0 {
+        (my, 0.0)
+    } else {
+        let b = sxy / sxx;
+        (my - b * mx, b)
+    }
+}
+
+/// Start values estimated from a stage's rows (only names it sets).
+pub(super) fn data_start(
+    stage: Stage,
+    base: &MagicFormula,
+    rows: &[&MfRow],
+) -> Vec<(&'static str, f64)> {
+    let c = &base.coefficients;
+    let fz0 = c.FNOMIN * c.LFZO;
+    let dfz = |fz: f64| (fz - fz0) / fz0;
+    let groups = by_load(rows, c.NOMPRES);
+    let mut out: Vec<(&'static str, f64)> = Vec::new();
+    match stage {
+        Stage::PureFx | Stage::PureFy => {
+            let lat = stage == Stage::PureFy;
+            let slip = |r: &MfRow| if lat { r.alpha } else { r.kappa };
+            let force = |r: &MfRow| if lat { r.fy } else { r.fx };
+            let mut mu = Vec::new();
+            let mut stiff = Vec::new();
+            for (fz, g) in &groups {
+                let peak = g.iter().map(|r| force(r).abs()).fold(0.0, f64::max);
+                mu.push((dfz(*fz), peak / fz));
+                let pts: Vec<(f64, f64)> = g.iter().map(|r| (slip(r), force(r))).collect();
+                let range = if lat { 1.5f64.to_radians() } else { 0.02 };
+                if let Some(k) = slope(&pts, range).filter(|k| *k > 0.0) {
+                    stiff.push((*fz, k));
+                }
+            }
+            let (d1, d2) = if mu.is_empty() { (1.0, 0.0) } else { line(&mu) };
+            if lat {
+                out.extend([("PCY1", 1.3), ("PDY1", d1), ("PDY2", d2), ("PEY1", 0.0)]);
+                // Kyα(Fz) = PKY1·Fz0·sin(PKY4·atan(Fz/(PKY2·Fz0))) (ISO-W:
+                // negative for a positive crate slope): PKY2 on a grid, PKY1
+                // by least squares for each.
+                let pky4 = c.PKY4;
+                let mut best = (f64::INFINITY, -20.0, 2.0);
+                if !stiff.is_empty() {
+                    for i in 0..=150 {
+                        let pky2 = 0.5 + 0.05 * i as f64;
+                        let shape: Vec<f64> = stiff
+                            .iter()
+                            .map(|(fz, _)| fz0 * (pky4 * (fz / (pky2 * fz0)).atan()).sin())
+                            .collect();
+                        let num: f64 = stiff.iter().zip(&shape).map(|(s, h)| -s.1 * h).sum();
+                        let den: f64 = shape.iter().map(|h| h * h).sum();
+                        let pky1 = num / den;
+                        let err: f64 = stiff
+                            .iter()
+                            .zip(&shape)
+                            .map(|(s, h)| ((pky1 * h + s.1) / s.1).powi(2))
+                            .sum();
+                        if err < best.0 {
+                            best = (err, pky1, pky2);
+                        }
+                    }
+                }
+                out.extend([("PKY1", best.1), ("PKY2", best.2)]);
+            } else {
+                let kx: Vec<(f64, f64)> = stiff.iter().map(|(fz, k)| (dfz(*fz), k / fz)).collect();
+                let (k1, k2) = if kx.is_empty() {
+                    (20.0, 0.0)
+                } else {
+                    line(&kx)
+                };
+                out.extend([
+                    ("PCX1", 1.65),
+                    ("PDX1", d1),
+                    ("PDX2", d2),
+                    ("PEX1", 0.0),
+                    ("PKX1", k1),
+                    ("PKX2", k2),
+                ]);
+            }
+        }
+        Stage::PureMz => {
+            // Pneumatic trail near zero slip: the slope of mz over fy; with
+            // Dt = Fz·(R0/Fz0)·(QDZ1 + QDZ2·dfz) (the trail at α = 0).
+            let r0 = c.UNLOADED_RADIUS;
+            let trail: Vec<(f64, f64)> = groups
+                .iter()
+                .filter_map(|(fz, g)| {
+                    let pts: Vec<(f64, f64)> = g
+                        .iter()
+                        .filter(|r| r.alpha.abs() <= 2f64.to_radians())
+                        .map(|r| (r.fy, r.mz))
+                        .collect();
+                    let t = slope(&pts, f64::INFINITY)?;
+                    Some((dfz(*fz), t * fz0 / (r0 * fz)))
+                })
+                .collect();
+            let (q1, q2) = if trail.is_empty() {
+                (0.1, 0.0)
+            } else {
+                line(&trail)
+            };
+            // QBZ10 must start off zero: at Br = 0 the residual torque's
+            // cos(atan(Br·αr)) has no slope in Br.
+            out.extend([
+                ("QBZ1", 10.0),
+                ("QBZ10", 1.0),
+                ("QCZ1", 1.2),
+                ("QDZ1", q1),
+                ("QDZ2", q2),
+                ("QEZ1", 0.0),
+            ]);
+        }
+        Stage::CombinedFx => {
+            out.extend([("RBX1", 10.0), ("RBX2", 8.0), ("RCX1", 1.0), ("REX1", 0.0)]);
+        }
+        Stage::CombinedFy => {
+            out.extend([
+                ("RBY1", 10.0),
+                ("RBY2", 8.0),
+                ("RCY1", 1.0),
+                ("REY1", 0.0),
+                ("RVY4", 50.0),
+                ("RVY5", 2.0),
+                ("RVY6", 10.0),
+            ]);
+        }
+    }
+    out
+}

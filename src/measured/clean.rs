@@ -356,7 +356,7 @@ impl CleaningReport {
         }
         if self.glitches.len() > first {
             out.push(format!(
-                "… and {} more glitches",
+                "… and {} more glitches (every one in the JSON report)",
                 self.glitches.len() - first
             ));
         }

@@ -25,22 +25,11 @@ pub trait Residuals: Sync {
     }
 }
 
-/// Forward-difference Jacobian at `p` given the residuals `r0` there.
+/// Forward-difference Jacobian at `p` given the residuals `r0` there
+/// (relative step 1e-7; [`super::bounded::inward_jacobian`] without bounds).
 pub fn jacobian(problem: &dyn Residuals, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
-    let (m, n) = (problem.count(), p.len());
-    let mut j = DMatrix::zeros(m, n);
-    let mut x = p.to_vec();
-    let mut r = vec![0.0; m];
-    for k in 0..n {
-        let h = 1e-7 * p[k].abs().max(1e-4);
-        x[k] = p[k] + h;
-        problem.residuals(&x, &mut r);
-        for i in 0..m {
-            j[(i, k)] = (r[i] - r0[i]) / h;
-        }
-        x[k] = p[k];
-    }
-    j
+    let free = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
+    super::bounded::inward_jacobian(problem, p, r0, &free)
 }
 
 /// The outcome of a local polish.

@@ -1,4 +1,4 @@
-//! Diagnosis speed (issue 6 asks for a campaign of 8 runs diagnosed against
+//! Diagnosis speed (the target: a campaign of 8 runs diagnosed against
 //! the full library in under 60 s on 2 cores): the synthetic proving-ground
 //! campaign (8 runs, 66 s of data at 100 Hz, a sensor delay withheld, PAC89
 //! fitted to its rig data) against all 14 effects, and the cost of one

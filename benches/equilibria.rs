@@ -1,6 +1,6 @@
 //! Cost of one steering-equilibrium condition: the exact reference solver and
 //! the PSO search, for the simplified Magic Formula without load transfer
-//! (seed 003's model) and PAC89 with load transfer (the most expensive case).
+//! (Li, Jia & Zhao's model) and PAC89 with load transfer (the most expensive case).
 //! The dense-grid wall time is measured by `handling equilibria
 //! scenarios/dense_grid_*.toml` (README).
 

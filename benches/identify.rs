@@ -1,5 +1,5 @@
 //! Identification speed: a PAC89 lateral fit (PSO + Levenberg–Marquardt) on
-//! seed 000's three loads × 85 points (issue #3 asks for under 2 s on one
+//! Zhang & Li's (2017) three loads × 85 points (the target: under 2 s on one
 //! core), and the cost of one objective evaluation.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};

@@ -125,7 +125,7 @@ pub fn identify(o: &Options) -> Result<()> {
     };
     let mut fit = fit_channel(&tyre0, first, &conditions, &settings)
         .map_err(|e| anyhow!("{}: {e}", o.data.display()))?;
-    // PAC89: seed 001's two-stage identification as well; both are reported
+    // PAC89: Zhang et al.'s (2021) two-stage identification as well; both are reported
     // and the better of the two is written.
     let two_stage = if o.model == "pac89" && first == Channel::LateralForce {
         let r = handling::identify::pac89_two_stage::identify(&conditions, &settings)

@@ -41,7 +41,7 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
-    /// Cornering stiffness against handling (seed 004): map, RBF, inverse;
+    /// Cornering stiffness against handling (Wang & Liang): map, RBF, inverse;
     /// writes study.csv, maps.png, rbf.json, rbf.png, inverse.json, summary.json.
     Study {
         /// Study file (TOML).
@@ -75,7 +75,7 @@ enum Command {
         /// an error when the file has no camber column or no level near it).
         #[arg(long)]
         camber: Option<f64>,
-        /// Local polish: lm, gn (seed 000's modified Gauss-Newton) or none.
+        /// Local polish: lm, gn (Zhang & Li's (2017) modified Gauss-Newton) or none.
         #[arg(long, default_value = "lm")]
         local: String,
         /// Slip-angle bin for thinning, degrees (0: no thinning): the

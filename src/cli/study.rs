@@ -1,4 +1,4 @@
-//! `study`: cornering stiffness against handling (seed 004).
+//! `study`: cornering stiffness against handling (Wang & Liang).
 
 use anyhow::{bail, Result};
 use handling::io::study::load_study;
@@ -162,7 +162,7 @@ pub fn study(path: &Path, out: Option<&Path>) -> Result<()> {
         rear: input.rear.clone(),
         samples: map_samples.to_vec(),
     };
-    // The RBF network of seed 004: Er → (k1, k2), trained on all pairs but
+    // The RBF network of Wang & Liang: Er → (k1, k2), trained on all pairs but
     // the validation ones, checked by re-simulating its answers.
     let mut rbf_net = None;
     if let Some(rbf) = &input.rbf {

@@ -1,4 +1,4 @@
-//! The library of candidate effects of the sim-to-real diagnosis (issue 6):
+//! The library of candidate effects of the sim-to-real diagnosis:
 //! each is a model extension with one to three physical parameters, off in
 //! the base model. [`EffectKind`] names them (the issue's vocabulary),
 //! gives their parameters, units, search bounds and the values that switch

@@ -1,4 +1,4 @@
-//! The sim-to-real gap (issue 6): where a replayed run and its measurement
+//! The sim-to-real gap: where a replayed run and its measurement
 //! disagree ([`gap`]), the library of candidate effects ([`effects`]) and
 //! the augmented model that carries them ([`model`]), the sensor effects
 //! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis

@@ -1,5 +1,5 @@
 //! How a measurement system sees the vehicle: the sensor effects among
-//! issue 6's candidates. All zero is an ideal measurement.
+//! the diagnosis's candidates. All zero is an ideal measurement.
 //!
 //! - `delay` (s): every channel reports its value `delay` seconds late;
 //! - `yaw_rate_bias` (rad/s), `ay_bias` (m/s²), `beta_bias` (rad): constant

@@ -1,9 +1,9 @@
 //! Steering equilibria of the 2-DOF model: points (β, r) where β̇ = ṙ = 0 at a
-//! fixed steer δ, friction μ and speed u (seed 003), with any tyre model, with
+//! fixed steer δ, friction μ and speed u (Li, Jia & Zhao), with any tyre model, with
 //! or without load transfer (at equilibrium ay = u·r).
 //!
 //! Two independent solvers find them:
-//! - [`pso`]: seed 003's particle swarm on the fitness `f1² + f2²` over a box
+//! - [`pso`]: Li, Jia & Zhao's particle swarm on the fitness `f1² + f2²` over a box
 //!   of (β, r), positions wrapped back into the box, velocities clamped; then
 //!   Newton polish to machine precision, repeated with deflation so that every
 //!   equilibrium in the box is found, not only the nearest;

@@ -1,8 +1,8 @@
 //! Seed 003's PSO search for steering equilibria, made complete.
 //!
 //! Fitness over the box of (β, r), positions wrapped back by whole widths and
-//! velocities clamped (seed 003). Two fitness functions:
-//! - `residual`: seed 003's `f1² + f2²` of the scaled right-hand side;
+//! velocities clamped (Li, Jia & Zhao). Two fitness functions:
+//! - `residual`: Li, Jia & Zhao's `f1² + f2²` of the scaled right-hand side;
 //! - `newton-step` (default): the length of the Newton step `‖J⁻¹·f‖`
 //!   (scaled, forward-difference Jacobian), which near any simple root equals
 //!   the distance to it. Seed 003's fitness is tiny over the wide regions

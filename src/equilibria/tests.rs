@@ -158,7 +158,7 @@ fn seed003_fitness_misses_the_stable_node_the_newton_step_finds() {
         })
         .count();
     assert!(missed_nodes > 0);
-    // The winding-number certificate makes even seed 003's fitness complete:
+    // The winding-number certificate makes even Li, Jia & Zhao's fitness complete:
     // it keeps searching until the indices add up.
     let certified = run(
         &m,

@@ -1,8 +1,8 @@
-//! Tyre parameter identification from rig data (seed 000, seed 001): a
+//! Tyre parameter identification from rig data (Zhang & Li (2017), Zhang et al. (2021)): a
 //! particle swarm over the model's bounded parameter box finds the
 //! neighbourhood of the global optimum of `ε = ½·Σ(F_sim − F_test)²`, and a
 //! local least-squares method polishes it (Levenberg–Marquardt by default, or
-//! seed 000's modified Gauss–Newton). Residual metric (seed 000):
+//! Zhang & Li's (2017) modified Gauss–Newton). Residual metric (Zhang & Li (2017)):
 //! `σ = sqrt(Σ(F_sim − F_test)²/Σ F_test²)·100 %` per condition and overall.
 //! Standard errors come from the Jacobian at the optimum,
 //! `cov = s²·(JᵀJ)⁻¹` with `s² = Σe²/(m − n)`; a parameter on its bound or

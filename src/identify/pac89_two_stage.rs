@@ -352,7 +352,7 @@ mod seed_style {
     use super::*;
 
     /// Seed 001's residual levels on seed-style data: a tyre that is not a
-    /// PAC89 (the bundled UniTire) at seed 000's three loads with 1 % noise.
+    /// PAC89 (the bundled UniTire) at Zhang & Li's (2017) three loads with 1 % noise.
     /// Seed 001 reports stage-1 and stage-2 means of 0.75 % and 1.70 %; here
     /// stage 1 stays below 1 % and stage 2, which imposes PAC89's load laws
     /// on the curves, stays below 1.8 % and above stage 1.

@@ -172,7 +172,7 @@ fn recovers_aligning_moment_parameters_with_the_lateral_ones_held() {
 }
 
 /// Longitudinal sweeps (κ in the slip column, Fx in the force column) at
-/// seed 000's loads, slip ratios 0 … ±0.3 by 0.01, 1 % noise.
+/// Zhang & Li's (2017) loads, slip ratios 0 … ±0.3 by 0.01, 1 % noise.
 fn longitudinal_data(truth: &Tyre, seed: u64) -> (Vec<Condition>, f64) {
     use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
@@ -243,7 +243,7 @@ fn recovers_longitudinal_parameters() {
 }
 
 /// Seed 000's claim on seed-style data: the tyre is not a UniTire (here the
-/// PAC89 Adams example, a passenger tyre at seed 000's loads and slip angles,
+/// PAC89 Adams example, a passenger tyre at Zhang & Li's (2017) loads and slip angles,
 /// 1 % noise), and a UniTire is identified by PSO alone and by PSO + the
 /// modified Gauss–Newton: every curve below 5.5 % and 3.5 %.
 #[test]

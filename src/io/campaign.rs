@@ -1,4 +1,4 @@
-//! Test campaigns for the sim-to-real diagnosis (issue 6): a vehicle, its
+//! Test campaigns for the sim-to-real diagnosis: a vehicle, its
 //! road, optionally its tyres or tyre rig data, and measured runs
 //! (`FORMATS.md`). A campaign is a TOML file, or a folder laid out as
 //!

@@ -1,6 +1,6 @@
 //! Study files (README, "Study files"): a scenario's tables (vehicle, tyres,
 //! road, model, a step-steer manoeuvre, simulation, metrics) plus the
-//! cornering-stiffness grid, seed 004's RBF pairs and inverse targets.
+//! cornering-stiffness grid, Wang & Liang's RBF pairs and inverse targets.
 //! Stiffness values are per tyre in the file's `unit` (`N/deg` or `N/rad`),
 //! converted to N/rad on reading.
 
@@ -76,7 +76,7 @@ pub struct RbfSpec {
     pub front: Axis,
     /// Rear − front offsets (stiffness unit).
     pub rear_offsets: Vec<f64>,
-    /// Largest rear value kept (seed 004: 720 N/deg, so front + 40 stops at
+    /// Largest rear value kept (Wang & Liang: 720 N/deg, so front + 40 stops at
     /// 680 and the pairs number 26 + 25 = 51).
     #[serde(default)]
     pub rear_max: Option<f64>,

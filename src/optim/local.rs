@@ -1,5 +1,5 @@
 //! Local least-squares polish: Levenberg–Marquardt (the `levenberg-marquardt`
-//! crate, MINPACK's trust-region form with diagonal scaling) and seed 000's
+//! crate, MINPACK's trust-region form with diagonal scaling) and Zhang & Li's (2017)
 //! modified Gauss–Newton `x_{k+1} = x_k − (JᵀJ + λ_k·I)⁻¹·Jᵀ·e` with the
 //! geometric schedule `λ_k = λ0·q^(k−1)` (0 < q < 1). Seed 000 takes every
 //! step; here a step that raises the cost is halved until it does not (up to
@@ -17,7 +17,7 @@ pub trait Residuals: Sync {
     /// Fills `out` (length `count()`) with the residuals at `p`.
     fn residuals(&self, p: &[f64], out: &mut [f64]);
 
-    /// ½·Σ e² at `p` (seed 000's objective ε).
+    /// ½·Σ e² at `p` (Zhang & Li's (2017) objective ε).
     fn cost(&self, p: &[f64]) -> f64 {
         let mut r = vec![0.0; self.count()];
         self.residuals(p, &mut r);

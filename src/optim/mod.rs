@@ -1,6 +1,6 @@
 //! Optimisers shared by identification, equilibria and diagnosis: particle
-//! swarm optimisation in the papers' variants (seed 000, 001, 003) and local
-//! least-squares polish (Levenberg–Marquardt, seed 000's modified
+//! swarm optimisation in the papers' variants (Zhang & Li 2017; Zhang et al. 2021; Li, Jia & Zhao) and local
+//! least-squares polish (Levenberg–Marquardt, Zhang & Li's (2017) modified
 //! Gauss–Newton). Every random search takes a seed and is reproducible.
 
 pub mod bounded;

@@ -1,15 +1,15 @@
 //! Particle swarm optimisation (minimisation over a box).
 //!
-//! Update (seed 000 eq. 16–17): `v ← w·v + c1·r1·(p_best − x) + c2·r2·(g − x)`,
-//! `x ← x + v`, velocities clamped to a fraction of the box width (seed 003).
+//! Update (Zhang & Li (2017) eq. 16–17): `v ← w·v + c1·r1·(p_best − x) + c2·r2·(g − x)`,
+//! `x ← x + v`, velocities clamped to a fraction of the box width (Li, Jia & Zhao).
 //! Inertia either decreases linearly,
-//! `w_k = (k_max − k)/k_max·(w_max − w_min) + w_min` (seed 000), or adapts
+//! `w_k = (k_max − k)/k_max·(w_max − w_min) + w_min` (Zhang & Li (2017)), or adapts
 //! per particle, `w = w_min + (w_max − w_min)·
 //! (f − f_min)/(f_avg − f_min)` for `f ≤ f_avg` and `w_max` otherwise
-//! (seed 001). Natural selection (seed 001): after each iteration the worse
+//! (Zhang et al. (2021)). Natural selection (Zhang et al. (2021)): after each iteration the worse
 //! half of the swarm takes the positions and velocities of the better half,
 //! keeping its own personal bests. Positions leaving the box are either
-//! clamped or wrapped back by whole widths (seed 003). The attractor `g` is
+//! clamped or wrapped back by whole widths (Li, Jia & Zhao). The attractor `g` is
 //! the global best or, with a ring topology, the best of each particle's
 //! neighbourhood, which keeps sub-swarms on different minima (used to find
 //! several equilibria in one run).
@@ -39,7 +39,7 @@ pub enum Inertia {
 pub enum Boundary {
     /// Put it on the bound and stop its motion in that coordinate.
     Clamp,
-    /// Wrap it back by whole box widths (seed 003).
+    /// Wrap it back by whole box widths (Li, Jia & Zhao).
     Wrap,
 }
 

@@ -1,6 +1,6 @@
-//! Tyre cornering stiffness against handling (seed 004): the forward map
+//! Tyre cornering stiffness against handling (Wang & Liang): the forward map
 //! from front/rear cornering stiffness (k1, k2) to the step-steer metrics,
-//! seed 004's Gaussian RBF network that maps Er back to (k1, k2), and the
+//! Wang & Liang's Gaussian RBF network that maps Er back to (k1, k2), and the
 //! inverse as it really is — one Er value fixes a curve of (k1, k2), not a
 //! point — with the best combination on it under a stated preference.
 //!

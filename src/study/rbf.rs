@@ -1,4 +1,4 @@
-//! Gaussian radial-basis-function network, as seed 004 trains it (MATLAB's
+//! Gaussian radial-basis-function network, as Wang & Liang trains it (MATLAB's
 //! `newrbe`): one neuron per training input, `φ(x) = exp(−(b·‖x − c‖)²)` with
 //! `b = √(ln 2)/spread` (a neuron's output is 0.5 at a distance of `spread`),
 //! and a linear output layer with bias fitted to the training outputs. The

@@ -1,5 +1,5 @@
 //! Gim's analytical tyre model (Gim & Nikravesh 1990), pure cornering, as
-//! seed 004 uses it: a brush model with a parabolic pressure distribution, an
+//! Wang & Liang uses it: a brush model with a parabolic pressure distribution, an
 //! adhesion region at the leading edge and a sliding region behind it.
 //!
 //! With `ln = 1 − K·|tan α| / (3·μ·Fz)` the normalised adhesion length
@@ -38,7 +38,7 @@ pub struct Gim {
     #[serde(default = "default_reference_load")]
     pub reference_load: f64,
     /// Stiffness load sensitivity: K = K_ref·(Fz/Fz_ref)^n (0 = constant K,
-    /// as in seed 004).
+    /// as in Wang & Liang).
     #[serde(default)]
     pub load_exponent: f64,
 }

@@ -1,4 +1,4 @@
-//! Simplified Magic Formula of seed 003: `Fy = D·μ·Fz·sin(C·atan(B·α))`.
+//! Simplified Magic Formula of Li, Jia & Zhao: `Fy = D·μ·Fz·sin(C·atan(B·α))`.
 //!
 //! Seed 003 writes it per axle with the road friction μ in front; here it acts
 //! per wheel (linear in Fz, so an axle is two wheels at half the axle load),
@@ -20,7 +20,7 @@ pub struct MagicSimple {
     pub b: f64,
     /// Shape factor C.
     pub c: f64,
-    /// Peak friction D on the reference surface (1 in seed 003).
+    /// Peak friction D on the reference surface (1 in Li, Jia & Zhao).
     #[serde(default = "one")]
     pub d: f64,
 }

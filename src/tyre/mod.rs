@@ -171,11 +171,11 @@ pub trait Parameterised {
 pub enum Tyre {
     /// Gim / brush model with adhesion and sliding regions.
     Gim(Gim),
-    /// Simplified Magic Formula `Fy = μ·Fz·sin(C·atan(B·α))` (seed 003).
+    /// Simplified Magic Formula `Fy = μ·Fz·sin(C·atan(B·α))` (Li, Jia & Zhao).
     MagicSimple(MagicSimple),
-    /// UniTire pure-slip model (seed 000).
+    /// UniTire pure-slip model (Zhang & Li (2017)).
     Unitire(UniTire),
-    /// PAC89 Magic Formula in the Adams numbering (seed 001).
+    /// PAC89 Magic Formula in the Adams numbering (Zhang et al. (2021)).
     Pac89(Pac89),
     /// Linear tyre `Fy = C_α·α` (the textbook bicycle model).
     Linear(Linear),

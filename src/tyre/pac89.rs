@@ -1,6 +1,6 @@
 //! PAC89 Magic Formula (Bakker, Nyborg & Pacejka 1989) in the coefficient
 //! numbering of the Adams "PAC89" tyre property file: lateral a0..a13,
-//! longitudinal b0..b10, aligning c0..c17 (seed 001 uses the lateral set).
+//! longitudinal b0..b10, aligning c0..c17 (Zhang et al. (2021) uses the lateral set).
 //!
 //! `Y = D·sin(C·atan(B·x − E·(B·x − atan(B·x)))) + Sv`, `x = X + Sh`, with
 //! lateral (X = α in degrees, γ camber in degrees, Fz in kN):

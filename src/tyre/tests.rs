@@ -152,7 +152,7 @@ fn unitire_friction_law_starts_at_mu0_and_tends_to_mus() {
 }
 
 /// Reference values of the Adams PAC89 example set at Fz = 4 kN, zero camber,
-/// computed from the raw equations (issue #2).
+/// computed from the raw equations (the published example).
 #[test]
 fn pac89_adams_example_reference_values() {
     let p = Pac89::adams_example();

@@ -1,4 +1,4 @@
-//! UniTire pure-slip model (Guo Konghui), in the form identified by seed 000
+//! UniTire pure-slip model (Guo Konghui), in the form identified by Zhang & Li (2017)
 //! (Zhang & Li 2017, eqs. 3–15).
 //!
 //! Dimensionless force `F̄ = 1 − exp(−φ − E·φ² − (E² + 1/12)·φ³)` with
@@ -15,7 +15,7 @@
 //! (the paper leaves the unit open; kN keeps the coefficients of order one),
 //! Dx in m. φy enters Dx by magnitude so that Mz stays odd.
 //!
-//! Slip: seed 000's `Sx = (ΩRe − V cos α)/(ΩRe)` relates to this crate's
+//! Slip: Zhang & Li's (2017) `Sx = (ΩRe − V cos α)/(ΩRe)` relates to this crate's
 //! `κ = (ΩRe − V)/V` as `Sx = κ/(1 + κ)` at zero slip angle.
 //! The road friction scales the final μ. Odd in α and in Sx.
 
@@ -23,7 +23,7 @@ use super::{safe_tan, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
-/// Ten parameters of one direction (seed 000's a1..a10 or b1..b10).
+/// Ten parameters of one direction (Zhang & Li's (2017) a1..a10 or b1..b10).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct UniTireLateral {

@@ -1,17 +1,17 @@
 //! The 2-DOF lateral/yaw vehicle model (states sideslip β and yaw rate r)
 //! with four wheels and lateral load transfer.
 //!
-//! Equations (seed 003 eq. 1–2, seed 004 eq. 1–4), ISO 8855 axes, positive
+//! Equations (Li, Jia & Zhao eq. 1–2, Wang & Liang eq. 1–4), ISO 8855 axes, positive
 //! steer δ turns left:
 //! `m·(v̇ + u·r) = Fyf·cos δ + Fyr`, `Iz·ṙ = a·Fyf·cos δ − b·Fyr`, `v = u·tan β`,
 //! with `Fyf`, `Fyr` the axle forces (sum of the two wheels), both wheels of an
-//! axle at the same slip angle (seed 004). Slip angles use the crate's tyre
+//! axle at the same slip angle (Wang & Liang). Slip angles use the crate's tyre
 //! sign (positive α gives positive force):
 //! exact `αf = δ − atan((v + a·r)/u)`, `αr = −atan((v − b·r)/u)`;
-//! small-angle (seed 003) `αf = δ − β − a·r/u`, `αr = −β + b·r/u`, with
+//! small-angle (Li, Jia & Zhao) `αf = δ − β − a·r/u`, `αr = −β + b·r/u`, with
 //! `m·u·(β̇ + r) + m·u̇·β = Fyf + Fyr` (no cos δ).
 //!
-//! Wheel loads (seed 004 eq. 4): static axle loads `m·g·b/l` and `m·g·a/l`
+//! Wheel loads (Wang & Liang eq. 4): static axle loads `m·g·b/l` and `m·g·a/l`
 //! split evenly, plus a lateral transfer `ΔFz = χ·m·ay·h/d_f` (front) and
 //! `(1 − χ)·m·ay·h/d_r` (rear) from the inner (left, for ay > 0) to the outer
 //! wheel, with χ = b/l by default (transfer in proportion to static axle
@@ -61,7 +61,7 @@ pub struct ModelOptions {
     /// Slip-angle kinematics.
     #[serde(default)]
     pub kinematics: Kinematics,
-    /// Lateral load transfer on (seed 004) or off (axle tyres, seed 003).
+    /// Lateral load transfer on (Wang & Liang) or off (axle tyres, Li, Jia & Zhao).
     #[serde(default = "yes")]
     pub load_transfer: bool,
     /// Effects beyond the papers' model, all off by default.
@@ -71,7 +71,7 @@ pub struct ModelOptions {
 
 /// Effects beyond the papers' model (candidates of the sim-to-real
 /// diagnosis). Every one is off by default, and off it changes nothing: the
-/// base model stays exactly seed 003's / seed 004's.
+/// base model stays exactly Li, Jia & Zhao's / Wang & Liang's.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct Effects {
@@ -605,7 +605,7 @@ impl VehicleModel {
 }
 
 /// The textbook bicycle model the unit tests check against closed forms:
-/// seed 004's sedan on linear tyres (55 and 60 kN/rad per wheel),
+/// Wang & Liang's sedan on linear tyres (55 and 60 kN/rad per wheel),
 /// small-angle kinematics, no load transfer.
 #[cfg(test)]
 pub(crate) fn linear_bicycle() -> VehicleModel {

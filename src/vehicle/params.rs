@@ -28,7 +28,7 @@ pub struct Vehicle {
     /// Wheelbase, m: optional; when given it must equal a + b (to 1 mm).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub wheelbase: Option<f64>,
-    /// Front share χ of the lateral load transfer (default b/l, seed 004).
+    /// Front share χ of the lateral load transfer (default b/l, Wang & Liang).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_transfer_front_share: Option<f64>,
     /// Steering ratio (steering-wheel angle / road-wheel angle): optional;

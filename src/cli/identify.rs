@@ -2,7 +2,7 @@
 
 use anyhow::{anyhow, Context, Result};
 use handling::identify::data::read_rig;
-use handling::identify::grouping::{group, Grouping, SlipAxis};
+use handling::identify::grouping::{group, Grouping, SlipAxis, Variable};
 use handling::identify::mf_staged::{self, StartScheme};
 use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
 use handling::io::tir::TirDocument;
@@ -117,6 +117,20 @@ pub fn identify(o: &Options) -> Result<()> {
     );
     for line in grouped.report.lines() {
         println!("  {line}");
+    }
+    // The models fitted here have no pressure terms: several pressures
+    // pooled into one parameter set blur their differences into the fit.
+    let pressures = grouped
+        .report
+        .levels
+        .iter()
+        .find(|l| l.variable == Variable::Pressure)
+        .map_or(0, |l| l.levels.len());
+    if o.pressure.is_none() && pressures > 1 {
+        eprintln!(
+            "warning: {} pressures pooled into one {} fit, which has no pressure terms: select one with --pressure",
+            pressures, o.model
+        );
     }
     let first = if data.has_lateral() {
         Channel::LateralForce

@@ -316,3 +316,68 @@ fn a_campaign_whose_rig_file_has_the_papers_layout_is_diagnosed() {
         d["verdict"]
     );
 }
+
+#[test]
+fn camber_zero_selects_a_file_without_camber_pooled_pressures_are_warned_about_and_degrees_refused()
+{
+    let alphas: Vec<f64> = (-10..=10).map(|i| (i as f64).to_radians()).collect();
+    let rows = lateral_rows(&[2000.0, 4000.0, 6000.0], &alphas);
+    let pressured: Vec<Vec<f64>> = [83_000.0, 97_000.0]
+        .iter()
+        .flat_map(|p| rows.iter().map(move |r| vec![r[0], r[1], r[2], *p]))
+        .collect();
+    let degrees: Vec<Vec<f64>> = rows
+        .iter()
+        .map(|r| vec![r[0], r[1].to_degrees(), r[2]])
+        .collect();
+    let dir = scratch(&[
+        ("rig.csv", &csv("fz,alpha,fy", &rows)),
+        ("pressures.csv", &csv("fz,alpha,fy,pressure", &pressured)),
+        ("degrees.csv", &csv("fz,alpha,fy", &degrees)),
+    ]);
+    let identify = |file: &str, extra: &[&str]| {
+        let out = dir.path().join(format!("{file}.toml"));
+        let _ = fs::remove_file(out.with_extension("report.json"));
+        let data = dir.path().join(file);
+        let mut args = vec![
+            "identify",
+            data.to_str().unwrap(),
+            "--model",
+            "pac89",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let _ = fs::remove_file(&out);
+        let _ = fs::remove_file(out.with_extension("png"));
+        run(&args)
+    };
+    // FORMATS.md: camber 0 when the column is absent.
+    let o = identify("rig.csv", &["--camber", "0"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Two pressures into PAC89 (no pressure terms): fitted, with a warning
+    // that names the way out; one pressure selected: no warning.
+    let o = identify("pressures.csv", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("2 pressures pooled into one pac89 fit"),
+        "{}",
+        stderr(&o)
+    );
+    let o = identify("pressures.csv", &["--pressure", "83000"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("pooled"), "{}", stderr(&o));
+    // Slip angles in degrees: refused at the first one past 90°, with its
+    // line and column.
+    let o = identify("degrees.csv", &[]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("degrees.csv:") && e.contains("in degrees"),
+        "{e}"
+    );
+    assert!(
+        e.contains(":2:"),
+        "line of the first slip past 90°, column 2: {e}"
+    );
+}

@@ -15,10 +15,10 @@
 
 use super::model::{Augmented, Drive, Observed};
 use crate::measured::MeasuredRun;
-use crate::optim::bounded::{inward_jacobian, BoundedLm};
+use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 use serde::Serialize;
 
 /// A measured channel.
@@ -442,32 +442,6 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let picked: Vec<usize> = rows.iter().flat_map(|r| r.clone()).collect();
     let j = linear.jacobian.select_rows(picked.iter());
     let bounds = &problem.bounds;
-    // The damped step from p with residuals r, and the decrease of ½|r|²
-    // the linear model predicts for it.
-    let step = |p: &[f64], r: &[f64], lambda: f64| -> Option<(Vec<f64>, f64)> {
-        let g = j.transpose() * DVector::from_column_slice(r);
-        let free: Vec<usize> = (0..n)
-            .filter(|&i| {
-                let (lo, hi) = bounds[i];
-                !((p[i] <= lo && g[i] > 0.0) || (p[i] >= hi && g[i] < 0.0))
-            })
-            .collect();
-        let jf = j.select_columns(free.iter());
-        let mut a = jf.transpose() * &jf;
-        let largest = a.diagonal().max().max(1e-300);
-        for k in 0..free.len() {
-            a[(k, k)] += lambda * a[(k, k)].max(1e-12 * largest) + 1e-12 * largest;
-        }
-        let gf = DVector::from_iterator(free.len(), free.iter().map(|&i| g[i]));
-        let d = a.cholesky()?.solve(&gf);
-        let mut out = vec![0.0; n];
-        for (k, &i) in free.iter().enumerate() {
-            out[i] = -d[k];
-        }
-        let jd = &jf * &d;
-        let predicted = gf.dot(&d) - 0.5 * jd.norm_squared();
-        Some((out, predicted))
-    };
     let mut p = full.params.clone();
     let mut r: Vec<f64> = picked.iter().map(|&i| linear.residuals[i]).collect();
     let mut cost = 0.5 * r.iter().map(|e| e * e).sum::<f64>();
@@ -475,7 +449,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut lambda = 0.0;
     let mut evaluations = 0;
     for _ in 0..REFIT_CHORD_STEPS {
-        let Some((d, predicted)) = step(&p, &r, lambda) else {
+        let Some((d, predicted)) = ProjectedModel::new(&j, &r, &p, bounds).step(lambda) else {
             break;
         };
         if predicted <= REFIT_DECREASE * cost {

@@ -80,36 +80,18 @@ impl BoundedLm {
         for _ in 0..self.iterations {
             let j = inward_jacobian(problem, &p, &r, bounds);
             evaluations += n;
-            let g = j.transpose() * DVector::from_column_slice(&r);
-            let free: Vec<usize> = (0..n)
-                .filter(|&i| {
-                    let (lo, hi) = bounds[i];
-                    !((p[i] <= lo && g[i] > 0.0) || (p[i] >= hi && g[i] < 0.0))
-                })
-                .collect();
-            if free.is_empty() || free.iter().all(|&i| g[i] == 0.0) {
+            let model = ProjectedModel::new(&j, &r, &p, bounds);
+            if model.stationary() {
                 converged = true;
                 break;
             }
-            let jf = j.select_columns(free.iter());
-            let a = jf.transpose() * &jf;
-            let gf = DVector::from_iterator(free.len(), free.iter().map(|&i| g[i]));
-            let largest = a.diagonal().max().max(1e-300);
-            let d = a.diagonal().map(|v| v.max(1e-12 * largest));
             let mut accepted = None;
             for _ in 0..TRIALS {
-                let mut damped = a.clone();
-                for k in 0..free.len() {
-                    damped[(k, k)] += lambda * d[k];
-                }
-                let Some(step) = damped.cholesky().map(|c| c.solve(&gf)) else {
+                let Some((step, _)) = model.step(lambda) else {
                     lambda *= 4.0;
                     continue;
                 };
-                let mut q = p.clone();
-                for (k, &i) in free.iter().enumerate() {
-                    q[i] -= step[k];
-                }
+                let mut q: Vec<f64> = p.iter().zip(&step).map(|(p, d)| p + d).collect();
                 clamp(&mut q);
                 problem.residuals(&q, &mut trial);
                 evaluations += 1;
@@ -151,6 +133,59 @@ impl BoundedLm {
     }
 }
 
+/// The linear model of the residuals at an iterate `p`: the parameters
+/// left free (not on a bound with the gradient pointing out of the box) and
+/// the normal equations over them.
+pub struct ProjectedModel {
+    free: Vec<usize>,
+    n: usize,
+    jf: DMatrix<f64>,
+    a: DMatrix<f64>,
+    g: DVector<f64>,
+}
+
+impl ProjectedModel {
+    /// The model of Jacobian `j` and residuals `r` at `p` within `bounds`.
+    pub fn new(j: &DMatrix<f64>, r: &[f64], p: &[f64], bounds: &[(f64, f64)]) -> Self {
+        let n = p.len();
+        let g = j.transpose() * DVector::from_column_slice(r);
+        let free: Vec<usize> = (0..n)
+            .filter(|&i| {
+                let (lo, hi) = bounds[i];
+                !((p[i] <= lo && g[i] > 0.0) || (p[i] >= hi && g[i] < 0.0))
+            })
+            .collect();
+        let jf = j.select_columns(free.iter());
+        let a = jf.transpose() * &jf;
+        let g = DVector::from_iterator(free.len(), free.iter().map(|&i| g[i]));
+        Self { free, n, jf, a, g }
+    }
+
+    /// No free parameter can lower the cost to first order.
+    pub fn stationary(&self) -> bool {
+        self.free.is_empty() || self.g.iter().all(|&v| v == 0.0)
+    }
+
+    /// The step `(J_FᵀJ_F + λ·diag(J_FᵀJ_F))·δ = −J_Fᵀ·r` (zero for the held
+    /// parameters; the diagonal floored at 1e-12 of its largest entry, which
+    /// is also added, so that λ = 0 solves a singular system), and the
+    /// decrease of ½|r|² the linear model predicts for it.
+    pub fn step(&self, lambda: f64) -> Option<(Vec<f64>, f64)> {
+        let largest = self.a.diagonal().max().max(1e-300);
+        let mut damped = self.a.clone();
+        for k in 0..self.free.len() {
+            damped[(k, k)] += lambda * self.a[(k, k)].max(1e-12 * largest) + 1e-12 * largest;
+        }
+        let d = damped.cholesky()?.solve(&self.g);
+        let mut out = vec![0.0; self.n];
+        for (k, &i) in self.free.iter().enumerate() {
+            out[i] = -d[k];
+        }
+        let predicted = self.g.dot(&d) - 0.5 * (&self.jf * &d).norm_squared();
+        Some((out, predicted))
+    }
+}
+
 fn half_sum_of_squares(r: &[f64]) -> f64 {
     0.5 * r.iter().map(|e| e * e).sum::<f64>()
 }
@@ -185,77 +220,43 @@ pub fn inward_jacobian(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Rosenbrock's valley as residuals (10·(y − x²), 1 − x).
-    struct Rosenbrock;
-    impl Residuals for Rosenbrock {
-        fn count(&self) -> usize {
-            2
-        }
-        fn residuals(&self, p: &[f64], out: &mut [f64]) {
-            out[0] = 10.0 * (p[1] - p[0] * p[0]);
-            out[1] = 1.0 - p[0];
-        }
-    }
-
-    /// `y = a·exp(−b·t)` sampled from a = 3, b = 2.
-    struct Decay {
-        t: Vec<f64>,
-        y: Vec<f64>,
-    }
-    impl Decay {
-        fn new() -> Self {
-            let t: Vec<f64> = (0..40).map(|i| 0.05 * i as f64).collect();
-            let y = t.iter().map(|t| 3.0 * (-2.0 * t).exp()).collect();
-            Self { t, y }
-        }
-    }
-    impl Residuals for Decay {
-        fn count(&self) -> usize {
-            self.t.len()
-        }
-        fn residuals(&self, p: &[f64], out: &mut [f64]) {
-            for ((o, t), y) in out.iter_mut().zip(&self.t).zip(&self.y) {
-                *o = p[0] * (-p[1] * t).exp() - y;
-            }
-        }
-    }
+    use crate::optim::local::tests::{decay, Rosen};
 
     #[test]
     fn finds_an_interior_optimum() {
         let lm = BoundedLm::default();
-        let r = lm.minimize(&Rosenbrock, &[-1.2, 1.0], &[(-5.0, 5.0), (-5.0, 5.0)]);
+        let r = lm.minimize(&Rosen, &[-1.2, 1.0], &[(-5.0, 5.0), (-5.0, 5.0)]);
         assert!(r.converged);
         assert!((r.params[0] - 1.0).abs() < 1e-6, "{:?}", r.params);
         assert!((r.params[1] - 1.0).abs() < 1e-6, "{:?}", r.params);
-        let d = Decay::new();
-        let r = lm.minimize(&d, &[1.0, 0.5], &[(0.0, 10.0), (0.0, 10.0)]);
-        assert!((r.params[0] - 3.0).abs() < 1e-7 && (r.params[1] - 2.0).abs() < 1e-7);
+        // y = 2·exp(−0.7·t).
+        let r = lm.minimize(&decay(), &[1.0, 0.2], &[(0.0, 10.0), (0.0, 10.0)]);
+        assert!((r.params[0] - 2.0).abs() < 1e-7 && (r.params[1] - 0.7).abs() < 1e-7);
     }
 
     #[test]
     fn stops_on_a_bound_at_the_conditional_optimum_in_few_evaluations() {
-        // b's optimum (2) lies beyond its upper bound 1: the answer is b = 1
-        // and the least-squares a for b = 1, a = Σ y·e^(−t) / Σ e^(−2t).
-        let d = Decay::new();
-        let r = BoundedLm::default().minimize(&d, &[1.0, 0.5], &[(0.0, 10.0), (0.0, 1.0)]);
-        let (num, den) = d.t.iter().zip(&d.y).fold((0.0, 0.0), |(n, m), (t, y)| {
-            (n + y * (-t).exp(), m + (-2.0 * t).exp())
+        // b's optimum (0.7) lies beyond its upper bound 0.5: the answer is
+        // b = 0.5 and the least-squares a for it, a = Σ y·e^(−bt) / Σ e^(−2bt).
+        let d = decay();
+        let bounds = [(0.0, 10.0), (0.0, 0.5)];
+        let (num, den) = d.0.iter().zip(&d.1).fold((0.0, 0.0), |(n, m), (t, y)| {
+            (n + y * (-0.5 * t).exp(), m + (-t).exp())
         });
+        let r = BoundedLm::default().minimize(&d, &[1.0, 0.2], &bounds);
         assert!(r.converged);
-        assert_eq!(r.params[1], 1.0);
+        assert_eq!(r.params[1], 0.5);
         assert!((r.params[0] - num / den).abs() < 1e-6, "{:?}", r.params);
         assert!(r.evaluations < 60, "{} evaluations", r.evaluations);
         // Started on the bound, with the gradient pointing out: held there.
-        let r = BoundedLm::default().minimize(&d, &[1.0, 1.0], &[(0.0, 10.0), (0.0, 1.0)]);
-        assert_eq!(r.params[1], 1.0);
+        let r = BoundedLm::default().minimize(&d, &[1.0, 0.5], &bounds);
+        assert_eq!(r.params[1], 0.5);
         assert!((r.params[0] - num / den).abs() < 1e-6);
     }
 
     #[test]
     fn leaves_a_bound_whose_gradient_points_inside() {
-        let d = Decay::new();
-        let r = BoundedLm::default().minimize(&d, &[1.0, 0.0], &[(0.0, 10.0), (0.0, 10.0)]);
-        assert!((r.params[1] - 2.0).abs() < 1e-7, "{:?}", r.params);
+        let r = BoundedLm::default().minimize(&decay(), &[1.0, 0.0], &[(0.0, 10.0), (0.0, 10.0)]);
+        assert!((r.params[1] - 0.7).abs() < 1e-7, "{:?}", r.params);
     }
 }

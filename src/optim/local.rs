@@ -184,11 +184,11 @@ impl GaussNewton {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     /// Rosenbrock as least squares: e = (10·(y − x²), 1 − x).
-    struct Rosen;
+    pub(crate) struct Rosen;
     impl Residuals for Rosen {
         fn count(&self) -> usize {
             2
@@ -200,7 +200,7 @@ mod tests {
     }
 
     /// Exponential decay fitted to exact data: known optimum (2, 0.7).
-    struct Decay(Vec<f64>, Vec<f64>);
+    pub(crate) struct Decay(pub(crate) Vec<f64>, pub(crate) Vec<f64>);
     impl Residuals for Decay {
         fn count(&self) -> usize {
             self.0.len()
@@ -212,7 +212,7 @@ mod tests {
         }
     }
 
-    fn decay() -> Decay {
+    pub(crate) fn decay() -> Decay {
         let t: Vec<f64> = (0..30).map(|i| i as f64 * 0.2).collect();
         let y = t.iter().map(|t| 2.0 * (-0.7 * t).exp()).collect();
         Decay(t, y)

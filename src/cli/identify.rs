@@ -93,16 +93,7 @@ pub fn identify(o: &Options) -> Result<()> {
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.sort_by(f64::total_cmp);
     let tyre0 = start(o.model, loads[loads.len() / 2])?;
-    let out = o.out.map_or_else(
-        || {
-            let stem = o
-                .data
-                .file_stem()
-                .map_or("data".into(), |s| s.to_string_lossy().into_owned());
-            PathBuf::from("out").join(format!("{stem}_{}.toml", o.model))
-        },
-        Path::to_path_buf,
-    );
+    let out = output_path(o, "toml");
     let report_path = out.with_extension("report.json");
     let png_path = out.with_extension("png");
     for f in [&out, &report_path, &png_path] {
@@ -362,19 +353,24 @@ pub fn identify(o: &Options) -> Result<()> {
     Ok(())
 }
 
-/// `handling identify --model mf61|mf62`: Wei et al. (2010)'s five stages;
-/// writes the .tir and `<out>.report.json`.
-fn identify_mf(o: &Options, version: MfVersion) -> Result<()> {
-    let out = o.out.map_or_else(
+/// The tyre file to write: `--out`, else `out/<data stem>_<model>.<ext>`.
+fn output_path(o: &Options, ext: &str) -> PathBuf {
+    o.out.map_or_else(
         || {
             let stem = o
                 .data
                 .file_stem()
                 .map_or("data".into(), |s| s.to_string_lossy().into_owned());
-            PathBuf::from("out").join(format!("{stem}_{}.tir", o.model))
+            PathBuf::from("out").join(format!("{stem}_{}.{ext}", o.model))
         },
         Path::to_path_buf,
-    );
+    )
+}
+
+/// `handling identify --model mf61|mf62`: Wei et al. (2010)'s five stages;
+/// writes the .tir and `<out>.report.json`.
+fn identify_mf(o: &Options, version: MfVersion) -> Result<()> {
+    let out = output_path(o, "tir");
     let report_path = out.with_extension("report.json");
     let mut inputs = vec![o.data.to_path_buf()];
     inputs.extend(o.template.map(Path::to_path_buf));

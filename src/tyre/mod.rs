@@ -183,6 +183,67 @@ pub enum Tyre {
     MagicFormula(Box<MagicFormula>),
 }
 
+/// The tyre models, a closed set: the `model` key of a tyre file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum ModelName {
+    /// [`Gim`].
+    Gim,
+    /// [`MagicSimple`].
+    MagicSimple,
+    /// [`UniTire`].
+    Unitire,
+    /// [`Pac89`].
+    Pac89,
+    /// [`Linear`].
+    Linear,
+    /// [`MagicFormula`].
+    MagicFormula,
+}
+
+impl ModelName {
+    /// Every model, in the order of the [`Tyre`] variants.
+    pub const ALL: [ModelName; 6] = [
+        ModelName::Gim,
+        ModelName::MagicSimple,
+        ModelName::Unitire,
+        ModelName::Pac89,
+        ModelName::Linear,
+        ModelName::MagicFormula,
+    ];
+
+    /// The name as a tyre file writes it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ModelName::Gim => "gim",
+            ModelName::MagicSimple => "magic-simple",
+            ModelName::Unitire => "unitire",
+            ModelName::Pac89 => "pac89",
+            ModelName::Linear => "linear",
+            ModelName::MagicFormula => "magic-formula",
+        }
+    }
+}
+
+impl std::fmt::Display for ModelName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::str::FromStr for ModelName {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.as_str() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|m| m.as_str()).collect();
+                format!("unknown tyre model `{s}`: one of {}", names.join(", "))
+            })
+    }
+}
+
 /// Names accepted by the `model` key.
 pub const MODEL_NAMES: [&str; 6] = [
     "gim",
@@ -194,16 +255,21 @@ pub const MODEL_NAMES: [&str; 6] = [
 ];
 
 impl Tyre {
+    /// The model of this tyre.
+    pub fn model(&self) -> ModelName {
+        match self {
+            Tyre::Gim(_) => ModelName::Gim,
+            Tyre::MagicSimple(_) => ModelName::MagicSimple,
+            Tyre::Unitire(_) => ModelName::Unitire,
+            Tyre::Pac89(_) => ModelName::Pac89,
+            Tyre::Linear(_) => ModelName::Linear,
+            Tyre::MagicFormula(_) => ModelName::MagicFormula,
+        }
+    }
+
     /// The `model` key of this tyre.
     pub fn model_name(&self) -> &'static str {
-        match self {
-            Tyre::Gim(_) => "gim",
-            Tyre::MagicSimple(_) => "magic-simple",
-            Tyre::Unitire(_) => "unitire",
-            Tyre::Pac89(_) => "pac89",
-            Tyre::Linear(_) => "linear",
-            Tyre::MagicFormula(_) => "magic-formula",
-        }
+        self.model().as_str()
     }
 
     fn inner(&self) -> &dyn TyreModel {

@@ -46,7 +46,7 @@ fn step_steer(c: &mut Criterion) {
     // measured on), rows every 0.1 s.
     let coarse = Integrator { step: 0.1, ..dopri };
     g.bench_function("dopri5", |b| {
-        b.iter(|| coarse.run_dopri5(black_box(&model), black_box(&man), State::default(), &tol))
+        b.iter(|| coarse.simulate(black_box(&model), black_box(&man), State::default()))
     });
     // The same and every GB/T 6323 metric from the dense output.
     g.bench_function("dopri5_metrics", |b| {

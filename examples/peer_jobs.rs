@@ -69,6 +69,7 @@ fn main() {
         ..Integrator::default()
     };
     let (h, sol) = integ.run_dopri5(&model, &man, State::default(), &tol);
+    let sol = sol.expect("a (β, r) model has a dense solution");
     let csv: String = std::iter::once("t,yaw_rate,beta\n".to_string())
         .chain(
             h.t.iter()

@@ -10,6 +10,7 @@
 //! rad; scales are dimensionless factors on the base model's value.
 
 use super::sensors::Sensors;
+pub use crate::vehicle::RollModel;
 use serde::Serialize;
 
 /// One candidate effect.
@@ -217,41 +218,6 @@ impl EffectKind {
             EffectKind::AccelerometerPosition => {
                 "ay error proportional to yaw acceleration, none in steady state: a frequency sweep"
             }
-        }
-    }
-}
-
-/// Roll degree of freedom used by roll steer and roll camber: a second-order
-/// response of the body roll φ to lateral acceleration,
-/// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct RollModel {
-    /// Steady roll per lateral acceleration k, rad per m/s².
-    pub gradient: f64,
-    /// Undamped natural frequency, Hz.
-    pub frequency: f64,
-    /// Damping ratio ζ.
-    pub damping: f64,
-}
-
-impl RollModel {
-    /// Checks the values for physical sense; the error names the key.
-    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
-        use crate::error::ParamError;
-        ParamError::non_negative("gradient", self.gradient)?;
-        ParamError::positive("frequency", self.frequency)?;
-        ParamError::positive("damping", self.damping)
-    }
-}
-
-impl Default for RollModel {
-    /// A passenger car: 4°/g, 1.5 Hz, ζ = 0.5.
-    fn default() -> Self {
-        Self {
-            gradient: 4f64.to_radians() / crate::vehicle::G,
-            frequency: 1.5,
-            damping: 0.5,
         }
     }
 }

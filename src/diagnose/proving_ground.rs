@@ -51,6 +51,7 @@
 
 use crate::error::ParamError;
 use crate::manoeuvre::{interpolate, Manoeuvre};
+use crate::sim::ode::{self, OdeSystem};
 use serde::Serialize;
 
 /// Standard gravity, m/s² (this module's own constant: it shares nothing
@@ -325,6 +326,24 @@ pub struct FourWheel {
 /// State: v_y, r, φ, p, lagged slip angles FL, FR, RL, RR.
 type State = [f64; 8];
 
+/// The car driven by a manoeuvre, as an ODE for the crate's integrator;
+/// keeps the last evaluation for the recorded row.
+struct Driven<'a> {
+    car: &'a FourWheel,
+    manoeuvre: &'a Manoeuvre,
+    last: Option<Evaluation>,
+}
+
+impl OdeSystem<8> for Driven<'_> {
+    fn derivatives(&mut self, t: f64, x: &State) -> State {
+        let m = self.manoeuvre;
+        let e = self.car.evaluate(x, m.steer(t), m.speed(t));
+        let d = e.derivative;
+        self.last = Some(e);
+        d
+    }
+}
+
 /// One evaluation's derived quantities.
 #[derive(Debug, Clone, Copy)]
 struct Evaluation {
@@ -476,45 +495,26 @@ impl FourWheel {
             roll: col(),
             loads: Vec::with_capacity(n + 1),
         };
-        let mut x: State = [0.0; 8];
-        let add = |x: &State, k: &State, s: f64| {
-            let mut y = *x;
-            for (yi, ki) in y.iter_mut().zip(k) {
-                *yi += s * ki;
-            }
-            y
+        // The speed is prescribed: v_y carries the speed change's share of
+        // the sideslip through the exact kinematics of each wheel.
+        let mut sys = Driven {
+            car: self,
+            manoeuvre: m,
+            last: None,
         };
-        for i in 0..=n {
-            let t = t0 + step * i as f64;
-            let (d0, u0) = (m.steer(t), m.speed(t));
-            let k1 = self.evaluate(&x, d0, u0);
+        ode::rk4(&mut sys, t0, step, n, [0.0; 8], |sys, _, t, x| {
+            let k1 = sys.last.as_ref().expect("the first stage was evaluated");
+            let u = m.speed(t);
             out.t.push(t);
-            out.steer.push(d0);
-            out.speed.push(u0);
-            out.beta.push((x[0] / u0.max(MIN_WHEEL_SPEED)).atan());
+            out.steer.push(m.steer(t));
+            out.speed.push(u);
+            out.beta.push((x[0] / u.max(MIN_WHEEL_SPEED)).atan());
             out.yaw_rate.push(x[1]);
             out.ay.push(k1.ay);
             out.roll.push(x[2]);
             out.loads.push(k1.loads);
-            if i == n {
-                break;
-            }
-            let th = t + 0.5 * step;
-            let (d1, u1) = (m.steer(th), m.speed(th));
-            let (d2, u2) = (m.steer(t + step), m.speed(t + step));
-            let k2 = self.evaluate(&add(&x, &k1.derivative, 0.5 * step), d1, u1);
-            let k3 = self.evaluate(&add(&x, &k2.derivative, 0.5 * step), d1, u1);
-            let k4 = self.evaluate(&add(&x, &k3.derivative, step), d2, u2);
-            // The speed is prescribed: v_y carries the speed change's share
-            // of the sideslip through the exact kinematics of each wheel.
-            for (j, xj) in x.iter_mut().enumerate() {
-                *xj += step / 6.0
-                    * (k1.derivative[j]
-                        + 2.0 * k2.derivative[j]
-                        + 2.0 * k3.derivative[j]
-                        + k4.derivative[j]);
-            }
-        }
+            true
+        });
         out
     }
 

@@ -19,8 +19,10 @@
 //! reserved before it starts); the adaptive one allocates only the dense
 //! solution's growth. Units: SI, rad.
 
+mod driven;
 pub mod ode;
 
+pub use driven::Drive;
 pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
 
 use crate::manoeuvre::Manoeuvre;
@@ -55,13 +57,16 @@ pub struct TimeHistory {
     pub fy_rear: Vec<f64>,
     /// Wheel loads FL, FR, RL, RR, N.
     pub fz: [Vec<f64>; 4],
+    /// Body roll, rad: recorded only when the roll state is integrated
+    /// (empty otherwise).
+    pub roll: Vec<f64>,
     /// Evaluations of the tyre set made by the load-transfer solves, over all
     /// RK stages (a cost diagnostic).
     pub load_evaluations: u64,
 }
 
 impl TimeHistory {
-    fn with_capacity(n: usize) -> Self {
+    fn with_capacity(n: usize, roll: bool) -> Self {
         let v = || Vec::with_capacity(n);
         Self {
             t: v(),
@@ -75,6 +80,7 @@ impl TimeHistory {
             fy_front: v(),
             fy_rear: v(),
             fz: [v(), v(), v(), v()],
+            roll: if roll { v() } else { Vec::new() },
             load_evaluations: 0,
         }
     }
@@ -107,7 +113,7 @@ impl TimeHistory {
 
     /// Column names and columns, in output order (for CSV).
     pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
-        vec![
+        let mut columns: Vec<(&'static str, &[f64])> = vec![
             ("t", &self.t),
             ("steer", &self.steer),
             ("speed", &self.speed),
@@ -122,7 +128,11 @@ impl TimeHistory {
             ("fz_fr", &self.fz[1]),
             ("fz_rl", &self.fz[2]),
             ("fz_rr", &self.fz[3]),
-        ]
+        ];
+        if !self.roll.is_empty() {
+            columns.push(("roll", &self.roll));
+        }
+        columns
     }
 }
 
@@ -258,53 +268,14 @@ pub fn load_tolerance(tol: &Tolerances) -> f64 {
     tol.rtol.clamp(1e-13, 1e-9)
 }
 
-/// The vehicle model driven by a manoeuvre, as an ODE in (β, r).
-struct Driven<'a> {
-    model: &'a VehicleModel,
-    manoeuvre: &'a Manoeuvre,
-    integrator: &'a Integrator,
-    seed: LoadTransferSeed,
-    /// The last two (t, ay) solutions of the load-transfer loop.
-    history: [(f64, f64); 2],
-    load_tolerance: f64,
-    load_evaluations: u64,
-}
-
-impl OdeSystem<2> for Driven<'_> {
-    fn derivatives(&mut self, t: f64, x: &[f64; 2]) -> [f64; 2] {
-        let inp = self.integrator.inputs(self.manoeuvre, t);
-        let state = State {
-            beta: x[0],
-            yaw_rate: x[1],
-        };
-        // The stages of an adaptive step are not evenly spaced in time, so
-        // the solve starts from the linear extrapolation in time of the last
-        // two solutions (from the last one alone when they are far apart or
-        // at the same time) rather than the seed's extrapolation over equal
-        // intervals.
-        let [(t1, a1), (t0, a0)] = self.history;
-        let pred = if t1 != t0 && (t - t1).abs() <= 2.0 * (t1 - t0).abs() {
-            a1 + (a1 - a0) / (t1 - t0) * (t - t1)
-        } else {
-            a1
-        };
-        self.seed.ay = [pred; 3];
-        let o = self
-            .model
-            .evaluate_to(&state, &inp, &mut self.seed, self.load_tolerance);
-        self.history = [(t, o.ay), (t1, a1)];
-        self.load_evaluations += u64::from(o.load_iterations);
-        [o.beta_rate, o.yaw_acceleration]
-    }
-}
-
 /// A simulation: the recorded rows and, for an adaptive method, the dense
 /// solution they were sampled from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Simulation {
     /// Rows every output step.
     pub history: TimeHistory,
-    /// The continuous solution (Dormand–Prince only).
+    /// The continuous solution (Dormand–Prince with the (β, r) state only:
+    /// with extra states the metrics are measured on the rows).
     pub dense: Option<DenseSolution<2>>,
 }
 
@@ -419,10 +390,7 @@ impl Integrator {
             },
             Method::Dopri5(tol) => {
                 let (history, dense) = self.run_dopri5(model, manoeuvre, x0, &tol);
-                Simulation {
-                    history,
-                    dense: Some(dense),
-                }
+                Simulation { history, dense }
             }
         }
     }
@@ -455,93 +423,5 @@ impl Integrator {
                 )
             }
         }
-    }
-
-    /// The error-controlled solution of `manoeuvre` from `x0` (restarted at
-    /// the manoeuvre's breakpoints) and its history sampled every `step`.
-    pub fn run_dopri5(
-        &self,
-        model: &VehicleModel,
-        manoeuvre: &Manoeuvre,
-        x0: State,
-        tol: &Tolerances,
-    ) -> (TimeHistory, DenseSolution<2>) {
-        let mut sys = Driven {
-            model,
-            manoeuvre,
-            integrator: self,
-            seed: LoadTransferSeed::default(),
-            history: [(f64::NAN, 0.0); 2],
-            load_tolerance: load_tolerance(tol),
-            load_evaluations: 0,
-        };
-        let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
-        let sol = ode::dopri5(
-            &mut sys,
-            t0,
-            t1,
-            [x0.beta, x0.yaw_rate],
-            &manoeuvre.breakpoints(),
-            tol,
-        );
-        let n = ((t1 - t0) / self.step).round().max(0.0) as usize;
-        let mut hist = TimeHistory::with_capacity(n + 1);
-        let mut seed = LoadTransferSeed::default();
-        let times: Vec<f64> = (0..=n)
-            .map(|i| (t0 + i as f64 * self.step).min(t1))
-            .collect();
-        let mut states = Vec::new();
-        sol.states_into(&times, &mut states);
-        for (&t, x) in times.iter().zip(&states) {
-            let x = State {
-                beta: x[0],
-                yaw_rate: x[1],
-            };
-            let inp = self.inputs(manoeuvre, t);
-            let o = model.evaluate_to(&x, &inp, &mut seed, sys.load_tolerance);
-            hist.push(t, &x, &inp, &o);
-        }
-        hist.load_evaluations = sys.load_evaluations;
-        (hist, sol)
-    }
-
-    fn run_rk4(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> TimeHistory {
-        let h = self.step;
-        let t0 = manoeuvre.start_time();
-        let n = ((manoeuvre.end_time() - t0) / h).round().max(0.0) as usize;
-        let mut hist = TimeHistory::with_capacity(n + 1);
-        let mut x = x0;
-        // One seed per RK stage: stage j of step n is predicted from stage j
-        // of steps n − 1 and n − 2, which sit at evenly spaced times.
-        let mut seeds = [LoadTransferSeed::default(); 4];
-        let add = |x: &State, k: &Outputs, s: f64| State {
-            beta: x.beta + s * k.beta_rate,
-            yaw_rate: x.yaw_rate + s * k.yaw_acceleration,
-        };
-        for i in 0..=n {
-            let t = t0 + i as f64 * h;
-            let inp1 = self.inputs(manoeuvre, t);
-            let k1 = model.evaluate_seeded(&x, &inp1, &mut seeds[0]);
-            hist.push(t, &x, &inp1, &k1);
-            if i == n {
-                break;
-            }
-            let inp2 = self.inputs(manoeuvre, t + 0.5 * h);
-            let inp4 = self.inputs(manoeuvre, t + h);
-            let k2 = model.evaluate_seeded(&add(&x, &k1, 0.5 * h), &inp2, &mut seeds[1]);
-            let k3 = model.evaluate_seeded(&add(&x, &k2, 0.5 * h), &inp2, &mut seeds[2]);
-            let k4 = model.evaluate_seeded(&add(&x, &k3, h), &inp4, &mut seeds[3]);
-            hist.load_evaluations += u64::from(
-                k1.load_iterations + k2.load_iterations + k3.load_iterations + k4.load_iterations,
-            );
-            x.beta +=
-                h / 6.0 * (k1.beta_rate + 2.0 * k2.beta_rate + 2.0 * k3.beta_rate + k4.beta_rate);
-            x.yaw_rate += h / 6.0
-                * (k1.yaw_acceleration
-                    + 2.0 * k2.yaw_acceleration
-                    + 2.0 * k3.yaw_acceleration
-                    + k4.yaw_acceleration);
-        }
-        hist
     }
 }

@@ -165,7 +165,9 @@ fn load_transfer_loop_is_solved_not_lagged() {
     for (a, b) in fz.iter().zip(o.fz) {
         assert_relative_eq!(*a, b, max_relative = 1e-9);
     }
-    let (f, r) = m.axle_forces(o.alpha_front, o.alpha_rear, &fz, &inp);
+    let wheel = |tyre, alpha, i: usize| VehicleModel::wheel_force(tyre, alpha, fz[i], &inp);
+    let f = wheel(&m.front, o.alpha_front, 0) + wheel(&m.front, o.alpha_front, 1);
+    let r = wheel(&m.rear, o.alpha_rear, 2) + wheel(&m.rear, o.alpha_rear, 3);
     assert_relative_eq!(
         (f * inp.steer.cos() + r) / m.vehicle.mass,
         o.ay,
@@ -256,6 +258,7 @@ fn effects_are_off_by_default_and_change_nothing_then() {
     zero.options.effects = Effects {
         aero_load: [0.0, 0.0],
         road_bank: 0.0,
+        ..Effects::default()
     };
     let x = State {
         beta: -0.01,
@@ -315,6 +318,7 @@ fn the_exact_equilibrium_solver_follows_bank_and_aero() {
     m.options.effects = Effects {
         aero_load: [0.3, 0.5],
         road_bank: 0.04,
+        ..Effects::default()
     };
     let c = Condition {
         steer: 0.03,
@@ -425,12 +429,13 @@ fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
         atol: 1e-11,
         max_step: 0.05,
     };
-    let (h, sol) = Integrator {
+    let sim = Integrator {
         step: 1e-3,
         method: Method::Dopri5(tol),
         ..Integrator::default()
     }
-    .run_dopri5(&m, &man, State::default(), &tol);
+    .simulate(&m, &man, State::default());
+    let (h, sol) = (sim.history, sim.dense.expect("a dense solution"));
     assert_eq!(h.len(), 4001);
     let r_ss = fine.yaw_rate.last().copied().unwrap();
     for (i, t) in h.t.iter().enumerate() {
@@ -446,4 +451,95 @@ fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
     }
     // A few hundred steps, not thousands.
     assert!(sol.stats.accepted < 400, "{:?}", sol.stats);
+}
+
+#[test]
+fn with_every_effect_off_the_extra_states_do_not_feed_back_bit_for_bit() {
+    // The one right-hand side: with the effects off, whatever the lag and
+    // roll states hold, β̇, ṙ and every output are those of (β, r) alone,
+    // to the bit — and those match the 2-DOF equations written out here.
+    for kinematics in [Kinematics::Exact, Kinematics::SmallAngle] {
+        let mut m = nonlinear_model();
+        m.options.kinematics = kinematics;
+        let inp = Inputs {
+            steer: 0.05,
+            speed: 21.0,
+            speed_rate: 0.3,
+            friction: 0.9,
+        };
+        let x = State {
+            beta: -0.02,
+            yaw_rate: 0.35,
+        };
+        let plain = m.evaluate(&x, &inp);
+        let (dx, o) = m.rates(
+            &[x.beta, x.yaw_rate, 0.3, -0.2, 0.07, -0.4],
+            &inp,
+            &mut LoadTransferSeed::default(),
+            LOAD_TOLERANCE,
+        );
+        assert_eq!(o, plain);
+        assert_eq!([dx[0], dx[1]], [plain.beta_rate, plain.yaw_acceleration]);
+        // The equations, from the outputs' own forces.
+        let v = &m.vehicle;
+        let cos = if kinematics == Kinematics::Exact {
+            inp.steer.cos()
+        } else {
+            1.0
+        };
+        let ay = (o.fy_front * cos + o.fy_rear) / v.mass;
+        assert_relative_eq!(o.ay, ay, max_relative = 1e-14);
+        let yaw = (v.a * o.fy_front * cos - v.b * o.fy_rear) / v.yaw_inertia;
+        assert_relative_eq!(o.yaw_acceleration, yaw, max_relative = 1e-13);
+        let (af, ar) = m.slip_angles(&x, &inp);
+        assert_eq!((o.alpha_front, o.alpha_rear), (af, ar));
+    }
+}
+
+#[test]
+fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
+    // Roll steer (ε_f, ε_r) changes the understeer gradient by
+    // −(ε_f − ε_r)·k (k the roll gradient); a relaxation length only delays
+    // the response. Both methods integrate six states and record the roll.
+    use crate::sim::{Method, Tolerances};
+    let mut m = linear_model();
+    m.options.effects.roll_steer = [-0.1, 0.05];
+    m.options.effects.relaxation_length = 0.4;
+    let k = m.options.effects.roll.gradient;
+    let (u, steer) = (20.0, 0.01);
+    let l = m.vehicle.wheelbase();
+    let gradient = m.understeer_gradient() - (-0.1 - 0.05) * k;
+    let expected = steer * u / (l + gradient * u * u);
+    for method in [Method::Rk4, Method::Dopri5(Tolerances::default())] {
+        let integrator = Integrator {
+            method,
+            ..Integrator::default()
+        };
+        let sim = integrator.simulate(&m, &step(u, steer), State::default());
+        let h = &sim.history;
+        let r = *h.yaw_rate.last().unwrap();
+        assert_relative_eq!(r, expected, max_relative = 1e-6);
+        assert_eq!(h.roll.len(), h.t.len());
+        assert_relative_eq!(
+            *h.roll.last().unwrap(),
+            k * h.ay.last().unwrap(),
+            max_relative = 1e-6
+        );
+        assert!(sim.dense.is_none());
+        // Lagged: the tyres' slip angle trails its kinematic value early on.
+        let i = h.t.iter().position(|&t| t > 0.505).unwrap();
+        let (af, _) = m.slip_angles(
+            &State {
+                beta: h.beta[i],
+                yaw_rate: h.yaw_rate[i],
+            },
+            &Inputs {
+                steer: h.steer[i] + m.options.effects.roll_steer[0] * h.roll[i],
+                speed: u,
+                speed_rate: 0.0,
+                friction: 1.0,
+            },
+        );
+        assert!(h.alpha_front[i] < 0.8 * af, "{} {af}", h.alpha_front[i]);
+    }
 }

@@ -1,7 +1,9 @@
 use super::*;
+use crate::manoeuvre::Manoeuvre;
 use crate::manoeuvre::{SineSteer, StepSteer};
 use crate::sim::Integrator;
 use crate::tyre::Pac89;
+use crate::tyre::Tyre;
 use crate::vehicle::{State, Vehicle};
 
 fn pac89_model() -> VehicleModel {
@@ -29,7 +31,7 @@ fn step(speed: f64, amplitude: f64, end: f64) -> Manoeuvre {
 fn steady_yaw_rate(model: &Augmented, speed: f64, steer: f64) -> f64 {
     let drive = Drive::new(&step(speed, steer, 15.0), 0.002);
     let r = model.simulate(&drive, [0.0; 6]);
-    *r.history.yaw_rate.last().unwrap()
+    *r.yaw_rate.last().unwrap()
 }
 
 #[test]
@@ -44,11 +46,11 @@ fn with_every_effect_off_it_is_the_base_model() {
     .run(&base, &m, State::default());
     let a = Augmented::new(base, 0.9);
     let r = a.simulate(&Drive::new(&m, 1e-3), [0.0; 6]);
-    assert_eq!(r.history.t.len(), reference.t.len());
+    assert_eq!(r.t.len(), reference.t.len());
     for i in 0..reference.t.len() {
-        assert!((r.history.yaw_rate[i] - reference.yaw_rate[i]).abs() < 1e-9);
-        assert!((r.history.beta[i] - reference.beta[i]).abs() < 1e-9);
-        assert!((r.history.ay[i] - reference.ay[i]).abs() < 1e-7);
+        assert!((r.yaw_rate[i] - reference.yaw_rate[i]).abs() < 1e-9);
+        assert!((r.beta[i] - reference.beta[i]).abs() < 1e-9);
+        assert!((r.ay[i] - reference.ay[i]).abs() < 1e-7);
     }
 }
 
@@ -108,11 +110,11 @@ fn relaxation_length_is_a_first_order_lag_of_the_slip_angles() {
     let m = step(20.0, 0.02, 6.0);
     let drive = Drive::new(&m, 1e-3);
     let mut a = Augmented::new(base, 1.0);
-    let r0 = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+    let r0 = a.simulate(&drive, [0.0; 6]).yaw_rate;
     let mut gaps = Vec::new();
     for sigma in [0.8, 0.08, 0.008] {
         a.effects.relaxation_length = sigma;
-        let r = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+        let r = a.simulate(&drive, [0.0; 6]).yaw_rate;
         let gap = r
             .iter()
             .zip(&r0)
@@ -129,7 +131,7 @@ fn relaxation_length_is_a_first_order_lag_of_the_slip_angles() {
     // At 0.5 s + 0.1 s (the end of the steer ramp) a lagging tyre has built
     // less yaw rate.
     a.effects.relaxation_length = 0.8;
-    let r = a.simulate(&drive, [0.0; 6]).history.yaw_rate;
+    let r = a.simulate(&drive, [0.0; 6]).yaw_rate;
     assert!(r[650] < 0.9 * r0[650]);
 }
 
@@ -179,9 +181,9 @@ fn roll_follows_lateral_acceleration_and_camber_thrust_adds_force() {
     let drive = Drive::new(&step(20.0, 0.02, 10.0), 1e-3);
     let r = a.simulate(&drive, [0.0; 6]);
     let n = r.roll.len() - 1;
-    assert!((r.roll[n] - a.roll.gradient * r.history.ay[n]).abs() < 1e-9);
+    assert!((r.roll[n] - a.roll.gradient * r.ay[n]).abs() < 1e-9);
     // Rear camber thrust toward the turn adds rear force: less yaw rate.
     a.effects.roll_camber = [0.0, 2.0];
     let r2 = a.simulate(&drive, [0.0; 6]);
-    assert!(r2.history.yaw_rate[n] < 0.99 * r.history.yaw_rate[n]);
+    assert!(r2.yaw_rate[n] < 0.99 * r.yaw_rate[n]);
 }

@@ -1,0 +1,326 @@
+//! The vehicle model driven by its inputs, as an ODE for [`super::ode`]:
+//! the one place where the model's right-hand side
+//! ([`VehicleModel::rates`]) meets an integrator, for every job — a
+//! scenario's simulation (inputs from the manoeuvre, RK4 or Dormand–Prince)
+//! and the diagnosis's replays of measured runs (inputs sampled once on the
+//! RK4 grid, [`Drive`], so repeated replays only evaluate the model).
+//!
+//! The state has `N` = 2 reals (β, r) when no effect needs more, 6
+//! ([`StateVector`]) otherwise: the extra states are then integrated, and
+//! left out (zero) of the 2-state system, where they do not feed back.
+//! Units: SI, rad.
+
+use super::ode::{self, DenseSolution, OdeSystem, Tolerances};
+use super::{load_tolerance, Integrator, TimeHistory};
+use crate::manoeuvre::{Manoeuvre, Replay};
+use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
+
+/// A run's inputs sampled at every RK4 stage of a fixed grid: index `2i` is
+/// grid time `t0 + i·h`, index `2i + 1` is `t0 + (i + ½)·h`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Drive {
+    /// Integration step, s.
+    pub step: f64,
+    /// First time, s.
+    pub start: f64,
+    /// Number of steps.
+    pub steps: usize,
+    steer: Vec<f64>,
+    speed: Vec<f64>,
+    speed_rate: Vec<f64>,
+}
+
+impl Drive {
+    /// Samples `m` over its duration with step `step`.
+    pub fn new(m: &Manoeuvre, step: f64) -> Self {
+        let start = m.start_time();
+        let steps = ((m.end_time() - start) / step).round().max(1.0) as usize;
+        let times: Vec<f64> = (0..=2 * steps)
+            .map(|j| start + 0.5 * step * j as f64)
+            .collect();
+        Self {
+            step,
+            start,
+            steps,
+            steer: times.iter().map(|&t| m.steer(t)).collect(),
+            speed: times.iter().map(|&t| m.speed(t)).collect(),
+            speed_rate: times.iter().map(|&t| m.speed_rate(t)).collect(),
+        }
+    }
+
+    /// The replay of measured steer and speed.
+    pub fn replay(t: &[f64], steer: &[f64], speed: &[f64], step: f64) -> Self {
+        Self::new(
+            &Manoeuvre::Replay(Replay {
+                t: t.to_vec(),
+                steer: steer.to_vec(),
+                speed: speed.to_vec(),
+            }),
+            step,
+        )
+    }
+
+    /// Grid time of step `i`, s.
+    pub fn time(&self, i: usize) -> f64 {
+        self.start + self.step * i as f64
+    }
+
+    /// The inputs at the first grid time, with road friction `friction`.
+    pub fn first_inputs(&self, friction: f64) -> Inputs {
+        self.inputs_at(0, friction)
+    }
+
+    fn inputs_at(&self, k: usize, friction: f64) -> Inputs {
+        Inputs {
+            steer: self.steer[k],
+            speed: self.speed[k],
+            speed_rate: self.speed_rate[k],
+            friction,
+        }
+    }
+}
+
+/// Where the inputs come from.
+#[derive(Clone, Copy)]
+enum Source<'a> {
+    Manoeuvre(&'a Manoeuvre),
+    Sampled(&'a Drive),
+}
+
+/// Offset in half steps of RK4's stages from the step's grid time.
+const STAGE_HALF_STEPS: [usize; 4] = [0, 1, 1, 2];
+
+/// The vehicle model driven by a manoeuvre or a sampled drive.
+struct Driven<'a> {
+    model: &'a VehicleModel,
+    source: Source<'a>,
+    friction: f64,
+    /// One load-transfer seed per RK4 stage: stage j of step n is predicted
+    /// from stage j of steps n − 1 and n − 2, which sit at evenly spaced
+    /// times. The adaptive method uses the first only.
+    seeds: [LoadTransferSeed; 4],
+    /// The RK4 (step, stage) being evaluated; None under Dormand–Prince.
+    stage: Option<(usize, usize)>,
+    /// The last two (t, ay) solutions of the load-transfer loop (adaptive).
+    history: [(f64, f64); 2],
+    load_tolerance: f64,
+    load_evaluations: u64,
+    /// The inputs and outputs of the last evaluation.
+    last: (Inputs, Outputs),
+}
+
+impl<'a> Driven<'a> {
+    fn new(model: &'a VehicleModel, source: Source<'a>, friction: f64, tolerance: f64) -> Self {
+        Self {
+            model,
+            source,
+            friction,
+            seeds: [LoadTransferSeed::default(); 4],
+            stage: None,
+            history: [(f64::NAN, 0.0); 2],
+            load_tolerance: tolerance,
+            load_evaluations: 0,
+            last: (
+                Inputs {
+                    steer: 0.0,
+                    speed: 0.0,
+                    speed_rate: 0.0,
+                    friction,
+                },
+                Outputs::default(),
+            ),
+        }
+    }
+
+    fn inputs(&self, t: f64) -> Inputs {
+        match self.source {
+            Source::Manoeuvre(m) => Inputs {
+                steer: m.steer(t),
+                speed: m.speed(t),
+                speed_rate: m.speed_rate(t),
+                friction: self.friction,
+            },
+            Source::Sampled(d) => {
+                let k = match self.stage {
+                    Some((i, j)) => 2 * i + STAGE_HALF_STEPS[j],
+                    None => ((t - d.start) / (0.5 * d.step)).round().max(0.0) as usize,
+                };
+                d.inputs_at(k.min(d.steer.len() - 1), self.friction)
+            }
+        }
+    }
+
+    /// The seed of this evaluation: the RK4 stage's own, or under the
+    /// adaptive method the first, set to the linear extrapolation in time of
+    /// the last two solutions (the stages of an adaptive step are not evenly
+    /// spaced, so the seed's extrapolation over equal intervals would not
+    /// fit; from the last one alone when they are far apart or at the same
+    /// time).
+    fn seed(&mut self, t: f64) -> usize {
+        if let Some((_, j)) = self.stage {
+            return j;
+        }
+        let [(t1, a1), (t0, a0)] = self.history;
+        let pred = if t1 != t0 && (t - t1).abs() <= 2.0 * (t1 - t0).abs() {
+            a1 + (a1 - a0) / (t1 - t0) * (t - t1)
+        } else {
+            a1
+        };
+        self.seeds[0].ay = [pred; 3];
+        0
+    }
+}
+
+impl<const N: usize> OdeSystem<N> for Driven<'_> {
+    fn derivatives(&mut self, t: f64, x: &[f64; N]) -> [f64; N] {
+        let inp = self.inputs(t);
+        let mut full: StateVector = [0.0; 6];
+        full[..N].copy_from_slice(x);
+        let j = self.seed(t);
+        let (dx, o) = self
+            .model
+            .rates(&full, &inp, &mut self.seeds[j], self.load_tolerance);
+        if self.stage.is_none() {
+            let [(t1, a1), _] = self.history;
+            self.history = [(t, o.ay), (t1, a1)];
+        }
+        self.load_evaluations += u64::from(o.load_iterations);
+        self.last = (inp, o);
+        std::array::from_fn(|i| dx[i])
+    }
+
+    fn rk4_stage(&mut self, step: usize, stage: usize) {
+        self.stage = Some((step, stage));
+    }
+}
+
+/// Records the row of grid time `t` from the system's last evaluation.
+fn record<const N: usize>(hist: &mut TimeHistory, sys: &Driven, t: f64, x: &[f64; N]) {
+    let (inp, o) = &sys.last;
+    let state = State {
+        beta: x[0],
+        yaw_rate: x[1],
+    };
+    hist.push(t, &state, inp, o);
+    if N > 4 {
+        hist.roll.push(x[4]);
+    }
+}
+
+/// RK4 of `sys` on `n` steps of `h` from `t0`, recording every grid point.
+fn run_rk4<const N: usize>(
+    sys: &mut Driven,
+    t0: f64,
+    h: f64,
+    n: usize,
+    x0: [f64; N],
+) -> TimeHistory {
+    let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
+    ode::rk4(sys, t0, h, n, x0, |sys, _, t, x| {
+        record(&mut hist, sys, t, x);
+        true
+    });
+    hist.load_evaluations = sys.load_evaluations;
+    hist
+}
+
+/// The first `N` reals of a full state.
+fn head<const N: usize>(x: &StateVector) -> [f64; N] {
+    std::array::from_fn(|i| x[i])
+}
+
+impl Integrator {
+    /// The full initial state of a simulation from `x0`: the extra states at
+    /// their quasi-static values.
+    fn initial(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> StateVector {
+        let t0 = manoeuvre.start_time();
+        let inp = Inputs {
+            steer: manoeuvre.steer(t0),
+            speed: manoeuvre.speed(t0),
+            speed_rate: manoeuvre.speed_rate(t0),
+            friction: self.friction,
+        };
+        model.state_vector(&x0, &inp)
+    }
+
+    /// RK4 at the output step, rows recorded from the first stage of each
+    /// step (every row is the model evaluated at exactly that state).
+    pub(super) fn run_rk4(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+    ) -> TimeHistory {
+        let h = self.step;
+        let t0 = manoeuvre.start_time();
+        let n = ((manoeuvre.end_time() - t0) / h).round().max(0.0) as usize;
+        let tol = crate::vehicle::LOAD_TOLERANCE;
+        let mut sys = Driven::new(model, Source::Manoeuvre(manoeuvre), self.friction, tol);
+        let x = self.initial(model, manoeuvre, x0);
+        if model.options.effects.extra_states() {
+            run_rk4::<6>(&mut sys, t0, h, n, x)
+        } else {
+            run_rk4::<2>(&mut sys, t0, h, n, head(&x))
+        }
+    }
+
+    /// Replays `drive` from the full state `x0` with RK4 on the drive's own
+    /// grid (whatever this integrator's method and step), all six states
+    /// integrated and the roll recorded: the diagnosis's replay of a run.
+    pub fn replay(&self, model: &VehicleModel, drive: &Drive, x0: StateVector) -> TimeHistory {
+        let tol = crate::vehicle::LOAD_TOLERANCE;
+        let mut sys = Driven::new(model, Source::Sampled(drive), self.friction, tol);
+        run_rk4::<6>(&mut sys, drive.start, drive.step, drive.steps, x0)
+    }
+
+    /// The error-controlled solution of `manoeuvre` from `x0` (restarted at
+    /// the manoeuvre's breakpoints) and its history sampled every `step`;
+    /// the dense solution when the state is (β, r) alone.
+    pub fn run_dopri5(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        tol: &Tolerances,
+    ) -> (TimeHistory, Option<DenseSolution<2>>) {
+        let x = self.initial(model, manoeuvre, x0);
+        if model.options.effects.extra_states() {
+            let (hist, _) = self.dopri5_n::<6>(model, manoeuvre, x, tol);
+            (hist, None)
+        } else {
+            let (hist, sol) = self.dopri5_n::<2>(model, manoeuvre, head(&x), tol);
+            (hist, Some(sol))
+        }
+    }
+
+    fn dopri5_n<const N: usize>(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: [f64; N],
+        tol: &Tolerances,
+    ) -> (TimeHistory, DenseSolution<N>) {
+        let load_tol = load_tolerance(tol);
+        let source = Source::Manoeuvre(manoeuvre);
+        let mut sys = Driven::new(model, source, self.friction, load_tol);
+        let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
+        let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
+        let n = ((t1 - t0) / self.step).round().max(0.0) as usize;
+        let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
+        let times: Vec<f64> = (0..=n)
+            .map(|i| (t0 + i as f64 * self.step).min(t1))
+            .collect();
+        let mut states = Vec::new();
+        sol.states_into(&times, &mut states);
+        // Rows: the model evaluated at the dense output, each load-transfer
+        // solve started from the previous row's.
+        let mut rows = Driven::new(model, source, self.friction, load_tol);
+        rows.stage = Some((0, 0));
+        for (&t, x) in times.iter().zip(&states) {
+            OdeSystem::<N>::derivatives(&mut rows, t, x);
+            record(&mut hist, &rows, t, x);
+        }
+        hist.load_evaluations = sys.load_evaluations;
+        (hist, sol)
+    }
+}

@@ -1,0 +1,186 @@
+//! Wheel loads and the load-transfer loop.
+//!
+//! Wheel loads (Wang & Liang (2017) eq. 4): static axle loads `m·g·b/l` and
+//! `m·g·a/l` (times cos θ on a bank, plus aero load) split evenly, plus a
+//! lateral transfer `ΔFz = χ·m·ay·h/d_f` (front) and `(1 − χ)·m·ay·h/d_r`
+//! (rear) from the inner (left, for ay > 0) to the outer wheel, with χ = b/l
+//! by default. A wheel whose load would go negative is off the ground.
+//!
+//! The loop: the loads depend on ay and ay on the forces, which depend on the
+//! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
+//! lagged by a step; `g` is strictly increasing for any tyre whose force does
+//! not grow faster with load than `m/(h/d)` allows, so the root is unique.
+//! Units: SI.
+
+use super::{VehicleModel, G};
+
+/// Where the load-transfer solve starts: the last three solutions (the solve
+/// starts from their quadratic extrapolation) and the last slope of
+/// g(ay) = ay − Y(ay)/m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadTransferSeed {
+    /// Last three solutions, newest first, m/s².
+    pub ay: [f64; 3],
+    /// dg/day estimate.
+    pub slope: f64,
+}
+
+impl Default for LoadTransferSeed {
+    fn default() -> Self {
+        Self {
+            ay: [0.0; 3],
+            slope: 1.0,
+        }
+    }
+}
+
+impl LoadTransferSeed {
+    fn predict(&self) -> f64 {
+        let [a, b, c] = self.ay;
+        3.0 * a - 3.0 * b + c
+    }
+
+    /// Records a solution.
+    pub(crate) fn push(&mut self, ay: f64) {
+        self.ay = [ay, self.ay[0], self.ay[1]];
+    }
+}
+
+/// Static wheel loads (N) and lateral load transfer per unit ay (N per m/s²).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LoadSplit {
+    front: f64,
+    rear: f64,
+    kf: f64,
+    kr: f64,
+    /// Track ratio t_f / t_r: a transfer moment that the front axle cannot
+    /// carry, expressed as rear transfer.
+    front_to_rear: f64,
+}
+
+impl LoadSplit {
+    /// FL, FR, RL, RR at `ay`. The roll moment m·ay·h is shared between the
+    /// axles by the transfer share; an axle whose inner wheel has lifted off
+    /// carries no more than its whole load on the outer wheel, and the moment
+    /// it cannot carry goes to the other axle (the body pivots on the outer
+    /// wheels), so the four loads always add up to the axle loads (m·g·cos θ
+    /// plus aero) until both inner wheels are off the ground (roll-over).
+    #[inline]
+    pub(crate) fn at(&self, ay: f64) -> [f64; 4] {
+        let (mut df, mut dr) = (self.kf * ay, self.kr * ay);
+        if df.abs() > self.front {
+            dr += (df - self.front.copysign(df)) * self.front_to_rear;
+            df = self.front.copysign(df);
+        }
+        if dr.abs() > self.rear {
+            df += (dr - self.rear.copysign(dr)) / self.front_to_rear;
+            df = df.clamp(-self.front, self.front);
+            dr = self.rear.copysign(dr);
+        }
+        [
+            self.front - df,
+            self.front + df,
+            self.rear - dr,
+            self.rear + dr,
+        ]
+    }
+}
+
+/// Solves `ay = Y(ay)/m` by the secant method from `seed`'s prediction, with
+/// the seed's slope as the first derivative estimate; `eval(ay)` returns
+/// `Y(ay)/m` and what else it computed at those loads. Returns the last
+/// evaluation's ay and by-products and the number of evaluations, and leaves
+/// the slope in `seed` (the caller records the solution). Without load
+/// transfer (`enabled` false) one evaluation at ay = 0.
+pub(crate) fn solve_load_transfer<T>(
+    enabled: bool,
+    seed: &mut LoadTransferSeed,
+    tolerance: f64,
+    mut eval: impl FnMut(f64) -> (f64, T),
+) -> (f64, T, u32) {
+    if !enabled {
+        let (y, out) = eval(0.0);
+        return (y, out, 0);
+    }
+    // The integrator keeps one seed per RK stage, so the prediction is a
+    // quadratic extrapolation in time and a solve usually ends after one
+    // evaluation of the four tyres.
+    let mut x1 = seed.predict();
+    let (mut y1, mut o1) = eval(x1);
+    let mut g1 = x1 - y1;
+    let mut slope = seed.slope;
+    let mut evals = 1;
+    while g1.abs() > tolerance * (1.0 + x1.abs()) && evals < 60 {
+        let x2 = x1 - g1 / slope;
+        let (y2, o2) = eval(x2);
+        let g2 = x2 - y2;
+        let s = (g2 - g1) / (x2 - x1);
+        // g' = 1 − Y'/m stays near 1; a wild secant (wheel lift-off kinks
+        // Y) falls back to the fixed-point slope 1.
+        slope = if s.is_finite() && (0.1..10.0).contains(&s) {
+            s
+        } else {
+            1.0
+        };
+        (x1, y1, o1, g1) = (x2, y2, o2, g2);
+        evals += 1;
+    }
+    seed.slope = slope;
+    (y1, o1, evals)
+}
+
+impl VehicleModel {
+    /// Static wheel loads and the load transferred per m/s² of lateral
+    /// acceleration on each axle: computed once per derivative evaluation,
+    /// not once per load-transfer iteration.
+    pub(crate) fn load_split(&self, speed: f64) -> LoadSplit {
+        let v = &self.vehicle;
+        let e = &self.options.effects;
+        let (mut sf, mut sr) = v.static_axle_loads();
+        if e.road_bank != 0.0 {
+            let c = e.road_bank.cos();
+            sf *= c;
+            sr *= c;
+        }
+        if e.aero_load != [0.0; 2] {
+            sf += e.aero_load[0] * speed * speed;
+            sr += e.aero_load[1] * speed * speed;
+        }
+        let (kf, kr) = if self.options.load_transfer {
+            let chi = v.front_transfer_share();
+            let k = v.mass * v.cg_height;
+            (chi * k / v.track_front, (1.0 - chi) * k / v.track_rear)
+        } else {
+            (0.0, 0.0)
+        };
+        LoadSplit {
+            front: 0.5 * sf,
+            rear: 0.5 * sr,
+            kf,
+            kr,
+            front_to_rear: v.track_front / v.track_rear,
+        }
+    }
+
+    /// Wheel loads (FL, FR, RL, RR) at lateral acceleration `ay` (the
+    /// tyres' force over the mass) and standstill.
+    pub fn wheel_loads(&self, ay: f64) -> [f64; 4] {
+        self.load_split(0.0).at(ay)
+    }
+
+    /// Wheel loads at lateral acceleration `ay` and speed `speed` (aero).
+    pub fn wheel_loads_at(&self, ay: f64, speed: f64) -> [f64; 4] {
+        self.load_split(speed).at(ay)
+    }
+
+    /// g·sin θ of the road bank, m/s².
+    pub fn bank_acceleration(&self) -> f64 {
+        let bank = self.options.effects.road_bank;
+        // No sine in the hot loop of the base model.
+        if bank == 0.0 {
+            0.0
+        } else {
+            G * bank.sin()
+        }
+    }
+}

@@ -1,0 +1,269 @@
+//! The right-hand side of the vehicle model: one function,
+//! [`VehicleModel::rates`], that every job integrates — the simulation, the
+//! equilibrium and stability analysis (through the (β, r) wrappers) and the
+//! replays of the sim-to-real diagnosis.
+//!
+//! States ([`StateVector`]): sideslip β, yaw rate r, the lagged front and
+//! rear slip angles, body roll φ and its rate. With every
+//! [`super::Effects`] off the last four do not feed back and the model is
+//! exactly the 2-DOF model of the module documentation ([`super`]), to the
+//! bit: the extra terms are added only when their effect is on.
+//! Units: SI, rad; ISO 8855 signs.
+
+use super::loads::solve_load_transfer;
+use super::{Inputs, Kinematics, LoadTransferSeed, Outputs, State, VehicleModel, MIN_SPEED};
+use crate::tyre::{SlipState, Tyre, TyreModel};
+
+/// The full state: β (rad), r (rad/s), the lagged front and rear slip
+/// angles (rad), roll φ (rad) and roll rate (rad/s).
+pub type StateVector = [f64; 6];
+
+/// Relative tolerance of the load-transfer loop on g(ay). The loads then
+/// belong to an ay within 1e-9·(1 + |ay|) of the returned one; since the axle
+/// forces change with ay by about 5 % of m per m/s², the forces are
+/// consistent to ~1e-10 relative: two orders below RK4's own truncation error
+/// at a 1 ms step (≈ (h·λ)⁴ ≈ 1e-7 with λ ≈ 20 1/s).
+pub(crate) const LOAD_TOLERANCE: f64 = 1e-9;
+
+/// What the load-transfer loop carries out of its last evaluation.
+#[derive(Clone, Copy)]
+struct AxleSolution {
+    alpha_front: f64,
+    fy_front: f64,
+    fy_rear: f64,
+    projection: f64,
+    fz: [f64; 4],
+}
+
+impl VehicleModel {
+    pub(crate) fn wheel_force(tyre: &Tyre, alpha: f64, fz: f64, inp: &Inputs) -> f64 {
+        tyre.lateral_force(&SlipState {
+            alpha,
+            kappa: 0.0,
+            fz,
+            camber: 0.0,
+            mu_scale: inp.friction,
+            speed: inp.speed,
+        })
+    }
+
+    /// Axle force of `tyre` at slip angle `alpha` on wheel loads `fz`, plus
+    /// camber thrust `thrust` per unit load (roll camber).
+    fn axle_force(tyre: &Tyre, alpha: f64, fz: [f64; 2], thrust: f64, inp: &Inputs) -> f64 {
+        let y =
+            Self::wheel_force(tyre, alpha, fz[0], inp) + Self::wheel_force(tyre, alpha, fz[1], inp);
+        if thrust == 0.0 {
+            y
+        } else {
+            y + thrust * (fz[0] + fz[1])
+        }
+    }
+
+    /// Kinematic slip angles (front, rear) of axles steered by `steer`
+    /// (front, rear) at sideslip `beta` and yaw rate `r`, speed `u` (already
+    /// held at [`MIN_SPEED`]).
+    fn kinematic_slip(&self, beta: f64, r: f64, u: f64, steer: [f64; 2]) -> (f64, f64) {
+        let (a, b) = (self.vehicle.a, self.vehicle.b);
+        match self.options.kinematics {
+            Kinematics::Exact => {
+                let v = u * beta.tan();
+                (
+                    steer[0] - ((v + a * r) / u).atan(),
+                    steer[1] - ((v - b * r) / u).atan(),
+                )
+            }
+            Kinematics::SmallAngle => (steer[0] - beta - a * r / u, steer[1] - beta + b * r / u),
+        }
+    }
+
+    /// Front and rear slip angles for a state and inputs (no roll).
+    pub fn slip_angles(&self, x: &State, inp: &Inputs) -> (f64, f64) {
+        let u = inp.speed.max(MIN_SPEED);
+        self.kinematic_slip(x.beta, x.yaw_rate, u, [inp.steer, 0.0])
+    }
+
+    /// cos δ of the force projection (1 in the small-angle form).
+    pub(crate) fn steer_projection(&self, steer: f64) -> f64 {
+        match self.options.kinematics {
+            Kinematics::Exact => steer.cos(),
+            Kinematics::SmallAngle => 1.0,
+        }
+    }
+
+    /// The full state of a (β, r) state, the extra states zero when no
+    /// effect needs them, else at their quasi-static values
+    /// ([`VehicleModel::quasi_static_state`]).
+    pub fn state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
+        if self.options.effects.extra_states() {
+            self.quasi_static_state(x, inp)
+        } else {
+            [x.beta, x.yaw_rate, 0.0, 0.0, 0.0, 0.0]
+        }
+    }
+
+    /// The full state of a (β, r) state with the extra states at their
+    /// quasi-static values: roll at its steady value for ay = u·r, the lag
+    /// states at the kinematic slip angles that roll gives.
+    pub fn quasi_static_state(&self, x: &State, inp: &Inputs) -> StateVector {
+        let e = &self.options.effects;
+        let u = inp.speed.max(MIN_SPEED);
+        let phi = e.roll.gradient * u * x.yaw_rate;
+        let steer = [inp.steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
+        let (af, ar) = self.kinematic_slip(x.beta, x.yaw_rate, u, steer);
+        [x.beta, x.yaw_rate, af, ar, phi, 0.0]
+    }
+
+    /// Derivatives of the full state and the outputs, with the load-transfer
+    /// loop solved to relative `tolerance` on g(ay), started from (and
+    /// updated into) `seed`.
+    pub fn rates(
+        &self,
+        x: &StateVector,
+        inp: &Inputs,
+        seed: &mut LoadTransferSeed,
+        tolerance: f64,
+    ) -> (StateVector, Outputs) {
+        let v = &self.vehicle;
+        let e = &self.options.effects;
+        let u = inp.speed.max(MIN_SPEED);
+        let (beta, r, phi) = (x[0], x[1], x[4]);
+        let steer = [inp.steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
+        let (kin_f, kin_r) = self.kinematic_slip(beta, r, u, steer);
+        let lagged = e.lagged();
+        let compliance = e.steering_compliance;
+        let [scale_f, scale_r] = e.cornering_stiffness_scale;
+        let thrust = [e.roll_camber[0] * phi, e.roll_camber[1] * phi];
+        let alpha_rear = if lagged { x[3] } else { kin_r };
+        // Without compliance the wheel's steer, hence the projection, does
+        // not depend on the force: one cosine per evaluation.
+        let fixed_projection = self.steer_projection(steer[0]);
+        let front = |fz: [f64; 2]| -> (f64, f64) {
+            let force = |a: f64| Self::axle_force(&self.front, scale_f * a, fz, thrust[0], inp);
+            if lagged {
+                return (x[2], force(x[2]));
+            }
+            if compliance == 0.0 {
+                return (kin_f, force(kin_f));
+            }
+            // α = α_kin − c·Fyf(α) by a secant (Fyf grows with α, so the
+            // root is unique).
+            let g = |a: f64| {
+                let f = force(a);
+                (a - kin_f + compliance * f, f)
+            };
+            let (mut a0, mut a1) = (kin_f, kin_f - compliance * force(kin_f));
+            let (mut g0, _) = g(a0);
+            let (mut g1, mut f1) = g(a1);
+            for _ in 0..30 {
+                if g1.abs() < 1e-13 || g1 == g0 {
+                    break;
+                }
+                let a2 = a1 - g1 * (a1 - a0) / (g1 - g0);
+                let (g2, f2) = g(a2);
+                (a0, g0, a1, g1, f1) = (a1, g1, a2, g2, f2);
+            }
+            (a1, f1)
+        };
+        let split = self.load_split(u);
+        let inv_m = 1.0 / v.mass;
+        let eval = |ay: f64| {
+            let fz = split.at(ay);
+            let (alpha_front, fy_front) = front([fz[0], fz[1]]);
+            let fy_rear = Self::axle_force(
+                &self.rear,
+                scale_r * alpha_rear,
+                [fz[2], fz[3]],
+                thrust[1],
+                inp,
+            );
+            let projection = if compliance == 0.0 {
+                fixed_projection
+            } else {
+                self.steer_projection(steer[0] - compliance * fy_front)
+            };
+            (
+                (fy_front * projection + fy_rear) * inv_m,
+                AxleSolution {
+                    alpha_front,
+                    fy_front,
+                    fy_rear,
+                    projection,
+                    fz,
+                },
+            )
+        };
+        let transfer = self.options.load_transfer;
+        let (mut ay, mut s, evaluations) = solve_load_transfer(transfer, seed, tolerance, eval);
+        if !ay.is_finite() {
+            // A tyre evaluated far outside its range (a fit's trial
+            // parameters) must not poison the load-transfer seed.
+            ay = 0.0;
+            (s.fy_front, s.fy_rear, s.projection) = (0.0, 0.0, 1.0);
+        }
+        if transfer {
+            seed.push(ay);
+        }
+        let fyf_x = s.fy_front * s.projection;
+        let yaw_acceleration = (v.a * fyf_x - v.b * s.fy_rear) / v.yaw_inertia;
+        // The path's lateral acceleration is the tyres' (ay) less the bank's
+        // pull g·sin θ (zero without a bank).
+        let ay_path = ay - self.bank_acceleration();
+        let beta_rate = match self.options.kinematics {
+            Kinematics::Exact => {
+                let vy = u * beta.tan();
+                let vy_dot = ay_path - u * r;
+                (u * vy_dot - vy * inp.speed_rate) / (u * u + vy * vy)
+            }
+            Kinematics::SmallAngle => ay_path / u - r - inp.speed_rate * beta / u,
+        };
+        let mut dx = [beta_rate, yaw_acceleration, 0.0, 0.0, x[5], 0.0];
+        if lagged {
+            let k = u / e.relaxation_length;
+            dx[2] = k * (kin_f - compliance * s.fy_front - x[2]);
+            dx[3] = k * (kin_r - x[3]);
+        }
+        let omega = std::f64::consts::TAU * e.roll.frequency;
+        dx[5] = omega * omega * (e.roll.gradient * ay - phi) - 2.0 * e.roll.damping * omega * x[5];
+        let outputs = Outputs {
+            beta_rate,
+            yaw_acceleration,
+            ay,
+            alpha_front: s.alpha_front,
+            alpha_rear,
+            fy_front: s.fy_front,
+            fy_rear: s.fy_rear,
+            fz: s.fz,
+            load_iterations: evaluations,
+        };
+        (dx, outputs)
+    }
+
+    /// State derivatives and outputs of a (β, r) state, solving the
+    /// load-transfer loop from scratch.
+    pub fn evaluate(&self, x: &State, inp: &Inputs) -> Outputs {
+        self.evaluate_seeded(x, inp, &mut LoadTransferSeed::default())
+    }
+
+    /// State derivatives and outputs, with the load-transfer solve started
+    /// from (and updated into) `seed`: the integrator passes the previous
+    /// stage's solution. The answer is the same to the loop's tolerance.
+    pub fn evaluate_seeded(&self, x: &State, inp: &Inputs, seed: &mut LoadTransferSeed) -> Outputs {
+        self.evaluate_to(x, inp, seed, LOAD_TOLERANCE)
+    }
+
+    /// As [`VehicleModel::evaluate_seeded`] with the load-transfer loop solved
+    /// to relative `tolerance` on g(ay): equilibrium and stability analysis
+    /// differentiate the right-hand side numerically and want it smooth to
+    /// near rounding (1e-13), not to the simulation's 1e-9. The extra states
+    /// sit at their quasi-static values ([`VehicleModel::state_vector`]).
+    pub fn evaluate_to(
+        &self,
+        x: &State,
+        inp: &Inputs,
+        seed: &mut LoadTransferSeed,
+        tolerance: f64,
+    ) -> Outputs {
+        self.rates(&self.state_vector(x, inp), inp, seed, tolerance)
+            .1
+    }
+}

@@ -12,8 +12,7 @@ use handling::diagnose::effects::EffectKind;
 use handling::diagnose::fit::Prepared;
 use handling::diagnose::model::Augmented;
 use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
-use handling::io::campaign::DiagnoseSettings;
-use handling::report::write_columns;
+use handling::diagnose::DiagnoseSettings;
 use handling::tyre::{Pac89, Tyre};
 use handling::vehicle::VehicleModel;
 use std::time::Duration;
@@ -28,11 +27,7 @@ fn diagnosis(c: &mut Criterion) {
         noise: Noise::default(),
     };
     let s = generate(&spec);
-    let dir = tempfile::tempdir().unwrap();
-    let rig = dir.path().join("rig.csv");
-    let [fz, alpha, fy] = s.rig_columns();
-    write_columns(&rig, &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)]).unwrap();
-    let campaign = s.campaign(rig, EffectKind::ALL.to_vec(), DiagnoseSettings::default());
+    let campaign = s.campaign(EffectKind::ALL.to_vec(), DiagnoseSettings::default());
 
     let runs: Vec<Prepared> = s
         .runs

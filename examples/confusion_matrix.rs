@@ -22,9 +22,8 @@
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
-use handling::io::campaign::DiagnoseSettings;
+use handling::diagnose::DiagnoseSettings;
 use handling::io::clean::{clean_runs, inject_glitches, CleanSettings};
-use handling::report::write_columns;
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {
@@ -60,7 +59,6 @@ fn main() -> anyhow::Result<()> {
     } else {
         truths = vec![chosen];
     }
-    let dir = tempfile::tempdir()?;
     if model != Truth::Augmented {
         println!("truth model: {}\n", model.name());
     }
@@ -82,14 +80,11 @@ fn main() -> anyhow::Result<()> {
                 noise: Noise::default(),
             };
             let s = generate_with(&spec, model)?;
-            let rig = dir.path().join(format!("rig_{}_{seed}.csv", s.name()));
-            let [fz, alpha, fy] = s.rig_columns();
-            write_columns(&rig, &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)])?;
             let settings = DiagnoseSettings {
                 seed,
                 ..DiagnoseSettings::default()
             };
-            let c = s.campaign(rig, EffectKind::ALL.to_vec(), settings);
+            let c = s.campaign(EffectKind::ALL.to_vec(), settings);
             let glitched = if glitches {
                 let mut g = c.clone();
                 let mut injected = 0;

@@ -10,10 +10,9 @@ use super::effects::{EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
-use crate::identify::data::read_rig;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre, FitSettings};
-use crate::io::campaign::{BaseTyres, Campaign};
+use super::campaign::{BaseTyres, Campaign};
 use crate::optim::pso::Pso;
 use crate::tyre::{MagicSimple, Tyre};
 use crate::vehicle::VehicleModel;
@@ -209,9 +208,8 @@ pub(super) fn base_models(
             "given tyre files".into(),
             None,
         )),
-        BaseTyres::Rig { path, model } => {
-            let data = read_rig(path).map_err(|e| e.to_string())?;
-            let grouped = group(path, &data, &Grouping::default(), SlipAxis::Angle)
+        BaseTyres::Rig { path, data, model } => {
+            let grouped = group(path, data, &Grouping::default(), SlipAxis::Angle)
                 .map_err(|e| e.to_string())?;
             let conditions = grouped.conditions;
             if conditions.is_empty() {
@@ -222,7 +220,7 @@ pub(super) fn base_models(
             }
             let mut loads: Vec<f64> = conditions.iter().map(|q| q.fz).collect();
             loads.sort_by(f64::total_cmp);
-            let t0 = start_tyre(model, loads[loads.len() / 2])?;
+            let t0 = start_tyre(model.as_str(), loads[loads.len() / 2])?;
             let mut settings = FitSettings::new(c.settings.seed);
             settings.pso.particles = 40;
             settings.pso.iterations = 150;

@@ -38,7 +38,7 @@ use super::fit::{Channel, ChannelErrors, Prepared};
 use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
-use crate::io::campaign::Campaign;
+use super::campaign::Campaign;
 use crate::optim::pso::{Inertia, Pso};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -4,6 +4,7 @@
 //! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis
 //! that ranks the effects on held-out runs ([`diagnosis`]).
 
+pub mod campaign;
 mod candidates;
 mod crossval;
 pub mod diagnosis;
@@ -17,4 +18,5 @@ pub mod sensors;
 mod summary;
 pub mod synth;
 
+pub use campaign::{BaseTyres, Campaign, DiagnoseSettings};
 pub use diagnosis::{diagnose, Diagnosis};

@@ -27,7 +27,9 @@ use super::model::{Augmented, Drive};
 use super::proving_ground::{FourWheel, FourWheelEffects, FourWheelVehicle};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
-use crate::io::campaign::{BaseTyres, Campaign, DiagnoseSettings};
+use super::campaign::{BaseTyres, Campaign, DiagnoseSettings};
+use crate::identify::data::RigData;
+use crate::tyre::ModelName;
 use crate::manoeuvre::{Manoeuvre, RampSteer, StepSteer, SweepSteer};
 use crate::measured::MeasuredRun;
 use crate::tyre::{SlipState, Tyre, TyreModel};
@@ -380,24 +382,33 @@ impl Synthetic {
         [0, 1, 2].map(|j| self.rig.iter().map(|r| r[j]).collect())
     }
 
-    /// The campaign in memory, diagnosed against `effects` (the rig file is
-    /// written to `rig_path`, which the diagnosis reads).
-    pub fn campaign(
-        &self,
-        rig_path: PathBuf,
-        effects: Vec<EffectKind>,
-        settings: DiagnoseSettings,
-    ) -> Campaign {
+    /// The rig data, as a campaign file would hold them.
+    pub fn rig_data(&self) -> RigData {
+        let [fz, alpha, fy] = self.rig_columns();
+        RigData {
+            camber: vec![0.0; fz.len()],
+            fz,
+            alpha,
+            fy,
+            ..RigData::default()
+        }
+    }
+
+    /// The campaign in memory, diagnosed against `effects`: its rig data
+    /// fitted with PAC89, as the folder `handling synth` writes says.
+    pub fn campaign(&self, effects: Vec<EffectKind>, settings: DiagnoseSettings) -> Campaign {
+        let source = PathBuf::from(format!("synthetic campaign {}", self.name()));
         Campaign {
             name: self.name(),
-            source: rig_path.clone(),
-            inputs: vec![rig_path.clone()],
+            inputs: Vec::new(),
             vehicle: self.vehicle.clone(),
             friction: 1.0,
             tyres: BaseTyres::Rig {
-                path: rig_path,
-                model: "pac89".into(),
+                path: source.join("tyre_rig.csv"),
+                data: Box::new(self.rig_data()),
+                model: ModelName::Pac89,
             },
+            source,
             runs: self.runs.clone(),
             roll: self.roll,
             settings,

@@ -23,15 +23,17 @@
 //! own sample times). Units: SI, rad.
 
 use super::clean::{
-    clean_run, slice, CleanSettings, CleaningReport, GlitchKind, DEFAULT_MIN_SPEED,
+    clean_run, slice, CleanSettings, CleaningReport, GlitchKind,
 };
 use super::scenario::{load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
+pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{InputError, ParamError};
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
-use crate::tyre::Tyre;
+use crate::identify::data::read_rig;
+use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -65,44 +67,6 @@ pub struct RunSpec {
     pub segment: Option<f64>,
 }
 
-/// The `[diagnose]` table: settings of the diagnosis.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct DiagnoseSettings {
-    /// Seed of every random search.
-    pub seed: u64,
-    /// Candidate effects (default: the whole library).
-    pub effects: Option<Vec<String>>,
-    /// RK4 step of the replays, s.
-    pub step: f64,
-    /// Rate at which residuals are sampled for the fits, Hz.
-    pub sample_rate: f64,
-    /// Largest number of effects combined.
-    pub max_effects: usize,
-    /// PSO swarm size and iterations of each effect fit.
-    pub particles: usize,
-    /// PSO iterations.
-    pub iterations: usize,
-    /// Lowest speed replayed and scored, m/s (standstills and crawling
-    /// below it are excluded).
-    pub min_speed: f64,
-}
-
-impl Default for DiagnoseSettings {
-    fn default() -> Self {
-        Self {
-            seed: 1,
-            effects: None,
-            step: 0.01,
-            sample_rate: 25.0,
-            max_effects: 3,
-            particles: 10,
-            iterations: 12,
-            min_speed: DEFAULT_MIN_SPEED,
-        }
-    }
-}
-
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CampaignFile {
@@ -119,51 +83,6 @@ struct CampaignFile {
     roll: RollModel,
     #[serde(default)]
     diagnose: DiagnoseSettings,
-}
-
-/// Where the base model's tyres come from.
-#[derive(Debug, Clone)]
-pub enum BaseTyres {
-    /// Given tyre files (front, rear).
-    Given(Box<Tyre>, Box<Tyre>),
-    /// Rig data and the model to fit to it.
-    Rig {
-        /// The data file.
-        path: PathBuf,
-        /// The model name.
-        model: String,
-    },
-    /// No tyre data: axle characteristics identified from the runs.
-    FromRuns,
-}
-
-/// A loaded and checked campaign.
-#[derive(Debug, Clone)]
-pub struct Campaign {
-    /// Name (the file stem or folder name unless given).
-    pub name: String,
-    /// The campaign file or folder.
-    pub source: PathBuf,
-    /// Every input file read (so outputs never overwrite one).
-    pub inputs: Vec<PathBuf>,
-    /// Mass and geometry.
-    pub vehicle: Vehicle,
-    /// Road friction scale.
-    pub friction: f64,
-    /// The base tyres.
-    pub tyres: BaseTyres,
-    /// The runs (after splitting at gaps and into segments).
-    pub runs: Vec<MeasuredRun>,
-    /// Roll degree of freedom.
-    pub roll: RollModel,
-    /// Diagnosis settings.
-    pub settings: DiagnoseSettings,
-    /// The candidate effects.
-    pub effects: Vec<EffectKind>,
-    /// What was done to the inputs (split runs, …), for the report.
-    pub notes: Vec<String>,
-    /// Glitches, slow spans and pieces found while cleaning the runs.
-    pub cleaning: CleaningReport,
 }
 
 fn file_error(path: &Path, message: String) -> InputError {
@@ -190,14 +109,54 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let src = TomlSource::read(&file)?;
     let f: CampaignFile = src.parse()?;
     let base = file.parent().unwrap_or(Path::new(".")).to_path_buf();
+    validate(&src, &f)?;
+    let effects = candidate_effects(&src, &f.diagnose)?;
+    let mut inputs = vec![file.clone()];
+    let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
+    let files = run_files(&f, &base, path, folder, &file)?;
+    let (runs, notes, cleaning) = read_runs(&files, &f, &mut inputs)?;
+    if runs.len() < 2 {
+        return Err(file_error(
+            &file,
+            format!(
+                "{} run(s) after checking ({} of {} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
+                runs.len(),
+                cleaning.samples_kept,
+                cleaning.samples_read,
+                f.diagnose.min_speed
+            ),
+        ));
+    }
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Campaign {
+        name,
+        source: path.to_path_buf(),
+        inputs,
+        vehicle: f.vehicle,
+        friction: f.road.friction,
+        tyres,
+        runs,
+        roll: f.roll,
+        settings: f.diagnose,
+        effects,
+        notes,
+        cleaning,
+    })
+}
+
+/// Checks the vehicle, road, roll, diagnosis and segment values.
+fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     f.vehicle
         .validate()
-        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
+        .map_err(|e| param_error(src, Some("vehicle"), e))?;
     ParamError::positive("friction", f.road.friction)
-        .map_err(|e| param_error(&src, Some("road"), e))?;
+        .map_err(|e| param_error(src, Some("road"), e))?;
     f.roll
         .validate()
-        .map_err(|e| param_error(&src, Some("roll"), e))?;
+        .map_err(|e| param_error(src, Some("roll"), e))?;
     let s = &f.diagnose;
     ParamError::in_range(
         "step",
@@ -208,72 +167,100 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     )
     .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
     .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
-    .map_err(|e| param_error(&src, Some("diagnose"), e))?;
-    let effects = match &s.effects {
-        None => EffectKind::ALL.to_vec(),
-        Some(names) => names
-            .iter()
-            .map(|n| {
-                EffectKind::from_name(n).ok_or_else(|| {
-                    let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
-                    src.value_error(&ParamError::new(
-                        "diagnose.effects",
-                        f64::NAN,
-                        &format!("unknown effect `{n}`: one of {}", all.join(", ")),
-                    ))
-                })
-            })
-            .collect::<Result<_, _>>()?,
+    .map_err(|e| param_error(src, Some("diagnose"), e))?;
+    if let Some(seg) = f.runs.as_ref().and_then(|r| r.segment) {
+        ParamError::in_range(
+            "segment",
+            seg,
+            MIN_RUN_SECONDS,
+            f64::INFINITY,
+            &format!("a segment must be longer than {MIN_RUN_SECONDS} s"),
+        )
+        .map_err(|e| param_error(src, Some("runs"), e))?;
+    }
+    Ok(())
+}
+
+/// The candidate effects named by `[diagnose] effects` (all by default).
+fn candidate_effects(
+    src: &TomlSource,
+    s: &DiagnoseSettings,
+) -> Result<Vec<EffectKind>, InputError> {
+    let Some(names) = &s.effects else {
+        return Ok(EffectKind::ALL.to_vec());
     };
-    let mut inputs = vec![file.clone()];
-    let tyre_spec = f.tyres.clone().unwrap_or_default();
+    names
+        .iter()
+        .map(|n| {
+            EffectKind::from_name(n).ok_or_else(|| {
+                let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
+                src.value_error(&ParamError::new(
+                    "diagnose.effects",
+                    f64::NAN,
+                    &format!("unknown effect `{n}`: one of {}", all.join(", ")),
+                ))
+            })
+        })
+        .collect()
+}
+
+/// Where the base tyres come from: tyre files, rig data (read here) with
+/// the model to fit, or nothing (axles identified from the runs).
+fn base_tyres(
+    src: &TomlSource,
+    f: &CampaignFile,
+    base: &Path,
+    folder: bool,
+    inputs: &mut Vec<PathBuf>,
+) -> Result<BaseTyres, InputError> {
+    let spec = f.tyres.clone().unwrap_or_default();
     let rig_default = base.join("tyre_rig.csv");
-    let tyres =
-        match (
-            &tyre_spec.file,
-            &tyre_spec.front,
-            &tyre_spec.rear,
-            &tyre_spec.rig,
-        ) {
-            (Some(t), None, None, None) => {
-                let t = load_tyre(&base.join(t))?;
-                BaseTyres::Given(Box::new(t.clone()), Box::new(t))
-            }
-            (None, Some(fr), Some(re), None) => BaseTyres::Given(
+    let rig = match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
+        (Some(t), None, None, None) => {
+            inputs.push(base.join(t));
+            let t = load_tyre(&base.join(t))?;
+            return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
+        }
+        (None, Some(fr), Some(re), None) => {
+            inputs.extend([base.join(fr), base.join(re)]);
+            return Ok(BaseTyres::Given(
                 Box::new(load_tyre(&base.join(fr))?),
                 Box::new(load_tyre(&base.join(re))?),
-            ),
-            (None, None, None, Some(rig)) => BaseTyres::Rig {
-                path: base.join(rig),
-                model: tyre_spec.model.clone().unwrap_or_else(|| "pac89".into()),
-            },
-            (None, None, None, None) if folder && rig_default.is_file() => BaseTyres::Rig {
-                path: rig_default,
-                model: tyre_spec.model.clone().unwrap_or_else(|| "pac89".into()),
-            },
-            (None, None, None, None) => BaseTyres::FromRuns,
-            _ => return Err(src.value_error(&ParamError::new(
+            ));
+        }
+        (None, None, None, Some(rig)) => base.join(rig),
+        (None, None, None, None) if folder && rig_default.is_file() => rig_default,
+        (None, None, None, None) => return Ok(BaseTyres::FromRuns),
+        _ => {
+            return Err(src.value_error(&ParamError::new(
                 "tyres",
                 f64::NAN,
                 "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
-            ))),
-        };
-    match &tyres {
-        BaseTyres::Rig { path, model } => {
-            crate::identify::start_tyre(model, 1.0)
-                .map_err(|m| src.value_error(&ParamError::new("tyres.model", f64::NAN, &m)))?;
-            inputs.push(path.clone());
+            )))
         }
-        BaseTyres::Given(..) => {
-            for p in [&tyre_spec.file, &tyre_spec.front, &tyre_spec.rear]
-                .into_iter()
-                .flatten()
-            {
-                inputs.push(base.join(p));
-            }
-        }
-        BaseTyres::FromRuns => {}
-    }
+    };
+    let name = spec.model.as_deref().unwrap_or("pac89");
+    let model_error = |m: String| src.value_error(&ParamError::new("tyres.model", f64::NAN, &m));
+    crate::identify::start_tyre(name, 1.0).map_err(model_error)?;
+    let model: ModelName = name.parse().map_err(model_error)?;
+    let data = read_rig(&rig)?;
+    inputs.push(rig.clone());
+    Ok(BaseTyres::Rig {
+        path: rig,
+        data: Box::new(data),
+        model,
+    })
+}
+
+/// The run files: `[runs] files` and the `*.csv` of `[runs] dir` (of
+/// `runs/` in a campaign folder without a list), sorted by name.
+fn run_files(
+    f: &CampaignFile,
+    base: &Path,
+    path: &Path,
+    folder: bool,
+    file: &Path,
+) -> Result<Vec<PathBuf>, InputError> {
     let run_spec = f.runs.clone().unwrap_or_default();
     let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| base.join(p)).collect();
     let dir = run_spec
@@ -295,25 +282,27 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     }
     if files.is_empty() {
         return Err(file_error(
-            &file,
+            file,
             "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)".into(),
         ));
     }
-    if let Some(seg) = run_spec.segment {
-        ParamError::in_range(
-            "segment",
-            seg,
-            MIN_RUN_SECONDS,
-            f64::INFINITY,
-            &format!("a segment must be longer than {MIN_RUN_SECONDS} s"),
-        )
-        .map_err(|e| param_error(&src, Some("runs"), e))?;
-    }
+    Ok(files)
+}
+
+/// Reads, checks and cleans every run, cut into segments if asked: the
+/// pieces to replay, notes on what was done, the cleaning report.
+fn read_runs(
+    files: &[PathBuf],
+    f: &CampaignFile,
+    inputs: &mut Vec<PathBuf>,
+) -> Result<(Vec<MeasuredRun>, Vec<String>, CleaningReport), InputError> {
+    let segment = f.runs.as_ref().and_then(|r| r.segment);
+    let min_speed = f.diagnose.min_speed;
     let mut runs = Vec::new();
     let mut notes = Vec::new();
-    let clean = CleanSettings::diagnosis(s.min_speed);
-    let mut cleaning = CleaningReport::new(s.min_speed);
-    for p in &files {
+    let clean = CleanSettings::diagnosis(min_speed);
+    let mut cleaning = CleaningReport::new(min_speed);
+    for p in files {
         let run = read_run(p)?;
         check_length(&run, &run.path.display().to_string())?;
         inputs.push(p.clone());
@@ -342,42 +331,13 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
             ));
         }
         for piece in pieces {
-            match run_spec.segment {
+            match segment {
                 Some(seg) => runs.extend(segments(piece, seg)),
                 None => runs.push(piece),
             }
         }
     }
-    if runs.len() < 2 {
-        return Err(file_error(
-            &file,
-            format!(
-                "{} run(s) after checking ({} of {} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
-                runs.len(),
-                cleaning.samples_kept,
-                cleaning.samples_read,
-                s.min_speed
-            ),
-        ));
-    }
-    let name = f.name.clone().unwrap_or_else(|| {
-        path.file_stem()
-            .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
-    });
-    Ok(Campaign {
-        name,
-        source: path.to_path_buf(),
-        inputs,
-        vehicle: f.vehicle,
-        friction: f.road.friction,
-        tyres,
-        runs,
-        roll: f.roll,
-        settings: f.diagnose,
-        effects,
-        notes,
-        cleaning,
-    })
+    Ok((runs, notes, cleaning))
 }
 
 fn check_length(run: &MeasuredRun, name: &str) -> Result<(), InputError> {

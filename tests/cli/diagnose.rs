@@ -250,19 +250,11 @@ fn diagnose_synthetic(
         seed,
         noise: Noise::default(),
     });
-    let dir = tempfile::tempdir().unwrap();
-    let rig = dir.path().join("rig.csv");
-    let [fz, alpha, fy] = s.rig_columns();
-    handling::report::write_columns(&rig, &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)]).unwrap();
-    let settings = handling::io::campaign::DiagnoseSettings {
+    let settings = handling::diagnose::DiagnoseSettings {
         seed,
         ..Default::default()
     };
-    let c = s.campaign(
-        rig,
-        handling::diagnose::effects::EffectKind::ALL.to_vec(),
-        settings,
-    );
+    let c = s.campaign(handling::diagnose::effects::EffectKind::ALL.to_vec(), settings);
     handling::diagnose::diagnose(&c, None).unwrap()
 }
 

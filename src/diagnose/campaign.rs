@@ -1,0 +1,101 @@
+//! A test campaign as the sim-to-real diagnosis takes it: the vehicle, its
+//! road, where the base tyres come from, the measured runs (already checked
+//! and cleaned) and the diagnosis's settings. `crate::io::campaign` reads
+//! and checks campaign files and folders into it (`FORMATS.md`); the
+//! virtual proving ground ([`super::synth`]) builds one in memory.
+//! Units: SI, rad.
+
+use super::effects::{EffectKind, RollModel};
+use crate::identify::data::RigData;
+use crate::measured::clean::{CleaningReport, DEFAULT_MIN_SPEED};
+use crate::measured::MeasuredRun;
+use crate::tyre::{ModelName, Tyre};
+use crate::vehicle::Vehicle;
+use serde::Deserialize;
+use std::path::PathBuf;
+
+/// The `[diagnose]` table: settings of the diagnosis.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DiagnoseSettings {
+    /// Seed of every random search.
+    pub seed: u64,
+    /// Candidate effects (default: the whole library).
+    pub effects: Option<Vec<String>>,
+    /// RK4 step of the replays, s.
+    pub step: f64,
+    /// Rate at which residuals are sampled for the fits, Hz.
+    pub sample_rate: f64,
+    /// Largest number of effects combined.
+    pub max_effects: usize,
+    /// PSO swarm size and iterations of each effect fit.
+    pub particles: usize,
+    /// PSO iterations.
+    pub iterations: usize,
+    /// Lowest speed replayed and scored, m/s (standstills and crawling
+    /// below it are excluded).
+    pub min_speed: f64,
+}
+
+impl Default for DiagnoseSettings {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            effects: None,
+            step: 0.01,
+            sample_rate: 25.0,
+            max_effects: 3,
+            particles: 10,
+            iterations: 12,
+            min_speed: DEFAULT_MIN_SPEED,
+        }
+    }
+}
+
+/// Where the base model's tyres come from.
+#[derive(Debug, Clone)]
+pub enum BaseTyres {
+    /// Given tyre files (front, rear).
+    Given(Box<Tyre>, Box<Tyre>),
+    /// Rig data and the model to fit to it.
+    Rig {
+        /// The data file (named in reports).
+        path: PathBuf,
+        /// Its samples.
+        data: Box<RigData>,
+        /// The model fitted.
+        model: ModelName,
+    },
+    /// No tyre data: axle characteristics identified from the runs.
+    FromRuns,
+}
+
+/// A loaded and checked campaign.
+#[derive(Debug, Clone)]
+pub struct Campaign {
+    /// Name (the file stem or folder name unless given).
+    pub name: String,
+    /// The campaign file or folder.
+    pub source: PathBuf,
+    /// Every input file read (so outputs never overwrite one).
+    pub inputs: Vec<PathBuf>,
+    /// Mass and geometry.
+    pub vehicle: Vehicle,
+    /// Road friction scale.
+    pub friction: f64,
+    /// The base tyres.
+    pub tyres: BaseTyres,
+    /// The runs (after splitting at gaps and into segments).
+    pub runs: Vec<MeasuredRun>,
+    /// Roll degree of freedom.
+    pub roll: RollModel,
+    /// Diagnosis settings.
+    pub settings: DiagnoseSettings,
+    /// The candidate effects.
+    pub effects: Vec<EffectKind>,
+    /// What was done to the inputs (split runs, …), for the report.
+    pub notes: Vec<String>,
+    /// Glitches, slow spans and pieces found while cleaning the runs.
+    pub cleaning: CleaningReport,
+}
+

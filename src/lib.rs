@@ -37,6 +37,8 @@
 //!   stiffness and handling by inverse dynamics. Used in [`study`],
 //!   [`metrics`].
 
+#![warn(missing_docs)]
+
 pub mod diagnose;
 pub mod equilibria;
 pub mod error;

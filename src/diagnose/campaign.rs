@@ -98,4 +98,3 @@ pub struct Campaign {
     /// Glitches, slow spans and pieces found while cleaning the runs.
     pub cleaning: CleaningReport,
 }
-

@@ -5,6 +5,7 @@
 //! and roll dynamics becomes a model. Units: SI, rad; the roll frequency in
 //! Hz.
 
+use super::campaign::{BaseTyres, Campaign};
 use super::crossval::training_rows;
 use super::effects::{EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
@@ -12,7 +13,6 @@ use super::model::Augmented;
 use super::report::ParameterValue;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre, FitSettings};
-use super::campaign::{BaseTyres, Campaign};
 use crate::optim::pso::Pso;
 use crate::tyre::{MagicSimple, Tyre};
 use crate::vehicle::VehicleModel;

@@ -31,6 +31,7 @@
 
 pub use super::report::*;
 
+use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
 use super::crossval::{gap_above, reduction, Context, Scored};
 use super::effects::{EffectKind, EffectSet};
@@ -38,7 +39,6 @@ use super::fit::{Channel, ChannelErrors, Prepared};
 use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
-use super::campaign::Campaign;
 use crate::optim::pso::{Inertia, Pso};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -18,6 +18,7 @@ use crate::measured::MeasuredRun;
 use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
+use crate::optim::stats::{seen_columns, standard_errors};
 use nalgebra::DMatrix;
 use serde::Serialize;
 
@@ -383,7 +384,7 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
                     params[i] = start[i];
                 }
             }
-            (standard_errors(&linear, &params, cost), Some(linear))
+            (standard_errors(&linear.jacobian, 2.0 * cost), Some(linear))
         }
         _ => (vec![f64::NAN; params.len()], None),
     };
@@ -478,41 +479,4 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut f = fit(problem, &p, None, Polish::Refit);
     f.evaluations += evaluations;
     f
-}
-
-/// Whether the data see each parameter: its Jacobian column is not zero
-/// next to the largest.
-fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
-    let norms: Vec<f64> = j.column_iter().map(|c| c.norm()).collect();
-    let largest = norms.iter().copied().fold(0.0, f64::max);
-    norms.iter().map(|&n| n > 1e-9 * largest).collect()
-}
-
-fn standard_errors(linear: &Linearisation, p: &[f64], cost: f64) -> Vec<f64> {
-    let k = p.len();
-    let n = linear.residuals.len();
-    let j = &linear.jacobian;
-    let s2 = 2.0 * cost / (n.saturating_sub(k)).max(1) as f64;
-    // A parameter the data cannot see (an ay offset without an ay channel,
-    // a parameter pinned at its bound) has a zero column: it gets NaN and
-    // the others are computed without it.
-    let seen: Vec<usize> = seen_columns(j)
-        .into_iter()
-        .enumerate()
-        .filter_map(|(c, seen)| seen.then_some(c))
-        .collect();
-    let mut out = vec![f64::NAN; k];
-    if seen.is_empty() {
-        return out;
-    }
-    let js = j.select_columns(seen.iter());
-    if let Some(inv) = (js.transpose() * &js).try_inverse() {
-        for (i, &c) in seen.iter().enumerate() {
-            let v = s2 * inv[(i, i)];
-            if v.is_finite() && v >= 0.0 {
-                out[c] = v.sqrt();
-            }
-        }
-    }
-    out
 }

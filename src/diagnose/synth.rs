@@ -22,16 +22,16 @@
 //! of its own, whose campaign's `[roll]` settings deliberately differ from
 //! the truth's roll (the diagnosis is not handed the truth).
 
+use super::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use super::effects::{EffectKind, EffectSet, RollModel};
 use super::model::{Augmented, Drive};
 use super::proving_ground::{FourWheel, FourWheelEffects, FourWheelVehicle};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
-use super::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::identify::data::RigData;
-use crate::tyre::ModelName;
 use crate::manoeuvre::{Manoeuvre, RampSteer, StepSteer, SweepSteer};
 use crate::measured::MeasuredRun;
+use crate::tyre::ModelName;
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::{Vehicle, VehicleModel};
 use rand::SeedableRng;

@@ -22,17 +22,15 @@
 //! different sample rates between runs are fine (each run is compared at its
 //! own sample times). Units: SI, rad.
 
-use super::clean::{
-    clean_run, slice, CleanSettings, CleaningReport, GlitchKind,
-};
-use super::scenario::{load_tyre, Road};
+use super::clean::{clean_run, slice, CleanSettings, CleaningReport, GlitchKind};
+use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{InputError, ParamError};
-pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::identify::data::read_rig;
+pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
@@ -149,11 +147,8 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
 
 /// Checks the vehicle, road, roll, diagnosis and segment values.
 fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
-    f.vehicle
-        .validate()
-        .map_err(|e| param_error(src, Some("vehicle"), e))?;
-    ParamError::positive("friction", f.road.friction)
-        .map_err(|e| param_error(src, Some("road"), e))?;
+    check_vehicle(src, &f.vehicle)?;
+    check_road(src, &f.road)?;
     f.roll
         .validate()
         .map_err(|e| param_error(src, Some("roll"), e))?;
@@ -215,30 +210,29 @@ fn base_tyres(
 ) -> Result<BaseTyres, InputError> {
     let spec = f.tyres.clone().unwrap_or_default();
     let rig_default = base.join("tyre_rig.csv");
-    let rig = match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
-        (Some(t), None, None, None) => {
-            inputs.push(base.join(t));
-            let t = load_tyre(&base.join(t))?;
-            return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
-        }
-        (None, Some(fr), Some(re), None) => {
-            inputs.extend([base.join(fr), base.join(re)]);
-            return Ok(BaseTyres::Given(
-                Box::new(load_tyre(&base.join(fr))?),
-                Box::new(load_tyre(&base.join(re))?),
-            ));
-        }
-        (None, None, None, Some(rig)) => base.join(rig),
-        (None, None, None, None) if folder && rig_default.is_file() => rig_default,
-        (None, None, None, None) => return Ok(BaseTyres::FromRuns),
-        _ => {
-            return Err(src.value_error(&ParamError::new(
+    let rig =
+        match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
+            (Some(t), None, None, None) => {
+                inputs.push(base.join(t));
+                let t = load_tyre(&base.join(t))?;
+                return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
+            }
+            (None, Some(fr), Some(re), None) => {
+                inputs.extend([base.join(fr), base.join(re)]);
+                return Ok(BaseTyres::Given(
+                    Box::new(load_tyre(&base.join(fr))?),
+                    Box::new(load_tyre(&base.join(re))?),
+                ));
+            }
+            (None, None, None, Some(rig)) => base.join(rig),
+            (None, None, None, None) if folder && rig_default.is_file() => rig_default,
+            (None, None, None, None) => return Ok(BaseTyres::FromRuns),
+            _ => return Err(src.value_error(&ParamError::new(
                 "tyres",
                 f64::NAN,
                 "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
-            )))
-        }
-    };
+            ))),
+        };
     let name = spec.model.as_deref().unwrap_or("pac89");
     let model_error = |m: String| src.value_error(&ParamError::new("tyres.model", f64::NAN, &m));
     crate::identify::start_tyre(name, 1.0).map_err(model_error)?;

@@ -10,6 +10,7 @@ mod run;
 pub mod scenario;
 pub mod study;
 pub mod sweep;
+mod tables;
 pub mod tir;
 mod toml_file;
 

@@ -4,46 +4,17 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
+use super::tables::{check_road, resolve_model};
+pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 use crate::error::{InputError, ParamError};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
-use crate::tyre::Tyre;
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
-
-/// Paths of the tyre files.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct TyreRefs {
-    /// Tyre file of the front wheels.
-    pub front: PathBuf,
-    /// Tyre file of the rear wheels (default: the front one).
-    #[serde(default)]
-    pub rear: Option<PathBuf>,
-}
-
-/// The road.
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Road {
-    /// Friction coefficient, a scale on the tyres' own friction.
-    #[serde(default = "one")]
-    pub friction: f64,
-}
-
-impl Default for Road {
-    fn default() -> Self {
-        Self { friction: 1.0 }
-    }
-}
-
-fn one() -> f64 {
-    1.0
-}
 
 /// Integration settings (`[simulation]`, or `[integrator]`): the method,
 /// the interval of the recorded rows, and Dormand–Prince's tolerances.
@@ -277,20 +248,6 @@ fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
     ParamError::in_range("end", end, start, 1e6, "the run must end after it starts")
 }
 
-/// Reads and validates a tyre file.
-pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
-    if path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("tir"))
-    {
-        return Ok(Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?)));
-    }
-    let src = TomlSource::read(path)?;
-    let tyre: Tyre = src.parse()?;
-    tyre.validate().map_err(|e| param_error(&src, None, e))?;
-    Ok(tyre)
-}
-
 fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {
     r.map_err(|e| param_error(src, Some("manoeuvre"), e))
 }
@@ -306,94 +263,180 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
 /// kinds that embed a scenario's tables use it too).
 pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
-    f.vehicle
-        .validate()
-        .map_err(|e| param_error(src, Some("vehicle"), e))?;
-    f.model
-        .effects
-        .validate()
-        .map_err(|e| param_error(src, Some("model.effects"), e))?;
-    ParamError::positive("friction", f.road.friction)
-        .map_err(|e| param_error(src, Some("road"), e))?;
+    let (model, tyre_files) = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
+    check_road(src, &f.road)?;
     let method = f
         .simulation
         .method()
         .map_err(|e| param_error(src, Some("simulation"), e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
-    let front_path = dir.join(&f.tyres.front);
-    let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
-    let front = load_tyre(&front_path)?;
-    let rear = load_tyre(&rear_path)?;
-    let mut inputs = vec![path.to_path_buf(), front_path, rear_path];
-    let mut model = VehicleModel::new(f.vehicle.clone(), front, rear);
-    model.options = f.model;
+    let mut inputs = vec![path.to_path_buf()];
+    inputs.extend(tyre_files);
     let integrator = Integrator {
         step: f.simulation.step,
         friction: f.road.friction,
         method,
     };
-    let mut initial = State::default();
-    let mut measured = None;
-    let mut cleaning = None;
-    let manoeuvre = match &f.manoeuvre {
-        ManoeuvreSpec::StepSteer(s) => {
-            check(src, ParamError::positive("speed", s.speed))?;
-            check(src, ParamError::non_negative("start", s.start))?;
-            check(
-                src,
-                ParamError::in_range(
-                    "rise_time",
-                    s.rise_time,
-                    -1e-12,
-                    MAX_RAMP_TIME,
-                    "ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)",
-                ),
-            )?;
-            check(src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
-            // Start from straight running: the steer and sideslip that give
-            // zero lateral acceleration (non-zero only for tyres with offsets).
-            let solve = |ay: f64| {
-                model
-                    .steady_state_for_lateral_acceleration(s.speed, f.road.friction, ay)
-                    .map_err(|m| {
-                        param_error(
-                            src,
-                            Some("manoeuvre"),
-                            ParamError::new("lateral_acceleration", ay, &m),
-                        )
-                    })
-            };
-            let trim = solve(0.0)?;
-            initial = State {
-                beta: trim.beta,
-                yaw_rate: trim.yaw_rate,
-            };
-            let amplitude = match (s.steer, s.lateral_acceleration) {
-                (Some(d), None) => {
-                    check(src, ParamError::finite("steer", d))?;
-                    d
-                }
-                (None, Some(ay)) => {
-                    check(src, ParamError::finite("lateral_acceleration", ay))?;
-                    solve(ay)?.steer - trim.steer
-                }
-                _ => {
-                    return Err(param_error(
-                        src,
-                        Some("manoeuvre"),
-                        ParamError::new("kind", f64::NAN, "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)"),
-                    ))
-                }
-            };
-            Manoeuvre::StepSteer(StepSteer {
-                speed: s.speed,
-                amplitude,
-                trim: trim.steer,
-                start: s.start,
-                rise_time: s.rise_time,
-                end: s.end,
-            })
+    let Resolved {
+        manoeuvre,
+        initial,
+        measured,
+        cleaning,
+    } = match &f.manoeuvre {
+        ManoeuvreSpec::StepSteer(s) => step_steer(src, s, &model, f.road.friction)?,
+        ManoeuvreSpec::Replay(r) => {
+            let run_path = dir.join(&r.run);
+            let resolved = replay(src, r, &run_path)?;
+            inputs.push(run_path);
+            resolved
         }
+        spec => Resolved::from(other_manoeuvre(src, spec)?),
+    };
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Scenario {
+        name,
+        model,
+        manoeuvre,
+        integrator,
+        metrics: f.metrics,
+        initial,
+        measured,
+        inputs,
+        cleaning,
+    })
+}
+
+/// A resolved manoeuvre, the state it starts from and, for a replay, the
+/// measured run and its cleaning.
+struct Resolved {
+    manoeuvre: Manoeuvre,
+    initial: State,
+    measured: Option<MeasuredRun>,
+    cleaning: Option<crate::measured::clean::CleaningReport>,
+}
+
+impl From<Manoeuvre> for Resolved {
+    fn from(manoeuvre: Manoeuvre) -> Self {
+        Self {
+            manoeuvre,
+            initial: State::default(),
+            measured: None,
+            cleaning: None,
+        }
+    }
+}
+
+/// A step steer: timing checked (ISO 7401's rise time), the amplitude
+/// from `steer` or from the steady `lateral_acceleration` it must reach, the
+/// start at straight running (the steer and sideslip that give zero lateral
+/// acceleration, non-zero only for tyres with offsets).
+fn step_steer(
+    src: &TomlSource,
+    s: &StepSteerSpec,
+    model: &VehicleModel,
+    friction: f64,
+) -> Result<Resolved, InputError> {
+    check(src, ParamError::positive("speed", s.speed))?;
+    check(src, ParamError::non_negative("start", s.start))?;
+    check(
+        src,
+        ParamError::in_range(
+            "rise_time",
+            s.rise_time,
+            -1e-12,
+            MAX_RAMP_TIME,
+            "ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)",
+        ),
+    )?;
+    check(src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
+    let solve = |ay: f64| {
+        model
+            .steady_state_for_lateral_acceleration(s.speed, friction, ay)
+            .map_err(|m| {
+                param_error(
+                    src,
+                    Some("manoeuvre"),
+                    ParamError::new("lateral_acceleration", ay, &m),
+                )
+            })
+    };
+    let trim = solve(0.0)?;
+    let amplitude = match (s.steer, s.lateral_acceleration) {
+        (Some(d), None) => {
+            check(src, ParamError::finite("steer", d))?;
+            d
+        }
+        (None, Some(ay)) => {
+            check(src, ParamError::finite("lateral_acceleration", ay))?;
+            solve(ay)?.steer - trim.steer
+        }
+        _ => return Err(param_error(
+            src,
+            Some("manoeuvre"),
+            ParamError::new(
+                "kind",
+                f64::NAN,
+                "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)",
+            ),
+        )),
+    };
+    Ok(Resolved {
+        initial: State {
+            beta: trim.beta,
+            yaw_rate: trim.yaw_rate,
+        },
+        ..Resolved::from(Manoeuvre::StepSteer(StepSteer {
+            speed: s.speed,
+            amplitude,
+            trim: trim.steer,
+            start: s.start,
+            rise_time: s.rise_time,
+            end: s.end,
+        }))
+    })
+}
+
+/// A replay of a measured run: the run read and cleaned (standstills,
+/// glitches), started from its first unmasked sample.
+fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved, InputError> {
+    check(src, ParamError::non_negative("min_speed", r.min_speed))?;
+    let settings = super::clean::CleanSettings::single(r.min_speed);
+    let mut report = super::clean::CleaningReport::new(r.min_speed);
+    let read = read_run(run_path)?;
+    let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
+        InputError::File {
+            path: run_path.to_path_buf(),
+            message: format!(
+                "no two successive samples at or above min_speed = {} m/s ({} of {} samples below it)",
+                r.min_speed, report.samples_slow, report.samples_read
+            ),
+        }
+    })?;
+    // A masked first sample is a glitch, not the initial state.
+    let first = (0..run.t.len())
+        .find(|i| !run.masked.contains(i))
+        .unwrap_or(0);
+    Ok(Resolved {
+        manoeuvre: Manoeuvre::Replay(Replay {
+            t: run.t.clone(),
+            steer: run.steer.clone(),
+            speed: run.speed.clone(),
+        }),
+        initial: State {
+            beta: run.beta.as_ref().map_or(0.0, |b| b[first]),
+            yaw_rate: run.yaw_rate[first],
+        },
+        measured: Some(run),
+        cleaning: Some(report),
+    })
+}
+
+/// Ramp, sine and sweep steers: their timing and rates checked.
+fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
+    Ok(match spec {
         ManoeuvreSpec::RampSteer(r) => {
             check(src, timing(r.speed, r.start, r.end))?;
             check(src, ParamError::finite("rate", r.rate))?;
@@ -410,53 +453,8 @@ pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, 
             check(src, ParamError::positive("f_end", s.f_end))?;
             Manoeuvre::Sweep(*s)
         }
-        ManoeuvreSpec::Replay(r) => {
-            let run_path = dir.join(&r.run);
-            check(src, ParamError::non_negative("min_speed", r.min_speed))?;
-            let settings = super::clean::CleanSettings::single(r.min_speed);
-            let mut report = super::clean::CleaningReport::new(r.min_speed);
-            let read = read_run(&run_path)?;
-            let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
-                InputError::File {
-                    path: run_path.clone(),
-                    message: format!(
-                        "no two successive samples at or above min_speed = {} m/s ({} of {} samples below it)",
-                        r.min_speed, report.samples_slow, report.samples_read
-                    ),
-                }
-            })?;
-            cleaning = Some(report);
-            inputs.push(run_path);
-            // A masked first sample is a glitch, not the initial state.
-            let first = (0..run.t.len())
-                .find(|i| !run.masked.contains(i))
-                .unwrap_or(0);
-            initial = State {
-                beta: run.beta.as_ref().map_or(0.0, |b| b[first]),
-                yaw_rate: run.yaw_rate[first],
-            };
-            let m = Manoeuvre::Replay(Replay {
-                t: run.t.clone(),
-                steer: run.steer.clone(),
-                speed: run.speed.clone(),
-            });
-            measured = Some(run);
-            m
+        ManoeuvreSpec::StepSteer(_) | ManoeuvreSpec::Replay(_) => {
+            unreachable!("resolved by their own functions")
         }
-    };
-    let name = f.name.clone().unwrap_or_else(|| {
-        path.file_stem()
-            .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
-    });
-    Ok(Scenario {
-        name,
-        model,
-        manoeuvre,
-        integrator,
-        metrics: f.metrics,
-        initial,
-        measured,
-        inputs,
-        cleaning,
     })
 }

@@ -3,7 +3,7 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
-use super::scenario::{load_tyre, TyreRefs};
+use super::tables::{resolve_model, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
@@ -210,26 +210,39 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
     Ok(values)
 }
 
+/// Refuses effects the equilibrium analysis does not model: its residual
+/// ([`VehicleModel::equilibrium_residual`]) has the papers' model with aero
+/// load and bank; a tyre lag does not move an equilibrium and is allowed.
+fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<(), InputError> {
+    let unsupported = [
+        ("steering_compliance", e.steering_compliance != 0.0),
+        ("roll_steer", e.roll_steer != [0.0; 2]),
+        ("roll_camber", e.roll_camber != [0.0; 2]),
+        (
+            "cornering_stiffness_scale",
+            e.cornering_stiffness_scale != [1.0; 2],
+        ),
+    ];
+    match unsupported.iter().find(|(_, on)| *on) {
+        Some((key, _)) => Err(param_error(
+            src,
+            Some("model.effects"),
+            ParamError::new(
+                key,
+                f64::NAN,
+                "not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files",
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Reads and validates a sweep file.
 pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     let src = TomlSource::read(path)?;
     let f: SweepFile = src.parse()?;
-    f.vehicle
-        .validate()
-        .map_err(|e| param_error(&src, Some("vehicle"), e))?;
-    f.model
-        .effects
-        .validate()
-        .map_err(|e| param_error(&src, Some("model.effects"), e))?;
-    let dir = path.parent().unwrap_or(Path::new("."));
-    let front_path = dir.join(&f.tyres.front);
-    let rear_path = dir.join(f.tyres.rear.as_ref().unwrap_or(&f.tyres.front));
-    let mut model = VehicleModel::new(
-        f.vehicle.clone(),
-        load_tyre(&front_path)?,
-        load_tyre(&rear_path)?,
-    );
-    model.options = f.model;
+    let (model, [front_path, rear_path]) = resolve_model(&src, &f.vehicle, &f.tyres, f.model)?;
+    equilibrium_effects(&src, &f.model.effects)?;
     let grid = Grid {
         steer: expand(&f.sweep.steer, "steer", &src)?,
         friction: expand(&f.sweep.friction, "friction", &src)?,

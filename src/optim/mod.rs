@@ -6,5 +6,6 @@
 pub mod bounded;
 pub mod local;
 pub mod pso;
+pub mod stats;
 
 pub use pso::{Boundary, Inertia, Pso, PsoResult, Topology};

@@ -1,7 +1,7 @@
 //! Effects beyond the papers' model, and the body-roll degree of freedom
 //! they act through. Every effect is off by default, and off it changes
-//! nothing: the base model stays exactly Li, Jia & Zhao's (2016) / Wang &
-//! Liang's (2017). They are what the sim-to-real diagnosis searches over
+//! nothing: the base model stays exactly Li, Jia & Zhao's / Wang &
+//! Liang's. They are what the sim-to-real diagnosis searches over
 //! (its candidates set them) and what a scenario's `[model.effects]` table
 //! may switch on.
 //!

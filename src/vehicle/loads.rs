@@ -1,6 +1,6 @@
 //! Wheel loads and the load-transfer loop.
 //!
-//! Wheel loads (Wang & Liang (2017) eq. 4): static axle loads `m·g·b/l` and
+//! Wheel loads (Wang & Liang eq. 4): static axle loads `m·g·b/l` and
 //! `m·g·a/l` (times cos θ on a bank, plus aero load) split evenly, plus a
 //! lateral transfer `ΔFz = χ·m·ay·h/d_f` (front) and `(1 − χ)·m·ay·h/d_r`
 //! (rear) from the inner (left, for ay > 0) to the outer wheel, with χ = b/l

@@ -55,7 +55,7 @@ pub enum Kinematics {
     /// atan slip angles, cos δ projection, v = u·tan β (default).
     #[default]
     Exact,
-    /// The small-angle form of Li, Jia & Zhao (2016).
+    /// The small-angle form of Li, Jia & Zhao.
     SmallAngle,
 }
 

@@ -254,7 +254,10 @@ fn diagnose_synthetic(
         seed,
         ..Default::default()
     };
-    let c = s.campaign(handling::diagnose::effects::EffectKind::ALL.to_vec(), settings);
+    let c = s.campaign(
+        handling::diagnose::effects::EffectKind::ALL.to_vec(),
+        settings,
+    );
     handling::diagnose::diagnose(&c, None).unwrap()
 }
 

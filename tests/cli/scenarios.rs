@@ -569,3 +569,42 @@ fn replay_with_the_default_tolerance_matches_a_tight_reference() {
         );
     }
 }
+
+#[test]
+fn a_scenario_with_tyre_lag_and_roll_steer_integrates_and_writes_the_roll() {
+    // The one right-hand side with its extra states, from a file: a tyre
+    // lag keeps the steady state, roll steer (front toe-out in roll) makes
+    // the car understeer more by its closed form, and the roll is written.
+    let dir = tempfile::tempdir().unwrap();
+    let base = scenario_with("step_gbt6323_pac89.toml", dir.path(), "base.toml", "");
+    let text = fs::read_to_string(&base).unwrap().replace(
+        "\n[model]\n",
+        "\n[model]\neffects = { relaxation_length = 0.4, roll_steer = [-0.1, 0.0] }\n",
+    );
+    let lagged = dir.path().join("lagged.toml");
+    fs::write(&lagged, text).unwrap();
+    let metrics = |p: &Path, out: &str| -> serde_json::Value {
+        simulate_to(p, &dir.path().join(out));
+        read_json(&dir.path().join(out).join("metrics.json"))
+    };
+    let (m0, m1) = (metrics(&base, "b"), metrics(&lagged, "l"));
+    let gain = |m: &serde_json::Value| m["yaw_rate_gain"].as_f64().unwrap();
+    // Roll steer −0.1 at the front steers it out of the turn by 0.1·φ.
+    assert!(gain(&m1) < 0.97 * gain(&m0), "{} {}", gain(&m1), gain(&m0));
+    let csv = fs::read_to_string(dir.path().join("l/history.csv")).unwrap();
+    let header = csv.lines().next().unwrap();
+    assert!(header.ends_with(",roll"), "{header}");
+    let last: Vec<f64> = csv
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    // Steady roll: 4°/g of the default roll model times the steady ay.
+    let (ay, roll) = (last[5], last[14]);
+    let k = 4f64.to_radians() / 9.80665;
+    assert!((roll - k * ay).abs() < 1e-4 * k * ay.abs(), "{roll} {ay}");
+    let h0 = fs::read_to_string(dir.path().join("b/history.csv")).unwrap();
+    assert!(!h0.lines().next().unwrap().contains("roll"));
+}

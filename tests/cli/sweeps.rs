@@ -87,3 +87,30 @@ fn seed004_study_writes_map_rbf_and_inverse() {
     }
     assert!(fs::metadata(out.path().join("maps.png")).unwrap().len() > 10_000);
 }
+
+#[test]
+fn a_sweep_refuses_an_effect_the_equilibrium_analysis_does_not_model() {
+    // Roll steer moves every equilibrium, and the equilibrium residual does
+    // not model it: a sweep with it is refused at its key, not solved wrong.
+    let text = fs::read_to_string(root().join("scenarios/seed003_steer.toml")).unwrap();
+    let text = text
+        .replace(
+            "\n[model]\n",
+            "\n[model]\neffects = { roll_steer = [-0.1, 0.0] }\n",
+        )
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let dir = scratch(&[("sweep.toml", &text)]);
+    let o = run(&[
+        "equilibria",
+        dir.path().join("sweep.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("sweep.toml:") && e.contains("model.effects.roll_steer"),
+        "{e}"
+    );
+    assert!(!dir.path().join("out").exists());
+}

@@ -1,0 +1,94 @@
+//! The tables every model-bearing file shares — `[vehicle]`, `[tyres]`,
+//! `[road]`, `[model]` — resolved in one place: values checked (errors
+//! name the file, line, column and value), tyre files read relative to the
+//! file that names them. Scenario, sweep and study files resolve their
+//! model here; campaign files their vehicle and road.
+//! Units: SI, rad.
+
+use super::toml_file::{param_error, TomlSource};
+use crate::error::{InputError, ParamError};
+use crate::tyre::Tyre;
+use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Paths of the tyre files.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TyreRefs {
+    /// Tyre file of the front wheels.
+    pub front: PathBuf,
+    /// Tyre file of the rear wheels (default: the front one).
+    #[serde(default)]
+    pub rear: Option<PathBuf>,
+}
+
+/// The road.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Road {
+    /// Friction coefficient, a scale on the tyres' own friction.
+    #[serde(default = "one")]
+    pub friction: f64,
+}
+
+impl Default for Road {
+    fn default() -> Self {
+        Self { friction: 1.0 }
+    }
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// Reads and validates a tyre file.
+pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("tir"))
+    {
+        return Ok(Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?)));
+    }
+    let src = TomlSource::read(path)?;
+    let tyre: Tyre = src.parse()?;
+    tyre.validate().map_err(|e| param_error(&src, None, e))?;
+    Ok(tyre)
+}
+
+/// Checks a `[vehicle]` table.
+pub fn check_vehicle(src: &TomlSource, vehicle: &Vehicle) -> Result<(), InputError> {
+    vehicle
+        .validate()
+        .map_err(|e| param_error(src, Some("vehicle"), e))
+}
+
+/// Checks a `[road]` table.
+pub fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
+    ParamError::positive("friction", road.friction).map_err(|e| param_error(src, Some("road"), e))
+}
+
+/// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables, and
+/// the tyre files read (front, rear).
+pub fn resolve_model(
+    src: &TomlSource,
+    vehicle: &Vehicle,
+    tyres: &TyreRefs,
+    options: ModelOptions,
+) -> Result<(VehicleModel, [PathBuf; 2]), InputError> {
+    check_vehicle(src, vehicle)?;
+    options
+        .effects
+        .validate()
+        .map_err(|e| param_error(src, Some("model.effects"), e))?;
+    let dir = src.path.parent().unwrap_or(Path::new("."));
+    let front_path = dir.join(&tyres.front);
+    let rear_path = dir.join(tyres.rear.as_ref().unwrap_or(&tyres.front));
+    let mut model = VehicleModel::new(
+        vehicle.clone(),
+        load_tyre(&front_path)?,
+        load_tyre(&rear_path)?,
+    );
+    model.options = options;
+    Ok((model, [front_path, rear_path]))
+}

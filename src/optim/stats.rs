@@ -1,0 +1,101 @@
+//! Parameter uncertainty of a least-squares fit at its optimum: the
+//! covariance `s²·(JᵀJ)⁻¹` with `s² = Σr²/(m − n)` (m residuals, n
+//! parameters) from the Jacobian of the residuals, the Gauss–Newton
+//! approximation of the Hessian (Seber & Wild, *Nonlinear Regression*,
+//! 1989, §2.1). Used by the tyre identification and the diagnosis alike.
+
+use nalgebra::DMatrix;
+
+/// Which columns of `j` the data see: a column whose norm is below 1e-9 of
+/// the largest is a parameter the residuals do not depend on (an offset of
+/// a channel that is not measured, a parameter pinned at its bound).
+pub fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
+    let norms: Vec<f64> = j.column_iter().map(|c| c.norm()).collect();
+    let largest = norms.iter().copied().fold(0.0, f64::max);
+    norms.iter().map(|&n| n > 1e-9 * largest).collect()
+}
+
+/// The covariance of the parameters of a fit whose residuals have Jacobian
+/// `j` and sum of squares `sum_squares` at the optimum, over the columns
+/// the data see (the rows and columns of unseen parameters are NaN).
+/// (JᵀJ) is inverted by SVD with singular values below 1e-14 of the largest
+/// dropped, so a near-singular fit gives large variances, not an error.
+/// None when no parameter is seen.
+pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
+    let (m, n) = j.shape();
+    let seen: Vec<usize> = seen_columns(j)
+        .into_iter()
+        .enumerate()
+        .filter_map(|(c, seen)| seen.then_some(c))
+        .collect();
+    if seen.is_empty() {
+        return None;
+    }
+    let s2 = sum_squares / m.saturating_sub(n).max(1) as f64;
+    let js = j.select_columns(seen.iter());
+    let svd = (js.transpose() * &js).svd(true, true);
+    let smax = svd.singular_values.max();
+    let inv = svd.pseudo_inverse(1e-14 * smax).ok()?;
+    let mut out = DMatrix::from_element(n, n, f64::NAN);
+    for (a, &i) in seen.iter().enumerate() {
+        for (b, &k) in seen.iter().enumerate() {
+            out[(i, k)] = s2 * inv[(a, b)];
+        }
+    }
+    Some(out)
+}
+
+/// Standard errors (square roots of the covariance's diagonal); NaN for a
+/// parameter the data do not see or whose variance is not a finite
+/// non-negative number.
+pub fn standard_errors(j: &DMatrix<f64>, sum_squares: f64) -> Vec<f64> {
+    let n = j.ncols();
+    match covariance(j, sum_squares) {
+        Some(c) => (0..n)
+            .map(|i| {
+                let v = c[(i, i)];
+                if v.is_finite() && v >= 0.0 {
+                    v.sqrt()
+                } else {
+                    f64::NAN
+                }
+            })
+            .collect(),
+        None => vec![f64::NAN; n],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn straight_line_fit_has_the_textbook_standard_errors() {
+        // y = a + b·x on x = 0..4: Var(b) = s²/Σ(x − x̄)², Var(a) =
+        // s²·Σx²/(m·Σ(x − x̄)²).
+        let x = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let j = DMatrix::from_fn(5, 2, |i, c| if c == 0 { 1.0 } else { x[i] });
+        let ss = 0.3;
+        let s2 = ss / 3.0;
+        let sxx = 10.0;
+        let e = standard_errors(&j, ss);
+        assert!((e[1] - (s2 / sxx).sqrt()).abs() < 1e-12);
+        assert!((e[0] - (s2 * 30.0 / (5.0 * sxx)).sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_unseen_parameter_gets_nan_and_leaves_the_others_alone() {
+        let x = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let with = DMatrix::from_fn(5, 3, |i, c| match c {
+            0 => 1.0,
+            1 => 0.0,
+            _ => x[i],
+        });
+        let without = DMatrix::from_fn(5, 2, |i, c| if c == 0 { 1.0 } else { x[i] });
+        let a = standard_errors(&with, 0.3);
+        // One more parameter in the degrees of freedom: s² over 2, not 3.
+        let b = standard_errors(&without, 0.3 * 2.0 / 3.0);
+        assert!(a[1].is_nan());
+        assert!((a[0] - b[0]).abs() < 1e-12 && (a[2] - b[1]).abs() < 1e-12);
+    }
+}

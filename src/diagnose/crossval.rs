@@ -2,11 +2,14 @@
 //! runs, each fold refitted from the all-run optimum; the held-out gap
 //! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
 
+use super::campaign::Campaign;
 use super::candidates::{with_effects, Bases, Setting};
+use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::model::Observed;
-use crate::optim::pso::Pso;
+use crate::optim::pso::{Inertia, Pso};
+use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Everything scored for one candidate.
@@ -169,4 +172,48 @@ pub(super) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
     } else {
         100.0 * (1.0 - gap_above(after, jn) / g0)
     }
+}
+
+/// The runs prepared for replay (sampled on the RK4 grid, residual
+/// times picked), the cross-validation folds (run i in fold i mod k) and
+/// the swarm every effect fit starts with.
+pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
+    let set = &c.settings;
+    let runs: Vec<Prepared> = c
+        .runs
+        .iter()
+        .map(|r| Prepared::new(r, set.step, set.sample_rate))
+        .collect();
+    let k = runs.len().min(MAX_FOLDS);
+    let folds: Vec<Vec<usize>> = (0..k)
+        .map(|f| (0..runs.len()).filter(|i| i % k == f).collect())
+        .collect();
+    let pso = Pso {
+        particles: set.particles,
+        iterations: set.iterations,
+        inertia: Inertia::LinearDecreasing,
+        seed: set.seed,
+        parallel: false,
+        ..Pso::default()
+    };
+    (runs, folds, pso)
+}
+
+/// Every candidate effect alone, scored (in parallel, each with its own
+/// seed), and their order by held-out error.
+pub(super) fn singles(ctx: &Context, effects: &[EffectKind]) -> (Vec<Scored>, Vec<usize>) {
+    let singles: Vec<Scored> = effects
+        .par_iter()
+        .enumerate()
+        .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), None, i as u64 + 1))
+        .collect();
+    let scales = ctx.scales;
+    let mut order: Vec<usize> = (0..singles.len()).collect();
+    order.sort_by(|&a, &b| {
+        singles[a]
+            .heldout
+            .combined(&scales)
+            .total_cmp(&singles[b].heldout.combined(&scales))
+    });
+    (singles, order)
 }

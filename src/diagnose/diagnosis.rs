@@ -33,13 +33,12 @@ pub use super::report::*;
 
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
-use super::crossval::{gap_above, reduction, Context, Scored};
+use super::crossval::{gap_above, prepare, reduction, singles, Context, Scored};
 use super::effects::{EffectKind, EffectSet};
-use super::fit::{Channel, ChannelErrors, Prepared};
+use super::fit::{Channel, ChannelErrors};
 use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
-use crate::optim::pso::{Inertia, Pso};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -464,27 +463,35 @@ fn overlays(ctx: &Context, before: &[Observed], after: &[Observed]) -> Vec<Overl
     out
 }
 
+/// The base model scored on held-out and fitted runs, with the error the
+/// channels' noise floors alone would give.
+fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
+    let scales = ctx.scales;
+    let noise_level = |e: &ChannelErrors| {
+        let n: usize = e.count.iter().sum();
+        let s: f64 = (0..3)
+            .map(|i| e.count[i] as f64 * (floors[i] / scales[i]).powi(2))
+            .sum();
+        (s / n.max(1) as f64).sqrt()
+    };
+    let scored = ctx.score(Vec::new(), EffectSet::default(), None, 0);
+    Baseline {
+        j0: scored.heldout.combined(&scales),
+        jn: noise_level(&scored.heldout),
+        j0_in: scored.insample.combined(&scales),
+        jn_in: noise_level(&scored.insample),
+        bic0: scored.full.bic(),
+        scales,
+        folds: ctx.folds.len(),
+        axle_count: if ctx.bases.axle.is_some() { 3 } else { 0 },
+    }
+}
+
 /// Runs the diagnosis of a campaign. `progress` counts work units (see
 /// [`work_units`]).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, String> {
     let set = &c.settings;
-    let runs: Vec<Prepared> = c
-        .runs
-        .iter()
-        .map(|r| Prepared::new(r, set.step, set.sample_rate))
-        .collect();
-    let k = runs.len().min(MAX_FOLDS);
-    let folds: Vec<Vec<usize>> = (0..k)
-        .map(|f| (0..runs.len()).filter(|i| i % k == f).collect())
-        .collect();
-    let pso = Pso {
-        particles: set.particles,
-        iterations: set.iterations,
-        inertia: Inertia::LinearDecreasing,
-        seed: set.seed,
-        parallel: false,
-        ..Pso::default()
-    };
+    let (runs, folds, pso) = prepare(c);
     let hint = signal_scales(c);
     let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, &pso)?;
     if let Some(p) = progress {
@@ -506,43 +513,10 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         pso,
         progress,
     };
-    let noise_level = |e: &ChannelErrors| {
-        let n: usize = e.count.iter().sum();
-        let s: f64 = (0..3)
-            .map(|i| e.count[i] as f64 * (floors[i] / scales[i]).powi(2))
-            .sum();
-        (s / n.max(1) as f64).sqrt()
-    };
-
-    // The base model on held-out runs.
-    let base_scored = ctx.score(Vec::new(), EffectSet::default(), None, 0);
-    let base = Baseline {
-        j0: base_scored.heldout.combined(&scales),
-        jn: noise_level(&base_scored.heldout),
-        j0_in: base_scored.insample.combined(&scales),
-        jn_in: noise_level(&base_scored.insample),
-        bic0: base_scored.full.bic(),
-        scales,
-        folds: ctx.folds.len(),
-        axle_count: if bases.axle.is_some() { 3 } else { 0 },
-    };
+    let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
     let significant = j0 > SIGNIFICANT * jn;
-
-    // Single effects, ranked by held-out error.
-    let singles: Vec<Scored> = c
-        .effects
-        .par_iter()
-        .enumerate()
-        .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), None, i as u64 + 1))
-        .collect();
-    let mut order: Vec<usize> = (0..singles.len()).collect();
-    order.sort_by(|&a, &b| {
-        singles[a]
-            .heldout
-            .combined(&scales)
-            .total_cmp(&singles[b].heldout.combined(&scales))
-    });
+    let (singles, order) = singles(&ctx, &c.effects);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
 
     let found = if significant {

@@ -94,7 +94,7 @@ mod tests {
         let without = DMatrix::from_fn(5, 2, |i, c| if c == 0 { 1.0 } else { x[i] });
         let a = standard_errors(&with, 0.3);
         // One more parameter in the degrees of freedom: s² over 2, not 3.
-        let b = standard_errors(&without, 0.3 * 2.0 / 3.0);
+        let b = standard_errors(&without, 0.3 * 3.0 / 2.0);
         assert!(a[1].is_nan());
         assert!((a[0] - b[0]).abs() < 1e-12 && (a[2] - b[1]).abs() < 1e-12);
     }

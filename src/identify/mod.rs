@@ -476,34 +476,15 @@ mod tests;
 /// linear) to data whose median load is `fz`: the lateral parameters only,
 /// so that no borrowed aligning or longitudinal coefficients are written.
 pub fn start_tyre(model: &str, fz: f64) -> Result<Tyre, String> {
-    use crate::tyre::{Gim, Linear, MagicSimple, Pac89, UniTire};
-    Ok(match model {
-        "gim" => Tyre::Gim(Gim {
-            reference_load: fz,
-            ..Gim::new(50_000.0, 0.15, 1.0)
-        }),
-        "magic-simple" => Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
-        "unitire" => {
-            let mut u: UniTire =
-                match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml")) {
-                    Ok(Tyre::Unitire(u)) => u,
-                    _ => unreachable!("the bundled UniTire file"),
-                };
-            u.rated_load = fz;
-            u.longitudinal = None;
-            u.aligning = None;
-            Tyre::Unitire(u)
-        }
-        "pac89" => Tyre::Pac89(Pac89 {
-            b: None,
-            c: None,
-            ..Pac89::adams_example()
-        }),
-        "linear" => Tyre::Linear(Linear::new(50_000.0)),
-        m => {
-            return Err(format!(
-                "unknown tyre model `{m}`: one of gim, magic-simple, unitire, pac89, linear"
-            ))
-        }
-    })
+    model
+        .parse::<crate::tyre::ModelName>()
+        .ok()
+        .and_then(|m| m.start_tyre(fz))
+        .ok_or_else(|| {
+            let names: Vec<&str> = crate::tyre::ModelName::fitted()
+                .iter()
+                .map(|m| m.as_str())
+                .collect();
+            format!("unknown tyre model `{model}`: one of {}", names.join(", "))
+        })
 }

@@ -22,7 +22,7 @@ pub mod pac89_two_stage;
 
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{Inertia, Pso};
-use crate::tyre::{Parameterised, SlipState, Tyre, TyreModel};
+use crate::tyre::{Parameterised, Tyre, TyreModel};
 use data::Condition;
 use serde::Serialize;
 use std::time::Instant;
@@ -44,32 +44,19 @@ impl Channel {
     /// The measured value of a point.
     pub fn measured(self, q: &data::Point) -> f64 {
         match self {
-            Channel::LateralForce | Channel::LongitudinalForce => q[4],
-            Channel::AligningMoment => q[5],
+            Channel::LateralForce => q.fy(),
+            Channel::AligningMoment => q.mz(),
+            Channel::LongitudinalForce => q.fx(),
         }
     }
 
     /// The model's value at a point.
     pub fn model(self, t: &Tyre, q: &data::Point) -> f64 {
-        let s = SlipState {
-            alpha: q[0],
-            kappa: 0.0,
-            fz: q[1],
-            camber: q[2],
-            mu_scale: 1.0,
-            speed: q[3],
-        };
+        let s = q.slip_state();
         match self {
             Channel::LateralForce => t.lateral_force(&s),
             Channel::AligningMoment => t.forces(&s).mz,
-            Channel::LongitudinalForce => {
-                t.forces(&SlipState {
-                    alpha: 0.0,
-                    kappa: q[0],
-                    ..s
-                })
-                .fx
-            }
+            Channel::LongitudinalForce => t.forces(&s).fx,
         }
     }
 

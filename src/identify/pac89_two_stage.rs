@@ -1,4 +1,4 @@
-//! Seed 001's two-stage PAC89 identification.
+//! The two-stage PAC89 identification of Zhang et al. (2021).
 //!
 //! Stage 1, per test condition: the six coefficients B, C, D, E, Sh, Sv of
 //! `Y = D·sin(C·atan(B·x − E·(B·x − atan(B·x)))) + Sv`, `x = α[deg] + Sh`,
@@ -11,7 +11,7 @@
 //! Camber terms are held at zero with one camber level. An optional final
 //! joint polish fits a0..a13 to all the raw data from the stage-2 values.
 
-use super::data::Condition;
+use super::data::{Condition, RigError, RigPoint};
 use super::{sigma, FitSettings};
 use crate::optim::local::{levenberg_marquardt, Residuals};
 use crate::optim::Pso;
@@ -54,7 +54,8 @@ pub struct TwoStage {
     pub polished: [f64; 14],
 }
 
-struct Curve<'a>(&'a [super::data::Point]);
+/// One condition's cornering points.
+struct Curve<'a>(&'a [RigPoint]);
 
 impl Residuals for Curve<'_> {
     fn count(&self) -> usize {
@@ -70,7 +71,7 @@ impl Residuals for Curve<'_> {
             sv: p[5],
         };
         for (o, q) in out.iter_mut().zip(self.0) {
-            *o = c.eval(q[0].to_degrees()) - q[4];
+            *o = c.eval(q.slip().to_degrees()) - q.fy();
         }
     }
 }
@@ -120,12 +121,13 @@ fn tyre(a: [f64; 14]) -> Tyre {
 }
 
 /// Runs both stages (and the joint polish) on the conditions.
-pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, String> {
+pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, RigError> {
     if conditions.len() < 3 {
-        return Err(format!(
-            "two-stage PAC89 needs at least 3 test conditions; the data have {}",
-            conditions.len()
-        ));
+        return Err(RigError::TooFewConditions {
+            method: "two-stage PAC89",
+            needed: 3,
+            have: conditions.len(),
+        });
     }
     let pso = Pso {
         particles: 40,
@@ -138,7 +140,7 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
         let ymax = c
             .points
             .iter()
-            .map(|q| q[4].abs())
+            .map(|q| q.fy().abs())
             .fold(0.0, f64::max)
             .max(1.0);
         let bounds = [
@@ -159,7 +161,7 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
         );
         let coefficients = [p[0], p[1], p[2], p[3], p[4], p[5]];
         let cost = Curve(&c.points).cost(&p);
-        let y2: f64 = c.points.iter().map(|q| q[4] * q[4]).sum();
+        let y2: f64 = c.points.iter().map(|q| q.fy() * q.fy()).sum();
         stage1.push(Stage1 {
             fz_kn: c.fz / 1000.0,
             camber_deg: c.camber.to_degrees(),
@@ -351,9 +353,10 @@ mod tests {
 mod seed_style {
     use super::*;
 
-    /// Seed 001's residual levels on seed-style data: a tyre that is not a
-    /// PAC89 (the bundled UniTire) at Zhang & Li's (2017) three loads with 1 % noise.
-    /// Seed 001 reports stage-1 and stage-2 means of 0.75 % and 1.70 %; here
+    /// Zhang et al.'s (2021) residual levels on data like theirs: a tyre that
+    /// is not a PAC89 (the bundled UniTire) at Zhang & Li's (2017) three
+    /// loads with 1 % noise. Zhang et al. (2021) report stage-1 and stage-2
+    /// means of 0.75 % and 1.70 %; here
     /// stage 1 stays below 1 % and stage 2, which imposes PAC89's load laws
     /// on the curves, stays below 1.8 % and above stage 1.
     #[test]

@@ -1,6 +1,6 @@
 //! Simplified Magic Formula of Li, Jia & Zhao: `Fy = D·μ·Fz·sin(C·atan(B·α))`.
 //!
-//! Seed 003 writes it per axle with the road friction μ in front; here it acts
+//! Li, Jia & Zhao write it per axle with the road friction μ in front; here it acts
 //! per wheel (linear in Fz, so an axle is two wheels at half the axle load),
 //! `D` is the friction on the reference surface (1 reproduces the paper) and
 //! the road friction is `mu_scale`. As in the paper, μ scales the whole curve,

@@ -135,6 +135,40 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
         parallel: false,
         ..settings.pso
     };
+    let stage1 = stage1(conditions, &pso);
+    let cambers = stage1
+        .iter()
+        .map(|s| s.camber_deg)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), g| {
+            (a.min(g), b.max(g))
+        });
+    let with_camber = cambers.1 - cambers.0 > 0.1;
+    let a = stage2(&stage1, with_camber, &pso);
+    let per_condition = |t: &Tyre| {
+        conditions
+            .iter()
+            .map(|c| sigma(t, &c.points).0)
+            .collect::<Vec<f64>>()
+    };
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let stage2_sigma = per_condition(&tyre(a));
+    let polished = polish(a, conditions, with_camber);
+    let polished_sigma = per_condition(&tyre(polished));
+    Ok(TwoStage {
+        stage1_mean_sigma: mean(&stage1.iter().map(|s| s.sigma_percent).collect::<Vec<_>>()),
+        stage1,
+        stage2_mean_sigma: mean(&stage2_sigma),
+        stage2_sigma,
+        stage2: a,
+        polished_mean_sigma: mean(&polished_sigma),
+        polished_sigma,
+        polished,
+    })
+}
+
+/// Stage 1: B, C, D, E, Sh, Sv of each condition's curve by PSO + LM (the
+/// swarm's seed advanced by the condition's index).
+fn stage1(conditions: &[Condition], pso: &Pso) -> Vec<Stage1> {
     let mut stage1 = Vec::new();
     for (k, c) in conditions.iter().enumerate() {
         let ymax = c
@@ -156,7 +190,7 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
             &bounds,
             &Pso {
                 seed: pso.seed.wrapping_add(k as u64),
-                ..pso
+                ..*pso
             },
         );
         let coefficients = [p[0], p[1], p[2], p[3], p[4], p[5]];
@@ -169,13 +203,12 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
             sigma_percent: 100.0 * (2.0 * cost / y2).sqrt(),
         });
     }
-    let cambers = stage1
-        .iter()
-        .map(|s| s.camber_deg)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), g| {
-            (a.min(g), b.max(g))
-        });
-    let with_camber = cambers.1 - cambers.0 > 0.1;
+    stage1
+}
+
+/// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves (camber
+/// terms zero without camber data).
+fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
     let mut a = [0.0; 14];
     // C = a0.
     a[0] = stage1.iter().map(|s| s.coefficients[1]).sum::<f64>() / stage1.len() as f64;
@@ -250,21 +283,18 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
     let p = fit(
         &Bcd(&bcd),
         &[(0.5 * bmax, 10.0 * bmax), (0.2, 50.0), a5_bounds],
-        &pso,
+        pso,
     );
     a[3] = p[0];
     a[4] = p[1];
     a[5] = if with_camber { p[2] } else { 0.0 };
-    let per_condition = |t: &Tyre| {
-        conditions
-            .iter()
-            .map(|c| sigma(t, &c.points).0)
-            .collect::<Vec<f64>>()
-    };
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let stage2_sigma = per_condition(&tyre(a));
-    // Joint polish of a0..a13 on every raw point (camber terms held without
-    // camber data).
+    a
+}
+
+/// The joint polish of a0..a13 on every raw point from the stage-2 values
+/// (camber terms held without camber data); the stage-2 values when the
+/// polish does not lower the cost.
+fn polish(a: [f64; 14], conditions: &[Condition], with_camber: bool) -> [f64; 14] {
     let start = tyre(a);
     let free = start.lateral_free(conditions.len(), if with_camber { 2 } else { 1 });
     let problem = super::FitProblem::new(&start, &free, conditions);
@@ -280,21 +310,10 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
     } else {
         start.clone()
     };
-    let polished = match &polished_tyre {
+    match polished_tyre {
         Tyre::Pac89(p) => p.a,
         _ => unreachable!("a PAC89 tyre"),
-    };
-    let polished_sigma = per_condition(&polished_tyre);
-    Ok(TwoStage {
-        stage1_mean_sigma: mean(&stage1.iter().map(|s| s.sigma_percent).collect::<Vec<_>>()),
-        stage1,
-        stage2_mean_sigma: mean(&stage2_sigma),
-        stage2_sigma,
-        stage2: a,
-        polished_mean_sigma: mean(&polished_sigma),
-        polished_sigma,
-        polished,
-    })
+    }
 }
 
 #[cfg(test)]

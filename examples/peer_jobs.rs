@@ -126,7 +126,7 @@ fn main() {
         .chain(
             data.iter()
                 .flat_map(|c| c.points.iter())
-                .map(|p| format!("{:e},{:e},{:e}\n", p[0], p[1], p[4])),
+                .map(|p| format!("{:e},{:e},{:e}\n", p.slip(), p.fz, p.fy())),
         )
         .collect();
     std::fs::write(root.join("peer/out/fit_data.csv"), rows).expect("write");

@@ -1,10 +1,11 @@
 //! `identify`: fit a tyre model to rig data.
 
 use anyhow::{anyhow, Context, Result};
-use handling::identify::data::read_rig;
+use handling::identify::data::Point;
 use handling::identify::grouping::{group, Grouping, SlipAxis, Variable};
 use handling::identify::mf_staged::{self, StartScheme};
 use handling::identify::{fit_channel, Channel, FitSettings, LocalMethod};
+use handling::io::rig::read_rig;
 use handling::io::tir::TirDocument;
 use handling::report::plot::{Figure, Panel, Series, Style};
 use handling::report::{refuse_overwrite, write_bytes, write_json};
@@ -306,18 +307,25 @@ pub fn identify(o: &Options) -> Result<()> {
                 let (x, y): (Vec<f64>, Vec<f64>) = c
                     .points
                     .iter()
-                    .map(|q| (slip(q[0]), ch.measured(q)))
+                    .map(|q| (slip(q.slip()), ch.measured(q)))
                     .filter(|p| p.1.is_finite())
                     .unzip();
                 series.push(Series::line("", &x, &y, k).styled(Style::Points(2)));
-                let amax = c.points.iter().map(|q| q[0].abs()).fold(0.0, f64::max);
-                let speed = c.points.first().map_or(10.0, |q| q[3]);
+                let amax = c.points.iter().map(|q| q.slip().abs()).fold(0.0, f64::max);
+                let speed = c.points.first().map_or(10.0, |q| q.speed);
                 let xs: Vec<f64> = (0..=200)
                     .map(|i| -amax + 2.0 * amax * i as f64 / 200.0)
                     .collect();
                 let ys: Vec<f64> = xs
                     .iter()
-                    .map(|a| ch.model(&fit.tyre, &[*a, c.fz, c.camber, speed, 0.0, 0.0]))
+                    .map(|a| {
+                        let axis = match ch {
+                            Channel::LongitudinalForce => SlipAxis::Ratio,
+                            _ => SlipAxis::Angle,
+                        };
+                        let q = Point::unmeasured(axis, *a, c.fz, c.camber, speed);
+                        ch.model(&fit.tyre, &q)
+                    })
                     .collect();
                 let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
                 series.push(Series::line(&format!("{:.0} N", c.fz), &xd, &ys, k));

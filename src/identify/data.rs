@@ -1,21 +1,27 @@
-//! Tyre rig data (`docs/FORMATS.md`): reading and checking a rig file, and
-//! test points generated from a known tyre at the identification papers'
-//! conditions. Grouping into test conditions is in [`super::grouping`].
-//! Units: N, rad, Pa, m/s.
+//! Tyre rig data in memory (`docs/FORMATS.md`): the samples of a rig test,
+//! the fit points made of them, and test points generated from a known tyre
+//! at the identification papers' conditions. Reading a rig file is in
+//! `io::rig`; grouping into test conditions and thinning in
+//! [`super::grouping`].
+//!
+//! A fit point is typed by its sweep ([`Sweep`]): a cornering point carries
+//! a slip angle, a lateral force and an aligning moment, a braking or
+//! driving point a slip ratio and a longitudinal force, so no field means
+//! one thing or another by context. Units: N, N·m, rad, Pa, m/s; slip ratio
+//! dimensionless; signs as in `tyre/mod.rs`.
 
-use crate::error::InputError;
-use crate::io::read_columns;
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
-use std::path::Path;
+use crate::tyre::{SlipState, Tyre};
+use serde::Serialize;
+use thiserror::Error;
 
 /// Rig samples.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct RigData {
     /// Vertical load, N.
     pub fz: Vec<f64>,
-    /// Slip angle, rad.
+    /// Slip angle, rad (0 in a file without lateral data).
     pub alpha: Vec<f64>,
-    /// Lateral force, N.
+    /// Lateral force, N (NaN in a file without lateral data).
     pub fy: Vec<f64>,
     /// Aligning moment, N·m (if measured).
     pub mz: Option<Vec<f64>>,
@@ -42,128 +48,192 @@ impl RigData {
     }
 }
 
-/// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
-/// `fx`) sweeps; a file with neither pair is refused.
-pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
-    let mut c = read_columns(
-        path,
-        &["fz"],
-        &[
-            "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
-        ],
-    )?;
-    let fz = c.take("fz");
-    for (i, v) in fz.iter().enumerate() {
-        if *v < 0.0 {
-            return Err(c.error_at(
-                path,
-                i,
-                "fz",
-                format!("column `fz`: {v} N is negative (loads are positive in FORMATS.md)"),
-            ));
-        }
-    }
-    let n = fz.len();
-    let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
-        (Some(a), Some(f)) => Some((a, f)),
-        _ => None,
-    };
-    let longitudinal = match (c.take_optional("kappa"), c.take_optional("fx")) {
-        (Some(k), Some(f)) => Some((k, f)),
-        _ => None,
-    };
-    if lateral.is_none() && longitudinal.is_none() {
-        return Err(InputError::File {
-            path: path.to_path_buf(),
-            message: "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)".into(),
-        });
-    }
-    let camber = c.take_optional("camber");
-    // Angles in degrees are the commonest slip of a hand-made file: a slip
-    // angle past ±90° or a camber past ±45° is not a tyre test in radians.
-    let angles = [
-        ("alpha", lateral.as_ref().map(|l| &l.0), FRAC_PI_2),
-        ("camber", camber.as_ref(), FRAC_PI_4),
-    ];
-    for (name, values, limit) in angles {
-        let Some(values) = values else { continue };
-        if let Some(i) = values.iter().position(|v| v.abs() > limit) {
-            return Err(c.error_at(
-                path,
-                i,
-                name,
-                format!(
-                    "column `{name}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?",
-                    values[i],
-                    limit.to_degrees()
-                ),
-            ));
-        }
-    }
-    let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
-    Ok(RigData {
-        camber_measured: camber.is_some(),
-        camber: camber.unwrap_or_else(|| vec![0.0; n]),
-        mz: c.take_optional("mz"),
-        pressure: c.take_optional("pressure"),
-        speed: c.take_optional("speed"),
-        longitudinal,
-        fz,
-        alpha,
-        fy,
-    })
-}
-
-/// Reads rig data and refuses a file without lateral data.
-pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
-    let d = read_rig(path)?;
-    if d.fy.iter().all(|v| v.is_nan()) {
-        return Err(InputError::File {
-            path: path.to_path_buf(),
-            message: "no lateral data: a lateral fit needs the columns `alpha` and `fy`".into(),
-        });
-    }
-    Ok(d)
-}
-
 impl RigData {
     /// Whether lateral force was measured.
     pub fn has_lateral(&self) -> bool {
         self.fy.iter().any(|v| v.is_finite())
     }
 
-    /// The longitudinal sweeps as rig data whose slip column holds κ and
-    /// force column Fx, so the same grouping and thinning apply.
+    /// The longitudinal sweeps alone (`None` without them): the same
+    /// samples with the lateral columns emptied (α 0, Fy NaN, no Mz).
+    /// Grouped along [`SlipAxis::Ratio`], their points are longitudinal.
     pub fn longitudinal_view(&self) -> Option<RigData> {
-        let (k, fx) = self.longitudinal.as_ref()?;
+        self.longitudinal.as_ref()?;
+        let n = self.len();
         Some(RigData {
-            alpha: k.clone(),
-            fy: fx.clone(),
+            alpha: vec![0.0; n],
+            fy: vec![f64::NAN; n],
             mz: None,
-            longitudinal: None,
             ..self.clone()
         })
     }
 }
 
-/// One fit point: slip angle (rad), load (N), camber (rad), speed (m/s),
-/// lateral force (N), aligning moment (N·m, NaN when not measured).
-pub type Point = [f64; 6];
+/// Which slip a sweep varies (and the thinning bins).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SlipAxis {
+    /// Slip angle (lateral data), rad.
+    Angle,
+    /// Slip ratio (longitudinal data).
+    Ratio,
+}
+
+/// The sweep a fit point lies on and what was measured along it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Sweep {
+    /// Cornering at zero slip ratio.
+    Lateral {
+        /// Slip angle α, rad.
+        alpha: f64,
+        /// Lateral force Fy, N.
+        fy: f64,
+        /// Aligning moment Mz, N·m (NaN when not measured).
+        mz: f64,
+    },
+    /// Braking or driving at zero slip angle.
+    Longitudinal {
+        /// Slip ratio κ.
+        kappa: f64,
+        /// Longitudinal force Fx, N.
+        fx: f64,
+    },
+}
+
+/// One fit point of a rig test: the wheel's state and what was measured.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigPoint {
+    /// Vertical load, N.
+    pub fz: f64,
+    /// Camber, rad.
+    pub camber: f64,
+    /// Rig speed, m/s.
+    pub speed: f64,
+    /// The slip and the measured forces.
+    pub sweep: Sweep,
+}
+
+/// The name the fits (`identify::FitProblem`, the CLI) use for a rig point.
+pub type Point = RigPoint;
+
+impl RigPoint {
+    /// A cornering point (`mz` NaN when not measured).
+    pub fn lateral(alpha: f64, fz: f64, camber: f64, speed: f64, fy: f64, mz: f64) -> Self {
+        Self {
+            fz,
+            camber,
+            speed,
+            sweep: Sweep::Lateral { alpha, fy, mz },
+        }
+    }
+
+    /// A braking or driving point.
+    pub fn longitudinal(kappa: f64, fz: f64, camber: f64, speed: f64, fx: f64) -> Self {
+        Self {
+            fz,
+            camber,
+            speed,
+            sweep: Sweep::Longitudinal { kappa, fx },
+        }
+    }
+
+    /// A point at slip `slip` along `axis` where nothing was measured (the
+    /// forces NaN): where a model curve is evaluated.
+    pub fn unmeasured(axis: SlipAxis, slip: f64, fz: f64, camber: f64, speed: f64) -> Self {
+        match axis {
+            SlipAxis::Angle => Self::lateral(slip, fz, camber, speed, f64::NAN, f64::NAN),
+            SlipAxis::Ratio => Self::longitudinal(slip, fz, camber, speed, f64::NAN),
+        }
+    }
+
+    /// The slip the sweep varies.
+    pub fn axis(&self) -> SlipAxis {
+        match self.sweep {
+            Sweep::Lateral { .. } => SlipAxis::Angle,
+            Sweep::Longitudinal { .. } => SlipAxis::Ratio,
+        }
+    }
+
+    /// The slip along the sweep: α (rad) or κ.
+    pub fn slip(&self) -> f64 {
+        match self.sweep {
+            Sweep::Lateral { alpha, .. } => alpha,
+            Sweep::Longitudinal { kappa, .. } => kappa,
+        }
+    }
+
+    /// Measured lateral force, N (NaN on a longitudinal sweep).
+    pub fn fy(&self) -> f64 {
+        match self.sweep {
+            Sweep::Lateral { fy, .. } => fy,
+            Sweep::Longitudinal { .. } => f64::NAN,
+        }
+    }
+
+    /// Measured aligning moment, N·m (NaN when not measured).
+    pub fn mz(&self) -> f64 {
+        match self.sweep {
+            Sweep::Lateral { mz, .. } => mz,
+            Sweep::Longitudinal { .. } => f64::NAN,
+        }
+    }
+
+    /// Measured longitudinal force, N (NaN on a cornering sweep).
+    pub fn fx(&self) -> f64 {
+        match self.sweep {
+            Sweep::Lateral { .. } => f64::NAN,
+            Sweep::Longitudinal { fx, .. } => fx,
+        }
+    }
+
+    /// The wheel's state at the point: the sweep's slip, the other slip 0,
+    /// road friction as measured (μ scale 1).
+    pub fn slip_state(&self) -> SlipState {
+        let (alpha, kappa) = match self.sweep {
+            Sweep::Lateral { alpha, .. } => (alpha, 0.0),
+            Sweep::Longitudinal { kappa, .. } => (0.0, kappa),
+        };
+        SlipState {
+            alpha,
+            kappa,
+            fz: self.fz,
+            camber: self.camber,
+            mu_scale: 1.0,
+            speed: self.speed,
+        }
+    }
+}
 
 pub use super::grouping::Condition;
 
-/// Seed 000's test points generated from a known tyre: loads 2800 / 5700 /
+/// Why identification cannot use the rig data it was given.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum RigError {
+    /// Too few test conditions for a method.
+    #[error("{method} needs at least {needed} test conditions; the data have {have}")]
+    TooFewConditions {
+        /// The method.
+        method: &'static str,
+        /// Conditions it needs.
+        needed: usize,
+        /// Conditions in the data.
+        have: usize,
+    },
+    /// No stage of a staged identification had the rows it needs; each
+    /// stage's reason.
+    #[error("no stage could be fitted ({})", .0.join("; "))]
+    NoStageFitted(Vec<String>),
+}
+
+/// Zhang & Li's (2017) test points generated from a known tyre: loads 2800 / 5700 /
 /// 8600 N, slip angles 0 … ±12.0321° in 0.2865° steps (85 per load), camber
 /// 0, 10 m/s, with multiplicative Gaussian noise of relative size `noise`
 /// (seeded) on the lateral force and the aligning moment. Returns the
 /// conditions and the lateral-force noise's own σ (%), the floor a fit
 /// cannot beat on average.
-pub fn seed000_conditions(
-    truth: &crate::tyre::Tyre,
-    noise: f64,
-    seed: u64,
-) -> (Vec<Condition>, f64) {
-    use crate::tyre::{SlipState, TyreModel};
+pub fn seed000_conditions(truth: &Tyre, noise: f64, seed: u64) -> (Vec<Condition>, f64) {
+    use crate::tyre::TyreModel;
     use rand::SeedableRng;
     // Separate streams for Fy and Mz noise, so adding one channel does not
     // change the other's draws.
@@ -173,7 +243,7 @@ pub fn seed000_conditions(
     let conditions = [2800.0, 5700.0, 8600.0]
         .iter()
         .map(|&fz| {
-            let points: Vec<Point> = (-42..=42)
+            let points: Vec<RigPoint> = (-42..=42)
                 .map(|i| {
                     let alpha = (0.2865 * i as f64).to_radians();
                     let f = truth.forces(&SlipState {
@@ -184,7 +254,7 @@ pub fn seed000_conditions(
                     let noisy_mz = f.mz * (1.0 + noise * gauss(&mut rng_mz));
                     e2 += (noisy - f.fy) * (noisy - f.fy);
                     y2 += noisy * noisy;
-                    [alpha, fz, 0.0, 10.0, noisy, noisy_mz]
+                    RigPoint::lateral(alpha, fz, 0.0, 10.0, noisy, noisy_mz)
                 })
                 .collect();
             Condition {

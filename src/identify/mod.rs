@@ -22,7 +22,7 @@ pub mod pac89_two_stage;
 
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{Inertia, Pso};
-use crate::tyre::{Parameterised, SlipState, Tyre, TyreModel};
+use crate::tyre::{Parameterised, Tyre, TyreModel};
 use data::Condition;
 use serde::Serialize;
 use std::time::Instant;
@@ -44,32 +44,19 @@ impl Channel {
     /// The measured value of a point.
     pub fn measured(self, q: &data::Point) -> f64 {
         match self {
-            Channel::LateralForce | Channel::LongitudinalForce => q[4],
-            Channel::AligningMoment => q[5],
+            Channel::LateralForce => q.fy(),
+            Channel::AligningMoment => q.mz(),
+            Channel::LongitudinalForce => q.fx(),
         }
     }
 
     /// The model's value at a point.
     pub fn model(self, t: &Tyre, q: &data::Point) -> f64 {
-        let s = SlipState {
-            alpha: q[0],
-            kappa: 0.0,
-            fz: q[1],
-            camber: q[2],
-            mu_scale: 1.0,
-            speed: q[3],
-        };
+        let s = q.slip_state();
         match self {
             Channel::LateralForce => t.lateral_force(&s),
             Channel::AligningMoment => t.forces(&s).mz,
-            Channel::LongitudinalForce => {
-                t.forces(&SlipState {
-                    alpha: 0.0,
-                    kappa: q[0],
-                    ..s
-                })
-                .fx
-            }
+            Channel::LongitudinalForce => t.forces(&s).fx,
         }
     }
 
@@ -476,34 +463,15 @@ mod tests;
 /// linear) to data whose median load is `fz`: the lateral parameters only,
 /// so that no borrowed aligning or longitudinal coefficients are written.
 pub fn start_tyre(model: &str, fz: f64) -> Result<Tyre, String> {
-    use crate::tyre::{Gim, Linear, MagicSimple, Pac89, UniTire};
-    Ok(match model {
-        "gim" => Tyre::Gim(Gim {
-            reference_load: fz,
-            ..Gim::new(50_000.0, 0.15, 1.0)
-        }),
-        "magic-simple" => Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
-        "unitire" => {
-            let mut u: UniTire =
-                match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml")) {
-                    Ok(Tyre::Unitire(u)) => u,
-                    _ => unreachable!("the bundled UniTire file"),
-                };
-            u.rated_load = fz;
-            u.longitudinal = None;
-            u.aligning = None;
-            Tyre::Unitire(u)
-        }
-        "pac89" => Tyre::Pac89(Pac89 {
-            b: None,
-            c: None,
-            ..Pac89::adams_example()
-        }),
-        "linear" => Tyre::Linear(Linear::new(50_000.0)),
-        m => {
-            return Err(format!(
-                "unknown tyre model `{m}`: one of gim, magic-simple, unitire, pac89, linear"
-            ))
-        }
-    })
+    model
+        .parse::<crate::tyre::ModelName>()
+        .ok()
+        .and_then(|m| m.start_tyre(fz))
+        .ok_or_else(|| {
+            let names: Vec<&str> = crate::tyre::ModelName::fitted()
+                .iter()
+                .map(|m| m.as_str())
+                .collect();
+            format!("unknown tyre model `{model}`: one of {}", names.join(", "))
+        })
 }

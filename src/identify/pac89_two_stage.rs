@@ -1,4 +1,4 @@
-//! Seed 001's two-stage PAC89 identification.
+//! The two-stage PAC89 identification of Zhang et al. (2021).
 //!
 //! Stage 1, per test condition: the six coefficients B, C, D, E, Sh, Sv of
 //! `Y = D·sin(C·atan(B·x − E·(B·x − atan(B·x)))) + Sv`, `x = α[deg] + Sh`,
@@ -11,7 +11,7 @@
 //! Camber terms are held at zero with one camber level. An optional final
 //! joint polish fits a0..a13 to all the raw data from the stage-2 values.
 
-use super::data::Condition;
+use super::data::{Condition, RigError, RigPoint};
 use super::{sigma, FitSettings};
 use crate::optim::local::{levenberg_marquardt, Residuals};
 use crate::optim::Pso;
@@ -54,7 +54,8 @@ pub struct TwoStage {
     pub polished: [f64; 14],
 }
 
-struct Curve<'a>(&'a [super::data::Point]);
+/// One condition's cornering points.
+struct Curve<'a>(&'a [RigPoint]);
 
 impl Residuals for Curve<'_> {
     fn count(&self) -> usize {
@@ -70,7 +71,7 @@ impl Residuals for Curve<'_> {
             sv: p[5],
         };
         for (o, q) in out.iter_mut().zip(self.0) {
-            *o = c.eval(q[0].to_degrees()) - q[4];
+            *o = c.eval(q.slip().to_degrees()) - q.fy();
         }
     }
 }
@@ -120,12 +121,13 @@ fn tyre(a: [f64; 14]) -> Tyre {
 }
 
 /// Runs both stages (and the joint polish) on the conditions.
-pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, String> {
+pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, RigError> {
     if conditions.len() < 3 {
-        return Err(format!(
-            "two-stage PAC89 needs at least 3 test conditions; the data have {}",
-            conditions.len()
-        ));
+        return Err(RigError::TooFewConditions {
+            method: "two-stage PAC89",
+            needed: 3,
+            have: conditions.len(),
+        });
     }
     let pso = Pso {
         particles: 40,
@@ -133,12 +135,46 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
         parallel: false,
         ..settings.pso
     };
+    let stage1 = stage1(conditions, &pso);
+    let cambers = stage1
+        .iter()
+        .map(|s| s.camber_deg)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), g| {
+            (a.min(g), b.max(g))
+        });
+    let with_camber = cambers.1 - cambers.0 > 0.1;
+    let a = stage2(&stage1, with_camber, &pso);
+    let per_condition = |t: &Tyre| {
+        conditions
+            .iter()
+            .map(|c| sigma(t, &c.points).0)
+            .collect::<Vec<f64>>()
+    };
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let stage2_sigma = per_condition(&tyre(a));
+    let polished = polish(a, conditions, with_camber);
+    let polished_sigma = per_condition(&tyre(polished));
+    Ok(TwoStage {
+        stage1_mean_sigma: mean(&stage1.iter().map(|s| s.sigma_percent).collect::<Vec<_>>()),
+        stage1,
+        stage2_mean_sigma: mean(&stage2_sigma),
+        stage2_sigma,
+        stage2: a,
+        polished_mean_sigma: mean(&polished_sigma),
+        polished_sigma,
+        polished,
+    })
+}
+
+/// Stage 1: B, C, D, E, Sh, Sv of each condition's curve by PSO + LM (the
+/// swarm's seed advanced by the condition's index).
+fn stage1(conditions: &[Condition], pso: &Pso) -> Vec<Stage1> {
     let mut stage1 = Vec::new();
     for (k, c) in conditions.iter().enumerate() {
         let ymax = c
             .points
             .iter()
-            .map(|q| q[4].abs())
+            .map(|q| q.fy().abs())
             .fold(0.0, f64::max)
             .max(1.0);
         let bounds = [
@@ -154,12 +190,12 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
             &bounds,
             &Pso {
                 seed: pso.seed.wrapping_add(k as u64),
-                ..pso
+                ..*pso
             },
         );
         let coefficients = [p[0], p[1], p[2], p[3], p[4], p[5]];
         let cost = Curve(&c.points).cost(&p);
-        let y2: f64 = c.points.iter().map(|q| q[4] * q[4]).sum();
+        let y2: f64 = c.points.iter().map(|q| q.fy() * q.fy()).sum();
         stage1.push(Stage1 {
             fz_kn: c.fz / 1000.0,
             camber_deg: c.camber.to_degrees(),
@@ -167,13 +203,12 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
             sigma_percent: 100.0 * (2.0 * cost / y2).sqrt(),
         });
     }
-    let cambers = stage1
-        .iter()
-        .map(|s| s.camber_deg)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), g| {
-            (a.min(g), b.max(g))
-        });
-    let with_camber = cambers.1 - cambers.0 > 0.1;
+    stage1
+}
+
+/// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves (camber
+/// terms zero without camber data).
+fn stage2(stage1: &[Stage1], with_camber: bool, pso: &Pso) -> [f64; 14] {
     let mut a = [0.0; 14];
     // C = a0.
     a[0] = stage1.iter().map(|s| s.coefficients[1]).sum::<f64>() / stage1.len() as f64;
@@ -248,21 +283,18 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
     let p = fit(
         &Bcd(&bcd),
         &[(0.5 * bmax, 10.0 * bmax), (0.2, 50.0), a5_bounds],
-        &pso,
+        pso,
     );
     a[3] = p[0];
     a[4] = p[1];
     a[5] = if with_camber { p[2] } else { 0.0 };
-    let per_condition = |t: &Tyre| {
-        conditions
-            .iter()
-            .map(|c| sigma(t, &c.points).0)
-            .collect::<Vec<f64>>()
-    };
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let stage2_sigma = per_condition(&tyre(a));
-    // Joint polish of a0..a13 on every raw point (camber terms held without
-    // camber data).
+    a
+}
+
+/// The joint polish of a0..a13 on every raw point from the stage-2 values
+/// (camber terms held without camber data); the stage-2 values when the
+/// polish does not lower the cost.
+fn polish(a: [f64; 14], conditions: &[Condition], with_camber: bool) -> [f64; 14] {
     let start = tyre(a);
     let free = start.lateral_free(conditions.len(), if with_camber { 2 } else { 1 });
     let problem = super::FitProblem::new(&start, &free, conditions);
@@ -278,21 +310,10 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
     } else {
         start.clone()
     };
-    let polished = match &polished_tyre {
+    match polished_tyre {
         Tyre::Pac89(p) => p.a,
         _ => unreachable!("a PAC89 tyre"),
-    };
-    let polished_sigma = per_condition(&polished_tyre);
-    Ok(TwoStage {
-        stage1_mean_sigma: mean(&stage1.iter().map(|s| s.sigma_percent).collect::<Vec<_>>()),
-        stage1,
-        stage2_mean_sigma: mean(&stage2_sigma),
-        stage2_sigma,
-        stage2: a,
-        polished_mean_sigma: mean(&polished_sigma),
-        polished_sigma,
-        polished,
-    })
+    }
 }
 
 #[cfg(test)]
@@ -351,9 +372,10 @@ mod tests {
 mod seed_style {
     use super::*;
 
-    /// Seed 001's residual levels on seed-style data: a tyre that is not a
-    /// PAC89 (the bundled UniTire) at Zhang & Li's (2017) three loads with 1 % noise.
-    /// Seed 001 reports stage-1 and stage-2 means of 0.75 % and 1.70 %; here
+    /// Zhang et al.'s (2021) residual levels on data like theirs: a tyre that
+    /// is not a PAC89 (the bundled UniTire) at Zhang & Li's (2017) three
+    /// loads with 1 % noise. Zhang et al. (2021) report stage-1 and stage-2
+    /// means of 0.75 % and 1.70 %; here
     /// stage 1 stays below 1 % and stage 2, which imposes PAC89's load laws
     /// on the curves, stays below 1.8 % and above stage 1.
     #[test]

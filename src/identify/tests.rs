@@ -1,4 +1,4 @@
-use super::data::Condition;
+use super::data::{Condition, RigPoint};
 use super::*;
 use crate::tyre::{Gim, MagicSimple, Pac89, UniTire};
 
@@ -171,7 +171,7 @@ fn recovers_aligning_moment_parameters_with_the_lateral_ones_held() {
     assert!(e.contains("no aligning moment"), "{e}");
 }
 
-/// Longitudinal sweeps (κ in the slip column, Fx in the force column) at
+/// Longitudinal sweeps at
 /// Zhang & Li's (2017) loads, slip ratios 0 … ±0.3 by 0.01, 1 % noise.
 fn longitudinal_data(truth: &Tyre, seed: u64) -> (Vec<Condition>, f64) {
     use rand::SeedableRng;
@@ -184,11 +184,11 @@ fn longitudinal_data(truth: &Tyre, seed: u64) -> (Vec<Condition>, f64) {
                 .map(|i| {
                     let kappa = 0.01 * i as f64;
                     let fx = Channel::LongitudinalForce
-                        .model(truth, &[kappa, fz, 0.0, 10.0, 0.0, f64::NAN]);
+                        .model(truth, &RigPoint::longitudinal(kappa, fz, 0.0, 10.0, 0.0));
                     let noisy = fx * (1.0 + 0.01 * super::data::gauss(&mut rng));
                     e2 += (noisy - fx) * (noisy - fx);
                     y2 += noisy * noisy;
-                    [kappa, fz, 0.0, 10.0, noisy, f64::NAN]
+                    RigPoint::longitudinal(kappa, fz, 0.0, 10.0, noisy)
                 })
                 .collect();
             Condition {
@@ -242,7 +242,7 @@ fn recovers_longitudinal_parameters() {
     assert!(e.contains("no longitudinal force"), "{e}");
 }
 
-/// Seed 000's claim on seed-style data: the tyre is not a UniTire (here the
+/// Zhang & Li's (2017) claim on data like theirs: the tyre is not a UniTire (here the
 /// PAC89 Adams example, a passenger tyre at Zhang & Li's (2017) loads and slip angles,
 /// 1 % noise), and a UniTire is identified by PSO alone and by PSO + the
 /// modified Gauss–Newton: every curve below 5.5 % and 3.5 %.

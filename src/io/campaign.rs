@@ -23,13 +23,13 @@
 //! own sample times). Units: SI, rad.
 
 use super::clean::{clean_run, slice, CleanSettings, CleaningReport, GlitchKind};
+use super::rig::read_rig;
 use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{InputError, ParamError};
-use crate::identify::data::read_rig;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;

@@ -6,6 +6,7 @@
 
 pub mod campaign;
 mod columns;
+pub mod rig;
 mod run;
 pub mod scenario;
 pub mod study;

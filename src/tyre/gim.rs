@@ -15,7 +15,9 @@
 //!
 //! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
-use super::{safe_tan, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{
+    safe_tan, Block, ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
+};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -148,5 +150,54 @@ impl Parameterised for Gim {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1e3, 5e5), (0.02, 0.5), (0.1, 3.0), (0.0, 1.0), (0.0, 1.5)]
+    }
+}
+
+impl ModelParameters for Gim {
+    fn name(&self) -> ModelName {
+        ModelName::Gim
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        Gim::validate(self)
+    }
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.cornering_stiffness *= k;
+    }
+    /// 50 kN/rad, 0.15 m, μ 1, the stiffness referred to the data's median
+    /// load.
+    fn start(fz: f64) -> Option<Self> {
+        Some(Gim {
+            reference_load: fz,
+            ..Gim::new(50_000.0, 0.15, 1.0)
+        })
+    }
+    /// The contact length acts on Mz only (it is the aligning block), and
+    /// the load exponent needs more than one load.
+    fn lateral_free(&self, loads: usize, _cambers: usize) -> Vec<bool> {
+        vec![true, false, true, true, loads > 1]
+    }
+    fn block_names(&self, block: Block) -> Vec<String> {
+        match block {
+            Block::Aligning => vec!["contact_length".into()],
+            Block::Longitudinal => Vec::new(),
+        }
+    }
+    fn block_parameters(&self, block: Block) -> Vec<f64> {
+        match block {
+            Block::Aligning => vec![self.contact_length],
+            Block::Longitudinal => Vec::new(),
+        }
+    }
+    fn set_block_parameters(&mut self, block: Block, v: &[f64]) {
+        if block == Block::Aligning {
+            self.contact_length = v[0];
+        }
+    }
+    fn block_bounds(&self, block: Block) -> Vec<(f64, f64)> {
+        match block {
+            Block::Aligning => vec![(0.02, 0.5)],
+            Block::Longitudinal => Vec::new(),
+        }
     }
 }

@@ -4,7 +4,7 @@
 //!
 //! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
-use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use super::{ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -70,5 +70,22 @@ impl Parameterised for Linear {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1e3, 5e5)]
+    }
+}
+
+impl ModelParameters for Linear {
+    fn name(&self) -> ModelName {
+        ModelName::Linear
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        Linear::validate(self)
+    }
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.cornering_stiffness *= k;
+    }
+    /// 50 kN/rad, no trail.
+    fn start(_fz: f64) -> Option<Self> {
+        Some(Linear::new(50_000.0))
     }
 }

@@ -1,6 +1,6 @@
 //! Simplified Magic Formula of Li, Jia & Zhao: `Fy = D·μ·Fz·sin(C·atan(B·α))`.
 //!
-//! Seed 003 writes it per axle with the road friction μ in front; here it acts
+//! Li, Jia & Zhao write it per axle with the road friction μ in front; here it acts
 //! per wheel (linear in Fz, so an axle is two wheels at half the axle load),
 //! `D` is the friction on the reference surface (1 reproduces the paper) and
 //! the road friction is `mu_scale`. As in the paper, μ scales the whole curve,
@@ -8,7 +8,7 @@
 //!
 //! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
 
-use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use super::{ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -84,5 +84,24 @@ impl Parameterised for MagicSimple {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1.0, 60.0), (0.5, 2.0), (0.1, 4.0)]
+    }
+}
+
+impl ModelParameters for MagicSimple {
+    fn name(&self) -> ModelName {
+        ModelName::MagicSimple
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        MagicSimple::validate(self)
+    }
+    /// The stiffness `B·C·D·μ·Fz` is proportional to B; the peak `D·μ·Fz`
+    /// does not depend on it.
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.b *= k;
+    }
+    /// B = 10 /rad, C = 1.3, D = 1 (Li, Jia & Zhao's range).
+    fn start(_fz: f64) -> Option<Self> {
+        Some(MagicSimple::new(10.0, 1.3))
     }
 }

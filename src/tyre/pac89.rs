@@ -22,7 +22,7 @@
 //! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
-use super::{Parameterised, SlipState, TyreForces, TyreModel};
+use super::{Block, ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -335,5 +335,91 @@ impl Parameterised for Pac89 {
             (-100.0, 100.0),
             (-200.0, 200.0),
         ]
+    }
+}
+
+/// Lateral camber terms a5, a8, a11: identifiable with more than one camber.
+const LATERAL_CAMBER_TERMS: [usize; 3] = [5, 8, 11];
+/// Aligning camber terms c6, c10, c11, c14, c15.
+const ALIGNING_CAMBER_TERMS: [usize; 5] = [6, 10, 11, 14, 15];
+
+impl ModelParameters for Pac89 {
+    fn name(&self) -> ModelName {
+        ModelName::Pac89
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        Pac89::validate(self)
+    }
+    /// BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|) is proportional to a3 (the
+    /// offset Sh makes the stiffness at α = 0 only nearly so).
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.a[3] *= k;
+    }
+    /// The Adams example's lateral set ([`ADAMS_EXAMPLE_A`]).
+    fn start(_fz: f64) -> Option<Self> {
+        Some(Pac89 {
+            b: None,
+            c: None,
+            ..Pac89::adams_example()
+        })
+    }
+    /// D, BCD and E are functions of the load: three loads.
+    fn loads_needed(&self) -> usize {
+        3
+    }
+    fn lateral_free(&self, _loads: usize, cambers: usize) -> Vec<bool> {
+        (0..14)
+            .map(|i| cambers > 1 || !LATERAL_CAMBER_TERMS.contains(&i))
+            .collect()
+    }
+    /// a3·sin(2·atan(Fz/a4)) is unchanged when a3 and a4 both change sign:
+    /// a4 is conventional positive.
+    fn canonicalise(&mut self) {
+        if self.a[4] < 0.0 {
+            self.a[3] = -self.a[3];
+            self.a[4] = -self.a[4];
+        }
+    }
+    fn block_names(&self, block: Block) -> Vec<String> {
+        match block {
+            Block::Aligning => (0..18).map(|i| format!("c{i}")).collect(),
+            Block::Longitudinal => (0..11).map(|i| format!("b{i}")).collect(),
+        }
+    }
+    /// Unset blocks start at the Adams example's.
+    fn block_parameters(&self, block: Block) -> Vec<f64> {
+        match block {
+            Block::Aligning => self.c.unwrap_or(ADAMS_EXAMPLE_C).to_vec(),
+            Block::Longitudinal => self.b.unwrap_or(ADAMS_EXAMPLE_B).to_vec(),
+        }
+    }
+    fn set_block_parameters(&mut self, block: Block, v: &[f64]) {
+        match block {
+            Block::Aligning => {
+                let mut c = [0.0; 18];
+                c.copy_from_slice(v);
+                self.c = Some(c);
+            }
+            Block::Longitudinal => {
+                let mut b = [0.0; 11];
+                b.copy_from_slice(v);
+                self.b = Some(b);
+            }
+        }
+    }
+    fn block_bounds(&self, block: Block) -> Vec<(f64, f64)> {
+        match block {
+            Block::Aligning => bounds_around(&ADAMS_EXAMPLE_C),
+            Block::Longitudinal => bounds_around(&ADAMS_EXAMPLE_B),
+        }
+    }
+    fn block_free(&self, block: Block, cambers: usize) -> Vec<bool> {
+        match block {
+            Block::Aligning => (0..18)
+                .map(|i| cambers > 1 || !ALIGNING_CAMBER_TERMS.contains(&i))
+                .collect(),
+            Block::Longitudinal => vec![true; 11],
+        }
     }
 }

@@ -316,6 +316,66 @@ fn tyre_files_parse_by_model_name() {
     assert!(e.to_string().contains("cornering_stifness"), "{e}");
 }
 
+/// The contract every model with a start tyre keeps (README, "Adding a tyre
+/// model"): its name and file round-trip, a valid start inside its search
+/// box, parameter blocks whose names, values, bounds and freedoms agree in
+/// length and survive a set, a canonical form that changes no force, and a
+/// cornering stiffness that scales.
+#[test]
+fn every_model_keeps_the_model_contract() {
+    let fitted = ModelName::fitted();
+    assert!(fitted.len() >= 5, "{fitted:?}");
+    for name in fitted {
+        let t = name.start_tyre(4000.0).unwrap();
+        assert_eq!(t.model(), name);
+        assert_eq!(t.model_name().parse::<ModelName>(), Ok(name));
+        let text = toml::to_string(&t).unwrap();
+        assert_eq!(toml::from_str::<Tyre>(&text).unwrap(), t, "{name}");
+        t.validate().unwrap();
+        let (p, b) = (t.parameters(), t.bounds());
+        assert_eq!(t.parameter_names().len(), p.len(), "{name}");
+        assert_eq!(b.len(), p.len(), "{name}");
+        for (loads, cambers) in [(1, 1), (3, 1), (4, 3)] {
+            assert_eq!(t.lateral_free(loads, cambers).len(), p.len(), "{name}");
+        }
+        for (v, (lo, hi)) in p.iter().zip(&b) {
+            assert!(lo <= v && v <= hi, "{name}: start {v} outside ({lo}, {hi})");
+        }
+        assert!(t.loads_needed() >= 1);
+        let mut u = t.clone();
+        let (a, l) = (t.aligning_parameters(), t.longitudinal_parameters());
+        assert_eq!(t.aligning_names().len(), a.len(), "{name}");
+        assert_eq!(t.aligning_bounds().len(), a.len(), "{name}");
+        assert_eq!(t.aligning_free(2).len(), a.len(), "{name}");
+        assert_eq!(t.longitudinal_names().len(), l.len(), "{name}");
+        assert_eq!(t.longitudinal_bounds().len(), l.len(), "{name}");
+        assert_eq!(t.longitudinal_free().len(), l.len(), "{name}");
+        u.set_aligning_parameters(&a);
+        u.set_longitudinal_parameters(&l);
+        u.set_parameters(&p);
+        assert_eq!(u.aligning_parameters(), a, "{name}");
+        assert_eq!(u.longitudinal_parameters(), l, "{name}");
+        assert_eq!(u.parameters(), p, "{name}");
+        let c = u.canonical();
+        assert_eq!(c.canonical(), c, "{name}");
+        for deg in [-8.0, 0.5, 3.0] {
+            let s = SlipState::lateral(f64::to_radians(deg), 4000.0);
+            assert_relative_eq!(c.forces(&s).fy, u.forces(&s).fy, max_relative = 1e-12);
+        }
+        let target = 1.37 * t.cornering_stiffness(4000.0);
+        let s = t.with_cornering_stiffness(target, 4000.0);
+        assert_relative_eq!(s.cornering_stiffness(4000.0), target, max_relative = 1e-6);
+        assert_eq!(
+            t.forces(&SlipState::lateral(0.1, 0.0)),
+            TyreForces::default()
+        );
+    }
+    let e = "magic-formula"
+        .parse::<ModelName>()
+        .map(|m| m.start_tyre(4000.0));
+    assert_eq!(e, Ok(None));
+}
+
 mod properties {
     use super::*;
     use proptest::prelude::*;

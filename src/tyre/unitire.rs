@@ -19,7 +19,10 @@
 //! `κ = (ΩRe − V)/V` as `Sx = κ/(1 + κ)` at zero slip angle.
 //! The road friction scales the final μ. Odd in α and in Sx.
 
-use super::{safe_tan, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{
+    safe_tan, Block, ModelName, ModelParameters, Parameterised, SlipState, Tyre, TyreForces,
+    TyreModel,
+};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -221,5 +224,106 @@ impl Parameterised for UniTire {
             (0.0, 2.0),
             (0.5, 50.0),
         ]
+    }
+}
+
+/// Search box of the aligning-arm parameters c1..c10 (Fz in kN, Dx in m).
+const ALIGNING_BOUNDS: [(f64, f64); 10] = [
+    (-0.1, 0.2),
+    (-0.05, 0.05),
+    (-0.01, 0.01),
+    (-0.2, 0.2),
+    (-0.05, 0.05),
+    (-0.01, 0.01),
+    (0.0, 10.0),
+    (0.1, 100.0),
+    (0.0, 10.0),
+    (0.1, 100.0),
+];
+
+/// The sliding-speed friction law (μs/μ0, μh, Vsm: p8..p10) trades off
+/// against the other terms within the noise of a rig test at one speed, so
+/// fits of either direction hold it: p1..p7 are free.
+fn without_sliding_law() -> Vec<bool> {
+    (0..10).map(|i| i < 7).collect()
+}
+
+impl ModelParameters for UniTire {
+    fn name(&self) -> ModelName {
+        ModelName::Unitire
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        UniTire::validate(self)
+    }
+    /// K = Fz·(p3 + p4·Fzn + p5·Fzn²) is proportional to p3..p5.
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.lateral.scale_stiffness(k);
+    }
+    /// The bundled `tyres/unitire.toml` (Zhang & Li (2017)'s form) rated at
+    /// the data's median load, lateral parameters only.
+    fn start(fz: f64) -> Option<Self> {
+        let mut u = match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml")) {
+            Ok(Tyre::Unitire(u)) => u,
+            _ => unreachable!("the bundled UniTire file"),
+        };
+        u.rated_load = fz;
+        u.longitudinal = None;
+        u.aligning = None;
+        Some(u)
+    }
+    /// E(Fzn), K(Fzn) and μ0(Fzn) need three loads.
+    fn loads_needed(&self) -> usize {
+        3
+    }
+    fn lateral_free(&self, _loads: usize, _cambers: usize) -> Vec<bool> {
+        without_sliding_law()
+    }
+    /// p2 enters as (Fzn/p2)² only: its sign is conventional positive.
+    fn canonicalise(&mut self) {
+        self.lateral.p[1] = self.lateral.p[1].abs();
+        if let Some(l) = &mut self.longitudinal {
+            l.p[1] = l.p[1].abs();
+        }
+    }
+    fn block_names(&self, block: Block) -> Vec<String> {
+        match block {
+            Block::Aligning => (1..=10).map(|i| format!("c{i}")).collect(),
+            Block::Longitudinal => (1..=10).map(|i| format!("a{i}")).collect(),
+        }
+    }
+    /// Unset blocks start at [`DEFAULT_ALIGNING`] / [`DEFAULT_LONGITUDINAL`].
+    fn block_parameters(&self, block: Block) -> Vec<f64> {
+        match block {
+            Block::Aligning => self
+                .aligning
+                .as_ref()
+                .map_or(DEFAULT_ALIGNING.to_vec(), |a| a.c.to_vec()),
+            Block::Longitudinal => self
+                .longitudinal
+                .as_ref()
+                .map_or(DEFAULT_LONGITUDINAL.to_vec(), |l| l.p.to_vec()),
+        }
+    }
+    fn set_block_parameters(&mut self, block: Block, v: &[f64]) {
+        let mut p = [0.0; 10];
+        p.copy_from_slice(v);
+        match block {
+            Block::Aligning => self.aligning = Some(UniTireAligning { c: p }),
+            Block::Longitudinal => self.longitudinal = Some(UniTireLongitudinal { p }),
+        }
+    }
+    /// The longitudinal laws are the lateral ones: the same box.
+    fn block_bounds(&self, block: Block) -> Vec<(f64, f64)> {
+        match block {
+            Block::Aligning => ALIGNING_BOUNDS.to_vec(),
+            Block::Longitudinal => self.bounds(),
+        }
+    }
+    fn block_free(&self, block: Block, _cambers: usize) -> Vec<bool> {
+        match block {
+            Block::Aligning => vec![true; 10],
+            Block::Longitudinal => without_sliding_law(),
+        }
     }
 }

@@ -75,7 +75,7 @@ mod start;
 pub use paper_lm::paper_lm;
 pub use params::Stage;
 
-use super::data::RigData;
+use super::data::{RigData, RigError};
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::error::InputError;
 use crate::io::tir::{write_new, TirDocument};
@@ -209,15 +209,15 @@ pub fn prepare(
         .iter()
         .flat_map(|c| {
             c.points.iter().map(move |q| MfRow {
-                fz: q[1],
+                fz: q.fz,
                 kappa: 0.0,
-                alpha: q[0],
-                camber: q[2],
-                speed: q[3],
+                alpha: q.slip(),
+                camber: q.camber,
+                speed: q.speed,
                 pressure: c.pressure,
                 fx: f64::NAN,
-                fy: q[4],
-                mz: q[5],
+                fy: q.fy(),
+                mz: q.mz(),
             })
         })
         .collect();
@@ -368,7 +368,7 @@ pub struct Identified {
 }
 
 /// Runs the stages on `rows`. Fails only when no stage could run.
-pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, String> {
+pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigError> {
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
     let mut reports: Vec<StageReport> = Vec::new();
@@ -415,7 +415,7 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, Strin
                 )
             })
             .collect();
-        return Err(format!("no stage could be fitted ({})", why.join("; ")));
+        return Err(RigError::NoStageFitted(why));
     }
     // Report the sign-blind coefficients in one conventional sign.
     let c = &mut tyre.coefficients;

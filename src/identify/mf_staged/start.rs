@@ -134,6 +134,35 @@ fn line(pts: &[(f64, f64)]) -> (f64, f64) {
     }
 }
 
+/// `PKY1`, `PKY2` of `Kyα(Fz) = PKY1·Fz0·sin(PKY4·atan(Fz/(PKY2·Fz0)))`
+/// from the slip stiffnesses `stiff` (load, N/rad) measured per load (ISO-W:
+/// negative for a positive crate slope): `PKY2` on a grid, `PKY1` by least
+/// squares for each; (−20, 2) without stiffnesses.
+fn cornering_stiffness_law(stiff: &[(f64, f64)], fz0: f64, pky4: f64) -> (f64, f64) {
+    let mut best = (f64::INFINITY, -20.0, 2.0);
+    if !stiff.is_empty() {
+        for i in 0..=150 {
+            let pky2 = 0.5 + 0.05 * i as f64;
+            let shape: Vec<f64> = stiff
+                .iter()
+                .map(|(fz, _)| fz0 * (pky4 * (fz / (pky2 * fz0)).atan()).sin())
+                .collect();
+            let num: f64 = stiff.iter().zip(&shape).map(|(s, h)| -s.1 * h).sum();
+            let den: f64 = shape.iter().map(|h| h * h).sum();
+            let pky1 = num / den;
+            let err: f64 = stiff
+                .iter()
+                .zip(&shape)
+                .map(|(s, h)| ((pky1 * h + s.1) / s.1).powi(2))
+                .sum();
+            if err < best.0 {
+                best = (err, pky1, pky2);
+            }
+        }
+    }
+    (best.1, best.2)
+}
+
 /// Start values estimated from a stage's rows (only names it sets).
 pub(super) fn data_start(
     stage: Stage,
@@ -164,32 +193,8 @@ pub(super) fn data_start(
             let (d1, d2) = if mu.is_empty() { (1.0, 0.0) } else { line(&mu) };
             if lat {
                 out.extend([("PCY1", 1.3), ("PDY1", d1), ("PDY2", d2), ("PEY1", 0.0)]);
-                // Kyα(Fz) = PKY1·Fz0·sin(PKY4·atan(Fz/(PKY2·Fz0))) (ISO-W:
-                // negative for a positive crate slope): PKY2 on a grid, PKY1
-                // by least squares for each.
-                let pky4 = c.PKY4;
-                let mut best = (f64::INFINITY, -20.0, 2.0);
-                if !stiff.is_empty() {
-                    for i in 0..=150 {
-                        let pky2 = 0.5 + 0.05 * i as f64;
-                        let shape: Vec<f64> = stiff
-                            .iter()
-                            .map(|(fz, _)| fz0 * (pky4 * (fz / (pky2 * fz0)).atan()).sin())
-                            .collect();
-                        let num: f64 = stiff.iter().zip(&shape).map(|(s, h)| -s.1 * h).sum();
-                        let den: f64 = shape.iter().map(|h| h * h).sum();
-                        let pky1 = num / den;
-                        let err: f64 = stiff
-                            .iter()
-                            .zip(&shape)
-                            .map(|(s, h)| ((pky1 * h + s.1) / s.1).powi(2))
-                            .sum();
-                        if err < best.0 {
-                            best = (err, pky1, pky2);
-                        }
-                    }
-                }
-                out.extend([("PKY1", best.1), ("PKY2", best.2)]);
+                let (pky1, pky2) = cornering_stiffness_law(&stiff, fz0, c.PKY4);
+                out.extend([("PKY1", pky1), ("PKY2", pky2)]);
             } else {
                 let kx: Vec<(f64, f64)> = stiff.iter().map(|(fz, k)| (dfz(*fz), k / fz)).collect();
                 let (k1, k2) = if kx.is_empty() {

@@ -59,7 +59,7 @@ mod formulae;
 
 pub use coefficients::MfCoefficients;
 
-use super::{SlipState, TyreForces, TyreModel};
+use super::{ModelName, ModelParameters, PointForces, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -301,6 +301,48 @@ impl super::Parameterised for MagicFormula {
                 (v - 2.0 * w, v + 2.0 * w)
             })
             .collect()
+    }
+}
+
+impl ModelParameters for MagicFormula {
+    fn name(&self) -> ModelName {
+        ModelName::MagicFormula
+    }
+    fn validate(&self) -> Result<(), ParamError> {
+        // The inherent check above (inherent methods take precedence).
+        MagicFormula::validate(self)
+    }
+    /// `Kyα` is proportional to its scaling factor `λ_Kyα`.
+    fn scale_cornering_stiffness(&mut self, k: f64) {
+        self.coefficients.LKY *= k;
+    }
+    /// None: the Magic Formula is identified in stages
+    /// (`identify::mf_staged`, Wei et al. (2010)), not from a start tyre.
+    fn start(_fz: f64) -> Option<Self> {
+        None
+    }
+    fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {
+        let o = self.evaluate_scaled(
+            &MfInput {
+                fz: s.fz,
+                kappa: s.kappa,
+                alpha: s.alpha,
+                camber: s.camber,
+                speed: s.speed,
+                pressure,
+            },
+            s.mu_scale,
+        );
+        PointForces {
+            fx: o.fx,
+            fy: o.fy,
+            mz: o.mz,
+            mx: Some(o.mx),
+            my: Some(o.my),
+        }
+    }
+    fn has_wheel_moments(&self) -> bool {
+        true
     }
 }
 

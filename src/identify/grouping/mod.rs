@@ -30,198 +30,19 @@
 //! Every sample is accounted for in [`GroupingReport`]: used, in a
 //! transition, or outside the selected level.
 //! Units: N, rad, Pa, m/s; slip ratio dimensionless.
+//!
+//! Layout: `levels.rs` finds the levels of one variable; this file selects
+//! and groups the samples into conditions and thins them into fit points.
 
-use super::data::{Point, RigData};
+mod levels;
+
+pub use super::data::SlipAxis;
+pub use levels::{levels, Level, Levels, Variable};
+
+use super::data::{RigData, RigPoint};
 use crate::error::InputError;
 use serde::Serialize;
 use std::path::Path;
-
-/// A grouping variable of rig data.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Variable {
-    /// Vertical load, N.
-    Load,
-    /// Inclination angle, rad.
-    Camber,
-    /// Inflation pressure, Pa.
-    Pressure,
-}
-
-impl Variable {
-    /// Column name in the rig file.
-    pub fn column(self) -> &'static str {
-        match self {
-            Variable::Load => "fz",
-            Variable::Camber => "camber",
-            Variable::Pressure => "pressure",
-        }
-    }
-    /// A value in the unit people read it in.
-    pub fn display(self, v: f64) -> String {
-        match self {
-            Variable::Load => format!("{v:.0} N"),
-            Variable::Camber => format!("{:.2}°", v.to_degrees()),
-            Variable::Pressure => format!("{:.1} kPa", v / 1000.0),
-        }
-    }
-}
-
-/// A level of a grouping variable.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Level {
-    /// Smallest value in it.
-    pub lo: f64,
-    /// Largest value in it.
-    pub hi: f64,
-    /// Median of its samples: the condition's nominal value.
-    pub nominal: f64,
-    /// Samples in it.
-    pub samples: usize,
-}
-
-/// The levels of one variable and what did not belong to any.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Levels {
-    /// The variable.
-    pub variable: Variable,
-    /// Gap that separates two levels (the threshold used), in the
-    /// variable's unit.
-    pub separation: f64,
-    /// Noise of the variable estimated from consecutive samples.
-    pub noise: f64,
-    /// The levels, ascending.
-    pub levels: Vec<Level>,
-    /// Samples between levels (ramps, isolated values), dropped.
-    pub transition_samples: usize,
-}
-
-impl Levels {
-    /// The level holding `v`.
-    fn find(&self, v: f64) -> Option<usize> {
-        self.levels.iter().position(|l| v >= l.lo && v <= l.hi)
-    }
-    /// The level a requested value selects: the one whose band (its range
-    /// widened by the separation) holds it, nearest nominal first.
-    fn select(&self, want: f64) -> Option<usize> {
-        (0..self.levels.len())
-            .filter(|&k| {
-                let l = &self.levels[k];
-                want >= l.lo - self.separation && want <= l.hi + self.separation
-            })
-            .min_by(|a, b| {
-                (self.levels[*a].nominal - want)
-                    .abs()
-                    .total_cmp(&(self.levels[*b].nominal - want).abs())
-            })
-    }
-}
-
-fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    if n % 2 == 1 {
-        sorted[n / 2]
-    } else {
-        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
-    }
-}
-
-/// The levels of `values` (in recording order) of `variable`; `resolution`
-/// is the smallest separation that counts as a different level.
-pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
-    let mut diffs: Vec<f64> = values.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
-    diffs.sort_by(f64::total_cmp);
-    // For Gaussian noise, |x_{i+1} − x_i| has median 0.6745·√2·σ.
-    let in_order = if diffs.is_empty() {
-        0.0
-    } else {
-        median(&diffs) / (0.6745 * std::f64::consts::SQRT_2)
-    };
-    let mut sorted: Vec<f64> = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    // Rows not recorded level by level (a table flattened slip angle by slip
-    // angle, shuffled rows) make neighbours differ by whole level steps: the
-    // spread inside groups split at `resolution` bounds the noise then.
-    let noise = in_order.min(spread_within(&sorted, resolution));
-    let separation = resolution.max(6.0 * noise);
-    let mut out = Levels {
-        variable,
-        separation,
-        noise,
-        levels: Vec::new(),
-        transition_samples: 0,
-    };
-    let mut start = 0;
-    for i in 1..=sorted.len() {
-        if i == sorted.len() || sorted[i] - sorted[i - 1] > separation {
-            split_valleys(&sorted[start..i], separation, &mut out);
-            start = i;
-        }
-    }
-    out
-}
-
-/// Robust deviation (1.4826·MAD) of the values about the median of their
-/// group, the sorted values split wherever consecutive ones are more than
-/// `resolution` apart.
-fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
-    let mut dev = Vec::with_capacity(sorted.len());
-    let mut start = 0;
-    for i in 1..=sorted.len() {
-        if i == sorted.len() || sorted[i] - sorted[i - 1] > resolution {
-            let m = median(&sorted[start..i]);
-            dev.extend(sorted[start..i].iter().map(|v| (v - m).abs()));
-            start = i;
-        }
-    }
-    if dev.is_empty() {
-        return 0.0;
-    }
-    dev.sort_by(f64::total_cmp);
-    1.4826 * median(&dev)
-}
-
-/// Splits one gap-separated group at density valleys and records its levels.
-fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
-    let (lo, hi) = (group[0], group[group.len() - 1]);
-    let push = |out: &mut Levels, part: &[f64]| {
-        if part.len() < 3 {
-            out.transition_samples += part.len();
-        } else {
-            out.levels.push(Level {
-                lo: part[0],
-                hi: part[part.len() - 1],
-                nominal: median(part),
-                samples: part.len(),
-            });
-        }
-    };
-    if hi - lo <= 8.0 * separation {
-        push(out, group);
-        return;
-    }
-    let nb = ((hi - lo) / separation).ceil() as usize;
-    let bin = |v: f64| (((v - lo) / separation) as usize).min(nb - 1);
-    let mut counts = vec![0usize; nb];
-    for &v in group {
-        counts[bin(v)] += 1;
-    }
-    let keep = (group.len() / 100).max(3);
-    let mut i = 0;
-    while i < group.len() {
-        if counts[bin(group[i])] < keep {
-            out.transition_samples += 1;
-            i += 1;
-            continue;
-        }
-        let mut j = i;
-        while j < group.len() && counts[bin(group[j])] >= keep {
-            j += 1;
-        }
-        push(out, &group[i..j]);
-        i = j;
-    }
-}
 
 /// Grouping and thinning settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -270,18 +91,8 @@ pub struct Condition {
     pub pressure: Option<f64>,
     /// Raw samples in it.
     pub samples: usize,
-    /// Fit points (thinned).
-    pub points: Vec<Point>,
-}
-
-/// Which slip the thinning bins.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SlipAxis {
-    /// Slip angle (lateral data), rad.
-    Angle,
-    /// Slip ratio (longitudinal data).
-    Ratio,
+    /// Fit points (thinned), all on the sweep grouped.
+    pub points: Vec<RigPoint>,
 }
 
 /// Where every sample went.
@@ -353,25 +164,15 @@ pub struct Grouped {
 /// samples are at 0), rad.
 const NO_CAMBER_COLUMN_TOLERANCE: f64 = 1e-6;
 
-/// Groups the samples of `d` (from `path`, for errors) into conditions and
-/// thins each along `axis`. Selecting a pressure or camber that the file
-/// lacks, or that no level lies near, is an error.
-pub fn group(
-    path: &Path,
+/// The levels a [`Grouping`] selects: camber and pressure level indices
+/// (`None`: all). A request the file cannot meet is an error.
+fn selection(
+    refuse: &dyn Fn(String) -> InputError,
     d: &RigData,
     g: &Grouping,
-    axis: SlipAxis,
-) -> Result<Grouped, InputError> {
-    let refuse = |message: String| InputError::File {
-        path: path.to_path_buf(),
-        message,
-    };
-    let loads = levels(Variable::Load, &d.fz, g.load_resolution);
-    let cambers = levels(Variable::Camber, &d.camber, g.camber_resolution);
-    let pressures = d
-        .pressure
-        .as_ref()
-        .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
+    cambers: &Levels,
+    pressures: Option<&Levels>,
+) -> Result<(Option<usize>, Option<usize>), InputError> {
     let select = |l: &Levels, want: f64| {
         l.select(want).ok_or_else(|| {
             let have: Vec<String> = l
@@ -388,7 +189,7 @@ pub fn group(
             ))
         })
     };
-    let want_p = match (g.pressure, &pressures) {
+    let want_p = match (g.pressure, pressures) {
         (None, _) => None,
         (Some(_), None) => {
             return Err(refuse(
@@ -408,8 +209,66 @@ pub fn group(
                 c.to_degrees()
             )))
         }
-        Some(c) => Some(select(&cambers, c)?),
+        Some(c) => Some(select(cambers, c)?),
     };
+    Ok((want_c, want_p))
+}
+
+/// The slip and force columns of the sweep along `axis`, and the aligning
+/// moment (cornering only).
+struct SweepColumns<'a> {
+    axis: SlipAxis,
+    slip: &'a [f64],
+    force: &'a [f64],
+    mz: Option<&'a [f64]>,
+}
+
+impl<'a> SweepColumns<'a> {
+    fn of(d: &'a RigData, axis: SlipAxis) -> Option<Self> {
+        Some(match axis {
+            SlipAxis::Angle => Self {
+                axis,
+                slip: &d.alpha,
+                force: &d.fy,
+                mz: d.mz.as_deref(),
+            },
+            SlipAxis::Ratio => {
+                let (kappa, fx) = d.longitudinal.as_ref()?;
+                Self {
+                    axis,
+                    slip: kappa,
+                    force: fx,
+                    mz: None,
+                }
+            }
+        })
+    }
+}
+
+/// Groups the samples of `d` (from `path`, for errors) into conditions and
+/// thins each along `axis` (the slip-ratio sweeps of
+/// [`RigData::longitudinal`] for [`SlipAxis::Ratio`]). Selecting a pressure
+/// or camber that the file lacks, or that no level lies near, or asking for
+/// a sweep it does not have, is an error.
+pub fn group(
+    path: &Path,
+    d: &RigData,
+    g: &Grouping,
+    axis: SlipAxis,
+) -> Result<Grouped, InputError> {
+    let refuse = |message: String| InputError::File {
+        path: path.to_path_buf(),
+        message,
+    };
+    let columns = SweepColumns::of(d, axis)
+        .ok_or_else(|| refuse("no longitudinal data (columns `kappa` and `fx`) to group".into()))?;
+    let loads = levels(Variable::Load, &d.fz, g.load_resolution);
+    let cambers = levels(Variable::Camber, &d.camber, g.camber_resolution);
+    let pressures = d
+        .pressure
+        .as_ref()
+        .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
+    let (want_c, want_p) = selection(&refuse, d, g, &cambers, pressures.as_ref())?;
     // (load, camber, pressure) level indices and the samples there.
     type Key = (usize, usize, Option<usize>);
     let mut groups: Vec<(Key, Vec<usize>)> = Vec::new();
@@ -447,7 +306,7 @@ pub fn group(
             camber: cambers.levels[c].nominal,
             pressure: p.and_then(|k| pressures.as_ref().map(|ps| ps.levels[k].nominal)),
             samples: idx.len(),
-            points: thin(d, &idx, bin, g.default_speed),
+            points: thin(d, &columns, &idx, bin, g.default_speed),
         })
         .collect();
     let mut all_levels = vec![loads, cambers];
@@ -466,28 +325,41 @@ pub fn group(
     Ok(Grouped { conditions, report })
 }
 
-/// The fit points of the samples `idx`: the mean of the samples in each
-/// slip bin of width `bin` (each sample its own point when `bin` is 0). A bin
-/// with one sample keeps it as it is.
-fn thin(d: &RigData, idx: &[usize], bin: f64, default_speed: f64) -> Vec<Point> {
-    let speed = |i: usize| d.speed.as_ref().map_or(default_speed, |s| s[i]);
-    let mz = |i: usize| d.mz.as_ref().map_or(f64::NAN, |m| m[i]);
-    let point = |i: usize| [d.alpha[i], d.fz[i], d.camber[i], speed(i), d.fy[i], mz(i)];
+/// The fit points of the samples `idx` on the sweep `s`: the mean of the
+/// samples in each slip bin of width `bin` (each sample its own point when
+/// `bin` is 0). A bin with one sample keeps it as it is.
+fn thin(
+    d: &RigData,
+    s: &SweepColumns,
+    idx: &[usize],
+    bin: f64,
+    default_speed: f64,
+) -> Vec<RigPoint> {
+    let speed = |i: usize| d.speed.as_ref().map_or(default_speed, |v| v[i]);
+    let mz = |i: usize| s.mz.map_or(f64::NAN, |m| m[i]);
+    // A sample's values in a fixed order (slip, load, camber, speed, force,
+    // moment) so that a bin's means are sums over the same samples in
+    // recording order.
+    let values = |i: usize| [s.slip[i], d.fz[i], d.camber[i], speed(i), s.force[i], mz(i)];
+    let point = |[slip, fz, camber, speed, force, mz]: [f64; 6]| match s.axis {
+        SlipAxis::Angle => RigPoint::lateral(slip, fz, camber, speed, force, mz),
+        SlipAxis::Ratio => RigPoint::longitudinal(slip, fz, camber, speed, force),
+    };
     if bin <= 0.0 {
-        return idx.iter().map(|&i| point(i)).collect();
+        return idx.iter().map(|&i| point(values(i))).collect();
     }
-    let mut bins: std::collections::BTreeMap<i64, (Point, usize)> = Default::default();
+    let mut bins: std::collections::BTreeMap<i64, ([f64; 6], usize)> = Default::default();
     for &i in idx {
         let e = bins
-            .entry((d.alpha[i] / bin).round() as i64)
+            .entry((s.slip[i] / bin).round() as i64)
             .or_insert(([0.0; 6], 0));
-        for (acc, v) in e.0.iter_mut().zip(point(i)) {
+        for (acc, v) in e.0.iter_mut().zip(values(i)) {
             *acc += v;
         }
         e.1 += 1;
     }
     bins.into_values()
-        .map(|(s, n)| s.map(|v| v / n as f64))
+        .map(|(sum, n)| point(sum.map(|v| v / n as f64)))
         .collect()
 }
 
@@ -504,79 +376,6 @@ mod tests {
             camber: vec![0.0; n],
             ..RigData::default()
         }
-    }
-
-    fn nominals(l: &Levels) -> Vec<f64> {
-        l.levels.iter().map(|q| q.nominal).collect()
-    }
-
-    #[test]
-    fn exact_levels_one_sample_per_slip_point_are_each_a_level() {
-        let v: Vec<f64> = [2800.0, 5700.0, 8600.0]
-            .iter()
-            .flat_map(|f| std::iter::repeat_n(*f, 85))
-            .collect();
-        let l = levels(Variable::Load, &v, 10.0);
-        assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
-        assert_eq!(l.transition_samples, 0);
-    }
-
-    #[test]
-    fn levels_interleaved_row_by_row_stay_apart() {
-        // The papers' table flattened one slip angle at a time: every row
-        // changes load, so neighbours differ by whole level steps.
-        let v: Vec<f64> = (0..85).flat_map(|_| [2800.0, 5700.0, 8600.0]).collect();
-        let l = levels(Variable::Load, &v, 10.0);
-        assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
-        assert_eq!(l.noise, 0.0);
-    }
-
-    #[test]
-    fn close_noisy_levels_stay_apart_and_a_small_one_is_kept() {
-        // Bicycle-tyre loads 50 N apart, ±3 N noise, and a fourth level with
-        // 0.5 % of the samples.
-        let mut rng = 1u64;
-        let mut noise = || {
-            rng = rng
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((rng >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 6.0
-        };
-        let mut v = Vec::new();
-        for (f, n) in [(340.0, 1000), (390.0, 1000), (440.0, 1000), (490.0, 15)] {
-            v.extend((0..n).map(|_| f + noise()));
-        }
-        let l = levels(Variable::Load, &v, 10.0);
-        let got = nominals(&l);
-        assert_eq!(got.len(), 4, "{got:?}");
-        for (g, want) in got.iter().zip([340.0, 390.0, 440.0, 490.0]) {
-            assert!((g - want).abs() < 1.0, "{got:?}");
-        }
-        assert_eq!(l.levels[3].samples, 15);
-    }
-
-    #[test]
-    fn a_ramp_between_two_levels_is_a_transition_not_a_bridge() {
-        // Two wandering levels (±150 N) joined by 40-sample ramps in
-        // recording order.
-        let mut v = Vec::new();
-        for k in 0..3000 {
-            v.push(1000.0 + 150.0 * (k as f64 * 0.01).sin());
-        }
-        for k in 0..40 {
-            v.push(1150.0 + (2100.0 - 1150.0) * k as f64 / 40.0);
-        }
-        for k in 0..3000 {
-            v.push(2200.0 + 150.0 * (k as f64 * 0.013).cos());
-        }
-        let l = levels(Variable::Load, &v, 10.0);
-        assert_eq!(l.levels.len(), 2, "{:?}", l.levels);
-        assert!((l.levels[0].nominal - 1000.0).abs() < 20.0);
-        assert!((l.levels[1].nominal - 2200.0).abs() < 20.0);
-        assert!(l.transition_samples > 0 && l.transition_samples <= 40);
-        let accounted: usize =
-            l.levels.iter().map(|q| q.samples).sum::<usize>() + l.transition_samples;
-        assert_eq!(accounted, v.len());
     }
 
     #[test]
@@ -597,8 +396,8 @@ mod tests {
         let pts = &g.conditions[0].points;
         assert_eq!(pts.len(), 21);
         for (p, a) in pts.iter().zip(&up) {
-            assert!((p[0] - (a + 0.0005)).abs() < 1e-12);
-            assert!((p[4] - 1000.0 * (a + 0.0005)).abs() < 1e-9);
+            assert!((p.slip() - (a + 0.0005)).abs() < 1e-12);
+            assert!((p.fy() - 1000.0 * (a + 0.0005)).abs() < 1e-9);
         }
         assert_eq!(g.report.used, 42);
         // The papers' layout: 0.2865° apart, one sample per bin.
@@ -614,6 +413,43 @@ mod tests {
         )
         .unwrap();
         assert_eq!(g.conditions[0].points.len(), 85);
+    }
+
+    #[test]
+    fn longitudinal_sweeps_group_into_longitudinal_points() {
+        // Slip ratios 0.001 apart with 0.0025 bins: the lateral columns
+        // (here a sweep of their own) do not enter.
+        let kappa: Vec<f64> = (0..40).map(|i| 0.001 * i as f64).collect();
+        let fx: Vec<f64> = kappa.iter().map(|k| 2e4 * k).collect();
+        let d = RigData {
+            longitudinal: Some((kappa, fx)),
+            ..rig(vec![3000.0; 40], vec![0.01; 40])
+        };
+        let g = group(
+            Path::new("x.csv"),
+            &d,
+            &Grouping::default(),
+            SlipAxis::Ratio,
+        )
+        .unwrap();
+        let pts = &g.conditions[0].points;
+        assert_eq!(g.report.used, 40);
+        assert!(pts.len() < 40);
+        for p in pts {
+            assert_eq!(p.axis(), SlipAxis::Ratio);
+            assert!((p.fx() - 2e4 * p.slip()).abs() < 1e-9);
+            assert!(p.fy().is_nan() && p.mz().is_nan());
+            assert_eq!(p.slip_state().alpha, 0.0);
+            assert_eq!(p.slip_state().kappa, p.slip());
+        }
+        let e = group(
+            Path::new("x.csv"),
+            &rig(vec![3000.0; 4], vec![0.0; 4]),
+            &Grouping::default(),
+            SlipAxis::Ratio,
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("no longitudinal data"), "{e}");
     }
 
     #[test]

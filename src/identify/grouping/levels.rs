@@ -1,0 +1,272 @@
+//! Levels of a grouping variable of rig data (load, camber, pressure): the
+//! values a rig held, found from the gaps between the sorted samples and
+//! split at density valleys so that ramps between levels do not join them
+//! (the method is described in [`super`]). Units: the variable's own (N,
+//! rad, Pa).
+
+use serde::Serialize;
+
+/// A grouping variable of rig data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Variable {
+    /// Vertical load, N.
+    Load,
+    /// Inclination angle, rad.
+    Camber,
+    /// Inflation pressure, Pa.
+    Pressure,
+}
+
+impl Variable {
+    /// Column name in the rig file.
+    pub fn column(self) -> &'static str {
+        match self {
+            Variable::Load => "fz",
+            Variable::Camber => "camber",
+            Variable::Pressure => "pressure",
+        }
+    }
+    /// A value in the unit people read it in.
+    pub fn display(self, v: f64) -> String {
+        match self {
+            Variable::Load => format!("{v:.0} N"),
+            Variable::Camber => format!("{:.2}°", v.to_degrees()),
+            Variable::Pressure => format!("{:.1} kPa", v / 1000.0),
+        }
+    }
+}
+
+/// A level of a grouping variable.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Level {
+    /// Smallest value in it.
+    pub lo: f64,
+    /// Largest value in it.
+    pub hi: f64,
+    /// Median of its samples: the condition's nominal value.
+    pub nominal: f64,
+    /// Samples in it.
+    pub samples: usize,
+}
+
+/// The levels of one variable and what did not belong to any.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Levels {
+    /// The variable.
+    pub variable: Variable,
+    /// Gap that separates two levels (the threshold used), in the
+    /// variable's unit.
+    pub separation: f64,
+    /// Noise of the variable estimated from consecutive samples.
+    pub noise: f64,
+    /// The levels, ascending.
+    pub levels: Vec<Level>,
+    /// Samples between levels (ramps, isolated values), dropped.
+    pub transition_samples: usize,
+}
+
+impl Levels {
+    /// The level holding `v`.
+    pub(super) fn find(&self, v: f64) -> Option<usize> {
+        self.levels.iter().position(|l| v >= l.lo && v <= l.hi)
+    }
+    /// The level a requested value selects: the one whose band (its range
+    /// widened by the separation) holds it, nearest nominal first.
+    pub(super) fn select(&self, want: f64) -> Option<usize> {
+        (0..self.levels.len())
+            .filter(|&k| {
+                let l = &self.levels[k];
+                want >= l.lo - self.separation && want <= l.hi + self.separation
+            })
+            .min_by(|a, b| {
+                (self.levels[*a].nominal - want)
+                    .abs()
+                    .total_cmp(&(self.levels[*b].nominal - want).abs())
+            })
+    }
+}
+
+fn median(sorted: &[f64]) -> f64 {
+    let n = sorted.len();
+    if n % 2 == 1 {
+        sorted[n / 2]
+    } else {
+        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
+    }
+}
+
+/// The levels of `values` (in recording order) of `variable`; `resolution`
+/// is the smallest separation that counts as a different level.
+pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
+    let mut diffs: Vec<f64> = values.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    diffs.sort_by(f64::total_cmp);
+    // For Gaussian noise, |x_{i+1} − x_i| has median 0.6745·√2·σ.
+    let in_order = if diffs.is_empty() {
+        0.0
+    } else {
+        median(&diffs) / (0.6745 * std::f64::consts::SQRT_2)
+    };
+    let mut sorted: Vec<f64> = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    // Rows not recorded level by level (a table flattened slip angle by slip
+    // angle, shuffled rows) make neighbours differ by whole level steps: the
+    // spread inside groups split at `resolution` bounds the noise then.
+    let noise = in_order.min(spread_within(&sorted, resolution));
+    let separation = resolution.max(6.0 * noise);
+    let mut out = Levels {
+        variable,
+        separation,
+        noise,
+        levels: Vec::new(),
+        transition_samples: 0,
+    };
+    let mut start = 0;
+    for i in 1..=sorted.len() {
+        if i == sorted.len() || sorted[i] - sorted[i - 1] > separation {
+            split_valleys(&sorted[start..i], separation, &mut out);
+            start = i;
+        }
+    }
+    out
+}
+
+/// Robust deviation (1.4826·MAD) of the values about the median of their
+/// group, the sorted values split wherever consecutive ones are more than
+/// `resolution` apart.
+fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
+    let mut dev = Vec::with_capacity(sorted.len());
+    let mut start = 0;
+    for i in 1..=sorted.len() {
+        if i == sorted.len() || sorted[i] - sorted[i - 1] > resolution {
+            let m = median(&sorted[start..i]);
+            dev.extend(sorted[start..i].iter().map(|v| (v - m).abs()));
+            start = i;
+        }
+    }
+    if dev.is_empty() {
+        return 0.0;
+    }
+    dev.sort_by(f64::total_cmp);
+    1.4826 * median(&dev)
+}
+
+/// Splits one gap-separated group at density valleys and records its levels.
+fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
+    let (lo, hi) = (group[0], group[group.len() - 1]);
+    let push = |out: &mut Levels, part: &[f64]| {
+        if part.len() < 3 {
+            out.transition_samples += part.len();
+        } else {
+            out.levels.push(Level {
+                lo: part[0],
+                hi: part[part.len() - 1],
+                nominal: median(part),
+                samples: part.len(),
+            });
+        }
+    };
+    if hi - lo <= 8.0 * separation {
+        push(out, group);
+        return;
+    }
+    let nb = ((hi - lo) / separation).ceil() as usize;
+    let bin = |v: f64| (((v - lo) / separation) as usize).min(nb - 1);
+    let mut counts = vec![0usize; nb];
+    for &v in group {
+        counts[bin(v)] += 1;
+    }
+    let keep = (group.len() / 100).max(3);
+    let mut i = 0;
+    while i < group.len() {
+        if counts[bin(group[i])] < keep {
+            out.transition_samples += 1;
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        while j < group.len() && counts[bin(group[j])] >= keep {
+            j += 1;
+        }
+        push(out, &group[i..j]);
+        i = j;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn nominals(l: &Levels) -> Vec<f64> {
+        l.levels.iter().map(|q| q.nominal).collect()
+    }
+
+    #[test]
+    fn exact_levels_one_sample_per_slip_point_are_each_a_level() {
+        let v: Vec<f64> = [2800.0, 5700.0, 8600.0]
+            .iter()
+            .flat_map(|f| std::iter::repeat_n(*f, 85))
+            .collect();
+        let l = levels(Variable::Load, &v, 10.0);
+        assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
+        assert_eq!(l.transition_samples, 0);
+    }
+
+    #[test]
+    fn levels_interleaved_row_by_row_stay_apart() {
+        // The papers' table flattened one slip angle at a time: every row
+        // changes load, so neighbours differ by whole level steps.
+        let v: Vec<f64> = (0..85).flat_map(|_| [2800.0, 5700.0, 8600.0]).collect();
+        let l = levels(Variable::Load, &v, 10.0);
+        assert_eq!(nominals(&l), vec![2800.0, 5700.0, 8600.0]);
+        assert_eq!(l.noise, 0.0);
+    }
+
+    #[test]
+    fn close_noisy_levels_stay_apart_and_a_small_one_is_kept() {
+        // Bicycle-tyre loads 50 N apart, ±3 N noise, and a fourth level with
+        // 0.5 % of the samples.
+        let mut rng = 1u64;
+        let mut noise = || {
+            rng = rng
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((rng >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 6.0
+        };
+        let mut v = Vec::new();
+        for (f, n) in [(340.0, 1000), (390.0, 1000), (440.0, 1000), (490.0, 15)] {
+            v.extend((0..n).map(|_| f + noise()));
+        }
+        let l = levels(Variable::Load, &v, 10.0);
+        let got = nominals(&l);
+        assert_eq!(got.len(), 4, "{got:?}");
+        for (g, want) in got.iter().zip([340.0, 390.0, 440.0, 490.0]) {
+            assert!((g - want).abs() < 1.0, "{got:?}");
+        }
+        assert_eq!(l.levels[3].samples, 15);
+    }
+
+    #[test]
+    fn a_ramp_between_two_levels_is_a_transition_not_a_bridge() {
+        // Two wandering levels (±150 N) joined by 40-sample ramps in
+        // recording order.
+        let mut v = Vec::new();
+        for k in 0..3000 {
+            v.push(1000.0 + 150.0 * (k as f64 * 0.01).sin());
+        }
+        for k in 0..40 {
+            v.push(1150.0 + (2100.0 - 1150.0) * k as f64 / 40.0);
+        }
+        for k in 0..3000 {
+            v.push(2200.0 + 150.0 * (k as f64 * 0.013).cos());
+        }
+        let l = levels(Variable::Load, &v, 10.0);
+        assert_eq!(l.levels.len(), 2, "{:?}", l.levels);
+        assert!((l.levels[0].nominal - 1000.0).abs() < 20.0);
+        assert!((l.levels[1].nominal - 2200.0).abs() < 20.0);
+        assert!(l.transition_samples > 0 && l.transition_samples <= 40);
+        let accounted: usize =
+            l.levels.iter().map(|q| q.samples).sum::<usize>() + l.transition_samples;
+        assert_eq!(accounted, v.len());
+    }
+}

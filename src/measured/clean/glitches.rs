@@ -1,0 +1,465 @@
+//! Logger glitches in one channel of a measured run — zero reads, isolated
+//! spikes, stuck values — found with robust statistics of the channel
+//! itself (the method and thresholds are described in [`super`]), and
+//! their treatment: inputs (steer, speed) repaired by linear interpolation
+//! in time, responses (yaw rate, ay, beta) masked. Units: the channel's SI
+//! unit; times in s.
+
+use super::report::{CleaningReport, Glitch, GlitchKind, RunChannel, Treatment};
+use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SPIKE_MADS, STUCK_CONTEXT};
+use crate::measured::MeasuredRun;
+
+/// Channels searched for glitches.
+const SEARCHED: [RunChannel; 5] = [
+    RunChannel::Steer,
+    RunChannel::Speed,
+    RunChannel::YawRate,
+    RunChannel::Ay,
+    RunChannel::Beta,
+];
+
+/// The middle value (upper median) of `v`, sorted in place; 0 when empty.
+pub(super) fn median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Robust statistics of a channel: the detection threshold T.
+pub(super) struct Scale {
+    pub(super) threshold: f64,
+    /// How far from 0 the neighbours of a zero read must be: in a channel
+    /// whose values do not repeat (no quantum, noise on every sample) an
+    /// exact 0 between samples of one sign is itself improbable, so
+    /// `ZERO_MADS`·σ_d suffices; a quantised channel, where 0 is one of its
+    /// levels, keeps the spike threshold.
+    zero_threshold: f64,
+}
+
+/// Robust spreads of the sample-to-sample differences beyond which the
+/// neighbours of an exact 0 in an unquantised channel make it a zero read.
+const ZERO_MADS: f64 = 4.0;
+/// Share of exactly repeated successive samples above which a channel is
+/// quantised.
+const QUANTISED_SHARE: f64 = 0.01;
+
+/// The detection thresholds of the channel `x`.
+pub(super) fn scale(x: &[f64]) -> Scale {
+    let mut d: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
+    let md = median(&mut d);
+    let mut dev: Vec<f64> = d.iter().map(|v| (v - md).abs()).collect();
+    let sigma = 1.4826 * median(&mut dev);
+    let mut s = x.to_vec();
+    s.sort_by(f64::total_cmp);
+    let q = |p: f64| s[((s.len() - 1) as f64 * p).round() as usize];
+    let range = q(0.99) - q(0.01);
+    let threshold = (SPIKE_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12);
+    // Repeats other than the zeros themselves.
+    let repeats = x.windows(2).filter(|w| w[0] == w[1] && w[0] != 0.0).count();
+    let quantised = repeats as f64 > QUANTISED_SHARE * d.len().max(1) as f64;
+    Scale {
+        threshold,
+        zero_threshold: if quantised {
+            threshold
+        } else {
+            (ZERO_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12)
+        },
+    }
+}
+
+/// A glitch found at samples `start..start + len` of one channel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Found {
+    start: usize,
+    len: usize,
+    kind: GlitchKind,
+}
+
+/// The glitches of one channel sampled at `t`, in sample order. `slow`
+/// marks samples below the minimum speed (a hold there is a stopped car).
+/// Zero reads are found first, then spikes among the samples left, then
+/// stuck values among those left.
+fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
+    let n = x.len();
+    if n < 5 {
+        return Vec::new();
+    }
+    let sc = scale(x);
+    let mut flagged = vec![false; n];
+    let mut out = Vec::new();
+    zero_reads(x, &sc, &mut flagged, &mut out);
+    spikes(x, sc.threshold, &mut flagged, &mut out);
+    stuck_values(x, slow, &mut flagged, &mut out);
+    out.sort_by_key(|f| f.start);
+    out
+}
+
+/// Zero reads: runs of exact zeros between samples far from 0 of one sign.
+fn zero_reads(x: &[f64], sc: &Scale, flagged: &mut [bool], out: &mut Vec<Found>) {
+    let n = x.len();
+    let mut i = 0;
+    while i < n {
+        if x[i] != 0.0 {
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        while j < n && x[j] == 0.0 {
+            j += 1;
+        }
+        let len = j - i;
+        // Two samples on each side (two on the one side at an end of the
+        // run), all far from 0 with one sign: a lone value next to the
+        // zeros (a spike beside a stretch of true zeros) is not enough.
+        let (mut count, mut all_far, mut sign) = (0, true, 0.0);
+        for k in [i.checked_sub(2), i.checked_sub(1), Some(j), Some(j + 1)]
+            .into_iter()
+            .flatten()
+            .filter(|&k| k < n)
+        {
+            if count == 0 {
+                sign = x[k].signum();
+            }
+            all_far &= x[k].abs() > sc.zero_threshold && x[k].signum() == sign;
+            count += 1;
+        }
+        let accepted = count >= 2 && (i > 0 || j + 1 < n) && (j < n || i >= 2) && all_far;
+        if len <= MAX_ZERO_RUN && accepted {
+            flagged[i..j].iter_mut().for_each(|f| *f = true);
+            out.push(Found {
+                start: i,
+                len,
+                kind: GlitchKind::ZeroRead,
+            });
+        }
+        i = j;
+    }
+}
+
+/// Isolated spikes: inside the run against both neighbours, at its ends
+/// against the line through the next two.
+fn spikes(x: &[f64], tt: f64, flagged: &mut [bool], out: &mut Vec<Found>) {
+    let n = x.len();
+    for i in 0..n {
+        if flagged[i] {
+            continue;
+        }
+        let (a, b, pred, sided) = if i == 0 {
+            let (a, b) = (x[1], x[2]);
+            (a, b, 2.0 * a - b, true)
+        } else if i == n - 1 {
+            let (a, b) = (x[n - 2], x[n - 3]);
+            (a, b, 2.0 * a - b, true)
+        } else {
+            let (a, b) = (x[i - 1], x[i + 1]);
+            let s = (x[i] - a).signum() == (x[i] - b).signum()
+                && (x[i] - a).abs() > 0.5 * tt
+                && (x[i] - b).abs() > 0.5 * tt;
+            (a, b, 0.5 * (a + b), s)
+        };
+        let r = x[i] - pred;
+        if sided && r.abs() > tt && (a - b).abs() < r.abs() {
+            flagged[i] = true;
+            out.push(Found {
+                start: i,
+                len: 1,
+                kind: GlitchKind::Spike,
+            });
+        }
+    }
+}
+
+/// Stuck values: holds that chance would hardly give this channel.
+fn stuck_values(x: &[f64], slow: &[bool], flagged: &mut [bool], out: &mut Vec<Found>) {
+    let n = x.len();
+    let mut i = 0;
+    while i < n {
+        let mut j = i + 1;
+        while j < n && x[j] == x[i] {
+            j += 1;
+        }
+        let len = j - i;
+        let w = len.max(STUCK_CONTEXT);
+        let (lo, hi) = (i.saturating_sub(w), (j + w).min(n));
+        // A hold is judged by how the channel moves on both sides of it:
+        // zero differences there (quantisation, a steady noise-free signal)
+        // make it ordinary; a noisy neighbourhood (second differences as
+        // large as first ones) or a release jump of the size the signal
+        // would have moved meanwhile make it a stuck sensor.
+        let stuck = i - lo >= STUCK_CONTEXT && hi - j >= STUCK_CONTEXT && {
+            // Per side: zero differences, differences, Σ|Δx|, Σ|Δ²x|, second
+            // differences; samples already found glitched are skipped.
+            let side = |from: usize, to: usize| {
+                let (mut zeros, mut count, mut d1, mut d2, mut count2) = (0, 0, 0.0, 0.0, 0);
+                for k in from + 1..to {
+                    if flagged[k] || flagged[k - 1] {
+                        continue;
+                    }
+                    let d = x[k] - x[k - 1];
+                    zeros += usize::from(d == 0.0);
+                    count += 1;
+                    d1 += d.abs();
+                    if k >= from + 2 && !flagged[k - 2] {
+                        d2 += (d - (x[k - 1] - x[k - 2])).abs();
+                        count2 += 1;
+                    }
+                }
+                (zeros, count, d1, d2, count2)
+            };
+            let (a, b) = (side(lo, i), side(j, hi));
+            let moving = |s: (usize, usize, f64, f64, usize)| s.1 >= 3 && 2 * s.0 < s.1;
+            let (zeros, count) = (a.0 + b.0, a.1 + b.1);
+            let (m1, m2) = (
+                (a.2 + b.2) / count.max(1) as f64,
+                (a.3 + b.3) / (a.4 + b.4).max(1) as f64,
+            );
+            let p0 = zeros as f64 / count.max(1) as f64;
+            let chance = (n as f64) * p0.powi(len as i32 - 1);
+            let rough = m2 >= 0.5 * m1;
+            let jump = (x[j] - x[j - 1]).abs() >= 0.5 * len as f64 * m1;
+            moving(a) && moving(b) && chance < 1e-3 && m1 > 0.0 && (rough || jump)
+        };
+        let stopped = slow[i..j].iter().all(|s| *s);
+        if len >= MIN_STUCK && stuck && !stopped && !flagged[i..j].iter().any(|f| *f) {
+            flagged[i..j].iter_mut().for_each(|f| *f = true);
+            out.push(Found {
+                start: i,
+                len,
+                kind: GlitchKind::Stuck,
+            });
+        }
+        i = j;
+    }
+}
+
+/// Interpolates `x` linearly in `t` across the flagged samples (held at the
+/// nearest good value at an end).
+pub(super) fn repair(t: &[f64], x: &mut [f64], bad: &[bool]) {
+    let n = x.len();
+    let mut i = 0;
+    while i < n {
+        if !bad[i] {
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        while j < n && bad[j] {
+            j += 1;
+        }
+        let left = i.checked_sub(1);
+        let right = (j < n).then_some(j);
+        for k in i..j {
+            x[k] = match (left, right) {
+                (Some(l), Some(r)) => x[l] + (x[r] - x[l]) * (t[k] - t[l]) / (t[r] - t[l]),
+                (Some(l), None) => x[l],
+                (None, Some(r)) => x[r],
+                (None, None) => x[k],
+            };
+        }
+        i = j;
+    }
+}
+
+/// Finds the glitches of one run (a piece between time gaps), repairs its
+/// inputs, masks its responses, and lists what it found in `report`.
+pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
+    let name = run.path.display().to_string();
+    let n = run.t.len();
+    let slow: Vec<bool> = run.speed.iter().map(|v| *v < min_speed).collect();
+    let mut masked = vec![false; n];
+    for &i in &run.masked {
+        masked[i] = true;
+    }
+    for ch in SEARCHED {
+        let Some(x) = ch.of(run) else { continue };
+        let found = detect(x, &slow);
+        if found.is_empty() {
+            continue;
+        }
+        let mut bad = vec![false; n];
+        for f in &found {
+            bad[f.start..f.start + f.len]
+                .iter_mut()
+                .for_each(|b| *b = true);
+            report.push_glitch(Glitch {
+                run: name.clone(),
+                t: run.t[f.start],
+                channel: ch,
+                kind: f.kind,
+                value: x[f.start],
+                samples: f.len,
+                treatment: if ch.is_input() {
+                    Treatment::Repaired
+                } else {
+                    Treatment::Masked
+                },
+            });
+        }
+        if ch.is_input() {
+            report.samples_repaired += bad.iter().filter(|b| **b).count();
+            let t = run.t.clone();
+            if let Some(x) = ch.of_mut(run) {
+                repair(&t, x, &bad);
+            }
+        } else {
+            for (m, b) in masked.iter_mut().zip(&bad) {
+                *m |= *b;
+            }
+        }
+    }
+    run.masked = (0..n).filter(|&i| masked[i]).collect();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_signals::{gauss_noise, no_slow};
+    use super::super::{clean_runs, CleanSettings};
+    use super::*;
+
+    #[test]
+    fn white_noise_a_step_and_a_sweep_have_no_glitch() {
+        for seed in 0..20 {
+            let x = gauss_noise(5000, 0.01, seed);
+            assert!(detect(&x, &no_slow(5000)).is_empty(), "seed {seed}");
+        }
+        // A step steer with a 0.1 s ramp at 100 Hz, noise-free and noisy.
+        let t: Vec<f64> = (0..1000).map(|i| i as f64 * 0.01).collect();
+        let step: Vec<f64> = t
+            .iter()
+            .map(|&x| 0.03 * ((x - 2.0) / 0.1).clamp(0.0, 1.0))
+            .collect();
+        assert!(detect(&step, &no_slow(1000)).is_empty());
+        let sharp: Vec<f64> = t
+            .iter()
+            .map(|&x| if x >= 2.0 { 0.03 } else { 0.0 })
+            .collect();
+        assert!(detect(&sharp, &no_slow(1000)).is_empty());
+        let noise = gauss_noise(1000, 2e-4, 3);
+        let noisy: Vec<f64> = step.iter().zip(&noise).map(|(a, b)| a + b).collect();
+        assert!(detect(&noisy, &no_slow(1000)).is_empty());
+        // A noise-free first-order response written with six decimals (it
+        // settles to a held value) and a steer dwell between ramps.
+        let settled: Vec<f64> = t
+            .iter()
+            .map(|&x| {
+                let r = if x > 2.0 {
+                    0.2 * (1.0 - (-(x - 2.0) / 0.15).exp())
+                } else {
+                    0.0
+                };
+                (r * 1e6).round() / 1e6
+            })
+            .collect();
+        assert!(detect(&settled, &no_slow(1000)).is_empty());
+        let dwell: Vec<f64> = t
+            .iter()
+            .map(|&x| 0.05 * (x - 1.0).clamp(0.0, 1.0) - 0.05 * (x - 4.0).clamp(0.0, 2.0))
+            .collect();
+        assert!(detect(&dwell, &no_slow(1000)).is_empty());
+        // A spike after the dwell is a spike; the holds around it are not
+        // made stuck by it.
+        let mut spiked = dwell.clone();
+        spiked[800] += 0.02;
+        let f = detect(&spiked, &no_slow(1000));
+        assert_eq!(
+            f,
+            vec![Found {
+                start: 800,
+                len: 1,
+                kind: GlitchKind::Spike
+            }]
+        );
+        // A sine sweep 0.1–4 Hz at 100 Hz (and at 25 Hz), with noise.
+        for dt in [0.01, 0.04] {
+            let n = (30.0 / dt) as usize;
+            let noise = gauss_noise(n, 1e-3, 5);
+            let sweep: Vec<f64> = (0..n)
+                .map(|i| {
+                    let x = i as f64 * dt;
+                    0.05 * (std::f64::consts::TAU * (0.1 * x + 0.065 * x * x)).sin() + noise[i]
+                })
+                .collect();
+            assert!(detect(&sweep, &no_slow(n)).is_empty(), "dt {dt}");
+        }
+    }
+
+    #[test]
+    fn each_glitch_kind_is_found_at_its_sample() {
+        let n = 2000;
+        let base: Vec<f64> = (0..n)
+            .map(|i| 0.2 + 0.1 * (i as f64 * 0.01).sin())
+            .zip(gauss_noise(n, 0.002, 9))
+            .map(|(a, b)| a + b)
+            .collect();
+        let mut x = base.clone();
+        x[400] = 0.0;
+        x[900] += 0.1;
+        for v in &mut x[1300..1306] {
+            *v = 0.25;
+        }
+        x[n - 1] = 0.0;
+        let f = detect(&x, &no_slow(n));
+        let got: Vec<(usize, usize, GlitchKind)> =
+            f.iter().map(|f| (f.start, f.len, f.kind)).collect();
+        assert_eq!(
+            got,
+            vec![
+                (400, 1, GlitchKind::ZeroRead),
+                (900, 1, GlitchKind::Spike),
+                (1300, 6, GlitchKind::Stuck),
+                (n - 1, 1, GlitchKind::ZeroRead),
+            ]
+        );
+        // A hold where the car stands still is not a stuck sensor.
+        let mut slow = no_slow(n);
+        slow[1300..1306].iter_mut().for_each(|s| *s = true);
+        assert!(detect(&x, &slow)
+            .iter()
+            .all(|f| f.kind != GlitchKind::Stuck));
+    }
+
+    #[test]
+    fn a_zero_read_of_a_sweep_is_found_below_the_spike_threshold() {
+        // A frequency sweep's yaw rate moves a lot between samples, so the
+        // spike threshold (10 robust spreads of the differences) exceeds
+        // many of its values; an exact 0 amid unquantised samples of one
+        // sign is still a zero read.
+        use crate::diagnose::synth::{generate, Noise, SynthSpec};
+        let s = generate(&SynthSpec {
+            effects: Vec::new(),
+            seed: 3,
+            noise: Noise::default(),
+        });
+        let mut run = s
+            .runs
+            .iter()
+            .find(|r| r.path.to_string_lossy().contains("sweep"))
+            .expect("a sweep run")
+            .clone();
+        let sc = scale(&run.yaw_rate);
+        // A sample well away from 0 but inside the spike threshold, with
+        // neighbours of its sign.
+        let i = (2..run.t.len() - 2)
+            .find(|&i| {
+                let v = run.yaw_rate[i];
+                v.abs() > 0.5 * sc.threshold
+                    && v.abs() < sc.threshold
+                    && (i - 2..=i + 2).all(|k| {
+                        run.yaw_rate[k].signum() == v.signum()
+                            && run.yaw_rate[k].abs() > 0.5 * sc.threshold
+                    })
+            })
+            .expect("a sample inside the spike threshold");
+        run.yaw_rate[i] = 0.0;
+        let (_, rep) = clean_runs(vec![run.clone()], &CleanSettings::default());
+        assert!(
+            rep.glitches.iter().any(|g| g.kind == GlitchKind::ZeroRead
+                && g.channel == RunChannel::YawRate
+                && g.t == run.t[i]),
+            "{:?}",
+            rep.glitches
+        );
+    }
+}

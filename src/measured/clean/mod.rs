@@ -1,0 +1,122 @@
+//! What a measured run holds besides the manoeuvre: standstills, crawling
+//! and the glitches of real loggers (`FORMATS.md`), found, treated and
+//! listed before any replay or score.
+//!
+//! - Time gaps longer than five median sample intervals split a run (a
+//!   replay cannot bridge a dropout).
+//! - Glitches are found on every sample of the driving and response channels
+//!   (steer, speed; yaw rate, ay, beta) with robust statistics of the
+//!   channel itself. Its scale is `σ_d = 1.4826·MAD(Δx)`, the robust spread
+//!   of the sample-to-sample differences (white noise of deviation s gives
+//!   `σ_d = √2·s`; a smooth signal gives its typical change per sample), with
+//!   a floor of [`RANGE_FLOOR`] of the channel's 1–99 % range for noise-free
+//!   channels. The detection threshold is `T = max(K·σ_d, floor)`, K =
+//!   [`SPIKE_MADS`].
+//!   - zero read: one to [`MAX_ZERO_RUN`] samples read as exactly 0 while the
+//!     two samples on each side (on the one side at an end of the run) lie
+//!     beyond T, all with one sign;
+//!   - isolated spike: a sample beyond T from the line through its two
+//!     neighbours, on the same side of both, while the neighbours agree with
+//!     each other better than with it (a step has one side only; a peak of a
+//!     smooth signal stays well inside T);
+//!   - stuck value: a value held exactly for at least [`MIN_STUCK`] samples
+//!     where the chance of such a hold, `n·p0^(L−1)` with p0 the channel's
+//!     share of zero differences, is below 1e-3 (a quantised or noise-free
+//!     channel holds values by nature and is never called stuck).
+//! - Inputs that drive the replay (steer, speed) are repaired by linear
+//!   interpolation in time across the glitch, so the replay is not kicked;
+//!   in response channels (yaw rate, ay, beta) the sample is masked: left out
+//!   of fits and scores.
+//! - Samples slower than `min_speed` (a standstill when the car stops in
+//!   the span, below [`STANDSTILL_SPEED`]; else a crawl) are excluded: the model is a
+//!   driving model, and at a standstill its output chatters on sensor noise.
+//!   The moving pieces they leave are replayed separately; in a diagnosis
+//!   pieces shorter than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] are
+//!   dropped; a single replay or the metrics of a run take its longest
+//!   piece and list the others as dropped.
+//!
+//! Everything found, excluded or dropped is in the [`CleaningReport`].
+//! Units: SI, rad, times in s.
+//!
+//! Layout: this file holds the thresholds and the settings; `report.rs` the
+//! report types; `glitches.rs` the detection and treatment of glitches in
+//! one channel; `pieces.rs` the time gaps, slow spans and pieces, and the
+//! cleaning entry points; `inject.rs` glitches injected for tests.
+
+mod glitches;
+mod inject;
+mod pieces;
+mod report;
+#[cfg(test)]
+mod test_signals;
+
+pub use glitches::treat_glitches;
+pub use inject::inject_glitches;
+pub use pieces::{
+    clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked, slice,
+};
+pub use report::{
+    CleaningReport, Glitch, GlitchCounts, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan,
+    Treatment,
+};
+
+/// Shortest run a diagnosis accepts, s: a step response needs its
+/// pre-input window, rise and settling.
+pub const MIN_RUN_SECONDS: f64 = 2.0;
+
+/// Fewest samples a run must have.
+pub const MIN_RUN_SAMPLES: usize = 20;
+
+/// Default lowest speed of a replayed sample, m/s.
+pub const DEFAULT_MIN_SPEED: f64 = 5.0;
+/// Below this speed a slow span is a standstill rather than a crawl, m/s.
+pub const STANDSTILL_SPEED: f64 = 0.5;
+/// Spike and zero-read threshold in robust deviations of the differences.
+pub const SPIKE_MADS: f64 = 10.0;
+/// Threshold floor as a share of the channel's 1–99 % range.
+pub const RANGE_FLOOR: f64 = 0.02;
+/// Longest run of zeros still called a zero read.
+pub const MAX_ZERO_RUN: usize = 10;
+/// Fewest samples of an exact hold called stuck.
+pub const MIN_STUCK: usize = 5;
+/// Samples on each side of a hold that show how the channel moves there.
+pub const STUCK_CONTEXT: usize = 10;
+/// A time gap: this many median sample intervals.
+pub const GAP_INTERVALS: f64 = 5.0;
+
+/// Cleaning settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CleanSettings {
+    /// Lowest speed replayed, m/s.
+    pub min_speed: f64,
+    /// Shortest piece kept, s.
+    pub min_piece_seconds: f64,
+    /// Fewest samples of a piece kept.
+    pub min_piece_samples: usize,
+}
+
+impl CleanSettings {
+    /// For a diagnosis: pieces must show a response
+    /// ([`MIN_RUN_SECONDS`], [`MIN_RUN_SAMPLES`]).
+    pub fn diagnosis(min_speed: f64) -> Self {
+        Self {
+            min_speed,
+            min_piece_seconds: MIN_RUN_SECONDS,
+            min_piece_samples: MIN_RUN_SAMPLES,
+        }
+    }
+    /// For one replay or one set of metrics: any piece of two samples.
+    pub fn single(min_speed: f64) -> Self {
+        Self {
+            min_speed,
+            min_piece_seconds: 0.0,
+            min_piece_samples: 2,
+        }
+    }
+}
+
+impl Default for CleanSettings {
+    fn default() -> Self {
+        Self::diagnosis(DEFAULT_MIN_SPEED)
+    }
+}

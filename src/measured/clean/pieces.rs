@@ -1,0 +1,295 @@
+//! The pieces of a measured run: split at time gaps, glitches treated, the
+//! slow spans (standstill, crawl) excluded and the moving pieces long
+//! enough kept, each step listed in the [`CleaningReport`]; and the cleaning
+//! entry points for a diagnosis, a single replay and the metrics. Times in
+//! s, speeds in m/s.
+
+use super::glitches::{median, repair, treat_glitches};
+use super::report::{
+    CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
+};
+use super::{CleanSettings, GAP_INTERVALS, STANDSTILL_SPEED};
+use crate::measured::MeasuredRun;
+use std::path::PathBuf;
+
+/// The rows `lo..hi` of a run, named with `label` appended to its path.
+pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRun {
+    let cut = |v: &Vec<f64>| v[lo..hi].to_vec();
+    let mut path = run.path.clone().into_os_string();
+    path.push(label);
+    MeasuredRun {
+        path: PathBuf::from(path),
+        t: cut(&run.t),
+        speed: cut(&run.speed),
+        steer: cut(&run.steer),
+        yaw_rate: cut(&run.yaw_rate),
+        ay: run.ay.as_ref().map(cut),
+        beta: run.beta.as_ref().map(cut),
+        roll: run.roll.as_ref().map(cut),
+        bank: run.bank.as_ref().map(cut),
+        ax: run.ax.as_ref().map(cut),
+        masked: run
+            .masked
+            .iter()
+            .filter(|&&i| i >= lo && i < hi)
+            .map(|&i| i - lo)
+            .collect(),
+    }
+}
+
+/// The index ranges `[lo, hi)` between time gaps of a run, listing the gaps.
+fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, usize)> {
+    let mut dt: Vec<f64> = run.t.windows(2).map(|w| w[1] - w[0]).collect();
+    let med = median(&mut dt);
+    let mut bounds = vec![0];
+    for i in 1..run.t.len() {
+        if run.t[i] - run.t[i - 1] > GAP_INTERVALS * med {
+            bounds.push(i);
+            report.push_glitch(Glitch {
+                run: run.path.display().to_string(),
+                t: run.t[i - 1],
+                channel: RunChannel::T,
+                kind: GlitchKind::TimeGap,
+                value: run.t[i] - run.t[i - 1],
+                samples: 0,
+                treatment: Treatment::Split,
+            });
+        }
+    }
+    bounds.push(run.t.len());
+    bounds.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
+fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
+    let n = run.t.len();
+    n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
+}
+
+fn piece_of(run: &MeasuredRun, reason: &str) -> Piece {
+    Piece {
+        name: run.path.display().to_string(),
+        t_start: run.t[0],
+        t_end: run.t[run.t.len() - 1],
+        samples: run.t.len(),
+        reason: reason.into(),
+    }
+}
+
+/// Cleans one run as read: splits it at time gaps, treats its glitches,
+/// excludes samples below `settings.min_speed` and returns the moving pieces
+/// long enough to replay (pieces are named `file#k` when the run was split).
+/// Everything is added to `report`.
+pub fn clean_run(
+    run: MeasuredRun,
+    settings: &CleanSettings,
+    report: &mut CleaningReport,
+) -> Vec<MeasuredRun> {
+    report.samples_read += run.t.len();
+    let parts = split_times(&run, report);
+    let mut moving: Vec<MeasuredRun> = Vec::new();
+    let name = run.path.display().to_string();
+    for (lo, hi) in parts {
+        let mut part = slice(&run, lo, hi, "");
+        treat_glitches(&mut part, settings.min_speed, report);
+        let n = part.t.len();
+        let mut i = 0;
+        while i < n {
+            let slow = part.speed[i] < settings.min_speed;
+            let mut j = i;
+            while j < n && (part.speed[j] < settings.min_speed) == slow {
+                j += 1;
+            }
+            if slow {
+                let max_speed = part.speed[i..j].iter().copied().fold(f64::MIN, f64::max);
+                let min_speed = part.speed[i..j].iter().copied().fold(f64::MAX, f64::min);
+                report.samples_slow += j - i;
+                report.slow.push(SlowSpan {
+                    run: name.clone(),
+                    t_start: part.t[i],
+                    t_end: part.t[j - 1],
+                    samples: j - i,
+                    max_speed,
+                    kind: if min_speed < STANDSTILL_SPEED {
+                        SlowKind::Standstill
+                    } else {
+                        SlowKind::Crawl
+                    },
+                });
+            } else {
+                moving.push(slice(&part, i, j, ""));
+            }
+            i = j;
+        }
+    }
+    let whole = moving.len() == 1 && moving[0].t.len() == run.t.len();
+    let mut out = Vec::new();
+    for (k, mut piece) in moving.into_iter().enumerate() {
+        if !whole {
+            piece.path = PathBuf::from(format!("{name}#{}", k + 1));
+        }
+        if long_enough(&piece, settings) {
+            report.samples_kept += piece.t.len();
+            report.samples_masked += piece.masked.len();
+            report.pieces.push(piece_of(&piece, ""));
+            out.push(piece);
+        } else {
+            report.samples_in_dropped_pieces += piece.t.len();
+            report.dropped_pieces.push(piece_of(&piece, "too short"));
+        }
+    }
+    out
+}
+
+/// Cleans a set of runs (in memory, e.g. a synthetic campaign whose runs
+/// were corrupted): the kept pieces of all and one report.
+pub fn clean_runs(
+    runs: Vec<MeasuredRun>,
+    settings: &CleanSettings,
+) -> (Vec<MeasuredRun>, CleaningReport) {
+    let mut report = CleaningReport::new(settings.min_speed);
+    let mut out = Vec::new();
+    for r in runs {
+        out.extend(clean_run(r, settings, &mut report));
+    }
+    (out, report)
+}
+
+/// Cleans a run for a single replay: the longest moving piece (the other
+/// pieces are listed as dropped). `None` when no piece is long enough.
+pub fn clean_single(
+    run: MeasuredRun,
+    settings: &CleanSettings,
+    report: &mut CleaningReport,
+) -> Option<MeasuredRun> {
+    clean_single_with(run, settings, report, |_| Ok(())).map(|(p, ())| p)
+}
+
+/// Cleans a run for a single use: of its moving pieces, longest first, the
+/// first that `fits` accepts is kept with what `fits` made of it; every
+/// other piece is listed as dropped with its reason (what `fits` said, or
+/// that another piece was used). `None` when no piece is accepted.
+pub fn clean_single_with<T>(
+    run: MeasuredRun,
+    settings: &CleanSettings,
+    report: &mut CleaningReport,
+    mut fits: impl FnMut(&MeasuredRun) -> Result<T, String>,
+) -> Option<(MeasuredRun, T)> {
+    let first = report.pieces.len();
+    let pieces = clean_run(run, settings, report);
+    report.pieces.truncate(first);
+    let mut order: Vec<usize> = (0..pieces.len()).collect();
+    order.sort_by_key(|&k| std::cmp::Reverse(pieces[k].t.len()));
+    let mut reasons = vec![String::new(); pieces.len()];
+    let mut chosen = None;
+    for &k in &order {
+        match fits(&pieces[k]) {
+            Ok(v) => {
+                chosen = Some((k, v));
+                break;
+            }
+            Err(e) => reasons[k] = e,
+        }
+    }
+    for (k, p) in pieces.iter().enumerate() {
+        if chosen.as_ref().is_some_and(|c| c.0 == k) {
+            report.pieces.push(piece_of(p, ""));
+            continue;
+        }
+        let reason = if reasons[k].is_empty() {
+            "another piece was used".to_string()
+        } else {
+            reasons[k].clone()
+        };
+        report.samples_kept -= p.t.len();
+        report.samples_masked -= p.masked.len();
+        report.samples_in_dropped_pieces += p.t.len();
+        report.dropped_pieces.push(piece_of(p, &reason));
+    }
+    let (k, v) = chosen?;
+    pieces.into_iter().nth(k).map(|p| (p, v))
+}
+
+/// Cleans a run read from `path` for tools that read every sample (the
+/// step-steer metrics): the longest moving piece with its masked responses
+/// filled ([`fill_masked`]); an error naming the file when nothing moves
+/// fast and long enough.
+pub fn clean_for_metrics(
+    run: MeasuredRun,
+    min_speed: f64,
+) -> Result<(MeasuredRun, CleaningReport), crate::error::InputError> {
+    let path = run.path.clone();
+    let mut report = CleaningReport::new(min_speed);
+    let piece = clean_single(run, &CleanSettings::single(min_speed), &mut report).ok_or_else(|| {
+        crate::error::InputError::File {
+            path,
+            message: format!(
+                "no two successive samples at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
+                report.samples_slow, report.samples_read
+            ),
+        }
+    })?;
+    Ok((fill_masked(&piece), report))
+}
+
+/// The run with its masked response samples interpolated across (for tools
+/// that need every sample) and the mask cleared.
+pub fn fill_masked(run: &MeasuredRun) -> MeasuredRun {
+    let mut out = run.clone();
+    let mut bad = vec![false; run.t.len()];
+    for &i in &run.masked {
+        bad[i] = true;
+    }
+    let t = run.t.clone();
+    for ch in [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta] {
+        if let Some(x) = ch.of_mut(&mut out) {
+            repair(&t, x, &bad);
+        }
+    }
+    out.masked.clear();
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_signals::run;
+    use super::*;
+
+    #[test]
+    fn a_standstill_splits_the_run_and_inputs_are_repaired_responses_masked() {
+        // Driving to 20 s, a 10 s standstill, 0.5 s driving (too short), a
+        // 1 s crawl, driving; a 1 s time gap at 40 s, driving to 53 s.
+        let mut r = run(5200, 0.01, |x| {
+            if (20.0..30.0).contains(&x) {
+                0.0
+            } else if (30.5..31.5).contains(&x) {
+                2.0
+            } else {
+                20.0
+            }
+        });
+        r.t.iter_mut().skip(4000).for_each(|t| *t += 1.0);
+        let mid = 0.5 * (r.steer[499] + r.steer[501]);
+        r.steer[500] = 0.0;
+        r.yaw_rate[4500] += 0.5;
+        let mut rep = CleaningReport::new(5.0);
+        let pieces = clean_run(r, &CleanSettings::diagnosis(5.0), &mut rep);
+        assert_eq!(pieces.len(), 3, "{:?}", rep.pieces);
+        assert_eq!(rep.dropped_pieces.len(), 1, "{:?}", rep.dropped_pieces);
+        assert_eq!(rep.slow.len(), 2);
+        assert_eq!(rep.slow[0].kind, SlowKind::Standstill);
+        assert_eq!(rep.slow[0].samples, 1000);
+        assert_eq!(rep.slow[1].kind, SlowKind::Crawl);
+        assert_eq!(rep.counts.time_gap, 1);
+        assert_eq!(rep.counts.zero_read, 1);
+        assert_eq!(rep.counts.spike, 1);
+        assert_eq!(
+            rep.samples_read,
+            rep.samples_kept + rep.samples_slow + rep.samples_in_dropped_pieces
+        );
+        // The zeroed steer is interpolated, the spiked yaw rate masked.
+        assert!((pieces[0].steer[500] - mid).abs() < 1e-12);
+        let last = &pieces[2];
+        assert_eq!(last.masked.len(), 1);
+        assert!((last.t[last.masked[0]] - 46.0).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,317 @@
+//! What the cleaning of measured runs reports: the channels, the kinds of
+//! glitch and what was done about each, the slow spans and the pieces kept
+//! or dropped, with their counts and a terminal summary (every item also in
+//! the JSON report). Times in s, speeds in m/s, values in the channel's SI
+//! unit.
+
+use crate::measured::MeasuredRun;
+use serde::Serialize;
+
+/// A channel of a measured run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RunChannel {
+    /// Time.
+    T,
+    /// Forward speed.
+    Speed,
+    /// Front road-wheel steer.
+    Steer,
+    /// Yaw rate.
+    YawRate,
+    /// Lateral acceleration.
+    Ay,
+    /// Sideslip.
+    Beta,
+}
+
+impl RunChannel {
+    /// Column name.
+    pub fn name(self) -> &'static str {
+        match self {
+            RunChannel::T => "t",
+            RunChannel::Speed => "speed",
+            RunChannel::Steer => "steer",
+            RunChannel::YawRate => "yaw_rate",
+            RunChannel::Ay => "ay",
+            RunChannel::Beta => "beta",
+        }
+    }
+    /// Does it drive the replay (repaired) rather than answer it (masked).
+    pub fn is_input(self) -> bool {
+        matches!(self, RunChannel::Speed | RunChannel::Steer)
+    }
+    pub(super) fn of(self, run: &MeasuredRun) -> Option<&Vec<f64>> {
+        match self {
+            RunChannel::T => Some(&run.t),
+            RunChannel::Speed => Some(&run.speed),
+            RunChannel::Steer => Some(&run.steer),
+            RunChannel::YawRate => Some(&run.yaw_rate),
+            RunChannel::Ay => run.ay.as_ref(),
+            RunChannel::Beta => run.beta.as_ref(),
+        }
+    }
+    pub(super) fn of_mut(self, run: &mut MeasuredRun) -> Option<&mut Vec<f64>> {
+        match self {
+            RunChannel::T => Some(&mut run.t),
+            RunChannel::Speed => Some(&mut run.speed),
+            RunChannel::Steer => Some(&mut run.steer),
+            RunChannel::YawRate => Some(&mut run.yaw_rate),
+            RunChannel::Ay => run.ay.as_mut(),
+            RunChannel::Beta => run.beta.as_mut(),
+        }
+    }
+}
+
+/// Kinds of logger glitch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GlitchKind {
+    /// Samples read as exactly 0 amid values far from 0.
+    ZeroRead,
+    /// One sample far off the line through its neighbours.
+    Spike,
+    /// A value held exactly while the channel otherwise moves.
+    Stuck,
+    /// Time between samples longer than five median intervals.
+    TimeGap,
+}
+
+impl GlitchKind {
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            GlitchKind::ZeroRead => "zero_read",
+            GlitchKind::Spike => "spike",
+            GlitchKind::Stuck => "stuck",
+            GlitchKind::TimeGap => "time_gap",
+        }
+    }
+}
+
+impl Treatment {
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Treatment::Repaired => "repaired",
+            Treatment::Masked => "masked",
+            Treatment::Split => "split",
+        }
+    }
+}
+
+impl SlowKind {
+    /// Name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            SlowKind::Standstill => "standstill",
+            SlowKind::Crawl => "crawl",
+        }
+    }
+}
+
+/// A value for the terminal: six significant digits, no float noise.
+fn short(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let scale = 10f64.powi(5 - v.abs().log10().floor() as i32);
+    format!("{}", (v * scale).round() / scale)
+}
+
+/// What was done about a glitch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Treatment {
+    /// An input interpolated across it.
+    Repaired,
+    /// A response sample left out of fits and scores.
+    Masked,
+    /// The run split there.
+    Split,
+}
+
+/// One glitch.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Glitch {
+    /// The run (file) it is in.
+    pub run: String,
+    /// Time of its first sample, s (for a time gap: the last sample before).
+    pub t: f64,
+    /// The channel.
+    pub channel: RunChannel,
+    /// What it is.
+    pub kind: GlitchKind,
+    /// The value read (for a time gap: its length, s).
+    pub value: f64,
+    /// Samples it covers (0 for a time gap).
+    pub samples: usize,
+    /// What was done.
+    pub treatment: Treatment,
+}
+
+/// Why a slow span was excluded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SlowKind {
+    /// The car stopped in it (below 0.5 m/s at some sample).
+    Standstill,
+    /// The car crawled below the minimum speed without stopping.
+    Crawl,
+}
+
+/// A span of samples below the minimum speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SlowSpan {
+    /// The run.
+    pub run: String,
+    /// First excluded sample, s.
+    pub t_start: f64,
+    /// Last excluded sample, s.
+    pub t_end: f64,
+    /// Samples excluded.
+    pub samples: usize,
+    /// Highest speed in the span, m/s.
+    pub max_speed: f64,
+    /// Standstill or crawl.
+    pub kind: SlowKind,
+}
+
+/// A piece of a run (kept or dropped).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Piece {
+    /// Its name (the file and a piece label).
+    pub name: String,
+    /// First sample, s.
+    pub t_start: f64,
+    /// Last sample, s.
+    pub t_end: f64,
+    /// Samples.
+    pub samples: usize,
+    /// Why a dropped piece was dropped (empty for a kept one).
+    pub reason: String,
+}
+
+/// Glitches per kind.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct GlitchCounts {
+    /// Zero reads.
+    pub zero_read: usize,
+    /// Isolated spikes.
+    pub spike: usize,
+    /// Stuck values.
+    pub stuck: usize,
+    /// Time gaps.
+    pub time_gap: usize,
+}
+
+/// Everything found in and done to the runs before replay.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct CleaningReport {
+    /// Lowest speed replayed, m/s.
+    pub min_speed: f64,
+    /// Samples read.
+    pub samples_read: usize,
+    /// Samples replayed (in kept pieces).
+    pub samples_kept: usize,
+    /// Samples excluded for low speed.
+    pub samples_slow: usize,
+    /// Samples in pieces too short to keep.
+    pub samples_in_dropped_pieces: usize,
+    /// Response samples masked from fits and scores (in kept pieces).
+    pub samples_masked: usize,
+    /// Input samples repaired by interpolation.
+    pub samples_repaired: usize,
+    /// Glitches per kind.
+    pub counts: GlitchCounts,
+    /// Every glitch, in run and time order.
+    pub glitches: Vec<Glitch>,
+    /// Spans excluded for low speed.
+    pub slow: Vec<SlowSpan>,
+    /// Pieces replayed.
+    pub pieces: Vec<Piece>,
+    /// Pieces dropped as too short.
+    pub dropped_pieces: Vec<Piece>,
+}
+
+impl CleaningReport {
+    /// An empty report for runs cleaned at `min_speed`.
+    pub fn new(min_speed: f64) -> Self {
+        Self {
+            min_speed,
+            ..Self::default()
+        }
+    }
+
+    pub(super) fn push_glitch(&mut self, g: Glitch) {
+        match g.kind {
+            GlitchKind::ZeroRead => self.counts.zero_read += 1,
+            GlitchKind::Spike => self.counts.spike += 1,
+            GlitchKind::Stuck => self.counts.stuck += 1,
+            GlitchKind::TimeGap => self.counts.time_gap += 1,
+        }
+        self.glitches.push(g);
+    }
+
+    /// The report in a few lines for the terminal: counts per kind, the
+    /// first few glitches, the slow spans and the pieces.
+    pub fn summary(&self, first: usize) -> Vec<String> {
+        let c = &self.counts;
+        let mut out = vec![format!(
+            "{} samples read, {} kept; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
+            self.samples_read,
+            self.samples_kept,
+            self.samples_slow,
+            self.min_speed,
+            self.slow.iter().filter(|s| s.kind == SlowKind::Standstill).count(),
+            self.slow.iter().filter(|s| s.kind == SlowKind::Crawl).count(),
+            self.samples_in_dropped_pieces,
+            self.dropped_pieces.len(),
+            c.zero_read,
+            c.spike,
+            c.stuck,
+            c.time_gap,
+            self.samples_repaired,
+            self.samples_masked,
+        )];
+        for g in self.glitches.iter().take(first) {
+            out.push(format!(
+                "{} at {:.3} s in {}: {} {} ({} sample(s), {})",
+                g.kind.name(),
+                g.t,
+                g.run,
+                g.channel.name(),
+                short(g.value),
+                g.samples,
+                g.treatment.name()
+            ));
+        }
+        if self.glitches.len() > first {
+            out.push(format!(
+                "… and {} more glitches (every one in the JSON report)",
+                self.glitches.len() - first
+            ));
+        }
+        for s in self.slow.iter().take(first) {
+            out.push(format!(
+                "{} {:.2}–{:.2} s in {} ({} samples, up to {:.2} m/s) excluded",
+                s.kind.name(),
+                s.t_start,
+                s.t_end,
+                s.run,
+                s.samples,
+                s.max_speed
+            ));
+        }
+        if self.slow.len() > first {
+            out.push(format!("… and {} more slow spans", self.slow.len() - first));
+        }
+        for p in self.dropped_pieces.iter().take(first) {
+            out.push(format!(
+                "piece {} ({:.2}–{:.2} s, {} samples) dropped: {}",
+                p.name, p.t_start, p.t_end, p.samples, p.reason
+            ));
+        }
+        out
+    }
+}

@@ -1,0 +1,39 @@
+//! Test signals shared by the cleaning tests: seeded Gaussian noise and a
+//! synthetic run (a slow steer sine and its noisy yaw rate, SI units).
+
+use crate::measured::MeasuredRun;
+use rand::SeedableRng;
+use std::path::PathBuf;
+
+pub(super) fn gauss_noise(n: usize, sigma: f64, seed: u64) -> Vec<f64> {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    (0..n)
+        .map(|_| sigma * crate::identify::data::gauss(&mut rng))
+        .collect()
+}
+
+pub(super) fn no_slow(n: usize) -> Vec<bool> {
+    vec![false; n]
+}
+
+pub(super) fn run(n: usize, dt: f64, speed: impl Fn(f64) -> f64) -> MeasuredRun {
+    let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
+    let noise = gauss_noise(n, 0.002, 11);
+    MeasuredRun {
+        path: PathBuf::from("r.csv"),
+        speed: t.iter().map(|&x| speed(x)).collect(),
+        steer: t.iter().map(|&x| 0.02 * (0.5 * x).sin()).collect(),
+        yaw_rate: t
+            .iter()
+            .zip(&noise)
+            .map(|(&x, e)| 0.2 * (0.5 * x).sin() + e)
+            .collect(),
+        ay: None,
+        beta: None,
+        roll: None,
+        bank: None,
+        ax: None,
+        masked: Vec::new(),
+        t,
+    }
+}

@@ -450,8 +450,9 @@ fn identify_mf(o: &Options, version: MfVersion) -> Result<()> {
     if let Some(s) = id.report.sigma_fy_mz_percent {
         println!("  Fy and Mz together: σ {s:.3} %");
     }
-    let text = mf_staged::tir_text(&id.tyre, template.as_ref())?;
-    let back = mf_staged::round_trip_difference(&id.tyre, &text, &prepared.rows)?;
+    let text = handling::io::tir::tir_text(&id.tyre, template.as_ref())?;
+    let read_back = handling::io::tir::read_tir_text("<written .tir>", &text)?;
+    let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
         return Err(anyhow!(
             "the written .tir does not reproduce the fitted forces (relative difference {back:.2e})"

@@ -425,6 +425,21 @@ fn parse_entry(
     })
 }
 
+/// The `.tir` text of an identified tyre: the template's file with the
+/// values replaced (its comments and other keys kept), or a fresh file.
+pub fn tir_text(tyre: &MagicFormula, template: Option<&TirDocument>) -> Result<String, InputError> {
+    match template {
+        Some(doc) => doc.write(tyre),
+        None => Ok(write_new(tyre)),
+    }
+}
+
+/// Reads a `.tir` text back into the tyre it describes (`name` labels
+/// errors).
+pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError> {
+    TirDocument::parse(Path::new(name), text)?.magic_formula()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

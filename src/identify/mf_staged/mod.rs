@@ -78,7 +78,6 @@ pub use params::Stage;
 use super::data::{RigData, RigError};
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::error::InputError;
-use crate::io::tir::{write_new, TirDocument};
 use crate::tyre::mf::{MagicFormula, MfInput, MfVersion};
 use params::EVEN;
 use serde::Serialize;
@@ -454,24 +453,10 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
     })
 }
 
-/// The `.tir` text of an identified tyre: the template's file with the
-/// values replaced (its comments and other keys kept), or a fresh file.
-pub fn tir_text(tyre: &MagicFormula, template: Option<&TirDocument>) -> Result<String, InputError> {
-    match template {
-        Some(doc) => doc.write(tyre),
-        None => Ok(write_new(tyre)),
-    }
-}
-
-/// Reads `text` back as a `.tir` and returns the largest difference of
-/// `fx`, `fy`, `mz` between it and `tyre` over `rows`, relative to the
+/// The largest difference of `fx`, `fy`, `mz` between `tyre` and `back`
+/// (the tyre read back from its written `.tir`) over `rows`, relative to the
 /// largest magnitude of each channel (0 when the file reproduces the tyre).
-pub fn round_trip_difference(
-    tyre: &MagicFormula,
-    text: &str,
-    rows: &[MfRow],
-) -> Result<f64, InputError> {
-    let back = TirDocument::parse(Path::new("<written .tir>"), text)?.magic_formula()?;
+pub fn round_trip_difference(tyre: &MagicFormula, back: &MagicFormula, rows: &[MfRow]) -> f64 {
     let mut worst: f64 = 0.0;
     let mut scale = [1e-9f64; 3];
     let mut diff = [0.0f64; 3];
@@ -488,5 +473,5 @@ pub fn round_trip_difference(
     for k in 0..3 {
         worst = worst.max(diff[k] / scale[k]);
     }
-    Ok(worst)
+    worst
 }

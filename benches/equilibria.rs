@@ -12,7 +12,7 @@ use handling::vehicle::{Kinematics, ModelOptions, Vehicle, VehicleModel};
 
 fn models() -> Vec<(&'static str, VehicleModel)> {
     let mut ms = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
         Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
     );
@@ -22,7 +22,7 @@ fn models() -> Vec<(&'static str, VehicleModel)> {
         ..ModelOptions::default()
     };
     let pac = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::Pac89(Pac89::adams_example()),
         Tyre::Pac89(Pac89::adams_example()),
     );

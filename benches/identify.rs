@@ -3,14 +3,14 @@
 //! core), and the cost of one objective evaluation.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use handling::identify::data::seed000_conditions;
+use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitProblem, FitSettings};
 use handling::optim::local::Residuals;
 use handling::tyre::{Pac89, Parameterised, Tyre};
 
 fn pac89_fit(c: &mut Criterion) {
     let truth = Tyre::Pac89(Pac89::adams_example());
-    let (data, _) = seed000_conditions(&truth, 0.01, 1);
+    let (data, _) = identification_conditions(&truth, 0.01, 1);
     let mut start = Pac89::adams_example();
     start
         .a

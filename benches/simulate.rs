@@ -16,7 +16,7 @@ use handling::vehicle::{State, Vehicle, VehicleModel};
 
 fn step_steer(c: &mut Criterion) {
     let model = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::Pac89(Pac89::adams_example()),
         Tyre::Pac89(Pac89::adams_example()),
     );
@@ -94,7 +94,7 @@ fn study_combination(c: &mut Criterion) {
     use handling::study::Study;
     let st = Study {
         model: VehicleModel::new(
-            Vehicle::seed004_sedan(),
+            Vehicle::compact_sedan(),
             Tyre::Gim(Gim::new(28_648.0, 0.16, 1.0)),
             Tyre::Gim(Gim::new(30_940.0, 0.16, 1.0)),
         ),

@@ -6,7 +6,7 @@
 //!   tolerances; its yaw rate every 10 ms goes to `peer/out/step_crate.csv`
 //!   so the script checks it against its own tight reference;
 //! - the three steering-equilibrium sweeps of Li, Jia & Zhao (steer,
-//!   friction, speed; `scenarios/seed003_*.toml`, without the bifurcation
+//!   friction, speed; `scenarios/equilibria_*.toml`, without the bifurcation
 //!   search), equilibria per condition;
 //! - a PAC89 lateral fit (PSO + Levenberg–Marquardt) of 3 loads × 85 slip
 //!   angles with 1 % noise, from the Adams example scaled by 1.1; the data
@@ -15,7 +15,7 @@
 //! Run: `cargo run --release --example peer_jobs -- [repeats]`.
 
 use handling::equilibria::sweep;
-use handling::identify::data::seed000_conditions;
+use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitSettings};
 use handling::io::sweep::load_sweep;
 use handling::manoeuvre::{Manoeuvre, StepSteer};
@@ -48,7 +48,7 @@ fn main() {
 
     // Step steer.
     let mut model = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::Pac89(Pac89::adams_example()),
         Tyre::Pac89(Pac89::adams_example()),
     );
@@ -86,7 +86,7 @@ fn main() {
     // Equilibrium sweeps.
     let mut sweeps = Vec::new();
     for name in ["steer", "friction", "speed"] {
-        let s = load_sweep(&root.join(format!("scenarios/seed003_{name}.toml"))).expect("sweep");
+        let s = load_sweep(&root.join(format!("scenarios/equilibria_{name}.toml"))).expect("sweep");
         let run = || {
             sweep::run(
                 &s.model,
@@ -113,7 +113,7 @@ fn main() {
 
     // PAC89 fit.
     let truth = Tyre::Pac89(Pac89::adams_example());
-    let (data, noise_sigma) = seed000_conditions(&truth, 0.01, 1);
+    let (data, noise_sigma) = identification_conditions(&truth, 0.01, 1);
     let mut start = Pac89::adams_example();
     start
         .a

@@ -293,7 +293,7 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
 /// the effects asked for.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
-    let vehicle = Vehicle::seed004_sedan();
+    let vehicle = Vehicle::compact_sedan();
     let tyre = truth_tyre();
     let base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
     let mut augmented = Augmented::new(base.clone(), 1.0);

@@ -1,11 +1,11 @@
-//! Seed 003's PSO search for steering equilibria, made complete.
+//! Li, Jia & Zhao's PSO search for steering equilibria, made complete.
 //!
 //! Fitness over the box of (β, r), positions wrapped back by whole widths and
 //! velocities clamped (Li, Jia & Zhao). Two fitness functions:
 //! - `residual`: Li, Jia & Zhao's `f1² + f2²` of the scaled right-hand side;
 //! - `newton-step` (default): the length of the Newton step `‖J⁻¹·f‖`
 //!   (scaled, forward-difference Jacobian), which near any simple root equals
-//!   the distance to it. Seed 003's fitness is tiny over the wide regions
+//!   the distance to it. Li, Jia & Zhao's fitness is tiny over the wide regions
 //!   where both axles saturate and steep around the straight-running
 //!   equilibrium, so a swarm settles on the saddles and misses the stable node
 //!   (measured in the tests); the Newton step makes every basin look alike.
@@ -31,7 +31,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Fitness {
-    /// Seed 003: f1² + f2².
+    /// Li, Jia & Zhao: f1² + f2².
     Residual,
     /// Length of the Newton step.
     NewtonStep,

@@ -3,9 +3,9 @@ use crate::tyre::{MagicSimple, Tyre};
 use crate::vehicle::{Kinematics, ModelOptions, Vehicle};
 use approx::assert_relative_eq;
 
-pub(crate) fn seed003_model(load_transfer: bool) -> VehicleModel {
+pub(crate) fn equilibria_model(load_transfer: bool) -> VehicleModel {
     let mut m = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
         Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
     );
@@ -32,7 +32,7 @@ const BOX: SearchBox = SearchBox {
 
 fn steer_grid(lt: bool) -> (VehicleModel, sweep::Grid) {
     (
-        seed003_model(lt),
+        equilibria_model(lt),
         sweep::Grid {
             steer: (0..=10).map(|i| 0.02 * i as f64).collect(),
             friction: vec![0.8],
@@ -79,7 +79,7 @@ fn linear_tyres_give_the_closed_form_steady_state() {
 #[test]
 fn mirrored_steer_mirrors_the_equilibria() {
     for lt in [false, true] {
-        let mut m = seed003_model(lt);
+        let mut m = equilibria_model(lt);
         m.options.kinematics = Kinematics::Exact;
         for d in [0.01, 0.05, 0.13] {
             let p = exact::solve(&m, &cond(d, 0.8, 70.0));
@@ -103,7 +103,7 @@ fn mirrored_steer_mirrors_the_equilibria() {
 }
 
 #[test]
-fn pso_and_exact_agree_on_seed003_sweeps() {
+fn pso_and_exact_agree_on_the_equilibria_sweeps() {
     for lt in [false, true] {
         let (m, g) = steer_grid(lt);
         let r = run(&m, &g, &pso::PsoSearch::default());
@@ -130,13 +130,13 @@ fn pso_and_exact_agree_on_seed003_sweeps() {
         speed: (3..=12).map(|i| 10.0 * i as f64 / 3.6).collect(),
     };
     for g in [friction, speed] {
-        let r = run(&seed003_model(false), &g, &pso::PsoSearch::default());
+        let r = run(&equilibria_model(false), &g, &pso::PsoSearch::default());
         assert_eq!(r.agreeing(), r.points.len());
     }
 }
 
 #[test]
-fn seed003_fitness_misses_the_stable_node_the_newton_step_finds() {
+fn li_jia_zhao_fitness_misses_the_stable_node_the_newton_step_finds() {
     let (m, g) = steer_grid(false);
     let raw = pso::PsoSearch {
         fitness: pso::Fitness::Residual,
@@ -173,7 +173,7 @@ fn seed003_fitness_misses_the_stable_node_the_newton_step_finds() {
 
 #[test]
 fn winding_number_equals_the_index_sum() {
-    let m = seed003_model(false);
+    let m = equilibria_model(false);
     for d in [0.0, 0.03, 0.1] {
         let c = cond(d, 0.8, 70.0);
         let w = pso::winding_number(&m, &c, &BOX).unwrap();
@@ -244,7 +244,7 @@ fn approaching_equilibria_without_a_count_change_are_not_a_fold() {
         friction: vec![0.8],
         speed: (3..=6).map(|i| 10.0 * i as f64 / 3.6).collect(),
     };
-    let r = run(&seed003_model(false), &g, &pso::PsoSearch::default());
+    let r = run(&equilibria_model(false), &g, &pso::PsoSearch::default());
     let counts: Vec<usize> = r.points.iter().map(|p| p.exact.len()).collect();
     assert!(counts.windows(2).all(|w| w[0] == w[1]), "{counts:?}");
     assert!(r.bifurcations.is_empty(), "{:?}", r.bifurcations);
@@ -264,7 +264,7 @@ fn sweeps_are_deterministic_for_a_seed() {
 
 #[test]
 fn classic_brush_tyres_give_a_continuum_when_both_axles_slide() {
-    let mut m = seed003_model(false);
+    let mut m = equilibria_model(false);
     m.front = Tyre::Gim(crate::tyre::Gim::new(57_000.0, 0.18, 1.0));
     m.rear = m.front.clone();
     let c = cond(0.05, 0.8, 70.0);
@@ -304,7 +304,7 @@ fn equilibrium_residual_jacobian_matches_differences_of_the_residual() {
     let mut checked = 0;
     for (tyre, load_transfer) in [(pac, true), (gim, false)] {
         for kinematics in [Kinematics::Exact, Kinematics::SmallAngle] {
-            let mut m = VehicleModel::new(Vehicle::seed004_sedan(), tyre.clone(), tyre.clone());
+            let mut m = VehicleModel::new(Vehicle::compact_sedan(), tyre.clone(), tyre.clone());
             m.options = ModelOptions {
                 kinematics,
                 load_transfer,

@@ -232,7 +232,7 @@ pub enum RigError {
 /// (seeded) on the lateral force and the aligning moment. Returns the
 /// conditions and the lateral-force noise's own σ (%), the floor a fit
 /// cannot beat on average.
-pub fn seed000_conditions(truth: &Tyre, noise: f64, seed: u64) -> (Vec<Condition>, f64) {
+pub fn identification_conditions(truth: &Tyre, noise: f64, seed: u64) -> (Vec<Condition>, f64) {
     use crate::tyre::TyreModel;
     use rand::SeedableRng;
     // Separate streams for Fy and Mz noise, so adding one channel does not

@@ -107,7 +107,7 @@ impl Channel {
 pub enum LocalMethod {
     /// Levenberg–Marquardt (crate).
     LevenbergMarquardt,
-    /// Seed 000's modified Gauss–Newton.
+    /// Zhang & Li's (2017) modified Gauss–Newton.
     GaussNewton,
     /// PSO only.
     None,
@@ -123,7 +123,7 @@ pub struct FitSettings {
 }
 
 impl FitSettings {
-    /// Seed 001's improved PSO (adaptive inertia, natural selection) sized for
+    /// Zhang et al.'s (2021) improved PSO (adaptive inertia, natural selection) sized for
     /// tyre fits, then Levenberg–Marquardt.
     pub fn new(seed: u64) -> Self {
         Self {

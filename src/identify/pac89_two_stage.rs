@@ -334,7 +334,7 @@ mod tests {
             },
             ..Pac89::adams_example()
         });
-        let (data, noise) = super::super::data::seed000_conditions(&truth, 0.01, 3);
+        let (data, noise) = super::super::data::identification_conditions(&truth, 0.01, 3);
         let r = identify(&data, &FitSettings::new(1)).unwrap();
         // Stage 1 fits each curve to the noise; stage 2 is an exact model
         // of the stage-1 laws, so it stays near the noise too.
@@ -379,9 +379,9 @@ mod seed_style {
     /// stage 1 stays below 1 % and stage 2, which imposes PAC89's load laws
     /// on the curves, stays below 1.8 % and above stage 1.
     #[test]
-    fn two_stage_residuals_on_a_unitire_tyre_are_in_seed001s_range() {
+    fn two_stage_residuals_on_a_unitire_tyre_are_in_zhang_et_al_range() {
         let truth: Tyre = toml::from_str(include_str!("../../tyres/unitire.toml")).unwrap();
-        let (data, _) = crate::identify::data::seed000_conditions(&truth, 0.01, 4);
+        let (data, _) = crate::identify::data::identification_conditions(&truth, 0.01, 4);
         let r = identify(&data, &FitSettings::new(1)).unwrap();
         assert!(r.stage1_mean_sigma < 1.0, "stage 1 {}", r.stage1_mean_sigma);
         assert!(r.stage2_mean_sigma < 1.8, "stage 2 {}", r.stage2_mean_sigma);

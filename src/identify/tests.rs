@@ -2,8 +2,8 @@ use super::data::{Condition, RigPoint};
 use super::*;
 use crate::tyre::{Gim, MagicSimple, Pac89, UniTire};
 
-pub(crate) fn seed000_data(truth: &Tyre, noise_seed: u64) -> (Vec<Condition>, f64) {
-    super::data::seed000_conditions(truth, 0.01, noise_seed)
+pub(crate) fn identification_data(truth: &Tyre, noise_seed: u64) -> (Vec<Condition>, f64) {
+    super::data::identification_conditions(truth, 0.01, noise_seed)
 }
 
 fn cases() -> Vec<(Tyre, Tyre)> {
@@ -57,10 +57,10 @@ fn cases() -> Vec<(Tyre, Tyre)> {
 }
 
 #[test]
-fn recovers_known_parameters_of_every_model_from_noisy_seed000_data() {
+fn recovers_known_parameters_of_every_model_from_noisy_identification_data() {
     for (truth, start) in cases() {
         for seed in [1, 2] {
-            let (data, noise) = seed000_data(&truth, 100 + seed);
+            let (data, noise) = identification_data(&truth, 100 + seed);
             let fit = fit_lateral(&start, &data, &FitSettings::new(seed)).unwrap();
             assert!(
                 fit.sigma_percent <= noise,
@@ -103,7 +103,7 @@ fn recovers_known_parameters_of_every_model_from_noisy_seed000_data() {
 #[test]
 fn same_seed_same_fit() {
     let (truth, start) = cases().swap_remove(1);
-    let (data, _) = seed000_data(&truth, 7);
+    let (data, _) = identification_data(&truth, 7);
     let a = fit_lateral(&start, &data, &FitSettings::new(5)).unwrap();
     let b = fit_lateral(&start, &data, &FitSettings::new(5)).unwrap();
     assert_eq!(a.tyre, b.tyre);
@@ -113,7 +113,7 @@ fn same_seed_same_fit() {
 #[test]
 fn a_single_load_is_refused_for_load_dependent_models() {
     let (truth, start) = cases().swap_remove(3);
-    let (mut data, _) = seed000_data(&truth, 1);
+    let (mut data, _) = identification_data(&truth, 1);
     data.truncate(1);
     let e = fit_lateral(&start, &data, &FitSettings::new(1)).unwrap_err();
     assert!(e.contains("at least 3 loads"), "{e}");
@@ -133,7 +133,7 @@ fn recovers_aligning_moment_parameters_with_the_lateral_ones_held() {
             }),
             t => t,
         };
-        let (data, _) = seed000_data(&truth, 11);
+        let (data, _) = identification_data(&truth, 11);
         // Noise floor of the aligning moment: the noisy data against the truth.
         let pts: Vec<_> = data.iter().flat_map(|c| c.points.iter().copied()).collect();
         let floor = sigma_of(Channel::AligningMoment, &truth, &pts).0;
@@ -247,9 +247,9 @@ fn recovers_longitudinal_parameters() {
 /// 1 % noise), and a UniTire is identified by PSO alone and by PSO + the
 /// modified Gauss–Newton: every curve below 5.5 % and 3.5 %.
 #[test]
-fn seed000_claim_pso_below_5_5_and_hybrid_below_3_5_percent_per_curve() {
+fn zhang_li_claim_pso_below_5_5_and_hybrid_below_3_5_percent_per_curve() {
     let truth = Tyre::Pac89(Pac89::adams_example());
-    let (data, _) = seed000_data(&truth, 5);
+    let (data, _) = identification_data(&truth, 5);
     let (_, start) = cases().swap_remove(2);
     let mut pso_only = FitSettings::new(3);
     pso_only.local = LocalMethod::None;

@@ -68,7 +68,7 @@ pub struct StiffnessSpec {
     pub rear: Axis,
 }
 
-/// Seed 004's RBF study: pairs rear = front + offset.
+/// Wang & Liang's RBF study: pairs rear = front + offset.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RbfSpec {
@@ -149,7 +149,7 @@ pub struct StudyFile {
     /// The map grid.
     #[serde(default)]
     pub stiffness: Option<StiffnessSpec>,
-    /// Seed 004's RBF pairs.
+    /// Wang & Liang's RBF pairs.
     #[serde(default)]
     pub rbf: Option<RbfSpec>,
     /// Inverse queries (need a map).
@@ -157,7 +157,7 @@ pub struct StudyFile {
     pub inverse: Option<InverseSpec>,
 }
 
-/// Seed 004's RBF study as loaded.
+/// Wang & Liang's RBF study as loaded.
 #[derive(Debug, Clone)]
 pub struct RbfInput {
     /// (k1, k2) pairs, N/rad.
@@ -192,7 +192,7 @@ pub struct StudyInput {
     pub front: Vec<f64>,
     /// Map rear values, N/rad.
     pub rear: Vec<f64>,
-    /// Seed 004's RBF pairs.
+    /// Wang & Liang's RBF pairs.
     pub rbf: Option<RbfInput>,
     /// Inverse targets, constraints and reference (N/rad).
     pub inverse: Option<Inverse>,

@@ -1,7 +1,7 @@
 //! Local least-squares polish: Levenberg–Marquardt (the `levenberg-marquardt`
 //! crate, MINPACK's trust-region form with diagonal scaling) and Zhang & Li's (2017)
 //! modified Gauss–Newton `x_{k+1} = x_k − (JᵀJ + λ_k·I)⁻¹·Jᵀ·e` with the
-//! geometric schedule `λ_k = λ0·q^(k−1)` (0 < q < 1). Seed 000 takes every
+//! geometric schedule `λ_k = λ0·q^(k−1)` (0 < q < 1). Zhang & Li (2017) takes every
 //! step; here a step that raises the cost is halved until it does not (up to
 //! ten times), so the method cannot diverge. Jacobians are forward
 //! differences with a relative step of 1e-7 (checked against analytic ones in
@@ -111,7 +111,7 @@ pub fn levenberg_marquardt_within(
     }
 }
 
-/// Seed 000's modified Gauss–Newton settings.
+/// Zhang & Li's (2017) modified Gauss–Newton settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GaussNewton {
     /// λ0 > 0, relative to the mean diagonal of JᵀJ.

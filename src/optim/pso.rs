@@ -27,9 +27,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Inertia {
-    /// Seed 000: linear decrease from `w_max` to `w_min`.
+    /// Zhang & Li (2017): linear decrease from `w_max` to `w_min`.
     LinearDecreasing,
-    /// Seed 001: adaptive per particle from its fitness rank.
+    /// Zhang et al. (2021): adaptive per particle from its fitness rank.
     Adaptive,
 }
 
@@ -71,7 +71,7 @@ pub struct Pso {
     pub w_max: f64,
     /// Inertia schedule.
     pub inertia: Inertia,
-    /// Seed 001's natural selection.
+    /// Zhang et al.'s (2021) natural selection.
     pub natural_selection: bool,
     /// Box boundary handling.
     pub boundary: Boundary,

@@ -10,7 +10,7 @@ const DEG: f64 = 180.0 / std::f64::consts::PI;
 fn study() -> Study {
     Study {
         model: VehicleModel::new(
-            Vehicle::seed004_sedan(),
+            Vehicle::compact_sedan(),
             Tyre::Gim(Gim::new(500.0 * DEG, 0.16, 1.0)),
             Tyre::Gim(Gim::new(540.0 * DEG, 0.16, 1.0)),
         ),

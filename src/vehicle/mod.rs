@@ -189,7 +189,7 @@ impl VehicleModel {
 pub(crate) fn linear_bicycle() -> VehicleModel {
     use crate::tyre::Linear;
     let mut m = VehicleModel::new(
-        Vehicle::seed004_sedan(),
+        Vehicle::compact_sedan(),
         Tyre::Linear(Linear::new(55_000.0)),
         Tyre::Linear(Linear::new(60_000.0)),
     );

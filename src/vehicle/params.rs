@@ -98,10 +98,10 @@ impl Vehicle {
         Ok(())
     }
 
-    /// Seed 004's reference passenger car (a compact sedan with Gim tyres).
-    /// Seed 004's Table 1 did not survive; these are typical values of its
+    /// Wang & Liang's reference passenger car (a compact sedan with Gim tyres).
+    /// Wang & Liang's Table 1 did not survive; these are typical values of its
     /// class, stated so that results can be reproduced.
-    pub fn seed004_sedan() -> Self {
+    pub fn compact_sedan() -> Self {
         Self {
             mass: 1530.0,
             yaw_inertia: 2315.0,

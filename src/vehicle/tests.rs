@@ -6,7 +6,7 @@ use approx::assert_relative_eq;
 use nalgebra::{Matrix2, Vector2};
 
 fn sedan() -> Vehicle {
-    Vehicle::seed004_sedan()
+    Vehicle::compact_sedan()
 }
 
 fn linear_model() -> VehicleModel {

@@ -7,7 +7,7 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
     let out = tempfile::tempdir().unwrap();
     let o = run(&[
         "simulate",
-        "scenarios/seed004_step.toml",
+        "scenarios/sedan_step.toml",
         "--out",
         out.path().to_str().unwrap(),
     ]);
@@ -17,7 +17,7 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
         format!(
             "{VEHICLE}\n[tyres]\nfront = \"{}\"\nrear = \"{}\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"{}\"\n",
             root().join(format!("tyres/{tyre}")).display(),
-            root().join("tyres/gim_seed004_rear.toml").display(),
+            root().join("tyres/gim_sedan_rear.toml").display(),
             hist.display()
         )
     };
@@ -34,7 +34,7 @@ fn replaying_a_simulated_run_shows_no_gap_and_a_changed_model_does() {
         assert!(o.status.success(), "{}", stderr(&o));
         read_json(&dir.join("o/gap.json"))
     };
-    let same = gap("gim_seed004_front.toml", "same");
+    let same = gap("gim_sedan_front.toml", "same");
     for ch in same["channels"].as_array().unwrap() {
         assert_eq!(ch["significant"], false, "{ch}");
     }

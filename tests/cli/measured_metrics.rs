@@ -54,13 +54,13 @@ fn metrics(dir: &Path, name: &str, text: &str) -> serde_json::Value {
     serde_json::from_slice(&o.stdout).unwrap()
 }
 
-/// The step steer of `scenarios/seed004_step.toml`, simulated and sampled at
+/// The step steer of `scenarios/sedan_step.toml`, simulated and sampled at
 /// 100 Hz like a logger.
 fn simulated_run() -> [Vec<f64>; 6] {
     let out = tempfile::tempdir().unwrap();
     let o = run(&[
         "simulate",
-        "scenarios/seed004_step.toml",
+        "scenarios/sedan_step.toml",
         "--out",
         out.path().join("o").to_str().unwrap(),
     ]);

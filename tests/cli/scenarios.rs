@@ -58,7 +58,7 @@ fn metrics_of_a_written_history_match_the_simulation() {
     // Under RK4 the rows are the simulation's record: the same numbers.
     let out = tempfile::tempdir().unwrap();
     let sc = scenario_with(
-        "seed004_step.toml",
+        "sedan_step.toml",
         out.path(),
         "rk4.toml",
         "method = \"rk4\"",
@@ -86,7 +86,7 @@ fn metrics_of_a_written_history_match_the_simulation() {
     // output; the 1 ms rows give them to the rows' accuracy: crossings
     // interpolated linearly, the peak on a row.
     let dense = out.path().join("dense");
-    simulate_to(&root().join("scenarios/seed004_step.toml"), &dense);
+    simulate_to(&root().join("scenarios/sedan_step.toml"), &dense);
     let d: serde_json::Value = read_json(&dense.join("metrics.json"));
     let mut args = vec!["metrics", "--json", "--filter-hz", "0"];
     let h = dense.join("history.csv");
@@ -393,7 +393,7 @@ fn default_tolerance_gives_every_step_steer_metric_within_1e_6_of_a_tight_refere
     let dir = tempfile::tempdir().unwrap();
     // A tiny overshoot (0.05 %, PAC89 with load transfer: its relative error
     // is the most sensitive) and a large one (17 %, Gim).
-    for name in ["step_gbt6323_pac89.toml", "seed004_step.toml"] {
+    for name in ["step_gbt6323_pac89.toml", "sedan_step.toml"] {
         let default = scenario_with(name, dir.path(), "default.toml", "");
         let tight = scenario_with(name, dir.path(), "tight.toml", REFERENCE);
         let (out_d, out_t) = (dir.path().join("d"), dir.path().join("t"));
@@ -436,13 +436,8 @@ fn metrics_events_are_located_between_output_rows() {
     // of 10 ms; located on the dense output it agrees with 1 ms rows to the
     // tolerance, as do the response times and total variances.
     let dir = tempfile::tempdir().unwrap();
-    let fine = scenario_with("seed004_step.toml", dir.path(), "fine.toml", "step = 0.001");
-    let coarse = scenario_with(
-        "seed004_step.toml",
-        dir.path(),
-        "coarse.toml",
-        "step = 0.01",
-    );
+    let fine = scenario_with("sedan_step.toml", dir.path(), "fine.toml", "step = 0.001");
+    let coarse = scenario_with("sedan_step.toml", dir.path(), "coarse.toml", "step = 0.01");
     let (a, b) = (dir.path().join("a"), dir.path().join("b"));
     simulate_to(&fine, &a);
     simulate_to(&coarse, &b);

@@ -7,7 +7,7 @@ fn equilibria_sweep_writes_tables_and_figures() {
     let out = tempfile::tempdir().unwrap();
     let o = run(&[
         "equilibria",
-        "scenarios/seed003_steer.toml",
+        "scenarios/equilibria_steer.toml",
         "--out",
         out.path().to_str().unwrap(),
     ]);
@@ -39,7 +39,7 @@ fn equilibria_sweep_writes_tables_and_figures() {
 
 #[test]
 fn sweep_with_an_unknown_unit_is_refused() {
-    let text = fs::read_to_string(root().join("scenarios/seed003_steer.toml")).unwrap();
+    let text = fs::read_to_string(root().join("scenarios/equilibria_steer.toml")).unwrap();
     let text = text
         .replace("unit = \"km/h\"", "unit = \"mph\"")
         .replace("../tyres/", &format!("{}/tyres/", root().display()));
@@ -60,11 +60,11 @@ fn sweep_with_an_unknown_unit_is_refused() {
 }
 
 #[test]
-fn seed004_study_writes_map_rbf_and_inverse() {
+fn wang_liang_study_writes_map_rbf_and_inverse() {
     let out = tempfile::tempdir().unwrap();
     let o = run(&[
         "study",
-        "scenarios/seed004_study.toml",
+        "scenarios/sedan_study.toml",
         "--out",
         out.path().to_str().unwrap(),
     ]);
@@ -92,7 +92,7 @@ fn seed004_study_writes_map_rbf_and_inverse() {
 fn a_sweep_refuses_an_effect_the_equilibrium_analysis_does_not_model() {
     // Roll steer moves every equilibrium, and the equilibrium residual does
     // not model it: a sweep with it is refused at its key, not solved wrong.
-    let text = fs::read_to_string(root().join("scenarios/seed003_steer.toml")).unwrap();
+    let text = fs::read_to_string(root().join("scenarios/equilibria_steer.toml")).unwrap();
     let text = text
         .replace(
             "\n[model]\n",

@@ -8,7 +8,7 @@ use crate::vehicle::{State, Vehicle};
 
 fn pac89_model() -> VehicleModel {
     let t = Tyre::Pac89(Pac89::adams_example());
-    VehicleModel::new(Vehicle::seed004_sedan(), t.clone(), t)
+    VehicleModel::new(Vehicle::compact_sedan(), t.clone(), t)
 }
 
 /// Linear tyres, small-angle kinematics, no load transfer: the textbook

@@ -10,8 +10,8 @@
 //! | capability | module |
 //! |---|---|
 //! | tyre models (one file each) and their parameter vectors | [`tyre`] |
-//! | vehicle parameters and the right-hand side of the 2-DOF model | [`vehicle`] |
-//! | integration (RK4, Dormand–Prince 5(4) with dense output) | [`sim`] |
+//! | vehicle parameters, the one right-hand side (2-DOF with load transfer, optional effects and extra states) | [`vehicle`] |
+//! | the one integrator (RK4, Dormand–Prince 5(4) with dense output) for every job | [`sim`] |
 //! | step, ramp, sine, sweep and replayed manoeuvres | [`manoeuvre`] |
 //! | GB/T 6323 / ISO 7401 step-steer metrics, total variances, Er | [`metrics`] |
 //! | PSO variants, Levenberg–Marquardt, modified Gauss–Newton | [`optim`] |

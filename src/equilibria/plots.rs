@@ -8,6 +8,7 @@ use super::stability::{self, Kind};
 use super::sweep::{axis_lines, SweepResult};
 use super::{residual, Condition, Equilibrium, SearchBox};
 use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::sim::ode::{self, OdeSystem};
 use crate::vehicle::VehicleModel;
 use anyhow::Result;
 use std::path::Path;
@@ -143,6 +144,19 @@ pub fn branch_diagram(res: &SweepResult, axis: Axis, bx: &SearchBox, path: &Path
     Figure::stack(vec![beta, yaw]).save(path)
 }
 
+/// The (β, r) system at one condition, autonomous (constant steer and
+/// speed), as an ODE for the crate's integrator.
+struct Autonomous<'a> {
+    model: &'a VehicleModel,
+    condition: &'a Condition,
+}
+
+impl OdeSystem<2> for Autonomous<'_> {
+    fn derivatives(&mut self, _t: f64, x: &[f64; 2]) -> [f64; 2] {
+        residual(self.model, self.condition, *x)
+    }
+}
+
 /// RK4 trajectory of the autonomous (β, r) system from `x0`, `dt` signed
 /// (negative integrates backward), stopping outside the box.
 fn trajectory(
@@ -153,24 +167,18 @@ fn trajectory(
     dt: f64,
     steps: usize,
 ) -> Vec<[f64; 2]> {
-    let f = |x: [f64; 2]| residual(model, c, x);
-    let add = |x: [f64; 2], k: [f64; 2], s: f64| [x[0] + s * k[0], x[1] + s * k[1]];
-    let mut x = x0;
-    let mut out = vec![x];
-    for _ in 0..steps {
-        let k1 = f(x);
-        let k2 = f(add(x, k1, 0.5 * dt));
-        let k3 = f(add(x, k2, 0.5 * dt));
-        let k4 = f(add(x, k3, dt));
-        x = [
-            x[0] + dt / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
-            x[1] + dt / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
-        ];
-        if !x[0].is_finite() || !bx.contains(x) {
-            break;
+    let mut sys = Autonomous {
+        model,
+        condition: c,
+    };
+    let mut out = Vec::with_capacity(steps + 1);
+    ode::rk4(&mut sys, 0.0, dt, steps, x0, |_, i, _, x| {
+        let inside = i == 0 || (x[0].is_finite() && bx.contains(*x));
+        if inside {
+            out.push(*x);
         }
-        out.push(x);
-    }
+        inside
+    });
     out
 }
 

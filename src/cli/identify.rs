@@ -4,7 +4,6 @@ use anyhow::Result;
 use clap::Args;
 use handling::identify::{self, IdentifyModel, Options, Polish, StartArg};
 use std::path::PathBuf;
-use std::str::FromStr;
 
 /// `handling identify`'s arguments.
 #[derive(Args)]
@@ -14,7 +13,7 @@ pub struct IdentifyArgs {
     /// gim, magic-simple, unitire, pac89, linear, or mf61 / mf62 (the
     /// Magic Formula by Wei et al. (2010)'s staged Levenberg–Marquardt;
     /// writes a .tir).
-    #[arg(long, value_parser = IdentifyModel::from_str)]
+    #[arg(long, value_parser = super::named::<IdentifyModel>())]
     model: IdentifyModel,
     /// Random seed of the swarm.
     #[arg(long, default_value_t = 1)]
@@ -31,7 +30,7 @@ pub struct IdentifyArgs {
     #[arg(long)]
     camber: Option<f64>,
     /// Local polish: lm, gn (Zhang & Li's (2017) modified Gauss-Newton) or none.
-    #[arg(long, value_enum, default_value_t = Polish::Lm)]
+    #[arg(long, default_value = "lm", value_parser = super::named::<Polish>())]
     local: Polish,
     /// Slip-angle bin for thinning, degrees (0: no thinning): the
     /// samples of one condition in one bin are averaged; a lone sample is

@@ -9,7 +9,11 @@ mod simulate;
 mod study;
 mod tyre_eval;
 
-use clap::{Parser, Subcommand};
+use clap::builder::{PossibleValue, TypedValueParser};
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand, ValueEnum};
+use std::ffi::OsStr;
+use std::marker::PhantomData;
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -80,5 +84,46 @@ pub fn run() -> ExitCode {
 fn print(lines: &[String]) {
     for l in lines {
         println!("{l}");
+    }
+}
+
+/// The parser of a closed set: its values listed in the help (clap's
+/// `ValueEnum`), an unknown value refused with the library's own message
+/// (`FromStr`), which names the value and every known one.
+#[derive(Clone, Copy)]
+struct Named<T>(PhantomData<T>);
+
+/// [`Named`] for `T`.
+fn named<T>() -> Named<T> {
+    Named(PhantomData)
+}
+
+impl<T> TypedValueParser for Named<T>
+where
+    T: ValueEnum + std::str::FromStr + Clone + Send + Sync + 'static,
+    T::Err: std::fmt::Display,
+{
+    type Value = T;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        _: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<T, clap::Error> {
+        let fail =
+            |message: String| clap::Error::raw(ErrorKind::InvalidValue, message).with_cmd(cmd);
+        let text = value
+            .to_str()
+            .ok_or_else(|| fail(format!("{value:?} is not UTF-8\n")))?;
+        text.parse().map_err(|e| fail(format!("{e}\n")))
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        Some(Box::new(
+            T::value_variants()
+                .iter()
+                .filter_map(ValueEnum::to_possible_value),
+        ))
     }
 }

@@ -112,6 +112,20 @@ pub enum Polish {
     None,
 }
 
+impl std::str::FromStr for Polish {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        match s {
+            "lm" => Ok(Polish::Lm),
+            "gn" => Ok(Polish::Gn),
+            "none" => Ok(Polish::None),
+            _ => Err(Error::Options(format!(
+                "unknown local method `{s}`: lm, gn or none"
+            ))),
+        }
+    }
+}
+
 impl From<Polish> for LocalMethod {
     fn from(p: Polish) -> Self {
         match p {

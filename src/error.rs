@@ -1,27 +1,145 @@
-//! Error types. Parameter errors name the key, the value and why it is wrong;
-//! the I/O layer adds the file, line and column.
+//! Error types: [`Error`], the one error of the library's public functions,
+//! wraps the parameter errors ([`ParamError`]: the key, the value and why it
+//! is wrong), the input errors ([`InputError`]: the file, line and column the
+//! I/O layer adds) and the failures of the jobs themselves.
 
+use crate::metrics::MetricsError;
 use std::path::PathBuf;
 use thiserror::Error;
 
-/// A parameter value that is not physical.
+/// The library's error: why a job (a command of the binary, or any public
+/// function that reads, fits or writes) could not be done. Its message is
+/// complete on its own; wrapped errors keep their own messages and sources.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A parameter value that is not physical.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// An input file that cannot be read or holds wrong content.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// The step-steer metrics of a response could not be computed.
+    #[error("step-steer metrics: {0}")]
+    StepMetrics(MetricsError),
+    /// A fit that cannot be made (too few loads or points, nothing to fit)
+    /// or whose stages failed.
+    #[error("{0}")]
+    Fit(String),
+    /// A job that failed on an input: it holds nothing the job can use, or
+    /// a fit to it failed.
+    #[error("{path}: {message}")]
+    Data {
+        /// The input.
+        path: PathBuf,
+        /// What it lacks, or why the fit failed.
+        message: String,
+    },
+    /// Options that contradict each other or name nothing known.
+    #[error("{0}")]
+    Options(String),
+    /// The diagnosis could not be made.
+    #[error("{0}")]
+    Diagnosis(String),
+    /// An output that is one of the run's inputs.
+    #[error("{path}: is an input of this run; refusing to overwrite it")]
+    Overwrite {
+        /// The output.
+        path: PathBuf,
+    },
+    /// An output that exists and that the job never writes over.
+    #[error("{path}: exists; {why}")]
+    Exists {
+        /// The output.
+        path: PathBuf,
+        /// Why the job does not overwrite it.
+        why: String,
+    },
+    /// An output that could not be written.
+    #[error("{path}: {message}")]
+    Output {
+        /// The output.
+        path: PathBuf,
+        /// What failed.
+        message: String,
+    },
+}
+
+impl Error {
+    /// A failure to write `path`, with what failed.
+    pub fn output(path: &std::path::Path, message: impl std::fmt::Display) -> Self {
+        Error::Output {
+            path: path.to_path_buf(),
+            message: message.to_string(),
+        }
+    }
+}
+
+/// The value of a [`ParamError`]: a number, or none to show (a name, a
+/// table, a missing key).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ParamValue {
+    /// The offending number (itself NaN or infinite when that is what is
+    /// wrong).
+    Number(f64),
+    /// The value is not a number.
+    NotANumber,
+}
+
+impl ParamValue {
+    /// The number, if the value is one.
+    pub fn number(self) -> Option<f64> {
+        match self {
+            ParamValue::Number(v) => Some(v),
+            ParamValue::NotANumber => None,
+        }
+    }
+}
+
+impl std::fmt::Display for ParamValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ParamValue::Number(v) => write!(f, "{v}"),
+            ParamValue::NotANumber => f.write_str("(not a number)"),
+        }
+    }
+}
+
+/// A parameter value that is not physical, or a key whose value is wrong in
+/// another way (a name, a missing table).
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error("`{key}` = {value}: {reason}")]
 pub struct ParamError {
     /// Dotted key path, e.g. `vehicle.mass` or `a[4]`.
     pub key: String,
-    /// The offending value (NaN when it is not a number).
-    pub value: f64,
+    /// The offending value.
+    pub value: ParamValue,
     /// Why it is wrong.
     pub reason: String,
 }
 
+impl std::fmt::Display for ParamError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.value {
+            ParamValue::Number(v) => write!(f, "`{}` = {v}: {}", self.key, self.reason),
+            ParamValue::NotANumber => write!(f, "`{}`: {}", self.key, self.reason),
+        }
+    }
+}
+
 impl ParamError {
-    /// A parameter error for `key`.
+    /// A parameter error for `key` holding the number `value`.
     pub fn new(key: &str, value: f64, reason: &str) -> Self {
         Self {
             key: key.to_string(),
-            value,
+            value: ParamValue::Number(value),
+            reason: reason.to_string(),
+        }
+    }
+    /// An error for `key` whose value is not a number (a name, a table).
+    pub fn without_value(key: &str, reason: &str) -> Self {
+        Self {
+            key: key.to_string(),
+            value: ParamValue::NotANumber,
             reason: reason.to_string(),
         }
     }

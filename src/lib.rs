@@ -21,6 +21,8 @@
 //! | the sim-to-real gap of measured runs | [`diagnose`] |
 //! | reading and validating files | [`io`] |
 //! | CSV, JSON and PNG outputs | [`report`] |
+//! | the commands of the binary, each one function with a typed report | [`jobs`] |
+//! | the library's one error type | [`error`] |
 //!
 //! # References
 //! - Zhang Jiaxu, Li Jing (2017): UniTire parameter identification by a
@@ -44,6 +46,7 @@ pub mod equilibria;
 pub mod error;
 pub mod identify;
 pub mod io;
+pub mod jobs;
 pub mod manoeuvre;
 pub mod measured;
 pub mod metrics;

@@ -7,7 +7,7 @@ use super::crossval::reduction;
 use super::fit::{Channel, Prepared};
 use super::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use super::model::{Augmented, Observed};
-use super::report::{RunGap, Shrinkage};
+use super::report::{Part, RunGap, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
 
@@ -40,7 +40,7 @@ pub(super) fn parts_table(
     floors: &[f64; 3],
 ) -> Vec<Shrinkage> {
     // (channel, part) → (Σ before², Σ after², n)
-    let mut acc: Vec<(Channel, String, f64, f64, usize)> = Vec::new();
+    let mut acc: Vec<(Channel, Part, f64, f64, usize)> = Vec::new();
     for (i, p) in prepared.iter().enumerate() {
         let run = &runs[i];
         let at = |v: &[f64]| -> Vec<f64> {
@@ -71,7 +71,7 @@ pub(super) fn parts_table(
                 observed_channel(&after[i], *ch),
             );
             let all_b = PartGap {
-                name: "all".into(),
+                name: Part::All.label(),
                 samples: m.len(),
                 rms: gb.rms,
                 bias: gb.bias,
@@ -88,19 +88,15 @@ pub(super) fn parts_table(
                 .chain(ga.regimes.iter());
             for (b, a) in pb.zip(pa) {
                 let n = b.samples as f64;
-                match acc.iter_mut().find(|x| x.0 == *ch && x.1 == b.name) {
+                let part = Part::from_label(&b.name)
+                    .unwrap_or_else(|| unreachable!("a part the gap analysis names: {}", b.name));
+                match acc.iter_mut().find(|x| x.0 == *ch && x.1 == part) {
                     Some(x) => {
                         x.2 += b.rms * b.rms * n;
                         x.3 += a.rms * a.rms * n;
                         x.4 += b.samples;
                     }
-                    None => acc.push((
-                        *ch,
-                        b.name.clone(),
-                        b.rms * b.rms * n,
-                        a.rms * a.rms * n,
-                        b.samples,
-                    )),
+                    None => acc.push((*ch, part, b.rms * b.rms * n, a.rms * a.rms * n, b.samples)),
                 }
             }
         }
@@ -111,7 +107,7 @@ pub(super) fn parts_table(
             let (before, after) = ((b2 / n as f64).sqrt(), (a2 / n as f64).sqrt());
             let nf = floors[ch.index()];
             Shrinkage {
-                channel: ch.name().into(),
+                channel: ch,
                 part,
                 samples: n,
                 before,
@@ -138,20 +134,20 @@ pub(super) fn gap_summary(
         format!("held-out error {j0:.3} against a noise level of {jn:.3}: no significant gap")
     }];
     for ch in Channel::ALL {
-        let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch.name()).collect();
-        let Some(all) = rows.iter().find(|p| p.part == "all") else {
+        let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
+        let Some(all) = rows.iter().find(|p| p.part == Part::All) else {
             continue;
         };
         let nf = all.noise_floor;
         let wrong: Vec<String> = rows
             .iter()
-            .filter(|p| p.part != "all" && p.samples >= 10 && p.before > 3.0 * nf)
+            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before > 3.0 * nf)
             .map(|p| format!("{} ({:.3} {})", p.part, p.before, ch.unit()))
             .collect();
         let right: Vec<String> = rows
             .iter()
-            .filter(|p| p.part != "all" && p.samples >= 10 && p.before <= 3.0 * nf)
-            .map(|p| p.part.clone())
+            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before <= 3.0 * nf)
+            .map(|p| p.part.label())
             .collect();
         let significant_runs = runs
             .iter()

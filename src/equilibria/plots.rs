@@ -7,10 +7,10 @@ use super::bifurcation::{Axis, Bifurcation};
 use super::stability::{self, Kind};
 use super::sweep::{axis_lines, SweepResult};
 use super::{residual, Condition, Equilibrium, SearchBox};
+use crate::error::Error;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::sim::ode::{self, OdeSystem};
 use crate::vehicle::VehicleModel;
-use anyhow::Result;
 use std::path::Path;
 
 const STABLE: usize = 0;
@@ -43,7 +43,12 @@ fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
 
 /// β and r of the equilibria against the swept parameter, along the first
 /// line of `axis`.
-pub fn branch_diagram(res: &SweepResult, axis: Axis, bx: &SearchBox, path: &Path) -> Result<()> {
+pub fn branch_diagram(
+    res: &SweepResult,
+    axis: Axis,
+    bx: &SearchBox,
+    path: &Path,
+) -> Result<(), Error> {
     let line = &axis_lines(&res.grid, axis)[0];
     let mut beta = Panel {
         title: format!("steering equilibria: sideslip against {}", axis.name()),
@@ -205,7 +210,7 @@ pub fn phase_portrait(
     search: &SearchBox,
     eqs: &[Equilibrium],
     path: &Path,
-) -> Result<()> {
+) -> Result<(), Error> {
     // Trajectories and separatrices leave the search box (which only bounds
     // where equilibria can be): draw twice its yaw-rate range.
     let bx = &SearchBox {
@@ -335,7 +340,7 @@ pub fn stability_map(
     ay: Axis,
     bx: &SearchBox,
     path: &Path,
-) -> Result<()> {
+) -> Result<(), Error> {
     let cats: [(&str, usize); 4] = [
         ("no equilibrium in the box", 7),
         ("stable only", 2),

@@ -1,11 +1,12 @@
 //! Outputs: CSV, JSON and PNG files, each written to a temporary file in the
 //! destination folder and renamed into place, so a failed run never leaves a
-//! half-written file; and a refusal to write over any input file.
+//! half-written file; and a refusal to write over any input file. Every CSV
+//! of every command goes through [`write_csv`].
 
 pub mod plot;
 pub mod progress;
 
-use anyhow::{bail, Context, Result};
+use crate::error::Error;
 use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -22,18 +23,26 @@ fn temp_path(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.partial-{}{ext}", std::process::id()))
 }
 
+/// Creates `dir` and its parents.
+pub fn create_dir(dir: &Path) -> Result<(), Error> {
+    fs::create_dir_all(dir).map_err(|e| Error::output(dir, format!("cannot create: {e}")))
+}
+
 /// Writes through `fill` into a temporary file, then renames it to `path`.
-pub fn write_atomic(path: &Path, fill: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+pub fn write_atomic(
+    path: &Path,
+    fill: impl FnOnce(&Path) -> Result<(), Error>,
+) -> Result<(), Error> {
     if let Some(dir) = path.parent() {
         if !dir.as_os_str().is_empty() {
             fs::create_dir_all(dir)
-                .with_context(|| format!("{}: cannot create folder", dir.display()))?;
+                .map_err(|e| Error::output(dir, format!("cannot create folder: {e}")))?;
         }
     }
     let tmp = temp_path(path);
     let result = fill(&tmp).and_then(|()| {
         fs::rename(&tmp, path)
-            .with_context(|| format!("{}: cannot move into place", path.display()))
+            .map_err(|e| Error::output(path, format!("cannot move into place: {e}")))
     });
     if result.is_err() {
         let _ = fs::remove_file(&tmp);
@@ -42,55 +51,94 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&Path) -> Result<()>) -> Resu
 }
 
 /// Writes bytes atomically.
-pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<()> {
+pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     write_atomic(path, |tmp| {
         let mut f =
-            fs::File::create(tmp).with_context(|| format!("{}: cannot create", tmp.display()))?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        Ok(())
+            fs::File::create(tmp).map_err(|e| Error::output(tmp, format!("cannot create: {e}")))?;
+        f.write_all(bytes)
+            .and_then(|()| f.sync_all())
+            .map_err(|e| Error::output(path, e))
     })
 }
 
-/// Writes a value as pretty JSON.
-pub fn write_json<T: serde::Serialize>(path: &Path, value: &T) -> Result<()> {
-    let mut text = serde_json::to_string_pretty(value)?;
+/// Writes a value as pretty JSON, its fields in their declared order.
+pub fn write_json<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Error> {
+    let mut text = serde_json::to_string_pretty(value).map_err(|e| Error::output(path, e))?;
     text.push('\n');
     write_bytes(path, text.as_bytes())
 }
 
+/// Writes a value as pretty JSON with the keys of every object in
+/// alphabetical order: the layout of the reports that are read back as
+/// generic JSON trees.
+pub fn write_json_sorted<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Error> {
+    let tree = serde_json::to_value(value).map_err(|e| Error::output(path, e))?;
+    write_json(path, &tree)
+}
+
+/// Writes a CSV file: a header line and one line per row, each row as many
+/// cells as the header (quoted only where a cell holds a comma, a quote or a
+/// line break).
+pub fn write_csv<R, C>(path: &Path, header: &[&str], rows: R) -> Result<(), Error>
+where
+    R: IntoIterator<Item = C>,
+    C: IntoIterator<Item = String>,
+{
+    let fail = |e: csv::Error| Error::output(path, e);
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(header).map_err(fail)?;
+    for row in rows {
+        let row: Vec<String> = row.into_iter().collect();
+        if row.len() != header.len() {
+            return Err(Error::output(
+                path,
+                format!(
+                    "a row of {} cells under {} columns",
+                    row.len(),
+                    header.len()
+                ),
+            ));
+        }
+        w.write_record(&row).map_err(fail)?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::output(path, e))?;
+    write_bytes(path, &bytes)
+}
+
 /// Writes named columns of equal length as CSV with a header line.
-pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<()> {
+pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Error> {
     let n = columns.first().map_or(0, |c| c.1.len());
     if columns.iter().any(|c| c.1.len() != n) {
-        bail!("{}: columns of unequal length", path.display());
+        return Err(Error::output(path, "columns of unequal length"));
     }
-    let mut w = csv::Writer::from_writer(Vec::with_capacity(n * columns.len() * 12));
-    w.write_record(columns.iter().map(|c| c.0))?;
-    let mut row = Vec::with_capacity(columns.len());
-    for i in 0..n {
-        row.clear();
-        row.extend(columns.iter().map(|c| format!("{}", c.1[i])));
-        w.write_record(&row)?;
-    }
-    write_bytes(path, &w.into_inner()?)
+    let header: Vec<&str> = columns.iter().map(|c| c.0).collect();
+    let rows = (0..n).map(|i| columns.iter().map(move |c| format!("{}", c.1[i])));
+    write_csv(path, &header, rows)
 }
 
 /// Refuses when `out` is one of `inputs` (compared after resolving links).
-pub fn refuse_overwrite(out: &Path, inputs: &[PathBuf]) -> Result<()> {
+pub fn refuse_overwrite(out: &Path, inputs: &[PathBuf]) -> Result<(), Error> {
     let canon = |p: &Path| fs::canonicalize(p).ok();
     if let Some(o) = canon(out) {
         if inputs
             .iter()
             .any(|i| canon(i).as_deref() == Some(o.as_path()))
         {
-            bail!(
-                "{}: is an input of this run; refusing to overwrite it",
-                out.display()
-            );
+            return Err(Error::Overwrite {
+                path: out.to_path_buf(),
+            });
         }
     }
     Ok(())
+}
+
+/// [`refuse_overwrite`] for every output.
+pub fn refuse_overwrites<'a>(
+    outs: impl IntoIterator<Item = &'a PathBuf>,
+    inputs: &[PathBuf],
+) -> Result<(), Error> {
+    outs.into_iter()
+        .try_for_each(|o| refuse_overwrite(o, inputs))
 }
 
 #[cfg(test)]
@@ -102,13 +150,24 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let p = dir.path().join("a.csv");
         let r = write_atomic(&p, |tmp| {
-            fs::write(tmp, "half")?;
-            bail!("boom")
+            fs::write(tmp, "half").unwrap();
+            Err(Error::output(tmp, "boom"))
         });
         assert!(r.is_err());
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 0);
         write_columns(&p, &[("t", &[0.0, 1.0]), ("x", &[2.0, 3.5])]).unwrap();
         assert_eq!(fs::read_to_string(&p).unwrap(), "t,x\n0,2\n1,3.5\n");
         assert!(refuse_overwrite(&p, std::slice::from_ref(&p)).is_err());
+    }
+
+    #[test]
+    fn csv_rows_must_match_the_header() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("b.csv");
+        let rows = vec![vec!["1".to_string(), "stable node".to_string()]];
+        write_csv(&p, &["a", "kind"], rows).unwrap();
+        assert_eq!(fs::read_to_string(&p).unwrap(), "a,kind\n1,stable node\n");
+        let short = vec![vec!["1".to_string()]];
+        assert!(write_csv(&p, &["a", "kind"], short).is_err());
     }
 }

@@ -2,7 +2,7 @@
 //! system fonts needed). A [`Figure`] is a stack of panels sharing nothing but
 //! the image; each panel holds line, dashed-line and point series.
 
-use anyhow::{anyhow, Result};
+use crate::error::Error;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
@@ -182,11 +182,10 @@ impl Figure {
     }
 
     /// Renders the figure to a PNG file (written atomically).
-    pub fn save(&self, path: &Path) -> Result<()> {
+    pub fn save(&self, path: &Path) -> Result<(), Error> {
         ensure_font();
         super::write_atomic(path, |tmp| {
-            self.draw(tmp)
-                .map_err(|e| anyhow!("{}: {e}", path.display()))
+            self.draw(tmp).map_err(|e| Error::output(path, e))
         })
     }
 

@@ -7,7 +7,7 @@
 //! the simulator itself: k2 solved for the target by secant at each k1, and
 //! k1 chosen by golden-section search.
 
-use super::{metric, Sample, Study};
+use super::{Metric, Sample, Study, Target};
 
 /// A full map: every front value with every rear value.
 #[derive(Debug, Clone)]
@@ -22,15 +22,13 @@ pub struct Map {
 
 impl Map {
     /// The metric at grid point (i, j).
-    pub fn value(&self, name: &str, i: usize, j: usize) -> f64 {
-        self.samples[i * self.rear.len() + j]
-            .metrics
-            .map_or(f64::NAN, |m| metric(&m, name))
+    pub fn value(&self, metric: Metric, i: usize, j: usize) -> f64 {
+        metric.of_sample(&self.samples[i * self.rear.len() + j])
     }
 
-    /// Points (k1, k2) where `name` equals `target`, by linear interpolation
+    /// Points (k1, k2) where `metric` equals `target`, by linear interpolation
     /// along rear lines and along front lines, sorted by k1.
-    pub fn iso_curve(&self, name: &str, target: f64) -> Vec<(f64, f64)> {
+    pub fn iso_curve(&self, metric: Metric, target: f64) -> Vec<(f64, f64)> {
         let (nf, nr) = (self.front.len(), self.rear.len());
         let mut pts = Vec::new();
         let cross = |a: f64, b: f64| {
@@ -39,7 +37,7 @@ impl Map {
         };
         for i in 0..nf {
             for j in 0..nr.saturating_sub(1) {
-                if let Some(w) = cross(self.value(name, i, j), self.value(name, i, j + 1)) {
+                if let Some(w) = cross(self.value(metric, i, j), self.value(metric, i, j + 1)) {
                     pts.push((
                         self.front[i],
                         self.rear[j] + w * (self.rear[j + 1] - self.rear[j]),
@@ -49,7 +47,7 @@ impl Map {
         }
         for j in 0..nr {
             for i in 0..nf.saturating_sub(1) {
-                if let Some(w) = cross(self.value(name, i, j), self.value(name, i + 1, j)) {
+                if let Some(w) = cross(self.value(metric, i, j), self.value(metric, i + 1, j)) {
                     pts.push((
                         self.front[i] + w * (self.front[i + 1] - self.front[i]),
                         self.rear[j],
@@ -62,14 +60,14 @@ impl Map {
         pts
     }
 
-    /// Map points meeting every (metric, target, tolerance).
-    pub fn region(&self, targets: &[(String, f64, f64)]) -> Vec<(f64, f64)> {
+    /// Map points meeting every target within its tolerance.
+    pub fn region(&self, targets: &[Target]) -> Vec<(f64, f64)> {
         let mut out = Vec::new();
         for (i, &kf) in self.front.iter().enumerate() {
             for (j, &kr) in self.rear.iter().enumerate() {
                 if targets
                     .iter()
-                    .all(|(n, t, tol)| (self.value(n, i, j) - t).abs() <= *tol)
+                    .all(|t| (self.value(t.metric, i, j) - t.value).abs() <= t.tolerance)
                 {
                     out.push((kf, kr));
                 }

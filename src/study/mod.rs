@@ -14,11 +14,13 @@
 pub mod inverse;
 pub mod rbf;
 
+use crate::error::Error;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
 use crate::vehicle::{State, VehicleModel};
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Everything needed to evaluate one stiffness combination.
@@ -96,36 +98,176 @@ impl Study {
     }
 }
 
-/// A metric of a sample by name (the CSV column names).
-pub fn metric(m: &StepMetrics, name: &str) -> f64 {
-    match name {
-        "er" => m.er.unwrap_or(f64::NAN),
-        "yaw_rate_total_variance" => m.yaw_rate_total_variance,
-        "ay_total_variance" => m.ay_total_variance.unwrap_or(f64::NAN),
-        "yaw_rate_response_time" => m.yaw_rate_response_time,
-        "ay_response_time" => m.ay_response_time.unwrap_or(f64::NAN),
-        "yaw_rate_overshoot" => m.yaw_rate_overshoot,
-        "yaw_rate_peak_time" => m.yaw_rate_peak_time.unwrap_or(f64::NAN),
-        "yaw_rate_gain" => m.yaw_rate_gain,
-        "beta_steady" => m.beta_steady.unwrap_or(f64::NAN),
-        "tb" => m.tb.unwrap_or(f64::NAN),
-        _ => f64::NAN,
+/// A step-steer metric of the study: a column of `study.csv` and a metric
+/// an inverse query names. Its serde name is the column name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Metric {
+    /// Er, the combined total variance (Wang & Liang), s.
+    Er,
+    /// Total variance of the yaw rate, s.
+    YawRateTotalVariance,
+    /// Total variance of the lateral acceleration, s.
+    AyTotalVariance,
+    /// Yaw-rate response time, s.
+    YawRateResponseTime,
+    /// Yaw-rate peak time, s.
+    YawRatePeakTime,
+    /// Yaw-rate overshoot, %.
+    YawRateOvershoot,
+    /// Lateral-acceleration response time, s.
+    AyResponseTime,
+    /// Steady yaw-rate gain, 1/s.
+    YawRateGain,
+    /// Steady sideslip, rad.
+    BetaSteady,
+    /// TB (GB/T 6323), s·deg.
+    Tb,
+}
+
+impl Metric {
+    /// Every metric, in the order of the columns of `study.csv`.
+    pub const ALL: [Metric; 10] = [
+        Metric::Er,
+        Metric::YawRateTotalVariance,
+        Metric::AyTotalVariance,
+        Metric::YawRateResponseTime,
+        Metric::YawRatePeakTime,
+        Metric::YawRateOvershoot,
+        Metric::AyResponseTime,
+        Metric::YawRateGain,
+        Metric::BetaSteady,
+        Metric::Tb,
+    ];
+
+    /// The column name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Metric::Er => "er",
+            Metric::YawRateTotalVariance => "yaw_rate_total_variance",
+            Metric::AyTotalVariance => "ay_total_variance",
+            Metric::YawRateResponseTime => "yaw_rate_response_time",
+            Metric::YawRatePeakTime => "yaw_rate_peak_time",
+            Metric::YawRateOvershoot => "yaw_rate_overshoot",
+            Metric::AyResponseTime => "ay_response_time",
+            Metric::YawRateGain => "yaw_rate_gain",
+            Metric::BetaSteady => "beta_steady",
+            Metric::Tb => "tb",
+        }
+    }
+
+    /// The metric's value in a response's metrics (`None`: the response
+    /// does not have it, e.g. no lateral acceleration or no peak).
+    pub fn of(self, m: &StepMetrics) -> Option<f64> {
+        match self {
+            Metric::Er => m.er,
+            Metric::YawRateTotalVariance => Some(m.yaw_rate_total_variance),
+            Metric::AyTotalVariance => m.ay_total_variance,
+            Metric::YawRateResponseTime => Some(m.yaw_rate_response_time),
+            Metric::AyResponseTime => m.ay_response_time,
+            Metric::YawRateOvershoot => Some(m.yaw_rate_overshoot),
+            Metric::YawRatePeakTime => m.yaw_rate_peak_time,
+            Metric::YawRateGain => Some(m.yaw_rate_gain),
+            Metric::BetaSteady => m.beta_steady,
+            Metric::Tb => m.tb,
+        }
+    }
+
+    /// The metric of a sample, NaN where it has none (the cells of maps and
+    /// tables).
+    pub fn of_sample(self, s: &Sample) -> f64 {
+        s.metrics.and_then(|m| self.of(&m)).unwrap_or(f64::NAN)
     }
 }
 
-/// Metric names in table order.
-pub const METRICS: [&str; 10] = [
-    "er",
-    "yaw_rate_total_variance",
-    "ay_total_variance",
-    "yaw_rate_response_time",
-    "yaw_rate_peak_time",
-    "yaw_rate_overshoot",
-    "ay_response_time",
-    "yaw_rate_gain",
-    "beta_steady",
-    "tb",
-];
+impl std::fmt::Display for Metric {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Metric {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| {
+                Error::Options(format!(
+                    "unknown metric `{s}`; one of {}",
+                    METRICS.join(", ")
+                ))
+            })
+    }
+}
+
+/// Metric names in table order ([`Metric::ALL`]'s names).
+pub const METRICS: [&str; 10] = {
+    let mut names = [""; 10];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = Metric::ALL[i].name();
+        i += 1;
+    }
+    names
+};
+
+/// A target of the inverse problem: a metric's value within a tolerance.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Target {
+    /// The metric.
+    pub metric: Metric,
+    /// Its target value.
+    pub value: f64,
+    /// The tolerance of the region.
+    pub tolerance: f64,
+}
+
+/// The unit of cornering stiffness in study files and reports (values are
+/// N/rad inside).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum StiffnessUnit {
+    /// N/deg.
+    #[default]
+    #[serde(rename = "N/deg")]
+    NPerDeg,
+    /// N/rad.
+    #[serde(rename = "N/rad")]
+    NPerRad,
+}
+
+impl StiffnessUnit {
+    /// The name in files and reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            StiffnessUnit::NPerDeg => "N/deg",
+            StiffnessUnit::NPerRad => "N/rad",
+        }
+    }
+    /// N/rad per unit.
+    pub fn to_si(self) -> f64 {
+        match self {
+            StiffnessUnit::NPerDeg => 180.0 / std::f64::consts::PI,
+            StiffnessUnit::NPerRad => 1.0,
+        }
+    }
+}
+
+impl std::fmt::Display for StiffnessUnit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::str::FromStr for StiffnessUnit {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        [StiffnessUnit::NPerDeg, StiffnessUnit::NPerRad]
+            .into_iter()
+            .find(|u| u.as_str() == s)
+            .ok_or_else(|| Error::Options(format!("unknown unit `{s}`: N/deg or N/rad")))
+    }
+}
 
 #[cfg(test)]
 mod tests;

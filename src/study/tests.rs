@@ -81,7 +81,7 @@ fn inverse_answers_resimulate_to_the_target() {
         samples: st.evaluate_all(&pairs, &AtomicUsize::new(0)),
     };
     let target = 0.13;
-    let curve = map.iso_curve("er", target);
+    let curve = map.iso_curve(Metric::Er, target);
     assert!(curve.len() >= 5, "{curve:?}");
     // Every curve point is an interpolation: re-simulated it is near the target.
     for p in curve.iter().step_by(3) {
@@ -105,4 +105,24 @@ fn inverse_answers_resimulate_to_the_target() {
         "{} vs {best_curve}",
         distance((kf, kr), reference)
     );
+}
+
+#[test]
+fn metric_names_are_the_table_columns_and_unknown_names_are_refused() {
+    assert_eq!(METRICS[0], "er");
+    assert_eq!(METRICS[9], "tb");
+    for m in Metric::ALL {
+        assert_eq!(m.name().parse::<Metric>().unwrap(), m);
+        assert_eq!(serde_json::to_value(m).unwrap(), m.name());
+    }
+    let e = "err".parse::<Metric>().unwrap_err().to_string();
+    assert!(
+        e.contains("unknown metric `err`") && e.contains("yaw_rate_gain"),
+        "{e}"
+    );
+    assert_eq!(
+        "N/deg".parse::<StiffnessUnit>().unwrap().to_si(),
+        180.0 / std::f64::consts::PI
+    );
+    assert!("N/mm".parse::<StiffnessUnit>().is_err());
 }

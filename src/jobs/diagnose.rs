@@ -1,0 +1,280 @@
+//! `diagnose` as one job: a campaign (file or folder) in; the sim-to-real
+//! gap of its runs, the candidate effects ranked on held-out runs and the
+//! verdict ([`crate::diagnose`]) out, as `diagnosis.json`, the gap map
+//! (`gap_map.png`: held-out RMS over the noise floor against time window,
+//! |ay| level and speed band) and the overlays of the worst runs
+//! (`overlays.png`).
+
+use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
+use crate::diagnose::fit::Channel;
+use crate::diagnose::report::Part;
+use crate::error::Error;
+use crate::io::campaign::load_campaign;
+use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::progress::Progress;
+use crate::report::{create_dir, refuse_overwrites, write_json};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The report of `diagnose`: the diagnosis (`diagnosis.json`) and how the
+/// campaign was read.
+#[derive(Debug, Clone, Serialize)]
+pub struct DiagnoseReport {
+    /// The diagnosis.
+    #[serde(flatten)]
+    pub diagnosis: Diagnosis,
+    /// Runs in the campaign.
+    #[serde(skip)]
+    pub runs: usize,
+    /// Candidate effects.
+    #[serde(skip)]
+    pub effects: usize,
+    /// How the runs were cleaned, in lines.
+    #[serde(skip)]
+    pub cleaning: Vec<String>,
+    /// Wall time, s.
+    #[serde(skip)]
+    pub seconds: f64,
+    /// The output folder.
+    #[serde(skip)]
+    pub out_dir: PathBuf,
+}
+
+const FILES: [&str; 3] = ["diagnosis.json", "gap_map.png", "overlays.png"];
+
+/// Diagnoses the campaign at `path`; `out` is the output folder (default
+/// `out/<campaign name>`), checked against the inputs first.
+pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
+    let campaign = load_campaign(path)?;
+    let out_dir = out.map_or_else(
+        || PathBuf::from("out").join(&campaign.name),
+        Path::to_path_buf,
+    );
+    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &campaign.inputs)?;
+    let t0 = Instant::now();
+    let diagnosis = {
+        let progress = Progress::start("diagnose", work_units(&campaign));
+        crate::diagnose::diagnose(&campaign, Some(progress.counter())).map_err(Error::Diagnosis)?
+    };
+    Ok(DiagnoseReport {
+        diagnosis,
+        runs: campaign.runs.len(),
+        effects: campaign.effects.len(),
+        cleaning: campaign.cleaning.summary(5),
+        seconds: t0.elapsed().as_secs_f64(),
+        out_dir,
+    })
+}
+
+impl DiagnoseReport {
+    /// The output files.
+    pub fn outputs(&self) -> [PathBuf; 3] {
+        FILES.map(|f| self.out_dir.join(f))
+    }
+
+    /// Writes the diagnosis and its two figures.
+    pub fn write(&self) -> Result<(), Error> {
+        let files = self.outputs();
+        create_dir(&self.out_dir)?;
+        write_json(&files[0], &self.diagnosis)?;
+        gap_map(&self.diagnosis).save(&files[1])?;
+        overlays(&self.diagnosis).save(&files[2])
+    }
+
+    /// The campaign read and the short human report.
+    pub fn summary(&self) -> Vec<String> {
+        let d = &self.diagnosis;
+        let mut out = vec![format!(
+            "{}: {} runs, {} candidate effects, seed {}",
+            d.campaign, self.runs, self.effects, d.seed
+        )];
+        out.extend(d.notes.iter().map(|n| format!("  note: {n}")));
+        out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
+        out.extend(findings(d));
+        out
+    }
+}
+
+/// The findings: base model, gap, candidates, verdict, shrinkage.
+fn findings(d: &Diagnosis) -> Vec<String> {
+    let mut out = vec![format!("base model: {}", d.base.tyres)];
+    let rig = d.base.rig_grouping.iter().flat_map(|g| g.lines());
+    out.extend(rig.map(|l| format!("  rig data: {l}")));
+    out.push("where the gap lies:".into());
+    out.extend(d.gap.summary.iter().map(|s| format!("  {s}")));
+    out.push(format!(
+        "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",
+        d.folds, d.gap.heldout_error, d.gap.noise_level
+    ));
+    out.push(format!(
+        "  {:<28} {:>8} {:>11} {:>10} {:>12}  parameters",
+        "effect", "J after", "held out", "in sample", "ΔBIC"
+    ));
+    for r in d.ranking.iter().chain(d.combinations.iter()) {
+        let p: Vec<String> = r
+            .parameters
+            .iter()
+            .map(|p| {
+                if p.std_error.is_finite() {
+                    format!(
+                        "{} = {:.4} ± {:.2e} {}",
+                        p.name, p.value, p.std_error, p.unit
+                    )
+                } else {
+                    // No standard error: the runs cannot see it (a channel
+                    // they lack, a parameter pinned by another).
+                    format!(
+                        "{} = {:.4} {} (no standard error: not identifiable from these runs)",
+                        p.name, p.value, p.unit
+                    )
+                }
+            })
+            .collect();
+        out.push(format!(
+            "  {:<28} {:>8.3} {:>9.1} % {:>8.1} % {:>12.0}  {}",
+            r.effect,
+            r.heldout_error_after,
+            r.reduction_percent,
+            r.insample_reduction_percent,
+            r.delta_bic,
+            p.join(", ")
+        ));
+        if let Some(w) = &r.warning {
+            out.push(format!("  {:<28} warning: {w}", ""));
+        }
+    }
+    out.push(format!("verdict: {}", d.verdict.statement));
+    out.extend(d.confounded.iter().map(|c| {
+        format!(
+            "confounded: {} — separate them with {}",
+            c.effects.join(", "),
+            c.separating_test
+        )
+    }));
+    if !d.verdict.effects.is_empty() {
+        out.push("held-out before → after (all samples):".into());
+        out.extend(d.shrinkage.iter().filter(|s| s.part == Part::All).map(|s| {
+            format!(
+                "  {:<9} {:.4} → {:.4} (noise floor {:.4}): {:.0} % of the gap above noise removed",
+                s.channel.name(),
+                s.before,
+                s.after,
+                s.noise_floor,
+                s.reduction_percent
+            )
+        }));
+    }
+    out
+}
+
+/// The gap map: held-out RMS over the noise floor per channel against the
+/// time window, the lateral-acceleration level and the speed band, with the
+/// base model and with the verdict's effects.
+fn gap_map(d: &Diagnosis) -> Figure {
+    let mut panels = Vec::new();
+    for ch in Channel::ALL {
+        let rows: Vec<&Shrinkage> = d.shrinkage.iter().filter(|s| s.channel == ch).collect();
+        for axis in PartAxis::ALL {
+            let mut pts: Vec<(f64, f64, f64)> = rows
+                .iter()
+                .filter_map(|s| {
+                    let (a, x) = s.part.position()?;
+                    (a == axis && s.noise_floor > 0.0)
+                        .then(|| (x, s.before / s.noise_floor, s.after / s.noise_floor))
+                })
+                .collect();
+            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+            if !pts.is_empty() {
+                panels.push(gap_panel(d, ch, axis, &pts));
+            }
+        }
+    }
+    Figure {
+        panels,
+        columns: 3,
+        width: 1500,
+        row_height: 300,
+    }
+}
+
+/// One channel against one axis: (position, before, after) over the floor.
+fn gap_panel(d: &Diagnosis, ch: Channel, axis: PartAxis, pts: &[(f64, f64, f64)]) -> Panel {
+    let (x_label, title) = match axis {
+        PartAxis::Time => (
+            "time after the input starts (window centre), s",
+            "by time window",
+        ),
+        PartAxis::Ay => ("|ay| band centre, m/s²", "by lateral-acceleration level"),
+        PartAxis::Speed => ("speed band centre, m/s", "by speed"),
+    };
+    let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
+    let before: Vec<f64> = pts.iter().map(|p| p.1).collect();
+    let after: Vec<f64> = pts.iter().map(|p| p.2).collect();
+    let mut series = vec![
+        Series::line("base model", &x, &before, 1),
+        Series::line("", &x, &before, 1).styled(Style::Points(4)),
+    ];
+    if !d.verdict.effects.is_empty() {
+        series.push(Series::line(
+            &format!("with {}", d.verdict.effects.join(" + ")),
+            &x,
+            &after,
+            2,
+        ));
+        series.push(Series::line("", &x, &after, 2).styled(Style::Points(4)));
+    }
+    let (x0, x1) = (x[0] - 0.5, x[x.len() - 1] + 0.5);
+    series.push(Series::line("3 × noise floor", &[x0, x1], &[3.0, 3.0], 7).styled(Style::Dashed));
+    Panel {
+        title: format!("{} {title}: held-out RMS / noise floor", ch.name()),
+        x_label: x_label.into(),
+        y_label: "RMS / noise floor".into(),
+        series,
+        x_range: Some((x0, x1)),
+        y_range: None,
+    }
+}
+
+/// Measured, base and augmented held-out replays of the three runs with the
+/// largest base-model gap.
+fn overlays(d: &Diagnosis) -> Figure {
+    let mut panels = Vec::new();
+    for o in d.overlays.iter().take(3) {
+        let name = Path::new(&o.run)
+            .file_name()
+            .map_or(o.run.clone(), |s| s.to_string_lossy().into_owned());
+        for (ch, m) in &o.measured {
+            if *ch == Channel::Beta && o.measured.len() > 2 {
+                continue;
+            }
+            let mut series = vec![
+                Series::line("measured", &o.t, m, 7).styled(Style::Points(1)),
+                Series::line("base model", &o.t, observed_channel(&o.base, *ch), 1)
+                    .styled(Style::Dashed),
+            ];
+            if !d.verdict.effects.is_empty() {
+                series.push(Series::line(
+                    &format!("with {}", d.verdict.effects.join(" + ")),
+                    &o.t,
+                    observed_channel(&o.after, *ch),
+                    2,
+                ));
+            }
+            panels.push(Panel {
+                title: format!("{name}: {} (held out)", ch.name()),
+                x_label: "t, s".into(),
+                y_label: format!("{}, {}", ch.name(), ch.unit()),
+                series,
+                x_range: None,
+                y_range: None,
+            });
+        }
+    }
+    Figure {
+        panels,
+        columns: 2,
+        width: 1400,
+        row_height: 280,
+    }
+}

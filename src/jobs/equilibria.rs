@@ -1,0 +1,334 @@
+//! `equilibria` as one job (Li, Jia & Zhao): a sweep file in; every
+//! steering equilibrium over the grid by PSO and the exact solver,
+//! cross-checked, with stability and bifurcations, out as
+//! `equilibria.csv`, `bifurcations.csv`, `continua.csv`, `summary.json` and
+//! the figures of [`crate::equilibria::plots`].
+
+use crate::equilibria::bifurcation::Bifurcation;
+use crate::equilibria::pso::PsoSearch;
+use crate::equilibria::sweep::{self, SweepResult};
+use crate::equilibria::{exact, plots, FoundBy, SearchBox};
+use crate::error::Error;
+use crate::io::sweep::{load_sweep, Sweep};
+use crate::report::progress::Progress;
+use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
+use crate::vehicle::Kinematics;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// `summary.json`: agreement, residuals, counts and bifurcations.
+#[derive(Debug, Clone, Serialize)]
+pub struct EquilibriaSummary {
+    /// Sweep name.
+    pub sweep: String,
+    /// Conditions of the grid.
+    pub conditions: usize,
+    /// Conditions where PSO and the exact solver agree.
+    pub agreeing: usize,
+    /// The same, %.
+    pub agreement_percent: f64,
+    /// Largest residual max(|β̇|, |ṙ|) of an equilibrium.
+    pub max_residual: f64,
+    /// PSO seed.
+    pub seed: u64,
+    /// PSO settings.
+    pub pso: PsoSearch,
+    /// The search box.
+    #[serde(rename = "box")]
+    pub search_box: SearchBox,
+    /// Model evaluations of the swarms.
+    pub pso_evaluations: usize,
+    /// Wall time, s.
+    pub seconds: f64,
+    /// Conditions by the number of equilibria in the box.
+    pub equilibria_in_box_histogram: BTreeMap<usize, usize>,
+    /// Conditions with a continuum of equilibria.
+    pub conditions_with_continua: usize,
+    /// Bifurcations located.
+    pub bifurcations: Vec<Bifurcation>,
+}
+
+/// The report of `equilibria`.
+#[derive(Debug, Clone, Serialize)]
+pub struct EquilibriaReport {
+    /// `summary.json`.
+    pub summary: EquilibriaSummary,
+    /// Every condition's equilibria.
+    #[serde(skip)]
+    pub result: SweepResult,
+    /// The sweep as loaded.
+    #[serde(skip)]
+    pub sweep: Sweep,
+    /// The output folder.
+    #[serde(skip)]
+    pub out_dir: PathBuf,
+}
+
+const FILES: [&str; 4] = [
+    "equilibria.csv",
+    "bifurcations.csv",
+    "summary.json",
+    "continua.csv",
+];
+
+/// Runs the sweep of the file `path`; `out` is the output folder (default
+/// `out/<sweep name>`), checked against the inputs first.
+pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
+    let sw = load_sweep(path)?;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sw.name), Path::to_path_buf);
+    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sw.inputs)?;
+    let n = sw.grid.len();
+    let t0 = Instant::now();
+    let res = {
+        let progress = Progress::start("equilibria", n);
+        sweep::run(
+            &sw.model,
+            &sw.grid,
+            &sw.search_box,
+            &sw.pso,
+            sw.report.bifurcations,
+            progress.counter(),
+        )
+    };
+    let seconds = t0.elapsed().as_secs_f64();
+    let agree = res.agreeing();
+    let mut counts = BTreeMap::new();
+    for p in &res.points {
+        let k = p.found.iter().filter(|f| f.in_box).count();
+        *counts.entry(k).or_insert(0usize) += 1;
+    }
+    let summary = EquilibriaSummary {
+        sweep: sw.name.clone(),
+        conditions: n,
+        agreeing: agree,
+        agreement_percent: 100.0 * agree as f64 / n as f64,
+        max_residual: res
+            .points
+            .iter()
+            .flat_map(|p| &p.found)
+            .map(|f| f.equilibrium.residual)
+            .fold(0.0, f64::max),
+        seed: sw.pso.seed,
+        pso: sw.pso,
+        search_box: sw.search_box,
+        pso_evaluations: res.points.iter().map(|p| p.pso_evaluations).sum(),
+        seconds,
+        equilibria_in_box_histogram: counts,
+        conditions_with_continua: res.points.iter().filter(|p| !p.continua.is_empty()).count(),
+        bifurcations: res.bifurcations.clone(),
+    };
+    Ok(EquilibriaReport {
+        summary,
+        result: res,
+        sweep: sw,
+        out_dir,
+    })
+}
+
+impl EquilibriaReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let (sw, s) = (&self.sweep, &self.summary);
+        let mut out = vec![
+            format!(
+                "{}: {} conditions ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, load transfer {}",
+                sw.name,
+                s.conditions,
+                sw.grid.steer.len(),
+                sw.grid.friction.len(),
+                sw.grid.speed.len(),
+                sw.model.front.model_name(),
+                sw.model.rear.model_name(),
+                match sw.model.options.kinematics {
+                    Kinematics::Exact => "exact",
+                    Kinematics::SmallAngle => "small-angle",
+                },
+                sw.model.options.load_transfer
+            ),
+            format!(
+                "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {:?}",
+                sw.search_box.beta_max, sw.search_box.yaw_rate_max, sw.pso.seed, sw.pso.particles, sw.pso.iterations, sw.pso.fitness
+            ),
+        ];
+        if s.conditions_with_continua > 0 {
+            out.push(format!(
+                "  {} conditions have a continuum of equilibria (both axles sliding at constant force: \
+                 the tyres' sliding force does not fall with slip); see continua.csv",
+                s.conditions_with_continua
+            ));
+        }
+        out.push(format!(
+            "  PSO and exact agree at {}/{} conditions ({:.1} %); largest residual {:.1e}; {:.2} s",
+            s.agreeing, s.conditions, s.agreement_percent, s.max_residual, s.seconds
+        ));
+        for (k, c) in &s.equilibria_in_box_histogram {
+            out.push(format!("  {c} conditions with {k} equilibria in the box"));
+        }
+        for b in &s.bifurcations {
+            out.push(format!(
+                "  {:?} along {} at steer {:.6} rad, friction {:.4}, speed {:.3} m/s: β {:.4} rad, r {:.4} rad/s, {} + {}, residual {:.1e}, criterion {:.1e}, {}",
+                b.kind,
+                b.axis.name(),
+                b.at.steer,
+                b.at.friction,
+                b.at.speed,
+                b.beta,
+                b.yaw_rate,
+                b.kinds[0].name(),
+                b.kinds[1].name(),
+                b.residual,
+                b.criterion,
+                if b.verified { "verified" } else { "NOT verified" }
+            ));
+        }
+        out
+    }
+
+    /// Writes the three tables, the summary and the figures.
+    pub fn write(&self) -> Result<(), Error> {
+        let files = FILES.map(|f| self.out_dir.join(f));
+        let r = &self.result;
+        write_csv(&files[0], &EQUILIBRIA_HEADER, equilibria_rows(r))?;
+        write_csv(&files[1], &BIFURCATIONS_HEADER, bifurcation_rows(r))?;
+        write_csv(&files[3], &CONTINUA_HEADER, continua_rows(r))?;
+        write_json_sorted(&files[2], &self.summary)?;
+        let sw = &self.sweep;
+        if sw.report.plots {
+            let dir = &self.out_dir;
+            for axis in sw.grid.varying() {
+                let file = dir.join(format!("branches_{}.png", axis.name()));
+                plots::branch_diagram(r, axis, &sw.search_box, &file)?;
+            }
+            let v = sw.grid.varying();
+            if v.len() >= 2 {
+                let file = dir.join("stability_map.png");
+                plots::stability_map(r, v[0], v[1], &sw.search_box, &file)?;
+            }
+            for (k, c) in sw.portraits.iter().enumerate() {
+                let eqs = exact::solve(&sw.model, c);
+                let file = dir.join(format!("phase_portrait_{k}.png"));
+                plots::phase_portrait(&sw.model, c, &sw.search_box, &eqs, &file)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+const EQUILIBRIA_HEADER: [&str; 14] = [
+    "steer",
+    "friction",
+    "speed",
+    "beta",
+    "yaw_rate",
+    "kind",
+    "eig1_re",
+    "eig1_im",
+    "eig2_re",
+    "eig2_im",
+    "residual",
+    "found_by",
+    "in_box",
+    "alpha_rear",
+];
+
+/// One row per equilibrium found.
+fn equilibria_rows(r: &SweepResult) -> impl Iterator<Item = Vec<String>> + '_ {
+    r.points.iter().flat_map(|p| {
+        p.found.iter().map(move |f| {
+            let (c, e) = (p.condition, &f.equilibrium);
+            let ev = e.stability.eigenvalues;
+            let by = match f.found_by {
+                FoundBy::Both => "both",
+                FoundBy::Exact => "exact",
+                FoundBy::Pso => "pso",
+            };
+            vec![
+                c.steer.to_string(),
+                c.friction.to_string(),
+                c.speed.to_string(),
+                e.beta.to_string(),
+                e.yaw_rate.to_string(),
+                e.stability.kind.name().to_string(),
+                ev[0].0.to_string(),
+                ev[0].1.to_string(),
+                ev[1].0.to_string(),
+                ev[1].1.to_string(),
+                format!("{:e}", e.residual),
+                by.to_string(),
+                f.in_box.to_string(),
+                e.alpha_rear.to_string(),
+            ]
+        })
+    })
+}
+
+const BIFURCATIONS_HEADER: [&str; 12] = [
+    "kind",
+    "axis",
+    "steer",
+    "friction",
+    "speed",
+    "beta",
+    "yaw_rate",
+    "residual",
+    "criterion",
+    "kind_a",
+    "kind_b",
+    "verified",
+];
+
+/// One row per bifurcation.
+fn bifurcation_rows(r: &SweepResult) -> impl Iterator<Item = Vec<String>> + '_ {
+    r.bifurcations.iter().map(|b| {
+        vec![
+            b.kind.name().to_string(),
+            b.axis.name().to_string(),
+            b.at.steer.to_string(),
+            b.at.friction.to_string(),
+            b.at.speed.to_string(),
+            b.beta.to_string(),
+            b.yaw_rate.to_string(),
+            format!("{:e}", b.residual),
+            format!("{:e}", b.criterion),
+            b.kinds[0].name().to_string(),
+            b.kinds[1].name().to_string(),
+            b.verified.to_string(),
+        ]
+    })
+}
+
+const CONTINUA_HEADER: [&str; 9] = [
+    "steer",
+    "friction",
+    "speed",
+    "alpha_rear_from",
+    "alpha_rear_to",
+    "beta_from",
+    "beta_to",
+    "yaw_rate_from",
+    "yaw_rate_to",
+];
+
+/// One row per interval of a continuum of equilibria.
+fn continua_rows(r: &SweepResult) -> impl Iterator<Item = Vec<String>> + '_ {
+    r.points.iter().flat_map(|p| {
+        let c = p.condition;
+        p.continua.iter().map(move |k| {
+            [
+                c.steer,
+                c.friction,
+                c.speed,
+                k.alpha_rear.0,
+                k.alpha_rear.1,
+                k.beta.0,
+                k.beta.1,
+                k.yaw_rate.0,
+                k.yaw_rate.1,
+            ]
+            .map(|v| v.to_string())
+            .to_vec()
+        })
+    })
+}

@@ -1,0 +1,586 @@
+//! `identify` as one job: rig data in; a fitted tyre file, its JSON report
+//! and its figure out. The models of [`crate::identify::SWARM_MODELS`] are fitted by
+//! a swarm and a local polish (Zhang & Li (2017), Zhang et al. (2021)):
+//! lateral force first (or the longitudinal force of a file without lateral
+//! data), then the aligning moment and the longitudinal force where the data
+//! and the model have them; PAC89 also by Zhang et al.'s (2021) two-stage
+//! identification, the better of the two written. The Magic Formula 6.1 /
+//! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
+//! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
+
+use crate::identify::data::{Condition, Point};
+use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
+use crate::identify::pac89_two_stage::{self, TwoStage};
+use crate::io::rig::read_rig;
+mod figures;
+mod staged;
+
+use crate::error::Error;
+use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings, LocalMethod};
+use crate::report::{refuse_overwrites, write_bytes, write_json_sorted};
+use crate::tyre::{ModelName, Pac89, Tyre};
+use serde::Serialize;
+use staged::run_staged;
+pub use staged::StagedJob;
+use std::path::PathBuf;
+
+/// The models `identify` fits: the swarm-fitted ones and the Magic Formula's
+/// two versions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum IdentifyModel {
+    /// Gim (swarm fit).
+    Gim,
+    /// Simplified Magic Formula (swarm fit).
+    MagicSimple,
+    /// UniTire (swarm fit).
+    Unitire,
+    /// PAC89 (swarm fit and Zhang et al.'s (2021) two stages).
+    Pac89,
+    /// Linear (swarm fit).
+    Linear,
+    /// Magic Formula 6.1, Wei et al.'s (2010) staged fit.
+    Mf61,
+    /// Magic Formula 6.2 (`FITTYP = 62`), the same stages.
+    Mf62,
+}
+
+impl IdentifyModel {
+    /// Every model, in the order the messages list them.
+    pub const ALL: [IdentifyModel; 7] = [
+        Self::Gim,
+        Self::MagicSimple,
+        Self::Unitire,
+        Self::Pac89,
+        Self::Linear,
+        Self::Mf61,
+        Self::Mf62,
+    ];
+
+    /// The name on the command line and in file names.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Gim => "gim",
+            Self::MagicSimple => "magic-simple",
+            Self::Unitire => "unitire",
+            Self::Pac89 => "pac89",
+            Self::Linear => "linear",
+            Self::Mf61 => "mf61",
+            Self::Mf62 => "mf62",
+        }
+    }
+
+    /// The tyre model of a swarm fit (`None`: the staged Magic Formula fit).
+    pub fn swarm_model(self) -> Option<ModelName> {
+        match self {
+            Self::Gim => Some(ModelName::Gim),
+            Self::MagicSimple => Some(ModelName::MagicSimple),
+            Self::Unitire => Some(ModelName::Unitire),
+            Self::Pac89 => Some(ModelName::Pac89),
+            Self::Linear => Some(ModelName::Linear),
+            Self::Mf61 | Self::Mf62 => None,
+        }
+    }
+}
+
+impl std::fmt::Display for IdentifyModel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::str::FromStr for IdentifyModel {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.as_str() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|m| m.as_str()).collect();
+                Error::Options(format!(
+                    "unknown tyre model `{s}`: one of {}",
+                    names.join(", ")
+                ))
+            })
+    }
+}
+
+/// The local polish after the swarm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Polish {
+    /// Levenberg–Marquardt.
+    #[default]
+    Lm,
+    /// Zhang & Li's (2017) modified Gauss–Newton.
+    Gn,
+    /// None: the swarm's best as it is.
+    None,
+}
+
+impl std::str::FromStr for Polish {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        match s {
+            "lm" => Ok(Polish::Lm),
+            "gn" => Ok(Polish::Gn),
+            "none" => Ok(Polish::None),
+            _ => Err(Error::Options(format!(
+                "unknown local method `{s}`: lm, gn or none"
+            ))),
+        }
+    }
+}
+
+impl From<Polish> for LocalMethod {
+    fn from(p: Polish) -> Self {
+        match p {
+            Polish::Lm => LocalMethod::LevenbergMarquardt,
+            Polish::Gn => LocalMethod::GaussNewton,
+            Polish::None => LocalMethod::None,
+        }
+    }
+}
+
+/// Where the staged Magic Formula fit starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum StartArg {
+    /// Estimates from the data, then MINPACK's Levenberg–Marquardt.
+    #[default]
+    Data,
+    /// Wei et al. (2010): every parameter 1, μ = 0.1, β = 5.
+    Paper,
+    /// The template's values, then MINPACK's Levenberg–Marquardt.
+    Template,
+}
+
+/// What `identify` is asked to do.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Rig data file.
+    pub data: PathBuf,
+    /// The model.
+    pub model: IdentifyModel,
+    /// Seed of the swarm.
+    pub seed: u64,
+    /// Tyre file to write (default: [`Options::output_path`]).
+    pub out: Option<PathBuf>,
+    /// Keep only the pressure level holding this value, Pa.
+    pub pressure: Option<f64>,
+    /// Keep only the camber level holding this value, rad.
+    pub camber: Option<f64>,
+    /// The polish after the swarm.
+    pub local: Polish,
+    /// Slip-angle bin for thinning, degrees (0: none).
+    pub alpha_bin_deg: f64,
+    /// Slip-ratio bin for thinning (0: none).
+    pub kappa_bin: f64,
+    /// Magic Formula: where the parameters start.
+    pub start: StartArg,
+    /// Magic Formula: the .tir whose constants and layout are kept.
+    pub template: Option<PathBuf>,
+    /// Magic Formula: Levenberg–Marquardt iterations per step.
+    pub max_iterations: usize,
+}
+
+impl Options {
+    /// The tyre file written: `out`, else `out/<data stem>_<model>.toml`
+    /// (`.tir` for the Magic Formula).
+    pub fn output_path(&self) -> PathBuf {
+        let ext = if self.model.swarm_model().is_some() {
+            "toml"
+        } else {
+            "tir"
+        };
+        self.out.clone().unwrap_or_else(|| {
+            let stem = self
+                .data
+                .file_stem()
+                .map_or("data".into(), |s| s.to_string_lossy().into_owned());
+            PathBuf::from("out").join(format!("{stem}_{}.{ext}", self.model))
+        })
+    }
+}
+
+/// The report of `identify`: `<out>.report.json` holds its serialised form.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum IdentifyReport {
+    /// A swarm fit.
+    Swarm(Box<SwarmReport>),
+    /// The staged Magic Formula fit.
+    Staged(Box<StagedJob>),
+}
+
+/// Which of PAC89's two fits was written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Written {
+    /// Zhang et al.'s (2021) two-stage identification.
+    TwoStage,
+    /// The direct swarm fit.
+    Direct,
+}
+
+/// Zhang et al.'s (2021) two stages with the overall σ of their result.
+#[derive(Debug, Clone, Serialize)]
+pub struct TwoStageReport {
+    /// The stages.
+    #[serde(flatten)]
+    pub stages: TwoStage,
+    /// σ over all points of the polished result, %.
+    pub polished_overall_sigma_percent: f64,
+}
+
+/// The report of a swarm fit: the lateral (or longitudinal) fit, then the
+/// further channels fitted with it held.
+#[derive(Debug, Clone, Serialize)]
+pub struct SwarmReport {
+    /// The first channel's direct fit.
+    #[serde(flatten)]
+    pub fit: Fit,
+    /// PAC89: the two-stage identification.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub two_stage: Option<TwoStageReport>,
+    /// PAC89: which fit was written.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub written: Option<Written>,
+    /// The aligning moment's fit.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub aligning: Option<Fit>,
+    /// The longitudinal force's fit after a lateral one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub longitudinal: Option<Fit>,
+    /// The data file.
+    pub data: String,
+    /// Where every sample went.
+    pub grouping: GroupingReport,
+    /// The same for the longitudinal data fitted after a lateral fit.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub longitudinal_grouping: Option<GroupingReport>,
+    /// The tyre written (every channel fitted).
+    #[serde(skip)]
+    pub tyre: Tyre,
+    /// What the job was asked.
+    #[serde(skip)]
+    pub options: Options,
+    /// Pressure levels pooled into one fit (a warning when more than one).
+    #[serde(skip)]
+    pub pressures_pooled: usize,
+    /// The conditions of the first channel.
+    #[serde(skip)]
+    pub conditions: Vec<Condition>,
+    /// The longitudinal conditions after a lateral fit.
+    #[serde(skip)]
+    pub longitudinal_conditions: Vec<Condition>,
+}
+
+impl IdentifyReport {
+    /// The tyre file, the report and (swarm fits) the figure.
+    pub fn outputs(&self) -> Vec<PathBuf> {
+        match self {
+            IdentifyReport::Swarm(r) => outputs(&r.options, true),
+            IdentifyReport::Staged(r) => outputs(&r.options, false),
+        }
+    }
+
+    /// Warnings on the fit's inputs.
+    pub fn warnings(&self) -> Vec<String> {
+        match self {
+            IdentifyReport::Swarm(r) if r.options.pressure.is_none() && r.pressures_pooled > 1 => {
+                vec![format!(
+                    "{} pressures pooled into one {} fit, which has no pressure terms: select one with --pressure",
+                    r.pressures_pooled, r.options.model
+                )]
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        match self {
+            IdentifyReport::Swarm(r) => r.summary(),
+            IdentifyReport::Staged(r) => r.summary(),
+        }
+    }
+
+    /// Writes the tyre file, the report and the figure.
+    pub fn write(&self) -> Result<(), Error> {
+        let files = self.outputs();
+        match self {
+            IdentifyReport::Swarm(r) => {
+                let text = toml::to_string(&r.tyre).map_err(|e| {
+                    Error::output(&files[0], format!("serialising the fitted tyre: {e}"))
+                })?;
+                let header = format!(
+                    "# Identified by `handling identify {} --model {} --seed {}`: sigma {:.3} %.\n",
+                    r.options.data.display(),
+                    r.options.model,
+                    r.options.seed,
+                    r.fit.sigma_percent
+                );
+                write_bytes(&files[0], format!("{header}{text}").as_bytes())?;
+                write_json_sorted(&files[1], r)?;
+                figures::fit_figure(r).save(&files[2])
+            }
+            IdentifyReport::Staged(r) => {
+                write_bytes(&files[0], r.tir.as_bytes())?;
+                write_json_sorted(&files[1], r)
+            }
+        }
+    }
+
+    /// The closing line: what was written.
+    pub fn wrote(&self) -> String {
+        let f: Vec<String> = self
+            .outputs()
+            .iter()
+            .map(|p| p.display().to_string())
+            .collect();
+        match self {
+            IdentifyReport::Swarm(_) => format!("wrote {}, {} and {}", f[0], f[1], f[2]),
+            IdentifyReport::Staged(r) => format!(
+                "identified in {:.2} s; wrote {} and {}",
+                r.report.seconds, f[0], f[1]
+            ),
+        }
+    }
+}
+
+/// The tyre file, `<out>.report.json` and, with a figure, `<out>.png`.
+fn outputs(o: &Options, figure: bool) -> Vec<PathBuf> {
+    let out = o.output_path();
+    let mut files = vec![out.clone(), out.with_extension("report.json")];
+    if figure {
+        files.push(out.with_extension("png"));
+    }
+    files
+}
+
+/// Runs `identify`: reads and groups the data, fits, and returns the report
+/// (nothing is written: [`IdentifyReport::write`]). An output that is one
+/// of the inputs is refused before anything is fitted.
+pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
+    match o.model.swarm_model() {
+        Some(model) => run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r))),
+        None => run_staged(o).map(|r| IdentifyReport::Staged(Box::new(r))),
+    }
+}
+
+/// A failure of a fit to the data of `o`.
+fn on_data<'a>(o: &'a Options, what: &str) -> impl Fn(Error) -> Error + 'a {
+    let what = what.to_string();
+    move |e| Error::Data {
+        path: o.data.clone(),
+        message: format!("{what}{e}"),
+    }
+}
+
+/// The swarm fit of `model`: the first channel, PAC89's two stages, the
+/// aligning moment and the longitudinal force.
+fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
+    let mut settings = FitSettings::new(o.seed);
+    settings.local = o.local.into();
+    let data = read_rig(&o.data)?;
+    if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
+        return Err(Error::Data {
+            path: o.data.clone(),
+            message: format!(
+                "no lateral data (columns `alpha` and `fy`), and the {model} model has no longitudinal force"
+            ),
+        });
+    }
+    let grouping = Grouping {
+        pressure: o.pressure,
+        camber: o.camber,
+        alpha_bin: o.alpha_bin_deg.to_radians(),
+        kappa_bin: o.kappa_bin,
+        ..Grouping::default()
+    };
+    let long_view = data.longitudinal_view();
+    let (first, grouped) = match (&long_view, data.has_lateral()) {
+        (_, true) => (
+            Channel::LateralForce,
+            group(&o.data, &data, &grouping, SlipAxis::Angle)?,
+        ),
+        (Some(view), false) => (
+            Channel::LongitudinalForce,
+            group(&o.data, view, &grouping, SlipAxis::Ratio)?,
+        ),
+        (None, false) => {
+            return Err(on_data(o, "")(Error::Fit(
+                "no lateral data and no longitudinal data".into(),
+            )))
+        }
+    };
+    let conditions = grouped.conditions;
+    if conditions.is_empty() {
+        return Err(Error::Data {
+            path: o.data.clone(),
+            message: format!(
+                "no test condition found in the data ({})",
+                grouped.report.lines().join("; ")
+            ),
+        });
+    }
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.sort_by(f64::total_cmp);
+    let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
+    refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
+    // The models fitted here have no pressure terms: several pressures
+    // pooled into one parameter set blur their differences into the fit.
+    let pressures_pooled = grouped
+        .report
+        .levels
+        .iter()
+        .find(|l| l.variable == Variable::Pressure)
+        .map_or(0, |l| l.levels.len());
+    let fit = fit_channel(&tyre0, first, &conditions, &settings).map_err(on_data(o, ""))?;
+    let mut r = SwarmReport {
+        tyre: fit.tyre.clone(),
+        fit,
+        two_stage: None,
+        written: None,
+        aligning: None,
+        longitudinal: None,
+        data: o.data.display().to_string(),
+        grouping: grouped.report,
+        longitudinal_grouping: None,
+        options: o.clone(),
+        pressures_pooled,
+        conditions,
+        longitudinal_conditions: Vec::new(),
+    };
+    if model == ModelName::Pac89 && first == Channel::LateralForce {
+        two_stage(o, &mut r, &settings)?;
+    }
+    // The aligning moment, where the data have it and the model has one,
+    // with the lateral parameters just fitted held.
+    if first == Channel::LateralForce && data.mz.is_some() && !r.tyre.aligning_names().is_empty() {
+        let mz = fit_channel(&r.tyre, Channel::AligningMoment, &r.conditions, &settings)
+            .map_err(on_data(o, "aligning moment: "))?;
+        r.tyre = mz.tyre.clone();
+        r.aligning = Some(mz);
+    }
+    // The longitudinal force, where the data have it and the model has one,
+    // with the same pressure and camber selection as the lateral data.
+    if let (Some(view), true, Channel::LateralForce) =
+        (&long_view, !r.tyre.longitudinal_names().is_empty(), first)
+    {
+        let g = group(&o.data, view, &grouping, SlipAxis::Ratio)?;
+        let fx = fit_channel(
+            &r.tyre,
+            Channel::LongitudinalForce,
+            &g.conditions,
+            &settings,
+        )
+        .map_err(on_data(o, "longitudinal force: "))?;
+        r.tyre = fx.tyre.clone();
+        r.longitudinal = Some(fx);
+        r.longitudinal_conditions = g.conditions;
+        r.longitudinal_grouping = Some(g.report);
+    }
+    Ok(r)
+}
+
+/// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
+/// fit; the better of the two becomes the tyre.
+fn two_stage(o: &Options, r: &mut SwarmReport, settings: &FitSettings) -> Result<(), Error> {
+    let stages = pac89_two_stage::identify(&r.conditions, settings)
+        .map_err(|e| on_data(o, "")(Error::Fit(e.to_string())))?;
+    let all: Vec<Point> = r
+        .conditions
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .collect();
+    let tyre = Tyre::Pac89(Pac89 {
+        a: stages.polished,
+        b: None,
+        c: None,
+        ..Pac89::adams_example()
+    });
+    let (s, _) = sigma(&tyre, &all);
+    let written = if s < r.fit.sigma_percent {
+        r.tyre = tyre;
+        Written::TwoStage
+    } else {
+        Written::Direct
+    };
+    r.written = Some(written);
+    r.two_stage = Some(TwoStageReport {
+        stages,
+        polished_overall_sigma_percent: s,
+    });
+    Ok(())
+}
+
+impl SwarmReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let o = &self.options;
+        let mut out = vec![format!(
+            "{}: {} conditions; model {}, seed {}",
+            o.data.display(),
+            self.conditions.len(),
+            o.model,
+            o.seed
+        )];
+        out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
+        if let Some(t) = &self.two_stage {
+            out.push(format!(
+                "  two-stage (Zhang et al. 2021): stage 1 mean σ {:.3} %, stage 2 mean σ {:.3} %, after the joint polish {:.3} %",
+                t.stages.stage1_mean_sigma, t.stages.stage2_mean_sigma, t.stages.polished_mean_sigma
+            ));
+        }
+        let f = &self.fit;
+        out.push(format!(
+            "  σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {} evaluations, {:.2} s",
+            f.sigma_percent, f.sigma_pso_percent, f.rms, f.evaluations, f.seconds
+        ));
+        for c in &f.curves {
+            out.push(format!(
+                "    Fz {:>7.0} N, camber {:>5.2}°, pressure {}: {:>4} points, σ {:.3} %, RMS {:.1} N",
+                c.fz,
+                c.camber.to_degrees(),
+                c.pressure
+                    .map_or("—".into(), |p| format!("{:.0} kPa", p / 1000.0)),
+                c.points,
+                c.sigma_percent,
+                c.rms
+            ));
+        }
+        out.extend(parameter_warnings(f));
+        if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
+            out.push(format!(
+                "  writing the two-stage result (σ {:.3} % < direct {:.3} %)",
+                t.polished_overall_sigma_percent, f.sigma_percent
+            ));
+        }
+        if let Some(mz) = &self.aligning {
+            out.push(format!(
+                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {:.2} N·m, {:.2} s",
+                mz.sigma_percent, mz.sigma_pso_percent, mz.rms, mz.seconds
+            ));
+            out.extend(parameter_warnings(mz));
+        }
+        if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
+            out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
+            out.push(format!(
+                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {:.2} s",
+                fx.sigma_percent, fx.sigma_pso_percent, fx.rms, fx.seconds
+            ));
+        }
+        out
+    }
+}
+
+/// The parameters of a fit that carry a warning, one line each.
+fn parameter_warnings(f: &Fit) -> Vec<String> {
+    f.parameters
+        .iter()
+        .filter_map(|p| {
+            let w = p.warning.as_deref()?;
+            Some(format!("  warning: {} = {:.6}: {w}", p.name, p.value))
+        })
+        .collect()
+}

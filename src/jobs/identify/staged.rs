@@ -1,0 +1,131 @@
+//! `identify --model mf61|mf62` as one job: Wei et al.'s (2010) five stages
+//! ([`crate::identify::mf_staged`]) on rig data, the result written as a .tir (a
+//! template's constants and layout kept) that is read back and checked to
+//! reproduce the fitted forces.
+
+use super::{IdentifyModel, Options, StartArg};
+use crate::error::Error;
+use crate::identify::mf_staged::{self, RowAccount, StagedReport, StartScheme};
+use crate::io::rig::read_rig;
+use crate::io::tir::TirDocument;
+use crate::report::refuse_overwrites;
+use crate::tyre::mf::MfVersion;
+use serde::Serialize;
+
+/// The report of the staged Magic Formula fit.
+#[derive(Debug, Clone, Serialize)]
+pub struct StagedJob {
+    /// The stages.
+    #[serde(flatten)]
+    pub report: StagedReport,
+    /// The data file.
+    pub data: String,
+    /// Samples and rows fitted.
+    pub rows: RowAccount,
+    /// Largest relative difference between the forces of the written .tir
+    /// read back and the fitted ones.
+    pub round_trip_relative_difference: f64,
+    /// The .tir text written.
+    #[serde(skip)]
+    pub tir: String,
+    /// What the job was asked.
+    #[serde(skip)]
+    pub options: Options,
+}
+
+impl StagedJob {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let o = &self.options;
+        let mut out = vec![format!(
+            "{}: {} samples, {} rows; model {}, start {:?}",
+            o.data.display(),
+            self.rows.samples,
+            self.rows.rows,
+            o.model,
+            o.start
+        )];
+        if let Some(g) = &self.rows.thinning {
+            out.extend(g.lines().iter().map(|l| format!("  {l}")));
+        }
+        for s in &self.report.stages {
+            match &s.skipped {
+                Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
+                None => out.push(format!(
+                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %; Wei et al. 2010: {:.2} %), RMS {:.2}, {:.2} s",
+                    s.stage.label(),
+                    s.points,
+                    s.parameters.iter().filter(|p| p.free).count(),
+                    s.sigma_percent,
+                    s.sigma_start_percent,
+                    s.paper_sigma_percent,
+                    s.rms,
+                    s.seconds
+                )),
+            }
+            out.extend(s.warnings.iter().map(|w| format!("    warning: {w}")));
+            out.extend(s.parameters.iter().filter_map(|p| {
+                let w = p.warning.as_deref()?;
+                Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
+            }));
+        }
+        if let Some(s) = self.report.sigma_fy_mz_percent {
+            out.push(format!("  Fy and Mz together: σ {s:.3} %"));
+        }
+        out
+    }
+}
+
+/// Runs the staged fit of `o` (its model mf61 or mf62).
+pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
+    let version = match o.model {
+        IdentifyModel::Mf62 => MfVersion::Mf62,
+        _ => MfVersion::Mf61,
+    };
+    let out = o.output_path();
+    let mut inputs = vec![o.data.clone()];
+    inputs.extend(o.template.clone());
+    refuse_overwrites(&[out.clone(), out.with_extension("report.json")], &inputs)?;
+    let template = o.template.as_deref().map(TirDocument::read).transpose()?;
+    let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
+    let data = read_rig(&o.data)?;
+    let default_speed = template_tyre
+        .as_ref()
+        .map_or(16.7, |t| t.coefficients.LONGVL);
+    let prepared = mf_staged::prepare(&o.data, &data, o.alpha_bin_deg.to_radians(), default_speed)?;
+    let settings = mf_staged::Settings {
+        version,
+        start: match o.start {
+            StartArg::Data => StartScheme::Data,
+            StartArg::Paper => StartScheme::Paper,
+            StartArg::Template if o.template.is_none() => {
+                return Err(Error::Options(
+                    "--start template needs --template <file.tir>".into(),
+                ))
+            }
+            StartArg::Template => StartScheme::Template,
+        },
+        template: template_tyre,
+        max_iterations: o.max_iterations,
+    };
+    let id = mf_staged::identify(&prepared.rows, &settings).map_err(|e| Error::Data {
+        path: o.data.clone(),
+        message: e.to_string(),
+    })?;
+    let tir = crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
+    let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
+    let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
+    if back > 1e-9 {
+        return Err(Error::Fit(format!(
+            "the written .tir does not reproduce the fitted forces (relative difference {back:.2e})"
+        )));
+    }
+    Ok(StagedJob {
+        report: id.report,
+        data: o.data.display().to_string(),
+        rows: prepared.account,
+        round_trip_relative_difference: back,
+        tir,
+        options: o.clone(),
+    })
+}

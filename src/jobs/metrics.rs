@@ -1,0 +1,149 @@
+//! `metrics` as one job: the step-steer metrics of a measured run, cleaned
+//! first ([`crate::metrics::measured`]); and the metric table that
+//! `simulate` prints too.
+
+use crate::error::Error;
+use crate::io::read_run;
+use crate::measured::clean::CleaningReport;
+use crate::metrics::measured::measured_step_metrics;
+use crate::metrics::{MetricSettings, StepMetrics};
+use serde::Serialize;
+use std::path::Path;
+
+/// The units of the metric reports.
+pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot in %; \
+                         tb in s·deg (GB/T 6323); total variances and er in s";
+
+/// The report of `metrics` (`--json` prints it): the metrics, the piece
+/// measured and how the run was cleaned.
+#[derive(Debug, Clone, Serialize)]
+pub struct MeasuredMetricsReport {
+    /// The run file.
+    pub scenario: String,
+    /// [`UNITS`].
+    pub units: &'static str,
+    /// The metrics.
+    #[serde(flatten)]
+    pub metrics: StepMetrics,
+    /// The piece measured.
+    pub piece: String,
+    /// Time for the steer to go from 10 % to 90 % of its step, s.
+    pub steer_rise_time: f64,
+    /// What the user should know.
+    pub warnings: Vec<String>,
+    /// How the run was cleaned.
+    pub cleaning: CleaningReport,
+    /// The piece's first sample, s.
+    #[serde(skip)]
+    pub t_start: f64,
+    /// Its last sample, s.
+    #[serde(skip)]
+    pub t_end: f64,
+}
+
+/// Reads, cleans and measures the run `path`.
+pub fn run(
+    path: &Path,
+    settings: &MetricSettings,
+    min_speed: f64,
+) -> Result<MeasuredMetricsReport, Error> {
+    let m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
+    Ok(MeasuredMetricsReport {
+        scenario: path.display().to_string(),
+        units: UNITS,
+        metrics: m.metrics,
+        piece: m.piece,
+        steer_rise_time: m.steer_rise_time,
+        warnings: m.warnings,
+        cleaning: m.cleaning,
+        t_start: m.t_start,
+        t_end: m.t_end,
+    })
+}
+
+impl MeasuredMetricsReport {
+    /// How the run was cleaned and measured, and the warnings: the lines
+    /// beside the table.
+    pub fn notes(&self) -> Vec<String> {
+        let mut out: Vec<String> = self
+            .cleaning
+            .summary(usize::MAX)
+            .iter()
+            .map(|l| format!("cleaning: {l}"))
+            .collect();
+        out.push(format!(
+            "measured piece: {} ({:.2}–{:.2} s); steer 10–90 % rise {:.3} s",
+            self.piece, self.t_start, self.t_end, self.steer_rise_time
+        ));
+        out.extend(self.warnings.iter().map(|w| format!("warning: {w}")));
+        out
+    }
+
+    /// The run's name and its metric table.
+    pub fn table(&self) -> Vec<String> {
+        let mut out = vec![self.scenario.clone()];
+        out.extend(metric_lines(&self.metrics));
+        out
+    }
+}
+
+/// The metric table: one line per metric, `—` where a response lacks one,
+/// and the notes on filtering, overshoot and settling.
+pub fn metric_lines(m: &StepMetrics) -> Vec<String> {
+    let opt =
+        |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
+    let mut out = vec![
+        format!(
+            "  steer step               {:>10.4} deg",
+            m.steer_step.to_degrees()
+        ),
+        format!(
+            "  yaw-rate response time   {:>10.4} s",
+            m.yaw_rate_response_time
+        ),
+        format!(
+            "  yaw-rate peak time       {:>10} s",
+            opt(m.yaw_rate_peak_time, 1.0)
+        ),
+        format!(
+            "  yaw-rate overshoot       {:>10.2} %",
+            m.yaw_rate_overshoot
+        ),
+        format!(
+            "  ay response time         {:>10} s",
+            opt(m.ay_response_time, 1.0)
+        ),
+        format!("  yaw-rate gain            {:>10.4} 1/s", m.yaw_rate_gain),
+        format!(
+            "  steady ay                {:>10} m/s²",
+            opt(m.ay_steady, 1.0)
+        ),
+        format!(
+            "  steady sideslip          {:>10} deg",
+            opt(m.beta_steady, 180.0 / std::f64::consts::PI)
+        ),
+        format!("  TB                       {:>10} s·deg", opt(m.tb, 1.0)),
+        format!(
+            "  E_r (yaw rate)           {:>10.4} s",
+            m.yaw_rate_total_variance
+        ),
+        format!(
+            "  E_ay                     {:>10} s",
+            opt(m.ay_total_variance, 1.0)
+        ),
+        format!("  Er                       {:>10} s", opt(m.er, 1.0)),
+    ];
+    if let Some(f) = m.filter_hz {
+        out.push(format!(
+            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {:.2} % of the step",
+            100.0 * m.yaw_rate_noise
+        ));
+    }
+    if m.yaw_rate_peak_time.is_none() {
+        out.push("  no overshoot: no yaw-rate maximum stands above the steady state by more than the noise".into());
+    }
+    if !m.settled {
+        out.push("  warning: the response has not settled in the steady window".into());
+    }
+    out
+}

@@ -1,0 +1,206 @@
+//! `simulate` as one job: a scenario in; the time history (`history.csv`),
+//! the step-steer metrics (`metrics.json`), the response figure
+//! (`response.png`) and, for a replayed measurement, where the model and
+//! the run disagree (`gap.json`) out.
+
+use super::metrics::{metric_lines, UNITS};
+use crate::diagnose::gap::{run_gap, ChannelGap};
+use crate::error::Error;
+use crate::io::load_scenario;
+use crate::manoeuvre::Manoeuvre;
+use crate::measured::clean::CleaningReport;
+use crate::measured::MeasuredRun;
+use crate::metrics::StepMetrics;
+use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted};
+use crate::sim::{LiftOff, Method, TimeHistory};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// `gap.json`: a replayed run against the model, channel by channel.
+#[derive(Debug, Clone, Serialize)]
+pub struct ReplayGap {
+    /// The run file.
+    pub run: String,
+    /// Per channel.
+    pub channels: Vec<ChannelGap>,
+    /// How the run was cleaned.
+    pub cleaning: Option<CleaningReport>,
+}
+
+/// The report of `simulate`.
+#[derive(Debug, Clone, Serialize)]
+pub struct SimulateReport {
+    /// Scenario name.
+    pub scenario: String,
+    /// The integration in words (method, steps, work).
+    pub integration: String,
+    /// Front and rear tyre models.
+    pub tyres: [&'static str; 2],
+    /// Friction scale.
+    pub friction: f64,
+    /// Step-steer metrics (step steers only).
+    pub metrics: Option<StepMetrics>,
+    /// Intervals with a wheel off the ground.
+    pub lift_offs: Vec<LiftOff>,
+    /// A replayed measurement's gap.
+    pub replay: Option<ReplayGap>,
+    /// The time history.
+    #[serde(skip)]
+    pub history: TimeHistory,
+    /// The replayed run.
+    #[serde(skip)]
+    pub measured: Option<MeasuredRun>,
+    /// The output folder.
+    #[serde(skip)]
+    pub out_dir: PathBuf,
+}
+
+/// `metrics.json`.
+#[derive(Serialize)]
+struct MetricsFile<'a> {
+    scenario: &'a str,
+    units: &'static str,
+    #[serde(flatten)]
+    metrics: &'a StepMetrics,
+    /// Intervals with a wheel off the ground (simulated runs only).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    lift_offs: &'a [LiftOff],
+}
+
+const FILES: [&str; 4] = ["history.csv", "metrics.json", "response.png", "gap.json"];
+
+/// Simulates the scenario of the file `path`; `out` is the output folder
+/// (default `out/<scenario name>`), checked against the inputs first.
+/// Everything is computed before anything is written
+/// ([`SimulateReport::write`]), so a failure leaves no outputs behind.
+pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
+    let sc = load_scenario(path)?;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
+    let sim = sc.integrator.simulate(&sc.model, &sc.manoeuvre, sc.initial);
+    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
+    let h = &sim.history;
+    let integration = match (sc.integrator.method, sim.stats()) {
+        (Method::Dopri5(tol), Some(st)) => format!(
+            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
+            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
+        ),
+        _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
+    };
+    let metrics = match sc.manoeuvre {
+        // From the dense output under Dormand–Prince (events located to
+        // the tolerance), from the rows under RK4.
+        Manoeuvre::StepSteer(_) => Some(
+            sc.integrator
+                .step_metrics(&sc.model, &sc.manoeuvre, &sim, &sc.metrics)
+                .map_err(Error::StepMetrics)?,
+        ),
+        _ => None,
+    };
+    let replay = sc.measured.as_ref().map(|run| ReplayGap {
+        run: run.path.display().to_string(),
+        channels: run_gap(run, h),
+        cleaning: sc.cleaning.clone(),
+    });
+    Ok(SimulateReport {
+        integration,
+        tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
+        friction: sc.integrator.friction,
+        metrics,
+        lift_offs: h.lift_offs(),
+        replay,
+        history: sim.history,
+        measured: sc.measured,
+        scenario: sc.name,
+        out_dir,
+    })
+}
+
+impl SimulateReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let mut out = vec![format!(
+            "{}: {}, tyres {} / {}, friction {}",
+            self.scenario, self.integration, self.tyres[0], self.tyres[1], self.friction
+        )];
+        if let Some(m) = &self.metrics {
+            out.extend(metric_lines(m));
+        }
+        // The four loads always add up to the weight; a wheel at zero load
+        // has lifted off, and the 2-DOF model then carries its axle on one
+        // wheel.
+        out.extend(self.lift_offs.iter().map(|l| {
+            format!(
+                "  wheel lift-off: {:?} off the ground from {:.3} s to {:.3} s",
+                l.wheel, l.start, l.end
+            )
+        }));
+        if let Some(r) = &self.replay {
+            let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
+            out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
+            out.extend(
+                r.channels
+                    .iter()
+                    .map(|g| format!("  {}: {}", g.channel, g.verdict)),
+            );
+        }
+        out
+    }
+
+    /// Writes the history, the metrics, the replay's gap and the figure.
+    pub fn write(&self) -> Result<(), Error> {
+        let files = FILES.map(|f| self.out_dir.join(f));
+        write_columns(&files[0], &self.history.columns())?;
+        if let Some(m) = &self.metrics {
+            let file = MetricsFile {
+                scenario: &self.scenario,
+                units: UNITS,
+                metrics: m,
+                lift_offs: &self.lift_offs,
+            };
+            write_json(&files[1], &file)?;
+        }
+        if let Some(r) = &self.replay {
+            write_json_sorted(&files[3], r)?;
+        }
+        history_figure(&self.scenario, &self.history, self.measured.as_ref()).save(&files[2])
+    }
+}
+
+/// Steer, yaw rate, lateral acceleration and sideslip against time, with a
+/// replayed run's measurements dashed.
+fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -> Figure {
+    let deg = |v: &[f64]| v.iter().map(|x| x.to_degrees()).collect::<Vec<_>>();
+    let panel = |title: &str, y_label: &str, label: &str, y: &[f64]| Panel {
+        title: title.into(),
+        x_label: "t [s]".into(),
+        y_label: y_label.into(),
+        series: vec![Series::line(label, &h.t, y, 0)],
+        ..Panel::default()
+    };
+    let mut panels = vec![
+        panel(
+            &format!("{name}: front road-wheel steer"),
+            "δ [deg]",
+            "",
+            &deg(&h.steer),
+        ),
+        panel("yaw rate", "r [deg/s]", "model", &deg(&h.yaw_rate)),
+        panel("lateral acceleration", "ay [m/s²]", "model", &h.ay),
+        panel("sideslip", "β [deg]", "model", &deg(&h.beta)),
+    ];
+    if let Some(run) = measured {
+        let add = |p: &mut Panel, y: &[f64]| {
+            p.series
+                .push(Series::line("measured", &run.t, y, 1).styled(Style::Dashed));
+        };
+        add(&mut panels[1], &deg(&run.yaw_rate));
+        if let Some(ay) = &run.ay {
+            add(&mut panels[2], ay);
+        }
+        if let Some(b) = &run.beta {
+            add(&mut panels[3], &deg(b));
+        }
+    }
+    Figure::stack(panels)
+}

@@ -1,0 +1,486 @@
+//! `study` as one job (Wang & Liang): a study file in; the (k1, k2) map of
+//! every metric, Wang & Liang's RBF network with its re-simulated
+//! validation, and the inverse (regions, Er curves, the best combination
+//! refined by simulation) out, as `study.csv`, `maps.png`, `rbf.json`,
+//! `rbf.png`, `inverse.json` and `summary.json`. Stiffness in reports is per
+//! tyre in the file's unit.
+
+use crate::study::inverse::{best_on_curve, distance, Map};
+use crate::study::rbf::Rbf;
+use crate::study::{Metric, Sample, StiffnessUnit, Study, Target, METRICS};
+
+mod figures;
+use crate::error::Error;
+use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
+use crate::report::progress::Progress;
+use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// `summary.json`: the size and time of the study.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudySummary {
+    /// Combinations simulated (map and RBF pairs).
+    pub combinations: usize,
+    /// Wall time of the simulations, s.
+    pub seconds: f64,
+    /// Study name.
+    pub study: String,
+    /// Stiffness unit of the reports.
+    pub unit: StiffnessUnit,
+    /// Combinations whose response has no steady state.
+    pub without_steady_state: usize,
+}
+
+/// One held-out pair: its Er, the network's answer, and that answer's Er
+/// re-simulated.
+#[derive(Debug, Clone, Serialize)]
+pub struct Validation {
+    /// Er of the pair, s.
+    pub er_target: f64,
+    /// The pair's front stiffness.
+    pub k_front_true: f64,
+    /// The pair's rear stiffness.
+    pub k_rear_true: f64,
+    /// The network's front stiffness.
+    pub k_front_predicted: f64,
+    /// The network's rear stiffness.
+    pub k_rear_predicted: f64,
+    /// Er of the answer, simulated, s.
+    pub er_resimulated: f64,
+    /// Its error against the target, %.
+    pub error_percent: f64,
+}
+
+/// `rbf.json`: Wang & Liang's network Er → (k1, k2).
+#[derive(Debug, Clone, Serialize)]
+pub struct RbfReport {
+    /// Spread, s.
+    pub spread: f64,
+    /// Pairs trained on.
+    pub training_pairs: usize,
+    /// Condition number of the training system.
+    pub condition_number: f64,
+    /// Largest misfit of a training pair (either axle).
+    pub largest_training_misfit: f64,
+    /// The held-out pairs.
+    pub validation: Vec<Validation>,
+    /// Stiffness unit.
+    pub unit: StiffnessUnit,
+}
+
+/// The best combination on an Er curve, refined by simulation.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BestAnswer {
+    /// Front stiffness.
+    pub k_front: f64,
+    /// Rear stiffness.
+    pub k_rear: f64,
+    /// Er there, simulated, s.
+    pub er_resimulated: f64,
+    /// Relative distance to the current tyres.
+    pub distance_to_reference: f64,
+}
+
+/// The network's answer to an Er target, re-simulated.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct RbfAnswer {
+    /// Front stiffness.
+    pub k_front: f64,
+    /// Rear stiffness.
+    pub k_rear: f64,
+    /// Er there, simulated, s.
+    pub er_resimulated: f64,
+    /// Its error against the target, %.
+    pub error_percent: f64,
+    /// Relative distance to the current tyres.
+    pub distance_to_reference: f64,
+}
+
+/// What an Er target has beyond a region: its curve and best points.
+#[derive(Debug, Clone, Serialize)]
+pub struct ErAnswer {
+    /// The iso-curve on the map.
+    pub curve: Vec<[f64; 2]>,
+    /// The best combination on it (`None`: not reached on the map).
+    pub best: Option<BestAnswer>,
+    /// The network's answer, with a network.
+    pub rbf: Option<RbfAnswer>,
+}
+
+/// One target of the inverse problem answered.
+#[derive(Debug, Clone, Serialize)]
+pub struct TargetReport {
+    /// The metric.
+    pub metric: Metric,
+    /// Its target value.
+    pub target: f64,
+    /// Tolerance.
+    pub tolerance: f64,
+    /// Map points that meet it and every constraint.
+    pub region: Vec<[f64; 2]>,
+    /// Er targets: the curve and the best points.
+    #[serde(flatten)]
+    pub er: Option<ErAnswer>,
+}
+
+/// `inverse.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct InverseReport {
+    /// Stiffness unit.
+    pub unit: StiffnessUnit,
+    /// The current tyres.
+    pub reference: [f64; 2],
+    /// The targets, answered.
+    pub targets: Vec<TargetReport>,
+}
+
+/// The report of `study`; the three JSON files hold its parts.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudyReport {
+    /// `summary.json`.
+    pub summary: StudySummary,
+    /// `rbf.json`, with RBF pairs.
+    pub rbf: Option<RbfReport>,
+    /// `inverse.json`, with inverse queries.
+    pub inverse: Option<InverseReport>,
+    /// Every sample, the map's first (rear fastest), then the RBF pairs.
+    #[serde(skip)]
+    pub samples: Vec<Sample>,
+    /// The map.
+    #[serde(skip)]
+    pub map: Map,
+    /// The RBF pairs' samples.
+    #[serde(skip)]
+    pub pairs: Vec<Sample>,
+    /// The front and rear tyre models.
+    #[serde(skip)]
+    pub tyres: [&'static str; 2],
+    /// The output folder.
+    #[serde(skip)]
+    pub out_dir: PathBuf,
+}
+
+/// The output files, in the order [`StudyReport::write`] checks them.
+const FILES: [&str; 6] = [
+    "study.csv",
+    "maps.png",
+    "rbf.json",
+    "rbf.png",
+    "inverse.json",
+    "summary.json",
+];
+
+/// Runs the study of the file `path`; `out` is the output folder (default
+/// `out/<study name>`), checked against the inputs before any simulation.
+pub fn run(path: &Path, out: Option<&Path>) -> Result<StudyReport, Error> {
+    let input = load_study(path)?;
+    let sc = &input.scenario;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
+    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
+    let unit: StiffnessUnit = input.unit.parse()?;
+    let st = Study {
+        model: sc.model.clone(),
+        manoeuvre: sc.manoeuvre.clone(),
+        integrator: sc.integrator,
+        metrics: sc.metrics,
+    };
+    let grid: Vec<(f64, f64)> = input
+        .front
+        .iter()
+        .flat_map(|&f| input.rear.iter().map(move |&r| (f, r)))
+        .collect();
+    let rbf_pairs = input.rbf.as_ref().map_or(&[][..], |r| &r.pairs[..]);
+    let all: Vec<(f64, f64)> = grid.iter().chain(rbf_pairs).copied().collect();
+    if all.is_empty() {
+        return Err(Error::Data {
+            path: path.to_path_buf(),
+            message: "nothing to simulate: give a [stiffness] map or [rbf] pairs".into(),
+        });
+    }
+    let t0 = Instant::now();
+    let samples = {
+        let p = Progress::start("study", all.len());
+        st.evaluate_all(&all, p.counter())
+    };
+    let seconds = t0.elapsed().as_secs_f64();
+    let map = Map {
+        front: input.front.clone(),
+        rear: input.rear.clone(),
+        samples: samples[..grid.len()].to_vec(),
+    };
+    let pairs = samples[grid.len()..].to_vec();
+    let k = unit.to_si();
+    let net = input.rbf.as_ref().map(|r| train(&st, r, &pairs, k, unit));
+    let inverse = input
+        .inverse
+        .as_ref()
+        .map(|inv| answer(&st, &input, inv, &map, net.as_ref().map(|n| &n.0), unit))
+        .transpose()?;
+    Ok(StudyReport {
+        summary: StudySummary {
+            combinations: all.len(),
+            seconds,
+            study: sc.name.clone(),
+            unit,
+            without_steady_state: samples.iter().filter(|s| s.metrics.is_none()).count(),
+        },
+        rbf: net.map(|n| n.1),
+        inverse,
+        samples,
+        map,
+        pairs,
+        tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
+        out_dir,
+    })
+}
+
+/// Wang & Liang's RBF network Er → (k1, k2), trained on all pairs but the
+/// validation ones and checked by re-simulating its answers.
+fn train(
+    st: &Study,
+    r: &RbfInput,
+    pairs: &[Sample],
+    k: f64,
+    unit: StiffnessUnit,
+) -> (Rbf, RbfReport) {
+    let er: Vec<f64> = pairs.iter().map(|s| Metric::Er.of_sample(s)).collect();
+    let train: Vec<usize> = (0..pairs.len())
+        .filter(|i| !r.validation.contains(i) && er[*i].is_finite())
+        .collect();
+    let net = Rbf::train(
+        &train.iter().map(|&i| er[i]).collect::<Vec<_>>(),
+        &train
+            .iter()
+            .map(|&i| vec![pairs[i].k_front, pairs[i].k_rear])
+            .collect::<Vec<_>>(),
+        r.spread,
+    );
+    let misfit = train
+        .iter()
+        .map(|&i| {
+            let p = net.predict(er[i]);
+            ((p[0] - pairs[i].k_front) / k)
+                .abs()
+                .max(((p[1] - pairs[i].k_rear) / k).abs())
+        })
+        .fold(0.0, f64::max);
+    let validation = r
+        .validation
+        .iter()
+        .map(|&i| {
+            let p = net.predict(er[i]);
+            let er_sim = st.er(p[0], p[1]);
+            Validation {
+                er_target: er[i],
+                k_front_true: pairs[i].k_front / k,
+                k_rear_true: pairs[i].k_rear / k,
+                k_front_predicted: p[0] / k,
+                k_rear_predicted: p[1] / k,
+                er_resimulated: er_sim,
+                error_percent: 100.0 * (er_sim - er[i]) / er[i],
+            }
+        })
+        .collect();
+    let report = RbfReport {
+        spread: r.spread,
+        training_pairs: train.len(),
+        condition_number: net.condition,
+        largest_training_misfit: misfit,
+        validation,
+        unit,
+    };
+    (net, report)
+}
+
+/// The inverse queries on the map: each target's region with the
+/// constraints, and for Er its curve, the best combination on it and the
+/// network's answer.
+fn answer(
+    st: &Study,
+    input: &StudyInput,
+    inv: &Inverse,
+    map: &Map,
+    net: Option<&Rbf>,
+    unit: StiffnessUnit,
+) -> Result<InverseReport, Error> {
+    let k = unit.to_si();
+    let per_unit = |p: &(f64, f64)| [p.0 / k, p.1 / k];
+    let typed = |v: &[(String, f64, f64)]| -> Result<Vec<Target>, Error> {
+        v.iter()
+            .map(|(name, value, tolerance)| {
+                Ok(Target {
+                    metric: name.parse()?,
+                    value: *value,
+                    tolerance: *tolerance,
+                })
+            })
+            .collect()
+    };
+    let constraints = typed(&inv.constraints)?;
+    let reference = inv.reference;
+    let mut targets = Vec::new();
+    for t in typed(&inv.targets)? {
+        let mut all = vec![t];
+        all.extend(constraints.iter().copied());
+        let region = map.region(&all).iter().map(per_unit).collect();
+        let er = (t.metric == Metric::Er).then(|| {
+            let curve = map.iso_curve(t.metric, t.value);
+            let span = 2.0 * (input.front[1] - input.front[0]);
+            let best =
+                best_on_curve(st, &curve, reference, t.value, span).map(|(kf, kr, e)| BestAnswer {
+                    k_front: kf / k,
+                    k_rear: kr / k,
+                    er_resimulated: e,
+                    distance_to_reference: distance((kf, kr), reference),
+                });
+            let rbf = net.map(|net| {
+                let p = net.predict(t.value);
+                let e = st.er(p[0], p[1]);
+                RbfAnswer {
+                    k_front: p[0] / k,
+                    k_rear: p[1] / k,
+                    er_resimulated: e,
+                    error_percent: 100.0 * (e - t.value) / t.value,
+                    distance_to_reference: distance((p[0], p[1]), reference),
+                }
+            });
+            ErAnswer {
+                curve: curve.iter().map(per_unit).collect(),
+                best,
+                rbf,
+            }
+        });
+        targets.push(TargetReport {
+            metric: t.metric,
+            target: t.value,
+            tolerance: t.tolerance,
+            region,
+            er,
+        });
+    }
+    Ok(InverseReport {
+        unit,
+        reference: per_unit(&reference),
+        targets,
+    })
+}
+
+impl StudyReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let s = &self.summary;
+        let u = s.unit;
+        let mut out = vec![
+            format!(
+                "{}: {} map combinations + {} RBF pairs, tyres {} / {}, step steer",
+                s.study,
+                self.map.samples.len(),
+                self.pairs.len(),
+                self.tyres[0],
+                self.tyres[1]
+            ),
+            format!(
+                "  simulated {} combinations in {:.2} s",
+                s.combinations, s.seconds
+            ),
+        ];
+        if let Some(r) = &self.rbf {
+            out.push(format!(
+                "  RBF (spread {} s): trained on {} pairs, condition number {:.2e}, largest training misfit {:.3} {u}",
+                r.spread, r.training_pairs, r.condition_number, r.largest_training_misfit
+            ));
+            out.push(format!("  validation (Wang & Liang, table 3): Er target → predicted k1, k2 [{u}] → Er re-simulated, error"));
+            out.extend(r.validation.iter().map(|v| {
+                format!(
+                    "    Er {:.5} ({:.0}, {:.0}) → ({:.1}, {:.1}) → Er {:.5}, {:+.2} %",
+                    v.er_target,
+                    v.k_front_true,
+                    v.k_rear_true,
+                    v.k_front_predicted,
+                    v.k_rear_predicted,
+                    v.er_resimulated,
+                    v.error_percent
+                )
+            }));
+        }
+        if let Some(inv) = &self.inverse {
+            for t in &inv.targets {
+                out.extend(target_lines(t, inv.reference, u));
+            }
+        }
+        out
+    }
+
+    /// Writes the table, the figures and the JSON files into the output
+    /// folder.
+    pub fn write(&self) -> Result<(), Error> {
+        let files = FILES.map(|f| self.out_dir.join(f));
+        let u = self.summary.unit;
+        let k = u.to_si();
+        let name = u.as_str().replace('/', "_per_");
+        let (kf, kr) = (format!("k_front_{name}"), format!("k_rear_{name}"));
+        let mut header = vec![kf.as_str(), kr.as_str(), "k_front", "k_rear"];
+        header.extend(METRICS);
+        let rows = self.samples.iter().map(|x| {
+            [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
+                .into_iter()
+                .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
+                .map(|v| v.to_string())
+        });
+        write_csv(&files[0], &header, rows)?;
+        if let Some(r) = &self.rbf {
+            write_json_sorted(&files[2], r)?;
+            figures::rbf_pairs(&self.pairs, u).save(&files[3])?;
+        }
+        let mut curves = Vec::new();
+        if let Some(inv) = &self.inverse {
+            write_json_sorted(&files[4], inv)?;
+            for t in &inv.targets {
+                if let Some(er) = &t.er {
+                    curves.push((t.target, &er.curve[..]));
+                }
+            }
+        }
+        if self.map.front.len() >= 2 && self.map.rear.len() >= 2 {
+            figures::heat_maps(&self.map, u, &curves).save(&files[1])?;
+        }
+        write_json_sorted(&files[5], &self.summary)
+    }
+}
+
+/// The lines of one answered target.
+fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit) -> Vec<String> {
+    let mut out = vec![format!(
+        "  {} = {} ± {}: {} map points meet it and every constraint",
+        t.metric,
+        t.target,
+        t.tolerance,
+        t.region.len()
+    )];
+    let Some(er) = &t.er else {
+        return out;
+    };
+    out.push(match &er.best {
+        Some(b) => format!(
+            "  Er = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with Er {:.6} (re-simulated), distance {:.3}",
+            t.target,
+            er.curve.len(),
+            reference[0],
+            reference[1],
+            b.k_front,
+            b.k_rear,
+            b.er_resimulated,
+            b.distance_to_reference
+        ),
+        None => format!("  Er = {}: not reached on the map", t.target),
+    });
+    if let Some(r) = &er.rbf {
+        out.push(format!(
+            "    RBF answer: ({:.1}, {:.1}) {u}, Er {:.6} re-simulated ({:+.2} %), distance {:.3}",
+            r.k_front, r.k_rear, r.er_resimulated, r.error_percent, r.distance_to_reference
+        ));
+    }
+    out
+}

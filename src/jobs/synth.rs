@@ -1,0 +1,166 @@
+//! `synth` as one job: the virtual proving ground ([`crate::diagnose::synth`])
+//! writes a campaign folder (`vehicle.toml`, `tyre_rig.csv`, `runs/*.csv`)
+//! measured on a truth model with chosen effects on. The folder is written
+//! under a temporary name and renamed when complete, so a failed run leaves
+//! no half-written campaign, and an existing folder is never written over.
+
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::synth::{generate_with, Noise, SynthSpec, Synthetic, Truth};
+use crate::error::Error;
+use crate::report::{create_dir, write_bytes, write_columns};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// An effect named on the command line: a candidate effect, or `none`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EffectName(pub Option<EffectKind>);
+
+impl std::str::FromStr for EffectName {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        if s == "none" {
+            return Ok(EffectName(None));
+        }
+        EffectKind::from_name(s)
+            .map(|k| EffectName(Some(k)))
+            .ok_or_else(|| {
+                let all: Vec<&str> = EffectKind::ALL.iter().map(|k| k.name()).collect();
+                Error::Options(format!(
+                    "unknown effect `{s}`: one of none, {}",
+                    all.join(", ")
+                ))
+            })
+    }
+}
+
+/// The truth named `name` (`augmented` or `four-wheel`).
+pub fn truth_named(name: &str) -> Result<Truth, Error> {
+    Truth::from_name(name).ok_or_else(|| {
+        let all: Vec<&str> = Truth::ALL.iter().map(|t| t.name()).collect();
+        Error::Options(format!("unknown truth `{name}`: one of {}", all.join(", ")))
+    })
+}
+
+/// The report of `synth`: the campaign generated (written by
+/// [`SynthReport::write`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct SynthReport {
+    /// The campaign folder.
+    pub out: PathBuf,
+    /// Runs generated.
+    pub runs: usize,
+    /// The model that played the car.
+    pub truth: Truth,
+    /// The effects on, in words.
+    pub name: String,
+    /// Noise seed.
+    pub seed: u64,
+    /// The campaign.
+    #[serde(skip)]
+    pub campaign: Synthetic,
+}
+
+/// Generates a campaign on `truth` with `effects` on and noise seed `seed`,
+/// for the new folder `out`.
+pub fn run(
+    effects: &[EffectName],
+    seed: u64,
+    truth: Truth,
+    out: &Path,
+) -> Result<SynthReport, Error> {
+    let kinds = effects.iter().filter_map(|e| e.0);
+    let mut spec = SynthSpec {
+        effects: Vec::new(),
+        seed,
+        noise: Noise::default(),
+    };
+    for k in kinds {
+        let values = truth.values(k).ok_or_else(|| {
+            let all: Vec<&str> = truth.effects().iter().map(|k| k.name()).collect();
+            Error::Options(format!(
+                "unknown effect `{}` for the {} truth: one of none, {}",
+                k.name(),
+                truth.name(),
+                all.join(", ")
+            ))
+        })?;
+        spec.effects.push((k, values));
+    }
+    if out.exists() {
+        return Err(Error::Exists {
+            path: out.to_path_buf(),
+            why: "synth writes a new campaign folder and does not overwrite one".into(),
+        });
+    }
+    let s = generate_with(&spec, truth)?;
+    Ok(SynthReport {
+        out: out.to_path_buf(),
+        runs: s.runs.len(),
+        truth,
+        name: s.name(),
+        seed,
+        campaign: s,
+    })
+}
+
+impl SynthReport {
+    /// Writes the campaign folder: into a sibling temporary folder, renamed
+    /// when complete.
+    pub fn write(&self) -> Result<(), Error> {
+        let out = &self.out;
+        let parent = out
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        create_dir(parent)?;
+        let name = out
+            .file_name()
+            .map_or("campaign".into(), |n| n.to_string_lossy().into_owned());
+        let tmp = parent.join(format!(".{name}.synth-{}", std::process::id()));
+        if let Err(e) = write_campaign(&self.campaign, &tmp) {
+            let _ = std::fs::remove_dir_all(&tmp);
+            return Err(e);
+        }
+        std::fs::rename(&tmp, out).map_err(|e| Error::output(out, format!("cannot create: {e}")))
+    }
+
+    /// The closing line.
+    pub fn wrote(&self) -> String {
+        format!(
+            "wrote {} ({} runs, rig data, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
+            self.out.display(),
+            self.runs,
+            self.truth.name(),
+            self.name,
+            self.seed,
+            self.out.display()
+        )
+    }
+}
+
+/// The campaign's files in `dir`.
+fn write_campaign(s: &Synthetic, dir: &Path) -> Result<(), Error> {
+    create_dir(&dir.join("runs"))?;
+    write_bytes(&dir.join("vehicle.toml"), s.vehicle_toml().as_bytes())?;
+    let [fz, alpha, fy] = s.rig_columns();
+    write_columns(
+        &dir.join("tyre_rig.csv"),
+        &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)],
+    )?;
+    for r in &s.runs {
+        let mut cols: Vec<(&str, &[f64])> = vec![
+            ("t", &r.t),
+            ("speed", &r.speed),
+            ("steer", &r.steer),
+            ("yaw_rate", &r.yaw_rate),
+        ];
+        if let Some(ay) = &r.ay {
+            cols.push(("ay", ay));
+        }
+        if let Some(b) = &r.beta {
+            cols.push(("beta", b));
+        }
+        write_columns(&dir.join("runs").join(&r.path), &cols)?;
+    }
+    Ok(())
+}

@@ -126,12 +126,12 @@ impl Prepared {
     /// the residual times.
     pub fn observe(&self, model: &Augmented) -> Observed {
         let sensors = &model.effects.sensors;
-        let x0 = model.initial_state(
+        let history = model.simulate_from(
             &self.drive,
             self.start.0 - sensors.beta_bias,
             self.start.1 - sensors.yaw_rate_bias,
         );
-        model.observe(&model.simulate(&self.drive, x0), &self.times)
+        model.observe(&history, &self.times)
     }
 
     /// Replays the run with `model` and writes the scaled residuals into

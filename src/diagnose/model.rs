@@ -74,6 +74,16 @@ impl Augmented {
     /// steady value for ay = u·r.
     pub fn initial_state(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> StateVector {
         let (model, friction) = self.model();
+        Self::quasi_static(&model, friction, drive, beta, yaw_rate)
+    }
+
+    fn quasi_static(
+        model: &VehicleModel,
+        friction: f64,
+        drive: &Drive,
+        beta: f64,
+        yaw_rate: f64,
+    ) -> StateVector {
         let x = State { beta, yaw_rate };
         model.quasi_static_state(&x, &drive.first_inputs(friction))
     }
@@ -81,11 +91,24 @@ impl Augmented {
     /// Replays the drive from `x0`; the history carries the roll.
     pub fn simulate(&self, drive: &Drive, x0: StateVector) -> TimeHistory {
         let (model, friction) = self.model();
+        Self::replay(&model, friction, drive, x0)
+    }
+
+    /// Replays the drive from the state [`Augmented::initial_state`] gives
+    /// for `beta` and `yaw_rate`, building the model once (the fits replay
+    /// every run at every evaluation).
+    pub fn simulate_from(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> TimeHistory {
+        let (model, friction) = self.model();
+        let x0 = Self::quasi_static(&model, friction, drive, beta, yaw_rate);
+        Self::replay(&model, friction, drive, x0)
+    }
+
+    fn replay(model: &VehicleModel, friction: f64, drive: &Drive, x0: StateVector) -> TimeHistory {
         let integrator = Integrator {
             friction,
             ..Integrator::default()
         };
-        integrator.replay(&model, drive, x0)
+        integrator.replay(model, drive, x0)
     }
 
     /// What the sensors record of a response, interpolated at `times`:

@@ -80,6 +80,17 @@ impl Drive {
     }
 }
 
+/// The inputs of manoeuvre `m` at time `t` on a road of friction
+/// `friction`.
+pub(super) fn manoeuvre_inputs(m: &Manoeuvre, t: f64, friction: f64) -> Inputs {
+    Inputs {
+        steer: m.steer(t),
+        speed: m.speed(t),
+        speed_rate: m.speed_rate(t),
+        friction,
+    }
+}
+
 /// Where the inputs come from.
 #[derive(Clone, Copy)]
 enum Source<'a> {
@@ -134,12 +145,7 @@ impl<'a> Driven<'a> {
 
     fn inputs(&self, t: f64) -> Inputs {
         match self.source {
-            Source::Manoeuvre(m) => Inputs {
-                steer: m.steer(t),
-                speed: m.speed(t),
-                speed_rate: m.speed_rate(t),
-                friction: self.friction,
-            },
+            Source::Manoeuvre(m) => manoeuvre_inputs(m, t, self.friction),
             Source::Sampled(d) => {
                 let k = match self.stage {
                     Some((i, j)) => 2 * i + STAGE_HALF_STEPS[j],
@@ -233,14 +239,7 @@ impl Integrator {
     /// The full initial state of a simulation from `x0`: the extra states at
     /// their quasi-static values.
     fn initial(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> StateVector {
-        let t0 = manoeuvre.start_time();
-        let inp = Inputs {
-            steer: manoeuvre.steer(t0),
-            speed: manoeuvre.speed(t0),
-            speed_rate: manoeuvre.speed_rate(t0),
-            friction: self.friction,
-        };
-        model.state_vector(&x0, &inp)
+        model.state_vector(&x0, &self.inputs(manoeuvre, manoeuvre.start_time()))
     }
 
     /// RK4 at the output step, rows recorded from the first stage of each

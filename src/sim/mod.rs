@@ -22,6 +22,7 @@
 mod driven;
 pub mod ode;
 
+use driven::manoeuvre_inputs;
 pub use driven::Drive;
 pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
 
@@ -362,13 +363,9 @@ impl ContinuousRecord for DenseRecord<'_> {
 }
 
 impl Integrator {
-    fn inputs(&self, m: &Manoeuvre, t: f64) -> Inputs {
-        Inputs {
-            steer: m.steer(t),
-            speed: m.speed(t),
-            speed_rate: m.speed_rate(t),
-            friction: self.friction,
-        }
+    /// The inputs of `m` at time `t` on this integrator's road.
+    pub(crate) fn inputs(&self, m: &Manoeuvre, t: f64) -> Inputs {
+        manoeuvre_inputs(m, t, self.friction)
     }
 
     /// Simulates `manoeuvre` from `x0` over its duration, recording a row

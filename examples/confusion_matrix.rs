@@ -111,7 +111,7 @@ fn main() -> anyhow::Result<()> {
                 None
             };
             let t0 = Instant::now();
-            let d = diagnose(&c, None).map_err(anyhow::Error::msg)?;
+            let d = diagnose(&c, None)?;
             let conf: Vec<String> = d
                 .confounded
                 .iter()

@@ -11,8 +11,9 @@ use super::effects::{EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
+use crate::error::Error;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
-use crate::identify::{fit_lateral, start_tyre, FitSettings};
+use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
 use crate::optim::pso::Pso;
 use crate::tyre::{MagicSimple, Tyre};
 use crate::vehicle::VehicleModel;
@@ -188,7 +189,7 @@ pub(super) fn base_models(
     folds: &[Vec<usize>],
     scales_hint: [f64; 3],
     pso: &Pso,
-) -> Result<(Bases, String, Option<GroupingReport>), String> {
+) -> Result<(Bases, String, Option<GroupingReport>), Error> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
     let make = |f: Tyre, r: Tyre| Augmented {
@@ -209,23 +210,24 @@ pub(super) fn base_models(
             None,
         )),
         BaseTyres::Rig { path, data, model } => {
-            let grouped = group(path, data, &Grouping::default(), SlipAxis::Angle)
-                .map_err(|e| e.to_string())?;
+            let grouped = group(path, data, &Grouping::default(), SlipAxis::Angle)?;
             let conditions = grouped.conditions;
             if conditions.is_empty() {
-                return Err(format!(
-                    "{}: no lateral test condition in the rig data",
-                    path.display()
-                ));
+                return Err(Error::Data {
+                    path: path.clone(),
+                    message: "no lateral test condition in the rig data".into(),
+                });
             }
             let mut loads: Vec<f64> = conditions.iter().map(|q| q.fz).collect();
             loads.sort_by(f64::total_cmp);
-            let t0 = start_tyre(model.as_str(), loads[loads.len() / 2])?;
+            let t0 = start_tyre_of(*model, loads[loads.len() / 2])?;
             let mut settings = FitSettings::new(c.settings.seed);
             settings.pso.particles = 40;
             settings.pso.iterations = 150;
-            let f = fit_lateral(&t0, &conditions, &settings)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
+            let f = fit_lateral(&t0, &conditions, &settings).map_err(|e| Error::Data {
+                path: path.clone(),
+                message: e.to_string(),
+            })?;
             Ok((
                 fixed(make(f.tyre.clone(), f.tyre.clone())),
                 format!(

@@ -39,6 +39,7 @@ use super::fit::{Channel, ChannelErrors};
 use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
+use crate::error::Error;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -489,7 +490,7 @@ fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
 
 /// Runs the diagnosis of a campaign. `progress` counts work units (see
 /// [`work_units`]).
-pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, String> {
+pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
     let hint = signal_scales(c);

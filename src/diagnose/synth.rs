@@ -131,7 +131,7 @@ fn four_wheel_effects(effects: &[(EffectKind, Vec<f64>)]) -> Result<FourWheelEff
     let mut e = FourWheelEffects::default();
     for (k, p) in effects {
         let need = Truth::FourWheel.values(*k).ok_or_else(|| {
-            ParamError::new(k.name(), f64::NAN, "not an effect of the four-wheel truth")
+            ParamError::without_value(k.name(), "not an effect of the four-wheel truth")
         })?;
         if p.len() != need.len() {
             return Err(ParamError::new(

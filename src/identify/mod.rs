@@ -481,16 +481,3 @@ pub fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
         )
     })
 }
-
-/// [`start_tyre_of`] for a model named in a file (`gim`, `magic-simple`,
-/// `unitire`, `pac89`, `linear`). Kept with a message for its callers that
-/// still report errors as text (the campaign reader and the diagnosis's base
-/// tyres).
-pub fn start_tyre(model: &str, fz: f64) -> Result<Tyre, String> {
-    let unknown = || {
-        let names: Vec<&str> = SWARM_MODELS.iter().map(|m| m.as_str()).collect();
-        format!("unknown tyre model `{model}`: one of {}", names.join(", "))
-    };
-    let name: ModelName = model.parse().map_err(|_| unknown())?;
-    start_tyre_of(name, fz).map_err(|_| unknown())
-}

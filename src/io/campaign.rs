@@ -30,8 +30,8 @@ use super::{read_run, MeasuredRun};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{InputError, ParamError};
+use crate::identify::SWARM_MODELS;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
-use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -189,9 +189,8 @@ fn candidate_effects(
         .map(|n| {
             EffectKind::from_name(n).ok_or_else(|| {
                 let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
-                src.value_error(&ParamError::new(
+                src.value_error(&ParamError::without_value(
                     "diagnose.effects",
-                    f64::NAN,
                     &format!("unknown effect `{n}`: one of {}", all.join(", ")),
                 ))
             })
@@ -227,16 +226,21 @@ fn base_tyres(
             (None, None, None, Some(rig)) => base.join(rig),
             (None, None, None, None) if folder && rig_default.is_file() => rig_default,
             (None, None, None, None) => return Ok(BaseTyres::FromRuns),
-            _ => return Err(src.value_error(&ParamError::new(
+            _ => return Err(src.value_error(&ParamError::without_value(
                 "tyres",
-                f64::NAN,
                 "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
             ))),
         };
     let name = spec.model.as_deref().unwrap_or("pac89");
-    let model_error = |m: String| src.value_error(&ParamError::new("tyres.model", f64::NAN, &m));
-    crate::identify::start_tyre(name, 1.0).map_err(model_error)?;
-    let model: ModelName = name.parse().map_err(model_error)?;
+    // The rig fit starts a swarm, which the staged Magic Formula does not.
+    let model = SWARM_MODELS
+        .into_iter()
+        .find(|m| m.as_str() == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = SWARM_MODELS.iter().map(|m| m.as_str()).collect();
+            let why = format!("unknown tyre model `{name}`: one of {}", names.join(", "));
+            src.value_error(&ParamError::without_value("tyres.model", &why))
+        })?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

@@ -376,9 +376,8 @@ fn step_steer(
         _ => return Err(param_error(
             src,
             Some("manoeuvre"),
-            ParamError::new(
+            ParamError::without_value(
                 "kind",
-                f64::NAN,
                 "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)",
             ),
         )),

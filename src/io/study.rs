@@ -217,7 +217,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
         return Err(param_error(
             &src,
             None,
-            ParamError::new("manoeuvre.kind", f64::NAN, "a study needs a step steer"),
+            ParamError::without_value("manoeuvre.kind", "a study needs a step steer"),
         ));
     }
     let scenario = resolve_scenario(&sc, &src)?;
@@ -232,9 +232,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
             return Err(param_error(
                 &src,
                 None,
-                ParamError::new(
+                ParamError::without_value(
                     "stiffness.unit",
-                    f64::NAN,
                     &format!("unknown unit `{u}`: N/deg or N/rad"),
                 ),
             ))
@@ -245,11 +244,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
             return Err(param_error(
                 &src,
                 None,
-                ParamError::new(
-                    key,
-                    f64::NAN,
-                    "no values (a step or count that gives none?)",
-                ),
+                ParamError::without_value(key, "no values (a step or count that gives none?)"),
             ));
         }
         for &x in v {
@@ -311,9 +306,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
                 return Err(param_error(
                     &src,
                     None,
-                    ParamError::new(
+                    ParamError::without_value(
                         "inverse",
-                        f64::NAN,
                         "inverse queries need a [stiffness] map with at least 2 × 2 values",
                     ),
                 ));
@@ -323,9 +317,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
                     return Err(param_error(
                         &src,
                         None,
-                        ParamError::new(
+                        ParamError::without_value(
                             "inverse.targets",
-                            f64::NAN,
                             &format!(
                                 "unknown metric `{}`; one of {}",
                                 t.metric,

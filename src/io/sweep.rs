@@ -227,9 +227,8 @@ fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<
         Some((key, _)) => Err(param_error(
             src,
             Some("model.effects"),
-            ParamError::new(
+            ParamError::without_value(
                 key,
-                f64::NAN,
                 "not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files",
             ),
         )),

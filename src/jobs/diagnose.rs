@@ -55,7 +55,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     let t0 = Instant::now();
     let diagnosis = {
         let progress = Progress::start("diagnose", work_units(&campaign));
-        crate::diagnose::diagnose(&campaign, Some(progress.counter())).map_err(Error::Diagnosis)?
+        crate::diagnose::diagnose(&campaign, Some(progress.counter()))?
     };
     Ok(DiagnoseReport {
         diagnosis,

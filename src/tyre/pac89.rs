@@ -194,9 +194,8 @@ impl Pac89 {
 
     pub(crate) fn validate(&self) -> Result<(), ParamError> {
         if self.form != Pac89Form::AdamsPac89 {
-            return Err(ParamError::new(
+            return Err(ParamError::without_value(
                 "form",
-                f64::NAN,
                 "the file uses the 1987 paper's coefficient numbering; this crate implements \
                  the Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): convert the file and \
                  set form = \"adams-pac89\"",

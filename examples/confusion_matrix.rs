@@ -20,7 +20,7 @@
 //! glitches the cleaning listed.
 
 use handling::diagnose::diagnose;
-use handling::diagnose::effects::EffectKind;
+use handling::diagnose::effects::{joined, EffectKind};
 use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
 use handling::diagnose::DiagnoseSettings;
 use handling::io::clean::{clean_runs, inject_glitches, CleanSettings};
@@ -95,15 +95,12 @@ fn main() -> anyhow::Result<()> {
                 g.runs = runs;
                 let listed = report.glitches.len();
                 g.cleaning = report;
-                let v = diagnose(&g, None)
-                    .map_err(anyhow::Error::msg)?
-                    .verdict
-                    .effects;
+                let v = diagnose(&g, None)?.verdict.effects;
                 Some((
                     if v.is_empty() {
                         "—".into()
                     } else {
-                        v.join("+")
+                        joined(&v, "+")
                     },
                     format!("{listed} / {injected}"),
                 ))
@@ -115,7 +112,7 @@ fn main() -> anyhow::Result<()> {
             let conf: Vec<String> = d
                 .confounded
                 .iter()
-                .flat_map(|g| g.effects.iter().skip(1).cloned())
+                .flat_map(|g| g.effects.iter().skip(1).map(|e| e.name().to_string()))
                 .collect();
             let after = d
                 .ranking
@@ -145,7 +142,7 @@ fn main() -> anyhow::Result<()> {
                 if d.verdict.effects.is_empty() {
                     "—".into()
                 } else {
-                    d.verdict.effects.join("+")
+                    joined(&d.verdict.effects, "+")
                 },
                 conf.join(", "),
                 d.gap.heldout_error,

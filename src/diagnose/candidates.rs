@@ -308,7 +308,7 @@ pub(super) fn parameter_values(
         .enumerate()
         .map(|(i, (group, q))| ParameterValue {
             name: format!("{group}.{}", q.name),
-            unit: q.unit.into(),
+            unit: q.unit,
             value: f.params[skip + i],
             std_error: f.std_errors[skip + i],
         })

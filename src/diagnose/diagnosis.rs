@@ -34,7 +34,7 @@ pub use super::report::*;
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
 use super::crossval::{gap_above, prepare, reduction, singles, Context, Scored};
-use super::effects::{EffectKind, EffectSet};
+use super::effects::{joined, EffectKind, EffectSet};
 use super::fit::{Channel, ChannelErrors};
 use super::model::Observed;
 pub use super::summary::observed_channel;
@@ -88,8 +88,8 @@ fn channel_errors(e: &ChannelErrors) -> Vec<ChannelError> {
         .into_iter()
         .filter_map(|c| {
             e.rms(c).map(|rms| ChannelError {
-                channel: c.name().into(),
-                unit: c.unit().into(),
+                channel: c,
+                unit: c.unit(),
                 rms,
             })
         })
@@ -116,7 +116,6 @@ impl Baseline {
     /// A scored candidate as a row of the report, with its warnings.
     fn rank(&self, sc: &Scored) -> Ranked {
         let j = sc.heldout.combined(&self.scales);
-        let names: Vec<String> = sc.kinds.iter().map(|e| e.name().to_string()).collect();
         let held = reduction(self.j0, j, self.jn);
         let j_in = sc.insample.combined(&self.scales);
         let inside = reduction(self.j0_in, j_in, self.jn_in);
@@ -135,8 +134,8 @@ impl Baseline {
             ));
         }
         Ranked {
-            effect: names.join("+"),
-            effects: names,
+            effect: joined(&sc.kinds, "+"),
+            effects: sc.kinds.clone(),
             parameters: parameter_values(&sc.kinds, &sc.full, self.axle_count),
             heldout_error_before: self.j0,
             heldout_error_after: j,
@@ -182,7 +181,7 @@ fn noise_table(run_gaps: &[RunGap], hint: [f64; 3]) -> (Vec<ChannelNoise>, [f64;
         .filter_map(|ch| {
             let per_run: Vec<f64> = run_gaps
                 .iter()
-                .filter_map(|g| g.channels.iter().find(|x| x.channel == ch.name()))
+                .filter_map(|g| g.channels.iter().find(|x| x.channel == ch))
                 .map(|x| x.noise_floor)
                 .collect();
             (!per_run.is_empty()).then(|| {
@@ -190,8 +189,8 @@ fn noise_table(run_gaps: &[RunGap], hint: [f64; 3]) -> (Vec<ChannelNoise>, [f64;
                 scales[ch.index()] = nf.max(hint[ch.index()]);
                 floors[ch.index()] = nf;
                 ChannelNoise {
-                    channel: ch.name().into(),
-                    unit: ch.unit().into(),
+                    channel: ch,
+                    unit: ch.unit(),
                     noise_floor: nf,
                     scale: scales[ch.index()],
                     runs: per_run.len(),
@@ -380,10 +379,7 @@ fn confounded_with(
         return Vec::new();
     }
     vec![Confounded {
-        effects: members
-            .iter()
-            .map(|x| x.kinds[0].name().to_string())
-            .collect(),
+        effects: members.iter().map(|x| x.kinds[0]).collect(),
         reduction_percent: members
             .iter()
             .map(|x| base.rank(x).reduction_percent)

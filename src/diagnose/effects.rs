@@ -70,6 +70,12 @@ const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64)
     }
 }
 
+/// The names of `kinds` joined by `sep` (a candidate's label: `a+b`).
+pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
+    let names: Vec<&str> = kinds.iter().map(|e| e.name()).collect();
+    names.join(sep)
+}
+
 impl EffectKind {
     /// Every effect, in the order.
     pub const ALL: [EffectKind; 14] = [

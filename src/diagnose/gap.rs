@@ -21,14 +21,16 @@
 //! so "no significant gap" is a possible answer.
 //! Units: SI, rad; times in s.
 
+use super::fit::Channel;
+use super::parts::{regime_samples, window_samples, Part};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
 /// The residual over a part of the run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PartGap {
-    /// Name of the window or regime.
-    pub name: String,
+    /// The window or regime (serialised as its label).
+    pub name: Part,
     /// Samples in it.
     pub samples: usize,
     /// RMS residual.
@@ -40,14 +42,14 @@ pub struct PartGap {
 /// The gap of one channel.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChannelGap {
-    /// Channel name (`yaw_rate`, `ay`, `beta`).
-    pub channel: String,
+    /// The channel.
+    pub channel: Channel,
     /// Its unit.
-    pub unit: String,
+    pub unit: &'static str,
     /// Noise floor (standard deviation of the measurement noise).
     pub noise_floor: f64,
     /// How the noise floor was estimated.
-    pub noise_source: String,
+    pub noise_source: NoiseSource,
     /// RMS residual.
     pub rms: f64,
     /// Mean residual.
@@ -74,6 +76,18 @@ pub struct ChannelGap {
     pub significant: bool,
     /// The finding in words.
     pub verdict: String,
+}
+
+/// How a channel's noise floor was estimated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum NoiseSource {
+    /// The standard deviation over the window before the input (at least
+    /// ten samples).
+    #[serde(rename = "standard deviation before the input")]
+    BeforeInput,
+    /// `std(Δx)/√2` over the whole record: an upper bound for a smooth signal.
+    #[serde(rename = "first differences (an upper bound)")]
+    FirstDifferences,
 }
 
 fn trapezoid(t: &[f64], f: impl Fn(usize) -> f64) -> f64 {
@@ -125,37 +139,7 @@ fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
     }
 }
 
-/// Index ranges of the time windows: before the input, its first 0.5 s,
-/// 0.5–2 s, the rest. The input starts where the steer first leaves its
-/// initial value by more than 5 % of its largest excursion (and 1 mrad).
-fn windows(t: &[f64], steer: &[f64]) -> Vec<(String, Vec<usize>)> {
-    let d0 = steer[0];
-    let excursion = steer.iter().map(|d| (d - d0).abs()).fold(0.0, f64::max);
-    let threshold = (0.05 * excursion).max(1e-3);
-    let start = steer
-        .iter()
-        .position(|d| (d - d0).abs() > threshold)
-        .map_or(t[t.len() - 1], |i| t[i]);
-    let bands = [
-        ("before the input", f64::NEG_INFINITY, start),
-        ("first 0.5 s of the input", start, start + 0.5),
-        ("0.5–2 s after the input", start + 0.5, start + 2.0),
-        ("later", start + 2.0, f64::INFINITY),
-    ];
-    bands
-        .iter()
-        .map(|(name, lo, hi)| {
-            (
-                name.to_string(),
-                (0..t.len())
-                    .filter(|&i| t[i] >= *lo && t[i] < *hi)
-                    .collect(),
-            )
-        })
-        .collect()
-}
-
-fn part(name: String, idx: &[usize], e: &[f64]) -> PartGap {
+fn part(name: Part, idx: &[usize], e: &[f64]) -> PartGap {
     let v: Vec<f64> = idx.iter().map(|&i| e[i]).collect();
     PartGap {
         name,
@@ -182,8 +166,7 @@ pub struct Record<'a> {
 
 /// The gap of one channel of a record.
 pub fn channel_gap(
-    channel: &str,
-    unit: &str,
+    channel: Channel,
     rec: &Record,
     measured: &[f64],
     simulated: &[f64],
@@ -196,16 +179,14 @@ pub fn channel_gap(
     } = *rec;
     let n = t.len();
     let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
-    let win = windows(t, steer);
+    let unit = channel.unit();
+    let win = window_samples(t, steer);
     let pre: Vec<f64> = win[0].1.iter().map(|&i| measured[i]).collect();
     let (noise_floor, noise_source) = if pre.len() >= 10 {
-        (std_dev(&pre), "standard deviation before the input")
+        (std_dev(&pre), NoiseSource::BeforeInput)
     } else {
         let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
-        (
-            std_dev(&d) / 2f64.sqrt(),
-            "first differences (an upper bound)",
-        )
+        (std_dev(&d) / 2f64.sqrt(), NoiseSource::FirstDifferences)
     };
     let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
@@ -220,32 +201,10 @@ pub fn channel_gap(
         .filter(|w| !w.1.is_empty())
         .map(|(name, idx)| part(name, &idx, &e))
         .collect();
-    let mut regimes = Vec::new();
-    for (lo, hi) in [
-        (0.0, 2.0),
-        (2.0, 4.0),
-        (4.0, 6.0),
-        (6.0, 8.0),
-        (8.0, f64::INFINITY),
-    ] {
-        let idx: Vec<usize> = (0..n)
-            .filter(|&i| ay[i].abs() >= lo && ay[i].abs() < hi)
-            .collect();
-        if !idx.is_empty() {
-            regimes.push(part(format!("|ay| {lo}–{hi} m/s²"), &idx, &e));
-        }
-    }
-    let vmax = speed.iter().copied().fold(0.0, f64::max);
-    let mut lo = 0.0;
-    while lo <= vmax {
-        let idx: Vec<usize> = (0..n)
-            .filter(|&i| speed[i] >= lo && speed[i] < lo + 10.0)
-            .collect();
-        if !idx.is_empty() {
-            regimes.push(part(format!("speed {lo}–{} m/s", lo + 10.0), &idx, &e));
-        }
-        lo += 10.0;
-    }
+    let regimes: Vec<PartGap> = regime_samples(ay, speed)
+        .into_iter()
+        .map(|(name, idx)| part(name, &idx, &e))
+        .collect();
     // Noise-free data (a simulation replayed) have a zero floor: a residual
     // below 1e-6 of the signal is numerical, not a gap.
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
@@ -257,7 +216,7 @@ pub fn channel_gap(
             v.iter()
                 .filter(|p| p.samples >= 5)
                 .max_by(|a, b| a.rms.total_cmp(&b.rms))
-                .map(|p| p.name.clone())
+                .map(|p| p.name)
         };
         let mut s = format!(
             "gap: RMS {rms:.4} {unit} ({:.1} noise floors), bias {:.4} {unit}; magnitude error {:+.1} %, phase error {:.3}",
@@ -281,10 +240,10 @@ pub fn channel_gap(
         s
     };
     ChannelGap {
-        channel: channel.into(),
-        unit: unit.into(),
+        channel,
+        unit,
         noise_floor,
-        noise_source: noise_source.into(),
+        noise_source,
         rms,
         bias: mean(&e),
         max_abs: e.iter().map(|x| x.abs()).fold(0.0, f64::max),
@@ -344,19 +303,17 @@ pub fn run_gap(
         speed: &speed,
     };
     let mut out = vec![channel_gap(
-        "yaw_rate",
-        "rad/s",
+        Channel::YawRate,
         &rec,
         &pick(&run.yaw_rate),
         &at(&sim.yaw_rate),
     )];
     if let Some(ay) = &run.ay {
-        out.push(channel_gap("ay", "m/s²", &rec, &pick(ay), &at(&sim.ay)));
+        out.push(channel_gap(Channel::Ay, &rec, &pick(ay), &at(&sim.ay)));
     }
     if let Some(beta) = &run.beta {
         out.push(channel_gap(
-            "beta",
-            "rad",
+            Channel::Beta,
             &rec,
             &pick(beta),
             &at(&sim.beta),
@@ -469,6 +426,7 @@ pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagnose::parts::Window;
     use std::f64::consts::PI;
 
     fn grid(n: usize, dt: f64) -> Vec<f64> {
@@ -550,13 +508,13 @@ mod tests {
     fn identical_records_have_no_gap_and_noise_is_not_a_gap() {
         let s = Step::new();
         let truth = s.response(0.3);
-        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &truth, &truth);
+        let g = channel_gap(Channel::YawRate, &s.record(), &truth, &truth);
         assert_eq!(g.rms, 0.0);
         assert!(!g.significant);
         // White measurement noise of 0.002 rad/s: the floor is estimated from
         // the 5 s before the input and the model is not blamed for it.
         let measured = noisy(&truth, 0.002, 12345);
-        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &measured, &truth);
+        let g = channel_gap(Channel::YawRate, &s.record(), &measured, &truth);
         assert!((g.noise_floor - 0.002).abs() < 0.0003, "{}", g.noise_floor);
         assert!(!g.significant, "{}", g.verdict);
         assert!(
@@ -570,18 +528,18 @@ mod tests {
     fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
         let s = Step::new();
         let (measured, simulated) = (noisy(&s.response(0.2), 0.001, 7), s.response(0.5));
-        let g = channel_gap("yaw_rate", "rad/s", &s.record(), &measured, &simulated);
+        let g = channel_gap(Channel::YawRate, &s.record(), &measured, &simulated);
         assert!(g.significant, "{}", g.verdict);
         // The gap lies in the transient, not before the input or late.
-        let w = |name: &str| {
+        let w = |window: Window| {
             g.windows
                 .iter()
-                .find(|p| p.name.starts_with(name))
+                .find(|p| p.name == Part::Window(window))
                 .unwrap()
                 .rms
         };
-        assert!(w("first 0.5 s") > 5.0 * w("before"));
-        assert!(w("first 0.5 s") > 5.0 * w("later"));
+        assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::BeforeInput));
+        assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::Later));
         assert!(g.bias < 0.0, "a slower model lags: negative residual");
         assert!(g.lag1_autocorrelation > 0.9);
     }

@@ -12,6 +12,7 @@ pub mod effects;
 pub mod fit;
 pub mod gap;
 pub mod model;
+pub mod parts;
 pub mod proving_ground;
 pub mod report;
 pub mod sensors;

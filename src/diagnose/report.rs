@@ -3,9 +3,11 @@
 //! unit; held-out errors J are dimensionless (residuals over channel
 //! scales).
 
+use super::effects::EffectKind;
 use super::fit::Channel;
 use super::gap::ChannelGap;
 use super::model::Observed;
+pub use super::parts::{Part, PartAxis, Window};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -16,7 +18,7 @@ pub struct ParameterValue {
     /// `effect.parameter`.
     pub name: String,
     /// Unit.
-    pub unit: String,
+    pub unit: &'static str,
     /// Value fitted on all runs.
     pub value: f64,
     /// Its standard error (from the Jacobian; residual autocorrelation makes
@@ -28,9 +30,9 @@ pub struct ParameterValue {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChannelError {
     /// Channel.
-    pub channel: String,
+    pub channel: Channel,
     /// Unit.
-    pub unit: String,
+    pub unit: &'static str,
     /// Held-out RMS residual.
     pub rms: f64,
 }
@@ -40,8 +42,8 @@ pub struct ChannelError {
 pub struct Ranked {
     /// The effect names joined by `+`.
     pub effect: String,
-    /// The effect names.
-    pub effects: Vec<String>,
+    /// The effects.
+    pub effects: Vec<EffectKind>,
     /// Fitted parameters.
     pub parameters: Vec<ParameterValue>,
     /// Held-out combined error J of the base model.
@@ -73,7 +75,7 @@ pub struct Ranked {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Confounded {
     /// The effects.
-    pub effects: Vec<String>,
+    pub effects: Vec<EffectKind>,
     /// Their reductions, %.
     pub reduction_percent: Vec<f64>,
     /// The experiment that would separate them.
@@ -85,163 +87,11 @@ pub struct Confounded {
 pub struct Verdict {
     /// Effects the evidence supports (empty: the gap is within noise or no
     /// effect explains it).
-    pub effects: Vec<String>,
+    pub effects: Vec<EffectKind>,
     /// Their parameters.
     pub parameters: Vec<ParameterValue>,
     /// In words.
     pub statement: String,
-}
-
-/// A time window of a run, from the start of its input.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Window {
-    /// Before the input starts.
-    BeforeInput,
-    /// The input's first 0.5 s.
-    FirstHalfSecond,
-    /// 0.5–2 s after the input starts.
-    HalfToTwoSeconds,
-    /// Later than 2 s.
-    Later,
-}
-
-impl Window {
-    /// Every window, in time order.
-    pub const ALL: [Window; 4] = [
-        Window::BeforeInput,
-        Window::FirstHalfSecond,
-        Window::HalfToTwoSeconds,
-        Window::Later,
-    ];
-
-    /// Its name in reports.
-    pub fn label(self) -> &'static str {
-        match self {
-            Window::BeforeInput => "before the input",
-            Window::FirstHalfSecond => "first 0.5 s of the input",
-            Window::HalfToTwoSeconds => "0.5–2 s after the input",
-            Window::Later => "later",
-        }
-    }
-
-    /// Where the gap map draws it: the window's centre, s after the input
-    /// starts (the open ends half a second before and a second after).
-    pub fn centre(self) -> f64 {
-        match self {
-            Window::BeforeInput => -0.5,
-            Window::FirstHalfSecond => 0.25,
-            Window::HalfToTwoSeconds => 1.25,
-            Window::Later => 3.0,
-        }
-    }
-}
-
-/// The axis of the gap map a part lies on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PartAxis {
-    /// Time after the input starts, s.
-    Time,
-    /// Lateral-acceleration level |ay|, m/s².
-    Ay,
-    /// Speed, m/s.
-    Speed,
-}
-
-impl PartAxis {
-    /// Every axis, in the gap map's order.
-    pub const ALL: [PartAxis; 3] = [PartAxis::Time, PartAxis::Ay, PartAxis::Speed];
-}
-
-/// A part of the data a gap is pooled over: everything, a time window or a
-/// regime (a band of |ay| or of speed, `lo` included, `hi` excluded).
-/// Serialised as its label.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Part {
-    /// All samples.
-    All,
-    /// A time window.
-    Window(Window),
-    /// Samples with `lo ≤ |ay| < hi`, m/s².
-    Ay {
-        /// Lower edge.
-        lo: f64,
-        /// Upper edge (may be infinite).
-        hi: f64,
-    },
-    /// Samples with `lo ≤ speed < hi`, m/s.
-    Speed {
-        /// Lower edge.
-        lo: f64,
-        /// Upper edge.
-        hi: f64,
-    },
-}
-
-impl Part {
-    /// Its label in reports: `all`, the window's name, `|ay| 2–4 m/s²`,
-    /// `speed 20–30 m/s`.
-    pub fn label(&self) -> String {
-        match self {
-            Part::All => "all".into(),
-            Part::Window(w) => w.label().into(),
-            Part::Ay { lo, hi } => format!("|ay| {lo}–{hi} m/s²"),
-            Part::Speed { lo, hi } => format!("speed {lo}–{hi} m/s"),
-        }
-    }
-
-    /// The part a label of [`super::gap::channel_gap`] names (`None`: not a
-    /// label it writes). The gap analysis names its parts in text; this is
-    /// the one place that reads them back, and only labels that
-    /// [`Part::label`] writes again unchanged are accepted.
-    pub fn from_label(label: &str) -> Option<Part> {
-        let band = |s: &str, unit: &str| -> Option<(f64, f64)> {
-            let (lo, hi) = s.strip_suffix(unit)?.split_once('–')?;
-            Some((lo.parse().ok()?, hi.parse().ok()?))
-        };
-        let part = if label == "all" {
-            Part::All
-        } else if let Some(w) = Window::ALL.into_iter().find(|w| w.label() == label) {
-            Part::Window(w)
-        } else if let Some(rest) = label.strip_prefix("|ay| ") {
-            let (lo, hi) = band(rest, " m/s²")?;
-            Part::Ay { lo, hi }
-        } else {
-            let (lo, hi) = band(label.strip_prefix("speed ")?, " m/s")?;
-            Part::Speed { lo, hi }
-        };
-        (part.label() == label).then_some(part)
-    }
-
-    /// Where the gap map draws it: its axis and position (a window's
-    /// centre, a band's centre, or one above the lower edge of an open
-    /// band). `None` for [`Part::All`].
-    pub fn position(&self) -> Option<(PartAxis, f64)> {
-        let centre = |lo: f64, hi: f64| {
-            if hi.is_finite() {
-                0.5 * (lo + hi)
-            } else {
-                lo + 1.0
-            }
-        };
-        match *self {
-            Part::All => None,
-            Part::Window(w) => Some((PartAxis::Time, w.centre())),
-            Part::Ay { lo, hi } => Some((PartAxis::Ay, centre(lo, hi))),
-            Part::Speed { lo, hi } => Some((PartAxis::Speed, centre(lo, hi))),
-        }
-    }
-}
-
-impl std::fmt::Display for Part {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.label())
-    }
-}
-
-impl Serialize for Part {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&self.label())
-    }
 }
 
 /// Before/after on held-out runs for one part of the data.
@@ -267,9 +117,9 @@ pub struct Shrinkage {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChannelNoise {
     /// Channel.
-    pub channel: String,
+    pub channel: Channel,
     /// Unit.
-    pub unit: String,
+    pub unit: &'static str,
     /// Median over runs of the noise floor.
     pub noise_floor: f64,
     /// Residual scale used in the fits.
@@ -372,49 +222,4 @@ pub struct Overlay {
     pub after: Observed,
     /// Base-model combined error of the run.
     pub gap: f64,
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::diagnose::gap::{channel_gap, Record};
-
-    #[test]
-    fn every_part_of_a_gap_reads_back_as_a_typed_part() {
-        // A record that visits every window, every |ay| band and three
-        // speed bands.
-        let t: Vec<f64> = (0..1200).map(|i| 0.01 * i as f64).collect();
-        let steer: Vec<f64> = t
-            .iter()
-            .map(|&t| if t < 1.0 { 0.0 } else { 0.02 })
-            .collect();
-        let ay = t.clone();
-        let speed: Vec<f64> = t.iter().map(|&t| 5.0 + 2.0 * t).collect();
-        let rec = Record {
-            t: &t,
-            steer: &steer,
-            ay: &ay,
-            speed: &speed,
-        };
-        let sim: Vec<f64> = t.iter().map(|t| 0.1 * t.sin()).collect();
-        let g = channel_gap("yaw_rate", "rad/s", &rec, &steer, &sim);
-        let parts: Vec<Part> = g
-            .windows
-            .iter()
-            .chain(&g.regimes)
-            .map(|p| Part::from_label(&p.name).unwrap_or_else(|| panic!("{}", p.name)))
-            .collect();
-        assert_eq!(parts.len(), 4 + 5 + 3);
-        assert_eq!(parts[0], Part::Window(Window::BeforeInput));
-        assert_eq!(
-            parts[8],
-            Part::Ay {
-                lo: 8.0,
-                hi: f64::INFINITY
-            }
-        );
-        assert_eq!(parts[8].position(), Some((PartAxis::Ay, 9.0)));
-        assert_eq!(parts[9], Part::Speed { lo: 0.0, hi: 10.0 });
-        assert_eq!(Part::from_label("speed 2–x m/s"), None);
-    }
 }

@@ -55,22 +55,10 @@ pub(super) fn parts_table(
             speed: &speed,
         };
         for (ch, m) in &p.measured {
-            let gb = channel_gap(
-                ch.name(),
-                ch.unit(),
-                &rec,
-                m,
-                observed_channel(&before[i], *ch),
-            );
-            let ga = channel_gap(
-                ch.name(),
-                ch.unit(),
-                &rec,
-                m,
-                observed_channel(&after[i], *ch),
-            );
+            let gb = channel_gap(*ch, &rec, m, observed_channel(&before[i], *ch));
+            let ga = channel_gap(*ch, &rec, m, observed_channel(&after[i], *ch));
             let all_b = PartGap {
-                name: Part::All.label(),
+                name: Part::All,
                 samples: m.len(),
                 rms: gb.rms,
                 bias: gb.bias,
@@ -87,8 +75,7 @@ pub(super) fn parts_table(
                 .chain(ga.regimes.iter());
             for (b, a) in pb.zip(pa) {
                 let n = b.samples as f64;
-                let part = Part::from_label(&b.name)
-                    .unwrap_or_else(|| unreachable!("a part the gap analysis names: {}", b.name));
+                let part = b.name;
                 match acc.iter_mut().find(|x| x.0 == *ch && x.1 == part) {
                     Some(x) => {
                         x.2 += b.rms * b.rms * n;
@@ -150,11 +137,7 @@ pub(super) fn gap_summary(
             .collect();
         let significant_runs = runs
             .iter()
-            .filter(|r| {
-                r.channels
-                    .iter()
-                    .any(|c| c.channel == ch.name() && c.significant)
-            })
+            .filter(|r| r.channels.iter().any(|c| c.channel == ch && c.significant))
             .count();
         out.push(format!(
             "{}: RMS {:.4} {} (noise floor {:.4}); significant in {} of {} runs; wrong in: {}; right in: {}",

@@ -203,6 +203,21 @@ fn eigenvector(j: [[f64; 2]; 2], lambda: f64, scale: [f64; 2]) -> [f64; 2] {
     [v[0] / n, v[1] / n]
 }
 
+/// β, r in degrees and deg/s, for drawing.
+fn in_degrees(v: &[[f64; 2]]) -> (Vec<f64>, Vec<f64>) {
+    v.iter()
+        .map(|x| (x[0].to_degrees(), x[1].to_degrees()))
+        .unzip()
+}
+
+/// The centre of cell (`i`, `k`) of an `n` × `n` grid over the box.
+fn grid_point(bx: &SearchBox, n: usize, i: usize, k: usize) -> [f64; 2] {
+    [
+        -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / n as f64,
+        -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / n as f64,
+    ]
+}
+
 /// Phase portrait at one condition.
 pub fn phase_portrait(
     model: &VehicleModel,
@@ -217,100 +232,18 @@ pub fn phase_portrait(
         beta_max: search.beta_max,
         yaw_rate_max: 2.0 * search.yaw_rate_max,
     };
-    let deg = |v: &[[f64; 2]]| -> (Vec<f64>, Vec<f64>) {
-        v.iter()
-            .map(|x| (x[0].to_degrees(), x[1].to_degrees()))
-            .unzip()
-    };
-    let scale = bx.scale();
-    let mut series = Vec::new();
-    // Vector field: unit arrows in box-scaled units.
-    let n = 21;
-    let mut arrows = Vec::new();
-    for i in 0..n {
-        for k in 0..n {
-            let x = [
-                -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / n as f64,
-                -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / n as f64,
-            ];
-            let f = residual(model, c, x);
-            let d = [f[0] / scale[0], f[1] / scale[1]];
-            let len = d[0].hypot(d[1]);
-            if !len.is_finite() || len == 0.0 {
-                continue;
-            }
-            let s = 0.7 / n as f64;
-            arrows.push(x);
-            arrows.push([
-                x[0] + s * d[0] / len * scale[0],
-                x[1] + s * d[1] / len * scale[1],
-            ]);
-        }
-    }
-    let (ax, ay) = deg(&arrows);
-    series.push(Series::line("", &ax, &ay, 7).styled(Style::Segments));
+    let mut series = vec![vector_field(model, c, bx)];
     // Trajectories from a grid of starts.
     let m = 7;
     for i in 0..m {
         for k in 0..m {
-            let x0 = [
-                -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / m as f64,
-                -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / m as f64,
-            ];
-            let (tx, ty) = deg(&trajectory(model, c, bx, x0, 0.01, 600));
+            let x0 = grid_point(bx, m, i, k);
+            let (tx, ty) = in_degrees(&trajectory(model, c, bx, x0, 0.01, 600));
             series.push(Series::line("", &tx, &ty, 0));
         }
     }
-    // Separatrices: the stable (backward) and unstable (forward) manifolds of
-    // every saddle.
-    let mut first = true;
-    for e in eqs.iter().filter(|e| e.stability.kind == Kind::Saddle) {
-        let x = [e.beta, e.yaw_rate];
-        let j = stability::jacobian(model, c, x);
-        for (lambda, dir, color) in [
-            (e.stability.eigenvalues[1].0, -1.0, 1),
-            (e.stability.eigenvalues[0].0, 1.0, 3),
-        ] {
-            let v = eigenvector(j, lambda, scale);
-            for sgn in [-1.0, 1.0] {
-                let x0 = [
-                    x[0] + sgn * 1e-4 * v[0] * scale[0],
-                    x[1] + sgn * 1e-4 * v[1] * scale[1],
-                ];
-                let (tx, ty) = deg(&trajectory(model, c, bx, x0, dir * 0.005, 2000));
-                let label = match (first && sgn < 0.0, color) {
-                    (true, 1) => "stable manifold (separatrix)",
-                    (true, _) => "unstable manifold",
-                    _ => "",
-                };
-                series.push(Series::line(label, &tx, &ty, color));
-            }
-        }
-        first = false;
-    }
-    for (kind_ok, label, color) in [
-        (
-            &(|k: Kind| k.is_stable()) as &dyn Fn(Kind) -> bool,
-            "stable equilibrium",
-            2,
-        ),
-        (&|k: Kind| k == Kind::Saddle, "saddle", 1),
-        (
-            &|k: Kind| !k.is_stable() && k != Kind::Saddle,
-            "unstable equilibrium",
-            4,
-        ),
-    ] {
-        let pts: Vec<[f64; 2]> = eqs
-            .iter()
-            .filter(|e| kind_ok(e.stability.kind) && bx.contains([e.beta, e.yaw_rate]))
-            .map(|e| [e.beta, e.yaw_rate])
-            .collect();
-        if !pts.is_empty() {
-            let (px, py) = deg(&pts);
-            series.push(Series::line(label, &px, &py, color).styled(Style::Points(7)));
-        }
-    }
+    series.extend(separatrices(model, c, bx, eqs));
+    series.extend(equilibrium_markers(eqs, bx));
     let panel = Panel {
         title: format!(
             "phase portrait: δ = {:.2}°, μ = {:.2}, u = {:.1} km/h",
@@ -331,6 +264,99 @@ pub fn phase_portrait(
         row_height: 800,
     }
     .save(path)
+}
+
+/// The vector field as unit arrows in box-scaled units on a 21 × 21 grid.
+fn vector_field(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Series {
+    let scale = bx.scale();
+    let n = 21;
+    let mut arrows = Vec::new();
+    for i in 0..n {
+        for k in 0..n {
+            let x = grid_point(bx, n, i, k);
+            let f = residual(model, c, x);
+            let d = [f[0] / scale[0], f[1] / scale[1]];
+            let len = d[0].hypot(d[1]);
+            if !len.is_finite() || len == 0.0 {
+                continue;
+            }
+            let s = 0.7 / n as f64;
+            arrows.push(x);
+            arrows.push([
+                x[0] + s * d[0] / len * scale[0],
+                x[1] + s * d[1] / len * scale[1],
+            ]);
+        }
+    }
+    let (ax, ay) = in_degrees(&arrows);
+    Series::line("", &ax, &ay, 7).styled(Style::Segments)
+}
+
+/// The stable (integrated backward) and unstable (forward) manifolds of
+/// every saddle, started 1e-4 of the box along each eigenvector.
+fn separatrices(
+    model: &VehicleModel,
+    c: &Condition,
+    bx: &SearchBox,
+    eqs: &[Equilibrium],
+) -> Vec<Series> {
+    let scale = bx.scale();
+    let mut series = Vec::new();
+    let mut first = true;
+    for e in eqs.iter().filter(|e| e.stability.kind == Kind::Saddle) {
+        let x = [e.beta, e.yaw_rate];
+        let j = stability::jacobian(model, c, x);
+        for (lambda, dir, color) in [
+            (e.stability.eigenvalues[1].0, -1.0, 1),
+            (e.stability.eigenvalues[0].0, 1.0, 3),
+        ] {
+            let v = eigenvector(j, lambda, scale);
+            for sgn in [-1.0, 1.0] {
+                let x0 = [
+                    x[0] + sgn * 1e-4 * v[0] * scale[0],
+                    x[1] + sgn * 1e-4 * v[1] * scale[1],
+                ];
+                let (tx, ty) = in_degrees(&trajectory(model, c, bx, x0, dir * 0.005, 2000));
+                let label = match (first && sgn < 0.0, color) {
+                    (true, 1) => "stable manifold (separatrix)",
+                    (true, _) => "unstable manifold",
+                    _ => "",
+                };
+                series.push(Series::line(label, &tx, &ty, color));
+            }
+        }
+        first = false;
+    }
+    series
+}
+
+/// The equilibria in the box, marked by kind: stable, saddle, other unstable.
+fn equilibrium_markers(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Series> {
+    // Which kinds a marker shows, its label and its colour.
+    type Marker = (fn(Kind) -> bool, &'static str, usize);
+    let kinds: [Marker; 3] = [
+        (|k| k.is_stable(), "stable equilibrium", 2),
+        (|k| k == Kind::Saddle, "saddle", 1),
+        (
+            |k| !k.is_stable() && k != Kind::Saddle,
+            "unstable equilibrium",
+            4,
+        ),
+    ];
+    kinds
+        .into_iter()
+        .filter_map(|(kind_ok, label, color)| {
+            let pts: Vec<[f64; 2]> = eqs
+                .iter()
+                .filter(|e| kind_ok(e.stability.kind) && bx.contains([e.beta, e.yaw_rate]))
+                .map(|e| [e.beta, e.yaw_rate])
+                .collect();
+            (!pts.is_empty()).then(|| {
+                let (px, py) = in_degrees(&pts);
+                Series::line(label, &px, &py, color).styled(Style::Points(7))
+            })
+        })
+        .collect()
 }
 
 /// Stability map over two swept axes (the third at its first value).

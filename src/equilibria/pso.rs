@@ -211,39 +211,8 @@ pub fn search(
     starts: &[[f64; 2]],
 ) -> (Vec<Equilibrium>, SearchStats) {
     let scale = bx.scale();
-    // Residual scaled so that both components are rates of order one over
-    // the box: β̇ relative to β_max, ṙ relative to r_max per second.
-    // The residual with the loads at the equilibrium's ay = u·r and its
-    // Jacobian (closed form for PAC89): the same roots as the model's, one
-    // tyre-set evaluation per point instead of a load-transfer solve and two
-    // differenced neighbours (the swarm only ranks points; every candidate
-    // is polished on the model itself).
     let inputs = c.inputs();
-    let fitness = |x: &[f64]| {
-        let state = crate::vehicle::State {
-            beta: x[0],
-            yaw_rate: x[1],
-        };
-        let (f, j) = model.equilibrium_residual(&state, &inputs);
-        match settings.fitness {
-            Fitness::Residual => (f[0] / scale[0]).powi(2) + (f[1] / scale[1]).powi(2),
-            Fitness::NewtonStep => {
-                let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-                let dx = [
-                    (j[1][1] * f[0] - j[0][1] * f[1]) / det,
-                    (-j[1][0] * f[0] + j[0][0] * f[1]) / det,
-                ];
-                let step = (dx[0] / scale[0]).hypot(dx[1] / scale[1]);
-                // A singular Jacobian (a fold) gives an infinite step: rank it
-                // below every finite one rather than as NaN.
-                if step.is_finite() {
-                    step
-                } else {
-                    1e3
-                }
-            }
-        }
-    };
+    let fitness = |x: &[f64]| swarm_fitness(model, &inputs, scale, settings.fitness, x);
     let mut found: Vec<[f64; 2]> = Vec::new();
     let mut stats = SearchStats {
         winding: if settings.certify {
@@ -307,40 +276,18 @@ pub fn search(
                 Fitness::Residual => 1,
                 Fitness::NewtonStep => 3,
             };
-        let mut tried: Vec<[f64; 2]> = Vec::new();
-        let mut candidates: Vec<(Vec<f64>, f64)> = r.personal_bests;
-        candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
-        let mut new = 0;
-        for (p, v) in candidates {
-            let x0 = [p[0], p[1]];
-            if v > settings.candidate || tried.iter().any(|t| distance(*t, x0, scale) < 0.05) {
-                continue;
-            }
-            tried.push(x0);
-            stats.evaluations += 20;
-            if let Some(x) = polish_fast(model, c, x0) {
-                if bx.contains(x) && !found.iter().any(|k| distance(*k, x, scale) < 1e-7) {
-                    found.push(x);
-                    new += 1;
-                }
-            }
-        }
-        // Near a fold the partner equilibrium lies close by along the
-        // Jacobian's soft eigenvector, inside the deflation zone where the
-        // swarm rarely lands: probe along both eigenvectors of every new one.
-        let mut k = found.len() - new;
-        while k < found.len() {
-            for x0 in partner_probes(model, c, found[k], scale) {
-                stats.evaluations += 20;
-                if let Some(x) = polish_fast(model, c, x0) {
-                    if bx.contains(x) && !found.iter().any(|q| distance(*q, x, scale) < 1e-7) {
-                        found.push(x);
-                        new += 1;
-                    }
-                }
-            }
-            k += 1;
-        }
+        let before = found.len();
+        polish_candidates(
+            model,
+            c,
+            bx,
+            settings,
+            r.personal_bests,
+            &mut found,
+            &mut stats,
+        );
+        probe_partners(model, c, bx, before, &mut found, &mut stats);
+        let new = found.len() - before;
         // Each equilibrium's index once, when it is first found.
         indices.extend(found[indices.len()..].iter().map(index));
         stats.index_sum = indices.iter().sum();
@@ -352,4 +299,101 @@ pub fn search(
     let mut eqs: Vec<Equilibrium> = found.iter().map(|x| describe(model, c, *x)).collect();
     eqs.sort_by(|a, b| a.alpha_rear.total_cmp(&b.alpha_rear));
     (eqs, stats)
+}
+
+/// The swarm's fitness at `x`: the residual scaled so that both components
+/// are rates of order one over the box (β̇ relative to β_max, ṙ relative to
+/// r_max per second), or the length of the Newton step in the same scale.
+/// The residual takes the loads at the equilibrium's ay = u·r, with its
+/// Jacobian in closed form for PAC89: the same roots as the model's, one
+/// tyre-set evaluation per point instead of a load-transfer solve and two
+/// differenced neighbours (the swarm only ranks points; every candidate is
+/// polished on the model itself).
+fn swarm_fitness(
+    model: &VehicleModel,
+    inputs: &crate::vehicle::Inputs,
+    scale: [f64; 2],
+    kind: Fitness,
+    x: &[f64],
+) -> f64 {
+    let state = crate::vehicle::State {
+        beta: x[0],
+        yaw_rate: x[1],
+    };
+    let (f, j) = model.equilibrium_residual(&state, inputs);
+    match kind {
+        Fitness::Residual => (f[0] / scale[0]).powi(2) + (f[1] / scale[1]).powi(2),
+        Fitness::NewtonStep => {
+            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            let dx = [
+                (j[1][1] * f[0] - j[0][1] * f[1]) / det,
+                (-j[1][0] * f[0] + j[0][0] * f[1]) / det,
+            ];
+            let step = (dx[0] / scale[0]).hypot(dx[1] / scale[1]);
+            // A singular Jacobian (a fold) gives an infinite step: rank it
+            // below every finite one rather than as NaN.
+            if step.is_finite() {
+                step
+            } else {
+                1e3
+            }
+        }
+    }
+}
+
+/// Polishes the swarm's personal bests, best first, that are good enough and
+/// not next to one already tried; adds each new equilibrium in the box to
+/// `found`.
+fn polish_candidates(
+    model: &VehicleModel,
+    c: &Condition,
+    bx: &SearchBox,
+    settings: &PsoSearch,
+    mut candidates: Vec<(Vec<f64>, f64)>,
+    found: &mut Vec<[f64; 2]>,
+    stats: &mut SearchStats,
+) {
+    let scale = bx.scale();
+    let mut tried: Vec<[f64; 2]> = Vec::new();
+    candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
+    for (p, v) in candidates {
+        let x0 = [p[0], p[1]];
+        if v > settings.candidate || tried.iter().any(|t| distance(*t, x0, scale) < 0.05) {
+            continue;
+        }
+        tried.push(x0);
+        stats.evaluations += 20;
+        if let Some(x) = polish_fast(model, c, x0) {
+            if bx.contains(x) && !found.iter().any(|k| distance(*k, x, scale) < 1e-7) {
+                found.push(x);
+            }
+        }
+    }
+}
+
+/// Near a fold the partner equilibrium lies close by along the Jacobian's
+/// soft eigenvector, inside the deflation zone where the swarm rarely lands:
+/// probes along both eigenvectors of every equilibrium from `found[first..]`
+/// on, including those the probes themselves add.
+fn probe_partners(
+    model: &VehicleModel,
+    c: &Condition,
+    bx: &SearchBox,
+    first: usize,
+    found: &mut Vec<[f64; 2]>,
+    stats: &mut SearchStats,
+) {
+    let scale = bx.scale();
+    let mut k = first;
+    while k < found.len() {
+        for x0 in partner_probes(model, c, found[k], scale) {
+            stats.evaluations += 20;
+            if let Some(x) = polish_fast(model, c, x0) {
+                if bx.contains(x) && !found.iter().any(|q| distance(*q, x, scale) < 1e-7) {
+                    found.push(x);
+                }
+            }
+        }
+        k += 1;
+    }
 }

@@ -22,9 +22,10 @@ pub mod pac89_two_stage;
 
 use crate::error::Error;
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
-use crate::optim::{Inertia, Pso};
+use crate::optim::{stats, Inertia, Pso};
 use crate::tyre::{ModelName, Parameterised, Tyre, TyreModel};
 use data::Condition;
+use nalgebra::DMatrix;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -42,6 +43,15 @@ pub enum Channel {
 }
 
 impl Channel {
+    /// What the channel measures, for messages.
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Channel::LateralForce => "lateral force",
+            Channel::AligningMoment => "aligning moment",
+            Channel::LongitudinalForce => "longitudinal force",
+        }
+    }
+
     /// The measured value of a point.
     pub fn measured(self, q: &data::Point) -> f64 {
         match self {
@@ -301,7 +311,9 @@ pub fn fit_lateral(
 }
 
 /// Fits `start`'s parameters of `channel` to the conditions (for the
-/// aligning moment, with the lateral-force parameters held at `start`'s).
+/// aligning moment, with the lateral-force parameters held at `start`'s):
+/// the swarm, then the local polish, then standard errors from the Jacobian
+/// at the optimum.
 pub fn fit_channel(
     start: &Tyre,
     channel: Channel,
@@ -309,16 +321,73 @@ pub fn fit_channel(
     settings: &FitSettings,
 ) -> Result<Fit, Error> {
     let t0 = Instant::now();
-    if channel == Channel::AligningMoment && start.aligning_names().is_empty() {
+    let free = free_parameters(start, channel, conditions)?;
+    let problem = FitProblem::for_channel(start, channel, &free, conditions);
+    if problem.count() <= problem.free.len() {
         return Err(Error::Fit(format!(
-            "the {} model has no aligning moment to fit",
-            start.model_name()
+            "{} points with a measured {} cannot fit {} parameters",
+            problem.count(),
+            channel.quantity(),
+            problem.free.len()
         )));
     }
-    if channel == Channel::LongitudinalForce && start.longitudinal_names().is_empty() {
+    let all_bounds = channel.bounds(start);
+    let start_all = channel.parameters(start);
+    let start_p: Vec<f64> = problem.free.iter().map(|&i| start_all[i]).collect();
+    let found = search(&problem, &all_bounds, &start_p, settings);
+    let tyre = problem.tyre(&found.params).canonical();
+    let full = channel.parameters(&tyre);
+    let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
+    let mut res = vec![0.0; problem.count()];
+    problem.residuals(&p, &mut res);
+    let sum_squares: f64 = res.iter().map(|e| e * e).sum();
+    let covariance = stats::covariance(&jacobian(&problem, &p, &res), sum_squares);
+    let parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
+    let curves = conditions
+        .iter()
+        .map(|c| {
+            let (s, rms) = sigma_of(channel, &tyre, &c.points);
+            CurveReport {
+                fz: c.fz,
+                camber: c.camber,
+                pressure: c.pressure,
+                points: c.points.len(),
+                samples: c.samples,
+                sigma_percent: s,
+                rms,
+            }
+        })
+        .collect();
+    let (s, rms) = sigma_of(channel, &tyre, &problem.points);
+    Ok(Fit {
+        channel,
+        model: start.model_name(),
+        seed: settings.pso.seed,
+        tyre,
+        sigma_percent: s,
+        sigma_pso_percent: found.sigma_pso,
+        rms,
+        curves,
+        parameters,
+        evaluations: found.evaluations,
+        seconds: t0.elapsed().as_secs_f64(),
+        local: settings.local,
+        covariance,
+    })
+}
+
+/// Which of `channel`'s parameters the conditions can identify, or why the
+/// model or the data cannot be fitted at all.
+fn free_parameters(
+    start: &Tyre,
+    channel: Channel,
+    conditions: &[Condition],
+) -> Result<Vec<bool>, Error> {
+    if channel.names(start).is_empty() {
         return Err(Error::Fit(format!(
-            "the {} model has no longitudinal force to fit",
-            start.model_name()
+            "the {} model has no {} to fit",
+            start.model_name(),
+            channel.quantity()
         )));
     }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
@@ -336,66 +405,66 @@ pub fn fit_channel(
             loads.iter().map(|l| l.round()).collect::<Vec<_>>()
         )));
     }
-    let free = channel.free(start, loads.len(), cambers.len());
-    let problem = FitProblem::for_channel(start, channel, &free, conditions);
-    if problem.count() <= problem.free.len() {
-        return Err(Error::Fit(format!(
-            "{} points with a measured {} cannot fit {} parameters",
-            problem.count(),
-            match channel {
-                Channel::LateralForce => "lateral force",
-                Channel::AligningMoment => "aligning moment",
-                Channel::LongitudinalForce => "longitudinal force",
-            },
-            problem.free.len()
-        )));
-    }
-    let all_bounds = channel.bounds(start);
+    Ok(channel.free(start, loads.len(), cambers.len()))
+}
+
+/// The best point of a fit's search and what it cost.
+struct Found {
+    params: Vec<f64>,
+    evaluations: usize,
+    sigma_pso: f64,
+}
+
+/// The swarm from `start_p`, then the local polish of the swarm's best and,
+/// as a second start, of the user's start values; the better is kept (a
+/// cheap guard against a swarm that settled in a neighbouring basin).
+fn search(
+    problem: &FitProblem,
+    all_bounds: &[(f64, f64)],
+    start_p: &[f64],
+    settings: &FitSettings,
+) -> Found {
     let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
-    let start_all = channel.parameters(start);
-    let start_p: Vec<f64> = problem.free.iter().map(|&i| start_all[i]).collect();
-    let r =
-        settings
-            .pso
-            .minimize_from(|p| problem.cost(p), &bounds, std::slice::from_ref(&start_p));
-    let mut evaluations = r.evaluations;
-    let pso_tyre = problem.tyre(&r.best);
-    let all_points: Vec<data::Point> = problem.points.clone();
-    let (sigma_pso, _) = sigma_of(channel, &pso_tyre, &all_points);
-    // Polish the swarm's best and, as a second start, the user's start
-    // values; keep the better (a cheap guard against a swarm that settled in
-    // a neighbouring basin).
+    let r = settings
+        .pso
+        .minimize_from(|p| problem.cost(p), &bounds, &[start_p.to_vec()]);
+    let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&r.best), &problem.points);
     let polish = |x: &[f64]| match settings.local {
-        LocalMethod::LevenbergMarquardt => Some(levenberg_marquardt(&problem, x)),
-        LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(&problem, x)),
+        LocalMethod::LevenbergMarquardt => Some(levenberg_marquardt(problem, x)),
+        LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(problem, x)),
         LocalMethod::None => None,
     };
-    let mut p = r.best.clone();
+    let mut found = Found {
+        params: r.best.clone(),
+        evaluations: r.evaluations,
+        sigma_pso,
+    };
     let mut best_cost = r.value;
-    for l in [polish(&r.best), polish(&start_p)].into_iter().flatten() {
-        evaluations += l.evaluations;
+    for l in [polish(&r.best), polish(start_p)].into_iter().flatten() {
+        found.evaluations += l.evaluations;
         if l.cost.is_finite() && l.cost < best_cost {
             best_cost = l.cost;
-            p = l.params;
+            found.params = l.params;
         }
     }
-    let tyre = problem.tyre(&p).canonical();
-    let full = channel.parameters(&tyre);
-    let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
-    // Standard errors from the Jacobian at the optimum.
-    let mut res = vec![0.0; problem.count()];
-    problem.residuals(&p, &mut res);
-    let j = jacobian(&problem, &p, &res);
-    let (m, n) = (problem.count(), p.len());
-    let s2 = res.iter().map(|e| e * e).sum::<f64>() / (m - n) as f64;
-    let svd = (j.transpose() * &j).svd(true, true);
-    let smax = svd.singular_values.max();
-    let cov = svd.pseudo_inverse(1e-14 * smax).ok();
-    let names = channel.names(start);
-    let values = channel.parameters(&tyre);
-    let mut parameters = Vec::new();
+    found
+}
+
+/// One report per parameter of `channel`: value, whether it was free, its
+/// standard error from `covariance` (over the free ones, in order) and a
+/// warning when it sits at a bound or the data cannot identify it.
+fn parameter_reports(
+    start: &Tyre,
+    tyre: &Tyre,
+    channel: Channel,
+    free: &[bool],
+    covariance: Option<&DMatrix<f64>>,
+) -> Vec<ParameterReport> {
+    let all_bounds = channel.bounds(start);
+    let values = channel.parameters(tyre);
     let mut k = 0;
-    for (i, name) in names.iter().enumerate() {
+    let mut parameters = Vec::new();
+    for (i, name) in channel.names(start).iter().enumerate() {
         let (lo, hi) = all_bounds[i];
         let mut rep = ParameterReport {
             name: name.to_string(),
@@ -406,7 +475,10 @@ pub fn fit_channel(
             warning: None,
         };
         if free[i] {
-            let se = cov.as_ref().map(|c| (s2 * c[(k, k)]).max(0.0).sqrt());
+            let se = covariance
+                .map(|c| c[(k, k)])
+                .filter(|v| v.is_finite())
+                .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             let w = hi - lo;
             if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
@@ -424,37 +496,7 @@ pub fn fit_channel(
         }
         parameters.push(rep);
     }
-    let curves = conditions
-        .iter()
-        .map(|c| {
-            let (s, rms) = sigma_of(channel, &tyre, &c.points);
-            CurveReport {
-                fz: c.fz,
-                camber: c.camber,
-                pressure: c.pressure,
-                points: c.points.len(),
-                samples: c.samples,
-                sigma_percent: s,
-                rms,
-            }
-        })
-        .collect();
-    let (s, rms) = sigma_of(channel, &tyre, &all_points);
-    Ok(Fit {
-        channel,
-        model: start.model_name(),
-        seed: settings.pso.seed,
-        tyre,
-        sigma_percent: s,
-        sigma_pso_percent: sigma_pso,
-        rms,
-        curves,
-        parameters,
-        evaluations,
-        seconds: t0.elapsed().as_secs_f64(),
-        local: settings.local,
-        covariance: cov.map(|c| c * s2),
-    })
+    parameters
 }
 
 #[cfg(test)]

@@ -10,6 +10,7 @@ use super::scenario::{
 use super::toml_file::{param_error, TomlSource};
 use crate::error::{InputError, ParamError};
 use crate::metrics::MetricSettings;
+use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};
 use serde::Deserialize;
 use std::path::Path;
@@ -168,13 +169,13 @@ pub struct RbfInput {
     pub validation: Vec<usize>,
 }
 
-/// Inverse queries as loaded: (metric, value, tolerance) triples.
+/// Inverse queries as loaded (stiffness in N/rad).
 #[derive(Debug, Clone)]
 pub struct Inverse {
     /// Targets, each answered on its own.
-    pub targets: Vec<(String, f64, f64)>,
+    pub targets: Vec<Target>,
     /// Windows every answer must also meet.
-    pub constraints: Vec<(String, f64, f64)>,
+    pub constraints: Vec<Target>,
     /// The current tyres (k1, k2), N/rad.
     pub reference: (f64, f64),
 }
@@ -184,10 +185,8 @@ pub struct Inverse {
 pub struct StudyInput {
     /// The scenario part.
     pub scenario: Scenario,
-    /// N per file unit (π/180 for N/deg → N/rad is 180/π).
-    pub unit_to_si: f64,
-    /// Unit name for reports.
-    pub unit: String,
+    /// The file's stiffness unit, for reports.
+    pub unit: StiffnessUnit,
     /// Map front values, N/rad.
     pub front: Vec<f64>,
     /// Map rear values, N/rad.
@@ -202,104 +201,27 @@ pub struct StudyInput {
 pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
     let src = TomlSource::read(path)?;
     let f: StudyFile = src.parse()?;
-    let sc = ScenarioFile {
-        name: f.name.clone(),
-        description: f.description.clone(),
-        vehicle: f.vehicle.clone(),
-        tyres: f.tyres.clone(),
-        road: f.road,
-        model: f.model,
-        manoeuvre: f.manoeuvre.clone(),
-        simulation: f.simulation,
-        metrics: f.metrics,
-    };
-    if !matches!(f.manoeuvre, ManoeuvreSpec::StepSteer(_)) {
-        return Err(param_error(
+    let scenario = scenario_of(&f, &src)?;
+    let unit_name = f.stiffness.as_ref().map_or("N/deg", |s| s.unit.as_str());
+    let unit: StiffnessUnit = unit_name.parse().map_err(|e: crate::error::Error| {
+        param_error(
             &src,
             None,
-            ParamError::without_value("manoeuvre.kind", "a study needs a step steer"),
-        ));
-    }
-    let scenario = resolve_scenario(&sc, &src)?;
-    let unit = f
-        .stiffness
-        .as_ref()
-        .map_or("N/deg".to_string(), |s| s.unit.clone());
-    let k = match unit.as_str() {
-        "N/deg" => 180.0 / std::f64::consts::PI,
-        "N/rad" => 1.0,
-        u => {
-            return Err(param_error(
-                &src,
-                None,
-                ParamError::without_value(
-                    "stiffness.unit",
-                    &format!("unknown unit `{u}`: N/deg or N/rad"),
-                ),
-            ))
-        }
-    };
-    let check = |key: &str, v: &[f64]| -> Result<Vec<f64>, InputError> {
-        if v.is_empty() {
-            return Err(param_error(
-                &src,
-                None,
-                ParamError::without_value(key, "no values (a step or count that gives none?)"),
-            ));
-        }
-        for &x in v {
-            if !(x.is_finite() && x > 0.0) {
-                return Err(param_error(
-                    &src,
-                    None,
-                    ParamError::new(key, x, "a cornering stiffness must be positive"),
-                ));
-            }
-        }
-        Ok(v.iter().map(|x| x * k).collect())
+            ParamError::without_value("stiffness.unit", &e.to_string()),
+        )
+    })?;
+    let values = Values {
+        src: &src,
+        to_si: unit.to_si(),
     };
     let (front, rear) = match &f.stiffness {
         Some(s) => (
-            check("stiffness.front", &s.front.values())?,
-            check("stiffness.rear", &s.rear.values())?,
+            values.stiffness("stiffness.front", &s.front)?,
+            values.stiffness("stiffness.rear", &s.rear)?,
         ),
         None => (Vec::new(), Vec::new()),
     };
-    let rbf = match &f.rbf {
-        Some(r) => {
-            let fronts = check("rbf.front", &r.front.values())?;
-            let mut pairs = Vec::new();
-            let rear_max = r.rear_max.map_or(f64::INFINITY, |m| m * k * (1.0 + 1e-12));
-            for off in &r.rear_offsets {
-                for kf in &fronts {
-                    if kf + off * k <= rear_max {
-                        pairs.push((*kf, kf + off * k));
-                    }
-                }
-            }
-            for &i in &r.validation {
-                if i >= pairs.len() {
-                    return Err(param_error(
-                        &src,
-                        None,
-                        ParamError::new(
-                            "rbf.validation",
-                            i as f64,
-                            &format!("only {} pairs", pairs.len()),
-                        ),
-                    ));
-                }
-            }
-            ParamError::positive("spread", r.spread)
-                .map_err(|e| param_error(&src, Some("rbf"), e))?;
-            Some(RbfInput {
-                pairs,
-                spread: r.spread,
-                validation: r.validation.clone(),
-            })
-        }
-        None => None,
-    };
+    let rbf = f.rbf.as_ref().map(|r| values.rbf(r)).transpose()?;
     let inverse = match &f.inverse {
         Some(inv) => {
             if front.len() < 2 || rear.len() < 2 {
@@ -312,42 +234,125 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
                     ),
                 ));
             }
-            for t in inv.targets.iter().chain(&inv.constraints) {
-                if !crate::study::METRICS.contains(&t.metric.as_str()) {
-                    return Err(param_error(
-                        &src,
-                        None,
-                        ParamError::without_value(
-                            "inverse.targets",
-                            &format!(
-                                "unknown metric `{}`; one of {}",
-                                t.metric,
-                                crate::study::METRICS.join(", ")
-                            ),
-                        ),
-                    ));
-                }
-            }
-            let triples = |v: &[TargetSpec]| {
-                v.iter()
-                    .map(|t| (t.metric.clone(), t.value, t.tolerance))
-                    .collect()
-            };
-            Some(Inverse {
-                targets: triples(&inv.targets),
-                constraints: triples(&inv.constraints),
-                reference: (inv.reference.front * k, inv.reference.rear * k),
-            })
+            Some(values.inverse(inv)?)
         }
         None => None,
     };
     Ok(StudyInput {
         scenario,
-        unit_to_si: k,
         unit,
         front,
         rear,
         rbf,
         inverse,
     })
+}
+
+/// The scenario tables of a study file, resolved; a study needs a step steer.
+fn scenario_of(f: &StudyFile, src: &TomlSource) -> Result<Scenario, InputError> {
+    if !matches!(f.manoeuvre, ManoeuvreSpec::StepSteer(_)) {
+        return Err(param_error(
+            src,
+            None,
+            ParamError::without_value("manoeuvre.kind", "a study needs a step steer"),
+        ));
+    }
+    let sc = ScenarioFile {
+        name: f.name.clone(),
+        description: f.description.clone(),
+        vehicle: f.vehicle.clone(),
+        tyres: f.tyres.clone(),
+        road: f.road,
+        model: f.model,
+        manoeuvre: f.manoeuvre.clone(),
+        simulation: f.simulation,
+        metrics: f.metrics,
+    };
+    resolve_scenario(&sc, src)
+}
+
+/// Converts and checks a study file's values, given in its stiffness unit.
+struct Values<'a> {
+    src: &'a TomlSource,
+    /// N/rad per file unit.
+    to_si: f64,
+}
+
+impl Values<'_> {
+    fn error(&self, e: ParamError) -> InputError {
+        param_error(self.src, None, e)
+    }
+
+    /// The stiffness values of `axis` in N/rad: at least one, each positive.
+    fn stiffness(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
+        let v = axis.values();
+        if v.is_empty() {
+            return Err(self.error(ParamError::without_value(
+                key,
+                "no values (a step or count that gives none?)",
+            )));
+        }
+        if let Some(&x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
+            return Err(self.error(ParamError::new(
+                key,
+                x,
+                "a cornering stiffness must be positive",
+            )));
+        }
+        Ok(v.iter().map(|x| x * self.to_si).collect())
+    }
+
+    /// Wang & Liang's pairs (rear = front + offset, up to `rear_max`).
+    fn rbf(&self, r: &RbfSpec) -> Result<RbfInput, InputError> {
+        let k = self.to_si;
+        let fronts = self.stiffness("rbf.front", &r.front)?;
+        let rear_max = r.rear_max.map_or(f64::INFINITY, |m| m * k * (1.0 + 1e-12));
+        let pairs: Vec<(f64, f64)> = r
+            .rear_offsets
+            .iter()
+            .flat_map(|off| fronts.iter().map(move |&kf| (kf, kf + off * k)))
+            .filter(|&(_, kr)| kr <= rear_max)
+            .collect();
+        if let Some(&i) = r.validation.iter().find(|&&i| i >= pairs.len()) {
+            return Err(self.error(ParamError::new(
+                "rbf.validation",
+                i as f64,
+                &format!("only {} pairs", pairs.len()),
+            )));
+        }
+        ParamError::positive("spread", r.spread)
+            .map_err(|e| param_error(self.src, Some("rbf"), e))?;
+        Ok(RbfInput {
+            pairs,
+            spread: r.spread,
+            validation: r.validation.clone(),
+        })
+    }
+
+    /// The inverse queries with their metrics named and the reference in
+    /// N/rad.
+    fn inverse(&self, inv: &InverseSpec) -> Result<Inverse, InputError> {
+        let typed = |key: &str, v: &[TargetSpec]| -> Result<Vec<Target>, InputError> {
+            v.iter()
+                .map(|t| {
+                    let metric: Metric = t.metric.parse().map_err(|e: crate::error::Error| {
+                        self.error(ParamError::without_value(key, &e.to_string()))
+                    })?;
+                    Ok(Target {
+                        metric,
+                        value: t.value,
+                        tolerance: t.tolerance,
+                    })
+                })
+                .collect()
+        };
+        Ok(Inverse {
+            targets: typed("inverse.targets", &inv.targets)?,
+            constraints: typed("inverse.constraints", &inv.constraints)?,
+            reference: (
+                inv.reference.front * self.to_si,
+                inv.reference.rear * self.to_si,
+            ),
+        })
+    }
 }

@@ -6,6 +6,7 @@
 //! (`overlays.png`).
 
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
+use crate::diagnose::effects::joined;
 use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
 use crate::error::Error;
@@ -148,7 +149,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     out.extend(d.confounded.iter().map(|c| {
         format!(
             "confounded: {} — separate them with {}",
-            c.effects.join(", "),
+            joined(&c.effects, ", "),
             c.separating_test
         )
     }));
@@ -217,7 +218,7 @@ fn gap_panel(d: &Diagnosis, ch: Channel, axis: PartAxis, pts: &[(f64, f64, f64)]
     ];
     if !d.verdict.effects.is_empty() {
         series.push(Series::line(
-            &format!("with {}", d.verdict.effects.join(" + ")),
+            &format!("with {}", joined(&d.verdict.effects, " + ")),
             &x,
             &after,
             2,
@@ -255,7 +256,7 @@ fn overlays(d: &Diagnosis) -> Figure {
             ];
             if !d.verdict.effects.is_empty() {
                 series.push(Series::line(
-                    &format!("with {}", d.verdict.effects.join(" + ")),
+                    &format!("with {}", joined(&d.verdict.effects, " + ")),
                     &o.t,
                     observed_channel(&o.after, *ch),
                     2,

@@ -141,7 +141,7 @@ impl SimulateReport {
             out.extend(
                 r.channels
                     .iter()
-                    .map(|g| format!("  {}: {}", g.channel, g.verdict)),
+                    .map(|g| format!("  {}: {}", g.channel.name(), g.verdict)),
             );
         }
         out

@@ -7,7 +7,7 @@
 
 use crate::study::inverse::{best_on_curve, distance, Map};
 use crate::study::rbf::Rbf;
-use crate::study::{Metric, Sample, StiffnessUnit, Study, Target, METRICS};
+use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 
 mod figures;
 use crate::error::Error;
@@ -179,7 +179,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<StudyReport, Error> {
     let sc = &input.scenario;
     let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
-    let unit: StiffnessUnit = input.unit.parse()?;
+    let unit = input.unit;
     let st = Study {
         model: sc.model.clone(),
         manoeuvre: sc.manoeuvre.clone(),
@@ -307,21 +307,10 @@ fn answer(
 ) -> Result<InverseReport, Error> {
     let k = unit.to_si();
     let per_unit = |p: &(f64, f64)| [p.0 / k, p.1 / k];
-    let typed = |v: &[(String, f64, f64)]| -> Result<Vec<Target>, Error> {
-        v.iter()
-            .map(|(name, value, tolerance)| {
-                Ok(Target {
-                    metric: name.parse()?,
-                    value: *value,
-                    tolerance: *tolerance,
-                })
-            })
-            .collect()
-    };
-    let constraints = typed(&inv.constraints)?;
+    let constraints = &inv.constraints;
     let reference = inv.reference;
     let mut targets = Vec::new();
-    for t in typed(&inv.targets)? {
+    for &t in &inv.targets {
         let mut all = vec![t];
         all.extend(constraints.iter().copied());
         let region = map.region(&all).iter().map(per_unit).collect();

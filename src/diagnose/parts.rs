@@ -1,0 +1,240 @@
+//! The parts of a run a gap is pooled over ([`Part`]): the time windows
+//! from the start of its input and the regimes (bands of |ay| and of speed),
+//! with the samples that fall in each. Times in s, |ay| in m/s², speed in m/s.
+
+use serde::Serialize;
+
+/// A time window of a run, from the start of its input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Window {
+    /// Before the input starts.
+    BeforeInput,
+    /// The input's first 0.5 s.
+    FirstHalfSecond,
+    /// 0.5–2 s after the input starts.
+    HalfToTwoSeconds,
+    /// Later than 2 s.
+    Later,
+}
+
+impl Window {
+    /// Every window, in time order.
+    pub const ALL: [Window; 4] = [
+        Window::BeforeInput,
+        Window::FirstHalfSecond,
+        Window::HalfToTwoSeconds,
+        Window::Later,
+    ];
+
+    /// Its name in reports.
+    pub fn label(self) -> &'static str {
+        match self {
+            Window::BeforeInput => "before the input",
+            Window::FirstHalfSecond => "first 0.5 s of the input",
+            Window::HalfToTwoSeconds => "0.5–2 s after the input",
+            Window::Later => "later",
+        }
+    }
+
+    /// Where the gap map draws it: the window's centre, s after the input
+    /// starts (the open ends half a second before and a second after).
+    pub fn centre(self) -> f64 {
+        match self {
+            Window::BeforeInput => -0.5,
+            Window::FirstHalfSecond => 0.25,
+            Window::HalfToTwoSeconds => 1.25,
+            Window::Later => 3.0,
+        }
+    }
+}
+
+/// The axis of the gap map a part lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PartAxis {
+    /// Time after the input starts, s.
+    Time,
+    /// Lateral-acceleration level |ay|, m/s².
+    Ay,
+    /// Speed, m/s.
+    Speed,
+}
+
+impl PartAxis {
+    /// Every axis, in the gap map's order.
+    pub const ALL: [PartAxis; 3] = [PartAxis::Time, PartAxis::Ay, PartAxis::Speed];
+}
+
+/// A part of the data a gap is pooled over: everything, a time window or a
+/// regime (a band of |ay| or of speed, `lo` included, `hi` excluded).
+/// Serialised as its label.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Part {
+    /// All samples.
+    All,
+    /// A time window.
+    Window(Window),
+    /// Samples with `lo ≤ |ay| < hi`, m/s².
+    Ay {
+        /// Lower edge.
+        lo: f64,
+        /// Upper edge (may be infinite).
+        hi: f64,
+    },
+    /// Samples with `lo ≤ speed < hi`, m/s.
+    Speed {
+        /// Lower edge.
+        lo: f64,
+        /// Upper edge.
+        hi: f64,
+    },
+}
+
+impl Part {
+    /// Its label in reports: `all`, the window's name, `|ay| 2–4 m/s²`,
+    /// `speed 20–30 m/s`.
+    pub fn label(&self) -> String {
+        match self {
+            Part::All => "all".into(),
+            Part::Window(w) => w.label().into(),
+            Part::Ay { lo, hi } => format!("|ay| {lo}–{hi} m/s²"),
+            Part::Speed { lo, hi } => format!("speed {lo}–{hi} m/s"),
+        }
+    }
+
+    /// Where the gap map draws it: its axis and position (a window's
+    /// centre, a band's centre, or one above the lower edge of an open
+    /// band). `None` for [`Part::All`].
+    pub fn position(&self) -> Option<(PartAxis, f64)> {
+        let centre = |lo: f64, hi: f64| {
+            if hi.is_finite() {
+                0.5 * (lo + hi)
+            } else {
+                lo + 1.0
+            }
+        };
+        match *self {
+            Part::All => None,
+            Part::Window(w) => Some((PartAxis::Time, w.centre())),
+            Part::Ay { lo, hi } => Some((PartAxis::Ay, centre(lo, hi))),
+            Part::Speed { lo, hi } => Some((PartAxis::Speed, centre(lo, hi))),
+        }
+    }
+}
+
+impl std::fmt::Display for Part {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.label())
+    }
+}
+
+impl Serialize for Part {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.label())
+    }
+}
+
+/// The samples of each time window ([`Window::ALL`], in order): before the
+/// input, its first 0.5 s, 0.5–2 s, the rest. The input starts where the
+/// steer first leaves its initial value by more than 5 % of its largest
+/// excursion (and 1 mrad).
+pub fn window_samples(t: &[f64], steer: &[f64]) -> Vec<(Part, Vec<usize>)> {
+    let d0 = steer[0];
+    let excursion = steer.iter().map(|d| (d - d0).abs()).fold(0.0, f64::max);
+    let threshold = (0.05 * excursion).max(1e-3);
+    let start = steer
+        .iter()
+        .position(|d| (d - d0).abs() > threshold)
+        .map_or(t[t.len() - 1], |i| t[i]);
+    let bounds = [
+        (f64::NEG_INFINITY, start),
+        (start, start + 0.5),
+        (start + 0.5, start + 2.0),
+        (start + 2.0, f64::INFINITY),
+    ];
+    Window::ALL
+        .into_iter()
+        .zip(bounds)
+        .map(|(w, (lo, hi))| {
+            let idx = (0..t.len()).filter(|&i| t[i] >= lo && t[i] < hi).collect();
+            (Part::Window(w), idx)
+        })
+        .collect()
+}
+
+/// The samples of each regime that has any: |ay| in bands of 2 m/s² (the
+/// last open), then speed in bands of 10 m/s up to the largest speed.
+pub fn regime_samples(ay: &[f64], speed: &[f64]) -> Vec<(Part, Vec<usize>)> {
+    let n = ay.len();
+    let mut out = Vec::new();
+    for (lo, hi) in [
+        (0.0, 2.0),
+        (2.0, 4.0),
+        (4.0, 6.0),
+        (6.0, 8.0),
+        (8.0, f64::INFINITY),
+    ] {
+        let idx: Vec<usize> = (0..n)
+            .filter(|&i| ay[i].abs() >= lo && ay[i].abs() < hi)
+            .collect();
+        if !idx.is_empty() {
+            out.push((Part::Ay { lo, hi }, idx));
+        }
+    }
+    let vmax = speed.iter().copied().fold(0.0, f64::max);
+    let mut lo = 0.0;
+    while lo <= vmax {
+        let hi = lo + 10.0;
+        let idx: Vec<usize> = (0..n)
+            .filter(|&i| speed[i] >= lo && speed[i] < hi)
+            .collect();
+        if !idx.is_empty() {
+            out.push((Part::Speed { lo, hi }, idx));
+        }
+        lo += 10.0;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_record_splits_into_every_window_and_band_with_their_labels() {
+        // A record that visits every window, every |ay| band and three
+        // speed bands.
+        let t: Vec<f64> = (0..1200).map(|i| 0.01 * i as f64).collect();
+        let steer: Vec<f64> = t
+            .iter()
+            .map(|&t| if t < 1.0 { 0.0 } else { 0.02 })
+            .collect();
+        let ay = t.clone();
+        let speed: Vec<f64> = t.iter().map(|&t| 5.0 + 2.0 * t).collect();
+        let windows = window_samples(&t, &steer);
+        let regimes = regime_samples(&ay, &speed);
+        let parts: Vec<Part> = windows.iter().chain(&regimes).map(|p| p.0).collect();
+        assert_eq!(parts.len(), 4 + 5 + 3);
+        assert_eq!(parts[0], Part::Window(Window::BeforeInput));
+        // The input starts at 1 s: 100 samples before it, 50 in its first
+        // half second, 150 from 0.5 to 2 s, the rest later.
+        let counts: Vec<usize> = windows.iter().map(|w| w.1.len()).collect();
+        assert_eq!(counts, [100, 50, 150, 900]);
+        assert_eq!(
+            parts[8],
+            Part::Ay {
+                lo: 8.0,
+                hi: f64::INFINITY
+            }
+        );
+        assert_eq!(parts[8].position(), Some((PartAxis::Ay, 9.0)));
+        assert_eq!(parts[9], Part::Speed { lo: 0.0, hi: 10.0 });
+        assert_eq!(parts[9].label(), "speed 0–10 m/s");
+        assert_eq!(parts[4].label(), "|ay| 0–2 m/s²");
+        assert_eq!(parts[1].label(), "first 0.5 s of the input");
+        // Every sample is in exactly one window, one |ay| band and one speed
+        // band.
+        let total = |v: &[(Part, Vec<usize>)]| v.iter().map(|p| p.1.len()).sum::<usize>();
+        assert_eq!(total(&windows), t.len());
+        assert_eq!(total(&regimes), 2 * t.len());
+    }
+}

@@ -39,12 +39,7 @@ pub struct Condition {
 
 impl Condition {
     fn inputs(&self) -> Inputs {
-        Inputs {
-            steer: self.steer,
-            speed: self.speed,
-            speed_rate: 0.0,
-            friction: self.friction,
-        }
+        Inputs::steady(self.steer, self.speed, self.friction)
     }
 }
 

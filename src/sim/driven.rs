@@ -76,6 +76,8 @@ impl Drive {
             speed: self.speed[k],
             speed_rate: self.speed_rate[k],
             friction,
+            ax: self.speed_rate[k],
+            bank: 0.0,
         }
     }
 }
@@ -83,11 +85,14 @@ impl Drive {
 /// The inputs of manoeuvre `m` at time `t` on a road of friction
 /// `friction`.
 pub(super) fn manoeuvre_inputs(m: &Manoeuvre, t: f64, friction: f64) -> Inputs {
+    let speed_rate = m.speed_rate(t);
     Inputs {
         steer: m.steer(t),
         speed: m.speed(t),
-        speed_rate: m.speed_rate(t),
+        speed_rate,
         friction,
+        ax: speed_rate,
+        bank: 0.0,
     }
 }
 
@@ -132,12 +137,7 @@ impl<'a> Driven<'a> {
             load_tolerance: tolerance,
             load_evaluations: 0,
             last: (
-                Inputs {
-                    steer: 0.0,
-                    speed: 0.0,
-                    speed_rate: 0.0,
-                    friction,
-                },
+                Inputs::steady(0.0, 0.0, friction),
                 Outputs::default(),
             ),
         }

@@ -99,6 +99,30 @@ pub struct Inputs {
     pub speed_rate: f64,
     /// Road friction as a scale on the tyres' own friction.
     pub friction: f64,
+    /// Longitudinal acceleration of the centre of gravity, m/s² (positive
+    /// forward): measured, or a manoeuvre's du/dt. Only the longitudinal
+    /// effects read it ([`Effects::longitudinal_load_transfer`],
+    /// [`Effects::combined_slip`]).
+    pub ax: f64,
+    /// Road bank under the car at this instant, rad (positive: the road's
+    /// left edge higher), on top of the constant [`Effects::road_bank`]: a
+    /// measured bank profile.
+    pub bank: f64,
+}
+
+impl Inputs {
+    /// Inputs held constant in time (an equilibrium or a steady state): no
+    /// speed change, no longitudinal acceleration, no measured bank.
+    pub fn steady(steer: f64, speed: f64, friction: f64) -> Self {
+        Self {
+            steer,
+            speed,
+            speed_rate: 0.0,
+            friction,
+            ax: 0.0,
+            bank: 0.0,
+        }
+    }
 }
 
 /// The state (β, r).

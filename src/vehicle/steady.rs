@@ -157,12 +157,7 @@ impl VehicleModel {
                     beta: x[0],
                     yaw_rate: r,
                 },
-                &Inputs {
-                    steer: x[1],
-                    speed: u,
-                    speed_rate: 0.0,
-                    friction,
-                },
+                &Inputs::steady(x[1], u, friction),
             );
             // (ay_tyres − ay)/u rather than β̇: β̇ carries a cos²β factor
             // that would let Newton 'converge' by running off to β = ±90°.

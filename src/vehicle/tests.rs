@@ -148,12 +148,7 @@ fn load_transfer_loop_is_solved_not_lagged() {
         beta: -0.02,
         yaw_rate: 0.35,
     };
-    let inp = Inputs {
-        steer: 0.06,
-        speed: 22.0,
-        speed_rate: 0.0,
-        friction: 1.0,
-    };
+    let inp = Inputs::steady(0.06, 22.0, 1.0);
     let o = m.evaluate(&x, &inp);
     assert!(
         o.load_iterations > 1 && o.load_iterations < 15,
@@ -190,12 +185,7 @@ fn load_transfer_lowers_the_axle_force_of_a_saturating_tyre() {
         beta: 0.0,
         yaw_rate: 0.3,
     };
-    let inp = Inputs {
-        steer: 0.08,
-        speed: 20.0,
-        speed_rate: 0.0,
-        friction: 1.0,
-    };
+    let inp = Inputs::steady(0.08, 20.0, 1.0);
     let with = m.evaluate(&x, &inp).fy_front;
     m.options.load_transfer = false;
     let without = m.evaluate(&x, &inp).fy_front;
@@ -237,12 +227,7 @@ fn seeded_load_transfer_solves_cost_little_and_agree_with_fresh_ones() {
             beta: h.beta[i],
             yaw_rate: h.yaw_rate[i],
         };
-        let inp = Inputs {
-            steer: h.steer[i],
-            speed: h.speed[i],
-            speed_rate: 0.0,
-            friction: 1.0,
-        };
+        let inp = Inputs::steady(h.steer[i], h.speed[i], 1.0);
         assert_relative_eq!(model.evaluate(&x, &inp).ay, h.ay[i], epsilon = 1e-9);
     }
 }
@@ -269,6 +254,8 @@ fn effects_are_off_by_default_and_change_nothing_then() {
         speed: 25.0,
         speed_rate: 0.3,
         friction: 0.9,
+        ax: 0.3,
+        bank: 0.0,
     };
     assert_eq!(base.evaluate(&x, &inp), zero.evaluate(&x, &inp));
 }
@@ -282,12 +269,7 @@ fn a_banked_road_pulls_the_car_down_the_slope() {
     // accelerometer reads 0 and the path curves down the slope at g·sin θ.
     let o = m.evaluate(
         &State::default(),
-        &Inputs {
-            steer: 0.0,
-            speed: 20.0,
-            speed_rate: 0.0,
-            friction: 1.0,
-        },
+        &Inputs::steady(0.0, 20.0, 1.0),
     );
     assert_eq!(o.ay, 0.0);
     assert_relative_eq!(o.beta_rate, -G * bank.sin() / 20.0, max_relative = 1e-12);
@@ -466,6 +448,8 @@ fn with_every_effect_off_the_extra_states_do_not_feed_back_bit_for_bit() {
             speed: 21.0,
             speed_rate: 0.3,
             friction: 0.9,
+            ax: 0.3,
+            bank: 0.0,
         };
         let x = State {
             beta: -0.02,
@@ -533,12 +517,7 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
                 beta: h.beta[i],
                 yaw_rate: h.yaw_rate[i],
             },
-            &Inputs {
-                steer: h.steer[i] + m.options.effects.roll_steer[0] * h.roll[i],
-                speed: u,
-                speed_rate: 0.0,
-                friction: 1.0,
-            },
+            &Inputs::steady(h.steer[i] + m.options.effects.roll_steer[0] * h.roll[i], u, 1.0),
         );
         assert!(h.alpha_front[i] < 0.8 * af, "{} {af}", h.alpha_front[i]);
     }

@@ -506,32 +506,31 @@ mod tests {
         );
     }
 
-    /// Mz against TyreDyn's vectors at zero camber (its trail curvature
-    /// uses π/2; with camber TyreDyn evaluates Kyα at γ = 0 inside Mz, a
-    /// difference not resolved here).
+    /// The library's `evaluate` (not only the CLI) reproduces MFeval's
+    /// aligning moment with camber, combined slip and both pressures.
     #[test]
-    fn aligning_moment_agrees_with_tyredyn_at_zero_camber() {
+    fn aligning_moment_with_camber_agrees_with_mfeval() {
         for v in ["61", "62"] {
             let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
-            let mut t = load_tir(&dir.join(format!("MagicFormula{v}_Parameters.tir"))).unwrap();
-            t.options.trail_curvature = crate::tyre::mf::TrailCurvature::PiOverTwo;
+            let t = load_tir(&dir.join(format!("MagicFormula{v}_Parameters.tir"))).unwrap();
             let text =
-                std::fs::read_to_string(dir.join(format!("reference_tyredyn_mf{v}.csv"))).unwrap();
+                std::fs::read_to_string(dir.join(format!("reference_mfeval_mf{v}.csv"))).unwrap();
             let mut n = 0;
             for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
                 let r: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-                if r[3] != 0.0 {
+                if r[3] == 0.0 {
                     continue;
                 }
+                // Right-side file: the crate's (α, γ) = (α_ISO, −γ_ISO) and
+                // mz = Mz_ISO of the file.
                 let o = t.evaluate(&MfInput {
                     fz: r[0],
                     kappa: r[1],
                     alpha: r[2],
-                    camber: 0.0,
+                    camber: -r[3],
                     speed: r[4],
                     pressure: Some(r[5]),
                 });
-                // Right-side file: mz = Mz_ISO of the file at α_ISO = α.
                 assert!(
                     (o.mz - r[8]).abs() <= 1e-6 * r[8].abs() + 1e-6 * t.coefficients.FNOMIN,
                     "MF{v} mz at {r:?}: {}",
@@ -539,7 +538,7 @@ mod tests {
                 );
                 n += 1;
             }
-            assert_eq!(n, 3 * 2 * 13 * 7);
+            assert_eq!(n, 3 * 2 * 2 * 13 * 7);
         }
     }
 

@@ -241,7 +241,7 @@ fn scenario_with_a_tir_tyre_simulates() {
 /// camber_iso, speed, pressure, fx, fy, mz, mx, my), ISO-W, unmirrored.
 fn reference(v: &str) -> Vec<Vec<f64>> {
     let text =
-        fs::read_to_string(root().join(format!("tests/fixtures/tir/reference_tyredyn_mf{v}.csv")))
+        fs::read_to_string(root().join(format!("tests/fixtures/tir/reference_mfeval_mf{v}.csv")))
             .unwrap();
     text.lines()
         .filter(|l| !l.starts_with('#'))
@@ -250,19 +250,33 @@ fn reference(v: &str) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Every force and moment, with and without camber, combined slip, two
+/// pressures, against MFeval's numbers (tests/fixtures/tir/README.md).
 #[test]
-fn tyre_eval_agrees_with_tyredyn_on_public_files() {
-    for v in ["61", "62"] {
+fn tyre_eval_agrees_with_mfeval_on_public_files() {
+    // (version, FNOMIN, rows, TYRESIDE = RIGHT)
+    for (v, fnomin, n, right) in [
+        ("61", 6752.0, 1638, true),
+        ("62", 6752.0, 1638, true),
+        ("52", 9416.6, 819, false),
+    ] {
         let rows = reference(v);
-        assert_eq!(rows.len(), 3 * 2 * 3 * 13 * 7);
-        // The files are TYRESIDE = RIGHT: the left tyre the crate presents
-        // at (α, γ) is the file's tyre at (α_ISO = α, γ_ISO = −γ), with fy
-        // and mx negated (module docs of tyre::mf).
+        assert_eq!(rows.len(), n);
+        // The crate presents a left tyre (module docs of tyre::mf): a
+        // left-side file is evaluated at α_ISO = −α, γ_ISO = γ, with
+        // fy = Fy, mz = −Mz, mx = Mx; a right-side file mirrored at
+        // α_ISO = α, γ_ISO = −γ, with fy = −Fy, mz = Mz, mx = −Mx.
+        let (sa, sg) = if right { (1.0, -1.0) } else { (-1.0, 1.0) };
         let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
         for r in &rows {
             pts.push_str(&format!(
                 "{},{},{},{},{},{}\n",
-                r[0], r[1], r[2], -r[3], r[4], r[5]
+                r[0],
+                r[1],
+                sa * r[2],
+                sg * r[3],
+                r[4],
+                r[5]
             ));
         }
         let dir = scratch(&[("points.csv", &pts)]);
@@ -277,12 +291,14 @@ fn tyre_eval_agrees_with_tyredyn_on_public_files() {
         ]);
         assert!(o.status.success(), "{}", stderr(&o));
         let (head, got) = read_out(&out);
-        let fnomin = 6752.0;
+        let mirror = if right { -1.0 } else { 1.0 };
+        let mut cambered_mz = 0;
         for (r, g) in rows.iter().zip(&got) {
             for (name, i, sign) in [
                 ("fx", 6, 1.0),
-                ("fy", 7, -1.0),
-                ("mx", 9, -1.0),
+                ("fy", 7, mirror),
+                ("mz", 8, -mirror),
+                ("mx", 9, mirror),
                 ("my", 10, 1.0),
             ] {
                 let (want, have) = (sign * r[i], g[col(&head, name)]);
@@ -291,6 +307,11 @@ fn tyre_eval_agrees_with_tyredyn_on_public_files() {
                     "MF{v} {name} at {r:?}: {have} vs {want}"
                 );
             }
+            if r[3] != 0.0 && r[8].abs() > 10.0 {
+                cambered_mz += 1;
+            }
         }
+        // The camber rows carry aligning moments worth checking.
+        assert!(cambered_mz > n / 3, "MF{v}: {cambered_mz}");
     }
 }

@@ -3,11 +3,13 @@
 //! and `My` (what is modelled, the sources and the choices are in the
 //! parent module's notes). SI and radians; `α` here is TNO's.
 
-use super::{AlphaStar, MagicFormula, MfOutput, MfVersion, TrailCurvature};
+use super::{AlphaStar, MagicFormula, MfOutput, MfVersion};
 use std::f64::consts::PI;
 
 const EPS: f64 = 1e-6;
-const EPS_V: f64 = 0.1;
+/// `εV` of `cos'α` (eq. 4.E6a): MFeval's 1e-6 m/s; the book suggests 0.1 m/s,
+/// which moves the trail by ≈ 0.1/V and is off MFeval's `Mz` by 0.6 % at 17 m/s.
+const EPS_V: f64 = 1e-6;
 const A_MU: f64 = 10.0;
 
 /// `x` moved away from zero by `EPS` in its own direction.
@@ -64,7 +66,8 @@ pub(super) struct Point {
     fz: f64,
     kappa: f64,
     gamma: f64,
-    /// `sin γ` (TNO's γ in the lateral formulae).
+    /// `γ* = sin γ` (`γ` itself with [`AlphaStar::Angle`], as MFeval's
+    /// mode without α*): the camber of the lateral and `Mz` formulae.
     gs: f64,
     vx: f64,
     /// `Fz0' = FNOMIN·λ_Fz0`.
@@ -76,7 +79,10 @@ pub(super) struct Point {
     /// Low-speed fade factor (1 above `VXLOW`).
     low: f64,
     astar: f64,
+    /// `cos'α = Vcx/(Vc + εV)`, the trail's factor.
     cos_a: f64,
+    /// `cos α*` (`cos(tan α)` by default), the residual torque's factor.
+    cos_astar: f64,
     lmux_s: f64,
     lmuy_s: f64,
     lmux_p: f64,
@@ -135,18 +141,20 @@ impl MagicFormula {
         } else {
             1.0
         };
-        let astar = match self.options.alpha_star {
-            // tan α itself inside ±90° (one call instead of sin and cos);
-            // beyond, sin α/|cos α| keeps the slip's direction.
-            AlphaStar::Tan if alpha.abs() < 0.5 * PI => alpha.tan() * sgn(vx),
-            AlphaStar::Tan => {
-                let cs = alpha.cos().abs().max(1e-12);
-                alpha.sin() / cs * sgn(vx)
-            }
-            AlphaStar::Angle => alpha * sgn(vx),
+        // tan α itself inside ±90° (one call instead of sin and cos);
+        // beyond, sin α/|cos α| keeps the slip's direction.
+        let tan_a = if alpha.abs() < 0.5 * PI {
+            alpha.tan()
+        } else {
+            alpha.sin() / alpha.cos().abs().max(1e-12)
         };
-        // cos'α = Vcx/(Vc + εV) with εV = 0.1 m/s (Pacejka 2012 eq. 4.E6).
-        let vsy = vx * astar;
+        let (astar, gs) = match self.options.alpha_star {
+            AlphaStar::Tan => (tan_a * sgn(vx), gamma.sin()),
+            AlphaStar::Angle => (alpha * sgn(vx), gamma),
+        };
+        // cos'α = Vcx/(Vc + εV) (Pacejka 2012 eq. 4.E6)
+        // and Vsy = tan α·|Vx| in either α* mode (MFeval).
+        let vsy = vx.abs() * tan_a;
         let cos_a = vx / ((vx * vx + vsy * vsy).sqrt() + EPS_V);
         // Friction scaling with slip speed (λ*_μ) and its digressive form;
         // without LMUV (the usual file) the slip speed is not needed.
@@ -169,7 +177,7 @@ impl MagicFormula {
             fz,
             kappa,
             gamma,
-            gs: gamma.sin(),
+            gs,
             vx,
             fz0p,
             dfz: (fz - fz0p) / fz0p,
@@ -178,6 +186,7 @@ impl MagicFormula {
             low,
             astar,
             cos_a,
+            cos_astar: astar.cos(),
             lmux_s,
             lmuy_s,
             lmux_p: digress(lmux_s),
@@ -235,21 +244,35 @@ impl MagicFormula {
         };
         let fx = gxa * fx0;
 
-        let (gyk, svyk) = if kappa == 0.0 {
+        // `svyk_per_mu`: SVyκ per unit μy (eqs. 4.E66/4.E67), so that the
+        // 5.2 aligning moment can take it at the zero-camber μy as MFeval
+        // does.
+        let (gyk, svyk_per_mu) = if kappa == 0.0 {
             (1.0, 0.0)
         } else {
-            let dvyk =
-                lat.muy * fz * (c.RVY1 + c.RVY2 * q.dfz + c.RVY3 * gs) * cos_atan(c.RVY4 * q.astar);
-            let svyk = dvyk * (c.RVY5 * (c.RVY6 * kappa).atan()).sin() * c.LVYKA * q.low;
+            let svyk_per_mu = fz
+                * (c.RVY1 + c.RVY2 * q.dfz + c.RVY3 * gs)
+                * cos_atan(c.RVY4 * q.astar)
+                * (c.RVY5 * (c.RVY6 * kappa).atan()).sin()
+                * c.LVYKA
+                * q.low;
             let shyk = c.RHY1 + c.RHY2 * q.dfz;
             let byk = (c.RBY1 + c.RBY4 * gs * gs) * cos_atan(c.RBY2 * (q.astar - c.RBY3)) * c.LYKA;
             let cyk = c.RCY1;
             let eyk = (c.REY1 + c.REY2 * q.dfz).min(1.0);
             let gyk = mf_cos(byk, cyk, eyk, kappa + shyk) / mf_cos(byk, cyk, eyk, shyk);
-            (gyk, svyk)
+            (gyk, svyk_per_mu)
         };
-        let fy = gyk * lat.fy0 + svyk;
-        let mz = self.aligning(&q, &lat, kxk, fx, fy, gyk * fy0_flat);
+        let fy = gyk * lat.fy0 + lat.muy * svyk_per_mu;
+        // The lateral force the trail multiplies: TNO 6.1's `Fy'` (eq.
+        // 4.E74: the combined force at zero camber), and MFeval's 5.2 form
+        // `Fy − SVyκ` with SVyκ at the zero-camber μy.
+        let fy_trail = if self.version == MfVersion::Mf52 {
+            fy - base.mu0 * svyk_per_mu
+        } else {
+            gyk * fy0_flat
+        };
+        let mz = self.aligning(&q, &lat, kxk, fx, fy, fy_trail);
         let (mx, my) = self.wheel_moments(&q, fx, fy);
         MfOutput { fx, fy, mz, mx, my }
     }
@@ -292,7 +315,7 @@ impl MagicFormula {
             load_ratio: (fz / q.fz0p) / (1.0 + c.PPY2 * dpi),
             svy0: fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * q.lmuy_p * q.low,
             svyg_per_gs: fz * (c.PVY3 + c.PVY4 * dfz) * c.LKYC * q.lmuy_p * q.low,
-            kyg0: fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 - c.PPY5 * dpi) * c.LKYC,
+            kyg0: fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC,
             shy0: (c.PHY1 + c.PHY2 * dfz) * c.LHY,
             mu0: (c.PDY1 + c.PDY2 * dfz) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * q.lmuy_s,
             ey0: (c.PEY1 + c.PEY2 * dfz) * c.LEY,
@@ -316,7 +339,7 @@ impl MagicFormula {
         let svyg = b.svyg_per_gs * gs;
         let svy = b.svy0 + svyg;
         let shy = if self.version == MfVersion::Mf52 {
-            b.shy0 + c.PHY3 * gs
+            b.shy0 + c.PHY3 * gs * c.LKYC
         } else {
             b.shy0 + (b.kyg0 * gs - svyg) / guard(kya)
         };
@@ -337,14 +360,15 @@ impl MagicFormula {
         }
     }
 
-    /// Aligning moment (ISO-W), `fy_flat` the combined lateral force at
-    /// zero camber (TNO's `Fy'`).
-    fn aligning(&self, q: &Point, lat: &Lateral, kxk: f64, fx: f64, fy: f64, fy_flat: f64) -> f64 {
+    /// Aligning moment (ISO-W), `fy_trail` the lateral force the trail
+    /// multiplies (TNO's `Fy'`, or `Fy − SVyκ` for 5.2).
+    fn aligning(&self, q: &Point, lat: &Lateral, kxk: f64, fx: f64, fy: f64, fy_trail: f64) -> f64 {
         let c = &self.coefficients;
-        let v52 = self.version == MfVersion::Mf52;
         let (fz, dfz, dpi, gamma, astar) = (q.fz, q.dfz, q.dpi, q.gamma, q.astar);
         let (fz0, fz0p, r0) = (c.FNOMIN, q.fz0p, c.UNLOADED_RADIUS);
-        let gz = if v52 { gamma } else { q.gs };
+        // γ* in SHt, Et and Dr for every version (MFeval); γ itself in Bt
+        // and Dt (TNO eqs. A58/A60) and in s (A56).
+        let gz = q.gs;
         let kya_p = guard(lat.kya);
         let sht = c.QHZ1 + c.QHZ2 * dfz + (c.QHZ3 + c.QHZ4 * dfz) * gz;
         let at = astar + sht;
@@ -374,7 +398,7 @@ impl MagicFormula {
                     * c.LKZC)
             * q.lmuy_s
             * sgn(q.vx)
-            * q.cos_a;
+            * q.cos_astar;
         let kratio = kxk / kya_p;
         let k2 = kratio * kratio * q.kappa * q.kappa;
         // TNO (A54/A55): the equivalent angles combine tangents; without
@@ -389,19 +413,16 @@ impl MagicFormula {
         };
         let at_eq = equivalent(at);
         let ar_eq = equivalent(ar);
-        let et_factor = match self.options.trail_curvature {
-            TrailCurvature::TwoOverPi => 2.0 / PI,
-            TrailCurvature::PiOverTwo => PI / 2.0,
-        };
         let et = ((c.QEZ1 + c.QEZ2 * dfz + c.QEZ3 * dfz * dfz)
-            * (1.0 + (c.QEZ4 + c.QEZ5 * gz) * et_factor * (bt * ct * at).atan()))
+            * (1.0 + (c.QEZ4 + c.QEZ5 * gz) * (2.0 / PI) * (bt * ct * at).atan()))
         .min(1.0);
         // TNO scales the trail by λ_Fz0 as well.
         let t = dt * mf_cos(bt, ct, et, at_eq) * q.cos_a * c.LFZO;
-        let mzr = dr * cos_atan(br * ar_eq) * q.cos_a;
+        // Eq. 4.E75: Dr already carries its cosine; no cos'α again.
+        let mzr = dr * cos_atan(br * ar_eq);
         // TNO (A56): Fy/Fz0 with the unscaled Fz0 and γ itself.
         let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + (c.SSZ3 + c.SSZ4 * dfz) * gamma) * c.LS;
-        -t * fy_flat + mzr + s * fx
+        -t * fy_trail + mzr + s * fx
     }
 
     /// Overturning and rolling-resistance moments (TNO 6.1 forms; 5.2 files

@@ -23,31 +23,44 @@
 //!
 //! Choices where Pacejka (2012) and the TNO solver differ (TNO/MFeval is the
 //! default throughout):
-//! - `α*`: `tan α` (TNO and the book agree on steady state; the book's
-//!   small-angle form `α` is [`AlphaStar::Angle`], switchable).
-//! - digressive friction factor `A_μ = 10`: `λ'_μ = A_μ·λ*_μ/(1+(A_μ−1)·λ*_μ)`
-//!   multiplies only the vertical shifts `SVx`, `SVy`, as in TNO (book eq.
-//!   4.E8); switchable off ([`MfOptions::digressive_mu`]) to use `λ*_μ`.
+//! - `α* = tan α` and `γ* = sin γ` (book eqs. 4.E3/4.E4, MFeval's default
+//!   mode); [`AlphaStar::Angle`] takes `α* = α`, `γ* = γ` (MFeval's mode
+//!   without α*), switchable. `cos'α` uses `Vsy = tan α·|Vx|` in both.
+//! - digressive friction factor (book eq. 4.E8, `A_μ = 10`): off by
+//!   default, `λ'_μ = λ*_μ`, as MFeval (its `A_μ = 1`, found to match the
+//!   TNO solver); switchable on ([`MfOptions::digressive_mu`]), when it
+//!   multiplies only the vertical shifts `SVx`, `SVy`.
 //! - the small `ε` in denominators keeps the sign of the quantity it guards
 //!   (`x + ε·sgn x`, sgn 0 = +1), so a negative `Kyα` never crosses zero.
 //! - `My`: the TNO 6.1 form (load power `QSY7`, pressure power `QSY8`, speed
 //!   terms in `V/LONGVL`), not the book's 5.2 `QSY1..QSY4` polynomial alone.
-//! - `Mz`: `Bt` divides by `λ*_μy` (TNO), `Dt` carries `sgn(Vx)` and the
-//!   pressure term `PPZ1`, and the combined-slip `s` uses `Fy/Fz0'` (TNO).
-//!   For 5.2 files `Bt` has the `QBZ4·γ` term and `SHy` the `PHY3·γ` term.
+//! - `Mz` (MFeval's `calculateMz0`/`calculateMz`, checked against its
+//!   numbers, `tests/fixtures/tir/README.md`): `Bt` (TNO eq. A58) has
+//!   `QBZ4·γ + QBZ5·|γ|` with γ itself and divides by `λ*_μy`; `Dt` (A60)
+//!   has `QDZ3·γ + QDZ4·γ²` with γ itself (the book's 4.E43 has `|γ*|`),
+//!   `PPZ1` and `sgn(Vx)`; `SHt`, `Et` (`QEZ5`) and `Dr` (`QDZ8..QDZ11`)
+//!   take `γ*`; `Et` has the book's `2/π` and is clipped at 1. The residual
+//!   torque `Dr` ends in `cos α*` (MFeval; the book prints `cos'α`), and the
+//!   combined `Mzr = Dr·cos(atan(Br·αr,eq))` has no further cosine (eq.
+//!   4.E75). `Kyα`, `SHy`, `SVy`, `By`, `Cy` inside `Mz` are the cambered
+//!   ones; the trail multiplies `Fy' = Gyκ·Fy0(γ = 0)` (6.x) or
+//!   `Fy − SVyκ` with SVyκ at the zero-camber `μy` (MFeval's 5.2 form).
+//!   5.2 files use `γ*` in `Mz` like 6.x, and `SHy = … + PHY3·γ*·λKyγ`.
 //! - `Mx`: the TNO 6.1 form (`QSX1..QSX14`, `PPMX1`); 5.2 files leave
 //!   `QSX4..QSX14` at 0 and reduce to the 5.2 form.
 //! - 6.2 differs from 6.1 only in transient and loaded-radius parts not
 //!   modelled here, so both use the same steady-state equations.
 //!
-//! - `Kyγ0` carries `(1 − PPY5·dpi)`, the sign with which TyreDyn (van
-//!   Rossem, 2025, after MFeval) evaluates it; Pacejka (2012) eq. 4.E30
-//!   prints `(1 + pPy5·dpi)`.
-//! - `cos'α = Vcx/(Vc + εV)` with `εV = 0.1 m/s` (eq. 4.E6); the trail is
+//! - `Kyγ0` carries `(1 + PPY5·dpi)` (book eq. 4.E30 and MFeval; TyreDyn
+//!   (van Rossem, 2025) evaluates `1 − PPY5·dpi`, which moves its cambered
+//!   `Fy` at pressures off `NOMPRES`).
+//! - `cos'α = Vcx/(Vc + εV)` with `εV = 1e-6 m/s` (MFeval; eq. 4.E6a suggests 0.1); the trail is
 //!   multiplied by `λ_Fz0` (TNO); the equivalent slip angles of combined
 //!   `Mz` combine tangents (TNO eqs. A54/A55), `s` uses `Fy/Fz0` and `γ`.
-//! - the factor on `atan(Bt·Ct·αt)` in `Et`: `2/π` as in the book (default)
-//!   or `π/2` as TyreDyn evaluates it ([`TrailCurvature`]).
+//! - MFeval clips the curvature factors `E ≤ 1` only with its limit checks
+//!   on (its default); they are always clipped here. Its other limit checks
+//!   (saturating inputs to the file's ranges) are not modelled: inputs are
+//!   evaluated as given.
 //!
 //! Turn slip is off (all ζ = 1). Low speed: below `VXLOW` the vertical
 //! shifts (`SVx`, `SVy`, `SVyκ`) and `My` fade linearly with `|V|/VXLOW`, so
@@ -110,10 +123,10 @@ pub enum TyreSide {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum AlphaStar {
-    /// `tan α` (TNO).
+    /// `α* = tan α`, `γ* = sin γ` (TNO; MFeval's default mode).
     #[default]
     Tan,
-    /// `α` itself (small-angle form).
+    /// `α* = α`, `γ* = γ` (MFeval's mode without α*).
     Angle,
 }
 
@@ -123,29 +136,16 @@ pub enum AlphaStar {
 pub struct MfOptions {
     /// Form of `α*`.
     pub alpha_star: AlphaStar,
-    /// Use the digressive `λ'_μ` (A_μ = 10) in the vertical shifts.
+    /// Use the book's digressive `λ'_μ` (A_μ = 10) in the vertical shifts
+    /// (off: `λ'_μ = λ*_μ`, MFeval).
     pub digressive_mu: bool,
-    /// The factor on `atan(Bt·Ct·αt)` in the trail curvature `Et`.
-    pub trail_curvature: TrailCurvature,
-}
-
-/// The factor on `atan(Bt·Ct·αt)` in the trail curvature `Et`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum TrailCurvature {
-    /// `2/π`, as printed in Pacejka (2012) eq. 4.E44.
-    #[default]
-    TwoOverPi,
-    /// `π/2`, as TyreDyn (van Rossem, 2025) evaluates it.
-    PiOverTwo,
 }
 
 impl Default for MfOptions {
     fn default() -> Self {
         Self {
             alpha_star: AlphaStar::Tan,
-            digressive_mu: true,
-            trail_curvature: TrailCurvature::TwoOverPi,
+            digressive_mu: false,
         }
     }
 }

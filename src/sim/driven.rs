@@ -136,10 +136,7 @@ impl<'a> Driven<'a> {
             history: [(f64::NAN, 0.0); 2],
             load_tolerance: tolerance,
             load_evaluations: 0,
-            last: (
-                Inputs::steady(0.0, 0.0, friction),
-                Outputs::default(),
-            ),
+            last: (Inputs::steady(0.0, 0.0, friction), Outputs::default()),
         }
     }
 

@@ -238,6 +238,9 @@ impl TyreModel for Tyre {
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         self.as_model().cornering_stiffness(fz)
     }
+    fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
+        self.as_model().friction_coefficient(fz, mu_scale)
+    }
 }
 
 /// Forces and moments of any tyre at one point: the Magic Formula gives all

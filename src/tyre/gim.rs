@@ -113,6 +113,11 @@ impl TyreModel for Gim {
     fn lateral_force(&self, s: &SlipState) -> f64 {
         self.cornering(s).0
     }
+    /// The friction coefficient without sliding (its largest: friction
+    /// decays with sliding speed).
+    fn friction_coefficient(&self, _fz: f64, mu_scale: f64) -> f64 {
+        self.friction * mu_scale
+    }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         if fz <= 0.0 {
             0.0

@@ -49,6 +49,10 @@ impl TyreModel for Linear {
             self.cornering_stiffness * s.alpha
         }
     }
+    /// A linear tyre does not saturate: no friction limit.
+    fn friction_coefficient(&self, _fz: f64, _mu_scale: f64) -> f64 {
+        f64::INFINITY
+    }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         if fz <= 0.0 {
             0.0

@@ -68,6 +68,10 @@ impl TyreModel for MagicSimple {
             self.b * self.c * self.d * fz
         }
     }
+    /// The peak factor D (the sine's largest value is 1).
+    fn friction_coefficient(&self, _fz: f64, mu_scale: f64) -> f64 {
+        self.d * mu_scale
+    }
 }
 
 impl Parameterised for MagicSimple {

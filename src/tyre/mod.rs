@@ -130,6 +130,20 @@ pub trait TyreModel {
             / (2.0 * STIFFNESS_STEP)
     }
 
+    /// The radius of the friction circle per unit load at load `fz` and
+    /// friction scale `mu_scale`: the largest horizontal force the tyre
+    /// transmits over `fz`. The vehicle model combines a pure-slip tyre's
+    /// lateral force with a longitudinal force on this circle
+    /// ([`crate::vehicle::Effects::combined_slip`]). By default the peak
+    /// lateral force over the load (a scan, slow); models with a friction
+    /// coefficient in closed form return it.
+    fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
+        if fz <= 0.0 {
+            return 0.0;
+        }
+        self.peak_lateral_force(fz, mu_scale) / fz
+    }
+
     /// Peak lateral force magnitude over 0 < α ≤ 30°, N, at load `fz` and
     /// friction scale `mu_scale` (a scan at 0.05°, then a golden refine).
     fn peak_lateral_force(&self, fz: f64, mu_scale: f64) -> f64 {

@@ -292,6 +292,15 @@ impl TyreModel for Pac89 {
         });
         TyreForces { fx, fy, mz }
     }
+    /// `|D| + |Sv|` over the load: no force of the curve exceeds it (the
+    /// sine's largest value is 1), and it is the peak within the shift.
+    fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
+        if fz <= 0.0 {
+            return 0.0;
+        }
+        let curve = self.lateral_curve(fz / 1000.0, 0.0);
+        (curve.d.abs() + curve.sv.abs()) * mu_scale / fz
+    }
     fn lateral_force(&self, s: &SlipState) -> f64 {
         if s.fz <= 0.0 {
             return 0.0;

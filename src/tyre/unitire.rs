@@ -193,6 +193,11 @@ impl TyreModel for UniTire {
         }
         self.cornering(s).0
     }
+    /// The lateral friction coefficient without sliding (its dimensionless
+    /// force tends to 1 of μ·Fz).
+    fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
+        self.lateral.friction(fz / self.rated_load, 0.0) * mu_scale
+    }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         if fz <= 0.0 {
             return 0.0;

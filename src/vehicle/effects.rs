@@ -19,7 +19,19 @@
 //!   slip force does — what separates it from roll steer);
 //! - cornering-stiffness scale: each axle's tyre sees `s·α` (stiffness
 //!   scaled, peak force kept);
-//! - aero load and road bank: see the fields.
+//! - aero load and road bank: see the fields; a measured bank profile comes
+//!   in through [`super::Inputs::bank`] on top of the constant bank;
+//! - longitudinal load transfer: at longitudinal acceleration ax
+//!   ([`super::Inputs::ax`]) each front wheel loses and each rear wheel gains
+//!   `m·ax·h/(2l)` (Gillespie, *Fundamentals of Vehicle Dynamics*, 1992,
+//!   ch. 2), an axle's load never below zero;
+//! - combined slip ([`CombinedSlip`]): the longitudinal force `m·ax` is
+//!   shared between the axles by a drive split (ax > 0) or a brake balance
+//!   (ax < 0), evenly between an axle's wheels, and each wheel's lateral
+//!   force is reduced on the friction circle of its tyre,
+//!   `Fy = Fy0·√(1 − (Fx/(μ·Fz))²)` (a friction ellipse with equal axes:
+//!   the pure-slip models have no combined-slip law of their own; μ is
+//!   [`crate::tyre::TyreModel::friction_coefficient`]).
 //!
 //! Roll (the [`RollModel`]) is a second-order response of the body to the
 //! lateral acceleration, `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
@@ -67,6 +79,41 @@ impl Default for RollModel {
     }
 }
 
+/// How the longitudinal force `m·ax` is shared between the axles for
+/// combined slip: shares of the front axle, the rest on the rear.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CombinedSlip {
+    /// Front share of the drive force (ax > 0): 0 for rear-wheel drive.
+    pub drive_front_share: f64,
+    /// Front share of the brake force (ax < 0), the brake balance.
+    pub brake_front_share: f64,
+}
+
+impl Default for CombinedSlip {
+    /// Rear-wheel drive, 60 % of the braking on the front axle.
+    fn default() -> Self {
+        Self {
+            drive_front_share: 0.0,
+            brake_front_share: 0.6,
+        }
+    }
+}
+
+impl CombinedSlip {
+    /// The longitudinal force per wheel (front, rear), N, of a car of mass
+    /// `mass` at longitudinal acceleration `ax`.
+    pub fn wheel_forces(&self, mass: f64, ax: f64) -> [f64; 2] {
+        let share = if ax >= 0.0 {
+            self.drive_front_share
+        } else {
+            self.brake_front_share
+        };
+        let total = mass * ax;
+        [0.5 * share * total, 0.5 * (1.0 - share) * total]
+    }
+}
+
 /// Effects beyond the papers' model; [`Effects::default`] is the base model.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -94,6 +141,10 @@ pub struct Effects {
     pub cornering_stiffness_scale: [f64; 2],
     /// The body's roll response (drives roll steer and roll camber).
     pub roll: RollModel,
+    /// Longitudinal load transfer from [`super::Inputs::ax`].
+    pub longitudinal_load_transfer: bool,
+    /// Combined slip from [`super::Inputs::ax`] (None: pure slip).
+    pub combined_slip: Option<CombinedSlip>,
 }
 
 impl Default for Effects {
@@ -107,6 +158,8 @@ impl Default for Effects {
             roll_camber: [0.0; 2],
             cornering_stiffness_scale: [1.0; 2],
             roll: RollModel::default(),
+            longitudinal_load_transfer: false,
+            combined_slip: None,
         }
     }
 }
@@ -134,6 +187,17 @@ impl Effects {
         }
         for (i, v) in self.cornering_stiffness_scale.iter().enumerate() {
             ParamError::positive(&format!("cornering_stiffness_scale[{i}]"), *v)?;
+        }
+        if let Some(c) = &self.combined_slip {
+            for (key, v) in [
+                ("drive_front_share", c.drive_front_share),
+                ("brake_front_share", c.brake_front_share),
+            ] {
+                if !(0.0..=1.0).contains(&v) {
+                    return Err(ParamError::new(key, v, "a share of the force: 0 to 1")
+                        .within("combined_slip"));
+                }
+            }
         }
         self.roll.validate().map_err(|e| e.within("roll"))
     }

@@ -4,7 +4,10 @@
 //! `m·g·a/l` (times cos θ on a bank, plus aero load) split evenly, plus a
 //! lateral transfer `ΔFz = χ·m·ay·h/d_f` (front) and `(1 − χ)·m·ay·h/d_r`
 //! (rear) from the inner (left, for ay > 0) to the outer wheel, with χ = b/l
-//! by default. A wheel whose load would go negative is off the ground.
+//! by default. A wheel whose load would go negative is off the ground. With
+//! longitudinal load transfer ([`super::Effects::longitudinal_load_transfer`])
+//! the axle loads move by `m·ax·h/l` first; a measured bank
+//! ([`super::Inputs::bank`]) adds to the constant one.
 //!
 //! The loop: the loads depend on ay and ay on the forces, which depend on the
 //! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
@@ -134,17 +137,31 @@ impl VehicleModel {
     /// acceleration on each axle: computed once per derivative evaluation,
     /// not once per load-transfer iteration.
     pub(crate) fn load_split(&self, speed: f64) -> LoadSplit {
+        self.load_split_at(speed, 0.0, 0.0)
+    }
+
+    /// [`VehicleModel::load_split`] at longitudinal acceleration `ax` and a
+    /// measured bank `bank` on top of the constant one (both zero for a
+    /// steady state).
+    pub(crate) fn load_split_at(&self, speed: f64, ax: f64, bank: f64) -> LoadSplit {
         let v = &self.vehicle;
         let e = &self.options.effects;
         let (mut sf, mut sr) = v.static_axle_loads();
-        if e.road_bank != 0.0 {
-            let c = e.road_bank.cos();
+        let bank = e.road_bank + bank;
+        if bank != 0.0 {
+            let c = bank.cos();
             sf *= c;
             sr *= c;
         }
         if e.aero_load != [0.0; 2] {
             sf += e.aero_load[0] * speed * speed;
             sr += e.aero_load[1] * speed * speed;
+        }
+        if e.longitudinal_load_transfer && ax != 0.0 {
+            // A wheelie or a stoppie at the most: no axle load below zero.
+            let d = (v.mass * ax * v.cg_height / v.wheelbase()).clamp(-sr, sf);
+            sf -= d;
+            sr += d;
         }
         let (kf, kr) = if self.options.load_transfer {
             let chi = v.front_transfer_share();
@@ -175,7 +192,13 @@ impl VehicleModel {
 
     /// g·sin θ of the road bank, m/s².
     pub fn bank_acceleration(&self) -> f64 {
-        let bank = self.options.effects.road_bank;
+        self.bank_acceleration_at(0.0)
+    }
+
+    /// g·sin θ of the road bank with a measured bank `bank` on top of the
+    /// constant one, m/s².
+    pub fn bank_acceleration_at(&self, bank: f64) -> f64 {
+        let bank = self.options.effects.road_bank + bank;
         // No sine in the hot loop of the base model.
         if bank == 0.0 {
             0.0

@@ -34,7 +34,7 @@ mod params;
 mod rates;
 pub mod steady;
 
-pub use effects::{Effects, RollModel, MIN_RELAXATION_LENGTH};
+pub use effects::{CombinedSlip, Effects, RollModel, MIN_RELAXATION_LENGTH};
 pub use loads::LoadTransferSeed;
 pub use params::Vehicle;
 pub use rates::StateVector;

@@ -48,15 +48,44 @@ impl VehicleModel {
     }
 
     /// Axle force of `tyre` at slip angle `alpha` on wheel loads `fz`, plus
-    /// camber thrust `thrust` per unit load (roll camber).
-    fn axle_force(tyre: &Tyre, alpha: f64, fz: [f64; 2], thrust: f64, inp: &Inputs) -> f64 {
-        let y =
-            Self::wheel_force(tyre, alpha, fz[0], inp) + Self::wheel_force(tyre, alpha, fz[1], inp);
+    /// camber thrust `thrust` per unit load (roll camber); with a
+    /// longitudinal force `fx` per wheel (combined slip), each wheel's force
+    /// reduced on its friction circle.
+    fn axle_force(
+        tyre: &Tyre,
+        alpha: f64,
+        fz: [f64; 2],
+        thrust: f64,
+        fx: Option<f64>,
+        inp: &Inputs,
+    ) -> f64 {
+        let y = match fx {
+            None => {
+                Self::wheel_force(tyre, alpha, fz[0], inp)
+                    + Self::wheel_force(tyre, alpha, fz[1], inp)
+            }
+            Some(fx) => {
+                Self::combined_wheel_force(tyre, alpha, fz[0], fx, inp)
+                    + Self::combined_wheel_force(tyre, alpha, fz[1], fx, inp)
+            }
+        };
         if thrust == 0.0 {
             y
         } else {
             y + thrust * (fz[0] + fz[1])
         }
+    }
+
+    /// A wheel's lateral force with a longitudinal force `fx` taken from its
+    /// friction circle: `Fy0·√(1 − (Fx/(μ·Fz))²)`, zero once `fx` uses all
+    /// of it.
+    fn combined_wheel_force(tyre: &Tyre, alpha: f64, fz: f64, fx: f64, inp: &Inputs) -> f64 {
+        let fy0 = Self::wheel_force(tyre, alpha, fz, inp);
+        if fx == 0.0 || fy0 == 0.0 {
+            return fy0;
+        }
+        let ratio = fx / (tyre.friction_coefficient(fz, inp.friction) * fz);
+        fy0 * (1.0 - ratio * ratio).max(0.0).sqrt()
     }
 
     /// Kinematic slip angles (front, rear) of axles steered by `steer`
@@ -137,8 +166,18 @@ impl VehicleModel {
         // Without compliance the wheel's steer, hence the projection, does
         // not depend on the force: one cosine per evaluation.
         let fixed_projection = self.steer_projection(steer[0]);
+        let fx = e.combined_slip.map(|c| c.wheel_forces(v.mass, inp.ax));
         let front = |fz: [f64; 2]| -> (f64, f64) {
-            let force = |a: f64| Self::axle_force(&self.front, scale_f * a, fz, thrust[0], inp);
+            let force = |a: f64| {
+                Self::axle_force(
+                    &self.front,
+                    scale_f * a,
+                    fz,
+                    thrust[0],
+                    fx.map(|f| f[0]),
+                    inp,
+                )
+            };
             if lagged {
                 return (x[2], force(x[2]));
             }
@@ -164,7 +203,7 @@ impl VehicleModel {
             }
             (a1, f1)
         };
-        let split = self.load_split(u);
+        let split = self.load_split_at(u, inp.ax, inp.bank);
         let inv_m = 1.0 / v.mass;
         let eval = |ay: f64| {
             let fz = split.at(ay);
@@ -174,6 +213,7 @@ impl VehicleModel {
                 scale_r * alpha_rear,
                 [fz[2], fz[3]],
                 thrust[1],
+                fx.map(|f| f[1]),
                 inp,
             );
             let projection = if compliance == 0.0 {
@@ -207,7 +247,7 @@ impl VehicleModel {
         let yaw_acceleration = (v.a * fyf_x - v.b * s.fy_rear) / v.yaw_inertia;
         // The path's lateral acceleration is the tyres' (ay) less the bank's
         // pull g·sin θ (zero without a bank).
-        let ay_path = ay - self.bank_acceleration();
+        let ay_path = ay - self.bank_acceleration_at(inp.bank);
         let beta_rate = match self.options.kinematics {
             Kinematics::Exact => {
                 let vy = u * beta.tan();

@@ -57,6 +57,9 @@ enum Command {
     TyreEval(tyre_eval::TyreEvalArgs),
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics(simulate::MetricsArgs),
+    /// The outputs of a sharded `equilibria` or `study` run from its shard
+    /// files, byte for byte those of the unsharded run.
+    Merge(equilibria::MergeArgs),
 }
 
 /// Parses the arguments, runs the command, prints errors; exit code 1 on error.
@@ -70,6 +73,7 @@ pub fn run() -> ExitCode {
         Command::Synth(a) => diagnose::synth(a),
         Command::TyreEval(a) => tyre_eval::tyre_eval(a),
         Command::Metrics(a) => simulate::metrics(a),
+        Command::Merge(a) => equilibria::merge(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -11,6 +11,7 @@ use super::pso::{self, PsoSearch};
 use super::{distance, exact, Condition, Equilibrium, FoundBy, SearchBox};
 use crate::vehicle::VehicleModel;
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The swept values (SI units, rad and m/s).
@@ -60,7 +61,7 @@ impl Grid {
 }
 
 /// One equilibrium in a sweep's output.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Found {
     /// The equilibrium (the exact solver's where both found it).
     pub equilibrium: Equilibrium,
@@ -71,7 +72,7 @@ pub struct Found {
 }
 
 /// The result at one condition.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PointResult {
     /// The condition.
     pub condition: Condition,
@@ -175,12 +176,37 @@ pub fn run(
     with_bifurcations: bool,
     progress: &AtomicUsize,
 ) -> SweepResult {
-    let lines: Vec<(usize, usize)> = (0..grid.speed.len())
+    let all: Vec<usize> = (0..grid_lines(grid).len()).collect();
+    let solved = solve_lines(model, grid, bx, search, &all, progress);
+    assemble(model, grid, solved, with_bifurcations)
+}
+
+/// The lines of constant friction and speed, as (friction, speed) indices,
+/// speed slowest: the unit of work of a sweep (a line's search is seeded
+/// along it, so lines are independent of each other).
+pub fn grid_lines(grid: &Grid) -> Vec<(usize, usize)> {
+    (0..grid.speed.len())
         .flat_map(|s| (0..grid.friction.len()).map(move |f| (f, s)))
-        .collect();
-    let solved: Vec<Vec<PointResult>> = lines
+        .collect()
+}
+
+/// Solves the lines `which` (indices into [`grid_lines`]) in parallel, each
+/// point by the exact solver and the PSO search seeded with the previous
+/// point's equilibria; one vector of points per line, steer fastest. A line
+/// gives the same points whatever other lines are solved with it.
+pub fn solve_lines(
+    model: &VehicleModel,
+    grid: &Grid,
+    bx: &SearchBox,
+    search: &PsoSearch,
+    which: &[usize],
+    progress: &AtomicUsize,
+) -> Vec<Vec<PointResult>> {
+    let lines = grid_lines(grid);
+    which
         .par_iter()
-        .map(|&(i_f, i_s)| {
+        .map(|&l| {
+            let (i_f, i_s) = lines[l];
             let mut prev: Vec<[f64; 2]> = Vec::new();
             grid.steer
                 .iter()
@@ -206,7 +232,17 @@ pub fn run(
                 })
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// The sweep from every line's points (in [`grid_lines`] order), with the
+/// bifurcations along every varying axis located when asked.
+pub fn assemble(
+    model: &VehicleModel,
+    grid: &Grid,
+    solved: Vec<Vec<PointResult>>,
+    with_bifurcations: bool,
+) -> SweepResult {
     let points: Vec<PointResult> = solved.into_iter().flatten().collect();
     let mut bifurcations = Vec::new();
     if with_bifurcations {

@@ -10,6 +10,9 @@ use crate::equilibria::sweep::{self, SweepResult};
 use crate::equilibria::{exact, plots, FoundBy, SearchBox};
 use crate::error::Error;
 use crate::io::sweep::{load_sweep, Sweep};
+use crate::jobs::shard::{
+    input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
+};
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
 use crate::vehicle::Kinematics;
@@ -40,7 +43,9 @@ pub struct EquilibriaSummary {
     pub search_box: SearchBox,
     /// Model evaluations of the swarms.
     pub pso_evaluations: usize,
-    /// Wall time, s.
+    /// Wall time, s (printed, not written: the outputs of a run merged from
+    /// shards are byte for byte those of the unsharded run).
+    #[serde(skip)]
     pub seconds: f64,
     /// Conditions by the number of equilibria in the box.
     pub equilibria_in_box_histogram: BTreeMap<usize, usize>,
@@ -77,12 +82,10 @@ const FILES: [&str; 4] = [
 /// `out/<sweep name>`), checked against the inputs first.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
     let sw = load_sweep(path)?;
-    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sw.name), Path::to_path_buf);
-    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sw.inputs)?;
-    let n = sw.grid.len();
+    let out_dir = output_folder(&sw, out)?;
     let t0 = Instant::now();
     let res = {
-        let progress = Progress::start("equilibria", n);
+        let progress = Progress::start("equilibria", sw.grid.len());
         sweep::run(
             &sw.model,
             &sw.grid,
@@ -92,7 +95,86 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
             progress.counter(),
         )
     };
-    let seconds = t0.elapsed().as_secs_f64();
+    Ok(report(sw, res, t0.elapsed().as_secs_f64(), out_dir))
+}
+
+/// Solves shard `shard`'s lines of the sweep of the file `path` and writes
+/// them to `<out>/shard-K-of-N.json` (default folder `out/<sweep name>`);
+/// [`merge`] makes the outputs of the whole sweep from the N shard files.
+pub fn run_shard(path: &Path, shard: Shard, out: Option<&Path>) -> Result<ShardReport, Error> {
+    let sw = load_sweep(path)?;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sw.name), Path::to_path_buf);
+    let file = out_dir.join(shard.file_name());
+    refuse_overwrites([&file], &sw.inputs)?;
+    let units = sweep::grid_lines(&sw.grid).len();
+    let owned = shard.units(units);
+    let results = {
+        let n = owned.len() * sw.grid.steer.len();
+        let progress = Progress::start("equilibria shard", n);
+        sweep::solve_lines(
+            &sw.model,
+            &sw.grid,
+            &sw.search_box,
+            &sw.pso,
+            &owned,
+            progress.counter(),
+        )
+    };
+    let conditions = results.iter().map(Vec::len).sum();
+    write_shard(
+        &file,
+        &ShardFile {
+            job: ShardJob::Equilibria,
+            shard,
+            input: path.to_path_buf(),
+            inputs: input_copies(&sw.inputs)?,
+            units,
+            owned: owned.clone(),
+            results,
+        },
+    )?;
+    Ok(ShardReport {
+        job: ShardJob::Equilibria,
+        shard,
+        units,
+        owned: owned.len(),
+        conditions,
+        path: file,
+    })
+}
+
+/// The sweep of a set of shard files ([`run_shard`]): checked to be every
+/// shard of one run on unchanged inputs, assembled, its bifurcations
+/// located; its outputs (written by [`EquilibriaReport::write`]) are those
+/// of the unsharded run, byte for byte.
+pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<EquilibriaReport, Error> {
+    let t0 = Instant::now();
+    let (input, _, lines) = read_shards::<Vec<sweep::PointResult>>(ShardJob::Equilibria, shards)?;
+    let sw = load_sweep(&input)?;
+    let out_dir = output_folder(&sw, out)?;
+    let res = sweep::assemble(&sw.model, &sw.grid, lines, sw.report.bifurcations);
+    if res.points.len() != sw.grid.len() {
+        return Err(Error::Options(format!(
+            "merge: the shards hold {} conditions, the sweep {} has {}",
+            res.points.len(),
+            input.display(),
+            sw.grid.len()
+        )));
+    }
+    Ok(report(sw, res, t0.elapsed().as_secs_f64(), out_dir))
+}
+
+/// The output folder (default `out/<sweep name>`), none of whose outputs
+/// is an input.
+fn output_folder(sw: &Sweep, out: Option<&Path>) -> Result<PathBuf, Error> {
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sw.name), Path::to_path_buf);
+    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sw.inputs)?;
+    Ok(out_dir)
+}
+
+/// The report of a solved sweep.
+fn report(sw: Sweep, res: SweepResult, seconds: f64, out_dir: PathBuf) -> EquilibriaReport {
+    let n = sw.grid.len();
     let agree = res.agreeing();
     let mut counts = BTreeMap::new();
     for p in &res.points {
@@ -119,12 +201,12 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
         conditions_with_continua: res.points.iter().filter(|p| !p.continua.is_empty()).count(),
         bifurcations: res.bifurcations.clone(),
     };
-    Ok(EquilibriaReport {
+    EquilibriaReport {
         summary,
         result: res,
         sweep: sw,
         out_dir,
-    })
+    }
 }
 
 impl EquilibriaReport {

@@ -13,6 +13,7 @@
 //! | `diagnose` | [`diagnose::run`] | [`diagnose::DiagnoseReport`] |
 //! | `synth` | [`synth::run`] | [`synth::SynthReport`] |
 //! | `tyre-eval` | [`tyre_eval::run`] | [`tyre_eval::TyreEvalReport`] |
+//! | `equilibria --shard K/N`, `merge` | [`equilibria::run_shard`], [`equilibria::merge`] | [`shard::ShardReport`], [`equilibria::EquilibriaReport`] |
 //!
 //! `identify` and `study` live in their own modules; the jobs here combine
 //! modules (a scenario, the integrator and the metrics; the diagnosis and
@@ -22,6 +23,7 @@ pub mod diagnose;
 pub mod equilibria;
 pub mod identify;
 pub mod metrics;
+pub mod shard;
 pub mod simulate;
 pub mod study;
 pub mod synth;

@@ -37,7 +37,7 @@ pub struct Study {
 }
 
 /// One evaluated combination.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Sample {
     /// Front cornering stiffness per tyre, N/rad.
     pub k_front: f64,

@@ -88,6 +88,7 @@ mod proving_ground;
 mod real_logs;
 mod rig_layouts;
 mod scenarios;
+mod shards;
 mod sweeps;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

@@ -12,6 +12,9 @@ use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 mod figures;
 use crate::error::Error;
 use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
+use crate::jobs::shard::{
+    input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
+};
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
 use serde::Serialize;
@@ -23,7 +26,9 @@ use std::time::Instant;
 pub struct StudySummary {
     /// Combinations simulated (map and RBF pairs).
     pub combinations: usize,
-    /// Wall time of the simulations, s.
+    /// Wall time of the simulations, s (printed, not written: a run merged
+    /// from shards writes the unsharded run's outputs byte for byte).
+    #[serde(skip)]
     pub seconds: f64,
     /// Study name.
     pub study: String,
@@ -175,65 +180,153 @@ const FILES: [&str; 6] = [
 /// Runs the study of the file `path`; `out` is the output folder (default
 /// `out/<study name>`), checked against the inputs before any simulation.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<StudyReport, Error> {
-    let input = load_study(path)?;
-    let sc = &input.scenario;
-    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
-    refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
-    let unit = input.unit;
-    let st = Study {
-        model: sc.model.clone(),
-        manoeuvre: sc.manoeuvre.clone(),
-        integrator: sc.integrator,
-        metrics: sc.metrics,
-    };
-    let grid: Vec<(f64, f64)> = input
-        .front
-        .iter()
-        .flat_map(|&f| input.rear.iter().map(move |&r| (f, r)))
-        .collect();
-    let rbf_pairs = input.rbf.as_ref().map_or(&[][..], |r| &r.pairs[..]);
-    let all: Vec<(f64, f64)> = grid.iter().chain(rbf_pairs).copied().collect();
-    if all.is_empty() {
-        return Err(Error::Data {
-            path: path.to_path_buf(),
-            message: "nothing to simulate: give a [stiffness] map or [rbf] pairs".into(),
-        });
-    }
+    let job = Job::load(path, out)?;
     let t0 = Instant::now();
     let samples = {
-        let p = Progress::start("study", all.len());
-        st.evaluate_all(&all, p.counter())
+        let p = Progress::start("study", job.all.len());
+        job.study.evaluate_all(&job.all, p.counter())
     };
-    let seconds = t0.elapsed().as_secs_f64();
-    let map = Map {
-        front: input.front.clone(),
-        rear: input.rear.clone(),
-        samples: samples[..grid.len()].to_vec(),
+    job.finish(samples, t0.elapsed().as_secs_f64())
+}
+
+/// Simulates shard `shard`'s combinations (map points and RBF pairs, in one
+/// list) of the study of the file `path` and writes them to
+/// `<out>/shard-K-of-N.json`; [`merge`] finishes the study from the N shard
+/// files.
+pub fn run_shard(path: &Path, shard: Shard, out: Option<&Path>) -> Result<ShardReport, Error> {
+    let job = Job::load(path, None)?;
+    let sc = &job.input.scenario;
+    let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
+    let file = out_dir.join(shard.file_name());
+    refuse_overwrites([&file], &sc.inputs)?;
+    let owned = shard.units(job.all.len());
+    let pairs: Vec<(f64, f64)> = owned.iter().map(|&i| job.all[i]).collect();
+    let results = {
+        let p = Progress::start("study shard", pairs.len());
+        job.study.evaluate_all(&pairs, p.counter())
     };
-    let pairs = samples[grid.len()..].to_vec();
-    let k = unit.to_si();
-    let net = input.rbf.as_ref().map(|r| train(&st, r, &pairs, k, unit));
-    let inverse = input
-        .inverse
-        .as_ref()
-        .map(|inv| answer(&st, &input, inv, &map, net.as_ref().map(|n| &n.0), unit))
-        .transpose()?;
-    Ok(StudyReport {
-        summary: StudySummary {
-            combinations: all.len(),
-            seconds,
-            study: sc.name.clone(),
-            unit,
-            without_steady_state: samples.iter().filter(|s| s.metrics.is_none()).count(),
+    write_shard(
+        &file,
+        &ShardFile {
+            job: ShardJob::Study,
+            shard,
+            input: path.to_path_buf(),
+            inputs: input_copies(&sc.inputs)?,
+            units: job.all.len(),
+            owned: owned.clone(),
+            results,
         },
-        rbf: net.map(|n| n.1),
-        inverse,
-        samples,
-        map,
-        pairs,
-        tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
-        out_dir,
+    )?;
+    Ok(ShardReport {
+        job: ShardJob::Study,
+        shard,
+        units: job.all.len(),
+        owned: owned.len(),
+        conditions: owned.len(),
+        path: file,
     })
+}
+
+/// The study of a set of shard files ([`run_shard`]), checked to be every
+/// shard of one run on unchanged inputs: the map, the network and the
+/// inverse as the unsharded run makes them; its outputs are the unsharded
+/// run's, byte for byte.
+pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<StudyReport, Error> {
+    let t0 = Instant::now();
+    let (input, units, samples) = read_shards::<Sample>(ShardJob::Study, shards)?;
+    let job = Job::load(&input, out)?;
+    if units != job.all.len() {
+        return Err(Error::Options(format!(
+            "merge: the shards hold {units} combinations, the study {} has {}",
+            input.display(),
+            job.all.len()
+        )));
+    }
+    job.finish(samples, t0.elapsed().as_secs_f64())
+}
+
+/// A loaded study: its input, the model and manoeuvre, every combination to
+/// simulate (the map's, then the RBF pairs) and the output folder.
+struct Job {
+    input: StudyInput,
+    study: Study,
+    /// Map points, front slowest.
+    grid: Vec<(f64, f64)>,
+    /// The map points, then the RBF pairs.
+    all: Vec<(f64, f64)>,
+    out_dir: PathBuf,
+}
+
+impl Job {
+    fn load(path: &Path, out: Option<&Path>) -> Result<Self, Error> {
+        let input = load_study(path)?;
+        let sc = &input.scenario;
+        let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
+        refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
+        let study = Study {
+            model: sc.model.clone(),
+            manoeuvre: sc.manoeuvre.clone(),
+            integrator: sc.integrator,
+            metrics: sc.metrics,
+        };
+        let grid: Vec<(f64, f64)> = input
+            .front
+            .iter()
+            .flat_map(|&f| input.rear.iter().map(move |&r| (f, r)))
+            .collect();
+        let rbf_pairs = input.rbf.as_ref().map_or(&[][..], |r| &r.pairs[..]);
+        let all: Vec<(f64, f64)> = grid.iter().chain(rbf_pairs).copied().collect();
+        if all.is_empty() {
+            return Err(Error::Data {
+                path: path.to_path_buf(),
+                message: "nothing to simulate: give a [stiffness] map or [rbf] pairs".into(),
+            });
+        }
+        Ok(Self {
+            input,
+            study,
+            grid,
+            all,
+            out_dir,
+        })
+    }
+
+    /// The map, the network and the inverse from every combination's
+    /// sample (in [`Job::all`]'s order).
+    fn finish(self, samples: Vec<Sample>, seconds: f64) -> Result<StudyReport, Error> {
+        let (input, st) = (&self.input, &self.study);
+        let sc = &input.scenario;
+        let unit = input.unit;
+        let map = Map {
+            front: input.front.clone(),
+            rear: input.rear.clone(),
+            samples: samples[..self.grid.len()].to_vec(),
+        };
+        let pairs = samples[self.grid.len()..].to_vec();
+        let k = unit.to_si();
+        let net = input.rbf.as_ref().map(|r| train(st, r, &pairs, k, unit));
+        let inverse = input
+            .inverse
+            .as_ref()
+            .map(|inv| answer(st, input, inv, &map, net.as_ref().map(|n| &n.0), unit))
+            .transpose()?;
+        Ok(StudyReport {
+            summary: StudySummary {
+                combinations: self.all.len(),
+                seconds,
+                study: sc.name.clone(),
+                unit,
+                without_steady_state: samples.iter().filter(|s| s.metrics.is_none()).count(),
+            },
+            rbf: net.map(|n| n.1),
+            inverse,
+            samples,
+            map,
+            pairs,
+            tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
+            out_dir: self.out_dir,
+        })
+    }
 }
 
 /// Wang & Liang's RBF network Er → (k1, k2), trained on all pairs but the

@@ -1,0 +1,293 @@
+//! Sharding a job over machines (a Slurm or HTCondor job array): shard K of
+//! N solves the units of work `u` with `u mod N = K − 1` (lines of an
+//! equilibrium grid, points of a stiffness map) and writes them to
+//! `shard-K-of-N.json`; `handling merge` reads the N shard files and writes
+//! the outputs of the unsharded run, byte for byte. Every unit is solved as
+//! in the unsharded run (its seeds do not depend on the shard), so the
+//! result does not depend on N.
+//!
+//! A shard file keeps a copy of the text of every input the job read; the
+//! merge refuses shards of different runs and inputs that changed since.
+
+use crate::error::{Error, InputError};
+use crate::report::write_json;
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// Shard `index` (1-based) of `count`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Shard {
+    /// K, from 1 to N.
+    pub index: usize,
+    /// N.
+    pub count: usize,
+}
+
+impl Shard {
+    /// Whether unit `unit` (0-based) is this shard's.
+    pub fn owns(&self, unit: usize) -> bool {
+        unit % self.count == self.index - 1
+    }
+
+    /// This shard's units among `units`.
+    pub fn units(&self, units: usize) -> Vec<usize> {
+        (0..units).filter(|&u| self.owns(u)).collect()
+    }
+
+    /// The shard file's name in an output folder.
+    pub fn file_name(&self) -> String {
+        format!("shard-{}-of-{}.json", self.index, self.count)
+    }
+}
+
+impl std::fmt::Display for Shard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}", self.index, self.count)
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = Error;
+    /// `K/N` with 1 ≤ K ≤ N.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        let bad = || {
+            Error::Options(format!(
+                "shard `{s}`: expected K/N with 1 ≤ K ≤ N, e.g. 3/8"
+            ))
+        };
+        let (k, n) = s.split_once('/').ok_or_else(bad)?;
+        let (index, count): (usize, usize) = (
+            k.trim().parse().map_err(|_| bad())?,
+            n.trim().parse().map_err(|_| bad())?,
+        );
+        if index == 0 || index > count {
+            return Err(bad());
+        }
+        Ok(Self { index, count })
+    }
+}
+
+/// The job a shard file belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ShardJob {
+    /// `equilibria`: lines of the grid.
+    Equilibria,
+    /// `study`: points of the stiffness map and RBF pairs.
+    Study,
+}
+
+/// An input of the run as the shard read it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct InputCopy {
+    /// Its path as given.
+    pub path: PathBuf,
+    /// Its text.
+    pub text: String,
+}
+
+/// What a shard file holds: the run it belongs to and its units' results.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ShardFile<T> {
+    /// The job.
+    pub job: ShardJob,
+    /// Which shard.
+    pub shard: Shard,
+    /// The job's main input (a sweep or study file).
+    pub input: PathBuf,
+    /// Every input read, with its text.
+    pub inputs: Vec<InputCopy>,
+    /// Units of work of the whole run.
+    pub units: usize,
+    /// This shard's units (0-based), in order.
+    pub owned: Vec<usize>,
+    /// Their results, in the same order.
+    pub results: Vec<T>,
+}
+
+/// The report of one shard's run: what it solved and where it wrote it.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShardReport {
+    /// The job.
+    pub job: ShardJob,
+    /// Which shard.
+    pub shard: Shard,
+    /// Units of work of the whole run.
+    pub units: usize,
+    /// This shard's units.
+    pub owned: usize,
+    /// Conditions (points) solved by this shard.
+    pub conditions: usize,
+    /// The shard file.
+    pub path: PathBuf,
+}
+
+impl ShardReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        vec![format!(
+            "shard {} of {:?}: {} of {} units ({} conditions) → {}; merge the {} shard files with `handling merge`",
+            self.shard,
+            self.job,
+            self.owned,
+            self.units,
+            self.conditions,
+            self.path.display(),
+            self.shard.count
+        )]
+    }
+}
+
+/// Copies of the inputs' texts.
+pub fn input_copies(inputs: &[PathBuf]) -> Result<Vec<InputCopy>, Error> {
+    inputs
+        .iter()
+        .map(|p| {
+            let text = std::fs::read_to_string(p).map_err(|source| InputError::Io {
+                path: p.clone(),
+                source,
+            })?;
+            Ok(InputCopy {
+                path: p.clone(),
+                text,
+            })
+        })
+        .collect()
+}
+
+/// Writes a shard file (atomically).
+pub fn write_shard<T: Serialize>(path: &Path, file: &ShardFile<T>) -> Result<(), Error> {
+    write_json(path, file)
+}
+
+/// Which job a shard file belongs to, read from the file.
+pub fn shard_job(path: &Path) -> Result<ShardJob, Error> {
+    #[derive(Deserialize)]
+    struct Head {
+        job: ShardJob,
+    }
+    let head: Head = read_json(path)?;
+    Ok(head.job)
+}
+
+fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| InputError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    serde_json::from_str(&text).map_err(|e| {
+        InputError::At {
+            path: path.to_path_buf(),
+            line: e.line(),
+            column: e.column(),
+            message: format!("not a shard file of this version: {e}"),
+        }
+        .into()
+    })
+}
+
+/// Reads the shard files of one run: all of one job, one input, one N,
+/// every shard exactly once, and inputs unchanged since. Returns the input,
+/// the unit count and every unit's result in unit order.
+pub fn read_shards<T: DeserializeOwned>(
+    job: ShardJob,
+    paths: &[PathBuf],
+) -> Result<(PathBuf, usize, Vec<T>), Error> {
+    let files: Vec<ShardFile<T>> = paths
+        .iter()
+        .map(|p| read_json(p))
+        .collect::<Result<_, _>>()?;
+    let Some(first) = files.first() else {
+        return Err(Error::Options("merge: no shard files given".into()));
+    };
+    let count = first.shard.count;
+    let mut seen = vec![false; count];
+    for (f, p) in files.iter().zip(paths) {
+        let differ = |what: &str| {
+            Error::Options(format!(
+                "{}: {what} differs from {}'s: shards of different runs",
+                p.display(),
+                paths[0].display()
+            ))
+        };
+        if f.job != job {
+            return Err(differ("the job"));
+        }
+        if f.input != first.input || f.inputs != first.inputs {
+            return Err(differ("the input"));
+        }
+        if f.shard.count != count || f.units != first.units {
+            return Err(differ("the shard count"));
+        }
+        if f.owned != f.shard.units(f.units) || f.results.len() != f.owned.len() {
+            return Err(Error::Options(format!(
+                "{}: its results are not shard {}'s units",
+                p.display(),
+                f.shard
+            )));
+        }
+        if std::mem::replace(&mut seen[f.shard.index - 1], true) {
+            return Err(Error::Options(format!(
+                "{}: shard {} given twice",
+                p.display(),
+                f.shard
+            )));
+        }
+    }
+    let missing: Vec<String> = (1..=count)
+        .filter(|k| !seen[k - 1])
+        .map(|k| format!("{k}/{count}"))
+        .collect();
+    if !missing.is_empty() {
+        return Err(Error::Options(format!(
+            "merge: shards {} missing",
+            missing.join(", ")
+        )));
+    }
+    for c in &first.inputs {
+        let now = std::fs::read_to_string(&c.path).unwrap_or_default();
+        if now != c.text {
+            return Err(Error::Options(format!(
+                "{}: changed since the shards were run; run them again",
+                c.path.display()
+            )));
+        }
+    }
+    let (input, units) = (first.input.clone(), first.units);
+    let mut slots: Vec<Option<T>> = (0..units).map(|_| None).collect();
+    for f in files {
+        for (u, r) in f.owned.into_iter().zip(f.results) {
+            slots[u] = Some(r);
+        }
+    }
+    let results = slots
+        .into_iter()
+        .map(|r| r.expect("every unit is owned by exactly one shard"))
+        .collect();
+    Ok((input, units, results))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shards_partition_the_units_and_parse_from_k_over_n() {
+        for n in [1, 3, 7] {
+            let mut all: Vec<usize> = (1..=n)
+                .flat_map(|k| Shard { index: k, count: n }.units(20))
+                .collect();
+            all.sort();
+            assert_eq!(all, (0..20).collect::<Vec<_>>());
+        }
+        assert_eq!(
+            "3/7".parse::<Shard>().unwrap(),
+            Shard { index: 3, count: 7 }
+        );
+        for bad in ["0/3", "4/3", "3", "a/b", "1/0"] {
+            let e = bad.parse::<Shard>().unwrap_err().to_string();
+            assert!(e.contains("expected K/N"), "{bad}: {e}");
+        }
+    }
+}

@@ -5,6 +5,8 @@ use anyhow::Result;
 use clap::Args;
 use handling::diagnose::synth::Truth;
 use handling::jobs::diagnose;
+use handling::jobs::fleet::{self, BatchOutcome};
+use handling::jobs::shard::Shard;
 use handling::jobs::synth::{self, truth_named, EffectName};
 use std::path::PathBuf;
 use std::str::FromStr;
@@ -12,15 +14,39 @@ use std::str::FromStr;
 /// `handling diagnose`'s arguments.
 #[derive(Args)]
 pub struct DiagnoseArgs {
-    /// Campaign file or folder.
+    /// Campaign file or folder (with --batch: a folder of campaigns).
     campaign: PathBuf,
     /// Output folder (default: out/<campaign name>).
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Diagnose every campaign of the folder (its sub-folders and .toml
+    /// files) into <out>/<campaign>/, with a fleet table (fleet.csv,
+    /// fleet.json).
+    #[arg(long)]
+    batch: bool,
+    /// With --batch: only shard K of N of the campaigns (name order, index
+    /// mod N = K − 1); `handling merge` writes the fleet table.
+    #[arg(long, value_name = "K/N", value_parser = super::equilibria::parse_shard, requires = "batch")]
+    shard: Option<Shard>,
 }
 
 /// `handling diagnose`.
 pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
+    if a.batch {
+        let (reports, outcome) = fleet::run_batch(&a.campaign, a.out.as_deref(), a.shard)?;
+        for r in &reports {
+            super::print(&r.summary());
+        }
+        match outcome {
+            BatchOutcome::Fleet(f) => {
+                super::print(&f.summary());
+                let [csv, json] = f.outputs();
+                println!("wrote {}, {}", csv.display(), json.display());
+            }
+            BatchOutcome::Shard(s) => super::print(&s.summary()),
+        }
+        return Ok(());
+    }
     let r = diagnose::run(&a.campaign, a.out.as_deref())?;
     r.write()?;
     super::print(&r.summary());

@@ -1,5 +1,6 @@
 //! `equilibria`: sweep the steering equilibria and write CSV, JSON and PNGs,
-//! or one shard of the sweep; `merge`: the outputs of a sharded run.
+//! or one shard of the sweep; `merge`: the outputs of a sharded run (a
+//! sweep, a study or a batch of diagnoses).
 
 use anyhow::Result;
 use clap::Args;
@@ -64,6 +65,12 @@ pub fn merge(a: MergeArgs) -> Result<()> {
             super::print(&r.summary());
             r.write()?;
             println!("wrote {}", r.out_dir.display());
+        }
+        ShardJob::Diagnose => {
+            let r = handling::jobs::fleet::merge(&a.shards, a.out.as_deref())?;
+            super::print(&r.summary());
+            let [csv, json] = r.outputs();
+            println!("wrote {}, {}", csv.display(), json.display());
         }
     }
     Ok(())

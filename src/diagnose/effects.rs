@@ -11,10 +11,10 @@
 
 use super::sensors::Sensors;
 pub use crate::vehicle::RollModel;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// One candidate effect.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum EffectKind {
     /// Tyre lag: first-order slip-angle response over a relaxation length.

@@ -13,6 +13,7 @@
 //! | `diagnose` | [`diagnose::run`] | [`diagnose::DiagnoseReport`] |
 //! | `synth` | [`synth::run`] | [`synth::SynthReport`] |
 //! | `tyre-eval` | [`tyre_eval::run`] | [`tyre_eval::TyreEvalReport`] |
+//! | `diagnose --batch DIR [--shard K/N]` | [`fleet::run_batch`], [`fleet::merge`] | [`fleet::FleetReport`] |
 //! | `equilibria --shard K/N`, `merge` | [`equilibria::run_shard`], [`equilibria::merge`] | [`shard::ShardReport`], [`equilibria::EquilibriaReport`] |
 //!
 //! `identify` and `study` live in their own modules; the jobs here combine
@@ -21,6 +22,7 @@
 
 pub mod diagnose;
 pub mod equilibria;
+pub mod fleet;
 pub mod identify;
 pub mod metrics;
 pub mod shard;

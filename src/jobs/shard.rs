@@ -76,6 +76,8 @@ pub enum ShardJob {
     Equilibria,
     /// `study`: points of the stiffness map and RBF pairs.
     Study,
+    /// `diagnose --batch`: campaigns of a folder.
+    Diagnose,
 }
 
 /// An input of the run as the shard read it.

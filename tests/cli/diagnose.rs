@@ -370,3 +370,105 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         assert!(out.join(f).is_file());
     }
 }
+
+/// A batch folder: three quick campaigns (linear tyres given, one
+/// candidate), one with a time gap in a run, and a sub-folder that is not a
+/// campaign.
+fn batch_folder() -> tempfile::TempDir {
+    let v = format!(
+        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    for (name, gain) in [("a_clean", None), ("b_gap", Some(0.3)), ("c_clean", None)] {
+        let c = dir.path().join(name);
+        fs::create_dir_all(c.join("runs")).unwrap();
+        fs::write(c.join("vehicle.toml"), &v).unwrap();
+        fs::write(
+            c.join("tyre.toml"),
+            "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+        )
+        .unwrap();
+        fs::write(c.join("runs/r1.csv"), run_csv(100.0, 6.0, true, None)).unwrap();
+        fs::write(c.join("runs/r2.csv"), run_csv(100.0, 6.0, true, gain)).unwrap();
+    }
+    fs::create_dir(dir.path().join("d_not_a_campaign")).unwrap();
+    dir
+}
+
+#[test]
+fn a_batch_of_campaigns_gives_a_fleet_table_and_shards_merge_to_it() {
+    let dir = batch_folder();
+    let batch = dir.path();
+    let outputs = tempfile::tempdir().unwrap();
+    let full = outputs.path().join("full");
+    let o = run(&[
+        "diagnose",
+        batch.to_str().unwrap(),
+        "--batch",
+        "--out",
+        full.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let fleet = read_json(&full.join("fleet.json"));
+    let rows = fleet["campaigns"].as_array().unwrap();
+    let names: Vec<&str> = rows
+        .iter()
+        .map(|r| r["campaign"].as_str().unwrap())
+        .collect();
+    // Every entry of the folder is a row, the broken one marked failed with
+    // its reason; each campaign has its own diagnosis.
+    assert_eq!(names, ["a_clean", "b_gap", "c_clean", "d_not_a_campaign"]);
+    assert_eq!(rows[3]["failed"], true);
+    assert!(
+        rows[3]["statement"]
+            .as_str()
+            .unwrap()
+            .contains("vehicle.toml"),
+        "{}",
+        rows[3]
+    );
+    for n in &names[..3] {
+        assert!(full.join(n).join("diagnosis.json").is_file(), "{n}");
+        assert!(rows
+            .iter()
+            .any(|r| r["campaign"] == *n && r["failed"] == false));
+    }
+    let csv = fs::read_to_string(full.join("fleet.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 4);
+    // Three shards of the same batch merge to the same table, byte for byte,
+    // and write the same campaign folders.
+    let sharded = outputs.path().join("sharded");
+    for k in 1..=3 {
+        let o = run(&[
+            "diagnose",
+            batch.to_str().unwrap(),
+            "--batch",
+            "--shard",
+            &format!("{k}/3"),
+            "--out",
+            sharded.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let shard = |k: usize| sharded.join(format!("shard-{k}-of-3.json"));
+    let o = run(&[
+        "merge",
+        shard(1).to_str().unwrap(),
+        shard(2).to_str().unwrap(),
+        shard(3).to_str().unwrap(),
+        "--out",
+        sharded.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for f in [
+        "fleet.csv",
+        "fleet.json",
+        "a_clean/diagnosis.json",
+        "b_gap/diagnosis.json",
+    ] {
+        assert!(
+            fs::read(full.join(f)).unwrap() == fs::read(sharded.join(f)).unwrap(),
+            "{f} differs"
+        );
+    }
+}

@@ -1,0 +1,321 @@
+//! `diagnose --batch`: every campaign of a folder diagnosed (a fleet of logs,
+//! a confusion matrix), each written to its own folder as `diagnose` writes
+//! it, and one table of the verdict per campaign with the effects that recur
+//! across them (`fleet.csv`, `fleet.json`). A campaign that cannot be read
+//! or diagnosed is listed with its error, not dropped. Sharded like sweeps
+//! ([`super::shard`]): shard K of N diagnoses the campaigns with index mod
+//! N = K − 1 (in name order) and writes their folders and its table rows;
+//! `handling merge` writes the fleet table.
+
+use super::diagnose::{self, DiagnoseReport};
+use super::shard::{read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport};
+use crate::diagnose::effects::{joined, EffectKind};
+use crate::error::{Error, InputError};
+use crate::report::{write_csv, write_json};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// One campaign's line of the fleet table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FleetRow {
+    /// The campaign's file or folder name in the batch folder.
+    pub campaign: String,
+    /// Runs replayed (pieces after cleaning), 0 when it failed.
+    pub runs: usize,
+    /// Effects of the verdict (empty: no gap, or none explains it).
+    pub verdict: Vec<EffectKind>,
+    /// Held-out error J of the base model (None: failed).
+    pub heldout_error_before: Option<f64>,
+    /// Held-out J with the verdict's effects (the base model's without).
+    pub heldout_error_after: Option<f64>,
+    /// J of the noise alone.
+    pub noise_level: Option<f64>,
+    /// The best single candidate and its share of the gap removed, %.
+    pub best: Option<(EffectKind, f64)>,
+    /// The verdict in words, or why the campaign failed.
+    pub statement: String,
+    /// Whether it failed (not read or not diagnosed).
+    pub failed: bool,
+}
+
+/// An effect across the fleet.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Recurring {
+    /// The effect.
+    pub effect: EffectKind,
+    /// Campaigns whose verdict names it.
+    pub verdicts: usize,
+    /// Campaigns where it is the best single candidate.
+    pub best: usize,
+}
+
+/// The fleet report: every campaign's row and the recurring effects.
+#[derive(Debug, Clone, Serialize)]
+pub struct FleetReport {
+    /// One row per campaign, in name order.
+    pub campaigns: Vec<FleetRow>,
+    /// Effects named by a verdict or best in a campaign, most frequent first.
+    pub recurring: Vec<Recurring>,
+    /// The output folder.
+    #[serde(skip)]
+    pub out_dir: PathBuf,
+}
+
+/// The campaigns of a batch folder: its sub-folders and `.toml` files, in
+/// name order.
+pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
+    let entries = std::fs::read_dir(dir).map_err(|source| InputError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let mut out: Vec<PathBuf> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.is_dir() || p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    out.sort();
+    if out.is_empty() {
+        return Err(Error::Data {
+            path: dir.to_path_buf(),
+            message: "no campaign in the folder (sub-folders or .toml files)".into(),
+        });
+    }
+    Ok(out)
+}
+
+fn name_of(p: &Path) -> String {
+    p.file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+}
+
+/// Diagnoses every campaign of `dir` (or shard `shard`'s) into
+/// `<out>/<campaign>/`; with a shard, writes `<out>/shard-K-of-N.json`,
+/// else `fleet.csv` and `fleet.json`. `out` defaults to `out/<folder name>`.
+pub fn run_batch(
+    dir: &Path,
+    out: Option<&Path>,
+    shard: Option<Shard>,
+) -> Result<(Vec<DiagnoseReport>, BatchOutcome), Error> {
+    let all = campaigns(dir)?;
+    let out_dir = out.map_or_else(
+        || PathBuf::from("out").join(name_of(dir)),
+        Path::to_path_buf,
+    );
+    let shard = shard.unwrap_or(Shard { index: 1, count: 1 });
+    let owned = shard.units(all.len());
+    let mut reports = Vec::new();
+    let mut rows = Vec::new();
+    for &i in &owned {
+        let name = name_of(&all[i]);
+        let done =
+            diagnose::run(&all[i], Some(&out_dir.join(&name))).and_then(|r| r.write().map(|()| r));
+        match done {
+            Ok(r) => {
+                rows.push(row_of(&name, &r));
+                reports.push(r);
+            }
+            Err(e) => rows.push(FleetRow {
+                campaign: name,
+                runs: 0,
+                verdict: Vec::new(),
+                heldout_error_before: None,
+                heldout_error_after: None,
+                noise_level: None,
+                best: None,
+                statement: e.to_string(),
+                failed: true,
+            }),
+        }
+    }
+    if shard.count == 1 {
+        let report = fleet(rows, out_dir);
+        report.write()?;
+        return Ok((reports, BatchOutcome::Fleet(report)));
+    }
+    let file = out_dir.join(shard.file_name());
+    let names: Vec<String> = all.iter().map(|p| name_of(p)).collect();
+    write_shard(
+        &file,
+        &ShardFile {
+            job: ShardJob::Diagnose,
+            shard,
+            input: dir.to_path_buf(),
+            inputs: vec![InputCopy {
+                path: dir.to_path_buf(),
+                text: names.join("\n"),
+            }],
+            units: all.len(),
+            owned: owned.clone(),
+            results: rows,
+        },
+    )?;
+    Ok((
+        reports,
+        BatchOutcome::Shard(ShardReport {
+            job: ShardJob::Diagnose,
+            shard,
+            units: all.len(),
+            owned: owned.len(),
+            conditions: owned.len(),
+            path: file,
+        }),
+    ))
+}
+
+/// What a batch run wrote last: the fleet table, or a shard of it.
+#[derive(Debug, Clone)]
+pub enum BatchOutcome {
+    /// The whole fleet.
+    Fleet(FleetReport),
+    /// One shard's rows.
+    Shard(ShardReport),
+}
+
+/// The fleet table of a set of `diagnose --batch --shard` files.
+pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Error> {
+    let (dir, _, rows) = read_shards::<FleetRow>(ShardJob::Diagnose, shards)?;
+    let now: Vec<String> = campaigns(&dir)?.iter().map(|p| name_of(p)).collect();
+    let listed: Vec<&String> = rows.iter().map(|r| &r.campaign).collect();
+    if now.iter().collect::<Vec<_>>() != listed {
+        return Err(Error::Options(format!(
+            "{}: its campaigns changed since the shards were run; run them again",
+            dir.display()
+        )));
+    }
+    let out_dir = out.map_or_else(
+        || PathBuf::from("out").join(name_of(&dir)),
+        Path::to_path_buf,
+    );
+    let report = fleet(rows, out_dir);
+    report.write()?;
+    Ok(report)
+}
+
+fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
+    let d = &r.diagnosis;
+    let after = d
+        .ranking
+        .iter()
+        .chain(&d.combinations)
+        .find(|c| !d.verdict.effects.is_empty() && c.effects == d.verdict.effects)
+        .map_or(d.gap.heldout_error, |c| c.heldout_error_after);
+    FleetRow {
+        campaign: name.to_string(),
+        runs: d.runs.len(),
+        verdict: d.verdict.effects.clone(),
+        heldout_error_before: Some(d.gap.heldout_error),
+        heldout_error_after: Some(after),
+        noise_level: Some(d.gap.noise_level),
+        best: d
+            .ranking
+            .first()
+            .and_then(|b| Some((*b.effects.first()?, b.reduction_percent))),
+        statement: d.verdict.statement.clone(),
+        failed: false,
+    }
+}
+
+/// The report of the rows: the effects that recur, most verdicts first.
+fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf) -> FleetReport {
+    let recurring = EffectKind::ALL
+        .into_iter()
+        .map(|effect| Recurring {
+            effect,
+            verdicts: campaigns
+                .iter()
+                .filter(|r| r.verdict.contains(&effect))
+                .count(),
+            best: campaigns
+                .iter()
+                .filter(|r| r.best.is_some_and(|b| b.0 == effect))
+                .count(),
+        })
+        .filter(|r| r.verdicts + r.best > 0)
+        .collect::<Vec<_>>();
+    let mut recurring = recurring;
+    recurring.sort_by(|a, b| (b.verdicts, b.best).cmp(&(a.verdicts, a.best)));
+    FleetReport {
+        campaigns,
+        recurring,
+        out_dir,
+    }
+}
+
+impl FleetReport {
+    /// `fleet.csv` and `fleet.json` in the output folder.
+    pub fn outputs(&self) -> [PathBuf; 2] {
+        ["fleet.csv", "fleet.json"].map(|f| self.out_dir.join(f))
+    }
+
+    /// Writes the table and the report.
+    pub fn write(&self) -> Result<(), Error> {
+        let [csv, json] = self.outputs();
+        let number = |v: Option<f64>| v.map_or_else(String::new, |v| format!("{v:.6}"));
+        write_csv(
+            &csv,
+            &[
+                "campaign",
+                "runs",
+                "verdict",
+                "heldout_error_before",
+                "heldout_error_after",
+                "noise_level",
+                "best",
+                "best_reduction_percent",
+                "failed",
+                "statement",
+            ],
+            self.campaigns.iter().map(|r| {
+                vec![
+                    r.campaign.clone(),
+                    r.runs.to_string(),
+                    joined(&r.verdict, "+"),
+                    number(r.heldout_error_before),
+                    number(r.heldout_error_after),
+                    number(r.noise_level),
+                    r.best.map_or_else(String::new, |b| b.0.name().to_string()),
+                    r.best.map_or_else(String::new, |b| format!("{:.1}", b.1)),
+                    r.failed.to_string(),
+                    r.statement.clone(),
+                ]
+            }),
+        )?;
+        write_json(&json, self)
+    }
+
+    /// The table in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let failed = self.campaigns.iter().filter(|r| r.failed).count();
+        let mut out = vec![format!(
+            "fleet: {} campaigns ({failed} failed)",
+            self.campaigns.len()
+        )];
+        for r in &self.campaigns {
+            out.push(if r.failed {
+                format!("  {:<24} FAILED: {}", r.campaign, r.statement)
+            } else {
+                format!(
+                    "  {:<24} {:<32} J {:.3} → {:.3} (noise {:.3})",
+                    r.campaign,
+                    if r.verdict.is_empty() {
+                        "—".to_string()
+                    } else {
+                        joined(&r.verdict, "+")
+                    },
+                    r.heldout_error_before.unwrap_or(f64::NAN),
+                    r.heldout_error_after.unwrap_or(f64::NAN),
+                    r.noise_level.unwrap_or(f64::NAN)
+                )
+            });
+        }
+        for e in &self.recurring {
+            out.push(format!(
+                "  recurring: {} — in {} verdicts, best single candidate in {}",
+                e.effect.name(),
+                e.verdicts,
+                e.best
+            ));
+        }
+        out
+    }
+}

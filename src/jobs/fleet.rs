@@ -233,7 +233,7 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf) -> FleetReport {
         .filter(|r| r.verdicts + r.best > 0)
         .collect::<Vec<_>>();
     let mut recurring = recurring;
-    recurring.sort_by(|a, b| (b.verdicts, b.best).cmp(&(a.verdicts, a.best)));
+    recurring.sort_by_key(|r| std::cmp::Reverse((r.verdicts, r.best)));
     FleetReport {
         campaigns,
         recurring,

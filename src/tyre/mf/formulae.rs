@@ -169,6 +169,7 @@ impl MagicFormula {
     /// friction scale `mu_scale` and slip-speed friction factor
     /// `speed_factor` (1 without `LMUV`). Terms whose coefficients are
     /// exactly zero skip their transcendental functions.
+    #[inline]
     pub(super) fn prelude(
         &self,
         fz: f64,

@@ -222,8 +222,15 @@ impl MagicFormula {
     /// As [`Self::evaluate`] with the friction factors `λ_μx`, `λ_μy`
     /// multiplied by `mu_scale` (the road's friction).
     pub fn evaluate_scaled(&self, p: &MfInput, mu_scale: f64) -> MfOutput {
-        self.at_load_scaled(p.fz, p.pressure, p.camber, mu_scale)
-            .forces(p.kappa, p.alpha, p.speed)
+        if p.fz <= 0.0 || !p.fz.is_finite() {
+            return MfOutput::default();
+        }
+        // The prelude stays on this stack frame (no MfAtLoad moved around).
+        let mirror = self.side == TyreSide::Right;
+        let gamma = if mirror { -p.camber } else { p.camber };
+        let pre = self.prelude(p.fz, gamma, self.pressure(p.pressure), mu_scale, 1.0);
+        let alpha = if mirror { p.alpha } else { -p.alpha };
+        to_crate(self.forces_iso(&pre, p.kappa, alpha, p.speed), mirror)
     }
 
     /// The load-, pressure- and camber-dependent part of the formulae,
@@ -286,15 +293,20 @@ impl MfAtLoad<'_> {
         };
         // Crate → ISO-W (α_ISO = −α), then the TYRESIDE mirror.
         let alpha = if self.mirror { alpha } else { -alpha };
-        let mut o = self.tyre.forces_iso(pre, kappa, alpha, speed);
-        if self.mirror {
-            o.fy = -o.fy;
-            o.mz = -o.mz;
-            o.mx = -o.mx;
-        }
-        o.mz = -o.mz;
-        o
+        to_crate(self.tyre.forces_iso(pre, kappa, alpha, speed), self.mirror)
     }
+}
+
+/// ISO-W outputs (of the mirrored tyre when `mirror`) → crate convention.
+#[inline]
+fn to_crate(mut o: MfOutput, mirror: bool) -> MfOutput {
+    if mirror {
+        o.fy = -o.fy;
+        o.mz = -o.mz;
+        o.mx = -o.mx;
+    }
+    o.mz = -o.mz;
+    o
 }
 
 impl TyreModel for MagicFormula {

@@ -1,7 +1,8 @@
 //! Cost of one full combined-slip Magic Formula 6.1 evaluation (fx, fy, mz,
 //! mx, my) of MFeval's public 6.1 file, over a cycle of 64 operating points;
 //! and of one pure-lateral evaluation (κ = 0, the vehicle model's case) at
-//! the same points.
+//! the same points; and of the slip part alone at a load prepared once
+//! (`MagicFormula::at_load`, for callers that evaluate one load at many slips).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::io::tir::load_tir;
@@ -40,6 +41,14 @@ fn combined(c: &mut Criterion) {
         b.iter(|| {
             i = (i + 1) & 63;
             black_box(tyre.evaluate(black_box(&lateral[i])))
+        })
+    });
+    let prepared = tyre.at_load(4500.0, Some(240_000.0), 0.02);
+    c.bench_function("mf61_combined_slip_at_prepared_load", |b| {
+        b.iter(|| {
+            i = (i + 1) & 63;
+            let p = black_box(&points[i]);
+            black_box(prepared.forces(p.kappa, p.alpha, p.speed))
         })
     });
 }

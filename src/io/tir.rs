@@ -222,25 +222,36 @@ impl TirDocument {
     /// The Magic Formula tyre of this file, in SI.
     pub fn magic_formula(&self) -> Result<MagicFormula, InputError> {
         let units = self.units()?;
-        let (line, fittyp) = self.get("FITTYP").ok_or_else(|| InputError::File {
-            path: self.path.clone(),
-            message: "missing key `FITTYP` in [MODEL] (61 or 62 for MF 6.1/6.2, 6 or 21 for 5.2)"
-                .into(),
-        })?;
-        let version = match &fittyp.value {
-            TirValue::Number(x) if x.fract() == 0.0 => MfVersion::from_fittyp(*x as i64),
-            _ => None,
-        }
-        .ok_or_else(|| {
-            self.at(
-                line,
-                "FITTYP",
-                format!(
-                    "{:?} is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)",
-                    fittyp.value
-                ),
-            )
-        })?;
+        let version = match self.get("FITTYP") {
+            Some((line, fittyp)) => match &fittyp.value {
+                TirValue::Number(x) if x.fract() == 0.0 => MfVersion::from_fittyp(*x as i64),
+                _ => None,
+            }
+            .ok_or_else(|| {
+                self.at(
+                    line,
+                    "FITTYP",
+                    format!(
+                        "{:?} is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)",
+                        fittyp.value
+                    ),
+                )
+            })?,
+            // ADAMS PAC2002 files (e.g. Chrono's) often carry no FITTYP:
+            // their format is MF 5.2 (FITTYP 6).
+            None => match self.text("PROPERTY_FILE_FORMAT") {
+                Some((_, f)) if f == "pac2002" => MfVersion::Mf52,
+                _ => {
+                    return Err(InputError::File {
+                        path: self.path.clone(),
+                        message:
+                            "missing key `FITTYP` in [MODEL] (61 or 62 for MF 6.1/6.2, 6 or 21 \
+                                  for 5.2; or PROPERTY_FILE_FORMAT = 'PAC2002')"
+                                .into(),
+                    })
+                }
+            },
+        };
         let side = match self.text("TYRESIDE") {
             None => TyreSide::Left,
             Some((_, s)) if s == "left" || s == "unknown" || s == "symmetric" => TyreSide::Left,

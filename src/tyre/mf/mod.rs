@@ -225,21 +225,41 @@ impl MagicFormula {
         if p.fz <= 0.0 || !p.fz.is_finite() {
             return MfOutput::default();
         }
+        // The prelude stays on this stack frame (no MfAtLoad moved around).
         let mirror = self.side == TyreSide::Right;
-        // Crate → ISO-W, then the TYRESIDE mirror.
-        let (mut alpha, mut gamma) = (-p.alpha, p.camber);
-        if mirror {
-            alpha = -alpha;
-            gamma = -gamma;
+        let gamma = if mirror { -p.camber } else { p.camber };
+        let pre = self.prelude(p.fz, gamma, self.pressure(p.pressure), mu_scale, 1.0);
+        let alpha = if mirror { p.alpha } else { -p.alpha };
+        to_crate(self.forces_iso(&pre, p.kappa, alpha, p.speed), mirror)
+    }
+
+    /// The load-, pressure- and camber-dependent part of the formulae,
+    /// prepared once for evaluating many slip points at one wheel load
+    /// (crate convention; `pressure` `None` uses the file's). The result of
+    /// [`MfAtLoad::forces`] equals [`Self::evaluate`]'s at the same point.
+    pub fn at_load(&self, fz: f64, pressure: Option<f64>, camber: f64) -> MfAtLoad<'_> {
+        self.at_load_scaled(fz, pressure, camber, 1.0)
+    }
+
+    /// As [`Self::at_load`] with the friction factors multiplied by
+    /// `mu_scale` (as [`Self::evaluate_scaled`]).
+    pub fn at_load_scaled(
+        &self,
+        fz: f64,
+        pressure: Option<f64>,
+        camber: f64,
+        mu_scale: f64,
+    ) -> MfAtLoad<'_> {
+        let mirror = self.side == TyreSide::Right;
+        // Crate → ISO-W, then the TYRESIDE mirror (camber here, α per point).
+        let gamma = if mirror { -camber } else { camber };
+        let prelude = (fz > 0.0 && fz.is_finite())
+            .then(|| self.prelude(fz, gamma, self.pressure(pressure), mu_scale, 1.0));
+        MfAtLoad {
+            tyre: self,
+            mirror,
+            prelude,
         }
-        let mut o = self.evaluate_iso(p.fz, p.kappa, alpha, gamma, p.speed, p.pressure, mu_scale);
-        if mirror {
-            o.fy = -o.fy;
-            o.mz = -o.mz;
-            o.mx = -o.mx;
-        }
-        o.mz = -o.mz;
-        o
     }
 
     fn pressure(&self, p: Option<f64>) -> f64 {
@@ -250,6 +270,43 @@ impl MagicFormula {
             c.NOMPRES
         })
     }
+}
+
+/// A Magic Formula tyre at one wheel load, pressure and camber
+/// ([`MagicFormula::at_load`]): what depends only on those is computed once
+/// (about a quarter of the transcendental functions of a combined-slip
+/// point, with camber), and [`Self::forces`] evaluates the slip part.
+#[derive(Debug, Clone, Copy)]
+pub struct MfAtLoad<'a> {
+    tyre: &'a MagicFormula,
+    mirror: bool,
+    /// `None` at zero, negative or non-finite load: no force.
+    prelude: Option<formulae::Prelude>,
+}
+
+impl MfAtLoad<'_> {
+    /// Forces and moments at slip ratio `kappa`, slip angle `alpha` (rad)
+    /// and forward speed `speed` (m/s), crate convention in and out.
+    pub fn forces(&self, kappa: f64, alpha: f64, speed: f64) -> MfOutput {
+        let Some(pre) = &self.prelude else {
+            return MfOutput::default();
+        };
+        // Crate → ISO-W (α_ISO = −α), then the TYRESIDE mirror.
+        let alpha = if self.mirror { alpha } else { -alpha };
+        to_crate(self.tyre.forces_iso(pre, kappa, alpha, speed), self.mirror)
+    }
+}
+
+/// ISO-W outputs (of the mirrored tyre when `mirror`) → crate convention.
+#[inline]
+fn to_crate(mut o: MfOutput, mirror: bool) -> MfOutput {
+    if mirror {
+        o.fy = -o.fy;
+        o.mz = -o.mz;
+        o.mx = -o.mx;
+    }
+    o.mz = -o.mz;
+    o
 }
 
 impl TyreModel for MagicFormula {

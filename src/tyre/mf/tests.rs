@@ -109,3 +109,50 @@ fn positive_slip_angle_gives_positive_force_and_restoring_moment() {
     let o = symmetric().evaluate(&at(4000.0, 0.0, 0.02, 0.0));
     assert!(o.fy > 0.0 && o.mz > 0.0, "{o:?}");
 }
+
+/// One prepared load serves many slip points with exactly the forces of
+/// separate evaluations — including the paths where the prelude is not
+/// enough on its own: slip-speed friction (`LMUV`, rebuilt per point), the
+/// low-speed fade of the shifts (below `VXLOW`), a right-side file, camber.
+#[test]
+fn a_prepared_load_gives_the_forces_of_separate_evaluations() {
+    let mut t = symmetric();
+    for (k, v) in [
+        ("PVY3", 0.05),
+        ("PKY6", -0.8),
+        ("RVY1", 0.02),
+        ("RVY5", 1.9),
+        ("RVY6", 10.0),
+    ] {
+        assert!(t.coefficients.set(k, v));
+    }
+    for (lmuv, side) in [(0.0, TyreSide::Left), (0.3, TyreSide::Right)] {
+        t.coefficients.LMUV = lmuv;
+        t.side = side;
+        let prepared = t.at_load(4500.0, Some(200_000.0), 0.04);
+        for (k, a, v) in [
+            (0.0, 0.1, 20.0),
+            (0.1, -0.05, 20.0),
+            (-0.2, 0.3, 0.4),
+            (0.05, 0.0, -3.0),
+        ] {
+            let one = t.evaluate(&MfInput {
+                fz: 4500.0,
+                kappa: k,
+                alpha: a,
+                camber: 0.04,
+                speed: v,
+                pressure: Some(200_000.0),
+            });
+            assert_eq!(
+                prepared.forces(k, a, v),
+                one,
+                "κ {k} α {a} V {v} LMUV {lmuv}"
+            );
+        }
+    }
+    assert_eq!(
+        t.at_load(0.0, None, 0.0).forces(0.1, 0.1, 20.0),
+        MfOutput::default()
+    );
+}

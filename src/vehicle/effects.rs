@@ -20,7 +20,8 @@
 //! - cornering-stiffness scale: each axle's tyre sees `s·α` (stiffness
 //!   scaled, peak force kept);
 //! - aero load and road bank: see the fields; a measured bank profile comes
-//!   in through [`super::Inputs::bank`] on top of the constant bank;
+//!   in through [`super::Inputs::bank`], scaled by `bank_profile_scale`, on
+//!   top of the constant bank;
 //! - longitudinal load transfer: at longitudinal acceleration ax
 //!   ([`super::Inputs::ax`]) each front wheel loses and each rear wheel gains
 //!   `m·ax·h/(2l)` (Gillespie, *Fundamentals of Vehicle Dynamics*, 1992,
@@ -126,6 +127,9 @@ pub struct Effects {
     /// loads scale by `cos θ`, and the accelerometer (`ay`, the tyres' force
     /// over the mass) reads `g·sin θ` more than the path's acceleration.
     pub road_bank: f64,
+    /// How much of the measured bank profile ([`super::Inputs::bank`]) the
+    /// road has on top of `road_bank`: 1 as measured, 0 (the default) none.
+    pub bank_profile_scale: f64,
     /// Relaxation length σ of both axles, m (below
     /// [`MIN_RELAXATION_LENGTH`]: no lag).
     pub relaxation_length: f64,
@@ -152,6 +156,7 @@ impl Default for Effects {
         Self {
             aero_load: [0.0; 2],
             road_bank: 0.0,
+            bank_profile_scale: 0.0,
             relaxation_length: 0.0,
             steering_compliance: 0.0,
             roll_steer: [0.0; 2],
@@ -177,6 +182,7 @@ impl Effects {
             0.5,
             "a bank steeper than 0.5 rad (29°) is not a road",
         )?;
+        ParamError::finite("bank_profile_scale", self.bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", self.relaxation_length)?;
         ParamError::finite("steering_compliance", self.steering_compliance)?;
         for (i, v) in self.roll_steer.iter().enumerate() {
@@ -200,6 +206,17 @@ impl Effects {
             }
         }
         self.roll.validate().map_err(|e| e.within("roll"))
+    }
+
+    /// The road bank under the car, rad: the constant bank plus the scaled
+    /// measured profile `measured` (read only when the scale is not zero, so
+    /// a missing profile cannot reach the model).
+    pub fn bank(&self, measured: f64) -> f64 {
+        if self.bank_profile_scale == 0.0 {
+            self.road_bank
+        } else {
+            self.road_bank + self.bank_profile_scale * measured
+        }
     }
 
     /// True when the slip angles lag (a relaxation length of at least

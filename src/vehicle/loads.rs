@@ -7,7 +7,7 @@
 //! by default. A wheel whose load would go negative is off the ground. With
 //! longitudinal load transfer ([`super::Effects::longitudinal_load_transfer`])
 //! the axle loads move by `m·ax·h/l` first; a measured bank
-//! ([`super::Inputs::bank`]) adds to the constant one.
+//! ([`super::Inputs::bank`]) adds to the constant one, scaled.
 //!
 //! The loop: the loads depend on ay and ay on the forces, which depend on the
 //! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
@@ -141,13 +141,13 @@ impl VehicleModel {
     }
 
     /// [`VehicleModel::load_split`] at longitudinal acceleration `ax` and a
-    /// measured bank `bank` on top of the constant one (both zero for a
+    /// measured bank `bank` ([`super::Effects::bank`]; both zero for a
     /// steady state).
     pub(crate) fn load_split_at(&self, speed: f64, ax: f64, bank: f64) -> LoadSplit {
         let v = &self.vehicle;
         let e = &self.options.effects;
         let (mut sf, mut sr) = v.static_axle_loads();
-        let bank = e.road_bank + bank;
+        let bank = e.bank(bank);
         if bank != 0.0 {
             let c = bank.cos();
             sf *= c;
@@ -196,9 +196,9 @@ impl VehicleModel {
     }
 
     /// g·sin θ of the road bank with a measured bank `bank` on top of the
-    /// constant one, m/s².
+    /// constant one ([`super::Effects::bank`]), m/s².
     pub fn bank_acceleration_at(&self, bank: f64) -> f64 {
-        let bank = self.options.effects.road_bank + bank;
+        let bank = self.options.effects.bank(bank);
         // No sine in the hot loop of the base model.
         if bank == 0.0 {
             0.0

@@ -104,9 +104,9 @@ pub struct Inputs {
     /// effects read it ([`Effects::longitudinal_load_transfer`],
     /// [`Effects::combined_slip`]).
     pub ax: f64,
-    /// Road bank under the car at this instant, rad (positive: the road's
-    /// left edge higher), on top of the constant [`Effects::road_bank`]: a
-    /// measured bank profile.
+    /// Measured road bank under the car at this instant, rad (positive: the
+    /// road's left edge higher); the model adds it, scaled by
+    /// [`Effects::bank_profile_scale`], to the constant [`Effects::road_bank`].
     pub bank: f64,
 }
 

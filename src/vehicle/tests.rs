@@ -570,8 +570,19 @@ fn longitudinal_load_transfer_moves_m_ax_h_over_l_between_the_axles() {
 
 #[test]
 fn a_measured_bank_acts_as_the_constant_bank() {
-    let (mut constant, measured) = (nonlinear_model(), nonlinear_model());
+    let (mut constant, mut measured) = (nonlinear_model(), nonlinear_model());
     constant.options.effects.road_bank = 0.2;
+    // Off by default: a measured profile reaches the model only when asked.
+    let x0 = State::default();
+    let banked = Inputs {
+        bank: 0.2,
+        ..Inputs::steady(0.0, 25.0, 1.0)
+    };
+    assert_eq!(
+        measured.evaluate(&x0, &banked),
+        measured.evaluate(&x0, &Inputs::steady(0.0, 25.0, 1.0))
+    );
+    measured.options.effects.bank_profile_scale = 1.0;
     let x = State {
         beta: 0.01,
         yaw_rate: 0.15,

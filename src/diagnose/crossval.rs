@@ -65,12 +65,12 @@ impl Context<'_> {
             kinds,
             fixed,
         };
-        let problem = Problem {
-            build: |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
-            runs: self.runs.iter().collect(),
-            scales: self.scales,
-            bounds: s.bounds(),
-        };
+        let problem = Problem::new(
+            |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
+            self.runs.iter().collect(),
+            self.scales,
+            s.bounds(),
+        );
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -93,12 +93,12 @@ impl Context<'_> {
         let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
             .map(|k| {
                 let base = &self.bases.folds[k];
-                let problem = Problem {
-                    build: |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
-                    runs: self.training(k),
-                    scales: self.scales,
-                    bounds: s.bounds(),
-                };
+                let problem = Problem::new(
+                    |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
+                    self.training(k),
+                    self.scales,
+                    s.bounds(),
+                );
                 let f = refit(&problem, &full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();

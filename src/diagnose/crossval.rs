@@ -8,7 +8,7 @@ use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::model::Observed;
-use crate::optim::pso::{Inertia, Pso};
+use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -174,6 +174,16 @@ pub(super) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
     }
 }
 
+/// The swarm of a fit only hands its best to Levenberg–Marquardt, which
+/// needs a start in the optimum's basin, not the optimum: once its best has
+/// gained less than this over these iterations the swarm has settled (most
+/// candidates are not the answer and their swarms settle within a few
+/// iterations; the answer's keeps improving and runs on).
+const SWARM_STALL: Stall = Stall {
+    iterations: 3,
+    tolerance: 1e-3,
+};
+
 /// The runs prepared for replay (sampled on the RK4 grid, residual
 /// times picked), the cross-validation folds (run i in fold i mod k) and
 /// the swarm every effect fit starts with.
@@ -194,6 +204,7 @@ pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
         inertia: Inertia::LinearDecreasing,
         seed: set.seed,
         parallel: false,
+        stall: Some(SWARM_STALL),
         ..Pso::default()
     };
     (runs, folds, pso)

@@ -331,7 +331,7 @@ impl Swarm {
         for i in 0..self.n {
             let w = pso.inertia_of(k, self.fx[i], f_min, f_avg);
             let a = self.attract[i];
-            for j in 0..d {
+            for (j, &(lo, hi)) in bounds.iter().enumerate() {
                 let idx = i * d + j;
                 let r1: f64 = rng.random();
                 let r2: f64 = rng.random();
@@ -340,7 +340,6 @@ impl Swarm {
                     + pso.c2 * r2 * (self.pbest[a * d + j] - self.x[idx]);
                 vel = vel.clamp(-self.vmax[j], self.vmax[j]);
                 let mut pos = self.x[idx] + vel;
-                let (lo, hi) = bounds[j];
                 if pos < lo || pos > hi {
                     match pso.boundary {
                         Boundary::Clamp => {

@@ -90,7 +90,11 @@ impl Context<'_> {
             insample.add(&r.errors(&all_model));
         }
         self.tick();
+        // Folds in parallel too: a candidate whose fit is slow (a steering
+        // compliance solves for the wheel's slip at every force) would
+        // otherwise leave one core idle at the end of the singles.
         let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
+            .into_par_iter()
             .map(|k| {
                 let base = &self.bases.folds[k];
                 let problem = Problem::new(

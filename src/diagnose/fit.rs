@@ -150,19 +150,24 @@ impl Prepared {
     /// integrates the same history, so only the sensors are applied again.
     fn observe_reusing(&self, model: &Augmented, slot: &Mutex<Option<LastReplay>>) -> Observed {
         let start = self.start_of(model);
-        let mut last = slot.lock().unwrap_or_else(|e| e.into_inner());
-        let hit = last
-            .as_ref()
-            .is_some_and(|l| l.start == start && l.model.same_dynamics(model));
-        if !hit {
-            *last = Some(LastReplay {
-                model: model.clone(),
-                start,
-                history: model.simulate_from(&self.drive, start.0, start.1),
-            });
+        {
+            let last = slot.lock().unwrap_or_else(|e| e.into_inner());
+            if let Some(l) = last.as_ref() {
+                if l.start == start && l.model.same_dynamics(model) {
+                    return model.observe(&l.history, &self.times);
+                }
+            }
         }
-        let history = &last.as_ref().expect("just replayed").history;
-        model.observe(history, &self.times)
+        // Integrated without the lock: evaluations in parallel (a parallel
+        // swarm) do not wait for each other, the last one stored wins.
+        let history = model.simulate_from(&self.drive, start.0, start.1);
+        let observed = model.observe(&history, &self.times);
+        *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
+            model: model.clone(),
+            start,
+            history,
+        });
+        observed
     }
 
     /// Replays the run with `model` and writes the scaled residuals into

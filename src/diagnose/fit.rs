@@ -10,7 +10,8 @@
 //! sample: neighbouring samples of a 100 Hz log say nearly the same thing.
 //! The search is the crate's PSO (the box of each parameter, one particle at
 //! the start point, so the fit is never worse than the model it starts
-//! from), polished by Levenberg–Marquardt; the parameters' standard errors
+//! from; the diagnosis stops it once its best has settled), polished by
+//! Levenberg–Marquardt; the parameters' standard errors
 //! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
 
 use super::model::{Augmented, Drive, Observed};

@@ -246,12 +246,12 @@ pub(super) fn base_models(
                 let (f, r) = axle_tyres(p);
                 make(f, r)
             };
-            let problem = Problem {
+            let problem = Problem::new(
                 build,
-                runs: runs.iter().collect(),
-                scales: scales_hint,
-                bounds: AXLE_BOUNDS.to_vec(),
-            };
+                runs.iter().collect(),
+                scales_hint,
+                AXLE_BOUNDS.to_vec(),
+            );
             let full = fit(
                 &problem,
                 &[10.0, 10.0, 1.0],
@@ -265,12 +265,7 @@ pub(super) fn base_models(
                         .filter(|i| !folds[k].contains(i))
                         .map(|i| &runs[i])
                         .collect();
-                    let p = Problem {
-                        build,
-                        runs: train,
-                        scales: scales_hint,
-                        bounds: AXLE_BOUNDS.to_vec(),
-                    };
+                    let p = Problem::new(build, train, scales_hint, AXLE_BOUNDS.to_vec());
                     refit(&p, &full, &training_rows(runs, &folds[k])).params
                 })
                 .collect();

@@ -8,7 +8,7 @@ use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::model::Observed;
-use crate::optim::pso::{Inertia, Pso};
+use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -65,12 +65,12 @@ impl Context<'_> {
             kinds,
             fixed,
         };
-        let problem = Problem {
-            build: |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
-            runs: self.runs.iter().collect(),
-            scales: self.scales,
-            bounds: s.bounds(),
-        };
+        let problem = Problem::new(
+            |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
+            self.runs.iter().collect(),
+            self.scales,
+            s.bounds(),
+        );
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -90,15 +90,19 @@ impl Context<'_> {
             insample.add(&r.errors(&all_model));
         }
         self.tick();
+        // Folds in parallel too: a candidate whose fit is slow (a steering
+        // compliance solves for the wheel's slip at every force) would
+        // otherwise leave one core idle at the end of the singles.
         let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
+            .into_par_iter()
             .map(|k| {
                 let base = &self.bases.folds[k];
-                let problem = Problem {
-                    build: |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
-                    runs: self.training(k),
-                    scales: self.scales,
-                    bounds: s.bounds(),
-                };
+                let problem = Problem::new(
+                    |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
+                    self.training(k),
+                    self.scales,
+                    s.bounds(),
+                );
                 let f = refit(&problem, &full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
@@ -174,6 +178,16 @@ pub(super) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
     }
 }
 
+/// The swarm of a fit only hands its best to Levenberg–Marquardt, which
+/// needs a start in the optimum's basin, not the optimum: once its best has
+/// gained less than this over these iterations the swarm has settled (most
+/// candidates are not the answer and their swarms settle within a few
+/// iterations; the answer's keeps improving and runs on).
+const SWARM_STALL: Stall = Stall {
+    iterations: 3,
+    tolerance: 1e-3,
+};
+
 /// The runs prepared for replay (sampled on the RK4 grid, residual
 /// times picked), the cross-validation folds (run i in fold i mod k) and
 /// the swarm every effect fit starts with.
@@ -194,6 +208,7 @@ pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
         inertia: Inertia::LinearDecreasing,
         seed: set.seed,
         parallel: false,
+        stall: Some(SWARM_STALL),
         ..Pso::default()
     };
     (runs, folds, pso)

@@ -40,6 +40,7 @@ use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
 use crate::error::Error;
+use crate::optim::pso::Pso;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -490,7 +491,11 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
     let hint = signal_scales(c);
-    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, &pso)?;
+    // The base axle characteristics (no tyre data) are fitted once, on a
+    // cost surface with long valleys (B and D trade off): their swarm runs
+    // all its iterations, as the candidates' need not.
+    let base_pso = Pso { stall: None, ..pso };
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, &base_pso)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }

@@ -10,7 +10,8 @@
 //! sample: neighbouring samples of a 100 Hz log say nearly the same thing.
 //! The search is the crate's PSO (the box of each parameter, one particle at
 //! the start point, so the fit is never worse than the model it starts
-//! from), polished by Levenberg–Marquardt; the parameters' standard errors
+//! from; the diagnosis stops it once its best has settled), polished by
+//! Levenberg–Marquardt; the parameters' standard errors
 //! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
 
 use super::model::{Augmented, Drive, Observed};
@@ -19,8 +20,10 @@ use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
 use crate::optim::stats::{seen_columns, standard_errors};
+use crate::sim::TimeHistory;
 use nalgebra::DMatrix;
 use serde::Serialize;
+use std::sync::Mutex;
 
 /// A measured channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -125,19 +128,57 @@ impl Prepared {
     /// model's sensor offsets) and returns what the sensors would read at
     /// the residual times.
     pub fn observe(&self, model: &Augmented) -> Observed {
+        let (beta, yaw_rate) = self.start_of(model);
+        model.observe(
+            &model.simulate_from(&self.drive, beta, yaw_rate),
+            &self.times,
+        )
+    }
+
+    /// The replay's start (sideslip, yaw rate): the first measured state less
+    /// the model's sensor offsets.
+    fn start_of(&self, model: &Augmented) -> (f64, f64) {
         let sensors = &model.effects.sensors;
-        let history = model.simulate_from(
-            &self.drive,
+        (
             self.start.0 - sensors.beta_bias,
             self.start.1 - sensors.yaw_rate_bias,
-        );
-        model.observe(&history, &self.times)
+        )
+    }
+
+    /// [`Prepared::observe`] through `slot`, the run's last replay: a model
+    /// that differs from the last one only in its sensors (a sensor delay,
+    /// gain or accelerometer position, whose start state is the same)
+    /// integrates the same history, so only the sensors are applied again.
+    fn observe_reusing(&self, model: &Augmented, slot: &Mutex<Option<LastReplay>>) -> Observed {
+        let start = self.start_of(model);
+        {
+            let last = slot.lock().unwrap_or_else(|e| e.into_inner());
+            if let Some(l) = last.as_ref() {
+                if l.start == start && l.model.same_dynamics(model) {
+                    return model.observe(&l.history, &self.times);
+                }
+            }
+        }
+        // Integrated without the lock: evaluations in parallel (a parallel
+        // swarm) do not wait for each other, the last one stored wins.
+        let history = model.simulate_from(&self.drive, start.0, start.1);
+        let observed = model.observe(&history, &self.times);
+        *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
+            model: model.clone(),
+            start,
+            history,
+        });
+        observed
     }
 
     /// Replays the run with `model` and writes the scaled residuals into
     /// `out` (length [`Prepared::count`]).
     pub fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
-        let obs = self.observe(model);
+        self.write_residuals(&self.observe(model), scales, out);
+    }
+
+    /// The scaled residuals of observed outputs `obs` into `out`.
+    fn write_residuals(&self, obs: &Observed, scales: &[f64; 3], out: &mut [f64]) {
         let mut k = 0;
         for (c, m) in &self.measured {
             let sim = match c {
@@ -203,8 +244,20 @@ impl ChannelErrors {
     }
 }
 
+/// A run's last replay: the model (its sensors aside, the key), the start
+/// state and the integrated history.
+struct LastReplay {
+    model: Augmented,
+    start: (f64, f64),
+    history: TimeHistory,
+}
+
 /// Output-error least squares over a set of runs: `build` turns the
-/// parameter vector into the model to replay.
+/// parameter vector into the model to replay. Each run's last replay is
+/// kept ([`Problem::new`]): a search over sensor parameters integrates the
+/// runs once, and an evaluation repeated at the same point (the polish
+/// starting where the swarm ended, the Jacobian's base point) costs no
+/// integration. Memory: one history per run.
 pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     /// The model of a parameter vector.
     pub build: F,
@@ -214,18 +267,36 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     pub scales: [f64; 3],
     /// Parameter bounds: parameters are clamped into them.
     pub bounds: Vec<(f64, f64)>,
+    /// The last replay of each run.
+    last: Vec<Mutex<Option<LastReplay>>>,
 }
 
-impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
+impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
+    /// The problem of fitting `build`'s parameters within `bounds` to `runs`
+    /// with channel scales `scales`.
+    pub fn new(
+        build: F,
+        runs: Vec<&'a Prepared>,
+        scales: [f64; 3],
+        bounds: Vec<(f64, f64)>,
+    ) -> Self {
+        let last = runs.iter().map(|_| Mutex::new(None)).collect();
+        Self {
+            build,
+            runs,
+            scales,
+            bounds,
+            last,
+        }
+    }
+
     fn clamp(&self, p: &[f64]) -> Vec<f64> {
         p.iter()
             .zip(&self.bounds)
             .map(|(x, (lo, hi))| x.clamp(*lo, *hi))
             .collect()
     }
-}
 
-impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     /// Number of data residuals.
     pub fn data_count(&self) -> usize {
         self.runs.iter().map(|r| r.count()).sum()
@@ -248,9 +319,10 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     fn data_residuals(&self, q: &[f64], out: &mut [f64]) {
         let model = (self.build)(q);
         let mut k = 0;
-        for r in &self.runs {
+        for (r, last) in self.runs.iter().zip(&self.last) {
             let n = r.count();
-            r.residuals(&model, &self.scales, &mut out[k..k + n]);
+            let obs = r.observe_reusing(&model, last);
+            r.write_residuals(&obs, &self.scales, &mut out[k..k + n]);
             k += n;
         }
     }
@@ -361,14 +433,9 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         }
         .minimize(problem, &p0, &problem.bounds);
         evaluations += lm.evaluations;
-        let p = lm.params;
-        let c = problem.cost(&p);
-        let c0 = problem.cost(&p0);
-        if c <= c0 {
-            (p, c, lm.converged)
-        } else {
-            (p0, c0, lm.converged)
-        }
+        // The polish accepts only steps that lower the cost (and returns its
+        // start when its cost is not finite): it ends no worse than it began.
+        (lm.params, lm.cost, lm.converged)
     };
     let mut params = params;
     let (std_errors, linear) = match polish {

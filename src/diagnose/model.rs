@@ -42,6 +42,19 @@ impl Augmented {
         }
     }
 
+    /// Whether `other` integrates the same history as this model from the
+    /// same state: the two differ at most in their sensors, which act on the
+    /// response only (their offsets move the start state, which the caller
+    /// compares).
+    pub fn same_dynamics(&self, other: &Augmented) -> bool {
+        let mut effects = other.effects;
+        effects.sensors = self.effects.sensors;
+        self.base == other.base
+            && self.friction == other.friction
+            && self.roll == other.roll
+            && self.effects == effects
+    }
+
     /// The vehicle model with the vehicle-side effects applied, and the road
     /// friction it runs on.
     pub fn model(&self) -> (VehicleModel, f64) {

@@ -85,6 +85,22 @@ pub struct Pso {
     pub seed: u64,
     /// Evaluate the particles in parallel.
     pub parallel: bool,
+    /// Stop early when the best value stops improving (default: never).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stall: Option<Stall>,
+}
+
+/// An early stop: the swarm ends when its best value has improved by less
+/// than `tolerance` (relative) over the last `iterations` iterations. A
+/// swarm that only feeds a local polish need not wait for its last
+/// iterations once its best has settled in a basin.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Stall {
+    /// Iterations without enough improvement.
+    pub iterations: usize,
+    /// Relative improvement that counts.
+    pub tolerance: f64,
 }
 
 impl Default for Pso {
@@ -104,6 +120,7 @@ impl Default for Pso {
             target: f64::NEG_INFINITY,
             seed: 0,
             parallel: false,
+            stall: None,
         }
     }
 }
@@ -149,11 +166,103 @@ impl Pso {
     where
         F: Fn(&[f64]) -> f64 + Sync,
     {
-        let n = self.particles.max(2);
-        let d = bounds.len();
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
+        let mut swarm = Swarm::new(self, bounds, starts, &mut rng);
+        let eval = |x: &[f64], out: &mut Vec<f64>| {
+            let d = bounds.len();
+            if self.parallel {
+                x.par_chunks(d).map(|p| sane(f(p))).collect_into_vec(out);
+            } else {
+                out.clear();
+                out.extend(x.chunks(d).map(|p| sane(f(p))));
+            }
+        };
+        eval(&swarm.x, &mut swarm.fx);
+        swarm.pbest = swarm.x.clone();
+        swarm.pval = swarm.fx.clone();
+        let mut evaluations = swarm.n;
+        let mut history = Vec::with_capacity(self.iterations);
+        let mut iterations = 0;
+        for k in 0..self.iterations {
+            let g = swarm.best();
+            history.push(swarm.pval[g]);
+            if swarm.pval[g] <= self.target || self.stalled(&history) {
+                break;
+            }
+            iterations = k + 1;
+            swarm.attract(self.topology, g);
+            swarm.step(self, k, bounds, &mut rng);
+            eval(&swarm.x, &mut swarm.fx);
+            evaluations += swarm.n;
+            swarm.remember_bests();
+            if self.natural_selection {
+                swarm.select();
+            }
+        }
+        swarm.result(history, iterations, evaluations)
+    }
+
+    /// Whether the best value (`history`, one entry per iteration) has
+    /// improved by less than the [`Stall`] tolerance over its window.
+    fn stalled(&self, history: &[f64]) -> bool {
+        let Some(s) = self.stall else {
+            return false;
+        };
+        let k = history.len();
+        if s.iterations == 0 || k <= s.iterations {
+            return false;
+        }
+        let (then, now) = (history[k - 1 - s.iterations], history[k - 1]);
+        then.is_finite() && then - now <= s.tolerance * then.abs()
+    }
+
+    /// The inertia weight of a particle of value `fx` in iteration `k`,
+    /// given the swarm's finite minimum and mean values.
+    fn inertia_of(&self, k: usize, fx: f64, f_min: f64, f_avg: f64) -> f64 {
+        match self.inertia {
+            Inertia::LinearDecreasing => {
+                (self.iterations - k) as f64 / self.iterations as f64 * (self.w_max - self.w_min)
+                    + self.w_min
+            }
+            Inertia::Adaptive => {
+                if fx <= f_avg && f_avg > f_min {
+                    self.w_min + (self.w_max - self.w_min) * (fx - f_min) / (f_avg - f_min)
+                } else if fx <= f_avg {
+                    self.w_min
+                } else {
+                    self.w_max
+                }
+            }
+        }
+    }
+}
+
+/// The state of a swarm of `n` particles in `d` dimensions, row-major
+/// (particle i's coordinates at `i·d..(i + 1)·d`).
+struct Swarm {
+    n: usize,
+    d: usize,
+    width: Vec<f64>,
+    vmax: Vec<f64>,
+    x: Vec<f64>,
+    v: Vec<f64>,
+    fx: Vec<f64>,
+    pbest: Vec<f64>,
+    pval: Vec<f64>,
+    /// The particle whose personal best attracts each particle.
+    attract: Vec<usize>,
+    order: Vec<usize>,
+}
+
+impl Swarm {
+    /// Positions (the given starts first, clamped into the box; the rest
+    /// uniform) and velocities, drawn particle by particle, coordinate by
+    /// coordinate, position before velocity.
+    fn new(pso: &Pso, bounds: &[(f64, f64)], starts: &[Vec<f64>], rng: &mut ChaCha8Rng) -> Self {
+        let n = pso.particles.max(2);
+        let d = bounds.len();
         let width: Vec<f64> = bounds.iter().map(|(lo, hi)| hi - lo).collect();
-        let vmax: Vec<f64> = width.iter().map(|w| w * self.velocity_limit).collect();
+        let vmax: Vec<f64> = width.iter().map(|w| w * pso.velocity_limit).collect();
         let mut x = vec![0.0; n * d];
         let mut v = vec![0.0; n * d];
         for i in 0..n {
@@ -165,129 +274,129 @@ impl Pso {
                 v[i * d + j] = (2.0 * rng.random::<f64>() - 1.0) * vmax[j];
             }
         }
-        let eval = |x: &[f64], out: &mut Vec<f64>| {
-            if self.parallel {
-                x.par_chunks(d).map(|p| sane(f(p))).collect_into_vec(out);
-            } else {
-                out.clear();
-                out.extend(x.chunks(d).map(|p| sane(f(p))));
-            }
-        };
-        let mut fx = Vec::with_capacity(n);
-        eval(&x, &mut fx);
-        let mut evaluations = n;
-        let mut pbest = x.clone();
-        let mut pval = fx.clone();
-        let mut history = Vec::with_capacity(self.iterations);
-        let mut attract = vec![0usize; n];
-        let mut order: Vec<usize> = (0..n).collect();
-        let mut iterations = 0;
-        let best_of = |pval: &[f64]| (0..n).fold(0, |b, i| if pval[i] < pval[b] { i } else { b });
-        for k in 0..self.iterations {
-            let g = best_of(&pval);
-            history.push(pval[g]);
-            if pval[g] <= self.target {
-                break;
-            }
-            iterations = k + 1;
-            for (i, a) in attract.iter_mut().enumerate() {
-                *a = match self.topology {
-                    Topology::Global => g,
-                    Topology::Ring(r) => {
-                        let mut best = i;
-                        for o in 1..=r.min(n / 2) {
-                            for nb in [(i + o) % n, (i + n - o) % n] {
-                                if pval[nb] < pval[best] {
-                                    best = nb;
-                                }
+        Self {
+            n,
+            d,
+            width,
+            vmax,
+            x,
+            v,
+            fx: Vec::with_capacity(n),
+            pbest: Vec::new(),
+            pval: Vec::new(),
+            attract: vec![0; n],
+            order: (0..n).collect(),
+        }
+    }
+
+    /// The particle with the lowest personal best (the first of equals).
+    fn best(&self) -> usize {
+        let p = &self.pval;
+        (0..self.n).fold(0, |b, i| if p[i] < p[b] { i } else { b })
+    }
+
+    /// Each particle's attractor: the global best `g`, or the best of its
+    /// ring neighbourhood.
+    fn attract(&mut self, topology: Topology, g: usize) {
+        let (n, pval) = (self.n, &self.pval);
+        for (i, a) in self.attract.iter_mut().enumerate() {
+            *a = match topology {
+                Topology::Global => g,
+                Topology::Ring(r) => {
+                    let mut best = i;
+                    for o in 1..=r.min(n / 2) {
+                        for nb in [(i + o) % n, (i + n - o) % n] {
+                            if pval[nb] < pval[best] {
+                                best = nb;
                             }
                         }
-                        best
                     }
-                };
-            }
-            let (f_min, f_avg) = {
-                let finite: Vec<f64> = fx.iter().copied().filter(|v| v.is_finite()).collect();
-                let min = finite.iter().copied().fold(f64::INFINITY, f64::min);
-                let avg = finite.iter().sum::<f64>() / finite.len().max(1) as f64;
-                (min, avg)
+                    best
+                }
             };
-            let linear_w = (self.iterations - k) as f64 / self.iterations as f64
-                * (self.w_max - self.w_min)
-                + self.w_min;
-            for i in 0..n {
-                let w = match self.inertia {
-                    Inertia::LinearDecreasing => linear_w,
-                    Inertia::Adaptive => {
-                        if fx[i] <= f_avg && f_avg > f_min {
-                            self.w_min
-                                + (self.w_max - self.w_min) * (fx[i] - f_min) / (f_avg - f_min)
-                        } else if fx[i] <= f_avg {
-                            self.w_min
-                        } else {
-                            self.w_max
+        }
+    }
+
+    /// Iteration `k`'s move: new velocities (two draws per coordinate) and
+    /// positions, kept in the box by the pso's boundary rule.
+    fn step(&mut self, pso: &Pso, k: usize, bounds: &[(f64, f64)], rng: &mut ChaCha8Rng) {
+        let (f_min, f_avg) = {
+            let finite = self.fx.iter().copied().filter(|v| v.is_finite());
+            let (min, sum, count) = finite.fold((f64::INFINITY, 0.0, 0usize), |(m, s, c), v| {
+                (m.min(v), s + v, c + 1)
+            });
+            (min, sum / count.max(1) as f64)
+        };
+        let d = self.d;
+        for i in 0..self.n {
+            let w = pso.inertia_of(k, self.fx[i], f_min, f_avg);
+            let a = self.attract[i];
+            for (j, &(lo, hi)) in bounds.iter().enumerate() {
+                let idx = i * d + j;
+                let r1: f64 = rng.random();
+                let r2: f64 = rng.random();
+                let mut vel = w * self.v[idx]
+                    + pso.c1 * r1 * (self.pbest[idx] - self.x[idx])
+                    + pso.c2 * r2 * (self.pbest[a * d + j] - self.x[idx]);
+                vel = vel.clamp(-self.vmax[j], self.vmax[j]);
+                let mut pos = self.x[idx] + vel;
+                if pos < lo || pos > hi {
+                    match pso.boundary {
+                        Boundary::Clamp => {
+                            pos = pos.clamp(lo, hi);
+                            vel = 0.0;
                         }
-                    }
-                };
-                let a = attract[i];
-                for j in 0..d {
-                    let idx = i * d + j;
-                    let r1: f64 = rng.random();
-                    let r2: f64 = rng.random();
-                    let mut vel = w * v[idx]
-                        + self.c1 * r1 * (pbest[idx] - x[idx])
-                        + self.c2 * r2 * (pbest[a * d + j] - x[idx]);
-                    vel = vel.clamp(-vmax[j], vmax[j]);
-                    let mut pos = x[idx] + vel;
-                    let (lo, hi) = bounds[j];
-                    if pos < lo || pos > hi {
-                        match self.boundary {
-                            Boundary::Clamp => {
-                                pos = pos.clamp(lo, hi);
-                                vel = 0.0;
-                            }
-                            Boundary::Wrap => pos = lo + (pos - lo).rem_euclid(width[j]),
-                        }
-                    }
-                    v[idx] = vel;
-                    x[idx] = pos;
-                }
-            }
-            eval(&x, &mut fx);
-            evaluations += n;
-            for i in 0..n {
-                if fx[i] < pval[i] {
-                    pval[i] = fx[i];
-                    pbest[i * d..(i + 1) * d].copy_from_slice(&x[i * d..(i + 1) * d]);
-                }
-            }
-            if self.natural_selection {
-                order.sort_by(|&p, &q| fx[p].total_cmp(&fx[q]));
-                let half = n / 2;
-                for r in 0..half {
-                    let (good, bad) = (order[r], order[n - 1 - r]);
-                    if fx[bad] > fx[good] {
-                        let (gs, bs) = (good * d, bad * d);
-                        for j in 0..d {
-                            x[bs + j] = x[gs + j];
-                            v[bs + j] = v[gs + j];
-                        }
-                        fx[bad] = fx[good];
+                        Boundary::Wrap => pos = lo + (pos - lo).rem_euclid(self.width[j]),
                     }
                 }
+                self.v[idx] = vel;
+                self.x[idx] = pos;
             }
         }
-        let g = best_of(&pval);
-        if history.last() != Some(&pval[g]) {
-            history.push(pval[g]);
+    }
+
+    /// Personal bests updated from the latest values.
+    fn remember_bests(&mut self) {
+        let d = self.d;
+        for i in 0..self.n {
+            if self.fx[i] < self.pval[i] {
+                self.pval[i] = self.fx[i];
+                self.pbest[i * d..(i + 1) * d].copy_from_slice(&self.x[i * d..(i + 1) * d]);
+            }
+        }
+    }
+
+    /// Zhang et al.'s (2021) natural selection: the worse half takes the
+    /// positions and velocities of the better half (personal bests kept).
+    fn select(&mut self) {
+        let (n, d, fx) = (self.n, self.d, &mut self.fx);
+        self.order.sort_by(|&p, &q| fx[p].total_cmp(&fx[q]));
+        for r in 0..n / 2 {
+            let (good, bad) = (self.order[r], self.order[n - 1 - r]);
+            if fx[bad] > fx[good] {
+                let (gs, bs) = (good * d, bad * d);
+                for j in 0..d {
+                    self.x[bs + j] = self.x[gs + j];
+                    self.v[bs + j] = self.v[gs + j];
+                }
+                fx[bad] = fx[good];
+            }
+        }
+    }
+
+    /// The outcome, the final best appended to `history` when new.
+    fn result(self, mut history: Vec<f64>, iterations: usize, evaluations: usize) -> PsoResult {
+        let (g, d) = (self.best(), self.d);
+        if history.last() != Some(&self.pval[g]) {
+            history.push(self.pval[g]);
         }
         PsoResult {
-            best: pbest[g * d..(g + 1) * d].to_vec(),
-            value: pval[g],
+            best: self.pbest[g * d..(g + 1) * d].to_vec(),
+            value: self.pval[g],
             iterations,
             evaluations,
-            personal_bests: (0..n)
-                .map(|i| (pbest[i * d..(i + 1) * d].to_vec(), pval[i]))
+            personal_bests: (0..self.n)
+                .map(|i| (self.pbest[i * d..(i + 1) * d].to_vec(), self.pval[i]))
                 .collect(),
             history,
         }

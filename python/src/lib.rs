@@ -26,19 +26,19 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 create_exception!(
-    _handling,
+    handling,
     HandlingError,
     PyException,
     "Any failure of the handling library (its one `Error` type)."
 );
 create_exception!(
-    _handling,
+    handling,
     InputError,
     HandlingError,
     "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known."
 );
 create_exception!(
-    _handling,
+    handling,
     ParamError,
     HandlingError,
     "A parameter value that is not physical: `key` (dotted), `value` (a number or None), `reason`."

@@ -386,11 +386,35 @@ fn simulate<'py>(
         }
         Ok(r)
     })?;
-    let d = PyDict::new(py);
-    for (name, v) in r.history.columns() {
-        d.set_item(name, PyArray1::from_slice(py, v))?;
+    let text = json(&r)?;
+    // The history's columns move into numpy arrays (no copy), named and
+    // ordered as `TimeHistory::columns` (history.csv).
+    let h = r.history;
+    let [fz_fl, fz_fr, fz_rl, fz_rr] = h.fz;
+    let mut columns = vec![
+        ("t", h.t),
+        ("steer", h.steer),
+        ("speed", h.speed),
+        ("beta", h.beta),
+        ("yaw_rate", h.yaw_rate),
+        ("ay", h.ay),
+        ("alpha_front", h.alpha_front),
+        ("alpha_rear", h.alpha_rear),
+        ("fy_front", h.fy_front),
+        ("fy_rear", h.fy_rear),
+        ("fz_fl", fz_fl),
+        ("fz_fr", fz_fr),
+        ("fz_rl", fz_rl),
+        ("fz_rr", fz_rr),
+    ];
+    if !h.roll.is_empty() {
+        columns.push(("roll", h.roll));
     }
-    Ok((json(&r)?, d))
+    let d = PyDict::new(py);
+    for (name, v) in columns {
+        d.set_item(name, PyArray1::from_vec(py, v))?;
+    }
+    Ok((text, d))
 }
 
 /// Runs the scenario `n` times in Rust (`jobs::simulate::run`, nothing

@@ -18,7 +18,11 @@ def test_simulate_returns_arrays_and_the_cli_metrics(root, tmp_path):
     written = json.loads((tmp_path / "metrics.json").read_text())
     for k, v in m.items():
         assert written[k] == v, k
-    assert (tmp_path / "history.csv").exists() and (tmp_path / "response.png").exists()
+    assert (tmp_path / "response.png").exists()
+    csv = np.genfromtxt(tmp_path / "history.csv", delimiter=",", names=True)
+    assert list(csv.dtype.names) == list(h)
+    for c in h:
+        assert np.allclose(csv[c], h[c], rtol=1e-12, atol=0), c
     # README example: 16.90 % overshoot, 3.7096 1/s gain.
     assert m["yaw_rate_overshoot"] == pytest.approx(16.90, abs=0.01)
     assert m["yaw_rate_gain"] == pytest.approx(3.7096, abs=1e-4)

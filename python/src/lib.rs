@@ -1,0 +1,669 @@
+//! `handling._handling`: the Python extension module of the `handling`
+//! crate. A thin layer: every function calls one public library function
+//! (`handling::jobs::*::run`, `Tyre::evaluate_points`, `Study::evaluate`)
+//! with the GIL released, and hands back its typed report as JSON text
+//! (the Python package parses it into dicts, the CLI's JSON content) and
+//! its arrays as numpy arrays. Errors become the exception hierarchy
+//! `HandlingError` > `InputError` (path, line, column), `ParamError` (key,
+//! value, reason). SI units and radians throughout.
+
+use handling::error::{Error, InputError as LibInputError};
+use handling::io::{load_scenario, load_tyre, tir::read_tir_text};
+use handling::jobs;
+use handling::jobs::identify::{IdentifyModel, IdentifyReport, Options, Polish, StartArg};
+use handling::jobs::shard::{shard_job, Shard, ShardJob};
+use handling::jobs::synth::{truth_named, EffectName};
+use handling::metrics::MetricSettings;
+use handling::study::{Sample, Study};
+use handling::tyre::{Tyre, TyreModel};
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyException, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+create_exception!(
+    handling,
+    HandlingError,
+    PyException,
+    "Any failure of the handling library (its one `Error` type)."
+);
+create_exception!(
+    handling,
+    InputError,
+    HandlingError,
+    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known."
+);
+create_exception!(
+    handling,
+    ParamError,
+    HandlingError,
+    "A parameter value that is not physical: `key` (dotted), `value` (a number or None), `reason`."
+);
+
+/// The library's error as a Python exception carrying its file, line, key.
+fn py_err(e: Error) -> PyErr {
+    Python::attach(|py| {
+        let message = e.to_string();
+        let set = |err: &PyErr, attrs: &[(&str, Py<PyAny>)]| {
+            let v = err.value(py);
+            for (k, x) in attrs {
+                // Setting an attribute on a fresh exception instance cannot
+                // fail short of memory exhaustion.
+                let _ = v.setattr(*k, x);
+            }
+        };
+        let obj = |x: Bound<'_, PyAny>| x.unbind();
+        let none = || py.None();
+        let path = |p: &Path| {
+            p.display()
+                .to_string()
+                .into_pyobject(py)
+                .map(|s| s.into_any().unbind())
+                .unwrap_or_else(|_| py.None())
+        };
+        let int = |n: usize| {
+            n.into_pyobject(py)
+                .map(|s| s.into_any().unbind())
+                .unwrap_or_else(|_| py.None())
+        };
+        let text = |s: &str| {
+            s.into_pyobject(py)
+                .map(|s| s.into_any().unbind())
+                .unwrap_or_else(|_| py.None())
+        };
+        match &e {
+            Error::Param(p) => {
+                let err = ParamError::new_err(message);
+                let value = match p.value.number() {
+                    Some(v) => v
+                        .into_pyobject(py)
+                        .map(|x| obj(x.into_any()))
+                        .unwrap_or_else(|_| none()),
+                    None => none(),
+                };
+                set(
+                    &err,
+                    &[
+                        ("key", text(&p.key)),
+                        ("value", value),
+                        ("reason", text(&p.reason)),
+                    ],
+                );
+                err
+            }
+            Error::Input(LibInputError::At {
+                path: p,
+                line,
+                column,
+                message: m,
+            }) => {
+                let err = InputError::new_err(message);
+                set(
+                    &err,
+                    &[
+                        ("path", path(p)),
+                        ("line", int(*line)),
+                        ("column", int(*column)),
+                        ("reason", text(m)),
+                    ],
+                );
+                err
+            }
+            Error::Input(LibInputError::Io { path: p, .. })
+            | Error::Input(LibInputError::File { path: p, .. }) => {
+                let err = InputError::new_err(message);
+                set(
+                    &err,
+                    &[
+                        ("path", path(p)),
+                        ("line", none()),
+                        ("column", none()),
+                        ("reason", text(&e.to_string())),
+                    ],
+                );
+                err
+            }
+            Error::Data { path: p, .. }
+            | Error::Overwrite { path: p }
+            | Error::Exists { path: p, .. }
+            | Error::Output { path: p, .. } => {
+                let err = HandlingError::new_err(message);
+                set(&err, &[("path", path(p))]);
+                err
+            }
+            _ => HandlingError::new_err(message),
+        }
+    })
+}
+
+/// A report as JSON text (serde_json, as the CLI writes it).
+fn json<T: Serialize>(r: &T) -> PyResult<String> {
+    serde_json::to_string(r).map_err(|e| HandlingError::new_err(format!("report to JSON: {e}")))
+}
+
+/// A report as a JSON object, to add keys to.
+fn json_value<T: Serialize>(r: &T) -> PyResult<serde_json::Value> {
+    serde_json::to_value(r).map_err(|e| HandlingError::new_err(format!("report to JSON: {e}")))
+}
+
+/// Runs `f` with the GIL released and converts its error.
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Error> + Send) -> PyResult<T> {
+    py.detach(f).map_err(py_err)
+}
+
+/// K of N, checked (1 ≤ K ≤ N).
+fn shard(index: usize, count: usize) -> PyResult<Shard> {
+    if count == 0 || index == 0 || index > count {
+        return Err(PyValueError::new_err(format!(
+            "shard {index} of {count}: need 1 <= index <= count"
+        )));
+    }
+    Ok(Shard { index, count })
+}
+
+/// A tyre of any model (Gim, simplified Magic Formula, UniTire, PAC89,
+/// linear, Magic Formula 5.2/6.1/6.2 from a .tir file).
+#[pyclass(name = "Tyre", module = "handling._handling", frozen)]
+struct PyTyre {
+    tyre: Tyre,
+}
+
+#[pymethods]
+impl PyTyre {
+    /// Loads and validates a tyre file (`.toml`, or `.tir` for the Magic Formula).
+    #[staticmethod]
+    fn load(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        let tyre = detached(py, || load_tyre(&path).map_err(Error::from))?;
+        Ok(Self { tyre })
+    }
+
+    /// The tyre from its JSON form ([`PyTyre::to_json`]).
+    #[staticmethod]
+    fn from_json(text: &str) -> PyResult<Self> {
+        let tyre: Tyre = serde_json::from_str(text)
+            .map_err(|e| HandlingError::new_err(format!("tyre from JSON: {e}")))?;
+        tyre.validate().map_err(|e| py_err(e.into()))?;
+        Ok(Self { tyre })
+    }
+
+    /// The tyre as JSON text (serde form of the tyre file, `model` tag included).
+    fn to_json(&self) -> PyResult<String> {
+        json(&self.tyre)
+    }
+
+    /// The model name (`gim`, `pac89`, `magic-formula`, ...).
+    #[getter]
+    fn model(&self) -> &'static str {
+        self.tyre.model_name()
+    }
+
+    /// Cornering stiffness ∂Fy/∂α at α = 0, N/rad, at load `fz` (N).
+    fn cornering_stiffness(&self, fz: f64) -> f64 {
+        self.tyre.cornering_stiffness(fz)
+    }
+
+    /// Forces at points given as parallel 1-D float64 arrays (SI, rad, Pa);
+    /// `pressure` empty for the file's inflation pressure. Returns
+    /// `(fx, fy, mz, mx, my)`, `mx`/`my` None unless the Magic Formula.
+    #[allow(clippy::too_many_arguments, clippy::type_complexity)]
+    fn forces_1d<'py>(
+        &self,
+        py: Python<'py>,
+        fz: PyReadonlyArray1<'py, f64>,
+        kappa: PyReadonlyArray1<'py, f64>,
+        alpha: PyReadonlyArray1<'py, f64>,
+        camber: PyReadonlyArray1<'py, f64>,
+        speed: PyReadonlyArray1<'py, f64>,
+        pressure: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let n = fz.len()?;
+        let cols = [&fz, &kappa, &alpha, &camber, &speed];
+        if cols.iter().any(|c| c.len().ok() != Some(n)) {
+            return Err(PyValueError::new_err(
+                "fz, kappa, alpha, camber and speed must have the same length",
+            ));
+        }
+        let p = pressure.len()?;
+        if p != 0 && p != n {
+            return Err(PyValueError::new_err(
+                "pressure must be empty or as long as fz",
+            ));
+        }
+        let s = [
+            fz.as_slice()?,
+            kappa.as_slice()?,
+            alpha.as_slice()?,
+            camber.as_slice()?,
+            speed.as_slice()?,
+            pressure.as_slice()?,
+        ];
+        let tyre = &self.tyre;
+        let pts = py.detach(|| tyre.evaluate_points(s[0], s[1], s[2], s[3], s[4], s[5]));
+        let col = |f: &dyn Fn(&handling::tyre::PointForces) -> f64| {
+            PyArray1::from_iter(py, pts.iter().map(f)).into_any()
+        };
+        let opt = |f: &dyn Fn(&handling::tyre::PointForces) -> Option<f64>| {
+            if pts.first().is_some_and(|p| f(p).is_some()) {
+                PyArray1::from_iter(py, pts.iter().map(|p| f(p).unwrap_or(f64::NAN))).into_any()
+            } else {
+                py.None().into_bound(py)
+            }
+        };
+        PyTuple::new(
+            py,
+            [
+                col(&|p| p.fx),
+                col(&|p| p.fy),
+                col(&|p| p.mz),
+                opt(&|p| p.mx),
+                opt(&|p| p.my),
+            ],
+        )
+    }
+
+    /// Whether the Magic Formula's overturning and rolling-resistance moments exist.
+    #[getter]
+    fn has_wheel_moments(&self) -> bool {
+        self.tyre.has_wheel_moments()
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        self.tyre == other.tyre
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Tyre(model={:?})", self.tyre.model_name())
+    }
+
+    /// Pickles through the JSON form.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let ctor = slf.get_type().getattr("from_json")?;
+        let args = PyTuple::new(py, [slf.get().to_json()?])?;
+        PyTuple::new(py, [ctor.into_any(), args.into_any()])
+    }
+}
+
+/// A stiffness study's model: one (front, rear) cornering-stiffness pair
+/// simulated at a time (Wang & Liang), as `handling study` does for each.
+#[pyclass(name = "Study", module = "handling._handling", frozen)]
+struct PyStudy {
+    path: PathBuf,
+    study: Study,
+    front: Vec<f64>,
+    rear: Vec<f64>,
+}
+
+#[pymethods]
+impl PyStudy {
+    /// Loads a study file.
+    #[staticmethod]
+    fn load(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        let input = detached(py, || {
+            handling::io::study::load_study(&path).map_err(Error::from)
+        })?;
+        let sc = &input.scenario;
+        Ok(Self {
+            study: Study {
+                model: sc.model.clone(),
+                manoeuvre: sc.manoeuvre.clone(),
+                integrator: sc.integrator,
+                metrics: sc.metrics,
+            },
+            front: input.front.clone(),
+            rear: input.rear.clone(),
+            path,
+        })
+    }
+
+    /// The file it was loaded from.
+    #[getter]
+    fn path(&self) -> PathBuf {
+        self.path.clone()
+    }
+
+    /// The map's front stiffness values per tyre, N/rad.
+    #[getter]
+    fn front<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, &self.front)
+    }
+
+    /// The map's rear stiffness values per tyre, N/rad.
+    #[getter]
+    fn rear<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, &self.rear)
+    }
+
+    /// Simulates the pairs (N/rad per tyre); JSON list of samples.
+    fn evaluate_json(
+        &self,
+        py: Python<'_>,
+        k_front: PyReadonlyArray1<'_, f64>,
+        k_rear: PyReadonlyArray1<'_, f64>,
+    ) -> PyResult<String> {
+        let (f, r) = (k_front.as_slice()?, k_rear.as_slice()?);
+        if f.len() != r.len() {
+            return Err(PyValueError::new_err(
+                "k_front and k_rear must have the same length",
+            ));
+        }
+        let st = &self.study;
+        let samples: Vec<Sample> =
+            py.detach(|| f.iter().zip(r).map(|(&a, &b)| st.evaluate(a, b)).collect());
+        json(&samples)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Study({:?})", self.path.display().to_string())
+    }
+
+    /// Pickles as its file path (reloaded where it is unpickled).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let ctor = slf.get_type().getattr("load")?;
+        let args = PyTuple::new(py, [slf.get().path.clone()])?;
+        PyTuple::new(py, [ctor.into_any(), args.into_any()])
+    }
+}
+
+/// Simulates a scenario file; `(report JSON, [(column, array)])`, writing
+/// the CLI's outputs to `out` when given.
+#[pyfunction]
+#[pyo3(signature = (scenario, out=None))]
+fn simulate<'py>(
+    py: Python<'py>,
+    scenario: PathBuf,
+    out: Option<PathBuf>,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let r = detached(py, || {
+        let r = jobs::simulate::run(&scenario, out.as_deref())?;
+        if out.is_some() {
+            r.write()?;
+        }
+        Ok(r)
+    })?;
+    let text = json(&r)?;
+    // The history's columns move into numpy arrays (no copy), named and
+    // ordered as `TimeHistory::columns` (history.csv).
+    let h = r.history;
+    let [fz_fl, fz_fr, fz_rl, fz_rr] = h.fz;
+    let mut columns = vec![
+        ("t", h.t),
+        ("steer", h.steer),
+        ("speed", h.speed),
+        ("beta", h.beta),
+        ("yaw_rate", h.yaw_rate),
+        ("ay", h.ay),
+        ("alpha_front", h.alpha_front),
+        ("alpha_rear", h.alpha_rear),
+        ("fy_front", h.fy_front),
+        ("fy_rear", h.fy_rear),
+        ("fz_fl", fz_fl),
+        ("fz_fr", fz_fr),
+        ("fz_rl", fz_rl),
+        ("fz_rr", fz_rr),
+    ];
+    if !h.roll.is_empty() {
+        columns.push(("roll", h.roll));
+    }
+    let d = PyDict::new(py);
+    for (name, v) in columns {
+        d.set_item(name, PyArray1::from_vec(py, v))?;
+    }
+    Ok((text, d))
+}
+
+/// Runs the scenario `n` times in Rust (`jobs::simulate::run`, nothing
+/// converted or written) and returns the wall time, s: the baseline of the
+/// Python call's overhead.
+#[pyfunction]
+fn _bench_simulate(py: Python<'_>, scenario: PathBuf, n: usize) -> PyResult<f64> {
+    detached(py, || {
+        let t0 = Instant::now();
+        for _ in 0..n {
+            std::hint::black_box(jobs::simulate::run(&scenario, None)?);
+        }
+        Ok(t0.elapsed().as_secs_f64())
+    })
+}
+
+/// Step-steer metrics of a measured run; report JSON.
+#[pyfunction]
+#[pyo3(signature = (run, pre_window=0.5, steady_window=1.0, min_speed=5.0, filter_hz=handling::metrics::MEASURED_FILTER_HZ, variance_window=4.0))]
+fn metrics(
+    py: Python<'_>,
+    run: PathBuf,
+    pre_window: f64,
+    steady_window: f64,
+    min_speed: f64,
+    filter_hz: f64,
+    variance_window: f64,
+) -> PyResult<String> {
+    let settings = MetricSettings {
+        pre_window,
+        steady_window,
+        variance_window,
+        filter_hz: (filter_hz > 0.0).then_some(filter_hz),
+        ..MetricSettings::default()
+    };
+    let r = detached(py, || jobs::metrics::run(&run, &settings, min_speed))?;
+    json(&r)
+}
+
+/// Steering equilibria over a sweep file; report JSON (`summary.json`'s content).
+#[pyfunction]
+#[pyo3(signature = (sweep, out=None))]
+fn equilibria(py: Python<'_>, sweep: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
+    let r = detached(py, || {
+        let r = jobs::equilibria::run(&sweep, out.as_deref())?;
+        if out.is_some() {
+            r.write()?;
+        }
+        Ok(r)
+    })?;
+    json(&r)
+}
+
+/// Shard `index` of `count` of an equilibria sweep or a study, written to
+/// `out/shard-K-of-N.json`; report JSON.
+#[pyfunction]
+#[pyo3(signature = (job, path, index, count, out=None))]
+fn run_shard(
+    py: Python<'_>,
+    job: &str,
+    path: PathBuf,
+    index: usize,
+    count: usize,
+    out: Option<PathBuf>,
+) -> PyResult<String> {
+    let s = shard(index, count)?;
+    let r = match job {
+        "equilibria" => detached(py, || jobs::equilibria::run_shard(&path, s, out.as_deref()))?,
+        "study" => detached(py, || jobs::study::run_shard(&path, s, out.as_deref()))?,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "unknown job `{job}`: equilibria or study"
+            )))
+        }
+    };
+    json(&r)
+}
+
+/// Merges shard files into the unsharded run's outputs (written to `out`,
+/// default `out/<name>`); report JSON.
+#[pyfunction]
+#[pyo3(signature = (shards, out=None))]
+fn merge(py: Python<'_>, shards: Vec<PathBuf>, out: Option<PathBuf>) -> PyResult<String> {
+    let first = shards
+        .first()
+        .ok_or_else(|| PyValueError::new_err("merge: no shard files"))?
+        .clone();
+    detached(py, || match shard_job(&first)? {
+        ShardJob::Equilibria => {
+            let r = jobs::equilibria::merge(&shards, out.as_deref())?;
+            r.write()?;
+            Ok(serde_json::to_string(&r))
+        }
+        ShardJob::Study => {
+            let r = jobs::study::merge(&shards, out.as_deref())?;
+            r.write()?;
+            Ok(serde_json::to_string(&r))
+        }
+    })?
+    .map_err(|e| HandlingError::new_err(format!("report to JSON: {e}")))
+}
+
+/// Cornering stiffness against handling; report JSON with the map's
+/// samples added (`samples`, N/rad).
+#[pyfunction]
+#[pyo3(signature = (study_file, out=None))]
+fn study(py: Python<'_>, study_file: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
+    let r = detached(py, || {
+        let r = jobs::study::run(&study_file, out.as_deref())?;
+        if out.is_some() {
+            r.write()?;
+        }
+        Ok(r)
+    })?;
+    let mut v = json_value(&r)?;
+    if let Some(o) = v.as_object_mut() {
+        o.insert("samples".into(), json_value(&r.samples)?);
+    }
+    json(&v)
+}
+
+/// Fits a tyre model to rig data; `(report JSON, fitted tyre)`.
+#[pyfunction]
+#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS))]
+#[allow(clippy::too_many_arguments)]
+fn identify(
+    py: Python<'_>,
+    data: PathBuf,
+    model: &str,
+    seed: u64,
+    out: Option<PathBuf>,
+    pressure: Option<f64>,
+    camber: Option<f64>,
+    local: &str,
+    bin_deg: f64,
+    bin_kappa: f64,
+    start: &str,
+    template: Option<PathBuf>,
+    max_iterations: usize,
+) -> PyResult<(String, PyTyre)> {
+    let model: IdentifyModel = model.parse().map_err(py_err)?;
+    let local: Polish = local.parse().map_err(py_err)?;
+    let start = match start {
+        "data" => StartArg::Data,
+        "paper" => StartArg::Paper,
+        "template" => StartArg::Template,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "unknown start `{start}`: data, paper or template"
+            )))
+        }
+    };
+    let write = out.is_some();
+    let o = Options {
+        data,
+        model,
+        seed,
+        out,
+        pressure,
+        camber,
+        local,
+        alpha_bin_deg: bin_deg,
+        kappa_bin: bin_kappa,
+        start,
+        template,
+        max_iterations,
+    };
+    let (r, tyre) = detached(py, || {
+        let r = jobs::identify::run(&o)?;
+        if write {
+            r.write()?;
+        }
+        let tyre = match &r {
+            IdentifyReport::Swarm(s) => s.tyre.clone(),
+            IdentifyReport::Staged(s) => {
+                Tyre::MagicFormula(Box::new(read_tir_text("identified.tir", &s.tir)?))
+            }
+        };
+        Ok((r, tyre))
+    })?;
+    Ok((json(&r)?, PyTyre { tyre }))
+}
+
+/// The sim-to-real gap of a campaign (file or folder); report JSON
+/// (`diagnosis.json`'s content).
+#[pyfunction]
+#[pyo3(signature = (campaign, out=None))]
+fn diagnose(py: Python<'_>, campaign: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
+    let r = detached(py, || {
+        let r = jobs::diagnose::run(&campaign, out.as_deref())?;
+        if out.is_some() {
+            r.write()?;
+        }
+        Ok(r)
+    })?;
+    json(&r)
+}
+
+/// The virtual proving ground: writes a campaign folder `out` measured on
+/// a truth model with the named effects on; report JSON.
+#[pyfunction]
+#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented"))]
+fn synth(
+    py: Python<'_>,
+    out: PathBuf,
+    effects: Vec<String>,
+    seed: u64,
+    truth: &str,
+) -> PyResult<String> {
+    let effects = effects
+        .iter()
+        .map(|e| e.parse::<EffectName>())
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(py_err)?;
+    let truth = truth_named(truth).map_err(py_err)?;
+    let r = detached(py, || {
+        let r = jobs::synth::run(&effects, seed, truth, &out)?;
+        r.write()?;
+        Ok(r)
+    })?;
+    json(&r)
+}
+
+/// Checks a scenario file (reads and validates it, simulates nothing).
+#[pyfunction]
+fn check_scenario(py: Python<'_>, scenario: PathBuf) -> PyResult<String> {
+    let sc = detached(py, || load_scenario(&scenario).map_err(Error::from))?;
+    Ok(sc.name)
+}
+
+#[pymodule]
+fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("HandlingError", py.get_type::<HandlingError>())?;
+    m.add("InputError", py.get_type::<InputError>())?;
+    m.add("ParamError", py.get_type::<ParamError>())?;
+    m.add_class::<PyTyre>()?;
+    m.add_class::<PyStudy>()?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics, m)?)?;
+    m.add_function(wrap_pyfunction!(equilibria, m)?)?;
+    m.add_function(wrap_pyfunction!(run_shard, m)?)?;
+    m.add_function(wrap_pyfunction!(merge, m)?)?;
+    m.add_function(wrap_pyfunction!(study, m)?)?;
+    m.add_function(wrap_pyfunction!(identify, m)?)?;
+    m.add_function(wrap_pyfunction!(diagnose, m)?)?;
+    m.add_function(wrap_pyfunction!(synth, m)?)?;
+    m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

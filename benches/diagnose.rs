@@ -1,4 +1,4 @@
-//! Diagnosis speed (the target of issue 12: a campaign of 8 runs diagnosed
+//! Diagnosis speed (the target: a campaign of 8 runs diagnosed
 //! against the full library in at most 10 s on 2 cores): the synthetic proving-ground
 //! campaign (8 runs, 66 s of data at 100 Hz, a sensor delay withheld, PAC89
 //! fitted to its rig data) against all 14 effects, and the cost of one

@@ -109,7 +109,11 @@ impl Prepared {
             .collect();
         Self {
             name: run.path.display().to_string(),
-            drive: Drive::replay(&run.t, &run.steer, &run.speed, step),
+            drive: Drive::replay(&run.t, &run.steer, &run.speed, step).with_channels(
+                &run.t,
+                run.ax.as_deref(),
+                run.bank.as_deref(),
+            ),
             times,
             measured,
             start: (

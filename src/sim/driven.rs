@@ -12,7 +12,7 @@
 
 use super::ode::{self, DenseSolution, OdeSystem, Tolerances};
 use super::{load_tolerance, Integrator, TimeHistory};
-use crate::manoeuvre::{Manoeuvre, Replay};
+use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
 
 /// A run's inputs sampled at every RK4 stage of a fixed grid: index `2i` is
@@ -28,6 +28,11 @@ pub struct Drive {
     steer: Vec<f64>,
     speed: Vec<f64>,
     speed_rate: Vec<f64>,
+    /// Measured longitudinal acceleration at the stage times (empty: the
+    /// speed's derivative stands in).
+    ax: Vec<f64>,
+    /// Measured road bank at the stage times (empty: none).
+    bank: Vec<f64>,
 }
 
 impl Drive {
@@ -45,7 +50,24 @@ impl Drive {
             steer: times.iter().map(|&t| m.steer(t)).collect(),
             speed: times.iter().map(|&t| m.speed(t)).collect(),
             speed_rate: times.iter().map(|&t| m.speed_rate(t)).collect(),
+            ax: Vec::new(),
+            bank: Vec::new(),
         }
+    }
+
+    /// The same drive with a measured longitudinal acceleration and road
+    /// bank (sampled at `t`, linearly interpolated to the stage times) where
+    /// given: they reach the model as [`Inputs::ax`] and [`Inputs::bank`],
+    /// which only its longitudinal and bank-profile effects read.
+    pub fn with_channels(mut self, t: &[f64], ax: Option<&[f64]>, bank: Option<&[f64]>) -> Self {
+        let sample = |v: &[f64]| -> Vec<f64> {
+            (0..=2 * self.steps)
+                .map(|j| interpolate(t, v, self.start + 0.5 * self.step * j as f64))
+                .collect()
+        };
+        self.ax = ax.map_or_else(Vec::new, sample);
+        self.bank = bank.map_or_else(Vec::new, sample);
+        self
     }
 
     /// The replay of measured steer and speed.
@@ -76,8 +98,8 @@ impl Drive {
             speed: self.speed[k],
             speed_rate: self.speed_rate[k],
             friction,
-            ax: self.speed_rate[k],
-            bank: 0.0,
+            ax: self.ax.get(k).copied().unwrap_or(self.speed_rate[k]),
+            bank: self.bank.get(k).copied().unwrap_or(0.0),
         }
     }
 }

@@ -187,3 +187,35 @@ fn roll_follows_lateral_acceleration_and_camber_thrust_adds_force() {
     let r2 = a.simulate(&drive, [0.0; 6]);
     assert!(r2.yaw_rate[n] < 0.99 * r.yaw_rate[n]);
 }
+
+#[test]
+fn a_runs_measured_bank_and_ax_reach_the_model_only_through_their_effects() {
+    let m = step(25.0, 0.04, 4.0);
+    let t = [m.start_time(), m.end_time()];
+    let plain = Drive::new(&m, 1e-3);
+    let measured = Drive::new(&m, 1e-3).with_channels(&t, Some(&[-5.0, -5.0]), Some(&[0.1, 0.1]));
+    let run = |a: &Augmented, d: &Drive| a.simulate(d, [0.0; 6]).yaw_rate;
+    // Effects off: the channels change nothing, to the bit.
+    let base = Augmented::new(pac89_model(), 1.0);
+    assert_eq!(run(&base, &plain), run(&base, &measured));
+    // The measured bank at scale 1 is the constant bank, to the bit.
+    let mut profile = base.clone();
+    profile.base.options.effects.bank_profile_scale = 1.0;
+    let mut constant = base.clone();
+    constant.base.options.effects.road_bank = 0.1;
+    assert_eq!(run(&profile, &measured), run(&constant, &plain));
+    assert_ne!(run(&profile, &measured), run(&base, &plain));
+    // Braking at 5 m/s² moves load forward: the response changes, and only
+    // with the measured ax (the speed is constant, so du/dt is zero).
+    let mut pitch = base.clone();
+    pitch.base.options.effects.longitudinal_load_transfer = true;
+    assert_eq!(run(&pitch, &plain), run(&base, &plain));
+    let braking = run(&pitch, &measured);
+    let level = run(&base, &measured);
+    assert!(
+        (braking.last().unwrap() - level.last().unwrap()).abs() > 1e-4,
+        "{} vs {}",
+        braking.last().unwrap(),
+        level.last().unwrap()
+    );
+}

@@ -593,9 +593,15 @@ fn a_measured_bank_acts_as_the_constant_bank() {
         constant.evaluate(&x, &inp),
         measured.evaluate(&x, &with_profile)
     );
-    // And the two add.
-    let both = Inputs { bank: -0.2, ..inp };
-    assert_eq!(constant.evaluate(&x, &both), measured.evaluate(&x, &inp));
+    // And the two add, the profile scaled.
+    constant.options.effects.bank_profile_scale = 0.5;
+    let both = Inputs { bank: -0.4, ..inp };
+    assert_eq!(constant.evaluate(&x, &both).fz, measured.evaluate(&x, &inp).fz);
+    assert_relative_eq!(
+        constant.evaluate(&x, &both).beta_rate,
+        measured.evaluate(&x, &inp).beta_rate,
+        max_relative = 1e-12
+    );
 }
 
 #[test]

@@ -184,24 +184,7 @@ impl VehicleModel {
             if compliance == 0.0 {
                 return (kin_f, force(kin_f));
             }
-            // α = α_kin − c·Fyf(α) by a secant (Fyf grows with α, so the
-            // root is unique).
-            let g = |a: f64| {
-                let f = force(a);
-                (a - kin_f + compliance * f, f)
-            };
-            let (mut a0, mut a1) = (kin_f, kin_f - compliance * force(kin_f));
-            let (mut g0, _) = g(a0);
-            let (mut g1, mut f1) = g(a1);
-            for _ in 0..30 {
-                if g1.abs() < 1e-13 || g1 == g0 {
-                    break;
-                }
-                let a2 = a1 - g1 * (a1 - a0) / (g1 - g0);
-                let (g2, f2) = g(a2);
-                (a0, g0, a1, g1, f1) = (a1, g1, a2, g2, f2);
-            }
-            (a1, f1)
+            compliant_slip(kin_f, compliance, force)
         };
         let split = self.load_split_at(u, inp.ax, inp.bank);
         let inv_m = 1.0 / v.mass;
@@ -306,4 +289,26 @@ impl VehicleModel {
         self.rates(&self.state_vector(x, inp), inp, seed, tolerance)
             .1
     }
+}
+
+/// The front slip angle and force with steering compliance `c`:
+/// `α = α_kin − c·Fyf(α)`, solved by a secant (Fyf grows with α, so the
+/// root is unique).
+fn compliant_slip(kin: f64, c: f64, force: impl Fn(f64) -> f64) -> (f64, f64) {
+    let g = |a: f64| {
+        let f = force(a);
+        (a - kin + c * f, f)
+    };
+    let (mut a0, mut a1) = (kin, kin - c * force(kin));
+    let (mut g0, _) = g(a0);
+    let (mut g1, mut f1) = g(a1);
+    for _ in 0..30 {
+        if g1.abs() < 1e-13 || g1 == g0 {
+            break;
+        }
+        let a2 = a1 - g1 * (a1 - a0) / (g1 - g0);
+        let (g2, f2) = g(a2);
+        (a0, g0, a1, g1, f1) = (a1, g1, a2, g2, f2);
+    }
+    (a1, f1)
 }

@@ -63,6 +63,21 @@ fn cos_atan(x: f64) -> f64 {
     1.0 / (1.0 + x * x).sqrt()
 }
 
+/// The camber-free factors of the pure lateral force at one load and
+/// pressure, from which [`LateralAtLoad`] follows at a camber.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct LateralFree {
+    kya_scale: f64,
+    load_ratio: f64,
+    svy0: f64,
+    svyg_per_gs: f64,
+    kyg0: f64,
+    shy0: f64,
+    mu0: f64,
+    ey0: f64,
+    fz: f64,
+}
+
 /// The pure lateral force's factors at one load, pressure and camber (the
 /// point's camber, or zero for the trail of 6.x `Mz`).
 #[derive(Debug, Clone, Copy)]
@@ -221,51 +236,19 @@ impl MagicFormula {
 
         // Pure lateral: the camber-free factors, then the point's camber
         // and (6.x, for Mz) zero camber.
-        let kya_scale = c.PKY1 * fz0p * (1.0 + c.PPY1 * dpi) * c.LKY;
-        let load_ratio = (fz / fz0p) / (1.0 + c.PPY2 * dpi);
-        let svy0 = fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * lmuy_p;
-        let svyg_per_gs = fz * (c.PVY3 + c.PVY4 * dfz) * c.LKYC * lmuy_p;
-        let kyg0 = fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC;
-        let shy0 = (c.PHY1 + c.PHY2 * dfz) * c.LHY;
-        let mu0 = (c.PDY1 + c.PDY2 * dfz) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * lmuy_s;
-        let ey0 = (c.PEY1 + c.PEY2 * dfz) * c.LEY;
-        let lateral = |gs: f64| {
-            let x = load_ratio / (c.PKY2 + c.PKY5 * gs * gs);
-            // sin(2·atan x) = 2x/(1 + x²): the 5.2 default PKY4 = 2 needs
-            // no trigonometry.
-            let shape = if c.PKY4 == 2.0 && x.is_finite() {
-                2.0 * x / (1.0 + x * x)
-            } else {
-                (c.PKY4 * x.atan()).sin()
-            };
-            let kya = kya_scale * (1.0 - c.PKY3 * gs.abs()) * shape;
-            let kya_g = guard(kya);
-            let svyg = svyg_per_gs * gs;
-            let kyg_gs = if v52 { 0.0 } else { kyg0 * gs };
-            let shy = if v52 {
-                shy0 + c.PHY3 * gs * c.LKYC
-            } else {
-                shy0 + (kyg_gs - svyg) / kya_g
-            };
-            let cy = c.PCY1 * c.LCY;
-            let muy = mu0 * (1.0 - c.PDY3 * gs * gs);
-            let dy = muy * fz;
-            LateralAtLoad {
-                kya_g,
-                shy,
-                svy: svy0 + svyg,
-                shy0,
-                kyg_gs,
-                svyg,
-                cy,
-                dy,
-                muy,
-                by: kya / guard(cy * dy),
-                ey0,
-                ey_a: 1.0 + c.PEY5 * gs * gs,
-                ey_b: c.PEY3 + c.PEY4 * gs,
-            }
+        let free = LateralFree {
+            kya_scale: c.PKY1 * fz0p * (1.0 + c.PPY1 * dpi) * c.LKY,
+            load_ratio: (fz / fz0p) / (1.0 + c.PPY2 * dpi),
+            svy0: fz * (c.PVY1 + c.PVY2 * dfz) * c.LVY * lmuy_p,
+            svyg_per_gs: fz * (c.PVY3 + c.PVY4 * dfz) * c.LKYC * lmuy_p,
+            kyg0: fz * (c.PKY6 + c.PKY7 * dfz) * (1.0 + c.PPY5 * dpi) * c.LKYC,
+            shy0: (c.PHY1 + c.PHY2 * dfz) * c.LHY,
+            mu0: (c.PDY1 + c.PDY2 * dfz) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * lmuy_s,
+            ey0: (c.PEY1 + c.PEY2 * dfz) * c.LEY,
+            fz,
         };
+        let mu0 = free.mu0;
+        let lateral = |gs: f64| self.lateral_at(&free, gs);
         let lat = lateral(gs);
         let flat = if gs == 0.0 || v52 { lat } else { lateral(0.0) };
 
@@ -273,50 +256,11 @@ impl MagicFormula {
         // (MFeval); γ itself in Bt and Dt (TNO eqs. A58/A60) and in s (A56):
         // QBZ4 and QDZ3 linear in γ, the book's γ*, |γ*| and QBZ6 unused.
         let gz = gs;
-        let bt = (c.QBZ1 + c.QBZ2 * dfz + c.QBZ3 * dfz * dfz)
-            * (1.0 + c.QBZ4 * gamma + c.QBZ5 * gamma.abs())
-            * c.LKY
-            / lmuy_s;
-        let ct = c.QCZ1;
-        let dt = fz
-            * (r0 / fz0p)
-            * (c.QDZ1 + c.QDZ2 * dfz)
-            * (1.0 - c.PPZ1 * dpi)
-            * (1.0 + c.QDZ3 * gamma + c.QDZ4 * gamma * gamma)
-            * c.LTR;
-        let dr = fz
-            * r0
-            * ((c.QDZ6 + c.QDZ7 * dfz) * c.LRES
-                + ((c.QDZ8 + c.QDZ9 * dfz) * (1.0 + c.PPZ2 * dpi)
-                    + (c.QDZ10 + c.QDZ11 * dfz) * gz.abs())
-                    * gz
-                    * c.LKZC)
-            * lmuy_s;
+        let (bt, dt, dr) = self.aligning_terms(fz, dfz, dpi, gamma, gz, lmuy_s);
         let kratio = kxk / lat.kya_g;
 
-        // Overturning moment: terms whose coefficient is 0 are skipped
-        // (their trigonometry multiplies 0).
         let fzr = fz / fz0;
-        let mx_mixed = if c.QSX4 == 0.0 {
-            0.0
-        } else {
-            c.QSX4 * (c.QSX5 * (c.QSX6 * fzr).powi(2).atan()).cos()
-        };
-        let mx_load_camber = if c.QSX10 == 0.0 {
-            0.0
-        } else {
-            c.QSX10 * (c.QSX11 * fzr).atan() * gamma
-        };
-
-        // Rolling resistance: Fz^QSY7·p^QSY8 as one exponential of
-        // logarithms (the pressure's skipped when QSY8 = 0).
-        let my_powers = if v52 || c.QSY7 == 0.0 {
-            fzr
-        } else {
-            let pr = if c.NOMPRES > 0.0 { p / c.NOMPRES } else { 1.0 };
-            let lp = if c.QSY8 == 0.0 { 0.0 } else { c.QSY8 * pr.ln() };
-            (c.QSY7 * fzr.ln() + lp).exp()
-        };
+        let (mx_mixed, mx_load_camber, my_powers) = self.moment_terms(fzr, gamma, p);
 
         Prelude {
             fz,
@@ -341,7 +285,7 @@ impl MagicFormula {
             eyk: (c.REY1 + c.REY2 * dfz).min(1.0),
             sht: c.QHZ1 + c.QHZ2 * dfz + (c.QHZ3 + c.QHZ4 * dfz) * gz,
             bt,
-            btct: bt * ct,
+            btct: bt * c.QCZ1,
             et_load: c.QEZ1 + c.QEZ2 * dfz + c.QEZ3 * dfz * dfz,
             et_gamma: (c.QEZ4 + c.QEZ5 * gz) * (2.0 / PI),
             dt,
@@ -359,6 +303,113 @@ impl MagicFormula {
             my_powers,
             my_gamma: (c.QSY5 + c.QSY6 * fzr) * gamma * gamma,
         }
+    }
+
+    /// `Bt`, `Dt` and `Dr` of the aligning moment at load `fz` (`dfz`,
+    /// `dpi` its load and pressure increments), camber `gamma` and `gz`
+    /// (γ*), friction scale `lmuy_s`.
+    #[inline]
+    fn aligning_terms(
+        &self,
+        fz: f64,
+        dfz: f64,
+        dpi: f64,
+        gamma: f64,
+        gz: f64,
+        lmuy_s: f64,
+    ) -> (f64, f64, f64) {
+        let c = &self.coefficients;
+        let (fz0p, r0) = (c.FNOMIN * c.LFZO, c.UNLOADED_RADIUS);
+        let bt = (c.QBZ1 + c.QBZ2 * dfz + c.QBZ3 * dfz * dfz)
+            * (1.0 + c.QBZ4 * gamma + c.QBZ5 * gamma.abs())
+            * c.LKY
+            / lmuy_s;
+        let dt = fz
+            * (r0 / fz0p)
+            * (c.QDZ1 + c.QDZ2 * dfz)
+            * (1.0 - c.PPZ1 * dpi)
+            * (1.0 + c.QDZ3 * gamma + c.QDZ4 * gamma * gamma)
+            * c.LTR;
+        let dr = fz
+            * r0
+            * ((c.QDZ6 + c.QDZ7 * dfz) * c.LRES
+                + ((c.QDZ8 + c.QDZ9 * dfz) * (1.0 + c.PPZ2 * dpi)
+                    + (c.QDZ10 + c.QDZ11 * dfz) * gz.abs())
+                    * gz
+                    * c.LKZC)
+            * lmuy_s;
+        (bt, dt, dr)
+    }
+
+    /// The pure lateral factors at camber `gs` (γ* or γ) from the
+    /// camber-free ones.
+    #[inline]
+    fn lateral_at(&self, f: &LateralFree, gs: f64) -> LateralAtLoad {
+        let c = &self.coefficients;
+        let v52 = self.version == MfVersion::Mf52;
+        let x = f.load_ratio / (c.PKY2 + c.PKY5 * gs * gs);
+        // sin(2·atan x) = 2x/(1 + x²): the 5.2 default PKY4 = 2 needs
+        // no trigonometry.
+        let shape = if c.PKY4 == 2.0 && x.is_finite() {
+            2.0 * x / (1.0 + x * x)
+        } else {
+            (c.PKY4 * x.atan()).sin()
+        };
+        let kya = f.kya_scale * (1.0 - c.PKY3 * gs.abs()) * shape;
+        let kya_g = guard(kya);
+        let svyg = f.svyg_per_gs * gs;
+        let kyg_gs = if v52 { 0.0 } else { f.kyg0 * gs };
+        let shy = if v52 {
+            f.shy0 + c.PHY3 * gs * c.LKYC
+        } else {
+            f.shy0 + (kyg_gs - svyg) / kya_g
+        };
+        let cy = c.PCY1 * c.LCY;
+        let muy = f.mu0 * (1.0 - c.PDY3 * gs * gs);
+        let dy = muy * f.fz;
+        LateralAtLoad {
+            kya_g,
+            shy,
+            svy: f.svy0 + svyg,
+            shy0: f.shy0,
+            kyg_gs,
+            svyg,
+            cy,
+            dy,
+            muy,
+            by: kya / guard(cy * dy),
+            ey0: f.ey0,
+            ey_a: 1.0 + c.PEY5 * gs * gs,
+            ey_b: c.PEY3 + c.PEY4 * gs,
+        }
+    }
+
+    /// The load and camber terms of the overturning moment (those whose
+    /// coefficient is 0 skipped: their trigonometry multiplies 0) and of
+    /// the rolling resistance, `Fz^QSY7·p^QSY8` as one exponential of
+    /// logarithms (the pressure's skipped when QSY8 = 0), at load ratio
+    /// `fzr = Fz/FNOMIN`.
+    #[inline]
+    fn moment_terms(&self, fzr: f64, gamma: f64, p: f64) -> (f64, f64, f64) {
+        let c = &self.coefficients;
+        let mx_mixed = if c.QSX4 == 0.0 {
+            0.0
+        } else {
+            c.QSX4 * (c.QSX5 * (c.QSX6 * fzr).powi(2).atan()).cos()
+        };
+        let mx_load_camber = if c.QSX10 == 0.0 {
+            0.0
+        } else {
+            c.QSX10 * (c.QSX11 * fzr).atan() * gamma
+        };
+        let my_powers = if self.version == MfVersion::Mf52 || c.QSY7 == 0.0 {
+            fzr
+        } else {
+            let pr = if c.NOMPRES > 0.0 { p / c.NOMPRES } else { 1.0 };
+            let lp = if c.QSY8 == 0.0 { 0.0 } else { c.QSY8 * pr.ln() };
+            (c.QSY7 * fzr.ln() + lp).exp()
+        };
+        (mx_mixed, mx_load_camber, my_powers)
     }
 
     /// The slip-dependent part at one point from a prelude (ISO-W).

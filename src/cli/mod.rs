@@ -57,8 +57,8 @@ enum Command {
     TyreEval(tyre_eval::TyreEvalArgs),
     /// Step-steer metrics of a measured run (CSV, FORMATS.md).
     Metrics(simulate::MetricsArgs),
-    /// The outputs of a sharded `equilibria` or `study` run from its shard
-    /// files, byte for byte those of the unsharded run.
+    /// The outputs of a sharded `equilibria`, `study` or `diagnose --batch`
+    /// run from its shard files, byte for byte those of the unsharded run.
     Merge(equilibria::MergeArgs),
 }
 
@@ -78,7 +78,9 @@ pub fn run() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // The library's errors say everything in their own message; the
+            // chain would repeat the OS error of an unreadable file.
+            eprintln!("error: {e}");
             ExitCode::FAILURE
         }
     }

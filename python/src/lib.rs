@@ -513,6 +513,11 @@ fn merge(py: Python<'_>, shards: Vec<PathBuf>, out: Option<PathBuf>) -> PyResult
             r.write()?;
             Ok(serde_json::to_string(&r))
         }
+        // The fleet table is written by the merge itself.
+        ShardJob::Diagnose => {
+            let r = jobs::fleet::merge(&shards, out.as_deref())?;
+            Ok(serde_json::to_string(&r))
+        }
     })?
     .map_err(|e| HandlingError::new_err(format!("report to JSON: {e}")))
 }

@@ -49,7 +49,7 @@ fn main() -> anyhow::Result<()> {
     } else if chosen.is_empty() && model == Truth::FourWheel {
         truths.extend(model.effects().into_iter().map(|e| vec![e]));
     } else if chosen.is_empty() {
-        truths.extend(EffectKind::ALL.iter().map(|e| vec![*e]));
+        truths.extend(model.effects().into_iter().map(|e| vec![e]));
         truths.push(vec![EffectKind::RelaxationLength, EffectKind::SensorBias]);
         truths.push(vec![
             EffectKind::CorneringStiffness,

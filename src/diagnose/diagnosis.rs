@@ -34,7 +34,7 @@ pub use super::report::*;
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
 use super::crossval::{gap_above, prepare, reduction, singles, Context, Scored};
-use super::effects::{joined, EffectKind, EffectSet};
+use super::effects::{joined, EffectKind, EffectSet, Needs};
 use super::fit::{Channel, ChannelErrors};
 use super::model::Observed;
 pub use super::summary::observed_channel;
@@ -485,6 +485,43 @@ fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
     }
 }
 
+/// A longitudinal acceleration that shows, m/s²: well above a logger's
+/// noise on `ax` and a speed trace's differencing noise.
+const VISIBLE_AX: f64 = 0.5;
+
+/// The campaign's candidate effects that its runs can show, and a note for
+/// each one left out (an effect of braking and throttle without a
+/// longitudinal acceleration, a bank profile without a `bank` channel).
+fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
+    let accelerates = c.runs.iter().any(|r| match &r.ax {
+        Some(ax) => ax.iter().any(|a| a.abs() > VISIBLE_AX),
+        None => {
+            r.t.windows(2)
+                .zip(r.speed.windows(2))
+                .any(|(t, u)| t[1] > t[0] && ((u[1] - u[0]) / (t[1] - t[0])).abs() > VISIBLE_AX)
+        }
+    });
+    let banked = c.runs.iter().any(|r| r.bank.is_some());
+    let mut notes = Vec::new();
+    let effects = c
+        .effects
+        .iter()
+        .copied()
+        .filter(|e| {
+            let why = match e.needs() {
+                Needs::LongitudinalAcceleration if !accelerates => format!(
+                    "no run has a longitudinal acceleration above {VISIBLE_AX} m/s² (an ax channel or a changing speed)"
+                ),
+                Needs::BankChannel if !banked => "no run has a bank channel".to_string(),
+                _ => return true,
+            };
+            notes.push(format!("{}: not a candidate: {why}", e.name()));
+            false
+        })
+        .collect();
+    (effects, notes)
+}
+
 /// Runs the diagnosis of a campaign. `progress` counts work units (see
 /// [`work_units`]).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
@@ -518,7 +555,8 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
     let significant = j0 > SIGNIFICANT * jn;
-    let (singles, order) = singles(&ctx, &c.effects);
+    let (effects, mut notes) = visible_effects(c);
+    let (singles, order) = singles(&ctx, &effects);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
 
     let found = if significant {
@@ -551,7 +589,10 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         seed: set.seed,
         runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),
         folds: ctx.folds.len(),
-        notes: c.notes.clone(),
+        notes: {
+            notes.splice(0..0, c.notes.iter().cloned());
+            notes
+        },
         cleaning: c.cleaning.clone(),
         base: BaseReport {
             tyres: tyre_source,

@@ -46,6 +46,25 @@ pub enum EffectKind {
     AccelerometerRoll,
     /// An accelerometer ahead of or behind the centre of gravity.
     AccelerometerPosition,
+    /// Load moved between the axles by the longitudinal acceleration.
+    LongitudinalLoadTransfer,
+    /// Lateral force lost to the longitudinal force of braking and drive
+    /// (each tyre's friction circle), with a drive split and brake balance.
+    CombinedSlip,
+    /// The road bank of the run's `bank` channel, scaled, plus an offset.
+    BankProfile,
+}
+
+/// What a run must carry for an effect to show in it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Needs {
+    /// Nothing beyond steer, speed and a response.
+    Nothing,
+    /// A longitudinal acceleration (an `ax` channel, or a speed that
+    /// changes) somewhere.
+    LongitudinalAcceleration,
+    /// A `bank` channel.
+    BankChannel,
 }
 
 /// A parameter of an effect.
@@ -78,7 +97,7 @@ pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
 
 impl EffectKind {
     /// Every effect, in the order.
-    pub const ALL: [EffectKind; 14] = [
+    pub const ALL: [EffectKind; 17] = [
         EffectKind::RelaxationLength,
         EffectKind::SteeringCompliance,
         EffectKind::RollSteer,
@@ -93,6 +112,9 @@ impl EffectKind {
         EffectKind::SensorBias,
         EffectKind::AccelerometerRoll,
         EffectKind::AccelerometerPosition,
+        EffectKind::LongitudinalLoadTransfer,
+        EffectKind::CombinedSlip,
+        EffectKind::BankProfile,
     ];
 
     /// The name in the vocabulary (and in diagnosis.json).
@@ -112,6 +134,20 @@ impl EffectKind {
             EffectKind::SensorBias => "sensor_bias",
             EffectKind::AccelerometerRoll => "accelerometer_roll",
             EffectKind::AccelerometerPosition => "accelerometer_position",
+            EffectKind::LongitudinalLoadTransfer => "longitudinal_load_transfer",
+            EffectKind::CombinedSlip => "combined_slip",
+            EffectKind::BankProfile => "bank_profile",
+        }
+    }
+
+    /// What a run must carry for the effect to show.
+    pub fn needs(self) -> Needs {
+        match self {
+            EffectKind::LongitudinalLoadTransfer | EffectKind::CombinedSlip => {
+                Needs::LongitudinalAcceleration
+            }
+            EffectKind::BankProfile => Needs::BankChannel,
+            _ => Needs::Nothing,
         }
     }
 
@@ -160,6 +196,17 @@ impl EffectKind {
         ];
         const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s^2)", 0.0, -0.03, 0.03)];
         const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
+        const PITCH: [Parameter; 1] = [par("share", "-", 0.0, 0.0, 2.0)];
+        // No value switches a friction circle off: its "off" values are the
+        // starts, rear-wheel drive and 60 % of the braking in front.
+        const COMBINED: [Parameter; 2] = [
+            par("drive_front_share", "-", 0.0, 0.0, 1.0),
+            par("brake_front_share", "-", 0.6, 0.0, 1.0),
+        ];
+        const PROFILE: [Parameter; 2] = [
+            par("scale", "-", 0.0, -0.5, 2.0),
+            par("offset", "rad", 0.0, -0.2, 0.2),
+        ];
         match self {
             EffectKind::RelaxationLength => &RELAXATION,
             EffectKind::SteeringCompliance => &COMPLIANCE,
@@ -175,6 +222,9 @@ impl EffectKind {
             EffectKind::SensorBias => &BIAS,
             EffectKind::AccelerometerRoll => &ROLL,
             EffectKind::AccelerometerPosition => &POSITION,
+            EffectKind::LongitudinalLoadTransfer => &PITCH,
+            EffectKind::CombinedSlip => &COMBINED,
+            EffectKind::BankProfile => &PROFILE,
         }
     }
 
@@ -224,6 +274,15 @@ impl EffectKind {
             EffectKind::AccelerometerPosition => {
                 "ay error proportional to yaw acceleration, none in steady state: a frequency sweep"
             }
+            EffectKind::LongitudinalLoadTransfer => {
+                "a balance change that follows braking and throttle, none at constant speed: steady turns braking and accelerating"
+            }
+            EffectKind::CombinedSlip => {
+                "grip lost in proportion to the longitudinal force, most near the limit: braking in a turn against coasting at one lateral acceleration"
+            }
+            EffectKind::BankProfile => {
+                "a drift that follows the measured bank, not the steer: the same corner driven at two speeds"
+            }
         }
     }
 }
@@ -252,6 +311,13 @@ pub struct EffectSet {
     pub cornering_stiffness_scale: Option<[f64; 2]>,
     /// Yaw-inertia scale (None: 1).
     pub yaw_inertia_scale: Option<f64>,
+    /// Share of the rigid-body longitudinal load transfer (0: none).
+    pub longitudinal_load_transfer: f64,
+    /// Combined slip's drive split and brake balance, front shares (None:
+    /// pure slip).
+    pub combined_slip: Option<[f64; 2]>,
+    /// The measured bank profile's scale, and a constant bank added, rad.
+    pub bank_profile: [f64; 2],
     /// The measurement system.
     pub sensors: Sensors,
 }
@@ -278,6 +344,9 @@ impl EffectSet {
             }
             EffectKind::AccelerometerRoll => self.sensors.roll_gradient = p[0],
             EffectKind::AccelerometerPosition => self.sensors.accelerometer_x = p[0],
+            EffectKind::LongitudinalLoadTransfer => self.longitudinal_load_transfer = p[0],
+            EffectKind::CombinedSlip => self.combined_slip = Some([p[0], p[1]]),
+            EffectKind::BankProfile => self.bank_profile = [p[0], p[1]],
         }
     }
 
@@ -307,6 +376,9 @@ impl EffectSet {
             ],
             EffectKind::AccelerometerRoll => vec![self.sensors.roll_gradient],
             EffectKind::AccelerometerPosition => vec![self.sensors.accelerometer_x],
+            EffectKind::LongitudinalLoadTransfer => vec![self.longitudinal_load_transfer],
+            EffectKind::CombinedSlip => self.combined_slip.unwrap_or([0.0, 0.6]).to_vec(),
+            EffectKind::BankProfile => self.bank_profile.to_vec(),
         }
     }
 
@@ -332,7 +404,7 @@ mod tests {
             }
             // Setting the off values gives the base model back (the share's
             // off value is the vehicle's own, tested in the model).
-            if k != EffectKind::LoadTransferDistribution {
+            if k != EffectKind::LoadTransferDistribution && k != EffectKind::CombinedSlip {
                 let mut e = EffectSet::default();
                 let off: Vec<f64> = p.iter().map(|q| q.off).collect();
                 e.set(k, &off);

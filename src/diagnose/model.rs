@@ -16,7 +16,7 @@ use super::effects::EffectSet;
 use crate::manoeuvre::interpolate;
 pub use crate::sim::Drive;
 use crate::sim::{Integrator, TimeHistory};
-use crate::vehicle::{RollModel, State, StateVector, VehicleModel};
+use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel};
 
 /// The base model with effects.
 #[derive(Debug, Clone, PartialEq)]
@@ -78,6 +78,17 @@ impl Augmented {
         x.roll_steer = e.roll_steer;
         x.roll_camber = e.roll_camber;
         x.cornering_stiffness_scale = e.cornering_stiffness_scale.unwrap_or([1.0; 2]);
+        // Like aero and bank, the longitudinal effects and the bank profile
+        // add to (or, for combined slip, replace) the base model's own.
+        x.longitudinal_load_transfer += e.longitudinal_load_transfer;
+        if let Some([drive, brake]) = e.combined_slip {
+            x.combined_slip = Some(CombinedSlip {
+                drive_front_share: drive,
+                brake_front_share: brake,
+            });
+        }
+        x.bank_profile_scale += e.bank_profile[0];
+        x.road_bank += e.bank_profile[1];
         x.roll = self.roll;
         (model, self.friction * e.friction_scale.unwrap_or(1.0))
     }

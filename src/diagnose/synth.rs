@@ -23,7 +23,7 @@
 //! the truth's roll (the diagnosis is not handed the truth).
 
 use super::campaign::{BaseTyres, Campaign, DiagnoseSettings};
-use super::effects::{EffectKind, EffectSet, RollModel};
+use super::effects::{EffectKind, EffectSet, Needs, RollModel};
 use super::model::{Augmented, Drive};
 use super::proving_ground::{FourWheel, FourWheelEffects, FourWheelVehicle};
 use crate::error::ParamError;
@@ -105,7 +105,10 @@ impl Truth {
     /// rolling accelerometer 1.
     pub fn values(self, kind: EffectKind) -> Option<Vec<f64>> {
         match self {
-            Truth::Augmented => Some(truth_values(kind)),
+            // The programme (steps and sweeps at constant speed on a flat
+            // road, no ax or bank channel) cannot show the longitudinal
+            // and bank-profile effects.
+            Truth::Augmented => (kind.needs() == Needs::Nothing).then(|| truth_values(kind)),
             Truth::FourWheel => match kind {
                 EffectKind::RelaxationLength => Some(vec![0.7]),
                 EffectKind::SteeringCompliance => Some(vec![0.003]),
@@ -120,7 +123,10 @@ impl Truth {
                 EffectKind::AccelerometerRoll => Some(vec![1.0]),
                 EffectKind::LoadTransferDistribution
                 | EffectKind::RoadBank
-                | EffectKind::AccelerometerPosition => None,
+                | EffectKind::AccelerometerPosition
+                | EffectKind::LongitudinalLoadTransfer
+                | EffectKind::CombinedSlip
+                | EffectKind::BankProfile => None,
             },
         }
     }
@@ -154,7 +160,10 @@ fn four_wheel_effects(effects: &[(EffectKind, Vec<f64>)]) -> Result<FourWheelEff
             EffectKind::AccelerometerRoll => e.accelerometer_rolls = p[0] != 0.0,
             EffectKind::LoadTransferDistribution
             | EffectKind::RoadBank
-            | EffectKind::AccelerometerPosition => {}
+            | EffectKind::AccelerometerPosition
+            | EffectKind::LongitudinalLoadTransfer
+            | EffectKind::CombinedSlip
+            | EffectKind::BankProfile => {}
         }
     }
     Ok(e)
@@ -200,6 +209,9 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
         EffectKind::SensorBias => vec![0.008, 0.2, 0.004],
         EffectKind::AccelerometerRoll => vec![RollModel::default().gradient],
         EffectKind::AccelerometerPosition => vec![0.8],
+        EffectKind::LongitudinalLoadTransfer => vec![1.0],
+        EffectKind::CombinedSlip => vec![0.0, 0.65],
+        EffectKind::BankProfile => vec![1.0, 0.0],
     }
 }
 

@@ -78,7 +78,7 @@ pub fn run(
         let values = truth.values(k).ok_or_else(|| {
             let all: Vec<&str> = truth.effects().iter().map(|k| k.name()).collect();
             Error::Options(format!(
-                "unknown effect `{}` for the {} truth: one of none, {}",
+                "effect `{}`: not one the {} truth's programme can show: one of none, {}",
                 k.name(),
                 truth.name(),
                 all.join(", ")

@@ -24,8 +24,8 @@
 //!   top of the constant bank;
 //! - longitudinal load transfer: at longitudinal acceleration ax
 //!   ([`super::Inputs::ax`]) each front wheel loses and each rear wheel gains
-//!   `m·ax·h/(2l)` (Gillespie, *Fundamentals of Vehicle Dynamics*, 1992,
-//!   ch. 2), an axle's load never below zero;
+//!   a share of `m·ax·h/(2l)` (Gillespie, *Fundamentals of Vehicle
+//!   Dynamics*, 1992, ch. 2), an axle's load never below zero;
 //! - combined slip ([`CombinedSlip`]): the longitudinal force `m·ax` is
 //!   shared between the axles by a drive split (ax > 0) or a brake balance
 //!   (ax < 0), evenly between an axle's wheels, and each wheel's lateral
@@ -145,8 +145,9 @@ pub struct Effects {
     pub cornering_stiffness_scale: [f64; 2],
     /// The body's roll response (drives roll steer and roll camber).
     pub roll: RollModel,
-    /// Longitudinal load transfer from [`super::Inputs::ax`].
-    pub longitudinal_load_transfer: bool,
+    /// Share of the rigid-body longitudinal load transfer `m·ax·h/l` at
+    /// [`super::Inputs::ax`] (0: none, 1: as the CG height gives).
+    pub longitudinal_load_transfer: f64,
     /// Combined slip from [`super::Inputs::ax`] (None: pure slip).
     pub combined_slip: Option<CombinedSlip>,
 }
@@ -163,7 +164,7 @@ impl Default for Effects {
             roll_camber: [0.0; 2],
             cornering_stiffness_scale: [1.0; 2],
             roll: RollModel::default(),
-            longitudinal_load_transfer: false,
+            longitudinal_load_transfer: 0.0,
             combined_slip: None,
         }
     }
@@ -194,6 +195,10 @@ impl Effects {
         for (i, v) in self.cornering_stiffness_scale.iter().enumerate() {
             ParamError::positive(&format!("cornering_stiffness_scale[{i}]"), *v)?;
         }
+        ParamError::finite(
+            "longitudinal_load_transfer",
+            self.longitudinal_load_transfer,
+        )?;
         if let Some(c) = &self.combined_slip {
             for (key, v) in [
                 ("drive_front_share", c.drive_front_share),

@@ -157,9 +157,10 @@ impl VehicleModel {
             sf += e.aero_load[0] * speed * speed;
             sr += e.aero_load[1] * speed * speed;
         }
-        if e.longitudinal_load_transfer && ax != 0.0 {
+        if e.longitudinal_load_transfer != 0.0 && ax != 0.0 {
             // A wheelie or a stoppie at the most: no axle load below zero.
-            let d = (v.mass * ax * v.cg_height / v.wheelbase()).clamp(-sr, sf);
+            let rigid = v.mass * ax * v.cg_height / v.wheelbase();
+            let d = (e.longitudinal_load_transfer * rigid).clamp(-sr, sf);
             sf -= d;
             sr += d;
         }

@@ -94,7 +94,7 @@ fn synth_refuses_an_unknown_truth_and_an_effect_the_truth_lacks() {
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
-        e.contains("unknown effect `road_bank` for the four-wheel truth")
+        e.contains("effect `road_bank`: not one the four-wheel truth's programme can show")
             && e.contains("roll_camber"),
         "{e}"
     );

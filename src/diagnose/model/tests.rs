@@ -208,7 +208,7 @@ fn a_runs_measured_bank_and_ax_reach_the_model_only_through_their_effects() {
     // Braking at 5 m/s² moves load forward: the response changes, and only
     // with the measured ax (the speed is constant, so du/dt is zero).
     let mut pitch = base.clone();
-    pitch.base.options.effects.longitudinal_load_transfer = true;
+    pitch.base.options.effects.longitudinal_load_transfer = 1.0;
     assert_eq!(run(&pitch, &plain), run(&base, &plain));
     let braking = run(&pitch, &measured);
     let level = run(&base, &measured);

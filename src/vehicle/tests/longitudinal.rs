@@ -24,7 +24,7 @@ fn longitudinal_load_transfer_moves_m_ax_h_over_l_between_the_axles() {
     // Off, the longitudinal acceleration moves no load.
     let off = m.evaluate(&x, &accelerating(20.0, 0.0, -6.0)).fz;
     assert_eq!(off, m.evaluate(&x, &Inputs::steady(0.0, 20.0, 1.0)).fz);
-    m.options.effects.longitudinal_load_transfer = true;
+    m.options.effects.longitudinal_load_transfer = 1.0;
     for ax in [-6.0, 3.0] {
         let fz = m.evaluate(&x, &accelerating(20.0, 0.0, ax)).fz;
         let d = v.mass * ax * v.cg_height / v.wheelbase();

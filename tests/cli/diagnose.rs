@@ -568,19 +568,6 @@ fn road_course_campaign(
     dir
 }
 
-/// Runs `handling diagnose` on `dir` and returns its diagnosis.json.
-fn diagnose_folder(dir: &Path) -> serde_json::Value {
-    let out = dir.join("out");
-    let o = run(&[
-        "diagnose",
-        dir.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    read_json(&out.join("diagnosis.json"))
-}
-
 #[test]
 fn a_withheld_bank_profile_and_longitudinal_transfer_are_named_from_the_logs_channels() {
     use handling::diagnose::effects::{EffectKind, EffectSet};
@@ -601,7 +588,7 @@ fn a_withheld_bank_profile_and_longitudinal_transfer_are_named_from_the_logs_cha
         truth,
         "\"bank_profile\", \"road_bank\", \"sensor_bias\", \"longitudinal_load_transfer\"",
     );
-    let d = diagnose_folder(dir.path());
+    let d = diagnose(dir.path()).1;
     assert_eq!(
         d["verdict"]["effects"],
         serde_json::json!(["bank_profile"]),
@@ -618,7 +605,7 @@ fn a_withheld_bank_profile_and_longitudinal_transfer_are_named_from_the_logs_cha
         truth,
         "\"longitudinal_load_transfer\", \"bank_profile\", \"sensor_bias\", \"cornering_stiffness\"",
     );
-    let d = diagnose_folder(dir.path());
+    let d = diagnose(dir.path()).1;
     assert_eq!(
         d["verdict"]["effects"],
         serde_json::json!(["longitudinal_load_transfer"]),
@@ -651,7 +638,7 @@ fn effects_the_runs_cannot_show_are_left_out_with_a_note() {
         "model = \"linear\"\ncornering_stiffness = 60000.0\n",
     )
     .unwrap();
-    let d = diagnose_folder(dir.path());
+    let d = diagnose(dir.path()).1;
     let notes = d["notes"].to_string();
     assert!(
         notes.contains("combined_slip: not a candidate: no run has a longitudinal acceleration"),

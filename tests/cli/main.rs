@@ -74,6 +74,27 @@ pub(crate) fn fails_cleanly(command: &str, input: &Path, dir: &Path) -> String {
     stderr(&o)
 }
 
+/// Runs `diagnose` on a campaign folder into its `out` sub-folder; returns
+/// stdout and diagnosis.json.
+pub(crate) fn diagnose(dir: &Path) -> (String, serde_json::Value) {
+    diagnose_to(dir, &dir.join("out"))
+}
+
+/// Runs `diagnose campaign --out out`; returns stdout and diagnosis.json.
+fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::Value) {
+    let o = run(&[
+        "diagnose",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        read_json(&out.join("diagnosis.json")),
+    )
+}
+
 pub(crate) fn simulate_err(dir: &Path) -> String {
     fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }
@@ -105,18 +126,7 @@ pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
 /// Runs `diagnose` on a campaign (outputs beside it, `<campaign>.out`):
 /// its stdout and `diagnosis.json`.
 pub(crate) fn diagnose_campaign(campaign: &Path) -> (String, serde_json::Value) {
-    let out = campaign.with_extension("out");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    (
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        read_json(&out.join("diagnosis.json")),
-    )
+    diagnose_to(campaign, &campaign.with_extension("out"))
 }
 
 /// The effects a diagnosis's verdict names.

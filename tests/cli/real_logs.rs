@@ -100,22 +100,6 @@ fn campaign(runs: &[(&str, String)]) -> tempfile::TempDir {
     dir
 }
 
-/// Runs `diagnose` on a campaign folder; returns stdout and diagnosis.json.
-fn diagnose(dir: &Path) -> (String, serde_json::Value) {
-    let out = dir.join("out");
-    let o = run(&[
-        "diagnose",
-        dir.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    (
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        read_json(&out.join("diagnosis.json")),
-    )
-}
-
 fn f(v: &serde_json::Value) -> f64 {
     v.as_f64().unwrap()
 }

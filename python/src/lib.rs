@@ -155,14 +155,26 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Error> + Send
     py.detach(f).map_err(py_err)
 }
 
+/// Runs a job with the GIL released and, when asked (`out` given), writes
+/// its outputs.
+fn run_job<R: Send>(
+    py: Python<'_>,
+    write: bool,
+    run: impl FnOnce() -> Result<R, Error> + Send,
+    outputs: impl FnOnce(&R) -> Result<(), Error> + Send,
+) -> PyResult<R> {
+    detached(py, || {
+        let r = run()?;
+        if write {
+            outputs(&r)?;
+        }
+        Ok(r)
+    })
+}
+
 /// K of N, checked (1 ≤ K ≤ N).
 fn shard(index: usize, count: usize) -> PyResult<Shard> {
-    if count == 0 || index == 0 || index > count {
-        return Err(PyValueError::new_err(format!(
-            "shard {index} of {count}: need 1 <= index <= count"
-        )));
-    }
-    Ok(Shard { index, count })
+    Shard::new(index, count).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 /// A tyre of any model (Gim, simplified Magic Formula, UniTire, PAC89,
@@ -379,13 +391,12 @@ fn simulate<'py>(
     scenario: PathBuf,
     out: Option<PathBuf>,
 ) -> PyResult<(String, Bound<'py, PyDict>)> {
-    let r = detached(py, || {
-        let r = jobs::simulate::run(&scenario, out.as_deref())?;
-        if out.is_some() {
-            r.write()?;
-        }
-        Ok(r)
-    })?;
+    let r = run_job(
+        py,
+        out.is_some(),
+        || jobs::simulate::run(&scenario, out.as_deref()),
+        |r| r.write(),
+    )?;
     let text = json(&r)?;
     // The history's columns move into numpy arrays (no copy), named and
     // ordered as `TimeHistory::columns` (history.csv).
@@ -458,13 +469,12 @@ fn metrics(
 #[pyfunction]
 #[pyo3(signature = (sweep, out=None))]
 fn equilibria(py: Python<'_>, sweep: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
-    let r = detached(py, || {
-        let r = jobs::equilibria::run(&sweep, out.as_deref())?;
-        if out.is_some() {
-            r.write()?;
-        }
-        Ok(r)
-    })?;
+    let r = run_job(
+        py,
+        out.is_some(),
+        || jobs::equilibria::run(&sweep, out.as_deref()),
+        |r| r.write(),
+    )?;
     json(&r)
 }
 
@@ -527,13 +537,12 @@ fn merge(py: Python<'_>, shards: Vec<PathBuf>, out: Option<PathBuf>) -> PyResult
 #[pyfunction]
 #[pyo3(signature = (study_file, out=None))]
 fn study(py: Python<'_>, study_file: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
-    let r = detached(py, || {
-        let r = jobs::study::run(&study_file, out.as_deref())?;
-        if out.is_some() {
-            r.write()?;
-        }
-        Ok(r)
-    })?;
+    let r = run_job(
+        py,
+        out.is_some(),
+        || jobs::study::run(&study_file, out.as_deref()),
+        |r| r.write(),
+    )?;
     let mut v = json_value(&r)?;
     if let Some(o) = v.as_object_mut() {
         o.insert("samples".into(), json_value(&r.samples)?);
@@ -608,13 +617,12 @@ fn identify(
 #[pyfunction]
 #[pyo3(signature = (campaign, out=None))]
 fn diagnose(py: Python<'_>, campaign: PathBuf, out: Option<PathBuf>) -> PyResult<String> {
-    let r = detached(py, || {
-        let r = jobs::diagnose::run(&campaign, out.as_deref())?;
-        if out.is_some() {
-            r.write()?;
-        }
-        Ok(r)
-    })?;
+    let r = run_job(
+        py,
+        out.is_some(),
+        || jobs::diagnose::run(&campaign, out.as_deref()),
+        |r| r.write(),
+    )?;
     json(&r)
 }
 

@@ -25,6 +25,16 @@ pub struct Shard {
 }
 
 impl Shard {
+    /// Shard `index` of `count`, checked: 1 ≤ K ≤ N.
+    pub fn new(index: usize, count: usize) -> Result<Self, Error> {
+        if index == 0 || index > count {
+            return Err(Error::Options(format!(
+                "shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8"
+            )));
+        }
+        Ok(Self { index, count })
+    }
+
     /// Whether unit `unit` (0-based) is this shard's.
     pub fn owns(&self, unit: usize) -> bool {
         unit % self.count == self.index - 1
@@ -61,10 +71,7 @@ impl std::str::FromStr for Shard {
             k.trim().parse().map_err(|_| bad())?,
             n.trim().parse().map_err(|_| bad())?,
         );
-        if index == 0 || index > count {
-            return Err(bad());
-        }
-        Ok(Self { index, count })
+        Self::new(index, count).map_err(|_| bad())
     }
 }
 

@@ -63,14 +63,7 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     let again = run(&["synth", "--out", campaign.to_str().unwrap()]);
     assert!(!again.status.success() && stderr(&again).contains("exists"));
     let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        campaign.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
+    let (stdout, d) = diagnose_to(&campaign, &out);
     assert!(
         stdout.contains("verdict: sensor_delay explains the gap"),
         "{stdout}"
@@ -78,7 +71,6 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     for f in ["diagnosis.json", "gap_map.png", "overlays.png"] {
         assert!(out.join(f).is_file(), "{f}");
     }
-    let d = read_json(&out.join("diagnosis.json"));
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
     assert_eq!(d["seed"], 3);
     let top = &d["ranking"][0];

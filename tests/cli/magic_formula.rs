@@ -35,6 +35,17 @@ fn points(rows: &[(f64, f64, f64, f64)]) -> String {
     s
 }
 
+/// Runs `handling tyre-eval tyre points --out out`.
+fn tyre_eval(tyre: &Path, points: &Path, out: &Path) -> Output {
+    run(&[
+        "tyre-eval",
+        tyre.to_str().unwrap(),
+        points.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
 fn read_out(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     let text = fs::read_to_string(p).unwrap();
     let mut lines = text.lines();
@@ -61,13 +72,11 @@ fn tyre_eval_matches_the_closed_form_and_converts_units() {
         ("points.csv", &points(&rows)),
     ]);
     let out = dir.path().join("forces.csv");
-    let o = run(&[
-        "tyre-eval",
-        dir.path().join("tyre.tir").to_str().unwrap(),
-        dir.path().join("points.csv").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = tyre_eval(
+        &dir.path().join("tyre.tir"),
+        &dir.path().join("points.csv"),
+        &out,
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let (head, got) = read_out(&out);
     assert_eq!(
@@ -107,13 +116,7 @@ fn right_side_file_is_the_mirror_image() {
     ]);
     let eval = |tyre: &str, pts: &str| {
         let out = dir.path().join(format!("{tyre}-{pts}.out"));
-        let o = run(&[
-            "tyre-eval",
-            dir.path().join(tyre).to_str().unwrap(),
-            dir.path().join(pts).to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = tyre_eval(&dir.path().join(tyre), &dir.path().join(pts), &out);
         assert!(o.status.success(), "{}", stderr(&o));
         read_out(&out)
     };
@@ -160,13 +163,7 @@ fn public_tir_files_load_and_combined_force_stays_below_pure() {
         }
         let dir = scratch(&[("p.csv", &points(&rows))]);
         let out = dir.path().join("f.csv");
-        let o = run(&[
-            "tyre-eval",
-            tir.to_str().unwrap(),
-            dir.path().join("p.csv").to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = tyre_eval(&tir, &dir.path().join("p.csv"), &out);
         assert!(o.status.success(), "{v}: {}", stderr(&o));
         let (head, got) = read_out(&out);
         // Beyond small slip angles (where the κ-induced shift SVyκ may add
@@ -192,13 +189,7 @@ fn unsupported_fittyp_of_a_public_file_is_refused_with_file_line_and_key() {
     let tir = root().join("tests/fixtures/tir/chrono_335_65R22_5_G275MSA_60psi.tir");
     let dir = scratch(&[("p.csv", "fz,kappa,alpha,camber,speed\n20000,0,0.1,0,20\n")]);
     let out = dir.path().join("f.csv");
-    let o = run(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        dir.path().join("p.csv").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = tyre_eval(&tir, &dir.path().join("p.csv"), &out);
     assert!(!o.status.success());
     assert!(!out.exists());
     let e = stderr(&o);
@@ -225,13 +216,11 @@ fn broken_tir_and_points_name_file_line_and_key() {
         ),
     ]);
     let eval = |tyre: &str, pts: &str| {
-        let o = run(&[
-            "tyre-eval",
-            dir.path().join(tyre).to_str().unwrap(),
-            dir.path().join(pts).to_str().unwrap(),
-            "--out",
-            dir.path().join("out.csv").to_str().unwrap(),
-        ]);
+        let o = tyre_eval(
+            &dir.path().join(tyre),
+            &dir.path().join(pts),
+            &dir.path().join("out.csv"),
+        );
         assert!(!o.status.success());
         assert!(!dir.path().join("out.csv").exists());
         stderr(&o)
@@ -328,13 +317,7 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
         let dir = scratch(&[("points.csv", &pts)]);
         let out = dir.path().join("forces.csv");
         let tir = root().join(format!("tests/fixtures/tir/{tir}.tir"));
-        let o = run(&[
-            "tyre-eval",
-            tir.to_str().unwrap(),
-            dir.path().join("points.csv").to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = tyre_eval(&tir, &dir.path().join("points.csv"), &out);
         assert!(o.status.success(), "{}", stderr(&o));
         let (head, got) = read_out(&out);
         let mirror = if right { -1.0 } else { 1.0 };

@@ -81,7 +81,7 @@ pub(crate) fn diagnose(dir: &Path) -> (String, serde_json::Value) {
 }
 
 /// Runs `diagnose campaign --out out`; returns stdout and diagnosis.json.
-fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::Value) {
+pub(crate) fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::Value) {
     let o = run(&[
         "diagnose",
         campaign.to_str().unwrap(),

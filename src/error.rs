@@ -75,6 +75,22 @@ impl Error {
     }
 }
 
+/// The member of the closed set `all` whose name (`name`) is `s`, or the
+/// message that names `s` and every member: "unknown {what} `s`: one of
+/// a, b, c". The one parser of the names of closed sets (metrics, units,
+/// tyre models).
+pub fn by_name<T: Copy>(
+    all: &[T],
+    name: impl Fn(T) -> &'static str,
+    what: &str,
+    s: &str,
+) -> Result<T, String> {
+    all.iter().copied().find(|&m| name(m) == s).ok_or_else(|| {
+        let names: Vec<&str> = all.iter().map(|&m| name(m)).collect();
+        format!("unknown {what} `{s}`: one of {}", names.join(", "))
+    })
+}
+
 /// The value of a [`ParamError`]: a number, or none to show (a name, a
 /// table, a missing key).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -29,9 +29,10 @@ use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
-use crate::error::{InputError, ParamError};
+use crate::error::{by_name, InputError, ParamError};
 use crate::identify::SWARM_MODELS;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
+use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -233,14 +234,8 @@ fn base_tyres(
         };
     let name = spec.model.as_deref().unwrap_or("pac89");
     // The rig fit starts a swarm, which the staged Magic Formula does not.
-    let model = SWARM_MODELS
-        .into_iter()
-        .find(|m| m.as_str() == name)
-        .ok_or_else(|| {
-            let names: Vec<&str> = SWARM_MODELS.iter().map(|m| m.as_str()).collect();
-            let why = format!("unknown tyre model `{name}`: one of {}", names.join(", "));
-            src.value_error(&ParamError::without_value("tyres.model", &why))
-        })?;
+    let model = by_name(&SWARM_MODELS, ModelName::as_str, "tyre model", name)
+        .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why)))?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

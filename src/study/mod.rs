@@ -14,7 +14,7 @@
 pub mod inverse;
 pub mod rbf;
 
-use crate::error::Error;
+use crate::error::{by_name, Error};
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
@@ -189,15 +189,7 @@ impl std::fmt::Display for Metric {
 impl std::str::FromStr for Metric {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        Self::ALL
-            .into_iter()
-            .find(|m| m.name() == s)
-            .ok_or_else(|| {
-                Error::Options(format!(
-                    "unknown metric `{s}`; one of {}",
-                    METRICS.join(", ")
-                ))
-            })
+        by_name(&Self::ALL, Metric::name, "metric", s).map_err(Error::Options)
     }
 }
 
@@ -262,10 +254,8 @@ impl std::fmt::Display for StiffnessUnit {
 impl std::str::FromStr for StiffnessUnit {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        [StiffnessUnit::NPerDeg, StiffnessUnit::NPerRad]
-            .into_iter()
-            .find(|u| u.as_str() == s)
-            .ok_or_else(|| Error::Options(format!("unknown unit `{s}`: N/deg or N/rad")))
+        let all = [StiffnessUnit::NPerDeg, StiffnessUnit::NPerRad];
+        by_name(&all, StiffnessUnit::as_str, "unit", s).map_err(Error::Options)
     }
 }
 

@@ -80,13 +80,7 @@ impl std::fmt::Display for ModelName {
 impl std::str::FromStr for ModelName {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
-        Self::ALL
-            .into_iter()
-            .find(|m| m.as_str() == s)
-            .ok_or_else(|| {
-                let names: Vec<&str> = Self::ALL.iter().map(|m| m.as_str()).collect();
-                format!("unknown tyre model `{s}`: one of {}", names.join(", "))
-            })
+        crate::error::by_name(&Self::ALL, ModelName::as_str, "tyre model", s)
     }
 }
 

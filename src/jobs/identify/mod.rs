@@ -92,16 +92,8 @@ impl std::fmt::Display for IdentifyModel {
 impl std::str::FromStr for IdentifyModel {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        Self::ALL
-            .into_iter()
-            .find(|m| m.as_str() == s)
-            .ok_or_else(|| {
-                let names: Vec<&str> = Self::ALL.iter().map(|m| m.as_str()).collect();
-                Error::Options(format!(
-                    "unknown tyre model `{s}`: one of {}",
-                    names.join(", ")
-                ))
-            })
+        crate::error::by_name(&Self::ALL, IdentifyModel::as_str, "tyre model", s)
+            .map_err(Error::Options)
     }
 }
 

@@ -25,6 +25,7 @@ fn diagnosis(c: &mut Criterion) {
         )],
         seed: 1,
         noise: Noise::default(),
+        programme: Default::default(),
     };
     let s = generate(&spec);
     let campaign = s.campaign(EffectKind::ALL.to_vec(), DiagnoseSettings::default());

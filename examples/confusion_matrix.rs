@@ -5,7 +5,13 @@
 //! verdict names and how far the held-out gap shrinks.
 //!
 //! `cargo run --release --example confusion_matrix [seeds] [effect ... |
-//! none] [--truth four-wheel] [--glitches]`
+//! none] [--truth four-wheel] [--programme oval|road-course] [--glitches]`
+//!
+//! With `--programme oval` or `road-course` the runs are the logged racing
+//! programmes of [`handling::diagnose::synth::Programme`] (25 Hz, `ax` and
+//! `bank` channels, the oval's standstill left out by the cleaning): one
+//! row for no effect and one for each effect of the library, including the
+//! longitudinal and bank-profile ones.
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
 //! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
@@ -21,7 +27,7 @@
 
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::{joined, EffectKind};
-use handling::diagnose::synth::{generate_with, Noise, SynthSpec, Truth};
+use handling::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Truth};
 use handling::diagnose::DiagnoseSettings;
 use handling::io::clean::{clean_runs, inject_glitches, CleanSettings};
 use std::time::Instant;
@@ -37,6 +43,12 @@ fn main() -> anyhow::Result<()> {
             .ok_or_else(|| anyhow::anyhow!("unknown truth `{name}`: augmented or four-wheel"))?;
         args.drain(k..(k + 2).min(args.len()));
     }
+    let mut programme = Programme::Handling;
+    if let Some(k) = args.iter().position(|a| a == "--programme") {
+        let name = args.get(k + 1).cloned().unwrap_or_default();
+        programme = name.parse()?;
+        args.drain(k..(k + 2).min(args.len()));
+    }
     let seeds: u64 = args.first().and_then(|s| s.parse().ok()).unwrap_or(3);
     let chosen: Vec<EffectKind> = args
         .iter()
@@ -46,10 +58,10 @@ fn main() -> anyhow::Result<()> {
     let mut truths: Vec<Vec<EffectKind>> = vec![Vec::new()];
     if args.iter().skip(1).any(|a| a == "none") {
         // `none`: the no-effect row alone.
-    } else if chosen.is_empty() && model == Truth::FourWheel {
-        truths.extend(model.effects().into_iter().map(|e| vec![e]));
+    } else if chosen.is_empty() && (model == Truth::FourWheel || programme.logged()) {
+        truths.extend(model.effects(programme).into_iter().map(|e| vec![e]));
     } else if chosen.is_empty() {
-        truths.extend(model.effects().into_iter().map(|e| vec![e]));
+        truths.extend(model.effects(programme).into_iter().map(|e| vec![e]));
         truths.push(vec![EffectKind::RelaxationLength, EffectKind::SensorBias]);
         truths.push(vec![
             EffectKind::CorneringStiffness,
@@ -61,6 +73,9 @@ fn main() -> anyhow::Result<()> {
     }
     if model != Truth::Augmented {
         println!("truth model: {}\n", model.name());
+    }
+    if programme.logged() {
+        println!("programme: {}\n", programme.name());
     }
     if glitches {
         println!("| truth | seed | verdict | confounded with | held-out J before → after (noise) | reduction % | fitted (truth) | s | verdict with glitches | glitches listed / injected |");
@@ -74,10 +89,11 @@ fn main() -> anyhow::Result<()> {
             let spec = SynthSpec {
                 effects: truth
                     .iter()
-                    .filter_map(|e| Some((*e, model.values(*e)?)))
+                    .filter_map(|e| Some((*e, model.values(programme, *e)?)))
                     .collect(),
                 seed,
                 noise: Noise::default(),
+                programme,
             };
             let s = generate_with(&spec, model)?;
             let settings = DiagnoseSettings {

@@ -627,16 +627,19 @@ fn diagnose(py: Python<'_>, campaign: PathBuf, out: Option<PathBuf>) -> PyResult
 }
 
 /// The virtual proving ground: writes a campaign folder `out` measured on
-/// a truth model with the named effects on; report JSON.
+/// a truth model with the named effects on, driving `programme`
+/// (`handling`, `oval` or `road-course`); report JSON.
 #[pyfunction]
-#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented"))]
+#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented", programme="handling"))]
 fn synth(
     py: Python<'_>,
     out: PathBuf,
     effects: Vec<String>,
     seed: u64,
     truth: &str,
+    programme: &str,
 ) -> PyResult<String> {
+    let programme = programme.parse().map_err(py_err)?;
     let effects = effects
         .iter()
         .map(|e| e.parse::<EffectName>())
@@ -644,7 +647,7 @@ fn synth(
         .map_err(py_err)?;
     let truth = truth_named(truth).map_err(py_err)?;
     let r = detached(py, || {
-        let r = jobs::synth::run(&effects, seed, truth, &out)?;
+        let r = jobs::synth::run(&effects, seed, truth, programme, &out)?;
         r.write()?;
         Ok(r)
     })?;

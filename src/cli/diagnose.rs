@@ -3,7 +3,7 @@
 
 use anyhow::Result;
 use clap::Args;
-use handling::diagnose::synth::Truth;
+use handling::diagnose::synth::{Programme, Truth};
 use handling::jobs::diagnose;
 use handling::jobs::fleet::{self, BatchOutcome};
 use handling::jobs::shard::Shard;
@@ -75,6 +75,12 @@ pub struct SynthArgs {
     /// and its own tyre).
     #[arg(long, default_value = "augmented", value_parser = truth_named)]
     truth: Truth,
+    /// What the driver does: `handling` (steps, a ramp and a sweep at
+    /// constant speed, 100 Hz), `oval` (a 20° banked oval with braking,
+    /// throttle and a standstill on the banking, 25 Hz, ax and bank
+    /// channels) or `road-course` (trail braking, cambered corners, 25 Hz).
+    #[arg(long, default_value = "handling", value_parser = Programme::from_str)]
+    programme: Programme,
     /// Campaign folder to create.
     #[arg(long)]
     out: PathBuf,
@@ -82,7 +88,7 @@ pub struct SynthArgs {
 
 /// `handling synth`: writes a campaign folder generated with the effects.
 pub fn synth(a: SynthArgs) -> Result<()> {
-    let r = synth::run(&a.effects, a.seed, a.truth, &a.out)?;
+    let r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
     r.write()?;
     println!("{}", r.wrote());
     Ok(())

@@ -5,7 +5,7 @@
 //! no half-written campaign, and an existing folder is never written over.
 
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::synth::{generate_with, Noise, SynthSpec, Synthetic, Truth};
+use crate::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Synthetic, Truth};
 use crate::error::Error;
 use crate::report::{create_dir, write_bytes, write_columns};
 use serde::Serialize;
@@ -51,6 +51,8 @@ pub struct SynthReport {
     pub runs: usize,
     /// The model that played the car.
     pub truth: Truth,
+    /// What the driver did.
+    pub programme: Programme,
     /// The effects on, in words.
     pub name: String,
     /// Noise seed.
@@ -60,12 +62,13 @@ pub struct SynthReport {
     pub campaign: Synthetic,
 }
 
-/// Generates a campaign on `truth` with `effects` on and noise seed `seed`,
-/// for the new folder `out`.
+/// Generates a campaign of `programme` on `truth` with `effects` on and
+/// noise seed `seed`, for the new folder `out`.
 pub fn run(
     effects: &[EffectName],
     seed: u64,
     truth: Truth,
+    programme: Programme,
     out: &Path,
 ) -> Result<SynthReport, Error> {
     let kinds = effects.iter().filter_map(|e| e.0);
@@ -73,14 +76,22 @@ pub fn run(
         effects: Vec::new(),
         seed,
         noise: Noise::default(),
+        programme,
     };
+    if truth == Truth::FourWheel && programme.logged() {
+        return Err(Error::Options(format!(
+            "the four-wheel truth holds its speed on a flat road: it drives the handling programme, not `{}`",
+            programme.name()
+        )));
+    }
     for k in kinds {
-        let values = truth.values(k).ok_or_else(|| {
-            let all: Vec<&str> = truth.effects().iter().map(|k| k.name()).collect();
+        let values = truth.values(programme, k).ok_or_else(|| {
+            let all: Vec<&str> = truth.effects(programme).iter().map(|k| k.name()).collect();
             Error::Options(format!(
-                "effect `{}`: not one the {} truth's programme can show: one of none, {}",
+                "effect `{}`: not one the {} truth's {} programme can show: one of none, {}",
                 k.name(),
                 truth.name(),
+                programme.name(),
                 all.join(", ")
             ))
         })?;
@@ -97,6 +108,7 @@ pub fn run(
         out: out.to_path_buf(),
         runs: s.runs.len(),
         truth,
+        programme,
         name: s.name(),
         seed,
         campaign: s,
@@ -127,9 +139,10 @@ impl SynthReport {
     /// The closing line.
     pub fn wrote(&self) -> String {
         format!(
-            "wrote {} ({} runs, rig data, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
+            "wrote {} ({} {} runs, rig data, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
             self.out.display(),
             self.runs,
+            self.programme.name(),
             self.truth.name(),
             self.name,
             self.seed,
@@ -154,11 +167,15 @@ fn write_campaign(s: &Synthetic, dir: &Path) -> Result<(), Error> {
             ("steer", &r.steer),
             ("yaw_rate", &r.yaw_rate),
         ];
-        if let Some(ay) = &r.ay {
-            cols.push(("ay", ay));
-        }
-        if let Some(b) = &r.beta {
-            cols.push(("beta", b));
+        for (name, v) in [
+            ("ay", &r.ay),
+            ("ax", &r.ax),
+            ("bank", &r.bank),
+            ("beta", &r.beta),
+        ] {
+            if let Some(v) = v {
+                cols.push((name, v));
+            }
         }
         write_columns(&dir.join("runs").join(&r.path), &cols)?;
     }

@@ -105,6 +105,7 @@ mod identify;
 mod magic_formula;
 mod measured_metrics;
 mod mf_identify;
+mod programmes;
 mod proving_ground;
 mod real_logs;
 mod rig_layouts;

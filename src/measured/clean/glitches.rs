@@ -431,6 +431,7 @@ mod tests {
             effects: Vec::new(),
             seed: 3,
             noise: Noise::default(),
+            programme: Default::default(),
         });
         let mut run = s
             .runs

@@ -128,6 +128,7 @@ mod tests {
                 effects: effects.iter().map(|e| (*e, truth_values(*e))).collect(),
                 seed,
                 noise: Noise::default(),
+                programme: Default::default(),
             });
             let mut injected = Vec::new();
             let mut runs = s.runs.clone();

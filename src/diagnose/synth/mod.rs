@@ -3,15 +3,23 @@
 //! different from the one the diagnosis fits (model-form error, as with a
 //! real car).
 //!
-//! The truth: the seed-004 sedan on the bundled UniTire tyre (225/55R17
-//! class), its rig data from the same tyre (loads 2.5–7 kN, ±12°, noise
-//! 1 % of the force + 20 N); the diagnosis fits PAC89 to that rig. The test
-//! programme (100 Hz, 1 s before every input): step steers at 40, 60, 100,
-//! 100 (high level), 120 km/h and a right-hand step at 80 km/h (GB/T 6323,
-//! 0.15 s rise), a ramp steer toward the limit at 80 km/h, a 0.1–3 Hz sweep
-//! at 80 km/h. Every run starts 3 s before its first sample from straight
-//! running, so the recorded part starts settled (on a bank too). Noise:
-//! yaw rate 0.003 rad/s, ay 0.05 m/s², β 0.002 rad (Gaussian, seeded).
+//! The truth: Wang & Liang's compact sedan on the bundled UniTire tyre
+//! (225/55R17 class), its rig data from the same tyre (loads 2.5–7 kN,
+//! ±12°, noise 1 % of the force + 20 N); the diagnosis fits PAC89 to that
+//! rig. Three programmes ([`Programme`]):
+//! - handling (100 Hz, 1 s before every input): step steers at 40, 60,
+//!   100, 100 (high level), 120 km/h and a right-hand step at 80 km/h
+//!   (GB/T 6323, 0.15 s rise), a ramp steer toward the limit at 80 km/h, a
+//!   0.1–3 Hz sweep at 80 km/h. Every run starts 3 s before its first
+//!   sample from straight running, so the recorded part starts settled (on
+//!   a bank too). Noise: yaw rate 0.003 rad/s, ay 0.05 m/s², β 0.002 rad
+//!   (Gaussian, seeded);
+//! - a banked oval and a road course driven like a racing car, logged at
+//!   25 Hz with `ax` and `bank` channels and no sideslip ([`programme`]'s
+//!   doc). Noise as above, ax 0.05 m/s², bank 0.002 rad. On these the
+//!   truth can switch on the longitudinal and bank-profile effects; without
+//!   `bank_profile` the truth drives a flat track whose logger still
+//!   records the banking (a control: the channel alone is no effect).
 //!
 //! A cornering-stiffness or friction truth means the car's tyres differ
 //! from the rig's: the rig data are generated without it. Units: SI, rad.
@@ -30,6 +38,7 @@ use crate::error::ParamError;
 use crate::identify::data::gauss;
 use crate::identify::data::RigData;
 use crate::manoeuvre::{Manoeuvre, RampSteer, StepSteer, SweepSteer};
+use crate::measured::clean::{clean_runs, CleanSettings};
 use crate::measured::MeasuredRun;
 use crate::tyre::ModelName;
 use crate::tyre::{SlipState, Tyre, TyreModel};
@@ -38,6 +47,9 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 use std::path::PathBuf;
+
+mod programme;
+pub use programme::{logged_runs, LoggedInputs, Programme, LOG_RATE};
 
 /// Noise standard deviations of the synthetic measurements.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,11 +100,11 @@ impl Truth {
         Self::ALL.into_iter().find(|t| t.name() == name)
     }
 
-    /// The effects this truth can switch on.
-    pub fn effects(self) -> Vec<EffectKind> {
+    /// The effects this truth can switch on in `programme`.
+    pub fn effects(self, programme: Programme) -> Vec<EffectKind> {
         EffectKind::ALL
             .into_iter()
-            .filter(|k| self.values(*k).is_some())
+            .filter(|k| self.values(programme, *k).is_some())
             .collect()
     }
 
@@ -102,13 +114,17 @@ impl Truth {
     /// (front, rear) rad/rad; roll camber (front, rear) wheel lean per body
     /// roll, rad/rad; aero (front, rear) N/(m/s)²; friction and stiffness
     /// scales; yaw-inertia scale; delay s; offsets as the diagnosis's; a
-    /// rolling accelerometer 1.
-    pub fn values(self, kind: EffectKind) -> Option<Vec<f64>> {
+    /// rolling accelerometer 1. The four-wheel truth holds its speed and
+    /// drives the handling programme only.
+    pub fn values(self, programme: Programme, kind: EffectKind) -> Option<Vec<f64>> {
         match self {
-            // The programme (steps and sweeps at constant speed on a flat
-            // road, no ax or bank channel) cannot show the longitudinal
-            // and bank-profile effects.
-            Truth::Augmented => (kind.needs() == Needs::Nothing).then(|| truth_values(kind)),
+            // The handling programme (steps and sweeps at constant speed on
+            // a flat road, no ax or bank channel) cannot show the
+            // longitudinal and bank-profile effects; the logged ones can.
+            Truth::Augmented => {
+                (programme.logged() || kind.needs() == Needs::Nothing).then(|| truth_values(kind))
+            }
+            Truth::FourWheel if programme.logged() => None,
             Truth::FourWheel => match kind {
                 EffectKind::RelaxationLength => Some(vec![0.7]),
                 EffectKind::SteeringCompliance => Some(vec![0.003]),
@@ -136,9 +152,11 @@ impl Truth {
 fn four_wheel_effects(effects: &[(EffectKind, Vec<f64>)]) -> Result<FourWheelEffects, ParamError> {
     let mut e = FourWheelEffects::default();
     for (k, p) in effects {
-        let need = Truth::FourWheel.values(*k).ok_or_else(|| {
-            ParamError::without_value(k.name(), "not an effect of the four-wheel truth")
-        })?;
+        let need = Truth::FourWheel
+            .values(Programme::Handling, *k)
+            .ok_or_else(|| {
+                ParamError::without_value(k.name(), "not an effect of the four-wheel truth")
+            })?;
         if p.len() != need.len() {
             return Err(ParamError::new(
                 k.name(),
@@ -189,6 +207,8 @@ pub struct SynthSpec {
     pub seed: u64,
     /// Measurement noise.
     pub noise: Noise,
+    /// What the driver does.
+    pub programme: Programme,
 }
 
 /// The truth value of each effect used by the checks: realistic, and large
@@ -239,12 +259,12 @@ pub struct Synthetic {
 
 /// The bundled UniTire of the truth.
 pub fn truth_tyre() -> Tyre {
-    toml::from_str(include_str!("../../tyres/unitire.toml")).expect("the bundled UniTire file")
+    toml::from_str(include_str!("../../../tyres/unitire.toml")).expect("the bundled UniTire file")
 }
 
 /// The test programme: (name, manoeuvre) with the steer sized on the truth
 /// vehicle without effects.
-fn programme(model: &VehicleModel) -> Vec<(String, Manoeuvre)> {
+fn handling_programme(model: &VehicleModel) -> Vec<(String, Manoeuvre)> {
     let steer_for = |u: f64, ay: f64| {
         model
             .steady_state_for_lateral_acceleration(u, 1.0, ay)
@@ -323,7 +343,28 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     };
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
-    let runs = programme(&base)
+    if let Some(logged) = logged_runs(spec.programme, &base) {
+        if truth != Truth::Augmented {
+            return Err(ParamError::without_value(
+                "programme",
+                "the four-wheel truth holds its speed on a flat road: it drives the handling programme only",
+            ));
+        }
+        let runs = logged
+            .iter()
+            .map(|p| logged_run(&augmented, p, &mut rng, n))
+            .collect();
+        return Ok(finish(
+            spec,
+            truth,
+            vehicle,
+            tyre,
+            runs,
+            &four_wheel,
+            &mut rng,
+        ));
+    }
+    let runs = handling_programme(&base)
         .into_iter()
         .map(|(name, m)| {
             let times: Vec<f64> = (0..)
@@ -361,6 +402,28 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
             }
         })
         .collect();
+    Ok(finish(
+        spec,
+        truth,
+        vehicle,
+        tyre,
+        runs,
+        &four_wheel,
+        &mut rng,
+    ))
+}
+
+/// The campaign from its runs: the rig data (noise after the runs') and
+/// the roll the campaign file states.
+fn finish(
+    spec: &SynthSpec,
+    truth: Truth,
+    vehicle: Vehicle,
+    tyre: Tyre,
+    runs: Vec<MeasuredRun>,
+    four_wheel: &FourWheel,
+    rng: &mut ChaCha8Rng,
+) -> Synthetic {
     let mut rig = Vec::new();
     let rig_tyre = four_wheel.vehicle.tyre;
     for fz in [2500.0, 4000.0, 5500.0, 7000.0] {
@@ -371,10 +434,10 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
                 Truth::FourWheel => rig_tyre.lateral_force(alpha, fz, 0.0, 1.0, 1.0),
             };
             let sigma = 0.01 * fy.abs() + 20.0;
-            rig.push([fz, alpha, fy + sigma * gauss(&mut rng)]);
+            rig.push([fz, alpha, fy + sigma * gauss(rng)]);
         }
     }
-    Ok(Synthetic {
+    Synthetic {
         vehicle,
         tyre,
         rig,
@@ -385,7 +448,44 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
             Truth::Augmented => RollModel::default(),
             Truth::FourWheel => four_wheel_campaign_roll(),
         },
-    })
+    }
+}
+
+/// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.
+const AX_NOISE: f64 = 0.05;
+const BANK_NOISE: f64 = 0.002;
+
+/// One run of a logged programme on the augmented truth, with noise.
+fn logged_run(
+    truth: &Augmented,
+    p: &LoggedInputs,
+    rng: &mut ChaCha8Rng,
+    noise: Noise,
+) -> MeasuredRun {
+    // The whole run in one replay, standstill included: the vehicle model
+    // holds speeds below its minimum at that minimum, so a parked car on a
+    // banking stands on its tyres' slip (the accelerometer reads the
+    // bank's g·sin θ) as a real one does.
+    let m = p.manoeuvre();
+    let drive = Drive::new(&m, 1e-3).with_channels(&p.t, Some(&p.ax), Some(&p.bank));
+    let x0 = truth.initial_state(&drive, 0.0, 0.0);
+    let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
+    let (yaw_rate, ay) = (o.yaw_rate, o.ay);
+    let mut noisy =
+        |v: &[f64], s: f64| -> Vec<f64> { v.iter().map(|x| x + s * gauss(rng)).collect() };
+    MeasuredRun {
+        path: PathBuf::from(format!("{}.csv", p.name)),
+        speed: p.speed.clone(),
+        steer: p.steer.clone(),
+        yaw_rate: noisy(&yaw_rate, noise.yaw_rate),
+        ay: Some(noisy(&ay, noise.ay)),
+        ax: Some(noisy(&p.ax, AX_NOISE)),
+        bank: Some(noisy(&p.bank, BANK_NOISE)),
+        beta: None,
+        roll: None,
+        masked: Vec::new(),
+        t: p.t.clone(),
+    }
 }
 
 impl Synthetic {
@@ -407,9 +507,21 @@ impl Synthetic {
     }
 
     /// The campaign in memory, diagnosed against `effects`: its rig data
-    /// fitted with PAC89, as the folder `handling synth` writes says.
+    /// fitted with PAC89, as the folder `handling synth` writes says. The
+    /// logged programmes' runs are cleaned as `diagnose` cleans runs read
+    /// from files (the oval's standstill is left out); the handling
+    /// programme's runs are moving and clean throughout and go in as
+    /// generated.
     pub fn campaign(&self, effects: Vec<EffectKind>, settings: DiagnoseSettings) -> Campaign {
         let source = PathBuf::from(format!("synthetic campaign {}", self.name()));
+        let (runs, cleaning) = if self.spec.programme.logged() {
+            clean_runs(
+                self.runs.clone(),
+                &CleanSettings::diagnosis(settings.min_speed),
+            )
+        } else {
+            (self.runs.clone(), Default::default())
+        };
         Campaign {
             name: self.name(),
             inputs: Vec::new(),
@@ -421,12 +533,12 @@ impl Synthetic {
                 model: ModelName::Pac89,
             },
             source,
-            runs: self.runs.clone(),
+            runs,
             roll: self.roll,
             settings,
             effects,
             notes: Vec::new(),
-            cleaning: Default::default(),
+            cleaning,
         }
     }
 
@@ -475,10 +587,11 @@ impl Synthetic {
             }
         };
         format!(
-            "# Synthetic campaign (handling synth --truth {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n\
+            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n\
              [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
              [tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n{roll}[diagnose]\nseed = {}\n",
             self.truth.name(),
+            self.spec.programme.name(),
             self.spec.seed,
             if truth.is_empty() { "#   none".to_string() } else { truth.join("\n") },
             v.mass,

@@ -1,0 +1,196 @@
+//! The proving ground's racing programmes through the CLI, as a user runs
+//! them: `handling synth --programme oval|road-course` writes the logs
+//! (25 Hz, `ax` and `bank` columns, the oval's standstill on the banking),
+//! the user narrows the candidates in `vehicle.toml`, and `handling
+//! diagnose` reads the folder, cleans it and names the withheld effect.
+
+use super::*;
+use std::fs;
+
+/// A racing-programme campaign with `effects` withheld, diagnosed against
+/// `candidates` (a TOML list) with one effect at most.
+fn racing(dir: &Path, programme: &str, effects: &str, candidates: &str) -> serde_json::Value {
+    let c = synth_campaign(
+        dir,
+        &format!("{programme}-{effects}"),
+        &[
+            "--programme",
+            programme,
+            "--effects",
+            effects,
+            "--seed",
+            "2",
+        ],
+    );
+    let v = c.join("vehicle.toml");
+    let mut text = fs::read_to_string(&v).unwrap();
+    // `[diagnose]` is the file's last table: the user adds to it.
+    assert!(text.trim_end().ends_with("seed = 2"), "{text}");
+    text += &format!("effects = [{candidates}]\nmax_effects = 1\n");
+    fs::write(&v, text).unwrap();
+    diagnose_campaign(&c).1
+}
+
+fn reduction(d: &serde_json::Value, effect: &str) -> f64 {
+    d["ranking"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["effect"] == effect)
+        .unwrap()["reduction_percent"]
+        .as_f64()
+        .unwrap()
+}
+
+fn parameter(d: &serde_json::Value, name: &str) -> f64 {
+    d["verdict"]["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["name"] == name)
+        .unwrap_or_else(|| panic!("{name} in {}", d["verdict"]))["value"]
+        .as_f64()
+        .unwrap()
+}
+
+#[test]
+fn the_oval_logs_carry_the_bank_and_a_standstill_on_the_banking() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "oval", &["--programme", "oval"]);
+    let text = fs::read_to_string(c.join("runs/oval_stop_on_banking.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("t,speed,steer,yaw_rate,ay,ax,bank"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    // 25 Hz.
+    assert!((rows[1][0] - rows[0][0] - 0.04).abs() < 1e-9);
+    let parked: Vec<&Vec<f64>> = rows.iter().filter(|r| r[1] == 0.0).collect();
+    assert!(parked.len() >= 19 * 25, "{} parked samples", parked.len());
+    // Parked on a 20° banking with the left edge lower: the bank channel
+    // reads it, and the truth here feels no bank (none withheld), so the
+    // accelerometer reads noise about 0.
+    for r in &parked {
+        assert!((r[6] + 20f64.to_radians()).abs() < 0.01, "bank {}", r[6]);
+        assert!(r[4].abs() < 0.3, "ay {}", r[4]);
+    }
+}
+
+#[test]
+fn a_withheld_bank_on_the_synthetic_oval_is_named_from_the_bank_channel() {
+    // The done-when of the bank profile: the car felt the banking, the
+    // base model did not; the measured profile removes >= 80 % of the
+    // held-out gap above noise, the standstill is left out and counted.
+    let dir = tempfile::tempdir().unwrap();
+    let d = racing(
+        dir.path(),
+        "oval",
+        "bank_profile",
+        "\"bank_profile\", \"road_bank\", \"sensor_bias\", \"longitudinal_load_transfer\"",
+    );
+    assert_eq!(verdict_of(&d), ["bank_profile"], "{}", d["ranking"]);
+    assert!(reduction(&d, "bank_profile") >= 80.0, "{}", d["ranking"]);
+    let scale = parameter(&d, "bank_profile.scale");
+    assert!((scale - 1.0).abs() < 0.03, "scale {scale}");
+    // A constant bank cannot follow 0° on the straights and 20° in the
+    // turns.
+    assert!(reduction(&d, "road_bank") < 50.0, "{}", d["ranking"]);
+    let c = &d["cleaning"];
+    assert!(c["samples_slow"].as_u64().unwrap() >= 20 * 25, "{c}");
+    assert!(
+        c["slow"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|s| s["kind"] == "standstill"),
+        "{c}"
+    );
+    assert_eq!(c["glitches"], serde_json::json!([]), "{c}");
+}
+
+#[test]
+fn combined_slip_and_longitudinal_transfer_are_named_on_the_road_course() {
+    let dir = tempfile::tempdir().unwrap();
+    // Friction circles at every wheel, a rear drive and 65 % of the
+    // braking on the front axle.
+    let d = racing(
+        dir.path(),
+        "road-course",
+        "combined_slip",
+        "\"combined_slip\", \"longitudinal_load_transfer\", \"cornering_stiffness\", \"bank_profile\"",
+    );
+    assert_eq!(verdict_of(&d), ["combined_slip"], "{}", d["ranking"]);
+    assert!(reduction(&d, "combined_slip") >= 80.0, "{}", d["ranking"]);
+    let brake = parameter(&d, "combined_slip.brake_front_share");
+    assert!((brake - 0.65).abs() < 0.05, "brake balance {brake}");
+    let drive = parameter(&d, "combined_slip.drive_front_share");
+    assert!(drive < 0.1, "drive split {drive}");
+    // Load moved forward under braking and rearward under throttle.
+    let d = racing(
+        dir.path(),
+        "road-course",
+        "longitudinal_load_transfer",
+        "\"longitudinal_load_transfer\", \"combined_slip\", \"cornering_stiffness\", \"bank_profile\"",
+    );
+    assert_eq!(
+        verdict_of(&d),
+        ["longitudinal_load_transfer"],
+        "{}",
+        d["ranking"]
+    );
+    assert!(
+        reduction(&d, "longitudinal_load_transfer") >= 80.0,
+        "{}",
+        d["ranking"]
+    );
+    let share = parameter(&d, "longitudinal_load_transfer.share");
+    assert!((share - 1.0).abs() < 0.1, "share {share}");
+}
+
+#[test]
+fn the_four_wheel_truth_refuses_a_racing_programme_and_effects_are_checked() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("x");
+    let o = run(&[
+        "synth",
+        "--truth",
+        "four-wheel",
+        "--programme",
+        "oval",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("handling programme, not `oval`"),
+        "{}",
+        stderr(&o)
+    );
+    // The handling programme cannot show a bank profile.
+    let o = run(&[
+        "synth",
+        "--effects",
+        "bank_profile",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("not one the augmented truth's handling programme can show"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "synth",
+        "--programme",
+        "ovals",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        stderr(&o).contains("unknown programme `ovals`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.exists());
+}

@@ -218,6 +218,28 @@ impl PyTyre {
         self.tyre.cornering_stiffness(fz)
     }
 
+    /// Cornering stiffness, N/rad, at each load of a 1-D float64 array
+    /// (N), evaluated in one call with the GIL released.
+    fn cornering_stiffness_1d<'py>(
+        &self,
+        py: Python<'py>,
+        fz: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let fz = fz.as_slice()?;
+        let tyre = &self.tyre;
+        let k: Vec<f64> = py.detach(|| fz.iter().map(|&f| tyre.cornering_stiffness(f)).collect());
+        Ok(PyArray1::from_vec(py, k))
+    }
+
+    /// The tyre as the text of a tyre file: `(extension, text)`, `toml`
+    /// (the serde form, `model` tag included) for every model, which
+    /// `load` reads back to an equal tyre.
+    fn to_file_text(&self) -> PyResult<(&'static str, String)> {
+        let text = toml::to_string(&self.tyre)
+            .map_err(|e| HandlingError::new_err(format!("tyre to TOML: {e}")))?;
+        Ok(("toml", text))
+    }
+
     /// Forces at points given as parallel 1-D float64 arrays (SI, rad, Pa);
     /// `pressure` empty for the file's inflation pressure. Returns
     /// `(fx, fy, mz, mx, my)`, `mx`/`my` None unless the Magic Formula.
@@ -654,6 +676,14 @@ fn synth(
     json(&r)
 }
 
+/// The `[vehicle]` table of TOML `text`, read and validated as a scenario
+/// file's (`path` names the text in errors); JSON of the vehicle (SI).
+#[pyfunction]
+fn vehicle_from_toml(text: &str, path: PathBuf) -> PyResult<String> {
+    let v = handling::io::scenario::vehicle_from_text(&path, text).map_err(|e| py_err(e.into()))?;
+    json(&v)
+}
+
 /// Checks a scenario file (reads and validates it, simulates nothing).
 #[pyfunction]
 fn check_scenario(py: Python<'_>, scenario: PathBuf) -> PyResult<String> {
@@ -680,6 +710,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
     m.add_function(wrap_pyfunction!(synth, m)?)?;
     m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(vehicle_from_toml, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

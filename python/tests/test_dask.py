@@ -48,3 +48,26 @@ def test_tyre_map_on_dask_equals_single_process(root, client):
     a = np.radians(np.linspace(-10, 10, 21))
     fut = client.submit(lambda t: t.forces(4000.0, 0.0, a)["fy"], tyre)
     assert np.array_equal(fut.result(), tyre.forces(4000.0, 0.0, a)["fy"])
+
+
+def batch_of_campaigns(folder):
+    """Three synthetic campaigns (the proving ground: one with a sensor
+    bias, one with a tyre lag, one with neither), each diagnosed on two
+    candidate effects only, so a diagnosis takes about 2 s."""
+    paths = []
+    for name, effects, seed in [("bias", ["sensor_bias"], 1), ("lag", ["relaxation_length"], 2), ("none", [], 3)]:
+        c = folder / name
+        handling.synth(c, effects, seed=seed)
+        with open(c / "vehicle.toml", "a") as f:
+            # synth's vehicle.toml ends in its [diagnose] table.
+            f.write('effects = ["sensor_bias", "relaxation_length"]\n')
+        paths.append(c)
+    return paths
+
+
+def test_a_batch_of_campaigns_on_dask_equals_single_process(tmp_path, client):
+    paths = batch_of_campaigns(tmp_path)
+    on_dask = client.gather(client.map(handling.diagnose, paths))
+    local = [handling.diagnose(p) for p in paths]
+    assert on_dask == local
+    assert [d["verdict"]["effects"] for d in local] == [["sensor_bias"], ["relaxation_length"], []]

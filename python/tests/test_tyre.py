@@ -82,3 +82,24 @@ def test_param_error_carries_key_and_value(root):
     assert key in e.value.key
     assert e.value.value == -1.0
     assert e.value.reason
+
+
+@pytest.mark.parametrize(
+    "name", ["tyres/pac89_adams_example.toml", "tyres/unitire.toml", "tests/fixtures/tir/MagicFormula61_Parameters.tir"]
+)
+def test_cornering_stiffness_on_arrays_equals_the_scalar_calls(root, name):
+    t = handling.Tyre.load(root / name)
+    fz = np.linspace(500.0, 8000.0, 12).reshape(3, 4)
+    k = t.cornering_stiffness(fz)
+    assert isinstance(k, np.ndarray) and k.dtype == np.float64 and k.shape == (3, 4)
+    for i in range(3):
+        for j in range(4):
+            assert k[i, j] == t.cornering_stiffness(float(fz[i, j]))
+    # Strided and list input, numpy and Python scalars, empty arrays.
+    assert np.array_equal(t.cornering_stiffness(fz.T), k.T)
+    assert np.array_equal(t.cornering_stiffness(list(fz[0])), k[0])
+    s = t.cornering_stiffness(np.float64(4000.0))
+    assert isinstance(s, float) and s == t.cornering_stiffness(4000)
+    assert t.cornering_stiffness(np.empty((0, 2))).shape == (0, 2)
+    # Stiffness grows with load over this range for these tyres.
+    assert np.all(np.diff(k.ravel()) > 0)

@@ -10,7 +10,9 @@
 # Arguments: the command (equilibria or study), its input file, the output
 # folder shared by the array's tasks. N is the array's size, K the task's
 # index (arrays numbered from 1). Each shard writes out/…/shard-K-of-N.json;
-# the merge writes the outputs of the unsharded run, byte for byte.
+# the merge writes the outputs of the unsharded run, byte for byte. Shard files
+# name their inputs by absolute path, so the merge may run in any directory
+# of a machine that sees the same files at the same paths.
 #SBATCH --job-name=handling-shard
 #SBATCH --cpus-per-task=2
 #SBATCH --time=01:00:00

@@ -4,7 +4,7 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
-use super::tables::{check_road, resolve_model};
+use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
@@ -257,6 +257,24 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
     let src = TomlSource::read(path)?;
     let f: ScenarioFile = src.parse()?;
     resolve_scenario(&f, &src)
+}
+
+/// Reads and validates the `[vehicle]` table of TOML text (a scenario's,
+/// a campaign's `vehicle.toml`, or a document of that table alone), checked
+/// as a scenario file's is; other tables are ignored. `path` names the text
+/// in errors (line, column, key and value as for a file).
+pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError> {
+    #[derive(Deserialize)]
+    struct VehicleTable {
+        vehicle: Vehicle,
+    }
+    let src = TomlSource {
+        path: path.to_path_buf(),
+        text: text.to_string(),
+    };
+    let t: VehicleTable = src.parse()?;
+    check_vehicle(&src, &t.vehicle)?;
+    Ok(t.vehicle)
 }
 
 /// Validates and resolves a parsed scenario whose text is `src` (other file

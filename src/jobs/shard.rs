@@ -6,7 +6,8 @@
 //! in the unsharded run (its seeds do not depend on the shard), so the
 //! result does not depend on N.
 //!
-//! A shard file keeps a copy of the text of every input the job read; the
+//! A shard file keeps a copy of the text of every input the job read, under
+//! its absolute path (so the merge runs from any working directory); the
 //! merge refuses shards of different runs and inputs that changed since.
 
 use crate::error::{Error, InputError};
@@ -90,7 +91,7 @@ pub enum ShardJob {
 /// An input of the run as the shard read it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct InputCopy {
-    /// Its path as given.
+    /// Its path as the job read it (absolute in a written shard file).
     pub path: PathBuf,
     /// Its text.
     pub text: String,
@@ -103,7 +104,8 @@ pub struct ShardFile<T> {
     pub job: ShardJob,
     /// Which shard.
     pub shard: Shard,
-    /// The job's main input (a sweep or study file).
+    /// The job's main input (a sweep or study file, a batch's folder;
+    /// absolute in a written shard file).
     pub input: PathBuf,
     /// Every input read, with its text.
     pub inputs: Vec<InputCopy>,
@@ -165,9 +167,47 @@ pub fn input_copies(inputs: &[PathBuf]) -> Result<Vec<InputCopy>, Error> {
         .collect()
 }
 
-/// Writes a shard file (atomically).
+/// `p` made absolute against the working directory (not resolving links);
+/// as given if the working directory cannot be read.
+fn absolute(p: &Path) -> PathBuf {
+    std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf())
+}
+
+/// Writes a shard file (atomically), its input paths made absolute: the
+/// merge reads the inputs again, and may run in another directory than
+/// the shards (a job array's tasks and its merge job need not share one).
 pub fn write_shard<T: Serialize>(path: &Path, file: &ShardFile<T>) -> Result<(), Error> {
-    write_json(path, file)
+    /// [`ShardFile`]'s fields, in its order, the results borrowed.
+    #[derive(Serialize)]
+    struct Written<'a, T> {
+        job: ShardJob,
+        shard: Shard,
+        input: PathBuf,
+        inputs: Vec<InputCopy>,
+        units: usize,
+        owned: &'a [usize],
+        results: &'a [T],
+    }
+    let inputs = file
+        .inputs
+        .iter()
+        .map(|c| InputCopy {
+            path: absolute(&c.path),
+            text: c.text.clone(),
+        })
+        .collect();
+    write_json(
+        path,
+        &Written {
+            job: file.job,
+            shard: file.shard,
+            input: absolute(&file.input),
+            inputs,
+            units: file.units,
+            owned: &file.owned,
+            results: &file.results,
+        },
+    )
 }
 
 /// Which job a shard file belongs to, read from the file.

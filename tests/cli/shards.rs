@@ -149,3 +149,215 @@ fn merges_of_missing_repeated_mixed_or_stale_shards_are_refused() {
         assert!(stderr(&o).contains("expected K/N"), "{}", stderr(&o));
     }
 }
+
+/// Runs `args` in the working directory `cwd`, expects success.
+fn ok_in(cwd: &Path, args: &[&str]) {
+    let o = bin().args(args).current_dir(cwd).output().expect("runs");
+    assert!(
+        o.status.success(),
+        "{args:?} in {}: {}",
+        cwd.display(),
+        stderr(&o)
+    );
+}
+
+/// `merge` of shards 1..=n of `dir` into `out`, run from the repository root.
+fn merge_shards(dir: &Path, n: usize, out: &Path) {
+    let files = shard_files(dir, n);
+    let mut args = vec!["merge"];
+    args.extend(files.iter().map(String::as_str));
+    args.extend(["--out", out.to_str().unwrap()]);
+    ok(&args);
+}
+
+/// A campaign folder `dir/name` whose runs are step steers simulated on
+/// Gim tyres (rows every 10 ms) at `speeds` (m/s) and whose model has a
+/// linear tyre, asked about the sensor bias only; with `gap` the second run
+/// loses rows 300 to 349 (a 0.5 s time gap the cleaning splits at).
+fn simulated_campaign(dir: &Path, name: &str, speeds: &[f64], gap: bool) {
+    let c = dir.join(name);
+    fs::create_dir_all(c.join("runs")).unwrap();
+    let sim = tempfile::tempdir().unwrap();
+    for (i, speed) in speeds.iter().enumerate() {
+        let sc = format!(
+            "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"step-steer\"\n\
+             speed = {speed}\nsteer = 0.02\n\n[simulation]\nstep = 0.01\n"
+        );
+        fs::write(sim.path().join("scenario.toml"), sc).unwrap();
+        fs::write(sim.path().join("tyre.toml"), GIM).unwrap();
+        let out = sim.path().join(format!("run{i}"));
+        ok_in(
+            sim.path(),
+            &["simulate", "scenario.toml", "--out", out.to_str().unwrap()],
+        );
+        let history = fs::read_to_string(out.join("history.csv")).unwrap();
+        let rows: Vec<&str> = history
+            .lines()
+            .enumerate()
+            .filter(|&(n, _)| !(gap && i == 1 && (301..351).contains(&n)))
+            .map(|(_, l)| l)
+            .collect();
+        fs::write(c.join(format!("runs/r{i}.csv")), rows.join("\n") + "\n").unwrap();
+    }
+    fs::write(
+        c.join("vehicle.toml"),
+        format!(
+            "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+        ),
+    )
+    .unwrap();
+    fs::write(
+        c.join("tyre.toml"),
+        "model = \"linear\"\ncornering_stiffness = 50000.0\n",
+    )
+    .unwrap();
+}
+
+/// The files under `dir`, relative to it, sorted.
+fn files_under(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                todo.push(p);
+            } else {
+                out.push(p.strip_prefix(dir).unwrap().to_path_buf());
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() {
+    // Three quick campaigns (one with a time gap in a run) and a folder
+    // that is not a campaign; every run and shard works in `work` on the
+    // relative folder `batch`, every merge from the repository root.
+    let work = tempfile::tempdir().unwrap();
+    let batch = work.path().join("batch");
+    simulated_campaign(&batch, "a_slow", &[15.0, 20.0], false);
+    simulated_campaign(&batch, "b_gap", &[20.0, 25.0], true);
+    simulated_campaign(&batch, "c_fast", &[25.0, 30.0], false);
+    fs::create_dir(batch.join("d_not_a_campaign")).unwrap();
+    ok_in(
+        work.path(),
+        &["diagnose", "batch", "--batch", "--out", "full"],
+    );
+    let full = work.path().join("full");
+    let fleet = read_json(&full.join("fleet.json"));
+    let rows = fleet["campaigns"].as_array().unwrap();
+    let names: Vec<&str> = rows
+        .iter()
+        .map(|r| r["campaign"].as_str().unwrap())
+        .collect();
+    // Every entry of the folder is a row, the broken one marked failed with
+    // its reason; each campaign has its own diagnosis, the gap one fewer
+    // runs replayed whole.
+    assert_eq!(names, ["a_slow", "b_gap", "c_fast", "d_not_a_campaign"]);
+    assert_eq!(rows[3]["failed"], true);
+    let why = rows[3]["statement"].as_str().unwrap();
+    assert!(why.contains("vehicle.toml"), "{why}");
+    for (r, n) in rows.iter().zip(&names[..3]) {
+        assert_eq!(r["failed"], false, "{r}");
+        assert!(r["heldout_error_before"].as_f64().unwrap() > 0.0, "{r}");
+        assert!(full.join(n).join("diagnosis.json").is_file(), "{n}");
+    }
+    assert_eq!(rows[0]["runs"], 2);
+    assert_eq!(rows[1]["runs"], 3, "the gap splits a run in two");
+    let csv = fs::read_to_string(full.join("fleet.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 4);
+    for n in [1, 3, 7] {
+        // Shards in any order; with N = 7, shards 5 to 7 own no campaign.
+        let shards = format!("shards{n}");
+        for k in (1..=n).rev() {
+            ok_in(
+                work.path(),
+                &[
+                    "diagnose",
+                    "batch",
+                    "--batch",
+                    "--shard",
+                    &format!("{k}/{n}"),
+                    "--out",
+                    &shards,
+                ],
+            );
+        }
+        let shards = work.path().join(shards);
+        // Shard 1/1 is the whole batch: it writes the fleet table itself
+        // (no shard file, nothing to merge); N > 1 merge from the root.
+        let merged = if n == 1 {
+            assert!(!shards.join("shard-1-of-1.json").exists());
+            shards.clone()
+        } else {
+            let merged = work.path().join(format!("merged{n}"));
+            merge_shards(&shards, n, &merged);
+            assert_eq!(
+                files_under(&merged),
+                ["fleet.csv", "fleet.json"].map(PathBuf::from)
+            );
+            merged
+        };
+        for f in ["fleet.csv", "fleet.json"] {
+            assert!(
+                fs::read(full.join(f)).unwrap() == fs::read(merged.join(f)).unwrap(),
+                "N = {n}: {f} differs"
+            );
+        }
+        // The shards wrote each campaign's folder as the whole batch did.
+        let written: Vec<PathBuf> = files_under(&shards)
+            .into_iter()
+            .filter(|p| !p.to_string_lossy().starts_with("shard-"))
+            .filter(|p| n > 1 || (p != Path::new("fleet.csv") && p != Path::new("fleet.json")))
+            .collect();
+        let expected: Vec<PathBuf> = files_under(&full)
+            .into_iter()
+            .filter(|p| p != Path::new("fleet.csv") && p != Path::new("fleet.json"))
+            .collect();
+        assert_eq!(written, expected, "N = {n}");
+        for f in &expected {
+            assert!(
+                fs::read(full.join(f)).unwrap() == fs::read(shards.join(f)).unwrap(),
+                "N = {n}: {} differs",
+                f.display()
+            );
+        }
+    }
+}
+
+#[test]
+fn shards_written_in_one_directory_merge_from_another() {
+    // The sweep is named relative to the directory the shards run in; the
+    // merge runs from elsewhere (the repository root) and must still find
+    // it and its unchanged text.
+    let text = fs::read_to_string(root().join("scenarios/equilibria_friction.toml"))
+        .unwrap()
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let dir = scratch(&[("sweep.toml", &text)]);
+    ok_in(dir.path(), &["equilibria", "sweep.toml", "--out", "full"]);
+    for k in 1..=3 {
+        ok_in(
+            dir.path(),
+            &[
+                "equilibria",
+                "sweep.toml",
+                "--shard",
+                &format!("{k}/3"),
+                "--out",
+                "shards",
+            ],
+        );
+    }
+    let shard = read_json(&dir.path().join("shards/shard-2-of-3.json"));
+    let input = PathBuf::from(shard["input"].as_str().unwrap());
+    assert!(
+        input.is_absolute() && input.ends_with("sweep.toml"),
+        "{input:?}"
+    );
+    let merged = dir.path().join("merged");
+    merge_shards(&dir.path().join("shards"), 3, &merged);
+    same_outputs(&dir.path().join("full"), &merged);
+}

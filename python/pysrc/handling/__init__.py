@@ -9,21 +9,30 @@ the same report as the command-line tool's JSON, as a dict.
 Units: SI and radians everywhere (N, N·m, m, s, m/s, rad, rad/s, Pa);
 ISO 8855 axes (x forward, y left, z up; positive steer turns left).
 
+Scenarios come from files or from keywords (:class:`Scenario`,
+:class:`Vehicle`, and the keywords of :func:`simulate` and
+:func:`metrics`), read by the same reader with the same checks.
+
 Errors are :class:`HandlingError`; an unreadable or wrong input file is
-:class:`InputError` (``path``, ``line``, ``column``), a non-physical
+:class:`InputError` (``path``, ``line``, ``column``), a wrong keyword
+:class:`InputError` too (``key``, ``value``), a non-physical
 parameter :class:`ParamError` (``key``, ``value``, ``reason``).
 """
 
 from __future__ import annotations
 
+import copy
 import json
 import os
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Union
+import re
+import tempfile
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _handling
 from ._handling import HandlingError, InputError, ParamError
+from ._toml import Document
 
 __version__ = _handling.__version__
 
@@ -32,6 +41,8 @@ __all__ = [
     "InputError",
     "ParamError",
     "Tyre",
+    "Vehicle",
+    "Scenario",
     "Study",
     "simulate",
     "metrics",
@@ -93,14 +104,14 @@ class Tyre:
 
     def cornering_stiffness(self, fz: Any) -> Any:
         """Cornering stiffness ∂Fy/∂α at α = 0 and no camber, N/rad, at the
-        vertical load ``fz`` (N); a float for a float, an array for an
-        array."""
+        vertical load ``fz`` (N): a float for a scalar, an array of the same
+        shape for an array (evaluated in Rust in one call, the GIL
+        released)."""
         if np.ndim(fz) == 0:
             return self._t.cornering_stiffness(float(fz))
         a = np.asarray(fz, dtype=np.float64)
-        return np.array(
-            [self._t.cornering_stiffness(float(x)) for x in a.ravel()], dtype=np.float64
-        ).reshape(a.shape)
+        k = self._t.cornering_stiffness_1d(np.ascontiguousarray(a.ravel()))
+        return k.reshape(a.shape)
 
     def forces(
         self,
@@ -152,6 +163,358 @@ class Tyre:
 
     def __reduce__(self):  # type: ignore[override]
         return (Tyre.from_json, (self.to_json(),))
+
+
+_VEHICLE_REQUIRED = ("mass", "yaw_inertia", "a", "b", "track_front", "track_rear", "cg_height")
+_VEHICLE_OPTIONAL = ("wheelbase", "load_transfer_front_share", "steering_ratio")
+
+
+def _keyword_error(e: InputError, doc: Document, what: str, strip: str = "") -> InputError:
+    """The reader's error at a line of a keyword document, as the keyword
+    (``key``, dotted) and the value given for it (``value``)."""
+    key, value = doc.at(getattr(e, "line", None))
+    reason = getattr(e, "reason", None) or str(e)
+    if key is not None and strip and key.startswith(strip):
+        key = key[len(strip):]
+    if key is None:
+        message = f"{what} keywords: {reason}"
+    else:
+        # The reader's "`vehicle.mass` = -1: ..." says again what the
+        # keyword and its value say.
+        m = re.match(r"`([^`]*)`(?: = [^:]*)?: ", reason)
+        said = reason[m.end():] if m and m.group(1).endswith(key) else reason
+        message = f"{what} keyword `{key}` = {value!r}: {said}"
+    err = InputError(message)
+    err.key = key
+    err.value = value
+    err.path = None
+    err.line = None
+    err.column = None
+    err.reason = reason
+    return err
+
+
+class Vehicle:
+    """Vehicle parameters: a scenario's ``[vehicle]`` table, read and
+    checked by the library's scenario reader (a wrong value raises
+    :class:`InputError` with ``key`` and ``value``).
+
+    - ``mass``: m, kg
+    - ``yaw_inertia``: yaw moment of inertia Iz, kg·m²
+    - ``a``, ``b``: centre of gravity to the front / rear axle, m
+    - ``track_front``, ``track_rear``: track widths, m
+    - ``cg_height``: centre-of-gravity height, m
+    - ``wheelbase``: m, optional; when given it must equal a + b to 1 mm
+    - ``load_transfer_front_share``: front share χ of the lateral load
+      transfer, in [0, 1] (default b / (a + b))
+    - ``steering_ratio``: steering-wheel angle / road-wheel angle,
+      optional (checked, unused by the 2-DOF model)
+
+    Compares by value and pickles (as its parameters).
+    """
+
+    __slots__ = ("_p",)
+
+    def __init__(
+        self,
+        mass: float,
+        yaw_inertia: float,
+        a: float,
+        b: float,
+        track_front: float,
+        track_rear: float,
+        cg_height: float,
+        *,
+        wheelbase: Optional[float] = None,
+        load_transfer_front_share: Optional[float] = None,
+        steering_ratio: Optional[float] = None,
+    ) -> None:
+        given = dict(
+            mass=mass,
+            yaw_inertia=yaw_inertia,
+            a=a,
+            b=b,
+            track_front=track_front,
+            track_rear=track_rear,
+            cg_height=cg_height,
+            wheelbase=wheelbase,
+            load_transfer_front_share=load_transfer_front_share,
+            steering_ratio=steering_ratio,
+        )
+        doc = Document()
+        doc.table(["vehicle"], {k: v for k, v in given.items() if v is not None})
+        try:
+            text = _handling.vehicle_from_toml(doc.text(), "<Vehicle keywords>")
+        except InputError as e:
+            raise _keyword_error(e, doc, "Vehicle", strip="vehicle.") from None
+        self._p: Dict[str, float] = json.loads(text)
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, float]) -> "Vehicle":
+        """The vehicle of a ``[vehicle]`` table as a dict (:meth:`to_dict`)."""
+        return cls(**d)
+
+    @classmethod
+    def load(cls, path: PathLike) -> "Vehicle":
+        """The ``[vehicle]`` table of a TOML file (a scenario, sweep, study
+        or campaign ``vehicle.toml``); errors name the file and line."""
+        p = _path(path)
+        try:
+            with open(p, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            err = InputError(f"{p}: {e.strerror}")
+            err.path, err.line, err.column, err.reason = p, None, None, str(e.strerror)
+            raise err from None
+        v = cls.__new__(cls)
+        v._p = json.loads(_handling.vehicle_from_toml(text, p))
+        return v
+
+    def to_dict(self) -> Dict[str, float]:
+        """The ``[vehicle]`` table (SI), optional keys only when given."""
+        return dict(self._p)
+
+    mass = property(lambda self: self._p["mass"], doc="Mass, kg.")
+    yaw_inertia = property(lambda self: self._p["yaw_inertia"], doc="Yaw moment of inertia, kg·m².")
+    a = property(lambda self: self._p["a"], doc="Centre of gravity to the front axle, m.")
+    b = property(lambda self: self._p["b"], doc="Centre of gravity to the rear axle, m.")
+    track_front = property(lambda self: self._p["track_front"], doc="Front track width, m.")
+    track_rear = property(lambda self: self._p["track_rear"], doc="Rear track width, m.")
+    cg_height = property(lambda self: self._p["cg_height"], doc="Centre-of-gravity height, m.")
+    wheelbase = property(
+        lambda self: self._p.get("wheelbase", self._p["a"] + self._p["b"]),
+        doc="Wheelbase, m (a + b unless given).",
+    )
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Vehicle) and self._p == other._p
+
+    def __hash__(self) -> int:
+        return hash(tuple(sorted(self._p.items())))
+
+    def __repr__(self) -> str:
+        return "Vehicle(" + ", ".join(f"{k}={v!r}" for k, v in self._p.items()) + ")"
+
+    def __reduce__(self):  # type: ignore[override]
+        return (Vehicle.from_dict, (self.to_dict(),))
+
+
+# The tables of a scenario file, in the order they are written.
+_TABLES = ("vehicle", "tyres", "road", "model", "manoeuvre", "simulation", "metrics")
+_TYRE_FILES = {"front": "front_tyre.toml", "rear": "rear_tyre.toml"}
+
+
+def _tyre(t: Any) -> Any:
+    """A Tyre as is, a tyre file read (relative to the working directory);
+    anything else is left for the reader to refuse."""
+    if isinstance(t, Tyre):
+        return t
+    if isinstance(t, (str, os.PathLike)):
+        return Tyre.load(t)
+    return t
+
+
+def _tyres(t: Any) -> Any:
+    if isinstance(t, (Tyre, str, os.PathLike)):
+        return {"front": _tyre(t)}
+    if isinstance(t, (tuple, list)) and len(t) == 2:
+        return {"front": _tyre(t[0]), "rear": _tyre(t[1])}
+    if isinstance(t, Mapping):
+        return {k: _tyre(v) if k in _TYRE_FILES else v for k, v in t.items()}
+    return t
+
+
+def _manoeuvre(m: Any) -> Any:
+    if not isinstance(m, Mapping):
+        return m
+    m = dict(m)
+    if isinstance(m.get("kind"), str):
+        m["kind"] = m["kind"].replace("_", "-")
+    if m.get("kind") == "replay" and isinstance(m.get("run"), (str, os.PathLike)):
+        m["run"] = os.path.abspath(os.fspath(m["run"]))
+    return m
+
+
+class Scenario:
+    """A simulation scenario from keywords: the tables of a scenario file
+    (README, "Scenario files") written as a TOML document and read by the
+    library's scenario reader, so it is checked exactly as a file is; a
+    wrong keyword raises :class:`InputError` with ``key`` (dotted, e.g.
+    ``vehicle.mass``) and ``value`` (the value given).
+
+    - ``vehicle``: a :class:`Vehicle` or a dict of its keys (SI)
+    - ``tyres``: one :class:`Tyre` or tyre file for both axles, a
+      ``(front, rear)`` pair, or ``{"front": ..., "rear": ...}``; files
+      are read now (relative to the working directory), so the scenario
+      holds its tyres and travels whole to other processes
+    - ``manoeuvre``: a dict with ``kind`` ``step-steer`` (``speed`` m/s,
+      ``steer`` rad or ``lateral_acceleration`` m/s², ``start``,
+      ``rise_time``, ``end`` s), ``ramp-steer``, ``sine``, ``sweep`` or
+      ``replay`` (``run``: a measured run, relative to the working
+      directory); ``step_steer`` spelt with underscores is accepted
+    - ``road``: ``{"friction": scale on the tyres' friction}``
+    - ``model``: ``{"kinematics": "exact" | "small-angle",
+      "load_transfer": bool, "effects": {...}}``
+    - ``simulation`` (or its alias ``integrator``): ``{"method": "dopri5"
+      | "rk4", "step": s, "rtol": ..., "atol": rad, "max_step": s}``
+    - ``metrics``: the step-steer metric settings (``pre_window``,
+      ``steady_window``, ``variance_window`` s, ``e1``, ``e2``,
+      ``filter_hz`` Hz)
+    - ``name`` (default ``scenario``), ``description``
+
+    Compares by value and pickles (its keywords, tyres included).
+    """
+
+    __slots__ = ("_kw",)
+
+    def __init__(
+        self,
+        vehicle: Union[Vehicle, Mapping[str, float], None] = None,
+        tyres: Any = None,
+        manoeuvre: Optional[Mapping[str, Any]] = None,
+        *,
+        road: Optional[Mapping[str, Any]] = None,
+        model: Optional[Mapping[str, Any]] = None,
+        simulation: Optional[Mapping[str, Any]] = None,
+        integrator: Optional[Mapping[str, Any]] = None,
+        metrics: Optional[Mapping[str, Any]] = None,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> None:
+        if simulation is not None and integrator is not None:
+            raise TypeError("Scenario: give `simulation` or its alias `integrator`, not both")
+        kw: Dict[str, Any] = {
+            "name": name,
+            "description": description,
+            "vehicle": vehicle.to_dict() if isinstance(vehicle, Vehicle) else vehicle,
+            "tyres": None if tyres is None else _tyres(tyres),
+            "road": road,
+            "model": model,
+            "manoeuvre": _manoeuvre(manoeuvre),
+            "simulation": integrator if simulation is None else simulation,
+            "metrics": metrics,
+        }
+        self._kw = {k: copy.deepcopy(v) for k, v in kw.items() if v is not None}
+        with tempfile.TemporaryDirectory(prefix="handling-") as d:
+            self._run(d, _handling.check_scenario)
+
+    def _document(self) -> Document:
+        doc = Document()
+        for k in ("name", "description"):
+            if k in self._kw:
+                doc.entry(k, k, self._kw[k])
+        for t in _TABLES:
+            if t not in self._kw:
+                continue
+            v = self._kw[t]
+            if t == "tyres" and isinstance(v, Mapping):
+                v = {k: _TYRE_FILES[k] if isinstance(x, Tyre) else x for k, x in v.items()}
+            if isinstance(v, Mapping):
+                doc.table([t], v)
+            else:
+                doc.entry(t, t, v)
+        # The reader's errors at a tyre line name the Tyre given.
+        tyres = self._kw.get("tyres")
+        if isinstance(tyres, Mapping):
+            doc.keys = [
+                (k, tyres[k.split(".", 1)[1]])
+                if k and k.startswith("tyres.") and isinstance(tyres.get(k.split(".", 1)[1]), Tyre)
+                else (k, v)
+                for k, v in doc.keys
+            ]
+        return doc
+
+    def to_toml(self) -> str:
+        """The scenario file's text; a :class:`Tyre` appears as the tyre
+        file :meth:`write` writes beside it."""
+        return self._document().text()
+
+    def write(self, folder: PathLike) -> str:
+        """Writes ``scenario.toml`` and its tyre files into ``folder`` (an
+        existing folder); returns the scenario file's path, which
+        ``handling simulate`` runs to the same result."""
+        path, _ = self._write(_path(folder))
+        return path
+
+    def _write(self, folder: str) -> Tuple[str, Document]:
+        tyres = self._kw.get("tyres")
+        if isinstance(tyres, Mapping):
+            for k, t in tyres.items():
+                if isinstance(t, Tyre):
+                    _, text = t._t.to_file_text()
+                    with open(os.path.join(folder, _TYRE_FILES[k]), "w", encoding="utf-8") as f:
+                        f.write(text)
+        doc = self._document()
+        path = os.path.join(folder, "scenario.toml")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(doc.text())
+        return path, doc
+
+    def _run(self, folder: str, job: Any, *args: Any) -> Any:
+        """``job(scenario file, *args)`` on the scenario written in
+        ``folder``; the reader's errors in it as keyword errors."""
+        path, doc = self._write(folder)
+        try:
+            return job(path, *args)
+        except InputError as e:
+            if getattr(e, "path", None) != path:
+                raise
+            raise _keyword_error(e, doc, "Scenario") from None
+
+    @property
+    def name(self) -> str:
+        """The name used in reports and as the default output folder."""
+        return self._kw.get("name", "scenario")
+
+    @property
+    def tyres(self) -> Tuple["Tyre", "Tyre"]:
+        """The (front, rear) tyres."""
+        t = self._kw["tyres"]
+        return (t["front"], t.get("rear", t["front"]))
+
+    @property
+    def vehicle(self) -> Vehicle:
+        """The vehicle."""
+        return Vehicle.from_dict(self._kw["vehicle"])
+
+    def keywords(self) -> Dict[str, Any]:
+        """The keywords (a copy; tyres as a ``{"front", "rear"}`` dict of
+        :class:`Tyre`), which ``Scenario(**keywords)`` takes back."""
+        return copy.deepcopy(self._kw)
+
+    def replace(self, **changes: Any) -> "Scenario":
+        """A copy with the given keywords replaced (checked again)."""
+        kw = self.keywords()
+        kw.update(changes)
+        return Scenario(**kw)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Scenario) and self._kw == other._kw
+
+    def __hash__(self) -> int:
+        return hash(self.to_toml())
+
+    def __repr__(self) -> str:
+        return f"Scenario(name={self.name!r})"
+
+    def __reduce__(self):  # type: ignore[override]
+        return (_scenario_from_keywords, (self._kw,))
+
+
+def _scenario_from_keywords(kw: Dict[str, Any]) -> Scenario:
+    return Scenario(**kw)
+
+
+def _scenario(scenario: Any, keywords: Dict[str, Any], what: str) -> Union[Scenario, str]:
+    """A Scenario (given, or made from the keywords) or a scenario file."""
+    given = {k: v for k, v in keywords.items() if v is not None}
+    if isinstance(scenario, Scenario) or scenario is None:
+        if given and scenario is not None:
+            raise TypeError(f"{what}: give a Scenario or scenario keywords, not both ({', '.join(given)})")
+        return scenario if scenario is not None else Scenario(**given)
+    if given:
+        raise TypeError(f"{what}: give a scenario file or scenario keywords, not both ({', '.join(given)})")
+    return _path(scenario)
 
 
 class Study:
@@ -227,9 +590,26 @@ def _history(columns: Dict[str, np.ndarray], pandas: Optional[bool]) -> Any:
 
 
 def simulate(
-    scenario: PathLike, out: Optional[PathLike] = None, pandas: Optional[bool] = None
+    scenario: Union[PathLike, Scenario, None] = None,
+    out: Optional[PathLike] = None,
+    pandas: Optional[bool] = None,
+    *,
+    vehicle: Union[Vehicle, Mapping[str, float], None] = None,
+    tyres: Any = None,
+    manoeuvre: Optional[Mapping[str, Any]] = None,
+    road: Optional[Mapping[str, Any]] = None,
+    model: Optional[Mapping[str, Any]] = None,
+    simulation: Optional[Mapping[str, Any]] = None,
+    integrator: Optional[Mapping[str, Any]] = None,
+    metrics: Optional[Mapping[str, Any]] = None,
+    name: Optional[str] = None,
+    description: Optional[str] = None,
 ) -> Dict[str, Any]:
-    """Simulates a scenario file (TOML), as ``handling simulate``.
+    """Simulates a scenario, as ``handling simulate``: a scenario file
+    (TOML), a :class:`Scenario`, or the scenario's keywords (``vehicle``,
+    ``tyres``, ``manoeuvre``, ``road``, ``model``, ``simulation`` or
+    ``integrator``, ``metrics``, ``name``, ``description``: see
+    :class:`Scenario`), which give the same result as the equivalent file.
 
     Returns the report (``scenario``, ``integration``, ``tyres``,
     ``friction``, ``metrics`` — the step-steer metrics for step steers,
@@ -243,26 +623,102 @@ def simulate(
     numpy arrays. With ``out`` the CLI's outputs (history.csv,
     metrics.json, response.png) are written there.
     """
-    text, columns = _handling.simulate(_path(scenario), _opt_path(out))
+    sc = _scenario(
+        scenario,
+        dict(
+            vehicle=vehicle,
+            tyres=tyres,
+            manoeuvre=manoeuvre,
+            road=road,
+            model=model,
+            simulation=simulation,
+            integrator=integrator,
+            metrics=metrics,
+            name=name,
+            description=description,
+        ),
+        "simulate",
+    )
+    if isinstance(sc, Scenario):
+        with tempfile.TemporaryDirectory(prefix="handling-") as d:
+            text, columns = sc._run(d, _handling.simulate, _opt_path(out))
+    else:
+        text, columns = _handling.simulate(sc, _opt_path(out))
     report = json.loads(text)
     report["history"] = _history(columns, pandas)
     return report
 
 
 def metrics(
-    run: PathLike,
-    pre_window: float = 0.5,
-    steady_window: float = 1.0,
-    min_speed: float = 5.0,
-    filter_hz: float = 10.0,
-    variance_window: float = 4.0,
+    run: Union[PathLike, Scenario, None] = None,
+    pre_window: Optional[float] = None,
+    steady_window: Optional[float] = None,
+    min_speed: Optional[float] = None,
+    filter_hz: Optional[float] = None,
+    variance_window: Optional[float] = None,
+    *,
+    vehicle: Union[Vehicle, Mapping[str, float], None] = None,
+    tyres: Any = None,
+    manoeuvre: Optional[Mapping[str, Any]] = None,
+    road: Optional[Mapping[str, Any]] = None,
+    model: Optional[Mapping[str, Any]] = None,
+    simulation: Optional[Mapping[str, Any]] = None,
+    integrator: Optional[Mapping[str, Any]] = None,
+    name: Optional[str] = None,
 ) -> Dict[str, Any]:
-    """Step-steer metrics of a measured run (CSV, FORMATS.md), as
-    ``handling metrics --json``: windows in s, ``min_speed`` in m/s,
-    ``filter_hz`` the zero-phase low-pass cut-off in Hz (0: unfiltered)."""
+    """Step-steer metrics.
+
+    Of a measured run (CSV, FORMATS.md), as ``handling metrics --json``:
+    windows in s (defaults 0.5, 1.0 and 4.0), ``min_speed`` in m/s
+    (default 5), ``filter_hz`` the zero-phase low-pass cut-off in Hz
+    (default 10; 0: unfiltered).
+
+    Of a simulated step steer, given a :class:`Scenario` or its keywords
+    (``vehicle``, ``tyres``, ``manoeuvre``, ...: see :class:`Scenario`):
+    the report's ``metrics`` of :func:`simulate`; the windows and
+    ``filter_hz`` given here go into the scenario's metric settings
+    (``filter_hz`` 0: unfiltered, the default for simulations).
+    """
+    kw = dict(
+        vehicle=vehicle,
+        tyres=tyres,
+        manoeuvre=manoeuvre,
+        road=road,
+        model=model,
+        simulation=simulation,
+        integrator=integrator,
+        name=name,
+    )
+    if isinstance(run, Scenario) or (run is None and any(v is not None for v in kw.values())):
+        if min_speed is not None:
+            raise TypeError("metrics: `min_speed` applies to a measured run, not to a scenario")
+        sc = _scenario(run, kw, "metrics")
+        assert isinstance(sc, Scenario)
+        windows = dict(pre_window=pre_window, steady_window=steady_window, variance_window=variance_window)
+        settings = dict(sc._kw.get("metrics", {}))
+        settings.update({k: v for k, v in windows.items() if v is not None})
+        if filter_hz is not None:
+            settings.pop("filter_hz", None)
+            if filter_hz != 0:
+                settings["filter_hz"] = filter_hz
+        if settings != sc._kw.get("metrics", {}):
+            sc = sc.replace(metrics=settings)
+        m = simulate(sc, pandas=False)["metrics"]
+        if m is None:
+            raise HandlingError(
+                f"metrics: scenario `{sc.name}`'s manoeuvre is {sc._kw['manoeuvre'].get('kind')!r}, not a step steer"
+            )
+        return m
+    if run is None:
+        raise TypeError("metrics: give a measured run (CSV), a Scenario or the scenario keywords")
     return json.loads(
         _handling.metrics(
-            _path(run), pre_window, steady_window, min_speed, filter_hz, variance_window
+            _path(run),
+            0.5 if pre_window is None else pre_window,
+            1.0 if steady_window is None else steady_window,
+            5.0 if min_speed is None else min_speed,
+            10.0 if filter_hz is None else filter_hz,
+            4.0 if variance_window is None else variance_window,
         )
     )
 

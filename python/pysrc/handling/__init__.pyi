@@ -1,7 +1,7 @@
 """Type stubs of the handling package (SI units and radians throughout)."""
 
 import os
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -15,11 +15,15 @@ class HandlingError(Exception):
     """Any failure of the handling library."""
 
 class InputError(HandlingError):
-    """An input file that cannot be read or holds wrong content."""
-    path: str
+    """An input file that cannot be read or holds wrong content (``path``,
+    ``line``, ``column``), or a wrong scenario or vehicle keyword (``key``,
+    dotted, and ``value``; ``path`` and ``line`` None)."""
+    path: Optional[str]
     line: Optional[int]
     column: Optional[int]
     reason: str
+    key: Optional[str]
+    value: Any
 
 class ParamError(HandlingError):
     """A parameter value that is not physical."""
@@ -35,7 +39,10 @@ class Tyre:
     def to_json(self) -> str: ...
     @property
     def model(self) -> str: ...
-    def cornering_stiffness(self, fz: Any) -> Any: ...
+    @overload
+    def cornering_stiffness(self, fz: float) -> float: ...
+    @overload
+    def cornering_stiffness(self, fz: npt.ArrayLike) -> Any: ...
     def forces(
         self,
         fz: ArrayLike,
@@ -45,6 +52,76 @@ class Tyre:
         speed: ArrayLike = ...,
         pressure: Optional[ArrayLike] = ...,
     ) -> Dict[str, np.ndarray]: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+
+class Vehicle:
+    def __init__(
+        self,
+        mass: float,
+        yaw_inertia: float,
+        a: float,
+        b: float,
+        track_front: float,
+        track_rear: float,
+        cg_height: float,
+        *,
+        wheelbase: Optional[float] = ...,
+        load_transfer_front_share: Optional[float] = ...,
+        steering_ratio: Optional[float] = ...,
+    ) -> None: ...
+    @classmethod
+    def from_dict(cls, d: Mapping[str, float]) -> Vehicle: ...
+    @classmethod
+    def load(cls, path: PathLike) -> Vehicle: ...
+    def to_dict(self) -> Dict[str, float]: ...
+    @property
+    def mass(self) -> float: ...
+    @property
+    def yaw_inertia(self) -> float: ...
+    @property
+    def a(self) -> float: ...
+    @property
+    def b(self) -> float: ...
+    @property
+    def track_front(self) -> float: ...
+    @property
+    def track_rear(self) -> float: ...
+    @property
+    def cg_height(self) -> float: ...
+    @property
+    def wheelbase(self) -> float: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+
+TyreLike = Union[Tyre, PathLike]
+TyresArg = Union[TyreLike, Tuple[TyreLike, TyreLike], Mapping[str, TyreLike]]
+
+class Scenario:
+    def __init__(
+        self,
+        vehicle: Union[Vehicle, Mapping[str, float], None] = ...,
+        tyres: Optional[TyresArg] = ...,
+        manoeuvre: Optional[Mapping[str, Any]] = ...,
+        *,
+        road: Optional[Mapping[str, Any]] = ...,
+        model: Optional[Mapping[str, Any]] = ...,
+        simulation: Optional[Mapping[str, Any]] = ...,
+        integrator: Optional[Mapping[str, Any]] = ...,
+        metrics: Optional[Mapping[str, Any]] = ...,
+        name: Optional[str] = ...,
+        description: Optional[str] = ...,
+    ) -> None: ...
+    def to_toml(self) -> str: ...
+    def write(self, folder: PathLike) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def tyres(self) -> Tuple[Tyre, Tyre]: ...
+    @property
+    def vehicle(self) -> Vehicle: ...
+    def keywords(self) -> Dict[str, Any]: ...
+    def replace(self, **changes: Any) -> Scenario: ...
     def __eq__(self, other: object) -> bool: ...
     def __hash__(self) -> int: ...
 
@@ -61,15 +138,37 @@ class Study:
     def evaluate(self, k_front: ArrayLike, k_rear: ArrayLike) -> List[Dict[str, Any]]: ...
 
 def simulate(
-    scenario: PathLike, out: Optional[PathLike] = ..., pandas: Optional[bool] = ...
+    scenario: Union[PathLike, Scenario, None] = ...,
+    out: Optional[PathLike] = ...,
+    pandas: Optional[bool] = ...,
+    *,
+    vehicle: Union[Vehicle, Mapping[str, float], None] = ...,
+    tyres: Optional[TyresArg] = ...,
+    manoeuvre: Optional[Mapping[str, Any]] = ...,
+    road: Optional[Mapping[str, Any]] = ...,
+    model: Optional[Mapping[str, Any]] = ...,
+    simulation: Optional[Mapping[str, Any]] = ...,
+    integrator: Optional[Mapping[str, Any]] = ...,
+    metrics: Optional[Mapping[str, Any]] = ...,
+    name: Optional[str] = ...,
+    description: Optional[str] = ...,
 ) -> Dict[str, Any]: ...
 def metrics(
-    run: PathLike,
-    pre_window: float = ...,
-    steady_window: float = ...,
-    min_speed: float = ...,
-    filter_hz: float = ...,
-    variance_window: float = ...,
+    run: Union[PathLike, Scenario, None] = ...,
+    pre_window: Optional[float] = ...,
+    steady_window: Optional[float] = ...,
+    min_speed: Optional[float] = ...,
+    filter_hz: Optional[float] = ...,
+    variance_window: Optional[float] = ...,
+    *,
+    vehicle: Union[Vehicle, Mapping[str, float], None] = ...,
+    tyres: Optional[TyresArg] = ...,
+    manoeuvre: Optional[Mapping[str, Any]] = ...,
+    road: Optional[Mapping[str, Any]] = ...,
+    model: Optional[Mapping[str, Any]] = ...,
+    simulation: Optional[Mapping[str, Any]] = ...,
+    integrator: Optional[Mapping[str, Any]] = ...,
+    name: Optional[str] = ...,
 ) -> Dict[str, Any]: ...
 def equilibria(sweep: PathLike, out: Optional[PathLike] = ...) -> Dict[str, Any]: ...
 def study(study_file: PathLike, out: Optional[PathLike] = ...) -> Dict[str, Any]: ...

@@ -101,6 +101,10 @@ pub fn run_batch(
         || PathBuf::from("out").join(name_of(dir)),
         Path::to_path_buf,
     );
+    // Without `--shard` the batch writes its fleet table; with one, even
+    // 1/1 (a job array of one), a shard file for `handling merge`, as the
+    // other sharded jobs do.
+    let whole = shard.is_none();
     let shard = shard.unwrap_or(Shard { index: 1, count: 1 });
     let owned = shard.units(all.len());
     let mut reports = Vec::new();
@@ -127,7 +131,7 @@ pub fn run_batch(
             }),
         }
     }
-    if shard.count == 1 {
+    if whole {
         let report = fleet(rows, out_dir);
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));

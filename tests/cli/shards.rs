@@ -287,20 +287,14 @@ fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() 
             );
         }
         let shards = work.path().join(shards);
-        // Shard 1/1 is the whole batch: it writes the fleet table itself
-        // (no shard file, nothing to merge); N > 1 merge from the root.
-        let merged = if n == 1 {
-            assert!(!shards.join("shard-1-of-1.json").exists());
-            shards.clone()
-        } else {
-            let merged = work.path().join(format!("merged{n}"));
-            merge_shards(&shards, n, &merged);
-            assert_eq!(
-                files_under(&merged),
-                ["fleet.csv", "fleet.json"].map(PathBuf::from)
-            );
-            merged
-        };
+        // Every N, 1 included (a job array of one), writes shard files
+        // and merges from the root.
+        let merged = work.path().join(format!("merged{n}"));
+        merge_shards(&shards, n, &merged);
+        assert_eq!(
+            files_under(&merged),
+            ["fleet.csv", "fleet.json"].map(PathBuf::from)
+        );
         for f in ["fleet.csv", "fleet.json"] {
             assert!(
                 fs::read(full.join(f)).unwrap() == fs::read(merged.join(f)).unwrap(),
@@ -311,7 +305,6 @@ fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() 
         let written: Vec<PathBuf> = files_under(&shards)
             .into_iter()
             .filter(|p| !p.to_string_lossy().starts_with("shard-"))
-            .filter(|p| n > 1 || (p != Path::new("fleet.csv") && p != Path::new("fleet.json")))
             .collect();
         let expected: Vec<PathBuf> = files_under(&full)
             .into_iter()

@@ -109,3 +109,12 @@ def test_diagnose_missing_campaign_is_input_error(tmp_path):
 def test_synth_writes_a_campaign(tmp_path):
     r = handling.synth(tmp_path / "c", ["relaxation_length"], seed=3)
     assert r["runs"] > 0 and (tmp_path / "c" / "vehicle.toml").exists()
+
+
+def test_synth_drives_the_oval_with_ax_and_bank_channels(tmp_path):
+    r = handling.synth(tmp_path / "o", ["bank_profile"], seed=2, programme="oval")
+    assert r["programme"] == "oval" and r["runs"] == 3
+    header = (tmp_path / "o" / "runs" / "oval_stop_on_banking.csv").read_text().splitlines()[0]
+    assert header == "t,speed,steer,yaw_rate,ay,ax,bank"
+    with pytest.raises(handling.HandlingError, match="unknown programme `ovals`"):
+        handling.synth(tmp_path / "x", [], programme="ovals")

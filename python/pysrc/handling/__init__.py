@@ -806,9 +806,17 @@ def diagnose(campaign: PathLike, out: Optional[PathLike] = None) -> Dict[str, An
 
 
 def synth(
-    out: PathLike, effects: Sequence[str] = (), seed: int = 1, truth: str = "augmented"
+    out: PathLike,
+    effects: Sequence[str] = (),
+    seed: int = 1,
+    truth: str = "augmented",
+    programme: str = "handling",
 ) -> Dict[str, Any]:
     """The virtual proving ground, as ``handling synth``: writes a campaign
     folder ``out`` measured on a truth model (``augmented`` or
-    ``four-wheel``) with the named effects on."""
-    return json.loads(_handling.synth(_path(out), list(effects), seed, truth))
+    ``four-wheel``) with the named effects on, driving ``programme``:
+    ``handling`` (steps, a ramp and a sweep at constant speed, 100 Hz),
+    ``oval`` (a 20 deg banked oval with braking, throttle and a standstill
+    on the banking, 25 Hz, ``ax`` and ``bank`` channels) or ``road-course``
+    (trail braking and cambered corners, 25 Hz)."""
+    return json.loads(_handling.synth(_path(out), list(effects), seed, truth, programme))

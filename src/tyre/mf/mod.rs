@@ -69,6 +69,7 @@
 
 mod coefficients;
 mod formulae;
+mod kernels;
 
 pub use coefficients::MfCoefficients;
 
@@ -228,9 +229,10 @@ impl MagicFormula {
         // The prelude stays on this stack frame (no MfAtLoad moved around).
         let mirror = self.side == TyreSide::Right;
         let gamma = if mirror { -p.camber } else { p.camber };
-        let pre = self.prelude(p.fz, gamma, self.pressure(p.pressure), mu_scale, 1.0);
+        let pressure = self.pressure(p.pressure);
         let alpha = if mirror { p.alpha } else { -p.alpha };
-        to_crate(self.forces_iso(&pre, p.kappa, alpha, p.speed), mirror)
+        let o = self.evaluate_iso(p.fz, gamma, pressure, mu_scale, p.kappa, alpha, p.speed);
+        to_crate(o, mirror)
     }
 
     /// The load-, pressure- and camber-dependent part of the formulae,
@@ -254,7 +256,7 @@ impl MagicFormula {
         // Crate → ISO-W, then the TYRESIDE mirror (camber here, α per point).
         let gamma = if mirror { -camber } else { camber };
         let prelude = (fz > 0.0 && fz.is_finite())
-            .then(|| self.prelude(fz, gamma, self.pressure(pressure), mu_scale, 1.0));
+            .then(|| self.prelude_out_of_line(fz, gamma, self.pressure(pressure), mu_scale, 1.0));
         MfAtLoad {
             tyre: self,
             mirror,

@@ -50,6 +50,13 @@
 //!   `QSX4..QSX14` at 0 and reduce to the 5.2 form.
 //! - 6.2 differs from 6.1 only in transient and loaded-radius parts not
 //!   modelled here, so both use the same steady-state equations.
+//! - PAC2002 (5.2) files' `LGAX`, `LGAY`, `LGAZ` — ADAMS' camber scaling
+//!   factors of the Fx, Fy and Mz channels — are not read: MFeval has no
+//!   such parameters (the coefficient set of its `readTIR`, as ported to
+//!   MFeval.jl's `TireParams`, lists none), so its 5.2 camber terms are
+//!   scaled by `LKYC`/`LKZC` only, as here. The public files checked
+//!   against it all have them at 1; a file with one of them ≠ 1 is
+//!   evaluated as MFeval evaluates it.
 //!
 //! - `Kyγ0` carries `(1 + PPY5·dpi)` (book eq. 4.E30 and MFeval; TyreDyn
 //!   (van Rossem, 2025) evaluates `1 − PPY5·dpi`, which moves its cambered

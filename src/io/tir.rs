@@ -138,6 +138,12 @@ impl TirDocument {
         })
     }
 
+    /// The value of the entry on `line` as the file writes it.
+    fn written(&self, line: usize) -> &str {
+        let (text, entry) = &self.lines[line - 1];
+        entry.as_ref().map_or("", |e| &text[e.span.0..e.span.1])
+    }
+
     fn at(&self, line: usize, key: &str, message: String) -> InputError {
         let column = self.lines[line - 1].1.as_ref().map_or(1, |e| e.span.0 + 1);
         InputError::At {
@@ -232,8 +238,8 @@ impl TirDocument {
                     line,
                     "FITTYP",
                     format!(
-                        "{:?} is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)",
-                        fittyp.value
+                        "`{}` is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)",
+                        self.written(line)
                     ),
                 )
             })?,
@@ -506,6 +512,22 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.starts_with("b.tir:5:") && e.contains("FITTYP"), "{e}");
+        // The value as written, not as parsed (`Number(7.0)`).
+        for (written, shown) in [("7", "`7`"), ("5.0", "`5.0`"), ("'MF61'", "`'MF61'`")] {
+            let e = TirDocument::parse(
+                p,
+                &SMALL.replace("FITTYP = 61", &format!("FITTYP = {written}")),
+            )
+            .unwrap()
+            .magic_formula()
+            .unwrap_err()
+            .to_string();
+            assert!(
+                e.starts_with("b.tir:5:") && e.contains("`FITTYP`") && e.contains(shown),
+                "{e}"
+            );
+            assert!(!e.contains("Number") && !e.contains("Text"), "{e}");
+        }
         let e = TirDocument::parse(p, &SMALL.replace("'mm'", "'furlong'"))
             .unwrap()
             .magic_formula()

@@ -6,6 +6,7 @@
 //! choices are in the parent module's notes). SI and radians; `α` here is
 //! TNO's.
 
+use super::kernels;
 use super::{AlphaStar, MagicFormula, MfOutput, MfVersion};
 use std::f64::consts::PI;
 
@@ -32,29 +33,6 @@ fn sgn(x: f64) -> f64 {
     } else {
         -1.0
     }
-}
-
-/// `C·atan(B·x − E·(B·x − atan(B·x)))` without `C`: the inner `atan` is
-/// skipped when `E` is exactly 0 (the difference then multiplies 0).
-#[inline]
-fn mf_angle(b: f64, e: f64, x: f64) -> f64 {
-    let bx = b * x;
-    if e == 0.0 {
-        bx.atan()
-    } else {
-        (bx - e * (bx - bx.atan())).atan()
-    }
-}
-
-/// The Magic Formula `D·sin(C·atan(B·x − E·(B·x − atan(B·x))))` without `D`.
-#[inline]
-fn mf_sin(b: f64, c: f64, e: f64, x: f64) -> f64 {
-    (c * mf_angle(b, e, x)).sin()
-}
-
-#[inline]
-fn mf_cos(b: f64, c: f64, e: f64, x: f64) -> f64 {
-    (c * mf_angle(b, e, x)).cos()
 }
 
 /// `cos(atan(x))` without trigonometry: `1/sqrt(1 + x²)` (exact identity).
@@ -113,8 +91,6 @@ pub(super) struct Prelude {
     pub(super) gamma: f64,
     pub(super) p: f64,
     pub(super) mu_scale: f64,
-    /// `γ* = sin γ` (`γ` itself with [`AlphaStar::Angle`]).
-    gs: f64,
     // Pure longitudinal.
     shx: f64,
     cx: f64,
@@ -184,7 +160,7 @@ impl MagicFormula {
     /// friction scale `mu_scale` and slip-speed friction factor
     /// `speed_factor` (1 without `LMUV`). Terms whose coefficients are
     /// exactly zero skip their transcendental functions.
-    #[inline]
+    #[inline(always)]
     pub(super) fn prelude(
         &self,
         fz: f64,
@@ -199,9 +175,18 @@ impl MagicFormula {
         let fz0p = c.FNOMIN * c.LFZO;
         let r0 = c.UNLOADED_RADIUS;
         let dfz = (fz - fz0p) / fz0p;
+        let fzr = fz / fz0;
+        // The C library's exp and ln first: every register is free across
+        // their calls here, later they would spill the prelude's values.
+        let load_exp = if c.PKX3 == 0.0 {
+            1.0
+        } else {
+            (c.PKX3 * dfz).exp()
+        };
+        let my_powers = self.my_powers(fzr, p);
         let dpi = self.dpi(p);
         let gs = match self.options.alpha_star {
-            AlphaStar::Tan => gamma.sin(),
+            AlphaStar::Tan => kernels::sin_cos([gamma, 0.0, 0.0, 0.0], [false; 4])[0],
             AlphaStar::Angle => gamma,
         };
         // Friction scaling with slip speed (λ*_μ) and its digressive form.
@@ -223,11 +208,6 @@ impl MagicFormula {
             * (1.0 - c.PDX3 * gamma * gamma)
             * lmux_s;
         let dx = mux * fz;
-        let load_exp = if c.PKX3 == 0.0 {
-            1.0
-        } else {
-            (c.PKX3 * dfz).exp()
-        };
         let kxk = fz
             * (c.PKX1 + c.PKX2 * dfz)
             * load_exp
@@ -248,9 +228,23 @@ impl MagicFormula {
             fz,
         };
         let mu0 = free.mu0;
-        let lateral = |gs: f64| self.lateral_at(&free, gs);
-        let lat = lateral(gs);
-        let flat = if gs == 0.0 || v52 { lat } else { lateral(0.0) };
+        // The angles of Kyα's load curve (at the camber and at zero camber)
+        // and of the overturning moment's load terms, in two array passes.
+        let (x, x0) = (
+            free.load_ratio / (c.PKY2 + c.PKY5 * gs * gs),
+            free.load_ratio / c.PKY2,
+        );
+        let [ax, ax0, a_mx, a_mxg] = kernels::atan([x, x0, (c.QSX6 * fzr).powi(2), c.QSX11 * fzr]);
+        let [sx, sx0, c_mx, _] = kernels::sin_cos(
+            [c.PKY4 * ax, c.PKY4 * ax0, c.QSX5 * a_mx, 0.0],
+            [false, false, true, false],
+        );
+        let lat = self.lateral_at(&free, gs, x, sx);
+        let flat = if gs == 0.0 || v52 {
+            lat
+        } else {
+            self.lateral_at(&free, 0.0, x0, sx0)
+        };
 
         // Aligning moment. γ* in SHt, Et and Dr for every version
         // (MFeval); γ itself in Bt and Dt (TNO eqs. A58/A60) and in s (A56):
@@ -259,15 +253,13 @@ impl MagicFormula {
         let (bt, dt, dr) = self.aligning_terms(fz, dfz, dpi, gamma, gz, lmuy_s);
         let kratio = kxk / lat.kya_g;
 
-        let fzr = fz / fz0;
-        let (mx_mixed, mx_load_camber, my_powers) = self.moment_terms(fzr, gamma, p);
+        let (mx_mixed, mx_load_camber) = self.moment_terms(gamma, c_mx, a_mxg);
 
         Prelude {
             fz,
             gamma,
             p,
             mu_scale,
-            gs,
             shx: (c.PHX1 + c.PHX2 * dfz) * c.LHX,
             cx,
             dx,
@@ -342,18 +334,17 @@ impl MagicFormula {
     }
 
     /// The pure lateral factors at camber `gs` (γ* or γ) from the
-    /// camber-free ones.
-    #[inline]
-    fn lateral_at(&self, f: &LateralFree, gs: f64) -> LateralAtLoad {
+    /// camber-free ones, `x = Fz/(Fz0'·(PKY2 + PKY5·γ*²))` (with its
+    /// pressure factor) and `sin(PKY4·atan x)`.
+    #[inline(always)]
+    fn lateral_at(&self, f: &LateralFree, gs: f64, x: f64, sin_pky4: f64) -> LateralAtLoad {
         let c = &self.coefficients;
         let v52 = self.version == MfVersion::Mf52;
-        let x = f.load_ratio / (c.PKY2 + c.PKY5 * gs * gs);
-        // sin(2·atan x) = 2x/(1 + x²): the 5.2 default PKY4 = 2 needs
-        // no trigonometry.
+        // sin(2·atan x) = 2x/(1 + x²): exact for the 5.2 default PKY4 = 2.
         let shape = if c.PKY4 == 2.0 && x.is_finite() {
             2.0 * x / (1.0 + x * x)
         } else {
-            (c.PKY4 * x.atan()).sin()
+            sin_pky4
         };
         let kya = f.kya_scale * (1.0 - c.PKY3 * gs.abs()) * shape;
         let kya_g = guard(kya);
@@ -384,47 +375,109 @@ impl MagicFormula {
         }
     }
 
-    /// The load and camber terms of the overturning moment (those whose
-    /// coefficient is 0 skipped: their trigonometry multiplies 0) and of
-    /// the rolling resistance, `Fz^QSY7·p^QSY8` as one exponential of
-    /// logarithms (the pressure's skipped when QSY8 = 0), at load ratio
-    /// `fzr = Fz/FNOMIN`.
-    #[inline]
-    fn moment_terms(&self, fzr: f64, gamma: f64, p: f64) -> (f64, f64, f64) {
+    /// The load and camber terms of the overturning moment (0 when their
+    /// coefficient is) from `cos(QSX5·atan((QSX6·Fz/Fz0)²))` and
+    /// `atan(QSX11·Fz/Fz0)`.
+    #[inline(always)]
+    fn moment_terms(&self, gamma: f64, cos_mixed: f64, atan_load: f64) -> (f64, f64) {
         let c = &self.coefficients;
         let mx_mixed = if c.QSX4 == 0.0 {
             0.0
         } else {
-            c.QSX4 * (c.QSX5 * (c.QSX6 * fzr).powi(2).atan()).cos()
+            c.QSX4 * cos_mixed
         };
         let mx_load_camber = if c.QSX10 == 0.0 {
             0.0
         } else {
-            c.QSX10 * (c.QSX11 * fzr).atan() * gamma
+            c.QSX10 * atan_load * gamma
         };
-        let my_powers = if self.version == MfVersion::Mf52 || c.QSY7 == 0.0 {
+        (mx_mixed, mx_load_camber)
+    }
+
+    /// The rolling resistance's `(Fz/Fz0)^QSY7·(p/p0)^QSY8` as one
+    /// exponential of logarithms (the pressure's skipped when QSY8 = 0;
+    /// 5.2: `Fz/Fz0`), at load ratio `fzr = Fz/FNOMIN`.
+    #[inline(always)]
+    fn my_powers(&self, fzr: f64, p: f64) -> f64 {
+        let c = &self.coefficients;
+        if self.version == MfVersion::Mf52 || c.QSY7 == 0.0 {
             fzr
         } else {
             let pr = if c.NOMPRES > 0.0 { p / c.NOMPRES } else { 1.0 };
             let lp = if c.QSY8 == 0.0 { 0.0 } else { c.QSY8 * pr.ln() };
             (c.QSY7 * fzr.ln() + lp).exp()
-        };
-        (mx_mixed, mx_load_camber, my_powers)
+        }
     }
 
     /// The slip-dependent part at one point from a prelude (ISO-W).
     ///
-    /// Cost: the transcendental calls (`atan`, `sin`, `cos`, `tan`) are
-    /// most of the time. Each is made once where the formulae reuse its
-    /// value, and skipped where its result is known exactly: the
-    /// combined-slip weights are 1 and `SVyκ` is 0 at `κ = 0` (`Gyκ`) or
-    /// `α = 0` (`Gxα`), the zero-camber lateral pass is the cambered one at
-    /// zero camber, `atan(√(tan² αt))` is `αt` without longitudinal slip,
-    /// and the inner `atan` of a Magic Formula with `E = 0` multiplies 0.
-    /// (Cephes' `atan`/`sin`/`cos` inlined in place of glibc's were tried:
-    /// 10 % fewer instructions, but slower on the clock, so the C library's
-    /// stay.)
+    /// Cost: the transcendental functions (about 35 `atan`, `sin`, `cos`
+    /// here, 12 more in the prelude) were 70 % of an evaluation as C
+    /// library calls, one at a time. They are now evaluated in array passes
+    /// of [`kernels`] (see [`Self::slip`]). Inlined scalar Cephes
+    /// `atan`/`sin`/`cos` had been tried before: 10 % fewer instructions but
+    /// slower on the clock than glibc's — the gain is in the lanes, not in
+    /// the polynomials.
+    #[inline]
     pub(super) fn forces_iso(&self, l: &Prelude, kappa: f64, alpha: f64, speed: f64) -> MfOutput {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked on the line above.
+            return unsafe { self.forces_iso_avx2(l, kappa, alpha, speed) };
+        }
+        self.forces_iso_lanes(l, kappa, alpha, speed)
+    }
+
+    /// [`Self::forces_iso`] compiled with AVX2: four lanes per instruction
+    /// instead of SSE2's two. No FMA (Rust never contracts `a·b + c`), so
+    /// the result is the same to the bit.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn forces_iso_avx2(&self, l: &Prelude, kappa: f64, alpha: f64, speed: f64) -> MfOutput {
+        self.forces_iso_lanes(l, kappa, alpha, speed)
+    }
+
+    /// The prelude and the slip part at one point (ISO-W): one evaluation.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn evaluate_iso(
+        &self,
+        fz: f64,
+        gamma: f64,
+        p: f64,
+        mu_scale: f64,
+        kappa: f64,
+        alpha: f64,
+        speed: f64,
+    ) -> MfOutput {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked on the line above.
+            return unsafe { self.evaluate_iso_avx2(fz, gamma, p, mu_scale, kappa, alpha, speed) };
+        }
+        let pre = self.prelude(fz, gamma, p, mu_scale, 1.0);
+        self.forces_iso_lanes(&pre, kappa, alpha, speed)
+    }
+
+    /// [`Self::evaluate_iso`] compiled with AVX2 (as [`Self::forces_iso_avx2`]).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[allow(clippy::too_many_arguments)]
+    fn evaluate_iso_avx2(
+        &self,
+        fz: f64,
+        gamma: f64,
+        p: f64,
+        mu_scale: f64,
+        kappa: f64,
+        alpha: f64,
+        speed: f64,
+    ) -> MfOutput {
+        let pre = self.prelude(fz, gamma, p, mu_scale, 1.0);
+        self.forces_iso_lanes(&pre, kappa, alpha, speed)
+    }
+
+    #[inline(always)]
+    fn forces_iso_lanes(&self, l: &Prelude, kappa: f64, alpha: f64, speed: f64) -> MfOutput {
         let c = &self.coefficients;
         let vx = speed;
         let sgn_vx = sgn(vx);
@@ -433,33 +486,55 @@ impl MagicFormula {
         } else {
             1.0
         };
-        // tan α itself inside ±90° (one call instead of sin and cos);
-        // beyond, sin α/|cos α| keeps the slip's direction.
+        // tan α = sin α/cos α inside ±90°; beyond, sin α/|cos α| keeps the
+        // slip's direction.
+        let [sin_a, cos_a, ..] =
+            kernels::sin_cos([alpha, alpha, 0.0, 0.0], [false, true, false, false]);
         let tan_a = if alpha.abs() < 0.5 * PI {
-            alpha.tan()
+            sin_a / cos_a
         } else {
-            alpha.sin() / alpha.cos().abs().max(1e-12)
+            sin_a / cos_a.abs().max(1e-12)
         };
         let astar = match self.options.alpha_star {
             AlphaStar::Tan => tan_a * sgn_vx,
             AlphaStar::Angle => alpha * sgn_vx,
         };
-        if c.LMUV != 0.0 {
-            // λ*_μ depends on the slip speed: the prelude is this point's.
+        let own;
+        let l = if c.LMUV == 0.0 {
+            l
+        } else {
+            // λ*_μ depends on the slip speed: the prelude is this point's
+            // (rebuilt out of line, this path is rare).
             let vs = vx.abs() * (kappa * kappa + astar * astar).sqrt();
             let speed_factor = 1.0 / (1.0 + c.LMUV * vs / c.LONGVL);
-            if speed_factor != 1.0 {
-                let own = self.prelude(l.fz, l.gamma, l.p, l.mu_scale, speed_factor);
-                return self.slip(&own, kappa, astar, tan_a, vx, sgn_vx, low);
+            if speed_factor == 1.0 {
+                l
+            } else {
+                own = self.prelude_out_of_line(l.fz, l.gamma, l.p, l.mu_scale, speed_factor);
+                &own
             }
-        }
+        };
         self.slip(l, kappa, astar, tan_a, vx, sgn_vx, low)
     }
 
-    /// Pure lateral force from its load factors at `α*` and the low-speed
-    /// fade: `(Fy0, SHy, SVy)`.
-    #[inline]
-    fn pure_lateral(&self, f: &LateralAtLoad, astar: f64, low: f64) -> (f64, f64, f64) {
+    /// [`Self::prelude`] as a call (for [`super::MfAtLoad`] and the
+    /// slip-speed friction path), not inlined into every caller.
+    #[inline(never)]
+    pub(super) fn prelude_out_of_line(
+        &self,
+        fz: f64,
+        gamma: f64,
+        p: f64,
+        mu_scale: f64,
+        speed_factor: f64,
+    ) -> Prelude {
+        self.prelude(fz, gamma, p, mu_scale, speed_factor)
+    }
+
+    /// The shifts and curvature of the pure lateral force at `α*` with the
+    /// low-speed fade: `(αy, Ey, SHy, SVy)`.
+    #[inline(always)]
+    fn lateral_input(&self, f: &LateralAtLoad, astar: f64, low: f64) -> (f64, f64, f64, f64) {
         let (shy, svy) = if low == 1.0 {
             (f.shy, f.svy)
         } else if self.version == MfVersion::Mf52 {
@@ -470,11 +545,20 @@ impl MagicFormula {
         };
         let ay = astar + shy;
         let ey = (f.ey0 * (f.ey_a - f.ey_b * sgn(ay))).min(1.0);
-        (f.dy * mf_sin(f.by, f.cy, ey, ay) + svy, shy, svy)
+        (ay, ey, shy, svy)
     }
 
+    /// The slip part. Every Magic Formula curve `sin/cos(C·atan(B·x −
+    /// E·(B·x − atan(B·x))))` of the point — pure `Fx0`, `Fy0` (and at zero
+    /// camber), the numerators and denominators of `Gxα` and `Gyκ`, the
+    /// trail — and the other angles are set up first and evaluated together
+    /// in a few array passes of [`kernels`], one per stage of their
+    /// dependency chain. Where the old scalar code skipped a call because
+    /// its result was known (a weight of exactly 1 at zero slip of the other
+    /// kind, `SVyκ = 0` at `κ = 0`, `E = 0`) the lanes give the same result
+    /// exactly: equal inputs, equal bits.
     #[allow(clippy::too_many_arguments)]
-    #[inline]
+    #[inline(always)]
     fn slip(
         &self,
         l: &Prelude,
@@ -486,52 +570,105 @@ impl MagicFormula {
         low: f64,
     ) -> MfOutput {
         let c = &self.coefficients;
-        let gs = l.gs;
 
-        // Pure longitudinal.
+        // Set-up: pure longitudinal, pure lateral at the point's camber and
+        // at zero camber (6.x Mz), the weights' slopes, the trail's angles.
         let kx = kappa + l.shx;
         let ex = (l.ex_load * (1.0 - c.PEX4 * sgn(kx)) * c.LEX).min(1.0);
-        let fx0 = l.dx * mf_sin(l.bx, l.cx, ex, kx) + l.svx * low;
+        let (ay, ey, shy, svy) = self.lateral_input(&l.lat, astar, low);
+        let (ay0, ey0, _, svy0) = self.lateral_input(&l.flat, astar, low);
+        let bxa = l.rbx * cos_atan(c.RBX2 * kappa) * c.LXAL;
+        let byk = l.rby * cos_atan(c.RBY2 * (astar - c.RBY3)) * c.LYKA;
+        let at = astar + l.sht;
+        let ar = astar + shy + svy / l.lat.kya_g;
 
-        // Pure lateral at the point's camber and at zero camber (6.x Mz).
-        let (fy0, shy, svy) = self.pure_lateral(&l.lat, astar, low);
-        let fy0_flat = if gs == 0.0 || self.version == MfVersion::Mf52 {
-            fy0
-        } else {
-            self.pure_lateral(&l.flat, astar, low).0
+        // Stage 1: sin and cos of the trail's and the residual torque's
+        // angles (their tangents).
+        let [s_at, c_at, s_ar, c_ar] =
+            kernels::sin_cos([at, at, ar, ar], [false, true, false, true]);
+        // TNO (A54/A55): the equivalent angles combine tangents,
+        // atan(√(tan² a + k²))·sgn a = atan(√(sin² a + k²·cos² a)/|cos a|)·sgn a;
+        // without longitudinal slip that is a itself inside ±90°.
+        let k2 = l.kratio2 * kappa * kappa;
+        let eq = |s: f64, co: f64| ((s * s + k2 * co * co).sqrt(), co.abs());
+        let ((n_at, d_at), (n_ar, d_ar)) = (eq(s_at, c_at), eq(s_ar, c_ar));
+
+        // Stage 2: the inner atan of every curve, atan(RVY6·κ), Et's atan
+        // and the equivalent angles.
+        let bx = [
+            l.bx * kx,
+            l.lat.by * ay,
+            l.flat.by * ay0,
+            bxa * (astar + c.RHX1),
+            bxa * c.RHX1,
+            byk * (kappa + l.shyk),
+            byk * l.shyk,
+        ];
+        let e = [ex, ey, ey0, l.exa, l.exa, l.eyk, l.eyk];
+        let [i0, i1, i2, i3, i4, i5, i6, a_rvy, a_et, eq_t, eq_r, _] = kernels::atan_ratio(
+            [
+                bx[0],
+                bx[1],
+                bx[2],
+                bx[3],
+                bx[4],
+                bx[5],
+                bx[6],
+                c.RVY6 * kappa,
+                l.btct * at,
+                n_at,
+                n_ar,
+                0.0,
+            ],
+            [1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, d_at, d_ar, 1.0],
+        );
+        let inner = [i0, i1, i2, i3, i4, i5, i6];
+        let equivalent = |a: f64, q: f64| {
+            if k2 == 0.0 && a.abs() < 0.5 * PI {
+                a
+            } else {
+                q * sgn(a)
+            }
         };
+        let at_eq = equivalent(at, eq_t);
+        let ar_eq = equivalent(ar, eq_r);
 
+        // Stage 3: the outer atan of every curve, the trail's inner one.
+        let y: [f64; 7] = std::array::from_fn(|k| bx[k] - e[k] * (bx[k] - inner[k]));
+        let bt_at = l.bt * at_eq;
+        let [o0, o1, o2, o3, o4, o5, o6, i_t] =
+            kernels::atan([y[0], y[1], y[2], y[3], y[4], y[5], y[6], bt_at]);
+        let et = (l.et_load * (1.0 + l.et_gamma * a_et)).min(1.0);
+        let y_t = bt_at - et * (bt_at - i_t);
+
+        // Stage 4: sin (pure forces) or cos (weights) of C·θ, the sine of
+        // SVyκ.
+        let (cxa, cyk) = (c.RCX1, c.RCY1);
+        let [f_x, f_y, f_y0, gx_n, gx_d, gy_n, gy_d, s_rvy] = kernels::sin_cos(
+            [
+                l.cx * o0,
+                l.lat.cy * o1,
+                l.flat.cy * o2,
+                cxa * o3,
+                cxa * o4,
+                cyk * o5,
+                cyk * o6,
+                c.RVY5 * a_rvy,
+            ],
+            [false, false, false, true, true, true, true, false],
+        );
+
+        let fx0 = l.dx * f_x + l.svx * low;
+        let fy0 = l.lat.dy * f_y + svy;
+        let fy0_flat = l.flat.dy * f_y0 + svy0;
         // Combined slip: weighting functions (exactly 1 at zero slip of the
         // other kind: numerator and denominator are then the same number).
-        let gxa = if astar == 0.0 {
-            1.0
-        } else {
-            let bxa = l.rbx * cos_atan(c.RBX2 * kappa) * c.LXAL;
-            let (cxa, shxa) = (c.RCX1, c.RHX1);
-            mf_cos(bxa, cxa, l.exa, astar + shxa) / mf_cos(bxa, cxa, l.exa, shxa)
-        };
-        let fx = gxa * fx0;
-
+        let fx = gx_n / gx_d * fx0;
         // `svyk_per_mu`: SVyκ per unit μy (eqs. 4.E66/4.E67), so that the
         // 5.2 aligning moment can take it at the zero-camber μy as MFeval
         // does.
-        let (gyk, svyk_per_mu) = if kappa == 0.0 {
-            (1.0, 0.0)
-        } else {
-            let svyk_per_mu = if l.svyk_load == 0.0 {
-                0.0
-            } else {
-                l.svyk_load
-                    * cos_atan(c.RVY4 * astar)
-                    * (c.RVY5 * (c.RVY6 * kappa).atan()).sin()
-                    * c.LVYKA
-                    * low
-            };
-            let byk = l.rby * cos_atan(c.RBY2 * (astar - c.RBY3)) * c.LYKA;
-            let cyk = c.RCY1;
-            let gyk = mf_cos(byk, cyk, l.eyk, kappa + l.shyk) / mf_cos(byk, cyk, l.eyk, l.shyk);
-            (gyk, svyk_per_mu)
-        };
+        let svyk_per_mu = l.svyk_load * cos_atan(c.RVY4 * astar) * s_rvy * c.LVYKA * low;
+        let gyk = gy_n / gy_d;
         let fy = gyk * fy0 + l.lat.muy * svyk_per_mu;
         // The lateral force the trail multiplies: TNO 6.1's `Fy'` (eq.
         // 4.E74: the combined force at zero camber), and MFeval's 5.2 form
@@ -542,33 +679,24 @@ impl MagicFormula {
             gyk * fy0_flat
         };
 
-        // Aligning moment.
-        let at = astar + l.sht;
-        let ar = astar + shy + svy / l.lat.kya_g;
-        let k2 = l.kratio2 * kappa * kappa;
-        // TNO (A54/A55): the equivalent angles combine tangents; without
-        // longitudinal slip atan(|tan a|)·sgn a is a itself inside ±90°.
-        let equivalent = |a: f64| {
-            if k2 == 0.0 && a.abs() < 0.5 * PI {
-                a
-            } else {
-                let ta = a.tan();
-                (ta * ta + k2).sqrt().atan() * sgn(a)
-            }
-        };
-        let at_eq = equivalent(at);
-        let ar_eq = equivalent(ar);
-        let et = (l.et_load * (1.0 + l.et_gamma * (l.btct * at).atan())).min(1.0);
-        // cos'α = Vcx/(Vc + εV) (Pacejka 2012 eq. 4.E6) with Vsy = tan α·|Vx|
-        // in either α* mode (MFeval); TNO scales the trail by λ_Fz0 as well.
+        // Aligning moment. cos'α = Vcx/(Vc + εV) (Pacejka 2012 eq. 4.E6)
+        // with Vsy = tan α·|Vx| in either α* mode (MFeval); TNO scales the
+        // trail by λ_Fz0 as well.
         let vsy = vx.abs() * tan_a;
         let cos_a = vx / ((vx * vx + vsy * vsy).sqrt() + EPS_V);
-        let t = l.dt * sgn_vx * mf_cos(l.bt, c.QCZ1, et, at_eq) * cos_a * c.LFZO;
+        // Stages 5 and 6: the trail's outer atan and cosine, beside the
+        // overturning moment's atan and sine (they need Fy), and cos α*.
+        let fz0 = c.FNOMIN;
+        let [o_t, a_mx, ..] = kernels::atan([y_t, c.QSX9 * fy / fz0, 0.0, 0.0]);
+        let [cos_t, sin_mx, cos_astar, _] = kernels::sin_cos(
+            [c.QCZ1 * o_t, c.QSX7 * l.gamma + c.QSX8 * a_mx, astar, 0.0],
+            [true, false, true, false],
+        );
+        let t = l.dt * sgn_vx * cos_t * cos_a * c.LFZO;
         // The residual torque ends in cos α* (MFeval); eq. 4.E75: no cos'α
         // again in Mzr.
-        let mzr = l.dr * sgn_vx * astar.cos() * cos_atan(l.br * ar_eq);
+        let mzr = l.dr * sgn_vx * cos_astar * cos_atan(l.br * ar_eq);
         // TNO (A56): Fy/Fz0 with the unscaled Fz0 and γ itself.
-        let fz0 = c.FNOMIN;
         let r0 = c.UNLOADED_RADIUS;
         let s = r0 * (c.SSZ1 + c.SSZ2 * (fy / fz0) + l.s_gamma) * c.LS;
         let mz = -t * fy_trail + mzr + s * fx;
@@ -577,7 +705,7 @@ impl MagicFormula {
         let mixed = if l.mx_mixed == 0.0 {
             0.0
         } else {
-            l.mx_mixed * (c.QSX7 * l.gamma + c.QSX8 * (c.QSX9 * fy / fz0).atan()).sin()
+            l.mx_mixed * sin_mx
         };
         let mx = l.mx_scale * (l.mx_const + c.QSX3 * fy / fz0 + mixed + l.mx_load_camber)
             + (fy * l.mx_fy + l.mx_gamma);

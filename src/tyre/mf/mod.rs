@@ -50,6 +50,13 @@
 //!   `QSX4..QSX14` at 0 and reduce to the 5.2 form.
 //! - 6.2 differs from 6.1 only in transient and loaded-radius parts not
 //!   modelled here, so both use the same steady-state equations.
+//! - PAC2002 (5.2) files' `LGAX`, `LGAY`, `LGAZ` — ADAMS' camber scaling
+//!   factors of the Fx, Fy and Mz channels — are not read: MFeval has no
+//!   such parameters (the coefficient set of its `readTIR`, as ported to
+//!   MFeval.jl's `TireParams`, lists none), so its 5.2 camber terms are
+//!   scaled by `LKYC`/`LKZC` only, as here. The public files checked
+//!   against it all have them at 1; a file with one of them ≠ 1 is
+//!   evaluated as MFeval evaluates it.
 //!
 //! - `Kyγ0` carries `(1 + PPY5·dpi)` (book eq. 4.E30 and MFeval; TyreDyn
 //!   (van Rossem, 2025) evaluates `1 − PPY5·dpi`, which moves its cambered
@@ -69,6 +76,7 @@
 
 mod coefficients;
 mod formulae;
+mod kernels;
 
 pub use coefficients::MfCoefficients;
 
@@ -228,9 +236,10 @@ impl MagicFormula {
         // The prelude stays on this stack frame (no MfAtLoad moved around).
         let mirror = self.side == TyreSide::Right;
         let gamma = if mirror { -p.camber } else { p.camber };
-        let pre = self.prelude(p.fz, gamma, self.pressure(p.pressure), mu_scale, 1.0);
+        let pressure = self.pressure(p.pressure);
         let alpha = if mirror { p.alpha } else { -p.alpha };
-        to_crate(self.forces_iso(&pre, p.kappa, alpha, p.speed), mirror)
+        let o = self.evaluate_iso(p.fz, gamma, pressure, mu_scale, p.kappa, alpha, p.speed);
+        to_crate(o, mirror)
     }
 
     /// The load-, pressure- and camber-dependent part of the formulae,
@@ -254,7 +263,7 @@ impl MagicFormula {
         // Crate → ISO-W, then the TYRESIDE mirror (camber here, α per point).
         let gamma = if mirror { -camber } else { camber };
         let prelude = (fz > 0.0 && fz.is_finite())
-            .then(|| self.prelude(fz, gamma, self.pressure(pressure), mu_scale, 1.0));
+            .then(|| self.prelude_out_of_line(fz, gamma, self.pressure(pressure), mu_scale, 1.0));
         MfAtLoad {
             tyre: self,
             mirror,

@@ -30,6 +30,7 @@
 //! Units: SI, rad; J is dimensionless (residuals over channel scales).
 
 pub use super::report::*;
+use crate::measured::road::RoadGeometry;
 
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
@@ -594,6 +595,12 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             notes
         },
         cleaning: c.cleaning.clone(),
+        road: c
+            .runs
+            .iter()
+            .zip(&ctx.runs)
+            .map(|(m, r)| RoadGeometry::of(&r.name, m))
+            .collect(),
         base: BaseReport {
             tyres: tyre_source,
             front: bases.all.base.front.clone(),

@@ -188,6 +188,10 @@ pub struct Diagnosis {
     /// Glitches, standstills and crawling found in the runs and what was
     /// excluded, repaired or masked.
     pub cleaning: crate::measured::clean::CleaningReport,
+    /// The road under each replayed piece: the bank measured or estimated
+    /// from the lateral kinematics, the grade from `ax − du/dt`
+    /// ([`crate::measured::road`]); reported, not fitted.
+    pub road: Vec<crate::measured::road::RoadGeometry>,
     /// The base model.
     pub base: BaseReport,
     /// Where the gap lies.

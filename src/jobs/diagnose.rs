@@ -92,6 +92,12 @@ impl DiagnoseReport {
         )];
         out.extend(d.notes.iter().map(|n| format!("  note: {n}")));
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
+        out.extend(
+            d.road
+                .iter()
+                .filter_map(|g| g.line())
+                .map(|l| format!("  road: {l}")),
+        );
         out.extend(findings(d));
         out
     }

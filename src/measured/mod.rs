@@ -6,6 +6,7 @@
 //! a file.
 
 pub mod clean;
+pub mod road;
 
 use std::path::PathBuf;
 

@@ -106,6 +106,12 @@ fn a_withheld_bank_on_the_synthetic_oval_is_named_from_the_bank_channel() {
         "{c}"
     );
     assert_eq!(c["glitches"], serde_json::json!([]), "{c}");
+    let road = &d["road"][0]["bank"];
+    assert_eq!(road["source"], "measured", "{road}");
+    assert!(
+        (road["min"].as_f64().unwrap().to_degrees() + 20.0).abs() < 0.1,
+        "{road}"
+    );
 }
 
 #[test]
@@ -193,4 +199,67 @@ fn the_four_wheel_truth_refuses_a_racing_programme_and_effects_are_checked() {
         stderr(&o)
     );
     assert!(!out.exists());
+}
+
+#[test]
+fn without_a_bank_column_the_bank_is_estimated_from_the_lateral_kinematics() {
+    // The oval's logs with the bank column dropped, as a logger without an
+    // inertial roll channel records them: the diagnosis cannot fit the
+    // bank profile (a note says so) but reports the bank it reads from
+    // ay − u·r, an estimate, against the measured 20°.
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(
+        dir.path(),
+        "oval",
+        &[
+            "--programme",
+            "oval",
+            "--effects",
+            "bank_profile",
+            "--seed",
+            "2",
+        ],
+    );
+    for e in fs::read_dir(c.join("runs")).unwrap() {
+        let p = e.unwrap().path();
+        let text = fs::read_to_string(&p).unwrap();
+        let cut: String = text
+            .lines()
+            .map(|l| l.rsplit_once(',').unwrap().0.to_string() + "\n")
+            .collect();
+        assert!(cut.starts_with("t,speed,steer,yaw_rate,ay,ax\n"));
+        fs::write(&p, cut).unwrap();
+    }
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap() + "effects = [\"sensor_bias\", \"bank_profile\"]\n";
+    fs::write(&v, text).unwrap();
+    let (stdout, d) = diagnose_campaign(&c);
+    let notes = d["notes"].to_string();
+    assert!(
+        notes.contains("bank_profile: not a candidate: no run has a bank channel"),
+        "{notes}"
+    );
+    let road = d["road"].as_array().unwrap();
+    assert_eq!(road.len(), 4, "three runs, the stop split in two: {road:?}");
+    for r in road {
+        let b = &r["bank"];
+        assert_eq!(b["source"], "lateral_kinematics", "{r}");
+        // Turns at −20°, straights at 0°. The estimate leaves out v̇: the
+        // open-loop driver's car slides a little on the banking where the
+        // bank comes and goes (up to 3° of error there, measured against
+        // the bank column), none on the flat straights.
+        let min = b["min"].as_f64().unwrap().to_degrees();
+        let max = b["max"].as_f64().unwrap().to_degrees();
+        assert!((min + 20.0).abs() < 3.5, "{r}");
+        assert!(max.abs() < 1.0, "{r}");
+        assert_eq!(r["grade"]["source"], "longitudinal_kinematics", "{r}");
+        assert!(
+            r["grade"]["max"].as_f64().unwrap().abs() < 0.5f64.to_radians(),
+            "{r}"
+        );
+    }
+    assert!(
+        stdout.contains("road: ") && stdout.contains("bank estimated from ay − u·r"),
+        "{stdout}"
+    );
 }

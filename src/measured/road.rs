@@ -1,0 +1,310 @@
+//! The road's geometry under a measured run, from its own channels: the
+//! bank from the `bank` column when the run has one, else an estimate from
+//! the kinematic mismatch of the lateral channels; the grade from the
+//! mismatch of `ax` and the speed's derivative. Reported, not fitted: the
+//! diagnosis's `bank_profile` candidate replays the measured bank only.
+//!
+//! Kinematics (ISO 8855, flat-road 2-DOF terms; `FORMATS.md` signs): a
+//! body-fixed accelerometer reads the specific force, so on a road banked
+//! by θ (positive: left edge higher) `a_y = u·r + v̇ + g·sin θ`, and on a
+//! grade γ (positive: uphill, nose up) `a_x = u̇ + g·sin γ`. Hence the
+//! estimates
+//! - bank: `sin θ ≈ (a_y − u·r)/g`, leaving out `v̇ = u·β̇` (zero on
+//!   average over a corner, not at its entry and exit);
+//! - grade: `sin γ = (a_x − u̇)/g`, `u̇` by central differences.
+//!
+//! Both are smoothed by a centred moving average over
+//! [`SMOOTHING_SECONDS`] (the sensors' noise and the `v̇` transients; within
+//! half a window of a piece's ends the average is one-sided), and
+//! they carry what the kinematics leaves out: the body roll and pitch of an
+//! accelerometer that rolls and pitches with the body (about `g·φ` and
+//! `g·θ_pitch`, a few tenths of a degree per m/s²), and sensor offsets (an
+//! `a_y` offset of 0.1 m/s² reads as 0.6° of bank). Masked samples are
+//! left out. Units: rad.
+
+use super::MeasuredRun;
+use serde::Serialize;
+
+/// Standard gravity, m/s².
+const G: f64 = 9.80665;
+
+/// Width of the centred moving average of the estimates, s.
+pub const SMOOTHING_SECONDS: f64 = 1.0;
+
+/// Where a road angle comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AngleSource {
+    /// The run's `bank` column.
+    Measured,
+    /// The kinematic mismatch of the lateral channels (`a_y − u·r`).
+    LateralKinematics,
+    /// The mismatch of `a_x` and the speed's derivative.
+    LongitudinalKinematics,
+}
+
+impl AngleSource {
+    /// In words, for summaries.
+    pub fn words(self) -> &'static str {
+        match self {
+            AngleSource::Measured => "measured",
+            AngleSource::LateralKinematics => "estimated from ay − u·r",
+            AngleSource::LongitudinalKinematics => "estimated from ax − du/dt",
+        }
+    }
+}
+
+/// A road angle along a run, summarised.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct AngleProfile {
+    /// Where it comes from.
+    pub source: AngleSource,
+    /// Mean, rad.
+    pub mean: f64,
+    /// Least, rad.
+    pub min: f64,
+    /// Greatest, rad.
+    pub max: f64,
+    /// Samples it is taken over.
+    pub samples: usize,
+}
+
+/// The road under one run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RoadGeometry {
+    /// Run name.
+    pub run: String,
+    /// Bank (positive: left edge higher); None without `bank` and `ay`.
+    pub bank: Option<AngleProfile>,
+    /// Grade (positive: uphill); None without `ax`.
+    pub grade: Option<AngleProfile>,
+}
+
+impl RoadGeometry {
+    /// The road under `run`, named `name`.
+    pub fn of(name: &str, run: &MeasuredRun) -> Self {
+        let bank = match (&run.bank, &run.ay) {
+            (Some(b), _) => profile(AngleSource::Measured, b.clone(), &[]),
+            (None, Some(ay)) => profile(
+                AngleSource::LateralKinematics,
+                bank_estimate(run, ay),
+                &run.masked,
+            ),
+            (None, None) => None,
+        };
+        let grade = run.ax.as_ref().and_then(|ax| {
+            profile(
+                AngleSource::LongitudinalKinematics,
+                grade_estimate(run, ax),
+                &run.masked,
+            )
+        });
+        Self {
+            run: name.to_string(),
+            bank,
+            grade,
+        }
+    }
+
+    /// One line for a summary, None when neither angle is known.
+    pub fn line(&self) -> Option<String> {
+        let part = |what: &str, p: &AngleProfile| {
+            format!(
+                "{what} {} {:.1}° to {:.1}° (mean {:.1}°)",
+                p.source.words(),
+                p.min.to_degrees(),
+                p.max.to_degrees(),
+                p.mean.to_degrees()
+            )
+        };
+        let parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
+            .into_iter()
+            .filter_map(|(w, p)| p.as_ref().map(|p| part(w, p)))
+            .collect();
+        (!parts.is_empty()).then(|| format!("{}: {}", self.run, parts.join("; ")))
+    }
+}
+
+/// `asin((a_y − u·r)/g)` smoothed, rad per sample.
+pub fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
+    let raw: Vec<f64> = (0..run.t.len())
+        .map(|k| (ay[k] - run.speed[k] * run.yaw_rate[k]) / G)
+        .collect();
+    smooth(&run.t, &raw, &run.masked)
+        .into_iter()
+        .map(|s| s.clamp(-1.0, 1.0).asin())
+        .collect()
+}
+
+/// `asin((a_x − u̇)/g)` smoothed, rad per sample.
+pub fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
+    let n = run.t.len();
+    let raw: Vec<f64> = (0..n)
+        .map(|k| {
+            let (i, j) = (k.saturating_sub(1), (k + 1).min(n - 1));
+            let du = if j > i {
+                (run.speed[j] - run.speed[i]) / (run.t[j] - run.t[i])
+            } else {
+                0.0
+            };
+            (ax[k] - du) / G
+        })
+        .collect();
+    // `ax` is not among the masked response channels: only the spans the
+    // cleaning masked in the others are left out with them.
+    smooth(&run.t, &raw, &run.masked)
+        .into_iter()
+        .map(|s| s.clamp(-1.0, 1.0).asin())
+        .collect()
+}
+
+/// Centred moving average over [`SMOOTHING_SECONDS`] by time, masked
+/// samples left out (a sample with no unmasked neighbour in its window is
+/// NaN).
+fn smooth(t: &[f64], v: &[f64], masked: &[usize]) -> Vec<f64> {
+    let half = 0.5 * SMOOTHING_SECONDS;
+    let keep: Vec<bool> = (0..v.len())
+        .map(|k| masked.binary_search(&k).is_err() && v[k].is_finite())
+        .collect();
+    // Running sums over the kept samples make the window O(1) per sample.
+    let mut sum = vec![0.0; v.len() + 1];
+    let mut count = vec![0usize; v.len() + 1];
+    for k in 0..v.len() {
+        sum[k + 1] = sum[k] + if keep[k] { v[k] } else { 0.0 };
+        count[k + 1] = count[k] + usize::from(keep[k]);
+    }
+    (0..v.len())
+        .map(|k| {
+            let lo = t.partition_point(|x| *x < t[k] - half);
+            let hi = t.partition_point(|x| *x <= t[k] + half);
+            let n = count[hi] - count[lo];
+            if n == 0 {
+                f64::NAN
+            } else {
+                (sum[hi] - sum[lo]) / n as f64
+            }
+        })
+        .collect()
+}
+
+/// The summary of an angle series over its kept, finite samples.
+fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AngleProfile> {
+    let kept: Vec<f64> = v
+        .iter()
+        .enumerate()
+        .filter(|(k, x)| x.is_finite() && masked.binary_search(k).is_err())
+        .map(|(_, x)| *x)
+        .collect();
+    if kept.is_empty() {
+        return None;
+    }
+    Some(AngleProfile {
+        source,
+        mean: kept.iter().sum::<f64>() / kept.len() as f64,
+        min: kept.iter().copied().fold(f64::INFINITY, f64::min),
+        max: kept.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        samples: kept.len(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::PathBuf;
+
+    /// A steady left turn (u = 25 m/s, r = 0.2 rad/s) whose road banks from
+    /// 0 to −10° and back (left edge lower), on a 3 % uphill grade while the
+    /// car speeds up at 1 m/s²: what the accelerometers of a car that
+    /// neither rolls nor pitches read, exactly.
+    fn run() -> (MeasuredRun, Vec<f64>) {
+        let n = 1001;
+        let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+        let bank: Vec<f64> = t
+            .iter()
+            .map(|&t| -10f64.to_radians() * (std::f64::consts::PI * t / 10.0).sin())
+            .collect();
+        let grade = 0.03f64.atan();
+        let speed: Vec<f64> = t.iter().map(|&t| 25.0 + t).collect();
+        let r = 0.2;
+        let ay = (0..n).map(|k| speed[k] * r + G * bank[k].sin()).collect();
+        let ax = vec![1.0 + G * grade.sin(); n];
+        (
+            MeasuredRun {
+                path: PathBuf::from("turn.csv"),
+                t,
+                yaw_rate: vec![r; n],
+                steer: vec![0.02; n],
+                speed,
+                ay: Some(ay),
+                beta: None,
+                roll: None,
+                bank: None,
+                ax: Some(ax),
+                masked: Vec::new(),
+            },
+            bank,
+        )
+    }
+
+    #[test]
+    fn the_bank_and_grade_of_exact_readings_come_back() {
+        let (r, bank) = run();
+        let est = bank_estimate(&r, r.ay.as_ref().unwrap());
+        // The 1 s average of a 10 s half-sine differs from it by at most
+        // its curvature over the window, (π/10)²·(0.5²/6)·10° ≈ 0.041°,
+        // plus the sine's curvature (the average is taken of sin θ).
+        // Within half a window of the ends the average is one-sided.
+        for k in 50..r.t.len() - 50 {
+            assert!(
+                (est[k] - bank[k]).abs() < 0.045f64.to_radians(),
+                "t {}: {} vs {}",
+                r.t[k],
+                est[k].to_degrees(),
+                bank[k].to_degrees()
+            );
+        }
+        let g = RoadGeometry::of("turn", &r);
+        let b = g.bank.unwrap();
+        assert_eq!(b.source, AngleSource::LateralKinematics);
+        assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
+        let gr = g.grade.unwrap();
+        assert_eq!(gr.source, AngleSource::LongitudinalKinematics);
+        for x in [gr.mean, gr.min, gr.max] {
+            assert!((x - 0.03f64.atan()).abs() < 1e-9, "{gr:?}");
+        }
+        let line = g.line().unwrap();
+        assert!(
+            line.contains("bank estimated from ay − u·r -10.0° to "),
+            "{line}"
+        );
+        assert!(
+            line.contains("grade estimated from ax − du/dt 1.7° to 1.7°"),
+            "{line}"
+        );
+    }
+
+    #[test]
+    fn a_bank_column_is_reported_as_measured_and_masked_samples_are_left_out() {
+        let (mut r, bank) = run();
+        r.bank = Some(bank);
+        let g = RoadGeometry::of("turn", &r);
+        assert_eq!(g.bank.unwrap().source, AngleSource::Measured);
+        // A 0.5 s glitch of ay at 9 g, masked: the estimate does not see it.
+        let (mut r, _) = run();
+        let ay = r.ay.as_mut().unwrap();
+        for a in &mut ay[400..450] {
+            *a = 90.0;
+        }
+        r.masked = (400..450).collect();
+        let est = bank_estimate(&r, r.ay.as_ref().unwrap());
+        assert!(
+            est.iter().all(|b| b.is_finite() && b.abs() < 0.2),
+            "no glitch in it"
+        );
+        // Without ay and bank, no bank; without ax, no grade.
+        let (mut r, _) = run();
+        (r.ay, r.ax) = (None, None);
+        let g = RoadGeometry::of("turn", &r);
+        assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
+    }
+}

@@ -65,6 +65,12 @@ pub struct AngleProfile {
     pub min: f64,
     /// Greatest, rad.
     pub max: f64,
+    /// 5th percentile, rad.
+    pub p05: f64,
+    /// Median, rad.
+    pub median: f64,
+    /// 95th percentile, rad.
+    pub p95: f64,
     /// Samples it is taken over.
     pub samples: usize,
 }
@@ -108,14 +114,22 @@ impl RoadGeometry {
 
     /// One line for a summary, None when neither angle is known.
     pub fn line(&self) -> Option<String> {
-        let part = |what: &str, p: &AngleProfile| {
-            format!(
-                "{what} {} {:.1}° to {:.1}° (mean {:.1}°)",
-                p.source.words(),
+        // An estimate's extremes are its worst samples (a sensor lag in a
+        // hard stop reads as a steep grade): the line shows its bulk.
+        let part = |what: &str, p: &AngleProfile| match p.source {
+            AngleSource::Measured => format!(
+                "{what} measured {:.1}° to {:.1}° (mean {:.1}°)",
                 p.min.to_degrees(),
                 p.max.to_degrees(),
                 p.mean.to_degrees()
-            )
+            ),
+            _ => format!(
+                "{what} {} {:.1}° to {:.1}° (5–95 %; median {:.1}°)",
+                p.source.words(),
+                p.p05.to_degrees(),
+                p.p95.to_degrees(),
+                p.median.to_degrees()
+            ),
         };
         let parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
             .into_iter()
@@ -198,11 +212,17 @@ fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AnglePr
     if kept.is_empty() {
         return None;
     }
+    let mut sorted = kept.clone();
+    sorted.sort_by(f64::total_cmp);
+    let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
     Some(AngleProfile {
         source,
         mean: kept.iter().sum::<f64>() / kept.len() as f64,
-        min: kept.iter().copied().fold(f64::INFINITY, f64::min),
-        max: kept.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        min: sorted[0],
+        max: sorted[sorted.len() - 1],
+        p05: at(0.05),
+        median: at(0.5),
+        p95: at(0.95),
         samples: kept.len(),
     })
 }
@@ -269,18 +289,21 @@ mod tests {
         assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
         let gr = g.grade.unwrap();
         assert_eq!(gr.source, AngleSource::LongitudinalKinematics);
-        for x in [gr.mean, gr.min, gr.max] {
+        for x in [gr.mean, gr.min, gr.max, gr.p05, gr.median, gr.p95] {
             assert!((x - 0.03f64.atan()).abs() < 1e-9, "{gr:?}");
         }
         let line = g.line().unwrap();
         assert!(
-            line.contains("bank estimated from ay − u·r -10.0° to "),
+            line.contains("bank estimated from ay − u·r -9.9° to "),
             "{line}"
         );
         assert!(
-            line.contains("grade estimated from ax − du/dt 1.7° to 1.7°"),
+            line.contains("grade estimated from ax − du/dt 1.7° to 1.7° (5–95 %; median 1.7°)"),
             "{line}"
         );
+        // The bank's 5th percentile of a half-sine to −10°: −10°·cos(0.05·π/2).
+        let p05 = (-10f64 * (0.05 * std::f64::consts::FRAC_PI_2).cos()).to_radians();
+        assert!((b.p05 - p05).abs() < 0.05f64.to_radians(), "{b:?}");
     }
 
     #[test]

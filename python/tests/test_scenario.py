@@ -75,8 +75,9 @@ def test_keywords_with_every_table_equal_the_file(root, tmp_path):
 
 def test_written_scenario_runs_on_the_cli_path_to_the_same_result(root, tmp_path):
     sc = handling.Scenario(**sedan_step(root, tyres=handling.Tyre.load(root / "tyres" / "gim.toml")))
-    path = sc.write(tmp_path)
-    assert (tmp_path / "front_tyre.toml").is_file()
+    # A folder that does not exist yet is created.
+    path = sc.write(tmp_path / "new" / "folder")
+    assert (tmp_path / "new" / "folder" / "front_tyre.toml").is_file()
     assert open(path).read() == sc.to_toml()
     same_run(handling.simulate(path, pandas=False), handling.simulate(sc, pandas=False))
 

@@ -140,11 +140,18 @@ impl Prepared {
     }
 
     /// The replay's start (sideslip, yaw rate): the first measured state less
-    /// the model's sensor offsets.
+    /// the model's sensor offsets. A run without a sideslip channel starts
+    /// at 0 whatever the sideslip offset: else the offset of a channel the
+    /// run lacks would steer its start and be "fitted" from that.
     fn start_of(&self, model: &Augmented) -> (f64, f64) {
         let sensors = &model.effects.sensors;
+        let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
         (
-            self.start.0 - sensors.beta_bias,
+            if beta_measured {
+                self.start.0 - sensors.beta_bias
+            } else {
+                self.start.0
+            },
             self.start.1 - sensors.yaw_rate_bias,
         )
     }

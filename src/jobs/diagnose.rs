@@ -5,7 +5,9 @@
 //! |ay| level and speed band) and the overlays of the worst runs
 //! (`overlays.png`).
 
-use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
+use crate::diagnose::diagnosis::{
+    observed_channel, visible_effects, work_units, Diagnosis, PartAxis, Shrinkage,
+};
 use crate::diagnose::effects::joined;
 use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
@@ -28,7 +30,7 @@ pub struct DiagnoseReport {
     /// Runs in the campaign.
     #[serde(skip)]
     pub runs: usize,
-    /// Candidate effects.
+    /// Candidate effects fitted (the runs could show them).
     #[serde(skip)]
     pub effects: usize,
     /// How the runs were cleaned, in lines.
@@ -61,7 +63,8 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     Ok(DiagnoseReport {
         diagnosis,
         runs: campaign.runs.len(),
-        effects: campaign.effects.len(),
+        // The candidates fitted: those the runs can show.
+        effects: visible_effects(&campaign).0.len(),
         cleaning: campaign.cleaning.summary(5),
         seconds: t0.elapsed().as_secs_f64(),
         out_dir,

@@ -312,9 +312,10 @@ impl FleetReport {
                 )
             });
         }
+        let n = self.campaigns.len();
         for e in &self.recurring {
             out.push(format!(
-                "  recurring: {} — in {} verdicts, best single candidate in {}",
+                "  {}: in the verdict of {} of {n} campaigns, the best single candidate in {} of {n}",
                 e.effect.name(),
                 e.verdicts,
                 e.best

@@ -131,10 +131,13 @@ impl RoadGeometry {
                 p.median.to_degrees()
             ),
         };
-        let parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
+        let mut parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
             .into_iter()
             .filter_map(|(w, p)| p.as_ref().map(|p| part(w, p)))
             .collect();
+        if self.bank.is_none() && !parts.is_empty() {
+            parts.insert(0, "bank unknown (no bank or ay column)".into());
+        }
         (!parts.is_empty()).then(|| format!("{}: {}", self.run, parts.join("; ")))
     }
 }

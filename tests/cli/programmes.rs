@@ -108,8 +108,10 @@ fn a_withheld_bank_on_the_synthetic_oval_is_named_from_the_bank_channel() {
     assert_eq!(c["glitches"], serde_json::json!([]), "{c}");
     let road = &d["road"][0]["bank"];
     assert_eq!(road["source"], "measured", "{road}");
+    // The channel's 5th percentile: the 20° turns, within its noise
+    // (0.002 rad, 0.11°).
     assert!(
-        (road["min"].as_f64().unwrap().to_degrees() + 20.0).abs() < 0.1,
+        (road["p05"].as_f64().unwrap().to_degrees() + 20.0).abs() < 0.5,
         "{road}"
     );
 }

@@ -94,8 +94,9 @@ fn synth_refuses_an_unknown_truth_and_an_effect_the_truth_lacks() {
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
-        e.contains("effect `road_bank`: not one the four-wheel truth's programme can show")
-            && e.contains("roll_camber"),
+        e.contains(
+            "effect `road_bank`: not one the four-wheel truth's handling programme can show"
+        ) && e.contains("roll_camber"),
         "{e}"
     );
     assert!(!out.exists(), "a refused synth writes nothing");

@@ -430,9 +430,10 @@ class Scenario:
         return self._document().text()
 
     def write(self, folder: PathLike) -> str:
-        """Writes ``scenario.toml`` and its tyre files into ``folder`` (an
-        existing folder); returns the scenario file's path, which
+        """Writes ``scenario.toml`` and its tyre files into ``folder``
+        (created if missing); returns the scenario file's path, which
         ``handling simulate`` runs to the same result."""
+        os.makedirs(_path(folder), exist_ok=True)
         path, _ = self._write(_path(folder))
         return path
 

@@ -343,65 +343,57 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     };
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
-    if let Some(logged) = logged_runs(spec.programme, &base) {
+    let runs = if let Some(logged) = logged_runs(spec.programme, &base) {
         if truth != Truth::Augmented {
             return Err(ParamError::without_value(
                 "programme",
                 "the four-wheel truth holds its speed on a flat road: it drives the handling programme only",
             ));
         }
-        let runs = logged
+        logged
             .iter()
             .map(|p| logged_run(&augmented, p, &mut rng, n))
-            .collect();
-        return Ok(finish(
-            spec,
-            truth,
-            vehicle,
-            tyre,
-            runs,
-            &four_wheel,
-            &mut rng,
-        ));
-    }
-    let runs = handling_programme(&base)
-        .into_iter()
-        .map(|(name, m)| {
-            let times: Vec<f64> = (0..)
-                .map(|i| 3.0 + 0.01 * i as f64)
-                .take_while(|t| *t <= m.end_time() + 1e-9)
-                .collect();
-            let (yaw_rate, ay, beta) = match truth {
-                Truth::Augmented => {
-                    let drive = Drive::new(&m, 1e-3);
-                    let response = augmented.simulate(&drive, [0.0; 6]);
-                    let o = augmented.observe(&response, &times);
-                    (o.yaw_rate, o.ay, o.beta)
+            .collect()
+    } else {
+        handling_programme(&base)
+            .into_iter()
+            .map(|(name, m)| {
+                let times: Vec<f64> = (0..)
+                    .map(|i| 3.0 + 0.01 * i as f64)
+                    .take_while(|t| *t <= m.end_time() + 1e-9)
+                    .collect();
+                let (yaw_rate, ay, beta) = match truth {
+                    Truth::Augmented => {
+                        let drive = Drive::new(&m, 1e-3);
+                        let response = augmented.simulate(&drive, [0.0; 6]);
+                        let o = augmented.observe(&response, &times);
+                        (o.yaw_rate, o.ay, o.beta)
+                    }
+                    Truth::FourWheel => {
+                        let response = four_wheel.simulate(&m, 1e-3);
+                        let o = four_wheel.observe(&response, &times);
+                        (o.yaw_rate, o.ay, o.beta)
+                    }
+                };
+                let mut noisy = |v: &[f64], s: f64| -> Vec<f64> {
+                    v.iter().map(|x| x + s * gauss(&mut rng)).collect()
+                };
+                MeasuredRun {
+                    path: PathBuf::from(format!("{name}.csv")),
+                    speed: times.iter().map(|&t| m.speed(t)).collect(),
+                    steer: times.iter().map(|&t| m.steer(t)).collect(),
+                    yaw_rate: noisy(&yaw_rate, n.yaw_rate),
+                    ay: Some(noisy(&ay, n.ay)),
+                    beta: Some(noisy(&beta, n.beta)),
+                    roll: None,
+                    bank: None,
+                    ax: None,
+                    masked: Vec::new(),
+                    t: times,
                 }
-                Truth::FourWheel => {
-                    let response = four_wheel.simulate(&m, 1e-3);
-                    let o = four_wheel.observe(&response, &times);
-                    (o.yaw_rate, o.ay, o.beta)
-                }
-            };
-            let mut noisy = |v: &[f64], s: f64| -> Vec<f64> {
-                v.iter().map(|x| x + s * gauss(&mut rng)).collect()
-            };
-            MeasuredRun {
-                path: PathBuf::from(format!("{name}.csv")),
-                speed: times.iter().map(|&t| m.speed(t)).collect(),
-                steer: times.iter().map(|&t| m.steer(t)).collect(),
-                yaw_rate: noisy(&yaw_rate, n.yaw_rate),
-                ay: Some(noisy(&ay, n.ay)),
-                beta: Some(noisy(&beta, n.beta)),
-                roll: None,
-                bank: None,
-                ax: None,
-                masked: Vec::new(),
-                t: times,
-            }
-        })
-        .collect();
+            })
+            .collect()
+    };
     Ok(finish(
         spec,
         truth,

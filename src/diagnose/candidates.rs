@@ -301,11 +301,22 @@ pub(super) fn parameter_values(
     named
         .chain(roll.into_iter().flatten())
         .enumerate()
-        .map(|(i, (group, q))| ParameterValue {
-            name: format!("{group}.{}", q.name),
-            unit: q.unit,
-            value: f.params[skip + i],
-            std_error: f.std_errors[skip + i],
+        .map(|(i, (group, q))| {
+            let value = f.params[skip + i];
+            ParameterValue {
+                name: format!("{group}.{}", q.name),
+                unit: q.unit,
+                value,
+                std_error: f.std_errors[skip + i],
+                at_bound: at_bound(value, q.bounds),
+            }
         })
         .collect()
+}
+
+/// Whether `value` lies on one of `bounds` (within 1e-9 of their span: the
+/// bounded fits stop exactly on a bound they press against).
+fn at_bound(value: f64, (lo, hi): (f64, f64)) -> bool {
+    let tol = 1e-9 * (hi - lo);
+    (value - lo).abs() <= tol || (hi - value).abs() <= tol
 }

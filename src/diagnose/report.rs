@@ -24,6 +24,9 @@ pub struct ParameterValue {
     /// Its standard error (from the Jacobian; residual autocorrelation makes
     /// it optimistic).
     pub std_error: f64,
+    /// The value sits on its search bound: the data would take it further,
+    /// and the standard error says nothing about how far.
+    pub at_bound: bool,
 }
 
 /// Held-out RMS of one channel.

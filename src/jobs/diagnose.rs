@@ -126,7 +126,12 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             .parameters
             .iter()
             .map(|p| {
-                if p.std_error.is_finite() {
+                if p.at_bound {
+                    format!(
+                        "{} = {:.4} {} (at its search bound: the data would take it further)",
+                        p.name, p.value, p.unit
+                    )
+                } else if p.std_error.is_finite() {
                     format!(
                         "{} = {:.4} ± {:.2e} {}",
                         p.name, p.value, p.std_error, p.unit

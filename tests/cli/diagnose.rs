@@ -359,6 +359,22 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     // A 2-DOF model of a racing car driven hard does not match to the noise.
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert_eq!(d["ranking"].as_array().unwrap().len(), 2);
+    // A parameter on its search bound (relaxation length 0–3 m, delay
+    // 0–0.3 s) is flagged, one inside them is not; the log wants no tyre
+    // lag, so that one sits on its lower bound.
+    for r in d["ranking"].as_array().unwrap() {
+        let p = &r["parameters"][0];
+        let (lo, hi) = match r["effect"].as_str().unwrap() {
+            "relaxation_length" => (0.0, 3.0),
+            _ => (0.0, 0.3),
+        };
+        let v = p["value"].as_f64().unwrap();
+        let on = (v - lo).abs() < 1e-9 || (hi - v).abs() < 1e-9;
+        assert_eq!(p["at_bound"], on, "{p}");
+        if r["effect"] == "relaxation_length" {
+            assert_eq!(p["at_bound"], true, "{p}");
+        }
+    }
     for f in ["gap_map.png", "overlays.png"] {
         assert!(out.join(f).is_file());
     }

@@ -493,7 +493,7 @@ const VISIBLE_AX: f64 = 0.5;
 /// The campaign's candidate effects that its runs can show, and a note for
 /// each one left out (an effect of braking and throttle without a
 /// longitudinal acceleration, a bank profile without a `bank` channel).
-pub(crate) fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
+fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
     let accelerates = c.runs.iter().any(|r| match &r.ax {
         Some(ax) => ax.iter().any(|a| a.abs() > VISIBLE_AX),
         None => {

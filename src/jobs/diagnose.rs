@@ -5,9 +5,7 @@
 //! |ay| level and speed band) and the overlays of the worst runs
 //! (`overlays.png`).
 
-use crate::diagnose::diagnosis::{
-    observed_channel, visible_effects, work_units, Diagnosis, PartAxis, Shrinkage,
-};
+use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
 use crate::diagnose::effects::joined;
 use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
@@ -61,10 +59,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         crate::diagnose::diagnose(&campaign, Some(progress.counter()))?
     };
     Ok(DiagnoseReport {
+        // The candidates fitted (those the runs can show): every one is
+        // ranked.
+        effects: diagnosis.ranking.len(),
         diagnosis,
         runs: campaign.runs.len(),
-        // The candidates fitted: those the runs can show.
-        effects: visible_effects(&campaign).0.len(),
         cleaning: campaign.cleaning.summary(5),
         seconds: t0.elapsed().as_secs_f64(),
         out_dir,

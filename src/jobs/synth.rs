@@ -78,12 +78,8 @@ pub fn run(
         noise: Noise::default(),
         programme,
     };
-    if truth == Truth::FourWheel && programme.logged() {
-        return Err(Error::Options(format!(
-            "the four-wheel truth holds its speed on a flat road: it drives the handling programme, not `{}`",
-            programme.name()
-        )));
-    }
+    // Before the effects: a truth that cannot drive the programme has none.
+    truth.drives(programme)?;
     for k in kinds {
         let values = truth.values(programme, k).ok_or_else(|| {
             let all: Vec<&str> = truth.effects(programme).iter().map(|k| k.name()).collect();

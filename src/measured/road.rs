@@ -23,10 +23,8 @@
 //! left out. Units: rad.
 
 use super::MeasuredRun;
+use crate::vehicle::G;
 use serde::Serialize;
-
-/// Standard gravity, m/s².
-const G: f64 = 9.80665;
 
 /// Width of the centred moving average of the estimates, s.
 pub const SMOOTHING_SECONDS: f64 = 1.0;
@@ -147,10 +145,7 @@ pub fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
     let raw: Vec<f64> = (0..run.t.len())
         .map(|k| (ay[k] - run.speed[k] * run.yaw_rate[k]) / G)
         .collect();
-    smooth(&run.t, &raw, &run.masked)
-        .into_iter()
-        .map(|s| s.clamp(-1.0, 1.0).asin())
-        .collect()
+    smoothed_angle(&run.t, &raw, &run.masked)
 }
 
 /// `asin((a_x − u̇)/g)` smoothed, rad per sample.
@@ -169,7 +164,12 @@ pub fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
         .collect();
     // `ax` is not among the masked response channels: only the spans the
     // cleaning masked in the others are left out with them.
-    smooth(&run.t, &raw, &run.masked)
+    smoothed_angle(&run.t, &raw, &run.masked)
+}
+
+/// The angle whose sine is `sine` smoothed ([`smooth`]), rad per sample.
+fn smoothed_angle(t: &[f64], sine: &[f64], masked: &[usize]) -> Vec<f64> {
+    smooth(t, sine, masked)
         .into_iter()
         .map(|s| s.clamp(-1.0, 1.0).asin())
         .collect()

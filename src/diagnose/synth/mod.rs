@@ -100,6 +100,21 @@ impl Truth {
         Self::ALL.into_iter().find(|t| t.name() == name)
     }
 
+    /// Whether this truth can drive `programme`: the four-wheel truth holds
+    /// its speed on a flat road, so it drives the handling programme only.
+    pub fn drives(self, programme: Programme) -> Result<(), ParamError> {
+        if self == Truth::FourWheel && programme.logged() {
+            return Err(ParamError::without_value(
+                "programme",
+                &format!(
+                    "the four-wheel truth holds its speed on a flat road: it drives the handling programme, not `{}`",
+                    programme.name()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// The effects this truth can switch on in `programme`.
     pub fn effects(self, programme: Programme) -> Vec<EffectKind> {
         EffectKind::ALL
@@ -323,8 +338,9 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
 }
 
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
-/// the effects asked for.
+/// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
+    truth.drives(spec.programme)?;
     let vehicle = Vehicle::compact_sedan();
     let tyre = truth_tyre();
     let base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
@@ -344,12 +360,6 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
     let runs = if let Some(logged) = logged_runs(spec.programme, &base) {
-        if truth != Truth::Augmented {
-            return Err(ParamError::without_value(
-                "programme",
-                "the four-wheel truth holds its speed on a flat road: it drives the handling programme only",
-            ));
-        }
         logged
             .iter()
             .map(|p| logged_run(&augmented, p, &mut rng, n))
@@ -375,9 +385,7 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
                         (o.yaw_rate, o.ay, o.beta)
                     }
                 };
-                let mut noisy = |v: &[f64], s: f64| -> Vec<f64> {
-                    v.iter().map(|x| x + s * gauss(&mut rng)).collect()
-                };
+                let mut noisy = |v: &[f64], s: f64| with_noise(v, s, &mut rng);
                 MeasuredRun {
                     path: PathBuf::from(format!("{name}.csv")),
                     speed: times.iter().map(|&t| m.speed(t)).collect(),
@@ -447,6 +455,11 @@ fn finish(
 const AX_NOISE: f64 = 0.05;
 const BANK_NOISE: f64 = 0.002;
 
+/// `v` plus Gaussian noise of standard deviation `s`, drawn in order.
+fn with_noise(v: &[f64], s: f64, rng: &mut ChaCha8Rng) -> Vec<f64> {
+    v.iter().map(|x| x + s * gauss(rng)).collect()
+}
+
 /// One run of a logged programme on the augmented truth, with noise.
 fn logged_run(
     truth: &Augmented,
@@ -463,8 +476,7 @@ fn logged_run(
     let x0 = truth.initial_state(&drive, 0.0, 0.0);
     let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
     let (yaw_rate, ay) = (o.yaw_rate, o.ay);
-    let mut noisy =
-        |v: &[f64], s: f64| -> Vec<f64> { v.iter().map(|x| x + s * gauss(rng)).collect() };
+    let mut noisy = |v: &[f64], s: f64| with_noise(v, s, rng);
     MeasuredRun {
         path: PathBuf::from(format!("{}.csv", p.name)),
         speed: p.speed.clone(),

@@ -8,6 +8,7 @@ use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
 use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::model::Observed;
+use crate::optim::local::Residuals;
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -40,6 +41,17 @@ impl Context<'_> {
         }
     }
 
+    /// The parameter vector of `kinds` switched off (axle characteristics
+    /// and roll dynamics at the base's).
+    pub(super) fn off(&self, kinds: &[EffectKind]) -> Vec<f64> {
+        Setting {
+            base: self.bases,
+            kinds: kinds.to_vec(),
+            fixed: EffectSet::default(),
+        }
+        .off()
+    }
+
     pub(super) fn training(&self, fold: usize) -> Vec<&Prepared> {
         (0..self.runs.len())
             .filter(|i| !self.folds[fold].contains(i))
@@ -51,13 +63,16 @@ impl Context<'_> {
     /// every fold, refitted from the all-run optimum ([`refit`]: its
     /// linearisation first, Levenberg–Marquardt within a budget when that
     /// does not converge; non-converged folds are counted and warned about).
-    /// A `start` skips the swarm: the polish starts from it (combinations
-    /// start from their members' single fits).
+    /// Given `starts`, the swarm is skipped: the polish starts from the
+    /// one of lowest cost (a combination from its members' single fits, or
+    /// from the set it extends with the added effect off, whichever fits
+    /// better: the first can be far off when the members' fits traded
+    /// against different axle characteristics).
     pub(super) fn score(
         &self,
         kinds: Vec<EffectKind>,
         fixed: EffectSet,
-        start: Option<Vec<f64>>,
+        starts: &[Vec<f64>],
         salt: u64,
     ) -> Scored {
         let s = Setting {
@@ -75,8 +90,13 @@ impl Context<'_> {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
         };
-        let full = match start {
-            Some(p) => fit(&problem, &p, None, Polish::LevenbergMarquardt),
+        let best_start = starts
+            .iter()
+            .map(|p| (problem.cost(p), p))
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, p)| p);
+        let full = match best_start {
+            Some(p) => fit(&problem, p, None, Polish::LevenbergMarquardt),
             None => fit(
                 &problem,
                 &s.off(),
@@ -220,7 +240,7 @@ pub(super) fn singles(ctx: &Context, effects: &[EffectKind]) -> (Vec<Scored>, Ve
     let singles: Vec<Scored> = effects
         .par_iter()
         .enumerate()
-        .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), None, i as u64 + 1))
+        .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), &[], i as u64 + 1))
         .collect();
     let scales = ctx.scales;
     let mut order: Vec<usize> = (0..singles.len()).collect();

@@ -329,12 +329,23 @@ fn greedy(
                 let mut kinds = cur.kinds.clone();
                 kinds.push(*e);
                 let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
-                let start = combined_start(
+                let members = combined_start(
                     (&cur.kinds, &cur.full.params),
                     (*e, &single.full.params),
                     base.axle_count,
                 );
-                ctx.score(kinds, EffectSet::default(), Some(start), 1000 + i as u64)
+                let added_off = ctx.off(&[*e]);
+                let extended = combined_start(
+                    (&cur.kinds, &cur.full.params),
+                    (*e, &added_off),
+                    base.axle_count,
+                );
+                ctx.score(
+                    kinds,
+                    EffectSet::default(),
+                    &[members, extended],
+                    1000 + i as u64,
+                )
             })
             .collect();
         scored.sort_by(|a, b| {
@@ -473,7 +484,7 @@ fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
             .sum();
         (s / n.max(1) as f64).sqrt()
     };
-    let scored = ctx.score(Vec::new(), EffectSet::default(), None, 0);
+    let scored = ctx.score(Vec::new(), EffectSet::default(), &[], 0);
     Baseline {
         j0: scored.heldout.combined(&scales),
         jn: noise_level(&scored.heldout),

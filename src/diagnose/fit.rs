@@ -12,7 +12,11 @@
 //! the start point, so the fit is never worse than the model it starts
 //! from; the diagnosis stops it once its best has settled), polished by
 //! Levenberg–Marquardt; the parameters' standard errors
-//! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`. Units: SI, rad.
+//! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`; the fold refits of
+//! the cross-validation start from the all-run optimum's quadratic model of
+//! the residuals ([`refit`]). Each replay runs on a fixed RK4 grid (smooth
+//! in the parameters) that the model being replayed is stable on
+//! ([`Prepared::drive_for`]). Units: SI, rad.
 
 use super::model::{Augmented, Drive, Observed};
 use crate::measured::MeasuredRun;
@@ -21,7 +25,7 @@ use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
 use crate::optim::stats::{seen_columns, standard_errors};
 use crate::sim::TimeHistory;
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 use std::sync::Mutex;
 
@@ -70,13 +74,41 @@ impl Channel {
     }
 }
 
+/// `h·ρ` a replay's RK4 step keeps to, with `ρ` the model's fastest rate
+/// ([`VehicleModel::fastest_rate`]): inside RK4's stability region
+/// (−2.79 on the real axis, ±2.83 on the imaginary) with a margin for
+/// what that estimate leaves out (load transfer, the slip's own
+/// nonlinearity).
+///
+/// [`VehicleModel::fastest_rate`]: crate::vehicle::VehicleModel::fastest_rate
+pub const STABLE_STEP: f64 = 2.0;
+
+/// Largest number of substeps a replay refines the campaign's step into.
+pub const MAX_SUBSTEPS: usize = 64;
+
+/// The measured inputs a run's replay grids are sampled from.
+#[derive(Debug)]
+struct ReplayInputs {
+    t: Vec<f64>,
+    steer: Vec<f64>,
+    speed: Vec<f64>,
+    ax: Option<Vec<f64>>,
+    bank: Option<Vec<f64>>,
+    /// Lowest and highest speed, m/s.
+    speeds: (f64, f64),
+}
+
 /// A run made ready for repeated replays.
 #[derive(Debug, Clone)]
 pub struct Prepared {
     /// Name (the file).
     pub name: String,
-    /// Its inputs on the replay grid.
+    /// Its inputs on the replay grid of the campaign's step.
     pub drive: Drive,
+    /// The same on grids of 2, 4, 8, … substeps, sampled when a model first
+    /// needs one ([`Prepared::drive_for`]).
+    refined: Vec<std::sync::Arc<std::sync::OnceLock<Drive>>>,
+    inputs: std::sync::Arc<ReplayInputs>,
     /// Times at which residuals are taken, s.
     pub times: Vec<f64>,
     /// Measured channels at those times.
@@ -107,13 +139,27 @@ impl Prepared {
             .into_iter()
             .filter_map(|c| c.of(run).map(|v| (c, idx.iter().map(|&i| v[i]).collect())))
             .collect();
+        let speeds = run
+            .speed
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &u| {
+                (lo.min(u), hi.max(u))
+            });
+        let inputs = ReplayInputs {
+            t: run.t.clone(),
+            steer: run.steer.clone(),
+            speed: run.speed.clone(),
+            ax: run.ax.clone(),
+            bank: run.bank.clone(),
+            speeds,
+        };
         Self {
             name: run.path.display().to_string(),
-            drive: Drive::replay(&run.t, &run.steer, &run.speed, step).with_channels(
-                &run.t,
-                run.ax.as_deref(),
-                run.bank.as_deref(),
-            ),
+            drive: inputs.drive(step),
+            refined: (0..MAX_SUBSTEPS.trailing_zeros())
+                .map(|_| Default::default())
+                .collect(),
+            inputs: std::sync::Arc::new(inputs),
             times,
             measured,
             start: (
@@ -121,6 +167,28 @@ impl Prepared {
                 run.yaw_rate[first],
             ),
         }
+    }
+
+    /// The replay grid `model` is stable on: the campaign's step, halved
+    /// until `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed
+    /// (at most [`MAX_SUBSTEPS`] substeps). Powers of two, so that the grid
+    /// changes only where a fit's parameters cross a doubling of the
+    /// model's stiffness, not with every small step of theirs.
+    pub fn drive_for(&self, model: &Augmented) -> &Drive {
+        let (vehicle, friction) = model.model();
+        let (lo, hi) = self.inputs.speeds;
+        let rho = vehicle
+            .fastest_rate(lo, friction)
+            .max(vehicle.fastest_rate(hi, friction));
+        let mut n = 1;
+        while n < MAX_SUBSTEPS && self.drive.step / n as f64 * rho > STABLE_STEP {
+            n *= 2;
+        }
+        if n == 1 {
+            return &self.drive;
+        }
+        let k = n.trailing_zeros() as usize - 1;
+        self.refined[k].get_or_init(|| self.inputs.drive(self.drive.step / n as f64))
     }
 
     /// Number of residuals of this run.
@@ -134,7 +202,7 @@ impl Prepared {
     pub fn observe(&self, model: &Augmented) -> Observed {
         let (beta, yaw_rate) = self.start_of(model);
         model.observe(
-            &model.simulate_from(&self.drive, beta, yaw_rate),
+            &model.simulate_from(self.drive_for(model), beta, yaw_rate),
             &self.times,
         )
     }
@@ -172,7 +240,7 @@ impl Prepared {
         }
         // Integrated without the lock: evaluations in parallel (a parallel
         // swarm) do not wait for each other, the last one stored wins.
-        let history = model.simulate_from(&self.drive, start.0, start.1);
+        let history = model.simulate_from(self.drive_for(model), start.0, start.1);
         let observed = model.observe(&history, &self.times);
         *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
             model: model.clone(),
@@ -220,6 +288,17 @@ impl Prepared {
             }
         }
         e
+    }
+}
+
+impl ReplayInputs {
+    /// The inputs on the grid of step `step`.
+    fn drive(&self, step: f64) -> Drive {
+        Drive::replay(&self.t, &self.steer, &self.speed, step).with_channels(
+            &self.t,
+            self.ax.as_deref(),
+            self.bank.as_deref(),
+        )
     }
 }
 
@@ -360,14 +439,25 @@ pub struct FitOutcome {
     pub linear: Option<Linearisation>,
 }
 
-/// Data residuals `r` and Jacobian `J` of a problem at a point, rows in the
-/// order of the problem's runs.
+/// Data residuals `r`, their Jacobian `J` and second derivatives of a
+/// problem at a point, rows in the order of the problem's runs: a quadratic
+/// model of every residual, `r(p + δ) ≈ r + J·δ + ½·δᵀ∇²r·δ`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Linearisation {
     /// Residuals.
     pub residuals: Vec<f64>,
     /// Jacobian (finite differences stepping into the box at a bound).
     pub jacobian: DMatrix<f64>,
+    /// Second derivatives `∂²r/∂p_a∂p_b`, one column per pair `a ≤ b` in
+    /// the order of [`pair_index`].
+    pub curvature: DMatrix<f64>,
+}
+
+/// The column of the pair `(a, b)` of `n` parameters in
+/// [`Linearisation::curvature`]: `(0,0), (0,1), …, (0,n−1), (1,1), …`.
+pub fn pair_index(n: usize, a: usize, b: usize) -> usize {
+    let (a, b) = if a <= b { (a, b) } else { (b, a) };
+    a * n - a * (a + 1) / 2 + b
 }
 
 impl FitOutcome {
@@ -477,14 +567,119 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     }
 }
 
-/// The data residuals and their Jacobian at `p`.
+/// The data residuals, their Jacobian and their second derivatives at `p`
+/// (`1 + n + n·(n + 3)/2` replays of the runs, the second differences in
+/// parallel).
 fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(problem: &Problem<F>, p: &[f64]) -> Linearisation {
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
     let jacobian = inward_jacobian(problem, p, &r, &problem.bounds);
+    let curvature = curvature(problem, p, &r);
     Linearisation {
         residuals: r,
         jacobian,
+        curvature,
+    }
+}
+
+/// Step of the second differences, as a share of each parameter's box:
+/// their truncation error is first order in it, and the replays' own
+/// rounding (the load-transfer loop's 1e-9) divided by its square stays
+/// three orders below the curvature of a residual over its box.
+const CURVATURE_STEP: f64 = 1e-3;
+
+/// Second derivatives of the residuals at `p` by forward second
+/// differences, stepping into the box: `(r(p+2h_a) − 2r(p+h_a) + r(p))/h_a²`
+/// and `(r(p+h_a+h_b) − r(p+h_a) − r(p+h_b) + r(p))/(h_a·h_b)`. The replays
+/// are independent: they run in parallel.
+fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    r0: &[f64],
+) -> DMatrix<f64> {
+    use rayon::prelude::*;
+    let n = p.len();
+    let h: Vec<f64> = (0..n)
+        .map(|k| {
+            let (lo, hi) = problem.bounds[k];
+            let h = CURVATURE_STEP * (hi - lo);
+            if p[k] + 2.0 * h > hi {
+                -h
+            } else {
+                h
+            }
+        })
+        .collect();
+    let shifted = |moves: &[(usize, f64)]| {
+        let mut q = p.to_vec();
+        for &(k, m) in moves {
+            q[k] += m * h[k];
+        }
+        let mut r = vec![0.0; r0.len()];
+        problem.residuals(&q, &mut r);
+        r
+    };
+    let singles: Vec<(Vec<f64>, Vec<f64>)> = (0..n)
+        .into_par_iter()
+        .map(|k| (shifted(&[(k, 1.0)]), shifted(&[(k, 2.0)])))
+        .collect();
+    let pairs: Vec<(usize, usize)> = (0..n).flat_map(|a| (a..n).map(move |b| (a, b))).collect();
+    let columns: Vec<Vec<f64>> = pairs
+        .par_iter()
+        .map(|&(a, b)| {
+            if a == b {
+                let (one, two) = &singles[a];
+                let h2 = h[a] * h[a];
+                (0..r0.len())
+                    .map(|i| (two[i] - 2.0 * one[i] + r0[i]) / h2)
+                    .collect()
+            } else {
+                let both = shifted(&[(a, 1.0), (b, 1.0)]);
+                let (ra, rb) = (&singles[a].0, &singles[b].0);
+                let hab = h[a] * h[b];
+                (0..r0.len())
+                    .map(|i| (both[i] - ra[i] - rb[i] + r0[i]) / hab)
+                    .collect()
+            }
+        })
+        .collect();
+    DMatrix::from_fn(r0.len(), pairs.len(), |i, c| columns[c][i])
+}
+
+/// The all-run quadratic model of a fold's training residuals.
+struct FoldModel<'a> {
+    jacobian: DMatrix<f64>,
+    curvature: DMatrix<f64>,
+    p0: &'a [f64],
+}
+
+impl FoldModel<'_> {
+    /// The Newton model of the cost at `p` with residuals `r` (replayed).
+    fn at(&self, p: &[f64], r: &[f64], bounds: &[(f64, f64)]) -> ProjectedModel {
+        let n = p.len();
+        let delta: Vec<f64> = p.iter().zip(self.p0).map(|(p, q)| p - q).collect();
+        // The Jacobian at p: J + ∇²r·δ, row by row.
+        let mut j = self.jacobian.clone();
+        if delta.iter().any(|&d| d != 0.0) {
+            for a in 0..n {
+                for (b, &d) in delta.iter().enumerate() {
+                    if d != 0.0 {
+                        let col = self.curvature.column(pair_index(n, a, b));
+                        j.column_mut(a).axpy(d, &col, 1.0);
+                    }
+                }
+            }
+        }
+        let rv = DVector::from_column_slice(r);
+        let g = j.transpose() * &rv;
+        let gauss_newton = j.transpose() * &j;
+        let scale = gauss_newton.diagonal();
+        // Σ r·∇²r: the curvature columns weighted by the residuals.
+        let weighted = self.curvature.transpose() * &rv;
+        let hessian = DMatrix::from_fn(n, n, |a, b| {
+            gauss_newton[(a, b)] + weighted[pair_index(n, a, b)]
+        });
+        ProjectedModel::newton(hessian, g, scale, p, bounds)
     }
 }
 
@@ -493,21 +688,26 @@ fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(problem: &Problem<F>, p: &[f64])
 /// moves a reported held-out error.
 const REFIT_DECREASE: f64 = 1e-6;
 
-/// Steps of a fold refit on the all-run Jacobian before it falls back to
-/// Levenberg–Marquardt.
-const REFIT_CHORD_STEPS: usize = 4;
+/// Replays of a fold refit on the all-run quadratic model before it falls
+/// back to Levenberg–Marquardt.
+const REFIT_MODEL_STEPS: usize = 6;
 
 /// Refits `problem` (the training runs of a fold, whose residual rows are
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
-/// optimum moves little when one run of several leaves, so the
-/// all-run Jacobian restricted to those rows is kept (a chord method):
-/// damped Gauss–Newton steps projected into the bounds, each costing one
+/// optimum moves little when one run of several leaves, so the all-run
+/// quadratic model of the residuals restricted to those rows
+/// ([`Linearisation`]) stands in for their derivatives: at `p0 + δ` the
+/// Jacobian is `J + ∇²r·δ` and the Hessian of the cost `JᵀJ + Σ r·∇²r` with
+/// the replayed residuals `r`, exact to second order in δ. The second-order
+/// term matters: the residuals of a real log stay far above the noise (a
+/// model-form gap), where Gauss–Newton alone, which drops it, converges
+/// slowly. Damped Newton steps projected into the bounds, each costing one
 /// replay of the training runs, the damping raised after a step that does
 /// not lower the cost and lowered after one that does, until the model
-/// predicts a decrease below [`REFIT_DECREASE`] of the cost. Where that does
-/// not happen within [`REFIT_CHORD_STEPS`], Levenberg–Marquardt (fresh
-/// Jacobians) goes on from there within its budget. Without a
-/// linearisation (`full` not polished to convergence) it is
+/// predicts a decrease below [`REFIT_DECREASE`] of the cost. Where that
+/// does not happen within [`REFIT_MODEL_STEPS`] replays,
+/// Levenberg–Marquardt (fresh Jacobians) goes on from there within its
+/// budget. Without a linearisation (`full` not polished) it is
 /// Levenberg–Marquardt from `full`.
 pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
@@ -519,7 +719,11 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     };
     let n = full.params.len();
     let picked: Vec<usize> = rows.iter().flat_map(|r| r.clone()).collect();
-    let j = linear.jacobian.select_rows(picked.iter());
+    let model = FoldModel {
+        jacobian: linear.jacobian.select_rows(picked.iter()),
+        curvature: linear.curvature.select_rows(picked.iter()),
+        p0: &full.params,
+    };
     let bounds = &problem.bounds;
     let mut p = full.params.clone();
     let mut r: Vec<f64> = picked.iter().map(|&i| linear.residuals[i]).collect();
@@ -527,9 +731,15 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut trial = vec![0.0; r.len()];
     let mut lambda = 0.0;
     let mut evaluations = 0;
-    for _ in 0..REFIT_CHORD_STEPS {
-        let Some((d, predicted)) = ProjectedModel::new(&j, &r, &p, bounds).step(lambda) else {
+    // Damping raised without a replay when the model is not positive
+    // definite: a bounded number of tries in all.
+    for _ in 0..4 * REFIT_MODEL_STEPS {
+        if evaluations == REFIT_MODEL_STEPS {
             break;
+        }
+        let Some((d, predicted)) = model.at(&p, &r, bounds).step(lambda) else {
+            lambda = (lambda * 10.0).max(1e-3);
+            continue;
         };
         if predicted <= REFIT_DECREASE * cost {
             return FitOutcome {
@@ -557,4 +767,113 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut f = fit(problem, &p, None, Polish::Refit);
     f.evaluations += evaluations;
     f
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::manoeuvre::{Manoeuvre, SineSteer};
+    use crate::measured::MeasuredRun;
+    use crate::sim::Drive;
+    use crate::tyre::{MagicSimple, Pac89, Tyre};
+    use crate::vehicle::{Vehicle, VehicleModel};
+
+    fn axle_model(p: &[f64]) -> Augmented {
+        let tyre = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: p[2] });
+        Augmented::new(
+            VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
+            1.0,
+        )
+    }
+
+    /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
+    /// model-form gap far above the noise, as on a real log.
+    fn runs() -> Vec<Prepared> {
+        let pac89 = Tyre::Pac89(Pac89::adams_example());
+        let truth = Augmented::new(
+            VehicleModel::new(Vehicle::compact_sedan(), pac89.clone(), pac89),
+            1.0,
+        );
+        (0..5)
+            .map(|k| {
+                let m = Manoeuvre::Sine(SineSteer {
+                    speed: 15.0 + 4.0 * k as f64,
+                    amplitude: 0.02 + 0.01 * k as f64,
+                    frequency: 0.3 + 0.15 * k as f64,
+                    start: 0.5,
+                    end: 8.0,
+                });
+                let h = truth.simulate_from(&Drive::new(&m, 1e-3), 0.0, 0.0);
+                let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
+                let at = |v: &[f64]| -> Vec<f64> {
+                    t.iter()
+                        .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
+                        .collect()
+                };
+                let run = MeasuredRun {
+                    path: format!("run{k}.csv").into(),
+                    speed: at(&h.speed),
+                    steer: at(&h.steer),
+                    yaw_rate: at(&h.yaw_rate),
+                    ay: Some(at(&h.ay)),
+                    beta: None,
+                    roll: None,
+                    bank: None,
+                    ax: None,
+                    masked: Vec::new(),
+                    t,
+                };
+                Prepared::new(&run, 0.01, 25.0)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_fold_refit_on_the_quadratic_model_lands_where_levenberg_marquardt_does() {
+        let runs = runs();
+        let bounds = vec![(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+        let scales = [2e-4, 5e-3, 1.0];
+        let all = Problem::new(axle_model, runs.iter().collect(), scales, bounds.clone());
+        let full = fit(&all, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
+        assert!(full.converged);
+        // Far above the noise: the term Gauss–Newton drops matters.
+        assert!(full.cost > 100.0 * full.residuals as f64, "{}", full.cost);
+        for held in 0..runs.len() {
+            let train: Vec<&Prepared> = (0..runs.len())
+                .filter(|&i| i != held)
+                .map(|i| &runs[i])
+                .collect();
+            let fold = Problem::new(axle_model, train, scales, bounds.clone());
+            let quick = refit(
+                &fold,
+                &full,
+                &crate::diagnose::crossval::training_rows(&runs, &[held]),
+            );
+            let slow = fit(&fold, &full.params, None, Polish::LevenbergMarquardt);
+            assert!(quick.converged);
+            assert!(
+                quick.evaluations <= 3,
+                "fold {held}: {} replays",
+                quick.evaluations
+            );
+            // The same optimum: the cost to a few times what the refit's
+            // stopping test leaves (REFIT_DECREASE, predicted), the
+            // parameters to a small share of their standard errors.
+            assert!(
+                (quick.cost - slow.cost).abs() <= 3.0 * REFIT_DECREASE * slow.cost,
+                "fold {held}: {} against {}",
+                quick.cost,
+                slow.cost
+            );
+            for i in 0..3 {
+                assert!(
+                    (quick.params[i] - slow.params[i]).abs() <= 0.1 * slow.std_errors[i],
+                    "fold {held}: {:?} against {:?} ± {:?}",
+                    quick.params,
+                    slow.params,
+                    slow.std_errors
+                );
+            }
+        }
+    }
 }

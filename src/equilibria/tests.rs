@@ -365,3 +365,64 @@ fn equilibrium_residual_jacobian_matches_differences_of_the_residual() {
     }
     assert_eq!(checked, 80);
 }
+
+#[test]
+fn the_fastest_rate_is_the_largest_eigenvalue_of_straight_running() {
+    // The replays' step rule rests on this estimate: for the 2-DOF model
+    // (exact and small-angle kinematics, with and without load transfer)
+    // it must be the largest eigenvalue magnitude of the model's own
+    // Jacobian at straight running, from a soft sedan to the stiff racing
+    // axles the Putnam log's fit asks for.
+    let racing = Vehicle {
+        mass: 790.0,
+        yaw_inertia: 1000.0,
+        a: 1.248,
+        b: 1.7328,
+        ..Vehicle::compact_sedan()
+    };
+    let tyre = |b: f64, d: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d });
+    for (vehicle, front, rear) in [
+        (Vehicle::compact_sedan(), tyre(10.0, 1.0), tyre(12.0, 1.0)),
+        (racing, tyre(9.3, 3.5), tyre(80.0, 3.5)),
+    ] {
+        for load_transfer in [false, true] {
+            for kinematics in [Kinematics::Exact, Kinematics::SmallAngle] {
+                let mut m = VehicleModel::new(vehicle.clone(), front.clone(), rear.clone());
+                m.options = ModelOptions {
+                    kinematics,
+                    load_transfer,
+                    ..ModelOptions::default()
+                };
+                for speed in [5.0, 15.0, 40.0] {
+                    let c = Condition {
+                        steer: 0.0,
+                        friction: 1.0,
+                        speed,
+                    };
+                    let s = stability::from_jacobian(stability::jacobian(&m, &c, [0.0, 0.0]));
+                    let largest = s
+                        .eigenvalues
+                        .iter()
+                        .map(|(re, im)| re.hypot(*im))
+                        .fold(0.0, f64::max);
+                    // The roll mode is integrated in every replay: its
+                    // rate joins, from its own 2×2 system.
+                    let (w, z) = (
+                        std::f64::consts::TAU * m.options.effects.roll.frequency,
+                        m.options.effects.roll.damping,
+                    );
+                    let roll = stability::from_jacobian([[0.0, 1.0], [-w * w, -2.0 * z * w]])
+                        .eigenvalues
+                        .iter()
+                        .map(|(re, im)| re.hypot(*im))
+                        .fold(0.0, f64::max);
+                    assert_relative_eq!(
+                        m.fastest_rate(speed, 1.0),
+                        largest.max(roll),
+                        max_relative = 1e-6
+                    );
+                }
+            }
+        }
+    }
+}

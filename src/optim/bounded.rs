@@ -133,32 +133,56 @@ impl BoundedLm {
     }
 }
 
-/// The linear model of the residuals at an iterate `p`: the parameters
-/// left free (not on a bound with the gradient pointing out of the box) and
-/// the normal equations over them.
+/// The quadratic model of the cost at an iterate `p`,
+/// `½|r|² + gᵀδ + ½δᵀAδ`: the parameters left free (not on a bound with the
+/// gradient pointing out of the box) and the model over them. From a
+/// Jacobian it is Gauss–Newton's (`A = JᵀJ`, `g = Jᵀr`); given a Hessian it
+/// is Newton's.
 pub struct ProjectedModel {
     free: Vec<usize>,
     n: usize,
-    jf: DMatrix<f64>,
     a: DMatrix<f64>,
     g: DVector<f64>,
+    /// The damping's diagonal (that of JᵀJ: positive where `A` need not be).
+    scale: DVector<f64>,
 }
 
 impl ProjectedModel {
-    /// The model of Jacobian `j` and residuals `r` at `p` within `bounds`.
+    /// The Gauss–Newton model of Jacobian `j` and residuals `r` at `p`
+    /// within `bounds`.
     pub fn new(j: &DMatrix<f64>, r: &[f64], p: &[f64], bounds: &[(f64, f64)]) -> Self {
-        let n = p.len();
         let g = j.transpose() * DVector::from_column_slice(r);
+        let a = j.transpose() * j;
+        let scale = a.diagonal();
+        Self::newton(a, g, scale, p, bounds)
+    }
+
+    /// The model of Hessian `a` and gradient `g` at `p` within `bounds`,
+    /// damped along `scale` (positive: the diagonal of JᵀJ).
+    pub fn newton(
+        a: DMatrix<f64>,
+        g: DVector<f64>,
+        scale: DVector<f64>,
+        p: &[f64],
+        bounds: &[(f64, f64)],
+    ) -> Self {
+        let n = p.len();
         let free: Vec<usize> = (0..n)
             .filter(|&i| {
                 let (lo, hi) = bounds[i];
                 !((p[i] <= lo && g[i] > 0.0) || (p[i] >= hi && g[i] < 0.0))
             })
             .collect();
-        let jf = j.select_columns(free.iter());
-        let a = jf.transpose() * &jf;
+        let a = a.select_rows(free.iter()).select_columns(free.iter());
         let g = DVector::from_iterator(free.len(), free.iter().map(|&i| g[i]));
-        Self { free, n, jf, a, g }
+        let scale = DVector::from_iterator(free.len(), free.iter().map(|&i| scale[i]));
+        Self {
+            free,
+            n,
+            a,
+            g,
+            scale,
+        }
     }
 
     /// No free parameter can lower the cost to first order.
@@ -166,22 +190,24 @@ impl ProjectedModel {
         self.free.is_empty() || self.g.iter().all(|&v| v == 0.0)
     }
 
-    /// The step `(J_FᵀJ_F + λ·diag(J_FᵀJ_F))·δ = −J_Fᵀ·r` (zero for the held
-    /// parameters; the diagonal floored at 1e-12 of its largest entry, which
-    /// is also added, so that λ = 0 solves a singular system), and the
-    /// decrease of ½|r|² the linear model predicts for it.
+    /// The step `(A_F + λ·diag(scale_F))·δ = −g_F` (zero for the held
+    /// parameters; the scale floored at 1e-12 of its largest entry, which
+    /// is also added, so that λ = 0 solves a singular Gauss–Newton system),
+    /// and the decrease of the cost the model predicts for it. None when
+    /// the damped system is not positive definite (a Newton model far from
+    /// its minimum: more damping).
     pub fn step(&self, lambda: f64) -> Option<(Vec<f64>, f64)> {
-        let largest = self.a.diagonal().max().max(1e-300);
+        let largest = self.scale.max().max(1e-300);
         let mut damped = self.a.clone();
         for k in 0..self.free.len() {
-            damped[(k, k)] += lambda * self.a[(k, k)].max(1e-12 * largest) + 1e-12 * largest;
+            damped[(k, k)] += lambda * self.scale[k].max(1e-12 * largest) + 1e-12 * largest;
         }
         let d = damped.cholesky()?.solve(&self.g);
         let mut out = vec![0.0; self.n];
         for (k, &i) in self.free.iter().enumerate() {
             out[i] = -d[k];
         }
-        let predicted = self.g.dot(&d) - 0.5 * (&self.jf * &d).norm_squared();
+        let predicted = self.g.dot(&d) - 0.5 * d.dot(&(&self.a * &d));
         Some((out, predicted))
     }
 }

@@ -235,6 +235,12 @@ impl TyreModel for Tyre {
             Tyre::MagicFormula(t) => t.lateral_force(s),
         }
     }
+    fn lateral_force_per_load(&self, s: &SlipState) -> Option<f64> {
+        match self {
+            Tyre::MagicSimple(t) => t.lateral_force_per_load(s),
+            _ => None,
+        }
+    }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         self.as_model().cornering_stiffness(fz)
     }

@@ -61,6 +61,9 @@ impl TyreModel for MagicSimple {
         }
         self.d * s.mu_scale * s.fz * (self.c * (self.b * s.alpha).atan()).sin()
     }
+    fn lateral_force_per_load(&self, s: &SlipState) -> Option<f64> {
+        Some(self.d * s.mu_scale * (self.c * (self.b * s.alpha).atan()).sin())
+    }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         if fz <= 0.0 {
             0.0

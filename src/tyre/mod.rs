@@ -123,6 +123,15 @@ pub trait TyreModel {
         self.forces(s).fy
     }
 
+    /// `Fy/Fz` at the slip state's slip angle, friction and speed when the
+    /// model's lateral force is proportional to the load at every slip
+    /// angle (`Fy = Fz·f(α)` for `Fz > 0`), else `None`. The vehicle's
+    /// load-transfer loop moves the loads at a fixed slip angle: such a
+    /// model is evaluated once per axle, not once per wheel and iteration.
+    fn lateral_force_per_load(&self, _s: &SlipState) -> Option<f64> {
+        None
+    }
+
     /// Cornering stiffness ∂fy/∂α at α = 0, N/rad, at load `fz` (no camber).
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         let s = |a| SlipState::lateral(a, fz);

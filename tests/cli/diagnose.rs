@@ -331,7 +331,7 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         .replace("segment = 20.0", "segment = 40.0")
         .replace(
             "[diagnose]\nseed = 1",
-            "[diagnose]\nseed = 1\neffects = [\"sensor_delay\", \"relaxation_length\"]\nmax_effects = 1",
+            "[diagnose]\nseed = 1\neffects = [\"sensor_delay\", \"road_bank\"]\nmax_effects = 1",
         );
     let dir = scratch(&[("putnam.toml", &text)]);
     let out = dir.path().join("out");
@@ -359,21 +359,19 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     // A 2-DOF model of a racing car driven hard does not match to the noise.
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert_eq!(d["ranking"].as_array().unwrap().len(), 2);
-    // A parameter on its search bound (relaxation length 0–3 m, delay
-    // 0–0.3 s) is flagged, one inside them is not; the log wants no tyre
-    // lag, so that one sits on its lower bound.
+    // A parameter on its search bound (bank ±0.15 rad, delay 0–0.3 s) is
+    // flagged, one inside them is not: the log's sideslip offset drives a
+    // constant bank to its bound, the delay (about 0.16 s) stays inside.
     for r in d["ranking"].as_array().unwrap() {
         let p = &r["parameters"][0];
         let (lo, hi) = match r["effect"].as_str().unwrap() {
-            "relaxation_length" => (0.0, 3.0),
+            "road_bank" => (-0.15, 0.15),
             _ => (0.0, 0.3),
         };
         let v = p["value"].as_f64().unwrap();
         let on = (v - lo).abs() < 1e-9 || (hi - v).abs() < 1e-9;
         assert_eq!(p["at_bound"], on, "{p}");
-        if r["effect"] == "relaxation_length" {
-            assert_eq!(p["at_bound"], true, "{p}");
-        }
+        assert_eq!(on, r["effect"] == "road_bank", "{p}");
     }
     for f in ["gap_map.png", "overlays.png"] {
         assert!(out.join(f).is_file());

@@ -219,3 +219,82 @@ fn a_runs_measured_bank_and_ax_reach_the_model_only_through_their_effects() {
         level.last().unwrap()
     );
 }
+
+#[test]
+fn a_stiff_racing_car_is_replayed_on_a_grid_it_is_stable_on() {
+    // The Putnam log's fit asks for racing axles this stiff (B·C·D ≈ 360
+    // per radian at the rear): at 6 m/s the yaw mode's rate is near
+    // 900 1/s, so RK4 at the log's 20 ms is unstable (its chaos once let
+    // the fits "explain" the data). The replay refines the step until it
+    // is stable and must then match a fine reference.
+    use crate::diagnose::fit::Prepared;
+    use crate::measured::MeasuredRun;
+    use crate::tyre::MagicSimple;
+    let vehicle = Vehicle {
+        mass: 790.0,
+        yaw_inertia: 1000.0,
+        a: 1.248,
+        b: 1.7328,
+        track_front: 1.6,
+        track_rear: 1.55,
+        cg_height: 0.3,
+        ..Vehicle::compact_sedan()
+    };
+    let tyre = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: 3.5 });
+    let model = Augmented::new(VehicleModel::new(vehicle, tyre(9.3), tyre(80.0)), 1.0);
+    // 20 s at 25 Hz: a slow corner at 6 m/s, then accelerating to 30 m/s
+    // through a weave.
+    let t: Vec<f64> = (0..500).map(|i| 0.04 * i as f64).collect();
+    let speed: Vec<f64> = t.iter().map(|&t| 6.0 + 24.0 * (t / 20.0).powi(2)).collect();
+    let steer: Vec<f64> = t.iter().map(|&t| 0.05 * (0.8 * t).sin()).collect();
+    let run = MeasuredRun {
+        path: "stiff.csv".into(),
+        yaw_rate: vec![0.0; t.len()],
+        beta: Some(vec![0.0; t.len()]),
+        ay: None,
+        roll: None,
+        bank: None,
+        ax: None,
+        masked: Vec::new(),
+        t: t.clone(),
+        speed,
+        steer,
+    };
+    let prepared = Prepared::new(&run, 0.02, 25.0);
+    let drive = prepared.drive_for(&model);
+    assert!(drive.step <= 0.02 / 8.0, "step {}", drive.step);
+    let observed = prepared.observe(&model);
+    let reference = {
+        let fine = Drive::replay(&run.t, &run.steer, &run.speed, 1e-4);
+        model.observe(&model.simulate_from(&fine, 0.0, 0.0), &prepared.times)
+    };
+    let rms = |v: &[f64]| (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
+    let error: Vec<f64> = observed
+        .yaw_rate
+        .iter()
+        .zip(&reference.yaw_rate)
+        .map(|(a, b)| a - b)
+        .collect();
+    assert!(
+        rms(&error) < 1e-4 * rms(&reference.yaw_rate),
+        "{} against {}",
+        rms(&error),
+        rms(&reference.yaw_rate)
+    );
+    // On the campaign's own grid the same replay is unstable.
+    let coarse = model.observe(
+        &model.simulate_from(&prepared.drive, 0.0, 0.0),
+        &prepared.times,
+    );
+    let coarse_error: Vec<f64> = coarse
+        .yaw_rate
+        .iter()
+        .zip(&reference.yaw_rate)
+        .map(|(a, b)| a - b)
+        .collect();
+    assert!(
+        rms(&coarse_error).is_nan() || rms(&coarse_error) >= 0.1 * rms(&reference.yaw_rate),
+        "{}",
+        rms(&coarse_error)
+    );
+}

@@ -170,25 +170,47 @@ impl Prepared {
     }
 
     /// The replay grid `model` is stable on: the campaign's step, halved
-    /// until `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed
-    /// (at most [`MAX_SUBSTEPS`] substeps). Powers of two, so that the grid
-    /// changes only where a fit's parameters cross a doubling of the
-    /// model's stiffness, not with every small step of theirs.
-    pub fn drive_for(&self, model: &Augmented) -> &Drive {
+    /// until `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed.
+    /// Powers of two, so that the grid changes only where a fit's
+    /// parameters cross a doubling of the model's stiffness, not with every
+    /// small step of theirs. None when [`MAX_SUBSTEPS`] substeps are not
+    /// enough (a tyre lag of a few millimetres at racing speed).
+    pub fn drive_for(&self, model: &Augmented) -> Option<&Drive> {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
             .fastest_rate(lo, friction)
             .max(vehicle.fastest_rate(hi, friction));
         let mut n = 1;
-        while n < MAX_SUBSTEPS && self.drive.step / n as f64 * rho > STABLE_STEP {
+        while self.drive.step / n as f64 * rho > STABLE_STEP {
+            if n == MAX_SUBSTEPS {
+                return None;
+            }
             n *= 2;
         }
         if n == 1 {
-            return &self.drive;
+            return Some(&self.drive);
         }
         let k = n.trailing_zeros() as usize - 1;
-        self.refined[k].get_or_init(|| self.inputs.drive(self.drive.step / n as f64))
+        Some(self.refined[k].get_or_init(|| self.inputs.drive(self.drive.step / n as f64)))
+    }
+
+    /// The run replayed by `model` from its first measured state less the
+    /// model's sensor offsets, on the grid [`Prepared::drive_for`] gives.
+    /// A model no grid is stable for replays as diverged (its states NaN:
+    /// a fit sees a very bad fit, not an unstable integration's chaos).
+    pub fn replay(&self, model: &Augmented) -> TimeHistory {
+        let (beta, yaw_rate) = self.start_of(model);
+        match self.drive_for(model) {
+            Some(drive) => model.simulate_from(drive, beta, yaw_rate),
+            None => {
+                let mut h = model.simulate_from(&self.drive, beta, yaw_rate);
+                for v in [&mut h.beta, &mut h.yaw_rate, &mut h.ay, &mut h.roll] {
+                    v.fill(f64::NAN);
+                }
+                h
+            }
+        }
     }
 
     /// Number of residuals of this run.
@@ -200,11 +222,7 @@ impl Prepared {
     /// model's sensor offsets) and returns what the sensors would read at
     /// the residual times.
     pub fn observe(&self, model: &Augmented) -> Observed {
-        let (beta, yaw_rate) = self.start_of(model);
-        model.observe(
-            &model.simulate_from(self.drive_for(model), beta, yaw_rate),
-            &self.times,
-        )
+        model.observe(&self.replay(model), &self.times)
     }
 
     /// The replay's start (sideslip, yaw rate): the first measured state less
@@ -240,7 +258,7 @@ impl Prepared {
         }
         // Integrated without the lock: evaluations in parallel (a parallel
         // swarm) do not wait for each other, the last one stored wins.
-        let history = model.simulate_from(self.drive_for(model), start.0, start.1);
+        let history = self.replay(model);
         let observed = model.observe(&history, &self.times);
         *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
             model: model.clone(),

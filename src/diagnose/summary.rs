@@ -15,7 +15,7 @@ use crate::measured::MeasuredRun;
 /// model has no sensor effects: its history is what the sensors read).
 pub(super) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
-    let history = base.simulate_from(p.drive_for(base), p.start.0, p.start.1);
+    let history = p.replay(base);
     let idx = super::gap::scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
     let t = pick(&run.t);

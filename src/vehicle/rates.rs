@@ -160,8 +160,8 @@ impl VehicleModel {
     /// steepest slope of a saturating tyre; the friction scale taken as at
     /// least 1), the lag states' `u/σ` and the roll mode's. A fixed-step
     /// integrator is stable where its step times this lies inside its
-    /// stability region: RK4 at 20 ms is not for a stiff racing tyre at
-    /// 5 m/s, whose yaw mode reaches 250 1/s.
+    /// stability region: RK4 at 20 ms is not for stiff racing axles at
+    /// 5–15 m/s, whose yaw mode reaches 250–1000 1/s.
     pub fn fastest_rate(&self, speed: f64, friction: f64) -> f64 {
         let v = &self.vehicle;
         let e = &self.options.effects;

@@ -106,6 +106,24 @@ pub struct Reduced<'a> {
     /// solve starts from their linear extrapolation (second-order accurate
     /// along the evenly spaced scan).
     history: Cell<[(f64, f64); 2]>,
+    /// The rear half of the scan, when a line of steers shares it.
+    rear: Option<&'a RearScan>,
+}
+
+/// The rear half of a scan: the yaw rate that balances the rear axle at
+/// every scanned rear slip angle, and the rear solve's state after it. It
+/// depends on the speed and friction (and the model), not on the steer, so
+/// a line of conditions that differ only in steer solves it once
+/// ([`solve_with_continua_along`]); the state is carried over too, so every
+/// later solve starts where it would have and the answers are the same to
+/// the bit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RearScan {
+    friction: f64,
+    speed: f64,
+    yaw_rates: Vec<f64>,
+    last: Option<(f64, f64)>,
+    history: [(f64, f64); 2],
 }
 
 /// What the reduced problem gives at one rear slip angle.
@@ -128,7 +146,25 @@ impl<'a> Reduced<'a> {
             u: c.speed.max(MIN_SPEED),
             last: Cell::new(None),
             history: Cell::new([(f64::NAN, f64::NAN); 2]),
+            rear: None,
         }
+    }
+
+    /// The rear half of this condition's scan, solved from a fresh start
+    /// (as [`Reduced::scan`] does without one).
+    fn rear_scan(&self) -> RearScan {
+        let yaw_rates = Self::scan_angles().map(|x| self.yaw_rate(x)).collect();
+        RearScan {
+            friction: self.c.friction,
+            speed: self.c.speed,
+            yaw_rates,
+            last: self.last.get(),
+            history: self.history.get(),
+        }
+    }
+
+    fn scan_angles() -> impl Iterator<Item = f64> {
+        (0..=CELLS).map(|i| -ALPHA_MAX + 2.0 * ALPHA_MAX * i as f64 / CELLS as f64)
     }
 
     fn axle(&self, front: bool, alpha: f64, ay: f64) -> f64 {
@@ -220,9 +256,13 @@ impl<'a> Reduced<'a> {
 
     /// The reduced function and the state at rear slip angle `ar`.
     pub fn at(&self, ar: f64) -> Point {
+        self.point(ar, self.yaw_rate(ar))
+    }
+
+    /// [`Reduced::at`] with the rear axle's yaw rate `r` given.
+    fn point(&self, ar: f64, r: f64) -> Point {
         let v = &self.model.vehicle;
         let u = self.u;
-        let r = self.yaw_rate(ar);
         let (beta, af, proj) = match self.model.options.kinematics {
             Kinematics::Exact => {
                 let vy = v.b * r - u * ar.tan();
@@ -260,11 +300,20 @@ impl<'a> Reduced<'a> {
 
     /// The scan: rear slip angles and h at them.
     fn scan(&self) -> (Vec<f64>, Vec<f64>) {
-        let n = CELLS;
-        let a: Vec<f64> = (0..=n)
-            .map(|i| -ALPHA_MAX + 2.0 * ALPHA_MAX * i as f64 / n as f64)
-            .collect();
-        let h: Vec<f64> = a.iter().map(|&x| self.at(x).h).collect();
+        let a: Vec<f64> = Self::scan_angles().collect();
+        let h: Vec<f64> = match self.rear {
+            Some(rear) => {
+                let h = a
+                    .iter()
+                    .zip(&rear.yaw_rates)
+                    .map(|(&x, &r)| self.point(x, r).h)
+                    .collect();
+                self.last.set(rear.last);
+                self.history.set(rear.history);
+                h
+            }
+            None => a.iter().map(|&x| self.at(x).h).collect(),
+        };
         (a, h)
     }
 
@@ -420,7 +469,37 @@ pub fn solve_with_continua(
     model: &VehicleModel,
     c: &Condition,
 ) -> (Vec<Equilibrium>, Vec<Continuum>) {
-    let red = Reduced::new(model, *c);
+    solve_reduced(model, c, Reduced::new(model, *c))
+}
+
+/// [`solve_with_continua`] along a line of conditions: `rear` keeps the
+/// rear half of the scan of the last condition, reused while the speed and
+/// friction stay the same (the same answers, to the bit, at a fraction of
+/// the rear axle's evaluations).
+pub fn solve_with_continua_along(
+    model: &VehicleModel,
+    c: &Condition,
+    rear: &mut Option<RearScan>,
+) -> (Vec<Equilibrium>, Vec<Continuum>) {
+    let fresh = Reduced::new(model, *c);
+    if !rear
+        .as_ref()
+        .is_some_and(|s| s.friction == c.friction && s.speed == c.speed)
+    {
+        *rear = Some(fresh.rear_scan());
+    }
+    let red = Reduced {
+        rear: rear.as_ref(),
+        ..Reduced::new(model, *c)
+    };
+    solve_reduced(model, c, red)
+}
+
+fn solve_reduced(
+    model: &VehicleModel,
+    c: &Condition,
+    red: Reduced,
+) -> (Vec<Equilibrium>, Vec<Continuum>) {
     let (roots, cont) = red.analyse();
     let equilibria = roots
         .into_iter()

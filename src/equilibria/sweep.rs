@@ -208,6 +208,7 @@ pub fn solve_lines(
         .map(|&l| {
             let (i_f, i_s) = lines[l];
             let mut prev: Vec<[f64; 2]> = Vec::new();
+            let mut rear = None;
             grid.steer
                 .iter()
                 .map(|&steer| {
@@ -216,7 +217,7 @@ pub fn solve_lines(
                         friction: grid.friction[i_f],
                         speed: grid.speed[i_s],
                     };
-                    let (ex, continua) = exact::solve_with_continua(model, &c);
+                    let (ex, continua) = exact::solve_with_continua_along(model, &c, &mut rear);
                     let (ps, stats) = pso::search(model, &c, bx, search, &prev);
                     prev = ps.iter().map(|e| [e.beta, e.yaw_rate]).collect();
                     let (found, agree) = cross_check(&ex, &ps, &continua, bx);

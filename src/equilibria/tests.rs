@@ -426,3 +426,20 @@ fn the_fastest_rate_is_the_largest_eigenvalue_of_straight_running() {
         }
     }
 }
+
+#[test]
+fn a_line_of_steers_sharing_the_rear_scan_gives_the_same_equilibria_to_the_bit() {
+    // The dense grids solve the rear half of the scan once per line of
+    // steers; every answer must be the one a condition solved alone gives,
+    // also where the speed or friction changes along the sequence.
+    let m = equilibria_model(true);
+    let mut rear = None;
+    for (speed, friction) in [(70.0, 0.8), (70.0, 0.8), (90.0, 0.8), (90.0, 0.5)] {
+        for i in 0..12 {
+            let c = cond(0.02 * i as f64, friction, speed);
+            let alone = exact::solve_with_continua(&m, &c);
+            let along = exact::solve_with_continua_along(&m, &c, &mut rear);
+            assert_eq!(format!("{alone:?}"), format!("{along:?}"), "{c:?}");
+        }
+    }
+}

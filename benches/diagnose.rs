@@ -2,7 +2,11 @@
 //! against the full library in at most 10 s on 2 cores): the synthetic proving-ground
 //! campaign (8 runs, 66 s of data at 100 Hz, a sensor delay withheld, PAC89
 //! fitted to its rig data) against all 14 effects, and the cost of one
-//! replay of its 8 runs, which every fit evaluation pays.
+//! replay of its 8 runs, which every fit evaluation pays. And one replay of
+//! the Putnam racing log (`replay_racing_log_460s_stiff_axles`: 460 s in 23
+//! pieces, with the stiff racing axles its diagnosis fits, each piece on the
+//! grid they are stable on): what each evaluation of that diagnosis costs.
+//! Skipped when the log (outside the repository) is missing.
 //!
 //! `RAYON_NUM_THREADS=2 cargo bench --bench diagnose`
 
@@ -13,7 +17,7 @@ use handling::diagnose::fit::Prepared;
 use handling::diagnose::model::Augmented;
 use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
 use handling::diagnose::DiagnoseSettings;
-use handling::tyre::{Pac89, Tyre};
+use handling::tyre::{MagicSimple, Pac89, Tyre};
 use handling::vehicle::VehicleModel;
 use std::time::Duration;
 
@@ -53,5 +57,40 @@ fn diagnosis(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, diagnosis);
+fn racing_log(c: &mut Criterion) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("campaigns/putnam.toml");
+    let campaign = match handling::io::campaign::load_campaign(&path) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("replay_racing_log_460s_stiff_axles skipped: {e}");
+            return;
+        }
+    };
+    let set = &campaign.settings;
+    let runs: Vec<Prepared> = campaign
+        .runs
+        .iter()
+        .map(|r| Prepared::new(r, set.step, set.sample_rate))
+        .collect();
+    let axle = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: 3.5 });
+    let model = Augmented {
+        roll: campaign.roll,
+        ..Augmented::new(
+            VehicleModel::new(campaign.vehicle.clone(), axle(9.27), axle(80.0)),
+            campaign.friction,
+        )
+    };
+    let mut g = c.benchmark_group("diagnose");
+    g.sample_size(10);
+    g.bench_function("replay_racing_log_460s_stiff_axles", |b| {
+        b.iter(|| {
+            for r in &runs {
+                black_box(r.errors(black_box(&model)));
+            }
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, diagnosis, racing_log);
 criterion_main!(benches);

@@ -420,7 +420,7 @@ fn verdict_of(
                 effects: r.effects.clone(),
                 parameters: r.parameters.clone(),
                 statement: format!(
-                    "{} explains the gap: held-out error {:.3} → {:.3} (noise level {:.3}), {:.0} % of the gap above noise removed",
+                    "{} explains the gap: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
                     r.effect, j0, r.heldout_error_after, jn, r.reduction_percent
                 ),
             }
@@ -434,7 +434,7 @@ fn verdict_of(
                 )
             } else {
                 format!(
-                    "a gap (held-out error {j0:.3}, noise level {jn:.3}) that no candidate effect explains: the best, {}, removes {:.0} % of it (acceptance needs {:.0} %) — a model-form error outside the library",
+                    "a gap (held-out error {j0:.3}, noise level {jn:.3}) that no candidate effect explains: the best, {}, removes {:.1} % of it (acceptance needs {:.0} %) — a model-form error outside the library",
                     ranking.first().map_or("none", |r| r.effect.as_str()),
                     ranking.first().map_or(0.0, |r| r.reduction_percent),
                     100.0 * ACCEPT
@@ -534,6 +534,42 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
     (effects, notes)
 }
 
+/// A note on the replay grids the base model needs, when a run needs a
+/// finer one than the campaign's `step` for stability
+/// ([`super::fit::Prepared::drive_for`]); every fit refines its own.
+fn grid_note(ctx: &Context, step: f64) -> Option<String> {
+    let mut refined = std::collections::BTreeMap::<u64, usize>::new();
+    let mut unstable = 0;
+    for r in &ctx.runs {
+        match r.drive_for(&ctx.bases.all) {
+            Some(d) if d.step < step => {
+                *refined.entry((step / d.step).round() as u64).or_default() += 1;
+            }
+            Some(_) => {}
+            None => unstable += 1,
+        }
+    }
+    if refined.is_empty() && unstable == 0 {
+        return None;
+    }
+    let mut parts: Vec<String> = refined
+        .iter()
+        .map(|(n, k)| format!("{k} at {} s ({n} substeps)", step / *n as f64))
+        .collect();
+    if unstable > 0 {
+        parts.push(format!(
+            "{unstable} on no grid of up to {} substeps (replayed as diverged)",
+            super::fit::MAX_SUBSTEPS
+        ));
+    }
+    Some(format!(
+        "replay grid: the base model is too stiff for the {step} s step on {} of {} runs, replayed on finer grids for stability: {}",
+        refined.values().sum::<usize>() + unstable,
+        ctx.runs.len(),
+        parts.join(", ")
+    ))
+}
+
 /// Runs the diagnosis of a campaign. `progress` counts work units (see
 /// [`work_units`]).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
@@ -568,6 +604,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let (j0, jn) = (base.j0, base.jn);
     let significant = j0 > SIGNIFICANT * jn;
     let (effects, mut notes) = visible_effects(c);
+    notes.extend(grid_note(&ctx, set.step));
     let (singles, order) = singles(&ctx, &effects);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
 

@@ -179,6 +179,23 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     );
     let e = campaign_err(dir.path());
     assert!(e.contains("a.csv:7:") && e.contains("yaw_rate"), "{e}");
+    // A replay step too fine to be meant (1e-9 s once asked for 144 GB):
+    // refused with file, line, key and value.
+    let v = format!("{VEHICLE}\n[diagnose]\nstep = 1e-9\n");
+    let dir = campaign_folder(
+        &v,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("b.csv", run_csv(100.0, 6.0, true, None)),
+        ],
+    );
+    let e = campaign_err(dir.path());
+    assert!(
+        e.contains("vehicle.toml:")
+            && e.contains("`diagnose.step` = 0.000000001")
+            && e.contains("(0.0001, 0.05]"),
+        "{e}"
+    );
     // A folder without vehicle.toml.
     let empty = tempfile::tempdir().unwrap();
     let e = campaign_err(empty.path());

@@ -152,16 +152,20 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let dir = campaign_folder(VEHICLE, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
     let e = campaign_err(dir.path());
     assert!(e.contains("held-out scoring needs at least two"), "{e}");
+    // The error of two good runs under a `[diagnose]` table `settings`.
+    let settings_err = |settings: &str| {
+        let v = format!("{VEHICLE}\n[diagnose]\n{settings}\n");
+        let dir = campaign_folder(
+            &v,
+            &[
+                ("a.csv", run_csv(100.0, 6.0, true, None)),
+                ("b.csv", run_csv(100.0, 6.0, true, None)),
+            ],
+        );
+        campaign_err(dir.path())
+    };
     // An unknown effect is named with the list of known ones.
-    let v = format!("{VEHICLE}\n[diagnose]\neffects = [\"relaxation\"]\n");
-    let dir = campaign_folder(
-        &v,
-        &[
-            ("a.csv", run_csv(100.0, 6.0, true, None)),
-            ("b.csv", run_csv(100.0, 6.0, true, None)),
-        ],
-    );
-    let e = campaign_err(dir.path());
+    let e = settings_err("effects = [\"relaxation\"]");
     assert!(
         e.contains("unknown effect `relaxation`") && e.contains("relaxation_length"),
         "{e}"
@@ -181,15 +185,7 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     assert!(e.contains("a.csv:7:") && e.contains("yaw_rate"), "{e}");
     // A replay step too fine to be meant (1e-9 s once asked for 144 GB):
     // refused with file, line, key and value.
-    let v = format!("{VEHICLE}\n[diagnose]\nstep = 1e-9\n");
-    let dir = campaign_folder(
-        &v,
-        &[
-            ("a.csv", run_csv(100.0, 6.0, true, None)),
-            ("b.csv", run_csv(100.0, 6.0, true, None)),
-        ],
-    );
-    let e = campaign_err(dir.path());
+    let e = settings_err("step = 1e-9");
     assert!(
         e.contains("vehicle.toml:")
             && e.contains("`diagnose.step` = 0.000000001")

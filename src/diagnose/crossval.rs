@@ -137,9 +137,14 @@ impl Context<'_> {
         for (e, _, _) in &per_fold {
             heldout.add(e);
         }
+        // The quadratic model served the folds: a kept candidate need not
+        // hold its Jacobian and second derivatives (rows × n² reals).
         Scored {
             kinds: s.kinds,
-            full,
+            full: FitOutcome {
+                linear: None,
+                ..full
+            },
             insample,
             heldout,
             folds_converged: per_fold.iter().filter(|f| f.2).count(),

@@ -793,13 +793,13 @@ mod tests {
     use crate::manoeuvre::{Manoeuvre, SineSteer};
     use crate::measured::MeasuredRun;
     use crate::sim::Drive;
-    use crate::tyre::{MagicSimple, Pac89, Tyre};
+    use crate::tyre::{Pac89, Tyre};
     use crate::vehicle::{Vehicle, VehicleModel};
 
     fn axle_model(p: &[f64]) -> Augmented {
-        let tyre = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: p[2] });
+        let (front, rear) = crate::diagnose::candidates::axle_tyres(p);
         Augmented::new(
-            VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
+            VehicleModel::new(Vehicle::compact_sedan(), front, rear),
             1.0,
         )
     }

@@ -481,12 +481,11 @@ pub fn solve_with_continua_along(
     c: &Condition,
     rear: &mut Option<RearScan>,
 ) -> (Vec<Equilibrium>, Vec<Continuum>) {
-    let fresh = Reduced::new(model, *c);
     if !rear
         .as_ref()
         .is_some_and(|s| s.friction == c.friction && s.speed == c.speed)
     {
-        *rear = Some(fresh.rear_scan());
+        *rear = Some(Reduced::new(model, *c).rear_scan());
     }
     let red = Reduced {
         rear: rear.as_ref(),

@@ -373,17 +373,14 @@ fn the_fastest_rate_is_the_largest_eigenvalue_of_straight_running() {
     // it must be the largest eigenvalue magnitude of the model's own
     // Jacobian at straight running, from a soft sedan to the stiff racing
     // axles the Putnam log's fit asks for.
-    let racing = Vehicle {
-        mass: 790.0,
-        yaw_inertia: 1000.0,
-        a: 1.248,
-        b: 1.7328,
-        ..Vehicle::compact_sedan()
-    };
     let tyre = |b: f64, d: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d });
     for (vehicle, front, rear) in [
         (Vehicle::compact_sedan(), tyre(10.0, 1.0), tyre(12.0, 1.0)),
-        (racing, tyre(9.3, 3.5), tyre(80.0, 3.5)),
+        (
+            crate::vehicle::racing_car(),
+            tyre(9.3, 3.5),
+            tyre(80.0, 3.5),
+        ),
     ] {
         for load_transfer in [false, true] {
             for kinematics in [Kinematics::Exact, Kinematics::SmallAngle] {

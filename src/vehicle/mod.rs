@@ -192,10 +192,15 @@ impl VehicleModel {
 
     /// Axle cornering stiffness (front, rear) at static load, N/rad.
     pub fn axle_cornering_stiffness(&self) -> (f64, f64) {
-        let (sf, sr) = self.vehicle.static_axle_loads();
+        self.axle_cornering_stiffness_under(self.vehicle.static_axle_loads())
+    }
+
+    /// Axle cornering stiffness (front, rear) under axle loads `(front,
+    /// rear)` shared evenly by the two wheels, N/rad.
+    pub(crate) fn axle_cornering_stiffness_under(&self, (front, rear): (f64, f64)) -> (f64, f64) {
         (
-            2.0 * self.front.cornering_stiffness(0.5 * sf),
-            2.0 * self.rear.cornering_stiffness(0.5 * sr),
+            2.0 * self.front.cornering_stiffness(0.5 * front),
+            2.0 * self.rear.cornering_stiffness(0.5 * rear),
         )
     }
 
@@ -203,6 +208,24 @@ impl VehicleModel {
     /// bicycle model, 1/s.
     pub fn linear_yaw_rate_gain(&self, speed: f64) -> f64 {
         speed / (self.vehicle.wheelbase() + self.understeer_gradient() * speed * speed)
+    }
+}
+
+/// The racing car of the Putnam campaign (`campaigns/putnam.toml`: mass,
+/// yaw inertia, a and b from the source; tracks and CG height as assumed
+/// there), whose fitted axles are stiff enough to test the replays'
+/// stability on.
+#[cfg(test)]
+pub(crate) fn racing_car() -> Vehicle {
+    Vehicle {
+        mass: 790.0,
+        yaw_inertia: 1000.0,
+        a: 1.248,
+        b: 1.7328,
+        track_front: 1.6,
+        track_rear: 1.55,
+        cg_height: 0.3,
+        ..Vehicle::compact_sedan()
     }
 }
 

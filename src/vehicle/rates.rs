@@ -166,13 +166,14 @@ impl VehicleModel {
         let v = &self.vehicle;
         let e = &self.options.effects;
         let u = speed.max(MIN_SPEED);
-        let (mut load_f, mut load_r) = v.static_axle_loads();
-        load_f += e.aero_load[0] * u * u;
-        load_r += e.aero_load[1] * u * u;
+        let (load_f, load_r) = v.static_axle_loads();
+        let (cf, cr) = self.axle_cornering_stiffness_under((
+            load_f + e.aero_load[0] * u * u,
+            load_r + e.aero_load[1] * u * u,
+        ));
         let [scale_f, scale_r] = e.cornering_stiffness_scale;
         let mu = friction.max(1.0);
-        let cf = 2.0 * mu * (scale_f * self.front.cornering_stiffness(0.5 * load_f)).abs();
-        let cr = 2.0 * mu * (scale_r * self.rear.cornering_stiffness(0.5 * load_r)).abs();
+        let (cf, cr) = (mu * (scale_f * cf).abs(), mu * (scale_r * cr).abs());
         let (m, iz, a, b) = (v.mass, v.yaw_inertia, v.a, v.b);
         let a11 = -(cf + cr) / (m * u);
         let a12 = (b * cr - a * cf) / (m * u * u) - 1.0;

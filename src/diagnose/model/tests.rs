@@ -229,19 +229,11 @@ fn a_stiff_racing_car_is_replayed_on_a_grid_it_is_stable_on() {
     // is stable and must then match a fine reference.
     use crate::diagnose::fit::Prepared;
     use crate::measured::MeasuredRun;
-    use crate::tyre::MagicSimple;
-    let vehicle = Vehicle {
-        mass: 790.0,
-        yaw_inertia: 1000.0,
-        a: 1.248,
-        b: 1.7328,
-        track_front: 1.6,
-        track_rear: 1.55,
-        cg_height: 0.3,
-        ..Vehicle::compact_sedan()
-    };
-    let tyre = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: 3.5 });
-    let model = Augmented::new(VehicleModel::new(vehicle, tyre(9.3), tyre(80.0)), 1.0);
+    let (front, rear) = crate::diagnose::candidates::axle_tyres(&[9.3, 80.0, 3.5]);
+    let model = Augmented::new(
+        VehicleModel::new(crate::vehicle::racing_car(), front, rear),
+        1.0,
+    );
     // 20 s at 25 Hz: a slow corner at 6 m/s, then accelerating to 30 m/s
     // through a weave.
     let t: Vec<f64> = (0..500).map(|i| 0.04 * i as f64).collect();

@@ -4,8 +4,8 @@
 //! fitted to its rig data) against all 14 effects, and the cost of one
 //! replay of its 8 runs, which every fit evaluation pays. And one replay of
 //! the Putnam racing log (`replay_racing_log_460s_stiff_axles`: 460 s in 23
-//! pieces, with the stiff racing axles its diagnosis fits, each piece on the
-//! grid they are stable on): what each evaluation of that diagnosis costs.
+//! pieces, with the stiff racing axles its diagnosis fits, each piece by the
+//! method it is stable under): what each evaluation of that diagnosis costs.
 //! Skipped when the log (outside the repository) is missing.
 //!
 //! `RAYON_NUM_THREADS=2 cargo bench --bench diagnose`

@@ -534,40 +534,21 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
     (effects, notes)
 }
 
-/// A note on the replay grids the base model needs, when a run needs a
-/// finer one than the campaign's `step` for stability
-/// ([`super::fit::Prepared::drive_for`]); every fit refines its own.
+/// A note on the runs the base model is too stiff to replay by RK4 on the
+/// campaign's `step`, which it replays by ROS34PW2
+/// ([`super::fit::Prepared::drive_for`]); every fit picks per model.
 fn grid_note(ctx: &Context, step: f64) -> Option<String> {
-    let mut refined = std::collections::BTreeMap::<u64, usize>::new();
-    let mut unstable = 0;
-    for r in &ctx.runs {
-        match r.drive_for(&ctx.bases.all) {
-            Some(d) if d.step < step => {
-                *refined.entry((step / d.step).round() as u64).or_default() += 1;
-            }
-            Some(_) => {}
-            None => unstable += 1,
-        }
-    }
-    if refined.is_empty() && unstable == 0 {
-        return None;
-    }
-    let mut parts: Vec<String> = refined
+    let stiff = ctx
+        .runs
         .iter()
-        .map(|(n, k)| format!("{k} at {} s ({n} substeps)", step / *n as f64))
-        .collect();
-    if unstable > 0 {
-        parts.push(format!(
-            "{unstable} on no grid of up to {} substeps (replayed as diverged)",
-            super::fit::MAX_SUBSTEPS
-        ));
-    }
-    Some(format!(
-        "replay grid: the base model is too stiff for the {step} s step on {} of {} runs, replayed on finer grids for stability: {}",
-        refined.values().sum::<usize>() + unstable,
-        ctx.runs.len(),
-        parts.join(", ")
-    ))
+        .filter(|r| r.drive_for(&ctx.bases.all).method == super::model::FixedStep::RosenbrockW)
+        .count();
+    (stiff > 0).then(|| {
+        format!(
+            "replay method: the base model is too stiff for RK4 at the {step} s step on {stiff} of {} runs, replayed by the linearly implicit ROS34PW2 at that step",
+            ctx.runs.len()
+        )
+    })
 }
 
 /// Runs the diagnosis of a campaign. `progress` counts work units (see

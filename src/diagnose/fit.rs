@@ -14,11 +14,12 @@
 //! Levenberg–Marquardt; the parameters' standard errors
 //! come from the Jacobian at the optimum, `s²·(JᵀJ)⁻¹`; the fold refits of
 //! the cross-validation start from the all-run optimum's quadratic model of
-//! the residuals ([`refit`]). Each replay runs on a fixed RK4 grid (smooth
-//! in the parameters) that the model being replayed is stable on
+//! the residuals ([`refit`]). Each replay runs on the campaign's fixed grid
+//! (smooth in the parameters): by RK4 while the model being replayed is
+//! stable under it there, else by the linearly implicit ROS34PW2
 //! ([`Prepared::drive_for`]). Units: SI, rad.
 
-use super::model::{Augmented, Drive, Observed};
+use super::model::{Augmented, Drive, FixedStep, Observed};
 use crate::measured::MeasuredRun;
 use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
 use crate::optim::local::Residuals;
@@ -74,17 +75,14 @@ impl Channel {
     }
 }
 
-/// `h·ρ` a replay's RK4 step keeps to, with `ρ` the model's fastest rate
-/// ([`VehicleModel::fastest_rate`]): inside RK4's stability region
+/// `h·ρ` up to which a replay runs by RK4, with `ρ` the model's fastest
+/// rate ([`VehicleModel::fastest_rate`]): inside RK4's stability region
 /// (−2.79 on the real axis, ±2.83 on the imaginary) with a margin for
 /// what that estimate leaves out (load transfer, the slip's own
-/// nonlinearity).
+/// nonlinearity). Beyond it, ROS34PW2.
 ///
 /// [`VehicleModel::fastest_rate`]: crate::vehicle::VehicleModel::fastest_rate
 pub const STABLE_STEP: f64 = 2.0;
-
-/// Largest number of substeps a replay refines the campaign's step into.
-pub const MAX_SUBSTEPS: usize = 64;
 
 /// The measured inputs a run's replay grids are sampled from.
 #[derive(Debug)]
@@ -103,11 +101,11 @@ struct ReplayInputs {
 pub struct Prepared {
     /// Name (the file).
     pub name: String,
-    /// Its inputs on the replay grid of the campaign's step.
+    /// Its inputs at the RK4 stages of the campaign's step.
     pub drive: Drive,
-    /// The same on grids of 2, 4, 8, … substeps, sampled when a model first
-    /// needs one ([`Prepared::drive_for`]).
-    refined: Vec<std::sync::Arc<std::sync::OnceLock<Drive>>>,
+    /// The same at the ROS34PW2 stages, sampled when a model first needs
+    /// them ([`Prepared::drive_for`]).
+    stiff: std::sync::Arc<std::sync::OnceLock<Drive>>,
     inputs: std::sync::Arc<ReplayInputs>,
     /// Times at which residuals are taken, s.
     pub times: Vec<f64>,
@@ -118,7 +116,7 @@ pub struct Prepared {
 }
 
 impl Prepared {
-    /// Prepares `run` for replays with RK4 step `step` and residuals taken
+    /// Prepares `run` for replays with step `step` and residuals taken
     /// at `rate` Hz (at the samples nearest to it).
     /// Masked samples (logger glitches in a response channel) are skipped:
     /// the next unmasked sample takes their place.
@@ -155,10 +153,8 @@ impl Prepared {
         };
         Self {
             name: run.path.display().to_string(),
-            drive: inputs.drive(step),
-            refined: (0..MAX_SUBSTEPS.trailing_zeros())
-                .map(|_| Default::default())
-                .collect(),
+            drive: inputs.drive(step, FixedStep::Rk4),
+            stiff: Default::default(),
             inputs: std::sync::Arc::new(inputs),
             times,
             measured,
@@ -169,48 +165,31 @@ impl Prepared {
         }
     }
 
-    /// The replay grid `model` is stable on: the campaign's step, halved
-    /// until `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed.
-    /// Powers of two, so that the grid changes only where a fit's
-    /// parameters cross a doubling of the model's stiffness, not with every
-    /// small step of theirs. None when [`MAX_SUBSTEPS`] substeps are not
-    /// enough (a tyre lag of a few millimetres at racing speed).
-    pub fn drive_for(&self, model: &Augmented) -> Option<&Drive> {
+    /// The replay `model` needs on the campaign's step: by RK4 while
+    /// `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed, else
+    /// by ROS34PW2, which is stable at any step. The step stays the
+    /// campaign's: a stiff model (racing axles at a few m/s, a tyre lag of
+    /// millimetres) costs a Jacobian a step, not a finer grid, and its fast
+    /// modes, settled within a step, are followed quasi-statically.
+    pub fn drive_for(&self, model: &Augmented) -> &Drive {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
             .fastest_rate(lo, friction)
             .max(vehicle.fastest_rate(hi, friction));
-        let mut n = 1;
-        while self.drive.step / n as f64 * rho > STABLE_STEP {
-            if n == MAX_SUBSTEPS {
-                return None;
-            }
-            n *= 2;
+        if self.drive.step * rho <= STABLE_STEP {
+            &self.drive
+        } else {
+            self.stiff
+                .get_or_init(|| self.inputs.drive(self.drive.step, FixedStep::RosenbrockW))
         }
-        if n == 1 {
-            return Some(&self.drive);
-        }
-        let k = n.trailing_zeros() as usize - 1;
-        Some(self.refined[k].get_or_init(|| self.inputs.drive(self.drive.step / n as f64)))
     }
 
     /// The run replayed by `model` from its first measured state less the
-    /// model's sensor offsets, on the grid [`Prepared::drive_for`] gives.
-    /// A model no grid is stable for replays as diverged (its states NaN:
-    /// a fit sees a very bad fit, not an unstable integration's chaos).
+    /// model's sensor offsets, by the method [`Prepared::drive_for`] picks.
     pub fn replay(&self, model: &Augmented) -> TimeHistory {
         let (beta, yaw_rate) = self.start_of(model);
-        match self.drive_for(model) {
-            Some(drive) => model.simulate_from(drive, beta, yaw_rate),
-            None => {
-                let mut h = model.simulate_from(&self.drive, beta, yaw_rate);
-                for v in [&mut h.beta, &mut h.yaw_rate, &mut h.ay, &mut h.roll] {
-                    v.fill(f64::NAN);
-                }
-                h
-            }
-        }
+        model.simulate_from(self.drive_for(model), beta, yaw_rate)
     }
 
     /// Number of residuals of this run.
@@ -310,9 +289,9 @@ impl Prepared {
 }
 
 impl ReplayInputs {
-    /// The inputs on the grid of step `step`.
-    fn drive(&self, step: f64) -> Drive {
-        Drive::replay(&self.t, &self.steer, &self.speed, step).with_channels(
+    /// The inputs on the grid of step `step`, sampled for `method`.
+    fn drive(&self, step: f64, method: FixedStep) -> Drive {
+        Drive::replay(&self.t, &self.steer, &self.speed, step, method).with_channels(
             &self.t,
             self.ax.as_deref(),
             self.bank.as_deref(),

@@ -14,7 +14,7 @@
 
 use super::effects::EffectSet;
 use crate::manoeuvre::interpolate;
-pub use crate::sim::Drive;
+pub use crate::sim::{Drive, FixedStep};
 use crate::sim::{Integrator, TimeHistory};
 use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel};
 

@@ -2,23 +2,60 @@
 //! the one place where the model's right-hand side
 //! ([`VehicleModel::rates`]) meets an integrator, for every job — a
 //! scenario's simulation (inputs from the manoeuvre, RK4 or Dormand–Prince)
-//! and the diagnosis's replays of measured runs (inputs sampled once on the
-//! RK4 grid, [`Drive`], so repeated replays only evaluate the model).
+//! and the diagnosis's replays of measured runs (inputs sampled once at the
+//! stages of a fixed grid, [`Drive`], so repeated replays only evaluate the
+//! model; RK4, or the linearly implicit ROS34PW2 for a model too stiff for
+//! RK4 on that grid, [`FixedStep`]).
 //!
 //! The state has `N` = 2 reals (β, r) when no effect needs more, 6
 //! ([`StateVector`]) otherwise: the extra states are then integrated, and
 //! left out (zero) of the 2-state system, where they do not feed back.
 //! Units: SI, rad.
 
-use super::ode::{self, DenseSolution, OdeSystem, Tolerances};
+use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE};
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
 
-/// A run's inputs sampled at every RK4 stage of a fixed grid: index `2i` is
-/// grid time `t0 + i·h`, index `2i + 1` is `t0 + (i + ½)·h`.
+/// A fixed-grid method of a replay.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FixedStep {
+    /// The classical fourth-order Runge–Kutta method: 4 evaluations a step,
+    /// stable while `h·ρ ≲ 2.8` (ρ the fastest mode's rate).
+    Rk4,
+    /// The Rosenbrock–W method ROS34PW2 ([`ode::rosenbrock_w`]): third
+    /// order, L-stable at any step; 4 evaluations and a difference Jacobian
+    /// a step.
+    RosenbrockW,
+}
+
+impl FixedStep {
+    /// Where a step's input samples lie, as fractions of the step.
+    fn offsets(self) -> &'static [f64] {
+        match self {
+            Self::Rk4 => &[0.0, 0.5],
+            Self::RosenbrockW => &W_NODES[..3],
+        }
+    }
+
+    /// The sample index of stage `stage` of step `step` (a Jacobian probe
+    /// reads the step's first).
+    fn index(self, step: usize, stage: usize) -> usize {
+        match self {
+            Self::Rk4 => 2 * step + STAGE_HALF_STEPS[stage],
+            Self::RosenbrockW if stage == W_PROBE => 3 * step,
+            Self::RosenbrockW => 3 * step + stage,
+        }
+    }
+}
+
+/// A run's inputs sampled at every stage of a fixed grid. Under RK4 index
+/// `2i` is grid time `t0 + i·h` and `2i + 1` is `t0 + (i + ½)·h`; under
+/// ROS34PW2 `3i + j` is `t0 + (i + c_j)·h` with `c_j` its nodes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Drive {
+    /// The method it is sampled for.
+    pub method: FixedStep,
     /// Integration step, s.
     pub step: f64,
     /// First time, s.
@@ -36,14 +73,18 @@ pub struct Drive {
 }
 
 impl Drive {
-    /// Samples `m` over its duration with step `step`.
+    /// Samples `m` over its duration with step `step` for RK4.
     pub fn new(m: &Manoeuvre, step: f64) -> Self {
+        Self::for_method(m, step, FixedStep::Rk4)
+    }
+
+    /// Samples `m` over its duration with step `step` for `method`.
+    pub fn for_method(m: &Manoeuvre, step: f64, method: FixedStep) -> Self {
         let start = m.start_time();
         let steps = ((m.end_time() - start) / step).round().max(1.0) as usize;
-        let times: Vec<f64> = (0..=2 * steps)
-            .map(|j| start + 0.5 * step * j as f64)
-            .collect();
+        let times = Self::sample_times(method, start, step, steps);
         Self {
+            method,
             step,
             start,
             steps,
@@ -60,26 +101,33 @@ impl Drive {
     /// given: they reach the model as [`Inputs::ax`] and [`Inputs::bank`],
     /// which only its longitudinal and bank-profile effects read.
     pub fn with_channels(mut self, t: &[f64], ax: Option<&[f64]>, bank: Option<&[f64]>) -> Self {
-        let sample = |v: &[f64]| -> Vec<f64> {
-            (0..=2 * self.steps)
-                .map(|j| interpolate(t, v, self.start + 0.5 * self.step * j as f64))
-                .collect()
-        };
+        let times = Self::sample_times(self.method, self.start, self.step, self.steps);
+        let sample =
+            |v: &[f64]| -> Vec<f64> { times.iter().map(|&x| interpolate(t, v, x)).collect() };
         self.ax = ax.map_or_else(Vec::new, sample);
         self.bank = bank.map_or_else(Vec::new, sample);
         self
     }
 
-    /// The replay of measured steer and speed.
-    pub fn replay(t: &[f64], steer: &[f64], speed: &[f64], step: f64) -> Self {
-        Self::new(
+    /// The replay of measured steer and speed by `method`.
+    pub fn replay(t: &[f64], steer: &[f64], speed: &[f64], step: f64, method: FixedStep) -> Self {
+        Self::for_method(
             &Manoeuvre::Replay(Replay {
                 t: t.to_vec(),
                 steer: steer.to_vec(),
                 speed: speed.to_vec(),
             }),
             step,
+            method,
         )
+    }
+
+    /// The times of the samples of `steps` steps of `step` from `start`.
+    fn sample_times(method: FixedStep, start: f64, step: f64, steps: usize) -> Vec<f64> {
+        let offsets = method.offsets();
+        (0..=offsets.len() * steps)
+            .map(|k| start + step * ((k / offsets.len()) as f64 + offsets[k % offsets.len()]))
+            .collect()
     }
 
     /// Grid time of step `i`, s.
@@ -133,11 +181,12 @@ struct Driven<'a> {
     model: &'a VehicleModel,
     source: Source<'a>,
     friction: f64,
-    /// One load-transfer seed per RK4 stage: stage j of step n is predicted
-    /// from stage j of steps n − 1 and n − 2, which sit at evenly spaced
-    /// times. The adaptive method uses the first only.
+    /// One load-transfer seed per stage of a fixed-step method: stage j of
+    /// step n is predicted from stage j of steps n − 1 and n − 2, which sit
+    /// at evenly spaced times. The adaptive method uses the first only.
     seeds: [LoadTransferSeed; 4],
-    /// The RK4 (step, stage) being evaluated; None under Dormand–Prince.
+    /// The fixed-step (step, stage) being evaluated; None under
+    /// Dormand–Prince.
     stage: Option<(usize, usize)>,
     /// The last two (t, ay) solutions of the load-transfer loop (adaptive).
     history: [(f64, f64); 2],
@@ -167,7 +216,7 @@ impl<'a> Driven<'a> {
             Source::Manoeuvre(m) => manoeuvre_inputs(m, t, self.friction),
             Source::Sampled(d) => {
                 let k = match self.stage {
-                    Some((i, j)) => 2 * i + STAGE_HALF_STEPS[j],
+                    Some((i, j)) => d.method.index(i, j),
                     None => ((t - d.start) / (0.5 * d.step)).round().max(0.0) as usize,
                 };
                 d.inputs_at(k.min(d.steer.len() - 1), self.friction)
@@ -201,6 +250,19 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
         let inp = self.inputs(t);
         let mut full: StateVector = [0.0; 6];
         full[..N].copy_from_slice(x);
+        if matches!(self.stage, Some((_, W_PROBE))) {
+            // A Jacobian probe: its load solve starts from the step's own
+            // solution and leaves the stages' seeds and the record alone.
+            let mut seed = LoadTransferSeed {
+                ay: [self.last.1.ay; 3],
+                slope: self.seeds[0].slope,
+            };
+            let (dx, o) = self
+                .model
+                .rates(&full, &inp, &mut seed, self.load_tolerance);
+            self.load_evaluations += u64::from(o.load_iterations);
+            return std::array::from_fn(|i| dx[i]);
+        }
         let j = self.seed(t);
         let (dx, o) = self
             .model
@@ -216,6 +278,21 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
 
     fn rk4_stage(&mut self, step: usize, stage: usize) {
         self.stage = Some((step, stage));
+    }
+
+    fn w_stage(&mut self, step: usize, stage: usize) {
+        self.stage = Some((step, stage));
+    }
+
+    /// (β, r) always; the lagged slip angles and the roll states only when
+    /// the model integrates them.
+    fn implicit_states(&self) -> [bool; N] {
+        let e = &self.model.options.effects;
+        std::array::from_fn(|i| match i {
+            0 | 1 => true,
+            2 | 3 => e.lagged(),
+            _ => e.uses_roll(),
+        })
     }
 }
 
@@ -242,6 +319,18 @@ fn run_rk4<const N: usize>(
 ) -> TimeHistory {
     let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
     ode::rk4(sys, t0, h, n, x0, |sys, _, t, x| {
+        record(&mut hist, sys, t, x);
+        true
+    });
+    hist.load_evaluations = sys.load_evaluations;
+    hist
+}
+
+/// ROS34PW2 of the full state on `n` steps of `h` from `t0`, recording
+/// every grid point.
+fn run_w(sys: &mut Driven, t0: f64, h: f64, n: usize, x0: StateVector) -> TimeHistory {
+    let mut hist = TimeHistory::with_capacity(n + 1, true);
+    ode::rosenbrock_w(sys, t0, h, n, x0, |sys, _, t, x| {
         record(&mut hist, sys, t, x);
         true
     });
@@ -282,13 +371,17 @@ impl Integrator {
         }
     }
 
-    /// Replays `drive` from the full state `x0` with RK4 on the drive's own
-    /// grid (whatever this integrator's method and step), all six states
-    /// integrated and the roll recorded: the diagnosis's replay of a run.
+    /// Replays `drive` from the full state `x0` by the drive's method on
+    /// its own grid (whatever this integrator's method and step), all six
+    /// states integrated and the roll recorded: the diagnosis's replay of a
+    /// run.
     pub fn replay(&self, model: &VehicleModel, drive: &Drive, x0: StateVector) -> TimeHistory {
         let tol = crate::vehicle::LOAD_TOLERANCE;
         let mut sys = Driven::new(model, Source::Sampled(drive), self.friction, tol);
-        run_rk4::<6>(&mut sys, drive.start, drive.step, drive.steps, x0)
+        match drive.method {
+            FixedStep::Rk4 => run_rk4::<6>(&mut sys, drive.start, drive.step, drive.steps, x0),
+            FixedStep::RosenbrockW => run_w(&mut sys, drive.start, drive.step, drive.steps, x0),
+        }
     }
 
     /// The error-controlled solution of `manoeuvre` from `x0` (restarted at

@@ -23,7 +23,7 @@ mod driven;
 pub mod ode;
 
 use driven::manoeuvre_inputs;
-pub use driven::Drive;
+pub use driven::{Drive, FixedStep};
 pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
 
 use crate::manoeuvre::Manoeuvre;

@@ -1,25 +1,41 @@
-//! Explicit Runge–Kutta integration of small ODE systems `ẋ = f(t, x)` with a
-//! state of `N` reals: the error-controlled Dormand–Prince 5(4) pair with its
-//! continuous (dense) output, and the classical fixed-step RK4.
+//! Integration of small ODE systems `ẋ = f(t, x)` with a state of `N`
+//! reals: the error-controlled Dormand–Prince 5(4) pair with its continuous
+//! (dense) output, the classical fixed-step RK4, and the fixed-step
+//! linearly implicit Rosenbrock–W method ROS34PW2 for stiff systems.
 //!
-//! Method: Dormand & Prince (1980), "A family of embedded Runge–Kutta
-//! formulae", J. Comp. Appl. Math. 6; step-size control (PI controller with
-//! β = 0.04, safety 0.9, growth within [0.2, 10]) and the fourth-order dense
-//! output as in Hairer, Nørsett & Wanner, *Solving Ordinary Differential
-//! Equations I* (2nd ed., 1993), §II.4–II.6. The local error is measured in
-//! the weighted RMS norm with weights `atol + rtol·max(|x_old|, |x_new|)`.
+//! Methods:
+//! - Dormand & Prince (1980), "A family of embedded Runge–Kutta formulae",
+//!   J. Comp. Appl. Math. 6; step-size control (PI controller with β = 0.04,
+//!   safety 0.9, growth within [0.2, 10]) and the fourth-order dense output
+//!   as in Hairer, Nørsett & Wanner, *Solving Ordinary Differential
+//!   Equations I* (2nd ed., 1993), §II.4–II.6. The local error is measured
+//!   in the weighted RMS norm with weights `atol + rtol·max(|x_old|, |x_new|)`.
+//! - ROS34PW2: Rang & Angermann (2005), "New Rosenbrock W-methods of order 3
+//!   for partial differential algebraic equations of index 1", BIT Numer.
+//!   Math. 45; the scheme's form as in Hairer & Wanner, *Solving Ordinary
+//!   Differential Equations II* (2nd ed., 1996), §IV.7. Four stages, one LU
+//!   of `I − hγW` per step, L-stable and stiffly accurate. Being a W-method
+//!   it keeps order 3 whatever the matrix `W` that stands in for the
+//!   Jacobian: here forward differences of the system (the load-transfer
+//!   solve inside the model makes them inexact, which costs no order), and
+//!   no `∂f/∂t` term (the autonomised system's Jacobian with a zero time
+//!   column is one more such `W`). Stability against the stiff modes needs
+//!   `W` only to be near the Jacobian.
 //!
 //! Why not a crate: `ode_solvers` (the maintained Rust DOPRI5) records its
 //! output at uniform intervals into vectors it allocates, has no output at
 //! arbitrary times (measured runs are sampled irregularly), no event location
-//! and no way to restart at the input's breakpoints; the method itself is a
-//! table of published coefficients and forty lines of control logic.
+//! and no way to restart at the input's breakpoints, and has no Rosenbrock
+//! method; each method is a table of published coefficients and a few dozen
+//! lines of stepping logic.
 //!
 //! Inputs with kinks (a step steer's ramp start and end) are handled by
 //! breakpoints: the solution is restarted at each, so no step straddles a
 //! discontinuity of the right-hand side's derivatives. Nothing allocates per
 //! step except the growth of the stored dense solution (one segment of
 //! `5·N` reals per accepted step). Units are whatever the system uses.
+
+use nalgebra::{Const, DimMin, SMatrix, SVector};
 
 /// An ODE system with `N` states. `&mut self` lets a system keep caches
 /// (the load-transfer solve's starting point) between evaluations; the
@@ -34,6 +50,20 @@ pub trait OdeSystem<const N: usize> {
     /// load-transfer starting point per stage. The adaptive method does not
     /// call it.
     fn rk4_stage(&mut self, _step: usize, _stage: usize) {}
+
+    /// Called by [`rosenbrock_w`] before each evaluation: `stage` 0–3 are
+    /// the method's stages (at [`W_NODES`] of the step; stage 3 at the step's
+    /// end), [`W_PROBE`] the difference quotients of the Jacobian at stage
+    /// 0's time. A system can read inputs sampled once per stage and keep
+    /// its caches out of the probes. The other methods do not call it.
+    fn w_stage(&mut self, _step: usize, _stage: usize) {}
+
+    /// The states whose Jacobian columns [`rosenbrock_w`] differences: a
+    /// state that is constant (a lag or roll state a model does not use)
+    /// can be left out, its column taken as zero.
+    fn implicit_states(&self) -> [bool; N] {
+        [true; N]
+    }
 }
 
 /// Error tolerances of the adaptive integrator.
@@ -429,6 +459,111 @@ pub fn rk4<const N: usize, S: OdeSystem<N>>(
         }
     }
     x
+}
+
+// ROS34PW2 (Rang & Angermann 2005): γ, α_ij, γ_ij, b_i, with the
+// published digits (more than an f64 holds, kept so they can be checked).
+#[allow(clippy::excessive_precision)]
+const W_GAMMA: f64 = 0.435_866_521_508_459;
+#[allow(clippy::excessive_precision)]
+const W_ALPHA: [[f64; 3]; 4] = [
+    [0.0, 0.0, 0.0],
+    [0.871_733_043_016_918_01, 0.0, 0.0],
+    [0.844_570_600_153_694_23, -0.112_990_642_364_841_85, 0.0],
+    [0.0, 0.0, 1.0],
+];
+#[allow(clippy::excessive_precision)]
+const W_GAMMAS: [[f64; 3]; 4] = [
+    [0.0, 0.0, 0.0],
+    [-0.871_733_043_016_918_01, 0.0, 0.0],
+    [-0.903_380_570_130_440_82, 0.054_180_672_388_095_326, 0.0],
+    [
+        0.242_123_807_060_953_46,
+        -1.223_250_583_904_514_7,
+        0.545_260_255_335_102_14,
+    ],
+];
+#[allow(clippy::excessive_precision)]
+const W_B: [f64; 4] = [
+    0.242_123_807_060_953_46,
+    -1.223_250_583_904_514_7,
+    1.545_260_255_335_102_0,
+    0.435_866_521_508_459,
+];
+
+/// The times of ROS34PW2's four stages as fractions of the step.
+pub const W_NODES: [f64; 4] = [0.0, W_ALPHA[1][0], W_ALPHA[2][0] + W_ALPHA[2][1], 1.0];
+
+/// The stage number [`OdeSystem::w_stage`] announces for the Jacobian's
+/// difference quotients.
+pub const W_PROBE: usize = 4;
+
+/// The Rosenbrock–W method ROS34PW2 on the grid `t0 + i·h`, `i = 0..=n`,
+/// from `x0`, with `record` called as [`rk4`] calls it (at every grid
+/// point, right after the first stage). The matrix `W` is the system's
+/// Jacobian by forward differences at the start of every step, over the
+/// columns [`OdeSystem::implicit_states`] names. A step whose `I − hγW` is
+/// singular (an unstable model with an eigenvalue at `1/(hγ)`) leaves the
+/// state NaN from there on. Returns the last state reached. Allocates
+/// nothing.
+pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t0: f64,
+    h: f64,
+    n: usize,
+    x0: [f64; N],
+    mut record: impl FnMut(&mut S, usize, f64, &[f64; N]) -> bool,
+) -> [f64; N]
+where
+    Const<N>: DimMin<Const<N>, Output = Const<N>>,
+{
+    let implicit = sys.implicit_states();
+    let mut x = SVector::<f64, N>::from(x0);
+    for i in 0..=n {
+        let t = t0 + i as f64 * h;
+        sys.w_stage(i, 0);
+        let f0 = SVector::<f64, N>::from(sys.derivatives(t, &x.into()));
+        if !record(sys, i, t, &x.into()) || i == n {
+            break;
+        }
+        sys.w_stage(i, W_PROBE);
+        let mut w = SMatrix::<f64, N, N>::zeros();
+        for j in (0..N).filter(|&j| implicit[j]) {
+            // The states are angles and rates of order 0.01–1: a fixed
+            // relative step well above the load solve's tolerance.
+            let d = 1e-7 * x[j].abs().max(1.0);
+            let mut xp = x;
+            xp[j] += d;
+            let fp = SVector::<f64, N>::from(sys.derivatives(t, &xp.into()));
+            w.set_column(j, &((fp - f0) / d));
+        }
+        let lu = (SMatrix::<f64, N, N>::identity() - w * (h * W_GAMMA)).lu();
+        let mut k = [SVector::<f64, N>::zeros(); 4];
+        for s in 0..4 {
+            let f = if s == 0 {
+                f0
+            } else {
+                sys.w_stage(i, s);
+                let mut xs = x;
+                for (j, kj) in k.iter().enumerate().take(s) {
+                    xs += kj * W_ALPHA[s][j];
+                }
+                SVector::<f64, N>::from(sys.derivatives(t + W_NODES[s] * h, &xs.into()))
+            };
+            let mut g = SVector::<f64, N>::zeros();
+            for (j, kj) in k.iter().enumerate().take(s) {
+                g += kj * W_GAMMAS[s][j];
+            }
+            let rhs = (f + w * g) * h;
+            k[s] = lu
+                .solve(&rhs)
+                .unwrap_or_else(|| SVector::<f64, N>::repeat(f64::NAN));
+        }
+        for (kj, b) in k.iter().zip(W_B) {
+            x += kj * b;
+        }
+    }
+    x.into()
 }
 
 #[cfg(test)]

@@ -269,8 +269,8 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
             .collect();
         rms(&e) / rms(&reference.yaw_rate)
     };
-    // Measured 4.6e-6.
-    assert!(error(&observed) < 2e-5, "{}", error(&observed));
+    // Measured 1.1e-5 (4.6e-6 with a Jacobian every step).
+    assert!(error(&observed) < 3e-5, "{}", error(&observed));
     // A tyre lag of 1.5 mm (rate 20,000 1/s at 30 m/s, a quarter of a
     // millisecond at 6 m/s) is as good as none: its replay at the same
     // 20 ms must match the lag-free reference.

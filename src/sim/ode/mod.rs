@@ -13,10 +13,10 @@
 //! - ROS34PW2: Rang & Angermann (2005), "New Rosenbrock W-methods of order 3
 //!   for partial differential algebraic equations of index 1", BIT Numer.
 //!   Math. 45; the scheme's form as in Hairer & Wanner, *Solving Ordinary
-//!   Differential Equations II* (2nd ed., 1996), §IV.7. Four stages, one LU
-//!   of `I − hγW` per step, L-stable and stiffly accurate. Being a W-method
-//!   it keeps order 3 whatever the matrix `W` that stands in for the
-//!   Jacobian: here forward differences of the system (the load-transfer
+//!   Differential Equations II* (2nd ed., 1996), §IV.7. Four stages and
+//!   one inverse of `I − hγW` per Jacobian, L-stable and stiffly accurate.
+//!   Being a W-method it keeps order 3 whatever the matrix `W` that stands
+//!   in for the Jacobian: here forward differences of the system (the load-transfer
 //!   solve inside the model makes them inexact, which costs no order), and
 //!   no `∂f/∂t` term (the autonomised system's Jacobian with a zero time
 //!   column is one more such `W`). Stability against the stiff modes needs
@@ -35,7 +35,7 @@
 //! step except the growth of the stored dense solution (one segment of
 //! `5·N` reals per accepted step). Units are whatever the system uses.
 
-use nalgebra::{Const, DimMin, SMatrix, SVector};
+use nalgebra::{SMatrix, SVector};
 
 /// An ODE system with `N` states. `&mut self` lets a system keep caches
 /// (the load-transfer solve's starting point) between evaluations; the
@@ -501,24 +501,29 @@ pub const W_PROBE: usize = 4;
 /// The Rosenbrock–W method ROS34PW2 on the grid `t0 + i·h`, `i = 0..=n`,
 /// from `x0`, with `record` called as [`rk4`] calls it (at every grid
 /// point, right after the first stage). The matrix `W` is the system's
-/// Jacobian by forward differences at the start of every step, over the
-/// columns [`OdeSystem::implicit_states`] names. A step whose `I − hγW` is
-/// singular (an unstable model with an eigenvalue at `1/(hγ)`) leaves the
-/// state NaN from there on. Returns the last state reached. Allocates
-/// nothing.
+/// Jacobian by forward differences, over the columns
+/// [`OdeSystem::implicit_states`] names, at the start of every `refresh`-th
+/// step; the steps between reuse it and its LU (the order stays 3; the
+/// stiff modes stay damped while the Jacobian changes little over
+/// `refresh` steps). A step whose `I − hγW` is singular (an unstable model
+/// with an eigenvalue at `1/(hγ)`) leaves the state NaN from there on.
+/// Returns the last state reached. Allocates nothing.
 pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
     sys: &mut S,
     t0: f64,
     h: f64,
     n: usize,
     x0: [f64; N],
+    refresh: usize,
     mut record: impl FnMut(&mut S, usize, f64, &[f64; N]) -> bool,
-) -> [f64; N]
-where
-    Const<N>: DimMin<Const<N>, Output = Const<N>>,
-{
+) -> [f64; N] {
     let implicit = sys.implicit_states();
     let mut x = SVector::<f64, N>::from(x0);
+    let mut w = SMatrix::<f64, N, N>::zeros();
+    // (I − hγW)⁻¹: formed once per Jacobian, each stage is then a product
+    // (a few dozen multiply-adds, where the LU's two triangular solves per
+    // stage took a quarter of a replay).
+    let mut inverse = SMatrix::<f64, N, N>::identity();
     for i in 0..=n {
         let t = t0 + i as f64 * h;
         sys.w_stage(i, 0);
@@ -526,18 +531,24 @@ where
         if !record(sys, i, t, &x.into()) || i == n {
             break;
         }
-        sys.w_stage(i, W_PROBE);
-        let mut w = SMatrix::<f64, N, N>::zeros();
-        for j in (0..N).filter(|&j| implicit[j]) {
-            // The states are angles and rates of order 0.01–1: a fixed
-            // relative step well above the load solve's tolerance.
-            let d = 1e-7 * x[j].abs().max(1.0);
-            let mut xp = x;
-            xp[j] += d;
-            let fp = SVector::<f64, N>::from(sys.derivatives(t, &xp.into()));
-            w.set_column(j, &((fp - f0) / d));
+        if i % refresh.max(1) == 0 {
+            sys.w_stage(i, W_PROBE);
+            for j in 0..N {
+                if !implicit[j] {
+                    continue;
+                }
+                // The states are angles and rates of order 0.01–1: a fixed
+                // relative step well above the load solve's tolerance.
+                let d = 1e-7 * x[j].abs().max(1.0);
+                let mut xp = x;
+                xp[j] += d;
+                let fp = SVector::<f64, N>::from(sys.derivatives(t, &xp.into()));
+                w.set_column(j, &((fp - f0) / d));
+            }
+            inverse = (SMatrix::<f64, N, N>::identity() - w * (h * W_GAMMA))
+                .try_inverse()
+                .unwrap_or_else(|| SMatrix::<f64, N, N>::repeat(f64::NAN));
         }
-        let lu = (SMatrix::<f64, N, N>::identity() - w * (h * W_GAMMA)).lu();
         let mut k = [SVector::<f64, N>::zeros(); 4];
         for s in 0..4 {
             let f = if s == 0 {
@@ -554,10 +565,7 @@ where
             for (j, kj) in k.iter().enumerate().take(s) {
                 g += kj * W_GAMMAS[s][j];
             }
-            let rhs = (f + w * g) * h;
-            k[s] = lu
-                .solve(&rhs)
-                .unwrap_or_else(|| SVector::<f64, N>::repeat(f64::NAN));
+            k[s] = inverse * ((f + w * g) * h);
         }
         for (kj, b) in k.iter().zip(W_B) {
             x += kj * b;

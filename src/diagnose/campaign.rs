@@ -22,7 +22,7 @@ pub struct DiagnoseSettings {
     pub seed: u64,
     /// Candidate effects (default: the whole library).
     pub effects: Option<Vec<String>>,
-    /// RK4 step of the replays, s.
+    /// Step of the replays (RK4, or ROS34PW2 for a model too stiff for it), s.
     pub step: f64,
     /// Rate at which residuals are sampled for the fits, Hz.
     pub sample_rate: f64,

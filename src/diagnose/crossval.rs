@@ -213,7 +213,7 @@ const SWARM_STALL: Stall = Stall {
     tolerance: 1e-3,
 };
 
-/// The runs prepared for replay (sampled on the RK4 grid, residual
+/// The runs prepared for replay (sampled on the replay grid, residual
 /// times picked), the cross-validation folds (run i in fold i mod k) and
 /// the swarm every effect fit starts with.
 pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {

@@ -169,8 +169,8 @@ impl Prepared {
     /// `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed, else
     /// by ROS34PW2, which is stable at any step. The step stays the
     /// campaign's: a stiff model (racing axles at a few m/s, a tyre lag of
-    /// millimetres) costs a Jacobian a step, not a finer grid, and its fast
-    /// modes, settled within a step, are followed quasi-statically.
+    /// millimetres) costs a Jacobian every few steps, not a finer grid, and
+    /// its fast modes, settled within a step, are followed quasi-statically.
     pub fn drive_for(&self, model: &Augmented) -> &Drive {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;

@@ -12,8 +12,14 @@
 //!   each step; outputs recorded from the first stage of each step, so every
 //!   recorded row is the model evaluated at exactly that state.
 //!
+//! A diagnosis's replay of a measured run ([`Drive`]) runs by RK4 or, for a
+//! model too stiff for RK4 at the replay's step, by the Rosenbrock–W method
+//! ROS34PW2 at that step ([`FixedStep`], [`ode::rosenbrock_w`]), recorded
+//! the same way.
+//!
 //! The load-transfer loop (loads depend on ay, ay on the forces) is solved
-//! at every stage of both methods, not lagged; under Dormand–Prince to a
+//! at every stage of every method, not lagged (the Rosenbrock–W method's
+//! Jacobian probes excepted, at the step's loads); under Dormand–Prince to a
 //! tolerance tied to the integrator's ([`load_tolerance`]), each solve
 //! started from the linear extrapolation in time of the last two. The RK4 step loop allocates nothing (the history's columns are
 //! reserved before it starts); the adaptive one allocates only the dense

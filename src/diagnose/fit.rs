@@ -686,8 +686,16 @@ impl FoldModel<'_> {
 const REFIT_DECREASE: f64 = 1e-6;
 
 /// Replays of a fold refit on the all-run quadratic model before it falls
-/// back to Levenberg–Marquardt.
-const REFIT_MODEL_STEPS: usize = 6;
+/// back to Levenberg–Marquardt. A model step costs one replay, an iteration
+/// of Levenberg–Marquardt `n + 1` or more: where one run of a real log
+/// leaving moves the optimum far (a 20 s piece of a racing log), the model's
+/// steps go on lowering the cost as predicted, a share of 1e-3 to 1e-5 a
+/// step, well past a handful of them (measured on the Putnam log).
+const REFIT_MODEL_STEPS: usize = 20;
+
+/// Rejected model steps in a row after which the model no longer serves
+/// (the optimum lies beyond where it holds): Levenberg–Marquardt goes on.
+const REFIT_MODEL_REJECTIONS: usize = 3;
 
 /// Refits `problem` (the training runs of a fold, whose residual rows are
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
@@ -702,7 +710,8 @@ const REFIT_MODEL_STEPS: usize = 6;
 /// replay of the training runs, the damping raised after a step that does
 /// not lower the cost and lowered after one that does, until the model
 /// predicts a decrease below [`REFIT_DECREASE`] of the cost. Where that
-/// does not happen within [`REFIT_MODEL_STEPS`] replays,
+/// does not happen within [`REFIT_MODEL_STEPS`] replays, or
+/// [`REFIT_MODEL_REJECTIONS`] steps in a row fail,
 /// Levenberg–Marquardt (fresh Jacobians) goes on from there within its
 /// budget. Without a linearisation (`full` not polished) it is
 /// Levenberg–Marquardt from `full`.
@@ -730,8 +739,9 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut evaluations = 0;
     // Damping raised without a replay when the model is not positive
     // definite: a bounded number of tries in all.
+    let mut rejected = 0;
     for _ in 0..4 * REFIT_MODEL_STEPS {
-        if evaluations == REFIT_MODEL_STEPS {
+        if evaluations == REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
             break;
         }
         let Some((d, predicted)) = model.at(&p, &r, bounds).step(lambda) else {
@@ -757,8 +767,10 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
             (p, cost) = (q, c);
             std::mem::swap(&mut r, &mut trial);
             lambda *= 0.1;
+            rejected = 0;
         } else {
             lambda = (lambda * 10.0).max(1e-3);
+            rejected += 1;
         }
     }
     let mut f = fit(problem, &p, None, Polish::Refit);

@@ -24,8 +24,8 @@ pub enum FixedStep {
     /// stable while `h·ρ ≲ 2.8` (ρ the fastest mode's rate).
     Rk4,
     /// The Rosenbrock–W method ROS34PW2 ([`ode::rosenbrock_w`]): third
-    /// order, L-stable at any step; 4 evaluations and a difference Jacobian
-    /// a step.
+    /// order, L-stable at any step; 4 evaluations a step and a difference
+    /// Jacobian every [`W_REFRESH`] steps.
     RosenbrockW,
 }
 

@@ -25,7 +25,7 @@ pub enum FixedStep {
     Rk4,
     /// The Rosenbrock–W method ROS34PW2 ([`ode::rosenbrock_w`]): third
     /// order, L-stable at any step; 4 evaluations a step and a difference
-    /// Jacobian every [`W_REFRESH`] steps.
+    /// Jacobian every 4 steps.
     RosenbrockW,
 }
 

@@ -12,7 +12,7 @@
 //! left out (zero) of the 2-state system, where they do not feed back.
 //! Units: SI, rad.
 
-use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE};
+use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE};
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
@@ -24,7 +24,7 @@ pub enum FixedStep {
     /// stable while `h·ρ ≲ 2.8` (ρ the fastest mode's rate).
     Rk4,
     /// The Rosenbrock–W method ROS34PW2 ([`ode::rosenbrock_w`]): third
-    /// order, L-stable at any step; 4 evaluations a step and a difference
+    /// order, L-stable at any step; 5 evaluations a step and a difference
     /// Jacobian every 4 steps.
     RosenbrockW,
 }
@@ -44,6 +44,7 @@ impl FixedStep {
         match self {
             Self::Rk4 => 2 * step + STAGE_HALF_STEPS[stage],
             Self::RosenbrockW if stage == W_PROBE => 3 * step,
+            Self::RosenbrockW if stage == W_TIME_PROBE => 3 * step + 1,
             Self::RosenbrockW => 3 * step + stage,
         }
     }
@@ -250,8 +251,8 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
         let inp = self.inputs(t);
         let mut full: StateVector = [0.0; 6];
         full[..N].copy_from_slice(x);
-        if matches!(self.stage, Some((_, W_PROBE))) {
-            // A Jacobian probe: at the wheel loads of the step's own
+        if matches!(self.stage, Some((_, W_PROBE | W_TIME_PROBE))) {
+            // A Jacobian or time probe: at the wheel loads of the step's own
             // solution, not solved again (one evaluation; and a solve, exact
             // only to its tolerance, would put that tolerance over the
             // probe's small step into W, unsmooth in a fit's parameters);

@@ -16,11 +16,13 @@
 //!   Differential Equations II* (2nd ed., 1996), §IV.7. Four stages and
 //!   one inverse of `I − hγW` per Jacobian, L-stable and stiffly accurate.
 //!   Being a W-method it keeps order 3 whatever the matrix `W` that stands
-//!   in for the Jacobian: here forward differences of the system (the load-transfer
-//!   solve inside the model makes them inexact, which costs no order), and
-//!   no `∂f/∂t` term (the autonomised system's Jacobian with a zero time
-//!   column is one more such `W`). Stability against the stiff modes needs
-//!   `W` only to be near the Jacobian.
+//!   in for the Jacobian: here forward differences of the system at the
+//!   step's wheel loads, and `∂f/∂t` by a forward difference over the first
+//!   stage's time (the autonomised system's time column; any approximation
+//!   keeps the order). Stability against the stiff modes needs `W` only to
+//!   be near the Jacobian; accuracy when a stiff mode follows its inputs
+//!   needs `∂f/∂t` (without it, on a car 40 times as stiff as a sedan at a
+//!   10 ms step, the fits of a diagnosis were measurably biased).
 //!
 //! Why not a crate: `ode_solvers` (the maintained Rust DOPRI5) records its
 //! output at uniform intervals into vectors it allocates, has no output at
@@ -54,8 +56,9 @@ pub trait OdeSystem<const N: usize> {
     /// Called by [`rosenbrock_w`] before each evaluation: `stage` 0–3 are
     /// the method's stages (at [`W_NODES`] of the step; stage 3 at the step's
     /// end), [`W_PROBE`] the difference quotients of the Jacobian at stage
-    /// 0's time. A system can read inputs sampled once per stage and keep
-    /// its caches out of the probes. The other methods do not call it.
+    /// 0's time, [`W_TIME_PROBE`] the step's start state at stage 1's time.
+    /// A system can read inputs sampled once per stage and keep its caches
+    /// out of the probes. The other methods do not call it.
     fn w_stage(&mut self, _step: usize, _stage: usize) {}
 
     /// The states whose Jacobian columns [`rosenbrock_w`] differences: a
@@ -491,6 +494,14 @@ const W_B: [f64; 4] = [
     0.435_866_521_508_459,
 ];
 
+/// `γ_i = Σ_j γ_ij` with the diagonal `γ`: the weights of `h²·∂f/∂t`.
+const W_GAMMA_SUMS: [f64; 4] = [
+    W_GAMMA,
+    W_GAMMA + W_GAMMAS[1][0],
+    W_GAMMA + W_GAMMAS[2][0] + W_GAMMAS[2][1],
+    W_GAMMA + W_GAMMAS[3][0] + W_GAMMAS[3][1] + W_GAMMAS[3][2],
+];
+
 /// The times of ROS34PW2's four stages as fractions of the step.
 pub const W_NODES: [f64; 4] = [0.0, W_ALPHA[1][0], W_ALPHA[2][0] + W_ALPHA[2][1], 1.0];
 
@@ -498,10 +509,16 @@ pub const W_NODES: [f64; 4] = [0.0, W_ALPHA[1][0], W_ALPHA[2][0] + W_ALPHA[2][1]
 /// difference quotients.
 pub const W_PROBE: usize = 4;
 
+/// The stage number [`OdeSystem::w_stage`] announces for the evaluation
+/// at the step's start state and its second stage's time, which gives
+/// `∂f/∂t` by a difference quotient.
+pub const W_TIME_PROBE: usize = 5;
+
 /// The Rosenbrock–W method ROS34PW2 on the grid `t0 + i·h`, `i = 0..=n`,
 /// from `x0`, with `record` called as [`rk4`] calls it (at every grid
-/// point, right after the first stage). The matrix `W` is the system's
-/// Jacobian by forward differences, over the columns
+/// point, right after the first stage); one more evaluation a step gives
+/// `∂f/∂t`. The matrix `W` is the system's Jacobian by forward
+/// differences, over the columns
 /// [`OdeSystem::implicit_states`] names, at the start of every `refresh`-th
 /// step; the steps between reuse it and its LU (the order stays 3; the
 /// stiff modes stay damped while the Jacobian changes little over
@@ -549,6 +566,12 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
                 .try_inverse()
                 .unwrap_or_else(|| SMatrix::<f64, N, N>::repeat(f64::NAN));
         }
+        // ∂f/∂t over the step's first part: without it the stiff modes,
+        // which follow their inputs quasi-statically, lag them by a share of
+        // the step.
+        sys.w_stage(i, W_TIME_PROBE);
+        let dt = W_NODES[1] * h;
+        let ft = (SVector::<f64, N>::from(sys.derivatives(t + dt, &x.into())) - f0) / dt;
         let mut k = [SVector::<f64, N>::zeros(); 4];
         for s in 0..4 {
             let f = if s == 0 {
@@ -565,7 +588,7 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
             for (j, kj) in k.iter().enumerate().take(s) {
                 g += kj * W_GAMMAS[s][j];
             }
-            k[s] = inverse * ((f + w * g) * h);
+            k[s] = inverse * ((f + w * g) * h + ft * (W_GAMMA_SUMS[s] * h * h));
         }
         for (kj, b) in k.iter().zip(W_B) {
             x += kj * b;

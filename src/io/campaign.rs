@@ -126,9 +126,15 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
             ),
         ));
     }
+    // A folder's whole name (`runs_0.05` is not `runs_0`): two folders
+    // must not write over each other's default output.
     let name = f.name.clone().unwrap_or_else(|| {
-        path.file_stem()
-            .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
+        if path.is_dir() {
+            path.file_name()
+        } else {
+            path.file_stem()
+        }
+        .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
     });
     Ok(Campaign {
         name,
@@ -159,7 +165,7 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
         s.step,
         1e-4,
         0.05,
-        "a replay step finer than 0.1 ms gains nothing on a log (a replay refines the step itself where a model is too stiff for it) and costs memory and time in proportion",
+        "a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)",
     )
     .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
     .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))

@@ -55,7 +55,9 @@ fn synth(dir: &Path, name: &str, effects: &str, seed: &str) -> PathBuf {
 #[test]
 fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     let dir = tempfile::tempdir().unwrap();
-    let campaign = synth(dir.path(), "delay", "sensor_delay", "3");
+    // A dot in the folder's name stays in the campaign's name (it once
+    // cut it, and two such folders wrote over each other's output).
+    let campaign = synth(dir.path(), "delay_0.05", "sensor_delay", "3");
     for f in ["vehicle.toml", "tyre_rig.csv", "runs/sweep_080kph.csv"] {
         assert!(campaign.join(f).is_file(), "{f}");
     }
@@ -73,6 +75,7 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     }
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
     assert_eq!(d["seed"], 3);
+    assert_eq!(d["campaign"], "delay_0.05");
     let top = &d["ranking"][0];
     assert_eq!(top["effect"], "sensor_delay");
     // The delay is recovered (truth 0.05 s) and most of the gap goes.

@@ -66,12 +66,7 @@ fn racing_log(c: &mut Criterion) {
             return;
         }
     };
-    let set = &campaign.settings;
-    let runs: Vec<Prepared> = campaign
-        .runs
-        .iter()
-        .map(|r| Prepared::new(r, set.step, set.sample_rate))
-        .collect();
+    let runs = Prepared::campaign_runs(&campaign);
     let axle = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: 3.5 });
     let model = Augmented {
         roll: campaign.roll,

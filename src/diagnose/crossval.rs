@@ -218,11 +218,7 @@ const SWARM_STALL: Stall = Stall {
 /// the swarm every effect fit starts with.
 pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
     let set = &c.settings;
-    let runs: Vec<Prepared> = c
-        .runs
-        .iter()
-        .map(|r| Prepared::new(r, set.step, set.sample_rate))
-        .collect();
+    let runs = Prepared::campaign_runs(c);
     let k = runs.len().min(MAX_FOLDS);
     let folds: Vec<Vec<usize>> = (0..k)
         .map(|f| (0..runs.len()).filter(|i| i % k == f).collect())

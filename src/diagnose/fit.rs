@@ -19,6 +19,7 @@
 //! stable under it there, else by the linearly implicit ROS34PW2
 //! ([`Prepared::drive_for`]). Units: SI, rad.
 
+use super::campaign::Campaign;
 use super::model::{Augmented, Drive, FixedStep, Observed};
 use crate::measured::MeasuredRun;
 use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
@@ -116,6 +117,16 @@ pub struct Prepared {
 }
 
 impl Prepared {
+    /// Every run of campaign `c`, prepared with its `[diagnose]` step and
+    /// residual rate.
+    pub fn campaign_runs(c: &Campaign) -> Vec<Self> {
+        let set = &c.settings;
+        c.runs
+            .iter()
+            .map(|r| Self::new(r, set.step, set.sample_rate))
+            .collect()
+    }
+
     /// Prepares `run` for replays with step `step` and residuals taken
     /// at `rate` Hz (at the samples nearest to it).
     /// Masked samples (logger glitches in a response channel) are skipped:

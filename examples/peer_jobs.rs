@@ -5,6 +5,10 @@
 //!   transfer and exact kinematics, by Dormand–Prince 5(4) at the default
 //!   tolerances; its yaw rate every 10 ms goes to `peer/out/step_crate.csv`
 //!   so the script checks it against its own tight reference;
+//! - the same step steer as SciPy's job is: the solver alone at SciPy's
+//!   tolerances (rtol 1e-6 / atol 1e-9, and 1e-10 / 1e-13) with no largest
+//!   step, (β, r) every 10 ms from the dense output
+//!   (`peer/out/step_solver_<rtol>.csv`);
 //! - the three steering-equilibrium sweeps of Li, Jia & Zhao (steer,
 //!   friction, speed; `scenarios/equilibria_*.toml`, without the bifurcation
 //!   search), equilibria per condition;
@@ -83,6 +87,45 @@ fn main() {
         std::hint::black_box(integ.run_dopri5(&model, &man, State::default(), &tol));
     });
 
+    // The same step steer as SciPy runs it: the solver alone, (β, r) at the
+    // 10 ms grid from the dense output, at SciPy's own tolerances and with no
+    // largest step (the job above evaluates the whole model at every output
+    // time, for ay, forces and loads, which SciPy's job does not return).
+    let grid: Vec<f64> = (0..=1000).map(|i| f64::from(i) * 0.01).collect();
+    let mut solver_only = Vec::new();
+    for (rtol, atol) in [(1e-6, 1e-9), (1e-10, 1e-13)] {
+        let tol = Tolerances {
+            rtol,
+            atol,
+            max_step: f64::INFINITY,
+        };
+        let solve = |out: &mut Vec<[f64; 2]>| {
+            let sol = integ
+                .solve_dopri5(&model, &man, State::default(), &tol)
+                .expect("a (β, r) model has a dense solution");
+            sol.states_into(&grid, out);
+            sol.stats
+        };
+        let mut states = Vec::with_capacity(grid.len());
+        let stats = solve(&mut states);
+        let csv: String = std::iter::once("t,yaw_rate,beta\n".to_string())
+            .chain(
+                grid.iter()
+                    .zip(&states)
+                    .map(|(t, x)| format!("{t},{:e},{:e}\n", x[1], x[0])),
+            )
+            .collect();
+        let file = format!("peer/out/step_solver_{rtol:e}.csv");
+        std::fs::write(root.join(&file), csv).expect("write");
+        let seconds = median_seconds(repeats * 10, || {
+            std::hint::black_box(solve(&mut states));
+        });
+        solver_only.push(format!(
+            "{{\"file\": \"{file}\", \"rtol\": {rtol:e}, \"atol\": {atol:e}, \"seconds\": {seconds:e}, \"steps\": {}, \"evaluations\": {}}}",
+            stats.accepted, stats.evaluations
+        ));
+    }
+
     // Equilibrium sweeps.
     let mut sweeps = Vec::new();
     for name in ["steer", "friction", "speed"] {
@@ -137,11 +180,12 @@ fn main() {
     });
     println!(
         "{{\"threads\": {}, \"step_steer\": {{\"seconds\": {step_steer:e}, \"steps\": {}, \"evaluations\": {}, \"rtol\": {:e}}}, \
-         \"equilibria\": [{}], \"pac89_fit\": {{\"seconds\": {fit_seconds:e}, \"sigma_percent\": {}, \"noise_sigma_percent\": {noise_sigma}}}}}",
+         \"step_steer_solver\": [{}], \"equilibria\": [{}], \"pac89_fit\": {{\"seconds\": {fit_seconds:e}, \"sigma_percent\": {}, \"noise_sigma_percent\": {noise_sigma}}}}}",
         rayon::current_num_threads(),
         sol.stats.accepted,
         sol.stats.evaluations,
         tol.rtol,
+        solver_only.join(", "),
         sweeps.join(", "),
         fit.sigma_percent,
     );

@@ -207,6 +207,18 @@ def main():
              t_step, f"yaw-rate error / r_ss: crate {err_crate:.1e}, SciPy {err_scipy:.1e}"),
             ("the same, SciPy RK45 rtol 1e-10 (accuracy matched)", c_step, t_tight,
              f"yaw-rate error / r_ss: crate {err_crate:.1e}, SciPy {err_tight:.1e}")]
+    # The solver alone, as SciPy's job is: states at the same times, the same
+    # tolerances, each side's right-hand-side evaluations counted.
+    for job, (scipy_sol, t_scipy, err_s) in zip(
+            crate["step_steer_solver"], [(sp, t_step, err_scipy), (tight, t_tight, err_tight)]):
+        states = np.loadtxt(os.path.join(ROOT, job["file"]),
+                            delimiter=",", skiprows=1)
+        assert np.allclose(states[:, 0], ref[:, 0], atol=1e-9), "time grids differ"
+        err_c = np.max(np.abs(states[:, 1] - ref[:, 2])) / r_ss
+        rows.append((f"the solver alone, (beta, r) every 10 ms, both at rtol {job['rtol']:.0e}, "
+                     f"atol {job['atol']:.0e}", job["seconds"], t_scipy,
+                     f"yaw-rate error / r_ss: crate {err_c:.1e}, SciPy {err_s:.1e}; "
+                     f"evaluations: crate {job['evaluations']}, SciPy {scipy_sol.nfev}"))
     for sw in crate["equilibria"]:
         conds = sweep_conditions(sw["sweep"])
         counts = equilibria(conds)

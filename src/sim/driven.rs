@@ -390,6 +390,27 @@ impl Integrator {
         }
     }
 
+    /// The error-controlled (β, r) solution of `manoeuvre` from `x0`
+    /// (restarted at the manoeuvre's breakpoints) and nothing else: what an
+    /// ODE solver returns, for a user who wants the states at chosen times
+    /// ([`DenseSolution::states_into`]) without the model's other signals.
+    /// None when the model has states beyond (β, r).
+    pub fn solve_dopri5(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        tol: &Tolerances,
+    ) -> Option<DenseSolution<2>> {
+        if model.options.effects.extra_states() {
+            return None;
+        }
+        let x = head(&self.initial(model, manoeuvre, x0));
+        let mut sys = Driven::new(model, Source::Manoeuvre(manoeuvre), self.friction, load_tolerance(tol));
+        let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
+        Some(ode::dopri5(&mut sys, t0, t1, x, &manoeuvre.breakpoints(), tol))
+    }
+
     /// The error-controlled solution of `manoeuvre` from `x0` (restarted at
     /// the manoeuvre's breakpoints) and its history sampled every `step`;
     /// the dense solution when the state is (β, r) alone.

@@ -406,9 +406,21 @@ impl Integrator {
             return None;
         }
         let x = head(&self.initial(model, manoeuvre, x0));
-        let mut sys = Driven::new(model, Source::Manoeuvre(manoeuvre), self.friction, load_tolerance(tol));
+        let mut sys = Driven::new(
+            model,
+            Source::Manoeuvre(manoeuvre),
+            self.friction,
+            load_tolerance(tol),
+        );
         let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
-        Some(ode::dopri5(&mut sys, t0, t1, x, &manoeuvre.breakpoints(), tol))
+        Some(ode::dopri5(
+            &mut sys,
+            t0,
+            t1,
+            x,
+            &manoeuvre.breakpoints(),
+            tol,
+        ))
     }
 
     /// The error-controlled solution of `manoeuvre` from `x0` (restarted at

@@ -280,9 +280,23 @@ fn run_files(
         files.extend(found);
     }
     if files.is_empty() {
+        // The vehicle file of a campaign folder, passed for the folder.
+        let hint = if !folder && base.join("runs").is_dir() {
+            let folder = if base.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                base
+            };
+            format!(
+                "; its folder has runs/: diagnose the folder instead, `handling diagnose {}`",
+                folder.display()
+            )
+        } else {
+            String::new()
+        };
         return Err(file_error(
             file,
-            "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)".into(),
+            format!("no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv){hint}"),
         ));
     }
     Ok(files)

@@ -199,6 +199,22 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let empty = tempfile::tempdir().unwrap();
     let e = campaign_err(empty.path());
     assert!(e.contains("vehicle.toml"), "{e}");
+    // A campaign folder's vehicle file passed for the folder: the error
+    // says so and names the folder to pass.
+    let dir = campaign_folder(
+        VEHICLE,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("b.csv", run_csv(100.0, 6.0, true, None)),
+        ],
+    );
+    let e = fails_cleanly("diagnose", &dir.path().join("vehicle.toml"), dir.path());
+    assert!(
+        e.contains("no measured runs")
+            && e.contains("diagnose the folder instead")
+            && e.contains(&format!("handling diagnose {}", dir.path().display())),
+        "{e}"
+    );
 }
 
 #[test]

@@ -52,7 +52,36 @@ impl TomlSource {
             let name = message.strip_prefix("unknown field `")?.split('`').next()?;
             self.find_key(name)
         });
+        // A value of the wrong type: toml's message names the value, the
+        // key is named here.
+        let message = match span.as_ref().and_then(|s| self.key_of_value_at(s.start)) {
+            Some(key) => format!("`{key}`: {message}"),
+            None => message,
+        };
         self.located(span, message)
+    }
+
+    /// The dotted path of the key whose value starts at byte `pos`.
+    fn key_of_value_at(&self, pos: usize) -> Option<String> {
+        fn walk(t: &dyn toml_edit::TableLike, pos: usize, path: &str) -> Option<String> {
+            for (k, item) in t.iter() {
+                let here = if path.is_empty() {
+                    k.to_string()
+                } else {
+                    format!("{path}.{k}")
+                };
+                if let Some(inner) = item.as_table_like() {
+                    if let Some(found) = walk(inner, pos, &here) {
+                        return Some(found);
+                    }
+                } else if item.span().is_some_and(|s| s.start == pos) {
+                    return Some(here);
+                }
+            }
+            None
+        }
+        let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
+        walk(doc.as_table(), pos, "")
     }
 
     /// Byte span of the key at dotted `key_path` (`vehicle.mass`,

@@ -195,6 +195,12 @@ fn diagnose_refuses_bad_campaigns_clearly() {
             && e.contains("(0.0001, 0.05]"),
         "{e}"
     );
+    // A value of the wrong type: file, line, column, key and value.
+    let e = settings_err("step = \"0.01\"");
+    assert!(
+        e.contains("vehicle.toml:") && e.contains("`diagnose.step`: invalid type: string \"0.01\""),
+        "{e}"
+    );
     // A folder without vehicle.toml.
     let empty = tempfile::tempdir().unwrap();
     let e = campaign_err(empty.path());

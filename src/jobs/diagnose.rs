@@ -127,20 +127,27 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             .map(|p| {
                 if p.at_bound {
                     format!(
-                        "{} = {:.4} {} (at its search bound: the data would take it further)",
-                        p.name, p.value, p.unit
+                        "{} = {} {} (at its search bound: the data would take it further)",
+                        p.name,
+                        value(p.value),
+                        p.unit
                     )
                 } else if p.std_error.is_finite() {
                     format!(
-                        "{} = {:.4} ± {:.2e} {}",
-                        p.name, p.value, p.std_error, p.unit
+                        "{} = {} ± {:.2e} {}",
+                        p.name,
+                        value(p.value),
+                        p.std_error,
+                        p.unit
                     )
                 } else {
                     // No standard error: the runs cannot see it (a channel
                     // they lack, a parameter pinned by another).
                     format!(
-                        "{} = {:.4} {} (no standard error: not identifiable from these runs)",
-                        p.name, p.value, p.unit
+                        "{} = {} {} (no standard error: not identifiable from these runs)",
+                        p.name,
+                        value(p.value),
+                        p.unit
                     )
                 }
             })
@@ -290,5 +297,15 @@ fn overlays(d: &Diagnosis) -> Figure {
         columns: 2,
         width: 1400,
         row_height: 280,
+    }
+}
+
+/// A fitted value to four significant digits: a steering compliance of
+/// 7.2e-5 rad/N printed as 0.0001 would hide what was fitted.
+fn value(v: f64) -> String {
+    if v != 0.0 && v.abs() < 0.01 {
+        format!("{v:.3e}")
+    } else {
+        format!("{v:.4}")
     }
 }

@@ -112,7 +112,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let effects = candidate_effects(&src, &f.diagnose)?;
     let mut inputs = vec![file.clone()];
     let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
-    let files = run_files(&f, &base, path, folder, &file)?;
+    let files = run_files(&src, &f, &base, path, folder)?;
     let (runs, notes, cleaning) = read_runs(&files, &f, &mut inputs)?;
     if runs.len() < 2 {
         return Err(file_error(
@@ -220,17 +220,23 @@ fn base_tyres(
         match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
             (Some(t), None, None, None) => {
                 inputs.push(base.join(t));
+                src.referenced_file("tyres.file", &base.join(t))?;
                 let t = load_tyre(&base.join(t))?;
                 return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
             }
             (None, Some(fr), Some(re), None) => {
                 inputs.extend([base.join(fr), base.join(re)]);
+                src.referenced_file("tyres.front", &base.join(fr))?;
+                src.referenced_file("tyres.rear", &base.join(re))?;
                 return Ok(BaseTyres::Given(
                     Box::new(load_tyre(&base.join(fr))?),
                     Box::new(load_tyre(&base.join(re))?),
                 ));
             }
-            (None, None, None, Some(rig)) => base.join(rig),
+            (None, None, None, Some(rig)) => {
+                src.referenced_file("tyres.rig", &base.join(rig))?;
+                base.join(rig)
+            }
             (None, None, None, None) if folder && rig_default.is_file() => rig_default,
             (None, None, None, None) => return Ok(BaseTyres::FromRuns),
             _ => return Err(src.value_error(&ParamError::without_value(
@@ -254,14 +260,21 @@ fn base_tyres(
 /// The run files: `[runs] files` and the `*.csv` of `[runs] dir` (of
 /// `runs/` in a campaign folder without a list), sorted by name.
 fn run_files(
+    src: &TomlSource,
     f: &CampaignFile,
     base: &Path,
     path: &Path,
     folder: bool,
-    file: &Path,
 ) -> Result<Vec<PathBuf>, InputError> {
+    let file = &src.path;
     let run_spec = f.runs.clone().unwrap_or_default();
     let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| base.join(p)).collect();
+    for p in &files {
+        src.referenced_file("runs.files", p)?;
+    }
+    if let Some(d) = &run_spec.dir {
+        src.referenced_file("runs.dir", &base.join(d))?;
+    }
     let dir = run_spec
         .dir
         .as_ref()

@@ -422,6 +422,7 @@ fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved,
     check(src, ParamError::non_negative("min_speed", r.min_speed))?;
     let settings = super::clean::CleanSettings::single(r.min_speed);
     let mut report = super::clean::CleaningReport::new(r.min_speed);
+    src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run(run_path)?;
     let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
         InputError::File {

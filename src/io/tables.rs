@@ -84,6 +84,10 @@ pub fn resolve_model(
     let dir = src.path.parent().unwrap_or(Path::new("."));
     let front_path = dir.join(&tyres.front);
     let rear_path = dir.join(tyres.rear.as_ref().unwrap_or(&tyres.front));
+    src.referenced_file("tyres.front", &front_path)?;
+    if tyres.rear.is_some() {
+        src.referenced_file("tyres.rear", &rear_path)?;
+    }
     let mut model = VehicleModel::new(
         vehicle.clone(),
         load_tyre(&front_path)?,

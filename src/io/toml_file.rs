@@ -122,6 +122,22 @@ impl TomlSource {
         walk(doc.as_table(), name)
     }
 
+    /// The file `path` that the value of `key_path` names, checked to
+    /// exist: when it does not, an error at that key naming the value and
+    /// the path it resolved to (a relative path is read from the TOML
+    /// file's folder).
+    pub fn referenced_file(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
+        if path.exists() {
+            return Ok(());
+        }
+        let message = format!(
+            "`{key_path}` names {}, which does not exist (paths are relative to the folder of {})",
+            path.display(),
+            self.path.display()
+        );
+        Err(self.located(self.key_span(key_path), message))
+    }
+
     /// A located error for a value that failed validation.
     pub fn value_error(&self, e: &ParamError) -> InputError {
         let message = e.to_string();

@@ -205,6 +205,22 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let empty = tempfile::tempdir().unwrap();
     let e = campaign_err(empty.path());
     assert!(e.contains("vehicle.toml"), "{e}");
+    // A run file or rig that is not there: located at the key naming it.
+    let text =
+        format!("{VEHICLE}\n[tyres]\nrig = \"rig.csv\"\n\n[runs]\nfiles = [\"missing.csv\"]\n");
+    let dir = scratch(&[("c.toml", &text)]);
+    let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
+    assert!(
+        e.contains("c.toml:") && e.contains("`tyres.rig` names") && e.contains("rig.csv"),
+        "{e}"
+    );
+    let text = format!("{VEHICLE}\n[runs]\nfiles = [\"missing.csv\"]\n");
+    let dir = scratch(&[("c.toml", &text)]);
+    let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
+    assert!(
+        e.contains("c.toml:") && e.contains("`runs.files` names") && e.contains("missing.csv"),
+        "{e}"
+    );
     // A campaign folder's vehicle file passed for the folder: the error
     // says so and names the folder to pass.
     let dir = campaign_folder(

@@ -270,6 +270,16 @@ pub(super) fn base_models(
                 })
                 .collect();
             let p = &full.params;
+            // As for the effects' parameters: one on its search bound has a
+            // standard error that says nothing of where the data would take it.
+            let shown = |i: usize, name: &str, digits: usize| {
+                let (lo, hi) = AXLE_BOUNDS[i];
+                if p[i] <= lo || p[i] >= hi {
+                    format!("{name} {:.digits$} (at its search bound)", p[i])
+                } else {
+                    format!("{name} {:.digits$} ± {:.1e}", p[i], full.std_errors[i])
+                }
+            };
             Ok((
                 Bases {
                     all: build(p),
@@ -278,8 +288,10 @@ pub(super) fn base_models(
                     axle: Some((p.clone(), fold_params)),
                 },
                 format!(
-                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): B front {:.2} ± {:.1e}, B rear {:.2} ± {:.1e} 1/rad, D {:.3} ± {:.1e}",
-                    p[0], full.std_errors[0], p[1], full.std_errors[1], p[2], full.std_errors[2]
+                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): {}, {} 1/rad, {}",
+                    shown(0, "B front", 2),
+                    shown(1, "B rear", 2),
+                    shown(2, "D", 3),
                 ),
                 None,
             ))

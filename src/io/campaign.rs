@@ -169,6 +169,24 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     )
     .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
     .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
+    .and_then(|_| {
+        ParamError::in_range(
+            "max_effects",
+            s.max_effects as f64,
+            0.0,
+            f64::INFINITY,
+            "at least one effect may be named",
+        )
+    })
+    .and_then(|_| {
+        ParamError::in_range(
+            "particles",
+            s.particles as f64,
+            0.0,
+            f64::INFINITY,
+            "each effect fit's swarm needs a particle",
+        )
+    })
     .map_err(|e| param_error(src, Some("diagnose"), e))?;
     if let Some(seg) = f.runs.as_ref().and_then(|r| r.segment) {
         ParamError::in_range(

@@ -116,8 +116,23 @@ pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Erro
     write_csv(path, &header, rows)
 }
 
-/// Refuses when `out` is one of `inputs` (compared after resolving links).
+/// Refuses, before any work, when `out` is one of `inputs` (compared after
+/// resolving links) or cannot be written: a file stands where its folder
+/// would be.
 pub fn refuse_overwrite(out: &Path, inputs: &[PathBuf]) -> Result<(), Error> {
+    let mut above = out.parent();
+    while let Some(p) = above.filter(|p| !p.as_os_str().is_empty()) {
+        if p.exists() {
+            if !p.is_dir() {
+                return Err(Error::output(
+                    out,
+                    format!("cannot write: {} is a file, not a folder", p.display()),
+                ));
+            }
+            break;
+        }
+        above = p.parent();
+    }
     let canon = |p: &Path| fs::canonicalize(p).ok();
     if let Some(o) = canon(out) {
         if inputs

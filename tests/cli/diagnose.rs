@@ -195,6 +195,14 @@ fn diagnose_refuses_bad_campaigns_clearly() {
             && e.contains("(0.0001, 0.05]"),
         "{e}"
     );
+    // A verdict of no effects at most, or a swarm of no particles.
+    for (setting, key) in [
+        ("max_effects = 0", "`diagnose.max_effects` = 0"),
+        ("particles = 0", "`diagnose.particles` = 0"),
+    ] {
+        let e = settings_err(setting);
+        assert!(e.contains("vehicle.toml:") && e.contains(key), "{e}");
+    }
     // A value of the wrong type: file, line, column, key and value.
     let e = settings_err("step = \"0.01\"");
     assert!(
@@ -219,6 +227,27 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
     assert!(
         e.contains("c.toml:") && e.contains("`runs.files` names") && e.contains("missing.csv"),
+        "{e}"
+    );
+    // An output folder under a file: refused before the diagnosis runs
+    // (the write at its end would say only "Not a directory").
+    let dir = campaign_folder(
+        VEHICLE,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("b.csv", run_csv(100.0, 6.0, true, None)),
+        ],
+    );
+    fs::write(dir.path().join("afile"), "").unwrap();
+    let o = run(&[
+        "diagnose",
+        dir.path().to_str().unwrap(),
+        "--out",
+        dir.path().join("afile/x").to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert!(
+        !o.status.success() && e.contains("afile is a file, not a folder"),
         "{e}"
     );
     // A campaign folder's vehicle file passed for the folder: the error

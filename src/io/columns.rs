@@ -82,10 +82,15 @@ pub fn read_columns(
         match headers.iter().position(|h| h == *name) {
             Some(i) => wanted.push((i, name.to_string())),
             None if required.contains(name) => {
-                return Err(file_err(format!(
-                    "missing required column `{name}` (the header has: {})",
-                    headers.iter().collect::<Vec<_>>().join(", ")
-                )))
+                return Err(InputError::At {
+                    path: path.to_path_buf(),
+                    line: headers.position().map_or(1, |p| p.line() as usize),
+                    column: 1,
+                    message: format!(
+                        "missing required column `{name}` (the header has: {})",
+                        headers.iter().collect::<Vec<_>>().join(", ")
+                    ),
+                })
             }
             None => {}
         }

@@ -912,12 +912,36 @@ mod tests {
             .collect()
     }
 
+    /// The axle characteristics' box (B front, B rear, D) and the channel
+    /// scales of the fold-refit tests.
+    const AXLES: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+    const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
+
+    /// A refit lands on Levenberg–Marquardt's optimum: the cost to a few
+    /// times what the refit's stopping test leaves (REFIT_DECREASE,
+    /// predicted), the parameters to a small share of their standard errors.
+    fn assert_same_optimum(quick: &FitOutcome, slow: &FitOutcome, what: &str) {
+        assert!(
+            (quick.cost - slow.cost).abs() <= 3.0 * REFIT_DECREASE * slow.cost,
+            "{what}: {} against {}",
+            quick.cost,
+            slow.cost
+        );
+        for i in 0..3 {
+            assert!(
+                (quick.params[i] - slow.params[i]).abs() <= 0.1 * slow.std_errors[i],
+                "{what}: {:?} against {:?} ± {:?}",
+                quick.params,
+                slow.params,
+                slow.std_errors
+            );
+        }
+    }
+
     #[test]
     fn a_fold_refit_on_the_quadratic_model_lands_where_levenberg_marquardt_does() {
         let runs = runs();
-        let bounds = vec![(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-        let scales = [2e-4, 5e-3, 1.0];
-        let all = Problem::new(axle_model, runs.iter().collect(), scales, bounds.clone());
+        let all = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
         let full = fit(&all, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
         assert!(full.converged);
         // Far above the noise: the term Gauss–Newton drops matters.
@@ -927,7 +951,7 @@ mod tests {
                 .filter(|&i| i != held)
                 .map(|i| &runs[i])
                 .collect();
-            let fold = Problem::new(axle_model, train, scales, bounds.clone());
+            let fold = Problem::new(axle_model, train, SCALES, AXLES.to_vec());
             let quick = refit(
                 &fold,
                 &full,
@@ -940,24 +964,7 @@ mod tests {
                 "fold {held}: {} replays",
                 quick.evaluations
             );
-            // The same optimum: the cost to a few times what the refit's
-            // stopping test leaves (REFIT_DECREASE, predicted), the
-            // parameters to a small share of their standard errors.
-            assert!(
-                (quick.cost - slow.cost).abs() <= 3.0 * REFIT_DECREASE * slow.cost,
-                "fold {held}: {} against {}",
-                quick.cost,
-                slow.cost
-            );
-            for i in 0..3 {
-                assert!(
-                    (quick.params[i] - slow.params[i]).abs() <= 0.1 * slow.std_errors[i],
-                    "fold {held}: {:?} against {:?} ± {:?}",
-                    quick.params,
-                    slow.params,
-                    slow.std_errors
-                );
-            }
+            assert_same_optimum(&quick, &slow, &format!("fold {held}"));
         }
     }
 
@@ -970,9 +977,7 @@ mod tests {
     #[test]
     fn a_fold_refit_from_afar_does_not_stop_where_its_model_no_longer_holds() {
         let runs = runs();
-        let bounds = vec![(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-        let scales = [2e-4, 5e-3, 1.0];
-        let all = Problem::new(axle_model, runs.iter().collect(), scales, bounds.clone());
+        let all = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
         let start = [12.0, 12.0, 1.3];
         let far = FitOutcome {
             params: start.to_vec(),
@@ -983,25 +988,16 @@ mod tests {
             converged: false,
             linear: Some(linearise(&all, &start)),
         };
-        let fold = Problem::new(axle_model, runs.iter().skip(1).collect(), scales, bounds);
+        let fold = Problem::new(
+            axle_model,
+            runs.iter().skip(1).collect(),
+            SCALES,
+            AXLES.to_vec(),
+        );
         let rows = crate::diagnose::crossval::training_rows(&runs, &[0]);
         let quick = refit(&fold, &far, &rows);
         let slow = fit(&fold, &start, None, Polish::LevenbergMarquardt);
         assert!(quick.converged && slow.converged);
-        assert!(
-            (quick.cost - slow.cost).abs() <= 3.0 * REFIT_DECREASE * slow.cost,
-            "{} against {}",
-            quick.cost,
-            slow.cost
-        );
-        for i in 0..3 {
-            assert!(
-                (quick.params[i] - slow.params[i]).abs() <= 0.1 * slow.std_errors[i],
-                "{:?} against {:?} ± {:?}",
-                quick.params,
-                slow.params,
-                slow.std_errors
-            );
-        }
+        assert_same_optimum(&quick, &slow, "from afar");
     }
 }

@@ -971,9 +971,9 @@ mod tests {
     /// Started from a point well off the fold's optimum (3 % above its
     /// cost), where the start's quadratic model stops holding on the way,
     /// a refit does not stop where that model sees a minimum: it takes a
-    /// fresh Jacobian and lands where Levenberg–Marquardt does. (Before the
-    /// trust test it stopped at 726,179 against 703,075, parameters 6
-    /// standard errors off.)
+    /// fresh Jacobian and lands where Levenberg–Marquardt does. (Without
+    /// the trust test, the other limits as they are, it stopped at 726,179
+    /// against 703,075, parameters 6 standard errors off.)
     #[test]
     fn a_fold_refit_from_afar_does_not_stop_where_its_model_no_longer_holds() {
         let runs = runs();

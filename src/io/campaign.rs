@@ -175,7 +175,7 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
             s.max_effects as f64,
             0.0,
             f64::INFINITY,
-            "at least one effect may be named",
+            "the verdict names up to this many effects, so at least one",
         )
     })
     .and_then(|_| {

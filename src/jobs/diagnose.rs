@@ -300,8 +300,9 @@ fn overlays(d: &Diagnosis) -> Figure {
     }
 }
 
-/// A fitted value to four significant digits: a steering compliance of
-/// 7.2e-5 rad/N printed as 0.0001 would hide what was fitted.
+/// A fitted value: below 0.01 to four significant digits (a steering
+/// compliance of 8.9e-5 rad/kN printed as 0.0001 would hide what was
+/// fitted), else to four decimals.
 fn value(v: f64) -> String {
     if v != 0.0 && v.abs() < 0.01 {
         format!("{v:.3e}")

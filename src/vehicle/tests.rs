@@ -430,6 +430,49 @@ fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
     }
     // A few hundred steps, not thousands.
     assert!(sol.stats.accepted < 400, "{:?}", sol.stats);
+    // The solver alone (what an ODE solver returns, the peer comparison's
+    // job): the same solution as the simulation's, to the bit, and at
+    // SciPy's rtol 1e-6 with no largest step still within 1e-6 of r_ss
+    // of the fine RK4 at its rows, in fewer steps.
+    let integ = Integrator {
+        step: 1e-3,
+        method: Method::Dopri5(tol),
+        ..Integrator::default()
+    };
+    let alone = integ
+        .solve_dopri5(&m, &man, State::default(), &tol)
+        .expect("(β, r) alone");
+    assert_eq!(alone, sol);
+    let loose = Tolerances {
+        rtol: 1e-6,
+        atol: 1e-9,
+        max_step: f64::INFINITY,
+    };
+    let coarse = integ
+        .solve_dopri5(&m, &man, State::default(), &loose)
+        .expect("(β, r) alone");
+    let mut states = Vec::new();
+    coarse.states_into(&h.t, &mut states);
+    for (i, x) in states.iter().enumerate() {
+        let r = fine.yaw_rate[i * 10];
+        assert!(
+            (x[1] - r).abs() < 1e-6 * r_ss.abs(),
+            "t {}: {} vs {r}",
+            h.t[i],
+            x[1]
+        );
+    }
+    assert!(
+        coarse.stats.accepted < sol.stats.accepted / 2,
+        "{:?}",
+        coarse.stats
+    );
+    // With states beyond (β, r) there is no (β, r) solution to return.
+    let mut lagged = m.clone();
+    lagged.options.effects.relaxation_length = 0.5;
+    assert!(integ
+        .solve_dopri5(&lagged, &man, State::default(), &tol)
+        .is_none());
 }
 
 #[test]

@@ -191,10 +191,10 @@ impl EffectKind {
         const DELAY: [Parameter; 1] = [par("delay", "s", 0.0, 0.0, 0.3)];
         const BIAS: [Parameter; 3] = [
             par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
-            par("ay", "m/s^2", 0.0, -1.0, 1.0),
+            par("ay", "m/s²", 0.0, -1.0, 1.0),
             par("beta", "rad", 0.0, -0.05, 0.05),
         ];
-        const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s^2)", 0.0, -0.03, 0.03)];
+        const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s²)", 0.0, -0.03, 0.03)];
         const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
         const PITCH: [Parameter; 1] = [par("share", "-", 0.0, 0.0, 2.0)];
         // No value switches a friction circle off: its "off" values are the

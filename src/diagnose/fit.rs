@@ -794,18 +794,20 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
     // convergence test believed. A model far from where it was built can
     // see a minimum that is not there.
     let mut trusted = true;
+    // A minimum seen by a model that is not believed.
+    let mut doubted = false;
     for _ in 0..4 * REFIT_MODEL_STEPS {
         let can_relinearise = relinearised < REFIT_RELINEARISATIONS
             && p != model.p0
             && evaluations + n < REFIT_MODEL_STEPS;
-        // Stalled after moving: the Jacobian no longer holds here.
-        if rejected == REFIT_MODEL_REJECTIONS && can_relinearise {
+        // Stalled or doubted after moving: the Jacobian no longer holds here.
+        if (rejected == REFIT_MODEL_REJECTIONS || doubted) && can_relinearise {
             model.relinearise(problem, &p, &r);
             evaluations += n;
             relinearised += 1;
-            (rejected, lambda, trusted) = (0, 0.0, true);
+            (rejected, lambda, trusted, doubted) = (0, 0.0, true, false);
         }
-        if evaluations >= REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
+        if doubted || evaluations >= REFIT_MODEL_STEPS || rejected == REFIT_MODEL_REJECTIONS {
             break;
         }
         let Some((d, predicted)) = model.at(&p, &r, bounds).step(lambda) else {
@@ -824,13 +826,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
                     linear: None,
                 };
             }
-            if !can_relinearise {
-                break;
-            }
-            model.relinearise(problem, &p, &r);
-            evaluations += n;
-            relinearised += 1;
-            (rejected, lambda, trusted) = (0, 0.0, true);
+            doubted = true;
             continue;
         }
         let q: Vec<f64> = problem.clamp(&p.iter().zip(&d).map(|(p, d)| p + d).collect::<Vec<_>>());

@@ -6,6 +6,11 @@ use crate::error::{InputError, ParamError};
 use serde::de::DeserializeOwned;
 use std::path::{Path, PathBuf};
 
+/// What [`TomlSource::find`] asks of every key: (dotted path, key, its
+/// table, its item) to an answer that ends the search.
+type KeyVisitor<'v, R> =
+    dyn FnMut(&str, &str, &dyn toml_edit::TableLike, &toml_edit::Item) -> Option<R> + 'v;
+
 /// A TOML file's path and text, kept to locate errors found after parsing.
 #[derive(Debug, Clone)]
 pub struct TomlSource {
@@ -63,25 +68,40 @@ impl TomlSource {
 
     /// The dotted path of the key whose value starts at byte `pos`.
     fn key_of_value_at(&self, pos: usize) -> Option<String> {
-        fn walk(t: &dyn toml_edit::TableLike, pos: usize, path: &str) -> Option<String> {
+        self.find(&mut |path, _, _, item| {
+            (item.as_table_like().is_none() && item.span().is_some_and(|s| s.start == pos))
+                .then(|| path.to_string())
+        })
+    }
+
+    /// The first of `visit`'s answers over every key of the document, depth
+    /// first in order, given the key's dotted path, the key, its table and
+    /// its item.
+    fn find<R>(&self, visit: &mut KeyVisitor<R>) -> Option<R> {
+        fn walk<R>(
+            t: &dyn toml_edit::TableLike,
+            path: &str,
+            visit: &mut KeyVisitor<R>,
+        ) -> Option<R> {
             for (k, item) in t.iter() {
                 let here = if path.is_empty() {
                     k.to_string()
                 } else {
                     format!("{path}.{k}")
                 };
+                if let Some(found) = visit(&here, k, t, item) {
+                    return Some(found);
+                }
                 if let Some(inner) = item.as_table_like() {
-                    if let Some(found) = walk(inner, pos, &here) {
+                    if let Some(found) = walk(inner, &here, visit) {
                         return Some(found);
                     }
-                } else if item.span().is_some_and(|s| s.start == pos) {
-                    return Some(here);
                 }
             }
             None
         }
         let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
-        walk(doc.as_table(), pos, "")
+        walk(doc.as_table(), "", visit)
     }
 
     /// Byte span of the key at dotted `key_path` (`vehicle.mass`,
@@ -105,21 +125,10 @@ impl TomlSource {
 
     /// Span of the first key called `name` at any depth.
     fn find_key(&self, name: &str) -> Option<std::ops::Range<usize>> {
-        fn walk(t: &dyn toml_edit::TableLike, name: &str) -> Option<std::ops::Range<usize>> {
-            for (k, item) in t.iter() {
-                if k == name {
-                    return t.get_key_value(k).and_then(|(key, _)| key.span());
-                }
-                if let Some(inner) = item.as_table_like() {
-                    if let Some(s) = walk(inner, name) {
-                        return Some(s);
-                    }
-                }
-            }
-            None
-        }
-        let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
-        walk(doc.as_table(), name)
+        // The first key of that name ends the search, span or not.
+        self.find(&mut |_, key, table, _| {
+            (key == name).then(|| table.get_key_value(key).and_then(|(k, _)| k.span()))
+        })?
     }
 
     /// The file `path` that the value of `key_path` names, checked to

@@ -8,13 +8,16 @@
 //! - the same step steer as SciPy's job is: the solver alone at SciPy's
 //!   tolerances (rtol 1e-6 / atol 1e-9, and 1e-10 / 1e-13) with no largest
 //!   step, (β, r) every 10 ms from the dense output
-//!   (`peer/out/step_solver_<rtol>.csv`);
+//!   (`peer/out/step_solver_<rtol>.csv`), and at rtol 1e-4 / atol 1e-7, the
+//!   loosest of ours whose error stays below SciPy's at rtol 1e-6 (the
+//!   script checks that it does);
 //! - the three steering-equilibrium sweeps of Li, Jia & Zhao (steer,
 //!   friction, speed; `scenarios/equilibria_*.toml`, without the bifurcation
 //!   search), equilibria per condition;
 //! - a PAC89 lateral fit (PSO + Levenberg–Marquardt) of 3 loads × 85 slip
-//!   angles with 1 % noise, from the Adams example scaled by 1.1; the data
-//!   go to `peer/out/fit_data.csv` so the script fits the same points.
+//!   angles with 1 % noise, from the Adams example scaled by 1.1, and the
+//!   Levenberg–Marquardt polish alone from that start (SciPy's job); the
+//!   data go to `peer/out/fit_data.csv` so the script fits the same points.
 //!
 //! Run: `cargo run --release --example peer_jobs -- [repeats]`.
 
@@ -23,6 +26,7 @@ use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitSettings};
 use handling::io::sweep::load_sweep;
 use handling::manoeuvre::{Manoeuvre, StepSteer};
+use handling::optim::pso::Pso;
 use handling::sim::{Integrator, Method, Tolerances};
 use handling::tyre::{Pac89, Tyre};
 use handling::vehicle::{Kinematics, State, Vehicle, VehicleModel};
@@ -93,7 +97,7 @@ fn main() {
     // time, for ay, forces and loads, which SciPy's job does not return).
     let grid: Vec<f64> = (0..=1000).map(|i| f64::from(i) * 0.01).collect();
     let mut solver_only = Vec::new();
-    for (rtol, atol) in [(1e-6, 1e-9), (1e-10, 1e-13)] {
+    for (rtol, atol) in [(1e-6, 1e-9), (1e-10, 1e-13), (1e-4, 1e-7)] {
         let tol = Tolerances {
             rtol,
             atol,
@@ -178,9 +182,24 @@ fn main() {
     let fit_seconds = median_seconds(3, || {
         std::hint::black_box(fit_lateral(&start, &data, &settings).unwrap());
     });
+    // SciPy's job: the local polish alone from the same start (a swarm of
+    // one particle that does not move, which the polish starts from).
+    let local = FitSettings {
+        pso: Pso {
+            particles: 1,
+            iterations: 0,
+            ..settings.pso
+        },
+        ..settings
+    };
+    let local_fit = fit_lateral(&start, &data, &local).expect("fit");
+    let local_seconds = median_seconds(repeats.max(3), || {
+        std::hint::black_box(fit_lateral(&start, &data, &local).unwrap());
+    });
     println!(
         "{{\"threads\": {}, \"step_steer\": {{\"seconds\": {step_steer:e}, \"steps\": {}, \"evaluations\": {}, \"rtol\": {:e}}}, \
-         \"step_steer_solver\": [{}], \"equilibria\": [{}], \"pac89_fit\": {{\"seconds\": {fit_seconds:e}, \"sigma_percent\": {}, \"noise_sigma_percent\": {noise_sigma}}}}}",
+         \"step_steer_solver\": [{}], \"equilibria\": [{}], \"pac89_fit\": {{\"seconds\": {fit_seconds:e}, \"sigma_percent\": {}, \"noise_sigma_percent\": {noise_sigma}, \
+         \"local_seconds\": {local_seconds:e}, \"local_sigma_percent\": {}, \"local_evaluations\": {}}}}}",
         rayon::current_num_threads(),
         sol.stats.accepted,
         sol.stats.evaluations,
@@ -188,5 +207,7 @@ fn main() {
         solver_only.join(", "),
         sweeps.join(", "),
         fit.sigma_percent,
+        local_fit.sigma_percent,
+        local_fit.evaluations,
     );
 }

@@ -7,7 +7,7 @@
 
 use super::campaign::{BaseTyres, Campaign};
 use super::crossval::training_rows;
-use super::effects::{EffectKind, EffectSet, Parameter};
+use super::effects::{Bound, EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
@@ -70,12 +70,14 @@ pub(super) static ROLL_DYNAMICS: [Parameter; 2] = [
         unit: "Hz",
         off: f64::NAN,
         bounds: (0.5, 4.0),
+        limits: (Bound::Search, Bound::Search),
     },
     Parameter {
         name: "damping",
         unit: "-",
         off: f64::NAN,
         bounds: (0.2, 1.5),
+        limits: (Bound::Search, Bound::Search),
     },
 ];
 
@@ -320,15 +322,9 @@ pub(super) fn parameter_values(
                 unit: q.unit,
                 value,
                 std_error: f.std_errors[skip + i],
-                at_bound: at_bound(value, q.bounds),
+                at_bound: q.bound_at(value).is_some(),
+                bound: q.bound_at(value),
             }
         })
         .collect()
-}
-
-/// Whether `value` lies on one of `bounds` (within 1e-9 of their span: the
-/// bounded fits stop exactly on a bound they press against).
-fn at_bound(value: f64, (lo, hi): (f64, f64)) -> bool {
-    let tol = 1e-9 * (hi - lo);
-    (value - lo).abs() <= tol || (hi - value).abs() <= tol
 }

@@ -78,6 +78,20 @@ pub struct Parameter {
     pub off: f64,
     /// Search bounds (lower, upper).
     pub bounds: (f64, f64),
+    /// What each bound is (lower, upper).
+    pub limits: (Bound, Bound),
+}
+
+/// What bounds a parameter on one side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Bound {
+    /// The end of a wide search range: a fit that stops there would go
+    /// further.
+    Search,
+    /// A limit of the quantity itself (a length, a delay or a share below
+    /// 0, a share above 1): no value lies beyond it.
+    Physical,
 }
 
 const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64) -> Parameter {
@@ -86,6 +100,39 @@ const fn par(name: &'static str, unit: &'static str, off: f64, lo: f64, hi: f64)
         unit,
         off,
         bounds: (lo, hi),
+        limits: (Bound::Search, Bound::Search),
+    }
+}
+
+impl Parameter {
+    /// The same with its lower bound a physical limit.
+    const fn floor(self) -> Self {
+        Self {
+            limits: (Bound::Physical, self.limits.1),
+            ..self
+        }
+    }
+
+    /// The same with both bounds physical limits (a share).
+    const fn share(self) -> Self {
+        Self {
+            limits: (Bound::Physical, Bound::Physical),
+            ..self
+        }
+    }
+
+    /// The bound `value` lies on (within 1e-9 of the span: the bounded fits
+    /// stop exactly on a bound they press against), if any.
+    pub fn bound_at(&self, value: f64) -> Option<Bound> {
+        let (lo, hi) = self.bounds;
+        let tol = 1e-9 * (hi - lo);
+        if (value - lo).abs() <= tol {
+            Some(self.limits.0)
+        } else if (hi - value).abs() <= tol {
+            Some(self.limits.1)
+        } else {
+            None
+        }
     }
 }
 
@@ -165,7 +212,7 @@ impl EffectKind {
     /// Its parameters. The bounds are wide physical ranges: the search must
     /// be able to find a value the truth did not use.
     pub fn parameters(self) -> &'static [Parameter] {
-        const RELAXATION: [Parameter; 1] = [par("relaxation_length", "m", 0.0, 0.0, 3.0)];
+        const RELAXATION: [Parameter; 1] = [par("relaxation_length", "m", 0.0, 0.0, 3.0).floor()];
         const COMPLIANCE: [Parameter; 1] =
             [par("steer_per_front_force", "rad/kN", 0.0, -0.02, 0.05)];
         const ROLL_STEER: [Parameter; 2] = [
@@ -176,7 +223,7 @@ impl EffectKind {
             par("front", "N/N per rad", 0.0, -8.0, 8.0),
             par("rear", "N/N per rad", 0.0, -8.0, 8.0),
         ];
-        const SHARE: [Parameter; 1] = [par("front_share", "-", f64::NAN, 0.0, 1.0)];
+        const SHARE: [Parameter; 1] = [par("front_share", "-", f64::NAN, 0.0, 1.0).share()];
         const AERO: [Parameter; 2] = [
             par("front", "N/(m/s)^2", 0.0, 0.0, 6.0),
             par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0),
@@ -188,7 +235,7 @@ impl EffectKind {
             par("rear_scale", "-", 1.0, 0.4, 2.0),
         ];
         const INERTIA: [Parameter; 1] = [par("scale", "-", 1.0, 0.4, 2.5)];
-        const DELAY: [Parameter; 1] = [par("delay", "s", 0.0, 0.0, 0.3)];
+        const DELAY: [Parameter; 1] = [par("delay", "s", 0.0, 0.0, 0.3).floor()];
         const BIAS: [Parameter; 3] = [
             par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
             par("ay", "m/s²", 0.0, -1.0, 1.0),
@@ -196,12 +243,12 @@ impl EffectKind {
         ];
         const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s²)", 0.0, -0.03, 0.03)];
         const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
-        const PITCH: [Parameter; 1] = [par("share", "-", 0.0, 0.0, 2.0)];
+        const PITCH: [Parameter; 1] = [par("share", "-", 0.0, 0.0, 2.0).floor()];
         // No value switches a friction circle off: its "off" values are the
         // starts, rear-wheel drive and 60 % of the braking in front.
         const COMBINED: [Parameter; 2] = [
-            par("drive_front_share", "-", 0.0, 0.0, 1.0),
-            par("brake_front_share", "-", 0.6, 0.0, 1.0),
+            par("drive_front_share", "-", 0.0, 0.0, 1.0).share(),
+            par("brake_front_share", "-", 0.6, 0.0, 1.0).share(),
         ];
         const PROFILE: [Parameter; 2] = [
             par("scale", "-", 0.0, -0.5, 2.0),
@@ -391,6 +438,40 @@ impl EffectSet {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_bound_is_named_for_what_it_is() {
+        let relaxation = EffectKind::RelaxationLength.parameters()[0];
+        assert_eq!(relaxation.bound_at(0.0), Some(Bound::Physical));
+        assert_eq!(relaxation.bound_at(3.0), Some(Bound::Search));
+        assert_eq!(relaxation.bound_at(0.5), None);
+        // Within 1e-9 of the span, not beyond.
+        assert_eq!(relaxation.bound_at(3.0 * 0.9e-9), Some(Bound::Physical));
+        assert_eq!(relaxation.bound_at(3.0 * 1.1e-9), None);
+        let bank = EffectKind::RoadBank.parameters()[0];
+        assert_eq!(bank.bound_at(-0.15), Some(Bound::Search));
+        for share in EffectKind::CombinedSlip
+            .parameters()
+            .iter()
+            .chain(EffectKind::LoadTransferDistribution.parameters())
+        {
+            assert_eq!(share.bound_at(0.0), Some(Bound::Physical));
+            assert_eq!(share.bound_at(1.0), Some(Bound::Physical));
+        }
+        // A physical limit is where the quantity ends: below zero for a
+        // length, a delay or a share, above one for a share of a whole.
+        for k in EffectKind::ALL {
+            for q in k.parameters() {
+                let (lo, hi) = q.bounds;
+                if q.limits.0 == Bound::Physical {
+                    assert_eq!(lo, 0.0, "{}.{}", k.name(), q.name);
+                }
+                if q.limits.1 == Bound::Physical {
+                    assert_eq!((lo, hi), (0.0, 1.0), "{}.{}", k.name(), q.name);
+                }
+            }
+        }
+    }
 
     #[test]
     fn names_round_trip_and_off_values_are_the_base_model() {

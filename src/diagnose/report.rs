@@ -3,7 +3,7 @@
 //! unit; held-out errors J are dimensionless (residuals over channel
 //! scales).
 
-use super::effects::EffectKind;
+use super::effects::{Bound, EffectKind};
 use super::fit::Channel;
 use super::gap::ChannelGap;
 use super::model::Observed;
@@ -24,9 +24,12 @@ pub struct ParameterValue {
     /// Its standard error (from the Jacobian; residual autocorrelation makes
     /// it optimistic).
     pub std_error: f64,
-    /// The value sits on its search bound: the data would take it further,
-    /// and the standard error says nothing about how far.
+    /// The value sits on one of its bounds ([`ParameterValue::bound`]).
     pub at_bound: bool,
+    /// Which: a search bound (the data would take it further, and the
+    /// standard error says nothing about how far) or a physical limit (no
+    /// value lies beyond it).
+    pub bound: Option<Bound>,
 }
 
 /// Held-out RMS of one channel.

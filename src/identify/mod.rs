@@ -440,7 +440,10 @@ fn search(
         sigma_pso,
     };
     let mut best_cost = r.value;
-    for l in [polish(&r.best), polish(start_p)].into_iter().flatten() {
+    // From the start too (the swarm's best can lie in another basin),
+    // unless the swarm left it the best: the same polish twice.
+    let from_start = (r.best != start_p).then(|| polish(start_p)).flatten();
+    for l in [polish(&r.best), from_start].into_iter().flatten() {
         found.evaluations += l.evaluations;
         if l.cost.is_finite() && l.cost < best_cost {
             best_cost = l.cost;

@@ -6,7 +6,7 @@
 //! (`overlays.png`).
 
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
-use crate::diagnose::effects::joined;
+use crate::diagnose::effects::{joined, Bound};
 use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
 use crate::error::Error;
@@ -125,13 +125,12 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             .parameters
             .iter()
             .map(|p| {
-                if p.at_bound {
-                    format!(
-                        "{} = {} {} (at its search bound: the data would take it further)",
-                        p.name,
-                        value(p.value),
-                        p.unit
-                    )
+                if let Some(bound) = p.bound {
+                    let why = match bound {
+                        Bound::Search => "at its search bound: the data would take it further",
+                        Bound::Physical => "at its physical limit: no value lies beyond it",
+                    };
+                    format!("{} = {} {} ({why})", p.name, value(p.value), p.unit)
                 } else if p.std_error.is_finite() {
                     format!(
                         "{} = {} ± {:.2e} {}",

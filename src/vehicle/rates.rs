@@ -361,8 +361,10 @@ fn compliant_slip(kin: f64, c: f64, force: impl Fn(f64) -> f64) -> (f64, f64) {
         let f = force(a);
         (a - kin + c * f, f)
     };
-    let (mut a0, mut a1) = (kin, kin - c * force(kin));
-    let (mut g0, _) = g(a0);
+    // g(kin) = c·Fyf(kin): the first iterate's force is also the first
+    // residual's.
+    let f0 = force(kin);
+    let (mut a0, mut a1, mut g0) = (kin, kin - c * f0, c * f0);
     let (mut g1, mut f1) = g(a1);
     for _ in 0..30 {
         if g1.abs() < 1e-13 || g1 == g0 {

@@ -455,7 +455,18 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         let on = (v - lo).abs() < 1e-9 || (hi - v).abs() < 1e-9;
         assert_eq!(p["at_bound"], on, "{p}");
         assert_eq!(on, r["effect"] == "road_bank", "{p}");
+        // A bank of ±0.15 rad ends a search range, not the quantity.
+        if on {
+            assert_eq!(p["bound"], "search", "{p}");
+        } else {
+            assert!(p["bound"].is_null(), "{p}");
+        }
     }
+    let printed = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        printed.contains("rad (at its search bound: the data would take it further)"),
+        "{printed}"
+    );
     for f in ["gap_map.png", "overlays.png"] {
         assert!(out.join(f).is_file());
     }

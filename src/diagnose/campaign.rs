@@ -87,6 +87,8 @@ pub struct Campaign {
     pub tyres: BaseTyres,
     /// The runs (after splitting at gaps and into segments).
     pub runs: Vec<MeasuredRun>,
+    /// The run files (or logs) the runs were read from.
+    pub run_files: usize,
     /// Roll degree of freedom.
     pub roll: RollModel,
     /// Diagnosis settings.

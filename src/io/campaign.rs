@@ -144,6 +144,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         friction: f.road.friction,
         tyres,
         runs,
+        run_files: files.len(),
         roll: f.roll,
         settings: f.diagnose,
         effects,

@@ -28,6 +28,9 @@ pub struct DiagnoseReport {
     /// Runs in the campaign.
     #[serde(skip)]
     pub runs: usize,
+    /// The files they were read from.
+    #[serde(skip)]
+    pub run_files: usize,
     /// Candidate effects fitted (the runs could show them).
     #[serde(skip)]
     pub effects: usize,
@@ -64,6 +67,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         effects: diagnosis.ranking.len(),
         diagnosis,
         runs: campaign.runs.len(),
+        run_files: campaign.run_files,
         cleaning: campaign.cleaning.summary(5),
         seconds: t0.elapsed().as_secs_f64(),
         out_dir,
@@ -88,9 +92,18 @@ impl DiagnoseReport {
     /// The campaign read and the short human report.
     pub fn summary(&self) -> Vec<String> {
         let d = &self.diagnosis;
+        // Runs cut into pieces (a long log's segments, a run split where it
+        // stopped) say so: the files are what the user handed in.
+        let runs = if self.runs == self.run_files {
+            format!("{} runs", self.runs)
+        } else {
+            let s = if self.run_files == 1 { "" } else { "s" };
+            format!("{} runs (pieces of {} file{s})", self.runs, self.run_files)
+        };
+        let plural = if self.effects == 1 { "" } else { "s" };
         let mut out = vec![format!(
-            "{}: {} runs, {} candidate effects, seed {}",
-            d.campaign, self.runs, self.effects, d.seed
+            "{}: {runs}, {} candidate effect{plural}, seed {}",
+            d.campaign, self.effects, d.seed
         )];
         out.extend(d.notes.iter().map(|n| format!("  note: {n}")));
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));

@@ -301,8 +301,12 @@ fn diagnose_handles_mixed_rates_gaps_and_missing_channels() {
         "{stdout}"
     );
     let d = read_json(&out.join("diagnosis.json"));
-    // The gap split c into two pieces: four runs replayed.
+    // The gap split c into two pieces: four runs replayed, from three files.
     assert_eq!(d["runs"].as_array().unwrap().len(), 4);
+    assert!(
+        stdout.contains(": 4 runs (pieces of 3 files), 1 candidate effect,"),
+        "{stdout}"
+    );
     // The run without ay is compared on yaw rate only.
     let b = d["gap"]["runs"]
         .as_array()
@@ -463,6 +467,11 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         }
     }
     let printed = String::from_utf8_lossy(&o.stdout);
+    // One log handed in, twelve pieces replayed: the header says both.
+    assert!(
+        printed.starts_with("putnam_run4_2: 12 runs (pieces of 1 file), 2 candidate effects"),
+        "{printed}"
+    );
     assert!(
         printed.contains("rad (at its search bound: the data would take it further)"),
         "{printed}"

@@ -537,6 +537,7 @@ impl Synthetic {
                 model: ModelName::Pac89,
             },
             source,
+            run_files: self.runs.len(),
             runs,
             roll: self.roll,
             settings,

@@ -41,6 +41,20 @@ pub struct Vehicle {
 /// Tolerance on a + b = wheelbase, m.
 const WHEELBASE_TOLERANCE: f64 = 1e-3;
 
+/// Largest mass, kg: above any wheeled vehicle (a loaded mining truck is
+/// 6e5 kg). A larger value is a unit slip (grams).
+const MAX_MASS: f64 = 1e6;
+
+/// Largest axle distance or track, m: a unit slip (millimetres) beyond.
+const MAX_LENGTH: f64 = 30.0;
+
+/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
+/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
+/// gyration would be a tenth, or three times, of its axles' distance from
+/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
+/// (g, kg·mm², slug).
+const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
+
 impl Vehicle {
     /// Wheelbase l = a + b, m.
     pub fn wheelbase(&self) -> f64 {
@@ -68,6 +82,41 @@ impl Vehicle {
         ParamError::positive("track_front", self.track_front)?;
         ParamError::positive("track_rear", self.track_rear)?;
         ParamError::non_negative("cg_height", self.cg_height)?;
+        if self.mass > MAX_MASS {
+            return Err(ParamError::new(
+                "mass",
+                self.mass,
+                &format!(
+                    "above {MAX_MASS:e} kg, more than any wheeled vehicle: check the unit (kg)"
+                ),
+            ));
+        }
+        for (key, v) in [
+            ("a", self.a),
+            ("b", self.b),
+            ("track_front", self.track_front),
+            ("track_rear", self.track_rear),
+            ("cg_height", self.cg_height),
+        ] {
+            if v > MAX_LENGTH {
+                return Err(ParamError::new(
+                    key,
+                    v,
+                    &format!("above {MAX_LENGTH} m: check the unit (m)"),
+                ));
+            }
+        }
+        let index = self.yaw_inertia / (self.mass * self.a * self.b);
+        if !(DYNAMIC_INDEX.0..=DYNAMIC_INDEX.1).contains(&index) {
+            return Err(ParamError::new(
+                "yaw_inertia",
+                self.yaw_inertia,
+                &format!(
+                    "yaw_inertia / (mass·a·b) = {index:.3e}, outside {}–{} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)",
+                    DYNAMIC_INDEX.0, DYNAMIC_INDEX.1
+                ),
+            ));
+        }
         if let Some(l) = self.wheelbase {
             ParamError::positive("wheelbase", l)?;
             if (l - self.wheelbase()).abs() > WHEELBASE_TOLERANCE {

@@ -151,6 +151,37 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     );
     let e = campaign_err(dir.path());
     assert!(e.contains("short.csv") && e.contains("1.00 s long"), "{e}");
+    // An inertia in kg·cm², a mass in grams, a length in millimetres: unit
+    // slips, refused at the
+    // key with its line, value and the check that failed.
+    for (from, to, expected) in [
+        (
+            "yaw_inertia = 2315.0",
+            "yaw_inertia = 23150000.0",
+            "vehicle.toml:3:1: `vehicle.yaw_inertia` = 23150000: yaw_inertia / (mass·a·b) = 8.162e3, outside 0.1–10",
+        ),
+        (
+            "mass = 1530.0",
+            "mass = 1e30",
+            "vehicle.toml:2:1: `vehicle.mass` = 1000000000000000000000000000000: above 1e6 kg",
+        ),
+        (
+            "b = 1.67",
+            "b = 1670.0",
+            "vehicle.toml:5:1: `vehicle.b` = 1670: above 30 m",
+        ),
+    ] {
+        let v = VEHICLE.replace(from, to);
+        let dir = campaign_folder(
+            &v,
+            &[
+                ("a.csv", run_csv(100.0, 6.0, true, None)),
+                ("b.csv", run_csv(100.0, 6.0, true, None)),
+            ],
+        );
+        let e = campaign_err(dir.path());
+        assert!(e.contains(expected), "{e}");
+    }
     // One run: nothing to hold out.
     let dir = campaign_folder(VEHICLE, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
     let e = campaign_err(dir.path());

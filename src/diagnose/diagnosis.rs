@@ -438,11 +438,13 @@ fn verdict_of(
                 effects: r.effects.clone(),
                 parameters: r.parameters.clone(),
                 statement,
+                warnings: Vec::new(),
             }
         }
         None => Verdict {
             effects: Vec::new(),
             parameters: Vec::new(),
+            warnings: Vec::new(),
             statement: if !significant {
                 format!(
                     "no significant gap: held-out error {j0:.3} is within {SIGNIFICANT} × the noise level {jn:.3}"
@@ -457,6 +459,31 @@ fn verdict_of(
             },
         },
     }
+}
+
+/// A channel's gap above noise grown by more than this share (%) under the
+/// verdict's effects is worth a warning: beyond the scatter of held-out
+/// scores, and the combined error that accepted them does not show it.
+const WORSENED: f64 = 10.0;
+
+/// Warnings for the channels the verdict's effects leave worse on
+/// held-out runs (all samples).
+fn worsened(shrinkage: &[Shrinkage]) -> Vec<String> {
+    shrinkage
+        .iter()
+        .filter(|s| s.part == Part::All && s.reduction_percent < -WORSENED && s.after > s.before)
+        .map(|s| {
+            format!(
+                "it leaves the {} gap larger on held-out runs: RMS {:.4} → {:.4} {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
+                s.channel.name(),
+                s.before,
+                s.after,
+                s.channel.unit(),
+                s.noise_floor,
+                -s.reduction_percent
+            )
+        })
+        .collect()
 }
 
 /// Held-out replays of every run, before and after, largest base gap first.
@@ -626,7 +653,10 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     };
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
     let parts = parts_table(&c.runs, &ctx.runs, &base_obs, &base_obs, &floors);
-    let verdict = verdict_of(chosen, &base, significant, &ranking);
+    let mut verdict = verdict_of(chosen, &base, significant, &ranking);
+    if chosen.is_some() {
+        verdict.warnings = worsened(&shrinkage);
+    }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let summary = gap_summary(&run_gaps, &parts, significant, j0, jn);
     Ok(Diagnosis {

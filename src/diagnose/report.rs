@@ -98,6 +98,9 @@ pub struct Verdict {
     pub parameters: Vec<ParameterValue>,
     /// In words.
     pub statement: String,
+    /// Channels the verdict's effects leave worse on held-out runs: the
+    /// combined error can fall while one channel's rises.
+    pub warnings: Vec<String>,
 }
 
 /// Before/after on held-out runs for one part of the data.

@@ -112,8 +112,10 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let effects = candidate_effects(&src, &f.diagnose)?;
     let mut inputs = vec![file.clone()];
     let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
-    let files = run_files(&src, &f, &base, path, folder)?;
-    let (runs, notes, cleaning) = read_runs(&files, &f, &mut inputs)?;
+    let mut folder_notes = Vec::new();
+    let files = run_files(&src, &f, &base, path, folder, &mut folder_notes)?;
+    let (runs, mut notes, cleaning) = read_runs(&files, &f, &mut inputs)?;
+    notes.splice(0..0, folder_notes);
     if runs.len() < 2 {
         return Err(file_error(
             &file,
@@ -210,18 +212,32 @@ fn candidate_effects(
     let Some(names) = &s.effects else {
         return Ok(EffectKind::ALL.to_vec());
     };
-    names
-        .iter()
-        .map(|n| {
-            EffectKind::from_name(n).ok_or_else(|| {
-                let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
-                src.value_error(&ParamError::without_value(
-                    "diagnose.effects",
-                    &format!("unknown effect `{n}`: one of {}", all.join(", ")),
-                ))
-            })
-        })
-        .collect()
+    // No candidate would make a verdict of "no effect explains the gap"
+    // that nothing was tried for.
+    if names.is_empty() {
+        return Err(src.value_error(&ParamError::without_value(
+            "diagnose.effects",
+            "an empty list: name at least one effect, or leave the key out for the whole library",
+        )));
+    }
+    let mut kinds = Vec::with_capacity(names.len());
+    for n in names {
+        let kind = EffectKind::from_name(n).ok_or_else(|| {
+            let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
+            src.value_error(&ParamError::without_value(
+                "diagnose.effects",
+                &format!("unknown effect `{n}`: one of {}", all.join(", ")),
+            ))
+        })?;
+        if kinds.contains(&kind) {
+            return Err(src.value_error(&ParamError::without_value(
+                "diagnose.effects",
+                &format!("`{n}` is listed twice: each candidate is fitted once"),
+            )));
+        }
+        kinds.push(kind);
+    }
+    Ok(kinds)
 }
 
 /// Where the base tyres come from: tyre files, rig data (read here) with
@@ -284,6 +300,7 @@ fn run_files(
     base: &Path,
     path: &Path,
     folder: bool,
+    notes: &mut Vec<String>,
 ) -> Result<Vec<PathBuf>, InputError> {
     let file = &src.path;
     let run_spec = f.runs.clone().unwrap_or_default();
@@ -304,12 +321,62 @@ fn run_files(
             path: d.clone(),
             source,
         })?;
-        let mut found: Vec<PathBuf> = entries
+        // `.CSV` as Windows loggers write it; anything else in the folder
+        // is named in a note, not passed over in silence.
+        let (mut found, mut skipped): (Vec<PathBuf>, Vec<PathBuf>) = entries
             .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "csv"))
-            .collect();
+            .partition(|p| {
+                p.is_file() && p.extension().is_some_and(|x| x.eq_ignore_ascii_case("csv"))
+            });
         found.sort();
+        skipped.sort();
+        if !skipped.is_empty() {
+            let names: Vec<String> = skipped
+                .iter()
+                .map(|p| {
+                    let name = p.file_name().unwrap_or_default().to_string_lossy();
+                    if p.is_dir() {
+                        format!("{name}/")
+                    } else {
+                        name.into_owned()
+                    }
+                })
+                .collect();
+            notes.push(format!(
+                "{}: {} entr{} not read ({}): the runs are the *.csv files of the folder itself",
+                d.display(),
+                skipped.len(),
+                if skipped.len() == 1 { "y" } else { "ies" },
+                names.join(", ")
+            ));
+        }
+        if found.is_empty() {
+            return Err(file_error(
+                file,
+                format!(
+                    "no measured runs: the runs folder {} holds no *.csv file",
+                    d.display()
+                ),
+            ));
+        }
         files.extend(found);
+    }
+    // A run listed twice would be held out and trained on at once.
+    for (i, p) in files.iter().enumerate() {
+        let same = |q: &PathBuf| match (p.canonicalize(), q.canonicalize()) {
+            (Ok(a), Ok(b)) => a == b,
+            _ => p == q,
+        };
+        if let Some(q) = files[..i].iter().find(|q| same(q)) {
+            return Err(file_error(
+                file,
+                format!(
+                    "the run {} is listed twice (as {} too): each run is held out once",
+                    p.display(),
+                    q.display()
+                ),
+            ));
+        }
     }
     if files.is_empty() {
         // The vehicle file of a campaign folder, passed for the folder.
@@ -349,7 +416,7 @@ fn read_runs(
     let mut cleaning = CleaningReport::new(min_speed);
     for p in files {
         let run = read_run(p)?;
-        check_length(&run, &run.path.display().to_string())?;
+        check_length(&run)?;
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -365,15 +432,15 @@ fn read_runs(
                 clean.min_speed
             ));
         } else if !gaps.is_empty() || cleaning.pieces.len() - kept != 1 {
-            notes.push(format!(
-                "{name}: {}split into {} pieces replayed separately",
-                if gaps.is_empty() {
-                    String::new()
-                } else {
-                    format!("time gaps at {}; ", gaps.join(", "))
-                },
-                cleaning.pieces.len() - kept
-            ));
+            let gaps = if gaps.is_empty() {
+                String::new()
+            } else {
+                format!("time gaps at {}; ", gaps.join(", "))
+            };
+            notes.push(match cleaning.pieces.len() - kept {
+                1 => format!("{name}: {gaps}one piece left to replay"),
+                k => format!("{name}: {gaps}split into {k} pieces replayed separately"),
+            });
         }
         for piece in pieces {
             match segment {
@@ -385,14 +452,14 @@ fn read_runs(
     Ok((runs, notes, cleaning))
 }
 
-fn check_length(run: &MeasuredRun, name: &str) -> Result<(), InputError> {
+fn check_length(run: &MeasuredRun) -> Result<(), InputError> {
     let n = run.t.len();
     let span = run.t[n - 1] - run.t[0];
     if span < MIN_RUN_SECONDS || n < MIN_RUN_SAMPLES {
         return Err(file_error(
             &run.path,
             format!(
-                "{name} is {span:.2} s long with {n} samples: a run needs at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples to show a response"
+                "the run is {span:.2} s long with {n} samples: a run needs at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples to show a response"
             ),
         ));
     }
@@ -400,11 +467,15 @@ fn check_length(run: &MeasuredRun, name: &str) -> Result<(), InputError> {
 }
 
 /// Cuts a run into pieces of `length` seconds (the last one joins its
-/// predecessor when shorter than half a piece).
+/// predecessor when shorter than half a piece, or than a run must be,
+/// [`MIN_RUN_SECONDS`]).
 fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
     let t0 = run.t[0];
     let total = run.t[run.t.len() - 1] - t0;
-    let count = ((total / length).round() as usize).max(1);
+    let mut count = ((total / length).round() as usize).max(1);
+    if count > 1 && total - (count - 1) as f64 * length < MIN_RUN_SECONDS {
+        count -= 1;
+    }
     let mut out = Vec::new();
     let mut lo = 0;
     for k in 0..count {
@@ -449,5 +520,17 @@ mod tests {
         assert_eq!(s.len(), 15);
         assert_eq!(s.iter().map(|r| r.t.len()).sum::<usize>(), 4600);
         assert!(s[0].path.to_string_lossy().ends_with("[1]"));
+        // 41.72 s in pieces of 2.1 s: 19 whole ones leave 1.82 s, more than
+        // half a piece but less than a run must be: it joins the 19th.
+        let t: Vec<f64> = (0..=4172).map(|i| i as f64 * 0.01).collect();
+        let s = segments(run(t), 2.1);
+        assert_eq!(s.len(), 19);
+        let last = &s[18].t;
+        assert!(
+            (last[last.len() - 1] - last[0] - 3.92).abs() < 0.011,
+            "{}",
+            last[0]
+        );
+        assert_eq!(s.iter().map(|r| r.t.len()).sum::<usize>(), 4173);
     }
 }

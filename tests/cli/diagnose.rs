@@ -198,6 +198,23 @@ fn diagnose_refuses_bad_campaigns_clearly() {
         );
         campaign_err(dir.path())
     };
+    // No candidate, or one twice: refused, not a verdict of nothing tried.
+    let e = settings_err("effects = []");
+    assert!(
+        e.contains("`diagnose.effects`") && e.contains("an empty list"),
+        "{e}"
+    );
+    let e = settings_err("effects = [\"sensor_bias\", \"sensor_bias\"]");
+    assert!(e.contains("`sensor_bias` is listed twice"), "{e}");
+    // The same run twice would be held out and trained on at once.
+    let v = format!("{VEHICLE}\n[runs]\nfiles = [\"runs/a.csv\", \"runs/./a.csv\"]\n");
+    let dir = campaign_folder(&v, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
+    let e = fails_cleanly("diagnose", &dir.path().join("vehicle.toml"), dir.path());
+    assert!(e.contains("a.csv is listed twice"), "{e}");
+    // A runs folder without a run says so.
+    let dir = campaign_folder(VEHICLE, &[("notes.txt", String::from("no runs here"))]);
+    let e = campaign_err(dir.path());
+    assert!(e.contains("holds no *.csv file"), "{e}");
     // An unknown effect is named with the list of known ones.
     let e = settings_err("effects = [\"relaxation\"]");
     assert!(
@@ -297,6 +314,50 @@ fn diagnose_refuses_bad_campaigns_clearly() {
             && e.contains(&format!("handling diagnose {}", dir.path().display())),
         "{e}"
     );
+}
+
+#[test]
+fn a_runs_folder_reads_csv_in_any_case_and_names_what_it_leaves() {
+    // A Windows logger's `.CSV`, a text file and a subfolder beside the runs.
+    let v = format!(
+        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+    );
+    let dir = campaign_folder(
+        &v,
+        &[
+            ("a.csv", run_csv(100.0, 6.0, true, None)),
+            ("B.CSV", run_csv(100.0, 6.0, true, None)),
+            ("readme.txt", String::from("logged on the skid pad")),
+        ],
+    );
+    fs::create_dir(dir.path().join("runs/old")).unwrap();
+    fs::write(
+        dir.path().join("runs/old/c.csv"),
+        run_csv(100.0, 6.0, true, None),
+    )
+    .unwrap();
+    fs::write(
+        dir.path().join("tyre.toml"),
+        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        dir.path().to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains(": 2 runs, 1 candidate effect,"), "{stdout}");
+    assert!(
+        stdout.contains("2 entries not read (old/, readme.txt)"),
+        "{stdout}"
+    );
+    let d = read_json(&out.join("diagnosis.json"));
+    let runs = d["runs"].as_array().unwrap();
+    assert!(runs[0].as_str().unwrap().ends_with("B.CSV"), "{runs:?}");
 }
 
 #[test]
@@ -548,4 +609,61 @@ fn effects_the_runs_cannot_show_are_left_out_with_a_note() {
         .map(|r| r["effect"].as_str().unwrap())
         .collect();
     assert_eq!(ranked, ["sensor_bias"]);
+}
+
+#[test]
+fn a_verdict_that_leaves_a_channel_worse_says_so() {
+    let log = root().join("../shared/data/run_iac_putnam/putnam_run4_2.csv");
+    if !log.is_file() {
+        skipped("a_verdict_that_leaves_a_channel_worse_says_so", &log);
+        return;
+    }
+    // The log's first 60 s in three pieces, two candidates: the sensor
+    // delay closes most of the yaw-rate gap and widens the sideslip one,
+    // while the combined error falls by a third.
+    let text = fs::read_to_string(&log).unwrap();
+    let first: String = text.lines().take(1501).map(|l| format!("{l}\n")).collect();
+    let campaign = format!(
+        "name = \"putnam60\"\n{}\n[runs]\nfiles = [\"putnam60.csv\"]\nsegment = 20.0\n\n[diagnose]\nstep = 0.02\neffects = [\"aero_load\", \"sensor_delay\"]\n",
+        "[vehicle]\nmass = 790.0\nyaw_inertia = 1000.0\na = 1.248\nb = 1.7328\ntrack_front = 1.6\ntrack_rear = 1.55\ncg_height = 0.3\n"
+    );
+    let dir = scratch(&[("putnam60.toml", &campaign), ("putnam60.csv", &first)]);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        dir.path().join("putnam60.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let d = read_json(&out.join("diagnosis.json"));
+    assert_eq!(
+        d["verdict"]["effects"][0], "sensor_delay",
+        "{}",
+        d["verdict"]
+    );
+    let beta = d["shrinkage"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["channel"] == "beta" && s["part"] == "all")
+        .expect("the sideslip's row");
+    assert!(
+        beta["reduction_percent"].as_f64().unwrap() < -10.0,
+        "{beta}"
+    );
+    let warnings = d["verdict"]["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert!(
+        warnings[0]
+            .as_str()
+            .unwrap()
+            .starts_with("it leaves the beta gap larger"),
+        "{warnings:?}"
+    );
+    let printed = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        printed.contains("  warning: it leaves the beta gap larger"),
+        "{printed}"
+    );
 }

@@ -537,3 +537,42 @@ fn glitched_copies_of_synthetic_campaigns_give_the_clean_verdict() {
         }
     }
 }
+
+#[test]
+fn responses_read_as_exactly_zero_while_parked_flag_no_glitch_in_the_driving() {
+    // 6 s of driving, braking, 30 s parked with the yaw rate and ay read as
+    // exactly 0 (a logger that gates its IMU at a standstill), pulling
+    // away, 6 s of driving; at 100 Hz. The parked zeros once made the
+    // spread of the sample-to-sample differences 0, and hundreds of
+    // ordinary noise samples of the driving were masked as spikes.
+    let speed = |t: f64| {
+        if t < 6.0 {
+            20.0
+        } else if t < 8.0 {
+            20.0 * (8.0 - t) / 2.0
+        } else if t < 38.0 {
+            0.0
+        } else if t < 40.0 {
+            20.0 * (t - 38.0) / 2.0
+        } else {
+            20.0
+        }
+    };
+    let mut gated = log(100.0, 46.0, 3, speed, step(2.0));
+    for r in &mut gated {
+        if r.speed == 0.0 {
+            (r.yaw_rate, r.ay) = (0.0, 0.0);
+        }
+    }
+    let clean = log(100.0, 10.0, 4, |_| 20.0, step(3.0));
+    let dir = campaign(&[("a_gated.csv", csv(&gated)), ("b.csv", csv(&clean))]);
+    let (stdout, d) = diagnose(dir.path());
+    let c = &d["cleaning"];
+    assert!(
+        c["glitches"].as_array().unwrap().is_empty(),
+        "{}",
+        c["glitches"]
+    );
+    assert!(stdout.contains("0 response samples masked"), "{stdout}");
+    assert_eq!(c["slow"].as_array().unwrap().len(), 1, "{}", c["slow"]);
+}

@@ -45,13 +45,24 @@ const ZERO_MADS: f64 = 4.0;
 /// quantised.
 const QUANTISED_SHARE: f64 = 0.01;
 
-/// The detection thresholds of the channel `x`.
-pub(super) fn scale(x: &[f64]) -> Scale {
-    let mut d: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
+/// The detection thresholds of the channel `x`, from its samples outside
+/// the slow spans `slow` (from all when every sample is slow): a parked
+/// car's channel can sit at exactly 0 for minutes (a GPS sideslip, a
+/// gated yaw rate), and the zero differences of such a hold would shrink
+/// the spread of the driving's and make its noise "spikes".
+pub(super) fn scale(x: &[f64], slow: &[bool]) -> Scale {
+    let moving = |i: usize| !slow[i] || slow.iter().all(|&s| s);
+    let mut d: Vec<f64> = (1..x.len())
+        .filter(|&i| moving(i) && moving(i - 1))
+        .map(|i| x[i] - x[i - 1])
+        .collect();
+    if d.is_empty() {
+        d = x.windows(2).map(|w| w[1] - w[0]).collect();
+    }
     let md = median(&mut d);
     let mut dev: Vec<f64> = d.iter().map(|v| (v - md).abs()).collect();
     let sigma = 1.4826 * median(&mut dev);
-    let mut s = x.to_vec();
+    let mut s: Vec<f64> = (0..x.len()).filter(|&i| moving(i)).map(|i| x[i]).collect();
     s.sort_by(f64::total_cmp);
     let q = |p: f64| s[((s.len() - 1) as f64 * p).round() as usize];
     let range = q(0.99) - q(0.01);
@@ -86,12 +97,15 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
     if n < 5 {
         return Vec::new();
     }
-    let sc = scale(x);
+    let sc = scale(x, slow);
     let mut flagged = vec![false; n];
     let mut out = Vec::new();
     zero_reads(x, &sc, &mut flagged, &mut out);
     spikes(x, sc.threshold, &mut flagged, &mut out);
     stuck_values(x, slow, &mut flagged, &mut out);
+    // The slow spans are excluded whole (and counted as such): a glitch
+    // wholly inside one changes nothing that is replayed.
+    out.retain(|f| !slow[f.start..f.start + f.len].iter().all(|&s| s));
     out.sort_by_key(|f| f.start);
     out
 }
@@ -386,6 +400,32 @@ mod tests {
     }
 
     #[test]
+    fn a_channel_held_at_zero_while_parked_leaves_the_driving_noise_alone() {
+        // 6 s of driving, 30 s parked with the sideslip read as exactly 0
+        // (as a GPS-derived one is), 6 s of driving, at 100 Hz: the
+        // parked zeros once made the spread of the differences 0 and 800
+        // ordinary noise samples "spikes".
+        let (drive, parked) = (600, 3000);
+        let n = 2 * drive + parked;
+        let noise = gauss_noise(n, 0.002, 5);
+        let slow: Vec<bool> = (0..n)
+            .map(|i| (drive..drive + parked).contains(&i))
+            .collect();
+        let x: Vec<f64> = (0..n)
+            .map(|i| if slow[i] { 0.0 } else { 0.01 + noise[i] })
+            .collect();
+        assert!(detect(&x, &slow).is_empty());
+        // A real spike in the driving is still found, and a spike while
+        // parked (excluded with its span) is not reported.
+        let mut y = x.clone();
+        y[300] += 0.05;
+        y[drive + 100] = 0.05;
+        let found = detect(&y, &slow);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].start, found[0].kind), (300, GlitchKind::Spike));
+    }
+
+    #[test]
     fn each_glitch_kind_is_found_at_its_sample() {
         let n = 2000;
         let base: Vec<f64> = (0..n)
@@ -439,7 +479,7 @@ mod tests {
             .find(|r| r.path.to_string_lossy().contains("sweep"))
             .expect("a sweep run")
             .clone();
-        let sc = scale(&run.yaw_rate);
+        let sc = scale(&run.yaw_rate, &no_slow(run.t.len()));
         // A sample well away from 0 but inside the spike threshold, with
         // neighbours of its sign.
         let i = (2..run.t.len() - 2)

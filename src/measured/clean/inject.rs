@@ -29,7 +29,7 @@ pub fn inject_glitches(run: &mut MeasuredRun, seed: u64) -> Vec<Glitch> {
             .collect();
     for (ch, kind) in plan {
         let Some(x) = ch.of(run) else { continue };
-        let tt = scale(x).threshold;
+        let tt = scale(x, &vec![false; x.len()]).threshold;
         let len = if kind == GlitchKind::Stuck { 8 } else { 1 };
         // A zero read needs a value far from 0 around it; any place will do
         // for the others.

@@ -417,6 +417,7 @@ fn read_runs(
     for p in files {
         let run = read_run(p)?;
         check_length(&run)?;
+        notes.extend(steer_against_yaw(&run, f.vehicle.wheelbase(), min_speed)?);
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -450,6 +451,55 @@ fn read_runs(
         }
     }
     Ok((runs, notes, cleaning))
+}
+
+/// Steered samples needed to judge the steer against the yaw rate.
+const STEER_CHECK_SAMPLES: usize = 50;
+
+/// The steer judged against the yaw rate it gives: over the samples at
+/// speed with a steer of at least 0.005 rad, the median of
+/// `q = r·l/(u·δ)`, the yaw rate over a neutral car's, is about
+/// `1/(1 + K·u²)` (0.2–1 for an understeering car, somewhat above 1 for
+/// an oversteering one). A negative median is a sign convention other
+/// than ISO 8855's (refused); one below 0.1 a steer in degrees or a
+/// steering-wheel angle, one above 3 a steer too small (noted: the
+/// diagnosis would fit a model-form error to a unit slip).
+fn steer_against_yaw(
+    run: &MeasuredRun,
+    wheelbase: f64,
+    min_speed: f64,
+) -> Result<Option<String>, InputError> {
+    let mut q: Vec<f64> = (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0) && run.steer[i].abs() >= 0.005)
+        .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
+        .filter(|q| q.is_finite())
+        .collect();
+    if q.len() < STEER_CHECK_SAMPLES {
+        return Ok(None);
+    }
+    let n = q.len();
+    let m = crate::measured::clean::median(&mut q);
+    let name = run.path.display();
+    if m < -0.1 {
+        return Err(file_error(
+            &run.path,
+            format!(
+                "the yaw rate turns against the steer (median r·l/(u·δ) = {m:.2} over {n} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; is `steer` or `yaw_rate` in another sign convention? negate it"
+            ),
+        ));
+    }
+    Ok(if m < 0.1 {
+        Some(format!(
+            "{name}: the yaw rate is {:.0}× smaller than a neutral car's for this steer (median r·l/(u·δ) = {m:.3} over {n} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians",
+            1.0 / m.max(1e-9)
+        ))
+    } else if m > 3.0 {
+        Some(format!(
+            "{name}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?"
+        ))
+    } else {
+        None
+    })
 }
 
 fn check_length(run: &MeasuredRun) -> Result<(), InputError> {

@@ -34,11 +34,33 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
             message: "a run needs at least two samples".into(),
         });
     }
+    // A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged
+    // on the 99th percentile so that a logger's spike (repaired later) does
+    // not refuse the file.
+    let steer = c.take("steer");
+    let mut size: Vec<f64> = steer.iter().map(|d| d.abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let p99 = size[((size.len() - 1) as f64 * 0.99).round() as usize];
+    if p99 > std::f64::consts::FRAC_PI_2 {
+        let i = steer
+            .iter()
+            .position(|d| d.abs() > std::f64::consts::FRAC_PI_2)
+            .unwrap_or(0);
+        return Err(c.error_at(
+            path,
+            i,
+            "steer",
+            format!(
+                "column `steer`: {} rad is beyond ±90° (1 % of the run reaches {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?",
+                steer[i]
+            ),
+        ));
+    }
     Ok(MeasuredRun {
         path: path.to_path_buf(),
         t,
         speed: c.take("speed"),
-        steer: c.take("steer"),
+        steer,
         yaw_rate: c.take("yaw_rate"),
         ay: c.take_optional("ay"),
         beta: c.take_optional("beta"),

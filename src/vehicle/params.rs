@@ -124,7 +124,7 @@ impl Vehicle {
                     "wheelbase",
                     l,
                     &format!(
-                        "a + b = {} + {} = {} m differs from the wheelbase by more than 1 mm",
+                        "a + b = {} + {} = {:.4} m differs from the wheelbase by more than 1 mm",
                         self.a,
                         self.b,
                         self.wheelbase()

@@ -667,3 +667,52 @@ fn a_verdict_that_leaves_a_channel_worse_says_so() {
         "{printed}"
     );
 }
+
+#[test]
+fn a_steer_in_another_unit_or_sign_is_caught_against_the_yaw_rate() {
+    let v = format!(
+        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+    );
+    // The runs' 0.02 rad step, written as `with` in both files.
+    let folder = |with: &str| {
+        let text = run_csv(100.0, 6.0, true, None).replace(",0.02,", &format!(",{with},"));
+        let dir = campaign_folder(&v, &[("a.csv", text.clone()), ("b.csv", text)]);
+        fs::write(
+            dir.path().join("tyre.toml"),
+            "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+        )
+        .unwrap();
+        dir
+    };
+    // In degrees: diagnosed, with a note that names the likely slip.
+    let dir = folder("1.1459");
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        dir.path().to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
+            && stdout.contains("is `steer` in degrees"),
+        "{stdout}"
+    );
+    // The other sign: refused, naming the file and the convention.
+    let dir = folder("-0.02");
+    let e = campaign_err(dir.path());
+    assert!(
+        e.contains("a.csv")
+            && e.contains("the yaw rate turns against the steer (median r·l/(u·δ) = -1.39"),
+        "{e}"
+    );
+    // Beyond 90°: refused at its line and column.
+    let dir = folder("2.5");
+    let e = campaign_err(dir.path());
+    assert!(
+        e.contains("a.csv:103:3: column `steer`: 2.5 rad is beyond ±90°"),
+        "{e}"
+    );
+}

@@ -19,7 +19,7 @@ const SEARCHED: [RunChannel; 5] = [
 ];
 
 /// The middle value (upper median) of `v`, sorted in place; 0 when empty.
-pub(super) fn median(v: &mut [f64]) -> f64 {
+pub(crate) fn median(v: &mut [f64]) -> f64 {
     if v.is_empty() {
         return 0.0;
     }

@@ -50,6 +50,7 @@ mod report;
 #[cfg(test)]
 mod test_signals;
 
+pub(crate) use glitches::median;
 pub use glitches::treat_glitches;
 pub use inject::inject_glitches;
 pub use pieces::{

@@ -300,7 +300,8 @@ impl CleaningReport {
                 s.t_end,
                 s.run,
                 s.samples,
-                s.max_speed
+                // Truncated: a span below 5 m/s must not read "up to 5.00".
+                (s.max_speed * 100.0).floor() / 100.0
             ));
         }
         if self.slow.len() > first {

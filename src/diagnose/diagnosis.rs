@@ -658,7 +658,14 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         verdict.warnings = worsened(&shrinkage);
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
-    let summary = gap_summary(&run_gaps, &parts, significant, j0, jn);
+    let mut summary = gap_summary(&run_gaps, &parts, significant, j0, jn);
+    let without_ay = c.runs.iter().filter(|r| r.ay.is_none()).count();
+    if without_ay > 0 {
+        summary.push(format!(
+            "|ay| levels are u·r on the {without_ay} of {} runs without an ay channel",
+            c.runs.len()
+        ));
+    }
     Ok(Diagnosis {
         campaign: c.name.clone(),
         seed: set.seed,

@@ -564,6 +564,11 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         printed.starts_with("putnam_run4_2: 12 runs (pieces of 1 file), 2 candidate effects"),
         "{printed}"
     );
+    // The log has no accelerometer: its |ay| levels are u·r, and say so.
+    assert!(
+        printed.contains("|ay| levels are u·r on the 12 of 12 runs without an ay channel"),
+        "{printed}"
+    );
     assert!(
         printed.contains("rad (at its search bound: the data would take it further)"),
         "{printed}"

@@ -2,14 +2,17 @@
 //! lateral sweep (`alpha`, `fy`, optionally `mz`), a longitudinal sweep
 //! (`kappa`, `fx`) or both, plus optional `camber`, `pressure` and `speed`.
 //! Read into [`RigData`] with every error located in the file; the data's
-//! sense is checked here (positive loads, angles in radians).
+//! sense is checked here (positive loads, angles in radians, the signs of
+//! the forces and the aligning moment at small slip).
 //!
 //! Units: N, N·m, rad, Pa, m/s; slip ratio dimensionless. Signs as in
 //! `tyre/mod.rs` (a positive slip angle gives a positive `fy`).
 
+use super::columns::Columns;
 use super::read_columns;
 use crate::error::InputError;
 use crate::identify::data::RigData;
+use crate::identify::display::significant;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
 
@@ -71,11 +74,21 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             ));
         }
     }
+    let mz = c.take_optional("mz");
+    check_signs(
+        path,
+        &c,
+        lateral.as_ref().map(|(a, f)| (a.as_slice(), f.as_slice())),
+        mz.as_deref(),
+        longitudinal
+            .as_ref()
+            .map(|(k, f)| (k.as_slice(), f.as_slice())),
+    )?;
     let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
     Ok(RigData {
         camber_measured: camber.is_some(),
         camber: camber.unwrap_or_else(|| vec![0.0; n]),
-        mz: c.take_optional("mz"),
+        mz,
         pressure: c.take_optional("pressure"),
         speed: c.take_optional("speed"),
         longitudinal,
@@ -95,4 +108,196 @@ pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
         });
     }
     Ok(d)
+}
+
+/// Slip angle (rad) and slip ratio up to which a tyre's forces and
+/// aligning moment still rise with slip, so their slope there has the sign
+/// FORMATS.md fixes whatever the tyre (2°, well inside the force peaks of
+/// road and racing tyres and below where `mz` turns over).
+const SMALL_SLIP: f64 = 0.035;
+/// Samples needed on each side of zero slip before a sign is judged: fewer
+/// cannot tell a slope from an offset (camber thrust, conicity).
+const SIGN_SAMPLES_PER_SIDE: usize = 5;
+/// A slope is judged wrong only this many standard errors below zero: a
+/// channel that is noise at small slip (a weak `mz`) does not show a sign.
+const SIGN_STANDARD_ERRORS: f64 = 3.0;
+
+/// A least-squares line through small-slip samples.
+#[derive(Debug, Clone, Copy)]
+struct Slope {
+    slope: f64,
+    standard_error: f64,
+    above: usize,
+    below: usize,
+}
+
+impl Slope {
+    /// Fits `y = slope·x + c` to the pairs, or `None` with fewer than
+    /// [`SIGN_SAMPLES_PER_SIDE`] samples on either side of `x = 0`.
+    fn fit(pairs: &[(f64, f64)]) -> Option<Slope> {
+        let above = pairs.iter().filter(|p| p.0 > 0.0).count();
+        let below = pairs.iter().filter(|p| p.0 < 0.0).count();
+        if above < SIGN_SAMPLES_PER_SIDE || below < SIGN_SAMPLES_PER_SIDE {
+            return None;
+        }
+        let m = pairs.len() as f64;
+        let (mx, my) = pairs
+            .iter()
+            .fold((0.0, 0.0), |(sx, sy), (x, y)| (sx + x / m, sy + y / m));
+        let (sxx, sxy) = pairs.iter().fold((0.0, 0.0), |(sxx, sxy), (x, y)| {
+            (sxx + (x - mx) * (x - mx), sxy + (x - mx) * (y - my))
+        });
+        let slope = sxy / sxx;
+        let rss: f64 = pairs
+            .iter()
+            .map(|(x, y)| (y - my - slope * (x - mx)).powi(2))
+            .sum();
+        Some(Slope {
+            slope,
+            standard_error: (rss / (m - 2.0) / sxx).sqrt(),
+            above,
+            below,
+        })
+    }
+
+    fn clearly_negative(&self) -> bool {
+        self.slope < -SIGN_STANDARD_ERRORS * self.standard_error
+    }
+
+    fn clearly_positive(&self) -> bool {
+        self.slope > SIGN_STANDARD_ERRORS * self.standard_error
+    }
+
+    /// The slope, its standard error and the samples behind it, in words.
+    fn describe(&self, unit: &str, slip: &str) -> String {
+        format!(
+            "{} {unit} (standard error {} {unit}) from {} samples ({} with {slip} > 0, {} with {slip} < 0)",
+            significant(self.slope, 4),
+            significant(self.standard_error, 2),
+            self.above + self.below,
+            self.above,
+            self.below
+        )
+    }
+}
+
+/// Refuses rig data whose forces or aligning moment have the opposite sign
+/// to FORMATS.md's at small slip. A fit cannot see a flipped sign: it fits
+/// the mirror image just as well (negative cornering stiffness, small σ),
+/// and the tyre written from it steers the vehicle the wrong way.
+fn check_signs(
+    path: &Path,
+    c: &Columns,
+    lateral: Option<(&[f64], &[f64])>,
+    mz: Option<&[f64]>,
+    longitudinal: Option<(&[f64], &[f64])>,
+) -> Result<(), InputError> {
+    let refuse = |column: &str, found: String, requires: &str| {
+        InputError::File {
+        path: path.to_path_buf(),
+        message: format!(
+            "column `{column}` (column {} of the header) has the wrong sign: {found}; FORMATS.md (ISO 8855) requires {requires}. The file is likely in the SAE or another sign convention: negate the `{column}` column",
+            c.column(column)
+        ),
+    }
+    };
+    // Each channel is judged at small values of the other slip, so combined
+    // slip (a braking tyre's reduced Fy) does not blur the slope.
+    let small = |s: Option<&[f64]>, i: usize| s.is_none_or(|s| s[i].abs() <= SMALL_SLIP);
+    if let Some((alpha, fy)) = lateral {
+        let kappa = longitudinal.map(|l| l.0);
+        let near: Vec<usize> = (0..alpha.len())
+            .filter(|&i| small(Some(alpha), i) && small(kappa, i))
+            .collect();
+        let window = match kappa {
+            Some(_) => format!("|alpha| ≤ {SMALL_SLIP} rad, |kappa| ≤ {SMALL_SLIP}"),
+            None => format!("|alpha| ≤ {SMALL_SLIP} rad"),
+        };
+        let pairs =
+            |y: &[f64]| -> Vec<(f64, f64)> { near.iter().map(|&i| (alpha[i], y[i])).collect() };
+        if let Some(fy_slope) = Slope::fit(&pairs(fy)) {
+            if fy_slope.clearly_negative() {
+                return Err(refuse(
+                    "fy",
+                    format!(
+                        "near zero slip ({window}) its least-squares slope against `alpha` is {}",
+                        fy_slope.describe("N/rad", "alpha")
+                    ),
+                    "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
+                ));
+            }
+            let mz_slope = mz.and_then(|mz| Slope::fit(&pairs(mz)));
+            if let Some(mz_slope) = mz_slope {
+                if fy_slope.clearly_positive() && mz_slope.clearly_negative() {
+                    return Err(refuse(
+                        "mz",
+                        format!(
+                            "near zero slip ({window}) its least-squares slope against `alpha` is {}, while that of `fy` is {} N/rad",
+                            mz_slope.describe("N·m/rad", "alpha"),
+                            significant(fy_slope.slope, 4)
+                        ),
+                        "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
+                    ));
+                }
+            }
+        }
+    }
+    if let Some((kappa, fx)) = longitudinal {
+        let alpha = lateral.map(|l| l.0);
+        let pairs: Vec<(f64, f64)> = (0..kappa.len())
+            .filter(|&i| small(Some(kappa), i) && small(alpha, i))
+            .map(|i| (kappa[i], fx[i]))
+            .collect();
+        if let Some(s) = Slope::fit(&pairs).filter(Slope::clearly_negative) {
+            let window = match alpha {
+                Some(_) => format!("|kappa| ≤ {SMALL_SLIP}, |alpha| ≤ {SMALL_SLIP} rad"),
+                None => format!("|kappa| ≤ {SMALL_SLIP}"),
+            };
+            return Err(refuse(
+                "fx",
+                format!(
+                    "near zero slip ({window}) its least-squares slope against `kappa` is {}",
+                    s.describe("N", "kappa")
+                ),
+                "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_slope_needs_samples_on_both_sides_of_zero() {
+        let line = |xs: &[f64]| -> Vec<(f64, f64)> { xs.iter().map(|&x| (x, -5.0 * x)).collect() };
+        // Four below zero: no judgement, however clear the slope.
+        let few = line(&[
+            -0.03, -0.02, -0.01, -0.005, 0.0, 0.01, 0.02, 0.03, 0.04, 0.05,
+        ]);
+        assert!(Slope::fit(&few).is_none());
+        let enough = line(&[
+            -0.03, -0.02, -0.01, -0.005, -0.001, 0.01, 0.02, 0.03, 0.04, 0.05,
+        ]);
+        let s = Slope::fit(&enough).unwrap();
+        assert!((s.slope + 5.0).abs() < 1e-12 && s.clearly_negative());
+        assert_eq!((s.above, s.below), (5, 5));
+    }
+
+    #[test]
+    fn a_slope_lost_in_noise_is_not_judged() {
+        // A weak channel: slope −1 under noise of ±1 on a ±0.03 range.
+        let pairs: Vec<(f64, f64)> = (-6..=6)
+            .filter(|&i| i != 0)
+            .map(|i| {
+                let x = 0.005 * i as f64;
+                (x, -x + if i % 2 == 0 { 1.0 } else { -1.0 })
+            })
+            .collect();
+        let s = Slope::fit(&pairs).unwrap();
+        assert!(s.slope < 0.0);
+        assert!(!s.clearly_negative() && !s.clearly_positive());
+    }
 }

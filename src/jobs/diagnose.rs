@@ -178,12 +178,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         }
     }
     out.push(format!("verdict: {}", d.verdict.statement));
-    out.extend(
-        d.verdict
-            .warnings
-            .iter()
-            .map(|w| format!("  warning: {w}")),
-    );
+    out.extend(d.verdict.warnings.iter().map(|w| format!("  warning: {w}")));
     out.extend(d.confounded.iter().map(|c| {
         format!(
             "confounded: {} — separate them with {}",

@@ -10,6 +10,36 @@ fn rig_csv(rows: &[(f64, f64, f64)]) -> String {
     s
 }
 
+/// What `identify`'s terminal output must never show: a number printed as
+/// a negative zero ("camber -0.00°"), or a two-stage line saying one σ is
+/// below another while printing both alike.
+pub(crate) fn assert_tidy_output(stdout: &str) {
+    for word in stdout.split(|c: char| c.is_whitespace() || c == '(') {
+        let number = word.trim_end_matches(['°', ',', ')', ':', '%', ';']);
+        assert!(
+            !(number.starts_with('-') && number.parse::<f64>() == Ok(0.0)),
+            "negative zero `{word}` in: {stdout}"
+        );
+    }
+    for line in stdout
+        .lines()
+        .filter(|l| l.contains("writing the two-stage result"))
+    {
+        let chosen = text_between(line, "(σ ", " %");
+        assert!(
+            !line.contains(&format!("< direct {chosen} %")),
+            "the two σ print alike: {line}"
+        );
+    }
+}
+
+/// The text of `line` after `from` up to the next `to`.
+fn text_between<'a>(line: &'a str, from: &str, to: &str) -> &'a str {
+    let start = line.find(from).unwrap_or_else(|| panic!("{from}: {line}")) + from.len();
+    let len = line[start..].find(to).unwrap_or(line.len() - start);
+    &line[start..start + len]
+}
+
 #[test]
 fn identify_refuses_bad_rig_data_clearly() {
     // No lateral columns.
@@ -143,6 +173,12 @@ fn real_hoosier_rig_data_fits_within_a_few_percent() {
         out.path().join("pac89.toml").to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
+    // The file's camber-0 samples sit a hair below zero (-0.00017 rad…):
+    // printed as "0.00°", and the two σ of the two-stage line (2.5124 %
+    // and 2.5124 %, seed 1) with the digits that tell them apart.
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_tidy_output(&stdout);
+    assert!(stdout.contains("camber levels: 0.00° ("), "{stdout}");
     let report: serde_json::Value = read_json(&out.path().join("pac89.report.json"));
     let sigma = report["sigma_percent"].as_f64().unwrap();
     assert!(sigma < 3.0, "σ {sigma} %");
@@ -189,4 +225,130 @@ fn identify_fits_longitudinal_only_rig_data() {
     assert_eq!(report["channel"], "longitudinal-force");
     assert!(report["sigma_percent"].as_f64().unwrap() < 0.01, "{report}");
     assert!(fs::read_to_string(&out).unwrap().contains("b = ["));
+}
+
+/// The papers' layout (columns alpha, fz, fy, mz; three loads × 85 slip
+/// angles 0.2865° apart) from the Adams PAC89 tyre with 1 % noise, with
+/// `fy` and `mz` multiplied by `sign_fy` and `sign_mz`.
+fn papers_layout_with_signs(sign_fy: f64, sign_mz: f64) -> String {
+    use handling::tyre::{Pac89, SlipState, Tyre, TyreModel};
+    use rand::SeedableRng;
+    let t = Tyre::Pac89(Pac89::adams_example());
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let mut s = String::from("alpha,fz,fy,mz\n");
+    for fz in [2800.0, 5700.0, 8600.0] {
+        for i in -42..=42 {
+            let a = (0.2865 * i as f64).to_radians();
+            let f = t.forces(&SlipState::lateral(a, fz));
+            let mut noisy = |v: f64| v * (1.0 + 0.01 * handling::identify::data::gauss(&mut rng));
+            let (fy, mz) = (noisy(f.fy), noisy(f.mz));
+            s += &format!("{a},{fz},{},{}\n", sign_fy * fy, sign_mz * mz);
+        }
+    }
+    s
+}
+
+/// The number after `prefix` in `text`.
+fn number_after(text: &str, prefix: &str) -> f64 {
+    let rest = &text[text
+        .find(prefix)
+        .unwrap_or_else(|| panic!("{prefix}: {text}"))
+        + prefix.len()..];
+    let end = rest.find(' ').unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
+}
+
+#[test]
+fn rig_data_in_another_sign_convention_is_refused_naming_the_column() {
+    let dir = scratch(&[
+        ("iso.csv", &papers_layout_with_signs(1.0, 1.0)),
+        ("sae_fy.csv", &papers_layout_with_signs(-1.0, 1.0)),
+        ("sae_mz.csv", &papers_layout_with_signs(1.0, -1.0)),
+    ]);
+    let identify = |file: &str| {
+        let out = dir.path().join(format!("{file}.toml"));
+        let o = run(&[
+            "identify",
+            dir.path().join(file).to_str().unwrap(),
+            "--model",
+            "pac89",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        (o, out)
+    };
+    // FORMATS.md's signs: fitted.
+    let (o, _) = identify("iso.csv");
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Fy negated (SAE-style): fitted to σ ≈ 1 % before, with a negative
+    // cornering stiffness; now refused before anything is fitted.
+    let (o, out) = identify("sae_fy.csv");
+    assert!(!o.status.success());
+    assert!(!out.exists() && !out.with_extension("report.json").exists());
+    let e = stderr(&o);
+    for says in [
+        "sae_fy.csv: column `fy` (column 3 of the header) has the wrong sign",
+        "|alpha| ≤ 0.035 rad",
+        "from 36 samples (18 with alpha > 0, 18 with alpha < 0)",
+        "FORMATS.md (ISO 8855) requires a positive slope",
+        "fy ≈ +C_alpha·alpha",
+        "SAE or another sign convention: negate the `fy` column",
+    ] {
+        assert!(e.contains(says), "{says}: {e}");
+    }
+    // The slope found is the truth's cornering stiffness, reversed (PAC89
+    // Adams example: about 0.7e5–1.5e5 N/rad over these loads).
+    let slope = number_after(&e, "slope against `alpha` is ");
+    assert!((-2e5..-5e4).contains(&slope), "{slope}: {e}");
+    // Mz negated alone: refused naming `mz`, with both slopes.
+    let (o, out) = identify("sae_mz.csv");
+    assert!(!o.status.success());
+    assert!(!out.exists());
+    let e = stderr(&o);
+    for says in [
+        "sae_mz.csv: column `mz` (column 4 of the header) has the wrong sign",
+        "while that of `fy` is ",
+        "`mz` to have the sign of `fy` at small slip",
+        "negate the `mz` column",
+    ] {
+        assert!(e.contains(says), "{says}: {e}");
+    }
+    assert!(number_after(&e, "slope against `alpha` is ") < 0.0, "{e}");
+    assert!(number_after(&e, "while that of `fy` is ") > 0.0, "{e}");
+}
+
+#[test]
+fn longitudinal_rig_data_with_fx_reversed_is_refused() {
+    // A slip-ratio sweep whose force opposes the slip (fx ≈ −C_kappa·kappa).
+    let mut s = String::from("fz,kappa,fx\n");
+    for fz in [2000.0, 4000.0, 6000.0] {
+        for i in -25..=25 {
+            let kappa = 0.01 * i as f64;
+            let fx = -fz * (1.6 * (12.0 * kappa).atan()).sin();
+            s += &format!("{fz},{kappa},{fx}\n");
+        }
+    }
+    let dir = scratch(&[("rig.csv", &s)]);
+    let out = dir.path().join("fx.toml");
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(!out.exists());
+    let e = stderr(&o);
+    for says in [
+        "rig.csv: column `fx` (column 3 of the header) has the wrong sign",
+        "|kappa| ≤ 0.035",
+        "slope against `kappa` is -",
+        "from 18 samples (9 with kappa > 0, 9 with kappa < 0)",
+        "fx ≈ +C_kappa·kappa",
+        "negate the `fx` column",
+    ] {
+        assert!(e.contains(says), "{says}: {e}");
+    }
 }

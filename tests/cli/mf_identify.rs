@@ -374,3 +374,44 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     assert!(rms_fy < 70.6, "Fy RMS {rms_fy} N");
     assert!(rms_mz < 6.23, "Mz RMS {rms_mz} N·m");
 }
+
+#[test]
+fn mf61_refuses_combined_slip_rig_data_with_fx_reversed() {
+    // The combined-slip grid with `fx` negated: refused by the staged
+    // identification's reader, on the rows near zero slip in both.
+    let dir = tempfile::tempdir().unwrap();
+    synthesise(dir.path());
+    let (h, rows) = table(&dir.path().join("rig.csv"));
+    let fx = at(&h, "fx");
+    let mut s = format!("{}\n", h.join(","));
+    for r in &rows {
+        let cells: Vec<String> = r
+            .iter()
+            .enumerate()
+            .map(|(k, v)| format!("{}", if k == fx { -v } else { *v }))
+            .collect();
+        s += &cells.join(",");
+        s.push('\n');
+    }
+    fs::write(dir.path().join("reversed.csv"), s).unwrap();
+    let out = dir.path().join("tyre.tir");
+    let o = run(&[
+        "identify",
+        dir.path().join("reversed.csv").to_str().unwrap(),
+        "--model",
+        "mf61",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(!out.exists());
+    let e = stderr(&o);
+    for says in [
+        "reversed.csv: column `fx` (column 6 of the header) has the wrong sign",
+        "|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad",
+        "slope against `kappa` is -",
+        "negate the `fx` column",
+    ] {
+        assert!(e.contains(says), "{says}: {e}");
+    }
+}

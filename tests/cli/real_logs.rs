@@ -576,3 +576,43 @@ fn responses_read_as_exactly_zero_while_parked_flag_no_glitch_in_the_driving() {
     assert!(stdout.contains("0 response samples masked"), "{stdout}");
     assert_eq!(c["slow"].as_array().unwrap().len(), 1, "{}", c["slow"]);
 }
+
+#[test]
+fn a_sideslip_logged_at_10_hz_in_a_100_hz_log_is_interpolated_between_updates() {
+    // A GPS sideslip updated every tenth sample and held between: its steps
+    // would be residuals no model closes.
+    let rows = log(100.0, 12.0, 5, |_| 20.0, step(3.0));
+    let mut s = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+    for (i, r) in rows.iter().enumerate() {
+        // The sideslip of the yaw response (a steady 0.3·r·l/u), held.
+        let held = &rows[i - i % 10];
+        let beta = 0.3 * held.yaw_rate * 2.78 / held.speed;
+        s += &format!(
+            "{:.3},{:.6},{:.6},{:.6},{:.6},{:.6}\n",
+            r.t, r.speed, r.steer, r.yaw_rate, r.ay, beta
+        );
+    }
+    let clean = log(100.0, 10.0, 6, |_| 20.0, step(3.0));
+    let dir = campaign(&[("a_gps.csv", s), ("b.csv", csv(&clean))]);
+    let (stdout, d) = diagnose(dir.path());
+    let held = d["cleaning"]["held"].as_array().unwrap();
+    assert_eq!(held.len(), 1, "{held:?}");
+    assert_eq!(held[0]["channel"], "beta");
+    assert_eq!(held[0]["every"], 10);
+    // 1201 samples, 121 updates (the last at 12 s, held for none): 120
+    // holds of 9 samples interpolated.
+    assert_eq!(held[0]["samples"], 120 * 9);
+    assert_eq!(d["cleaning"]["samples_interpolated"], 120 * 9);
+    assert!(
+        stdout.contains("held: beta in ")
+            && stdout
+                .contains("updates every 10 samples (10.0 Hz): 1080 held samples interpolated"),
+        "{stdout}"
+    );
+    // Nothing else taken for a glitch.
+    assert!(
+        d["cleaning"]["glitches"].as_array().unwrap().is_empty(),
+        "{}",
+        d["cleaning"]["glitches"]
+    );
+}

@@ -35,10 +35,9 @@ fn identify(dir: &Path, file: &str, model: &str, extra: &[&str]) -> (serde_json:
     args.extend_from_slice(extra);
     let o = run(&args);
     assert!(o.status.success(), "{}", stderr(&o));
-    (
-        read_json(&dir.join("fit.report.json")),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-    )
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    crate::identify::assert_tidy_output(&stdout);
+    (read_json(&dir.join("fit.report.json")), stdout)
 }
 
 fn lateral_rows(loads: &[f64], alphas: &[f64]) -> Vec<Vec<f64>> {
@@ -379,5 +378,62 @@ fn camber_zero_selects_a_file_without_camber_pooled_pressures_are_warned_about_a
     assert!(
         e.contains(":2:"),
         "line of the first slip past 90°, column 2: {e}"
+    );
+}
+
+#[test]
+fn a_camber_logged_a_hair_below_zero_prints_as_zero() {
+    // Rigs log a zero camber as -1e-6 rad and the like: the level and every
+    // curve print "0.00°", never "-0.00°".
+    let alphas: Vec<f64> = (-42..=42)
+        .map(|i| (0.2865 * i as f64).to_radians())
+        .collect();
+    let rows: Vec<Vec<f64>> = lateral_rows(&[2800.0, 5700.0, 8600.0], &alphas)
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| vec![r[0], r[1], -1e-6 * (1 + i % 3) as f64, r[2]])
+        .collect();
+    let dir = scratch(&[("rig.csv", &csv("fz,alpha,camber,fy", &rows))]);
+    let (_, stdout) = identify(dir.path(), "rig.csv", "pac89", &[]);
+    assert!(stdout.contains("camber levels: 0.00° (255)"), "{stdout}");
+    assert_eq!(
+        stdout.matches(", camber  0.00°, ").count(),
+        3,
+        "one line per load: {stdout}"
+    );
+    assert!(!stdout.contains("-0.00"), "{stdout}");
+}
+
+#[test]
+fn a_campaign_whose_rig_file_has_fy_reversed_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["--effects", "relaxation_length", "--seed", "2"];
+    let campaign = synth_campaign(dir.path(), "c", &args);
+    let rig = campaign.join("tyre_rig.csv");
+    let text = fs::read_to_string(&rig).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    assert_eq!(header, "fz,alpha,fy");
+    let mut flipped = format!("{header}\n");
+    for l in lines {
+        let cells: Vec<f64> = l.split(',').map(|v| v.parse().unwrap()).collect();
+        flipped += &format!("{},{},{}\n", cells[0], cells[1], -cells[2]);
+    }
+    fs::write(&rig, flipped).unwrap();
+    let out = campaign.with_extension("out");
+    let o = run(&[
+        "diagnose",
+        campaign.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(!out.join("diagnosis.json").exists());
+    let e = stderr(&o);
+    assert!(
+        e.contains("tyre_rig.csv: column `fy` (column 3 of the header) has the wrong sign")
+            && e.contains("slope against `alpha` is -")
+            && e.contains("negate the `fy` column"),
+        "{e}"
     );
 }

@@ -4,6 +4,7 @@
 //! (the method is described in [`super`]). Units: the variable's own (N,
 //! rad, Pa).
 
+use crate::identify::display::fixed;
 use serde::Serialize;
 
 /// A grouping variable of rig data.
@@ -30,9 +31,9 @@ impl Variable {
     /// A value in the unit people read it in.
     pub fn display(self, v: f64) -> String {
         match self {
-            Variable::Load => format!("{v:.0} N"),
-            Variable::Camber => format!("{:.2}°", v.to_degrees()),
-            Variable::Pressure => format!("{:.1} kPa", v / 1000.0),
+            Variable::Load => format!("{} N", fixed(v, 0)),
+            Variable::Camber => format!("{}°", fixed(v.to_degrees(), 2)),
+            Variable::Pressure => format!("{} kPa", fixed(v / 1000.0, 1)),
         }
     }
 }

@@ -4,6 +4,7 @@
 
 use super::SwarmReport;
 use crate::identify::data::{Condition, Point, SlipAxis};
+use crate::identify::display::fixed;
 use crate::identify::Channel;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::tyre::Tyre;
@@ -77,8 +78,8 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
     }
     Panel {
         title: format!(
-            "{model} fit, camber {:.2}°: points measured, lines fitted",
-            camber.to_degrees()
+            "{model} fit, camber {}°: points measured, lines fitted",
+            fixed(camber.to_degrees(), 2)
         ),
         x_label: if ch == Channel::LongitudinalForce {
             "slip ratio [%]".into()

@@ -9,6 +9,7 @@
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
 use crate::identify::data::{Condition, Point};
+use crate::identify::display::{distinct, fixed};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
@@ -531,9 +532,9 @@ impl SwarmReport {
         ));
         for c in &f.curves {
             out.push(format!(
-                "    Fz {:>7.0} N, camber {:>5.2}°, pressure {}: {:>4} points, σ {:.3} %, RMS {:.1} N",
+                "    Fz {:>7.0} N, camber {:>5}°, pressure {}: {:>4} points, σ {:.3} %, RMS {:.1} N",
                 c.fz,
-                c.camber.to_degrees(),
+                fixed(c.camber.to_degrees(), 2),
                 c.pressure
                     .map_or("—".into(), |p| format!("{:.0} kPa", p / 1000.0)),
                 c.points,
@@ -543,10 +544,14 @@ impl SwarmReport {
         }
         out.extend(parameter_warnings(f));
         if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
-            out.push(format!(
-                "  writing the two-stage result (σ {:.3} % < direct {:.3} %)",
-                t.polished_overall_sigma_percent, f.sigma_percent
-            ));
+            // With the digits that tell the two apart: it was chosen for
+            // being lower, which three decimals can hide.
+            let (c, d, differ) = distinct(t.polished_overall_sigma_percent, f.sigma_percent, 3, 6);
+            out.push(if differ {
+                format!("  writing the two-stage result (σ {c} % < direct {d} %)")
+            } else {
+                format!("  writing the two-stage result (σ {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
+            });
         }
         if let Some(mz) = &self.aligning {
             out.push(format!(

@@ -44,6 +44,7 @@
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
 mod glitches;
+mod held;
 mod inject;
 mod pieces;
 mod report;
@@ -52,13 +53,14 @@ mod test_signals;
 
 pub(crate) use glitches::median;
 pub use glitches::treat_glitches;
+pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{
     clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked, slice,
 };
 pub use report::{
-    CleaningReport, Glitch, GlitchCounts, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan,
-    Treatment,
+    CleaningReport, Glitch, GlitchCounts, GlitchKind, HeldChannel, Piece, RunChannel, SlowKind,
+    SlowSpan, Treatment,
 };
 
 /// Shortest run a diagnosis accepts, s: a step response needs its

@@ -5,6 +5,7 @@
 //! s, speeds in m/s.
 
 use super::glitches::{median, repair, treat_glitches};
+use super::held::treat_held;
 use super::report::{
     CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
 };
@@ -90,6 +91,7 @@ pub fn clean_run(
     let name = run.path.display().to_string();
     for (lo, hi) in parts {
         let mut part = slice(&run, lo, hi, "");
+        treat_held(&mut part, report);
         treat_glitches(&mut part, settings.min_speed, report);
         let n = part.t.len();
         let mut i = 0;

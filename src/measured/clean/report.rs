@@ -177,6 +177,22 @@ pub struct SlowSpan {
     pub kind: SlowKind,
 }
 
+/// A channel logged slower than its run and held between updates,
+/// interpolated between them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HeldChannel {
+    /// The run.
+    pub run: String,
+    /// The channel.
+    pub channel: RunChannel,
+    /// Samples per update (the median hold).
+    pub every: usize,
+    /// Updates per second, Hz.
+    pub update_rate: f64,
+    /// Held samples interpolated.
+    pub samples: usize,
+}
+
 /// A piece of a run (kept or dropped).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Piece {
@@ -222,6 +238,10 @@ pub struct CleaningReport {
     pub samples_masked: usize,
     /// Input samples repaired by interpolation.
     pub samples_repaired: usize,
+    /// Held samples of slower channels interpolated between their updates.
+    pub samples_interpolated: usize,
+    /// Channels logged slower than their run and held.
+    pub held: Vec<HeldChannel>,
     /// Glitches per kind.
     pub counts: GlitchCounts,
     /// Every glitch, in run and time order.
@@ -274,6 +294,16 @@ impl CleaningReport {
             self.samples_repaired,
             self.samples_masked,
         )];
+        for h in &self.held {
+            out.push(format!(
+                "held: {} in {} updates every {} samples ({:.1} Hz): {} held samples interpolated between its updates",
+                h.channel.name(),
+                h.run,
+                h.every,
+                h.update_rate,
+                h.samples
+            ));
+        }
         for g in self.glitches.iter().take(first) {
             out.push(format!(
                 "{} at {:.3} s in {}: {} {} ({} sample(s), {})",

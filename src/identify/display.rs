@@ -1,0 +1,86 @@
+//! Numbers as identification prints them: no negative zero (a camber
+//! level a hair below 0 is "0.00°"), and two values compared in a
+//! sentence printed with the digits that tell them apart.
+
+/// `v` with `decimals` decimals; a value that rounds to zero prints as an
+/// unsigned zero (a camber of −1e-5 rad is "0.00°", not "-0.00°").
+pub fn fixed(v: f64, decimals: usize) -> String {
+    unsigned_zero(format!("{v:.decimals$}"))
+}
+
+/// `v` with `digits` significant digits in fixed notation (no negative
+/// zero): slopes spanning 1e1–1e6 read naturally.
+pub fn significant(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return fixed(v, 0);
+    }
+    let magnitude = v.abs().log10().floor() as i64;
+    let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
+    fixed(v, decimals)
+}
+
+/// `a` and `b` with at least `decimals` decimals and as many more, up to
+/// `max_decimals`, as make the printed values differ, so a sentence saying
+/// one is below the other does not print two equal numbers. The flag is
+/// false when they agree to `max_decimals`.
+pub fn distinct(a: f64, b: f64, decimals: usize, max_decimals: usize) -> (String, String, bool) {
+    let mut d = decimals;
+    loop {
+        let (sa, sb) = (fixed(a, d), fixed(b, d));
+        if sa != sb {
+            return (sa, sb, true);
+        }
+        if d >= max_decimals {
+            return (sa, sb, false);
+        }
+        d += 1;
+    }
+}
+
+fn unsigned_zero(s: String) -> String {
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zero_prints_unsigned() {
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.0001, 2), "0.00");
+        assert_eq!(fixed(-0.006, 2), "-0.01");
+        assert_eq!(fixed(1.5, 1), "1.5");
+        assert_eq!(fixed(-0.4, 0), "0");
+        assert_eq!(format!("{:>5}", fixed(-1e-9, 2)), " 0.00");
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(significant(-69_813.4, 4), "-69813");
+        assert_eq!(significant(1234.56, 4), "1235");
+        assert_eq!(significant(12.3456, 4), "12.35");
+        assert_eq!(significant(-0.012345, 3), "-0.0123");
+        assert_eq!(significant(0.0, 4), "0");
+    }
+
+    #[test]
+    fn distinct_adds_digits_until_the_values_differ() {
+        assert_eq!(
+            distinct(2.51162, 2.51204, 3, 6),
+            ("2.5116".into(), "2.5120".into(), true)
+        );
+        assert_eq!(
+            distinct(1.0, 2.0, 3, 6),
+            ("1.000".into(), "2.000".into(), true)
+        );
+        let (a, b, differ) = distinct(2.5, 2.5 + 1e-9, 3, 6);
+        assert_eq!(
+            (a.as_str(), b.as_str(), differ),
+            ("2.500000", "2.500000", false)
+        );
+    }
+}

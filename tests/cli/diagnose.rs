@@ -336,26 +336,13 @@ fn a_runs_folder_reads_csv_in_any_case_and_names_what_it_leaves() {
         run_csv(100.0, 6.0, true, None),
     )
     .unwrap();
-    fs::write(
-        dir.path().join("tyre.toml"),
-        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
-    )
-    .unwrap();
-    let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        dir.path().to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
+    linear_tyre(dir.path());
+    let (stdout, d) = diagnose(dir.path());
     assert!(stdout.contains(": 2 runs, 1 candidate effect,"), "{stdout}");
     assert!(
         stdout.contains("2 entries not read (old/, readme.txt)"),
         "{stdout}"
     );
-    let d = read_json(&out.join("diagnosis.json"));
     let runs = d["runs"].as_array().unwrap();
     assert!(runs[0].as_str().unwrap().ends_with("B.CSV"), "{runs:?}");
 }
@@ -374,25 +361,12 @@ fn diagnose_handles_mixed_rates_gaps_and_missing_channels() {
             ("c_gap.csv", run_csv(100.0, 8.0, true, Some(1.5))),
         ],
     );
-    fs::write(
-        dir.path().join("tyre.toml"),
-        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
-    )
-    .unwrap();
-    let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        dir.path().to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
+    linear_tyre(dir.path());
+    let (stdout, d) = diagnose(dir.path());
     assert!(
         stdout.contains("c_gap.csv: time gaps at 2.000–3.510 s"),
         "{stdout}"
     );
-    let d = read_json(&out.join("diagnosis.json"));
     // The gap split c into two pieces: four runs replayed, from three files.
     assert_eq!(d["runs"].as_array().unwrap().len(), 4);
     assert!(
@@ -682,24 +656,12 @@ fn a_steer_in_another_unit_or_sign_is_caught_against_the_yaw_rate() {
     let folder = |with: &str| {
         let text = run_csv(100.0, 6.0, true, None).replace(",0.02,", &format!(",{with},"));
         let dir = campaign_folder(&v, &[("a.csv", text.clone()), ("b.csv", text)]);
-        fs::write(
-            dir.path().join("tyre.toml"),
-            "model = \"linear\"\ncornering_stiffness = 60000.0\n",
-        )
-        .unwrap();
+        linear_tyre(dir.path());
         dir
     };
     // In degrees: diagnosed, with a note that names the likely slip.
     let dir = folder("1.1459");
-    let out = dir.path().join("out");
-    let o = run(&[
-        "diagnose",
-        dir.path().to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
+    let (stdout, _) = diagnose(dir.path());
     assert!(
         stdout.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
             && stdout.contains("is `steer` in degrees"),

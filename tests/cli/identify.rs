@@ -212,14 +212,7 @@ fn identify_fits_longitudinal_only_rig_data() {
     }
     let dir = scratch(&[("rig.csv", &s)]);
     let out = dir.path().join("fx.toml");
-    let o = run(&[
-        "identify",
-        dir.path().join("rig.csv").to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = identify_to(&dir.path().join("rig.csv"), "pac89", &out);
     assert!(o.status.success(), "{}", stderr(&o));
     let report: serde_json::Value = read_json(&dir.path().join("fx.report.json"));
     assert_eq!(report["channel"], "longitudinal-force");
@@ -267,15 +260,7 @@ fn rig_data_in_another_sign_convention_is_refused_naming_the_column() {
     ]);
     let identify = |file: &str| {
         let out = dir.path().join(format!("{file}.toml"));
-        let o = run(&[
-            "identify",
-            dir.path().join(file).to_str().unwrap(),
-            "--model",
-            "pac89",
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        (o, out)
+        (identify_to(&dir.path().join(file), "pac89", &out), out)
     };
     // FORMATS.md's signs: fitted.
     let (o, _) = identify("iso.csv");
@@ -283,9 +268,8 @@ fn rig_data_in_another_sign_convention_is_refused_naming_the_column() {
     // Fy negated (SAE-style): fitted to σ ≈ 1 % before, with a negative
     // cornering stiffness; now refused before anything is fitted.
     let (o, out) = identify("sae_fy.csv");
-    assert!(!o.status.success());
-    assert!(!out.exists() && !out.with_extension("report.json").exists());
-    let e = stderr(&o);
+    let e = refused(&o, &out);
+    assert!(!out.with_extension("report.json").exists());
     for says in [
         "sae_fy.csv: column `fy` (column 3 of the header) has the wrong sign",
         "|alpha| ≤ 0.035 rad",
@@ -302,9 +286,7 @@ fn rig_data_in_another_sign_convention_is_refused_naming_the_column() {
     assert!((-2e5..-5e4).contains(&slope), "{slope}: {e}");
     // Mz negated alone: refused naming `mz`, with both slopes.
     let (o, out) = identify("sae_mz.csv");
-    assert!(!o.status.success());
-    assert!(!out.exists());
-    let e = stderr(&o);
+    let e = refused(&o, &out);
     for says in [
         "sae_mz.csv: column `mz` (column 4 of the header) has the wrong sign",
         "while that of `fy` is ",
@@ -330,17 +312,10 @@ fn longitudinal_rig_data_with_fx_reversed_is_refused() {
     }
     let dir = scratch(&[("rig.csv", &s)]);
     let out = dir.path().join("fx.toml");
-    let o = run(&[
-        "identify",
-        dir.path().join("rig.csv").to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    assert!(!out.exists());
-    let e = stderr(&o);
+    let e = refused(
+        &identify_to(&dir.path().join("rig.csv"), "pac89", &out),
+        &out,
+    );
     for says in [
         "rig.csv: column `fx` (column 3 of the header) has the wrong sign",
         "|kappa| ≤ 0.035",

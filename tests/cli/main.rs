@@ -74,6 +74,38 @@ pub(crate) fn fails_cleanly(command: &str, input: &Path, dir: &Path) -> String {
     stderr(&o)
 }
 
+/// Runs `identify rig --model model --out out`.
+pub(crate) fn identify_to(rig: &Path, model: &str, out: &Path) -> Output {
+    run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        model,
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
+/// The stderr of a run `o` that must have failed without writing `out`.
+pub(crate) fn refused(o: &Output, out: &Path) -> String {
+    assert!(!o.status.success(), "expected failure");
+    assert!(
+        !out.exists(),
+        "a failed run must not leave {}",
+        out.display()
+    );
+    stderr(o)
+}
+
+/// Writes a linear tyre file, `tyre.toml`, into campaign folder `dir`.
+pub(crate) fn linear_tyre(dir: &Path) {
+    fs::write(
+        dir.join("tyre.toml"),
+        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+    )
+    .unwrap();
+}
+
 /// Runs `diagnose` on a campaign folder into its `out` sub-folder; returns
 /// stdout and diagnosis.json.
 pub(crate) fn diagnose(dir: &Path) -> (String, serde_json::Value) {

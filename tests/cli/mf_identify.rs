@@ -395,17 +395,10 @@ fn mf61_refuses_combined_slip_rig_data_with_fx_reversed() {
     }
     fs::write(dir.path().join("reversed.csv"), s).unwrap();
     let out = dir.path().join("tyre.tir");
-    let o = run(&[
-        "identify",
-        dir.path().join("reversed.csv").to_str().unwrap(),
-        "--model",
-        "mf61",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    assert!(!out.exists());
-    let e = stderr(&o);
+    let e = refused(
+        &identify_to(&dir.path().join("reversed.csv"), "mf61", &out),
+        &out,
+    );
     for says in [
         "reversed.csv: column `fx` (column 6 of the header) has the wrong sign",
         "|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad",

@@ -289,24 +289,33 @@ fn real_hoosier_rig_data_groups_as_before() {
     assert!((sigma - 2.511).abs() < 0.05, "σ {sigma}");
 }
 
-#[test]
-fn a_campaign_whose_rig_file_has_the_papers_layout_is_diagnosed() {
-    let dir = tempfile::tempdir().unwrap();
+/// A synthetic campaign (relaxation length, seed 2) in `dir` whose rig
+/// file's data rows are rewritten by `row` (row index, text; None drops it).
+fn campaign_with_rig_rows(dir: &Path, row: impl Fn(usize, &str) -> Option<String>) -> PathBuf {
     let args = ["--effects", "relaxation_length", "--seed", "2"];
-    let campaign = synth_campaign(dir.path(), "c", &args);
-    // Keep every sixth rig row: one sample per 0.3° of slip, as the papers
-    // tabulate them.
+    let campaign = synth_campaign(dir, "c", &args);
     let rig = campaign.join("tyre_rig.csv");
     let text = fs::read_to_string(&rig).unwrap();
     let mut lines = text.lines();
-    let mut thinned = format!("{}\n", lines.next().unwrap());
+    let header = lines.next().unwrap();
+    assert_eq!(header, "fz,alpha,fy");
+    let mut out = format!("{header}\n");
     for (i, l) in lines.enumerate() {
-        if i % 6 == 0 {
-            thinned += l;
-            thinned.push('\n');
+        if let Some(r) = row(i, l) {
+            out += &r;
+            out.push('\n');
         }
     }
-    fs::write(&rig, thinned).unwrap();
+    fs::write(&rig, out).unwrap();
+    campaign
+}
+
+#[test]
+fn a_campaign_whose_rig_file_has_the_papers_layout_is_diagnosed() {
+    let dir = tempfile::tempdir().unwrap();
+    // Keep every sixth rig row: one sample per 0.3° of slip, as the papers
+    // tabulate them.
+    let campaign = campaign_with_rig_rows(dir.path(), |i, l| (i % 6 == 0).then(|| l.to_string()));
     let (_, d) = diagnose_campaign(&campaign);
     assert_eq!(
         verdict_of(&d),
@@ -407,19 +416,10 @@ fn a_camber_logged_a_hair_below_zero_prints_as_zero() {
 #[test]
 fn a_campaign_whose_rig_file_has_fy_reversed_is_refused() {
     let dir = tempfile::tempdir().unwrap();
-    let args = ["--effects", "relaxation_length", "--seed", "2"];
-    let campaign = synth_campaign(dir.path(), "c", &args);
-    let rig = campaign.join("tyre_rig.csv");
-    let text = fs::read_to_string(&rig).unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap();
-    assert_eq!(header, "fz,alpha,fy");
-    let mut flipped = format!("{header}\n");
-    for l in lines {
+    let campaign = campaign_with_rig_rows(dir.path(), |_, l| {
         let cells: Vec<f64> = l.split(',').map(|v| v.parse().unwrap()).collect();
-        flipped += &format!("{},{},{}\n", cells[0], cells[1], -cells[2]);
-    }
-    fs::write(&rig, flipped).unwrap();
+        Some(format!("{},{},{}", cells[0], cells[1], -cells[2]))
+    });
     let out = campaign.with_extension("out");
     let o = run(&[
         "diagnose",

@@ -5,18 +5,9 @@
 //! in time, responses (yaw rate, ay, beta) masked. Units: the channel's SI
 //! unit; times in s.
 
-use super::report::{CleaningReport, Glitch, GlitchKind, RunChannel, Treatment};
-use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SPIKE_MADS, STUCK_CONTEXT};
+use super::report::{CleaningReport, Glitch, GlitchKind, Treatment};
+use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SEARCHED, SPIKE_MADS, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
-
-/// Channels searched for glitches.
-const SEARCHED: [RunChannel; 5] = [
-    RunChannel::Steer,
-    RunChannel::Speed,
-    RunChannel::YawRate,
-    RunChannel::Ay,
-    RunChannel::Beta,
-];
 
 /// The middle value (upper median) of `v`, sorted in place; 0 when empty.
 pub(crate) fn median(v: &mut [f64]) -> f64 {
@@ -328,6 +319,7 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
 
 #[cfg(test)]
 mod tests {
+    use super::super::report::RunChannel;
     use super::super::test_signals::{gauss_noise, no_slow};
     use super::super::{clean_runs, CleanSettings};
     use super::*;

@@ -11,17 +11,9 @@
 //! update, stays. Every such channel and the samples changed are reported.
 //! Units: the channel's SI unit; times in s.
 
-use super::report::{CleaningReport, HeldChannel, RunChannel};
+use super::report::{CleaningReport, HeldChannel};
+use super::SEARCHED;
 use crate::measured::MeasuredRun;
-
-/// Channels searched for holds (the glitch search's).
-const SEARCHED: [RunChannel; 5] = [
-    RunChannel::Steer,
-    RunChannel::Speed,
-    RunChannel::YawRate,
-    RunChannel::Ay,
-    RunChannel::Beta,
-];
 
 /// Fewest complete holds to call a channel held.
 const MIN_HOLDS: usize = 20;

@@ -72,6 +72,16 @@ pub const MIN_RUN_SAMPLES: usize = 20;
 
 /// Default lowest speed of a replayed sample, m/s.
 pub const DEFAULT_MIN_SPEED: f64 = 5.0;
+/// The channels searched for holds and glitches: the replay's inputs and
+/// its responses.
+const SEARCHED: [RunChannel; 5] = [
+    RunChannel::Steer,
+    RunChannel::Speed,
+    RunChannel::YawRate,
+    RunChannel::Ay,
+    RunChannel::Beta,
+];
+
 /// Below this speed a slow span is a standstill rather than a crawl, m/s.
 pub const STANDSTILL_SPEED: f64 = 0.5;
 /// Spike and zero-read threshold in robust deviations of the differences.

@@ -456,8 +456,11 @@ fn read_runs(
 /// Steered samples needed to judge the steer against the yaw rate.
 const STEER_CHECK_SAMPLES: usize = 50;
 
-/// The steer judged against the yaw rate it gives: over the samples at
-/// speed with a steer of at least 0.005 rad, the median of
+/// The steer judged against the yaw rate it gives, where the run steers
+/// (the 95th percentile of |δ| at speed at least 0.01 rad: a straight run
+/// whose steer sensor sits a few milliradians off shows no gain): over the
+/// samples at speed steered by at least 0.005 rad and 30 % of that
+/// percentile, the median of
 /// `q = r·l/(u·δ)`, the yaw rate over a neutral car's, is about
 /// `1/(1 + K·u²)` (0.2–1 for an understeering car, somewhat above 1 for
 /// an oversteering one). A negative median is a sign convention other
@@ -469,8 +472,21 @@ fn steer_against_yaw(
     wheelbase: f64,
     min_speed: f64,
 ) -> Result<Option<String>, InputError> {
-    let mut q: Vec<f64> = (0..run.t.len())
-        .filter(|&i| run.speed[i] >= min_speed.max(5.0) && run.steer[i].abs() >= 0.005)
+    let at_speed: Vec<usize> = (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
+        .collect();
+    let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let Some(&p95) = size.get(((size.len() as f64 - 1.0) * 0.95).round().max(0.0) as usize) else {
+        return Ok(None);
+    };
+    if p95 < 0.01 {
+        return Ok(None);
+    }
+    let steered = (0.3 * p95).max(0.005);
+    let mut q: Vec<f64> = at_speed
+        .into_iter()
+        .filter(|&i| run.steer[i].abs() >= steered)
         .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
         .filter(|q| q.is_finite())
         .collect();
@@ -561,6 +577,34 @@ mod tests {
             masked: Vec::new(),
             t,
         }
+    }
+
+    #[test]
+    fn the_steer_is_judged_against_the_yaw_rate_only_where_the_run_steers() {
+        // 10 s at 20 m/s and 100 Hz, a neutral car: r = u·δ/l.
+        let l = 2.78;
+        let with = |steer: &dyn Fn(f64) -> f64, gain: f64| {
+            let t: Vec<f64> = (0..1000).map(|i| i as f64 * 0.01).collect();
+            let mut r = run(t.clone());
+            r.steer = t.iter().map(|&s| steer(s)).collect();
+            r.yaw_rate = t
+                .iter()
+                .enumerate()
+                .map(|(i, &s)| gain * 20.0 * steer(s) / l + 1e-3 * ((i * 7919 % 13) as f64 - 6.0))
+                .collect();
+            steer_against_yaw(&r, l, 5.0)
+        };
+        let sine = |s: f64| 0.03 * (s * 1.3).sin();
+        assert!(matches!(with(&sine, 0.8), Ok(None)));
+        // Logged in degrees: the yaw rate is 57/0.8 times too small for it.
+        let degrees = |s: f64| sine(s).to_degrees();
+        let note = with(&degrees, 0.8 / 57.29578).unwrap().expect("a note");
+        assert!(note.contains("72× smaller"), "{note}");
+        // The other sign convention: refused.
+        assert!(with(&sine, -0.8).is_err());
+        // A straight run whose steer sensor sits 6 mrad off shows no gain:
+        // not judged, whatever the yaw rate's noise.
+        assert!(matches!(with(&|_| 0.006, 0.0), Ok(None)));
     }
 
     #[test]

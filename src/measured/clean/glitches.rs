@@ -42,7 +42,8 @@ const QUANTISED_SHARE: f64 = 0.01;
 /// gated yaw rate), and the zero differences of such a hold would shrink
 /// the spread of the driving's and make its noise "spikes".
 pub(super) fn scale(x: &[f64], slow: &[bool]) -> Scale {
-    let moving = |i: usize| !slow[i] || slow.iter().all(|&s| s);
+    let all_slow = slow.iter().all(|&s| s);
+    let moving = |i: usize| !slow[i] || all_slow;
     let mut d: Vec<f64> = (1..x.len())
         .filter(|&i| moving(i) && moving(i - 1))
         .map(|i| x[i] - x[i - 1])

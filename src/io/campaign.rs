@@ -22,7 +22,7 @@
 //! different sample rates between runs are fine (each run is compared at its
 //! own sample times). Units: SI, rad.
 
-use super::clean::{clean_run, slice, CleanSettings, CleaningReport, GlitchKind};
+use super::clean::{clean_run, slice, CleanSettings, CleaningReport, GlitchKind, Piece};
 use super::rig::read_rig;
 use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
@@ -443,9 +443,18 @@ fn read_runs(
                 k => format!("{name}: {gaps}split into {k} pieces replayed separately"),
             });
         }
+        // Cut into segments, the report lists the segments replayed (with
+        // their times), not the pieces they were cut from.
+        if segment.is_some() {
+            cleaning.pieces.truncate(kept);
+        }
         for piece in pieces {
             match segment {
-                Some(seg) => runs.extend(segments(piece, seg)),
+                Some(seg) => {
+                    let cut = segments(piece, seg);
+                    cleaning.pieces.extend(cut.iter().filter_map(Piece::kept));
+                    runs.extend(cut);
+                }
                 None => runs.push(piece),
             }
         }

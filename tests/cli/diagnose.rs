@@ -497,6 +497,30 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     assert!(o.status.success(), "{}", stderr(&o));
     let d = read_json(&out.join("diagnosis.json"));
     assert_eq!(d["runs"].as_array().unwrap().len(), 12);
+    // The report lists the 40 s segments replayed, with their times, not
+    // the one piece they were cut from.
+    let pieces = d["cleaning"]["pieces"].as_array().unwrap();
+    assert_eq!(pieces.len(), 12, "{pieces:?}");
+    for (k, p) in pieces.iter().enumerate() {
+        assert!(
+            p["name"]
+                .as_str()
+                .unwrap()
+                .ends_with(&format!("[{}]", k + 1)),
+            "{p}"
+        );
+    }
+    let t = |p: &serde_json::Value, key: &str| p[key].as_f64().unwrap();
+    assert!(
+        (t(&pieces[1], "t_start") - 40.0).abs() < 0.05,
+        "{}",
+        pieces[1]
+    );
+    assert!(
+        (t(&pieces[1], "t_end") - 80.0).abs() < 0.05,
+        "{}",
+        pieces[1]
+    );
     assert!(d["base"]["tyres"]
         .as_str()
         .unwrap()

@@ -67,13 +67,12 @@ fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
 }
 
 fn piece_of(run: &MeasuredRun, reason: &str) -> Piece {
-    Piece {
-        name: run.path.display().to_string(),
-        t_start: run.t[0],
-        t_end: run.t[run.t.len() - 1],
-        samples: run.t.len(),
-        reason: reason.into(),
-    }
+    Piece::kept(run)
+        .map(|p| Piece {
+            reason: reason.into(),
+            ..p
+        })
+        .expect("a piece has samples")
 }
 
 /// Cleans one run as read: splits it at time gaps, treats its glitches,

@@ -208,6 +208,19 @@ pub struct Piece {
     pub reason: String,
 }
 
+impl Piece {
+    /// The entry of a replayed piece `run` (none without samples).
+    pub fn kept(run: &MeasuredRun) -> Option<Piece> {
+        Some(Piece {
+            name: run.path.display().to_string(),
+            t_start: *run.t.first()?,
+            t_end: *run.t.last()?,
+            samples: run.t.len(),
+            reason: String::new(),
+        })
+    }
+}
+
 /// Glitches per kind.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct GlitchCounts {

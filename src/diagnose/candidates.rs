@@ -7,7 +7,7 @@
 
 use super::campaign::{BaseTyres, Campaign};
 use super::crossval::training_rows;
-use super::effects::{Bound, EffectKind, EffectSet, Parameter};
+use super::effects::{on_bound, Bound, EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
@@ -275,8 +275,7 @@ pub(super) fn base_models(
             // As for the effects' parameters: one on its search bound has a
             // standard error that says nothing of where the data would take it.
             let shown = |i: usize, name: &str, digits: usize| {
-                let (lo, hi) = AXLE_BOUNDS[i];
-                if p[i] <= lo || p[i] >= hi {
+                if on_bound(p[i], AXLE_BOUNDS[i]).is_some() {
                     format!("{name} {:.digits$} (at its search bound)", p[i])
                 } else {
                     format!("{name} {:.digits$} ± {:.1e}", p[i], full.std_errors[i])

@@ -124,15 +124,21 @@ impl Parameter {
     /// The bound `value` lies on (within 1e-9 of the span: the bounded fits
     /// stop exactly on a bound they press against), if any.
     pub fn bound_at(&self, value: f64) -> Option<Bound> {
-        let (lo, hi) = self.bounds;
-        let tol = 1e-9 * (hi - lo);
-        if (value - lo).abs() <= tol {
-            Some(self.limits.0)
-        } else if (hi - value).abs() <= tol {
-            Some(self.limits.1)
-        } else {
-            None
-        }
+        on_bound(value, self.bounds).map(|upper| if upper { self.limits.1 } else { self.limits.0 })
+    }
+}
+
+/// Whether `value` lies on the lower (`Some(false)`) or upper (`Some(true)`)
+/// of `bounds`, within 1e-9 of their span (the bounded fits stop exactly
+/// on a bound they press against), or on neither.
+pub(crate) fn on_bound(value: f64, (lo, hi): (f64, f64)) -> Option<bool> {
+    let tol = 1e-9 * (hi - lo);
+    if value - lo <= tol {
+        Some(false)
+    } else if hi - value <= tol {
+        Some(true)
+    } else {
+        None
     }
 }
 

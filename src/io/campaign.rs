@@ -22,7 +22,9 @@
 //! different sample rates between runs are fine (each run is compared at its
 //! own sample times). Units: SI, rad.
 
-use super::clean::{clean_run, slice, CleanSettings, CleaningReport, GlitchKind, Piece};
+use super::clean::{
+    clean_run, median, quantile, slice, CleanSettings, CleaningReport, GlitchKind, Piece,
+};
 use super::rig::read_rig;
 use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
@@ -486,7 +488,7 @@ fn steer_against_yaw(
         .collect();
     let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
     size.sort_by(f64::total_cmp);
-    let Some(&p95) = size.get(((size.len() as f64 - 1.0) * 0.95).round().max(0.0) as usize) else {
+    let Some(p95) = quantile(&size, 0.95) else {
         return Ok(None);
     };
     if p95 < 0.01 {
@@ -503,7 +505,7 @@ fn steer_against_yaw(
         return Ok(None);
     }
     let n = q.len();
-    let m = crate::measured::clean::median(&mut q);
+    let m = median(&mut q);
     let name = run.path.display();
     if m < -0.1 {
         return Err(file_error(

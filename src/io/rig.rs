@@ -193,13 +193,14 @@ fn check_signs(
     longitudinal: Option<(&[f64], &[f64])>,
 ) -> Result<(), InputError> {
     let refuse = |column: &str, found: String, requires: &str| {
-        InputError::File {
-        path: path.to_path_buf(),
-        message: format!(
+        let message = format!(
             "column `{column}` (column {} of the header) has the wrong sign: {found}; FORMATS.md (ISO 8855) requires {requires}. The file is likely in the SAE or another sign convention: negate the `{column}` column",
             c.column(column)
-        ),
-    }
+        );
+        InputError::File {
+            path: path.to_path_buf(),
+            message,
+        }
     };
     // Each channel is judged at small values of the other slip, so combined
     // slip (a braking tyre's reduced Fy) does not blur the slope.

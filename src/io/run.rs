@@ -3,6 +3,7 @@
 
 use super::columns::read_columns;
 use crate::error::InputError;
+use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
 use std::path::Path;
 
@@ -40,7 +41,7 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     let steer = c.take("steer");
     let mut size: Vec<f64> = steer.iter().map(|d| d.abs()).collect();
     size.sort_by(f64::total_cmp);
-    let p99 = size[((size.len() - 1) as f64 * 0.99).round() as usize];
+    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
     if p99 > std::f64::consts::FRAC_PI_2 {
         let i = steer
             .iter()

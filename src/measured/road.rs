@@ -22,6 +22,7 @@
 //! `a_y` offset of 0.1 m/s² reads as 0.6° of bank). Masked samples are
 //! left out. Units: rad.
 
+use super::clean::quantile;
 use super::MeasuredRun;
 use crate::vehicle::G;
 use serde::Serialize;
@@ -217,7 +218,7 @@ fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AnglePr
     }
     let mut sorted = kept.clone();
     sorted.sort_by(f64::total_cmp);
-    let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
+    let at = |q: f64| quantile(&sorted, q).expect("samples kept");
     Some(AngleProfile {
         source,
         mean: kept.iter().sum::<f64>() / kept.len() as f64,

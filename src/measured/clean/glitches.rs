@@ -18,6 +18,12 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
+/// The nearest-rank `p`-quantile of `sorted` (ascending); None when empty.
+pub(crate) fn quantile(sorted: &[f64], p: f64) -> Option<f64> {
+    let last = sorted.len().checked_sub(1)?;
+    Some(sorted[(last as f64 * p).round() as usize])
+}
+
 /// Robust statistics of a channel: the detection threshold T.
 pub(super) struct Scale {
     pub(super) threshold: f64,
@@ -56,7 +62,7 @@ pub(super) fn scale(x: &[f64], slow: &[bool]) -> Scale {
     let sigma = 1.4826 * median(&mut dev);
     let mut s: Vec<f64> = (0..x.len()).filter(|&i| moving(i)).map(|i| x[i]).collect();
     s.sort_by(f64::total_cmp);
-    let q = |p: f64| s[((s.len() - 1) as f64 * p).round() as usize];
+    let q = |p: f64| quantile(&s, p).unwrap_or(0.0);
     let range = q(0.99) - q(0.01);
     let threshold = (SPIKE_MADS * sigma).max(RANGE_FLOOR * range).max(1e-12);
     // Repeats other than the zeros themselves.

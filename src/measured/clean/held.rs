@@ -11,6 +11,7 @@
 //! update, stays. Every such channel and the samples changed are reported.
 //! Units: the channel's SI unit; times in s.
 
+use super::glitches::repair;
 use super::report::{CleaningReport, HeldChannel};
 use super::SEARCHED;
 use crate::measured::MeasuredRun;
@@ -39,19 +40,15 @@ fn holds(x: &[f64]) -> Option<(Vec<usize>, usize)> {
         .then_some((starts, every))
 }
 
-/// Interpolates `x` (sampled at `t`) between the hold starts `starts`;
-/// returns the samples changed.
+/// Interpolates `x` (sampled at `t`) between the hold starts `starts`, as
+/// a glitch is repaired ([`repair`]); returns the samples changed.
 fn interpolate(t: &[f64], x: &mut [f64], starts: &[usize]) -> usize {
-    let mut changed = 0;
+    let mut held = vec![false; x.len()];
     for w in starts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let (x0, x1) = (x[a], x[b]);
-        for i in a + 1..b {
-            x[i] = x0 + (x1 - x0) * (t[i] - t[a]) / (t[b] - t[a]);
-            changed += 1;
-        }
+        held[w[0] + 1..w[1]].iter_mut().for_each(|h| *h = true);
     }
-    changed
+    repair(t, x, &held);
+    held.iter().filter(|&&h| h).count()
 }
 
 /// Finds the held channels of `run`, interpolates them between their

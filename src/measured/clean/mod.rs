@@ -51,8 +51,8 @@ mod report;
 #[cfg(test)]
 mod test_signals;
 
-pub(crate) use glitches::median;
 pub use glitches::treat_glitches;
+pub(crate) use glitches::{median, quantile};
 pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{

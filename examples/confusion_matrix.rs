@@ -5,13 +5,17 @@
 //! verdict names and how far the held-out gap shrinks.
 //!
 //! `cargo run --release --example confusion_matrix [seeds] [effect ... |
-//! none] [--truth four-wheel] [--programme oval|road-course] [--glitches]`
+//! none] [--truth four-wheel] [--programme oval|road-course|slow-oval]
+//! [--glitches]`
 //!
 //! With `--programme oval` or `road-course` the runs are the logged racing
 //! programmes of [`handling::diagnose::synth::Programme`] (25 Hz, `ax` and
 //! `bank` channels, the oval's standstill left out by the cleaning): one
 //! row for no effect and one for each effect of the library, including the
-//! longitudinal and bank-profile ones.
+//! longitudinal and bank-profile ones. With `--programme slow-oval` (the
+//! Putnam-like light racing car at 5–21 m/s on a 20° banked oval, no rig
+//! data, sideslip and no ay, 20 s pieces) the rows are no effect,
+//! `bank_profile` and `steer_path`.
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
 //! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
@@ -58,6 +62,9 @@ fn main() -> anyhow::Result<()> {
     let mut truths: Vec<Vec<EffectKind>> = vec![Vec::new()];
     if args.iter().skip(1).any(|a| a == "none") {
         // `none`: the no-effect row alone.
+    } else if chosen.is_empty() && programme == Programme::SlowOval {
+        truths.push(vec![EffectKind::BankProfile]);
+        truths.push(vec![EffectKind::SteerPath]);
     } else if chosen.is_empty() && (model == Truth::FourWheel || programme.logged()) {
         truths.extend(model.effects(programme).into_iter().map(|e| vec![e]));
     } else if chosen.is_empty() {

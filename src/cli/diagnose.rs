@@ -78,7 +78,10 @@ pub struct SynthArgs {
     /// What the driver does: `handling` (steps, a ramp and a sweep at
     /// constant speed, 100 Hz), `oval` (a 20° banked oval with braking,
     /// throttle and a standstill on the banking, 25 Hz, ax and bank
-    /// channels) or `road-course` (trail braking, cambered corners, 25 Hz).
+    /// channels), `road-course` (trail braking, cambered corners, 25 Hz)
+    /// or `slow-oval` (a light racing car at 5–21 m/s on a 20° banked
+    /// oval with a standstill, 25 Hz, ax, beta and bank, no ay, no rig
+    /// data, 20 s pieces).
     #[arg(long, default_value = "handling", value_parser = Programme::from_str)]
     programme: Programme,
     /// Campaign folder to create.

@@ -5,17 +5,18 @@
 //! and roll dynamics becomes a model. Units: SI, rad; the roll frequency in
 //! Hz.
 
+use super::base::{identify_axles, AxleIdentification};
 use super::campaign::{BaseTyres, Campaign};
 use super::crossval::training_rows;
-use super::effects::{on_bound, Bound, EffectKind, EffectSet, Parameter};
+use super::effects::{Bound, EffectKind, EffectSet, Parameter};
 use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
 use crate::error::Error;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
-use crate::optim::pso::Pso;
-use crate::tyre::{MagicSimple, Tyre};
+use crate::optim::stats::covariance;
+use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use rayon::prelude::*;
 
@@ -36,27 +37,11 @@ pub(super) struct Bases {
     /// refitted jointly with every candidate, since an effect changes what
     /// the tyres must have been.
     pub(super) axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
+    /// How the runs pin them, and whether they are a tyre at all.
+    pub(super) identification: Option<AxleIdentification>,
 }
 
-/// Bounds of the axle characteristics fitted from runs: B front, B rear
-/// (1/rad), peak friction D.
-pub(super) const AXLE_BOUNDS: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-
-/// The simplified Magic Formula axle tyres of parameters (B_f, B_r, D).
-pub(super) fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
-    (
-        Tyre::MagicSimple(MagicSimple {
-            b: p[0],
-            c: 1.3,
-            d: p[2],
-        }),
-        Tyre::MagicSimple(MagicSimple {
-            b: p[1],
-            c: 1.3,
-            d: p[2],
-        }),
-    )
-}
+pub(super) use super::base::{axle_tyres, AXLE_BOUNDS};
 
 /// The roll degree of freedom's dynamics, fitted with the roll effects: a
 /// campaign's `[roll]` is a guess (no roll channel is needed), and roll
@@ -190,7 +175,6 @@ pub(super) fn base_models(
     runs: &[Prepared],
     folds: &[Vec<usize>],
     scales_hint: [f64; 3],
-    pso: &Pso,
 ) -> Result<(Bases, String, Option<GroupingReport>), Error> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
@@ -204,6 +188,7 @@ pub(super) fn base_models(
         all: m,
         nominal_share,
         axle: None,
+        identification: None,
     };
     match &c.tyres {
         BaseTyres::Given(f, r) => Ok((
@@ -242,8 +227,8 @@ pub(super) fn base_models(
             ))
         }
         BaseTyres::FromRuns => {
-            // Axle characteristics from the runs: B per axle and a shared
-            // peak friction D of a simplified Magic Formula (C = 1.3).
+            // Axle characteristics from the runs (super::base): a grid of
+            // starts, the best basins polished, the best of them fitted.
             let build = |p: &[f64]| {
                 let (f, r) = axle_tyres(p);
                 make(f, r)
@@ -254,12 +239,8 @@ pub(super) fn base_models(
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             );
-            let full = fit(
-                &problem,
-                &[10.0, 10.0, 1.0],
-                Some((pso, 0)),
-                Polish::LevenbergMarquardt,
-            );
+            let (start, starts) = identify_axles(&problem);
+            let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
             let fold_params: Vec<Vec<f64>> = (0..folds.len())
                 .into_par_iter()
                 .map(|k| {
@@ -272,28 +253,21 @@ pub(super) fn base_models(
                 })
                 .collect();
             let p = &full.params;
-            // As for the effects' parameters: one on its search bound has a
-            // standard error that says nothing of where the data would take it.
-            let shown = |i: usize, name: &str, digits: usize| {
-                if on_bound(p[i], AXLE_BOUNDS[i]).is_some() {
-                    format!("{name} {:.digits$} (at its search bound)", p[i])
-                } else {
-                    format!("{name} {:.digits$} ± {:.1e}", p[i], full.std_errors[i])
-                }
-            };
+            let cov = full
+                .linear
+                .as_ref()
+                .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
+            let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
+            let described = format!("no tyre data: {}", id.describe());
             Ok((
                 Bases {
                     all: build(p),
                     folds: fold_params.iter().map(|q| build(q)).collect(),
                     nominal_share,
                     axle: Some((p.clone(), fold_params)),
+                    identification: Some(id),
                 },
-                format!(
-                    "no tyre data: axle characteristics identified from the runs (simplified Magic Formula, C = 1.3; refitted with every candidate): {}, {} 1/rad, {}",
-                    shown(0, "B front", 2),
-                    shown(1, "B rear", 2),
-                    shown(2, "D", 3),
-                ),
+                described,
                 None,
             ))
         }

@@ -2,11 +2,12 @@
 //! runs, each fold refitted from the all-run optimum; the held-out gap
 //! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
 
+use super::base::axle_grid;
 use super::campaign::Campaign;
 use super::candidates::{with_effects, Bases, Setting};
 use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
-use super::fit::{fit, refit, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
+use super::fit::{fit, refit, swarm, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
 use super::model::Observed;
 use crate::optim::local::Residuals;
 use crate::optim::pso::{Inertia, Pso, Stall};
@@ -63,11 +64,10 @@ impl Context<'_> {
     /// every fold, refitted from the all-run optimum ([`refit`]: its
     /// linearisation first, Levenberg–Marquardt within a budget when that
     /// does not converge; non-converged folds are counted and warned about).
-    /// Given `starts`, the swarm is skipped: the polish starts from the
-    /// one of lowest cost (a combination from its members' single fits, or
-    /// from the set it extends with the added effect off, whichever fits
-    /// better: the first can be far off when the members' fits traded
-    /// against different axle characteristics).
+    /// A combination comes with `starts` (its members' single fits, the
+    /// set it extends with the added effect off, the added effect's own
+    /// axles): the swarm then starts from the best of them, and the polish
+    /// from the lowest cost found ([`Context::start`]).
     pub(super) fn score(
         &self,
         kinds: Vec<EffectKind>,
@@ -90,20 +90,8 @@ impl Context<'_> {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
         };
-        let best_start = starts
-            .iter()
-            .map(|p| (problem.cost(p), p))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, p)| p);
-        let full = match best_start {
-            Some(p) => fit(&problem, p, None, Polish::LevenbergMarquardt),
-            None => fit(
-                &problem,
-                &s.off(),
-                Some((&pso, if s.axle() { 3 } else { 0 })),
-                Polish::LevenbergMarquardt,
-            ),
-        };
+        let start = self.start(&problem, &s, starts, &pso);
+        let full = fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt);
         let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
         let mut insample = ChannelErrors::default();
         for r in &self.runs {
@@ -152,6 +140,57 @@ impl Context<'_> {
         }
     }
 
+    /// The start of a candidate's polish: the lowest cost of `starts` and
+    /// of a swarm over the effect parameters from the best of them (from
+    /// the effect off without them; the axle characteristics held, one
+    /// particle at that point). Where the axle characteristics are fitted, the start must be
+    /// consistent with the candidate rather than with the base: the axle
+    /// grid is rerun at the swarm's effect values and, for an effect that
+    /// takes a measured input, at the input as logged ([`as_logged`]);
+    /// the lowest cost of them all starts the polish.
+    fn start<F: Fn(&[f64]) -> super::model::Augmented + Sync>(
+        &self,
+        problem: &Problem<F>,
+        s: &Setting,
+        starts: &[Vec<f64>],
+        pso: &Pso,
+    ) -> Vec<f64> {
+        let held = if s.axle() { 3 } else { 0 };
+        let mut tried: Vec<(f64, Vec<f64>)> = starts
+            .iter()
+            .map(|p| (problem.cost(p), p.clone()))
+            .collect();
+        // A single's swarm starts from the effect off; a combination's is
+        // a fresh swarm from its best start, so that it is not bound to
+        // the basin its members' fits were in.
+        let from = tried
+            .iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or_else(|| s.off(), |(_, p)| p.clone());
+        let (p, _) = swarm(problem, &from, pso, held);
+        tried.push((problem.cost(&p), p));
+        // A single's axles are regridded at its effect values where its
+        // swarm found them worth something (at the base's axles they
+        // lower the cost by REGRID_GAIN; below that the grid would be the
+        // base's own again), and at the input as logged; a combination's
+        // starts already carry each member's axles.
+        if let (true, [kind]) = (s.axle(), &s.kinds[..]) {
+            let off = problem.cost(&s.off());
+            let (cost, p) = tried
+                .iter()
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .expect("the swarm's best is tried");
+            let gained = (*cost < (1.0 - REGRID_GAIN) * off).then(|| p[held..].to_vec());
+            for tail in gained.into_iter().chain(as_logged(*kind)) {
+                tried.extend(axle_grid(problem, &tail).into_iter().take(1));
+            }
+        }
+        tried
+            .into_iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or_else(|| s.off(), |(_, p)| p)
+    }
+
     /// Held-out replays of every run with a candidate's fold parameters.
     pub(super) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
         let mut out = vec![Observed::default(); self.runs.len()];
@@ -173,6 +212,17 @@ impl Context<'_> {
         }
         out
     }
+}
+
+/// Share of the cost a single's swarm must remove at the base's axles
+/// for its axles to be regridded at its values.
+const REGRID_GAIN: f64 = 0.01;
+
+/// The values of an effect that takes a measured input as logged (the
+/// bank channel at scale 1), if it takes one: the start that keeps the
+/// joint axle fit out of the basin of the model without the input.
+fn as_logged(kind: EffectKind) -> Option<Vec<f64>> {
+    (kind == EffectKind::BankProfile).then(|| vec![1.0, 0.0])
 }
 
 /// The residual rows of a fold's training runs (all but `held_out`) in the

@@ -32,6 +32,7 @@
 pub use super::report::*;
 use crate::measured::road::RoadGeometry;
 
+use super::base::AxleIdentification;
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
 use super::crossval::{gap_above, prepare, reduction, singles, Context, Scored};
@@ -41,7 +42,6 @@ use super::model::Observed;
 pub use super::summary::observed_channel;
 use super::summary::{base_run_gap, gap_summary, parts_table};
 use crate::error::Error;
-use crate::optim::pso::Pso;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -115,6 +115,18 @@ struct Baseline {
 }
 
 impl Baseline {
+    /// Why the axle characteristics fitted with a candidate are no tyre (a
+    /// rigid axle, one without force, no grip), if they are not: such a
+    /// candidate cannot be a verdict.
+    fn degenerate(&self, sc: &Scored) -> Option<String> {
+        (self.axle_count == 3)
+            .then(|| {
+                let p = &sc.full.params;
+                AxleIdentification::new(&p[..3], &sc.full.std_errors[..3], None, 0).degenerate
+            })
+            .flatten()
+    }
+
     /// A scored candidate as a row of the report, with its warnings.
     fn rank(&self, sc: &Scored) -> Ranked {
         let j = sc.heldout.combined(&self.scales);
@@ -127,6 +139,11 @@ impl Baseline {
             warnings.push(format!(
                 "the fit on all runs removes {inside:.0} % of the gap but only {held:.0} % on held-out runs: \
                  the effect does not generalise across runs, or the runs cannot pin its parameters"
+            ));
+        }
+        if let Some(why) = self.degenerate(sc) {
+            warnings.push(format!(
+                "fitted with it, the axles are no tyre ({why}): it cannot be a verdict"
             ));
         }
         if sc.folds_converged < folds {
@@ -228,6 +245,14 @@ fn search(
         combinations: Vec::new(),
         lookalikes: Vec::new(),
     };
+    // A candidate whose axles are no tyre cannot be the verdict, nor
+    // start one.
+    let order: Vec<usize> = order
+        .iter()
+        .copied()
+        .filter(|&i| base.degenerate(&singles[i]).is_none())
+        .collect();
+    let order = &order[..];
     let Some(&first) = order.first() else {
         return out;
     };
@@ -340,10 +365,14 @@ fn greedy(
                     (*e, &added_off),
                     base.axle_count,
                 );
+                // Each member's own optimum: the axles the added effect
+                // fitted alone want can differ from the current set's.
+                let mut own = members.clone();
+                own[..base.axle_count].copy_from_slice(&single.full.params[..base.axle_count]);
                 ctx.score(
                     kinds,
                     EffectSet::default(),
-                    &[members, extended],
+                    &[members, extended, own],
                     1000 + i as u64,
                 )
             })
@@ -355,7 +384,7 @@ fn greedy(
         });
         out.combinations
             .extend(scored.iter().map(|sc| base.rank(sc)));
-        let Some(next) = scored.into_iter().next() else {
+        let Some(next) = scored.into_iter().find(|sc| base.degenerate(sc).is_none()) else {
             break;
         };
         let extra = reduction(jc, next.heldout.combined(&scales), jn);
@@ -411,8 +440,22 @@ fn verdict_of(
     base: &Baseline,
     significant: bool,
     ranking: &[Ranked],
+    degenerate: Option<&str>,
 ) -> Verdict {
     let (j0, jn) = (base.j0, base.jn);
+    // A base that is no tyre gives no model-form verdict: what no
+    // candidate explains may be the base's own collapse.
+    if let (None, Some(why), true) = (chosen, degenerate, significant) {
+        return Verdict {
+            effects: Vec::new(),
+            parameters: Vec::new(),
+            warnings: Vec::new(),
+            statement: format!(
+                "the base model is not identifiable from these runs: {why}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {j0:.3}, noise level {jn:.3}), so there is no model-form verdict",
+                100.0 * ACCEPT
+            ),
+        };
+    }
     match chosen {
         Some(sc) => {
             let r = base.rank(sc);
@@ -547,13 +590,13 @@ const VISIBLE_AX: f64 = 0.5;
 /// each one left out (an effect of braking and throttle without a
 /// longitudinal acceleration, a bank profile without a `bank` channel).
 fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
-    let accelerates = c.runs.iter().any(|r| match &r.ax {
-        Some(ax) => ax.iter().any(|a| a.abs() > VISIBLE_AX),
-        None => {
-            r.t.windows(2)
-                .zip(r.speed.windows(2))
-                .any(|(t, u)| t[1] > t[0] && ((u[1] - u[0]) / (t[1] - t[0])).abs() > VISIBLE_AX)
-        }
+    // The acceleration the replays use: the measured ax, else the
+    // smoothed speed derivative (a raw difference of a noisy speed would
+    // admit braking effects on constant-speed runs).
+    let accelerates = c.runs.iter().any(|r| {
+        r.longitudinal_acceleration()
+            .iter()
+            .any(|a| a.abs() > VISIBLE_AX)
     });
     let banked = c.runs.iter().any(|r| r.bank.is_some());
     let mut notes = Vec::new();
@@ -599,11 +642,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
     let hint = signal_scales(c);
-    // The base axle characteristics (no tyre data) are fitted once, on a
-    // cost surface with long valleys (B and D trade off): their swarm runs
-    // all its iterations, as the candidates' need not.
-    let base_pso = Pso { stall: None, ..pso };
-    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, &base_pso)?;
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }
@@ -653,9 +692,18 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     };
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
     let parts = parts_table(&c.runs, &ctx.runs, &base_obs, &base_obs, &floors);
-    let mut verdict = verdict_of(chosen, &base, significant, &ranking);
+    let degenerate = bases
+        .identification
+        .as_ref()
+        .and_then(|i| i.degenerate.as_deref());
+    let mut verdict = verdict_of(chosen, &base, significant, &ranking, degenerate);
     if chosen.is_some() {
         verdict.warnings = worsened(&shrinkage);
+        if let Some(why) = degenerate {
+            verdict.warnings.push(format!(
+                "the base model alone is no tyre ({why}); the reductions are measured against it, and with the verdict's effects the axles are a tyre"
+            ));
+        }
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut summary = gap_summary(&run_gaps, &parts, significant, j0, jn);
@@ -687,6 +735,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             front: bases.all.base.front.clone(),
             rear: bases.all.base.rear.clone(),
             rig_grouping,
+            axles: bases.identification.clone(),
         },
         gap: GapReport {
             significant,

@@ -49,10 +49,14 @@ pub enum EffectKind {
     /// Load moved between the axles by the longitudinal acceleration.
     LongitudinalLoadTransfer,
     /// Lateral force lost to the longitudinal force of braking and drive
-    /// (each tyre's friction circle), with a drive split and brake balance.
+    /// (each tyre's friction circle), with a drive split, a brake balance
+    /// and the share of `m·ax` the tyres carry.
     CombinedSlip,
     /// The road bank of the run's `bank` channel, scaled, plus an offset.
     BankProfile,
+    /// The steer actuator: the road wheels follow the logged steer late
+    /// (a dead time) and through a first-order lag.
+    SteerPath,
 }
 
 /// What a run must carry for an effect to show in it.
@@ -150,7 +154,7 @@ pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
 
 impl EffectKind {
     /// Every effect, in the order.
-    pub const ALL: [EffectKind; 17] = [
+    pub const ALL: [EffectKind; 18] = [
         EffectKind::RelaxationLength,
         EffectKind::SteeringCompliance,
         EffectKind::RollSteer,
@@ -168,6 +172,7 @@ impl EffectKind {
         EffectKind::LongitudinalLoadTransfer,
         EffectKind::CombinedSlip,
         EffectKind::BankProfile,
+        EffectKind::SteerPath,
     ];
 
     /// The name in the vocabulary (and in diagnosis.json).
@@ -190,6 +195,7 @@ impl EffectKind {
             EffectKind::LongitudinalLoadTransfer => "longitudinal_load_transfer",
             EffectKind::CombinedSlip => "combined_slip",
             EffectKind::BankProfile => "bank_profile",
+            EffectKind::SteerPath => "steer_path",
         }
     }
 
@@ -250,15 +256,24 @@ impl EffectKind {
         const ROLL: [Parameter; 1] = [par("roll_gradient", "rad/(m/s²)", 0.0, -0.03, 0.03)];
         const POSITION: [Parameter; 1] = [par("x", "m", 0.0, -2.5, 2.5)];
         const PITCH: [Parameter; 1] = [par("share", "-", 0.0, 0.0, 2.0).floor()];
-        // No value switches a friction circle off: its "off" values are the
-        // starts, rear-wheel drive and 60 % of the braking in front.
-        const COMBINED: [Parameter; 2] = [
+        // Off when the tyres carry none of m·ax (force_share 0): the
+        // lateral forces are then the pure-slip ones exactly, whatever the
+        // split and balance (whose off values, rear-wheel drive and 60 % of
+        // the braking in front, are only starts). The share's upper bound
+        // is a search bound (the tyres may carry more than m·ax: drag and
+        // rolling resistance against the throttle, an ax logged low).
+        const COMBINED: [Parameter; 3] = [
             par("drive_front_share", "-", 0.0, 0.0, 1.0).share(),
             par("brake_front_share", "-", 0.6, 0.0, 1.0).share(),
+            par("force_share", "-", 0.0, 0.0, 1.5).floor(),
         ];
         const PROFILE: [Parameter; 2] = [
             par("scale", "-", 0.0, -0.5, 2.0),
             par("offset", "rad", 0.0, -0.2, 0.2),
+        ];
+        const STEER_PATH: [Parameter; 2] = [
+            par("delay", "s", 0.0, 0.0, 0.5).floor(),
+            par("lag", "s", 0.0, 0.0, 0.5).floor(),
         ];
         match self {
             EffectKind::RelaxationLength => &RELAXATION,
@@ -278,6 +293,7 @@ impl EffectKind {
             EffectKind::LongitudinalLoadTransfer => &PITCH,
             EffectKind::CombinedSlip => &COMBINED,
             EffectKind::BankProfile => &PROFILE,
+            EffectKind::SteerPath => &STEER_PATH,
         }
     }
 
@@ -336,6 +352,9 @@ impl EffectKind {
             EffectKind::BankProfile => {
                 "a drift that follows the measured bank, not the steer: the same corner driven at two speeds"
             }
+            EffectKind::SteerPath => {
+                "a lag in the steer input, not the sensors: the response to a steer step changes shape (first-order filtered) as well as time, while the responses without steer (to speed changes, to the bank, a sensor's offset) keep their timing; a sensor delay shifts every channel alike: a steer step, and a speed change on a straight"
+            }
         }
     }
 }
@@ -366,11 +385,15 @@ pub struct EffectSet {
     pub yaw_inertia_scale: Option<f64>,
     /// Share of the rigid-body longitudinal load transfer (0: none).
     pub longitudinal_load_transfer: f64,
-    /// Combined slip's drive split and brake balance, front shares (None:
-    /// pure slip).
-    pub combined_slip: Option<[f64; 2]>,
+    /// Combined slip's drive split and brake balance (front shares) and
+    /// the share of `m·ax` the tyres carry (None, or a share of 0: pure
+    /// slip).
+    pub combined_slip: Option<[f64; 3]>,
     /// The measured bank profile's scale, and a constant bank added, rad.
     pub bank_profile: [f64; 2],
+    /// The steer path's delay and first-order lag time constant, s (0, 0:
+    /// the road wheels follow the logged steer).
+    pub steer_path: [f64; 2],
     /// The measurement system.
     pub sensors: Sensors,
 }
@@ -398,8 +421,9 @@ impl EffectSet {
             EffectKind::AccelerometerRoll => self.sensors.roll_gradient = p[0],
             EffectKind::AccelerometerPosition => self.sensors.accelerometer_x = p[0],
             EffectKind::LongitudinalLoadTransfer => self.longitudinal_load_transfer = p[0],
-            EffectKind::CombinedSlip => self.combined_slip = Some([p[0], p[1]]),
+            EffectKind::CombinedSlip => self.combined_slip = Some([p[0], p[1], p[2]]),
             EffectKind::BankProfile => self.bank_profile = [p[0], p[1]],
+            EffectKind::SteerPath => self.steer_path = [p[0], p[1]],
         }
     }
 
@@ -430,8 +454,9 @@ impl EffectSet {
             EffectKind::AccelerometerRoll => vec![self.sensors.roll_gradient],
             EffectKind::AccelerometerPosition => vec![self.sensors.accelerometer_x],
             EffectKind::LongitudinalLoadTransfer => vec![self.longitudinal_load_transfer],
-            EffectKind::CombinedSlip => self.combined_slip.unwrap_or([0.0, 0.6]).to_vec(),
+            EffectKind::CombinedSlip => self.combined_slip.unwrap_or([0.0, 0.6, 0.0]).to_vec(),
             EffectKind::BankProfile => self.bank_profile.to_vec(),
+            EffectKind::SteerPath => self.steer_path.to_vec(),
         }
     }
 
@@ -456,8 +481,9 @@ mod tests {
         assert_eq!(relaxation.bound_at(3.0 * 1.1e-9), None);
         let bank = EffectKind::RoadBank.parameters()[0];
         assert_eq!(bank.bound_at(-0.15), Some(Bound::Search));
-        for share in EffectKind::CombinedSlip
-            .parameters()
+        // Combined slip's drive split and brake balance (not its share of
+        // m·ax, which may exceed 1).
+        for share in EffectKind::CombinedSlip.parameters()[..2]
             .iter()
             .chain(EffectKind::LoadTransferDistribution.parameters())
         {
@@ -491,7 +517,7 @@ mod tests {
             }
             // Setting the off values gives the base model back (the share's
             // off value is the vehicle's own, tested in the model).
-            if k != EffectKind::LoadTransferDistribution && k != EffectKind::CombinedSlip {
+            if k != EffectKind::LoadTransferDistribution {
                 let mut e = EffectSet::default();
                 let off: Vec<f64> = p.iter().map(|q| q.off).collect();
                 e.set(k, &off);

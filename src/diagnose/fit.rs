@@ -29,6 +29,7 @@ use crate::optim::stats::{seen_columns, standard_errors};
 use crate::sim::TimeHistory;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
+use std::borrow::Cow;
 use std::sync::Mutex;
 
 /// A measured channel.
@@ -182,25 +183,29 @@ impl Prepared {
     /// campaign's: a stiff model (racing axles at a few m/s, a tyre lag of
     /// millimetres) costs a Jacobian every few steps, not a finer grid, and
     /// its fast modes, settled within a step, are followed quasi-statically.
-    pub fn drive_for(&self, model: &Augmented) -> &Drive {
+    /// A model whose steer path is on gets a copy of that drive with the
+    /// path's output for the run's logged steer ([`Augmented::steered`]);
+    /// any other, the prepared drive itself.
+    pub fn drive_for(&self, model: &Augmented) -> Cow<'_, Drive> {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
             .fastest_rate(lo, friction)
             .max(vehicle.fastest_rate(hi, friction));
-        if self.drive.step * rho <= STABLE_STEP {
+        let drive = if self.drive.step * rho <= STABLE_STEP {
             &self.drive
         } else {
             self.stiff
                 .get_or_init(|| self.inputs.drive(self.drive.step, FixedStep::RosenbrockW))
-        }
+        };
+        model.steered(drive, &self.inputs.t, &self.inputs.steer)
     }
 
     /// The run replayed by `model` from its first measured state less the
     /// model's sensor offsets, by the method [`Prepared::drive_for`] picks.
     pub fn replay(&self, model: &Augmented) -> TimeHistory {
         let (beta, yaw_rate) = self.start_of(model);
-        model.simulate_from(self.drive_for(model), beta, yaw_rate)
+        model.simulate_from(&self.drive_for(model), beta, yaw_rate)
     }
 
     /// Number of residuals of this run.
@@ -388,7 +393,7 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
         }
     }
 
-    fn clamp(&self, p: &[f64]) -> Vec<f64> {
+    pub(super) fn clamp(&self, p: &[f64]) -> Vec<f64> {
         p.iter()
             .zip(&self.bounds)
             .map(|(x, (lo, hi))| x.clamp(*lo, *hi))
@@ -513,32 +518,47 @@ pub enum Polish {
     Refit,
 }
 
-/// Fits `problem` from `start`: PSO over the bounds (when `pso` is given;
-/// `(swarm, held)` holds the first `held` parameters at their start values
-/// during the swarm search — the axle characteristics, which the polish
-/// then frees) then the polish.
+/// The swarm search of a fit: PSO over the bounds of every parameter but
+/// the first `held` (kept at their values in `start`), one particle at
+/// `start`; its best point and the evaluations made. Nothing to search
+/// (all parameters held) returns `start`.
+pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: &Pso,
+    held: usize,
+) -> (Vec<f64>, usize) {
+    let p0 = problem.clamp(start);
+    if p0.len() <= held {
+        return (p0, 0);
+    }
+    let full = |q: &[f64]| {
+        let mut p = p0[..held].to_vec();
+        p.extend_from_slice(q);
+        p
+    };
+    let r = pso.minimize_from(
+        |q| problem.cost(&full(q)),
+        &problem.bounds[held..],
+        &[p0[held..].to_vec()],
+    );
+    (full(&r.best), r.evaluations)
+}
+
+/// Fits `problem` from `start` by the polish (the start comes from a
+/// swarm, [`swarm`], or a nearby optimum). A parameter the data cannot
+/// see is reported at its value in `off` (the effect off; `start` when
+/// None), which fits as well. Standard errors are those of the parameters
+/// inside their bounds: one the fit pressed onto a bound is held there
+/// (NaN), as a constrained least-squares fit's active set is.
 pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
-    pso: Option<(&Pso, usize)>,
+    off: Option<&[f64]>,
     polish: Polish,
 ) -> FitOutcome {
     let mut evaluations = 0;
-    let mut p0 = problem.clamp(start);
-    if let Some((pso, held)) = pso.filter(|(_, held)| start.len() > *held) {
-        let full = |q: &[f64]| {
-            let mut p = p0[..held].to_vec();
-            p.extend_from_slice(q);
-            p
-        };
-        let r = pso.minimize_from(
-            |q| problem.cost(&full(q)),
-            &problem.bounds[held..],
-            &[p0[held..].to_vec()],
-        );
-        evaluations += r.evaluations;
-        p0 = full(&r.best);
-    }
+    let p0 = problem.clamp(start);
     let (params, cost, converged) = if start.is_empty() {
         (Vec::new(), problem.cost(&[]), true)
     } else {
@@ -565,14 +585,20 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
             evaluations += params.len() + 1;
             // A parameter the data cannot see (an accelerometer offset of a
             // run set without ay) is wherever the swarm left it: report its
-            // start value (the effect off), which fits as well.
-            let start = problem.clamp(start);
+            // off value (the effect off), which fits as well.
+            let off = problem.clamp(off.unwrap_or(start));
             for (i, seen) in seen_columns(&linear.jacobian).into_iter().enumerate() {
                 if !seen {
-                    params[i] = start[i];
+                    params[i] = off[i];
                 }
             }
-            (standard_errors(&linear.jacobian, 2.0 * cost), Some(linear))
+            let mut free = linear.jacobian.clone();
+            for (i, &b) in problem.bounds.iter().enumerate() {
+                if super::effects::on_bound(params[i], b).is_some() {
+                    free.column_mut(i).fill(0.0);
+                }
+            }
+            (standard_errors(&free, 2.0 * cost), Some(linear))
         }
         _ => (vec![f64::NAN; params.len()], None),
     };
@@ -858,10 +884,11 @@ mod tests {
     use crate::tyre::{Pac89, Tyre};
     use crate::vehicle::{Vehicle, VehicleModel};
 
+    /// Axles of stiffness factors `B_f`, `B_r` and peak friction `D`.
     fn axle_model(p: &[f64]) -> Augmented {
-        let (front, rear) = crate::diagnose::candidates::axle_tyres(p);
+        let tyre = |b: f64| Tyre::MagicSimple(crate::tyre::MagicSimple { b, c: 1.3, d: p[2] });
         Augmented::new(
-            VehicleModel::new(Vehicle::compact_sedan(), front, rear),
+            VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
             1.0,
         )
     }

@@ -1,9 +1,11 @@
 //! The sim-to-real gap: where a replayed run and its measurement
 //! disagree ([`gap`]), the library of candidate effects ([`effects`]) and
-//! the augmented model that carries them ([`model`]), the sensor effects
+//! the augmented model that carries them ([`model`]), the base model
+//! identified from the runs when there are no tyre data (`base`), the sensor effects
 //! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis
 //! that ranks the effects on held-out runs ([`diagnosis`]).
 
+mod base;
 pub mod campaign;
 mod candidates;
 mod crossval;
@@ -19,5 +21,6 @@ pub mod sensors;
 mod summary;
 pub mod synth;
 
+pub use base::{AxleIdentification, AxleLimit, AxleValue};
 pub use campaign::{BaseTyres, Campaign, DiagnoseSettings};
 pub use diagnosis::{diagnose, Diagnosis};

@@ -10,13 +10,24 @@
 //! ([`EffectSet`]) onto the model — effects set, vehicle values scaled, road
 //! friction scaled — and the sensors ([`super::sensors::Sensors`]) applied
 //! to the response. With every effect off it is the base model (tested
-//! against [`crate::sim::Integrator::run`]). Units: SI, rad.
+//! against [`crate::sim::Integrator::run`]).
+//!
+//! The steer path ([`SteerPath`]: an actuator's delay and first-order lag
+//! between the logged steer and the road wheels) is linear in the input,
+//! so it is no state of the model: a replay whose steer path is on runs a
+//! copy of the drive whose steer samples are the path's exact output for
+//! the logged (piecewise-linear) steer ([`Augmented::steered`]); one whose
+//! path is off runs the drive itself. [`Augmented::simulate`] replays the
+//! drive it is given: the callers that replay logged runs
+//! ([`super::fit::Prepared::drive_for`], the proving ground) pass it
+//! through [`Augmented::steered`] first. Units: SI, rad.
 
 use super::effects::EffectSet;
 use crate::manoeuvre::interpolate;
 pub use crate::sim::{Drive, FixedStep};
 use crate::sim::{Integrator, TimeHistory};
 use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel};
+use std::borrow::Cow;
 
 /// The base model with effects.
 #[derive(Debug, Clone, PartialEq)]
@@ -81,16 +92,38 @@ impl Augmented {
         // Like aero and bank, the longitudinal effects and the bank profile
         // add to (or, for combined slip, replace) the base model's own.
         x.longitudinal_load_transfer += e.longitudinal_load_transfer;
-        if let Some([drive, brake]) = e.combined_slip {
+        if let Some([drive, brake, share]) = e.combined_slip {
             x.combined_slip = Some(CombinedSlip {
                 drive_front_share: drive,
                 brake_front_share: brake,
+                force_share: share,
             });
         }
         x.bank_profile_scale += e.bank_profile[0];
         x.road_bank += e.bank_profile[1];
         x.roll = self.roll;
         (model, self.friction * e.friction_scale.unwrap_or(1.0))
+    }
+
+    /// The steer path of its effects.
+    pub fn steer_path(&self) -> SteerPath {
+        let [delay, lag] = self.effects.steer_path;
+        SteerPath { delay, lag }
+    }
+
+    /// The drive the road wheels see when the steer logged as (`t`,
+    /// `steer`), which `drive` samples, goes through the steer path:
+    /// `drive` itself while the path is off (so the replay is the base
+    /// model's bit for bit), else a copy whose steer at every stage time is
+    /// the path's output ([`SteerPath::apply`]).
+    pub fn steered<'d>(&self, drive: &'d Drive, t: &[f64], steer: &[f64]) -> Cow<'d, Drive> {
+        let path = self.steer_path();
+        if path.is_off() {
+            Cow::Borrowed(drive)
+        } else {
+            let wheel = path.apply(t, steer, &drive.stage_times());
+            Cow::Owned(drive.clone().with_steer(wheel))
+        }
     }
 
     /// The state that starts a replay at sideslip `beta` and yaw rate
@@ -154,6 +187,89 @@ impl Augmented {
     }
 }
 
+/// The steer path between the logged steer δ and the road wheels:
+/// δ_wheel(t) = lag_τ(δ(t − delay)), with lag_τ a first-order lag of time
+/// constant `lag` (dy/dt = (u − y)/τ). The logged steer is the
+/// piecewise-linear signal through its samples, held at its first sample
+/// before the start (and at its last after the end), and the lag starts
+/// settled on that first sample.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SteerPath {
+    /// Dead time, s (≥ 0).
+    pub delay: f64,
+    /// Time constant of the first-order lag, s (≥ 0; 0: none).
+    pub lag: f64,
+}
+
+impl SteerPath {
+    /// Whether the road wheels follow the logged steer as it is.
+    pub fn is_off(&self) -> bool {
+        self.delay == 0.0 && self.lag == 0.0
+    }
+
+    /// The road-wheel steer at times `at` (in any order) of the steer
+    /// logged at increasing times `t` (repeated times allowed: a jump). The
+    /// delay interpolates the samples at `at − delay`; the lag is the exact
+    /// discretisation of the first-order lag driven by the delayed
+    /// piecewise-linear input, stepped from one break point or output time
+    /// to the next (the delayed input is linear between them), so the
+    /// output is exact to round-off at every time asked for, whatever the
+    /// spacing.
+    pub fn apply(&self, t: &[f64], steer: &[f64], at: &[f64]) -> Vec<f64> {
+        assert_eq!(t.len(), steer.len(), "one steer per time");
+        assert!(!t.is_empty(), "a steer path needs samples");
+        let delay = self.delay;
+        if self.lag <= 0.0 {
+            return at
+                .iter()
+                .map(|&s| interpolate(t, steer, s - delay))
+                .collect();
+        }
+        let tau = self.lag;
+        // One exact step of h of the lag from y with the input linear from
+        // u0 to u1: y·a + (1 − a)·u0 + (u1 − u0)·(1 − (1 − a)/x), with
+        // x = h/τ and a = e^(−x).
+        let advance = |y: f64, u0: f64, u1: f64, h: f64| -> f64 {
+            let x = h / tau;
+            if x <= 0.0 {
+                return y;
+            }
+            let one_minus_a = -(-x).exp_m1();
+            let a = 1.0 - one_minus_a;
+            a * y + one_minus_a * u0 + (u1 - u0) * (1.0 - one_minus_a / x)
+        };
+        let mut order: Vec<usize> = (0..at.len()).collect();
+        order.sort_by(|&i, &j| at[i].total_cmp(&at[j]));
+        let node = |j: usize| t[j] + delay;
+        let mut out = vec![0.0; at.len()];
+        // The state: time, input and output there; the next break point.
+        let (mut s, mut u, mut y) = (node(0), steer[0], steer[0]);
+        let mut j = 1;
+        for i in order {
+            let q = at[i];
+            if q > s {
+                while j < t.len() && node(j) <= q {
+                    y = advance(y, u, steer[j], node(j) - s);
+                    (s, u) = (node(j), steer[j]);
+                    j += 1;
+                }
+                if q > s {
+                    let uq = if j < t.len() {
+                        let w = (q - delay - t[j - 1]) / (t[j] - t[j - 1]);
+                        steer[j - 1] + w * (steer[j] - steer[j - 1])
+                    } else {
+                        u
+                    };
+                    y = advance(y, u, uq, q - s);
+                    (s, u) = (q, uq);
+                }
+            }
+            out[i] = y;
+        }
+        out
+    }
+}
+
 /// Simulated measurements at a run's sample times.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Observed {
@@ -167,5 +283,7 @@ pub struct Observed {
     pub roll: Vec<f64>,
 }
 
+#[cfg(test)]
+mod nesting_tests;
 #[cfg(test)]
 mod tests;

@@ -179,6 +179,10 @@ pub struct BaseReport {
     /// Where every sample of the rig data went (levels, transitions,
     /// thinning), when the tyres were fitted to rig data.
     pub rig_grouping: Option<GroupingReport>,
+    /// The axle characteristics identified from the runs (no tyre data):
+    /// values, standard errors, the largest correlation, the limits they
+    /// stand on and whether the base is a tyre at all.
+    pub axles: Option<super::base::AxleIdentification>,
 }
 
 /// Everything the diagnosis found.

@@ -135,10 +135,11 @@ impl SynthReport {
     /// The closing line.
     pub fn wrote(&self) -> String {
         format!(
-            "wrote {} ({} {} runs, rig data, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
+            "wrote {} ({} {} runs, {}, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
             self.out.display(),
             self.runs,
             self.programme.name(),
+            if self.campaign.rig.is_empty() { "no rig data" } else { "rig data" },
             self.truth.name(),
             self.name,
             self.seed,
@@ -151,11 +152,14 @@ impl SynthReport {
 fn write_campaign(s: &Synthetic, dir: &Path) -> Result<(), Error> {
     create_dir(&dir.join("runs"))?;
     write_bytes(&dir.join("vehicle.toml"), s.vehicle_toml().as_bytes())?;
-    let [fz, alpha, fy] = s.rig_columns();
-    write_columns(
-        &dir.join("tyre_rig.csv"),
-        &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)],
-    )?;
+    // A programme without rig data (the slow oval) writes no rig file.
+    if !s.rig.is_empty() {
+        let [fz, alpha, fy] = s.rig_columns();
+        write_columns(
+            &dir.join("tyre_rig.csv"),
+            &[("fz", &fz), ("alpha", &alpha), ("fy", &fy)],
+        )?;
+    }
     for r in &s.runs {
         let mut cols: Vec<(&str, &[f64])> = vec![
             ("t", &r.t),

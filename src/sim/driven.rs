@@ -15,6 +15,7 @@
 use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE};
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
+use crate::measured::derivative::{speed_derivative, speed_derivative_at};
 use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
 
 /// A fixed-grid method of a replay.
@@ -66,8 +67,9 @@ pub struct Drive {
     steer: Vec<f64>,
     speed: Vec<f64>,
     speed_rate: Vec<f64>,
-    /// Measured longitudinal acceleration at the stage times (empty: the
-    /// speed's derivative stands in).
+    /// Longitudinal acceleration at the stage times: a replay's measured
+    /// `ax`, else its speed's smoothed derivative ([`Drive::replay`]);
+    /// empty for a manoeuvre, whose exact du/dt stands in.
     ax: Vec<f64>,
     /// Measured road bank at the stage times (empty: none).
     bank: Vec<f64>,
@@ -100,19 +102,34 @@ impl Drive {
     /// The same drive with a measured longitudinal acceleration and road
     /// bank (sampled at `t`, linearly interpolated to the stage times) where
     /// given: they reach the model as [`Inputs::ax`] and [`Inputs::bank`],
-    /// which only its longitudinal and bank-profile effects read.
+    /// which only its longitudinal and bank-profile effects read. Without
+    /// `ax` the drive keeps the acceleration it has (a replay's smoothed
+    /// speed derivative).
     pub fn with_channels(mut self, t: &[f64], ax: Option<&[f64]>, bank: Option<&[f64]>) -> Self {
-        let times = Self::sample_times(self.method, self.start, self.step, self.steps);
-        let sample =
-            |v: &[f64]| -> Vec<f64> { times.iter().map(|&x| interpolate(t, v, x)).collect() };
-        self.ax = ax.map_or_else(Vec::new, sample);
-        self.bank = bank.map_or_else(Vec::new, sample);
+        if let Some(ax) = ax {
+            self.ax = self.sampled(t, ax);
+        }
+        self.bank = bank.map_or_else(Vec::new, |b| self.sampled(t, b));
         self
     }
 
-    /// The replay of measured steer and speed by `method`.
+    /// `v` (sampled at `t`) linearly interpolated to the stage times.
+    fn sampled(&self, t: &[f64], v: &[f64]) -> Vec<f64> {
+        Self::sample_times(self.method, self.start, self.step, self.steps)
+            .iter()
+            .map(|&x| interpolate(t, v, x))
+            .collect()
+    }
+
+    /// The replay of measured steer and speed by `method`. Its
+    /// longitudinal acceleration ([`Inputs::ax`]) is the speed's smoothed
+    /// derivative ([`speed_derivative`]: a local quadratic fit over 0.5 s,
+    /// not the difference of two noisy samples) until a measured `ax`
+    /// replaces it ([`Drive::with_channels`]); the speed's rate in the
+    /// kinematics ([`Inputs::speed_rate`]) stays the slope of the
+    /// interpolated speed the replay follows.
     pub fn replay(t: &[f64], steer: &[f64], speed: &[f64], step: f64, method: FixedStep) -> Self {
-        Self::for_method(
+        let drive = Self::for_method(
             &Manoeuvre::Replay(Replay {
                 t: t.to_vec(),
                 steer: steer.to_vec(),
@@ -120,7 +137,32 @@ impl Drive {
             }),
             step,
             method,
-        )
+        );
+        let ax = drive.sampled(t, &speed_derivative(t, speed));
+        Self { ax, ..drive }
+    }
+
+    /// The times of its input samples (every stage of every step, in the
+    /// order of [`Drive::steer_samples`]; not increasing within a ROS34PW2
+    /// step, whose nodes are not), s.
+    pub fn stage_times(&self) -> Vec<f64> {
+        Self::sample_times(self.method, self.start, self.step, self.steps)
+    }
+
+    /// The steer at [`Drive::stage_times`], rad.
+    pub fn steer_samples(&self) -> &[f64] {
+        &self.steer
+    }
+
+    /// The same drive with the steer at [`Drive::stage_times`] replaced by
+    /// `steer` (a steer path's output), rad.
+    ///
+    /// # Panics
+    /// When `steer` has another length than the drive's samples.
+    pub fn with_steer(mut self, steer: Vec<f64>) -> Self {
+        assert_eq!(steer.len(), self.steer.len(), "one steer per stage sample");
+        self.steer = steer;
+        self
     }
 
     /// The times of the samples of `steps` steps of `step` from `start`.
@@ -141,6 +183,14 @@ impl Drive {
         self.inputs_at(0, friction)
     }
 
+    /// The longitudinal acceleration the model reads ([`Inputs::ax`]) at
+    /// every stage sample, in the order of the stage times, m/s².
+    pub fn ax_samples(&self) -> Vec<f64> {
+        (0..self.speed.len())
+            .map(|k| self.inputs_at(k, 1.0).ax)
+            .collect()
+    }
+
     fn inputs_at(&self, k: usize, friction: f64) -> Inputs {
         Inputs {
             steer: self.steer[k],
@@ -154,15 +204,21 @@ impl Drive {
 }
 
 /// The inputs of manoeuvre `m` at time `t` on a road of friction
-/// `friction`.
+/// `friction`. The longitudinal acceleration is du/dt, a replayed run's
+/// smoothed
+/// ([`speed_derivative_at`], as [`Drive::replay`] samples it).
 pub(super) fn manoeuvre_inputs(m: &Manoeuvre, t: f64, friction: f64) -> Inputs {
     let speed_rate = m.speed_rate(t);
+    let ax = match m {
+        Manoeuvre::Replay(r) => speed_derivative_at(&r.t, &r.speed, t),
+        _ => speed_rate,
+    };
     Inputs {
         steer: m.steer(t),
         speed: m.speed(t),
         speed_rate,
         friction,
-        ax: speed_rate,
+        ax,
         bank: 0.0,
     }
 }

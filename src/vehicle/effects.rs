@@ -26,13 +26,17 @@
 //!   ([`super::Inputs::ax`]) each front wheel loses and each rear wheel gains
 //!   a share of `m·ax·h/(2l)` (Gillespie, *Fundamentals of Vehicle
 //!   Dynamics*, 1992, ch. 2), an axle's load never below zero;
-//! - combined slip ([`CombinedSlip`]): the longitudinal force `m·ax` is
+//! - combined slip ([`CombinedSlip`]): a share `s` of the longitudinal
+//!   force `m·ax` (the rest: what the tyres do not carry, drag and rolling
+//!   resistance, grade, or an `ax` that is not the car's own) is
 //!   shared between the axles by a drive split (ax > 0) or a brake balance
 //!   (ax < 0), evenly between an axle's wheels, and each wheel's lateral
 //!   force is reduced on the friction circle of its tyre,
 //!   `Fy = Fy0·√(1 − (Fx/(μ·Fz))²)` (a friction ellipse with equal axes:
 //!   the pure-slip models have no combined-slip law of their own; μ is
-//!   [`crate::tyre::TyreModel::friction_coefficient`]).
+//!   [`crate::tyre::TyreModel::friction_coefficient`]). At `s = 0` no
+//!   tyre carries a longitudinal force and the lateral forces are the pure
+//!   ones exactly: the effect is nested in the base model.
 //!
 //! Roll (the [`RollModel`]) is a second-order response of the body to the
 //! lateral acceleration, `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
@@ -80,8 +84,9 @@ impl Default for RollModel {
     }
 }
 
-/// How the longitudinal force `m·ax` is shared between the axles for
-/// combined slip: shares of the front axle, the rest on the rear.
+/// How much of the longitudinal force `m·ax` the tyres carry through their
+/// friction circles, and how it is shared between the axles: shares of the
+/// front axle, the rest on the rear.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct CombinedSlip {
@@ -89,29 +94,41 @@ pub struct CombinedSlip {
     pub drive_front_share: f64,
     /// Front share of the brake force (ax < 0), the brake balance.
     pub brake_front_share: f64,
+    /// Share of `m·ax` the tyres carry (1: all of it; 0: none, the pure-slip
+    /// forces exactly). Not a share of a whole: above 1 the tyres carry
+    /// more than `m·ax` (drag and rolling resistance the throttle works
+    /// against, an `ax` logged low).
+    pub force_share: f64,
 }
 
 impl Default for CombinedSlip {
-    /// Rear-wheel drive, 60 % of the braking on the front axle.
+    /// Rear-wheel drive, 60 % of the braking on the front axle, all of
+    /// `m·ax` carried by the tyres.
     fn default() -> Self {
         Self {
             drive_front_share: 0.0,
             brake_front_share: 0.6,
+            force_share: 1.0,
         }
     }
 }
 
 impl CombinedSlip {
     /// The longitudinal force per wheel (front, rear), N, of a car of mass
-    /// `mass` at longitudinal acceleration `ax`.
-    pub fn wheel_forces(&self, mass: f64, ax: f64) -> [f64; 2] {
+    /// `mass` at longitudinal acceleration `ax`; None when the tyres carry
+    /// none of it (`force_share` 0), so that the model takes its pure-slip
+    /// path bit for bit.
+    pub fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
+        if self.force_share == 0.0 {
+            return None;
+        }
         let share = if ax >= 0.0 {
             self.drive_front_share
         } else {
             self.brake_front_share
         };
-        let total = mass * ax;
-        [0.5 * share * total, 0.5 * (1.0 - share) * total]
+        let total = self.force_share * mass * ax;
+        Some([0.5 * share * total, 0.5 * (1.0 - share) * total])
     }
 }
 
@@ -209,6 +226,8 @@ impl Effects {
                         .within("combined_slip"));
                 }
             }
+            ParamError::non_negative("force_share", c.force_share)
+                .map_err(|e| e.within("combined_slip"))?;
         }
         self.roll.validate().map_err(|e| e.within("roll"))
     }

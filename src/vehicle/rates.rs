@@ -237,7 +237,7 @@ impl VehicleModel {
         // Without compliance the wheel's steer, hence the projection, does
         // not depend on the force: one cosine per evaluation.
         let fixed_projection = self.steer_projection(steer[0]);
-        let fx = e.combined_slip.map(|c| c.wheel_forces(v.mass, inp.ax));
+        let fx = e.combined_slip.and_then(|c| c.wheel_forces(v.mass, inp.ax));
         // The slip angles the load-transfer loop holds fixed (all but a
         // compliant front's), with their tyres evaluated once.
         let alpha_front = if lagged { x[2] } else { kin_f };

@@ -229,7 +229,11 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // that step and must match a fine RK4 reference.
     use crate::diagnose::fit::Prepared;
     use crate::measured::MeasuredRun;
-    let (front, rear) = crate::diagnose::candidates::axle_tyres(&[9.3, 80.0, 3.5]);
+    let (front, rear) = crate::diagnose::base::axle_tyres(&crate::diagnose::base::shares(
+        9.3 * 1.3 * 3.5,
+        80.0 * 1.3 * 3.5,
+        3.5,
+    ));
     let model = Augmented::new(
         VehicleModel::new(crate::vehicle::racing_car(), front, rear),
         1.0,
@@ -281,7 +285,11 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // Measured 1.4e-5.
     assert!(lag_error < 5e-5, "{lag_error}");
     // Soft axles at the same step stay with RK4.
-    let (front, rear) = crate::diagnose::candidates::axle_tyres(&[9.3, 10.0, 1.0]);
+    let (front, rear) = crate::diagnose::base::axle_tyres(&crate::diagnose::base::shares(
+        9.3 * 1.3,
+        10.0 * 1.3,
+        1.0,
+    ));
     let soft = Augmented::new(
         VehicleModel::new(crate::vehicle::racing_car(), front, rear),
         1.0,
@@ -297,4 +305,142 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
         "{}",
         error(&coarse)
     );
+}
+
+/// A 20 s run at 25 Hz, 20 m/s, with a weaving steer (for the steer path).
+fn weave_run() -> crate::measured::MeasuredRun {
+    let t: Vec<f64> = (0..500).map(|i| 0.04 * i as f64).collect();
+    crate::measured::MeasuredRun {
+        path: "weave.csv".into(),
+        yaw_rate: vec![0.0; t.len()],
+        beta: Some(vec![0.0; t.len()]),
+        ay: Some(vec![0.0; t.len()]),
+        roll: None,
+        bank: None,
+        ax: None,
+        masked: Vec::new(),
+        speed: vec![20.0; t.len()],
+        steer: t.iter().map(|&t| 0.03 * (1.3 * t).sin()).collect(),
+        t,
+    }
+}
+
+#[test]
+fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
+    use crate::diagnose::effects::EffectKind;
+    use crate::diagnose::fit::Prepared;
+    let run = weave_run();
+    let prepared = Prepared::new(&run, 0.01, 25.0);
+    let base = Augmented::new(pac89_model(), 1.0);
+    let mut off = base.clone();
+    off.effects.set(EffectKind::SteerPath, &[0.0, 0.0]);
+    assert!(matches!(
+        prepared.drive_for(&off),
+        std::borrow::Cow::Borrowed(_)
+    ));
+    let (a, b) = (prepared.replay(&base), prepared.replay(&off));
+    assert_eq!(a.yaw_rate, b.yaw_rate);
+    assert_eq!(a.beta, b.beta);
+    assert_eq!(a.ay, b.ay);
+    // Switched on it is another replay, whose steer the vehicle sees late.
+    let mut on = base.clone();
+    on.effects.set(EffectKind::SteerPath, &[0.05, 0.15]);
+    let c = prepared.replay(&on);
+    assert_eq!(c.t, a.t);
+    assert!(c
+        .yaw_rate
+        .iter()
+        .zip(&a.yaw_rate)
+        .any(|(x, y)| (x - y).abs() > 1e-3));
+    // The logged steer is what the history records as the drive's input:
+    // the transformed one, lagging the command.
+    let lagged = prepared.drive_for(&on);
+    let k = lagged
+        .steer_samples()
+        .iter()
+        .zip(prepared.drive.steer_samples())
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    assert!(k > 0.005, "{k}");
+}
+
+#[test]
+fn a_pure_steer_delay_shifts_a_ramp() {
+    // A ramp from t = 1 s at 0.1 rad/s, sampled at 25 Hz, delayed 0.13 s
+    // (not a multiple of the sampling interval).
+    let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
+    let ramp = |t: f64| 0.1 * (t - 1.0).max(0.0);
+    let steer: Vec<f64> = t.iter().map(|&t| ramp(t)).collect();
+    let path = SteerPath {
+        delay: 0.13,
+        lag: 0.0,
+    };
+    let at: Vec<f64> = (0..1000).map(|i| 0.0077 * i as f64).collect();
+    let out = path.apply(&t, &steer, &at);
+    for (&s, &y) in at.iter().zip(&out) {
+        let expected = if s - 0.13 >= *t.last().unwrap() {
+            *steer.last().unwrap()
+        } else {
+            ramp(s - 0.13)
+        };
+        // Before the ramp's corner is delayed past a sample the
+        // interpolation between samples sees the corner: exact elsewhere.
+        let near_corner = (s - 1.13).abs() < 0.04;
+        if !near_corner {
+            assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
+        }
+    }
+    // The first sample is held before the start.
+    let early = path.apply(&[0.0, 1.0], &[0.2, 0.3], &[-1.0, 0.0, 0.1, 0.13]);
+    assert_eq!(early, vec![0.2, 0.2, 0.2, 0.2]);
+    // The same with the lag: off, and every time order.
+    let off = SteerPath::default().apply(&t, &steer, &at);
+    assert_eq!(
+        off,
+        at.iter()
+            .map(|&s| interpolate(&t, &steer, s))
+            .collect::<Vec<_>>()
+    );
+    let mut rev = at.clone();
+    rev.reverse();
+    let lagged = SteerPath {
+        delay: 0.13,
+        lag: 0.2,
+    };
+    let mut back = lagged.apply(&t, &steer, &rev);
+    back.reverse();
+    assert_eq!(back, lagged.apply(&t, &steer, &at));
+}
+
+#[test]
+fn the_steer_lag_of_a_step_is_one_minus_an_exponential() {
+    // A unit step 1e-14 s wide, then samples every millisecond: the lag's
+    // output at the samples is 1 − exp(−t/τ) (the ramp's width moves it
+    // by about 1e-14/(2τ)).
+    let tau = 0.15;
+    let mut t = vec![-1e-14];
+    t.extend((0..2000).map(|i| 1e-3 * i as f64));
+    let mut steer = vec![1.0; t.len()];
+    steer[0] = 0.0;
+    let path = SteerPath {
+        delay: 0.0,
+        lag: tau,
+    };
+    let out = path.apply(&t, &steer, &t);
+    assert_eq!(out[0], 0.0);
+    for (&s, &y) in t.iter().zip(&out).skip(1) {
+        let expected = 1.0 - (-s / tau).exp();
+        assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
+    }
+    // Delayed by 0.2 s, the same curve 0.2 s later, between the samples
+    // too.
+    let delayed = SteerPath {
+        delay: 0.2,
+        lag: tau,
+    };
+    let at: Vec<f64> = (0..700).map(|i| 0.2 + 0.00237 * i as f64).collect();
+    for (&s, &y) in at.iter().zip(&delayed.apply(&t, &steer, &at)) {
+        let expected = 1.0 - (-(s - 0.2) / tau).exp();
+        assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
+    }
 }

@@ -19,7 +19,15 @@
 //!   doc). Noise as above, ax 0.05 m/s², bank 0.002 rad. On these the
 //!   truth can switch on the longitudinal and bank-profile effects; without
 //!   `bank_profile` the truth drives a flat track whose logger still
-//!   records the banking (a control: the channel alone is no effect).
+//!   records the banking (a control: the channel alone is no effect);
+//! - a slow banked oval ([`Programme::SlowOval`]) with another car (the
+//!   Putnam log's light racing car with a little downforce of its own,
+//!   [`truth_vehicle`], [`truth_downforce`]), logged at 25 Hz with `ax`,
+//!   `beta` and `bank` and no `ay`, no rig data (the diagnosis identifies
+//!   the axles from the runs), its runs cut into 20 s pieces.
+//!
+//! The steer path ([`EffectKind::SteerPath`]) acts on the logged steer:
+//! the truth replays the path's output, the logger records the command.
 //!
 //! A cornering-stiffness or friction truth means the car's tyres differ
 //! from the rig's: the rig data are generated without it. Units: SI, rad.
@@ -38,7 +46,7 @@ use crate::error::ParamError;
 use crate::identify::data::gauss;
 use crate::identify::data::RigData;
 use crate::manoeuvre::{Manoeuvre, RampSteer, StepSteer, SweepSteer};
-use crate::measured::clean::{clean_runs, CleanSettings};
+use crate::measured::clean::{clean_runs, slice, CleanSettings, MIN_RUN_SECONDS};
 use crate::measured::MeasuredRun;
 use crate::tyre::ModelName;
 use crate::tyre::{SlipState, Tyre, TyreModel};
@@ -49,7 +57,9 @@ use serde::Serialize;
 use std::path::PathBuf;
 
 mod programme;
-pub use programme::{logged_runs, LoggedInputs, Programme, LOG_RATE};
+pub use programme::{
+    logged_runs, truth_downforce, truth_vehicle, LoggedInputs, Programme, LOG_RATE,
+};
 
 /// Noise standard deviations of the synthetic measurements.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -157,7 +167,8 @@ impl Truth {
                 | EffectKind::AccelerometerPosition
                 | EffectKind::LongitudinalLoadTransfer
                 | EffectKind::CombinedSlip
-                | EffectKind::BankProfile => None,
+                | EffectKind::BankProfile
+                | EffectKind::SteerPath => None,
             },
         }
     }
@@ -196,7 +207,8 @@ fn four_wheel_effects(effects: &[(EffectKind, Vec<f64>)]) -> Result<FourWheelEff
             | EffectKind::AccelerometerPosition
             | EffectKind::LongitudinalLoadTransfer
             | EffectKind::CombinedSlip
-            | EffectKind::BankProfile => {}
+            | EffectKind::BankProfile
+            | EffectKind::SteerPath => {}
         }
     }
     Ok(e)
@@ -245,8 +257,9 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
         EffectKind::AccelerometerRoll => vec![RollModel::default().gradient],
         EffectKind::AccelerometerPosition => vec![0.8],
         EffectKind::LongitudinalLoadTransfer => vec![1.0],
-        EffectKind::CombinedSlip => vec![0.0, 0.65],
+        EffectKind::CombinedSlip => vec![0.0, 0.65, 1.0],
         EffectKind::BankProfile => vec![1.0, 0.0],
+        EffectKind::SteerPath => vec![0.05, 0.15],
     }
 }
 
@@ -341,9 +354,10 @@ pub fn generate(spec: &SynthSpec) -> Synthetic {
 /// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
     truth.drives(spec.programme)?;
-    let vehicle = Vehicle::compact_sedan();
+    let vehicle = truth_vehicle(spec.programme);
     let tyre = truth_tyre();
-    let base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
+    let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
+    base.options.effects.aero_load = truth_downforce(spec.programme);
     let mut augmented = Augmented::new(base.clone(), 1.0);
     let mut effects = EffectSet::default();
     for (k, p) in &spec.effects {
@@ -362,7 +376,7 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     let runs = if let Some(logged) = logged_runs(spec.programme, &base) {
         logged
             .iter()
-            .map(|p| logged_run(&augmented, p, &mut rng, n))
+            .map(|p| logged_run(&augmented, spec.programme, p, &mut rng, n))
             .collect()
     } else {
         handling_programme(&base)
@@ -374,7 +388,12 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
                     .collect();
                 let (yaw_rate, ay, beta) = match truth {
                     Truth::Augmented => {
+                        // The steer path (if on) filters the manoeuvre's
+                        // steer as sampled on the 1 ms grid.
                         let drive = Drive::new(&m, 1e-3);
+                        let drive = augmented
+                            .steered(&drive, &drive.stage_times(), drive.steer_samples())
+                            .into_owned();
                         let response = augmented.simulate(&drive, [0.0; 6]);
                         let o = augmented.observe(&response, &times);
                         (o.yaw_rate, o.ay, o.beta)
@@ -426,7 +445,13 @@ fn finish(
 ) -> Synthetic {
     let mut rig = Vec::new();
     let rig_tyre = four_wheel.vehicle.tyre;
-    for fz in [2500.0, 4000.0, 5500.0, 7000.0] {
+    // The slow oval has no rig data (its base model identifies the axles).
+    let loads: &[f64] = if spec.programme.has_rig() {
+        &[2500.0, 4000.0, 5500.0, 7000.0]
+    } else {
+        &[]
+    };
+    for &fz in loads {
         for k in -240..=240 {
             let alpha = (k as f64 * 0.05).to_radians();
             let fy = match truth {
@@ -451,6 +476,32 @@ fn finish(
     }
 }
 
+/// A run cut into pieces of `length` seconds, the last one joining its
+/// predecessor when shorter than [`MIN_RUN_SECONDS`] (as a campaign's
+/// `[runs] segment` cuts a file).
+fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
+    let t0 = run.t[0];
+    let total = run.t[run.t.len() - 1] - t0;
+    let mut count = ((total / length).round() as usize).max(1);
+    if count > 1 && total - (count - 1) as f64 * length < MIN_RUN_SECONDS {
+        count -= 1;
+    }
+    let mut out = Vec::new();
+    let mut lo = 0;
+    for k in 0..count {
+        let end = if k + 1 == count {
+            run.t.len()
+        } else {
+            run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
+        };
+        if end > lo + 1 {
+            out.push(slice(&run, lo, end, &format!("[{}]", k + 1)));
+        }
+        lo = end;
+    }
+    out
+}
+
 /// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.
 const AX_NOISE: f64 = 0.05;
 const BANK_NOISE: f64 = 0.002;
@@ -460,9 +511,11 @@ fn with_noise(v: &[f64], s: f64, rng: &mut ChaCha8Rng) -> Vec<f64> {
     v.iter().map(|x| x + s * gauss(rng)).collect()
 }
 
-/// One run of a logged programme on the augmented truth, with noise.
+/// One run of a logged programme on the augmented truth, with noise: the
+/// channels `programme` logs.
 fn logged_run(
     truth: &Augmented,
+    programme: Programme,
     p: &LoggedInputs,
     rng: &mut ChaCha8Rng,
     noise: Noise,
@@ -473,19 +526,26 @@ fn logged_run(
     // bank's g·sin θ) as a real one does.
     let m = p.manoeuvre();
     let drive = Drive::new(&m, 1e-3).with_channels(&p.t, Some(&p.ax), Some(&p.bank));
+    let drive = truth.steered(&drive, &p.t, &p.steer);
     let x0 = truth.initial_state(&drive, 0.0, 0.0);
     let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
-    let (yaw_rate, ay) = (o.yaw_rate, o.ay);
+    let (yaw_rate, ay, beta) = (o.yaw_rate, o.ay, o.beta);
     let mut noisy = |v: &[f64], s: f64| with_noise(v, s, rng);
+    // Drawn in this order (the existing programmes' noise unchanged).
+    let yaw_rate = noisy(&yaw_rate, noise.yaw_rate);
+    let ay = noisy(&ay, noise.ay);
+    let ax = noisy(&p.ax, AX_NOISE);
+    let bank = noisy(&p.bank, BANK_NOISE);
+    let beta = programme.logs_beta().then(|| noisy(&beta, noise.beta));
     MeasuredRun {
         path: PathBuf::from(format!("{}.csv", p.name)),
         speed: p.speed.clone(),
         steer: p.steer.clone(),
-        yaw_rate: noisy(&yaw_rate, noise.yaw_rate),
-        ay: Some(noisy(&ay, noise.ay)),
-        ax: Some(noisy(&p.ax, AX_NOISE)),
-        bank: Some(noisy(&p.bank, BANK_NOISE)),
-        beta: None,
+        yaw_rate,
+        ay: programme.logs_ay().then_some(ay),
+        ax: Some(ax),
+        bank: Some(bank),
+        beta,
         roll: None,
         masked: Vec::new(),
         t: p.t.clone(),
@@ -526,16 +586,31 @@ impl Synthetic {
         } else {
             (self.runs.clone(), Default::default())
         };
+        // The slow oval's pieces cut as its `[runs] segment` cuts them,
+        // replayed at the step its `[diagnose]` states.
+        let mut settings = settings;
+        if let Some(h) = self.spec.programme.replay_step() {
+            settings.step = h;
+        }
+        let runs = match self.spec.programme.segment() {
+            Some(length) => runs.into_iter().flat_map(|r| segments(r, length)).collect(),
+            None => runs,
+        };
+        let tyres = if self.spec.programme.has_rig() {
+            BaseTyres::Rig {
+                path: source.join("tyre_rig.csv"),
+                data: Box::new(self.rig_data()),
+                model: ModelName::Pac89,
+            }
+        } else {
+            BaseTyres::FromRuns
+        };
         Campaign {
             name: self.name(),
             inputs: Vec::new(),
             vehicle: self.vehicle.clone(),
             friction: 1.0,
-            tyres: BaseTyres::Rig {
-                path: source.join("tyre_rig.csv"),
-                data: Box::new(self.rig_data()),
-                model: ModelName::Pac89,
-            },
+            tyres,
             source,
             run_files: self.runs.len(),
             runs,
@@ -591,10 +666,30 @@ impl Synthetic {
                 )
             }
         };
+        let [front, rear] = truth_downforce(self.spec.programme);
+        let model = if front != 0.0 || rear != 0.0 {
+            format!("{model}, down-force {front}/{rear} N/(m/s)^2 front/rear")
+        } else {
+            model
+        };
+        let tyres = if self.spec.programme.has_rig() {
+            "[tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n".to_string()
+        } else {
+            "# No tyre data: the base model identifies its axles from the runs.\n\n".to_string()
+        };
+        let step = self
+            .spec
+            .programme
+            .replay_step()
+            .map_or_else(String::new, |h| format!("step = {h}\n"));
+        let runs = match self.spec.programme.segment() {
+            Some(s) => format!("[runs]\nsegment = {s}\n\n"),
+            None => String::new(),
+        };
         format!(
             "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n\
              [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
-             [tyres]\nrig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n\n{roll}[diagnose]\nseed = {}\n",
+             {tyres}{roll}{runs}[diagnose]\nseed = {}\n{step}",
             self.truth.name(),
             self.spec.programme.name(),
             self.spec.seed,

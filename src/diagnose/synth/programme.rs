@@ -13,6 +13,16 @@
 //!   corners with trail braking (up to about 4.4 m/s² while the steer comes
 //!   in), throttle out, a chicane, corners banked up to 3.4° and one
 //!   off-camber, three laps at paces of 0.85 to 1.0 (about 100 s).
+//! - [`Programme::SlowOval`]: a light racing car (790 kg, the Putnam log's
+//!   car, [`truth_vehicle`], with some downforce, [`truth_downforce`])
+//!   lapping an oval whose turns are banked 20° at 5–21 m/s, far below
+//!   the banking's neutral speed (about 30 m/s on the 250 m turns), so the
+//!   tyres hold the car up the slope: the driver steers for the path on the
+//!   banked road (the tyres pushing up the slope, the understeering car
+//!   needs less steer than on a flat road). Three runs of
+//!   200 s at paces 1.0, 0.7 (with a stop in turn 1 and 20 s parked on the
+//!   banking) and 0.42, logged at 25 Hz with `ax`, `beta` and `bank` and no
+//!   `ay` (the Putnam log's channels), no rig data.
 //!
 //! The levels are those this near-neutral sedan survives with every effect
 //! of the library on: the driver is open-loop and does not catch a slide,
@@ -26,13 +36,16 @@
 //! that would hold that acceleration at the current speed on a flat road
 //! (sized on the truth vehicle without effects), so where the truth feels
 //! a bank or an effect the car's path differs, as a real car's would: the
-//! diagnosis only compares responses to the recorded inputs.
+//! diagnosis only compares responses to the recorded inputs. On the slow
+//! oval the steer is sized on the banked road instead (the path's
+//! acceleration u²/R less the bank's g·sin θ), as a driver below the
+//! neutral speed steers; without `bank_profile` the truth drives it flat.
 //!
 //! Units: SI, rad; bank positive with the road's left edge higher
 //! (`../shared/FORMATS.md`), so the oval's left turns are banked negative.
 
 use crate::manoeuvre::Manoeuvre;
-use crate::vehicle::VehicleModel;
+use crate::vehicle::{Vehicle, VehicleModel};
 use serde::Serialize;
 
 /// A test programme of the proving ground.
@@ -46,11 +59,19 @@ pub enum Programme {
     Oval,
     /// A road course at 25 Hz with trail braking and cambered corners.
     RoadCourse,
+    /// A light racing car slowly lapping a 20° banked oval at 25 Hz, with a
+    /// standstill on the banking, sideslip and no lateral acceleration.
+    SlowOval,
 }
 
 impl Programme {
     /// Every programme.
-    pub const ALL: [Programme; 3] = [Programme::Handling, Programme::Oval, Programme::RoadCourse];
+    pub const ALL: [Programme; 4] = [
+        Programme::Handling,
+        Programme::Oval,
+        Programme::RoadCourse,
+        Programme::SlowOval,
+    ];
 
     /// The name on the command line.
     pub fn name(self) -> &'static str {
@@ -58,7 +79,39 @@ impl Programme {
             Programme::Handling => "handling",
             Programme::Oval => "oval",
             Programme::RoadCourse => "road-course",
+            Programme::SlowOval => "slow-oval",
         }
+    }
+
+    /// Whether the runs carry a lateral acceleration (all but the slow
+    /// oval's, which carry sideslip instead, as the Putnam log).
+    pub fn logs_ay(self) -> bool {
+        self != Programme::SlowOval
+    }
+
+    /// Whether the runs carry sideslip.
+    pub fn logs_beta(self) -> bool {
+        matches!(self, Programme::Handling | Programme::SlowOval)
+    }
+
+    /// Whether the campaign has tyre rig data (all but the slow oval's: its
+    /// base model identifies the axles from the runs, as for the Putnam
+    /// log).
+    pub fn has_rig(self) -> bool {
+        self != Programme::SlowOval
+    }
+
+    /// The length of the pieces the campaign cuts its runs into, s (the
+    /// slow oval's `[runs] segment`).
+    pub fn segment(self) -> Option<f64> {
+        (self == Programme::SlowOval).then_some(SLOW_OVAL_SEGMENT)
+    }
+
+    /// The replay step its campaign states, s: the slow oval's, like a
+    /// real 25 Hz log's campaign, replays at 20 ms (half the log's
+    /// interval); the others take the default.
+    pub fn replay_step(self) -> Option<f64> {
+        (self == Programme::SlowOval).then_some(0.02)
     }
 
     /// Whether the runs carry `ax` and `bank` (the logged programmes).
@@ -135,6 +188,77 @@ const SIZING_SPEED: f64 = 5.0;
 
 /// The oval's bank in the turns, rad (20°, left turns: left edge lower).
 const OVAL_BANK: f64 = -0.349_065_850_398_865_9;
+
+/// Duration of each slow-oval run, s.
+const SLOW_OVAL_RUN: f64 = 200.0;
+/// Piece length of the slow-oval campaign, s.
+const SLOW_OVAL_SEGMENT: f64 = 20.0;
+
+/// The car that drives `programme`: the compact sedan, or on the slow oval
+/// a light racing car with the Putnam log's mass, yaw inertia and axle
+/// distances (its track widths and centre-of-gravity height assumed as in
+/// `campaigns/putnam.toml`).
+pub fn truth_vehicle(programme: Programme) -> Vehicle {
+    match programme {
+        Programme::SlowOval => Vehicle {
+            mass: 790.0,
+            yaw_inertia: 1000.0,
+            a: 1.248,
+            b: 1.733,
+            track_front: 1.6,
+            track_rear: 1.55,
+            cg_height: 0.3,
+            ..Vehicle::compact_sedan()
+        },
+        _ => Vehicle::compact_sedan(),
+    }
+}
+
+/// The truth car's own aerodynamic down-force (front, rear), N/(m/s)²:
+/// none, or on the slow oval 0.3 and 0.4 (310 N at 21 m/s, 4 % of the
+/// weight). Part of the truth the campaign file cannot state: the
+/// diagnosis's base model does not have it.
+pub fn truth_downforce(programme: Programme) -> [f64; 2] {
+    match programme {
+        Programme::SlowOval => [0.3, 0.4],
+        _ => [0.0; 2],
+    }
+}
+
+/// One lap of the slow oval from 12 m/s at pace 1: 250 m turns banked 20°
+/// (path acceleration u²/R), flat straights.
+fn slow_oval_lap() -> Vec<Leg> {
+    let b = OVAL_BANK;
+    vec![
+        leg(8.0, 21.0, 0.0, 0.0),
+        leg(3.0, 15.0, 0.6, b),
+        leg(8.0, 15.0, 0.9, b),
+        leg(3.0, 18.0, 0.5, b),
+        leg(8.0, 21.0, 0.0, 0.0),
+        leg(3.0, 14.0, 0.6, b),
+        leg(8.0, 14.0, 0.8, b),
+        leg(3.0, 12.0, 0.4, b),
+    ]
+}
+
+/// `legs` filled to `duration` (s) with a straight at the last leg's
+/// speed, or cut there.
+fn fill_to(mut legs: Vec<Leg>, speed: f64, duration: f64) -> Vec<Leg> {
+    let mut out = Vec::new();
+    let mut used = 0.0;
+    for l in legs.drain(..) {
+        if used + l.duration > duration {
+            break;
+        }
+        used += l.duration;
+        out.push(l);
+    }
+    let end = out.last().map_or(speed, |l| l.speed_end);
+    if duration - used > 1e-9 {
+        out.push(leg(duration - used, end, 0.0, 0.0));
+    }
+    out
+}
 
 /// One lap of the oval from 30 m/s on the back straight, at pace 1.
 fn oval_lap() -> Vec<Leg> {
@@ -223,10 +347,40 @@ pub fn logged_runs(programme: Programme, model: &VehicleModel) -> Option<Vec<Log
                 )
             })
             .collect(),
+        Programme::SlowOval => {
+            let laps = |pace: f64| -> Vec<Leg> {
+                (0..8)
+                    .flat_map(|_| at_pace(&slow_oval_lap(), pace))
+                    .collect()
+            };
+            // Into turn 1, stop on the banking, stand there 20 s, drive off
+            // along it, then lap on.
+            let pace = 0.7;
+            let mut stop = at_pace(&slow_oval_lap()[..1], pace);
+            stop.extend([
+                leg(3.0, 6.0, 0.6 * pace * pace, OVAL_BANK),
+                leg(4.0, 0.0, 0.0, OVAL_BANK),
+                leg(20.0, 0.0, 0.0, OVAL_BANK),
+                leg(6.0, 10.0, 0.0, OVAL_BANK),
+                leg(4.0, 12.0 * pace, 0.0, 0.0),
+            ]);
+            stop.extend(laps(pace));
+            vec![
+                ("slow_oval_pace100".into(), 12.0, laps(1.0)),
+                ("slow_oval_stop_on_banking".into(), 12.0 * pace, stop),
+                ("slow_oval_pace042".into(), 12.0 * 0.42, laps(0.42)),
+            ]
+            .into_iter()
+            .map(|(name, u0, legs): (String, f64, Vec<Leg>)| {
+                (name, u0, fill_to(legs, u0, SLOW_OVAL_RUN))
+            })
+            .collect()
+        }
     };
+    let banked = programme == Programme::SlowOval;
     Some(
         runs.into_iter()
-            .map(|(name, u0, legs)| drive_legs(name, u0, &legs, model))
+            .map(|(name, u0, legs)| drive_legs(name, u0, &legs, model, banked))
             .collect(),
     )
 }
@@ -252,8 +406,16 @@ fn blended(bounds: &[f64], values: &[f64], width: f64, t: f64) -> f64 {
 }
 
 /// The inputs of a run that starts at `u0` and drives `legs`, sampled at
-/// [`LOG_RATE`].
-fn drive_legs(name: String, u0: f64, legs: &[Leg], model: &VehicleModel) -> LoggedInputs {
+/// [`LOG_RATE`]; with `banked` the steer holds each leg's path on the
+/// banked road, else on a flat one.
+fn drive_legs(
+    name: String,
+    u0: f64,
+    legs: &[Leg],
+    model: &VehicleModel,
+    banked: bool,
+) -> LoggedInputs {
+    let mut sizing = model.clone();
     // Leg boundaries: bounds[k] is leg k's start; the last entry is the end.
     let mut bounds = vec![0.0];
     let mut speed_start = u0;
@@ -299,17 +461,45 @@ fn drive_legs(name: String, u0: f64, legs: &[Leg], model: &VehicleModel) -> Logg
         out.t.push(t);
         out.speed.push(speed);
         out.ax.push(if speed > 0.0 { ax_at(t) } else { 0.0 });
-        out.bank.push(blended(starts, &bank_leg, STEER_BLEND, t));
-        out.steer.push(
-            model
-                .steady_state_for_lateral_acceleration(sized, 1.0, ay)
-                .map(|s| s.steer)
-                .unwrap_or_else(|e| {
-                    panic!("the truth vehicle holds {ay} m/s² at {sized} m/s: {e}")
-                }),
-        );
+        let bank = blended(starts, &bank_leg, STEER_BLEND, t);
+        out.bank.push(bank);
+        // On the banked road the accelerometer reads the path's
+        // acceleration plus the bank's g·sin θ.
+        let ay = if banked {
+            sizing.options.effects.road_bank = model.options.effects.road_bank + bank;
+            ay + sizing.bank_acceleration()
+        } else {
+            ay
+        };
+        let held = sizing
+            .steady_state_for_lateral_acceleration(sized, 1.0, ay)
+            .map(|s| s.steer)
+            .unwrap_or_else(|e| panic!("the truth vehicle holds {ay} m/s² at {sized} m/s: {e}"));
+        // An autonomous car's path tracking corrects its line all the
+        // time: on the slow oval the steer carries small corrections
+        // (0.2–1 Hz, none while parked), through which a steer actuator's
+        // lag shows in the yaw rate as it does on a real log.
+        let correction = if banked && speed > 0.0 {
+            tracking_correction(t)
+        } else {
+            0.0
+        };
+        out.steer.push(held + correction);
     }
     out
+}
+
+/// Amplitude of the slow oval's path-tracking steer corrections, rad
+/// (0.17° of road-wheel angle at each of three frequencies).
+const TRACKING_STEER: f64 = 0.003;
+
+/// The path-tracking steer correction at `t`, rad: three incommensurate
+/// sines at 0.23, 0.51 and 0.97 Hz (a controller correcting its line
+/// excites the yaw response over that band).
+fn tracking_correction(t: f64) -> f64 {
+    use std::f64::consts::TAU;
+    TRACKING_STEER
+        * ((TAU * 0.23 * t).sin() + (TAU * 0.51 * t + 1.0).sin() + (TAU * 0.97 * t + 2.0).sin())
 }
 
 #[cfg(test)]
@@ -389,6 +579,71 @@ mod tests {
         // Left turns: positive steer in the banked parts.
         let k = r.bank.iter().position(|b| *b == OVAL_BANK).unwrap() + 50;
         assert!(r.steer[k] > 0.0);
+    }
+
+    #[test]
+    fn the_slow_oval_laps_at_5_to_21_ms_banked_20_degrees_with_a_standstill() {
+        let tyre: Tyre = super::super::truth_tyre();
+        let mut m = VehicleModel::new(truth_vehicle(Programme::SlowOval), tyre.clone(), tyre);
+        m.options.effects.aero_load = truth_downforce(Programme::SlowOval);
+        let runs = logged_runs(Programme::SlowOval, &m).unwrap();
+        assert_eq!(runs.len(), 3);
+        let total: f64 = runs.iter().map(|r| r.t.last().unwrap() - r.t[0]).sum();
+        assert!((total - 600.0).abs() < 0.1, "{total} s");
+        for r in &runs {
+            // Logged at 25 Hz.
+            assert!(r
+                .t
+                .windows(2)
+                .all(|w| (w[1] - w[0] - 1.0 / LOG_RATE).abs() < 1e-9));
+            let max = r.speed.iter().cloned().fold(0.0, f64::max);
+            assert!(max <= 21.0 + 1e-9, "{}: {max}", r.name);
+            // Bank 0 on the straights, -20° in the turns.
+            let min = r.bank.iter().cloned().fold(0.0, f64::min);
+            assert!((min - OVAL_BANK).abs() < 1e-12);
+            assert!(r.bank[..(4.0 * LOG_RATE) as usize]
+                .iter()
+                .all(|b| *b == 0.0));
+        }
+        // The band is 5 to 21 m/s outside the standstill run.
+        let speeds = |r: &LoggedInputs| {
+            r.speed
+                .iter()
+                .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &u| {
+                    (lo.min(u), hi.max(u))
+                })
+        };
+        let (lo, hi) = speeds(&runs[0]);
+        // (The acceleration's blends round the speed's peaks off.)
+        assert!(
+            (20.9..=21.0).contains(&hi) && lo >= 12.0 - 1e-6,
+            "{lo} {hi}"
+        );
+        let (lo, _) = speeds(&runs[2]);
+        assert!((5.0..5.1).contains(&lo), "{lo}");
+        // The standstill: 20 s parked on the banking.
+        let r = &runs[1];
+        let parked: Vec<usize> = (0..r.t.len()).filter(|&k| r.speed[k] == 0.0).collect();
+        let seconds = parked.len() as f64 / LOG_RATE;
+        assert!((19.0..23.0).contains(&seconds), "{seconds} s parked");
+        assert!(parked
+            .iter()
+            .all(|&k| (r.bank[k] - OVAL_BANK).abs() < 1e-12 && r.ax[k] == 0.0));
+        // Far below the neutral speed the tyres hold the car up the slope:
+        // in the left turns the understeering car steers left, less than
+        // it would for the turn's largest path acceleration on the flat.
+        let r = &runs[0];
+        let k = r.bank.iter().position(|b| *b == OVAL_BANK).unwrap() + 50;
+        let flat = m
+            .steady_state_for_lateral_acceleration(r.speed[k], 1.0, 0.9)
+            .unwrap()
+            .steer;
+        assert!(m.understeer_gradient() > 0.0);
+        assert!(
+            r.steer[k] > 0.0 && r.steer[k] < flat,
+            "{} {flat}",
+            r.steer[k]
+        );
     }
 
     #[test]

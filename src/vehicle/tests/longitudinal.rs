@@ -106,6 +106,7 @@ fn combined_slip_takes_the_longitudinal_force_from_each_wheels_friction_circle()
     let split = CombinedSlip {
         drive_front_share: 0.0,
         brake_front_share: 0.7,
+        force_share: 1.0,
     };
     m.options.effects.combined_slip = Some(split);
     // Off the throttle and brakes the lateral forces are the pure ones.
@@ -135,6 +136,29 @@ fn combined_slip_takes_the_longitudinal_force_from_each_wheels_friction_circle()
     // A braking force beyond the friction circle leaves no lateral force.
     let o = m.evaluate(&x, &accelerating(20.0, 0.05, -30.0));
     assert_eq!(o.fy_front, 0.0);
+    // Half of m·ax through the tyres is the whole of half of it; none of
+    // it is pure slip, to the bit, braking hard or not.
+    let mut half = m.clone();
+    half.options.effects.combined_slip = Some(CombinedSlip {
+        force_share: 0.5,
+        ..split
+    });
+    let o = half.evaluate(&x, &accelerating(20.0, 0.05, -4.0));
+    let whole = m.evaluate(&x, &accelerating(20.0, 0.05, -2.0));
+    assert_relative_eq!(o.fy_front, whole.fy_front, max_relative = 1e-12);
+    assert_relative_eq!(o.fy_rear, whole.fy_rear, max_relative = 1e-12);
+    let mut none = m.clone();
+    none.options.effects.combined_slip = Some(CombinedSlip {
+        force_share: 0.0,
+        ..split
+    });
+    for ax in [-30.0, -4.0, 0.0, 2.0] {
+        let inp = accelerating(20.0, 0.05, ax);
+        assert_eq!(
+            none.evaluate(&x, &inp),
+            nonlinear_free(&m).evaluate(&x, &inp)
+        );
+    }
 }
 
 /// `m` without its combined slip.

@@ -1,0 +1,394 @@
+//! The base model identified from the runs when a campaign has no tyre
+//! data: per axle a simplified Magic Formula (Li, Jia & Zhao,
+//! `Fy = D·μ·Fz·sin(C·atan(B·α))`, C = 1.3) of cornering coefficient
+//! `k = B·C·D` (cornering stiffness per unit load, 1/rad), and one peak
+//! friction `D` shared by the axles.
+//!
+//! **Parameterised by physical limits.** The fit works on shares,
+//! `s = k/(k + k_ref)` and `t = D/(D + D_ref)`, each in (0, 1): a share's
+//! ends are limits of the quantity, not numbers picked for a search. `s → 0`
+//! is an axle that makes no cornering force, `s → 1` a rigid axle that
+//! never slips, `t → 0` a road without grip, `t → 1` a tyre that never
+//! saturates. The fit's box stops just short of them ([`AXLE_BOUNDS`]:
+//! k from 0.4 to 4,000 1/rad, D from 0.11 to 9); an optimum there is named
+//! with what it means and which way the data pull ([`AxleLimit`]). A rigid
+//! axle, one without force or a road without grip is no tyre: the base is
+//! then *degenerate* and the diagnosis gives no model-form verdict from it.
+//! A friction that never saturates only says that the runs stay in the
+//! linear range: D is then not identified, which is reported, not refused.
+//!
+//! **Starts from the data.** The cost surface has long valleys (a stiff
+//! rear trades against a soft front) and the no-effect basin of a banked
+//! run is far from the banked one's, so a start is not a guess: the
+//! runs are replayed over a grid of front and rear coefficients (5 to 380
+//! 1/rad, geometric) at a friction that does not saturate, the best grid
+//! points of distinct basins are polished by Levenberg–Marquardt, and the
+//! best polish is the fit ([`identify_axles`]). A candidate effect is
+//! refitted jointly with the axles from a grid at its own values
+//! ([`axle_grid`]), so that an effect such as the measured bank is not
+//! judged in the basin of the model without it.
+//!
+//! Units: SI, rad; k in 1/rad (N of lateral force per N of load per rad of
+//! slip), D dimensionless.
+
+use super::fit::{Problem, FIT_TOLERANCE};
+use super::model::Augmented;
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::Residuals;
+use crate::tyre::{MagicSimple, Tyre};
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// Shape factor C of the axle characteristics.
+pub const SHAPE: f64 = 1.3;
+/// Cornering coefficient at the middle of its share, 1/rad: a car tyre's.
+const K_REF: f64 = 20.0;
+/// Peak friction at the middle of its share.
+const D_REF: f64 = 1.0;
+
+/// The fit's box of the shares (front coefficient, rear coefficient,
+/// friction): just inside the physical limits 0 and 1, where the model
+/// stays finite.
+pub const AXLE_BOUNDS: [(f64, f64); 3] = [(0.02, 0.995), (0.02, 0.995), (0.1, 0.9)];
+
+/// Shares of the start grid's coefficients: k = 5, 13, 30, 80, 380 1/rad.
+const GRID: [f64; 5] = [0.2, 0.4, 0.6, 0.8, 0.95];
+/// Friction share of the start grid: D = 4, far from saturating.
+const GRID_FRICTION: f64 = 0.8;
+/// Grid points polished when identifying the base (distinct basins).
+const BASE_STARTS: usize = 3;
+
+/// Cornering coefficient k (1/rad) of share `s`.
+pub fn coefficient(s: f64) -> f64 {
+    K_REF * s / (1.0 - s)
+}
+
+/// Peak friction D of share `t`.
+pub fn friction(t: f64) -> f64 {
+    D_REF * t / (1.0 - t)
+}
+
+/// The shares of coefficients `(k_f, k_r)` and friction `d`.
+pub fn shares(k_f: f64, k_r: f64, d: f64) -> [f64; 3] {
+    [k_f / (k_f + K_REF), k_r / (k_r + K_REF), d / (d + D_REF)]
+}
+
+/// The axle tyres of shares `p = [s_f, s_r, t]`.
+pub fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
+    let d = friction(p[2]);
+    let tyre = |s: f64| {
+        Tyre::MagicSimple(MagicSimple {
+            b: coefficient(s) / (SHAPE * d),
+            c: SHAPE,
+            d,
+        })
+    };
+    (tyre(p[0]), tyre(p[1]))
+}
+
+/// What an axle characteristic on the edge of its box means.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AxleLimit {
+    /// An axle that makes (almost) no cornering force.
+    NoForce,
+    /// An axle that (almost) never slips.
+    Rigid,
+    /// A road with (almost) no grip.
+    NoGrip,
+    /// A tyre that never saturates on these runs: the runs stay in the
+    /// linear range and the peak friction is not identified.
+    Linear,
+}
+
+impl AxleLimit {
+    /// Whether a base on this limit is no tyre at all (degenerate).
+    pub fn degenerate(self) -> bool {
+        self != AxleLimit::Linear
+    }
+
+    /// The limit parameter `i` of shares `p` stands on, if any.
+    pub fn of(i: usize, p: &[f64]) -> Option<Self> {
+        let (lo, hi) = AXLE_BOUNDS[i];
+        let tol = 1e-6 * (hi - lo);
+        let (low, high) = (p[i] - lo <= tol, hi - p[i] <= tol);
+        match (i, low, high) {
+            (2, true, _) => Some(AxleLimit::NoGrip),
+            (2, _, true) => Some(AxleLimit::Linear),
+            (_, true, _) => Some(AxleLimit::NoForce),
+            (_, _, true) => Some(AxleLimit::Rigid),
+            _ => None,
+        }
+    }
+
+    /// What it means, and which way the data pull, for the parameter
+    /// named `name`.
+    pub fn meaning(self, name: &str) -> String {
+        match self {
+            AxleLimit::NoForce => format!(
+                "{name} at its physical limit 0.4 1/rad (an axle without cornering force; no tyre is that soft): the data pull it lower"
+            ),
+            AxleLimit::Rigid => format!(
+                "{name} at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher"
+            ),
+            AxleLimit::NoGrip => format!(
+                "{name} at its physical limit 0.11 (a road without grip): the data pull it lower"
+            ),
+            AxleLimit::Linear => format!(
+                "{name} at 9, a tyre that never saturates on these runs: they stay in the linear range and do not identify it"
+            ),
+        }
+    }
+}
+
+/// One axle characteristic as identified, in physical units.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AxleValue {
+    /// Name.
+    pub name: &'static str,
+    /// Unit.
+    pub unit: &'static str,
+    /// Value.
+    pub value: f64,
+    /// Standard error (NaN where the data do not pin it).
+    pub std_error: f64,
+    /// The limit it stands on, if any.
+    pub limit: Option<AxleLimit>,
+}
+
+/// The axle characteristics identified from the runs, and how well the
+/// runs pin them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AxleIdentification {
+    /// Front and rear cornering coefficient (1/rad) and peak friction.
+    pub parameters: Vec<AxleValue>,
+    /// The most correlated pair of the three, and its correlation
+    /// (None where the covariance is singular).
+    pub largest_correlation: Option<(String, String, f64)>,
+    /// Grid points polished (several starts).
+    pub starts: usize,
+    /// Why the base is no tyre (a rigid axle, one without force, no grip),
+    /// if it is not.
+    pub degenerate: Option<String>,
+}
+
+/// Names of the three characteristics.
+pub const AXLE_NAMES: [&str; 3] = [
+    "front cornering coefficient",
+    "rear cornering coefficient",
+    "peak friction",
+];
+
+impl AxleIdentification {
+    /// The identification of shares `p` with standard errors `se` (of the
+    /// shares) and the Jacobian's covariance `cov` (of the shares).
+    pub fn new(p: &[f64], se: &[f64], cov: Option<&nalgebra::DMatrix<f64>>, starts: usize) -> Self {
+        // Standard errors through the derivative of each share's map.
+        let d_k = |s: f64| K_REF / ((1.0 - s) * (1.0 - s));
+        let d_d = |t: f64| D_REF / ((1.0 - t) * (1.0 - t));
+        let parameters: Vec<AxleValue> = (0..3)
+            .map(|i| AxleValue {
+                name: AXLE_NAMES[i],
+                unit: if i < 2 { "1/rad" } else { "-" },
+                value: if i < 2 {
+                    coefficient(p[i])
+                } else {
+                    friction(p[i])
+                },
+                std_error: se[i] * if i < 2 { d_k(p[i]) } else { d_d(p[i]) },
+                limit: AxleLimit::of(i, p),
+            })
+            .collect();
+        let largest_correlation = cov.and_then(|c| {
+            let mut best: Option<(String, String, f64)> = None;
+            for i in 0..3 {
+                for j in i + 1..3 {
+                    let rho = c[(i, j)] / (c[(i, i)] * c[(j, j)]).sqrt();
+                    if rho.is_finite() && best.as_ref().is_none_or(|b| rho.abs() > b.2.abs()) {
+                        best = Some((AXLE_NAMES[i].into(), AXLE_NAMES[j].into(), rho));
+                    }
+                }
+            }
+            best
+        });
+        let reasons: Vec<String> = parameters
+            .iter()
+            .filter_map(|v| {
+                v.limit
+                    .filter(|l| l.degenerate())
+                    .map(|l| l.meaning(v.name))
+            })
+            .collect();
+        Self {
+            parameters,
+            largest_correlation,
+            starts,
+            degenerate: (!reasons.is_empty()).then(|| reasons.join("; ")),
+        }
+    }
+
+    /// One line for the terminal and the report.
+    pub fn describe(&self) -> String {
+        let values: Vec<String> = self
+            .parameters
+            .iter()
+            .map(|v| {
+                let digits = if v.unit == "-" { 3 } else { 1 };
+                match v.limit {
+                    Some(l) => l.meaning(v.name).replacen(
+                        v.name,
+                        &format!("{} {:.digits$}", v.name, v.value),
+                        1,
+                    ),
+                    None if v.std_error.is_finite() => format!(
+                        "{} {:.digits$} ± {:.1e} {}",
+                        v.name, v.value, v.std_error, v.unit
+                    ),
+                    None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
+                }
+            })
+            .collect();
+        let mut s = format!(
+            "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; best of {} starts from a grid; refitted with every candidate): {}",
+            self.starts,
+            values.join(", ")
+        );
+        if let Some((a, b, rho)) = &self.largest_correlation {
+            s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
+        }
+        s
+    }
+}
+
+/// The grid of axle shares (front, rear) at the grid friction, each
+/// followed by `tail` (a candidate's effect values), ordered by cost:
+/// `(cost, vector)`. The grid points run in parallel.
+pub fn axle_grid<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    tail: &[f64],
+) -> Vec<(f64, Vec<f64>)> {
+    let points: Vec<Vec<f64>> = GRID
+        .iter()
+        .flat_map(|&f| GRID.iter().map(move |&r| (f, r)))
+        .map(|(f, r)| {
+            let mut p = vec![f, r, GRID_FRICTION];
+            p.extend_from_slice(tail);
+            p
+        })
+        .collect();
+    let mut scored: Vec<(f64, Vec<f64>)> = points
+        .into_par_iter()
+        .map(|p| (problem.cost(&p), p))
+        .collect();
+    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+    scored
+}
+
+/// Grid points of distinct basins: the best, then the next best that are
+/// not a grid neighbour of one already taken, up to `n`.
+fn distinct(scored: &[(f64, Vec<f64>)], n: usize) -> Vec<Vec<f64>> {
+    let index = |x: f64| GRID.iter().position(|&g| g == x).unwrap_or(0) as i64;
+    let mut taken: Vec<Vec<f64>> = Vec::new();
+    for (c, p) in scored {
+        if !c.is_finite() || taken.len() >= n {
+            continue;
+        }
+        let near = taken.iter().any(|q| {
+            (index(q[0]) - index(p[0])).abs() <= 1 && (index(q[1]) - index(p[1])).abs() <= 1
+        });
+        if !near {
+            taken.push(p.clone());
+        }
+    }
+    taken
+}
+
+/// The start of the base's axle fit: the grid's distinct basins polished
+/// by Levenberg–Marquardt, the best of them, and the number of starts.
+pub fn identify_axles<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+) -> (Vec<f64>, usize) {
+    let grid = axle_grid(problem, &[]);
+    let starts = distinct(&grid, BASE_STARTS);
+    let polished: Vec<(f64, Vec<f64>)> = starts
+        .par_iter()
+        .map(|p| {
+            let lm = BoundedLm {
+                iterations: 30,
+                tolerance: FIT_TOLERANCE,
+            }
+            .minimize(problem, p, &problem.bounds);
+            (lm.cost, lm.params)
+        })
+        .collect();
+    let best = polished
+        .into_iter()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or_else(|| shares(20.0, 20.0, 1.0).to_vec(), |b| b.1);
+    (best, starts.len())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shares_map_to_coefficients_and_back_and_the_box_is_where_the_doc_says() {
+        let p = shares(12.0, 30.0, 1.4);
+        assert!((coefficient(p[0]) - 12.0).abs() < 1e-12);
+        assert!((coefficient(p[1]) - 30.0).abs() < 1e-12);
+        assert!((friction(p[2]) - 1.4).abs() < 1e-12);
+        // The box's ends in physical units, as the module doc and the
+        // limits' meanings state them.
+        assert!((coefficient(AXLE_BOUNDS[0].0) - 0.408).abs() < 1e-3);
+        assert!((coefficient(AXLE_BOUNDS[0].1) - 3980.0).abs() < 1.0);
+        assert!((friction(AXLE_BOUNDS[2].0) - 0.111).abs() < 1e-3);
+        assert!((friction(AXLE_BOUNDS[2].1) - 9.0).abs() < 1e-9);
+        // The tyres' slope per unit load is the coefficient.
+        let (f, r) = axle_tyres(&p);
+        for (t, k) in [(f, 12.0), (r, 30.0)] {
+            let Tyre::MagicSimple(m) = t else { panic!() };
+            assert!((m.b * m.c * m.d - k).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn a_limit_is_named_for_what_it_means_and_only_the_linear_one_is_harmless() {
+        let (lo, hi) = AXLE_BOUNDS[1];
+        assert_eq!(AxleLimit::of(1, &[0.5, hi, 0.5]), Some(AxleLimit::Rigid));
+        assert_eq!(AxleLimit::of(0, &[lo, 0.5, 0.5]), Some(AxleLimit::NoForce));
+        assert_eq!(AxleLimit::of(2, &[0.5, 0.5, 0.9]), Some(AxleLimit::Linear));
+        assert_eq!(AxleLimit::of(2, &[0.5, 0.5, 0.1]), Some(AxleLimit::NoGrip));
+        assert_eq!(AxleLimit::of(0, &[0.5, 0.5, 0.5]), None);
+        let id = AxleIdentification::new(&[0.5, hi, 0.9], &[0.01; 3], None, 3);
+        let why = id.degenerate.expect("a rigid rear is no tyre");
+        assert!(
+            why.contains("rear cornering coefficient") && why.contains("rigid"),
+            "{why}"
+        );
+        let linear = AxleIdentification::new(&[0.5, 0.6, 0.9], &[0.01; 3], None, 3);
+        assert_eq!(linear.degenerate, None);
+        assert!(
+            linear.describe().contains("linear range"),
+            "{}",
+            linear.describe()
+        );
+    }
+
+    #[test]
+    fn distinct_starts_skip_grid_neighbours() {
+        let pt = |f: f64, r: f64, c: f64| (c, vec![f, r, GRID_FRICTION]);
+        let scored = vec![
+            pt(0.4, 0.4, 1.0),
+            pt(0.6, 0.4, 1.1),
+            pt(0.95, 0.2, 1.2),
+            pt(0.2, 0.95, f64::NAN),
+            pt(0.2, 0.8, 1.3),
+        ];
+        let d = distinct(&scored, 3);
+        assert_eq!(d.len(), 3);
+        assert_eq!(d[0][..2], [0.4, 0.4]);
+        assert_eq!(d[1][..2], [0.95, 0.2]);
+        assert_eq!(d[2][..2], [0.2, 0.8]);
+    }
+}

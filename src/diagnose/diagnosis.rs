@@ -65,6 +65,9 @@ pub const DISAGREEMENT: f64 = 25.0;
 /// Look-alikes of the best single the verdict's search also starts from
 /// while the set found leaves a significant gap.
 pub const ALTERNATIVE_STARTS: usize = 2;
+/// Held-out error, in noise levels, by which a candidate must beat a
+/// simpler one (fewer parameters) to be preferred to it.
+pub const PARSIMONY: f64 = 0.1;
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
 
@@ -253,10 +256,22 @@ fn search(
         .filter(|&i| base.degenerate(&singles[i]).is_none())
         .collect();
     let order = &order[..];
-    let Some(&first) = order.first() else {
+    let (scales, jn) = (base.scales, base.jn);
+    // The best single, or a simpler one that does as well: a candidate
+    // with more parameters must beat it by PARSIMONY noise levels on
+    // held-out runs (a steer delay and a sensor delay are one on runs
+    // whose every response comes from the steer; the steer path's idle
+    // lag must not win on the interpolation's rounding).
+    let Some(&top) = order.first() else {
         return out;
     };
-    let (scales, jn) = (base.scales, base.jn);
+    let j_top = singles[top].heldout.combined(&scales);
+    let first = order
+        .iter()
+        .copied()
+        .filter(|&i| singles[i].heldout.combined(&scales) <= j_top + PARSIMONY * jn)
+        .min_by_key(|&i| singles[i].full.params.len())
+        .unwrap_or(top);
     let best = &singles[first];
     let r = base.rank(best);
     // A best single below the acceptance share can still be half of a
@@ -268,9 +283,10 @@ fn search(
     // Look-alikes of the accepted effect: singles that also pass and
     // leave about as small a gap.
     let g_best = gap_above(r.heldout_error_after, jn);
-    out.lookalikes = order[1..]
+    out.lookalikes = order
         .iter()
         .copied()
+        .filter(|&i| i != first)
         .filter(|&i| {
             let o = base.rank(&singles[i]);
             o.reduction_percent >= 100.0 * ACCEPT

@@ -15,7 +15,7 @@ use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::fit::Prepared;
 use handling::diagnose::model::Augmented;
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+use handling::diagnose::synth::{generate, truth_values, Noise, Programme, SynthSpec};
 use handling::diagnose::DiagnoseSettings;
 use handling::tyre::{MagicSimple, Pac89, Tyre};
 use handling::vehicle::VehicleModel;
@@ -87,5 +87,30 @@ fn racing_log(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, diagnosis, racing_log);
+/// The slow-oval programme (the regime of a real autonomous racing car's
+/// oval log): 600 s in three runs at 25 Hz, cut into 20 s pieces and
+/// replayed at 20 ms, no rig data (the base identifies its axles from the
+/// runs, from its grid of starts), the bank withheld, against the full
+/// library: the real-log target of at most 60 s on 2 cores.
+fn slow_oval(c: &mut Criterion) {
+    let spec = SynthSpec {
+        effects: vec![(
+            EffectKind::BankProfile,
+            truth_values(EffectKind::BankProfile),
+        )],
+        seed: 1,
+        noise: Noise::default(),
+        programme: Programme::SlowOval,
+    };
+    let campaign = generate(&spec).campaign(EffectKind::ALL.to_vec(), DiagnoseSettings::default());
+    let mut g = c.benchmark_group("diagnose");
+    g.sample_size(10);
+    g.measurement_time(Duration::from_secs(600));
+    g.bench_function("slow_oval_600s_log_full_library", |b| {
+        b.iter(|| diagnose(black_box(&campaign), None).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, diagnosis, racing_log, slow_oval);
 criterion_main!(benches);

@@ -449,10 +449,17 @@ mod tests {
             // Measured 0.3 %: the replay sees the steer interpolated
             // linearly between 25 Hz samples (up to 0.5 % low at the sine
             // peaks), the truth the sine itself.
-            assert!((k / want - 1.0).abs() < 1e-2, "axle {i}: {k} against {want}");
+            assert!(
+                (k / want - 1.0).abs() < 1e-2,
+                "axle {i}: {k} against {want}"
+            );
         }
         // Measured 1.1 %, the same interpolation at the peaks.
-        assert!((friction(p[2]) / 0.9 - 1.0).abs() < 2e-2, "{}", friction(p[2]));
+        assert!(
+            (friction(p[2]) / 0.9 - 1.0).abs() < 2e-2,
+            "{}",
+            friction(p[2])
+        );
     }
 
     #[test]

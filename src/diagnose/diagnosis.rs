@@ -36,7 +36,7 @@ use super::base::AxleIdentification;
 use super::campaign::Campaign;
 use super::candidates::{base_models, combined_start, parameter_values};
 use super::crossval::{gap_above, prepare, reduction, singles, Context, Scored};
-use super::effects::{joined, EffectKind, EffectSet, Needs};
+use super::effects::{joined, Bound, EffectKind, EffectSet, Needs};
 use super::fit::{Channel, ChannelErrors};
 use super::model::Observed;
 pub use super::summary::observed_channel;
@@ -65,8 +65,9 @@ pub const DISAGREEMENT: f64 = 25.0;
 /// Look-alikes of the best single the verdict's search also starts from
 /// while the set found leaves a significant gap.
 pub const ALTERNATIVE_STARTS: usize = 2;
-/// Held-out error, in noise levels, by which a candidate must beat a
-/// simpler one (fewer parameters) to be preferred to it.
+/// Held-out error, in noise levels, by which a candidate that leaves a
+/// parameter idle must beat a simpler one (fewer parameters) to be
+/// preferred to it.
 pub const PARSIMONY: f64 = 0.1;
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
@@ -257,21 +258,24 @@ fn search(
         .collect();
     let order = &order[..];
     let (scales, jn) = (base.scales, base.jn);
-    // The best single, or a simpler one that does as well: a candidate
-    // with more parameters must beat it by PARSIMONY noise levels on
-    // held-out runs (a steer delay and a sensor delay are one on runs
-    // whose every response comes from the steer; the steer path's idle
-    // lag must not win on the interpolation's rounding).
+    // The best single, or a simpler one that does as well where the best
+    // leaves a parameter idle: a steer path whose lag stays off is a steer
+    // delay, one with a sensor delay on runs whose every response comes
+    // from the steer, and must not win on the interpolation's rounding.
     let Some(&top) = order.first() else {
         return out;
     };
     let j_top = singles[top].heldout.combined(&scales);
-    let first = order
-        .iter()
-        .copied()
-        .filter(|&i| singles[i].heldout.combined(&scales) <= j_top + PARSIMONY * jn)
-        .min_by_key(|&i| singles[i].full.params.len())
-        .unwrap_or(top);
+    let first = if idle(&singles[top], base.axle_count) {
+        order
+            .iter()
+            .copied()
+            .filter(|&i| singles[i].heldout.combined(&scales) <= j_top + PARSIMONY * jn)
+            .min_by_key(|&i| singles[i].full.params.len())
+            .unwrap_or(top)
+    } else {
+        top
+    };
     let best = &singles[first];
     let r = base.rank(best);
     // A best single below the acceptance share can still be half of a
@@ -332,6 +336,21 @@ fn search(
     out.combinations
         .sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
     out
+}
+
+/// Whether a fit leaves one of its effect parameters idle: at its
+/// physical limit, or within two standard errors of its off value (that
+/// part of the effect is off and it reduces to a simpler one).
+fn idle(sc: &Scored, axle_count: usize) -> bool {
+    let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
+    params.enumerate().any(|(i, q)| {
+        let (value, se) = (
+            sc.full.params[axle_count + i],
+            sc.full.std_errors[axle_count + i],
+        );
+        q.bound_at(value) == Some(Bound::Physical)
+            || (!q.off.is_nan() && (se.is_nan() || (value - q.off).abs() < 2.0 * se))
+    })
 }
 
 /// Greedy additions from `start`: the effect that best closes what is left,

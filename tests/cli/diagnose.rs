@@ -93,6 +93,12 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     }
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert!(d["confounded"].is_array());
+    // Constant-speed runs without ax: no candidate is worse in sample
+    // than the base it contains.
+    for r in d["ranking"].as_array().unwrap() {
+        let inside = r["insample_reduction_percent"].as_f64().unwrap();
+        assert!(inside >= -0.05, "{}: {inside} % in sample", r["effect"]);
+    }
 }
 
 fn campaign_err(dir: &Path) -> String {

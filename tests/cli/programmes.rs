@@ -28,7 +28,9 @@ fn racing(dir: &Path, programme: &str, effects: &str, candidates: &str) -> serde
     assert!(text.trim_end().ends_with("seed = 2"), "{text}");
     text += &format!("effects = [{candidates}]\nmax_effects = 1\n");
     fs::write(&v, text).unwrap();
-    diagnose_campaign(&c).1
+    let d = diagnose_campaign(&c).1;
+    assert_nested(&d);
+    d
 }
 
 fn reduction(d: &serde_json::Value, effect: &str) -> f64 {
@@ -264,4 +266,86 @@ fn without_a_bank_column_the_bank_is_estimated_from_the_lateral_kinematics() {
         stdout.contains("road: ") && stdout.contains("bank estimated from ay − u·r"),
         "{stdout}"
     );
+}
+
+/// A slow-oval campaign (no rig data: the base identifies its axles from
+/// the runs) with `effects` withheld, diagnosed against `candidates`.
+fn slow_oval(dir: &Path, effects: &str, candidates: &str) -> (String, serde_json::Value) {
+    let c = synth_campaign(
+        dir,
+        &format!("slow-oval-{effects}"),
+        &[
+            "--programme",
+            "slow-oval",
+            "--effects",
+            effects,
+            "--seed",
+            "2",
+        ],
+    );
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    assert!(!c.join("tyre_rig.csv").exists());
+    assert!(
+        text.contains("segment = 20") && text.contains("step = 0.02"),
+        "{text}"
+    );
+    fs::write(&v, text + &format!("effects = [{candidates}]\n")).unwrap();
+    diagnose_campaign(&c)
+}
+
+/// Every candidate starts its fit at the base model (its effect off) and
+/// so is never worse than it in sample.
+fn assert_nested(d: &serde_json::Value) {
+    for r in d["ranking"].as_array().unwrap() {
+        let inside = r["insample_reduction_percent"].as_f64().unwrap();
+        assert!(inside >= -0.05, "{}: {inside} % in sample", r["effect"]);
+    }
+}
+
+#[test]
+fn on_the_slow_oval_the_withheld_bank_is_named_with_axles_identified_from_the_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let (stdout, d) = slow_oval(
+        dir.path(),
+        "bank_profile",
+        "\"bank_profile\", \"road_bank\", \"sensor_bias\", \"steer_path\"",
+    );
+    assert!(
+        stdout.contains("verdict: bank_profile explains the gap"),
+        "{stdout}"
+    );
+    assert!(reduction(&d, "bank_profile") >= 50.0);
+    // The bank fitted jointly with the axles, from the bank as logged.
+    assert!((parameter(&d, "bank_profile.scale") - 1.0).abs() < 0.05);
+    // The base's axles are reported with what the runs say of them.
+    let axles = &d["base"]["axles"];
+    assert_eq!(axles["parameters"].as_array().unwrap().len(), 3);
+    assert!(axles["starts"].as_u64().unwrap() >= 2, "{axles}");
+    assert!(stdout.contains("front cornering coefficient"), "{stdout}");
+    assert_nested(&d);
+}
+
+#[test]
+fn on_the_slow_oval_a_steer_actuators_lag_is_named_apart_from_a_sensor_delay() {
+    let dir = tempfile::tempdir().unwrap();
+    let (stdout, d) = slow_oval(
+        dir.path(),
+        "steer_path",
+        "\"steer_path\", \"sensor_delay\", \"relaxation_length\"",
+    );
+    assert!(
+        stdout.contains("verdict: steer_path explains the gap"),
+        "{stdout}"
+    );
+    assert!(reduction(&d, "steer_path") >= 80.0);
+    // Truth: 0.05 s delay, 0.15 s lag.
+    let delay = parameter(&d, "steer_path.delay");
+    let lag = parameter(&d, "steer_path.lag");
+    assert!(
+        (delay - 0.05).abs() < 0.02 && (lag - 0.15).abs() < 0.03,
+        "{delay} {lag}"
+    );
+    assert!(reduction(&d, "sensor_delay") < reduction(&d, "steer_path") - 10.0);
+    assert_nested(&d);
 }

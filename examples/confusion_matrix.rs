@@ -15,7 +15,7 @@
 //! longitudinal and bank-profile ones. With `--programme slow-oval` (the
 //! Putnam-like light racing car at 5–21 m/s on a 20° banked oval, no rig
 //! data, sideslip and no ay, 20 s pieces) the rows are no effect,
-//! `bank_profile` and `steer_path`.
+//! `bank_profile`, `steer_path` and the two together.
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
 //! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
@@ -65,6 +65,7 @@ fn main() -> anyhow::Result<()> {
     } else if chosen.is_empty() && programme == Programme::SlowOval {
         truths.push(vec![EffectKind::BankProfile]);
         truths.push(vec![EffectKind::SteerPath]);
+        truths.push(vec![EffectKind::BankProfile, EffectKind::SteerPath]);
     } else if chosen.is_empty() && (model == Truth::FourWheel || programme.logged()) {
         truths.extend(model.effects(programme).into_iter().map(|e| vec![e]));
     } else if chosen.is_empty() {
@@ -75,6 +76,7 @@ fn main() -> anyhow::Result<()> {
             EffectKind::SensorDelay,
         ]);
         truths.push(vec![EffectKind::AeroLoad, EffectKind::YawInertia]);
+        truths.push(vec![EffectKind::RelaxationLength, EffectKind::SensorDelay]);
     } else {
         truths = vec![chosen];
     }

@@ -7,9 +7,8 @@
 
 use super::base::{identify_axles, AxleIdentification};
 use super::campaign::{BaseTyres, Campaign};
-use super::crossval::training_rows;
 use super::effects::{Bound, EffectKind, EffectSet, Parameter};
-use super::fit::{fit, refit, FitOutcome, Polish, Prepared, Problem};
+use super::fit::{fit, refit, training_rows, FitOutcome, Polish, Prepared, Problem};
 use super::model::Augmented;
 use super::report::ParameterValue;
 use crate::error::Error;

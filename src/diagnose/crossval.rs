@@ -1,18 +1,24 @@
 //! Scoring a candidate: its fit on all runs and its errors on held-out
 //! runs, each fold refitted from the all-run optimum; the held-out gap
 //! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
+//! The folds: run i in fold i mod k, with k the number of runs up to
+//! [`MAX_FOLDS`] (leave-one-run-out for up to that many runs).
 
 use super::base::axle_grid;
 use super::campaign::Campaign;
 use super::candidates::{with_effects, Bases, Setting};
-use super::diagnosis::MAX_FOLDS;
 use super::effects::{EffectKind, EffectSet};
-use super::fit::{fit, refit, swarm, ChannelErrors, FitOutcome, Polish, Prepared, Problem};
+use super::fit::{
+    fit, refit, swarm, training_rows, ChannelErrors, FitOutcome, Polish, Prepared, Problem,
+};
 use super::model::Observed;
 use crate::optim::local::Residuals;
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Largest number of folds.
+pub const MAX_FOLDS: usize = 8;
 
 /// Everything scored for one candidate.
 #[derive(Clone)]
@@ -223,21 +229,6 @@ const REGRID_GAIN: f64 = 0.01;
 /// joint axle fit out of the basin of the model without the input.
 fn as_logged(kind: EffectKind) -> Option<Vec<f64>> {
     (kind == EffectKind::BankProfile).then(|| vec![1.0, 0.0])
-}
-
-/// The residual rows of a fold's training runs (all but `held_out`) in the
-/// all-run problem, whose rows follow the runs' order.
-pub(super) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
-    let mut start = 0;
-    let mut rows = Vec::new();
-    for (i, r) in runs.iter().enumerate() {
-        let n = r.count();
-        if !held_out.contains(&i) {
-            rows.push(start..start + n);
-        }
-        start += n;
-    }
-    rows
 }
 
 pub(super) fn gap_above(j: f64, jn: f64) -> f64 {

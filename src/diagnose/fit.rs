@@ -768,6 +768,21 @@ const REFIT_MODEL_REJECTIONS: usize = 8;
 /// model alone (3 rejections, 20 steps) took 3,597.
 const REFIT_RELINEARISATIONS: usize = 4;
 
+/// The residual rows of a fold's training runs (all but `held_out`) in the
+/// all-run problem, whose rows follow the runs' order.
+pub(super) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut start = 0;
+    let mut rows = Vec::new();
+    for (i, r) in runs.iter().enumerate() {
+        let n = r.count();
+        if !held_out.contains(&i) {
+            rows.push(start..start + n);
+        }
+        start += n;
+    }
+    rows
+}
+
 /// Refits `problem` (the training runs of a fold, whose residual rows are
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
 /// optimum moves little when one run of several leaves, so the all-run
@@ -975,11 +990,7 @@ mod tests {
                 .map(|i| &runs[i])
                 .collect();
             let fold = Problem::new(axle_model, train, SCALES, AXLES.to_vec());
-            let quick = refit(
-                &fold,
-                &full,
-                &crate::diagnose::crossval::training_rows(&runs, &[held]),
-            );
+            let quick = refit(&fold, &full, &training_rows(&runs, &[held]));
             let slow = fit(&fold, &full.params, None, Polish::LevenbergMarquardt);
             assert!(quick.converged);
             assert!(
@@ -1017,7 +1028,7 @@ mod tests {
             SCALES,
             AXLES.to_vec(),
         );
-        let rows = crate::diagnose::crossval::training_rows(&runs, &[0]);
+        let rows = training_rows(&runs, &[0]);
         let quick = refit(&fold, &far, &rows);
         let slow = fit(&fold, &start, None, Polish::LevenbergMarquardt);
         assert!(quick.converged && slow.converged);

@@ -3,7 +3,8 @@
 //! the augmented model that carries them ([`model`]), the base model
 //! identified from the runs when there are no tyre data (`base`), the sensor effects
 //! ([`sensors`]), output-error fits over runs ([`fit`]) and the diagnosis
-//! that ranks the effects on held-out runs ([`diagnosis`]).
+//! that ranks the effects on held-out runs ([`diagnosis`]; its search for
+//! a verdict in `search`).
 
 mod base;
 pub mod campaign;
@@ -17,6 +18,7 @@ pub mod model;
 pub mod parts;
 pub mod proving_ground;
 pub mod report;
+mod search;
 pub mod sensors;
 mod summary;
 pub mod synth;

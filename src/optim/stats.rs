@@ -32,14 +32,23 @@ pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
         return None;
     }
     let s2 = sum_squares / m.saturating_sub(n).max(1) as f64;
-    let js = j.select_columns(seen.iter());
+    // Columns scaled to unit norm first (Jacobi scaling): parameters of
+    // very different units (a share near its limit beside an offset in
+    // rad/s) otherwise spread JᵀJ's singular values past the cut-off, and
+    // the pseudo-inverse drops directions the data do determine, giving
+    // standard errors orders of magnitude too small.
+    let mut js = j.select_columns(seen.iter());
+    let norms: Vec<f64> = js.column_iter().map(|c| c.norm()).collect();
+    for (mut c, &norm) in js.column_iter_mut().zip(&norms) {
+        c /= norm;
+    }
     let svd = (js.transpose() * &js).svd(true, true);
     let smax = svd.singular_values.max();
     let inv = svd.pseudo_inverse(1e-14 * smax).ok()?;
     let mut out = DMatrix::from_element(n, n, f64::NAN);
     for (a, &i) in seen.iter().enumerate() {
         for (b, &k) in seen.iter().enumerate() {
-            out[(i, k)] = s2 * inv[(a, b)];
+            out[(i, k)] = s2 * inv[(a, b)] / (norms[a] * norms[b]);
         }
     }
     Some(out)
@@ -97,5 +106,18 @@ mod tests {
         let b = standard_errors(&without, 0.3 * 3.0 / 2.0);
         assert!(a[1].is_nan());
         assert!((a[0] - b[0]).abs() < 1e-12 && (a[2] - b[1]).abs() < 1e-12);
+    }
+
+    #[test]
+    fn parameters_in_units_eight_orders_apart_keep_their_standard_errors() {
+        // The straight line with its slope in units 1e8 times smaller: the
+        // slope's standard error scales by 1e-8, the intercept's stays.
+        let x = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let j = DMatrix::from_fn(5, 2, |i, c| if c == 0 { 1.0 } else { x[i] });
+        let scaled = DMatrix::from_fn(5, 2, |i, c| if c == 0 { 1.0 } else { 1e8 * x[i] });
+        let a = standard_errors(&j, 0.3);
+        let b = standard_errors(&scaled, 0.3);
+        assert!((b[0] / a[0] - 1.0).abs() < 1e-9, "{a:?} {b:?}");
+        assert!((b[1] * 1e8 / a[1] - 1.0).abs() < 1e-9, "{a:?} {b:?}");
     }
 }

@@ -12,8 +12,10 @@
 //! saturates. The fit's box stops just short of them ([`AXLE_BOUNDS`]:
 //! k from 0.4 to 4,000 1/rad, D from 0.11 to 9); an optimum there is named
 //! with what it means and which way the data pull ([`AxleLimit`]). A rigid
-//! axle, one without force or a road without grip is no tyre: the base is
-//! then *degenerate* and the diagnosis gives no model-form verdict from it.
+//! axle, one without force, a road without grip, or an axle whose force
+//! peaks before 2° of slip (a stiff axle on little friction, acting like a
+//! sign function of its slip) is no tyre: the base is then *degenerate* and
+//! the diagnosis gives no model-form verdict from it.
 //! A friction that never saturates only says that the runs stay in the
 //! linear range: D is then not identified, which is reported, not refused.
 //!
@@ -141,6 +143,40 @@ impl AxleLimit {
     }
 }
 
+/// The smallest slip angle at which a pneumatic tyre's lateral force
+/// peaks, rad (2°): racing slicks peak at 4–6°, road tyres later.
+pub const PEAK_SLIP_MIN: f64 = 0.035;
+
+/// The slip angle at which an axle of coefficient `k` and friction `d`
+/// peaks, rad: `tan(π/2C)/B` with `B = k/(C·D)`.
+pub fn peak_slip(k: f64, d: f64) -> f64 {
+    (std::f64::consts::FRAC_PI_2 / SHAPE).tan() * SHAPE * d / k
+}
+
+/// The axles of shares `p` that peak before [`PEAK_SLIP_MIN`], said as
+/// reasons the base is no tyre: an axle that saturates within a fraction
+/// of a degree acts like a sign function of its slip, and its replays
+/// turn hypersensitive to their start (their standard errors say
+/// nothing).
+fn early_peaks(p: &[f64]) -> Vec<String> {
+    let d = friction(p[2]);
+    ["front", "rear"]
+        .iter()
+        .zip(&p[..2])
+        .filter_map(|(axle, &s)| {
+            let peak = peak_slip(coefficient(s), d);
+            (peak < PEAK_SLIP_MIN).then(|| {
+                format!(
+                    "the {axle} axle peaks at {:.2}° of slip (cornering coefficient over peak friction {:.0} 1/rad; no tyre peaks before {:.0}°): the data pull it to saturate early",
+                    peak.to_degrees(),
+                    coefficient(s) / d,
+                    PEAK_SLIP_MIN.to_degrees()
+                )
+            })
+        })
+        .collect()
+}
+
 /// One axle characteristic as identified, in physical units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AxleValue {
@@ -211,7 +247,7 @@ impl AxleIdentification {
             }
             best
         });
-        let reasons: Vec<String> = parameters
+        let mut reasons: Vec<String> = parameters
             .iter()
             .filter_map(|v| {
                 v.limit
@@ -219,6 +255,7 @@ impl AxleIdentification {
                     .map(|l| l.meaning(v.name))
             })
             .collect();
+        reasons.extend(early_peaks(p));
         Self {
             parameters,
             largest_correlation,
@@ -255,6 +292,9 @@ impl AxleIdentification {
         );
         if let Some((a, b, rho)) = &self.largest_correlation {
             s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
+        }
+        if let Some(why) = &self.degenerate {
+            s.push_str(&format!("; no tyre: {why}"));
         }
         s
     }
@@ -460,6 +500,24 @@ mod tests {
             "{}",
             friction(p[2])
         );
+    }
+
+    #[test]
+    fn an_axle_that_peaks_before_two_degrees_is_no_tyre() {
+        // Putnam's base: rear 284 1/rad at D 1.0 peaks at 0.69°.
+        let id = AxleIdentification::new(&shares(43.1, 283.8, 1.0), &[0.01; 3], None, 3);
+        let why = id.degenerate.expect("a rear peaking at 0.69° is no tyre");
+        assert!(why.contains("rear axle peaks at 0.69°"), "{why}");
+        assert!(!why.contains("front"), "{why}");
+        // The same stiffness far from saturating (D 9) is a tyre.
+        let linear = AxleIdentification::new(&shares(43.1, 283.8, 9.0), &[0.01; 3], None, 3);
+        assert_eq!(linear.degenerate, None);
+        // The peak is where the axle's force is largest.
+        let (f, _) = axle_tyres(&shares(20.0, 20.0, 1.0));
+        let Tyre::MagicSimple(m) = f else { panic!() };
+        let force = |a: f64| (m.c * (m.b * a).atan()).sin();
+        let a = peak_slip(20.0, 1.0);
+        assert!(force(a) > force(a * 0.999) && force(a) > force(a * 1.001), "{a}");
     }
 
     #[test]

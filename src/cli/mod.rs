@@ -48,7 +48,8 @@ enum Command {
     Diagnose(diagnose::DiagnoseArgs),
     /// Virtual proving ground: writes a campaign folder measured on a truth
     /// model with the given effects on (noise, UniTire tyres; the diagnosis
-    /// fits PAC89 to its rig data).
+    /// fits PAC89 to its rig data, or on the slow oval, which has none,
+    /// identifies the axles from the runs).
     Synth(diagnose::SynthArgs),
     /// Forces and moments of a tyre file (.tir or .toml) at the points of a
     /// CSV with columns fz, kappa, alpha, camber, speed and optionally

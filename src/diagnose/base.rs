@@ -517,7 +517,10 @@ mod tests {
         let Tyre::MagicSimple(m) = f else { panic!() };
         let force = |a: f64| (m.c * (m.b * a).atan()).sin();
         let a = peak_slip(20.0, 1.0);
-        assert!(force(a) > force(a * 0.999) && force(a) > force(a * 1.001), "{a}");
+        assert!(
+            force(a) > force(a * 0.999) && force(a) > force(a * 1.001),
+            "{a}"
+        );
     }
 
     #[test]

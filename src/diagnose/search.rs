@@ -191,14 +191,17 @@ pub(super) fn search(
     max_effects: usize,
 ) -> Search {
     let mut out = Search::default();
-    // A candidate whose axles are no tyre cannot be the verdict, nor
-    // start one.
-    let order: Vec<usize> = order
+    // A single whose axles are no tyre cannot be the verdict, nor start
+    // one; it can still join a set (a steer lag whose axles collapse
+    // alone on a banked oval is a tyre's once the bank is in), so the
+    // greedy additions try every effect (`all`).
+    let all = order;
+    let usable: Vec<usize> = order
         .iter()
         .copied()
         .filter(|&i| base.degenerate(&singles[i]).is_none())
         .collect();
-    let order = &order[..];
+    let order = &usable[..];
     let (scales, jn) = (base.scales, base.jn);
     let Some(first) = first_single(singles, order, base) else {
         return out;
@@ -212,7 +215,7 @@ pub(super) fn search(
         return out;
     }
     out.lookalikes = lookalikes(singles, order, first, &r, base);
-    let mut current = greedy(ctx, singles, order, base, max_effects, best, &mut out);
+    let mut current = greedy(ctx, singles, all, base, max_effects, best, &mut out);
     // The best single can be a look-alike that mimics part of a pair and
     // leads the greedy search away from it (a fast, lightly damped roll
     // steering the axles looks like a yaw inertia and aero load together).
@@ -224,15 +227,7 @@ pub(super) fn search(
         if jc <= SIGNIFICANT * jn {
             break;
         }
-        let other = greedy(
-            ctx,
-            singles,
-            order,
-            base,
-            max_effects,
-            &singles[i],
-            &mut out,
-        );
+        let other = greedy(ctx, singles, all, base, max_effects, &singles[i], &mut out);
         let (g, g_other) = (
             gap_above(jc, jn),
             gap_above(other.heldout.combined(&scales), jn),

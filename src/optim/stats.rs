@@ -18,8 +18,9 @@ pub fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
 /// The covariance of the parameters of a fit whose residuals have Jacobian
 /// `j` and sum of squares `sum_squares` at the optimum, over the columns
 /// the data see (the rows and columns of unseen parameters are NaN).
-/// (JᵀJ) is inverted by SVD with singular values below 1e-14 of the largest
-/// dropped, so a near-singular fit gives large variances, not an error.
+/// (JᵀJ), its columns scaled to unit norm, is inverted by SVD with singular
+/// values below 1e-14 of the largest dropped; the parameters along a
+/// dropped direction (they trade exactly) are NaN too.
 /// None when no parameter is seen.
 pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
     let (m, n) = j.shape();
@@ -44,11 +45,28 @@ pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
     }
     let svd = (js.transpose() * &js).svd(true, true);
     let smax = svd.singular_values.max();
-    let inv = svd.pseudo_inverse(1e-14 * smax).ok()?;
+    let cut = 1e-14 * smax;
+    // A direction the data do not determine (two parameters that trade
+    // exactly) is dropped by the pseudo-inverse, which would then report
+    // the minimum-norm variance along it, far too small: the parameters
+    // that take part in it have no standard error (NaN).
+    let mut undetermined = vec![false; seen.len()];
+    if let Some(v_t) = &svd.v_t {
+        for (r, &sv) in svd.singular_values.iter().enumerate() {
+            if sv <= cut {
+                for (a, u) in undetermined.iter_mut().enumerate() {
+                    *u |= v_t[(r, a)].abs() > 1e-3;
+                }
+            }
+        }
+    }
+    let inv = svd.pseudo_inverse(cut).ok()?;
     let mut out = DMatrix::from_element(n, n, f64::NAN);
     for (a, &i) in seen.iter().enumerate() {
         for (b, &k) in seen.iter().enumerate() {
-            out[(i, k)] = s2 * inv[(a, b)] / (norms[a] * norms[b]);
+            if !undetermined[a] && !undetermined[b] {
+                out[(i, k)] = s2 * inv[(a, b)] / (norms[a] * norms[b]);
+            }
         }
     }
     Some(out)
@@ -119,5 +137,19 @@ mod tests {
         let b = standard_errors(&scaled, 0.3);
         assert!((b[0] / a[0] - 1.0).abs() < 1e-9, "{a:?} {b:?}");
         assert!((b[1] * 1e8 / a[1] - 1.0).abs() < 1e-9, "{a:?} {b:?}");
+    }
+
+    #[test]
+    fn parameters_that_trade_exactly_have_no_standard_error() {
+        // y = a + b + c·x: a and b enter only as their sum.
+        let x = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let j = DMatrix::from_fn(5, 3, |i, c| if c < 2 { 1.0 } else { x[i] });
+        let se = standard_errors(&j, 0.3);
+        assert!(se[0].is_nan() && se[1].is_nan(), "{se:?}");
+        // The slope is still determined, with the textbook error.
+        assert!(
+            (se[2] - (0.3 / 2.0 / 10.0f64).sqrt()).abs() < 1e-12,
+            "{se:?}"
+        );
     }
 }

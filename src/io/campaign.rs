@@ -23,7 +23,7 @@
 //! own sample times). Units: SI, rad.
 
 use super::clean::{
-    clean_run, median, quantile, slice, CleanSettings, CleaningReport, GlitchKind, Piece,
+    clean_run, median, quantile, segments, CleanSettings, CleaningReport, GlitchKind, Piece,
 };
 use super::rig::read_rig;
 use super::tables::{check_road, check_vehicle, load_tyre, Road};
@@ -541,32 +541,6 @@ fn check_length(run: &MeasuredRun) -> Result<(), InputError> {
         ));
     }
     Ok(())
-}
-
-/// Cuts a run into pieces of `length` seconds (the last one joins its
-/// predecessor when shorter than half a piece, or than a run must be,
-/// [`MIN_RUN_SECONDS`]).
-fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
-    let t0 = run.t[0];
-    let total = run.t[run.t.len() - 1] - t0;
-    let mut count = ((total / length).round() as usize).max(1);
-    if count > 1 && total - (count - 1) as f64 * length < MIN_RUN_SECONDS {
-        count -= 1;
-    }
-    let mut out = Vec::new();
-    let mut lo = 0;
-    for k in 0..count {
-        let end = if k + 1 == count {
-            run.t.len()
-        } else {
-            run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
-        };
-        if end > lo + 1 {
-            out.push(slice(&run, lo, end, &format!("[{}]", k + 1)));
-        }
-        lo = end;
-    }
-    out
 }
 
 #[cfg(test)]

@@ -46,7 +46,7 @@ use crate::error::ParamError;
 use crate::identify::data::gauss;
 use crate::identify::data::RigData;
 use crate::manoeuvre::{Manoeuvre, RampSteer, StepSteer, SweepSteer};
-use crate::measured::clean::{clean_runs, slice, CleanSettings, MIN_RUN_SECONDS};
+use crate::measured::clean::{clean_runs, segments, CleanSettings};
 use crate::measured::MeasuredRun;
 use crate::tyre::ModelName;
 use crate::tyre::{SlipState, Tyre, TyreModel};
@@ -474,32 +474,6 @@ fn finish(
             Truth::FourWheel => four_wheel_campaign_roll(),
         },
     }
-}
-
-/// A run cut into pieces of `length` seconds, the last one joining its
-/// predecessor when shorter than [`MIN_RUN_SECONDS`] (as a campaign's
-/// `[runs] segment` cuts a file).
-fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
-    let t0 = run.t[0];
-    let total = run.t[run.t.len() - 1] - t0;
-    let mut count = ((total / length).round() as usize).max(1);
-    if count > 1 && total - (count - 1) as f64 * length < MIN_RUN_SECONDS {
-        count -= 1;
-    }
-    let mut out = Vec::new();
-    let mut lo = 0;
-    for k in 0..count {
-        let end = if k + 1 == count {
-            run.t.len()
-        } else {
-            run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
-        };
-        if end > lo + 1 {
-            out.push(slice(&run, lo, end, &format!("[{}]", k + 1)));
-        }
-        lo = end;
-    }
-    out
 }
 
 /// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.

@@ -56,7 +56,8 @@ pub(crate) use glitches::{median, quantile};
 pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{
-    clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked, slice,
+    clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked,
+    segments, slice,
 };
 pub use report::{
     CleaningReport, Glitch, GlitchCounts, GlitchKind, HeldChannel, Piece, RunChannel, SlowKind,

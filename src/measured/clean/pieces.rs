@@ -13,6 +13,32 @@ use super::{CleanSettings, GAP_INTERVALS, STANDSTILL_SPEED};
 use crate::measured::MeasuredRun;
 use std::path::PathBuf;
 
+/// Cuts a run into pieces of `length` seconds, labelled `[1]`, `[2]`, …
+/// (a campaign's `[runs] segment`): the last one joins its predecessor
+/// when shorter than a run must be ([`super::MIN_RUN_SECONDS`]).
+pub fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
+    let t0 = run.t[0];
+    let total = run.t[run.t.len() - 1] - t0;
+    let mut count = ((total / length).round() as usize).max(1);
+    if count > 1 && total - (count - 1) as f64 * length < super::MIN_RUN_SECONDS {
+        count -= 1;
+    }
+    let mut out = Vec::new();
+    let mut lo = 0;
+    for k in 0..count {
+        let end = if k + 1 == count {
+            run.t.len()
+        } else {
+            run.t.partition_point(|&x| x < t0 + (k + 1) as f64 * length)
+        };
+        if end > lo + 1 {
+            out.push(slice(&run, lo, end, &format!("[{}]", k + 1)));
+        }
+        lo = end;
+    }
+    out
+}
+
 /// The rows `lo..hi` of a run, named with `label` appended to its path.
 pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRun {
     let cut = |v: &Vec<f64>| v[lo..hi].to_vec();

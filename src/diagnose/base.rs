@@ -137,7 +137,7 @@ impl AxleLimit {
                 "{name} at its physical limit 0.11 (a road without grip): the data pull it lower"
             ),
             AxleLimit::Linear => format!(
-                "{name} at 9, a tyre that never saturates on these runs: they stay in the linear range and do not identify it"
+                "{name} at the top of its range (9): a tyre that never saturates on these runs, which stay in its linear range and do not identify it"
             ),
         }
     }
@@ -277,16 +277,21 @@ impl AxleIdentification {
                         &format!("{} {:.digits$}", v.name, v.value),
                         1,
                     ),
-                    None if v.std_error.is_finite() => format!(
-                        "{} {:.digits$} ± {:.1e} {}",
-                        v.name, v.value, v.std_error, v.unit
-                    ),
+                    None if v.std_error.is_finite() => {
+                        // ± 5.1, not ± 5.1e0; ± 2.7e-4 where it is small.
+                        let se = if v.std_error >= 0.1 {
+                            format!("{:.1}", v.std_error)
+                        } else {
+                            format!("{:.1e}", v.std_error)
+                        };
+                        format!("{} {:.digits$} ± {se} {}", v.name, v.value, v.unit)
+                    }
                     None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
                 }
             })
             .collect();
         let mut s = format!(
-            "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; best of {} starts from a grid; refitted with every candidate): {}",
+            "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; cornering coefficient = cornering stiffness per unit load; best of {} starts from a grid; refitted with every candidate): {}",
             self.starts,
             values.join(", ")
         );

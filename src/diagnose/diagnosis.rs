@@ -188,6 +188,20 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
             false
         })
         .collect();
+    // A bank seen through the yaw rate alone: axles identified from the
+    // same runs can take up its lateral force (a banked oval without
+    // sideslip or ay diagnosed "no significant gap").
+    let blind = c
+        .runs
+        .iter()
+        .filter(|r| r.bank.is_some() && r.beta.is_none() && r.ay.is_none())
+        .count();
+    if blind > 0 && matches!(c.tyres, super::campaign::BaseTyres::FromRuns) {
+        notes.push(format!(
+            "bank_profile: {blind} of {} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them",
+            c.runs.len()
+        ));
+    }
     (effects, notes)
 }
 

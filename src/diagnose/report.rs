@@ -50,6 +50,9 @@ pub struct Ranked {
     pub effect: String,
     /// The effects.
     pub effects: Vec<EffectKind>,
+    /// The axle characteristics refitted with them (no tyre data), with
+    /// their standard errors and the limits they stand on.
+    pub axles: Option<Vec<super::base::AxleValue>>,
     /// Fitted parameters.
     pub parameters: Vec<ParameterValue>,
     /// Held-out combined error J of the base model.

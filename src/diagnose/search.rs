@@ -129,6 +129,10 @@ impl Baseline {
         Ranked {
             effect: joined(&sc.kinds, "+"),
             effects: sc.kinds.clone(),
+            axles: (self.axle_count == 3).then(|| {
+                let (p, se) = (&sc.full.params, &sc.full.std_errors);
+                AxleIdentification::new(&p[..3], &se[..3], None, 0).parameters
+            }),
             parameters: parameter_values(&sc.kinds, &sc.full, self.axle_count),
             heldout_error_before: self.j0,
             heldout_error_after: j,

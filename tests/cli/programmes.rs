@@ -323,6 +323,19 @@ fn on_the_slow_oval_the_withheld_bank_is_named_with_axles_identified_from_the_ru
     assert_eq!(axles["parameters"].as_array().unwrap().len(), 3);
     assert!(axles["starts"].as_u64().unwrap() >= 2, "{axles}");
     assert!(stdout.contains("front cornering coefficient"), "{stdout}");
+    // The bank's own axles, refitted with it, are a tyre's: coefficients
+    // off their limits, in the range of car tyres.
+    let row = d["ranking"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["effect"] == "bank_profile")
+        .unwrap();
+    let axles = row["axles"].as_array().expect("the refitted axles");
+    for a in &axles[..2] {
+        let k = a["value"].as_f64().unwrap();
+        assert!(a["limit"].is_null() && (3.0..100.0).contains(&k), "{a}");
+    }
     assert_nested(&d);
 }
 
@@ -348,4 +361,46 @@ fn on_the_slow_oval_a_steer_actuators_lag_is_named_apart_from_a_sensor_delay() {
     );
     assert!(reduction(&d, "sensor_delay") < reduction(&d, "steer_path") - 10.0);
     assert_nested(&d);
+}
+
+#[test]
+fn a_bank_logged_without_sideslip_or_ay_is_said_to_show_only_in_the_yaw_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(
+        dir.path(),
+        "blind",
+        &["--programme", "slow-oval", "--effects", "bank_profile"],
+    );
+    // The logger of this car records no sideslip: drop the column.
+    for entry in fs::read_dir(c.join("runs")).unwrap() {
+        let path = entry.unwrap().path();
+        let text = fs::read_to_string(&path).unwrap();
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let i = header.iter().position(|h| *h == "beta").unwrap();
+        let drop = |l: &str| {
+            let mut cells: Vec<&str> = l.split(',').collect();
+            cells.remove(i);
+            cells.join(",") + "\n"
+        };
+        let out: String = std::iter::once(drop(&header.join(",")))
+            .chain(lines.map(drop))
+            .collect();
+        fs::write(&path, out).unwrap();
+    }
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap() + "effects = [\"bank_profile\"]\n";
+    fs::write(&v, text).unwrap();
+    let (stdout, d) = diagnose_campaign(&c);
+    let note = "have a bank channel but neither sideslip nor ay";
+    assert!(stdout.contains(note), "{stdout}");
+    assert!(
+        d["notes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|n| n.as_str().unwrap().contains(note)),
+        "{}",
+        d["notes"]
+    );
 }

@@ -423,42 +423,20 @@ mod tests {
     /// Runs of a car whose axles are the simplified Magic Formula of
     /// shares `truth`: sine steers at three speeds, 25 Hz, yaw rate and ay.
     fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::fit::Prepared> {
-        use crate::manoeuvre::{Manoeuvre, SineSteer};
-        use crate::measured::MeasuredRun;
-        use crate::sim::Drive;
+        use crate::manoeuvre::SineSteer;
         use crate::vehicle::{Vehicle, VehicleModel};
         let (f, r) = axle_tyres(truth);
         let car = Augmented::new(VehicleModel::new(Vehicle::compact_sedan(), f, r), 1.0);
         (0..3)
             .map(|k| {
-                let m = Manoeuvre::Sine(SineSteer {
+                let m = SineSteer {
                     speed: 12.0 + 8.0 * k as f64,
                     amplitude: 0.03,
                     frequency: 0.4 + 0.2 * k as f64,
                     start: 0.5,
                     end: 8.0,
-                });
-                let h = car.simulate_from(&Drive::new(&m, 1e-3), 0.0, 0.0);
-                let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
-                let at = |v: &[f64]| -> Vec<f64> {
-                    t.iter()
-                        .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
-                        .collect()
                 };
-                let run = MeasuredRun {
-                    path: format!("run{k}.csv").into(),
-                    speed: at(&h.speed),
-                    steer: at(&h.steer),
-                    yaw_rate: at(&h.yaw_rate),
-                    ay: Some(at(&h.ay)),
-                    beta: None,
-                    roll: None,
-                    bank: None,
-                    ax: None,
-                    masked: Vec::new(),
-                    t,
-                };
-                crate::diagnose::fit::Prepared::new(&run, 0.01, 25.0)
+                crate::diagnose::fit::tests::sine_run(&car, k, m)
             })
             .collect()
     }

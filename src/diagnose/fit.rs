@@ -891,7 +891,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::manoeuvre::{Manoeuvre, SineSteer};
     use crate::measured::MeasuredRun;
@@ -908,6 +908,33 @@ mod tests {
         )
     }
 
+    /// The sine steer `m` driven by `truth`, logged at 25 Hz for 8 s (yaw
+    /// rate and ay, no sideslip) as `run{k}.csv` and prepared for replays
+    /// at 10 ms.
+    pub(crate) fn sine_run(truth: &Augmented, k: usize, m: SineSteer) -> Prepared {
+        let h = truth.simulate_from(&Drive::new(&Manoeuvre::Sine(m), 1e-3), 0.0, 0.0);
+        let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
+        let at = |v: &[f64]| -> Vec<f64> {
+            t.iter()
+                .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
+                .collect()
+        };
+        let run = MeasuredRun {
+            path: format!("run{k}.csv").into(),
+            speed: at(&h.speed),
+            steer: at(&h.steer),
+            yaw_rate: at(&h.yaw_rate),
+            ay: Some(at(&h.ay)),
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+            t,
+        };
+        Prepared::new(&run, 0.01, 25.0)
+    }
+
     /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
     /// model-form gap far above the noise, as on a real log.
     fn runs() -> Vec<Prepared> {
@@ -918,34 +945,14 @@ mod tests {
         );
         (0..5)
             .map(|k| {
-                let m = Manoeuvre::Sine(SineSteer {
+                let m = SineSteer {
                     speed: 15.0 + 4.0 * k as f64,
                     amplitude: 0.02 + 0.01 * k as f64,
                     frequency: 0.3 + 0.15 * k as f64,
                     start: 0.5,
                     end: 8.0,
-                });
-                let h = truth.simulate_from(&Drive::new(&m, 1e-3), 0.0, 0.0);
-                let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
-                let at = |v: &[f64]| -> Vec<f64> {
-                    t.iter()
-                        .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
-                        .collect()
                 };
-                let run = MeasuredRun {
-                    path: format!("run{k}.csv").into(),
-                    speed: at(&h.speed),
-                    steer: at(&h.steer),
-                    yaw_rate: at(&h.yaw_rate),
-                    ay: Some(at(&h.ay)),
-                    beta: None,
-                    roll: None,
-                    bank: None,
-                    ax: None,
-                    masked: Vec::new(),
-                    t,
-                };
-                Prepared::new(&run, 0.01, 25.0)
+                sine_run(&truth, k, m)
             })
             .collect()
     }

@@ -21,12 +21,7 @@ fn roll_camber_on_an_independent_truth_is_named_and_its_scores_agree() {
     assert!(vehicle.contains("[roll]"), "{vehicle}");
     let (_, d) = diagnose_campaign(&campaign);
     assert_eq!(verdict_of(&d), vec!["roll_camber"], "{}", d["verdict"]);
-    let r = d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["effect"] == "roll_camber")
-        .unwrap();
+    let r = ranked(&d, "roll_camber");
     let held = r["reduction_percent"].as_f64().unwrap();
     let inside = r["insample_reduction_percent"].as_f64().unwrap();
     // Every fold refit converged, and the held-out reduction is what the

@@ -78,12 +78,7 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     assert_eq!(d["campaign"], "delay_0.05");
     // The verdict's row (a steer-path delay, a look-alike with an idle
     // lag parameter, may rank above it within PARSIMONY).
-    let top = d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["effect"] == "sensor_delay")
-        .unwrap();
+    let top = ranked(&d, "sensor_delay");
     // The delay is recovered (truth 0.05 s) and most of the gap goes.
     let delay = top["parameters"][0]["value"].as_f64().unwrap();
     assert!((delay - 0.05).abs() < 0.005, "{delay}");

@@ -162,6 +162,16 @@ pub(crate) fn diagnose_campaign(campaign: &Path) -> (String, serde_json::Value) 
     diagnose_to(campaign, &campaign.with_extension("out"))
 }
 
+/// The ranking row of `effect` (a single or `a+b`) in a diagnosis.
+pub(crate) fn ranked<'a>(d: &'a serde_json::Value, effect: &str) -> &'a serde_json::Value {
+    d["ranking"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["effect"] == effect)
+        .unwrap_or_else(|| panic!("{effect} is not ranked"))
+}
+
 /// The effects a diagnosis's verdict names.
 pub(crate) fn verdict_of(d: &serde_json::Value) -> Vec<String> {
     d["verdict"]["effects"]

@@ -34,14 +34,7 @@ fn racing(dir: &Path, programme: &str, effects: &str, candidates: &str) -> serde
 }
 
 fn reduction(d: &serde_json::Value, effect: &str) -> f64 {
-    d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["effect"] == effect)
-        .unwrap()["reduction_percent"]
-        .as_f64()
-        .unwrap()
+    ranked(d, effect)["reduction_percent"].as_f64().unwrap()
 }
 
 fn parameter(d: &serde_json::Value, name: &str) -> f64 {
@@ -325,12 +318,7 @@ fn on_the_slow_oval_the_withheld_bank_is_named_with_axles_identified_from_the_ru
     assert!(stdout.contains("front cornering coefficient"), "{stdout}");
     // The bank's own axles, refitted with it, are a tyre's: coefficients
     // off their limits, in the range of car tyres.
-    let row = d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["effect"] == "bank_profile")
-        .unwrap();
+    let row = ranked(&d, "bank_profile");
     let axles = row["axles"].as_array().expect("the refitted axles");
     for a in &axles[..2] {
         let k = a["value"].as_f64().unwrap();

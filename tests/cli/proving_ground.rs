@@ -60,12 +60,7 @@ fn four_wheel_truth_gives_no_gap_alone_and_its_sensor_delay_is_named() {
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
     // The verdict's row (a steer-path delay, a look-alike with an idle
     // lag parameter, may rank above it within PARSIMONY).
-    let top = d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["effect"] == "sensor_delay")
-        .unwrap();
+    let top = ranked(&d, "sensor_delay");
     let delay = top["parameters"][0]["value"].as_f64().unwrap();
     assert!((delay - 0.05).abs() < 0.005, "{delay}");
     assert!(top["reduction_percent"].as_f64().unwrap() > 70.0);

@@ -1,0 +1,391 @@
+//! The shape of the source tree, checked: no import cycle between files, no
+//! source file over the size a reader can hold, no internal labels.
+//!
+//! The import graph is read from the text of `src/`: every `crate::`,
+//! `super::` and `self::` path (in `use` items, grouped or not, and inline in
+//! code) is resolved to the file of the deepest module it names. A path that
+//! goes through a re-export (`pub use child::Item` in a parent) is followed to
+//! where the item lives, so a parent that only re-exports its children and a
+//! child that uses its parent's own items are not mistaken for a cycle; a
+//! parent's `mod child;` declaration is not an import.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// Module path (`["diagnose", "fit"]`) of every file under `src/`.
+fn modules(root: &Path) -> BTreeMap<Vec<String>, PathBuf> {
+    let mut out = BTreeMap::new();
+    let mut stack = vec![root.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            if path.extension().and_then(|e| e.to_str()) != Some("rs") {
+                continue;
+            }
+            let rel = path.strip_prefix(root).unwrap();
+            let mut segs: Vec<String> = rel
+                .iter()
+                .map(|s| s.to_string_lossy().trim_end_matches(".rs").to_string())
+                .collect();
+            let last = segs.last().unwrap().clone();
+            if last == "mod" || (segs.len() == 1 && (last == "lib" || last == "main")) {
+                segs.pop();
+            }
+            if segs.is_empty() && last == "main" {
+                continue; // the binary: it imports the library, nothing imports it
+            }
+            out.insert(segs, path);
+        }
+    }
+    out
+}
+
+/// Code without comments and string literals (a doc comment that names a
+/// path is not an import).
+fn code_of(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let b: Vec<char> = text.chars().collect();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == '/' && b.get(i + 1) == Some(&'/') {
+            while i < b.len() && b[i] != '\n' {
+                i += 1;
+            }
+        } else if b[i] == '/' && b.get(i + 1) == Some(&'*') {
+            i += 2;
+            while i + 1 < b.len() && !(b[i] == '*' && b[i + 1] == '/') {
+                i += 1;
+            }
+            i += 2;
+        } else if b[i] == '"' {
+            i += 1;
+            while i < b.len() && b[i] != '"' {
+                if b[i] == '\\' {
+                    i += 1;
+                }
+                i += 1;
+            }
+            i += 1;
+            out.push_str("\"\"");
+        } else if b[i] == 'r' && (b.get(i + 1) == Some(&'"') || b.get(i + 1) == Some(&'#')) {
+            // raw string r"…" or r#"…"#
+            let mut j = i + 1;
+            let mut hashes = 0;
+            while b.get(j) == Some(&'#') {
+                hashes += 1;
+                j += 1;
+            }
+            if b.get(j) != Some(&'"') || (i > 0 && (b[i - 1].is_alphanumeric() || b[i - 1] == '_')) {
+                out.push(b[i]);
+                i += 1;
+                continue;
+            }
+            j += 1;
+            loop {
+                if j >= b.len() {
+                    break;
+                }
+                if b[j] == '"' && (0..hashes).all(|k| b.get(j + 1 + k) == Some(&'#')) {
+                    j += 1 + hashes;
+                    break;
+                }
+                j += 1;
+            }
+            i = j;
+            out.push_str("\"\"");
+        } else if b[i] == '\''
+            && b.get(i + 2) == Some(&'\'')
+            && b.get(i + 1).is_some()
+        {
+            i += 3; // a char literal such as '"'
+            out.push_str("' '");
+        } else {
+            out.push(b[i]);
+            i += 1;
+        }
+    }
+    out
+}
+
+/// Every path in a `use` tree: `a::{b, c::{d, e}}` gives `a::b`, `a::c::d`,
+/// `a::c::e`.
+fn expand(tree: &str) -> Vec<String> {
+    let tree: String = tree.chars().filter(|c| !c.is_whitespace()).collect();
+    let Some(open) = tree.find('{') else {
+        return vec![tree.split(" as ").next().unwrap_or(&tree).to_string()];
+    };
+    let prefix = &tree[..open];
+    let inner = &tree[open + 1..tree.rfind('}').unwrap_or(tree.len())];
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0, 0);
+    for (i, c) in inner.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&inner[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&inner[start..]);
+    parts
+        .into_iter()
+        .filter(|p| !p.is_empty())
+        .flat_map(expand)
+        .map(|p| {
+            if p == "self" {
+                prefix.trim_end_matches("::").to_string()
+            } else {
+                format!("{prefix}{p}")
+            }
+        })
+        .collect()
+}
+
+/// The `use` items of a file: (is it `pub`, every path it names).
+fn use_items(code: &str) -> Vec<(bool, Vec<String>)> {
+    let mut out = Vec::new();
+    let mut rest = code;
+    while let Some(at) = find_word(rest, "use") {
+        let before = rest[..at].trim_end();
+        let public = before.ends_with("pub") || before.ends_with(')') && before.contains("pub(");
+        let tail = &rest[at + 3..];
+        let end = tail.find(';').unwrap_or(tail.len());
+        let paths = expand(tail[..end].trim())
+            .into_iter()
+            .map(|p| p.split("as").next().unwrap().to_string())
+            .collect();
+        out.push((public, paths));
+        rest = &tail[end..];
+    }
+    out
+}
+
+/// The byte offset of `word` as a whole word at the start of an item.
+fn find_word(s: &str, word: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(i) = s[from..].find(word) {
+        let at = from + i;
+        let before = s[..at].chars().last();
+        let after = s[at + word.len()..].chars().next();
+        let starts = before.is_none_or(|c| c.is_whitespace() || c == ';' || c == '}' || c == '{');
+        if starts && after.is_some_and(|c| c.is_whitespace()) {
+            return Some(at);
+        }
+        from = at + word.len();
+    }
+    None
+}
+
+/// Inline paths `crate::a::b`, `super::a`, `self::a` in code.
+fn inline_paths(code: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for head in ["crate::", "super::", "self::"] {
+        let mut from = 0;
+        while let Some(i) = code[from..].find(head) {
+            let at = from + i;
+            let prev = code[..at].chars().last();
+            from = at + head.len();
+            if prev.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+                continue;
+            }
+            let len = code[at..]
+                .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                .unwrap_or(code.len() - at);
+            out.push(code[at..at + len].trim_end_matches(':').to_string());
+        }
+    }
+    out
+}
+
+/// A path relative to module `at` made absolute (segments after `crate`).
+fn absolute(at: &[String], is_mod_file: bool, path: &str) -> Option<Vec<String>> {
+    let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
+    let (mut base, mut rest): (Vec<String>, &[&str]) = match segs.first()? {
+        &"crate" => (vec![], &segs[1..]),
+        &"self" => (at.to_vec(), &segs[1..]),
+        &"super" => {
+            let mut b = at.to_vec();
+            b.pop();
+            (b, &segs[1..])
+        }
+        _ => return None,
+    };
+    while rest.first() == Some(&"super") {
+        base.pop();
+        rest = &rest[1..];
+    }
+    let _ = is_mod_file;
+    base.extend(rest.iter().map(|s| s.to_string()));
+    Some(base)
+}
+
+struct Tree {
+    files: BTreeMap<Vec<String>, PathBuf>,
+    /// Per module: re-exported name → absolute path it comes from.
+    reexports: BTreeMap<Vec<String>, BTreeMap<String, Vec<String>>>,
+    code: BTreeMap<Vec<String>, String>,
+}
+
+impl Tree {
+    fn read(root: &Path) -> Tree {
+        let files = modules(root);
+        let mut code = BTreeMap::new();
+        let mut reexports = BTreeMap::new();
+        for (m, path) in &files {
+            let c = code_of(&fs::read_to_string(path).unwrap());
+            let mut map = BTreeMap::new();
+            for (public, paths) in use_items(&c) {
+                if !public {
+                    continue;
+                }
+                for p in paths {
+                    // A re-export path without crate/self/super is relative to
+                    // this module (`pub use child::Item`).
+                    let full = if p.starts_with("crate") || p.starts_with("self") || p.starts_with("super") {
+                        p.clone()
+                    } else {
+                        format!("self::{p}")
+                    };
+                    if let Some(abs) = absolute(m, true, &full) {
+                        if let Some(name) = abs.last() {
+                            map.insert(name.clone(), abs.clone());
+                        }
+                    }
+                }
+            }
+            reexports.insert(m.clone(), map);
+            code.insert(m.clone(), c);
+        }
+        Tree { files, reexports, code }
+    }
+
+    /// The file a path ends in: the deepest module it names, following
+    /// re-exports to where the item lives.
+    fn resolve(&self, path: &[String], depth: usize) -> Option<Vec<String>> {
+        let mut k = path.len();
+        while k > 0 && !self.files.contains_key(&path[..k]) {
+            k -= 1;
+        }
+        let module = path[..k].to_vec();
+        if depth < 8 {
+            if let Some(next) = path.get(k) {
+                if let Some(target) = self.reexports.get(&module).and_then(|m| m.get(next)) {
+                    if target.as_slice() != &path[..=k] {
+                        let mut t = target.clone();
+                        t.extend(path[k + 1..].iter().cloned());
+                        return self.resolve(&t, depth + 1);
+                    }
+                }
+            }
+        }
+        Some(module)
+    }
+
+    fn edges(&self) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
+        let mut out: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
+        for (m, c) in &self.code {
+            let mut paths: Vec<String> = use_items(c)
+                .into_iter()
+                .filter(|(public, _)| !public)
+                .flat_map(|(_, p)| p)
+                .collect();
+            paths.extend(inline_paths(c));
+            let set = out.entry(m.clone()).or_default();
+            for p in paths {
+                let Some(abs) = absolute(m, true, &p) else { continue };
+                let Some(target) = self.resolve(&abs, 0) else { continue };
+                if &target != m && !target.is_empty() {
+                    set.insert(target);
+                }
+            }
+        }
+        out
+    }
+}
+
+fn name(m: &[String]) -> String {
+    if m.is_empty() {
+        "crate".into()
+    } else {
+        m.join("::")
+    }
+}
+
+/// One cycle through `start`, if there is one.
+fn cycle_from(
+    start: &Vec<String>,
+    edges: &BTreeMap<Vec<String>, BTreeSet<Vec<String>>>,
+) -> Option<Vec<Vec<String>>> {
+    let mut stack = vec![(start.clone(), vec![start.clone()])];
+    let mut seen = BTreeSet::new();
+    while let Some((node, path)) = stack.pop() {
+        for next in edges.get(&node).into_iter().flatten() {
+            if next == start {
+                return Some(path);
+            }
+            if seen.insert(next.clone()) {
+                let mut p = path.clone();
+                p.push(next.clone());
+                stack.push((next.clone(), p));
+            }
+        }
+    }
+    None
+}
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+#[test]
+fn no_import_cycle_between_files() {
+    let tree = Tree::read(&src());
+    let edges = tree.edges();
+    let mut cycles = BTreeSet::new();
+    for m in tree.files.keys() {
+        if let Some(c) = cycle_from(m, &edges) {
+            let mut names: Vec<String> = c.iter().map(|m| name(m)).collect();
+            // One rotation per cycle, so each is reported once.
+            let min = (0..names.len()).min_by_key(|&i| names[i].clone()).unwrap();
+            names.rotate_left(min);
+            cycles.insert(names.join(" → "));
+        }
+    }
+    assert!(cycles.is_empty(), "{} import cycles between files:\n{}", cycles.len(), cycles.into_iter().collect::<Vec<_>>().join("\n"));
+}
+
+#[test]
+fn the_checker_sees_a_cycle_and_a_reexport() {
+    let uses = use_items(&code_of("use crate::a::{b::{C, D}, e};\npub use self::f::G;\n// use crate::z;\n"));
+    assert_eq!(uses.len(), 2);
+    assert_eq!(uses[0].1, vec!["crate::a::b::C", "crate::a::b::D", "crate::a::e"]);
+    assert!(uses[1].0);
+    let mut edges = BTreeMap::new();
+    let a = vec!["a".to_string()];
+    let b = vec!["b".to_string()];
+    edges.insert(a.clone(), BTreeSet::from([b.clone()]));
+    edges.insert(b.clone(), BTreeSet::from([a.clone()]));
+    assert_eq!(cycle_from(&a, &edges), Some(vec![a.clone(), b]));
+    edges.remove(&vec!["b".to_string()]);
+    assert_eq!(cycle_from(&a, &edges), None);
+}
+
+#[test]
+fn source_files_stay_readable() {
+    let long: Vec<String> = modules(&src())
+        .values()
+        .filter_map(|p| {
+            let n = fs::read_to_string(p).unwrap().lines().count();
+            (n > 600).then(|| format!("{} ({n} lines)", p.display()))
+        })
+        .collect();
+    assert!(long.is_empty(), "files over 600 lines:\n{}", long.join("\n"));
+}

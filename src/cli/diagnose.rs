@@ -40,8 +40,13 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
         match outcome {
             BatchOutcome::Fleet(f) => {
                 super::print(&f.summary());
-                let [csv, json] = f.outputs();
-                println!("wrote {}, {}", csv.display(), json.display());
+                let [csv, json, html] = f.outputs();
+                println!(
+                    "wrote {}, {}, {}",
+                    csv.display(),
+                    json.display(),
+                    html.display()
+                );
             }
             BatchOutcome::Shard(s) => super::print(&s.summary()),
         }
@@ -52,11 +57,12 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
     super::print(&r.summary());
     let f = r.outputs();
     println!(
-        "diagnosed in {:.1} s; wrote {}, {}, {}",
+        "diagnosed in {:.1} s; wrote {}, {}, {}, {}",
         r.seconds,
         f[0].display(),
         f[1].display(),
-        f[2].display()
+        f[2].display(),
+        f[3].display()
     );
     Ok(())
 }

@@ -69,8 +69,13 @@ pub fn merge(a: MergeArgs) -> Result<()> {
         ShardJob::Diagnose => {
             let r = handling::jobs::fleet::merge(&a.shards, a.out.as_deref())?;
             super::print(&r.summary());
-            let [csv, json] = r.outputs();
-            println!("wrote {}, {}", csv.display(), json.display());
+            let [csv, json, html] = r.outputs();
+            println!(
+                "wrote {}, {}, {}",
+                csv.display(),
+                json.display(),
+                html.display()
+            );
         }
     }
     Ok(())

@@ -3,7 +3,8 @@
 //! verdict ([`crate::diagnose`]) out, as `diagnosis.json`, the gap map
 //! (`gap_map.png`: held-out RMS over the noise floor against time window,
 //! |ay| level and speed band) and the overlays of the worst runs
-//! (`overlays.png`).
+//! (`overlays.png`), and all of it on one self-contained page to share
+//! (`report.html`, [`super::diagnose_page`]).
 
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
 use crate::diagnose::effects::{joined, Bound};
@@ -45,7 +46,12 @@ pub struct DiagnoseReport {
     pub out_dir: PathBuf,
 }
 
-const FILES: [&str; 3] = ["diagnosis.json", "gap_map.png", "overlays.png"];
+const FILES: [&str; 4] = [
+    "diagnosis.json",
+    "gap_map.png",
+    "overlays.png",
+    "report.html",
+];
 
 /// Diagnoses the campaign at `path`; `out` is the output folder (default
 /// `out/<campaign name>`), checked against the inputs first.
@@ -76,17 +82,23 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
 
 impl DiagnoseReport {
     /// The output files.
-    pub fn outputs(&self) -> [PathBuf; 3] {
+    pub fn outputs(&self) -> [PathBuf; 4] {
         FILES.map(|f| self.out_dir.join(f))
     }
 
-    /// Writes the diagnosis and its two figures.
+    /// Writes the diagnosis, its two figures and the page that holds them
+    /// all (`report.html`).
     pub fn write(&self) -> Result<(), Error> {
         let files = self.outputs();
         create_dir(&self.out_dir)?;
         write_json(&files[0], &self.diagnosis)?;
-        gap_map(&self.diagnosis).save(&files[1])?;
-        overlays(&self.diagnosis).save(&files[2])
+        let (gap, over) = (gap_map(&self.diagnosis), overlays(&self.diagnosis));
+        gap.save(&files[1])?;
+        over.save(&files[2])?;
+        super::diagnose_page::page(self, &gap, &over, &files[3])?.write(
+            &format!("Diagnosis of {}", self.diagnosis.campaign),
+            &files[3],
+        )
     }
 
     /// The campaign read and the short human report.

@@ -1,7 +1,7 @@
 //! `diagnose --batch`: every campaign of a folder diagnosed (a fleet of logs,
 //! a confusion matrix), each written to its own folder as `diagnose` writes
 //! it, and one table of the verdict per campaign with the effects that recur
-//! across them (`fleet.csv`, `fleet.json`). A campaign that cannot be read
+//! across them (`fleet.csv`, `fleet.json`, and `fleet.html` to share). A campaign that cannot be read
 //! or diagnosed is listed with its error, not dropped. Sharded like sweeps
 //! ([`super::shard`]): shard K of N diagnoses the campaigns with index mod
 //! N = K − 1 (in name order) and writes their folders and its table rows;
@@ -11,6 +11,7 @@ use super::diagnose::{self, DiagnoseReport};
 use super::shard::{read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport};
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::error::{Error, InputError};
+use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -246,14 +247,14 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf) -> FleetReport {
 }
 
 impl FleetReport {
-    /// `fleet.csv` and `fleet.json` in the output folder.
-    pub fn outputs(&self) -> [PathBuf; 2] {
-        ["fleet.csv", "fleet.json"].map(|f| self.out_dir.join(f))
+    /// `fleet.csv`, `fleet.json` and `fleet.html` in the output folder.
+    pub fn outputs(&self) -> [PathBuf; 3] {
+        ["fleet.csv", "fleet.json", "fleet.html"].map(|f| self.out_dir.join(f))
     }
 
-    /// Writes the table and the report.
+    /// Writes the table, the report and the page to share.
     pub fn write(&self) -> Result<(), Error> {
-        let [csv, json] = self.outputs();
+        let [csv, json, html] = self.outputs();
         let number = |v: Option<f64>| v.map_or_else(String::new, |v| format!("{v:.6}"));
         write_csv(
             &csv,
@@ -284,7 +285,70 @@ impl FleetReport {
                 ]
             }),
         )?;
-        write_json(&json, self)
+        write_json(&json, self)?;
+        self.page().write("Fleet diagnosis", &html)
+    }
+
+    /// The table and the recurring effects as a self-contained page; each
+    /// campaign's name is the path of its own `report.html`.
+    fn page(&self) -> Page {
+        let number = |v: Option<f64>| v.map_or_else(|| "—".to_string(), |v| format!("{v:.3}"));
+        let rows: Vec<Vec<Cell>> = self
+            .campaigns
+            .iter()
+            .map(|r| {
+                vec![
+                    Cell::Text(format!("{}/report.html", r.campaign)),
+                    Cell::Number(r.runs.to_string()),
+                    Cell::Text(if r.verdict.is_empty() {
+                        "—".into()
+                    } else {
+                        joined(&r.verdict, " + ")
+                    }),
+                    Cell::Number(number(r.heldout_error_before)),
+                    Cell::Number(number(r.heldout_error_after)),
+                    Cell::Number(number(r.noise_level)),
+                    Cell::Text(
+                        r.best
+                            .map_or_else(String::new, |b| format!("{} ({:.1} %)", b.0.name(), b.1)),
+                    ),
+                    Cell::Text(if r.failed { "FAILED: " } else { "" }.to_string() + &r.statement),
+                ]
+            })
+            .collect();
+        let n = self.campaigns.len();
+        let recurring: Vec<Vec<Cell>> = self
+            .recurring
+            .iter()
+            .map(|e| {
+                vec![
+                    Cell::Text(e.effect.name().into()),
+                    Cell::Number(format!("{} of {n}", e.verdicts)),
+                    Cell::Number(format!("{} of {n}", e.best)),
+                ]
+            })
+            .collect();
+        let mut p = Page::new("Fleet diagnosis");
+        p.section("fleet", "Verdict per campaign").table(
+            "fleet-table",
+            &[
+                "campaign report",
+                "runs",
+                "verdict",
+                "J before",
+                "J after",
+                "J of the noise",
+                "best single candidate",
+                "statement",
+            ],
+            &rows,
+        );
+        p.section("recurring", "Recurring effects").table(
+            "recurring-table",
+            &["effect", "in the verdict of", "best single candidate in"],
+            &recurring,
+        );
+        p
     }
 
     /// The table in lines of text.

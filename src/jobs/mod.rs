@@ -21,6 +21,7 @@
 //! its figures) and hold their figures beside them.
 
 pub mod diagnose;
+pub mod diagnose_page;
 pub mod equilibria;
 pub mod fleet;
 pub mod identify;

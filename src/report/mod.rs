@@ -3,6 +3,7 @@
 //! half-written file; and a refusal to write over any input file. Every CSV
 //! of every command goes through [`write_csv`].
 
+pub mod html;
 pub mod plot;
 pub mod progress;
 

@@ -1,8 +1,10 @@
-//! PNG figures drawn with plotters and an embedded DejaVu Sans font (no
-//! system fonts needed). A [`Figure`] is a stack of panels sharing nothing but
-//! the image; each panel holds line, dashed-line and point series.
+//! Figures drawn with plotters and an embedded DejaVu Sans font (no system
+//! fonts needed), as PNG files or as SVG text for a self-contained HTML
+//! report. A [`Figure`] is a stack of panels sharing nothing but the image;
+//! each panel holds line, dashed-line and point series.
 
 use crate::error::Error;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
@@ -189,10 +191,38 @@ impl Figure {
         })
     }
 
-    fn draw(&self, tmp: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    /// The figure as SVG text (for embedding in an HTML page); `for_file`
+    /// is the file it goes into, named if drawing fails.
+    pub fn svg(&self, for_file: &Path) -> Result<String, Error> {
+        ensure_font();
+        let mut text = String::new();
+        {
+            let root = SVGBackend::with_string(&mut text, self.size()).into_drawing_area();
+            self.draw_on(&root)
+                .map_err(|e| Error::output(for_file, format!("cannot draw a figure: {e}")))?;
+        }
+        Ok(text)
+    }
+
+    /// Width and height of the image, px.
+    fn size(&self) -> (u32, u32) {
         let rows = self.panels.len().div_ceil(self.columns).max(1);
-        let root = BitMapBackend::new(tmp, (self.width, self.row_height * rows as u32))
-            .into_drawing_area();
+        (self.width, self.row_height * rows as u32)
+    }
+
+    fn draw(&self, tmp: &Path) -> Result<(), Box<dyn std::error::Error>> {
+        let root = BitMapBackend::new(tmp, self.size()).into_drawing_area();
+        self.draw_on(&root)
+    }
+
+    fn draw_on<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+    ) -> Result<(), Box<dyn std::error::Error>>
+    where
+        DB::ErrorType: 'static,
+    {
+        let rows = self.panels.len().div_ceil(self.columns).max(1);
         root.fill(&WHITE)?;
         let areas = root.split_evenly((rows, self.columns));
         for (area, panel) in areas.iter().zip(&self.panels) {

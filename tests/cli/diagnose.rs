@@ -73,6 +73,22 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     for f in ["diagnosis.json", "gap_map.png", "overlays.png"] {
         assert!(out.join(f).is_file(), "{f}");
     }
+    let page = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(page.contains("sensor_delay explains the gap"));
+    crate::report_html::opens_in_a_browser(
+        &out.join("report.html"),
+        &[
+            "verdict",
+            "gap",
+            "gap-map>svg",
+            "base",
+            "ranking-table",
+            "shrinkage",
+            "overlays>svg",
+            "road",
+            "cleaning",
+        ],
+    );
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
     assert_eq!(d["seed"], 3);
     assert_eq!(d["campaign"], "delay_0.05");

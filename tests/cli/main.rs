@@ -140,6 +140,7 @@ mod mf_identify;
 mod programmes;
 mod proving_ground;
 mod real_logs;
+mod report_html;
 mod rig_layouts;
 mod scenarios;
 mod shards;

@@ -293,9 +293,13 @@ fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() 
         merge_shards(&shards, n, &merged);
         assert_eq!(
             files_under(&merged),
-            ["fleet.csv", "fleet.json"].map(PathBuf::from)
+            ["fleet.csv", "fleet.html", "fleet.json"].map(PathBuf::from)
         );
-        for f in ["fleet.csv", "fleet.json"] {
+        crate::report_html::opens_in_a_browser(
+            &merged.join("fleet.html"),
+            &["fleet-table", "recurring-table"],
+        );
+        for f in ["fleet.csv", "fleet.json", "fleet.html"] {
             assert!(
                 fs::read(full.join(f)).unwrap() == fs::read(merged.join(f)).unwrap(),
                 "N = {n}: {f} differs"
@@ -308,7 +312,7 @@ fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() 
             .collect();
         let expected: Vec<PathBuf> = files_under(&full)
             .into_iter()
-            .filter(|p| p != Path::new("fleet.csv") && p != Path::new("fleet.json"))
+            .filter(|p| !p.starts_with("fleet."))
             .collect();
         assert_eq!(written, expected, "N = {n}");
         for f in &expected {

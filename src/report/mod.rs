@@ -3,7 +3,9 @@
 //! half-written file; and a refusal to write over any input file. Every CSV
 //! of every command goes through [`write_csv`].
 
+pub mod colour;
 pub mod html;
+mod legend;
 pub mod plot;
 pub mod progress;
 

@@ -3,7 +3,9 @@
 //! report. A [`Figure`] is a stack of panels sharing nothing but the image;
 //! each panel holds line, dashed-line and point series.
 
+pub use super::colour::{colormap, ColourScale, ScaleKind};
 use crate::error::Error;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -35,10 +37,19 @@ pub enum Style {
     /// Filled rectangles of size (dx, dy) in data units centred on each point,
     /// in the series colour.
     Cells(f64, f64),
-    /// As `Cells`, coloured by the series' `values` on a blue–yellow map
-    /// between the given (min, max).
-    Heat(f64, f64, f64, f64),
+    /// As `Cells`, coloured by the series' `values` through its
+    /// [`ColourScale`] on a blue–yellow map, with a colour bar beside the
+    /// panel; cells without a value are drawn light grey.
+    Heat(f64, f64),
 }
+
+/// Width of the column beside a panel that holds its legend and colour bar,
+/// px.
+pub(super) const SIDE: i32 = 200;
+
+/// The fill of a map cell without a value (distinct from every colour of
+/// [`colormap`]).
+pub(super) const NO_VALUE: RGBColor = RGBColor(225, 225, 225);
 
 /// One named series.
 #[derive(Debug, Clone)]
@@ -53,30 +64,11 @@ pub struct Series {
     pub style: Style,
     /// Values for `Style::Heat`.
     pub values: Option<Vec<f64>>,
+    /// How `values` map to colours (`Style::Heat`), with the quantity's
+    /// name and unit for the colour bar.
+    pub scale: Option<ColourScale>,
     /// Palette index.
     pub color: usize,
-}
-
-/// A blue → green → yellow colour map (viridis-like) for t in [0, 1].
-pub fn colormap(t: f64) -> RGBColor {
-    const STOPS: [(f64, f64, f64); 5] = [
-        (68.0, 1.0, 84.0),
-        (59.0, 82.0, 139.0),
-        (33.0, 145.0, 140.0),
-        (94.0, 201.0, 98.0),
-        (253.0, 231.0, 37.0),
-    ];
-    let t = if t.is_finite() {
-        t.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let x = t * (STOPS.len() - 1) as f64;
-    let i = (x.floor() as usize).min(STOPS.len() - 2);
-    let w = x - i as f64;
-    let (a, b) = (STOPS[i], STOPS[i + 1]);
-    let mix = |p: f64, q: f64| (p + w * (q - p)).round() as u8;
-    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 impl Series {
@@ -89,8 +81,25 @@ impl Series {
             style: Style::Line,
             color,
             values: None,
+            scale: None,
         }
     }
+    /// A heat map: cells of size (dx, dy) centred on (x, y), coloured by
+    /// `values` through a scale chosen for them ([`ColourScale::fit`]) and
+    /// labelled `label` on its colour bar.
+    pub fn heat(x: &[f64], y: &[f64], values: Vec<f64>, cell: (f64, f64), label: &str) -> Self {
+        let scale = ColourScale::fit(&values, label);
+        Self {
+            label: String::new(),
+            x: x.to_vec(),
+            y: y.to_vec(),
+            style: Style::Heat(cell.0, cell.1),
+            values: Some(values),
+            scale: Some(scale),
+            color: 0,
+        }
+    }
+
     /// The same series with another style.
     pub fn styled(mut self, style: Style) -> Self {
         self.style = style;
@@ -226,82 +235,113 @@ impl Figure {
         root.fill(&WHITE)?;
         let areas = root.split_evenly((rows, self.columns));
         for (area, panel) in areas.iter().zip(&self.panels) {
-            let (x0, x1) = panel
-                .x_range
-                .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.x.iter().copied())));
-            let (y0, y1) = panel
-                .y_range
-                .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.y.iter().copied())));
-            let mut chart = ChartBuilder::on(area)
-                .caption(&panel.title, ("sans-serif", 16))
-                .margin(8)
-                .x_label_area_size(36)
-                .y_label_area_size(64)
-                .build_cartesian_2d(x0..x1, y0..y1)?;
-            chart
-                .configure_mesh()
-                .x_desc(&panel.x_label)
-                .y_desc(&panel.y_label)
-                .label_style(("sans-serif", 13))
-                .light_line_style(RGBColor(235, 235, 235))
-                .draw()?;
-            let mut labelled = false;
-            for s in &panel.series {
-                let c = palette(s.color);
-                let all = || s.x.iter().copied().zip(s.y.iter().copied());
-                let cell = |x: f64, y: f64, dx: f64, dy: f64| {
-                    [(x - 0.5 * dx, y - 0.5 * dy), (x + 0.5 * dx, y + 0.5 * dy)]
-                };
-                let anno = match s.style {
-                    Style::Line => chart
-                        .draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?,
-                    Style::Dashed => chart.draw_series(DashedLineSeries::new(
-                        thin(&s.x, &s.y, 4000),
-                        6,
-                        4,
-                        c.stroke_width(2),
-                    ))?,
-                    Style::Points(r) => {
-                        chart.draw_series(all().map(|p| Circle::new(p, r, c.filled())))?
-                    }
-                    Style::Segments => {
-                        let pts: Vec<(f64, f64)> = all().collect();
-                        chart.draw_series(
-                            pts.chunks_exact(2)
-                                .map(|w| PathElement::new(vec![w[0], w[1]], c.stroke_width(1))),
-                        )?
-                    }
-                    Style::Cells(dx, dy) => chart.draw_series(
-                        all().map(|(x, y)| Rectangle::new(cell(x, y, dx, dy), c.filled())),
-                    )?,
-                    Style::Heat(dx, dy, lo, hi) => {
-                        let vals = s.values.clone().unwrap_or_default();
-                        chart.draw_series(all().zip(vals).map(|((x, y), v)| {
-                            Rectangle::new(
-                                cell(x, y, dx, dy),
-                                colormap((v - lo) / (hi - lo)).filled(),
-                            )
-                        }))?
-                    }
-                };
-                if !s.label.is_empty() {
-                    labelled = true;
-                    anno.label(s.label.clone()).legend(move |(x, y)| {
-                        Rectangle::new([(x, y - 4), (x + 16, y + 4)], c.filled())
-                    });
-                }
-            }
-            if labelled {
-                chart
-                    .configure_series_labels()
-                    .label_font(("sans-serif", 13))
-                    .background_style(WHITE.mix(0.85))
-                    .border_style(BLACK)
-                    .position(SeriesLabelPosition::UpperRight)
-                    .draw()?;
-            }
+            draw_panel(area, panel)?;
         }
         root.present()?;
         Ok(())
     }
+}
+
+/// One panel: the chart on the left, its legend and colour bar in a column
+/// of their own on the right, so that no key hides data.
+fn draw_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let keyed = panel
+        .series
+        .iter()
+        .any(|s| !s.label.is_empty() || s.scale.is_some());
+    let width = area.dim_in_pixel().0 as i32;
+    let (plot, side) = if keyed && width > 2 * SIDE {
+        let (p, s) = area.split_horizontally(width - SIDE);
+        (p, Some(s))
+    } else {
+        (area.clone(), None)
+    };
+    let (x0, x1) = panel
+        .x_range
+        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.x.iter().copied())));
+    let (y0, y1) = panel
+        .y_range
+        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.y.iter().copied())));
+    let mut chart = ChartBuilder::on(&plot)
+        .caption(&panel.title, ("sans-serif", 16))
+        .margin(8)
+        .x_label_area_size(36)
+        .y_label_area_size(64)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc(&panel.x_label)
+        .y_desc(&panel.y_label)
+        .label_style(("sans-serif", 13))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()?;
+    for s in &panel.series {
+        draw_series(&mut chart, s)?;
+    }
+    if let Some(side) = side {
+        super::legend::draw(&side, &panel.series)?;
+    }
+    Ok(())
+}
+
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+fn draw_series<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    s: &Series,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let c = palette(s.color);
+    let all = || s.x.iter().copied().zip(s.y.iter().copied());
+    let cell = |x: f64, y: f64, dx: f64, dy: f64| {
+        [(x - 0.5 * dx, y - 0.5 * dy), (x + 0.5 * dx, y + 0.5 * dy)]
+    };
+    match s.style {
+        Style::Line => {
+            chart.draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?;
+        }
+        Style::Dashed => {
+            chart.draw_series(DashedLineSeries::new(
+                thin(&s.x, &s.y, 4000),
+                6,
+                4,
+                c.stroke_width(2),
+            ))?;
+        }
+        Style::Points(r) => {
+            chart.draw_series(all().map(|p| Circle::new(p, r, c.filled())))?;
+        }
+        Style::Segments => {
+            let pts: Vec<(f64, f64)> = all().collect();
+            chart.draw_series(
+                pts.chunks_exact(2)
+                    .map(|w| PathElement::new(vec![w[0], w[1]], c.stroke_width(1))),
+            )?;
+        }
+        Style::Cells(dx, dy) => {
+            chart
+                .draw_series(all().map(|(x, y)| Rectangle::new(cell(x, y, dx, dy), c.filled())))?;
+        }
+        Style::Heat(dx, dy) => {
+            let vals = s.values.as_deref().unwrap_or(&[]);
+            let scale = s.scale.as_ref();
+            chart.draw_series(all().zip(vals).map(|((x, y), &v)| {
+                // A cell without a value is drawn as such, never as the
+                // colour of the map's minimum.
+                let fill = scale
+                    .and_then(|sc| sc.position(v))
+                    .map_or(NO_VALUE, colormap);
+                Rectangle::new(cell(x, y, dx, dy), fill.filled())
+            }))?;
+        }
+    }
+    Ok(())
 }

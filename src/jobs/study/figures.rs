@@ -1,7 +1,9 @@
-//! The study's figures: heat maps of six metrics over the (k1, k2) map with
-//! the Er curves on the Er map (`maps.png`), and Er against front stiffness
-//! along Wang & Liang's pairs (`rbf.png`). Stiffness in the file's unit.
+//! The study's figures: heat maps of six metrics over the (k1, k2) map, each
+//! with its colour bar, with the Er curves on the Er map (`maps.png`), and
+//! what Wang & Liang's RBF network learnt from their pairs (`rbf.png`).
+//! Stiffness in the file's unit.
 
+use super::RbfReport;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::study::inverse::Map;
 use crate::study::{Metric, Sample, StiffnessUnit};
@@ -36,22 +38,21 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
                 v.push(map.value(metric, i, j));
             }
         }
-        let finite: Vec<f64> = v.iter().copied().filter(|a| a.is_finite()).collect();
-        let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        let mut heat = Series::line("", &x, &y, 0).styled(Style::Heat(dx, dy, lo, hi));
-        heat.values = Some(v);
-        let mut series = vec![heat];
+        // The scale follows the values (log over decades, quantile where a
+        // few cells are extreme); TB's cells without a value stay grey.
+        let mut series = vec![Series::heat(&x, &y, v, (dx, dy), label)];
         if metric == Metric::Er {
-            for (target, c) in curves {
+            for (n, (target, c)) in curves.iter().enumerate() {
                 let (cx, cy): (Vec<f64>, Vec<f64>) = c.iter().map(|p| (p[0], p[1])).unzip();
+                // One colour per target, none of them the map's.
                 series.push(
-                    Series::line(&format!("Er = {target}"), &cx, &cy, 1).styled(Style::Points(2)),
+                    Series::line(&format!("Er = {target} s"), &cx, &cy, [1, 3, 6, 5][n % 4])
+                        .styled(Style::Points(2)),
                 );
             }
         }
         panels.push(Panel {
-            title: format!("{label}: {lo:.4} (dark) … {hi:.4} (yellow)"),
+            title: label.to_string(),
             x_label: format!("front k1 [{unit}]"),
             y_label: format!("rear k2 [{unit}]"),
             series,
@@ -66,32 +67,43 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
     }
 }
 
-/// Er against front stiffness along the pairs, one line per rear − front
-/// offset.
-pub(super) fn rbf_pairs(pairs: &[Sample], unit: StiffnessUnit) -> Figure {
+/// What Wang & Liang's network learnt: front and rear stiffness against Er,
+/// the simulated pairs as points, the network's answer as a line and its
+/// answers to the held-out pairs' Er as crosses beside their true values.
+pub(super) fn rbf_pairs(pairs: &[Sample], rbf: &RbfReport, unit: StiffnessUnit) -> Figure {
     let k = unit.to_si();
-    let mut offsets: Vec<f64> = pairs
-        .iter()
-        .map(|s| ((s.k_rear - s.k_front) / k).round())
-        .collect();
-    offsets.dedup();
-    let series = offsets
-        .iter()
-        .enumerate()
-        .map(|(c, off)| {
-            let (x, y): (Vec<f64>, Vec<f64>) = pairs
-                .iter()
-                .filter(|s| ((s.k_rear - s.k_front) / k).round() == *off)
-                .map(|s| (s.k_front / k, Metric::Er.of_sample(s)))
-                .unzip();
-            Series::line(&format!("k2 = k1 + {off} {unit}"), &x, &y, c)
-        })
-        .collect();
-    Figure::stack(vec![Panel {
-        title: "Wang & Liang pairs: Er against front stiffness".into(),
-        x_label: format!("front k1 [{unit}]"),
-        y_label: "Er [s]".into(),
-        series,
-        ..Panel::default()
-    }])
+    let er: Vec<f64> = pairs.iter().map(|s| Metric::Er.of_sample(s)).collect();
+    let column = |i: usize| -> Vec<f64> { rbf.prediction.iter().map(|p| p[i]).collect() };
+    let curve_er = column(0);
+    let panel = |axle: &str, stiffness: Vec<f64>, predicted: Vec<f64>, held: Vec<(f64, f64)>| {
+        let (hx, hy): (Vec<f64>, Vec<f64>) = held.into_iter().unzip();
+        Panel {
+            title: format!("{axle} stiffness against Er: simulated pairs and the RBF network"),
+            x_label: "Er [s]".into(),
+            y_label: format!("{axle} k [{unit}]"),
+            series: vec![
+                Series::line("simulated pairs", &er, &stiffness, 0).styled(Style::Points(3)),
+                Series::line("RBF network", &curve_er, &predicted, 1),
+                Series::line("held-out pairs, predicted", &hx, &hy, 3).styled(Style::Points(5)),
+            ],
+            ..Panel::default()
+        }
+    };
+    let held = |f: fn(&super::Validation) -> f64| -> Vec<(f64, f64)> {
+        rbf.validation.iter().map(|v| (v.er_target, f(v))).collect()
+    };
+    Figure::stack(vec![
+        panel(
+            "front",
+            pairs.iter().map(|s| s.k_front / k).collect(),
+            column(1),
+            held(|v| v.k_front_predicted),
+        ),
+        panel(
+            "rear",
+            pairs.iter().map(|s| s.k_rear / k).collect(),
+            column(2),
+            held(|v| v.k_rear_predicted),
+        ),
+    ])
 }

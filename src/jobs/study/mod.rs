@@ -73,6 +73,10 @@ pub struct RbfReport {
     pub validation: Vec<Validation>,
     /// Stiffness unit.
     pub unit: StiffnessUnit,
+    /// The network's answer over the training range of Er, for `rbf.png`:
+    /// (Er s, k1, k2 in `unit`).
+    #[serde(skip)]
+    pub prediction: Vec<[f64; 3]>,
 }
 
 /// The best combination on an Er curve, refined by simulation.
@@ -376,6 +380,21 @@ fn train(
             }
         })
         .collect();
+    let (lo, hi) = train
+        .iter()
+        .map(|&i| er[i])
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    const CURVE: usize = 200;
+    let prediction = (0..CURVE)
+        .filter(|_| hi > lo)
+        .map(|j| {
+            let e = lo + (hi - lo) * j as f64 / (CURVE - 1) as f64;
+            let p = net.predict(e);
+            [e, p[0] / k, p[1] / k]
+        })
+        .collect();
     let report = RbfReport {
         spread: r.spread,
         training_pairs: train.len(),
@@ -383,6 +402,7 @@ fn train(
         largest_training_misfit: misfit,
         validation,
         unit,
+        prediction,
     };
     (net, report)
 }
@@ -514,7 +534,7 @@ impl StudyReport {
         write_csv(&files[0], &header, rows)?;
         if let Some(r) = &self.rbf {
             write_json_sorted(&files[2], r)?;
-            figures::rbf_pairs(&self.pairs, u).save(&files[3])?;
+            figures::rbf_pairs(&self.pairs, r, u).save(&files[3])?;
         }
         let mut curves = Vec::new();
         if let Some(inv) = &self.inverse {

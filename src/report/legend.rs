@@ -1,0 +1,254 @@
+//! The key of a panel, drawn in a column of its own beside the chart (never
+//! over the data): one swatch per labelled series in the style it is drawn
+//! in (line, dashes, points), and for a heat map a colour bar with its
+//! quantity, unit, scale and tick values, and a swatch for cells without a
+//! value.
+
+use super::colour::colormap;
+use super::plot::{palette, Series, Style, NO_VALUE};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+const FONT: (&str, u32) = ("sans-serif", 13);
+const ROW: i32 = 20;
+
+/// Draws the key of `series` into `side`, from the top.
+pub(super) fn draw<DB: DrawingBackend>(
+    side: &DrawingArea<DB, Shift>,
+    series: &[Series],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let mut y = 40;
+    for s in series.iter().filter(|s| !s.label.is_empty()) {
+        swatch(side, s, y)?;
+        // Long labels wrap onto a second line rather than run off the image.
+        for (k, line) in wrap(&s.label, 22).iter().enumerate() {
+            side.draw(&Text::new(line.clone(), (38, y - 7 + k as i32 * 15), FONT))?;
+        }
+        y += ROW + 15 * (wrap(&s.label, 22).len() as i32 - 1);
+    }
+    for s in series {
+        if let (Style::Heat(..), Some(scale)) = (s.style, &s.scale) {
+            y = colour_bar(side, s, scale, y + 8)?;
+        }
+    }
+    Ok(())
+}
+
+fn swatch<DB: DrawingBackend>(
+    side: &DrawingArea<DB, Shift>,
+    s: &Series,
+    y: i32,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let c = palette(s.color);
+    match s.style {
+        Style::Line | Style::Segments => {
+            side.draw(&PathElement::new(vec![(6, y), (32, y)], c.stroke_width(2)))?;
+        }
+        Style::Dashed => {
+            for x in [6, 16, 26] {
+                side.draw(&PathElement::new(
+                    vec![(x, y), (x + 6, y)],
+                    c.stroke_width(2),
+                ))?;
+            }
+        }
+        Style::Points(r) => {
+            side.draw(&Circle::new((19, y), r.clamp(2, 5), c.filled()))?;
+        }
+        Style::Cells(..) | Style::Heat(..) => {
+            side.draw(&Rectangle::new([(8, y - 6), (30, y + 6)], c.filled()))?;
+        }
+    }
+    Ok(())
+}
+
+/// A vertical colour bar under `top`: the quantity, the scale, five tick
+/// values, and the swatch of cells without a value when there are some.
+fn colour_bar<DB: DrawingBackend>(
+    side: &DrawingArea<DB, Shift>,
+    s: &Series,
+    scale: &super::colour::ColourScale,
+    top: i32,
+) -> Result<i32, Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let mut y = top;
+    for line in wrap(&scale.label, 24) {
+        side.draw(&Text::new(line, (6, y), FONT))?;
+        y += 15;
+    }
+    side.draw(&Text::new(scale.kind.name(), (6, y), ("sans-serif", 11)))?;
+    y += 18;
+    let height = (side.dim_in_pixel().1 as i32 - y - 50).clamp(60, 260);
+    const STEPS: i32 = 64;
+    for k in 0..STEPS {
+        // Top of the bar is the largest value.
+        let t = 1.0 - (k as f64 + 0.5) / STEPS as f64;
+        let (a, b) = (y + k * height / STEPS, y + (k + 1) * height / STEPS);
+        side.draw(&Rectangle::new([(8, a), (30, b + 1)], colormap(t).filled()))?;
+    }
+    side.draw(&Rectangle::new(
+        [(8, y), (30, y + height)],
+        BLACK.stroke_width(1),
+    ))?;
+    for k in 0..=4 {
+        let t = f64::from(k) / 4.0;
+        let at = y + ((1.0 - t) * f64::from(height)).round() as i32;
+        side.draw(&PathElement::new(
+            vec![(30, at), (35, at)],
+            BLACK.stroke_width(1),
+        ))?;
+        if let Some(v) = scale.value_at(t) {
+            side.draw(&Text::new(tick(v), (38, at - 6), FONT))?;
+        }
+    }
+    y += height + 14;
+    let missing = s
+        .values
+        .as_deref()
+        .is_some_and(|v| v.iter().any(|x| !x.is_finite()));
+    if missing {
+        side.draw(&Rectangle::new([(8, y), (30, y + 12)], NO_VALUE.filled()))?;
+        side.draw(&Rectangle::new(
+            [(8, y), (30, y + 12)],
+            BLACK.stroke_width(1),
+        ))?;
+        side.draw(&Text::new("no value", (38, y - 1), FONT))?;
+        y += ROW;
+    }
+    Ok(y)
+}
+
+/// A tick value to three significant digits.
+fn tick(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && !(1e-2..1e5).contains(&a) {
+        format!("{v:.2e}")
+    } else if a >= 100.0 {
+        format!("{v:.0}")
+    } else if a >= 10.0 {
+        format!("{v:.1}")
+    } else {
+        format!("{v:.3}")
+    }
+}
+
+/// Words of `text` in lines of at most `width` characters.
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = vec![String::new()];
+    for word in text.split_whitespace() {
+        let last = lines.last_mut().expect("one line");
+        if !last.is_empty() && last.chars().count() + 1 + word.chars().count() > width {
+            lines.push(word.to_string());
+        } else {
+            if !last.is_empty() {
+                last.push(' ');
+            }
+            last.push_str(word);
+        }
+    }
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::plot::{Figure, Panel, SIDE};
+    use super::*;
+    use std::path::Path;
+
+    /// The numbers of attribute `attr` of every `<tag` element of an SVG.
+    fn attrs(svg: &str, tag: &str, attr: &str) -> Vec<f64> {
+        svg.split(&format!("<{tag} "))
+            .skip(1)
+            .filter_map(|e| {
+                let e = format!(" {e}");
+                let at = e.find(&format!(" {attr}=\""))? + attr.len() + 3;
+                e[at..].split('"').next()?.parse().ok()
+            })
+            .collect()
+    }
+
+    /// (x, content) of every `<text>` element of an SVG.
+    fn texts(svg: &str) -> Vec<(f64, String)> {
+        svg.split("<text ")
+            .skip(1)
+            .filter_map(|e| {
+                let x = attrs(&format!("<text {e}"), "text", "x").first().copied()?;
+                let body = e.split_once('>')?.1.split("</text>").next()?;
+                Some((x, body.trim().to_string()))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_key_sits_beside_the_data_never_over_it() {
+        let x: Vec<f64> = (0..50).map(f64::from).collect();
+        let fig = Figure {
+            width: 900,
+            ..Figure::stack(vec![Panel {
+                series: vec![
+                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
+                    Series::line("base model", &x, &x, 1),
+                ],
+                ..Panel::default()
+            }])
+        };
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let edge = f64::from(900 - SIDE);
+        let circles = attrs(&svg, "circle", "cx");
+        // Every data point left of the key's column, the key's swatch in it.
+        assert_eq!(circles.iter().filter(|&&c| c < edge).count(), 50);
+        assert_eq!(circles.iter().filter(|&&c| c >= edge).count(), 1);
+        let labels: Vec<(f64, String)> = texts(&svg)
+            .into_iter()
+            .filter(|(_, t)| t == "measured" || t == "base model")
+            .collect();
+        assert_eq!(labels.len(), 2, "{svg}");
+        assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
+    }
+
+    #[test]
+    fn a_heat_map_has_a_colour_bar_with_its_unit_scale_ticks_and_missing_cells() {
+        let (x, y) = (vec![0.0, 1.0, 0.0, 1.0], vec![0.0, 0.0, 1.0, 1.0]);
+        let values = vec![1.0, 10.0, 100.0, f64::NAN];
+        let fig = Figure::stack(vec![Panel {
+            series: vec![Series::heat(&x, &y, values, (1.0, 1.0), "TB [s·deg]")],
+            ..Panel::default()
+        }]);
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let texts: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+        for text in [
+            "TB [s·deg]",
+            "log scale",
+            "1.000",
+            "10.0",
+            "100",
+            "no value",
+        ] {
+            assert!(
+                texts.iter().any(|t| t == text),
+                "{text} missing from {texts:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn labels_wrap_on_words_and_ticks_keep_three_digits() {
+        assert_eq!(
+            wrap("with sensor_delay + roll_steer", 22),
+            ["with sensor_delay +", "roll_steer"]
+        );
+        assert_eq!(wrap("short", 22), ["short"]);
+        assert_eq!(tick(0.12345), "0.123");
+        assert_eq!(tick(12.345), "12.3");
+        assert_eq!(tick(1234.4), "1234");
+        assert_eq!(tick(1.5e-4), "1.50e-4");
+    }
+}

@@ -80,7 +80,8 @@ fn code_of(text: &str) -> String {
                 hashes += 1;
                 j += 1;
             }
-            if b.get(j) != Some(&'"') || (i > 0 && (b[i - 1].is_alphanumeric() || b[i - 1] == '_')) {
+            if b.get(j) != Some(&'"') || (i > 0 && (b[i - 1].is_alphanumeric() || b[i - 1] == '_'))
+            {
                 out.push(b[i]);
                 i += 1;
                 continue;
@@ -98,10 +99,7 @@ fn code_of(text: &str) -> String {
             }
             i = j;
             out.push_str("\"\"");
-        } else if b[i] == '\''
-            && b.get(i + 2) == Some(&'\'')
-            && b.get(i + 1).is_some()
-        {
+        } else if b[i] == '\'' && b.get(i + 2) == Some(&'\'') && b.get(i + 1).is_some() {
             i += 3; // a char literal such as '"'
             out.push_str("' '");
         } else {
@@ -208,10 +206,10 @@ fn inline_paths(code: &str) -> Vec<String> {
 /// A path relative to module `at` made absolute (segments after `crate`).
 fn absolute(at: &[String], is_mod_file: bool, path: &str) -> Option<Vec<String>> {
     let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
-    let (mut base, mut rest): (Vec<String>, &[&str]) = match segs.first()? {
-        &"crate" => (vec![], &segs[1..]),
-        &"self" => (at.to_vec(), &segs[1..]),
-        &"super" => {
+    let (mut base, mut rest): (Vec<String>, &[&str]) = match *segs.first()? {
+        "crate" => (vec![], &segs[1..]),
+        "self" => (at.to_vec(), &segs[1..]),
+        "super" => {
             let mut b = at.to_vec();
             b.pop();
             (b, &segs[1..])
@@ -249,7 +247,10 @@ impl Tree {
                 for p in paths {
                     // A re-export path without crate/self/super is relative to
                     // this module (`pub use child::Item`).
-                    let full = if p.starts_with("crate") || p.starts_with("self") || p.starts_with("super") {
+                    let full = if p.starts_with("crate")
+                        || p.starts_with("self")
+                        || p.starts_with("super")
+                    {
                         p.clone()
                     } else {
                         format!("self::{p}")
@@ -264,7 +265,11 @@ impl Tree {
             reexports.insert(m.clone(), map);
             code.insert(m.clone(), c);
         }
-        Tree { files, reexports, code }
+        Tree {
+            files,
+            reexports,
+            code,
+        }
     }
 
     /// The file a path ends in: the deepest module it names, following
@@ -300,8 +305,12 @@ impl Tree {
             paths.extend(inline_paths(c));
             let set = out.entry(m.clone()).or_default();
             for p in paths {
-                let Some(abs) = absolute(m, true, &p) else { continue };
-                let Some(target) = self.resolve(&abs, 0) else { continue };
+                let Some(abs) = absolute(m, true, &p) else {
+                    continue;
+                };
+                let Some(target) = self.resolve(&abs, 0) else {
+                    continue;
+                };
                 if &target != m && !target.is_empty() {
                     set.insert(target);
                 }
@@ -359,14 +368,24 @@ fn no_import_cycle_between_files() {
             cycles.insert(names.join(" → "));
         }
     }
-    assert!(cycles.is_empty(), "{} import cycles between files:\n{}", cycles.len(), cycles.into_iter().collect::<Vec<_>>().join("\n"));
+    assert!(
+        cycles.is_empty(),
+        "{} import cycles between files:\n{}",
+        cycles.len(),
+        cycles.into_iter().collect::<Vec<_>>().join("\n")
+    );
 }
 
 #[test]
 fn the_checker_sees_a_cycle_and_a_reexport() {
-    let uses = use_items(&code_of("use crate::a::{b::{C, D}, e};\npub use self::f::G;\n// use crate::z;\n"));
+    let uses = use_items(&code_of(
+        "use crate::a::{b::{C, D}, e};\npub use self::f::G;\n// use crate::z;\n",
+    ));
     assert_eq!(uses.len(), 2);
-    assert_eq!(uses[0].1, vec!["crate::a::b::C", "crate::a::b::D", "crate::a::e"]);
+    assert_eq!(
+        uses[0].1,
+        vec!["crate::a::b::C", "crate::a::b::D", "crate::a::e"]
+    );
     assert!(uses[1].0);
     let mut edges = BTreeMap::new();
     let a = vec!["a".to_string()];
@@ -387,5 +406,9 @@ fn source_files_stay_readable() {
             (n > 600).then(|| format!("{} ({n} lines)", p.display()))
         })
         .collect();
-    assert!(long.is_empty(), "files over 600 lines:\n{}", long.join("\n"));
+    assert!(
+        long.is_empty(),
+        "files over 600 lines:\n{}",
+        long.join("\n")
+    );
 }

@@ -112,7 +112,7 @@ fn ranking(p: &mut Page, report: &DiagnoseReport) {
         .ranking
         .iter()
         .chain(&d.combinations)
-        .map(|r| ranked_row(r))
+        .map(ranked_row)
         .collect();
     p.section("ranking", "Candidates on held-out runs");
     p.paragraph(

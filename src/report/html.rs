@@ -73,15 +73,15 @@ impl Page {
     /// A page with its title (also the first heading).
     pub fn new(title: &str) -> Self {
         let mut body = String::new();
-        let _ = write!(body, "<h1>{}</h1>\n", escape(title));
+        let _ = writeln!(body, "<h1>{}</h1>", escape(title));
         Self { body }
     }
 
     /// A section heading; `id` names it for links and for tests.
     pub fn section(&mut self, id: &str, heading: &str) -> &mut Self {
-        let _ = write!(
+        let _ = writeln!(
             self.body,
-            "<h2 id=\"{}\">{}</h2>\n",
+            "<h2 id=\"{}\">{}</h2>",
             escape(id),
             escape(heading)
         );

@@ -488,16 +488,14 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
 
 #[test]
 fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
-    let log = root().join("../shared/data/run_iac_putnam/putnam_run4_2.csv");
-    if !log.is_file() {
-        skipped(
-            "real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs",
-            &log,
-        );
+    let Some(log) = shared_data(
+        "real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs",
+        "run_iac_putnam/putnam_run4_2.csv",
+    ) else {
         return;
-    }
+    };
     // The bundled campaign, cut to 40 s pieces and two candidates to keep
-    // the test short (the README runs the full library).
+    // the test short (the changelog records a run on the full library).
     let text = fs::read_to_string(root().join("campaigns/putnam.toml"))
         .unwrap()
         .replace(
@@ -639,11 +637,12 @@ fn effects_the_runs_cannot_show_are_left_out_with_a_note() {
 
 #[test]
 fn a_verdict_that_leaves_a_channel_worse_says_so() {
-    let log = root().join("../shared/data/run_iac_putnam/putnam_run4_2.csv");
-    if !log.is_file() {
-        skipped("a_verdict_that_leaves_a_channel_worse_says_so", &log);
+    let Some(log) = shared_data(
+        "a_verdict_that_leaves_a_channel_worse_says_so",
+        "run_iac_putnam/putnam_run4_2.csv",
+    ) else {
         return;
-    }
+    };
     // The log's first 60 s in three pieces, two candidates: the sensor
     // delay closes most of the yaw-rate gap and widens the sideslip one,
     // while the combined error falls by a third. The axles are given (the

@@ -154,11 +154,12 @@ fn an_identified_tyre_file_loads_and_simulates() {
 
 #[test]
 fn real_hoosier_rig_data_fits_within_a_few_percent() {
-    let data = root().join("../shared/data/tyre_ttc_hoosier_43075/cornering.csv");
-    if !data.exists() {
-        skipped("real_hoosier_rig_data_fits_within_a_few_percent", &data);
+    let Some(data) = shared_data(
+        "real_hoosier_rig_data_fits_within_a_few_percent",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
         return;
-    }
+    };
     let out = tempfile::tempdir().unwrap();
     let o = run(&[
         "identify",

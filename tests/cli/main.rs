@@ -19,12 +19,108 @@ pub(crate) fn run(args: &[&str]) -> Output {
 
 /// Says on the terminal that a test skipped itself: written to the process's
 /// stderr directly, past the test harness's capture of `eprintln!`.
-pub(crate) fn skipped(test: &str, missing: &Path) {
+fn skipped(test: &str, missing: &Path) {
     use std::io::Write;
     let _ = writeln!(
         std::io::stderr().lock(),
-        "SKIPPED {test}: {} is absent",
+        "SKIPPED {test}: {} is absent (the public data sets are looked for in shared/data beside the checkout)",
         missing.display()
+    );
+}
+
+/// What a test that reads a public data set does when the set is missing.
+#[derive(Debug, PartialEq, Eq)]
+pub(crate) enum MissingData {
+    /// Say so on the terminal and pass: a developer's checkout without the data.
+    Skip,
+    /// Fail: under CI the data are part of the environment, and a test that
+    /// skips there would hide a broken set-up.
+    Fail,
+}
+
+/// The decision, from the value of the environment variable `CI`: set to
+/// anything but an empty string, `0` or `false`, it is CI.
+pub(crate) fn on_missing_data(ci: Option<&std::ffi::OsStr>) -> MissingData {
+    match ci.and_then(|v| v.to_str()) {
+        Some(v) if !v.is_empty() && v != "0" && !v.eq_ignore_ascii_case("false") => {
+            MissingData::Fail
+        }
+        // A value that is not UTF-8 is set, and not a "no".
+        None if ci.is_some() => MissingData::Fail,
+        _ => MissingData::Skip,
+    }
+}
+
+/// The file `relative` of the public data sets (`shared/data/` beside the
+/// checkout), or `None` after saying that `test` skips, when it is absent
+/// outside CI. Under CI a missing file fails the test.
+pub(crate) fn shared_data(test: &str, relative: &str) -> Option<PathBuf> {
+    let ci = std::env::var_os("CI");
+    data_file(
+        &root().join("../shared/data"),
+        relative,
+        test,
+        ci.as_deref(),
+    )
+}
+
+/// `dir/relative` when it is a file; else, by [`on_missing_data`] for the
+/// value `ci` of `CI`, `None` (skip) or a panic (fail).
+fn data_file(
+    dir: &Path,
+    relative: &str,
+    test: &str,
+    ci: Option<&std::ffi::OsStr>,
+) -> Option<PathBuf> {
+    let path = dir.join(relative);
+    if path.is_file() {
+        return Some(path);
+    }
+    match on_missing_data(ci) {
+        MissingData::Fail => panic!(
+            "{test}: {} is absent and CI is set: under CI the public data sets must be present",
+            path.display()
+        ),
+        MissingData::Skip => {
+            skipped(test, &path);
+            None
+        }
+    }
+}
+
+#[test]
+fn missing_data_skips_outside_ci_and_fails_under_it() {
+    use std::ffi::OsStr;
+    assert_eq!(on_missing_data(None), MissingData::Skip);
+    for no in ["", "0", "false", "FALSE"] {
+        assert_eq!(
+            on_missing_data(Some(OsStr::new(no))),
+            MissingData::Skip,
+            "{no:?}"
+        );
+    }
+    for yes in ["true", "1", "yes", "TRUE"] {
+        assert_eq!(
+            on_missing_data(Some(OsStr::new(yes))),
+            MissingData::Fail,
+            "{yes:?}"
+        );
+    }
+    let dir = scratch(&[("present.csv", "t\n")]);
+    let ci = Some(OsStr::new("true"));
+    // Present: returned, in CI or not.
+    for ci in [None, ci] {
+        let found = data_file(dir.path(), "present.csv", "t", ci);
+        assert_eq!(found, Some(dir.path().join("present.csv")));
+    }
+    // Absent: skipped outside CI, a failure under it.
+    assert_eq!(data_file(dir.path(), "absent.csv", "t", None), None);
+    let failed = std::panic::catch_unwind(|| data_file(dir.path(), "absent.csv", "t", ci));
+    let message = failed.expect_err("a missing data set fails under CI");
+    let message = message.downcast_ref::<String>().unwrap();
+    assert!(
+        message.contains("absent.csv is absent and CI is set"),
+        "{message}"
     );
 }
 

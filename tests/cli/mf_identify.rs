@@ -295,14 +295,12 @@ fn mf61_staged_identification_recovers_the_parameters_that_matter() {
 /// overall on these data (70.6 N on Fy, 6.23 N·m on Mz).
 #[test]
 fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
-    let data = root().join("../shared/data/tyre_ttc_hoosier_43075/cornering.csv");
-    if !data.exists() {
-        skipped(
-            "mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers",
-            &data,
-        );
+    let Some(data) = shared_data(
+        "mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
         return;
-    }
+    };
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("hoosier.tir");
     let o = run(&[

@@ -248,11 +248,12 @@ fn selecting_a_pressure_or_camber_the_file_lacks_is_refused() {
 
 #[test]
 fn real_hoosier_rig_data_groups_as_before() {
-    let data = root().join("../shared/data/tyre_ttc_hoosier_43075/cornering.csv");
-    if !data.exists() {
-        skipped("real_hoosier_rig_data_groups_as_before", &data);
+    let Some(data) = shared_data(
+        "real_hoosier_rig_data_groups_as_before",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
         return;
-    }
+    };
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("t.toml");
     let o = run(&[

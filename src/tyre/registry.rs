@@ -53,7 +53,7 @@ pub trait ModelEntry: Send + Sync {
     /// ([`Model::start`]).
     fn start(&self, fz: f64) -> Option<Tyre>;
     /// The tyre of a tyre file's table without its `model` key.
-    fn from_table(&self, table: toml::Table) -> Result<Tyre, toml::de::Error>;
+    fn read_table(&self, table: toml::Table) -> Result<Tyre, toml::de::Error>;
     /// The Rust type of the model (a second registration of the same type
     /// is no conflict).
     fn model_type(&self) -> TypeId;
@@ -81,7 +81,7 @@ impl<M: Model> ModelEntry for Registration<M> {
     fn start(&self, fz: f64) -> Option<Tyre> {
         M::start(fz).map(self.wrap)
     }
-    fn from_table(&self, table: toml::Table) -> Result<Tyre, toml::de::Error> {
+    fn read_table(&self, table: toml::Table) -> Result<Tyre, toml::de::Error> {
         toml::Value::Table(table).try_into::<M>().map(self.wrap)
     }
     fn model_type(&self) -> TypeId {
@@ -186,7 +186,7 @@ impl<'de> Deserialize<'de> for Tyre {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let (entry, table) = d.deserialize_map(TyreTable)?;
         entry
-            .from_table(table)
+            .read_table(table)
             .map_err(|e| D::Error::custom(e.message()))
     }
 }

@@ -54,8 +54,9 @@ pub use mf::MagicFormula;
 pub use pac89::{Pac89, Pac89Form};
 pub use unitire::{UniTire, UniTireLateral, UniTireLongitudinal};
 
+pub use erased::Erased;
 pub use name::ModelName;
-pub use registry::{model_names, models, register, swarm_models, ModelEntry, Registration, Tyre};
+pub use registry::{model_names, models, register, swarm_models, ModelEntry, Tyre};
 
 use crate::error::ParamError;
 use serde::de::DeserializeOwned;

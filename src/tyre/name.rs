@@ -10,7 +10,7 @@ use serde::Serialize;
 /// Built-in models have constants (`ModelName::Pac89`); every model, a
 /// registered one included, is listed by [`super::models`] and parsed with
 /// `FromStr` (the error lists the known names).
-#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(transparent)]
 pub struct ModelName(&'static str);
 

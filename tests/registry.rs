@@ -109,7 +109,13 @@ fn the_registered_toy_is_in_every_list() {
     assert_eq!(model_names()[6..], [name]);
     assert!(swarm_models().contains(&name));
     assert_eq!("toy-linear".parse::<ModelName>(), Ok(name));
-    assert!(IdentifyModel::names().contains(&"toy-linear"));
+    assert_eq!(
+        IdentifyModel::names(),
+        ["gim", "magic-simple", "unitire", "pac89", "linear", "mf61", "mf62", "toy-linear"]
+    );
+    let all = IdentifyModel::all();
+    assert!(all.contains(&IdentifyModel::Mf61) && all.contains(&IdentifyModel::Mf62));
+    assert_eq!(all[7], IdentifyModel::Swarm(name));
     let e = "brush".parse::<IdentifyModel>().unwrap_err().to_string();
     assert!(e.contains("toy-linear") && e.contains("mf62"), "{e}");
 

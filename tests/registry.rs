@@ -111,7 +111,16 @@ fn the_registered_toy_is_in_every_list() {
     assert_eq!("toy-linear".parse::<ModelName>(), Ok(name));
     assert_eq!(
         IdentifyModel::names(),
-        ["gim", "magic-simple", "unitire", "pac89", "linear", "mf61", "mf62", "toy-linear"]
+        [
+            "gim",
+            "magic-simple",
+            "unitire",
+            "pac89",
+            "linear",
+            "mf61",
+            "mf62",
+            "toy-linear"
+        ]
     );
     let all = IdentifyModel::all();
     assert!(all.contains(&IdentifyModel::Mf61) && all.contains(&IdentifyModel::Mf62));

@@ -320,8 +320,9 @@ pub trait ModelParameters: TyreModel + Parameterised {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Identification {
     /// A particle swarm and a local polish over the lateral parameter
-    /// vector ([`Parameterised`]) from [`Model::start`], then the aligning
-    /// and longitudinal blocks; `identify --model <name>`.
+    /// vector ([`Parameterised`]) from [`Model::start`] (which then gives a
+    /// start), then the aligning and longitudinal blocks; `identify --model
+    /// <name>`.
     Swarm,
     /// A staged fit of the model's own under these names, one per version
     /// (the Magic Formula: Wei et al.'s (2010) stages, `mf61` and `mf62`).

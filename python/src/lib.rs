@@ -15,7 +15,7 @@ use handling::jobs::shard::{shard_job, Shard, ShardJob};
 use handling::jobs::synth::{truth_named, EffectName};
 use handling::metrics::MetricSettings;
 use handling::study::{Sample, Study};
-use handling::tyre::{Tyre, TyreModel};
+use handling::tyre::{model_names, Tyre, TyreModel};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
@@ -593,16 +593,9 @@ fn identify(
 ) -> PyResult<(String, PyTyre)> {
     let model: IdentifyModel = model.parse().map_err(py_err)?;
     let local: Polish = local.parse().map_err(py_err)?;
-    let start = match start {
-        "data" => StartArg::Data,
-        "paper" => StartArg::Paper,
-        "template" => StartArg::Template,
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "unknown start `{start}`: data, paper or template"
-            )))
-        }
-    };
+    let start: StartArg = start
+        .parse()
+        .map_err(|e: Error| PyValueError::new_err(e.to_string()))?;
     let write = out.is_some();
     let o = Options {
         data,
@@ -711,6 +704,11 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(synth, m)?)?;
     m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(vehicle_from_toml, m)?)?;
+    // The registry's lists: the `model` keys of tyre files and the models
+    // `identify` fits (a model registered in Rust appears in both).
+    let names: Vec<&str> = model_names().iter().map(|n| n.as_str()).collect();
+    m.add("MODEL_NAMES", names)?;
+    m.add("IDENTIFY_MODELS", IdentifyModel::names())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

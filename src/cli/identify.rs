@@ -10,10 +10,10 @@ use std::path::PathBuf;
 pub struct IdentifyArgs {
     /// Rig data file.
     data: PathBuf,
-    /// gim, magic-simple, unitire, pac89, linear, or mf61 / mf62 (the
-    /// Magic Formula by Wei et al. (2010)'s staged Levenberg–Marquardt;
-    /// writes a .tir).
-    #[arg(long, value_parser = super::named::<IdentifyModel>())]
+    /// The tyre model: one with a swarm fit, or mf61 / mf62 (the Magic
+    /// Formula by Wei et al. (2010)'s staged Levenberg–Marquardt; writes a
+    /// .tir).
+    #[arg(long, value_parser = super::named::<IdentifyModel>(IdentifyModel::names))]
     model: IdentifyModel,
     /// Random seed of the swarm.
     #[arg(long, default_value_t = 1)]
@@ -30,7 +30,7 @@ pub struct IdentifyArgs {
     #[arg(long)]
     camber: Option<f64>,
     /// Local polish: lm, gn (Zhang & Li's (2017) modified Gauss-Newton) or none.
-    #[arg(long, default_value = "lm", value_parser = super::named::<Polish>())]
+    #[arg(long, default_value = "lm", value_parser = super::named::<Polish>(|| Polish::ALL.map(Polish::as_str).to_vec()))]
     local: Polish,
     /// Slip-angle bin for thinning, degrees (0: no thinning): the
     /// samples of one condition in one bin are averaged; a lone sample is
@@ -43,7 +43,7 @@ pub struct IdentifyArgs {
     /// mf61/mf62: where the parameters start — `template` (the template's values), `data` (estimates from
     /// the data, then MINPACK's LM) or `paper` (all 1, Wei et al.'s LM
     /// with μ = 0.1, β = 5).
-    #[arg(long, value_enum, default_value_t = StartArg::Data)]
+    #[arg(long, default_value = "data", value_parser = super::named::<StartArg>(|| StartArg::ALL.map(StartArg::as_str).to_vec()))]
     start: StartArg,
     /// mf61/mf62: a .tir whose constants (FNOMIN, UNLOADED_RADIUS,
     /// NOMPRES, side) and unfitted coefficients are kept, and whose

@@ -11,7 +11,7 @@ mod tyre_eval;
 
 use clap::builder::{PossibleValue, TypedValueParser};
 use clap::error::ErrorKind;
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Parser, Subcommand};
 use std::ffi::OsStr;
 use std::marker::PhantomData;
 use std::process::ExitCode;
@@ -94,20 +94,27 @@ fn print(lines: &[String]) {
     }
 }
 
-/// The parser of a closed set: its values listed in the help (clap's
-/// `ValueEnum`), an unknown value refused with the library's own message
-/// (`FromStr`), which names the value and every known one.
+/// The parser of a closed set of names the library lists (the registry's
+/// models, a job's choices): its values listed in the help, an unknown
+/// value refused with the library's own message (`FromStr`), which names
+/// the value and every known one.
 #[derive(Clone, Copy)]
-struct Named<T>(PhantomData<T>);
+struct Named<T> {
+    names: fn() -> Vec<&'static str>,
+    parsed: PhantomData<T>,
+}
 
-/// [`Named`] for `T`.
-fn named<T>() -> Named<T> {
-    Named(PhantomData)
+/// [`Named`] for `T`, whose names `names` gives.
+fn named<T>(names: fn() -> Vec<&'static str>) -> Named<T> {
+    Named {
+        names,
+        parsed: PhantomData,
+    }
 }
 
 impl<T> TypedValueParser for Named<T>
 where
-    T: ValueEnum + std::str::FromStr + Clone + Send + Sync + 'static,
+    T: std::str::FromStr + Clone + Send + Sync + 'static,
     T::Err: std::fmt::Display,
 {
     type Value = T;
@@ -127,10 +134,6 @@ where
     }
 
     fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
-        Some(Box::new(
-            T::value_variants()
-                .iter()
-                .filter_map(ValueEnum::to_possible_value),
-        ))
+        Some(Box::new((self.names)().into_iter().map(PossibleValue::new)))
     }
 }

@@ -24,7 +24,7 @@ pub mod pac89_two_stage;
 use crate::error::Error;
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{stats, Inertia, Pso};
-use crate::tyre::{ModelName, Parameterised, Tyre, TyreModel};
+use crate::tyre::{Identification, ModelName, Parameterised, Tyre, TyreModel};
 use data::Condition;
 use nalgebra::DMatrix;
 use serde::Serialize;
@@ -506,24 +506,18 @@ fn parameter_reports(
 #[cfg(test)]
 mod tests;
 
-/// The models a swarm fit starts from ([`start_tyre_of`]): every model but
-/// the full Magic Formula, which has its own staged fit ([`mf_staged`]).
-pub const SWARM_MODELS: [ModelName; 5] = [
-    ModelName::Gim,
-    ModelName::MagicSimple,
-    ModelName::Unitire,
-    ModelName::Pac89,
-    ModelName::Linear,
-];
-
 /// The start tyre of a fit of `model` to data whose median load is `fz`
 /// (each model's own, [`ModelName::start_tyre`]): the lateral parameters
 /// only, so that no borrowed aligning or longitudinal coefficients are
-/// written.
+/// written. A model without a swarm fit is refused with what fits it.
 pub fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
     model.start_tyre(fz).ok_or_else(|| {
-        Error::Options(
-            "the magic-formula model is identified by its staged fit (mf61 or mf62)".into(),
-        )
+        Error::Options(match model.identification() {
+            Identification::Staged(names) => format!(
+                "the {model} model is identified by its staged fit ({})",
+                names.join(" or ")
+            ),
+            _ => format!("the {model} model is not identified from rig data"),
+        })
     })
 }

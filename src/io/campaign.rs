@@ -32,9 +32,8 @@ use super::{read_run, MeasuredRun};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{by_name, InputError, ParamError};
-use crate::identify::SWARM_MODELS;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
-use crate::tyre::ModelName;
+use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -283,7 +282,7 @@ fn base_tyres(
         };
     let name = spec.model.as_deref().unwrap_or("pac89");
     // The rig fit starts a swarm, which the staged Magic Formula does not.
-    let model = by_name(&SWARM_MODELS, ModelName::as_str, "tyre model", name)
+    let model = by_name(&swarm_models(), ModelName::as_str, "tyre model", name)
         .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why)))?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());

@@ -1,69 +1,14 @@
-//! [`Tyre`]: a tyre of any model, selected at run time by the `model` key of
-//! its TOML file (serde's internally tagged enum), and the dispatch to the
-//! model's own knowledge ([`ModelParameters`]).
-//!
-//! The enum knows nothing about any model's parameters: every question
-//! goes through [`Tyre::as_model`] or [`Tyre::as_model_mut`] (two match
-//! blocks), and only the lateral force, the vehicle's hot loop, has a match
-//! of its own so that each model's override is called directly. Units and
-//! signs are those of `tyre/mod.rs`.
+//! What a [`Tyre`] of any model does: every question goes to the model's
+//! own knowledge ([`super::ModelParameters`]) through [`Tyre::as_model`] or
+//! [`Tyre::as_model_mut`]; only the lateral force, the vehicle's hot loop,
+//! calls each model's override directly. The enum, those dispatches and its
+//! serde come from the registry's list (`registry.rs`); nothing here names
+//! a model. Units and signs are those of `tyre/mod.rs`.
 
-use super::{
-    Block, Gim, Linear, MagicFormula, MagicSimple, ModelName, ModelParameters, Pac89,
-    Parameterised, SlipState, TyreForces, TyreModel, UniTire,
-};
+use super::{Block, Parameterised, PointForces, SlipState, Tyre, TyreForces, TyreModel};
 use crate::error::ParamError;
-use serde::{Deserialize, Serialize};
-
-/// A tyre of any supported model, selected at run time by the `model` key of
-/// its TOML file.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "model", rename_all = "kebab-case")]
-pub enum Tyre {
-    /// Gim / brush model with adhesion and sliding regions.
-    Gim(Gim),
-    /// Simplified Magic Formula `Fy = μ·Fz·sin(C·atan(B·α))` (Li, Jia & Zhao).
-    MagicSimple(MagicSimple),
-    /// UniTire pure-slip model (Zhang & Li (2017)).
-    Unitire(UniTire),
-    /// PAC89 Magic Formula in the Adams numbering (Zhang et al. (2021)).
-    Pac89(Pac89),
-    /// Linear tyre `Fy = C_α·α` (the textbook bicycle model).
-    Linear(Linear),
-    /// Magic Formula 5.2/6.1/6.2, usually read from a `.tir` file.
-    MagicFormula(Box<MagicFormula>),
-}
 
 impl Tyre {
-    /// The model behind the tyre, for everything it knows about itself.
-    pub fn as_model(&self) -> &dyn ModelParameters {
-        match self {
-            Tyre::Gim(t) => t,
-            Tyre::MagicSimple(t) => t,
-            Tyre::Unitire(t) => t,
-            Tyre::Pac89(t) => t,
-            Tyre::Linear(t) => t,
-            Tyre::MagicFormula(t) => t.as_ref(),
-        }
-    }
-
-    /// The model behind the tyre, to change its parameters.
-    pub fn as_model_mut(&mut self) -> &mut dyn ModelParameters {
-        match self {
-            Tyre::Gim(t) => t,
-            Tyre::MagicSimple(t) => t,
-            Tyre::Unitire(t) => t,
-            Tyre::Pac89(t) => t,
-            Tyre::Linear(t) => t,
-            Tyre::MagicFormula(t) => t.as_mut(),
-        }
-    }
-
-    /// The model of this tyre.
-    pub fn model(&self) -> ModelName {
-        self.as_model().name()
-    }
-
     /// The `model` key of this tyre.
     pub fn model_name(&self) -> &'static str {
         self.model().as_str()
@@ -226,20 +171,10 @@ impl TyreModel for Tyre {
     fn lateral_force(&self, s: &SlipState) -> f64 {
         // The vehicle's hot loop: a direct call to each model's override
         // instead of one through the vtable.
-        match self {
-            Tyre::Gim(t) => t.lateral_force(s),
-            Tyre::MagicSimple(t) => t.lateral_force(s),
-            Tyre::Unitire(t) => t.lateral_force(s),
-            Tyre::Pac89(t) => t.lateral_force(s),
-            Tyre::Linear(t) => t.lateral_force(s),
-            Tyre::MagicFormula(t) => t.lateral_force(s),
-        }
+        self.lateral_force_direct(s)
     }
     fn lateral_force_per_load(&self, s: &SlipState) -> Option<f64> {
-        match self {
-            Tyre::MagicSimple(t) => t.lateral_force_per_load(s),
-            _ => None,
-        }
+        self.lateral_force_per_load_direct(s)
     }
     fn cornering_stiffness(&self, fz: f64) -> f64 {
         self.as_model().cornering_stiffness(fz)
@@ -247,20 +182,4 @@ impl TyreModel for Tyre {
     fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
         self.as_model().friction_coefficient(fz, mu_scale)
     }
-}
-
-/// Forces and moments of any tyre at one point: the Magic Formula gives all
-/// five (and reads the pressure), the other models `fx`, `fy`, `mz` only.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct PointForces {
-    /// Longitudinal force, N.
-    pub fx: f64,
-    /// Lateral force, N.
-    pub fy: f64,
-    /// Aligning moment, N·m.
-    pub mz: f64,
-    /// Overturning moment, N·m (Magic Formula only).
-    pub mx: Option<f64>,
-    /// Rolling-resistance moment, N·m (Magic Formula only).
-    pub my: Option<f64>,
 }

@@ -16,7 +16,7 @@
 //! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
 use super::{
-    safe_tan, Block, ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
+    safe_tan, Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
@@ -159,23 +159,12 @@ impl Parameterised for Gim {
 }
 
 impl ModelParameters for Gim {
-    fn name(&self) -> ModelName {
-        ModelName::Gim
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         Gim::validate(self)
     }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
-    }
-    /// 50 kN/rad, 0.15 m, μ 1, the stiffness referred to the data's median
-    /// load.
-    fn start(fz: f64) -> Option<Self> {
-        Some(Gim {
-            reference_load: fz,
-            ..Gim::new(50_000.0, 0.15, 1.0)
-        })
     }
     /// The contact length acts on Mz only (it is the aligning block), and
     /// the load exponent needs more than one load.
@@ -204,5 +193,17 @@ impl ModelParameters for Gim {
             Block::Aligning => vec![(0.02, 0.5)],
             Block::Longitudinal => Vec::new(),
         }
+    }
+}
+
+impl Model for Gim {
+    const NAME: &'static str = "gim";
+    /// 50 kN/rad, 0.15 m, μ 1, the stiffness referred to the data's median
+    /// load.
+    fn start(fz: f64) -> Option<Self> {
+        Some(Gim {
+            reference_load: fz,
+            ..Gim::new(50_000.0, 0.15, 1.0)
+        })
     }
 }

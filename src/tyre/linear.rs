@@ -4,7 +4,7 @@
 //!
 //! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
-use super::{ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -78,9 +78,6 @@ impl Parameterised for Linear {
 }
 
 impl ModelParameters for Linear {
-    fn name(&self) -> ModelName {
-        ModelName::Linear
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         Linear::validate(self)
@@ -88,6 +85,10 @@ impl ModelParameters for Linear {
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
     }
+}
+
+impl Model for Linear {
+    const NAME: &'static str = "linear";
     /// 50 kN/rad, no trail.
     fn start(_fz: f64) -> Option<Self> {
         Some(Linear::new(50_000.0))

@@ -8,7 +8,7 @@
 //!
 //! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
 
-use super::{ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -95,9 +95,6 @@ impl Parameterised for MagicSimple {
 }
 
 impl ModelParameters for MagicSimple {
-    fn name(&self) -> ModelName {
-        ModelName::MagicSimple
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         MagicSimple::validate(self)
@@ -107,6 +104,10 @@ impl ModelParameters for MagicSimple {
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.b *= k;
     }
+}
+
+impl Model for MagicSimple {
+    const NAME: &'static str = "magic-simple";
     /// B = 10 /rad, C = 1.3, D = 1 (Li, Jia & Zhao's range).
     fn start(_fz: f64) -> Option<Self> {
         Some(MagicSimple::new(10.0, 1.3))

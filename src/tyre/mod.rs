@@ -18,18 +18,33 @@
 //! Layout: this file holds the slip state, the forces and the traits every
 //! model implements ([`TyreModel`] for the forces, [`Parameterised`] for the
 //! lateral-force vector, [`ModelParameters`] for everything else a fit or a
-//! study needs to know about the model); one file per model; `dispatch.rs`
-//! the [`Tyre`] enum that selects a model at run time; `name.rs` the model
-//! names and the start tyre of a fit. Adding a model is described in the
-//! README ("Adding a tyre model").
+//! study needs to know about the model, [`Model`] for what the registry
+//! needs: name, construction, identification); one file per model, which
+//! imports this file only; `registry.rs` the one list of models (one line
+//! each), from which the [`Tyre`] enum, the [`ModelName`] constants and every
+//! list of names (tyre files, `identify`, the CLI, Python, error messages)
+//! are derived, and [`register`] for a model defined outside the crate;
+//! `generate.rs` the macro that expands the list; `erased.rs` the type-erased
+//! model a registered tyre is held as; `dispatch.rs` what [`Tyre`] does with
+//! any model; `name.rs` the model names.
+//!
+//! Adding a model: a file `tyre/<model>.rs` with its parameter struct
+//! (serde `Serialize`/`Deserialize`, `deny_unknown_fields`) implementing the
+//! four traits, and one line in the list in `registry.rs`. A model defined
+//! outside the crate implements the same traits and calls
+//! [`register`]`::<M>()` once: its tyre files, `simulate`, `identify` (when
+//! [`Model::IDENTIFICATION`] says so) and `tyre-eval` then accept it.
 
 mod dispatch;
+mod erased;
+mod generate;
 mod gim;
 mod linear;
 mod magic_simple;
 pub mod mf;
 mod name;
 pub mod pac89;
+mod registry;
 pub mod unitire;
 
 pub use gim::Gim;
@@ -39,10 +54,13 @@ pub use mf::MagicFormula;
 pub use pac89::{Pac89, Pac89Form};
 pub use unitire::{UniTire, UniTireLateral, UniTireLongitudinal};
 
-pub use dispatch::{PointForces, Tyre};
-pub use name::{ModelName, MODEL_NAMES};
+pub use erased::Erased;
+pub use name::ModelName;
+pub use registry::{model_names, models, register, swarm_models, ModelEntry, Tyre};
 
 use crate::error::ParamError;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
 
 /// The slip state of one wheel: everything a tyre model may read.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -211,33 +229,23 @@ pub enum Block {
 }
 
 /// What a tyre model knows about its own parameters beyond the forces: its
-/// name, its checks, its parameter blocks with their bounds and which of
-/// them rig data can identify, its canonical form, how its cornering
-/// stiffness scales, and the start of a fit. Every model implements it in
-/// its own file; [`Tyre`] only dispatches, so model internals (index lists,
-/// bounds, which coefficient carries the stiffness) stay with the model.
+/// checks, its parameter blocks with their bounds and which of them rig
+/// data can identify, its canonical form and how its cornering stiffness
+/// scales. Every model implements it in its own file; [`Tyre`] only
+/// dispatches, so model internals (index lists, bounds, which coefficient
+/// carries the stiffness) stay with the model. It is object safe: a tyre
+/// of any model is seen through it.
 ///
-/// Only the first three methods are required: a model without an aligning
+/// Only the first two methods are required: a model without an aligning
 /// moment or longitudinal force to fit, without load-dependent terms and
 /// without sign-blind parameters keeps the defaults.
 pub trait ModelParameters: TyreModel + Parameterised {
-    /// The model's name (its `model` key).
-    fn name(&self) -> ModelName;
-
     /// Checks the parameters for physical sense; the error names the key.
     fn validate(&self) -> Result<(), ParamError>;
 
     /// Multiplies the cornering stiffness by `k` while the friction limit
     /// stays: the parameter(s) the stiffness is proportional to are scaled.
     fn scale_cornering_stiffness(&mut self, k: f64);
-
-    /// The start tyre of a fit to data whose median load is `fz`: lateral
-    /// parameters only, so that no borrowed aligning or longitudinal
-    /// coefficients are written (`None`: the model is not fitted by the
-    /// swarm; the Magic Formula has its own staged identification).
-    fn start(fz: f64) -> Option<Self>
-    where
-        Self: Sized;
 
     /// Fewest distinct loads a lateral fit needs.
     fn loads_needed(&self) -> usize {
@@ -306,6 +314,66 @@ pub trait ModelParameters: TyreModel + Parameterised {
     fn has_wheel_moments(&self) -> bool {
         false
     }
+}
+
+/// How `identify` fits a model to rig data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Identification {
+    /// A particle swarm and a local polish over the lateral parameter
+    /// vector ([`Parameterised`]) from [`Model::start`] (which then gives a
+    /// start), then the aligning and longitudinal blocks; `identify --model
+    /// <name>`.
+    Swarm,
+    /// A staged fit of the model's own under these names, one per version
+    /// (the Magic Formula: Wei et al.'s (2010) stages, `mf61` and `mf62`).
+    Staged(&'static [&'static str]),
+    /// Not identified from rig data.
+    NotFitted,
+}
+
+/// A tyre model as the registry knows it: its name, how a tyre of it is
+/// read from a tyre file's table (serde, the `model` key taken off), where a
+/// fit starts and how it is identified. With [`ModelParameters`] (and so
+/// [`TyreModel`] and [`Parameterised`]) it is everything a job needs.
+pub trait Model:
+    ModelParameters
+    + Clone
+    + std::fmt::Debug
+    + PartialEq
+    + Serialize
+    + DeserializeOwned
+    + Send
+    + Sync
+    + 'static
+{
+    /// The `model` key of its tyre files: its name everywhere (command line,
+    /// Python, reports, messages).
+    const NAME: &'static str;
+
+    /// How `identify` fits it (default: the swarm from [`Model::start`]).
+    const IDENTIFICATION: Identification = Identification::Swarm;
+
+    /// The start tyre of a fit to data whose median load is `fz`: lateral
+    /// parameters only, so that no borrowed aligning or longitudinal
+    /// coefficients are written (`None`: the model has no swarm fit; the
+    /// Magic Formula has its own staged identification).
+    fn start(fz: f64) -> Option<Self>;
+}
+
+/// Forces and moments of any tyre at one point: the Magic Formula gives all
+/// five (and reads the pressure), the other models `fx`, `fy`, `mz` only.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PointForces {
+    /// Longitudinal force, N.
+    pub fx: f64,
+    /// Lateral force, N.
+    pub fy: f64,
+    /// Aligning moment, N·m.
+    pub mz: f64,
+    /// Overturning moment, N·m (Magic Formula only).
+    pub mx: Option<f64>,
+    /// Rolling-resistance moment, N·m (Magic Formula only).
+    pub my: Option<f64>,
 }
 
 /// `tan α` that keeps its sign and stays finite up to |α| = 90°.

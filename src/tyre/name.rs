@@ -1,96 +1,39 @@
-//! The tyre models as a closed set of names (the `model` key of a tyre
-//! file), and the start tyre of a fit of each: the one place besides the
-//! [`Tyre`] enum that lists the models.
+//! A tyre model's name: the `model` key of its tyre files, its value of
+//! `identify --model` when it has a swarm fit, its name in reports and in
+//! Python. The names and their constants (`ModelName::Gim`, …) come from
+//! the registry's one list (`registry.rs`), and a name is made only there,
+//! so every `ModelName` is a model the registry holds.
 
-use super::{Gim, Linear, MagicFormula, MagicSimple, ModelParameters, Pac89, Tyre, UniTire};
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
-/// The tyre models, a closed set: the `model` key of a tyre file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "kebab-case")]
-pub enum ModelName {
-    /// [`Gim`].
-    Gim,
-    /// [`MagicSimple`].
-    MagicSimple,
-    /// [`UniTire`].
-    Unitire,
-    /// [`Pac89`].
-    Pac89,
-    /// [`Linear`].
-    Linear,
-    /// [`MagicFormula`].
-    MagicFormula,
-}
+/// The name of a registered tyre model (the `model` key of a tyre file).
+/// Built-in models have constants (`ModelName::Pac89`); every model, a
+/// registered one included, is listed by [`super::models`] and parsed with
+/// `FromStr` (the error lists the known names).
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(transparent)]
+pub struct ModelName(&'static str);
 
 impl ModelName {
-    /// Every model, in the order of the [`Tyre`] variants.
-    pub const ALL: [ModelName; 6] = [
-        ModelName::Gim,
-        ModelName::MagicSimple,
-        ModelName::Unitire,
-        ModelName::Pac89,
-        ModelName::Linear,
-        ModelName::MagicFormula,
-    ];
+    /// The name of a model the registry holds (its `Model::NAME`).
+    pub(super) const fn new(name: &'static str) -> Self {
+        Self(name)
+    }
 
     /// The name as a tyre file writes it.
     pub const fn as_str(self) -> &'static str {
-        match self {
-            ModelName::Gim => "gim",
-            ModelName::MagicSimple => "magic-simple",
-            ModelName::Unitire => "unitire",
-            ModelName::Pac89 => "pac89",
-            ModelName::Linear => "linear",
-            ModelName::MagicFormula => "magic-formula",
-        }
-    }
-
-    /// The start tyre of a fit of this model to data whose median load is
-    /// `fz` ([`ModelParameters::start`]); `None` for a model the swarm does
-    /// not fit (the Magic Formula, identified in stages).
-    pub fn start_tyre(self, fz: f64) -> Option<Tyre> {
-        match self {
-            ModelName::Gim => Gim::start(fz).map(Tyre::Gim),
-            ModelName::MagicSimple => MagicSimple::start(fz).map(Tyre::MagicSimple),
-            ModelName::Unitire => UniTire::start(fz).map(Tyre::Unitire),
-            ModelName::Pac89 => Pac89::start(fz).map(Tyre::Pac89),
-            ModelName::Linear => Linear::start(fz).map(Tyre::Linear),
-            ModelName::MagicFormula => {
-                MagicFormula::start(fz).map(|m| Tyre::MagicFormula(Box::new(m)))
-            }
-        }
-    }
-
-    /// The models that have a start tyre, in [`ModelName::ALL`]'s order.
-    pub fn fitted() -> Vec<ModelName> {
-        Self::ALL
-            .into_iter()
-            .filter(|m| m.start_tyre(1.0).is_some())
-            .collect()
+        self.0
     }
 }
 
 impl std::fmt::Display for ModelName {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.as_str())
+        f.write_str(self.0)
     }
 }
 
-impl std::str::FromStr for ModelName {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        crate::error::by_name(&Self::ALL, ModelName::as_str, "tyre model", s)
+impl std::fmt::Debug for ModelName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.0)
     }
 }
-
-/// Names accepted by the `model` key ([`ModelName::ALL`] as strings).
-pub const MODEL_NAMES: [&str; ModelName::ALL.len()] = {
-    let mut out = [""; ModelName::ALL.len()];
-    let mut i = 0;
-    while i < out.len() {
-        out[i] = ModelName::ALL[i].as_str();
-        i += 1;
-    }
-    out
-};

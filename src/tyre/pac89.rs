@@ -22,7 +22,7 @@
 //! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
-use super::{Block, ModelName, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -352,9 +352,6 @@ const LATERAL_CAMBER_TERMS: [usize; 3] = [5, 8, 11];
 const ALIGNING_CAMBER_TERMS: [usize; 5] = [6, 10, 11, 14, 15];
 
 impl ModelParameters for Pac89 {
-    fn name(&self) -> ModelName {
-        ModelName::Pac89
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         Pac89::validate(self)
@@ -363,14 +360,6 @@ impl ModelParameters for Pac89 {
     /// offset Sh makes the stiffness at α = 0 only nearly so).
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.a[3] *= k;
-    }
-    /// The Adams example's lateral set ([`ADAMS_EXAMPLE_A`]).
-    fn start(_fz: f64) -> Option<Self> {
-        Some(Pac89 {
-            b: None,
-            c: None,
-            ..Pac89::adams_example()
-        })
     }
     /// D, BCD and E are functions of the load: three loads.
     fn loads_needed(&self) -> usize {
@@ -429,5 +418,17 @@ impl ModelParameters for Pac89 {
                 .collect(),
             Block::Longitudinal => vec![true; 11],
         }
+    }
+}
+
+impl Model for Pac89 {
+    const NAME: &'static str = "pac89";
+    /// The Adams example's lateral set ([`ADAMS_EXAMPLE_A`]).
+    fn start(_fz: f64) -> Option<Self> {
+        Some(Pac89 {
+            b: None,
+            c: None,
+            ..Pac89::adams_example()
+        })
     }
 }

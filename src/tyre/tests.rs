@@ -316,14 +316,14 @@ fn tyre_files_parse_by_model_name() {
     assert!(e.to_string().contains("cornering_stifness"), "{e}");
 }
 
-/// The contract every model with a start tyre keeps (README, "Adding a tyre
-/// model"): its name and file round-trip, a valid start inside its search
+/// The contract every model with a start tyre keeps (`tyre/mod.rs`, "Adding
+/// a model"): its name and file round-trip, a valid start inside its search
 /// box, parameter blocks whose names, values, bounds and freedoms agree in
 /// length and survive a set, a canonical form that changes no force, and a
 /// cornering stiffness that scales.
 #[test]
 fn every_model_keeps_the_model_contract() {
-    let fitted = ModelName::fitted();
+    let fitted = swarm_models();
     assert!(fitted.len() >= 5, "{fitted:?}");
     for name in fitted {
         let t = name.start_tyre(4000.0).unwrap();
@@ -374,6 +374,77 @@ fn every_model_keeps_the_model_contract() {
         .parse::<ModelName>()
         .map(|m| m.start_tyre(4000.0));
     assert_eq!(e, Ok(None));
+}
+
+/// The registry's lists agree with each other and with the serde of a tyre
+/// file: every name is parsed back, is the `model` key its start tyre
+/// writes, has its constant, and an unknown name is refused with the list.
+#[test]
+fn the_registry_derives_every_list() {
+    let names: Vec<&str> = model_names().iter().map(|n| n.as_str()).collect();
+    assert_eq!(
+        &names[..6],
+        [
+            "gim",
+            "magic-simple",
+            "unitire",
+            "pac89",
+            "linear",
+            "magic-formula"
+        ]
+    );
+    let consts = [
+        ModelName::Gim,
+        ModelName::MagicSimple,
+        ModelName::Unitire,
+        ModelName::Pac89,
+        ModelName::Linear,
+        ModelName::MagicFormula,
+    ];
+    assert_eq!(&model_names()[..6], consts);
+    for (n, e) in model_names().iter().zip(models()) {
+        assert_eq!(n.as_str().parse::<ModelName>(), Ok(*n));
+        assert_eq!(e.name(), *n);
+        let swarm = e.identification() == Identification::Swarm;
+        assert_eq!(swarm, swarm_models().contains(n), "{n}");
+        assert_eq!(swarm, n.start_tyre(3000.0).is_some(), "{n}");
+    }
+    assert_eq!(&swarm_models()[..5], &consts[..5]);
+    let e = "brush".parse::<ModelName>().unwrap_err();
+    assert!(e.contains("unknown tyre model `brush`"), "{e}");
+    assert!(
+        e.contains("gim, magic-simple, unitire, pac89, linear, magic-formula"),
+        "{e}"
+    );
+    let e = toml::from_str::<Tyre>("model = \"brush\"\n").unwrap_err();
+    assert_eq!(e.span(), Some(8..15), "the error points at the name");
+    assert!(
+        e.message()
+            .starts_with("unknown variant `brush`, expected one of `gim`, `magic-simple`"),
+        "{e}"
+    );
+    let e = toml::from_str::<Tyre>("cornering_stiffness = 1.0\n").unwrap_err();
+    assert_eq!(e.message(), "missing field `model`");
+}
+
+/// A tyre file written and read back, as TOML and as JSON (with its unset
+/// optional tables as `null`), is the same tyre; the `model` key comes
+/// first, then the model's fields in their order.
+#[test]
+fn tyre_files_round_trip_through_the_registry() {
+    let u = ModelName::Unitire.start_tyre(4000.0).unwrap();
+    let text = toml::to_string(&u).unwrap();
+    assert!(
+        text.starts_with("model = \"unitire\"\nrated_load = 4000.0\n"),
+        "{text}"
+    );
+    assert_eq!(toml::from_str::<Tyre>(&text).unwrap(), u);
+    let json = serde_json::to_string(&u).unwrap();
+    assert!(json.contains("\"aligning\":null"), "{json}");
+    assert_eq!(serde_json::from_str::<Tyre>(&json).unwrap(), u);
+    let nan = Tyre::Linear(Linear::new(f64::NAN));
+    let back: Tyre = toml::from_str(&toml::to_string(&nan).unwrap()).unwrap();
+    assert!(matches!(back, Tyre::Linear(l) if l.cornering_stiffness.is_nan()));
 }
 
 mod properties {

@@ -20,8 +20,7 @@
 //! The road friction scales the final μ. Odd in α and in Sx.
 
 use super::{
-    safe_tan, Block, ModelName, ModelParameters, Parameterised, SlipState, Tyre, TyreForces,
-    TyreModel,
+    safe_tan, Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
@@ -254,9 +253,6 @@ fn without_sliding_law() -> Vec<bool> {
 }
 
 impl ModelParameters for UniTire {
-    fn name(&self) -> ModelName {
-        ModelName::Unitire
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         UniTire::validate(self)
@@ -264,18 +260,6 @@ impl ModelParameters for UniTire {
     /// K = Fz·(p3 + p4·Fzn + p5·Fzn²) is proportional to p3..p5.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.lateral.scale_stiffness(k);
-    }
-    /// The bundled `tyres/unitire.toml` (Zhang & Li (2017)'s form) rated at
-    /// the data's median load, lateral parameters only.
-    fn start(fz: f64) -> Option<Self> {
-        let mut u = match toml::from_str::<Tyre>(include_str!("../../tyres/unitire.toml")) {
-            Ok(Tyre::Unitire(u)) => u,
-            _ => unreachable!("the bundled UniTire file"),
-        };
-        u.rated_load = fz;
-        u.longitudinal = None;
-        u.aligning = None;
-        Some(u)
     }
     /// E(Fzn), K(Fzn) and μ0(Fzn) need three loads.
     fn loads_needed(&self) -> usize {
@@ -330,5 +314,25 @@ impl ModelParameters for UniTire {
             Block::Aligning => vec![true; 10],
             Block::Longitudinal => without_sliding_law(),
         }
+    }
+}
+
+impl Model for UniTire {
+    const NAME: &'static str = "unitire";
+    /// The bundled `tyres/unitire.toml` (Zhang & Li (2017)'s form) rated at
+    /// the data's median load, lateral parameters only.
+    fn start(fz: f64) -> Option<Self> {
+        // The file's table without its `model` key is the model's own.
+        let mut table: toml::Table = include_str!("../../tyres/unitire.toml")
+            .parse()
+            .expect("the bundled UniTire file is TOML");
+        table.remove("model");
+        let mut u: UniTire = table
+            .try_into()
+            .expect("the bundled UniTire file holds a UniTire");
+        u.rated_load = fz;
+        u.longitudinal = None;
+        u.aligning = None;
+        Some(u)
     }
 }

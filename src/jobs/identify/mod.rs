@@ -1,5 +1,5 @@
 //! `identify` as one job: rig data in; a fitted tyre file, its JSON report
-//! and its figure out. The models of [`crate::identify::SWARM_MODELS`] are fitted by
+//! and its figure out. The models of [`crate::tyre::swarm_models`] are fitted by
 //! a swarm and a local polish (Zhang & Li (2017), Zhang et al. (2021)):
 //! lateral force first (or the longitudinal force of a file without lateral
 //! data), then the aligning moment and the longitudinal force where the data
@@ -13,138 +13,19 @@ use crate::identify::display::{distinct, fixed};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
+mod choices;
 mod figures;
 mod staged;
 
 use crate::error::Error;
-use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings, LocalMethod};
+use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted};
 use crate::tyre::{ModelName, Pac89, Tyre};
+pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged::run_staged;
 pub use staged::StagedJob;
 use std::path::PathBuf;
-
-/// The models `identify` fits: the swarm-fitted ones and the Magic Formula's
-/// two versions.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, clap::ValueEnum)]
-#[serde(rename_all = "kebab-case")]
-pub enum IdentifyModel {
-    /// Gim (swarm fit).
-    Gim,
-    /// Simplified Magic Formula (swarm fit).
-    MagicSimple,
-    /// UniTire (swarm fit).
-    Unitire,
-    /// PAC89 (swarm fit and Zhang et al.'s (2021) two stages).
-    Pac89,
-    /// Linear (swarm fit).
-    Linear,
-    /// Magic Formula 6.1, Wei et al.'s (2010) staged fit.
-    Mf61,
-    /// Magic Formula 6.2 (`FITTYP = 62`), the same stages.
-    Mf62,
-}
-
-impl IdentifyModel {
-    /// Every model, in the order the messages list them.
-    pub const ALL: [IdentifyModel; 7] = [
-        Self::Gim,
-        Self::MagicSimple,
-        Self::Unitire,
-        Self::Pac89,
-        Self::Linear,
-        Self::Mf61,
-        Self::Mf62,
-    ];
-
-    /// The name on the command line and in file names.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Self::Gim => "gim",
-            Self::MagicSimple => "magic-simple",
-            Self::Unitire => "unitire",
-            Self::Pac89 => "pac89",
-            Self::Linear => "linear",
-            Self::Mf61 => "mf61",
-            Self::Mf62 => "mf62",
-        }
-    }
-
-    /// The tyre model of a swarm fit (`None`: the staged Magic Formula fit).
-    pub fn swarm_model(self) -> Option<ModelName> {
-        match self {
-            Self::Gim => Some(ModelName::Gim),
-            Self::MagicSimple => Some(ModelName::MagicSimple),
-            Self::Unitire => Some(ModelName::Unitire),
-            Self::Pac89 => Some(ModelName::Pac89),
-            Self::Linear => Some(ModelName::Linear),
-            Self::Mf61 | Self::Mf62 => None,
-        }
-    }
-}
-
-impl std::fmt::Display for IdentifyModel {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
-impl std::str::FromStr for IdentifyModel {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self, Error> {
-        crate::error::by_name(&Self::ALL, IdentifyModel::as_str, "tyre model", s)
-            .map_err(Error::Options)
-    }
-}
-
-/// The local polish after the swarm.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
-pub enum Polish {
-    /// Levenberg–Marquardt.
-    #[default]
-    Lm,
-    /// Zhang & Li's (2017) modified Gauss–Newton.
-    Gn,
-    /// None: the swarm's best as it is.
-    None,
-}
-
-impl std::str::FromStr for Polish {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self, Error> {
-        match s {
-            "lm" => Ok(Polish::Lm),
-            "gn" => Ok(Polish::Gn),
-            "none" => Ok(Polish::None),
-            _ => Err(Error::Options(format!(
-                "unknown local method `{s}`: lm, gn or none"
-            ))),
-        }
-    }
-}
-
-impl From<Polish> for LocalMethod {
-    fn from(p: Polish) -> Self {
-        match p {
-            Polish::Lm => LocalMethod::LevenbergMarquardt,
-            Polish::Gn => LocalMethod::GaussNewton,
-            Polish::None => LocalMethod::None,
-        }
-    }
-}
-
-/// Where the staged Magic Formula fit starts.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
-pub enum StartArg {
-    /// Estimates from the data, then MINPACK's Levenberg–Marquardt.
-    #[default]
-    Data,
-    /// Wei et al. (2010): every parameter 1, μ = 0.1, β = 5.
-    Paper,
-    /// The template's values, then MINPACK's Levenberg–Marquardt.
-    Template,
-}
 
 /// What `identify` is asked to do.
 #[derive(Debug, Clone, PartialEq)]

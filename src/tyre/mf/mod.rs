@@ -80,7 +80,9 @@ mod kernels;
 
 pub use coefficients::MfCoefficients;
 
-use super::{ModelName, ModelParameters, PointForces, SlipState, TyreForces, TyreModel};
+use super::{
+    Identification, Model, ModelParameters, PointForces, SlipState, TyreForces, TyreModel,
+};
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 
@@ -371,9 +373,6 @@ impl super::Parameterised for MagicFormula {
 }
 
 impl ModelParameters for MagicFormula {
-    fn name(&self) -> ModelName {
-        ModelName::MagicFormula
-    }
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         MagicFormula::validate(self)
@@ -381,11 +380,6 @@ impl ModelParameters for MagicFormula {
     /// `Kyα` is proportional to its scaling factor `λ_Kyα`.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.coefficients.LKY *= k;
-    }
-    /// None: the Magic Formula is identified in stages
-    /// (`identify::mf_staged`, Wei et al. (2010)), not from a start tyre.
-    fn start(_fz: f64) -> Option<Self> {
-        None
     }
     fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {
         let o = self.evaluate_scaled(
@@ -409,6 +403,16 @@ impl ModelParameters for MagicFormula {
     }
     fn has_wheel_moments(&self) -> bool {
         true
+    }
+}
+
+impl Model for MagicFormula {
+    const NAME: &'static str = "magic-formula";
+    const IDENTIFICATION: Identification = Identification::Staged(&["mf61", "mf62"]);
+    /// None: the Magic Formula is identified in stages
+    /// (`identify::mf_staged`, Wei et al. (2010)), not from a start tyre.
+    fn start(_fz: f64) -> Option<Self> {
+        None
     }
 }
 

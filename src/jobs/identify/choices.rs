@@ -1,0 +1,165 @@
+//! The choices of `identify`: the model (from the tyre registry: each
+//! model with a swarm fit under its own name, each version of a staged fit
+//! under its name), the local polish after the swarm, and where the staged
+//! Magic Formula fit starts. Each parses from its command-line name and
+//! lists its names, so the command line and Python take them as text.
+
+use crate::error::Error;
+use crate::identify::LocalMethod;
+use crate::tyre::{models, Identification, ModelName};
+use serde::Serialize;
+
+/// A model `identify` fits, from the registry ([`crate::tyre::models`]): a
+/// model with a swarm fit under its own name, or one version of a model's
+/// staged fit (the Magic Formula's `mf61`, `mf62`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum IdentifyModel {
+    /// The swarm fit of this model.
+    Swarm(ModelName),
+    /// The staged fit of this model under this name.
+    Staged(ModelName, &'static str),
+}
+
+#[allow(non_upper_case_globals)]
+impl IdentifyModel {
+    /// Magic Formula 6.1, Wei et al.'s (2010) staged fit.
+    pub const Mf61: IdentifyModel = IdentifyModel::Staged(ModelName::MagicFormula, "mf61");
+    /// Magic Formula 6.2 (`FITTYP = 62`), the same stages.
+    pub const Mf62: IdentifyModel = IdentifyModel::Staged(ModelName::MagicFormula, "mf62");
+
+    /// Every model `identify` fits, in the registry's order (a staged
+    /// model's versions in its order): the values of `--model`.
+    pub fn all() -> Vec<IdentifyModel> {
+        models()
+            .iter()
+            .flat_map(|e| match e.identification() {
+                Identification::Swarm => vec![IdentifyModel::Swarm(e.name())],
+                Identification::Staged(names) => names
+                    .iter()
+                    .map(|n| IdentifyModel::Staged(e.name(), n))
+                    .collect(),
+                Identification::NotFitted => Vec::new(),
+            })
+            .collect()
+    }
+
+    /// The names of [`IdentifyModel::all`].
+    pub fn names() -> Vec<&'static str> {
+        Self::all().into_iter().map(Self::as_str).collect()
+    }
+
+    /// The name on the command line and in file names.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Swarm(m) => m.as_str(),
+            Self::Staged(_, name) => name,
+        }
+    }
+
+    /// The tyre model of a swarm fit (`None`: a staged fit).
+    pub fn swarm_model(self) -> Option<ModelName> {
+        match self {
+            Self::Swarm(m) => Some(m),
+            Self::Staged(..) => None,
+        }
+    }
+}
+
+impl std::fmt::Display for IdentifyModel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::str::FromStr for IdentifyModel {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        crate::error::by_name(&Self::all(), IdentifyModel::as_str, "tyre model", s)
+            .map_err(Error::Options)
+    }
+}
+
+impl Serialize for IdentifyModel {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+/// The local polish after the swarm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Polish {
+    /// Levenberg–Marquardt.
+    #[default]
+    Lm,
+    /// Zhang & Li's (2017) modified Gauss–Newton.
+    Gn,
+    /// None: the swarm's best as it is.
+    None,
+}
+
+impl Polish {
+    /// Every polish, in the order the messages list them.
+    pub const ALL: [Polish; 3] = [Polish::Lm, Polish::Gn, Polish::None];
+
+    /// The name on the command line.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Polish::Lm => "lm",
+            Polish::Gn => "gn",
+            Polish::None => "none",
+        }
+    }
+}
+
+impl std::str::FromStr for Polish {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Polish::ALL
+            .into_iter()
+            .find(|p| p.as_str() == s)
+            .ok_or_else(|| Error::Options(format!("unknown local method `{s}`: lm, gn or none")))
+    }
+}
+
+impl From<Polish> for LocalMethod {
+    fn from(p: Polish) -> Self {
+        match p {
+            Polish::Lm => LocalMethod::LevenbergMarquardt,
+            Polish::Gn => LocalMethod::GaussNewton,
+            Polish::None => LocalMethod::None,
+        }
+    }
+}
+
+/// Where the staged Magic Formula fit starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StartArg {
+    /// Estimates from the data, then MINPACK's Levenberg–Marquardt.
+    #[default]
+    Data,
+    /// Wei et al. (2010): every parameter 1, μ = 0.1, β = 5.
+    Paper,
+    /// The template's values, then MINPACK's Levenberg–Marquardt.
+    Template,
+}
+
+impl StartArg {
+    /// Every start, in the order the messages list them.
+    pub const ALL: [StartArg; 3] = [StartArg::Data, StartArg::Paper, StartArg::Template];
+
+    /// The name on the command line.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            StartArg::Data => "data",
+            StartArg::Paper => "paper",
+            StartArg::Template => "template",
+        }
+    }
+}
+
+impl std::str::FromStr for StartArg {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        crate::error::by_name(&StartArg::ALL, StartArg::as_str, "start", s).map_err(Error::Options)
+    }
+}

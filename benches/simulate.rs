@@ -9,7 +9,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::manoeuvre::{Manoeuvre, StepSteer};
-use handling::metrics::MetricSettings;
+use handling::metrics::{simulated_step_metrics, MetricSettings};
 use handling::sim::{Integrator, Method, Tolerances};
 use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel};
 use handling::vehicle::{State, Vehicle, VehicleModel};
@@ -53,7 +53,7 @@ fn step_steer(c: &mut Criterion) {
         let settings = MetricSettings::default();
         b.iter(|| {
             let sim = coarse.simulate(black_box(&model), black_box(&man), State::default());
-            coarse.step_metrics(&model, &man, &sim, &settings).unwrap()
+            simulated_step_metrics(&coarse, &model, &man, &sim, &settings).unwrap()
         })
     });
     // With a row every 1 ms (the history a scenario writes by default).

@@ -5,12 +5,13 @@
 
 use super::tables::{resolve_model, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
+use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
 use crate::error::{InputError, ParamError};
 use crate::tyre::TyreModel;
-use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, G};
+use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 

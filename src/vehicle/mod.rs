@@ -43,8 +43,7 @@ pub(crate) use rates::LOAD_TOLERANCE;
 use crate::tyre::{Tyre, TyreModel};
 use serde::{Deserialize, Serialize};
 
-/// Standard gravity, m/s².
-pub const G: f64 = 9.80665;
+pub use crate::constants::G;
 /// Lowest forward speed the model evaluates, m/s.
 pub const MIN_SPEED: f64 = 0.5;
 

@@ -28,8 +28,6 @@
 
 mod runs;
 
-pub use self::runs::RunSpec;
-use self::runs::{file_error, read_runs, run_files};
 use super::rig::read_rig;
 use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
@@ -40,6 +38,8 @@ use crate::identify::SWARM_MODELS;
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::ModelName;
 use crate::vehicle::Vehicle;
+pub use runs::RunSpec;
+use runs::{file_error, read_runs, run_files};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 

@@ -28,7 +28,10 @@ fn step_steer(c: &mut Criterion) {
         rise_time: 0.1,
         end: 10.0,
     });
-    let integ = Integrator::default();
+    let integ = Integrator {
+        method: Method::Rk4,
+        ..Integrator::default()
+    };
     c.bench_function("step_steer_10s_1khz_pac89_load_transfer", |b| {
         b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
     });
@@ -109,7 +112,7 @@ fn study_combination(c: &mut Criterion) {
         integrator: Integrator {
             step: 2e-3,
             friction: 1.0,
-            ..Integrator::default()
+            method: Method::Rk4,
         },
         metrics: handling::metrics::MetricSettings::default(),
     };

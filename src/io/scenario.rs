@@ -40,7 +40,7 @@ pub struct SimulationSettings {
 }
 
 fn default_step() -> f64 {
-    1e-3
+    Integrator::default().step
 }
 
 impl Default for SimulationSettings {

@@ -209,25 +209,39 @@ impl TimeHistory {
 }
 
 /// The integration methods by name, as a scenario file's `method` names them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum MethodName {
     /// Dormand–Prince 5(4), error-controlled, dense output (the default).
-    #[default]
     Dopri5,
     /// Classical fixed-step RK4.
     Rk4,
 }
 
+/// The default method's name: that of [`Method::default`].
+impl Default for MethodName {
+    fn default() -> Self {
+        Method::default().name()
+    }
+}
+
 /// How the vehicle model is integrated.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     /// Classical RK4 at the output step.
-    #[default]
     Rk4,
     /// Dormand–Prince 5(4) with error control; rows are the dense output at
     /// every output step.
     Dopri5(Tolerances),
+}
+
+/// The default of every simulation, scenario files' included:
+/// Dormand–Prince at the default tolerances (the step-steer metrics measured
+/// on its dense output, events located to the tolerance).
+impl Default for Method {
+    fn default() -> Self {
+        Method::Dopri5(Tolerances::default())
+    }
 }
 
 impl Method {
@@ -239,6 +253,9 @@ impl Method {
         }
     }
 }
+
+/// The default interval of recorded rows (and RK4 step), s.
+pub const DEFAULT_STEP: f64 = 1e-3;
 
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -252,12 +269,15 @@ pub struct Integrator {
     pub method: Method,
 }
 
+/// What a scenario file without a `[simulation]` table gets: the default
+/// [`Method`] (Dormand–Prince) with rows every [`DEFAULT_STEP`], on a road
+/// of friction scale 1.
 impl Default for Integrator {
     fn default() -> Self {
         Self {
-            step: 1e-3,
+            step: DEFAULT_STEP,
             friction: 1.0,
-            method: Method::Rk4,
+            method: Method::default(),
         }
     }
 }

@@ -576,4 +576,5 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     }
 }
 
+mod equilibrium;
 mod longitudinal;

@@ -476,3 +476,19 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
         }
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scenario_without_a_simulation_table_integrates_as_the_default_integrator() {
+        let d = Integrator::default();
+        assert_eq!(d.method, Method::Dopri5(Tolerances::default()));
+        let parsed: SimulationSettings = toml::from_str("").unwrap();
+        for s in [parsed, SimulationSettings::default()] {
+            assert_eq!(s.method().unwrap(), d.method);
+            assert_eq!(s.step, d.step);
+        }
+    }
+}

@@ -46,7 +46,10 @@ pub(crate) use rates::LOAD_TOLERANCE;
 use crate::tyre::{Tyre, TyreModel};
 use serde::{Deserialize, Serialize};
 
+// Standard gravity where the model's users have found it; its home is
+// `crate::constants`, which the measured-data processing uses too.
 pub use crate::constants::G;
+
 /// Lowest forward speed the model evaluates, m/s.
 pub const MIN_SPEED: f64 = 0.5;
 

@@ -9,7 +9,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::manoeuvre::{Manoeuvre, StepSteer};
-use handling::metrics::MetricSettings;
+use handling::metrics::{simulated_step_metrics, MetricSettings};
 use handling::sim::{Integrator, Method, Tolerances};
 use handling::tyre::{Gim, Linear, MagicSimple, Pac89, SlipState, Tyre, TyreModel};
 use handling::vehicle::{State, Vehicle, VehicleModel};
@@ -28,7 +28,10 @@ fn step_steer(c: &mut Criterion) {
         rise_time: 0.1,
         end: 10.0,
     });
-    let integ = Integrator::default();
+    let integ = Integrator {
+        method: Method::Rk4,
+        ..Integrator::default()
+    };
     c.bench_function("step_steer_10s_1khz_pac89_load_transfer", |b| {
         b.iter(|| integ.run(black_box(&model), black_box(&man), State::default()))
     });
@@ -53,7 +56,7 @@ fn step_steer(c: &mut Criterion) {
         let settings = MetricSettings::default();
         b.iter(|| {
             let sim = coarse.simulate(black_box(&model), black_box(&man), State::default());
-            coarse.step_metrics(&model, &man, &sim, &settings).unwrap()
+            simulated_step_metrics(&coarse, &model, &man, &sim, &settings).unwrap()
         })
     });
     // With a row every 1 ms (the history a scenario writes by default).
@@ -109,7 +112,7 @@ fn study_combination(c: &mut Criterion) {
         integrator: Integrator {
             step: 2e-3,
             friction: 1.0,
-            ..Integrator::default()
+            method: Method::Rk4,
         },
         metrics: handling::metrics::MetricSettings::default(),
     };

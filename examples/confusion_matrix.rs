@@ -23,7 +23,7 @@
 //! own parameter values, in its own units, in the `fitted (truth)` column).
 //!
 //! With `--glitches` each campaign is diagnosed a second time from a copy of
-//! its runs with logger glitches injected ([`handling::io::clean::inject_glitches`]:
+//! its runs with logger glitches injected ([`handling::measured::clean::inject_glitches`]:
 //! a zero read, a spike and a held value per response channel, a steer
 //! spike) and cleaned as `diagnose` cleans a campaign read from files; the
 //! row then also shows that copy's verdict and how many of the injected
@@ -33,7 +33,7 @@ use handling::diagnose::diagnose;
 use handling::diagnose::effects::{joined, EffectKind};
 use handling::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Truth};
 use handling::diagnose::DiagnoseSettings;
-use handling::io::clean::{clean_runs, inject_glitches, CleanSettings};
+use handling::measured::clean::{clean_runs, inject_glitches, CleanSettings};
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {

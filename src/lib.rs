@@ -23,6 +23,7 @@
 //! | CSV, JSON and PNG outputs | [`report`] |
 //! | the commands of the binary, each one function with a typed report | [`jobs`] |
 //! | the library's one error type | [`error`] |
+//! | physical constants (standard gravity) | [`constants`] |
 //!
 //! # References
 //! - Zhang Jiaxu, Li Jing (2017): UniTire parameter identification by a
@@ -41,6 +42,7 @@
 
 #![warn(missing_docs)]
 
+pub mod constants;
 pub mod diagnose;
 pub mod equilibria;
 pub mod error;

@@ -22,8 +22,8 @@
 use super::campaign::Campaign;
 use super::model::{Augmented, Drive, FixedStep, Observed};
 use crate::measured::MeasuredRun;
-use crate::optim::bounded::{inward_jacobian, BoundedLm, ProjectedModel};
-use crate::optim::local::Residuals;
+use crate::optim::bounded::{BoundedLm, ProjectedModel};
+use crate::optim::local::{inward_jacobian, Residuals};
 use crate::optim::pso::Pso;
 use crate::optim::stats::{seen_columns, standard_errors};
 use crate::sim::TimeHistory;

@@ -249,7 +249,7 @@ impl<'a> Reduced<'a> {
             x1 -= g1 / s;
         }
         self.last.set(None);
-        let fmax = 3.0 * self.c.friction.max(1.0) * v.mass * crate::vehicle::G;
+        let fmax = 3.0 * self.c.friction.max(1.0) * v.mass * crate::constants::G;
         let bound = 2.0 * fmax / k;
         brent(g, -bound, bound, 1e-15 * bound)
     }
@@ -323,7 +323,7 @@ impl<'a> Reduced<'a> {
     /// model) and both axles sliding, the forces no longer depend on the slip
     /// angles and a whole curve of states is in equilibrium.
     fn flat(&self, h: &[f64]) -> Vec<bool> {
-        let tol = 1e-9 * self.model.vehicle.mass * crate::vehicle::G;
+        let tol = 1e-9 * self.model.vehicle.mass * crate::constants::G;
         let small: Vec<bool> = h.iter().map(|v| v.abs() <= tol).collect();
         let mut flat = vec![false; h.len()];
         let mut i = 0;
@@ -425,7 +425,7 @@ impl<'a> Reduced<'a> {
             }
             let xm = 0.5 * (lo + hi);
             let hm = f(xm);
-            let scale = self.model.vehicle.mass * crate::vehicle::G;
+            let scale = self.model.vehicle.mass * crate::constants::G;
             if s * hm < 0.0 {
                 roots.push(brent(f, a[i - 1], xm, tol));
                 roots.push(brent(f, xm, a[i + 1], tol));

@@ -12,12 +12,14 @@
 //!   sign scan plus Brent's method.
 //!
 //! [`stability`] classifies each equilibrium from the Jacobian's eigenvalues;
-//! [`bifurcation`] locates folds (saddle-node) and Hopf points along a sweep.
+//! [`bifurcation`] locates folds (saddle-node) and Hopf points along a sweep;
+//! [`phase`] traces the phase plane (trajectories, separatrices) the
+//! figures of the equilibria job draw.
 //! Units: rad, rad/s, m/s; ISO signs (positive steer turns left).
 
 pub mod bifurcation;
 pub mod exact;
-pub mod plots;
+pub mod phase;
 pub mod pso;
 pub mod stability;
 pub mod sweep;

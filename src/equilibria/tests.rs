@@ -274,7 +274,7 @@ fn classic_brush_tyres_give_a_continuum_when_both_axles_slide() {
     for k in &cont {
         assert_relative_eq!(
             k.yaw_rate.0.abs(),
-            0.8 * crate::vehicle::G / c.speed,
+            0.8 * crate::constants::G / c.speed,
             max_relative = 1e-9
         );
     }

@@ -204,7 +204,20 @@ impl RigPoint {
     }
 }
 
-pub use super::grouping::Condition;
+/// One test condition and its fit points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    /// Nominal load, N.
+    pub fz: f64,
+    /// Nominal camber, rad.
+    pub camber: f64,
+    /// Nominal pressure, Pa (if measured).
+    pub pressure: Option<f64>,
+    /// Raw samples in it.
+    pub samples: usize,
+    /// Fit points (thinned), all on the sweep grouped.
+    pub points: Vec<RigPoint>,
+}
 
 /// Why identification cannot use the rig data it was given.
 #[derive(Debug, Clone, PartialEq, Error)]

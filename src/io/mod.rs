@@ -15,7 +15,7 @@ mod tables;
 pub mod tir;
 mod toml_file;
 
-pub use crate::measured::{clean, MeasuredRun};
+pub use crate::measured::MeasuredRun;
 pub use columns::{read_columns, Columns};
 pub use run::read_run;
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};

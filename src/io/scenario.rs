@@ -40,7 +40,7 @@ pub struct SimulationSettings {
 }
 
 fn default_step() -> f64 {
-    1e-3
+    Integrator::default().step
 }
 
 impl Default for SimulationSettings {
@@ -163,13 +163,13 @@ pub struct ReplaySpec {
     /// The run file (`FORMATS.md`), relative to the scenario.
     pub run: PathBuf,
     /// Lowest speed replayed, m/s (default 5): the longest piece at or
-    /// above it is replayed, glitches repaired or masked (`io::clean`).
+    /// above it is replayed, glitches repaired or masked (`measured::clean`).
     #[serde(default = "default_min_speed")]
     pub min_speed: f64,
 }
 
 fn default_min_speed() -> f64 {
-    super::clean::DEFAULT_MIN_SPEED
+    crate::measured::clean::DEFAULT_MIN_SPEED
 }
 
 /// A manoeuvre as written in a file; `kind` selects it.
@@ -238,7 +238,7 @@ pub struct Scenario {
     /// Every file read (the CLI never writes over one of them).
     pub inputs: Vec<PathBuf>,
     /// What cleaning the replayed run found and excluded.
-    pub cleaning: Option<super::clean::CleaningReport>,
+    pub cleaning: Option<crate::measured::clean::CleaningReport>,
 }
 
 /// The checks every timed manoeuvre shares: a positive speed and an end
@@ -420,11 +420,11 @@ fn step_steer(
 /// glitches), started from its first unmasked sample.
 fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved, InputError> {
     check(src, ParamError::non_negative("min_speed", r.min_speed))?;
-    let settings = super::clean::CleanSettings::single(r.min_speed);
-    let mut report = super::clean::CleaningReport::new(r.min_speed);
+    let settings = crate::measured::clean::CleanSettings::single(r.min_speed);
+    let mut report = crate::measured::clean::CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run(run_path)?;
-    let run = super::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
+    let run = crate::measured::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
         InputError::File {
             path: run_path.to_path_buf(),
             message: format!(
@@ -475,4 +475,20 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             unreachable!("resolved by their own functions")
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scenario_without_a_simulation_table_integrates_as_the_default_integrator() {
+        let d = Integrator::default();
+        assert_eq!(d.method, Method::Dopri5(Tolerances::default()));
+        let parsed: SimulationSettings = toml::from_str("").unwrap();
+        for s in [parsed, SimulationSettings::default()] {
+            assert_eq!(s.method().unwrap(), d.method);
+            assert_eq!(s.step, d.step);
+        }
+    }
 }

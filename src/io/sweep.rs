@@ -5,12 +5,13 @@
 
 use super::tables::{resolve_model, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
+use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
 use crate::error::{InputError, ParamError};
 use crate::tyre::TyreModel;
-use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, G};
+use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -212,19 +213,11 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
 
 /// Refuses effects the equilibrium analysis does not model: its residual
 /// ([`VehicleModel::equilibrium_residual`]) has the papers' model with aero
-/// load and bank; a tyre lag does not move an equilibrium and is allowed.
+/// load and bank; the effects it leaves out are the model's to name
+/// ([`crate::vehicle::Effects::beyond_equilibrium_residual`]).
 fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<(), InputError> {
-    let unsupported = [
-        ("steering_compliance", e.steering_compliance != 0.0),
-        ("roll_steer", e.roll_steer != [0.0; 2]),
-        ("roll_camber", e.roll_camber != [0.0; 2]),
-        (
-            "cornering_stiffness_scale",
-            e.cornering_stiffness_scale != [1.0; 2],
-        ),
-    ];
-    match unsupported.iter().find(|(_, on)| *on) {
-        Some((key, _)) => Err(param_error(
+    match e.beyond_equilibrium_residual().first() {
+        Some(key) => Err(param_error(
             src,
             Some("model.effects"),
             ParamError::without_value(

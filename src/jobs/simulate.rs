@@ -10,7 +10,7 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::StepMetrics;
+use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted};
 use crate::sim::{LiftOff, Method, TimeHistory};
@@ -91,8 +91,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         // From the dense output under Dormand–Prince (events located to
         // the tolerance), from the rows under RK4.
         Manoeuvre::StepSteer(_) => Some(
-            sc.integrator
-                .step_metrics(&sc.model, &sc.manoeuvre, &sim, &sc.metrics)
+            simulated_step_metrics(&sc.integrator, &sc.model, &sc.manoeuvre, &sim, &sc.metrics)
                 .map_err(Error::StepMetrics)?,
         ),
         _ => None,

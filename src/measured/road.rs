@@ -24,7 +24,7 @@
 
 use super::clean::quantile;
 use super::MeasuredRun;
-use crate::vehicle::G;
+use crate::constants::G;
 use serde::Serialize;
 
 /// Width of the centred moving average of the estimates, s.

@@ -42,8 +42,10 @@ use thiserror::Error;
 
 pub mod continuous;
 pub mod measured;
+pub mod simulated;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
+pub use simulated::{simulated_step_metrics, DenseRecord};
 
 /// Settings of the metric computation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -16,7 +16,7 @@
 //! the box at a bound. Each iteration costs n + (number of trial steps)
 //! residual evaluations; the residuals at the iterate are reused.
 
-use super::local::{LocalResult, Residuals};
+use super::local::{inward_jacobian, LocalResult, Residuals};
 use nalgebra::{DMatrix, DVector};
 
 /// Settings of [`BoundedLm`].
@@ -214,33 +214,6 @@ impl ProjectedModel {
 
 fn half_sum_of_squares(r: &[f64]) -> f64 {
     0.5 * r.iter().map(|e| e * e).sum::<f64>()
-}
-
-/// Forward differences (relative step 1e-7) that step into the box at an
-/// upper bound.
-pub fn inward_jacobian(
-    problem: &dyn Residuals,
-    p: &[f64],
-    r0: &[f64],
-    bounds: &[(f64, f64)],
-) -> DMatrix<f64> {
-    let (m, n) = (r0.len(), p.len());
-    let mut j = DMatrix::zeros(m, n);
-    let mut x = p.to_vec();
-    let mut r = vec![0.0; m];
-    for k in 0..n {
-        let mut h = 1e-7 * p[k].abs().max(1e-4);
-        if p[k] + h > bounds[k].1 {
-            h = -h;
-        }
-        x[k] = p[k] + h;
-        problem.residuals(&x, &mut r);
-        for i in 0..m {
-            j[(i, k)] = (r[i] - r0[i]) / h;
-        }
-        x[k] = p[k];
-    }
-    j
 }
 
 #[cfg(test)]

@@ -5,7 +5,8 @@
 //! step; here a step that raises the cost is halved until it does not (up to
 //! ten times), so the method cannot diverge. Jacobians are forward
 //! differences with a relative step of 1e-7 (checked against analytic ones in
-//! the tests).
+//! the tests), stepping into the box at an upper bound when the problem has
+//! bounds (`bounded`).
 
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
@@ -26,10 +27,37 @@ pub trait Residuals: Sync {
 }
 
 /// Forward-difference Jacobian at `p` given the residuals `r0` there
-/// (relative step 1e-7; [`super::bounded::inward_jacobian`] without bounds).
+/// (relative step 1e-7; [`inward_jacobian`] without bounds).
 pub fn jacobian(problem: &dyn Residuals, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
     let free = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
-    super::bounded::inward_jacobian(problem, p, r0, &free)
+    inward_jacobian(problem, p, r0, &free)
+}
+
+/// Forward differences (relative step 1e-7) that step into the box at an
+/// upper bound.
+pub fn inward_jacobian(
+    problem: &dyn Residuals,
+    p: &[f64],
+    r0: &[f64],
+    bounds: &[(f64, f64)],
+) -> DMatrix<f64> {
+    let (m, n) = (r0.len(), p.len());
+    let mut j = DMatrix::zeros(m, n);
+    let mut x = p.to_vec();
+    let mut r = vec![0.0; m];
+    for k in 0..n {
+        let mut h = 1e-7 * p[k].abs().max(1e-4);
+        if p[k] + h > bounds[k].1 {
+            h = -h;
+        }
+        x[k] = p[k] + h;
+        problem.residuals(&x, &mut r);
+        for i in 0..m {
+            j[(i, k)] = (r[i] - r0[i]) / h;
+        }
+        x[k] = p[k];
+    }
+    j
 }
 
 /// The outcome of a local polish.

@@ -1,12 +1,13 @@
-//! Integration of the vehicle model under a manoeuvre, the recorded time
-//! history, and the continuous record step-steer metrics are measured on.
+//! Integration of the vehicle model under a manoeuvre and the recorded time
+//! history (and, under Dormand–Prince, the dense solution step-steer
+//! metrics are measured on, in `metrics::simulated`).
 //!
 //! Two methods ([`Method`]):
 //! - Dormand–Prince 5(4) with error control and dense output
 //!   (Dormand & Prince 1980; Hairer, Nørsett & Wanner 1993; [`ode`]), the
 //!   default of scenario files: the solution is restarted at the input's
 //!   kinks, rows are the dense output at every output step, and metrics are
-//!   measured on the dense output itself ([`DenseRecord`]), so events are
+//!   measured on the dense output itself (`metrics::simulated`), so events are
 //!   located to the tolerance rather than to the output grid;
 //! - classical fixed-step RK4: inputs sampled at t, t + h/2 and t + h within
 //!   each step; outputs recorded from the first stage of each step, so every
@@ -33,11 +34,7 @@ pub use driven::{Drive, FixedStep};
 pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
 
 use crate::manoeuvre::Manoeuvre;
-use crate::metrics::{
-    step_metrics, step_metrics_continuous, ContinuousRecord, MetricSettings, MetricsError, Sample,
-    StepMetrics,
-};
-use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, VehicleModel};
+use crate::vehicle::{Inputs, Outputs, State, VehicleModel};
 
 /// A recorded simulation: one column per signal, one row per time step.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -212,25 +209,39 @@ impl TimeHistory {
 }
 
 /// The integration methods by name, as a scenario file's `method` names them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum MethodName {
     /// Dormand–Prince 5(4), error-controlled, dense output (the default).
-    #[default]
     Dopri5,
     /// Classical fixed-step RK4.
     Rk4,
 }
 
+/// The default method's name: that of [`Method::default`].
+impl Default for MethodName {
+    fn default() -> Self {
+        Method::default().name()
+    }
+}
+
 /// How the vehicle model is integrated.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     /// Classical RK4 at the output step.
-    #[default]
     Rk4,
     /// Dormand–Prince 5(4) with error control; rows are the dense output at
     /// every output step.
     Dopri5(Tolerances),
+}
+
+/// The default of every simulation, scenario files' included:
+/// Dormand–Prince at the default tolerances (the step-steer metrics measured
+/// on its dense output, events located to the tolerance).
+impl Default for Method {
+    fn default() -> Self {
+        Method::Dopri5(Tolerances::default())
+    }
 }
 
 impl Method {
@@ -242,6 +253,9 @@ impl Method {
         }
     }
 }
+
+/// The default interval of recorded rows (and RK4 step), s.
+pub const DEFAULT_STEP: f64 = 1e-3;
 
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -255,12 +269,15 @@ pub struct Integrator {
     pub method: Method,
 }
 
+/// What a scenario file without a `[simulation]` table gets: the default
+/// [`Method`] (Dormand–Prince) with rows every [`DEFAULT_STEP`], on a road
+/// of friction scale 1.
 impl Default for Integrator {
     fn default() -> Self {
         Self {
-            step: 1e-3,
+            step: DEFAULT_STEP,
             friction: 1.0,
-            method: Method::Rk4,
+            method: Method::default(),
         }
     }
 }
@@ -293,81 +310,6 @@ impl Simulation {
     }
 }
 
-/// The dense solution of a simulation as a continuous record of its
-/// signals: states from the solution's continuous extension, ay and the yaw
-/// acceleration from the model evaluated there (the load-transfer loop
-/// solved at every sample), steer from the manoeuvre.
-pub struct DenseRecord<'a> {
-    model: &'a VehicleModel,
-    manoeuvre: &'a Manoeuvre,
-    integrator: &'a Integrator,
-    solution: &'a DenseSolution<2>,
-    knots: Vec<f64>,
-    seed: LoadTransferSeed,
-    load_tolerance: f64,
-}
-
-impl<'a> DenseRecord<'a> {
-    /// The record of `solution`, integrated by `integrator` from `model`
-    /// under `manoeuvre`.
-    pub fn new(
-        model: &'a VehicleModel,
-        manoeuvre: &'a Manoeuvre,
-        integrator: &'a Integrator,
-        solution: &'a DenseSolution<2>,
-    ) -> Self {
-        let (t0, t1) = (solution.start(), solution.end());
-        let mut knots: Vec<f64> = solution
-            .step_times()
-            .chain(manoeuvre.breakpoints())
-            .filter(|t| (t0..=t1).contains(t))
-            .collect();
-        knots.sort_by(f64::total_cmp);
-        knots.dedup();
-        let load_tolerance = match integrator.method {
-            Method::Dopri5(tol) => load_tolerance(&tol),
-            Method::Rk4 => 1e-9,
-        };
-        Self {
-            model,
-            manoeuvre,
-            integrator,
-            solution,
-            knots,
-            seed: LoadTransferSeed::default(),
-            load_tolerance,
-        }
-    }
-}
-
-impl ContinuousRecord for DenseRecord<'_> {
-    fn span(&self) -> (f64, f64) {
-        (self.solution.start(), self.solution.end())
-    }
-    fn knots(&self) -> &[f64] {
-        &self.knots
-    }
-    fn sample(&mut self, t: f64) -> Sample {
-        let x = self.solution.state(t);
-        let state = State {
-            beta: x[0],
-            yaw_rate: x[1],
-        };
-        let inp = self.integrator.inputs(self.manoeuvre, t);
-        self.seed.ay = [self.seed.ay[0]; 3];
-        let o = self
-            .model
-            .evaluate_to(&state, &inp, &mut self.seed, self.load_tolerance);
-        Sample {
-            steer: inp.steer,
-            yaw_rate: x[1],
-            yaw_acceleration: o.yaw_acceleration,
-            ay: o.ay,
-            beta: x[0],
-        }
-    }
-}
-
 impl Integrator {
     /// The inputs of `m` at time `t` on this integrator's road.
     pub(crate) fn inputs(&self, m: &Manoeuvre, t: f64) -> Inputs {
@@ -394,36 +336,6 @@ impl Integrator {
             Method::Dopri5(tol) => {
                 let (history, dense) = self.run_dopri5(model, manoeuvre, x0, &tol);
                 Simulation { history, dense }
-            }
-        }
-    }
-
-    /// Step-steer metrics of a simulation of `manoeuvre` made by this
-    /// integrator: from the dense solution when there is one and no
-    /// low-pass is asked for (events to the tolerance), from the rows
-    /// otherwise (crossings interpolated between rows).
-    pub fn step_metrics(
-        &self,
-        model: &VehicleModel,
-        manoeuvre: &Manoeuvre,
-        sim: &Simulation,
-        settings: &MetricSettings,
-    ) -> Result<StepMetrics, MetricsError> {
-        match (&sim.dense, settings.filter_hz) {
-            (Some(sol), None) => step_metrics_continuous(
-                &mut DenseRecord::new(model, manoeuvre, self, sol),
-                settings,
-            ),
-            _ => {
-                let h = &sim.history;
-                step_metrics(
-                    &h.t,
-                    &h.steer,
-                    &h.yaw_rate,
-                    Some(&h.ay),
-                    Some(&h.beta),
-                    settings,
-                )
             }
         }
     }

@@ -1,6 +1,7 @@
 use super::inverse::{best_on_curve, distance, solve_rear, Map};
 use super::*;
 use crate::manoeuvre::StepSteer;
+use crate::sim::Method;
 use crate::tyre::{Gim, Tyre, TyreModel};
 use crate::vehicle::Vehicle;
 use std::sync::atomic::AtomicUsize;
@@ -25,7 +26,7 @@ fn study() -> Study {
         integrator: Integrator {
             step: 2e-3,
             friction: 1.0,
-            ..Integrator::default()
+            method: Method::Rk4,
         },
         metrics: MetricSettings::default(),
     }

@@ -77,7 +77,7 @@ impl Default for RollModel {
     /// A passenger car: 4°/g, 1.5 Hz, ζ = 0.5.
     fn default() -> Self {
         Self {
-            gradient: 4f64.to_radians() / super::G,
+            gradient: 4f64.to_radians() / crate::constants::G,
             frequency: 1.5,
             damping: 0.5,
         }

@@ -2,9 +2,58 @@
 //! form, for the equilibrium solvers and the stability analysis: the wheel
 //! loads taken at the lateral acceleration an equilibrium has, so no
 //! load-transfer loop is solved. Units: SI, rad; ISO 8855 signs.
+//!
+//! It is the one right-hand side ([`VehicleModel::rates`]) with the
+//! load-transfer loop stopped at that acceleration, written out to
+//! differentiate it; the effects it leaves out are named by
+//! [`Effects::beyond_equilibrium_residual`]. Tests in
+//! `equilibria/tests.rs` hold its value and Jacobian to the right-hand
+//! side's and its differences at random states with every other effect on,
+//! and show each effect it leaves out moving the right-hand side away from
+//! it.
 
-use super::{Inputs, Kinematics, State, VehicleModel, MIN_SPEED};
+use super::{Effects, Inputs, Kinematics, State, VehicleModel, MIN_SPEED};
 use crate::tyre::Tyre;
+
+impl Effects {
+    /// The effects switched on that [`VehicleModel::equilibrium_residual`]
+    /// does not model, by their keys in `[model.effects]`: those acting
+    /// through the steer the wheels see or the slip their tyres see
+    /// (steering compliance, roll steer, the cornering-stiffness scale) or
+    /// through body roll (roll camber). The others are in it (aero load,
+    /// road bank) or leave a steady state as it is: a tyre lag's states sit
+    /// at the kinematic slip angles, the longitudinal effects see no
+    /// longitudinal acceleration, and a steady state has no measured bank
+    /// profile. Every field is named, so that a new effect must be sorted
+    /// here.
+    pub fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
+        let Effects {
+            aero_load: _,
+            road_bank: _,
+            bank_profile_scale: _,
+            relaxation_length: _,
+            steering_compliance,
+            roll_steer,
+            roll_camber,
+            cornering_stiffness_scale,
+            roll: _,
+            longitudinal_load_transfer: _,
+            combined_slip: _,
+        } = self;
+        [
+            ("steering_compliance", *steering_compliance != 0.0),
+            ("roll_steer", *roll_steer != [0.0; 2]),
+            ("roll_camber", *roll_camber != [0.0; 2]),
+            (
+                "cornering_stiffness_scale",
+                *cornering_stiffness_scale != [1.0; 2],
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(key, on)| on.then_some(key))
+        .collect()
+    }
+}
 
 impl VehicleModel {
     /// Lateral force of a wheel and its partials in slip angle and load:

@@ -15,7 +15,8 @@
 //! not grow faster with load than `m/(h/d)` allows, so the root is unique.
 //! Units: SI.
 
-use super::{VehicleModel, G};
+use super::VehicleModel;
+use crate::constants::G;
 
 /// Where the load-transfer solve starts: the last three solutions (the solve
 /// starts from their quadratic extrapolation) and the last slope of

@@ -13,7 +13,7 @@
 //!
 //! Wheel loads with lateral load transfer (Wang & Liang eq. 4) and the
 //! algebraic loop they close (loads depend on ay, ay on the forces) are in
-//! [`loads`]: the loop is solved at every derivative evaluation, not lagged
+//! `loads.rs`: the loop is solved at every derivative evaluation, not lagged
 //! by a step, each solve seeded from the same RK stage's earlier solutions
 //! so that it usually costs one evaluation of the four tyres.
 //!
@@ -22,7 +22,10 @@
 //! aero load, road bank) extend the state to a [`StateVector`]; the one
 //! right-hand side ([`VehicleModel::rates`], in `rates.rs`) reduces to the
 //! (β, r) model exactly when they are off. The equilibrium residual with its
-//! closed-form Jacobian is in `equilibrium.rs`, steady states in [`steady`].
+//! closed-form Jacobian is in `equilibrium.rs` (that right-hand side at the
+//! equilibrium's loads, written out to differentiate it; the effects it
+//! leaves out named by [`Effects::beyond_equilibrium_residual`]), steady
+//! states in [`steady`].
 //!
 //! Units: SI, rad. Speeds below `MIN_SPEED` are held at it, because the slip
 //! angles of a 2-DOF model are undefined at standstill.
@@ -43,8 +46,10 @@ pub(crate) use rates::LOAD_TOLERANCE;
 use crate::tyre::{Tyre, TyreModel};
 use serde::{Deserialize, Serialize};
 
-/// Standard gravity, m/s².
-pub const G: f64 = 9.80665;
+// Standard gravity where the model's users have found it; its home is
+// `crate::constants`, which the measured-data processing uses too.
+pub use crate::constants::G;
+
 /// Lowest forward speed the model evaluates, m/s.
 pub const MIN_SPEED: f64 = 0.5;
 

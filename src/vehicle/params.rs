@@ -3,7 +3,7 @@
 //! Units: kg, kg·m², m. `a`, `b` are the distances from the centre of gravity
 //! to the front and rear axle.
 
-use super::G;
+use crate::constants::G;
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
 

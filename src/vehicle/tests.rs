@@ -1,6 +1,6 @@
 use super::*;
 use crate::manoeuvre::{Manoeuvre, StepSteer};
-use crate::sim::Integrator;
+use crate::sim::{Integrator, Method};
 use crate::tyre::{Gim, Pac89, Tyre};
 use approx::assert_relative_eq;
 use nalgebra::{Matrix2, Vector2};
@@ -11,6 +11,16 @@ fn sedan() -> Vehicle {
 
 fn linear_model() -> VehicleModel {
     super::linear_bicycle()
+}
+
+/// Classical RK4 at 1 ms: the fixed grid these tests' tolerances and
+/// evaluation counts are set for (the default integrator is Dormand–Prince).
+fn rk4_1ms() -> Integrator {
+    Integrator {
+        step: 1e-3,
+        friction: 1.0,
+        method: Method::Rk4,
+    }
 }
 
 fn step(speed: f64, amplitude: f64) -> Manoeuvre {
@@ -34,7 +44,7 @@ fn linear_steady_yaw_gain_matches_the_bicycle_model() {
     assert_relative_eq!(m.understeer_gradient(), k, max_relative = 1e-6);
     for u in [10.0, 22.2, 35.0] {
         let gain = u / (l + k * u * u);
-        let h = Integrator::default().run(&m, &step(u, 0.01), State::default());
+        let h = rk4_1ms().run(&m, &step(u, 0.01), State::default());
         let r_end = *h.yaw_rate.last().unwrap();
         assert_relative_eq!(r_end / 0.01, gain, max_relative = 1e-6);
         let ss = m
@@ -69,7 +79,7 @@ fn linear_transient_matches_the_matrix_exponential() {
             _ => unreachable!(),
         }
     });
-    let h = Integrator::default().run(&m, &man, State::default());
+    let h = rk4_1ms().run(&m, &man, State::default());
     let inv = a.try_inverse().unwrap();
     for (i, &t) in h.t.iter().enumerate().step_by(97) {
         let x = inv * ((a * t).exp() - Matrix2::identity()) * b * delta;
@@ -97,8 +107,7 @@ fn rk4_is_fourth_order() {
     let run = |h: f64| {
         let hist = Integrator {
             step: h,
-            friction: 1.0,
-            ..Integrator::default()
+            ..rk4_1ms()
         }
         .run(&m, &man, State::default());
         *hist.yaw_rate.last().unwrap()
@@ -128,7 +137,7 @@ fn nonlinear_model() -> VehicleModel {
 fn mirrored_steer_mirrors_every_output() {
     let m = nonlinear_model();
     let man = step(25.0, 0.05);
-    let integ = Integrator::default();
+    let integ = rk4_1ms();
     let p = integ.run(&m, &man, State::default());
     let n = integ.run(&m, &man.mirrored(), State::default());
     for i in 0..p.len() {
@@ -214,7 +223,7 @@ fn seeded_load_transfer_solves_cost_little_and_agree_with_fresh_ones() {
         Tyre::Pac89(Pac89::adams_example()),
         Tyre::Pac89(Pac89::adams_example()),
     );
-    let h = Integrator::default().run(&model, &step(22.2222, 0.012), State::default());
+    let h = rk4_1ms().run(&model, &step(22.2222, 0.012), State::default());
     let stages = 4.0 * (h.len() - 1) as f64;
     let per_stage = h.load_evaluations as f64 / stages;
     eprintln!("{per_stage}");
@@ -358,7 +367,7 @@ fn a_simulated_lift_off_is_reported_with_its_wheel_and_time() {
     let mut m = nonlinear_model();
     m.vehicle.cg_height = 1.2;
     m.vehicle.track_front = 0.9;
-    let h = Integrator::default().run(&m, &step(20.0, 0.1), State::default());
+    let h = rk4_1ms().run(&m, &step(20.0, 0.1), State::default());
     let lifts = h.lift_offs();
     let ay_max = h.ay.iter().fold(0.0f64, |a, b| a.max(*b));
     assert!(
@@ -388,7 +397,7 @@ fn a_simulated_lift_off_is_reported_with_its_wheel_and_time() {
 
 #[test]
 fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
-    use crate::sim::{Method, Tolerances};
+    use crate::sim::Tolerances;
     let m = nonlinear_model();
     let man = Manoeuvre::StepSteer(StepSteer {
         speed: 22.2222,
@@ -400,7 +409,7 @@ fn dopri5_agrees_with_fine_rk4_on_a_step_steer_with_load_transfer() {
     });
     let fine = Integrator {
         step: 1e-4,
-        ..Integrator::default()
+        ..rk4_1ms()
     }
     .run(&m, &man, State::default());
     let tol = Tolerances {
@@ -525,7 +534,7 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     // Roll steer (ε_f, ε_r) changes the understeer gradient by
     // −(ε_f − ε_r)·k (k the roll gradient); a relaxation length only delays
     // the response. Both methods integrate six states and record the roll.
-    use crate::sim::{Method, Tolerances};
+    use crate::sim::Tolerances;
     let mut m = linear_model();
     m.options.effects.roll_steer = [-0.1, 0.05];
     m.options.effects.relaxation_length = 0.4;
@@ -567,4 +576,5 @@ fn a_scenario_with_lag_and_roll_steer_integrates_the_extra_states() {
     }
 }
 
+mod equilibrium;
 mod longitudinal;

@@ -41,7 +41,7 @@ fn with_every_effect_off_it_is_the_base_model() {
     let reference = Integrator {
         step: 1e-3,
         friction: 0.9,
-        ..Integrator::default()
+        method: crate::sim::Method::Rk4,
     }
     .run(&base, &m, State::default());
     let a = Augmented::new(base, 0.9);

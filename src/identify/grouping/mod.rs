@@ -39,7 +39,7 @@ mod levels;
 pub use super::data::SlipAxis;
 pub use levels::{levels, Level, Levels, Variable};
 
-use super::data::{RigData, RigPoint};
+use super::data::{Condition, RigData, RigPoint};
 use crate::error::InputError;
 use serde::Serialize;
 use std::path::Path;
@@ -78,21 +78,6 @@ impl Default for Grouping {
             default_speed: 10.0,
         }
     }
-}
-
-/// One test condition and its fit points.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Condition {
-    /// Nominal load, N.
-    pub fz: f64,
-    /// Nominal camber, rad.
-    pub camber: f64,
-    /// Nominal pressure, Pa (if measured).
-    pub pressure: Option<f64>,
-    /// Raw samples in it.
-    pub samples: usize,
-    /// Fit points (thinned), all on the sweep grouped.
-    pub points: Vec<RigPoint>,
 }
 
 /// Where every sample went.

@@ -2,12 +2,14 @@
 //! steering equilibrium over the grid by PSO and the exact solver,
 //! cross-checked, with stability and bifurcations, out as
 //! `equilibria.csv`, `bifurcations.csv`, `continua.csv`, `summary.json` and
-//! the figures of [`crate::equilibria::plots`].
+//! the figures (`figures.rs`).
+
+mod figures;
 
 use crate::equilibria::bifurcation::Bifurcation;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::{self, SweepResult};
-use crate::equilibria::{exact, plots, FoundBy, SearchBox};
+use crate::equilibria::{exact, FoundBy, SearchBox};
 use crate::error::Error;
 use crate::io::sweep::{load_sweep, Sweep};
 use crate::jobs::shard::{
@@ -281,17 +283,17 @@ impl EquilibriaReport {
             let dir = &self.out_dir;
             for axis in sw.grid.varying() {
                 let file = dir.join(format!("branches_{}.png", axis.name()));
-                plots::branch_diagram(r, axis, &sw.search_box, &file)?;
+                figures::branch_diagram(r, axis, &sw.search_box, &file)?;
             }
             let v = sw.grid.varying();
             if v.len() >= 2 {
                 let file = dir.join("stability_map.png");
-                plots::stability_map(r, v[0], v[1], &sw.search_box, &file)?;
+                figures::stability_map(r, v[0], v[1], &sw.search_box, &file)?;
             }
             for (k, c) in sw.portraits.iter().enumerate() {
                 let eqs = exact::solve(&sw.model, c);
                 let file = dir.join(format!("phase_portrait_{k}.png"));
-                plots::phase_portrait(&sw.model, c, &sw.search_box, &eqs, &file)?;
+                figures::phase_portrait(&sw.model, c, &sw.search_box, &eqs, &file)?;
             }
         }
         Ok(())

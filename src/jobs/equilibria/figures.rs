@@ -1,15 +1,15 @@
-//! PNG reports of equilibrium sweeps: branch diagrams (stable solid, unstable
-//! dashed, folds marked), phase portraits (vector field, trajectories,
-//! equilibria, saddle separatrices) and stability maps over two swept
+//! PNG figures of equilibrium sweeps: branch diagrams (stable solid,
+//! unstable dashed, folds marked), phase portraits (vector field,
+//! trajectories, equilibria, saddle separatrices, computed in
+//! [`crate::equilibria::phase`]) and stability maps over two swept
 //! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
 
-use super::bifurcation::{Axis, Bifurcation};
-use super::stability::{self, Kind};
-use super::sweep::{axis_lines, SweepResult};
-use super::{residual, Condition, Equilibrium, SearchBox};
+use crate::equilibria::bifurcation::{Axis, Bifurcation};
+use crate::equilibria::phase::{self, Manifold};
+use crate::equilibria::sweep::{axis_lines, SweepResult};
+use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
 use crate::error::Error;
 use crate::report::plot::{Figure, Panel, Series, Style};
-use crate::sim::ode::{self, OdeSystem};
 use crate::vehicle::VehicleModel;
 use std::path::Path;
 
@@ -149,73 +149,11 @@ pub fn branch_diagram(
     Figure::stack(vec![beta, yaw]).save(path)
 }
 
-/// The (β, r) system at one condition, autonomous (constant steer and
-/// speed), as an ODE for the crate's integrator.
-struct Autonomous<'a> {
-    model: &'a VehicleModel,
-    condition: &'a Condition,
-}
-
-impl OdeSystem<2> for Autonomous<'_> {
-    fn derivatives(&mut self, _t: f64, x: &[f64; 2]) -> [f64; 2] {
-        residual(self.model, self.condition, *x)
-    }
-}
-
-/// RK4 trajectory of the autonomous (β, r) system from `x0`, `dt` signed
-/// (negative integrates backward), stopping outside the box.
-fn trajectory(
-    model: &VehicleModel,
-    c: &Condition,
-    bx: &SearchBox,
-    x0: [f64; 2],
-    dt: f64,
-    steps: usize,
-) -> Vec<[f64; 2]> {
-    let mut sys = Autonomous {
-        model,
-        condition: c,
-    };
-    let mut out = Vec::with_capacity(steps + 1);
-    ode::rk4(&mut sys, 0.0, dt, steps, x0, |_, i, _, x| {
-        let inside = i == 0 || (x[0].is_finite() && bx.contains(*x));
-        if inside {
-            out.push(*x);
-        }
-        inside
-    });
-    out
-}
-
-/// Eigenvector of a 2×2 matrix for a real eigenvalue λ, unit length in
-/// box-scaled units.
-fn eigenvector(j: [[f64; 2]; 2], lambda: f64, scale: [f64; 2]) -> [f64; 2] {
-    let v = if (j[0][1]).abs() > 1e-14 {
-        [j[0][1], lambda - j[0][0]]
-    } else if (j[1][0]).abs() > 1e-14 {
-        [lambda - j[1][1], j[1][0]]
-    } else if (j[0][0] - lambda).abs() < (j[1][1] - lambda).abs() {
-        [1.0, 0.0]
-    } else {
-        [0.0, 1.0]
-    };
-    let n = (v[0] / scale[0]).hypot(v[1] / scale[1]);
-    [v[0] / n, v[1] / n]
-}
-
 /// β, r in degrees and deg/s, for drawing.
 fn in_degrees(v: &[[f64; 2]]) -> (Vec<f64>, Vec<f64>) {
     v.iter()
         .map(|x| (x[0].to_degrees(), x[1].to_degrees()))
         .unzip()
-}
-
-/// The centre of cell (`i`, `k`) of an `n` × `n` grid over the box.
-fn grid_point(bx: &SearchBox, n: usize, i: usize, k: usize) -> [f64; 2] {
-    [
-        -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / n as f64,
-        -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / n as f64,
-    ]
 }
 
 /// Phase portrait at one condition.
@@ -237,8 +175,8 @@ pub fn phase_portrait(
     let m = 7;
     for i in 0..m {
         for k in 0..m {
-            let x0 = grid_point(bx, m, i, k);
-            let (tx, ty) = in_degrees(&trajectory(model, c, bx, x0, 0.01, 600));
+            let x0 = phase::grid_point(bx, m, i, k);
+            let (tx, ty) = in_degrees(&phase::trajectory(model, c, bx, x0, 0.01, 600));
             series.push(Series::line("", &tx, &ty, 0));
         }
     }
@@ -268,64 +206,33 @@ pub fn phase_portrait(
 
 /// The vector field as unit arrows in box-scaled units on a 21 × 21 grid.
 fn vector_field(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Series {
-    let scale = bx.scale();
-    let n = 21;
-    let mut arrows = Vec::new();
-    for i in 0..n {
-        for k in 0..n {
-            let x = grid_point(bx, n, i, k);
-            let f = residual(model, c, x);
-            let d = [f[0] / scale[0], f[1] / scale[1]];
-            let len = d[0].hypot(d[1]);
-            if !len.is_finite() || len == 0.0 {
-                continue;
-            }
-            let s = 0.7 / n as f64;
-            arrows.push(x);
-            arrows.push([
-                x[0] + s * d[0] / len * scale[0],
-                x[1] + s * d[1] / len * scale[1],
-            ]);
-        }
-    }
+    let arrows: Vec<[f64; 2]> = phase::vector_field(model, c, bx, 21)
+        .into_iter()
+        .flatten()
+        .collect();
     let (ax, ay) = in_degrees(&arrows);
     Series::line("", &ax, &ay, 7).styled(Style::Segments)
 }
 
-/// The stable (integrated backward) and unstable (forward) manifolds of
-/// every saddle, started 1e-4 of the box along each eigenvector.
+/// The stable and unstable manifolds of every saddle, the first saddle's
+/// labelled.
 fn separatrices(
     model: &VehicleModel,
     c: &Condition,
     bx: &SearchBox,
     eqs: &[Equilibrium],
 ) -> Vec<Series> {
-    let scale = bx.scale();
     let mut series = Vec::new();
-    let mut first = true;
-    for e in eqs.iter().filter(|e| e.stability.kind == Kind::Saddle) {
-        let x = [e.beta, e.yaw_rate];
-        let j = stability::jacobian(model, c, x);
-        for (lambda, dir, color) in [
-            (e.stability.eigenvalues[1].0, -1.0, 1),
-            (e.stability.eigenvalues[0].0, 1.0, 3),
-        ] {
-            let v = eigenvector(j, lambda, scale);
-            for sgn in [-1.0, 1.0] {
-                let x0 = [
-                    x[0] + sgn * 1e-4 * v[0] * scale[0],
-                    x[1] + sgn * 1e-4 * v[1] * scale[1],
-                ];
-                let (tx, ty) = in_degrees(&trajectory(model, c, bx, x0, dir * 0.005, 2000));
-                let label = match (first && sgn < 0.0, color) {
-                    (true, 1) => "stable manifold (separatrix)",
-                    (true, _) => "unstable manifold",
-                    _ => "",
-                };
-                series.push(Series::line(label, &tx, &ty, color));
-            }
+    for (k, branches) in phase::separatrices(model, c, bx, eqs).iter().enumerate() {
+        for b in branches {
+            let (color, name) = match b.manifold {
+                Manifold::Stable => (1, "stable manifold (separatrix)"),
+                Manifold::Unstable => (3, "unstable manifold"),
+            };
+            let label = if k == 0 && b.side < 0.0 { name } else { "" };
+            let (tx, ty) = in_degrees(&b.points);
+            series.push(Series::line(label, &tx, &ty, color));
         }
-        first = false;
     }
     series
 }

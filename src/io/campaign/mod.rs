@@ -1,0 +1,291 @@
+//! Test campaigns for the sim-to-real diagnosis: a vehicle, its
+//! road, optionally its tyres or tyre rig data, and measured runs
+//! (`FORMATS.md`). A campaign is a TOML file, or a folder laid out as
+//!
+//! ```text
+//! vehicle.toml   # [vehicle] (FORMATS.md); optional [road], [roll], [diagnose]
+//! tyre_rig.csv   # optional rig data: the base tyre model is fitted to it
+//! runs/*.csv     # measured runs
+//! ```
+//!
+//! A campaign file has the same tables plus `[tyres]` (`file` or `front` and
+//! `rear` tyre files, or `rig` data with the `model` to fit) and `[runs]`
+//! (`files` and/or a `dir`, and `segment`, s, to cut long logs into
+//! pieces); paths are relative to the file.
+//!
+//! Runs are checked (`runs.rs`): a run shorter than [`MIN_RUN_SECONDS`] or
+//! [`MIN_RUN_SAMPLES`] is refused; then each is cleaned
+//! ([`crate::measured::clean`]):
+//! split at time gaps, glitches repaired or masked, samples below
+//! `[diagnose] min_speed` (default 5 m/s) excluded, the moving pieces
+//! replayed separately and the short ones dropped, all in the campaign's
+//! [`CleaningReport`](crate::measured::clean::CleaningReport);
+//! different sample rates between runs are fine (each run is compared at its
+//! own sample times). Units: SI, rad.
+//!
+//! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
+//! finds, reads, checks and cleans its runs.
+
+mod runs;
+
+use super::rig::read_rig;
+use super::tables::{check_road, check_vehicle, load_tyre, Road};
+use super::toml_file::{param_error, TomlSource};
+pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
+use crate::diagnose::effects::{EffectKind, RollModel};
+use crate::error::{by_name, InputError, ParamError};
+pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
+use crate::tyre::{swarm_models, ModelName};
+use crate::vehicle::Vehicle;
+pub use runs::RunSpec;
+use runs::{file_error, read_runs, run_files};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// The `[tyres]` table.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TyreSpec {
+    /// One tyre file for all four wheels.
+    pub file: Option<PathBuf>,
+    /// Front tyre file.
+    pub front: Option<PathBuf>,
+    /// Rear tyre file.
+    pub rear: Option<PathBuf>,
+    /// Tyre rig data (CSV, FORMATS.md).
+    pub rig: Option<PathBuf>,
+    /// Model fitted to the rig data (default pac89).
+    pub model: Option<String>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CampaignFile {
+    #[serde(default)]
+    name: Option<String>,
+    vehicle: Vehicle,
+    #[serde(default)]
+    road: Road,
+    #[serde(default)]
+    tyres: Option<TyreSpec>,
+    #[serde(default)]
+    runs: Option<RunSpec>,
+    #[serde(default)]
+    roll: RollModel,
+    #[serde(default)]
+    diagnose: DiagnoseSettings,
+}
+
+/// Loads a campaign from a TOML file or a folder.
+pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
+    let folder = path.is_dir();
+    let file = if folder {
+        path.join("vehicle.toml")
+    } else {
+        path.to_path_buf()
+    };
+    if folder && !file.is_file() {
+        return Err(file_error(
+            path,
+            "a campaign folder needs vehicle.toml (with a [vehicle] table), runs/*.csv and optionally tyre_rig.csv".into(),
+        ));
+    }
+    let src = TomlSource::read(&file)?;
+    let f: CampaignFile = src.parse()?;
+    let base = file.parent().unwrap_or(Path::new(".")).to_path_buf();
+    validate(&src, &f)?;
+    let effects = candidate_effects(&src, &f.diagnose)?;
+    let mut inputs = vec![file.clone()];
+    let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
+    let mut folder_notes = Vec::new();
+    let files = run_files(
+        &src,
+        f.runs.as_ref(),
+        &base,
+        path,
+        folder,
+        &mut folder_notes,
+    )?;
+    let (runs, mut notes, cleaning) = read_runs(
+        &files,
+        f.runs.as_ref().and_then(|r| r.segment),
+        f.diagnose.min_speed,
+        f.vehicle.wheelbase(),
+        &mut inputs,
+    )?;
+    notes.splice(0..0, folder_notes);
+    if runs.len() < 2 {
+        return Err(file_error(
+            &file,
+            format!(
+                "{} run(s) after checking ({} of {} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
+                runs.len(),
+                cleaning.samples_kept,
+                cleaning.samples_read,
+                f.diagnose.min_speed
+            ),
+        ));
+    }
+    // A folder's whole name (`runs_0.05` is not `runs_0`): two folders
+    // must not write over each other's default output.
+    let name = f.name.clone().unwrap_or_else(|| {
+        if path.is_dir() {
+            path.file_name()
+        } else {
+            path.file_stem()
+        }
+        .map_or("campaign".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Campaign {
+        name,
+        source: path.to_path_buf(),
+        inputs,
+        vehicle: f.vehicle,
+        friction: f.road.friction,
+        tyres,
+        runs,
+        run_files: files.len(),
+        roll: f.roll,
+        settings: f.diagnose,
+        effects,
+        notes,
+        cleaning,
+    })
+}
+
+/// Checks the vehicle, road, roll, diagnosis and segment values.
+fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
+    check_vehicle(src, &f.vehicle)?;
+    check_road(src, &f.road)?;
+    f.roll
+        .validate()
+        .map_err(|e| param_error(src, Some("roll"), e))?;
+    let s = &f.diagnose;
+    ParamError::in_range(
+        "step",
+        s.step,
+        1e-4,
+        0.05,
+        "a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)",
+    )
+    .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
+    .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
+    .and_then(|_| {
+        ParamError::in_range(
+            "max_effects",
+            s.max_effects as f64,
+            0.0,
+            f64::INFINITY,
+            "the verdict names up to this many effects, so at least one",
+        )
+    })
+    .and_then(|_| {
+        ParamError::in_range(
+            "particles",
+            s.particles as f64,
+            0.0,
+            f64::INFINITY,
+            "each effect fit's swarm needs a particle",
+        )
+    })
+    .map_err(|e| param_error(src, Some("diagnose"), e))?;
+    if let Some(seg) = f.runs.as_ref().and_then(|r| r.segment) {
+        ParamError::in_range(
+            "segment",
+            seg,
+            MIN_RUN_SECONDS,
+            f64::INFINITY,
+            &format!("a segment must be longer than {MIN_RUN_SECONDS} s"),
+        )
+        .map_err(|e| param_error(src, Some("runs"), e))?;
+    }
+    Ok(())
+}
+
+/// The candidate effects named by `[diagnose] effects` (all by default).
+fn candidate_effects(
+    src: &TomlSource,
+    s: &DiagnoseSettings,
+) -> Result<Vec<EffectKind>, InputError> {
+    let Some(names) = &s.effects else {
+        return Ok(EffectKind::ALL.to_vec());
+    };
+    // No candidate would make a verdict of "no effect explains the gap"
+    // that nothing was tried for.
+    if names.is_empty() {
+        return Err(src.value_error(&ParamError::without_value(
+            "diagnose.effects",
+            "an empty list: name at least one effect, or leave the key out for the whole library",
+        )));
+    }
+    let mut kinds = Vec::with_capacity(names.len());
+    for n in names {
+        let kind = EffectKind::from_name(n).ok_or_else(|| {
+            let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
+            src.value_error(&ParamError::without_value(
+                "diagnose.effects",
+                &format!("unknown effect `{n}`: one of {}", all.join(", ")),
+            ))
+        })?;
+        if kinds.contains(&kind) {
+            return Err(src.value_error(&ParamError::without_value(
+                "diagnose.effects",
+                &format!("`{n}` is listed twice: each candidate is fitted once"),
+            )));
+        }
+        kinds.push(kind);
+    }
+    Ok(kinds)
+}
+
+/// Where the base tyres come from: tyre files, rig data (read here) with
+/// the model to fit, or nothing (axles identified from the runs).
+fn base_tyres(
+    src: &TomlSource,
+    f: &CampaignFile,
+    base: &Path,
+    folder: bool,
+    inputs: &mut Vec<PathBuf>,
+) -> Result<BaseTyres, InputError> {
+    let spec = f.tyres.clone().unwrap_or_default();
+    let rig_default = base.join("tyre_rig.csv");
+    let rig =
+        match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
+            (Some(t), None, None, None) => {
+                inputs.push(base.join(t));
+                src.referenced_file("tyres.file", &base.join(t))?;
+                let t = load_tyre(&base.join(t))?;
+                return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
+            }
+            (None, Some(fr), Some(re), None) => {
+                inputs.extend([base.join(fr), base.join(re)]);
+                src.referenced_file("tyres.front", &base.join(fr))?;
+                src.referenced_file("tyres.rear", &base.join(re))?;
+                return Ok(BaseTyres::Given(
+                    Box::new(load_tyre(&base.join(fr))?),
+                    Box::new(load_tyre(&base.join(re))?),
+                ));
+            }
+            (None, None, None, Some(rig)) => {
+                src.referenced_file("tyres.rig", &base.join(rig))?;
+                base.join(rig)
+            }
+            (None, None, None, None) if folder && rig_default.is_file() => rig_default,
+            (None, None, None, None) => return Ok(BaseTyres::FromRuns),
+            _ => return Err(src.value_error(&ParamError::without_value(
+                "tyres",
+                "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
+            ))),
+        };
+    let name = spec.model.as_deref().unwrap_or("pac89");
+    // The rig fit starts a swarm, which the staged Magic Formula does not.
+    let model = by_name(&swarm_models(), ModelName::as_str, "tyre model", name)
+        .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why)))?;
+    let data = read_rig(&rig)?;
+    inputs.push(rig.clone());
+    Ok(BaseTyres::Rig {
+        path: rig,
+        data: Box::new(data),
+        model,
+    })
+}

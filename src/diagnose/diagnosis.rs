@@ -47,9 +47,9 @@ pub use super::summary::observed_channel;
 
 use super::campaign::Campaign;
 use super::candidates::{base_models, Bases};
+use super::channels::{Channel, ChannelErrors};
 use super::crossval::{prepare, singles, Context, Scored};
 use super::effects::{EffectKind, EffectSet, Needs};
-use super::fit::{Channel, ChannelErrors};
 use super::model::{Augmented, Observed};
 use super::search::{baseline, confounded_with, search, verdict_of, worsened, Baseline, Search};
 use super::summary::{base_run_gap, gap_summary, parts_table};
@@ -207,7 +207,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
 
 /// A note on the runs the base model is too stiff to replay by RK4 on the
 /// campaign's `step`, which it replays by ROS34PW2
-/// ([`super::fit::Prepared::drive_for`]); every fit picks per model.
+/// ([`super::replay::Prepared::drive_for`]); every fit picks per model.
 fn grid_note(ctx: &Context, step: f64) -> Option<String> {
     let stiff = ctx
         .runs

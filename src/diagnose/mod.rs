@@ -9,6 +9,7 @@
 mod base;
 pub mod campaign;
 mod candidates;
+pub mod channels;
 mod crossval;
 pub mod diagnosis;
 pub mod effects;
@@ -16,7 +17,10 @@ pub mod fit;
 pub mod gap;
 pub mod model;
 pub mod parts;
+mod problem;
 pub mod proving_ground;
+mod refit;
+pub mod replay;
 pub mod report;
 mod search;
 pub mod sensors;

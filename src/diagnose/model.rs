@@ -19,7 +19,7 @@
 //! the logged (piecewise-linear) steer ([`Augmented::steered`]); one whose
 //! path is off runs the drive itself. [`Augmented::simulate`] replays the
 //! drive it is given: the callers that replay logged runs
-//! ([`super::fit::Prepared::drive_for`], the proving ground) pass it
+//! ([`super::replay::Prepared::drive_for`], the proving ground) pass it
 //! through [`Augmented::steered`] first. Units: SI, rad.
 
 use super::effects::EffectSet;

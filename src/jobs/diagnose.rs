@@ -5,9 +5,9 @@
 //! |ay| level and speed band) and the overlays of the worst runs
 //! (`overlays.png`).
 
+use crate::diagnose::channels::Channel;
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
 use crate::diagnose::effects::{joined, Bound};
-use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
 use crate::error::Error;
 use crate::io::campaign::load_campaign;

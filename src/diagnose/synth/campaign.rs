@@ -17,12 +17,12 @@ use std::path::PathBuf;
 
 impl Synthetic {
     /// The rig data as columns (fz, alpha, fy).
-    pub fn rig_columns(&self) -> [Vec<f64>; 3] {
+    pub(crate) fn rig_columns(&self) -> [Vec<f64>; 3] {
         [0, 1, 2].map(|j| self.rig.iter().map(|r| r[j]).collect())
     }
 
     /// The rig data, as a campaign file would hold them.
-    pub fn rig_data(&self) -> RigData {
+    fn rig_data(&self) -> RigData {
         let [fz, alpha, fy] = self.rig_columns();
         RigData {
             camber: vec![0.0; fz.len()],
@@ -100,7 +100,7 @@ impl Synthetic {
     }
 
     /// The campaign folder's `vehicle.toml`.
-    pub fn vehicle_toml(&self) -> String {
+    pub(crate) fn vehicle_toml(&self) -> String {
         let v = &self.vehicle;
         let truth: Vec<String> = self
             .spec

@@ -106,21 +106,17 @@ pub struct SynthSpec {
 pub struct Synthetic {
     /// Vehicle.
     pub vehicle: Vehicle,
-    /// Truth tyre (all wheels) of the augmented truth; the four-wheel
-    /// truth's own tyre is [`FourWheelVehicle::tyre`] (this field then holds
-    /// the UniTire it replaces).
-    pub tyre: Tyre,
     /// Rig samples: fz, alpha, fy.
-    pub rig: Vec<[f64; 3]>,
+    pub(crate) rig: Vec<[f64; 3]>,
     /// Runs with their names.
     pub runs: Vec<MeasuredRun>,
     /// The specification.
-    pub spec: SynthSpec,
+    spec: SynthSpec,
     /// The model that played the car.
-    pub truth: Truth,
+    truth: Truth,
     /// The roll the campaign file states (for the four-wheel truth it
     /// differs from the truth's).
-    pub roll: RollModel,
+    roll: RollModel,
 }
 
 /// Generates a campaign with the augmented truth.
@@ -203,7 +199,7 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
         spec,
         truth,
         vehicle,
-        tyre,
+        &tyre,
         runs,
         &four_wheel,
         &mut rng,
@@ -216,7 +212,7 @@ fn finish(
     spec: &SynthSpec,
     truth: Truth,
     vehicle: Vehicle,
-    tyre: Tyre,
+    tyre: &Tyre,
     runs: Vec<MeasuredRun>,
     four_wheel: &FourWheel,
     rng: &mut ChaCha8Rng,
@@ -242,7 +238,6 @@ fn finish(
     }
     Synthetic {
         vehicle,
-        tyre,
         rig,
         runs,
         spec: spec.clone(),

@@ -66,7 +66,7 @@ pub enum Programme {
 
 impl Programme {
     /// Every programme.
-    pub const ALL: [Programme; 4] = [
+    pub(crate) const ALL: [Programme; 4] = [
         Programme::Handling,
         Programme::Oval,
         Programme::RoadCourse,
@@ -85,32 +85,32 @@ impl Programme {
 
     /// Whether the runs carry a lateral acceleration (all but the slow
     /// oval's, which carry sideslip instead, as the Putnam log).
-    pub fn logs_ay(self) -> bool {
+    pub(super) fn logs_ay(self) -> bool {
         self != Programme::SlowOval
     }
 
     /// Whether the runs carry sideslip.
-    pub fn logs_beta(self) -> bool {
+    pub(super) fn logs_beta(self) -> bool {
         matches!(self, Programme::Handling | Programme::SlowOval)
     }
 
     /// Whether the campaign has tyre rig data (all but the slow oval's: its
     /// base model identifies the axles from the runs, as for the Putnam
     /// log).
-    pub fn has_rig(self) -> bool {
+    pub(super) fn has_rig(self) -> bool {
         self != Programme::SlowOval
     }
 
     /// The length of the pieces the campaign cuts its runs into, s (the
     /// slow oval's `[runs] segment`).
-    pub fn segment(self) -> Option<f64> {
+    pub(super) fn segment(self) -> Option<f64> {
         (self == Programme::SlowOval).then_some(SLOW_OVAL_SEGMENT)
     }
 
     /// The replay step its campaign states, s: the slow oval's, like a
     /// real 25 Hz log's campaign, replays at 20 ms (half the log's
     /// interval); the others take the default.
-    pub fn replay_step(self) -> Option<f64> {
+    pub(super) fn replay_step(self) -> Option<f64> {
         (self == Programme::SlowOval).then_some(0.02)
     }
 

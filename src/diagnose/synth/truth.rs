@@ -27,7 +27,7 @@ pub enum Truth {
 
 impl Truth {
     /// Every truth.
-    pub const ALL: [Truth; 2] = [Truth::Augmented, Truth::FourWheel];
+    pub(crate) const ALL: [Truth; 2] = [Truth::Augmented, Truth::FourWheel];
 
     /// The name on the command line.
     pub fn name(self) -> &'static str {
@@ -44,7 +44,7 @@ impl Truth {
 
     /// Whether this truth can drive `programme`: the four-wheel truth holds
     /// its speed on a flat road, so it drives the handling programme only.
-    pub fn drives(self, programme: Programme) -> Result<(), ParamError> {
+    pub(crate) fn drives(self, programme: Programme) -> Result<(), ParamError> {
         if self == Truth::FourWheel && programme.logged() {
             return Err(ParamError::without_value(
                 "programme",

@@ -305,8 +305,8 @@ fn base_report(bases: &Bases, tyres: String, rig_grouping: Option<GroupingReport
     }
 }
 
-/// Runs the diagnosis of a campaign. `progress` counts work units (see
-/// [`work_units`]).
+/// Runs the diagnosis of a campaign. `progress` counts work units (as many
+/// as `work_units` of the campaign).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);

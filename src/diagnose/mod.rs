@@ -16,7 +16,7 @@
 //! - the diagnosis: the candidates and their starts (`candidates`), their
 //!   scores on held-out runs (`crossval`), the search for a verdict
 //!   (`search`), the gap tables (`summary`), the report's types (`report`)
-//!   and the whole ([`diagnosis`]);
+//!   and the whole (`diagnosis`);
 //! - the virtual proving ground that generates campaigns with known
 //!   effects ([`synth`]; its independent four-wheel truth in
 //!   `proving_ground`).

@@ -115,7 +115,7 @@ impl Augmented {
     /// `steer`), which `drive` samples, goes through the steer path:
     /// `drive` itself while the path is off (so the replay is the base
     /// model's bit for bit), else a copy whose steer at every stage time is
-    /// the path's output ([`SteerPath::apply`]).
+    /// the path's output (`SteerPath::apply`).
     pub fn steered<'d>(&self, drive: &'d Drive, t: &[f64], steer: &[f64]) -> Cow<'d, Drive> {
         let path = self.steer_path();
         if path.is_off() {

@@ -123,7 +123,7 @@ impl Prepared {
     }
 
     /// The replay `model` needs on the campaign's step: by RK4 while
-    /// `h·ρ ≤` [`STABLE_STEP`] at the run's lowest and highest speed, else
+    /// `h·ρ ≤` `STABLE_STEP` at the run's lowest and highest speed, else
     /// by ROS34PW2, which is stable at any step. The step stays the
     /// campaign's: a stiff model (racing axles at a few m/s, a tyre lag of
     /// millimetres) costs a Jacobian every few steps, not a finer grid, and

@@ -34,7 +34,7 @@
 //!
 //! Two truths ([`Truth`]): the augmented model of the diagnosis itself with
 //! effects switched on (the default), or the independent four-wheel model
-//! of [`super::proving_ground`] with its own Magic-Formula tyre and effects
+//! of `proving_ground` with its own Magic-Formula tyre and effects
 //! of its own, whose campaign's `[roll]` settings deliberately differ from
 //! the truth's roll (the diagnosis is not handed the truth).
 //!

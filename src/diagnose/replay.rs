@@ -29,7 +29,7 @@ use std::sync::Mutex;
 /// nonlinearity). Beyond it, ROS34PW2.
 ///
 /// [`VehicleModel::fastest_rate`]: crate::vehicle::VehicleModel::fastest_rate
-pub const STABLE_STEP: f64 = 2.0;
+pub(crate) const STABLE_STEP: f64 = 2.0;
 
 /// The measured inputs a run's replay grids are sampled from.
 #[derive(Debug)]
@@ -47,19 +47,19 @@ struct ReplayInputs {
 #[derive(Debug, Clone)]
 pub struct Prepared {
     /// Name (the file).
-    pub name: String,
+    pub(crate) name: String,
     /// Its inputs at the RK4 stages of the campaign's step.
-    pub drive: Drive,
+    pub(crate) drive: Drive,
     /// The same at the ROS34PW2 stages, sampled when a model first needs
     /// them ([`Prepared::drive_for`]).
     stiff: std::sync::Arc<std::sync::OnceLock<Drive>>,
     inputs: std::sync::Arc<ReplayInputs>,
     /// Times at which residuals are taken, s.
-    pub times: Vec<f64>,
+    pub(crate) times: Vec<f64>,
     /// Measured channels at those times.
-    pub measured: Vec<(Channel, Vec<f64>)>,
+    pub(crate) measured: Vec<(Channel, Vec<f64>)>,
     /// Initial sideslip (measured, else 0) and yaw rate.
-    pub start: (f64, f64),
+    pub(crate) start: (f64, f64),
 }
 
 impl Prepared {
@@ -131,7 +131,7 @@ impl Prepared {
     /// A model whose steer path is on gets a copy of that drive with the
     /// path's output for the run's logged steer ([`Augmented::steered`]);
     /// any other, the prepared drive itself.
-    pub fn drive_for(&self, model: &Augmented) -> Cow<'_, Drive> {
+    pub(crate) fn drive_for(&self, model: &Augmented) -> Cow<'_, Drive> {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
@@ -148,20 +148,20 @@ impl Prepared {
 
     /// The run replayed by `model` from its first measured state less the
     /// model's sensor offsets, by the method [`Prepared::drive_for`] picks.
-    pub fn replay(&self, model: &Augmented) -> TimeHistory {
+    pub(crate) fn replay(&self, model: &Augmented) -> TimeHistory {
         let (beta, yaw_rate) = self.start_of(model);
         model.simulate_from(&self.drive_for(model), beta, yaw_rate)
     }
 
     /// Number of residuals of this run.
-    pub fn count(&self) -> usize {
+    pub(crate) fn count(&self) -> usize {
         self.measured.iter().map(|(_, v)| v.len()).sum()
     }
 
     /// Replays the run with `model` from its first measured state (less the
     /// model's sensor offsets) and returns what the sensors would read at
     /// the residual times.
-    pub fn observe(&self, model: &Augmented) -> Observed {
+    pub(crate) fn observe(&self, model: &Augmented) -> Observed {
         model.observe(&self.replay(model), &self.times)
     }
 
@@ -214,7 +214,7 @@ impl Prepared {
 
     /// Replays the run with `model` and writes the scaled residuals into
     /// `out` (length [`Prepared::count`]).
-    pub fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
+    pub(crate) fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
         self.write_residuals(&self.observe(model), scales, out);
     }
 

@@ -13,10 +13,8 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
-use handling::diagnose::fit::Prepared;
-use handling::diagnose::model::Augmented;
 use handling::diagnose::synth::{generate, truth_values, Noise, Programme, SynthSpec};
-use handling::diagnose::DiagnoseSettings;
+use handling::diagnose::{Augmented, DiagnoseSettings, Prepared};
 use handling::tyre::{MagicSimple, Pac89, Tyre};
 use handling::vehicle::VehicleModel;
 use std::time::Duration;

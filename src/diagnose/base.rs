@@ -33,8 +33,9 @@
 //! Units: SI, rad; k in 1/rad (N of lateral force per N of load per rad of
 //! slip), D dimensionless.
 
-use super::fit::{Problem, FIT_TOLERANCE};
+use super::fit::FIT_TOLERANCE;
 use super::model::Augmented;
+use super::problem::Problem;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::Residuals;
 use crate::tyre::{MagicSimple, Tyre};
@@ -422,7 +423,7 @@ mod tests {
 
     /// Runs of a car whose axles are the simplified Magic Formula of
     /// shares `truth`: sine steers at three speeds, 25 Hz, yaw rate and ay.
-    fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::fit::Prepared> {
+    fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::replay::Prepared> {
         use crate::manoeuvre::SineSteer;
         use crate::vehicle::{Vehicle, VehicleModel};
         let (f, r) = axle_tyres(truth);
@@ -436,7 +437,7 @@ mod tests {
                     start: 0.5,
                     end: 8.0,
                 };
-                crate::diagnose::fit::tests::sine_run(&car, k, m)
+                crate::diagnose::replay::tests::sine_run(&car, k, m)
             })
             .collect()
     }

@@ -8,8 +8,11 @@
 use super::base::{identify_axles, AxleIdentification};
 use super::campaign::{BaseTyres, Campaign};
 use super::effects::{Bound, EffectKind, EffectSet, Parameter};
-use super::fit::{fit, refit, training_rows, FitOutcome, Polish, Prepared, Problem};
+use super::fit::{fit, FitOutcome, Polish};
 use super::model::Augmented;
+use super::problem::Problem;
+use super::refit::{refit, training_rows};
+use super::replay::Prepared;
 use super::report::ParameterValue;
 use crate::error::Error;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};

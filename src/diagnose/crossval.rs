@@ -7,11 +7,13 @@
 use super::base::axle_grid;
 use super::campaign::Campaign;
 use super::candidates::{with_effects, Bases, Setting};
+use super::channels::ChannelErrors;
 use super::effects::{EffectKind, EffectSet};
-use super::fit::{
-    fit, refit, swarm, training_rows, ChannelErrors, FitOutcome, Polish, Prepared, Problem,
-};
+use super::fit::{fit, swarm, FitOutcome, Polish};
 use super::model::Observed;
+use super::problem::Problem;
+use super::refit::{refit, training_rows};
+use super::replay::Prepared;
 use crate::optim::local::Residuals;
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;

@@ -17,7 +17,8 @@
 //!    alone would give `J_n` (the same with the noise floors), so the gap
 //!    above noise is `G = sqrt(J² − J_n²)` and an effect's reduction is
 //!    `1 − G_after/G_before` — `crossval.rs` (folds, scoring, at most
-//!    [`MAX_FOLDS`] folds), [`super::fit`] (the fits).
+//!    [`MAX_FOLDS`] folds), `fit.rs` (the fits) and `refit.rs` (the fold
+//!    refits).
 //! 4. Verdict: the best effect is accepted when it removes at least
 //!    [`ACCEPT`] of the held-out gap above noise and lowers the BIC; more
 //!    effects are added greedily (jointly refitted) while each removes
@@ -30,28 +31,31 @@
 //!    experiment that would separate them.
 //!    A gap below [`SIGNIFICANT`]·J_n is no gap: the verdict is empty.
 //!    The search, the ranking against the base model and the verdict in
-//!    words are in `search.rs`; its thresholds are re-exported here.
+//!    words are in `search.rs`, with its thresholds.
 //!
 //! This file runs the steps in order ([`diagnose`]) and assembles the
 //! report ([`super::report`]).
 //!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales).
+//!
+//! [`ACCEPT`]: super::search::ACCEPT
+//! [`PROMISING`]: super::search::PROMISING
+//! [`CONFOUNDED`]: super::search::CONFOUNDED
+//! [`CONFOUNDED_NOISE`]: super::search::CONFOUNDED_NOISE
+//! [`SIGNIFICANT`]: super::search::SIGNIFICANT
 
-pub use super::crossval::MAX_FOLDS;
 pub use super::report::*;
-pub use super::search::{
-    ACCEPT, ALTERNATIVE_STARTS, CONFOUNDED, CONFOUNDED_NOISE, DISAGREEMENT, PARSIMONY, PROMISING,
-    SIGNIFICANT,
-};
 pub use super::summary::observed_channel;
 
 use super::campaign::Campaign;
 use super::candidates::{base_models, Bases};
-use super::crossval::{prepare, singles, Context, Scored};
+use super::channels::{Channel, ChannelErrors};
+use super::crossval::{prepare, singles, Context, Scored, MAX_FOLDS};
 use super::effects::{EffectKind, EffectSet, Needs};
-use super::fit::{Channel, ChannelErrors};
 use super::model::{Augmented, Observed};
-use super::search::{baseline, confounded_with, search, verdict_of, worsened, Baseline, Search};
+use super::search::{
+    baseline, confounded_with, search, verdict_of, worsened, Baseline, Search, SIGNIFICANT,
+};
 use super::summary::{base_run_gap, gap_summary, parts_table};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
@@ -207,7 +211,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
 
 /// A note on the runs the base model is too stiff to replay by RK4 on the
 /// campaign's `step`, which it replays by ROS34PW2
-/// ([`super::fit::Prepared::drive_for`]); every fit picks per model.
+/// ([`super::replay::Prepared::drive_for`]); every fit picks per model.
 fn grid_note(ctx: &Context, step: f64) -> Option<String> {
     let stiff = ctx
         .runs
@@ -301,8 +305,8 @@ fn base_report(bases: &Bases, tyres: String, rig_grouping: Option<GroupingReport
     }
 }
 
-/// Runs the diagnosis of a campaign. `progress` counts work units (see
-/// [`work_units`]).
+/// Runs the diagnosis of a campaign. `progress` counts work units (as many
+/// as `work_units` of the campaign).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);

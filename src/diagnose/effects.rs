@@ -1,9 +1,10 @@
 //! The library of candidate effects of the sim-to-real diagnosis:
 //! each is a model extension with one to three physical parameters, off in
-//! the base model. [`EffectKind`] names them (the vocabulary),
-//! gives their parameters, units, search bounds and the values that switch
-//! them off; [`EffectSet`] holds the values of all of them at once, and is
-//! what the augmented model ([`super::model`]) evaluates.
+//! the base model. [`EffectKind`] names them (as a campaign's
+//! `[diagnose] effects` and `diagnosis.json` do), gives their parameters,
+//! units, search bounds and the values that switch them off;
+//! [`EffectSet`] holds the values of all of them at once, and is what the
+//! augmented model (`super::model`) evaluates.
 //!
 //! Signs follow ISO 8855 (x forward, y left, z up, positive steer left,
 //! positive roll φ puts the right side down, as in a left turn). Units: SI,
@@ -153,7 +154,8 @@ pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
 }
 
 impl EffectKind {
-    /// Every effect, in the order.
+    /// Every effect, in a fixed order: the candidates of a campaign that
+    /// names none, and the order error messages list them in.
     pub const ALL: [EffectKind; 18] = [
         EffectKind::RelaxationLength,
         EffectKind::SteeringCompliance,
@@ -175,7 +177,8 @@ impl EffectKind {
         EffectKind::SteerPath,
     ];
 
-    /// The name in the vocabulary (and in diagnosis.json).
+    /// The name in a campaign's `[diagnose] effects` and in
+    /// `diagnosis.json`.
     pub fn name(self) -> &'static str {
         match self {
             EffectKind::RelaxationLength => "relaxation_length",

@@ -21,7 +21,7 @@
 //! so "no significant gap" is a possible answer.
 //! Units: SI, rad; times in s.
 
-use super::fit::Channel;
+use super::channels::Channel;
 use super::parts::{regime_samples, window_samples, Part};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;

@@ -19,7 +19,7 @@
 //! the logged (piecewise-linear) steer ([`Augmented::steered`]); one whose
 //! path is off runs the drive itself. [`Augmented::simulate`] replays the
 //! drive it is given: the callers that replay logged runs
-//! ([`super::fit::Prepared::drive_for`], the proving ground) pass it
+//! ([`super::replay::Prepared::drive_for`], the proving ground) pass it
 //! through [`Augmented::steered`] first. Units: SI, rad.
 
 use super::effects::EffectSet;
@@ -57,7 +57,7 @@ impl Augmented {
     /// same state: the two differ at most in their sensors, which act on the
     /// response only (their offsets move the start state, which the caller
     /// compares).
-    pub fn same_dynamics(&self, other: &Augmented) -> bool {
+    pub(crate) fn same_dynamics(&self, other: &Augmented) -> bool {
         let mut effects = other.effects;
         effects.sensors = self.effects.sensors;
         self.base == other.base
@@ -68,7 +68,7 @@ impl Augmented {
 
     /// The vehicle model with the vehicle-side effects applied, and the road
     /// friction it runs on.
-    pub fn model(&self) -> (VehicleModel, f64) {
+    pub(crate) fn model(&self) -> (VehicleModel, f64) {
         let e = &self.effects;
         let mut model = self.base.clone();
         if let Some(chi) = e.load_transfer_front_share {
@@ -106,7 +106,7 @@ impl Augmented {
     }
 
     /// The steer path of its effects.
-    pub fn steer_path(&self) -> SteerPath {
+    pub(crate) fn steer_path(&self) -> SteerPath {
         let [delay, lag] = self.effects.steer_path;
         SteerPath { delay, lag }
     }
@@ -115,8 +115,8 @@ impl Augmented {
     /// `steer`), which `drive` samples, goes through the steer path:
     /// `drive` itself while the path is off (so the replay is the base
     /// model's bit for bit), else a copy whose steer at every stage time is
-    /// the path's output ([`SteerPath::apply`]).
-    pub fn steered<'d>(&self, drive: &'d Drive, t: &[f64], steer: &[f64]) -> Cow<'d, Drive> {
+    /// the path's output (`SteerPath::apply`).
+    pub(crate) fn steered<'d>(&self, drive: &'d Drive, t: &[f64], steer: &[f64]) -> Cow<'d, Drive> {
         let path = self.steer_path();
         if path.is_off() {
             Cow::Borrowed(drive)
@@ -129,7 +129,7 @@ impl Augmented {
     /// The state that starts a replay at sideslip `beta` and yaw rate
     /// `yaw_rate`: lag states at their kinematic slip angles, roll at its
     /// steady value for ay = u·r.
-    pub fn initial_state(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> StateVector {
+    pub(crate) fn initial_state(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> StateVector {
         let (model, friction) = self.model();
         Self::quasi_static(&model, friction, drive, beta, yaw_rate)
     }
@@ -146,7 +146,7 @@ impl Augmented {
     }
 
     /// Replays the drive from `x0`; the history carries the roll.
-    pub fn simulate(&self, drive: &Drive, x0: StateVector) -> TimeHistory {
+    pub(crate) fn simulate(&self, drive: &Drive, x0: StateVector) -> TimeHistory {
         let (model, friction) = self.model();
         Self::replay(&model, friction, drive, x0)
     }
@@ -154,7 +154,7 @@ impl Augmented {
     /// Replays the drive from the state [`Augmented::initial_state`] gives
     /// for `beta` and `yaw_rate`, building the model once (the fits replay
     /// every run at every evaluation).
-    pub fn simulate_from(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> TimeHistory {
+    pub(crate) fn simulate_from(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> TimeHistory {
         let (model, friction) = self.model();
         let x0 = Self::quasi_static(&model, friction, drive, beta, yaw_rate);
         Self::replay(&model, friction, drive, x0)
@@ -170,7 +170,7 @@ impl Augmented {
 
     /// What the sensors record of a response, interpolated at `times`:
     /// (yaw rate, ay, β).
-    pub fn observe(&self, response: &TimeHistory, times: &[f64]) -> Observed {
+    pub(crate) fn observe(&self, response: &TimeHistory, times: &[f64]) -> Observed {
         let seen = self.effects.sensors.measure(response);
         let at = |ys: &[f64]| -> Vec<f64> {
             times.iter().map(|&t| interpolate(&seen.t, ys, t)).collect()

@@ -49,7 +49,6 @@
 //! steer of one evaluation are solved by a relaxed fixed-point iteration.
 //! Units: SI, rad.
 
-use crate::error::ParamError;
 use crate::manoeuvre::{interpolate, Manoeuvre};
 use crate::sim::ode::{self, OdeSystem};
 use serde::Serialize;
@@ -213,26 +212,6 @@ impl FourWheelVehicle {
     pub fn roll_gradient(&self) -> f64 {
         self.mass * self.roll_arm() / (self.roll_stiffness[0] + self.roll_stiffness[1])
     }
-
-    /// Checks the values for physical sense.
-    pub fn validate(&self) -> Result<(), ParamError> {
-        for (k, v) in [
-            ("mass", self.mass),
-            ("yaw_inertia", self.yaw_inertia),
-            ("roll_inertia", self.roll_inertia),
-            ("a", self.a),
-            ("b", self.b),
-            ("track_front", self.track_front),
-            ("track_rear", self.track_rear),
-            ("cg_height", self.cg_height),
-            ("roll_stiffness.front", self.roll_stiffness[0]),
-            ("roll_stiffness.rear", self.roll_stiffness[1]),
-        ] {
-            ParamError::positive(k, v)?;
-        }
-        ParamError::non_negative("roll_damping.front", self.roll_damping[0])?;
-        ParamError::non_negative("roll_damping.rear", self.roll_damping[1])
-    }
 }
 
 /// The truth's effects; [`FourWheelEffects::default`] is none.
@@ -354,6 +333,7 @@ struct Evaluation {
 
 impl FourWheel {
     /// The truth without effects.
+    #[cfg(test)]
     pub fn new(vehicle: FourWheelVehicle) -> Self {
         Self {
             vehicle,

@@ -3,11 +3,11 @@
 //! unit; held-out errors J are dimensionless (residuals over channel
 //! scales).
 
+use super::channels::Channel;
 use super::effects::{Bound, EffectKind};
-use super::fit::Channel;
 use super::gap::ChannelGap;
 use super::model::Observed;
-pub use super::parts::{Part, PartAxis, Window};
+pub use super::parts::{Part, PartAxis};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;

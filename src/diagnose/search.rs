@@ -27,9 +27,9 @@
 
 use super::base::AxleIdentification;
 use super::candidates::{combined_start, parameter_values};
+use super::channels::{Channel, ChannelErrors};
 use super::crossval::{gap_above, reduction, Context, Scored};
 use super::effects::{joined, Bound, EffectKind, EffectSet};
-use super::fit::{Channel, ChannelErrors};
 use super::report::{ChannelError, Confounded, Part, Ranked, Shrinkage, Verdict};
 use rayon::prelude::*;
 

@@ -3,10 +3,11 @@
 //! after the verdict's effects, and the summary sentence of the report.
 //! Units: each channel's own (rad/s, m/s², rad).
 
+use super::channels::Channel;
 use super::crossval::reduction;
-use super::fit::{Channel, Prepared};
 use super::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use super::model::{Augmented, Observed};
+use super::replay::Prepared;
 use super::report::{Part, RunGap, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;

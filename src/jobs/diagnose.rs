@@ -6,9 +6,9 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
+use crate::diagnose::channels::Channel;
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
 use crate::diagnose::effects::{joined, Bound};
-use crate::diagnose::fit::Channel;
 use crate::diagnose::report::Part;
 use crate::error::Error;
 use crate::io::campaign::load_campaign;

@@ -168,7 +168,7 @@ mod tests {
     use rand_chacha::ChaCha8Rng;
 
     /// White noise of standard deviation `sd`.
-    pub(crate) fn noise(n: usize, sd: f64, seed: u64) -> Vec<f64> {
+    fn noise(n: usize, sd: f64, seed: u64) -> Vec<f64> {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         (0..n).map(|_| sd * gauss(&mut rng)).collect()
     }
@@ -252,94 +252,5 @@ mod tests {
         for a in run.longitudinal_acceleration() {
             assert!((a - 2.0).abs() < 1e-9, "{a}");
         }
-    }
-}
-
-/// The acceleration a replay of a measured run uses (through the
-/// diagnosis's prepared run, [`crate::diagnose::fit::Prepared`]).
-#[cfg(test)]
-mod replay_tests {
-    use super::tests::noise;
-    use super::*;
-    use crate::diagnose::fit::Prepared;
-
-    fn run(t: Vec<f64>, speed: Vec<f64>, ax: Option<Vec<f64>>) -> MeasuredRun {
-        let n = t.len();
-        MeasuredRun {
-            path: "r.csv".into(),
-            t,
-            speed,
-            steer: vec![0.01; n],
-            yaw_rate: vec![0.0; n],
-            ay: None,
-            beta: None,
-            roll: None,
-            bank: None,
-            ax,
-            masked: Vec::new(),
-        }
-    }
-
-    fn rms(v: &[f64]) -> f64 {
-        (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt()
-    }
-
-    #[test]
-    fn a_noisy_constant_speed_without_ax_is_replayed_without_fake_acceleration() {
-        // 30 s at 20 m/s logged at 100 Hz with 0.03 m/s of white noise.
-        let t: Vec<f64> = (0..3001).map(|k| k as f64 * 0.01).collect();
-        let speed: Vec<f64> = noise(t.len(), 0.03, 11).iter().map(|e| 20.0 + e).collect();
-        // The raw difference of the speed: √2·0.03/0.01 ≈ 4.2 m/s² RMS.
-        let raw: Vec<f64> = speed.windows(2).map(|u| (u[1] - u[0]) / 0.01).collect();
-        assert!(rms(&raw) > 1.0, "{}", rms(&raw));
-        let r = run(t, speed, None);
-        for step in [0.01, 0.02] {
-            let p = Prepared::new(&r, step, 25.0);
-            let ax = p.drive.ax_samples();
-            assert_eq!(ax.len(), 2 * p.drive.steps + 1);
-            assert!(rms(&ax) < 0.2, "step {step}: {}", rms(&ax));
-        }
-        // With an ax channel, that is what the replay reads.
-        let measured: Vec<f64> = (0..3001).map(|k| -1.0 - 1e-3 * k as f64).collect();
-        let r = run(r.t.clone(), r.speed.clone(), Some(measured));
-        let p = Prepared::new(&r, 0.01, 25.0);
-        for (i, a) in p.drive.ax_samples().iter().enumerate() {
-            assert!((a - (-1.0 - 0.5e-3 * i as f64)).abs() < 1e-9, "{i}: {a}");
-        }
-    }
-
-    #[test]
-    fn a_speed_ramp_is_recovered_in_its_middle() {
-        // 2 s at 10 m/s, 5 s speeding up at 2 m/s², 3 s at 20 m/s, at
-        // 100 Hz; once exact, once with 0.03 m/s of noise.
-        let t: Vec<f64> = (0..1001).map(|k| k as f64 * 0.01).collect();
-        let clean: Vec<f64> = t
-            .iter()
-            .map(|&x| 10.0 + 2.0 * (x - 2.0).clamp(0.0, 5.0))
-            .collect();
-        let noisy: Vec<f64> = clean
-            .iter()
-            .zip(noise(t.len(), 0.03, 5))
-            .map(|(u, e)| u + e)
-            .collect();
-        let middle = |p: &Prepared| -> Vec<f64> {
-            let ax = p.drive.ax_samples();
-            // Stage sample k is at k·h/2 = k·2.5 ms: 3.5–5.5 s.
-            (1400..=2200).map(|k| ax[k]).collect()
-        };
-        let p = Prepared::new(&run(t.clone(), clean, None), 0.005, 25.0);
-        for a in middle(&p) {
-            assert!((a - 2.0).abs() < 0.02 * 2.0, "{a}");
-        }
-        // Zero before and after the ramp, half a window from its kinks
-        // (before 1.75 s, after 7.25 s).
-        let ax = p.drive.ax_samples();
-        assert!(ax[..700].iter().all(|a| a.abs() < 1e-9));
-        assert!(ax[2901..].iter().all(|a| a.abs() < 1e-9));
-        let p = Prepared::new(&run(t, noisy, None), 0.005, 25.0);
-        let m = middle(&p);
-        let mean = m.iter().sum::<f64>() / m.len() as f64;
-        assert!((mean - 2.0).abs() < 0.02 * 2.0, "{mean}");
-        assert!(m.iter().all(|a| (a - 2.0).abs() < 0.2), "{m:?}");
     }
 }

@@ -227,7 +227,7 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // 900 1/s, so RK4 at the log's 20 ms is unstable (its chaos once let
     // the fits "explain" the data). The replay then runs by ROS34PW2 at
     // that step and must match a fine RK4 reference.
-    use crate::diagnose::fit::Prepared;
+    use crate::diagnose::replay::Prepared;
     use crate::measured::MeasuredRun;
     let (front, rear) = crate::diagnose::base::axle_tyres(&crate::diagnose::base::shares(
         9.3 * 1.3 * 3.5,
@@ -328,7 +328,7 @@ fn weave_run() -> crate::measured::MeasuredRun {
 #[test]
 fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
     use crate::diagnose::effects::EffectKind;
-    use crate::diagnose::fit::Prepared;
+    use crate::diagnose::replay::Prepared;
     let run = weave_run();
     let prepared = Prepared::new(&run, 0.01, 25.0);
     let base = Augmented::new(pac89_model(), 1.0);

@@ -95,7 +95,11 @@ impl DiagnoseReport {
         let (gap, over) = (gap_map(&self.diagnosis), overlays(&self.diagnosis));
         gap.save(&files[1])?;
         over.save(&files[2])?;
-        super::diagnose_page::page(self, &gap, &over, &files[3])?.write(
+        let inputs = super::diagnose_page::Inputs {
+            runs: self.runs,
+            run_files: self.run_files,
+        };
+        super::diagnose_page::page(&self.diagnosis, inputs, &gap, &over, &files[3])?.write(
             &format!("Diagnosis of {}", self.diagnosis.campaign),
             &files[3],
         )

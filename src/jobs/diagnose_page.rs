@@ -5,9 +5,9 @@
 //! Values in SI units and radians as in `diagnosis.json`; the figures are
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
-use super::diagnose::DiagnoseReport;
 use crate::diagnose::effects::joined;
 use crate::diagnose::report::{ParameterValue, Part, Ranked};
+use crate::diagnose::Diagnosis;
 use crate::error::Error;
 use crate::report::html::{Cell, Page};
 use crate::report::plot::Figure;
@@ -16,21 +16,34 @@ use std::path::Path;
 /// Cleaning lines shown in full before the rest is counted.
 const CLEANING_LINES: usize = 40;
 
-/// The page of `report`, with its gap map and overlays, to be written to
-/// `path`.
+/// What the page says of the campaign beside the diagnosis.
+#[derive(Debug, Clone, Copy)]
+pub struct Inputs {
+    /// Runs replayed (pieces after cleaning).
+    pub runs: usize,
+    /// Files they came from.
+    pub run_files: usize,
+}
+
+/// The page of diagnosis `d`, with its gap map and overlays, to be written
+/// to `path`.
 pub fn page(
-    report: &DiagnoseReport,
+    d: &Diagnosis,
+    inputs: Inputs,
     gap_map: &Figure,
     overlays: &Figure,
     path: &Path,
 ) -> Result<Page, Error> {
-    let d = &report.diagnosis;
     let mut p = Page::new(&format!("Diagnosis of {}", d.campaign));
     p.paragraph(
         "",
         &format!(
             "{} runs from {} files, {} candidate effects, {} folds, seed {}.",
-            report.runs, report.run_files, report.effects, d.folds, d.seed
+            inputs.runs,
+            inputs.run_files,
+            d.ranking.len(),
+            d.folds,
+            d.seed
         ),
     );
     p.section("verdict", "Verdict")
@@ -59,9 +72,9 @@ pub fn page(
          lateral-acceleration level and the speed band; dashed: 3 × the noise floor.",
         path,
     )?;
-    base(&mut p, report);
-    ranking(&mut p, report);
-    shrinkage(&mut p, report);
+    base(&mut p, d);
+    ranking(&mut p, d);
+    shrinkage(&mut p, d);
     p.figure(
         "overlays",
         overlays,
@@ -69,14 +82,14 @@ pub fn page(
          base model (dashed), with the verdict's effects (solid).",
         path,
     )?;
-    road_and_cleaning(&mut p, report);
+    road_and_cleaning(&mut p, d);
     Ok(p)
 }
 
 /// The base model and, when the axles were identified from the runs, their
 /// values.
-fn base(p: &mut Page, report: &DiagnoseReport) {
-    let b = &report.diagnosis.base;
+fn base(p: &mut Page, d: &Diagnosis) {
+    let b = &d.base;
     p.section("base", "Base model").paragraph("", &b.tyres);
     if let Some(g) = &b.rig_grouping {
         p.lines(&g.lines());
@@ -106,8 +119,7 @@ fn base(p: &mut Page, report: &DiagnoseReport) {
 }
 
 /// Every candidate (singles, then combinations) with its held-out scores.
-fn ranking(p: &mut Page, report: &DiagnoseReport) {
-    let d = &report.diagnosis;
+fn ranking(p: &mut Page, d: &Diagnosis) {
     let rows: Vec<Vec<Cell>> = d
         .ranking
         .iter()
@@ -165,8 +177,7 @@ fn parameter(p: &ParameterValue) -> String {
 }
 
 /// Before and after per channel over all held-out samples.
-fn shrinkage(p: &mut Page, report: &DiagnoseReport) {
-    let d = &report.diagnosis;
+fn shrinkage(p: &mut Page, d: &Diagnosis) {
     let rows: Vec<Vec<Cell>> = d
         .shrinkage
         .iter()
@@ -206,8 +217,7 @@ fn shrinkage(p: &mut Page, report: &DiagnoseReport) {
 }
 
 /// The road under the runs and the cleaning report.
-fn road_and_cleaning(p: &mut Page, report: &DiagnoseReport) {
-    let d = &report.diagnosis;
+fn road_and_cleaning(p: &mut Page, d: &Diagnosis) {
     let road: Vec<String> = d.road.iter().filter_map(|g| g.line()).collect();
     p.section("road", "Road geometry");
     if road.is_empty() {

@@ -5,7 +5,7 @@
 //! value.
 
 use super::colour::colormap;
-use super::plot::{palette, Series, Style, NO_VALUE};
+use super::series::{palette, Series, Style, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -159,85 +159,7 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::plot::{Figure, Panel, SIDE};
     use super::*;
-    use std::path::Path;
-
-    /// The numbers of attribute `attr` of every `<tag` element of an SVG.
-    fn attrs(svg: &str, tag: &str, attr: &str) -> Vec<f64> {
-        svg.split(&format!("<{tag} "))
-            .skip(1)
-            .filter_map(|e| {
-                let e = format!(" {e}");
-                let at = e.find(&format!(" {attr}=\""))? + attr.len() + 3;
-                e[at..].split('"').next()?.parse().ok()
-            })
-            .collect()
-    }
-
-    /// (x, content) of every `<text>` element of an SVG.
-    fn texts(svg: &str) -> Vec<(f64, String)> {
-        svg.split("<text ")
-            .skip(1)
-            .filter_map(|e| {
-                let x = attrs(&format!("<text {e}"), "text", "x").first().copied()?;
-                let body = e.split_once('>')?.1.split("</text>").next()?;
-                Some((x, body.trim().to_string()))
-            })
-            .collect()
-    }
-
-    #[test]
-    fn the_key_sits_beside_the_data_never_over_it() {
-        let x: Vec<f64> = (0..50).map(f64::from).collect();
-        let fig = Figure {
-            width: 900,
-            ..Figure::stack(vec![Panel {
-                series: vec![
-                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
-                    Series::line("base model", &x, &x, 1),
-                ],
-                ..Panel::default()
-            }])
-        };
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let edge = f64::from(900 - SIDE);
-        let circles = attrs(&svg, "circle", "cx");
-        // Every data point left of the key's column, the key's swatch in it.
-        assert_eq!(circles.iter().filter(|&&c| c < edge).count(), 50);
-        assert_eq!(circles.iter().filter(|&&c| c >= edge).count(), 1);
-        let labels: Vec<(f64, String)> = texts(&svg)
-            .into_iter()
-            .filter(|(_, t)| t == "measured" || t == "base model")
-            .collect();
-        assert_eq!(labels.len(), 2, "{svg}");
-        assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
-    }
-
-    #[test]
-    fn a_heat_map_has_a_colour_bar_with_its_unit_scale_ticks_and_missing_cells() {
-        let (x, y) = (vec![0.0, 1.0, 0.0, 1.0], vec![0.0, 0.0, 1.0, 1.0]);
-        let values = vec![1.0, 10.0, 100.0, f64::NAN];
-        let fig = Figure::stack(vec![Panel {
-            series: vec![Series::heat(&x, &y, values, (1.0, 1.0), "TB [s·deg]")],
-            ..Panel::default()
-        }]);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let texts: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
-        for text in [
-            "TB [s·deg]",
-            "log scale",
-            "1.000",
-            "10.0",
-            "100",
-            "no value",
-        ] {
-            assert!(
-                texts.iter().any(|t| t == text),
-                "{text} missing from {texts:?}"
-            );
-        }
-    }
 
     #[test]
     fn labels_wrap_on_words_and_ticks_keep_three_digits() {

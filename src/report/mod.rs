@@ -8,6 +8,7 @@ pub mod html;
 mod legend;
 pub mod plot;
 pub mod progress;
+pub mod series;
 
 use crate::error::Error;
 use std::fs;

@@ -4,6 +4,8 @@
 //! each panel holds line, dashed-line and point series.
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
+pub use super::series::{palette, Series, Style};
+use super::series::{NO_VALUE, SIDE};
 use crate::error::Error;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
@@ -21,90 +23,6 @@ fn ensure_font() {
         plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
             .unwrap_or_else(|_| panic!("embedded font is invalid"));
     });
-}
-
-/// How a series is drawn.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Style {
-    /// Solid line.
-    Line,
-    /// Dashed line.
-    Dashed,
-    /// Filled circles of the given radius (px).
-    Points(u32),
-    /// Separate segments: points 2k and 2k + 1 are joined.
-    Segments,
-    /// Filled rectangles of size (dx, dy) in data units centred on each point,
-    /// in the series colour.
-    Cells(f64, f64),
-    /// As `Cells`, coloured by the series' `values` through its
-    /// [`ColourScale`] on a blue–yellow map, with a colour bar beside the
-    /// panel; cells without a value are drawn light grey.
-    Heat(f64, f64),
-}
-
-/// Width of the column beside a panel that holds its legend and colour bar,
-/// px.
-pub(super) const SIDE: i32 = 200;
-
-/// The fill of a map cell without a value (distinct from every colour of
-/// [`colormap`]).
-pub(super) const NO_VALUE: RGBColor = RGBColor(225, 225, 225);
-
-/// One named series.
-#[derive(Debug, Clone)]
-pub struct Series {
-    /// Legend label (empty: no legend entry).
-    pub label: String,
-    /// x values.
-    pub x: Vec<f64>,
-    /// y values.
-    pub y: Vec<f64>,
-    /// Drawing style.
-    pub style: Style,
-    /// Values for `Style::Heat`.
-    pub values: Option<Vec<f64>>,
-    /// How `values` map to colours (`Style::Heat`), with the quantity's
-    /// name and unit for the colour bar.
-    pub scale: Option<ColourScale>,
-    /// Palette index.
-    pub color: usize,
-}
-
-impl Series {
-    /// A solid line.
-    pub fn line(label: &str, x: &[f64], y: &[f64], color: usize) -> Self {
-        Self {
-            label: label.into(),
-            x: x.to_vec(),
-            y: y.to_vec(),
-            style: Style::Line,
-            color,
-            values: None,
-            scale: None,
-        }
-    }
-    /// A heat map: cells of size (dx, dy) centred on (x, y), coloured by
-    /// `values` through a scale chosen for them ([`ColourScale::fit`]) and
-    /// labelled `label` on its colour bar.
-    pub fn heat(x: &[f64], y: &[f64], values: Vec<f64>, cell: (f64, f64), label: &str) -> Self {
-        let scale = ColourScale::fit(&values, label);
-        Self {
-            label: String::new(),
-            x: x.to_vec(),
-            y: y.to_vec(),
-            style: Style::Heat(cell.0, cell.1),
-            values: Some(values),
-            scale: Some(scale),
-            color: 0,
-        }
-    }
-
-    /// The same series with another style.
-    pub fn styled(mut self, style: Style) -> Self {
-        self.style = style;
-        self
-    }
 }
 
 /// One panel of a figure.
@@ -135,21 +53,6 @@ pub struct Figure {
     pub width: u32,
     /// Height of one row, px.
     pub row_height: u32,
-}
-
-/// Colour of palette index `i`.
-pub fn palette(i: usize) -> RGBColor {
-    const P: [RGBColor; 8] = [
-        RGBColor(31, 119, 180),
-        RGBColor(214, 39, 40),
-        RGBColor(44, 160, 44),
-        RGBColor(255, 127, 14),
-        RGBColor(148, 103, 189),
-        RGBColor(140, 86, 75),
-        RGBColor(23, 190, 207),
-        RGBColor(127, 127, 127),
-    ];
-    P[i % P.len()]
 }
 
 /// Finite min/max with a margin; a flat range is widened.
@@ -344,4 +247,85 @@ where
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The numbers of attribute `attr` of every `<tag` element of an SVG.
+    fn attrs(svg: &str, tag: &str, attr: &str) -> Vec<f64> {
+        svg.split(&format!("<{tag} "))
+            .skip(1)
+            .filter_map(|e| {
+                let e = format!(" {e}");
+                let at = e.find(&format!(" {attr}=\""))? + attr.len() + 3;
+                e[at..].split('"').next()?.parse().ok()
+            })
+            .collect()
+    }
+
+    /// (x, content) of every `<text>` element of an SVG.
+    fn texts(svg: &str) -> Vec<(f64, String)> {
+        svg.split("<text ")
+            .skip(1)
+            .filter_map(|e| {
+                let x = attrs(&format!("<text {e}"), "text", "x").first().copied()?;
+                let body = e.split_once('>')?.1.split("</text>").next()?;
+                Some((x, body.trim().to_string()))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_key_sits_beside_the_data_never_over_it() {
+        let x: Vec<f64> = (0..50).map(f64::from).collect();
+        let fig = Figure {
+            width: 900,
+            ..Figure::stack(vec![Panel {
+                series: vec![
+                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
+                    Series::line("base model", &x, &x, 1),
+                ],
+                ..Panel::default()
+            }])
+        };
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let edge = f64::from(900 - SIDE);
+        let circles = attrs(&svg, "circle", "cx");
+        // Every data point left of the key's column, the key's swatch in it.
+        assert_eq!(circles.iter().filter(|&&c| c < edge).count(), 50);
+        assert_eq!(circles.iter().filter(|&&c| c >= edge).count(), 1);
+        let labels: Vec<(f64, String)> = texts(&svg)
+            .into_iter()
+            .filter(|(_, t)| t == "measured" || t == "base model")
+            .collect();
+        assert_eq!(labels.len(), 2, "{svg}");
+        assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
+    }
+
+    #[test]
+    fn a_heat_map_has_a_colour_bar_with_its_unit_scale_ticks_and_missing_cells() {
+        let (x, y) = (vec![0.0, 1.0, 0.0, 1.0], vec![0.0, 0.0, 1.0, 1.0]);
+        let values = vec![1.0, 10.0, 100.0, f64::NAN];
+        let fig = Figure::stack(vec![Panel {
+            series: vec![Series::heat(&x, &y, values, (1.0, 1.0), "TB [s·deg]")],
+            ..Panel::default()
+        }]);
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let texts: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+        for text in [
+            "TB [s·deg]",
+            "log scale",
+            "1.000",
+            "10.0",
+            "100",
+            "no value",
+        ] {
+            assert!(
+                texts.iter().any(|t| t == text),
+                "{text} missing from {texts:?}"
+            );
+        }
+    }
 }

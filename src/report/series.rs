@@ -1,0 +1,105 @@
+//! What a figure's series are: the data, how each is drawn ([`Style`]) and in
+//! which colour ([`palette`]), shared by the panel drawing
+//! ([`super::plot`]) and its key (the legend column beside each panel).
+
+use super::colour::ColourScale;
+use plotters::style::RGBColor;
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Style {
+    /// Solid line.
+    Line,
+    /// Dashed line.
+    Dashed,
+    /// Filled circles of the given radius (px).
+    Points(u32),
+    /// Separate segments: points 2k and 2k + 1 are joined.
+    Segments,
+    /// Filled rectangles of size (dx, dy) in data units centred on each point,
+    /// in the series colour.
+    Cells(f64, f64),
+    /// As `Cells`, coloured by the series' `values` through its
+    /// [`ColourScale`] on a blue–yellow map, with a colour bar beside the
+    /// panel; cells without a value are drawn light grey.
+    Heat(f64, f64),
+}
+
+/// Width of the column beside a panel that holds its legend and colour bar,
+/// px.
+pub(crate) const SIDE: i32 = 200;
+
+/// The fill of a map cell without a value (distinct from every colour of
+/// [`colormap`]).
+pub(crate) const NO_VALUE: RGBColor = RGBColor(225, 225, 225);
+
+/// One named series.
+#[derive(Debug, Clone)]
+pub struct Series {
+    /// Legend label (empty: no legend entry).
+    pub label: String,
+    /// x values.
+    pub x: Vec<f64>,
+    /// y values.
+    pub y: Vec<f64>,
+    /// Drawing style.
+    pub style: Style,
+    /// Values for `Style::Heat`.
+    pub values: Option<Vec<f64>>,
+    /// How `values` map to colours (`Style::Heat`), with the quantity's
+    /// name and unit for the colour bar.
+    pub scale: Option<ColourScale>,
+    /// Palette index.
+    pub color: usize,
+}
+
+impl Series {
+    /// A solid line.
+    pub fn line(label: &str, x: &[f64], y: &[f64], color: usize) -> Self {
+        Self {
+            label: label.into(),
+            x: x.to_vec(),
+            y: y.to_vec(),
+            style: Style::Line,
+            color,
+            values: None,
+            scale: None,
+        }
+    }
+    /// A heat map: cells of size (dx, dy) centred on (x, y), coloured by
+    /// `values` through a scale chosen for them ([`ColourScale::fit`]) and
+    /// labelled `label` on its colour bar.
+    pub fn heat(x: &[f64], y: &[f64], values: Vec<f64>, cell: (f64, f64), label: &str) -> Self {
+        let scale = ColourScale::fit(&values, label);
+        Self {
+            label: String::new(),
+            x: x.to_vec(),
+            y: y.to_vec(),
+            style: Style::Heat(cell.0, cell.1),
+            values: Some(values),
+            scale: Some(scale),
+            color: 0,
+        }
+    }
+
+    /// The same series with another style.
+    pub fn styled(mut self, style: Style) -> Self {
+        self.style = style;
+        self
+    }
+}
+
+/// Colour of palette index `i`.
+pub fn palette(i: usize) -> RGBColor {
+    const P: [RGBColor; 8] = [
+        RGBColor(31, 119, 180),
+        RGBColor(214, 39, 40),
+        RGBColor(44, 160, 44),
+        RGBColor(255, 127, 14),
+        RGBColor(148, 103, 189),
+        RGBColor(140, 86, 75),
+        RGBColor(23, 190, 207),
+        RGBColor(127, 127, 127),
+    ];
+    P[i % P.len()]
+}

@@ -93,7 +93,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         Manoeuvre::StepSteer(_) => Some(
             sc.integrator
                 .step_metrics(&sc.model, &sc.manoeuvre, &sim, &sc.metrics)
-                .map_err(Error::StepMetrics)?,
+                .map_err(Error::Metrics)?,
         ),
         _ => None,
     };

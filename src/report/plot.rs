@@ -2,7 +2,7 @@
 //! system fonts needed). A [`Figure`] is a stack of panels sharing nothing but
 //! the image; each panel holds line, dashed-line and point series.
 
-use crate::error::Error;
+use crate::error::{Error, OutputError};
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
@@ -185,7 +185,13 @@ impl Figure {
     pub fn save(&self, path: &Path) -> Result<(), Error> {
         ensure_font();
         super::write_atomic(path, |tmp| {
-            self.draw(tmp).map_err(|e| Error::output(path, e))
+            self.draw(tmp).map_err(|e| {
+                OutputError::Draw {
+                    path: path.to_path_buf(),
+                    detail: e.to_string(),
+                }
+                .into()
+            })
         })
     }
 

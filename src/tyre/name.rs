@@ -78,9 +78,14 @@ impl std::fmt::Display for ModelName {
 }
 
 impl std::str::FromStr for ModelName {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        crate::error::by_name(&Self::ALL, ModelName::as_str, "tyre model", s)
+    type Err = crate::error::OptionsError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        crate::error::named(
+            &Self::ALL,
+            ModelName::as_str,
+            crate::error::NameKind::TyreModel,
+            s,
+        )
     }
 }
 

@@ -83,6 +83,22 @@ pub enum ErrorKind {
     Output,
 }
 
+impl ErrorKind {
+    /// The group's name: `input`, `param`, `options`, `fit`, `metrics`,
+    /// `diagnosis`, `output`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ErrorKind::Input => "input",
+            ErrorKind::Param => "param",
+            ErrorKind::Options => "options",
+            ErrorKind::Fit => "fit",
+            ErrorKind::Metrics => "metrics",
+            ErrorKind::Diagnosis => "diagnosis",
+            ErrorKind::Output => "output",
+        }
+    }
+}
+
 impl Error {
     /// The error's group.
     pub fn kind(&self) -> ErrorKind {

@@ -23,6 +23,24 @@ fn place(path: &std::path::Path, at: &Option<Location>) -> String {
     }
 }
 
+/// What is wrong with a CSV cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CellProblem {
+    /// It does not parse as a number.
+    NotANumber,
+    /// It is NaN or infinite.
+    NotFinite,
+}
+
+impl CellProblem {
+    fn describe(self, cell: &str) -> String {
+        match self {
+            CellProblem::NotANumber => format!("`{cell}` is not a number"),
+            CellProblem::NotFinite => format!("{cell} is not a finite value"),
+        }
+    }
+}
+
 /// Errors from reading input files, located in the file.
 #[derive(Debug, Error)]
 #[non_exhaustive]
@@ -56,6 +74,50 @@ pub enum InputError {
         path: PathBuf,
         /// What is wrong.
         message: String,
+    },
+    /// A CSV file without a column the reader needs.
+    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {})", header.join(", "))]
+    MissingColumn {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line of the header.
+        line: usize,
+        /// The column.
+        name: String,
+        /// The header's columns.
+        header: Vec<String>,
+    },
+    /// A CSV row that the CSV reader cannot read.
+    #[error("{path}:{line}:1: malformed CSV row: {source}")]
+    MalformedRow {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// The CSV reader's error.
+        source: csv::Error,
+    },
+    /// A CSV cell that is not a finite number.
+    #[error("{path}:{line}:{column}: column `{name}`: {}", problem.describe(cell))]
+    Cell {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// The column's name.
+        name: String,
+        /// The cell as written.
+        cell: String,
+        /// What is wrong with it.
+        problem: CellProblem,
+    },
+    /// A CSV file with a header and no data row.
+    #[error("{path}: no data rows")]
+    NoRows {
+        /// The file.
+        path: PathBuf,
     },
     /// A value in the file that is not physical: the parameter error, at
     /// its key's place where the key is found.
@@ -102,6 +164,10 @@ impl InputError {
             InputError::Io { path, .. }
             | InputError::At { path, .. }
             | InputError::File { path, .. }
+            | InputError::MissingColumn { path, .. }
+            | InputError::MalformedRow { path, .. }
+            | InputError::Cell { path, .. }
+            | InputError::NoRows { path }
             | InputError::Value { path, .. }
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
@@ -112,10 +178,18 @@ impl InputError {
     /// The place in the file, where known.
     pub fn location(&self) -> Option<Location> {
         match self {
-            InputError::At { line, column, .. } => Some(Location {
-                line: *line,
-                column: *column,
-            }),
+            InputError::MissingColumn { line, .. } | InputError::MalformedRow { line, .. } => {
+                Some(Location {
+                    line: *line,
+                    column: 1,
+                })
+            }
+            InputError::At { line, column, .. } | InputError::Cell { line, column, .. } => {
+                Some(Location {
+                    line: *line,
+                    column: *column,
+                })
+            }
             InputError::Value { at, .. } | InputError::Key { at, .. } => *at,
             _ => None,
         }

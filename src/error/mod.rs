@@ -17,7 +17,7 @@ mod tests;
 
 pub use crate::metrics::MetricsError;
 pub use fit::{DiagnosisError, FitError};
-pub use input::{InputError, Location};
+pub use input::{CellProblem, InputError, Location};
 pub use options::{MergeInput, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};

@@ -32,9 +32,18 @@ fn a_cell_that_is_not_a_number_is_an_input_error_at_its_line_and_column() {
     let e = Error::from(crate::io::rig::read_rig(&p).unwrap_err());
     assert_eq!(e.kind(), ErrorKind::Input);
     match e {
-        Error::Input(InputError::At {
-            path, line, column, ..
-        }) => assert_eq!((path, line, column), (p, 3, 2)),
+        Error::Input(InputError::Cell {
+            path,
+            line,
+            column,
+            name,
+            cell,
+            problem,
+        }) => {
+            assert_eq!((path, line, column), (p, 3, 2));
+            assert_eq!((name.as_str(), cell.as_str()), ("alpha", "abc"));
+            assert_eq!(problem, CellProblem::NotANumber);
+        }
         other => panic!("not an input error at a cell: {other:?}"),
     }
 }

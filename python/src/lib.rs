@@ -42,7 +42,7 @@ create_exception!(
     handling,
     InputError,
     HandlingError,
-    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value."
+    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value (a CSV cell: the column's name and the cell's text)."
 );
 create_exception!(
     handling,

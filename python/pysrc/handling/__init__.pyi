@@ -19,7 +19,8 @@ class HandlingError(Exception):
 
 class InputError(HandlingError):
     """An input file that cannot be read or holds wrong content (``path``,
-    ``line``, ``column``; ``key`` and ``value`` for a wrong value), or a
+    ``line``, ``column``; ``key`` and ``value`` for a wrong value, for a
+    CSV cell the column's name and the cell's text), or a
     wrong scenario or vehicle keyword (``key``, dotted, and ``value``;
     ``path`` and ``line`` None)."""
     path: Optional[str]

@@ -3,11 +3,17 @@
 //! (`handling::jobs::*::run`, `Tyre::evaluate_points`, `Study::evaluate`)
 //! with the GIL released, and hands back its typed report as JSON text
 //! (the Python package parses it into dicts, the CLI's JSON content) and
-//! its arrays as numpy arrays. Errors become the exception hierarchy
-//! `HandlingError` > `InputError` (path, line, column), `ParamError` (key,
-//! value, reason). SI units and radians throughout.
+//! its arrays as numpy arrays. Errors become the exception of their kind
+//! (`Error::kind`): `HandlingError` > `InputError` (path, line, column, key,
+//! value), `ParamError` (key, value, reason), `OptionsError`, `FitError`,
+//! `MetricsError`, `DiagnosisError`, `OutputError` (path where the kind has
+//! one), read from the error's typed fields, never from its message. SI
+//! units and radians throughout.
 
-use handling::error::{Error, InputError as LibInputError};
+use handling::error::{
+    DiagnosisError as LibDiagnosisError, Error, FitError as LibFitError,
+    InputError as LibInputError, OptionsError as LibOptionsError,
+};
 use handling::io::{load_scenario, load_tyre, tir::read_tir_text};
 use handling::jobs;
 use handling::jobs::identify::{IdentifyModel, IdentifyReport, Options, Polish, StartArg};
@@ -20,6 +26,7 @@ use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
 use pyo3::prelude::*;
+use pyo3::IntoPyObjectExt;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -29,13 +36,13 @@ create_exception!(
     handling,
     HandlingError,
     PyException,
-    "Any failure of the handling library (its one `Error` type)."
+    "Any failure of the handling library (its one `Error` type); `kind` names the group."
 );
 create_exception!(
     handling,
     InputError,
     HandlingError,
-    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known."
+    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value (a CSV cell: the column's name and the cell's text)."
 );
 create_exception!(
     handling,
@@ -43,100 +50,145 @@ create_exception!(
     HandlingError,
     "A parameter value that is not physical: `key` (dotted), `value` (a number or None), `reason`."
 );
+create_exception!(
+    handling,
+    OptionsError,
+    HandlingError,
+    "Options that name nothing known or contradict each other: `name`, `known` for an unknown name; `path` where a file is named."
+);
+create_exception!(
+    handling,
+    FitError,
+    HandlingError,
+    "A fit that cannot be made or failed: `path` of the data where known."
+);
+create_exception!(
+    handling,
+    MetricsError,
+    HandlingError,
+    "Step-steer metrics that cannot be computed from a response."
+);
+create_exception!(
+    handling,
+    DiagnosisError,
+    HandlingError,
+    "A diagnosis that could not be made: `path` of the input where known."
+);
+create_exception!(
+    handling,
+    OutputError,
+    HandlingError,
+    "An output that may not or could not be written: `path`."
+);
 
-/// The library's error as a Python exception carrying its file, line, key.
+/// An attribute value for Python.
+fn py_obj<'py, T: IntoPyObject<'py>>(py: Python<'py>, x: T) -> Py<PyAny> {
+    x.into_py_any(py).unwrap_or_else(|_| py.None())
+}
+
+/// The exception class of an error's kind and its attributes (only typed
+/// fields of the error, never its message text).
+fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<PyAny>)>) {
+    let message = e.to_string();
+    let text = |s: &str| py_obj(py, s);
+    let path = |p: &Path| py_obj(py, p.display().to_string());
+    let opt = |n: Option<usize>| n.map_or_else(|| py.None(), |n| py_obj(py, n));
+    let kind = ("kind", text(e.kind().as_str()));
+    let (err, mut attrs): (PyErr, Vec<(&'static str, Py<PyAny>)>) = match e {
+        Error::Param(p) => (
+            ParamError::new_err(message),
+            vec![
+                ("key", text(&p.key)),
+                ("value", p.value.number().map_or_else(|| py.None(), |v| py_obj(py, v))),
+                ("reason", text(&p.reason)),
+            ],
+        ),
+        Error::Input(i) => {
+            let at = i.location();
+            let (key, value, reason) = match i {
+                LibInputError::Value { source: p, .. } => (
+                    text(&p.key),
+                    p.value.number().map_or_else(|| py.None(), |v| py_obj(py, v)),
+                    text(&p.reason),
+                ),
+                LibInputError::Key { key, detail, .. } => (text(key), py.None(), text(detail)),
+                LibInputError::At { message: m, .. } => (py.None(), py.None(), text(m)),
+                LibInputError::Cell { name, cell, .. } => (text(name), text(cell), text(&message)),
+                LibInputError::MissingColumn { name, .. } => (text(name), py.None(), text(&message)),
+                _ => (py.None(), py.None(), text(&message)),
+            };
+            (
+                InputError::new_err(message),
+                vec![
+                    ("path", path(i.path())),
+                    ("line", opt(at.map(|a| a.line))),
+                    ("column", opt(at.map(|a| a.column))),
+                    ("key", key),
+                    ("value", value),
+                    ("reason", reason),
+                ],
+            )
+        }
+        Error::Options(o) => {
+            let mut attrs = Vec::new();
+            match o {
+                LibOptionsError::UnknownName { what, given, known } => {
+                    attrs.push(("what", text(what.as_str())));
+                    attrs.push(("name", text(given)));
+                    attrs.push(("known", py_obj(py, known.clone())));
+                }
+                LibOptionsError::UnknownLocalMethod { given }
+                | LibOptionsError::ShardText { given } => attrs.push(("name", text(given))),
+                LibOptionsError::ShardsDiffer { path: p, .. }
+                | LibOptionsError::ShardUnits { path: p, .. }
+                | LibOptionsError::ShardTwice { path: p, .. }
+                | LibOptionsError::InputChanged { path: p }
+                | LibOptionsError::CampaignsChanged { path: p }
+                | LibOptionsError::MergeCount { path: p, .. } => attrs.push(("path", path(p))),
+                _ => {}
+            }
+            (OptionsError::new_err(message), attrs)
+        }
+        Error::Fit(f) => {
+            let data = match f {
+                LibFitError::NoLateralData { data, .. }
+                | LibFitError::NoData { data }
+                | LibFitError::NoCondition { data, .. }
+                | LibFitError::InData { data, .. } => path(data),
+                _ => py.None(),
+            };
+            (FitError::new_err(message), vec![("path", data)])
+        }
+        Error::Metrics(_) => (MetricsError::new_err(message), Vec::new()),
+        Error::Diagnosis(d) => {
+            let rig = match d {
+                LibDiagnosisError::NoRigCondition { rig } | LibDiagnosisError::RigFit { rig, .. } => {
+                    path(rig)
+                }
+                _ => py.None(),
+            };
+            (DiagnosisError::new_err(message), vec![("path", rig)])
+        }
+        Error::Data { path: p, .. } => (DiagnosisError::new_err(message), vec![("path", path(p))]),
+        Error::Output(o) => (OutputError::new_err(message), vec![("path", path(o.path()))]),
+        _ => (HandlingError::new_err(message), Vec::new()),
+    };
+    attrs.push(kind);
+    (err, attrs)
+}
+
+/// The library's error as the Python exception of its kind, carrying its
+/// typed fields (file, line, key, value) as attributes.
 fn py_err(e: Error) -> PyErr {
     Python::attach(|py| {
-        let message = e.to_string();
-        let set = |err: &PyErr, attrs: &[(&str, Py<PyAny>)]| {
-            let v = err.value(py);
-            for (k, x) in attrs {
-                // Setting an attribute on a fresh exception instance cannot
-                // fail short of memory exhaustion.
-                let _ = v.setattr(*k, x);
-            }
-        };
-        let obj = |x: Bound<'_, PyAny>| x.unbind();
-        let none = || py.None();
-        let path = |p: &Path| {
-            p.display()
-                .to_string()
-                .into_pyobject(py)
-                .map(|s| s.into_any().unbind())
-                .unwrap_or_else(|_| py.None())
-        };
-        let int = |n: usize| {
-            n.into_pyobject(py)
-                .map(|s| s.into_any().unbind())
-                .unwrap_or_else(|_| py.None())
-        };
-        let text = |s: &str| {
-            s.into_pyobject(py)
-                .map(|s| s.into_any().unbind())
-                .unwrap_or_else(|_| py.None())
-        };
-        match &e {
-            Error::Param(p) => {
-                let err = ParamError::new_err(message);
-                let value = match p.value.number() {
-                    Some(v) => v
-                        .into_pyobject(py)
-                        .map(|x| obj(x.into_any()))
-                        .unwrap_or_else(|_| none()),
-                    None => none(),
-                };
-                set(
-                    &err,
-                    &[
-                        ("key", text(&p.key)),
-                        ("value", value),
-                        ("reason", text(&p.reason)),
-                    ],
-                );
-                err
-            }
-            Error::Input(LibInputError::At {
-                path: p,
-                line,
-                column,
-                message: m,
-            }) => {
-                let err = InputError::new_err(message);
-                set(
-                    &err,
-                    &[
-                        ("path", path(p)),
-                        ("line", int(*line)),
-                        ("column", int(*column)),
-                        ("reason", text(m)),
-                    ],
-                );
-                err
-            }
-            Error::Input(LibInputError::Io { path: p, .. })
-            | Error::Input(LibInputError::File { path: p, .. }) => {
-                let err = InputError::new_err(message);
-                set(
-                    &err,
-                    &[
-                        ("path", path(p)),
-                        ("line", none()),
-                        ("column", none()),
-                        ("reason", text(&e.to_string())),
-                    ],
-                );
-                err
-            }
-            Error::Data { path: p, .. }
-            | Error::Overwrite { path: p }
-            | Error::Exists { path: p, .. }
-            | Error::Output { path: p, .. } => {
-                let err = HandlingError::new_err(message);
-                set(&err, &[("path", path(p))]);
-                err
-            }
-            _ => HandlingError::new_err(message),
+        let (err, attrs) = py_class_attrs(py, &e);
+        let v = err.value(py);
+        for (k, x) in attrs {
+            // Setting an attribute on a fresh exception instance cannot
+            // fail short of memory exhaustion.
+            let _ = v.setattr(k, x);
         }
+        err
     })
 }
 
@@ -690,6 +742,11 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("HandlingError", py.get_type::<HandlingError>())?;
     m.add("InputError", py.get_type::<InputError>())?;
     m.add("ParamError", py.get_type::<ParamError>())?;
+    m.add("OptionsError", py.get_type::<OptionsError>())?;
+    m.add("FitError", py.get_type::<FitError>())?;
+    m.add("MetricsError", py.get_type::<MetricsError>())?;
+    m.add("DiagnosisError", py.get_type::<DiagnosisError>())?;
+    m.add("OutputError", py.get_type::<OutputError>())?;
     m.add_class::<PyTyre>()?;
     m.add_class::<PyStudy>()?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;

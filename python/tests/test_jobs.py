@@ -97,13 +97,38 @@ def test_identify_gim_recovers_its_tyre(root, tmp_path):
     assert (tmp_path / "fit.toml").exists()
     fit = r["tyre"].forces(fz, 0.0, a)["fy"]
     assert np.max(np.abs(fit - fy)) < 0.01 * np.max(np.abs(fy))
-    with pytest.raises(handling.HandlingError, match="pac2002"):
+    with pytest.raises(handling.OptionsError) as e:
         handling.identify(p, "pac2002")
+    assert e.value.kind == "options" and e.value.what == "tyre model"
+    assert e.value.name == "pac2002" and "gim" in e.value.known
+    assert isinstance(e.value, handling.HandlingError)
+
+
+def test_pac89_on_one_load_is_a_fit_error_naming_the_data(root, tmp_path):
+    t = handling.Tyre.load(root / "tyres" / "gim.toml")
+    a = np.radians(np.linspace(-12, 12, 41))
+    fz = np.full_like(a, 4000.0)
+    fy = t.forces(fz, 0.0, a)["fy"]
+    p = tmp_path / "one_load.csv"
+    np.savetxt(p, np.column_stack([fz, a, fy]), delimiter=",", header="fz,alpha,fy", comments="", fmt="%.17g")
+    with pytest.raises(handling.FitError) as e:
+        handling.identify(p, "pac89", seed=1)
+    assert e.value.kind == "fit" and e.value.path == str(p)
+
+
+def test_a_text_cell_in_rig_data_is_an_input_error_naming_column_and_cell(tmp_path):
+    p = tmp_path / "rig.csv"
+    p.write_text("fz,alpha,fy\n4000,0.01,-900\n4000,abc,-1800\n")
+    with pytest.raises(handling.InputError) as e:
+        handling.identify(p, "gim", seed=1)
+    assert (e.value.path, e.value.line, e.value.column) == (str(p), 3, 2)
+    assert (e.value.key, e.value.value) == ("alpha", "abc")
 
 
 def test_diagnose_missing_campaign_is_input_error(tmp_path):
-    with pytest.raises(handling.HandlingError):
+    with pytest.raises(handling.InputError) as e:
         handling.diagnose(tmp_path / "nothing")
+    assert e.value.kind == "input" and str(tmp_path / "nothing") in e.value.path
 
 
 def test_synth_writes_a_campaign(tmp_path):
@@ -116,5 +141,9 @@ def test_synth_drives_the_oval_with_ax_and_bank_channels(tmp_path):
     assert r["programme"] == "oval" and r["runs"] == 3
     header = (tmp_path / "o" / "runs" / "oval_stop_on_banking.csv").read_text().splitlines()[0]
     assert header == "t,speed,steer,yaw_rate,ay,ax,bank"
-    with pytest.raises(handling.HandlingError, match="unknown programme `ovals`"):
+    with pytest.raises(handling.OptionsError, match="unknown programme `ovals`") as e:
         handling.synth(tmp_path / "x", [], programme="ovals")
+    assert e.value.what == "programme" and e.value.name == "ovals" and "oval" in e.value.known
+    with pytest.raises(handling.OutputError) as e:
+        handling.synth(tmp_path / "o", [], seed=2, programme="oval")
+    assert e.value.kind == "output" and e.value.path == str(tmp_path / "o")

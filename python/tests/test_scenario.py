@@ -99,8 +99,10 @@ def test_written_scenario_runs_on_the_cli_path_to_the_same_result(root, tmp_path
 def test_a_bad_keyword_is_an_input_error_naming_key_and_value(root, changes, key, value):
     with pytest.raises(handling.InputError) as e:
         handling.simulate(**sedan_step(root, **changes))
-    assert e.value.key == key and e.value.value == value
+    assert e.value.key == key and e.value.value == value and e.value.kind == "input"
     assert f"`{key}` = {value!r}" in str(e.value)
+    # The reason is the reader's own, without the key and value again.
+    assert f"`{key}`" not in e.value.reason
     assert e.value.path is None and e.value.line is None
     # The same keywords are refused by Scenario and metrics alike.
     with pytest.raises(handling.InputError, match=key.replace(".", r"\.")):
@@ -144,5 +146,5 @@ def test_scenario_pickles_whole_and_compares_by_value(root):
 
 def test_metrics_of_a_non_step_manoeuvre_is_refused(root):
     sine = dict(kind="sine", speed=20.0, amplitude=0.02, frequency=0.5, start=1.0, end=4.0)
-    with pytest.raises(handling.HandlingError, match="not a step steer"):
+    with pytest.raises(handling.OptionsError, match="not a step steer"):
         handling.metrics(**sedan_step(root, manoeuvre=sine))

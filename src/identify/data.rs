@@ -12,7 +12,6 @@
 
 use crate::tyre::{SlipState, Tyre};
 use serde::Serialize;
-use thiserror::Error;
 
 /// Rig samples.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -219,25 +218,10 @@ pub struct Condition {
     pub points: Vec<RigPoint>,
 }
 
-/// Why identification cannot use the rig data it was given.
-#[derive(Debug, Clone, PartialEq, Error)]
-#[non_exhaustive]
-pub enum RigError {
-    /// Too few test conditions for a method.
-    #[error("{method} needs at least {needed} test conditions; the data have {have}")]
-    TooFewConditions {
-        /// The method.
-        method: &'static str,
-        /// Conditions it needs.
-        needed: usize,
-        /// Conditions in the data.
-        have: usize,
-    },
-    /// No stage of a staged identification had the rows it needs; each
-    /// stage's reason.
-    #[error("no stage could be fitted ({})", .0.join("; "))]
-    NoStageFitted(Vec<String>),
-}
+/// Why identification cannot use the rig data it was given: the fit
+/// errors of [`crate::error::FitError`]. Transitional name, kept while
+/// `identify::mf_staged` still names it.
+pub type RigError = crate::error::FitError;
 
 /// Zhang & Li's (2017) test points generated from a known tyre: loads 2800 / 5700 /
 /// 8600 N, slip angles 0 … ±12.0321° in 0.2865° steps (85 per load), camber

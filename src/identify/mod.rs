@@ -21,7 +21,7 @@ pub mod grouping;
 pub mod mf_staged;
 pub mod pac89_two_stage;
 
-use crate::error::Error;
+use crate::error::{Error, FitError, OptionsError};
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{stats, Inertia, Pso};
 use crate::tyre::{Identification, ModelName, Parameterised, Tyre, TyreModel};
@@ -325,12 +325,12 @@ pub fn fit_channel(
     let free = free_parameters(start, channel, conditions)?;
     let problem = FitProblem::for_channel(start, channel, &free, conditions);
     if problem.count() <= problem.free.len() {
-        return Err(Error::Fit(format!(
-            "{} points with a measured {} cannot fit {} parameters",
-            problem.count(),
-            channel.quantity(),
-            problem.free.len()
-        )));
+        return Err(FitError::TooFewPoints {
+            points: problem.count(),
+            quantity: channel.quantity(),
+            parameters: problem.free.len(),
+        }
+        .into());
     }
     let all_bounds = channel.bounds(start);
     let start_all = channel.parameters(start);
@@ -385,11 +385,11 @@ fn free_parameters(
     conditions: &[Condition],
 ) -> Result<Vec<bool>, Error> {
     if channel.names(start).is_empty() {
-        return Err(Error::Fit(format!(
-            "the {} model has no {} to fit",
-            start.model_name(),
-            channel.quantity()
-        )));
+        return Err(FitError::NothingToFit {
+            model: start.model_name(),
+            quantity: channel.quantity(),
+        }
+        .into());
     }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.sort_by(f64::total_cmp);
@@ -398,13 +398,12 @@ fn free_parameters(
     cambers.sort_by(f64::total_cmp);
     cambers.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
     if loads.len() < start.loads_needed() {
-        return Err(Error::Fit(format!(
-            "the {} model's load dependence needs at least {} loads; the data has {} ({:?} N)",
-            start.model_name(),
-            start.loads_needed(),
-            loads.len(),
-            loads.iter().map(|l| l.round()).collect::<Vec<_>>()
-        )));
+        return Err(FitError::TooFewLoads {
+            model: start.model_name(),
+            needed: start.loads_needed(),
+            loads,
+        }
+        .into());
     }
     Ok(channel.free(start, loads.len(), cambers.len()))
 }
@@ -513,11 +512,13 @@ mod tests;
 pub fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
     model.start_tyre(fz).ok_or_else(|| {
         Error::Options(match model.identification() {
-            Identification::Staged(names) => format!(
-                "the {model} model is identified by its staged fit ({})",
-                names.join(" or ")
-            ),
-            _ => format!("the {model} model is not identified from rig data"),
+            Identification::Staged(fits) => OptionsError::StagedFitOnly {
+                model: model.to_string(),
+                fits: fits.to_vec(),
+            },
+            _ => OptionsError::NotIdentified {
+                model: model.to_string(),
+            },
         })
     })
 }

@@ -11,8 +11,9 @@
 //! Camber terms are held at zero with one camber level. An optional final
 //! joint polish fits a0..a13 to all the raw data from the stage-2 values.
 
-use super::data::{Condition, RigError, RigPoint};
+use super::data::{Condition, RigPoint};
 use super::{sigma, FitSettings};
+use crate::error::FitError;
 use crate::optim::local::{levenberg_marquardt, Residuals};
 use crate::optim::Pso;
 use crate::tyre::pac89::{CurveCoefficients, Pac89, Pac89Form};
@@ -121,9 +122,9 @@ fn tyre(a: [f64; 14]) -> Tyre {
 }
 
 /// Runs both stages (and the joint polish) on the conditions.
-pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, RigError> {
+pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoStage, FitError> {
     if conditions.len() < 3 {
-        return Err(RigError::TooFewConditions {
+        return Err(FitError::TooFewConditions {
             method: "two-stage PAC89",
             needed: 3,
             have: conditions.len(),

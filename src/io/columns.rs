@@ -3,7 +3,7 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
-use crate::error::InputError;
+use crate::error::{CellProblem, InputError};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -82,14 +82,11 @@ pub fn read_columns(
         match headers.iter().position(|h| h == *name) {
             Some(i) => wanted.push((i, name.to_string())),
             None if required.contains(name) => {
-                return Err(InputError::At {
+                return Err(InputError::MissingColumn {
                     path: path.to_path_buf(),
                     line: headers.position().map_or(1, |p| p.line() as usize),
-                    column: 1,
-                    message: format!(
-                        "missing required column `{name}` (the header has: {})",
-                        headers.iter().collect::<Vec<_>>().join(", ")
-                    ),
+                    name: name.to_string(),
+                    header: headers.iter().map(str::to_string).collect(),
                 })
             }
             None => {}
@@ -103,34 +100,35 @@ pub fn read_columns(
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {
             let line = e.position().map_or(0, |p| p.line() as usize);
-            InputError::At {
+            InputError::MalformedRow {
                 path: path.to_path_buf(),
                 line,
-                column: 1,
-                message: format!("malformed CSV row: {e}"),
+                source: e,
             }
         })?;
         let line = rec.position().map_or(0, |p| p.line() as usize);
         for (idx, name) in &wanted {
             let cell = rec.get(*idx).unwrap_or("");
-            let at = |message: String| InputError::At {
+            let at = |problem| InputError::Cell {
                 path: path.to_path_buf(),
                 line,
                 column: idx + 1,
-                message,
+                name: name.clone(),
+                cell: cell.to_string(),
+                problem,
             };
-            let v: f64 = cell
-                .parse()
-                .map_err(|_| at(format!("column `{name}`: `{cell}` is not a number")))?;
+            let v: f64 = cell.parse().map_err(|_| at(CellProblem::NotANumber))?;
             if !v.is_finite() {
-                return Err(at(format!("column `{name}`: {cell} is not a finite value")));
+                return Err(at(CellProblem::NotFinite));
             }
             out.data.get_mut(name).expect("inserted above").push(v);
         }
         out.lines.push(line);
     }
     if out.is_empty() {
-        return Err(file_err("no data rows".into()));
+        return Err(InputError::NoRows {
+            path: path.to_path_buf(),
+        });
     }
     Ok(out)
 }

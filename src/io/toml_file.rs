@@ -2,7 +2,7 @@
 //! with toml's own span, value errors found after parsing (a negative mass)
 //! are located by looking the key path up in the document's spans.
 
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, Location, ParamError};
 use serde::de::DeserializeOwned;
 use std::path::{Path, PathBuf};
 
@@ -59,11 +59,15 @@ impl TomlSource {
         });
         // A value of the wrong type: toml's message names the value, the
         // key is named here.
-        let message = match span.as_ref().and_then(|s| self.key_of_value_at(s.start)) {
-            Some(key) => format!("`{key}`: {message}"),
-            None => message,
-        };
-        self.located(span, message)
+        match span.as_ref().and_then(|s| self.key_of_value_at(s.start)) {
+            Some(key) => InputError::Key {
+                path: self.path.clone(),
+                at: span.map(|s| self.location(s.start)),
+                key,
+                detail: message,
+            },
+            None => self.located(span, message),
+        }
     }
 
     /// The dotted path of the key whose value starts at byte `pos`.
@@ -149,8 +153,17 @@ impl TomlSource {
 
     /// A located error for a value that failed validation.
     pub fn value_error(&self, e: &ParamError) -> InputError {
-        let message = e.to_string();
-        self.located(self.key_span(&e.key), message)
+        InputError::Value {
+            path: self.path.clone(),
+            at: self.key_span(&e.key).map(|s| self.location(s.start)),
+            source: e.clone(),
+        }
+    }
+
+    /// The line and column of byte `pos`.
+    fn location(&self, pos: usize) -> Location {
+        let (line, column) = line_col(&self.text, pos);
+        Location { line, column }
     }
 
     /// An error at `span` of this file, or of the whole file without one.

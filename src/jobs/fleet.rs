@@ -10,7 +10,7 @@
 use super::diagnose::{self, DiagnoseReport};
 use super::shard::{read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport};
 use crate::diagnose::effects::{joined, EffectKind};
-use crate::error::{Error, InputError};
+use crate::error::{Error, InputError, OptionsError};
 use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json};
 use serde::{Deserialize, Serialize};
@@ -76,10 +76,10 @@ pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
         .collect();
     out.sort();
     if out.is_empty() {
-        return Err(Error::Data {
+        return Err(InputError::NoCampaign {
             path: dir.to_path_buf(),
-            message: "no campaign in the folder (sub-folders or .toml files)".into(),
-        });
+        }
+        .into());
     }
     Ok(out)
 }
@@ -182,10 +182,7 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
     let now: Vec<String> = campaigns(&dir)?.iter().map(|p| name_of(p)).collect();
     let listed: Vec<&String> = rows.iter().map(|r| &r.campaign).collect();
     if now.iter().collect::<Vec<_>>() != listed {
-        return Err(Error::Options(format!(
-            "{}: its campaigns changed since the shards were run; run them again",
-            dir.display()
-        )));
+        return Err(OptionsError::CampaignsChanged { path: dir }.into());
     }
     let out_dir = out.map_or_else(
         || PathBuf::from("out").join(name_of(&dir)),

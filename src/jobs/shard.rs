@@ -10,7 +10,7 @@
 //! its absolute path (so the merge runs from any working directory); the
 //! merge refuses shards of different runs and inputs that changed since.
 
-use crate::error::{Error, InputError};
+use crate::error::{Error, InputError, OptionsError, ShardField};
 use crate::report::write_json;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
@@ -29,9 +29,7 @@ impl Shard {
     /// Shard `index` of `count`, checked: 1 ≤ K ≤ N.
     pub fn new(index: usize, count: usize) -> Result<Self, Error> {
         if index == 0 || index > count {
-            return Err(Error::Options(format!(
-                "shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8"
-            )));
+            return Err(OptionsError::ShardOutOfRange { index, count }.into());
         }
         Ok(Self { index, count })
     }
@@ -63,9 +61,9 @@ impl std::str::FromStr for Shard {
     /// `K/N` with 1 ≤ K ≤ N.
     fn from_str(s: &str) -> Result<Self, Error> {
         let bad = || {
-            Error::Options(format!(
-                "shard `{s}`: expected K/N with 1 ≤ K ≤ N, e.g. 3/8"
-            ))
+            Error::Options(OptionsError::ShardText {
+                given: s.to_string(),
+            })
         };
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
         let (index, count): (usize, usize) = (
@@ -248,60 +246,56 @@ pub fn read_shards<T: DeserializeOwned>(
         .map(|p| read_json(p))
         .collect::<Result<_, _>>()?;
     let Some(first) = files.first() else {
-        return Err(Error::Options("merge: no shard files given".into()));
+        return Err(OptionsError::NoShards.into());
     };
     let count = first.shard.count;
     let mut seen = vec![false; count];
     for (f, p) in files.iter().zip(paths) {
-        let differ = |what: &str| {
-            Error::Options(format!(
-                "{}: {what} differs from {}'s: shards of different runs",
-                p.display(),
-                paths[0].display()
-            ))
+        let differ = |field: ShardField| {
+            Error::Options(OptionsError::ShardsDiffer {
+                path: p.clone(),
+                first: paths[0].clone(),
+                field,
+            })
         };
         if f.job != job {
-            return Err(differ("the job"));
+            return Err(differ(ShardField::Job));
         }
         if f.input != first.input || f.inputs != first.inputs {
-            return Err(differ("the input"));
+            return Err(differ(ShardField::Input));
         }
         if f.shard.count != count || f.units != first.units {
-            return Err(differ("the shard count"));
+            return Err(differ(ShardField::Count));
         }
         if f.owned != f.shard.units(f.units) || f.results.len() != f.owned.len() {
-            return Err(Error::Options(format!(
-                "{}: its results are not shard {}'s units",
-                p.display(),
-                f.shard
-            )));
+            return Err(OptionsError::ShardUnits {
+                path: p.clone(),
+                index: f.shard.index,
+                count: f.shard.count,
+            }
+            .into());
         }
         if std::mem::replace(&mut seen[f.shard.index - 1], true) {
-            return Err(Error::Options(format!(
-                "{}: shard {} given twice",
-                p.display(),
-                f.shard
-            )));
+            return Err(OptionsError::ShardTwice {
+                path: p.clone(),
+                index: f.shard.index,
+                count: f.shard.count,
+            }
+            .into());
         }
     }
-    let missing: Vec<String> = (1..=count)
-        .filter(|k| !seen[k - 1])
-        .map(|k| format!("{k}/{count}"))
-        .collect();
+    let missing: Vec<usize> = (1..=count).filter(|k| !seen[k - 1]).collect();
     if !missing.is_empty() {
-        return Err(Error::Options(format!(
-            "merge: shards {} missing",
-            missing.join(", ")
-        )));
+        return Err(OptionsError::ShardsMissing { missing, count }.into());
     }
     // A folder's copy is its listing, which the job checks itself.
     for c in first.inputs.iter().filter(|c| !c.path.is_dir()) {
         let now = std::fs::read_to_string(&c.path).unwrap_or_default();
         if now != c.text {
-            return Err(Error::Options(format!(
-                "{}: changed since the shards were run; run them again",
-                c.path.display()
-            )));
+            return Err(OptionsError::InputChanged {
+                path: c.path.clone(),
+            }
+            .into());
         }
     }
     let (input, units) = (first.input.clone(), first.units);

@@ -92,7 +92,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         // the tolerance), from the rows under RK4.
         Manoeuvre::StepSteer(_) => Some(
             simulated_step_metrics(&sc.integrator, &sc.model, &sc.manoeuvre, &sim, &sc.metrics)
-                .map_err(Error::StepMetrics)?,
+                .map_err(Error::Metrics)?,
         ),
         _ => None,
     };

@@ -6,7 +6,7 @@
 
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Synthetic, Truth};
-use crate::error::Error;
+use crate::error::{Error, NameKind, OptionsError, OutputError, WriteStep};
 use crate::report::{create_dir, write_bytes, write_columns};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -24,11 +24,12 @@ impl std::str::FromStr for EffectName {
         EffectKind::from_name(s)
             .map(|k| EffectName(Some(k)))
             .ok_or_else(|| {
-                let all: Vec<&str> = EffectKind::ALL.iter().map(|k| k.name()).collect();
-                Error::Options(format!(
-                    "unknown effect `{s}`: one of none, {}",
-                    all.join(", ")
-                ))
+                let names = EffectKind::ALL.iter().map(|k| k.name());
+                Error::Options(OptionsError::UnknownName {
+                    what: NameKind::Effect,
+                    given: s.to_string(),
+                    known: std::iter::once("none").chain(names).collect(),
+                })
             })
     }
 }
@@ -36,8 +37,11 @@ impl std::str::FromStr for EffectName {
 /// The truth named `name` (`augmented` or `four-wheel`).
 pub fn truth_named(name: &str) -> Result<Truth, Error> {
     Truth::from_name(name).ok_or_else(|| {
-        let all: Vec<&str> = Truth::ALL.iter().map(|t| t.name()).collect();
-        Error::Options(format!("unknown truth `{name}`: one of {}", all.join(", ")))
+        Error::Options(OptionsError::UnknownName {
+            what: NameKind::Truth,
+            given: name.to_string(),
+            known: Truth::ALL.iter().map(|t| t.name()).collect(),
+        })
     })
 }
 
@@ -82,22 +86,20 @@ pub fn run(
     truth.drives(programme)?;
     for k in kinds {
         let values = truth.values(programme, k).ok_or_else(|| {
-            let all: Vec<&str> = truth.effects(programme).iter().map(|k| k.name()).collect();
-            Error::Options(format!(
-                "effect `{}`: not one the {} truth's {} programme can show: one of none, {}",
-                k.name(),
-                truth.name(),
-                programme.name(),
-                all.join(", ")
-            ))
+            Error::Options(OptionsError::EffectNotShown {
+                effect: k.name(),
+                truth: truth.name(),
+                programme: programme.name(),
+                known: truth.effects(programme).iter().map(|k| k.name()).collect(),
+            })
         })?;
         spec.effects.push((k, values));
     }
     if out.exists() {
-        return Err(Error::Exists {
+        return Err(OutputError::CampaignExists {
             path: out.to_path_buf(),
-            why: "synth writes a new campaign folder and does not overwrite one".into(),
-        });
+        }
+        .into());
     }
     let s = generate_with(&spec, truth)?;
     Ok(SynthReport {
@@ -129,7 +131,7 @@ impl SynthReport {
             let _ = std::fs::remove_dir_all(&tmp);
             return Err(e);
         }
-        std::fs::rename(&tmp, out).map_err(|e| Error::output(out, format!("cannot create: {e}")))
+        std::fs::rename(&tmp, out).map_err(|e| OutputError::io(out, WriteStep::Create, e).into())
     }
 
     /// The closing line.

@@ -10,7 +10,7 @@ pub mod plot;
 pub mod progress;
 pub mod series;
 
-use crate::error::Error;
+use crate::error::{Error, OutputError, WriteStep};
 use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -29,7 +29,7 @@ fn temp_path(path: &Path) -> PathBuf {
 
 /// Creates `dir` and its parents.
 pub fn create_dir(dir: &Path) -> Result<(), Error> {
-    fs::create_dir_all(dir).map_err(|e| Error::output(dir, format!("cannot create: {e}")))
+    fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, WriteStep::Create, e).into())
 }
 
 /// Writes through `fill` into a temporary file, then renames it to `path`.
@@ -40,13 +40,13 @@ pub fn write_atomic(
     if let Some(dir) = path.parent() {
         if !dir.as_os_str().is_empty() {
             fs::create_dir_all(dir)
-                .map_err(|e| Error::output(dir, format!("cannot create folder: {e}")))?;
+                .map_err(|e| OutputError::io(dir, WriteStep::CreateFolder, e))?;
         }
     }
     let tmp = temp_path(path);
     let result = fill(&tmp).and_then(|()| {
         fs::rename(&tmp, path)
-            .map_err(|e| Error::output(path, format!("cannot move into place: {e}")))
+            .map_err(|e| OutputError::io(path, WriteStep::MoveIntoPlace, e).into())
     });
     if result.is_err() {
         let _ = fs::remove_file(&tmp);
@@ -58,16 +58,16 @@ pub fn write_atomic(
 pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     write_atomic(path, |tmp| {
         let mut f =
-            fs::File::create(tmp).map_err(|e| Error::output(tmp, format!("cannot create: {e}")))?;
+            fs::File::create(tmp).map_err(|e| OutputError::io(tmp, WriteStep::Create, e))?;
         f.write_all(bytes)
             .and_then(|()| f.sync_all())
-            .map_err(|e| Error::output(path, e))
+            .map_err(|e| OutputError::io(path, WriteStep::Write, e).into())
     })
 }
 
 /// Writes a value as pretty JSON, its fields in their declared order.
 pub fn write_json<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Error> {
-    let mut text = serde_json::to_string_pretty(value).map_err(|e| Error::output(path, e))?;
+    let mut text = serde_json::to_string_pretty(value).map_err(|e| OutputError::encode(path, e))?;
     text.push('\n');
     write_bytes(path, text.as_bytes())
 }
@@ -76,7 +76,7 @@ pub fn write_json<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Err
 /// alphabetical order: the layout of the reports that are read back as
 /// generic JSON trees.
 pub fn write_json_sorted<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Error> {
-    let tree = serde_json::to_value(value).map_err(|e| Error::output(path, e))?;
+    let tree = serde_json::to_value(value).map_err(|e| OutputError::encode(path, e))?;
     write_json(path, &tree)
 }
 
@@ -88,24 +88,24 @@ where
     R: IntoIterator<Item = C>,
     C: IntoIterator<Item = String>,
 {
-    let fail = |e: csv::Error| Error::output(path, e);
+    let fail = |e: csv::Error| OutputError::encode(path, e);
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(header).map_err(fail)?;
     for row in rows {
         let row: Vec<String> = row.into_iter().collect();
         if row.len() != header.len() {
-            return Err(Error::output(
-                path,
-                format!(
-                    "a row of {} cells under {} columns",
-                    row.len(),
-                    header.len()
-                ),
-            ));
+            return Err(OutputError::RowLength {
+                path: path.to_path_buf(),
+                cells: row.len(),
+                columns: header.len(),
+            }
+            .into());
         }
         w.write_record(&row).map_err(fail)?;
     }
-    let bytes = w.into_inner().map_err(|e| Error::output(path, e))?;
+    let bytes = w
+        .into_inner()
+        .map_err(|e| OutputError::encode(path, e.into_error()))?;
     write_bytes(path, &bytes)
 }
 
@@ -113,7 +113,10 @@ where
 pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Error> {
     let n = columns.first().map_or(0, |c| c.1.len());
     if columns.iter().any(|c| c.1.len() != n) {
-        return Err(Error::output(path, "columns of unequal length"));
+        return Err(OutputError::UnequalColumns {
+            path: path.to_path_buf(),
+        }
+        .into());
     }
     let header: Vec<&str> = columns.iter().map(|c| c.0).collect();
     let rows = (0..n).map(|i| columns.iter().map(move |c| format!("{}", c.1[i])));
@@ -128,10 +131,11 @@ pub fn refuse_overwrite(out: &Path, inputs: &[PathBuf]) -> Result<(), Error> {
     while let Some(p) = above.filter(|p| !p.as_os_str().is_empty()) {
         if p.exists() {
             if !p.is_dir() {
-                return Err(Error::output(
-                    out,
-                    format!("cannot write: {} is a file, not a folder", p.display()),
-                ));
+                return Err(OutputError::NotAFolder {
+                    path: out.to_path_buf(),
+                    file: p.to_path_buf(),
+                }
+                .into());
             }
             break;
         }
@@ -143,9 +147,10 @@ pub fn refuse_overwrite(out: &Path, inputs: &[PathBuf]) -> Result<(), Error> {
             .iter()
             .any(|i| canon(i).as_deref() == Some(o.as_path()))
         {
-            return Err(Error::Overwrite {
+            return Err(OutputError::Overwrite {
                 path: out.to_path_buf(),
-            });
+            }
+            .into());
         }
     }
     Ok(())
@@ -170,13 +175,20 @@ mod tests {
         let p = dir.path().join("a.csv");
         let r = write_atomic(&p, |tmp| {
             fs::write(tmp, "half").unwrap();
-            Err(Error::output(tmp, "boom"))
+            Err(OutputError::UnequalColumns {
+                path: tmp.to_path_buf(),
+            }
+            .into())
         });
         assert!(r.is_err());
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 0);
         write_columns(&p, &[("t", &[0.0, 1.0]), ("x", &[2.0, 3.5])]).unwrap();
         assert_eq!(fs::read_to_string(&p).unwrap(), "t,x\n0,2\n1,3.5\n");
-        assert!(refuse_overwrite(&p, std::slice::from_ref(&p)).is_err());
+        let e = refuse_overwrite(&p, std::slice::from_ref(&p)).unwrap_err();
+        assert!(
+            matches!(&e, Error::Output(OutputError::Overwrite { path }) if *path == p),
+            "{e}"
+        );
     }
 
     #[test]
@@ -187,6 +199,17 @@ mod tests {
         write_csv(&p, &["a", "kind"], rows).unwrap();
         assert_eq!(fs::read_to_string(&p).unwrap(), "a,kind\n1,stable node\n");
         let short = vec![vec!["1".to_string()]];
-        assert!(write_csv(&p, &["a", "kind"], short).is_err());
+        let e = write_csv(&p, &["a", "kind"], short).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Output(OutputError::RowLength {
+                    cells: 1,
+                    columns: 2,
+                    ..
+                })
+            ),
+            "{e}"
+        );
     }
 }

@@ -6,7 +6,7 @@
 pub use super::colour::{colormap, ColourScale, ScaleKind};
 pub use super::series::{palette, Series, Style};
 use super::series::{NO_VALUE, SIDE};
-use crate::error::Error;
+use crate::error::{Error, OutputError};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -99,7 +99,13 @@ impl Figure {
     pub fn save(&self, path: &Path) -> Result<(), Error> {
         ensure_font();
         super::write_atomic(path, |tmp| {
-            self.draw(tmp).map_err(|e| Error::output(path, e))
+            self.draw(tmp).map_err(|e| {
+                OutputError::Draw {
+                    path: path.to_path_buf(),
+                    detail: e.to_string(),
+                }
+                .into()
+            })
         })
     }
 
@@ -111,7 +117,10 @@ impl Figure {
         {
             let root = SVGBackend::with_string(&mut text, self.size()).into_drawing_area();
             self.draw_on(&root)
-                .map_err(|e| Error::output(for_file, format!("cannot draw a figure: {e}")))?;
+                .map_err(|e| OutputError::Draw {
+                    path: for_file.to_path_buf(),
+                    detail: e.to_string(),
+                })?;
         }
         Ok(text)
     }

@@ -14,7 +14,7 @@
 pub mod inverse;
 pub mod rbf;
 
-use crate::error::{by_name, Error};
+use crate::error::{named, Error, NameKind};
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
@@ -189,7 +189,7 @@ impl std::fmt::Display for Metric {
 impl std::str::FromStr for Metric {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        by_name(&Self::ALL, Metric::name, "metric", s).map_err(Error::Options)
+        named(&Self::ALL, Metric::name, NameKind::Metric, s).map_err(Error::Options)
     }
 }
 
@@ -255,7 +255,7 @@ impl std::str::FromStr for StiffnessUnit {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
         let all = [StiffnessUnit::NPerDeg, StiffnessUnit::NPerRad];
-        by_name(&all, StiffnessUnit::as_str, "unit", s).map_err(Error::Options)
+        named(&all, StiffnessUnit::as_str, NameKind::Unit, s).map_err(Error::Options)
     }
 }
 

@@ -15,7 +15,7 @@ use super::{
     Gim, Identification, Linear, MagicFormula, MagicSimple, Model, ModelName, ModelParameters,
     Pac89, SlipState, TyreModel, UniTire,
 };
-use crate::error::Error;
+use crate::error::{Error, NameKind, OptionsError};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
 use serde::{Deserialize, Serialize, Serializer};
 use std::any::TypeId;
@@ -105,10 +105,7 @@ pub fn register<M: Model>() -> Result<ModelName, Error> {
         .find(|e| e.name().as_str() == M::NAME);
     match taken {
         Some(e) if e.model_type() == TypeId::of::<M>() => Ok(e.name()),
-        Some(_) => Err(Error::Options(format!(
-            "a different tyre model is already registered as `{}`",
-            M::NAME
-        ))),
+        Some(_) => Err(Error::Options(OptionsError::ModelNameTaken { name: M::NAME })),
         None => {
             let entry: &'static Registration<M> = Box::leak(Box::new(Registration::new(|m| {
                 Tyre::Registered(Erased::new(m))
@@ -165,9 +162,9 @@ impl ModelName {
 }
 
 impl std::str::FromStr for ModelName {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        crate::error::by_name(&model_names(), ModelName::as_str, "tyre model", s)
+    type Err = OptionsError;
+    fn from_str(s: &str) -> Result<Self, OptionsError> {
+        crate::error::named(&model_names(), ModelName::as_str, NameKind::TyreModel, s)
     }
 }
 

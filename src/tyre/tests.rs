@@ -410,7 +410,7 @@ fn the_registry_derives_every_list() {
         assert_eq!(swarm, n.start_tyre(3000.0).is_some(), "{n}");
     }
     assert_eq!(&swarm_models()[..5], &consts[..5]);
-    let e = "brush".parse::<ModelName>().unwrap_err();
+    let e = "brush".parse::<ModelName>().unwrap_err().to_string();
     assert!(e.contains("unknown tyre model `brush`"), "{e}");
     assert!(
         e.contains("gim, magic-simple, unitire, pac89, linear, magic-formula"),

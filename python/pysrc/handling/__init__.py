@@ -13,10 +13,18 @@ Scenarios come from files or from keywords (:class:`Scenario`,
 :class:`Vehicle`, and the keywords of :func:`simulate` and
 :func:`metrics`), read by the same reader with the same checks.
 
-Errors are :class:`HandlingError`; an unreadable or wrong input file is
-:class:`InputError` (``path``, ``line``, ``column``), a wrong keyword
-:class:`InputError` too (``key``, ``value``), a non-physical
-parameter :class:`ParamError` (``key``, ``value``, ``reason``).
+Errors are :class:`HandlingError`, one subclass per kind of the library's
+error (``kind`` names it): an unreadable or wrong input file is
+:class:`InputError` (``path``, ``line``, ``column``; ``key``, ``value``
+for a wrong value), a wrong keyword :class:`InputError` too (``key``,
+``value``), a non-physical parameter :class:`ParamError` (``key``,
+``value``, ``reason``), options that name nothing known or contradict
+each other :class:`OptionsError` (``name``, ``known`` for an unknown
+name), a fit that cannot be made :class:`FitError`, step-steer metrics that
+cannot be computed :class:`MetricsError`, a diagnosis that cannot be made
+:class:`DiagnosisError`, an output that cannot be written
+:class:`OutputError` (each with ``path`` where the kind has one). The
+attributes come from the error's typed fields, never from its message.
 """
 
 from __future__ import annotations
@@ -24,14 +32,22 @@ from __future__ import annotations
 import copy
 import json
 import os
-import re
 import tempfile
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _handling
-from ._handling import HandlingError, InputError, ParamError
+from ._handling import (
+    DiagnosisError,
+    FitError,
+    HandlingError,
+    InputError,
+    MetricsError,
+    OptionsError,
+    OutputError,
+    ParamError,
+)
 from ._toml import Document
 
 __version__ = _handling.__version__
@@ -40,6 +56,11 @@ __all__ = [
     "HandlingError",
     "InputError",
     "ParamError",
+    "OptionsError",
+    "FitError",
+    "MetricsError",
+    "DiagnosisError",
+    "OutputError",
     "Tyre",
     "Vehicle",
     "Scenario",
@@ -173,18 +194,17 @@ def _keyword_error(e: InputError, doc: Document, what: str, strip: str = "") -> 
     """The reader's error at a line of a keyword document, as the keyword
     (``key``, dotted) and the value given for it (``value``)."""
     key, value = doc.at(getattr(e, "line", None))
+    # The reader's reason without its key and value (for a wrong value, the
+    # parameter error's own reason), which the message below names.
     reason = getattr(e, "reason", None) or str(e)
     if key is not None and strip and key.startswith(strip):
         key = key[len(strip):]
     if key is None:
         message = f"{what} keywords: {reason}"
     else:
-        # The reader's "`vehicle.mass` = -1: ..." says again what the
-        # keyword and its value say.
-        m = re.match(r"`([^`]*)`(?: = [^:]*)?: ", reason)
-        said = reason[m.end():] if m and m.group(1).endswith(key) else reason
-        message = f"{what} keyword `{key}` = {value!r}: {said}"
+        message = f"{what} keyword `{key}` = {value!r}: {reason}"
     err = InputError(message)
+    err.kind = "input"
     err.key = key
     err.value = value
     err.path = None
@@ -265,6 +285,7 @@ class Vehicle:
         except OSError as e:
             err = InputError(f"{p}: {e.strerror}")
             err.path, err.line, err.column, err.reason = p, None, None, str(e.strerror)
+            err.key, err.value, err.kind = None, None, "input"
             raise err from None
         v = cls.__new__(cls)
         v._p = json.loads(_handling.vehicle_from_toml(text, p))
@@ -706,9 +727,11 @@ def metrics(
             sc = sc.replace(metrics=settings)
         m = simulate(sc, pandas=False)["metrics"]
         if m is None:
-            raise HandlingError(
+            err = OptionsError(
                 f"metrics: scenario `{sc.name}`'s manoeuvre is {sc._kw['manoeuvre'].get('kind')!r}, not a step steer"
             )
+            err.kind = "options"
+            raise err
         return m
     if run is None:
         raise TypeError("metrics: give a measured run (CSV), a Scenario or the scenario keywords")

@@ -12,12 +12,17 @@ ArrayLike = npt.ArrayLike
 __version__: str
 
 class HandlingError(Exception):
-    """Any failure of the handling library."""
+    """Any failure of the handling library; ``kind`` names the group
+    (``input``, ``param``, ``options``, ``fit``, ``metrics``, ``diagnosis``,
+    ``output``)."""
+    kind: str
 
 class InputError(HandlingError):
     """An input file that cannot be read or holds wrong content (``path``,
-    ``line``, ``column``), or a wrong scenario or vehicle keyword (``key``,
-    dotted, and ``value``; ``path`` and ``line`` None)."""
+    ``line``, ``column``; ``key`` and ``value`` for a wrong value, for a
+    CSV cell the column's name and the cell's text), or a
+    wrong scenario or vehicle keyword (``key``, dotted, and ``value``;
+    ``path`` and ``line`` None)."""
     path: Optional[str]
     line: Optional[int]
     column: Optional[int]
@@ -30,6 +35,32 @@ class ParamError(HandlingError):
     key: str
     value: Optional[float]
     reason: str
+
+class OptionsError(HandlingError):
+    """Options that name nothing known or contradict each other: for an
+    unknown name ``what`` (the set), ``name`` and ``known``; ``path`` where
+    a file is named."""
+    what: str
+    name: str
+    known: List[str]
+    path: Optional[str]
+
+class FitError(HandlingError):
+    """A fit that cannot be made or failed (``path`` of the data where
+    known)."""
+    path: Optional[str]
+
+class MetricsError(HandlingError):
+    """Step-steer metrics that cannot be computed from a response."""
+
+class DiagnosisError(HandlingError):
+    """A diagnosis that could not be made (``path`` of the input where
+    known)."""
+    path: Optional[str]
+
+class OutputError(HandlingError):
+    """An output that may not or could not be written (``path``)."""
+    path: str
 
 class Tyre:
     @classmethod

@@ -123,7 +123,7 @@ impl Programme {
 impl std::str::FromStr for Programme {
     type Err = crate::error::Error;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        crate::error::by_name(&Self::ALL, |p| p.name(), "programme", s)
+        crate::error::named(&Self::ALL, |p| p.name(), crate::error::NameKind::Programme, s)
             .map_err(crate::error::Error::Options)
     }
 }

@@ -33,7 +33,7 @@ use super::tables::{check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
-use crate::error::{by_name, InputError, ParamError};
+use crate::error::{named, InputError, NameKind, ParamError};
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
@@ -279,8 +279,10 @@ fn base_tyres(
         };
     let name = spec.model.as_deref().unwrap_or("pac89");
     // The rig fit starts a swarm, which the staged Magic Formula does not.
-    let model = by_name(&swarm_models(), ModelName::as_str, "tyre model", name)
-        .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why)))?;
+    let model =
+        named(&swarm_models(), ModelName::as_str, NameKind::TyreModel, name).map_err(|why| {
+            src.value_error(&ParamError::without_value("tyres.model", &why.to_string()))
+        })?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

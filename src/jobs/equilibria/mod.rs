@@ -10,7 +10,7 @@ use crate::equilibria::bifurcation::Bifurcation;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::{self, SweepResult};
 use crate::equilibria::{exact, FoundBy, SearchBox};
-use crate::error::Error;
+use crate::error::{Error, MergeInput, OptionsError};
 use crate::io::sweep::{load_sweep, Sweep};
 use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
@@ -156,12 +156,13 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<EquilibriaReport,
     let out_dir = output_folder(&sw, out)?;
     let res = sweep::assemble(&sw.model, &sw.grid, lines, sw.report.bifurcations);
     if res.points.len() != sw.grid.len() {
-        return Err(Error::Options(format!(
-            "merge: the shards hold {} conditions, the sweep {} has {}",
-            res.points.len(),
-            input.display(),
-            sw.grid.len()
-        )));
+        return Err(OptionsError::MergeCount {
+            input: MergeInput::Sweep,
+            path: input,
+            held: res.points.len(),
+            expected: sw.grid.len(),
+        }
+        .into());
     }
     Ok(report(sw, res, t0.elapsed().as_secs_f64(), out_dir))
 }

@@ -4,7 +4,7 @@
 //! Magic Formula fit starts. Each parses from its command-line name and
 //! lists its names, so the command line and Python take them as text.
 
-use crate::error::Error;
+use crate::error::{named, Error, NameKind, OptionsError};
 use crate::identify::LocalMethod;
 use crate::tyre::{models, Identification, ModelName};
 use serde::Serialize;
@@ -74,8 +74,7 @@ impl std::fmt::Display for IdentifyModel {
 impl std::str::FromStr for IdentifyModel {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        crate::error::by_name(&Self::all(), IdentifyModel::as_str, "tyre model", s)
-            .map_err(Error::Options)
+        named(&Self::all(), IdentifyModel::as_str, NameKind::TyreModel, s).map_err(Error::Options)
     }
 }
 
@@ -117,7 +116,12 @@ impl std::str::FromStr for Polish {
         Polish::ALL
             .into_iter()
             .find(|p| p.as_str() == s)
-            .ok_or_else(|| Error::Options(format!("unknown local method `{s}`: lm, gn or none")))
+            .ok_or_else(|| {
+                OptionsError::UnknownLocalMethod {
+                    given: s.to_string(),
+                }
+                .into()
+            })
     }
 }
 
@@ -134,12 +138,12 @@ impl From<Polish> for LocalMethod {
 /// Where the staged Magic Formula fit starts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum StartArg {
-    /// Estimates from the data, then MINPACK's Levenberg–Marquardt.
+    /// Estimates from the data, then a Levenberg–Marquardt projected onto the bounds.
     #[default]
     Data,
     /// Wei et al. (2010): every parameter 1, μ = 0.1, β = 5.
     Paper,
-    /// The template's values, then MINPACK's Levenberg–Marquardt.
+    /// The template's values, then a Levenberg–Marquardt projected onto the bounds.
     Template,
 }
 
@@ -160,6 +164,6 @@ impl StartArg {
 impl std::str::FromStr for StartArg {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
-        crate::error::by_name(&StartArg::ALL, StartArg::as_str, "start", s).map_err(Error::Options)
+        named(&StartArg::ALL, StartArg::as_str, NameKind::Start, s).map_err(Error::Options)
     }
 }

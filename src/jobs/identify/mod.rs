@@ -17,7 +17,7 @@ mod choices;
 mod figures;
 mod staged;
 
-use crate::error::Error;
+use crate::error::{Error, FitError, OutputError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted};
 use crate::tyre::{ModelName, Pac89, Tyre};
@@ -183,8 +183,9 @@ impl IdentifyReport {
         let files = self.outputs();
         match self {
             IdentifyReport::Swarm(r) => {
-                let text = toml::to_string(&r.tyre).map_err(|e| {
-                    Error::output(&files[0], format!("serialising the fitted tyre: {e}"))
+                let text = toml::to_string(&r.tyre).map_err(|e| OutputError::Tyre {
+                    path: files[0].clone(),
+                    source: e,
                 })?;
                 let header = format!(
                     "# Identified by `handling identify {} --model {} --seed {}`: sigma {:.3} %.\n",
@@ -241,13 +242,9 @@ pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
     }
 }
 
-/// A failure of a fit to the data of `o`.
-fn on_data<'a>(o: &'a Options, what: &str) -> impl Fn(Error) -> Error + 'a {
-    let what = what.to_string();
-    move |e| Error::Data {
-        path: o.data.clone(),
-        message: format!("{what}{e}"),
-    }
+/// A failure of a fit to the data of `o`, of `channel` where named.
+fn on_data<'a>(o: &'a Options, channel: Option<&'static str>) -> impl Fn(Error) -> Error + 'a {
+    move |e| FitError::in_data(&o.data, channel, e).into()
 }
 
 /// The swarm fit of `model`: the first channel, PAC89's two stages, the
@@ -257,12 +254,11 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     settings.local = o.local.into();
     let data = read_rig(&o.data)?;
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
-        return Err(Error::Data {
-            path: o.data.clone(),
-            message: format!(
-                "no lateral data (columns `alpha` and `fy`), and the {model} model has no longitudinal force"
-            ),
-        });
+        return Err(FitError::NoLateralData {
+            data: o.data.clone(),
+            model: model.as_str(),
+        }
+        .into());
     }
     let grouping = Grouping {
         pressure: o.pressure,
@@ -282,20 +278,19 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
             group(&o.data, view, &grouping, SlipAxis::Ratio)?,
         ),
         (None, false) => {
-            return Err(on_data(o, "")(Error::Fit(
-                "no lateral data and no longitudinal data".into(),
-            )))
+            return Err(FitError::NoData {
+                data: o.data.clone(),
+            }
+            .into())
         }
     };
     let conditions = grouped.conditions;
     if conditions.is_empty() {
-        return Err(Error::Data {
-            path: o.data.clone(),
-            message: format!(
-                "no test condition found in the data ({})",
-                grouped.report.lines().join("; ")
-            ),
-        });
+        return Err(FitError::NoCondition {
+            data: o.data.clone(),
+            grouping: grouped.report.lines(),
+        }
+        .into());
     }
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.sort_by(f64::total_cmp);
@@ -309,7 +304,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .iter()
         .find(|l| l.variable == Variable::Pressure)
         .map_or(0, |l| l.levels.len());
-    let fit = fit_channel(&tyre0, first, &conditions, &settings).map_err(on_data(o, ""))?;
+    let fit = fit_channel(&tyre0, first, &conditions, &settings).map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         fit,
@@ -332,7 +327,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     // with the lateral parameters just fitted held.
     if first == Channel::LateralForce && data.mz.is_some() && !r.tyre.aligning_names().is_empty() {
         let mz = fit_channel(&r.tyre, Channel::AligningMoment, &r.conditions, &settings)
-            .map_err(on_data(o, "aligning moment: "))?;
+            .map_err(on_data(o, Some("aligning moment")))?;
         r.tyre = mz.tyre.clone();
         r.aligning = Some(mz);
     }
@@ -348,7 +343,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
             &g.conditions,
             &settings,
         )
-        .map_err(on_data(o, "longitudinal force: "))?;
+        .map_err(on_data(o, Some("longitudinal force")))?;
         r.tyre = fx.tyre.clone();
         r.longitudinal = Some(fx);
         r.longitudinal_conditions = g.conditions;
@@ -361,7 +356,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
 /// fit; the better of the two becomes the tyre.
 fn two_stage(o: &Options, r: &mut SwarmReport, settings: &FitSettings) -> Result<(), Error> {
     let stages = pac89_two_stage::identify(&r.conditions, settings)
-        .map_err(|e| on_data(o, "")(Error::Fit(e.to_string())))?;
+        .map_err(|e| on_data(o, None)(e.into()))?;
     let all: Vec<Point> = r
         .conditions
         .iter()

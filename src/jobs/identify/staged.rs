@@ -4,7 +4,7 @@
 //! reproduce the fitted forces.
 
 use super::{IdentifyModel, Options, StartArg};
-use crate::error::Error;
+use crate::error::{Error, FitError, OptionsError};
 use crate::identify::mf_staged::{self, RowAccount, StagedReport, StartScheme};
 use crate::io::rig::read_rig;
 use crate::io::tir::TirDocument;
@@ -99,26 +99,20 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
             StartArg::Data => StartScheme::Data,
             StartArg::Paper => StartScheme::Paper,
             StartArg::Template if o.template.is_none() => {
-                return Err(Error::Options(
-                    "--start template needs --template <file.tir>".into(),
-                ))
+                return Err(OptionsError::TemplateMissing.into())
             }
             StartArg::Template => StartScheme::Template,
         },
         template: template_tyre,
         max_iterations: o.max_iterations,
     };
-    let id = mf_staged::identify(&prepared.rows, &settings).map_err(|e| Error::Data {
-        path: o.data.clone(),
-        message: e.to_string(),
-    })?;
+    let id = mf_staged::identify(&prepared.rows, &settings)
+        .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
     let tir = crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
-        return Err(Error::Fit(format!(
-            "the written .tir does not reproduce the fitted forces (relative difference {back:.2e})"
-        )));
+        return Err(FitError::RoundTrip { difference: back }.into());
     }
     Ok(StagedJob {
         report: id.report,

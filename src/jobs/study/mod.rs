@@ -10,7 +10,7 @@ use crate::study::rbf::Rbf;
 use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 
 mod figures;
-use crate::error::Error;
+use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
 use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
@@ -240,11 +240,13 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<StudyReport, Erro
     let (input, units, samples) = read_shards::<Sample>(ShardJob::Study, shards)?;
     let job = Job::load(&input, out)?;
     if units != job.all.len() {
-        return Err(Error::Options(format!(
-            "merge: the shards hold {units} combinations, the study {} has {}",
-            input.display(),
-            job.all.len()
-        )));
+        return Err(OptionsError::MergeCount {
+            input: MergeInput::Study,
+            path: input,
+            held: units,
+            expected: job.all.len(),
+        }
+        .into());
     }
     job.finish(samples, t0.elapsed().as_secs_f64())
 }
@@ -281,10 +283,10 @@ impl Job {
         let rbf_pairs = input.rbf.as_ref().map_or(&[][..], |r| &r.pairs[..]);
         let all: Vec<(f64, f64)> = grid.iter().chain(rbf_pairs).copied().collect();
         if all.is_empty() {
-            return Err(Error::Data {
+            return Err(InputError::NothingToSimulate {
                 path: path.to_path_buf(),
-                message: "nothing to simulate: give a [stiffness] map or [rbf] pairs".into(),
-            });
+            }
+            .into());
         }
         Ok(Self {
             input,

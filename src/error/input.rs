@@ -1,0 +1,197 @@
+//! Input errors: a file that cannot be read, or whose content is wrong,
+//! located in the file (path, 1-based line and column) where a place is
+//! known.
+
+use super::param::ParamError;
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// A place in a text file: 1-based line and column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Location {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column.
+    pub column: usize,
+}
+
+/// `path` and, where known, `:line:column`, as the messages show them.
+fn place(path: &std::path::Path, at: &Option<Location>) -> String {
+    match at {
+        Some(l) => format!("{}:{}:{}", path.display(), l.line, l.column),
+        None => path.display().to_string(),
+    }
+}
+
+/// What is wrong with a CSV cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CellProblem {
+    /// It does not parse as a number.
+    NotANumber,
+    /// It is NaN or infinite.
+    NotFinite,
+}
+
+impl CellProblem {
+    fn describe(self, cell: &str) -> String {
+        match self {
+            CellProblem::NotANumber => format!("`{cell}` is not a number"),
+            CellProblem::NotFinite => format!("{cell} is not a finite value"),
+        }
+    }
+}
+
+/// Errors from reading input files, located in the file.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum InputError {
+    /// The file could not be read.
+    #[error("{path}: cannot read: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The OS error.
+        source: std::io::Error,
+    },
+    /// Wrong content at a known place, described by the reader (a malformed
+    /// row, a cell that is not a number, a missing column).
+    #[error("{path}:{line}:{column}: {message}")]
+    At {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What is wrong, naming the key or column and the value.
+        message: String,
+    },
+    /// Wrong content with no single place (a missing key or column),
+    /// described by the reader.
+    #[error("{path}: {message}")]
+    File {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+    /// A CSV file without a column the reader needs.
+    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {})", header.join(", "))]
+    MissingColumn {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line of the header.
+        line: usize,
+        /// The column.
+        name: String,
+        /// The header's columns.
+        header: Vec<String>,
+    },
+    /// A CSV row that the CSV reader cannot read.
+    #[error("{path}:{line}:1: malformed CSV row: {source}")]
+    MalformedRow {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// The CSV reader's error.
+        source: csv::Error,
+    },
+    /// A CSV cell that is not a finite number.
+    #[error("{path}:{line}:{column}: column `{name}`: {}", problem.describe(cell))]
+    Cell {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// The column's name.
+        name: String,
+        /// The cell as written.
+        cell: String,
+        /// What is wrong with it.
+        problem: CellProblem,
+    },
+    /// A CSV file with a header and no data row.
+    #[error("{path}: no data rows")]
+    NoRows {
+        /// The file.
+        path: PathBuf,
+    },
+    /// A value in the file that is not physical: the parameter error, at
+    /// its key's place where the key is found.
+    #[error("{}: {source}", place(path, at))]
+    Value {
+        /// The file.
+        path: PathBuf,
+        /// The key's place.
+        at: Option<Location>,
+        /// The key (dotted), its value and why it is wrong.
+        source: ParamError,
+    },
+    /// A value of the wrong type or shape for its key (the TOML reader's
+    /// own description of what it expected).
+    #[error("{}: `{key}`: {detail}", place(path, at))]
+    Key {
+        /// The file.
+        path: PathBuf,
+        /// The value's place.
+        at: Option<Location>,
+        /// Dotted key.
+        key: String,
+        /// What the reader expected and found.
+        detail: String,
+    },
+    /// A study that names nothing to simulate.
+    #[error("{path}: nothing to simulate: give a [stiffness] map or [rbf] pairs")]
+    NothingToSimulate {
+        /// The study file.
+        path: PathBuf,
+    },
+    /// A fleet folder that holds no campaign.
+    #[error("{path}: no campaign in the folder (sub-folders or .toml files)")]
+    NoCampaign {
+        /// The folder.
+        path: PathBuf,
+    },
+}
+
+impl InputError {
+    /// The file the error is in.
+    pub fn path(&self) -> &std::path::Path {
+        match self {
+            InputError::Io { path, .. }
+            | InputError::At { path, .. }
+            | InputError::File { path, .. }
+            | InputError::MissingColumn { path, .. }
+            | InputError::MalformedRow { path, .. }
+            | InputError::Cell { path, .. }
+            | InputError::NoRows { path }
+            | InputError::Value { path, .. }
+            | InputError::Key { path, .. }
+            | InputError::NothingToSimulate { path }
+            | InputError::NoCampaign { path } => path,
+        }
+    }
+
+    /// The place in the file, where known.
+    pub fn location(&self) -> Option<Location> {
+        match self {
+            InputError::MissingColumn { line, .. } | InputError::MalformedRow { line, .. } => {
+                Some(Location {
+                    line: *line,
+                    column: 1,
+                })
+            }
+            InputError::At { line, column, .. } | InputError::Cell { line, column, .. } => {
+                Some(Location {
+                    line: *line,
+                    column: *column,
+                })
+            }
+            InputError::Value { at, .. } | InputError::Key { at, .. } => *at,
+            _ => None,
+        }
+    }
+}

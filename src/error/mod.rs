@@ -1,0 +1,135 @@
+//! Error types: [`Error`], the one error of the library's public functions.
+//! Each failure is a kind with typed fields a caller can match on
+//! ([`Error::kind`] gives the group): the input errors ([`InputError`]: the
+//! file, line and column), the parameter errors ([`ParamError`]: the key,
+//! the value and why it is wrong), the option errors ([`OptionsError`]),
+//! the fit errors ([`FitError`]), the step-steer metrics' errors
+//! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
+//! output errors ([`OutputError`]). Every message is complete on its own.
+
+mod fit;
+mod input;
+mod options;
+mod output;
+mod param;
+#[cfg(test)]
+mod tests;
+
+pub use crate::metrics::MetricsError;
+pub use fit::{DiagnosisError, FitError};
+pub use input::{CellProblem, InputError, Location};
+pub use options::{MergeInput, NameKind, OptionsError, ShardField};
+pub use output::{OutputError, WriteStep};
+pub use param::{ParamError, ParamValue};
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// The library's error: why a job (a command of the binary, or any public
+/// function that reads, fits or writes) could not be done. Its message is
+/// complete on its own; wrapped errors keep their own messages and sources.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An input file that cannot be read or holds wrong content.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// A parameter value that is not physical.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// Options that contradict each other or name nothing known.
+    #[error(transparent)]
+    Options(#[from] OptionsError),
+    /// A fit that cannot be made or whose stages failed.
+    #[error(transparent)]
+    Fit(#[from] FitError),
+    /// The step-steer metrics of a response could not be computed.
+    #[error("step-steer metrics: {0}")]
+    Metrics(#[from] MetricsError),
+    /// The diagnosis could not be made.
+    #[error(transparent)]
+    Diagnosis(#[from] DiagnosisError),
+    /// An output that may not or could not be written.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    /// Transitional, for `src/diagnose/candidates.rs` until it builds
+    /// [`DiagnosisError`]s: a failure on an input of the diagnosis, as text.
+    /// Its kind is [`ErrorKind::Diagnosis`].
+    #[error("{path}: {message}")]
+    Data {
+        /// The input.
+        path: PathBuf,
+        /// What it lacks, or why the fit failed.
+        message: String,
+    },
+}
+
+/// The group of an [`Error`], to branch on without matching every kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// [`Error::Input`].
+    Input,
+    /// [`Error::Param`].
+    Param,
+    /// [`Error::Options`].
+    Options,
+    /// [`Error::Fit`].
+    Fit,
+    /// [`Error::Metrics`].
+    Metrics,
+    /// [`Error::Diagnosis`].
+    Diagnosis,
+    /// [`Error::Output`].
+    Output,
+}
+
+impl ErrorKind {
+    /// The group's name: `input`, `param`, `options`, `fit`, `metrics`,
+    /// `diagnosis`, `output`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ErrorKind::Input => "input",
+            ErrorKind::Param => "param",
+            ErrorKind::Options => "options",
+            ErrorKind::Fit => "fit",
+            ErrorKind::Metrics => "metrics",
+            ErrorKind::Diagnosis => "diagnosis",
+            ErrorKind::Output => "output",
+        }
+    }
+}
+
+impl Error {
+    /// The error's group.
+    pub fn kind(&self) -> ErrorKind {
+        match self {
+            Error::Input(_) => ErrorKind::Input,
+            Error::Param(_) => ErrorKind::Param,
+            Error::Options(_) => ErrorKind::Options,
+            Error::Fit(_) => ErrorKind::Fit,
+            Error::Metrics(_) => ErrorKind::Metrics,
+            Error::Diagnosis(_) | Error::Data { .. } => ErrorKind::Diagnosis,
+            Error::Output(_) => ErrorKind::Output,
+        }
+    }
+}
+
+/// The member of the closed set `all` whose name (`name`) is `s`, or the
+/// error that names `s` and every member: "unknown {what} `s`: one of
+/// a, b, c". The one parser of the names of closed sets (metrics, units,
+/// tyre models).
+pub fn named<T: Copy>(
+    all: &[T],
+    name: impl Fn(T) -> &'static str,
+    what: NameKind,
+    s: &str,
+) -> Result<T, OptionsError> {
+    all.iter()
+        .copied()
+        .find(|&m| name(m) == s)
+        .ok_or_else(|| OptionsError::UnknownName {
+            what,
+            given: s.to_string(),
+            known: all.iter().map(|&m| name(m)).collect(),
+        })
+}

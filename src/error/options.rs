@@ -1,0 +1,248 @@
+//! Option errors: options of a job that name nothing known or contradict
+//! each other or the job's other inputs (shard files of different runs,
+//! inputs changed since the shards were run).
+
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// The closed sets whose members are named by the user.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NameKind {
+    /// A tyre model (`gim`, `pac89`, …).
+    TyreModel,
+    /// A study metric.
+    Metric,
+    /// A cornering-stiffness unit.
+    Unit,
+    /// A synthetic driving programme.
+    Programme,
+    /// A synthetic campaign's truth (a vehicle).
+    Truth,
+    /// A candidate effect of the diagnosis.
+    Effect,
+    /// Where the staged Magic Formula fit starts.
+    Start,
+}
+
+impl NameKind {
+    /// Every kind.
+    pub const ALL: [NameKind; 7] = [
+        NameKind::TyreModel,
+        NameKind::Metric,
+        NameKind::Unit,
+        NameKind::Programme,
+        NameKind::Truth,
+        NameKind::Effect,
+        NameKind::Start,
+    ];
+
+    /// The kind as the messages name it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            NameKind::TyreModel => "tyre model",
+            NameKind::Metric => "metric",
+            NameKind::Unit => "unit",
+            NameKind::Programme => "programme",
+            NameKind::Truth => "truth",
+            NameKind::Effect => "effect",
+            NameKind::Start => "start",
+        }
+    }
+}
+
+impl std::fmt::Display for NameKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// The two merges of shard results whose unit count is checked against
+/// the input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MergeInput {
+    /// A sweep of equilibria: its units are conditions.
+    Sweep,
+    /// A cornering-stiffness study: its units are combinations.
+    Study,
+}
+
+impl MergeInput {
+    fn units(self) -> &'static str {
+        match self {
+            MergeInput::Sweep => "conditions",
+            MergeInput::Study => "combinations",
+        }
+    }
+    fn name(self) -> &'static str {
+        match self {
+            MergeInput::Sweep => "sweep",
+            MergeInput::Study => "study",
+        }
+    }
+}
+
+/// What two shard files of one merge disagree on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShardField {
+    /// The job that wrote them.
+    Job,
+    /// The input they were run on.
+    Input,
+    /// N, or the number of units.
+    Count,
+}
+
+impl std::fmt::Display for ShardField {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ShardField::Job => "the job",
+            ShardField::Input => "the input",
+            ShardField::Count => "the shard count",
+        })
+    }
+}
+
+/// Options that name nothing known or contradict each other.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum OptionsError {
+    /// A name that is no member of its closed set.
+    #[error("unknown {what} `{given}`: one of {}", known.join(", "))]
+    UnknownName {
+        /// The set.
+        what: NameKind,
+        /// The name given.
+        given: String,
+        /// The set's members.
+        known: Vec<&'static str>,
+    },
+    /// A local polish that is not one of the methods.
+    #[error("unknown local method `{given}`: lm, gn or none")]
+    UnknownLocalMethod {
+        /// The name given.
+        given: String,
+    },
+    /// An effect the truth's programme cannot show.
+    #[error(
+        "effect `{effect}`: not one the {truth} truth's {programme} programme can show: one of none, {}",
+        known.join(", ")
+    )]
+    EffectNotShown {
+        /// The effect.
+        effect: &'static str,
+        /// The truth.
+        truth: &'static str,
+        /// The programme.
+        programme: &'static str,
+        /// The effects it can show.
+        known: Vec<&'static str>,
+    },
+    /// A model asked of the swarm fit that only its staged fit identifies.
+    #[error("the {model} model is identified by its staged fit ({})", fits.join(" or "))]
+    StagedFitOnly {
+        /// The model's name.
+        model: String,
+        /// The names of its staged fits.
+        fits: Vec<&'static str>,
+    },
+    /// A tyre model registered under a name another model holds.
+    #[error("a different tyre model is already registered as `{name}`")]
+    ModelNameTaken {
+        /// The name.
+        name: &'static str,
+    },
+    /// A model that no fit identifies from rig data.
+    #[error("the {model} model is not identified from rig data")]
+    NotIdentified {
+        /// The model's name.
+        model: String,
+    },
+    /// `--start template` without a template file.
+    #[error("--start template needs --template <file.tir>")]
+    TemplateMissing,
+    /// A shard K of N outside 1 ≤ K ≤ N.
+    #[error("shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8")]
+    ShardOutOfRange {
+        /// K.
+        index: usize,
+        /// N.
+        count: usize,
+    },
+    /// A shard given as text that is not K/N.
+    #[error("shard `{given}`: expected K/N with 1 ≤ K ≤ N, e.g. 3/8")]
+    ShardText {
+        /// The text given.
+        given: String,
+    },
+    /// A merge given no shard file.
+    #[error("merge: no shard files given")]
+    NoShards,
+    /// Two shard files of different runs.
+    #[error("{}: {field} differs from {}'s: shards of different runs", path.display(), first.display())]
+    ShardsDiffer {
+        /// The shard file.
+        path: PathBuf,
+        /// The first shard file of the merge.
+        first: PathBuf,
+        /// What differs.
+        field: ShardField,
+    },
+    /// A shard file whose results are not its shard's units.
+    #[error("{}: its results are not shard {index}/{count}'s units", path.display())]
+    ShardUnits {
+        /// The shard file.
+        path: PathBuf,
+        /// K.
+        index: usize,
+        /// N.
+        count: usize,
+    },
+    /// A shard given twice.
+    #[error("{}: shard {index}/{count} given twice", path.display())]
+    ShardTwice {
+        /// The second shard file.
+        path: PathBuf,
+        /// K.
+        index: usize,
+        /// N.
+        count: usize,
+    },
+    /// Shards missing from a merge.
+    #[error("merge: shards {} missing", missing.iter().map(|k| format!("{k}/{count}")).collect::<Vec<_>>().join(", "))]
+    ShardsMissing {
+        /// The missing K.
+        missing: Vec<usize>,
+        /// N.
+        count: usize,
+    },
+    /// An input changed since the shards were run.
+    #[error("{}: changed since the shards were run; run them again", path.display())]
+    InputChanged {
+        /// The input.
+        path: PathBuf,
+    },
+    /// A fleet folder whose campaigns changed since the shards were run.
+    #[error("{}: its campaigns changed since the shards were run; run them again", path.display())]
+    CampaignsChanged {
+        /// The fleet folder.
+        path: PathBuf,
+    },
+    /// Shards that hold another number of units than their input has.
+    #[error(
+        "merge: the shards hold {held} {}, the {} {} has {expected}",
+        input.units(),
+        input.name(),
+        path.display()
+    )]
+    MergeCount {
+        /// The job's input kind.
+        input: MergeInput,
+        /// The input file.
+        path: PathBuf,
+        /// Units in the shards.
+        held: usize,
+        /// Units of the input.
+        expected: usize,
+    },
+}

@@ -1,0 +1,144 @@
+//! Output errors: an output that may not or could not be written (an input
+//! of the run, a folder that exists, a failed write, a report that could
+//! not be encoded).
+
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// The file-system step of a write that failed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WriteStep {
+    /// Creating the file or folder.
+    Create,
+    /// Creating the output's parent folder.
+    CreateFolder,
+    /// Writing the bytes.
+    Write,
+    /// Renaming the temporary file into place.
+    MoveIntoPlace,
+}
+
+impl WriteStep {
+    /// The step as the messages name it, with its separator.
+    fn prefix(self) -> &'static str {
+        match self {
+            WriteStep::Create => "cannot create: ",
+            WriteStep::CreateFolder => "cannot create folder: ",
+            WriteStep::Write => "",
+            WriteStep::MoveIntoPlace => "cannot move into place: ",
+        }
+    }
+}
+
+/// Why an output could not be written.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// An output that is one of the run's inputs.
+    #[error("{}: is an input of this run; refusing to overwrite it", path.display())]
+    Overwrite {
+        /// The output.
+        path: PathBuf,
+    },
+    /// A campaign folder that exists (synth never writes over one).
+    #[error("{}: exists; synth writes a new campaign folder and does not overwrite one", path.display())]
+    CampaignExists {
+        /// The folder.
+        path: PathBuf,
+    },
+    /// An output below a file where its folder would be.
+    #[error("{}: cannot write: {} is a file, not a folder", path.display(), file.display())]
+    NotAFolder {
+        /// The output.
+        path: PathBuf,
+        /// The file in the way.
+        file: PathBuf,
+    },
+    /// A file-system step that failed.
+    #[error("{}: {}{source}", path.display(), step.prefix())]
+    Io {
+        /// The output.
+        path: PathBuf,
+        /// The step.
+        step: WriteStep,
+        /// The OS error.
+        source: std::io::Error,
+    },
+    /// A report that could not be encoded (JSON, CSV, TOML).
+    #[error("{}: {source}", path.display())]
+    Encode {
+        /// The output.
+        path: PathBuf,
+        /// The encoder's error.
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+    /// A fitted tyre that could not be written as TOML.
+    #[error("{}: serialising the fitted tyre: {source}", path.display())]
+    Tyre {
+        /// The tyre file.
+        path: PathBuf,
+        /// The encoder's error.
+        source: toml::ser::Error,
+    },
+    /// A figure that could not be drawn.
+    #[error("{}: {detail}", path.display())]
+    Draw {
+        /// The image.
+        path: PathBuf,
+        /// The plotting library's description.
+        detail: String,
+    },
+    /// A CSV row with another number of cells than the header.
+    #[error("{}: a row of {cells} cells under {columns} columns", path.display())]
+    RowLength {
+        /// The CSV file.
+        path: PathBuf,
+        /// Cells of the row.
+        cells: usize,
+        /// Columns of the header.
+        columns: usize,
+    },
+    /// Columns of unequal length.
+    #[error("{}: columns of unequal length", path.display())]
+    UnequalColumns {
+        /// The CSV file.
+        path: PathBuf,
+    },
+}
+
+impl OutputError {
+    /// The output.
+    pub fn path(&self) -> &std::path::Path {
+        match self {
+            OutputError::Overwrite { path }
+            | OutputError::CampaignExists { path }
+            | OutputError::NotAFolder { path, .. }
+            | OutputError::Io { path, .. }
+            | OutputError::Encode { path, .. }
+            | OutputError::Tyre { path, .. }
+            | OutputError::Draw { path, .. }
+            | OutputError::RowLength { path, .. }
+            | OutputError::UnequalColumns { path } => path,
+        }
+    }
+
+    /// A failed file-system `step` of writing `path`.
+    pub fn io(path: &std::path::Path, step: WriteStep, source: std::io::Error) -> Self {
+        OutputError::Io {
+            path: path.to_path_buf(),
+            step,
+            source,
+        }
+    }
+
+    /// A report for `path` that could not be encoded.
+    pub fn encode(
+        path: &std::path::Path,
+        source: impl std::error::Error + Send + Sync + 'static,
+    ) -> Self {
+        OutputError::Encode {
+            path: path.to_path_buf(),
+            source: Box::new(source),
+        }
+    }
+}

@@ -169,7 +169,6 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
             };
             (DiagnosisError::new_err(message), vec![("path", rig)])
         }
-        Error::Data { path: p, .. } => (DiagnosisError::new_err(message), vec![("path", path(p))]),
         Error::Output(o) => (OutputError::new_err(message), vec![("path", path(o.path()))]),
         _ => (HandlingError::new_err(message), Vec::new()),
     };

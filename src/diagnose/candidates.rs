@@ -14,7 +14,7 @@ use super::problem::Problem;
 use super::refit::{refit, training_rows};
 use super::replay::Prepared;
 use super::report::ParameterValue;
-use crate::error::Error;
+use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
 use crate::optim::stats::covariance;
@@ -202,10 +202,7 @@ pub(super) fn base_models(
             let grouped = group(path, data, &Grouping::default(), SlipAxis::Angle)?;
             let conditions = grouped.conditions;
             if conditions.is_empty() {
-                return Err(Error::Data {
-                    path: path.clone(),
-                    message: "no lateral test condition in the rig data".into(),
-                });
+                return Err(DiagnosisError::NoRigCondition { rig: path.clone() }.into());
             }
             let mut loads: Vec<f64> = conditions.iter().map(|q| q.fz).collect();
             loads.sort_by(f64::total_cmp);
@@ -213,10 +210,11 @@ pub(super) fn base_models(
             let mut settings = FitSettings::new(c.settings.seed);
             settings.pso.particles = 40;
             settings.pso.iterations = 150;
-            let f = fit_lateral(&t0, &conditions, &settings).map_err(|e| Error::Data {
-                path: path.clone(),
-                message: e.to_string(),
-            })?;
+            let f =
+                fit_lateral(&t0, &conditions, &settings).map_err(|e| DiagnosisError::RigFit {
+                    rig: path.clone(),
+                    source: Box::new(e),
+                })?;
             Ok((
                 fixed(make(f.tyre.clone(), f.tyre.clone())),
                 format!(

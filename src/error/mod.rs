@@ -21,7 +21,6 @@ pub use input::{CellProblem, InputError, Location};
 pub use options::{MergeInput, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
-use std::path::PathBuf;
 use thiserror::Error;
 
 /// The library's error: why a job (a command of the binary, or any public
@@ -51,16 +50,6 @@ pub enum Error {
     /// An output that may not or could not be written.
     #[error(transparent)]
     Output(#[from] OutputError),
-    /// Transitional, for `src/diagnose/candidates.rs` until it builds
-    /// [`DiagnosisError`]s: a failure on an input of the diagnosis, as text.
-    /// Its kind is [`ErrorKind::Diagnosis`].
-    #[error("{path}: {message}")]
-    Data {
-        /// The input.
-        path: PathBuf,
-        /// What it lacks, or why the fit failed.
-        message: String,
-    },
 }
 
 /// The group of an [`Error`], to branch on without matching every kind.
@@ -108,7 +97,7 @@ impl Error {
             Error::Options(_) => ErrorKind::Options,
             Error::Fit(_) => ErrorKind::Fit,
             Error::Metrics(_) => ErrorKind::Metrics,
-            Error::Diagnosis(_) | Error::Data { .. } => ErrorKind::Diagnosis,
+            Error::Diagnosis(_) => ErrorKind::Diagnosis,
             Error::Output(_) => ErrorKind::Output,
         }
     }

@@ -167,8 +167,6 @@ fn a_rig_of_one_load_fails_the_diagnosis() {
     let e = crate::diagnose::diagnose(&c, None).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Diagnosis, "{e}");
     match e {
-        // Transitional until `diagnose::candidates` builds its own kinds.
-        Error::Data { path, .. } => assert_eq!(path, rig_path),
         Error::Diagnosis(DiagnosisError::RigFit { rig, .. }) => assert_eq!(rig, rig_path),
         other => panic!("not a diagnosis error: {other:?}"),
     }

@@ -116,11 +116,10 @@ impl Figure {
         let mut text = String::new();
         {
             let root = SVGBackend::with_string(&mut text, self.size()).into_drawing_area();
-            self.draw_on(&root)
-                .map_err(|e| OutputError::Draw {
-                    path: for_file.to_path_buf(),
-                    detail: e.to_string(),
-                })?;
+            self.draw_on(&root).map_err(|e| OutputError::Draw {
+                path: for_file.to_path_buf(),
+                detail: e.to_string(),
+            })?;
         }
         Ok(text)
     }

@@ -105,7 +105,9 @@ pub fn register<M: Model>() -> Result<ModelName, Error> {
         .find(|e| e.name().as_str() == M::NAME);
     match taken {
         Some(e) if e.model_type() == TypeId::of::<M>() => Ok(e.name()),
-        Some(_) => Err(Error::Options(OptionsError::ModelNameTaken { name: M::NAME })),
+        Some(_) => Err(Error::Options(OptionsError::ModelNameTaken {
+            name: M::NAME,
+        })),
         None => {
             let entry: &'static Registration<M> = Box::leak(Box::new(Registration::new(|m| {
                 Tyre::Registered(Erased::new(m))

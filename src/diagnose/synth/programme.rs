@@ -123,8 +123,13 @@ impl Programme {
 impl std::str::FromStr for Programme {
     type Err = crate::error::Error;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        crate::error::named(&Self::ALL, |p| p.name(), crate::error::NameKind::Programme, s)
-            .map_err(crate::error::Error::Options)
+        crate::error::named(
+            &Self::ALL,
+            |p| p.name(),
+            crate::error::NameKind::Programme,
+            s,
+        )
+        .map_err(crate::error::Error::Options)
     }
 }
 /// Duration of each slow-oval run, s.

@@ -279,10 +279,13 @@ fn base_tyres(
         };
     let name = spec.model.as_deref().unwrap_or("pac89");
     // The rig fit starts a swarm, which the staged Magic Formula does not.
-    let model =
-        named(&swarm_models(), ModelName::as_str, NameKind::TyreModel, name).map_err(|why| {
-            src.value_error(&ParamError::without_value("tyres.model", &why.to_string()))
-        })?;
+    let model = named(
+        &swarm_models(),
+        ModelName::as_str,
+        NameKind::TyreModel,
+        name,
+    )
+    .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why.to_string())))?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

@@ -284,6 +284,8 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
     for (tir, v, fnomin, n, right) in [
         ("MagicFormula61_Parameters", "mf61", 6752.0, 1638, true),
         ("MagicFormula62_Parameters", "mf62", 6752.0, 1638, true),
+        // QSY7 = 0 (derived from the 6.1 file): a 6.x My without load power.
+        ("MagicFormula61_QSY7_zero", "mf61_qsy7_zero", 6752.0, 1638, true),
         ("MagicFormula52_Parameters", "mf52", 9416.6, 819, false),
         ("chrono_Sedan_Pac02Tire", "chrono_sedan", 4850.0, 819, false),
         (

@@ -32,8 +32,11 @@
 //!   multiplies only the vertical shifts `SVx`, `SVy`.
 //! - the small `ε` in denominators keeps the sign of the quantity it guards
 //!   (`x + ε·sgn x`, sgn 0 = +1), so a negative `Kyα` never crosses zero.
-//! - `My`: the TNO 6.1 form (load power `QSY7`, pressure power `QSY8`, speed
-//!   terms in `V/LONGVL`), not the book's 5.2 `QSY1..QSY4` polynomial alone.
+//! - `My`: for 6.1/6.2 files the TNO form (eq. A48: `−R0·Fz0·λMy·(QSY1 +
+//!   … + (QSY5 + QSY6·Fz/Fz0)·γ²)·(Fz/Fz0)^QSY7·(p/p0)^QSY8`, speed terms in
+//!   `V/LONGVL`), independent of the load when `QSY7 = 0`; for 5.2 files
+//!   the 5.2 form `−R0·Fz·λMy·(QSY1 + QSY2·Fx/Fz0 + QSY3·|V/LONGVL| +
+//!   QSY4·(V/LONGVL)⁴)`. The version (`FITTYP`) chooses, as in MFeval.
 //! - `Mz` (MFeval's `calculateMz0`/`calculateMz`, checked against its
 //!   numbers, `tests/fixtures/tir/README.md`): `Bt` (TNO eq. A58) has
 //!   `QBZ4·γ + QBZ5·|γ|` with γ itself and divides by `λ*_μy`; `Dt` (A60)
@@ -77,6 +80,7 @@
 mod coefficients;
 mod formulae;
 mod kernels;
+mod slip;
 
 pub use coefficients::MfCoefficients;
 

@@ -35,6 +35,7 @@ pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
             version: s.version,
             side: TyreSide::Left,
             options: MfOptions::default(),
+            limits: Default::default(),
             coefficients: c,
         }
     });

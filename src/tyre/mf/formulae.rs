@@ -170,11 +170,15 @@ impl MagicFormula {
     ) -> Prelude {
         let c = &self.coefficients;
         let v52 = self.version == MfVersion::Mf52;
+        // The rebuild with slip-speed friction starts from the load given.
+        let fz_given = fz;
+        let loads = self.checked(fz, gamma, p);
+        let (fz, gamma, p) = (loads.fz, loads.gamma, loads.p);
         let fz0 = c.FNOMIN;
         let fz0p = c.FNOMIN * c.LFZO;
         let r0 = c.UNLOADED_RADIUS;
         let dfz = (fz - fz0p) / fz0p;
-        let fzr = fz / fz0;
+        let (fzr_mx, fzr_my) = (loads.fz_mx / fz0, loads.fz_my / fz0);
         // The C library's exp and ln first: every register is free across
         // their calls here, later they would spill the prelude's values.
         let load_exp = if c.PKX3 == 0.0 {
@@ -182,7 +186,7 @@ impl MagicFormula {
         } else {
             (c.PKX3 * dfz).exp()
         };
-        let my_powers = self.my_powers(fzr, p);
+        let my_powers = self.my_powers(fzr_my, p);
         let dpi = self.dpi(p);
         let gs = match self.options.alpha_star {
             AlphaStar::Tan => kernels::sin_cos([gamma, 0.0, 0.0, 0.0], [false; 4])[0],
@@ -233,7 +237,8 @@ impl MagicFormula {
             free.load_ratio / (c.PKY2 + c.PKY5 * gs * gs),
             free.load_ratio / c.PKY2,
         );
-        let [ax, ax0, a_mx, a_mxg] = kernels::atan([x, x0, (c.QSX6 * fzr).powi(2), c.QSX11 * fzr]);
+        let [ax, ax0, a_mx, a_mxg] =
+            kernels::atan([x, x0, (c.QSX6 * fzr_mx).powi(2), c.QSX11 * fzr_mx]);
         let [sx, sx0, c_mx, _] = kernels::sin_cos(
             [c.PKY4 * ax, c.PKY4 * ax0, c.QSX5 * a_mx, 0.0],
             [false, false, true, false],
@@ -249,13 +254,13 @@ impl MagicFormula {
         // (MFeval); γ itself in Bt and Dt (TNO eqs. A58/A60) and in s (A56):
         // QBZ4 and QDZ3 linear in γ, the book's γ*, |γ*| and QBZ6 unused.
         let gz = gs;
-        let (bt, dt, dr) = self.aligning_terms(fz, dfz, dpi, gamma, gz, lmuy_s);
+        let (bt, dt, dr) = self.aligning_terms(loads.fz_trail, dfz, dpi, gamma, gz, lmuy_s);
         let kratio = kxk / lat.kya_g;
 
         let (mx_mixed, mx_load_camber) = self.moment_terms(gamma, c_mx, a_mxg);
 
         Prelude {
-            fz,
+            fz: fz_given,
             gamma,
             p,
             mu_scale,
@@ -269,11 +274,11 @@ impl MagicFormula {
             flat,
             mu0,
             rbx: c.RBX1 + c.RBX3 * gs * gs,
-            exa: (c.REX1 + c.REX2 * dfz).min(1.0),
+            exa: self.clip_e(c.REX1 + c.REX2 * dfz),
             svyk_load: fz * (c.RVY1 + c.RVY2 * dfz + c.RVY3 * gs),
             shyk: c.RHY1 + c.RHY2 * dfz,
             rby: c.RBY1 + c.RBY4 * gs * gs,
-            eyk: (c.REY1 + c.REY2 * dfz).min(1.0),
+            eyk: self.clip_e(c.REY1 + c.REY2 * dfz),
             sht: c.QHZ1 + c.QHZ2 * dfz + (c.QHZ3 + c.QHZ4 * dfz) * gz,
             bt,
             btct: bt * c.QCZ1,
@@ -284,19 +289,19 @@ impl MagicFormula {
             br: c.QBZ9 * c.LKY / lmuy_s + c.QBZ10 * lat.by * lat.cy,
             kratio2: kratio * kratio,
             s_gamma: (c.SSZ3 + c.SSZ4 * dfz) * gamma,
-            mx_scale: r0 * fz * c.LMX,
+            mx_scale: r0 * loads.fz_mx * c.LMX,
             mx_const: c.QSX1 * c.LVMX - c.QSX2 * gamma * (1.0 + c.PPMX1 * dpi),
             mx_mixed,
             mx_load_camber,
             mx_fy: r0 * c.LMX * (c.QSX13 + c.QSX14 * gamma.abs()),
-            mx_gamma: -(r0 * c.LMX) * (fz * c.QSX12 * gamma * gamma.abs()),
+            mx_gamma: -(r0 * c.LMX) * (loads.fz_mx * c.QSX12 * gamma * gamma.abs()),
             my_scale: -r0 * fz0 * c.LMY,
             my_powers,
             // MFeval's 5.2 form has no camber term.
             my_gamma: if v52 {
                 0.0
             } else {
-                (c.QSY5 + c.QSY6 * fzr) * gamma * gamma
+                (c.QSY5 + c.QSY6 * fzr_my) * gamma * gamma
             },
         }
     }

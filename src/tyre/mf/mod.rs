@@ -67,22 +67,26 @@
 //! - `cos'α = Vcx/(Vc + εV)` with `εV = 1e-6 m/s` (MFeval; eq. 4.E6a suggests 0.1); the trail is
 //!   multiplied by `λ_Fz0` (TNO); the equivalent slip angles of combined
 //!   `Mz` combine tangents (TNO eqs. A54/A55), `s` uses `Fy/Fz0` and `γ`.
-//! - MFeval clips the curvature factors `E ≤ 1` only with its limit checks
-//!   on (its default); they are always clipped here. Its other limit checks
-//!   (saturating inputs to the file's ranges) are not modelled: inputs are
-//!   evaluated as given.
+//! - MFeval's modes (`useMode` 111, 121, 211, 221; [`MfMode`], default 121):
+//!   with its limit checks on, inputs are saturated to the file's ranges
+//!   ([`MfLimits`]) and the curvature factors `E` clipped at 1; off, both
+//!   are evaluated as given. Turn slip (units digit 2) is not modelled.
 //!
 //! Turn slip is off (all ζ = 1). Low speed: below `VXLOW` the vertical
 //! shifts (`SVx`, `SVy`, `SVyκ`) and `My` fade linearly with `|V|/VXLOW`, so
-//! a standing tyre at zero slip has no force. Zero or negative load gives
+//! a standing tyre at zero slip has no force, in every mode (MFeval's own
+//! low-speed reductions, taken with its limit checks, differ below
+//! `VXLOW`; its references here are at 16.7 m/s). Zero or negative load gives
 //! zero forces.
 
 mod coefficients;
 mod formulae;
 mod kernels;
+mod mode;
 mod slip;
 
 pub use coefficients::MfCoefficients;
+pub use mode::{MfLimits, MfMode};
 
 use super::{ModelName, ModelParameters, PointForces, SlipState, TyreForces, TyreModel};
 use crate::error::ParamError;
@@ -151,6 +155,9 @@ pub struct MfOptions {
     /// Use the book's digressive `λ'_μ` (A_μ = 10) in the vertical shifts
     /// (off: `λ'_μ = λ*_μ`, MFeval).
     pub digressive_mu: bool,
+    /// MFeval's limit checks ([`MfMode`]): inputs saturated to
+    /// [`MagicFormula::limits`], `E` clipped at 1.
+    pub limit_checks: bool,
 }
 
 impl Default for MfOptions {
@@ -158,6 +165,7 @@ impl Default for MfOptions {
         Self {
             alpha_star: AlphaStar::Tan,
             digressive_mu: false,
+            limit_checks: true,
         }
     }
 }
@@ -174,6 +182,9 @@ pub struct MagicFormula {
     /// Model variants.
     #[serde(default)]
     pub options: MfOptions,
+    /// The file's validity ranges (used with the limit checks on).
+    #[serde(default)]
+    pub limits: MfLimits,
     /// The coefficients (SI).
     pub coefficients: MfCoefficients,
 }
@@ -275,7 +286,7 @@ impl MagicFormula {
         }
     }
 
-    fn pressure(&self, p: Option<f64>) -> f64 {
+    pub(super) fn pressure(&self, p: Option<f64>) -> f64 {
         let c = &self.coefficients;
         p.unwrap_or(if c.INFLPRES > 0.0 {
             c.INFLPRES

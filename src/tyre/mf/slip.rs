@@ -4,7 +4,7 @@
 //! sources and the choices are in the parent module's notes). SI and
 //! radians; `α` here is TNO's.
 
-use super::formulae::{cos_atan, sgn, Prelude, LateralAtLoad, EPS_V};
+use super::formulae::{cos_atan, sgn, LateralAtLoad, Prelude, EPS_V};
 use super::kernels;
 use super::{AlphaStar, MagicFormula, MfOutput, MfVersion};
 use std::f64::consts::PI;
@@ -81,6 +81,8 @@ impl MagicFormula {
     fn forces_iso_lanes(&self, l: &Prelude, kappa: f64, alpha: f64, speed: f64) -> MfOutput {
         let c = &self.coefficients;
         let vx = speed;
+        let my_reversal = Self::rolling_direction(kappa, vx, c.VXLOW);
+        let (kappa, alpha) = self.checked_slip(kappa, alpha);
         let sgn_vx = sgn(vx);
         let low = if vx.abs() < c.VXLOW {
             vx.abs() / c.VXLOW
@@ -115,7 +117,29 @@ impl MagicFormula {
                 &own
             }
         };
-        self.slip(l, kappa, astar, tan_a, vx, sgn_vx, low)
+        self.slip(l, kappa, astar, tan_a, vx, sgn_vx, low, low * my_reversal)
+    }
+
+    /// The rolling resistance's factor for the wheel's direction of
+    /// rotation at slip ratio `kappa` (as given, before any limit check)
+    /// and speed `vx` (MFeval's `calculateMy`): 1 while the wheel turns
+    /// forward, −1 once it spins backward (`κ < −1 − VXLOW/|Vx|`, roughly),
+    /// a quarter sine between, over the slip ratios within `VXLOW/|Vx|` of
+    /// `κ = −1`; 0 at `Vx = 0`.
+    #[inline(always)]
+    fn rolling_direction(kappa: f64, vx: f64, vxlow: f64) -> f64 {
+        if vx == 0.0 {
+            return 0.0;
+        }
+        let high = vxlow / vx.abs() - 1.0;
+        let low = -1.0 - vxlow - high;
+        if kappa > high {
+            1.0
+        } else if kappa >= low {
+            (0.5 * PI * (kappa + 1.0) / (high + 1.0)).sin()
+        } else {
+            -1.0
+        }
     }
 
     /// [`Self::prelude`] as a call (for [`super::MfAtLoad`] and the
@@ -145,7 +169,7 @@ impl MagicFormula {
             (f.shy0 + (f.kyg_gs - svyg) / f.kya_g, f.svy * low)
         };
         let ay = astar + shy;
-        let ey = (f.ey0 * (f.ey_a - f.ey_b * sgn(ay))).min(1.0);
+        let ey = self.clip_e(f.ey0 * (f.ey_a - f.ey_b * sgn(ay)));
         (ay, ey, shy, svy)
     }
 
@@ -169,13 +193,14 @@ impl MagicFormula {
         vx: f64,
         sgn_vx: f64,
         low: f64,
+        my_low: f64,
     ) -> MfOutput {
         let c = &self.coefficients;
 
         // Set-up: pure longitudinal, pure lateral at the point's camber and
         // at zero camber (6.x Mz), the weights' slopes, the trail's angles.
         let kx = kappa + l.shx;
-        let ex = (l.ex_load * (1.0 - c.PEX4 * sgn(kx)) * c.LEX).min(1.0);
+        let ex = self.clip_e(l.ex_load * (1.0 - c.PEX4 * sgn(kx)) * c.LEX);
         let (ay, ey, shy, svy) = self.lateral_input(&l.lat, astar, low);
         let (ay0, ey0, _, svy0) = self.lateral_input(&l.flat, astar, low);
         let bxa = l.rbx * cos_atan(c.RBX2 * kappa) * c.LXAL;
@@ -239,7 +264,7 @@ impl MagicFormula {
         let bt_at = l.bt * at_eq;
         let [o0, o1, o2, o3, o4, o5, o6, i_t] =
             kernels::atan([y[0], y[1], y[2], y[3], y[4], y[5], y[6], bt_at]);
-        let et = (l.et_load * (1.0 + l.et_gamma * a_et)).min(1.0);
+        let et = self.clip_e(l.et_load * (1.0 + l.et_gamma * a_et));
         let y_t = bt_at - et * (bt_at - i_t);
 
         // Stage 4: sin (pure forces) or cos (weights) of C·θ, the sine of
@@ -316,7 +341,7 @@ impl MagicFormula {
         let vr2 = vr * vr;
         let poly =
             c.QSY1 + c.QSY2 * fx / fz0 + c.QSY3 * vr.abs() + c.QSY4 * (vr2 * vr2) + l.my_gamma;
-        let my = l.my_scale * poly * l.my_powers * sgn_vx * low;
+        let my = l.my_scale * poly * l.my_powers * sgn_vx * my_low;
         MfOutput { fx, fy, mz, mx, my }
     }
 }

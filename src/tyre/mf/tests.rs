@@ -42,6 +42,7 @@ fn symmetric() -> MagicFormula {
         version: MfVersion::Mf61,
         side: TyreSide::Left,
         options: MfOptions::default(),
+        limits: Default::default(),
         coefficients: c,
     }
 }

@@ -103,8 +103,9 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
 /// camber level, the stage's rows measured (large dots) against the
 /// identified tyre at the same rows (small dots), a colour per load level,
 /// against the stage's slip (slip ratio for `Fx` and `My`, slip angle for
-/// the others), titled with the stage's σ. The y range leaves the top
-/// third to the legend, so that it covers no data.
+/// the others; the combined rows sweep it at a few slip ratios), titled
+/// with the stage's σ. The y range leaves room above the data for the
+/// legend (one entry per load), so that it covers none.
 pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[StageReport], rows: &[MfRow]) -> Figure {
     let mut panels = Vec::new();
     for s in stages.iter().filter(|s| s.skipped.is_none()) {
@@ -150,7 +151,8 @@ fn nearest(levels: &[f64], x: f64) -> f64 {
 
 fn stage_panel(tyre: &MagicFormula, s: &StageReport, rows: &[&MfRow], camber: f64) -> Panel {
     let st = s.stage;
-    let ratio = matches!(st, Stage::PureFx | Stage::CombinedFx | Stage::My);
+    // Combined rows sweep the slip angle at a few slip ratios.
+    let ratio = matches!(st, Stage::PureFx | Stage::My);
     let slip = |r: &MfRow| {
         if ratio {
             100.0 * r.kappa
@@ -173,12 +175,9 @@ fn stage_panel(tyre: &MagicFormula, s: &StageReport, rows: &[&MfRow], camber: f6
             lo = lo.min(*y);
             hi = hi.max(*y);
         }
-        series.push(
-            Series::line(&format!("{fz:.0} N measured"), &x, &measured, k).styled(Style::Points(3)),
-        );
-        series.push(
-            Series::line(&format!("{fz:.0} N fitted"), &x, &fitted, k).styled(Style::Points(1)),
-        );
+        series.push(Series::line(&format!("{fz:.0} N"), &x, &measured, k).styled(Style::Points(3)));
+        // One legend entry per load: the fitted dots share its colour.
+        series.push(Series::line("", &x, &fitted, k).styled(Style::Points(1)));
     }
     let span = (hi - lo).max(1e-9);
     let unit = match st {
@@ -203,7 +202,10 @@ fn stage_panel(tyre: &MagicFormula, s: &StageReport, rows: &[&MfRow], camber: f6
         },
         y_label: unit.into(),
         series,
-        y_range: Some((lo - 0.05 * span, hi + 0.6 * span)),
+        y_range: Some((
+            lo - 0.05 * span,
+            hi + (0.25 * loads.len() as f64 + 0.1) * span,
+        )),
         ..Panel::default()
     }
 }

@@ -71,6 +71,10 @@
 //!   with its limit checks on, inputs are saturated to the file's ranges
 //!   ([`MfLimits`]) and the curvature factors `E` clipped at 1; off, both
 //!   are evaluated as given. Turn slip (units digit 2) is not modelled.
+//!   In every mode, as MFeval: below `FZMIN`, `Mx` takes `Fz·(Fz/FZMIN)²`
+//!   and `My` `Fz·(Fz/FZMIN)`; `My` follows the wheel's direction of
+//!   rotation (it changes sign, over a quarter sine, where the wheel spins
+//!   backward past κ ≈ −1).
 //!
 //! Turn slip is off (all ζ = 1). Low speed: below `VXLOW` the vertical
 //! shifts (`SVx`, `SVy`, `SVyκ`) and `My` fade linearly with `|V|/VXLOW`, so

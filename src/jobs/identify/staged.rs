@@ -96,7 +96,14 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
     let out = o.output_path();
     let mut inputs = vec![o.data.clone()];
     inputs.extend(o.template.clone());
-    refuse_overwrites(&[out.clone(), out.with_extension("report.json")], &inputs)?;
+    refuse_overwrites(
+        &[
+            out.clone(),
+            out.with_extension("report.json"),
+            out.with_extension("png"),
+        ],
+        &inputs,
+    )?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
     let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
     let data = read_rig(&o.data)?;

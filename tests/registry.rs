@@ -186,7 +186,7 @@ fn tyre_eval_of_the_toy_is_its_closed_form() {
     }
     points.push_str("0,0,0.05,0,20\n");
     let points = write(dir.path(), "points.csv", &points);
-    let r = tyre_eval::run(&tyre, &points, &dir.path().join("forces.csv")).unwrap();
+    let r = tyre_eval::run(&tyre, &points, &dir.path().join("forces.csv"), None).unwrap();
     assert_eq!(r.model, "toy-linear");
     assert_eq!(r.count, 6);
     let fy = &r.columns.iter().find(|(n, _)| *n == "fy").unwrap().1;

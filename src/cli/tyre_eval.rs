@@ -15,11 +15,16 @@ pub struct TyreEvalArgs {
     /// Output CSV.
     #[arg(long)]
     out: PathBuf,
+    /// MFeval's useMode for a Magic Formula tyre: hundreds 1 = limit checks
+    /// on, 2 = off; tens 1 = α* off, 2 = on; units 1 = no turn slip (turn
+    /// slip is not modelled). Default 121.
+    #[arg(long, value_name = "NNN")]
+    mode: Option<u32>,
 }
 
 /// `handling tyre-eval`.
 pub fn tyre_eval(a: TyreEvalArgs) -> Result<()> {
-    let r = tyre_eval::run(&a.tyre, &a.points, &a.out)?;
+    let r = tyre_eval::run(&a.tyre, &a.points, &a.out, a.mode)?;
     r.write()?;
     println!("{}", r.wrote());
     Ok(())

@@ -18,7 +18,7 @@ mod tests;
 pub use crate::metrics::MetricsError;
 pub use fit::{DiagnosisError, FitError};
 pub use input::{CellProblem, InputError, Location};
-pub use options::{MergeInput, NameKind, OptionsError, ShardField};
+pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 use thiserror::Error;

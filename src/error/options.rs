@@ -117,6 +117,9 @@ pub enum OptionsError {
         /// The set's members.
         known: Vec<&'static str>,
     },
+    /// An MFeval `useMode` code that cannot be used.
+    #[error("--mode: {0}")]
+    Mode(#[from] ModeError),
     /// A local polish that is not one of the methods.
     #[error("unknown local method `{given}`: lm, gn or none")]
     UnknownLocalMethod {
@@ -244,5 +247,50 @@ pub enum OptionsError {
         held: usize,
         /// Units of the input.
         expected: usize,
+    },
+}
+
+/// What MFeval's `useMode` digits mean, for the messages.
+const USE_MODE_HELP: &str = "MFeval's useMode: hundreds 1 (limit checks on) or 2 (off), \
+                             tens 1 (α* off) or 2 (on), units 1 (no turn slip)";
+
+/// Why an MFeval `useMode` code is refused.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[non_exhaustive]
+pub enum ModeError {
+    /// Not three digits.
+    #[error("mode {code} is not a three-digit code ({USE_MODE_HELP})")]
+    NotThreeDigits {
+        /// The code given.
+        code: u32,
+    },
+    /// A digit outside its choices.
+    #[error("mode {code}: {place} digit {digit} is not {allowed} ({USE_MODE_HELP})")]
+    Digit {
+        /// The code given.
+        code: u32,
+        /// Which digit (`hundreds`, `tens`, `units`).
+        place: &'static str,
+        /// Its value.
+        digit: u32,
+        /// What it may be.
+        allowed: &'static str,
+    },
+    /// Turn slip (units digit 2), which the crate does not model.
+    #[error(
+        "mode {code}: turn slip (units digit 2) is not modelled; use {}1 (combined slip without turn slip)",
+        code / 10
+    )]
+    TurnSlip {
+        /// The code given.
+        code: u32,
+    },
+    /// A mode given for a tyre that is not a Magic Formula one.
+    #[error("mode {code} applies to Magic Formula tyres (.tir); this one is {model}")]
+    NotMagicFormula {
+        /// The code given.
+        code: u32,
+        /// The tyre's model.
+        model: String,
     },
 }

@@ -1,6 +1,7 @@
 //! Tyre rig files (`docs/FORMATS.md`): a CSV with the load `fz` and a
 //! lateral sweep (`alpha`, `fy`, optionally `mz`), a longitudinal sweep
-//! (`kappa`, `fx`) or both, plus optional `camber`, `pressure` and `speed`.
+//! (`kappa`, `fx`) or both, plus optional `camber`, `pressure` and `speed`,
+//! and the wheel moments `mx`, `my` ([`read_rig_moments`]).
 //! Read into [`RigData`] with every error located in the file; the data's
 //! sense is checked here (positive loads, angles in radians, the signs of
 //! the forces and the aligning moment at small slip).
@@ -15,6 +16,15 @@ use crate::identify::data::RigData;
 use crate::identify::display::significant;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
+
+/// The wheel moments of a rig file, one per sample in file order, if
+/// measured: `mx` (overturning moment) and `my` (rolling-resistance
+/// moment), N·m, ISO-W axes of a left tyre (`mx` positive about the
+/// forward axis, `my` negative while rolling forward).
+pub fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
+    let mut c = read_columns(path, &["fz"], &["mx", "my"])?;
+    Ok([c.take_optional("mx"), c.take_optional("my")])
+}
 
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
 /// `fx`) sweeps; a file with neither pair is refused.

@@ -21,6 +21,25 @@ pub struct TyreRefs {
     /// Tyre file of the rear wheels (default: the front one).
     #[serde(default)]
     pub rear: Option<PathBuf>,
+    /// MFeval's `useMode` for Magic Formula (.tir) tyres (default 121).
+    #[serde(default)]
+    pub mode: Option<u32>,
+}
+
+/// Applies a tyre table's `mode` (MFeval's `useMode`, key `key`) to the
+/// tyres read from it; the error names the key and the reason.
+pub fn apply_tyre_mode(
+    src: &TomlSource,
+    key: &str,
+    mode: Option<u32>,
+    tyres: &mut [&mut Tyre],
+) -> Result<(), InputError> {
+    let Some(code) = mode else { return Ok(()) };
+    for t in tyres {
+        super::tir::set_tyre_mode(t, code)
+            .map_err(|why| src.value_error(&ParamError::without_value(key, &why.to_string())))?;
+    }
+    Ok(())
 }
 
 /// The road.
@@ -88,11 +107,9 @@ pub fn resolve_model(
     if tyres.rear.is_some() {
         src.referenced_file("tyres.rear", &rear_path)?;
     }
-    let mut model = VehicleModel::new(
-        vehicle.clone(),
-        load_tyre(&front_path)?,
-        load_tyre(&rear_path)?,
-    );
+    let (mut front, mut rear) = (load_tyre(&front_path)?, load_tyre(&rear_path)?);
+    apply_tyre_mode(src, "tyres.mode", tyres.mode, &mut [&mut front, &mut rear])?;
+    let mut model = VehicleModel::new(vehicle.clone(), front, rear);
     model.options = options;
     Ok((model, [front_path, rear_path]))
 }

@@ -8,14 +8,20 @@
 //! file's units; the dimensional coefficients the model reads (`FNOMIN`,
 //! `UNLOADED_RADIUS`, `LONGVL`, `VXLOW`, `NOMPRES`, `INFLPRES`) are
 //! converted to SI, every other Magic Formula coefficient is dimensionless.
-//! `[MODEL]` gives `FITTYP` (the version) and `TYRESIDE`.
+//! `[MODEL]` gives `FITTYP` (the version) and `TYRESIDE`; the validity
+//! ranges (`FZMIN`/`FZMAX`, `KPUMIN`/`KPUMAX`, `ALPMIN`/`ALPMAX`,
+//! `CAMMIN`/`CAMMAX`, `PRESMIN`/`PRESMAX`) are read for MFeval's limit
+//! checks ([`crate::tyre::mf::MfMode`]), loads and pressures converted.
 //!
 //! Writing starts from the file that was read and replaces only the values
 //! the model holds (in the file's own units), so comments, sections and
 //! keys the model does not read round-trip unchanged.
 
-use crate::error::InputError;
-use crate::tyre::mf::{MagicFormula, MfCoefficients, MfOptions, MfVersion, TyreSide};
+use crate::error::{InputError, ModeError};
+use crate::tyre::mf::{
+    MagicFormula, MfCoefficients, MfLimits, MfMode, MfOptions, MfVersion, TyreSide,
+};
+use crate::tyre::Tyre;
 use std::path::{Path, PathBuf};
 
 /// The value of a `KEY = value` line.
@@ -61,10 +67,10 @@ struct Units {
 impl Units {
     fn factor(&self, key: &str) -> f64 {
         match key {
-            "FNOMIN" => self.force,
+            "FNOMIN" | "FZMIN" | "FZMAX" => self.force,
             "UNLOADED_RADIUS" => self.length,
             "LONGVL" | "VXLOW" => self.length / self.time,
-            "NOMPRES" | "INFLPRES" => self
+            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self
                 .pressure
                 .unwrap_or(self.force / (self.length * self.length)),
             _ => 1.0,
@@ -267,11 +273,16 @@ impl TirDocument {
             }
         };
         let mut c = MfCoefficients::default();
+        let mut limits = MfLimits::default();
         for (line, e) in self.entries() {
-            if c.get(&e.key).is_none() {
+            let is_limit = MfLimits::KEYS.contains(&e.key.as_str());
+            if c.get(&e.key).is_none() && !is_limit {
                 continue;
             }
             match &e.value {
+                TirValue::Number(x) if is_limit => {
+                    limits.set(&e.key, x * units.factor(&e.key));
+                }
                 TirValue::Number(x) => {
                     c.set(&e.key, x * units.factor(&e.key));
                 }
@@ -292,6 +303,7 @@ impl TirDocument {
             version,
             side,
             options: MfOptions::default(),
+            limits,
             coefficients: c,
         };
         tyre.validate().map_err(|e| match self.get(&e.key) {
@@ -375,7 +387,34 @@ pub fn write_new(tyre: &MagicFormula) -> String {
     for k in MfCoefficients::NAMES {
         s.push_str(&format!("{k:<25} = {:e}\n", c.get(k).unwrap_or(0.0)));
     }
+    let limits: Vec<_> = MfLimits::KEYS
+        .iter()
+        .filter_map(|k| tyre.limits.get(k).map(|v| (k, v)))
+        .collect();
+    if !limits.is_empty() {
+        s.push_str("[LIMITS]\n");
+        for (k, v) in limits {
+            s.push_str(&format!("{k:<25} = {v:e}\n"));
+        }
+    }
     s
+}
+
+/// Sets MFeval's `useMode` `code` (111, 121, 211, 221) on a Magic Formula
+/// tyre; the reason when the code is refused or the tyre is of another
+/// model (only the Magic Formula has modes).
+pub fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError> {
+    let mode = MfMode::from_use_mode(code)?;
+    match tyre {
+        Tyre::MagicFormula(t) => {
+            t.set_mode(mode);
+            Ok(())
+        }
+        other => Err(ModeError::NotMagicFormula {
+            code,
+            model: other.model_name().to_string(),
+        }),
+    }
 }
 
 /// Reads the Magic Formula tyre of a `.tir` file.
@@ -458,149 +497,4 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::tyre::mf::MfInput;
-
-    const SMALL: &str = "[UNITS]\nLENGTH = 'mm'\nFORCE = 'kN'\n[MODEL]\nFITTYP = 61 $ 6.1\n\
-        TYRESIDE = 'RIGHT'\nCUSTOM_KEY = 'kept as is'\n[DIMENSION]\nUNLOADED_RADIUS = 313\n\
-        [VERTICAL]\nFNOMIN = 4.0\n[LATERAL_COEFFICIENTS]\nPCY1 = 1.3 ! shape\nPDY1 = 1.1\n\
-        PKY1 = -15\nPKY2 = 1.7\nPEY1 = -0.5\nPHY1 = 0.002\n";
-
-    #[test]
-    fn units_convert_and_unknown_keys_round_trip() {
-        let p = Path::new("t.tir");
-        let doc = TirDocument::parse(p, SMALL).unwrap();
-        let t = doc.magic_formula().unwrap();
-        assert_eq!(t.coefficients.UNLOADED_RADIUS, 0.313);
-        assert_eq!(t.coefficients.FNOMIN, 4000.0);
-        assert_eq!(t.side, TyreSide::Right);
-        let text = doc.write(&t).unwrap();
-        assert!(text.contains("CUSTOM_KEY = 'kept as is'"));
-        assert!(text.contains("PCY1 = 1.3e0 ! shape"));
-        let back = TirDocument::parse(p, &text)
-            .unwrap()
-            .magic_formula()
-            .unwrap();
-        for &a in &[-0.2, -0.01, 0.0, 0.05, 0.3] {
-            let i = MfInput {
-                fz: 3500.0,
-                kappa: 0.0,
-                alpha: a,
-                camber: 0.02,
-                speed: 20.0,
-                pressure: None,
-            };
-            let (x, y) = (t.evaluate(&i), back.evaluate(&i));
-            assert!((x.fy - y.fy).abs() <= 1e-12 * x.fy.abs().max(1.0));
-        }
-    }
-
-    #[test]
-    fn errors_name_line_and_key() {
-        let p = Path::new("b.tir");
-        let e = TirDocument::parse(p, &SMALL.replace("PDY1 = 1.1", "PDY1 = 1.1x"))
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.starts_with("b.tir:14:") && e.contains("PDY1") && e.contains("1.1x"),
-            "{e}"
-        );
-        let e = TirDocument::parse(p, &SMALL.replace("FITTYP = 61", "FITTYP = 7"))
-            .unwrap()
-            .magic_formula()
-            .unwrap_err()
-            .to_string();
-        assert!(e.starts_with("b.tir:5:") && e.contains("FITTYP"), "{e}");
-        // The value as written, not as parsed (`Number(7.0)`).
-        for (written, shown) in [("7", "`7`"), ("5.0", "`5.0`"), ("'MF61'", "`'MF61'`")] {
-            let e = TirDocument::parse(
-                p,
-                &SMALL.replace("FITTYP = 61", &format!("FITTYP = {written}")),
-            )
-            .unwrap()
-            .magic_formula()
-            .unwrap_err()
-            .to_string();
-            assert!(
-                e.starts_with("b.tir:5:") && e.contains("`FITTYP`") && e.contains(shown),
-                "{e}"
-            );
-            assert!(!e.contains("Number") && !e.contains("Text"), "{e}");
-        }
-        let e = TirDocument::parse(p, &SMALL.replace("'mm'", "'furlong'"))
-            .unwrap()
-            .magic_formula()
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.starts_with("b.tir:2:") && e.contains("LENGTH") && e.contains("furlong"),
-            "{e}"
-        );
-    }
-
-    /// The library's `evaluate` (not only the CLI) reproduces MFeval's
-    /// aligning moment with camber, combined slip and both pressures.
-    #[test]
-    fn aligning_moment_with_camber_agrees_with_mfeval() {
-        for v in ["61", "62"] {
-            let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
-            let t = load_tir(&dir.join(format!("MagicFormula{v}_Parameters.tir"))).unwrap();
-            let text =
-                std::fs::read_to_string(dir.join(format!("reference_mfeval_mf{v}.csv"))).unwrap();
-            let mut n = 0;
-            for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
-                let r: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-                if r[3] == 0.0 {
-                    continue;
-                }
-                // Right-side file: the crate's (α, γ) = (α_ISO, −γ_ISO) and
-                // mz = Mz_ISO of the file.
-                let o = t.evaluate(&MfInput {
-                    fz: r[0],
-                    kappa: r[1],
-                    alpha: r[2],
-                    camber: -r[3],
-                    speed: r[4],
-                    pressure: Some(r[5]),
-                });
-                assert!(
-                    (o.mz - r[8]).abs() <= 1e-6 * r[8].abs() + 1e-6 * t.coefficients.FNOMIN,
-                    "MF{v} mz at {r:?}: {}",
-                    o.mz
-                );
-                n += 1;
-            }
-            assert_eq!(n, 3 * 2 * 2 * 13 * 7);
-        }
-    }
-
-    #[test]
-    fn public_file_written_back_gives_identical_forces() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
-        for v in ["52", "61", "62"] {
-            let path = dir.join(format!("MagicFormula{v}_Parameters.tir"));
-            let doc = TirDocument::read(&path).unwrap();
-            let t = doc.magic_formula().unwrap();
-            let text = doc.write(&t).unwrap();
-            let back = TirDocument::parse(&path, &text).unwrap();
-            assert_eq!(back.magic_formula().unwrap(), t);
-            // Keys the model does not read come back unchanged.
-            for key in ["USE_MODE", "MASS", "WIDTH"] {
-                if let Some((_, e)) = doc.get(key) {
-                    assert_eq!(back.get(key).unwrap().1.value, e.value, "{key}");
-                }
-            }
-            assert_eq!(doc.lines.len(), back.lines.len());
-        }
-        let fresh = write_new(&load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
-        let again = TirDocument::parse(Path::new("new.tir"), &fresh)
-            .unwrap()
-            .magic_formula()
-            .unwrap();
-        assert_eq!(
-            again,
-            load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap()
-        );
-    }
-}
+mod tests;

@@ -1,12 +1,18 @@
 //! `tyre-eval` as one job: a tyre file (.tir or .toml) and a CSV of points
 //! (`fz, kappa, alpha, camber, speed` and optionally `pressure`; SI, rad,
 //! Pa) in; the same points with `fx, fy, mz` (and `mx, my` for the Magic
-//! Formula) out.
+//! Formula) out. A Magic Formula tyre is evaluated in one of MFeval's modes
+//! (`useMode`, default 121: limit checks on, `α*` on); with the limit
+//! checks on, the points outside the file's ranges are counted (they are
+//! evaluated at the limits, as MFeval does).
 
 use crate::error::Error;
+use crate::io::tir::set_tyre_mode;
 use crate::io::{load_tyre, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
+use crate::tyre::mf::MfInput;
 use crate::tyre::PointForces;
+use crate::tyre::Tyre;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -19,6 +25,12 @@ pub struct TyreEvalReport {
     pub count: usize,
     /// The tyre model.
     pub model: &'static str,
+    /// MFeval's `useMode` the Magic Formula was evaluated in (`None` for
+    /// other models).
+    pub mode: Option<u32>,
+    /// Points outside the `.tir` file's ranges, evaluated at the limits
+    /// (limit checks on; 0 otherwise).
+    pub clamped: usize,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -28,10 +40,19 @@ pub struct TyreEvalReport {
 }
 
 /// Evaluates the tyre of `tyre_path` at the points of `points`, for the
-/// output file `out` (never one of the inputs).
-pub fn run(tyre_path: &Path, points: &Path, out: &Path) -> Result<TyreEvalReport, Error> {
+/// output file `out` (never one of the inputs); `mode` is MFeval's
+/// `useMode` for a Magic Formula tyre (`None`: 121).
+pub fn run(
+    tyre_path: &Path,
+    points: &Path,
+    out: &Path,
+    mode: Option<u32>,
+) -> Result<TyreEvalReport, Error> {
     refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
-    let tyre = load_tyre(tyre_path)?;
+    let mut tyre = load_tyre(tyre_path)?;
+    if let Some(code) = mode {
+        set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
+    }
     let mut c = read_columns(
         points,
         &["fz", "kappa", "alpha", "camber", "speed"],
@@ -60,6 +81,25 @@ pub fn run(tyre_path: &Path, points: &Path, out: &Path) -> Result<TyreEvalReport
         tyre.evaluate_points(col(0), col(1), col(2), col(3), col(4), &p)
     };
     let count = columns[0].1.len();
+    let (mode, clamped) = match &tyre {
+        Tyre::MagicFormula(t) => {
+            let col = |i: usize| &columns[i].1;
+            let n = (0..count)
+                .filter(|&i| {
+                    t.is_clamped(&MfInput {
+                        fz: col(0)[i],
+                        kappa: col(1)[i],
+                        alpha: col(2)[i],
+                        camber: col(3)[i],
+                        speed: col(4)[i],
+                        pressure: pressure.as_ref().map(|p| p[i]),
+                    })
+                })
+                .count();
+            (Some(t.mode().use_mode()), n)
+        }
+        _ => (None, 0),
+    };
     if let Some(p) = pressure {
         columns.push(("pressure", p));
     }
@@ -77,6 +117,8 @@ pub fn run(tyre_path: &Path, points: &Path, out: &Path) -> Result<TyreEvalReport
         points: points.display().to_string(),
         count,
         model: tyre.model_name(),
+        mode,
+        clamped,
         columns,
         out: out.to_path_buf(),
     })
@@ -89,10 +131,20 @@ impl TyreEvalReport {
         write_columns(&self.out, &cols)
     }
 
-    /// The closing line.
+    /// The closing line (with the mode and the points evaluated at the
+    /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
+        let mode = match self.mode {
+            Some(m) if self.clamped > 0 => format!(
+                " in MFeval mode {m}; {} of them outside the file's limits, \
+                 evaluated at the limits",
+                self.clamped
+            ),
+            Some(m) => format!(" in MFeval mode {m}"),
+            None => String::new(),
+        };
         format!(
-            "{} points of {} ({} tyre) evaluated; wrote {}",
+            "{} points of {} ({} tyre) evaluated{mode}; wrote {}",
             self.count,
             self.points,
             self.model,

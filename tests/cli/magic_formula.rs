@@ -284,6 +284,14 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
     for (tir, v, fnomin, n, right) in [
         ("MagicFormula61_Parameters", "mf61", 6752.0, 1638, true),
         ("MagicFormula62_Parameters", "mf62", 6752.0, 1638, true),
+        // QSY7 = 0 (derived from the 6.1 file): a 6.x My without load power.
+        (
+            "MagicFormula61_QSY7_zero",
+            "mf61_qsy7_zero",
+            6752.0,
+            1638,
+            true,
+        ),
         ("MagicFormula52_Parameters", "mf52", 9416.6, 819, false),
         ("chrono_Sedan_Pac02Tire", "chrono_sedan", 4850.0, 819, false),
         (
@@ -343,4 +351,186 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
         // The camber rows carry aligning moments worth checking.
         assert!(cambered_mz > n / 3, "{v}: {cambered_mz}");
     }
+}
+
+/// MFeval's four modes without turn slip (useMode 121, 111, 221, 211) on a
+/// grid that reaches past each file's `[*_LIMITS]` ranges (load above
+/// `FZMAX` and below `FZMIN`, slip ratio, slip angle, inclination and
+/// pressure outside theirs; κ past −1, where `My` turns with the wheel):
+/// `tyre-eval --mode` equals MFeval's numbers to 1e-6 of FNOMIN (forces)
+/// and of FNOMIN·R0 (moments). The modes give different numbers on this
+/// grid, so a mode read wrongly fails.
+#[test]
+fn tyre_eval_modes_agree_with_mfeval_past_the_limits() {
+    // (.tir file, reference, FNOMIN, UNLOADED_RADIUS, rows per mode, right)
+    for (tir, v, fnomin, r0, n, right) in [
+        (
+            "MagicFormula61_Parameters",
+            "mf61",
+            6752.0,
+            0.3943,
+            384,
+            true,
+        ),
+        ("MagicFormula52_Parameters", "mf52", 9416.6, 0.4, 192, false),
+        (
+            "chrono_Sedan_Pac02Tire",
+            "chrono_sedan",
+            4850.0,
+            0.344,
+            192,
+            false,
+        ),
+        (
+            "chrono_HMMWV_Pac02Tire",
+            "chrono_hmmwv",
+            35000.0,
+            0.4699,
+            192,
+            false,
+        ),
+        (
+            "chrono_mf_185_80R14",
+            "chrono_microbus",
+            3800.0,
+            0.376,
+            192,
+            false,
+        ),
+    ] {
+        let rows = reference(&format!("modes_{v}"));
+        let (sa, sg, mirror) = if right {
+            (1.0, -1.0, -1.0)
+        } else {
+            (-1.0, 1.0, 1.0)
+        };
+        let mut by_mode = Vec::new();
+        for mode in [121.0, 111.0, 221.0, 211.0] {
+            let sel: Vec<_> = rows.iter().filter(|r| r[6] == mode).collect();
+            assert_eq!(sel.len(), n, "{v} {mode}");
+            let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
+            for r in &sel {
+                let (a, g) = (sa * r[2], sg * r[3]);
+                pts.push_str(&format!("{},{},{a},{g},{},{}\n", r[0], r[1], r[4], r[5]));
+            }
+            let dir = scratch(&[("points.csv", &pts)]);
+            let out = dir.path().join("forces.csv");
+            let tir_path = root().join(format!("tests/fixtures/tir/{tir}.tir"));
+            let o = run(&[
+                "tyre-eval",
+                tir_path.to_str().unwrap(),
+                dir.path().join("points.csv").to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--mode",
+                &format!("{mode}"),
+            ]);
+            assert!(o.status.success(), "{}", stderr(&o));
+            // Limit checks on: the points evaluated at the limits are
+            // counted, once for the batch; off: none is.
+            let said = String::from_utf8_lossy(&o.stdout).to_string();
+            assert!(said.contains(&format!("MFeval mode {mode}")), "{said}");
+            assert_eq!(
+                said.contains("outside the file's limits"),
+                mode < 200.0,
+                "{said}"
+            );
+            let (head, got) = read_out(&out);
+            for (r, g) in sel.iter().zip(&got) {
+                for (name, i, sign, scale) in [
+                    ("fx", 7, 1.0, fnomin),
+                    ("fy", 8, mirror, fnomin),
+                    ("mz", 9, -mirror, fnomin * r0),
+                    ("mx", 10, mirror, fnomin * r0),
+                    ("my", 11, 1.0, fnomin * r0),
+                ] {
+                    let (want, have) = (sign * r[i], g[col(&head, name)]);
+                    assert!(
+                        (have - want).abs() <= 1e-6 * scale,
+                        "{v} mode {mode} {name} at {r:?}: {have} vs {want}"
+                    );
+                }
+            }
+            by_mode.push(got);
+        }
+        // The limit checks and α* each move some point's fy by > 1 N
+        // (columns: the six inputs, then fx, fy, …).
+        let fy = 7;
+        let moved = |a: usize, b: usize| {
+            by_mode[a]
+                .iter()
+                .zip(&by_mode[b])
+                .filter(|(x, y)| (x[fy] - y[fy]).abs() > 1.0)
+                .count()
+        };
+        assert!(moved(0, 2) > 0 && moved(0, 1) > 0, "{v}");
+    }
+}
+
+#[test]
+fn a_turn_slip_mode_or_a_mode_on_another_model_is_refused_by_name() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let dir = scratch(&[
+        ("p.csv", "fz,kappa,alpha,camber,speed\n4000,0,0.1,0,20\n"),
+        (
+            "linear.toml",
+            "model = \"linear\"\ncornering_stiffness = 80000\n",
+        ),
+    ]);
+    let out = dir.path().join("f.csv");
+    let eval = |tyre: &Path, mode: &str| {
+        let o = run(&[
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            dir.path().join("p.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--mode",
+            mode,
+        ]);
+        assert!(!o.status.success());
+        assert!(!out.exists());
+        stderr(&o)
+    };
+    let e = eval(&tir, "122");
+    assert!(
+        e.contains("--mode") && e.contains("turn slip") && e.contains("121"),
+        "{e}"
+    );
+    let e = eval(&tir, "131");
+    assert!(e.contains("tens digit 3"), "{e}");
+    let e = eval(&dir.path().join("linear.toml"), "121");
+    assert!(e.contains("Magic Formula") && e.contains("linear"), "{e}");
+}
+
+/// The `[tyres]` table's `mode` reaches the .tir tyres of a scenario: a
+/// turn-slip mode is refused with the file, line and key; 221 runs.
+#[test]
+fn scenario_tyre_mode_key_is_read_and_checked() {
+    let tir = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
+        .unwrap();
+    let sc =
+        |mode: u32| format!("{VEHICLE}\n[tyres]\nfront = \"tyre.tir\"\nmode = {mode}\n\n{STEP}");
+    let dir = scratch(&[
+        ("bad.toml", &sc(122)),
+        ("off.toml", &sc(221)),
+        ("tyre.tir", &tir),
+    ]);
+    let sim = |name: &str| {
+        run(&[
+            "simulate",
+            dir.path().join(name).to_str().unwrap(),
+            "--out",
+            dir.path().join(format!("{name}.out")).to_str().unwrap(),
+        ])
+    };
+    let o = sim("bad.toml");
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("bad.toml:") && e.contains("tyres.mode") && e.contains("turn slip"),
+        "{e}"
+    );
+    let o = sim("off.toml");
+    assert!(o.status.success(), "{}", stderr(&o));
 }

@@ -406,3 +406,114 @@ fn mf61_refuses_combined_slip_rig_data_with_fx_reversed() {
         assert!(e.contains(says), "{says}: {e}");
     }
 }
+
+/// Rig data with the wheel moments: the truth's `fx`, `fy`, `mz`, `mx`,
+/// `my` with 1 % multiplicative Gaussian noise (seed 2) at the rig points
+/// (pure and combined slip). The combined-slip `Mz`, `Mx` and `My` stages
+/// run after Wei et al.'s five, each with its σ, standard errors and held
+/// parameters, and the fitted file — started from the data, with only the
+/// constants known — predicts a grid of pure and combined slip within 2 %
+/// (forces) and 5 % (moments) of each channel's RMS.
+#[test]
+fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    fs::write(d.join("points.csv"), rig_points()).unwrap();
+    let clean = d.join("clean.csv");
+    let eval = |tir: &Path, pts: &Path, out: &Path| {
+        let o = run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            pts.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        table(out)
+    };
+    let (head, rows) = eval(&root().join(TRUTH), &d.join("points.csv"), &clean);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(2);
+    let channels = ["fx", "fy", "mz", "mx", "my"];
+    let mut s = String::from("fz,kappa,alpha,camber,speed,fx,fy,mz,mx,my\n");
+    for r in &rows {
+        s += &["fz", "kappa", "alpha", "camber", "speed"]
+            .map(|c| r[at(&head, c)].to_string())
+            .join(",");
+        for c in channels {
+            let g = handling::identify::data::gauss(&mut rng);
+            s += &format!(",{}", r[at(&head, c)] * (1.0 + 0.01 * g));
+        }
+        s += "\n";
+    }
+    fs::write(d.join("rig.csv"), s).unwrap();
+    fs::write(d.join("constants.tir"), CONSTANTS_TIR).unwrap();
+    let report = identify(d, &d.join("constants.tir"), "data", "fit.tir");
+    for name in ["combined-mz", "mx", "my"] {
+        let st = stage(&report, name);
+        assert!(st["skipped"].is_null(), "{name}: {}", st["skipped"]);
+        assert!(st["sigma_percent"].as_f64().unwrap() < 5.0, "{name}: {st}");
+        let params = st["parameters"].as_array().unwrap();
+        assert!(params
+            .iter()
+            .filter(|p| p["free"] == true)
+            .all(|p| p["std_error"].as_f64().is_some()));
+        if name != "combined-mz" {
+            assert!(
+                params.iter().any(|p| p["held_because"].is_string()),
+                "{name}"
+            );
+        }
+    }
+    // One σ: pooled over every raw sample and channel, as recomputed here
+    // from the written file through tyre-eval.
+    let (fh, fitted) = eval(&d.join("fit.tir"), &d.join("points.csv"), &d.join("fr.csv"));
+    let (rh, rig) = table(&d.join("rig.csv"));
+    let (mut e2, mut y2) = (0.0, 0.0);
+    for (f, r) in fitted.iter().zip(&rig) {
+        for c in channels {
+            e2 += (f[at(&fh, c)] - r[at(&rh, c)]).powi(2);
+            y2 += r[at(&rh, c)].powi(2);
+        }
+    }
+    let pooled = &report["sigma_pooled"];
+    assert_eq!(pooled["samples"], rig.len());
+    assert_eq!(pooled["channels"].as_array().unwrap().len(), 5);
+    let reported = pooled["sigma_percent"].as_f64().unwrap();
+    let again = 100.0 * (e2 / y2).sqrt();
+    assert!(
+        (reported - again).abs() < 1e-9 * again,
+        "{reported} vs {again}"
+    );
+    // A grid of pure and combined slip, camber 0 and 1°, between the rig's
+    // loads.
+    let mut g = String::from("fz,kappa,alpha,camber,speed\n");
+    for fz in [2500.0, 4000.0, 5500.0] {
+        for gamma in [0.0, 1f64.to_radians()] {
+            for k in [-0.15, -0.03, 0.0, 0.04, 0.12] {
+                for a in [-7.0, -2.5, 0.0, 1.5, 5.0, 10.0f64] {
+                    g += &format!("{fz},{k},{},{gamma},16.7\n", a.to_radians());
+                }
+            }
+        }
+    }
+    fs::write(d.join("grid.csv"), g).unwrap();
+    let (th, truth) = eval(&root().join(TRUTH), &d.join("grid.csv"), &d.join("t.csv"));
+    let (fh, fit) = eval(&d.join("fit.tir"), &d.join("grid.csv"), &d.join("f.csv"));
+    for (c, tol) in [
+        ("fx", 0.02),
+        ("fy", 0.02),
+        ("mz", 0.05),
+        ("mx", 0.05),
+        ("my", 0.05),
+    ] {
+        let (mut e2, mut y2) = (0.0, 0.0);
+        for (t, f) in truth.iter().zip(&fit) {
+            let y = t[at(&th, c)];
+            e2 += (f[at(&fh, c)] - y).powi(2);
+            y2 += y * y;
+        }
+        let rel = (e2 / y2).sqrt();
+        println!("{c}: RMS error {:.3} % of the RMS", 100.0 * rel);
+        assert!(rel <= tol, "{c}: {:.3} % of its RMS", 100.0 * rel);
+    }
+}

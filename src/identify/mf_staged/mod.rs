@@ -6,7 +6,13 @@
 //! longitudinal force (the weighting `Gxα`, with the pure `Fx` parameters
 //! fixed) and combined-slip lateral force (`Gyκ` and `SVyκ`, with the pure
 //! `Fy` parameters fixed). Each stage minimises `E = Σ(F_model − F_test)²`
-//! over its rows.
+//! over its rows. Three stages the paper leaves out follow in the same
+//! manner: the combined-slip aligning moment's `Fx` arm `s` (`SSZ1..4`, on
+//! the combined rows' `mz`, the pure `Mz` fixed), the overturning moment
+//! `Mx` (`QSX*`, on every row with an `mx`, the `Fy` fixed) and the
+//! rolling-resistance moment `My` (`QSY*`, on every row with an `my`;
+//! `QSY3`, `QSY4`, the speed terms, held: one rig speed). `Mx`'s sine and
+//! load terms start off zero, where their gradients would vanish together.
 //!
 //! What a stage fits is what its rows can identify: a load-dependent term
 //! (`PDX2`, `PKY2`, …) needs two load levels, a load-squared one (`PEX3`,
@@ -23,7 +29,8 @@
 //! `QBZ9` is held: beside `QBZ10·By·Cy` it is a second constant in the
 //! residual torque's slope that rig data barely separate.
 //!
-//! Rows: a row is *pure longitudinal* when `|α| ≤ 1e-3 rad`, *pure lateral*
+//! Rows: the wheel moments `mx`, `my` ride on the rows of files whose
+//! samples are rows (with `kappa`, `fx`). A row is *pure longitudinal* when `|α| ≤ 1e-3 rad`, *pure lateral*
 //! when `|κ| ≤ 1e-3`, *combined* otherwise. A stage whose columns or rows
 //! are missing is skipped and says why; it is not an error.
 //!
@@ -47,7 +54,8 @@
 //!
 //! Residual metric: the paper's residual table lost its formula in the
 //! surviving text; this module reports `σ = sqrt(Σe²/ΣF_test²)·100 %` per
-//! stage, the definition of Zhang & Li (2017) used throughout the crate
+//! stage over its rows, and one overall figure, the same σ pooled over
+//! every raw sample and measured channel ([`pooled_sigma`]), the definition of Zhang & Li (2017) used throughout the crate
 //! ([`super::sigma_of`]), which is what a percentage residual of a force
 //! channel means there.
 //!
@@ -69,11 +77,13 @@
 
 mod paper_lm;
 mod params;
+mod sigma;
 mod stages;
 mod start;
 
 pub use paper_lm::paper_lm;
 pub use params::Stage;
+pub use sigma::{pooled_sigma, raw_rows, ChannelSigma, PooledSigma};
 
 use super::data::{RigData, RigError};
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
@@ -119,6 +129,10 @@ pub struct MfRow {
     pub fy: f64,
     /// Aligning moment, N·m.
     pub mz: f64,
+    /// Overturning moment, N·m (ISO-W, of a left tyre).
+    pub mx: f64,
+    /// Rolling-resistance moment, N·m (ISO-W: negative rolling forward).
+    pub my: f64,
 }
 
 impl MfRow {
@@ -162,13 +176,18 @@ pub struct Prepared {
 /// samples) is grouped into load / camber / pressure conditions and thinned
 /// by averaging within `alpha_bin` slip-angle bins
 /// ([`super::grouping::group`]; 0: no thinning), the account reported.
-/// Speed defaults to `default_speed` where the file has none.
+/// Speed defaults to `default_speed` where the file has none. The wheel
+/// moments `moments` (`mx`, `my`, one per sample, if measured) are kept on
+/// the rows of a file whose samples are rows; thinning averages only the
+/// forces and `mz`, so a lateral-only file's rows carry none.
 pub fn prepare(
     path: &Path,
     d: &RigData,
+    moments: &[Option<Vec<f64>>; 2],
     alpha_bin: f64,
     default_speed: f64,
 ) -> Result<Prepared, InputError> {
+    let moment = |k: usize, i: usize| moments[k].as_ref().map_or(f64::NAN, |m| m[i]);
     let speed = |i: usize| d.speed.as_ref().map_or(default_speed, |s| s[i]);
     if let Some((kappa, fx)) = &d.longitudinal {
         let rows = (0..d.len())
@@ -182,6 +201,8 @@ pub fn prepare(
                 fx: fx[i],
                 fy: d.fy[i],
                 mz: d.mz.as_ref().map_or(f64::NAN, |m| m[i]),
+                mx: moment(0, i),
+                my: moment(1, i),
             })
             .collect::<Vec<_>>();
         return Ok(Prepared {
@@ -217,6 +238,8 @@ pub fn prepare(
                 fx: f64::NAN,
                 fy: q.fy(),
                 mz: q.mz(),
+                mx: f64::NAN,
+                my: f64::NAN,
             })
         })
         .collect();
@@ -292,7 +315,7 @@ pub struct StageReport {
     pub levels: [usize; 3],
     /// σ = sqrt(Σe²/ΣF²)·100 % at the start.
     pub sigma_start_percent: f64,
-    /// σ at the end, %.
+    /// σ of the identified tyre over the stage's rows, %.
     pub sigma_percent: f64,
     /// Wei et al. (2010)'s residual for this case, %.
     pub paper_sigma_percent: f64,
@@ -348,11 +371,6 @@ pub struct StagedReport {
     pub nompres: f64,
     /// The stages in order.
     pub stages: Vec<StageReport>,
-    /// σ over the fitted lateral force and aligning moment rows together,
-    /// each channel's squared errors relative to its own ΣF² —
-    /// `sqrt((Σe²_Fy/ΣFy² + Σe²_Mz/ΣMz²)/2)·100 %` — so the moment counts as
-    /// much as the force (`None` unless both were fitted).
-    pub sigma_fy_mz_percent: Option<f64>,
     /// Wall time, s.
     pub seconds: f64,
 }
@@ -371,7 +389,6 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
     let mut reports: Vec<StageReport> = Vec::new();
-    let mut fy_mz: [Option<(f64, f64)>; 2] = [None, None];
     for stage in Stage::ALL {
         if let Some(need) = stage.needs() {
             if reports
@@ -393,14 +410,6 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
             settings.start,
             settings.max_iterations,
         );
-        if rep.skipped.is_none() {
-            let (_, _, e2, y2) = sigma(stage, &tyre, &sel);
-            match stage {
-                Stage::PureFy => fy_mz[0] = Some((e2, y2)),
-                Stage::PureMz => fy_mz[1] = Some((e2, y2)),
-                _ => {}
-            }
-        }
         reports.push(rep);
     }
     if reports.iter().all(|r| r.skipped.is_some()) {
@@ -434,10 +443,15 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
             }
         }
     }
-    let sigma_fy_mz_percent = match fy_mz {
-        [Some((e1, y1)), Some((e2, y2))] => Some(100.0 * ((e1 / y1 + e2 / y2) / 2.0).sqrt()),
-        _ => None,
-    };
+    // Each stage's σ and RMS of the final tyre (a later stage may move a
+    // channel an earlier one fitted: `SSZ*` the pure rows' `Mz` through
+    // their small `Fx`), so that the written file reproduces them.
+    for r in reports.iter_mut().filter(|r| r.skipped.is_none()) {
+        let sel: Vec<&MfRow> = rows.iter().filter(|row| r.stage.takes(row)).collect();
+        let (sigma_percent, rms, _, _) = sigma(r.stage, &tyre, &sel);
+        r.sigma_percent = sigma_percent;
+        r.rms = rms;
+    }
     Ok(Identified {
         report: StagedReport {
             version: tyre.version,
@@ -446,7 +460,6 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
             fnomin: tyre.coefficients.FNOMIN,
             nompres: tyre.coefficients.NOMPRES,
             stages: reports,
-            sigma_fy_mz_percent,
             seconds: t0.elapsed().as_secs_f64(),
         },
         tyre,

@@ -7,7 +7,9 @@ use super::{MfRow, PURE_TOL};
 use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
 
-/// The five cases of Wei et al. (2010), in their order.
+/// The five cases of Wei et al. (2010), in their order, then the stages
+/// they leave out: combined-slip aligning moment (`s·Fx`), overturning
+/// moment and rolling-resistance moment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Stage {
@@ -21,19 +23,30 @@ pub enum Stage {
     CombinedFx,
     /// Combined-slip lateral force.
     CombinedFy,
+    /// Combined-slip aligning moment: the moment arm `s` of `Fx`
+    /// (`SSZ1..4`), from the combined rows' `mz`.
+    CombinedMz,
+    /// Overturning moment `Mx` (`QSX*`), from every row with an `mx`.
+    Mx,
+    /// Rolling-resistance moment `My` (`QSY*`), from every row with an `my`.
+    My,
 }
 
 impl Stage {
     /// All stages in order.
-    pub const ALL: [Stage; 5] = [
+    pub const ALL: [Stage; 8] = [
         Stage::PureFx,
         Stage::PureFy,
         Stage::PureMz,
         Stage::CombinedFx,
         Stage::CombinedFy,
+        Stage::CombinedMz,
+        Stage::Mx,
+        Stage::My,
     ];
 
-    /// The residual Wei et al. (2010) report for this case, %.
+    /// The residual Wei et al. (2010) report for this case, % (NaN for the
+    /// stages the paper does not fit).
     pub fn paper_sigma_percent(self) -> f64 {
         match self {
             Stage::PureFx => 1.03,
@@ -41,6 +54,7 @@ impl Stage {
             Stage::PureMz => 4.82,
             Stage::CombinedFx => 1.96,
             Stage::CombinedFy => 3.01,
+            Stage::CombinedMz | Stage::Mx | Stage::My => f64::NAN,
         }
     }
 
@@ -52,35 +66,45 @@ impl Stage {
             Stage::PureMz => "pure Mz",
             Stage::CombinedFx => "combined Fx",
             Stage::CombinedFy => "combined Fy",
+            Stage::CombinedMz => "combined Mz",
+            Stage::Mx => "Mx",
+            Stage::My => "My",
         }
     }
 
-    pub(super) fn measured(self, r: &MfRow) -> f64 {
+    /// The measured value of this stage's channel in a row (NaN: not measured).
+    pub fn measured(self, r: &MfRow) -> f64 {
         match self {
             Stage::PureFx | Stage::CombinedFx => r.fx,
             Stage::PureFy | Stage::CombinedFy => r.fy,
-            Stage::PureMz => r.mz,
+            Stage::PureMz | Stage::CombinedMz => r.mz,
+            Stage::Mx => r.mx,
+            Stage::My => r.my,
         }
     }
 
-    pub(super) fn model(self, t: &MagicFormula, r: &MfRow) -> f64 {
+    /// The tyre's value of this stage's channel at a row.
+    pub fn model(self, t: &MagicFormula, r: &MfRow) -> f64 {
         let o = t.evaluate(&r.input());
         match self {
             Stage::PureFx | Stage::CombinedFx => o.fx,
             Stage::PureFy | Stage::CombinedFy => o.fy,
-            Stage::PureMz => o.mz,
+            Stage::PureMz | Stage::CombinedMz => o.mz,
+            Stage::Mx => o.mx,
+            Stage::My => o.my,
         }
     }
 
     /// Whether a row belongs to this stage (its channel measured).
-    pub(super) fn takes(self, r: &MfRow) -> bool {
+    pub fn takes(self, r: &MfRow) -> bool {
         let pure_a = r.alpha.abs() <= PURE_TOL;
         let pure_k = r.kappa.abs() <= PURE_TOL;
         self.measured(r).is_finite()
             && match self {
                 Stage::PureFx => pure_a,
                 Stage::PureFy | Stage::PureMz => pure_k,
-                Stage::CombinedFx | Stage::CombinedFy => !pure_a && !pure_k,
+                Stage::CombinedFx | Stage::CombinedFy | Stage::CombinedMz => !pure_a && !pure_k,
+                Stage::Mx | Stage::My => true,
             }
     }
 
@@ -88,8 +112,10 @@ impl Stage {
     pub(super) fn needs(self) -> Option<Stage> {
         match self {
             Stage::PureFx | Stage::PureFy => None,
-            Stage::PureMz | Stage::CombinedFy => Some(Stage::PureFy),
+            Stage::PureMz | Stage::CombinedFy | Stage::Mx => Some(Stage::PureFy),
             Stage::CombinedFx => Some(Stage::PureFx),
+            Stage::CombinedMz => Some(Stage::PureMz),
+            Stage::My => None,
         }
     }
 
@@ -100,6 +126,9 @@ impl Stage {
             Stage::PureMz => PURE_MZ,
             Stage::CombinedFx => COMBINED_FX,
             Stage::CombinedFy => COMBINED_FY,
+            Stage::CombinedMz => COMBINED_MZ,
+            Stage::Mx => MX,
+            Stage::My => MY,
         }
     }
 }
@@ -244,6 +273,44 @@ const COMBINED_FY: &[(&str, Need)] = &[
     ("RVY4", ANY),
     ("RVY5", ANY),
     ("RVY6", ANY),
+];
+
+const COMBINED_MZ: &[(&str, Need)] = &[("SSZ1", ANY), ("SSZ2", ANY), ("SSZ3", C2), ("SSZ4", C2L2)];
+
+/// The TNO 6.1 overturning moment. The cosine-of-load times
+/// sine-of-camber-and-force term (`QSX4..QSX9`) and the arctangent load
+/// term (`QSX10`, `QSX11`) start off zero (`start.rs`): at zero their
+/// gradients vanish together.
+const MX: &[(&str, Need)] = &[
+    ("QSX1", ANY),
+    ("QSX2", C2),
+    ("QSX3", ANY),
+    ("QSX4", ANY),
+    ("QSX5", L2),
+    ("QSX6", L2),
+    ("QSX7", C2),
+    ("QSX8", ANY),
+    ("QSX9", ANY),
+    ("QSX10", C2),
+    ("QSX11", C2L2),
+    ("QSX12", C3),
+    ("QSX13", L2),
+    ("QSX14", C2L2),
+    ("PPMX1", P2C2),
+];
+
+/// The TNO 6.1 rolling resistance (eq. A48). `QSY3`, `QSY4` (speed) are
+/// held: the levels counted are load, camber and pressure, and a rig test
+/// usually runs at one speed.
+const MY: &[(&str, Need)] = &[
+    ("QSY1", ANY),
+    ("QSY2", ANY),
+    ("QSY3", HELD),
+    ("QSY4", HELD),
+    ("QSY5", C2),
+    ("QSY6", C2L2),
+    ("QSY7", L2),
+    ("QSY8", P2),
 ];
 
 /// Coefficients whose sign the model cannot see (they enter through

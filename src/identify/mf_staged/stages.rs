@@ -174,6 +174,11 @@ fn skip_reason(stage: Stage, rows: usize, free: usize) -> String {
         Stage::CombinedFy => {
             "no combined-slip rows with a measured `fy` (both |κ| and |α| above 1e-3)"
         }
+        Stage::CombinedMz => {
+            "no combined-slip rows with a measured `mz` (both |κ| and |α| above 1e-3)"
+        }
+        Stage::Mx => "no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)",
+        Stage::My => "no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)",
     }
     .into()
 }

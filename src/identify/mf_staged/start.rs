@@ -35,6 +35,7 @@ pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
             version: s.version,
             side: TyreSide::Left,
             options: MfOptions::default(),
+            limits: Default::default(),
             coefficients: c,
         }
     });
@@ -247,6 +248,22 @@ pub(super) fn data_start(
         Stage::CombinedFx => {
             out.extend([("RBX1", 10.0), ("RBX2", 8.0), ("RCX1", 1.0), ("REX1", 0.0)]);
         }
+        Stage::CombinedMz => {}
+        // Off zero, where the products' gradients vanish: a unit sine
+        // amplitude over a gentle load cosine and a small force slope.
+        Stage::Mx => out.extend([
+            ("QSX4", 1.0),
+            ("QSX5", 0.5),
+            ("QSX6", 1.0),
+            ("QSX7", 0.5),
+            ("QSX8", 1.0),
+            ("QSX9", 0.1),
+            ("QSX10", 0.1),
+            ("QSX11", 1.0),
+        ]),
+        // The load power multiplies the polynomial: QSY1 starts at a
+        // typical rolling-resistance coefficient, not at 0.
+        Stage::My => out.push(("QSY1", 0.01)),
         Stage::CombinedFy => {
             out.extend([
                 ("RBY1", 10.0),

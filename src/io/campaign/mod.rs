@@ -29,7 +29,7 @@
 mod runs;
 
 use super::rig::read_rig;
-use super::tables::{check_road, check_vehicle, load_tyre, Road};
+use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
@@ -56,6 +56,8 @@ pub struct TyreSpec {
     pub rig: Option<PathBuf>,
     /// Model fitted to the rig data (default pac89).
     pub model: Option<String>,
+    /// MFeval's `useMode` for Magic Formula (.tir) tyre files (default 121).
+    pub mode: Option<u32>,
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -254,17 +256,17 @@ fn base_tyres(
             (Some(t), None, None, None) => {
                 inputs.push(base.join(t));
                 src.referenced_file("tyres.file", &base.join(t))?;
-                let t = load_tyre(&base.join(t))?;
+                let mut t = load_tyre(&base.join(t))?;
+                apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
                 return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
             }
             (None, Some(fr), Some(re), None) => {
                 inputs.extend([base.join(fr), base.join(re)]);
                 src.referenced_file("tyres.front", &base.join(fr))?;
                 src.referenced_file("tyres.rear", &base.join(re))?;
-                return Ok(BaseTyres::Given(
-                    Box::new(load_tyre(&base.join(fr))?),
-                    Box::new(load_tyre(&base.join(re))?),
-                ));
+                let (mut f, mut r) = (load_tyre(&base.join(fr))?, load_tyre(&base.join(re))?);
+                apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
+                return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
             }
             (None, None, None, Some(rig)) => {
                 src.referenced_file("tyres.rig", &base.join(rig))?;

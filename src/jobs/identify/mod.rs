@@ -153,7 +153,7 @@ impl IdentifyReport {
     pub fn outputs(&self) -> Vec<PathBuf> {
         match self {
             IdentifyReport::Swarm(r) => outputs(&r.options, true),
-            IdentifyReport::Staged(r) => outputs(&r.options, false),
+            IdentifyReport::Staged(r) => outputs(&r.options, true),
         }
     }
 
@@ -200,7 +200,8 @@ impl IdentifyReport {
             }
             IdentifyReport::Staged(r) => {
                 write_bytes(&files[0], r.tir.as_bytes())?;
-                write_json_sorted(&files[1], r)
+                write_json_sorted(&files[1], r)?;
+                r.figure.save(&files[2])
             }
         }
     }
@@ -215,8 +216,8 @@ impl IdentifyReport {
         match self {
             IdentifyReport::Swarm(_) => format!("wrote {}, {} and {}", f[0], f[1], f[2]),
             IdentifyReport::Staged(r) => format!(
-                "identified in {:.2} s; wrote {} and {}",
-                r.report.seconds, f[0], f[1]
+                "identified in {:.2} s; wrote {}, {} and {}",
+                r.report.seconds, f[0], f[1], f[2]
             ),
         }
     }

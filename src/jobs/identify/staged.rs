@@ -1,13 +1,16 @@
 //! `identify --model mf61|mf62` as one job: Wei et al.'s (2010) five stages
-//! ([`crate::identify::mf_staged`]) on rig data, the result written as a .tir (a
+//! and the combined `Mz`, `Mx` and `My` stages after them
+//! ([`crate::identify::mf_staged`]) on rig data (with its `mx`, `my`
+//! columns when measured), the result written as a .tir (a
 //! template's constants and layout kept) that is read back and checked to
 //! reproduce the fitted forces.
 
 use super::{IdentifyModel, Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
-use crate::identify::mf_staged::{self, RowAccount, StagedReport, StartScheme};
-use crate::io::rig::read_rig;
+use crate::identify::mf_staged::{self, PooledSigma, RowAccount, StagedReport, StartScheme};
+use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
+use crate::report::plot::Figure;
 use crate::report::refuse_overwrites;
 use crate::tyre::mf::MfVersion;
 use serde::Serialize;
@@ -22,6 +25,9 @@ pub struct StagedJob {
     pub data: String,
     /// Samples and rows fitted.
     pub rows: RowAccount,
+    /// The fit's overall σ: pooled over every raw sample and measured
+    /// channel of the file (the stages' σ are over their own rows).
+    pub sigma_pooled: PooledSigma,
     /// Largest relative difference between the forces of the written .tir
     /// read back and the fitted ones.
     pub round_trip_relative_difference: f64,
@@ -31,6 +37,9 @@ pub struct StagedJob {
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
+    /// Measured against fitted, per stage and camber, each with its σ.
+    #[serde(skip)]
+    pub figure: Figure,
 }
 
 impl StagedJob {
@@ -52,13 +61,17 @@ impl StagedJob {
             match &s.skipped {
                 Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
                 None => out.push(format!(
-                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %; Wei et al. 2010: {:.2} %), RMS {:.2}, {:.2} s",
+                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS {:.2}, {:.2} s",
                     s.stage.label(),
                     s.points,
                     s.parameters.iter().filter(|p| p.free).count(),
                     s.sigma_percent,
                     s.sigma_start_percent,
-                    s.paper_sigma_percent,
+                    if s.paper_sigma_percent.is_finite() {
+                        format!("; Wei et al. 2010: {:.2} %", s.paper_sigma_percent)
+                    } else {
+                        String::new()
+                    },
                     s.rms,
                     s.seconds
                 )),
@@ -69,9 +82,7 @@ impl StagedJob {
                 Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
             }));
         }
-        if let Some(s) = self.report.sigma_fy_mz_percent {
-            out.push(format!("  Fy and Mz together: σ {s:.3} %"));
-        }
+        out.push(format!("  {}", self.sigma_pooled.line()));
         out
     }
 }
@@ -85,14 +96,28 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
     let out = o.output_path();
     let mut inputs = vec![o.data.clone()];
     inputs.extend(o.template.clone());
-    refuse_overwrites(&[out.clone(), out.with_extension("report.json")], &inputs)?;
+    refuse_overwrites(
+        &[
+            out.clone(),
+            out.with_extension("report.json"),
+            out.with_extension("png"),
+        ],
+        &inputs,
+    )?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
     let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
     let data = read_rig(&o.data)?;
     let default_speed = template_tyre
         .as_ref()
         .map_or(16.7, |t| t.coefficients.LONGVL);
-    let prepared = mf_staged::prepare(&o.data, &data, o.alpha_bin_deg.to_radians(), default_speed)?;
+    let moments = read_rig_moments(&o.data)?;
+    let prepared = mf_staged::prepare(
+        &o.data,
+        &data,
+        &moments,
+        o.alpha_bin_deg.to_radians(),
+        default_speed,
+    )?;
     let settings = mf_staged::Settings {
         version,
         start: match o.start {
@@ -108,17 +133,22 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
     };
     let id = mf_staged::identify(&prepared.rows, &settings)
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
+    let raw = mf_staged::raw_rows(&data, &moments, default_speed);
+    let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw);
     let tir = crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
         return Err(FitError::RoundTrip { difference: back }.into());
     }
+    let figure = super::figures::staged_figure(&id.tyre, &id.report.stages, &prepared.rows);
     Ok(StagedJob {
         report: id.report,
         data: o.data.display().to_string(),
         rows: prepared.account,
+        sigma_pooled,
         round_trip_relative_difference: back,
+        figure,
         tir,
         options: o.clone(),
     })

@@ -32,8 +32,11 @@
 //!   multiplies only the vertical shifts `SVx`, `SVy`.
 //! - the small `ε` in denominators keeps the sign of the quantity it guards
 //!   (`x + ε·sgn x`, sgn 0 = +1), so a negative `Kyα` never crosses zero.
-//! - `My`: the TNO 6.1 form (load power `QSY7`, pressure power `QSY8`, speed
-//!   terms in `V/LONGVL`), not the book's 5.2 `QSY1..QSY4` polynomial alone.
+//! - `My`: for 6.1/6.2 files the TNO form (eq. A48: `−R0·Fz0·λMy·(QSY1 +
+//!   … + (QSY5 + QSY6·Fz/Fz0)·γ²)·(Fz/Fz0)^QSY7·(p/p0)^QSY8`, speed terms in
+//!   `V/LONGVL`), independent of the load when `QSY7 = 0`; for 5.2 files
+//!   the 5.2 form `−R0·Fz·λMy·(QSY1 + QSY2·Fx/Fz0 + QSY3·|V/LONGVL| +
+//!   QSY4·(V/LONGVL)⁴)`. The version (`FITTYP`) chooses, as in MFeval.
 //! - `Mz` (MFeval's `calculateMz0`/`calculateMz`, checked against its
 //!   numbers, `tests/fixtures/tir/README.md`): `Bt` (TNO eq. A58) has
 //!   `QBZ4·γ + QBZ5·|γ|` with γ itself and divides by `λ*_μy`; `Dt` (A60)
@@ -64,21 +67,30 @@
 //! - `cos'α = Vcx/(Vc + εV)` with `εV = 1e-6 m/s` (MFeval; eq. 4.E6a suggests 0.1); the trail is
 //!   multiplied by `λ_Fz0` (TNO); the equivalent slip angles of combined
 //!   `Mz` combine tangents (TNO eqs. A54/A55), `s` uses `Fy/Fz0` and `γ`.
-//! - MFeval clips the curvature factors `E ≤ 1` only with its limit checks
-//!   on (its default); they are always clipped here. Its other limit checks
-//!   (saturating inputs to the file's ranges) are not modelled: inputs are
-//!   evaluated as given.
+//! - MFeval's modes (`useMode` 111, 121, 211, 221; [`MfMode`], default 121):
+//!   with its limit checks on, inputs are saturated to the file's ranges
+//!   ([`MfLimits`]) and the curvature factors `E` clipped at 1; off, both
+//!   are evaluated as given. Turn slip (units digit 2) is not modelled.
+//!   In every mode, as MFeval: below `FZMIN`, `Mx` takes `Fz·(Fz/FZMIN)²`
+//!   and `My` `Fz·(Fz/FZMIN)`; `My` follows the wheel's direction of
+//!   rotation (it changes sign, over a quarter sine, where the wheel spins
+//!   backward past κ ≈ −1).
 //!
 //! Turn slip is off (all ζ = 1). Low speed: below `VXLOW` the vertical
 //! shifts (`SVx`, `SVy`, `SVyκ`) and `My` fade linearly with `|V|/VXLOW`, so
-//! a standing tyre at zero slip has no force. Zero or negative load gives
+//! a standing tyre at zero slip has no force, in every mode (MFeval's own
+//! low-speed reductions, taken with its limit checks, differ below
+//! `VXLOW`; its references here are at 16.7 m/s). Zero or negative load gives
 //! zero forces.
 
 mod coefficients;
 mod formulae;
 mod kernels;
+mod mode;
+mod slip;
 
 pub use coefficients::MfCoefficients;
+pub use mode::{MfLimits, MfMode};
 
 use super::{
     Identification, Model, ModelParameters, PointForces, SlipState, TyreForces, TyreModel,
@@ -149,6 +161,9 @@ pub struct MfOptions {
     /// Use the book's digressive `λ'_μ` (A_μ = 10) in the vertical shifts
     /// (off: `λ'_μ = λ*_μ`, MFeval).
     pub digressive_mu: bool,
+    /// MFeval's limit checks ([`MfMode`]): inputs saturated to
+    /// [`MagicFormula::limits`], `E` clipped at 1.
+    pub limit_checks: bool,
 }
 
 impl Default for MfOptions {
@@ -156,6 +171,7 @@ impl Default for MfOptions {
         Self {
             alpha_star: AlphaStar::Tan,
             digressive_mu: false,
+            limit_checks: true,
         }
     }
 }
@@ -172,6 +188,9 @@ pub struct MagicFormula {
     /// Model variants.
     #[serde(default)]
     pub options: MfOptions,
+    /// The file's validity ranges (used with the limit checks on).
+    #[serde(default)]
+    pub limits: MfLimits,
     /// The coefficients (SI).
     pub coefficients: MfCoefficients,
 }
@@ -273,7 +292,7 @@ impl MagicFormula {
         }
     }
 
-    fn pressure(&self, p: Option<f64>) -> f64 {
+    pub(super) fn pressure(&self, p: Option<f64>) -> f64 {
         let c = &self.coefficients;
         p.unwrap_or(if c.INFLPRES > 0.0 {
             c.INFLPRES

@@ -42,6 +42,7 @@ fn symmetric() -> MagicFormula {
         version: MfVersion::Mf61,
         side: TyreSide::Left,
         options: MfOptions::default(),
+        limits: Default::default(),
         coefficients: c,
     }
 }
@@ -199,4 +200,33 @@ fn kernels_agree_with_the_c_library() {
     assert_eq!(kernels::atan([-0.0])[0].to_bits(), (-0.0f64).to_bits());
     // Relative error, or absolute in units of ε where the value is near 0.
     assert!(worst < 4.0 * f64::EPSILON, "worst {worst:e}");
+}
+
+/// TNO eq. A48 for 6.x files: `My ∝ Fz0·(Fz/Fz0)^QSY7·(p/p0)^QSY8`, so with
+/// `QSY7 = 0` the rolling resistance does not depend on the load and keeps
+/// its pressure power; a 5.2 file's `My` is proportional to the load.
+#[test]
+fn rolling_resistance_follows_the_version_not_qsy7() {
+    let mut t = symmetric();
+    for (k, v) in [("QSY1", 0.01), ("QSY7", 0.0), ("QSY8", -0.4)] {
+        assert!(t.coefficients.set(k, v));
+    }
+    let my = |t: &MagicFormula, fz: f64, p: f64| {
+        t.evaluate(&MfInput {
+            pressure: Some(p),
+            ..at(fz, 0.0, 0.0, 0.0)
+        })
+        .my
+    };
+    let p0 = t.coefficients.NOMPRES;
+    let (low, high) = (my(&t, 2000.0, p0), my(&t, 6000.0, p0));
+    // −R0·Fz0·λMy·QSY1 at every load.
+    let want = -0.31 * 4000.0 * 0.01;
+    assert!((low - want).abs() < 1e-12 && (high - want).abs() < 1e-12);
+    let p = 1.2 * p0;
+    assert!((my(&t, 2000.0, p) - want * 1.2f64.powf(-0.4)).abs() < 1e-12);
+    t.version = MfVersion::Mf52;
+    let (low, high) = (my(&t, 2000.0, p), my(&t, 6000.0, p));
+    assert!((low + 0.31 * 2000.0 * 0.01).abs() < 1e-12, "{low}");
+    assert!((high / low - 3.0).abs() < 1e-12, "{high} {low}");
 }

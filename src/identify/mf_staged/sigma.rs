@@ -1,0 +1,165 @@
+//! The fit's one overall figure: σ pooled over every raw sample of the rig
+//! file and every measured channel, `σ = sqrt(Σe²/ΣF²)·100 %` with the sums
+//! over all channels together (Zhang & Li (2017)'s definition, as the
+//! stages use per channel), beside each channel's own σ and RMS. Raw
+//! samples, not the thinned rows the stages fit: the figure does not depend
+//! on the binning. Units: N and N·m as measured (the pooled sum is then
+//! led by the forces, as the published figures it is compared with).
+
+use super::MfRow;
+use crate::identify::data::RigData;
+use crate::tyre::mf::MagicFormula;
+use serde::Serialize;
+
+/// σ and RMS of one channel over the raw samples that measured it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelSigma {
+    /// `fx`, `fy`, `mz`, `mx` or `my`.
+    pub channel: &'static str,
+    /// Samples with the channel measured.
+    pub samples: usize,
+    /// `sqrt(Σe²/ΣF²)·100 %`.
+    pub sigma_percent: f64,
+    /// RMS error, N or N·m.
+    pub rms: f64,
+}
+
+/// The pooled σ over every raw sample and measured channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PooledSigma {
+    /// Raw samples in the file.
+    pub samples: usize,
+    /// `sqrt(Σ_channels Σe² / Σ_channels ΣF²)·100 %`.
+    pub sigma_percent: f64,
+    /// Each measured channel's own σ.
+    pub channels: Vec<ChannelSigma>,
+}
+
+impl PooledSigma {
+    /// One line: the pooled figure and the channels it pools.
+    pub fn line(&self) -> String {
+        let parts: Vec<String> = self
+            .channels
+            .iter()
+            .map(|c| format!("{} {:.3} %, RMS {:.2}", c.channel, c.sigma_percent, c.rms))
+            .collect();
+        format!(
+            "σ pooled over all {} raw samples: {:.3} % ({})",
+            self.samples,
+            self.sigma_percent,
+            parts.join("; ")
+        )
+    }
+}
+
+/// Every sample of the rig file as a row (no thinning), with the wheel
+/// moments `moments` (`mx`, `my`) when measured.
+pub fn raw_rows(d: &RigData, moments: &[Option<Vec<f64>>; 2], default_speed: f64) -> Vec<MfRow> {
+    let opt = |v: &Option<Vec<f64>>, i: usize| v.as_ref().map_or(f64::NAN, |m| m[i]);
+    (0..d.len())
+        .map(|i| MfRow {
+            fz: d.fz[i],
+            kappa: d.longitudinal.as_ref().map_or(0.0, |(k, _)| k[i]),
+            alpha: d.alpha[i],
+            camber: d.camber[i],
+            speed: d.speed.as_ref().map_or(default_speed, |s| s[i]),
+            pressure: d.pressure.as_ref().map(|p| p[i]),
+            fx: d.longitudinal.as_ref().map_or(f64::NAN, |(_, f)| f[i]),
+            fy: d.fy[i],
+            mz: opt(&d.mz, i),
+            mx: opt(&moments[0], i),
+            my: opt(&moments[1], i),
+        })
+        .collect()
+}
+
+/// The pooled σ of `tyre` over `rows` (each channel where measured).
+pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow]) -> PooledSigma {
+    const NAMES: [&str; 5] = ["fx", "fy", "mz", "mx", "my"];
+    let (mut e2, mut y2, mut n) = ([0.0f64; 5], [0.0f64; 5], [0usize; 5]);
+    for r in rows {
+        let o = tyre.evaluate(&r.input());
+        let pairs = [
+            (o.fx, r.fx),
+            (o.fy, r.fy),
+            (o.mz, r.mz),
+            (o.mx, r.mx),
+            (o.my, r.my),
+        ];
+        for (k, (model, measured)) in pairs.into_iter().enumerate() {
+            if measured.is_finite() {
+                let e = model - measured;
+                e2[k] += e * e;
+                y2[k] += measured * measured;
+                n[k] += 1;
+            }
+        }
+    }
+    let channels: Vec<ChannelSigma> = (0..5)
+        .filter(|&k| n[k] > 0)
+        .map(|k| ChannelSigma {
+            channel: NAMES[k],
+            samples: n[k],
+            sigma_percent: 100.0 * (e2[k] / y2[k]).sqrt(),
+            rms: (e2[k] / n[k] as f64).sqrt(),
+        })
+        .collect();
+    PooledSigma {
+        samples: rows.len(),
+        sigma_percent: 100.0 * (e2.iter().sum::<f64>() / y2.iter().sum::<f64>()).sqrt(),
+        channels,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tyre::mf::{MfCoefficients, MfOptions, MfVersion, TyreSide};
+
+    /// Two channels: the pooled σ is the square root of the summed squared
+    /// errors over the summed squares, not the mean of the channels' σ.
+    #[test]
+    fn pooled_sigma_sums_errors_and_squares_over_channels() {
+        let mut c = MfCoefficients::default();
+        for (k, v) in [("PCY1", 1.3), ("PDY1", 1.0), ("PKY1", -15.0), ("PKY2", 1.7)] {
+            c.set(k, v);
+        }
+        let t = MagicFormula {
+            version: MfVersion::Mf61,
+            side: TyreSide::Left,
+            options: MfOptions::default(),
+            limits: Default::default(),
+            coefficients: c,
+        };
+        let row = |alpha: f64, dfy: f64, mz: f64| {
+            let mut r = MfRow {
+                fz: 4000.0,
+                kappa: 0.0,
+                alpha,
+                camber: 0.0,
+                speed: 16.7,
+                pressure: None,
+                fx: f64::NAN,
+                fy: 0.0,
+                mz,
+                mx: f64::NAN,
+                my: f64::NAN,
+            };
+            r.fy = t.evaluate(&r.input()).fy + dfy;
+            r
+        };
+        // fy off by 30 N at one of two rows; mz model 0 vs measured 3 and 4.
+        let rows = [row(0.05, 30.0, 3.0), row(0.1, 0.0, 4.0)];
+        let s = pooled_sigma(&t, &rows);
+        let fy2: f64 = rows.iter().map(|r| r.fy * r.fy).sum();
+        let want = 100.0 * ((900.0 + 25.0) / (fy2 + 25.0)).sqrt();
+        assert!(
+            (s.sigma_percent - want).abs() < 1e-9,
+            "{} {want}",
+            s.sigma_percent
+        );
+        assert_eq!(s.channels.len(), 2);
+        assert!((s.channels[1].sigma_percent - 100.0).abs() < 1e-9);
+        assert!((s.channels[0].rms - (900.0f64 / 2.0).sqrt()).abs() < 1e-9);
+    }
+}

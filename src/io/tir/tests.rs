@@ -1,0 +1,147 @@
+//! The `.tir` reader and writer: units, round trips, errors, and MFeval's
+//! aligning moment through the library.
+
+use super::*;
+use crate::tyre::mf::MfInput;
+
+const SMALL: &str = "[UNITS]\nLENGTH = 'mm'\nFORCE = 'kN'\n[MODEL]\nFITTYP = 61 $ 6.1\n\
+    TYRESIDE = 'RIGHT'\nCUSTOM_KEY = 'kept as is'\n[DIMENSION]\nUNLOADED_RADIUS = 313\n\
+    [VERTICAL]\nFNOMIN = 4.0\n[LATERAL_COEFFICIENTS]\nPCY1 = 1.3 ! shape\nPDY1 = 1.1\n\
+    PKY1 = -15\nPKY2 = 1.7\nPEY1 = -0.5\nPHY1 = 0.002\n";
+
+#[test]
+fn units_convert_and_unknown_keys_round_trip() {
+    let p = Path::new("t.tir");
+    let doc = TirDocument::parse(p, SMALL).unwrap();
+    let t = doc.magic_formula().unwrap();
+    assert_eq!(t.coefficients.UNLOADED_RADIUS, 0.313);
+    assert_eq!(t.coefficients.FNOMIN, 4000.0);
+    assert_eq!(t.side, TyreSide::Right);
+    let text = doc.write(&t).unwrap();
+    assert!(text.contains("CUSTOM_KEY = 'kept as is'"));
+    assert!(text.contains("PCY1 = 1.3e0 ! shape"));
+    let back = TirDocument::parse(p, &text)
+        .unwrap()
+        .magic_formula()
+        .unwrap();
+    for &a in &[-0.2, -0.01, 0.0, 0.05, 0.3] {
+        let i = MfInput {
+            fz: 3500.0,
+            kappa: 0.0,
+            alpha: a,
+            camber: 0.02,
+            speed: 20.0,
+            pressure: None,
+        };
+        let (x, y) = (t.evaluate(&i), back.evaluate(&i));
+        assert!((x.fy - y.fy).abs() <= 1e-12 * x.fy.abs().max(1.0));
+    }
+}
+
+#[test]
+fn errors_name_line_and_key() {
+    let p = Path::new("b.tir");
+    let e = TirDocument::parse(p, &SMALL.replace("PDY1 = 1.1", "PDY1 = 1.1x"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("b.tir:14:") && e.contains("PDY1") && e.contains("1.1x"),
+        "{e}"
+    );
+    let e = TirDocument::parse(p, &SMALL.replace("FITTYP = 61", "FITTYP = 7"))
+        .unwrap()
+        .magic_formula()
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("b.tir:5:") && e.contains("FITTYP"), "{e}");
+    // The value as written, not as parsed (`Number(7.0)`).
+    for (written, shown) in [("7", "`7`"), ("5.0", "`5.0`"), ("'MF61'", "`'MF61'`")] {
+        let e = TirDocument::parse(
+            p,
+            &SMALL.replace("FITTYP = 61", &format!("FITTYP = {written}")),
+        )
+        .unwrap()
+        .magic_formula()
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.starts_with("b.tir:5:") && e.contains("`FITTYP`") && e.contains(shown),
+            "{e}"
+        );
+        assert!(!e.contains("Number") && !e.contains("Text"), "{e}");
+    }
+    let e = TirDocument::parse(p, &SMALL.replace("'mm'", "'furlong'"))
+        .unwrap()
+        .magic_formula()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("b.tir:2:") && e.contains("LENGTH") && e.contains("furlong"),
+        "{e}"
+    );
+}
+
+/// The library's `evaluate` (not only the CLI) reproduces MFeval's
+/// aligning moment with camber, combined slip and both pressures.
+#[test]
+fn aligning_moment_with_camber_agrees_with_mfeval() {
+    for v in ["61", "62"] {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
+        let t = load_tir(&dir.join(format!("MagicFormula{v}_Parameters.tir"))).unwrap();
+        let text =
+            std::fs::read_to_string(dir.join(format!("reference_mfeval_mf{v}.csv"))).unwrap();
+        let mut n = 0;
+        for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
+            let r: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+            if r[3] == 0.0 {
+                continue;
+            }
+            // Right-side file: the crate's (α, γ) = (α_ISO, −γ_ISO) and
+            // mz = Mz_ISO of the file.
+            let o = t.evaluate(&MfInput {
+                fz: r[0],
+                kappa: r[1],
+                alpha: r[2],
+                camber: -r[3],
+                speed: r[4],
+                pressure: Some(r[5]),
+            });
+            assert!(
+                (o.mz - r[8]).abs() <= 1e-6 * r[8].abs() + 1e-6 * t.coefficients.FNOMIN,
+                "MF{v} mz at {r:?}: {}",
+                o.mz
+            );
+            n += 1;
+        }
+        assert_eq!(n, 3 * 2 * 2 * 13 * 7);
+    }
+}
+
+#[test]
+fn public_file_written_back_gives_identical_forces() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
+    for v in ["52", "61", "62"] {
+        let path = dir.join(format!("MagicFormula{v}_Parameters.tir"));
+        let doc = TirDocument::read(&path).unwrap();
+        let t = doc.magic_formula().unwrap();
+        let text = doc.write(&t).unwrap();
+        let back = TirDocument::parse(&path, &text).unwrap();
+        assert_eq!(back.magic_formula().unwrap(), t);
+        // Keys the model does not read come back unchanged.
+        for key in ["USE_MODE", "MASS", "WIDTH"] {
+            if let Some((_, e)) = doc.get(key) {
+                assert_eq!(back.get(key).unwrap().1.value, e.value, "{key}");
+            }
+        }
+        assert_eq!(doc.lines.len(), back.lines.len());
+    }
+    let fresh = write_new(&load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap());
+    let again = TirDocument::parse(Path::new("new.tir"), &fresh)
+        .unwrap()
+        .magic_formula()
+        .unwrap();
+    assert_eq!(
+        again,
+        load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap()
+    );
+}

@@ -1,10 +1,14 @@
 //! Outputs: CSV, JSON and PNG files, each written to a temporary file in the
 //! destination folder and renamed into place, so a failed run never leaves a
-//! half-written file; and a refusal to write over any input file. Every CSV
-//! of every command goes through [`write_csv`].
+//! half-written file; a refusal to write over any input file; and one run
+//! at a time per output folder ([`lock`]). Every CSV of every command goes
+//! through [`write_csv`].
 
+pub mod lock;
 pub mod plot;
 pub mod progress;
+
+pub use lock::OutputLock;
 
 use crate::error::Error;
 use std::fs;

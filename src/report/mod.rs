@@ -27,6 +27,18 @@ fn temp_path(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.partial-{}{ext}", std::process::id()))
 }
 
+/// Serialises a number that may be undefined (a standard error the data
+/// do not pin: NaN inside) as `null`, so that a report holds no NaN and a
+/// `null` there says "not defined" by design, not by accident. For
+/// `#[serde(serialize_with = "crate::report::finite_or_null")]`.
+pub fn finite_or_null<S: serde::Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_finite() {
+        s.serialize_f64(*v)
+    } else {
+        s.serialize_none()
+    }
+}
+
 /// Creates `dir` and its parents.
 pub fn create_dir(dir: &Path) -> Result<(), Error> {
     fs::create_dir_all(dir).map_err(|e| Error::output(dir, format!("cannot create: {e}")))

@@ -120,7 +120,7 @@ pub fn fuzz<T>(
         *current.lock().unwrap() = (Instant::now(), bytes.clone());
         fs::write(path, &bytes).unwrap();
         let seen = accepted.load(Ordering::Relaxed) + refused.load(Ordering::Relaxed);
-        if seen > 0 && seen % 100_000 == 0 {
+        if seen > 0 && seen % 10_000 == 0 {
             eprintln!("{name}: {seen} cases, {:.0} s", t0.elapsed().as_secs_f64());
         }
         match read(path) {

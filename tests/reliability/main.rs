@@ -7,6 +7,7 @@
 //! Case counts: `HANDLING_FUZZ_CASES` (default 200 per reader) and
 //! `HANDLING_KILL_MOMENTS` (default 10 per command).
 
+mod finite;
 mod fuzz;
 mod fuzz_toml;
 mod inputs;

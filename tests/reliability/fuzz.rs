@@ -74,6 +74,10 @@ pub fn check_refusal(e: &InputError, path: &Path, bytes: &[u8], kind: Kind) -> R
             if kind == Kind::Csv && !named.iter().any(|n| message.contains(n)) {
                 return Err(format!("a CSV error naming no column: {msg}"));
             }
+            // A value refused on its merits names its key.
+            if kind == Kind::Text && message.contains(" must ") && !message.contains('`') {
+                return Err(format!("a value error naming no key: {msg}"));
+            }
         }
         InputError::File { message, .. } if message.trim().is_empty() => {
             return Err(format!("an empty message: {msg}"));

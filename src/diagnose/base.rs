@@ -187,7 +187,8 @@ pub struct AxleValue {
     pub unit: &'static str,
     /// Value.
     pub value: f64,
-    /// Standard error (NaN where the data do not pin it).
+    /// Standard error (NaN, written as `null`, where the data do not pin it).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub std_error: f64,
     /// The limit it stands on, if any.
     pub limit: Option<AxleLimit>,

@@ -56,13 +56,18 @@ pub struct ChannelGap {
     pub bias: f64,
     /// Largest |residual|.
     pub max_abs: f64,
-    /// Sprague–Geers magnitude error.
+    /// Sprague–Geers magnitude error (`null` when the measured channel
+    /// holds no signal: all zero).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub magnitude_error: f64,
-    /// Sprague–Geers phase error (0 … 1).
+    /// Sprague–Geers phase error (0 … 1; `null` as above).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub phase_error: f64,
-    /// Sprague–Geers comprehensive error.
+    /// Sprague–Geers comprehensive error (`null` as above).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub comprehensive_error: f64,
-    /// Lag-1 autocorrelation of the residual.
+    /// Lag-1 autocorrelation of the residual (`null` for a constant one).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub lag1_autocorrelation: f64,
     /// Largest |correlation| of the residual with the steer over lags 0–1 s.
     pub input_correlation: f64,

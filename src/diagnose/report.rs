@@ -22,7 +22,8 @@ pub struct ParameterValue {
     /// Value fitted on all runs.
     pub value: f64,
     /// Its standard error (from the Jacobian; residual autocorrelation makes
-    /// it optimistic).
+    /// it optimistic); NaN, written as `null`, where the runs do not pin it.
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub std_error: f64,
     /// The value sits on one of its bounds ([`ParameterValue::bound`]).
     pub at_bound: bool,

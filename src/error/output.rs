@@ -54,6 +54,21 @@ pub enum OutputError {
         /// The file in the way.
         file: PathBuf,
     },
+    /// An output folder another run is writing into (its lock file is
+    /// held by a live process).
+    #[error(
+        "{}: another run ({holder}) is writing into this folder; wait for it or choose another --out (if no run is going, remove {})",
+        folder.display(),
+        lock.display()
+    )]
+    Busy {
+        /// The output folder.
+        folder: PathBuf,
+        /// Who holds it (`process 1234`, `another run`).
+        holder: String,
+        /// The lock file.
+        lock: PathBuf,
+    },
     /// A file-system step that failed.
     #[error("{}: {}{source}", path.display(), step.prefix())]
     Io {
@@ -119,6 +134,7 @@ impl OutputError {
             | OutputError::Draw { path, .. }
             | OutputError::RowLength { path, .. }
             | OutputError::UnequalColumns { path } => path,
+            OutputError::Busy { folder, .. } => folder,
         }
     }
 

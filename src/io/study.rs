@@ -42,18 +42,25 @@ pub enum Axis {
 }
 
 impl Axis {
-    fn values(&self) -> Vec<f64> {
-        match self {
+    /// The values, or none when there would be more than a million (an
+    /// infinite range, a tiny step).
+    fn values(&self) -> Option<Vec<f64>> {
+        const MAX: f64 = 1e6;
+        Some(match self {
             Axis::List(v) => v.clone(),
             Axis::Step { from, to, step } if *step > 0.0 && to >= from => {
-                let n = ((to - from) / step + 1e-9).floor() as usize;
-                (0..=n).map(|i| from + i as f64 * step).collect()
+                let n = ((to - from) / step + 1e-9).floor();
+                if n.is_nan() || n >= MAX {
+                    return None;
+                }
+                (0..=n as usize).map(|i| from + i as f64 * step).collect()
             }
+            Axis::Count { count, .. } if *count as f64 > MAX => return None,
             Axis::Count { from, to, count } if *count >= 2 => (0..*count)
                 .map(|i| from + (to - from) * i as f64 / (*count - 1) as f64)
                 .collect(),
             _ => Vec::new(),
-        }
+        })
     }
 }
 
@@ -285,7 +292,9 @@ impl Values<'_> {
 
     /// The stiffness values of `axis` in N/rad: at least one, each positive.
     fn stiffness(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
-        let v = axis.values();
+        let v = axis.values().ok_or_else(|| {
+            self.error(ParamError::without_value(key, "more than a million values"))
+        })?;
         if v.is_empty() {
             return Err(self.error(ParamError::without_value(
                 key,

@@ -50,7 +50,17 @@ impl TomlSource {
     }
 
     fn toml_error(&self, e: &toml::de::Error) -> InputError {
-        let message = e.message().trim().to_string();
+        let mut message = e.message().trim().to_string();
+        // toml says nothing of some characters (a lone carriage return):
+        // name the one found.
+        if message.is_empty() {
+            let found = e
+                .span()
+                .and_then(|s| self.text.get(s.start..)?.chars().next());
+            message = found.map_or("unexpected end of file".into(), |c| {
+                format!("unexpected character {c:?} (U+{:04X}) here", c as u32)
+            });
+        }
         // Errors inside a `model`-tagged table come without a span; an
         // unknown field can still be found by its name.
         let span = e.span().or_else(|| {
@@ -136,15 +146,27 @@ impl TomlSource {
     }
 
     /// The file `path` that the value of `key_path` names, checked to
-    /// exist: when it does not, an error at that key naming the value and
-    /// the path it resolved to (a relative path is read from the TOML
-    /// file's folder).
+    /// exist and be a file: when it is not, an error at that key naming the
+    /// value and the path it resolved to (a relative path is read from the
+    /// TOML file's folder).
     pub fn referenced_file(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
-        if path.exists() {
-            return Ok(());
-        }
+        self.referenced(key_path, path, false)
+    }
+
+    /// [`Self::referenced_file`] for a folder.
+    pub fn referenced_folder(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
+        self.referenced(key_path, path, true)
+    }
+
+    fn referenced(&self, key_path: &str, path: &Path, folder: bool) -> Result<(), InputError> {
+        let what = match (path.exists(), path.is_dir(), folder) {
+            (true, true, true) | (true, false, false) => return Ok(()),
+            (false, ..) => "which does not exist",
+            (true, true, false) => "which is a folder, not a file",
+            (true, false, true) => "which is a file, not a folder",
+        };
         let message = format!(
-            "`{key_path}` names {}, which does not exist (paths are relative to the folder of {})",
+            "`{key_path}` names {}, {what} (paths are relative to the folder of {})",
             path.display(),
             self.path.display()
         );

@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::progress::Progress;
-use crate::report::{create_dir, refuse_overwrites, write_json};
+use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -44,6 +44,9 @@ pub struct DiagnoseReport {
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
+    /// The output folder, held for this run until the report is dropped.
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 const FILES: [&str; 4] = [
@@ -62,6 +65,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         Path::to_path_buf,
     );
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &campaign.inputs)?;
+    let lock = OutputLock::acquire(&out_dir)?;
     let t0 = Instant::now();
     let diagnosis = {
         let progress = Progress::start("diagnose", work_units(&campaign));
@@ -77,6 +81,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         cleaning: campaign.cleaning.summary(5),
         seconds: t0.elapsed().as_secs_f64(),
         out_dir,
+        lock,
     })
 }
 

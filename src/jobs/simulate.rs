@@ -12,7 +12,7 @@ use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
-use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted};
+use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
 use crate::sim::{LiftOff, Method, TimeHistory};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -54,6 +54,9 @@ pub struct SimulateReport {
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
+    /// The output folder, held for this run until the report is dropped.
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 /// `metrics.json`.
@@ -77,8 +80,9 @@ const FILES: [&str; 4] = ["history.csv", "metrics.json", "response.png", "gap.js
 pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     let sc = load_scenario(path)?;
     let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sc.name), Path::to_path_buf);
-    let sim = sc.integrator.simulate(&sc.model, &sc.manoeuvre, sc.initial);
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sc.inputs)?;
+    let lock = OutputLock::acquire(&out_dir)?;
+    let sim = sc.integrator.simulate(&sc.model, &sc.manoeuvre, sc.initial);
     let h = &sim.history;
     let integration = match (sc.integrator.method, sim.stats()) {
         (Method::Dopri5(tol), Some(st)) => format!(
@@ -112,6 +116,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         measured: sc.measured,
         scenario: sc.name,
         out_dir,
+        lock,
     })
 }
 

@@ -1,14 +1,18 @@
 //! Outputs: CSV, JSON and PNG files, each written to a temporary file in the
 //! destination folder and renamed into place, so a failed run never leaves a
-//! half-written file; and a refusal to write over any input file. Every CSV
-//! of every command goes through [`write_csv`].
+//! half-written file; a refusal to write over any input file; and one run
+//! at a time per output folder ([`lock`]). Every CSV of every command goes
+//! through [`write_csv`].
 
 pub mod colour;
 pub mod html;
 mod legend;
+pub mod lock;
 pub mod plot;
 pub mod progress;
 pub mod series;
+
+pub use lock::OutputLock;
 
 use crate::error::{Error, OutputError, WriteStep};
 use std::fs;
@@ -25,6 +29,18 @@ fn temp_path(path: &Path) -> PathBuf {
         .extension()
         .map_or(String::new(), |e| format!(".{}", e.to_string_lossy()));
     path.with_file_name(format!(".{name}.partial-{}{ext}", std::process::id()))
+}
+
+/// Serialises a number that may be undefined (a standard error the data
+/// do not pin: NaN inside) as `null`, so that a report holds no NaN and a
+/// `null` there says "not defined" by design, not by accident. For
+/// `#[serde(serialize_with = "crate::report::finite_or_null")]`.
+pub fn finite_or_null<S: serde::Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_finite() {
+        s.serialize_f64(*v)
+    } else {
+        s.serialize_none()
+    }
 }
 
 /// Creates `dir` and its parents.

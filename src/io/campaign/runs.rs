@@ -53,7 +53,7 @@ pub(super) fn run_files(
         src.referenced_file("runs.files", p)?;
     }
     if let Some(d) = &run_spec.dir {
-        src.referenced_file("runs.dir", &base.join(d))?;
+        src.referenced_folder("runs.dir", &base.join(d))?;
     }
     let dir = run_spec
         .dir

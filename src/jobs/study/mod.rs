@@ -16,7 +16,7 @@ use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::report::progress::Progress;
-use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
+use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -169,6 +169,9 @@ pub struct StudyReport {
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
+    /// The output folder, held for this run until the report is dropped.
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 /// The output files, in the order [`StudyReport::write`] checks them.
@@ -185,12 +188,13 @@ const FILES: [&str; 6] = [
 /// `out/<study name>`), checked against the inputs before any simulation.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<StudyReport, Error> {
     let job = Job::load(path, out)?;
+    let lock = OutputLock::acquire(&job.out_dir)?;
     let t0 = Instant::now();
     let samples = {
         let p = Progress::start("study", job.all.len());
         job.study.evaluate_all(&job.all, p.counter())
     };
-    job.finish(samples, t0.elapsed().as_secs_f64())
+    job.finish(samples, t0.elapsed().as_secs_f64(), lock)
 }
 
 /// Simulates shard `shard`'s combinations (map points and RBF pairs, in one
@@ -248,7 +252,8 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<StudyReport, Erro
         }
         .into());
     }
-    job.finish(samples, t0.elapsed().as_secs_f64())
+    let lock = OutputLock::acquire(&job.out_dir)?;
+    job.finish(samples, t0.elapsed().as_secs_f64(), lock)
 }
 
 /// A loaded study: its input, the model and manoeuvre, every combination to
@@ -299,7 +304,12 @@ impl Job {
 
     /// The map, the network and the inverse from every combination's
     /// sample (in [`Job::all`]'s order).
-    fn finish(self, samples: Vec<Sample>, seconds: f64) -> Result<StudyReport, Error> {
+    fn finish(
+        self,
+        samples: Vec<Sample>,
+        seconds: f64,
+        lock: OutputLock,
+    ) -> Result<StudyReport, Error> {
         let (input, st) = (&self.input, &self.study);
         let sc = &input.scenario;
         let unit = input.unit;
@@ -331,6 +341,7 @@ impl Job {
             pairs,
             tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
             out_dir: self.out_dir,
+            lock,
         })
     }
 }

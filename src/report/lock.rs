@@ -1,0 +1,244 @@
+//! One run per output folder: a lock file, `.handling.lock`, created in the
+//! folder with `create_new` (atomic: of two runs, one creates it and the
+//! other is refused) and holding the process id of the run that owns it.
+//! The lock is released (the file removed, and the folders the lock created
+//! removed again if they are still empty) when the last copy of the
+//! [`OutputLock`] is dropped, so a failed run leaves nothing behind.
+//!
+//! A run that was killed leaves its lock behind; the next run finds the
+//! process gone (on Linux, `/proc/<pid>` absent or a zombie), takes the lock
+//! over with a note on stderr, and removes the temporary files the killed
+//! run left (`.<name>.partial-<pid>.<ext>`, see [`super::write_atomic`]).
+//! Where process ids cannot be checked, a lock is taken as live and the
+//! message says which file to remove.
+
+use crate::error::{Error, OutputError, WriteStep};
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Name of the lock file inside an output folder.
+pub const LOCK_FILE: &str = ".handling.lock";
+
+/// A held output folder (cheap to clone: copies share the one lock).
+#[derive(Debug, Clone, Default)]
+pub struct OutputLock {
+    /// Released when the last copy drops; none for a report not made by a
+    /// run (a default).
+    _held: Option<Arc<Held>>,
+}
+
+#[derive(Debug)]
+struct Held {
+    file: PathBuf,
+    /// Folders the lock created, deepest first.
+    created: Vec<PathBuf>,
+    /// False when this process already held the lock (a second job of the
+    /// same process into the same folder): the first holder removes it.
+    owner: bool,
+}
+
+impl Drop for Held {
+    fn drop(&mut self) {
+        if self.owner {
+            let _ = fs::remove_file(&self.file);
+        }
+        for dir in &self.created {
+            if fs::remove_dir(dir).is_err() {
+                break;
+            }
+        }
+    }
+}
+
+/// Whether process `pid` is running: `Some(false)` when it is gone or a
+/// zombie, `None` when this system cannot tell.
+fn alive(pid: u32) -> Option<bool> {
+    let proc_root = Path::new("/proc");
+    if !proc_root.join("self").exists() {
+        return None;
+    }
+    let Ok(stat) = fs::read_to_string(proc_root.join(pid.to_string()).join("stat")) else {
+        return Some(false);
+    };
+    // The state follows the parenthesised command name.
+    let state = stat
+        .rsplit(')')
+        .next()
+        .and_then(|s| s.trim().chars().next());
+    Some(!matches!(state, Some('Z' | 'X')))
+}
+
+/// The folders `create_dir_all(dir)` is about to create, deepest first.
+fn missing_folders(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut here = Some(dir);
+    while let Some(p) = here.filter(|p| !p.as_os_str().is_empty() && !p.exists()) {
+        out.push(p.to_path_buf());
+        here = p.parent();
+    }
+    out
+}
+
+/// Removes the temporary files a killed process `pid` left in `dir`.
+fn remove_partials(dir: &Path, pid: u32) {
+    let tag = format!(".partial-{pid}");
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if name.starts_with('.') && name.contains(&tag) {
+            let _ = fs::remove_file(e.path());
+        }
+    }
+}
+
+impl OutputLock {
+    /// Takes output folder `dir` (created if missing) for this run, or
+    /// refuses when another live run holds it.
+    pub fn acquire(dir: &Path) -> Result<Self, Error> {
+        let created = missing_folders(dir);
+        fs::create_dir_all(dir).map_err(|source| OutputError::Io {
+            path: dir.to_path_buf(),
+            step: WriteStep::Create,
+            source,
+        })?;
+        let file = dir.join(LOCK_FILE);
+        let me = std::process::id();
+        // Two rounds: the second after a stale lock was removed.
+        for _ in 0..2 {
+            match fs::OpenOptions::new()
+                .write(true)
+                .create_new(true)
+                .open(&file)
+            {
+                Ok(mut f) => {
+                    f.write_all(format!("{me}\n").as_bytes())
+                        .and_then(|()| f.sync_all())
+                        .map_err(|source| OutputError::Io {
+                            path: file.clone(),
+                            step: WriteStep::Write,
+                            source,
+                        })?;
+                    return Ok(Self::held(file, created, true));
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
+                Err(source) => {
+                    return Err(OutputError::Io {
+                        path: file,
+                        step: WriteStep::Create,
+                        source,
+                    }
+                    .into())
+                }
+            }
+            let text = fs::read_to_string(&file).unwrap_or_default();
+            let holder = text.trim().parse::<u32>().ok();
+            match holder {
+                Some(pid) if pid == me => return Ok(Self::held(file, created, false)),
+                Some(pid) if alive(pid) == Some(false) => {
+                    Self::take_over(dir, &file, pid)?;
+                }
+                // A lock being written this instant holds no number yet.
+                None if text.is_empty() => {
+                    std::thread::sleep(std::time::Duration::from_millis(50));
+                    if fs::read_to_string(&file).is_ok_and(|t| t.trim().is_empty()) {
+                        return Err(Self::busy(dir, &file, "an unknown process"));
+                    }
+                }
+                Some(pid) => return Err(Self::busy(dir, &file, &format!("process {pid}"))),
+                None => return Err(Self::busy(dir, &file, "an unknown process")),
+            }
+        }
+        Err(Self::busy(dir, &file, "another run"))
+    }
+
+    fn held(file: PathBuf, created: Vec<PathBuf>, owner: bool) -> Self {
+        Self {
+            _held: Some(Arc::new(Held {
+                file,
+                created,
+                owner,
+            })),
+        }
+    }
+
+    /// Removes the stale lock of dead process `pid`: renamed aside first
+    /// (atomic), then checked to be that process's before it is deleted, so
+    /// that of two runs taking over at once only one does.
+    fn take_over(dir: &Path, file: &Path, pid: u32) -> Result<(), Error> {
+        let aside = dir.join(format!("{LOCK_FILE}.stale-{}", std::process::id()));
+        if fs::rename(file, &aside).is_err() {
+            // Another run took it over first: the next round sees its lock.
+            return Ok(());
+        }
+        let moved = fs::read_to_string(&aside).unwrap_or_default();
+        if moved.trim().parse::<u32>().ok() != Some(pid) {
+            // A live run's fresh lock was moved: give it back.
+            let _ = fs::rename(&aside, file);
+            return Err(Self::busy(dir, file, "another run"));
+        }
+        let _ = fs::remove_file(&aside);
+        remove_partials(dir, pid);
+        eprintln!(
+            "note: {} was left by process {pid}, which is no longer running (killed?); taking the folder over",
+            file.display()
+        );
+        Ok(())
+    }
+
+    fn busy(dir: &Path, file: &Path, holder: &str) -> Error {
+        OutputError::Busy {
+            folder: dir.to_path_buf(),
+            holder: holder.to_string(),
+            lock: file.to_path_buf(),
+        }
+        .into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_held_folder_is_refused_and_released_on_drop() {
+        let root = tempfile::tempdir().unwrap();
+        let dir = root.path().join("a/b");
+        let lock = OutputLock::acquire(&dir).unwrap();
+        assert!(dir.join(LOCK_FILE).exists());
+        // The same process may take it again (a second job of one run).
+        let again = OutputLock::acquire(&dir).unwrap();
+        drop(again);
+        assert!(dir.join(LOCK_FILE).exists(), "only the owner releases");
+        drop(lock);
+        assert!(!root.path().join("a").exists(), "created folders removed");
+    }
+
+    #[test]
+    fn a_live_foreign_lock_is_refused_and_a_dead_one_taken_over() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join(LOCK_FILE);
+        // PID 1 is always running.
+        fs::write(&file, "1\n").unwrap();
+        let e = OutputLock::acquire(dir.path()).unwrap_err().to_string();
+        assert!(
+            e.contains("another run (process 1)") && e.contains(LOCK_FILE),
+            "{e}"
+        );
+        // A PID above the kernel's maximum (2^22) is never running.
+        let dead = 4_194_400;
+        fs::write(&file, format!("{dead}\n")).unwrap();
+        let partial = dir.path().join(format!(".x.csv.partial-{dead}.csv"));
+        fs::write(&partial, "half").unwrap();
+        let lock = OutputLock::acquire(dir.path()).unwrap();
+        let held = fs::read_to_string(&file).unwrap();
+        assert_eq!(held.trim(), std::process::id().to_string());
+        assert!(!partial.exists(), "the dead run's temporary file removed");
+        drop(lock);
+        assert!(!file.exists());
+        assert!(dir.path().exists(), "a folder that existed stays");
+    }
+}

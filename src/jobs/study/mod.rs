@@ -393,17 +393,16 @@ fn train(
             }
         })
         .collect();
+    // The network's answer over its training range of Er, for rbf.png.
     let (lo, hi) = train
         .iter()
-        .map(|&i| er[i])
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &i| {
+            (a.min(er[i]), b.max(er[i]))
         });
-    const CURVE: usize = 200;
-    let prediction = (0..CURVE)
+    let prediction = (0..200)
         .filter(|_| hi > lo)
         .map(|j| {
-            let e = lo + (hi - lo) * j as f64 / (CURVE - 1) as f64;
+            let e = lo + (hi - lo) * f64::from(j) / 199.0;
             let p = net.predict(e);
             [e, p[0] / k, p[1] / k]
         })

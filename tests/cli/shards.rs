@@ -312,7 +312,7 @@ fn a_sharded_batch_diagnosis_merges_to_the_unsharded_fleet_from_any_directory() 
             .collect();
         let expected: Vec<PathBuf> = files_under(&full)
             .into_iter()
-            .filter(|p| !p.starts_with("fleet."))
+            .filter(|p| !p.to_string_lossy().starts_with("fleet."))
             .collect();
         assert_eq!(written, expected, "N = {n}");
         for f in &expected {

@@ -45,7 +45,7 @@ pub fn run(tyre_path: &Path, points: &Path, out: &Path) -> Result<TyreEvalReport
                     points,
                     i,
                     "pressure",
-                    format!("column `pressure`: {} Pa is not a positive pressure", p[i]),
+                    crate::error::InputProblem::NonPositivePressure { value: p[i] },
                 )
                 .into());
         }

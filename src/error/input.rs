@@ -62,8 +62,8 @@ pub enum InputError {
         path: PathBuf,
         /// The place, where one is known.
         at: Option<Location>,
-        /// What is wrong.
-        problem: InputProblem,
+        /// What is wrong (boxed: the error stays small on the happy path).
+        problem: Box<InputProblem>,
     },
     /// Wrong content at a known place, described in words: only the
     /// `.tir` reader still builds it, until its errors are typed too.
@@ -180,7 +180,7 @@ impl InputError {
         InputError::Invalid {
             path: path.to_path_buf(),
             at: Some(Location { line, column }),
-            problem,
+            problem: Box::new(problem),
         }
     }
 
@@ -189,7 +189,7 @@ impl InputError {
         InputError::Invalid {
             path: path.to_path_buf(),
             at: None,
-            problem,
+            problem: Box::new(problem),
         }
     }
 

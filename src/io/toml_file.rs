@@ -171,7 +171,7 @@ impl TomlSource {
         InputError::Invalid {
             path: self.path.clone(),
             at: span.map(|s| self.location(s.start)),
-            problem,
+            problem: Box::new(problem),
         }
     }
 }

@@ -12,7 +12,7 @@
 
 use handling::error::{
     DiagnosisError as LibDiagnosisError, Error, FitError as LibFitError,
-    InputError as LibInputError, OptionsError as LibOptionsError,
+    InputError as LibInputError, InputProblem, OptionsError as LibOptionsError,
 };
 use handling::io::{load_scenario, load_tyre, tir::read_tir_text};
 use handling::jobs;
@@ -42,7 +42,7 @@ create_exception!(
     handling,
     InputError,
     HandlingError,
-    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value (a CSV cell: the column's name and the cell's text)."
+    "An input file that cannot be read or holds wrong content: `path`, and `line`, `column` (1-based) where known; `key` and `value` for a wrong value (a CSV cell: the column's name and the cell's text); `problem`: the name of what is wrong with the content, where typed."
 );
 create_exception!(
     handling,
@@ -86,6 +86,25 @@ fn py_obj<'py, T: IntoPyObject<'py>>(py: Python<'py>, x: T) -> Py<PyAny> {
     x.into_py_any(py).unwrap_or_else(|_| py.None())
 }
 
+/// The key (the column or dotted key named) and the value (the number
+/// read) of an input problem, where it has them.
+fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
+    match p {
+        InputProblem::MissingFile { key, .. } => (Some(key), None),
+        InputProblem::TimeNotIncreasing { value, .. } => (Some("t"), Some(*value)),
+        InputProblem::SteerBeyondQuarterTurn { value, .. } => (Some("steer"), Some(*value)),
+        InputProblem::NegativeLoad { value } => (Some("fz"), Some(*value)),
+        InputProblem::NonPositivePressure { value } => (Some("pressure"), Some(*value)),
+        InputProblem::AngleInDegrees { column, value, .. } => (Some(column), Some(*value)),
+        InputProblem::WrongSign { channel, slope, .. } => (Some(channel.column()), Some(slope.slope)),
+        InputProblem::NoLevelNear { variable, requested, .. } => {
+            (Some(variable.column()), Some(*requested))
+        }
+        InputProblem::NoCamberColumn { camber } => (Some("camber"), Some(*camber)),
+        _ => (None, None),
+    }
+}
+
 /// The exception class of an error's kind and its attributes (only typed
 /// fields of the error, never its message text).
 fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<PyAny>)>) {
@@ -113,13 +132,23 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                 ),
                 LibInputError::Key { key, detail, .. } => (text(key), py.None(), text(detail)),
                 LibInputError::At { message: m, .. } => (py.None(), py.None(), text(m)),
+                LibInputError::Invalid { problem, .. } => {
+                    let (key, value) = problem_key_value(problem);
+                    let value = value.map_or_else(|| py.None(), |v| py_obj(py, v));
+                    (key.map_or_else(|| py.None(), text), value, text(&problem.to_string()))
+                }
                 LibInputError::Cell { name, cell, .. } => (text(name), text(cell), text(&message)),
                 LibInputError::MissingColumn { name, .. } => (text(name), py.None(), text(&message)),
                 _ => (py.None(), py.None(), text(&message)),
             };
+            let problem = match i {
+                LibInputError::Invalid { problem, .. } => text(problem.name()),
+                _ => py.None(),
+            };
             (
                 InputError::new_err(message),
                 vec![
+                    ("problem", problem),
                     ("path", path(i.path())),
                     ("line", opt(at.map(|a| a.line))),
                     ("column", opt(at.map(|a| a.column))),

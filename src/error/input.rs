@@ -3,6 +3,7 @@
 //! known.
 
 use super::param::ParamError;
+use super::problem::InputProblem;
 use std::path::PathBuf;
 use thiserror::Error;
 
@@ -53,8 +54,19 @@ pub enum InputError {
         /// The OS error.
         source: std::io::Error,
     },
-    /// Wrong content at a known place, described by the reader (a malformed
-    /// row, a cell that is not a number, a missing column).
+    /// Wrong content, typed: the problem, at its place in the file where
+    /// one is known.
+    #[error("{}: {problem}", place(path, at))]
+    Invalid {
+        /// The file.
+        path: PathBuf,
+        /// The place, where one is known.
+        at: Option<Location>,
+        /// What is wrong (boxed: the error stays small on the happy path).
+        problem: Box<InputProblem>,
+    },
+    /// Wrong content at a known place, described in words: only the
+    /// `.tir` reader still builds it, until its errors are typed too.
     #[error("{path}:{line}:{column}: {message}")]
     At {
         /// The file.
@@ -66,8 +78,8 @@ pub enum InputError {
         /// What is wrong, naming the key or column and the value.
         message: String,
     },
-    /// Wrong content with no single place (a missing key or column),
-    /// described by the reader.
+    /// Wrong content with no single place, described in words: only the
+    /// `.tir` reader still builds it, until its errors are typed too.
     #[error("{path}: {message}")]
     File {
         /// The file.
@@ -158,10 +170,34 @@ pub enum InputError {
 }
 
 impl InputError {
+    /// A problem at line `line`, column `column` (1-based) of `path`.
+    pub fn problem_at(
+        path: &std::path::Path,
+        line: usize,
+        column: usize,
+        problem: InputProblem,
+    ) -> Self {
+        InputError::Invalid {
+            path: path.to_path_buf(),
+            at: Some(Location { line, column }),
+            problem: Box::new(problem),
+        }
+    }
+
+    /// A problem with the whole of `path`.
+    pub fn problem(path: &std::path::Path, problem: InputProblem) -> Self {
+        InputError::Invalid {
+            path: path.to_path_buf(),
+            at: None,
+            problem: Box::new(problem),
+        }
+    }
+
     /// The file the error is in.
     pub fn path(&self) -> &std::path::Path {
         match self {
             InputError::Io { path, .. }
+            | InputError::Invalid { path, .. }
             | InputError::At { path, .. }
             | InputError::File { path, .. }
             | InputError::MissingColumn { path, .. }
@@ -190,7 +226,9 @@ impl InputError {
                     column: *column,
                 })
             }
-            InputError::Value { at, .. } | InputError::Key { at, .. } => *at,
+            InputError::Value { at, .. }
+            | InputError::Key { at, .. }
+            | InputError::Invalid { at, .. } => *at,
             _ => None,
         }
     }

@@ -12,6 +12,7 @@ mod input;
 mod options;
 mod output;
 mod param;
+mod problem;
 #[cfg(test)]
 mod tests;
 
@@ -21,6 +22,7 @@ pub use input::{CellProblem, InputError, Location};
 pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
+pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};
 use thiserror::Error;
 
 /// The library's error: why a job (a command of the binary, or any public

@@ -10,8 +10,7 @@ use crate::jobs::shard::Shard;
 use crate::tyre::pac89::Pac89;
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::Vehicle;
-use std::path::Path;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 fn scenario_with(dir: &Path, from: &str, to: &str) -> PathBuf {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));

@@ -3,7 +3,7 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
-use crate::error::{CellProblem, InputError};
+use crate::error::{CellProblem, InputError, InputProblem};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -33,14 +33,20 @@ impl Columns {
         self.positions.get(name).copied().unwrap_or(1)
     }
     /// An error at row `row` (0-based) of column `name`: file, line, the
-    /// column's real position and the message.
-    pub fn error_at(&self, path: &Path, row: usize, name: &str, message: String) -> InputError {
-        InputError::At {
-            path: path.to_path_buf(),
-            line: self.lines.get(row).copied().unwrap_or(0),
-            column: self.column(name),
-            message,
-        }
+    /// column's real position and the problem.
+    pub fn error_at(
+        &self,
+        path: &Path,
+        row: usize,
+        name: &str,
+        problem: InputProblem,
+    ) -> InputError {
+        InputError::problem_at(
+            path,
+            self.lines.get(row).copied().unwrap_or(0),
+            self.column(name),
+            problem,
+        )
     }
     /// Number of rows.
     pub fn len(&self) -> usize {
@@ -58,10 +64,7 @@ pub fn read_columns(
     required: &[&str],
     optional: &[&str],
 ) -> Result<Columns, InputError> {
-    let file_err = |message: String| InputError::File {
-        path: path.to_path_buf(),
-        message,
-    };
+    let file_err = |problem| InputError::problem(path, problem);
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .comment(Some(b'#'))
@@ -71,11 +74,17 @@ pub fn read_columns(
                 path: path.to_path_buf(),
                 source,
             },
-            other => file_err(format!("{other:?}")),
+            other => file_err(InputProblem::Csv {
+                detail: format!("{other:?}"),
+            }),
         })?;
     let headers = rdr
         .headers()
-        .map_err(|e| file_err(format!("cannot read the header line: {e}")))?
+        .map_err(|e| {
+            file_err(InputProblem::Header {
+                detail: e.to_string(),
+            })
+        })?
         .clone();
     let mut wanted: Vec<(usize, String)> = Vec::new();
     for name in required.iter().chain(optional) {

@@ -11,9 +11,8 @@
 
 use super::columns::Columns;
 use super::read_columns;
-use crate::error::InputError;
+use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope};
 use crate::identify::data::RigData;
-use crate::identify::display::significant;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
 
@@ -39,12 +38,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     let fz = c.take("fz");
     for (i, v) in fz.iter().enumerate() {
         if *v < 0.0 {
-            return Err(c.error_at(
-                path,
-                i,
-                "fz",
-                format!("column `fz`: {v} N is negative (loads are positive in FORMATS.md)"),
-            ));
+            return Err(c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v }));
         }
     }
     let n = fz.len();
@@ -57,10 +51,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         _ => None,
     };
     if lateral.is_none() && longitudinal.is_none() {
-        return Err(InputError::File {
-            path: path.to_path_buf(),
-            message: "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)".into(),
-        });
+        return Err(InputError::problem(path, InputProblem::NoSweep));
     }
     let camber = c.take_optional("camber");
     // Angles in degrees are the commonest slip of a hand-made file: a slip
@@ -76,11 +67,11 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
                 path,
                 i,
                 name,
-                format!(
-                    "column `{name}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?",
-                    values[i],
-                    limit.to_degrees()
-                ),
+                InputProblem::AngleInDegrees {
+                    column: name,
+                    value: values[i],
+                    limit,
+                },
             ));
         }
     }
@@ -112,10 +103,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
 pub fn read_lateral(path: &Path) -> Result<RigData, InputError> {
     let d = read_rig(path)?;
     if d.fy.iter().all(|v| v.is_nan()) {
-        return Err(InputError::File {
-            path: path.to_path_buf(),
-            message: "no lateral data: a lateral fit needs the columns `alpha` and `fy`".into(),
-        });
+        return Err(InputError::problem(path, InputProblem::NoLateral));
     }
     Ok(d)
 }
@@ -178,16 +166,17 @@ impl Slope {
         self.slope > SIGN_STANDARD_ERRORS * self.standard_error
     }
 
-    /// The slope, its standard error and the samples behind it, in words.
-    fn describe(&self, unit: &str, slip: &str) -> String {
-        format!(
-            "{} {unit} (standard error {} {unit}) from {} samples ({} with {slip} > 0, {} with {slip} < 0)",
-            significant(self.slope, 4),
-            significant(self.standard_error, 2),
-            self.above + self.below,
-            self.above,
-            self.below
-        )
+    /// The slope as an error reports it, fitted within [`SMALL_SLIP`] of
+    /// zero slip (`combined`: of both slips).
+    fn reported(&self, combined: bool) -> SmallSlipSlope {
+        SmallSlipSlope {
+            slope: self.slope,
+            standard_error: self.standard_error,
+            above: self.above,
+            below: self.below,
+            small_slip: SMALL_SLIP,
+            combined,
+        }
     }
 }
 
@@ -202,15 +191,16 @@ fn check_signs(
     mz: Option<&[f64]>,
     longitudinal: Option<(&[f64], &[f64])>,
 ) -> Result<(), InputError> {
-    let refuse = |column: &str, found: String, requires: &str| {
-        let message = format!(
-            "column `{column}` (column {} of the header) has the wrong sign: {found}; FORMATS.md (ISO 8855) requires {requires}. The file is likely in the SAE or another sign convention: negate the `{column}` column",
-            c.column(column)
-        );
-        InputError::File {
-            path: path.to_path_buf(),
-            message,
-        }
+    let refuse = |channel: RigChannel, slope: SmallSlipSlope, fy_slope: Option<f64>| {
+        InputError::problem(
+            path,
+            InputProblem::WrongSign {
+                channel,
+                position: c.column(channel.column()),
+                slope,
+                fy_slope,
+            },
+        )
     };
     // Each channel is judged at small values of the other slip, so combined
     // slip (a braking tyre's reduced Fy) does not blur the slope.
@@ -220,34 +210,20 @@ fn check_signs(
         let near: Vec<usize> = (0..alpha.len())
             .filter(|&i| small(Some(alpha), i) && small(kappa, i))
             .collect();
-        let window = match kappa {
-            Some(_) => format!("|alpha| ≤ {SMALL_SLIP} rad, |kappa| ≤ {SMALL_SLIP}"),
-            None => format!("|alpha| ≤ {SMALL_SLIP} rad"),
-        };
+        let combined = kappa.is_some();
         let pairs =
             |y: &[f64]| -> Vec<(f64, f64)> { near.iter().map(|&i| (alpha[i], y[i])).collect() };
         if let Some(fy_slope) = Slope::fit(&pairs(fy)) {
             if fy_slope.clearly_negative() {
-                return Err(refuse(
-                    "fy",
-                    format!(
-                        "near zero slip ({window}) its least-squares slope against `alpha` is {}",
-                        fy_slope.describe("N/rad", "alpha")
-                    ),
-                    "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
-                ));
+                return Err(refuse(RigChannel::Fy, fy_slope.reported(combined), None));
             }
             let mz_slope = mz.and_then(|mz| Slope::fit(&pairs(mz)));
             if let Some(mz_slope) = mz_slope {
                 if fy_slope.clearly_positive() && mz_slope.clearly_negative() {
                     return Err(refuse(
-                        "mz",
-                        format!(
-                            "near zero slip ({window}) its least-squares slope against `alpha` is {}, while that of `fy` is {} N/rad",
-                            mz_slope.describe("N·m/rad", "alpha"),
-                            significant(fy_slope.slope, 4)
-                        ),
-                        "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
+                        RigChannel::Mz,
+                        mz_slope.reported(combined),
+                        Some(fy_slope.slope),
                     ));
                 }
             }
@@ -260,18 +236,7 @@ fn check_signs(
             .map(|i| (kappa[i], fx[i]))
             .collect();
         if let Some(s) = Slope::fit(&pairs).filter(Slope::clearly_negative) {
-            let window = match alpha {
-                Some(_) => format!("|kappa| ≤ {SMALL_SLIP}, |alpha| ≤ {SMALL_SLIP} rad"),
-                None => format!("|kappa| ≤ {SMALL_SLIP}"),
-            };
-            return Err(refuse(
-                "fx",
-                format!(
-                    "near zero slip ({window}) its least-squares slope against `kappa` is {}",
-                    s.describe("N", "kappa")
-                ),
-                "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
-            ));
+            return Err(refuse(RigChannel::Fx, s.reported(alpha.is_some()), None));
         }
     }
     Ok(())

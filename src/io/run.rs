@@ -2,7 +2,7 @@
 //! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs.
 
 use super::columns::read_columns;
-use crate::error::InputError;
+use crate::error::{InputError, InputProblem};
 use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
 use std::path::Path;
@@ -21,19 +21,15 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
                 path,
                 i,
                 "t",
-                format!(
-                    "column `t`: {} does not follow {} (time must be strictly increasing)",
-                    t[i],
-                    t[i - 1]
-                ),
+                InputProblem::TimeNotIncreasing {
+                    value: t[i],
+                    previous: t[i - 1],
+                },
             ));
         }
     }
     if t.len() < 2 {
-        return Err(InputError::File {
-            path: path.to_path_buf(),
-            message: "a run needs at least two samples".into(),
-        });
+        return Err(InputError::problem(path, InputProblem::TooFewSamples));
     }
     // A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged
     // on the 99th percentile so that a logger's spike (repaired later) does
@@ -51,10 +47,10 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
             path,
             i,
             "steer",
-            format!(
-                "column `steer`: {} rad is beyond ±90° (1 % of the run reaches {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?",
-                steer[i]
-            ),
+            InputProblem::SteerBeyondQuarterTurn {
+                value: steer[i],
+                p99,
+            },
         ));
     }
     Ok(MeasuredRun {

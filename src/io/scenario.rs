@@ -8,7 +8,7 @@ use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, InputProblem, ParamError};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
@@ -377,7 +377,7 @@ fn step_steer(
                 param_error(
                     src,
                     Some("manoeuvre"),
-                    ParamError::new("lateral_acceleration", ay, &m),
+                    ParamError::new("lateral_acceleration", ay, &m.to_string()),
                 )
             })
     };
@@ -424,15 +424,17 @@ fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved,
     let mut report = crate::measured::clean::CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run(run_path)?;
-    let run = crate::measured::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
-        InputError::File {
-            path: run_path.to_path_buf(),
-            message: format!(
-                "no two successive samples at or above min_speed = {} m/s ({} of {} samples below it)",
-                r.min_speed, report.samples_slow, report.samples_read
-            ),
-        }
-    })?;
+    let run =
+        crate::measured::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
+            InputError::problem(
+                run_path,
+                InputProblem::NoMovingSamples {
+                    min_speed: r.min_speed,
+                    slow: report.samples_slow,
+                    read: report.samples_read,
+                },
+            )
+        })?;
     // A masked first sample is a glitch, not the initial state.
     let first = (0..run.t.len())
         .find(|i| !run.masked.contains(i))

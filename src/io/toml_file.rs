@@ -2,7 +2,7 @@
 //! with toml's own span, value errors found after parsing (a negative mass)
 //! are located by looking the key path up in the document's spans.
 
-use crate::error::{InputError, Location, ParamError};
+use crate::error::{InputError, InputProblem, Location, ParamError, PathFound};
 use serde::de::DeserializeOwned;
 use std::path::{Path, PathBuf};
 
@@ -76,7 +76,7 @@ impl TomlSource {
                 key,
                 detail: message,
             },
-            None => self.located(span, message),
+            None => self.located(span, InputProblem::Toml { detail: message }),
         }
     }
 
@@ -159,18 +159,19 @@ impl TomlSource {
     }
 
     fn referenced(&self, key_path: &str, path: &Path, folder: bool) -> Result<(), InputError> {
-        let what = match (path.exists(), path.is_dir(), folder) {
+        let found = match (path.exists(), path.is_dir(), folder) {
             (true, true, true) | (true, false, false) => return Ok(()),
-            (false, ..) => "which does not exist",
-            (true, true, false) => "which is a folder, not a file",
-            (true, false, true) => "which is a file, not a folder",
+            (false, ..) => PathFound::Nothing,
+            (true, true, false) => PathFound::FolderNotFile,
+            (true, false, true) => PathFound::FileNotFolder,
         };
-        let message = format!(
-            "`{key_path}` names {}, {what} (paths are relative to the folder of {})",
-            path.display(),
-            self.path.display()
-        );
-        Err(self.located(self.key_span(key_path), message))
+        let problem = InputProblem::MissingFile {
+            key: key_path.to_string(),
+            target: path.to_path_buf(),
+            base: self.path.clone(),
+            found,
+        };
+        Err(self.located(self.key_span(key_path), problem))
     }
 
     /// A located error for a value that failed validation.
@@ -189,21 +190,11 @@ impl TomlSource {
     }
 
     /// An error at `span` of this file, or of the whole file without one.
-    fn located(&self, span: Option<std::ops::Range<usize>>, message: String) -> InputError {
-        match span {
-            Some(span) => {
-                let (line, column) = line_col(&self.text, span.start);
-                InputError::At {
-                    path: self.path.clone(),
-                    line,
-                    column,
-                    message,
-                }
-            }
-            None => InputError::File {
-                path: self.path.clone(),
-                message,
-            },
+    fn located(&self, span: Option<std::ops::Range<usize>>, problem: InputProblem) -> InputError {
+        InputError::Invalid {
+            path: self.path.clone(),
+            at: span.map(|s| self.location(s.start)),
+            problem: Box::new(problem),
         }
     }
 }

@@ -224,12 +224,14 @@ fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, Error> {
         source,
     })?;
     serde_json::from_str(&text).map_err(|e| {
-        InputError::At {
-            path: path.to_path_buf(),
-            line: e.line(),
-            column: e.column(),
-            message: format!("not a shard file of this version: {e}"),
-        }
+        InputError::problem_at(
+            path,
+            e.line(),
+            e.column(),
+            crate::error::InputProblem::NotAShard {
+                detail: e.to_string(),
+            },
+        )
         .into()
     })
 }

@@ -66,7 +66,7 @@ pub fn run(
                     points,
                     i,
                     "pressure",
-                    format!("column `pressure`: {} Pa is not a positive pressure", p[i]),
+                    crate::error::InputProblem::NonPositivePressure { value: p[i] },
                 )
                 .into());
         }

@@ -7,8 +7,9 @@
 //! reported and checked against ISO 7401, which asks for at most 0.15 s.
 //! Units: SI, rad, s.
 
+use super::MetricsError;
 use super::{step_metrics, MetricSettings, StepMetrics};
-use crate::error::InputError;
+use crate::error::{InputError, InputProblem, RefusedPiece};
 use crate::measured::clean::{clean_single_with, fill_masked, CleanSettings, CleaningReport};
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -71,6 +72,12 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
     }
 }
 
+/// Why a moving piece gave no step-steer metrics (the cleaning report's
+/// reason for dropping it).
+#[derive(Debug, thiserror::Error)]
+#[error("no step-steer metrics ({0})")]
+struct NoStepMetrics(MetricsError);
+
 /// Cleans `run`, finds the piece with a steer step and measures it.
 pub fn measured_step_metrics(
     run: MeasuredRun,
@@ -94,29 +101,30 @@ pub fn measured_step_metrics(
                 settings,
             )
             .map(|m| (m, p))
-            .map_err(|e| format!("no step-steer metrics ({e})"))
+            .map_err(NoStepMetrics)
         },
     );
     let Some((piece, (metrics, filled))) = found else {
-        let message = if cleaning.dropped_pieces.is_empty() {
-            format!(
-                "no two successive samples at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
-                cleaning.samples_slow, cleaning.samples_read
-            )
+        let problem = if cleaning.dropped_pieces.is_empty() {
+            InputProblem::NoMovingSamples {
+                min_speed,
+                slow: cleaning.samples_slow,
+                read: cleaning.samples_read,
+            }
         } else {
-            let why: Vec<String> = cleaning
+            let pieces = cleaning
                 .dropped_pieces
                 .iter()
-                .map(|p| {
-                    format!(
-                        "{} ({:.2}–{:.2} s): {}",
-                        p.name, p.t_start, p.t_end, p.reason
-                    )
+                .map(|p| RefusedPiece {
+                    name: p.name.clone(),
+                    t_start: p.t_start,
+                    t_end: p.t_end,
+                    reason: p.reason.clone(),
                 })
                 .collect();
-            format!("no moving piece holds a steer step: {}", why.join("; "))
+            InputProblem::NoSteerStep { pieces }
         };
-        return Err(InputError::File { path, message });
+        return Err(InputError::problem(&path, problem));
     };
     let steer_rise_time = steer_rise(&filled, &metrics, settings.pre_window);
     let mut warnings = Vec::new();

@@ -6,6 +6,21 @@
 //! solves it from the linear bicycle model's answer. Units: SI, rad.
 
 use super::{Inputs, State, VehicleModel, MIN_SPEED};
+use thiserror::Error;
+
+/// No steady state holds the asked lateral acceleration at the speed:
+/// beyond the vehicle's lateral limit, or the solver did not converge.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error(
+    "no steady state at {speed} m/s with ay = {ay} m/s²: beyond the vehicle's \
+     lateral limit (or the solver did not converge)"
+)]
+pub struct NoSteadyState {
+    /// The speed, m/s (at least the model's smallest speed).
+    pub speed: f64,
+    /// The lateral acceleration asked, m/s².
+    pub ay: f64,
+}
 
 /// Largest sideslip or steer a steady state may have, rad (45°): beyond it
 /// the 2-DOF model's assumptions no longer hold.
@@ -141,7 +156,7 @@ impl VehicleModel {
         speed: f64,
         friction: f64,
         ay: f64,
-    ) -> Result<SteadyState, String> {
+    ) -> Result<SteadyState, NoSteadyState> {
         let u = speed.max(MIN_SPEED);
         // `ay` is what the accelerometer reads (the tyres' force over the
         // mass); on a banked road the path needs g·sin θ less.
@@ -163,12 +178,7 @@ impl VehicleModel {
             // that would let Newton 'converge' by running off to β = ±90°.
             [(o.ay - ay) / u, o.yaw_acceleration]
         };
-        let fail = || {
-            format!(
-                "no steady state at {u} m/s with ay = {ay} m/s²: beyond the vehicle's \
-                 lateral limit (or the solver did not converge)"
-            )
-        };
+        let fail = || NoSteadyState { speed: u, ay };
         let (x, _) = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100).ok_or_else(fail)?;
         if x[0].abs() > MAX_ANGLE || x[1].abs() > MAX_ANGLE {
             return Err(fail());

@@ -52,6 +52,21 @@ fn linear_steady_yaw_gain_matches_the_bicycle_model() {
             .unwrap();
         assert_relative_eq!(ss.yaw_rate / ss.steer, gain, max_relative = 1e-9);
     }
+    // 100 g needs a steer past any wheel's lock: refused, naming both.
+    let e = m
+        .steady_state_for_lateral_acceleration(20.0, 1.0, 1000.0)
+        .unwrap_err();
+    assert_eq!(
+        e,
+        crate::vehicle::steady::NoSteadyState {
+            speed: 20.0,
+            ay: 1000.0
+        }
+    );
+    assert_eq!(
+        e.to_string(),
+        "no steady state at 20 m/s with ay = 1000 m/s²: beyond the vehicle's lateral limit (or the solver did not converge)"
+    );
 }
 
 /// The linear model's step response in closed form, x(t) = A⁻¹(e^{At} − I)·B·δ,

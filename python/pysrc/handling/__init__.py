@@ -211,6 +211,7 @@ def _keyword_error(e: InputError, doc: Document, what: str, strip: str = "") -> 
     err.line = None
     err.column = None
     err.reason = reason
+    err.problem = getattr(e, "problem", None)
     return err
 
 
@@ -285,7 +286,7 @@ class Vehicle:
         except OSError as e:
             err = InputError(f"{p}: {e.strerror}")
             err.path, err.line, err.column, err.reason = p, None, None, str(e.strerror)
-            err.key, err.value, err.kind = None, None, "input"
+            err.key, err.value, err.kind, err.problem = None, None, "input", None
             raise err from None
         v = cls.__new__(cls)
         v._p = json.loads(_handling.vehicle_from_toml(text, p))

@@ -22,7 +22,10 @@ class InputError(HandlingError):
     ``line``, ``column``; ``key`` and ``value`` for a wrong value, for a
     CSV cell the column's name and the cell's text), or a
     wrong scenario or vehicle keyword (``key``, dotted, and ``value``;
-    ``path`` and ``line`` None)."""
+    ``path`` and ``line`` None). ``problem`` names what is wrong with
+    the content (``"NegativeLoad"``, ``"WrongSign"``, …) where the library
+    types it, else None."""
+    problem: Optional[str]
     path: Optional[str]
     line: Optional[int]
     column: Optional[int]

@@ -196,7 +196,7 @@ fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::identify::grouping::levels::*;
 
     fn nominals(l: &Levels) -> Vec<f64> {
         l.levels.iter().map(|q| q.nominal).collect()

@@ -34,13 +34,13 @@
 //! Layout: `levels.rs` finds the levels of one variable; this file selects
 //! and groups the samples into conditions and thins them into fit points.
 
-mod levels;
+pub(crate) mod levels;
 
 pub use super::data::SlipAxis;
 pub use levels::{levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
-use crate::error::InputError;
+use crate::error::{InputError, InputProblem};
 use serde::Serialize;
 use std::path::Path;
 
@@ -152,7 +152,7 @@ const NO_CAMBER_COLUMN_TOLERANCE: f64 = 1e-6;
 /// The levels a [`Grouping`] selects: camber and pressure level indices
 /// (`None`: all). A request the file cannot meet is an error.
 fn selection(
-    refuse: &dyn Fn(String) -> InputError,
+    refuse: &dyn Fn(InputProblem) -> InputError,
     d: &RigData,
     g: &Grouping,
     cambers: &Levels,
@@ -160,27 +160,17 @@ fn selection(
 ) -> Result<(Option<usize>, Option<usize>), InputError> {
     let select = |l: &Levels, want: f64| {
         l.select(want).ok_or_else(|| {
-            let have: Vec<String> = l
-                .levels
-                .iter()
-                .map(|q| l.variable.display(q.nominal))
-                .collect();
-            refuse(format!(
-                "no {} level near the requested {} (levels: {}; a level holds values within {} of its range)",
-                l.variable.column(),
-                l.variable.display(want),
-                have.join(", "),
-                l.variable.display(l.separation)
-            ))
+            refuse(InputProblem::NoLevelNear {
+                variable: l.variable,
+                requested: want,
+                levels: l.levels.iter().map(|q| q.nominal).collect(),
+                separation: l.separation,
+            })
         })
     };
     let want_p = match (g.pressure, pressures) {
         (None, _) => None,
-        (Some(_), None) => {
-            return Err(refuse(
-                "a pressure was requested but the file has no `pressure` column".into(),
-            ))
-        }
+        (Some(_), None) => return Err(refuse(InputProblem::NoPressureColumn)),
         (Some(p), Some(levels)) => Some(select(levels, p)?),
     };
     let want_c = match g.camber {
@@ -189,10 +179,7 @@ fn selection(
         // request for 0 selects them all, any other camber is not there.
         Some(c) if !d.camber_measured && c.abs() <= NO_CAMBER_COLUMN_TOLERANCE => None,
         Some(c) if !d.camber_measured => {
-            return Err(refuse(format!(
-                "camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0)",
-                c.to_degrees()
-            )))
+            return Err(refuse(InputProblem::NoCamberColumn { camber: c }))
         }
         Some(c) => Some(select(cambers, c)?),
     };
@@ -241,12 +228,8 @@ pub fn group(
     g: &Grouping,
     axis: SlipAxis,
 ) -> Result<Grouped, InputError> {
-    let refuse = |message: String| InputError::File {
-        path: path.to_path_buf(),
-        message,
-    };
-    let columns = SweepColumns::of(d, axis)
-        .ok_or_else(|| refuse("no longitudinal data (columns `kappa` and `fx`) to group".into()))?;
+    let refuse = |problem| InputError::problem(path, problem);
+    let columns = SweepColumns::of(d, axis).ok_or_else(|| refuse(InputProblem::NoLongitudinal))?;
     let loads = levels(Variable::Load, &d.fz, g.load_resolution);
     let cambers = levels(Variable::Camber, &d.camber, g.camber_resolution);
     let pressures = d

@@ -33,7 +33,7 @@ use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road}
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
-use crate::error::{named, InputError, NameKind, ParamError};
+use crate::error::{named, InputError, InputProblem, NameKind, ParamError};
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
@@ -87,10 +87,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         path.to_path_buf()
     };
     if folder && !file.is_file() {
-        return Err(file_error(
-            path,
-            "a campaign folder needs vehicle.toml (with a [vehicle] table), runs/*.csv and optionally tyre_rig.csv".into(),
-        ));
+        return Err(file_error(path, InputProblem::NoVehicleFile));
     }
     let src = TomlSource::read(&file)?;
     let f: CampaignFile = src.parse()?;
@@ -119,13 +116,12 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     if runs.len() < 2 {
         return Err(file_error(
             &file,
-            format!(
-                "{} run(s) after checking ({} of {} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)",
-                runs.len(),
-                cleaning.samples_kept,
-                cleaning.samples_read,
-                f.diagnose.min_speed
-            ),
+            InputProblem::TooFewRuns {
+                runs: runs.len(),
+                kept: cleaning.samples_kept,
+                read: cleaning.samples_read,
+                min_speed: f.diagnose.min_speed,
+            },
         ));
     }
     // A folder's whole name (`runs_0.05` is not `runs_0`): two folders

@@ -4,7 +4,7 @@
 //! the yaw rate it gives, ISO 8855 signs) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
-use crate::error::InputError;
+use crate::error::{InputError, InputProblem};
 use crate::io::read_run;
 use crate::io::toml_file::TomlSource;
 use crate::measured::clean::{
@@ -29,11 +29,8 @@ pub struct RunSpec {
 }
 
 /// An error about a whole file (the campaign's, a run's).
-pub(super) fn file_error(path: &Path, message: String) -> InputError {
-    InputError::File {
-        path: path.to_path_buf(),
-        message,
-    }
+pub(super) fn file_error(path: &Path, problem: InputProblem) -> InputError {
+    InputError::problem(path, problem)
 }
 
 /// The run files: `[runs] files` and the `*.csv` of `[runs] dir` (of
@@ -97,10 +94,9 @@ pub(super) fn run_files(
         if found.is_empty() {
             return Err(file_error(
                 file,
-                format!(
-                    "no measured runs: the runs folder {} holds no *.csv file",
-                    d.display()
-                ),
+                InputProblem::EmptyRunsFolder {
+                    folder: d.to_path_buf(),
+                },
             ));
         }
         files.extend(found);
@@ -114,33 +110,23 @@ pub(super) fn run_files(
         if let Some(q) = files[..i].iter().find(|q| same(q)) {
             return Err(file_error(
                 file,
-                format!(
-                    "the run {} is listed twice (as {} too): each run is held out once",
-                    p.display(),
-                    q.display()
-                ),
+                InputProblem::RunListedTwice {
+                    run: p.clone(),
+                    also: q.clone(),
+                },
             ));
         }
     }
     if files.is_empty() {
         // The vehicle file of a campaign folder, passed for the folder.
-        let hint = if !folder && base.join("runs").is_dir() {
-            let folder = if base.as_os_str().is_empty() {
-                Path::new(".")
+        let campaign_folder = (!folder && base.join("runs").is_dir()).then(|| {
+            if base.as_os_str().is_empty() {
+                PathBuf::from(".")
             } else {
-                base
-            };
-            format!(
-                "; its folder has runs/: diagnose the folder instead, `handling diagnose {}`",
-                folder.display()
-            )
-        } else {
-            String::new()
-        };
-        return Err(file_error(
-            file,
-            format!("no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv){hint}"),
-        ));
+                base.to_path_buf()
+            }
+        });
+        return Err(file_error(file, InputProblem::NoRuns { campaign_folder }));
     }
     Ok(files)
 }
@@ -252,9 +238,10 @@ fn steer_against_yaw(
     if m < -0.1 {
         return Err(file_error(
             &run.path,
-            format!(
-                "the yaw rate turns against the steer (median r·l/(u·δ) = {m:.2} over {n} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; is `steer` or `yaw_rate` in another sign convention? negate it"
-            ),
+            InputProblem::YawAgainstSteer {
+                median: m,
+                samples: n,
+            },
         ));
     }
     Ok(if m < 0.1 {
@@ -277,9 +264,12 @@ fn check_length(run: &MeasuredRun) -> Result<(), InputError> {
     if span < MIN_RUN_SECONDS || n < MIN_RUN_SAMPLES {
         return Err(file_error(
             &run.path,
-            format!(
-                "the run is {span:.2} s long with {n} samples: a run needs at least {MIN_RUN_SECONDS} s and {MIN_RUN_SAMPLES} samples to show a response"
-            ),
+            InputProblem::RunTooShort {
+                span,
+                samples: n,
+                min_span: MIN_RUN_SECONDS,
+                min_samples: MIN_RUN_SAMPLES,
+            },
         ));
     }
     Ok(())

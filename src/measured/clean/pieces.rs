@@ -192,18 +192,21 @@ pub fn clean_single(
     settings: &CleanSettings,
     report: &mut CleaningReport,
 ) -> Option<MeasuredRun> {
-    clean_single_with(run, settings, report, |_| Ok(())).map(|(p, ())| p)
+    clean_single_with(run, settings, report, |_| {
+        Ok::<(), std::convert::Infallible>(())
+    })
+    .map(|(p, ())| p)
 }
 
 /// Cleans a run for a single use: of its moving pieces, longest first, the
 /// first that `fits` accepts is kept with what `fits` made of it; every
 /// other piece is listed as dropped with its reason (what `fits` said, or
 /// that another piece was used). `None` when no piece is accepted.
-pub fn clean_single_with<T>(
+pub fn clean_single_with<T, E: std::fmt::Display>(
     run: MeasuredRun,
     settings: &CleanSettings,
     report: &mut CleaningReport,
-    mut fits: impl FnMut(&MeasuredRun) -> Result<T, String>,
+    mut fits: impl FnMut(&MeasuredRun) -> Result<T, E>,
 ) -> Option<(MeasuredRun, T)> {
     let first = report.pieces.len();
     let pieces = clean_run(run, settings, report);
@@ -218,7 +221,7 @@ pub fn clean_single_with<T>(
                 chosen = Some((k, v));
                 break;
             }
-            Err(e) => reasons[k] = e,
+            Err(e) => reasons[k] = e.to_string(),
         }
     }
     for (k, p) in pieces.iter().enumerate() {
@@ -250,15 +253,17 @@ pub fn clean_for_metrics(
 ) -> Result<(MeasuredRun, CleaningReport), crate::error::InputError> {
     let path = run.path.clone();
     let mut report = CleaningReport::new(min_speed);
-    let piece = clean_single(run, &CleanSettings::single(min_speed), &mut report).ok_or_else(|| {
-        crate::error::InputError::File {
-            path,
-            message: format!(
-                "no two successive samples at or above min_speed = {min_speed} m/s ({} of {} samples below it)",
-                report.samples_slow, report.samples_read
-            ),
-        }
-    })?;
+    let piece =
+        clean_single(run, &CleanSettings::single(min_speed), &mut report).ok_or_else(|| {
+            crate::error::InputError::problem(
+                &path,
+                crate::error::InputProblem::NoMovingSamples {
+                    min_speed,
+                    slow: report.samples_slow,
+                    read: report.samples_read,
+                },
+            )
+        })?;
     Ok((fill_masked(&piece), report))
 }
 

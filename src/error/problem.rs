@@ -1,0 +1,463 @@
+//! What is wrong with an input file's content, as typed fields: the
+//! column, the value as read, the counts and limits behind the verdict.
+//! Each problem's message is complete once the file (and where known the
+//! line and column) is put before it by [`InputError::Invalid`].
+//!
+//! Units as the files write them: SI, radians; the messages print angles
+//! in degrees where people read them so.
+//!
+//! [`InputError::Invalid`]: super::InputError::Invalid
+
+use crate::identify::display::significant;
+use crate::identify::grouping::levels::Variable;
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// A rig channel whose sign FORMATS.md (ISO 8855) fixes at small slip.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RigChannel {
+    /// Lateral force, against the slip angle.
+    Fy,
+    /// Aligning moment, against the slip angle.
+    Mz,
+    /// Longitudinal force, against the slip ratio.
+    Fx,
+}
+
+impl RigChannel {
+    /// The column's name.
+    pub fn column(self) -> &'static str {
+        match self {
+            RigChannel::Fy => "fy",
+            RigChannel::Mz => "mz",
+            RigChannel::Fx => "fx",
+        }
+    }
+    /// The slip column the channel is judged against.
+    fn slip(self) -> &'static str {
+        match self {
+            RigChannel::Fy | RigChannel::Mz => "alpha",
+            RigChannel::Fx => "kappa",
+        }
+    }
+    /// The slope's unit.
+    fn unit(self) -> &'static str {
+        match self {
+            RigChannel::Fy => "N/rad",
+            RigChannel::Mz => "N·m/rad",
+            RigChannel::Fx => "N",
+        }
+    }
+    /// The sign FORMATS.md requires, in words.
+    fn requires(self) -> &'static str {
+        match self {
+            RigChannel::Fy => "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
+            RigChannel::Mz => "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
+            RigChannel::Fx => "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
+        }
+    }
+}
+
+/// A least-squares slope of a channel against its slip near zero slip.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SmallSlipSlope {
+    /// The slope (N/rad, N·m/rad or N per unit slip ratio).
+    pub slope: f64,
+    /// Its standard error, same unit.
+    pub standard_error: f64,
+    /// Samples with positive slip.
+    pub above: usize,
+    /// Samples with negative slip.
+    pub below: usize,
+    /// The window: |slip| up to this (rad, or slip ratio).
+    pub small_slip: f64,
+    /// True when the other slip was limited to the window too (combined
+    /// slip data).
+    pub combined: bool,
+}
+
+/// A moving piece of a run that was not used, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RefusedPiece {
+    /// The piece's name (`file#k`).
+    pub name: String,
+    /// Its first time, s.
+    pub t_start: f64,
+    /// Its last time, s.
+    pub t_end: f64,
+    /// Why it was not used, as the cleaning report says.
+    pub reason: String,
+}
+
+/// What is wrong with an input file's content.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum InputProblem {
+    /// The CSV reader cannot open the file as CSV.
+    #[error("{detail}")]
+    Csv {
+        /// The CSV reader's description.
+        detail: String,
+    },
+    /// The CSV header line cannot be read.
+    #[error("cannot read the header line: {detail}")]
+    Header {
+        /// The CSV reader's description.
+        detail: String,
+    },
+    /// The TOML reader's own description of a syntax or structure error.
+    #[error("{detail}")]
+    Toml {
+        /// The TOML reader's description.
+        detail: String,
+    },
+    /// A key naming a file or folder that does not exist, or is the other
+    /// of the two.
+    #[error("`{key}` names {}, {} (paths are relative to the folder of {})", target.display(), found.describe(), base.display())]
+    MissingFile {
+        /// Dotted key.
+        key: String,
+        /// The path it resolved to.
+        target: PathBuf,
+        /// The file the key is in.
+        base: PathBuf,
+        /// What is there instead.
+        found: PathFound,
+    },
+    /// A JSON file that is not a shard file of this version.
+    #[error("not a shard file of this version: {detail}")]
+    NotAShard {
+        /// The JSON reader's description.
+        detail: String,
+    },
+    /// A time that does not follow the previous one.
+    #[error("column `t`: {value} does not follow {previous} (time must be strictly increasing)")]
+    TimeNotIncreasing {
+        /// The time, s.
+        value: f64,
+        /// The previous row's time, s.
+        previous: f64,
+    },
+    /// A run with fewer than two samples.
+    #[error("a run needs at least two samples")]
+    TooFewSamples,
+    /// A road-wheel steer beyond ±90° over more than 1 % of the run.
+    #[error("column `steer`: {value} rad is beyond ±90° (1 % of the run reaches {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?")]
+    SteerBeyondQuarterTurn {
+        /// The first steer beyond ±90°, rad.
+        value: f64,
+        /// The 99th percentile of |steer|, rad.
+        p99: f64,
+    },
+    /// A negative vertical load.
+    #[error("column `fz`: {value} N is negative (loads are positive in FORMATS.md)")]
+    NegativeLoad {
+        /// The load, N.
+        value: f64,
+    },
+    /// A non-positive inflation pressure.
+    #[error("column `pressure`: {value} Pa is not a positive pressure")]
+    NonPositivePressure {
+        /// The pressure, Pa.
+        value: f64,
+    },
+    /// An angle beyond what a tyre test in radians reaches.
+    #[error("column `{column}`: {value} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", limit.to_degrees())]
+    AngleInDegrees {
+        /// The column (`alpha`, `camber`).
+        column: &'static str,
+        /// The angle as read, rad.
+        value: f64,
+        /// The largest angle accepted, rad.
+        limit: f64,
+    },
+    /// A rig file with neither a lateral nor a longitudinal sweep.
+    #[error(
+        "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)"
+    )]
+    NoSweep,
+    /// A rig file without the lateral sweep a lateral fit needs.
+    #[error("no lateral data: a lateral fit needs the columns `alpha` and `fy`")]
+    NoLateral,
+    /// A rig file without the longitudinal sweep the grouping needs.
+    #[error("no longitudinal data (columns `kappa` and `fx`) to group")]
+    NoLongitudinal,
+    /// A rig channel with the opposite sign to FORMATS.md's at small slip.
+    #[error("{}", wrong_sign(*channel, *position, slope, *fy_slope))]
+    WrongSign {
+        /// The channel.
+        channel: RigChannel,
+        /// Its 1-based position in the header.
+        position: usize,
+        /// Its slope near zero slip.
+        slope: SmallSlipSlope,
+        /// The lateral force's slope, N/rad (for [`RigChannel::Mz`]).
+        fy_slope: Option<f64>,
+    },
+    /// A requested camber or pressure that no level of the file lies near.
+    #[error("no {} level near the requested {} (levels: {}; a level holds values within {} of its range)", variable.column(), variable.display(*requested), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
+    NoLevelNear {
+        /// The grouping variable.
+        variable: Variable,
+        /// The requested value (SI).
+        requested: f64,
+        /// The nominal values of the file's levels (SI).
+        levels: Vec<f64>,
+        /// The separation of levels (SI).
+        separation: f64,
+    },
+    /// A pressure requested from a file without pressures.
+    #[error("a pressure was requested but the file has no `pressure` column")]
+    NoPressureColumn,
+    /// A camber other than 0 requested from a file without cambers.
+    #[error("camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0)", camber.to_degrees())]
+    NoCamberColumn {
+        /// The requested camber, rad.
+        camber: f64,
+    },
+    /// A run with no two successive samples fast enough.
+    #[error("no two successive samples at or above min_speed = {min_speed} m/s ({slow} of {read} samples below it)")]
+    NoMovingSamples {
+        /// The speed threshold, m/s.
+        min_speed: f64,
+        /// Samples below it.
+        slow: usize,
+        /// Samples read.
+        read: usize,
+    },
+    /// A run none of whose moving pieces holds a steer step.
+    #[error("no moving piece holds a steer step: {}", pieces.iter().map(|p| format!("{} ({:.2}–{:.2} s): {}", p.name, p.t_start, p.t_end, p.reason)).collect::<Vec<_>>().join("; "))]
+    NoSteerStep {
+        /// The pieces and why each was refused.
+        pieces: Vec<RefusedPiece>,
+    },
+    /// A runs folder without CSV files.
+    #[error("no measured runs: the runs folder {} holds no *.csv file", folder.display())]
+    EmptyRunsFolder {
+        /// The folder.
+        folder: PathBuf,
+    },
+    /// A run listed twice.
+    #[error("the run {} is listed twice (as {} too): each run is held out once", run.display(), also.display())]
+    RunListedTwice {
+        /// The run as listed the second time.
+        run: PathBuf,
+        /// The run as listed first.
+        also: PathBuf,
+    },
+    /// A campaign that names no run.
+    #[error("no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv){}", campaign_folder.as_ref().map_or(String::new(), |f| format!("; its folder has runs/: diagnose the folder instead, `handling diagnose {}`", f.display())))]
+    NoRuns {
+        /// The folder of the vehicle file when it is a campaign folder
+        /// (it has `runs/`) passed as a file.
+        campaign_folder: Option<PathBuf>,
+    },
+    /// A campaign folder without `vehicle.toml`.
+    #[error("a campaign folder needs vehicle.toml (with a [vehicle] table), runs/*.csv and optionally tyre_rig.csv")]
+    NoVehicleFile,
+    /// A run whose yaw rate turns against its steer.
+    #[error("the yaw rate turns against the steer (median r·l/(u·δ) = {median:.2} over {samples} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; is `steer` or `yaw_rate` in another sign convention? negate it")]
+    YawAgainstSteer {
+        /// Median of r·l/(u·δ) over the steered samples.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+    },
+    /// A run too short to show a response.
+    #[error("the run is {span:.2} s long with {samples} samples: a run needs at least {min_span} s and {min_samples} samples to show a response")]
+    RunTooShort {
+        /// Its duration, s.
+        span: f64,
+        /// Its samples.
+        samples: usize,
+        /// The shortest run accepted, s.
+        min_span: f64,
+        /// The fewest samples accepted.
+        min_samples: usize,
+    },
+    /// Fewer than two runs left for held-out scoring.
+    #[error("{runs} run(s) after checking ({kept} of {read} samples at or above min_speed = {min_speed} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)")]
+    TooFewRuns {
+        /// Runs left.
+        runs: usize,
+        /// Samples kept.
+        kept: usize,
+        /// Samples read.
+        read: usize,
+        /// The speed threshold, m/s.
+        min_speed: f64,
+    },
+}
+
+impl InputProblem {
+    /// The problem's name (its variant), for callers that report kinds.
+    pub fn name(&self) -> &'static str {
+        match self {
+            InputProblem::Csv { .. } => "Csv",
+            InputProblem::Header { .. } => "Header",
+            InputProblem::Toml { .. } => "Toml",
+            InputProblem::MissingFile { .. } => "MissingFile",
+            InputProblem::NotAShard { .. } => "NotAShard",
+            InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",
+            InputProblem::TooFewSamples => "TooFewSamples",
+            InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
+            InputProblem::NegativeLoad { .. } => "NegativeLoad",
+            InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
+            InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
+            InputProblem::NoSweep => "NoSweep",
+            InputProblem::NoLateral => "NoLateral",
+            InputProblem::NoLongitudinal => "NoLongitudinal",
+            InputProblem::WrongSign { .. } => "WrongSign",
+            InputProblem::NoLevelNear { .. } => "NoLevelNear",
+            InputProblem::NoPressureColumn => "NoPressureColumn",
+            InputProblem::NoCamberColumn { .. } => "NoCamberColumn",
+            InputProblem::NoMovingSamples { .. } => "NoMovingSamples",
+            InputProblem::NoSteerStep { .. } => "NoSteerStep",
+            InputProblem::EmptyRunsFolder { .. } => "EmptyRunsFolder",
+            InputProblem::RunListedTwice { .. } => "RunListedTwice",
+            InputProblem::NoRuns { .. } => "NoRuns",
+            InputProblem::NoVehicleFile => "NoVehicleFile",
+            InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
+            InputProblem::RunTooShort { .. } => "RunTooShort",
+            InputProblem::TooFewRuns { .. } => "TooFewRuns",
+        }
+    }
+}
+
+/// The wrong-sign message: the slope found, the window it was fitted in,
+/// what FORMATS.md requires and the likely fix.
+fn wrong_sign(
+    channel: RigChannel,
+    position: usize,
+    s: &SmallSlipSlope,
+    fy_slope: Option<f64>,
+) -> String {
+    let (column, slip, unit) = (channel.column(), channel.slip(), channel.unit());
+    let x = s.small_slip;
+    let window = match (channel, s.combined) {
+        (RigChannel::Fx, true) => format!("|kappa| ≤ {x}, |alpha| ≤ {x} rad"),
+        (RigChannel::Fx, false) => format!("|kappa| ≤ {x}"),
+        (_, true) => format!("|alpha| ≤ {x} rad, |kappa| ≤ {x}"),
+        (_, false) => format!("|alpha| ≤ {x} rad"),
+    };
+    let described = format!(
+        "{} {unit} (standard error {} {unit}) from {} samples ({} with {slip} > 0, {} with {slip} < 0)",
+        significant(s.slope, 4),
+        significant(s.standard_error, 2),
+        s.above + s.below,
+        s.above,
+        s.below
+    );
+    let versus = fy_slope.map_or(String::new(), |f| {
+        format!(", while that of `fy` is {} N/rad", significant(f, 4))
+    });
+    format!(
+        "column `{column}` (column {position} of the header) has the wrong sign: near zero slip ({window}) its least-squares slope against `{slip}` is {described}{versus}; FORMATS.md (ISO 8855) requires {}. The file is likely in the SAE or another sign convention: negate the `{column}` column",
+        channel.requires()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn slope(
+        slope: f64,
+        standard_error: f64,
+        above: usize,
+        below: usize,
+        combined: bool,
+    ) -> SmallSlipSlope {
+        SmallSlipSlope {
+            slope,
+            standard_error,
+            above,
+            below,
+            small_slip: 0.035,
+            combined,
+        }
+    }
+
+    /// The messages the readers wrote as text before they were typed, word
+    /// for word (the CLI's users and tests read them).
+    #[test]
+    fn messages_read_as_the_text_they_replace() {
+        let fy = InputProblem::WrongSign {
+            channel: RigChannel::Fy,
+            position: 3,
+            slope: slope(-12345.678, 12.3456, 6, 5, false),
+            fy_slope: None,
+        };
+        assert_eq!(fy.to_string(), "column `fy` (column 3 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad) its least-squares slope against `alpha` is -12346 N/rad (standard error 12 N/rad) from 11 samples (6 with alpha > 0, 5 with alpha < 0); FORMATS.md (ISO 8855) requires a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha). The file is likely in the SAE or another sign convention: negate the `fy` column");
+        let mz = InputProblem::WrongSign {
+            channel: RigChannel::Mz,
+            position: 4,
+            slope: slope(-150.0, 2.0, 5, 5, true),
+            fy_slope: Some(50000.0),
+        };
+        assert_eq!(mz.to_string(), "column `mz` (column 4 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad, |kappa| ≤ 0.035) its least-squares slope against `alpha` is -150.0 N·m/rad (standard error 2.0 N·m/rad) from 10 samples (5 with alpha > 0, 5 with alpha < 0), while that of `fy` is 50000 N/rad; FORMATS.md (ISO 8855) requires `mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign. The file is likely in the SAE or another sign convention: negate the `mz` column");
+        let fx = InputProblem::WrongSign {
+            channel: RigChannel::Fx,
+            position: 2,
+            slope: slope(-3000.0, 10.0, 6, 6, true),
+            fy_slope: None,
+        };
+        assert_eq!(fx.to_string(), "column `fx` (column 2 of the header) has the wrong sign: near zero slip (|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad) its least-squares slope against `kappa` is -3000 N (standard error 10 N) from 12 samples (6 with kappa > 0, 6 with kappa < 0); FORMATS.md (ISO 8855) requires a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa). The file is likely in the SAE or another sign convention: negate the `fx` column");
+        let level = InputProblem::NoLevelNear {
+            variable: Variable::Pressure,
+            requested: 250e3,
+            levels: vec![200e3, 220e3],
+            separation: 5e3,
+        };
+        assert_eq!(level.to_string(), "no pressure level near the requested 250.0 kPa (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
+        let angle = InputProblem::AngleInDegrees {
+            column: "camber",
+            value: 3.0,
+            limit: std::f64::consts::FRAC_PI_4,
+        };
+        assert_eq!(angle.to_string(), "column `camber`: 3 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?");
+        let step = InputProblem::NoSteerStep {
+            pieces: vec![
+                RefusedPiece {
+                    name: "run.csv#1".into(),
+                    t_start: 0.0,
+                    t_end: 12.5,
+                    reason: "no step-steer metrics (too short)".into(),
+                },
+                RefusedPiece {
+                    name: "run.csv#2".into(),
+                    t_start: 13.0,
+                    t_end: 20.0,
+                    reason: "another piece was used".into(),
+                },
+            ],
+        };
+        assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (too short); run.csv#2 (13.00–20.00 s): another piece was used");
+        let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
+        assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
+        assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");
+        let camber = InputProblem::NoCamberColumn { camber: 0.05 };
+        assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
+    }
+}
+
+/// What a path a key names leads to, when it is not what the key wants.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PathFound {
+    /// Nothing.
+    Nothing,
+    /// A folder where a file was wanted.
+    FolderNotFile,
+    /// A file where a folder was wanted.
+    FileNotFolder,
+}
+
+impl PathFound {
+    fn describe(self) -> &'static str {
+        match self {
+            PathFound::Nothing => "which does not exist",
+            PathFound::FolderNotFile => "which is a folder, not a file",
+            PathFound::FileNotFolder => "which is a file, not a folder",
+        }
+    }
+}

@@ -91,6 +91,13 @@ fn py_obj<'py, T: IntoPyObject<'py>>(py: Python<'py>, x: T) -> Py<PyAny> {
 fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
     match p {
         InputProblem::MissingFile { key, .. } => (Some(key), None),
+        InputProblem::TirStringUnclosed { key, .. }
+        | InputProblem::TirNoValue { key }
+        | InputProblem::TirNotANumber { key, .. } => (Some(key), None),
+        InputProblem::TirNotFinite { key, value } => (Some(key), Some(*value)),
+        InputProblem::TirUnknownUnit { key, .. } => (Some(key), None),
+        InputProblem::TirMissingKey { key } => (Some(key), None),
+        InputProblem::TirValue(e) => (Some(&e.key), e.value.number()),
         InputProblem::TimeNotIncreasing { value, .. } => (Some("t"), Some(*value)),
         InputProblem::SteerBeyondQuarterTurn { value, .. } => (Some("steer"), Some(*value)),
         InputProblem::NegativeLoad { value } => (Some("fz"), Some(*value)),
@@ -131,7 +138,6 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                     text(&p.reason),
                 ),
                 LibInputError::Key { key, detail, .. } => (text(key), py.None(), text(detail)),
-                LibInputError::At { message: m, .. } => (py.None(), py.None(), text(m)),
                 LibInputError::Invalid { problem, .. } => {
                     let (key, value) = problem_key_value(problem);
                     let value = value.map_or_else(|| py.None(), |v| py_obj(py, v));

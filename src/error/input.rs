@@ -65,28 +65,6 @@ pub enum InputError {
         /// What is wrong (boxed: the error stays small on the happy path).
         problem: Box<InputProblem>,
     },
-    /// Wrong content at a known place, described in words: only the
-    /// `.tir` reader still builds it, until its errors are typed too.
-    #[error("{path}:{line}:{column}: {message}")]
-    At {
-        /// The file.
-        path: PathBuf,
-        /// 1-based line.
-        line: usize,
-        /// 1-based column.
-        column: usize,
-        /// What is wrong, naming the key or column and the value.
-        message: String,
-    },
-    /// Wrong content with no single place, described in words: only the
-    /// `.tir` reader still builds it, until its errors are typed too.
-    #[error("{path}: {message}")]
-    File {
-        /// The file.
-        path: PathBuf,
-        /// What is wrong.
-        message: String,
-    },
     /// A CSV file without a column the reader needs.
     #[error("{path}:{line}:1: missing required column `{name}` (the header has: {})", header.join(", "))]
     MissingColumn {
@@ -198,8 +176,6 @@ impl InputError {
         match self {
             InputError::Io { path, .. }
             | InputError::Invalid { path, .. }
-            | InputError::At { path, .. }
-            | InputError::File { path, .. }
             | InputError::MissingColumn { path, .. }
             | InputError::MalformedRow { path, .. }
             | InputError::Cell { path, .. }
@@ -220,12 +196,10 @@ impl InputError {
                     column: 1,
                 })
             }
-            InputError::At { line, column, .. } | InputError::Cell { line, column, .. } => {
-                Some(Location {
-                    line: *line,
-                    column: *column,
-                })
-            }
+            InputError::Cell { line, column, .. } => Some(Location {
+                line: *line,
+                column: *column,
+            }),
             InputError::Value { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,

@@ -8,6 +8,7 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
+use super::ParamError;
 use crate::identify::display::significant;
 use crate::identify::grouping::levels::Variable;
 use std::path::PathBuf;
@@ -124,6 +125,90 @@ pub enum InputProblem {
         /// What is there instead.
         found: PathFound,
     },
+    /// A `.tir` section header without its closing bracket.
+    #[error("section header `{header}` has no closing `]`")]
+    TirSectionUnclosed {
+        /// The header as written.
+        header: String,
+    },
+    /// A `.tir` line whose text before `=` is not a key.
+    #[error("`{text}` is not a key")]
+    TirNotAKey {
+        /// The text before `=`.
+        text: String,
+    },
+    /// A `.tir` string value without its closing quote.
+    #[error("`{key}`: the string {body} has no closing {quote}")]
+    TirStringUnclosed {
+        /// The key.
+        key: String,
+        /// The value as written.
+        body: String,
+        /// The opening quote.
+        quote: char,
+    },
+    /// A `.tir` key without a value.
+    #[error("`{key}` has no value")]
+    TirNoValue {
+        /// The key.
+        key: String,
+    },
+    /// A `.tir` number that is not finite.
+    #[error("`{key}`: {value} is not finite")]
+    TirNotFinite {
+        /// The key.
+        key: String,
+        /// The value read.
+        value: f64,
+    },
+    /// A `.tir` value that should be a number and is not.
+    #[error("`{key}`: `{text}` is not a number")]
+    TirNotANumber {
+        /// The key.
+        key: String,
+        /// The value as written.
+        text: String,
+    },
+    /// A unit of the `[UNITS]` section that the reader does not know.
+    #[error("`{key}`: unknown unit `{unit}`")]
+    TirUnknownUnit {
+        /// The `[UNITS]` key.
+        key: &'static str,
+        /// The unit as written.
+        unit: String,
+    },
+    /// Angles given in another unit than radians.
+    #[error("`ANGLE`: `{unit}`: only radians are supported for Magic Formula coefficients")]
+    TirAngleNotRadians {
+        /// The unit as written.
+        unit: String,
+    },
+    /// A `FITTYP` that names no supported Magic Formula version.
+    #[error(
+        "`FITTYP`: `{written}` is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)"
+    )]
+    TirUnsupportedFittyp {
+        /// The value as written.
+        written: String,
+    },
+    /// No `FITTYP` and no PAC2002 format to stand for it.
+    #[error("missing key `FITTYP` in [MODEL] (61 or 62 for MF 6.1/6.2, 6 or 21 for 5.2; or PROPERTY_FILE_FORMAT = 'PAC2002')")]
+    TirNoFittyp,
+    /// A `TYRESIDE` that is neither side.
+    #[error("`TYRESIDE`: `{side}` is not LEFT or RIGHT")]
+    TirSide {
+        /// The value as written.
+        side: String,
+    },
+    /// A key every Magic Formula file needs.
+    #[error("missing key `{key}`")]
+    TirMissingKey {
+        /// The key.
+        key: &'static str,
+    },
+    /// A coefficient whose value is not physical.
+    #[error("`{}`: {} {}", .0.key, .0.value, .0.reason)]
+    TirValue(ParamError),
     /// A JSON file that is not a shard file of this version.
     #[error("not a shard file of this version: {detail}")]
     NotAShard {
@@ -297,6 +382,19 @@ impl InputProblem {
             InputProblem::Header { .. } => "Header",
             InputProblem::Toml { .. } => "Toml",
             InputProblem::MissingFile { .. } => "MissingFile",
+            InputProblem::TirSectionUnclosed { .. } => "TirSectionUnclosed",
+            InputProblem::TirNotAKey { .. } => "TirNotAKey",
+            InputProblem::TirStringUnclosed { .. } => "TirStringUnclosed",
+            InputProblem::TirNoValue { .. } => "TirNoValue",
+            InputProblem::TirNotFinite { .. } => "TirNotFinite",
+            InputProblem::TirNotANumber { .. } => "TirNotANumber",
+            InputProblem::TirUnknownUnit { .. } => "TirUnknownUnit",
+            InputProblem::TirAngleNotRadians { .. } => "TirAngleNotRadians",
+            InputProblem::TirUnsupportedFittyp { .. } => "TirUnsupportedFittyp",
+            InputProblem::TirNoFittyp => "TirNoFittyp",
+            InputProblem::TirSide { .. } => "TirSide",
+            InputProblem::TirMissingKey { .. } => "TirMissingKey",
+            InputProblem::TirValue(_) => "TirValue",
             InputProblem::NotAShard { .. } => "NotAShard",
             InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",
             InputProblem::TooFewSamples => "TooFewSamples",

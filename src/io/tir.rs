@@ -17,7 +17,7 @@
 //! the model holds (in the file's own units), so comments, sections and
 //! keys the model does not read round-trip unchanged.
 
-use crate::error::{InputError, ModeError};
+use crate::error::{InputError, InputProblem, ModeError};
 use crate::tyre::mf::{
     MagicFormula, MfCoefficients, MfLimits, MfMode, MfOptions, MfVersion, TyreSide,
 };
@@ -92,11 +92,15 @@ impl TirDocument {
             {
                 None
             } else if let Some(rest) = trimmed.strip_prefix('[') {
-                let end = rest.find(']').ok_or_else(|| InputError::At {
-                    path: path.to_path_buf(),
-                    line: i + 1,
-                    column: raw.len() - trimmed.len() + 1,
-                    message: format!("section header `{trimmed}` has no closing `]`"),
+                let end = rest.find(']').ok_or_else(|| {
+                    InputError::problem_at(
+                        path,
+                        i + 1,
+                        raw.len() - trimmed.len() + 1,
+                        InputProblem::TirSectionUnclosed {
+                            header: trimmed.to_string(),
+                        },
+                    )
                 })?;
                 section = rest[..end].trim().to_ascii_uppercase();
                 None
@@ -150,28 +154,25 @@ impl TirDocument {
         entry.as_ref().map_or("", |e| &text[e.span.0..e.span.1])
     }
 
-    fn at(&self, line: usize, key: &str, message: String) -> InputError {
+    /// `problem` at the value of the entry on `line`.
+    fn at(&self, line: usize, problem: InputProblem) -> InputError {
         let column = self.lines[line - 1].1.as_ref().map_or(1, |e| e.span.0 + 1);
-        InputError::At {
-            path: self.path.clone(),
-            line,
-            column,
-            message: format!("`{key}`: {message}"),
-        }
+        InputError::problem_at(&self.path, line, column, problem)
     }
 
     fn units(&self) -> Result<Units, InputError> {
-        let pick = |key: &str, table: &[(&[&str], f64)]| -> Result<Option<f64>, InputError> {
-            let Some((line, name)) = self.text(key) else {
-                return Ok(None);
+        let pick =
+            |key: &'static str, table: &[(&[&str], f64)]| -> Result<Option<f64>, InputError> {
+                let Some((line, name)) = self.text(key) else {
+                    return Ok(None);
+                };
+                let name = name.replace(' ', "_");
+                table
+                    .iter()
+                    .find(|(names, _)| names.contains(&name.as_str()))
+                    .map(|(_, f)| Some(*f))
+                    .ok_or_else(|| self.at(line, InputProblem::TirUnknownUnit { key, unit: name }))
             };
-            let name = name.replace(' ', "_");
-            table
-                .iter()
-                .find(|(names, _)| names.contains(&name.as_str()))
-                .map(|(_, f)| Some(*f))
-                .ok_or_else(|| self.at(line, key, format!("unknown unit `{name}`")))
-        };
         let length = pick(
             "LENGTH",
             &[
@@ -216,11 +217,7 @@ impl TirDocument {
         )?;
         if let Some((line, a)) = self.text("ANGLE") {
             if !["radians", "radian", "rad"].contains(&a.as_str()) {
-                return Err(self.at(
-                    line,
-                    "ANGLE",
-                    format!("`{a}`: only radians are supported for Magic Formula coefficients"),
-                ));
+                return Err(self.at(line, InputProblem::TirAngleNotRadians { unit: a }));
             }
         }
         Ok(Units {
@@ -242,35 +239,23 @@ impl TirDocument {
             .ok_or_else(|| {
                 self.at(
                     line,
-                    "FITTYP",
-                    format!(
-                        "`{}` is not a supported Magic Formula (6 or 21: 5.2, 61: 6.1, 62: 6.2)",
-                        self.written(line)
-                    ),
+                    InputProblem::TirUnsupportedFittyp {
+                        written: self.written(line).to_string(),
+                    },
                 )
             })?,
             // ADAMS PAC2002 files (e.g. Chrono's) often carry no FITTYP:
             // their format is MF 5.2 (FITTYP 6).
             None => match self.text("PROPERTY_FILE_FORMAT") {
                 Some((_, f)) if f == "pac2002" => MfVersion::Mf52,
-                _ => {
-                    return Err(InputError::File {
-                        path: self.path.clone(),
-                        message:
-                            "missing key `FITTYP` in [MODEL] (61 or 62 for MF 6.1/6.2, 6 or 21 \
-                                  for 5.2; or PROPERTY_FILE_FORMAT = 'PAC2002')"
-                                .into(),
-                    })
-                }
+                _ => return Err(InputError::problem(&self.path, InputProblem::TirNoFittyp)),
             },
         };
         let side = match self.text("TYRESIDE") {
             None => TyreSide::Left,
             Some((_, s)) if s == "left" || s == "unknown" || s == "symmetric" => TyreSide::Left,
             Some((_, s)) if s == "right" => TyreSide::Right,
-            Some((line, s)) => {
-                return Err(self.at(line, "TYRESIDE", format!("`{s}` is not LEFT or RIGHT")))
-            }
+            Some((line, s)) => return Err(self.at(line, InputProblem::TirSide { side: s })),
         };
         let mut c = MfCoefficients::default();
         let mut limits = MfLimits::default();
@@ -287,16 +272,22 @@ impl TirDocument {
                     c.set(&e.key, x * units.factor(&e.key));
                 }
                 TirValue::Text(t) => {
-                    return Err(self.at(line, &e.key, format!("`{t}` is not a number")));
+                    return Err(self.at(
+                        line,
+                        InputProblem::TirNotANumber {
+                            key: e.key.clone(),
+                            text: t.clone(),
+                        },
+                    ));
                 }
             }
         }
         for key in ["FNOMIN", "UNLOADED_RADIUS"] {
             if self.get(key).is_none() {
-                return Err(InputError::File {
-                    path: self.path.clone(),
-                    message: format!("missing key `{key}`"),
-                });
+                return Err(InputError::problem(
+                    &self.path,
+                    InputProblem::TirMissingKey { key },
+                ));
             }
         }
         let tyre = MagicFormula {
@@ -307,10 +298,11 @@ impl TirDocument {
             coefficients: c,
         };
         tyre.validate().map_err(|e| match self.get(&e.key) {
-            Some((line, _)) => self.at(line, &e.key, format!("{} {}", e.value, e.reason)),
-            None => InputError::File {
+            Some((line, _)) => self.at(line, InputProblem::TirValue(e)),
+            None => InputError::Value {
                 path: self.path.clone(),
-                message: e.to_string(),
+                at: None,
+                source: e,
             },
         })?;
         Ok(tyre)
@@ -434,20 +426,25 @@ fn parse_entry(
     let lead = after.len() - after.trim_start().len();
     let start = eq + 1 + lead;
     let body = &raw[start..];
-    let at = |column: usize, message: String| InputError::At {
-        path: path.to_path_buf(),
-        line,
-        column,
-        message,
-    };
+    let at =
+        |column: usize, problem: InputProblem| InputError::problem_at(path, line, column, problem);
     if key.is_empty() || key.contains(char::is_whitespace) {
-        return Err(at(1, format!("`{}` is not a key", raw[..eq].trim())));
+        return Err(at(
+            1,
+            InputProblem::TirNotAKey {
+                text: raw[..eq].trim().to_string(),
+            },
+        ));
     }
     let (value, len) = if let Some(q) = body.chars().next().filter(|c| *c == '\'' || *c == '"') {
         let end = body[1..].find(q).ok_or_else(|| {
             at(
                 start + 1,
-                format!("`{key}`: the string {body} has no closing {q}"),
+                InputProblem::TirStringUnclosed {
+                    key: key.clone(),
+                    body: body.to_string(),
+                    quote: q,
+                },
             )
         })?;
         (TirValue::Text(body[1..1 + end].to_string()), end + 2)
@@ -457,17 +454,23 @@ fn parse_entry(
             .unwrap_or(body.len());
         let word = &body[..len];
         if word.is_empty() {
-            return Err(at(start + 1, format!("`{key}` has no value")));
+            return Err(at(start + 1, InputProblem::TirNoValue { key }));
         }
         let value = match word.parse::<f64>() {
             Ok(x) if x.is_finite() => TirValue::Number(x),
-            Ok(x) => return Err(at(start + 1, format!("`{key}`: {x} is not finite"))),
+            Ok(x) => return Err(at(start + 1, InputProblem::TirNotFinite { key, value: x })),
             Err(_)
                 if word.starts_with(|c: char| {
                     c.is_ascii_digit() || c == '-' || c == '+' || c == '.'
                 }) =>
             {
-                return Err(at(start + 1, format!("`{key}`: `{word}` is not a number")))
+                return Err(at(
+                    start + 1,
+                    InputProblem::TirNotANumber {
+                        key,
+                        text: word.to_string(),
+                    },
+                ))
             }
             Err(_) => TirValue::Text(word.to_string()),
         };

@@ -59,30 +59,22 @@ pub fn check_refusal(e: &InputError, path: &Path, bytes: &[u8], kind: Kind) -> R
     if !msg.contains(&name) {
         return Err(format!("the message does not name {name}: {msg}"));
     }
-    match e {
-        InputError::At {
-            line,
-            column,
-            message,
-            ..
-        } => {
-            let lines = bytes.split(|&c| c == b'\n').count();
-            if *line < 1 || *line > lines + 1 || *column < 1 || message.trim().is_empty() {
-                return Err(format!("a place outside the file ({lines} lines): {msg}"));
-            }
-            let named = ["column `", "header", "malformed CSV", "UTF-8"];
-            if kind == Kind::Csv && !named.iter().any(|n| message.contains(n)) {
-                return Err(format!("a CSV error naming no column: {msg}"));
-            }
-            // A value refused on its merits names its key.
-            if kind == Kind::Text && message.contains(" must ") && !message.contains('`') {
-                return Err(format!("a value error naming no key: {msg}"));
-            }
+    if let Some(at) = e.location() {
+        let lines = bytes.split(|&c| c == b'\n').count();
+        if at.line < 1 || at.line > lines + 1 || at.column < 1 {
+            return Err(format!("a place outside the file ({lines} lines): {msg}"));
         }
-        InputError::File { message, .. } if message.trim().is_empty() => {
-            return Err(format!("an empty message: {msg}"));
+        let named = ["column `", "header", "malformed CSV", "UTF-8"];
+        if kind == Kind::Csv && !named.iter().any(|n| msg.contains(n)) {
+            return Err(format!("a CSV error naming no column: {msg}"));
         }
-        _ => {}
+        // A value refused on its merits names its key.
+        if kind == Kind::Text && msg.contains(" must ") && !msg.contains('`') {
+            return Err(format!("a value error naming no key: {msg}"));
+        }
+    }
+    if msg.trim_end().ends_with(':') || msg.trim() == name {
+        return Err(format!("an empty message: {msg}"));
     }
     Ok(())
 }

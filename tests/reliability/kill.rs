@@ -109,6 +109,9 @@ fn complete(dir: &Path, reference: &Path) -> Result<usize, String> {
             Some("png") => Err("no IEND chunk at the end".into()),
             Some("csv") if fs::read(reference.join(&name)).ok() == Some(bytes.clone()) => Ok(()),
             Some("csv") => Err("differs from the complete run's".into()),
+            // A page is complete when its document closes.
+            Some("html") if bytes.trim_ascii_end().ends_with(b"</html>") => Ok(()),
+            Some("html") => Err("the document does not close".into()),
             _ => Err("an unexpected file".into()),
         };
         if let Err(why) = ok {

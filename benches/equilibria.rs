@@ -6,7 +6,7 @@
 //! friction and speed, exact solver and PSO certification, the rear half of
 //! the scan shared along the line); the grid is 323 such lines, so its wall
 //! time on 2 cores is about 160 times this. The whole grid's wall time is
-//! measured by `handling equilibria scenarios/dense_grid_*.toml` (README).
+//! measured by `handling equilibria scenarios/dense_grid_*.toml` (`docs/src/equilibria.md`).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::equilibria::pso::{search, PsoSearch};

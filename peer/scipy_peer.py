@@ -7,11 +7,11 @@ starts, `optimize.least_squares`) and in the crate
 (`cargo run --release --example peer_jobs`), checks that both reach the same
 answers, and prints one table with the ratios.
 
-Jobs (the model equations are written here from the README's Model section,
+Jobs (the model equations are written here from the book's chapter on models and conventions, docs/src/conventions.md,
 not from the crate's code):
 1. 10 s GB/T 6323 step steer, 80 km/h, 0.012 rad in 0.1 s, compact sedan,
    four PAC89 wheels (Adams example coefficients), lateral load transfer,
-   exact kinematics. SciPy: RK45, rtol 1e-6, atol 1e-9 (the issue's peer).
+   exact kinematics. SciPy: RK45, rtol 1e-6, atol 1e-9 (the peer a user would pick).
    Accuracy of both against a DOP853 reference at rtol 1e-12, restarted at
    the steer ramp's two kinks.
 2. The three steering-equilibrium sweeps of Li, Jia & Zhao (steer 0..0.2 rad,
@@ -211,7 +211,7 @@ def main():
     # The solver alone, as SciPy's job is: states at the same times, the same
     # tolerances, each side's right-hand-side evaluations counted.
     # The crate's rtol-1e-4 job is set against SciPy's at rtol 1e-6 (the
-    # issue's peer): equal or better accuracy, which is checked here.
+    # peer a user would pick): equal or better accuracy, which is checked here.
     peers = {1e-6: (sp, t_step, err_scipy, 1e-6), 1e-10: (tight, t_tight, err_tight, 1e-10),
              1e-4: (sp, t_step, err_scipy, 1e-6)}
     for job in crate["step_steer_solver"]:

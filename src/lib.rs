@@ -4,7 +4,8 @@
 //!
 //! SI units and radians everywhere; ISO 8855 axes (x forward, y left, z up;
 //! positive steer turns left). The measured-data formats are in
-//! `docs/FORMATS.md`, the project's own files in the README.
+//! the book's chapter on file formats (`docs/src/formats.md`), which also
+//! describes the project's own files.
 //!
 //! # Capabilities and where they live
 //! | capability | module |

@@ -44,7 +44,10 @@
 //! [`CONFOUNDED_NOISE`]: super::search::CONFOUNDED_NOISE
 //! [`SIGNIFICANT`]: super::search::SIGNIFICANT
 
-pub use super::report::*;
+pub use super::report::{
+    BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
+    Verdict,
+};
 pub use super::summary::observed_channel;
 
 use super::campaign::Campaign;

@@ -1,5 +1,5 @@
 //! Scenario files: a vehicle, its tyres, the road, model options, a
-//! manoeuvre, integration and metric settings (README, "Scenario files").
+//! manoeuvre, integration and metric settings (the book's `docs/src/formats.md`, "The project's own files").
 //!
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.

@@ -1,4 +1,4 @@
-//! Study files (README, "Study files"): a scenario's tables (vehicle, tyres,
+//! Study files (the book's `docs/src/formats.md`, "The project's own files"): a scenario's tables (vehicle, tyres,
 //! road, model, a step-steer manoeuvre, simulation, metrics) plus the
 //! cornering-stiffness grid, Wang & Liang's RBF pairs and inverse targets.
 //! Stiffness values are per tyre in the file's `unit` (`N/deg` or `N/rad`),

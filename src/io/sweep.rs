@@ -1,4 +1,4 @@
-//! Equilibrium sweep files (README, "Sweep files"): a vehicle, its tyres,
+//! Equilibrium sweep files (the book's `docs/src/formats.md`, "The project's own files"): a vehicle, its tyres,
 //! model options, the swept steer / friction / speed values, the search box,
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.

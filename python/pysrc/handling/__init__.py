@@ -359,7 +359,7 @@ def _manoeuvre(m: Any) -> Any:
 
 class Scenario:
     """A simulation scenario from keywords: the tables of a scenario file
-    (README, "Scenario files") written as a TOML document and read by the
+    (the book's docs/src/formats.md, "The project's own files") written as a TOML document and read by the
     library's scenario reader, so it is checked exactly as a file is; a
     wrong keyword raises :class:`InputError` with ``key`` (dotted, e.g.
     ``vehicle.mass``) and ``value`` (the value given).

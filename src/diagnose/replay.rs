@@ -275,11 +275,8 @@ pub(super) struct LastReplay {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::identify::data::gauss;
     use crate::manoeuvre::{Manoeuvre, SineSteer};
     use crate::sim::Drive;
-    use rand::SeedableRng;
-    use rand_chacha::ChaCha8Rng;
 
     /// The sine steer `m` driven by `truth`, logged at 25 Hz for 8 s (yaw
     /// rate and ay, no sideslip) as `run{k}.csv` and prepared for replays
@@ -326,15 +323,7 @@ pub(crate) mod tests {
         }
     }
 
-    /// White noise of standard deviation `sd`.
-    fn noise(n: usize, sd: f64, seed: u64) -> Vec<f64> {
-        let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        (0..n).map(|_| sd * gauss(&mut rng)).collect()
-    }
-
-    fn rms(v: &[f64]) -> f64 {
-        (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt()
-    }
+    use crate::identify::data::{rms, white_noise as noise};
 
     // The acceleration a replay uses: the logged `ax`, else the speed's
     // Savitzky–Golay derivative (`crate::measured::derivative`).

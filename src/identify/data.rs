@@ -272,3 +272,18 @@ pub fn gauss(rng: &mut rand_chacha::ChaCha8Rng) -> f64 {
     let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
     (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
+
+/// `n` draws of white noise of standard deviation `sd` from seed `seed`
+/// (the tests' logger noise).
+#[cfg(test)]
+pub(crate) fn white_noise(n: usize, sd: f64, seed: u64) -> Vec<f64> {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    (0..n).map(|_| sd * gauss(&mut rng)).collect()
+}
+
+/// Root mean square of `v` (tests).
+#[cfg(test)]
+pub(crate) fn rms(v: &[f64]) -> f64 {
+    (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt()
+}

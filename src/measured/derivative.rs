@@ -163,19 +163,10 @@ fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::identify::data::gauss;
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
-    /// White noise of standard deviation `sd`.
-    fn noise(n: usize, sd: f64, seed: u64) -> Vec<f64> {
-        let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        (0..n).map(|_| sd * gauss(&mut rng)).collect()
-    }
-
-    fn rms(v: &[f64]) -> f64 {
-        (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt()
-    }
+    use crate::identify::data::{rms, white_noise as noise};
 
     #[test]
     fn polynomials_of_degree_two_are_differentiated_exactly_even_at_the_ends() {

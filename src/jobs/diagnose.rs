@@ -248,7 +248,7 @@ fn gap_map(d: &Diagnosis) -> Figure {
     Figure {
         panels,
         columns: 3,
-        width: 1500,
+        width: 2100,
         row_height: 300,
     }
 }

@@ -1,6 +1,7 @@
-//! Cleaning a long measured log: a 10⁶-row run (11 h at 25 Hz) with a
-//! standstill every 30 min, stop-and-go traffic across the minimum speed,
-//! a time gap every hour and a logger glitch every 997 samples, cleaned as
+//! Cleaning a long measured log: the reliability test's 10⁶-row run (11 h
+//! at 25 Hz) with a standstill every 30 min, stop-and-go traffic across the
+//! minimum speed, a time gap every hour and a logger glitch every 997
+//! samples (one generator, `tests/reliability/long_log_rows.rs`), cleaned as
 //! `diagnose` cleans it (`measured/clean_1e6_rows`), and the step-steer
 //! metrics of `metrics` on it (`measured/metrics_1e6_rows`). Both must stay
 //! linear in the rows (the reliability tests check the ratio 10⁶ / 10⁵).
@@ -12,15 +13,12 @@ use handling::metrics::measured::measured_step_metrics;
 use handling::metrics::MetricSettings;
 use std::path::PathBuf;
 
-/// The long log, in memory (deterministic).
+#[path = "../tests/reliability/long_log_rows.rs"]
+mod long_log_rows;
+use long_log_rows::long_log_rows;
+
+/// The reliability test's long log, in memory.
 fn long_log(n: usize) -> MeasuredRun {
-    let mut x: u64 = 0x2545_F491_4F6C_DD1D;
-    let mut noise = move || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
     let mut run = MeasuredRun {
         path: PathBuf::from("long.csv"),
         t: Vec::with_capacity(n),
@@ -28,35 +26,20 @@ fn long_log(n: usize) -> MeasuredRun {
         steer: Vec::with_capacity(n),
         yaw_rate: Vec::with_capacity(n),
         ay: Some(Vec::with_capacity(n)),
-        beta: None,
+        beta: Some(Vec::with_capacity(n)),
         roll: None,
         bank: None,
         ax: None,
         masked: Vec::new(),
     };
-    for i in 0..n {
-        let t = (i + 50 * (i / 90_000)) as f64 / 25.0;
-        let stopped = t > 600.0 && t % 1800.0 < 60.0;
-        let traffic = t > 600.0 && (t % 1800.0 - 100.0).abs() < 60.0;
-        let speed = match (stopped, traffic) {
-            (true, _) => 0.0,
-            (_, true) if i % 20 < 10 => 4.0,
-            (_, true) => 6.0,
-            _ => 20.0 + 0.05 * noise(),
-        };
-        let steer = if t < 10.0 { 0.0 } else { 0.02 } + 1e-4 * noise();
-        let mut r = speed * steer / 2.78 + 1e-3 * noise();
-        if i % 997 == 500 {
-            r = 0.0;
-        }
+    long_log_rows(n, |[t, speed, steer, r, ay, beta]| {
         run.t.push(t);
         run.speed.push(speed);
         run.steer.push(steer);
         run.yaw_rate.push(r);
-        if let Some(ay) = run.ay.as_mut() {
-            ay.push(speed * r + 0.02 * noise());
-        }
-    }
+        run.ay.as_mut().expect("allocated").push(ay);
+        run.beta.as_mut().expect("allocated").push(beta);
+    });
     run
 }
 

@@ -13,6 +13,7 @@ mod fuzz_toml;
 mod inputs;
 mod kill;
 mod long_log;
+mod long_log_rows;
 mod mutate;
 mod no_nan;
 

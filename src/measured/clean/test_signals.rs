@@ -1,16 +1,9 @@
 //! Test signals shared by the cleaning tests: seeded Gaussian noise and a
 //! synthetic run (a slow steer sine and its noisy yaw rate, SI units).
 
+pub(super) use crate::identify::data::white_noise as gauss_noise;
 use crate::measured::MeasuredRun;
-use rand::SeedableRng;
 use std::path::PathBuf;
-
-pub(super) fn gauss_noise(n: usize, sigma: f64, seed: u64) -> Vec<f64> {
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    (0..n)
-        .map(|_| sigma * crate::identify::data::gauss(&mut rng))
-        .collect()
-}
 
 pub(super) fn no_slow(n: usize) -> Vec<bool> {
     vec![false; n]

@@ -12,7 +12,7 @@ use super::shard::{read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJ
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::error::{Error, InputError, OptionsError};
 use crate::report::html::{Cell, Page};
-use crate::report::{write_csv, write_json};
+use crate::report::{write_csv, write_json, OutputLock};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -60,6 +60,16 @@ pub struct FleetReport {
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
+    /// The fleet table's files, held for this run until the report is
+    /// dropped (the shards of a job array write their own files beside
+    /// them and do not take it).
+    #[serde(skip)]
+    pub lock: OutputLock,
+}
+
+/// The fleet table's files in `out_dir`, held for this run.
+fn fleet_lock(out_dir: &Path) -> Result<OutputLock, Error> {
+    OutputLock::acquire_outputs(out_dir, "fleet")
 }
 
 /// The campaigns of a batch folder: its sub-folders and `.toml` files, in
@@ -108,6 +118,11 @@ pub fn run_batch(
     let whole = shard.is_none();
     let shard = shard.unwrap_or(Shard { index: 1, count: 1 });
     let owned = shard.units(all.len());
+    let lock = if whole {
+        fleet_lock(&out_dir)?
+    } else {
+        OutputLock::default()
+    };
     let mut reports = Vec::new();
     let mut rows = Vec::new();
     for &i in &owned {
@@ -133,7 +148,7 @@ pub fn run_batch(
         }
     }
     if whole {
-        let report = fleet(rows, out_dir);
+        let report = fleet(rows, out_dir, lock);
         report.write()?;
         return Ok((reports, BatchOutcome::Fleet(report)));
     }
@@ -188,7 +203,8 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
         || PathBuf::from("out").join(name_of(&dir)),
         Path::to_path_buf,
     );
-    let report = fleet(rows, out_dir);
+    let lock = fleet_lock(&out_dir)?;
+    let report = fleet(rows, out_dir, lock);
     report.write()?;
     Ok(report)
 }
@@ -218,7 +234,7 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
 }
 
 /// The report of the rows: the effects that recur, most verdicts first.
-fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf) -> FleetReport {
+fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf, lock: OutputLock) -> FleetReport {
     let recurring = EffectKind::ALL
         .into_iter()
         .map(|effect| Recurring {
@@ -240,6 +256,7 @@ fn fleet(campaigns: Vec<FleetRow>, out_dir: PathBuf) -> FleetReport {
         campaigns,
         recurring,
         out_dir,
+        lock,
     }
 }
 

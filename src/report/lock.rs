@@ -99,13 +99,25 @@ impl OutputLock {
     /// Takes output folder `dir` (created if missing) for this run, or
     /// refuses when another live run holds it.
     pub fn acquire(dir: &Path) -> Result<Self, Error> {
+        Self::acquire_file(dir, LOCK_FILE)
+    }
+
+    /// Takes the outputs named `<stem>.*` in folder `dir` for this run (a
+    /// lock `.<stem>.handling.lock`): for a job whose outputs share a folder
+    /// with other runs' (a fitted tyre file beside others), so that two runs
+    /// writing the same files are refused and runs writing others are not.
+    pub fn acquire_outputs(dir: &Path, stem: &str) -> Result<Self, Error> {
+        Self::acquire_file(dir, &format!(".{stem}{LOCK_FILE}"))
+    }
+
+    fn acquire_file(dir: &Path, name: &str) -> Result<Self, Error> {
         let created = missing_folders(dir);
         fs::create_dir_all(dir).map_err(|source| OutputError::Io {
             path: dir.to_path_buf(),
             step: WriteStep::Create,
             source,
         })?;
-        let file = dir.join(LOCK_FILE);
+        let file = dir.join(name);
         let me = std::process::id();
         // Two rounds: the second after a stale lock was removed.
         for _ in 0..2 {
@@ -169,7 +181,10 @@ impl OutputLock {
     /// (atomic), then checked to be that process's before it is deleted, so
     /// that of two runs taking over at once only one does.
     fn take_over(dir: &Path, file: &Path, pid: u32) -> Result<(), Error> {
-        let aside = dir.join(format!("{LOCK_FILE}.stale-{}", std::process::id()));
+        let name = file
+            .file_name()
+            .map_or_else(|| LOCK_FILE.into(), |n| n.to_string_lossy().into_owned());
+        let aside = dir.join(format!("{name}.stale-{}", std::process::id()));
         if fs::rename(file, &aside).is_err() {
             // Another run took it over first: the next round sees its lock.
             return Ok(());
@@ -215,6 +230,18 @@ mod tests {
         assert!(dir.join(LOCK_FILE).exists(), "only the owner releases");
         drop(lock);
         assert!(!root.path().join("a").exists(), "created folders removed");
+    }
+
+    #[test]
+    fn outputs_of_different_names_share_a_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        fs::write(dir.path().join(".b.handling.lock"), "1\n").unwrap();
+        let a = OutputLock::acquire_outputs(dir.path(), "a").unwrap();
+        assert!(dir.path().join(".a.handling.lock").exists());
+        let e = OutputLock::acquire_outputs(dir.path(), "b").unwrap_err();
+        assert!(e.to_string().contains("another run (process 1)"), "{e}");
+        drop(a);
+        assert!(!dir.path().join(".a.handling.lock").exists());
     }
 
     #[test]

@@ -12,6 +12,7 @@ mod fuzz;
 mod fuzz_toml;
 mod inputs;
 mod kill;
+mod locks;
 mod long_log;
 mod long_log_rows;
 mod mutate;

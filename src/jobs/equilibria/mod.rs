@@ -16,7 +16,7 @@ use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::report::progress::Progress;
-use crate::report::{refuse_overwrites, write_csv, write_json_sorted};
+use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
 use crate::vehicle::Kinematics;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -71,6 +71,11 @@ pub struct EquilibriaReport {
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
+    /// The output folder, held for this run until the report is dropped
+    /// (shards do not take it: the shards of a job array write their own
+    /// files into one folder at once).
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 const FILES: [&str; 4] = [
@@ -84,7 +89,7 @@ const FILES: [&str; 4] = [
 /// `out/<sweep name>`), checked against the inputs first.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
     let sw = load_sweep(path)?;
-    let out_dir = output_folder(&sw, out)?;
+    let (out_dir, lock) = output_folder(&sw, out)?;
     let t0 = Instant::now();
     let res = {
         let progress = Progress::start("equilibria", sw.grid.len());
@@ -97,7 +102,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<EquilibriaReport, Error> {
             progress.counter(),
         )
     };
-    Ok(report(sw, res, t0.elapsed().as_secs_f64(), out_dir))
+    Ok(report(sw, res, t0.elapsed().as_secs_f64(), (out_dir, lock)))
 }
 
 /// Solves shard `shard`'s lines of the sweep of the file `path` and writes
@@ -153,7 +158,7 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<EquilibriaReport,
     let t0 = Instant::now();
     let (input, _, lines) = read_shards::<Vec<sweep::PointResult>>(ShardJob::Equilibria, shards)?;
     let sw = load_sweep(&input)?;
-    let out_dir = output_folder(&sw, out)?;
+    let (out_dir, lock) = output_folder(&sw, out)?;
     let res = sweep::assemble(&sw.model, &sw.grid, lines, sw.report.bifurcations);
     if res.points.len() != sw.grid.len() {
         return Err(OptionsError::MergeCount {
@@ -164,19 +169,25 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<EquilibriaReport,
         }
         .into());
     }
-    Ok(report(sw, res, t0.elapsed().as_secs_f64(), out_dir))
+    Ok(report(sw, res, t0.elapsed().as_secs_f64(), (out_dir, lock)))
 }
 
 /// The output folder (default `out/<sweep name>`), none of whose outputs
-/// is an input.
-fn output_folder(sw: &Sweep, out: Option<&Path>) -> Result<PathBuf, Error> {
+/// is an input, held for this run.
+fn output_folder(sw: &Sweep, out: Option<&Path>) -> Result<(PathBuf, OutputLock), Error> {
     let out_dir = out.map_or_else(|| PathBuf::from("out").join(&sw.name), Path::to_path_buf);
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &sw.inputs)?;
-    Ok(out_dir)
+    let lock = OutputLock::acquire(&out_dir)?;
+    Ok((out_dir, lock))
 }
 
 /// The report of a solved sweep.
-fn report(sw: Sweep, res: SweepResult, seconds: f64, out_dir: PathBuf) -> EquilibriaReport {
+fn report(
+    sw: Sweep,
+    res: SweepResult,
+    seconds: f64,
+    (out_dir, lock): (PathBuf, OutputLock),
+) -> EquilibriaReport {
     let n = sw.grid.len();
     let agree = res.agreeing();
     let mut counts = BTreeMap::new();
@@ -209,6 +220,7 @@ fn report(sw: Sweep, res: SweepResult, seconds: f64, out_dir: PathBuf) -> Equili
         result: res,
         sweep: sw,
         out_dir,
+        lock,
     }
 }
 

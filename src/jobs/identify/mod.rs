@@ -19,7 +19,7 @@ mod staged;
 
 use crate::error::{Error, FitError, OutputError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
-use crate::report::{refuse_overwrites, write_bytes, write_json_sorted};
+use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::{ModelName, Pac89, Tyre};
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
@@ -146,6 +146,9 @@ pub struct SwarmReport {
     /// The longitudinal conditions after a lateral fit.
     #[serde(skip)]
     pub longitudinal_conditions: Vec<Condition>,
+    /// The outputs, held for this run until the report is dropped.
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 impl IdentifyReport {
@@ -233,6 +236,18 @@ fn outputs(o: &Options, figure: bool) -> Vec<PathBuf> {
     files
 }
 
+/// The outputs of the fit (the fitted file and the files named after it),
+/// held for this run: two fits writing them at once are refused.
+pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
+    let out = o.output_path();
+    let dir = out.parent().filter(|d| !d.as_os_str().is_empty());
+    let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned());
+    OutputLock::acquire_outputs(
+        dir.unwrap_or(std::path::Path::new(".")),
+        stem.as_deref().unwrap_or("identify"),
+    )
+}
+
 /// Runs `identify`: reads and groups the data, fits, and returns the report
 /// (nothing is written: [`IdentifyReport::write`]). An output that is one
 /// of the inputs is refused before anything is fitted.
@@ -297,6 +312,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     loads.sort_by(f64::total_cmp);
     let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
+    let lock = output_lock(o)?;
     // The models fitted here have no pressure terms: several pressures
     // pooled into one parameter set blur their differences into the fit.
     let pressures_pooled = grouped
@@ -320,6 +336,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         pressures_pooled,
         conditions,
         longitudinal_conditions: Vec::new(),
+        lock,
     };
     if model == ModelName::Pac89 && first == Channel::LateralForce {
         two_stage(o, &mut r, &settings)?;

@@ -11,7 +11,7 @@ use crate::identify::mf_staged::{self, PooledSigma, RowAccount, StagedReport, St
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::report::plot::Figure;
-use crate::report::refuse_overwrites;
+use crate::report::{refuse_overwrites, OutputLock};
 use crate::tyre::mf::MfVersion;
 use serde::Serialize;
 
@@ -40,6 +40,9 @@ pub struct StagedJob {
     /// Measured against fitted, per stage and camber, each with its σ.
     #[serde(skip)]
     pub figure: Figure,
+    /// The outputs, held for this run until the report is dropped.
+    #[serde(skip)]
+    pub lock: OutputLock,
 }
 
 impl StagedJob {
@@ -104,6 +107,7 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
         ],
         &inputs,
     )?;
+    let lock = super::output_lock(o)?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
     let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
     let data = read_rig(&o.data)?;
@@ -151,5 +155,6 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
         figure,
         tir,
         options: o.clone(),
+        lock,
     })
 }

@@ -232,6 +232,7 @@ mod diagnose;
 mod identify;
 mod magic_formula;
 mod measured_metrics;
+mod mf_combined_fy;
 mod mf_identify;
 mod programmes;
 mod proving_ground;

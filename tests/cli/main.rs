@@ -234,6 +234,7 @@ mod magic_formula;
 mod measured_metrics;
 mod mf_combined_fy;
 mod mf_identify;
+mod mf_vertical;
 mod programmes;
 mod proving_ground;
 mod real_logs;

@@ -68,7 +68,12 @@ impl Units {
     fn factor(&self, key: &str) -> f64 {
         match key {
             "FNOMIN" | "FZMIN" | "FZMAX" => self.force,
-            "UNLOADED_RADIUS" => self.length,
+            "UNLOADED_RADIUS" | "WIDTH" => self.length,
+            "VERTICAL_STIFFNESS" => self.force / self.length,
+            "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => self.force,
+            // Q_CAM1·Rl and Q_CAM2·Rl² are numbers.
+            "Q_CAM1" => 1.0 / self.length,
+            "Q_CAM2" => 1.0 / (self.length * self.length),
             "LONGVL" | "VXLOW" => self.length / self.time,
             "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self
                 .pressure

@@ -1,7 +1,8 @@
 //! `tyre-eval` as one job: a tyre file (.tir or .toml) and a CSV of points
 //! (`fz, kappa, alpha, camber, speed` and optionally `pressure`; SI, rad,
 //! Pa) in; the same points with `fx, fy, mz` (and `mx, my` for the Magic
-//! Formula) out. A Magic Formula tyre is evaluated in one of MFeval's modes
+//! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
+//! vertical model) out. A Magic Formula tyre is evaluated in one of MFeval's modes
 //! (`useMode`, default 121: limit checks on, `α*` on); with the limit
 //! checks on, the points outside the file's ranges are counted (they are
 //! evaluated at the limits, as MFeval does).
@@ -81,24 +82,32 @@ pub fn run(
         tyre.evaluate_points(col(0), col(1), col(2), col(3), col(4), &p)
     };
     let count = columns[0].1.len();
-    let (mode, clamped) = match &tyre {
+    let (mode, clamped, loaded_radius) = match &tyre {
         Tyre::MagicFormula(t) => {
             let col = |i: usize| &columns[i].1;
-            let n = (0..count)
-                .filter(|&i| {
-                    t.is_clamped(&MfInput {
-                        fz: col(0)[i],
-                        kappa: col(1)[i],
-                        alpha: col(2)[i],
-                        camber: col(3)[i],
-                        speed: col(4)[i],
-                        pressure: pressure.as_ref().map(|p| p[i]),
-                    })
+            let inputs: Vec<MfInput> = (0..count)
+                .map(|i| MfInput {
+                    fz: col(0)[i],
+                    kappa: col(1)[i],
+                    alpha: col(2)[i],
+                    camber: col(3)[i],
+                    speed: col(4)[i],
+                    pressure: pressure.as_ref().map(|p| p[i]),
                 })
-                .count();
-            (Some(t.mode().use_mode()), n)
+                .collect();
+            let n = inputs.iter().filter(|p| t.is_clamped(p)).count();
+            // The loaded radius where the file has a vertical model (6.1, 6.2).
+            let rl: Option<Vec<f64>> = (t.coefficients.VERTICAL_STIFFNESS > 0.0
+                && t.loaded_radius(&inputs[0]).is_some())
+            .then(|| {
+                inputs
+                    .iter()
+                    .map(|p| t.loaded_radius(p).unwrap_or(f64::NAN))
+                    .collect()
+            });
+            (Some(t.mode().use_mode()), n, rl)
         }
-        _ => (None, 0),
+        _ => (None, 0, None),
     };
     if let Some(p) = pressure {
         columns.push(("pressure", p));
@@ -112,6 +121,9 @@ pub fn run(
     if tyre.has_wheel_moments() {
         columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
         columns.push(("my", of(|x| x.my.unwrap_or(f64::NAN))));
+    }
+    if let Some(rl) = loaded_radius {
+        columns.push(("rl", rl));
     }
     Ok(TyreEvalReport {
         points: points.display().to_string(),

@@ -372,6 +372,22 @@ fn tyre_eval_modes_agree_with_mfeval_past_the_limits() {
             384,
             true,
         ),
+        (
+            "MagicFormula62_Parameters",
+            "mf62",
+            6752.0,
+            0.3943,
+            384,
+            true,
+        ),
+        (
+            "MagicFormula61_QSY7_zero",
+            "mf61_qsy7_zero",
+            6752.0,
+            0.3943,
+            384,
+            true,
+        ),
         ("MagicFormula52_Parameters", "mf52", 9416.6, 0.4, 192, false),
         (
             "chrono_Sedan_Pac02Tire",

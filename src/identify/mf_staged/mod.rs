@@ -31,8 +31,12 @@
 //!
 //! Rows: the wheel moments `mx`, `my` ride on the rows of files whose
 //! samples are rows (with `kappa`, `fx`). A row is *pure longitudinal* when `|α| ≤ 1e-3 rad`, *pure lateral*
-//! when `|κ| ≤ 1e-3`, *combined* otherwise. A stage whose columns or rows
-//! are missing is skipped and says why; it is not an error.
+//! when `|κ| ≤ 1e-3`, *combined* otherwise. The combined `Fy` and `Mz`
+//! stages take every row with longitudinal slip, the pure longitudinal
+//! ones included: at α = 0, `Fy = Gyκ·Fy0(0) + SVyκ` is what pins the
+//! κ-induced side force `SVyκ`, and `Mz` carries `s·Fx` ([`Stage::takes`]).
+//! A stage whose columns or rows are missing is skipped and says why; it
+//! is not an error.
 //!
 //! Starts: [`StartScheme::Paper`] is the paper's — every fitted parameter 1,
 //! and its Levenberg–Marquardt `(JᵀJ + μI)Δ = −Jᵀe` with μ = 0.1, μ ← μ/β on
@@ -61,8 +65,9 @@
 //!
 //! Standard errors: `cov = s²·(JᵀJ)⁻¹` at the optimum with `s² = Σe²/(m−n)`,
 //! computed on the column-scaled Jacobian (SVD, pseudo-inverse); a parameter
-//! whose standard error exceeds its magnitude is flagged as not identifiable,
-//! and a stage whose scaled Jacobian has a condition number above 1e8 is
+//! whose standard error reaches its magnitude *and*, alone, moves the
+//! stage's channel by 1 % of its RMS is flagged as not identifiable (a
+//! parameter pinned to zero is identified, as zero; `stages.rs`), and a stage whose scaled Jacobian has a condition number above 1e8 is
 //! flagged as near-singular, naming the parameters that dominate its weakest
 //! direction.
 //!
@@ -83,7 +88,7 @@ mod start;
 
 pub use paper_lm::paper_lm;
 pub use params::Stage;
-pub use sigma::{pooled_sigma, raw_rows, ChannelSigma, PooledSigma};
+pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
 
 use super::data::{RigData, RigError};
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};

@@ -72,6 +72,14 @@ impl Stage {
         }
     }
 
+    /// The unit of this stage's channel.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Stage::PureFx | Stage::CombinedFx | Stage::PureFy | Stage::CombinedFy => "N",
+            _ => "N·m",
+        }
+    }
+
     /// The measured value of this stage's channel in a row (NaN: not measured).
     pub fn measured(self, r: &MfRow) -> f64 {
         match self {
@@ -96,6 +104,14 @@ impl Stage {
     }
 
     /// Whether a row belongs to this stage (its channel measured).
+    ///
+    /// The combined `Fy` and `Mz` stages take every row with longitudinal
+    /// slip, the pure longitudinal ones (α = 0) included: there `Fy` is
+    /// `Gyκ·Fy0(0) + SVyκ` and `Mz` carries `s·Fx`, and these rows are what
+    /// separates `SVyκ` (`RVY1..3`, `RVY5`, `RVY6`: at α = 0 its
+    /// `cos(atan(RVY4·α))` is 1) from the weighting `Gyκ`; no other stage
+    /// fits `Fy` or `Mz` on them. The combined `Fx` stage keeps the rows with
+    /// both slips: at κ = 0 `Fx` is `Gxα` times the small offset `Fx0(0)`.
     pub fn takes(self, r: &MfRow) -> bool {
         let pure_a = r.alpha.abs() <= PURE_TOL;
         let pure_k = r.kappa.abs() <= PURE_TOL;
@@ -103,7 +119,8 @@ impl Stage {
             && match self {
                 Stage::PureFx => pure_a,
                 Stage::PureFy | Stage::PureMz => pure_k,
-                Stage::CombinedFx | Stage::CombinedFy | Stage::CombinedMz => !pure_a && !pure_k,
+                Stage::CombinedFx => !pure_a && !pure_k,
+                Stage::CombinedFy | Stage::CombinedMz => !pure_k,
                 Stage::Mx | Stage::My => true,
             }
     }

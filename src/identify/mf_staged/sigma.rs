@@ -41,7 +41,14 @@ impl PooledSigma {
         let parts: Vec<String> = self
             .channels
             .iter()
-            .map(|c| format!("{} {:.3} %, RMS {:.2}", c.channel, c.sigma_percent, c.rms))
+            .map(|c| {
+                format!(
+                    "{} {:.3} %, RMS error {}",
+                    c.channel,
+                    c.sigma_percent,
+                    rms_text(c.rms, channel_unit(c.channel))
+                )
+            })
             .collect();
         format!(
             "σ pooled over all {} raw samples: {:.3} % ({})",
@@ -49,6 +56,26 @@ impl PooledSigma {
             self.sigma_percent,
             parts.join("; ")
         )
+    }
+}
+
+/// The unit of a channel: N for the forces, N·m for the moments.
+pub fn channel_unit(channel: &str) -> &'static str {
+    if channel.starts_with('f') {
+        "N"
+    } else {
+        "N·m"
+    }
+}
+
+/// An RMS error as read on the terminal: two decimals, or two significant
+/// digits in scientific notation below 0.01 (a fit to noise-free data
+/// leaves 1e-11 N, which two decimals would show as a suspicious 0.00).
+pub fn rms_text(rms: f64, unit: &str) -> String {
+    if rms == 0.0 || rms >= 0.01 || !rms.is_finite() {
+        format!("{rms:.2} {unit}")
+    } else {
+        format!("{rms:.1e} {unit}")
     }
 }
 
@@ -161,5 +188,16 @@ mod tests {
         assert_eq!(s.channels.len(), 2);
         assert!((s.channels[1].sigma_percent - 100.0).abs() < 1e-9);
         assert!((s.channels[0].rms - (900.0f64 / 2.0).sqrt()).abs() < 1e-9);
+        let line = s.line();
+        assert!(line.contains("%, RMS error 21.21 N; "), "{line}");
+        assert!(line.contains("mz 100.000 %, RMS error 3.54 N·m"), "{line}");
+    }
+
+    #[test]
+    fn a_tiny_rms_error_is_shown_in_scientific_notation_with_its_unit() {
+        assert_eq!(rms_text(7.925e-12, "N"), "7.9e-12 N");
+        assert_eq!(rms_text(0.0, "N·m"), "0.00 N·m");
+        assert_eq!(rms_text(41.254, channel_unit("fy")), "41.25 N");
+        assert_eq!(rms_text(0.0102, channel_unit("mz")), "0.01 N·m");
     }
 }

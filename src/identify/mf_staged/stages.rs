@@ -171,12 +171,8 @@ fn skip_reason(stage: Stage, rows: usize, free: usize) -> String {
         Stage::CombinedFx => {
             "no combined-slip rows with a measured `fx` (both |κ| and |α| above 1e-3)"
         }
-        Stage::CombinedFy => {
-            "no combined-slip rows with a measured `fy` (both |κ| and |α| above 1e-3)"
-        }
-        Stage::CombinedMz => {
-            "no combined-slip rows with a measured `mz` (both |κ| and |α| above 1e-3)"
-        }
+        Stage::CombinedFy => "no rows with longitudinal slip (|κ| above 1e-3) and a measured `fy`",
+        Stage::CombinedMz => "no rows with longitudinal slip (|κ| above 1e-3) and a measured `mz`",
         Stage::Mx => "no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)",
         Stage::My => "no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)",
     }
@@ -251,6 +247,15 @@ fn standard_errors(
             js.column_mut(k).scale_mut(1.0 / nk);
         }
     }
+    // The measured channel's norm over the rows: the scale of a
+    // parameter's effect (see `identifiability_warning`).
+    let y_norm = problem
+        .rows
+        .iter()
+        .map(|r| problem.stage.measured(r).powi(2))
+        .sum::<f64>()
+        .sqrt()
+        .max(f64::MIN_POSITIVE);
     let svd = js.clone().svd(false, true);
     let sv = &svd.singular_values;
     let (smax, smin) = (sv.max(), sv.min());
@@ -296,10 +301,7 @@ fn standard_errors(
                     });
                     let warning = match se {
                         None => Some("no sensitivity: the data do not move it".into()),
-                        Some(s) if !s.is_finite() || s > value.abs() => Some(format!(
-                            "not identifiable from these data (standard error {s:.3e} ≥ |value|)"
-                        )),
-                        _ => None,
+                        Some(s) => identifiability_warning(value, s, s * norms[k] / y_norm),
                     };
                     StageParameter {
                         name,
@@ -324,6 +326,36 @@ fn standard_errors(
         })
         .collect();
     (parameters, cond, warnings)
+}
+
+/// One standard error, alone, moving the stage's channel by less than this
+/// fraction of its RMS is an uncertainty too small to matter.
+pub(super) const EFFECT_FLOOR: f64 = 0.01;
+
+/// The identifiability warning of a fitted parameter, or `None`.
+///
+/// The rule: a parameter is *not identifiable* when its standard error `se`
+/// reaches its magnitude **and** one standard error of it, alone, moves
+/// the stage's channel by at least [`EFFECT_FLOOR`] (1 %) of its RMS
+/// (`effect = se·‖∂F/∂p‖/‖F‖`, over the stage's rows). The magnitude alone
+/// is no scale for a parameter whose true value is zero (`SSZ*` of a file
+/// without them: estimate 1e-7, standard error 1e-6, and the data pin the
+/// moment to 1e-5 of its RMS): that parameter is identified, as zero. The
+/// effect is the parameter's natural scale taken from the data: the change
+/// of it that matters is the one that moves the fitted curve. It is large
+/// where the data trade the parameter against others (a large variance
+/// inflation: `RVY1` against `RVY4` where `cos(atan(RVY4·α))` is in its
+/// 1/α regime) or barely see it, which is what the warning is for.
+pub(super) fn identifiability_warning(value: f64, se: f64, effect: f64) -> Option<String> {
+    if !se.is_finite() {
+        return Some("not identifiable from these data (no finite standard error)".into());
+    }
+    (se >= value.abs() && effect >= EFFECT_FLOOR).then(|| {
+        format!(
+            "not identifiable from these data (standard error {se:.3e} ≥ |value|; one standard error moves the fit by {:.1} % of the channel's RMS)",
+            100.0 * effect
+        )
+    })
 }
 
 /// Fits one stage on its rows, updating `tyre`, and reports it.
@@ -389,5 +421,27 @@ pub(super) fn run_stage(
         seconds: t0.elapsed().as_secs_f64(),
         parameters,
         warnings,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A zero parameter pinned by the data is identified (as zero); one
+    /// whose uncertainty spans its value and moves the fit is not; a
+    /// well-determined large one is identified.
+    #[test]
+    fn a_parameter_identified_as_zero_is_not_flagged() {
+        // SSZ1 of a file without it: 1e-7 ± 1e-6, moving Mz by 3e-5 of its RMS.
+        assert_eq!(identifiability_warning(1e-7, 1e-6, 3e-5), None);
+        // RVY4 in its 1/α regime: 72 ± 163, one SE moves Fy by 4 %.
+        let w = identifiability_warning(72.0, 163.0, 0.04).unwrap();
+        assert!(w.contains("moves the fit by 4.0 %"), "{w}");
+        // Just below the effect floor, and a value larger than its SE.
+        assert_eq!(identifiability_warning(0.0, 1.0, 0.0099), None);
+        assert_eq!(identifiability_warning(-2.0, 1.9, 0.5), None);
+        assert!(identifiability_warning(1.0, 1.0, EFFECT_FLOOR).is_some());
+        assert!(identifiability_warning(1.0, f64::INFINITY, 0.0).is_some());
     }
 }

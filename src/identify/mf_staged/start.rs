@@ -4,7 +4,7 @@
 //! least squares (`--start data`).
 
 use super::params::Stage;
-use super::{MfRow, Settings};
+use super::{MfRow, Settings, PURE_TOL};
 use crate::identify::grouping::{levels, Variable};
 use crate::tyre::mf::{MagicFormula, MfCoefficients, MfOptions, TyreSide};
 
@@ -164,6 +164,38 @@ fn cornering_stiffness_law(stiff: &[(f64, f64)], fz0: f64, pky4: f64) -> (f64, f
     (best.1, best.2)
 }
 
+/// `RBY1` estimated from the combined rows. With `Cyκ = 1`, `Eyκ = 0` and
+/// no offsets the weighting is `Gyκ = Fy/Fy0 = cos(atan(Byκ·κ))`, so
+/// `Byκ = sqrt(1/G² − 1)/|κ|`, and `RBY1 = Byκ / cos(atan(rby2·α))` at the
+/// start's `RBY2`; `Fy0` is `base` (the pure `Fy` just fitted) at κ = 0.
+/// The median over the rows whose pure force is at least a third of the
+/// largest (where the ratio means something) and `0 < G < 1`; `None`
+/// without such rows. A fixed start (10) can leave the fit in a local
+/// minimum when the truth is far from it (MFeval's 6.1 file has 26).
+fn lateral_weight_stiffness(base: &MagicFormula, rows: &[&MfRow], rby2: f64) -> Option<f64> {
+    let pairs: Vec<(&MfRow, f64)> = rows
+        .iter()
+        .filter(|r| r.alpha.abs() > PURE_TOL && r.kappa.abs() > PURE_TOL)
+        .map(|r| {
+            let pure = MfRow { kappa: 0.0, ..**r };
+            (*r, base.evaluate(&pure.input()).fy)
+        })
+        .collect();
+    let largest = pairs.iter().map(|(_, f)| f.abs()).fold(0.0, f64::max);
+    let b: Vec<f64> = pairs
+        .iter()
+        .filter(|(_, f0)| f0.abs() >= largest / 3.0)
+        .filter_map(|(r, f0)| {
+            let g = r.fy / f0;
+            (g > 0.0 && g < 1.0).then(|| {
+                (1.0 / (g * g) - 1.0).sqrt() / r.kappa.abs() / (rby2 * r.alpha).atan().cos()
+            })
+        })
+        .collect();
+    let m = median(b);
+    m.is_finite().then_some(m)
+}
+
 /// Start values estimated from a stage's rows (only names it sets).
 pub(super) fn data_start(
     stage: Stage,
@@ -265,8 +297,9 @@ pub(super) fn data_start(
         // typical rolling-resistance coefficient, not at 0.
         Stage::My => out.push(("QSY1", 0.01)),
         Stage::CombinedFy => {
+            let rby1 = lateral_weight_stiffness(base, rows, 8.0).unwrap_or(10.0);
             out.extend([
-                ("RBY1", 10.0),
+                ("RBY1", rby1),
                 ("RBY2", 8.0),
                 ("RCY1", 1.0),
                 ("REY1", 0.0),

@@ -145,3 +145,52 @@ fn public_file_written_back_gives_identical_forces() {
         load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap()
     );
 }
+
+/// MF 6.2's vertical force from the loaded radius (camber, `Fy`-shift and
+/// pressure terms) and the effective rolling radius, read from MFeval's
+/// sample files, against MFeval's `calculateFz62` at three deflections below
+/// its free-spinning radius and its `calculateRe`
+/// (`reference_mfeval_vertical_mf6x.csv`): to 1e-6 of FNOMIN and of R0.
+#[test]
+fn vertical_force_from_deflection_and_rolling_radius_agree_with_mfeval() {
+    use crate::tyre::mf::vertical::{radii, vertical_force, VerticalState};
+    for v in ["61", "62"] {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
+        let t = load_tir(&dir.join(format!("MagicFormula{v}_Parameters.tir"))).unwrap();
+        let c = &t.coefficients;
+        let text =
+            std::fs::read_to_string(dir.join(format!("reference_mfeval_vertical_mf{v}.csv")))
+                .unwrap();
+        let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let at = |name: &str| head.iter().position(|h| *h == name).unwrap();
+        let mut n = 0;
+        for line in lines {
+            let r: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+            let dpi = (r[at("pressure")] - c.NOMPRES) / c.NOMPRES;
+            let radii = radii(c, r[at("fz")], r[at("kappa")], r[at("speed")], dpi);
+            assert!(
+                (radii.effective - r[at("re")]).abs() <= 1e-6 * c.UNLOADED_RADIUS,
+                "MF{v} re at {r:?}: {}",
+                radii.effective
+            );
+            let s = VerticalState {
+                gamma: r[at("camber_iso")],
+                dpi,
+                radii,
+                fx: r[at("fx")],
+                fy: r[at("fy")],
+            };
+            for (d, name) in [(0.005, "fz_d005"), (0.015, "fz_d015"), (0.030, "fz_d030")] {
+                let fz = vertical_force(c, &s, radii.free - d);
+                assert!(
+                    (fz - r[at(name)]).abs() <= 1e-6 * c.FNOMIN,
+                    "MF{v} Fz at deflection {d} m, {r:?}: {fz} vs {}",
+                    r[at(name)]
+                );
+            }
+            n += 1;
+        }
+        assert_eq!(n, 324);
+    }
+}

@@ -102,8 +102,8 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
 /// The figure of a staged Magic Formula fit: one panel per fitted stage and
 /// camber level, the stage's rows measured (large dots) against the
 /// identified tyre at the same rows (small dots), a colour per load level,
-/// against the stage's slip (slip ratio for `Fx` and `My`, slip angle for
-/// the others; the combined rows sweep it at a few slip ratios), titled
+/// against the stage's slip (slip ratio for pure `Fx`, combined `Fy` and
+/// `Mz`, and `My`; slip angle for the others), titled
 /// with the stage's σ. The y range leaves room above the data for the
 /// legend (one entry per load), so that it covers none.
 pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[StageReport], rows: &[MfRow]) -> Figure {
@@ -151,8 +151,13 @@ fn nearest(levels: &[f64], x: f64) -> f64 {
 
 fn stage_panel(tyre: &MagicFormula, s: &StageReport, rows: &[&MfRow], camber: f64) -> Panel {
     let st = s.stage;
-    // Combined rows sweep the slip angle at a few slip ratios.
-    let ratio = matches!(st, Stage::PureFx | Stage::My);
+    // The combined Fx rows sweep the slip angle at a few slip ratios; the
+    // combined Fy and Mz rows (every row with longitudinal slip, α = 0
+    // included) are read against the slip ratio.
+    let ratio = matches!(
+        st,
+        Stage::PureFx | Stage::My | Stage::CombinedFy | Stage::CombinedMz
+    );
     let slip = |r: &MfRow| {
         if ratio {
             100.0 * r.kappa

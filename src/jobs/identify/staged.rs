@@ -7,7 +7,9 @@
 
 use super::{IdentifyModel, Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
-use crate::identify::mf_staged::{self, PooledSigma, RowAccount, StagedReport, StartScheme};
+use crate::identify::mf_staged::{
+    self, rms_text, PooledSigma, RowAccount, StagedReport, StartScheme,
+};
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::report::plot::Figure;
@@ -64,7 +66,7 @@ impl StagedJob {
             match &s.skipped {
                 Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
                 None => out.push(format!(
-                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS {:.2}, {:.2} s",
+                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS error {}, {:.2} s",
                     s.stage.label(),
                     s.points,
                     s.parameters.iter().filter(|p| p.free).count(),
@@ -75,7 +77,7 @@ impl StagedJob {
                     } else {
                         String::new()
                     },
-                    s.rms,
+                    rms_text(s.rms, s.stage.unit()),
                     s.seconds
                 )),
             }

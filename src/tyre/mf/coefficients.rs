@@ -2,8 +2,10 @@
 //! TNO/ADAMS property file (`.tir`), all in SI (the reader converts the
 //! file's `[UNITS]`). A coefficient absent from a file takes its version
 //! default: 1 for the scaling factors λ, 2 for `PKY4` (the 5.2 form
-//! `sin(2·atan(..))`), 16.7 m/s for `LONGVL`, 1 m/s for `VXLOW` and 0 for
-//! every other coefficient (the term it belongs to is then off).
+//! `sin(2·atan(..))`), 16.7 m/s for `LONGVL`, 1 m/s for `VXLOW`, 1 for
+//! `Q_RE0` (the free radius is `UNLOADED_RADIUS` at rest) and 0 for every
+//! other coefficient (the term it belongs to is then off; without
+//! `VERTICAL_STIFFNESS` there is no loaded radius).
 
 use serde::{Deserialize, Serialize};
 
@@ -73,4 +75,7 @@ coefficients! {
     QEZ1 = 0.0, QEZ2 = 0.0, QEZ3 = 0.0, QEZ4 = 0.0, QEZ5 = 0.0,
     QHZ1 = 0.0, QHZ2 = 0.0, QHZ3 = 0.0, QHZ4 = 0.0, PPZ1 = 0.0, PPZ2 = 0.0,
     SSZ1 = 0.0, SSZ2 = 0.0, SSZ3 = 0.0, SSZ4 = 0.0,
+    WIDTH = 0.0, ASPECT_RATIO = 0.0, VERTICAL_STIFFNESS = 0.0, Q_RE0 = 1.0, Q_V1 = 0.0, Q_V2 = 0.0,
+    Q_FZ2 = 0.0, Q_FCX = 0.0, Q_FCY = 0.0, Q_FCY2 = 0.0, Q_CAM1 = 0.0, Q_CAM2 = 0.0, Q_CAM3 = 0.0,
+    Q_FYS1 = 0.0, Q_FYS2 = 0.0, Q_FYS3 = 0.0, PFZ1 = 0.0, BREFF = 0.0, DREFF = 0.0, FREFF = 0.0,
 }

@@ -51,8 +51,10 @@
 //!   5.2 files use `γ*` in `Mz` like 6.x, and `SHy = … + PHY3·γ*·λKyγ`.
 //! - `Mx`: the TNO 6.1 form (`QSX1..QSX14`, `PPMX1`); 5.2 files leave
 //!   `QSX4..QSX14` at 0 and reduce to the 5.2 form.
-//! - 6.2 differs from 6.1 only in transient and loaded-radius parts not
-//!   modelled here, so both use the same steady-state equations.
+//! - 6.2 differs from 6.1 in its forces and moments only in transient
+//!   parts not modelled here, so both use the same steady-state equations;
+//!   its vertical force (camber, `Fy`-shift and pressure terms) and hence
+//!   its loaded radius differ ([`vertical`], [`MagicFormula::loaded_radius`]).
 //! - PAC2002 (5.2) files' `LGAX`, `LGAY`, `LGAZ` — ADAMS' camber scaling
 //!   factors of the Fx, Fy and Mz channels — are not read: MFeval has no
 //!   such parameters (the coefficient set of its `readTIR`, as ported to
@@ -88,6 +90,7 @@ mod formulae;
 mod kernels;
 mod mode;
 mod slip;
+pub mod vertical;
 
 pub use coefficients::MfCoefficients;
 pub use mode::{MfLimits, MfMode};
@@ -290,6 +293,50 @@ impl MagicFormula {
             mirror,
             prelude,
         }
+    }
+
+    /// The loaded radius (m) at a point, as MFeval computes it for a 6.1 or
+    /// 6.2 file ([`vertical`]); `None` for a 5.2 file or one without
+    /// `VERTICAL_STIFFNESS` (no vertical model), and at zero load.
+    pub fn loaded_radius(&self, p: &MfInput) -> Option<f64> {
+        // MF 6.1's vertical force has no camber, Fy-shift or Fy-power
+        // terms: a 6.1 file that carries those keys is evaluated without.
+        let mf61;
+        let c = if self.version == MfVersion::Mf61 {
+            let mut k = self.coefficients.clone();
+            for name in vertical::MF62_ONLY {
+                k.set(name, 0.0);
+            }
+            mf61 = k;
+            &mf61
+        } else {
+            &self.coefficients
+        };
+        if self.version == MfVersion::Mf52
+            || c.VERTICAL_STIFFNESS <= 0.0
+            || c.NOMPRES <= 0.0
+            || p.fz <= 0.0
+            || !p.fz.is_finite()
+        {
+            return None;
+        }
+        let mirror = self.side == TyreSide::Right;
+        let gamma = if mirror { -p.camber } else { p.camber };
+        let alpha = if mirror { p.alpha } else { -p.alpha };
+        let pressure = self.pressure(p.pressure);
+        // ISO-W forces of the (mirrored) tyre; the vertical model is even
+        // under the mirror.
+        let o = self.evaluate_iso(p.fz, gamma, pressure, 1.0, p.kappa, alpha, p.speed);
+        let checked = self.checked(p.fz, gamma, pressure);
+        let dpi = (checked.p - c.NOMPRES) / c.NOMPRES;
+        let state = vertical::VerticalState {
+            gamma: checked.gamma,
+            dpi,
+            radii: vertical::radii(c, p.fz, p.kappa, p.speed, dpi),
+            fx: o.fx,
+            fy: o.fy,
+        };
+        Some(vertical::loaded_radius(c, &state, checked.fz))
     }
 
     pub(super) fn pressure(&self, p: Option<f64>) -> f64 {

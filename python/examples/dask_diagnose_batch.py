@@ -56,7 +56,7 @@ def main() -> None:
         t_local = time.perf_counter() - t0
         assert on_dask == local
         for c, d in zip(campaigns, local):
-            print(f"{c.name}: {d['verdict']['statement']}")
+            print(f"{c.name}: {d.verdict.statement}")
         print(f"{len(campaigns)} campaigns: Dask {t_dask:.2f} s, one process {t_local:.2f} s; identical")
 
 

@@ -24,7 +24,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def evaluate(study, pairs):
-    return study.evaluate([p[0] for p in pairs], [p[1] for p in pairs])
+    return study.evaluate(front_n_per_rad=[p[0] for p in pairs], rear_n_per_rad=[p[1] for p in pairs])
 
 
 def main() -> None:
@@ -38,12 +38,12 @@ def main() -> None:
         t0 = time.perf_counter()
         parts = client.gather(client.map(evaluate, [study] * tasks, [grid[i::tasks] for i in range(tasks)]))
         t_dask = time.perf_counter() - t0
-    on_dask = {(s["k_front"], s["k_rear"]): s for part in parts for s in part}
+    on_dask = {(s.k_front, s.k_rear): s for part in parts for s in part}
     t0 = time.perf_counter()
-    local = study.evaluate([g[0] for g in grid], [g[1] for g in grid])
+    local = study.evaluate(front_n_per_rad=[g[0] for g in grid], rear_n_per_rad=[g[1] for g in grid])
     t_local = time.perf_counter() - t0
-    assert all(on_dask[(s["k_front"], s["k_rear"])] == s for s in local) and len(on_dask) == len(local)
-    er = [s["metrics"]["er"] for s in local if s["metrics"]]
+    assert all(on_dask[(s.k_front, s.k_rear)] == s for s in local) and len(on_dask) == len(local)
+    er = [s.metrics.er for s in local if s.metrics]
     print(f"{len(grid)} combinations: Dask {t_dask:.2f} s, one process {t_local:.2f} s; identical")
     print(f"Er from {min(er):.4f} to {max(er):.4f} s")
 

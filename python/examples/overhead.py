@@ -33,7 +33,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         p = scenario(pathlib.Path(d))
         r = handling.simulate(p, pandas=False)
-        rows = len(r["history"]["t"])
+        rows = len(r.history["t"])
         rust, python = [], []
         for _ in range(3):
             rust.append(_handling._bench_simulate(str(p), n))

@@ -26,8 +26,8 @@ use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
 use pyo3::prelude::*;
-use pyo3::IntoPyObjectExt;
 use pyo3::types::{PyDict, PyTuple};
+use pyo3::IntoPyObjectExt;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -103,10 +103,14 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
         InputProblem::NegativeLoad { value } => (Some("fz"), Some(*value)),
         InputProblem::NonPositivePressure { value } => (Some("pressure"), Some(*value)),
         InputProblem::AngleInDegrees { column, value, .. } => (Some(column), Some(*value)),
-        InputProblem::WrongSign { channel, slope, .. } => (Some(channel.column()), Some(slope.slope)),
-        InputProblem::NoLevelNear { variable, requested, .. } => {
-            (Some(variable.column()), Some(*requested))
+        InputProblem::WrongSign { channel, slope, .. } => {
+            (Some(channel.column()), Some(slope.slope))
         }
+        InputProblem::NoLevelNear {
+            variable,
+            requested,
+            ..
+        } => (Some(variable.column()), Some(*requested)),
         InputProblem::NoCamberColumn { camber } => (Some("camber"), Some(*camber)),
         _ => (None, None),
     }
@@ -125,7 +129,12 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
             ParamError::new_err(message),
             vec![
                 ("key", text(&p.key)),
-                ("value", p.value.number().map_or_else(|| py.None(), |v| py_obj(py, v))),
+                (
+                    "value",
+                    p.value
+                        .number()
+                        .map_or_else(|| py.None(), |v| py_obj(py, v)),
+                ),
                 ("reason", text(&p.reason)),
             ],
         ),
@@ -134,17 +143,25 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
             let (key, value, reason) = match i {
                 LibInputError::Value { source: p, .. } => (
                     text(&p.key),
-                    p.value.number().map_or_else(|| py.None(), |v| py_obj(py, v)),
+                    p.value
+                        .number()
+                        .map_or_else(|| py.None(), |v| py_obj(py, v)),
                     text(&p.reason),
                 ),
                 LibInputError::Key { key, detail, .. } => (text(key), py.None(), text(detail)),
                 LibInputError::Invalid { problem, .. } => {
                     let (key, value) = problem_key_value(problem);
                     let value = value.map_or_else(|| py.None(), |v| py_obj(py, v));
-                    (key.map_or_else(|| py.None(), text), value, text(&problem.to_string()))
+                    (
+                        key.map_or_else(|| py.None(), text),
+                        value,
+                        text(&problem.to_string()),
+                    )
                 }
                 LibInputError::Cell { name, cell, .. } => (text(name), text(cell), text(&message)),
-                LibInputError::MissingColumn { name, .. } => (text(name), py.None(), text(&message)),
+                LibInputError::MissingColumn { name, .. } => {
+                    (text(name), py.None(), text(&message))
+                }
                 _ => (py.None(), py.None(), text(&message)),
             };
             let problem = match i {
@@ -197,14 +214,16 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
         Error::Metrics(_) => (MetricsError::new_err(message), Vec::new()),
         Error::Diagnosis(d) => {
             let rig = match d {
-                LibDiagnosisError::NoRigCondition { rig } | LibDiagnosisError::RigFit { rig, .. } => {
-                    path(rig)
-                }
+                LibDiagnosisError::NoRigCondition { rig }
+                | LibDiagnosisError::RigFit { rig, .. } => path(rig),
                 _ => py.None(),
             };
             (DiagnosisError::new_err(message), vec![("path", rig)])
         }
-        Error::Output(o) => (OutputError::new_err(message), vec![("path", path(o.path()))]),
+        Error::Output(o) => (
+            OutputError::new_err(message),
+            vec![("path", path(o.path()))],
+        ),
         _ => (HandlingError::new_err(message), Vec::new()),
     };
     attrs.push(kind);
@@ -427,6 +446,9 @@ impl PyStudy {
             handling::io::study::load_study(&path).map_err(Error::from)
         })?;
         let sc = &input.scenario;
+        // The absolute path, so that a pickled study reloads in a worker
+        // whose working directory differs (errors above name it as given).
+        let path = std::path::absolute(&path).unwrap_or(path);
         Ok(Self {
             study: Study {
                 model: sc.model.clone(),
@@ -440,7 +462,7 @@ impl PyStudy {
         })
     }
 
-    /// The file it was loaded from.
+    /// The file it was loaded from, absolute.
     #[getter]
     fn path(&self) -> PathBuf {
         self.path.clone()
@@ -763,6 +785,18 @@ fn vehicle_from_toml(text: &str, path: PathBuf) -> PyResult<String> {
     json(&v)
 }
 
+/// The tables of a TOML file as JSON text (the file as written: relative
+/// paths unresolved), for `Scenario.load` after `check_scenario` has read
+/// and validated it with the library's reader.
+#[pyfunction]
+fn toml_file_json(py: Python<'_>, path: PathBuf) -> PyResult<String> {
+    let table: toml::Table = detached(py, || {
+        let src = handling::io::TomlSource::read(&path)?;
+        src.parse().map_err(Error::from)
+    })?;
+    json(&table)
+}
+
 /// Checks a scenario file (reads and validates it, simulates nothing).
 #[pyfunction]
 fn check_scenario(py: Python<'_>, scenario: PathBuf) -> PyResult<String> {
@@ -794,6 +828,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
     m.add_function(wrap_pyfunction!(synth, m)?)?;
     m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(toml_file_json, m)?)?;
     m.add_function(wrap_pyfunction!(vehicle_from_toml, m)?)?;
     // The registry's lists: the `model` keys of tyre files and the models
     // `identify` fits (a model registered in Rust appears in both).

@@ -11,7 +11,7 @@ distributed = pytest.importorskip("distributed")
 
 
 def _evaluate(study, pairs):
-    return study.evaluate([p[0] for p in pairs], [p[1] for p in pairs])
+    return study.evaluate(front_n_per_rad=[p[0] for p in pairs], rear_n_per_rad=[p[1] for p in pairs])
 
 
 def _stiffness(tyre, fz):
@@ -33,11 +33,11 @@ def test_stiffness_map_on_dask_equals_single_process(tmp_path, client):
     chunks = [grid[i::4] for i in range(4)]
     futures = client.map(_evaluate, [study] * len(chunks), chunks, pure=False)
     parts = client.gather(futures)
-    on_dask = {(s["k_front"], s["k_rear"]): s for part in parts for s in part}
-    local = handling.study(p)["samples"]
+    on_dask = {(s.k_front, s.k_rear): s for part in parts for s in part}
+    local = handling.study(p).samples
     assert len(on_dask) == len(local) == 12
     for s in local:
-        assert on_dask[(s["k_front"], s["k_rear"])] == s
+        assert on_dask[(s.k_front, s.k_rear)] == s
 
 
 def test_tyre_map_on_dask_equals_single_process(root, client):
@@ -70,4 +70,4 @@ def test_a_batch_of_campaigns_on_dask_equals_single_process(tmp_path, client):
     on_dask = client.gather(client.map(handling.diagnose, paths))
     local = [handling.diagnose(p) for p in paths]
     assert on_dask == local
-    assert [d["verdict"]["effects"] for d in local] == [["sensor_bias"], ["relaxation_length"], []]
+    assert [d.verdict.effects for d in local] == [["sensor_bias"], ["relaxation_length"], []]

@@ -9,14 +9,15 @@ from conftest import coarse_study
 
 def test_simulate_returns_arrays_and_the_cli_metrics(root, tmp_path):
     r = handling.simulate(root / "scenarios" / "sedan_step.toml", out=tmp_path, pandas=False)
-    h = r["history"]
+    h = r.history
     for c in ("t", "steer", "speed", "beta", "yaw_rate", "ay", "fz_fl"):
         assert isinstance(h[c], np.ndarray) and h[c].dtype == np.float64
         assert len(h[c]) == len(h["t"])
     assert h["t"][-1] == pytest.approx(6.0)
-    m = r["metrics"]
+    m = r.metrics
+    assert isinstance(m, handling.StepMetrics)
     written = json.loads((tmp_path / "metrics.json").read_text())
-    for k, v in m.items():
+    for k, v in m.to_dict().items():
         assert written[k] == v, k
     assert (tmp_path / "response.png").exists()
     csv = np.genfromtxt(tmp_path / "history.csv", delimiter=",", names=True)
@@ -24,25 +25,25 @@ def test_simulate_returns_arrays_and_the_cli_metrics(root, tmp_path):
     for c in h:
         assert np.allclose(csv[c], h[c], rtol=1e-12, atol=0), c
     # README example: 16.90 % overshoot, 3.7096 1/s gain.
-    assert m["yaw_rate_overshoot"] == pytest.approx(16.90, abs=0.01)
-    assert m["yaw_rate_gain"] == pytest.approx(3.7096, abs=1e-4)
+    assert m.yaw_rate_overshoot == pytest.approx(16.90, abs=0.01)
+    assert m.yaw_rate_gain == pytest.approx(3.7096, abs=1e-4)
 
 
 def test_simulate_dataframe_when_pandas_present(root):
     pd = pytest.importorskip("pandas")
     r = handling.simulate(root / "scenarios" / "sedan_step.toml")
-    assert isinstance(r["history"], pd.DataFrame)
+    assert isinstance(r.history, pd.DataFrame)
 
 
 def test_metrics_of_a_measured_run(root, tmp_path):
-    h = handling.simulate(root / "scenarios" / "sedan_step.toml", pandas=False)["history"]
+    h = handling.simulate(root / "scenarios" / "sedan_step.toml", pandas=False).history
     cols = ["t", "steer", "speed", "yaw_rate", "ay"]
     rows = np.column_stack([h[c] for c in cols])[::10]
     p = tmp_path / "run.csv"
     np.savetxt(p, rows, delimiter=",", header=",".join(cols), comments="", fmt="%.17g")
     r = handling.metrics(p)
-    assert r["yaw_rate_gain"] == pytest.approx(3.71, rel=0.02)
-    assert "cleaning" in r
+    assert r.metrics.yaw_rate_gain == pytest.approx(3.71, rel=0.02)
+    assert "cleaning" in r.to_dict() and r.cleaning == r.to_dict()["cleaning"]
 
 
 def test_scenario_error_is_located(root, tmp_path):
@@ -59,18 +60,18 @@ def test_scenario_error_is_located(root, tmp_path):
 def test_equilibria_report_is_summary_json(root, tmp_path):
     r = handling.equilibria(root / "scenarios" / "equilibria_steer.toml", out=tmp_path)
     written = json.loads((tmp_path / "summary.json").read_text())
-    assert r["summary"] == written
-    assert r["summary"]["agreement_percent"] == 100.0
+    assert r.summary.to_dict() == written
+    assert r.summary.agreement_percent == 100.0 and r.summary.conditions == written["conditions"]
 
 
 def test_study_shards_on_three_merge_to_the_unsharded_run(tmp_path):
     p = coarse_study(tmp_path)
     whole = handling.study(p, out=tmp_path / "whole")
-    assert len(whole["samples"]) == 12
+    assert len(whole.samples) == 12
     for k in (1, 2, 3):
         handling.run_shard("study", p, k, 3, out=tmp_path / "shards")
     merged = handling.merge(sorted((tmp_path / "shards").glob("shard-*-of-3.json")), out=tmp_path / "merged")
-    assert merged["summary"] == whole["summary"]
+    assert merged["summary"] == whole.summary
     for f in ("study.csv", "summary.json"):
         assert (tmp_path / "merged" / f).read_bytes() == (tmp_path / "whole" / f).read_bytes()
     with pytest.raises(ValueError):
@@ -81,8 +82,8 @@ def test_study_object_evaluates_the_map(tmp_path):
     p = coarse_study(tmp_path)
     st = handling.Study.load(p)
     grid = st.grid()
-    samples = st.evaluate([g[0] for g in grid], [g[1] for g in grid])
-    assert samples == handling.study(p)["samples"]
+    samples = st.evaluate(front_n_per_rad=[g[0] for g in grid], rear_n_per_rad=[g[1] for g in grid])
+    assert samples == handling.study(p).samples
 
 
 def test_identify_gim_recovers_its_tyre(root, tmp_path):
@@ -93,9 +94,9 @@ def test_identify_gim_recovers_its_tyre(root, tmp_path):
     p = tmp_path / "rig.csv"
     np.savetxt(p, np.column_stack([fz, a, fy]), delimiter=",", header="fz,alpha,fy", comments="", fmt="%.17g")
     r = handling.identify(p, "gim", seed=1, out=tmp_path / "fit.toml")
-    assert isinstance(r["tyre"], handling.Tyre) and r["tyre"].model == "gim"
+    assert isinstance(r.tyre, handling.Tyre) and r.tyre.model == "gim"
     assert (tmp_path / "fit.toml").exists()
-    fit = r["tyre"].forces(fz, 0.0, a)["fy"]
+    fit = r.tyre.forces(fz, 0.0, a)["fy"]
     assert np.max(np.abs(fit - fy)) < 0.01 * np.max(np.abs(fy))
     with pytest.raises(handling.OptionsError) as e:
         handling.identify(p, "pac2002")

@@ -6,7 +6,7 @@
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
 use crate::diagnose::effects::joined;
-use crate::diagnose::report::{ParameterValue, Part, Ranked};
+use crate::diagnose::report::{ParameterValue, Part, Ranked, Shrinkage};
 use crate::diagnose::Diagnosis;
 use crate::error::Error;
 use crate::report::html::{Cell, Page};
@@ -15,6 +15,13 @@ use std::path::Path;
 
 /// Cleaning lines shown in full before the rest is counted.
 const CLEANING_LINES: usize = 40;
+
+/// A channel's held-out gap is significant above this many noise floors
+/// (the gap's rule, and the dashed line of the gap map).
+const SIGNIFICANT_NOISE_FLOORS: f64 = 3.0;
+
+/// What a reduction cell says where there is no significant gap to reduce.
+const NOT_SIGNIFICANT: &str = "not significant";
 
 /// What the page says of the campaign beside the diagnosis.
 #[derive(Debug, Clone, Copy)]
@@ -48,6 +55,10 @@ pub fn page(
     );
     p.section("verdict", "Verdict")
         .paragraph("verdict", &d.verdict.statement);
+    if !d.verdict.parameters.is_empty() {
+        let fitted: Vec<String> = d.verdict.parameters.iter().map(parameter).collect();
+        p.paragraph("verdict", &format!("Fitted: {}.", fitted.join("; ")));
+    }
     for w in &d.verdict.warnings {
         p.paragraph("warning", w);
     }
@@ -55,11 +66,17 @@ pub fn page(
         p.paragraph(
             "warning",
             &format!(
-                "confounded: {} — separate them with {}",
-                joined(&c.effects, ", "),
-                c.separating_test
+                "Confounded: {} explain the gap about equally. A test that shows one of \
+                 these signatures separates them:",
+                joined(&c.effects, " and ")
             ),
         );
+        let tests: Vec<String> = c
+            .effects
+            .iter()
+            .map(|e| format!("{}: {}", e.name(), e.signature()))
+            .collect();
+        p.lines(&tests);
     }
     if !d.notes.is_empty() {
         p.section("notes", "Notes on the inputs").lines(&d.notes);
@@ -120,12 +137,12 @@ fn base(p: &mut Page, d: &Diagnosis) {
 
 /// Every candidate (singles, then combinations) with its held-out scores.
 fn ranking(p: &mut Page, d: &Diagnosis) {
-    let rows: Vec<Vec<Cell>> = d
-        .ranking
+    let all: Vec<&Ranked> = d.ranking.iter().chain(&d.combinations).collect();
+    let verdict = all
         .iter()
-        .chain(&d.combinations)
-        .map(ranked_row)
-        .collect();
+        .copied()
+        .find(|r| !d.verdict.effects.is_empty() && same_effects(r, &d.verdict.effects));
+    let rows: Vec<Vec<Cell>> = all.iter().map(|r| ranked_row(r, d, verdict)).collect();
     p.section("ranking", "Candidates on held-out runs");
     p.paragraph(
         "",
@@ -133,6 +150,15 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             "Held-out combined error J of the base model {:.3}; J of the noise alone {:.3}.",
             d.gap.heldout_error, d.gap.noise_level
         ),
+    );
+    p.paragraph(
+        "",
+        "Single effects come first, lowest held-out J first, then combinations. The verdict \
+         is not always the top row: a candidate that leaves one of its parameters idle (a \
+         steer-path lag that stays off) gives way to a simpler candidate whose J is as low \
+         within a small share of the noise level, and effects are combined only while each \
+         removes a large share of what is left and lowers the BIC. The last column says why \
+         a row above the verdict is not it.",
     );
     p.table(
         "ranking-table",
@@ -145,23 +171,61 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             "folds converged",
             "parameters",
             "warning",
+            "verdict",
         ],
         &rows,
     );
 }
 
-fn ranked_row(r: &Ranked) -> Vec<Cell> {
+/// Whether candidate `r` is the set of effects `effects` (in any order).
+fn same_effects(r: &Ranked, effects: &[crate::diagnose::effects::EffectKind]) -> bool {
+    r.effects.len() == effects.len() && effects.iter().all(|e| r.effects.contains(e))
+}
+
+fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> {
     let params: Vec<String> = r.parameters.iter().map(parameter).collect();
+    let reduction = |x: f64| {
+        if d.gap.significant {
+            Cell::Number(format!("{x:.1}"))
+        } else {
+            Cell::Text(NOT_SIGNIFICANT.into())
+        }
+    };
     vec![
         Cell::Text(r.effect.clone()),
         Cell::Number(format!("{:.3}", r.heldout_error_after)),
-        Cell::Number(format!("{:.1}", r.reduction_percent)),
-        Cell::Number(format!("{:.1}", r.insample_reduction_percent)),
+        reduction(r.reduction_percent),
+        reduction(r.insample_reduction_percent),
         Cell::Number(format!("{:.0}", r.delta_bic)),
         Cell::Number(format!("{} of {}", r.folds_converged, r.folds)),
         Cell::Text(params.join("; ")),
         Cell::Text(r.warning.clone().unwrap_or_default()),
+        Cell::Text(verdict_role(r, verdict, d.gap.noise_level)),
     ]
+}
+
+/// The verdict column: the verdict's row, and why a row that scores better
+/// than the verdict is not it.
+fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> String {
+    let Some(v) = verdict else {
+        return String::new();
+    };
+    if std::ptr::eq(r, v) {
+        return "the verdict".into();
+    }
+    if r.heldout_error_after >= v.heldout_error_after {
+        return String::new();
+    }
+    let margin = (v.heldout_error_after - r.heldout_error_after) / noise_level;
+    let (n, m) = (r.parameters.len(), v.parameters.len());
+    if n > m {
+        format!(
+            "J lower by {margin:.3} × the noise level only, with {n} parameters to the \
+             verdict's {m}: the simpler is taken"
+        )
+    } else {
+        format!("J lower by {margin:.3} × the noise level; not taken: see the verdict")
+    }
 }
 
 /// A fitted parameter with its standard error or the bound it sits on.
@@ -189,7 +253,7 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
                 Cell::Number(number(s.before)),
                 Cell::Number(number(s.after)),
                 Cell::Number(number(s.noise_floor)),
-                Cell::Number(format!("{:.0}", s.reduction_percent)),
+                channel_reduction(s),
                 Cell::Number(s.samples.to_string()),
             ]
         })
@@ -214,6 +278,19 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
             ],
             &rows,
         );
+}
+
+/// The share of a channel's gap removed, or "not significant" where the
+/// base model's held-out RMS is within the noise floors: there is no gap to
+/// remove and the share would be noise.
+fn channel_reduction(s: &Shrinkage) -> Cell {
+    if s.before > SIGNIFICANT_NOISE_FLOORS * s.noise_floor {
+        Cell::Number(format!("{:.0}", s.reduction_percent))
+    } else {
+        Cell::Text(format!(
+            "{NOT_SIGNIFICANT} (within {SIGNIFICANT_NOISE_FLOORS} noise floors)"
+        ))
+    }
 }
 
 /// The road under the runs and the cleaning report.

@@ -104,3 +104,101 @@ pub fn opens_in_a_browser(page: &Path, ids: &[&str]) {
         }
     }
 }
+
+/// A synthetic campaign with `effects` on, diagnosed on `candidates` only
+/// (a fast diagnosis); returns report.html's text and diagnosis.json.
+fn diagnosed_page(
+    dir: &Path,
+    name: &str,
+    effects: &str,
+    candidates: &str,
+) -> (String, serde_json::Value) {
+    let mut args = vec!["--seed", "3"];
+    if !effects.is_empty() {
+        args.extend_from_slice(&["--effects", effects]);
+    }
+    let campaign = crate::synth_campaign(dir, name, &args);
+    // synth's vehicle.toml ends in its [diagnose] table.
+    let vehicle = campaign.join("vehicle.toml");
+    let text = std::fs::read_to_string(&vehicle).unwrap();
+    std::fs::write(&vehicle, format!("{text}effects = [{candidates}]\n")).unwrap();
+    let out = dir.join(format!("{name}.out"));
+    let (_, d) = crate::diagnose_to(&campaign, &out);
+    (std::fs::read_to_string(out.join("report.html")).unwrap(), d)
+}
+
+/// The table row (`<tr>…</tr>`) of `table` whose first cell is `first`.
+fn row<'a>(page: &'a str, table: &str, first: &str) -> &'a str {
+    let at = page
+        .find(&format!("<table id=\"{table}\""))
+        .unwrap_or_else(|| panic!("no table {table}"));
+    let end = at + page[at..].find("</table>").unwrap();
+    let cell = format!("<tr><td>{first}</td>");
+    let start = at
+        + page[at..end]
+            .find(&cell)
+            .unwrap_or_else(|| panic!("no row {first} in {table}"));
+    &page[start..start + page[start..].find("</tr>").unwrap()]
+}
+
+#[test]
+fn the_page_says_why_the_verdict_is_its_row_and_what_it_fitted() {
+    let dir = tempfile::tempdir().unwrap();
+    let (page, d) = diagnosed_page(
+        dir.path(),
+        "delay",
+        "sensor_delay",
+        "\"sensor_delay\", \"steer_path\"",
+    );
+    assert_eq!(crate::verdict_of(&d), ["sensor_delay"]);
+    // The verdict box holds the fitted value of its parameter.
+    let p = &d["verdict"]["parameters"][0];
+    let fitted = format!(
+        "<p class=\"verdict\">Fitted: {} = {:.4}",
+        p["name"].as_str().unwrap(),
+        p["value"].as_f64().unwrap()
+    );
+    assert!(page.contains(&fitted), "{fitted} not in the page");
+    // The two look-alikes are confounded: one sentence, then one line per
+    // effect with the signature that would separate them.
+    assert!(!d["confounded"].as_array().unwrap().is_empty());
+    assert!(page.contains(
+        "<p class=\"warning\">Confounded: sensor_delay and steer_path explain the gap about \
+         equally. A test that shows one of these signatures separates them:</p>\n<ul class=\"lines\">\n<li>sensor_delay: "
+    ));
+    // The ranking marks the verdict's row, explains the order, and says
+    // why a row scoring better than the verdict is not it.
+    assert!(row(&page, "ranking-table", "sensor_delay").ends_with("<td>the verdict</td>"));
+    assert!(page.contains("The verdict is not always the top row"));
+    let verdict_j = crate::ranked(&d, "sensor_delay")["heldout_error_after"]
+        .as_f64()
+        .unwrap();
+    for r in d["ranking"].as_array().unwrap() {
+        let effect = r["effect"].as_str().unwrap();
+        let better = r["heldout_error_after"].as_f64().unwrap() < verdict_j;
+        let why = row(&page, "ranking-table", effect).contains("J lower by");
+        assert_eq!(better, why, "{effect}");
+    }
+}
+
+#[test]
+fn no_reduction_percentage_for_a_gap_within_noise() {
+    let dir = tempfile::tempdir().unwrap();
+    let (page, d) = diagnosed_page(dir.path(), "none", "", "\"sensor_delay\"");
+    let mut within = 0;
+    for s in d["shrinkage"].as_array().unwrap() {
+        if s["part"] != "all" {
+            continue;
+        }
+        let before = s["before"].as_f64().unwrap();
+        let floor = s["noise_floor"].as_f64().unwrap();
+        let cells = row(&page, "shrinkage", s["channel"].as_str().unwrap());
+        let said = cells.contains("not significant");
+        assert_eq!(said, before <= 3.0 * floor, "{cells}");
+        within += usize::from(said);
+    }
+    assert!(within > 0, "no channel within its noise floors");
+    if !d["gap"]["significant"].as_bool().unwrap() {
+        assert!(row(&page, "ranking-table", "sensor_delay").contains("<td>not significant</td>"));
+    }
+}

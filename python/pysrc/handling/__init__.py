@@ -4,7 +4,10 @@ A 2-DOF (sideslip β, yaw rate r) vehicle model with lateral load transfer
 and pluggable nonlinear tyres (Gim, simplified Magic Formula, UniTire,
 PAC89, linear, Magic Formula 5.2/6.1/6.2 from .tir files). Every function
 calls one function of the Rust library with the GIL released and returns
-the same report as the command-line tool's JSON, as a dict.
+the command-line tool's report as a typed, frozen object (:class:`Simulation`,
+:class:`StepMetrics`, :class:`StudySample`, :class:`Equilibria`,
+:class:`Identification`, :class:`Diagnosis`, ...) whose ``to_dict()`` is
+the CLI's JSON content.
 
 Units: SI and radians everywhere (N, N·m, m, s, m/s, rad, rad/s, Pa);
 ISO 8855 axes (x forward, y left, z up; positive steer turns left).
@@ -48,6 +51,19 @@ from ._handling import (
     OutputError,
     ParamError,
 )
+from ._reports import (
+    Diagnosis,
+    Equilibria,
+    EquilibriaSummary,
+    Identification,
+    MeasuredMetrics,
+    RankedEffect,
+    Simulation,
+    StepMetrics,
+    StudyReport,
+    StudySample,
+    Verdict,
+)
 from ._toml import Document
 
 __version__ = _handling.__version__
@@ -65,6 +81,17 @@ __all__ = [
     "Vehicle",
     "Scenario",
     "Study",
+    "Simulation",
+    "StepMetrics",
+    "MeasuredMetrics",
+    "StudySample",
+    "StudyReport",
+    "Equilibria",
+    "EquilibriaSummary",
+    "Identification",
+    "Diagnosis",
+    "Verdict",
+    "RankedEffect",
     "simulate",
     "metrics",
     "equilibria",
@@ -403,6 +430,11 @@ class Scenario:
         name: Optional[str] = None,
         description: Optional[str] = None,
     ) -> None:
+        if isinstance(vehicle, (str, bytes, os.PathLike)):
+            raise TypeError(
+                f"Scenario({os.fsdecode(vehicle)!r}): Scenario() takes a scenario's tables as keywords; "
+                "to read a scenario file use Scenario.load(path)"
+            )
         if simulation is not None and integrator is not None:
             raise TypeError("Scenario: give `simulation` or its alias `integrator`, not both")
         kw: Dict[str, Any] = {
@@ -419,6 +451,35 @@ class Scenario:
         self._kw = {k: copy.deepcopy(v) for k, v in kw.items() if v is not None}
         with tempfile.TemporaryDirectory(prefix="handling-") as d:
             self._run(d, _handling.check_scenario)
+
+    @classmethod
+    def load(cls, path: PathLike) -> "Scenario":
+        """Reads a scenario file (TOML) as ``handling simulate`` does: the
+        library's reader and checks, errors as :class:`InputError` with the
+        file, line and column. Tyre files, and a replay's measured run, are
+        read relative to the scenario file, as the CLI reads them; the
+        scenario then holds its tyres and travels whole to other processes.
+        ``write(folder)`` writes it back to a file the CLI runs to the same
+        result."""
+        p = _path(path)
+        _handling.check_scenario(p)
+        tables = json.loads(_handling.toml_file_json(p))
+        folder = os.path.dirname(os.path.abspath(p))
+
+        def beside(f: str) -> str:
+            return os.path.join(folder, f)
+
+        tyres = dict(tables.get("tyres", {}))
+        for k in _TYRE_FILES:
+            if isinstance(tyres.get(k), str):
+                tyres[k] = Tyre.load(beside(tyres[k]))
+        tables["tyres"] = tyres
+        manoeuvre = tables.get("manoeuvre")
+        if isinstance(manoeuvre, dict) and isinstance(manoeuvre.get("run"), str):
+            manoeuvre["run"] = beside(manoeuvre["run"])
+        # The file's name when it has none, as the CLI names its report.
+        tables.setdefault("name", os.path.splitext(os.path.basename(p))[0])
+        return cls(**tables)
 
     def _document(self) -> Document:
         doc = Document()
@@ -546,8 +607,13 @@ class Study:
     (front, rear) stiffness pairs one by one — the unit of work of
     ``handling study`` and of a distributed stiffness map.
 
-    Pickles as its file path (reloaded where it is unpickled, so workers
-    must see the same files).
+    Stiffness values are per tyre, in the unit their keywords name:
+    ``evaluate(front_n_per_deg=..., rear_n_per_deg=...)`` (the study file's
+    and the CLI's unit) or ``front_n_per_rad``/``rear_n_per_rad`` (SI, as
+    :attr:`front`, :attr:`rear`, :meth:`grid` and the samples).
+
+    Pickles as its absolute file path (reloaded where it is unpickled, so
+    workers must see the same files, from any working directory).
     """
 
     __slots__ = ("_s",)
@@ -562,7 +628,7 @@ class Study:
 
     @property
     def path(self) -> str:
-        """The study file."""
+        """The study file, absolute."""
         return os.fspath(self._s.path)
 
     @property
@@ -580,24 +646,55 @@ class Study:
         order (front outer, rear inner)."""
         return [(float(f), float(r)) for f in self.front for r in self.rear]
 
-    def evaluate(self, k_front: Any, k_rear: Any) -> List[Dict[str, Any]]:
+    def evaluate(
+        self,
+        *args: Any,
+        front_n_per_deg: Any = None,
+        rear_n_per_deg: Any = None,
+        front_n_per_rad: Any = None,
+        rear_n_per_rad: Any = None,
+    ) -> List[StudySample]:
         """Simulates the step steer with each axle's tyres scaled to the
-        cornering stiffness pairs (N/rad per tyre; arrays broadcast).
-        Returns one sample per pair: ``k_front``, ``k_rear`` and
-        ``metrics`` (the step-steer metrics, None without a steady state)."""
-        f, r = np.broadcast_arrays(
-            np.asarray(k_front, dtype=np.float64), np.asarray(k_rear, dtype=np.float64)
-        )
+        cornering stiffness pairs, per tyre, given in N/deg
+        (``front_n_per_deg``, ``rear_n_per_deg``: the study file's and the
+        CLI's unit) or in N/rad (``front_n_per_rad``, ``rear_n_per_rad``);
+        arrays broadcast. Returns one :class:`StudySample` per pair
+        (``k_front``, ``k_rear`` in N/rad, ``metrics`` None without a
+        steady state)."""
+        if args:
+            raise TypeError(
+                "Study.evaluate: name the unit of the stiffness values, "
+                "evaluate(front_n_per_deg=..., rear_n_per_deg=...) as in the study file, "
+                "or evaluate(front_n_per_rad=..., rear_n_per_rad=...)"
+            )
+        per_deg = (front_n_per_deg, rear_n_per_deg)
+        per_rad = (front_n_per_rad, rear_n_per_rad)
+        given_deg = [v is not None for v in per_deg]
+        given_rad = [v is not None for v in per_rad]
+        if all(given_deg) and not any(given_rad):
+            f, r = (np.asarray(v, dtype=np.float64) * _DEG_PER_RAD for v in per_deg)
+        elif all(given_rad) and not any(given_deg):
+            f, r = (np.asarray(v, dtype=np.float64) for v in per_rad)
+        else:
+            raise TypeError(
+                "Study.evaluate: give front_n_per_deg and rear_n_per_deg, "
+                "or front_n_per_rad and rear_n_per_rad"
+            )
+        f, r = np.broadcast_arrays(f, r)
         text = self._s.evaluate_json(
             np.ascontiguousarray(f.ravel()), np.ascontiguousarray(r.ravel())
         )
-        return json.loads(text)
+        return [StudySample.from_dict(d) for d in json.loads(text)]
 
     def __repr__(self) -> str:
         return f"Study({self.path!r})"
 
     def __reduce__(self):  # type: ignore[override]
         return (Study.load, (self.path,))
+
+
+# N/deg to N/rad, as the study file's reader converts (bit for bit).
+_DEG_PER_RAD = 180.0 / np.pi
 
 
 def _history(columns: Dict[str, np.ndarray], pandas: Optional[bool]) -> Any:
@@ -627,17 +724,17 @@ def simulate(
     metrics: Optional[Mapping[str, Any]] = None,
     name: Optional[str] = None,
     description: Optional[str] = None,
-) -> Dict[str, Any]:
+) -> Simulation:
     """Simulates a scenario, as ``handling simulate``: a scenario file
     (TOML), a :class:`Scenario`, or the scenario's keywords (``vehicle``,
     ``tyres``, ``manoeuvre``, ``road``, ``model``, ``simulation`` or
     ``integrator``, ``metrics``, ``name``, ``description``: see
     :class:`Scenario`), which give the same result as the equivalent file.
 
-    Returns the report (``scenario``, ``integration``, ``tyres``,
-    ``friction``, ``metrics`` — the step-steer metrics for step steers,
-    times in s, ``yaw_rate_gain`` in 1/s, overshoot in %, angles in rad —
-    ``lift_offs``, ``replay``) and ``history``: the time history, columns
+    Returns a :class:`Simulation` (``scenario``, ``integration``,
+    ``tyres``, ``friction``, ``metrics`` — a :class:`StepMetrics` for step
+    steers, times in s, ``yaw_rate_gain`` in 1/s, overshoot in %, angles in
+    rad — ``lift_offs``, ``replay``) with ``history``: the time history, columns
     ``t`` (s), ``steer`` (rad), ``speed`` (m/s), ``beta`` (rad),
     ``yaw_rate`` (rad/s), ``ay`` (m/s²), ``alpha_front``/``alpha_rear``
     (rad), ``fy_front``/``fy_rear`` (N), ``fz_fl`` … ``fz_rr`` (N) and
@@ -667,9 +764,7 @@ def simulate(
             text, columns = sc._run(d, _handling.simulate, _opt_path(out))
     else:
         text, columns = _handling.simulate(sc, _opt_path(out))
-    report = json.loads(text)
-    report["history"] = _history(columns, pandas)
-    return report
+    return Simulation.from_dict(json.loads(text), _history(columns, pandas))
 
 
 def metrics(
@@ -688,17 +783,18 @@ def metrics(
     simulation: Optional[Mapping[str, Any]] = None,
     integrator: Optional[Mapping[str, Any]] = None,
     name: Optional[str] = None,
-) -> Dict[str, Any]:
+) -> Union[StepMetrics, MeasuredMetrics]:
     """Step-steer metrics.
 
     Of a measured run (CSV, FORMATS.md), as ``handling metrics --json``:
     windows in s (defaults 0.5, 1.0 and 4.0), ``min_speed`` in m/s
     (default 5), ``filter_hz`` the zero-phase low-pass cut-off in Hz
-    (default 10; 0: unfiltered).
+    (default 10; 0: unfiltered); a :class:`MeasuredMetrics` (its
+    ``metrics`` a :class:`StepMetrics`, with the run's cleaning report).
 
     Of a simulated step steer, given a :class:`Scenario` or its keywords
     (``vehicle``, ``tyres``, ``manoeuvre``, ...: see :class:`Scenario`):
-    the report's ``metrics`` of :func:`simulate`; the windows and
+    the :class:`StepMetrics` of :func:`simulate`; the windows and
     ``filter_hz`` given here go into the scenario's metric settings
     (``filter_hz`` 0: unfiltered, the default for simulations).
     """
@@ -726,7 +822,7 @@ def metrics(
                 settings["filter_hz"] = filter_hz
         if settings != sc._kw.get("metrics", {}):
             sc = sc.replace(metrics=settings)
-        m = simulate(sc, pandas=False)["metrics"]
+        m = simulate(sc, pandas=False).metrics
         if m is None:
             err = OptionsError(
                 f"metrics: scenario `{sc.name}`'s manoeuvre is {sc._kw['manoeuvre'].get('kind')!r}, not a step steer"
@@ -736,7 +832,7 @@ def metrics(
         return m
     if run is None:
         raise TypeError("metrics: give a measured run (CSV), a Scenario or the scenario keywords")
-    return json.loads(
+    return MeasuredMetrics.from_dict(json.loads(
         _handling.metrics(
             _path(run),
             0.5 if pre_window is None else pre_window,
@@ -745,24 +841,26 @@ def metrics(
             10.0 if filter_hz is None else filter_hz,
             4.0 if variance_window is None else variance_window,
         )
-    )
+    ))
 
 
-def equilibria(sweep: PathLike, out: Optional[PathLike] = None) -> Dict[str, Any]:
+def equilibria(sweep: PathLike, out: Optional[PathLike] = None) -> Equilibria:
     """Every steering equilibrium over a sweep file (Li, Jia & Zhao), as
-    ``handling equilibria``: the report's ``summary`` is summary.json
-    (agreement, residuals, bifurcations; speeds m/s, angles rad). With
-    ``out`` the CSV, JSON and PNG outputs are written there."""
-    return json.loads(_handling.equilibria(_path(sweep), _opt_path(out)))
+    ``handling equilibria``: an :class:`Equilibria` whose ``summary`` is
+    summary.json (:class:`EquilibriaSummary`: agreement, residuals,
+    bifurcations; speeds m/s, angles rad). With ``out`` the CSV, JSON and
+    PNG outputs are written there."""
+    return Equilibria.from_dict(json.loads(_handling.equilibria(_path(sweep), _opt_path(out))))
 
 
-def study(study_file: PathLike, out: Optional[PathLike] = None) -> Dict[str, Any]:
+def study(study_file: PathLike, out: Optional[PathLike] = None) -> StudyReport:
     """Cornering stiffness against handling (Wang & Liang), as
-    ``handling study``: ``summary``, ``rbf``, ``inverse`` (summary.json,
-    rbf.json, inverse.json) and ``samples``, every simulated combination
-    (``k_front``, ``k_rear`` in N/rad per tyre, ``metrics``). With ``out``
-    the outputs are written there."""
-    return json.loads(_handling.study(_path(study_file), _opt_path(out)))
+    ``handling study``: a :class:`StudyReport` with ``summary``, ``rbf``,
+    ``inverse`` (summary.json, rbf.json, inverse.json) and ``samples``,
+    every simulated combination (:class:`StudySample`: ``k_front``,
+    ``k_rear`` in N/rad per tyre, ``metrics``). With ``out`` the outputs
+    are written there."""
+    return StudyReport.from_dict(json.loads(_handling.study(_path(study_file), _opt_path(out))))
 
 
 def run_shard(
@@ -792,13 +890,14 @@ def identify(
     start: str = "data",
     template: Optional[PathLike] = None,
     max_iterations: Optional[int] = None,
-) -> Dict[str, Any]:
+) -> Identification:
     """Fits a tyre model to rig data (CSV), as ``handling identify``.
 
     ``model``: gim, magic-simple, unitire, pac89, linear, mf61, mf62;
     ``pressure`` in Pa and ``camber`` in rad select one level; ``bin_deg``
-    is the slip-angle thinning bin in degrees. Returns the report (as
-    ``<out>.report.json``) with ``tyre``: the fitted :class:`Tyre`. With
+    is the slip-angle thinning bin in degrees. Returns an
+    :class:`Identification` (``to_dict()``: ``<out>.report.json``) with
+    ``tyre``: the fitted :class:`Tyre`. With
     ``out`` the tyre file, the report and the figure are written.
     """
     kw: Dict[str, Any] = {}
@@ -818,16 +917,15 @@ def identify(
         _opt_path(template),
         **kw,
     )
-    report = json.loads(text)
-    report["tyre"] = Tyre(tyre)
-    return report
+    return Identification.from_dict(json.loads(text), Tyre(tyre))
 
 
-def diagnose(campaign: PathLike, out: Optional[PathLike] = None) -> Dict[str, Any]:
+def diagnose(campaign: PathLike, out: Optional[PathLike] = None) -> Diagnosis:
     """The sim-to-real gap of a campaign (TOML file or folder), as
-    ``handling diagnose``: the report is diagnosis.json's content. With
+    ``handling diagnose``: a :class:`Diagnosis` (``verdict``, ``ranking``;
+    ``to_dict()``: diagnosis.json's content). With
     ``out`` diagnosis.json, gap_map.png and overlays.png are written."""
-    return json.loads(_handling.diagnose(_path(campaign), _opt_path(out)))
+    return Diagnosis.from_dict(json.loads(_handling.diagnose(_path(campaign), _opt_path(out))))
 
 
 def synth(

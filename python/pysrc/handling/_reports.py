@@ -1,0 +1,350 @@
+"""The package's reports as typed, frozen objects.
+
+Each job's report arrives from Rust as the JSON the command-line tool
+writes; these classes give its main fields names, units and types (nested
+tables the classes do not name stay dicts and lists). Every report keeps
+the JSON form: ``to_dict()`` returns it (a copy), key for key as the
+CLI's file. Reports compare by value and pickle, so they come back from
+Dask or multiprocessing workers whole.
+
+Units: SI and radians (N, m, s, m/s, rad, rad/s); the exceptions are named
+on the field (``%``, ``s·deg``).
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Optional, Tuple
+
+
+def _json_field() -> Any:
+    # The report's JSON form; excluded from repr (it repeats the fields),
+    # part of equality (two reports are equal when their JSON is).
+    return field(default=None, repr=False)
+
+
+def _named(cls: Any, d: Dict[str, Any], **typed: Any) -> Any:
+    """An instance of ``cls`` from the report dict ``d``: each field from
+    its key (None where absent), ``typed`` overriding, ``d`` kept whole."""
+    kw = {f.name: d.get(f.name) for f in dataclasses.fields(cls) if f.name != "_raw"}
+    kw.update(typed)
+    return cls(**kw, _raw=d)
+
+
+class _Report:
+    """The JSON form of a report."""
+
+    _raw: Dict[str, Any]
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The report as the CLI's JSON content (a copy)."""
+        return copy.deepcopy(self._raw)
+
+
+@dataclass(frozen=True)
+class StepMetrics:
+    """Step-steer metrics (GB/T 6323, ISO 7401): times in s on the
+    record's clock, angles in rad, the exceptions named."""
+
+    steer_step: float
+    """Steer step δ_ss − δ₀, rad (front road-wheel angle)."""
+    time_zero: float
+    """Time zero (50 % of the steer input), s."""
+    yaw_rate_response_time: float
+    """Yaw-rate response time (time zero to 90 % of steady state), s."""
+    yaw_rate_peak_time: Optional[float]
+    """Yaw-rate peak response time, s; None without a peak above steady state."""
+    yaw_rate_overshoot: float
+    """Yaw-rate overshoot, % (0 without a peak)."""
+    ay_response_time: Optional[float]
+    """Lateral-acceleration response time, s (None without ``ay``)."""
+    yaw_rate_gain: float
+    """Steady-state yaw-rate gain r/δ, 1/s."""
+    yaw_rate_steady: float
+    """Steady-state yaw-rate change, rad/s."""
+    ay_steady: Optional[float]
+    """Steady-state lateral-acceleration change, m/s² (None without ``ay``)."""
+    beta_steady: Optional[float]
+    """Steady-state sideslip change, rad (None without a β record)."""
+    tb: Optional[float]
+    """TB = peak response time × |steady sideslip|, s·deg (GB/T 6323's unit)."""
+    yaw_rate_total_variance: float
+    """Yaw-rate total variance E_r, s."""
+    ay_total_variance: Optional[float]
+    """Lateral-acceleration total variance E_ay, s (None without ``ay``)."""
+    er: Optional[float]
+    """Er = e1·E_r + e2·E_ay, s (None without ``ay``)."""
+    settled: bool
+    """Whether yaw rate and ay are steady in the steady window."""
+    yaw_rate_noise: float
+    """Noise of the normalised yaw rate in the initial window, share of the step."""
+    filter_hz: Optional[float]
+    """The zero-phase low-pass applied, Hz (None: unfiltered)."""
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":
+        """The metrics of a report dict (its other keys ignored)."""
+        return cls(**{f.name: d[f.name] for f in dataclasses.fields(cls)})
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The metrics as the CLI's JSON keys."""
+        return dataclasses.asdict(self)
+
+
+def _metrics(d: Optional[Dict[str, Any]]) -> Optional[StepMetrics]:
+    return None if d is None else StepMetrics.from_dict(d)
+
+
+@dataclass(frozen=True)
+class Simulation(_Report):
+    """A simulated scenario (``simulate``)."""
+
+    scenario: str
+    """The scenario's name."""
+    integration: str
+    """The integration in words (method, steps, work)."""
+    tyres: Tuple[str, str]
+    """The (front, rear) tyre models."""
+    friction: float
+    """The road's friction scale."""
+    metrics: Optional[StepMetrics]
+    """The step-steer metrics (step steers only)."""
+    lift_offs: List[Dict[str, Any]]
+    """Intervals with a wheel off the ground."""
+    replay: Optional[Dict[str, Any]]
+    """A replayed measurement's gap (replays only)."""
+    history: Any = field(default=None, compare=False)
+    """The time history: t (s), steer (rad), speed (m/s), beta (rad),
+    yaw_rate (rad/s), ay (m/s²), alpha_front/alpha_rear (rad),
+    fy_front/fy_rear (N), fz_fl … fz_rr (N), roll (rad, when integrated):
+    a pandas DataFrame or a dict of numpy arrays."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any], history: Any = None) -> "Simulation":
+        return _named(cls, d, tyres=tuple(d["tyres"]), metrics=_metrics(d.get("metrics")), history=history)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The report as the CLI's JSON content, with ``history``."""
+        d = copy.deepcopy(self._raw)
+        d["history"] = self.history
+        return d
+
+
+@dataclass(frozen=True)
+class MeasuredMetrics(_Report):
+    """Step-steer metrics of a measured run (``metrics`` of a CSV run)."""
+
+    scenario: str
+    """The run's name (its file stem)."""
+    metrics: StepMetrics
+    """The step-steer metrics."""
+    piece: str
+    """The part of the run measured, in words."""
+    steer_rise_time: float
+    """The steer's rise time, s."""
+    warnings: List[str]
+    """What the reader found doubtful."""
+    cleaning: Dict[str, Any]
+    """What cleaning the run found and excluded."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "MeasuredMetrics":
+        return _named(cls, d, metrics=StepMetrics.from_dict(d))
+
+
+@dataclass(frozen=True)
+class StudySample:
+    """One simulated (front, rear) cornering-stiffness pair of a study."""
+
+    k_front: float
+    """Front cornering stiffness per tyre, N/rad."""
+    k_rear: float
+    """Rear cornering stiffness per tyre, N/rad."""
+    metrics: Optional[StepMetrics]
+    """The step-steer metrics (None without a steady state)."""
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "StudySample":
+        return cls(d["k_front"], d["k_rear"], _metrics(d.get("metrics")))
+
+    @property
+    def k_front_n_per_deg(self) -> float:
+        """Front cornering stiffness per tyre, N/deg (the study file's unit)."""
+        return self.k_front / _DEG_PER_RAD
+
+    @property
+    def k_rear_n_per_deg(self) -> float:
+        """Rear cornering stiffness per tyre, N/deg (the study file's unit)."""
+        return self.k_rear / _DEG_PER_RAD
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The sample as the CLI's JSON keys."""
+        m = None if self.metrics is None else self.metrics.to_dict()
+        return {"k_front": self.k_front, "k_rear": self.k_rear, "metrics": m}
+
+
+_DEG_PER_RAD = 180.0 / 3.141592653589793
+
+
+@dataclass(frozen=True)
+class StudyReport(_Report):
+    """A cornering-stiffness study (``study``): summary.json, rbf.json and
+    inverse.json's content as dicts, and every simulated pair."""
+
+    summary: Dict[str, Any]
+    """summary.json's content."""
+    rbf: Optional[Dict[str, Any]]
+    """rbf.json's content (None without an RBF)."""
+    inverse: Optional[Dict[str, Any]]
+    """inverse.json's content (None without inverse targets)."""
+    samples: List[StudySample]
+    """Every simulated combination."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "StudyReport":
+        return _named(cls, d, samples=[StudySample.from_dict(s) for s in d.get("samples", [])])
+
+
+@dataclass(frozen=True)
+class EquilibriaSummary(_Report):
+    """summary.json of ``equilibria``: speeds m/s, angles rad."""
+
+    sweep: str
+    """The sweep's name."""
+    conditions: int
+    """Conditions (points of the sweep) solved."""
+    agreeing: int
+    """Conditions where the swarm search and continuation agree."""
+    agreement_percent: float
+    """Their share, %."""
+    max_residual: float
+    """Largest equation residual of an equilibrium found."""
+    seed: int
+    """The swarm search's seed."""
+    pso_evaluations: int
+    """Model evaluations of the swarm search."""
+    equilibria_in_box_histogram: Dict[str, int]
+    """Conditions per number of equilibria in the search box."""
+    conditions_with_continua: int
+    """Conditions with a continuum of equilibria."""
+    bifurcations: List[Dict[str, Any]]
+    """The bifurcations found along the sweep."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "EquilibriaSummary":
+        return _named(cls, d)
+
+
+@dataclass(frozen=True)
+class Equilibria(_Report):
+    """The report of ``equilibria``."""
+
+    summary: EquilibriaSummary
+    """summary.json."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "Equilibria":
+        return _named(cls, d, summary=EquilibriaSummary.from_dict(d["summary"]))
+
+
+@dataclass(frozen=True)
+class Identification(_Report):
+    """A tyre fitted to rig data (``identify``), as ``<out>.report.json``."""
+
+    tyre: Any
+    """The fitted :class:`Tyre`."""
+    data: str
+    """The rig data read."""
+    model: Optional[str]
+    """The model fitted (swarm fits; None for the staged Magic Formula fit,
+    whose model is the tyre's)."""
+    rms: Optional[float]
+    """RMS of the fit's residual, N (swarm fits)."""
+    parameters: Optional[List[Dict[str, Any]]]
+    """The fitted parameters with their standard errors (swarm fits)."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any], tyre: Any = None) -> "Identification":
+        return _named(cls, d, tyre=tyre)
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What a diagnosis concludes."""
+
+    effects: List[str]
+    """Effects the evidence supports (empty: within noise, or none explains it)."""
+    parameters: List[Dict[str, Any]]
+    """Their fitted parameters (``name``, ``value``, standard error, unit)."""
+    statement: str
+    """The verdict in words."""
+    warnings: List[str]
+    """Channels the verdict's effects leave worse on held-out runs."""
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "Verdict":
+        return cls(**{f.name: d[f.name] for f in dataclasses.fields(cls)})
+
+
+@dataclass(frozen=True)
+class RankedEffect:
+    """One candidate effect (or combination) of a diagnosis' ranking."""
+
+    effect: str
+    """The effect names joined by ``+``."""
+    effects: List[str]
+    """The effects."""
+    parameters: List[Dict[str, Any]]
+    """Their fitted parameters."""
+    heldout_error_before: float
+    """Held-out combined error J of the base model."""
+    heldout_error_after: float
+    """Held-out combined error J with the effect."""
+    reduction_percent: float
+    """Share of the held-out gap above noise removed, %."""
+    warning: Optional[str]
+    """Cross-validation that disagrees with the fit, or refits that did not converge."""
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "RankedEffect":
+        return cls(**{f.name: d.get(f.name) for f in dataclasses.fields(cls)})
+
+
+@dataclass(frozen=True)
+class Diagnosis(_Report):
+    """The sim-to-real gap of a campaign (``diagnose``), as diagnosis.json;
+    the tables not named here (``gap``, ``base``, ``cleaning``, ``road``,
+    ``combinations``, ``confounded``, ``shrinkage``) are in ``to_dict()``."""
+
+    campaign: str
+    """The campaign's name."""
+    seed: int
+    """The seed of every random search."""
+    runs: List[str]
+    """The runs diagnosed."""
+    folds: int
+    """Cross-validation folds."""
+    notes: List[str]
+    """Notes on the campaign and the fit."""
+    verdict: Verdict
+    """The verdict."""
+    ranking: List[RankedEffect]
+    """Every candidate effect, best first."""
+    _raw: Dict[str, Any] = _json_field()
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "Diagnosis":
+        return _named(
+            cls,
+            d,
+            verdict=Verdict.from_dict(d["verdict"]),
+            ranking=[RankedEffect.from_dict(r) for r in d["ranking"]],
+        )

@@ -9,20 +9,23 @@
 
 mod fit;
 mod input;
+mod metrics;
 mod options;
 mod output;
 mod param;
 mod problem;
+mod rig;
 #[cfg(test)]
 mod tests;
 
-pub use crate::metrics::MetricsError;
 pub use fit::{DiagnosisError, FitError};
 pub use input::{CellProblem, InputError, Location};
+pub use metrics::MetricsError;
 pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};
+pub use rig::Variable;
 use thiserror::Error;
 
 /// The library's error: why a job (a command of the binary, or any public

@@ -16,7 +16,6 @@
 //! own units stay in their files.
 
 pub mod data;
-pub mod display;
 pub mod grouping;
 pub mod mf_staged;
 pub mod pac89_two_stage;

@@ -8,8 +8,8 @@
 //! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
+use crate::format::{distinct, fixed};
 use crate::identify::data::{Condition, Point};
-use crate::identify::display::{distinct, fixed};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;

@@ -1,6 +1,8 @@
-//! Numbers as identification prints them: no negative zero (a camber
-//! level a hair below 0 is "0.00°"), and two values compared in a
-//! sentence printed with the digits that tell them apart.
+//! Numbers as messages and reports print them: no negative zero (a camber
+//! level a hair below 0 is "0.00°"), significant digits for values that
+//! span decades, and two values compared in a sentence printed with the
+//! digits that tell them apart. This module imports nothing, so that any
+//! layer (the errors, identification, the jobs) can use it.
 
 /// `v` with `decimals` decimals; a value that rounds to zero prints as an
 /// unsigned zero (a camber of −1e-5 rad is "0.00°", not "-0.00°").

@@ -1,6 +1,7 @@
 //! The shape of the source tree, checked: no import cycle between files, no
 //! module importing one of its own or a higher layer (the order is
-//! [`LAYERS`]), no source file over the size a reader can hold.
+//! [`LAYERS`]), no source file over the size a reader can hold, and no
+//! internal label or path outside the repository in the project's text.
 //!
 //! The import graph is read from the text of `src/`: every `crate::`,
 //! `super::` and `self::` path (in `use` items, grouped or not, and inline in
@@ -624,4 +625,109 @@ fn the_layer_check_sees_an_upward_import_and_skips_tests() {
         "{kept}"
     );
     assert!(kept.contains("fn g()"), "{kept}");
+}
+
+/// Every file under `dir` (recursively) whose name ends in one of `exts`.
+fn files_under(dir: &Path, exts: &[&str], out: &mut Vec<PathBuf>) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if path.is_dir() {
+            // Built or installed trees are not the project's text.
+            if !["target", "book", ".venv", "node_modules"].contains(&name.as_str())
+                && !name.starts_with('.')
+            {
+                files_under(&path, exts, out);
+            }
+        } else if exts.iter().any(|e| name.ends_with(e)) {
+            out.push(path);
+        }
+    }
+}
+
+/// The internal labels and outside paths in `text`: a ticket's number or
+/// possessive (the tracker's word followed by a number or by 's), a path
+/// into the machine the project was built on, and (where
+/// `data_paths_allowed` is false) the data folder beside the checkout. The
+/// patterns are assembled from pieces so that this file passes its own
+/// check.
+fn labels_in(text: &str, data_paths_allowed: bool) -> Vec<String> {
+    let lower = text.to_lowercase();
+    let mut out = Vec::new();
+    let ticket = ["iss", "ue"].concat();
+    let mut from = 0;
+    while let Some(i) = lower[from..].find(&ticket) {
+        let at = from + i;
+        let after = &lower[at + ticket.len()..];
+        let numbered = after
+            .trim_start_matches([' ', '#'])
+            .starts_with(|c: char| c.is_ascii_digit());
+        if numbered || after.starts_with("'s") {
+            out.push(text[at..(at + 12).min(text.len())].to_string());
+        }
+        from = at + ticket.len();
+    }
+    let mut outside = vec![["/wo", "rk/"].concat()];
+    if !data_paths_allowed {
+        outside.push(["../sh", "ared"].concat());
+    }
+    for p in outside {
+        if lower.contains(&p) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+#[test]
+fn no_internal_labels_or_outside_paths() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut found = Vec::new();
+    for (dir, exts) in [
+        ("src", &["rs"][..]),
+        ("tests", &["rs"]),
+        ("benches", &["rs"]),
+        ("scenarios", &["toml", "md"]),
+        ("docs", &["md"]),
+        ("python", &["rs", "py", "md", "toml"]),
+    ] {
+        let mut files = Vec::new();
+        files_under(&root.join(dir), exts, &mut files);
+        for f in files {
+            // The tests read the public data sets beside the checkout.
+            let data_paths_allowed = dir == "tests";
+            for l in labels_in(&fs::read_to_string(&f).unwrap(), data_paths_allowed) {
+                found.push(format!("{}: {l}", f.strip_prefix(root).unwrap().display()));
+            }
+        }
+    }
+    for f in ["README.md", "CHANGELOG.md"] {
+        for l in labels_in(&fs::read_to_string(root.join(f)).unwrap(), false) {
+            found.push(format!("{f}: {l}"));
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "internal labels or outside paths:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_label_check_sees_a_ticket_and_an_outside_path() {
+    let ticket = ["Iss", "ue 12's targets"].concat();
+    assert_eq!(labels_in(&ticket, true).len(), 1);
+    assert_eq!(labels_in(&["(iss", "ue #4)"].concat(), true).len(), 1);
+    assert_eq!(
+        labels_in(&["the iss", "ue's words"].concat(), true).len(),
+        1
+    );
+    assert_eq!(labels_in("an issue of the rig", true), Vec::<String>::new());
+    let data = ["../sh", "ared/data/x.csv"].concat();
+    assert_eq!(labels_in(&data, true), Vec::<String>::new());
+    assert_eq!(labels_in(&data, false).len(), 1);
+    assert_eq!(labels_in(&["see /wo", "rk/notes"].concat(), true).len(), 1);
 }

@@ -25,7 +25,12 @@ pub fn significant(v: f64, digits: usize) -> String {
 /// `max_decimals`, as make the printed values differ, so a sentence saying
 /// one is below the other does not print two equal numbers. The flag is
 /// false when they agree to `max_decimals`.
-pub fn distinct(a: f64, b: f64, decimals: usize, max_decimals: usize) -> (String, String, bool) {
+pub(crate) fn distinct(
+    a: f64,
+    b: f64,
+    decimals: usize,
+    max_decimals: usize,
+) -> (String, String, bool) {
     let mut d = decimals;
     loop {
         let (sa, sb) = (fixed(a, d), fixed(b, d));

@@ -65,7 +65,7 @@ impl ParamError {
         }
     }
     /// An error for `key` whose value is not a number (a name, a table).
-    pub fn without_value(key: &str, reason: &str) -> Self {
+    pub(crate) fn without_value(key: &str, reason: &str) -> Self {
         Self {
             key: key.to_string(),
             value: ParamValue::NotANumber,
@@ -95,7 +95,7 @@ impl ParamError {
         }
     }
     /// Ok when `v` is finite and ≥ 0.
-    pub fn non_negative(key: &str, v: f64) -> Result<(), Self> {
+    pub(crate) fn non_negative(key: &str, v: f64) -> Result<(), Self> {
         Self::finite(key, v)?;
         if v >= 0.0 {
             Ok(())
@@ -104,7 +104,7 @@ impl ParamError {
         }
     }
     /// Ok when `lo < v ≤ hi`.
-    pub fn in_range(key: &str, v: f64, lo: f64, hi: f64, why: &str) -> Result<(), Self> {
+    pub(crate) fn in_range(key: &str, v: f64, lo: f64, hi: f64, why: &str) -> Result<(), Self> {
         Self::finite(key, v)?;
         if v > lo && v <= hi {
             Ok(())

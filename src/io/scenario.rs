@@ -147,7 +147,7 @@ fn default_start() -> f64 {
 }
 /// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
 /// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
-pub const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
+pub(crate) const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
 
 fn default_rise() -> f64 {
     0.1
@@ -279,7 +279,7 @@ pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError>
 
 /// Validates and resolves a parsed scenario whose text is `src` (other file
 /// kinds that embed a scenario's tables use it too).
-pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
+pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
     let (model, tyre_files) = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
     check_road(src, &f.road)?;

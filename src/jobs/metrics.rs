@@ -89,7 +89,7 @@ impl MeasuredMetricsReport {
 
 /// The metric table: one line per metric, `—` where a response lacks one,
 /// and the notes on filtering, overshoot and settling.
-pub fn metric_lines(m: &StepMetrics) -> Vec<String> {
+pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt =
         |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
     let mut out = vec![

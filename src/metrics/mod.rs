@@ -40,7 +40,7 @@
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
 
-pub mod continuous;
+pub(crate) mod continuous;
 pub mod measured;
 pub mod simulated;
 
@@ -256,7 +256,7 @@ fn total_variance(t: &[f64], a: &[f64], b: &[f64], from: f64, to: f64) -> f64 {
 /// Zero-phase low-pass: a second-order Butterworth section (bilinear
 /// transform, pre-warped) run forward then backward, each pass started in
 /// the steady state of its first sample so the ends do not ring.
-pub fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
+pub(crate) fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
     let k = (std::f64::consts::PI * cutoff_hz * dt).tan();
     let norm = 1.0 / (1.0 + std::f64::consts::SQRT_2 * k + k * k);
     let b0 = k * k * norm;
@@ -282,7 +282,7 @@ pub fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
 }
 
 /// Step-steer metrics of one record.
-pub fn step_metrics(
+pub(crate) fn step_metrics(
     t: &[f64],
     steer: &[f64],
     yaw_rate: &[f64],

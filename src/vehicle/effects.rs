@@ -118,7 +118,7 @@ impl CombinedSlip {
     /// `mass` at longitudinal acceleration `ax`; None when the tyres carry
     /// none of it (`force_share` 0), so that the model takes its pure-slip
     /// path bit for bit.
-    pub fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
+    pub(crate) fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
         if self.force_share == 0.0 {
             return None;
         }
@@ -251,13 +251,13 @@ impl Effects {
 
     /// True when body roll feeds back into the forces (roll steer or roll
     /// camber).
-    pub fn uses_roll(&self) -> bool {
+    pub(crate) fn uses_roll(&self) -> bool {
         self.roll_steer != [0.0; 2] || self.roll_camber != [0.0; 2]
     }
 
     /// True when the model needs states beyond (β, r): lagged slip angles
     /// or body roll.
-    pub fn extra_states(&self) -> bool {
+    pub(crate) fn extra_states(&self) -> bool {
         self.lagged() || self.uses_roll()
     }
 }

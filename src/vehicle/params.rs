@@ -62,13 +62,13 @@ impl Vehicle {
     }
 
     /// Static axle loads (front, rear), N.
-    pub fn static_axle_loads(&self) -> (f64, f64) {
+    pub(crate) fn static_axle_loads(&self) -> (f64, f64) {
         let w = self.mass * G / self.wheelbase();
         (w * self.b, w * self.a)
     }
 
     /// Front share of lateral load transfer χ.
-    pub fn front_transfer_share(&self) -> f64 {
+    pub(crate) fn front_transfer_share(&self) -> f64 {
         self.load_transfer_front_share
             .unwrap_or(self.b / self.wheelbase())
     }

@@ -59,7 +59,7 @@ pub struct Options {
 impl Options {
     /// The tyre file written: `out`, else `out/<data stem>_<model>.toml`
     /// (`.tir` for the Magic Formula).
-    pub fn output_path(&self) -> PathBuf {
+    pub(crate) fn output_path(&self) -> PathBuf {
         let ext = if self.model.swarm_model().is_some() {
             "toml"
         } else {

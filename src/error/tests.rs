@@ -83,9 +83,38 @@ fn a_vehicle_with_a_negative_height_is_a_param_error() {
         Error::Param(p) => {
             assert_eq!(p.key, "cg_height");
             assert_eq!(p.value.number(), Some(-0.1));
+            assert_eq!(p.reason, ParamReason::Negative);
         }
         other => panic!("not a parameter error: {other:?}"),
     }
+}
+
+#[test]
+fn a_parameter_error_says_why_by_its_kind() {
+    let v = Vehicle {
+        yaw_inertia: 2500.0 * 1000.0,
+        ..Vehicle::compact_sedan()
+    };
+    let e = v.validate().unwrap_err();
+    assert_eq!(e.key, "yaw_inertia");
+    let ParamReason::DynamicIndex { index, lo, hi } = e.reason else {
+        panic!("not a dynamic index: {e:?}");
+    };
+    assert!(index > hi && lo < hi, "{index} outside {lo}–{hi}");
+    let e = ParamError::in_range("step", 0.2, 0.0, 0.05, Limit::OutputStep).unwrap_err();
+    assert_eq!(
+        e.reason,
+        ParamReason::OutOfRange {
+            lo: 0.0,
+            hi: 0.05,
+            why: Limit::OutputStep
+        }
+    );
+    // The message is built from the kind, with the range's ends.
+    assert_eq!(
+        e.to_string(),
+        "`step` = 0.2: must lie in (0, 0.05]: rows (and RK4 steps) more than 50 ms apart miss the yaw mode"
+    );
 }
 
 #[test]

@@ -6,7 +6,7 @@
 //! Units: SI, rad.
 
 use super::toml_file::{param_error, TomlSource};
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, ParamError, ParamReason};
 use crate::tyre::Tyre;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -36,8 +36,9 @@ pub(crate) fn apply_tyre_mode(
 ) -> Result<(), InputError> {
     let Some(code) = mode else { return Ok(()) };
     for t in tyres {
-        super::tir::set_tyre_mode(t, code)
-            .map_err(|why| src.value_error(&ParamError::without_value(key, &why.to_string())))?;
+        super::tir::set_tyre_mode(t, code).map_err(|why| {
+            src.value_error(&ParamError::without_value(key, ParamReason::Mode(why)))
+        })?;
     }
     Ok(())
 }

@@ -23,7 +23,7 @@
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
 use super::{Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
-use crate::error::ParamError;
+use crate::error::{ParamError, ParamReason};
 use serde::{Deserialize, Serialize};
 
 /// Which coefficient numbering a PAC89 file uses.
@@ -196,9 +196,7 @@ impl Pac89 {
         if self.form != Pac89Form::AdamsPac89 {
             return Err(ParamError::without_value(
                 "form",
-                "the file uses the 1987 paper's coefficient numbering; this crate implements \
-                 the Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): convert the file and \
-                 set form = \"adams-pac89\"",
+                ParamReason::Pac89PaperNumbering,
             ));
         }
         for (i, v) in self.a.iter().enumerate() {
@@ -206,11 +204,7 @@ impl Pac89 {
         }
         ParamError::positive("a[0]", self.a[0])?;
         if self.a[4] == 0.0 {
-            return Err(ParamError::new(
-                "a[4]",
-                0.0,
-                "a4 divides the load and must not be zero",
-            ));
+            return Err(ParamError::new("a[4]", 0.0, ParamReason::ZeroA4));
         }
         for (i, v) in self.b.iter().flatten().enumerate() {
             ParamError::finite(&format!("b[{i}]"), *v)?;

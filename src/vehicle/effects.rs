@@ -190,7 +190,7 @@ impl Default for Effects {
 impl Effects {
     /// Checks the values for physical sense.
     pub fn validate(&self) -> Result<(), crate::error::ParamError> {
-        use crate::error::ParamError;
+        use crate::error::{ParamError, ParamReason};
         ParamError::non_negative("aero_load[0]", self.aero_load[0])?;
         ParamError::non_negative("aero_load[1]", self.aero_load[1])?;
         ParamError::in_range(
@@ -198,7 +198,7 @@ impl Effects {
             self.road_bank.abs(),
             -1.0,
             0.5,
-            "a bank steeper than 0.5 rad (29°) is not a road",
+            crate::error::Limit::RoadBank,
         )?;
         ParamError::finite("bank_profile_scale", self.bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", self.relaxation_length)?;
@@ -222,8 +222,9 @@ impl Effects {
                 ("brake_front_share", c.brake_front_share),
             ] {
                 if !(0.0..=1.0).contains(&v) {
-                    return Err(ParamError::new(key, v, "a share of the force: 0 to 1")
-                        .within("combined_slip"));
+                    return Err(
+                        ParamError::new(key, v, ParamReason::ForceShare).within("combined_slip")
+                    );
                 }
             }
             ParamError::non_negative("force_share", c.force_share)

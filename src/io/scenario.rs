@@ -255,6 +255,9 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
     let path = src.path.as_path();
     let (model, tyre_files) = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
     check_road(src, &f.road)?;
+    f.metrics
+        .validate()
+        .map_err(|e| param_error(src, Some("metrics"), e))?;
     let method = f
         .simulation
         .method()

@@ -2,7 +2,7 @@
 //! first ([`crate::metrics::measured`]); and the metric table that
 //! `simulate` prints too.
 
-use crate::error::Error;
+use crate::error::{Error, ParamError};
 use crate::io::read_run;
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
@@ -41,12 +41,15 @@ pub struct MeasuredMetricsReport {
     pub t_end: f64,
 }
 
-/// Reads, cleans and measures the run `path`.
+/// Reads, cleans and measures the run `path`, after checking the settings
+/// ([`MetricSettings::validate`]) and that `min_speed` (m/s) is finite.
 pub fn run(
     path: &Path,
     settings: &MetricSettings,
     min_speed: f64,
 ) -> Result<MeasuredMetricsReport, Error> {
+    settings.validate()?;
+    ParamError::finite("min_speed", min_speed)?;
     let m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),

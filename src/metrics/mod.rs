@@ -47,7 +47,11 @@ pub mod simulated;
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
 pub use simulated::{simulated_step_metrics, DenseRecord};
 
-/// Settings of the metric computation.
+/// Settings of the metric computation. The fields are public for struct
+/// literals; [`MetricSettings::validate`] is the check every entry runs
+/// before it measures (the scenario and study readers on the `[metrics]`
+/// table, [`crate::jobs::metrics::run`] on its argument), so no job measures
+/// with a window that is not positive or a filter that is not a frequency.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MetricSettings {
@@ -91,6 +95,23 @@ fn default_steady() -> f64 {
 }
 fn one() -> f64 {
     1.0
+}
+
+impl MetricSettings {
+    /// Checks every value: windows (s) and a cut-off (Hz) positive, weights
+    /// finite and non-negative; the error names the key.
+    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
+        use crate::error::ParamError;
+        ParamError::positive("pre_window", self.pre_window)?;
+        ParamError::positive("steady_window", self.steady_window)?;
+        ParamError::positive("variance_window", self.variance_window)?;
+        ParamError::non_negative("e1", self.e1)?;
+        ParamError::non_negative("e2", self.e2)?;
+        if let Some(f) = self.filter_hz {
+            ParamError::positive("filter_hz", f)?;
+        }
+        Ok(())
+    }
 }
 
 impl Default for MetricSettings {

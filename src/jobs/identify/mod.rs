@@ -17,7 +17,7 @@ mod choices;
 mod figures;
 mod staged;
 
-use crate::error::{Error, FitError, OutputError};
+use crate::error::{Error, FitError, OutputError, ParamError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted};
 use crate::tyre::{ModelName, Pac89, Tyre};
@@ -27,7 +27,10 @@ use staged::run_staged;
 pub use staged::StagedJob;
 use std::path::PathBuf;
 
-/// What `identify` is asked to do.
+/// What `identify` is asked to do. The fields are public for struct
+/// literals (the command line, Python); [`run`] checks them first
+/// ([`Options::validate`]), so no fit starts from a bin or a level that is
+/// not a number.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Rig data file.
@@ -57,6 +60,22 @@ pub struct Options {
 }
 
 impl Options {
+    /// Checks the numbers: the bins (degrees, slip ratio) finite and
+    /// non-negative, a pressure (Pa) positive, a camber (rad) finite; the
+    /// error names the option as the command line and Python do
+    /// (`bin_deg`, `bin_kappa`, `pressure`, `camber`).
+    pub fn validate(&self) -> Result<(), ParamError> {
+        ParamError::non_negative("bin_deg", self.alpha_bin_deg)?;
+        ParamError::non_negative("bin_kappa", self.kappa_bin)?;
+        if let Some(p) = self.pressure {
+            ParamError::positive("pressure", p)?;
+        }
+        if let Some(c) = self.camber {
+            ParamError::finite("camber", c)?;
+        }
+        Ok(())
+    }
+
     /// The tyre file written: `out`, else `out/<data stem>_<model>.toml`
     /// (`.tir` for the Magic Formula).
     pub(crate) fn output_path(&self) -> PathBuf {
@@ -233,10 +252,12 @@ fn outputs(o: &Options, figure: bool) -> Vec<PathBuf> {
     files
 }
 
-/// Runs `identify`: reads and groups the data, fits, and returns the report
-/// (nothing is written: [`IdentifyReport::write`]). An output that is one
-/// of the inputs is refused before anything is fitted.
+/// Runs `identify`: checks the options, reads and groups the data, fits,
+/// and returns the report (nothing is written: [`IdentifyReport::write`]).
+/// An output that is one of the inputs is refused before anything is
+/// fitted.
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
+    o.validate()?;
     match o.model.swarm_model() {
         Some(model) => run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r))),
         None => run_staged(o).map(|r| IdentifyReport::Staged(Box::new(r))),

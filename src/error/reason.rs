@@ -112,14 +112,6 @@ pub enum ParamReason {
     /// An empty list of candidate effects.
     #[error("an empty list: name at least one effect, or leave the key out for the whole library")]
     NoEffects,
-    /// A candidate effect that is not in the library.
-    #[error("unknown effect `{given}`: one of {}", known.join(", "))]
-    UnknownEffect {
-        /// The name given.
-        given: String,
-        /// The library's effects.
-        known: Vec<&'static str>,
-    },
     /// A candidate effect listed twice.
     #[error("`{name}` is listed twice: each candidate is fitted once")]
     EffectTwice {
@@ -130,12 +122,13 @@ pub enum ParamReason {
     #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
     TyreSource,
     /// A name that is no member of its closed set (a model, a unit, a
-    /// metric).
+    /// metric, an effect): [`OptionsError::UnknownName`]. Boxed, as every
+    /// large payload here, so that an error stays small to return.
     #[error(transparent)]
-    Name(OptionsError),
+    Name(Box<OptionsError>),
     /// An MFeval `useMode` code that cannot be used.
     #[error(transparent)]
-    Mode(ModeError),
+    Mode(Box<ModeError>),
     /// Inverse queries without a stiffness map to invert.
     #[error("inverse queries need a [stiffness] map with at least 2 × 2 values")]
     InverseWithoutMap,

@@ -37,7 +37,10 @@ pub(crate) fn apply_tyre_mode(
     let Some(code) = mode else { return Ok(()) };
     for t in tyres {
         super::tir::set_tyre_mode(t, code).map_err(|why| {
-            src.value_error(&ParamError::without_value(key, ParamReason::Mode(why)))
+            src.value_error(&ParamError::without_value(
+                key,
+                ParamReason::Mode(Box::new(why)),
+            ))
         })?;
     }
     Ok(())

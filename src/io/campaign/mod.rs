@@ -33,7 +33,9 @@ use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road}
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
-use crate::error::{named, InputError, InputProblem, Limit, NameKind, ParamError, ParamReason};
+use crate::error::{
+    named, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError, ParamReason,
+};
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
@@ -217,10 +219,11 @@ fn candidate_effects(
         let kind = EffectKind::from_name(n).ok_or_else(|| {
             src.value_error(&ParamError::without_value(
                 "diagnose.effects",
-                ParamReason::UnknownEffect {
+                ParamReason::Name(Box::new(OptionsError::UnknownName {
+                    what: NameKind::Effect,
                     given: n.clone(),
                     known: EffectKind::ALL.iter().map(|e| e.name()).collect(),
-                },
+                })),
             ))
         })?;
         if kinds.contains(&kind) {
@@ -284,7 +287,7 @@ fn base_tyres(
     .map_err(|why| {
         src.value_error(&ParamError::without_value(
             "tyres.model",
-            ParamReason::Name(why),
+            ParamReason::Name(Box::new(why)),
         ))
     })?;
     let data = read_rig(&rig)?;

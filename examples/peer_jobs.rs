@@ -26,7 +26,7 @@ use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitSettings};
 use handling::io::sweep::load_sweep;
 use handling::manoeuvre::{Manoeuvre, StepSteer};
-use handling::optim::pso::Pso;
+use handling::optim::Pso;
 use handling::sim::{Integrator, Method, Tolerances};
 use handling::tyre::{Pac89, Tyre};
 use handling::vehicle::{Kinematics, State, Vehicle, VehicleModel};

@@ -25,6 +25,7 @@
 //! | the commands of the binary, each one function with a typed report | [`jobs`] |
 //! | the library's one error type | [`error`] |
 //! | physical constants (standard gravity) | [`constants`] |
+//! | numbers as messages print them | [`format`] |
 //!
 //! # References
 //! - Zhang Jiaxu, Li Jing (2017): UniTire parameter identification by a
@@ -47,6 +48,7 @@ pub mod constants;
 pub mod diagnose;
 pub mod equilibria;
 pub mod error;
+pub mod format;
 pub mod identify;
 pub mod io;
 pub mod jobs;

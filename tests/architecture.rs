@@ -1,5 +1,7 @@
 //! The shape of the source tree, checked: no import cycle between files, no
-//! source file over the size a reader can hold, no internal labels.
+//! module importing one of its own or a higher layer (the order is
+//! [`LAYERS`]), no source file over the size a reader can hold, and no
+//! internal label or path outside the repository in the project's text.
 //!
 //! The import graph is read from the text of `src/`: every `crate::`,
 //! `super::` and `self::` path (in `use` items, grouped or not, and inline in
@@ -7,7 +9,9 @@
 //! goes through a re-export (`pub use child::Item` in a parent) is followed to
 //! where the item lives, so a parent that only re-exports its children and a
 //! child that uses its parent's own items are not mistaken for a cycle; a
-//! parent's `mod child;` declaration is not an import.
+//! parent's `mod child;` declaration is not an import. The layer check reads
+//! the library's own code only: test modules and `#[cfg(test)]` items may
+//! use anything.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
@@ -234,11 +238,35 @@ struct Tree {
 
 impl Tree {
     fn read(root: &Path) -> Tree {
-        let files = modules(root);
+        Tree::read_with(root, false)
+    }
+
+    /// The tree of the library's own code: test modules and `#[cfg(test)]`
+    /// items left out.
+    fn library(root: &Path) -> Tree {
+        Tree::read_with(root, true)
+    }
+
+    fn read_with(root: &Path, library_only: bool) -> Tree {
+        let mut files = modules(root);
+        if library_only {
+            let mut test_modules = Vec::new();
+            for (m, path) in &files {
+                for child in test_children(&code_of(&fs::read_to_string(path).unwrap())) {
+                    let mut t = m.clone();
+                    t.push(child);
+                    test_modules.push(t);
+                }
+            }
+            files.retain(|m, _| !test_modules.iter().any(|t| m.starts_with(t)));
+        }
         let mut code = BTreeMap::new();
         let mut reexports = BTreeMap::new();
         for (m, path) in &files {
-            let c = code_of(&fs::read_to_string(path).unwrap());
+            let mut c = code_of(&fs::read_to_string(path).unwrap());
+            if library_only {
+                c = without_tests(&c);
+            }
             let mut map = BTreeMap::new();
             for (public, paths) in use_items(&c) {
                 if !public {
@@ -411,4 +439,295 @@ fn source_files_stay_readable() {
         "files over 600 lines:\n{}",
         long.join("\n")
     );
+}
+
+/// The modules a file declares under `#[cfg(test)]` (`mod tests;`).
+fn test_children(code: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = code;
+    while let Some(at) = rest.find("#[cfg(test)]") {
+        rest = &rest[at + "#[cfg(test)]".len()..];
+        let mut item = rest.trim_start();
+        // Further attributes of the same item.
+        while item.starts_with("#[") {
+            item = item[item.find(']').map_or(item.len(), |e| e + 1)..].trim_start();
+        }
+        let item = item
+            .strip_prefix("pub(crate)")
+            .or_else(|| item.strip_prefix("pub"))
+            .unwrap_or(item)
+            .trim_start();
+        if let Some(decl) = item.strip_prefix("mod ") {
+            let name: String = decl
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            if decl.trim_start()[name.len()..]
+                .trim_start()
+                .starts_with(';')
+            {
+                out.push(name);
+            }
+        }
+    }
+    out
+}
+
+/// Code without its `#[cfg(test)]` items (a `mod tests { … }` block, a
+/// `use` or a function): tests may use anything, layering is about what the
+/// library's own code depends on.
+fn without_tests(code: &str) -> String {
+    let mut out = String::with_capacity(code.len());
+    let mut rest = code;
+    while let Some(at) = rest.find("#[cfg(test)]") {
+        out.push_str(&rest[..at]);
+        let tail = &rest[at..];
+        // The item ends at its first `;` before any `{`, or at the `}` that
+        // closes its first `{`.
+        let (semi, brace) = (tail.find(';'), tail.find('{'));
+        let end = match (semi, brace) {
+            (Some(s), Some(b)) if s < b => s + 1,
+            (Some(s), None) => s + 1,
+            (_, Some(b)) => {
+                let mut depth = 0;
+                let mut end = tail.len();
+                for (i, c) in tail[b..].char_indices() {
+                    match c {
+                        '{' => depth += 1,
+                        '}' => {
+                            depth -= 1;
+                            if depth == 0 {
+                                end = b + i + 1;
+                                break;
+                            }
+                        }
+                        _ => {}
+                    }
+                }
+                end
+            }
+            (None, None) => tail.len(),
+        };
+        rest = &tail[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The crate's layers, bottom first: a module may import only modules of a
+/// lower layer (none of its own layer, none above). `cli` is the binary; the
+/// library cannot name it. The same list, with what each layer owns, is in
+/// the book's architecture chapter (`docs/src/architecture.md`).
+const LAYERS: &[&[&str]] = &[
+    &["constants", "format"],
+    &["error"],
+    &["tyre", "optim", "manoeuvre", "report"],
+    &["vehicle", "measured"],
+    &["sim"],
+    &["metrics", "equilibria", "identify"],
+    &["study", "diagnose"],
+    &["io"],
+    &["jobs"],
+    &["cli"],
+];
+
+fn layer_of(layers: &[&[&str]], module: &str) -> Option<usize> {
+    layers.iter().position(|l| l.contains(&module))
+}
+
+/// Every file-level import from a top-level module into one of the same or a
+/// higher layer, as `from → to (file → file)`.
+fn layer_violations(
+    layers: &[&[&str]],
+    edges: &BTreeMap<Vec<String>, BTreeSet<Vec<String>>>,
+) -> Vec<String> {
+    let mut out = Vec::new();
+    for (from, targets) in edges {
+        let Some(a) = from.first() else { continue };
+        for to in targets {
+            let b = &to[0];
+            if a == b {
+                continue;
+            }
+            let (la, lb) = (layer_of(layers, a), layer_of(layers, b));
+            if la.zip(lb).is_none_or(|(la, lb)| lb >= la) {
+                out.push(format!("{a} → {b} ({} → {})", name(from), name(to)));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_module_has_a_layer() {
+    let tops: BTreeSet<String> = modules(&src())
+        .keys()
+        .filter_map(|m| m.first().cloned())
+        .collect();
+    let declared: Vec<&str> = LAYERS.iter().flat_map(|l| l.iter().copied()).collect();
+    let missing: Vec<&String> = tops
+        .iter()
+        .filter(|t| !declared.contains(&t.as_str()))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "top-level modules without a layer in LAYERS: {missing:?}"
+    );
+    let gone: Vec<&&str> = declared.iter().filter(|d| !tops.contains(**d)).collect();
+    assert!(
+        gone.is_empty(),
+        "LAYERS names modules that do not exist: {gone:?}"
+    );
+    let unique: BTreeSet<&&str> = declared.iter().collect();
+    assert_eq!(unique.len(), declared.len(), "a module in two layers");
+}
+
+#[test]
+fn no_module_imports_one_above_it() {
+    let violations = layer_violations(LAYERS, &Tree::library(&src()).edges());
+    assert!(
+        violations.is_empty(),
+        "{} imports against the layer order (a module may import only lower layers):\n{}",
+        violations.len(),
+        violations.join("\n")
+    );
+}
+
+#[test]
+fn the_layer_check_sees_an_upward_import_and_skips_tests() {
+    let m = |s: &str| s.split("::").map(String::from).collect::<Vec<_>>();
+    let mut edges = BTreeMap::new();
+    edges.insert(m("tyre::gim"), BTreeSet::from([m("error::param")]));
+    edges.insert(
+        m("error::problem"),
+        BTreeSet::from([m("identify::grouping")]),
+    );
+    edges.insert(m("sim"), BTreeSet::from([m("sim::ode"), m("metrics")]));
+    edges.insert(m("vehicle"), BTreeSet::from([m("measured")]));
+    assert_eq!(
+        layer_violations(LAYERS, &edges),
+        vec![
+            "error → identify (error::problem → identify::grouping)",
+            "sim → metrics (sim → metrics)",
+            "vehicle → measured (vehicle → measured)",
+        ]
+    );
+    let code = code_of(
+        "use crate::a;\n#[cfg(test)]\nmod tests {\n use crate::b::{c, d};\n fn f() {}\n}\n\
+         #[cfg(test)]\n#[path = \"x.rs\"]\nmod fixtures;\n#[cfg(test)]\nuse crate::e;\nfn g() {}\n",
+    );
+    assert_eq!(test_children(&code), vec!["fixtures".to_string()]);
+    let kept = without_tests(&code);
+    assert_eq!(
+        use_items(&kept),
+        vec![(false, vec!["crate::a".to_string()])],
+        "{kept}"
+    );
+    assert!(kept.contains("fn g()"), "{kept}");
+}
+
+/// Every file under `dir` (recursively) whose name ends in one of `exts`.
+fn files_under(dir: &Path, exts: &[&str], out: &mut Vec<PathBuf>) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if path.is_dir() {
+            // Built or installed trees are not the project's text.
+            if !["target", "book", ".venv", "node_modules"].contains(&name.as_str())
+                && !name.starts_with('.')
+            {
+                files_under(&path, exts, out);
+            }
+        } else if exts.iter().any(|e| name.ends_with(e)) {
+            out.push(path);
+        }
+    }
+}
+
+/// The internal labels and outside paths in `text`: a ticket's number or
+/// possessive (the tracker's word followed by a number or by 's), a path
+/// into the machine the project was built on, and (where
+/// `data_paths_allowed` is false) the data folder beside the checkout. The
+/// patterns are assembled from pieces so that this file passes its own
+/// check.
+fn labels_in(text: &str, data_paths_allowed: bool) -> Vec<String> {
+    let lower = text.to_lowercase();
+    let mut out = Vec::new();
+    let ticket = ["iss", "ue"].concat();
+    let mut from = 0;
+    while let Some(i) = lower[from..].find(&ticket) {
+        let at = from + i;
+        let after = &lower[at + ticket.len()..];
+        let numbered = after
+            .trim_start_matches([' ', '#'])
+            .starts_with(|c: char| c.is_ascii_digit());
+        if numbered || after.starts_with("'s") {
+            out.push(text[at..(at + 12).min(text.len())].to_string());
+        }
+        from = at + ticket.len();
+    }
+    let mut outside = vec![["/wo", "rk/"].concat()];
+    if !data_paths_allowed {
+        outside.push(["../sh", "ared"].concat());
+    }
+    for p in outside {
+        if lower.contains(&p) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+#[test]
+fn no_internal_labels_or_outside_paths() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut found = Vec::new();
+    for (dir, exts) in [
+        ("src", &["rs"][..]),
+        ("tests", &["rs"]),
+        ("benches", &["rs"]),
+        ("scenarios", &["toml", "md"]),
+        ("docs", &["md"]),
+        ("python", &["rs", "py", "md", "toml"]),
+    ] {
+        let mut files = Vec::new();
+        files_under(&root.join(dir), exts, &mut files);
+        for f in files {
+            // The tests read the public data sets beside the checkout.
+            let data_paths_allowed = dir == "tests";
+            for l in labels_in(&fs::read_to_string(&f).unwrap(), data_paths_allowed) {
+                found.push(format!("{}: {l}", f.strip_prefix(root).unwrap().display()));
+            }
+        }
+    }
+    for f in ["README.md", "CHANGELOG.md"] {
+        for l in labels_in(&fs::read_to_string(root.join(f)).unwrap(), false) {
+            found.push(format!("{f}: {l}"));
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "internal labels or outside paths:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_label_check_sees_a_ticket_and_an_outside_path() {
+    let ticket = ["Iss", "ue 12's targets"].concat();
+    assert_eq!(labels_in(&ticket, true).len(), 1);
+    assert_eq!(labels_in(&["(iss", "ue #4)"].concat(), true).len(), 1);
+    assert_eq!(
+        labels_in(&["the iss", "ue's words"].concat(), true).len(),
+        1
+    );
+    assert_eq!(labels_in("an issue of the rig", true), Vec::<String>::new());
+    let data = ["../sh", "ared/data/x.csv"].concat();
+    assert_eq!(labels_in(&data, true), Vec::<String>::new());
+    assert_eq!(labels_in(&data, false).len(), 1);
+    assert_eq!(labels_in(&["see /wo", "rk/notes"].concat(), true).len(), 1);
 }

@@ -135,7 +135,7 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                         .number()
                         .map_or_else(|| py.None(), |v| py_obj(py, v)),
                 ),
-                ("reason", text(&p.reason)),
+                ("reason", text(&p.reason.to_string())),
             ],
         ),
         Error::Input(i) => {
@@ -146,7 +146,7 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                     p.value
                         .number()
                         .map_or_else(|| py.None(), |v| py_obj(py, v)),
-                    text(&p.reason),
+                    text(&p.reason.to_string()),
                 ),
                 LibInputError::Key { key, detail, .. } => (text(key), py.None(), text(detail)),
                 LibInputError::Invalid { problem, .. } => {

@@ -324,7 +324,7 @@ fn hopf(
 
 /// Every fold and Hopf point along a line of conditions ordered by `axis`,
 /// given the exact equilibria at each (all of them, not box-limited).
-pub fn locate(
+pub(crate) fn locate(
     model: &VehicleModel,
     axis: Axis,
     line: &[(Condition, Vec<Equilibrium>)],

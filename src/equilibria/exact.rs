@@ -30,10 +30,10 @@ const CELLS: usize = 500;
 
 /// Width of one scan cell in rear slip angle, rad: a continuum's true ends lie
 /// within one cell of the scanned ones.
-pub const CELL: f64 = 2.0 * ALPHA_MAX / CELLS as f64;
+pub(crate) const CELL: f64 = 2.0 * ALPHA_MAX / CELLS as f64;
 
 /// Brent's method for a root of `f` in [a, b] with f(a)·f(b) ≤ 0.
-pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
+pub(crate) fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
     let (mut fa, mut fb) = (f(a), f(b));
     if fa == 0.0 {
         return a;
@@ -294,7 +294,7 @@ impl<'a> Reduced<'a> {
 
     /// The simple roots only: the count that changes by exactly two across a
     /// fold (a double root counted once would split the change in two).
-    pub fn simple_roots(&self) -> Vec<f64> {
+    pub(crate) fn simple_roots(&self) -> Vec<f64> {
         self.roots_with(false)
     }
 
@@ -366,7 +366,7 @@ impl<'a> Reduced<'a> {
     }
 
     /// Every root (double roots included) and every continuum, from one scan.
-    pub fn analyse(&self) -> (Vec<f64>, Vec<(f64, f64)>) {
+    pub(crate) fn analyse(&self) -> (Vec<f64>, Vec<(f64, f64)>) {
         let (a, h) = self.scan();
         let flat = self.flat(&h);
         (
@@ -465,7 +465,7 @@ pub fn solve(model: &VehicleModel, c: &Condition) -> Vec<Equilibrium> {
 }
 
 /// The isolated equilibria and the continua of a condition from one scan.
-pub fn solve_with_continua(
+pub(crate) fn solve_with_continua(
     model: &VehicleModel,
     c: &Condition,
 ) -> (Vec<Equilibrium>, Vec<Continuum>) {
@@ -476,7 +476,7 @@ pub fn solve_with_continua(
 /// rear half of the scan of the last condition, reused while the speed and
 /// friction stay the same (the same answers, to the bit, at a fraction of
 /// the rear axle's evaluations).
-pub fn solve_with_continua_along(
+pub(crate) fn solve_with_continua_along(
     model: &VehicleModel,
     c: &Condition,
     rear: &mut Option<RearScan>,

@@ -17,11 +17,11 @@
 //! figures of the equilibria job draw.
 //! Units: rad, rad/s, m/s; ISO signs (positive steer turns left).
 
-pub mod bifurcation;
+pub(crate) mod bifurcation;
 pub mod exact;
-pub mod phase;
+pub(crate) mod phase;
 pub mod pso;
-pub mod stability;
+pub(crate) mod stability;
 pub mod sweep;
 
 use crate::vehicle::{Inputs, LoadTransferSeed, State, VehicleModel};
@@ -110,7 +110,12 @@ pub fn residual(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [f64; 2] {
 
 /// The right-hand side with the load-transfer loop solved to `tolerance`
 /// (the PSO fitness needs no more than the simulation's 1e-9).
-pub fn residual_to(model: &VehicleModel, c: &Condition, x: [f64; 2], tolerance: f64) -> [f64; 2] {
+pub(crate) fn residual_to(
+    model: &VehicleModel,
+    c: &Condition,
+    x: [f64; 2],
+    tolerance: f64,
+) -> [f64; 2] {
     let ay = c.speed * x[1] + model.bank_acceleration();
     let mut seed = LoadTransferSeed {
         ay: [ay; 3],
@@ -122,7 +127,7 @@ pub fn residual_to(model: &VehicleModel, c: &Condition, x: [f64; 2], tolerance: 
 /// The right-hand side with the load-transfer solve started from `seed`
 /// (and its solution left there): a point next to one just evaluated (a
 /// finite-difference neighbour) then costs one or two tyre-set evaluations.
-pub fn residual_seeded(
+pub(crate) fn residual_seeded(
     model: &VehicleModel,
     c: &Condition,
     x: [f64; 2],
@@ -150,7 +155,11 @@ pub fn residual_seeded(
 /// equilibrium the loop's solution is ay = u·r. Away from the roots it
 /// differs from [`residual`], which is why only the swarm's fitness uses
 /// it: polish, indices and the winding certificate use the model itself.
-pub fn residual_at_equilibrium_loads(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [f64; 2] {
+pub(crate) fn residual_at_equilibrium_loads(
+    model: &VehicleModel,
+    c: &Condition,
+    x: [f64; 2],
+) -> [f64; 2] {
     let ay = c.speed.max(crate::vehicle::MIN_SPEED) * x[1] + model.bank_acceleration();
     let mut seed = LoadTransferSeed {
         ay: [ay; 3],
@@ -175,7 +184,7 @@ pub fn polish(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64;
 /// ([`VehicleModel::equilibrium_residual`]: the same roots at a fraction of
 /// the cost) and then confirmed on the model, which at a root of the former
 /// usually takes one evaluation. `None` when either does not converge.
-pub fn polish_fast(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64; 2]> {
+pub(crate) fn polish_fast(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<[f64; 2]> {
     let inputs = c.inputs();
     let f = |x: [f64; 2]| {
         model.equilibrium_residual(
@@ -191,7 +200,7 @@ pub fn polish_fast(model: &VehicleModel, c: &Condition, x0: [f64; 2]) -> Option<
 }
 
 /// An equilibrium record at a point already known to be one.
-pub fn describe(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Equilibrium {
+pub(crate) fn describe(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Equilibrium {
     let r = residual(model, c, x);
     let (_, alpha_rear) = model.slip_angles(
         &State {
@@ -210,7 +219,7 @@ pub fn describe(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Equilibrium
 }
 
 /// Scaled distance between two (β, r) points.
-pub fn distance(a: [f64; 2], b: [f64; 2], scale: [f64; 2]) -> f64 {
+pub(crate) fn distance(a: [f64; 2], b: [f64; 2], scale: [f64; 2]) -> f64 {
     ((a[0] - b[0]) / scale[0]).hypot((a[1] - b[1]) / scale[1])
 }
 

@@ -26,7 +26,7 @@ impl OdeSystem<2> for Autonomous<'_> {
 
 /// RK4 trajectory of the autonomous (β, r) system from `x0`, `dt` signed
 /// (negative integrates backward), stopping outside the box.
-pub fn trajectory(
+pub(crate) fn trajectory(
     model: &VehicleModel,
     c: &Condition,
     bx: &SearchBox,
@@ -66,7 +66,7 @@ fn eigenvector(j: [[f64; 2]; 2], lambda: f64, scale: [f64; 2]) -> [f64; 2] {
 }
 
 /// The centre of cell (`i`, `k`) of an `n` × `n` grid over the box.
-pub fn grid_point(bx: &SearchBox, n: usize, i: usize, k: usize) -> [f64; 2] {
+pub(crate) fn grid_point(bx: &SearchBox, n: usize, i: usize, k: usize) -> [f64; 2] {
     [
         -bx.beta_max + 2.0 * bx.beta_max * (i as f64 + 0.5) / n as f64,
         -bx.yaw_rate_max + 2.0 * bx.yaw_rate_max * (k as f64 + 0.5) / n as f64,
@@ -76,7 +76,7 @@ pub fn grid_point(bx: &SearchBox, n: usize, i: usize, k: usize) -> [f64; 2] {
 /// The vector field on an `n` × `n` grid over the box as arrows (start,
 /// end) of length `0.7/n` in box-scaled units; points where the field is
 /// zero or not finite are left out.
-pub fn vector_field(
+pub(crate) fn vector_field(
     model: &VehicleModel,
     c: &Condition,
     bx: &SearchBox,
@@ -130,7 +130,7 @@ pub struct Separatrix {
 /// every saddle among `eqs`, each branch started 1e-4 of the box along its
 /// eigenvector: per saddle, the stable branches then the unstable ones,
 /// the −1 side first.
-pub fn separatrices(
+pub(crate) fn separatrices(
     model: &VehicleModel,
     c: &Condition,
     bx: &SearchBox,

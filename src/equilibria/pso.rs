@@ -105,7 +105,7 @@ pub struct SearchStats {
 /// first), positive wherever the load-transfer loop has its unique root
 /// (`vehicle`), so every index, and therefore the winding number, is the
 /// model's.
-pub fn winding_number(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Option<i32> {
+pub(crate) fn winding_number(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Option<i32> {
     let (b, r) = (bx.beta_max, bx.yaw_rate_max);
     let corners = [[-b, -r], [b, -r], [b, r], [-b, r], [-b, -r]];
     let scale = bx.scale();

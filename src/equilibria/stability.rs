@@ -25,7 +25,7 @@ pub enum Kind {
 
 impl Kind {
     /// Whether small disturbances decay.
-    pub fn is_stable(self) -> bool {
+    pub(crate) fn is_stable(self) -> bool {
         matches!(self, Kind::StableNode | Kind::StableFocus)
     }
     /// Short name used in CSV files.
@@ -55,7 +55,7 @@ pub struct Stability {
 }
 
 /// Jacobian of (β̇, ṙ) with respect to (β, r) by central differences.
-pub fn jacobian(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [[f64; 2]; 2] {
+pub(crate) fn jacobian(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [[f64; 2]; 2] {
     let mut j = [[0.0; 2]; 2];
     for k in 0..2 {
         let h = 1e-7 * x[k].abs().max(0.01);
@@ -71,7 +71,7 @@ pub fn jacobian(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [[f64; 2]; 
 }
 
 /// Classifies a 2×2 Jacobian.
-pub fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
+pub(crate) fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
     let tr = j[0][0] + j[1][1];
     let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
     let disc = 0.25 * tr * tr - det;
@@ -116,6 +116,6 @@ pub fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
 }
 
 /// Stability of the equilibrium at `x`.
-pub fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
+pub(crate) fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
     from_jacobian(jacobian(model, c, x))
 }

@@ -35,7 +35,7 @@ impl Grid {
         self.len() == 0
     }
     /// Axes with more than one value.
-    pub fn varying(&self) -> Vec<Axis> {
+    pub(crate) fn varying(&self) -> Vec<Axis> {
         [
             (Axis::Steer, &self.steer),
             (Axis::Friction, &self.friction),
@@ -114,7 +114,7 @@ const SAME_POINT: f64 = 1e-6;
 /// margin of one and a half scan cells, as its true ends lie within a cell of
 /// the scanned ones) are points of that curve, not isolated equilibria, and
 /// are left out.
-pub fn cross_check(
+pub(crate) fn cross_check(
     exact: &[Equilibrium],
     pso: &[Equilibrium],
     continua: &[exact::Continuum],
@@ -184,7 +184,7 @@ pub fn run(
 /// The lines of constant friction and speed, as (friction, speed) indices,
 /// speed slowest: the unit of work of a sweep (a line's search is seeded
 /// along it, so lines are independent of each other).
-pub fn grid_lines(grid: &Grid) -> Vec<(usize, usize)> {
+pub(crate) fn grid_lines(grid: &Grid) -> Vec<(usize, usize)> {
     (0..grid.speed.len())
         .flat_map(|s| (0..grid.friction.len()).map(move |f| (f, s)))
         .collect()
@@ -238,7 +238,7 @@ pub fn solve_lines(
 
 /// The sweep from every line's points (in [`grid_lines`] order), with the
 /// bifurcations along every varying axis located when asked.
-pub fn assemble(
+pub(crate) fn assemble(
     model: &VehicleModel,
     grid: &Grid,
     solved: Vec<Vec<PointResult>>,
@@ -270,7 +270,7 @@ pub fn assemble(
 }
 
 /// Point indices of every line along `axis` (the other two fixed).
-pub fn axis_lines(grid: &Grid, axis: Axis) -> Vec<Vec<usize>> {
+pub(crate) fn axis_lines(grid: &Grid, axis: Axis) -> Vec<Vec<usize>> {
     let (ns, nf, nu) = (grid.steer.len(), grid.friction.len(), grid.speed.len());
     let mut out = Vec::new();
     match axis {

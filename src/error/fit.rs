@@ -112,7 +112,7 @@ pub enum FitError {
 
 impl FitError {
     /// A failure of a fit to `data`, of `channel` where named.
-    pub fn in_data(data: &std::path::Path, channel: Option<&'static str>, e: Error) -> Self {
+    pub(crate) fn in_data(data: &std::path::Path, channel: Option<&'static str>, e: Error) -> Self {
         FitError::InData {
             data: data.to_path_buf(),
             channel,

@@ -149,7 +149,7 @@ pub enum InputError {
 
 impl InputError {
     /// A problem at line `line`, column `column` (1-based) of `path`.
-    pub fn problem_at(
+    pub(crate) fn problem_at(
         path: &std::path::Path,
         line: usize,
         column: usize,

@@ -2,27 +2,32 @@
 //! Each failure is a kind with typed fields a caller can match on
 //! ([`Error::kind`] gives the group): the input errors ([`InputError`]: the
 //! file, line and column), the parameter errors ([`ParamError`]: the key,
-//! the value and why it is wrong), the option errors ([`OptionsError`]),
+//! the value and why it is wrong, a [`ParamReason`]), the option errors ([`OptionsError`]),
 //! the fit errors ([`FitError`]), the step-steer metrics' errors
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
 mod fit;
 mod input;
+mod metrics;
 mod options;
 mod output;
 mod param;
 mod problem;
+mod reason;
+mod rig;
 #[cfg(test)]
 mod tests;
 
-pub use crate::metrics::MetricsError;
 pub use fit::{DiagnosisError, FitError};
 pub use input::{CellProblem, InputError, Location};
+pub use metrics::MetricsError;
 pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};
+pub use reason::{Limit, ParamReason};
+pub use rig::Variable;
 use thiserror::Error;
 
 /// The library's error: why a job (a command of the binary, or any public

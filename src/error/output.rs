@@ -148,7 +148,7 @@ impl OutputError {
     }
 
     /// A report for `path` that could not be encoded.
-    pub fn encode(
+    pub(crate) fn encode(
         path: &std::path::Path,
         source: impl std::error::Error + Send + Sync + 'static,
     ) -> Self {

@@ -1,7 +1,9 @@
 //! Parameter errors: a key (dotted, `vehicle.mass`), the value it holds and
-//! why that value is not physical. The checks every reader and constructor
-//! shares (finite, positive, non-negative, in a range) live here.
+//! why that value is not physical (a [`ParamReason`]). The checks every
+//! reader and constructor shares (finite, positive, non-negative, in a
+//! range) live here.
 
+use super::reason::{Limit, ParamReason};
 use thiserror::Error;
 
 /// The value of a [`ParamError`]: a number, or none to show (a name, a
@@ -43,7 +45,7 @@ pub struct ParamError {
     /// The offending value.
     pub value: ParamValue,
     /// Why it is wrong.
-    pub reason: String,
+    pub reason: ParamReason,
 }
 
 impl std::fmt::Display for ParamError {
@@ -57,19 +59,19 @@ impl std::fmt::Display for ParamError {
 
 impl ParamError {
     /// A parameter error for `key` holding the number `value`.
-    pub fn new(key: &str, value: f64, reason: &str) -> Self {
+    pub fn new(key: &str, value: f64, reason: impl Into<ParamReason>) -> Self {
         Self {
             key: key.to_string(),
             value: ParamValue::Number(value),
-            reason: reason.to_string(),
+            reason: reason.into(),
         }
     }
     /// An error for `key` whose value is not a number (a name, a table).
-    pub fn without_value(key: &str, reason: &str) -> Self {
+    pub(crate) fn without_value(key: &str, reason: impl Into<ParamReason>) -> Self {
         Self {
             key: key.to_string(),
             value: ParamValue::NotANumber,
-            reason: reason.to_string(),
+            reason: reason.into(),
         }
     }
     /// Prefixes the key with a table name: `mass` → `vehicle.mass`.
@@ -82,7 +84,7 @@ impl ParamError {
         if v.is_finite() {
             Ok(())
         } else {
-            Err(Self::new(key, v, "must be a finite number"))
+            Err(Self::new(key, v, ParamReason::NotFinite))
         }
     }
     /// Ok when `v` is finite and > 0.
@@ -91,29 +93,25 @@ impl ParamError {
         if v > 0.0 {
             Ok(())
         } else {
-            Err(Self::new(key, v, "must be positive"))
+            Err(Self::new(key, v, ParamReason::NotPositive))
         }
     }
     /// Ok when `v` is finite and ≥ 0.
-    pub fn non_negative(key: &str, v: f64) -> Result<(), Self> {
+    pub(crate) fn non_negative(key: &str, v: f64) -> Result<(), Self> {
         Self::finite(key, v)?;
         if v >= 0.0 {
             Ok(())
         } else {
-            Err(Self::new(key, v, "must not be negative"))
+            Err(Self::new(key, v, ParamReason::Negative))
         }
     }
-    /// Ok when `lo < v ≤ hi`.
-    pub fn in_range(key: &str, v: f64, lo: f64, hi: f64, why: &str) -> Result<(), Self> {
+    /// Ok when `lo < v ≤ hi`; `why` says why the range is what it is.
+    pub(crate) fn in_range(key: &str, v: f64, lo: f64, hi: f64, why: Limit) -> Result<(), Self> {
         Self::finite(key, v)?;
         if v > lo && v <= hi {
             Ok(())
         } else {
-            Err(Self::new(
-                key,
-                v,
-                &format!("must lie in ({lo}, {hi}]: {why}"),
-            ))
+            Err(Self::new(key, v, ParamReason::OutOfRange { lo, hi, why }))
         }
     }
 }

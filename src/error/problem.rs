@@ -8,9 +8,9 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
+use super::rig::Variable;
 use super::ParamError;
-use crate::identify::display::significant;
-use crate::identify::grouping::levels::Variable;
+use crate::format::significant;
 use std::path::PathBuf;
 use thiserror::Error;
 

@@ -83,9 +83,38 @@ fn a_vehicle_with_a_negative_height_is_a_param_error() {
         Error::Param(p) => {
             assert_eq!(p.key, "cg_height");
             assert_eq!(p.value.number(), Some(-0.1));
+            assert_eq!(p.reason, ParamReason::Negative);
         }
         other => panic!("not a parameter error: {other:?}"),
     }
+}
+
+#[test]
+fn a_parameter_error_says_why_by_its_kind() {
+    let v = Vehicle {
+        yaw_inertia: 2500.0 * 1000.0,
+        ..Vehicle::compact_sedan()
+    };
+    let e = v.validate().unwrap_err();
+    assert_eq!(e.key, "yaw_inertia");
+    let ParamReason::DynamicIndex { index, lo, hi } = e.reason else {
+        panic!("not a dynamic index: {e:?}");
+    };
+    assert!(index > hi && lo < hi, "{index} outside {lo}–{hi}");
+    let e = ParamError::in_range("step", 0.2, 0.0, 0.05, Limit::OutputStep).unwrap_err();
+    assert_eq!(
+        e.reason,
+        ParamReason::OutOfRange {
+            lo: 0.0,
+            hi: 0.05,
+            why: Limit::OutputStep
+        }
+    );
+    // The message is built from the kind, with the range's ends.
+    assert_eq!(
+        e.to_string(),
+        "`step` = 0.2: must lie in (0, 0.05]: rows (and RK4 steps) more than 50 ms apart miss the yaw mode"
+    );
 }
 
 #[test]
@@ -203,4 +232,60 @@ fn a_name_outside_its_set_is_refused_with_the_set() {
         named(&all, NameKind::as_str, NameKind::Metric, "unit"),
         Ok(NameKind::Unit)
     );
+}
+
+#[test]
+fn a_job_refuses_settings_that_are_not_numbers_before_it_reads() {
+    // The paths do not exist: the settings are refused first.
+    let nowhere = Path::new("no/such/run.csv");
+    let settings = crate::metrics::MetricSettings {
+        pre_window: 0.0,
+        ..Default::default()
+    };
+    let e = crate::jobs::metrics::run(nowhere, &settings, 5.0).unwrap_err();
+    match e {
+        Error::Param(p) => {
+            assert_eq!(p.key, "pre_window");
+            assert_eq!(p.reason, ParamReason::NotPositive);
+        }
+        other => panic!("not a parameter error: {other:?}"),
+    }
+    let o = crate::jobs::identify::Options {
+        data: nowhere.to_path_buf(),
+        model: "pac89".parse().unwrap(),
+        seed: 1,
+        out: None,
+        pressure: None,
+        camber: None,
+        local: Polish::Lm,
+        alpha_bin_deg: f64::NAN,
+        kappa_bin: 0.0025,
+        start: crate::jobs::identify::StartArg::Data,
+        template: None,
+        max_iterations: 10,
+    };
+    match crate::jobs::identify::run(&o).unwrap_err() {
+        Error::Param(p) => {
+            assert_eq!(p.key, "bin_deg");
+            assert_eq!(p.reason, ParamReason::NotFinite);
+        }
+        other => panic!("not a parameter error: {other:?}"),
+    }
+}
+
+#[test]
+fn a_scenario_with_a_window_that_is_not_positive_is_refused_at_its_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = scenario_with(
+        dir.path(),
+        "[manoeuvre]",
+        "[metrics]\nsteady_window = -1.0\n\n[manoeuvre]",
+    );
+    match crate::io::load_scenario(&p).unwrap_err() {
+        InputError::Value { source, .. } => {
+            assert_eq!(source.key, "metrics.steady_window");
+            assert_eq!(source.reason, ParamReason::NotPositive);
+        }
+        other => panic!("not a located value error: {other:?}"),
+    }
 }

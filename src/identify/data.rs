@@ -49,14 +49,14 @@ impl RigData {
 
 impl RigData {
     /// Whether lateral force was measured.
-    pub fn has_lateral(&self) -> bool {
+    pub(crate) fn has_lateral(&self) -> bool {
         self.fy.iter().any(|v| v.is_finite())
     }
 
     /// The longitudinal sweeps alone (`None` without them): the same
     /// samples with the lateral columns emptied (α 0, Fy NaN, no Mz).
     /// Grouped along [`SlipAxis::Ratio`], their points are longitudinal.
-    pub fn longitudinal_view(&self) -> Option<RigData> {
+    pub(crate) fn longitudinal_view(&self) -> Option<RigData> {
         self.longitudinal.as_ref()?;
         let n = self.len();
         Some(RigData {
@@ -138,7 +138,7 @@ impl RigPoint {
 
     /// A point at slip `slip` along `axis` where nothing was measured (the
     /// forces NaN): where a model curve is evaluated.
-    pub fn unmeasured(axis: SlipAxis, slip: f64, fz: f64, camber: f64, speed: f64) -> Self {
+    pub(crate) fn unmeasured(axis: SlipAxis, slip: f64, fz: f64, camber: f64, speed: f64) -> Self {
         match axis {
             SlipAxis::Angle => Self::lateral(slip, fz, camber, speed, f64::NAN, f64::NAN),
             SlipAxis::Ratio => Self::longitudinal(slip, fz, camber, speed, f64::NAN),
@@ -187,7 +187,7 @@ impl RigPoint {
 
     /// The wheel's state at the point: the sweep's slip, the other slip 0,
     /// road friction as measured (μ scale 1).
-    pub fn slip_state(&self) -> SlipState {
+    pub(crate) fn slip_state(&self) -> SlipState {
         let (alpha, kappa) = match self.sweep {
             Sweep::Lateral { alpha, .. } => (alpha, 0.0),
             Sweep::Longitudinal { kappa, .. } => (0.0, kappa),

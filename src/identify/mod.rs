@@ -16,10 +16,9 @@
 //! own units stay in their files.
 
 pub mod data;
-pub mod display;
 pub mod grouping;
 pub mod mf_staged;
-pub mod pac89_two_stage;
+pub(crate) mod pac89_two_stage;
 
 use crate::error::{Error, FitError, OptionsError};
 use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
@@ -243,7 +242,7 @@ impl FitProblem {
 
     /// The problem of fitting `start`'s free parameters of `channel` to the
     /// points where that channel was measured.
-    pub fn for_channel(
+    pub(crate) fn for_channel(
         start: &Tyre,
         channel: Channel,
         free: &[bool],
@@ -315,7 +314,7 @@ pub fn fit_lateral(
 /// aligning moment, with the lateral-force parameters held at `start`'s):
 /// the swarm, then the local polish, then standard errors from the Jacobian
 /// at the optimum.
-pub fn fit_channel(
+pub(crate) fn fit_channel(
     start: &Tyre,
     channel: Channel,
     conditions: &[Condition],
@@ -509,7 +508,7 @@ mod tests;
 /// (each model's own, [`ModelName::start_tyre`]): the lateral parameters
 /// only, so that no borrowed aligning or longitudinal coefficients are
 /// written. A model without a swarm fit is refused with what fits it.
-pub fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
+pub(crate) fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
     model.start_tyre(fz).ok_or_else(|| {
         Error::Options(match model.identification() {
             Identification::Staged(fits) => OptionsError::StagedFitOnly {

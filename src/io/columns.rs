@@ -25,7 +25,7 @@ impl Columns {
         self.data.remove(name).unwrap_or_default()
     }
     /// An optional column.
-    pub fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
+    pub(crate) fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
         self.data.remove(name)
     }
     /// 1-based header position of a column that was read (1 if unknown).
@@ -34,7 +34,7 @@ impl Columns {
     }
     /// An error at row `row` (0-based) of column `name`: file, line, the
     /// column's real position and the problem.
-    pub fn error_at(
+    pub(crate) fn error_at(
         &self,
         path: &Path,
         row: usize,

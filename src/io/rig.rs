@@ -20,7 +20,7 @@ use std::path::Path;
 /// measured: `mx` (overturning moment) and `my` (rolling-resistance
 /// moment), N·m, ISO-W axes of a left tyre (`mx` positive about the
 /// forward axis, `my` negative while rolling forward).
-pub fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
+pub(crate) fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
     let mut c = read_columns(path, &["fz"], &["mx", "my"])?;
     Ok([c.take_optional("mx"), c.take_optional("my")])
 }

@@ -8,7 +8,7 @@ use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
-use crate::error::{InputError, InputProblem, ParamError};
+use crate::error::{InputError, InputProblem, Limit, ParamError, ParamReason};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
@@ -58,13 +58,7 @@ impl Default for SimulationSettings {
 impl SimulationSettings {
     /// The validated method.
     pub fn method(&self) -> Result<Method, ParamError> {
-        ParamError::in_range(
-            "step",
-            self.step,
-            0.0,
-            0.05,
-            "rows (and RK4 steps) more than 50 ms apart miss the yaw mode",
-        )?;
+        ParamError::in_range("step", self.step, 0.0, 0.05, Limit::OutputStep)?;
         let d = Tolerances::default();
         match self.method {
             MethodName::Rk4 => {
@@ -74,11 +68,7 @@ impl SimulationSettings {
                     ("max_step", self.max_step),
                 ] {
                     if let Some(v) = v {
-                        return Err(ParamError::new(
-                            key,
-                            v,
-                            "tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`",
-                        ));
+                        return Err(ParamError::new(key, v, ParamReason::ToleranceWithRk4));
                     }
                 }
                 Ok(Method::Rk4)
@@ -89,27 +79,9 @@ impl SimulationSettings {
                     atol: self.atol.unwrap_or(d.atol),
                     max_step: self.max_step.unwrap_or(d.max_step),
                 };
-                ParamError::in_range(
-                    "rtol",
-                    tol.rtol,
-                    1e-14,
-                    1e-2,
-                    "a relative tolerance below 1e-14 is below rounding, above 1e-2 not a simulation",
-                )?;
-                ParamError::in_range(
-                    "atol",
-                    tol.atol,
-                    1e-16,
-                    1e-2,
-                    "the absolute tolerance (rad, rad/s) must lie in [1e-16, 1e-2]",
-                )?;
-                ParamError::in_range(
-                    "max_step",
-                    tol.max_step,
-                    1e-6,
-                    1.0,
-                    "the largest step must lie in [1e-6, 1] s",
-                )?;
+                ParamError::in_range("rtol", tol.rtol, 1e-14, 1e-2, Limit::RelativeTolerance)?;
+                ParamError::in_range("atol", tol.atol, 1e-16, 1e-2, Limit::AbsoluteTolerance)?;
+                ParamError::in_range("max_step", tol.max_step, 1e-6, 1.0, Limit::MaxStep)?;
                 Ok(Method::Dopri5(tol))
             }
         }
@@ -147,7 +119,7 @@ fn default_start() -> f64 {
 }
 /// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
 /// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
-pub const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
+pub(crate) const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
 
 fn default_rise() -> f64 {
     0.1
@@ -245,7 +217,7 @@ pub struct Scenario {
 /// after the start.
 fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
     ParamError::positive("speed", speed)?;
-    ParamError::in_range("end", end, start, 1e6, "the run must end after it starts")
+    ParamError::in_range("end", end, start, 1e6, Limit::EndAfterStart)
 }
 
 fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {
@@ -279,10 +251,13 @@ pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError>
 
 /// Validates and resolves a parsed scenario whose text is `src` (other file
 /// kinds that embed a scenario's tables use it too).
-pub fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
+pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
     let (model, tyre_files) = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
     check_road(src, &f.road)?;
+    f.metrics
+        .validate()
+        .map_err(|e| param_error(src, Some("metrics"), e))?;
     let method = f
         .simulation
         .method()
@@ -366,10 +341,19 @@ fn step_steer(
             s.rise_time,
             -1e-12,
             MAX_RAMP_TIME,
-            "ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)",
+            Limit::RampTime,
         ),
     )?;
-    check(src, ParamError::in_range("end", s.end, s.start + s.rise_time + 2.0, 1e6, "the run must last at least 2 s after the steer reaches its final value, to reach steady state"))?;
+    check(
+        src,
+        ParamError::in_range(
+            "end",
+            s.end,
+            s.start + s.rise_time + 2.0,
+            1e6,
+            Limit::SettleTime,
+        ),
+    )?;
     let solve = |ay: f64| {
         model
             .steady_state_for_lateral_acceleration(s.speed, friction, ay)
@@ -377,7 +361,14 @@ fn step_steer(
                 param_error(
                     src,
                     Some("manoeuvre"),
-                    ParamError::new("lateral_acceleration", ay, &m.to_string()),
+                    ParamError::new(
+                        "lateral_acceleration",
+                        ay,
+                        ParamReason::NoSteadyState {
+                            speed: m.speed,
+                            ay: m.ay,
+                        },
+                    ),
                 )
             })
     };
@@ -391,14 +382,13 @@ fn step_steer(
             check(src, ParamError::finite("lateral_acceleration", ay))?;
             solve(ay)?.steer - trim.steer
         }
-        _ => return Err(param_error(
-            src,
-            Some("manoeuvre"),
-            ParamError::without_value(
-                "kind",
-                "a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)",
-            ),
-        )),
+        _ => {
+            return Err(param_error(
+                src,
+                Some("manoeuvre"),
+                ParamError::without_value("kind", ParamReason::StepSteerAmplitude),
+            ))
+        }
     };
     Ok(Resolved {
         initial: State {

@@ -8,7 +8,7 @@ use super::scenario::{
     resolve_scenario, ManoeuvreSpec, Road, Scenario, ScenarioFile, SimulationSettings, TyreRefs,
 };
 use super::toml_file::{param_error, TomlSource};
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, ParamError, ParamReason};
 use crate::metrics::MetricSettings;
 use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};
@@ -235,10 +235,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
                 return Err(param_error(
                     &src,
                     None,
-                    ParamError::without_value(
-                        "inverse",
-                        "inverse queries need a [stiffness] map with at least 2 × 2 values",
-                    ),
+                    ParamError::without_value("inverse", ParamReason::InverseWithoutMap),
                 ));
             }
             Some(values.inverse(inv)?)
@@ -261,7 +258,7 @@ fn scenario_of(f: &StudyFile, src: &TomlSource) -> Result<Scenario, InputError> 
         return Err(param_error(
             src,
             None,
-            ParamError::without_value("manoeuvre.kind", "a study needs a step steer"),
+            ParamError::without_value("manoeuvre.kind", ParamReason::StudyNeedsStepSteer),
         ));
     }
     let sc = ScenarioFile {
@@ -293,20 +290,16 @@ impl Values<'_> {
     /// The stiffness values of `axis` in N/rad: at least one, each positive.
     fn stiffness(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
         let v = axis.values().ok_or_else(|| {
-            self.error(ParamError::without_value(key, "more than a million values"))
+            self.error(ParamError::without_value(key, ParamReason::TooManyValues))
         })?;
         if v.is_empty() {
             return Err(self.error(ParamError::without_value(
                 key,
-                "no values (a step or count that gives none?)",
+                ParamReason::NoValuesFromRange,
             )));
         }
         if let Some(&x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
-            return Err(self.error(ParamError::new(
-                key,
-                x,
-                "a cornering stiffness must be positive",
-            )));
+            return Err(self.error(ParamError::new(key, x, ParamReason::StiffnessNotPositive)));
         }
         Ok(v.iter().map(|x| x * self.to_si).collect())
     }
@@ -326,7 +319,7 @@ impl Values<'_> {
             return Err(self.error(ParamError::new(
                 "rbf.validation",
                 i as f64,
-                &format!("only {} pairs", pairs.len()),
+                ParamReason::TooFewPairs { pairs: pairs.len() },
             )));
         }
         ParamError::positive("spread", r.spread)

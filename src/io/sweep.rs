@@ -9,7 +9,7 @@ use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, ParamError, ParamReason};
 use crate::tyre::TyreModel;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -155,7 +155,8 @@ pub struct Sweep {
 
 fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputError> {
     let key = format!("sweep.{axis}");
-    let err = |value: f64, why: &str| param_error(src, None, ParamError::new(&key, value, why));
+    let err =
+        |value: f64, why: ParamReason| param_error(src, None, ParamError::new(&key, value, why));
     let scale = |unit: &Option<String>| -> Result<f64, InputError> {
         Ok(match (axis, unit.as_deref()) {
             (_, None) => 1.0,
@@ -165,9 +166,9 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
             (_, Some(u)) => {
                 return Err(err(
                     f64::NAN,
-                    &format!(
-                    "unknown unit `{u}` (steer: rad or deg; speed: m/s or km/h; friction: none)"
-                ),
+                    ParamReason::UnknownSweepUnit {
+                        unit: u.to_string(),
+                    },
                 ))
             }
         })
@@ -182,17 +183,17 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         Values::Range(r) => {
             let k = scale(&r.unit)?;
             if r.step.is_nan() || r.step <= 0.0 || r.to.is_nan() || r.to < r.from {
-                return Err(err(r.step, "a range needs step > 0 and to ≥ from"));
+                return Err(err(r.step, ParamReason::BadRange));
             }
             let n = ((r.to - r.from) / r.step + 1e-9).floor() as usize;
             if n > 1_000_000 {
-                return Err(err(r.step, "more than a million values"));
+                return Err(err(r.step, ParamReason::TooManyValues));
             }
             (0..=n).map(|i| (r.from + i as f64 * r.step) * k).collect()
         }
     };
     if values.is_empty() {
-        return Err(err(f64::NAN, "no values"));
+        return Err(err(f64::NAN, ParamReason::NoValues));
     }
     for &x in &values {
         let ok = x.is_finite()
@@ -202,10 +203,7 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
                 _ => x.abs() < std::f64::consts::FRAC_PI_2,
             };
         if !ok {
-            return Err(err(
-                x,
-                "steer must lie within ±90°, friction and speed must be positive",
-            ));
+            return Err(err(x, ParamReason::SweepValue));
         }
     }
     Ok(values)
@@ -220,10 +218,7 @@ fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<
         Some(key) => Err(param_error(
             src,
             Some("model.effects"),
-            ParamError::without_value(
-                key,
-                "not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files",
-            ),
+            ParamError::without_value(key, ParamReason::NotInEquilibrium),
         )),
         None => Ok(()),
     }

@@ -6,7 +6,7 @@
 //! Units: SI, rad.
 
 use super::toml_file::{param_error, TomlSource};
-use crate::error::{InputError, ParamError};
+use crate::error::{InputError, ParamError, ParamReason};
 use crate::tyre::Tyre;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -28,7 +28,7 @@ pub struct TyreRefs {
 
 /// Applies a tyre table's `mode` (MFeval's `useMode`, key `key`) to the
 /// tyres read from it; the error names the key and the reason.
-pub fn apply_tyre_mode(
+pub(crate) fn apply_tyre_mode(
     src: &TomlSource,
     key: &str,
     mode: Option<u32>,
@@ -36,8 +36,12 @@ pub fn apply_tyre_mode(
 ) -> Result<(), InputError> {
     let Some(code) = mode else { return Ok(()) };
     for t in tyres {
-        super::tir::set_tyre_mode(t, code)
-            .map_err(|why| src.value_error(&ParamError::without_value(key, &why.to_string())))?;
+        super::tir::set_tyre_mode(t, code).map_err(|why| {
+            src.value_error(&ParamError::without_value(
+                key,
+                ParamReason::Mode(Box::new(why)),
+            ))
+        })?;
     }
     Ok(())
 }
@@ -76,20 +80,20 @@ pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
 }
 
 /// Checks a `[vehicle]` table.
-pub fn check_vehicle(src: &TomlSource, vehicle: &Vehicle) -> Result<(), InputError> {
+pub(crate) fn check_vehicle(src: &TomlSource, vehicle: &Vehicle) -> Result<(), InputError> {
     vehicle
         .validate()
         .map_err(|e| param_error(src, Some("vehicle"), e))
 }
 
 /// Checks a `[road]` table.
-pub fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
+pub(crate) fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
     ParamError::positive("friction", road.friction).map_err(|e| param_error(src, Some("road"), e))
 }
 
 /// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables, and
 /// the tyre files read (front, rear).
-pub fn resolve_model(
+pub(crate) fn resolve_model(
     src: &TomlSource,
     vehicle: &Vehicle,
     tyres: &TyreRefs,

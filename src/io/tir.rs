@@ -368,7 +368,7 @@ impl TirDocument {
 }
 
 /// A fresh `.tir` text for a tyre that did not come from a file (SI units).
-pub fn write_new(tyre: &MagicFormula) -> String {
+pub(crate) fn write_new(tyre: &MagicFormula) -> String {
     let c = &tyre.coefficients;
     let mut s = String::from(
         "[MDI_HEADER]\nFILE_TYPE = 'tir'\nFILE_VERSION = 3.0\nFILE_FORMAT = 'ASCII'\n\
@@ -400,7 +400,7 @@ pub fn write_new(tyre: &MagicFormula) -> String {
 /// Sets MFeval's `useMode` `code` (111, 121, 211, 221) on a Magic Formula
 /// tyre; the reason when the code is refused or the tyre is of another
 /// model (only the Magic Formula has modes).
-pub fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError> {
+pub(crate) fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError> {
     let mode = MfMode::from_use_mode(code)?;
     match tyre {
         Tyre::MagicFormula(t) => {
@@ -491,7 +491,10 @@ fn parse_entry(
 
 /// The `.tir` text of an identified tyre: the template's file with the
 /// values replaced (its comments and other keys kept), or a fresh file.
-pub fn tir_text(tyre: &MagicFormula, template: Option<&TirDocument>) -> Result<String, InputError> {
+pub(crate) fn tir_text(
+    tyre: &MagicFormula,
+    template: Option<&TirDocument>,
+) -> Result<String, InputError> {
     match template {
         Some(doc) => doc.write(tyre),
         None => Ok(write_new(tyre)),

@@ -120,7 +120,7 @@ impl TomlSource {
 
     /// Byte span of the key at dotted `key_path` (`vehicle.mass`,
     /// `lateral.p[3]` looks up `lateral.p`).
-    pub fn key_span(&self, key_path: &str) -> Option<std::ops::Range<usize>> {
+    pub(crate) fn key_span(&self, key_path: &str) -> Option<std::ops::Range<usize>> {
         let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
         let mut table: &dyn toml_edit::TableLike = doc.as_table();
         let parts: Vec<&str> = key_path
@@ -149,12 +149,12 @@ impl TomlSource {
     /// exist and be a file: when it is not, an error at that key naming the
     /// value and the path it resolved to (a relative path is read from the
     /// TOML file's folder).
-    pub fn referenced_file(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
+    pub(crate) fn referenced_file(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
         self.referenced(key_path, path, false)
     }
 
     /// [`Self::referenced_file`] for a folder.
-    pub fn referenced_folder(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
+    pub(crate) fn referenced_folder(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
         self.referenced(key_path, path, true)
     }
 
@@ -175,7 +175,7 @@ impl TomlSource {
     }
 
     /// A located error for a value that failed validation.
-    pub fn value_error(&self, e: &ParamError) -> InputError {
+    pub(crate) fn value_error(&self, e: &ParamError) -> InputError {
         InputError::Value {
             path: self.path.clone(),
             at: self.key_span(&e.key).map(|s| self.location(s.start)),

@@ -2,7 +2,7 @@
 //! first ([`crate::metrics::measured`]); and the metric table that
 //! `simulate` prints too.
 
-use crate::error::Error;
+use crate::error::{Error, ParamError};
 use crate::io::read_run;
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
@@ -41,12 +41,15 @@ pub struct MeasuredMetricsReport {
     pub t_end: f64,
 }
 
-/// Reads, cleans and measures the run `path`.
+/// Reads, cleans and measures the run `path`, after checking the settings
+/// ([`MetricSettings::validate`]) and that `min_speed` (m/s) is finite.
 pub fn run(
     path: &Path,
     settings: &MetricSettings,
     min_speed: f64,
 ) -> Result<MeasuredMetricsReport, Error> {
+    settings.validate()?;
+    ParamError::finite("min_speed", min_speed)?;
     let m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
@@ -89,7 +92,7 @@ impl MeasuredMetricsReport {
 
 /// The metric table: one line per metric, `—` where a response lacks one,
 /// and the notes on filtering, overshoot and settling.
-pub fn metric_lines(m: &StepMetrics) -> Vec<String> {
+pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt =
         |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
     let mut out = vec![

@@ -149,7 +149,7 @@ impl ShardReport {
 }
 
 /// Copies of the inputs' texts.
-pub fn input_copies(inputs: &[PathBuf]) -> Result<Vec<InputCopy>, Error> {
+pub(crate) fn input_copies(inputs: &[PathBuf]) -> Result<Vec<InputCopy>, Error> {
     inputs
         .iter()
         .map(|p| {
@@ -174,7 +174,7 @@ fn absolute(p: &Path) -> PathBuf {
 /// Writes a shard file (atomically), its input paths made absolute: the
 /// merge reads the inputs again, and may run in another directory than
 /// the shards (a job array's tasks and its merge job need not share one).
-pub fn write_shard<T: Serialize>(path: &Path, file: &ShardFile<T>) -> Result<(), Error> {
+pub(crate) fn write_shard<T: Serialize>(path: &Path, file: &ShardFile<T>) -> Result<(), Error> {
     /// [`ShardFile`]'s fields, in its order, the results borrowed.
     #[derive(Serialize)]
     struct Written<'a, T> {
@@ -239,7 +239,7 @@ fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, Error> {
 /// Reads the shard files of one run: all of one job, one input, one N,
 /// every shard exactly once, and inputs unchanged since. Returns the input,
 /// the unit count and every unit's result in unit order.
-pub fn read_shards<T: DeserializeOwned>(
+pub(crate) fn read_shards<T: DeserializeOwned>(
     job: ShardJob,
     paths: &[PathBuf],
 ) -> Result<(PathBuf, usize, Vec<T>), Error> {

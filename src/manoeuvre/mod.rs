@@ -112,7 +112,7 @@ impl Replay {
 
 /// Linear interpolation of (xs, ys) at x, xs increasing, clamped to the
 /// ends (the replay of a run and the comparison with one both use it).
-pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+pub(crate) fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     let k = xs.partition_point(|v| *v <= x);
     if k == 0 {
         return ys[0];
@@ -189,7 +189,7 @@ impl Manoeuvre {
     }
 
     /// du/dt at `t`, m/s² (the slope of the current segment for a replay).
-    pub fn speed_rate(&self, t: f64) -> f64 {
+    pub(crate) fn speed_rate(&self, t: f64) -> f64 {
         match self {
             Manoeuvre::Replay(r) if r.t.len() > 1 => {
                 let i = r.segment(t);
@@ -200,7 +200,7 @@ impl Manoeuvre {
     }
 
     /// First time of the run, s.
-    pub fn start_time(&self) -> f64 {
+    pub(crate) fn start_time(&self) -> f64 {
         match self {
             Manoeuvre::Replay(r) => r.t[0],
             _ => 0.0,
@@ -208,7 +208,7 @@ impl Manoeuvre {
     }
 
     /// Last time of the run, s.
-    pub fn end_time(&self) -> f64 {
+    pub(crate) fn end_time(&self) -> f64 {
         match self {
             Manoeuvre::StepSteer(s) => s.end,
             Manoeuvre::RampSteer(s) => s.end,
@@ -221,7 +221,7 @@ impl Manoeuvre {
     /// Times where the steer or speed input has a kink or a jump (ramp
     /// ends, the start of a sine, every sample of a replay): an adaptive
     /// integrator restarts there instead of stepping across.
-    pub fn breakpoints(&self) -> Vec<f64> {
+    pub(crate) fn breakpoints(&self) -> Vec<f64> {
         match self {
             Manoeuvre::StepSteer(s) => vec![s.start, s.start + s.rise_time.max(0.0)],
             Manoeuvre::RampSteer(r) => vec![r.start],

@@ -40,12 +40,12 @@
 use super::MeasuredRun;
 
 /// Width of the local fit of [`speed_derivative`], s.
-pub const SPEED_DERIVATIVE_WINDOW: f64 = 0.5;
+pub(crate) const SPEED_DERIVATIVE_WINDOW: f64 = 0.5;
 
 impl MeasuredRun {
     /// The run's longitudinal acceleration at its samples, m/s²: its `ax`
     /// channel when it has one, else [`speed_derivative`] of its speed.
-    pub fn longitudinal_acceleration(&self) -> Vec<f64> {
+    pub(crate) fn longitudinal_acceleration(&self) -> Vec<f64> {
         match &self.ax {
             Some(ax) => ax.clone(),
             None => speed_derivative(&self.t, &self.speed),
@@ -58,7 +58,7 @@ impl MeasuredRun {
 /// over the [`SPEED_DERIVATIVE_WINDOW`] centred on it (shifted to lie
 /// inside the run near its ends; the whole run when it is shorter). A
 /// window of two samples gives their slope, of one sample zero.
-pub fn speed_derivative(t: &[f64], speed: &[f64]) -> Vec<f64> {
+pub(crate) fn speed_derivative(t: &[f64], speed: &[f64]) -> Vec<f64> {
     assert_eq!(t.len(), speed.len(), "one speed per time");
     let n = t.len();
     if n < 2 {
@@ -84,7 +84,7 @@ fn slope_at_sample(t: &[f64], speed: &[f64], k: usize) -> f64 {
 /// [`speed_derivative`] linearly interpolated at time `x` (clamped to the
 /// run), computed from the two samples around `x` alone: what a replay
 /// evaluated at arbitrary times (an adaptive integrator's stages) reads.
-pub fn speed_derivative_at(t: &[f64], speed: &[f64], x: f64) -> f64 {
+pub(crate) fn speed_derivative_at(t: &[f64], speed: &[f64], x: f64) -> f64 {
     assert_eq!(t.len(), speed.len(), "one speed per time");
     let n = t.len();
     if n < 2 {

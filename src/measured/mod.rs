@@ -8,8 +8,8 @@
 //! a file.
 
 pub mod clean;
-pub mod derivative;
-pub mod road;
+pub(crate) mod derivative;
+pub(crate) mod road;
 
 use std::path::PathBuf;
 

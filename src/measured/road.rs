@@ -28,7 +28,7 @@ use crate::constants::G;
 use serde::Serialize;
 
 /// Width of the centred moving average of the estimates, s.
-pub const SMOOTHING_SECONDS: f64 = 1.0;
+pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 
 /// Where a road angle comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -142,7 +142,7 @@ impl RoadGeometry {
 }
 
 /// `asin((a_y − u·r)/g)` smoothed, rad per sample.
-pub fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
+pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
     let raw: Vec<f64> = (0..run.t.len())
         .map(|k| (ay[k] - run.speed[k] * run.yaw_rate[k]) / G)
         .collect();
@@ -150,7 +150,7 @@ pub fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
 }
 
 /// `asin((a_x − u̇)/g)` smoothed, rad per sample.
-pub fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
+pub(crate) fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
     let n = run.t.len();
     let raw: Vec<f64> = (0..n)
         .map(|k| {

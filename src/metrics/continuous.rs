@@ -23,12 +23,12 @@
 use super::{MetricSettings, MetricsError, StepMetrics, MIN_STEP};
 
 /// How finely events are located, s.
-pub const EVENT_TOLERANCE: f64 = 1e-12;
+pub(crate) const EVENT_TOLERANCE: f64 = 1e-12;
 /// Longest interval over which a crossing is looked for without sampling
 /// the signal in between, s: the step response's fastest features (the
 /// steer ramp, ≥ 0.05 s in practice, and the yaw mode, ~0.3 s period) are
 /// far longer, so no crossing and recrossing can hide inside one.
-pub const PROBE: f64 = 5e-3;
+pub(crate) const PROBE: f64 = 5e-3;
 
 /// The signals of a step-steer record at one instant.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

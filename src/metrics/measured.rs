@@ -15,7 +15,7 @@ use crate::measured::MeasuredRun;
 use serde::Serialize;
 
 /// ISO 7401's limit on the steer's 10–90 % rise, s.
-pub const ISO_7401_RISE: f64 = 0.15;
+pub(crate) const ISO_7401_RISE: f64 = 0.15;
 
 /// The metrics of a measured run and what was measured.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -37,17 +37,21 @@
 //! [`continuous`] instead: integrals by quadrature, events as roots. Signs: any step
 //! direction; the normalisation makes left and right steps give equal metrics.
 
+pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
-use thiserror::Error;
 
-pub mod continuous;
+pub(crate) mod continuous;
 pub mod measured;
 pub mod simulated;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
 pub use simulated::{simulated_step_metrics, DenseRecord};
 
-/// Settings of the metric computation.
+/// Settings of the metric computation. The fields are public for struct
+/// literals; [`MetricSettings::validate`] is the check every entry runs
+/// before it measures (the scenario and study readers on the `[metrics]`
+/// table, [`crate::jobs::metrics::run`] on its argument), so no job measures
+/// with a window that is not positive or a filter that is not a frequency.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MetricSettings {
@@ -91,6 +95,23 @@ fn default_steady() -> f64 {
 }
 fn one() -> f64 {
     1.0
+}
+
+impl MetricSettings {
+    /// Checks every value: windows (s) and a cut-off (Hz) positive, weights
+    /// finite and non-negative; the error names the key.
+    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
+        use crate::error::ParamError;
+        ParamError::positive("pre_window", self.pre_window)?;
+        ParamError::positive("steady_window", self.steady_window)?;
+        ParamError::positive("variance_window", self.variance_window)?;
+        ParamError::non_negative("e1", self.e1)?;
+        ParamError::non_negative("e2", self.e2)?;
+        if let Some(f) = self.filter_hz {
+            ParamError::positive("filter_hz", f)?;
+        }
+        Ok(())
+    }
 }
 
 impl Default for MetricSettings {
@@ -145,28 +166,6 @@ pub struct StepMetrics {
     pub yaw_rate_noise: f64,
     /// The low-pass applied, Hz (none: unfiltered).
     pub filter_hz: Option<f64>,
-}
-
-/// Why the metrics could not be computed.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum MetricsError {
-    /// Channels of different lengths or too few samples.
-    #[error("a step-steer record needs at least 10 samples with equal-length channels")]
-    Shape,
-    /// The record is too short for the windows.
-    #[error("the record ({0:.3} s) is shorter than the initial and steady windows together")]
-    TooShort(f64),
-    /// No steer step in the record.
-    #[error(
-        "no steer step: the steer changes by {0:.3e} rad between the initial and steady windows"
-    )]
-    NoStep(f64),
-    /// A response does not change.
-    #[error("the {0} does not change between the initial and steady windows")]
-    NoResponse(&'static str),
-    /// A response never reaches 90 % of its steady value.
-    #[error("the {0} never reaches 90 % of its steady-state value")]
-    NoCrossing(&'static str),
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).
@@ -278,7 +277,7 @@ fn total_variance(t: &[f64], a: &[f64], b: &[f64], from: f64, to: f64) -> f64 {
 /// Zero-phase low-pass: a second-order Butterworth section (bilinear
 /// transform, pre-warped) run forward then backward, each pass started in
 /// the steady state of its first sample so the ends do not ring.
-pub fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
+pub(crate) fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
     let k = (std::f64::consts::PI * cutoff_hz * dt).tan();
     let norm = 1.0 / (1.0 + std::f64::consts::SQRT_2 * k + k * k);
     let b0 = k * k * norm;
@@ -304,7 +303,7 @@ pub fn zero_phase_low_pass(x: &[f64], dt: f64, cutoff_hz: f64) -> Vec<f64> {
 }
 
 /// Step-steer metrics of one record.
-pub fn step_metrics(
+pub(crate) fn step_metrics(
     t: &[f64],
     steer: &[f64],
     yaw_rate: &[f64],

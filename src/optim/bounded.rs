@@ -47,7 +47,7 @@ const TRIALS: usize = 12;
 impl BoundedLm {
     /// Minimises ½·Σ r² from `p0` within `bounds` (lower, upper per
     /// parameter).
-    pub fn minimize(
+    pub(crate) fn minimize(
         &self,
         problem: &dyn Residuals,
         p0: &[f64],
@@ -186,7 +186,7 @@ impl ProjectedModel {
     }
 
     /// No free parameter can lower the cost to first order.
-    pub fn stationary(&self) -> bool {
+    pub(crate) fn stationary(&self) -> bool {
         self.free.is_empty() || self.g.iter().all(|&v| v == 0.0)
     }
 

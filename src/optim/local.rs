@@ -28,14 +28,14 @@ pub trait Residuals: Sync {
 
 /// Forward-difference Jacobian at `p` given the residuals `r0` there
 /// (relative step 1e-7; [`inward_jacobian`] without bounds).
-pub fn jacobian(problem: &dyn Residuals, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
+pub(crate) fn jacobian(problem: &dyn Residuals, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
     let free = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
     inward_jacobian(problem, p, r0, &free)
 }
 
 /// Forward differences (relative step 1e-7) that step into the box at an
 /// upper bound.
-pub fn inward_jacobian(
+pub(crate) fn inward_jacobian(
     problem: &dyn Residuals,
     p: &[f64],
     r0: &[f64],
@@ -106,13 +106,13 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Adapter<'_> {
 }
 
 /// Levenberg–Marquardt from `p0`.
-pub fn levenberg_marquardt(problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
+pub(crate) fn levenberg_marquardt(problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
     levenberg_marquardt_within(problem, p0, 200)
 }
 
 /// Levenberg–Marquardt from `p0` with at most `patience`·(n + 1) residual
 /// evaluations (not converged when it runs out).
-pub fn levenberg_marquardt_within(
+pub(crate) fn levenberg_marquardt_within(
     problem: &dyn Residuals,
     p0: &[f64],
     patience: usize,
@@ -162,7 +162,7 @@ impl Default for GaussNewton {
 
 impl GaussNewton {
     /// Runs from `p0`.
-    pub fn minimize(&self, problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
+    pub(crate) fn minimize(&self, problem: &dyn Residuals, p0: &[f64]) -> LocalResult {
         let n = p0.len();
         let mut p = p0.to_vec();
         let mut r = vec![0.0; problem.count()];

@@ -3,9 +3,9 @@
 //! least-squares polish (Levenberg–Marquardt, Zhang & Li's (2017) modified
 //! Gauss–Newton). Every random search takes a seed and is reproducible.
 
-pub mod bounded;
+pub(crate) mod bounded;
 pub mod local;
-pub mod pso;
-pub mod stats;
+pub(crate) mod pso;
+pub(crate) mod stats;
 
 pub use pso::{Boundary, Inertia, Pso, PsoResult, Topology};

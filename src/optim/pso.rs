@@ -153,7 +153,7 @@ fn sane(v: f64) -> f64 {
 
 impl Pso {
     /// Minimises `f` over the box `bounds` (lower, upper per coordinate).
-    pub fn minimize<F>(&self, f: F, bounds: &[(f64, f64)]) -> PsoResult
+    pub(crate) fn minimize<F>(&self, f: F, bounds: &[(f64, f64)]) -> PsoResult
     where
         F: Fn(&[f64]) -> f64 + Sync,
     {
@@ -162,7 +162,12 @@ impl Pso {
 
     /// As [`Pso::minimize`], with some particles started at given positions
     /// (e.g. a previous solution); the rest start uniformly in the box.
-    pub fn minimize_from<F>(&self, f: F, bounds: &[(f64, f64)], starts: &[Vec<f64>]) -> PsoResult
+    pub(crate) fn minimize_from<F>(
+        &self,
+        f: F,
+        bounds: &[(f64, f64)],
+        starts: &[Vec<f64>],
+    ) -> PsoResult
     where
         F: Fn(&[f64]) -> f64 + Sync,
     {

@@ -9,7 +9,7 @@ use nalgebra::DMatrix;
 /// Which columns of `j` the data see: a column whose norm is below 1e-9 of
 /// the largest is a parameter the residuals do not depend on (an offset of
 /// a channel that is not measured, a parameter pinned at its bound).
-pub fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
+pub(crate) fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
     let norms: Vec<f64> = j.column_iter().map(|c| c.norm()).collect();
     let largest = norms.iter().copied().fold(0.0, f64::max);
     norms.iter().map(|&n| n > 1e-9 * largest).collect()
@@ -22,7 +22,7 @@ pub fn seen_columns(j: &DMatrix<f64>) -> Vec<bool> {
 /// values below 1e-14 of the largest dropped; the parameters along a
 /// dropped direction (they trade exactly) are NaN too.
 /// None when no parameter is seen.
-pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
+pub(crate) fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
     let (m, n) = j.shape();
     let seen: Vec<usize> = seen_columns(j)
         .into_iter()
@@ -75,7 +75,7 @@ pub fn covariance(j: &DMatrix<f64>, sum_squares: f64) -> Option<DMatrix<f64>> {
 /// Standard errors (square roots of the covariance's diagonal); NaN for a
 /// parameter the data do not see or whose variance is not a finite
 /// non-negative number.
-pub fn standard_errors(j: &DMatrix<f64>, sum_squares: f64) -> Vec<f64> {
+pub(crate) fn standard_errors(j: &DMatrix<f64>, sum_squares: f64) -> Vec<f64> {
     let n = j.ncols();
     match covariance(j, sum_squares) {
         Some(c) => (0..n)

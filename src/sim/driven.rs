@@ -82,7 +82,7 @@ impl Drive {
     }
 
     /// Samples `m` over its duration with step `step` for `method`.
-    pub fn for_method(m: &Manoeuvre, step: f64, method: FixedStep) -> Self {
+    pub(crate) fn for_method(m: &Manoeuvre, step: f64, method: FixedStep) -> Self {
         let start = m.start_time();
         let steps = ((m.end_time() - start) / step).round().max(1.0) as usize;
         let times = Self::sample_times(method, start, step, steps);
@@ -105,7 +105,12 @@ impl Drive {
     /// which only its longitudinal and bank-profile effects read. Without
     /// `ax` the drive keeps the acceleration it has (a replay's smoothed
     /// speed derivative).
-    pub fn with_channels(mut self, t: &[f64], ax: Option<&[f64]>, bank: Option<&[f64]>) -> Self {
+    pub(crate) fn with_channels(
+        mut self,
+        t: &[f64],
+        ax: Option<&[f64]>,
+        bank: Option<&[f64]>,
+    ) -> Self {
         if let Some(ax) = ax {
             self.ax = self.sampled(t, ax);
         }
@@ -145,12 +150,12 @@ impl Drive {
     /// The times of its input samples (every stage of every step, in the
     /// order of [`Drive::steer_samples`]; not increasing within a ROS34PW2
     /// step, whose nodes are not), s.
-    pub fn stage_times(&self) -> Vec<f64> {
+    pub(crate) fn stage_times(&self) -> Vec<f64> {
         Self::sample_times(self.method, self.start, self.step, self.steps)
     }
 
     /// The steer at [`Drive::stage_times`], rad.
-    pub fn steer_samples(&self) -> &[f64] {
+    pub(crate) fn steer_samples(&self) -> &[f64] {
         &self.steer
     }
 
@@ -159,7 +164,7 @@ impl Drive {
     ///
     /// # Panics
     /// When `steer` has another length than the drive's samples.
-    pub fn with_steer(mut self, steer: Vec<f64>) -> Self {
+    pub(crate) fn with_steer(mut self, steer: Vec<f64>) -> Self {
         assert_eq!(steer.len(), self.steer.len(), "one steer per stage sample");
         self.steer = steer;
         self
@@ -179,7 +184,7 @@ impl Drive {
     }
 
     /// The inputs at the first grid time, with road friction `friction`.
-    pub fn first_inputs(&self, friction: f64) -> Inputs {
+    pub(crate) fn first_inputs(&self, friction: f64) -> Inputs {
         self.inputs_at(0, friction)
     }
 

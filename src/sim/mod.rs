@@ -178,7 +178,7 @@ pub struct LiftOff {
 impl TimeHistory {
     /// Every interval of recorded rows in which a wheel's load is zero, in
     /// wheel order then time order.
-    pub fn lift_offs(&self) -> Vec<LiftOff> {
+    pub(crate) fn lift_offs(&self) -> Vec<LiftOff> {
         let mut out = Vec::new();
         for (wheel, fz) in Wheel::ALL.iter().zip(&self.fz) {
             let mut start = None;
@@ -255,7 +255,7 @@ impl Method {
 }
 
 /// The default interval of recorded rows (and RK4 step), s.
-pub const DEFAULT_STEP: f64 = 1e-3;
+pub(crate) const DEFAULT_STEP: f64 = 1e-3;
 
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -288,7 +288,7 @@ impl Default for Integrator {
 /// side at that level; solving it a hundred times tighter moved no
 /// step-steer metric of the bundled PAC89 scenario by more than rounding
 /// in its leading digits and cost 15 % more tyre evaluations (measured).
-pub fn load_tolerance(tol: &Tolerances) -> f64 {
+pub(crate) fn load_tolerance(tol: &Tolerances) -> f64 {
     tol.rtol.clamp(1e-13, 1e-9)
 }
 

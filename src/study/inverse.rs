@@ -28,7 +28,7 @@ impl Map {
 
     /// Points (k1, k2) where `metric` equals `target`, by linear interpolation
     /// along rear lines and along front lines, sorted by k1.
-    pub fn iso_curve(&self, metric: Metric, target: f64) -> Vec<(f64, f64)> {
+    pub(crate) fn iso_curve(&self, metric: Metric, target: f64) -> Vec<(f64, f64)> {
         let (nf, nr) = (self.front.len(), self.rear.len());
         let mut pts = Vec::new();
         let cross = |a: f64, b: f64| {
@@ -61,7 +61,7 @@ impl Map {
     }
 
     /// Map points meeting every target within its tolerance.
-    pub fn region(&self, targets: &[Target]) -> Vec<(f64, f64)> {
+    pub(crate) fn region(&self, targets: &[Target]) -> Vec<(f64, f64)> {
         let mut out = Vec::new();
         for (i, &kf) in self.front.iter().enumerate() {
             for (j, &kr) in self.rear.iter().enumerate() {
@@ -78,13 +78,13 @@ impl Map {
 }
 
 /// Relative distance of (k1, k2) from a reference combination.
-pub fn distance(a: (f64, f64), reference: (f64, f64)) -> f64 {
+pub(crate) fn distance(a: (f64, f64), reference: (f64, f64)) -> f64 {
     ((a.0 - reference.0) / reference.0).hypot((a.1 - reference.1) / reference.1)
 }
 
 /// The rear stiffness that gives Er = `target` at front stiffness `kf`, by
 /// secant iteration from `kr0` (simulations); `None` if it does not converge.
-pub fn solve_rear(study: &Study, kf: f64, kr0: f64, target: f64, tol: f64) -> Option<f64> {
+pub(crate) fn solve_rear(study: &Study, kf: f64, kr0: f64, target: f64, tol: f64) -> Option<f64> {
     let f = |kr: f64| study.er(kf, kr) - target;
     let (mut x0, mut x1) = (kr0, kr0 * 1.02);
     let (mut f0, mut f1) = (f(x0), f(x1));
@@ -111,7 +111,7 @@ pub fn solve_rear(study: &Study, kf: f64, kr0: f64, target: f64, tol: f64) -> Op
 /// Starts from the closest curve point of the map and refines over k1 within
 /// ± `span` by golden-section search with k2 solved by simulation.
 /// Returns (k1, k2, Er simulated there).
-pub fn best_on_curve(
+pub(crate) fn best_on_curve(
     study: &Study,
     curve: &[(f64, f64)],
     reference: (f64, f64),

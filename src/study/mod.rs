@@ -11,8 +11,8 @@
 //! evaluated with [`crate::metrics::step_metrics`]; combinations run in
 //! parallel (rayon).
 
-pub mod inverse;
-pub mod rbf;
+pub(crate) mod inverse;
+pub(crate) mod rbf;
 
 use crate::error::{named, Error, NameKind};
 use crate::manoeuvre::Manoeuvre;
@@ -49,7 +49,7 @@ pub struct Sample {
 
 impl Study {
     /// The model with each axle's tyres scaled to the given stiffness.
-    pub fn model_for(&self, k_front: f64, k_rear: f64) -> VehicleModel {
+    pub(crate) fn model_for(&self, k_front: f64, k_rear: f64) -> VehicleModel {
         let (sf, sr) = self.model.vehicle.static_axle_loads();
         let mut m = self.model.clone();
         m.front = self.model.front.with_cornering_stiffness(k_front, 0.5 * sf);
@@ -86,7 +86,7 @@ impl Study {
     }
 
     /// Simulates every combination in parallel; `progress` counts them.
-    pub fn evaluate_all(&self, pairs: &[(f64, f64)], progress: &AtomicUsize) -> Vec<Sample> {
+    pub(crate) fn evaluate_all(&self, pairs: &[(f64, f64)], progress: &AtomicUsize) -> Vec<Sample> {
         pairs
             .par_iter()
             .map(|&(kf, kr)| {
@@ -175,7 +175,7 @@ impl Metric {
 
     /// The metric of a sample, NaN where it has none (the cells of maps and
     /// tables).
-    pub fn of_sample(self, s: &Sample) -> f64 {
+    pub(crate) fn of_sample(self, s: &Sample) -> f64 {
         s.metrics.and_then(|m| self.of(&m)).unwrap_or(f64::NAN)
     }
 }
@@ -194,7 +194,7 @@ impl std::str::FromStr for Metric {
 }
 
 /// Metric names in table order ([`Metric::ALL`]'s names).
-pub const METRICS: [&str; 10] = {
+pub(crate) const METRICS: [&str; 10] = {
     let mut names = [""; 10];
     let mut i = 0;
     while i < names.len() {
@@ -237,7 +237,7 @@ impl StiffnessUnit {
         }
     }
     /// N/rad per unit.
-    pub fn to_si(self) -> f64 {
+    pub(crate) fn to_si(self) -> f64 {
         match self {
             StiffnessUnit::NPerDeg => 180.0 / std::f64::consts::PI,
             StiffnessUnit::NPerRad => 1.0,

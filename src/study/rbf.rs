@@ -21,7 +21,7 @@ pub struct Rbf {
 
 impl Rbf {
     /// Trains on inputs `x` and outputs `y` (one vector per input).
-    pub fn train(x: &[f64], y: &[Vec<f64>], spread: f64) -> Self {
+    pub(crate) fn train(x: &[f64], y: &[Vec<f64>], spread: f64) -> Self {
         let n = x.len();
         let b = (2f64.ln()).sqrt() / spread;
         let phi = |u: f64, c: f64| (-(b * (u - c)).powi(2)).exp();
@@ -53,7 +53,7 @@ impl Rbf {
     }
 
     /// The network's output at `x`.
-    pub fn predict(&self, x: f64) -> Vec<f64> {
+    pub(crate) fn predict(&self, x: f64) -> Vec<f64> {
         let n = self.centres.len();
         let mut h = DVector::zeros(n + 1);
         for (i, c) in self.centres.iter().enumerate() {

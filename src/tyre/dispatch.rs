@@ -17,7 +17,7 @@ impl Tyre {
     /// Scales the tyre so that its cornering stiffness at load `fz` becomes
     /// `target` (N/rad) while its friction limit stays: the stiffness
     /// parameters are scaled, not the peak force.
-    pub fn with_cornering_stiffness(&self, target: f64, fz: f64) -> Tyre {
+    pub(crate) fn with_cornering_stiffness(&self, target: f64, fz: f64) -> Tyre {
         let mut t = self.clone();
         // One multiplicative step is exact for models whose stiffness is
         // proportional to the scaled parameter; offsets (PAC89's Sh) make it
@@ -46,7 +46,7 @@ impl Tyre {
 
     /// The same tyre with its sign-blind parameters in their conventional
     /// sign ([`ModelParameters::canonicalise`]).
-    pub fn canonical(&self) -> Tyre {
+    pub(crate) fn canonical(&self) -> Tyre {
         let mut t = self.clone();
         t.as_model_mut().canonicalise();
         t
@@ -54,60 +54,60 @@ impl Tyre {
 
     /// Names of the aligning-moment parameters (empty: the model has no
     /// aligning moment to fit).
-    pub fn aligning_names(&self) -> Vec<String> {
+    pub(crate) fn aligning_names(&self) -> Vec<String> {
         self.as_model().block_names(Block::Aligning)
     }
 
     /// The aligning-moment parameters (a model without them set gets a
     /// start).
-    pub fn aligning_parameters(&self) -> Vec<f64> {
+    pub(crate) fn aligning_parameters(&self) -> Vec<f64> {
         self.as_model().block_parameters(Block::Aligning)
     }
 
     /// Replaces the aligning-moment parameters.
-    pub fn set_aligning_parameters(&mut self, v: &[f64]) {
+    pub(crate) fn set_aligning_parameters(&mut self, v: &[f64]) {
         self.as_model_mut().set_block_parameters(Block::Aligning, v)
     }
 
     /// Search box of the aligning-moment parameters.
-    pub fn aligning_bounds(&self) -> Vec<(f64, f64)> {
+    pub(crate) fn aligning_bounds(&self) -> Vec<(f64, f64)> {
         self.as_model().block_bounds(Block::Aligning)
     }
 
     /// Which aligning parameters the data can identify.
-    pub fn aligning_free(&self, cambers: usize) -> Vec<bool> {
+    pub(crate) fn aligning_free(&self, cambers: usize) -> Vec<bool> {
         self.as_model().block_free(Block::Aligning, cambers)
     }
 
     /// Names of the longitudinal-force parameters (empty: none to fit).
-    pub fn longitudinal_names(&self) -> Vec<String> {
+    pub(crate) fn longitudinal_names(&self) -> Vec<String> {
         self.as_model().block_names(Block::Longitudinal)
     }
 
     /// The longitudinal parameters (a start when unset).
-    pub fn longitudinal_parameters(&self) -> Vec<f64> {
+    pub(crate) fn longitudinal_parameters(&self) -> Vec<f64> {
         self.as_model().block_parameters(Block::Longitudinal)
     }
 
     /// Replaces the longitudinal parameters.
-    pub fn set_longitudinal_parameters(&mut self, v: &[f64]) {
+    pub(crate) fn set_longitudinal_parameters(&mut self, v: &[f64]) {
         self.as_model_mut()
             .set_block_parameters(Block::Longitudinal, v)
     }
 
     /// Search box of the longitudinal parameters.
-    pub fn longitudinal_bounds(&self) -> Vec<(f64, f64)> {
+    pub(crate) fn longitudinal_bounds(&self) -> Vec<(f64, f64)> {
         self.as_model().block_bounds(Block::Longitudinal)
     }
 
     /// Which longitudinal parameters a fit frees.
-    pub fn longitudinal_free(&self) -> Vec<bool> {
+    pub(crate) fn longitudinal_free(&self) -> Vec<bool> {
         // No longitudinal term of any model depends on camber.
         self.as_model().block_free(Block::Longitudinal, 1)
     }
 
     /// Fewest distinct loads a lateral fit of this model needs.
-    pub fn loads_needed(&self) -> usize {
+    pub(crate) fn loads_needed(&self) -> usize {
         self.as_model().loads_needed()
     }
 
@@ -118,7 +118,7 @@ impl Tyre {
 
     /// Forces and moments at one point; `pressure` (Pa) is read by the
     /// Magic Formula only (`None`: the file's inflation pressure).
-    pub fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {
+    pub(crate) fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {
         self.as_model().point_forces(s, pressure)
     }
 

@@ -64,11 +64,11 @@ impl Erased {
         self.0.name()
     }
     /// The model's own knowledge.
-    pub fn as_model(&self) -> &dyn ModelParameters {
+    pub(crate) fn as_model(&self) -> &dyn ModelParameters {
         &*self.0
     }
     /// The same, to change its parameters.
-    pub fn as_model_mut(&mut self) -> &mut dyn ModelParameters {
+    pub(crate) fn as_model_mut(&mut self) -> &mut dyn ModelParameters {
         &mut *self.0
     }
     /// The tyre as model `M`, if it is one.

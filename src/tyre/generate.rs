@@ -28,7 +28,7 @@ macro_rules! tyre_models {
 
         impl Tyre {
             /// The model behind the tyre, for everything it knows about itself.
-            pub fn as_model(&self) -> &dyn ModelParameters {
+            pub(crate) fn as_model(&self) -> &dyn ModelParameters {
                 match self {
                     $( Tyre::$variant(t) => Borrow::<$model>::borrow(t), )*
                     Tyre::Registered(t) => t.as_model(),
@@ -36,7 +36,7 @@ macro_rules! tyre_models {
             }
 
             /// The model behind the tyre, to change its parameters.
-            pub fn as_model_mut(&mut self) -> &mut dyn ModelParameters {
+            pub(crate) fn as_model_mut(&mut self) -> &mut dyn ModelParameters {
                 match self {
                     $( Tyre::$variant(t) => BorrowMut::<$model>::borrow_mut(t), )*
                     Tyre::Registered(t) => t.as_model_mut(),

@@ -9,7 +9,7 @@
 //! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
 
 use super::{Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
-use crate::error::ParamError;
+use crate::error::{Limit, ParamError};
 use serde::{Deserialize, Serialize};
 
 /// Simplified Magic Formula parameters.
@@ -36,13 +36,7 @@ impl MagicSimple {
     }
     pub(crate) fn validate(&self) -> Result<(), ParamError> {
         ParamError::positive("b", self.b)?;
-        ParamError::in_range(
-            "c",
-            self.c,
-            0.0,
-            2.0,
-            "a shape factor outside (0, 2] has no physical meaning",
-        )?;
+        ParamError::in_range("c", self.c, 0.0, 2.0, Limit::ShapeFactor)?;
         ParamError::positive("d", self.d)
     }
 }

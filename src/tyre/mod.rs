@@ -43,9 +43,9 @@ mod linear;
 mod magic_simple;
 pub mod mf;
 mod name;
-pub mod pac89;
+pub(crate) mod pac89;
 mod registry;
-pub mod unitire;
+pub(crate) mod unitire;
 
 pub use gim::Gim;
 pub use linear::Linear;
@@ -103,12 +103,12 @@ impl SlipState {
     }
 
     /// Lateral sliding speed of the contact patch, m/s: `V·|sin α|`.
-    pub fn lateral_sliding_speed(&self) -> f64 {
+    pub(crate) fn lateral_sliding_speed(&self) -> f64 {
         self.speed.abs() * self.alpha.sin().abs()
     }
 
     /// Longitudinal sliding speed of the contact patch, m/s: `V·|κ|`.
-    pub fn longitudinal_sliding_speed(&self) -> f64 {
+    pub(crate) fn longitudinal_sliding_speed(&self) -> f64 {
         self.speed.abs() * self.kappa.abs()
     }
 }

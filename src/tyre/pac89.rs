@@ -23,7 +23,7 @@
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
 use super::{Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
-use crate::error::ParamError;
+use crate::error::{ParamError, ParamReason};
 use serde::{Deserialize, Serialize};
 
 /// Which coefficient numbering a PAC89 file uses.
@@ -54,23 +54,23 @@ pub struct Pac89 {
 }
 
 /// The Adams example coefficient set (the Adams/Tire PAC89 documentation).
-pub const ADAMS_EXAMPLE_A: [f64; 14] = [
+pub(crate) const ADAMS_EXAMPLE_A: [f64; 14] = [
     1.65, -34.0, 1250.0, 3036.0, 12.8, 0.00501, -0.02103, 0.77394, 0.002289, 0.013442, 0.003709,
     19.1656, 1.21356, 6.26206,
 ];
 /// Longitudinal part of the Adams example set.
-pub const ADAMS_EXAMPLE_B: [f64; 11] = [
+pub(crate) const ADAMS_EXAMPLE_B: [f64; 11] = [
     1.67272, -9.46, 1490.0, 30.0, 176.0, 0.0886, 0.00402, -0.0615, 0.20, 0.0299, -0.176,
 ];
 /// Aligning part of the Adams example set.
-pub const ADAMS_EXAMPLE_C: [f64; 18] = [
+pub(crate) const ADAMS_EXAMPLE_C: [f64; 18] = [
     2.34, 1.495, 6.416654, -3.57403, -0.087737, 0.09841, 0.0027699, -0.0001151, 0.10, -1.3329,
     0.025501, -0.02357, 0.03027, -0.0647, 0.0211329, 0.89469, -0.099443, -3.336941,
 ];
 
 /// A search box around a coefficient set: the shape factor C (index 0)
 /// within (1, 3), every other coefficient within ±(5·|c| + 1) of its value.
-pub fn bounds_around(set: &[f64]) -> Vec<(f64, f64)> {
+pub(crate) fn bounds_around(set: &[f64]) -> Vec<(f64, f64)> {
     set.iter()
         .enumerate()
         .map(|(i, c)| {
@@ -136,7 +136,7 @@ impl Pac89 {
     }
 
     /// Lateral curve at `fz_kn` (kN) and camber `gamma_deg` (degrees), raw units.
-    pub fn lateral_curve(&self, fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
+    pub(crate) fn lateral_curve(&self, fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
         let a = &self.a;
         let c = a[0];
         let d = a[1] * fz_kn * fz_kn + a[2] * fz_kn;
@@ -155,7 +155,7 @@ impl Pac89 {
     }
 
     /// Longitudinal curve at `fz_kn` (kN), raw units (x in percent).
-    pub fn longitudinal_curve(b: &[f64; 11], fz_kn: f64) -> CurveCoefficients {
+    pub(crate) fn longitudinal_curve(b: &[f64; 11], fz_kn: f64) -> CurveCoefficients {
         let c = b[0];
         let d = b[1] * fz_kn * fz_kn + b[2] * fz_kn;
         let bcd = (b[3] * fz_kn * fz_kn + b[4] * fz_kn) * (-b[5] * fz_kn).exp();
@@ -170,7 +170,7 @@ impl Pac89 {
     }
 
     /// Aligning curve at `fz_kn` (kN) and camber `gamma_deg`, raw units (SAE sign).
-    pub fn aligning_curve(c: &[f64; 18], fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
+    pub(crate) fn aligning_curve(c: &[f64; 18], fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
         let shape = c[0];
         let d = c[1] * fz_kn * fz_kn + c[2] * fz_kn;
         let bcd = (c[3] * fz_kn * fz_kn + c[4] * fz_kn)
@@ -196,9 +196,7 @@ impl Pac89 {
         if self.form != Pac89Form::AdamsPac89 {
             return Err(ParamError::without_value(
                 "form",
-                "the file uses the 1987 paper's coefficient numbering; this crate implements \
-                 the Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): convert the file and \
-                 set form = \"adams-pac89\"",
+                ParamReason::Pac89PaperNumbering,
             ));
         }
         for (i, v) in self.a.iter().enumerate() {
@@ -206,11 +204,7 @@ impl Pac89 {
         }
         ParamError::positive("a[0]", self.a[0])?;
         if self.a[4] == 0.0 {
-            return Err(ParamError::new(
-                "a[4]",
-                0.0,
-                "a4 divides the load and must not be zero",
-            ));
+            return Err(ParamError::new("a[4]", 0.0, ParamReason::ZeroA4));
         }
         for (i, v) in self.b.iter().flatten().enumerate() {
             ParamError::finite(&format!("b[{i}]"), *v)?;
@@ -229,7 +223,7 @@ impl Pac89 {
     /// coefficient (D, B = BCD/(C·D), E, Sh, Sv) and the friction scaling;
     /// `lateral_force` gives the same force. Equilibrium searches use the
     /// partials for their Jacobians instead of differencing the tyres.
-    pub fn lateral_force_partials(&self, alpha: f64, fz: f64, mu: f64) -> (f64, f64, f64) {
+    pub(crate) fn lateral_force_partials(&self, alpha: f64, fz: f64, mu: f64) -> (f64, f64, f64) {
         if fz <= 0.0 || mu <= 0.0 {
             return (0.0, 0.0, 0.0);
         }

@@ -153,7 +153,7 @@ impl ModelName {
     /// The start tyre of a fit of this model to data whose median load is
     /// `fz` ([`Model::start`]); `None` for a model the swarm does not fit
     /// (the Magic Formula, identified in stages).
-    pub fn start_tyre(self, fz: f64) -> Option<Tyre> {
+    pub(crate) fn start_tyre(self, fz: f64) -> Option<Tyre> {
         self.entry().start(fz)
     }
 

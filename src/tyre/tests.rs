@@ -180,7 +180,8 @@ fn pac89_refuses_1987_numbering() {
     p.form = Pac89Form::Pacejka1987;
     let e = p.validate().unwrap_err();
     assert_eq!(e.key, "form");
-    assert!(e.reason.contains("1987"));
+    assert_eq!(e.reason, crate::error::ParamReason::Pac89PaperNumbering);
+    assert!(e.to_string().contains("1987"), "{e}");
 }
 
 #[test]

@@ -38,10 +38,12 @@ pub type UniTireLongitudinal = UniTireLateral;
 
 /// A neutral start for the aligning arm: 35 mm trail at zero slip falling to
 /// −10 mm as φ grows.
-pub const DEFAULT_ALIGNING: [f64; 10] = [0.035, 0.004, 0.0, 0.01, 0.0, 0.0, 1.2, 10.0, 0.3, 10.0];
+pub(crate) const DEFAULT_ALIGNING: [f64; 10] =
+    [0.035, 0.004, 0.0, 0.01, 0.0, 0.0, 1.2, 10.0, 0.3, 10.0];
 
 /// A start for the longitudinal parameters (the bundled example's).
-pub const DEFAULT_LONGITUDINAL: [f64; 10] = [0.2, 1.0, 18.0, -1.5, 0.1, 1.15, 9.0, 0.75, 0.5, 4.0];
+pub(crate) const DEFAULT_LONGITUDINAL: [f64; 10] =
+    [0.2, 1.0, 18.0, -1.5, 0.1, 1.15, 9.0, 0.75, 0.5, 4.0];
 
 /// Ten aligning-arm parameters c1..c10.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -68,7 +70,7 @@ pub struct UniTire {
 }
 
 /// Dimensionless UniTire force F̄(φ, E), odd in φ.
-pub fn dimensionless_force(phi: f64, e: f64) -> f64 {
+pub(crate) fn dimensionless_force(phi: f64, e: f64) -> f64 {
     let a = phi.abs();
     let f = 1.0 - (-a - e * a * a - (e * e + 1.0 / 12.0) * a * a * a).exp();
     f.copysign(phi)
@@ -76,7 +78,7 @@ pub fn dimensionless_force(phi: f64, e: f64) -> f64 {
 
 impl UniTireLateral {
     /// Curvature factor E at normalised load.
-    pub fn curvature(&self, fzn: f64) -> f64 {
+    pub(crate) fn curvature(&self, fzn: f64) -> f64 {
         0.5 + 0.5 * self.p[0] * (-(fzn / self.p[1]).powi(2)).exp()
     }
     /// Slip stiffness K, N per unit slip.
@@ -121,7 +123,7 @@ impl UniTireLateral {
 
 impl UniTireAligning {
     /// Aligning arm Dx, m, at load `fz_kn` (kN) and |φy|.
-    pub fn arm(&self, fz_kn: f64, phi: f64) -> f64 {
+    pub(crate) fn arm(&self, fz_kn: f64, phi: f64) -> f64 {
         let c = &self.c;
         let dx0 = c[0] + c[1] * fz_kn + c[2] * fz_kn * fz_kn;
         let de = c[3] + c[4] * fz_kn + c[5] * fz_kn * fz_kn;

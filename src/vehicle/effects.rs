@@ -118,7 +118,7 @@ impl CombinedSlip {
     /// `mass` at longitudinal acceleration `ax`; None when the tyres carry
     /// none of it (`force_share` 0), so that the model takes its pure-slip
     /// path bit for bit.
-    pub fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
+    pub(crate) fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
         if self.force_share == 0.0 {
             return None;
         }
@@ -190,7 +190,7 @@ impl Default for Effects {
 impl Effects {
     /// Checks the values for physical sense.
     pub fn validate(&self) -> Result<(), crate::error::ParamError> {
-        use crate::error::ParamError;
+        use crate::error::{ParamError, ParamReason};
         ParamError::non_negative("aero_load[0]", self.aero_load[0])?;
         ParamError::non_negative("aero_load[1]", self.aero_load[1])?;
         ParamError::in_range(
@@ -198,7 +198,7 @@ impl Effects {
             self.road_bank.abs(),
             -1.0,
             0.5,
-            "a bank steeper than 0.5 rad (29°) is not a road",
+            crate::error::Limit::RoadBank,
         )?;
         ParamError::finite("bank_profile_scale", self.bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", self.relaxation_length)?;
@@ -222,8 +222,9 @@ impl Effects {
                 ("brake_front_share", c.brake_front_share),
             ] {
                 if !(0.0..=1.0).contains(&v) {
-                    return Err(ParamError::new(key, v, "a share of the force: 0 to 1")
-                        .within("combined_slip"));
+                    return Err(
+                        ParamError::new(key, v, ParamReason::ForceShare).within("combined_slip")
+                    );
                 }
             }
             ParamError::non_negative("force_share", c.force_share)
@@ -251,13 +252,13 @@ impl Effects {
 
     /// True when body roll feeds back into the forces (roll steer or roll
     /// camber).
-    pub fn uses_roll(&self) -> bool {
+    pub(crate) fn uses_roll(&self) -> bool {
         self.roll_steer != [0.0; 2] || self.roll_camber != [0.0; 2]
     }
 
     /// True when the model needs states beyond (β, r): lagged slip angles
     /// or body roll.
-    pub fn extra_states(&self) -> bool {
+    pub(crate) fn extra_states(&self) -> bool {
         self.lagged() || self.uses_roll()
     }
 }

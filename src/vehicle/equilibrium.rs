@@ -26,7 +26,7 @@ impl Effects {
     /// longitudinal acceleration, and a steady state has no measured bank
     /// profile. Every field is named, so that a new effect must be sorted
     /// here.
-    pub fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
+    pub(crate) fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
         let Effects {
             aero_load: _,
             road_bank: _,
@@ -91,7 +91,11 @@ impl VehicleModel {
     /// (there the loop's solution is that ay) and costs one evaluation of
     /// the four tyres with their partials (closed form for PAC89), where a
     /// differenced Jacobian costs three.
-    pub fn equilibrium_residual(&self, x: &State, inp: &Inputs) -> ([f64; 2], [[f64; 2]; 2]) {
+    pub(crate) fn equilibrium_residual(
+        &self,
+        x: &State,
+        inp: &Inputs,
+    ) -> ([f64; 2], [[f64; 2]; 2]) {
         let v = &self.vehicle;
         let u = inp.speed.max(MIN_SPEED);
         let (a, b) = (v.a, v.b);

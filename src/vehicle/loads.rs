@@ -188,18 +188,18 @@ impl VehicleModel {
     }
 
     /// Wheel loads at lateral acceleration `ay` and speed `speed` (aero).
-    pub fn wheel_loads_at(&self, ay: f64, speed: f64) -> [f64; 4] {
+    pub(crate) fn wheel_loads_at(&self, ay: f64, speed: f64) -> [f64; 4] {
         self.load_split(speed).at(ay)
     }
 
     /// g·sin θ of the road bank, m/s².
-    pub fn bank_acceleration(&self) -> f64 {
+    pub(crate) fn bank_acceleration(&self) -> f64 {
         self.bank_acceleration_at(0.0)
     }
 
     /// g·sin θ of the road bank with a measured bank `bank` on top of the
     /// constant one ([`super::Effects::bank`]), m/s².
-    pub fn bank_acceleration_at(&self, bank: f64) -> f64 {
+    pub(crate) fn bank_acceleration_at(&self, bank: f64) -> f64 {
         let bank = self.options.effects.bank(bank);
         // No sine in the hot loop of the base model.
         if bank == 0.0 {

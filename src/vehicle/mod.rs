@@ -35,7 +35,7 @@ mod equilibrium;
 mod loads;
 mod params;
 mod rates;
-pub mod steady;
+pub(crate) mod steady;
 
 pub use effects::{CombinedSlip, Effects, RollModel, MIN_RELAXATION_LENGTH};
 pub use loads::LoadTransferSeed;
@@ -51,7 +51,7 @@ use serde::{Deserialize, Serialize};
 pub use crate::constants::G;
 
 /// Lowest forward speed the model evaluates, m/s.
-pub const MIN_SPEED: f64 = 0.5;
+pub(crate) const MIN_SPEED: f64 = 0.5;
 
 /// How slip angles and force projections are computed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -189,14 +189,14 @@ impl VehicleModel {
     /// Understeer gradient K (rad per m/s² of lateral acceleration) of the
     /// linearised model at zero slip, from the axle cornering stiffnesses at
     /// static load: `K = (m/l)·(b/Cf − a/Cr)` (positive: understeer).
-    pub fn understeer_gradient(&self) -> f64 {
+    pub(crate) fn understeer_gradient(&self) -> f64 {
         let v = &self.vehicle;
         let (cf, cr) = self.axle_cornering_stiffness();
         v.mass / v.wheelbase() * (v.b / cf - v.a / cr)
     }
 
     /// Axle cornering stiffness (front, rear) at static load, N/rad.
-    pub fn axle_cornering_stiffness(&self) -> (f64, f64) {
+    pub(crate) fn axle_cornering_stiffness(&self) -> (f64, f64) {
         self.axle_cornering_stiffness_under(self.vehicle.static_axle_loads())
     }
 

@@ -4,7 +4,7 @@
 //! to the front and rear axle.
 
 use crate::constants::G;
-use crate::error::ParamError;
+use crate::error::{ParamError, ParamReason};
 use serde::{Deserialize, Serialize};
 
 /// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
@@ -62,13 +62,13 @@ impl Vehicle {
     }
 
     /// Static axle loads (front, rear), N.
-    pub fn static_axle_loads(&self) -> (f64, f64) {
+    pub(crate) fn static_axle_loads(&self) -> (f64, f64) {
         let w = self.mass * G / self.wheelbase();
         (w * self.b, w * self.a)
     }
 
     /// Front share of lateral load transfer χ.
-    pub fn front_transfer_share(&self) -> f64 {
+    pub(crate) fn front_transfer_share(&self) -> f64 {
         self.load_transfer_front_share
             .unwrap_or(self.b / self.wheelbase())
     }
@@ -86,9 +86,7 @@ impl Vehicle {
             return Err(ParamError::new(
                 "mass",
                 self.mass,
-                &format!(
-                    "above {MAX_MASS:e} kg, more than any wheeled vehicle: check the unit (kg)"
-                ),
+                ParamReason::MassTooLarge { max: MAX_MASS },
             ));
         }
         for (key, v) in [
@@ -102,7 +100,7 @@ impl Vehicle {
                 return Err(ParamError::new(
                     key,
                     v,
-                    &format!("above {MAX_LENGTH} m: check the unit (m)"),
+                    ParamReason::LengthTooLarge { max: MAX_LENGTH },
                 ));
             }
         }
@@ -111,10 +109,11 @@ impl Vehicle {
             return Err(ParamError::new(
                 "yaw_inertia",
                 self.yaw_inertia,
-                &format!(
-                    "yaw_inertia / (mass·a·b) = {index:.3e}, outside {}–{} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)",
-                    DYNAMIC_INDEX.0, DYNAMIC_INDEX.1
-                ),
+                ParamReason::DynamicIndex {
+                    index,
+                    lo: DYNAMIC_INDEX.0,
+                    hi: DYNAMIC_INDEX.1,
+                },
             ));
         }
         if let Some(l) = self.wheelbase {
@@ -123,12 +122,10 @@ impl Vehicle {
                 return Err(ParamError::new(
                     "wheelbase",
                     l,
-                    &format!(
-                        "a + b = {} + {} = {:.4} m differs from the wheelbase by more than 1 mm",
-                        self.a,
-                        self.b,
-                        self.wheelbase()
-                    ),
+                    ParamReason::WheelbaseMismatch {
+                        a: self.a,
+                        b: self.b,
+                    },
                 ));
             }
         }
@@ -137,7 +134,7 @@ impl Vehicle {
                 return Err(ParamError::new(
                     "load_transfer_front_share",
                     chi,
-                    "a share of the load transfer must lie in [0, 1]",
+                    ParamReason::TransferShare,
                 ));
             }
         }

@@ -129,7 +129,7 @@ impl VehicleModel {
     }
 
     /// Front and rear slip angles for a state and inputs (no roll).
-    pub fn slip_angles(&self, x: &State, inp: &Inputs) -> (f64, f64) {
+    pub(crate) fn slip_angles(&self, x: &State, inp: &Inputs) -> (f64, f64) {
         let u = inp.speed.max(MIN_SPEED);
         self.kinematic_slip(x.beta, x.yaw_rate, u, [inp.steer, 0.0])
     }
@@ -145,7 +145,7 @@ impl VehicleModel {
     /// The full state of a (β, r) state, the extra states zero when no
     /// effect needs them, else at their quasi-static values
     /// ([`VehicleModel::quasi_static_state`]).
-    pub fn state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
+    pub(crate) fn state_vector(&self, x: &State, inp: &Inputs) -> StateVector {
         if self.options.effects.extra_states() {
             self.quasi_static_state(x, inp)
         } else {
@@ -162,7 +162,7 @@ impl VehicleModel {
     /// integrator is stable where its step times this lies inside its
     /// stability region: RK4 at 20 ms is not for stiff racing axles at
     /// 5–15 m/s, whose yaw mode reaches 250–1000 1/s.
-    pub fn fastest_rate(&self, speed: f64, friction: f64) -> f64 {
+    pub(crate) fn fastest_rate(&self, speed: f64, friction: f64) -> f64 {
         let v = &self.vehicle;
         let e = &self.options.effects;
         let u = speed.max(MIN_SPEED);
@@ -204,7 +204,7 @@ impl VehicleModel {
     /// The full state of a (β, r) state with the extra states at their
     /// quasi-static values: roll at its steady value for ay = u·r, the lag
     /// states at the kinematic slip angles that roll gives.
-    pub fn quasi_static_state(&self, x: &State, inp: &Inputs) -> StateVector {
+    pub(crate) fn quasi_static_state(&self, x: &State, inp: &Inputs) -> StateVector {
         let e = &self.options.effects;
         let u = inp.speed.max(MIN_SPEED);
         let phi = e.roll.gradient * u * x.yaw_rate;
@@ -216,7 +216,7 @@ impl VehicleModel {
     /// Derivatives of the full state and the outputs, with the load-transfer
     /// loop solved to relative `tolerance` on g(ay), started from (and
     /// updated into) `seed`.
-    pub fn rates(
+    pub(crate) fn rates(
         &self,
         x: &StateVector,
         inp: &Inputs,
@@ -332,7 +332,12 @@ impl VehicleModel {
     /// State derivatives and outputs, with the load-transfer solve started
     /// from (and updated into) `seed`: the integrator passes the previous
     /// stage's solution. The answer is the same to the loop's tolerance.
-    pub fn evaluate_seeded(&self, x: &State, inp: &Inputs, seed: &mut LoadTransferSeed) -> Outputs {
+    pub(crate) fn evaluate_seeded(
+        &self,
+        x: &State,
+        inp: &Inputs,
+        seed: &mut LoadTransferSeed,
+    ) -> Outputs {
         self.evaluate_to(x, inp, seed, LOAD_TOLERANCE)
     }
 
@@ -341,7 +346,7 @@ impl VehicleModel {
     /// differentiate the right-hand side numerically and want it smooth to
     /// near rounding (1e-13), not to the simulation's 1e-9. The extra states
     /// sit at their quasi-static values ([`VehicleModel::state_vector`]).
-    pub fn evaluate_to(
+    pub(crate) fn evaluate_to(
         &self,
         x: &State,
         inp: &Inputs,

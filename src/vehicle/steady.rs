@@ -42,7 +42,7 @@ pub struct SteadyState {
 /// Damped Newton iteration for a 2×2 system with a central-difference
 /// Jacobian. Returns the root and the final residual norm, or `None` when it
 /// stalls before `tol`.
-pub fn newton2(
+pub(crate) fn newton2(
     f: impl Fn([f64; 2]) -> [f64; 2],
     x0: [f64; 2],
     scale: [f64; 2],
@@ -104,7 +104,7 @@ pub fn newton2(
 
 /// Damped Newton iteration as [`newton2`] for a system that returns its
 /// Jacobian with its value (one evaluation per iteration instead of five).
-pub fn newton2_analytic(
+pub(crate) fn newton2_analytic(
     f: impl Fn([f64; 2]) -> ([f64; 2], [[f64; 2]; 2]),
     x0: [f64; 2],
     tol: f64,
@@ -151,7 +151,7 @@ pub fn newton2_analytic(
 impl VehicleModel {
     /// The steady state at `speed` with lateral acceleration `ay`: the steer
     /// angle that holds it and the sideslip. Fails beyond the friction limit.
-    pub fn steady_state_for_lateral_acceleration(
+    pub(crate) fn steady_state_for_lateral_acceleration(
         &self,
         speed: f64,
         friction: f64,

@@ -4,39 +4,8 @@
 //! (the method is described in [`super`]). Units: the variable's own (N,
 //! rad, Pa).
 
-use crate::identify::display::fixed;
+pub use crate::error::Variable;
 use serde::Serialize;
-
-/// A grouping variable of rig data.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Variable {
-    /// Vertical load, N.
-    Load,
-    /// Inclination angle, rad.
-    Camber,
-    /// Inflation pressure, Pa.
-    Pressure,
-}
-
-impl Variable {
-    /// Column name in the rig file.
-    pub fn column(self) -> &'static str {
-        match self {
-            Variable::Load => "fz",
-            Variable::Camber => "camber",
-            Variable::Pressure => "pressure",
-        }
-    }
-    /// A value in the unit people read it in.
-    pub fn display(self, v: f64) -> String {
-        match self {
-            Variable::Load => format!("{} N", fixed(v, 0)),
-            Variable::Camber => format!("{}°", fixed(v.to_degrees(), 2)),
-            Variable::Pressure => format!("{} kPa", fixed(v / 1000.0, 1)),
-        }
-    }
-}
 
 /// A level of a grouping variable.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

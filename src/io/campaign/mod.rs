@@ -33,7 +33,9 @@ use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road}
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::{EffectKind, RollModel};
-use crate::error::{named, InputError, InputProblem, NameKind, ParamError};
+use crate::error::{
+    named, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError, ParamReason,
+};
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
@@ -159,41 +161,37 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
         .validate()
         .map_err(|e| param_error(src, Some("roll"), e))?;
     let s = &f.diagnose;
-    ParamError::in_range(
-        "step",
-        s.step,
-        1e-4,
-        0.05,
-        "a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)",
-    )
-    .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
-    .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
-    .and_then(|_| {
-        ParamError::in_range(
-            "max_effects",
-            s.max_effects as f64,
-            0.0,
-            f64::INFINITY,
-            "the verdict names up to this many effects, so at least one",
-        )
-    })
-    .and_then(|_| {
-        ParamError::in_range(
-            "particles",
-            s.particles as f64,
-            0.0,
-            f64::INFINITY,
-            "each effect fit's swarm needs a particle",
-        )
-    })
-    .map_err(|e| param_error(src, Some("diagnose"), e))?;
+    ParamError::in_range("step", s.step, 1e-4, 0.05, Limit::ReplayStep)
+        .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
+        .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
+        .and_then(|_| {
+            ParamError::in_range(
+                "max_effects",
+                s.max_effects as f64,
+                0.0,
+                f64::INFINITY,
+                Limit::MaxEffects,
+            )
+        })
+        .and_then(|_| {
+            ParamError::in_range(
+                "particles",
+                s.particles as f64,
+                0.0,
+                f64::INFINITY,
+                Limit::Particles,
+            )
+        })
+        .map_err(|e| param_error(src, Some("diagnose"), e))?;
     if let Some(seg) = f.runs.as_ref().and_then(|r| r.segment) {
         ParamError::in_range(
             "segment",
             seg,
             MIN_RUN_SECONDS,
             f64::INFINITY,
-            &format!("a segment must be longer than {MIN_RUN_SECONDS} s"),
+            Limit::Segment {
+                min: MIN_RUN_SECONDS,
+            },
         )
         .map_err(|e| param_error(src, Some("runs"), e))?;
     }
@@ -213,22 +211,25 @@ fn candidate_effects(
     if names.is_empty() {
         return Err(src.value_error(&ParamError::without_value(
             "diagnose.effects",
-            "an empty list: name at least one effect, or leave the key out for the whole library",
+            ParamReason::NoEffects,
         )));
     }
     let mut kinds = Vec::with_capacity(names.len());
     for n in names {
         let kind = EffectKind::from_name(n).ok_or_else(|| {
-            let all: Vec<&str> = EffectKind::ALL.iter().map(|e| e.name()).collect();
             src.value_error(&ParamError::without_value(
                 "diagnose.effects",
-                &format!("unknown effect `{n}`: one of {}", all.join(", ")),
+                ParamReason::Name(Box::new(OptionsError::UnknownName {
+                    what: NameKind::Effect,
+                    given: n.clone(),
+                    known: EffectKind::ALL.iter().map(|e| e.name()).collect(),
+                })),
             ))
         })?;
         if kinds.contains(&kind) {
             return Err(src.value_error(&ParamError::without_value(
                 "diagnose.effects",
-                &format!("`{n}` is listed twice: each candidate is fitted once"),
+                ParamReason::EffectTwice { name: n.clone() },
             )));
         }
         kinds.push(kind);
@@ -247,34 +248,34 @@ fn base_tyres(
 ) -> Result<BaseTyres, InputError> {
     let spec = f.tyres.clone().unwrap_or_default();
     let rig_default = base.join("tyre_rig.csv");
-    let rig =
-        match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
-            (Some(t), None, None, None) => {
-                inputs.push(base.join(t));
-                src.referenced_file("tyres.file", &base.join(t))?;
-                let mut t = load_tyre(&base.join(t))?;
-                apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
-                return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
-            }
-            (None, Some(fr), Some(re), None) => {
-                inputs.extend([base.join(fr), base.join(re)]);
-                src.referenced_file("tyres.front", &base.join(fr))?;
-                src.referenced_file("tyres.rear", &base.join(re))?;
-                let (mut f, mut r) = (load_tyre(&base.join(fr))?, load_tyre(&base.join(re))?);
-                apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
-                return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
-            }
-            (None, None, None, Some(rig)) => {
-                src.referenced_file("tyres.rig", &base.join(rig))?;
-                base.join(rig)
-            }
-            (None, None, None, None) if folder && rig_default.is_file() => rig_default,
-            (None, None, None, None) => return Ok(BaseTyres::FromRuns),
-            _ => return Err(src.value_error(&ParamError::without_value(
-                "tyres",
-                "give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)",
-            ))),
-        };
+    let rig = match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
+        (Some(t), None, None, None) => {
+            inputs.push(base.join(t));
+            src.referenced_file("tyres.file", &base.join(t))?;
+            let mut t = load_tyre(&base.join(t))?;
+            apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
+            return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
+        }
+        (None, Some(fr), Some(re), None) => {
+            inputs.extend([base.join(fr), base.join(re)]);
+            src.referenced_file("tyres.front", &base.join(fr))?;
+            src.referenced_file("tyres.rear", &base.join(re))?;
+            let (mut f, mut r) = (load_tyre(&base.join(fr))?, load_tyre(&base.join(re))?);
+            apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
+            return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
+        }
+        (None, None, None, Some(rig)) => {
+            src.referenced_file("tyres.rig", &base.join(rig))?;
+            base.join(rig)
+        }
+        (None, None, None, None) if folder && rig_default.is_file() => rig_default,
+        (None, None, None, None) => return Ok(BaseTyres::FromRuns),
+        _ => {
+            return Err(
+                src.value_error(&ParamError::without_value("tyres", ParamReason::TyreSource))
+            )
+        }
+    };
     let name = spec.model.as_deref().unwrap_or("pac89");
     // The rig fit starts a swarm, which the staged Magic Formula does not.
     let model = named(
@@ -283,7 +284,12 @@ fn base_tyres(
         NameKind::TyreModel,
         name,
     )
-    .map_err(|why| src.value_error(&ParamError::without_value("tyres.model", &why.to_string())))?;
+    .map_err(|why| {
+        src.value_error(&ParamError::without_value(
+            "tyres.model",
+            ParamReason::Name(Box::new(why)),
+        ))
+    })?;
     let data = read_rig(&rig)?;
     inputs.push(rig.clone());
     Ok(BaseTyres::Rig {

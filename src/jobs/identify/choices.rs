@@ -57,7 +57,7 @@ impl IdentifyModel {
     }
 
     /// The tyre model of a swarm fit (`None`: a staged fit).
-    pub fn swarm_model(self) -> Option<ModelName> {
+    pub(crate) fn swarm_model(self) -> Option<ModelName> {
         match self {
             Self::Swarm(m) => Some(m),
             Self::Staged(..) => None,

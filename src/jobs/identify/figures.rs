@@ -4,8 +4,8 @@
 //! camber (slip angle in degrees, slip ratio in percent).
 
 use super::SwarmReport;
+use crate::format::fixed;
 use crate::identify::data::{Condition, Point, SlipAxis};
-use crate::identify::display::fixed;
 use crate::identify::mf_staged::{MfRow, Stage, StageReport};
 use crate::identify::Channel;
 use crate::report::plot::{Figure, Panel, Series, Style};

@@ -8,8 +8,8 @@
 //! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
+use crate::format::{distinct, fixed};
 use crate::identify::data::{Condition, Point};
-use crate::identify::display::{distinct, fixed};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
@@ -17,7 +17,7 @@ mod choices;
 mod figures;
 mod staged;
 
-use crate::error::{Error, FitError, OutputError};
+use crate::error::{Error, FitError, OutputError, ParamError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::{ModelName, Pac89, Tyre};
@@ -27,7 +27,10 @@ use staged::run_staged;
 pub use staged::StagedJob;
 use std::path::PathBuf;
 
-/// What `identify` is asked to do.
+/// What `identify` is asked to do. The fields are public for struct
+/// literals (the command line, Python); [`run`] checks them first
+/// ([`Options::validate`]), so no fit starts from a bin or a level that is
+/// not a number.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Rig data file.
@@ -57,9 +60,25 @@ pub struct Options {
 }
 
 impl Options {
+    /// Checks the numbers: the bins (degrees, slip ratio) finite and
+    /// non-negative, a pressure (Pa) positive, a camber (rad) finite; the
+    /// error names the option as the command line and Python do
+    /// (`bin_deg`, `bin_kappa`, `pressure`, `camber`).
+    pub fn validate(&self) -> Result<(), ParamError> {
+        ParamError::non_negative("bin_deg", self.alpha_bin_deg)?;
+        ParamError::non_negative("bin_kappa", self.kappa_bin)?;
+        if let Some(p) = self.pressure {
+            ParamError::positive("pressure", p)?;
+        }
+        if let Some(c) = self.camber {
+            ParamError::finite("camber", c)?;
+        }
+        Ok(())
+    }
+
     /// The tyre file written: `out`, else `out/<data stem>_<model>.toml`
     /// (`.tir` for the Magic Formula).
-    pub fn output_path(&self) -> PathBuf {
+    pub(crate) fn output_path(&self) -> PathBuf {
         let ext = if self.model.swarm_model().is_some() {
             "toml"
         } else {
@@ -248,10 +267,12 @@ pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
     )
 }
 
-/// Runs `identify`: reads and groups the data, fits, and returns the report
-/// (nothing is written: [`IdentifyReport::write`]). An output that is one
-/// of the inputs is refused before anything is fitted.
+/// Runs `identify`: checks the options, reads and groups the data, fits,
+/// and returns the report (nothing is written: [`IdentifyReport::write`]).
+/// An output that is one of the inputs is refused before anything is
+/// fitted.
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
+    o.validate()?;
     match o.model.swarm_model() {
         Some(model) => run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r))),
         None => run_staged(o).map(|r| IdentifyReport::Staged(Box::new(r))),

@@ -72,7 +72,7 @@ pub const MIN_RUN_SECONDS: f64 = 2.0;
 pub const MIN_RUN_SAMPLES: usize = 20;
 
 /// Default lowest speed of a replayed sample, m/s.
-pub const DEFAULT_MIN_SPEED: f64 = 5.0;
+pub(crate) const DEFAULT_MIN_SPEED: f64 = 5.0;
 /// The channels searched for holds and glitches: the replay's inputs and
 /// its responses.
 const SEARCHED: [RunChannel; 5] = [
@@ -84,19 +84,19 @@ const SEARCHED: [RunChannel; 5] = [
 ];
 
 /// Below this speed a slow span is a standstill rather than a crawl, m/s.
-pub const STANDSTILL_SPEED: f64 = 0.5;
+pub(crate) const STANDSTILL_SPEED: f64 = 0.5;
 /// Spike and zero-read threshold in robust deviations of the differences.
-pub const SPIKE_MADS: f64 = 10.0;
+pub(crate) const SPIKE_MADS: f64 = 10.0;
 /// Threshold floor as a share of the channel's 1–99 % range.
-pub const RANGE_FLOOR: f64 = 0.02;
+pub(crate) const RANGE_FLOOR: f64 = 0.02;
 /// Longest run of zeros still called a zero read.
-pub const MAX_ZERO_RUN: usize = 10;
+pub(crate) const MAX_ZERO_RUN: usize = 10;
 /// Fewest samples of an exact hold called stuck.
-pub const MIN_STUCK: usize = 5;
+pub(crate) const MIN_STUCK: usize = 5;
 /// Samples on each side of a hold that show how the channel moves there.
-pub const STUCK_CONTEXT: usize = 10;
+pub(crate) const STUCK_CONTEXT: usize = 10;
 /// A time gap: this many median sample intervals.
-pub const GAP_INTERVALS: f64 = 5.0;
+pub(crate) const GAP_INTERVALS: f64 = 5.0;
 
 /// Cleaning settings.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -38,7 +38,7 @@ impl RunChannel {
         }
     }
     /// Does it drive the replay (repaired) rather than answer it (masked).
-    pub fn is_input(self) -> bool {
+    pub(crate) fn is_input(self) -> bool {
         matches!(self, RunChannel::Speed | RunChannel::Steer)
     }
     pub(super) fn of(self, run: &MeasuredRun) -> Option<&Vec<f64>> {

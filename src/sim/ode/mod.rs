@@ -149,7 +149,7 @@ impl<const N: usize> DenseSolution<N> {
         self.segments.last().map_or(f64::NAN, |s| s.t0 + s.h)
     }
     /// Accepted step boundaries (start, every step end).
-    pub fn step_times(&self) -> impl Iterator<Item = f64> + '_ {
+    pub(crate) fn step_times(&self) -> impl Iterator<Item = f64> + '_ {
         self.segments
             .first()
             .map(|s| s.t0)

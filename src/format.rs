@@ -1,6 +1,8 @@
-//! Numbers as identification prints them: no negative zero (a camber
-//! level a hair below 0 is "0.00°"), and two values compared in a
-//! sentence printed with the digits that tell them apart.
+//! Numbers as messages and reports print them: no negative zero (a camber
+//! level a hair below 0 is "0.00°"), significant digits for values that
+//! span decades, and two values compared in a sentence printed with the
+//! digits that tell them apart. This module imports nothing, so that any
+//! layer (the errors, identification, the jobs) can use it.
 
 /// `v` with `decimals` decimals; a value that rounds to zero prints as an
 /// unsigned zero (a camber of −1e-5 rad is "0.00°", not "-0.00°").
@@ -23,7 +25,12 @@ pub fn significant(v: f64, digits: usize) -> String {
 /// `max_decimals`, as make the printed values differ, so a sentence saying
 /// one is below the other does not print two equal numbers. The flag is
 /// false when they agree to `max_decimals`.
-pub fn distinct(a: f64, b: f64, decimals: usize, max_decimals: usize) -> (String, String, bool) {
+pub(crate) fn distinct(
+    a: f64,
+    b: f64,
+    decimals: usize,
+    max_decimals: usize,
+) -> (String, String, bool) {
     let mut d = decimals;
     loop {
         let (sa, sb) = (fixed(a, d), fixed(b, d));

@@ -1,0 +1,226 @@
+//! Why a parameter value is wrong: the kinds of [`ParamReason`], each with
+//! the values that describe it, and the physical limits of a range check
+//! ([`Limit`]). The messages are built from the kinds; a caller matches the
+//! kind. Units as the key's (SI unless the key names another).
+
+use super::options::{ModeError, OptionsError};
+use thiserror::Error;
+
+/// Why a parameter value is wrong.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum ParamReason {
+    /// Not a finite number.
+    #[error("must be a finite number")]
+    NotFinite,
+    /// Zero or negative where only positive values are physical.
+    #[error("must be positive")]
+    NotPositive,
+    /// Negative where only non-negative values are physical.
+    #[error("must not be negative")]
+    Negative,
+    /// Outside the range `(lo, hi]`, for the reason `why`.
+    #[error("must lie in ({lo}, {hi}]: {why}")]
+    OutOfRange {
+        /// The exclusive lower end.
+        lo: f64,
+        /// The inclusive upper end.
+        hi: f64,
+        /// Why the range is what it is.
+        why: Limit,
+    },
+    /// A mass above any wheeled vehicle's (a unit slip), kg.
+    #[error("above {max:e} kg, more than any wheeled vehicle: check the unit (kg)")]
+    MassTooLarge {
+        /// The largest mass accepted, kg.
+        max: f64,
+    },
+    /// A length above any vehicle's (a unit slip), m.
+    #[error("above {max} m: check the unit (m)")]
+    LengthTooLarge {
+        /// The largest length accepted, m.
+        max: f64,
+    },
+    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have.
+    #[error("yaw_inertia / (mass·a·b) = {index:.3e}, outside {lo}–{hi} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)")]
+    DynamicIndex {
+        /// The index of the values given.
+        index: f64,
+        /// The smallest index accepted.
+        lo: f64,
+        /// The largest index accepted.
+        hi: f64,
+    },
+    /// A wheelbase that is not a + b (to 1 mm).
+    #[error("a + b = {a} + {b} = {:.4} m differs from the wheelbase by more than 1 mm", a + b)]
+    WheelbaseMismatch {
+        /// Centre of gravity to front axle, m.
+        a: f64,
+        /// Centre of gravity to rear axle, m.
+        b: f64,
+    },
+    /// A share of the lateral load transfer outside [0, 1].
+    #[error("a share of the load transfer must lie in [0, 1]")]
+    TransferShare,
+    /// A share of a longitudinal force outside [0, 1].
+    #[error("a share of the force: 0 to 1")]
+    ForceShare,
+    /// A PAC89 file in the 1987 paper's numbering.
+    #[error("the file uses the 1987 paper's coefficient numbering; this crate implements the Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): convert the file and set form = \"adams-pac89\"")]
+    Pac89PaperNumbering,
+    /// PAC89's a4, which divides the load, at zero.
+    #[error("a4 divides the load and must not be zero")]
+    ZeroA4,
+    /// A sweep axis's unit that the axis does not take.
+    #[error("unknown unit `{unit}` (steer: rad or deg; speed: m/s or km/h; friction: none)")]
+    UnknownSweepUnit {
+        /// The unit as written.
+        unit: String,
+    },
+    /// A range without a positive step or with its end before its start.
+    #[error("a range needs step > 0 and to ≥ from")]
+    BadRange,
+    /// A range or list of more than a million values.
+    #[error("more than a million values")]
+    TooManyValues,
+    /// A sweep axis without values.
+    #[error("no values")]
+    NoValues,
+    /// A stiffness axis whose step or count gives no value.
+    #[error("no values (a step or count that gives none?)")]
+    NoValuesFromRange,
+    /// A swept steer beyond ±90°, or a friction or speed not positive.
+    #[error("steer must lie within ±90°, friction and speed must be positive")]
+    SweepValue,
+    /// An effect the equilibrium analysis does not model.
+    #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
+    NotInEquilibrium,
+    /// A tolerance given for the fixed-step RK4.
+    #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
+    ToleranceWithRk4,
+    /// A lateral acceleration no steady state holds at the speed.
+    #[error("no steady state at {speed} m/s with ay = {ay} m/s²: beyond the vehicle's lateral limit (or the solver did not converge)")]
+    NoSteadyState {
+        /// The speed, m/s.
+        speed: f64,
+        /// The lateral acceleration asked, m/s².
+        ay: f64,
+    },
+    /// A step steer given both or neither of its amplitudes.
+    #[error("a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)")]
+    StepSteerAmplitude,
+    /// An empty list of candidate effects.
+    #[error("an empty list: name at least one effect, or leave the key out for the whole library")]
+    NoEffects,
+    /// A candidate effect listed twice.
+    #[error("`{name}` is listed twice: each candidate is fitted once")]
+    EffectTwice {
+        /// The effect.
+        name: String,
+    },
+    /// A `[tyres]` table that names no single source of tyres.
+    #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
+    TyreSource,
+    /// A name that is no member of its closed set (a model, a unit, a
+    /// metric, an effect): [`OptionsError::UnknownName`]. Boxed, as every
+    /// large payload here, so that an error stays small to return.
+    #[error(transparent)]
+    Name(Box<OptionsError>),
+    /// An MFeval `useMode` code that cannot be used.
+    #[error(transparent)]
+    Mode(Box<ModeError>),
+    /// Inverse queries without a stiffness map to invert.
+    #[error("inverse queries need a [stiffness] map with at least 2 × 2 values")]
+    InverseWithoutMap,
+    /// A study whose manoeuvre is not a step steer.
+    #[error("a study needs a step steer")]
+    StudyNeedsStepSteer,
+    /// A cornering stiffness that is not positive.
+    #[error("a cornering stiffness must be positive")]
+    StiffnessNotPositive,
+    /// A validation index beyond the RBF's pairs.
+    #[error("only {pairs} pairs")]
+    TooFewPairs {
+        /// The pairs there are.
+        pairs: usize,
+    },
+    /// A programme the four-wheel truth does not drive.
+    #[error("the four-wheel truth holds its speed on a flat road: it drives the handling programme, not `{programme}`")]
+    TruthProgramme {
+        /// The programme asked.
+        programme: String,
+    },
+    /// An effect the four-wheel truth does not have.
+    #[error("not an effect of the four-wheel truth")]
+    NotATruthEffect,
+    /// An effect given another number of parameters than it takes.
+    #[error("takes {needed} parameters")]
+    ParameterCount {
+        /// The parameters it takes.
+        needed: usize,
+    },
+    /// A reason given as text by a caller that has no kind for it yet
+    /// (prefer a kind: add one here).
+    #[error("{0}")]
+    Described(String),
+}
+
+impl From<&str> for ParamReason {
+    fn from(s: &str) -> Self {
+        ParamReason::Described(s.to_string())
+    }
+}
+
+impl From<&String> for ParamReason {
+    fn from(s: &String) -> Self {
+        ParamReason::Described(s.clone())
+    }
+}
+
+/// Why a range check's range is what it is ([`ParamReason::OutOfRange`]).
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[non_exhaustive]
+pub enum Limit {
+    /// The simplified Magic Formula's shape factor C.
+    #[error("a shape factor outside (0, 2] has no physical meaning")]
+    ShapeFactor,
+    /// A road's bank angle.
+    #[error("a bank steeper than 0.5 rad (29°) is not a road")]
+    RoadBank,
+    /// The replay step of a diagnosis.
+    #[error("a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)")]
+    ReplayStep,
+    /// The most effects a verdict names.
+    #[error("the verdict names up to this many effects, so at least one")]
+    MaxEffects,
+    /// The particles of each effect fit's swarm.
+    #[error("each effect fit's swarm needs a particle")]
+    Particles,
+    /// The length of a run's segment, s.
+    #[error("a segment must be longer than {min} s")]
+    Segment {
+        /// The shortest run, s.
+        min: f64,
+    },
+    /// The output step of a simulation.
+    #[error("rows (and RK4 steps) more than 50 ms apart miss the yaw mode")]
+    OutputStep,
+    /// Dormand–Prince's relative tolerance.
+    #[error("a relative tolerance below 1e-14 is below rounding, above 1e-2 not a simulation")]
+    RelativeTolerance,
+    /// Dormand–Prince's absolute tolerance.
+    #[error("the absolute tolerance (rad, rad/s) must lie in [1e-16, 1e-2]")]
+    AbsoluteTolerance,
+    /// Dormand–Prince's largest step.
+    #[error("the largest step must lie in [1e-6, 1] s")]
+    MaxStep,
+    /// A manoeuvre's end.
+    #[error("the run must end after it starts")]
+    EndAfterStart,
+    /// A step steer's ramp.
+    #[error("ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)")]
+    RampTime,
+    /// The time a step steer needs to settle.
+    #[error("the run must last at least 2 s after the steer reaches its final value, to reach steady state")]
+    SettleTime,
+}

@@ -257,7 +257,7 @@ fn axles_from_runs(
     };
     let stamps = timing.map(|_| Stamps::default());
     let problem = Problem::new(
-        |p: &[f64]| counted(&stamps, &build, p),
+        |p: &[f64]| counted(&stamps, build, p),
         runs.iter().collect(),
         scales_hint,
         AXLE_BOUNDS.to_vec(),
@@ -286,7 +286,7 @@ fn axles_from_runs(
                 .collect();
             let stamps = timing.map(|_| Stamps::default());
             let p = Problem::new(
-                |p: &[f64]| counted(&stamps, &build, p),
+                |p: &[f64]| counted(&stamps, build, p),
                 train,
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),

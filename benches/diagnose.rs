@@ -5,8 +5,11 @@
 //! replay of its 8 runs, which every fit evaluation pays. And one replay of
 //! the Putnam racing log (`replay_racing_log_460s_stiff_axles`: 460 s in 23
 //! pieces, with the stiff racing axles its diagnosis fits, each piece by the
-//! method it is stable under): what each evaluation of that diagnosis costs.
-//! Skipped when the log (outside the repository) is missing.
+//! method it is stable under): what each evaluation of that diagnosis costs;
+//! and its whole diagnosis against the full library
+//! (`putnam_460s_full_library`, the axles identified from the runs). Both
+//! skipped, with a line saying so, when the log (outside the repository) is
+//! missing.
 //!
 //! `RAYON_NUM_THREADS=2 cargo bench --bench diagnose`
 
@@ -60,7 +63,9 @@ fn racing_log(c: &mut Criterion) {
     let campaign = match handling::io::campaign::load_campaign(&path) {
         Ok(c) => c,
         Err(e) => {
-            eprintln!("replay_racing_log_460s_stiff_axles skipped: {e}");
+            eprintln!(
+                "diagnose/replay_racing_log_460s_stiff_axles and diagnose/putnam_460s_full_library skipped: {e}"
+            );
             return;
         }
     };
@@ -81,6 +86,10 @@ fn racing_log(c: &mut Criterion) {
                 black_box(r.errors(black_box(&model)));
             }
         })
+    });
+    g.measurement_time(Duration::from_secs(900));
+    g.bench_function("putnam_460s_full_library", |b| {
+        b.iter(|| diagnose(black_box(&campaign), None).unwrap())
     });
     g.finish();
 }

@@ -1,12 +1,18 @@
 //! Identification speed: a PAC89 lateral fit (PSO + Levenberg–Marquardt) on
 //! Zhang & Li's (2017) three loads × 85 points (the target: under 2 s on one
-//! core), and the cost of one objective evaluation.
+//! core), and the cost of one objective evaluation. And
+//! `identify --model mf61` on the Hoosier rig file (`mf61_hoosier_rig`:
+//! 59,965 samples over every pressure and camber, Wei et al.'s (2010)
+//! staged fit), read from the data folder beside the checkout: skipped,
+//! with a line saying so, when the file is missing.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::identify::data::identification_conditions;
 use handling::identify::{fit_lateral, FitProblem, FitSettings};
+use handling::jobs::identify::{self as job, IdentifyModel, Options, Polish, StartArg};
 use handling::optim::local::Residuals;
 use handling::tyre::{Pac89, Parameterised, Tyre};
+use std::time::Duration;
 
 fn pac89_fit(c: &mut Criterion) {
     let truth = Tyre::Pac89(Pac89::adams_example());
@@ -42,5 +48,40 @@ fn pac89_fit(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, pac89_fit);
+/// The Hoosier rig file, as the command line's `identify <file> --model
+/// mf61` fits it (its default options; nothing written).
+fn mf61_hoosier(c: &mut Criterion) {
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/tyre_ttc_hoosier_43075/cornering.csv");
+    if !data.is_file() {
+        eprintln!(
+            "identify/mf61_hoosier_rig skipped: {} is missing",
+            data.display()
+        );
+        return;
+    }
+    let options = Options {
+        data,
+        model: IdentifyModel::Mf61,
+        seed: 1,
+        out: Some(std::env::temp_dir().join("mf61_hoosier_rig_bench.tir")),
+        pressure: None,
+        camber: None,
+        local: Polish::Lm,
+        alpha_bin_deg: 0.25,
+        kappa_bin: 0.0025,
+        start: StartArg::Data,
+        template: None,
+        max_iterations: handling::identify::mf_staged::LM_ITERATIONS,
+    };
+    let mut g = c.benchmark_group("identify");
+    g.sample_size(10);
+    g.measurement_time(Duration::from_secs(150));
+    g.bench_function("mf61_hoosier_rig", |b| {
+        b.iter(|| job::run(black_box(&options)).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, pac89_fit, mf61_hoosier);
 criterion_main!(benches);

@@ -35,6 +35,10 @@ pub struct DiagnoseSettings {
     /// Lowest speed replayed and scored, m/s (standstills and crawling
     /// below it are excluded).
     pub min_speed: f64,
+    /// Screen the single effects before their cross-validation: one whose
+    /// fit on all runs removes too little of the gap to pass on held-out
+    /// runs is not refitted fold by fold (it is listed as screened).
+    pub screening: bool,
 }
 
 impl Default for DiagnoseSettings {
@@ -48,6 +52,7 @@ impl Default for DiagnoseSettings {
             particles: 10,
             iterations: 12,
             min_speed: DEFAULT_MIN_SPEED,
+            screening: true,
         }
     }
 }

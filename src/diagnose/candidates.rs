@@ -14,6 +14,7 @@ use super::problem::Problem;
 use super::refit::{refit, training_rows};
 use super::replay::Prepared;
 use super::report::ParameterValue;
+use super::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
@@ -21,6 +22,7 @@ use crate::optim::stats::covariance;
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use rayon::prelude::*;
+use std::time::Instant;
 
 /// A set of effects with their fitted values, and the model builder.
 #[derive(Clone)]
@@ -177,6 +179,7 @@ pub(super) fn base_models(
     runs: &[Prepared],
     folds: &[Vec<usize>],
     scales_hint: [f64; 3],
+    timing: Option<&Recorder>,
 ) -> Result<(Bases, String, Option<GroupingReport>), Error> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
@@ -210,11 +213,15 @@ pub(super) fn base_models(
             let mut settings = FitSettings::new(c.settings.seed);
             settings.pso.particles = 40;
             settings.pso.iterations = 150;
+            let started = Instant::now();
             let f =
                 fit_lateral(&t0, &conditions, &settings).map_err(|e| DiagnosisError::RigFit {
                     rig: path.clone(),
                     source: Box::new(e),
                 })?;
+            if let Some(rec) = timing {
+                rec.add(Phase::BaseIdentification, started.elapsed(), 0);
+            }
             Ok((
                 fixed(make(f.tyre.clone(), f.tyre.clone())),
                 format!(
@@ -227,51 +234,95 @@ pub(super) fn base_models(
             ))
         }
         BaseTyres::FromRuns => {
-            // Axle characteristics from the runs (super::base): a grid of
-            // starts, the best basins polished, the best of them fitted.
-            let build = |p: &[f64]| {
-                let (f, r) = axle_tyres(p);
-                make(f, r)
-            };
-            let problem = Problem::new(
-                build,
-                runs.iter().collect(),
+            let (bases, described) =
+                axles_from_runs(runs, folds, (scales_hint, nominal_share), make, timing);
+            Ok((bases, described, None))
+        }
+    }
+}
+
+/// The base model of axle characteristics identified from the runs (no
+/// tyre data; [`super::base`]): a grid of starts, the best basins
+/// polished, the best of them fitted, then refitted on every fold.
+fn axles_from_runs(
+    runs: &[Prepared],
+    folds: &[Vec<usize>],
+    (scales_hint, nominal_share): ([f64; 3], f64),
+    make: impl Fn(Tyre, Tyre) -> Augmented + Sync,
+    timing: Option<&Recorder>,
+) -> (Bases, String) {
+    let build = |p: &[f64]| {
+        let (f, r) = axle_tyres(p);
+        make(f, r)
+    };
+    let stamps = timing.map(|_| Stamps::default());
+    let problem = Problem::new(
+        |p: &[f64]| counted(&stamps, build, p),
+        runs.iter().collect(),
+        scales_hint,
+        AXLE_BOUNDS.to_vec(),
+    );
+    let t0 = Instant::now();
+    let (start, starts) = identify_axles(&problem);
+    let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
+    let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
+    if let (Some(rec), Some(st)) = (timing, &stamps) {
+        rec.add(Phase::BaseIdentification, mark.0 - t0, mark.1);
+        let phases = [
+            Phase::BasePolish,
+            Phase::BaseLinearisation,
+            Phase::BaseLinearisation,
+        ];
+        let n = full.params.len();
+        record_polish(rec, st, mark, n, full.linear.is_some(), phases);
+    }
+    let fold_params: Vec<Vec<f64>> = (0..folds.len())
+        .into_par_iter()
+        .map(|k| {
+            let t0 = Instant::now();
+            let train: Vec<&Prepared> = (0..runs.len())
+                .filter(|i| !folds[k].contains(i))
+                .map(|i| &runs[i])
+                .collect();
+            let stamps = timing.map(|_| Stamps::default());
+            let p = Problem::new(
+                |p: &[f64]| counted(&stamps, build, p),
+                train,
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             );
-            let (start, starts) = identify_axles(&problem);
-            let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
-            let fold_params: Vec<Vec<f64>> = (0..folds.len())
-                .into_par_iter()
-                .map(|k| {
-                    let train: Vec<&Prepared> = (0..runs.len())
-                        .filter(|i| !folds[k].contains(i))
-                        .map(|i| &runs[i])
-                        .collect();
-                    let p = Problem::new(build, train, scales_hint, AXLE_BOUNDS.to_vec());
-                    refit(&p, &full, &training_rows(runs, &folds[k])).params
-                })
-                .collect();
-            let p = &full.params;
-            let cov = full
-                .linear
-                .as_ref()
-                .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
-            let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
-            let described = format!("no tyre data: {}", id.describe());
-            Ok((
-                Bases {
-                    all: build(p),
-                    folds: fold_params.iter().map(|q| build(q)).collect(),
-                    nominal_share,
-                    axle: Some((p.clone(), fold_params)),
-                    identification: Some(id),
-                },
-                described,
-                None,
-            ))
-        }
+            let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
+            if let (Some(rec), Some(st)) = (timing, &stamps) {
+                rec.add(Phase::BaseFolds, t0.elapsed(), st.count());
+            }
+            q
+        })
+        .collect();
+    let p = &full.params;
+    let cov = full
+        .linear
+        .as_ref()
+        .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
+    let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
+    let described = format!("no tyre data: {}", id.describe());
+    (
+        Bases {
+            all: build(p),
+            folds: fold_params.iter().map(|q| build(q)).collect(),
+            nominal_share,
+            axle: Some((p.clone(), fold_params)),
+            identification: Some(id),
+        },
+        described,
+    )
+}
+
+/// The model of `p`, the evaluation stamped when the diagnosis is timed.
+fn counted(stamps: &Option<Stamps>, build: impl Fn(&[f64]) -> Augmented, p: &[f64]) -> Augmented {
+    if let Some(st) = stamps {
+        st.tick();
     }
+    build(p)
 }
 
 /// The effect parameters of a fit whose first `skip` parameters are the

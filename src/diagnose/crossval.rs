@@ -14,10 +14,12 @@ use super::model::Observed;
 use super::problem::Problem;
 use super::refit::{refit, training_rows};
 use super::replay::Prepared;
+use super::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::optim::local::Residuals;
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
 
 /// Largest number of folds.
 pub const MAX_FOLDS: usize = 8;
@@ -41,9 +43,38 @@ pub(super) struct Context<'a> {
     pub(super) bases: &'a Bases,
     pub(super) pso: Pso,
     pub(super) progress: Option<&'a AtomicUsize>,
+    /// Where the time goes, when the diagnosis is timed.
+    pub(super) timing: Option<&'a Recorder>,
 }
 
-impl Context<'_> {
+/// A candidate fitted on all runs, not yet cross-validated: its
+/// setting, its fit (with the optimum's linearisation the fold refits
+/// start from) and its errors on all runs.
+pub(super) struct Fitted<'a> {
+    setting: Setting<'a>,
+    pub(super) full: FitOutcome,
+    pub(super) insample: ChannelErrors,
+}
+
+impl Fitted<'_> {
+    /// The candidate as scored without its folds: no held-out errors (a
+    /// screened candidate, whose all-run fit the greedy additions use).
+    pub(super) fn unscored(&self) -> Scored {
+        Scored {
+            kinds: self.setting.kinds.clone(),
+            full: FitOutcome {
+                linear: None,
+                ..self.full.clone()
+            },
+            insample: self.insample,
+            heldout: ChannelErrors::default(),
+            fold_params: Vec::new(),
+            folds_converged: 0,
+        }
+    }
+}
+
+impl<'a> Context<'a> {
     pub(super) fn tick(&self) {
         if let Some(p) = self.progress {
             p.fetch_add(1, Ordering::Relaxed);
@@ -68,14 +99,8 @@ impl Context<'_> {
             .collect()
     }
 
-    /// Fits a candidate on all runs (PSO from `start`) and scores it on
-    /// every fold, refitted from the all-run optimum ([`refit`]: its
-    /// linearisation first, Levenberg–Marquardt within a budget when that
-    /// does not converge; non-converged folds are counted and warned about).
-    /// A combination comes with `starts` (its members' single fits, the
-    /// set it extends with the added effect off, the added effect's own
-    /// axles): the swarm then starts from the best of them, and the polish
-    /// from the lowest cost found ([`Context::start`]).
+    /// Fits a candidate on all runs ([`Context::fit_all`]) and scores it on
+    /// every fold ([`Context::cross_validate`]).
     pub(super) fn score(
         &self,
         kinds: Vec<EffectKind>,
@@ -83,13 +108,35 @@ impl Context<'_> {
         starts: &[Vec<f64>],
         salt: u64,
     ) -> Scored {
+        self.cross_validate(&self.fit_all(kinds, fixed, starts, salt))
+    }
+
+    /// Fits a candidate on all runs (PSO from `start`, then
+    /// Levenberg–Marquardt) and scores the fit on them. A combination
+    /// comes with `starts` (its members' single fits, the set it extends
+    /// with the added effect off, the added effect's own axles): the swarm
+    /// then starts from the best of them, and the polish from the lowest
+    /// cost found ([`Context::start`]).
+    pub(super) fn fit_all(
+        &self,
+        kinds: Vec<EffectKind>,
+        fixed: EffectSet,
+        starts: &[Vec<f64>],
+        salt: u64,
+    ) -> Fitted<'a> {
         let s = Setting {
             base: self.bases,
             kinds,
             fixed,
         };
+        let stamps = self.timing.map(|_| Stamps::default());
         let problem = Problem::new(
-            |p: &[f64]| with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p),
+            |p: &[f64]| {
+                if let Some(st) = &stamps {
+                    st.tick();
+                }
+                with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p)
+            },
             self.runs.iter().collect(),
             self.scales,
             s.bounds(),
@@ -98,34 +145,73 @@ impl Context<'_> {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
         };
+        let t0 = Instant::now();
         let start = self.start(&problem, &s, starts, &pso);
+        let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
         let full = fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt);
+        if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+            rec.add(Phase::CandidateSwarm, mark.0 - t0, mark.1);
+            let phases = [
+                Phase::CandidatePolish,
+                Phase::CandidateJacobian,
+                Phase::CandidateCurvature,
+            ];
+            let n = full.params.len();
+            record_polish(rec, st, mark, n, full.linear.is_some(), phases);
+        }
+        drop(problem);
         let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
         let mut insample = ChannelErrors::default();
         for r in &self.runs {
             insample.add(&r.errors(&all_model));
         }
         self.tick();
+        Fitted {
+            setting: s,
+            full,
+            insample,
+        }
+    }
+
+    /// Scores a candidate fitted on all runs on every fold, refitted from
+    /// the all-run optimum ([`refit`]: its linearisation first,
+    /// Levenberg–Marquardt within a budget when that does not converge;
+    /// non-converged folds are counted and warned about).
+    pub(super) fn cross_validate(&self, fitted: &Fitted) -> Scored {
+        let (s, full) = (&fitted.setting, &fitted.full);
+        if let (Some(rec), false) = (self.timing, s.kinds.is_empty()) {
+            rec.candidate(true);
+        }
         // Folds in parallel too: a candidate whose fit is slow (a steering
         // compliance solves for the wheel's slip at every force) would
         // otherwise leave one core idle at the end of the singles.
         let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
             .into_par_iter()
             .map(|k| {
+                let t0 = Instant::now();
                 let base = &self.bases.folds[k];
+                let stamps = self.timing.map(|_| Stamps::default());
                 let problem = Problem::new(
-                    |p: &[f64]| with_effects(base, &s.fixed, &s.kinds, s.axle(), p),
+                    |p: &[f64]| {
+                        if let Some(st) = &stamps {
+                            st.tick();
+                        }
+                        with_effects(base, &s.fixed, &s.kinds, s.axle(), p)
+                    },
                     self.training(k),
                     self.scales,
                     s.bounds(),
                 );
-                let f = refit(&problem, &full, &training_rows(&self.runs, &self.folds[k]));
+                let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {
                     e.add(&self.runs[i].errors(&model));
                 }
                 self.tick();
+                if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+                    rec.add(Phase::CandidateFolds, t0.elapsed(), st.count());
+                }
                 (e, f.params, f.converged)
             })
             .collect();
@@ -136,15 +222,10 @@ impl Context<'_> {
         // The quadratic model served the folds: a kept candidate need not
         // hold its Jacobian and second derivatives (rows × n² reals).
         Scored {
-            kinds: s.kinds,
-            full: FitOutcome {
-                linear: None,
-                ..full
-            },
-            insample,
             heldout,
             folds_converged: per_fold.iter().filter(|f| f.2).count(),
             fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
+            ..fitted.unscored()
         }
     }
 
@@ -276,23 +357,4 @@ pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
         ..Pso::default()
     };
     (runs, folds, pso)
-}
-
-/// Every candidate effect alone, scored (in parallel, each with its own
-/// seed), and their order by held-out error.
-pub(super) fn singles(ctx: &Context, effects: &[EffectKind]) -> (Vec<Scored>, Vec<usize>) {
-    let singles: Vec<Scored> = effects
-        .par_iter()
-        .enumerate()
-        .map(|(i, e)| ctx.score(vec![*e], EffectSet::default(), &[], i as u64 + 1))
-        .collect();
-    let scales = ctx.scales;
-    let mut order: Vec<usize> = (0..singles.len()).collect();
-    order.sort_by(|&a, &b| {
-        singles[a]
-            .heldout
-            .combined(&scales)
-            .total_cmp(&singles[b].heldout.combined(&scales))
-    });
-    (singles, order)
 }

@@ -53,18 +53,21 @@ pub use super::summary::observed_channel;
 use super::campaign::Campaign;
 use super::candidates::{base_models, Bases};
 use super::channels::{Channel, ChannelErrors};
-use super::crossval::{prepare, singles, Context, Scored, MAX_FOLDS};
+use super::crossval::{prepare, Context, Scored, MAX_FOLDS};
 use super::effects::{EffectKind, EffectSet, Needs};
 use super::model::{Augmented, Observed};
+use super::screening::singles;
 use super::search::{
     baseline, confounded_with, search, verdict_of, worsened, Baseline, Search, SIGNIFICANT,
 };
 use super::summary::{base_run_gap, gap_summary, parts_table};
+use super::timing::{Recorder, Timing};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::road::RoadGeometry;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
 
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
@@ -311,10 +314,28 @@ fn base_report(bases: &Bases, tyres: String, rig_grouping: Option<GroupingReport
 /// Runs the diagnosis of a campaign. `progress` counts work units (as many
 /// as `work_units` of the campaign).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
+    run(c, progress, None)
+}
+
+/// Runs the diagnosis of a campaign and says where its time went
+/// ([`super::timing`]); the diagnosis is the same as [`diagnose`]'s.
+pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
+    let recorder = Recorder::default();
+    let t0 = Instant::now();
+    let d = run(c, None, Some(&recorder))?;
+    Ok((d, recorder.timing(t0.elapsed())))
+}
+
+/// The diagnosis, its phases timed by `timing` when given.
+fn run(
+    c: &Campaign,
+    progress: Option<&AtomicUsize>,
+    timing: Option<&Recorder>,
+) -> Result<Diagnosis, Error> {
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
     let hint = signal_scales(c);
-    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint)?;
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, timing)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }
@@ -328,6 +349,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
         bases: &bases,
         pso,
         progress,
+        timing,
     };
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
@@ -335,11 +357,13 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
     let (effects, mut notes) = visible_effects(c);
     notes.extend(grid_note(&ctx, set.step));
     notes.splice(0..0, c.notes.iter().cloned());
-    let (singles, order) = singles(&ctx, &effects);
+    let (singles, order, screened, screened_rows) =
+        singles(&ctx, &effects, &base, set.screening, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
 
     let found = if significant {
-        search(&ctx, &singles, &order, &base, set.max_effects)
+        let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
+        search(&ctx, &singles, (&order, &all), &base, set.max_effects)
     } else {
         Search::default()
     };
@@ -379,6 +403,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
             summary,
         },
         ranking,
+        screened: screened_rows,
         combinations: found.combinations,
         verdict,
         confounded,

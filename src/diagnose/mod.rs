@@ -15,8 +15,10 @@
 //!   identified from the runs when there are no tyre data (`base`);
 //! - the diagnosis: the candidates and their starts (`candidates`), their
 //!   scores on held-out runs (`crossval`), the search for a verdict
-//!   (`search`), the gap tables (`summary`), the report's types (`report`)
-//!   and the whole (`diagnosis`);
+//!   (`search`), the singles screened before their cross-validation
+//!   (`screening`), the gap tables (`summary`), the report's types
+//!   (`report`), the whole (`diagnosis`) and where its time goes
+//!   ([`timing`]);
 //! - the virtual proving ground that generates campaigns with known
 //!   effects ([`synth`]; its independent four-wheel truth in
 //!   `proving_ground`).
@@ -42,13 +44,15 @@ mod proving_ground;
 mod refit;
 mod replay;
 pub(crate) mod report;
+mod screening;
 mod search;
 mod sensors;
 mod summary;
 pub mod synth;
+pub mod timing;
 
 pub use base::{AxleIdentification, AxleLimit, AxleValue};
 pub use campaign::{BaseTyres, Campaign, DiagnoseSettings};
-pub use diagnosis::{diagnose, Diagnosis};
+pub use diagnosis::{diagnose, diagnose_timed, Diagnosis};
 pub use model::Augmented;
 pub use replay::Prepared;

@@ -81,6 +81,29 @@ pub struct Ranked {
     pub delta_bic: f64,
 }
 
+/// A single effect not cross-validated: its fit on all runs removes so
+/// little of the gap above noise that it could not pass on held-out runs
+/// (its in-sample reduction plus the margin below the acceptance share;
+/// see the diagnosis's screening).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Screened {
+    /// The effect names joined by `+`.
+    pub effect: String,
+    /// The effects.
+    pub effects: Vec<EffectKind>,
+    /// Combined error J of the all-run fit on all runs (in sample).
+    pub insample_error_after: f64,
+    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    pub insample_reduction_percent: f64,
+    /// Share of the held-out gap an effect must remove to be accepted, %.
+    pub threshold_percent: f64,
+    /// Percentage points by which a held-out reduction may exceed the
+    /// in-sample one: screened below `threshold − margin`.
+    pub margin_percent: f64,
+    /// BIC of the all-run fit minus the base model's.
+    pub delta_bic: f64,
+}
+
 /// Effects that explain the gap about equally well.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Confounded {
@@ -213,8 +236,10 @@ pub struct Diagnosis {
     pub base: BaseReport,
     /// Where the gap lies.
     pub gap: GapReport,
-    /// Single effects, best first.
+    /// Single effects cross-validated, best first.
     pub ranking: Vec<Ranked>,
+    /// Single effects screened (not cross-validated), in library order.
+    pub screened: Vec<Screened>,
     /// Combinations tried, best first.
     pub combinations: Vec<Ranked>,
     /// The verdict.

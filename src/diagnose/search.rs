@@ -92,13 +92,41 @@ impl Baseline {
     /// Why the axle characteristics fitted with a candidate are no tyre (a
     /// rigid axle, one without force, no grip), if they are not: such a
     /// candidate cannot be a verdict.
-    fn degenerate(&self, sc: &Scored) -> Option<String> {
+    pub(super) fn degenerate(&self, sc: &Scored) -> Option<String> {
         (self.axle_count == 3)
             .then(|| {
                 let p = &sc.full.params;
                 AxleIdentification::new(&p[..3], &sc.full.std_errors[..3], None, 0).degenerate
             })
             .flatten()
+    }
+
+    /// The channel scales of the combined errors.
+    pub(super) fn scales(&self) -> [f64; 3] {
+        self.scales
+    }
+
+    /// A fit's BIC less the base model's (negative: better).
+    pub(super) fn delta_bic(&self, sc: &Scored) -> f64 {
+        sc.full.bic() - self.bic0
+    }
+
+    /// The in-sample reduction (%) of a fit with errors `e` on all runs.
+    pub(super) fn insample_reduction(&self, e: &ChannelErrors) -> f64 {
+        reduction(self.j0_in, e.combined(&self.scales), self.jn_in)
+    }
+
+    /// Whether the base leaves a gap above noise in sample: without one an
+    /// in-sample reduction bounds nothing.
+    pub(super) fn insample_gap(&self) -> bool {
+        gap_above(self.j0_in, self.jn_in) > 0.0
+    }
+
+    /// The least held-out error a candidate can have whose held-out
+    /// reduction is at most `percent`.
+    pub(super) fn heldout_floor(&self, percent: f64) -> f64 {
+        let g = (1.0 - percent.min(100.0) / 100.0) * gap_above(self.j0, self.jn);
+        (g * g + self.jn * self.jn).sqrt()
     }
 
     /// A scored candidate as a row of the report, with its warnings.
@@ -184,13 +212,14 @@ pub(super) struct Search {
     pub(super) lookalikes: Vec<usize>,
 }
 
-/// The verdict's search: the best single (`order` ranks `singles` by
-/// held-out error), then greedy additions, each tried jointly with every
-/// remaining effect.
+/// The verdict's search: the best single (`order` ranks the
+/// cross-validated `singles` by held-out error), then greedy additions,
+/// each tried jointly with every remaining effect (`all`: those in `order`
+/// and the screened ones, whose all-run fits start them).
 pub(super) fn search(
     ctx: &Context,
     singles: &[Scored],
-    order: &[usize],
+    (order, all): (&[usize], &[usize]),
     base: &Baseline,
     max_effects: usize,
 ) -> Search {
@@ -199,7 +228,6 @@ pub(super) fn search(
     // one; it can still join a set (a steer lag whose axles collapse
     // alone on a banked oval is a tyre's once the bank is in), so the
     // greedy additions try every effect (`all`).
-    let all = order;
     let usable: Vec<usize> = order
         .iter()
         .copied()
@@ -324,6 +352,11 @@ fn idle(sc: &Scored, axle_count: usize) -> bool {
     })
 }
 
+/// An effect's place in the library: the seed of a set it is added to.
+fn library_index(e: EffectKind) -> u64 {
+    EffectKind::ALL.iter().position(|&k| k == e).unwrap_or(0) as u64
+}
+
 /// Greedy additions from `start`: the effect that best closes what is left,
 /// tried jointly with every remaining effect, while each removes
 /// [`ACCEPT`] of what is left and lowers the BIC. Every set tried goes into
@@ -353,10 +386,11 @@ fn greedy(
             .filter(|e| !current.kinds.contains(e))
             .collect();
         let cur = &current;
+        // Each set's seed is that of the effect added (not its place in the
+        // ranking, which screening shortens).
         let mut scored: Vec<Scored> = tries
             .par_iter()
-            .enumerate()
-            .map(|(i, e)| {
+            .map(|e| {
                 let mut kinds = cur.kinds.clone();
                 kinds.push(*e);
                 let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
@@ -379,7 +413,7 @@ fn greedy(
                     kinds,
                     EffectSet::default(),
                     &[members, extended, own],
-                    1000 + i as u64,
+                    1000 + library_index(*e),
                 )
             })
             .collect();

@@ -73,8 +73,8 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     };
     Ok(DiagnoseReport {
         // The candidates fitted (those the runs can show): every one is
-        // ranked.
-        effects: diagnosis.ranking.len(),
+        // ranked or screened.
+        effects: diagnosis.ranking.len() + diagnosis.screened.len(),
         diagnosis,
         runs: campaign.runs.len(),
         run_files: campaign.run_files,
@@ -198,6 +198,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             out.push(format!("  {:<28} warning: {w}", ""));
         }
     }
+    out.extend(screened_lines(d));
     out.push(format!("verdict: {}", d.verdict.statement));
     out.extend(d.verdict.warnings.iter().map(|w| format!("  warning: {w}")));
     out.extend(d.confounded.iter().map(|c| {
@@ -220,6 +221,24 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             )
         }));
     }
+    out
+}
+
+/// The single effects screened before their cross-validation, and why.
+fn screened_lines(d: &Diagnosis) -> Vec<String> {
+    let Some(first) = d.screened.first() else {
+        return Vec::new();
+    };
+    let mut out = vec![format!(
+        "screened, not cross-validated (in sample below {:.0} % − {:.0} points, so below {:.0} % held out):",
+        first.threshold_percent, first.margin_percent, first.threshold_percent
+    )];
+    out.extend(d.screened.iter().map(|s| {
+        format!(
+            "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12.0}",
+            s.effect, s.insample_error_after, "—", s.insample_reduction_percent, s.delta_bic
+        )
+    }));
     out
 }
 

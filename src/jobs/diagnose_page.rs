@@ -48,7 +48,7 @@ pub fn page(
             "{} runs from {} files, {} candidate effects, {} folds, seed {}.",
             inputs.runs,
             inputs.run_files,
-            d.ranking.len(),
+            d.ranking.len() + d.screened.len(),
             d.folds,
             d.seed
         ),
@@ -175,6 +175,23 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
         ],
         &rows,
     );
+    if let Some(first) = d.screened.first() {
+        let names: Vec<String> = d
+            .screened
+            .iter()
+            .map(|s| format!("{} ({:.1} %)", s.effect, s.insample_reduction_percent))
+            .collect();
+        p.paragraph(
+            "",
+            &format!(
+                "Screened, not cross-validated (in-sample reduction below {:.0} % − {:.0} points, so below {:.0} % on held-out runs): {}.",
+                first.threshold_percent,
+                first.margin_percent,
+                first.threshold_percent,
+                names.join(", ")
+            ),
+        );
+    }
 }
 
 /// Whether candidate `r` is the set of effects `effects` (in any order).

@@ -241,6 +241,7 @@ mod real_logs;
 mod report_html;
 mod rig_layouts;
 mod scenarios;
+mod screening;
 mod shards;
 mod sweeps;
 

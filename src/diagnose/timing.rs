@@ -1,0 +1,223 @@
+//! Where a diagnosis spends its time: seconds and evaluations of the
+//! run set (replays of every run a fit sees, one per residual vector) by
+//! phase ([`Phase`]), recorded when a diagnosis is run through
+//! [`super::diagnosis::diagnose_timed`] and never otherwise.
+//!
+//! The seconds of a phase are the sum, over every call in it, of the time
+//! between its start and its end. On one thread (`RAYON_NUM_THREADS=1`)
+//! that is the CPU time of the phase and the phases add up to the wall
+//! time; on several, a call waiting on a nested parallel loop also runs
+//! other phases' work, so the seconds overlap and only their ratios and the
+//! evaluation counts stay meaningful. The evaluations of a fit are told
+//! apart by their order: a polish ends with the optimum's linearisation,
+//! `1 + n` evaluations for the residuals and the Jacobian, then
+//! `n·(n + 3)/2` for the second derivatives (`n` parameters). Evaluations
+//! at a point the run set was just replayed at reuse that replay
+//! ([`super::problem::Problem`]): they are counted, at almost no cost.
+//!
+//! Nothing here reaches the diagnosis report: its numbers are the same
+//! with and without the timing.
+
+use serde::Serialize;
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// A phase of a diagnosis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Phase {
+    /// The base model's tyres: the axle characteristics' grid of starts and
+    /// their polish (no tyre data), or the fit to the rig data.
+    BaseIdentification,
+    /// The base axles' Levenberg–Marquardt fit on all runs.
+    BasePolish,
+    /// Its linearisation (residuals, Jacobian, second derivatives).
+    BaseLinearisation,
+    /// The base axles refitted on every fold.
+    BaseFolds,
+    /// A candidate's start: the swarm over its parameters and, with axles
+    /// identified from the runs, their grid at its values.
+    CandidateSwarm,
+    /// A candidate's Levenberg–Marquardt polish on all runs (its
+    /// finite-difference Jacobians included).
+    CandidatePolish,
+    /// The residuals and Jacobian of a candidate's optimum.
+    CandidateJacobian,
+    /// The second derivatives of a candidate's optimum.
+    CandidateCurvature,
+    /// A candidate's fold refits (cross-validation).
+    CandidateFolds,
+    /// Everything else: the base's gaps, the held-out replays before and
+    /// after, the tables.
+    Rest,
+}
+
+impl Phase {
+    /// Every phase, in the order a diagnosis runs them.
+    pub const ALL: [Phase; 10] = [
+        Phase::BaseIdentification,
+        Phase::BasePolish,
+        Phase::BaseLinearisation,
+        Phase::BaseFolds,
+        Phase::CandidateSwarm,
+        Phase::CandidatePolish,
+        Phase::CandidateJacobian,
+        Phase::CandidateCurvature,
+        Phase::CandidateFolds,
+        Phase::Rest,
+    ];
+
+    /// The phase's name in a table.
+    pub fn name(self) -> &'static str {
+        match self {
+            Phase::BaseIdentification => "base identification (grid + polish)",
+            Phase::BasePolish => "base fit (Levenberg–Marquardt)",
+            Phase::BaseLinearisation => "base linearisation",
+            Phase::BaseFolds => "base fold refits",
+            Phase::CandidateSwarm => "candidate swarm (and axle regrid)",
+            Phase::CandidatePolish => "candidate fit (Levenberg–Marquardt)",
+            Phase::CandidateJacobian => "candidate Jacobian",
+            Phase::CandidateCurvature => "candidate second derivatives",
+            Phase::CandidateFolds => "candidate fold refits",
+            Phase::Rest => "the rest",
+        }
+    }
+
+    fn index(self) -> usize {
+        Phase::ALL.iter().position(|&p| p == self).unwrap_or(0)
+    }
+}
+
+/// One phase's share of a diagnosis.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PhaseTime {
+    /// The phase.
+    pub phase: Phase,
+    /// Seconds spent in it (summed over parallel calls).
+    pub seconds: f64,
+    /// Evaluations of the run set (replays of every run the fit sees).
+    pub evaluations: usize,
+}
+
+/// Where a diagnosis spent its time.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Timing {
+    /// Wall time of the whole diagnosis, s.
+    pub wall_seconds: f64,
+    /// By phase ([`Phase::Rest`]: the wall time not in another phase, on
+    /// one thread).
+    pub phases: Vec<PhaseTime>,
+    /// Candidates fitted on all runs, and of them cross-validated fold by
+    /// fold (the others screened).
+    pub candidates_fitted: usize,
+    /// Candidates cross-validated.
+    pub candidates_cross_validated: usize,
+}
+
+/// The running totals of a timed diagnosis.
+#[derive(Default)]
+pub(super) struct Recorder {
+    nanos: [AtomicU64; 10],
+    evaluations: [AtomicUsize; 10],
+    screened: AtomicUsize,
+    cross_validated: AtomicUsize,
+}
+
+impl Recorder {
+    /// Adds `elapsed` and `evaluations` to `phase`.
+    pub(super) fn add(&self, phase: Phase, elapsed: Duration, evaluations: usize) {
+        let k = phase.index();
+        let ns = u64::try_from(elapsed.as_nanos()).unwrap_or(u64::MAX);
+        self.nanos[k].fetch_add(ns, Ordering::Relaxed);
+        self.evaluations[k].fetch_add(evaluations, Ordering::Relaxed);
+    }
+
+    /// Counts a candidate cross-validated, or screened (left so).
+    pub(super) fn candidate(&self, cross_validated: bool) {
+        let c = if cross_validated {
+            &self.cross_validated
+        } else {
+            &self.screened
+        };
+        c.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// The totals, [`Phase::Rest`] being what `wall` leaves of the others.
+    pub(super) fn timing(&self, wall: Duration) -> Timing {
+        let mut phases: Vec<PhaseTime> = Phase::ALL
+            .into_iter()
+            .map(|p| PhaseTime {
+                phase: p,
+                seconds: self.nanos[p.index()].load(Ordering::Relaxed) as f64 * 1e-9,
+                evaluations: self.evaluations[p.index()].load(Ordering::Relaxed),
+            })
+            .collect();
+        let others: f64 = phases.iter().map(|p| p.seconds).sum();
+        if let Some(rest) = phases.last_mut() {
+            rest.seconds += (wall.as_secs_f64() - others).max(0.0);
+        }
+        let cross_validated = self.cross_validated.load(Ordering::Relaxed);
+        Timing {
+            wall_seconds: wall.as_secs_f64(),
+            phases,
+            candidates_fitted: self.screened.load(Ordering::Relaxed) + cross_validated,
+            candidates_cross_validated: cross_validated,
+        }
+    }
+}
+
+/// The instants at which a problem's model was built, one per evaluation
+/// of its run set: a fit's evaluations told apart by their order.
+#[derive(Default)]
+pub(super) struct Stamps(Mutex<Vec<Instant>>);
+
+impl Stamps {
+    /// Notes an evaluation now.
+    pub(super) fn tick(&self) {
+        if let Ok(mut v) = self.0.lock() {
+            v.push(Instant::now());
+        }
+    }
+
+    /// Evaluations so far.
+    pub(super) fn count(&self) -> usize {
+        self.0.lock().map_or(0, |v| v.len())
+    }
+
+    /// The instant of evaluation `k` (in time order), if made.
+    pub(super) fn at(&self, k: usize) -> Option<Instant> {
+        let mut v = self.0.lock().ok()?.clone();
+        v.sort();
+        v.get(k).copied()
+    }
+}
+
+/// Records a polish (Levenberg–Marquardt then the optimum's linearisation
+/// of `n` parameters) that began at `from` with `before` evaluations
+/// already stamped and has just ended: its evaluations split into the
+/// polish, the residuals and Jacobian (`1 + n`) and the second derivatives
+/// (`n·(n + 3)/2`). Without a linearisation (`linearised` false), all is
+/// polish.
+pub(super) fn record_polish(
+    rec: &Recorder,
+    stamps: &Stamps,
+    (from, before): (Instant, usize),
+    n: usize,
+    linearised: bool,
+    phases: [Phase; 3],
+) {
+    let end = Instant::now();
+    let total = stamps.count() - before;
+    let (jac, curv) = if linearised && n > 0 {
+        (1 + n, n * (n + 3) / 2)
+    } else {
+        (0, 0)
+    };
+    let polish = total.saturating_sub(jac + curv);
+    let split = |k: usize| stamps.at(before + k).unwrap_or(end);
+    let (t_jac, t_curv) = (split(polish), split(polish + jac));
+    rec.add(phases[0], t_jac - from, polish);
+    rec.add(phases[1], t_curv - t_jac, jac.min(total - polish));
+    rec.add(phases[2], end - t_curv, total.saturating_sub(polish + jac));
+}

@@ -12,11 +12,13 @@
 //! bound whose gradient points out of the box are held, the damped
 //! Gauss–Newton step `(J_FᵀJ_F + λ·diag(J_FᵀJ_F))·δ = −J_Fᵀ·r` is taken in
 //! the others and projected back into the box, and λ falls after a step that
-//! lowers the cost and rises until one does. Finite differences step into
-//! the box at a bound. Each iteration costs n + (number of trial steps)
-//! residual evaluations; the residuals at the iterate are reused.
+//! lowers the cost and rises until one does. The Jacobian is the
+//! problem's ([`Residuals::jacobian`]; finite differences step into the box
+//! at a bound). Each iteration costs a Jacobian (n residual evaluations by
+//! differences) and one per trial step; the residuals at the iterate are
+//! reused.
 
-use super::local::{inward_jacobian, LocalResult, Residuals};
+use super::local::{LocalResult, Residuals};
 use nalgebra::{DMatrix, DVector};
 
 /// Settings of [`BoundedLm`].
@@ -78,8 +80,8 @@ impl BoundedLm {
             };
         }
         for _ in 0..self.iterations {
-            let j = inward_jacobian(problem, &p, &r, bounds);
-            evaluations += n;
+            let j = problem.jacobian(&p, &r, bounds);
+            evaluations += problem.jacobian_evaluations(n);
             let model = ProjectedModel::new(&j, &r, &p, bounds);
             if model.stationary() {
                 converged = true;

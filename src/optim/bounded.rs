@@ -221,7 +221,20 @@ fn half_sum_of_squares(r: &[f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::optim::local::tests::{decay, Rosen};
+    use crate::optim::local::tests::{decay, ExactDecay, Rosen};
+
+    #[test]
+    fn uses_the_problems_own_jacobian() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let exact = ExactDecay(decay(), AtomicUsize::new(0));
+        let bounds = [(0.0, 5.0), (0.0, 0.65)];
+        let r = BoundedLm::default().minimize(&exact, &[1.0, 0.2], &bounds);
+        // The box holds the rate below its optimum: it ends on the bound.
+        assert_eq!(r.params[1], 0.65, "{r:?}");
+        // No column was differenced: every residual evaluation made is one
+        // the method reports.
+        assert_eq!(exact.1.load(Ordering::Relaxed), r.evaluations);
+    }
 
     #[test]
     fn finds_an_interior_optimum() {

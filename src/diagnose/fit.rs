@@ -14,7 +14,7 @@
 use super::model::Augmented;
 use super::problem::Problem;
 use crate::optim::bounded::BoundedLm;
-use crate::optim::local::{inward_jacobian, Residuals};
+use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
 use crate::optim::stats::{seen_columns, standard_errors};
 use nalgebra::DMatrix;
@@ -159,7 +159,7 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     let (std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
             let linear = linearise(problem, &params);
-            evaluations += params.len() + 1;
+            evaluations += problem.jacobian_evaluations(params.len()) + 1;
             // A parameter the data cannot see (an accelerometer offset of a
             // run set without ay) is wherever the swarm left it: report its
             // off value (the effect off), which fits as well.
@@ -199,7 +199,7 @@ pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
 ) -> Linearisation {
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
-    let jacobian = inward_jacobian(problem, p, &r, &problem.bounds);
+    let jacobian = problem.jacobian(p, &r, &problem.bounds);
     let curvature = curvature(problem, p, &r);
     Linearisation {
         residuals: r,

@@ -11,7 +11,6 @@ use super::model::Augmented;
 use super::problem::Problem;
 use super::replay::Prepared;
 use crate::optim::bounded::ProjectedModel;
-use crate::optim::local::inward_jacobian;
 use crate::optim::local::Residuals;
 use nalgebra::{DMatrix, DVector};
 
@@ -23,7 +22,7 @@ struct FoldModel {
 }
 
 impl FoldModel {
-    /// Differences the Jacobian afresh at `p` (residuals `r`) and builds
+    /// Takes the problem's Jacobian afresh at `p` (residuals `r`) and builds
     /// the model there; the all-run second derivatives are kept.
     fn relinearise<F: Fn(&[f64]) -> Augmented + Sync>(
         &mut self,
@@ -31,7 +30,7 @@ impl FoldModel {
         p: &[f64],
         r: &[f64],
     ) {
-        self.jacobian = inward_jacobian(problem, p, r, &problem.bounds);
+        self.jacobian = problem.jacobian(p, r, &problem.bounds);
         self.p0 = p.to_vec();
     }
 
@@ -168,7 +167,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
         // Stalled or doubted after moving: the Jacobian no longer holds here.
         if (rejected == REFIT_MODEL_REJECTIONS || doubted) && can_relinearise {
             model.relinearise(problem, &p, &r);
-            evaluations += n;
+            evaluations += problem.jacobian_evaluations(n);
             relinearised += 1;
             (rejected, lambda, trusted, doubted) = (0, 0.0, true, false);
         }

@@ -12,11 +12,13 @@
 //! bound whose gradient points out of the box are held, the damped
 //! Gauss–Newton step `(J_FᵀJ_F + λ·diag(J_FᵀJ_F))·δ = −J_Fᵀ·r` is taken in
 //! the others and projected back into the box, and λ falls after a step that
-//! lowers the cost and rises until one does. Finite differences step into
-//! the box at a bound. Each iteration costs n + (number of trial steps)
-//! residual evaluations; the residuals at the iterate are reused.
+//! lowers the cost and rises until one does. The Jacobian is the
+//! problem's ([`Residuals::jacobian`]; finite differences step into the box
+//! at a bound). Each iteration costs a Jacobian (n residual evaluations by
+//! differences) and one per trial step; the residuals at the iterate are
+//! reused.
 
-use super::local::{inward_jacobian, LocalResult, Residuals};
+use super::local::{LocalResult, Residuals};
 use nalgebra::{DMatrix, DVector};
 
 /// Settings of [`BoundedLm`].
@@ -78,8 +80,8 @@ impl BoundedLm {
             };
         }
         for _ in 0..self.iterations {
-            let j = inward_jacobian(problem, &p, &r, bounds);
-            evaluations += n;
+            let j = problem.jacobian(&p, &r, bounds);
+            evaluations += problem.jacobian_evaluations(n);
             let model = ProjectedModel::new(&j, &r, &p, bounds);
             if model.stationary() {
                 converged = true;
@@ -219,7 +221,20 @@ fn half_sum_of_squares(r: &[f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::optim::local::tests::{decay, Rosen};
+    use crate::optim::local::tests::{decay, ExactDecay, Rosen};
+
+    #[test]
+    fn uses_the_problems_own_jacobian() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let exact = ExactDecay(decay(), AtomicUsize::new(0));
+        let bounds = [(0.0, 5.0), (0.0, 0.65)];
+        let r = BoundedLm::default().minimize(&exact, &[1.0, 0.2], &bounds);
+        // The box holds the rate below its optimum: it ends on the bound.
+        assert_eq!(r.params[1], 0.65, "{r:?}");
+        // No column was differenced: every residual evaluation made is one
+        // the method reports.
+        assert_eq!(exact.1.load(Ordering::Relaxed), r.evaluations);
+    }
 
     #[test]
     fn finds_an_interior_optimum() {

@@ -3,10 +3,11 @@
 //! modified Gauss–Newton `x_{k+1} = x_k − (JᵀJ + λ_k·I)⁻¹·Jᵀ·e` with the
 //! geometric schedule `λ_k = λ0·q^(k−1)` (0 < q < 1). Zhang & Li (2017) takes every
 //! step; here a step that raises the cost is halved until it does not (up to
-//! ten times), so the method cannot diverge. Jacobians are forward
-//! differences with a relative step of 1e-7 (checked against analytic ones in
-//! the tests), stepping into the box at an upper bound when the problem has
-//! bounds (`bounded`).
+//! ten times), so the method cannot diverge. Jacobians are the problem's
+//! own ([`Residuals::jacobian`]): forward differences with a relative step
+//! of 1e-7 (checked against analytic ones in the tests), stepping into the
+//! box at an upper bound when the problem has bounds (`bounded`), unless
+//! the problem has exact derivatives.
 
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
@@ -18,6 +19,22 @@ pub trait Residuals: Sync {
     /// Fills `out` (length `count()`) with the residuals at `p`.
     fn residuals(&self, p: &[f64], out: &mut [f64]);
 
+    /// The Jacobian of the residuals at `p`, given the residuals `r0`
+    /// there, within `bounds` (a column at an upper bound looks into the
+    /// box). By default forward differences ([`inward_jacobian`], `n`
+    /// residual evaluations); a problem with exact derivatives overrides
+    /// it, and [`Residuals::jacobian_evaluations`] with it.
+    fn jacobian(&self, p: &[f64], r0: &[f64], bounds: &[(f64, f64)]) -> DMatrix<f64> {
+        inward_jacobian(self, p, r0, bounds)
+    }
+
+    /// What one [`Residuals::jacobian`] of `n` parameters costs, in
+    /// residual evaluations (`n` for the differences): the fits report
+    /// their work in these.
+    fn jacobian_evaluations(&self, n: usize) -> usize {
+        n
+    }
+
     /// ½·Σ e² at `p` (Zhang & Li's (2017) objective ε).
     fn cost(&self, p: &[f64]) -> f64 {
         let mut r = vec![0.0; self.count()];
@@ -28,15 +45,19 @@ pub trait Residuals: Sync {
 
 /// Forward-difference Jacobian at `p` given the residuals `r0` there
 /// (relative step 1e-7; [`inward_jacobian`] without bounds).
-pub(crate) fn jacobian(problem: &dyn Residuals, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
-    let free = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
-    inward_jacobian(problem, p, r0, &free)
+pub(crate) fn jacobian<R: Residuals + ?Sized>(problem: &R, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
+    inward_jacobian(problem, p, r0, &unbounded(p.len()))
+}
+
+/// No bounds on `n` parameters.
+fn unbounded(n: usize) -> Vec<(f64, f64)> {
+    vec![(f64::NEG_INFINITY, f64::INFINITY); n]
 }
 
 /// Forward differences (relative step 1e-7) that step into the box at an
 /// upper bound.
-pub(crate) fn inward_jacobian(
-    problem: &dyn Residuals,
+pub(crate) fn inward_jacobian<R: Residuals + ?Sized>(
+    problem: &R,
     p: &[f64],
     r0: &[f64],
     bounds: &[(f64, f64)],
@@ -100,7 +121,8 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Adapter<'_> {
     fn jacobian(&self) -> Option<DMatrix<f64>> {
         let mut r = vec![0.0; self.problem.count()];
         self.problem.residuals(self.p.as_slice(), &mut r);
-        let j = jacobian(self.problem, self.p.as_slice(), &r);
+        let p = self.p.as_slice();
+        let j = self.problem.jacobian(p, &r, &unbounded(p.len()));
         j.iter().all(|v| v.is_finite()).then_some(j)
     }
 }
@@ -127,7 +149,7 @@ pub(crate) fn levenberg_marquardt_within(
     // The crate counts residual evaluations; each Jacobian costs n more.
     LocalResult {
         cost: problem.cost(&params),
-        evaluations: report.number_of_evaluations * (1 + p0.len()),
+        evaluations: report.number_of_evaluations * (1 + problem.jacobian_evaluations(p0.len())),
         // "No improvement possible" is convergence to machine precision
         // (a parameter pinned at a bound of a clamped problem ends so).
         converged: report.termination.was_successful()
@@ -171,8 +193,8 @@ impl GaussNewton {
         let mut evaluations = 1;
         let mut converged = false;
         for k in 0..self.iterations {
-            let j = jacobian(problem, &p, &r);
-            evaluations += n;
+            let j = problem.jacobian(&p, &r, &unbounded(n));
+            evaluations += problem.jacobian_evaluations(n);
             let jtj = j.transpose() * &j;
             let g = j.transpose() * DVector::from_column_slice(&r);
             let scale = jtj.diagonal().mean().max(1e-300);
@@ -276,6 +298,59 @@ pub(crate) mod tests {
             );
             assert!(r.cost < 1e-16);
         }
+    }
+
+    /// The decay with its exact Jacobian, counting the residual
+    /// evaluations the methods ask for.
+    pub(crate) struct ExactDecay(pub(crate) Decay, pub(crate) std::sync::atomic::AtomicUsize);
+    impl Residuals for ExactDecay {
+        fn count(&self) -> usize {
+            self.0.count()
+        }
+        fn residuals(&self, p: &[f64], out: &mut [f64]) {
+            self.1.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            self.0.residuals(p, out);
+        }
+        fn jacobian(&self, p: &[f64], _r0: &[f64], _bounds: &[(f64, f64)]) -> DMatrix<f64> {
+            let t = &self.0 .0;
+            DMatrix::from_fn(t.len(), 2, |i, k| {
+                let e = (-p[1] * t[i]).exp();
+                if k == 0 {
+                    e
+                } else {
+                    -p[0] * t[i] * e
+                }
+            })
+        }
+        fn jacobian_evaluations(&self, _n: usize) -> usize {
+            0
+        }
+    }
+
+    #[test]
+    fn the_methods_use_a_problems_own_jacobian() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let exact = || ExactDecay(decay(), AtomicUsize::new(0));
+        let asked = |e: &ExactDecay| e.1.load(Ordering::Relaxed);
+        let e = exact();
+        let gn = GaussNewton::default().minimize(&e, &[1.0, 0.2]);
+        assert!(
+            (gn.params[0] - 2.0).abs() < 1e-8 && (gn.params[1] - 0.7).abs() < 1e-8,
+            "{gn:?}"
+        );
+        // No column was differenced: every residual evaluation made is one
+        // the method reports.
+        assert_eq!(asked(&e), gn.evaluations);
+        // The crate's LM asks for the residuals again with each Jacobian
+        // (the adapter has no other way to the base point): at most one
+        // more per evaluation it counts, never a column's worth.
+        let l = exact();
+        let lm = levenberg_marquardt(&l, &[1.0, 0.2]);
+        assert!(
+            (lm.params[0] - 2.0).abs() < 1e-8 && (lm.params[1] - 0.7).abs() < 1e-8,
+            "{lm:?}"
+        );
+        assert!(asked(&l) <= 2 * lm.evaluations + 1, "{} {lm:?}", asked(&l));
     }
 
     #[test]

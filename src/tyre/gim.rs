@@ -16,9 +16,11 @@
 //! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
 use super::{
-    safe_tan, Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
+    safe_tan, safe_tan_of, Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
+    SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// Gim / brush tyre parameters for one wheel.
@@ -155,6 +157,31 @@ impl Parameterised for Gim {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1e3, 5e5), (0.02, 0.5), (0.1, 3.0), (0.0, 1.0), (0.0, 1.5)]
+    }
+}
+
+impl LateralForceOf for Gim {
+    /// As [`Gim::cornering`]'s force, the stiffness `K·(Fz/Fz_ref)^n` as
+    /// `K·e^(n·ln(Fz/Fz_ref))` (its derivative in n at n = 0 is not zero).
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        let zero = T::from(0.0);
+        if s.fz <= 0.0 {
+            return zero;
+        }
+        let (stiffness, friction, decay, exponent) = (p[0], p[2], p[3], p[4]);
+        // e^0 is 1 exactly: at n = 0 the value is K's, bit for bit.
+        let k = stiffness * ((s.fz / self.reference_load).ln() * exponent).exp();
+        let t = safe_tan_of(s.alpha);
+        let mu = friction * s.mu_scale / (decay * t.abs() + 1.0);
+        if mu <= 0.0 {
+            return zero;
+        }
+        let theta = k / (mu * 3.0 * s.fz);
+        let ln = -(theta * t.abs()) + 1.0;
+        if ln <= 0.0 {
+            return mu * s.fz * t.signum();
+        }
+        mu * s.fz * (-(ln * ln * ln) + 1.0) * t.signum()
     }
 }
 

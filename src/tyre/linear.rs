@@ -4,8 +4,11 @@
 //!
 //! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
-use super::{Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{
+    LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces, TyreModel,
+};
 use crate::error::ParamError;
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// Linear tyre parameters.
@@ -74,6 +77,16 @@ impl Parameterised for Linear {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1e3, 5e5)]
+    }
+}
+
+impl LateralForceOf for Linear {
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        if s.fz <= 0.0 {
+            T::from(0.0)
+        } else {
+            p[0] * s.alpha
+        }
     }
 }
 

@@ -8,8 +8,11 @@
 //!
 //! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
 
-use super::{Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{
+    LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces, TyreModel,
+};
 use crate::error::{Limit, ParamError};
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// Simplified Magic Formula parameters.
@@ -85,6 +88,16 @@ impl Parameterised for MagicSimple {
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         vec![(1.0, 60.0), (0.5, 2.0), (0.1, 4.0)]
+    }
+}
+
+impl LateralForceOf for MagicSimple {
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        if s.fz <= 0.0 {
+            return T::from(0.0);
+        }
+        let (b, c, d) = (p[0], p[1], p[2]);
+        d * s.mu_scale * s.fz * (c * (b * s.alpha).atan()).sin()
     }
 }
 

@@ -59,6 +59,7 @@ pub use name::ModelName;
 pub use registry::{model_names, models, register, swarm_models, ModelEntry, Tyre};
 
 use crate::error::ParamError;
+use num_dual::DualNum;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
@@ -204,6 +205,50 @@ pub trait TyreModel {
         }
         best.max(f(0.5 * (lo + hi)))
     }
+}
+
+/// The slip state in a scalar of the `num-dual` crate (a plain `f64`, or a
+/// dual number that carries derivatives): the inputs a derivative is taken
+/// with respect to — slip angle, load and friction scale; camber and speed
+/// stay plain numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlipOf<T> {
+    /// Slip angle α, rad.
+    pub alpha: T,
+    /// Vertical load, N.
+    pub fz: T,
+    /// Road friction scale.
+    pub mu_scale: T,
+    /// Forward speed of the wheel centre, m/s.
+    pub speed: f64,
+}
+
+impl<T: DualNum<f64> + Copy> SlipOf<T> {
+    /// The plain-number slip state of this one (derivatives dropped; no
+    /// longitudinal slip, no camber).
+    pub fn value(&self) -> SlipState {
+        SlipState {
+            alpha: self.alpha.re(),
+            kappa: 0.0,
+            fz: self.fz.re(),
+            camber: 0.0,
+            mu_scale: self.mu_scale.re(),
+            speed: self.speed,
+        }
+    }
+}
+
+/// A tyre model's pure-slip lateral force in any scalar of the `num-dual`
+/// crate, with its lateral parameter vector ([`Parameterised`], in that
+/// order) as scalars too: in dual numbers it gives the exact derivatives of
+/// the force with respect to the slip state and the parameters (forward
+/// mode, to rounding), with `f64` the force itself, the same arithmetic as
+/// [`TyreModel::lateral_force`] (no camber, no longitudinal slip: the
+/// vehicle model's wheel). The derivative of a model's kink (a wheel off
+/// the ground, full sliding) is that of the branch its value takes.
+pub trait LateralForceOf: Parameterised {
+    /// The lateral force at `s` with parameters `p`, N.
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T;
 }
 
 /// A named, bounded parameter vector: what identification works on.
@@ -382,5 +427,17 @@ pub(crate) fn safe_tan(alpha: f64) -> f64 {
     alpha.sin() / c
 }
 
+/// [`safe_tan`] in any scalar of `num-dual`.
+pub(crate) fn safe_tan_of<T: DualNum<f64> + Copy>(alpha: T) -> T {
+    let c = alpha.cos().abs();
+    if c.re() < 1e-12 {
+        alpha.sin() / 1e-12
+    } else {
+        alpha.sin() / c
+    }
+}
+
+#[cfg(test)]
+mod derivative_tests;
 #[cfg(test)]
 mod tests;

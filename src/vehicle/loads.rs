@@ -17,6 +17,7 @@
 
 use super::VehicleModel;
 use crate::constants::G;
+use num_dual::DualNum;
 
 /// Where the load-transfer solve starts: the last three solutions (the solve
 /// starts from their quadratic extrapolation) and the last slope of
@@ -133,6 +134,19 @@ pub(crate) fn solve_load_transfer<T>(
     (y1, o1, evals)
 }
 
+/// The root `ay` of `g(ay) = ay − y(ay)` (solved in plain numbers, e.g. by
+/// [`solve_load_transfer`]) with its derivatives with respect to the
+/// variables a dual scalar `T` carries, by implicit differentiation:
+/// `dAy/dθ = (∂y/∂θ)/(1 − ∂y/∂ay)`. `y_at_root` is `y` evaluated in `T` at
+/// the plain root (its derivative part is `∂y/∂θ`), `slope` is `∂y/∂ay`
+/// there (one evaluation in a scalar dual in ay). The derivative is that of
+/// the exact root; the iterations' own tolerance moves the value, not the
+/// derivative, by more than rounding.
+pub fn implicit_root<T: DualNum<f64> + Copy>(ay: f64, y_at_root: T, slope: f64) -> T {
+    let sensitivity = (y_at_root - y_at_root.re()) / (1.0 - slope);
+    sensitivity + ay
+}
+
 impl VehicleModel {
     /// Static wheel loads and the load transferred per m/s² of lateral
     /// acceleration on each axle: computed once per derivative evaluation,
@@ -206,6 +220,95 @@ impl VehicleModel {
             0.0
         } else {
             G * bank.sin()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tyre::{Gim, LateralForceOf, Parameterised, SlipOf};
+    use nalgebra::{Const, U1};
+    use num_dual::{Dual64, DualSVec64};
+
+    /// A car's Y(ay)/m on load-sensitive brush tyres (stiffness ∝ Fz^0.7)
+    /// at fixed slip angles, the loads moving with ay; `p` the front and
+    /// rear tyres' lateral parameters.
+    fn y_over_m<T: DualNum<f64> + Copy>(tyre: &Gim, p: &[T], ay: T) -> T {
+        let mut model = super::super::linear_bicycle();
+        model.vehicle = super::super::Vehicle::compact_sedan();
+        model.options.load_transfer = true;
+        let split = model.load_split(20.0);
+        let m = model.vehicle.mass;
+        // The split is linear in ay below lift-off: its slope per m/s².
+        let (at0, at1) = (split.at(0.0), split.at(1.0));
+        let mut y = T::from(0.0);
+        for (i, alpha) in [0.03, 0.03, 0.02, 0.02].into_iter().enumerate() {
+            let fz = ay * (at1[i] - at0[i]) + at0[i];
+            let q = if i < 2 { &p[..5] } else { &p[5..] };
+            let s = SlipOf {
+                alpha: T::from(alpha),
+                fz,
+                mu_scale: T::from(1.0),
+                speed: 20.0,
+            };
+            y += tyre.lateral_force_of(q, &s) / m;
+        }
+        y
+    }
+
+    #[test]
+    fn the_load_transfer_roots_derivatives_are_the_implicit_ones() {
+        let tyre = Gim {
+            load_exponent: 0.7,
+            friction_decay: 0.2,
+            ..Gim::new(40_000.0, 0.15, 1.0)
+        };
+        let p0: Vec<f64> = tyre
+            .parameters()
+            .into_iter()
+            .chain(tyre.parameters())
+            .collect();
+        let root = |p: &[f64]| {
+            let mut seed = LoadTransferSeed::default();
+            let (_, ay, _) = solve_load_transfer(true, &mut seed, 1e-15, |ay| {
+                let y = y_over_m(&tyre, p, ay);
+                (y, ay)
+            });
+            ay
+        };
+        let ay = root(&p0);
+        assert!(ay > 1.0, "a car cornering: {ay}");
+        type D = DualSVec64<10>;
+        let dual: Vec<D> = p0
+            .iter()
+            .enumerate()
+            .map(|(k, &v)| D::from(v).derivative(k))
+            .collect();
+        let slope = y_over_m(
+            &tyre,
+            &p0.iter().map(|&v| Dual64::from(v)).collect::<Vec<_>>(),
+            Dual64::from(ay).derivative(),
+        )
+        .eps;
+        let lifted = implicit_root(ay, y_over_m(&tyre, &dual, D::from(ay)), slope);
+        assert_eq!(lifted.re, ay);
+        let grad = lifted.eps.unwrap_generic(Const::<10>, U1);
+        let bounds: Vec<(f64, f64)> = tyre.bounds().into_iter().chain(tyre.bounds()).collect();
+        for k in 0..10 {
+            let h = 1e-3 * p0[k].abs().max(0.1 * (bounds[k].1 - bounds[k].0));
+            let at = |m: f64| {
+                let mut p = p0.clone();
+                p[k] += m * h;
+                root(&p)
+            };
+            let central = (8.0 * (at(1.0) - at(-1.0)) - (at(2.0) - at(-2.0))) / (12.0 * h);
+            if grad[k] == 0.0 {
+                assert_eq!(central, 0.0, "parameter {k}");
+            } else {
+                let e = (grad[k] - central).abs() / grad[k].abs();
+                assert!(e < 1e-6, "parameter {k}: {} vs {central}", grad[k]);
+            }
         }
     }
 }

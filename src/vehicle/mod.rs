@@ -38,7 +38,7 @@ mod rates;
 pub(crate) mod steady;
 
 pub use effects::{CombinedSlip, Effects, RollModel, MIN_RELAXATION_LENGTH};
-pub use loads::LoadTransferSeed;
+pub use loads::{implicit_root, LoadTransferSeed};
 pub use params::Vehicle;
 pub use rates::StateVector;
 pub(crate) use rates::LOAD_TOLERANCE;

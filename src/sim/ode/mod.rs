@@ -41,6 +41,7 @@
 //! output and RK4; `rosenbrock.rs` holds ROS34PW2.
 
 mod rosenbrock;
+pub mod sensitivity;
 
 pub use rosenbrock::{rosenbrock_w, W_NODES, W_PROBE, W_TIME_PROBE};
 

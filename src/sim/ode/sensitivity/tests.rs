@@ -2,8 +2,7 @@
 //! plain RK4 ([`super::super::rk4`]) on a 2-DOF bicycle with saturating
 //! tyres (the simplified Magic Formula through
 //! [`crate::tyre::LateralForceOf`]), with respect to both axles' tyre
-//! parameters and the initial state; and what they cost against a plain
-//! replay and the n + 1 replays of forward differences.
+//! parameters and the initial state.
 
 use super::*;
 use crate::sim::ode::{rk4, OdeSystem};
@@ -179,44 +178,4 @@ fn rk4_dual_derivatives_are_those_of_the_discrete_replay() {
         }
     }
     eprintln!("rk4 sensitivities: largest relative error {worst:.1e}");
-}
-
-#[test]
-fn one_dual_replay_costs_less_than_the_replays_of_forward_differences() {
-    use std::time::Instant;
-    // The fastest of five of each: the machine is shared.
-    let time = |f: &dyn Fn()| {
-        (0..5)
-            .map(|_| {
-                let t = Instant::now();
-                f();
-                t.elapsed().as_secs_f64()
-            })
-            .fold(f64::INFINITY, f64::min)
-    };
-    let plain = time(&|| {
-        std::hint::black_box(plain_replay(std::hint::black_box(&POINT)));
-    });
-    let dual = time(&|| {
-        std::hint::black_box(dual_replay(std::hint::black_box(&POINT)));
-    });
-    let differences = time(&|| {
-        for k in 0..=VARS {
-            let mut v = POINT;
-            if k < VARS {
-                v[k] *= 1.0 + 1e-7;
-            }
-            std::hint::black_box(plain_replay(std::hint::black_box(&v)));
-        }
-    });
-    eprintln!(
-        "{STEPS} RK4 steps, {VARS} variables: one replay {:.3} ms, with derivatives {:.3} ms ({:.1}×), {} replays {:.3} ms ({:.1}×)",
-        plain * 1e3,
-        dual * 1e3,
-        dual / plain,
-        VARS + 1,
-        differences * 1e3,
-        differences / plain
-    );
-    assert!(dual < differences, "{dual} s against {differences} s");
 }

@@ -64,10 +64,9 @@ pub enum FitError {
         have: usize,
     },
     /// No stage of a staged identification had the rows it needs; each
-    /// stage's reason. Transitional: the staged fit (`identify::mf_staged`)
-    /// still gives its reasons as text.
-    #[error("no stage could be fitted ({})", .0.join("; "))]
-    NoStageFitted(Vec<String>),
+    /// stage's reason.
+    #[error("no stage could be fitted ({})", joined(.0))]
+    NoStageFitted(Vec<StageSkip>),
     /// A written tyre file that does not reproduce the fitted forces.
     #[error("the written .tir does not reproduce the fitted forces (relative difference {difference:.2e})")]
     RoundTrip {
@@ -139,4 +138,85 @@ pub enum DiagnosisError {
         /// Why the fit failed.
         source: Box<Error>,
     },
+}
+
+/// `a; b; c`.
+fn joined(skips: &[StageSkip]) -> String {
+    skips
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// The rows a stage of the staged Magic Formula fit (Wei et al. 2010)
+/// needs and the data lack.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ThisError)]
+#[non_exhaustive]
+pub enum StageRows {
+    /// Pure Fx.
+    #[error("no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)")]
+    PureLongitudinal,
+    /// Pure Fy.
+    #[error("no pure lateral rows (columns `alpha` and `fy`, |κ| ≤ 1e-3)")]
+    PureLateral,
+    /// Pure Mz.
+    #[error("no pure lateral rows with a measured `mz`")]
+    PureLateralMz,
+    /// Combined Fx.
+    #[error("no combined-slip rows with a measured `fx` (both |κ| and |α| above 1e-3)")]
+    CombinedFx,
+    /// Combined Fy.
+    #[error("no rows with longitudinal slip (|κ| above 1e-3) and a measured `fy`")]
+    LongitudinalSlipFy,
+    /// Combined Mz.
+    #[error("no rows with longitudinal slip (|κ| above 1e-3) and a measured `mz`")]
+    LongitudinalSlipMz,
+    /// Mx.
+    #[error("no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)")]
+    Mx,
+    /// My.
+    #[error("no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)")]
+    My,
+}
+
+/// Why a stage of the staged fit was skipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ThisError)]
+#[non_exhaustive]
+pub enum SkipReason {
+    /// The data have none of the stage's rows.
+    #[error("{0}")]
+    NoRows(StageRows),
+    /// Fewer rows than the stage's free parameters need.
+    #[error("{rows} rows cannot fit {free} parameters")]
+    TooFewRows {
+        /// Rows the stage has.
+        rows: usize,
+        /// Its free parameters.
+        free: usize,
+    },
+    /// The stage it builds on was skipped.
+    #[error("it builds on the {stage} stage, which was skipped")]
+    BuildsOnSkipped {
+        /// That stage's label.
+        stage: &'static str,
+    },
+}
+
+impl serde::Serialize for SkipReason {
+    /// As its message: the report's `skipped` is the sentence a reader
+    /// sees.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+/// A skipped stage and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ThisError)]
+#[error("{stage}: {reason}")]
+pub struct StageSkip {
+    /// The stage's label.
+    pub stage: &'static str,
+    /// Why.
+    pub reason: SkipReason,
 }

@@ -19,7 +19,7 @@ mod rig;
 #[cfg(test)]
 mod tests;
 
-pub use fit::{DiagnosisError, FitError};
+pub use fit::{DiagnosisError, FitError, SkipReason, StageRows, StageSkip};
 pub use input::{CellProblem, InputError, Location};
 pub use metrics::MetricsError;
 pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};

@@ -159,22 +159,6 @@ pub enum ParamReason {
         /// The parameters it takes.
         needed: usize,
     },
-    /// A reason given as text by a caller that has no kind for it yet
-    /// (prefer a kind: add one here).
-    #[error("{0}")]
-    Described(String),
-}
-
-impl From<&str> for ParamReason {
-    fn from(s: &str) -> Self {
-        ParamReason::Described(s.to_string())
-    }
-}
-
-impl From<&String> for ParamReason {
-    fn from(s: &String) -> Self {
-        ParamReason::Described(s.clone())
-    }
 }
 
 /// Why a range check's range is what it is ([`ParamReason::OutOfRange`]).

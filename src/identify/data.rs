@@ -218,11 +218,6 @@ pub struct Condition {
     pub points: Vec<RigPoint>,
 }
 
-/// Why identification cannot use the rig data it was given: the fit
-/// errors of [`crate::error::FitError`]. Transitional name, kept while
-/// `identify::mf_staged` still names it.
-pub type RigError = crate::error::FitError;
-
 /// Zhang & Li's (2017) test points generated from a known tyre: loads 2800 / 5700 /
 /// 8600 N, slip angles 0 … ±12.0321° in 0.2865° steps (85 per load), camber
 /// 0, 10 m/s, with multiplicative Gaussian noise of relative size `noise`

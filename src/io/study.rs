@@ -210,11 +210,11 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
     let f: StudyFile = src.parse()?;
     let scenario = scenario_of(&f, &src)?;
     let unit_name = f.stiffness.as_ref().map_or("N/deg", |s| s.unit.as_str());
-    let unit: StiffnessUnit = unit_name.parse().map_err(|e: crate::error::Error| {
+    let unit: StiffnessUnit = unit_name.parse().map_err(|e| {
         param_error(
             &src,
             None,
-            ParamError::without_value("stiffness.unit", &e.to_string()),
+            ParamError::without_value("stiffness.unit", ParamReason::Name(Box::new(e))),
         )
     })?;
     let values = Values {
@@ -337,8 +337,11 @@ impl Values<'_> {
         let typed = |key: &str, v: &[TargetSpec]| -> Result<Vec<Target>, InputError> {
             v.iter()
                 .map(|t| {
-                    let metric: Metric = t.metric.parse().map_err(|e: crate::error::Error| {
-                        self.error(ParamError::without_value(key, &e.to_string()))
+                    let metric: Metric = t.metric.parse().map_err(|e| {
+                        self.error(ParamError::without_value(
+                            key,
+                            ParamReason::Name(Box::new(e)),
+                        ))
                     })?;
                     Ok(Target {
                         metric,

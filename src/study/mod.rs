@@ -14,7 +14,7 @@
 pub(crate) mod inverse;
 pub(crate) mod rbf;
 
-use crate::error::{named, Error, NameKind};
+use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
@@ -187,9 +187,9 @@ impl std::fmt::Display for Metric {
 }
 
 impl std::str::FromStr for Metric {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self, Error> {
-        named(&Self::ALL, Metric::name, NameKind::Metric, s).map_err(Error::Options)
+    type Err = OptionsError;
+    fn from_str(s: &str) -> Result<Self, OptionsError> {
+        named(&Self::ALL, Metric::name, NameKind::Metric, s)
     }
 }
 
@@ -252,10 +252,10 @@ impl std::fmt::Display for StiffnessUnit {
 }
 
 impl std::str::FromStr for StiffnessUnit {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self, Error> {
+    type Err = OptionsError;
+    fn from_str(s: &str) -> Result<Self, OptionsError> {
         let all = [StiffnessUnit::NPerDeg, StiffnessUnit::NPerRad];
-        named(&all, StiffnessUnit::as_str, NameKind::Unit, s).map_err(Error::Options)
+        named(&all, StiffnessUnit::as_str, NameKind::Unit, s)
     }
 }
 

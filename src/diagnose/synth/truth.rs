@@ -10,7 +10,7 @@
 use super::programme::Programme;
 use crate::diagnose::effects::{EffectKind, Needs, RollModel};
 use crate::diagnose::proving_ground::FourWheelEffects;
-use crate::error::ParamError;
+use crate::error::{ParamError, ParamReason};
 use crate::tyre::Tyre;
 use serde::Serialize;
 
@@ -48,10 +48,9 @@ impl Truth {
         if self == Truth::FourWheel && programme.logged() {
             return Err(ParamError::without_value(
                 "programme",
-                &format!(
-                    "the four-wheel truth holds its speed on a flat road: it drives the handling programme, not `{}`",
-                    programme.name()
-                ),
+                ParamReason::TruthProgramme {
+                    programme: programme.name().into(),
+                },
             ));
         }
         Ok(())
@@ -114,14 +113,12 @@ pub(super) fn four_wheel_effects(
     for (k, p) in effects {
         let need = Truth::FourWheel
             .values(Programme::Handling, *k)
-            .ok_or_else(|| {
-                ParamError::without_value(k.name(), "not an effect of the four-wheel truth")
-            })?;
+            .ok_or_else(|| ParamError::without_value(k.name(), ParamReason::NotATruthEffect))?;
         if p.len() != need.len() {
             return Err(ParamError::new(
                 k.name(),
                 p.len() as f64,
-                &format!("takes {} parameters", need.len()),
+                ParamReason::ParameterCount { needed: need.len() },
             ));
         }
         match k {

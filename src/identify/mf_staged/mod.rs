@@ -90,9 +90,9 @@ pub use paper_lm::paper_lm;
 pub use params::Stage;
 pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
 
-use super::data::{RigData, RigError};
+use super::data::RigData;
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
-use crate::error::InputError;
+use crate::error::{FitError, InputError, SkipReason, StageSkip};
 use crate::tyre::mf::{MagicFormula, MfInput, MfVersion};
 use params::EVEN;
 use serde::Serialize;
@@ -313,7 +313,7 @@ pub struct StageReport {
     /// Which stage.
     pub stage: Stage,
     /// Skipped, and why (`None`: fitted).
-    pub skipped: Option<String>,
+    pub skipped: Option<SkipReason>,
     /// Rows fitted.
     pub points: usize,
     /// Load, camber and pressure levels in them.
@@ -341,7 +341,7 @@ pub struct StageReport {
 }
 
 impl StageReport {
-    fn skipped(stage: Stage, why: String) -> Self {
+    fn skipped(stage: Stage, why: SkipReason) -> Self {
         Self {
             stage,
             skipped: Some(why),
@@ -390,7 +390,7 @@ pub struct Identified {
 }
 
 /// Runs the stages on `rows`. Fails only when no stage could run.
-pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigError> {
+pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, FitError> {
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
     let mut reports: Vec<StageReport> = Vec::new();
@@ -402,7 +402,9 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
             {
                 reports.push(StageReport::skipped(
                     stage,
-                    format!("it builds on the {} stage, which was skipped", need.label()),
+                    SkipReason::BuildsOnSkipped {
+                        stage: need.label(),
+                    },
                 ));
                 continue;
             }
@@ -418,17 +420,16 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, RigEr
         reports.push(rep);
     }
     if reports.iter().all(|r| r.skipped.is_some()) {
-        let why: Vec<String> = reports
+        let why: Vec<StageSkip> = reports
             .iter()
-            .map(|r| {
-                format!(
-                    "{}: {}",
-                    r.stage.label(),
-                    r.skipped.as_deref().unwrap_or("")
-                )
+            .filter_map(|r| {
+                r.skipped.map(|reason| StageSkip {
+                    stage: r.stage.label(),
+                    reason,
+                })
             })
             .collect();
-        return Err(RigError::NoStageFitted(why));
+        return Err(FitError::NoStageFitted(why));
     }
     // Report the sign-blind coefficients in one conventional sign.
     let c = &mut tyre.coefficients;

@@ -7,6 +7,7 @@ use super::paper_lm::paper_lm;
 use super::params::{held_reason, names_of, physical_bounds, Need, Stage, ANY};
 use super::start::{data_start, level_counts};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
+use crate::error::{SkipReason, StageRows};
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{jacobian, LocalResult, Residuals};
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
@@ -160,23 +161,20 @@ fn released_fit(
 }
 
 /// Why a stage with `rows` rows and `free` parameters is not fitted.
-fn skip_reason(stage: Stage, rows: usize, free: usize) -> String {
+fn skip_reason(stage: Stage, rows: usize, free: usize) -> SkipReason {
     if rows > 0 {
-        return format!("{rows} rows cannot fit {free} parameters");
+        return SkipReason::TooFewRows { rows, free };
     }
-    match stage {
-        Stage::PureFx => "no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)",
-        Stage::PureFy => "no pure lateral rows (columns `alpha` and `fy`, |κ| ≤ 1e-3)",
-        Stage::PureMz => "no pure lateral rows with a measured `mz`",
-        Stage::CombinedFx => {
-            "no combined-slip rows with a measured `fx` (both |κ| and |α| above 1e-3)"
-        }
-        Stage::CombinedFy => "no rows with longitudinal slip (|κ| above 1e-3) and a measured `fy`",
-        Stage::CombinedMz => "no rows with longitudinal slip (|κ| above 1e-3) and a measured `mz`",
-        Stage::Mx => "no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)",
-        Stage::My => "no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)",
-    }
-    .into()
+    SkipReason::NoRows(match stage {
+        Stage::PureFx => StageRows::PureLongitudinal,
+        Stage::PureFy => StageRows::PureLateral,
+        Stage::PureMz => StageRows::PureLateralMz,
+        Stage::CombinedFx => StageRows::CombinedFx,
+        Stage::CombinedFy => StageRows::LongitudinalSlipFy,
+        Stage::CombinedMz => StageRows::LongitudinalSlipMz,
+        Stage::Mx => StageRows::Mx,
+        Stage::My => StageRows::My,
+    })
 }
 
 /// The base tyre with the free parameters at their start values, and

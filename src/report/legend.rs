@@ -5,7 +5,7 @@
 //! value.
 
 use super::colour::colormap;
-use super::series::{palette, Series, Style, NO_VALUE};
+use super::series::{palette, Series, Shape, Style, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -58,11 +58,37 @@ where
                 ))?;
             }
         }
-        Style::Points(r) => {
+        Style::Dotted => {
+            for x in (6..32).step_by(6) {
+                side.draw(&PathElement::new(
+                    vec![(x, y), (x + 2, y)],
+                    c.stroke_width(2),
+                ))?;
+            }
+        }
+        Style::Points(r) if s.marker.is_none() => {
             side.draw(&Circle::new((19, y), r.clamp(2, 5), c.filled()))?;
         }
+        Style::Points(_) => {}
         Style::Cells(..) | Style::Heat(..) => {
             side.draw(&Rectangle::new([(8, y - 6), (30, y + 6)], c.filled()))?;
+        }
+    }
+    if let Some(m) = s.marker {
+        let r = m.size.clamp(2, 6);
+        match m.shape {
+            Shape::Disc => side.draw(&Circle::new((19, y), r, c.filled()))?,
+            Shape::Ring => {
+                side.draw(&Circle::new((19, y), r, WHITE.filled()))?;
+                side.draw(&Circle::new((19, y), r, c.stroke_width(2)))?;
+            }
+            Shape::Diamond => {
+                let d = (r + r / 3) as i32;
+                side.draw(&Polygon::new(
+                    vec![(19, y - d), (19 + d, y), (19, y + d), (19 - d, y)],
+                    c.filled(),
+                ))?;
+            }
         }
     }
     Ok(())

@@ -4,7 +4,7 @@
 //! each panel holds line, dashed-line and point series.
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
-pub use super::series::{palette, Series, Style};
+pub use super::series::{palette, Marker, Series, Shape, Style};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
 use plotters::coord::types::RangedCoordf64;
@@ -53,24 +53,6 @@ pub struct Figure {
     pub width: u32,
     /// Height of one row, px.
     pub row_height: u32,
-}
-
-/// Finite min/max with a margin; a flat range is widened.
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for v in values.filter(|v| v.is_finite()) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    let pad = if hi > lo {
-        0.05 * (hi - lo)
-    } else {
-        lo.abs().max(1.0) * 0.05
-    };
-    (lo - pad, hi + pad)
 }
 
 /// At most `max` evenly spaced points of a series (long records draw slowly).
@@ -173,12 +155,9 @@ where
     } else {
         (area.clone(), None)
     };
-    let (x0, x1) = panel
-        .x_range
-        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.x.iter().copied())));
-    let (y0, y1) = panel
-        .y_range
-        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.y.iter().copied())));
+    let (data_x, data_y) = super::cells::ranges(&panel.series);
+    let (x0, x1) = panel.x_range.unwrap_or(data_x);
+    let (y0, y1) = panel.y_range.unwrap_or(data_y);
     let mut chart = ChartBuilder::on(&plot)
         .caption(&panel.title, ("sans-serif", 16))
         .margin(8)
@@ -212,9 +191,6 @@ where
 {
     let c = palette(s.color);
     let all = || s.x.iter().copied().zip(s.y.iter().copied());
-    let cell = |x: f64, y: f64, dx: f64, dy: f64| {
-        [(x - 0.5 * dx, y - 0.5 * dy), (x + 0.5 * dx, y + 0.5 * dy)]
-    };
     match s.style {
         Style::Line => {
             chart.draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?;
@@ -227,9 +203,18 @@ where
                 c.stroke_width(2),
             ))?;
         }
-        Style::Points(r) => {
+        Style::Dotted => {
+            chart.draw_series(DashedLineSeries::new(
+                thin(&s.x, &s.y, 4000),
+                2,
+                4,
+                c.stroke_width(2),
+            ))?;
+        }
+        Style::Points(r) if s.marker.is_none() => {
             chart.draw_series(all().map(|p| Circle::new(p, r, c.filled())))?;
         }
+        Style::Points(_) => {}
         Style::Segments => {
             let pts: Vec<(f64, f64)> = all().collect();
             chart.draw_series(
@@ -237,20 +222,63 @@ where
                     .map(|w| PathElement::new(vec![w[0], w[1]], c.stroke_width(1))),
             )?;
         }
-        Style::Cells(dx, dy) => {
-            chart
-                .draw_series(all().map(|(x, y)| Rectangle::new(cell(x, y, dx, dy), c.filled())))?;
+        Style::Cells(..) => {
+            let cells = super::cells::rectangles(s);
+            chart.draw_series(cells.into_iter().map(|r| Rectangle::new(r, c.filled())))?;
         }
-        Style::Heat(dx, dy) => {
+        Style::Heat(..) => {
             let vals = s.values.as_deref().unwrap_or(&[]);
             let scale = s.scale.as_ref();
-            chart.draw_series(all().zip(vals).map(|((x, y), &v)| {
+            let cells = super::cells::rectangles(s);
+            chart.draw_series(cells.into_iter().zip(vals).map(|(r, &v)| {
                 // A cell without a value is drawn as such, never as the
                 // colour of the map's minimum.
                 let fill = scale
                     .and_then(|sc| sc.position(v))
                     .map_or(NO_VALUE, colormap);
-                Rectangle::new(cell(x, y, dx, dy), fill.filled())
+                Rectangle::new(r, fill.filled())
+            }))?;
+        }
+    }
+    if let Some(m) = s.marker {
+        draw_marks(
+            chart,
+            all().filter(|p| p.0.is_finite() && p.1.is_finite()),
+            m,
+            c,
+        )?;
+    }
+    Ok(())
+}
+
+/// Marker `m` in colour `c` at every point.
+fn draw_marks<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    pts: impl Iterator<Item = (f64, f64)>,
+    m: Marker,
+    c: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let r = m.size as i32;
+    match m.shape {
+        Shape::Disc => {
+            chart.draw_series(pts.map(|p| Circle::new(p, m.size, c.filled())))?;
+        }
+        Shape::Ring => {
+            // White inside, so that the line under it does not run through.
+            chart.draw_series(pts.map(|p| {
+                EmptyElement::at(p)
+                    + Circle::new((0, 0), m.size, WHITE.filled())
+                    + Circle::new((0, 0), m.size, c.stroke_width(2))
+            }))?;
+        }
+        Shape::Diamond => {
+            let d = r + r / 3;
+            chart.draw_series(pts.map(|p| {
+                EmptyElement::at(p)
+                    + Polygon::new(vec![(0, -d), (d, 0), (0, d), (-d, 0)], c.filled())
             }))?;
         }
     }

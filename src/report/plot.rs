@@ -149,11 +149,18 @@ where
         .iter()
         .any(|s| !s.label.is_empty() || s.scale.is_some());
     let width = area.dim_in_pixel().0 as i32;
-    let (plot, side) = if keyed && width > 2 * SIDE {
+    // The key beside the chart, or below it when the panel is too narrow
+    // to give up a column.
+    let (plot, side, below) = if keyed && width > 2 * SIDE {
         let (p, s) = area.split_horizontally(width - SIDE);
-        (p, Some(s))
+        (p, Some(s), None)
+    } else if keyed {
+        let height = area.dim_in_pixel().1 as i32;
+        let strip = super::legend::below_height(&panel.series, width - 16).min(height / 2);
+        let (p, b) = area.split_vertically(height - strip);
+        (p, None, Some(b))
     } else {
-        (area.clone(), None)
+        (area.clone(), None, None)
     };
     let (data_x, data_y) = super::cells::ranges(&panel.series);
     let (x0, x1) = panel.x_range.unwrap_or(data_x);
@@ -176,6 +183,9 @@ where
     }
     if let Some(side) = side {
         super::legend::draw(&side, &panel.series)?;
+    }
+    if let Some(below) = below {
+        super::legend::draw_below(&below.margin(0, 0, 8, 8), &panel.series)?;
     }
     Ok(())
 }
@@ -361,6 +371,42 @@ mod tests {
             assert!(
                 texts.iter().any(|t| t == text),
                 "{text} missing from {texts:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_narrow_panel_keeps_its_key_below_the_chart() {
+        let x: Vec<f64> = (0..20).map(f64::from).collect();
+        let fig = Figure {
+            width: 320,
+            ..Figure::stack(vec![Panel {
+                series: vec![
+                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
+                    Series::line("base model", &x, &x, 1),
+                ],
+                ..Panel::default()
+            }])
+        };
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let lowest = attrs(&svg, "circle", "cy")
+            .into_iter()
+            .take(20)
+            .fold(f64::NEG_INFINITY, f64::max);
+        for label in ["measured", "base model"] {
+            let y: Vec<f64> = svg
+                .split("<text ")
+                .skip(1)
+                .filter(|e| {
+                    let body = e.split_once('>').map_or("", |b| b.1);
+                    body.split("</text>").next().map(str::trim) == Some(label)
+                })
+                .filter_map(|e| attrs(&format!("<text {e}"), "text", "y").first().copied())
+                .collect();
+            assert!(!y.is_empty(), "{label} missing from a 320 px panel");
+            assert!(
+                y.iter().all(|&y| y > lowest),
+                "{label} at {y:?}, data down to {lowest}"
             );
         }
     }

@@ -89,27 +89,26 @@ pub fn ranges(series: &[Series]) -> ((f64, f64), (f64, f64)) {
             padded(series.iter().flat_map(|s| s.y.iter().copied())),
         );
     }
-    let span = |corner: &dyn Fn(&[(f64, f64); 2]) -> (f64, f64), of: &dyn Fn(&Series) -> &[f64]| {
+    let span = |axis: usize| {
+        let corners = cells.iter().map(|c| {
+            if axis == 0 {
+                (c[0].0, c[1].0)
+            } else {
+                (c[0].1, c[1].1)
+            }
+        });
         let others = series
             .iter()
             .filter(|s| rectangles(s).is_empty())
-            .flat_map(|s| of(s).iter().copied());
-        let (lo, hi) = cells.iter().map(corner).chain(others.map(|v| (v, v))).fold(
-            (f64::INFINITY, f64::NEG_INFINITY),
-            |(lo, hi), (a, b)| {
-                if a.is_finite() && b.is_finite() {
-                    (lo.min(a), hi.max(b))
-                } else {
-                    (lo, hi)
-                }
-            },
-        );
-        (lo, hi)
+            .flat_map(|s| if axis == 0 { &s.x } else { &s.y }.iter().map(|&v| (v, v)));
+        corners
+            .chain(others)
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (a, b)| {
+                (lo.min(a), hi.max(b))
+            })
     };
-    (
-        span(&|c| (c[0].0, c[1].0), &|s| &s.x),
-        span(&|c| (c[0].1, c[1].1), &|s| &s.y),
-    )
+    (span(0), span(1))
 }
 
 #[cfg(test)]

@@ -4,6 +4,12 @@
 //! integrated backward, its unstable one forward, started along the
 //! Jacobian's eigenvectors; Strogatz, *Nonlinear Dynamics and Chaos*, 1994,
 //! §6.1–6.4). The figures drawn from them are the equilibria job's.
+//!
+//! Orbits are traced in arc length (the field divided by its length in
+//! box-scaled units: the same curves, at an even pace), so that a curve
+//! leaving a saddle, where time-stepping crawls, is drawn all the way: until
+//! it leaves the box, comes within [`NODE_RADIUS`] of an equilibrium, or has
+//! run [`MAX_LENGTH`] box half-widths (a closed orbit).
 //! Units: rad, rad/s, s; ISO signs.
 
 use super::stability::{self, Kind};
@@ -11,40 +17,66 @@ use super::{residual, Condition, Equilibrium, SearchBox};
 use crate::sim::ode::{self, OdeSystem};
 use crate::vehicle::VehicleModel;
 
-/// The (β, r) system at one condition, autonomous (constant steer and
-/// speed), as an ODE for the crate's integrator.
-struct Autonomous<'a> {
+/// How near an equilibrium (in box half-widths) an orbit ends on it.
+pub const NODE_RADIUS: f64 = 0.015;
+/// The longest orbit traced, in box half-widths of arc length.
+pub const MAX_LENGTH: f64 = 16.0;
+
+/// The (β, r) system reparameterised by arc length `s` in box-scaled units:
+/// dx/ds = ±f/‖f‖ with ‖·‖ taken in units of the box.
+struct ArcLength<'a> {
     model: &'a VehicleModel,
     condition: &'a Condition,
+    scale: [f64; 2],
+    /// +1 along the flow, −1 against it.
+    direction: f64,
 }
 
-impl OdeSystem<2> for Autonomous<'_> {
-    fn derivatives(&mut self, _t: f64, x: &[f64; 2]) -> [f64; 2] {
-        residual(self.model, self.condition, *x)
+impl OdeSystem<2> for ArcLength<'_> {
+    fn derivatives(&mut self, _s: f64, x: &[f64; 2]) -> [f64; 2] {
+        let f = residual(self.model, self.condition, *x);
+        let n = (f[0] / self.scale[0]).hypot(f[1] / self.scale[1]);
+        if !n.is_finite() || n == 0.0 {
+            return [0.0, 0.0];
+        }
+        [self.direction * f[0] / n, self.direction * f[1] / n]
     }
 }
 
-/// RK4 trajectory of the autonomous (β, r) system from `x0`, `dt` signed
-/// (negative integrates backward), stopping outside the box.
-pub(crate) fn trajectory(
+/// The orbit of the autonomous (β, r) system through `x0`, along the flow
+/// (`direction` +1) or against it (−1), by RK4 in arc length with steps of
+/// `step` box half-widths: until it leaves the box, comes within
+/// [`NODE_RADIUS`] of one of `ends`, or has run [`MAX_LENGTH`].
+pub(crate) fn orbit(
     model: &VehicleModel,
     c: &Condition,
     bx: &SearchBox,
     x0: [f64; 2],
-    dt: f64,
-    steps: usize,
+    direction: f64,
+    step: f64,
+    ends: &[[f64; 2]],
 ) -> Vec<[f64; 2]> {
-    let mut sys = Autonomous {
+    let scale = bx.scale();
+    let mut sys = ArcLength {
         model,
         condition: c,
+        scale,
+        direction,
     };
+    let near = |x: &[f64; 2], e: &[f64; 2]| {
+        ((x[0] - e[0]) / scale[0]).hypot((x[1] - e[1]) / scale[1]) < NODE_RADIUS
+    };
+    let steps = (MAX_LENGTH / step).ceil() as usize;
     let mut out = Vec::with_capacity(steps + 1);
-    ode::rk4(&mut sys, 0.0, dt, steps, x0, |_, i, _, x| {
+    ode::rk4(&mut sys, 0.0, step, steps, x0, |_, i, _, x| {
         let inside = i == 0 || (x[0].is_finite() && bx.contains(*x));
         if inside {
             out.push(*x);
         }
-        inside
+        // Stops on reaching an equilibrium (kept as the last point) or at a
+        // standstill of the field.
+        let moved = out.len() < 2 || out[out.len() - 2] != *x;
+        inside && moved && !(i > 0 && ends.iter().any(|e| near(x, e)))
     });
     out
 }
@@ -128,8 +160,9 @@ pub struct Separatrix {
 
 /// The stable (integrated backward) and unstable (forward) manifolds of
 /// every saddle among `eqs`, each branch started 1e-4 of the box along its
-/// eigenvector: per saddle, the stable branches then the unstable ones,
-/// the −1 side first.
+/// eigenvector and traced by [`orbit`] until it leaves the box or reaches
+/// another equilibrium: per saddle, the stable branches then the unstable
+/// ones, the −1 side first.
 pub(crate) fn separatrices(
     model: &VehicleModel,
     c: &Condition,
@@ -140,6 +173,11 @@ pub(crate) fn separatrices(
     let mut out = Vec::new();
     for e in eqs.iter().filter(|e| e.stability.kind == Kind::Saddle) {
         let x = [e.beta, e.yaw_rate];
+        let others: Vec<[f64; 2]> = eqs
+            .iter()
+            .map(|o| [o.beta, o.yaw_rate])
+            .filter(|o| *o != x)
+            .collect();
         let j = stability::jacobian(model, c, x);
         let mut branches = Vec::with_capacity(4);
         for (lambda, dir, manifold) in [
@@ -148,18 +186,86 @@ pub(crate) fn separatrices(
         ] {
             let v = eigenvector(j, lambda, scale);
             for side in [-1.0, 1.0] {
-                let x0 = [
-                    x[0] + side * 1e-4 * v[0] * scale[0],
-                    x[1] + side * 1e-4 * v[1] * scale[1],
-                ];
+                // `v` is a physical direction of unit length in box units.
+                let x0 = [x[0] + side * 1e-4 * v[0], x[1] + side * 1e-4 * v[1]];
                 branches.push(Separatrix {
                     manifold,
                     side,
-                    points: trajectory(model, c, bx, x0, dir * 0.005, 2000),
+                    points: orbit(model, c, bx, x0, dir, 0.004, &others),
                 });
             }
         }
         out.push(branches);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::equilibria::exact;
+    use crate::equilibria::tests::equilibria_model;
+
+    /// How far inside the box a point lies: 0 on its edge, 1 at its centre.
+    fn depth(bx: &SearchBox, x: [f64; 2]) -> f64 {
+        1.0 - (x[0].abs() / bx.beta_max).max(x[1].abs() / bx.yaw_rate_max)
+    }
+
+    #[test]
+    fn a_saddles_manifolds_run_to_the_edge_of_the_box_or_to_a_node() {
+        // Li, Jia & Zhao's vehicle straight ahead at 70 km/h: a stable node
+        // at the origin between two spin saddles.
+        let m = equilibria_model(false);
+        let c = Condition {
+            steer: 0.0,
+            friction: 0.8,
+            speed: 70.0 / 3.6,
+        };
+        let bx = SearchBox {
+            beta_max: 0.6,
+            yaw_rate_max: 0.968,
+        };
+        let eqs = exact::solve(&m, &c);
+        let node = eqs
+            .iter()
+            .find(|e| e.stability.kind.is_stable())
+            .map(|e| [e.beta, e.yaw_rate])
+            .expect("the straight-running node");
+        let seps = separatrices(&m, &c, &bx, &eqs);
+        assert_eq!(seps.len(), 2, "two saddles");
+        for branches in &seps {
+            for b in branches {
+                let end = *b.points.last().unwrap();
+                let at_node = ((end[0] - node[0]) / bx.beta_max)
+                    .hypot((end[1] - node[1]) / bx.yaw_rate_max)
+                    < NODE_RADIUS;
+                match b.manifold {
+                    // The separatrix comes in from outside the box.
+                    Manifold::Stable => assert!(depth(&bx, end) < 0.01, "{b:?}"),
+                    // The unstable manifold leaves for the node or the edge.
+                    Manifold::Unstable => assert!(at_node || depth(&bx, end) < 0.01, "{end:?}"),
+                }
+            }
+            // One side of the unstable manifold falls into the node.
+            assert!(branches.iter().any(|b| {
+                let end = *b.points.last().unwrap();
+                b.manifold == Manifold::Unstable
+                    && ((end[0] - node[0]) / bx.beta_max)
+                        .hypot((end[1] - node[1]) / bx.yaw_rate_max)
+                        < NODE_RADIUS
+            }));
+        }
+        // A separatrix is an orbit of the field, from its first step (started
+        // along the eigenvector, not askew): the field at its points is
+        // tangent to the curve.
+        let b = &seps[0][0];
+        for w in b.points.windows(2).step_by(25) {
+            let f = residual(&m, &c, w[0]);
+            let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+            let s = bx.scale();
+            let cross = (f[0] / s[0]) * (d[1] / s[1]) - (f[1] / s[1]) * (d[0] / s[0]);
+            let norm = (f[0] / s[0]).hypot(f[1] / s[1]) * (d[0] / s[0]).hypot(d[1] / s[1]);
+            assert!(cross.abs() < 0.01 * norm, "{w:?}");
+        }
+    }
 }

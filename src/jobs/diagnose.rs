@@ -8,7 +8,7 @@
 
 use crate::diagnose::channels::Channel;
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
-use crate::diagnose::effects::{joined, Bound};
+use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::Part;
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
@@ -260,7 +260,7 @@ fn gap_map(d: &Diagnosis) -> Figure {
                 .collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
             if !pts.is_empty() {
-                panels.push(gap_panel(d, ch, axis, &pts));
+                panels.push(gap_panel(&d.verdict.effects, ch, axis, &pts));
             }
         }
     }
@@ -272,14 +272,29 @@ fn gap_map(d: &Diagnosis) -> Figure {
     }
 }
 
+/// A channel as a figure names it: the quantity, its symbol and its unit.
+fn quantity(ch: Channel) -> String {
+    let name = match ch {
+        Channel::YawRate => "yaw rate r",
+        Channel::Ay => "lateral acceleration a_y",
+        Channel::Beta => "sideslip β",
+    };
+    format!("{name}, {}", ch.unit())
+}
+
 /// One channel against one axis: (position, before, after) over the floor.
-fn gap_panel(d: &Diagnosis, ch: Channel, axis: PartAxis, pts: &[(f64, f64, f64)]) -> Panel {
+fn gap_panel(
+    effects: &[EffectKind],
+    ch: Channel,
+    axis: PartAxis,
+    pts: &[(f64, f64, f64)],
+) -> Panel {
     let (x_label, title) = match axis {
         PartAxis::Time => (
             "time after the input starts (window centre), s",
             "by time window",
         ),
-        PartAxis::Ay => ("|ay| band centre, m/s²", "by lateral-acceleration level"),
+        PartAxis::Ay => ("|a_y| band centre, m/s²", "by |a_y| level"),
         PartAxis::Speed => ("speed band centre, m/s", "by speed"),
     };
     let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
@@ -289,9 +304,9 @@ fn gap_panel(d: &Diagnosis, ch: Channel, axis: PartAxis, pts: &[(f64, f64, f64)]
         Series::line("base model", &x, &before, 1),
         Series::line("", &x, &before, 1).styled(Style::Points(4)),
     ];
-    if !d.verdict.effects.is_empty() {
+    if !effects.is_empty() {
         series.push(Series::line(
-            &format!("with {}", joined(&d.verdict.effects, " + ")),
+            &format!("with {}", joined(effects, " + ")),
             &x,
             &after,
             2,
@@ -301,9 +316,9 @@ fn gap_panel(d: &Diagnosis, ch: Channel, axis: PartAxis, pts: &[(f64, f64, f64)]
     let (x0, x1) = (x[0] - 0.5, x[x.len() - 1] + 0.5);
     series.push(Series::line("3 × noise floor", &[x0, x1], &[3.0, 3.0], 7).styled(Style::Dashed));
     Panel {
-        title: format!("{} {title}: held-out RMS / noise floor", ch.name()),
+        title: format!("{} — {title}", quantity(ch)),
         x_label: x_label.into(),
-        y_label: "RMS / noise floor".into(),
+        y_label: "held-out RMS / noise floor".into(),
         series,
         x_range: Some((x0, x1)),
         y_range: None,
@@ -336,9 +351,9 @@ fn overlays(d: &Diagnosis) -> Figure {
                 ));
             }
             panels.push(Panel {
-                title: format!("{name}: {} (held out)", ch.name()),
+                title: format!("{name}: {} (held out)", quantity(*ch)),
                 x_label: "t, s".into(),
-                y_label: format!("{}, {}", ch.name(), ch.unit()),
+                y_label: quantity(*ch),
                 series,
                 x_range: None,
                 y_range: None,
@@ -361,5 +376,26 @@ fn value(v: f64) -> String {
         format!("{v:.3e}")
     } else {
         format!("{v:.4}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gap_map_panels_name_the_quantity_with_its_unit() {
+        let pts = [(1.0, 5.0, 1.0), (2.0, 4.0, 1.5)];
+        let p = gap_panel(&[], Channel::YawRate, PartAxis::Time, &pts);
+        assert_eq!(p.title, "yaw rate r, rad/s — by time window");
+        assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
+        assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
+        // No report name (yaw_rate, ay, beta) in a title.
+        for ch in Channel::ALL {
+            for axis in PartAxis::ALL {
+                let t = gap_panel(&[], ch, axis, &pts).title;
+                assert!(!t.contains(ch.name()), "{t}");
+            }
+        }
     }
 }

@@ -5,7 +5,7 @@
 //! value.
 
 use super::colour::colormap;
-use super::series::{palette, Series, Style, NO_VALUE};
+use super::series::{palette, Series, Shape, Style, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -37,6 +37,102 @@ where
     Ok(())
 }
 
+/// Where the entries of a key laid out below a chart `width` px wide go:
+/// (x, y) of each entry's swatch, in rows from the left, each entry as wide
+/// as its label; and the height of the rows, px.
+pub(super) fn below_layout(labels: &[&str], width: i32) -> (Vec<(i32, i32)>, i32) {
+    let (mut x, mut y) = (0, ROW / 2 + 2);
+    let mut at = Vec::with_capacity(labels.len());
+    for label in labels {
+        let w = 46 + 7 * label.chars().count() as i32;
+        if x > 0 && x + w > width {
+            x = 0;
+            y += ROW;
+        }
+        at.push((x, y));
+        x += w;
+    }
+    let height = if labels.is_empty() { 0 } else { y + ROW / 2 };
+    (at, height)
+}
+
+/// Height of the strip a key below a chart `width` px wide takes: its rows
+/// and, for a heat map, a horizontal colour bar.
+pub(super) fn below_height(series: &[Series], width: i32) -> i32 {
+    let labels: Vec<&str> = labels(series);
+    let bar = series.iter().any(|s| s.scale.is_some());
+    below_layout(&labels, width).1 + if bar { BAR_BELOW } else { 0 }
+}
+
+/// Height of a horizontal colour bar with its label and ticks, px.
+const BAR_BELOW: i32 = 64;
+
+fn labels(series: &[Series]) -> Vec<&str> {
+    series
+        .iter()
+        .filter(|s| !s.label.is_empty())
+        .map(|s| s.label.as_str())
+        .collect()
+}
+
+/// Draws the key of `series` into `strip`, below a chart too narrow for a
+/// column beside it: the entries in rows, then a heat map's colour bar
+/// lying down.
+pub(super) fn draw_below<DB: DrawingBackend>(
+    strip: &DrawingArea<DB, Shift>,
+    series: &[Series],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let width = strip.dim_in_pixel().0 as i32;
+    let keyed: Vec<&Series> = series.iter().filter(|s| !s.label.is_empty()).collect();
+    let (at, height) = below_layout(&labels(series), width);
+    for (s, (x, y)) in keyed.iter().zip(at) {
+        let w = (width - x).max(1) as u32;
+        let cell = strip.clone().shrink((x, y - ROW / 2), (w, ROW as u32));
+        swatch(&cell, s, ROW / 2)?;
+        cell.draw(&Text::new(s.label.clone(), (38, ROW / 2 - 7), FONT))?;
+    }
+    for s in series {
+        if let (Style::Heat(..), Some(scale)) = (s.style, &s.scale) {
+            let top = height + 4;
+            let missing = s
+                .values
+                .as_deref()
+                .is_some_and(|v| v.iter().any(|x| !x.is_finite()));
+            let name = format!(
+                "{} ({}{})",
+                scale.label,
+                scale.kind.name(),
+                if missing { "; grey: no value" } else { "" }
+            );
+            strip.draw(&Text::new(name, (8, top), FONT))?;
+            let (left, right) = (8, width - 30);
+            const STEPS: i32 = 64;
+            for k in 0..STEPS {
+                let t = (f64::from(k) + 0.5) / f64::from(STEPS);
+                let a = left + k * (right - left) / STEPS;
+                let b = left + (k + 1) * (right - left) / STEPS;
+                strip.draw(&Rectangle::new(
+                    [(a, top + 18), (b + 1, top + 32)],
+                    colormap(t).filled(),
+                ))?;
+            }
+            for k in 0..=2 {
+                let t = f64::from(k) / 2.0;
+                let x = left + (t * f64::from(right - left)).round() as i32;
+                if let Some(v) = scale.value_at(t) {
+                    // The ends' labels kept inside the strip.
+                    let shift = [0, 14, 30][k as usize];
+                    strip.draw(&Text::new(tick(v), (x - shift, top + 36), FONT))?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 fn swatch<DB: DrawingBackend>(
     side: &DrawingArea<DB, Shift>,
     s: &Series,
@@ -58,11 +154,37 @@ where
                 ))?;
             }
         }
-        Style::Points(r) => {
+        Style::Dotted => {
+            for x in (6..32).step_by(6) {
+                side.draw(&PathElement::new(
+                    vec![(x, y), (x + 2, y)],
+                    c.stroke_width(2),
+                ))?;
+            }
+        }
+        Style::Points(r) if s.marker.is_none() => {
             side.draw(&Circle::new((19, y), r.clamp(2, 5), c.filled()))?;
         }
+        Style::Points(_) => {}
         Style::Cells(..) | Style::Heat(..) => {
             side.draw(&Rectangle::new([(8, y - 6), (30, y + 6)], c.filled()))?;
+        }
+    }
+    if let Some(m) = s.marker {
+        let r = m.size.clamp(2, 6);
+        match m.shape {
+            Shape::Disc => side.draw(&Circle::new((19, y), r, c.filled()))?,
+            Shape::Ring => {
+                side.draw(&Circle::new((19, y), r, WHITE.filled()))?;
+                side.draw(&Circle::new((19, y), r, c.stroke_width(2)))?;
+            }
+            Shape::Diamond => {
+                let d = (r + r / 3) as i32;
+                side.draw(&Polygon::new(
+                    vec![(19, y - d), (19 + d, y), (19, y + d), (19 - d, y)],
+                    c.filled(),
+                ))?;
+            }
         }
     }
     Ok(())

@@ -4,6 +4,8 @@
 //! at a time per output folder ([`lock`]). Every CSV of every command goes
 //! through [`write_csv`].
 
+pub mod branches;
+mod cells;
 pub mod colour;
 pub mod html;
 mod legend;
@@ -11,6 +13,7 @@ pub mod lock;
 pub mod plot;
 pub mod progress;
 pub mod series;
+pub mod stability;
 
 pub use lock::OutputLock;
 

@@ -4,7 +4,7 @@
 //! each panel holds line, dashed-line and point series.
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
-pub use super::series::{palette, Series, Style};
+pub use super::series::{palette, Marker, Series, Shape, Style};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
 use plotters::coord::types::RangedCoordf64;
@@ -53,24 +53,6 @@ pub struct Figure {
     pub width: u32,
     /// Height of one row, px.
     pub row_height: u32,
-}
-
-/// Finite min/max with a margin; a flat range is widened.
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for v in values.filter(|v| v.is_finite()) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    let pad = if hi > lo {
-        0.05 * (hi - lo)
-    } else {
-        lo.abs().max(1.0) * 0.05
-    };
-    (lo - pad, hi + pad)
 }
 
 /// At most `max` evenly spaced points of a series (long records draw slowly).
@@ -167,18 +149,22 @@ where
         .iter()
         .any(|s| !s.label.is_empty() || s.scale.is_some());
     let width = area.dim_in_pixel().0 as i32;
-    let (plot, side) = if keyed && width > 2 * SIDE {
+    // The key beside the chart, or below it when the panel is too narrow
+    // to give up a column.
+    let (plot, side, below) = if keyed && width > 2 * SIDE {
         let (p, s) = area.split_horizontally(width - SIDE);
-        (p, Some(s))
+        (p, Some(s), None)
+    } else if keyed {
+        let height = area.dim_in_pixel().1 as i32;
+        let strip = super::legend::below_height(&panel.series, width - 16).min(height / 2);
+        let (p, b) = area.split_vertically(height - strip);
+        (p, None, Some(b))
     } else {
-        (area.clone(), None)
+        (area.clone(), None, None)
     };
-    let (x0, x1) = panel
-        .x_range
-        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.x.iter().copied())));
-    let (y0, y1) = panel
-        .y_range
-        .unwrap_or_else(|| range(panel.series.iter().flat_map(|s| s.y.iter().copied())));
+    let (data_x, data_y) = super::cells::ranges(&panel.series);
+    let (x0, x1) = panel.x_range.unwrap_or(data_x);
+    let (y0, y1) = panel.y_range.unwrap_or(data_y);
     let mut chart = ChartBuilder::on(&plot)
         .caption(&panel.title, ("sans-serif", 16))
         .margin(8)
@@ -198,6 +184,9 @@ where
     if let Some(side) = side {
         super::legend::draw(&side, &panel.series)?;
     }
+    if let Some(below) = below {
+        super::legend::draw_below(&below.margin(0, 0, 8, 8), &panel.series)?;
+    }
     Ok(())
 }
 
@@ -212,9 +201,6 @@ where
 {
     let c = palette(s.color);
     let all = || s.x.iter().copied().zip(s.y.iter().copied());
-    let cell = |x: f64, y: f64, dx: f64, dy: f64| {
-        [(x - 0.5 * dx, y - 0.5 * dy), (x + 0.5 * dx, y + 0.5 * dy)]
-    };
     match s.style {
         Style::Line => {
             chart.draw_series(LineSeries::new(thin(&s.x, &s.y, 4000), c.stroke_width(2)))?;
@@ -227,9 +213,18 @@ where
                 c.stroke_width(2),
             ))?;
         }
-        Style::Points(r) => {
+        Style::Dotted => {
+            chart.draw_series(DashedLineSeries::new(
+                thin(&s.x, &s.y, 4000),
+                2,
+                4,
+                c.stroke_width(2),
+            ))?;
+        }
+        Style::Points(r) if s.marker.is_none() => {
             chart.draw_series(all().map(|p| Circle::new(p, r, c.filled())))?;
         }
+        Style::Points(_) => {}
         Style::Segments => {
             let pts: Vec<(f64, f64)> = all().collect();
             chart.draw_series(
@@ -237,20 +232,63 @@ where
                     .map(|w| PathElement::new(vec![w[0], w[1]], c.stroke_width(1))),
             )?;
         }
-        Style::Cells(dx, dy) => {
-            chart
-                .draw_series(all().map(|(x, y)| Rectangle::new(cell(x, y, dx, dy), c.filled())))?;
+        Style::Cells(..) => {
+            let cells = super::cells::rectangles(s);
+            chart.draw_series(cells.into_iter().map(|r| Rectangle::new(r, c.filled())))?;
         }
-        Style::Heat(dx, dy) => {
+        Style::Heat(..) => {
             let vals = s.values.as_deref().unwrap_or(&[]);
             let scale = s.scale.as_ref();
-            chart.draw_series(all().zip(vals).map(|((x, y), &v)| {
+            let cells = super::cells::rectangles(s);
+            chart.draw_series(cells.into_iter().zip(vals).map(|(r, &v)| {
                 // A cell without a value is drawn as such, never as the
                 // colour of the map's minimum.
                 let fill = scale
                     .and_then(|sc| sc.position(v))
                     .map_or(NO_VALUE, colormap);
-                Rectangle::new(cell(x, y, dx, dy), fill.filled())
+                Rectangle::new(r, fill.filled())
+            }))?;
+        }
+    }
+    if let Some(m) = s.marker {
+        draw_marks(
+            chart,
+            all().filter(|p| p.0.is_finite() && p.1.is_finite()),
+            m,
+            c,
+        )?;
+    }
+    Ok(())
+}
+
+/// Marker `m` in colour `c` at every point.
+fn draw_marks<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    pts: impl Iterator<Item = (f64, f64)>,
+    m: Marker,
+    c: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let r = m.size as i32;
+    match m.shape {
+        Shape::Disc => {
+            chart.draw_series(pts.map(|p| Circle::new(p, m.size, c.filled())))?;
+        }
+        Shape::Ring => {
+            // White inside, so that the line under it does not run through.
+            chart.draw_series(pts.map(|p| {
+                EmptyElement::at(p)
+                    + Circle::new((0, 0), m.size, WHITE.filled())
+                    + Circle::new((0, 0), m.size, c.stroke_width(2))
+            }))?;
+        }
+        Shape::Diamond => {
+            let d = r + r / 3;
+            chart.draw_series(pts.map(|p| {
+                EmptyElement::at(p)
+                    + Polygon::new(vec![(0, -d), (d, 0), (0, d), (-d, 0)], c.filled())
             }))?;
         }
     }
@@ -333,6 +371,42 @@ mod tests {
             assert!(
                 texts.iter().any(|t| t == text),
                 "{text} missing from {texts:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_narrow_panel_keeps_its_key_below_the_chart() {
+        let x: Vec<f64> = (0..20).map(f64::from).collect();
+        let fig = Figure {
+            width: 320,
+            ..Figure::stack(vec![Panel {
+                series: vec![
+                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
+                    Series::line("base model", &x, &x, 1),
+                ],
+                ..Panel::default()
+            }])
+        };
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let lowest = attrs(&svg, "circle", "cy")
+            .into_iter()
+            .take(20)
+            .fold(f64::NEG_INFINITY, f64::max);
+        for label in ["measured", "base model"] {
+            let y: Vec<f64> = svg
+                .split("<text ")
+                .skip(1)
+                .filter(|e| {
+                    let body = e.split_once('>').map_or("", |b| b.1);
+                    body.split("</text>").next().map(str::trim) == Some(label)
+                })
+                .filter_map(|e| attrs(&format!("<text {e}"), "text", "y").first().copied())
+                .collect();
+            assert!(!y.is_empty(), "{label} missing from a 320 px panel");
+            assert!(
+                y.iter().all(|&y| y > lowest),
+                "{label} at {y:?}, data down to {lowest}"
             );
         }
     }

@@ -12,6 +12,8 @@ pub enum Style {
     Line,
     /// Dashed line.
     Dashed,
+    /// Dotted line (short dashes), told apart from `Dashed` in one figure.
+    Dotted,
     /// Filled circles of the given radius (px).
     Points(u32),
     /// Separate segments: points 2k and 2k + 1 are joined.
@@ -23,6 +25,26 @@ pub enum Style {
     /// [`ColourScale`] on a blue–yellow map, with a colour bar beside the
     /// panel; cells without a value are drawn light grey.
     Heat(f64, f64),
+}
+
+/// The shape of a marker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// A filled circle.
+    Disc,
+    /// A filled diamond (a square on its corner).
+    Diamond,
+    /// A hollow circle (white inside, outline in the series colour).
+    Ring,
+}
+
+/// A marker drawn at every point of a series, over its line if it has one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Marker {
+    /// Its shape.
+    pub shape: Shape,
+    /// Its radius, px.
+    pub size: u32,
 }
 
 /// Width of the column beside a panel that holds its legend and colour bar,
@@ -51,6 +73,8 @@ pub struct Series {
     pub scale: Option<ColourScale>,
     /// Palette index.
     pub color: usize,
+    /// A marker at every point (with `Style::Points` it replaces the discs).
+    pub marker: Option<Marker>,
 }
 
 impl Series {
@@ -64,6 +88,7 @@ impl Series {
             color,
             values: None,
             scale: None,
+            marker: None,
         }
     }
     /// A heat map: cells of size (dx, dy) centred on (x, y), coloured by
@@ -79,6 +104,7 @@ impl Series {
             values: Some(values),
             scale: Some(scale),
             color: 0,
+            marker: None,
         }
     }
 
@@ -87,11 +113,17 @@ impl Series {
         self.style = style;
         self
     }
+
+    /// The same series with a marker at every point.
+    pub fn marked(mut self, marker: Marker) -> Self {
+        self.marker = Some(marker);
+        self
+    }
 }
 
 /// Colour of palette index `i`.
 pub fn palette(i: usize) -> RGBColor {
-    const P: [RGBColor; 8] = [
+    const P: [RGBColor; 10] = [
         RGBColor(31, 119, 180),
         RGBColor(214, 39, 40),
         RGBColor(44, 160, 44),
@@ -100,6 +132,10 @@ pub fn palette(i: usize) -> RGBColor {
         RGBColor(140, 86, 75),
         RGBColor(23, 190, 207),
         RGBColor(127, 127, 127),
+        // Light blue: context drawn behind the data (trajectories).
+        RGBColor(160, 196, 222),
+        // Magenta.
+        RGBColor(204, 51, 153),
     ];
     P[i % P.len()]
 }

@@ -9,12 +9,14 @@ use crate::equilibria::phase::{self, Manifold};
 use crate::equilibria::sweep::{axis_lines, SweepResult};
 use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
 use crate::error::Error;
+use crate::report::branches::{self, At};
 use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::stability::{self, Class};
 use crate::vehicle::VehicleModel;
 use std::path::Path;
 
-const STABLE: usize = 0;
-const UNSTABLE: usize = 1;
+/// Palette index of the fold markers (grey, apart from the stability
+/// colours).
 const FOLD: usize = 7;
 
 /// A parameter in display units and its label.
@@ -41,8 +43,18 @@ fn in_box(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Equilibrium> {
         .collect()
 }
 
+/// Largest step, in box half-widths, between two equilibria of one branch
+/// at neighbouring grid values.
+const BRANCH_GAP: f64 = 0.35;
+/// Largest distance, in box half-widths, from a fold to the last point of a
+/// branch that ends there (branches move fast near a fold).
+const FOLD_GAP: f64 = 0.8;
+
 /// β and r of the equilibria against the swept parameter, along the first
-/// line of `axis`.
+/// line of `axis`: equilibria of one branch joined (nearest neighbours in
+/// the box-scaled plane, [`branches::link`]), each segment and point in the
+/// style of its stability ([`Class`]), folds joined to the branch ends that
+/// meet there.
 pub fn branch_diagram(
     res: &SweepResult,
     axis: Axis,
@@ -62,46 +74,87 @@ pub fn branch_diagram(
         y_label: "r_e [deg/s]".into(),
         ..Panel::default()
     };
-    for w in line.windows(2) {
-        let (a, b) = (&res.points[w[0]], &res.points[w[1]]);
-        let (ea, eb) = (in_box(&a.exact, bx), in_box(&b.exact, bx));
-        if ea.len() != eb.len() {
+    let params: Vec<f64> = line
+        .iter()
+        .map(|&i| display(axis, axis.get(&res.points[i].condition)))
+        .collect();
+    let eqs: Vec<Vec<Equilibrium>> = line
+        .iter()
+        .map(|&i| in_box(&res.points[i].exact, bx))
+        .collect();
+    let scaled = |e: &Equilibrium| [e.beta / bx.beta_max, e.yaw_rate / bx.yaw_rate_max];
+    let columns: Vec<Vec<[f64; 2]>> = eqs.iter().map(|c| c.iter().map(scaled).collect()).collect();
+    let links = branches::link(&columns, BRANCH_GAP);
+    let class = |(c, k): At| Class::of(eqs[c][k].stability.kind);
+    let mut present = Vec::new();
+    let mut segment = |class: Class, x: [f64; 2], b: [f64; 2], r: [f64; 2]| {
+        present.push(class);
+        beta.series.push(stability::branch(class, &x, &b));
+        yaw.series.push(stability::branch(class, &x, &r));
+    };
+    let state = |(c, k): At| {
+        let e = &eqs[c][k];
+        (params[c], e.beta.to_degrees(), e.yaw_rate.to_degrees())
+    };
+    for &(a, b) in &links {
+        let ((xa, ba, ra), (xb, bb, rb)) = (state(a), state(b));
+        segment(class(a).weaker(class(b)), [xa, xb], [ba, bb], [ra, rb]);
+    }
+    let folds = folds_on_line(res, axis, line);
+    for f in &folds {
+        let p = display(axis, axis.get(&f.at));
+        // The fold lies between the grid values around it.
+        let Some(i) = params.windows(2).position(|w| w[0] <= p && p <= w[1]) else {
+            continue;
+        };
+        let at = [f.beta / bx.beta_max, f.yaw_rate / bx.yaw_rate_max];
+        for end in branches::fold_ends(&columns, &links, i, at, FOLD_GAP) {
+            let (x, b, r) = state(end);
+            let (fb, fr) = (f.beta.to_degrees(), f.yaw_rate.to_degrees());
+            segment(class(end), [x, p], [b, fb], [r, fr]);
+        }
+    }
+    for cl in Class::ALL {
+        let mut pts = Vec::new();
+        for (c, col) in eqs.iter().enumerate() {
+            for (k, _) in col.iter().enumerate().filter(|(k, _)| class((c, *k)) == cl) {
+                pts.push(state((c, k)));
+            }
+        }
+        if pts.is_empty() {
             continue;
         }
-        let (pa, pb) = (
-            display(axis, axis.get(&a.condition)),
-            display(axis, axis.get(&b.condition)),
-        );
-        for (x, y) in ea.iter().zip(&eb) {
-            let stable = x.stability.kind.is_stable() && y.stability.kind.is_stable();
-            let (style, color) = if stable {
-                (Style::Line, STABLE)
-            } else {
-                (Style::Dashed, UNSTABLE)
-            };
-            let seg =
-                |v0: f64, v1: f64| Series::line("", &[pa, pb], &[v0, v1], color).styled(style);
-            beta.series
-                .push(seg(x.beta.to_degrees(), y.beta.to_degrees()));
-            yaw.series
-                .push(seg(x.yaw_rate.to_degrees(), y.yaw_rate.to_degrees()));
-        }
+        present.push(cl);
+        let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
+        let b: Vec<f64> = pts.iter().map(|p| p.1).collect();
+        let r: Vec<f64> = pts.iter().map(|p| p.2).collect();
+        beta.series.push(stability::equilibria(cl, &x, &b, 4));
+        yaw.series.push(stability::equilibria(cl, &x, &r, 4));
     }
-    for &i in line {
-        let p = &res.points[i];
-        for e in in_box(&p.exact, bx) {
-            let c = if e.stability.kind.is_stable() {
-                STABLE
-            } else {
-                UNSTABLE
-            };
-            let x = [display(axis, axis.get(&p.condition))];
-            beta.series
-                .push(Series::line("", &x, &[e.beta.to_degrees()], c).styled(Style::Points(3)));
-            yaw.series
-                .push(Series::line("", &x, &[e.yaw_rate.to_degrees()], c).styled(Style::Points(3)));
-        }
+    if let Some(first) = folds.first() {
+        let fx: Vec<f64> = folds
+            .iter()
+            .map(|b| display(axis, axis.get(&b.at)))
+            .collect();
+        let deg = |f: fn(&Bifurcation) -> f64| -> Vec<f64> {
+            folds.iter().map(|b| f(b).to_degrees()).collect()
+        };
+        let l = first.kind.name();
+        beta.series
+            .push(Series::line(l, &fx, &deg(|b| b.beta), FOLD).styled(Style::Points(7)));
+        yaw.series
+            .push(Series::line(l, &fx, &deg(|b| b.yaw_rate), FOLD).styled(Style::Points(7)));
     }
+    for cl in Class::ALL.into_iter().filter(|c| present.contains(c)) {
+        beta.series.push(stability::key(cl));
+        yaw.series.push(stability::key(cl));
+    }
+    Figure::stack(vec![beta, yaw]).save(path)
+}
+
+/// The bifurcations located along `line` (the other parameters at its
+/// values).
+fn folds_on_line<'a>(res: &'a SweepResult, axis: Axis, line: &[usize]) -> Vec<&'a Bifurcation> {
     let first = &res.points[line[0]].condition;
     let on_line = |b: &&Bifurcation| {
         b.axis == axis
@@ -109,44 +162,7 @@ pub fn branch_diagram(
                 .iter()
                 .all(|&o| o == axis || (o.get(&b.at) - o.get(first)).abs() < 1e-12)
     };
-    let folds: Vec<&Bifurcation> = res.bifurcations.iter().filter(on_line).collect();
-    let fx: Vec<f64> = folds
-        .iter()
-        .map(|b| display(axis, axis.get(&b.at)))
-        .collect();
-    if !folds.is_empty() {
-        let l = folds[0].kind.name();
-        beta.series.push(
-            Series::line(
-                l,
-                &fx,
-                &folds
-                    .iter()
-                    .map(|b| b.beta.to_degrees())
-                    .collect::<Vec<_>>(),
-                FOLD,
-            )
-            .styled(Style::Points(7)),
-        );
-        yaw.series.push(
-            Series::line(
-                l,
-                &fx,
-                &folds
-                    .iter()
-                    .map(|b| b.yaw_rate.to_degrees())
-                    .collect::<Vec<_>>(),
-                FOLD,
-            )
-            .styled(Style::Points(7)),
-        );
-    }
-    for p in [&mut beta, &mut yaw] {
-        p.series.push(Series::line("stable", &[], &[], STABLE));
-        p.series
-            .push(Series::line("unstable", &[], &[], UNSTABLE).styled(Style::Dashed));
-    }
-    Figure::stack(vec![beta, yaw]).save(path)
+    res.bifurcations.iter().filter(on_line).collect()
 }
 
 /// β, r in degrees and deg/s, for drawing.
@@ -171,13 +187,15 @@ pub fn phase_portrait(
         yaw_rate_max: 2.0 * search.yaw_rate_max,
     };
     let mut series = vec![vector_field(model, c, bx)];
-    // Trajectories from a grid of starts.
+    // Trajectories from a grid of starts, each to a node or out of the box.
+    let ends: Vec<[f64; 2]> = eqs.iter().map(|e| [e.beta, e.yaw_rate]).collect();
     let m = 7;
     for i in 0..m {
         for k in 0..m {
             let x0 = phase::grid_point(bx, m, i, k);
-            let (tx, ty) = in_degrees(&phase::trajectory(model, c, bx, x0, 0.01, 600));
-            series.push(Series::line("", &tx, &ty, 0));
+            let (tx, ty) = in_degrees(&phase::orbit(model, c, bx, x0, 1.0, 0.01, &ends));
+            let label = if i + k == 0 { "trajectories" } else { "" };
+            series.push(Series::line(label, &tx, &ty, stability::TRAJECTORY));
         }
     }
     series.extend(separatrices(model, c, bx, eqs));
@@ -214,8 +232,9 @@ fn vector_field(model: &VehicleModel, c: &Condition, bx: &SearchBox) -> Series {
     Series::line("", &ax, &ay, 7).styled(Style::Segments)
 }
 
-/// The stable and unstable manifolds of every saddle, the first saddle's
-/// labelled.
+/// The stable and unstable manifolds of every saddle in colours of their
+/// own, the separatrix (stable manifold) the bolder, each named once in the
+/// key.
 fn separatrices(
     model: &VehicleModel,
     c: &Condition,
@@ -223,13 +242,19 @@ fn separatrices(
     eqs: &[Equilibrium],
 ) -> Vec<Series> {
     let mut series = Vec::new();
-    for (k, branches) in phase::separatrices(model, c, bx, eqs).iter().enumerate() {
+    let mut named = [false; 2];
+    for branches in phase::separatrices(model, c, bx, eqs) {
         for b in branches {
-            let (color, name) = match b.manifold {
-                Manifold::Stable => (1, "stable manifold (separatrix)"),
-                Manifold::Unstable => (3, "unstable manifold"),
+            let (k, color, name) = match b.manifold {
+                Manifold::Stable => (
+                    0,
+                    stability::STABLE_MANIFOLD,
+                    "stable manifold (separatrix)",
+                ),
+                Manifold::Unstable => (1, stability::UNSTABLE_MANIFOLD, "unstable manifold"),
             };
-            let label = if k == 0 && b.side < 0.0 { name } else { "" };
+            let label = if named[k] { "" } else { name };
+            named[k] = true;
             let (tx, ty) = in_degrees(&b.points);
             series.push(Series::line(label, &tx, &ty, color));
         }
@@ -237,33 +262,23 @@ fn separatrices(
     series
 }
 
-/// The equilibria in the box, marked by kind: stable, saddle, other unstable.
+/// The equilibria in the box, marked by their stability class as on the
+/// branch diagrams, the classes present named in the key.
 fn equilibrium_markers(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Series> {
-    // Which kinds a marker shows, its label and its colour.
-    type Marker = (fn(Kind) -> bool, &'static str, usize);
-    let kinds: [Marker; 3] = [
-        (|k| k.is_stable(), "stable equilibrium", 2),
-        (|k| k == Kind::Saddle, "saddle", 1),
-        (
-            |k| !k.is_stable() && k != Kind::Saddle,
-            "unstable equilibrium",
-            4,
-        ),
-    ];
-    kinds
-        .into_iter()
-        .filter_map(|(kind_ok, label, color)| {
-            let pts: Vec<[f64; 2]> = eqs
-                .iter()
-                .filter(|e| kind_ok(e.stability.kind) && bx.contains([e.beta, e.yaw_rate]))
-                .map(|e| [e.beta, e.yaw_rate])
-                .collect();
-            (!pts.is_empty()).then(|| {
-                let (px, py) = in_degrees(&pts);
-                Series::line(label, &px, &py, color).styled(Style::Points(7))
-            })
-        })
-        .collect()
+    let mut series = Vec::new();
+    for class in Class::ALL {
+        let pts: Vec<[f64; 2]> = eqs
+            .iter()
+            .filter(|e| Class::of(e.stability.kind) == class && bx.contains([e.beta, e.yaw_rate]))
+            .map(|e| [e.beta, e.yaw_rate])
+            .collect();
+        if !pts.is_empty() {
+            let (px, py) = in_degrees(&pts);
+            series.push(stability::equilibria(class, &px, &py, 7));
+            series.push(stability::key(class));
+        }
+    }
+    series
 }
 
 /// Stability map over two swept axes (the third at its first value).
@@ -274,11 +289,13 @@ pub fn stability_map(
     bx: &SearchBox,
     path: &Path,
 ) -> Result<(), Error> {
+    // In the colours of the branch diagrams: stable, stable beside a
+    // saddle, and unstable.
     let cats: [(&str, usize); 4] = [
         ("no equilibrium in the box", 7),
-        ("stable only", 2),
-        ("stable and saddles", 0),
-        ("no stable equilibrium", 1),
+        ("stable only", Class::Stable.colour()),
+        ("stable and saddles", Class::Saddle.colour()),
+        ("no stable equilibrium", Class::Unstable.colour()),
     ];
     let mut pts: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
     let first = res.points[0].condition;

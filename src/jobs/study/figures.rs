@@ -4,7 +4,7 @@
 //! Stiffness in the file's unit.
 
 use super::RbfReport;
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};
 use crate::study::inverse::Map;
 use crate::study::{Metric, Sample, StiffnessUnit};
 
@@ -45,9 +45,14 @@ pub(super) fn heat_maps(map: &Map, unit: StiffnessUnit, curves: &[(f64, &[[f64; 
             for (n, (target, c)) in curves.iter().enumerate() {
                 let (cx, cy): (Vec<f64>, Vec<f64>) = c.iter().map(|p| (p[0], p[1])).unzip();
                 // One colour per target, none of them the map's.
+                // Rings, white inside, read on dark and light cells alike.
                 series.push(
                     Series::line(&format!("Er = {target} s"), &cx, &cy, [1, 3, 6, 5][n % 4])
-                        .styled(Style::Points(2)),
+                        .styled(Style::Points(4))
+                        .marked(Marker {
+                            shape: Shape::Ring,
+                            size: 4,
+                        }),
                 );
             }
         }

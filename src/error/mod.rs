@@ -9,6 +9,7 @@
 
 mod fit;
 mod input;
+mod number;
 mod options;
 mod output;
 mod param;
@@ -19,7 +20,8 @@ mod tests;
 pub use crate::metrics::MetricsError;
 pub use fit::{DiagnosisError, FitError};
 pub use input::{CellProblem, InputError, Location};
-pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
+pub use number::{number, range, Num};
+pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};

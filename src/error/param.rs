@@ -2,6 +2,7 @@
 //! why that value is not physical. The checks every reader and constructor
 //! shares (finite, positive, non-negative, in a range) live here.
 
+use super::number::{range, Num};
 use thiserror::Error;
 
 /// The value of a [`ParamError`]: a number, or none to show (a name, a
@@ -28,7 +29,7 @@ impl ParamValue {
 impl std::fmt::Display for ParamValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            ParamValue::Number(v) => write!(f, "{v}"),
+            ParamValue::Number(v) => write!(f, "{}", Num(*v)),
             ParamValue::NotANumber => f.write_str("(not a number)"),
         }
     }
@@ -49,7 +50,7 @@ pub struct ParamError {
 impl std::fmt::Display for ParamError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self.value {
-            ParamValue::Number(v) => write!(f, "`{}` = {v}: {}", self.key, self.reason),
+            ParamValue::Number(v) => write!(f, "`{}` = {}: {}", self.key, Num(v), self.reason),
             ParamValue::NotANumber => write!(f, "`{}`: {}", self.key, self.reason),
         }
     }
@@ -109,11 +110,7 @@ impl ParamError {
         if v > lo && v <= hi {
             Ok(())
         } else {
-            Err(Self::new(
-                key,
-                v,
-                &format!("must lie in ({lo}, {hi}]: {why}"),
-            ))
+            Err(Self::new(key, v, &format!("must {}: {why}", range(lo, hi))))
         }
     }
 }

@@ -174,6 +174,22 @@ pub struct StudyReport {
     pub lock: OutputLock,
 }
 
+/// `v` for the table: the shortest decimal of at most 15 significant
+/// digits within 4 ulp of it where there is one (a stiffness read back from
+/// N/rad into the file's unit: `700`, not `700.0000000000001`), else the
+/// shortest decimal that reads back as `v`.
+fn csv_number(v: f64) -> String {
+    if v.is_finite() && v != 0.0 {
+        let near = (1..=15)
+            .filter_map(|digits| format!("{v:.*e}", digits - 1).parse::<f64>().ok())
+            .find(|w| (w - v).abs() <= 4.0 * f64::EPSILON * v.abs());
+        if let Some(w) = near {
+            return w.to_string();
+        }
+    }
+    v.to_string()
+}
+
 /// The output files, in the order [`StudyReport::write`] checks them.
 const FILES: [&str; 6] = [
     "study.csv",
@@ -541,7 +557,7 @@ impl StudyReport {
             [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
                 .into_iter()
                 .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
-                .map(|v| v.to_string())
+                .map(csv_number)
         });
         write_csv(&files[0], &header, rows)?;
         if let Some(r) = &self.rbf {

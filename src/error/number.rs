@@ -1,6 +1,6 @@
 //! Numbers as the messages show them: the shortest decimal that reads back
 //! as the value when it is short (a value as the user wrote it: `0.0174533`,
-//! `57296`), else six significant digits with the trailing zeros trimmed (a
+//! `57296`, `23150000`), else six significant digits with the trailing zeros trimmed (a
 //! bound computed in floating point: `0.1875`, not `0.18749999999999997`);
 //! very small and very large magnitudes in exponent form (`1e-16`). And the
 //! ranges of the range checks, a bound that is zero less a rounding guard
@@ -76,7 +76,7 @@ pub fn number(v: f64) -> String {
         return if v == 0.0 { "0".into() } else { format!("{v}") };
     }
     let size = v.abs();
-    if !(1e-4..1e9).contains(&size) {
+    if !(1e-4..1e16).contains(&size) {
         return exponent_form(v, DIGITS);
     }
     let shortest = format!("{v}");
@@ -125,7 +125,9 @@ mod tests {
         assert_eq!(number(1e-16), "1e-16");
         assert_eq!(number(-1e-12), "-1e-12");
         assert_eq!(number(1e-14 / 3.0), "3.33333e-15");
-        assert_eq!(number(2.5e9), "2.5e9");
+        assert_eq!(number(2.315e7), "23150000");
+        assert_eq!(number(2.5e16), "2.5e16");
+        assert_eq!(number(1e30), "1e30");
         assert_eq!(number(0.0001), "0.0001");
     }
 

@@ -373,7 +373,7 @@ pub enum InputProblem {
         min_samples: usize,
     },
     /// Fewer than two runs left for held-out scoring.
-    #[error("{runs} run(s) after checking ({kept} of {read} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)", Num(*min_speed))]
+    #[error("{} after checking ({kept} of {read} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)", if *runs == 1 { "1 run".to_string() } else { format!("{runs} runs") }, Num(*min_speed))]
     TooFewRuns {
         /// Runs left.
         runs: usize,

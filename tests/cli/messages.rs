@@ -61,7 +61,10 @@ fn shard_and_equilibria_summaries_speak_the_users_words() {
         said.starts_with("shard 1/3 of the equilibria job: 3 of 9 grid lines → "),
         "{said}"
     );
-    assert!(!said.contains("Equilibria") && !said.contains("units"), "{said}");
+    assert!(
+        !said.contains("Equilibria") && !said.contains("units"),
+        "{said}"
+    );
     let o = run(&[
         "equilibria",
         sweep.to_str().unwrap(),
@@ -71,10 +74,16 @@ fn shard_and_equilibria_summaries_speak_the_users_words() {
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     // One condition, singular; the fitness and bifurcation by their file names.
-    assert!(said.contains("  1 condition with 2 equilibria in the box"), "{said}");
+    assert!(
+        said.contains("  1 condition with 2 equilibria in the box"),
+        "{said}"
+    );
     assert!(said.contains("fitness newton-step"), "{said}");
     assert!(said.contains("  pitchfork along friction at"), "{said}");
-    assert!(!said.contains("NewtonStep") && !said.contains("Pitchfork"), "{said}");
+    assert!(
+        !said.contains("NewtonStep") && !said.contains("Pitchfork"),
+        "{said}"
+    );
 }
 
 #[test]
@@ -166,7 +175,10 @@ fn a_path_relative_to_a_campaign_is_shown_normalised() {
     let e = fails_cleanly("diagnose", &file, dir.path());
     let expected = dir.path().join("data").join("absent.csv");
     assert!(
-        e.contains(&format!("names {}, which does not exist", expected.display())),
+        e.contains(&format!(
+            "names {}, which does not exist",
+            expected.display()
+        )),
         "{e}"
     );
     assert!(!e.contains("campaigns/..") && !e.contains("/./"), "{e}");
@@ -240,7 +252,11 @@ fn metrics_refuses_a_steer_in_degrees_as_the_diagnosis_judges_it() {
     let dir = tempfile::tempdir().unwrap();
     let run_file = steer_in_degrees(dir.path());
     let o = run(&["metrics", run_file.to_str().unwrap(), "--filter-hz", "0"]);
-    assert!(!o.status.success(), "{}", String::from_utf8_lossy(&o.stdout));
+    assert!(
+        !o.status.success(),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
     let e = stderr(&o);
     assert!(
         e.contains("degrees.csv: the yaw rate is ")
@@ -265,7 +281,10 @@ fn the_study_table_shows_the_stiffness_grid_as_written() {
     let out = dir.path().join("study");
     let o = run(&[
         "study",
-        root().join("scenarios/sedan_study_coarse.toml").to_str().unwrap(),
+        root()
+            .join("scenarios/sedan_study_coarse.toml")
+            .to_str()
+            .unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);

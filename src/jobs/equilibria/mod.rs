@@ -218,9 +218,9 @@ impl EquilibriaReport {
         let (sw, s) = (&self.sweep, &self.summary);
         let mut out = vec![
             format!(
-                "{}: {} conditions ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, load transfer {}",
+                "{}: {} ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, {}",
                 sw.name,
-                s.conditions,
+                plural(s.conditions, "condition", "conditions"),
                 sw.grid.steer.len(),
                 sw.grid.friction.len(),
                 sw.grid.speed.len(),
@@ -230,7 +230,11 @@ impl EquilibriaReport {
                     Kinematics::Exact => "exact",
                     Kinematics::SmallAngle => "small-angle",
                 },
-                sw.model.options.load_transfer
+                if sw.model.options.load_transfer {
+                    "with load transfer"
+                } else {
+                    "no load transfer"
+                }
             ),
             format!(
                 "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {}",

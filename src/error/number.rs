@@ -91,7 +91,7 @@ pub fn number(v: f64) -> String {
 /// `lie in [0, hi]` when `lo` is 0 less a rounding guard; `be greater than
 /// lo` when `hi` is infinite.
 pub fn range(lo: f64, hi: f64) -> String {
-    let guard = lo < 0.0 && lo >= -GUARD;
+    let guard = (-GUARD..0.0).contains(&lo);
     match (guard, hi.is_finite()) {
         (true, true) => format!("lie in [0, {}]", Num(hi)),
         (true, false) => "not be negative".into(),

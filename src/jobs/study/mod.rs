@@ -2,14 +2,14 @@
 //! every metric, Wang & Liang's RBF network with its re-simulated
 //! validation, and the inverse (regions, Er curves, the best combination
 //! refined by simulation) out, as `study.csv`, `maps.png`, `rbf.json`,
-//! `rbf.png`, `inverse.json` and `summary.json`. Stiffness in reports is per
-//! tyre in the file's unit.
+//! `rbf.png`, `inverse.json` and `summary.json`; stiffness per tyre in the file's unit.
 
 use crate::study::inverse::{best_on_curve, distance, Map};
 use crate::study::rbf::Rbf;
 use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 
 mod figures;
+mod numbers;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
 use crate::jobs::shard::{
@@ -172,22 +172,6 @@ pub struct StudyReport {
     /// The output folder, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,
-}
-
-/// `v` for the table: the shortest decimal of at most 15 significant
-/// digits within 4 ulp of it where there is one (a stiffness read back from
-/// N/rad into the file's unit: `700`, not `700.0000000000001`), else the
-/// shortest decimal that reads back as `v`.
-fn csv_number(v: f64) -> String {
-    if v.is_finite() && v != 0.0 {
-        let near = (1..=15)
-            .filter_map(|digits| format!("{v:.*e}", digits - 1).parse::<f64>().ok())
-            .find(|w| (w - v).abs() <= 4.0 * f64::EPSILON * v.abs());
-        if let Some(w) = near {
-            return w.to_string();
-        }
-    }
-    v.to_string()
 }
 
 /// The output files, in the order [`StudyReport::write`] checks them.
@@ -557,7 +541,7 @@ impl StudyReport {
             [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
                 .into_iter()
                 .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
-                .map(csv_number)
+                .map(numbers::csv_number)
         });
         write_csv(&files[0], &header, rows)?;
         if let Some(r) = &self.rbf {

@@ -239,9 +239,11 @@ impl EffectKind {
             par("rear", "N/N per rad", 0.0, -8.0, 8.0),
         ];
         const SHARE: [Parameter; 1] = [par("front_share", "-", f64::NAN, 0.0, 1.0).share()];
+        // No negative down-force (a lift is not the model): 0 is a
+        // physical limit.
         const AERO: [Parameter; 2] = [
-            par("front", "N/(m/s)^2", 0.0, 0.0, 6.0),
-            par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0),
+            par("front", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
+            par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
         ];
         const FRICTION: [Parameter; 1] = [par("friction_scale", "-", 1.0, 0.3, 1.5)];
         const BANK: [Parameter; 1] = [par("bank", "rad", 0.0, -0.15, 0.15)];

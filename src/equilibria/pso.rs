@@ -34,6 +34,7 @@ pub enum Fitness {
     /// Li, Jia & Zhao: f1² + f2².
     Residual,
     /// Length of the Newton step.
+    #[serde(alias = "newton_step")]
     NewtonStep,
 }
 

@@ -36,6 +36,7 @@ pub enum CellProblem {
 impl CellProblem {
     fn describe(self, cell: &str) -> String {
         match self {
+            CellProblem::NotANumber if cell.is_empty() => "empty cell: a number is needed".into(),
             CellProblem::NotANumber => format!("`{cell}` is not a number"),
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
         }

@@ -10,6 +10,7 @@
 mod fit;
 mod input;
 mod metrics;
+mod number;
 mod options;
 mod output;
 mod param;
@@ -22,7 +23,8 @@ mod tests;
 pub use fit::{DiagnosisError, FitError, SkipReason, StageRows, StageSkip};
 pub use input::{CellProblem, InputError, Location};
 pub use metrics::MetricsError;
-pub use options::{MergeInput, ModeError, NameKind, OptionsError, ShardField};
+pub use number::{number, range, Num};
+pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};

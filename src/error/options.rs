@@ -254,6 +254,18 @@ pub enum OptionsError {
 const USE_MODE_HELP: &str = "MFeval's useMode: hundreds 1 (limit checks on) or 2 (off), \
                              tens 1 (α* off) or 2 (on), units 1 (no turn slip)";
 
+/// A digit of an MFeval `useMode` code outside its choices.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{place} digit {digit} is not {allowed}")]
+pub struct ModeDigit {
+    /// Which digit (`hundreds`, `tens`, `units`).
+    pub place: &'static str,
+    /// Its value.
+    pub digit: u32,
+    /// What it may be.
+    pub allowed: &'static str,
+}
+
 /// Why an MFeval `useMode` code is refused.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
 #[non_exhaustive]
@@ -264,17 +276,13 @@ pub enum ModeError {
         /// The code given.
         code: u32,
     },
-    /// A digit outside its choices.
-    #[error("mode {code}: {place} digit {digit} is not {allowed} ({USE_MODE_HELP})")]
-    Digit {
+    /// Digits outside their choices.
+    #[error("mode {code}: {} ({USE_MODE_HELP})", bad.iter().map(ToString::to_string).collect::<Vec<_>>().join(", "))]
+    Digits {
         /// The code given.
         code: u32,
-        /// Which digit (`hundreds`, `tens`, `units`).
-        place: &'static str,
-        /// Its value.
-        digit: u32,
-        /// What it may be.
-        allowed: &'static str,
+        /// Every digit refused, hundreds first.
+        bad: Vec<ModeDigit>,
     },
     /// Turn slip (units digit 2), which the crate does not model.
     #[error(

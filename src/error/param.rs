@@ -3,6 +3,7 @@
 //! reader and constructor shares (finite, positive, non-negative, in a
 //! range) live here.
 
+use super::number::Num;
 use super::reason::{Limit, ParamReason};
 use thiserror::Error;
 
@@ -30,7 +31,7 @@ impl ParamValue {
 impl std::fmt::Display for ParamValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            ParamValue::Number(v) => write!(f, "{v}"),
+            ParamValue::Number(v) => write!(f, "{}", Num(*v)),
             ParamValue::NotANumber => f.write_str("(not a number)"),
         }
     }
@@ -51,7 +52,7 @@ pub struct ParamError {
 impl std::fmt::Display for ParamError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self.value {
-            ParamValue::Number(v) => write!(f, "`{}` = {v}: {}", self.key, self.reason),
+            ParamValue::Number(v) => write!(f, "`{}` = {}: {}", self.key, Num(v), self.reason),
             ParamValue::NotANumber => write!(f, "`{}`: {}", self.key, self.reason),
         }
     }

@@ -8,6 +8,7 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
+use super::number::Num;
 use super::rig::Variable;
 use super::ParamError;
 use crate::format::significant;
@@ -154,7 +155,7 @@ pub enum InputProblem {
         key: String,
     },
     /// A `.tir` number that is not finite.
-    #[error("`{key}`: {value} is not finite")]
+    #[error("`{key}`: {} is not finite", Num(*value))]
     TirNotFinite {
         /// The key.
         key: String,
@@ -216,7 +217,7 @@ pub enum InputProblem {
         detail: String,
     },
     /// A time that does not follow the previous one.
-    #[error("column `t`: {value} does not follow {previous} (time must be strictly increasing)")]
+    #[error("column `t`: {} does not follow {} (time must be strictly increasing)", Num(*value), Num(*previous))]
     TimeNotIncreasing {
         /// The time, s.
         value: f64,
@@ -227,7 +228,7 @@ pub enum InputProblem {
     #[error("a run needs at least two samples")]
     TooFewSamples,
     /// A road-wheel steer beyond ±90° over more than 1 % of the run.
-    #[error("column `steer`: {value} rad is beyond ±90° (1 % of the run reaches {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?")]
+    #[error("column `steer`: {} rad is beyond ±90° (1 % of the run reaches {p99:.3} rad): the steer is the road-wheel angle in radians (FORMATS.md); is the column in degrees, or a steering-wheel angle (divide by the steering ratio)?", Num(*value))]
     SteerBeyondQuarterTurn {
         /// The first steer beyond ±90°, rad.
         value: f64,
@@ -235,19 +236,19 @@ pub enum InputProblem {
         p99: f64,
     },
     /// A negative vertical load.
-    #[error("column `fz`: {value} N is negative (loads are positive in FORMATS.md)")]
+    #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md)", Num(*value))]
     NegativeLoad {
         /// The load, N.
         value: f64,
     },
     /// A non-positive inflation pressure.
-    #[error("column `pressure`: {value} Pa is not a positive pressure")]
+    #[error("column `pressure`: {} Pa is not a positive pressure", Num(*value))]
     NonPositivePressure {
         /// The pressure, Pa.
         value: f64,
     },
     /// An angle beyond what a tyre test in radians reaches.
-    #[error("column `{column}`: {value} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", limit.to_degrees())]
+    #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
     AngleInDegrees {
         /// The column (`alpha`, `camber`).
         column: &'static str,
@@ -301,7 +302,7 @@ pub enum InputProblem {
         camber: f64,
     },
     /// A run with no two successive samples fast enough.
-    #[error("no two successive samples at or above min_speed = {min_speed} m/s ({slow} of {read} samples below it)")]
+    #[error("no two successive samples at or above min_speed = {} m/s ({slow} of {read} samples below it)", Num(*min_speed))]
     NoMovingSamples {
         /// The speed threshold, m/s.
         min_speed: f64,
@@ -348,8 +349,19 @@ pub enum InputProblem {
         /// The steered samples.
         samples: usize,
     },
+    /// A steer far larger than the yaw rate it gives: in degrees, or a
+    /// steering-wheel angle.
+    #[error("the yaw rate is {:.0}× smaller than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians", 1.0 / median.max(1e-9), assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
+    SteerAboveYaw {
+        /// Median of r·l/(u·δ) over the steered samples.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+        /// The wheelbase l taken when the vehicle's is not known, m.
+        assumed_wheelbase: Option<f64>,
+    },
     /// A run too short to show a response.
-    #[error("the run is {span:.2} s long with {samples} samples: a run needs at least {min_span} s and {min_samples} samples to show a response")]
+    #[error("the run is {span:.2} s long with {samples} samples: a run needs at least {} s and {min_samples} samples to show a response", Num(*min_span))]
     RunTooShort {
         /// Its duration, s.
         span: f64,
@@ -361,7 +373,7 @@ pub enum InputProblem {
         min_samples: usize,
     },
     /// Fewer than two runs left for held-out scoring.
-    #[error("{runs} run(s) after checking ({kept} of {read} samples at or above min_speed = {min_speed} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)")]
+    #[error("{} after checking ({kept} of {read} samples at or above min_speed = {} m/s in pieces long enough): held-out scoring needs at least two (set [runs] segment = … to cut a long log into pieces)", if *runs == 1 { "1 run".to_string() } else { format!("{runs} runs") }, Num(*min_speed))]
     TooFewRuns {
         /// Runs left.
         runs: usize,
@@ -416,6 +428,7 @@ impl InputProblem {
             InputProblem::NoRuns { .. } => "NoRuns",
             InputProblem::NoVehicleFile => "NoVehicleFile",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
+            InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
         }

@@ -20,7 +20,7 @@ pub enum ParamReason {
     #[error("must not be negative")]
     Negative,
     /// Outside the range `(lo, hi]`, for the reason `why`.
-    #[error("must lie in ({lo}, {hi}]: {why}")]
+    #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {
         /// The exclusive lower end.
         lo: f64,

@@ -6,6 +6,7 @@
 
 pub mod campaign;
 mod columns;
+pub mod paths;
 pub mod rig;
 mod run;
 pub mod scenario;

@@ -4,6 +4,7 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
+use super::paths::beside;
 use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
@@ -149,8 +150,10 @@ fn default_min_speed() -> f64 {
 #[serde(tag = "kind", rename_all = "kebab-case")]
 pub enum ManoeuvreSpec {
     /// GB/T 6323 / ISO 7401 step steer.
+    #[serde(alias = "step_steer")]
     StepSteer(StepSteerSpec),
     /// Ramp steer.
+    #[serde(alias = "ramp_steer")]
     RampSteer(RampSteer),
     /// Sine steer.
     Sine(SineSteer),
@@ -278,7 +281,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
     } = match &f.manoeuvre {
         ManoeuvreSpec::StepSteer(s) => step_steer(src, s, &model, f.road.friction)?,
         ManoeuvreSpec::Replay(r) => {
-            let run_path = dir.join(&r.run);
+            let run_path = beside(dir, &r.run);
             let resolved = replay(src, r, &run_path)?;
             inputs.push(run_path);
             resolved

@@ -289,6 +289,12 @@ impl Values<'_> {
 
     /// The stiffness values of `axis` in N/rad: at least one, each positive.
     fn stiffness(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
+        let v = self.in_file_unit(key, axis)?;
+        Ok(v.iter().map(|x| x * self.to_si).collect())
+    }
+
+    /// The stiffness values of `axis` in the file's unit, checked.
+    fn in_file_unit(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
         let v = axis.values().ok_or_else(|| {
             self.error(ParamError::without_value(key, ParamReason::TooManyValues))
         })?;
@@ -301,18 +307,20 @@ impl Values<'_> {
         if let Some(&x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
             return Err(self.error(ParamError::new(key, x, ParamReason::StiffnessNotPositive)));
         }
-        Ok(v.iter().map(|x| x * self.to_si).collect())
+        Ok(v)
     }
 
     /// Wang & Liang's pairs (rear = front + offset, up to `rear_max`).
     fn rbf(&self, r: &RbfSpec) -> Result<RbfInput, InputError> {
         let k = self.to_si;
-        let fronts = self.stiffness("rbf.front", &r.front)?;
+        // In the file's unit, the rear is front + offset exactly as written
+        // (240, not 200·k + 40·k read back as 240.00000000000003).
+        let fronts = self.in_file_unit("rbf.front", &r.front)?;
         let rear_max = r.rear_max.map_or(f64::INFINITY, |m| m * k * (1.0 + 1e-12));
         let pairs: Vec<(f64, f64)> = r
             .rear_offsets
             .iter()
-            .flat_map(|off| fronts.iter().map(move |&kf| (kf, kf + off * k)))
+            .flat_map(|off| fronts.iter().map(move |&kf| (kf * k, (kf + off) * k)))
             .filter(|&(_, kr)| kr <= rear_max)
             .collect();
         if let Some(&i) = r.validation.iter().find(|&&i| i >= pairs.len()) {

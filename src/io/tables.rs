@@ -5,6 +5,7 @@
 //! model here; campaign files their vehicle and road.
 //! Units: SI, rad.
 
+use super::paths::beside;
 use super::toml_file::{param_error, TomlSource};
 use crate::error::{InputError, ParamError, ParamReason};
 use crate::tyre::Tyre;
@@ -105,8 +106,8 @@ pub(crate) fn resolve_model(
         .validate()
         .map_err(|e| param_error(src, Some("model.effects"), e))?;
     let dir = src.path.parent().unwrap_or(Path::new("."));
-    let front_path = dir.join(&tyres.front);
-    let rear_path = dir.join(tyres.rear.as_ref().unwrap_or(&tyres.front));
+    let front_path = beside(dir, &tyres.front);
+    let rear_path = beside(dir, tyres.rear.as_ref().unwrap_or(&tyres.front));
     src.referenced_file("tyres.front", &front_path)?;
     if tyres.rear.is_some() {
         src.referenced_file("tyres.rear", &rear_path)?;

@@ -67,9 +67,22 @@ impl TomlSource {
             let name = message.strip_prefix("unknown field `")?.split('`').next()?;
             self.find_key(name)
         });
+        // toml's syntax messages run over lines ("invalid string\nexpected
+        // `\"`"): one line, as every other message (a fleet table's row).
+        let message = message
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect::<Vec<_>>()
+            .join("; ");
         // A value of the wrong type: toml's message names the value, the
-        // key is named here.
-        match span.as_ref().and_then(|s| self.key_of_value_at(s.start)) {
+        // key is named here; a value that does not parse, by the key
+        // written on its line.
+        let key = span.as_ref().and_then(|s| {
+            self.key_of_value_at(s.start)
+                .or_else(|| self.key_on_line_of(s.start))
+        });
+        match key {
             Some(key) => InputError::Key {
                 path: self.path.clone(),
                 at: span.map(|s| self.location(s.start)),
@@ -78,6 +91,33 @@ impl TomlSource {
             },
             None => self.located(span, InputProblem::Toml { detail: message }),
         }
+    }
+
+    /// The dotted path of the `key = …` written on the line of byte `pos`
+    /// (under the last `[table]` header before it), read from the text: a
+    /// line whose value does not parse is not in the parsed document.
+    fn key_on_line_of(&self, pos: usize) -> Option<String> {
+        let before = self.text.get(..pos)?;
+        let start = before.rfind('\n').map_or(0, |i| i + 1);
+        let line = self.text[start..].lines().next()?;
+        let key = line.split_once('=')?.0.trim();
+        let bare = |k: &str| {
+            !k.is_empty()
+                && k.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.'))
+        };
+        if !bare(key) {
+            return None;
+        }
+        let table = before[..start].lines().rev().find_map(|l| {
+            let l = l.trim();
+            let name = l.strip_prefix('[')?.split(']').next()?;
+            Some(name.trim_matches(['[', ' ']).to_string())
+        });
+        Some(match table {
+            Some(t) if bare(&t) => format!("{t}.{key}"),
+            _ => key.to_string(),
+        })
     }
 
     /// The dotted path of the key whose value starts at byte `pos`.

@@ -9,7 +9,7 @@
 use crate::diagnose::channels::Channel;
 use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
 use crate::diagnose::effects::{joined, Bound, EffectKind};
-use crate::diagnose::report::Part;
+use crate::diagnose::report::{ParameterValue, Part};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::report::plot::{Figure, Panel, Series, Style};
@@ -155,36 +155,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         "effect", "J after", "held out", "in sample", "ΔBIC"
     ));
     for r in d.ranking.iter().chain(d.combinations.iter()) {
-        let p: Vec<String> = r
-            .parameters
-            .iter()
-            .map(|p| {
-                if let Some(bound) = p.bound {
-                    let why = match bound {
-                        Bound::Search => "at its search bound: the data would take it further",
-                        Bound::Physical => "at its physical limit: no value lies beyond it",
-                    };
-                    format!("{} = {} {} ({why})", p.name, value(p.value), p.unit)
-                } else if p.std_error.is_finite() {
-                    format!(
-                        "{} = {} ± {:.2e} {}",
-                        p.name,
-                        value(p.value),
-                        p.std_error,
-                        p.unit
-                    )
-                } else {
-                    // No standard error: the runs cannot see it (a channel
-                    // they lack, a parameter pinned by another).
-                    format!(
-                        "{} = {} {} (no standard error: not identifiable from these runs)",
-                        p.name,
-                        value(p.value),
-                        p.unit
-                    )
-                }
-            })
-            .collect();
+        let p: Vec<String> = r.parameters.iter().map(parameter_line).collect();
         out.push(format!(
             "  {:<28} {:>8.3} {:>9.1} % {:>8.1} % {:>12.0}  {}",
             r.effect,
@@ -368,6 +339,48 @@ fn overlays(d: &Diagnosis) -> Figure {
     }
 }
 
+/// A fitted parameter in words: its value, unit and standard error, or
+/// the bound it stands on — a search bound (the data would take it
+/// further) or a physical limit (a length, a share, a load that would be
+/// negative beyond it). A steering compliance, fitted in rad/kN, is given
+/// in rad/N too: the unit of `steering_compliance` in a scenario's
+/// `[model.effects]`.
+fn parameter_line(p: &ParameterValue) -> String {
+    let unit = if p.unit == "rad/kN" {
+        format!("rad/kN ({} rad/N)", value(p.value * 1e-3))
+    } else {
+        p.unit.to_string()
+    };
+    let Some(bound) = p.bound else {
+        return if p.std_error.is_finite() {
+            format!(
+                "{} = {} ± {:.2e} {unit}",
+                p.name,
+                value(p.value),
+                p.std_error
+            )
+        } else {
+            // No standard error: the runs cannot see it (a channel they
+            // lack, a parameter pinned by another).
+            format!(
+                "{} = {} {unit} (no standard error: not identifiable from these runs)",
+                p.name,
+                value(p.value)
+            )
+        };
+    };
+    let why = match bound {
+        Bound::Search => "at its search bound: the data would take it further",
+        // Every lower physical limit is 0 (a length, a delay, a share, a
+        // down-force); the upper ones are a share's 1.
+        Bound::Physical if p.value <= 0.0 => {
+            "at its physical limit: any smaller value would be negative"
+        }
+        Bound::Physical => "at its physical limit: a share cannot exceed 1",
+    };
+    format!("{} = {} {unit} ({why})", p.name, value(p.value))
+}
+
 /// A fitted value: below 0.01 to four significant digits (a steering
 /// compliance of 8.9e-5 rad/kN printed as 0.0001 would hide what was
 /// fitted), else to four decimals.
@@ -397,5 +410,64 @@ mod tests {
                 assert!(!t.contains(ch.name()), "{t}");
             }
         }
+    }
+
+    fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> ParameterValue {
+        ParameterValue {
+            name: name.into(),
+            unit,
+            value: v,
+            std_error: f64::NAN,
+            at_bound: bound.is_some(),
+            bound,
+        }
+    }
+
+    #[test]
+    fn a_parameter_on_a_physical_limit_is_not_worded_as_a_search_bound() {
+        // No negative down-force: aero's lower bound is a physical limit.
+        for q in EffectKind::AeroLoad.parameters() {
+            assert_eq!(q.bound_at(0.0), Some(Bound::Physical), "{}", q.name);
+            assert_eq!(q.bound_at(q.bounds.1), Some(Bound::Search), "{}", q.name);
+        }
+        let at = |v, b| {
+            parameter_line(&fitted(
+                "aero_load.front",
+                "N/(m/s)^2",
+                v,
+                EffectKind::AeroLoad.parameters()[0].bound_at(b),
+            ))
+        };
+        let floor = at(0.0, 0.0);
+        assert_eq!(
+            floor,
+            "aero_load.front = 0.0000 N/(m/s)^2 (at its physical limit: any smaller value would be negative)"
+        );
+        assert!(at(6.0, 6.0).contains("at its search bound: the data would take it further"));
+        let share = parameter_line(&fitted(
+            "load_transfer_distribution.front_share",
+            "-",
+            1.0,
+            Some(Bound::Physical),
+        ));
+        assert!(
+            share.ends_with("(at its physical limit: a share cannot exceed 1)"),
+            "{share}"
+        );
+    }
+
+    #[test]
+    fn a_steering_compliance_is_given_in_the_unit_of_its_scenario_key_too() {
+        let mut p = fitted(
+            "steering_compliance.steer_per_front_force",
+            "rad/kN",
+            0.003,
+            None,
+        );
+        p.std_error = 2e-4;
+        assert_eq!(
+            parameter_line(&p),
+            "steering_compliance.steer_per_front_force = 3.000e-3 ± 2.00e-4 rad/kN (3.000e-6 rad/N)"
+        );
     }
 }

@@ -8,7 +8,9 @@
 //! `handling merge` writes the fleet table.
 
 use super::diagnose::{self, DiagnoseReport};
-use super::shard::{read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport};
+use super::shard::{
+    plural, read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport,
+};
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::error::{Error, InputError, OptionsError};
 use crate::report::html::{Cell, Page};
@@ -369,8 +371,8 @@ impl FleetReport {
     pub fn summary(&self) -> Vec<String> {
         let failed = self.campaigns.iter().filter(|r| r.failed).count();
         let mut out = vec![format!(
-            "fleet: {} campaigns ({failed} failed)",
-            self.campaigns.len()
+            "fleet: {} ({failed} failed)",
+            plural(self.campaigns.len(), "campaign", "campaigns")
         )];
         for r in &self.campaigns {
             out.push(if r.failed {

@@ -132,18 +132,51 @@ pub struct ShardReport {
     pub path: PathBuf,
 }
 
+impl ShardJob {
+    /// The job as the command line names it.
+    pub fn command(self) -> &'static str {
+        match self {
+            ShardJob::Equilibria => "equilibria",
+            ShardJob::Study => "study",
+            ShardJob::Diagnose => "diagnose --batch",
+        }
+    }
+
+    /// `n` of its units of work, in words: grid lines, combinations,
+    /// campaigns.
+    pub fn units(self, n: usize) -> String {
+        let (one, many) = match self {
+            ShardJob::Equilibria => ("grid line", "grid lines"),
+            ShardJob::Study => ("combination", "combinations"),
+            ShardJob::Diagnose => ("campaign", "campaigns"),
+        };
+        plural(n, one, many)
+    }
+}
+
+/// `n thing` or `n things`.
+pub fn plural(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
 impl ShardReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
+        // A unit of the equilibria is a line of conditions; the other
+        // jobs' units are one each.
+        let conditions = if self.conditions == self.owned {
+            String::new()
+        } else {
+            format!(" ({})", plural(self.conditions, "condition", "conditions"))
+        };
         vec![format!(
-            "shard {} of {:?}: {} of {} units ({} conditions) → {}; merge the {} shard files with `handling merge`",
+            "shard {} of the {} job: {} of {}{conditions} → {}; merge the {} with `handling merge`",
             self.shard,
-            self.job,
+            self.job.command(),
             self.owned,
-            self.units,
-            self.conditions,
+            self.job.units(self.units),
             self.path.display(),
-            self.shard.count
+            plural(self.shard.count, "shard file", "shard files"),
         )]
     }
 }

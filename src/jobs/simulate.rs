@@ -13,7 +13,7 @@ use crate::measured::MeasuredRun;
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
-use crate::sim::{LiftOff, Method, TimeHistory};
+use crate::sim::{LiftOff, Method, TimeHistory, Wheel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -135,8 +135,15 @@ impl SimulateReport {
         // wheel.
         out.extend(self.lift_offs.iter().map(|l| {
             format!(
-                "  wheel lift-off: {:?} off the ground from {:.3} s to {:.3} s",
-                l.wheel, l.start, l.end
+                "  wheel lift-off: {} off the ground from {:.3} s to {:.3} s",
+                match l.wheel {
+                    Wheel::FrontLeft => "front left",
+                    Wheel::FrontRight => "front right",
+                    Wheel::RearLeft => "rear left",
+                    Wheel::RearRight => "rear right",
+                },
+                l.start,
+                l.end
             )
         }));
         if let Some(r) = &self.replay {

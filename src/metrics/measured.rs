@@ -10,12 +10,80 @@
 use super::MetricsError;
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, RefusedPiece};
-use crate::measured::clean::{clean_single_with, fill_masked, CleanSettings, CleaningReport};
+use crate::measured::clean::{
+    clean_single_with, fill_masked, median, quantile, CleanSettings, CleaningReport,
+};
 use crate::measured::MeasuredRun;
 use serde::Serialize;
 
 /// ISO 7401's limit on the steer's 10–90 % rise, s.
 pub(crate) const ISO_7401_RISE: f64 = 0.15;
+
+/// Below this median of r·l/(u·δ) the steer is far larger than the yaw
+/// rate it gives: a steer in degrees (57×) or a steering-wheel angle
+/// (15×), not a car's understeer (0.2–1).
+pub const STEER_IN_DEGREES: f64 = 0.1;
+
+/// The wheelbase taken when a run comes without its vehicle, m: longer than
+/// any car's, so that a real car's response is never judged too small.
+pub const LONGEST_WHEELBASE: f64 = 5.0;
+
+/// Steered samples needed to judge the steer against the yaw rate.
+const STEER_CHECK_SAMPLES: usize = 50;
+
+/// The yaw rate over a neutral car's where the run steers: over the samples
+/// at speed (at least `min_speed` and 5 m/s) steered by at least 0.005 rad
+/// and 30 % of the 95th percentile of |δ| at speed, the median of
+/// `q = r·l/(u·δ)` and the samples; about `1/(1 + K·u²)` (0.2–1 for an
+/// understeering car, somewhat above 1 for an oversteering one). None for
+/// a run that does not steer (95th percentile below 0.01 rad: a straight
+/// run whose steer sensor sits a few milliradians off shows no gain) or
+/// with fewer than 50 steered samples.
+pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<(f64, usize)> {
+    let at_speed: Vec<usize> = (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
+        .collect();
+    let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let p95 = quantile(&size, 0.95)?;
+    if p95 < 0.01 {
+        return None;
+    }
+    let steered = (0.3 * p95).max(0.005);
+    let mut q: Vec<f64> = at_speed
+        .into_iter()
+        .filter(|&i| run.steer[i].abs() >= steered)
+        .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
+        .filter(|q| q.is_finite())
+        .collect();
+    if q.len() < STEER_CHECK_SAMPLES {
+        return None;
+    }
+    let n = q.len();
+    Some((median(&mut q), n))
+}
+
+/// Refuses a run whose steer is far larger than the yaw rate it gives, as
+/// the diagnosis judges it ([`yaw_per_neutral`]), with the longest
+/// wheelbase for the vehicle's: a steer in degrees or a steering-wheel
+/// angle, or a yaw rate turning against the steer.
+fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
+    let Some((median, samples)) = yaw_per_neutral(run, LONGEST_WHEELBASE, min_speed) else {
+        return Ok(());
+    };
+    let problem = if median < -STEER_IN_DEGREES {
+        InputProblem::YawAgainstSteer { median, samples }
+    } else if median < STEER_IN_DEGREES {
+        InputProblem::SteerAboveYaw {
+            median,
+            samples,
+            assumed_wheelbase: Some(LONGEST_WHEELBASE),
+        }
+    } else {
+        return Ok(());
+    };
+    Err(InputError::problem(&run.path, problem))
+}
 
 /// The metrics of a measured run and what was measured.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -84,6 +152,7 @@ pub fn measured_step_metrics(
     min_speed: f64,
     settings: &MetricSettings,
 ) -> Result<MeasuredMetrics, InputError> {
+    check_steer_units(&run, min_speed)?;
     let path = run.path.clone();
     let mut cleaning = CleaningReport::new(min_speed);
     let found = clean_single_with(

@@ -28,6 +28,7 @@ use serde::{Deserialize, Serialize};
 #[serde(rename_all = "kebab-case")]
 pub enum Inertia {
     /// Zhang & Li (2017): linear decrease from `w_max` to `w_min`.
+    #[serde(alias = "linear_decreasing")]
     LinearDecreasing,
     /// Zhang et al. (2021): adaptive per particle from its fitness rank.
     Adaptive,

@@ -31,9 +31,10 @@ use serde::{Deserialize, Serialize};
 #[serde(rename_all = "kebab-case")]
 pub enum Pac89Form {
     /// The Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): supported.
+    #[serde(alias = "adams_pac89")]
     AdamsPac89,
     /// The 1987 paper's numbering (a1..a13 ...): refused.
-    #[serde(rename = "pacejka-1987")]
+    #[serde(rename = "pacejka-1987", alias = "pacejka_1987")]
     Pacejka1987,
 }
 

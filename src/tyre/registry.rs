@@ -139,8 +139,10 @@ pub fn swarm_models() -> Vec<ModelName> {
         .collect()
 }
 
-/// The entry of the model named `name`.
+/// The entry of the model named `name` (`magic-simple`, or as Python
+/// spells it, `magic_simple`).
 fn entry(name: &str) -> Option<&'static dyn ModelEntry> {
+    let name = name.replace('_', "-");
     models().into_iter().find(|e| e.name().as_str() == name)
 }
 

@@ -61,6 +61,7 @@ pub enum Kinematics {
     #[default]
     Exact,
     /// The small-angle form of Li, Jia & Zhao.
+    #[serde(alias = "small_angle")]
     SmallAngle,
 }
 

@@ -232,6 +232,7 @@ mod diagnose;
 mod identify;
 mod magic_formula;
 mod measured_metrics;
+mod messages;
 mod mf_combined_fy;
 mod mf_identify;
 mod mf_vertical;

@@ -28,6 +28,7 @@
 
 mod runs;
 
+use super::paths::beside;
 use super::rig::read_rig;
 use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
@@ -250,23 +251,26 @@ fn base_tyres(
     let rig_default = base.join("tyre_rig.csv");
     let rig = match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
         (Some(t), None, None, None) => {
-            inputs.push(base.join(t));
-            src.referenced_file("tyres.file", &base.join(t))?;
-            let mut t = load_tyre(&base.join(t))?;
+            let t = beside(base, t);
+            inputs.push(t.clone());
+            src.referenced_file("tyres.file", &t)?;
+            let mut t = load_tyre(&t)?;
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
             return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
         }
         (None, Some(fr), Some(re), None) => {
-            inputs.extend([base.join(fr), base.join(re)]);
-            src.referenced_file("tyres.front", &base.join(fr))?;
-            src.referenced_file("tyres.rear", &base.join(re))?;
-            let (mut f, mut r) = (load_tyre(&base.join(fr))?, load_tyre(&base.join(re))?);
+            let (fr, re) = (beside(base, fr), beside(base, re));
+            inputs.extend([fr.clone(), re.clone()]);
+            src.referenced_file("tyres.front", &fr)?;
+            src.referenced_file("tyres.rear", &re)?;
+            let (mut f, mut r) = (load_tyre(&fr)?, load_tyre(&re)?);
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
             return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
         }
         (None, None, None, Some(rig)) => {
-            src.referenced_file("tyres.rig", &base.join(rig))?;
-            base.join(rig)
+            let rig = beside(base, rig);
+            src.referenced_file("tyres.rig", &rig)?;
+            rig
         }
         (None, None, None, None) if folder && rig_default.is_file() => rig_default,
         (None, None, None, None) => return Ok(BaseTyres::FromRuns),

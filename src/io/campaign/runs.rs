@@ -5,13 +5,15 @@
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
 use crate::error::{InputError, InputProblem};
+use crate::io::paths::beside;
 use crate::io::read_run;
 use crate::io::toml_file::TomlSource;
 use crate::measured::clean::{
-    clean_run, median, quantile, segments, CleanSettings, CleaningReport, GlitchKind, Piece,
-    MIN_RUN_SAMPLES, MIN_RUN_SECONDS,
+    clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
+    MIN_RUN_SECONDS,
 };
 use crate::measured::MeasuredRun;
+use crate::metrics::measured::{yaw_per_neutral, STEER_IN_DEGREES};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -45,17 +47,17 @@ pub(super) fn run_files(
 ) -> Result<Vec<PathBuf>, InputError> {
     let file = &src.path;
     let run_spec = runs.cloned().unwrap_or_default();
-    let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| base.join(p)).collect();
+    let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| beside(base, p)).collect();
     for p in &files {
         src.referenced_file("runs.files", p)?;
     }
     if let Some(d) = &run_spec.dir {
-        src.referenced_folder("runs.dir", &base.join(d))?;
+        src.referenced_folder("runs.dir", &beside(base, d))?;
     }
     let dir = run_spec
         .dir
         .as_ref()
-        .map(|d| base.join(d))
+        .map(|d| beside(base, d))
         .or_else(|| (folder && files.is_empty()).then(|| path.join("runs")));
     if let Some(d) = dir {
         let entries = std::fs::read_dir(&d).map_err(|source| InputError::Io {
@@ -192,17 +194,8 @@ pub(super) fn read_runs(
     Ok((runs, notes, cleaning))
 }
 
-/// Steered samples needed to judge the steer against the yaw rate.
-const STEER_CHECK_SAMPLES: usize = 50;
-
-/// The steer judged against the yaw rate it gives, where the run steers
-/// (the 95th percentile of |δ| at speed at least 0.01 rad: a straight run
-/// whose steer sensor sits a few milliradians off shows no gain): over the
-/// samples at speed steered by at least 0.005 rad and 30 % of that
-/// percentile, the median of
-/// `q = r·l/(u·δ)`, the yaw rate over a neutral car's, is about
-/// `1/(1 + K·u²)` (0.2–1 for an understeering car, somewhat above 1 for
-/// an oversteering one). A negative median is a sign convention other
+/// The steer judged against the yaw rate it gives
+/// ([`yaw_per_neutral`]): a negative median is a sign convention other
 /// than ISO 8855's (refused); one below 0.1 a steer in degrees or a
 /// steering-wheel angle, one above 3 a steer too small (noted: the
 /// diagnosis would fit a model-form error to a unit slip).
@@ -211,29 +204,9 @@ fn steer_against_yaw(
     wheelbase: f64,
     min_speed: f64,
 ) -> Result<Option<String>, InputError> {
-    let at_speed: Vec<usize> = (0..run.t.len())
-        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
-        .collect();
-    let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
-    size.sort_by(f64::total_cmp);
-    let Some(p95) = quantile(&size, 0.95) else {
+    let Some((m, n)) = yaw_per_neutral(run, wheelbase, min_speed) else {
         return Ok(None);
     };
-    if p95 < 0.01 {
-        return Ok(None);
-    }
-    let steered = (0.3 * p95).max(0.005);
-    let mut q: Vec<f64> = at_speed
-        .into_iter()
-        .filter(|&i| run.steer[i].abs() >= steered)
-        .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
-        .filter(|q| q.is_finite())
-        .collect();
-    if q.len() < STEER_CHECK_SAMPLES {
-        return Ok(None);
-    }
-    let n = q.len();
-    let m = median(&mut q);
     let name = run.path.display();
     if m < -0.1 {
         return Err(file_error(
@@ -244,11 +217,13 @@ fn steer_against_yaw(
             },
         ));
     }
-    Ok(if m < 0.1 {
-        Some(format!(
-            "{name}: the yaw rate is {:.0}× smaller than a neutral car's for this steer (median r·l/(u·δ) = {m:.3} over {n} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians",
-            1.0 / m.max(1e-9)
-        ))
+    Ok(if m < STEER_IN_DEGREES {
+        let problem = InputProblem::SteerAboveYaw {
+            median: m,
+            samples: n,
+            assumed_wheelbase: None,
+        };
+        Some(format!("{name}: {problem}"))
     } else if m > 3.0 {
         Some(format!(
             "{name}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?"

@@ -7,13 +7,13 @@
 mod figures;
 
 use crate::equilibria::bifurcation::Bifurcation;
-use crate::equilibria::pso::PsoSearch;
+use crate::equilibria::pso::{Fitness, PsoSearch};
 use crate::equilibria::sweep::{self, SweepResult};
 use crate::equilibria::{exact, FoundBy, SearchBox};
 use crate::error::{Error, MergeInput, OptionsError};
 use crate::io::sweep::{load_sweep, Sweep};
 use crate::jobs::shard::{
-    input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
+    input_copies, plural, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::report::progress::Progress;
 use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
@@ -230,9 +230,9 @@ impl EquilibriaReport {
         let (sw, s) = (&self.sweep, &self.summary);
         let mut out = vec![
             format!(
-                "{}: {} conditions ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, load transfer {}",
+                "{}: {} ({} steer × {} friction × {} speed), tyres {} / {}, {} kinematics, {}",
                 sw.name,
-                s.conditions,
+                plural(s.conditions, "condition", "conditions"),
                 sw.grid.steer.len(),
                 sw.grid.friction.len(),
                 sw.grid.speed.len(),
@@ -242,18 +242,29 @@ impl EquilibriaReport {
                     Kinematics::Exact => "exact",
                     Kinematics::SmallAngle => "small-angle",
                 },
-                sw.model.options.load_transfer
+                if sw.model.options.load_transfer {
+                    "with load transfer"
+                } else {
+                    "no load transfer"
+                }
             ),
             format!(
-                "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {:?}",
-                sw.search_box.beta_max, sw.search_box.yaw_rate_max, sw.pso.seed, sw.pso.particles, sw.pso.iterations, sw.pso.fitness
+                "  box |β| ≤ {:.3} rad, |r| ≤ {:.3} rad/s; PSO seed {}, {} particles × {} iterations, fitness {}",
+                sw.search_box.beta_max, sw.search_box.yaw_rate_max, sw.pso.seed, sw.pso.particles, sw.pso.iterations,
+                match sw.pso.fitness {
+                    Fitness::Residual => "residual",
+                    Fitness::NewtonStep => "newton-step",
+                }
             ),
         ];
         if s.conditions_with_continua > 0 {
             out.push(format!(
-                "  {} conditions have a continuum of equilibria (both axles sliding at constant force: \
+                "  {} a continuum of equilibria (both axles sliding at constant force: \
                  the tyres' sliding force does not fall with slip); see continua.csv",
-                s.conditions_with_continua
+                match s.conditions_with_continua {
+                    1 => "1 condition has".to_string(),
+                    n => format!("{n} conditions have"),
+                }
             ));
         }
         out.push(format!(
@@ -261,12 +272,16 @@ impl EquilibriaReport {
             s.agreeing, s.conditions, s.agreement_percent, s.max_residual, s.seconds
         ));
         for (k, c) in &s.equilibria_in_box_histogram {
-            out.push(format!("  {c} conditions with {k} equilibria in the box"));
+            out.push(format!(
+                "  {} with {} in the box",
+                plural(*c, "condition", "conditions"),
+                plural(*k, "equilibrium", "equilibria")
+            ));
         }
         for b in &s.bifurcations {
             out.push(format!(
-                "  {:?} along {} at steer {:.6} rad, friction {:.4}, speed {:.3} m/s: β {:.4} rad, r {:.4} rad/s, {} + {}, residual {:.1e}, criterion {:.1e}, {}",
-                b.kind,
+                "  {} along {} at steer {:.6} rad, friction {:.4}, speed {:.3} m/s: β {:.4} rad, r {:.4} rad/s, {} + {}, residual {:.1e}, criterion {:.1e}, {}",
+                b.kind.name(),
                 b.axis.name(),
                 b.at.steer,
                 b.at.friction,

@@ -427,9 +427,9 @@ impl SwarmReport {
     pub fn summary(&self) -> Vec<String> {
         let o = &self.options;
         let mut out = vec![format!(
-            "{}: {} conditions; model {}, seed {}",
+            "{}: {}; model {}, seed {}",
             o.data.display(),
-            self.conditions.len(),
+            crate::jobs::shard::plural(self.conditions.len(), "condition", "conditions"),
             o.model,
             o.seed
         )];

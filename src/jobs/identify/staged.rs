@@ -52,12 +52,12 @@ impl StagedJob {
     pub fn summary(&self) -> Vec<String> {
         let o = &self.options;
         let mut out = vec![format!(
-            "{}: {} samples, {} rows; model {}, start {:?}",
+            "{}: {} samples, {} rows; model {}, start {}",
             o.data.display(),
             self.rows.samples,
             self.rows.rows,
             o.model,
-            o.start
+            o.start.as_str()
         )];
         if let Some(g) = &self.rows.thinning {
             out.extend(g.lines().iter().map(|l| format!("  {l}")));

@@ -2,14 +2,14 @@
 //! every metric, Wang & Liang's RBF network with its re-simulated
 //! validation, and the inverse (regions, Er curves, the best combination
 //! refined by simulation) out, as `study.csv`, `maps.png`, `rbf.json`,
-//! `rbf.png`, `inverse.json` and `summary.json`. Stiffness in reports is per
-//! tyre in the file's unit.
+//! `rbf.png`, `inverse.json` and `summary.json`; stiffness per tyre in the file's unit.
 
 use crate::study::inverse::{best_on_curve, distance, Map};
 use crate::study::rbf::Rbf;
 use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 
 mod figures;
+mod numbers;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
 use crate::jobs::shard::{
@@ -541,7 +541,7 @@ impl StudyReport {
             [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
                 .into_iter()
                 .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
-                .map(|v| v.to_string())
+                .map(numbers::csv_number)
         });
         write_csv(&files[0], &header, rows)?;
         if let Some(r) = &self.rbf {

@@ -19,7 +19,7 @@
 //! mirrored). Units: N, rad, Pa.
 
 use super::{AlphaStar, MagicFormula};
-use crate::error::ModeError;
+use crate::error::{ModeDigit, ModeError};
 use serde::{Deserialize, Serialize};
 
 /// One of MFeval's `useMode` settings the crate evaluates.
@@ -50,35 +50,36 @@ impl MfMode {
         if !(100..1000).contains(&code) {
             return Err(ModeError::NotThreeDigits { code });
         }
-        let digit = |place, digit| ModeError::Digit {
-            code,
+        let digit = |place, digit, allowed| ModeDigit {
             place,
             digit,
-            allowed: "1 or 2",
+            allowed,
         };
-        let limit_checks = match h {
-            1 => true,
-            2 => false,
-            _ => return Err(digit("hundreds", h)),
-        };
-        let alpha_star = match t {
-            1 => AlphaStar::Angle,
-            2 => AlphaStar::Tan,
-            _ => return Err(digit("tens", t)),
-        };
-        match u {
-            1 => Ok(Self {
-                limit_checks,
-                alpha_star,
-            }),
-            2 => Err(ModeError::TurnSlip { code }),
-            _ => Err(ModeError::Digit {
-                code,
-                place: "units",
-                digit: u,
-                allowed: "1",
-            }),
+        let mut bad = Vec::new();
+        if !(1..=2).contains(&h) {
+            bad.push(digit("hundreds", h, "1 or 2"));
         }
+        if !(1..=2).contains(&t) {
+            bad.push(digit("tens", t, "1 or 2"));
+        }
+        // Units 2 alone is turn slip, refused by name below.
+        if u != 1 && (u != 2 || !bad.is_empty()) {
+            bad.push(digit("units", u, "1"));
+        }
+        if !bad.is_empty() {
+            return Err(ModeError::Digits { code, bad });
+        }
+        if u == 2 {
+            return Err(ModeError::TurnSlip { code });
+        }
+        Ok(Self {
+            limit_checks: h == 1,
+            alpha_star: if t == 1 {
+                AlphaStar::Angle
+            } else {
+                AlphaStar::Tan
+            },
+        })
     }
 
     /// The `useMode` code of this mode.
@@ -307,6 +308,19 @@ mod tests {
         for bad in [21, 131, 321, 120, 1121] {
             assert!(MfMode::from_use_mode(bad).is_err(), "{bad}");
         }
+        // Every refused digit is named, with the whole code.
+        let e = MfMode::from_use_mode(999).unwrap_err().to_string();
+        assert!(
+            e.starts_with(
+                "mode 999: hundreds digit 9 is not 1 or 2, tens digit 9 is not 1 or 2, units digit 9 is not 1 ("
+            ),
+            "{e}"
+        );
+        let e = MfMode::from_use_mode(132).unwrap_err().to_string();
+        assert!(
+            e.starts_with("mode 132: tens digit 3 is not 1 or 2, units digit 2 is not 1 ("),
+            "{e}"
+        );
     }
 
     #[test]

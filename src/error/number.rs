@@ -1,0 +1,141 @@
+//! Numbers as the messages show them: the shortest decimal that reads back
+//! as the value when it is short (a value as the user wrote it: `0.0174533`,
+//! `57296`, `23150000`), else six significant digits with the trailing zeros trimmed (a
+//! bound computed in floating point: `0.1875`, not `0.18749999999999997`);
+//! very small and very large magnitudes in exponent form (`1e-16`). And the
+//! ranges of the range checks, a bound that is zero less a rounding guard
+//! shown as the closed bound 0.
+
+use std::fmt;
+
+/// Significant digits of a short value, shown as it is.
+const SHORT_DIGITS: usize = 12;
+
+/// Significant digits of a value that is not short (noise of a computation).
+const DIGITS: usize = 6;
+
+/// A lower bound below zero by at most this is a rounding guard: the check
+/// means "not negative".
+const GUARD: f64 = 1e-9;
+
+/// A number formatted for a message ([`Display`](fmt::Display)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&number(self.0))
+    }
+}
+
+/// The significant digits of a decimal text (no sign, point or exponent;
+/// leading zeros not counted).
+fn significant_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    digits.trim_start_matches('0').len()
+}
+
+/// `v` with at most `digits` significant digits, trailing zeros trimmed.
+fn rounded(v: f64, digits: usize) -> String {
+    let exponent = v.abs().log10().floor() as i32;
+    let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+    let s = format!("{v:.decimals$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
+    }
+}
+
+/// `v` in exponent form, at most `digits` significant digits (`1e-16`,
+/// `2.5e9`).
+fn exponent_form(v: f64, digits: usize) -> String {
+    let shortest = format!("{v:e}");
+    if significant_digits(&shortest) <= SHORT_DIGITS {
+        return shortest;
+    }
+    let s = format!("{v:.*e}", digits - 1);
+    let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+    let mantissa = if mantissa.contains('.') {
+        mantissa.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        mantissa
+    };
+    format!("{mantissa}e{exp}")
+}
+
+/// `v` as the messages show it (see the module's documentation).
+pub fn number(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return if v == 0.0 { "0".into() } else { format!("{v}") };
+    }
+    let size = v.abs();
+    if !(1e-4..1e16).contains(&size) {
+        return exponent_form(v, DIGITS);
+    }
+    let shortest = format!("{v}");
+    if significant_digits(&shortest) <= SHORT_DIGITS {
+        shortest
+    } else {
+        rounded(v, DIGITS)
+    }
+}
+
+/// What the check `lo < v ≤ hi` asks, after "must": `lie in (lo, hi]`;
+/// `lie in [0, hi]` when `lo` is 0 less a rounding guard; `be greater than
+/// lo` when `hi` is infinite.
+pub fn range(lo: f64, hi: f64) -> String {
+    let guard = (-GUARD..0.0).contains(&lo);
+    match (guard, hi.is_finite()) {
+        (true, true) => format!("lie in [0, {}]", Num(hi)),
+        (true, false) => "not be negative".into(),
+        (false, true) => format!("lie in ({}, {}]", Num(lo), Num(hi)),
+        (false, false) => format!("be greater than {}", Num(lo)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn short_values_show_as_written_and_computed_noise_is_rounded() {
+        assert_eq!(number(0.0174533), "0.0174533");
+        assert_eq!(number(57296.0), "57296");
+        assert_eq!(number(-2.5), "-2.5");
+        assert_eq!(number(0.15 / 0.8), "0.1875");
+        assert_eq!(number(0.1 + 0.2), "0.3");
+        assert_eq!(number(240.00000000000003), "240");
+        assert_eq!(number(1.0 / 3.0), "0.333333");
+        assert_eq!(number(-2.0 / 3.0 * 1000.0), "-666.667");
+        assert_eq!(number(0.0), "0");
+        assert_eq!(number(-0.0), "0");
+        assert_eq!(number(f64::NAN), "NaN");
+        assert_eq!(number(f64::INFINITY), "inf");
+    }
+
+    #[test]
+    fn tiny_and_huge_values_take_exponent_form() {
+        assert_eq!(number(1e-16), "1e-16");
+        assert_eq!(number(-1e-12), "-1e-12");
+        assert_eq!(number(1e-14 / 3.0), "3.33333e-15");
+        assert_eq!(number(2.315e7), "23150000");
+        assert_eq!(number(2.5e16), "2.5e16");
+        assert_eq!(number(1e30), "1e30");
+        assert_eq!(number(0.0001), "0.0001");
+    }
+
+    #[test]
+    fn a_guarded_zero_bound_is_the_closed_zero() {
+        assert_eq!(range(-1e-12, 0.15 / 0.8), "lie in [0, 0.1875]");
+        assert_eq!(range(1e-4, 0.05), "lie in (0.0001, 0.05]");
+        assert_eq!(range(0.0, f64::INFINITY), "be greater than 0");
+        assert_eq!(range(-1.0, 0.5), "lie in (-1, 0.5]");
+    }
+}

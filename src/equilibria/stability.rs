@@ -2,6 +2,7 @@
 //! Jacobian ∂(β̇, ṙ)/∂(β, r) (central differences, step 1e-7 scaled).
 
 use super::{residual, Condition};
+use crate::report::stability::Class;
 use crate::vehicle::VehicleModel;
 use serde::{Deserialize, Serialize};
 
@@ -28,6 +29,16 @@ impl Kind {
     pub(crate) fn is_stable(self) -> bool {
         matches!(self, Kind::StableNode | Kind::StableFocus)
     }
+    /// The class it is drawn as (stable node or focus: stable; saddle;
+    /// unstable node or focus, or degenerate: unstable).
+    pub fn class(self) -> Class {
+        match self {
+            Kind::StableNode | Kind::StableFocus => Class::Stable,
+            Kind::Saddle => Class::Saddle,
+            Kind::UnstableNode | Kind::UnstableFocus | Kind::Degenerate => Class::Unstable,
+        }
+    }
+
     /// Short name used in CSV files.
     pub fn name(self) -> &'static str {
         match self {

@@ -440,3 +440,14 @@ fn a_line_of_steers_sharing_the_rear_scan_gives_the_same_equilibria_to_the_bit()
         }
     }
 }
+
+#[test]
+fn every_kind_is_drawn_as_one_stability_class() {
+    use crate::report::stability::Class;
+    assert_eq!(Kind::StableNode.class(), Class::Stable);
+    assert_eq!(Kind::StableFocus.class(), Class::Stable);
+    assert_eq!(Kind::Saddle.class(), Class::Saddle);
+    assert_eq!(Kind::UnstableNode.class(), Class::Unstable);
+    assert_eq!(Kind::UnstableFocus.class(), Class::Unstable);
+    assert_eq!(Kind::Degenerate.class(), Class::Unstable);
+}

@@ -2,7 +2,7 @@
 //! scenario's tyres), joined to its folder and normalised lexically: `.`
 //! dropped and `..` taken back against the component before it, without
 //! asking the file system, so that messages and reports show
-//! `../shared/data/run.csv`, not `campaigns/../../shared/data/run.csv`.
+//! `../logs/run.csv`, not `campaigns/../../logs/run.csv`.
 
 use std::path::{Component, Path, PathBuf};
 
@@ -43,11 +43,7 @@ mod tests {
     #[test]
     fn dots_are_resolved_lexically() {
         let cases = [
-            (
-                "campaigns",
-                "../../shared/data/r.csv",
-                "../shared/data/r.csv",
-            ),
+            ("campaigns", "../../logs/r.csv", "../logs/r.csv"),
             ("campaigns/a", "./runs/../r.csv", "campaigns/a/r.csv"),
             ("", "tyre.toml", "tyre.toml"),
             ("/data/x", "../../../y.csv", "/y.csv"),

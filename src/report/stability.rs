@@ -10,7 +10,6 @@
 //! [`STABLE_MANIFOLD`], [`UNSTABLE_MANIFOLD`]).
 
 use super::series::{Marker, Series, Shape, Style};
-use crate::equilibria::Kind;
 
 /// The stability class an equilibrium is drawn as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -33,15 +32,6 @@ pub const UNSTABLE_MANIFOLD: usize = 5;
 impl Class {
     /// Every class, in the order of a key.
     pub const ALL: [Class; 3] = [Class::Stable, Class::Saddle, Class::Unstable];
-
-    /// The class of an equilibrium of kind `kind`.
-    pub fn of(kind: Kind) -> Self {
-        match kind {
-            Kind::StableNode | Kind::StableFocus => Class::Stable,
-            Kind::Saddle => Class::Saddle,
-            Kind::UnstableNode | Kind::UnstableFocus | Kind::Degenerate => Class::Unstable,
-        }
-    }
 
     /// Its word in a key.
     pub fn label(self) -> &'static str {
@@ -115,12 +105,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_kind_has_one_class_and_the_classes_look_different() {
-        assert_eq!(Class::of(Kind::StableNode), Class::Stable);
-        assert_eq!(Class::of(Kind::StableFocus), Class::Stable);
-        assert_eq!(Class::of(Kind::Saddle), Class::Saddle);
-        assert_eq!(Class::of(Kind::UnstableFocus), Class::Unstable);
-        assert_eq!(Class::of(Kind::Degenerate), Class::Unstable);
+    fn the_classes_look_different() {
         // Colour, line and marker each tell the three apart.
         for (i, a) in Class::ALL.iter().enumerate() {
             for b in &Class::ALL[i + 1..] {

@@ -85,7 +85,7 @@ pub fn branch_diagram(
     let scaled = |e: &Equilibrium| [e.beta / bx.beta_max, e.yaw_rate / bx.yaw_rate_max];
     let columns: Vec<Vec<[f64; 2]>> = eqs.iter().map(|c| c.iter().map(scaled).collect()).collect();
     let links = branches::link(&columns, BRANCH_GAP);
-    let class = |(c, k): At| Class::of(eqs[c][k].stability.kind);
+    let class = |(c, k): At| eqs[c][k].stability.kind.class();
     let mut present = Vec::new();
     let mut segment = |class: Class, x: [f64; 2], b: [f64; 2], r: [f64; 2]| {
         present.push(class);
@@ -269,7 +269,7 @@ fn equilibrium_markers(eqs: &[Equilibrium], bx: &SearchBox) -> Vec<Series> {
     for class in Class::ALL {
         let pts: Vec<[f64; 2]> = eqs
             .iter()
-            .filter(|e| Class::of(e.stability.kind) == class && bx.contains([e.beta, e.yaw_rate]))
+            .filter(|e| e.stability.kind.class() == class && bx.contains([e.beta, e.yaw_rate]))
             .map(|e| [e.beta, e.yaw_rate])
             .collect();
         if !pts.is_empty() {

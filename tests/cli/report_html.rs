@@ -199,6 +199,17 @@ fn no_reduction_percentage_for_a_gap_within_noise() {
     }
     assert!(within > 0, "no channel within its noise floors");
     if !d["gap"]["significant"].as_bool().unwrap() {
-        assert!(row(&page, "ranking-table", "sensor_delay").contains("<td>not significant</td>"));
+        // Without a gap nothing is searched: the candidate is screened,
+        // listed as such, and ranked nowhere.
+        let screened: Vec<&str> = d["screened"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["effect"].as_str().unwrap())
+            .collect();
+        assert_eq!(screened, ["sensor_delay"]);
+        assert!(page.contains("Screened, not cross-validated"));
+        assert!(page.contains("sensor_delay ("));
+        assert!(!page.contains("<tr><td>sensor_delay</td>"));
     }
 }

@@ -223,12 +223,27 @@ pub fn channel_gap(
                 .max_by(|a, b| a.rms.total_cmp(&b.rms))
                 .map(|p| p.name)
         };
+        // A channel that is all but empty has a zero floor and no
+        // magnitude or phase: said in words, never as NaN or a 300-digit
+        // ratio.
+        let floors = rms / noise_floor;
+        let floors = if floors.is_finite() && floors < 1e6 {
+            format!("{floors:.1} noise floors")
+        } else {
+            "a noise floor of zero: the measured channel is all but constant".to_string()
+        };
+        let or_undefined = |v: f64, text: String| {
+            if v.is_finite() {
+                text
+            } else {
+                "undefined".to_string()
+            }
+        };
         let mut s = format!(
-            "gap: RMS {rms:.4} {unit} ({:.1} noise floors), bias {:.4} {unit}; magnitude error {:+.1} %, phase error {:.3}",
-            rms / noise_floor.max(1e-300),
+            "gap: RMS {rms:.4} {unit} ({floors}), bias {:.4} {unit}; magnitude error {}, phase error {}",
             mean(&e),
-            100.0 * magnitude_error,
-            phase_error
+            or_undefined(magnitude_error, format!("{:+.1} %", 100.0 * magnitude_error)),
+            or_undefined(phase_error, format!("{phase_error:.3}")),
         );
         if let Some(w) = worst(&windows) {
             s += &format!("; largest in the window '{w}'");

@@ -21,7 +21,7 @@ mod rig;
 mod tests;
 
 pub use fit::{DiagnosisError, FitError, SkipReason, StageRows, StageSkip};
-pub use input::{CellProblem, InputError, Location};
+pub use input::{CellProblem, DuplicateAt, InputError, Location};
 pub use metrics::MetricsError;
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};

@@ -8,6 +8,7 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
+use super::input::DuplicateAt;
 use super::number::Num;
 use super::rig::Variable;
 use super::ParamError;
@@ -341,6 +342,27 @@ pub enum InputProblem {
     /// A campaign folder without `vehicle.toml`.
     #[error("a campaign folder needs vehicle.toml (with a [vehicle] table), runs/*.csv and optionally tyre_rig.csv")]
     NoVehicleFile,
+    /// A column named twice in a CSV header, or a key given twice in one
+    /// section of a file: one of the two would be dropped silently.
+    #[error("`{name}` appears twice (also {first}): keep the one that holds the value")]
+    Duplicate {
+        /// The column's or key's name.
+        name: String,
+        /// Where it appears first.
+        first: DuplicateAt,
+    },
+    /// A response channel that holds one value over a whole run: a dead
+    /// or unplugged sensor, to which no model can be fitted (its noise
+    /// floor is zero, every gap infinitely significant).
+    #[error("channel `{channel}` holds one value ({}) over the whole run: a dead or unplugged sensor, to which no model can be fitted; {}", Num(*value), if *required { "fix the log or leave the run out" } else { "remove the column (it is optional) or fix the log" })]
+    DeadChannel {
+        /// The channel.
+        channel: &'static str,
+        /// The value it holds.
+        value: f64,
+        /// Whether the format requires the channel.
+        required: bool,
+    },
     /// A run whose yaw rate turns against its steer.
     #[error("the yaw rate turns against the steer (median r·l/(u·δ) = {median:.2} over {samples} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; is `steer` or `yaw_rate` in another sign convention? negate it")]
     YawAgainstSteer {
@@ -427,6 +449,8 @@ impl InputProblem {
             InputProblem::RunListedTwice { .. } => "RunListedTwice",
             InputProblem::NoRuns { .. } => "NoRuns",
             InputProblem::NoVehicleFile => "NoVehicleFile",
+            InputProblem::DeadChannel { .. } => "DeadChannel",
+            InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::RunTooShort { .. } => "RunTooShort",

@@ -171,6 +171,9 @@ pub enum Limit {
     /// A road's bank angle.
     #[error("a bank steeper than 0.5 rad (29°) is not a road")]
     RoadBank,
+    /// A steering compliance, rad/N.
+    #[error("no steering system loses more than 0.1 rad (5.7°) of road-wheel steer per kN of front axle force (1e-4 rad/N); the scenario key is in rad/N (0.003 rad/kN, the diagnosis's unit, is 3e-6 rad/N)")]
+    SteeringCompliance,
     /// The replay step of a diagnosis.
     #[error("a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)")]
     ReplayStep,

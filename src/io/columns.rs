@@ -3,7 +3,7 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
-use crate::error::{CellProblem, InputError, InputProblem};
+use crate::error::{CellProblem, DuplicateAt, InputError, InputProblem};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -89,7 +89,22 @@ pub fn read_columns(
     let mut wanted: Vec<(usize, String)> = Vec::new();
     for name in required.iter().chain(optional) {
         match headers.iter().position(|h| h == *name) {
-            Some(i) => wanted.push((i, name.to_string())),
+            Some(i) => {
+                // A second column of the same name would be dropped
+                // silently: which one holds the signal is for the user.
+                if let Some(j) = headers.iter().skip(i + 1).position(|h| h == *name) {
+                    return Err(InputError::problem_at(
+                        path,
+                        headers.position().map_or(1, |p| p.line() as usize),
+                        i + j + 2,
+                        InputProblem::Duplicate {
+                            name: name.to_string(),
+                            first: DuplicateAt::Column(i + 1),
+                        },
+                    ));
+                }
+                wanted.push((i, name.to_string()));
+            }
             None if required.contains(name) => {
                 return Err(InputError::MissingColumn {
                     path: path.to_path_buf(),

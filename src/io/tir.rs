@@ -17,7 +17,7 @@
 //! the model holds (in the file's own units), so comments, sections and
 //! keys the model does not read round-trip unchanged.
 
-use crate::error::{InputError, InputProblem, ModeError};
+use crate::error::{DuplicateAt, InputError, InputProblem, ModeError};
 use crate::tyre::mf::{
     MagicFormula, MfCoefficients, MfLimits, MfMode, MfOptions, MfVersion, TyreSide,
 };
@@ -88,6 +88,7 @@ impl TirDocument {
     pub fn parse(path: &Path, text: &str) -> Result<Self, InputError> {
         let mut section = String::new();
         let mut lines = Vec::new();
+        let mut seen = std::collections::HashMap::new();
         for (i, raw) in text.lines().enumerate() {
             let trimmed = raw.trim_start();
             let entry = if trimmed.is_empty()
@@ -110,7 +111,24 @@ impl TirDocument {
                 section = rest[..end].trim().to_ascii_uppercase();
                 None
             } else if let Some(eq) = raw.find('=') {
-                Some(parse_entry(path, i + 1, raw, eq, &section)?)
+                let e = parse_entry(path, i + 1, raw, eq, &section)?;
+                // A second, different value of a key in its section would
+                // silently win over the first (a repeated equal one is
+                // harmless and read as the file's value).
+                let key = (e.section.clone(), e.key.clone());
+                if let Some((first, _)) = seen.get(&key).filter(|(_, v)| *v != e.value) {
+                    return Err(InputError::problem_at(
+                        path,
+                        i + 1,
+                        raw.len() - trimmed.len() + 1,
+                        InputProblem::Duplicate {
+                            name: e.key,
+                            first: DuplicateAt::Line(*first),
+                        },
+                    ));
+                }
+                seen.insert(key, (i + 1, e.value.clone()));
+                Some(e)
             } else {
                 None
             };

@@ -203,6 +203,16 @@ impl Effects {
         ParamError::finite("bank_profile_scale", self.bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", self.relaxation_length)?;
         ParamError::finite("steering_compliance", self.steering_compliance)?;
+        // Far above any car's (1e-6 to 3e-5 rad/N), the steer lost to the
+        // force exceeds the steer given and the compliance solve has no
+        // physical root: a value in rad/kN is refused, not integrated.
+        ParamError::in_range(
+            "steering_compliance",
+            self.steering_compliance.abs(),
+            -1e-12,
+            1e-4,
+            crate::error::Limit::SteeringCompliance,
+        )?;
         for (i, v) in self.roll_steer.iter().enumerate() {
             ParamError::finite(&format!("roll_steer[{i}]"), *v)?;
         }

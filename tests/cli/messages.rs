@@ -309,3 +309,66 @@ fn the_study_table_shows_the_stiffness_grid_as_written() {
     assert!(pairs.contains(&("200".into(), "240".into())), "{pairs:?}");
     assert!(pairs.contains(&("700".into(), "720".into())), "{pairs:?}");
 }
+
+#[test]
+fn a_column_or_tir_key_given_twice_is_refused_not_dropped() {
+    let dir = scratch(&[(
+        "p.csv",
+        "fz,kappa,alpha,camber,speed,kappa\n4000,0,0.05,0,20,0.1\n",
+    )]);
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let tyre_eval = |tir: &Path, out: &Path| {
+        run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            dir.path().join("p.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let out = dir.path().join("o.csv");
+    let e = refused(&tyre_eval(&tir, &out), &out);
+    assert!(
+        e.contains("p.csv:1:6: `kappa` appears twice (also column 2)"),
+        "{e}"
+    );
+    // A .tir whose FNOMIN is given twice with two values.
+    let text = fs::read_to_string(&tir).unwrap();
+    let line = text
+        .lines()
+        .position(|l| l.trim_start().starts_with("FNOMIN"))
+        .unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    lines.insert(line + 1, "FNOMIN = 9999".into());
+    let twice = dir.path().join("twice.tir");
+    fs::write(&twice, lines.join("\n")).unwrap();
+    fs::write(
+        dir.path().join("p.csv"),
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n",
+    )
+    .unwrap();
+    let e = refused(&tyre_eval(&twice, &out), &out);
+    assert!(
+        e.contains(&format!(
+            "twice.tir:{}:1: `FNOMIN` appears twice (also line {})",
+            line + 2,
+            line + 1
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_steering_compliance_in_rad_per_kn_is_refused_not_integrated() {
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        "[model.effects]\nsteering_compliance = 0.003\n\n[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\n",
+    );
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains("`model.effects.steering_compliance` = 0.003: must lie in [0, 0.0001]")
+            && e.contains("0.003 rad/kN, the diagnosis's unit, is 3e-6 rad/N"),
+        "{e}"
+    );
+}

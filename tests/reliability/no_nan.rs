@@ -2,7 +2,8 @@
 //! library) of campaigns of degenerate runs — a constant steer (nothing to
 //! fit: singular problems), pieces at zero speed between short drives, a
 //! lateral-acceleration channel that is one sample away from empty (every
-//! other sample held at zero) — and the `simulate` replay and `metrics` of
+//! other sample held at zero), a dead `ay` sensor (zeros throughout:
+//! refused, naming the run and the channel) — and the `simulate` replay and `metrics` of
 //! such runs either refuse with a message naming the run, or report only
 //! finite numbers (checked on the values before JSON would turn a NaN into
 //! `null`).
@@ -41,8 +42,16 @@ fn degenerate() -> Vec<(&'static str, [String; 2])> {
             (18.0, d, if i == 7 { 1.0 } else { 0.0 })
         })
     };
+    // A dead sensor: `ay` logged as zeros throughout.
+    let dead_ay = |n| {
+        run(n, |_, t| {
+            let d = 0.03 * (1.5 * t).sin();
+            (18.0, d, 0.0)
+        })
+    };
     vec![
         ("constant_steer", [constant(300), constant(250)]),
+        ("dead_ay", [dead_ay(300), dead_ay(260)]),
         ("zero_speed_pieces", [stop_go(900), stop_go(700)]),
         ("single_sample_ay", [empty_ay(300), empty_ay(260)]),
     ]
@@ -70,12 +79,27 @@ fn degenerate_runs_give_no_nan_in_a_diagnosis() {
         let t0 = std::time::Instant::now();
         match handling::jobs::diagnose::run(&c, Some(&dir.path().join("out"))) {
             Ok(r) => {
+                assert_ne!(name, "dead_ay", "a dead channel diagnosed");
                 let bad = non_finite(&r.diagnosis);
                 assert!(bad.is_empty(), "{name}: {bad:?}");
+                // Nor in the sentences: a ratio to a zero noise floor.
+                let text = serde_json::to_string(&r.diagnosis).unwrap();
+                if let Some(i) = text.find("NaN") {
+                    panic!(
+                        "{name}: NaN in the report's text: …{}…",
+                        &text[i.saturating_sub(300)..(i + 60).min(text.len())]
+                    );
+                }
                 r.write().unwrap();
             }
             Err(e) => {
                 let e = e.to_string();
+                if name == "dead_ay" {
+                    assert!(
+                        e.contains("a.csv") && e.contains("channel `ay` holds one value (0)"),
+                        "{e}"
+                    );
+                }
                 assert!(
                     e.contains("a.csv") || e.contains("b.csv") || e.contains("campaign.toml"),
                     "{name}: {e}"

@@ -149,6 +149,7 @@ pub(super) fn read_runs(
     for p in files {
         let run = read_run(p)?;
         check_length(&run)?;
+        check_live_channels(&run)?;
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed)?);
         inputs.push(p.clone());
         let name = run.path.display().to_string();
@@ -231,6 +232,33 @@ fn steer_against_yaw(
     } else {
         None
     })
+}
+
+/// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the
+/// whole run (a dead sensor logging zeros): its noise floor would be zero
+/// and any gap to it infinitely significant.
+fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
+    let channels = [
+        ("yaw_rate", Some(&run.yaw_rate), true),
+        ("ay", run.ay.as_ref(), false),
+        ("beta", run.beta.as_ref(), false),
+    ];
+    for (channel, values, required) in channels {
+        let Some(v) = values else { continue };
+        let mut finite = v.iter().copied().filter(|x| x.is_finite());
+        let Some(first) = finite.next() else { continue };
+        if finite.all(|x| x == first) {
+            return Err(file_error(
+                &run.path,
+                InputProblem::DeadChannel {
+                    channel,
+                    value: first,
+                    required,
+                },
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn check_length(run: &MeasuredRun) -> Result<(), InputError> {

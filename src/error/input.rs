@@ -24,18 +24,6 @@ fn place(path: &std::path::Path, at: &Option<Location>) -> String {
     }
 }
 
-/// Where a duplicated column or key first appears
-/// ([`super::InputProblem::Duplicate`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
-pub enum DuplicateAt {
-    /// A 1-based column of the header.
-    #[error("column {0}")]
-    Column(usize),
-    /// A 1-based line of the file.
-    #[error("line {0}")]
-    Line(usize),
-}
-
 /// What is wrong with a CSV cell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CellProblem {

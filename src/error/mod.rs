@@ -7,6 +7,7 @@
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
+mod duplicate;
 mod fit;
 mod input;
 mod metrics;
@@ -20,8 +21,9 @@ mod rig;
 #[cfg(test)]
 mod tests;
 
+pub use duplicate::DuplicateAt;
 pub use fit::{DiagnosisError, FitError, SkipReason, StageRows, StageSkip};
-pub use input::{CellProblem, DuplicateAt, InputError, Location};
+pub use input::{CellProblem, InputError, Location};
 pub use metrics::MetricsError;
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};

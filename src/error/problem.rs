@@ -8,7 +8,7 @@
 //!
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
-use super::input::DuplicateAt;
+use super::duplicate::DuplicateAt;
 use super::number::Num;
 use super::rig::Variable;
 use super::ParamError;

@@ -438,6 +438,8 @@ fn initial_step<const N: usize, S: OdeSystem<N>>(
 /// has been evaluated there, `record(sys, i, t, x)` is called (so a system
 /// can hand out that evaluation's by-products without a second one); it
 /// returns false to stop. Returns the last state reached. Allocates nothing.
+/// It is [`sensitivity::rk4_dual`] in plain numbers: one RK4, whose dual
+/// replay differentiates exactly what this one computes.
 pub fn rk4<const N: usize, S: OdeSystem<N>>(
     sys: &mut S,
     t0: f64,
@@ -446,28 +448,21 @@ pub fn rk4<const N: usize, S: OdeSystem<N>>(
     x0: [f64; N],
     mut record: impl FnMut(&mut S, usize, f64, &[f64; N]) -> bool,
 ) -> [f64; N] {
-    let add = |x: &[f64; N], k: &[f64; N], s: f64| -> [f64; N] {
-        std::array::from_fn(|j| x[j] + s * k[j])
-    };
-    let mut x = x0;
-    for i in 0..=n {
-        let t = t0 + i as f64 * h;
-        sys.rk4_stage(i, 0);
-        let k1 = sys.derivatives(t, &x);
-        if !record(sys, i, t, &x) || i == n {
-            break;
-        }
-        sys.rk4_stage(i, 1);
-        let k2 = sys.derivatives(t + 0.5 * h, &add(&x, &k1, 0.5 * h));
-        sys.rk4_stage(i, 2);
-        let k3 = sys.derivatives(t + 0.5 * h, &add(&x, &k2, 0.5 * h));
-        sys.rk4_stage(i, 3);
-        let k4 = sys.derivatives(t + h, &add(&x, &k3, h));
-        for j in 0..N {
-            x[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
-        }
+    sensitivity::rk4_dual(&mut Plain(sys), t0, h, n, x0, |p, i, t, x| {
+        record(p.0, i, t, x)
+    })
+}
+
+/// An [`OdeSystem`] seen as a system in the plain scalar.
+struct Plain<'a, S>(&'a mut S);
+
+impl<const N: usize, S: OdeSystem<N>> sensitivity::DualSystem<f64, N> for Plain<'_, S> {
+    fn derivatives(&mut self, t: f64, x: &[f64; N]) -> [f64; N] {
+        self.0.derivatives(t, x)
     }
-    x
+    fn rk4_stage(&mut self, step: usize, stage: usize) {
+        self.0.rk4_stage(step, stage);
+    }
 }
 
 #[cfg(test)]

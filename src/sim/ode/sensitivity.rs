@@ -24,7 +24,7 @@ pub trait DualSystem<T, const N: usize> {
     fn rk4_stage(&mut self, _step: usize, _stage: usize) {}
 }
 
-/// [`super::rk4`] in the scalar `T`: the grid `t0 + i·h`, `i = 0..=n`, from
+/// RK4 in the scalar `T` ([`super::rk4`] is its plain-number case): the grid `t0 + i·h`, `i = 0..=n`, from
 /// `x0`; `record(sys, i, t, x)` at every grid point after its first stage
 /// (false stops). Returns the last state reached.
 pub fn rk4_dual<T, const N: usize, S>(

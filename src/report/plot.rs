@@ -323,11 +323,11 @@ mod tests {
             .collect()
     }
 
-    #[test]
-    fn the_key_sits_beside_the_data_never_over_it() {
-        let x: Vec<f64> = (0..50).map(f64::from).collect();
-        let fig = Figure {
-            width: 900,
+    /// One panel `width` px wide: `n` measured points and a model line.
+    fn measured_and_model(n: u32, width: u32) -> Figure {
+        let x: Vec<f64> = (0..n).map(f64::from).collect();
+        Figure {
+            width,
             ..Figure::stack(vec![Panel {
                 series: vec![
                     Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
@@ -335,7 +335,12 @@ mod tests {
                 ],
                 ..Panel::default()
             }])
-        };
+        }
+    }
+
+    #[test]
+    fn the_key_sits_beside_the_data_never_over_it() {
+        let fig = measured_and_model(50, 900);
         let svg = fig.svg(Path::new("test.svg")).unwrap();
         let edge = f64::from(900 - SIDE);
         let circles = attrs(&svg, "circle", "cx");
@@ -377,17 +382,7 @@ mod tests {
 
     #[test]
     fn a_narrow_panel_keeps_its_key_below_the_chart() {
-        let x: Vec<f64> = (0..20).map(f64::from).collect();
-        let fig = Figure {
-            width: 320,
-            ..Figure::stack(vec![Panel {
-                series: vec![
-                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
-                    Series::line("base model", &x, &x, 1),
-                ],
-                ..Panel::default()
-            }])
-        };
+        let fig = measured_and_model(20, 320);
         let svg = fig.svg(Path::new("test.svg")).unwrap();
         let lowest = attrs(&svg, "circle", "cy")
             .into_iter()

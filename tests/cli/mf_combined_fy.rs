@@ -10,17 +10,8 @@
 //! only (on `docs/examples/mf_grid.csv`, `RVY5`, `RVY6` of the wrong sign and
 //! `fy` off by 1.5 % over the raw samples).
 
+use super::mf_identify::{CONSTANTS_TIR, TRUTH};
 use super::*;
-
-const TRUTH: &str = "tests/fixtures/tir/MagicFormula61_Parameters.tir";
-
-/// The truth's constants (nominal load, free radius, nominal pressure,
-/// speed, side), so that the fitted coefficients are the truth's own, not a
-/// re-parametrisation about another nominal load or side.
-const CONSTANTS_TIR: &str = "[MDI_HEADER]\nFILE_TYPE = 'tir'\nFILE_VERSION = 3.0\n\
-    [UNITS]\nLENGTH = 'meter'\nFORCE = 'newton'\nANGLE = 'radians'\nMASS = 'kg'\nTIME = 'second'\n\
-    [MODEL]\nFITTYP = 61\nTYRESIDE = 'RIGHT'\nLONGVL = 16.6\n[DIMENSION]\nUNLOADED_RADIUS = 0.3943\n\
-    [VERTICAL]\nFNOMIN = 6752\n[INFLATION_PRESSURE_RANGE]\nNOMPRES = 260000\n";
 
 /// Four loads and three cambers, so that the pure `Fy` stage frees every
 /// term (`PKY4` needs four loads, `PEY5`, `PKY5` three cambers) and hands

@@ -6,11 +6,14 @@
 use super::*;
 use rand::SeedableRng;
 
-const TRUTH: &str = "tests/fixtures/tir/MagicFormula61_Parameters.tir";
+/// MFeval's MF 6.1 sample file, the truth the rig data are made from.
+pub(crate) const TRUTH: &str = "tests/fixtures/tir/MagicFormula61_Parameters.tir";
 
 /// The constants a test engineer knows before fitting (nominal load, free
-/// radius, nominal pressure, speed, side) and nothing else.
-const CONSTANTS_TIR: &str = "[MDI_HEADER]\nFILE_TYPE = 'tir'\nFILE_VERSION = 3.0\n\
+/// radius, nominal pressure, speed, side) and nothing else: the truth's, so
+/// that fitted coefficients are the truth's own, not a re-parametrisation
+/// about another nominal load or side.
+pub(crate) const CONSTANTS_TIR: &str = "[MDI_HEADER]\nFILE_TYPE = 'tir'\nFILE_VERSION = 3.0\n\
     [UNITS]\nLENGTH = 'meter'\nFORCE = 'newton'\nANGLE = 'radians'\nMASS = 'kg'\nTIME = 'second'\n\
     [MODEL]\nFITTYP = 61\nTYRESIDE = 'RIGHT'\nLONGVL = 16.6\n[DIMENSION]\nUNLOADED_RADIUS = 0.3943\n\
     [VERTICAL]\nFNOMIN = 6752\n[INFLATION_PRESSURE_RANGE]\nNOMPRES = 260000\n";

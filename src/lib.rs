@@ -57,6 +57,7 @@ pub mod measured;
 pub mod metrics;
 pub mod optim;
 pub mod report;
+pub mod scalar;
 pub mod sim;
 pub mod study;
 pub mod tyre;

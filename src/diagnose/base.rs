@@ -45,9 +45,9 @@ use serde::Serialize;
 /// Shape factor C of the axle characteristics.
 pub const SHAPE: f64 = 1.3;
 /// Cornering coefficient at the middle of its share, 1/rad: a car tyre's.
-const K_REF: f64 = 20.0;
+pub(super) const K_REF: f64 = 20.0;
 /// Peak friction at the middle of its share.
-const D_REF: f64 = 1.0;
+pub(super) const D_REF: f64 = 1.0;
 
 /// The fit's box of the shares (front coefficient, rear coefficient,
 /// friction): just inside the physical limits 0 and 1, where the model

@@ -9,6 +9,7 @@ use super::base::{identify_axles, AxleIdentification};
 use super::campaign::{BaseTyres, Campaign};
 use super::effects::{Bound, EffectKind, EffectSet, Parameter};
 use super::fit::{fit, FitOutcome, Polish};
+pub(super) use super::layout::{fits_roll, with_effects, Layout};
 use super::model::Augmented;
 use super::problem::Problem;
 use super::refit::{refit, training_rows};
@@ -18,6 +19,7 @@ use super::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
+use crate::optim::local::Residuals;
 use crate::optim::stats::covariance;
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
@@ -70,40 +72,6 @@ pub(super) static ROLL_DYNAMICS: [Parameter; 2] = [
     },
 ];
 
-/// Whether a candidate carries the roll-dynamics parameters.
-pub(super) fn fits_roll(kinds: &[EffectKind]) -> bool {
-    kinds.iter().any(|e| e.uses_roll())
-}
-
-/// The model of a candidate's parameter vector: the axle characteristics
-/// first when they are fitted (`axle`), then each effect's parameters, then
-/// the roll dynamics when a roll effect is among them ([`ROLL_DYNAMICS`]).
-pub(super) fn with_effects(
-    base: &Augmented,
-    fixed: &EffectSet,
-    kinds: &[EffectKind],
-    axle: bool,
-    p: &[f64],
-) -> Augmented {
-    let mut m = base.clone();
-    m.effects = *fixed;
-    let mut k = 0;
-    if axle {
-        (m.base.front, m.base.rear) = axle_tyres(&p[..3]);
-        k = 3;
-    }
-    for e in kinds {
-        let n = e.parameters().len();
-        m.effects.set(*e, &p[k..k + n]);
-        k += n;
-    }
-    if fits_roll(kinds) {
-        m.roll.frequency = p[k];
-        m.roll.damping = p[k + 1];
-    }
-    m
-}
-
 /// The start of a combination: the axle characteristics and effect values
 /// of the current set, the added effect's values from its single fit, and
 /// the roll dynamics from whichever of the two fitted them (the current
@@ -130,6 +98,15 @@ pub(super) fn combined_start(
 impl Setting<'_> {
     pub(super) fn axle(&self) -> bool {
         self.base.axle.is_some()
+    }
+    /// What this setting's parameters set on `base` ([`with_effects`]).
+    pub(super) fn layout(&self, base: &Augmented) -> Layout {
+        Layout {
+            base: base.clone(),
+            fixed: self.fixed,
+            kinds: self.kinds.clone(),
+            axle: self.axle(),
+        }
     }
     /// The effect parameters in vector order, the roll dynamics last.
     pub(super) fn parameters(&self) -> impl Iterator<Item = &'static Parameter> + '_ {
@@ -241,6 +218,18 @@ pub(super) fn base_models(
     }
 }
 
+/// What the axle shares set on the models `make` builds: their tyres.
+fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
+    let (f, r) = axle_tyres(&[0.5, 0.5, 0.5]);
+    let base = make(f, r);
+    Layout {
+        fixed: base.effects,
+        base,
+        kinds: Vec::new(),
+        axle: true,
+    }
+}
+
 /// The base model of axle characteristics identified from the runs (no
 /// tyre data; [`super::base`]): a grid of starts, the best basins
 /// polished, the best of them fitted, then refitted on every fold.
@@ -256,12 +245,14 @@ fn axles_from_runs(
         make(f, r)
     };
     let stamps = timing.map(|_| Stamps::default());
+    let layout = axle_layout(&make);
     let problem = Problem::new(
         |p: &[f64]| counted(&stamps, build, p),
         runs.iter().collect(),
         scales_hint,
         AXLE_BOUNDS.to_vec(),
-    );
+    )
+    .with_layout(layout.clone());
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
@@ -274,7 +265,8 @@ fn axles_from_runs(
             Phase::BaseLinearisation,
         ];
         let n = full.params.len();
-        record_polish(rec, st, mark, n, full.linear.is_some(), phases);
+        let jacobian = problem.jacobian_evaluations(n);
+        record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
     }
     let fold_params: Vec<Vec<f64>> = (0..folds.len())
         .into_par_iter()
@@ -290,7 +282,8 @@ fn axles_from_runs(
                 train,
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
-            );
+            )
+            .with_layout(layout.clone());
             let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
             if let (Some(rec), Some(st)) = (timing, &stamps) {
                 rec.add(Phase::BaseFolds, t0.elapsed(), st.count());

@@ -140,7 +140,8 @@ impl<'a> Context<'a> {
             self.runs.iter().collect(),
             self.scales,
             s.bounds(),
-        );
+        )
+        .with_layout(s.layout(&self.bases.all));
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -157,7 +158,8 @@ impl<'a> Context<'a> {
                 Phase::CandidateCurvature,
             ];
             let n = full.params.len();
-            record_polish(rec, st, mark, n, full.linear.is_some(), phases);
+            let jacobian = problem.jacobian_evaluations(n);
+            record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
         }
         drop(problem);
         let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
@@ -201,7 +203,8 @@ impl<'a> Context<'a> {
                     self.training(k),
                     self.scales,
                     s.bounds(),
-                );
+                )
+                .with_layout(s.layout(base));
                 let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();

@@ -37,6 +37,7 @@ pub(crate) mod diagnosis;
 pub mod effects;
 mod fit;
 pub(crate) mod gap;
+mod layout;
 mod model;
 mod parts;
 mod problem;
@@ -49,6 +50,7 @@ mod search;
 mod sensors;
 mod summary;
 pub mod synth;
+mod tangent;
 pub mod timing;
 
 pub use base::{AxleIdentification, AxleLimit, AxleValue};

@@ -23,10 +23,11 @@
 //! through [`Augmented::steered`] first. Units: SI, rad.
 
 use super::effects::EffectSet;
-use crate::manoeuvre::interpolate;
+use crate::manoeuvre::{interpolate, interpolate_of};
+use crate::scalar::{off, Scalar};
 pub use crate::sim::{Drive, FixedStep};
 use crate::sim::{Integrator, TimeHistory};
-use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel};
+use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel, LOAD_TOLERANCE};
 use std::borrow::Cow;
 
 /// The base model with effects.
@@ -148,24 +149,43 @@ impl Augmented {
     /// Replays the drive from `x0`; the history carries the roll.
     pub(crate) fn simulate(&self, drive: &Drive, x0: StateVector) -> TimeHistory {
         let (model, friction) = self.model();
-        Self::replay(&model, friction, drive, x0)
+        Self::replay(&model, friction, drive, x0, LOAD_TOLERANCE)
     }
 
     /// Replays the drive from the state [`Augmented::initial_state`] gives
     /// for `beta` and `yaw_rate`, building the model once (the fits replay
     /// every run at every evaluation).
+    #[cfg(test)]
     pub(crate) fn simulate_from(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> TimeHistory {
-        let (model, friction) = self.model();
-        let x0 = Self::quasi_static(&model, friction, drive, beta, yaw_rate);
-        Self::replay(&model, friction, drive, x0)
+        self.simulate_from_to(drive, beta, yaw_rate, LOAD_TOLERANCE)
     }
 
-    fn replay(model: &VehicleModel, friction: f64, drive: &Drive, x0: StateVector) -> TimeHistory {
+    /// [`Augmented::simulate_from`] with the load-transfer loop solved to
+    /// relative tolerance `tol`.
+    pub(crate) fn simulate_from_to(
+        &self,
+        drive: &Drive,
+        beta: f64,
+        yaw_rate: f64,
+        tol: f64,
+    ) -> TimeHistory {
+        let (model, friction) = self.model();
+        let x0 = Self::quasi_static(&model, friction, drive, beta, yaw_rate);
+        Self::replay(&model, friction, drive, x0, tol)
+    }
+
+    fn replay(
+        model: &VehicleModel,
+        friction: f64,
+        drive: &Drive,
+        x0: StateVector,
+        tol: f64,
+    ) -> TimeHistory {
         let integrator = Integrator {
             friction,
             ..Integrator::default()
         };
-        integrator.replay(model, drive, x0)
+        integrator.replay_to(model, drive, x0, tol)
     }
 
     /// What the sensors record of a response, interpolated at `times`:
@@ -192,19 +212,20 @@ impl Augmented {
 /// constant `lag` (dy/dt = (u − y)/τ). The logged steer is the
 /// piecewise-linear signal through its samples, held at its first sample
 /// before the start (and at its last after the end), and the lag starts
-/// settled on that first sample.
+/// settled on that first sample. Its numbers may be dual numbers
+/// ([`crate::scalar`]): the output then carries their derivatives.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct SteerPath {
+pub struct SteerPath<T = f64> {
     /// Dead time, s (≥ 0).
-    pub delay: f64,
+    pub delay: T,
     /// Time constant of the first-order lag, s (≥ 0; 0: none).
-    pub lag: f64,
+    pub lag: T,
 }
 
-impl SteerPath {
+impl<T: Scalar> SteerPath<T> {
     /// Whether the road wheels follow the logged steer as it is.
     pub fn is_off(&self) -> bool {
-        self.delay == 0.0 && self.lag == 0.0
+        off(self.delay) && off(self.lag)
     }
 
     /// The road-wheel steer at times `at` (in any order) of the steer
@@ -214,59 +235,94 @@ impl SteerPath {
     /// piecewise-linear input, stepped from one break point or output time
     /// to the next (the delayed input is linear between them), so the
     /// output is exact to round-off at every time asked for, whatever the
-    /// spacing.
-    pub fn apply(&self, t: &[f64], steer: &[f64], at: &[f64]) -> Vec<f64> {
+    /// spacing. Without a lag, a lag being differentiated at zero adds its
+    /// one-sided derivative `−τ·δ̇` (value unchanged).
+    pub fn apply(&self, t: &[f64], steer: &[f64], at: &[f64]) -> Vec<T> {
         assert_eq!(t.len(), steer.len(), "one steer per time");
         assert!(!t.is_empty(), "a steer path needs samples");
         let delay = self.delay;
-        if self.lag <= 0.0 {
+        let logged: Vec<T> = steer.iter().map(|&v| T::from(v)).collect();
+        if self.lag.re() <= 0.0 {
             return at
                 .iter()
-                .map(|&s| interpolate(t, steer, s - delay))
+                .map(|&s| {
+                    let y = interpolate_of(t, &logged, T::from(s) - delay);
+                    if self.lag.is_constant() {
+                        y
+                    } else {
+                        y - self.lag * slope_below(t, steer, s - delay.re())
+                    }
+                })
                 .collect();
         }
         let tau = self.lag;
+        let one = T::from(1.0);
         // One exact step of h of the lag from y with the input linear from
         // u0 to u1: y·a + (1 − a)·u0 + (u1 − u0)·(1 − (1 − a)/x), with
         // x = h/τ and a = e^(−x).
-        let advance = |y: f64, u0: f64, u1: f64, h: f64| -> f64 {
+        let advance = |y: T, u0: T, u1: T, h: T| -> T {
             let x = h / tau;
-            if x <= 0.0 {
-                return y;
+            if x.re() <= 0.0 {
+                // A step of no length whose ends move with the parameters
+                // (an output time on a delayed break point): the lag's
+                // first-order change, zero in value.
+                return if x.is_constant() { y } else { y + (u0 - y) * x };
             }
             let one_minus_a = -(-x).exp_m1();
-            let a = 1.0 - one_minus_a;
-            a * y + one_minus_a * u0 + (u1 - u0) * (1.0 - one_minus_a / x)
+            let a = one - one_minus_a;
+            // 1 − (1 − a)/x: in dual numbers by its series for a short
+            // step, whose quotient of two small numbers would lose the
+            // derivative to rounding (the value is the same to rounding).
+            let ramp = if T::PLAIN || x.re() > 1e-3 {
+                one - one_minus_a / x
+            } else {
+                x * (one - x * (one - x * 0.25) * (1.0 / 3.0)) * 0.5
+            };
+            a * y + one_minus_a * u0 + (u1 - u0) * ramp
         };
         let mut order: Vec<usize> = (0..at.len()).collect();
         order.sort_by(|&i, &j| at[i].total_cmp(&at[j]));
-        let node = |j: usize| t[j] + delay;
-        let mut out = vec![0.0; at.len()];
+        let node = |j: usize| delay + t[j];
+        let mut out = vec![T::from(0.0); at.len()];
         // The state: time, input and output there; the next break point.
-        let (mut s, mut u, mut y) = (node(0), steer[0], steer[0]);
+        let (mut s, mut u, mut y) = (node(0), logged[0], logged[0]);
         let mut j = 1;
+        // An output time on a break point whose time moves with the delay
+        // still steps (by nothing in value) to carry its derivative.
+        let ahead = |q: f64, s: T| q > s.re() || (q == s.re() && !s.is_constant());
         for i in order {
             let q = at[i];
-            if q > s {
-                while j < t.len() && node(j) <= q {
-                    y = advance(y, u, steer[j], node(j) - s);
-                    (s, u) = (node(j), steer[j]);
+            if ahead(q, s) {
+                while j < t.len() && node(j).re() <= q {
+                    y = advance(y, u, logged[j], node(j) - s);
+                    (s, u) = (node(j), logged[j]);
                     j += 1;
                 }
-                if q > s {
+                if ahead(q, s) {
                     let uq = if j < t.len() {
-                        let w = (q - delay - t[j - 1]) / (t[j] - t[j - 1]);
-                        steer[j - 1] + w * (steer[j] - steer[j - 1])
+                        let w = (T::from(q) - delay - t[j - 1]) / (t[j] - t[j - 1]);
+                        logged[j - 1] + w * (steer[j] - steer[j - 1])
                     } else {
                         u
                     };
-                    y = advance(y, u, uq, q - s);
-                    (s, u) = (q, uq);
+                    y = advance(y, u, uq, T::from(q) - s);
+                    (s, u) = (T::from(q), uq);
                 }
             }
             out[i] = y;
         }
         out
+    }
+}
+
+/// The slope of the piecewise-linear signal (`t`, `y`) just below time `x`
+/// (0 outside it and across a jump).
+fn slope_below(t: &[f64], y: &[f64], x: f64) -> f64 {
+    let k = t.partition_point(|v| *v < x);
+    if k == 0 || k >= t.len() || t[k] <= t[k - 1] {
+        0.0
+    } else {
+        (y[k] - y[k - 1]) / (t[k] - t[k - 1])
     }
 }
 

@@ -10,9 +10,11 @@
 //! cost is `½·Σ r²` over every run and channel. Parameters are clamped into
 //! their box. Units: SI, rad.
 
+use super::layout::Layout;
 use super::model::Augmented;
 use super::replay::{LastReplay, Prepared};
-use crate::optim::local::Residuals;
+use crate::optim::local::{inward_jacobian, Residuals};
+use nalgebra::DMatrix;
 use std::sync::Mutex;
 
 /// Output-error least squares over a set of runs: `build` turns the
@@ -32,6 +34,9 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     pub bounds: Vec<(f64, f64)>,
     /// The last replay of each run.
     last: Vec<Mutex<Option<LastReplay>>>,
+    /// What the parameters set, when the problem has exact derivatives
+    /// ([`Problem::with_layout`]).
+    layout: Option<Layout>,
 }
 
 impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
@@ -50,7 +55,27 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             scales,
             bounds,
             last,
+            layout: None,
         }
+    }
+
+    /// The same problem with exact derivatives: `layout` says what the
+    /// parameters set (its [`Layout::build`] must be `build`), and the
+    /// Jacobian comes from one replay of each run in dual numbers
+    /// ([`super::tangent`]) instead of one per parameter.
+    pub fn with_layout(mut self, layout: Layout) -> Self {
+        self.layout = Some(layout);
+        self
+    }
+
+    /// Whether the Jacobian is exact: a layout, and tyres with a generic
+    /// force (else forward differences).
+    fn exact(&self) -> bool {
+        self.layout.as_ref().is_some_and(|l| {
+            let m = &l.base.base;
+            l.axle
+                || (m.front.lateral_parameters().is_some() && m.rear.lateral_parameters().is_some())
+        })
     }
 
     pub(super) fn clamp(&self, p: &[f64]) -> Vec<f64> {
@@ -75,6 +100,30 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
     }
     fn residuals(&self, p: &[f64], out: &mut [f64]) {
         self.data_residuals(&self.clamp(p), out);
+    }
+    /// Exact (one dual replay of each run) with a layout whose tyres have
+    /// a generic force, else forward differences into the box.
+    fn jacobian(&self, p: &[f64], r0: &[f64], bounds: &[(f64, f64)]) -> DMatrix<f64> {
+        if self.exact() {
+            let layout = self.layout.as_ref().expect("exact() checked it");
+            let q = self.clamp(p);
+            if let Some(j) = super::tangent::jacobian(layout, &self.runs, &self.scales, &q) {
+                // The dual replay is one evaluation in the fits' work
+                // reports: built once through `build`, whose callers
+                // count and time-stamp their evaluations.
+                let _counted = (self.build)(&q);
+                return j;
+            }
+        }
+        inward_jacobian(self, p, r0, bounds)
+    }
+    /// One replay (in dual numbers) when exact.
+    fn jacobian_evaluations(&self, n: usize) -> usize {
+        if self.exact() {
+            1
+        } else {
+            n
+        }
     }
 }
 

@@ -60,6 +60,10 @@ pub struct Prepared {
     pub(crate) measured: Vec<(Channel, Vec<f64>)>,
     /// Initial sideslip (measured, else 0) and yaw rate.
     pub(crate) start: (f64, f64),
+    /// Relative tolerance of the replays' load-transfer loop
+    /// ([`crate::vehicle::LOAD_TOLERANCE`]; a check of derivatives against
+    /// differences sets it at rounding).
+    pub(crate) load_tolerance: f64,
 }
 
 impl Prepared {
@@ -119,6 +123,7 @@ impl Prepared {
                 run.beta.as_ref().map_or(0.0, |b| b[first]),
                 run.yaw_rate[first],
             ),
+            load_tolerance: crate::vehicle::LOAD_TOLERANCE,
         }
     }
 
@@ -132,6 +137,14 @@ impl Prepared {
     /// path's output for the run's logged steer ([`Augmented::steered`]);
     /// any other, the prepared drive itself.
     pub(crate) fn drive_for(&self, model: &Augmented) -> Cow<'_, Drive> {
+        let (drive, t, steer) = self.unsteered_drive(model);
+        model.steered(drive, t, steer)
+    }
+
+    /// The drive `model`'s replay runs on before its steer path (the
+    /// method [`Prepared::drive_for`] picks), and the logged times and
+    /// steer the path acts on.
+    pub(super) fn unsteered_drive(&self, model: &Augmented) -> (&Drive, &[f64], &[f64]) {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
@@ -143,14 +156,22 @@ impl Prepared {
             self.stiff
                 .get_or_init(|| self.inputs.drive(self.drive.step, FixedStep::RosenbrockW))
         };
-        model.steered(drive, &self.inputs.t, &self.inputs.steer)
+        (drive, &self.inputs.t, &self.inputs.steer)
+    }
+
+    /// The first measured state (sideslip, else 0, and yaw rate) and
+    /// whether the sideslip is measured: a replay starts there less the
+    /// model's sensor offsets ([`Prepared::replay`]).
+    pub(super) fn start_values(&self) -> ((f64, f64), bool) {
+        let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
+        (self.start, beta_measured)
     }
 
     /// The run replayed by `model` from its first measured state less the
     /// model's sensor offsets, by the method [`Prepared::drive_for`] picks.
     pub(crate) fn replay(&self, model: &Augmented) -> TimeHistory {
         let (beta, yaw_rate) = self.start_of(model);
-        model.simulate_from(&self.drive_for(model), beta, yaw_rate)
+        model.simulate_from_to(&self.drive_for(model), beta, yaw_rate, self.load_tolerance)
     }
 
     /// Number of residuals of this run.

@@ -12,7 +12,9 @@
 //!
 //! Units: SI, rad.
 
+use crate::manoeuvre::interpolate_of;
 use crate::measured::MeasuredRun;
+use crate::scalar::{off, Scalar};
 use crate::sim::TimeHistory;
 use crate::vehicle::G;
 use serde::{Deserialize, Serialize};
@@ -37,7 +39,7 @@ pub struct Sensors {
 }
 
 /// Central-difference derivative of `y` over `t` (one-sided at the ends).
-fn derivative(t: &[f64], y: &[f64]) -> Vec<f64> {
+fn derivative<T: Scalar>(t: &[f64], y: &[T]) -> Vec<T> {
     let n = t.len();
     (0..n)
         .map(|i| {
@@ -45,53 +47,93 @@ fn derivative(t: &[f64], y: &[f64]) -> Vec<f64> {
             if b > a {
                 (y[b] - y[a]) / (t[b] - t[a])
             } else {
-                0.0
+                T::from(0.0)
             }
         })
         .collect()
 }
 
+/// [`Sensors`] with their numbers in a scalar of [`crate::scalar`] (a fit's
+/// dual numbers carry their derivatives).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SensorsOf<T> {
+    /// Delay, s.
+    pub delay: T,
+    /// Yaw-rate offset, rad/s.
+    pub yaw_rate_bias: T,
+    /// Lateral-acceleration offset, m/s².
+    pub ay_bias: T,
+    /// Sideslip offset, rad.
+    pub beta_bias: T,
+    /// Accelerometer position ahead of the centre of gravity, m.
+    pub accelerometer_x: T,
+    /// Body roll per unit lateral acceleration, rad per m/s².
+    pub roll_gradient: T,
+}
+
 impl Sensors {
+    /// The same sensors in scalar `T`, as constants.
+    pub(crate) fn of<T: Scalar>(&self) -> SensorsOf<T> {
+        SensorsOf {
+            delay: T::from(self.delay),
+            yaw_rate_bias: T::from(self.yaw_rate_bias),
+            ay_bias: T::from(self.ay_bias),
+            beta_bias: T::from(self.beta_bias),
+            accelerometer_x: T::from(self.accelerometer_x),
+            roll_gradient: T::from(self.roll_gradient),
+        }
+    }
+
     /// What these sensors would record of a simulated history, as a measured
     /// run (steer and speed are taken as recorded without error).
     pub fn measure(&self, h: &TimeHistory) -> MeasuredRun {
-        let yaw_acc = derivative(&h.t, &h.yaw_rate);
-        let ay_seen: Vec<f64> =
-            h.ay.iter()
-                .zip(&yaw_acc)
-                .map(|(ay, ra)| {
-                    let phi = self.roll_gradient * ay;
-                    ay * phi.cos() + G * phi.sin() + self.accelerometer_x * ra + self.ay_bias
-                })
-                .collect();
-        let yaw_seen: Vec<f64> = h.yaw_rate.iter().map(|r| r + self.yaw_rate_bias).collect();
-        let late = |y: &[f64]| -> Vec<f64> {
-            if self.delay == 0.0 {
-                y.to_vec()
-            } else {
-                h.t.iter()
-                    .map(|&t| crate::manoeuvre::interpolate(&h.t, y, t - self.delay))
-                    .collect()
-            }
-        };
+        let [yaw_rate, ay, beta] = self.of::<f64>().seen(&h.t, &h.yaw_rate, &h.ay, &h.beta);
         MeasuredRun {
             path: PathBuf::from("(simulated)"),
             t: h.t.clone(),
             speed: h.speed.clone(),
             steer: h.steer.clone(),
-            yaw_rate: late(&yaw_seen),
-            ay: Some(late(&ay_seen)),
-            beta: Some(if self.beta_bias == 0.0 {
-                late(&h.beta)
-            } else {
-                let b: Vec<f64> = h.beta.iter().map(|b| b + self.beta_bias).collect();
-                late(&b)
-            }),
+            yaw_rate,
+            ay: Some(ay),
+            beta: Some(beta),
             roll: None,
             bank: None,
             ax: None,
             masked: Vec::new(),
         }
+    }
+}
+
+impl<T: Scalar> SensorsOf<T> {
+    /// What the sensors record of a response (yaw rate, `ay` and sideslip
+    /// at times `t`), at the same times: (yaw rate, ay, sideslip).
+    pub(crate) fn seen(&self, t: &[f64], yaw_rate: &[T], ay: &[T], beta: &[T]) -> [Vec<T>; 3] {
+        let yaw_acc = derivative(t, yaw_rate);
+        let ay_seen: Vec<T> = ay
+            .iter()
+            .zip(&yaw_acc)
+            .map(|(&ay, &ra)| {
+                let phi = self.roll_gradient * ay;
+                ay * phi.cos() + phi.sin() * G + self.accelerometer_x * ra + self.ay_bias
+            })
+            .collect();
+        let yaw_seen: Vec<T> = yaw_rate.iter().map(|&r| r + self.yaw_rate_bias).collect();
+        let late = |y: &[T]| -> Vec<T> {
+            if off(self.delay) {
+                y.to_vec()
+            } else {
+                t.iter()
+                    .map(|&s| interpolate_of(t, y, T::from(s) - self.delay))
+                    .collect()
+            }
+        };
+        let beta_seen = if off(self.beta_bias) {
+            late(beta)
+        } else {
+            let b: Vec<T> = beta.iter().map(|&b| b + self.beta_bias).collect();
+            late(&b)
+        };
+        [late(&yaw_seen), late(&ay_seen), beta_seen]
     }
 }
 

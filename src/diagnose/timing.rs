@@ -194,23 +194,24 @@ impl Stamps {
 }
 
 /// Records a polish (Levenberg–Marquardt then the optimum's linearisation
-/// of `n` parameters) that began at `from` with `before` evaluations
+/// of `n` parameters, whose Jacobian costs `jacobian` evaluations: `n` by
+/// differences, 1 exact) that began at `from` with `before` evaluations
 /// already stamped and has just ended: its evaluations split into the
-/// polish, the residuals and Jacobian (`1 + n`) and the second derivatives
-/// (`n·(n + 3)/2`). Without a linearisation (`linearised` false), all is
-/// polish.
+/// polish, the residuals and Jacobian (`1 + jacobian`) and the second
+/// derivatives (`n·(n + 3)/2`). Without a linearisation (`linearised`
+/// false), all is polish.
 pub(super) fn record_polish(
     rec: &Recorder,
     stamps: &Stamps,
     (from, before): (Instant, usize),
-    n: usize,
+    (n, jacobian): (usize, usize),
     linearised: bool,
     phases: [Phase; 3],
 ) {
     let end = Instant::now();
     let total = stamps.count() - before;
     let (jac, curv) = if linearised && n > 0 {
-        (1 + n, n * (n + 3) / 2)
+        (1 + jacobian, n * (n + 3) / 2)
     } else {
         (0, 0)
     };

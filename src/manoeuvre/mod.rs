@@ -6,6 +6,7 @@
 //! measured run (linear interpolation of its steer and speed).
 //! Units: s, rad, m/s, Hz. Positive steer turns left.
 
+use crate::scalar::Scalar;
 use serde::{Deserialize, Serialize};
 
 fn default_start() -> f64 {
@@ -113,15 +114,35 @@ impl Replay {
 /// Linear interpolation of (xs, ys) at x, xs increasing, clamped to the
 /// ends (the replay of a run and the comparison with one both use it).
 pub(crate) fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    let k = xs.partition_point(|v| *v <= x);
+    interpolate_of(xs, ys, x)
+}
+
+/// [`interpolate`] in a scalar of the `num-dual` crate: the values `ys` and
+/// the abscissa `x` may carry derivatives (a delay being fitted moves `x`).
+/// At a node, an `x` that carries a derivative takes the slope of the
+/// segment below it: the one a growing delay moves into, whose one-sided
+/// derivative a fit pressed onto a zero delay needs.
+pub(crate) fn interpolate_of<T: Scalar>(xs: &[f64], ys: &[T], x: T) -> T {
+    let at = x.re();
+    let mut k = xs.partition_point(|v| *v <= at);
     if k == 0 {
         return ys[0];
     }
-    if k >= xs.len() {
+    if xs[k - 1] == at && !x.is_constant() {
+        if k < 2 {
+            // Below the first node the signal is held: no slope.
+            return ys[0];
+        }
+        k -= 1;
+    } else if k >= xs.len() {
         return ys[ys.len() - 1];
     }
     let (x0, x1) = (xs[k - 1], xs[k]);
-    let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
+    let w = if x1 > x0 {
+        (x - x0) / (x1 - x0)
+    } else {
+        T::from(0.0)
+    };
     ys[k - 1] + w * (ys[k] - ys[k - 1])
 }
 

@@ -41,7 +41,7 @@ impl FixedStep {
 
     /// The sample index of stage `stage` of step `step` (a Jacobian probe
     /// reads the step's first).
-    fn index(self, step: usize, stage: usize) -> usize {
+    pub(super) fn index(self, step: usize, stage: usize) -> usize {
         match self {
             Self::Rk4 => 2 * step + STAGE_HALF_STEPS[stage],
             Self::RosenbrockW if stage == W_PROBE => 3 * step,
@@ -196,7 +196,7 @@ impl Drive {
             .collect()
     }
 
-    fn inputs_at(&self, k: usize, friction: f64) -> Inputs {
+    pub(super) fn inputs_at(&self, k: usize, friction: f64) -> Inputs {
         Inputs {
             steer: self.steer[k],
             speed: self.speed[k],
@@ -391,7 +391,7 @@ fn run_rk4<const N: usize>(
 
 /// Steps a replay's ROS34PW2 Jacobian serves: at a replay step of 10–40 ms
 /// the speed and the tyres' slopes change little over this many.
-const W_REFRESH: usize = 4;
+pub(super) const W_REFRESH: usize = 4;
 
 /// ROS34PW2 of the full state on `n` steps of `h` from `t0`, recording
 /// every grid point.
@@ -443,7 +443,19 @@ impl Integrator {
     /// states integrated and the roll recorded: the diagnosis's replay of a
     /// run.
     pub fn replay(&self, model: &VehicleModel, drive: &Drive, x0: StateVector) -> TimeHistory {
-        let tol = crate::vehicle::LOAD_TOLERANCE;
+        self.replay_to(model, drive, x0, crate::vehicle::LOAD_TOLERANCE)
+    }
+
+    /// [`Integrator::replay`] with the load-transfer loop solved to relative
+    /// tolerance `tol` on g(ay) (a check of derivatives against differences
+    /// wants it at rounding).
+    pub fn replay_to(
+        &self,
+        model: &VehicleModel,
+        drive: &Drive,
+        x0: StateVector,
+        tol: f64,
+    ) -> TimeHistory {
         let mut sys = Driven::new(model, Source::Sampled(drive), self.friction, tol);
         match drive.method {
             FixedStep::Rk4 => run_rk4::<6>(&mut sys, drive.start, drive.step, drive.steps, x0),

@@ -28,6 +28,7 @@
 
 mod driven;
 pub mod ode;
+pub mod tangent;
 
 use driven::manoeuvre_inputs;
 pub use driven::{Drive, FixedStep};

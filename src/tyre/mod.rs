@@ -38,6 +38,7 @@
 mod dispatch;
 mod erased;
 mod generate;
+mod generic_tmp;
 mod gim;
 mod linear;
 mod magic_simple;

@@ -113,25 +113,6 @@ impl Default for CombinedSlip {
     }
 }
 
-impl CombinedSlip {
-    /// The longitudinal force per wheel (front, rear), N, of a car of mass
-    /// `mass` at longitudinal acceleration `ax`; None when the tyres carry
-    /// none of it (`force_share` 0), so that the model takes its pure-slip
-    /// path bit for bit.
-    pub(crate) fn wheel_forces(&self, mass: f64, ax: f64) -> Option<[f64; 2]> {
-        if self.force_share == 0.0 {
-            return None;
-        }
-        let share = if ax >= 0.0 {
-            self.drive_front_share
-        } else {
-            self.brake_front_share
-        };
-        let total = self.force_share * mass * ax;
-        Some([0.5 * share * total, 0.5 * (1.0 - share) * total])
-    }
-}
-
 /// Effects beyond the papers' model; [`Effects::default`] is the base model.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]

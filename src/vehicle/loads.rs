@@ -15,6 +15,7 @@
 //! not grow faster with load than `m/(h/d)` allows, so the root is unique.
 //! Units: SI.
 
+use super::scalar::{off, ModelScalars, Scalar};
 use super::VehicleModel;
 use crate::constants::G;
 use num_dual::DualNum;
@@ -51,19 +52,51 @@ impl LoadTransferSeed {
     }
 }
 
-/// Static wheel loads (N) and lateral load transfer per unit ay (N per m/s²).
+/// Static wheel loads (N) and lateral load transfer per unit ay (N per
+/// m/s²), in the model's scalar.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct LoadSplit {
-    front: f64,
-    rear: f64,
-    kf: f64,
-    kr: f64,
+pub(crate) struct LoadSplit<T = f64> {
+    front: T,
+    rear: T,
+    kf: T,
+    kr: T,
     /// Track ratio t_f / t_r: a transfer moment that the front axle cannot
     /// carry, expressed as rear transfer.
     front_to_rear: f64,
 }
 
-impl LoadSplit {
+/// `x` held within `[lo, hi]` (compared by value; as `f64::clamp`).
+fn clamp<T: Scalar>(x: T, lo: T, hi: T) -> T {
+    if x < lo {
+        lo
+    } else if x > hi {
+        hi
+    } else {
+        x
+    }
+}
+
+/// `magnitude` (≥ 0) with the sign of `sign` (as `f64::copysign`).
+fn copysign<T: Scalar>(magnitude: T, sign: T) -> T {
+    if sign.re().is_sign_negative() {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+impl<T: Scalar> LoadSplit<T> {
+    /// The values without their derivatives.
+    pub(crate) fn re(&self) -> LoadSplit<f64> {
+        LoadSplit {
+            front: self.front.re(),
+            rear: self.rear.re(),
+            kf: self.kf.re(),
+            kr: self.kr.re(),
+            front_to_rear: self.front_to_rear,
+        }
+    }
+
     /// FL, FR, RL, RR at `ay`. The roll moment m·ay·h is shared between the
     /// axles by the transfer share; an axle whose inner wheel has lifted off
     /// carries no more than its whole load on the outer wheel, and the moment
@@ -71,16 +104,16 @@ impl LoadSplit {
     /// wheels), so the four loads always add up to the axle loads (m·g·cos θ
     /// plus aero) until both inner wheels are off the ground (roll-over).
     #[inline]
-    pub(crate) fn at(&self, ay: f64) -> [f64; 4] {
+    pub(crate) fn at(&self, ay: T) -> [T; 4] {
         let (mut df, mut dr) = (self.kf * ay, self.kr * ay);
         if df.abs() > self.front {
-            dr += (df - self.front.copysign(df)) * self.front_to_rear;
-            df = self.front.copysign(df);
+            dr += (df - copysign(self.front, df)) * self.front_to_rear;
+            df = copysign(self.front, df);
         }
         if dr.abs() > self.rear {
-            df += (dr - self.rear.copysign(dr)) / self.front_to_rear;
-            df = df.clamp(-self.front, self.front);
-            dr = self.rear.copysign(dr);
+            df += (dr - copysign(self.rear, dr)) / self.front_to_rear;
+            df = clamp(df, -self.front, self.front);
+            dr = copysign(self.rear, dr);
         }
         [
             self.front - df,
@@ -94,7 +127,8 @@ impl LoadSplit {
 /// Solves `ay = Y(ay)/m` by the secant method from `seed`'s prediction, with
 /// the seed's slope as the first derivative estimate; `eval(ay)` returns
 /// `Y(ay)/m` and what else it computed at those loads. Returns the last
-/// evaluation's ay and by-products and the number of evaluations, and leaves
+/// iterate, its evaluation's `Y/m` and by-products and the number of
+/// evaluations, and leaves
 /// the slope in `seed` (the caller records the solution). Without load
 /// transfer (`enabled` false) one evaluation at ay = 0.
 pub(crate) fn solve_load_transfer<T>(
@@ -102,10 +136,10 @@ pub(crate) fn solve_load_transfer<T>(
     seed: &mut LoadTransferSeed,
     tolerance: f64,
     mut eval: impl FnMut(f64) -> (f64, T),
-) -> (f64, T, u32) {
+) -> (f64, f64, T, u32) {
     if !enabled {
         let (y, out) = eval(0.0);
-        return (y, out, 0);
+        return (0.0, y, out, 0);
     }
     // The integrator keeps one seed per RK stage, so the prediction is a
     // quadratic extrapolation in time and a solve usually ends after one
@@ -131,7 +165,7 @@ pub(crate) fn solve_load_transfer<T>(
         evals += 1;
     }
     seed.slope = slope;
-    (y1, o1, evals)
+    (x1, y1, o1, evals)
 }
 
 /// The root `ay` of `g(ay) = ay − y(ay)` (solved in plain numbers, e.g. by
@@ -159,36 +193,53 @@ impl VehicleModel {
     /// measured bank `bank` ([`super::Effects::bank`]; both zero for a
     /// steady state).
     pub(crate) fn load_split_at(&self, speed: f64, ax: f64, bank: f64) -> LoadSplit {
+        let friction = 1.0;
+        self.load_split_of(&self.scalars(friction), speed, ax, bank)
+    }
+
+    /// [`VehicleModel::load_split_at`] with the model's numbers `sc` in a
+    /// scalar.
+    pub(crate) fn load_split_of<T: Scalar>(
+        &self,
+        sc: &ModelScalars<T>,
+        speed: f64,
+        ax: f64,
+        bank: f64,
+    ) -> LoadSplit<T> {
         let v = &self.vehicle;
-        let e = &self.options.effects;
-        let (mut sf, mut sr) = v.static_axle_loads();
-        let bank = e.bank(bank);
-        if bank != 0.0 {
+        let (sf, sr) = v.static_axle_loads();
+        let (mut sf, mut sr) = (T::from(sf), T::from(sr));
+        let bank = sc.bank(bank);
+        if !off(bank) {
             let c = bank.cos();
             sf *= c;
             sr *= c;
         }
-        if e.aero_load != [0.0; 2] {
-            sf += e.aero_load[0] * speed * speed;
-            sr += e.aero_load[1] * speed * speed;
+        let [aero_f, aero_r] = sc.aero_load;
+        if !(off(aero_f) && off(aero_r)) {
+            sf += aero_f * speed * speed;
+            sr += aero_r * speed * speed;
         }
-        if e.longitudinal_load_transfer != 0.0 && ax != 0.0 {
+        if !off(sc.longitudinal_load_transfer) && ax != 0.0 {
             // A wheelie or a stoppie at the most: no axle load below zero.
             let rigid = v.mass * ax * v.cg_height / v.wheelbase();
-            let d = (e.longitudinal_load_transfer * rigid).clamp(-sr, sf);
+            let d = clamp(sc.longitudinal_load_transfer * rigid, -sr, sf);
             sf -= d;
             sr += d;
         }
         let (kf, kr) = if self.options.load_transfer {
-            let chi = v.front_transfer_share();
+            let chi = sc.transfer_share;
             let k = v.mass * v.cg_height;
-            (chi * k / v.track_front, (1.0 - chi) * k / v.track_rear)
+            (
+                chi * k / v.track_front,
+                (T::from(1.0) - chi) * k / v.track_rear,
+            )
         } else {
-            (0.0, 0.0)
+            (T::from(0.0), T::from(0.0))
         };
         LoadSplit {
-            front: 0.5 * sf,
-            rear: 0.5 * sr,
+            front: sf * 0.5,
+            rear: sr * 0.5,
             kf,
             kr,
             front_to_rear: v.track_front / v.track_rear,
@@ -220,6 +271,17 @@ impl VehicleModel {
             0.0
         } else {
             G * bank.sin()
+        }
+    }
+
+    /// [`VehicleModel::bank_acceleration_at`] with the model's numbers `sc`
+    /// in a scalar.
+    pub(crate) fn bank_acceleration_of<T: Scalar>(&self, sc: &ModelScalars<T>, bank: f64) -> T {
+        let bank = sc.bank(bank);
+        if off(bank) {
+            T::from(0.0)
+        } else {
+            bank.sin() * G
         }
     }
 }
@@ -271,7 +333,7 @@ mod tests {
             .collect();
         let root = |p: &[f64]| {
             let mut seed = LoadTransferSeed::default();
-            let (_, ay, _) = solve_load_transfer(true, &mut seed, 1e-15, |ay| {
+            let (_, _, ay, _) = solve_load_transfer(true, &mut seed, 1e-15, |ay| {
                 let y = y_over_m(&tyre, p, ay);
                 (y, ay)
             });

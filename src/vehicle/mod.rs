@@ -35,13 +35,16 @@ mod equilibrium;
 mod loads;
 mod params;
 mod rates;
+pub mod scalar;
 pub(crate) mod steady;
+pub mod wheels;
 
 pub use effects::{CombinedSlip, Effects, RollModel, MIN_RELAXATION_LENGTH};
 pub use loads::{implicit_root, LoadTransferSeed};
 pub use params::Vehicle;
 pub use rates::StateVector;
-pub(crate) use rates::LOAD_TOLERANCE;
+pub(crate) use rates::{LoadSolve, LOAD_TOLERANCE};
+pub use scalar::{ModelScalars, Scalar};
 
 use crate::tyre::{Tyre, TyreModel};
 use serde::{Deserialize, Serialize};

@@ -394,7 +394,7 @@ fn a_pure_steer_delay_shifts_a_ramp() {
     let early = path.apply(&[0.0, 1.0], &[0.2, 0.3], &[-1.0, 0.0, 0.1, 0.13]);
     assert_eq!(early, vec![0.2, 0.2, 0.2, 0.2]);
     // The same with the lag: off, and every time order.
-    let off = SteerPath::default().apply(&t, &steer, &at);
+    let off = SteerPath::<f64>::default().apply(&t, &steer, &at);
     assert_eq!(
         off,
         at.iter()

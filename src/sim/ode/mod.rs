@@ -43,7 +43,7 @@
 mod rosenbrock;
 pub mod sensitivity;
 
-pub use rosenbrock::{rosenbrock_w, W_NODES, W_PROBE, W_TIME_PROBE};
+pub use rosenbrock::{rosenbrock_w, rosenbrock_w_dual, W_NODES, W_PROBE, W_TIME_PROBE};
 
 /// An ODE system with `N` states. `&mut self` lets a system keep caches
 /// (the load-transfer solve's starting point) between evaluations; the
@@ -462,6 +462,12 @@ impl<const N: usize, S: OdeSystem<N>> sensitivity::DualSystem<f64, N> for Plain<
     }
     fn rk4_stage(&mut self, step: usize, stage: usize) {
         self.0.rk4_stage(step, stage);
+    }
+    fn w_stage(&mut self, step: usize, stage: usize) {
+        self.0.w_stage(step, stage);
+    }
+    fn implicit_states(&self) -> [bool; N] {
+        self.0.implicit_states()
     }
 }
 

@@ -9,8 +9,10 @@
 //! difference over the first stage's time. Units are whatever the system
 //! uses.
 
-use super::OdeSystem;
-use nalgebra::{SMatrix, SVector};
+use super::sensitivity::DualSystem;
+use super::{OdeSystem, Plain};
+use nalgebra::{ComplexField, SMatrix, SVector};
+use num_dual::DualNum;
 
 // ROS34PW2 (Rang & Angermann 2005): γ, α_ij, γ_ij, b_i, with the
 // published digits (more than an f64 holds, kept so they can be checked).
@@ -72,7 +74,8 @@ pub const W_TIME_PROBE: usize = 5;
 /// stiff modes stay damped while the Jacobian changes little over
 /// `refresh` steps). A step whose `I − hγW` is singular (an unstable model
 /// with an eigenvalue at `1/(hγ)`) leaves the state NaN from there on.
-/// Returns the last state reached. Allocates nothing.
+/// Returns the last state reached. Allocates nothing. It is
+/// [`rosenbrock_w_dual`] in plain numbers.
 pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
     sys: &mut S,
     t0: f64,
@@ -82,17 +85,42 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
     refresh: usize,
     mut record: impl FnMut(&mut S, usize, f64, &[f64; N]) -> bool,
 ) -> [f64; N] {
+    rosenbrock_w_dual(&mut Plain(sys), t0, h, n, x0, refresh, |p, i, t, x| {
+        record(p.0, i, t, x)
+    })
+}
+
+/// [`rosenbrock_w`] in the scalar `T` of a [`DualSystem`]: in dual numbers
+/// every operation — the difference quotients of `W` and `∂f/∂t`, the
+/// inverse of `I − hγW`, the stages — carries its derivatives, so the
+/// result's derivative is that of the discrete solution this method
+/// computes, to rounding (the matrix `W` is a function of the state and the
+/// parameters like any other quantity of the step).
+pub fn rosenbrock_w_dual<T, const N: usize, S>(
+    sys: &mut S,
+    t0: f64,
+    h: f64,
+    n: usize,
+    x0: [T; N],
+    refresh: usize,
+    mut record: impl FnMut(&mut S, usize, f64, &[T; N]) -> bool,
+) -> [T; N]
+where
+    T: DualNum<f64> + Copy + ComplexField,
+    S: DualSystem<T, N>,
+{
     let implicit = sys.implicit_states();
-    let mut x = SVector::<f64, N>::from(x0);
-    let mut w = SMatrix::<f64, N, N>::zeros();
+    let c = |v: f64| T::from(v);
+    let mut x = SVector::<T, N>::from(x0);
+    let mut w = SMatrix::<T, N, N>::zeros();
     // (I − hγW)⁻¹: formed once per Jacobian, each stage is then a product
     // (a few dozen multiply-adds, where the LU's two triangular solves per
     // stage took a quarter of a replay).
-    let mut inverse = SMatrix::<f64, N, N>::identity();
+    let mut inverse = SMatrix::<T, N, N>::identity();
     for i in 0..=n {
         let t = t0 + i as f64 * h;
         sys.w_stage(i, 0);
-        let f0 = SVector::<f64, N>::from(sys.derivatives(t, &x.into()));
+        let f0 = SVector::<T, N>::from(sys.derivatives(t, &x.into()));
         if !record(sys, i, t, &x.into()) || i == n {
             break;
         }
@@ -101,22 +129,26 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
             // The quotients' base is a probe too: a system whose probes
             // differ from its stages (the vehicle's freeze the wheel loads
             // that its stages solve for) differences like with like.
-            let base = SVector::<f64, N>::from(sys.derivatives(t, &x.into()));
+            let base = SVector::<T, N>::from(sys.derivatives(t, &x.into()));
             for j in 0..N {
                 if !implicit[j] {
                     continue;
                 }
                 // The states are angles and rates of order 0.01–1: a fixed
                 // relative step well above the load solve's tolerance.
-                let d = 1e-7 * x[j].abs().max(1.0);
+                let d = if x[j].re().abs() > 1.0 {
+                    num_traits_abs(x[j]) * 1e-7
+                } else {
+                    c(1e-7)
+                };
                 let mut xp = x;
                 xp[j] += d;
-                let fp = SVector::<f64, N>::from(sys.derivatives(t, &xp.into()));
+                let fp = SVector::<T, N>::from(sys.derivatives(t, &xp.into()));
                 w.set_column(j, &((fp - base) / d));
             }
-            inverse = (SMatrix::<f64, N, N>::identity() - w * (h * W_GAMMA))
+            inverse = (SMatrix::<T, N, N>::identity() - w * c(h * W_GAMMA))
                 .try_inverse()
-                .unwrap_or_else(|| SMatrix::<f64, N, N>::repeat(f64::NAN));
+                .unwrap_or_else(|| SMatrix::<T, N, N>::repeat(c(f64::NAN)));
         }
         // ∂f/∂t over the step's first part: without it the stiff modes,
         // which follow their inputs quasi-statically, lag them by a share of
@@ -125,8 +157,8 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
         // most of a step is negligible.)
         sys.w_stage(i, W_TIME_PROBE);
         let dt = W_NODES[1] * h;
-        let ft = (SVector::<f64, N>::from(sys.derivatives(t + dt, &x.into())) - f0) / dt;
-        let mut k = [SVector::<f64, N>::zeros(); 4];
+        let ft = (SVector::<T, N>::from(sys.derivatives(t + dt, &x.into())) - f0) / c(dt);
+        let mut k = [SVector::<T, N>::zeros(); 4];
         for s in 0..4 {
             let f = if s == 0 {
                 f0
@@ -134,19 +166,29 @@ pub fn rosenbrock_w<const N: usize, S: OdeSystem<N>>(
                 sys.w_stage(i, s);
                 let mut xs = x;
                 for (j, kj) in k.iter().enumerate().take(s) {
-                    xs += kj * W_ALPHA[s][j];
+                    xs += kj * c(W_ALPHA[s][j]);
                 }
-                SVector::<f64, N>::from(sys.derivatives(t + W_NODES[s] * h, &xs.into()))
+                SVector::<T, N>::from(sys.derivatives(t + W_NODES[s] * h, &xs.into()))
             };
-            let mut g = SVector::<f64, N>::zeros();
+            let mut g = SVector::<T, N>::zeros();
             for (j, kj) in k.iter().enumerate().take(s) {
-                g += kj * W_GAMMAS[s][j];
+                g += kj * c(W_GAMMAS[s][j]);
             }
-            k[s] = inverse * ((f + w * g) * h + ft * (W_GAMMA_SUMS[s] * h * h));
+            k[s] = inverse * ((f + w * g) * c(h) + ft * c(W_GAMMA_SUMS[s] * h * h));
         }
         for (kj, b) in k.iter().zip(W_B) {
-            x += kj * b;
+            x += kj * c(b);
         }
     }
     x.into()
+}
+
+/// |x| of a scalar (the `Signed` absolute value every `num-dual` scalar has;
+/// named apart from nalgebra's, which returns the real field).
+fn num_traits_abs<T: DualNum<f64>>(x: T) -> T {
+    if x.re() < 0.0 {
+        -x
+    } else {
+        x
+    }
 }

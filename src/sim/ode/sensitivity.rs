@@ -22,6 +22,16 @@ pub trait DualSystem<T, const N: usize> {
     /// Called before each evaluation with the grid step and the stage, as
     /// [`super::OdeSystem::rk4_stage`] is.
     fn rk4_stage(&mut self, _step: usize, _stage: usize) {}
+
+    /// Called before each evaluation of [`super::rosenbrock_w_dual`], as
+    /// [`super::OdeSystem::w_stage`] is.
+    fn w_stage(&mut self, _step: usize, _stage: usize) {}
+
+    /// The states whose Jacobian columns ROS34PW2 differences, as
+    /// [`super::OdeSystem::implicit_states`].
+    fn implicit_states(&self) -> [bool; N] {
+        [true; N]
+    }
 }
 
 /// RK4 in the scalar `T` ([`super::rk4`] is its plain-number case): the grid `t0 + i·h`, `i = 0..=n`, from

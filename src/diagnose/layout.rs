@@ -1,0 +1,68 @@
+//! What a fit's parameter vector sets on the augmented model
+//! ([`Layout`]): the axle characteristics of an identified base
+//! ([`super::base`]) first when they are fitted, then each candidate
+//! effect's parameters ([`super::effects::EffectSet::set`]), then the roll
+//! dynamics when a roll effect is among them. The plain model of a vector
+//! is [`with_effects`]; its derivatives are [`super::tangent`]'s. Units:
+//! SI, rad.
+
+use super::base::axle_tyres;
+use super::effects::{EffectKind, EffectSet};
+use super::model::Augmented;
+
+/// What a fit's parameter vector sets on a model: the axle
+/// characteristics first when they are fitted (`axle`), then each
+/// effect's parameters in `kinds` order, then the roll dynamics when a
+/// roll effect is among them (as [`with_effects`] builds the plain model).
+#[derive(Debug, Clone)]
+pub struct Layout {
+    /// The model the parameters are set on.
+    pub base: Augmented,
+    /// The effect values held fixed.
+    pub fixed: EffectSet,
+    /// The effects fitted, in vector order.
+    pub kinds: Vec<EffectKind>,
+    /// Whether the axle characteristics lead the vector.
+    pub axle: bool,
+}
+
+impl Layout {
+    /// The plain model of parameters `p`.
+    pub fn build(&self, p: &[f64]) -> Augmented {
+        with_effects(&self.base, &self.fixed, &self.kinds, self.axle, p)
+    }
+}
+
+/// Whether a candidate carries the roll-dynamics parameters.
+pub(super) fn fits_roll(kinds: &[EffectKind]) -> bool {
+    kinds.iter().any(|e| e.uses_roll())
+}
+
+/// The model of a candidate's parameter vector: the axle characteristics
+/// first when they are fitted (`axle`), then each effect's parameters, then
+/// the roll dynamics when a roll effect is among them (`super::candidates::ROLL_DYNAMICS`).
+pub(super) fn with_effects(
+    base: &Augmented,
+    fixed: &EffectSet,
+    kinds: &[EffectKind],
+    axle: bool,
+    p: &[f64],
+) -> Augmented {
+    let mut m = base.clone();
+    m.effects = *fixed;
+    let mut k = 0;
+    if axle {
+        (m.base.front, m.base.rear) = axle_tyres(&p[..3]);
+        k = 3;
+    }
+    for e in kinds {
+        let n = e.parameters().len();
+        m.effects.set(*e, &p[k..k + n]);
+        k += n;
+    }
+    if fits_roll(kinds) {
+        m.roll.frequency = p[k];
+        m.roll.damping = p[k + 1];
+    }
+    m
+}

@@ -60,6 +60,17 @@ macro_rules! tyre_models {
                 }
             }
 
+            /// Visitor `v`'s answer from the model's generic lateral force
+            /// ([`MaybeLateralForceOf`]): `None` for a model without one and
+            /// for a model registered at run time (a trait object cannot
+            /// take a generic method).
+            pub(super) fn visit_lateral<V: LateralVisitor>(&self, v: V) -> Option<V::Output> {
+                match self {
+                    $( Tyre::$variant(t) => Borrow::<$model>::borrow(t).visit_lateral(v), )*
+                    Tyre::Registered(_) => None,
+                }
+            }
+
             /// [`TyreModel::lateral_force_per_load`] of the model, directly.
             pub(super) fn lateral_force_per_load_direct(&self, s: &SlipState) -> Option<f64> {
                 match self {

@@ -1,7 +1,8 @@
 //! The macro that expands the registry's one list of models (`registry.rs`)
 //! into everything that must name each model in code: the [`super::Tyre`]
 //! enum (a variant per model, plus one for models registered at run time),
-//! its dispatch to the model (`as_model`, the hot-loop lateral force), its
+//! its dispatch to the model (`as_model`, the hot-loop lateral force, the
+//! generic lateral force's visitor `visit_lateral`), its
 //! `Serialize` (the model's fields behind its `model` key), the built-in
 //! registry entries and the `ModelName` constants. Nothing here is written
 //! per model: a new model is a line of the list.

@@ -1,6 +1,8 @@
 //! Identification speed: a PAC89 lateral fit (PSO + Levenberg–Marquardt) on
 //! Zhang & Li's (2017) three loads × 85 points (the target: under 2 s on one
-//! core), and the cost of one objective evaluation. And
+//! core), and the cost of one objective evaluation; the same fit with the
+//! polish's Jacobian exact (dual numbers) and by forward differences, back
+//! to back, for their ratio. And
 //! `identify --model mf61` on the Hoosier rig file (`mf61_hoosier_rig`:
 //! 59,965 samples over every pressure and camber, Wei et al.'s (2010)
 //! staged fit), read from the data folder beside the checkout: skipped,
@@ -8,7 +10,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::identify::data::identification_conditions;
-use handling::identify::{fit_lateral, FitProblem, FitSettings};
+use handling::identify::{fit_lateral, Derivatives, FitProblem, FitSettings};
 use handling::jobs::identify::{self as job, IdentifyModel, Options, Polish, StartArg};
 use handling::optim::local::Residuals;
 use handling::tyre::{Pac89, Parameterised, Tyre};
@@ -33,6 +35,21 @@ fn pac89_fit(c: &mut Criterion) {
     g.bench_function("pac89_lateral_fit_3x85_one_core", |b| {
         b.iter(|| fit_lateral(black_box(&start), &data, &settings).unwrap())
     });
+    for (id, derivatives) in [
+        ("pac89_lateral_fit_exact_jacobian", Derivatives::Exact),
+        (
+            "pac89_lateral_fit_difference_jacobian",
+            Derivatives::Differences,
+        ),
+    ] {
+        let settings = FitSettings {
+            derivatives,
+            ..settings
+        };
+        g.bench_function(id, |b| {
+            b.iter(|| fit_lateral(black_box(&start), &data, &settings).unwrap())
+        });
+    }
     let free = start.lateral_free(3, 1);
     let problem = FitProblem::new(&start, &free, &data);
     let p: Vec<f64> = start

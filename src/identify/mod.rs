@@ -14,103 +14,28 @@
 //! their start values
 //! ([`crate::tyre::Tyre::lateral_free`]). Units: SI inside; the models'
 //! own units stay in their files.
+//!
+//! The least-squares problem (`problem.rs`): the lateral force's Jacobian
+//! is exact, in dual numbers, for every model with a generic lateral force
+//! ([`Derivatives`]); the aligning and longitudinal blocks difference
+//! theirs.
 
 pub mod data;
 pub mod grouping;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
+mod problem;
+
+pub use problem::{Channel, Derivatives, FitProblem};
 
 use crate::error::{Error, FitError, OptionsError};
-use crate::optim::local::{jacobian, levenberg_marquardt, GaussNewton, Residuals};
+use crate::optim::local::{levenberg_marquardt, GaussNewton, Residuals};
 use crate::optim::{stats, Inertia, Pso};
-use crate::tyre::{Identification, ModelName, Parameterised, Tyre, TyreModel};
+use crate::tyre::{Identification, ModelName, Tyre};
 use data::Condition;
 use nalgebra::DMatrix;
 use serde::Serialize;
 use std::time::Instant;
-
-/// The measured quantity a fit matches.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Channel {
-    /// Lateral force Fy, N.
-    LateralForce,
-    /// Aligning moment Mz, N·m (with the lateral parameters held).
-    AligningMoment,
-    /// Longitudinal force Fx, N, on points whose slip column holds κ and
-    /// force column Fx ([`data::RigData::longitudinal_view`]).
-    LongitudinalForce,
-}
-
-impl Channel {
-    /// What the channel measures, for messages.
-    pub fn quantity(self) -> &'static str {
-        match self {
-            Channel::LateralForce => "lateral force",
-            Channel::AligningMoment => "aligning moment",
-            Channel::LongitudinalForce => "longitudinal force",
-        }
-    }
-
-    /// The measured value of a point.
-    pub fn measured(self, q: &data::Point) -> f64 {
-        match self {
-            Channel::LateralForce => q.fy(),
-            Channel::AligningMoment => q.mz(),
-            Channel::LongitudinalForce => q.fx(),
-        }
-    }
-
-    /// The model's value at a point.
-    pub fn model(self, t: &Tyre, q: &data::Point) -> f64 {
-        let s = q.slip_state();
-        match self {
-            Channel::LateralForce => t.lateral_force(&s),
-            Channel::AligningMoment => t.forces(&s).mz,
-            Channel::LongitudinalForce => t.forces(&s).fx,
-        }
-    }
-
-    fn names(self, t: &Tyre) -> Vec<String> {
-        match self {
-            Channel::LateralForce => t.parameter_names().iter().map(|n| n.to_string()).collect(),
-            Channel::AligningMoment => t.aligning_names(),
-            Channel::LongitudinalForce => t.longitudinal_names(),
-        }
-    }
-
-    fn parameters(self, t: &Tyre) -> Vec<f64> {
-        match self {
-            Channel::LateralForce => t.parameters(),
-            Channel::AligningMoment => t.aligning_parameters(),
-            Channel::LongitudinalForce => t.longitudinal_parameters(),
-        }
-    }
-
-    fn set(self, t: &mut Tyre, p: &[f64]) {
-        match self {
-            Channel::LateralForce => t.set_parameters(p),
-            Channel::AligningMoment => t.set_aligning_parameters(p),
-            Channel::LongitudinalForce => t.set_longitudinal_parameters(p),
-        }
-    }
-
-    fn bounds(self, t: &Tyre) -> Vec<(f64, f64)> {
-        match self {
-            Channel::LateralForce => t.bounds(),
-            Channel::AligningMoment => t.aligning_bounds(),
-            Channel::LongitudinalForce => t.longitudinal_bounds(),
-        }
-    }
-
-    fn free(self, t: &Tyre, loads: usize, cambers: usize) -> Vec<bool> {
-        match self {
-            Channel::LateralForce => t.lateral_free(loads, cambers),
-            Channel::AligningMoment => t.aligning_free(cambers),
-            Channel::LongitudinalForce => t.longitudinal_free(),
-        }
-    }
-}
 
 /// The local polish after PSO.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -131,6 +56,8 @@ pub struct FitSettings {
     pub pso: Pso,
     /// The polish.
     pub local: LocalMethod,
+    /// The Jacobian's derivatives.
+    pub derivatives: Derivatives,
 }
 
 impl FitSettings {
@@ -153,6 +80,7 @@ impl FitSettings {
                 ..Pso::default()
             },
             local: LocalMethod::LevenbergMarquardt,
+            derivatives: Derivatives::Exact,
         }
     }
 }
@@ -226,64 +154,6 @@ pub struct Fit {
     pub covariance: Option<nalgebra::DMatrix<f64>>,
 }
 
-/// The least-squares problem of one channel over the free parameters.
-pub struct FitProblem {
-    base: Tyre,
-    channel: Channel,
-    free: Vec<usize>,
-    points: Vec<data::Point>,
-}
-
-impl FitProblem {
-    /// The problem of fitting `start`'s free lateral-force parameters.
-    pub fn new(start: &Tyre, free: &[bool], conditions: &[Condition]) -> Self {
-        Self::for_channel(start, Channel::LateralForce, free, conditions)
-    }
-
-    /// The problem of fitting `start`'s free parameters of `channel` to the
-    /// points where that channel was measured.
-    pub(crate) fn for_channel(
-        start: &Tyre,
-        channel: Channel,
-        free: &[bool],
-        conditions: &[Condition],
-    ) -> Self {
-        Self {
-            base: start.clone(),
-            channel,
-            free: (0..free.len()).filter(|i| free[*i]).collect(),
-            points: conditions
-                .iter()
-                .flat_map(|c| c.points.iter().copied())
-                .filter(|q| channel.measured(q).is_finite())
-                .collect(),
-        }
-    }
-
-    /// The tyre with free parameters `p`.
-    pub fn tyre(&self, p: &[f64]) -> Tyre {
-        let mut full = self.channel.parameters(&self.base);
-        for (k, &i) in self.free.iter().enumerate() {
-            full[i] = p[k];
-        }
-        let mut t = self.base.clone();
-        self.channel.set(&mut t, &full);
-        t
-    }
-}
-
-impl Residuals for FitProblem {
-    fn count(&self) -> usize {
-        self.points.len()
-    }
-    fn residuals(&self, p: &[f64], out: &mut [f64]) {
-        let t = self.tyre(p);
-        for (o, q) in out.iter_mut().zip(&self.points) {
-            *o = self.channel.model(&t, q) - self.channel.measured(q);
-        }
-    }
-}
-
 /// σ (%) and RMS (N) of a tyre's lateral force on some points.
 pub fn sigma(t: &Tyre, points: &[data::Point]) -> (f64, f64) {
     sigma_of(Channel::LateralForce, t, points)
@@ -322,7 +192,8 @@ pub(crate) fn fit_channel(
 ) -> Result<Fit, Error> {
     let t0 = Instant::now();
     let free = free_parameters(start, channel, conditions)?;
-    let problem = FitProblem::for_channel(start, channel, &free, conditions);
+    let problem = FitProblem::for_channel(start, channel, &free, conditions)
+        .with_derivatives(settings.derivatives);
     if problem.count() <= problem.free.len() {
         return Err(FitError::TooFewPoints {
             points: problem.count(),
@@ -341,7 +212,8 @@ pub(crate) fn fit_channel(
     let mut res = vec![0.0; problem.count()];
     problem.residuals(&p, &mut res);
     let sum_squares: f64 = res.iter().map(|e| e * e).sum();
-    let covariance = stats::covariance(&jacobian(&problem, &p, &res), sum_squares);
+    let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
+    let covariance = stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares);
     let parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
     let curves = conditions
         .iter()

@@ -1,6 +1,6 @@
 use super::data::{Condition, RigPoint};
 use super::*;
-use crate::tyre::{Gim, MagicSimple, Pac89, UniTire};
+use crate::tyre::{Gim, MagicSimple, Pac89, Parameterised, UniTire};
 
 pub(crate) fn identification_data(truth: &Tyre, noise_seed: u64) -> (Vec<Condition>, f64) {
     super::data::identification_conditions(truth, 0.01, noise_seed)
@@ -261,4 +261,107 @@ fn zhang_li_claim_pso_below_5_5_and_hybrid_below_3_5_percent_per_curve() {
     assert!(worst(&a) < 5.5, "{}", worst(&a));
     assert!(worst(&b) < 3.5, "{}", worst(&b));
     assert!(b.sigma_percent <= a.sigma_percent);
+}
+
+/// The exact Jacobian of the lateral-force residuals (dual numbers)
+/// against fourth-order central differences of the residuals, column by
+/// column, to 1e-6 relative; the floor `1e-12·|F|/h` is the differences'
+/// own rounding (as in `tyre/derivative_tests.rs`). Every dual width is
+/// used: magic-simple's 3 free parameters (4), Gim's 4 (4), UniTire's 7
+/// (8), PAC89's 11 (12) and, on cambered points, its 14 (16).
+#[test]
+fn exact_jacobian_equals_central_differences_of_the_residuals() {
+    let mut problems: Vec<(Tyre, Vec<Condition>)> = cases()
+        .into_iter()
+        .map(|(truth, start)| (start, identification_data(&truth, 3).0))
+        .collect();
+    let linear = Tyre::Linear(crate::tyre::Linear::new(55_000.0));
+    problems.push((linear.clone(), identification_data(&linear, 3).0));
+    let pac = cases().swap_remove(3).1;
+    let mut cambered = identification_data(&pac, 3).0;
+    for (c, camber) in cambered.iter_mut().zip([2.0, -1.5, 0.0]) {
+        c.camber = f64::to_radians(camber);
+        c.points.iter_mut().for_each(|q| q.camber = c.camber);
+    }
+    problems.push((pac, cambered));
+    let mut widths = Vec::new();
+    for (start, data) in problems {
+        let cambers = 1 + usize::from(data[0].camber != 0.0);
+        let free = start.lateral_free(3, cambers);
+        let problem = FitProblem::new(&start, &free, &data);
+        let all = start.parameters();
+        let bounds = start.bounds();
+        let idx: Vec<usize> = (0..free.len()).filter(|i| free[*i]).collect();
+        let p: Vec<f64> = idx.iter().map(|&i| all[i]).collect();
+        let n = p.len();
+        assert_eq!(problem.jacobian_evaluations(n), 1, "{}", start.model_name());
+        widths.push(n);
+        let m = problem.count();
+        let residuals = |x: &[f64]| {
+            let mut r = vec![0.0; m];
+            problem.residuals(x, &mut r);
+            r
+        };
+        let r0 = residuals(&p);
+        let exact = problem.jacobian(&p, &r0, &vec![(f64::NEG_INFINITY, f64::INFINITY); n]);
+        let measured: Vec<f64> = data
+            .iter()
+            .flat_map(|c| c.points.iter().map(|q| q.fy()))
+            .collect();
+        for k in 0..n {
+            let (lo, hi) = bounds[idx[k]];
+            let h = 1e-3 * p[k].abs().max(0.1 * (hi - lo));
+            let at = |s: f64| {
+                let mut x = p.clone();
+                x[k] += s * h;
+                residuals(&x)
+            };
+            let (r1, r_1, r2, r_2) = (at(1.0), at(-1.0), at(2.0), at(-2.0));
+            for i in 0..m {
+                let central = (8.0 * (r1[i] - r_1[i]) - (r2[i] - r_2[i])) / (12.0 * h);
+                let f = r0[i] + measured[i];
+                let tolerance = 1e-6 * exact[(i, k)].abs() + 1e-12 * f.abs() / h;
+                assert!(
+                    (exact[(i, k)] - central).abs() <= tolerance,
+                    "{} column {k} row {i}: {} vs {central}",
+                    start.model_name(),
+                    exact[(i, k)]
+                );
+            }
+        }
+    }
+    assert_eq!(widths, [4, 3, 7, 11, 1, 14]);
+}
+
+/// The same PAC89 fit with the exact Jacobian and with differences: both
+/// reach the noise, at the same parameters within a tenth of their
+/// standard errors, and the exact one evaluates the data fewer times.
+#[test]
+fn exact_and_difference_jacobians_reach_the_same_fit() {
+    let (truth, start) = cases().swap_remove(3);
+    let (data, noise) = identification_data(&truth, 5);
+    let fit = |derivatives| {
+        let settings = FitSettings {
+            derivatives,
+            ..FitSettings::new(3)
+        };
+        fit_lateral(&start, &data, &settings).unwrap()
+    };
+    let exact = fit(Derivatives::Exact);
+    let differences = fit(Derivatives::Differences);
+    for f in [&exact, &differences] {
+        assert!(f.sigma_percent <= noise, "σ {} vs {noise}", f.sigma_percent);
+    }
+    for (e, d) in exact.parameters.iter().zip(&differences.parameters) {
+        if let Some(se) = e.std_error {
+            assert!((e.value - d.value).abs() <= 0.1 * se, "{e:?} vs {d:?}");
+        }
+        assert_eq!(e.free, d.free);
+    }
+    assert!(
+        exact.evaluations < differences.evaluations,
+        "{} vs {}",
+        exact.evaluations,
+        differences.evaluations
+    );
 }

@@ -3,10 +3,99 @@
 //! [`Tyre::as_model_mut`]; only the lateral force, the vehicle's hot loop,
 //! calls each model's override directly. The enum, those dispatches and its
 //! serde come from the registry's list (`registry.rs`); nothing here names
-//! a model. Units and signs are those of `tyre/mod.rs`.
+//! a model. The generic lateral force and friction coefficient
+//! ([`LateralForceOf`], in dual numbers for exact derivatives) go to the
+//! model through a visitor ([`LateralVisitor`]): `None` for a model
+//! without them. Units and signs are those of `tyre/mod.rs`.
 
-use super::{Block, Parameterised, PointForces, SlipState, Tyre, TyreForces, TyreModel};
+use super::{
+    Block, LateralForceOf, LateralVisitor, Parameterised, PointForces, SlipOf, SlipState, Tyre,
+    TyreForces, TyreModel,
+};
 use crate::error::ParamError;
+use num_dual::DualNum;
+
+/// The lateral force at a slip state and a camber (rad, plain).
+struct LateralForceAt<'a, T> {
+    p: &'a [T],
+    s: &'a SlipOf<T>,
+    camber: f64,
+}
+
+impl<T: DualNum<f64> + Copy> LateralVisitor for LateralForceAt<'_, T> {
+    type Output = T;
+    fn visit<M: LateralForceOf>(self, m: &M) -> T {
+        m.lateral_force_at_camber_of(self.p, self.s, self.camber)
+    }
+}
+
+/// The friction coefficient at a load and a friction scale.
+struct FrictionAt<'a, T> {
+    p: &'a [T],
+    fz: T,
+    mu_scale: T,
+}
+
+impl<T: DualNum<f64> + Copy> LateralVisitor for FrictionAt<'_, T> {
+    type Output = T;
+    fn visit<M: LateralForceOf>(self, m: &M) -> T {
+        m.friction_coefficient_of(self.p, self.fz, self.mu_scale)
+    }
+}
+
+/// The parameter vector the generic methods take.
+struct LateralParameters;
+
+impl LateralVisitor for LateralParameters {
+    type Output = Vec<f64>;
+    fn visit<M: LateralForceOf>(self, m: &M) -> Vec<f64> {
+        m.parameters()
+    }
+}
+
+/// What the vehicle model and the rig fits need in any scalar of
+/// `num-dual` (dual numbers carry exact derivatives): each model's
+/// [`LateralForceOf`]. `None` for a model without a generic lateral force
+/// (the Magic Formula, for now) and for a model registered at run time (a
+/// trait object cannot take a generic method).
+impl Tyre {
+    /// The pure-slip lateral force (no camber, no longitudinal slip), N,
+    /// at `s` with lateral parameters `p` ([`Tyre::lateral_parameters`]'s
+    /// order): in `f64` [`TyreModel::lateral_force`] of `s.value()`.
+    pub fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> Option<T> {
+        self.lateral_force_at_camber_of(p, s, 0.0)
+    }
+
+    /// [`Tyre::lateral_force_of`] at inclination `camber` (rad, no
+    /// derivative taken in it): a rig fit's cambered points.
+    pub(crate) fn lateral_force_at_camber_of<T: DualNum<f64> + Copy>(
+        &self,
+        p: &[T],
+        s: &SlipOf<T>,
+        camber: f64,
+    ) -> Option<T> {
+        self.visit_lateral(LateralForceAt { p, s, camber })
+    }
+
+    /// The radius of the friction circle per unit load
+    /// ([`TyreModel::friction_coefficient`]) at load `fz` and friction
+    /// scale `mu_scale`, with lateral parameters `p`.
+    pub fn friction_coefficient_of<T: DualNum<f64> + Copy>(
+        &self,
+        p: &[T],
+        fz: T,
+        mu_scale: T,
+    ) -> Option<T> {
+        self.visit_lateral(FrictionAt { p, fz, mu_scale })
+    }
+
+    /// The parameters [`Tyre::lateral_force_of`] and
+    /// [`Tyre::friction_coefficient_of`] take, in order (the model's
+    /// [`Parameterised`] vector); `None` where those are `None`.
+    pub fn lateral_parameters(&self) -> Option<Vec<f64>> {
+        self.visit_lateral(LateralParameters)
+    }
+}
 
 impl Tyre {
     /// The `model` key of this tyre.

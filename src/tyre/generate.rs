@@ -1,7 +1,8 @@
 //! The macro that expands the registry's one list of models (`registry.rs`)
 //! into everything that must name each model in code: the [`super::Tyre`]
 //! enum (a variant per model, plus one for models registered at run time),
-//! its dispatch to the model (`as_model`, the hot-loop lateral force), its
+//! its dispatch to the model (`as_model`, the hot-loop lateral force, the
+//! generic lateral force's visitor `visit_lateral`), its
 //! `Serialize` (the model's fields behind its `model` key), the built-in
 //! registry entries and the `ModelName` constants. Nothing here is written
 //! per model: a new model is a line of the list.
@@ -57,6 +58,17 @@ macro_rules! tyre_models {
                 match self {
                     $( Tyre::$variant(t) => Borrow::<$model>::borrow(t).lateral_force(s), )*
                     Tyre::Registered(t) => t.as_model().lateral_force(s),
+                }
+            }
+
+            /// Visitor `v`'s answer from the model's generic lateral force
+            /// ([`MaybeLateralForceOf`]): `None` for a model without one and
+            /// for a model registered at run time (a trait object cannot
+            /// take a generic method).
+            pub(super) fn visit_lateral<V: LateralVisitor>(&self, v: V) -> Option<V::Output> {
+                match self {
+                    $( Tyre::$variant(t) => Borrow::<$model>::borrow(t).visit_lateral(v), )*
+                    Tyre::Registered(_) => None,
                 }
             }
 

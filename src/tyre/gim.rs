@@ -183,6 +183,10 @@ impl LateralForceOf for Gim {
         }
         mu * s.fz * (-(ln * ln * ln) + 1.0) * t.signum()
     }
+    /// `μ0·μ`, as [`TyreModel::friction_coefficient`].
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], _fz: T, mu_scale: T) -> T {
+        p[2] * mu_scale
+    }
 }
 
 impl ModelParameters for Gim {

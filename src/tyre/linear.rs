@@ -88,6 +88,10 @@ impl LateralForceOf for Linear {
             p[0] * s.alpha
         }
     }
+    /// No friction limit: infinite, with zero derivatives.
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, _p: &[T], _fz: T, _mu_scale: T) -> T {
+        T::from(f64::INFINITY)
+    }
 }
 
 impl ModelParameters for Linear {

@@ -99,6 +99,10 @@ impl LateralForceOf for MagicSimple {
         let (b, c, d) = (p[0], p[1], p[2]);
         d * s.mu_scale * s.fz * (c * (b * s.alpha).atan()).sin()
     }
+    /// `D·μ`, as [`TyreModel::friction_coefficient`].
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], _fz: T, mu_scale: T) -> T {
+        p[2] * mu_scale
+    }
 }
 
 impl ModelParameters for MagicSimple {

@@ -250,6 +250,52 @@ impl<T: DualNum<f64> + Copy> SlipOf<T> {
 pub trait LateralForceOf: Parameterised {
     /// The lateral force at `s` with parameters `p`, N.
     fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T;
+
+    /// [`TyreModel::friction_coefficient`] in any scalar, with parameters
+    /// `p`: the radius of the friction circle per unit load at load `fz`
+    /// and friction scale `mu_scale` (the same closed form, the same
+    /// arithmetic).
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], fz: T, mu_scale: T) -> T;
+
+    /// [`LateralForceOf::lateral_force_of`] at inclination `camber` (rad,
+    /// a plain number: no derivative is taken in it), as
+    /// [`TyreModel::lateral_force`] of the same slip state with that
+    /// camber: what a rig fit on cambered points differentiates. By
+    /// default the force does not read camber; a model whose force does
+    /// (PAC89) overrides it.
+    fn lateral_force_at_camber_of<T: DualNum<f64> + Copy>(
+        &self,
+        p: &[T],
+        s: &SlipOf<T>,
+        camber: f64,
+    ) -> T {
+        let _ = camber;
+        self.lateral_force_of(p, s)
+    }
+}
+
+/// What [`Tyre`]'s generic methods ask of one model's [`LateralForceOf`]
+/// (a trait object cannot take a generic method, so each question is a
+/// visitor the registry's dispatch hands the model).
+pub(crate) trait LateralVisitor {
+    /// The answer.
+    type Output;
+    /// The answer of model `m`.
+    fn visit<M: LateralForceOf>(self, m: &M) -> Self::Output;
+}
+
+/// A model that may have a generic lateral force: every [`LateralForceOf`]
+/// model has (`Some`); a model without one says so by its own `None` impl
+/// (next to the registry's list).
+pub(crate) trait MaybeLateralForceOf {
+    /// Visitor `v`'s answer, `None` without a generic lateral force.
+    fn visit_lateral<V: LateralVisitor>(&self, v: V) -> Option<V::Output>;
+}
+
+impl<M: LateralForceOf> MaybeLateralForceOf for M {
+    fn visit_lateral<V: LateralVisitor>(&self, v: V) -> Option<V::Output> {
+        Some(v.visit(self))
+    }
 }
 
 /// A named, bounded parameter vector: what identification works on.

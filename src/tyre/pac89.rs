@@ -22,8 +22,12 @@
 //! peak follows μ while the cornering stiffness BCD stays (a tyre's stiffness
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
-use super::{Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel};
+use super::{
+    Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces,
+    TyreModel,
+};
 use crate::error::{ParamError, ParamReason};
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// Which coefficient numbering a PAC89 file uses.
@@ -91,21 +95,30 @@ pub fn magic_formula(b: f64, c: f64, d: f64, e: f64, x: f64) -> f64 {
     d * (c * (bx - e * (bx - bx.atan())).atan()).sin()
 }
 
-/// Coefficients of one Magic Formula curve at a given load and camber.
+/// [`magic_formula`] in any scalar of `num-dual` (the same arithmetic).
+#[inline]
+fn magic_formula_of<T: DualNum<f64> + Copy>(b: T, c: T, d: T, e: T, x: T) -> T {
+    let bx = b * x;
+    d * (c * (bx - e * (bx - bx.atan())).atan()).sin()
+}
+
+/// Coefficients of one Magic Formula curve at a given load and camber (in
+/// plain numbers, or in a scalar of `num-dual` for the lateral curve's
+/// derivatives).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CurveCoefficients {
+pub struct CurveCoefficients<T = f64> {
     /// Stiffness factor B (per degree or per percent).
-    pub b: f64,
+    pub b: T,
     /// Shape factor C.
-    pub c: f64,
+    pub c: T,
     /// Peak value D (N or N·m).
-    pub d: f64,
+    pub d: T,
     /// Curvature factor E.
-    pub e: f64,
+    pub e: T,
     /// Horizontal shift (degrees or percent).
-    pub sh: f64,
+    pub sh: T,
     /// Vertical shift (N or N·m).
-    pub sv: f64,
+    pub sv: T,
 }
 
 impl CurveCoefficients {
@@ -116,12 +129,48 @@ impl CurveCoefficients {
 }
 
 /// B = BCD/(C·D) without 0/0 at vanishing load.
-fn stiffness_factor(bcd: f64, c: f64, d: f64) -> f64 {
+fn stiffness_factor<T: DualNum<f64> + Copy>(bcd: T, c: T, d: T) -> T {
     let cd = c * d;
     if cd.abs() < 1e-12 {
-        0.0
+        T::from(0.0)
     } else {
         bcd / cd
+    }
+}
+
+/// The lateral curve of coefficients `a` (a0..a13) at `fz_kn` (kN) and
+/// camber `gamma_deg` (degrees), raw units, in any scalar of `num-dual`:
+/// [`Pac89::lateral_curve`] is this in plain numbers. `1 − x` is written
+/// `−x + 1` (a dual number takes a plain one on its right only): the same
+/// rounding.
+fn lateral_curve_of<T: DualNum<f64> + Copy>(
+    a: &[T],
+    fz_kn: T,
+    gamma_deg: f64,
+) -> CurveCoefficients<T> {
+    let c = a[0];
+    let d = a[1] * fz_kn * fz_kn + a[2] * fz_kn;
+    // sin(2·atan z) = 2z/(1 + z²): the same value without two
+    // transcendental calls in the hot loop.
+    let z = fz_kn / a[4];
+    let bcd = a[3] * (z * 2.0 / (z * z + 1.0)) * (-(a[5] * gamma_deg.abs()) + 1.0);
+    CurveCoefficients {
+        b: stiffness_factor(bcd, c, d),
+        c,
+        d,
+        e: a[6] * fz_kn + a[7],
+        sh: a[8] * gamma_deg + a[9] * fz_kn + a[10],
+        sv: a[11] * fz_kn * gamma_deg + a[12] * fz_kn + a[13],
+    }
+}
+
+/// [`Pac89::scaled`] in any scalar: the lateral force of a curve at input
+/// `x` (degrees) with friction scale `mu` (none unless `mu > 0`).
+fn scaled_of<T: DualNum<f64> + Copy>(curve: CurveCoefficients<T>, mu: T, x: T) -> T {
+    if mu.re() > 0.0 {
+        magic_formula_of(curve.b / mu, curve.c, curve.d * mu, curve.e, x + curve.sh) + curve.sv * mu
+    } else {
+        T::from(0.0)
     }
 }
 
@@ -138,21 +187,7 @@ impl Pac89 {
 
     /// Lateral curve at `fz_kn` (kN) and camber `gamma_deg` (degrees), raw units.
     pub(crate) fn lateral_curve(&self, fz_kn: f64, gamma_deg: f64) -> CurveCoefficients {
-        let a = &self.a;
-        let c = a[0];
-        let d = a[1] * fz_kn * fz_kn + a[2] * fz_kn;
-        // sin(2·atan z) = 2z/(1 + z²): the same value without two
-        // transcendental calls in the hot loop.
-        let z = fz_kn / a[4];
-        let bcd = a[3] * (2.0 * z / (1.0 + z * z)) * (1.0 - a[5] * gamma_deg.abs());
-        CurveCoefficients {
-            b: stiffness_factor(bcd, c, d),
-            c,
-            d,
-            e: a[6] * fz_kn + a[7],
-            sh: a[8] * gamma_deg + a[9] * fz_kn + a[10],
-            sv: a[11] * fz_kn * gamma_deg + a[12] * fz_kn + a[13],
-        }
+        lateral_curve_of(&self.a, fz_kn, gamma_deg)
     }
 
     /// Longitudinal curve at `fz_kn` (kN), raw units (x in percent).
@@ -306,6 +341,36 @@ impl TyreModel for Pac89 {
             s.mu_scale,
             s.alpha.to_degrees(),
         )
+    }
+}
+
+/// The lateral force in any scalar: [`lateral_curve_of`] and [`scaled_of`],
+/// the arithmetic of [`TyreModel::lateral_force`] (bit for bit in `f64`);
+/// the slip angle in degrees as `α·(180/π)`, as `f64::to_degrees` takes it.
+impl LateralForceOf for Pac89 {
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        self.lateral_force_at_camber_of(p, s, 0.0)
+    }
+    /// `(|D| + |Sv|)·μ/Fz` at zero camber, as
+    /// [`TyreModel::friction_coefficient`].
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], fz: T, mu_scale: T) -> T {
+        if fz <= 0.0 {
+            return T::from(0.0);
+        }
+        let curve = lateral_curve_of(p, fz / 1000.0, 0.0);
+        (curve.d.abs() + curve.sv.abs()) * mu_scale / fz
+    }
+    fn lateral_force_at_camber_of<T: DualNum<f64> + Copy>(
+        &self,
+        p: &[T],
+        s: &SlipOf<T>,
+        camber: f64,
+    ) -> T {
+        if s.fz <= 0.0 {
+            return T::from(0.0);
+        }
+        let curve = lateral_curve_of(p, s.fz / 1000.0, camber.to_degrees());
+        scaled_of(curve, s.mu_scale, s.alpha * 1f64.to_degrees())
     }
 }
 

@@ -12,8 +12,8 @@
 use super::erased::{Buffered, Erased, Tagged};
 use super::generate::tyre_models;
 use super::{
-    Gim, Identification, Linear, MagicFormula, MagicSimple, Model, ModelName, ModelParameters,
-    Pac89, SlipState, TyreModel, UniTire,
+    Gim, Identification, LateralVisitor, Linear, MagicFormula, MagicSimple, MaybeLateralForceOf,
+    Model, ModelName, ModelParameters, Pac89, SlipState, TyreModel, UniTire,
 };
 use crate::error::{Error, NameKind, OptionsError};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
@@ -40,6 +40,16 @@ tyre_models! {
     Linear(Linear),
     /// Magic Formula 5.2/6.1/6.2, usually read from a `.tir` file.
     MagicFormula(MagicFormula, boxed),
+}
+
+/// The Magic Formula has no [`super::LateralForceOf`] yet: [`Tyre`]'s
+/// generic lateral force, friction coefficient and lateral parameters are
+/// `None` for it. When it implements the trait, this impl goes (the
+/// blanket one then answers for it; the compiler refuses both).
+impl MaybeLateralForceOf for MagicFormula {
+    fn visit_lateral<V: LateralVisitor>(&self, _v: V) -> Option<V::Output> {
+        None
+    }
 }
 
 /// A model as the registry holds it, its type erased: its name, how it is

@@ -3,7 +3,7 @@
 use super::*;
 use approx::assert_relative_eq;
 
-fn all_models() -> Vec<Tyre> {
+pub(crate) fn all_models() -> Vec<Tyre> {
     vec![
         Tyre::Gim(Gim::new(60_000.0, 0.18, 1.0)),
         Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),

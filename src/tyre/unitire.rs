@@ -20,9 +20,11 @@
 //! The road friction scales the final μ. Odd in α and in Sx.
 
 use super::{
-    safe_tan, Block, Model, ModelParameters, Parameterised, SlipState, TyreForces, TyreModel,
+    safe_tan, safe_tan_of, Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
+    SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// Ten parameters of one direction (Zhang & Li's (2017) a1..a10 or b1..b10).
@@ -71,28 +73,54 @@ pub struct UniTire {
 
 /// Dimensionless UniTire force F̄(φ, E), odd in φ.
 pub(crate) fn dimensionless_force(phi: f64, e: f64) -> f64 {
+    dimensionless_force_of(phi, e)
+}
+
+// The laws of one direction in any scalar of `num-dual`, with its ten
+// parameters `p` as scalars too: the plain methods of `UniTireLateral` are
+// these at `f64`, so the generic lateral force has their arithmetic. `1 − x`
+// is written `−x + 1` (a dual number takes a plain one on its right only):
+// the same rounding.
+
+/// [`dimensionless_force`]: `F̄·sgn φ` (F̄ ≥ 0, so `copysign`'s value).
+fn dimensionless_force_of<T: DualNum<f64> + Copy>(phi: T, e: T) -> T {
     let a = phi.abs();
-    let f = 1.0 - (-a - e * a * a - (e * e + 1.0 / 12.0) * a * a * a).exp();
-    f.copysign(phi)
+    let f = -((-a - e * a * a - (e * e + 1.0 / 12.0) * a * a * a).exp()) + 1.0;
+    f * phi.signum()
+}
+
+/// [`UniTireLateral::curvature`].
+fn curvature_of<T: DualNum<f64> + Copy>(p: &[T], fzn: T) -> T {
+    p[0] * 0.5 * (-(fzn / p[1]).powi(2)).exp() + 0.5
+}
+
+/// [`UniTireLateral::stiffness`].
+fn stiffness_of<T: DualNum<f64> + Copy>(p: &[T], fz: T, fzn: T) -> T {
+    fz * (p[2] + p[3] * fzn + p[4] * fzn * fzn)
+}
+
+/// [`UniTireLateral::friction`].
+fn friction_of<T: DualNum<f64> + Copy>(p: &[T], fzn: T, vs: T) -> T {
+    let mu0 = p[5] * (-fzn / p[6]).exp();
+    let mus = p[7] * mu0;
+    let muh = p[8] * mu0;
+    let vsm = p[9] * mu0;
+    let l = (vs / vsm + (-vs / vsm).exp()).ln();
+    mus + (mu0 - mus) * (-muh * muh * l * l).exp()
 }
 
 impl UniTireLateral {
     /// Curvature factor E at normalised load.
     pub(crate) fn curvature(&self, fzn: f64) -> f64 {
-        0.5 + 0.5 * self.p[0] * (-(fzn / self.p[1]).powi(2)).exp()
+        curvature_of(&self.p, fzn)
     }
     /// Slip stiffness K, N per unit slip.
     pub fn stiffness(&self, fz: f64, fzn: f64) -> f64 {
-        fz * (self.p[2] + self.p[3] * fzn + self.p[4] * fzn * fzn)
+        stiffness_of(&self.p, fz, fzn)
     }
     /// Friction coefficient at sliding speed `vs` (m/s).
     pub fn friction(&self, fzn: f64, vs: f64) -> f64 {
-        let mu0 = self.p[5] * (-fzn / self.p[6]).exp();
-        let mus = self.p[7] * mu0;
-        let muh = self.p[8] * mu0;
-        let vsm = self.p[9] * mu0;
-        let l = (vs / vsm + (-vs / vsm).exp()).ln();
-        mus + (mu0 - mus) * (-muh * muh * l * l).exp()
+        friction_of(&self.p, fzn, vs)
     }
     pub(crate) fn scale_stiffness(&mut self, k: f64) {
         self.p[2] *= k;
@@ -204,6 +232,30 @@ impl TyreModel for UniTire {
             return 0.0;
         }
         self.lateral.stiffness(fz, fz / self.rated_load)
+    }
+}
+
+/// [`UniTire`]'s cornering force in any scalar: [`UniTireLateral::force`]
+/// at `tan α` and the sliding speed `V·|sin α|`, through the same laws.
+impl LateralForceOf for UniTire {
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        let zero = T::from(0.0);
+        if s.fz <= 0.0 {
+            return zero;
+        }
+        let vs = s.alpha.sin().abs() * s.speed.abs();
+        let fzn = s.fz / self.rated_load;
+        let mu = friction_of(p, fzn, vs) * s.mu_scale;
+        if mu <= 0.0 {
+            return zero;
+        }
+        let phi = stiffness_of(p, s.fz, fzn) * safe_tan_of(s.alpha) / (mu * s.fz);
+        dimensionless_force_of(phi, curvature_of(p, fzn)) * mu * s.fz
+    }
+    /// μ0 at no sliding times the scale, as
+    /// [`TyreModel::friction_coefficient`].
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], fz: T, mu_scale: T) -> T {
+        friction_of(p, fz / self.rated_load, T::from(0.0)) * mu_scale
     }
 }
 

@@ -102,7 +102,7 @@ impl<const N: usize> Scalar for DualSVec64<N> {
         if self.is_constant() || k >= N {
             0.0
         } else {
-            self.eps.clone().unwrap_generic(Const::<N>, U1)[k]
+            self.eps.unwrap_generic(Const::<N>, U1)[k]
         }
     }
     fn variable(re: f64, k: usize) -> Self {

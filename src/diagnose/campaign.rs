@@ -9,6 +9,7 @@ use super::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
 use crate::measured::clean::{CleaningReport, DEFAULT_MIN_SPEED};
 use crate::measured::MeasuredRun;
+use crate::optim::local::Derivatives;
 use crate::tyre::{ModelName, Tyre};
 use crate::vehicle::Vehicle;
 use serde::Deserialize;
@@ -39,6 +40,11 @@ pub struct DiagnoseSettings {
     /// fit on all runs removes too little of the gap to pass on held-out
     /// runs is not refitted fold by fold (it is listed as screened).
     pub screening: bool,
+    /// How the fits take their Jacobians: forward differences (the
+    /// default: one replay per parameter) or exact (one replay in dual
+    /// numbers, which on this model costs more than the differences of up
+    /// to about 14 parameters; see the book's benchmarks chapter).
+    pub derivatives: Derivatives,
 }
 
 impl Default for DiagnoseSettings {
@@ -53,6 +59,7 @@ impl Default for DiagnoseSettings {
             iterations: 12,
             min_speed: DEFAULT_MIN_SPEED,
             screening: true,
+            derivatives: Derivatives::Differences,
         }
     }
 }

@@ -19,7 +19,7 @@ use super::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
-use crate::optim::local::Residuals;
+use crate::optim::local::{Derivatives, Residuals};
 use crate::optim::stats::covariance;
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
@@ -211,8 +211,9 @@ pub(super) fn base_models(
             ))
         }
         BaseTyres::FromRuns => {
+            let d = c.settings.derivatives;
             let (bases, described) =
-                axles_from_runs(runs, folds, (scales_hint, nominal_share), make, timing);
+                axles_from_runs(runs, folds, (scales_hint, nominal_share), (make, d), timing);
             Ok((bases, described, None))
         }
     }
@@ -237,7 +238,7 @@ fn axles_from_runs(
     runs: &[Prepared],
     folds: &[Vec<usize>],
     (scales_hint, nominal_share): ([f64; 3], f64),
-    make: impl Fn(Tyre, Tyre) -> Augmented + Sync,
+    (make, derivatives): (impl Fn(Tyre, Tyre) -> Augmented + Sync, Derivatives),
     timing: Option<&Recorder>,
 ) -> (Bases, String) {
     let build = |p: &[f64]| {
@@ -252,7 +253,7 @@ fn axles_from_runs(
         scales_hint,
         AXLE_BOUNDS.to_vec(),
     )
-    .with_layout(layout.clone());
+    .with_layout(layout.clone(), derivatives);
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
@@ -283,7 +284,7 @@ fn axles_from_runs(
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             )
-            .with_layout(layout.clone());
+            .with_layout(layout.clone(), derivatives);
             let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
             if let (Some(rec), Some(st)) = (timing, &stamps) {
                 rec.add(Phase::BaseFolds, t0.elapsed(), st.count());

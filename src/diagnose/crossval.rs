@@ -15,7 +15,7 @@ use super::problem::Problem;
 use super::refit::{refit, training_rows};
 use super::replay::Prepared;
 use super::timing::{record_polish, Phase, Recorder, Stamps};
-use crate::optim::local::Residuals;
+use crate::optim::local::{Derivatives, Residuals};
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -45,6 +45,8 @@ pub(super) struct Context<'a> {
     pub(super) progress: Option<&'a AtomicUsize>,
     /// Where the time goes, when the diagnosis is timed.
     pub(super) timing: Option<&'a Recorder>,
+    /// How the fits take their Jacobians.
+    pub(super) derivatives: Derivatives,
 }
 
 /// A candidate fitted on all runs, not yet cross-validated: its
@@ -141,7 +143,7 @@ impl<'a> Context<'a> {
             self.scales,
             s.bounds(),
         )
-        .with_layout(s.layout(&self.bases.all));
+        .with_layout(s.layout(&self.bases.all), self.derivatives);
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -204,7 +206,7 @@ impl<'a> Context<'a> {
                     self.scales,
                     s.bounds(),
                 )
-                .with_layout(s.layout(base));
+                .with_layout(s.layout(base), self.derivatives);
                 let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
                 let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
                 let mut e = ChannelErrors::default();

@@ -350,6 +350,7 @@ fn run(
         pso,
         progress,
         timing,
+        derivatives: c.settings.derivatives,
     };
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);

@@ -13,7 +13,7 @@
 use super::layout::Layout;
 use super::model::Augmented;
 use super::replay::{LastReplay, Prepared};
-use crate::optim::local::{inward_jacobian, Residuals};
+use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
 use nalgebra::DMatrix;
 use std::sync::Mutex;
 
@@ -59,12 +59,15 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
         }
     }
 
-    /// The same problem with exact derivatives: `layout` says what the
-    /// parameters set (its [`Layout::build`] must be `build`), and the
-    /// Jacobian comes from one replay of each run in dual numbers
-    /// ([`super::tangent`]) instead of one per parameter.
-    pub fn with_layout(mut self, layout: Layout) -> Self {
-        self.layout = Some(layout);
+    /// The same problem with exact derivatives when `derivatives` asks
+    /// for them: `layout` says what the parameters set (its
+    /// [`Layout::build`] must be `build`), and the Jacobian comes from one
+    /// replay of each run in dual numbers ([`super::tangent`]) instead of
+    /// one per parameter.
+    pub fn with_layout(mut self, layout: Layout, derivatives: Derivatives) -> Self {
+        if derivatives == Derivatives::Exact {
+            self.layout = Some(layout);
+        }
         self
     }
 

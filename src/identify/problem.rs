@@ -102,18 +102,7 @@ impl Channel {
     }
 }
 
-/// How a fit takes the Jacobian of its residuals (the polish's steps and
-/// the standard errors).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Derivatives {
-    /// Exact, in dual numbers, where the channel is the lateral force and
-    /// the model has a generic one; differences elsewhere.
-    #[default]
-    Exact,
-    /// Forward differences of the residuals everywhere.
-    Differences,
-}
+pub use crate::optim::local::Derivatives;
 
 /// The least-squares problem of one channel over the free parameters.
 pub struct FitProblem {

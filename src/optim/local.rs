@@ -11,6 +11,20 @@
 
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
+use serde::{Deserialize, Serialize};
+
+/// How a fit takes the Jacobian of its residuals (the polish's steps and
+/// the standard errors).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Derivatives {
+    /// Exact, in dual numbers, where the problem has them (the lateral
+    /// force of a rig fit, a diagnosis's replays); differences elsewhere.
+    #[default]
+    Exact,
+    /// Forward differences of the residuals everywhere.
+    Differences,
+}
 
 /// A least-squares problem: residuals of a parameter vector.
 pub trait Residuals: Sync {

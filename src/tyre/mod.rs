@@ -38,7 +38,6 @@
 mod dispatch;
 mod erased;
 mod generate;
-mod generic_tmp;
 mod gim;
 mod linear;
 mod magic_simple;
@@ -487,4 +486,4 @@ pub(crate) fn safe_tan_of<T: DualNum<f64> + Copy>(alpha: T) -> T {
 #[cfg(test)]
 mod derivative_tests;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

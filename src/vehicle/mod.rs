@@ -30,6 +30,7 @@
 //! Units: SI, rad. Speeds below `MIN_SPEED` are held at it, because the slip
 //! angles of a 2-DOF model are undefined at standstill.
 
+mod balance;
 mod effects;
 mod equilibrium;
 mod loads;

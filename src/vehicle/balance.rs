@@ -1,0 +1,359 @@
+//! The lateral force balance of one evaluation of the right-hand side
+//! ([`super::VehicleModel::rates`]): the axles' tyres at their slip angles
+//! on the wheel loads of a lateral acceleration, and the load-transfer
+//! loop that finds that acceleration (`ay = Y(ay)/m`, [`super::loads`]),
+//! with a compliant front axle's slip solved at every load. In a dual
+//! scalar ([`crate::scalar`]) both implicit solves run in plain numbers and
+//! are differentiated at their roots. Units: SI, rad; ISO 8855 signs.
+
+use super::loads::{solve_load_transfer, LoadSplit};
+use super::scalar::{off, ModelScalars, Scalar};
+use super::wheels::{AxleTyres, PlainTyres, FRONT, REAR};
+use super::{Inputs, Kinematics, LoadTransferSeed, VehicleModel, MIN_SPEED};
+
+/// What the load-transfer loop carries out of its last evaluation.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct AxleSolution<T> {
+    pub(crate) alpha_front: T,
+    pub(crate) fy_front: T,
+    pub(crate) fy_rear: T,
+    pub(crate) projection: T,
+    pub(crate) fz: [T; 4],
+}
+
+impl<T: Scalar> AxleSolution<T> {
+    /// [`Scalar::eliminate`] of every value.
+    fn eliminate(self, k: usize, x: T) -> Self {
+        Self {
+            alpha_front: self.alpha_front.eliminate(k, x),
+            fy_front: self.fy_front.eliminate(k, x),
+            fy_rear: self.fy_rear.eliminate(k, x),
+            projection: self.projection.eliminate(k, x),
+            fz: self.fz.map(|f| f.eliminate(k, x)),
+        }
+    }
+}
+
+/// An axle's tyre at a slip angle. A tyre whose force is proportional to
+/// its load ([`AxleTyres::per_load`]) is evaluated here once for both
+/// wheels and every load the load-transfer loop tries.
+#[derive(Debug, Clone, Copy)]
+struct AtSlip<T> {
+    axle: usize,
+    alpha: T,
+    per_load: Option<T>,
+}
+
+/// What every tyre evaluation of one right-hand side shares: road friction
+/// scale and speed.
+#[derive(Debug, Clone, Copy)]
+struct Road<T> {
+    mu: T,
+    speed: f64,
+}
+
+impl<T: Scalar> AtSlip<T> {
+    fn new(tyres: &impl AxleTyres<T>, axle: usize, alpha: T, road: Road<T>) -> Self {
+        Self {
+            axle,
+            alpha,
+            per_load: tyres.per_load(axle, alpha, road.mu, road.speed),
+        }
+    }
+
+    /// A wheel's lateral force at load `fz`.
+    fn wheel(&self, tyres: &impl AxleTyres<T>, fz: T, road: Road<T>) -> T {
+        match self.per_load {
+            Some(k) if fz > 0.0 => k * fz,
+            Some(_) => T::from(0.0),
+            None => tyres.wheel(self.axle, self.alpha, fz, road.mu, road.speed),
+        }
+    }
+
+    /// A wheel's lateral force with a longitudinal force `fx` taken from its
+    /// friction circle: `Fy0·√(1 − (Fx/(μ·Fz))²)`, zero once `fx` uses all
+    /// of it.
+    fn combined(&self, tyres: &impl AxleTyres<T>, fz: T, fx: T, road: Road<T>) -> T {
+        let fy0 = self.wheel(tyres, fz, road);
+        if off(fx) || off(fy0) {
+            return fy0;
+        }
+        let ratio = fx / (tyres.friction_coefficient(self.axle, fz, road.mu) * fz);
+        let left = T::from(1.0) - ratio * ratio;
+        if left.re() > 0.0 {
+            fy0 * left.sqrt()
+        } else {
+            fy0 * 0.0
+        }
+    }
+
+    /// Axle force on wheel loads `fz`, plus camber thrust `thrust` per
+    /// unit load (roll camber); with a longitudinal force `fx` per wheel
+    /// (combined slip), each wheel's force reduced on its friction circle.
+    fn axle(
+        &self,
+        tyres: &impl AxleTyres<T>,
+        fz: [T; 2],
+        thrust: T,
+        fx: Option<T>,
+        road: Road<T>,
+    ) -> T {
+        let y = match fx {
+            None => self.wheel(tyres, fz[0], road) + self.wheel(tyres, fz[1], road),
+            Some(fx) => {
+                self.combined(tyres, fz[0], fx, road) + self.combined(tyres, fz[1], fx, road)
+            }
+        };
+        if off(thrust) {
+            y
+        } else {
+            y + thrust * (fz[0] + fz[1])
+        }
+    }
+}
+
+/// The lateral force balance the load-transfer loop solves, with
+/// everything that does not depend on the loads evaluated once.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Balance<T> {
+    split: LoadSplit<T>,
+    /// The front tyre at its fixed slip angle (None: a compliant front,
+    /// whose slip depends on its force).
+    front_at: Option<AtSlip<T>>,
+    rear_at: AtSlip<T>,
+    alpha_front: T,
+    kin_front: T,
+    compliance: T,
+    steer: T,
+    scale_front: T,
+    thrust: [T; 2],
+    fx: Option<[T; 2]>,
+    fixed_projection: T,
+    inv_mass: f64,
+    road: Road<T>,
+    exact_kinematics: bool,
+    pub(super) transfer: bool,
+    directions: [usize; 2],
+}
+
+impl<T: Scalar> Balance<T> {
+    /// The values without their derivatives (the tyres' per-load factors
+    /// evaluated again in plain numbers).
+    fn re(&self, plain: &PlainTyres) -> Balance<f64> {
+        let re2 = |x: [T; 2]| [x[0].re(), x[1].re()];
+        let road = Road {
+            mu: self.road.mu.re(),
+            speed: self.road.speed,
+        };
+        let at = |a: &AtSlip<T>| AtSlip::new(plain, a.axle, a.alpha.re(), road);
+        Balance {
+            split: self.split.re(),
+            front_at: self.front_at.as_ref().map(at),
+            rear_at: at(&self.rear_at),
+            alpha_front: self.alpha_front.re(),
+            kin_front: self.kin_front.re(),
+            compliance: self.compliance.re(),
+            steer: self.steer.re(),
+            scale_front: self.scale_front.re(),
+            thrust: re2(self.thrust),
+            fx: self.fx.map(re2),
+            fixed_projection: self.fixed_projection.re(),
+            inv_mass: self.inv_mass,
+            road,
+            exact_kinematics: self.exact_kinematics,
+            transfer: self.transfer,
+            directions: self.directions,
+        }
+    }
+
+    /// The front axle's force with a compliant steer at slip angle `a`.
+    fn front_force(&self, tyres: &impl AxleTyres<T>, a: T, fz: [T; 2]) -> T {
+        let at = AtSlip::new(tyres, FRONT, self.scale_front * a, self.road);
+        let fx = self.fx.map(|f| f[0]);
+        at.axle(tyres, fz, self.thrust[0], fx, self.road)
+    }
+
+    /// The plain balance a compliant front's slip is solved in when `T`
+    /// carries derivatives (None otherwise).
+    pub(super) fn plain_if_compliant(&self, tyres: &impl AxleTyres<T>) -> Option<Balance<f64>> {
+        (!T::PLAIN && self.front_at.is_none()).then(|| self.re(&tyres.plain()))
+    }
+
+    /// The front slip angle and axle force on wheel loads `fz`; `re` the
+    /// plain balance a compliant front's slip is solved in when `T` carries
+    /// derivatives.
+    fn front(&self, tyres: &impl AxleTyres<T>, re: Option<&Balance<f64>>, fz: [T; 2]) -> (T, T) {
+        if let Some(at) = &self.front_at {
+            let fx = self.fx.map(|f| f[0]);
+            return (
+                self.alpha_front,
+                at.axle(tyres, fz, self.thrust[0], fx, self.road),
+            );
+        }
+        let (kin, c) = (self.kin_front, self.compliance);
+        let Some(re) = re else {
+            return compliant_slip(kin, c, |a: T| self.front_force(tyres, a, fz));
+        };
+        // The slip solved in plain numbers, then differentiated at its
+        // root: `α − α_kin + c·Fyf(α) = 0`.
+        let plain = tyres.plain();
+        let fz_re = [fz[0].re(), fz[1].re()];
+        let (root, _) = compliant_slip(re.kin_front, re.compliance, |a: f64| {
+            re.front_force(&plain, a, fz_re)
+        });
+        let k = self.directions[1];
+        let a = T::variable(root, k);
+        let f = self.front_force(tyres, a, fz);
+        let alpha = T::implicit(a, a - kin + c * f, k);
+        (alpha, f.eliminate(k, alpha))
+    }
+
+    /// `Y(ay)/m` and the axles at lateral acceleration `ay`.
+    pub(super) fn eval(
+        &self,
+        tyres: &impl AxleTyres<T>,
+        re: Option<&Balance<f64>>,
+        ay: T,
+    ) -> (T, AxleSolution<T>) {
+        let fz = self.split.at(ay);
+        let (alpha_front, fy_front) = self.front(tyres, re, [fz[0], fz[1]]);
+        let fx = self.fx.map(|f| f[1]);
+        let fy_rear = self
+            .rear_at
+            .axle(tyres, [fz[2], fz[3]], self.thrust[1], fx, self.road);
+        let projection = if off(self.compliance) {
+            self.fixed_projection
+        } else {
+            projection(
+                self.exact_kinematics,
+                self.steer - self.compliance * fy_front,
+            )
+        };
+        (
+            (fy_front * projection + fy_rear) * self.inv_mass,
+            AxleSolution {
+                alpha_front,
+                fy_front,
+                fy_rear,
+                projection,
+                fz,
+            },
+        )
+    }
+
+    /// The load-transfer loop solved from `seed` to `tolerance`: the
+    /// tyres' `Y/m`, the axles there and the evaluations made. In dual
+    /// numbers the loop runs in plain numbers and one evaluation at its
+    /// root, the lateral acceleration seeded in its direction, gives the
+    /// root's derivatives ([`Scalar::implicit`]).
+    pub(super) fn solve(
+        &self,
+        tyres: &impl AxleTyres<T>,
+        seed: &mut LoadTransferSeed,
+        tolerance: f64,
+    ) -> (T, AxleSolution<T>, u32) {
+        if T::PLAIN {
+            let (_, y, s, n) = solve_load_transfer(self.transfer, seed, tolerance, |ay| {
+                let (y, s) = self.eval(tyres, None, T::from(ay));
+                (y.re(), s)
+            });
+            return (T::from(y), s, n);
+        }
+        let plain = tyres.plain();
+        let re = self.re(&plain);
+        let (root, _, _, n) = solve_load_transfer(self.transfer, seed, tolerance, |ay| {
+            re.eval(&plain, None, ay)
+        });
+        if !self.transfer {
+            let (y, s) = self.eval(tyres, Some(&re), T::from(0.0));
+            return (y, s, n);
+        }
+        let k = self.directions[0];
+        let ay = T::variable(root, k);
+        let (y, s) = self.eval(tyres, Some(&re), ay);
+        let ay = T::implicit(ay, ay - y, k);
+        (y.eliminate(k, ay), s.eliminate(k, ay), n)
+    }
+}
+
+/// cos δ of the force projection (1 in the small-angle form).
+pub(super) fn projection<T: Scalar>(exact: bool, steer: T) -> T {
+    if exact {
+        steer.cos()
+    } else {
+        T::from(1.0)
+    }
+}
+
+impl VehicleModel {
+    /// The force balance of one right-hand side at road-wheel steer `steer`
+    /// and roll `phi`, with the front's lag state, its kinematic slip
+    /// angle and the rear slip angle.
+    pub(super) fn balance<T: Scalar>(
+        &self,
+        sc: &ModelScalars<T>,
+        tyres: &impl AxleTyres<T>,
+        inp: &Inputs,
+        (steer, phi): (T, T),
+        [lag_front, kin_front, alpha_rear]: [T; 3],
+    ) -> Balance<T> {
+        let lagged = sc.lagged();
+        let compliance = sc.steering_compliance;
+        let [scale_front, scale_rear] = sc.stiffness_scale;
+        let road = Road {
+            mu: sc.friction,
+            speed: inp.speed,
+        };
+        let u = inp.speed.max(MIN_SPEED);
+        // The slip angles the load-transfer loop holds fixed (all but a
+        // compliant front's), with their tyres evaluated once.
+        let alpha_front = if lagged { lag_front } else { kin_front };
+        let front_at = (lagged || off(compliance))
+            .then(|| AtSlip::new(tyres, FRONT, scale_front * alpha_front, road));
+        let exact_kinematics = self.options.kinematics == Kinematics::Exact;
+        Balance {
+            split: self.load_split_of(sc, u, inp.ax, inp.bank),
+            front_at,
+            rear_at: AtSlip::new(tyres, REAR, scale_rear * alpha_rear, road),
+            alpha_front,
+            kin_front,
+            compliance,
+            steer,
+            scale_front,
+            thrust: sc.roll_camber.map(|k| k * phi),
+            fx: sc.wheel_forces(self.vehicle.mass, inp.ax),
+            // Without compliance the wheel's steer, hence the projection,
+            // does not depend on the force: one cosine per evaluation.
+            fixed_projection: projection(exact_kinematics, steer),
+            inv_mass: 1.0 / self.vehicle.mass,
+            road,
+            exact_kinematics,
+            transfer: self.options.load_transfer,
+            directions: sc.directions,
+        }
+    }
+}
+
+/// The front slip angle and force with steering compliance `c`:
+/// `α = α_kin − c·Fyf(α)`, solved by a secant (Fyf grows with α, so the
+/// root is unique).
+fn compliant_slip<T: Scalar>(kin: T, c: T, force: impl Fn(T) -> T) -> (T, T) {
+    let g = |a: T| {
+        let f = force(a);
+        (a - kin + c * f, f)
+    };
+    // g(kin) = c·Fyf(kin): the first iterate's force is also the first
+    // residual's.
+    let f0 = force(kin);
+    let (mut a0, mut a1, mut g0) = (kin, kin - c * f0, c * f0);
+    let (mut g1, mut f1) = g(a1);
+    for _ in 0..30 {
+        if g1.abs() < 1e-13 || g1 == g0 {
+            break;
+        }
+        let a2 = a1 - g1 * (a1 - a0) / (g1 - g0);
+        let (g2, f2) = g(a2);
+        (a0, g0, a1, g1, f1) = (a1, g1, a2, g2, f2);
+    }
+    (a1, f1)
+}

@@ -11,6 +11,10 @@
 //! skipped, with a line saying so, when the log (outside the repository) is
 //! missing.
 //!
+//! `campaign_8_runs_full_library_exact_jacobian` is the 8-run campaign with
+//! `[diagnose] derivatives = "exact"`: the cost of exact Jacobians beside
+//! the default differences.
+//!
 //! `RAYON_NUM_THREADS=2 cargo bench --bench diagnose`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -18,6 +22,7 @@ use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::synth::{generate, truth_values, Noise, Programme, SynthSpec};
 use handling::diagnose::{Augmented, DiagnoseSettings, Prepared};
+use handling::optim::local::Derivatives;
 use handling::tyre::{MagicSimple, Pac89, Tyre};
 use handling::vehicle::VehicleModel;
 use std::time::Duration;
@@ -54,6 +59,13 @@ fn diagnosis(c: &mut Criterion) {
     g.measurement_time(Duration::from_secs(200));
     g.bench_function("campaign_8_runs_full_library", |b| {
         b.iter(|| diagnose(black_box(&campaign), None).unwrap())
+    });
+    // The same with every fit's Jacobian exact (one replay in dual numbers
+    // instead of one plain replay per parameter), back to back.
+    let mut exact = campaign.clone();
+    exact.settings.derivatives = Derivatives::Exact;
+    g.bench_function("campaign_8_runs_full_library_exact_jacobian", |b| {
+        b.iter(|| diagnose(black_box(&exact), None).unwrap())
     });
     g.finish();
 }

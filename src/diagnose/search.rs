@@ -331,9 +331,12 @@ fn lookalikes(
 }
 
 /// Whether a fit leaves one of its effect parameters idle: at its
-/// off value (on a physical limit there, or not) or within two standard
-/// errors of it: that part of the effect is off and it reduces to a
-/// simpler one.
+/// off value (on a physical limit there, or not), within two standard
+/// errors of it, or off a bound without a standard error at all (its
+/// Jacobian column all but a combination of the others': exact Jacobians
+/// show a steer path's lag at a few microseconds to be its delay's twin):
+/// that part of the effect is off, or the data cannot tell it from off,
+/// and it reduces to a simpler one.
 fn idle(sc: &Scored, axle_count: usize) -> bool {
     let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
     params.enumerate().any(|(i, q)| {
@@ -347,7 +350,7 @@ fn idle(sc: &Scored, axle_count: usize) -> bool {
         match q.bound_at(value) {
             Some(Bound::Search) => false,
             Some(Bound::Physical) => off,
-            None => off || (!q.off.is_nan() && (value - q.off).abs() < 2.0 * se),
+            None => off || (!q.off.is_nan() && (se.is_nan() || (value - q.off).abs() < 2.0 * se)),
         }
     })
 }

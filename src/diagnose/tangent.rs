@@ -53,25 +53,7 @@ impl Layout {
     fn tangent<T: Scalar>(&self, plain: &Augmented, pt: &[T]) -> Tangent<T> {
         let (model, friction) = plain.model();
         let e = &plain.effects;
-        let lift2 = |x: [f64; 2]| x.map(T::from);
-        let sc0 = model.scalars(friction);
-        let mut sc = ModelScalars {
-            yaw_inertia: T::from(sc0.yaw_inertia),
-            transfer_share: T::from(sc0.transfer_share),
-            friction: T::from(sc0.friction),
-            aero_load: lift2(sc0.aero_load),
-            road_bank: T::from(sc0.road_bank),
-            bank_profile_scale: T::from(sc0.bank_profile_scale),
-            relaxation_length: T::from(sc0.relaxation_length),
-            steering_compliance: T::from(sc0.steering_compliance),
-            roll_steer: lift2(sc0.roll_steer),
-            roll_camber: lift2(sc0.roll_camber),
-            stiffness_scale: lift2(sc0.stiffness_scale),
-            longitudinal_load_transfer: T::from(sc0.longitudinal_load_transfer),
-            combined_slip: sc0.combined_slip.map(|c| c.map(T::from)),
-            roll: sc0.roll.map(T::from),
-            directions: [pt.len(), pt.len() + 1],
-        };
+        let mut sc = model.scalars(friction).lift::<T>([pt.len(), pt.len() + 1]);
         let mut sensors = e.sensors.of::<T>();
         let mut path = SteerPath {
             delay: T::from(e.steer_path[0]),

@@ -40,7 +40,7 @@ pub struct Condition {
 }
 
 impl Condition {
-    fn inputs(&self) -> Inputs {
+    pub(crate) fn inputs(&self) -> Inputs {
         Inputs::steady(self.steer, self.speed, self.friction)
     }
 }

@@ -3,7 +3,10 @@
 
 use super::{residual, Condition};
 use crate::report::stability::Class;
-use crate::vehicle::VehicleModel;
+use crate::scalar::Scalar;
+use crate::vehicle::wheels::ParamTyres;
+use crate::vehicle::{LoadSolve, LoadTransferSeed, VehicleModel};
+use num_dual::DualSVec64;
 use serde::{Deserialize, Serialize};
 
 /// Kind of equilibrium.
@@ -65,8 +68,51 @@ pub struct Stability {
     pub determinant: f64,
 }
 
-/// Jacobian of (β̇, ṙ) with respect to (β, r) by central differences.
+/// Jacobian of (β̇, ṙ) with respect to (β, r): exact, from one evaluation
+/// of the right-hand side in dual numbers ([`crate::scalar`], the
+/// load-transfer loop differentiated at its root), where the tyres have a
+/// generic force; else by central differences.
 pub(crate) fn jacobian(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> [[f64; 2]; 2] {
+    exact_jacobian(model, c, x).unwrap_or_else(|| difference_jacobian(model, c, x))
+}
+
+/// The exact Jacobian, None when a tyre has no generic force.
+pub(crate) fn exact_jacobian(
+    model: &VehicleModel,
+    c: &Condition,
+    x: [f64; 2],
+) -> Option<[[f64; 2]; 2]> {
+    // β and r in directions 0 and 1; 2 and 3 the implicit solves'.
+    type D = DualSVec64<4>;
+    let tyres = ParamTyres::<D>::constant(&model.front, &model.rear)?;
+    let inp = c.inputs();
+    let sc = model.scalars(inp.friction).lift::<D>([2, 3]);
+    let (beta, r) = (D::variable(x[0], 0), D::variable(x[1], 1));
+    let steer = D::from(inp.steer);
+    let zero = D::from(0.0);
+    let full = if model.options.effects.extra_states() {
+        model.quasi_static_of(&sc, beta, r, inp.speed, steer)
+    } else {
+        [beta, r, zero, zero, zero, zero]
+    };
+    let mut seed = LoadTransferSeed {
+        ay: [c.speed * x[1] + model.bank_acceleration(); 3],
+        slope: 1.0,
+    };
+    let solve = LoadSolve::Solved(&mut seed, 1e-13);
+    let dx = model.rates_of(&sc, &tyres, &full, &inp, steer, solve).dx;
+    Some([
+        [dx[0].part(0), dx[0].part(1)],
+        [dx[1].part(0), dx[1].part(1)],
+    ])
+}
+
+/// Jacobian of (β̇, ṙ) with respect to (β, r) by central differences.
+pub(crate) fn difference_jacobian(
+    model: &VehicleModel,
+    c: &Condition,
+    x: [f64; 2],
+) -> [[f64; 2]; 2] {
     let mut j = [[0.0; 2]; 2];
     for k in 0..2 {
         let h = 1e-7 * x[k].abs().max(0.01);

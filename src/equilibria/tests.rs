@@ -451,3 +451,43 @@ fn every_kind_is_drawn_as_one_stability_class() {
     assert_eq!(Kind::UnstableFocus.class(), Class::Unstable);
     assert_eq!(Kind::Degenerate.class(), Class::Unstable);
 }
+
+#[test]
+fn the_exact_stability_jacobian_equals_central_differences() {
+    use crate::tyre::{Gim, MagicSimple, Pac89, Tyre};
+    use crate::vehicle::{Vehicle, VehicleModel};
+    let gim = Gim {
+        load_exponent: 0.8,
+        ..Gim::new(60_000.0, 0.15, 1.0)
+    };
+    let tyres = [
+        Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)),
+        Tyre::Gim(gim),
+        Tyre::Pac89(Pac89::adams_example()),
+    ];
+    for tyre in tyres {
+        for roll in [false, true] {
+            let mut m = VehicleModel::new(Vehicle::compact_sedan(), tyre.clone(), tyre.clone());
+            if roll {
+                m.options.effects.roll_steer = [0.1, -0.05];
+                m.options.effects.relaxation_length = 0.4;
+            }
+            for (steer, x) in [(0.02, [-0.01, 0.2]), (0.06, [-0.05, 0.45])] {
+                let c = Condition {
+                    steer,
+                    friction: 0.9,
+                    speed: 20.0,
+                };
+                let exact = stability::exact_jacobian(&m, &c, x).expect("generic tyres");
+                let diff = stability::difference_jacobian(&m, &c, x);
+                let scale = exact.iter().flatten().fold(0.0_f64, |a, v| a.max(v.abs()));
+                for i in 0..2 {
+                    for k in 0..2 {
+                        let e = (exact[i][k] - diff[i][k]).abs() / scale;
+                        assert!(e < 1e-6, "{tyre:?} roll {roll} δ {steer}: [{i}][{k}] {e:e}");
+                    }
+                }
+            }
+        }
+    }
+}

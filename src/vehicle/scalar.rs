@@ -73,6 +73,31 @@ impl VehicleModel {
     }
 }
 
+impl ModelScalars<f64> {
+    /// The same numbers in scalar `T`, as constants, with `directions`
+    /// reserved for the implicit solves.
+    pub fn lift<T: Scalar>(&self, directions: [usize; 2]) -> ModelScalars<T> {
+        let l2 = |x: [f64; 2]| x.map(T::from);
+        ModelScalars {
+            yaw_inertia: T::from(self.yaw_inertia),
+            transfer_share: T::from(self.transfer_share),
+            friction: T::from(self.friction),
+            aero_load: l2(self.aero_load),
+            road_bank: T::from(self.road_bank),
+            bank_profile_scale: T::from(self.bank_profile_scale),
+            relaxation_length: T::from(self.relaxation_length),
+            steering_compliance: T::from(self.steering_compliance),
+            roll_steer: l2(self.roll_steer),
+            roll_camber: l2(self.roll_camber),
+            stiffness_scale: l2(self.stiffness_scale),
+            longitudinal_load_transfer: T::from(self.longitudinal_load_transfer),
+            combined_slip: self.combined_slip.map(|c| c.map(T::from)),
+            roll: self.roll.map(T::from),
+            directions,
+        }
+    }
+}
+
 impl<T: Scalar> ModelScalars<T> {
     /// The values without their derivatives.
     pub fn re(&self) -> ModelScalars<f64> {

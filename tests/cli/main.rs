@@ -228,6 +228,7 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
 }
 
 mod cross_validation;
+mod derivatives;
 mod diagnose;
 mod identify;
 mod magic_formula;

@@ -5,7 +5,10 @@
 //! or of a campaign file.
 //!
 //! `RAYON_NUM_THREADS=1 cargo run --release --example diagnose_phases
-//! [campaign.toml] [--no-screening]`
+//! [campaign.toml] [--no-screening] [--exact]`
+//!
+//! `--exact` takes every fit's Jacobian exact (`[diagnose] derivatives =
+//! "exact"`) instead of the default forward differences.
 //!
 //! On one thread the phases' seconds are their CPU time and add up to the
 //! wall time; on more they overlap (see the module's documentation). The
@@ -89,13 +92,22 @@ fn print(t: &Timing, cpu: Option<f64>) {
 fn main() -> anyhow::Result<()> {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let screening = !args.iter().any(|a| a == "--no-screening");
-    args.retain(|a| a != "--no-screening");
+    let exact = args.iter().any(|a| a == "--exact");
+    args.retain(|a| a != "--no-screening" && a != "--exact");
     let mut c = match args.first() {
         Some(path) => handling::io::campaign::load_campaign(Path::new(path))?,
         None => campaign_8_runs(),
     };
     c.settings.screening = screening;
-    println!("{}: {} runs, screening {screening}\n", c.name, c.runs.len());
+    if exact {
+        c.settings.derivatives = handling::optim::local::Derivatives::Exact;
+    }
+    println!(
+        "{}: {} runs, screening {screening}, derivatives {:?}\n",
+        c.name,
+        c.runs.len(),
+        c.settings.derivatives
+    );
     let cpu0 = cpu_seconds();
     let (d, t) = diagnose_timed(&c)?;
     let cpu = cpu_seconds().zip(cpu0).map(|(a, b)| a - b);

@@ -383,6 +383,7 @@ fn run(
     Ok(Diagnosis {
         campaign: c.name.clone(),
         seed: set.seed,
+        derivatives: set.derivatives,
         runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),
         folds: ctx.folds.len(),
         notes,

@@ -219,6 +219,8 @@ pub struct Diagnosis {
     pub campaign: String,
     /// Seed of every random search.
     pub seed: u64,
+    /// How the fits took their Jacobians (`[diagnose] derivatives`).
+    pub derivatives: crate::optim::local::Derivatives,
     /// Runs, in order.
     pub runs: Vec<String>,
     /// Folds of the cross-validation.

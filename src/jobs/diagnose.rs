@@ -12,6 +12,7 @@ use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::{ParameterValue, Part};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
+use crate::optim::local::Derivatives;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::progress::Progress;
 use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
@@ -122,8 +123,12 @@ impl DiagnoseReport {
             format!("{} runs (pieces of {} file{s})", self.runs, self.run_files)
         };
         let plural = if self.effects == 1 { "" } else { "s" };
+        let exact = match d.derivatives {
+            Derivatives::Exact => ", exact Jacobians",
+            Derivatives::Differences => "",
+        };
         let mut out = vec![format!(
-            "{}: {runs}, {} candidate effect{plural}, seed {}",
+            "{}: {runs}, {} candidate effect{plural}, seed {}{exact}",
             d.campaign, self.effects, d.seed
         )];
         out.extend(d.notes.iter().map(|n| format!("  note: {n}")));

@@ -45,12 +45,16 @@ pub fn page(
     p.paragraph(
         "",
         &format!(
-            "{} runs from {} files, {} candidate effects, {} folds, seed {}.",
+            "{} runs from {} files, {} candidate effects, {} folds, seed {}{}.",
             inputs.runs,
             inputs.run_files,
             d.ranking.len() + d.screened.len(),
             d.folds,
-            d.seed
+            d.seed,
+            match d.derivatives {
+                crate::optim::local::Derivatives::Exact => ", exact Jacobians",
+                crate::optim::local::Derivatives::Differences => "",
+            }
         ),
     );
     p.section("verdict", "Verdict")

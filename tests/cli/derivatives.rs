@@ -31,6 +31,9 @@ fn exact_jacobians_give_the_verdict_of_differences_within_noise() {
     for truth in [EffectKind::SensorDelay, EffectKind::RoadBank] {
         let exact = diagnosed(truth, Derivatives::Exact);
         let diff = diagnosed(truth, Derivatives::Differences);
+        // The report says how its Jacobians were taken.
+        assert_eq!(exact.derivatives, Derivatives::Exact);
+        assert_eq!(diff.derivatives, Derivatives::Differences);
         assert_eq!(exact.verdict.effects, vec![truth]);
         assert_eq!(exact.verdict.effects, diff.verdict.effects, "{truth:?}");
         for r in &exact.ranking {

@@ -33,26 +33,17 @@
 //! Units: SI, rad; k in 1/rad (N of lateral force per N of load per rad of
 //! slip), D dimensionless.
 
+#[cfg(test)]
+pub(crate) use super::axles::axle_tyres;
+pub use super::axles::{coefficient, friction, shares, AXLE_BOUNDS, SHAPE};
+use super::axles::{D_REF, K_REF};
 use super::fit::FIT_TOLERANCE;
 use super::model::Augmented;
 use super::problem::Problem;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::Residuals;
-use crate::tyre::{MagicSimple, Tyre};
 use rayon::prelude::*;
 use serde::Serialize;
-
-/// Shape factor C of the axle characteristics.
-pub const SHAPE: f64 = 1.3;
-/// Cornering coefficient at the middle of its share, 1/rad: a car tyre's.
-pub(super) const K_REF: f64 = 20.0;
-/// Peak friction at the middle of its share.
-pub(super) const D_REF: f64 = 1.0;
-
-/// The fit's box of the shares (front coefficient, rear coefficient,
-/// friction): just inside the physical limits 0 and 1, where the model
-/// stays finite.
-pub const AXLE_BOUNDS: [(f64, f64); 3] = [(0.02, 0.995), (0.02, 0.995), (0.1, 0.9)];
 
 /// Shares of the start grid's coefficients: k = 5, 13, 30, 80, 380 1/rad.
 const GRID: [f64; 5] = [0.2, 0.4, 0.6, 0.8, 0.95];
@@ -60,34 +51,6 @@ const GRID: [f64; 5] = [0.2, 0.4, 0.6, 0.8, 0.95];
 const GRID_FRICTION: f64 = 0.8;
 /// Grid points polished when identifying the base (distinct basins).
 const BASE_STARTS: usize = 3;
-
-/// Cornering coefficient k (1/rad) of share `s`.
-pub fn coefficient(s: f64) -> f64 {
-    K_REF * s / (1.0 - s)
-}
-
-/// Peak friction D of share `t`.
-pub fn friction(t: f64) -> f64 {
-    D_REF * t / (1.0 - t)
-}
-
-/// The shares of coefficients `(k_f, k_r)` and friction `d`.
-pub fn shares(k_f: f64, k_r: f64, d: f64) -> [f64; 3] {
-    [k_f / (k_f + K_REF), k_r / (k_r + K_REF), d / (d + D_REF)]
-}
-
-/// The axle tyres of shares `p = [s_f, s_r, t]`.
-pub fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
-    let d = friction(p[2]);
-    let tyre = |s: f64| {
-        Tyre::MagicSimple(MagicSimple {
-            b: coefficient(s) / (SHAPE * d),
-            c: SHAPE,
-            d,
-        })
-    };
-    (tyre(p[0]), tyre(p[1]))
-}
 
 /// What an axle characteristic on the edge of its box means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

@@ -47,7 +47,7 @@ pub(super) struct Bases {
     pub(super) identification: Option<AxleIdentification>,
 }
 
-pub(super) use super::base::{axle_tyres, AXLE_BOUNDS};
+pub(super) use super::axles::{axle_tyres, AXLE_BOUNDS};
 
 /// The roll degree of freedom's dynamics, fitted with the roll effects: a
 /// campaign's `[roll]` is a guess (no roll channel is needed), and roll

@@ -6,7 +6,7 @@
 //! is [`with_effects`]; its derivatives are [`super::tangent`]'s. Units:
 //! SI, rad.
 
-use super::base::axle_tyres;
+use super::axles::axle_tyres;
 use super::effects::{EffectKind, EffectSet};
 use super::model::Augmented;
 

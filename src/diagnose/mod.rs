@@ -28,6 +28,7 @@
 //! campaign's types, the effects, the proving ground, and the replay of a
 //! run ([`Prepared`], [`Augmented`]) the benches time.
 
+mod axles;
 mod base;
 pub(crate) mod campaign;
 mod candidates;

@@ -17,7 +17,7 @@
 //! A model whose tyres have no generic force (a model registered from
 //! outside the crate) falls back to forward differences. Units: SI, rad.
 
-use super::base::{D_REF, K_REF, SHAPE};
+use super::axles::axle_parameters;
 use super::channels::Channel;
 use super::effects::EffectKind;
 use super::layout::{fits_roll, Layout};
@@ -130,19 +130,6 @@ impl Layout {
             steer_path: path,
         }
     }
-}
-
-/// The lateral parameters (B, C, D) of the front and rear axle
-/// characteristics of shares `p = [s_f, s_r, t]`
-/// ([`super::base::axle_tyres`]) in scalar `T`.
-fn axle_parameters<T: Scalar>(p: &[T]) -> [Vec<T>; 2] {
-    let one = T::from(1.0);
-    let d = p[2] * D_REF / (one - p[2]);
-    let b = |s: T| s * K_REF / (one - s) / (d * SHAPE);
-    [
-        vec![b(p[0]), T::from(SHAPE), d],
-        vec![b(p[1]), T::from(SHAPE), d],
-    ]
 }
 
 /// Largest parameter count the exact Jacobian serves (two more directions

@@ -82,12 +82,14 @@
 
 mod paper_lm;
 mod params;
+mod problem;
 mod sigma;
 mod stages;
 mod start;
 
 pub use paper_lm::paper_lm;
 pub use params::Stage;
+pub use problem::Derivatives;
 pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
 
 use super::data::RigData;
@@ -389,8 +391,19 @@ pub struct Identified {
     pub report: StagedReport,
 }
 
-/// Runs the stages on `rows`. Fails only when no stage could run.
+/// Runs the stages on `rows` with exact Jacobians. Fails only when no
+/// stage could run.
 pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, FitError> {
+    identify_with(rows, settings, Derivatives::Exact)
+}
+
+/// As [`identify`], with the stages' Jacobians computed as `derivatives`
+/// says (finite differences for comparison).
+pub fn identify_with(
+    rows: &[MfRow],
+    settings: &Settings,
+    derivatives: Derivatives,
+) -> Result<Identified, FitError> {
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
     let mut reports: Vec<StageReport> = Vec::new();
@@ -416,6 +429,7 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, FitEr
             &sel,
             settings.start,
             settings.max_iterations,
+            derivatives,
         );
         reports.push(rep);
     }

@@ -85,6 +85,7 @@
 //! `VXLOW`; its references here are at 16.7 m/s). Zero or negative load gives
 //! zero forces.
 
+mod channel;
 mod coefficients;
 mod formulae;
 mod kernels;
@@ -92,7 +93,8 @@ mod mode;
 mod slip;
 pub mod vertical;
 
-pub use coefficients::MfCoefficients;
+pub use channel::{Held, MfChannel, MfPoint};
+pub use coefficients::{MfCoefficients, MfCoefficientsOf};
 pub use mode::{MfLimits, MfMode};
 
 use super::{

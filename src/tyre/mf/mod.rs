@@ -494,4 +494,6 @@ pub fn evaluate_batch(tyre: &MagicFormula, points: &[MfInput], out: &mut Vec<MfO
 }
 
 #[cfg(test)]
+mod channel_tests;
+#[cfg(test)]
 mod tests;

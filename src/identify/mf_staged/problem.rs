@@ -208,7 +208,6 @@ impl Residuals for StageProblem<'_> {
 mod tests {
     use super::*;
     use crate::io::tir::load_tir;
-    use crate::tyre::mf::MfInput;
     use std::path::Path;
 
     fn fixture(name: &str) -> MagicFormula {

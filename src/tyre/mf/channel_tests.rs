@@ -141,3 +141,115 @@ fn the_generic_channels_equal_the_fast_path_at_low_speed_and_no_load() {
     let w = worst(&t, &pts);
     assert!(w <= 1e-12, "{w:.2e}");
 }
+
+/// The pure lateral force of [`LateralForceOf`] in plain numbers equals
+/// the fast path's `fy` at zero camber and slip ratio on every fixture
+/// file, in each mode and on both sides, with a road friction and
+/// slip-speed friction; in dual numbers its derivatives with respect to the
+/// nine lateral parameters, the slip angle, the load and the friction
+/// scale equal fourth-order central differences of the fast path to 1e-6
+/// (floor as in the Jacobian test of the staged fit: 1e-15·S/h).
+#[test]
+fn the_lateral_force_of_equals_the_fast_path_with_its_derivatives() {
+    use crate::tyre::{LateralForceOf, Parameterised, SlipOf, SlipState, TyreModel};
+    use num_dual::DualSVec64;
+    let fy = |t: &MagicFormula, alpha: f64, fz: f64, mu: f64| {
+        t.forces(&SlipState {
+            alpha,
+            kappa: 0.0,
+            fz,
+            camber: 0.0,
+            mu_scale: mu,
+            speed: 16.7,
+        })
+        .fy
+    };
+    let modes = [111, 121, 211, 221].map(|m| MfMode::from_use_mode(m).unwrap());
+    let mut derivatives = 0;
+    for (file, _) in FILES {
+        let base = load_tir(&dir().join(format!("{file}.tir"))).unwrap();
+        for (mode, side) in modes
+            .iter()
+            .zip([TyreSide::Left, TyreSide::Right].iter().cycle())
+        {
+            let mut t = base.clone();
+            t.set_mode(*mode);
+            t.side = *side;
+            t.coefficients.LMUV = 0.2;
+            let p = t.parameters();
+            let scale = t.coefficients.FNOMIN;
+            // Not at α = 0: where α* + SHy changes sign, `Ey`'s asymmetry
+            // term `PEY3·sgn` switches, which the differences straddle.
+            for alpha in [-0.3, -0.04, 0.02, 0.12, 0.5] {
+                for fz in [0.3, 1.0, 1.7].map(|f| f * scale) {
+                    let s = SlipOf {
+                        alpha,
+                        fz,
+                        mu_scale: 0.9,
+                        speed: 16.7,
+                    };
+                    let (a, b) = (t.lateral_force_of(&p, &s), fy(&t, alpha, fz, 0.9));
+                    assert!(
+                        (a - b).abs() <= 1e-12 * a.abs().max(1e-4 * scale),
+                        "{file} {:?} at {alpha}, {fz}: {a} vs {b}",
+                        mode.use_mode()
+                    );
+                    // Dual: 9 parameters, then α, Fz, μ.
+                    let v = |x: f64, k: usize| DualSVec64::<12>::from_re(x).derivative(k);
+                    let pd: Vec<DualSVec64<12>> =
+                        p.iter().enumerate().map(|(k, x)| v(*x, k)).collect();
+                    let sd = SlipOf {
+                        alpha: v(alpha, 9),
+                        fz: v(fz, 10),
+                        mu_scale: v(0.9, 11),
+                        speed: 16.7,
+                    };
+                    let g = t.lateral_force_of(&pd, &sd);
+                    let eps = g.eps.unwrap_generic(nalgebra::Const::<12>, nalgebra::U1);
+                    for k in 0..12 {
+                        let x0 = [p.clone(), vec![alpha, fz, 0.9]].concat();
+                        let h = 1e-3 * x0[k].abs().max(if k == 9 { 1e-2 } else { 0.1 });
+                        let at = |d: f64| {
+                            let mut x = x0.clone();
+                            x[k] += d;
+                            let mut u = t.clone();
+                            u.set_parameters(&x[..9]);
+                            fy(&u, x[9], x[10], x[11])
+                        };
+                        let d =
+                            (-at(2.0 * h) + 8.0 * at(h) - 8.0 * at(-h) + at(-2.0 * h)) / (12.0 * h);
+                        let floor = 1e-9 * scale / h;
+                        // A limit (load, slip angle) within ±2h: the
+                        // differences straddle the kink.
+                        let kink = t.is_clamped(&MfInput {
+                            fz: x0[10] + 2.0 * h * f64::from(k == 10),
+                            kappa: 0.0,
+                            alpha: x0[9] + 2.0 * h * f64::from(k == 9),
+                            camber: 0.0,
+                            speed: 16.7,
+                            pressure: None,
+                        }) != t.is_clamped(&MfInput {
+                            fz: x0[10] - 2.0 * h * f64::from(k == 10),
+                            kappa: 0.0,
+                            alpha: x0[9] - 2.0 * h * f64::from(k == 9),
+                            camber: 0.0,
+                            speed: 16.7,
+                            pressure: None,
+                        });
+                        if kink {
+                            continue;
+                        }
+                        assert!(
+                            (eps[k] - d).abs() <= 1e-6 * eps[k].abs().max(floor),
+                            "{file} {:?} ∂/∂x{k} at α {alpha}, Fz {fz}: {} vs {d}",
+                            mode.use_mode(),
+                            eps[k]
+                        );
+                        derivatives += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(derivatives > 1500, "{derivatives}");
+}

@@ -89,6 +89,7 @@ mod channel;
 mod coefficients;
 mod formulae;
 mod kernels;
+mod lateral_of;
 mod mode;
 mod slip;
 pub mod vertical;

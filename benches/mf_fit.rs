@@ -11,7 +11,7 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::identify::mf_staged::{
     identify_with, prepare, Derivatives, Settings, StartScheme, LM_ITERATIONS,
 };
-use handling::io::rig::{read_rig, read_rig_moments};
+use handling::io::rig::read_rig;
 use handling::tyre::mf::MfVersion;
 use std::time::Duration;
 
@@ -26,8 +26,9 @@ fn mf61_hoosier(c: &mut Criterion) {
         return;
     }
     let data = read_rig(&path).expect("the rig file reads");
-    let moments = read_rig_moments(&path).expect("its moments read");
-    let rows = prepare(&path, &data, &moments, 0.25f64.to_radians(), 16.7)
+    // A cornering file: no wheel moments (`mx`, `my`), the command's
+    // 0.25° slip-angle bins and speed default.
+    let rows = prepare(&path, &data, &[None, None], 0.25f64.to_radians(), 16.7)
         .expect("the rows prepare")
         .rows;
     let settings = Settings {

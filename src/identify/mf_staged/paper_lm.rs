@@ -24,7 +24,7 @@ pub fn paper_lm(problem: &dyn Residuals, p0: &[f64], eps: f64, max_iter: usize) 
             converged = true;
             break;
         }
-        let j = problem.jacobian(&x, &r, &super::stages::unbounded(n));
+        let j = problem.jacobian(&x, &r, &super::problem::unbounded(n));
         evaluations += problem.jacobian_evaluations(n);
         let jtj = j.transpose() * &j;
         let g = j.transpose() * nalgebra::DVector::from_column_slice(&r);

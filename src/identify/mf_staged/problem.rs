@@ -161,6 +161,11 @@ impl<'a> StageProblem<'a> {
     }
 }
 
+/// No bounds on `n` parameters.
+pub(super) fn unbounded(n: usize) -> Vec<(f64, f64)> {
+    vec![(f64::NEG_INFINITY, f64::INFINITY); n]
+}
+
 impl Residuals for StageProblem<'_> {
     fn count(&self) -> usize {
         self.rows.len()

@@ -5,7 +5,7 @@
 
 use super::paper_lm::paper_lm;
 use super::params::{held_reason, names_of, physical_bounds, Need, Stage, ANY};
-use super::problem::{Derivatives, StageProblem};
+use super::problem::{unbounded, Derivatives, StageProblem};
 use super::start::{data_start, level_counts};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
 use crate::error::{SkipReason, StageRows};
@@ -13,11 +13,6 @@ use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{LocalResult, Residuals};
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
 use std::time::Instant;
-
-/// No bounds on `n` parameters.
-pub(super) fn unbounded(n: usize) -> Vec<(f64, f64)> {
-    vec![(f64::NEG_INFINITY, f64::INFINITY); n]
-}
 
 /// σ (%) and RMS of a stage's channel over rows.
 pub(super) fn sigma(stage: Stage, t: &MagicFormula, rows: &[&MfRow]) -> (f64, f64, f64, f64) {

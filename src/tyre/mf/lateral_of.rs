@@ -33,20 +33,26 @@ fn guard<T: DualNum<f64> + Copy>(x: T) -> T {
     }
 }
 
-impl LateralForceOf for MagicFormula {
-    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
-        if !(s.fz.re() > 0.0 && s.fz.re().is_finite()) {
-            return T::from(0.0);
-        }
-        let [pcy1, pdy1, pdy2, pey1, pey2, pky1, pky2, phy1, pvy1] = std::array::from_fn(|k| p[k]);
+/// The point in TNO's frame: load and `α*` (scalars), `γ*`, the pressure
+/// and the low-speed factor (plain numbers).
+struct Lateral<T> {
+    fz: T,
+    astar: T,
+    gs: f64,
+    pressure: f64,
+    low: f64,
+}
+
+impl MagicFormula {
+    /// The point of `s` at zero camber after the crate → ISO-W mapping, the
+    /// `TYRESIDE` mirror and the limit checks (as [`Self::evaluate`]).
+    fn lateral_point<T: DualNum<f64> + Copy>(&self, s: &SlipOf<T>) -> Lateral<T> {
         let c = &self.coefficients;
         let l = &self.limits;
-        let checks = self.options.limit_checks;
-        // Crate → ISO-W; a right-side file is evaluated mirrored.
         let mirror = self.side == TyreSide::Right;
         let alpha = if mirror { s.alpha } else { -s.alpha };
         let checked = self.checked(s.fz.re(), 0.0, self.pressure(None));
-        let (fz, alpha) = if checks {
+        let (fz, alpha) = if self.options.limit_checks {
             (
                 saturate(s.fz, None, l.fz_max),
                 saturate(alpha, l.alpha_min, l.alpha_max),
@@ -54,14 +60,8 @@ impl LateralForceOf for MagicFormula {
         } else {
             (s.fz, alpha)
         };
-        let (gamma, pressure) = (checked.gamma, checked.p);
         let vx = s.speed;
         let sgn_vx = if vx >= 0.0 { 1.0 } else { -1.0 };
-        let low = if vx.abs() < c.VXLOW {
-            vx.abs() / c.VXLOW
-        } else {
-            1.0
-        };
         let (astar, gs) = match self.options.alpha_star {
             AlphaStar::Tan => {
                 let (sn, cs) = (alpha.sin(), alpha.cos());
@@ -73,10 +73,39 @@ impl LateralForceOf for MagicFormula {
                 } else {
                     sn / 1e-12
                 };
-                (tan * sgn_vx, gamma.sin())
+                (tan * sgn_vx, checked.gamma.sin())
             }
-            AlphaStar::Angle => (alpha * sgn_vx, gamma),
+            AlphaStar::Angle => (alpha * sgn_vx, checked.gamma),
         };
+        Lateral {
+            fz,
+            astar,
+            gs,
+            pressure: checked.p,
+            low: if vx.abs() < c.VXLOW {
+                vx.abs() / c.VXLOW
+            } else {
+                1.0
+            },
+        }
+    }
+}
+
+impl LateralForceOf for MagicFormula {
+    fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
+        if !(s.fz.re() > 0.0 && s.fz.re().is_finite()) {
+            return T::from(0.0);
+        }
+        let [pcy1, pdy1, pdy2, pey1, pey2, pky1, pky2, phy1, pvy1] = std::array::from_fn(|k| p[k]);
+        let c = &self.coefficients;
+        let Lateral {
+            fz,
+            astar,
+            gs,
+            pressure,
+            low,
+        } = self.lateral_point(s);
+        let vx = s.speed;
         let v52 = self.version == MfVersion::Mf52;
         let fz0p = c.FNOMIN * c.LFZO;
         let dfz = (fz - fz0p) / fz0p;
@@ -121,14 +150,14 @@ impl LateralForceOf for MagicFormula {
         let sign = if ay.re() >= 0.0 { 1.0 } else { -1.0 };
         let ey = (pey1 + pey2 * dfz)
             * (c.LEY * (1.0 + c.PEY5 * gs * gs - (c.PEY3 + c.PEY4 * gs) * sign));
-        let ey = if checks && ey.re() > 1.0 {
+        let ey = if self.options.limit_checks && ey.re() > 1.0 {
             T::from(1.0)
         } else {
             ey
         };
         let bx = by * ay;
         let fy = dy * (cy * (bx - ey * (bx - bx.atan())).atan()).sin() + svy;
-        if mirror {
+        if self.side == TyreSide::Right {
             -fy
         } else {
             fy

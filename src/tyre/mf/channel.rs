@@ -32,6 +32,7 @@
 mod point;
 
 use super::coefficients::MfCoefficientsOf;
+use super::formulae::EPS_V;
 use super::{AlphaStar, MagicFormula, MfInput, TyreSide};
 use num_dual::DualNum;
 use point::{Inputs, Parts, Point};
@@ -246,7 +247,11 @@ impl MagicFormula {
             p: loads.p,
             kappa,
             astar,
-            tan_a,
+            trail_cos: {
+                let vsy = vx.abs() * tan_a;
+                sgn_vx * (vx / ((vx * vx + vsy * vsy).sqrt() + EPS_V))
+            },
+            residual_cos: sgn_vx * astar.cos(),
             vx,
             sgn_vx,
             low,

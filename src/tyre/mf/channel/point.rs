@@ -5,7 +5,7 @@
 //! radians; `α` here is TNO's.
 
 use super::super::coefficients::MfCoefficientsOf;
-use super::super::formulae::{EPS, EPS_V};
+use super::super::formulae::EPS;
 use super::super::{MagicFormula, MfVersion};
 use num_dual::DualNum;
 use std::f64::consts::PI;
@@ -24,7 +24,10 @@ pub(super) struct Inputs {
     pub(super) p: f64,
     pub(super) kappa: f64,
     pub(super) astar: f64,
-    pub(super) tan_a: f64,
+    /// `sgn Vx·cos'α` of the trail (eq. 4.E6, `Vsy = tan α·|Vx|`) and
+    /// `sgn Vx·cos α*` of the residual torque.
+    pub(super) trail_cos: f64,
+    pub(super) residual_cos: f64,
     pub(super) vx: f64,
     pub(super) sgn_vx: f64,
     pub(super) low: f64,
@@ -402,10 +405,8 @@ impl<T: DualNum<f64> + Copy> Point<'_, T> {
         let (at_eq, ar_eq) = (equivalent(at), equivalent(ar));
         let et = self.clip_e(et_load * (et_gamma * (bt * c.QCZ1 * at).atan() + 1.0));
         let cos_t = (c.QCZ1 * curve_angle(bt * at_eq, et)).cos();
-        let vsy = self.x.vx.abs() * self.x.tan_a;
-        let cos_a = self.x.vx / ((self.x.vx * self.x.vx + vsy * vsy).sqrt() + EPS_V);
-        let t = dt * cos_t * c.LFZO * (self.x.sgn_vx * cos_a);
-        let mzr = dr * cos_atan(br * ar_eq) * (self.x.sgn_vx * self.x.astar.cos());
+        let t = dt * cos_t * c.LFZO * self.x.trail_cos;
+        let mzr = dr * cos_atan(br * ar_eq) * self.x.residual_cos;
         mzr - t * fy_trail
     }
 

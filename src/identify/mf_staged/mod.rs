@@ -56,6 +56,19 @@
 //! the Hoosier data with `PCY1` ≈ 0.5, `PDY1` ≈ 2.3 and `PEY1·PEY3` trading
 //! along a ridge; raw-sample σ 3.89 % against 3.56 % now.)
 //!
+//! Derivatives: each stage's Jacobian is exact, by forward-mode dual
+//! numbers (`num-dual`): the stage's channel evaluated once per row with
+//! the free coefficients as dual variables, in passes of eight directions
+//! ([`crate::tyre::mf::MagicFormula::channel_at`]), the parts of the
+//! formula no free coefficient enters (the lateral force in the `Mz`
+//! stage, …) prepared once per row in plain numbers. Forward differences
+//! ([`Derivatives::Differences`], `n` evaluations of the rows per
+//! Jacobian) stay selectable through [`identify_with`], for comparison. On
+//! the Hoosier rig data the exact fit costs a sixth of the CPU time of the
+//! differenced one; its `Fy` stage ends in a neighbouring minimum of the
+//! stage's cost, 0.5 % above (σ 1.682 % against 1.678 %; pooled 3.553 %
+//! against 3.551 %), its `Mz` stage where the differences end.
+//!
 //! Residual metric: the paper's residual table lost its formula in the
 //! surviving text; this module reports `σ = sqrt(Σe²/ΣF_test²)·100 %` per
 //! stage over its rows, and one overall figure, the same σ pooled over
@@ -77,17 +90,20 @@
 //!
 //! Layout: this file has the public API and the report types; `params.rs`
 //! the stages and what each may fit (levels needed, physical bounds);
-//! `start.rs` the start values from the data; `stages.rs` one stage's fit
-//! and its standard errors; `paper_lm.rs` the paper's own LM.
+//! `start.rs` the start values from the data; `problem.rs` a stage's
+//! least-squares problem and its exact Jacobian; `stages.rs` one stage's
+//! fit and its standard errors; `paper_lm.rs` the paper's own LM.
 
 mod paper_lm;
 mod params;
+mod problem;
 mod sigma;
 mod stages;
 mod start;
 
 pub use paper_lm::paper_lm;
 pub use params::Stage;
+pub use problem::Derivatives;
 pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
 
 use super::data::RigData;
@@ -330,7 +346,9 @@ pub struct StageReport {
     pub condition_number: f64,
     /// Whether LM stopped on its own test.
     pub converged: bool,
-    /// Residual evaluations of the stage's rows.
+    /// Evaluations of the stage's channel at its rows (one per row per
+    /// residual vector; a differenced Jacobian counts its columns, an
+    /// exact one nothing).
     pub evaluations: usize,
     /// Wall time, s.
     pub seconds: f64,
@@ -389,8 +407,19 @@ pub struct Identified {
     pub report: StagedReport,
 }
 
-/// Runs the stages on `rows`. Fails only when no stage could run.
+/// Runs the stages on `rows` with exact Jacobians. Fails only when no
+/// stage could run.
 pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, FitError> {
+    identify_with(rows, settings, Derivatives::Exact)
+}
+
+/// As [`identify`], with the stages' Jacobians computed as `derivatives`
+/// says (finite differences for comparison).
+pub fn identify_with(
+    rows: &[MfRow],
+    settings: &Settings,
+    derivatives: Derivatives,
+) -> Result<Identified, FitError> {
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
     let mut reports: Vec<StageReport> = Vec::new();
@@ -416,6 +445,7 @@ pub fn identify(rows: &[MfRow], settings: &Settings) -> Result<Identified, FitEr
             &sel,
             settings.start,
             settings.max_iterations,
+            derivatives,
         );
         reports.push(rep);
     }

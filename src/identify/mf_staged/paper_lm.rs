@@ -1,13 +1,13 @@
 //! The Levenberg–Marquardt of Wei et al. (2010), as the paper describes it
 //! (the `--start paper` scheme).
 
-use crate::optim::local::{jacobian, LocalResult, Residuals};
+use crate::optim::local::{LocalResult, Residuals};
 
 /// Wei et al. (2010)'s Levenberg–Marquardt: `(JᵀJ + μI)Δ = −Jᵀe`, μ0 = 0.1,
 /// μ ← μ/β after an accepted step, μ ← β·μ after a rejected one (β = 5);
 /// stops when `E = Σe²` falls below `eps`, stops falling (relative change
 /// below 1e-12 over an accepted step), μ exceeds 1e16, or after `max_iter`
-/// Jacobians.
+/// Jacobians (the problem's own, [`Residuals::jacobian`]).
 pub fn paper_lm(problem: &dyn Residuals, p0: &[f64], eps: f64, max_iter: usize) -> LocalResult {
     let (m, n) = (problem.count(), p0.len());
     let mut x = p0.to_vec();
@@ -24,8 +24,8 @@ pub fn paper_lm(problem: &dyn Residuals, p0: &[f64], eps: f64, max_iter: usize) 
             converged = true;
             break;
         }
-        let j = jacobian(problem, &x, &r);
-        evaluations += n;
+        let j = problem.jacobian(&x, &r, &super::problem::unbounded(n));
+        evaluations += problem.jacobian_evaluations(n);
         let jtj = j.transpose() * &j;
         let g = j.transpose() * nalgebra::DVector::from_column_slice(&r);
         loop {

@@ -5,50 +5,14 @@
 
 use super::paper_lm::paper_lm;
 use super::params::{held_reason, names_of, physical_bounds, Need, Stage, ANY};
+use super::problem::{unbounded, Derivatives, StageProblem};
 use super::start::{data_start, level_counts};
 use super::{MfRow, StageParameter, StageReport, StartScheme};
 use crate::error::{SkipReason, StageRows};
 use crate::optim::bounded::BoundedLm;
-use crate::optim::local::{jacobian, LocalResult, Residuals};
+use crate::optim::local::{LocalResult, Residuals};
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
-use rayon::prelude::*;
 use std::time::Instant;
-
-/// The least-squares problem of one stage.
-struct StageProblem<'a> {
-    base: MagicFormula,
-    stage: Stage,
-    names: Vec<&'static str>,
-    rows: Vec<&'a MfRow>,
-}
-
-impl StageProblem<'_> {
-    fn tyre(&self, p: &[f64]) -> MagicFormula {
-        let mut t = self.base.clone();
-        for (k, v) in self.names.iter().zip(p) {
-            t.coefficients.set(k, *v);
-        }
-        t
-    }
-}
-
-impl Residuals for StageProblem<'_> {
-    fn count(&self) -> usize {
-        self.rows.len()
-    }
-    fn residuals(&self, p: &[f64], out: &mut [f64]) {
-        let t = self.tyre(p);
-        let f = |(o, r): (&mut f64, &&MfRow)| {
-            *o = self.stage.model(&t, r) - self.stage.measured(r);
-        };
-        // Parallel only where the rows are many enough to pay for it.
-        if self.rows.len() >= 2048 {
-            out.par_iter_mut().zip(self.rows.par_iter()).for_each(f);
-        } else {
-            out.iter_mut().zip(self.rows.iter()).for_each(f);
-        }
-    }
-}
 
 /// σ (%) and RMS of a stage's channel over rows.
 pub(super) fn sigma(stage: Stage, t: &MagicFormula, rows: &[&MfRow]) -> (f64, f64, f64, f64) {
@@ -87,15 +51,15 @@ fn bounded(
 /// (from three curvature starts, E = 0, −1, 0.5: a curvature started on
 /// the wrong side of a kink — E is clipped at 1 — or of a flat trail curve
 /// can stall LM in a local minimum), then with the load terms, then all
-/// (camber and pressure terms too). Returns the result and the residual
-/// evaluations spent.
+/// (camber and pressure terms too). The result counts the residual
+/// evaluations of every step and start.
 fn released_fit(
     problem: &StageProblem,
     free: &[(&'static str, Need)],
     starts: &[f64],
     bounds: &[(f64, f64)],
     iterations: usize,
-) -> (LocalResult, usize) {
+) -> LocalResult {
     let mut evaluations = 0;
     let mut converged = true;
     let mut p: Vec<f64> = starts
@@ -115,12 +79,13 @@ fn released_fit(
             continue;
         }
         last = Some(idx.len());
-        let sub = StageProblem {
-            base: problem.tyre(&p),
-            stage: problem.stage,
-            names: idx.iter().map(|&i| problem.names[i]).collect(),
-            rows: problem.rows.clone(),
-        };
+        let sub = StageProblem::new(
+            problem.tyre(&p),
+            problem.stage,
+            idx.iter().map(|&i| problem.names[i]).collect(),
+            problem.rows.clone(),
+            problem.derivatives,
+        );
         let b: Vec<(f64, f64)> = idx.iter().map(|&i| bounds[i]).collect();
         let q0: Vec<f64> = idx.iter().map(|&i| p[i]).collect();
         let curvature = sub
@@ -149,15 +114,12 @@ fn released_fit(
         }
     }
     let cost = problem.cost(&p);
-    (
-        LocalResult {
-            cost,
-            params: p,
-            evaluations,
-            converged,
-        },
+    LocalResult {
+        cost,
+        params: p,
         evaluations,
-    )
+        converged,
+    }
 }
 
 /// Why a stage with `rows` rows and `free` parameters is not fitted.
@@ -235,7 +197,7 @@ fn standard_errors(
     // Standard errors on the column-scaled Jacobian.
     let mut res = vec![0.0; problem.count()];
     problem.residuals(p, &mut res);
-    let j = jacobian(problem, p, &res);
+    let j = problem.jacobian(p, &res, &unbounded(p.len()));
     let (m, nf) = (problem.count(), p.len());
     let s2 = res.iter().map(|e| e * e).sum::<f64>() / (m - nf).max(1) as f64;
     let norms: Vec<f64> = (0..nf).map(|k| j.column(k).norm()).collect();
@@ -363,6 +325,7 @@ pub(super) fn run_stage(
     rows: &[&MfRow],
     start: StartScheme,
     max_iterations: usize,
+    derivatives: Derivatives,
 ) -> StageReport {
     let t0 = Instant::now();
     let table = stage.parameters();
@@ -377,14 +340,14 @@ pub(super) fn run_stage(
     }
     let (base, starts) = start_values(stage, start, tyre, &free, rows);
     let names: Vec<&'static str> = free.iter().map(|(k, _)| *k).collect();
-    let problem = StageProblem {
-        base: base.clone(),
+    let problem = StageProblem::new(
+        base.clone(),
         stage,
-        names: names.clone(),
-        rows: rows.to_vec(),
-    };
+        names.clone(),
+        rows.to_vec(),
+        derivatives,
+    );
     let (sigma_start, ..) = sigma(stage, &base, rows);
-    let mut evaluations = 0;
     let result = match start {
         StartScheme::Paper => paper_lm(&problem, &starts, 1.0, max_iterations.max(500)),
         StartScheme::Data | StartScheme::Template => {
@@ -393,12 +356,10 @@ pub(super) fn run_stage(
                 .zip(&starts)
                 .map(|(k, v)| physical_bounds(k, *v))
                 .collect();
-            let (r, e) = released_fit(&problem, &free, &starts, &bounds, max_iterations);
-            evaluations += e;
-            r
+            released_fit(&problem, &free, &starts, &bounds, max_iterations)
         }
     };
-    evaluations += result.evaluations;
+    let evaluations = result.evaluations;
     let p = result.params.clone();
     *tyre = problem.tyre(&p);
     let (sigma_end, rms, ..) = sigma(stage, tyre, rows);

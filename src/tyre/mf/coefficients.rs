@@ -45,6 +45,42 @@ macro_rules! coefficients {
                     _ => false,
                 }
             }
+
+            /// The coefficients as scalars `T` (plain numbers, or dual
+            /// numbers without derivatives until [`MfCoefficientsOf::set`]
+            /// makes some of them variables).
+            pub fn lift<T: From<f64>>(&self) -> MfCoefficientsOf<T> {
+                MfCoefficientsOf { $($name: T::from(self.$name),)* }
+            }
+        }
+
+        /// The coefficients in a scalar of the `num-dual` crate (a plain
+        /// `f64`, or a dual number carrying the derivatives with respect
+        /// to the coefficients being fitted): what
+        /// [`super::MagicFormula::channel_of`] evaluates.
+        #[allow(non_snake_case, missing_docs)]
+        #[derive(Debug, Clone, PartialEq)]
+        pub struct MfCoefficientsOf<T> {
+            $(pub $name: T,)*
+        }
+
+        impl<T: Copy> MfCoefficientsOf<T> {
+            /// The value of coefficient `name` (`None` when the model does
+            /// not read that key).
+            pub fn get(&self, name: &str) -> Option<T> {
+                match name {
+                    $(stringify!($name) => Some(self.$name),)*
+                    _ => None,
+                }
+            }
+
+            /// Sets coefficient `name`; false when the model does not read it.
+            pub fn set(&mut self, name: &str, value: T) -> bool {
+                match name {
+                    $(stringify!($name) => { self.$name = value; true })*
+                    _ => false,
+                }
+            }
         }
     };
 }

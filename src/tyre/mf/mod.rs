@@ -85,14 +85,17 @@
 //! `VXLOW`; its references here are at 16.7 m/s). Zero or negative load gives
 //! zero forces.
 
+mod channel;
 mod coefficients;
 mod formulae;
 mod kernels;
+mod lateral_of;
 mod mode;
 mod slip;
 pub mod vertical;
 
-pub use coefficients::MfCoefficients;
+pub use channel::{Held, MfChannel, MfPoint};
+pub use coefficients::{MfCoefficients, MfCoefficientsOf};
 pub use mode::{MfLimits, MfMode};
 
 use super::{
@@ -491,5 +494,7 @@ pub fn evaluate_batch(tyre: &MagicFormula, points: &[MfInput], out: &mut Vec<MfO
     out.extend(points.iter().map(|p| tyre.evaluate(p)));
 }
 
+#[cfg(test)]
+mod channel_tests;
 #[cfg(test)]
 mod tests;

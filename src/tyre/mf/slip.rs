@@ -127,7 +127,7 @@ impl MagicFormula {
     /// a quarter sine between, over the slip ratios within `VXLOW/|Vx|` of
     /// `κ = −1`; 0 at `Vx = 0`.
     #[inline(always)]
-    fn rolling_direction(kappa: f64, vx: f64, vxlow: f64) -> f64 {
+    pub(super) fn rolling_direction(kappa: f64, vx: f64, vxlow: f64) -> f64 {
         if vx == 0.0 {
             return 0.0;
         }

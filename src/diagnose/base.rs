@@ -341,6 +341,7 @@ pub fn identify_axles<F: Fn(&[f64]) -> Augmented + Sync>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tyre::Tyre;
 
     #[test]
     fn shares_map_to_coefficients_and_back_and_the_box_is_where_the_doc_says() {

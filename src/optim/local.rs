@@ -59,6 +59,7 @@ pub trait Residuals: Sync {
 
 /// Forward-difference Jacobian at `p` given the residuals `r0` there
 /// (relative step 1e-7; [`inward_jacobian`] without bounds).
+#[cfg(test)]
 pub(crate) fn jacobian<R: Residuals + ?Sized>(problem: &R, p: &[f64], r0: &[f64]) -> DMatrix<f64> {
     inward_jacobian(problem, p, r0, &unbounded(p.len()))
 }

@@ -393,11 +393,41 @@ fn the_tyre_dispatches_the_generic_forms_and_refuses_the_others() {
         include_str!("../../tests/fixtures/tir/MagicFormula61_Parameters.tir"),
     )
     .unwrap();
+    // The Magic Formula's generic force is its own formulae written out
+    // (not the vectorised fast path): equal to rounding, not bit for bit.
+    let t = Tyre::MagicFormula(Box::new(mf));
+    let p = t.lateral_parameters().unwrap();
+    let f = t.lateral_force_of(&p, &slip).unwrap();
+    assert!((f - t.lateral_force(&s)).abs() <= 1e-12 * f.abs(), "{f}");
+    assert_eq!(
+        t.friction_coefficient_of(&p, s.fz, s.mu_scale),
+        Some(t.friction_coefficient(s.fz, s.mu_scale))
+    );
     let registered = Tyre::Registered(Erased::new(Linear::new(55_000.0)));
-    for t in [Tyre::MagicFormula(Box::new(mf)), registered] {
-        let p = t.parameters();
-        assert_eq!(t.lateral_parameters(), None);
-        assert_eq!(t.lateral_force_of(&p, &slip), None);
-        assert_eq!(t.friction_coefficient_of(&p, s.fz, s.mu_scale), None);
-    }
+    let p = registered.parameters();
+    assert_eq!(registered.lateral_parameters(), None);
+    assert_eq!(registered.lateral_force_of(&p, &slip), None);
+    assert_eq!(
+        registered.friction_coefficient_of(&p, s.fz, s.mu_scale),
+        None
+    );
+}
+
+#[test]
+fn magic_formula_derivatives_match_central_differences() {
+    // MFeval's public 6.1 file (its load range 0.2–11 kN); no camber, the
+    // vehicle's wheel.
+    let mf = crate::io::tir::read_tir_text(
+        "MagicFormula61_Parameters.tir",
+        include_str!("../../tests/fixtures/tir/MagicFormula61_Parameters.tir"),
+    )
+    .unwrap();
+    let states = [
+        at(0.3, 4000.0, 1.0),
+        at(6.0, 5700.0, 0.9),
+        at(20.0, 4000.0, 1.1),
+        at(3.0, 800.0, 1.0),
+    ];
+    let r = check_states(&mf, &states);
+    eprintln!("mf61: worst {r:.1e} of the tolerance");
 }

@@ -42,16 +42,6 @@ tyre_models! {
     MagicFormula(MagicFormula, boxed),
 }
 
-/// The Magic Formula has no [`super::LateralForceOf`] yet: [`Tyre`]'s
-/// generic lateral force, friction coefficient and lateral parameters are
-/// `None` for it. When it implements the trait, this impl goes (the
-/// blanket one then answers for it; the compiler refuses both).
-impl MaybeLateralForceOf for MagicFormula {
-    fn visit_lateral<V: LateralVisitor>(&self, _v: V) -> Option<V::Output> {
-        None
-    }
-}
-
 /// A model as the registry holds it, its type erased: its name, how it is
 /// identified, its start tyre and its construction from a tyre file's table.
 pub trait ModelEntry: Send + Sync {

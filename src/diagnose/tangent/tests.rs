@@ -339,7 +339,7 @@ fn the_steer_paths_derivatives_are_its_central_differences() {
 }
 
 #[test]
-fn with_given_tyres_of_every_generic_model_every_effects_exact_jacobian_holds() {
+fn with_given_tyres_of_every_model_every_effects_exact_jacobian_holds() {
     use crate::tyre::{Gim, Pac89};
     let gim = Gim {
         load_exponent: 0.8,
@@ -350,6 +350,13 @@ fn with_given_tyres_of_every_generic_model_every_effects_exact_jacobian_holds() 
         Tyre::Gim(gim),
         Tyre::Pac89(Pac89::adams_example()),
         Tyre::Unitire(crate::tyre::tests::example_unitire()),
+        Tyre::MagicFormula(Box::new(
+            crate::io::tir::read_tir_text(
+                "MagicFormula61_Parameters.tir",
+                include_str!("../../../tests/fixtures/tir/MagicFormula61_Parameters.tir"),
+            )
+            .unwrap(),
+        )),
     ];
     for tyre in tyres {
         let car = Augmented::new(

@@ -91,7 +91,50 @@ impl MagicFormula {
     }
 }
 
+impl MagicFormula {
+    /// The peak factor of the pure lateral force over the load, `|μy|`
+    /// (TNO eq. 4.E23 at zero camber and zero slip speed, with the
+    /// pressure terms of 6.x and the road's friction scale `mu_scale` on
+    /// `LMUY`), with `PDY1` and `PDY2` in scalar `T`: the radius of the
+    /// friction circle per unit load.
+    pub(crate) fn friction_of<T: DualNum<f64> + Copy>(
+        &self,
+        (pdy1, pdy2): (T, T),
+        fz: T,
+        mu_scale: T,
+    ) -> T {
+        if !(fz.re() > 0.0 && fz.re().is_finite()) {
+            return T::from(0.0);
+        }
+        let c = &self.coefficients;
+        let fz = if self.options.limit_checks {
+            saturate(fz, None, self.limits.fz_max)
+        } else {
+            fz
+        };
+        let checked = self.checked(fz.re(), 0.0, self.pressure(None));
+        let fz0p = c.FNOMIN * c.LFZO;
+        let dfz = (fz - fz0p) / fz0p;
+        let dpi = if self.version == MfVersion::Mf52 || c.NOMPRES <= 0.0 {
+            0.0
+        } else {
+            (checked.p - c.NOMPRES) / c.NOMPRES
+        };
+        let lmuy_s = mu_scale * c.LMUY;
+        let lmuy = if self.options.digressive_mu {
+            lmuy_s * 10.0 / (lmuy_s * 9.0 + 1.0)
+        } else {
+            lmuy_s
+        };
+        ((dfz * pdy2 + pdy1) * (1.0 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * lmuy).abs()
+    }
+}
+
 impl LateralForceOf for MagicFormula {
+    fn friction_coefficient_of<T: DualNum<f64> + Copy>(&self, p: &[T], fz: T, mu_scale: T) -> T {
+        self.friction_of((p[1], p[2]), fz, mu_scale)
+    }
+
     fn lateral_force_of<T: DualNum<f64> + Copy>(&self, p: &[T], s: &SlipOf<T>) -> T {
         if !(s.fz.re() > 0.0 && s.fz.re().is_finite()) {
             return T::from(0.0);

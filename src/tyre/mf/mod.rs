@@ -390,6 +390,12 @@ fn to_crate(mut o: MfOutput, mirror: bool) -> MfOutput {
 }
 
 impl TyreModel for MagicFormula {
+    /// `|μy|·Fz`'s coefficient in closed form ([`MagicFormula::friction_of`]),
+    /// not the default's scan of the lateral force.
+    fn friction_coefficient(&self, fz: f64, mu_scale: f64) -> f64 {
+        let c = &self.coefficients;
+        self.friction_of((c.PDY1, c.PDY2), fz, mu_scale)
+    }
     fn forces(&self, s: &SlipState) -> TyreForces {
         let o = self.evaluate_scaled(
             &MfInput {

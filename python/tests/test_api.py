@@ -129,6 +129,7 @@ def test_diagnosis_is_typed_and_equals_its_json(tmp_path):
     d = handling.diagnose(c, out=tmp_path / "d")
     assert isinstance(d, handling.Diagnosis) and isinstance(d.verdict, handling.Verdict)
     assert d.verdict.effects == ["sensor_bias"]
+    assert d.derivatives == "differences"
     assert all(isinstance(x, handling.RankedEffect) for x in d.ranking)
     written = json.loads((tmp_path / "d" / "diagnosis.json").read_text())
     assert d.to_dict() == written

@@ -328,6 +328,9 @@ class Diagnosis(_Report):
     """The campaign's name."""
     seed: int
     """The seed of every random search."""
+    derivatives: str
+    """How the fits took their Jacobians: ``"differences"`` or ``"exact"``
+    (``[diagnose] derivatives``)."""
     runs: List[str]
     """The runs diagnosed."""
     folds: int

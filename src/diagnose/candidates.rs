@@ -103,7 +103,6 @@ impl Setting<'_> {
     pub(super) fn layout(&self, base: &Augmented) -> Layout {
         Layout {
             base: base.clone(),
-            fixed: self.fixed,
             kinds: self.kinds.clone(),
             axle: self.axle(),
         }
@@ -222,10 +221,8 @@ pub(super) fn base_models(
 /// What the axle shares set on the models `make` builds: their tyres.
 fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
     let (f, r) = axle_tyres(&[0.5, 0.5, 0.5]);
-    let base = make(f, r);
     Layout {
-        fixed: base.effects,
-        base,
+        base: make(f, r),
         kinds: Vec::new(),
         axle: true,
     }

@@ -13,24 +13,17 @@ use super::model::Augmented;
 /// What a fit's parameter vector sets on a model: the axle
 /// characteristics first when they are fitted (`axle`), then each
 /// effect's parameters in `kinds` order, then the roll dynamics when a
-/// roll effect is among them (as [`with_effects`] builds the plain model).
+/// roll effect is among them (as [`with_effects`] builds the plain model,
+/// which the problem's own `build` gives).
 #[derive(Debug, Clone)]
 pub struct Layout {
-    /// The model the parameters are set on.
+    /// The model the parameters are set on (its tyres say whether the
+    /// replay has a generic form).
     pub base: Augmented,
-    /// The effect values held fixed.
-    pub fixed: EffectSet,
     /// The effects fitted, in vector order.
     pub kinds: Vec<EffectKind>,
     /// Whether the axle characteristics lead the vector.
     pub axle: bool,
-}
-
-impl Layout {
-    /// The plain model of parameters `p`.
-    pub fn build(&self, p: &[f64]) -> Augmented {
-        with_effects(&self.base, &self.fixed, &self.kinds, self.axle, p)
-    }
 }
 
 /// Whether a candidate carries the roll-dynamics parameters.

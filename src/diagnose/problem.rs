@@ -60,8 +60,8 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     }
 
     /// The same problem with exact derivatives when `derivatives` asks
-    /// for them: `layout` says what the parameters set (its
-    /// [`Layout::build`] must be `build`), and the Jacobian comes from one
+    /// for them: `layout` says what the parameters set (as `build` sets
+    /// them), and the Jacobian comes from one
     /// replay of each run in dual numbers ([`super::tangent`]) instead of
     /// one per parameter.
     pub fn with_layout(mut self, layout: Layout, derivatives: Derivatives) -> Self {
@@ -110,11 +110,13 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
         if self.exact() {
             let layout = self.layout.as_ref().expect("exact() checked it");
             let q = self.clamp(p);
-            if let Some(j) = super::tangent::jacobian(layout, &self.runs, &self.scales, &q) {
-                // The dual replay is one evaluation in the fits' work
-                // reports: built once through `build`, whose callers
-                // count and time-stamp their evaluations.
-                let _counted = (self.build)(&q);
+            // The plain model of `q`, built once through `build` (whose
+            // callers count and time-stamp their evaluations: the dual
+            // replay is one evaluation in the fits' work reports).
+            let plain = (self.build)(&q);
+            if let Some(j) =
+                super::tangent::jacobian((layout, &plain), &self.runs, &self.scales, &q)
+            {
                 return j;
             }
         }

@@ -141,34 +141,33 @@ const MAX_PARAMETERS: usize = 14;
 /// each run; None when the model's tyres have no generic force or there
 /// are too many parameters.
 pub(super) fn jacobian(
-    layout: &Layout,
+    (layout, plain): (&Layout, &Augmented),
     runs: &[&Prepared],
     scales: &[f64; 3],
     p: &[f64],
 ) -> Option<DMatrix<f64>> {
     match p.len() + 2 {
-        0..=4 => jacobian_n::<4>(layout, runs, scales, p),
-        5..=8 => jacobian_n::<8>(layout, runs, scales, p),
-        n if n <= MAX_PARAMETERS + 2 => jacobian_n::<16>(layout, runs, scales, p),
+        0..=4 => jacobian_n::<4>((layout, plain), runs, scales, p),
+        5..=8 => jacobian_n::<8>((layout, plain), runs, scales, p),
+        n if n <= MAX_PARAMETERS + 2 => jacobian_n::<16>((layout, plain), runs, scales, p),
         _ => None,
     }
 }
 
 fn jacobian_n<const N: usize>(
-    layout: &Layout,
+    (layout, plain): (&Layout, &Augmented),
     runs: &[&Prepared],
     scales: &[f64; 3],
     p: &[f64],
 ) -> Option<DMatrix<f64>> {
     use rayon::prelude::*;
-    let plain = layout.build(p);
     let (model, _) = plain.model();
     let pt: Vec<DualSVec64<N>> = p
         .iter()
         .enumerate()
         .map(|(k, &v)| DualSVec64::<N>::variable(v, k))
         .collect();
-    let t = layout.tangent(&plain, &pt);
+    let t = layout.tangent(plain, &pt);
     let tyres = match &t.tyre_params {
         Some(params) => ParamTyres::new(&model.front, &model.rear, params.clone()),
         None => ParamTyres::constant(&model.front, &model.rear),
@@ -181,7 +180,7 @@ fn jacobian_n<const N: usize>(
     };
     let blocks: Vec<Vec<[f64; N]>> = runs
         .par_iter()
-        .map(|r| run_rows(&m, &t, &plain, r, scales))
+        .map(|r| run_rows(&m, &t, plain, r, scales))
         .collect();
     let rows: usize = blocks.iter().map(Vec::len).sum();
     let mut j = DMatrix::zeros(rows, p.len());

@@ -54,6 +54,18 @@ fn run(truth: &Augmented, step: f64, speed0: f64) -> Prepared {
     p
 }
 
+/// The plain model of parameters `q` of `layout` (no effect held fixed):
+/// what a problem's `build` gives.
+fn build(layout: &Layout, q: &[f64]) -> Augmented {
+    crate::diagnose::layout::with_effects(
+        &layout.base,
+        &EffectSet::default(),
+        &layout.kinds,
+        layout.axle,
+        q,
+    )
+}
+
 /// A parameter value inside its box, 31.3 % of the way from its off value
 /// (the middle when it has none) to its upper bound: a delay then falls
 /// between the replay's stage times, where its residuals are smooth (a
@@ -125,7 +137,7 @@ fn check(
 ) -> Vec<f64> {
     let scales = [0.01, 0.2, 0.002];
     let problem = Problem::new(
-        |q: &[f64]| layout.build(q),
+        |q: &[f64]| build(layout, q),
         runs.iter().collect(),
         scales,
         bounds.clone(),
@@ -147,7 +159,7 @@ fn reference_noise(
     bounds: &[(f64, f64)],
 ) -> Vec<f64> {
     let problem = Problem::new(
-        |q: &[f64]| layout.build(q),
+        |q: &[f64]| build(layout, q),
         runs.iter().collect(),
         [0.01, 0.2, 0.002],
         bounds.to_vec(),
@@ -181,7 +193,6 @@ fn every_effects_exact_jacobian_equals_central_differences_under_rk4() {
     for kind in EffectKind::ALL {
         let layout = Layout {
             base: sedan(),
-            fixed: EffectSet::default(),
             kinds: vec![kind],
             axle: true,
         };
@@ -214,7 +225,6 @@ fn the_exact_jacobian_of_a_stiff_replay_by_ros34pw2_equals_central_differences()
     ] {
         let layout = Layout {
             base: car.clone(),
-            fixed: EffectSet::default(),
             kinds: vec![kind],
             axle: true,
         };
@@ -256,13 +266,12 @@ fn on_a_zero_delay_or_lag_the_exact_jacobian_is_the_one_sided_derivative_into_th
     ] {
         let layout = Layout {
             base: sedan(),
-            fixed: EffectSet::default(),
             kinds: vec![kind],
             axle: false,
         };
         let bounds: Vec<(f64, f64)> = kind.parameters().iter().map(|q| q.bounds).collect();
         let problem = Problem::new(
-            |q: &[f64]| layout.build(q),
+            |q: &[f64]| build(&layout, q),
             runs.iter().collect(),
             [0.01, 0.2, 0.002],
             bounds.clone(),
@@ -367,7 +376,6 @@ fn with_given_tyres_of_every_model_every_effects_exact_jacobian_holds() {
         for kind in EffectKind::ALL {
             let layout = Layout {
                 base: car.clone(),
-                fixed: EffectSet::default(),
                 kinds: vec![kind],
                 axle: false,
             };

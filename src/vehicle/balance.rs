@@ -8,7 +8,7 @@
 
 use super::loads::{solve_load_transfer, LoadSplit};
 use super::scalar::{off, ModelScalars, Scalar};
-use super::wheels::{AxleTyres, PlainTyres, FRONT, REAR};
+use super::wheels::{AxleTyres, FRONT, REAR};
 use super::{Inputs, Kinematics, LoadTransferSeed, VehicleModel, MIN_SPEED};
 
 /// What the load-transfer loop carries out of its last evaluation.
@@ -138,14 +138,18 @@ pub(super) struct Balance<T> {
 
 impl<T: Scalar> Balance<T> {
     /// The values without their derivatives (the tyres' per-load factors
-    /// evaluated again in plain numbers).
-    fn re(&self, plain: &PlainTyres) -> Balance<f64> {
+    /// too: their value parts, not evaluated again).
+    fn re(&self) -> Balance<f64> {
         let re2 = |x: [T; 2]| [x[0].re(), x[1].re()];
         let road = Road {
             mu: self.road.mu.re(),
             speed: self.road.speed,
         };
-        let at = |a: &AtSlip<T>| AtSlip::new(plain, a.axle, a.alpha.re(), road);
+        let at = |a: &AtSlip<T>| AtSlip {
+            axle: a.axle,
+            alpha: a.alpha.re(),
+            per_load: a.per_load.map(|k| k.re()),
+        };
         Balance {
             split: self.split.re(),
             front_at: self.front_at.as_ref().map(at),
@@ -175,8 +179,8 @@ impl<T: Scalar> Balance<T> {
 
     /// The plain balance a compliant front's slip is solved in when `T`
     /// carries derivatives (None otherwise).
-    pub(super) fn plain_if_compliant(&self, tyres: &impl AxleTyres<T>) -> Option<Balance<f64>> {
-        (!T::PLAIN && self.front_at.is_none()).then(|| self.re(&tyres.plain()))
+    pub(super) fn plain_if_compliant(&self) -> Option<Balance<f64>> {
+        (!T::PLAIN && self.front_at.is_none()).then(|| self.re())
     }
 
     /// The front slip angle and axle force on wheel loads `fz`; `re` the
@@ -260,7 +264,7 @@ impl<T: Scalar> Balance<T> {
             return (T::from(y), s, n);
         }
         let plain = tyres.plain();
-        let re = self.re(&plain);
+        let re = self.re();
         let (root, _, _, n) = solve_load_transfer(self.transfer, seed, tolerance, |ay| {
             re.eval(&plain, None, ay)
         });

@@ -233,7 +233,7 @@ impl VehicleModel {
                 (ay, s, n, Some(seed))
             }
             LoadSolve::At(ay) => {
-                let (y, s) = balance.eval(tyres, balance.plain_if_compliant(tyres).as_ref(), ay);
+                let (y, s) = balance.eval(tyres, balance.plain_if_compliant().as_ref(), ay);
                 (y, s, 1, None)
             }
         };

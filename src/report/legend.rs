@@ -9,7 +9,7 @@ use super::series::{palette, Series, Shape, Style, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-const FONT: (&str, u32) = ("sans-serif", 13);
+const FONT: (&str, u32) = ("sans-serif", super::plot::LABEL_PX);
 const ROW: i32 = 20;
 
 /// Draws the key of `series` into `side`, from the top.

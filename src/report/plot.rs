@@ -2,6 +2,12 @@
 //! fonts needed), as PNG files or as SVG text for a self-contained HTML
 //! report. A [`Figure`] is a stack of panels sharing nothing but the image;
 //! each panel holds line, dashed-line and point series.
+//!
+//! What is drawn can be read without drawing: a panel's axis ranges as
+//! drawn ([`Panel::axes`]), its series with their styles, and the size its
+//! labels print at ([`Figure::printed_label_points`]), so that a figure's
+//! tests assert on the figure, not on its pixels. Tick labels are written
+//! as a reader writes numbers ([`tick_label`]: `-30`, `10000`, `0.25`).
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
 pub use super::series::{palette, Marker, Series, Shape, Style};
@@ -40,6 +46,53 @@ pub struct Panel {
     pub x_range: Option<(f64, f64)>,
     /// Fixed y range (default: the data's).
     pub y_range: Option<(f64, f64)>,
+}
+
+/// The ranges a panel's axes are drawn over (data units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Axes {
+    /// x from, to.
+    pub x: (f64, f64),
+    /// y from, to.
+    pub y: (f64, f64),
+}
+
+impl Panel {
+    /// The axis ranges the panel is drawn over: the fixed ones, else the
+    /// data's with a margin of 5 % (a map's outer cell edges).
+    pub fn axes(&self) -> Axes {
+        let (data_x, data_y) = super::cells::ranges(&self.series);
+        Axes {
+            x: self.x_range.unwrap_or(data_x),
+            y: self.y_range.unwrap_or(data_y),
+        }
+    }
+}
+
+/// Size of the axis labels and key text, px.
+pub const LABEL_PX: u32 = 13;
+
+/// Width of the text column of a printed report (A4 with 20 mm margins),
+/// mm: the width a figure is scaled to when printed.
+pub const PRINT_WIDTH_MM: f64 = 170.0;
+
+/// A tick value as a reader writes it: with the decimals the axis's `span`
+/// needs (two below its order of magnitude), without trailing zeros or a
+/// lone point, and never `-0` — `-30`, `10000`, `0.25`.
+pub fn tick_label(v: f64, span: f64) -> String {
+    let decimals = if span > 0.0 && span.is_finite() {
+        ((2.0 - span.log10().floor()).max(0.0) as usize).min(12)
+    } else {
+        3
+    };
+    let mut s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        s = s.trim_end_matches('0').trim_end_matches('.').to_string();
+    }
+    if s == "-0" {
+        s = "0".into();
+    }
+    s
 }
 
 /// A stack of panels (or a grid with `columns` > 1).
@@ -106,6 +159,13 @@ impl Figure {
         Ok(text)
     }
 
+    /// The size, pt, the axis labels print at when the figure is scaled to
+    /// the text width of a printed report ([`PRINT_WIDTH_MM`]).
+    pub fn printed_label_points(&self) -> f64 {
+        let text_width_pt = PRINT_WIDTH_MM / 25.4 * 72.0;
+        f64::from(LABEL_PX) * text_width_pt / f64::from(self.width)
+    }
+
     /// Width and height of the image, px.
     fn size(&self) -> (u32, u32) {
         let rows = self.panels.len().div_ceil(self.columns).max(1);
@@ -162,9 +222,10 @@ where
     } else {
         (area.clone(), None, None)
     };
-    let (data_x, data_y) = super::cells::ranges(&panel.series);
-    let (x0, x1) = panel.x_range.unwrap_or(data_x);
-    let (y0, y1) = panel.y_range.unwrap_or(data_y);
+    let Axes {
+        x: (x0, x1),
+        y: (y0, y1),
+    } = panel.axes();
     let mut chart = ChartBuilder::on(&plot)
         .caption(&panel.title, ("sans-serif", 16))
         .margin(8)
@@ -175,7 +236,9 @@ where
         .configure_mesh()
         .x_desc(&panel.x_label)
         .y_desc(&panel.y_label)
-        .label_style(("sans-serif", 13))
+        .label_style(("sans-serif", LABEL_PX))
+        .x_label_formatter(&|v| tick_label(*v, x1 - x0))
+        .y_label_formatter(&|v| tick_label(*v, y1 - y0))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
     for s in &panel.series {
@@ -353,6 +416,62 @@ mod tests {
             .collect();
         assert_eq!(labels.len(), 2, "{svg}");
         assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
+    }
+
+    #[test]
+    fn tick_labels_are_written_as_a_reader_writes_numbers() {
+        assert_eq!(tick_label(-30.0, 20.0), "-30");
+        assert_eq!(tick_label(10000.0, 20000.0), "10000");
+        assert_eq!(tick_label(2.5, 20.0), "2.5");
+        assert_eq!(tick_label(0.30000000000000004, 1.0), "0.3");
+        assert_eq!(tick_label(0.025, 0.1), "0.025");
+        assert_eq!(tick_label(-1e-17, 2.0), "0");
+        assert_eq!(tick_label(1.5e-4, 1e-3), "0.00015");
+    }
+
+    #[test]
+    fn no_axis_tick_of_a_drawn_figure_ends_in_a_lone_zero_decimal() {
+        // Axes over −30..30 deg and −10000..10000 N: plotters' own labels
+        // would read `-30.0` and `10000.0`.
+        let x = [-30.0, 0.0, 30.0];
+        let fig = Figure::stack(vec![Panel {
+            series: vec![Series::line("", &x, &[-10000.0, 0.0, 10000.0], 0)],
+            x_range: Some((-30.0, 30.0)),
+            y_range: Some((-10000.0, 10000.0)),
+            ..Panel::default()
+        }]);
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let ticks: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+        for t in ["-30", "0", "30", "-10000", "10000"] {
+            assert!(ticks.iter().any(|s| s == t), "{t} missing from {ticks:?}");
+        }
+        assert!(
+            ticks.iter().all(|t| !t.ends_with(".0")),
+            "a tick ends in .0: {ticks:?}"
+        );
+    }
+
+    #[test]
+    fn the_axes_drawn_are_the_fixed_ranges_or_the_datas_with_a_margin() {
+        let p = Panel {
+            series: vec![Series::line("", &[0.0, 10.0], &[-1.0, 3.0], 0)],
+            ..Panel::default()
+        };
+        assert_eq!(
+            p.axes(),
+            Axes {
+                x: (-0.5, 10.5),
+                y: (-1.2, 3.2)
+            }
+        );
+        let fixed = Panel {
+            y_range: Some((0.0, 1.0)),
+            ..p
+        };
+        assert_eq!(fixed.axes().y, (0.0, 1.0));
+        // 13 px labels on a 1000 px figure print at 6.3 pt at 170 mm.
+        let f = Figure::stack(vec![]);
+        assert!((f.printed_label_points() - 6.26).abs() < 0.01);
     }
 
     #[test]

@@ -1,8 +1,10 @@
 //! Numbers as messages and reports print them: no negative zero (a camber
 //! level a hair below 0 is "0.00°"), significant digits for values that
 //! span decades, and two values compared in a sentence printed with the
-//! digits that tell them apart. This module imports nothing, so that any
-//! layer (the errors, identification, the jobs) can use it.
+//! digits that tell them apart; and a name the user mistyped answered
+//! with the known one it is nearest ([`did_you_mean`]). This module imports
+//! nothing, so that any layer (the errors, identification, the jobs) can
+//! use it.
 
 /// `v` with `decimals` decimals; a value that rounds to zero prints as an
 /// unsigned zero (a camber of −1e-5 rad is "0.00°", not "-0.00°").
@@ -51,6 +53,50 @@ fn unsigned_zero(s: String) -> String {
     }
 }
 
+/// The edit distance of `a` and `b` in characters, case ignored: the
+/// fewest insertions, deletions, substitutions and transpositions of two
+/// neighbours (optimal string alignment; Damerau 1964) that turn one into
+/// the other — `pac98` is one from `pac89`.
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.to_lowercase().chars().collect();
+    let b: Vec<char> = b.to_lowercase().chars().collect();
+    // Three rows of the table: two back (transpositions), one back, this.
+    let mut back2 = vec![0; b.len() + 1];
+    let mut back: Vec<usize> = (0..=b.len()).collect();
+    for i in 1..=a.len() {
+        let mut row = vec![i; b.len() + 1];
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            row[j] = (back[j] + 1).min(row[j - 1] + 1).min(back[j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                row[j] = row[j].min(back2[j - 2] + 1);
+            }
+        }
+        back2 = std::mem::replace(&mut back, row);
+    }
+    back[b.len()]
+}
+
+/// The known name nearest `given`, when it is near enough to be what was
+/// meant: at most one edit per three characters of the longer name
+/// (`3·d ≤ n + 1`), so a slip or two in a long name is caught and an
+/// unrelated short word is not; the first of equally near names.
+pub fn nearest_name<'a>(given: &str, known: &[&'a str]) -> Option<&'a str> {
+    known
+        .iter()
+        .map(|k| (edit_distance(given, k), *k))
+        .filter(|(d, k)| 3 * d <= given.chars().count().max(k.chars().count()) + 1)
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, k)| k)
+}
+
+/// ` (did you mean `x`?)` for the known name nearest `given`
+/// ([`nearest_name`]), or nothing: the clause an error about an unknown
+/// name puts after the name.
+pub fn did_you_mean(given: &str, known: &[&str]) -> String {
+    nearest_name(given, known).map_or(String::new(), |k| format!(" (did you mean `{k}`?)"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -89,5 +135,24 @@ mod tests {
             (a.as_str(), b.as_str(), differ),
             ("2.500000", "2.500000", false)
         );
+    }
+
+    #[test]
+    fn a_mistyped_name_is_answered_with_the_nearest_known_one() {
+        assert_eq!(edit_distance("pac98", "pac89"), 1);
+        assert_eq!(edit_distance("sensor_dely", "sensor_delay"), 1);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(edit_distance("PAC89", "pac89"), 0);
+        let models = ["gim", "magic-simple", "pac89", "unitire", "linear"];
+        assert_eq!(nearest_name("pac98", &models), Some("pac89"));
+        assert_eq!(nearest_name("unitrie", &models), Some("unitire"));
+        assert_eq!(nearest_name("brush", &models), None);
+        assert_eq!(nearest_name("x", &["metric", "unit"]), None);
+        assert_eq!(
+            did_you_mean("relaxation_lenght", &["sensor_delay", "relaxation_length"]),
+            " (did you mean `relaxation_length`?)"
+        );
+        assert_eq!(did_you_mean("brush", &models), "");
     }
 }

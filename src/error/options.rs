@@ -103,12 +103,22 @@ impl std::fmt::Display for ShardField {
     }
 }
 
+/// The known names of a set as an error lists them: all of a short set,
+/// the count of a long one (the 180 keys of a `.tir`).
+fn listing(known: &[&str]) -> String {
+    if known.len() <= 24 {
+        format!("one of {}", known.join(", "))
+    } else {
+        format!("not one of the {} known", known.len())
+    }
+}
+
 /// Options that name nothing known or contradict each other.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum OptionsError {
     /// A name that is no member of its closed set.
-    #[error("unknown {what} `{given}`: one of {}", known.join(", "))]
+    #[error("unknown {what} `{given}`{}: {}", crate::format::did_you_mean(given, known), listing(known))]
     UnknownName {
         /// The set.
         what: NameKind,
@@ -121,7 +131,7 @@ pub enum OptionsError {
     #[error("--mode: {0}")]
     Mode(#[from] ModeError),
     /// A local polish that is not one of the methods.
-    #[error("unknown local method `{given}`: lm, gn or none")]
+    #[error("unknown local method `{given}`{}: lm, gn or none", crate::format::did_you_mean(given, &["lm", "gn", "none"]))]
     UnknownLocalMethod {
         /// The name given.
         given: String,

@@ -238,9 +238,11 @@ impl<'de> Visitor<'de> for ModelKey {
 
     fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Self::Value, E> {
         entry(v).ok_or_else(|| {
-            let names: Vec<String> = model_names().iter().map(|n| format!("`{n}`")).collect();
+            let known: Vec<&str> = model_names().iter().map(|m| m.as_str()).collect();
+            let names: Vec<String> = known.iter().map(|n| format!("`{n}`")).collect();
             E::custom(format!(
-                "unknown variant `{v}`, expected one of {}",
+                "unknown variant `{v}`{}, expected one of {}",
+                crate::format::did_you_mean(v, &known),
                 names.join(", ")
             ))
         })

@@ -246,6 +246,7 @@ mod scenarios;
 mod screening;
 mod shards;
 mod sweeps;
+mod trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
 pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {

@@ -195,7 +195,11 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let [ds, rs, as_, bs] = mean(rec, steady);
     let (d_step, r_step, a_step) = (ds - d0, rs - r0, as_ - a0);
     if d_step == 0.0 || !d_step.is_finite() || d_step.abs() < MIN_STEP {
-        return Err(MetricsError::NoStep(d_step));
+        return Err(MetricsError::NoStep {
+            initial: d0,
+            steady: ds,
+            min: MIN_STEP,
+        });
     }
     for (step, name) in [(r_step, "yaw rate"), (a_step, "lateral acceleration")] {
         if step == 0.0 || !step.is_finite() {
@@ -212,7 +216,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let dn = |x: &Sample| (x.steer - d0) / d_step;
     let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
     let an = |x: &Sample| (x.ay - a0) / a_step;
-    let t0 = first_reach(rec, t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoStep(d_step))?;
+    let t0 = first_reach(rec, t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoHalfStep)?;
     let tr = first_reach(rec, t0, |x| rn(x) - 0.9).ok_or(MetricsError::NoCrossing("yaw rate"))?;
     let ta = first_reach(rec, t0, |x| an(x) - 0.9)
         .ok_or(MetricsError::NoCrossing("lateral acceleration"))?;

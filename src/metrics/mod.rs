@@ -169,7 +169,7 @@ pub struct StepMetrics {
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).
-const MIN_STEP: f64 = 1.745e-4;
+pub(crate) const MIN_STEP: f64 = 1.745e-4;
 
 fn window_mean(t: &[f64], x: &[f64], from: f64, to: f64) -> (f64, f64) {
     let (mut s, mut s2, mut n) = (0.0, 0.0, 0usize);
@@ -337,9 +337,14 @@ pub(crate) fn step_metrics(
     let (steer_f, yaw_rate_f) = (filtered(steer), filtered(yaw_rate));
     let ay_f = ay.map(filtered);
     let beta_f = beta.map(filtered);
-    let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| MetricsError::NoStep(0.0))?;
+    let no_step = || MetricsError::NoStep {
+        initial: window_mean(t, &steer_f, t[0], t[0] + s.pre_window).0,
+        steady: window_mean(t, &steer_f, t[n - 1] - s.steady_window, t[n - 1]).0,
+        min: MIN_STEP,
+    };
+    let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| no_step())?;
     if d.steady.abs() < MIN_STEP {
-        return Err(MetricsError::NoStep(d.steady));
+        return Err(no_step());
     }
     let r = normalise(t, yaw_rate, &yaw_rate_f, s, "yaw rate")?;
     let a = match (ay, ay_f.as_deref()) {
@@ -347,7 +352,7 @@ pub(crate) fn step_metrics(
         _ => None,
     };
     let r_noise = gain * r.noise;
-    let t0 = first_crossing(t, &d.values, 0.5, t[0]).ok_or(MetricsError::NoStep(d.steady))?;
+    let t0 = first_crossing(t, &d.values, 0.5, t[0]).ok_or(MetricsError::NoHalfStep)?;
     let tr = first_crossing(t, &r.values, 0.9, t0).ok_or(MetricsError::NoCrossing("yaw rate"))?;
     let ta = match &a {
         Some(a) => Some(

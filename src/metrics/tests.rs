@@ -98,7 +98,14 @@ fn refuses_records_without_a_step() {
     let t = grid(0.01, 5.0);
     let z = vec![0.0; t.len()];
     let e = step_metrics(&t, &z, &z, Some(&z), None, &MetricSettings::default()).unwrap_err();
-    assert!(matches!(e, MetricsError::NoStep(_)), "{e}");
+    assert!(matches!(e, MetricsError::NoStep { .. }), "{e}");
+    assert_eq!(e.to_string(), "no steer step: the steer stays at 0 rad (0.00°) from the initial window to the steady one; a step steer needs a change of at least 0.00017 rad (0.01°)");
+    let small: Vec<f64> = t
+        .iter()
+        .map(|&x| if x > 1.0 { 1e-4 } else { 0.0 })
+        .collect();
+    let e = step_metrics(&t, &small, &z, Some(&z), None, &MetricSettings::default()).unwrap_err();
+    assert_eq!(e.to_string(), "no steer step: the steer goes from 0 rad (0.00°) in the initial window to 0.00010 rad (0.01°) in the steady one, a change of 0.00010 rad (0.01°), less than the 0.00017 rad (0.01°) a step steer needs");
     let e = step_metrics(
         &t[..5],
         &z[..5],

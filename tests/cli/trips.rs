@@ -61,3 +61,35 @@ fn a_mistyped_effect_model_or_programme_is_answered_with_the_nearest_name() {
     );
 }
 
+/// A run at 20 m/s whose steer is `steer(t)`, sampled at 100 Hz for 6 s.
+fn run_csv(steer: impl Fn(f64) -> f64) -> String {
+    let mut s = String::from("t,speed,steer,yaw_rate,ay\n");
+    for k in 0..600 {
+        let t = 0.01 * f64::from(k);
+        let d = steer(t);
+        s += &format!("{t},20,{d},{},{}\n", 4.0 * d, 80.0 * d);
+    }
+    s
+}
+
+#[test]
+fn metrics_of_a_run_without_a_step_say_what_the_steer_does() {
+    let dir = scratch(&[
+        ("still.csv", &run_csv(|_| 0.0)),
+        ("tiny.csv", &run_csv(|t| if t > 2.0 { 1e-4 } else { 0.0 })),
+    ]);
+    let e = fails(&["metrics", dir.path().join("still.csv").to_str().unwrap()]);
+    assert!(
+        e.contains("the steer stays at 0 rad (0.00°) from the initial window to the steady one; a step steer needs a change of at least 0.00017 rad (0.01°)"),
+        "{e}"
+    );
+    assert!(!e.contains("e0 rad") && !e.contains("e-"), "{e}");
+    let e = fails(&["metrics", dir.path().join("tiny.csv").to_str().unwrap()]);
+    assert!(
+        e.contains(
+            "a change of 0.00010 rad (0.01°), less than the 0.00017 rad (0.01°) a step steer needs"
+        ),
+        "{e}"
+    );
+}
+

@@ -13,6 +13,12 @@ pub enum ParamReason {
     /// Not a finite number.
     #[error("must be a finite number")]
     NotFinite,
+    /// A step steer without a step, rad.
+    #[error("a step steer needs a steer step of at least {min:.5} rad ({:.2}°) from straight running", min.to_degrees())]
+    NoSteerStep {
+        /// The smallest step the metrics take as one, rad.
+        min: f64,
+    },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]
     NotPositive,
@@ -210,4 +216,7 @@ pub enum Limit {
     /// The time a step steer needs to settle.
     #[error("the run must last at least 2 s after the steer reaches its final value, to reach steady state")]
     SettleTime,
+    /// A front road-wheel steer angle, rad.
+    #[error("no road wheel steers beyond ±45° (0.785 rad; a car's largest mean road-wheel steer is about 35–40°): steer angles are in radians, so is the value in degrees?")]
+    RoadWheelSteer,
 }

@@ -12,6 +12,7 @@ use super::{read_run, MeasuredRun};
 use crate::error::{InputError, InputProblem, Limit, ParamError, ParamReason};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
+use crate::metrics::MIN_STEP;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -216,6 +217,22 @@ pub struct Scenario {
     pub cleaning: Option<crate::measured::clean::CleaningReport>,
 }
 
+/// The largest front road-wheel steer a manoeuvre may ask for, rad (45°):
+/// above a car's lock (a mean road-wheel steer of about 35–40°), and the
+/// angle beyond which a steer in radians is likely one in degrees.
+pub(crate) const MAX_ROAD_WHEEL_STEER: f64 = std::f64::consts::FRAC_PI_4;
+
+/// A steer angle a manoeuvre reaches, within ±[`MAX_ROAD_WHEEL_STEER`].
+fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> {
+    ParamError::in_range(
+        key,
+        steer,
+        -MAX_ROAD_WHEEL_STEER,
+        MAX_ROAD_WHEEL_STEER,
+        Limit::RoadWheelSteer,
+    )
+}
+
 /// The checks every timed manoeuvre shares: a positive speed and an end
 /// after the start.
 fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
@@ -376,14 +393,29 @@ fn step_steer(
             })
     };
     let trim = solve(0.0)?;
+    // A step steer needs a step the metrics can measure, and one a road
+    // wheel can make: refused at the key that asks for it.
+    let step = |key: &str, v: f64, d: f64| {
+        if d.abs() < MIN_STEP {
+            return Err(ParamError::new(
+                key,
+                v,
+                ParamReason::NoSteerStep { min: MIN_STEP },
+            ));
+        }
+        road_wheel_steer(key, d + trim.steer).map_err(|e| ParamError::new(key, v, e.reason))
+    };
     let amplitude = match (s.steer, s.lateral_acceleration) {
         (Some(d), None) => {
             check(src, ParamError::finite("steer", d))?;
+            check(src, step("steer", d, d))?;
             d
         }
         (None, Some(ay)) => {
             check(src, ParamError::finite("lateral_acceleration", ay))?;
-            solve(ay)?.steer - trim.steer
+            let d = solve(ay)?.steer - trim.steer;
+            check(src, step("lateral_acceleration", ay, d))?;
+            d
         }
         _ => {
             return Err(param_error(
@@ -453,15 +485,24 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
         ManoeuvreSpec::RampSteer(r) => {
             check(src, timing(r.speed, r.start, r.end))?;
             check(src, ParamError::finite("rate", r.rate))?;
+            // The steer the ramp reaches at its end.
+            let last = r.rate * (r.end - r.start);
+            check(
+                src,
+                road_wheel_steer("rate", last)
+                    .map_err(|e| ParamError::new("rate", r.rate, e.reason)),
+            )?;
             Manoeuvre::RampSteer(*r)
         }
         ManoeuvreSpec::Sine(s) => {
             check(src, timing(s.speed, s.start, s.end))?;
             check(src, ParamError::positive("frequency", s.frequency))?;
+            check(src, road_wheel_steer("amplitude", s.amplitude))?;
             Manoeuvre::Sine(*s)
         }
         ManoeuvreSpec::Sweep(s) => {
             check(src, timing(s.speed, s.start, s.end))?;
+            check(src, road_wheel_steer("amplitude", s.amplitude))?;
             check(src, ParamError::non_negative("f_start", s.f_start))?;
             check(src, ParamError::positive("f_end", s.f_end))?;
             Manoeuvre::Sweep(*s)

@@ -93,3 +93,38 @@ fn metrics_of_a_run_without_a_step_say_what_the_steer_does() {
     );
 }
 
+#[test]
+fn simulate_refuses_a_steer_no_road_wheel_makes_and_a_step_of_nothing_at_its_key() {
+    for (steer, expected) in [
+        (
+            "1.7",
+            "`manoeuvre.steer` = 1.7: must lie in (-0.785398, 0.785398]: no road wheel steers beyond ±45°",
+        ),
+        (
+            "0",
+            "`manoeuvre.steer` = 0: a step steer needs a steer step of at least 0.00017 rad (0.01°) from straight running",
+        ),
+    ] {
+        let dir = scenario(
+            VEHICLE,
+            GIM,
+            &format!("[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2\nsteer = {steer}\n"),
+        );
+        let e = simulate_err(dir.path());
+        let file = dir.path().join("scenario.toml");
+        assert!(e.contains(&format!("{}:", file.display())), "{e}");
+        assert!(e.contains(expected), "{steer}: {e}");
+    }
+    // A sine of 60° of road-wheel steer likewise.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"sine\"\nspeed = 20.0\namplitude = 1.05\nfrequency = 0.5\nend = 4.0\n",
+    );
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains("`manoeuvre.amplitude` = 1.05: must lie in"),
+        "{e}"
+    );
+}
+

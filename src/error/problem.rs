@@ -61,6 +61,15 @@ impl RigChannel {
     }
 }
 
+/// `v` and its unit, if it has one: `300 m/s`, `10`.
+fn with_unit(v: f64, unit: &str) -> String {
+    if unit.is_empty() {
+        Num(v).to_string()
+    } else {
+        format!("{} {unit}", Num(v))
+    }
+}
+
 /// A least-squares slope of a channel against its slip near zero slip.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SmallSlipSlope {
@@ -247,6 +256,30 @@ pub enum InputProblem {
     NonPositivePressure {
         /// The pressure, Pa.
         value: f64,
+    },
+    /// A tyre input outside the range a tyre model is evaluated in.
+    #[error("column `{column}`: {} is outside {} to {}, the range a tyre is evaluated in ({why})", with_unit(*value, unit), Num(*lo), with_unit(*hi, unit))]
+    NotPhysical {
+        /// The column.
+        column: &'static str,
+        /// The value read.
+        value: f64,
+        /// The range's lower end.
+        lo: f64,
+        /// The range's upper end.
+        hi: f64,
+        /// The column's unit.
+        unit: &'static str,
+        /// What the range's ends are.
+        why: &'static str,
+    },
+    /// A tyre model that gives a non-finite output at a point.
+    #[error("the {model} tyre gives a non-finite `{output}` at this point")]
+    NonFiniteOutput {
+        /// The tyre model.
+        model: &'static str,
+        /// The output column.
+        output: &'static str,
     },
     /// An angle beyond what a tyre test in radians reaches.
     #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
@@ -435,6 +468,8 @@ impl InputProblem {
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
+            InputProblem::NotPhysical { .. } => "NotPhysical",
+            InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
             InputProblem::NoSweep => "NoSweep",
             InputProblem::NoLateral => "NoLateral",

@@ -4,8 +4,17 @@
 //! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
 //! vertical model) out. A Magic Formula tyre is evaluated in one of MFeval's modes
 //! (`useMode`, default 121: limit checks on, `α*` on); with the limit
-//! checks on, the points outside the file's ranges are counted (they are
-//! evaluated at the limits, as MFeval does).
+//! checks on, the points outside the file's ranges are counted (their
+//! load, slip, camber and pressure are evaluated at the ranges' ends, as
+//! MFeval does; the speed has no range in a `.tir`).
+//!
+//! A point no tyre is evaluated at is refused, by file, line, column and
+//! value, before anything is evaluated ([`PHYSICAL`]): a load beyond
+//! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
+//! road speed), a slip or camber angle beyond ±90°, a speed beyond
+//! ±300 m/s, a pressure above 5 MPa. A model that still gives a
+//! non-finite force or moment at a point is refused at that point: the
+//! output never holds a non-finite value.
 
 use crate::error::Error;
 use crate::io::tir::set_tyre_mode;
@@ -15,7 +24,67 @@ use crate::tyre::mf::MfInput;
 use crate::tyre::PointForces;
 use crate::tyre::Tyre;
 use serde::Serialize;
+use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};
+
+/// The range each input column of `tyre-eval` must lie in: (column, low
+/// end, high end, unit, what the ends are). Ends included.
+pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
+    ("fz", -1e6, 1e6, "N", "1 MN, above any tyre's load"),
+    (
+        "kappa",
+        -10.0,
+        10.0,
+        "",
+        "a wheel spinning at eleven times the road speed",
+    ),
+    (
+        "alpha",
+        -FRAC_PI_2,
+        FRAC_PI_2,
+        "rad",
+        "±90°: beyond it the wheel rolls backwards",
+    ),
+    (
+        "camber",
+        -FRAC_PI_2,
+        FRAC_PI_2,
+        "rad",
+        "±90°: a wheel on its side",
+    ),
+    (
+        "speed",
+        -300.0,
+        300.0,
+        "m/s",
+        "1080 km/h, above any pneumatic tyre's speed",
+    ),
+    (
+        "pressure",
+        0.0,
+        5e6,
+        "Pa",
+        "5 MPa, above any pneumatic tyre's inflation",
+    ),
+];
+
+/// The first value of `values` (column `name`) outside its [`PHYSICAL`]
+/// range: its row and the problem.
+fn not_physical(name: &str, values: &[f64]) -> Option<(usize, crate::error::InputProblem)> {
+    let &(column, lo, hi, unit, why) = PHYSICAL.iter().find(|p| p.0 == name)?;
+    let i = values.iter().position(|v| !(lo..=hi).contains(v))?;
+    Some((
+        i,
+        crate::error::InputProblem::NotPhysical {
+            column,
+            value: values[i],
+            lo,
+            hi,
+            unit,
+            why,
+        },
+    ))
+}
 
 /// The report of `tyre-eval`: the points with their forces and moments.
 #[derive(Debug, Clone, Serialize)]
@@ -29,8 +98,9 @@ pub struct TyreEvalReport {
     /// MFeval's `useMode` the Magic Formula was evaluated in (`None` for
     /// other models).
     pub mode: Option<u32>,
-    /// Points outside the `.tir` file's ranges, evaluated at the limits
-    /// (limit checks on; 0 otherwise).
+    /// Points outside the `.tir` file's ranges of load, slip, camber or
+    /// pressure, evaluated at the ranges' ends (limit checks on; 0
+    /// otherwise).
     pub clamped: usize,
     /// Output columns, named, in file order.
     #[serde(skip)]
@@ -76,6 +146,15 @@ pub fn run(
         .into_iter()
         .map(|n| (n, c.take(n)))
         .collect();
+    let given = columns
+        .iter()
+        .map(|(n, v)| (*n, v))
+        .chain(pressure.as_ref().map(|p| ("pressure", p)));
+    for (name, values) in given {
+        if let Some((i, problem)) = not_physical(name, values) {
+            return Err(c.error_at(points, i, name, problem).into());
+        }
+    }
     let f = {
         let col = |i: usize| &columns[i].1;
         let p = pressure.clone().unwrap_or_default();
@@ -109,6 +188,8 @@ pub fn run(
         }
         _ => (None, 0, None),
     };
+    // A model that gives a non-finite value at a physical point is refused
+    // at that point (its row, the first column).
     if let Some(p) = pressure {
         columns.push(("pressure", p));
     }
@@ -124,6 +205,15 @@ pub fn run(
     }
     if let Some(rl) = loaded_radius {
         columns.push(("rl", rl));
+    }
+    for (output, values) in columns.iter().skip(5) {
+        if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+            let problem = crate::error::InputProblem::NonFiniteOutput {
+                model: tyre.model_name(),
+                output,
+            };
+            return Err(c.error_at(points, i, "fz", problem).into());
+        }
     }
     Ok(TyreEvalReport {
         points: points.display().to_string(),
@@ -148,8 +238,8 @@ impl TyreEvalReport {
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
             Some(m) if self.clamped > 0 => format!(
-                " in MFeval mode {m}; {} of them outside the file's limits, \
-                 evaluated at the limits",
+                " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
+                 camber or pressure, evaluated at the ranges' ends",
                 self.clamped
             ),
             Some(m) => format!(" in MFeval mode {m}"),

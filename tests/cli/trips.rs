@@ -128,3 +128,65 @@ fn simulate_refuses_a_steer_no_road_wheel_makes_and_a_step_of_nothing_at_its_key
     );
 }
 
+#[test]
+fn tyre_eval_refuses_a_point_no_tyre_is_evaluated_at_by_row_and_never_writes_a_non_finite_value() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    for (row, column, expected) in [
+        (
+            "4000,1e308,0.01,0,16.7",
+            2,
+            "column `kappa`: 1e308 is outside -10 to 10, the range a tyre is evaluated in",
+        ),
+        (
+            "4000,0.01,0.01,0,1e308",
+            5,
+            "column `speed`: 1e308 m/s is outside -300 to 300 m/s",
+        ),
+        (
+            "4000,0.01,2.0,0,16.7",
+            3,
+            "column `alpha`: 2 rad is outside",
+        ),
+    ] {
+        let points = format!("fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n{row}\n");
+        let dir = scratch(&[("points.csv", &points)]);
+        let out = dir.path().join("forces.csv");
+        let o = run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            dir.path().join("points.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let e = refused(&o, &out);
+        assert!(
+            e.contains(&format!("points.csv:3:{column}: {expected}")),
+            "{e}"
+        );
+        assert!(!e.contains("at the limits"), "{e}");
+    }
+    // Physical points outside the file's ranges: evaluated at the ranges'
+    // ends, said so, and every value written finite.
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.01,0.05,0,16.7\n30000,5,1.2,0,100\n";
+    let dir = scratch(&[("points.csv", points)]);
+    let out = dir.path().join("forces.csv");
+    let o = run(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("1 of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends"),
+        "{said}"
+    );
+    let text = fs::read_to_string(&out).unwrap();
+    for cell in text.lines().skip(1).flat_map(|l| l.split(',')) {
+        let v: f64 = cell.parse().unwrap();
+        assert!(v.is_finite() && v.abs() < 1e6, "{cell} in\n{text}");
+    }
+}
+

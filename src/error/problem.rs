@@ -117,6 +117,12 @@ pub enum InputProblem {
         /// The CSV reader's description.
         detail: String,
     },
+    /// A byte that is not UTF-8 in a text file that must be.
+    #[error("byte 0x{byte:02X} is not UTF-8: the file must be UTF-8 text (was it saved as Latin-1 or Windows-1252?)")]
+    NotUtf8 {
+        /// The byte.
+        byte: u8,
+    },
     /// The TOML reader's own description of a syntax or structure error.
     #[error("{detail}")]
     Toml {
@@ -448,6 +454,7 @@ impl InputProblem {
             InputProblem::Csv { .. } => "Csv",
             InputProblem::Header { .. } => "Header",
             InputProblem::Toml { .. } => "Toml",
+            InputProblem::NotUtf8 { .. } => "NotUtf8",
             InputProblem::MissingFile { .. } => "MissingFile",
             InputProblem::TirSectionUnclosed { .. } => "TirSectionUnclosed",
             InputProblem::TirNotAKey { .. } => "TirNotAKey",

@@ -31,12 +31,83 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// The value a serde message says was of the wrong type or length
+/// (`invalid type: string "fast", expected f64`, `invalid length 13, …`).
+enum Offender {
+    Str(String),
+    Array(Option<usize>),
+    Int(i64),
+    Float(f64),
+    Bool(bool),
+}
+
+/// What `message` says the offending value was, if it says.
+fn offender(message: &str) -> Option<Offender> {
+    if let Some(rest) = message.strip_prefix("invalid length ") {
+        let n = rest
+            .split(|c: char| !c.is_ascii_digit())
+            .next()?
+            .parse()
+            .ok()?;
+        return Some(Offender::Array(Some(n)));
+    }
+    let what = message
+        .strip_prefix("invalid type: ")?
+        .split(", expected")
+        .next()?;
+    let quoted = |prefix: &str| what.strip_prefix(prefix)?.strip_suffix('`');
+    if what == "sequence" {
+        Some(Offender::Array(None))
+    } else if let Some(s) = what.strip_prefix("string \"") {
+        Some(Offender::Str(s.strip_suffix('"')?.to_string()))
+    } else if let Some(v) = quoted("integer `") {
+        Some(Offender::Int(v.parse().ok()?))
+    } else if let Some(v) = quoted("floating point `") {
+        Some(Offender::Float(v.parse().ok()?))
+    } else {
+        quoted("boolean `").and_then(|v| Some(Offender::Bool(v.parse().ok()?)))
+    }
+}
+
+impl Offender {
+    /// Whether `item` is the value described.
+    fn is(&self, item: &toml_edit::Item) -> bool {
+        use toml_edit::Value;
+        let Some(v) = item.as_value() else {
+            return false;
+        };
+        match (v, self) {
+            (Value::String(s), Offender::Str(x)) => s.value() == x,
+            (Value::Array(a), Offender::Array(n)) => n.is_none_or(|n| a.len() == n),
+            (Value::Integer(i), Offender::Int(x)) => i.value() == x,
+            (Value::Float(f), Offender::Float(x)) => f.value() == x,
+            (Value::Boolean(b), Offender::Bool(x)) => b.value() == x,
+            _ => false,
+        }
+    }
+}
+
 impl TomlSource {
     /// Reads a file.
+    /// A byte that is not UTF-8 is refused at its line and column (the
+    /// column counts the characters before it).
     pub fn read(path: &Path) -> Result<Self, InputError> {
-        let text = std::fs::read_to_string(path).map_err(|source| InputError::Io {
+        let bytes = std::fs::read(path).map_err(|source| InputError::Io {
             path: path.to_path_buf(),
             source,
+        })?;
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let at = e.utf8_error().valid_up_to();
+            let bytes = e.as_bytes();
+            let before = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+            let line = before.matches('\n').count() + 1;
+            let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            InputError::problem_at(
+                path,
+                line,
+                column,
+                InputProblem::NotUtf8 { byte: bytes[at] },
+            )
         })?;
         Ok(Self {
             path: path.to_path_buf(),
@@ -82,6 +153,17 @@ impl TomlSource {
             self.key_of_value_at(s.start)
                 .or_else(|| self.key_on_line_of(s.start))
         });
+        // A tagged table (`[manoeuvre]`, a tyre's `model`) reports a wrong
+        // type or length at the table or nowhere: the value the message
+        // describes is looked up among the table's keys (the document's
+        // without a span), and the error put at its key.
+        let (span, key) = match key {
+            Some(k) => (span, Some(k)),
+            None => match offender(&message).and_then(|o| self.culprit(&o, span.clone())) {
+                Some((k, at)) => (Some(at), Some(k)),
+                None => (span, None),
+            },
+        };
         match key {
             Some(key) => InputError::Key {
                 path: self.path.clone(),
@@ -117,6 +199,25 @@ impl TomlSource {
         Some(match table {
             Some(t) if bare(&t) => format!("{t}.{key}"),
             _ => key.to_string(),
+        })
+    }
+
+    /// The first key (dotted path, and the key's span) within `within`
+    /// (anywhere without it) whose value is the one `o` describes.
+    fn culprit(
+        &self,
+        o: &Offender,
+        within: Option<std::ops::Range<usize>>,
+    ) -> Option<(String, std::ops::Range<usize>)> {
+        self.find(&mut |path, key, table, item| {
+            let at = item.span()?;
+            let inside = within
+                .as_ref()
+                .is_none_or(|w| at.start >= w.start && at.start <= w.end);
+            (inside && item.as_table_like().is_none() && o.is(item)).then(|| {
+                let key_span = table.get_key_value(key).and_then(|(k, _)| k.span());
+                (path.to_string(), key_span.unwrap_or(at))
+            })
         })
     }
 

@@ -190,3 +190,53 @@ fn tyre_eval_refuses_a_point_no_tyre_is_evaluated_at_by_row_and_never_writes_a_n
     }
 }
 
+#[test]
+fn a_toml_file_that_is_not_utf8_is_refused_at_its_line_and_column() {
+    let dir = scenario(VEHICLE, GIM, STEP);
+    let file = dir.path().join("scenario.toml");
+    let mut bytes = b"# Lat\xe9ral step\n".to_vec();
+    bytes.extend(fs::read(&file).unwrap());
+    fs::write(&file, bytes).unwrap();
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains(&format!("{}:1:6: byte 0xE9 is not UTF-8", file.display())),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_tyre_array_one_short_and_a_wrong_type_are_refused_at_their_key_and_line() {
+    let pac = fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap();
+    let short = pac.replace(", 6.26206]", "]");
+    assert_ne!(short, pac);
+    let line = short.lines().position(|l| l.starts_with("a = ")).unwrap() + 1;
+    let dir = scenario(VEHICLE, &short, STEP);
+    let e = simulate_err(dir.path());
+    assert!(e.contains(&format!("tyre.toml:{line}:")), "{e}");
+    assert!(e.contains("`a`"), "{e}");
+    for (manoeuvre, key) in [
+        (
+            "kind = \"step-steer\"\nspeed = \"fast\"\nsteer = 0.0174533\n",
+            "speed",
+        ),
+        (
+            "kind = \"step-steer\"\nspeed = 22.2\nsteer = 0.0174533\nend = [6.0]\n",
+            "end",
+        ),
+    ] {
+        let dir = scenario(VEHICLE, GIM, &format!("[manoeuvre]\n{manoeuvre}"));
+        let text = fs::read_to_string(dir.path().join("scenario.toml")).unwrap();
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(&format!("{key} =")))
+            .unwrap()
+            + 1;
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains(&format!("scenario.toml:{line}:"))
+                && e.contains(&format!("manoeuvre.{key}")),
+            "{key}: {e}"
+        );
+    }
+}
+

@@ -11,6 +11,13 @@
 //! run left (`.<name>.partial-<pid>.<ext>`, see [`super::write_atomic`]).
 //! Where process ids cannot be checked, a lock is taken as live and the
 //! message says which file to remove.
+//!
+//! A lock that names no process — empty, or text that is no process id (a
+//! disk that filled as it was written, an editor's save) — is taken over
+//! once it is older than [`NAMELESS_AGE`]: a live run writes its id within
+//! microseconds of creating the file, so a nameless lock that old is no
+//! live run's. A younger one is refused as busy, the message saying when
+//! it will be taken over.
 
 use crate::error::{Error, OutputError, WriteStep};
 use std::fs;
@@ -20,6 +27,18 @@ use std::sync::Arc;
 
 /// Name of the lock file inside an output folder.
 pub const LOCK_FILE: &str = ".handling.lock";
+
+/// Age, s, after which a lock file that names no process is taken over.
+pub const NAMELESS_AGE: f64 = 10.0;
+
+/// Age of `file` since it was last written, s (0 when unknown).
+fn age(file: &Path) -> f64 {
+    fs::metadata(file)
+        .and_then(|m| m.modified())
+        .ok()
+        .and_then(|t| t.elapsed().ok())
+        .map_or(0.0, |d| d.as_secs_f64())
+}
 
 /// A held output folder (cheap to clone: copies share the one lock).
 #[derive(Debug, Clone, Default)]
@@ -151,17 +170,38 @@ impl OutputLock {
             match holder {
                 Some(pid) if pid == me => return Ok(Self::held(file, created, false)),
                 Some(pid) if alive(pid) == Some(false) => {
-                    Self::take_over(dir, &file, pid)?;
-                }
-                // A lock being written this instant holds no number yet.
-                None if text.is_empty() => {
-                    std::thread::sleep(std::time::Duration::from_millis(50));
-                    if fs::read_to_string(&file).is_ok_and(|t| t.trim().is_empty()) {
-                        return Err(Self::busy(dir, &file, "an unknown process"));
-                    }
+                    Self::take_over(
+                        dir,
+                        &file,
+                        &text,
+                        &format!("was left by process {pid}, which is no longer running (killed?)"),
+                    )?;
+                    remove_partials(dir, pid);
                 }
                 Some(pid) => return Err(Self::busy(dir, &file, &format!("process {pid}"))),
-                None => return Err(Self::busy(dir, &file, "an unknown process")),
+                None => {
+                    // A lock being written this instant holds no number
+                    // yet: look again before judging it.
+                    std::thread::sleep(std::time::Duration::from_millis(50));
+                    let again = fs::read_to_string(&file).unwrap_or_default();
+                    if again.trim().parse::<u32>().is_ok() {
+                        continue;
+                    }
+                    let old = age(&file);
+                    if old <= NAMELESS_AGE {
+                        return Err(Self::busy(
+                            dir,
+                            &file,
+                            &format!("an unknown process: the lock names none, and is taken over once it is {NAMELESS_AGE} s old"),
+                        ));
+                    }
+                    let what = if again.trim().is_empty() {
+                        "is empty"
+                    } else {
+                        "names no process"
+                    };
+                    Self::take_over(dir, &file, &again, &format!("{what} and is {old:.0} s old"))?;
+                }
             }
         }
         Err(Self::busy(dir, &file, "another run"))
@@ -177,10 +217,11 @@ impl OutputLock {
         }
     }
 
-    /// Removes the stale lock of dead process `pid`: renamed aside first
-    /// (atomic), then checked to be that process's before it is deleted, so
-    /// that of two runs taking over at once only one does.
-    fn take_over(dir: &Path, file: &Path, pid: u32) -> Result<(), Error> {
+    /// Removes the stale lock `file` whose content was `text` (why it is
+    /// stale: `why`): renamed aside first (atomic), then checked to hold
+    /// that content still before it is deleted, so that of two runs taking
+    /// over at once only one does.
+    fn take_over(dir: &Path, file: &Path, text: &str, why: &str) -> Result<(), Error> {
         let name = file
             .file_name()
             .map_or_else(|| LOCK_FILE.into(), |n| n.to_string_lossy().into_owned());
@@ -190,17 +231,13 @@ impl OutputLock {
             return Ok(());
         }
         let moved = fs::read_to_string(&aside).unwrap_or_default();
-        if moved.trim().parse::<u32>().ok() != Some(pid) {
+        if moved != text {
             // A live run's fresh lock was moved: give it back.
             let _ = fs::rename(&aside, file);
             return Err(Self::busy(dir, file, "another run"));
         }
         let _ = fs::remove_file(&aside);
-        remove_partials(dir, pid);
-        eprintln!(
-            "note: {} was left by process {pid}, which is no longer running (killed?); taking the folder over",
-            file.display()
-        );
+        eprintln!("note: {} {why}; taking the folder over", file.display());
         Ok(())
     }
 
@@ -267,5 +304,37 @@ mod tests {
         drop(lock);
         assert!(!file.exists());
         assert!(dir.path().exists(), "a folder that existed stays");
+    }
+
+    /// Sets the modification time of `file` to `seconds` ago.
+    fn age_by(file: &Path, seconds: u64) {
+        let then = std::time::SystemTime::now() - std::time::Duration::from_secs(seconds);
+        fs::File::options()
+            .write(true)
+            .open(file)
+            .unwrap()
+            .set_modified(then)
+            .unwrap();
+    }
+
+    #[test]
+    fn a_lock_that_names_no_process_is_taken_over_once_old() {
+        for text in ["", "\n", "garbage\n", "\u{0}\u{0}"] {
+            let dir = tempfile::tempdir().unwrap();
+            let file = dir.path().join(LOCK_FILE);
+            fs::write(&file, text).unwrap();
+            // Fresh: it may be a run writing its id this instant.
+            let e = OutputLock::acquire(dir.path()).unwrap_err().to_string();
+            assert!(
+                e.contains("taken over once it is 10 s old"),
+                "{text:?}: {e}"
+            );
+            age_by(&file, 11);
+            let lock = OutputLock::acquire(dir.path()).unwrap();
+            let held = fs::read_to_string(&file).unwrap();
+            assert_eq!(held.trim(), std::process::id().to_string(), "{text:?}");
+            drop(lock);
+            assert!(!file.exists());
+        }
     }
 }

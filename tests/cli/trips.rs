@@ -240,3 +240,44 @@ fn a_tyre_array_one_short_and_a_wrong_type_are_refused_at_their_key_and_line() {
     }
 }
 
+/// Sets the modification time of `file` to `seconds` ago.
+fn age_by(file: &Path, seconds: u64) {
+    let then = std::time::SystemTime::now() - std::time::Duration::from_secs(seconds);
+    fs::File::options()
+        .write(true)
+        .open(file)
+        .unwrap()
+        .set_modified(then)
+        .unwrap();
+}
+
+#[test]
+fn a_lock_that_names_no_process_is_refused_while_fresh_and_taken_over_once_old() {
+    for text in ["", "not a pid\n"] {
+        let dir = scenario(VEHICLE, GIM, STEP);
+        let out = dir.path().join("out");
+        fs::create_dir(&out).unwrap();
+        let lock = out.join(".handling.lock");
+        fs::write(&lock, text).unwrap();
+        let args = [
+            "simulate",
+            dir.path().join("scenario.toml").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]
+        .map(String::from);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let e = fails(&args);
+        assert!(
+            e.contains("the lock names none, and is taken over once it is 10 s old"),
+            "{text:?}: {e}"
+        );
+        age_by(&lock, 60);
+        let o = run(&args);
+        assert!(o.status.success(), "{text:?}: {}", stderr(&o));
+        let note = stderr(&o);
+        assert!(note.contains("taking the folder over"), "{note}");
+        assert!(out.join("history.csv").is_file());
+        assert!(!lock.exists(), "the lock is released after the run");
+    }
+}

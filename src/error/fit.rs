@@ -3,7 +3,7 @@
 //! the job can use) or whose result does not survive its own check; and the
 //! diagnosis's failures on the rig data of its base model.
 
-use super::Error;
+use super::{Error, Variable};
 use std::path::PathBuf;
 use thiserror::Error as ThisError;
 
@@ -89,12 +89,12 @@ pub enum FitError {
         data: PathBuf,
     },
     /// Rig data in which the grouping found no test condition.
-    #[error("{}: no test condition found in the data ({})", data.display(), grouping.join("; "))]
+    #[error("{}: no test condition found in the data ({grouping})", data.display())]
     NoCondition {
         /// The rig data.
         data: PathBuf,
-        /// The grouping report's lines.
-        grouping: Vec<String>,
+        /// Where its samples went.
+        grouping: SampleAccount,
     },
     /// A fit to rig data that failed: the data and, where several channels
     /// are fitted, the channel.
@@ -219,4 +219,34 @@ pub struct StageSkip {
     pub stage: &'static str,
     /// Why.
     pub reason: SkipReason,
+}
+
+/// Where the samples of rig data went in the grouping into test
+/// conditions (load, camber and pressure levels).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SampleAccount {
+    /// Samples in the file.
+    pub samples: usize,
+    /// Samples in conditions.
+    pub used: usize,
+    /// Samples between levels of some variable (transitions).
+    pub between_levels: usize,
+    /// Samples at levels other than the one selected.
+    pub not_selected: usize,
+    /// The levels found of each variable: (variable, count).
+    pub levels: Vec<(Variable, usize)>,
+}
+
+impl std::fmt::Display for SampleAccount {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} samples: {} used in conditions, {} between levels (transitions), {} at levels not selected",
+            self.samples, self.used, self.between_levels, self.not_selected
+        )?;
+        for (v, n) in &self.levels {
+            write!(f, "; {} levels: {n}", v.column())?;
+        }
+        Ok(())
+    }
 }

@@ -22,14 +22,16 @@ mod rig;
 mod tests;
 
 pub use duplicate::DuplicateAt;
-pub use fit::{DiagnosisError, FitError, SkipReason, StageRows, StageSkip};
+pub use fit::{DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip};
 pub use input::{CellProblem, InputError, Location};
 pub use metrics::MetricsError;
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
-pub use problem::{InputProblem, PathFound, RefusedPiece, RigChannel, SmallSlipSlope};
+pub use problem::{
+    InputProblem, PathFound, PieceRefusal, RefusedPiece, RigChannel, SmallSlipSlope,
+};
 pub use reason::{Limit, ParamReason};
 pub use rig::Variable;
 use thiserror::Error;

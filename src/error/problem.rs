@@ -11,7 +11,7 @@
 use super::duplicate::DuplicateAt;
 use super::number::Num;
 use super::rig::Variable;
-use super::ParamError;
+use super::{MetricsError, ParamError};
 use crate::format::significant;
 use std::path::PathBuf;
 use thiserror::Error;
@@ -97,8 +97,23 @@ pub struct RefusedPiece {
     pub t_start: f64,
     /// Its last time, s.
     pub t_end: f64,
-    /// Why it was not used, as the cleaning report says.
-    pub reason: String,
+    /// Why it was not used.
+    pub reason: PieceRefusal,
+}
+
+/// Why a moving piece of a run was not used (the cleaning report's reason
+/// for dropping it).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PieceRefusal {
+    /// Shorter than a piece must be to be replayed or measured.
+    #[error("too short")]
+    TooShort,
+    /// Another piece of the run was used (a single use takes one).
+    #[error("another piece was used")]
+    AnotherPieceUsed,
+    /// The piece gives no step-steer metrics.
+    #[error("no step-steer metrics ({0})")]
+    NoStepMetrics(MetricsError),
 }
 
 /// What is wrong with an input file's content.
@@ -599,17 +614,17 @@ mod tests {
                     name: "run.csv#1".into(),
                     t_start: 0.0,
                     t_end: 12.5,
-                    reason: "no step-steer metrics (too short)".into(),
+                    reason: PieceRefusal::NoStepMetrics(MetricsError::TooShort(12.5)),
                 },
                 RefusedPiece {
                     name: "run.csv#2".into(),
                     t_start: 13.0,
                     t_end: 20.0,
-                    reason: "another piece was used".into(),
+                    reason: PieceRefusal::AnotherPieceUsed,
                 },
             ],
         };
-        assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (too short); run.csv#2 (13.00–20.00 s): another piece was used");
+        assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is shorter than the initial and steady windows together); run.csv#2 (13.00–20.00 s): another piece was used");
         let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
         assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
         assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");

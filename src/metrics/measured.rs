@@ -7,9 +7,8 @@
 //! reported and checked against ISO 7401, which asks for at most 0.15 s.
 //! Units: SI, rad, s.
 
-use super::MetricsError;
 use super::{step_metrics, MetricSettings, StepMetrics};
-use crate::error::{InputError, InputProblem, RefusedPiece};
+use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
     clean_single_with, fill_masked, median, quantile, CleanSettings, CleaningReport,
 };
@@ -140,12 +139,6 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
     }
 }
 
-/// Why a moving piece gave no step-steer metrics (the cleaning report's
-/// reason for dropping it).
-#[derive(Debug, thiserror::Error)]
-#[error("no step-steer metrics ({0})")]
-struct NoStepMetrics(MetricsError);
-
 /// Cleans `run`, finds the piece with a steer step and measures it.
 pub fn measured_step_metrics(
     run: MeasuredRun,
@@ -170,7 +163,7 @@ pub fn measured_step_metrics(
                 settings,
             )
             .map(|m| (m, p))
-            .map_err(NoStepMetrics)
+            .map_err(PieceRefusal::NoStepMetrics)
         },
     );
     let Some((piece, (metrics, filled))) = found else {
@@ -184,11 +177,13 @@ pub fn measured_step_metrics(
             let pieces = cleaning
                 .dropped_pieces
                 .iter()
-                .map(|p| RefusedPiece {
-                    name: p.name.clone(),
-                    t_start: p.t_start,
-                    t_end: p.t_end,
-                    reason: p.reason.clone(),
+                .filter_map(|p| {
+                    Some(RefusedPiece {
+                        name: p.name.clone(),
+                        t_start: p.t_start,
+                        t_end: p.t_end,
+                        reason: p.reason.clone()?,
+                    })
                 })
                 .collect();
             InputProblem::NoSteerStep { pieces }

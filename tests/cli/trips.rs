@@ -281,3 +281,19 @@ fn a_lock_that_names_no_process_is_refused_while_fresh_and_taken_over_once_old()
         assert!(!lock.exists(), "the lock is released after the run");
     }
 }
+
+#[test]
+fn rig_data_without_a_test_condition_say_where_their_samples_went() {
+    // Two samples: too few to make a load level, so no condition.
+    let dir = scratch(&[("rig.csv", "fz,alpha,fy\n4000,0.01,800\n4000,0.02,1500\n")]);
+    let out = dir.path().join("t.toml");
+    let o = identify_to(&dir.path().join("rig.csv"), "pac89", &out);
+    let e = refused(&o, &out);
+    assert!(
+        e.contains(
+            "rig.csv: no test condition found in the data (2 samples: 0 used in conditions, \
+             2 between levels (transitions), 0 at levels not selected; fz levels: 0"
+        ),
+        "{e}"
+    );
+}

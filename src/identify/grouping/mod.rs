@@ -40,7 +40,7 @@ pub use super::data::SlipAxis;
 pub use levels::{levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
-use crate::error::{InputError, InputProblem};
+use crate::error::{InputError, InputProblem, SampleAccount};
 use serde::Serialize;
 use std::path::Path;
 
@@ -102,6 +102,21 @@ pub struct GroupingReport {
 }
 
 impl GroupingReport {
+    /// Where the samples went, as an error names it.
+    pub fn account(&self) -> SampleAccount {
+        SampleAccount {
+            samples: self.samples,
+            used: self.used,
+            between_levels: self.dropped_in_transitions,
+            not_selected: self.not_selected,
+            levels: self
+                .levels
+                .iter()
+                .map(|l| (l.variable, l.levels.len()))
+                .collect(),
+        }
+    }
+
     /// The report's lines for a terminal.
     pub fn lines(&self) -> Vec<String> {
         let mut out = vec![format!(

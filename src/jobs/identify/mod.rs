@@ -325,7 +325,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     if conditions.is_empty() {
         return Err(FitError::NoCondition {
             data: o.data.clone(),
-            grouping: grouped.report.lines(),
+            grouping: grouped.report.account(),
         }
         .into());
     }

@@ -10,6 +10,7 @@ use super::report::{
     CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
 };
 use super::{CleanSettings, GAP_INTERVALS, STANDSTILL_SPEED};
+use crate::error::PieceRefusal;
 use crate::measured::MeasuredRun;
 use std::path::PathBuf;
 
@@ -96,12 +97,9 @@ fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
     n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
 }
 
-fn piece_of(run: &MeasuredRun, reason: &str) -> Piece {
+fn piece_of(run: &MeasuredRun, reason: Option<PieceRefusal>) -> Piece {
     Piece::kept(run)
-        .map(|p| Piece {
-            reason: reason.into(),
-            ..p
-        })
+        .map(|p| Piece { reason, ..p })
         .expect("a piece has samples")
 }
 
@@ -161,11 +159,13 @@ pub fn clean_run(
         if long_enough(&piece, settings) {
             report.samples_kept += piece.t.len();
             report.samples_masked += piece.masked.len();
-            report.pieces.push(piece_of(&piece, ""));
+            report.pieces.push(piece_of(&piece, None));
             out.push(piece);
         } else {
             report.samples_in_dropped_pieces += piece.t.len();
-            report.dropped_pieces.push(piece_of(&piece, "too short"));
+            report
+                .dropped_pieces
+                .push(piece_of(&piece, Some(PieceRefusal::TooShort)));
         }
     }
     out
@@ -192,28 +192,25 @@ pub fn clean_single(
     settings: &CleanSettings,
     report: &mut CleaningReport,
 ) -> Option<MeasuredRun> {
-    clean_single_with(run, settings, report, |_| {
-        Ok::<(), std::convert::Infallible>(())
-    })
-    .map(|(p, ())| p)
+    clean_single_with(run, settings, report, |_| Ok(())).map(|(p, ())| p)
 }
 
 /// Cleans a run for a single use: of its moving pieces, longest first, the
 /// first that `fits` accepts is kept with what `fits` made of it; every
 /// other piece is listed as dropped with its reason (what `fits` said, or
 /// that another piece was used). `None` when no piece is accepted.
-pub fn clean_single_with<T, E: std::fmt::Display>(
+pub fn clean_single_with<T>(
     run: MeasuredRun,
     settings: &CleanSettings,
     report: &mut CleaningReport,
-    mut fits: impl FnMut(&MeasuredRun) -> Result<T, E>,
+    mut fits: impl FnMut(&MeasuredRun) -> Result<T, PieceRefusal>,
 ) -> Option<(MeasuredRun, T)> {
     let first = report.pieces.len();
     let pieces = clean_run(run, settings, report);
     report.pieces.truncate(first);
     let mut order: Vec<usize> = (0..pieces.len()).collect();
     order.sort_by_key(|&k| std::cmp::Reverse(pieces[k].t.len()));
-    let mut reasons = vec![String::new(); pieces.len()];
+    let mut reasons: Vec<Option<PieceRefusal>> = vec![None; pieces.len()];
     let mut chosen = None;
     for &k in &order {
         match fits(&pieces[k]) {
@@ -221,23 +218,19 @@ pub fn clean_single_with<T, E: std::fmt::Display>(
                 chosen = Some((k, v));
                 break;
             }
-            Err(e) => reasons[k] = e.to_string(),
+            Err(e) => reasons[k] = Some(e),
         }
     }
     for (k, p) in pieces.iter().enumerate() {
         if chosen.as_ref().is_some_and(|c| c.0 == k) {
-            report.pieces.push(piece_of(p, ""));
+            report.pieces.push(piece_of(p, None));
             continue;
         }
-        let reason = if reasons[k].is_empty() {
-            "another piece was used".to_string()
-        } else {
-            reasons[k].clone()
-        };
+        let reason = reasons[k].take().unwrap_or(PieceRefusal::AnotherPieceUsed);
         report.samples_kept -= p.t.len();
         report.samples_masked -= p.masked.len();
         report.samples_in_dropped_pieces += p.t.len();
-        report.dropped_pieces.push(piece_of(p, &reason));
+        report.dropped_pieces.push(piece_of(p, Some(reason)));
     }
     let (k, v) = chosen?;
     pieces.into_iter().nth(k).map(|p| (p, v))

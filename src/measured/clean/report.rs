@@ -4,6 +4,7 @@
 //! the JSON report). Times in s, speeds in m/s, values in the channel's SI
 //! unit.
 
+use crate::error::PieceRefusal;
 use crate::measured::MeasuredRun;
 use serde::Serialize;
 
@@ -204,8 +205,15 @@ pub struct Piece {
     pub t_end: f64,
     /// Samples.
     pub samples: usize,
-    /// Why a dropped piece was dropped (empty for a kept one).
-    pub reason: String,
+    /// Why a dropped piece was dropped (`None` for a kept one; the report
+    /// writes the sentence, empty for a kept one).
+    #[serde(serialize_with = "reason_text")]
+    pub reason: Option<PieceRefusal>,
+}
+
+/// A piece's reason as the report writes it: its sentence, or nothing.
+fn reason_text<S: serde::Serializer>(r: &Option<PieceRefusal>, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&r.as_ref().map_or(String::new(), |r| r.to_string()))
 }
 
 impl Piece {
@@ -216,7 +224,7 @@ impl Piece {
             t_start: *run.t.first()?,
             t_end: *run.t.last()?,
             samples: run.t.len(),
-            reason: String::new(),
+            reason: None,
         })
     }
 }
@@ -353,7 +361,11 @@ impl CleaningReport {
         for p in self.dropped_pieces.iter().take(first) {
             out.push(format!(
                 "piece {} ({:.2}–{:.2} s, {} samples) dropped: {}",
-                p.name, p.t_start, p.t_end, p.samples, p.reason
+                p.name,
+                p.t_start,
+                p.t_end,
+                p.samples,
+                p.reason.as_ref().map_or(String::new(), |r| r.to_string())
             ));
         }
         out

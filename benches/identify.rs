@@ -90,6 +90,7 @@ fn mf61_hoosier(c: &mut Criterion) {
         start: StartArg::Data,
         template: None,
         max_iterations: handling::identify::mf_staged::LM_ITERATIONS,
+        hold: Vec::new(),
     };
     let mut g = c.benchmark_group("identify");
     g.sample_size(10);

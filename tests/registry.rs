@@ -285,6 +285,7 @@ fn identify_recovers_the_toys_stiffness() {
         start: StartArg::Data,
         template: None,
         max_iterations: handling::identify::mf_staged::LM_ITERATIONS,
+        hold: Vec::new(),
     })
     .unwrap();
     let IdentifyReport::Swarm(s) = &r else {

@@ -718,6 +718,7 @@ fn identify(
         start,
         template,
         max_iterations,
+        hold: Vec::new(),
     };
     let (r, tyre) = detached(py, || {
         let r = jobs::identify::run(&o)?;

@@ -53,6 +53,20 @@ pub struct IdentifyArgs {
     /// mf61/mf62: Levenberg–Marquardt iterations per step.
     #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
     max_iterations: usize,
+    /// mf61/mf62: hold a .tir coefficient at a value in every stage,
+    /// NAME=VALUE in the file's SI units (repeatable), e.g. --hold PKY4=2.
+    /// Without it, a parameter the data do not determine is held at the
+    /// template's value or Pacejka's (2012) book default, and said so.
+    #[arg(long, value_parser = hold_value)]
+    hold: Vec<(String, f64)>,
+}
+
+/// `NAME=VALUE` of `--hold`.
+fn hold_value(s: &str) -> Result<(String, f64), String> {
+    s.split_once('=')
+        .and_then(|(k, v)| Some((k.trim().to_string(), v.trim().parse::<f64>().ok()?)))
+        .filter(|(k, _)| !k.is_empty())
+        .ok_or_else(|| handling::error::OptionsError::HoldSyntax { given: s.into() }.to_string())
 }
 
 /// `handling identify`.
@@ -70,6 +84,7 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
         start: a.start,
         template: a.template,
         max_iterations: a.max_iterations,
+        hold: a.hold,
     })?;
     for w in r.warnings() {
         eprintln!("warning: {w}");

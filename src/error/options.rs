@@ -23,11 +23,13 @@ pub enum NameKind {
     Effect,
     /// Where the staged Magic Formula fit starts.
     Start,
+    /// A coefficient of a Magic Formula `.tir` (`PKY4`, …).
+    MfCoefficient,
 }
 
 impl NameKind {
     /// Every kind.
-    pub const ALL: [NameKind; 7] = [
+    pub const ALL: [NameKind; 8] = [
         NameKind::TyreModel,
         NameKind::Metric,
         NameKind::Unit,
@@ -35,6 +37,7 @@ impl NameKind {
         NameKind::Truth,
         NameKind::Effect,
         NameKind::Start,
+        NameKind::MfCoefficient,
     ];
 
     /// The kind as the messages name it.
@@ -47,6 +50,7 @@ impl NameKind {
             NameKind::Truth => "truth",
             NameKind::Effect => "effect",
             NameKind::Start => "start",
+            NameKind::MfCoefficient => "Magic Formula coefficient",
         }
     }
 }
@@ -174,6 +178,18 @@ pub enum OptionsError {
     /// `--start template` without a template file.
     #[error("--start template needs --template <file.tir>")]
     TemplateMissing,
+    /// `--hold` asked of a fit that holds no `.tir` coefficient.
+    #[error("--hold holds a coefficient of the staged Magic Formula fit (mf61, mf62), not of the {model} model")]
+    HoldNeedsStagedFit {
+        /// The model's name.
+        model: String,
+    },
+    /// A `--hold` that is not `NAME=VALUE` with a number.
+    #[error("--hold `{given}`: expected NAME=VALUE with a number, e.g. PKY4=2")]
+    HoldSyntax {
+        /// The argument given.
+        given: String,
+    },
     /// A shard K of N outside 1 ≤ K ≤ N.
     #[error("shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8")]
     ShardOutOfRange {

@@ -22,7 +22,7 @@
 //! of `Kyα(Fz)`, four loads (with three, `PKY1`, `PKY2`, `PKY4` fit the
 //! three stiffnesses exactly and drift together along a near-null
 //! direction). The rest are held at
-//! the template's values (or their defaults) and reported as held. The
+//! the template's values (or their version defaults) and reported as held. The
 //! paper counts 15 + 20 + 27 + 7 + 14 = 83 parameters; the lists here
 //! (`STAGES`) are the TNO 6.1 ones of each function (22 for pure `Fy`,
 //! 15 for combined `Fy`) plus the pressure terms `PPX*`, `PPY*`, `PPZ*`.
@@ -79,10 +79,13 @@
 //! Standard errors: `cov = s²·(JᵀJ)⁻¹` at the optimum with `s² = Σe²/(m−n)`,
 //! computed on the column-scaled Jacobian (SVD, pseudo-inverse); a parameter
 //! whose standard error reaches its magnitude *and*, alone, moves the
-//! stage's channel by 1 % of its RMS is flagged as not identifiable (a
-//! parameter pinned to zero is identified, as zero; `stages.rs`), and a stage whose scaled Jacobian has a condition number above 1e8 is
-//! flagged as near-singular, naming the parameters that dominate its weakest
-//! direction.
+//! stage's channel by 1 % of its RMS is not identifiable (a parameter
+//! pinned to zero is identified, as zero; `uncertainty.rs`): it is held at
+//! a stated value — the template's, else Pacejka's (2012) book default —
+//! and the stage refitted, one parameter at a time (`holds.rs`); a value
+//! the user gives holds a parameter from the start. A stage whose scaled
+//! Jacobian has a condition number above 1e8 is flagged as near-singular,
+//! naming the parameters that dominate its weakest direction.
 //!
 //! Units: SI and radians in the rows (crate convention, `docs/FORMATS.md`);
 //! the coefficients are the `.tir`'s ISO-W ones and are only evaluated
@@ -92,19 +95,26 @@
 //! the stages and what each may fit (levels needed, physical bounds);
 //! `start.rs` the start values from the data; `problem.rs` a stage's
 //! least-squares problem and its exact Jacobian; `stages.rs` one stage's
-//! fit and its standard errors; `paper_lm.rs` the paper's own LM.
+//! fit; `uncertainty.rs` its standard errors and the identifiability rule;
+//! `holds.rs` what a parameter is held at and why; `paper_lm.rs` the
+//! paper's own LM.
 
+mod holds;
 mod paper_lm;
 mod params;
 mod problem;
 mod sigma;
+mod spread;
 mod stages;
 mod start;
+mod uncertainty;
 
+pub use holds::{pacejka_book_default, HoldReason, HoldSource, Holding};
 pub use paper_lm::paper_lm;
 pub use params::Stage;
 pub use problem::Derivatives;
 pub use sigma::{channel_unit, pooled_sigma, raw_rows, rms_text, ChannelSigma, PooledSigma};
+pub use spread::{sweeps_slip_angle, ErrorSpread, LoadSigma};
 
 use super::data::RigData;
 use super::grouping::{group, Grouping, GroupingReport, SlipAxis};
@@ -112,7 +122,7 @@ use crate::error::{FitError, InputError, SkipReason, StageSkip};
 use crate::tyre::mf::{MagicFormula, MfInput, MfVersion};
 use params::EVEN;
 use serde::Serialize;
-use stages::{run_stage, sigma};
+use stages::{run_stage, sigma, StageRun};
 use start::base_tyre;
 use std::path::Path;
 use std::time::Instant;
@@ -302,6 +312,9 @@ pub struct Settings {
     /// Levenberg–Marquardt iterations (Jacobians) per step at most
     /// ([`LM_ITERATIONS`] by default; the paper's scheme runs at least 500).
     pub max_iterations: usize,
+    /// The values the user gives and the keys the template gives
+    /// (`holds.rs`: what a parameter the data do not determine is held at).
+    pub holding: Holding,
 }
 
 /// A fitted or held parameter of a stage.
@@ -313,12 +326,12 @@ pub struct StageParameter {
     pub value: f64,
     /// Its start value.
     pub start: f64,
-    /// Fitted (false: held, see `held_because`).
+    /// Fitted (false: held, see `held`).
     pub free: bool,
     /// Approximate standard error (free parameters).
     pub std_error: Option<f64>,
-    /// Why a parameter was held.
-    pub held_because: Option<String>,
+    /// Why a parameter was held, and at what (`value`).
+    pub held: Option<HoldReason>,
     /// An identifiability warning.
     pub warning: Option<String>,
 }
@@ -356,6 +369,8 @@ pub struct StageReport {
     pub parameters: Vec<StageParameter>,
     /// Stage-level warnings (near-singular Jacobian).
     pub warnings: Vec<String>,
+    /// Where the fitted stage's squared error lies (`None`: skipped).
+    pub error_spread: Option<ErrorSpread>,
 }
 
 impl StageReport {
@@ -375,6 +390,7 @@ impl StageReport {
             seconds: 0.0,
             parameters: Vec::new(),
             warnings: Vec::new(),
+            error_spread: None,
         }
     }
 }
@@ -422,6 +438,16 @@ pub fn identify_with(
 ) -> Result<Identified, FitError> {
     let t0 = Instant::now();
     let mut tyre = base_tyre(rows, settings);
+    for (name, value) in &settings.holding.given {
+        tyre.coefficients.set(name, *value);
+    }
+    let run = StageRun {
+        start: settings.start,
+        max_iterations: settings.max_iterations,
+        derivatives,
+        holding: &settings.holding,
+        template: settings.template.as_ref(),
+    };
     let mut reports: Vec<StageReport> = Vec::new();
     for stage in Stage::ALL {
         if let Some(need) = stage.needs() {
@@ -439,14 +465,7 @@ pub fn identify_with(
             }
         }
         let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
-        let rep = run_stage(
-            stage,
-            &mut tyre,
-            &sel,
-            settings.start,
-            settings.max_iterations,
-            derivatives,
-        );
+        let rep = run_stage(stage, &mut tyre, &sel, &run);
         reports.push(rep);
     }
     if reports.iter().all(|r| r.skipped.is_some()) {
@@ -487,6 +506,7 @@ pub fn identify_with(
         let (sigma_percent, rms, _, _) = sigma(r.stage, &tyre, &sel);
         r.sigma_percent = sigma_percent;
         r.rms = rms;
+        r.error_spread = Some(spread::error_spread(r.stage, &tyre, &sel));
     }
     Ok(Identified {
         report: StagedReport {

@@ -3,6 +3,7 @@
 //! be identifiable, the sign-blind ones, and the physical bounds the
 //! data-started fits keep (ISO-W signs, as in the `.tir`).
 
+use super::holds::HoldReason;
 use super::{MfRow, PURE_TOL};
 use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
@@ -337,27 +338,15 @@ const MY: &[(&str, Need)] = &[
 pub(super) const EVEN: [&str; 7] = ["PCX1", "PCY1", "RCX1", "RCY1", "RBX2", "RBY2", "RVY4"];
 
 /// Why parameter `need` cannot be fitted with `have` levels.
-pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<String> {
+pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<HoldReason> {
     if need == HELD {
-        return Some("held by design (see the module notes)".into());
+        return Some(HoldReason::ByDesign);
     }
-    let mut why = Vec::new();
-    for (k, (want, what)) in [
-        (need.loads, "load"),
-        (need.cambers, "camber"),
-        (need.pressures, "pressure"),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        if (want as usize) > have[k] {
-            why.push(format!(
-                "needs {want} {what} levels, the data have {}",
-                have[k]
-            ));
-        }
-    }
-    (!why.is_empty()).then(|| why.join(", "))
+    let want = [need.loads, need.cambers, need.pressures];
+    want.iter()
+        .zip(have)
+        .any(|(w, h)| usize::from(*w) > h)
+        .then_some(HoldReason::Levels { need: want, have })
 }
 
 pub(super) fn names_of(free: &[(&'static str, Need)]) -> Vec<&'static str> {

@@ -17,9 +17,10 @@ mod choices;
 mod figures;
 mod staged;
 
-use crate::error::{Error, FitError, OutputError, ParamError};
+use crate::error::{Error, FitError, NameKind, OptionsError, OutputError, ParamError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
+use crate::tyre::mf::MfCoefficients;
 use crate::tyre::{ModelName, Pac89, Tyre};
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
@@ -57,6 +58,9 @@ pub struct Options {
     pub template: Option<PathBuf>,
     /// Magic Formula: Levenberg–Marquardt iterations per step.
     pub max_iterations: usize,
+    /// Magic Formula: coefficients held at a value the user gives
+    /// (`.tir` name, value in the file's SI units), in every stage.
+    pub hold: Vec<(String, f64)>,
 }
 
 impl Options {
@@ -72,6 +76,26 @@ impl Options {
         }
         if let Some(c) = self.camber {
             ParamError::finite("camber", c)?;
+        }
+        for (_, v) in &self.hold {
+            ParamError::finite("hold", *v)?;
+        }
+        Ok(())
+    }
+
+    /// Checks the `--hold` names: coefficients of a `.tir`, and only for
+    /// the staged Magic Formula fit.
+    fn validate_holds(&self) -> Result<(), OptionsError> {
+        if self.hold.is_empty() {
+            return Ok(());
+        }
+        if self.model.swarm_model().is_some() {
+            return Err(OptionsError::HoldNeedsStagedFit {
+                model: self.model.to_string(),
+            });
+        }
+        for (name, _) in &self.hold {
+            crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
         }
         Ok(())
     }
@@ -273,6 +297,7 @@ pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
 /// fitted.
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
     o.validate()?;
+    o.validate_holds()?;
     match o.model.swarm_model() {
         Some(model) => run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r))),
         None => run_staged(o).map(|r| IdentifyReport::Staged(Box::new(r))),

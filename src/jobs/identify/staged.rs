@@ -8,13 +8,13 @@
 use super::{IdentifyModel, Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::identify::mf_staged::{
-    self, rms_text, PooledSigma, RowAccount, StagedReport, StartScheme,
+    self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, OutputLock};
-use crate::tyre::mf::MfVersion;
+use crate::tyre::mf::{MfCoefficients, MfVersion};
 use serde::Serialize;
 
 /// The report of the staged Magic Formula fit.
@@ -81,7 +81,18 @@ impl StagedJob {
                     s.seconds
                 )),
             }
+            if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line()) {
+                out.push(format!("    where the error lies: {line}"));
+            }
             out.extend(s.warnings.iter().map(|w| format!("    warning: {w}")));
+            // What was held at a stated value rather than fitted (the
+            // parameters held for want of levels are in the report).
+            out.extend(s.parameters.iter().filter_map(|p| match &p.held {
+                Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => {
+                    Some(format!("    held: {} = {}: {why}", p.name, p.value))
+                }
+                _ => None,
+            }));
             out.extend(s.parameters.iter().filter_map(|p| {
                 let w = p.warning.as_deref()?;
                 Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
@@ -136,6 +147,18 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
         },
         template: template_tyre,
         max_iterations: o.max_iterations,
+        holding: Holding {
+            given: o.hold.clone(),
+            // The coefficients the template file gives: a parameter the
+            // data do not determine is held at the template's value then.
+            template_keys: template.as_ref().map_or(Vec::new(), |d| {
+                MfCoefficients::NAMES
+                    .iter()
+                    .filter(|k| d.get(k).is_some())
+                    .map(|k| k.to_string())
+                    .collect()
+            }),
+        },
     };
     let id = mf_staged::identify(&prepared.rows, &settings)
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;

@@ -1,0 +1,351 @@
+//! Parameters a stage does not fit, and the value each is held at.
+//!
+//! A parameter is held, never left where an optimiser wandered, when
+//! - its term needs more load, camber or pressure levels than the rows
+//!   have (`params.rs`), or it is held by design (`QBZ9`, `QSY3`, `QSY4`);
+//! - the user gives its value (`identify --hold NAME=VALUE`): held at it
+//!   in every stage;
+//! - the data do not determine it. The rule, applied after each stage's fit
+//!   (data and template starts; the paper's own scheme is left as the
+//!   paper has it): a free parameter is *not identifiable* when its
+//!   standard error reaches its magnitude and one standard error, alone,
+//!   moves the stage's channel by at least 1 % of its RMS, or when the
+//!   data do not move it at all (`stages.rs`, `identifiability`). Of the
+//!   parameters so flagged (the four with the largest relative standard
+//!   error), the one whose hold raises the stage's cost least is held at
+//!   its stated value and the stage refitted from its optimum; this
+//!   repeats until no free parameter is flagged. Two parameters that trade
+//!   along one near-null direction (`PKY1` and `PKY4` along the curvature
+//!   of `Kyα(Fz)` on loads that never reach its peak; `QBZ4·γ` and
+//!   `QBZ5·|γ|` on cambers of one sign, where they are one function) thus
+//!   lose the one the fit can best spare, and the other is determined
+//!   again.
+//!
+//! The stated value of a parameter held by the rule: the template's, when
+//! a template file gives the key; else the default of Pacejka (2012),
+//! *Tire and Vehicle Dynamics*, 3rd ed., as MFeval 4.0 distributes it
+//! (`PacejkaBook_Defaults.tir`, MF 6.1, ISO-W signs of a left tyre, SI): the
+//! secondary terms (camber, pressure, load variations) at 0, the
+//! primary ones at a passenger tyre's values.
+
+use super::params::Need;
+use super::problem::StageProblem;
+use super::uncertainty::uncertainty;
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::LocalResult;
+use serde::Serialize;
+use std::fmt;
+
+/// Where the value of a held parameter comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum HoldSource {
+    /// Given by the user (`--hold NAME=VALUE`).
+    Given,
+    /// The template file's value.
+    Template,
+    /// Pacejka's (2012) book default (module notes).
+    PacejkaBook,
+    /// The coefficient's value before the stage: the template's or its
+    /// version default (a parameter held for want of levels).
+    Unchanged,
+}
+
+impl fmt::Display for HoldSource {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            HoldSource::Given => "given with --hold",
+            HoldSource::Template => "template's value",
+            HoldSource::PacejkaBook => "Pacejka 2012 book default",
+            HoldSource::Unchanged => "its value before the stage",
+        })
+    }
+}
+
+/// Why a stage's parameter is held, not fitted.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "why", rename_all = "kebab-case")]
+pub enum HoldReason {
+    /// Its term needs more levels than the rows have: (needed, present)
+    /// for loads, cambers and pressures.
+    Levels {
+        /// Levels needed: load, camber, pressure.
+        need: [u8; 3],
+        /// Levels in the stage's rows.
+        have: [usize; 3],
+    },
+    /// Never fitted (the module notes of `mf_staged` say why).
+    ByDesign,
+    /// The user gave its value.
+    Given,
+    /// Fitted first, and not determined by the data (module notes).
+    NotIdentifiable {
+        /// Where it stood when it was flagged.
+        fitted: f64,
+        /// Its standard error there (`None`: the data do not move it).
+        std_error: Option<f64>,
+        /// One standard error's effect on the stage's channel, % of its RMS.
+        effect_percent: f64,
+        /// Where the value it is held at comes from.
+        source: HoldSource,
+    },
+}
+
+impl fmt::Display for HoldReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            HoldReason::Levels { need, have } => {
+                let why: Vec<String> = need
+                    .iter()
+                    .zip(have)
+                    .zip(["load", "camber", "pressure"])
+                    .filter(|((want, have), _)| usize::from(**want) > **have)
+                    .map(|((want, have), what)| {
+                        format!("needs {want} {what} levels, the data have {have}")
+                    })
+                    .collect();
+                f.write_str(&why.join(", "))
+            }
+            HoldReason::ByDesign => f.write_str("held by design (see the module notes)"),
+            HoldReason::Given => f.write_str("given with --hold"),
+            HoldReason::NotIdentifiable {
+                fitted,
+                std_error: Some(se),
+                effect_percent,
+                source,
+            } => write!(
+                f,
+                "not identifiable from these data when fitted ({fitted:.4} ± {se:.3e}; one \
+                 standard error moved the fit by {effect_percent:.1} % of the channel's RMS): \
+                 held at the {source}"
+            ),
+            HoldReason::NotIdentifiable { fitted, source, .. } => write!(
+                f,
+                "the data do not move it (it stood at {fitted:.4}): held at the {source}"
+            ),
+        }
+    }
+}
+
+/// The Magic Formula 6.1 defaults of Pacejka (2012) as MFeval 4.0's
+/// `PacejkaBook_Defaults.tir` gives them, for every coefficient a stage
+/// fits.
+#[rustfmt::skip]
+const PACEJKA_BOOK: &[(&str, f64)] = &[
+    ("PCX1", 1.6), ("PDX1", 1.0), ("PDX2", -0.1), ("PDX3", 0.0), ("PEX1", 0.0),
+    ("PEX2", 0.0), ("PEX3", 0.0), ("PEX4", 0.0), ("PKX1", 16.0), ("PKX2", 0.0),
+    ("PKX3", 0.0), ("PHX1", 0.0), ("PHX2", 0.0), ("PVX1", 0.0), ("PVX2", 0.0),
+    ("PPX1", 0.0), ("PPX2", 0.0), ("PPX3", 0.0), ("PPX4", 0.0), ("PCY1", 1.3),
+    ("PDY1", 1.0), ("PDY2", -0.05), ("PDY3", 0.0), ("PEY1", 0.0), ("PEY2", 0.0),
+    ("PEY3", 0.0), ("PEY4", 0.0), ("PEY5", 0.0), ("PKY1", -15.0), ("PKY2", 2.0),
+    ("PKY3", 0.0), ("PKY4", 2.0), ("PKY5", 0.0), ("PKY6", -1.0), ("PKY7", 0.0),
+    ("PHY1", 0.0), ("PHY2", 0.0), ("PVY1", 0.0), ("PVY2", 0.0), ("PVY3", 0.0),
+    ("PVY4", 0.0), ("PPY1", 0.0), ("PPY2", 0.0), ("PPY3", 0.0), ("PPY4", 0.0),
+    ("PPY5", 0.0), ("QBZ1", 10.0), ("QBZ2", 0.0), ("QBZ3", 0.0), ("QBZ4", 0.0),
+    ("QBZ5", 0.0), ("QBZ9", 10.0), ("QBZ10", 0.0), ("QCZ1", 1.1), ("QDZ1", 0.12),
+    ("QDZ2", 0.0), ("QDZ3", 0.0), ("QDZ4", 0.0), ("QDZ6", 0.0), ("QDZ7", 0.0),
+    ("QDZ8", -0.05), ("QDZ9", 0.0), ("QDZ10", 0.0), ("QDZ11", 0.0), ("QEZ1", 0.0),
+    ("QEZ2", 0.0), ("QEZ3", 0.0), ("QEZ4", 0.0), ("QEZ5", 0.0), ("QHZ1", 0.0),
+    ("QHZ2", 0.0), ("QHZ3", 0.0), ("QHZ4", 0.0), ("PPZ1", 0.0), ("PPZ2", 0.0),
+    ("RBX1", 8.3), ("RBX2", 5.0), ("RBX3", 0.0), ("RCX1", 0.9), ("REX1", 0.0),
+    ("REX2", 0.0), ("RHX1", 0.0), ("RBY1", 4.9), ("RBY2", 2.2), ("RBY3", 0.0),
+    ("RBY4", 0.0), ("RCY1", 1.0), ("REY1", 0.0), ("REY2", 0.0), ("RHY1", 0.0),
+    ("RHY2", 0.0), ("RVY1", 0.0), ("RVY2", 0.0), ("RVY3", 0.0), ("RVY4", 20.0),
+    ("RVY5", 2.0), ("RVY6", 10.0), ("SSZ1", 0.0), ("SSZ2", 0.0), ("SSZ3", 0.0),
+    ("SSZ4", 0.0), ("QSX1", 0.0), ("QSX2", 0.0), ("QSX3", 0.0), ("QSX4", 5.0),
+    ("QSX5", 1.0), ("QSX6", 10.0), ("QSX7", 0.0), ("QSX8", 0.0), ("QSX9", 0.4),
+    ("QSX10", 0.0), ("QSX11", 5.0), ("QSX12", 0.0), ("QSX13", 0.0), ("QSX14", 0.0),
+    ("PPMX1", 0.0), ("QSY1", 0.01), ("QSY2", 0.0), ("QSY3", 0.0004), ("QSY4", 4e-5),
+    ("QSY5", 0.0), ("QSY6", 0.0), ("QSY7", 0.85), ("QSY8", -0.4),
+];
+
+/// Pacejka's (2012) book default of a fitted coefficient (module notes).
+pub fn pacejka_book_default(name: &str) -> Option<f64> {
+    PACEJKA_BOOK.iter().find(|(k, _)| *k == name).map(|e| e.1)
+}
+
+/// What the user and the template say about held values.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Holding {
+    /// Coefficients held at a value the user gives, in every stage.
+    pub given: Vec<(String, f64)>,
+    /// The coefficient keys the template file gives (their values are
+    /// the template tyre's).
+    pub template_keys: Vec<String>,
+}
+
+impl Holding {
+    /// The value the user gives for `name`, if any.
+    pub(super) fn given(&self, name: &str) -> Option<f64> {
+        self.given.iter().find(|(k, _)| k == name).map(|e| e.1)
+    }
+
+    /// The stated value a parameter not determined by the data is held at
+    /// and its source: the template's (`template_value`) when the template
+    /// file gives the key, else Pacejka's book default.
+    pub(super) fn stated(&self, name: &str, template_value: Option<f64>) -> (f64, HoldSource) {
+        match template_value {
+            Some(v) if self.template_keys.iter().any(|k| k == name) => (v, HoldSource::Template),
+            _ => (
+                pacejka_book_default(name).unwrap_or(0.0),
+                HoldSource::PacejkaBook,
+            ),
+        }
+    }
+}
+
+/// A stage's fit in progress: its problem and its free parameters (with
+/// the levels each needs) at `p`, within `bounds`, started at `starts`.
+pub(super) struct StageFit<'a> {
+    pub(super) problem: StageProblem<'a>,
+    pub(super) needs: Vec<Need>,
+    pub(super) p: Vec<f64>,
+    pub(super) bounds: Vec<(f64, f64)>,
+    pub(super) starts: Vec<f64>,
+}
+
+/// The stage's own fit of a problem from its start values: the problem,
+/// each free parameter's levels needed, starts and bounds.
+pub(super) type Refit<'r> =
+    dyn Fn(&StageProblem, &[Need], &[f64], &[(f64, f64)]) -> LocalResult + 'r;
+
+/// Flagged parameters tried per round, those of the largest relative
+/// standard error first.
+const CANDIDATES: usize = 4;
+
+/// Holds the parameters of `fit` the data do not determine at their
+/// `stated` values, one at a time (module notes). The hold is chosen by
+/// refitting the rest from the optimum (Levenberg–Marquardt within the
+/// bounds); the one chosen is then refitted by the stage's own fit from
+/// its start values (`refit`) too, and the better of the two kept: a
+/// warm start that jumped one coefficient can stall where a fresh one
+/// does not. Returns each held parameter with its value and reason; adds
+/// the residual evaluations to `evaluations`.
+pub(super) fn hold_undetermined(
+    fit: &mut StageFit,
+    stated: &dyn Fn(&str) -> (f64, HoldSource),
+    refit: &Refit,
+    iterations: usize,
+    evaluations: &mut usize,
+) -> Vec<(&'static str, f64, HoldReason)> {
+    let mut held = Vec::new();
+    let lm = BoundedLm {
+        iterations,
+        tolerance: 1e-12,
+    };
+    while fit.p.len() > 1 {
+        let u = uncertainty(&fit.problem, &fit.p);
+        let relative = |k: usize| {
+            u.std_error[k].map_or(f64::INFINITY, |s| s / fit.p[k].abs().max(f64::MIN_POSITIVE))
+        };
+        let mut flagged: Vec<usize> = (0..fit.p.len())
+            .filter(|&k| u.flagged(k, fit.p[k]))
+            .collect();
+        flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
+        flagged.truncate(CANDIDATES);
+        let mut best: Option<(usize, StageProblem, Vec<f64>, f64)> = None;
+        for &k in &flagged {
+            let without = |v: &[f64]| -> Vec<f64> {
+                v.iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i != k)
+                    .map(|e| *e.1)
+                    .collect()
+            };
+            let mut base = fit.problem.tyre(&fit.p);
+            base.coefficients
+                .set(fit.problem.names[k], stated(fit.problem.names[k]).0);
+            let mut names = fit.problem.names.clone();
+            names.remove(k);
+            let sub = StageProblem::new(
+                base,
+                fit.problem.stage,
+                names,
+                fit.problem.rows.clone(),
+                fit.problem.derivatives,
+            );
+            let mut bounds = fit.bounds.clone();
+            bounds.remove(k);
+            let r = lm.minimize(&sub, &without(&fit.p), &bounds);
+            *evaluations += r.evaluations;
+            if r.cost.is_finite() && best.as_ref().is_none_or(|b| r.cost < b.3) {
+                best = Some((k, sub, r.params, r.cost));
+            }
+        }
+        let Some((k, problem, mut p, cost)) = best else {
+            break;
+        };
+        let mut needs = fit.needs.clone();
+        needs.remove(k);
+        fit.starts.remove(k);
+        fit.bounds.remove(k);
+        let fresh = refit(&problem, &needs, &fit.starts, &fit.bounds);
+        *evaluations += fresh.evaluations;
+        if fresh.cost.is_finite() && fresh.cost < cost {
+            p = fresh.params;
+        }
+        let name = fit.problem.names[k];
+        let (value, source) = stated(name);
+        held.push((
+            name,
+            value,
+            HoldReason::NotIdentifiable {
+                fitted: fit.p[k],
+                std_error: u.std_error[k],
+                effect_percent: 100.0 * u.effect[k],
+                source,
+            },
+        ));
+        fit.problem = problem;
+        fit.needs = needs;
+        fit.p = p;
+    }
+    held
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::identify::mf_staged::Stage;
+
+    /// Every coefficient a stage fits has its book default, and the
+    /// values are the book's (spot checks against the file).
+    #[test]
+    fn every_fitted_coefficient_has_a_book_default() {
+        for st in Stage::ALL {
+            for (name, _) in st.parameters() {
+                assert!(pacejka_book_default(name).is_some(), "{name}");
+            }
+        }
+        assert_eq!(PACEJKA_BOOK.len(), 124);
+        assert_eq!(pacejka_book_default("PKY4"), Some(2.0));
+        assert_eq!(pacejka_book_default("PKY1"), Some(-15.0));
+        assert_eq!(pacejka_book_default("QBZ5"), Some(0.0));
+        let h = Holding {
+            given: vec![("PKY4".into(), 1.5)],
+            template_keys: vec!["QBZ4".into()],
+        };
+        assert_eq!(h.given("PKY4"), Some(1.5));
+        assert_eq!(h.stated("QBZ4", Some(2.1)), (2.1, HoldSource::Template));
+        assert_eq!(h.stated("QBZ5", Some(1.0)), (0.0, HoldSource::PacejkaBook));
+    }
+
+    #[test]
+    fn a_hold_reason_reads_as_a_sentence() {
+        let levels = HoldReason::Levels {
+            need: [2, 1, 3],
+            have: [1, 2, 1],
+        };
+        assert_eq!(
+            levels.to_string(),
+            "needs 2 load levels, the data have 1, needs 3 pressure levels, the data have 1"
+        );
+        let rule = HoldReason::NotIdentifiable {
+            fitted: 0.100662,
+            std_error: Some(2.049),
+            effect_percent: 715.1,
+            source: HoldSource::PacejkaBook,
+        };
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.1007 ± 2.049e0; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
+    }
+}

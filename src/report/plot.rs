@@ -10,7 +10,7 @@
 //! as a reader writes numbers ([`tick_label`]: `-30`, `10000`, `0.25`).
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
-pub use super::series::{palette, Marker, Series, Shape, Style};
+pub use super::series::{palette, Marker, Series, Shape, Style, INK};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
 use plotters::coord::types::RangedCoordf64;

@@ -137,5 +137,12 @@ pub fn palette(i: usize) -> RGBColor {
         // Magenta.
         RGBColor(204, 51, 153),
     ];
+    if i == INK {
+        return RGBColor(0, 0, 0);
+    }
     P[i % P.len()]
 }
+
+/// Black: the colour of a fitted model's line drawn over measured points
+/// coloured by condition (every other index wraps over the ten colours).
+pub const INK: usize = 10;

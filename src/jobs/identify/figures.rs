@@ -1,15 +1,13 @@
-//! The figures of a fit: a swarm fit's measured points against the fitted
-//! curves, one panel per channel and camber, and a staged Magic Formula
-//! fit's measured rows against the identified tyre, one panel per stage and
-//! camber (slip angle in degrees, slip ratio in percent).
+//! The figure of a swarm fit: its measured points against the fitted
+//! curves, one panel per channel and camber (slip angle in degrees, slip
+//! ratio in percent); the staged Magic Formula fit's is in
+//! `staged_figure.rs`.
 
 use super::SwarmReport;
 use crate::format::fixed;
 use crate::identify::data::{Condition, Point, SlipAxis};
-use crate::identify::mf_staged::{MfRow, Stage, StageReport};
 use crate::identify::Channel;
 use crate::report::plot::{Figure, Panel, Series, Style};
-use crate::tyre::mf::MagicFormula;
 use crate::tyre::Tyre;
 
 /// Measured points against the fitted curves of every channel fitted.
@@ -61,10 +59,18 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
             .filter(|p| p.1.is_finite())
             .unzip();
         series.push(Series::line("", &x, &y, k).styled(Style::Points(2)));
-        let amax = c.points.iter().map(|q| q.slip().abs()).fold(0.0, f64::max);
+        // The fitted curve over the condition's own slip range: the y
+        // axis is then the data's, not the model's beyond them.
+        let (lo, hi) = c
+            .points
+            .iter()
+            .map(|q| q.slip())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
         let speed = c.points.first().map_or(10.0, |q| q.speed);
         let xs: Vec<f64> = (0..=200)
-            .map(|i| -amax + 2.0 * amax * i as f64 / 200.0)
+            .map(|i| lo + (hi - lo) * i as f64 / 200.0)
             .collect();
         let ys: Vec<f64> = xs
             .iter()
@@ -96,135 +102,5 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
         },
         series,
         ..Panel::default()
-    }
-}
-
-/// The figure of a staged Magic Formula fit: one panel per fitted stage and
-/// camber level, the stage's rows measured (large dots) against the
-/// identified tyre at the same rows (small dots), a colour per load level,
-/// against the stage's slip (slip ratio for pure `Fx`, combined `Fy` and
-/// `Mz`, and `My`; slip angle for the others), titled
-/// with the stage's σ. The y range leaves room above the data for the
-/// legend (one entry per load), so that it covers none.
-pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[StageReport], rows: &[MfRow]) -> Figure {
-    let mut panels = Vec::new();
-    for s in stages.iter().filter(|s| s.skipped.is_none()) {
-        let st = s.stage;
-        let sel: Vec<&MfRow> = rows.iter().filter(|r| st.takes(r)).collect();
-        let cambers = clusters(sel.iter().map(|r| r.camber), 0.25f64.to_radians());
-        for &g in &cambers {
-            let at_camber: Vec<&MfRow> = sel
-                .iter()
-                .copied()
-                .filter(|r| nearest(&cambers, r.camber) == g)
-                .collect();
-            panels.push(stage_panel(tyre, s, &at_camber, g));
-        }
-    }
-    Figure::stack(panels)
-}
-
-/// Levels of a quantity: sorted values split where consecutive ones are
-/// more than `gap` apart; each level's mean.
-fn clusters(values: impl Iterator<Item = f64>, gap: f64) -> Vec<f64> {
-    let mut v: Vec<f64> = values.filter(|x| x.is_finite()).collect();
-    v.sort_by(f64::total_cmp);
-    let mut out: Vec<Vec<f64>> = Vec::new();
-    for x in v {
-        match out.last_mut() {
-            Some(c) if x - c[c.len() - 1] <= gap => c.push(x),
-            _ => out.push(vec![x]),
-        }
-    }
-    out.iter()
-        .map(|c| c.iter().sum::<f64>() / c.len() as f64)
-        .collect()
-}
-
-fn nearest(levels: &[f64], x: f64) -> f64 {
-    levels
-        .iter()
-        .copied()
-        .min_by(|a, b| (a - x).abs().total_cmp(&(b - x).abs()))
-        .unwrap_or(x)
-}
-
-fn stage_panel(tyre: &MagicFormula, s: &StageReport, rows: &[&MfRow], camber: f64) -> Panel {
-    let st = s.stage;
-    // The combined Fx rows sweep the slip angle at a few slip ratios; the
-    // combined Fy and Mz rows (every row with longitudinal slip, α = 0
-    // included) are read against the slip ratio.
-    let ratio = matches!(
-        st,
-        Stage::PureFx | Stage::My | Stage::CombinedFy | Stage::CombinedMz
-    );
-    let slip = |r: &MfRow| {
-        if ratio {
-            100.0 * r.kappa
-        } else {
-            r.alpha.to_degrees()
-        }
-    };
-    let loads = clusters(rows.iter().map(|r| r.fz), 200.0);
-    let mut series = Vec::new();
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for (k, &fz) in loads.iter().enumerate() {
-        let at: Vec<&&MfRow> = rows
-            .iter()
-            .filter(|r| nearest(&loads, r.fz) == fz)
-            .collect();
-        let x: Vec<f64> = at.iter().map(|r| slip(r)).collect();
-        let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
-        let fitted: Vec<f64> = at.iter().map(|r| st.model(tyre, r)).collect();
-        for y in measured.iter().chain(&fitted) {
-            lo = lo.min(*y);
-            hi = hi.max(*y);
-        }
-        series.push(Series::line(&format!("{fz:.0} N"), &x, &measured, k).styled(Style::Points(3)));
-        // One legend entry per load: the fitted dots share its colour.
-        series.push(Series::line("", &x, &fitted, k).styled(Style::Points(1)));
-    }
-    let span = (hi - lo).max(1e-9);
-    let unit = match st {
-        Stage::PureFx | Stage::CombinedFx => "Fx [N]",
-        Stage::PureFy | Stage::CombinedFy => "Fy [N]",
-        Stage::PureMz | Stage::CombinedMz => "Mz [N·m]",
-        Stage::Mx => "Mx [N·m]",
-        Stage::My => "My [N·m]",
-    };
-    Panel {
-        title: format!(
-            "{}, camber {}°: σ {:.2} % ({} rows); large dots measured, small fitted",
-            st.label(),
-            fixed(camber.to_degrees(), 2),
-            s.sigma_percent,
-            rows.len()
-        ),
-        x_label: if ratio {
-            "slip ratio [%]".into()
-        } else {
-            "slip angle [deg]".into()
-        },
-        y_label: unit.into(),
-        series,
-        y_range: Some((
-            lo - 0.05 * span,
-            hi + (0.25 * loads.len() as f64 + 0.1) * span,
-        )),
-        ..Panel::default()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn levels_split_on_gaps_and_rows_find_their_level() {
-        let l = clusters([2000.0, 2010.0, 3990.0, 4000.0, 1995.0].into_iter(), 200.0);
-        assert_eq!(l.len(), 2);
-        assert!((l[0] - 6005.0 / 3.0).abs() < 1e-9 && (l[1] - 3995.0).abs() < 1e-9);
-        assert_eq!(nearest(&l, 3100.0), l[1]);
-        assert_eq!(nearest(&l, 2900.0), l[0]);
     }
 }

@@ -16,9 +16,11 @@ use crate::io::rig::read_rig;
 mod choices;
 mod figures;
 mod staged;
+mod staged_figure;
 
 use crate::error::{Error, FitError, NameKind, OptionsError, OutputError, ParamError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
+use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
 use crate::tyre::{ModelName, Pac89, Tyre};
@@ -224,6 +226,14 @@ impl IdentifyReport {
         }
     }
 
+    /// The figure written beside the tyre file: measured against fitted.
+    pub fn figure(&self) -> Figure {
+        match self {
+            IdentifyReport::Swarm(r) => figures::fit_figure(r),
+            IdentifyReport::Staged(r) => r.figure.clone(),
+        }
+    }
+
     /// Writes the tyre file, the report and the figure.
     pub fn write(&self) -> Result<(), Error> {
         let files = self.outputs();
@@ -242,7 +252,7 @@ impl IdentifyReport {
                 );
                 write_bytes(&files[0], format!("{header}{text}").as_bytes())?;
                 write_json_sorted(&files[1], r)?;
-                figures::fit_figure(r).save(&files[2])
+                self.figure().save(&files[2])
             }
             IdentifyReport::Staged(r) => {
                 write_bytes(&files[0], r.tir.as_bytes())?;

@@ -170,7 +170,14 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
     if back > 1e-9 {
         return Err(FitError::RoundTrip { difference: back }.into());
     }
-    let figure = super::figures::staged_figure(&id.tyre, &id.report.stages, &prepared.rows);
+    let fitted: Vec<mf_staged::Stage> = id
+        .report
+        .stages
+        .iter()
+        .filter(|s| s.skipped.is_none())
+        .map(|s| s.stage)
+        .collect();
+    let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows);
     Ok(StagedJob {
         report: id.report,
         data: o.data.display().to_string(),

@@ -1,0 +1,354 @@
+//! The figure of a staged Magic Formula fit: the measured rows of each
+//! fitted stage as points coloured by condition and the identified tyre
+//! as a black line over them, one line per test condition (load, camber,
+//! pressure and, for the combined-slip stages, the level of the other
+//! slip), drawn over the
+//! condition's own slip range at its mean load, camber, pressure, speed and
+//! other slip. A panel per stage, camber level and pressure level (and load
+//! level where the other slip has several levels), each titled with its own
+//! σ = sqrt(Σe²/ΣF²)·100 % over its rows (the stage's σ is over all of
+//! them). The x axis is the slip the stage's rows sweep: the slip ratio
+//! (percent) for the longitudinal force, pure and combined, for the
+//! combined lateral force and aligning moment (the slip-ratio sweeps of a
+//! drive/brake test, at their slip-angle levels) and for the rolling
+//! resistance; the slip angle (degrees) for the pure lateral force, the
+//! pure aligning moment and the overturning moment. The y range is the
+//! data's (the key sits beside the chart, [`crate::report::plot`]).
+
+use crate::format::fixed;
+use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage};
+use crate::report::plot::{Figure, Panel, Series, Style, INK};
+use crate::tyre::mf::MagicFormula;
+
+/// A slip variable: the x of a panel, or the level its lines are drawn at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Slip {
+    /// Slip angle α (rad; degrees on the figure).
+    Angle,
+    /// Slip ratio κ (percent on the figure).
+    Ratio,
+}
+
+impl Slip {
+    /// The slip a stage's channel is read against (module notes): the
+    /// one its rows sweep ([`sweeps_slip_angle`]).
+    fn of_stage(st: Stage) -> Self {
+        if sweeps_slip_angle(st) {
+            Slip::Angle
+        } else {
+            Slip::Ratio
+        }
+    }
+
+    fn other(self) -> Self {
+        match self {
+            Slip::Angle => Slip::Ratio,
+            Slip::Ratio => Slip::Angle,
+        }
+    }
+
+    fn of(self, r: &MfRow) -> f64 {
+        match self {
+            Slip::Angle => r.alpha,
+            Slip::Ratio => r.kappa,
+        }
+    }
+
+    fn set(self, r: &mut MfRow, v: f64) {
+        match self {
+            Slip::Angle => r.alpha = v,
+            Slip::Ratio => r.kappa = v,
+        }
+    }
+
+    /// In the figure's unit: degrees, percent.
+    fn shown(self, v: f64) -> f64 {
+        match self {
+            Slip::Angle => v.to_degrees(),
+            Slip::Ratio => 100.0 * v,
+        }
+    }
+
+    fn axis(self) -> &'static str {
+        match self {
+            Slip::Angle => "slip angle α [deg]",
+            Slip::Ratio => "slip ratio κ [%]",
+        }
+    }
+
+    /// Values within this of each other are one level.
+    fn gap(self) -> f64 {
+        match self {
+            Slip::Angle => 0.5f64.to_radians(),
+            Slip::Ratio => 0.01,
+        }
+    }
+
+    fn level(self, v: f64) -> String {
+        match self {
+            Slip::Angle => format!("α {}°", fixed(v.to_degrees(), 1)),
+            Slip::Ratio => format!("κ {} %", fixed(100.0 * v, 1)),
+        }
+    }
+}
+
+/// The channel of a stage with its unit, as an axis names it.
+fn channel(st: Stage) -> &'static str {
+    match st {
+        Stage::PureFx | Stage::CombinedFx => "Fx [N]",
+        Stage::PureFy | Stage::CombinedFy => "Fy [N]",
+        Stage::PureMz | Stage::CombinedMz => "Mz [N·m]",
+        Stage::Mx => "Mx [N·m]",
+        Stage::My => "My [N·m]",
+    }
+}
+
+/// Levels of a quantity: sorted values split where consecutive ones are
+/// more than `gap` apart; each level's mean.
+pub(super) fn clusters(values: impl Iterator<Item = f64>, gap: f64) -> Vec<f64> {
+    let mut v: Vec<f64> = values.filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    let mut out: Vec<Vec<f64>> = Vec::new();
+    for x in v {
+        match out.last_mut() {
+            Some(c) if x - c[c.len() - 1] <= gap => c.push(x),
+            _ => out.push(vec![x]),
+        }
+    }
+    out.iter()
+        .map(|c| c.iter().sum::<f64>() / c.len() as f64)
+        .collect()
+}
+
+/// The index of the level nearest `x` (0 without levels: an unmeasured
+/// quantity).
+pub(super) fn nearest(levels: &[f64], x: f64) -> usize {
+    (0..levels.len())
+        .min_by(|&a, &b| (levels[a] - x).abs().total_cmp(&(levels[b] - x).abs()))
+        .unwrap_or(0)
+}
+
+/// The levels of a stage's rows: camber, pressure, load and the other
+/// slip, and each row's index in them.
+struct Levels {
+    camber: Vec<f64>,
+    pressure: Vec<f64>,
+    load: Vec<f64>,
+    other: Vec<f64>,
+    /// Per row: (camber, pressure, load, other slip) level.
+    of_row: Vec<[usize; 4]>,
+}
+
+impl Levels {
+    fn of(rows: &[&MfRow], other: Slip) -> Self {
+        let p = |r: &MfRow| r.pressure.unwrap_or(f64::NAN);
+        let camber = clusters(rows.iter().map(|r| r.camber), 0.25f64.to_radians());
+        let pressure = clusters(rows.iter().map(|r| p(r)), 2e3);
+        let load = clusters(rows.iter().map(|r| r.fz), 200.0);
+        let others = clusters(rows.iter().map(|r| other.of(r)), other.gap());
+        let of_row = rows
+            .iter()
+            .map(|r| {
+                [
+                    nearest(&camber, r.camber),
+                    nearest(&pressure, p(r)),
+                    nearest(&load, r.fz),
+                    nearest(&others, other.of(r)),
+                ]
+            })
+            .collect();
+        Self {
+            camber,
+            pressure,
+            load,
+            other: others,
+            of_row,
+        }
+    }
+}
+
+/// The figure of the fitted `stages` (skipped ones left out) of `tyre` on
+/// `rows` (module notes). The panels form a grid whose columns are the
+/// pressure levels when there are several (a blank panel where a
+/// condition lacks one), else two columns when there are four panels or
+/// more.
+pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow]) -> Figure {
+    let mut panels = Vec::new();
+    let mut pressures = 1;
+    for &st in stages {
+        let sel: Vec<&MfRow> = rows.iter().filter(|r| st.takes(r)).collect();
+        let x = Slip::of_stage(st);
+        let lv = Levels::of(&sel, x.other());
+        pressures = pressures.max(lv.pressure.len());
+        // A panel per load where the other slip has levels of its own: the
+        // lines of a panel are then the other slip's levels.
+        let by_load = lv.other.len() > 1;
+        let loads = if by_load { lv.load.len() } else { 1 };
+        for c in 0..lv.camber.len().max(1) {
+            for l in 0..loads {
+                for p in 0..lv.pressure.len().max(1) {
+                    let at: Vec<(usize, &MfRow)> = sel
+                        .iter()
+                        .zip(&lv.of_row)
+                        .filter(|(_, k)| k[0] == c && k[1] == p && (!by_load || k[2] == l))
+                        .map(|(r, k)| (if by_load { k[3] } else { k[2] }, *r))
+                        .collect();
+                    let key = Key {
+                        stage: st,
+                        x,
+                        camber: lv.camber.get(c).copied(),
+                        pressure: lv.pressure.get(p).copied(),
+                        load: by_load.then(|| lv.load[l]),
+                    };
+                    panels.push(panel(tyre, &key, &at, &lv, by_load));
+                }
+            }
+        }
+    }
+    let columns = if pressures > 1 {
+        pressures
+    } else if panels.len() >= 4 {
+        2
+    } else {
+        1
+    };
+    Figure {
+        panels,
+        columns,
+        width: if columns == 1 {
+            1000
+        } else {
+            650 * columns as u32
+        },
+        row_height: 300,
+    }
+}
+
+/// What a panel shows: the stage, its x, and the levels it is at.
+struct Key {
+    stage: Stage,
+    x: Slip,
+    camber: Option<f64>,
+    pressure: Option<f64>,
+    load: Option<f64>,
+}
+
+impl Key {
+    fn title(&self, tail: &str) -> String {
+        let mut t = self.stage.label().to_string();
+        if let Some(g) = self.camber {
+            t += &format!(", γ {}°", fixed(g.to_degrees(), 2));
+        }
+        if let Some(p) = self.pressure {
+            t += &format!(", {} kPa", fixed(p / 1e3, 1));
+        }
+        if let Some(fz) = self.load {
+            t += &format!(", Fz {} N", fixed(fz, 0));
+        }
+        format!("{t}: {tail}")
+    }
+}
+
+/// One panel: `rows` tagged with their line's level (load, or the other
+/// slip's level with `by_other`).
+fn panel(
+    tyre: &MagicFormula,
+    key: &Key,
+    rows: &[(usize, &MfRow)],
+    lv: &Levels,
+    by_other: bool,
+) -> Panel {
+    let st = key.stage;
+    let x_label = key.x.axis().to_string();
+    if rows.is_empty() {
+        return Panel {
+            title: key.title("no rows"),
+            x_label,
+            y_label: channel(st).into(),
+            ..Panel::default()
+        };
+    }
+    // The key's first entries say how measured and fitted are drawn.
+    let mut series = vec![
+        Series::line("measured", &[], &[], 7).styled(Style::Points(3)),
+        Series::line("fitted", &[], &[], INK),
+    ];
+    let (mut e2, mut y2) = (0.0, 0.0);
+    let count = if by_other {
+        lv.other.len()
+    } else {
+        lv.load.len()
+    };
+    for k in 0..count {
+        let at: Vec<&MfRow> = rows
+            .iter()
+            .filter(|(level, _)| *level == k)
+            .map(|(_, r)| *r)
+            .collect();
+        if at.is_empty() {
+            continue;
+        }
+        let colour = series.len() / 2 - 1;
+        let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
+        let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
+        for (r, m) in at.iter().zip(&measured) {
+            e2 += (st.model(tyre, r) - m).powi(2);
+            y2 += m * m;
+        }
+        let label = if by_other {
+            key.x.other().level(lv.other[k])
+        } else {
+            format!("{} N", fixed(lv.load[k], 0))
+        };
+        series.push(Series::line(&label, &xs, &measured, colour).styled(Style::Points(3)));
+        let (lx, ly) = model_line(tyre, st, key.x, &at);
+        // Black over the coloured points, so that a close fit is seen.
+        series.push(Series::line("", &lx, &ly, INK));
+    }
+    let sigma = 100.0 * (e2 / y2).sqrt();
+    Panel {
+        title: key.title(&format!("σ {} %, {} rows", fixed(sigma, 2), rows.len())),
+        x_label,
+        y_label: channel(st).into(),
+        series,
+        ..Panel::default()
+    }
+}
+
+/// The tyre's channel of stage `st` along the slip `x`, over the range of
+/// the condition's rows `at` (120 points, in increasing x), at their mean
+/// load, camber, pressure, speed and other slip.
+fn model_line(tyre: &MagicFormula, st: Stage, x: Slip, at: &[&MfRow]) -> (Vec<f64>, Vec<f64>) {
+    let n = at.len() as f64;
+    let mean = |f: &dyn Fn(&MfRow) -> f64| at.iter().map(|r| f(r)).sum::<f64>() / n;
+    let pressures: Vec<f64> = at.iter().filter_map(|r| r.pressure).collect();
+    let mut row = MfRow {
+        fz: mean(&|r| r.fz),
+        camber: mean(&|r| r.camber),
+        speed: mean(&|r| r.speed),
+        pressure: (!pressures.is_empty())
+            .then(|| pressures.iter().sum::<f64>() / pressures.len() as f64),
+        ..*at[0]
+    };
+    x.other().set(&mut row, mean(&|r| x.other().of(r)));
+    let (lo, hi) = at
+        .iter()
+        .map(|r| x.of(r))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if hi <= lo {
+        return (Vec::new(), Vec::new());
+    }
+    (0..120)
+        .map(|i| {
+            let v = lo + (hi - lo) * f64::from(i) / 119.0;
+            x.set(&mut row, v);
+            (x.shown(v), st.model(tyre, &row))
+        })
+        .unzip()
+}
+
+#[cfg(test)]
+#[path = "staged_figure_tests.rs"]
+mod tests;

@@ -7,13 +7,13 @@
 //! (`report.html`, [`super::diagnose_page`]).
 
 use crate::diagnose::channels::Channel;
-use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis, Shrinkage};
+use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis};
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::{ParameterValue, Part};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};
 use crate::report::progress::Progress;
 use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
 use serde::Serialize;
@@ -218,86 +218,132 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
     out
 }
 
-/// The gap map: held-out RMS over the noise floor per channel against the
-/// time window, the lateral-acceleration level and the speed band, with the
-/// base model and with the verdict's effects.
+/// The gap map: held-out RMS over the noise floor against the time window,
+/// the |ay| level and the speed band, with the base model and with the
+/// verdict's effects ([`gap_figure`]).
 fn gap_map(d: &Diagnosis) -> Figure {
+    let points: Vec<GapPoint> = d
+        .shrinkage
+        .iter()
+        .filter_map(|s| {
+            let (axis, x) = s.part.position()?;
+            (s.noise_floor > 0.0).then_some(GapPoint {
+                channel: s.channel,
+                axis,
+                x,
+                before: s.before / s.noise_floor,
+                after: s.after / s.noise_floor,
+            })
+        })
+        .collect();
+    gap_figure(&d.verdict.effects, &points)
+}
+
+/// One point of the gap map: a channel's held-out RMS over its noise floor
+/// in one part of the data, before and after the verdict's effects.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct GapPoint {
+    channel: Channel,
+    axis: PartAxis,
+    /// The part's position on its axis (s, m/s² or m/s).
+    x: f64,
+    before: f64,
+    after: f64,
+}
+
+/// Width of the gap map, px: printed at a report's text width (170 mm) its
+/// labels are ~10 pt ([`Figure::printed_label_points`]).
+const GAP_MAP_WIDTH: u32 = 640;
+
+/// The gap map for print: a panel per axis (time window, |ay| level, speed
+/// band), one column, the three channels in each (the ratio to the noise
+/// floor is one scale for all), a colour per channel — the base model
+/// dotted with rings, with the verdict's effects solid with discs — and
+/// 3 × the noise floor dashed.
+fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
     let mut panels = Vec::new();
-    for ch in Channel::ALL {
-        let rows: Vec<&Shrinkage> = d.shrinkage.iter().filter(|s| s.channel == ch).collect();
-        for axis in PartAxis::ALL {
-            let mut pts: Vec<(f64, f64, f64)> = rows
+    for axis in PartAxis::ALL {
+        let mut series = Vec::new();
+        let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (ch, colour) in Channel::ALL.into_iter().zip([0, 3, 2]) {
+            let mut pts: Vec<&GapPoint> = points
                 .iter()
-                .filter_map(|s| {
-                    let (a, x) = s.part.position()?;
-                    (a == axis && s.noise_floor > 0.0)
-                        .then(|| (x, s.before / s.noise_floor, s.after / s.noise_floor))
-                })
+                .filter(|p| p.channel == ch && p.axis == axis)
                 .collect();
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            if !pts.is_empty() {
-                panels.push(gap_panel(&d.verdict.effects, ch, axis, &pts));
+            if pts.is_empty() {
+                continue;
+            }
+            pts.sort_by(|a, b| a.x.total_cmp(&b.x));
+            let x: Vec<f64> = pts.iter().map(|p| p.x).collect();
+            x0 = x0.min(x[0] - 0.5);
+            x1 = x1.max(x[x.len() - 1] + 0.5);
+            let before: Vec<f64> = pts.iter().map(|p| p.before).collect();
+            let after: Vec<f64> = pts.iter().map(|p| p.after).collect();
+            let name = symbol(ch);
+            series.push(
+                Series::line(&format!("{name}, base model"), &x, &before, colour)
+                    .styled(Style::Dotted)
+                    .marked(Marker {
+                        shape: Shape::Ring,
+                        size: 4,
+                    }),
+            );
+            if !effects.is_empty() {
+                series.push(
+                    Series::line(
+                        &format!("{name}, with {}", joined(effects, " + ")),
+                        &x,
+                        &after,
+                        colour,
+                    )
+                    .marked(Marker {
+                        shape: Shape::Disc,
+                        size: 4,
+                    }),
+                );
             }
         }
+        if series.is_empty() {
+            continue;
+        }
+        series
+            .push(Series::line("3 × noise floor", &[x0, x1], &[3.0, 3.0], 7).styled(Style::Dashed));
+        let (x_label, title) = match axis {
+            PartAxis::Time => (
+                "time after the input starts (window centre), s",
+                "by time window",
+            ),
+            PartAxis::Ay => ("|a_y| band centre, m/s²", "by |a_y| level"),
+            PartAxis::Speed => ("speed band centre, m/s", "by speed"),
+        };
+        panels.push(Panel {
+            title: format!("Held-out gap {title}"),
+            x_label: x_label.into(),
+            y_label: "RMS / noise floor".into(),
+            series,
+            x_range: Some((x0, x1)),
+            y_range: None,
+        });
     }
     Figure {
         panels,
-        columns: 3,
-        width: 2100,
-        row_height: 300,
+        columns: 1,
+        width: GAP_MAP_WIDTH,
+        row_height: 360,
     }
 }
 
 /// A channel as a figure names it: the quantity, its symbol and its unit.
 fn quantity(ch: Channel) -> String {
-    let name = match ch {
+    format!("{}, {}", symbol(ch), ch.unit())
+}
+
+/// A channel's name and symbol: `yaw rate r`.
+fn symbol(ch: Channel) -> &'static str {
+    match ch {
         Channel::YawRate => "yaw rate r",
         Channel::Ay => "lateral acceleration a_y",
         Channel::Beta => "sideslip β",
-    };
-    format!("{name}, {}", ch.unit())
-}
-
-/// One channel against one axis: (position, before, after) over the floor.
-fn gap_panel(
-    effects: &[EffectKind],
-    ch: Channel,
-    axis: PartAxis,
-    pts: &[(f64, f64, f64)],
-) -> Panel {
-    let (x_label, title) = match axis {
-        PartAxis::Time => (
-            "time after the input starts (window centre), s",
-            "by time window",
-        ),
-        PartAxis::Ay => ("|a_y| band centre, m/s²", "by |a_y| level"),
-        PartAxis::Speed => ("speed band centre, m/s", "by speed"),
-    };
-    let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
-    let before: Vec<f64> = pts.iter().map(|p| p.1).collect();
-    let after: Vec<f64> = pts.iter().map(|p| p.2).collect();
-    let mut series = vec![
-        Series::line("base model", &x, &before, 1),
-        Series::line("", &x, &before, 1).styled(Style::Points(4)),
-    ];
-    if !effects.is_empty() {
-        series.push(Series::line(
-            &format!("with {}", joined(effects, " + ")),
-            &x,
-            &after,
-            2,
-        ));
-        series.push(Series::line("", &x, &after, 2).styled(Style::Points(4)));
-    }
-    let (x0, x1) = (x[0] - 0.5, x[x.len() - 1] + 0.5);
-    series.push(Series::line("3 × noise floor", &[x0, x1], &[3.0, 3.0], 7).styled(Style::Dashed));
-    Panel {
-        title: format!("{} — {title}", quantity(ch)),
-        x_label: x_label.into(),
-        y_label: "held-out RMS / noise floor".into(),
-        series,
-        x_range: Some((x0, x1)),
-        y_range: None,
     }
 }
 
@@ -401,18 +447,58 @@ fn value(v: f64) -> String {
 mod tests {
     use super::*;
 
+    /// Nine channel-and-axis charts become three print-sized panels: a
+    /// panel per axis holding every channel, labels about 10 pt on a
+    /// 170 mm text width, each channel's series named with its quantity.
     #[test]
-    fn gap_map_panels_name_the_quantity_with_its_unit() {
-        let pts = [(1.0, 5.0, 1.0), (2.0, 4.0, 1.5)];
-        let p = gap_panel(&[], Channel::YawRate, PartAxis::Time, &pts);
-        assert_eq!(p.title, "yaw rate r, rad/s — by time window");
-        assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
-        assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
-        // No report name (yaw_rate, ay, beta) in a title.
+    fn the_gap_map_is_three_panels_legible_in_print() {
+        let mut points = Vec::new();
         for ch in Channel::ALL {
             for axis in PartAxis::ALL {
-                let t = gap_panel(&[], ch, axis, &pts).title;
-                assert!(!t.contains(ch.name()), "{t}");
+                for (x, b, a) in [(1.0, 5.0, 1.0), (2.0, 4.0, 1.5)] {
+                    points.push(GapPoint {
+                        channel: ch,
+                        axis,
+                        x,
+                        before: b,
+                        after: a,
+                    });
+                }
+            }
+        }
+        let fig = gap_figure(&[EffectKind::SensorDelay], &points);
+        assert_eq!((fig.panels.len(), fig.columns), (3, 1));
+        assert!(
+            fig.printed_label_points() >= 9.5,
+            "{}",
+            fig.printed_label_points()
+        );
+        let time = &fig.panels[0];
+        assert_eq!(time.title, "Held-out gap by time window");
+        let labels: Vec<&str> = time.series.iter().map(|s| s.label.as_str()).collect();
+        assert_eq!(
+            labels,
+            [
+                "yaw rate r, base model",
+                "yaw rate r, with sensor_delay",
+                "lateral acceleration a_y, base model",
+                "lateral acceleration a_y, with sensor_delay",
+                "sideslip β, base model",
+                "sideslip β, with sensor_delay",
+                "3 × noise floor"
+            ]
+        );
+        assert_eq!(time.axes().x, (0.5, 2.5));
+        assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
+        assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
+        assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
+        // Without a verdict: the base model alone, and no report name
+        // (yaw_rate, ay, beta) in a label.
+        let base = gap_figure(&[], &points);
+        assert_eq!(base.panels[1].series.len(), 4);
+        for s in &base.panels[1].series {
+            for ch in Channel::ALL {
+                assert!(!s.label.contains(ch.name()), "{}", s.label);
             }
         }
     }

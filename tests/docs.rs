@@ -20,12 +20,84 @@
 //! `TRYCMD=overwrite cargo test --release --test docs` rewrites the pages in
 //! the checkout.
 //!
+//! The book's figures (`docs/src/images/*.png`) are the outputs of the
+//! quoted commands of this run, copied over the checkout's ([`FIGURES`]):
+//! the test command refreshes them, so a figure in the book is made by the
+//! current tool, by the command its chapter quotes; an image no quoted
+//! command makes is refused.
+//!
 //! The book's table of contents is checked here too: every chapter that
 //! `docs/src/SUMMARY.md` links exists, every page of `docs/src` is linked, and
 //! every relative link of a page points at a file of the repository.
 
 use std::fs;
 use std::path::{Path, PathBuf};
+
+/// The book's figures: (image in `docs/src/images`, the page whose quoted
+/// commands make it, the file they write, relative to the page's scratch
+/// folder).
+const FIGURES: &[(&str, &str, &str)] = &[
+    (
+        "diagnose_gap_map.png",
+        "book-diagnose",
+        "out/diagnosis/gap_map.png",
+    ),
+    (
+        "equilibria_phase_portrait.png",
+        "book-equilibria",
+        "out/steer/phase_portrait_1.png",
+    ),
+    (
+        "equilibria_branches_speed_lt.png",
+        "book-equilibria",
+        "out/speed_lt/branches_speed.png",
+    ),
+    ("identify_mf61_fit.png", "book-magic-formula", "out/fit.png"),
+    ("study_maps.png", "book-study", "out/study/maps.png"),
+];
+
+/// Copies the figures the quoted commands wrote under `work` over the
+/// book's (only those that changed, so an unchanged checkout stays so).
+fn refresh_figures(work: &Path) {
+    let images = root().join("docs/src/images");
+    for (image, case, output) in FIGURES {
+        let made = work.join(format!("{case}.in")).join(output);
+        let fresh = fs::read(&made).unwrap_or_else(|e| {
+            panic!(
+                "{}: the figure of docs/src/images/{image} was not written: {e}",
+                made.display()
+            )
+        });
+        if fs::read(images.join(image)).ok().as_deref() != Some(&fresh[..]) {
+            fs::write(images.join(image), fresh).unwrap();
+        }
+    }
+}
+
+#[test]
+fn every_book_image_is_made_by_a_quoted_command_and_shown() {
+    let mut on_disk: Vec<String> = fs::read_dir(root().join("docs/src/images"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    on_disk.sort();
+    let mut made: Vec<String> = FIGURES.iter().map(|f| f.0.to_string()).collect();
+    made.sort();
+    assert_eq!(
+        on_disk, made,
+        "docs/src/images holds an image no quoted command makes, or lacks one"
+    );
+    let book: String = pages()
+        .iter()
+        .map(|p| fs::read_to_string(p).unwrap())
+        .collect();
+    for (image, ..) in FIGURES {
+        assert!(
+            book.contains(&format!("](images/{image})")),
+            "no page shows images/{image}"
+        );
+    }
+}
 
 /// Repository folders a quoted command may read.
 const INPUTS: &[&str] = &["scenarios", "tyres", "campaigns", "docs", "tests/fixtures"];
@@ -106,6 +178,7 @@ fn quoted_commands_run_as_written() {
     }
     assert!(copies.len() >= 2, "no page quotes a command");
     cases.run();
+    refresh_figures(work.path());
     // `TRYCMD=overwrite` rewrote the copies: carry them back.
     if std::env::var_os("TRYCMD").is_some_and(|m| m == "overwrite") {
         for (page, copy) in copies {

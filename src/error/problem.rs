@@ -549,90 +549,6 @@ fn wrong_sign(
     )
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn slope(
-        slope: f64,
-        standard_error: f64,
-        above: usize,
-        below: usize,
-        combined: bool,
-    ) -> SmallSlipSlope {
-        SmallSlipSlope {
-            slope,
-            standard_error,
-            above,
-            below,
-            small_slip: 0.035,
-            combined,
-        }
-    }
-
-    /// The messages the readers wrote as text before they were typed, word
-    /// for word (the CLI's users and tests read them).
-    #[test]
-    fn messages_read_as_the_text_they_replace() {
-        let fy = InputProblem::WrongSign {
-            channel: RigChannel::Fy,
-            position: 3,
-            slope: slope(-12345.678, 12.3456, 6, 5, false),
-            fy_slope: None,
-        };
-        assert_eq!(fy.to_string(), "column `fy` (column 3 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad) its least-squares slope against `alpha` is -12346 N/rad (standard error 12 N/rad) from 11 samples (6 with alpha > 0, 5 with alpha < 0); FORMATS.md (ISO 8855) requires a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha). The file is likely in the SAE or another sign convention: negate the `fy` column");
-        let mz = InputProblem::WrongSign {
-            channel: RigChannel::Mz,
-            position: 4,
-            slope: slope(-150.0, 2.0, 5, 5, true),
-            fy_slope: Some(50000.0),
-        };
-        assert_eq!(mz.to_string(), "column `mz` (column 4 of the header) has the wrong sign: near zero slip (|alpha| ≤ 0.035 rad, |kappa| ≤ 0.035) its least-squares slope against `alpha` is -150.0 N·m/rad (standard error 2.0 N·m/rad) from 10 samples (5 with alpha > 0, 5 with alpha < 0), while that of `fy` is 50000 N/rad; FORMATS.md (ISO 8855) requires `mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign. The file is likely in the SAE or another sign convention: negate the `mz` column");
-        let fx = InputProblem::WrongSign {
-            channel: RigChannel::Fx,
-            position: 2,
-            slope: slope(-3000.0, 10.0, 6, 6, true),
-            fy_slope: None,
-        };
-        assert_eq!(fx.to_string(), "column `fx` (column 2 of the header) has the wrong sign: near zero slip (|kappa| ≤ 0.035, |alpha| ≤ 0.035 rad) its least-squares slope against `kappa` is -3000 N (standard error 10 N) from 12 samples (6 with kappa > 0, 6 with kappa < 0); FORMATS.md (ISO 8855) requires a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa). The file is likely in the SAE or another sign convention: negate the `fx` column");
-        let level = InputProblem::NoLevelNear {
-            variable: Variable::Pressure,
-            requested: 250e3,
-            levels: vec![200e3, 220e3],
-            separation: 5e3,
-        };
-        assert_eq!(level.to_string(), "no pressure level near the requested 250.0 kPa (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
-        let angle = InputProblem::AngleInDegrees {
-            column: "camber",
-            value: 3.0,
-            limit: std::f64::consts::FRAC_PI_4,
-        };
-        assert_eq!(angle.to_string(), "column `camber`: 3 rad is beyond ±45°: angles are in radians (FORMATS.md); is the column in degrees?");
-        let step = InputProblem::NoSteerStep {
-            pieces: vec![
-                RefusedPiece {
-                    name: "run.csv#1".into(),
-                    t_start: 0.0,
-                    t_end: 12.5,
-                    reason: PieceRefusal::NoStepMetrics(MetricsError::TooShort(12.5)),
-                },
-                RefusedPiece {
-                    name: "run.csv#2".into(),
-                    t_start: 13.0,
-                    t_end: 20.0,
-                    reason: PieceRefusal::AnotherPieceUsed,
-                },
-            ],
-        };
-        assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is shorter than the initial and steady windows together); run.csv#2 (13.00–20.00 s): another piece was used");
-        let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
-        assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
-        assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");
-        let camber = InputProblem::NoCamberColumn { camber: 0.05 };
-        assert_eq!(camber.to_string(), "camber 2.86° was requested but the file has no `camber` column (its samples are at camber 0)");
-    }
-}
-
 /// What a path a key names leads to, when it is not what the key wants.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PathFound {
@@ -653,3 +569,7 @@ impl PathFound {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "problem_tests.rs"]
+mod tests;

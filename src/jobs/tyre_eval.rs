@@ -188,8 +188,6 @@ pub fn run(
         }
         _ => (None, 0, None),
     };
-    // A model that gives a non-finite value at a physical point is refused
-    // at that point (its row, the first column).
     if let Some(p) = pressure {
         columns.push(("pressure", p));
     }
@@ -206,6 +204,9 @@ pub fn run(
     if let Some(rl) = loaded_radius {
         columns.push(("rl", rl));
     }
+    // A model that gives a non-finite value at a physical point is refused
+    // at that point (its row, the first column).
+    // (The first five columns are the inputs, checked above.)
     for (output, values) in columns.iter().skip(5) {
         if let Some(i) = values.iter().position(|v| !v.is_finite()) {
             let problem = crate::error::InputProblem::NonFiniteOutput {

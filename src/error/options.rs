@@ -122,7 +122,11 @@ fn listing(known: &[&str]) -> String {
 #[non_exhaustive]
 pub enum OptionsError {
     /// A name that is no member of its closed set.
-    #[error("unknown {what} `{given}`{}: {}", crate::format::did_you_mean(given, known), listing(known))]
+    #[error(
+        "unknown {what} `{given}`{}: {}",
+        crate::format::did_you_mean(given, known),
+        listing(known)
+    )]
     UnknownName {
         /// The set.
         what: NameKind,

@@ -422,7 +422,10 @@ fn mf61_holds_a_coefficient_at_the_value_the_user_gives() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("held: PKY4 = 1.9: given with --hold"), "{text}");
+    assert!(
+        text.contains("held: PKY4 = 1.9: given with --hold"),
+        "{text}"
+    );
     let report = read_json(&out.with_extension("report.json"));
     let p = stage(&report, "pure-fy")["parameters"]
         .as_array()
@@ -431,11 +434,29 @@ fn mf61_holds_a_coefficient_at_the_value_the_user_gives() {
         .find(|p| p["name"] == "PKY4")
         .unwrap()
         .clone();
-    assert_eq!((p["value"].as_f64(), &p["free"]), (Some(1.9), &serde_json::json!(false)));
+    assert_eq!(
+        (p["value"].as_f64(), &p["free"]),
+        (Some(1.9), &serde_json::json!(false))
+    );
     assert_eq!(p["held"]["why"], "given");
     let tir = fs::read_to_string(&out).unwrap();
-    let line = tir.lines().find(|l| l.trim_start().starts_with("PKY4")).unwrap();
-    assert_eq!(line.split('=').nth(1).unwrap().split('$').next().unwrap().trim().parse::<f64>().unwrap(), 1.9, "{line}");
+    let line = tir
+        .lines()
+        .find(|l| l.trim_start().starts_with("PKY4"))
+        .unwrap();
+    assert_eq!(
+        line.split('=')
+            .nth(1)
+            .unwrap()
+            .split('$')
+            .next()
+            .unwrap()
+            .trim()
+            .parse::<f64>()
+            .unwrap(),
+        1.9,
+        "{line}"
+    );
     let bad = dir.path().join("bad.tir");
     let e = refused(
         &run(&[

@@ -56,6 +56,7 @@ pub mod manoeuvre;
 pub mod measured;
 pub mod metrics;
 pub mod optim;
+pub mod proving_ground;
 pub mod report;
 pub mod scalar;
 pub mod sim;

@@ -6,9 +6,9 @@
 //! campaign's `[diagnose]` table, a wrong value refused naming it.
 
 use handling::diagnose::effects::EffectKind;
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
 use handling::diagnose::{diagnose, DiagnoseSettings, Diagnosis};
 use handling::optim::local::Derivatives;
+use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
 
 /// A campaign with `truth` withheld, diagnosed with `derivatives`.
 fn diagnosed(truth: EffectKind, derivatives: Derivatives) -> Diagnosis {

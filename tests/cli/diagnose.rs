@@ -412,7 +412,7 @@ fn diagnose_synthetic(
     truth: &[handling::diagnose::effects::EffectKind],
     seed: u64,
 ) -> handling::diagnose::Diagnosis {
-    use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+    use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
     let s = generate(&SynthSpec {
         effects: truth.iter().map(|e| (*e, truth_values(*e))).collect(),
         seed,

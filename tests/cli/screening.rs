@@ -6,8 +6,8 @@
 //! the margin) holds on every candidate.
 
 use handling::diagnose::effects::EffectKind;
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
 use handling::diagnose::{diagnose, DiagnoseSettings, Diagnosis};
+use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
 
 /// A campaign with `truth` withheld, diagnosed with screening on or off.
 fn diagnosed(truth: &[EffectKind], seed: u64, screening: bool) -> Diagnosis {

@@ -1,21 +1,21 @@
-//! The candidates of a diagnosis as parameter vectors: the base models
-//! (the campaign's tyres, a tyre model fitted to its rig data, or axle
-//! characteristics identified from the runs and refitted with every
-//! candidate), and how a vector of axle characteristics, effect parameters
-//! and roll dynamics becomes a model. Units: SI, rad; the roll frequency in
-//! Hz.
+//! How the base model is found ([`Bases`]): the campaign's tyres, a tyre
+//! model fitted to its rig data, or — with neither — axle characteristics
+//! identified from the runs (`identify`) and refitted on every fold and
+//! with every candidate, since an effect changes what the tyres must have
+//! been. Units: SI, rad.
 
-use super::base::{identify_axles, AxleIdentification};
-use super::campaign::{BaseTyres, Campaign};
-use super::effects::{Bound, EffectKind, EffectSet, Parameter};
-use super::fit::{fit, FitOutcome, Polish};
-pub(super) use super::layout::{fits_roll, with_effects, Layout};
-use super::model::Augmented;
-use super::problem::Problem;
-use super::refit::{refit, training_rows};
-use super::replay::Prepared;
-use super::report::ParameterValue;
-use super::timing::{record_polish, Phase, Recorder, Stamps};
+pub(crate) mod identify;
+
+use crate::diagnose::base::identify::{identify_axles, AxleIdentification};
+use crate::diagnose::campaign::{BaseTyres, Campaign};
+use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::refit::{refit, training_rows};
+use crate::diagnose::fit::{fit, Polish};
+use crate::diagnose::model::axles::{axle_tyres, AXLE_BOUNDS};
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Augmented;
+use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
 use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
@@ -25,14 +25,6 @@ use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use rayon::prelude::*;
 use std::time::Instant;
-
-/// A set of effects with their fitted values, and the model builder.
-#[derive(Clone)]
-pub(super) struct Setting<'a> {
-    pub(super) base: &'a Bases,
-    pub(super) kinds: Vec<EffectKind>,
-    pub(super) fixed: EffectSet,
-}
 
 /// The base model of all runs and of every fold.
 pub(super) struct Bases {
@@ -45,108 +37,6 @@ pub(super) struct Bases {
     pub(super) axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
     /// How the runs pin them, and whether they are a tyre at all.
     pub(super) identification: Option<AxleIdentification>,
-}
-
-pub(super) use super::axles::{axle_tyres, AXLE_BOUNDS};
-
-/// The roll degree of freedom's dynamics, fitted with the roll effects: a
-/// campaign's `[roll]` is a guess (no roll channel is needed), and roll
-/// steer or camber seen through the wrong roll frequency and damping is
-/// mimicked by stiffness changes of the wrong sign. The roll gradient stays
-/// the campaign's: it only scales the per-radian roll-steer and roll-camber
-/// values. Off values (NaN) are the campaign's.
-pub(super) static ROLL_DYNAMICS: [Parameter; 2] = [
-    Parameter {
-        name: "frequency",
-        unit: "Hz",
-        off: f64::NAN,
-        bounds: (0.5, 4.0),
-        limits: (Bound::Search, Bound::Search),
-    },
-    Parameter {
-        name: "damping",
-        unit: "-",
-        off: f64::NAN,
-        bounds: (0.2, 1.5),
-        limits: (Bound::Search, Bound::Search),
-    },
-];
-
-/// The start of a combination: the axle characteristics and effect values
-/// of the current set, the added effect's values from its single fit, and
-/// the roll dynamics from whichever of the two fitted them (the current
-/// set first).
-pub(super) fn combined_start(
-    current: (&[EffectKind], &[f64]),
-    added: (EffectKind, &[f64]),
-    axle_count: usize,
-) -> Vec<f64> {
-    let (kinds, p) = current;
-    let effect_len: usize = kinds.iter().map(|e| e.parameters().len()).sum();
-    let end = axle_count + effect_len;
-    let n = added.0.parameters().len();
-    let mut start = p[..end].to_vec();
-    start.extend(&added.1[axle_count..axle_count + n]);
-    if fits_roll(kinds) {
-        start.extend(&p[end..end + 2]);
-    } else if added.0.uses_roll() {
-        start.extend(&added.1[axle_count + n..axle_count + n + 2]);
-    }
-    start
-}
-
-impl Setting<'_> {
-    pub(super) fn axle(&self) -> bool {
-        self.base.axle.is_some()
-    }
-    /// What this setting's parameters set on `base` ([`with_effects`]).
-    pub(super) fn layout(&self, base: &Augmented) -> Layout {
-        Layout {
-            base: base.clone(),
-            kinds: self.kinds.clone(),
-            axle: self.axle(),
-        }
-    }
-    /// The effect parameters in vector order, the roll dynamics last.
-    pub(super) fn parameters(&self) -> impl Iterator<Item = &'static Parameter> + '_ {
-        let roll = if fits_roll(&self.kinds) {
-            &ROLL_DYNAMICS[..]
-        } else {
-            &[]
-        };
-        self.kinds
-            .iter()
-            .flat_map(|e| e.parameters().iter())
-            .chain(roll.iter())
-    }
-    pub(super) fn bounds(&self) -> Vec<(f64, f64)> {
-        let axle = if self.axle() { &AXLE_BOUNDS[..] } else { &[] };
-        axle.iter()
-            .copied()
-            .chain(self.parameters().map(|q| q.bounds))
-            .collect()
-    }
-    pub(super) fn off(&self) -> Vec<f64> {
-        let axle = self.base.axle.as_ref().map_or(&[][..], |a| &a.0[..]);
-        let roll = self.base.all.roll;
-        let mut p: Vec<f64> = axle
-            .iter()
-            .copied()
-            .chain(self.kinds.iter().flat_map(|e| {
-                e.parameters().iter().map(|q| {
-                    if q.off.is_nan() {
-                        self.base.nominal_share
-                    } else {
-                        q.off
-                    }
-                })
-            }))
-            .collect();
-        if fits_roll(&self.kinds) {
-            p.extend([roll.frequency, roll.damping]);
-        }
-        p
-    }
 }
 
 /// The base models: all runs and each fold's training runs.
@@ -229,7 +119,7 @@ fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
 }
 
 /// The base model of axle characteristics identified from the runs (no
-/// tyre data; [`super::base`]): a grid of starts, the best basins
+/// tyre data; [`crate::diagnose::base::identify`]): a grid of starts, the best basins
 /// polished, the best of them fitted, then refitted on every fold.
 fn axles_from_runs(
     runs: &[Prepared],
@@ -314,32 +204,4 @@ fn counted(stamps: &Option<Stamps>, build: impl Fn(&[f64]) -> Augmented, p: &[f6
         st.tick();
     }
     build(p)
-}
-
-/// The effect parameters of a fit whose first `skip` parameters are the
-/// axle characteristics.
-pub(super) fn parameter_values(
-    kinds: &[EffectKind],
-    f: &FitOutcome,
-    skip: usize,
-) -> Vec<ParameterValue> {
-    let named = kinds
-        .iter()
-        .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)));
-    let roll = fits_roll(kinds).then_some(ROLL_DYNAMICS.iter().map(|q| ("roll", q)));
-    named
-        .chain(roll.into_iter().flatten())
-        .enumerate()
-        .map(|(i, (group, q))| {
-            let value = f.params[skip + i];
-            ParameterValue {
-                name: format!("{group}.{}", q.name),
-                unit: q.unit,
-                value,
-                std_error: f.std_errors[skip + i],
-                at_bound: q.bound_at(value).is_some(),
-                bound: q.bound_at(value),
-            }
-        })
-        .collect()
 }

@@ -11,8 +11,13 @@
 //! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
 //! model ([`FitOutcome::bic`]).
 
-use super::model::Augmented;
-use super::problem::Problem;
+pub(crate) mod layout;
+pub(crate) mod problem;
+pub(crate) mod refit;
+pub(crate) mod tangent;
+
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::model::Augmented;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
@@ -171,7 +176,7 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
             }
             let mut free = linear.jacobian.clone();
             for (i, &b) in problem.bounds.iter().enumerate() {
-                if super::effects::on_bound(params[i], b).is_some() {
+                if crate::diagnose::effects::on_bound(params[i], b).is_some() {
                     free.column_mut(i).fill(0.0);
                 }
             }

@@ -4,7 +4,7 @@
 //!
 //! The rule. Every single effect is fitted on all runs first; its in-sample
 //! reduction `R_in = 1 − G_in,after/G_in,before` (the gap above noise of
-//! the all-run fits, see [`super::crossval`]) costs nothing more. A
+//! the all-run fits, see [`crate::diagnose::verdict::score`]) costs nothing more. A
 //! candidate is screened when `R_in + `[`SCREEN_MARGIN`]` < `[`ACCEPT`]
 //! (in percent). Its held-out reduction `R_out` is then below the
 //! acceptance share as long as `R_out ≤ R_in + SCREEN_MARGIN`: the fold
@@ -17,7 +17,7 @@
 //! of the screening checks it on every candidate.
 //!
 //! Why a screened candidate can never be the verdict (nor change it): the
-//! search ([`super::search`]) reads a single's held-out score in three
+//! search ([`crate::diagnose::verdict::search`]) reads a single's held-out score in three
 //! places. (1) A look-alike, which can start another search and is reported
 //! as confounded, must remove [`ACCEPT`] on held-out runs: a screened one
 //! cannot. (2) The search starts from the best single, or a simpler one
@@ -30,10 +30,10 @@
 //! significant gap nothing is searched, and every candidate below the
 //! threshold stays screened.
 
-use super::crossval::{Context, Fitted, Scored};
-use super::effects::{joined, EffectKind, EffectSet};
-use super::report::Screened;
-use super::search::{Baseline, ACCEPT, PARSIMONY};
+use crate::diagnose::effects::{joined, EffectKind, EffectSet};
+use crate::diagnose::report::Screened;
+use crate::diagnose::verdict::score::{Context, Fitted, Scored};
+use crate::diagnose::verdict::search::{Baseline, ACCEPT, PARSIMONY};
 use rayon::prelude::*;
 
 /// Percentage points by which a candidate's held-out reduction may exceed
@@ -51,7 +51,7 @@ enum Slot<'a> {
 /// screened (`screening` on): every single as scored (a screened one
 /// without held-out errors), the cross-validated ones ordered by held-out
 /// error, the screened ones (indices), and their report rows.
-pub(super) fn singles(
+pub(crate) fn singles(
     ctx: &Context,
     effects: &[EffectKind],
     base: &Baseline,

@@ -7,7 +7,7 @@
 //!    shared peak friction `D`; refitted in every fold) — `candidates.rs`,
 //!    `base.rs`.
 //! 2. Gap: every run replayed with its own steer and speed
-//!    ([`super::gap`], `summary.rs`); noise floors pooled over runs
+//!    ([`crate::diagnose::report::gap`], `summary.rs`); noise floors pooled over runs
 //!    (median).
 //! 3. Candidates: every effect of the library fitted on all runs (PSO +
 //!    Levenberg–Marquardt) for its parameters and BIC, then scored by
@@ -34,34 +34,34 @@
 //!    words are in `search.rs`, with its thresholds.
 //!
 //! This file runs the steps in order ([`diagnose`]) and assembles the
-//! report ([`super::report`]).
+//! report ([`crate::diagnose::report`]).
 //!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales).
 //!
-//! [`ACCEPT`]: super::search::ACCEPT
-//! [`PROMISING`]: super::search::PROMISING
-//! [`CONFOUNDED`]: super::search::CONFOUNDED
-//! [`CONFOUNDED_NOISE`]: super::search::CONFOUNDED_NOISE
-//! [`SIGNIFICANT`]: super::search::SIGNIFICANT
+//! [`ACCEPT`]: crate::diagnose::verdict::search::ACCEPT
+//! [`PROMISING`]: crate::diagnose::verdict::search::PROMISING
+//! [`CONFOUNDED`]: crate::diagnose::verdict::search::CONFOUNDED
+//! [`CONFOUNDED_NOISE`]: crate::diagnose::verdict::search::CONFOUNDED_NOISE
+//! [`SIGNIFICANT`]: crate::diagnose::verdict::search::SIGNIFICANT
 
-pub use super::report::{
+pub use crate::diagnose::report::summary::observed_channel;
+pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-pub use super::summary::observed_channel;
 
-use super::campaign::Campaign;
-use super::candidates::{base_models, Bases};
-use super::channels::{Channel, ChannelErrors};
-use super::crossval::{prepare, Context, Scored, MAX_FOLDS};
-use super::effects::{EffectKind, EffectSet, Needs};
-use super::model::{Augmented, Observed};
-use super::screening::singles;
-use super::search::{
+use crate::diagnose::base::{base_models, Bases};
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{EffectKind, EffectSet, Needs};
+use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
+use crate::diagnose::timing::{Recorder, Timing};
+use crate::diagnose::verdict::score::{prepare, Context, Scored, MAX_FOLDS};
+use crate::diagnose::verdict::screening::singles;
+use crate::diagnose::verdict::search::{
     baseline, confounded_with, search, verdict_of, worsened, Baseline, Search, SIGNIFICANT,
 };
-use super::summary::{base_run_gap, gap_summary, parts_table};
-use super::timing::{Recorder, Timing};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::road::RoadGeometry;
@@ -206,7 +206,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
         .iter()
         .filter(|r| r.bank.is_some() && r.beta.is_none() && r.ay.is_none())
         .count();
-    if blind > 0 && matches!(c.tyres, super::campaign::BaseTyres::FromRuns) {
+    if blind > 0 && matches!(c.tyres, crate::diagnose::campaign::BaseTyres::FromRuns) {
         notes.push(format!(
             "bank_profile: {blind} of {} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them",
             c.runs.len()
@@ -217,12 +217,14 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
 
 /// A note on the runs the base model is too stiff to replay by RK4 on the
 /// campaign's `step`, which it replays by ROS34PW2
-/// ([`super::replay::Prepared::drive_for`]); every fit picks per model.
+/// ([`crate::diagnose::model::replay::Prepared::drive_for`]); every fit picks per model.
 fn grid_note(ctx: &Context, step: f64) -> Option<String> {
     let stiff = ctx
         .runs
         .iter()
-        .filter(|r| r.drive_for(&ctx.bases.all).method == super::model::FixedStep::RosenbrockW)
+        .filter(|r| {
+            r.drive_for(&ctx.bases.all).method == crate::diagnose::model::FixedStep::RosenbrockW
+        })
         .count();
     (stiff > 0).then(|| {
         format!(
@@ -318,7 +320,7 @@ pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosi
 }
 
 /// Runs the diagnosis of a campaign and says where its time went
-/// ([`super::timing`]); the diagnosis is the same as [`diagnose`]'s.
+/// ([`crate::diagnose::timing`]); the diagnosis is the same as [`diagnose`]'s.
 pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
     let recorder = Recorder::default();
     let t0 = Instant::now();

@@ -9,9 +9,9 @@ use super::truth::Truth;
 use super::Synthetic;
 use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::proving_ground::FourWheelVehicle;
 use crate::identify::data::RigData;
 use crate::measured::clean::{clean_runs, segments, CleanSettings};
+use crate::proving_ground::four_wheel::FourWheelVehicle;
 use crate::tyre::ModelName;
 use std::path::PathBuf;
 

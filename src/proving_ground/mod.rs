@@ -43,12 +43,14 @@
 //! who drives them (`driver`); the generated campaign as the diagnosis
 //! reads it and as `handling synth` writes it (`campaign`).
 
-use super::effects::{EffectKind, EffectSet, RollModel};
-use super::model::{Augmented, Drive};
-use super::proving_ground::{FourWheel, FourWheelEffects, FourWheelVehicle};
+pub mod four_wheel;
+
+use crate::diagnose::effects::{EffectKind, EffectSet, RollModel};
+use crate::diagnose::model::{Augmented, Drive};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
 use crate::measured::MeasuredRun;
+use crate::proving_ground::four_wheel::{FourWheel, FourWheelEffects, FourWheelVehicle};
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::{Vehicle, VehicleModel};
 use rand::SeedableRng;

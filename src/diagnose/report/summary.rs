@@ -3,21 +3,21 @@
 //! after the verdict's effects, and the summary sentence of the report.
 //! Units: each channel's own (rad/s, m/s², rad).
 
-use super::channels::Channel;
-use super::crossval::reduction;
-use super::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
-use super::model::{Augmented, Observed};
-use super::replay::Prepared;
-use super::report::{Part, RunGap, Shrinkage};
+use crate::diagnose::model::channels::reduction;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
+use crate::diagnose::report::{Part, RunGap, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
 
 /// The base model's gap on one run, at the run's own samples (the base
 /// model has no sensor effects: its history is what the sensors read).
-pub(super) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
+pub(crate) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let history = p.replay(base);
-    let idx = super::gap::scored_samples(run);
+    let idx = crate::diagnose::report::gap::scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
     let t = pick(&run.t);
     let yaw_rate: Vec<f64> = t
@@ -27,12 +27,17 @@ pub(super) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> Ru
     RunGap {
         run: run.path.display().to_string(),
         channels: run_gap(run, &history),
-        bands: super::gap::band_gaps(&t, &pick(&run.steer), &pick(&run.yaw_rate), &yaw_rate),
+        bands: crate::diagnose::report::gap::band_gaps(
+            &t,
+            &pick(&run.steer),
+            &pick(&run.yaw_rate),
+            &yaw_rate,
+        ),
     }
 }
 
 /// Held-out RMS before/after pooled over runs per channel, window and regime.
-pub(super) fn parts_table(
+pub(crate) fn parts_table(
     runs: &[MeasuredRun],
     prepared: &[Prepared],
     before: &[Observed],
@@ -108,7 +113,7 @@ pub(super) fn parts_table(
 
 /// The gap in words: per channel, where it is largest and where the model is
 /// right.
-pub(super) fn gap_summary(
+pub(crate) fn gap_summary(
     runs: &[RunGap],
     parts: &[Shrinkage],
     significant: bool,

@@ -14,9 +14,9 @@
 //! sample: neighbouring samples of a 100 Hz log say nearly the same thing.
 //! Units: SI, rad.
 
-use super::campaign::Campaign;
-use super::channels::{Channel, ChannelErrors};
-use super::model::{Augmented, Drive, FixedStep, Observed};
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::{Augmented, Drive, FixedStep, Observed};
 use crate::measured::MeasuredRun;
 use crate::sim::TimeHistory;
 use std::borrow::Cow;
@@ -144,7 +144,7 @@ impl Prepared {
     /// The drive `model`'s replay runs on before its steer path (the
     /// method [`Prepared::drive_for`] picks), and the logged times and
     /// steer the path acts on.
-    pub(super) fn unsteered_drive(&self, model: &Augmented) -> (&Drive, &[f64], &[f64]) {
+    pub(crate) fn unsteered_drive(&self, model: &Augmented) -> (&Drive, &[f64], &[f64]) {
         let (vehicle, friction) = model.model();
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
@@ -162,7 +162,7 @@ impl Prepared {
     /// The first measured state (sideslip, else 0, and yaw rate) and
     /// whether the sideslip is measured: a replay starts there less the
     /// model's sensor offsets ([`Prepared::replay`]).
-    pub(super) fn start_values(&self) -> ((f64, f64), bool) {
+    pub(crate) fn start_values(&self) -> ((f64, f64), bool) {
         let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
         (self.start, beta_measured)
     }
@@ -207,7 +207,7 @@ impl Prepared {
     /// that differs from the last one only in its sensors (a sensor delay,
     /// gain or accelerometer position, whose start state is the same)
     /// integrates the same history, so only the sensors are applied again.
-    pub(super) fn observe_reusing(
+    pub(crate) fn observe_reusing(
         &self,
         model: &Augmented,
         slot: &Mutex<Option<LastReplay>>,
@@ -240,7 +240,7 @@ impl Prepared {
     }
 
     /// The scaled residuals of observed outputs `obs` into `out`.
-    pub(super) fn write_residuals(&self, obs: &Observed, scales: &[f64; 3], out: &mut [f64]) {
+    pub(crate) fn write_residuals(&self, obs: &Observed, scales: &[f64; 3], out: &mut [f64]) {
         let mut k = 0;
         for (c, m) in &self.measured {
             let sim = match c {
@@ -287,7 +287,7 @@ impl ReplayInputs {
 
 /// A run's last replay: the model (its sensors aside, the key), the start
 /// state and the integrated history.
-pub(super) struct LastReplay {
+pub(crate) struct LastReplay {
     model: Augmented,
     start: (f64, f64),
     history: TimeHistory,

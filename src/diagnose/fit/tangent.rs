@@ -1,8 +1,8 @@
 //! Exact derivatives of a fit's residuals: the runs replayed once in dual
 //! numbers ([`crate::sim::tangent`]) instead of once per parameter by
 //! forward differences. A [`Layout`] says what a parameter vector sets —
-//! the axle characteristics of an identified base ([`super::base`]), the
-//! effects' parameters ([`super::effects::EffectSet::set`]), the roll
+//! the axle characteristics of an identified base ([`crate::diagnose::base::identify`]), the
+//! effects' parameters ([`crate::diagnose::effects::EffectSet::set`]), the roll
 //! dynamics — and builds the model's numbers, its tyres' parameters, its
 //! sensors and its steer path in a dual scalar (`DualSVec64<N>`, the
 //! parameters seeded in directions `0..n`, two more reserved for the
@@ -17,13 +17,13 @@
 //! A model whose tyres have no generic force (a model registered from
 //! outside the crate) falls back to forward differences. Units: SI, rad.
 
-use super::axles::axle_parameters;
-use super::channels::Channel;
-use super::effects::EffectKind;
-use super::layout::{fits_roll, Layout};
-use super::model::{Augmented, SteerPath};
-use super::replay::Prepared;
-use super::sensors::SensorsOf;
+use crate::diagnose::effects::sensors::SensorsOf;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::fit::layout::{fits_roll, Layout};
+use crate::diagnose::model::axles::axle_parameters;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::{Augmented, SteerPath};
 use crate::manoeuvre::interpolate_of;
 use crate::scalar::Scalar;
 use crate::sim::tangent::ModelOf;
@@ -140,7 +140,7 @@ const MAX_PARAMETERS: usize = 14;
 /// the problem writes them) at `p` for `layout`, from one dual replay of
 /// each run; None when the model's tyres have no generic force or there
 /// are too many parameters.
-pub(super) fn jacobian(
+pub(crate) fn jacobian(
     (layout, plain): (&Layout, &Augmented),
     runs: &[&Prepared],
     scales: &[f64; 3],

@@ -1,6 +1,6 @@
 //! The augmented model of the sim-to-real diagnosis: the base vehicle
 //! model ([`crate::vehicle`]) with the candidate effects of
-//! [`super::effects`] switched on, and its replay of a run.
+//! [`crate::diagnose::effects`] switched on, and its replay of a run.
 //!
 //! The physics is the vehicle model's own ([`VehicleModel::rates`], with
 //! its [`crate::vehicle::Effects`]), integrated by the simulation's
@@ -8,7 +8,7 @@
 //! are sampled once, [`Drive`], so repeated replays only evaluate the
 //! model). What this module adds is the mapping of a candidate's values
 //! ([`EffectSet`]) onto the model — effects set, vehicle values scaled, road
-//! friction scaled — and the sensors ([`super::sensors::Sensors`]) applied
+//! friction scaled — and the sensors ([`crate::diagnose::effects::sensors::Sensors`]) applied
 //! to the response. With every effect off it is the base model (tested
 //! against [`crate::sim::Integrator::run`]).
 //!
@@ -19,10 +19,14 @@
 //! the logged (piecewise-linear) steer ([`Augmented::steered`]); one whose
 //! path is off runs the drive itself. [`Augmented::simulate`] replays the
 //! drive it is given: the callers that replay logged runs
-//! ([`super::replay::Prepared::drive_for`], the proving ground) pass it
+//! ([`crate::diagnose::model::replay::Prepared::drive_for`], the proving ground) pass it
 //! through [`Augmented::steered`] first. Units: SI, rad.
 
-use super::effects::EffectSet;
+pub(crate) mod axles;
+pub(crate) mod channels;
+pub(crate) mod replay;
+
+use crate::diagnose::effects::EffectSet;
 use crate::manoeuvre::{interpolate, interpolate_of};
 use crate::scalar::{off, Scalar};
 pub use crate::sim::{Drive, FixedStep};

@@ -3,9 +3,9 @@
 //! band and steer; the programmes' names.
 
 use super::*;
-use crate::diagnose::synth::driver::{LoggedInputs, LOG_RATE};
-use crate::diagnose::synth::laps::{road_course_lap, OVAL_BANK};
-use crate::diagnose::synth::truth::truth_tyre;
+use crate::proving_ground::driver::{LoggedInputs, LOG_RATE};
+use crate::proving_ground::laps::{road_course_lap, OVAL_BANK};
+use crate::proving_ground::truth::truth_tyre;
 use crate::tyre::Tyre;
 use crate::vehicle::Vehicle;
 

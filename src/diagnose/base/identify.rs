@@ -33,13 +33,13 @@
 //! Units: SI, rad; k in 1/rad (N of lateral force per N of load per rad of
 //! slip), D dimensionless.
 
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::FIT_TOLERANCE;
 #[cfg(test)]
-pub(crate) use super::axles::axle_tyres;
-pub use super::axles::{coefficient, friction, shares, AXLE_BOUNDS, SHAPE};
-use super::axles::{D_REF, K_REF};
-use super::fit::FIT_TOLERANCE;
-use super::model::Augmented;
-use super::problem::Problem;
+pub(crate) use crate::diagnose::model::axles::axle_tyres;
+pub use crate::diagnose::model::axles::{coefficient, friction, shares, AXLE_BOUNDS, SHAPE};
+use crate::diagnose::model::axles::{D_REF, K_REF};
+use crate::diagnose::model::Augmented;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::Residuals;
 use rayon::prelude::*;
@@ -388,7 +388,7 @@ mod tests {
 
     /// Runs of a car whose axles are the simplified Magic Formula of
     /// shares `truth`: sine steers at three speeds, 25 Hz, yaw rate and ay.
-    fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::replay::Prepared> {
+    fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::model::replay::Prepared> {
         use crate::manoeuvre::SineSteer;
         use crate::vehicle::{Vehicle, VehicleModel};
         let (f, r) = axle_tyres(truth);
@@ -402,7 +402,7 @@ mod tests {
                     start: 0.5,
                     end: 8.0,
                 };
-                crate::diagnose::replay::tests::sine_run(&car, k, m)
+                crate::diagnose::model::replay::tests::sine_run(&car, k, m)
             })
             .collect()
     }

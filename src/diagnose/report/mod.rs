@@ -3,11 +3,15 @@
 //! unit; held-out errors J are dimensionless (residuals over channel
 //! scales).
 
-use super::channels::Channel;
-use super::effects::{Bound, EffectKind};
-use super::gap::ChannelGap;
-use super::model::Observed;
-pub use super::parts::{Part, PartAxis};
+pub(crate) mod gap;
+pub(crate) mod parts;
+pub(crate) mod summary;
+
+use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::Observed;
+use crate::diagnose::report::gap::ChannelGap;
+pub use crate::diagnose::report::parts::{Part, PartAxis};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -53,7 +57,7 @@ pub struct Ranked {
     pub effects: Vec<EffectKind>,
     /// The axle characteristics refitted with them (no tyre data), with
     /// their standard errors and the limits they stand on.
-    pub axles: Option<Vec<super::base::AxleValue>>,
+    pub axles: Option<Vec<crate::diagnose::base::identify::AxleValue>>,
     /// Fitted parameters.
     pub parameters: Vec<ParameterValue>,
     /// Held-out combined error J of the base model.
@@ -172,7 +176,7 @@ pub struct RunGap {
     /// Per channel.
     pub channels: Vec<ChannelGap>,
     /// Gain and phase error per frequency band (runs with a rich input).
-    pub bands: Vec<super::gap::BandGap>,
+    pub bands: Vec<crate::diagnose::report::gap::BandGap>,
 }
 
 /// Where the gap lies.
@@ -209,7 +213,7 @@ pub struct BaseReport {
     /// The axle characteristics identified from the runs (no tyre data):
     /// values, standard errors, the largest correlation, the limits they
     /// stand on and whether the base is a tyre at all.
-    pub axles: Option<super::base::AxleIdentification>,
+    pub axles: Option<crate::diagnose::base::identify::AxleIdentification>,
 }
 
 /// Everything the diagnosis found.

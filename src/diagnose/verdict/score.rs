@@ -4,17 +4,19 @@
 //! The folds: run i in fold i mod k, with k the number of runs up to
 //! [`MAX_FOLDS`] (leave-one-run-out for up to that many runs).
 
-use super::base::axle_grid;
-use super::campaign::Campaign;
-use super::candidates::{with_effects, Bases, Setting};
-use super::channels::ChannelErrors;
-use super::effects::{EffectKind, EffectSet};
-use super::fit::{fit, swarm, FitOutcome, Polish};
-use super::model::Observed;
-use super::problem::Problem;
-use super::refit::{refit, training_rows};
-use super::replay::Prepared;
-use super::timing::{record_polish, Phase, Recorder, Stamps};
+use crate::diagnose::base::identify::axle_grid;
+use crate::diagnose::base::Bases;
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{EffectKind, EffectSet};
+use crate::diagnose::fit::layout::with_effects;
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::refit::{refit, training_rows};
+use crate::diagnose::fit::{fit, swarm, FitOutcome, Polish};
+use crate::diagnose::model::channels::ChannelErrors;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Observed;
+use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
+use crate::diagnose::verdict::candidate::Setting;
 use crate::optim::local::{Derivatives, Residuals};
 use crate::optim::pso::{Inertia, Pso, Stall};
 use rayon::prelude::*;
@@ -26,42 +28,42 @@ pub const MAX_FOLDS: usize = 8;
 
 /// Everything scored for one candidate.
 #[derive(Clone)]
-pub(super) struct Scored {
-    pub(super) kinds: Vec<EffectKind>,
-    pub(super) full: FitOutcome,
+pub(crate) struct Scored {
+    pub(crate) kinds: Vec<EffectKind>,
+    pub(crate) full: FitOutcome,
     /// Errors of the all-run fit on all runs.
-    pub(super) insample: ChannelErrors,
-    pub(super) heldout: ChannelErrors,
-    pub(super) fold_params: Vec<Vec<f64>>,
-    pub(super) folds_converged: usize,
+    pub(crate) insample: ChannelErrors,
+    pub(crate) heldout: ChannelErrors,
+    pub(crate) fold_params: Vec<Vec<f64>>,
+    pub(crate) folds_converged: usize,
 }
 
-pub(super) struct Context<'a> {
-    pub(super) runs: Vec<Prepared>,
-    pub(super) folds: Vec<Vec<usize>>,
-    pub(super) scales: [f64; 3],
-    pub(super) bases: &'a Bases,
-    pub(super) pso: Pso,
-    pub(super) progress: Option<&'a AtomicUsize>,
+pub(crate) struct Context<'a> {
+    pub(crate) runs: Vec<Prepared>,
+    pub(crate) folds: Vec<Vec<usize>>,
+    pub(crate) scales: [f64; 3],
+    pub(crate) bases: &'a Bases,
+    pub(crate) pso: Pso,
+    pub(crate) progress: Option<&'a AtomicUsize>,
     /// Where the time goes, when the diagnosis is timed.
-    pub(super) timing: Option<&'a Recorder>,
+    pub(crate) timing: Option<&'a Recorder>,
     /// How the fits take their Jacobians.
-    pub(super) derivatives: Derivatives,
+    pub(crate) derivatives: Derivatives,
 }
 
 /// A candidate fitted on all runs, not yet cross-validated: its
 /// setting, its fit (with the optimum's linearisation the fold refits
 /// start from) and its errors on all runs.
-pub(super) struct Fitted<'a> {
+pub(crate) struct Fitted<'a> {
     setting: Setting<'a>,
-    pub(super) full: FitOutcome,
-    pub(super) insample: ChannelErrors,
+    pub(crate) full: FitOutcome,
+    pub(crate) insample: ChannelErrors,
 }
 
 impl Fitted<'_> {
     /// The candidate as scored without its folds: no held-out errors (a
     /// screened candidate, whose all-run fit the greedy additions use).
-    pub(super) fn unscored(&self) -> Scored {
+    pub(crate) fn unscored(&self) -> Scored {
         Scored {
             kinds: self.setting.kinds.clone(),
             full: FitOutcome {
@@ -77,7 +79,7 @@ impl Fitted<'_> {
 }
 
 impl<'a> Context<'a> {
-    pub(super) fn tick(&self) {
+    pub(crate) fn tick(&self) {
         if let Some(p) = self.progress {
             p.fetch_add(1, Ordering::Relaxed);
         }
@@ -85,7 +87,7 @@ impl<'a> Context<'a> {
 
     /// The parameter vector of `kinds` switched off (axle characteristics
     /// and roll dynamics at the base's).
-    pub(super) fn off(&self, kinds: &[EffectKind]) -> Vec<f64> {
+    pub(crate) fn off(&self, kinds: &[EffectKind]) -> Vec<f64> {
         Setting {
             base: self.bases,
             kinds: kinds.to_vec(),
@@ -94,7 +96,7 @@ impl<'a> Context<'a> {
         .off()
     }
 
-    pub(super) fn training(&self, fold: usize) -> Vec<&Prepared> {
+    pub(crate) fn training(&self, fold: usize) -> Vec<&Prepared> {
         (0..self.runs.len())
             .filter(|i| !self.folds[fold].contains(i))
             .map(|i| &self.runs[i])
@@ -103,7 +105,7 @@ impl<'a> Context<'a> {
 
     /// Fits a candidate on all runs ([`Context::fit_all`]) and scores it on
     /// every fold ([`Context::cross_validate`]).
-    pub(super) fn score(
+    pub(crate) fn score(
         &self,
         kinds: Vec<EffectKind>,
         fixed: EffectSet,
@@ -119,7 +121,7 @@ impl<'a> Context<'a> {
     /// with the added effect off, the added effect's own axles): the swarm
     /// then starts from the best of them, and the polish from the lowest
     /// cost found ([`Context::start`]).
-    pub(super) fn fit_all(
+    pub(crate) fn fit_all(
         &self,
         kinds: Vec<EffectKind>,
         fixed: EffectSet,
@@ -181,7 +183,7 @@ impl<'a> Context<'a> {
     /// the all-run optimum ([`refit`]: its linearisation first,
     /// Levenberg–Marquardt within a budget when that does not converge;
     /// non-converged folds are counted and warned about).
-    pub(super) fn cross_validate(&self, fitted: &Fitted) -> Scored {
+    pub(crate) fn cross_validate(&self, fitted: &Fitted) -> Scored {
         let (s, full) = (&fitted.setting, &fitted.full);
         if let (Some(rec), false) = (self.timing, s.kinds.is_empty()) {
             rec.candidate(true);
@@ -242,7 +244,7 @@ impl<'a> Context<'a> {
     /// grid is rerun at the swarm's effect values and, for an effect that
     /// takes a measured input, at the input as logged ([`as_logged`]);
     /// the lowest cost of them all starts the polish.
-    fn start<F: Fn(&[f64]) -> super::model::Augmented + Sync>(
+    fn start<F: Fn(&[f64]) -> crate::diagnose::model::Augmented + Sync>(
         &self,
         problem: &Problem<F>,
         s: &Setting,
@@ -286,7 +288,7 @@ impl<'a> Context<'a> {
     }
 
     /// Held-out replays of every run with a candidate's fold parameters.
-    pub(super) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
+    pub(crate) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
         let mut out = vec![Observed::default(); self.runs.len()];
         for (k, fold) in self.folds.iter().enumerate() {
             let model = match sc {
@@ -319,19 +321,6 @@ fn as_logged(kind: EffectKind) -> Option<Vec<f64>> {
     (kind == EffectKind::BankProfile).then(|| vec![1.0, 0.0])
 }
 
-pub(super) fn gap_above(j: f64, jn: f64) -> f64 {
-    (j * j - jn * jn).max(0.0).sqrt()
-}
-
-pub(super) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
-    let g0 = gap_above(before, jn);
-    if g0 <= 0.0 {
-        0.0
-    } else {
-        100.0 * (1.0 - gap_above(after, jn) / g0)
-    }
-}
-
 /// The swarm of a fit only hands its best to Levenberg–Marquardt, which
 /// needs a start in the optimum's basin, not the optimum: once its best has
 /// gained less than this over these iterations the swarm has settled (most
@@ -345,7 +334,7 @@ const SWARM_STALL: Stall = Stall {
 /// The runs prepared for replay (sampled on the replay grid, residual
 /// times picked), the cross-validation folds (run i in fold i mod k) and
 /// the swarm every effect fit starts with.
-pub(super) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
+pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
     let set = &c.settings;
     let runs = Prepared::campaign_runs(c);
     let k = runs.len().min(MAX_FOLDS);

@@ -9,8 +9,8 @@
 
 use super::programme::Programme;
 use crate::diagnose::effects::{EffectKind, Needs, RollModel};
-use crate::diagnose::proving_ground::FourWheelEffects;
 use crate::error::{ParamError, ParamReason};
+use crate::proving_ground::four_wheel::FourWheelEffects;
 use crate::tyre::Tyre;
 use serde::Serialize;
 
@@ -183,5 +183,5 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
 
 /// The bundled UniTire of the truth.
 pub(super) fn truth_tyre() -> Tyre {
-    toml::from_str(include_str!("../../../tyres/unitire.toml")).expect("the bundled UniTire file")
+    toml::from_str(include_str!("../../tyres/unitire.toml")).expect("the bundled UniTire file")
 }

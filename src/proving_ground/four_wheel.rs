@@ -1,7 +1,7 @@
 //! An independent truth for the virtual proving ground: a four-wheel vehicle
 //! with a roll degree of freedom and Magic-Formula-style tyres, written from
 //! the textbook and sharing no code with the diagnosed model
-//! ([`super::model`], [`crate::vehicle`]). Tuning the diagnosis against its
+//! ([`crate::diagnose::model`], [`crate::vehicle`]). Tuning the diagnosis against its
 //! own augmented model can hide model-form errors; this truth differs from
 //! it in structure (four wheels, per-wheel loads and slip, an elastic and
 //! geometric load-transfer split, its own tyre).

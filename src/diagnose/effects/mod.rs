@@ -4,13 +4,15 @@
 //! `[diagnose] effects` and `diagnosis.json` do), gives their parameters,
 //! units, search bounds and the values that switch them off;
 //! [`EffectSet`] holds the values of all of them at once, and is what the
-//! augmented model (`super::model`) evaluates.
+//! augmented model (`crate::diagnose::model`) evaluates.
 //!
 //! Signs follow ISO 8855 (x forward, y left, z up, positive steer left,
 //! positive roll φ puts the right side down, as in a left turn). Units: SI,
 //! rad; scales are dimensionless factors on the base model's value.
 
-use super::sensors::Sensors;
+pub mod sensors;
+
+use crate::diagnose::effects::sensors::Sensors;
 pub use crate::vehicle::RollModel;
 use serde::{Deserialize, Serialize};
 
@@ -132,6 +134,29 @@ impl Parameter {
         on_bound(value, self.bounds).map(|upper| if upper { self.limits.1 } else { self.limits.0 })
     }
 }
+
+/// The roll degree of freedom's dynamics, fitted with the roll effects: a
+/// campaign's `[roll]` is a guess (no roll channel is needed), and roll
+/// steer or camber seen through the wrong roll frequency and damping is
+/// mimicked by stiffness changes of the wrong sign. The roll gradient stays
+/// the campaign's: it only scales the per-radian roll-steer and roll-camber
+/// values. Off values (NaN) are the campaign's.
+pub static ROLL_DYNAMICS: [Parameter; 2] = [
+    Parameter {
+        name: "frequency",
+        unit: "Hz",
+        off: f64::NAN,
+        bounds: (0.5, 4.0),
+        limits: (Bound::Search, Bound::Search),
+    },
+    Parameter {
+        name: "damping",
+        unit: "-",
+        off: f64::NAN,
+        bounds: (0.2, 1.5),
+        limits: (Bound::Search, Bound::Search),
+    },
+];
 
 /// Whether `value` lies on the lower (`Some(false)`) or upper (`Some(true)`)
 /// of `bounds`, within 1e-9 of their span (the bounded fits stop exactly

@@ -3,7 +3,7 @@
 //!
 //! Every candidate is ranked against the base model ([`Baseline`]): its
 //! held-out error `J` after, and its reduction `1 − G_after/G_before` of the
-//! held-out gap above noise `G = sqrt(J² − J_n²)` (see [`super::crossval`]),
+//! held-out gap above noise `G = sqrt(J² − J_n²)` (see [`crate::diagnose::verdict::score`]),
 //! with warnings where its in-sample reduction exceeds the held-out one by
 //! [`DISAGREEMENT`] points or its axles are no tyre.
 //!
@@ -23,14 +23,15 @@
 //!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales),
 //! reductions in percent. The method is the project's own (see
-//! [`super::diagnosis`] for the overview).
+//! [`crate::diagnose::pipeline`] for the overview).
 
-use super::base::AxleIdentification;
-use super::candidates::{combined_start, parameter_values};
-use super::channels::{Channel, ChannelErrors};
-use super::crossval::{gap_above, reduction, Context, Scored};
-use super::effects::{joined, Bound, EffectKind, EffectSet};
-use super::report::{ChannelError, Confounded, Part, Ranked, Shrinkage, Verdict};
+use crate::diagnose::base::identify::AxleIdentification;
+use crate::diagnose::effects::{joined, Bound, EffectKind, EffectSet};
+use crate::diagnose::model::channels::{gap_above, reduction};
+use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::report::{ChannelError, Confounded, Part, Ranked, Shrinkage, Verdict};
+use crate::diagnose::verdict::candidate::{combined_start, parameter_values};
+use crate::diagnose::verdict::score::{Context, Scored};
 use rayon::prelude::*;
 
 /// Share of the held-out gap above noise an effect must remove to be
@@ -74,10 +75,10 @@ fn channel_errors(e: &ChannelErrors) -> Vec<ChannelError> {
 
 /// The base model's held-out and in-sample scores that every candidate is
 /// ranked against.
-pub(super) struct Baseline {
+pub(crate) struct Baseline {
     /// Held-out error J of the base model, and of the noise alone.
-    pub(super) j0: f64,
-    pub(super) jn: f64,
+    pub(crate) j0: f64,
+    pub(crate) jn: f64,
     /// The same on all runs with the all-run fit.
     j0_in: f64,
     jn_in: f64,
@@ -92,7 +93,7 @@ impl Baseline {
     /// Why the axle characteristics fitted with a candidate are no tyre (a
     /// rigid axle, one without force, no grip), if they are not: such a
     /// candidate cannot be a verdict.
-    pub(super) fn degenerate(&self, sc: &Scored) -> Option<String> {
+    pub(crate) fn degenerate(&self, sc: &Scored) -> Option<String> {
         (self.axle_count == 3)
             .then(|| {
                 let p = &sc.full.params;
@@ -102,35 +103,35 @@ impl Baseline {
     }
 
     /// The channel scales of the combined errors.
-    pub(super) fn scales(&self) -> [f64; 3] {
+    pub(crate) fn scales(&self) -> [f64; 3] {
         self.scales
     }
 
     /// A fit's BIC less the base model's (negative: better).
-    pub(super) fn delta_bic(&self, sc: &Scored) -> f64 {
+    pub(crate) fn delta_bic(&self, sc: &Scored) -> f64 {
         sc.full.bic() - self.bic0
     }
 
     /// The in-sample reduction (%) of a fit with errors `e` on all runs.
-    pub(super) fn insample_reduction(&self, e: &ChannelErrors) -> f64 {
+    pub(crate) fn insample_reduction(&self, e: &ChannelErrors) -> f64 {
         reduction(self.j0_in, e.combined(&self.scales), self.jn_in)
     }
 
     /// Whether the base leaves a gap above noise in sample: without one an
     /// in-sample reduction bounds nothing.
-    pub(super) fn insample_gap(&self) -> bool {
+    pub(crate) fn insample_gap(&self) -> bool {
         gap_above(self.j0_in, self.jn_in) > 0.0
     }
 
     /// The least held-out error a candidate can have whose held-out
     /// reduction is at most `percent`.
-    pub(super) fn heldout_floor(&self, percent: f64) -> f64 {
+    pub(crate) fn heldout_floor(&self, percent: f64) -> f64 {
         let g = (1.0 - percent.min(100.0) / 100.0) * gap_above(self.j0, self.jn);
         (g * g + self.jn * self.jn).sqrt()
     }
 
     /// A scored candidate as a row of the report, with its warnings.
-    pub(super) fn rank(&self, sc: &Scored) -> Ranked {
+    pub(crate) fn rank(&self, sc: &Scored) -> Ranked {
         let j = sc.heldout.combined(&self.scales);
         let held = reduction(self.j0, j, self.jn);
         let j_in = sc.insample.combined(&self.scales);
@@ -179,7 +180,7 @@ impl Baseline {
 
 /// The base model scored on held-out and fitted runs, with the error the
 /// channels' noise floors alone would give.
-pub(super) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
+pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
     let scales = ctx.scales;
     let noise_level = |e: &ChannelErrors| {
         let n: usize = e.count.iter().sum();
@@ -203,20 +204,20 @@ pub(super) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
 
 /// What the search for a verdict found.
 #[derive(Default)]
-pub(super) struct Search {
+pub(crate) struct Search {
     /// The accepted set, if any.
-    pub(super) chosen: Option<Scored>,
+    pub(crate) chosen: Option<Scored>,
     /// Every combination tried, as report rows.
-    pub(super) combinations: Vec<Ranked>,
+    pub(crate) combinations: Vec<Ranked>,
     /// Singles (indices) that pass and leave about the best's gap.
-    pub(super) lookalikes: Vec<usize>,
+    pub(crate) lookalikes: Vec<usize>,
 }
 
 /// The verdict's search: the best single (`order` ranks the
 /// cross-validated `singles` by held-out error), then greedy additions,
 /// each tried jointly with every remaining effect (`all`: those in `order`
 /// and the screened ones, whose all-run fits start them).
-pub(super) fn search(
+pub(crate) fn search(
     ctx: &Context,
     singles: &[Scored],
     (order, all): (&[usize], &[usize]),
@@ -450,7 +451,7 @@ fn greedy(
 
 /// The accepted first effect's look-alikes, less those the verdict took in
 /// as well, with the experiments that would separate them.
-pub(super) fn confounded_with(
+pub(crate) fn confounded_with(
     chosen: &Scored,
     singles: &[Scored],
     lookalikes: &[usize],
@@ -486,7 +487,7 @@ pub(super) fn confounded_with(
 }
 
 /// The verdict in words.
-pub(super) fn verdict_of(
+pub(crate) fn verdict_of(
     chosen: Option<&Scored>,
     base: &Baseline,
     significant: bool,
@@ -562,7 +563,7 @@ const WORSENED: f64 = 10.0;
 
 /// Warnings for the channels the verdict's effects leave worse on
 /// held-out runs (all samples).
-pub(super) fn worsened(shrinkage: &[Shrinkage]) -> Vec<String> {
+pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<String> {
     shrinkage
         .iter()
         .filter(|s| s.part == Part::All && s.reduction_percent < -WORSENED && s.after > s.before)

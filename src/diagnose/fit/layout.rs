@@ -1,14 +1,14 @@
 //! What a fit's parameter vector sets on the augmented model
 //! ([`Layout`]): the axle characteristics of an identified base
-//! ([`super::base`]) first when they are fitted, then each candidate
-//! effect's parameters ([`super::effects::EffectSet::set`]), then the roll
+//! ([`crate::diagnose::base::identify`]) first when they are fitted, then each candidate
+//! effect's parameters ([`crate::diagnose::effects::EffectSet::set`]), then the roll
 //! dynamics when a roll effect is among them. The plain model of a vector
-//! is [`with_effects`]; its derivatives are [`super::tangent`]'s. Units:
+//! is [`with_effects`]; its derivatives are [`crate::diagnose::fit::tangent`]'s. Units:
 //! SI, rad.
 
-use super::axles::axle_tyres;
-use super::effects::{EffectKind, EffectSet};
-use super::model::Augmented;
+use crate::diagnose::effects::{EffectKind, EffectSet};
+use crate::diagnose::model::axles::axle_tyres;
+use crate::diagnose::model::Augmented;
 
 /// What a fit's parameter vector sets on a model: the axle
 /// characteristics first when they are fitted (`axle`), then each
@@ -27,14 +27,14 @@ pub struct Layout {
 }
 
 /// Whether a candidate carries the roll-dynamics parameters.
-pub(super) fn fits_roll(kinds: &[EffectKind]) -> bool {
+pub(crate) fn fits_roll(kinds: &[EffectKind]) -> bool {
     kinds.iter().any(|e| e.uses_roll())
 }
 
 /// The model of a candidate's parameter vector: the axle characteristics
 /// first when they are fitted (`axle`), then each effect's parameters, then
-/// the roll dynamics when a roll effect is among them (`super::candidates::ROLL_DYNAMICS`).
-pub(super) fn with_effects(
+/// the roll dynamics when a roll effect is among them (`crate::diagnose::base::ROLL_DYNAMICS`).
+pub(crate) fn with_effects(
     base: &Augmented,
     fixed: &EffectSet,
     kinds: &[EffectKind],

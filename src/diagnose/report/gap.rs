@@ -21,8 +21,8 @@
 //! so "no significant gap" is a possible answer.
 //! Units: SI, rad; times in s.
 
-use super::channels::Channel;
-use super::parts::{regime_samples, window_samples, Part};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::parts::{regime_samples, window_samples, Part};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
@@ -446,7 +446,7 @@ pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnose::parts::Window;
+    use crate::diagnose::report::parts::Window;
     use std::f64::consts::PI;
 
     fn grid(n: usize, dt: f64) -> Vec<f64> {

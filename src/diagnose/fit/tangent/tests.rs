@@ -4,9 +4,9 @@
 //! bound (a delay or a lag at zero).
 
 use super::*;
-use crate::diagnose::candidates::ROLL_DYNAMICS;
 use crate::diagnose::effects::EffectSet;
-use crate::diagnose::problem::Problem;
+use crate::diagnose::effects::ROLL_DYNAMICS;
+use crate::diagnose::fit::problem::Problem;
 use crate::measured::MeasuredRun;
 use crate::optim::local::Residuals;
 use crate::sim::Drive;
@@ -57,7 +57,7 @@ fn run(truth: &Augmented, step: f64, speed0: f64) -> Prepared {
 /// The plain model of parameters `q` of `layout` (no effect held fixed):
 /// what a problem's `build` gives.
 fn build(layout: &Layout, q: &[f64]) -> Augmented {
-    crate::diagnose::layout::with_effects(
+    crate::diagnose::fit::layout::with_effects(
         &layout.base,
         &EffectSet::default(),
         &layout.kinds,
@@ -84,7 +84,7 @@ fn inside(q: &crate::diagnose::effects::Parameter) -> f64 {
 /// The compact sedan on simplified-Magic-Formula axles with load
 /// transfer, at road friction 0.9.
 fn sedan() -> Augmented {
-    let (f, r) = crate::diagnose::base::axle_tyres(&[0.5, 0.55, 0.5]);
+    let (f, r) = crate::diagnose::base::identify::axle_tyres(&[0.5, 0.55, 0.5]);
     Augmented::new(VehicleModel::new(Vehicle::compact_sedan(), f, r), 0.9)
 }
 
@@ -173,7 +173,7 @@ fn reference_noise(
 /// The parameter vector and bounds of `kind` fitted with the axles.
 fn vector(kind: EffectKind) -> (Vec<f64>, Vec<(f64, f64)>) {
     let mut p = vec![0.5, 0.55, 0.5];
-    let mut b = crate::diagnose::base::AXLE_BOUNDS.to_vec();
+    let mut b = crate::diagnose::base::identify::AXLE_BOUNDS.to_vec();
     let roll: &[crate::diagnose::effects::Parameter] = if kind.uses_roll() {
         &ROLL_DYNAMICS
     } else {
@@ -210,8 +210,8 @@ fn the_exact_jacobian_of_a_stiff_replay_by_ros34pw2_equals_central_differences()
     // stiff for RK4, the replay runs by ROS34PW2.
     let mut car = sedan();
     car.base.vehicle = crate::vehicle::racing_car();
-    let shares = crate::diagnose::base::shares(60.0, 80.0, 1.6);
-    (car.base.front, car.base.rear) = crate::diagnose::base::axle_tyres(&shares);
+    let shares = crate::diagnose::base::identify::shares(60.0, 80.0, 1.6);
+    (car.base.front, car.base.rear) = crate::diagnose::base::identify::axle_tyres(&shares);
     let runs = vec![run(&car, 0.02, 3.0)];
     assert_eq!(
         runs[0].drive_for(&car).method,
@@ -362,7 +362,7 @@ fn with_given_tyres_of_every_model_every_effects_exact_jacobian_holds() {
         Tyre::MagicFormula(Box::new(
             crate::io::tir::read_tir_text(
                 "MagicFormula61_Parameters.tir",
-                include_str!("../../../tests/fixtures/tir/MagicFormula61_Parameters.tir"),
+                include_str!("../../../../tests/fixtures/tir/MagicFormula61_Parameters.tir"),
             )
             .unwrap(),
         )),

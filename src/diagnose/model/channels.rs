@@ -84,3 +84,20 @@ impl ChannelErrors {
         (s / n.max(1) as f64).sqrt()
     }
 }
+
+/// The gap above noise `G = sqrt(J² − J_n²)` of a combined error `j` over
+/// the noise alone's `jn` (0 within noise).
+pub(crate) fn gap_above(j: f64, jn: f64) -> f64 {
+    (j * j - jn * jn).max(0.0).sqrt()
+}
+
+/// The share (%) of the gap above noise of `before` that `after` removes,
+/// `100·(1 − G_after/G_before)` (0 without a gap before).
+pub(crate) fn reduction(before: f64, after: f64, jn: f64) -> f64 {
+    let g0 = gap_above(before, jn);
+    if g0 <= 0.0 {
+        0.0
+    } else {
+        100.0 * (1.0 - gap_above(after, jn) / g0)
+    }
+}

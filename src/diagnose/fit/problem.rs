@@ -10,9 +10,9 @@
 //! cost is `½·Σ r²` over every run and channel. Parameters are clamped into
 //! their box. Units: SI, rad.
 
-use super::layout::Layout;
-use super::model::Augmented;
-use super::replay::{LastReplay, Prepared};
+use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::model::replay::{LastReplay, Prepared};
+use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
 use nalgebra::DMatrix;
 use std::sync::Mutex;
@@ -62,7 +62,7 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     /// The same problem with exact derivatives when `derivatives` asks
     /// for them: `layout` says what the parameters set (as `build` sets
     /// them), and the Jacobian comes from one
-    /// replay of each run in dual numbers ([`super::tangent`]) instead of
+    /// replay of each run in dual numbers ([`crate::diagnose::fit::tangent`]) instead of
     /// one per parameter.
     pub fn with_layout(mut self, layout: Layout, derivatives: Derivatives) -> Self {
         if derivatives == Derivatives::Exact {
@@ -81,7 +81,7 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
         })
     }
 
-    pub(super) fn clamp(&self, p: &[f64]) -> Vec<f64> {
+    pub(crate) fn clamp(&self, p: &[f64]) -> Vec<f64> {
         p.iter()
             .zip(&self.bounds)
             .map(|(x, (lo, hi))| x.clamp(*lo, *hi))
@@ -114,9 +114,12 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
             // callers count and time-stamp their evaluations: the dual
             // replay is one evaluation in the fits' work reports).
             let plain = (self.build)(&q);
-            if let Some(j) =
-                super::tangent::jacobian((layout, &plain), &self.runs, &self.scales, &q)
-            {
+            if let Some(j) = crate::diagnose::fit::tangent::jacobian(
+                (layout, &plain),
+                &self.runs,
+                &self.scales,
+                &q,
+            ) {
                 return j;
             }
         }

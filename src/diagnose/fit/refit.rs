@@ -6,10 +6,10 @@
 //! all-run residuals. The counts of replays quoted below were measured on
 //! the Putnam racing log (`campaigns/putnam.toml`). Units: SI, rad.
 
-use super::fit::{fit, pair_index, FitOutcome, Polish};
-use super::model::Augmented;
-use super::problem::Problem;
-use super::replay::Prepared;
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::{fit, pair_index, FitOutcome, Polish};
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Augmented;
 use crate::optim::bounded::ProjectedModel;
 use crate::optim::local::Residuals;
 use nalgebra::{DMatrix, DVector};
@@ -92,7 +92,7 @@ const REFIT_RELINEARISATIONS: usize = 4;
 
 /// The residual rows of a fold's training runs (all but `held_out`) in the
 /// all-run problem, whose rows follow the runs' order.
-pub(super) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+pub(crate) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
     let mut start = 0;
     let mut rows = Vec::new();
     for (i, r) in runs.iter().enumerate() {
@@ -109,7 +109,7 @@ pub(super) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::o
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
 /// optimum moves little when one run of several leaves, so the all-run
 /// quadratic model of the residuals restricted to those rows
-/// ([`Linearisation`](super::fit::Linearisation)) stands in for their
+/// ([`Linearisation`](crate::diagnose::fit::Linearisation)) stands in for their
 /// derivatives: at `p0 + δ` the Jacobian is `J + ∇²r·δ` and the Hessian of
 /// the cost `JᵀJ + Σ r·∇²r` with the replayed residuals `r`, exact to
 /// second order in δ. The second-order
@@ -217,7 +217,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 mod tests {
     use super::*;
     use crate::diagnose::fit::linearise;
-    use crate::diagnose::replay::tests::sine_run;
+    use crate::diagnose::model::replay::tests::sine_run;
     use crate::manoeuvre::SineSteer;
     use crate::tyre::{Pac89, Tyre};
     use crate::vehicle::{Vehicle, VehicleModel};

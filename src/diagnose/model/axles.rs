@@ -1,5 +1,5 @@
 //! The axle characteristics of a base identified from the runs
-//! ([`super::base`]): per axle a simplified Magic Formula (Li, Jia & Zhao,
+//! ([`crate::diagnose::base::identify`]): per axle a simplified Magic Formula (Li, Jia & Zhao,
 //! `Fy = D·μ·Fz·sin(C·atan(B·α))`, C = 1.3) of cornering coefficient
 //! `k = B·C·D` (1/rad) and one peak friction `D` shared by the axles,
 //! parameterised by their shares `s = k/(k + k_ref)` and `t = D/(D + D_ref)`
@@ -13,9 +13,9 @@ use crate::tyre::{MagicSimple, Tyre};
 /// Shape factor C of the axle characteristics.
 pub const SHAPE: f64 = 1.3;
 /// Cornering coefficient at the middle of its share, 1/rad: a car tyre's.
-pub(super) const K_REF: f64 = 20.0;
+pub(crate) const K_REF: f64 = 20.0;
 /// Peak friction at the middle of its share.
-pub(super) const D_REF: f64 = 1.0;
+pub(crate) const D_REF: f64 = 1.0;
 
 /// The fit's box of the shares (front coefficient, rear coefficient,
 /// friction): just inside the physical limits 0 and 1, where the model
@@ -53,7 +53,7 @@ pub fn axle_tyres(p: &[f64]) -> (Tyre, Tyre) {
 /// The lateral parameters (B, C, D) of the front and rear axle
 /// characteristics of shares `p = [s_f, s_r, t]`
 /// ([`axle_tyres`]) in scalar `T`.
-pub(super) fn axle_parameters<T: Scalar>(p: &[T]) -> [Vec<T>; 2] {
+pub(crate) fn axle_parameters<T: Scalar>(p: &[T]) -> [Vec<T>; 2] {
     let one = T::from(1.0);
     let d = p[2] * D_REF / (one - p[2]);
     let b = |s: T| s * K_REF / (one - s) / (d * SHAPE);

@@ -4,6 +4,14 @@
 //! the command line is tested in `tests/cli/`; the unit tests sit beside
 //! their code in `src/`.
 
+use std::path::PathBuf;
+
+/// The repository root.
+pub(crate) fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
 mod derivatives;
 mod diagnose;
+mod identify;
 mod screening;

@@ -20,9 +20,9 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::EffectKind;
-use handling::diagnose::synth::{generate, truth_values, Noise, Programme, SynthSpec};
 use handling::diagnose::{Augmented, DiagnoseSettings, Prepared};
 use handling::optim::local::Derivatives;
+use handling::proving_ground::{generate, truth_values, Noise, Programme, SynthSpec};
 use handling::tyre::{MagicSimple, Pac89, Tyre};
 use handling::vehicle::VehicleModel;
 use std::time::Duration;

@@ -9,7 +9,7 @@
 //! [--glitches]`
 //!
 //! With `--programme oval` or `road-course` the runs are the logged racing
-//! programmes of [`handling::diagnose::synth::Programme`] (25 Hz, `ax` and
+//! programmes of [`handling::proving_ground::Programme`] (25 Hz, `ax` and
 //! `bank` channels, the oval's standstill left out by the cleaning): one
 //! row for no effect and one for each effect of the library, including the
 //! longitudinal and bank-profile ones. With `--programme slow-oval` (the
@@ -18,7 +18,7 @@
 //! `bank_profile`, `steer_path` and the two together.
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
-//! with roll and its own tyre ([`handling::diagnose::proving_ground`]): one
+//! with roll and its own tyre ([`handling::proving_ground::four_wheel`]): one
 //! row for no effect and one for each effect that truth implements (its
 //! own parameter values, in its own units, in the `fitted (truth)` column).
 //!
@@ -31,9 +31,9 @@
 
 use handling::diagnose::diagnose;
 use handling::diagnose::effects::{joined, EffectKind};
-use handling::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Truth};
 use handling::diagnose::DiagnoseSettings;
 use handling::measured::clean::{clean_runs, inject_glitches, CleanSettings};
+use handling::proving_ground::{generate_with, Noise, Programme, SynthSpec, Truth};
 use std::time::Instant;
 
 fn main() -> anyhow::Result<()> {

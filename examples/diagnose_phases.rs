@@ -16,9 +16,9 @@
 //! printed beside them: the machine may be shared.
 
 use handling::diagnose::effects::{joined, EffectKind};
-use handling::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
 use handling::diagnose::timing::Timing;
 use handling::diagnose::{diagnose_timed, Campaign, DiagnoseSettings};
+use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
 use std::path::Path;
 
 /// User plus system CPU seconds of this process so far (Linux), if known.

@@ -263,7 +263,7 @@ impl Tree {
         let mut code = BTreeMap::new();
         let mut reexports = BTreeMap::new();
         for (m, path) in &files {
-            let mut c = code_of(&fs::read_to_string(path).unwrap());
+            let mut c = inline_modules_flattened(&code_of(&fs::read_to_string(path).unwrap()));
             if library_only {
                 c = without_tests(&c);
             }
@@ -405,6 +405,16 @@ fn no_import_cycle_between_files() {
 }
 
 #[test]
+fn a_test_module_using_super_imports_its_own_file() {
+    let c = inline_modules_flattened(&code_of(
+        "use super::a::B;\nmod tests {\n    use super::*;\n    fn f() { super::g(); }\n}\nfn h() { super::k(); }\n",
+    ));
+    assert!(c.starts_with("use super::a::B;"));
+    assert!(c.contains("use self::*;") && c.contains("self::g()"));
+    assert!(c.ends_with("fn h() { super::k(); }\n"));
+}
+
+#[test]
 fn the_checker_sees_a_cycle_and_a_reexport() {
     let uses = use_items(&code_of(
         "use crate::a::{b::{C, D}, e};\npub use self::f::G;\n// use crate::z;\n",
@@ -474,6 +484,49 @@ fn test_children(code: &str) -> Vec<String> {
     out
 }
 
+/// Code whose inline modules (`mod tests { … }`) are read as the file's
+/// own: inside one, `super::` names the file's module, so it is rewritten
+/// to `self::` (a test module's `use super::*` is no import of the file's
+/// parent).
+fn inline_modules_flattened(code: &str) -> String {
+    let mut out = String::with_capacity(code.len());
+    let mut rest = code;
+    while let Some(at) = find_word(rest, "mod") {
+        let tail = &rest[at + 3..];
+        let name_len = tail
+            .trim_start()
+            .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .unwrap_or(0);
+        let after_name = tail.trim_start()[name_len..].trim_start();
+        if name_len == 0 || !after_name.starts_with('{') {
+            out.push_str(&rest[..at + 3]);
+            rest = tail;
+            continue;
+        }
+        let open = at + 3 + (tail.len() - after_name.len());
+        let mut depth = 0;
+        let mut end = rest.len();
+        for (i, c) in rest[open..].char_indices() {
+            match c {
+                '{' => depth += 1,
+                '}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        end = open + i + 1;
+                        break;
+                    }
+                }
+                _ => {}
+            }
+        }
+        out.push_str(&rest[..open]);
+        out.push_str(&rest[open..end].replace("super::", "self::"));
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
 /// Code without its `#[cfg(test)]` items (a `mod tests { … }` block, a
 /// `use` or a function): tests may use anything, layering is about what the
 /// library's own code depends on.
@@ -527,6 +580,7 @@ const LAYERS: &[&[&str]] = &[
     &["sim"],
     &["metrics", "equilibria", "identify"],
     &["study", "diagnose"],
+    &["proving_ground"],
     &["io"],
     &["jobs"],
     &["cli"],
@@ -557,6 +611,59 @@ fn layer_violations(
         }
     }
     out
+}
+
+/// The rooms of the diagnosis (`src/diagnose/`) in the order of its
+/// stages, first first: a room may import only earlier ones, so that
+/// following a campaign through the diagnosis enters the rooms in order.
+/// The same order is in `src/diagnose/mod.rs` and the book's architecture
+/// chapter.
+const DIAGNOSE_STAGES: &[&[&str]] = &[
+    &["effects", "timing"],
+    &["campaign"],
+    &["model"],
+    &["fit"],
+    &["base"],
+    &["report"],
+    &["verdict"],
+    &["pipeline"],
+];
+
+#[test]
+fn the_diagnosis_rooms_import_only_earlier_stages() {
+    let inner: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = Tree::library(&src())
+        .edges()
+        .into_iter()
+        .filter(|(from, _)| from.len() > 1 && from[0] == "diagnose")
+        .map(|(from, to)| {
+            let to = to
+                .into_iter()
+                .filter(|t| t.len() > 1 && t[0] == "diagnose")
+                .map(|t| t[1..].to_vec())
+                .collect();
+            (from[1..].to_vec(), to)
+        })
+        .collect();
+    let rooms: BTreeSet<&String> = inner.keys().filter_map(|m| m.first()).collect();
+    let declared: Vec<&str> = DIAGNOSE_STAGES
+        .iter()
+        .flat_map(|l| l.iter().copied())
+        .collect();
+    let missing: Vec<&&String> = rooms
+        .iter()
+        .filter(|r| !declared.contains(&r.as_str()))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "diagnosis rooms without a stage: {missing:?}"
+    );
+    let violations = layer_violations(DIAGNOSE_STAGES, &inner);
+    assert!(
+        violations.is_empty(),
+        "{} imports against the diagnosis's stage order:\n{}",
+        violations.len(),
+        violations.join("\n")
+    );
 }
 
 #[test]
@@ -732,4 +839,41 @@ fn the_label_check_sees_a_ticket_and_an_outside_path() {
     assert_eq!(labels_in(&data, true), Vec::<String>::new());
     assert_eq!(labels_in(&data, false).len(), 1);
     assert_eq!(labels_in(&["see /wo", "rk/notes"].concat(), true).len(), 1);
+}
+
+/// The crate doc (`src/lib.rs`) is the map a reader of the library starts
+/// from: its table names every top-level module the library declares, in
+/// the order of the layers.
+#[test]
+fn the_crate_doc_maps_every_module_in_layer_order() {
+    let lib = fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/lib.rs")).unwrap();
+    let doc: String = lib
+        .lines()
+        .filter_map(|l| l.strip_prefix("//!"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let declared: Vec<&str> = lib
+        .lines()
+        .filter_map(|l| l.strip_prefix("pub mod "))
+        .map(|l| l.trim_end_matches(';'))
+        .collect();
+    assert!(declared.len() >= 10, "{declared:?}");
+    let mut rows: Vec<(usize, &str)> = Vec::new();
+    for m in &declared {
+        let at = doc.find(&format!("| [`{m}`] |"));
+        let Some(at) = at else {
+            panic!("src/lib.rs: the crate doc's table leaves out the module `{m}`");
+        };
+        rows.push((at, m));
+    }
+    rows.sort();
+    let layers: Vec<usize> = rows
+        .iter()
+        .map(|(_, m)| layer_of(LAYERS, m).unwrap_or_else(|| panic!("`{m}` has no layer")))
+        .collect();
+    assert!(
+        layers.windows(2).all(|w| w[0] <= w[1]),
+        "src/lib.rs: the crate doc's table is not in layer order: {:?}",
+        rows.iter().map(|(_, m)| m).collect::<Vec<_>>()
+    );
 }

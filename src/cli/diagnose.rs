@@ -3,11 +3,11 @@
 
 use anyhow::Result;
 use clap::Args;
-use handling::diagnose::synth::{Programme, Truth};
 use handling::jobs::diagnose;
 use handling::jobs::fleet::{self, BatchOutcome};
 use handling::jobs::shard::Shard;
 use handling::jobs::synth::{self, truth_named, EffectName};
+use handling::proving_ground::{Programme, Truth};
 use std::path::PathBuf;
 use std::str::FromStr;
 

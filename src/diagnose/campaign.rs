@@ -2,10 +2,10 @@
 //! road, where the base tyres come from, the measured runs (already checked
 //! and cleaned) and the diagnosis's settings. `crate::io::campaign` reads
 //! and checks campaign files and folders into it (`FORMATS.md`); the
-//! virtual proving ground ([`super::synth`]) builds one in memory.
+//! virtual proving ground ([`crate::proving_ground`]) builds one in memory.
 //! Units: SI, rad.
 
-use super::effects::{EffectKind, RollModel};
+use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
 use crate::measured::clean::{CleaningReport, DEFAULT_MIN_SPEED};
 use crate::measured::MeasuredRun;

@@ -1,7 +1,7 @@
 //! Where a diagnosis spends its time: seconds and evaluations of the
 //! run set (replays of every run a fit sees, one per residual vector) by
 //! phase ([`Phase`]), recorded when a diagnosis is run through
-//! [`super::diagnosis::diagnose_timed`] and never otherwise.
+//! [`crate::diagnose::pipeline::diagnose_timed`] and never otherwise.
 //!
 //! The seconds of a phase are the sum, over every call in it, of the time
 //! between its start and its end. On one thread (`RAYON_NUM_THREADS=1`)
@@ -13,7 +13,7 @@
 //! `1 + n` evaluations for the residuals and the Jacobian, then
 //! `n·(n + 3)/2` for the second derivatives (`n` parameters). Evaluations
 //! at a point the run set was just replayed at reuse that replay
-//! ([`super::problem::Problem`]): they are counted, at almost no cost.
+//! ([`crate::diagnose::fit::problem::Problem`]): they are counted, at almost no cost.
 //!
 //! Nothing here reaches the diagnosis report: its numbers are the same
 //! with and without the timing.

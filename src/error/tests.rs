@@ -2,11 +2,11 @@
 //! and its fields (never on the message text).
 
 use super::*;
-use crate::diagnose::synth::{Programme, Truth};
 use crate::identify::data::identification_conditions;
 use crate::identify::{fit_lateral, FitSettings};
 use crate::jobs::identify::{IdentifyModel, Polish};
 use crate::jobs::shard::Shard;
+use crate::proving_ground::{Programme, Truth};
 use crate::tyre::pac89::Pac89;
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::Vehicle;

@@ -6,9 +6,9 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
-use crate::diagnose::channels::Channel;
-use crate::diagnose::diagnosis::{observed_channel, work_units, Diagnosis, PartAxis};
 use crate::diagnose::effects::{joined, Bound, EffectKind};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
 use crate::diagnose::report::{ParameterValue, Part};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;

@@ -4,7 +4,7 @@
 //! the run disagree (`gap.json`) out.
 
 use super::metrics::{metric_lines, UNITS};
-use crate::diagnose::gap::{run_gap, ChannelGap};
+use crate::diagnose::report::gap::{run_gap, ChannelGap};
 use crate::error::Error;
 use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;

@@ -1,12 +1,12 @@
-//! `synth` as one job: the virtual proving ground ([`crate::diagnose::synth`])
+//! `synth` as one job: the virtual proving ground ([`crate::proving_ground`])
 //! writes a campaign folder (`vehicle.toml`, `tyre_rig.csv`, `runs/*.csv`)
 //! measured on a truth model with chosen effects on. The folder is written
 //! under a temporary name and renamed when complete, so a failed run leaves
 //! no half-written campaign, and an existing folder is never written over.
 
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::synth::{generate_with, Noise, Programme, SynthSpec, Synthetic, Truth};
 use crate::error::{Error, NameKind, OptionsError, OutputError, WriteStep};
+use crate::proving_ground::{generate_with, Noise, Programme, SynthSpec, Synthetic, Truth};
 use crate::report::{create_dir, write_bytes, write_columns};
 use serde::Serialize;
 use std::path::{Path, PathBuf};

@@ -7,7 +7,7 @@
 
 use super::*;
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::replay::Prepared;
+use crate::diagnose::model::replay::Prepared;
 use crate::measured::MeasuredRun;
 use crate::tyre::{Pac89, Tyre};
 use crate::vehicle::Vehicle;

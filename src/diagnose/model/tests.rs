@@ -227,13 +227,11 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // 900 1/s, so RK4 at the log's 20 ms is unstable (its chaos once let
     // the fits "explain" the data). The replay then runs by ROS34PW2 at
     // that step and must match a fine RK4 reference.
-    use crate::diagnose::replay::Prepared;
+    use crate::diagnose::model::replay::Prepared;
     use crate::measured::MeasuredRun;
-    let (front, rear) = crate::diagnose::base::axle_tyres(&crate::diagnose::base::shares(
-        9.3 * 1.3 * 3.5,
-        80.0 * 1.3 * 3.5,
-        3.5,
-    ));
+    let (front, rear) = crate::diagnose::base::identify::axle_tyres(
+        &crate::diagnose::base::identify::shares(9.3 * 1.3 * 3.5, 80.0 * 1.3 * 3.5, 3.5),
+    );
     let model = Augmented::new(
         VehicleModel::new(crate::vehicle::racing_car(), front, rear),
         1.0,
@@ -285,11 +283,9 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // Measured 1.4e-5.
     assert!(lag_error < 5e-5, "{lag_error}");
     // Soft axles at the same step stay with RK4.
-    let (front, rear) = crate::diagnose::base::axle_tyres(&crate::diagnose::base::shares(
-        9.3 * 1.3,
-        10.0 * 1.3,
-        1.0,
-    ));
+    let (front, rear) = crate::diagnose::base::identify::axle_tyres(
+        &crate::diagnose::base::identify::shares(9.3 * 1.3, 10.0 * 1.3, 1.0),
+    );
     let soft = Augmented::new(
         VehicleModel::new(crate::vehicle::racing_car(), front, rear),
         1.0,
@@ -328,7 +324,7 @@ fn weave_run() -> crate::measured::MeasuredRun {
 #[test]
 fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
     use crate::diagnose::effects::EffectKind;
-    use crate::diagnose::replay::Prepared;
+    use crate::diagnose::model::replay::Prepared;
     let run = weave_run();
     let prepared = Prepared::new(&run, 0.01, 25.0);
     let base = Augmented::new(pac89_model(), 1.0);

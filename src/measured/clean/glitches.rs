@@ -465,7 +465,7 @@ mod tests {
         // spike threshold (10 robust spreads of the differences) exceeds
         // many of its values; an exact 0 amid unquantised samples of one
         // sign is still a zero read.
-        use crate::diagnose::synth::{generate, Noise, SynthSpec};
+        use crate::proving_ground::{generate, Noise, SynthSpec};
         let s = generate(&SynthSpec {
             effects: Vec::new(),
             seed: 3,

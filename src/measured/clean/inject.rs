@@ -112,7 +112,7 @@ mod tests {
     #[test]
     fn glitches_injected_into_synthetic_runs_are_all_found_and_nothing_else() {
         use crate::diagnose::effects::EffectKind;
-        use crate::diagnose::synth::{generate, truth_values, Noise, SynthSpec};
+        use crate::proving_ground::{generate, truth_values, Noise, SynthSpec};
         for (seed, effects) in [
             (1, vec![]),
             (2, vec![EffectKind::SensorDelay]),

@@ -1,0 +1,207 @@
+//! How the base model is found ([`Bases`]): the campaign's tyres, a tyre
+//! model fitted to its rig data, or — with neither — axle characteristics
+//! identified from the runs (`identify`) and refitted on every fold and
+//! with every candidate, since an effect changes what the tyres must have
+//! been. Units: SI, rad.
+
+pub(crate) mod identify;
+
+use crate::diagnose::base::identify::{identify_axles, AxleIdentification};
+use crate::diagnose::campaign::{BaseTyres, Campaign};
+use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::refit::{refit, training_rows};
+use crate::diagnose::fit::{fit, Polish};
+use crate::diagnose::model::axles::{axle_tyres, AXLE_BOUNDS};
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Augmented;
+use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
+use crate::error::{DiagnosisError, Error};
+use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis};
+use crate::identify::{fit_lateral, start_tyre_of, FitSettings};
+use crate::optim::local::{Derivatives, Residuals};
+use crate::optim::stats::covariance;
+use crate::tyre::Tyre;
+use crate::vehicle::VehicleModel;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// The base model of all runs and of every fold.
+pub(super) struct Bases {
+    pub(super) all: Augmented,
+    pub(super) folds: Vec<Augmented>,
+    pub(super) nominal_share: f64,
+    /// Axle characteristics identified from the runs (all runs, per fold):
+    /// refitted jointly with every candidate, since an effect changes what
+    /// the tyres must have been.
+    pub(super) axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
+    /// How the runs pin them, and whether they are a tyre at all.
+    pub(super) identification: Option<AxleIdentification>,
+}
+
+/// The base models: all runs and each fold's training runs.
+pub(super) fn base_models(
+    c: &Campaign,
+    runs: &[Prepared],
+    folds: &[Vec<usize>],
+    scales_hint: [f64; 3],
+    timing: Option<&Recorder>,
+) -> Result<(Bases, String, Option<GroupingReport>), Error> {
+    let vehicle = c.vehicle.clone();
+    let nominal_share = vehicle.front_transfer_share();
+    let make = |f: Tyre, r: Tyre| Augmented {
+        roll: c.roll,
+        ..Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction)
+    };
+    // Tyres not fitted to the runs: one model for all runs and every fold.
+    let fixed = |m: Augmented| Bases {
+        folds: vec![m.clone(); folds.len()],
+        all: m,
+        nominal_share,
+        axle: None,
+        identification: None,
+    };
+    match &c.tyres {
+        BaseTyres::Given(f, r) => Ok((
+            fixed(make((**f).clone(), (**r).clone())),
+            "given tyre files".into(),
+            None,
+        )),
+        BaseTyres::Rig { path, data, model } => {
+            let grouped = group(path, data, &Grouping::default(), SlipAxis::Angle)?;
+            let conditions = grouped.conditions;
+            if conditions.is_empty() {
+                return Err(DiagnosisError::NoRigCondition { rig: path.clone() }.into());
+            }
+            let mut loads: Vec<f64> = conditions.iter().map(|q| q.fz).collect();
+            loads.sort_by(f64::total_cmp);
+            let t0 = start_tyre_of(*model, loads[loads.len() / 2])?;
+            let mut settings = FitSettings::new(c.settings.seed);
+            settings.pso.particles = 40;
+            settings.pso.iterations = 150;
+            let started = Instant::now();
+            let f =
+                fit_lateral(&t0, &conditions, &settings).map_err(|e| DiagnosisError::RigFit {
+                    rig: path.clone(),
+                    source: Box::new(e),
+                })?;
+            if let Some(rec) = timing {
+                rec.add(Phase::BaseIdentification, started.elapsed(), 0);
+            }
+            Ok((
+                fixed(make(f.tyre.clone(), f.tyre.clone())),
+                format!(
+                    "{} fitted to the rig data {} (σ {:.2} % of the force)",
+                    model,
+                    path.display(),
+                    f.sigma_percent
+                ),
+                Some(grouped.report),
+            ))
+        }
+        BaseTyres::FromRuns => {
+            let d = c.settings.derivatives;
+            let (bases, described) =
+                axles_from_runs(runs, folds, (scales_hint, nominal_share), (make, d), timing);
+            Ok((bases, described, None))
+        }
+    }
+}
+
+/// What the axle shares set on the models `make` builds: their tyres.
+fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
+    let (f, r) = axle_tyres(&[0.5, 0.5, 0.5]);
+    Layout {
+        base: make(f, r),
+        kinds: Vec::new(),
+        axle: true,
+    }
+}
+
+/// The base model of axle characteristics identified from the runs (no
+/// tyre data; [`crate::diagnose::base::identify`]): a grid of starts, the best basins
+/// polished, the best of them fitted, then refitted on every fold.
+fn axles_from_runs(
+    runs: &[Prepared],
+    folds: &[Vec<usize>],
+    (scales_hint, nominal_share): ([f64; 3], f64),
+    (make, derivatives): (impl Fn(Tyre, Tyre) -> Augmented + Sync, Derivatives),
+    timing: Option<&Recorder>,
+) -> (Bases, String) {
+    let build = |p: &[f64]| {
+        let (f, r) = axle_tyres(p);
+        make(f, r)
+    };
+    let stamps = timing.map(|_| Stamps::default());
+    let layout = axle_layout(&make);
+    let problem = Problem::new(
+        |p: &[f64]| counted(&stamps, build, p),
+        runs.iter().collect(),
+        scales_hint,
+        AXLE_BOUNDS.to_vec(),
+    )
+    .with_layout(layout.clone(), derivatives);
+    let t0 = Instant::now();
+    let (start, starts) = identify_axles(&problem);
+    let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
+    let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
+    if let (Some(rec), Some(st)) = (timing, &stamps) {
+        rec.add(Phase::BaseIdentification, mark.0 - t0, mark.1);
+        let phases = [
+            Phase::BasePolish,
+            Phase::BaseLinearisation,
+            Phase::BaseLinearisation,
+        ];
+        let n = full.params.len();
+        let jacobian = problem.jacobian_evaluations(n);
+        record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
+    }
+    let fold_params: Vec<Vec<f64>> = (0..folds.len())
+        .into_par_iter()
+        .map(|k| {
+            let t0 = Instant::now();
+            let train: Vec<&Prepared> = (0..runs.len())
+                .filter(|i| !folds[k].contains(i))
+                .map(|i| &runs[i])
+                .collect();
+            let stamps = timing.map(|_| Stamps::default());
+            let p = Problem::new(
+                |p: &[f64]| counted(&stamps, build, p),
+                train,
+                scales_hint,
+                AXLE_BOUNDS.to_vec(),
+            )
+            .with_layout(layout.clone(), derivatives);
+            let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
+            if let (Some(rec), Some(st)) = (timing, &stamps) {
+                rec.add(Phase::BaseFolds, t0.elapsed(), st.count());
+            }
+            q
+        })
+        .collect();
+    let p = &full.params;
+    let cov = full
+        .linear
+        .as_ref()
+        .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
+    let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
+    let described = format!("no tyre data: {}", id.describe());
+    (
+        Bases {
+            all: build(p),
+            folds: fold_params.iter().map(|q| build(q)).collect(),
+            nominal_share,
+            axle: Some((p.clone(), fold_params)),
+            identification: Some(id),
+        },
+        described,
+    )
+}
+
+/// The model of `p`, the evaluation stamped when the diagnosis is timed.
+fn counted(stamps: &Option<Stamps>, build: impl Fn(&[f64]) -> Augmented, p: &[f64]) -> Augmented {
+    if let Some(st) = stamps {
+        st.tick();
+    }
+    build(p)
+}

@@ -1,0 +1,278 @@
+//! Fitting a [`Problem`]'s parameters by output error: a swarm search
+//! ([`swarm`]: the crate's PSO over the box of each parameter, one particle
+//! at the start point, so the fit is never worse than the model it starts
+//! from; the diagnosis stops it once its best has settled), polished by
+//! Levenberg–Marquardt within the bounds ([`fit`]). The parameters'
+//! standard errors come from the Jacobian at the optimum,
+//! `s²·(JᵀJ)⁻¹` with `s²` the residual variance, those pressed onto a
+//! bound held there; the optimum's quadratic model of the residuals
+//! ([`Linearisation`]: residuals, Jacobian and second derivatives) is what
+//! the cross-validation's fold refits start from (`refit`). Model selection
+//! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
+//! model ([`FitOutcome::bic`]).
+
+pub(crate) mod layout;
+pub(crate) mod problem;
+pub(crate) mod refit;
+pub(crate) mod tangent;
+
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::model::Augmented;
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::Residuals;
+use crate::optim::pso::Pso;
+use crate::optim::stats::{seen_columns, standard_errors};
+use nalgebra::DMatrix;
+use serde::Serialize;
+
+/// The outcome of a fit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitOutcome {
+    /// Parameters.
+    pub params: Vec<f64>,
+    /// Standard errors (NaN when not identifiable).
+    pub std_errors: Vec<f64>,
+    /// ½·Σ e² of the scaled residuals.
+    pub cost: f64,
+    /// Number of residuals.
+    pub residuals: usize,
+    /// Replays of the whole run set made.
+    pub evaluations: usize,
+    /// Whether the polish stopped on its convergence test.
+    pub converged: bool,
+    /// The data residuals and their Jacobian at the optimum (fits polished
+    /// to convergence): the fold refits start from them.
+    #[serde(skip)]
+    pub linear: Option<Linearisation>,
+}
+
+/// Data residuals `r`, their Jacobian `J` and second derivatives of a
+/// problem at a point, rows in the order of the problem's runs: a quadratic
+/// model of every residual, `r(p + δ) ≈ r + J·δ + ½·δᵀ∇²r·δ`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Linearisation {
+    /// Residuals.
+    pub residuals: Vec<f64>,
+    /// Jacobian (finite differences stepping into the box at a bound).
+    pub jacobian: DMatrix<f64>,
+    /// Second derivatives `∂²r/∂p_a∂p_b`, one column per pair `a ≤ b` in
+    /// the order of [`pair_index`].
+    pub curvature: DMatrix<f64>,
+}
+
+/// The column of the pair `(a, b)` of `n` parameters in
+/// [`Linearisation::curvature`]: `(0,0), (0,1), …, (0,n−1), (1,1), …`.
+pub fn pair_index(n: usize, a: usize, b: usize) -> usize {
+    let (a, b) = if a <= b { (a, b) } else { (b, a) };
+    a * n - a * (a + 1) / 2 + b
+}
+
+impl FitOutcome {
+    /// Bayesian information criterion of a Gaussian error model with the
+    /// variance estimated: `N·ln(RSS/N) + k·ln N`.
+    pub fn bic(&self) -> f64 {
+        let n = self.residuals.max(1) as f64;
+        n * (2.0 * self.cost / n).max(1e-300).ln() + self.params.len() as f64 * n.ln()
+    }
+}
+
+/// Relative tolerance of the fits' cost and step: the replays are smooth in
+/// the parameters, but a finite-difference Jacobian is good to about √ε,
+/// and a scaled cost that moves by less than this is at its optimum for
+/// every figure the diagnosis reports.
+pub const FIT_TOLERANCE: f64 = 1.5e-8;
+
+/// Iteration budget of a fit on all runs.
+pub const FIT_ITERATIONS: usize = 100;
+
+/// Iteration budget of a fold refit (it starts next to its optimum; a fold
+/// that needs more is reported as not converged).
+pub const REFIT_ITERATIONS: usize = 8;
+
+/// The local polish of a fit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Polish {
+    /// Levenberg–Marquardt to convergence.
+    LevenbergMarquardt,
+    /// A refit from a nearby optimum (the cross-validation folds start from
+    /// the all-run fit): Levenberg–Marquardt to convergence, without the
+    /// standard errors.
+    Refit,
+}
+
+/// The swarm search of a fit: PSO over the bounds of every parameter but
+/// the first `held` (kept at their values in `start`), one particle at
+/// `start`; its best point and the evaluations made. Nothing to search
+/// (all parameters held) returns `start`.
+pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: &Pso,
+    held: usize,
+) -> (Vec<f64>, usize) {
+    let p0 = problem.clamp(start);
+    if p0.len() <= held {
+        return (p0, 0);
+    }
+    let full = |q: &[f64]| {
+        let mut p = p0[..held].to_vec();
+        p.extend_from_slice(q);
+        p
+    };
+    let r = pso.minimize_from(
+        |q| problem.cost(&full(q)),
+        &problem.bounds[held..],
+        &[p0[held..].to_vec()],
+    );
+    (full(&r.best), r.evaluations)
+}
+
+/// Fits `problem` from `start` by the polish (the start comes from a
+/// swarm, [`swarm`], or a nearby optimum). A parameter the data cannot
+/// see is reported at its value in `off` (the effect off; `start` when
+/// None), which fits as well. Standard errors are those of the parameters
+/// inside their bounds: one the fit pressed onto a bound is held there
+/// (NaN), as a constrained least-squares fit's active set is.
+pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    off: Option<&[f64]>,
+    polish: Polish,
+) -> FitOutcome {
+    let mut evaluations = 0;
+    let p0 = problem.clamp(start);
+    let (params, cost, converged) = if start.is_empty() {
+        (Vec::new(), problem.cost(&[]), true)
+    } else {
+        // A refit starts next to its optimum: a bounded budget (a fold
+        // that needs more is reported as not converged).
+        let iterations = match polish {
+            Polish::LevenbergMarquardt => FIT_ITERATIONS,
+            Polish::Refit => REFIT_ITERATIONS,
+        };
+        let lm = BoundedLm {
+            iterations,
+            tolerance: FIT_TOLERANCE,
+        }
+        .minimize(problem, &p0, &problem.bounds);
+        evaluations += lm.evaluations;
+        // The polish accepts only steps that lower the cost (and returns its
+        // start when its cost is not finite): it ends no worse than it began.
+        (lm.params, lm.cost, lm.converged)
+    };
+    let mut params = params;
+    let (std_errors, linear) = match polish {
+        Polish::LevenbergMarquardt if !params.is_empty() => {
+            let linear = linearise(problem, &params);
+            evaluations += problem.jacobian_evaluations(params.len()) + 1;
+            // A parameter the data cannot see (an accelerometer offset of a
+            // run set without ay) is wherever the swarm left it: report its
+            // off value (the effect off), which fits as well.
+            let off = problem.clamp(off.unwrap_or(start));
+            for (i, seen) in seen_columns(&linear.jacobian).into_iter().enumerate() {
+                if !seen {
+                    params[i] = off[i];
+                }
+            }
+            let mut free = linear.jacobian.clone();
+            for (i, &b) in problem.bounds.iter().enumerate() {
+                if crate::diagnose::effects::on_bound(params[i], b).is_some() {
+                    free.column_mut(i).fill(0.0);
+                }
+            }
+            (standard_errors(&free, 2.0 * cost), Some(linear))
+        }
+        _ => (vec![f64::NAN; params.len()], None),
+    };
+    FitOutcome {
+        params,
+        std_errors,
+        cost,
+        residuals: problem.data_count(),
+        evaluations: evaluations + 1,
+        converged,
+        linear,
+    }
+}
+
+/// The data residuals, their Jacobian and their second derivatives at `p`
+/// (`1 + n + n·(n + 3)/2` replays of the runs, the second differences in
+/// parallel).
+pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+) -> Linearisation {
+    let mut r = vec![0.0; problem.count()];
+    problem.residuals(p, &mut r);
+    let jacobian = problem.jacobian(p, &r, &problem.bounds);
+    let curvature = curvature(problem, p, &r);
+    Linearisation {
+        residuals: r,
+        jacobian,
+        curvature,
+    }
+}
+
+/// Step of the second differences, as a share of each parameter's box:
+/// their truncation error is first order in it, and the replays' own
+/// rounding (the load-transfer loop's 1e-9) divided by its square stays
+/// three orders below the curvature of a residual over its box.
+const CURVATURE_STEP: f64 = 1e-3;
+
+/// Second derivatives of the residuals at `p` by forward second
+/// differences, stepping into the box: `(r(p+2h_a) − 2r(p+h_a) + r(p))/h_a²`
+/// and `(r(p+h_a+h_b) − r(p+h_a) − r(p+h_b) + r(p))/(h_a·h_b)`. The replays
+/// are independent: they run in parallel.
+fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    r0: &[f64],
+) -> DMatrix<f64> {
+    use rayon::prelude::*;
+    let n = p.len();
+    let h: Vec<f64> = (0..n)
+        .map(|k| {
+            let (lo, hi) = problem.bounds[k];
+            let h = CURVATURE_STEP * (hi - lo);
+            if p[k] + 2.0 * h > hi {
+                -h
+            } else {
+                h
+            }
+        })
+        .collect();
+    let shifted = |moves: &[(usize, f64)]| {
+        let mut q = p.to_vec();
+        for &(k, m) in moves {
+            q[k] += m * h[k];
+        }
+        let mut r = vec![0.0; r0.len()];
+        problem.residuals(&q, &mut r);
+        r
+    };
+    let singles: Vec<(Vec<f64>, Vec<f64>)> = (0..n)
+        .into_par_iter()
+        .map(|k| (shifted(&[(k, 1.0)]), shifted(&[(k, 2.0)])))
+        .collect();
+    let pairs: Vec<(usize, usize)> = (0..n).flat_map(|a| (a..n).map(move |b| (a, b))).collect();
+    let columns: Vec<Vec<f64>> = pairs
+        .par_iter()
+        .map(|&(a, b)| {
+            if a == b {
+                let (one, two) = &singles[a];
+                let h2 = h[a] * h[a];
+                (0..r0.len())
+                    .map(|i| (two[i] - 2.0 * one[i] + r0[i]) / h2)
+                    .collect()
+            } else {
+                let both = shifted(&[(a, 1.0), (b, 1.0)]);
+                let (ra, rb) = (&singles[a].0, &singles[b].0);
+                let hab = h[a] * h[b];
+                (0..r0.len())
+                    .map(|i| (both[i] - ra[i] - rb[i] + r0[i]) / hab)
+                    .collect()
+            }
+        })
+        .collect();
+    DMatrix::from_fn(r0.len(), pairs.len(), |i, c| columns[c][i])
+}

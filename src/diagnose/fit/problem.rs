@@ -1,0 +1,162 @@
+//! The output-error problem of a fit ([`Problem`]): model parameters
+//! (effect parameters, or axle tyre characteristics) in, the scaled
+//! residuals of every run's replay out. Each evaluation replays the runs
+//! with the augmented model the parameters build and compares what its
+//! sensors would read with what was measured.
+//!
+//! The residual of channel c at a sample is `(simulated − measured)/s_c`,
+//! with `s_c` the channel's scale (its noise floor, at least 2 % of its RMS
+//! signal, so that a very quiet channel does not drown the others). The
+//! cost is `½·Σ r²` over every run and channel. Parameters are clamped into
+//! their box. Units: SI, rad.
+
+use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::model::replay::{LastReplay, Prepared};
+use crate::diagnose::model::Augmented;
+use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
+use nalgebra::DMatrix;
+use std::sync::Mutex;
+
+/// Output-error least squares over a set of runs: `build` turns the
+/// parameter vector into the model to replay. Each run's last replay is
+/// kept ([`Problem::new`]): a search over sensor parameters integrates the
+/// runs once, and an evaluation repeated at the same point (the polish
+/// starting where the swarm ended, the Jacobian's base point) costs no
+/// integration. Memory: one history per run.
+pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
+    /// The model of a parameter vector.
+    pub build: F,
+    /// The runs.
+    pub runs: Vec<&'a Prepared>,
+    /// Channel scales.
+    pub scales: [f64; 3],
+    /// Parameter bounds: parameters are clamped into them.
+    pub bounds: Vec<(f64, f64)>,
+    /// The last replay of each run.
+    last: Vec<Mutex<Option<LastReplay>>>,
+    /// What the parameters set, when the problem has exact derivatives
+    /// ([`Problem::with_layout`]).
+    layout: Option<Layout>,
+}
+
+impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
+    /// The problem of fitting `build`'s parameters within `bounds` to `runs`
+    /// with channel scales `scales`.
+    pub fn new(
+        build: F,
+        runs: Vec<&'a Prepared>,
+        scales: [f64; 3],
+        bounds: Vec<(f64, f64)>,
+    ) -> Self {
+        let last = runs.iter().map(|_| Mutex::new(None)).collect();
+        Self {
+            build,
+            runs,
+            scales,
+            bounds,
+            last,
+            layout: None,
+        }
+    }
+
+    /// The same problem with exact derivatives when `derivatives` asks
+    /// for them: `layout` says what the parameters set (as `build` sets
+    /// them), and the Jacobian comes from one
+    /// replay of each run in dual numbers ([`crate::diagnose::fit::tangent`]) instead of
+    /// one per parameter.
+    pub fn with_layout(mut self, layout: Layout, derivatives: Derivatives) -> Self {
+        if derivatives == Derivatives::Exact {
+            self.layout = Some(layout);
+        }
+        self
+    }
+
+    /// Whether the Jacobian is exact: a layout, and tyres with a generic
+    /// force (else forward differences).
+    fn exact(&self) -> bool {
+        self.layout.as_ref().is_some_and(|l| {
+            let m = &l.base.base;
+            l.axle
+                || (m.front.lateral_parameters().is_some() && m.rear.lateral_parameters().is_some())
+        })
+    }
+
+    pub(crate) fn clamp(&self, p: &[f64]) -> Vec<f64> {
+        p.iter()
+            .zip(&self.bounds)
+            .map(|(x, (lo, hi))| x.clamp(*lo, *hi))
+            .collect()
+    }
+
+    /// Number of data residuals.
+    pub fn data_count(&self) -> usize {
+        self.runs.iter().map(|r| r.count()).sum()
+    }
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
+    /// The data residuals of the parameters clamped into their bounds (the
+    /// polish, [`BoundedLm`](crate::optim::bounded::BoundedLm), stays
+    /// inside them).
+    fn count(&self) -> usize {
+        self.data_count()
+    }
+    fn residuals(&self, p: &[f64], out: &mut [f64]) {
+        self.data_residuals(&self.clamp(p), out);
+    }
+    /// Exact (one dual replay of each run) with a layout whose tyres have
+    /// a generic force, else forward differences into the box.
+    fn jacobian(&self, p: &[f64], r0: &[f64], bounds: &[(f64, f64)]) -> DMatrix<f64> {
+        if self.exact() {
+            let layout = self.layout.as_ref().expect("exact() checked it");
+            let q = self.clamp(p);
+            // The plain model of `q`, built once through `build` (whose
+            // callers count and time-stamp their evaluations: the dual
+            // replay is one evaluation in the fits' work reports).
+            let plain = (self.build)(&q);
+            if let Some(j) = crate::diagnose::fit::tangent::jacobian(
+                (layout, &plain),
+                &self.runs,
+                &self.scales,
+                &q,
+            ) {
+                return j;
+            }
+        }
+        inward_jacobian(self, p, r0, bounds)
+    }
+    /// One replay (in dual numbers) when exact.
+    fn jacobian_evaluations(&self, n: usize) -> usize {
+        if self.exact() {
+            1
+        } else {
+            n
+        }
+    }
+}
+
+impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
+    /// The data residuals at `q` (inside the bounds), the runs replayed in
+    /// parallel: the steps of a fit (Levenberg–Marquardt's trials, a fold
+    /// refit's model steps) follow one another, and a slow candidate's
+    /// would otherwise leave a core idle once the others are done.
+    fn data_residuals(&self, q: &[f64], out: &mut [f64]) {
+        use rayon::prelude::*;
+        let model = (self.build)(q);
+        let mut pieces = Vec::with_capacity(self.runs.len());
+        let mut rest = out;
+        for r in &self.runs {
+            let (piece, tail) = rest.split_at_mut(r.count());
+            pieces.push(piece);
+            rest = tail;
+        }
+        self.runs
+            .par_iter()
+            .zip(&self.last)
+            .zip(pieces)
+            .for_each(|((r, last), out)| {
+                let obs = r.observe_reusing(&model, last);
+                r.write_residuals(&obs, &self.scales, out);
+            });
+    }
+}

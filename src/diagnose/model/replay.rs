@@ -1,0 +1,409 @@
+//! A measured run made ready for the many replays a fit makes ([`Prepared`]):
+//! its inputs (steer, speed, and the `ax` and `bank` channels when logged)
+//! sampled once onto the campaign's fixed step, the times at which
+//! residuals are taken, and the measured channels at those times.
+//!
+//! A replay starts from the run's first measured state (sideslip, else 0,
+//! and yaw rate) less the model's sensor offsets, and runs on the
+//! campaign's fixed grid, smooth in the parameters: by classical RK4 while
+//! the model being replayed is stable under it there, else by the linearly
+//! implicit Rosenbrock-W method ROS34PW2 (Rang & Angermann 2005), stable at
+//! any step ([`Prepared::drive_for`]). The residual of channel c at a
+//! sample is `(simulated − measured)/s_c`, `s_c` the channel's scale.
+//! Residuals are taken at a fixed rate (default 25 Hz) rather than at every
+//! sample: neighbouring samples of a 100 Hz log say nearly the same thing.
+//! Units: SI, rad.
+
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::{Augmented, Drive, FixedStep, Observed};
+use crate::measured::MeasuredRun;
+use crate::sim::TimeHistory;
+use std::borrow::Cow;
+use std::sync::Mutex;
+
+/// `h·ρ` up to which a replay runs by RK4, with `ρ` the model's fastest
+/// rate ([`VehicleModel::fastest_rate`]): inside RK4's stability region
+/// (−2.79 on the real axis, ±2.83 on the imaginary) with a margin for
+/// what that estimate leaves out (load transfer, the slip's own
+/// nonlinearity). Beyond it, ROS34PW2.
+///
+/// [`VehicleModel::fastest_rate`]: crate::vehicle::VehicleModel::fastest_rate
+pub(crate) const STABLE_STEP: f64 = 2.0;
+
+/// The measured inputs a run's replay grids are sampled from.
+#[derive(Debug)]
+struct ReplayInputs {
+    t: Vec<f64>,
+    steer: Vec<f64>,
+    speed: Vec<f64>,
+    ax: Option<Vec<f64>>,
+    bank: Option<Vec<f64>>,
+    /// Lowest and highest speed, m/s.
+    speeds: (f64, f64),
+}
+
+/// A run made ready for repeated replays.
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    /// Name (the file).
+    pub(crate) name: String,
+    /// Its inputs at the RK4 stages of the campaign's step.
+    pub(crate) drive: Drive,
+    /// The same at the ROS34PW2 stages, sampled when a model first needs
+    /// them ([`Prepared::drive_for`]).
+    stiff: std::sync::Arc<std::sync::OnceLock<Drive>>,
+    inputs: std::sync::Arc<ReplayInputs>,
+    /// Times at which residuals are taken, s.
+    pub(crate) times: Vec<f64>,
+    /// Measured channels at those times.
+    pub(crate) measured: Vec<(Channel, Vec<f64>)>,
+    /// Initial sideslip (measured, else 0) and yaw rate.
+    pub(crate) start: (f64, f64),
+    /// Relative tolerance of the replays' load-transfer loop
+    /// ([`crate::vehicle::LOAD_TOLERANCE`]; a check of derivatives against
+    /// differences sets it at rounding).
+    pub(crate) load_tolerance: f64,
+}
+
+impl Prepared {
+    /// Every run of campaign `c`, prepared with its `[diagnose]` step and
+    /// residual rate.
+    pub fn campaign_runs(c: &Campaign) -> Vec<Self> {
+        let set = &c.settings;
+        c.runs
+            .iter()
+            .map(|r| Self::new(r, set.step, set.sample_rate))
+            .collect()
+    }
+
+    /// Prepares `run` for replays with step `step` and residuals taken
+    /// at `rate` Hz (at the samples nearest to it).
+    /// Masked samples (logger glitches in a response channel) are skipped:
+    /// the next unmasked sample takes their place.
+    pub fn new(run: &MeasuredRun, step: f64, rate: f64) -> Self {
+        let mut masked = vec![false; run.t.len()];
+        for &i in &run.masked {
+            masked[i] = true;
+        }
+        let first = (0..run.t.len()).find(|&i| !masked[i]).unwrap_or(0);
+        let mut idx = vec![first];
+        for (i, (&t, &m)) in run.t.iter().zip(&masked).enumerate().skip(first + 1) {
+            if !m && t - run.t[*idx.last().unwrap()] >= 1.0 / rate - 1e-9 {
+                idx.push(i);
+            }
+        }
+        let times: Vec<f64> = idx.iter().map(|&i| run.t[i]).collect();
+        let measured = Channel::ALL
+            .into_iter()
+            .filter_map(|c| c.of(run).map(|v| (c, idx.iter().map(|&i| v[i]).collect())))
+            .collect();
+        let speeds = run
+            .speed
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &u| {
+                (lo.min(u), hi.max(u))
+            });
+        let inputs = ReplayInputs {
+            t: run.t.clone(),
+            steer: run.steer.clone(),
+            speed: run.speed.clone(),
+            ax: run.ax.clone(),
+            bank: run.bank.clone(),
+            speeds,
+        };
+        Self {
+            name: run.path.display().to_string(),
+            drive: inputs.drive(step, FixedStep::Rk4),
+            stiff: Default::default(),
+            inputs: std::sync::Arc::new(inputs),
+            times,
+            measured,
+            start: (
+                run.beta.as_ref().map_or(0.0, |b| b[first]),
+                run.yaw_rate[first],
+            ),
+            load_tolerance: crate::vehicle::LOAD_TOLERANCE,
+        }
+    }
+
+    /// The replay `model` needs on the campaign's step: by RK4 while
+    /// `h·ρ ≤` `STABLE_STEP` at the run's lowest and highest speed, else
+    /// by ROS34PW2, which is stable at any step. The step stays the
+    /// campaign's: a stiff model (racing axles at a few m/s, a tyre lag of
+    /// millimetres) costs a Jacobian every few steps, not a finer grid, and
+    /// its fast modes, settled within a step, are followed quasi-statically.
+    /// A model whose steer path is on gets a copy of that drive with the
+    /// path's output for the run's logged steer ([`Augmented::steered`]);
+    /// any other, the prepared drive itself.
+    pub(crate) fn drive_for(&self, model: &Augmented) -> Cow<'_, Drive> {
+        let (drive, t, steer) = self.unsteered_drive(model);
+        model.steered(drive, t, steer)
+    }
+
+    /// The drive `model`'s replay runs on before its steer path (the
+    /// method [`Prepared::drive_for`] picks), and the logged times and
+    /// steer the path acts on.
+    pub(crate) fn unsteered_drive(&self, model: &Augmented) -> (&Drive, &[f64], &[f64]) {
+        let (vehicle, friction) = model.model();
+        let (lo, hi) = self.inputs.speeds;
+        let rho = vehicle
+            .fastest_rate(lo, friction)
+            .max(vehicle.fastest_rate(hi, friction));
+        let drive = if self.drive.step * rho <= STABLE_STEP {
+            &self.drive
+        } else {
+            self.stiff
+                .get_or_init(|| self.inputs.drive(self.drive.step, FixedStep::RosenbrockW))
+        };
+        (drive, &self.inputs.t, &self.inputs.steer)
+    }
+
+    /// The first measured state (sideslip, else 0, and yaw rate) and
+    /// whether the sideslip is measured: a replay starts there less the
+    /// model's sensor offsets ([`Prepared::replay`]).
+    pub(crate) fn start_values(&self) -> ((f64, f64), bool) {
+        let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
+        (self.start, beta_measured)
+    }
+
+    /// The run replayed by `model` from its first measured state less the
+    /// model's sensor offsets, by the method [`Prepared::drive_for`] picks.
+    pub(crate) fn replay(&self, model: &Augmented) -> TimeHistory {
+        let (beta, yaw_rate) = self.start_of(model);
+        model.simulate_from_to(&self.drive_for(model), beta, yaw_rate, self.load_tolerance)
+    }
+
+    /// Number of residuals of this run.
+    pub(crate) fn count(&self) -> usize {
+        self.measured.iter().map(|(_, v)| v.len()).sum()
+    }
+
+    /// Replays the run with `model` from its first measured state (less the
+    /// model's sensor offsets) and returns what the sensors would read at
+    /// the residual times.
+    pub(crate) fn observe(&self, model: &Augmented) -> Observed {
+        model.observe(&self.replay(model), &self.times)
+    }
+
+    /// The replay's start (sideslip, yaw rate): the first measured state less
+    /// the model's sensor offsets. A run without a sideslip channel starts
+    /// at 0 whatever the sideslip offset: else the offset of a channel the
+    /// run lacks would steer its start and be "fitted" from that.
+    fn start_of(&self, model: &Augmented) -> (f64, f64) {
+        let sensors = &model.effects.sensors;
+        let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
+        (
+            if beta_measured {
+                self.start.0 - sensors.beta_bias
+            } else {
+                self.start.0
+            },
+            self.start.1 - sensors.yaw_rate_bias,
+        )
+    }
+
+    /// [`Prepared::observe`] through `slot`, the run's last replay: a model
+    /// that differs from the last one only in its sensors (a sensor delay,
+    /// gain or accelerometer position, whose start state is the same)
+    /// integrates the same history, so only the sensors are applied again.
+    pub(crate) fn observe_reusing(
+        &self,
+        model: &Augmented,
+        slot: &Mutex<Option<LastReplay>>,
+    ) -> Observed {
+        let start = self.start_of(model);
+        {
+            let last = slot.lock().unwrap_or_else(|e| e.into_inner());
+            if let Some(l) = last.as_ref() {
+                if l.start == start && l.model.same_dynamics(model) {
+                    return model.observe(&l.history, &self.times);
+                }
+            }
+        }
+        // Integrated without the lock: evaluations in parallel (a parallel
+        // swarm) do not wait for each other, the last one stored wins.
+        let history = self.replay(model);
+        let observed = model.observe(&history, &self.times);
+        *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
+            model: model.clone(),
+            start,
+            history,
+        });
+        observed
+    }
+
+    /// Replays the run with `model` and writes the scaled residuals into
+    /// `out` (length [`Prepared::count`]).
+    pub(crate) fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
+        self.write_residuals(&self.observe(model), scales, out);
+    }
+
+    /// The scaled residuals of observed outputs `obs` into `out`.
+    pub(crate) fn write_residuals(&self, obs: &Observed, scales: &[f64; 3], out: &mut [f64]) {
+        let mut k = 0;
+        for (c, m) in &self.measured {
+            let sim = match c {
+                Channel::YawRate => &obs.yaw_rate,
+                Channel::Ay => &obs.ay,
+                Channel::Beta => &obs.beta,
+            };
+            let s = scales[c.index()];
+            for (y, x) in sim.iter().zip(m) {
+                // A diverged replay is a very bad fit, not a NaN for LM.
+                out[k] = if y.is_finite() { (y - x) / s } else { 1e6 };
+                k += 1;
+            }
+        }
+    }
+
+    /// Sum of squared unscaled residuals and sample count per channel.
+    pub fn errors(&self, model: &Augmented) -> ChannelErrors {
+        let mut r = vec![0.0; self.count()];
+        self.residuals(model, &[1.0; 3], &mut r);
+        let mut e = ChannelErrors::default();
+        let mut k = 0;
+        for (c, v) in &self.measured {
+            for _ in 0..v.len() {
+                e.sum_sq[c.index()] += r[k] * r[k];
+                e.count[c.index()] += 1;
+                k += 1;
+            }
+        }
+        e
+    }
+}
+
+impl ReplayInputs {
+    /// The inputs on the grid of step `step`, sampled for `method`.
+    fn drive(&self, step: f64, method: FixedStep) -> Drive {
+        Drive::replay(&self.t, &self.steer, &self.speed, step, method).with_channels(
+            &self.t,
+            self.ax.as_deref(),
+            self.bank.as_deref(),
+        )
+    }
+}
+
+/// A run's last replay: the model (its sensors aside, the key), the start
+/// state and the integrated history.
+pub(crate) struct LastReplay {
+    model: Augmented,
+    start: (f64, f64),
+    history: TimeHistory,
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::manoeuvre::{Manoeuvre, SineSteer};
+    use crate::sim::Drive;
+
+    /// The sine steer `m` driven by `truth`, logged at 25 Hz for 8 s (yaw
+    /// rate and ay, no sideslip) as `run{k}.csv` and prepared for replays
+    /// at 10 ms.
+    pub(crate) fn sine_run(truth: &Augmented, k: usize, m: SineSteer) -> Prepared {
+        let h = truth.simulate_from(&Drive::new(&Manoeuvre::Sine(m), 1e-3), 0.0, 0.0);
+        let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
+        let at = |v: &[f64]| -> Vec<f64> {
+            t.iter()
+                .map(|&s| crate::manoeuvre::interpolate(&h.t, v, s))
+                .collect()
+        };
+        let run = MeasuredRun {
+            path: format!("run{k}.csv").into(),
+            speed: at(&h.speed),
+            steer: at(&h.steer),
+            yaw_rate: at(&h.yaw_rate),
+            ay: Some(at(&h.ay)),
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+            t,
+        };
+        Prepared::new(&run, 0.01, 25.0)
+    }
+
+    /// A run of constant steer at `speed`, `ax` logged or not.
+    fn run(t: Vec<f64>, speed: Vec<f64>, ax: Option<Vec<f64>>) -> MeasuredRun {
+        let n = t.len();
+        MeasuredRun {
+            path: "r.csv".into(),
+            t,
+            speed,
+            steer: vec![0.01; n],
+            yaw_rate: vec![0.0; n],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax,
+            masked: Vec::new(),
+        }
+    }
+
+    use crate::identify::data::{rms, white_noise as noise};
+
+    // The acceleration a replay uses: the logged `ax`, else the speed's
+    // Savitzky–Golay derivative (`crate::measured::derivative`).
+    #[test]
+    fn a_noisy_constant_speed_without_ax_is_replayed_without_fake_acceleration() {
+        // 30 s at 20 m/s logged at 100 Hz with 0.03 m/s of white noise.
+        let t: Vec<f64> = (0..3001).map(|k| k as f64 * 0.01).collect();
+        let speed: Vec<f64> = noise(t.len(), 0.03, 11).iter().map(|e| 20.0 + e).collect();
+        // The raw difference of the speed: √2·0.03/0.01 ≈ 4.2 m/s² RMS.
+        let raw: Vec<f64> = speed.windows(2).map(|u| (u[1] - u[0]) / 0.01).collect();
+        assert!(rms(&raw) > 1.0, "{}", rms(&raw));
+        let r = run(t, speed, None);
+        for step in [0.01, 0.02] {
+            let p = Prepared::new(&r, step, 25.0);
+            let ax = p.drive.ax_samples();
+            assert_eq!(ax.len(), 2 * p.drive.steps + 1);
+            assert!(rms(&ax) < 0.2, "step {step}: {}", rms(&ax));
+        }
+        // With an ax channel, that is what the replay reads.
+        let measured: Vec<f64> = (0..3001).map(|k| -1.0 - 1e-3 * k as f64).collect();
+        let r = run(r.t.clone(), r.speed.clone(), Some(measured));
+        let p = Prepared::new(&r, 0.01, 25.0);
+        for (i, a) in p.drive.ax_samples().iter().enumerate() {
+            assert!((a - (-1.0 - 0.5e-3 * i as f64)).abs() < 1e-9, "{i}: {a}");
+        }
+    }
+
+    #[test]
+    fn a_speed_ramp_is_recovered_in_its_middle() {
+        // 2 s at 10 m/s, 5 s speeding up at 2 m/s², 3 s at 20 m/s, at
+        // 100 Hz; once exact, once with 0.03 m/s of noise.
+        let t: Vec<f64> = (0..1001).map(|k| k as f64 * 0.01).collect();
+        let clean: Vec<f64> = t
+            .iter()
+            .map(|&x| 10.0 + 2.0 * (x - 2.0).clamp(0.0, 5.0))
+            .collect();
+        let noisy: Vec<f64> = clean
+            .iter()
+            .zip(noise(t.len(), 0.03, 5))
+            .map(|(u, e)| u + e)
+            .collect();
+        let middle = |p: &Prepared| -> Vec<f64> {
+            let ax = p.drive.ax_samples();
+            // Stage sample k is at k·h/2 = k·2.5 ms: 3.5–5.5 s.
+            (1400..=2200).map(|k| ax[k]).collect()
+        };
+        let p = Prepared::new(&run(t.clone(), clean, None), 0.005, 25.0);
+        for a in middle(&p) {
+            assert!((a - 2.0).abs() < 0.02 * 2.0, "{a}");
+        }
+        // Zero before and after the ramp, half a window from its kinks
+        // (before 1.75 s, after 7.25 s).
+        let ax = p.drive.ax_samples();
+        assert!(ax[..700].iter().all(|a| a.abs() < 1e-9));
+        assert!(ax[2901..].iter().all(|a| a.abs() < 1e-9));
+        let p = Prepared::new(&run(t, noisy, None), 0.005, 25.0);
+        let m = middle(&p);
+        let mean = m.iter().sum::<f64>() / m.len() as f64;
+        assert!((mean - 2.0).abs() < 0.02 * 2.0, "{mean}");
+        assert!(m.iter().all(|a| (a - 2.0).abs() < 0.2), "{m:?}");
+    }
+}

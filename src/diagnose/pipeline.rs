@@ -1,0 +1,417 @@
+//! The diagnosis of a campaign: base model, where the gap lies, which
+//! effect explains it, how far it shrinks on held-out runs.
+//!
+//! 1. Base model: the campaign's tyres, or a tyre model fitted to its rig
+//!    data, or — with neither — axle characteristics identified from the
+//!    training runs (simplified Magic Formula per axle, `B_f`, `B_r` and a
+//!    shared peak friction `D`; refitted in every fold) — `candidates.rs`,
+//!    `base.rs`.
+//! 2. Gap: every run replayed with its own steer and speed
+//!    ([`crate::diagnose::report::gap`], `summary.rs`); noise floors pooled over runs
+//!    (median).
+//! 3. Candidates: every effect of the library fitted on all runs (PSO +
+//!    Levenberg–Marquardt) for its parameters and BIC, then scored by
+//!    K-fold cross-validation (leave-one-run-out up to eight runs; run i in
+//!    fold i mod 8 beyond), each fold refitted from the all-run optimum.
+//!    The held-out error is `J = sqrt(Σ_c n_c·(rms_c/s_c)²/Σ n_c)`; the noise
+//!    alone would give `J_n` (the same with the noise floors), so the gap
+//!    above noise is `G = sqrt(J² − J_n²)` and an effect's reduction is
+//!    `1 − G_after/G_before` — `crossval.rs` (folds, scoring, at most
+//!    [`MAX_FOLDS`] folds), `fit.rs` (the fits) and `refit.rs` (the fold
+//!    refits).
+//! 4. Verdict: the best effect is accepted when it removes at least
+//!    [`ACCEPT`] of the held-out gap above noise and lowers the BIC; more
+//!    effects are added greedily (jointly refitted) while each removes
+//!    [`ACCEPT`] of what is left (starting from a best single that removes
+//!    at least [`PROMISING`], so that two effects that each explain only
+//!    part of the gap are found together; the set must then pass as a
+//!    whole). Effects that also pass and leave a gap
+//!    above noise within [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n of the
+//!    accepted one's G are reported as confounded with it, with the
+//!    experiment that would separate them.
+//!    A gap below [`SIGNIFICANT`]·J_n is no gap: the verdict is empty.
+//!    The search, the ranking against the base model and the verdict in
+//!    words are in `search.rs`, with its thresholds.
+//!
+//! This file runs the steps in order ([`diagnose`]) and assembles the
+//! report ([`crate::diagnose::report`]).
+//!
+//! Units: SI, rad; J is dimensionless (residuals over channel scales).
+//!
+//! [`ACCEPT`]: crate::diagnose::verdict::search::ACCEPT
+//! [`PROMISING`]: crate::diagnose::verdict::search::PROMISING
+//! [`CONFOUNDED`]: crate::diagnose::verdict::search::CONFOUNDED
+//! [`CONFOUNDED_NOISE`]: crate::diagnose::verdict::search::CONFOUNDED_NOISE
+//! [`SIGNIFICANT`]: crate::diagnose::verdict::search::SIGNIFICANT
+
+pub use crate::diagnose::report::summary::observed_channel;
+pub use crate::diagnose::report::{
+    BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
+    Verdict,
+};
+
+use crate::diagnose::base::{base_models, Bases};
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{EffectKind, EffectSet, Needs};
+use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
+use crate::diagnose::timing::{Recorder, Timing};
+use crate::diagnose::verdict::score::{prepare, Context, Scored, MAX_FOLDS};
+use crate::diagnose::verdict::screening::singles;
+use crate::diagnose::verdict::search::{
+    baseline, confounded_with, search, verdict_of, worsened, Baseline, Search, SIGNIFICANT,
+};
+use crate::error::Error;
+use crate::identify::grouping::GroupingReport;
+use crate::measured::road::RoadGeometry;
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v[v.len() / 2]
+    }
+}
+
+/// Work units reported to the progress counter for a campaign.
+pub fn work_units(c: &Campaign) -> usize {
+    let folds = c.runs.len().min(MAX_FOLDS);
+    let singles = c.effects.len() * (1 + folds);
+    let combos = c.settings.max_effects.saturating_sub(1) * c.effects.len() * (1 + folds);
+    1 + singles + combos
+}
+
+/// Channel scales before the base model exists (for the axle fit): 2 % of
+/// each channel's RMS signal, refined with the noise floors later.
+fn signal_scales(c: &Campaign) -> [f64; 3] {
+    Channel::ALL.map(|ch| {
+        let (mut s, mut n) = (0.0, 0usize);
+        for r in &c.runs {
+            if let Some(v) = ch.of(r) {
+                s += v.iter().map(|x| x * x).sum::<f64>();
+                n += v.len();
+            }
+        }
+        if n == 0 {
+            0.02
+        } else {
+            0.02 * (s / n as f64).sqrt().max(1e-9)
+        }
+    })
+}
+
+/// Noise floors pooled over runs (median), the channel scales (the floor,
+/// at least `hint`) and the floors by channel index.
+fn noise_table(run_gaps: &[RunGap], hint: [f64; 3]) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
+    let mut scales = hint;
+    let mut floors = [0.0; 3];
+    let noise = Channel::ALL
+        .into_iter()
+        .filter_map(|ch| {
+            let per_run: Vec<f64> = run_gaps
+                .iter()
+                .filter_map(|g| g.channels.iter().find(|x| x.channel == ch))
+                .map(|x| x.noise_floor)
+                .collect();
+            (!per_run.is_empty()).then(|| {
+                let nf = median(per_run.clone());
+                scales[ch.index()] = nf.max(hint[ch.index()]);
+                floors[ch.index()] = nf;
+                ChannelNoise {
+                    channel: ch,
+                    unit: ch.unit(),
+                    noise_floor: nf,
+                    scale: scales[ch.index()],
+                    runs: per_run.len(),
+                }
+            })
+        })
+        .collect();
+    (noise, scales, floors)
+}
+
+/// Held-out replays of every run, before and after, largest base gap first.
+fn overlays(ctx: &Context, before: &[Observed], after: &[Observed]) -> Vec<Overlay> {
+    let mut out: Vec<Overlay> = ctx
+        .runs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let mut e = ChannelErrors::default();
+            for (ch, m) in &r.measured {
+                let sim = observed_channel(&before[i], *ch);
+                for (y, x) in sim.iter().zip(m) {
+                    e.sum_sq[ch.index()] += (y - x) * (y - x);
+                    e.count[ch.index()] += 1;
+                }
+            }
+            Overlay {
+                run: r.name.clone(),
+                t: r.times.clone(),
+                measured: r.measured.clone(),
+                base: before[i].clone(),
+                after: after[i].clone(),
+                gap: e.combined(&ctx.scales),
+            }
+        })
+        .collect();
+    out.sort_by(|a, b| b.gap.total_cmp(&a.gap));
+    out
+}
+
+/// A longitudinal acceleration that shows, m/s²: well above a logger's
+/// noise on `ax` and a speed trace's differencing noise.
+const VISIBLE_AX: f64 = 0.5;
+
+/// The campaign's candidate effects that its runs can show, and a note for
+/// each one left out (an effect of braking and throttle without a
+/// longitudinal acceleration, a bank profile without a `bank` channel).
+fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
+    // The acceleration the replays use: the measured ax, else the
+    // smoothed speed derivative (a raw difference of a noisy speed would
+    // admit braking effects on constant-speed runs).
+    let accelerates = c.runs.iter().any(|r| {
+        r.longitudinal_acceleration()
+            .iter()
+            .any(|a| a.abs() > VISIBLE_AX)
+    });
+    let banked = c.runs.iter().any(|r| r.bank.is_some());
+    let mut notes = Vec::new();
+    let effects = c
+        .effects
+        .iter()
+        .copied()
+        .filter(|e| {
+            let why = match e.needs() {
+                Needs::LongitudinalAcceleration if !accelerates => format!(
+                    "no run has a longitudinal acceleration above {VISIBLE_AX} m/s² (an ax channel or a changing speed)"
+                ),
+                Needs::BankChannel if !banked => "no run has a bank channel".to_string(),
+                _ => return true,
+            };
+            notes.push(format!("{}: not a candidate: {why}", e.name()));
+            false
+        })
+        .collect();
+    // A bank seen through the yaw rate alone: axles identified from the
+    // same runs can take up its lateral force (a banked oval without
+    // sideslip or ay diagnosed "no significant gap").
+    let blind = c
+        .runs
+        .iter()
+        .filter(|r| r.bank.is_some() && r.beta.is_none() && r.ay.is_none())
+        .count();
+    if blind > 0 && matches!(c.tyres, crate::diagnose::campaign::BaseTyres::FromRuns) {
+        notes.push(format!(
+            "bank_profile: {blind} of {} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them",
+            c.runs.len()
+        ));
+    }
+    (effects, notes)
+}
+
+/// A note on the runs the base model is too stiff to replay by RK4 on the
+/// campaign's `step`, which it replays by ROS34PW2
+/// ([`crate::diagnose::model::replay::Prepared::drive_for`]); every fit picks per model.
+fn grid_note(ctx: &Context, step: f64) -> Option<String> {
+    let stiff = ctx
+        .runs
+        .iter()
+        .filter(|r| {
+            r.drive_for(&ctx.bases.all).method == crate::diagnose::model::FixedStep::RosenbrockW
+        })
+        .count();
+    (stiff > 0).then(|| {
+        format!(
+            "replay method: the base model is too stiff for RK4 at the {step} s step on {stiff} of {} runs, replayed by the linearly implicit ROS34PW2 at that step",
+            ctx.runs.len()
+        )
+    })
+}
+
+/// Where the gap lies: every run replayed by the all-run base model.
+fn base_gaps(c: &Campaign, all: &Augmented) -> Vec<RunGap> {
+    c.runs
+        .par_iter()
+        .map(|run| base_run_gap(all, run, c.settings.step))
+        .collect()
+}
+
+/// The held-out replays of every run by the base model and by the
+/// verdict's (the base's again without a verdict).
+fn before_after(ctx: &Context, chosen: Option<&Scored>) -> (Vec<Observed>, Vec<Observed>) {
+    let base_obs = ctx.heldout_observed(None, &EffectSet::default());
+    let after_obs = match chosen {
+        Some(sc) => ctx.heldout_observed(Some(sc), &EffectSet::default()),
+        None => base_obs.clone(),
+    };
+    (base_obs, after_obs)
+}
+
+/// The verdict in words ([`verdict_of`]) with its warnings: the channels
+/// the verdict's effects leave worse on held-out runs, and a base that is
+/// no tyre (the axles identified from the runs, when they are not one).
+fn verdict_with_warnings(
+    chosen: Option<&Scored>,
+    base: &Baseline,
+    significant: bool,
+    ranking: &[Ranked],
+    shrinkage: &[Shrinkage],
+    bases: &Bases,
+) -> Verdict {
+    let degenerate = bases
+        .identification
+        .as_ref()
+        .and_then(|i| i.degenerate.as_deref());
+    let mut verdict = verdict_of(chosen, base, significant, ranking, degenerate);
+    if chosen.is_some() {
+        verdict.warnings = worsened(shrinkage);
+        if let Some(why) = degenerate {
+            verdict.warnings.push(format!(
+                "the base model alone is no tyre ({why}); the reductions are measured against it, and with the verdict's effects the axles are a tyre"
+            ));
+        }
+    }
+    verdict
+}
+
+/// The gap's findings in words ([`gap_summary`]), with a note on the runs
+/// without an ay channel.
+fn gap_lines(
+    c: &Campaign,
+    run_gaps: &[RunGap],
+    parts: &[Shrinkage],
+    significant: bool,
+    j0: f64,
+    jn: f64,
+) -> Vec<String> {
+    let mut summary = gap_summary(run_gaps, parts, significant, j0, jn);
+    let without_ay = c.runs.iter().filter(|r| r.ay.is_none()).count();
+    if without_ay > 0 {
+        summary.push(format!(
+            "|ay| levels are u·r on the {without_ay} of {} runs without an ay channel",
+            c.runs.len()
+        ));
+    }
+    summary
+}
+
+/// The base model as reported: where its tyres come from (`tyres`), the
+/// all-run tyres and, for tyres identified from the runs, the axles.
+fn base_report(bases: &Bases, tyres: String, rig_grouping: Option<GroupingReport>) -> BaseReport {
+    BaseReport {
+        tyres,
+        front: bases.all.base.front.clone(),
+        rear: bases.all.base.rear.clone(),
+        rig_grouping,
+        axles: bases.identification.clone(),
+    }
+}
+
+/// Runs the diagnosis of a campaign. `progress` counts work units (as many
+/// as `work_units` of the campaign).
+pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
+    run(c, progress, None)
+}
+
+/// Runs the diagnosis of a campaign and says where its time went
+/// ([`crate::diagnose::timing`]); the diagnosis is the same as [`diagnose`]'s.
+pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
+    let recorder = Recorder::default();
+    let t0 = Instant::now();
+    let d = run(c, None, Some(&recorder))?;
+    Ok((d, recorder.timing(t0.elapsed())))
+}
+
+/// The diagnosis, its phases timed by `timing` when given.
+fn run(
+    c: &Campaign,
+    progress: Option<&AtomicUsize>,
+    timing: Option<&Recorder>,
+) -> Result<Diagnosis, Error> {
+    let set = &c.settings;
+    let (runs, folds, pso) = prepare(c);
+    let hint = signal_scales(c);
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, timing)?;
+    if let Some(p) = progress {
+        p.fetch_add(1, Ordering::Relaxed);
+    }
+
+    let run_gaps = base_gaps(c, &bases.all);
+    let (noise, scales, floors) = noise_table(&run_gaps, hint);
+    let ctx = Context {
+        runs,
+        folds,
+        scales,
+        bases: &bases,
+        pso,
+        progress,
+        timing,
+        derivatives: c.settings.derivatives,
+    };
+    let base = baseline(&ctx, &floors);
+    let (j0, jn) = (base.j0, base.jn);
+    let significant = j0 > SIGNIFICANT * jn;
+    let (effects, mut notes) = visible_effects(c);
+    notes.extend(grid_note(&ctx, set.step));
+    notes.splice(0..0, c.notes.iter().cloned());
+    let (singles, order, screened, screened_rows) =
+        singles(&ctx, &effects, &base, set.screening, significant);
+    let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
+
+    let found = if significant {
+        let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
+        search(&ctx, &singles, (&order, &all), &base, set.max_effects)
+    } else {
+        Search::default()
+    };
+    let chosen = found.chosen.as_ref();
+    let confounded = chosen.map_or_else(Vec::new, |sc| {
+        confounded_with(sc, &singles, &found.lookalikes, &base)
+    });
+
+    // Before and after on held-out runs, per channel, window and regime.
+    let (base_obs, after_obs) = before_after(&ctx, chosen);
+    let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
+    let parts = parts_table(&c.runs, &ctx.runs, &base_obs, &base_obs, &floors);
+    let verdict = verdict_with_warnings(chosen, &base, significant, &ranking, &shrinkage, &bases);
+    let overlays = overlays(&ctx, &base_obs, &after_obs);
+    let summary = gap_lines(c, &run_gaps, &parts, significant, j0, jn);
+    Ok(Diagnosis {
+        campaign: c.name.clone(),
+        seed: set.seed,
+        derivatives: set.derivatives,
+        runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),
+        folds: ctx.folds.len(),
+        notes,
+        cleaning: c.cleaning.clone(),
+        road: c
+            .runs
+            .iter()
+            .zip(&ctx.runs)
+            .map(|(m, r)| RoadGeometry::of(&r.name, m))
+            .collect(),
+        base: base_report(&bases, tyre_source, rig_grouping),
+        gap: GapReport {
+            significant,
+            heldout_error: j0,
+            noise_level: jn,
+            noise,
+            parts,
+            runs: run_gaps,
+            summary,
+        },
+        ranking,
+        screened: screened_rows,
+        combinations: found.combinations,
+        verdict,
+        confounded,
+        shrinkage,
+        overlays,
+    })
+}

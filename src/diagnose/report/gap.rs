@@ -1,0 +1,595 @@
+//! Where simulation and measurement disagree, for one replayed run.
+//!
+//! Per channel (yaw rate, and lateral acceleration and sideslip where
+//! measured): the residual e = simulated − measured at the measurement times
+//! (the simulation linearly interpolated), its RMS, bias and largest value;
+//! the Sprague–Geers split (Sprague & Geers 2004, simulated m against
+//! measured c): magnitude error `M = sqrt(∫m²/∫c²) − 1`, phase error
+//! `P = acos(∫mc/sqrt(∫m²·∫c²))/π`, comprehensive `C = sqrt(M² + P²)`; the
+//! residual's lag-1 autocorrelation (near 0: white, measurement-like; near 1:
+//! a slow, model-like error) and its largest correlation with the steer input
+//! over lags 0–1 s (a residual that follows the input points to a dynamic
+//! error: a lag, a stiffness, a gain). The residual is also split by time
+//! window (before the input, the first 0.5 s after it starts, 0.5–2 s, the
+//! rest) and by regime (lateral-acceleration level, speed band).
+//!
+//! The noise floor of each channel is its standard deviation in the
+//! pre-input window (the steer not yet moved) when that window has at least
+//! ten samples, else the first-difference estimate `std(Δx)/√2` (an upper
+//! bound for smooth signals). A gap is significant when the RMS residual
+//! exceeds three noise floors (and 1e-6 of the signal, for noise-free data),
+//! so "no significant gap" is a possible answer.
+//! Units: SI, rad; times in s.
+
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::parts::{regime_samples, window_samples, Part};
+use crate::manoeuvre::interpolate;
+use serde::Serialize;
+
+/// The residual over a part of the run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PartGap {
+    /// The window or regime (serialised as its label).
+    pub name: Part,
+    /// Samples in it.
+    pub samples: usize,
+    /// RMS residual.
+    pub rms: f64,
+    /// Mean residual (simulated − measured).
+    pub bias: f64,
+}
+
+/// The gap of one channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelGap {
+    /// The channel.
+    pub channel: Channel,
+    /// Its unit.
+    pub unit: &'static str,
+    /// Noise floor (standard deviation of the measurement noise).
+    pub noise_floor: f64,
+    /// How the noise floor was estimated.
+    pub noise_source: NoiseSource,
+    /// RMS residual.
+    pub rms: f64,
+    /// Mean residual.
+    pub bias: f64,
+    /// Largest |residual|.
+    pub max_abs: f64,
+    /// Sprague–Geers magnitude error (`null` when the measured channel
+    /// holds no signal: all zero).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub magnitude_error: f64,
+    /// Sprague–Geers phase error (0 … 1; `null` as above).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub phase_error: f64,
+    /// Sprague–Geers comprehensive error (`null` as above).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub comprehensive_error: f64,
+    /// Lag-1 autocorrelation of the residual (`null` for a constant one).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub lag1_autocorrelation: f64,
+    /// Largest |correlation| of the residual with the steer over lags 0–1 s.
+    pub input_correlation: f64,
+    /// The lag of that largest correlation, s.
+    pub input_correlation_lag: f64,
+    /// By time window.
+    pub windows: Vec<PartGap>,
+    /// By regime.
+    pub regimes: Vec<PartGap>,
+    /// RMS above three noise floors.
+    pub significant: bool,
+    /// The finding in words.
+    pub verdict: String,
+}
+
+/// How a channel's noise floor was estimated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum NoiseSource {
+    /// The standard deviation over the window before the input (at least
+    /// ten samples).
+    #[serde(rename = "standard deviation before the input")]
+    BeforeInput,
+    /// `std(Δx)/√2` over the whole record: an upper bound for a smooth signal.
+    #[serde(rename = "first differences (an upper bound)")]
+    FirstDifferences,
+}
+
+fn trapezoid(t: &[f64], f: impl Fn(usize) -> f64) -> f64 {
+    (1..t.len())
+        .map(|i| 0.5 * (f(i - 1) + f(i)) * (t[i] - t[i - 1]))
+        .sum()
+}
+
+/// Sprague–Geers (M, P, C) of `m` (simulated) against `c` (measured).
+pub fn sprague_geers(t: &[f64], m: &[f64], c: &[f64]) -> (f64, f64, f64) {
+    let mm = trapezoid(t, |i| m[i] * m[i]);
+    let cc = trapezoid(t, |i| c[i] * c[i]);
+    let mc = trapezoid(t, |i| m[i] * c[i]);
+    if mm <= 0.0 || cc <= 0.0 {
+        return (f64::NAN, f64::NAN, f64::NAN);
+    }
+    let mag = (mm / cc).sqrt() - 1.0;
+    let phase = (mc / (mm * cc).sqrt()).clamp(-1.0, 1.0).acos() / std::f64::consts::PI;
+    (mag, phase, mag.hypot(phase))
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+fn std_dev(v: &[f64]) -> f64 {
+    let m = mean(v);
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len().max(1) as f64).sqrt()
+}
+
+/// Correlation of `a[i]` with `b[i − lag]`.
+fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
+    let n = a.len();
+    if lag + 2 > n {
+        return 0.0;
+    }
+    let (x, y) = (&a[lag..], &b[..n - lag]);
+    let (mx, my) = (mean(x), mean(y));
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for (p, q) in x.iter().zip(y) {
+        sxy += (p - mx) * (q - my);
+        sxx += (p - mx) * (p - mx);
+        syy += (q - my) * (q - my);
+    }
+    if sxx <= 0.0 || syy <= 0.0 {
+        0.0
+    } else {
+        sxy / (sxx * syy).sqrt()
+    }
+}
+
+fn part(name: Part, idx: &[usize], e: &[f64]) -> PartGap {
+    let v: Vec<f64> = idx.iter().map(|&i| e[i]).collect();
+    PartGap {
+        name,
+        samples: v.len(),
+        rms: (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt(),
+        bias: mean(&v),
+    }
+}
+
+/// What a run shares between its channels: sample times, the steer input,
+/// and the lateral acceleration (measured, or u·r) and speed that define the
+/// regimes.
+#[derive(Debug, Clone, Copy)]
+pub struct Record<'a> {
+    /// Sample times, s.
+    pub t: &'a [f64],
+    /// Steer, rad.
+    pub steer: &'a [f64],
+    /// Lateral acceleration for the regimes, m/s².
+    pub ay: &'a [f64],
+    /// Speed, m/s.
+    pub speed: &'a [f64],
+}
+
+/// The gap of one channel of a record.
+pub fn channel_gap(
+    channel: Channel,
+    rec: &Record,
+    measured: &[f64],
+    simulated: &[f64],
+) -> ChannelGap {
+    let Record {
+        t,
+        steer,
+        ay,
+        speed,
+    } = *rec;
+    let n = t.len();
+    let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
+    let unit = channel.unit();
+    let win = window_samples(t, steer);
+    let pre: Vec<f64> = win[0].1.iter().map(|&i| measured[i]).collect();
+    let (noise_floor, noise_source) = if pre.len() >= 10 {
+        (std_dev(&pre), NoiseSource::BeforeInput)
+    } else {
+        let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
+        (std_dev(&d) / 2f64.sqrt(), NoiseSource::FirstDifferences)
+    };
+    let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
+    let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
+    let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
+    let max_lag = ((1.0 / dt).round() as usize).min(n / 2);
+    let (lag, rho) = (0..=max_lag)
+        .map(|l| (l, correlation(&e, steer, l)))
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .unwrap_or((0, 0.0));
+    let windows: Vec<PartGap> = win
+        .into_iter()
+        .filter(|w| !w.1.is_empty())
+        .map(|(name, idx)| part(name, &idx, &e))
+        .collect();
+    let regimes: Vec<PartGap> = regime_samples(ay, speed)
+        .into_iter()
+        .map(|(name, idx)| part(name, &idx, &e))
+        .collect();
+    // Noise-free data (a simulation replayed) have a zero floor: a residual
+    // below 1e-6 of the signal is numerical, not a gap.
+    let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
+    let significant = rms > 3.0 * noise_floor && rms > 1e-6 * signal;
+    let verdict = if !significant {
+        format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})")
+    } else {
+        let worst = |v: &[PartGap]| {
+            v.iter()
+                .filter(|p| p.samples >= 5)
+                .max_by(|a, b| a.rms.total_cmp(&b.rms))
+                .map(|p| p.name)
+        };
+        // A channel that is all but empty has a zero floor and no
+        // magnitude or phase: said in words, never as NaN or a 300-digit
+        // ratio.
+        let floors = rms / noise_floor;
+        let floors = if floors.is_finite() && floors < 1e6 {
+            format!("{floors:.1} noise floors")
+        } else {
+            "a noise floor of zero: the measured channel is all but constant".to_string()
+        };
+        let or_undefined = |v: f64, text: String| {
+            if v.is_finite() {
+                text
+            } else {
+                "undefined".to_string()
+            }
+        };
+        let mut s = format!(
+            "gap: RMS {rms:.4} {unit} ({floors}), bias {:.4} {unit}; magnitude error {}, phase error {}",
+            mean(&e),
+            or_undefined(magnitude_error, format!("{:+.1} %", 100.0 * magnitude_error)),
+            or_undefined(phase_error, format!("{phase_error:.3}")),
+        );
+        if let Some(w) = worst(&windows) {
+            s += &format!("; largest in the window '{w}'");
+        }
+        if let Some(r) = worst(&regimes) {
+            s += &format!(", regime '{r}'");
+        }
+        let l1 = correlation(&e, &e, 1);
+        if rho.abs() > 0.5 {
+            s += &format!("; the residual follows the steer (ρ = {rho:.2} at {:.2} s): a dynamic error (gain, lag or stiffness)", lag as f64 * dt);
+        } else if l1 > 0.9 {
+            s += "; the residual is slow and smooth: a model error rather than noise";
+        }
+        s
+    };
+    ChannelGap {
+        channel,
+        unit,
+        noise_floor,
+        noise_source,
+        rms,
+        bias: mean(&e),
+        max_abs: e.iter().map(|x| x.abs()).fold(0.0, f64::max),
+        magnitude_error,
+        phase_error,
+        comprehensive_error,
+        lag1_autocorrelation: correlation(&e, &e, 1),
+        input_correlation: rho,
+        input_correlation_lag: lag as f64 * dt,
+        windows,
+        regimes,
+        significant,
+        verdict,
+    }
+}
+
+/// The lateral acceleration that defines a run's regimes: measured, or u·r
+/// when the run has no accelerometer.
+pub fn regime_acceleration(run: &crate::measured::MeasuredRun) -> Vec<f64> {
+    match &run.ay {
+        Some(ay) => ay.clone(),
+        None => run
+            .yaw_rate
+            .iter()
+            .zip(&run.speed)
+            .map(|(r, u)| r * u)
+            .collect(),
+    }
+}
+
+/// The samples of a run that are scored: all but the masked ones (logger
+/// glitches in a response channel).
+pub fn scored_samples(run: &crate::measured::MeasuredRun) -> Vec<usize> {
+    let mut keep = vec![true; run.t.len()];
+    for &i in &run.masked {
+        keep[i] = false;
+    }
+    (0..run.t.len()).filter(|&i| keep[i]).collect()
+}
+
+/// The gap of every measured channel of a replayed run, on its unmasked
+/// samples.
+pub fn run_gap(
+    run: &crate::measured::MeasuredRun,
+    sim: &crate::sim::TimeHistory,
+) -> Vec<ChannelGap> {
+    let idx = scored_samples(run);
+    let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
+    let t = pick(&run.t);
+    let at = |ys: &[f64]| -> Vec<f64> { t.iter().map(|&x| interpolate(&sim.t, ys, x)).collect() };
+    let ay_regime = pick(&regime_acceleration(run));
+    let (steer, speed) = (pick(&run.steer), pick(&run.speed));
+    let rec = Record {
+        t: &t,
+        steer: &steer,
+        ay: &ay_regime,
+        speed: &speed,
+    };
+    let mut out = vec![channel_gap(
+        Channel::YawRate,
+        &rec,
+        &pick(&run.yaw_rate),
+        &at(&sim.yaw_rate),
+    )];
+    if let Some(ay) = &run.ay {
+        out.push(channel_gap(Channel::Ay, &rec, &pick(ay), &at(&sim.ay)));
+    }
+    if let Some(beta) = &run.beta {
+        out.push(channel_gap(
+            Channel::Beta,
+            &rec,
+            &pick(beta),
+            &at(&sim.beta),
+        ));
+    }
+    out
+}
+
+/// The yaw-rate response's gain and phase error in one frequency band.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BandGap {
+    /// Lower edge, Hz.
+    pub f_low: f64,
+    /// Upper edge, Hz.
+    pub f_high: f64,
+    /// Measured yaw-rate gain |r/δ|, 1/s.
+    pub gain_measured: f64,
+    /// Simulated gain, 1/s.
+    pub gain_simulated: f64,
+    /// 20·log10(simulated/measured), dB.
+    pub gain_error_db: f64,
+    /// Phase of simulated relative to measured, degrees (negative: the
+    /// model lags).
+    pub phase_error_deg: f64,
+}
+
+/// Frequency bands of the sweep analysis, Hz.
+const BANDS: [(f64, f64); 5] = [(0.1, 0.3), (0.3, 0.6), (0.6, 1.2), (1.2, 2.4), (2.4, 4.0)];
+
+/// Gain and phase errors of the yaw-rate response per frequency band, for a
+/// run whose steer oscillates (at least six sign changes about its mean: a
+/// sweep or a sine; a step has no band content worth splitting). Both
+/// responses are estimated as `H = Σ Y·U*/Σ |U|²` over the DFT bins of the
+/// band (the run resampled to its median interval, means removed); a band is
+/// reported when it holds at least 5 % of the steer's power in 0.1–4 Hz.
+pub fn band_gaps(t: &[f64], steer: &[f64], measured: &[f64], simulated: &[f64]) -> Vec<BandGap> {
+    let n0 = t.len();
+    if n0 < 32 {
+        return Vec::new();
+    }
+    let m0 = mean(steer);
+    let crossings = steer
+        .windows(2)
+        .filter(|w| (w[0] - m0).signum() != (w[1] - m0).signum())
+        .count();
+    if crossings < 6 {
+        return Vec::new();
+    }
+    let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    dts.sort_by(f64::total_cmp);
+    let dt = dts[dts.len() / 2];
+    let n = ((t[n0 - 1] - t[0]) / dt).floor() as usize + 1;
+    let grid = |y: &[f64]| -> Vec<f64> {
+        let v: Vec<f64> = (0..n)
+            .map(|i| interpolate(t, y, t[0] + i as f64 * dt))
+            .collect();
+        let m = mean(&v);
+        v.into_iter().map(|x| x - m).collect()
+    };
+    let (u, ym, ys) = (grid(steer), grid(measured), grid(simulated));
+    let span = n as f64 * dt;
+    let dft = |x: &[f64], f: f64| -> (f64, f64) {
+        let w = std::f64::consts::TAU * f * dt;
+        x.iter().enumerate().fold((0.0, 0.0), |(re, im), (i, v)| {
+            let (s, c) = (w * i as f64).sin_cos();
+            (re + v * c, im - v * s)
+        })
+    };
+    let nyquist = 0.5 / dt;
+    // (frequency, DFT of steer, of measured, of simulated) per bin.
+    type Bin = (f64, (f64, f64), (f64, f64), (f64, f64));
+    let bins: Vec<Bin> = (1..)
+        .map(|k| k as f64 / span)
+        .take_while(|f| *f <= 4.0_f64.min(0.8 * nyquist))
+        .filter(|f| *f >= 0.1)
+        .map(|f| (f, dft(&u, f), dft(&ym, f), dft(&ys, f)))
+        .collect();
+    let power: f64 = bins.iter().map(|b| b.1 .0 * b.1 .0 + b.1 .1 * b.1 .1).sum();
+    let mut out = Vec::new();
+    for (lo, hi) in BANDS {
+        let (mut uu, mut mr, mut mi, mut sr, mut si) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for (f, (ur, ui), (yr, yi), (zr, zi)) in &bins {
+            if *f >= lo && *f < hi {
+                uu += ur * ur + ui * ui;
+                // Y·U*
+                mr += yr * ur + yi * ui;
+                mi += yi * ur - yr * ui;
+                sr += zr * ur + zi * ui;
+                si += zi * ur - zr * ui;
+            }
+        }
+        if power <= 0.0 || uu < 0.05 * power {
+            continue;
+        }
+        let (gm, gs) = (mr.hypot(mi) / uu, sr.hypot(si) / uu);
+        let phase = (si.atan2(sr) - mi.atan2(mr)).to_degrees();
+        let phase = (phase + 540.0).rem_euclid(360.0) - 180.0;
+        out.push(BandGap {
+            f_low: lo,
+            f_high: hi,
+            gain_measured: gm,
+            gain_simulated: gs,
+            gain_error_db: 20.0 * (gs / gm).log10(),
+            phase_error_deg: phase,
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::report::parts::Window;
+    use std::f64::consts::PI;
+
+    fn grid(n: usize, dt: f64) -> Vec<f64> {
+        (0..n).map(|i| i as f64 * dt).collect()
+    }
+
+    #[test]
+    fn sprague_geers_of_scaled_and_shifted_sines() {
+        let t = grid(10_001, 1e-3);
+        let c: Vec<f64> = t.iter().map(|x| (2.0 * PI * x).sin()).collect();
+        let m: Vec<f64> = c.iter().map(|v| 1.1 * v).collect();
+        let (mag, ph, _) = sprague_geers(&t, &m, &c);
+        assert!((mag - 0.1).abs() < 1e-9 && ph.abs() < 1e-6, "{mag} {ph}");
+        let phi = 0.3;
+        let m: Vec<f64> = t.iter().map(|x| (2.0 * PI * x - phi).sin()).collect();
+        let (mag, ph, comp) = sprague_geers(&t, &m, &c);
+        assert!(
+            mag.abs() < 1e-6 && (ph - phi / PI).abs() < 1e-4,
+            "{mag} {ph}"
+        );
+        assert!((comp - ph).abs() < 1e-6);
+    }
+
+    /// A 20 s record at 100 Hz with a steer step at 5 s, and the first-order
+    /// yaw-rate response of time constant `tau` to it.
+    struct Step {
+        t: Vec<f64>,
+        steer: Vec<f64>,
+        ay: Vec<f64>,
+        speed: Vec<f64>,
+    }
+
+    impl Step {
+        fn new() -> Self {
+            let t = grid(2000, 0.01);
+            let n = t.len();
+            Self {
+                steer: t
+                    .iter()
+                    .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
+                    .collect(),
+                ay: vec![1.0; n],
+                speed: vec![20.0; n],
+                t,
+            }
+        }
+        fn response(&self, tau: f64) -> Vec<f64> {
+            self.t
+                .iter()
+                .map(|x| {
+                    if *x > 5.0 {
+                        0.2 * (1.0 - (-(x - 5.0) / tau).exp())
+                    } else {
+                        0.0
+                    }
+                })
+                .collect()
+        }
+        fn record(&self) -> Record<'_> {
+            Record {
+                t: &self.t,
+                steer: &self.steer,
+                ay: &self.ay,
+                speed: &self.speed,
+            }
+        }
+    }
+
+    /// `y` plus white Gaussian noise of standard deviation `sigma` (seeded).
+    fn noisy(y: &[f64], sigma: f64, seed: u64) -> Vec<f64> {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        y.iter()
+            .map(|v| v + sigma * crate::identify::data::gauss(&mut rng))
+            .collect()
+    }
+
+    #[test]
+    fn identical_records_have_no_gap_and_noise_is_not_a_gap() {
+        let s = Step::new();
+        let truth = s.response(0.3);
+        let g = channel_gap(Channel::YawRate, &s.record(), &truth, &truth);
+        assert_eq!(g.rms, 0.0);
+        assert!(!g.significant);
+        // White measurement noise of 0.002 rad/s: the floor is estimated from
+        // the 5 s before the input and the model is not blamed for it.
+        let measured = noisy(&truth, 0.002, 12345);
+        let g = channel_gap(Channel::YawRate, &s.record(), &measured, &truth);
+        assert!((g.noise_floor - 0.002).abs() < 0.0003, "{}", g.noise_floor);
+        assert!(!g.significant, "{}", g.verdict);
+        assert!(
+            g.lag1_autocorrelation.abs() < 0.1,
+            "{}",
+            g.lag1_autocorrelation
+        );
+    }
+
+    #[test]
+    fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
+        let s = Step::new();
+        let (measured, simulated) = (noisy(&s.response(0.2), 0.001, 7), s.response(0.5));
+        let g = channel_gap(Channel::YawRate, &s.record(), &measured, &simulated);
+        assert!(g.significant, "{}", g.verdict);
+        // The gap lies in the transient, not before the input or late.
+        let w = |window: Window| {
+            g.windows
+                .iter()
+                .find(|p| p.name == Part::Window(window))
+                .unwrap()
+                .rms
+        };
+        assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::BeforeInput));
+        assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::Later));
+        assert!(g.bias < 0.0, "a slower model lags: negative residual");
+        assert!(g.lag1_autocorrelation > 0.9);
+    }
+
+    #[test]
+    fn band_analysis_finds_a_pure_delay_as_phase_growing_with_frequency() {
+        // A chirp 0.1–4 Hz; the model is the measurement delayed by 50 ms
+        // and 10 % too strong: +0.83 dB everywhere and a phase
+        // lag of 360°·f·0.05 s.
+        let t = grid(6001, 0.005);
+        let chirp = |x: f64| (PI * (0.1 * x + 0.65 / 2.0 * x * x / 1.0 * 0.5)).sin();
+        let steer: Vec<f64> = t.iter().map(|&x| 0.02 * chirp(x)).collect();
+        let measured: Vec<f64> = steer.iter().map(|d| 10.0 * d).collect();
+        let simulated: Vec<f64> = t.iter().map(|&x| 11.0 * 0.02 * chirp(x - 0.05)).collect();
+        let b = band_gaps(&t, &steer, &measured, &simulated);
+        assert!(b.len() >= 3, "{b:?}");
+        for g in &b {
+            assert!(
+                (g.gain_error_db - 20.0 * 1.1f64.log10()).abs() < 0.3,
+                "{g:?}"
+            );
+            let fc = 0.5 * (g.f_low + g.f_high);
+            let expected = -360.0 * fc * 0.05;
+            assert!(
+                (g.phase_error_deg - expected).abs() < 0.35 * expected.abs() + 2.0,
+                "{g:?}"
+            );
+        }
+        // A step has no band analysis.
+        let s = Step::new();
+        assert!(band_gaps(&s.t, &s.steer, &s.response(0.2), &s.response(0.3)).is_empty());
+    }
+}

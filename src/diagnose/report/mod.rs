@@ -1,0 +1,277 @@
+//! The typed report of a diagnosis ([`super::diagnose`]): what
+//! `diagnosis.json` holds. Values are SI and rad unless a field names its
+//! unit; held-out errors J are dimensionless (residuals over channel
+//! scales).
+
+pub(crate) mod gap;
+pub(crate) mod parts;
+pub(crate) mod summary;
+
+use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::Observed;
+use crate::diagnose::report::gap::ChannelGap;
+pub use crate::diagnose::report::parts::{Part, PartAxis};
+use crate::identify::grouping::GroupingReport;
+use crate::tyre::Tyre;
+use serde::Serialize;
+
+/// A fitted parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParameterValue {
+    /// `effect.parameter`.
+    pub name: String,
+    /// Unit.
+    pub unit: &'static str,
+    /// Value fitted on all runs.
+    pub value: f64,
+    /// Its standard error (from the Jacobian; residual autocorrelation makes
+    /// it optimistic); NaN, written as `null`, where the runs do not pin it.
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub std_error: f64,
+    /// The value sits on one of its bounds ([`ParameterValue::bound`]).
+    pub at_bound: bool,
+    /// Which: a search bound (the data would take it further, and the
+    /// standard error says nothing about how far) or a physical limit (no
+    /// value lies beyond it).
+    pub bound: Option<Bound>,
+}
+
+/// Held-out RMS of one channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelError {
+    /// Channel.
+    pub channel: Channel,
+    /// Unit.
+    pub unit: &'static str,
+    /// Held-out RMS residual.
+    pub rms: f64,
+}
+
+/// One candidate (an effect or a combination) and its scores.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Ranked {
+    /// The effect names joined by `+`.
+    pub effect: String,
+    /// The effects.
+    pub effects: Vec<EffectKind>,
+    /// The axle characteristics refitted with them (no tyre data), with
+    /// their standard errors and the limits they stand on.
+    pub axles: Option<Vec<crate::diagnose::base::identify::AxleValue>>,
+    /// Fitted parameters.
+    pub parameters: Vec<ParameterValue>,
+    /// Held-out combined error J of the base model.
+    pub heldout_error_before: f64,
+    /// Held-out combined error J with the effect.
+    pub heldout_error_after: f64,
+    /// Held-out RMS per channel with the effect.
+    pub heldout_channels: Vec<ChannelError>,
+    /// Share of the held-out gap above noise removed, %.
+    pub reduction_percent: f64,
+    /// Combined error J of the all-run fit on all runs (in sample).
+    pub insample_error_after: f64,
+    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    pub insample_reduction_percent: f64,
+    /// Folds whose refit converged (of `folds`).
+    pub folds_converged: usize,
+    /// Folds refitted.
+    pub folds: usize,
+    /// Cross-validation that disagrees with the fit, or refits that did not
+    /// converge.
+    pub warning: Option<String>,
+    /// BIC of the all-run fit.
+    pub bic: f64,
+    /// BIC minus the base model's (negative: better).
+    pub delta_bic: f64,
+}
+
+/// A single effect not cross-validated: its fit on all runs removes so
+/// little of the gap above noise that it could not pass on held-out runs
+/// (its in-sample reduction plus the margin below the acceptance share;
+/// see the diagnosis's screening).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Screened {
+    /// The effect names joined by `+`.
+    pub effect: String,
+    /// The effects.
+    pub effects: Vec<EffectKind>,
+    /// Combined error J of the all-run fit on all runs (in sample).
+    pub insample_error_after: f64,
+    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    pub insample_reduction_percent: f64,
+    /// Share of the held-out gap an effect must remove to be accepted, %.
+    pub threshold_percent: f64,
+    /// Percentage points by which a held-out reduction may exceed the
+    /// in-sample one: screened below `threshold − margin`.
+    pub margin_percent: f64,
+    /// BIC of the all-run fit minus the base model's.
+    pub delta_bic: f64,
+}
+
+/// Effects that explain the gap about equally well.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Confounded {
+    /// The effects.
+    pub effects: Vec<EffectKind>,
+    /// Their reductions, %.
+    pub reduction_percent: Vec<f64>,
+    /// The experiment that would separate them.
+    pub separating_test: String,
+}
+
+/// The verdict.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Verdict {
+    /// Effects the evidence supports (empty: the gap is within noise or no
+    /// effect explains it).
+    pub effects: Vec<EffectKind>,
+    /// Their parameters.
+    pub parameters: Vec<ParameterValue>,
+    /// In words.
+    pub statement: String,
+    /// Channels the verdict's effects leave worse on held-out runs: the
+    /// combined error can fall while one channel's rises.
+    pub warnings: Vec<String>,
+}
+
+/// Before/after on held-out runs for one part of the data.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Shrinkage {
+    /// Channel.
+    pub channel: Channel,
+    /// All samples, a time window or a regime.
+    pub part: Part,
+    /// Samples.
+    pub samples: usize,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
+    /// Noise floor of the channel.
+    pub noise_floor: f64,
+    /// Share of the gap above noise removed, %.
+    pub reduction_percent: f64,
+}
+
+/// Noise floor and scale of a channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelNoise {
+    /// Channel.
+    pub channel: Channel,
+    /// Unit.
+    pub unit: &'static str,
+    /// Median over runs of the noise floor.
+    pub noise_floor: f64,
+    /// Residual scale used in the fits.
+    pub scale: f64,
+    /// Runs measuring it.
+    pub runs: usize,
+}
+
+/// The gap of one run with the base model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunGap {
+    /// Run.
+    pub run: String,
+    /// Per channel.
+    pub channels: Vec<ChannelGap>,
+    /// Gain and phase error per frequency band (runs with a rich input).
+    pub bands: Vec<crate::diagnose::report::gap::BandGap>,
+}
+
+/// Where the gap lies.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GapReport {
+    /// Is there a gap above noise on held-out runs.
+    pub significant: bool,
+    /// Held-out J of the base model.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// Noise floors.
+    pub noise: Vec<ChannelNoise>,
+    /// Per channel, window and regime over all runs (base model replays).
+    pub parts: Vec<Shrinkage>,
+    /// Per run.
+    pub runs: Vec<RunGap>,
+    /// The findings in words.
+    pub summary: Vec<String>,
+}
+
+/// The base model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BaseReport {
+    /// Where its tyres come from.
+    pub tyres: String,
+    /// Front tyre (all-run or rig fit).
+    pub front: Tyre,
+    /// Rear tyre.
+    pub rear: Tyre,
+    /// Where every sample of the rig data went (levels, transitions,
+    /// thinning), when the tyres were fitted to rig data.
+    pub rig_grouping: Option<GroupingReport>,
+    /// The axle characteristics identified from the runs (no tyre data):
+    /// values, standard errors, the largest correlation, the limits they
+    /// stand on and whether the base is a tyre at all.
+    pub axles: Option<crate::diagnose::base::identify::AxleIdentification>,
+}
+
+/// Everything the diagnosis found.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Diagnosis {
+    /// Campaign name.
+    pub campaign: String,
+    /// Seed of every random search.
+    pub seed: u64,
+    /// How the fits took their Jacobians (`[diagnose] derivatives`).
+    pub derivatives: crate::optim::local::Derivatives,
+    /// Runs, in order.
+    pub runs: Vec<String>,
+    /// Folds of the cross-validation.
+    pub folds: usize,
+    /// Notes on the inputs.
+    pub notes: Vec<String>,
+    /// Glitches, standstills and crawling found in the runs and what was
+    /// excluded, repaired or masked.
+    pub cleaning: crate::measured::clean::CleaningReport,
+    /// The road under each replayed piece: the bank measured or estimated
+    /// from the lateral kinematics, the grade from `ax − du/dt`
+    /// ([`crate::measured::road`]); reported, not fitted.
+    pub road: Vec<crate::measured::road::RoadGeometry>,
+    /// The base model.
+    pub base: BaseReport,
+    /// Where the gap lies.
+    pub gap: GapReport,
+    /// Single effects cross-validated, best first.
+    pub ranking: Vec<Ranked>,
+    /// Single effects screened (not cross-validated), in library order.
+    pub screened: Vec<Screened>,
+    /// Combinations tried, best first.
+    pub combinations: Vec<Ranked>,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// Confounded effects.
+    pub confounded: Vec<Confounded>,
+    /// Before and after on held-out runs, per channel, window and regime.
+    pub shrinkage: Vec<Shrinkage>,
+    /// Held-out replays (measured / base / verdict) for the figures.
+    #[serde(skip)]
+    pub overlays: Vec<Overlay>,
+}
+
+/// One run's held-out replays.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlay {
+    /// Run name.
+    pub run: String,
+    /// Times, s.
+    pub t: Vec<f64>,
+    /// Measured channels.
+    pub measured: Vec<(Channel, Vec<f64>)>,
+    /// Base model.
+    pub base: Observed,
+    /// With the verdict's effects.
+    pub after: Observed,
+    /// Base-model combined error of the run.
+    pub gap: f64,
+}

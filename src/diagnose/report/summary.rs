@@ -1,0 +1,180 @@
+//! Where the gap lies, in tables and words: the base model's gap on each
+//! run, held-out errors pooled per channel, window and regime before and
+//! after the verdict's effects, and the summary sentence of the report.
+//! Units: each channel's own (rad/s, m/s², rad).
+
+use crate::diagnose::model::channels::reduction;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
+use crate::diagnose::report::{Part, RunGap, Shrinkage};
+use crate::manoeuvre::interpolate;
+use crate::measured::MeasuredRun;
+
+/// The base model's gap on one run, at the run's own samples (the base
+/// model has no sensor effects: its history is what the sensors read).
+pub(crate) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
+    let p = Prepared::new(run, step, f64::INFINITY);
+    let history = p.replay(base);
+    let idx = crate::diagnose::report::gap::scored_samples(run);
+    let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
+    let t = pick(&run.t);
+    let yaw_rate: Vec<f64> = t
+        .iter()
+        .map(|&t| interpolate(&history.t, &history.yaw_rate, t))
+        .collect();
+    RunGap {
+        run: run.path.display().to_string(),
+        channels: run_gap(run, &history),
+        bands: crate::diagnose::report::gap::band_gaps(
+            &t,
+            &pick(&run.steer),
+            &pick(&run.yaw_rate),
+            &yaw_rate,
+        ),
+    }
+}
+
+/// Held-out RMS before/after pooled over runs per channel, window and regime.
+pub(crate) fn parts_table(
+    runs: &[MeasuredRun],
+    prepared: &[Prepared],
+    before: &[Observed],
+    after: &[Observed],
+    floors: &[f64; 3],
+) -> Vec<Shrinkage> {
+    // (channel, part) → (Σ before², Σ after², n)
+    let mut acc: Vec<(Channel, Part, f64, f64, usize)> = Vec::new();
+    for (i, p) in prepared.iter().enumerate() {
+        let run = &runs[i];
+        let at = |v: &[f64]| -> Vec<f64> {
+            p.times.iter().map(|&t| interpolate(&run.t, v, t)).collect()
+        };
+        let steer = at(&run.steer);
+        let speed = at(&run.speed);
+        let ay = at(&regime_acceleration(run));
+        let rec = Record {
+            t: &p.times,
+            steer: &steer,
+            ay: &ay,
+            speed: &speed,
+        };
+        for (ch, m) in &p.measured {
+            let gb = channel_gap(*ch, &rec, m, observed_channel(&before[i], *ch));
+            let ga = channel_gap(*ch, &rec, m, observed_channel(&after[i], *ch));
+            let all_b = PartGap {
+                name: Part::All,
+                samples: m.len(),
+                rms: gb.rms,
+                bias: gb.bias,
+            };
+            let all_a = PartGap {
+                rms: ga.rms,
+                ..all_b.clone()
+            };
+            let pb = std::iter::once(&all_b)
+                .chain(gb.windows.iter())
+                .chain(gb.regimes.iter());
+            let pa = std::iter::once(&all_a)
+                .chain(ga.windows.iter())
+                .chain(ga.regimes.iter());
+            for (b, a) in pb.zip(pa) {
+                let n = b.samples as f64;
+                let part = b.name;
+                match acc.iter_mut().find(|x| x.0 == *ch && x.1 == part) {
+                    Some(x) => {
+                        x.2 += b.rms * b.rms * n;
+                        x.3 += a.rms * a.rms * n;
+                        x.4 += b.samples;
+                    }
+                    None => acc.push((*ch, part, b.rms * b.rms * n, a.rms * a.rms * n, b.samples)),
+                }
+            }
+        }
+    }
+    acc.into_iter()
+        .filter(|x| x.4 > 0)
+        .map(|(ch, part, b2, a2, n)| {
+            let (before, after) = ((b2 / n as f64).sqrt(), (a2 / n as f64).sqrt());
+            let nf = floors[ch.index()];
+            Shrinkage {
+                channel: ch,
+                part,
+                samples: n,
+                before,
+                after,
+                noise_floor: nf,
+                reduction_percent: reduction(before, after, nf),
+            }
+        })
+        .collect()
+}
+
+/// The gap in words: per channel, where it is largest and where the model is
+/// right.
+pub(crate) fn gap_summary(
+    runs: &[RunGap],
+    parts: &[Shrinkage],
+    significant: bool,
+    j0: f64,
+    jn: f64,
+) -> Vec<String> {
+    let mut out = vec![if significant {
+        format!("held-out error {j0:.3} against a noise level of {jn:.3}: the base model has a significant gap")
+    } else {
+        format!("held-out error {j0:.3} against a noise level of {jn:.3}: no significant gap")
+    }];
+    for ch in Channel::ALL {
+        let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
+        let Some(all) = rows.iter().find(|p| p.part == Part::All) else {
+            continue;
+        };
+        let nf = all.noise_floor;
+        let wrong: Vec<String> = rows
+            .iter()
+            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before > 3.0 * nf)
+            .map(|p| format!("{} ({:.3} {})", p.part, p.before, ch.unit()))
+            .collect();
+        let right: Vec<String> = rows
+            .iter()
+            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before <= 3.0 * nf)
+            .map(|p| p.part.label())
+            .collect();
+        let significant_runs = runs
+            .iter()
+            .filter(|r| r.channels.iter().any(|c| c.channel == ch && c.significant))
+            .count();
+        out.push(format!(
+            "{}: RMS {:.4} {} (noise floor {:.4}); significant in {} of {} runs; wrong in: {}; right in: {}",
+            ch.name(),
+            all.before,
+            ch.unit(),
+            nf,
+            significant_runs,
+            runs.len(),
+            if wrong.is_empty() { "nowhere".into() } else { wrong.join(", ") },
+            if right.is_empty() { "nowhere".into() } else { right.join(", ") },
+        ));
+    }
+    for r in runs {
+        for b in &r.bands {
+            if b.gain_error_db.abs() > 1.0 || b.phase_error_deg.abs() > 10.0 {
+                out.push(format!(
+                    "{}: yaw-rate response {:.2}–{:.2} Hz off by {:+.1} dB, {:+.0}°",
+                    r.run, b.f_low, b.f_high, b.gain_error_db, b.phase_error_deg
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// A channel of an observation.
+pub fn observed_channel(o: &Observed, c: Channel) -> &[f64] {
+    match c {
+        Channel::YawRate => &o.yaw_rate,
+        Channel::Ay => &o.ay,
+        Channel::Beta => &o.beta,
+    }
+}

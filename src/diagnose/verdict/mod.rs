@@ -1,0 +1,11 @@
+//! How the verdict is chosen: every candidate fitted on all runs and
+//! scored on held-out runs (`score`: the folds, the held-out gap above
+//! noise and an effect's reduction of it), the singles screened before
+//! their cross-validation (`screening`), and the search for the set of
+//! effects that explains the gap with its acceptance rules (`search`).
+//! Units: SI, rad; held-out errors J dimensionless.
+
+pub(crate) mod candidate;
+pub(crate) mod score;
+pub(crate) mod screening;
+pub(crate) mod search;

@@ -1,0 +1,354 @@
+//! Scoring a candidate: its fit on all runs and its errors on held-out
+//! runs, each fold refitted from the all-run optimum; the held-out gap
+//! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
+//! The folds: run i in fold i mod k, with k the number of runs up to
+//! [`MAX_FOLDS`] (leave-one-run-out for up to that many runs).
+
+use crate::diagnose::base::identify::axle_grid;
+use crate::diagnose::base::Bases;
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{EffectKind, EffectSet};
+use crate::diagnose::fit::layout::with_effects;
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::refit::{refit, training_rows};
+use crate::diagnose::fit::{fit, swarm, FitOutcome, Polish};
+use crate::diagnose::model::channels::ChannelErrors;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Observed;
+use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
+use crate::diagnose::verdict::candidate::Setting;
+use crate::optim::local::{Derivatives, Residuals};
+use crate::optim::pso::{Inertia, Pso, Stall};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// Largest number of folds.
+pub const MAX_FOLDS: usize = 8;
+
+/// Everything scored for one candidate.
+#[derive(Clone)]
+pub(crate) struct Scored {
+    pub(crate) kinds: Vec<EffectKind>,
+    pub(crate) full: FitOutcome,
+    /// Errors of the all-run fit on all runs.
+    pub(crate) insample: ChannelErrors,
+    pub(crate) heldout: ChannelErrors,
+    pub(crate) fold_params: Vec<Vec<f64>>,
+    pub(crate) folds_converged: usize,
+}
+
+pub(crate) struct Context<'a> {
+    pub(crate) runs: Vec<Prepared>,
+    pub(crate) folds: Vec<Vec<usize>>,
+    pub(crate) scales: [f64; 3],
+    pub(crate) bases: &'a Bases,
+    pub(crate) pso: Pso,
+    pub(crate) progress: Option<&'a AtomicUsize>,
+    /// Where the time goes, when the diagnosis is timed.
+    pub(crate) timing: Option<&'a Recorder>,
+    /// How the fits take their Jacobians.
+    pub(crate) derivatives: Derivatives,
+}
+
+/// A candidate fitted on all runs, not yet cross-validated: its
+/// setting, its fit (with the optimum's linearisation the fold refits
+/// start from) and its errors on all runs.
+pub(crate) struct Fitted<'a> {
+    setting: Setting<'a>,
+    pub(crate) full: FitOutcome,
+    pub(crate) insample: ChannelErrors,
+}
+
+impl Fitted<'_> {
+    /// The candidate as scored without its folds: no held-out errors (a
+    /// screened candidate, whose all-run fit the greedy additions use).
+    pub(crate) fn unscored(&self) -> Scored {
+        Scored {
+            kinds: self.setting.kinds.clone(),
+            full: FitOutcome {
+                linear: None,
+                ..self.full.clone()
+            },
+            insample: self.insample,
+            heldout: ChannelErrors::default(),
+            fold_params: Vec::new(),
+            folds_converged: 0,
+        }
+    }
+}
+
+impl<'a> Context<'a> {
+    pub(crate) fn tick(&self) {
+        if let Some(p) = self.progress {
+            p.fetch_add(1, Ordering::Relaxed);
+        }
+    }
+
+    /// The parameter vector of `kinds` switched off (axle characteristics
+    /// and roll dynamics at the base's).
+    pub(crate) fn off(&self, kinds: &[EffectKind]) -> Vec<f64> {
+        Setting {
+            base: self.bases,
+            kinds: kinds.to_vec(),
+            fixed: EffectSet::default(),
+        }
+        .off()
+    }
+
+    pub(crate) fn training(&self, fold: usize) -> Vec<&Prepared> {
+        (0..self.runs.len())
+            .filter(|i| !self.folds[fold].contains(i))
+            .map(|i| &self.runs[i])
+            .collect()
+    }
+
+    /// Fits a candidate on all runs ([`Context::fit_all`]) and scores it on
+    /// every fold ([`Context::cross_validate`]).
+    pub(crate) fn score(
+        &self,
+        kinds: Vec<EffectKind>,
+        fixed: EffectSet,
+        starts: &[Vec<f64>],
+        salt: u64,
+    ) -> Scored {
+        self.cross_validate(&self.fit_all(kinds, fixed, starts, salt))
+    }
+
+    /// Fits a candidate on all runs (PSO from `start`, then
+    /// Levenberg–Marquardt) and scores the fit on them. A combination
+    /// comes with `starts` (its members' single fits, the set it extends
+    /// with the added effect off, the added effect's own axles): the swarm
+    /// then starts from the best of them, and the polish from the lowest
+    /// cost found ([`Context::start`]).
+    pub(crate) fn fit_all(
+        &self,
+        kinds: Vec<EffectKind>,
+        fixed: EffectSet,
+        starts: &[Vec<f64>],
+        salt: u64,
+    ) -> Fitted<'a> {
+        let s = Setting {
+            base: self.bases,
+            kinds,
+            fixed,
+        };
+        let stamps = self.timing.map(|_| Stamps::default());
+        let problem = Problem::new(
+            |p: &[f64]| {
+                if let Some(st) = &stamps {
+                    st.tick();
+                }
+                with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p)
+            },
+            self.runs.iter().collect(),
+            self.scales,
+            s.bounds(),
+        )
+        .with_layout(s.layout(&self.bases.all), self.derivatives);
+        let pso = Pso {
+            seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
+            ..self.pso
+        };
+        let t0 = Instant::now();
+        let start = self.start(&problem, &s, starts, &pso);
+        let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
+        let full = fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt);
+        if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+            rec.add(Phase::CandidateSwarm, mark.0 - t0, mark.1);
+            let phases = [
+                Phase::CandidatePolish,
+                Phase::CandidateJacobian,
+                Phase::CandidateCurvature,
+            ];
+            let n = full.params.len();
+            let jacobian = problem.jacobian_evaluations(n);
+            record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
+        }
+        drop(problem);
+        let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
+        let mut insample = ChannelErrors::default();
+        for r in &self.runs {
+            insample.add(&r.errors(&all_model));
+        }
+        self.tick();
+        Fitted {
+            setting: s,
+            full,
+            insample,
+        }
+    }
+
+    /// Scores a candidate fitted on all runs on every fold, refitted from
+    /// the all-run optimum ([`refit`]: its linearisation first,
+    /// Levenberg–Marquardt within a budget when that does not converge;
+    /// non-converged folds are counted and warned about).
+    pub(crate) fn cross_validate(&self, fitted: &Fitted) -> Scored {
+        let (s, full) = (&fitted.setting, &fitted.full);
+        if let (Some(rec), false) = (self.timing, s.kinds.is_empty()) {
+            rec.candidate(true);
+        }
+        // Folds in parallel too: a candidate whose fit is slow (a steering
+        // compliance solves for the wheel's slip at every force) would
+        // otherwise leave one core idle at the end of the singles.
+        let per_fold: Vec<(ChannelErrors, Vec<f64>, bool)> = (0..self.folds.len())
+            .into_par_iter()
+            .map(|k| {
+                let t0 = Instant::now();
+                let base = &self.bases.folds[k];
+                let stamps = self.timing.map(|_| Stamps::default());
+                let problem = Problem::new(
+                    |p: &[f64]| {
+                        if let Some(st) = &stamps {
+                            st.tick();
+                        }
+                        with_effects(base, &s.fixed, &s.kinds, s.axle(), p)
+                    },
+                    self.training(k),
+                    self.scales,
+                    s.bounds(),
+                )
+                .with_layout(s.layout(base), self.derivatives);
+                let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
+                let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
+                let mut e = ChannelErrors::default();
+                for &i in &self.folds[k] {
+                    e.add(&self.runs[i].errors(&model));
+                }
+                self.tick();
+                if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+                    rec.add(Phase::CandidateFolds, t0.elapsed(), st.count());
+                }
+                (e, f.params, f.converged)
+            })
+            .collect();
+        let mut heldout = ChannelErrors::default();
+        for (e, _, _) in &per_fold {
+            heldout.add(e);
+        }
+        // The quadratic model served the folds: a kept candidate need not
+        // hold its Jacobian and second derivatives (rows × n² reals).
+        Scored {
+            heldout,
+            folds_converged: per_fold.iter().filter(|f| f.2).count(),
+            fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
+            ..fitted.unscored()
+        }
+    }
+
+    /// The start of a candidate's polish: the lowest cost of `starts` and
+    /// of a swarm over the effect parameters from the best of them (from
+    /// the effect off without them; the axle characteristics held, one
+    /// particle at that point). Where the axle characteristics are fitted, the start must be
+    /// consistent with the candidate rather than with the base: the axle
+    /// grid is rerun at the swarm's effect values and, for an effect that
+    /// takes a measured input, at the input as logged ([`as_logged`]);
+    /// the lowest cost of them all starts the polish.
+    fn start<F: Fn(&[f64]) -> crate::diagnose::model::Augmented + Sync>(
+        &self,
+        problem: &Problem<F>,
+        s: &Setting,
+        starts: &[Vec<f64>],
+        pso: &Pso,
+    ) -> Vec<f64> {
+        let held = if s.axle() { 3 } else { 0 };
+        let mut tried: Vec<(f64, Vec<f64>)> = starts
+            .iter()
+            .map(|p| (problem.cost(p), p.clone()))
+            .collect();
+        // A single's swarm starts from the effect off; a combination's is
+        // a fresh swarm from its best start, so that it is not bound to
+        // the basin its members' fits were in.
+        let from = tried
+            .iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or_else(|| s.off(), |(_, p)| p.clone());
+        let (p, _) = swarm(problem, &from, pso, held);
+        tried.push((problem.cost(&p), p));
+        // A single's axles are regridded at its effect values where its
+        // swarm found them worth something (at the base's axles they
+        // lower the cost by REGRID_GAIN; below that the grid would be the
+        // base's own again), and at the input as logged; a combination's
+        // starts already carry each member's axles.
+        if let (true, [kind]) = (s.axle(), &s.kinds[..]) {
+            let off = problem.cost(&s.off());
+            let (cost, p) = tried
+                .iter()
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .expect("the swarm's best is tried");
+            let gained = (*cost < (1.0 - REGRID_GAIN) * off).then(|| p[held..].to_vec());
+            for tail in gained.into_iter().chain(as_logged(*kind)) {
+                tried.extend(axle_grid(problem, &tail).into_iter().take(1));
+            }
+        }
+        tried
+            .into_iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or_else(|| s.off(), |(_, p)| p)
+    }
+
+    /// Held-out replays of every run with a candidate's fold parameters.
+    pub(crate) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
+        let mut out = vec![Observed::default(); self.runs.len()];
+        for (k, fold) in self.folds.iter().enumerate() {
+            let model = match sc {
+                Some(sc) => with_effects(
+                    &self.bases.folds[k],
+                    fixed,
+                    &sc.kinds,
+                    self.bases.axle.is_some(),
+                    &sc.fold_params[k],
+                ),
+                None => self.bases.folds[k].clone(),
+            };
+            for &i in fold {
+                let r = &self.runs[i];
+                out[i] = r.observe(&model);
+            }
+        }
+        out
+    }
+}
+
+/// Share of the cost a single's swarm must remove at the base's axles
+/// for its axles to be regridded at its values.
+const REGRID_GAIN: f64 = 0.01;
+
+/// The values of an effect that takes a measured input as logged (the
+/// bank channel at scale 1), if it takes one: the start that keeps the
+/// joint axle fit out of the basin of the model without the input.
+fn as_logged(kind: EffectKind) -> Option<Vec<f64>> {
+    (kind == EffectKind::BankProfile).then(|| vec![1.0, 0.0])
+}
+
+/// The swarm of a fit only hands its best to Levenberg–Marquardt, which
+/// needs a start in the optimum's basin, not the optimum: once its best has
+/// gained less than this over these iterations the swarm has settled (most
+/// candidates are not the answer and their swarms settle within a few
+/// iterations; the answer's keeps improving and runs on).
+const SWARM_STALL: Stall = Stall {
+    iterations: 3,
+    tolerance: 1e-3,
+};
+
+/// The runs prepared for replay (sampled on the replay grid, residual
+/// times picked), the cross-validation folds (run i in fold i mod k) and
+/// the swarm every effect fit starts with.
+pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
+    let set = &c.settings;
+    let runs = Prepared::campaign_runs(c);
+    let k = runs.len().min(MAX_FOLDS);
+    let folds: Vec<Vec<usize>> = (0..k)
+        .map(|f| (0..runs.len()).filter(|i| i % k == f).collect())
+        .collect();
+    let pso = Pso {
+        particles: set.particles,
+        iterations: set.iterations,
+        inertia: Inertia::LinearDecreasing,
+        seed: set.seed,
+        parallel: false,
+        stall: Some(SWARM_STALL),
+        ..Pso::default()
+    };
+    (runs, folds, pso)
+}

@@ -1,0 +1,165 @@
+//! Screening the single effects before their cross-validation: a
+//! candidate whose fit on all runs removes too little of the in-sample gap
+//! above noise to pass on held-out runs is not refitted fold by fold.
+//!
+//! The rule. Every single effect is fitted on all runs first; its in-sample
+//! reduction `R_in = 1 − G_in,after/G_in,before` (the gap above noise of
+//! the all-run fits, see [`crate::diagnose::verdict::score`]) costs nothing more. A
+//! candidate is screened when `R_in + `[`SCREEN_MARGIN`]` < `[`ACCEPT`]
+//! (in percent). Its held-out reduction `R_out` is then below the
+//! acceptance share as long as `R_out ≤ R_in + SCREEN_MARGIN`: the fold
+//! refits see fewer runs than the all-run fit, so an effect removes less
+//! of the gap on the runs it did not see than on those it was fitted to,
+//! and the base model, refitted on the same folds, loses about as much on
+//! them. `R_out − R_in` stays within a few points on every campaign of
+//! the confusion matrices and on the racing log (the largest measured is
+//! in the book's table); the margin is several times that, and the test
+//! of the screening checks it on every candidate.
+//!
+//! Why a screened candidate can never be the verdict (nor change it): the
+//! search ([`crate::diagnose::verdict::search`]) reads a single's held-out score in three
+//! places. (1) A look-alike, which can start another search and is reported
+//! as confounded, must remove [`ACCEPT`] on held-out runs: a screened one
+//! cannot. (2) The search starts from the best single, or a simpler one
+//! within [`PARSIMONY`] noise levels of it: a screened candidate whose
+//! least possible held-out error ([`Baseline::heldout_floor`] of
+//! `R_in + SCREEN_MARGIN`) could reach that window is cross-validated
+//! after all. (3) Without a verdict, the statement names the best single:
+//! likewise. A screened single still joins sets in the greedy additions,
+//! from its all-run fit (which is all they use of it). Without a
+//! significant gap nothing is searched, and every candidate below the
+//! threshold stays screened.
+
+use crate::diagnose::effects::{joined, EffectKind, EffectSet};
+use crate::diagnose::report::Screened;
+use crate::diagnose::verdict::score::{Context, Fitted, Scored};
+use crate::diagnose::verdict::search::{Baseline, ACCEPT, PARSIMONY};
+use rayon::prelude::*;
+
+/// Percentage points by which a candidate's held-out reduction may exceed
+/// its in-sample one and the screening still hold.
+pub const SCREEN_MARGIN: f64 = 10.0;
+
+/// A single effect fitted on all runs: cross-validated, or screened (its
+/// all-run fit kept, with the linearisation its folds would start from).
+enum Slot<'a> {
+    Scored(Scored),
+    Screened(Fitted<'a>, f64),
+}
+
+/// The single effects fitted on all runs and cross-validated unless
+/// screened (`screening` on): every single as scored (a screened one
+/// without held-out errors), the cross-validated ones ordered by held-out
+/// error, the screened ones (indices), and their report rows.
+pub(crate) fn singles(
+    ctx: &Context,
+    effects: &[EffectKind],
+    base: &Baseline,
+    screening: bool,
+    significant: bool,
+) -> (Vec<Scored>, Vec<usize>, Vec<usize>, Vec<Screened>) {
+    let screens = screening && base.insample_gap();
+    let mut slots: Vec<Slot> = effects
+        .par_iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let f = ctx.fit_all(vec![*e], EffectSet::default(), &[], i as u64 + 1);
+            let inside = base.insample_reduction(&f.insample);
+            if screens && inside + SCREEN_MARGIN < 100.0 * ACCEPT {
+                Slot::Screened(f, inside)
+            } else {
+                Slot::Scored(ctx.cross_validate(&f))
+            }
+        })
+        .collect();
+    if significant {
+        recheck(ctx, base, &mut slots);
+    }
+    let mut screened_rows = Vec::new();
+    let mut screened = Vec::new();
+    let mut singles = Vec::with_capacity(slots.len());
+    for (i, slot) in slots.into_iter().enumerate() {
+        match slot {
+            Slot::Scored(sc) => singles.push(sc),
+            Slot::Screened(f, inside) => {
+                screened.push(i);
+                let sc = f.unscored();
+                screened_rows.push(row(&sc, inside, base));
+                singles.push(sc);
+                if let Some(rec) = ctx.timing {
+                    rec.candidate(false);
+                }
+                // The folds it was spared count as done.
+                for _ in 0..ctx.folds.len() {
+                    ctx.tick();
+                }
+            }
+        }
+    }
+    let scales = ctx.scales;
+    let mut order: Vec<usize> = (0..singles.len())
+        .filter(|i| !screened.contains(i))
+        .collect();
+    order.sort_by(|&a, &b| {
+        singles[a]
+            .heldout
+            .combined(&scales)
+            .total_cmp(&singles[b].heldout.combined(&scales))
+    });
+    (singles, order, screened, screened_rows)
+}
+
+/// Cross-validates the screened candidates the search could read: those
+/// whose least possible held-out error reaches the best cross-validated
+/// one's (every candidate, and the non-degenerate ones widened by
+/// [`PARSIMONY`] noise levels). A candidate so added can only lower the
+/// best: one pass suffices.
+fn recheck(ctx: &Context, base: &Baseline, slots: &mut [Slot]) {
+    let scales = ctx.scales;
+    let (mut best, mut best_usable) = (f64::INFINITY, f64::INFINITY);
+    for slot in slots.iter() {
+        if let Slot::Scored(sc) = slot {
+            let j = sc.heldout.combined(&scales);
+            best = best.min(j);
+            if base.degenerate(sc).is_none() {
+                best_usable = best_usable.min(j);
+            }
+        }
+    }
+    let window = best_usable + PARSIMONY * base.jn;
+    let reach: Vec<usize> = slots
+        .iter()
+        .enumerate()
+        .filter_map(|(i, slot)| match slot {
+            Slot::Screened(f, inside) => {
+                let floor = base.heldout_floor(inside + SCREEN_MARGIN);
+                let usable = base.degenerate(&f.unscored()).is_none();
+                (floor <= best || (usable && floor <= window)).then_some(i)
+            }
+            Slot::Scored(_) => None,
+        })
+        .collect();
+    let scored: Vec<(usize, Scored)> = reach
+        .par_iter()
+        .filter_map(|&i| match &slots[i] {
+            Slot::Screened(f, _) => Some((i, ctx.cross_validate(f))),
+            Slot::Scored(_) => None,
+        })
+        .collect();
+    for (i, sc) in scored {
+        slots[i] = Slot::Scored(sc);
+    }
+}
+
+/// A screened candidate as a row of the report.
+fn row(sc: &Scored, inside: f64, base: &Baseline) -> Screened {
+    Screened {
+        effect: joined(&sc.kinds, "+"),
+        effects: sc.kinds.clone(),
+        insample_error_after: sc.insample.combined(&base.scales()),
+        insample_reduction_percent: inside,
+        threshold_percent: 100.0 * ACCEPT,
+        margin_percent: SCREEN_MARGIN,
+        delta_bic: base.delta_bic(sc),
+    }
+}

@@ -1,0 +1,302 @@
+//! The virtual proving ground: campaigns generated from a richer truth model
+//! with chosen effects switched on, measurement noise, and a tyre model
+//! different from the one the diagnosis fits (model-form error, as with a
+//! real car).
+//!
+//! The truth: Wang & Liang's compact sedan on the bundled UniTire tyre
+//! (225/55R17 class), its rig data from the same tyre (loads 2.5–7 kN,
+//! ±12°, noise 1 % of the force + 20 N); the diagnosis fits PAC89 to that
+//! rig. Three programmes ([`Programme`]):
+//! - handling (100 Hz, 1 s before every input): step steers at 40, 60,
+//!   100, 100 (high level), 120 km/h and a right-hand step at 80 km/h
+//!   (GB/T 6323, 0.15 s rise), a ramp steer toward the limit at 80 km/h, a
+//!   0.1–3 Hz sweep at 80 km/h. Every run starts 3 s before its first
+//!   sample from straight running, so the recorded part starts settled (on
+//!   a bank too). Noise: yaw rate 0.003 rad/s, ay 0.05 m/s², β 0.002 rad
+//!   (Gaussian, seeded);
+//! - a banked oval and a road course driven like a racing car, logged at
+//!   25 Hz with `ax` and `bank` channels and no sideslip (`programme`'s
+//!   doc). Noise as above, ax 0.05 m/s², bank 0.002 rad. On these the
+//!   truth can switch on the longitudinal and bank-profile effects; without
+//!   `bank_profile` the truth drives a flat track whose logger still
+//!   records the banking (a control: the channel alone is no effect);
+//! - a slow banked oval ([`Programme::SlowOval`]) with another car (the
+//!   Putnam log's light racing car with a little downforce of its own,
+//!   `truth_vehicle`, `truth_downforce`), logged at 25 Hz with `ax`,
+//!   `beta` and `bank` and no `ay`, no rig data (the diagnosis identifies
+//!   the axles from the runs), its runs cut into 20 s pieces.
+//!
+//! The steer path ([`EffectKind::SteerPath`]) acts on the logged steer:
+//! the truth replays the path's output, the logger records the command.
+//!
+//! A cornering-stiffness or friction truth means the car's tyres differ
+//! from the rig's: the rig data are generated without it. Units: SI, rad.
+//!
+//! Two truths ([`Truth`]): the augmented model of the diagnosis itself with
+//! effects switched on (the default), or the independent four-wheel model
+//! of `proving_ground` with its own Magic-Formula tyre and effects
+//! of its own, whose campaign's `[roll]` settings deliberately differ from
+//! the truth's roll (the diagnosis is not handed the truth).
+//!
+//! Files: the two truths and their effect values (`truth`); the
+//! programmes (`programme`), their laps (`laps`) and the open-loop driver
+//! who drives them (`driver`); the generated campaign as the diagnosis
+//! reads it and as `handling synth` writes it (`campaign`).
+
+pub mod four_wheel;
+
+use crate::diagnose::effects::{EffectKind, EffectSet, RollModel};
+use crate::diagnose::model::{Augmented, Drive};
+use crate::error::ParamError;
+use crate::identify::data::gauss;
+use crate::measured::MeasuredRun;
+use crate::proving_ground::four_wheel::{FourWheel, FourWheelEffects, FourWheelVehicle};
+use crate::tyre::{SlipState, Tyre, TyreModel};
+use crate::vehicle::{Vehicle, VehicleModel};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::path::PathBuf;
+
+mod campaign;
+mod driver;
+mod laps;
+mod programme;
+mod truth;
+
+use driver::LoggedInputs;
+pub use programme::Programme;
+use programme::{handling_programme, logged_runs, truth_downforce, truth_vehicle};
+use truth::{four_wheel_campaign_roll, four_wheel_effects, truth_tyre};
+pub use truth::{truth_values, Truth};
+
+/// Noise standard deviations of the synthetic measurements.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Noise {
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+    /// Lateral acceleration, m/s².
+    pub ay: f64,
+    /// Sideslip, rad.
+    pub beta: f64,
+}
+
+impl Default for Noise {
+    fn default() -> Self {
+        Self {
+            yaw_rate: 0.003,
+            ay: 0.05,
+            beta: 0.002,
+        }
+    }
+}
+
+/// What to generate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SynthSpec {
+    /// Effects of the truth with their parameter values.
+    pub effects: Vec<(EffectKind, Vec<f64>)>,
+    /// Noise seed.
+    pub seed: u64,
+    /// Measurement noise.
+    pub noise: Noise,
+    /// What the driver does.
+    pub programme: Programme,
+}
+
+/// A generated campaign.
+#[derive(Debug, Clone)]
+pub struct Synthetic {
+    /// Vehicle.
+    pub vehicle: Vehicle,
+    /// Rig samples: fz, alpha, fy.
+    pub(crate) rig: Vec<[f64; 3]>,
+    /// Runs with their names.
+    pub runs: Vec<MeasuredRun>,
+    /// The specification.
+    spec: SynthSpec,
+    /// The model that played the car.
+    truth: Truth,
+    /// The roll the campaign file states (for the four-wheel truth it
+    /// differs from the truth's).
+    roll: RollModel,
+}
+
+/// Generates a campaign with the augmented truth.
+pub fn generate(spec: &SynthSpec) -> Synthetic {
+    generate_with(spec, Truth::Augmented).expect("every effect is one of the augmented truth")
+}
+
+/// Generates a campaign with `truth`; an error when `truth` lacks one of
+/// the effects asked for or cannot drive the programme.
+pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
+    truth.drives(spec.programme)?;
+    let vehicle = truth_vehicle(spec.programme);
+    let tyre = truth_tyre();
+    let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
+    base.options.effects.aero_load = truth_downforce(spec.programme);
+    let mut augmented = Augmented::new(base.clone(), 1.0);
+    let mut effects = EffectSet::default();
+    for (k, p) in &spec.effects {
+        effects.set(*k, p);
+    }
+    augmented.effects = effects;
+    let four_wheel = FourWheel {
+        vehicle: FourWheelVehicle::sedan(),
+        effects: match truth {
+            Truth::FourWheel => four_wheel_effects(&spec.effects)?,
+            Truth::Augmented => FourWheelEffects::default(),
+        },
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
+    let n = spec.noise;
+    let runs = if let Some(logged) = logged_runs(spec.programme, &base) {
+        logged
+            .iter()
+            .map(|p| logged_run(&augmented, spec.programme, p, &mut rng, n))
+            .collect()
+    } else {
+        handling_programme(&base)
+            .into_iter()
+            .map(|(name, m)| {
+                let times: Vec<f64> = (0..)
+                    .map(|i| 3.0 + 0.01 * i as f64)
+                    .take_while(|t| *t <= m.end_time() + 1e-9)
+                    .collect();
+                let (yaw_rate, ay, beta) = match truth {
+                    Truth::Augmented => {
+                        // The steer path (if on) filters the manoeuvre's
+                        // steer as sampled on the 1 ms grid.
+                        let drive = Drive::new(&m, 1e-3);
+                        let drive = augmented
+                            .steered(&drive, &drive.stage_times(), drive.steer_samples())
+                            .into_owned();
+                        let response = augmented.simulate(&drive, [0.0; 6]);
+                        let o = augmented.observe(&response, &times);
+                        (o.yaw_rate, o.ay, o.beta)
+                    }
+                    Truth::FourWheel => {
+                        let response = four_wheel.simulate(&m, 1e-3);
+                        let o = four_wheel.observe(&response, &times);
+                        (o.yaw_rate, o.ay, o.beta)
+                    }
+                };
+                let mut noisy = |v: &[f64], s: f64| with_noise(v, s, &mut rng);
+                MeasuredRun {
+                    path: PathBuf::from(format!("{name}.csv")),
+                    speed: times.iter().map(|&t| m.speed(t)).collect(),
+                    steer: times.iter().map(|&t| m.steer(t)).collect(),
+                    yaw_rate: noisy(&yaw_rate, n.yaw_rate),
+                    ay: Some(noisy(&ay, n.ay)),
+                    beta: Some(noisy(&beta, n.beta)),
+                    roll: None,
+                    bank: None,
+                    ax: None,
+                    masked: Vec::new(),
+                    t: times,
+                }
+            })
+            .collect()
+    };
+    Ok(finish(
+        spec,
+        truth,
+        vehicle,
+        &tyre,
+        runs,
+        &four_wheel,
+        &mut rng,
+    ))
+}
+
+/// The campaign from its runs: the rig data (noise after the runs') and
+/// the roll the campaign file states.
+fn finish(
+    spec: &SynthSpec,
+    truth: Truth,
+    vehicle: Vehicle,
+    tyre: &Tyre,
+    runs: Vec<MeasuredRun>,
+    four_wheel: &FourWheel,
+    rng: &mut ChaCha8Rng,
+) -> Synthetic {
+    let mut rig = Vec::new();
+    let rig_tyre = four_wheel.vehicle.tyre;
+    // The slow oval has no rig data (its base model identifies the axles).
+    let loads: &[f64] = if spec.programme.has_rig() {
+        &[2500.0, 4000.0, 5500.0, 7000.0]
+    } else {
+        &[]
+    };
+    for &fz in loads {
+        for k in -240..=240 {
+            let alpha = (k as f64 * 0.05).to_radians();
+            let fy = match truth {
+                Truth::Augmented => tyre.lateral_force(&SlipState::lateral(alpha, fz)),
+                Truth::FourWheel => rig_tyre.lateral_force(alpha, fz, 0.0, 1.0, 1.0),
+            };
+            let sigma = 0.01 * fy.abs() + 20.0;
+            rig.push([fz, alpha, fy + sigma * gauss(rng)]);
+        }
+    }
+    Synthetic {
+        vehicle,
+        rig,
+        runs,
+        spec: spec.clone(),
+        truth,
+        roll: match truth {
+            Truth::Augmented => RollModel::default(),
+            Truth::FourWheel => four_wheel_campaign_roll(),
+        },
+    }
+}
+
+/// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.
+const AX_NOISE: f64 = 0.05;
+const BANK_NOISE: f64 = 0.002;
+
+/// `v` plus Gaussian noise of standard deviation `s`, drawn in order.
+fn with_noise(v: &[f64], s: f64, rng: &mut ChaCha8Rng) -> Vec<f64> {
+    v.iter().map(|x| x + s * gauss(rng)).collect()
+}
+
+/// One run of a logged programme on the augmented truth, with noise: the
+/// channels `programme` logs.
+fn logged_run(
+    truth: &Augmented,
+    programme: Programme,
+    p: &LoggedInputs,
+    rng: &mut ChaCha8Rng,
+    noise: Noise,
+) -> MeasuredRun {
+    // The whole run in one replay, standstill included: the vehicle model
+    // holds speeds below its minimum at that minimum, so a parked car on a
+    // banking stands on its tyres' slip (the accelerometer reads the
+    // bank's g·sin θ) as a real one does.
+    let m = p.manoeuvre();
+    let drive = Drive::new(&m, 1e-3).with_channels(&p.t, Some(&p.ax), Some(&p.bank));
+    let drive = truth.steered(&drive, &p.t, &p.steer);
+    let x0 = truth.initial_state(&drive, 0.0, 0.0);
+    let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
+    let (yaw_rate, ay, beta) = (o.yaw_rate, o.ay, o.beta);
+    let mut noisy = |v: &[f64], s: f64| with_noise(v, s, rng);
+    // Drawn in this order (the existing programmes' noise unchanged).
+    let yaw_rate = noisy(&yaw_rate, noise.yaw_rate);
+    let ay = noisy(&ay, noise.ay);
+    let ax = noisy(&p.ax, AX_NOISE);
+    let bank = noisy(&p.bank, BANK_NOISE);
+    let beta = programme.logs_beta().then(|| noisy(&beta, noise.beta));
+    MeasuredRun {
+        path: PathBuf::from(format!("{}.csv", p.name)),
+        speed: p.speed.clone(),
+        steer: p.steer.clone(),
+        yaw_rate,
+        ay: programme.logs_ay().then_some(ay),
+        ax: Some(ax),
+        bank: Some(bank),
+        beta,
+        roll: None,
+        masked: Vec::new(),
+        t: p.t.clone(),
+    }
+}

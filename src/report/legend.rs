@@ -5,11 +5,11 @@
 //! value.
 
 use super::colour::colormap;
-use super::series::{palette, Series, Shape, Style, NO_VALUE};
+use super::series::{palette, Series, Shape, Style, LABEL_PX, NO_VALUE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-const FONT: (&str, u32) = ("sans-serif", super::plot::LABEL_PX);
+const FONT: (&str, u32) = ("sans-serif", LABEL_PX);
 const ROW: i32 = 20;
 
 /// Draws the key of `series` into `side`, from the top.

@@ -10,6 +10,7 @@
 //! as a reader writes numbers ([`tick_label`]: `-30`, `10000`, `0.25`).
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
+pub use super::series::LABEL_PX;
 pub use super::series::{palette, Marker, Series, Shape, Style, INK};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
@@ -68,9 +69,6 @@ impl Panel {
         }
     }
 }
-
-/// Size of the axis labels and key text, px.
-pub const LABEL_PX: u32 = 13;
 
 /// Width of the text column of a printed report (A4 with 20 mm margins),
 /// mm: the width a figure is scaled to when printed.

@@ -143,6 +143,9 @@ pub fn palette(i: usize) -> RGBColor {
     P[i % P.len()]
 }
 
+/// Size of the axis labels and key text, px (the panels' and the key's).
+pub const LABEL_PX: u32 = 13;
+
 /// Black: the colour of a fitted model's line drawn over measured points
 /// coloured by condition (every other index wraps over the ten colours).
 pub const INK: usize = 10;

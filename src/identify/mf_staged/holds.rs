@@ -28,7 +28,7 @@
 //! secondary terms (camber, pressure, load variations) at 0, the
 //! primary ones at a passenger tyre's values.
 
-use super::params::Need;
+use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
 use crate::optim::bounded::BoundedLm;
@@ -125,6 +125,18 @@ impl fmt::Display for HoldReason {
             ),
         }
     }
+}
+
+/// Why parameter `need` cannot be fitted with `have` levels.
+pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<HoldReason> {
+    if need == HELD {
+        return Some(HoldReason::ByDesign);
+    }
+    let want = [need.loads, need.cambers, need.pressures];
+    want.iter()
+        .zip(have)
+        .any(|(w, h)| usize::from(*w) > h)
+        .then_some(HoldReason::Levels { need: want, have })
 }
 
 /// The Magic Formula 6.1 defaults of Pacejka (2012) as MFeval 4.0's

@@ -3,7 +3,6 @@
 //! be identifiable, the sign-blind ones, and the physical bounds the
 //! data-started fits keep (ISO-W signs, as in the `.tir`).
 
-use super::holds::HoldReason;
 use super::{MfRow, PURE_TOL};
 use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
@@ -179,7 +178,7 @@ const P2: Need = n(1, 1, 2);
 const P3: Need = n(1, 1, 3);
 const P2C2: Need = n(1, 2, 2);
 /// Never fitted (see the module notes on `QBZ9`).
-const HELD: Need = n(u8::MAX, u8::MAX, u8::MAX);
+pub(super) const HELD: Need = n(u8::MAX, u8::MAX, u8::MAX);
 
 const PURE_FX: &[(&str, Need)] = &[
     ("PCX1", ANY),
@@ -336,18 +335,6 @@ const MY: &[(&str, Need)] = &[
 /// reported positive (and `RVY5`, `RVY6`, which flip together, with `RVY5`
 /// positive).
 pub(super) const EVEN: [&str; 7] = ["PCX1", "PCY1", "RCX1", "RCY1", "RBX2", "RBY2", "RVY4"];
-
-/// Why parameter `need` cannot be fitted with `have` levels.
-pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<HoldReason> {
-    if need == HELD {
-        return Some(HoldReason::ByDesign);
-    }
-    let want = [need.loads, need.cambers, need.pressures];
-    want.iter()
-        .zip(have)
-        .any(|(w, h)| usize::from(*w) > h)
-        .then_some(HoldReason::Levels { need: want, have })
-}
 
 pub(super) fn names_of(free: &[(&'static str, Need)]) -> Vec<&'static str> {
     free.iter().map(|(k, _)| *k).collect()

@@ -4,9 +4,9 @@
 //! value (`holds.rs`), and the standard errors and identifiability
 //! warnings at the optimum (`uncertainty.rs`).
 
-use super::holds::{hold_undetermined, HoldReason, Holding, StageFit};
+use super::holds::{held_reason, hold_undetermined, HoldReason, Holding, StageFit};
 use super::paper_lm::paper_lm;
-use super::params::{held_reason, names_of, physical_bounds, Need, Stage, ANY};
+use super::params::{names_of, physical_bounds, Need, Stage, ANY};
 use super::problem::{unbounded, Derivatives, StageProblem};
 use super::start::{data_start, level_counts};
 use super::uncertainty::uncertainty;
@@ -288,8 +288,9 @@ pub(super) fn run_stage(
                 .iter()
                 .find(|h| h.0 == *name)
                 .map(|h| h.2.clone())
-                .or_else(|| held_reason(*need, have))
-                .or_else(|| run.holding.given(name).map(|_| HoldReason::Given));
+                // The user's value, even where the levels would hold it too.
+                .or_else(|| run.holding.given(name).map(|_| HoldReason::Given))
+                .or_else(|| held_reason(*need, have));
             StageParameter {
                 name,
                 value,

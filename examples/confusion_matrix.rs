@@ -120,7 +120,7 @@ fn main() -> anyhow::Result<()> {
                 g.runs = runs;
                 let listed = report.glitches.len();
                 g.cleaning = report;
-                let v = diagnose(&g, None)?.verdict.effects;
+                let v = diagnose(&g, None)?.verdict.effects().to_vec();
                 Some((
                     if v.is_empty() {
                         "—".into()
@@ -142,16 +142,16 @@ fn main() -> anyhow::Result<()> {
             let after = d
                 .ranking
                 .iter()
-                .find(|r| r.effects == d.verdict.effects)
+                .find(|r| r.effects == d.verdict.effects())
                 .or(d
                     .combinations
                     .iter()
-                    .find(|r| r.effects == d.verdict.effects))
+                    .find(|r| r.effects == d.verdict.effects()))
                 .map_or(d.gap.heldout_error, |r| r.heldout_error_after);
             let truth_params: Vec<f64> = spec.effects.iter().flat_map(|(_, p)| p.clone()).collect();
             let fitted: Vec<String> = d
                 .verdict
-                .parameters
+                .parameters()
                 .iter()
                 .map(|p| {
                     format!(
@@ -164,10 +164,10 @@ fn main() -> anyhow::Result<()> {
             print!(
                 "| {} | {seed} | {} | {} | {:.2} → {:.2} ({:.2}) | {:.0} | {} ({:?}) | {:.1} |",
                 s.name(),
-                if d.verdict.effects.is_empty() {
+                if d.verdict.effects().is_empty() {
                     "—".into()
                 } else {
-                    joined(&d.verdict.effects, "+")
+                    joined(d.verdict.effects(), "+")
                 },
                 conf.join(", "),
                 d.gap.heldout_error,
@@ -176,7 +176,7 @@ fn main() -> anyhow::Result<()> {
                 d.ranking
                     .iter()
                     .chain(&d.combinations)
-                    .find(|r| r.effects == d.verdict.effects)
+                    .find(|r| r.effects == d.verdict.effects())
                     .map_or(0.0, |r| r.reduction_percent),
                 fitted.join(", "),
                 truth_params,

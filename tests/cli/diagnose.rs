@@ -435,21 +435,25 @@ fn no_effect_gives_an_empty_verdict_and_a_pair_is_found_together() {
     use handling::diagnose::effects::EffectKind;
     // Only measurement noise and the tyre's model-form error: no gap.
     let d = diagnose_synthetic(&[], 4);
-    assert!(d.verdict.effects.is_empty(), "{}", d.verdict.statement);
+    assert!(d.verdict.effects().is_empty(), "{}", d.verdict.statement());
     assert!(!d.gap.significant);
-    assert!(d.verdict.statement.starts_with("no significant gap"));
+    assert_eq!(
+        d.verdict.kind(),
+        handling::diagnose::VerdictKind::NoSignificantGap
+    );
+    assert!(d.verdict.statement().starts_with("no significant gap"));
     // A tyre lag and sensor offsets together: each alone explains less than
     // the acceptance share, the pair nearly all of it.
     let d = diagnose_synthetic(&[EffectKind::RelaxationLength, EffectKind::SensorBias], 4);
-    let mut found = d.verdict.effects.clone();
+    let mut found = d.verdict.effects().to_vec();
     found.sort();
     let mut withheld = [EffectKind::RelaxationLength, EffectKind::SensorBias];
     withheld.sort();
-    assert_eq!(found, withheld, "{}", d.verdict.statement);
+    assert_eq!(found, withheld, "{}", d.verdict.statement());
     let pair = d
         .combinations
         .iter()
-        .find(|r| r.effects == d.verdict.effects)
+        .find(|r| r.effects == d.verdict.effects())
         .unwrap();
     assert!(pair.reduction_percent > 70.0, "{}", pair.reduction_percent);
     let sigma = pair
@@ -468,16 +472,17 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
     // separates them.
     let d = diagnose_synthetic(&[EffectKind::SteeringCompliance], 5);
     assert_eq!(
-        d.verdict.effects,
+        d.verdict.effects(),
         [EffectKind::SteeringCompliance],
         "{}",
-        d.verdict.statement
+        d.verdict.statement()
     );
     let group = &d.confounded[0];
     assert_eq!(group.effects[0], EffectKind::SteeringCompliance);
     assert!(group.effects.contains(&EffectKind::CorneringStiffness));
-    assert!(group.separating_test.contains("cornering_stiffness:"));
-    let c = d.verdict.parameters[0].value;
+    let test = handling::diagnose::report::words::separating_test(group);
+    assert!(test.contains("cornering_stiffness:"), "{test}");
+    let c = d.verdict.parameters()[0].value;
     assert!((c - 0.003).abs() < 0.0003, "{c} rad/kN");
     // Reproducible: the same seed gives the same numbers (compared as text:
     // an unidentifiable parameter's standard error is NaN).
@@ -714,13 +719,30 @@ fn a_steer_in_another_unit_or_sign_is_caught_against_the_yaw_rate() {
         linear_tyre(dir.path());
         dir
     };
-    // In degrees: diagnosed, with a note that names the likely slip.
+    // In degrees: refused, naming the file and the likely slip, as
+    // `metrics` refuses the same file (by the same rule and message; it
+    // takes a 5 m wheelbase where the campaign gives the vehicle's).
     let dir = folder("1.1459");
-    let (stdout, _) = diagnose(dir.path());
+    let e = campaign_err(dir.path());
+    let slip = "is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians";
     assert!(
-        stdout.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
-            && stdout.contains("is `steer` in degrees"),
-        "{stdout}"
+        e.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
+            && e.contains(slip),
+        "{e}"
+    );
+    let a = dir.path().join("runs/a.csv");
+    let o = run(&["metrics", a.to_str().unwrap()]);
+    assert!(
+        !o.status.success(),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let m = stderr(&o);
+    assert!(
+        m.contains("a.csv: the yaw rate is ")
+            && m.contains("× smaller than a neutral car's for this steer")
+            && m.contains(slip),
+        "{m}"
     );
     // The other sign: refused, naming the file and the convention.
     let dir = folder("-0.02");

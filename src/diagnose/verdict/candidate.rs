@@ -114,15 +114,7 @@ pub(crate) fn parameter_values(
         .chain(roll.into_iter().flatten())
         .enumerate()
         .map(|(i, (group, q))| {
-            let value = f.params[skip + i];
-            ParameterValue {
-                name: format!("{group}.{}", q.name),
-                unit: q.unit,
-                value,
-                std_error: f.std_errors[skip + i],
-                at_bound: q.bound_at(value).is_some(),
-                bound: q.bound_at(value),
-            }
+            ParameterValue::of(group, q, f.params[skip + i], f.std_errors[skip + i])
         })
         .collect()
 }

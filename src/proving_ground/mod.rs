@@ -26,8 +26,11 @@
 //!   `beta` and `bank` and no `ay`, no rig data (the diagnosis identifies
 //!   the axles from the runs), its runs cut into 20 s pieces.
 //!
-//! The steer path ([`EffectKind::SteerPath`]) acts on the logged steer:
-//! the truth replays the path's output, the logger records the command.
+//! The augmented truth is the diagnosis's model with each effect of the
+//! specification applied on the base model's effects
+//! ([`EffectKind::apply`]), as a fit applies them. The steer path
+//! ([`EffectKind::SteerPath`]) acts on the logged steer: the truth replays
+//! the path's output, the logger records the command.
 //!
 //! A cornering-stiffness or friction truth means the car's tyres differ
 //! from the rig's: the rig data are generated without it. Units: SI, rad.
@@ -45,7 +48,7 @@
 
 pub mod four_wheel;
 
-use crate::diagnose::effects::{EffectKind, EffectSet, RollModel};
+use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::{Augmented, Drive};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
@@ -135,11 +138,9 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
     base.options.effects.aero_load = truth_downforce(spec.programme);
     let mut augmented = Augmented::new(base.clone(), 1.0);
-    let mut effects = EffectSet::default();
     for (k, p) in &spec.effects {
-        effects.set(*k, p);
+        k.apply(p, augmented.effects_mut());
     }
-    augmented.effects = effects;
     let four_wheel = FourWheel {
         vehicle: FourWheelVehicle::sedan(),
         effects: match truth {

@@ -30,7 +30,7 @@
 //! significant gap nothing is searched, and every candidate below the
 //! threshold stays screened.
 
-use crate::diagnose::effects::{joined, EffectKind, EffectSet};
+use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::Screened;
 use crate::diagnose::verdict::score::{Context, Fitted, Scored};
 use crate::diagnose::verdict::search::{Baseline, ACCEPT, PARSIMONY};
@@ -63,7 +63,7 @@ pub(crate) fn singles(
         .par_iter()
         .enumerate()
         .map(|(i, e)| {
-            let f = ctx.fit_all(vec![*e], EffectSet::default(), &[], i as u64 + 1);
+            let f = ctx.fit_all(vec![*e], &[], i as u64 + 1);
             let inside = base.insample_reduction(&f.insample);
             if screens && inside + SCREEN_MARGIN < 100.0 * ACCEPT {
                 Slot::Screened(f, inside)

@@ -228,7 +228,6 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
 }
 
 mod cross_validation;
-mod derivatives;
 mod diagnose;
 mod identify;
 mod magic_formula;
@@ -243,7 +242,6 @@ mod real_logs;
 mod report_html;
 mod rig_layouts;
 mod scenarios;
-mod screening;
 mod shards;
 mod sweeps;
 

@@ -179,11 +179,41 @@ impl EffectKind {
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|e| e.name() == name)
     }
+
+    /// The salt of this effect's random searches: the FNV-1a hash of its
+    /// name, so that an effect's fits are the same whatever its place in
+    /// the library or in a campaign's list (adding an effect changes no
+    /// other effect's result).
+    pub fn seed(self) -> u64 {
+        self.name().bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        })
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_effects_seed_is_its_names_fnv1a_hash_and_no_two_share_one() {
+        // FNV-1a of "a" and of "foobar" (the published test vectors of
+        // Fowler, Noll and Vo), computed the way `seed` hashes a name.
+        let fnv = |s: &str| {
+            s.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+                (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+            })
+        };
+        assert_eq!(fnv("a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(fnv("foobar"), 0x8594_4171_f739_67e8);
+        for k in EffectKind::ALL {
+            assert_eq!(k.seed(), fnv(k.name()), "{}", k.name());
+        }
+        let mut seeds: Vec<u64> = EffectKind::ALL.iter().map(|k| k.seed()).collect();
+        seeds.sort_unstable();
+        seeds.dedup();
+        assert_eq!(seeds.len(), EffectKind::ALL.len());
+    }
 
     #[test]
     fn a_bound_is_named_for_what_it_is() {

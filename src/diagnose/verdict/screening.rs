@@ -61,9 +61,10 @@ pub(crate) fn singles(
     let screens = screening && base.insample_gap();
     let mut slots: Vec<Slot> = effects
         .par_iter()
-        .enumerate()
-        .map(|(i, e)| {
-            let f = ctx.fit_all(vec![*e], &[], i as u64 + 1);
+        .map(|e| {
+            // Seeded by the effect's name: its fit does not depend on
+            // which other effects the campaign lists.
+            let f = ctx.fit_all(vec![*e], &[], e.seed());
             let inside = base.insample_reduction(&f.insample);
             if screens && inside + SCREEN_MARGIN < 100.0 * ACCEPT {
                 Slot::Screened(f, inside)

@@ -363,11 +363,6 @@ fn idle(sc: &Scored, layout: &Layout) -> bool {
     })
 }
 
-/// An effect's place in the library: the seed of a set it is added to.
-fn library_index(e: EffectKind) -> u64 {
-    EffectKind::ALL.iter().position(|&k| k == e).unwrap_or(0) as u64
-}
-
 /// Greedy additions from `start`: the effect that best closes what is left,
 /// tried jointly with every remaining effect, while each removes
 /// [`ACCEPT`] of what is left and lowers the BIC. Every set tried goes into
@@ -397,8 +392,9 @@ fn greedy(
             .filter(|e| !current.kinds.contains(e))
             .collect();
         let cur = &current;
-        // Each set's seed is that of the effect added (not its place in the
-        // ranking, which screening shortens).
+        // Each set's seed is that of the effect added (its name's, not its
+        // place in the ranking, which screening shortens), one apart from
+        // its single fit's.
         let mut scored: Vec<Scored> = tries
             .par_iter()
             .map(|e| {
@@ -413,7 +409,7 @@ fn greedy(
                 let mut own = members.clone();
                 let axles = layout.axles();
                 own[axles.clone()].copy_from_slice(&single.full.params[axles]);
-                ctx.score(kinds, &[members, extended, own], 1000 + library_index(*e))
+                ctx.score(kinds, &[members, extended, own], e.seed().wrapping_add(1))
             })
             .collect();
         scored.sort_by(|a, b| {

@@ -32,8 +32,8 @@
 //! acceleration `u·(r − r₀)` within [`STRAIGHT_LATERAL`]; steer within
 //! [`STRAIGHT_STEER`] of the run's straight-line steer (the median steer
 //! of its samples that pass the speed and yaw tests, which carries the
-//! steer sensor's own offset); `|ax|` within [`STRAIGHT_AX`] when `ax` is
-//! logged. Stretches that pass, cut by [`STRAIGHT_TRIM`] at each end (the
+//! steer sensor's own offset); `|ax|` within [`STRAIGHT_AX`] (without an
+//! `ax` column, the running median's slope across one window). Stretches that pass, cut by [`STRAIGHT_TRIM`] at each end (the
 //! corner's exit and the next one's entry) and at least
 //! [`STRAIGHT_SECONDS`] long, are candidates; a candidate whose yaw rate's
 //! running median has a standard deviation above
@@ -102,7 +102,7 @@ pub const STRAIGHT_LATERAL: f64 = 0.2;
 /// Straight: largest steer from the straight-line steer, rad (0.3°, about
 /// 5° at a steering wheel over a 16:1 ratio).
 pub const STRAIGHT_STEER: f64 = 0.005;
-/// Straight: largest |ax|, m/s².
+/// Straight: largest |ax| (or |du/dt| without `ax`), m/s².
 pub const STRAIGHT_AX: f64 = 0.5;
 /// Straight: largest standard deviation of the yaw rate, rad/s.
 pub const STRAIGHT_YAW_VARIATION: f64 = 0.003;

@@ -30,7 +30,8 @@ pub struct Criteria {
     /// Largest |steer − the run's straight-line steer| (running median),
     /// rad.
     pub straight_steer: f64,
-    /// Largest |ax| (running median; when `ax` is logged), m/s².
+    /// Largest |ax| (running median; without `ax`, the slope of the
+    /// speed's), m/s².
     pub straight_ax: f64,
     /// Largest standard deviation of the yaw rate's running median over a
     /// straight (weaving), rad/s.
@@ -334,13 +335,16 @@ impl ChannelCalibration {
             (&self.straight, SpanKind::Straight),
         ] {
             if let Some(p) = p.filter(|p| !p.consistent) {
-                let d = digits(p.std_error);
+                // The spans' own precision, not the pooled error the drift
+                // inflated.
+                let ratio = p.chi2 / p.dof as f64;
+                let d = digits(p.std_error / ratio.sqrt().max(1.0)).min(4);
+                let r = if ratio < 100.0 { 1 } else { 0 };
                 out.push_str(&format!(
-                    "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {:.1})",
+                    "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {ratio:.r$})",
                     kind.words(2),
                     p.least,
                     p.greatest,
-                    p.chi2 / p.dof as f64
                 ));
             }
         }

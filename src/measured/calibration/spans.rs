@@ -61,6 +61,24 @@ pub(super) fn smoothed(run: &MeasuredRun, x: &[f64], window: f64) -> Vec<f64> {
     out
 }
 
+/// The speed's derivative without `ax`: central differences of its running
+/// median `u` across one window (one-sided at the pieces' ends).
+fn slope(t: &[f64], u: &[f64], window: f64) -> Vec<f64> {
+    let mut out = Vec::with_capacity(u.len());
+    for (lo, hi) in gapless(t) {
+        for i in lo..hi {
+            let a = lo + t[lo..i].partition_point(|&s| s < t[i] - 0.5 * window);
+            let b = i + t[i..hi].partition_point(|&s| s <= t[i] + 0.5 * window) - 1;
+            out.push(if t[b] > t[a] {
+                (u[b] - u[a]) / (t[b] - t[a])
+            } else {
+                0.0
+            });
+        }
+    }
+    out
+}
+
 /// The maximal stretches where `ok` holds, within the run's gapless
 /// pieces, cut by `trim` seconds at each end and at least `seconds` long
 /// after the cut.
@@ -115,7 +133,10 @@ pub(super) fn straights(
     let u = smoothed(run, &run.speed, w);
     let r = smoothed(run, &run.yaw_rate, w);
     let d = smoothed(run, &run.steer, w);
-    let ax = run.ax.as_ref().map(|a| smoothed(run, a, w));
+    let ax = match &run.ax {
+        Some(a) => smoothed(run, a, w),
+        None => slope(&run.t, &u, w),
+    };
     let turning = |i: usize| {
         let dr = r[i] - yaw_reference;
         u[i] < c.straight_speed
@@ -127,9 +148,7 @@ pub(super) fn straights(
     };
     let ok: Vec<bool> = (0..u.len())
         .map(|i| {
-            !turning(i)
-                && (d[i] - d0).abs() <= c.straight_steer
-                && ax.as_ref().is_none_or(|a| a[i].abs() <= c.straight_ax)
+            !turning(i) && (d[i] - d0).abs() <= c.straight_steer && ax[i].abs() <= c.straight_ax
         })
         .collect();
     let mut kept = Vec::new();

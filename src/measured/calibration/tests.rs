@@ -167,6 +167,22 @@ fn white_noise_offsets_come_back_from_standstills_and_straights() {
 }
 
 #[test]
+fn without_ax_the_speeds_slope_keeps_the_ramps_out_of_the_straights() {
+    let mut r = run(100.0, &lap, SENSORS, 2);
+    r.ax = None;
+    let c = calibrate(&[r]);
+    let straights: Vec<&CalibrationSpan> = c
+        .spans
+        .iter()
+        .filter(|s| s.kind == SpanKind::Straight)
+        .collect();
+    assert_eq!(straights.len(), 2, "{:?} {:?}", c.spans, c.rejected);
+    // The ramp to 15 m/s ends at 25 s, the stop starts at 75 s.
+    assert!(straights[0].t_start > 25.0 && straights[1].t_end < 75.0);
+    assert!(c.rejected.is_empty(), "{:?}", c.rejected);
+}
+
+#[test]
 fn autocorrelated_noise_gets_an_honest_standard_error() {
     // AR(1) noise with φ = 0.98 (a correlation time of 99 samples, 1 s):
     // over 100 parked runs the errors of the means, in standard errors,

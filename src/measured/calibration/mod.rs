@@ -104,8 +104,10 @@ pub const STRAIGHT_LATERAL: f64 = 0.2;
 pub const STRAIGHT_STEER: f64 = 0.005;
 /// Straight: largest |ax| (or |du/dt| without `ax`), m/s².
 pub const STRAIGHT_AX: f64 = 0.5;
-/// Straight: largest standard deviation of the yaw rate, rad/s.
-pub const STRAIGHT_YAW_VARIATION: f64 = 0.003;
+/// Straight: largest standard deviation of the yaw rate's running median,
+/// rad/s (a driver's corrections on a straight: ±0.006 rad/s in a racing
+/// car's pit lane at 9 m/s, a standard deviation of 0.0032).
+pub const STRAIGHT_YAW_VARIATION: f64 = 0.004;
 /// Straight: largest speed change, share of its mean.
 pub const STRAIGHT_SPEED_VARIATION: f64 = 0.1;
 /// Cut from each end of a straight, s.

@@ -390,6 +390,7 @@ fn run(
         folds: ctx.folds.len(),
         notes,
         cleaning: c.cleaning.clone(),
+        calibration: c.calibration.clone(),
         road: c
             .runs
             .iter()

@@ -133,6 +133,8 @@ impl DiagnoseReport {
         )];
         out.extend(d.notes.iter().map(|n| format!("  note: {n}")));
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
+        let calibration = d.calibration.lines().into_iter();
+        out.extend(calibration.map(|l| format!("  calibration: {l}")));
         out.extend(
             d.road
                 .iter()

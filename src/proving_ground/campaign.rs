@@ -10,6 +10,7 @@ use super::Synthetic;
 use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
 use crate::diagnose::effects::EffectKind;
 use crate::identify::data::RigData;
+use crate::measured::calibration::calibrate;
 use crate::measured::clean::{clean_runs, segments, CleanSettings};
 use crate::proving_ground::four_wheel::FourWheelVehicle;
 use crate::tyre::ModelName;
@@ -38,9 +39,11 @@ impl Synthetic {
     /// logged programmes' runs are cleaned as `diagnose` cleans runs read
     /// from files (the oval's standstill is left out); the handling
     /// programme's runs are moving and clean throughout and go in as
-    /// generated.
+    /// generated. Every programme's runs are calibrated as generated, before
+    /// any cleaning, as `diagnose` calibrates runs read from files.
     pub fn campaign(&self, effects: Vec<EffectKind>, settings: DiagnoseSettings) -> Campaign {
         let source = PathBuf::from(format!("synthetic campaign {}", self.name()));
+        let calibration = calibrate(&self.runs);
         let (runs, cleaning) = if self.spec.programme.logged() {
             clean_runs(
                 self.runs.clone(),
@@ -82,6 +85,7 @@ impl Synthetic {
             effects,
             notes: Vec::new(),
             cleaning,
+            calibration,
         }
     }
 

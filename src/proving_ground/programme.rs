@@ -25,7 +25,8 @@
 //!   `ay` (the Putnam log's channels), no rig data;
 //!   [`Programme::SlowOvalNoBeta`] the same without its `beta` column, and
 //!   [`Programme::SlowOvalEstimatedBeta`] with a `beta` as a state
-//!   estimator gives it (smooth, with a drifting error; `estimator`).
+//!   estimator gives it (smooth, with a drifting error; `estimator`),
+//!   both with runs of 100 s (the first 100 s of the slow oval's runs).
 //! - [`Programme::SedanWinding`] and [`Programme::RacingRearSteer`]: the
 //!   analogues of real logs (`analogues`), driven by a closed-loop driver
 //!   on winding tracks: a heavy sedan by hand with a logger's offsets, and
@@ -187,6 +188,10 @@ impl std::str::FromStr for Programme {
 }
 /// Duration of each slow-oval run, s.
 const SLOW_OVAL_RUN: f64 = 200.0;
+/// Duration of each run of the slow oval's variants, s: half the slow
+/// oval's (every run keeps a lap or more, the stop on the banking
+/// included), so that their diagnosis costs half as much.
+const SLOW_OVAL_VARIANT_RUN: f64 = 100.0;
 /// Piece length of the slow-oval campaign, s.
 const SLOW_OVAL_SEGMENT: f64 = 20.0;
 
@@ -339,7 +344,12 @@ pub(super) fn logged_runs(programme: Programme, model: &VehicleModel) -> Option<
             ]
             .into_iter()
             .map(|(name, u0, legs): (String, f64, Vec<Leg>)| {
-                (name, u0, fill_to(legs, u0, SLOW_OVAL_RUN))
+                let run = if programme == Programme::SlowOval {
+                    SLOW_OVAL_RUN
+                } else {
+                    SLOW_OVAL_VARIANT_RUN
+                };
+                (name, u0, fill_to(legs, u0, run))
             })
             .collect()
         }

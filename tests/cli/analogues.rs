@@ -192,17 +192,21 @@ fn the_slow_oval_variants_differ_only_in_their_sideslip() {
     assert_eq!(h_plain, "t,speed,steer,yaw_rate,ax,bank,beta");
     assert_eq!(h_none, "t,speed,steer,yaw_rate,ax,bank");
     assert_eq!(h_est, h_plain);
-    // The same seed: the same truth and the same noise on every other
-    // channel.
+    // The variants' runs are the slow oval's first 100 s.
+    let last = |c: &std::collections::HashMap<String, Vec<f64>>| c["t"][c["t"].len() - 1];
+    assert!((last(&plain) - 200.0).abs() < 1e-6 && (last(&none) - 100.0).abs() < 1e-6);
+    // The same seed: the same truth and, on the first run, the same noise
+    // on every other channel.
     for ch in ["speed", "steer", "yaw_rate", "ax", "bank"] {
-        assert_eq!(plain[ch], none[ch], "{ch}");
-        assert_eq!(plain[ch], est[ch], "{ch}");
+        assert_eq!(none[ch], est[ch], "{ch}");
     }
     // The plain sideslip is the truth with white noise of 0.002 rad; the
     // estimated one scatters ten times less from sample to sample, yet
     // misses the truth by several mrad (its difference from the plain one
-    // is that error and the plain noise together).
-    let (b_plain, b_est) = (&plain["beta"], &est["beta"]);
+    // is that error and the plain noise together). Compared over the
+    // first 95 s, where the two programmes drive the same legs.
+    let n = 95 * 25;
+    let (b_plain, b_est) = (&plain["beta"][..n], &est["beta"][..n]);
     let s_plain = scatter(b_plain);
     let s_est = scatter(b_est);
     assert!((0.0017..0.0023).contains(&s_plain), "plain scatter {s_plain}");
@@ -210,7 +214,7 @@ fn the_slow_oval_variants_differ_only_in_their_sideslip() {
     let apart = rms(b_est.iter().zip(b_plain).map(|(e, p)| e - p));
     let error = (apart * apart - 0.002f64.powi(2)).max(0.0).sqrt();
     assert!(error > 10.0 * s_est, "error {error}, scatter {s_est}");
-    assert!((0.002..0.01).contains(&error), "error {error}");
+    assert!((0.002..0.015).contains(&error), "error {error}");
     // Both campaigns state the slow oval's settings.
     for c in [&dir.path().join("none"), &dir.path().join("est")] {
         let toml = fs::read_to_string(c.join("vehicle.toml")).unwrap();

@@ -80,10 +80,14 @@ impl Truth {
         match self {
             // The handling programme (steps and sweeps at constant speed on
             // a flat road, no ax or bank channel) cannot show the
-            // longitudinal and bank-profile effects; the logged ones can.
-            Truth::Augmented => {
-                (programme.logged() || kind.needs() == Needs::Nothing).then(|| truth_values(kind))
+            // longitudinal and bank-profile effects; the logged ones can
+            // (the bank profile where they log the bank).
+            Truth::Augmented => match kind.needs() {
+                Needs::Nothing => true,
+                Needs::LongitudinalAcceleration => programme.logged(),
+                Needs::BankChannel => programme.logs_bank(),
             }
+            .then(|| truth_values(kind)),
             Truth::FourWheel if programme.logged() => None,
             Truth::FourWheel => four_wheel(kind).map(|(values, _)| values.to_vec()),
         }

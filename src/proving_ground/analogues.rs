@@ -387,9 +387,7 @@ fn logged(plan: &Plan, run: &Run, truth: &Augmented, rng: &mut ChaCha8Rng) -> Me
         .iter()
         .zip(&seen.beta)
         .zip(&seen.yaw_rate)
-        .map(|((&k, b), r)| {
-            b + lg.sideslip_ahead * r / speed[k].max(1.0) + b_beta + noise(n_beta)
-        })
+        .map(|((&k, b), r)| b + lg.sideslip_ahead * r / speed[k].max(1.0) + b_beta + noise(n_beta))
         .collect();
     let speed_log: Vec<f64> = idx
         .iter()
@@ -437,7 +435,7 @@ fn logged(plan: &Plan, run: &Run, truth: &Augmented, rng: &mut ChaCha8Rng) -> Me
 /// set it (`roll_steer` switched on replaces the built-in one).
 pub(super) fn build_in(programme: Programme, truth: &mut Augmented, asked: &[EffectKind]) {
     if programme == Programme::RacingRearSteer {
-        truth.roll = RACING_ROLL;
+        truth.effects_mut().roll = RACING_ROLL;
         if !asked.contains(&EffectKind::RollSteer) {
             truth.effects_mut().roll_steer = [0.0, REAR_ROLL_STEER];
         }
@@ -539,12 +537,16 @@ mod tests {
     fn the_racing_truth_steers_its_rear_with_roll_and_the_sedan_has_none() {
         let racing = truth(Programme::RacingRearSteer);
         assert_eq!(racing.effects().roll_steer, [0.0, REAR_ROLL_STEER]);
-        assert_eq!(racing.roll, RACING_ROLL);
+        assert_eq!(racing.effects().roll, RACING_ROLL);
         let mut asked = truth(Programme::SedanWinding);
         assert_eq!(asked.effects().roll_steer, [0.0; 2]);
         // Roll steer asked for replaces the built-in one.
         asked.effects_mut().roll_steer = [-0.1, 0.0];
-        build_in(Programme::RacingRearSteer, &mut asked, &[EffectKind::RollSteer]);
+        build_in(
+            Programme::RacingRearSteer,
+            &mut asked,
+            &[EffectKind::RollSteer],
+        );
         assert_eq!(asked.effects().roll_steer, [-0.1, 0.0]);
     }
 }

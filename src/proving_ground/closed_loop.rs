@@ -21,7 +21,7 @@
 //! corrections.
 //!
 //! **The car** is the truth's augmented model with its effects
-//! ([`Augmented::model`]), integrated by classical RK4 at a fixed step
+//! ([`Augmented::model`], whose effects its right-hand side applies), integrated by classical RK4 at a fixed step
 //! together with its position and heading on the ground (`Ẋ = u·cos ψ −
 //! v·sin ψ`, `Ẏ = u·sin ψ + v·cos ψ`, `ψ̇ = r`, `v = u·tan β`); the road
 //! wheels' steer is held over each step, the speed (prescribed in time)
@@ -130,7 +130,9 @@ pub(super) struct ClosedLoop {
     pub history: TimeHistory,
     /// Steering-wheel angle at the history's times, rad.
     pub hand: Vec<f64>,
-    /// Largest distance of the rear axle from the centre line, m.
+    /// Largest distance of the rear axle from the centre line, m (the
+    /// tests hold the driver to the track with it).
+    #[cfg_attr(not(test), allow(dead_code))]
     pub largest_offset: f64,
 }
 
@@ -169,8 +171,8 @@ pub(super) fn drive(
     ax: &[f64],
     h: f64,
 ) -> ClosedLoop {
-    let (model, friction) = truth.model();
-    let path = truth.steer_path();
+    let (model, friction) = (&truth.model, truth.friction);
+    let path = truth.effects().steer_path;
     let understeer = model.understeer_gradient();
     let (wheelbase, b) = (model.vehicle.wheelbase(), model.vehicle.b);
     let n = speed.len();
@@ -234,12 +236,22 @@ pub(super) fn drive(
             x[..6].fill(0.0);
             record(&mut history, t, &x, &inputs(t), &Outputs::default());
         } else {
-            let (k1, o) = rates(&model, &x, &inputs(t), &mut seeds[0]);
+            let (k1, o) = rates(model, &x, &inputs(t), &mut seeds[0]);
             record(&mut history, t, &x, &inputs(t), &o);
             let shift = |d: &Full, f: f64| -> Full { std::array::from_fn(|i| x[i] + f * d[i]) };
-            let (k2, _) = rates(&model, &shift(&k1, 0.5 * h), &inputs(t + 0.5 * h), &mut seeds[1]);
-            let (k3, _) = rates(&model, &shift(&k2, 0.5 * h), &inputs(t + 0.5 * h), &mut seeds[2]);
-            let (k4, _) = rates(&model, &shift(&k3, h), &inputs(t + h), &mut seeds[3]);
+            let (k2, _) = rates(
+                model,
+                &shift(&k1, 0.5 * h),
+                &inputs(t + 0.5 * h),
+                &mut seeds[1],
+            );
+            let (k3, _) = rates(
+                model,
+                &shift(&k2, 0.5 * h),
+                &inputs(t + 0.5 * h),
+                &mut seeds[2],
+            );
+            let (k4, _) = rates(model, &shift(&k3, h), &inputs(t + h), &mut seeds[3]);
             for i in 0..9 {
                 x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
             }
@@ -296,7 +308,10 @@ mod tests {
     #[test]
     fn the_remnant_has_unit_rms() {
         let n = 200_000;
-        let ms: f64 = (0..n).map(|i| remnant(i as f64 * 0.01).powi(2)).sum::<f64>() / n as f64;
+        let ms: f64 = (0..n)
+            .map(|i| remnant(i as f64 * 0.01).powi(2))
+            .sum::<f64>()
+            / n as f64;
         assert!((ms.sqrt() - 1.0).abs() < 0.05, "{}", ms.sqrt());
     }
 }

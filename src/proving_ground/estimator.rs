@@ -65,7 +65,13 @@ mod tests {
         let e = estimated(&t, &beta, &mut rng);
         let n = t.len() as f64;
         let scatter = (e.windows(2).map(|w| (w[1] - w[0]).powi(2)).sum::<f64>() / n / 2.0).sqrt();
-        let error = (e.iter().zip(&beta).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / n).sqrt();
+        let error = (e
+            .iter()
+            .zip(&beta)
+            .map(|(a, b)| (a - b).powi(2))
+            .sum::<f64>()
+            / n)
+            .sqrt();
         assert!((1.5e-4..4e-4).contains(&scatter), "scatter {scatter}");
         assert!(error > 10.0 * scatter, "error {error}, scatter {scatter}");
         assert!((0.002..0.008).contains(&error), "error {error}");

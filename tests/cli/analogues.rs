@@ -101,8 +101,13 @@ fn the_sedan_analogue_logs_a_hand_driven_winding_track_with_a_loggers_offsets() 
         assert!(longest_standstill(t, u, 0.0) >= 4.5, "{run}");
         // Up to about 0.5 g, both ways, the accelerometer's offset taken out.
         let ay: Vec<f64> = col["ay"].iter().map(|a| a + 0.6).collect();
-        let (lo, hi) = ay.iter().fold((0.0f64, 0.0f64), |(l, h), &a| (l.min(a), h.max(a)));
-        assert!(lo < -4.0 && hi > 4.0 && lo > -7.0 && hi < 7.0, "{run}: ay {lo}..{hi}");
+        let (lo, hi) = ay
+            .iter()
+            .fold((0.0f64, 0.0f64), |(l, h), &a| (l.min(a), h.max(a)));
+        assert!(
+            lo < -4.0 && hi > 4.0 && lo > -7.0 && hi < 7.0,
+            "{run}: ay {lo}..{hi}"
+        );
         for (i, &v) in u.iter().enumerate() {
             if v == 0.0 {
                 parked.0.push(col["ay"][i]);
@@ -144,7 +149,11 @@ fn the_sedans_steer_is_held_at_20_hz_quantised_and_understates_the_tight_corners
             assert!((t[i] - tick).abs() < 1e-6, "steer changed at {} s", t[i]);
         }
         let q = steer[i] / quantum;
-        assert!((q - q.round()).abs() < 1e-6, "steer {} off the quantum", steer[i]);
+        assert!(
+            (q - q.round()).abs() < 1e-6,
+            "steer {} off the quantum",
+            steer[i]
+        );
     }
     assert!(changes > 1000, "{changes} changes");
     // Cornering steadily, the path curvature per logged steer, L·(r/u)/δ:
@@ -209,7 +218,10 @@ fn the_slow_oval_variants_differ_only_in_their_sideslip() {
     let (b_plain, b_est) = (&plain["beta"][..n], &est["beta"][..n]);
     let s_plain = scatter(b_plain);
     let s_est = scatter(b_est);
-    assert!((0.0017..0.0023).contains(&s_plain), "plain scatter {s_plain}");
+    assert!(
+        (0.0017..0.0023).contains(&s_plain),
+        "plain scatter {s_plain}"
+    );
     assert!(s_est < 0.0005, "estimated scatter {s_est}");
     let apart = rms(b_est.iter().zip(b_plain).map(|(e, p)| e - p));
     let error = (apart * apart - 0.002f64.powi(2)).max(0.0).sqrt();
@@ -253,11 +265,20 @@ fn the_racing_analogue_is_logged_as_the_putnam_log_with_its_rear_steer_stated() 
         let (t, u, r) = (&col["t"], &col["speed"], &col["yaw_rate"]);
         assert!((t[1] - t[0] - 0.04).abs() < 1e-9);
         assert!((t[t.len() - 1] - 100.0).abs() < 1e-6);
-        let (lo, hi) = u.iter().fold((f64::MAX, 0.0f64), |(l, h), &v| (l.min(v), h.max(v)));
-        assert!((8.0..10.0).contains(&lo) && (31.0..33.0).contains(&hi), "{run}: {lo}..{hi}");
+        let (lo, hi) = u
+            .iter()
+            .fold((f64::MAX, 0.0f64), |(l, h), &v| (l.min(v), h.max(v)));
+        assert!(
+            (8.0..10.0).contains(&lo) && (31.0..33.0).contains(&hi),
+            "{run}: {lo}..{hi}"
+        );
         // The Putnam log's levels: |u·r| up to about 5.5 m/s², ax within
         // −2.7 and 1.9 m/s² plus noise.
-        let ay = u.iter().zip(r).map(|(u, r)| (u * r).abs()).fold(0.0, f64::max);
+        let ay = u
+            .iter()
+            .zip(r)
+            .map(|(u, r)| (u * r).abs())
+            .fold(0.0, f64::max);
         assert!((4.5..7.0).contains(&ay), "{run}: |u r| up to {ay}");
         let ax = &col["ax"];
         assert!(ax.iter().all(|a| (-3.0..2.3).contains(a)), "{run}");
@@ -280,5 +301,8 @@ fn an_analogue_without_a_bank_channel_refuses_the_bank_profile() {
         out.to_str().unwrap(),
     ]);
     let e = refused(&o, &out);
-    assert!(e.contains("bank_profile") && e.contains("sedan-winding"), "{e}");
+    assert!(
+        e.contains("bank_profile") && e.contains("sedan-winding"),
+        "{e}"
+    );
 }

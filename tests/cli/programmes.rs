@@ -117,6 +117,7 @@ fn a_withheld_bank_on_the_synthetic_oval_is_named_from_the_bank_channel() {
         p["std_error"].as_f64().unwrap(),
     );
     assert!(mean.abs() < 4.0 * se && se < 0.01, "{p}");
+    let road = &d["road"][0]["bank"];
     assert_eq!(road["source"], "measured", "{road}");
     // The channel's 5th percentile: the 20° turns, within its noise
     // (0.002 rad, 0.11°).

@@ -511,7 +511,9 @@ mod tests {
     #[test]
     fn the_drivers_keep_their_cars_on_the_line() {
         for (programme, plan, largest) in [
-            (Programme::SedanWinding, sedan_plan(), 1.5),
+            // Within its lane (half of 3.5 m) by hand; the racing car on a
+            // wider track.
+            (Programme::SedanWinding, sedan_plan(), 1.75),
             (Programme::RacingRearSteer, racing_plan(), 2.5),
         ] {
             let t = truth(programme);

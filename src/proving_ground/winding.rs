@@ -262,10 +262,14 @@ mod tests {
         for w in t.curvature.windows(2) {
             assert!((w[1] - w[0]).abs() <= 1.01 * step, "{w:?}");
         }
-        // Quarter circle of 30 m plus straights: the exit is about 50 m
-        // left and 50 m ahead (the clothoids shift it by less than 1 m).
-        assert!((t.x[last] - 50.0).abs() < 1.5, "{}", t.x[last]);
-        assert!((t.y[last] - 50.0).abs() < 1.5, "{}", t.y[last]);
+        // Quarter circle of R = 30 m between clothoids of L = 15 m, plus
+        // the straights: the tangent length of a symmetric clothoid curve
+        // is (R + L²/24R)·tan(θ/2) + L/2 − L³/240R² = 37.8 m for θ = 90°,
+        // so the exit is 57.8 m ahead and 57.8 m left.
+        let (r, l) = (30.0f64, 15.0f64);
+        let tangent = r + l * l / (24.0 * r) + l / 2.0 - l.powi(3) / (240.0 * r * r);
+        assert!((t.x[last] - (20.0 + tangent)).abs() < 0.3, "{}", t.x[last]);
+        assert!((t.y[last] - (tangent + 20.0)).abs() < 0.3, "{}", t.y[last]);
     }
 
     #[test]

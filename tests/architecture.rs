@@ -840,3 +840,40 @@ fn the_label_check_sees_a_ticket_and_an_outside_path() {
     assert_eq!(labels_in(&data, false).len(), 1);
     assert_eq!(labels_in(&["see /wo", "rk/notes"].concat(), true).len(), 1);
 }
+
+/// The crate doc (`src/lib.rs`) is the map a reader of the library starts
+/// from: its table names every top-level module the library declares, in
+/// the order of the layers.
+#[test]
+fn the_crate_doc_maps_every_module_in_layer_order() {
+    let lib = fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/lib.rs")).unwrap();
+    let doc: String = lib
+        .lines()
+        .filter_map(|l| l.strip_prefix("//!"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let declared: Vec<&str> = lib
+        .lines()
+        .filter_map(|l| l.strip_prefix("pub mod "))
+        .map(|l| l.trim_end_matches(';'))
+        .collect();
+    assert!(declared.len() >= 10, "{declared:?}");
+    let mut rows: Vec<(usize, &str)> = Vec::new();
+    for m in &declared {
+        let at = doc.find(&format!("| [`{m}`] |"));
+        let Some(at) = at else {
+            panic!("src/lib.rs: the crate doc's table leaves out the module `{m}`");
+        };
+        rows.push((at, m));
+    }
+    rows.sort();
+    let layers: Vec<usize> = rows
+        .iter()
+        .map(|(_, m)| layer_of(LAYERS, m).unwrap_or_else(|| panic!("`{m}` has no layer")))
+        .collect();
+    assert!(
+        layers.windows(2).all(|w| w[0] <= w[1]),
+        "src/lib.rs: the crate doc's table is not in layer order: {:?}",
+        rows.iter().map(|(_, m)| m).collect::<Vec<_>>()
+    );
+}

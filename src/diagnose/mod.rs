@@ -8,7 +8,7 @@
 //! | room | question |
 //! |---|---|
 //! | [`campaign`] | what the diagnosis is given: vehicle, base tyres, runs, settings |
-//! | [`effects`] | which candidate effects exist: parameters, units, bounds, off values, signatures, sensors |
+//! | [`effects`] | which candidate effects exist: each defined once (parameters, units, bounds, off values, signature, needs, truth, how it sets the vehicle model's effects) |
 //! | `model` | how a run is replayed: the augmented model, its axle characteristics, the measured channels, a run made ready for replays |
 //! | `fit` | how a parameter vector is fitted: the output-error problem, its layout, exact Jacobians, swarm and Levenberg–Marquardt, the fold refits |
 //! | `base` | how the base model is found: given tyres, a rig fit, or axles identified from the runs |

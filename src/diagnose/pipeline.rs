@@ -54,7 +54,7 @@ use crate::diagnose::report::{GapFinding, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{EffectKind, EffectSet, Needs};
+use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
@@ -248,9 +248,9 @@ fn base_gaps(c: &Campaign, all: &Augmented) -> Vec<RunGap> {
 /// The held-out replays of every run by the base model and by the
 /// verdict's (the base's again without a verdict).
 fn before_after(ctx: &Context, chosen: Option<&Scored>) -> (Vec<Observed>, Vec<Observed>) {
-    let base_obs = ctx.heldout_observed(None, &EffectSet::default());
+    let base_obs = ctx.heldout_observed(None);
     let after_obs = match chosen {
-        Some(sc) => ctx.heldout_observed(Some(sc), &EffectSet::default()),
+        Some(sc) => ctx.heldout_observed(Some(sc)),
         None => base_obs.clone(),
     };
     (base_obs, after_obs)
@@ -286,8 +286,8 @@ fn base_report(
 ) -> BaseReport {
     BaseReport {
         source,
-        front: bases.all.base.front.clone(),
-        rear: bases.all.base.rear.clone(),
+        front: bases.all.model.front.clone(),
+        rear: bases.all.model.rear.clone(),
         rig_grouping,
         axles: bases.identification.clone(),
     }
@@ -386,6 +386,7 @@ fn run(
         folds: ctx.folds.len(),
         notes,
         cleaning: c.cleaning.clone(),
+        calibration: c.calibration.clone(),
         road: c
             .runs
             .iter()

@@ -385,7 +385,7 @@ pub(crate) fn start_tyre_of(model: ModelName, fz: f64) -> Result<Tyre, Error> {
         Error::Options(match model.identification() {
             Identification::Staged(fits) => OptionsError::StagedFitOnly {
                 model: model.to_string(),
-                fits: fits.to_vec(),
+                fits: fits.iter().map(|f| f.name).collect(),
             },
             _ => OptionsError::NotIdentified {
                 model: model.to_string(),

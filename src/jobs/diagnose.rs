@@ -137,6 +137,8 @@ impl DiagnoseReport {
                 .map(|n| format!("  note: {}", words::note(n))),
         );
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
+        let calibration = d.calibration.lines().into_iter();
+        out.extend(calibration.map(|l| format!("  calibration: {l}")));
         out.extend(
             d.road
                 .iter()

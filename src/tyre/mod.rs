@@ -59,6 +59,7 @@ pub use name::ModelName;
 pub use registry::{model_names, models, register, swarm_models, ModelEntry, Tyre};
 
 use crate::error::ParamError;
+use mf::MfVersion;
 use num_dual::DualNum;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -415,11 +416,34 @@ pub enum Identification {
     /// start), then the aligning and longitudinal blocks; `identify --model
     /// <name>`.
     Swarm,
-    /// A staged fit of the model's own under these names, one per version
-    /// (the Magic Formula: Wei et al.'s (2010) stages, `mf61` and `mf62`).
-    Staged(&'static [&'static str]),
+    /// The swarm fit, and beside its lateral-force fit Zhang et al.'s
+    /// (2021) two-stage identification: the curve coefficients B, C, D, E,
+    /// Sh, Sv per condition, their load and camber laws a0..a13, then a
+    /// joint polish; the better of the two is written. The two stages build
+    /// a PAC89 in the Adams numbering, so this is PAC89's.
+    SwarmAndTwoStage,
+    /// A staged fit of the model's own, one per version it writes (the
+    /// Magic Formula: Wei et al.'s (2010) stages, `mf61` and `mf62`).
+    Staged(&'static [StagedFit]),
     /// Not identified from rig data.
     NotFitted,
+}
+
+impl Identification {
+    /// True when the swarm fits the model (`identify --model <name>`).
+    pub fn by_swarm(self) -> bool {
+        matches!(self, Self::Swarm | Self::SwarmAndTwoStage)
+    }
+}
+
+/// One version of a model's staged fit: the name `identify --model` takes
+/// and the Magic Formula version the fit evaluates and writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StagedFit {
+    /// The name on the command line and in file names (`mf61`).
+    pub name: &'static str,
+    /// The version fitted and written (its `FITTYP`).
+    pub version: MfVersion,
 }
 
 /// A tyre model as the registry knows it: its name, how a tyre of it is

@@ -23,8 +23,8 @@
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
 use super::{
-    Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces,
-    TyreModel,
+    Block, Identification, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
+    SlipState, TyreForces, TyreModel,
 };
 use crate::error::{ParamError, ParamReason};
 use num_dual::DualNum;
@@ -483,6 +483,7 @@ impl ModelParameters for Pac89 {
 
 impl Model for Pac89 {
     const NAME: &'static str = "pac89";
+    const IDENTIFICATION: Identification = Identification::SwarmAndTwoStage;
     /// The Adams example's lateral set ([`ADAMS_EXAMPLE_A`]).
     fn start(_fz: f64) -> Option<Self> {
         Some(Pac89 {

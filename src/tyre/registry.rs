@@ -134,7 +134,7 @@ pub fn model_names() -> Vec<ModelName> {
 pub fn swarm_models() -> Vec<ModelName> {
     models()
         .iter()
-        .filter(|e| e.identification() == Identification::Swarm)
+        .filter(|e| e.identification().by_swarm())
         .map(|e| e.name())
         .collect()
 }

@@ -406,7 +406,7 @@ fn the_registry_derives_every_list() {
     for (n, e) in model_names().iter().zip(models()) {
         assert_eq!(n.as_str().parse::<ModelName>(), Ok(*n));
         assert_eq!(e.name(), *n);
-        let swarm = e.identification() == Identification::Swarm;
+        let swarm = e.identification().by_swarm();
         assert_eq!(swarm, swarm_models().contains(n), "{n}");
         assert_eq!(swarm, n.start_tyre(3000.0).is_some(), "{n}");
     }

@@ -227,8 +227,9 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
     fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }
 
+mod analogues;
+mod calibration;
 mod cross_validation;
-mod derivatives;
 mod diagnose;
 mod identify;
 mod magic_formula;
@@ -243,7 +244,6 @@ mod real_logs;
 mod report_html;
 mod rig_layouts;
 mod scenarios;
-mod screening;
 mod shards;
 mod sweeps;
 

@@ -6,9 +6,18 @@
 //! with its IEND chunk), never truncated, and a rerun succeeds, taking the
 //! killed run's lock over. Two runs into one folder at once: the second is
 //! refused, the first completes.
+//!
+//! A seeded moment may fall after a run has ended (runs are faster or
+//! slower than the reference run that set the span), so the first moment
+//! of each command is not a time but an event: the run has taken the
+//! folder (its lock names its process), and so is certainly at work. A run
+//! counts as killed when its exit status says SIGKILL ended it; the count
+//! is asserted, at least that first kill per command, and every other run
+//! must have ended by itself, successfully.
 
 use crate::{env_count, fs, inputs, root, Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::os::unix::process::ExitStatusExt;
+use std::process::{Child, Command, ExitStatus, Output, Stdio};
 use std::time::{Duration, Instant};
 
 fn handling() -> Command {
@@ -137,6 +146,42 @@ fn moments(seed: u64, n: usize, span: Duration) -> Vec<Duration> {
         .collect()
 }
 
+/// Waits until `child` holds output folder `out` (its lock file names its
+/// process id): from then on it is at work on that folder until it
+/// releases the lock at its very end.
+fn holds_the_folder(child: &mut Child, out: &Path, name: &str) {
+    let lock = out.join(".handling.lock");
+    let me = child.id().to_string();
+    let t0 = Instant::now();
+    loop {
+        let held = fs::read_to_string(&lock).is_ok_and(|t| t.trim() == me);
+        if held {
+            return;
+        }
+        if let Some(status) = child.try_wait().unwrap() {
+            panic!("{name}: the run ended ({status}) before its lock was seen");
+        }
+        assert!(
+            t0.elapsed() < Duration::from_secs(120),
+            "{name}: the run did not take its folder in 120 s"
+        );
+        std::thread::sleep(Duration::from_micros(200));
+    }
+}
+
+/// SIGKILLs `child` (a run that has ended already is not touched) and
+/// returns how it ended.
+fn kill(child: &mut Child) -> ExitStatus {
+    // An error means the child was reaped already; its status follows.
+    child.kill().unwrap_or(());
+    child.wait().unwrap()
+}
+
+/// True when SIGKILL ended the run (nothing but this test sends it).
+fn killed(status: ExitStatus) -> bool {
+    status.signal() == Some(9)
+}
+
 #[test]
 fn outputs_survive_a_kill_at_any_moment() {
     let n = env_count("HANDLING_KILL_MOMENTS", 10) as usize;
@@ -154,31 +199,51 @@ fn outputs_survive_a_kill_at_any_moment() {
         let span = t0.elapsed().mul_f64(1.2);
         let files = complete(&reference, &reference).unwrap();
         let out = scratch.path().join(job.name);
-        let mut kills = 0;
+        let (mut kills, mut ended) = (0, 0);
         for (i, at) in moments(j as u64 + 1, n, span).into_iter().enumerate() {
             // Odd moments write over a complete earlier run.
             if i % 2 == 1 && !out.join(".handling.lock").exists() {
                 let o = run(&with_out(&job.args, &out));
                 assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
             }
+            let spawned = Instant::now();
             let mut child = handling()
                 .args(with_out(&job.args, &out))
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
                 .spawn()
                 .unwrap();
-            std::thread::sleep(at);
-            if child.try_wait().unwrap().is_none() {
+            let at = if i == 0 {
+                holds_the_folder(&mut child, &out, job.name);
+                spawned.elapsed()
+            } else {
+                std::thread::sleep(at);
+                at
+            };
+            let status = kill(&mut child);
+            if killed(status) {
                 kills += 1;
+            } else {
+                assert!(
+                    status.success(),
+                    "{} at {at:?}: the run ended by itself but failed: {status}",
+                    job.name
+                );
+                ended += 1;
             }
-            child.kill().unwrap_or(());
-            child.wait().unwrap();
+            assert!(
+                i != 0 || killed(status),
+                "{}: the run holding the folder was not killed: {status}",
+                job.name
+            );
             if out.exists() {
                 if let Err(e) = complete(&out, &reference) {
                     panic!("{} killed at {at:?}: {e}", job.name);
                 }
             }
         }
+        assert!(kills >= 1, "{}: no run was killed", job.name);
+        assert_eq!(kills + ended, n, "{}", job.name);
         let o = run(&with_out(&job.args, &out));
         assert!(
             o.status.success(),
@@ -193,7 +258,7 @@ fn outputs_survive_a_kill_at_any_moment() {
             .filter(|p| p.file_name().unwrap().to_string_lossy().starts_with('.'))
             .collect();
         assert!(hidden.is_empty(), "{}: left behind {hidden:?}", job.name);
-        eprintln!("{}: {kills} of {n} runs killed before they ended (span {span:?}); every file complete; rerun fine", job.name);
+        eprintln!("{}: {kills} of {n} runs killed before they ended, {ended} ended by themselves (span {span:?}); every file complete; rerun fine", job.name);
     }
 }
 

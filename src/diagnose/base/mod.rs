@@ -2,7 +2,8 @@
 //! model fitted to its rig data, or — with neither — axle characteristics
 //! identified from the runs (`identify`) and refitted on every fold and
 //! with every candidate, since an effect changes what the tyres must have
-//! been. Units: SI, rad.
+//! been. The campaign's `[roll]` is the base models' roll
+//! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
 pub(crate) mod identify;
 
@@ -70,9 +71,10 @@ pub(super) fn base_models(
 ) -> Result<(Bases, TyreSource, Option<GroupingReport>), Error> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
-    let make = |f: Tyre, r: Tyre| Augmented {
-        roll: c.roll,
-        ..Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction)
+    let make = |f: Tyre, r: Tyre| {
+        let mut m = Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction);
+        m.effects_mut().roll = c.roll;
+        m
     };
     // Tyres not fitted to the runs: one model for all runs and every fold.
     let fixed = |m: Augmented| Bases {
@@ -128,14 +130,11 @@ pub(super) fn base_models(
     }
 }
 
-/// What the axle shares set on the models `make` builds: their tyres.
-fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
+/// What the axle shares set on the models `make` builds (their tyres),
+/// and a model it builds.
+fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> (Layout, Augmented) {
     let (f, r) = axle_tyres(&[0.5, 0.5, 0.5]);
-    Layout {
-        base: make(f, r),
-        kinds: Vec::new(),
-        axle: true,
-    }
+    (Layout::new(&[], true), make(f, r))
 }
 
 /// The base model of axle characteristics identified from the runs (no
@@ -153,14 +152,14 @@ fn axles_from_runs(
         make(f, r)
     };
     let stamps = timing.map(|_| Stamps::default());
-    let layout = axle_layout(&make);
+    let (layout, model) = axle_layout(&make);
     let problem = Problem::new(
         |p: &[f64]| counted(&stamps, build, p),
         runs.iter().collect(),
         scales_hint,
         AXLE_BOUNDS.to_vec(),
     )
-    .with_layout(layout.clone(), derivatives);
+    .with_layout(layout.clone(), &model, derivatives);
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
@@ -191,7 +190,7 @@ fn axles_from_runs(
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             )
-            .with_layout(layout.clone(), derivatives);
+            .with_layout(layout.clone(), &model, derivatives);
             let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
             if let (Some(rec), Some(st)) = (timing, &stamps) {
                 rec.add(Phase::BaseFolds, t0.elapsed(), st.count());

@@ -272,6 +272,9 @@ pub struct Diagnosis {
     /// Glitches, standstills and crawling found in the runs and what was
     /// excluded, repaired or masked.
     pub cleaning: crate::measured::clean::CleaningReport,
+    /// Sensor offsets from the standstills and straights of the runs as
+    /// read, before the cleaning.
+    pub calibration: crate::measured::calibration::CalibrationReport,
     /// The road under each replayed piece: the bank measured or estimated
     /// from the lateral kinematics, the grade from `ax − du/dt`
     /// ([`crate::measured::road`]); reported, not fitted.

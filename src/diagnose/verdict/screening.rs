@@ -30,7 +30,7 @@
 //! significant gap nothing is searched, and every candidate below the
 //! threshold stays screened.
 
-use crate::diagnose::effects::{joined, EffectKind, EffectSet};
+use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::Screened;
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::PARSIMONY;
@@ -60,9 +60,10 @@ pub(crate) fn singles(
     let screens = screening && base.insample_gap();
     let mut slots: Vec<Slot> = effects
         .par_iter()
-        .enumerate()
-        .map(|(i, e)| {
-            let f = ctx.fit_all(vec![*e], EffectSet::default(), &[], i as u64 + 1);
+        .map(|e| {
+            // Seeded by the effect's name: its fit does not depend on
+            // which other effects the campaign lists.
+            let f = ctx.fit_all(vec![*e], &[], e.seed());
             let inside = base.insample_reduction(&f.insample);
             if screens && rules::screened(inside) {
                 Slot::Screened(f, inside)

@@ -22,16 +22,21 @@
 //! them. Each of these rules is a pure function in
 //! [`crate::diagnose::verdict::rules`], tested there.
 //!
+//! A candidate's fitted vector is read through its [`Layout`] (the axle
+//! characteristics, each effect's parameters, the roll dynamics), and a
+//! combination starts from [`Layout::combined`] of its members' fits.
+//!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales),
 //! reductions in percent. The method is the project's own (see
 //! [`crate::diagnose::pipeline`] for the overview).
 
 use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
-use crate::diagnose::effects::{joined, Bound, EffectKind, EffectSet};
+use crate::diagnose::effects::{joined, Bound, EffectKind};
+use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::report::{ChannelError, Confounded, RankWarning, Ranked, Refused};
-use crate::diagnose::verdict::candidate::{combined_start, parameter_values};
+use crate::diagnose::verdict::candidate::parameter_values;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{
@@ -67,8 +72,8 @@ pub(crate) struct Baseline {
     bic0: f64,
     scales: [f64; 3],
     folds: usize,
-    /// Axle characteristics leading every parameter vector (0 or 3).
-    axle_count: usize,
+    /// Whether axle characteristics lead every parameter vector.
+    axle: bool,
 }
 
 impl Baseline {
@@ -76,11 +81,16 @@ impl Baseline {
     /// rigid axle, one without force, no grip, an early peak; empty for a
     /// tyre): such a candidate cannot be a verdict.
     pub(crate) fn no_tyre(&self, sc: &Scored) -> Vec<NoTyre> {
-        if self.axle_count != 3 {
+        if !self.axle {
             return Vec::new();
         }
-        let p = &sc.full.params;
-        AxleIdentification::new(&p[..3], &sc.full.std_errors[..3], None, 0).no_tyre
+        let (p, a) = (&sc.full, self.layout(&sc.kinds).axles());
+        AxleIdentification::new(&p.params[a.clone()], &p.std_errors[a], None, 0).no_tyre
+    }
+
+    /// The parameter vector of `kinds` ([`Layout`]).
+    pub(crate) fn layout(&self, kinds: &[EffectKind]) -> Layout {
+        Layout::new(kinds, self.axle)
     }
 
     /// Whether the axles fitted with a candidate are no tyre.
@@ -106,7 +116,7 @@ impl Baseline {
         Candidate {
             heldout: sc.heldout.combined(&self.scales),
             parameters: sc.full.params.len(),
-            idle: idle(sc, self.axle_count),
+            idle: idle(sc, &self.layout(&sc.kinds)),
             degenerate: self.degenerate(sc),
         }
     }
@@ -166,11 +176,11 @@ impl Baseline {
         Ranked {
             effect: joined(&sc.kinds, "+"),
             effects: sc.kinds.clone(),
-            axles: (self.axle_count == 3).then(|| {
-                let (p, se) = (&sc.full.params, &sc.full.std_errors);
-                AxleIdentification::new(&p[..3], &se[..3], None, 0).parameters
+            axles: self.axle.then(|| {
+                let (p, a) = (&sc.full, self.layout(&sc.kinds).axles());
+                AxleIdentification::new(&p.params[a.clone()], &p.std_errors[a], None, 0).parameters
             }),
-            parameters: parameter_values(&sc.kinds, &sc.full, self.axle_count),
+            parameters: parameter_values(&self.layout(&sc.kinds), &sc.full),
             heldout_error_before: self.j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),
@@ -197,7 +207,7 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
             .sum();
         (s / n.max(1) as f64).sqrt()
     };
-    let scored = ctx.score(Vec::new(), EffectSet::default(), &[], 0);
+    let scored = ctx.score(Vec::new(), &[], 0);
     Baseline {
         j0: scored.heldout.combined(&scales),
         jn: noise_level(&scored.heldout),
@@ -206,7 +216,7 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
         bic0: scored.full.bic(),
         scales,
         folds: ctx.folds.len(),
-        axle_count: if ctx.bases.axle.is_some() { 3 } else { 0 },
+        axle: ctx.bases.axle.is_some(),
     }
 }
 
@@ -342,13 +352,10 @@ fn lookalikes(
 /// show a steer path's lag at a few microseconds to be its delay's twin):
 /// that part of the effect is off, or the data cannot tell it from off,
 /// and it reduces to a simpler one.
-fn idle(sc: &Scored, axle_count: usize) -> bool {
+fn idle(sc: &Scored, layout: &Layout) -> bool {
     let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
-    params.enumerate().any(|(i, q)| {
-        let (value, se) = (
-            sc.full.params[axle_count + i],
-            sc.full.std_errors[axle_count + i],
-        );
+    params.zip(layout.effects()).any(|(q, i)| {
+        let (value, se) = (sc.full.params[i], sc.full.std_errors[i]);
         // Off, or no further from off than the data can tell; a value on
         // a search bound (no standard error) is pressed there, not idle.
         let off = !q.off.is_nan() && (value - q.off).abs() <= 1e-9 * (q.bounds.1 - q.bounds.0);
@@ -358,11 +365,6 @@ fn idle(sc: &Scored, axle_count: usize) -> bool {
             None => off || (!q.off.is_nan() && (se.is_nan() || (value - q.off).abs() < 2.0 * se)),
         }
     })
-}
-
-/// An effect's place in the library: the seed of a set it is added to.
-fn library_index(e: EffectKind) -> u64 {
-    EffectKind::ALL.iter().position(|&k| k == e).unwrap_or(0) as u64
 }
 
 /// Greedy additions from `start`: the effect that best closes what is left,
@@ -394,35 +396,24 @@ fn greedy(
             .filter(|e| !current.kinds.contains(e))
             .collect();
         let cur = &current;
-        // Each set's seed is that of the effect added (not its place in the
-        // ranking, which screening shortens).
+        // Each set's seed is that of the effect added (its name's, not its
+        // place in the ranking, which screening shortens), one apart from
+        // its single fit's.
         let mut scored: Vec<Scored> = tries
             .par_iter()
             .map(|e| {
                 let mut kinds = cur.kinds.clone();
                 kinds.push(*e);
                 let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
-                let members = combined_start(
-                    (&cur.kinds, &cur.full.params),
-                    (*e, &single.full.params),
-                    base.axle_count,
-                );
-                let added_off = ctx.off(&[*e]);
-                let extended = combined_start(
-                    (&cur.kinds, &cur.full.params),
-                    (*e, &added_off),
-                    base.axle_count,
-                );
+                let layout = base.layout(&cur.kinds);
+                let members = layout.combined(&cur.full.params, *e, &single.full.params);
+                let extended = layout.combined(&cur.full.params, *e, &ctx.off(&[*e]));
                 // Each member's own optimum: the axles the added effect
                 // fitted alone want can differ from the current set's.
                 let mut own = members.clone();
-                own[..base.axle_count].copy_from_slice(&single.full.params[..base.axle_count]);
-                ctx.score(
-                    kinds,
-                    EffectSet::default(),
-                    &[members, extended, own],
-                    1000 + library_index(*e),
-                )
+                let axles = layout.axles();
+                own[axles.clone()].copy_from_slice(&single.full.params[axles]);
+                ctx.score(kinds, &[members, extended, own], e.seed().wrapping_add(1))
             })
             .collect();
         scored.sort_by(|a, b| {

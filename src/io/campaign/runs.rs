@@ -1,13 +1,15 @@
 //! The runs of a test campaign: the run files a campaign names (`[runs]
 //! files`, the `*.csv` of `[runs] dir` or of a campaign folder's `runs/`),
 //! each read, checked (long enough; the steer's sign and unit judged against
-//! the yaw rate it gives, ISO 8855 signs) and cleaned
+//! the yaw rate it gives, ISO 8855 signs), calibrated on its standstills and
+//! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
 use crate::error::{InputError, InputProblem};
 use crate::io::paths::beside;
 use crate::io::read_run;
 use crate::io::toml_file::TomlSource;
+use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
     clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
     MIN_RUN_SECONDS,
@@ -133,15 +135,25 @@ pub(super) fn run_files(
     Ok(files)
 }
 
-/// Reads, checks and cleans every run, cut into segments if asked: the
-/// pieces to replay, notes on what was done, the cleaning report.
+/// The runs read: the pieces to replay, notes on what was done, the
+/// cleaning report and the calibration of the raw runs.
+pub(super) type ReadRuns = (
+    Vec<MeasuredRun>,
+    Vec<String>,
+    CleaningReport,
+    CalibrationReport,
+);
+
+/// Reads, checks, calibrates and cleans every run, cut into segments if
+/// asked.
 pub(super) fn read_runs(
     files: &[PathBuf],
     segment: Option<f64>,
     min_speed: f64,
     wheelbase: f64,
     inputs: &mut Vec<PathBuf>,
-) -> Result<(Vec<MeasuredRun>, Vec<String>, CleaningReport), InputError> {
+) -> Result<ReadRuns, InputError> {
+    let mut raw = Vec::new();
     let mut runs = Vec::new();
     let mut notes = Vec::new();
     let clean = CleanSettings::diagnosis(min_speed);
@@ -154,6 +166,9 @@ pub(super) fn read_runs(
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
+        // The standstills the cleaning leaves out are the calibration's
+        // evidence: it reads the run as logged.
+        raw.push(run.clone());
         let pieces = clean_run(run, &clean, &mut cleaning);
         let gaps: Vec<String> = cleaning.glitches[listed..]
             .iter()
@@ -192,7 +207,7 @@ pub(super) fn read_runs(
             }
         }
     }
-    Ok((runs, notes, cleaning))
+    Ok((runs, notes, cleaning, calibrate(&raw)))
 }
 
 /// The steer judged against the yaw rate it gives where it is held

@@ -6,7 +6,7 @@
 
 use crate::error::{named, Error, NameKind, OptionsError};
 use crate::identify::LocalMethod;
-use crate::tyre::{models, Identification, ModelName};
+use crate::tyre::{models, Identification, MagicFormula, ModelName, StagedFit};
 use serde::Serialize;
 
 /// A model `identify` fits, from the registry ([`crate::tyre::models`]): a
@@ -16,16 +16,19 @@ use serde::Serialize;
 pub enum IdentifyModel {
     /// The swarm fit of this model.
     Swarm(ModelName),
-    /// The staged fit of this model under this name.
-    Staged(ModelName, &'static str),
+    /// One version of this model's staged fit, as its registry entry
+    /// gives it.
+    Staged(ModelName, StagedFit),
 }
 
 #[allow(non_upper_case_globals)]
 impl IdentifyModel {
     /// Magic Formula 6.1, Wei et al.'s (2010) staged fit.
-    pub const Mf61: IdentifyModel = IdentifyModel::Staged(ModelName::MagicFormula, "mf61");
+    pub const Mf61: IdentifyModel =
+        IdentifyModel::Staged(ModelName::MagicFormula, MagicFormula::FIT_MF61);
     /// Magic Formula 6.2 (`FITTYP = 62`), the same stages.
-    pub const Mf62: IdentifyModel = IdentifyModel::Staged(ModelName::MagicFormula, "mf62");
+    pub const Mf62: IdentifyModel =
+        IdentifyModel::Staged(ModelName::MagicFormula, MagicFormula::FIT_MF62);
 
     /// Every model `identify` fits, in the registry's order (a staged
     /// model's versions in its order): the values of `--model`.
@@ -33,10 +36,12 @@ impl IdentifyModel {
         models()
             .iter()
             .flat_map(|e| match e.identification() {
-                Identification::Swarm => vec![IdentifyModel::Swarm(e.name())],
-                Identification::Staged(names) => names
+                Identification::Swarm | Identification::SwarmAndTwoStage => {
+                    vec![IdentifyModel::Swarm(e.name())]
+                }
+                Identification::Staged(fits) => fits
                     .iter()
-                    .map(|n| IdentifyModel::Staged(e.name(), n))
+                    .map(|fit| IdentifyModel::Staged(e.name(), *fit))
                     .collect(),
                 Identification::NotFitted => Vec::new(),
             })
@@ -52,7 +57,7 @@ impl IdentifyModel {
     pub fn as_str(self) -> &'static str {
         match self {
             Self::Swarm(m) => m.as_str(),
-            Self::Staged(_, name) => name,
+            Self::Staged(_, fit) => fit.name,
         }
     }
 

@@ -20,7 +20,7 @@ mod staged;
 use crate::error::{Error, FitError, OutputError, ParamError};
 use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
-use crate::tyre::{ModelName, Pac89, Tyre};
+use crate::tyre::{Identification, ModelName, Pac89, Tyre};
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged::run_staged;
@@ -273,9 +273,13 @@ pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
 /// fitted.
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
     o.validate()?;
-    match o.model.swarm_model() {
-        Some(model) => run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r))),
-        None => run_staged(o).map(|r| IdentifyReport::Staged(Box::new(r))),
+    match o.model {
+        IdentifyModel::Swarm(model) => {
+            run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r)))
+        }
+        IdentifyModel::Staged(_, fit) => {
+            run_staged(o, fit).map(|r| IdentifyReport::Staged(Box::new(r)))
+        }
     }
 }
 
@@ -359,7 +363,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_conditions: Vec::new(),
         lock,
     };
-    if model == ModelName::Pac89 && first == Channel::LateralForce {
+    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
+    if asks_two_stage && first == Channel::LateralForce {
         two_stage(o, &mut r, &settings)?;
     }
     // The aligning moment, where the data have it and the model has one,

@@ -5,7 +5,7 @@
 //! template's constants and layout kept) that is read back and checked to
 //! reproduce the fitted forces.
 
-use super::{IdentifyModel, Options, StartArg};
+use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::identify::mf_staged::{
     self, rms_text, PooledSigma, RowAccount, StagedReport, StartScheme,
@@ -14,7 +14,7 @@ use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, OutputLock};
-use crate::tyre::mf::MfVersion;
+use crate::tyre::StagedFit;
 use serde::Serialize;
 
 /// The report of the staged Magic Formula fit.
@@ -92,12 +92,10 @@ impl StagedJob {
     }
 }
 
-/// Runs the staged fit of `o` (its model mf61 or mf62).
-pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
-    let version = match o.model {
-        IdentifyModel::Mf62 => MfVersion::Mf62,
-        _ => MfVersion::Mf61,
-    };
+/// Runs the staged fit of `o`, version `fit` of its model's (from the
+/// model's registry entry: `mf61` fits and writes an MF 6.1, `mf62` an
+/// MF 6.2).
+pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error> {
     let out = o.output_path();
     let mut inputs = vec![o.data.clone()];
     inputs.extend(o.template.clone());
@@ -125,7 +123,7 @@ pub(super) fn run_staged(o: &Options) -> Result<StagedJob, Error> {
         default_speed,
     )?;
     let settings = mf_staged::Settings {
-        version,
+        version: fit.version,
         start: match o.start {
             StartArg::Data => StartScheme::Data,
             StartArg::Paper => StartScheme::Paper,

@@ -92,49 +92,20 @@ mod kernels;
 mod lateral_of;
 mod mode;
 mod slip;
+mod version;
 pub mod vertical;
 
 pub use channel::{Held, MfChannel, MfPoint};
 pub use coefficients::{MfCoefficients, MfCoefficientsOf};
 pub use mode::{MfLimits, MfMode};
+pub use version::MfVersion;
 
 use super::{
-    Identification, Model, ModelParameters, PointForces, SlipState, TyreForces, TyreModel,
+    Identification, Model, ModelParameters, PointForces, SlipState, StagedFit, TyreForces,
+    TyreModel,
 };
 use crate::error::ParamError;
 use serde::{Deserialize, Serialize};
-
-/// Which Magic Formula a file holds, from its `FITTYP`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum MfVersion {
-    /// MF 5.2 / PAC2002 (`FITTYP` 6 or 21).
-    Mf52,
-    /// MF 6.1 (`FITTYP` 61).
-    Mf61,
-    /// MF 6.2 (`FITTYP` 62).
-    Mf62,
-}
-
-impl MfVersion {
-    /// The version for a `FITTYP` value.
-    pub fn from_fittyp(fittyp: i64) -> Option<Self> {
-        match fittyp {
-            6 | 21 => Some(Self::Mf52),
-            61 => Some(Self::Mf61),
-            62 => Some(Self::Mf62),
-            _ => None,
-        }
-    }
-    /// The `FITTYP` value written for this version.
-    pub fn fittyp(self) -> i64 {
-        match self {
-            Self::Mf52 => 6,
-            Self::Mf61 => 61,
-            Self::Mf62 => 62,
-        }
-    }
-}
 
 /// The side of the vehicle the file's tyre was fitted on (`TYRESIDE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -481,9 +452,23 @@ impl ModelParameters for MagicFormula {
     }
 }
 
+impl MagicFormula {
+    /// Wei et al.'s (2010) staged fit of an MF 6.1 (`identify --model mf61`).
+    pub const FIT_MF61: StagedFit = StagedFit {
+        name: "mf61",
+        version: MfVersion::Mf61,
+    };
+    /// The same stages for an MF 6.2 (`identify --model mf62`).
+    pub const FIT_MF62: StagedFit = StagedFit {
+        name: "mf62",
+        version: MfVersion::Mf62,
+    };
+}
+
 impl Model for MagicFormula {
     const NAME: &'static str = "magic-formula";
-    const IDENTIFICATION: Identification = Identification::Staged(&["mf61", "mf62"]);
+    const IDENTIFICATION: Identification =
+        Identification::Staged(&[Self::FIT_MF61, Self::FIT_MF62]);
     /// None: the Magic Formula is identified in stages
     /// (`identify::mf_staged`, Wei et al. (2010)), not from a start tyre.
     fn start(_fz: f64) -> Option<Self> {

@@ -85,26 +85,11 @@ use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::Augmented;
 use crate::identify::data::gauss;
 use crate::measured::MeasuredRun;
-use crate::vehicle::Vehicle;
 use rand_chacha::ChaCha8Rng;
 use std::path::PathBuf;
 
 /// Step of the closed-loop integration, s (divides every logging interval).
 const STEP: f64 = 0.002;
-
-/// The sedan of `sedan-winding`.
-pub(super) fn sedan() -> Vehicle {
-    Vehicle {
-        mass: 2300.0,
-        yaw_inertia: 4800.0,
-        a: 1.464,
-        b: 1.586,
-        track_front: 1.63,
-        track_rear: 1.64,
-        cg_height: 0.56,
-        ..Vehicle::compact_sedan()
-    }
-}
 
 /// Rear roll steer of the racing analogue's truth, rad of rear steer per
 /// rad of body roll (positive: the rear wheels steer left as the body rolls

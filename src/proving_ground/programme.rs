@@ -195,6 +195,21 @@ const SLOW_OVAL_VARIANT_RUN: f64 = 100.0;
 /// Piece length of the slow-oval campaign, s.
 const SLOW_OVAL_SEGMENT: f64 = 20.0;
 
+/// The 2.3 t sedan of `sedan-winding` (the analogue of a heavy sedan's
+/// log).
+fn large_sedan() -> Vehicle {
+    Vehicle {
+        mass: 2300.0,
+        yaw_inertia: 4800.0,
+        a: 1.464,
+        b: 1.586,
+        track_front: 1.63,
+        track_rear: 1.64,
+        cg_height: 0.56,
+        ..Vehicle::compact_sedan()
+    }
+}
+
 /// The car that drives `programme`: the compact sedan, on the slow ovals
 /// and the racing analogue a light racing car with the Putnam log's mass,
 /// yaw inertia and axle distances (its track widths and centre-of-gravity
@@ -202,7 +217,7 @@ const SLOW_OVAL_SEGMENT: f64 = 20.0;
 /// sedan analogue's large sedan.
 pub(super) fn truth_vehicle(programme: Programme) -> Vehicle {
     match programme {
-        Programme::SedanWinding => super::analogues::sedan(),
+        Programme::SedanWinding => large_sedan(),
         p if p.slow_oval() || p == Programme::RacingRearSteer => Vehicle {
             mass: 790.0,
             yaw_inertia: 1000.0,

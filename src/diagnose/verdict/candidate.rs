@@ -81,8 +81,6 @@ pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<Parameter
     layout
         .parameters()
         .enumerate()
-        .map(|(i, (group, q))| {
-            ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i])
-        })
+        .map(|(i, (group, q))| ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]))
         .collect()
 }

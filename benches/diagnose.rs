@@ -83,13 +83,11 @@ fn racing_log(c: &mut Criterion) {
     };
     let runs = Prepared::campaign_runs(&campaign);
     let axle = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d: 3.5 });
-    let model = Augmented {
-        roll: campaign.roll,
-        ..Augmented::new(
-            VehicleModel::new(campaign.vehicle.clone(), axle(9.27), axle(80.0)),
-            campaign.friction,
-        )
-    };
+    let mut model = Augmented::new(
+        VehicleModel::new(campaign.vehicle.clone(), axle(9.27), axle(80.0)),
+        campaign.friction,
+    );
+    model.effects_mut().roll = campaign.roll;
     let mut g = c.benchmark_group("diagnose");
     g.sample_size(10);
     g.bench_function("replay_racing_log_460s_stiff_axles", |b| {

@@ -5,7 +5,8 @@
 //! verdict names and how far the held-out gap shrinks.
 //!
 //! `cargo run --release --example confusion_matrix [seeds] [effect ... |
-//! none] [--truth four-wheel] [--programme oval|road-course|slow-oval]
+//! none] [--truth four-wheel] [--programme oval|road-course|slow-oval|
+//! slow-oval-no-beta|slow-oval-estimated-beta|sedan-winding|racing-rear-steer]
 //! [--glitches]`
 //!
 //! With `--programme oval` or `road-course` the runs are the logged racing
@@ -14,8 +15,12 @@
 //! row for no effect and one for each effect of the library, including the
 //! longitudinal and bank-profile ones. With `--programme slow-oval` (the
 //! Putnam-like light racing car at 5–21 m/s on a 20° banked oval, no rig
-//! data, sideslip and no ay, 20 s pieces) the rows are no effect,
-//! `bank_profile`, `steer_path` and the two together.
+//! data, sideslip and no ay, 20 s pieces) and its variants without `beta`
+//! or with an estimated `beta` the rows are no effect, `bank_profile`,
+//! `steer_path` and the two together. The analogues of real logs
+//! (`sedan-winding`, `racing-rear-steer`) have what they reproduce built
+//! into their car and logger: one row, no effect switched on, the verdict
+//! on the analogue itself.
 //!
 //! With `--truth four-wheel` the car is the independent four-wheel model
 //! with roll and its own tyre ([`handling::proving_ground::four_wheel`]): one
@@ -62,7 +67,14 @@ fn main() -> anyhow::Result<()> {
     let mut truths: Vec<Vec<EffectKind>> = vec![Vec::new()];
     if args.iter().skip(1).any(|a| a == "none") {
         // `none`: the no-effect row alone.
-    } else if chosen.is_empty() && programme == Programme::SlowOval {
+    } else if chosen.is_empty()
+        && matches!(
+            programme,
+            Programme::SedanWinding | Programme::RacingRearSteer
+        )
+    {
+        // The analogue alone: its failure is built in.
+    } else if chosen.is_empty() && programme.slow_oval() {
         truths.push(vec![EffectKind::BankProfile]);
         truths.push(vec![EffectKind::SteerPath]);
         truths.push(vec![EffectKind::BankProfile, EffectKind::SteerPath]);
@@ -120,7 +132,7 @@ fn main() -> anyhow::Result<()> {
                 g.runs = runs;
                 let listed = report.glitches.len();
                 g.cleaning = report;
-                let v = diagnose(&g, None)?.verdict.effects;
+                let v = diagnose(&g, None)?.verdict.effects().to_vec();
                 Some((
                     if v.is_empty() {
                         "—".into()
@@ -142,16 +154,16 @@ fn main() -> anyhow::Result<()> {
             let after = d
                 .ranking
                 .iter()
-                .find(|r| r.effects == d.verdict.effects)
+                .find(|r| r.effects == d.verdict.effects())
                 .or(d
                     .combinations
                     .iter()
-                    .find(|r| r.effects == d.verdict.effects))
+                    .find(|r| r.effects == d.verdict.effects()))
                 .map_or(d.gap.heldout_error, |r| r.heldout_error_after);
             let truth_params: Vec<f64> = spec.effects.iter().flat_map(|(_, p)| p.clone()).collect();
             let fitted: Vec<String> = d
                 .verdict
-                .parameters
+                .parameters()
                 .iter()
                 .map(|p| {
                     format!(
@@ -164,10 +176,10 @@ fn main() -> anyhow::Result<()> {
             print!(
                 "| {} | {seed} | {} | {} | {:.2} → {:.2} ({:.2}) | {:.0} | {} ({:?}) | {:.1} |",
                 s.name(),
-                if d.verdict.effects.is_empty() {
+                if d.verdict.effects().is_empty() {
                     "—".into()
                 } else {
-                    joined(&d.verdict.effects, "+")
+                    joined(d.verdict.effects(), "+")
                 },
                 conf.join(", "),
                 d.gap.heldout_error,
@@ -176,7 +188,7 @@ fn main() -> anyhow::Result<()> {
                 d.ranking
                     .iter()
                     .chain(&d.combinations)
-                    .find(|r| r.effects == d.verdict.effects)
+                    .find(|r| r.effects == d.verdict.effects())
                     .map_or(0.0, |r| r.reduction_percent),
                 fitted.join(", "),
                 truth_params,

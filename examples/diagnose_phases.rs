@@ -114,7 +114,7 @@ fn main() -> anyhow::Result<()> {
     print(&t, cpu);
     let screened: Vec<&str> = d.screened.iter().map(|s| s.effect.as_str()).collect();
     println!("screened: {}", screened.join(", "));
-    println!("verdict: {}", joined(&d.verdict.effects, "+"));
+    println!("verdict: {}", joined(d.verdict.effects(), "+"));
     for r in &d.ranking {
         println!(
             "  {:<28} held out {:>6.1} %  in sample {:>6.1} %",

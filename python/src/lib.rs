@@ -750,6 +750,16 @@ fn diagnose(py: Python<'_>, campaign: PathBuf, out: Option<PathBuf>) -> PyResult
     json(&r)
 }
 
+/// The cases a diagnosis's verdict can be (`verdict.kind` in
+/// `diagnosis.json`), as the library names them.
+#[pyfunction]
+fn verdict_kinds() -> Vec<&'static str> {
+    handling::diagnose::VerdictKind::ALL
+        .iter()
+        .map(|k| k.name())
+        .collect()
+}
+
 /// The virtual proving ground: writes a campaign folder `out` measured on
 /// a truth model with the named effects on, driving `programme`
 /// (`handling`, `oval` or `road-course`); report JSON.
@@ -827,6 +837,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study, m)?)?;
     m.add_function(wrap_pyfunction!(identify, m)?)?;
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
+    m.add_function(wrap_pyfunction!(verdict_kinds, m)?)?;
     m.add_function(wrap_pyfunction!(synth, m)?)?;
     m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(toml_file_json, m)?)?;

@@ -134,6 +134,21 @@ def test_diagnosis_is_typed_and_equals_its_json(tmp_path):
     written = json.loads((tmp_path / "d" / "diagnosis.json").read_text())
     assert d.to_dict() == written
     assert d.verdict.statement == written["verdict"]["statement"]
+    # The verdict is typed: its case, and the figures of that case.
+    assert d.verdict.kind is handling.VerdictKind.EXPLAINED
+    assert written["verdict"]["kind"] == "explained"
+    assert d.verdict.heldout_error == written["gap"]["heldout_error"]
+    assert d.verdict.noise_level == written["gap"]["noise_level"]
+    best = next(x for x in d.ranking if x.effects == ["sensor_bias"])
+    assert d.verdict.reduction_percent == best.reduction_percent
+    assert d.verdict.heldout_error_after == best.heldout_error_after
+    assert d.verdict.partial is (best.reduction_percent < 50.0)
+    assert d.verdict.refused is None and d.verdict.threshold is None
+    assert [w["kind"] for w in d.verdict.warning_details] == [
+        "channel_worsened" for _ in d.verdict.warnings
+    ]
+    assert all(isinstance(x.warning_details, list) for x in d.ranking)
+    assert len(d.note_details) == len(d.notes)
     assert [x.effect for x in d.ranking] == [x["effect"] for x in written["ranking"]]
     assert pickle.loads(pickle.dumps(d)) == d
     assert (d.campaign, d.runs, d.folds) == (written["campaign"], written["runs"], written["folds"])
@@ -143,3 +158,38 @@ def test_the_dask_extra_brings_distributed():
     # `pip install "./python[dask]"` must bring what the Dask examples import.
     reqs = [r.replace(" ", "").replace("'", '"') for r in importlib.metadata.requires("handling") or []]
     assert any(r.startswith("dask[distributed]") and 'extra=="dask"' in r for r in reqs), reqs
+
+
+def test_verdict_kinds_are_the_librarys():
+    # Python's cases are the library's, by name.
+    assert [k.value for k in handling.VerdictKind] == handling._handling.verdict_kinds()
+
+
+def test_a_verdict_without_effects_says_its_case_and_why(tmp_path):
+    # No gap: the case and its threshold, no effects; a refused best
+    # candidate comes back typed from the JSON a verdict outside the
+    # library writes.
+    c = tmp_path / "none"
+    handling.synth(c, [], seed=4)
+    with open(c / "vehicle.toml", "a") as f:
+        f.write('effects = ["sensor_bias"]\n')
+    d = handling.diagnose(c, out=tmp_path / "d")
+    assert d.verdict.kind is handling.VerdictKind.NO_SIGNIFICANT_GAP
+    assert d.verdict.effects == [] and d.verdict.parameters == []
+    assert d.verdict.threshold == 1.3
+    assert d.verdict.statement.startswith("no significant gap")
+    outside = dict(
+        d.to_dict()["verdict"],
+        kind="outside_library",
+        refused={
+            "effects": ["sensor_bias"],
+            "reduction_percent": 53.5,
+            "why": [{"kind": "axles_no_tyre", "no_tyre": []}],
+        },
+        threshold_percent=30.0,
+    )
+    v = handling.Verdict.from_dict(outside)
+    assert v.kind is handling.VerdictKind.OUTSIDE_LIBRARY
+    assert isinstance(v.refused, handling.Refused)
+    assert v.refused.reasons == ["axles_no_tyre"] and v.refused.reduction_percent == 53.5
+    assert pickle.loads(pickle.dumps(v)) == v

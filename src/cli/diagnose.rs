@@ -84,10 +84,15 @@ pub struct SynthArgs {
     /// What the driver does: `handling` (steps, a ramp and a sweep at
     /// constant speed, 100 Hz), `oval` (a 20° banked oval with braking,
     /// throttle and a standstill on the banking, 25 Hz, ax and bank
-    /// channels), `road-course` (trail braking, cambered corners, 25 Hz)
-    /// or `slow-oval` (a light racing car at 5–21 m/s on a 20° banked
+    /// channels), `road-course` (trail braking, cambered corners, 25 Hz),
+    /// `slow-oval` (a light racing car at 5–21 m/s on a 20° banked
     /// oval with a standstill, 25 Hz, ax, beta and bank, no ay, no rig
-    /// data, 20 s pieces).
+    /// data, 20 s pieces), `slow-oval-no-beta` and
+    /// `slow-oval-estimated-beta` (the same without beta, or with a beta
+    /// as a state estimator gives it), or the analogues of real logs:
+    /// `sedan-winding` (a 2.3 t sedan driven by hand on a winding track,
+    /// 100 Hz, with a logger's offsets) and `racing-rear-steer` (the
+    /// Putnam log's car on a road course, its rear steering with roll).
     #[arg(long, default_value = "handling", value_parser = Programme::from_str)]
     programme: Programme,
     /// Campaign folder to create.

@@ -1,12 +1,14 @@
 //! A test campaign as the sim-to-real diagnosis takes it: the vehicle, its
 //! road, where the base tyres come from, the measured runs (already checked
-//! and cleaned) and the diagnosis's settings. `crate::io::campaign` reads
+//! and cleaned), the sensor offsets their standstills and straights showed
+//! before the cleaning, and the diagnosis's settings. `crate::io::campaign` reads
 //! and checks campaign files and folders into it (`FORMATS.md`); the
 //! virtual proving ground ([`crate::proving_ground`]) builds one in memory.
 //! Units: SI, rad.
 
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
+use crate::measured::calibration::CalibrationReport;
 use crate::measured::clean::{CleaningReport, DEFAULT_MIN_SPEED};
 use crate::measured::MeasuredRun;
 use crate::optim::local::Derivatives;
@@ -111,4 +113,6 @@ pub struct Campaign {
     pub notes: Vec<String>,
     /// Glitches, slow spans and pieces found while cleaning the runs.
     pub cleaning: CleaningReport,
+    /// Sensor offsets from the standstills and straights of the raw runs.
+    pub calibration: CalibrationReport,
 }

@@ -8,12 +8,12 @@
 //! | room | question |
 //! |---|---|
 //! | [`campaign`] | what the diagnosis is given: vehicle, base tyres, runs, settings |
-//! | [`effects`] | which candidate effects exist: parameters, units, bounds, off values, signatures, sensors |
+//! | [`effects`] | which candidate effects exist: each defined once (parameters, units, bounds, off values, signature, needs, truth, how it sets the vehicle model's effects) |
 //! | `model` | how a run is replayed: the augmented model, its axle characteristics, the measured channels, a run made ready for replays |
 //! | `fit` | how a parameter vector is fitted: the output-error problem, its layout, exact Jacobians, swarm and Levenberg–Marquardt, the fold refits |
 //! | `base` | how the base model is found: given tyres, a rig fit, or axles identified from the runs |
-//! | `verdict` | how the verdict is chosen: candidates scored on held-out runs, screening, the search and its acceptance rules |
-//! | `report` | what the report says: its types, where the gap lies (per run, channel, window, regime), the tables and words |
+//! | `verdict` | how the verdict is chosen: candidates scored on held-out runs, screening, the search, its rules as pure functions, and the verdict's case |
+//! | [`report`] | what the report says: its types, the typed outcome (the verdict's cases, refusals, warnings, notes), where the gap lies (per run, channel, window, regime), the tables, and the words made from them in one place |
 //! | [`pipeline`] | the stages in order, and [`timing`] where their time goes |
 //!
 //! The virtual proving ground that generates campaigns with known effects
@@ -21,7 +21,8 @@
 //! [`crate::proving_ground`].
 //!
 //! The public surface is what the command line, the benches, the tests and
-//! the Python package use: [`diagnose`] and its [`Diagnosis`], the
+//! the Python package use: [`diagnose`] and its [`Diagnosis`] with the
+//! report's types ([`Verdict`], [`Ranked`], …, and their words), the
 //! campaign's types, the effects, and the replay of a run ([`Prepared`],
 //! [`Augmented`]) the benches time.
 
@@ -31,12 +32,14 @@ pub mod effects;
 mod fit;
 pub(crate) mod model;
 pub mod pipeline;
-pub(crate) mod report;
+pub mod report;
 pub mod timing;
 mod verdict;
 
 pub use base::identify::{AxleIdentification, AxleLimit, AxleValue};
 pub use campaign::{BaseTyres, Campaign, DiagnoseSettings};
+pub use model::channels::Channel;
 pub use model::replay::Prepared;
 pub use model::Augmented;
 pub use pipeline::{diagnose, diagnose_timed, Diagnosis};
+pub use report::{Ranked, Verdict, VerdictKind};

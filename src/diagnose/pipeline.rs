@@ -30,38 +30,40 @@
 //!    accepted one's G are reported as confounded with it, with the
 //!    experiment that would separate them.
 //!    A gap below [`SIGNIFICANT`]·J_n is no gap: the verdict is empty.
-//!    The search, the ranking against the base model and the verdict in
-//!    words are in `search.rs`, with its thresholds.
+//!    The search and the ranking against the base model are in
+//!    `search.rs`, its rules and thresholds in `rules.rs`, the verdict's
+//!    case in `conclude.rs`; the report words it (`report/words.rs`).
 //!
 //! This file runs the steps in order ([`diagnose`]) and assembles the
 //! report ([`crate::diagnose::report`]).
 //!
 //! Units: SI, rad; J is dimensionless (residuals over channel scales).
 //!
-//! [`ACCEPT`]: crate::diagnose::verdict::search::ACCEPT
-//! [`PROMISING`]: crate::diagnose::verdict::search::PROMISING
-//! [`CONFOUNDED`]: crate::diagnose::verdict::search::CONFOUNDED
-//! [`CONFOUNDED_NOISE`]: crate::diagnose::verdict::search::CONFOUNDED_NOISE
-//! [`SIGNIFICANT`]: crate::diagnose::verdict::search::SIGNIFICANT
+//! [`ACCEPT`]: crate::diagnose::verdict::rules::ACCEPT
+//! [`PROMISING`]: crate::diagnose::verdict::rules::PROMISING
+//! [`CONFOUNDED`]: crate::diagnose::verdict::rules::CONFOUNDED
+//! [`CONFOUNDED_NOISE`]: crate::diagnose::verdict::rules::CONFOUNDED_NOISE
+//! [`SIGNIFICANT`]: crate::diagnose::verdict::rules::SIGNIFICANT
 
 pub use crate::diagnose::report::summary::observed_channel;
 pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
+use crate::diagnose::report::{GapFinding, Note, Unseen};
 
-use crate::diagnose::base::{base_models, Bases};
+use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{EffectKind, EffectSet, Needs};
+use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
 use crate::diagnose::timing::{Recorder, Timing};
+use crate::diagnose::verdict::conclude::verdict;
+use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{
-    baseline, confounded_with, search, verdict_of, worsened, Baseline, Search, SIGNIFICANT,
-};
+use crate::diagnose::verdict::search::{baseline, confounded_with, search, Search};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::road::RoadGeometry;
@@ -171,7 +173,7 @@ const VISIBLE_AX: f64 = 0.5;
 /// The campaign's candidate effects that its runs can show, and a note for
 /// each one left out (an effect of braking and throttle without a
 /// longitudinal acceleration, a bank profile without a `bank` channel).
-fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
+fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
     // The acceleration the replays use: the measured ax, else the
     // smoothed speed derivative (a raw difference of a noisy speed would
     // admit braking effects on constant-speed runs).
@@ -187,14 +189,16 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
         .iter()
         .copied()
         .filter(|e| {
-            let why = match e.needs() {
-                Needs::LongitudinalAcceleration if !accelerates => format!(
-                    "no run has a longitudinal acceleration above {VISIBLE_AX} m/s² (an ax channel or a changing speed)"
-                ),
-                Needs::BankChannel if !banked => "no run has a bank channel".to_string(),
+            let lacks = match e.needs() {
+                Needs::LongitudinalAcceleration if !accelerates => {
+                    Unseen::LongitudinalAcceleration {
+                        threshold: VISIBLE_AX,
+                    }
+                }
+                Needs::BankChannel if !banked => Unseen::BankChannel,
                 _ => return true,
             };
-            notes.push(format!("{}: not a candidate: {why}", e.name()));
+            notes.push(Note::NotACandidate { effect: *e, lacks });
             false
         })
         .collect();
@@ -207,10 +211,10 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
         .filter(|r| r.bank.is_some() && r.beta.is_none() && r.ay.is_none())
         .count();
     if blind > 0 && matches!(c.tyres, crate::diagnose::campaign::BaseTyres::FromRuns) {
-        notes.push(format!(
-            "bank_profile: {blind} of {} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them",
-            c.runs.len()
-        ));
+        notes.push(Note::BankOnlyInYawRate {
+            runs: blind,
+            of: c.runs.len(),
+        });
     }
     (effects, notes)
 }
@@ -218,7 +222,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<String>) {
 /// A note on the runs the base model is too stiff to replay by RK4 on the
 /// campaign's `step`, which it replays by ROS34PW2
 /// ([`crate::diagnose::model::replay::Prepared::drive_for`]); every fit picks per model.
-fn grid_note(ctx: &Context, step: f64) -> Option<String> {
+fn grid_note(ctx: &Context, step: f64) -> Option<Note> {
     let stiff = ctx
         .runs
         .iter()
@@ -226,11 +230,10 @@ fn grid_note(ctx: &Context, step: f64) -> Option<String> {
             r.drive_for(&ctx.bases.all).method == crate::diagnose::model::FixedStep::RosenbrockW
         })
         .count();
-    (stiff > 0).then(|| {
-        format!(
-            "replay method: the base model is too stiff for RK4 at the {step} s step on {stiff} of {} runs, replayed by the linearly implicit ROS34PW2 at that step",
-            ctx.runs.len()
-        )
+    (stiff > 0).then_some(Note::StiffReplay {
+        step,
+        runs: stiff,
+        of: ctx.runs.len(),
     })
 }
 
@@ -245,69 +248,46 @@ fn base_gaps(c: &Campaign, all: &Augmented) -> Vec<RunGap> {
 /// The held-out replays of every run by the base model and by the
 /// verdict's (the base's again without a verdict).
 fn before_after(ctx: &Context, chosen: Option<&Scored>) -> (Vec<Observed>, Vec<Observed>) {
-    let base_obs = ctx.heldout_observed(None, &EffectSet::default());
+    let base_obs = ctx.heldout_observed(None);
     let after_obs = match chosen {
-        Some(sc) => ctx.heldout_observed(Some(sc), &EffectSet::default()),
+        Some(sc) => ctx.heldout_observed(Some(sc)),
         None => base_obs.clone(),
     };
     (base_obs, after_obs)
 }
 
-/// The verdict in words ([`verdict_of`]) with its warnings: the channels
-/// the verdict's effects leave worse on held-out runs, and a base that is
-/// no tyre (the axles identified from the runs, when they are not one).
-fn verdict_with_warnings(
-    chosen: Option<&Scored>,
-    base: &Baseline,
-    significant: bool,
-    ranking: &[Ranked],
-    shrinkage: &[Shrinkage],
-    bases: &Bases,
-) -> Verdict {
-    let degenerate = bases
-        .identification
-        .as_ref()
-        .and_then(|i| i.degenerate.as_deref());
-    let mut verdict = verdict_of(chosen, base, significant, ranking, degenerate);
-    if chosen.is_some() {
-        verdict.warnings = worsened(shrinkage);
-        if let Some(why) = degenerate {
-            verdict.warnings.push(format!(
-                "the base model alone is no tyre ({why}); the reductions are measured against it, and with the verdict's effects the axles are a tyre"
-            ));
-        }
-    }
-    verdict
-}
-
-/// The gap's findings in words ([`gap_summary`]), with a note on the runs
-/// without an ay channel.
-fn gap_lines(
+/// The gap's findings ([`gap_summary`]), with the runs without an ay
+/// channel.
+fn gap_findings(
     c: &Campaign,
     run_gaps: &[RunGap],
     parts: &[Shrinkage],
     significant: bool,
     j0: f64,
     jn: f64,
-) -> Vec<String> {
-    let mut summary = gap_summary(run_gaps, parts, significant, j0, jn);
+) -> Vec<GapFinding> {
+    let mut findings = gap_summary(run_gaps, parts, significant, j0, jn);
     let without_ay = c.runs.iter().filter(|r| r.ay.is_none()).count();
     if without_ay > 0 {
-        summary.push(format!(
-            "|ay| levels are u·r on the {without_ay} of {} runs without an ay channel",
-            c.runs.len()
-        ));
+        findings.push(GapFinding::WithoutAy {
+            runs: without_ay,
+            of: c.runs.len(),
+        });
     }
-    summary
+    findings
 }
 
-/// The base model as reported: where its tyres come from (`tyres`), the
-/// all-run tyres and, for tyres identified from the runs, the axles.
-fn base_report(bases: &Bases, tyres: String, rig_grouping: Option<GroupingReport>) -> BaseReport {
+/// The base model as reported: where its tyres come from, the all-run
+/// tyres and, for tyres identified from the runs, the axles.
+fn base_report(
+    bases: &Bases,
+    source: TyreSource,
+    rig_grouping: Option<GroupingReport>,
+) -> BaseReport {
     BaseReport {
-        tyres,
-        front: bases.all.base.front.clone(),
-        rear: bases.all.base.rear.clone(),
+        source,
+        front: bases.all.model.front.clone(),
+        rear: bases.all.model.rear.clone(),
         rig_grouping,
         axles: bases.identification.clone(),
     }
@@ -356,10 +336,14 @@ fn run(
     };
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
-    let significant = j0 > SIGNIFICANT * jn;
+    let significant = rules::significant(j0, jn);
     let (effects, mut notes) = visible_effects(c);
     notes.extend(grid_note(&ctx, set.step));
-    notes.splice(0..0, c.notes.iter().cloned());
+    let read = c
+        .notes
+        .iter()
+        .map(|text| Note::Campaign { text: text.clone() });
+    notes.splice(0..0, read);
     let (singles, order, screened, screened_rows) =
         singles(&ctx, &effects, &base, set.screening, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
@@ -379,9 +363,21 @@ fn run(
     let (base_obs, after_obs) = before_after(&ctx, chosen);
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
     let parts = parts_table(&c.runs, &ctx.runs, &base_obs, &base_obs, &floors);
-    let verdict = verdict_with_warnings(chosen, &base, significant, &ranking, &shrinkage, &bases);
+    let base_no_tyre = bases
+        .identification
+        .as_ref()
+        .map_or_else(Vec::new, |i| i.no_tyre.clone());
+    let ranked = (&singles[..], &order[..]);
+    let verdict = verdict(
+        &found,
+        ranked,
+        &base,
+        significant,
+        &shrinkage,
+        &base_no_tyre,
+    );
     let overlays = overlays(&ctx, &base_obs, &after_obs);
-    let summary = gap_lines(c, &run_gaps, &parts, significant, j0, jn);
+    let findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     Ok(Diagnosis {
         campaign: c.name.clone(),
         seed: set.seed,
@@ -390,6 +386,7 @@ fn run(
         folds: ctx.folds.len(),
         notes,
         cleaning: c.cleaning.clone(),
+        calibration: c.calibration.clone(),
         road: c
             .runs
             .iter()
@@ -404,7 +401,7 @@ fn run(
             noise,
             parts,
             runs: run_gaps,
-            summary,
+            findings,
         },
         ranking,
         screened: screened_rows,

@@ -15,7 +15,10 @@
 //! local minimum of |h| for pairs of roots inside one cell (and double roots,
 //! exactly at a fold). Where h vanishes identically over an interval (tyres
 //! whose sliding force does not fall with slip, both axles sliding) the
-//! interval is reported as a continuum of equilibria, not as roots.
+//! interval is reported as a continuum of equilibria, not as roots. The
+//! road's friction is the condition's, scaled by the model's effects
+//! ([`crate::vehicle::Effects::friction_scale`], 1 unless a program sets
+//! it), as the right-hand side scales it.
 
 use super::{describe, Condition, Equilibrium};
 use crate::tyre::{SlipState, TyreModel};
@@ -163,6 +166,11 @@ impl<'a> Reduced<'a> {
         }
     }
 
+    /// The road's friction as the model's effects scale it.
+    fn mu(&self) -> f64 {
+        self.model.options.effects.friction_scale * self.c.friction
+    }
+
     fn scan_angles() -> impl Iterator<Item = f64> {
         (0..=CELLS).map(|i| -ALPHA_MAX + 2.0 * ALPHA_MAX * i as f64 / CELLS as f64)
     }
@@ -179,7 +187,7 @@ impl<'a> Reduced<'a> {
             kappa: 0.0,
             fz,
             camber: 0.0,
-            mu_scale: self.c.friction,
+            mu_scale: self.mu(),
             speed: self.u,
         };
         tyre.lateral_force(&s(l)) + tyre.lateral_force(&s(r))
@@ -249,7 +257,7 @@ impl<'a> Reduced<'a> {
             x1 -= g1 / s;
         }
         self.last.set(None);
-        let fmax = 3.0 * self.c.friction.max(1.0) * v.mass * crate::constants::G;
+        let fmax = 3.0 * self.mu().max(1.0) * v.mass * crate::constants::G;
         let bound = 2.0 * fmax / k;
         brent(g, -bound, bound, 1e-15 * bound)
     }

@@ -1,5 +1,8 @@
 //! Local stability of an equilibrium from the eigenvalues of the 2×2
-//! Jacobian ∂(β̇, ṙ)/∂(β, r) (central differences, step 1e-7 scaled).
+//! Jacobian ∂(β̇, ṙ)/∂(β, r): exact from one evaluation of the right-hand
+//! side in dual numbers (the model's effects lifted into them, the state
+//! seeded) where the tyres have a generic force, else central differences
+//! (step 1e-7 scaled).
 
 use super::{residual, Condition};
 use crate::report::stability::Class;
@@ -86,7 +89,7 @@ pub(crate) fn exact_jacobian(
     type D = DualSVec64<4>;
     let tyres = ParamTyres::<D>::constant(&model.front, &model.rear)?;
     let inp = c.inputs();
-    let sc = model.scalars(inp.friction).lift::<D>([2, 3]);
+    let sc = model.scalars_of(model.options.effects.lift::<D>(), inp.friction, [2, 3]);
     let (beta, r) = (D::variable(x[0], 0), D::variable(x[1], 1));
     let steer = D::from(inp.steer);
     let zero = D::from(0.0);

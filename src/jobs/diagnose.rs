@@ -6,10 +6,10 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
-use crate::diagnose::effects::{joined, Bound, EffectKind};
+use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
-use crate::diagnose::report::{ParameterValue, Part};
+use crate::diagnose::report::{words, Part};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
@@ -131,8 +131,14 @@ impl DiagnoseReport {
             "{}: {runs}, {} candidate effect{plural}, seed {}{exact}",
             d.campaign, self.effects, d.seed
         )];
-        out.extend(d.notes.iter().map(|n| format!("  note: {n}")));
+        out.extend(
+            d.notes
+                .iter()
+                .map(|n| format!("  note: {}", words::note(n))),
+        );
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
+        let calibration = d.calibration.lines().into_iter();
+        out.extend(calibration.map(|l| format!("  calibration: {l}")));
         out.extend(
             d.road
                 .iter()
@@ -146,11 +152,16 @@ impl DiagnoseReport {
 
 /// The findings: base model, gap, candidates, verdict, shrinkage.
 fn findings(d: &Diagnosis) -> Vec<String> {
-    let mut out = vec![format!("base model: {}", d.base.tyres)];
+    let mut out = vec![format!("base model: {}", words::tyre_source(&d.base))];
     let rig = d.base.rig_grouping.iter().flat_map(|g| g.lines());
     out.extend(rig.map(|l| format!("  rig data: {l}")));
     out.push("where the gap lies:".into());
-    out.extend(d.gap.summary.iter().map(|s| format!("  {s}")));
+    out.extend(
+        d.gap
+            .findings
+            .iter()
+            .map(|f| format!("  {}", words::finding(f))),
+    );
     out.push(format!(
         "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",
         d.folds, d.gap.heldout_error, d.gap.noise_level
@@ -160,7 +171,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         "effect", "J after", "held out", "in sample", "ΔBIC"
     ));
     for r in d.ranking.iter().chain(d.combinations.iter()) {
-        let p: Vec<String> = r.parameters.iter().map(parameter_line).collect();
+        let p: Vec<String> = r.parameters.iter().map(words::parameter).collect();
         out.push(format!(
             "  {:<28} {:>8.3} {:>9.1} % {:>8.1} % {:>12.0}  {}",
             r.effect,
@@ -170,32 +181,32 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             r.delta_bic,
             p.join(", ")
         ));
-        if let Some(w) = &r.warning {
+        if let Some(w) = words::rank_warnings(&r.warnings) {
             out.push(format!("  {:<28} warning: {w}", ""));
         }
     }
     out.extend(screened_lines(d));
-    out.push(format!("verdict: {}", d.verdict.statement));
-    out.extend(d.verdict.warnings.iter().map(|w| format!("  warning: {w}")));
+    out.push(format!("verdict: {}", d.verdict.statement()));
+    out.extend(
+        words::verdict_warnings(&d.verdict)
+            .iter()
+            .map(|w| format!("  warning: {w}")),
+    );
     out.extend(d.confounded.iter().map(|c| {
         format!(
             "confounded: {} — separate them with {}",
             joined(&c.effects, ", "),
-            c.separating_test
+            words::separating_test(c)
         )
     }));
-    if !d.verdict.effects.is_empty() {
+    if !d.verdict.effects().is_empty() {
         out.push("held-out before → after (all samples):".into());
-        out.extend(d.shrinkage.iter().filter(|s| s.part == Part::All).map(|s| {
-            format!(
-                "  {:<9} {:.4} → {:.4} (noise floor {:.4}): {:.0} % of the gap above noise removed",
-                s.channel.name(),
-                s.before,
-                s.after,
-                s.noise_floor,
-                s.reduction_percent
-            )
-        }));
+        out.extend(
+            d.shrinkage
+                .iter()
+                .filter(|s| s.part == Part::All)
+                .map(|s| format!("  {}", words::channel_change(s))),
+        );
     }
     out
 }
@@ -236,7 +247,7 @@ fn gap_map(d: &Diagnosis) -> Figure {
             })
         })
         .collect();
-    gap_figure(&d.verdict.effects, &points)
+    gap_figure(d.verdict.effects(), &points)
 }
 
 /// One point of the gap map: a channel's held-out RMS over its noise floor
@@ -364,9 +375,9 @@ fn overlays(d: &Diagnosis) -> Figure {
                 Series::line("base model", &o.t, observed_channel(&o.base, *ch), 1)
                     .styled(Style::Dashed),
             ];
-            if !d.verdict.effects.is_empty() {
+            if !d.verdict.effects().is_empty() {
                 series.push(Series::line(
-                    &format!("with {}", joined(&d.verdict.effects, " + ")),
+                    &format!("with {}", joined(d.verdict.effects(), " + ")),
                     &o.t,
                     observed_channel(&o.after, *ch),
                     2,
@@ -387,59 +398,6 @@ fn overlays(d: &Diagnosis) -> Figure {
         columns: 2,
         width: 1400,
         row_height: 280,
-    }
-}
-
-/// A fitted parameter in words: its value, unit and standard error, or
-/// the bound it stands on — a search bound (the data would take it
-/// further) or a physical limit (a length, a share, a load that would be
-/// negative beyond it). A steering compliance, fitted in rad/kN, is given
-/// in rad/N too: the unit of `steering_compliance` in a scenario's
-/// `[model.effects]`.
-fn parameter_line(p: &ParameterValue) -> String {
-    let unit = if p.unit == "rad/kN" {
-        format!("rad/kN ({} rad/N)", value(p.value * 1e-3))
-    } else {
-        p.unit.to_string()
-    };
-    let Some(bound) = p.bound else {
-        return if p.std_error.is_finite() {
-            format!(
-                "{} = {} ± {:.2e} {unit}",
-                p.name,
-                value(p.value),
-                p.std_error
-            )
-        } else {
-            // No standard error: the runs cannot see it (a channel they
-            // lack, a parameter pinned by another).
-            format!(
-                "{} = {} {unit} (no standard error: not identifiable from these runs)",
-                p.name,
-                value(p.value)
-            )
-        };
-    };
-    let why = match bound {
-        Bound::Search => "at its search bound: the data would take it further",
-        // Every lower physical limit is 0 (a length, a delay, a share, a
-        // down-force); the upper ones are a share's 1.
-        Bound::Physical if p.value <= 0.0 => {
-            "at its physical limit: any smaller value would be negative"
-        }
-        Bound::Physical => "at its physical limit: a share cannot exceed 1",
-    };
-    format!("{} = {} {unit} ({why})", p.name, value(p.value))
-}
-
-/// A fitted value: below 0.01 to four significant digits (a steering
-/// compliance of 8.9e-5 rad/kN printed as 0.0001 would hide what was
-/// fitted), else to four decimals.
-fn value(v: f64) -> String {
-    if v != 0.0 && v.abs() < 0.01 {
-        format!("{v:.3e}")
-    } else {
-        format!("{v:.4}")
     }
 }
 
@@ -501,64 +459,5 @@ mod tests {
                 assert!(!s.label.contains(ch.name()), "{}", s.label);
             }
         }
-    }
-
-    fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> ParameterValue {
-        ParameterValue {
-            name: name.into(),
-            unit,
-            value: v,
-            std_error: f64::NAN,
-            at_bound: bound.is_some(),
-            bound,
-        }
-    }
-
-    #[test]
-    fn a_parameter_on_a_physical_limit_is_not_worded_as_a_search_bound() {
-        // No negative down-force: aero's lower bound is a physical limit.
-        for q in EffectKind::AeroLoad.parameters() {
-            assert_eq!(q.bound_at(0.0), Some(Bound::Physical), "{}", q.name);
-            assert_eq!(q.bound_at(q.bounds.1), Some(Bound::Search), "{}", q.name);
-        }
-        let at = |v, b| {
-            parameter_line(&fitted(
-                "aero_load.front",
-                "N/(m/s)^2",
-                v,
-                EffectKind::AeroLoad.parameters()[0].bound_at(b),
-            ))
-        };
-        let floor = at(0.0, 0.0);
-        assert_eq!(
-            floor,
-            "aero_load.front = 0.0000 N/(m/s)^2 (at its physical limit: any smaller value would be negative)"
-        );
-        assert!(at(6.0, 6.0).contains("at its search bound: the data would take it further"));
-        let share = parameter_line(&fitted(
-            "load_transfer_distribution.front_share",
-            "-",
-            1.0,
-            Some(Bound::Physical),
-        ));
-        assert!(
-            share.ends_with("(at its physical limit: a share cannot exceed 1)"),
-            "{share}"
-        );
-    }
-
-    #[test]
-    fn a_steering_compliance_is_given_in_the_unit_of_its_scenario_key_too() {
-        let mut p = fitted(
-            "steering_compliance.steer_per_front_force",
-            "rad/kN",
-            0.003,
-            None,
-        );
-        p.std_error = 2e-4;
-        assert_eq!(
-            parameter_line(&p),
-            "steering_compliance.steer_per_front_force = 3.000e-3 ± 2.00e-4 rad/kN (3.000e-6 rad/N)"
-        );
     }
 }

@@ -6,7 +6,7 @@
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
 use crate::diagnose::effects::joined;
-use crate::diagnose::report::{ParameterValue, Part, Ranked, Shrinkage};
+use crate::diagnose::report::{words, ChannelChange, Part, Ranked, Shrinkage};
 use crate::diagnose::Diagnosis;
 use crate::error::Error;
 use crate::report::html::{Cell, Page};
@@ -16,11 +16,8 @@ use std::path::Path;
 /// Cleaning lines shown in full before the rest is counted.
 const CLEANING_LINES: usize = 40;
 
-/// A channel's held-out gap is significant above this many noise floors
-/// (the gap's rule, and the dashed line of the gap map).
-const SIGNIFICANT_NOISE_FLOORS: f64 = 3.0;
-
-/// What a reduction cell says where there is no significant gap to reduce.
+/// What a ranking's reduction cell says where the campaign has no
+/// significant gap to reduce.
 const NOT_SIGNIFICANT: &str = "not significant";
 
 /// What the page says of the campaign beside the diagnosis.
@@ -58,13 +55,18 @@ pub fn page(
         ),
     );
     p.section("verdict", "Verdict")
-        .paragraph("verdict", &d.verdict.statement);
-    if !d.verdict.parameters.is_empty() {
-        let fitted: Vec<String> = d.verdict.parameters.iter().map(parameter).collect();
+        .paragraph("verdict", &d.verdict.statement());
+    if !d.verdict.parameters().is_empty() {
+        let fitted: Vec<String> = d
+            .verdict
+            .parameters()
+            .iter()
+            .map(words::parameter)
+            .collect();
         p.paragraph("verdict", &format!("Fitted: {}.", fitted.join("; ")));
     }
-    for w in &d.verdict.warnings {
-        p.paragraph("warning", w);
+    for w in words::verdict_warnings(&d.verdict) {
+        p.paragraph("warning", &w);
     }
     for c in &d.confounded {
         p.paragraph(
@@ -75,17 +77,15 @@ pub fn page(
                 joined(&c.effects, " and ")
             ),
         );
-        let tests: Vec<String> = c
-            .effects
-            .iter()
-            .map(|e| format!("{}: {}", e.name(), e.signature()))
-            .collect();
+        let tests: Vec<String> = c.effects.iter().map(|e| words::signatures(&[*e])).collect();
         p.lines(&tests);
     }
     if !d.notes.is_empty() {
-        p.section("notes", "Notes on the inputs").lines(&d.notes);
+        let notes: Vec<String> = d.notes.iter().map(words::note).collect();
+        p.section("notes", "Notes on the inputs").lines(&notes);
     }
-    p.section("gap", "Where the gap lies").lines(&d.gap.summary);
+    let findings: Vec<String> = d.gap.findings.iter().map(words::finding).collect();
+    p.section("gap", "Where the gap lies").lines(&findings);
     p.figure(
         "gap-map",
         gap_map,
@@ -111,7 +111,8 @@ pub fn page(
 /// values.
 fn base(p: &mut Page, d: &Diagnosis) {
     let b = &d.base;
-    p.section("base", "Base model").paragraph("", &b.tyres);
+    p.section("base", "Base model")
+        .paragraph("", &words::tyre_source(b));
     if let Some(g) = &b.rig_grouping {
         p.lines(&g.lines());
     }
@@ -125,7 +126,10 @@ fn base(p: &mut Page, d: &Diagnosis) {
                 Cell::Number(number(a.value)),
                 Cell::Number(number(a.std_error)),
                 Cell::Text(a.unit.into()),
-                Cell::Text(a.limit.map_or_else(String::new, |l| l.meaning(a.name))),
+                Cell::Text(
+                    a.limit
+                        .map_or_else(String::new, |l| words::limit_meaning(l, a.name)),
+                ),
             ]
         })
         .collect();
@@ -134,7 +138,8 @@ fn base(p: &mut Page, d: &Diagnosis) {
         &["parameter", "value", "standard error", "unit", "limit"],
         &rows,
     );
-    if let Some(why) = &axles.degenerate {
+    if axles.degenerate() {
+        let why = words::no_tyre_list(&axles.no_tyre);
         p.paragraph("warning", &format!("degenerate base: {why}"));
     }
 }
@@ -145,7 +150,7 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
     let verdict = all
         .iter()
         .copied()
-        .find(|r| !d.verdict.effects.is_empty() && same_effects(r, &d.verdict.effects));
+        .find(|r| !d.verdict.effects().is_empty() && same_effects(r, d.verdict.effects()));
     let rows: Vec<Vec<Cell>> = all.iter().map(|r| ranked_row(r, d, verdict)).collect();
     p.section("ranking", "Candidates on held-out runs");
     p.paragraph(
@@ -204,7 +209,7 @@ fn same_effects(r: &Ranked, effects: &[crate::diagnose::effects::EffectKind]) ->
 }
 
 fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> {
-    let params: Vec<String> = r.parameters.iter().map(parameter).collect();
+    let params: Vec<String> = r.parameters.iter().map(words::parameter).collect();
     let reduction = |x: f64| {
         if d.gap.significant {
             Cell::Number(format!("{x:.1}"))
@@ -220,7 +225,7 @@ fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> 
         Cell::Number(format!("{:.0}", r.delta_bic)),
         Cell::Number(format!("{} of {}", r.folds_converged, r.folds)),
         Cell::Text(params.join("; ")),
-        Cell::Text(r.warning.clone().unwrap_or_default()),
+        Cell::Text(words::rank_warnings(&r.warnings).unwrap_or_default()),
         Cell::Text(verdict_role(r, verdict, d.gap.noise_level)),
     ]
 }
@@ -249,18 +254,6 @@ fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> Strin
     }
 }
 
-/// A fitted parameter with its standard error or the bound it sits on.
-fn parameter(p: &ParameterValue) -> String {
-    let v = number(p.value);
-    if p.bound.is_some() {
-        format!("{} = {v} {} (on a bound)", p.name, p.unit)
-    } else if p.std_error.is_finite() {
-        format!("{} = {v} ± {} {}", p.name, number(p.std_error), p.unit)
-    } else {
-        format!("{} = {v} {} (not identifiable)", p.name, p.unit)
-    }
-}
-
 /// Before and after per channel over all held-out samples.
 fn shrinkage(p: &mut Page, d: &Diagnosis) {
     let rows: Vec<Vec<Cell>> = d
@@ -279,10 +272,10 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
             ]
         })
         .collect();
-    let after = if d.verdict.effects.is_empty() {
+    let after = if d.verdict.effects().is_empty() {
         "no verdict: after = before".to_string()
     } else {
-        format!("after: with {}", joined(&d.verdict.effects, " + "))
+        format!("after: with {}", joined(d.verdict.effects(), " + "))
     };
     p.section("before-after", "Before and after, per channel")
         .paragraph("", &format!("Held-out RMS over all samples; {after}."))
@@ -301,16 +294,16 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
         );
 }
 
-/// The share of a channel's gap removed, or "not significant" where the
-/// base model's held-out RMS is within the noise floors: there is no gap to
-/// remove and the share would be noise.
+/// The share of a channel's gap removed (negative: added), or "not
+/// significant" where its held-out RMS is within the noise floors before
+/// and after: there is no gap to remove and the share would be noise. The
+/// rule is the verdict's warnings' ([`Shrinkage::change`]), so the page
+/// and the terminal agree.
 fn channel_reduction(s: &Shrinkage) -> Cell {
-    if s.before > SIGNIFICANT_NOISE_FLOORS * s.noise_floor {
-        Cell::Number(format!("{:.0}", s.reduction_percent))
-    } else {
-        Cell::Text(format!(
-            "{NOT_SIGNIFICANT} (within {SIGNIFICANT_NOISE_FLOORS} noise floors)"
-        ))
+    match s.change() {
+        ChannelChange::WithinNoise => Cell::Text(words::within_noise()),
+        ChannelChange::Changed(p) => Cell::Number(format!("{p:.0}")),
+        ChannelChange::Worsened(p) => Cell::Number(format!("{:.0}", -p)),
     }
 }
 

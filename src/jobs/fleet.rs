@@ -12,6 +12,7 @@ use super::shard::{
     plural, read_shards, write_shard, InputCopy, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::VerdictKind;
 use crate::error::{Error, InputError, OptionsError};
 use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json, OutputLock};
@@ -27,6 +28,9 @@ pub struct FleetRow {
     pub runs: usize,
     /// Effects of the verdict (empty: no gap, or none explains it).
     pub verdict: Vec<EffectKind>,
+    /// The verdict's case (None: failed).
+    #[serde(default)]
+    pub kind: Option<VerdictKind>,
     /// Held-out error J of the base model (None: failed).
     pub heldout_error_before: Option<f64>,
     /// Held-out J with the verdict's effects (the base model's without).
@@ -140,6 +144,7 @@ pub fn run_batch(
                 campaign: name,
                 runs: 0,
                 verdict: Vec::new(),
+                kind: None,
                 heldout_error_before: None,
                 heldout_error_after: None,
                 noise_level: None,
@@ -217,12 +222,13 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
         .ranking
         .iter()
         .chain(&d.combinations)
-        .find(|c| !d.verdict.effects.is_empty() && c.effects == d.verdict.effects)
+        .find(|c| !d.verdict.effects().is_empty() && c.effects == d.verdict.effects())
         .map_or(d.gap.heldout_error, |c| c.heldout_error_after);
     FleetRow {
         campaign: name.to_string(),
         runs: d.runs.len(),
-        verdict: d.verdict.effects.clone(),
+        verdict: d.verdict.effects().to_vec(),
+        kind: Some(d.verdict.kind()),
         heldout_error_before: Some(d.gap.heldout_error),
         heldout_error_after: Some(after),
         noise_level: Some(d.gap.noise_level),
@@ -230,7 +236,7 @@ fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
             .ranking
             .first()
             .and_then(|b| Some((*b.effects.first()?, b.reduction_percent))),
-        statement: d.verdict.statement.clone(),
+        statement: d.verdict.statement(),
         failed: false,
     }
 }
@@ -285,6 +291,7 @@ impl FleetReport {
                 "best_reduction_percent",
                 "failed",
                 "statement",
+                "kind",
             ],
             self.campaigns.iter().map(|r| {
                 vec![
@@ -298,6 +305,7 @@ impl FleetReport {
                     r.best.map_or_else(String::new, |b| format!("{:.1}", b.1)),
                     r.failed.to_string(),
                     r.statement.clone(),
+                    r.kind.map_or_else(String::new, |k| k.name().to_string()),
                 ]
             }),
         )?;

@@ -1,12 +1,14 @@
 //! Measured vehicle runs as the jobs take them (`FORMATS.md`): the run
 //! ([`MeasuredRun`]: t, speed, steer, yaw_rate required; ay, beta, roll,
-//! bank, ax optional) and its cleaning ([`clean`]: standstills, crawling and
-//! logger glitches found, repaired, masked and reported) and its
+//! bank, ax optional), the sensor offsets its standstills and straights show
+//! ([`calibration`], on the raw run), its cleaning ([`clean`]: standstills,
+//! crawling and logger glitches found, repaired, masked and reported) and its
 //! longitudinal acceleration ([`derivative`]: `ax`, else the speed's
 //! smoothed derivative). SI units,
 //! radians, ISO 8855 signs. `io` reads files into these; nothing here reads
 //! a file.
 
+pub mod calibration;
 pub mod clean;
 pub(crate) mod derivative;
 pub(crate) mod road;

@@ -30,14 +30,46 @@ pub const LONGEST_WHEELBASE: f64 = 5.0;
 /// Steered samples needed to judge the steer against the yaw rate.
 const STEER_CHECK_SAMPLES: usize = 50;
 
-/// The yaw rate over a neutral car's where the run steers: over the samples
-/// at speed (at least `min_speed` and 5 m/s) steered by at least 0.005 rad
-/// and 30 % of the 95th percentile of |δ| at speed, the median of
-/// `q = r·l/(u·δ)` and the samples; about `1/(1 + K·u²)` (0.2–1 for an
+/// A steer is held when it has stayed within this share of its value over
+/// the last [`HELD_FOR`]: the yaw rate has then followed it.
+const HELD_WITHIN: f64 = 0.1;
+
+/// How long a steer must be held, s: a car's yaw rate settles to a steer
+/// within about half a second (its yaw response time is 0.1–0.3 s).
+const HELD_FOR: f64 = 0.5;
+
+/// The samples whose steer has been held: within [`HELD_WITHIN`] of its
+/// value, same sign, over the last [`HELD_FOR`] (a full window of the
+/// record).
+fn held(t: &[f64], steer: &[f64]) -> Vec<bool> {
+    let mut out = vec![false; t.len()];
+    let mut from = 0;
+    for i in 0..t.len() {
+        while t[i] - t[from] > HELD_FOR {
+            from += 1;
+        }
+        let full = from > 0 || t[i] - t[0] >= HELD_FOR;
+        let d = steer[i];
+        out[i] = full
+            && steer[from..=i]
+                .iter()
+                .all(|&x| (x - d).abs() <= HELD_WITHIN * d.abs());
+    }
+    out
+}
+
+/// The yaw rate over a neutral car's where the run holds a steer: over the
+/// samples at speed (at least `min_speed` and 5 m/s) steered by at least
+/// 0.005 rad and 30 % of the 95th percentile of |δ| at speed, and whose
+/// steer has been held for half a second ([`held`]; where the steer moves,
+/// the yaw rate lags it and a ratio of the two measures the lag, not the
+/// units: a frequency sweep gives medians near or below zero), the median
+/// of `q = r·l/(u·δ)` and the samples; about `1/(1 + K·u²)` (0.2–1 for an
 /// understeering car, somewhat above 1 for an oversteering one). None for
 /// a run that does not steer (95th percentile below 0.01 rad: a straight
 /// run whose steer sensor sits a few milliradians off shows no gain) or
-/// with fewer than 50 steered samples.
+/// with fewer than 50 such samples. `metrics` and `diagnose` judge a run
+/// by it alike ([`steer_problem`]).
 pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<(f64, usize)> {
     let at_speed: Vec<usize> = (0..run.t.len())
         .filter(|&i| run.speed[i] >= min_speed.max(5.0))
@@ -49,9 +81,10 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         return None;
     }
     let steered = (0.3 * p95).max(0.005);
+    let held = held(&run.t, &run.steer);
     let mut q: Vec<f64> = at_speed
         .into_iter()
-        .filter(|&i| run.steer[i].abs() >= steered)
+        .filter(|&i| run.steer[i].abs() >= steered && held[i])
         .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
         .filter(|q| q.is_finite())
         .collect();
@@ -62,26 +95,43 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
     Some((median(&mut q), n))
 }
 
-/// Refuses a run whose steer is far larger than the yaw rate it gives, as
-/// the diagnosis judges it ([`yaw_per_neutral`]), with the longest
-/// wheelbase for the vehicle's: a steer in degrees or a steering-wheel
-/// angle, or a yaw rate turning against the steer.
+/// What is wrong with a run's steer, judged by the median `median` of
+/// [`yaw_per_neutral`] over `samples` held samples (`assumed_wheelbase`:
+/// the wheelbase taken where the vehicle's is not known): below
+/// −[`STEER_IN_DEGREES`] the yaw rate turns against the steer (another
+/// sign convention), below [`STEER_IN_DEGREES`] it is far smaller than a
+/// neutral car's (a steer in degrees, 57×, or a steering-wheel angle,
+/// 15×). Both refuse the run, in `metrics` and in `diagnose`: fitted, such
+/// a steer gives a model-form error that is a unit slip.
+pub fn steer_problem(
+    median: f64,
+    samples: usize,
+    assumed_wheelbase: Option<f64>,
+) -> Option<InputProblem> {
+    if median < -STEER_IN_DEGREES {
+        Some(InputProblem::YawAgainstSteer { median, samples })
+    } else if median < STEER_IN_DEGREES {
+        Some(InputProblem::SteerAboveYaw {
+            median,
+            samples,
+            assumed_wheelbase,
+        })
+    } else {
+        None
+    }
+}
+
+/// Refuses a run whose steer is far larger than the yaw rate it gives, or
+/// turns against it ([`steer_problem`]), with the longest wheelbase for
+/// the vehicle's.
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let Some((median, samples)) = yaw_per_neutral(run, LONGEST_WHEELBASE, min_speed) else {
         return Ok(());
     };
-    let problem = if median < -STEER_IN_DEGREES {
-        InputProblem::YawAgainstSteer { median, samples }
-    } else if median < STEER_IN_DEGREES {
-        InputProblem::SteerAboveYaw {
-            median,
-            samples,
-            assumed_wheelbase: Some(LONGEST_WHEELBASE),
-        }
-    } else {
-        return Ok(());
-    };
-    Err(InputError::problem(&run.path, problem))
+    match steer_problem(median, samples, Some(LONGEST_WHEELBASE)) {
+        Some(problem) => Err(InputError::problem(&run.path, problem)),
+        None => Ok(()),
+    }
 }
 
 /// The metrics of a measured run and what was measured.

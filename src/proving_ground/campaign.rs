@@ -4,12 +4,14 @@
 //! with PAC89) and as the files of the folder `handling synth` writes (its
 //! `vehicle.toml`, the rig data's columns). Units: SI, rad.
 
+use super::analogues::truth_lines;
 use super::programme::truth_downforce;
 use super::truth::Truth;
 use super::Synthetic;
 use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
+use crate::measured::calibration::calibrate;
 use crate::measured::clean::{clean_runs, segments, CleanSettings};
 use crate::proving_ground::four_wheel::FourWheelVehicle;
 use crate::tyre::ModelName;
@@ -38,9 +40,11 @@ impl Synthetic {
     /// logged programmes' runs are cleaned as `diagnose` cleans runs read
     /// from files (the oval's standstill is left out); the handling
     /// programme's runs are moving and clean throughout and go in as
-    /// generated.
+    /// generated. Every programme's runs are calibrated as generated, before
+    /// any cleaning, as `diagnose` calibrates runs read from files.
     pub fn campaign(&self, effects: Vec<EffectKind>, settings: DiagnoseSettings) -> Campaign {
         let source = PathBuf::from(format!("synthetic campaign {}", self.name()));
+        let calibration = calibrate(&self.runs);
         let (runs, cleaning) = if self.spec.programme.logged() {
             clean_runs(
                 self.runs.clone(),
@@ -82,6 +86,7 @@ impl Synthetic {
             effects,
             notes: Vec::new(),
             cleaning,
+            calibration,
         }
     }
 
@@ -109,6 +114,13 @@ impl Synthetic {
             .map(|(k, p)| format!("#   {} = {:?}", k.name(), p))
             .collect();
         let (model, roll) = match self.truth {
+            Truth::Augmented if self.roll != RollModel::default() => (
+                "UniTire tyres".to_string(),
+                format!(
+                    "# The roll below is the campaign's assumption, not the truth's.\n[roll]\ngradient = {}\nfrequency = {}\ndamping = {}\n\n",
+                    self.roll.gradient, self.roll.frequency, self.roll.damping
+                ),
+            ),
             Truth::Augmented => ("UniTire tyres".to_string(), String::new()),
             Truth::FourWheel => {
                 let t = FourWheelVehicle::sedan();
@@ -149,8 +161,18 @@ impl Synthetic {
             Some(s) => format!("[runs]\nsegment = {s}\n\n"),
             None => String::new(),
         };
+        let built_in = truth_lines(self.spec.programme);
+        let built_in = if built_in.is_empty() {
+            String::new()
+        } else {
+            let lines: Vec<String> = built_in.iter().map(|l| format!("#   {l}")).collect();
+            format!(
+                "# Built into the programme's car, driver and logger (withheld too):\n{}\n",
+                lines.join("\n")
+            )
+        };
         format!(
-            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n\
+            "# Synthetic campaign (handling synth --truth {} --programme {}), noise seed {}.\n# Truth (withheld from the diagnosis): {model}, effects:\n{}\n{built_in}\
              [vehicle]\nmass = {}\nyaw_inertia = {}\na = {}\nb = {}\ntrack_front = {}\ntrack_rear = {}\ncg_height = {}\n\n\
              {tyres}{roll}{runs}[diagnose]\nseed = {}\n{step}",
             self.truth.name(),

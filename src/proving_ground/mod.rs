@@ -24,10 +24,19 @@
 //!   Putnam log's light racing car with a little downforce of its own,
 //!   `truth_vehicle`, `truth_downforce`), logged at 25 Hz with `ax`,
 //!   `beta` and `bank` and no `ay`, no rig data (the diagnosis identifies
-//!   the axles from the runs), its runs cut into 20 s pieces.
+//!   the axles from the runs), its runs cut into 20 s pieces; the same
+//!   without `beta`, or with a `beta` as a state estimator gives it
+//!   (`estimator`);
+//! - the analogues of real logs (`analogues`): a heavy sedan driven by hand
+//!   on a winding track with a logger's offsets and quirks, and the
+//!   Putnam log's car with a rear axle that steers with roll, each driven
+//!   by a closed-loop driver (`closed_loop`) on a track of `winding`.
 //!
-//! The steer path ([`EffectKind::SteerPath`]) acts on the logged steer:
-//! the truth replays the path's output, the logger records the command.
+//! The augmented truth is the diagnosis's model with each effect of the
+//! specification applied on the base model's effects
+//! ([`EffectKind::apply`]), as a fit applies them. The steer path
+//! ([`EffectKind::SteerPath`]) acts on the logged steer: the truth replays
+//! the path's output, the logger records the command.
 //!
 //! A cornering-stiffness or friction truth means the car's tyres differ
 //! from the rig's: the rig data are generated without it. Units: SI, rad.
@@ -40,12 +49,14 @@
 //!
 //! Files: the two truths and their effect values (`truth`); the
 //! programmes (`programme`), their laps (`laps`) and the open-loop driver
-//! who drives them (`driver`); the generated campaign as the diagnosis
-//! reads it and as `handling synth` writes it (`campaign`).
+//! who drives them (`driver`); the analogues (`analogues`), their tracks
+//! (`winding`) and closed-loop driver (`closed_loop`); the estimated
+//! sideslip (`estimator`); the generated campaign as the diagnosis reads
+//! it and as `handling synth` writes it (`campaign`).
 
 pub mod four_wheel;
 
-use crate::diagnose::effects::{EffectKind, EffectSet, RollModel};
+use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::{Augmented, Drive};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
@@ -57,11 +68,15 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::path::PathBuf;
 
+mod analogues;
 mod campaign;
+mod closed_loop;
 mod driver;
+mod estimator;
 mod laps;
 mod programme;
 mod truth;
+mod winding;
 
 use driver::LoggedInputs;
 pub use programme::Programme;
@@ -135,11 +150,11 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
     base.options.effects.aero_load = truth_downforce(spec.programme);
     let mut augmented = Augmented::new(base.clone(), 1.0);
-    let mut effects = EffectSet::default();
     for (k, p) in &spec.effects {
-        effects.set(*k, p);
+        k.apply(p, augmented.effects_mut());
     }
-    augmented.effects = effects;
+    let asked: Vec<EffectKind> = spec.effects.iter().map(|(k, _)| *k).collect();
+    analogues::build_in(spec.programme, &mut augmented, &asked);
     let four_wheel = FourWheel {
         vehicle: FourWheelVehicle::sedan(),
         effects: match truth {
@@ -149,7 +164,9 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     };
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
-    let runs = if let Some(logged) = logged_runs(spec.programme, &base) {
+    let runs = if let Some(runs) = analogues::analogue_runs(spec.programme, &augmented, &mut rng) {
+        runs
+    } else if let Some(logged) = logged_runs(spec.programme, &base) {
         logged
             .iter()
             .map(|p| logged_run(&augmented, spec.programme, p, &mut rng, n))
@@ -245,7 +262,7 @@ fn finish(
         spec: spec.clone(),
         truth,
         roll: match truth {
-            Truth::Augmented => RollModel::default(),
+            Truth::Augmented => analogues::campaign_roll(spec.programme),
             Truth::FourWheel => four_wheel_campaign_roll(),
         },
     }
@@ -279,13 +296,16 @@ fn logged_run(
     let x0 = truth.initial_state(&drive, 0.0, 0.0);
     let o = truth.observe(&truth.simulate(&drive, x0), &p.t);
     let (yaw_rate, ay, beta) = (o.yaw_rate, o.ay, o.beta);
-    let mut noisy = |v: &[f64], s: f64| with_noise(v, s, rng);
     // Drawn in this order (the existing programmes' noise unchanged).
-    let yaw_rate = noisy(&yaw_rate, noise.yaw_rate);
-    let ay = noisy(&ay, noise.ay);
-    let ax = noisy(&p.ax, AX_NOISE);
-    let bank = noisy(&p.bank, BANK_NOISE);
-    let beta = programme.logs_beta().then(|| noisy(&beta, noise.beta));
+    let yaw_rate = with_noise(&yaw_rate, noise.yaw_rate, rng);
+    let ay = with_noise(&ay, noise.ay, rng);
+    let ax = with_noise(&p.ax, AX_NOISE, rng);
+    let bank = with_noise(&p.bank, BANK_NOISE, rng);
+    let beta = match programme {
+        _ if !programme.logs_beta() => None,
+        Programme::SlowOvalEstimatedBeta => Some(estimator::estimated(&p.t, &beta, rng)),
+        _ => Some(with_noise(&beta, noise.beta, rng)),
+    };
     MeasuredRun {
         path: PathBuf::from(format!("{}.csv", p.name)),
         speed: p.speed.clone(),

@@ -22,7 +22,15 @@
 //!   needs less steer than on a flat road). Three runs of
 //!   200 s at paces 1.0, 0.7 (with a stop in turn 1 and 20 s parked on the
 //!   banking) and 0.42, logged at 25 Hz with `ax`, `beta` and `bank` and no
-//!   `ay` (the Putnam log's channels), no rig data.
+//!   `ay` (the Putnam log's channels), no rig data;
+//!   [`Programme::SlowOvalNoBeta`] the same without its `beta` column, and
+//!   [`Programme::SlowOvalEstimatedBeta`] with a `beta` as a state
+//!   estimator gives it (smooth, with a drifting error; `estimator`),
+//!   both with runs of 100 s (the first 100 s of the slow oval's runs).
+//! - [`Programme::SedanWinding`] and [`Programme::RacingRearSteer`]: the
+//!   analogues of real logs (`analogues`), driven by a closed-loop driver
+//!   on winding tracks: a heavy sedan by hand with a logger's offsets, and
+//!   the Putnam log's car whose rear axle steers with roll.
 //!
 //! The levels are those this near-neutral sedan survives with every effect
 //! of the library on: the driver is open-loop and does not catch a slide,
@@ -62,15 +70,30 @@ pub enum Programme {
     /// A light racing car slowly lapping a 20° banked oval at 25 Hz, with a
     /// standstill on the banking, sideslip and no lateral acceleration.
     SlowOval,
+    /// The slow oval without its sideslip column.
+    SlowOvalNoBeta,
+    /// The slow oval with a sideslip as a state estimator gives it.
+    SlowOvalEstimatedBeta,
+    /// A 2.3 t sedan driven by hand on a winding track at 0–19 m/s, 100 Hz,
+    /// with a logger's offsets, a progressive steering ratio, a held steer
+    /// and the sideslip measured ahead of the centre of gravity.
+    SedanWinding,
+    /// The Putnam log's car path-tracked around a road course, its rear
+    /// axle steering with roll, logged as the Putnam log.
+    RacingRearSteer,
 }
 
 impl Programme {
     /// Every programme.
-    pub(crate) const ALL: [Programme; 4] = [
+    pub(crate) const ALL: [Programme; 8] = [
         Programme::Handling,
         Programme::Oval,
         Programme::RoadCourse,
         Programme::SlowOval,
+        Programme::SlowOvalNoBeta,
+        Programme::SlowOvalEstimatedBeta,
+        Programme::SedanWinding,
+        Programme::RacingRearSteer,
     ];
 
     /// The name on the command line.
@@ -80,38 +103,69 @@ impl Programme {
             Programme::Oval => "oval",
             Programme::RoadCourse => "road-course",
             Programme::SlowOval => "slow-oval",
+            Programme::SlowOvalNoBeta => "slow-oval-no-beta",
+            Programme::SlowOvalEstimatedBeta => "slow-oval-estimated-beta",
+            Programme::SedanWinding => "sedan-winding",
+            Programme::RacingRearSteer => "racing-rear-steer",
         }
     }
 
+    /// Whether this is the slow oval or one of its variants (the same car,
+    /// laps and truth; another `beta` column).
+    pub fn slow_oval(self) -> bool {
+        matches!(
+            self,
+            Programme::SlowOval | Programme::SlowOvalNoBeta | Programme::SlowOvalEstimatedBeta
+        )
+    }
+
     /// Whether the runs carry a lateral acceleration (all but the slow
-    /// oval's, which carry sideslip instead, as the Putnam log).
+    /// ovals' and the racing analogue's, which carry sideslip instead, as
+    /// the Putnam log).
     pub(super) fn logs_ay(self) -> bool {
-        self != Programme::SlowOval
+        !self.slow_oval() && self != Programme::RacingRearSteer
     }
 
     /// Whether the runs carry sideslip.
     pub(super) fn logs_beta(self) -> bool {
-        matches!(self, Programme::Handling | Programme::SlowOval)
+        matches!(
+            self,
+            Programme::Handling
+                | Programme::SlowOval
+                | Programme::SlowOvalEstimatedBeta
+                | Programme::SedanWinding
+                | Programme::RacingRearSteer
+        )
     }
 
-    /// Whether the campaign has tyre rig data (all but the slow oval's: its
-    /// base model identifies the axles from the runs, as for the Putnam
-    /// log).
+    /// Whether the runs carry the road's bank (the racing programmes on
+    /// banked tracks; the analogues' tracks are flat and logged without).
+    pub fn logs_bank(self) -> bool {
+        matches!(self, Programme::Oval | Programme::RoadCourse) || self.slow_oval()
+    }
+
+    /// Whether the campaign has tyre rig data (not the slow ovals' nor the
+    /// analogues': their base model identifies the axles from the runs, as
+    /// for the Putnam log).
     pub(super) fn has_rig(self) -> bool {
-        self != Programme::SlowOval
+        matches!(
+            self,
+            Programme::Handling | Programme::Oval | Programme::RoadCourse
+        )
     }
 
     /// The length of the pieces the campaign cuts its runs into, s (the
-    /// slow oval's `[runs] segment`).
+    /// slow ovals' and the racing analogue's `[runs] segment`, as the
+    /// Putnam log's campaign).
     pub(super) fn segment(self) -> Option<f64> {
-        (self == Programme::SlowOval).then_some(SLOW_OVAL_SEGMENT)
+        (self.slow_oval() || self == Programme::RacingRearSteer).then_some(SLOW_OVAL_SEGMENT)
     }
 
-    /// The replay step its campaign states, s: the slow oval's, like a
-    /// real 25 Hz log's campaign, replays at 20 ms (half the log's
-    /// interval); the others take the default.
+    /// The replay step its campaign states, s: the 25 Hz slow ovals' and
+    /// racing analogue's, like a real 25 Hz log's campaign, replay at 20 ms
+    /// (half the log's interval); the others take the default.
     pub(super) fn replay_step(self) -> Option<f64> {
-        (self == Programme::SlowOval).then_some(0.02)
+        (self.slow_oval() || self == Programme::RacingRearSteer).then_some(0.02)
     }
 
     /// Whether the runs carry `ax` and `bank` (the logged programmes).
@@ -134,16 +188,37 @@ impl std::str::FromStr for Programme {
 }
 /// Duration of each slow-oval run, s.
 const SLOW_OVAL_RUN: f64 = 200.0;
+/// Duration of each run of the slow oval's variants, s: half the slow
+/// oval's (every run keeps a lap or more, the stop on the banking
+/// included), so that their diagnosis costs half as much.
+const SLOW_OVAL_VARIANT_RUN: f64 = 100.0;
 /// Piece length of the slow-oval campaign, s.
 const SLOW_OVAL_SEGMENT: f64 = 20.0;
 
-/// The car that drives `programme`: the compact sedan, or on the slow oval
-/// a light racing car with the Putnam log's mass, yaw inertia and axle
-/// distances (its track widths and centre-of-gravity height assumed as in
-/// `campaigns/putnam.toml`).
+/// The 2.3 t sedan of `sedan-winding` (the analogue of a heavy sedan's
+/// log).
+fn large_sedan() -> Vehicle {
+    Vehicle {
+        mass: 2300.0,
+        yaw_inertia: 4800.0,
+        a: 1.464,
+        b: 1.586,
+        track_front: 1.63,
+        track_rear: 1.64,
+        cg_height: 0.56,
+        ..Vehicle::compact_sedan()
+    }
+}
+
+/// The car that drives `programme`: the compact sedan, on the slow ovals
+/// and the racing analogue a light racing car with the Putnam log's mass,
+/// yaw inertia and axle distances (its track widths and centre-of-gravity
+/// height assumed as in `campaigns/putnam.toml`), on the winding track the
+/// sedan analogue's large sedan.
 pub(super) fn truth_vehicle(programme: Programme) -> Vehicle {
     match programme {
-        Programme::SlowOval => Vehicle {
+        Programme::SedanWinding => large_sedan(),
+        p if p.slow_oval() || p == Programme::RacingRearSteer => Vehicle {
             mass: 790.0,
             yaw_inertia: 1000.0,
             a: 1.248,
@@ -158,13 +233,14 @@ pub(super) fn truth_vehicle(programme: Programme) -> Vehicle {
 }
 
 /// The truth car's own aerodynamic down-force (front, rear), N/(m/s)²:
-/// none, or on the slow oval 0.3 and 0.4 (310 N at 21 m/s, 4 % of the
-/// weight). Part of the truth the campaign file cannot state: the
-/// diagnosis's base model does not have it.
+/// none, or on the slow ovals and the racing analogue 0.3 and 0.4 (310 N
+/// at 21 m/s, 4 % of the weight). Part of the truth the campaign file
+/// cannot state: the diagnosis's base model does not have it.
 pub(super) fn truth_downforce(programme: Programme) -> [f64; 2] {
-    match programme {
-        Programme::SlowOval => [0.3, 0.4],
-        _ => [0.0; 2],
+    if programme.slow_oval() || programme == Programme::RacingRearSteer {
+        [0.3, 0.4]
+    } else {
+        [0.0; 2]
     }
 }
 /// The test programme: (name, manoeuvre) with the steer sized on the truth
@@ -226,7 +302,7 @@ pub(super) fn handling_programme(model: &VehicleModel) -> Vec<(String, Manoeuvre
 /// truth vehicle without effects). `None` for the handling programme.
 pub(super) fn logged_runs(programme: Programme, model: &VehicleModel) -> Option<Vec<LoggedInputs>> {
     let runs: Vec<(String, f64, Vec<Leg>)> = match programme {
-        Programme::Handling => return None,
+        Programme::Handling | Programme::SedanWinding | Programme::RacingRearSteer => return None,
         Programme::Oval => {
             let laps = |pace: f64, n: usize| -> Vec<Leg> {
                 (0..n).flat_map(|_| at_pace(&oval_lap(), pace)).collect()
@@ -258,7 +334,7 @@ pub(super) fn logged_runs(programme: Programme, model: &VehicleModel) -> Option<
                 )
             })
             .collect(),
-        Programme::SlowOval => {
+        Programme::SlowOval | Programme::SlowOvalNoBeta | Programme::SlowOvalEstimatedBeta => {
             let laps = |pace: f64| -> Vec<Leg> {
                 (0..8)
                     .flat_map(|_| at_pace(&slow_oval_lap(), pace))
@@ -283,12 +359,17 @@ pub(super) fn logged_runs(programme: Programme, model: &VehicleModel) -> Option<
             ]
             .into_iter()
             .map(|(name, u0, legs): (String, f64, Vec<Leg>)| {
-                (name, u0, fill_to(legs, u0, SLOW_OVAL_RUN))
+                let run = if programme == Programme::SlowOval {
+                    SLOW_OVAL_RUN
+                } else {
+                    SLOW_OVAL_VARIANT_RUN
+                };
+                (name, u0, fill_to(legs, u0, run))
             })
             .collect()
         }
     };
-    let banked = programme == Programme::SlowOval;
+    let banked = programme.slow_oval();
     Some(
         runs.into_iter()
             .map(|(name, u0, legs)| drive_legs(name, u0, &legs, model, banked))

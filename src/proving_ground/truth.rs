@@ -2,10 +2,14 @@
 //! the diagnosis's own augmented 2-DOF model on the bundled UniTire tyre
 //! (225/55R17 class, [`truth_tyre`]), or the independent four-wheel model
 //! of `proving_ground` with roll and a Magic-Formula tyre of its own. Each
-//! effect's truth value ([`truth_values`], [`Truth::values`]: in the
-//! diagnosis's own parameters, SI units and rad, scale factors 1 at
-//! nominal), and the roll the four-wheel truth's campaign file states,
-//! which differs from the truth's: the diagnosis is not handed the truth.
+//! effect's truth value ([`truth_values`], [`Truth::values`]: for the
+//! augmented truth the effect's own
+//! ([`crate::diagnose::effects::Effect::TRUTH`]), in the diagnosis's
+//! parameters, SI units and rad, scale factors 1 at nominal; the
+//! four-wheel truth has its own subset of the effects in its own units, one
+//! table, `FOUR_WHEEL`), and the roll the four-wheel truth's campaign file
+//! states, which differs from the truth's: the diagnosis is not handed the
+//! truth.
 
 use super::programme::Programme;
 use crate::diagnose::effects::{EffectKind, Needs, RollModel};
@@ -76,33 +80,69 @@ impl Truth {
         match self {
             // The handling programme (steps and sweeps at constant speed on
             // a flat road, no ax or bank channel) cannot show the
-            // longitudinal and bank-profile effects; the logged ones can.
-            Truth::Augmented => {
-                (programme.logged() || kind.needs() == Needs::Nothing).then(|| truth_values(kind))
+            // longitudinal and bank-profile effects; the logged ones can
+            // (the bank profile where they log the bank).
+            Truth::Augmented => match kind.needs() {
+                Needs::Nothing => true,
+                Needs::LongitudinalAcceleration => programme.logged(),
+                Needs::BankChannel => programme.logs_bank(),
             }
+            .then(|| truth_values(kind)),
             Truth::FourWheel if programme.logged() => None,
-            Truth::FourWheel => match kind {
-                EffectKind::RelaxationLength => Some(vec![0.7]),
-                EffectKind::SteeringCompliance => Some(vec![0.003]),
-                EffectKind::RollSteer => Some(vec![-0.12, 0.05]),
-                EffectKind::RollCamber => Some(vec![0.8, 0.6]),
-                EffectKind::AeroLoad => Some(vec![1.5, 2.0]),
-                EffectKind::RoadFriction => Some(vec![0.75]),
-                EffectKind::CorneringStiffness => Some(vec![0.8, 1.0]),
-                EffectKind::YawInertia => Some(vec![1.3]),
-                EffectKind::SensorDelay => Some(vec![0.05]),
-                EffectKind::SensorBias => Some(vec![0.008, 0.2, 0.004]),
-                EffectKind::AccelerometerRoll => Some(vec![1.0]),
-                EffectKind::LoadTransferDistribution
-                | EffectKind::RoadBank
-                | EffectKind::AccelerometerPosition
-                | EffectKind::LongitudinalLoadTransfer
-                | EffectKind::CombinedSlip
-                | EffectKind::BankProfile
-                | EffectKind::SteerPath => None,
-            },
+            Truth::FourWheel => four_wheel(kind).map(|(values, _)| values.to_vec()),
         }
     }
+}
+
+/// How an effect sets the four-wheel truth's own effects from its values.
+type SetFourWheel = fn(&mut FourWheelEffects, &[f64]);
+
+/// The four-wheel truth's effects: its own subset of the library, each
+/// with its truth value in the truth's own units ([`Truth::values`]) and
+/// how it sets the truth's effects. An effect not listed is not one of
+/// this truth's.
+const FOUR_WHEEL: &[(EffectKind, &[f64], SetFourWheel)] = &[
+    (EffectKind::RelaxationLength, &[0.7], |e, p| {
+        e.relaxation_length = p[0]
+    }),
+    (EffectKind::SteeringCompliance, &[0.003], |e, p| {
+        e.steering_compliance = p[0] * 1e-3
+    }),
+    (EffectKind::RollSteer, &[-0.12, 0.05], |e, p| {
+        e.roll_steer = [p[0], p[1]]
+    }),
+    (EffectKind::RollCamber, &[0.8, 0.6], |e, p| {
+        e.roll_camber = [p[0], p[1]]
+    }),
+    (EffectKind::AeroLoad, &[1.5, 2.0], |e, p| {
+        e.aero_load = [p[0], p[1]]
+    }),
+    (EffectKind::RoadFriction, &[0.75], |e, p| {
+        e.friction_scale = p[0]
+    }),
+    (EffectKind::CorneringStiffness, &[0.8, 1.0], |e, p| {
+        e.stiffness_scale = [p[0], p[1]]
+    }),
+    (EffectKind::YawInertia, &[1.3], |e, p| {
+        e.yaw_inertia_scale = p[0]
+    }),
+    (EffectKind::SensorDelay, &[0.05], |e, p| {
+        e.sensor_delay = p[0]
+    }),
+    (EffectKind::SensorBias, &[0.008, 0.2, 0.004], |e, p| {
+        e.sensor_bias = [p[0], p[1], p[2]]
+    }),
+    (EffectKind::AccelerometerRoll, &[1.0], |e, p| {
+        e.accelerometer_rolls = p[0] != 0.0
+    }),
+];
+
+/// `kind`'s truth values and setter in the four-wheel truth, if it has it.
+fn four_wheel(kind: EffectKind) -> Option<(&'static [f64], SetFourWheel)> {
+    FOUR_WHEEL
+        .iter()
+        .find(|(k, _, _)| *k == kind)
+        .map(|&(_, values, set)| (values, set))
 }
 
 /// The four-wheel truth's effects from (kind, parameters) pairs.
@@ -111,8 +151,7 @@ pub(super) fn four_wheel_effects(
 ) -> Result<FourWheelEffects, ParamError> {
     let mut e = FourWheelEffects::default();
     for (k, p) in effects {
-        let need = Truth::FourWheel
-            .values(Programme::Handling, *k)
+        let (need, set) = four_wheel(*k)
             .ok_or_else(|| ParamError::without_value(k.name(), ParamReason::NotATruthEffect))?;
         if p.len() != need.len() {
             return Err(ParamError::new(
@@ -121,26 +160,7 @@ pub(super) fn four_wheel_effects(
                 ParamReason::ParameterCount { needed: need.len() },
             ));
         }
-        match k {
-            EffectKind::RelaxationLength => e.relaxation_length = p[0],
-            EffectKind::SteeringCompliance => e.steering_compliance = p[0] * 1e-3,
-            EffectKind::RollSteer => e.roll_steer = [p[0], p[1]],
-            EffectKind::RollCamber => e.roll_camber = [p[0], p[1]],
-            EffectKind::AeroLoad => e.aero_load = [p[0], p[1]],
-            EffectKind::RoadFriction => e.friction_scale = p[0],
-            EffectKind::CorneringStiffness => e.stiffness_scale = [p[0], p[1]],
-            EffectKind::YawInertia => e.yaw_inertia_scale = p[0],
-            EffectKind::SensorDelay => e.sensor_delay = p[0],
-            EffectKind::SensorBias => e.sensor_bias = [p[0], p[1], p[2]],
-            EffectKind::AccelerometerRoll => e.accelerometer_rolls = p[0] != 0.0,
-            EffectKind::LoadTransferDistribution
-            | EffectKind::RoadBank
-            | EffectKind::AccelerometerPosition
-            | EffectKind::LongitudinalLoadTransfer
-            | EffectKind::CombinedSlip
-            | EffectKind::BankProfile
-            | EffectKind::SteerPath => {}
-        }
+        set(&mut e, p);
     }
     Ok(e)
 }
@@ -157,28 +177,10 @@ pub(super) fn four_wheel_campaign_roll() -> RollModel {
 }
 
 /// The truth value of each effect used by the checks: realistic, and large
-/// enough to matter in a handling test.
+/// enough to matter in a handling test (the effect's
+/// [`crate::diagnose::effects::Effect::TRUTH`]).
 pub fn truth_values(kind: EffectKind) -> Vec<f64> {
-    match kind {
-        EffectKind::RelaxationLength => vec![0.8],
-        EffectKind::SteeringCompliance => vec![0.003],
-        EffectKind::RollSteer => vec![-0.15, 0.0],
-        EffectKind::RollCamber => vec![-1.5, 0.0],
-        EffectKind::LoadTransferDistribution => vec![0.85],
-        EffectKind::AeroLoad => vec![1.5, 2.0],
-        EffectKind::RoadFriction => vec![0.75],
-        EffectKind::RoadBank => vec![0.03],
-        EffectKind::CorneringStiffness => vec![0.8, 1.0],
-        EffectKind::YawInertia => vec![1.3],
-        EffectKind::SensorDelay => vec![0.05],
-        EffectKind::SensorBias => vec![0.008, 0.2, 0.004],
-        EffectKind::AccelerometerRoll => vec![RollModel::default().gradient],
-        EffectKind::AccelerometerPosition => vec![0.8],
-        EffectKind::LongitudinalLoadTransfer => vec![1.0],
-        EffectKind::CombinedSlip => vec![0.0, 0.65, 1.0],
-        EffectKind::BankProfile => vec![1.0, 0.0],
-        EffectKind::SteerPath => vec![0.05, 0.15],
-    }
+    kind.truth().to_vec()
 }
 
 /// The bundled UniTire of the truth.

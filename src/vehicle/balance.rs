@@ -2,9 +2,11 @@
 //! ([`super::VehicleModel::rates`]): the axles' tyres at their slip angles
 //! on the wheel loads of a lateral acceleration, and the load-transfer
 //! loop that finds that acceleration (`ay = Y(ay)/m`, [`super::loads`]),
-//! with a compliant front axle's slip solved at every load. In a dual
-//! scalar ([`crate::scalar`]) both implicit solves run in plain numbers and
-//! are differentiated at their roots. Units: SI, rad; ISO 8855 signs.
+//! with a compliant front axle's slip solved at every load. The effects it
+//! reads (compliance, stiffness scales, roll camber, combined slip, the
+//! road friction) come from [`super::ModelScalars`]. In a dual scalar
+//! ([`crate::scalar`]) both implicit solves run in plain numbers and are
+//! differentiated at their roots. Units: SI, rad; ISO 8855 signs.
 
 use super::loads::{solve_load_transfer, LoadSplit};
 use super::scalar::{off, ModelScalars, Scalar};
@@ -301,9 +303,10 @@ impl VehicleModel {
         (steer, phi): (T, T),
         [lag_front, kin_front, alpha_rear]: [T; 3],
     ) -> Balance<T> {
-        let lagged = sc.lagged();
-        let compliance = sc.steering_compliance;
-        let [scale_front, scale_rear] = sc.stiffness_scale;
+        let e = &sc.effects;
+        let lagged = e.lagged();
+        let compliance = e.steering_compliance;
+        let [scale_front, scale_rear] = e.cornering_stiffness_scale;
         let road = Road {
             mu: sc.friction,
             speed: inp.speed,
@@ -324,7 +327,7 @@ impl VehicleModel {
             compliance,
             steer,
             scale_front,
-            thrust: sc.roll_camber.map(|k| k * phi),
+            thrust: e.roll_camber.map(|k| k * phi),
             fx: sc.wheel_forces(self.vehicle.mass, inp.ax),
             // Without compliance the wheel's steer, hence the projection,
             // does not depend on the force: one cosine per evaluation.

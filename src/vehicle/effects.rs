@@ -1,9 +1,14 @@
-//! Effects beyond the papers' model, and the body-roll degree of freedom
-//! they act through. Every effect is off by default, and off it changes
+//! Effects beyond the papers' model ([`Effects`]), and the body-roll degree
+//! of freedom they act through: the one struct of every number an effect
+//! sets — what a scenario's `[model.effects]` table deserialises, what the
+//! vehicle model carries and its right-hand side reads (through
+//! [`super::ModelScalars`]), and what the sim-to-real diagnosis's candidate
+//! effects set (`crate::diagnose::effects`) and a fit lifts into dual
+//! numbers ([`Effects::map`], written once: a new field fails to compile
+//! until it is mapped). Every effect is off by default, and off it changes
 //! nothing: the base model stays exactly Li, Jia & Zhao's / Wang &
-//! Liang's. They are what the sim-to-real diagnosis searches over
-//! (its candidates set them) and what a scenario's `[model.effects]` table
-//! may switch on.
+//! Liang's. The struct is generic over the scalar ([`crate::scalar`]):
+//! `Effects` is `Effects<f64>`, a fit's is `Effects<DualSVec64<N>>`.
 //!
 //! Signs follow ISO 8855 (x forward, y left, z up, positive steer left,
 //! positive roll φ puts the right side down, as in a left turn). Units: SI,
@@ -36,11 +41,26 @@
 //!   the pure-slip models have no combined-slip law of their own; μ is
 //!   [`crate::tyre::TyreModel::friction_coefficient`]). At `s = 0` no
 //!   tyre carries a longitudinal force and the lateral forces are the pure
-//!   ones exactly: the effect is nested in the base model.
+//!   ones exactly: the effect is nested in the base model;
+//! - the numbers the diagnosis sets that a scenario file does not (no key
+//!   in `[model.effects]`): a yaw-inertia scale and a road-friction scale
+//!   on the vehicle's and the road's, the front share of the lateral load
+//!   transfer replacing the vehicle's, the sensors ([`Sensors`], acting on
+//!   the response, not the dynamics) and the steer path ([`SteerPath`],
+//!   acting on the logged steer before the model sees it).
 //!
 //! Roll (the [`RollModel`]) is a second-order response of the body to the
 //! lateral acceleration, `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
+//!
+//! Adding a number: a field here (with its default, its check in
+//! [`Effects::validate`], its line in [`Effects::map`] and its place in
+//! [`Effects::beyond_equilibrium_residual`] — each names every field, so
+//! the compiler asks for them), and the physics that reads it.
 
+pub use super::sensors::Sensors;
+pub use super::steer_path::SteerPath;
+use crate::error::{Limit, ParamError, ParamReason};
+use crate::scalar::{off, Scalar};
 use serde::{Deserialize, Serialize};
 
 /// Relaxation lengths below this (m) are no lag: 1 mm is 50 µs at 20 m/s,
@@ -49,27 +69,48 @@ use serde::{Deserialize, Serialize};
 /// zero would otherwise chase it through ever stiffer models).
 pub const MIN_RELAXATION_LENGTH: f64 = 1e-3;
 
+/// The steady roll per lateral acceleration of [`RollModel::default`], a
+/// passenger car's 4°/g, rad per m/s².
+pub const PASSENGER_CAR_ROLL_GRADIENT: f64 = 4f64.to_radians() / crate::constants::G;
+
 /// Roll degree of freedom used by roll steer and roll camber: a second-order
 /// response of the body roll φ to lateral acceleration,
 /// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct RollModel {
+#[serde(
+    deny_unknown_fields,
+    default,
+    bound(
+        serialize = "T: Serialize",
+        deserialize = "T: Deserialize<'de>, RollModel<T>: Default"
+    )
+)]
+pub struct RollModel<T = f64> {
     /// Steady roll per lateral acceleration k, rad per m/s².
-    pub gradient: f64,
+    pub gradient: T,
     /// Undamped natural frequency, Hz.
-    pub frequency: f64,
+    pub frequency: T,
     /// Damping ratio ζ.
-    pub damping: f64,
+    pub damping: T,
 }
 
 impl RollModel {
     /// Checks the values for physical sense; the error names the key.
-    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
-        use crate::error::ParamError;
+    pub fn validate(&self) -> Result<(), ParamError> {
         ParamError::non_negative("gradient", self.gradient)?;
         ParamError::positive("frequency", self.frequency)?;
         ParamError::positive("damping", self.damping)
+    }
+}
+
+impl<T: Copy> RollModel<T> {
+    /// Every number mapped by `f`.
+    pub fn map<U>(&self, f: impl Fn(T) -> U) -> RollModel<U> {
+        RollModel {
+            gradient: f(self.gradient),
+            frequency: f(self.frequency),
+            damping: f(self.damping),
+        }
     }
 }
 
@@ -77,7 +118,7 @@ impl Default for RollModel {
     /// A passenger car: 4°/g, 1.5 Hz, ζ = 0.5.
     fn default() -> Self {
         Self {
-            gradient: 4f64.to_radians() / crate::constants::G,
+            gradient: PASSENGER_CAR_ROLL_GRADIENT,
             frequency: 1.5,
             damping: 0.5,
         }
@@ -88,17 +129,35 @@ impl Default for RollModel {
 /// friction circles, and how it is shared between the axles: shares of the
 /// front axle, the rest on the rear.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct CombinedSlip {
+#[serde(
+    deny_unknown_fields,
+    default,
+    bound(
+        serialize = "T: Serialize",
+        deserialize = "T: Deserialize<'de>, CombinedSlip<T>: Default"
+    )
+)]
+pub struct CombinedSlip<T = f64> {
     /// Front share of the drive force (ax > 0): 0 for rear-wheel drive.
-    pub drive_front_share: f64,
+    pub drive_front_share: T,
     /// Front share of the brake force (ax < 0), the brake balance.
-    pub brake_front_share: f64,
+    pub brake_front_share: T,
     /// Share of `m·ax` the tyres carry (1: all of it; 0: none, the pure-slip
     /// forces exactly). Not a share of a whole: above 1 the tyres carry
     /// more than `m·ax` (drag and rolling resistance the throttle works
     /// against, an `ax` logged low).
-    pub force_share: f64,
+    pub force_share: T,
+}
+
+impl<T: Copy> CombinedSlip<T> {
+    /// Every number mapped by `f`.
+    pub fn map<U>(&self, f: impl Fn(T) -> U) -> CombinedSlip<U> {
+        CombinedSlip {
+            drive_front_share: f(self.drive_front_share),
+            brake_front_share: f(self.brake_front_share),
+            force_share: f(self.force_share),
+        }
+    }
 }
 
 impl Default for CombinedSlip {
@@ -113,41 +172,70 @@ impl Default for CombinedSlip {
     }
 }
 
-/// Effects beyond the papers' model; [`Effects::default`] is the base model.
+/// Effects beyond the papers' model, in a scalar of [`crate::scalar`]
+/// (`f64` by default); [`Effects::default`] is the base model. The fields
+/// after `combined_slip` have no key in a scenario's `[model.effects]`
+/// (they are not read from files, and an unknown key there is refused).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Effects {
+#[serde(
+    deny_unknown_fields,
+    default,
+    bound(
+        serialize = "T: Serialize",
+        deserialize = "T: Deserialize<'de>, Effects<T>: Default, RollModel<T>: Default, \
+                       CombinedSlip<T>: Default"
+    )
+)]
+pub struct Effects<T = f64> {
     /// Aerodynamic down-force per axle (front, rear), N per (m/s)²: each
     /// wheel of the axle carries half of `k·u²` on top of its static load.
-    pub aero_load: [f64; 2],
+    pub aero_load: [T; 2],
     /// Road bank angle θ, rad, positive when the road's left edge is higher:
     /// gravity then pulls the car to the right with `m·g·sin θ`, the static
     /// loads scale by `cos θ`, and the accelerometer (`ay`, the tyres' force
     /// over the mass) reads `g·sin θ` more than the path's acceleration.
-    pub road_bank: f64,
+    pub road_bank: T,
     /// How much of the measured bank profile ([`super::Inputs::bank`]) the
     /// road has on top of `road_bank`: 1 as measured, 0 (the default) none.
-    pub bank_profile_scale: f64,
+    pub bank_profile_scale: T,
     /// Relaxation length σ of both axles, m (below
     /// [`MIN_RELAXATION_LENGTH`]: no lag).
-    pub relaxation_length: f64,
+    pub relaxation_length: T,
     /// Steer lost per front axle force, rad/N.
-    pub steering_compliance: f64,
+    pub steering_compliance: T,
     /// Roll steer (front, rear), rad of axle steer per rad of roll.
-    pub roll_steer: [f64; 2],
+    pub roll_steer: [T; 2],
     /// Camber thrust per roll (front, rear): lateral force per wheel load
     /// per rad of roll.
-    pub roll_camber: [f64; 2],
+    pub roll_camber: [T; 2],
     /// Scale on the slip angle each axle's tyre sees (front, rear): the
     /// cornering stiffness scaled, the peak force kept.
-    pub cornering_stiffness_scale: [f64; 2],
+    pub cornering_stiffness_scale: [T; 2],
     /// The body's roll response (drives roll steer and roll camber).
-    pub roll: RollModel,
+    pub roll: RollModel<T>,
     /// Share of the rigid-body longitudinal load transfer `m·ax·h/l` at
     /// [`super::Inputs::ax`] (0: none, 1: as the CG height gives).
-    pub longitudinal_load_transfer: f64,
+    pub longitudinal_load_transfer: T,
     /// Combined slip from [`super::Inputs::ax`] (None: pure slip).
-    pub combined_slip: Option<CombinedSlip>,
+    pub combined_slip: Option<CombinedSlip<T>>,
+    /// Scale on the vehicle's yaw moment of inertia (1: the vehicle's).
+    #[serde(skip)]
+    pub yaw_inertia_scale: T,
+    /// Scale on the road's friction ([`super::Inputs::friction`]; 1: the
+    /// road's).
+    #[serde(skip)]
+    pub friction_scale: T,
+    /// Front share χ of the lateral load transfer (None: the vehicle's,
+    /// [`super::Vehicle::load_transfer_front_share`]).
+    #[serde(skip)]
+    pub transfer_share: Option<T>,
+    /// The measurement system (all zero: ideal).
+    #[serde(skip)]
+    pub sensors: Sensors<T>,
+    /// The steer path between the logged steer and the road wheels (zero:
+    /// the wheels follow the logged steer).
+    #[serde(skip)]
+    pub steer_path: SteerPath<T>,
 }
 
 impl Default for Effects {
@@ -164,50 +252,95 @@ impl Default for Effects {
             roll: RollModel::default(),
             longitudinal_load_transfer: 0.0,
             combined_slip: None,
+            yaw_inertia_scale: 1.0,
+            friction_scale: 1.0,
+            transfer_share: None,
+            sensors: Sensors::default(),
+            steer_path: SteerPath::default(),
+        }
+    }
+}
+
+impl<T: Copy> Effects<T> {
+    /// Every number mapped by `f`: the one place the struct is taken apart
+    /// number by number ([`Effects::lift`] into dual numbers, their values
+    /// back by [`Effects::re`]).
+    pub fn map<U>(&self, f: impl Fn(T) -> U) -> Effects<U> {
+        Effects {
+            aero_load: self.aero_load.map(&f),
+            road_bank: f(self.road_bank),
+            bank_profile_scale: f(self.bank_profile_scale),
+            relaxation_length: f(self.relaxation_length),
+            steering_compliance: f(self.steering_compliance),
+            roll_steer: self.roll_steer.map(&f),
+            roll_camber: self.roll_camber.map(&f),
+            cornering_stiffness_scale: self.cornering_stiffness_scale.map(&f),
+            roll: self.roll.map(&f),
+            longitudinal_load_transfer: f(self.longitudinal_load_transfer),
+            combined_slip: self.combined_slip.map(|c| c.map(&f)),
+            yaw_inertia_scale: f(self.yaw_inertia_scale),
+            friction_scale: f(self.friction_scale),
+            transfer_share: self.transfer_share.map(&f),
+            sensors: self.sensors.map(&f),
+            steer_path: self.steer_path.map(&f),
         }
     }
 }
 
 impl Effects {
-    /// Checks the values for physical sense.
-    pub fn validate(&self) -> Result<(), crate::error::ParamError> {
-        use crate::error::{ParamError, ParamReason};
-        ParamError::non_negative("aero_load[0]", self.aero_load[0])?;
-        ParamError::non_negative("aero_load[1]", self.aero_load[1])?;
-        ParamError::in_range(
-            "road_bank",
-            self.road_bank.abs(),
-            -1.0,
-            0.5,
-            crate::error::Limit::RoadBank,
-        )?;
-        ParamError::finite("bank_profile_scale", self.bank_profile_scale)?;
-        ParamError::non_negative("relaxation_length", self.relaxation_length)?;
-        ParamError::finite("steering_compliance", self.steering_compliance)?;
+    /// The same numbers in scalar `T`, as constants.
+    pub fn lift<T: Scalar>(&self) -> Effects<T> {
+        self.map(T::from)
+    }
+
+    /// Checks the values for physical sense (the keys of a scenario's
+    /// `[model.effects]` first, in its order); the error names the key.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let Effects {
+            aero_load,
+            road_bank,
+            bank_profile_scale,
+            relaxation_length,
+            steering_compliance,
+            roll_steer,
+            roll_camber,
+            cornering_stiffness_scale,
+            roll,
+            longitudinal_load_transfer,
+            combined_slip,
+            yaw_inertia_scale,
+            friction_scale,
+            transfer_share,
+            sensors,
+            steer_path,
+        } = self;
+        ParamError::non_negative("aero_load[0]", aero_load[0])?;
+        ParamError::non_negative("aero_load[1]", aero_load[1])?;
+        ParamError::in_range("road_bank", road_bank.abs(), -1.0, 0.5, Limit::RoadBank)?;
+        ParamError::finite("bank_profile_scale", *bank_profile_scale)?;
+        ParamError::non_negative("relaxation_length", *relaxation_length)?;
+        ParamError::finite("steering_compliance", *steering_compliance)?;
         // Far above any car's (1e-6 to 3e-5 rad/N), the steer lost to the
         // force exceeds the steer given and the compliance solve has no
         // physical root: a value in rad/kN is refused, not integrated.
         ParamError::in_range(
             "steering_compliance",
-            self.steering_compliance.abs(),
+            steering_compliance.abs(),
             -1e-12,
             1e-4,
-            crate::error::Limit::SteeringCompliance,
+            Limit::SteeringCompliance,
         )?;
-        for (i, v) in self.roll_steer.iter().enumerate() {
+        for (i, v) in roll_steer.iter().enumerate() {
             ParamError::finite(&format!("roll_steer[{i}]"), *v)?;
         }
-        for (i, v) in self.roll_camber.iter().enumerate() {
+        for (i, v) in roll_camber.iter().enumerate() {
             ParamError::finite(&format!("roll_camber[{i}]"), *v)?;
         }
-        for (i, v) in self.cornering_stiffness_scale.iter().enumerate() {
+        for (i, v) in cornering_stiffness_scale.iter().enumerate() {
             ParamError::positive(&format!("cornering_stiffness_scale[{i}]"), *v)?;
         }
-        ParamError::finite(
-            "longitudinal_load_transfer",
-            self.longitudinal_load_transfer,
-        )?;
-        if let Some(c) = &self.combined_slip {
+        ParamError::finite("longitudinal_load_transfer", *longitudinal_load_transfer)?;
+        if let Some(c) = combined_slip {
             for (key, v) in [
                 ("drive_front_share", c.drive_front_share),
                 ("brake_front_share", c.brake_front_share),
@@ -221,24 +354,31 @@ impl Effects {
             ParamError::non_negative("force_share", c.force_share)
                 .map_err(|e| e.within("combined_slip"))?;
         }
-        self.roll.validate().map_err(|e| e.within("roll"))
-    }
-
-    /// The road bank under the car, rad: the constant bank plus the scaled
-    /// measured profile `measured` (read only when the scale is not zero, so
-    /// a missing profile cannot reach the model).
-    pub fn bank(&self, measured: f64) -> f64 {
-        if self.bank_profile_scale == 0.0 {
-            self.road_bank
-        } else {
-            self.road_bank + self.bank_profile_scale * measured
+        roll.validate().map_err(|e| e.within("roll"))?;
+        // Not read from files: set by the diagnosis within its bounds.
+        ParamError::positive("yaw_inertia_scale", *yaw_inertia_scale)?;
+        ParamError::positive("friction_scale", *friction_scale)?;
+        if let Some(chi) = *transfer_share {
+            if !(0.0..=1.0).contains(&chi) {
+                return Err(ParamError::new(
+                    "transfer_share",
+                    chi,
+                    ParamReason::TransferShare,
+                ));
+            }
         }
-    }
-
-    /// True when the slip angles lag (a relaxation length of at least
-    /// [`MIN_RELAXATION_LENGTH`]).
-    pub fn lagged(&self) -> bool {
-        self.relaxation_length >= MIN_RELAXATION_LENGTH
+        ParamError::non_negative("sensors.delay", sensors.delay)?;
+        for (key, v) in [
+            ("yaw_rate_bias", sensors.yaw_rate_bias),
+            ("ay_bias", sensors.ay_bias),
+            ("beta_bias", sensors.beta_bias),
+            ("accelerometer_x", sensors.accelerometer_x),
+            ("roll_gradient", sensors.roll_gradient),
+        ] {
+            ParamError::finite(key, v).map_err(|e| e.within("sensors"))?;
+        }
+        ParamError::non_negative("delay", steer_path.delay).map_err(|e| e.within("steer_path"))?;
+        ParamError::non_negative("lag", steer_path.lag).map_err(|e| e.within("steer_path"))
     }
 
     /// True when body roll feeds back into the forces (roll steer or roll
@@ -251,5 +391,74 @@ impl Effects {
     /// or body roll.
     pub(crate) fn extra_states(&self) -> bool {
         self.lagged() || self.uses_roll()
+    }
+
+    /// The effects switched on that [`super::VehicleModel::equilibrium_residual`]
+    /// does not model, by their keys in `[model.effects]`: those acting
+    /// through the steer the wheels see or the slip their tyres see
+    /// (steering compliance, roll steer, the cornering-stiffness scale) or
+    /// through body roll (roll camber). The others are in it (aero load,
+    /// road bank, the yaw-inertia and friction scales, the load-transfer
+    /// share) or leave a steady state as it is: a tyre lag's states sit at
+    /// the kinematic slip angles, the longitudinal effects see no
+    /// longitudinal acceleration, a steady state has no measured bank
+    /// profile, a steer path passes a constant steer unchanged, and the
+    /// sensors act on what is measured, not on the state. Every field is
+    /// named, so that a new effect must be sorted here.
+    pub(crate) fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
+        let Effects {
+            aero_load: _,
+            road_bank: _,
+            bank_profile_scale: _,
+            relaxation_length: _,
+            steering_compliance,
+            roll_steer,
+            roll_camber,
+            cornering_stiffness_scale,
+            roll: _,
+            longitudinal_load_transfer: _,
+            combined_slip: _,
+            yaw_inertia_scale: _,
+            friction_scale: _,
+            transfer_share: _,
+            sensors: _,
+            steer_path: _,
+        } = self;
+        [
+            ("steering_compliance", *steering_compliance != 0.0),
+            ("roll_steer", *roll_steer != [0.0; 2]),
+            ("roll_camber", *roll_camber != [0.0; 2]),
+            (
+                "cornering_stiffness_scale",
+                *cornering_stiffness_scale != [1.0; 2],
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(key, on)| on.then_some(key))
+        .collect()
+    }
+}
+
+impl<T: Scalar> Effects<T> {
+    /// The values without their derivatives.
+    pub fn re(&self) -> Effects {
+        self.map(|x| x.re())
+    }
+
+    /// The road bank under the car, rad: the constant bank plus the scaled
+    /// measured profile `measured` (read only when the scale is not zero
+    /// and constant, so a missing profile cannot reach the model).
+    pub fn bank(&self, measured: f64) -> T {
+        if off(self.bank_profile_scale) {
+            self.road_bank
+        } else {
+            self.road_bank + self.bank_profile_scale * measured
+        }
+    }
+
+    /// True when the slip angles lag (a relaxation length of at least
+    /// [`MIN_RELAXATION_LENGTH`]).
+    pub fn lagged(&self) -> bool {
+        self.relaxation_length.re() >= MIN_RELAXATION_LENGTH
     }
 }

@@ -5,55 +5,16 @@
 //!
 //! It is the one right-hand side ([`VehicleModel::rates`]) with the
 //! load-transfer loop stopped at that acceleration, written out to
-//! differentiate it; the effects it leaves out are named by
-//! [`Effects::beyond_equilibrium_residual`]. Tests in
+//! differentiate it (the yaw inertia and road friction as the effects scale
+//! them, [`super::ModelScalars`]); the effects it leaves out are named by
+//! [`super::Effects::beyond_equilibrium_residual`]. Tests in
 //! `equilibria/tests.rs` hold its value and Jacobian to the right-hand
 //! side's and its differences at random states with every other effect on,
 //! and show each effect it leaves out moving the right-hand side away from
 //! it.
 
-use super::{Effects, Inputs, Kinematics, State, VehicleModel, MIN_SPEED};
+use super::{Inputs, Kinematics, State, VehicleModel, MIN_SPEED};
 use crate::tyre::Tyre;
-
-impl Effects {
-    /// The effects switched on that [`VehicleModel::equilibrium_residual`]
-    /// does not model, by their keys in `[model.effects]`: those acting
-    /// through the steer the wheels see or the slip their tyres see
-    /// (steering compliance, roll steer, the cornering-stiffness scale) or
-    /// through body roll (roll camber). The others are in it (aero load,
-    /// road bank) or leave a steady state as it is: a tyre lag's states sit
-    /// at the kinematic slip angles, the longitudinal effects see no
-    /// longitudinal acceleration, and a steady state has no measured bank
-    /// profile. Every field is named, so that a new effect must be sorted
-    /// here.
-    pub(crate) fn beyond_equilibrium_residual(&self) -> Vec<&'static str> {
-        let Effects {
-            aero_load: _,
-            road_bank: _,
-            bank_profile_scale: _,
-            relaxation_length: _,
-            steering_compliance,
-            roll_steer,
-            roll_camber,
-            cornering_stiffness_scale,
-            roll: _,
-            longitudinal_load_transfer: _,
-            combined_slip: _,
-        } = self;
-        [
-            ("steering_compliance", *steering_compliance != 0.0),
-            ("roll_steer", *roll_steer != [0.0; 2]),
-            ("roll_camber", *roll_camber != [0.0; 2]),
-            (
-                "cornering_stiffness_scale",
-                *cornering_stiffness_scale != [1.0; 2],
-            ),
-        ]
-        .into_iter()
-        .filter_map(|(key, on)| on.then_some(key))
-        .collect()
-    }
-}
 
 impl VehicleModel {
     /// Lateral force of a wheel and its partials in slip angle and load:
@@ -97,6 +58,13 @@ impl VehicleModel {
         inp: &Inputs,
     ) -> ([f64; 2], [[f64; 2]; 2]) {
         let v = &self.vehicle;
+        // The road's friction and the vehicle's yaw inertia as the effects
+        // scale them ([`super::ModelScalars`]).
+        let sc = self.scalars(inp.friction);
+        let inp = &Inputs {
+            friction: sc.friction,
+            ..*inp
+        };
         let u = inp.speed.max(MIN_SPEED);
         let (a, b) = (v.a, v.b);
         let r = x.yaw_rate;
@@ -146,10 +114,10 @@ impl VehicleModel {
             (p * dfyf[0] + dfyr[0]) / v.mass,
             (p * dfyf[1] + dfyr[1]) / v.mass,
         ];
-        let yaw = (a * p * fyf - b * fyr) / v.yaw_inertia;
+        let yaw = (a * p * fyf - b * fyr) / sc.yaw_inertia;
         let dyaw = [
-            (a * p * dfyf[0] - b * dfyr[0]) / v.yaw_inertia,
-            (a * p * dfyf[1] - b * dfyr[1]) / v.yaw_inertia,
+            (a * p * dfyf[0] - b * dfyr[0]) / sc.yaw_inertia,
+            (a * p * dfyf[1] - b * dfyr[1]) / sc.yaw_inertia,
         ];
         let ay_path = ay - self.bank_acceleration();
         let (beta_rate, dbeta) = match self.options.kinematics {

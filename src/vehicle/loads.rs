@@ -7,7 +7,9 @@
 //! by default. A wheel whose load would go negative is off the ground. With
 //! longitudinal load transfer ([`super::Effects::longitudinal_load_transfer`])
 //! the axle loads move by `m·ax·h/l` first; a measured bank
-//! ([`super::Inputs::bank`]) adds to the constant one, scaled.
+//! ([`super::Inputs::bank`]) adds to the constant one, scaled. The share χ
+//! is the effects' when they set one ([`super::Effects::transfer_share`]),
+//! else the vehicle's; every effect is read through [`super::ModelScalars`].
 //!
 //! The loop: the loads depend on ay and ay on the forces, which depend on the
 //! loads. It is solved by a secant iteration on `g(ay) = ay − Y(ay)/m`, not
@@ -209,21 +211,22 @@ impl VehicleModel {
         let v = &self.vehicle;
         let (sf, sr) = v.static_axle_loads();
         let (mut sf, mut sr) = (T::from(sf), T::from(sr));
-        let bank = sc.bank(bank);
+        let e = &sc.effects;
+        let bank = e.bank(bank);
         if !off(bank) {
             let c = bank.cos();
             sf *= c;
             sr *= c;
         }
-        let [aero_f, aero_r] = sc.aero_load;
+        let [aero_f, aero_r] = e.aero_load;
         if !(off(aero_f) && off(aero_r)) {
             sf += aero_f * speed * speed;
             sr += aero_r * speed * speed;
         }
-        if !off(sc.longitudinal_load_transfer) && ax != 0.0 {
+        if !off(e.longitudinal_load_transfer) && ax != 0.0 {
             // A wheelie or a stoppie at the most: no axle load below zero.
             let rigid = v.mass * ax * v.cg_height / v.wheelbase();
-            let d = clamp(sc.longitudinal_load_transfer * rigid, -sr, sf);
+            let d = clamp(e.longitudinal_load_transfer * rigid, -sr, sf);
             sf -= d;
             sr += d;
         }
@@ -277,7 +280,7 @@ impl VehicleModel {
     /// [`VehicleModel::bank_acceleration_at`] with the model's numbers `sc`
     /// in a scalar.
     pub(crate) fn bank_acceleration_of<T: Scalar>(&self, sc: &ModelScalars<T>, bank: f64) -> T {
-        let bank = sc.bank(bank);
+        let bank = sc.effects.bank(bank);
         if off(bank) {
             T::from(0.0)
         } else {

@@ -17,11 +17,17 @@
 //! by a step, each solve seeded from the same RK stage's earlier solutions
 //! so that it usually costs one evaluation of the four tyres.
 //!
-//! Effects beyond the papers ([`Effects`]: tyre lag, steering compliance,
-//! roll steer and camber through a roll degree of freedom, stiffness scale,
-//! aero load, road bank) extend the state to a [`StateVector`]; the one
-//! right-hand side ([`VehicleModel::rates`], in `rates.rs`) reduces to the
-//! (β, r) model exactly when they are off. The equilibrium residual with its
+//! Effects beyond the papers ([`Effects`], `effects.rs`: tyre lag, steering
+//! compliance, roll steer and camber through a roll degree of freedom,
+//! stiffness scale, aero load, road bank, the longitudinal effects, the
+//! yaw-inertia and friction scales, the load-transfer share, and the
+//! sensors (`sensors.rs`) and steer path (`steer_path.rs`) that act outside
+//! the right-hand side) are one struct, generic over the scalar: what a
+//! scenario's `[model.effects]` reads, what the model carries and what the
+//! diagnosis's candidates set. They extend the state to a [`StateVector`];
+//! the one right-hand side ([`VehicleModel::rates`], in `rates.rs`, reading
+//! them through [`ModelScalars`]) reduces to the (β, r) model exactly when
+//! they are off. The equilibrium residual with its
 //! closed-form Jacobian is in `equilibrium.rs` (that right-hand side at the
 //! equilibrium's loads, written out to differentiate it; the effects it
 //! leaves out named by [`Effects::beyond_equilibrium_residual`]), steady
@@ -37,10 +43,15 @@ mod loads;
 mod params;
 mod rates;
 pub mod scalar;
+mod sensors;
 pub(crate) mod steady;
+mod steer_path;
 pub mod wheels;
 
-pub use effects::{CombinedSlip, Effects, RollModel, MIN_RELAXATION_LENGTH};
+pub use effects::{
+    CombinedSlip, Effects, RollModel, Sensors, SteerPath, MIN_RELAXATION_LENGTH,
+    PASSENGER_CAR_ROLL_GRADIENT,
+};
 pub use loads::{implicit_root, LoadTransferSeed};
 pub use params::Vehicle;
 pub use rates::StateVector;

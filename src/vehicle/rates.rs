@@ -7,8 +7,10 @@
 //! rear slip angles, body roll φ and its rate. With every
 //! [`super::Effects`] off the last four do not feed back and the model is
 //! exactly the 2-DOF model of the module documentation ([`super`]), to the
-//! bit: the extra terms are added only when their effect is on.
-//! Units: SI, rad; ISO 8855 signs.
+//! bit: the extra terms are added only when their effect is on. Every
+//! number an effect sets is read through [`ModelScalars`] (the effects and
+//! the vehicle's yaw inertia and road friction they scale), in `f64` or in
+//! a fit's dual numbers alike. Units: SI, rad; ISO 8855 signs.
 
 use super::balance::{projection, AxleSolution};
 use super::scalar::{ModelScalars, Scalar};
@@ -112,7 +114,8 @@ impl VehicleModel {
     /// 5–15 m/s, whose yaw mode reaches 250–1000 1/s.
     pub(crate) fn fastest_rate(&self, speed: f64, friction: f64) -> f64 {
         let v = &self.vehicle;
-        let e = &self.options.effects;
+        let sc = self.scalars(friction);
+        let e = &sc.effects;
         let u = speed.max(MIN_SPEED);
         let (load_f, load_r) = v.static_axle_loads();
         let (cf, cr) = self.axle_cornering_stiffness_under((
@@ -120,9 +123,9 @@ impl VehicleModel {
             load_r + e.aero_load[1] * u * u,
         ));
         let [scale_f, scale_r] = e.cornering_stiffness_scale;
-        let mu = friction.max(1.0);
+        let mu = sc.friction.max(1.0);
         let (cf, cr) = (mu * (scale_f * cf).abs(), mu * (scale_r * cr).abs());
-        let (m, iz, a, b) = (v.mass, v.yaw_inertia, v.a, v.b);
+        let (m, iz, a, b) = (v.mass, sc.yaw_inertia, v.a, v.b);
         let a11 = -(cf + cr) / (m * u);
         let a12 = (b * cr - a * cf) / (m * u * u) - 1.0;
         let a21 = (b * cr - a * cf) / iz;
@@ -167,9 +170,10 @@ impl VehicleModel {
         speed: f64,
         steer: T,
     ) -> [T; 6] {
+        let e = &sc.effects;
         let u = speed.max(MIN_SPEED);
-        let phi = sc.roll[0] * u * r;
-        let steer = [steer + sc.roll_steer[0] * phi, sc.roll_steer[1] * phi];
+        let phi = e.roll.gradient * u * r;
+        let steer = [steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
         let (af, ar) = self.kinematic_slip(beta, r, u, steer);
         [beta, r, af, ar, phi, T::from(0.0)]
     }
@@ -220,11 +224,12 @@ impl VehicleModel {
         solve: LoadSolve<'_, T>,
     ) -> RatesOf<T> {
         let v = &self.vehicle;
+        let e = &sc.effects;
         let u = inp.speed.max(MIN_SPEED);
         let (beta, r, phi) = (x[0], x[1], x[4]);
-        let steer = [steer + sc.roll_steer[0] * phi, sc.roll_steer[1] * phi];
+        let steer = [steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
         let (kin_f, kin_r) = self.kinematic_slip(beta, r, u, steer);
-        let lagged = sc.lagged();
+        let lagged = e.lagged();
         let alpha_rear = if lagged { x[3] } else { kin_r };
         let balance = self.balance(sc, tyres, inp, (steer[0], phi), [x[2], kin_f, alpha_rear]);
         let (mut ay, mut s, evaluations, seed) = match solve {
@@ -262,13 +267,13 @@ impl VehicleModel {
         let zero = T::from(0.0);
         let mut dx = [beta_rate, yaw_acceleration, zero, zero, x[5], zero];
         if lagged {
-            let k = T::from(u) / sc.relaxation_length;
-            dx[2] = k * (kin_f - sc.steering_compliance * s.fy_front - x[2]);
+            let k = T::from(u) / e.relaxation_length;
+            dx[2] = k * (kin_f - e.steering_compliance * s.fy_front - x[2]);
             dx[3] = k * (kin_r - x[3]);
         }
-        let [gradient, frequency, damping] = sc.roll;
-        let omega = frequency * std::f64::consts::TAU;
-        dx[5] = omega * omega * (gradient * ay - phi) - damping * 2.0 * omega * x[5];
+        let roll = &e.roll;
+        let omega = roll.frequency * std::f64::consts::TAU;
+        dx[5] = omega * omega * (roll.gradient * ay - phi) - roll.damping * 2.0 * omega * x[5];
         RatesOf {
             dx,
             ay,

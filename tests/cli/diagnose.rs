@@ -635,13 +635,30 @@ fn a_steer_in_another_unit_or_sign_is_caught_against_the_yaw_rate() {
         linear_tyre(dir.path());
         dir
     };
-    // In degrees: diagnosed, with a note that names the likely slip.
+    // In degrees: refused, naming the file and the likely slip, as
+    // `metrics` refuses the same file (by the same rule and message; it
+    // takes a 5 m wheelbase where the campaign gives the vehicle's).
     let dir = folder("1.1459");
-    let (stdout, _) = diagnose(dir.path());
+    let e = campaign_err(dir.path());
+    let slip = "is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians";
     assert!(
-        stdout.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
-            && stdout.contains("is `steer` in degrees"),
-        "{stdout}"
+        e.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
+            && e.contains(slip),
+        "{e}"
+    );
+    let a = dir.path().join("runs/a.csv");
+    let o = run(&["metrics", a.to_str().unwrap()]);
+    assert!(
+        !o.status.success(),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let m = stderr(&o);
+    assert!(
+        m.contains("a.csv: the yaw rate is ")
+            && m.contains("× smaller than a neutral car's for this steer")
+            && m.contains(slip),
+        "{m}"
     );
     // The other sign: refused, naming the file and the convention.
     let dir = folder("-0.02");

@@ -227,6 +227,8 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
     fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }
 
+mod analogues;
+mod calibration;
 mod cross_validation;
 mod diagnose;
 mod identify;

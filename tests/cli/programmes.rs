@@ -101,6 +101,22 @@ fn a_withheld_bank_on_the_synthetic_oval_is_named_from_the_bank_channel() {
         "{c}"
     );
     assert_eq!(c["glitches"], serde_json::json!([]), "{c}");
+    // Parked on the banking the accelerometer reads g·sin(bank) (about
+    // -3.4 m/s²); the logged bank removed, no offset is left (the truth has
+    // none): the proving ground and the calibration share the bank's sign.
+    let ay = d["calibration"]["channels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["channel"] == "ay")
+        .unwrap();
+    assert_eq!(ay["bank_removed"], true, "{ay}");
+    let p = &ay["standstill"];
+    let (mean, se) = (
+        p["mean"].as_f64().unwrap(),
+        p["std_error"].as_f64().unwrap(),
+    );
+    assert!(mean.abs() < 4.0 * se && se < 0.01, "{p}");
     let road = &d["road"][0]["bank"];
     assert_eq!(road["source"], "measured", "{road}");
     // The channel's 5th percentile: the 20° turns, within its noise

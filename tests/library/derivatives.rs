@@ -34,8 +34,8 @@ fn exact_jacobians_give_the_verdict_of_differences_within_noise() {
         // The report says how its Jacobians were taken.
         assert_eq!(exact.derivatives, Derivatives::Exact);
         assert_eq!(diff.derivatives, Derivatives::Differences);
-        assert_eq!(exact.verdict.effects, vec![truth]);
-        assert_eq!(exact.verdict.effects, diff.verdict.effects, "{truth:?}");
+        assert_eq!(exact.verdict.effects(), [truth]);
+        assert_eq!(exact.verdict.effects(), diff.verdict.effects(), "{truth:?}");
         for r in &exact.ranking {
             let Some(d) = diff.ranking.iter().find(|d| d.effect == r.effect) else {
                 continue;
@@ -45,9 +45,9 @@ fn exact_jacobians_give_the_verdict_of_differences_within_noise() {
         }
         for (e, d) in exact
             .verdict
-            .parameters
+            .parameters()
             .iter()
-            .zip(&diff.verdict.parameters)
+            .zip(diff.verdict.parameters())
         {
             assert_eq!(e.name, d.name);
             let se = e.std_error.max(d.std_error);

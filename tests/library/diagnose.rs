@@ -30,21 +30,25 @@ fn no_effect_gives_an_empty_verdict_and_a_pair_is_found_together() {
     use handling::diagnose::effects::EffectKind;
     // Only measurement noise and the tyre's model-form error: no gap.
     let d = diagnose_synthetic(&[], 4);
-    assert!(d.verdict.effects.is_empty(), "{}", d.verdict.statement);
+    assert!(d.verdict.effects().is_empty(), "{}", d.verdict.statement());
     assert!(!d.gap.significant);
-    assert!(d.verdict.statement.starts_with("no significant gap"));
+    assert_eq!(
+        d.verdict.kind(),
+        handling::diagnose::VerdictKind::NoSignificantGap
+    );
+    assert!(d.verdict.statement().starts_with("no significant gap"));
     // A tyre lag and sensor offsets together: each alone explains less than
     // the acceptance share, the pair nearly all of it.
     let d = diagnose_synthetic(&[EffectKind::RelaxationLength, EffectKind::SensorBias], 4);
-    let mut found = d.verdict.effects.clone();
+    let mut found = d.verdict.effects().to_vec();
     found.sort();
     let mut withheld = [EffectKind::RelaxationLength, EffectKind::SensorBias];
     withheld.sort();
-    assert_eq!(found, withheld, "{}", d.verdict.statement);
+    assert_eq!(found, withheld, "{}", d.verdict.statement());
     let pair = d
         .combinations
         .iter()
-        .find(|r| r.effects == d.verdict.effects)
+        .find(|r| r.effects == d.verdict.effects())
         .unwrap();
     assert!(pair.reduction_percent > 70.0, "{}", pair.reduction_percent);
     let sigma = pair
@@ -63,16 +67,17 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
     // separates them.
     let d = diagnose_synthetic(&[EffectKind::SteeringCompliance], 5);
     assert_eq!(
-        d.verdict.effects,
+        d.verdict.effects(),
         [EffectKind::SteeringCompliance],
         "{}",
-        d.verdict.statement
+        d.verdict.statement()
     );
     let group = &d.confounded[0];
     assert_eq!(group.effects[0], EffectKind::SteeringCompliance);
     assert!(group.effects.contains(&EffectKind::CorneringStiffness));
-    assert!(group.separating_test.contains("cornering_stiffness:"));
-    let c = d.verdict.parameters[0].value;
+    let test = handling::diagnose::report::words::separating_test(group);
+    assert!(test.contains("cornering_stiffness:"), "{test}");
+    let c = d.verdict.parameters()[0].value;
     assert!((c - 0.003).abs() < 0.0003, "{c} rad/kN");
     // Reproducible: the same seed gives the same numbers (compared as text:
     // an unidentifiable parameter's standard error is NaN).

@@ -59,7 +59,7 @@ fn same_with_and_without(truth: &[EffectKind], seed: u64) -> usize {
     }
     for s in &on.screened {
         assert!(
-            !on.verdict.effects.contains(&s.effects[0]),
+            !on.verdict.effects().contains(&s.effects[0]),
             "{what}: {} screened and in the verdict",
             s.effect
         );

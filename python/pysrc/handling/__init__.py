@@ -58,11 +58,13 @@ from ._reports import (
     Identification,
     MeasuredMetrics,
     RankedEffect,
+    Refused,
     Simulation,
     StepMetrics,
     StudyReport,
     StudySample,
     Verdict,
+    VerdictKind,
 )
 from ._toml import Document
 
@@ -91,6 +93,8 @@ __all__ = [
     "Identification",
     "Diagnosis",
     "Verdict",
+    "VerdictKind",
+    "Refused",
     "RankedEffect",
     "simulate",
     "metrics",

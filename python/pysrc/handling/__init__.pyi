@@ -13,11 +13,13 @@ from ._reports import (
     Identification as Identification,
     MeasuredMetrics as MeasuredMetrics,
     RankedEffect as RankedEffect,
+    Refused as Refused,
     Simulation as Simulation,
     StepMetrics as StepMetrics,
     StudyReport as StudyReport,
     StudySample as StudySample,
     Verdict as Verdict,
+    VerdictKind as VerdictKind,
 )
 
 PathLike = Union[str, os.PathLike[str]]

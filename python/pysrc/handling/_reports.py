@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import enum
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -276,22 +277,94 @@ class Identification(_Report):
         return _named(cls, d, tyre=tyre)
 
 
+class VerdictKind(str, enum.Enum):
+    """Which case a verdict is (``verdict.kind`` in diagnosis.json)."""
+
+    EXPLAINED = "explained"
+    """Effects of the library explain the gap (all of it, or part)."""
+    NO_SIGNIFICANT_GAP = "no_significant_gap"
+    """The base model's held-out error is within noise."""
+    NOT_IDENTIFIABLE = "not_identifiable"
+    """The base model is no tyre and no candidate makes it one."""
+    OUTSIDE_LIBRARY = "outside_library"
+    """A gap no candidate of the library is accepted for."""
+
+
 @dataclass(frozen=True)
-class Verdict:
-    """What a diagnosis concludes."""
+class Refused:
+    """A candidate that is not the verdict, and every rule it fails."""
 
     effects: List[str]
-    """Effects the evidence supports (empty: within noise, or none explains it)."""
+    """Its effects."""
+    reduction_percent: float
+    """Share of the held-out gap above noise it removes, %."""
+    why: List[Dict[str, Any]]
+    """The rules it fails, each a dict whose ``kind`` names it:
+    ``below_acceptance`` (``threshold_percent``), ``bic_not_lower``
+    (``delta_bic``), ``axles_no_tyre`` (``no_tyre``: the reasons, each with
+    its ``kind``, ``limit`` or ``early_peak``), ``leaves_parameter_idle``
+    (``simpler``: the candidate taken in its place, refused) and
+    ``search_ended_on`` (``set``: the set its search ended on, refused)."""
+
+    @property
+    def reasons(self) -> List[str]:
+        """The kinds of the rules it fails, in order."""
+        return [w["kind"] for w in self.why]
+
+    @classmethod
+    def from_dict(cls, d: Dict[str, Any]) -> "Refused":
+        return cls(effects=d["effects"], reduction_percent=d["reduction_percent"], why=d["why"])
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What a diagnosis concludes: its case (``kind``), the effects and
+    their parameters where effects explain the gap, and the case's figures;
+    ``statement`` and ``warnings`` are its words."""
+
+    kind: VerdictKind
+    """Which case it is."""
+    effects: List[str]
+    """Effects the evidence supports (empty unless ``kind`` is explained)."""
     parameters: List[Dict[str, Any]]
-    """Their fitted parameters (``name``, ``value``, standard error, unit)."""
+    """Their fitted parameters (``name``, ``value``, standard error, unit,
+    whether on a bound and whether the runs determine it)."""
     statement: str
     """The verdict in words."""
     warnings: List[str]
-    """Channels the verdict's effects leave worse on held-out runs."""
+    """What the verdict's effects leave worse on held-out runs, and a base
+    that is no tyre alone, in words."""
+    heldout_error: float
+    """Held-out combined error J of the base model."""
+    noise_level: float
+    """J of the noise alone."""
+    heldout_error_after: Optional[float] = None
+    """Held-out J with the effects (explained)."""
+    reduction_percent: Optional[float] = None
+    """Share of the held-out gap above noise removed, % (explained)."""
+    partial: Optional[bool] = None
+    """The effects explain only part of the gap, below 50 % (explained)."""
+    warning_details: List[Dict[str, Any]] = field(default_factory=list)
+    """The warnings typed (``kind``: ``channel_worsened`` with ``channel``,
+    ``before``, ``after``, ``noise_floor``, ``added_percent``; or
+    ``base_no_tyre`` with ``no_tyre``)."""
+    threshold: Optional[float] = None
+    """The multiple of the noise level a gap must exceed (no significant gap)."""
+    no_tyre: List[Dict[str, Any]] = field(default_factory=list)
+    """Why the base model is no tyre (not identifiable)."""
+    refused: Optional[Refused] = None
+    """The best single candidate and why it was refused (outside the library)."""
+    threshold_percent: Optional[float] = None
+    """The share of the gap a candidate must remove, % (not identifiable,
+    outside the library)."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "Verdict":
-        return cls(**{f.name: d[f.name] for f in dataclasses.fields(cls)})
+        kw = {f.name: d[f.name] for f in dataclasses.fields(cls) if f.name in d}
+        kw["kind"] = VerdictKind(d["kind"])
+        if d.get("refused") is not None:
+            kw["refused"] = Refused.from_dict(d["refused"])
+        return cls(**kw)
 
 
 @dataclass(frozen=True)
@@ -311,7 +384,11 @@ class RankedEffect:
     reduction_percent: float
     """Share of the held-out gap above noise removed, %."""
     warning: Optional[str]
-    """Cross-validation that disagrees with the fit, or refits that did not converge."""
+    """Cross-validation that disagrees with the fit, axles that are no
+    tyre, refits that did not converge, in words (None without)."""
+    warning_details: Optional[List[Dict[str, Any]]]
+    """The same typed (``kind``: ``disagreement``, ``axles_no_tyre``,
+    ``folds_not_converged``)."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "RankedEffect":
@@ -336,7 +413,10 @@ class Diagnosis(_Report):
     folds: int
     """Cross-validation folds."""
     notes: List[str]
-    """Notes on the campaign and the fit."""
+    """Notes on the campaign and the fit, in words."""
+    note_details: List[Dict[str, Any]]
+    """The same typed (``kind``: ``campaign``, ``not_a_candidate``,
+    ``bank_only_in_yaw_rate``, ``stiff_replay``)."""
     verdict: Verdict
     """The verdict."""
     ranking: List[RankedEffect]

@@ -86,25 +86,6 @@ impl AxleLimit {
             _ => None,
         }
     }
-
-    /// What it means, and which way the data pull, for the parameter
-    /// named `name`.
-    pub fn meaning(self, name: &str) -> String {
-        match self {
-            AxleLimit::NoForce => format!(
-                "{name} at its physical limit 0.4 1/rad (an axle without cornering force; no tyre is that soft): the data pull it lower"
-            ),
-            AxleLimit::Rigid => format!(
-                "{name} at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher"
-            ),
-            AxleLimit::NoGrip => format!(
-                "{name} at its physical limit 0.11 (a road without grip): the data pull it lower"
-            ),
-            AxleLimit::Linear => format!(
-                "{name} at the top of its range (9): a tyre that never saturates on these runs, which stay in its linear range and do not identify it"
-            ),
-        }
-    }
 }
 
 /// The smallest slip angle at which a pneumatic tyre's lateral force
@@ -117,28 +98,68 @@ pub fn peak_slip(k: f64, d: f64) -> f64 {
     (std::f64::consts::FRAC_PI_2 / SHAPE).tan() * SHAPE * d / k
 }
 
-/// The axles of shares `p` that peak before [`PEAK_SLIP_MIN`], said as
-/// reasons the base is no tyre: an axle that saturates within a fraction
-/// of a degree acts like a sign function of its slip, and its replays
-/// turn hypersensitive to their start (their standard errors say
-/// nothing).
-fn early_peaks(p: &[f64]) -> Vec<String> {
+/// The axles of shares `p` that peak before [`PEAK_SLIP_MIN`]: an axle
+/// that saturates within a fraction of a degree acts like a sign function
+/// of its slip, and its replays turn hypersensitive to their start (their
+/// standard errors say nothing).
+fn early_peaks(p: &[f64]) -> Vec<NoTyre> {
     let d = friction(p[2]);
-    ["front", "rear"]
-        .iter()
+    [Axle::Front, Axle::Rear]
+        .into_iter()
         .zip(&p[..2])
         .filter_map(|(axle, &s)| {
-            let peak = peak_slip(coefficient(s), d);
-            (peak < PEAK_SLIP_MIN).then(|| {
-                format!(
-                    "the {axle} axle peaks at {:.2}° of slip (cornering coefficient over peak friction {:.0} 1/rad; no tyre peaks before {:.0}°): the data pull it to saturate early",
-                    peak.to_degrees(),
-                    coefficient(s) / d,
-                    PEAK_SLIP_MIN.to_degrees()
-                )
+            let peak_slip = peak_slip(coefficient(s), d);
+            (peak_slip < PEAK_SLIP_MIN).then(|| NoTyre::EarlyPeak {
+                axle,
+                peak_slip,
+                coefficient_over_friction: coefficient(s) / d,
             })
         })
         .collect()
+}
+
+/// An axle of the car.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Axle {
+    /// The front axle.
+    Front,
+    /// The rear axle.
+    Rear,
+}
+
+impl Axle {
+    /// Its name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Axle::Front => "front",
+            Axle::Rear => "rear",
+        }
+    }
+}
+
+/// Why axle characteristics are no tyre (the base is then degenerate, and
+/// a candidate fitted with such axles cannot be a verdict).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum NoTyre {
+    /// A characteristic on a limit no tyre reaches (a rigid axle, one
+    /// without force, a road without grip).
+    Limit {
+        /// The characteristic ([`AXLE_NAMES`]).
+        parameter: &'static str,
+        /// The limit.
+        limit: AxleLimit,
+    },
+    /// An axle whose force peaks before [`PEAK_SLIP_MIN`] of slip.
+    EarlyPeak {
+        /// The axle.
+        axle: Axle,
+        /// The slip angle of its peak, rad.
+        peak_slip: f64,
+        /// Its cornering coefficient over the peak friction, 1/rad.
+        coefficient_over_friction: f64,
+    },
 }
 
 /// One axle characteristic as identified, in physical units.
@@ -168,9 +189,9 @@ pub struct AxleIdentification {
     pub largest_correlation: Option<(String, String, f64)>,
     /// Grid points polished (several starts).
     pub starts: usize,
-    /// Why the base is no tyre (a rigid axle, one without force, no grip),
-    /// if it is not.
-    pub degenerate: Option<String>,
+    /// Why the base is no tyre (a rigid axle, one without force, no grip,
+    /// an early peak); empty for a tyre.
+    pub no_tyre: Vec<NoTyre>,
 }
 
 /// Names of the three characteristics.
@@ -212,61 +233,29 @@ impl AxleIdentification {
             }
             best
         });
-        let mut reasons: Vec<String> = parameters
+        let mut no_tyre: Vec<NoTyre> = parameters
             .iter()
             .filter_map(|v| {
                 v.limit
                     .filter(|l| l.degenerate())
-                    .map(|l| l.meaning(v.name))
+                    .map(|limit| NoTyre::Limit {
+                        parameter: v.name,
+                        limit,
+                    })
             })
             .collect();
-        reasons.extend(early_peaks(p));
+        no_tyre.extend(early_peaks(p));
         Self {
             parameters,
             largest_correlation,
             starts,
-            degenerate: (!reasons.is_empty()).then(|| reasons.join("; ")),
+            no_tyre,
         }
     }
 
-    /// One line for the terminal and the report.
-    pub fn describe(&self) -> String {
-        let values: Vec<String> = self
-            .parameters
-            .iter()
-            .map(|v| {
-                let digits = if v.unit == "-" { 3 } else { 1 };
-                match v.limit {
-                    Some(l) => l.meaning(v.name).replacen(
-                        v.name,
-                        &format!("{} {:.digits$}", v.name, v.value),
-                        1,
-                    ),
-                    None if v.std_error.is_finite() => {
-                        // ± 5.1, not ± 5.1e0; ± 2.7e-4 where it is small.
-                        let se = if v.std_error >= 0.1 {
-                            format!("{:.1}", v.std_error)
-                        } else {
-                            format!("{:.1e}", v.std_error)
-                        };
-                        format!("{} {:.digits$} ± {se} {}", v.name, v.value, v.unit)
-                    }
-                    None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
-                }
-            })
-            .collect();
-        let mut s = format!(
-            "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; cornering coefficient = cornering stiffness per unit load; best of {} starts from a grid; refitted with every candidate): {}",
-            self.starts,
-            values.join(", ")
-        );
-        if let Some((a, b, rho)) = &self.largest_correlation {
-            s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
-        }
-        if let Some(why) = &self.degenerate {
-            s.push_str(&format!("; no tyre: {why}"));
-        }
-        s
+    /// Whether the axles are no tyre.
+    pub fn degenerate(&self) -> bool {
+        !self.no_tyre.is_empty()
     }
 }
 
@@ -371,19 +360,26 @@ mod tests {
         assert_eq!(AxleLimit::of(2, &[0.5, 0.5, 0.9]), Some(AxleLimit::Linear));
         assert_eq!(AxleLimit::of(2, &[0.5, 0.5, 0.1]), Some(AxleLimit::NoGrip));
         assert_eq!(AxleLimit::of(0, &[0.5, 0.5, 0.5]), None);
+        // A rigid rear (which also peaks within a fraction of a degree).
         let id = AxleIdentification::new(&[0.5, hi, 0.9], &[0.01; 3], None, 3);
-        let why = id.degenerate.expect("a rigid rear is no tyre");
-        assert!(
-            why.contains("rear cornering coefficient") && why.contains("rigid"),
-            "{why}"
+        assert_eq!(
+            id.no_tyre[0],
+            NoTyre::Limit {
+                parameter: "rear cornering coefficient",
+                limit: AxleLimit::Rigid
+            }
         );
+        assert!(matches!(
+            id.no_tyre[1..],
+            [NoTyre::EarlyPeak {
+                axle: Axle::Rear,
+                ..
+            }]
+        ));
+        // A friction that never saturates is on a limit and still a tyre.
         let linear = AxleIdentification::new(&[0.5, 0.6, 0.9], &[0.01; 3], None, 3);
-        assert_eq!(linear.degenerate, None);
-        assert!(
-            linear.describe().contains("linear range"),
-            "{}",
-            linear.describe()
-        );
+        assert!(!linear.degenerate());
+        assert_eq!(linear.parameters[2].limit, Some(AxleLimit::Linear));
     }
 
     /// Runs of a car whose axles are the simplified Magic Formula of
@@ -455,12 +451,22 @@ mod tests {
     fn an_axle_that_peaks_before_two_degrees_is_no_tyre() {
         // Putnam's base: rear 284 1/rad at D 1.0 peaks at 0.69°.
         let id = AxleIdentification::new(&shares(43.1, 283.8, 1.0), &[0.01; 3], None, 3);
-        let why = id.degenerate.expect("a rear peaking at 0.69° is no tyre");
-        assert!(why.contains("rear axle peaks at 0.69°"), "{why}");
-        assert!(!why.contains("front"), "{why}");
+        let [NoTyre::EarlyPeak {
+            axle: Axle::Rear,
+            peak_slip: slip,
+            coefficient_over_friction,
+        }] = id.no_tyre[..]
+        else {
+            panic!(
+                "a rear peaking at 0.69° is no tyre, the front is: {:?}",
+                id.no_tyre
+            );
+        };
+        assert!((slip.to_degrees() - 0.69).abs() < 0.005, "{slip}");
+        assert!((coefficient_over_friction - 283.8).abs() < 1e-6);
         // The same stiffness far from saturating (D 9) is a tyre.
         let linear = AxleIdentification::new(&shares(43.1, 283.8, 9.0), &[0.01; 3], None, 3);
-        assert_eq!(linear.degenerate, None);
+        assert!(!linear.degenerate());
         // The peak is where the axle's force is largest.
         let (f, _) = axle_tyres(&shares(20.0, 20.0, 1.0));
         let Tyre::MagicSimple(m) = f else { panic!() };

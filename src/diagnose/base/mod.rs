@@ -2,7 +2,8 @@
 //! model fitted to its rig data, or — with neither — axle characteristics
 //! identified from the runs (`identify`) and refitted on every fold and
 //! with every candidate, since an effect changes what the tyres must have
-//! been. Units: SI, rad.
+//! been. The campaign's `[roll]` is the base models' roll
+//! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
 pub(crate) mod identify;
 
@@ -24,7 +25,28 @@ use crate::optim::stats::covariance;
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use rayon::prelude::*;
+use serde::Serialize;
 use std::time::Instant;
+
+/// Where the base model's tyres come from, as the report states it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum TyreSource {
+    /// The campaign's tyre files.
+    Given,
+    /// A model fitted to the campaign's rig data.
+    Rig {
+        /// The model fitted.
+        model: crate::tyre::ModelName,
+        /// The rig data file.
+        path: std::path::PathBuf,
+        /// The fit's residual σ, % of the force.
+        sigma_percent: f64,
+    },
+    /// No tyre data: axle characteristics identified from the runs (the
+    /// base report's `axles`).
+    FromRuns,
+}
 
 /// The base model of all runs and of every fold.
 pub(super) struct Bases {
@@ -46,12 +68,13 @@ pub(super) fn base_models(
     folds: &[Vec<usize>],
     scales_hint: [f64; 3],
     timing: Option<&Recorder>,
-) -> Result<(Bases, String, Option<GroupingReport>), Error> {
+) -> Result<(Bases, TyreSource, Option<GroupingReport>), Error> {
     let vehicle = c.vehicle.clone();
     let nominal_share = vehicle.front_transfer_share();
-    let make = |f: Tyre, r: Tyre| Augmented {
-        roll: c.roll,
-        ..Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction)
+    let make = |f: Tyre, r: Tyre| {
+        let mut m = Augmented::new(VehicleModel::new(vehicle.clone(), f, r), c.friction);
+        m.effects_mut().roll = c.roll;
+        m
     };
     // Tyres not fitted to the runs: one model for all runs and every fold.
     let fixed = |m: Augmented| Bases {
@@ -64,7 +87,7 @@ pub(super) fn base_models(
     match &c.tyres {
         BaseTyres::Given(f, r) => Ok((
             fixed(make((**f).clone(), (**r).clone())),
-            "given tyre files".into(),
+            TyreSource::Given,
             None,
         )),
         BaseTyres::Rig { path, data, model } => {
@@ -90,32 +113,28 @@ pub(super) fn base_models(
             }
             Ok((
                 fixed(make(f.tyre.clone(), f.tyre.clone())),
-                format!(
-                    "{} fitted to the rig data {} (σ {:.2} % of the force)",
-                    model,
-                    path.display(),
-                    f.sigma_percent
-                ),
+                TyreSource::Rig {
+                    model: *model,
+                    path: path.clone(),
+                    sigma_percent: f.sigma_percent,
+                },
                 Some(grouped.report),
             ))
         }
         BaseTyres::FromRuns => {
             let d = c.settings.derivatives;
-            let (bases, described) =
+            let bases =
                 axles_from_runs(runs, folds, (scales_hint, nominal_share), (make, d), timing);
-            Ok((bases, described, None))
+            Ok((bases, TyreSource::FromRuns, None))
         }
     }
 }
 
-/// What the axle shares set on the models `make` builds: their tyres.
-fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> Layout {
+/// What the axle shares set on the models `make` builds (their tyres),
+/// and a model it builds.
+fn axle_layout(make: impl Fn(Tyre, Tyre) -> Augmented) -> (Layout, Augmented) {
     let (f, r) = axle_tyres(&[0.5, 0.5, 0.5]);
-    Layout {
-        base: make(f, r),
-        kinds: Vec::new(),
-        axle: true,
-    }
+    (Layout::new(&[], true), make(f, r))
 }
 
 /// The base model of axle characteristics identified from the runs (no
@@ -127,20 +146,20 @@ fn axles_from_runs(
     (scales_hint, nominal_share): ([f64; 3], f64),
     (make, derivatives): (impl Fn(Tyre, Tyre) -> Augmented + Sync, Derivatives),
     timing: Option<&Recorder>,
-) -> (Bases, String) {
+) -> Bases {
     let build = |p: &[f64]| {
         let (f, r) = axle_tyres(p);
         make(f, r)
     };
     let stamps = timing.map(|_| Stamps::default());
-    let layout = axle_layout(&make);
+    let (layout, model) = axle_layout(&make);
     let problem = Problem::new(
         |p: &[f64]| counted(&stamps, build, p),
         runs.iter().collect(),
         scales_hint,
         AXLE_BOUNDS.to_vec(),
     )
-    .with_layout(layout.clone(), derivatives);
+    .with_layout(layout.clone(), &model, derivatives);
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
@@ -171,7 +190,7 @@ fn axles_from_runs(
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             )
-            .with_layout(layout.clone(), derivatives);
+            .with_layout(layout.clone(), &model, derivatives);
             let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
             if let (Some(rec), Some(st)) = (timing, &stamps) {
                 rec.add(Phase::BaseFolds, t0.elapsed(), st.count());
@@ -185,17 +204,13 @@ fn axles_from_runs(
         .as_ref()
         .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
     let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
-    let described = format!("no tyre data: {}", id.describe());
-    (
-        Bases {
-            all: build(p),
-            folds: fold_params.iter().map(|q| build(q)).collect(),
-            nominal_share,
-            axle: Some((p.clone(), fold_params)),
-            identification: Some(id),
-        },
-        described,
-    )
+    Bases {
+        all: build(p),
+        folds: fold_params.iter().map(|q| build(q)).collect(),
+        nominal_share,
+        axle: Some((p.clone(), fold_params)),
+        identification: Some(id),
+    }
 }
 
 /// The model of `p`, the evaluation stamped when the diagnosis is timed.

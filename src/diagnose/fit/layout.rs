@@ -1,61 +1,174 @@
-//! What a fit's parameter vector sets on the augmented model
-//! ([`Layout`]): the axle characteristics of an identified base
-//! ([`crate::diagnose::base::identify`]) first when they are fitted, then each candidate
-//! effect's parameters ([`crate::diagnose::effects::EffectSet::set`]), then the roll
-//! dynamics when a roll effect is among them. The plain model of a vector
-//! is [`with_effects`]; its derivatives are [`crate::diagnose::fit::tangent`]'s. Units:
-//! SI, rad.
+//! What a fit's parameter vector is and sets ([`Layout`]): the blocks
+//! `[axles | effects | roll]` — the axle characteristics of an identified
+//! base ([`crate::diagnose::base::identify`]) first when they are fitted,
+//! then each candidate effect's parameters in order, then the roll
+//! dynamics ([`RollDynamics`]) when a roll effect is among them — with the
+//! offsets of every block and effect (the only place they are computed),
+//! and the model a vector sets: the base model's effects with each
+//! effect's [`crate::diagnose::effects::Effect::apply`] on top, written
+//! once for any scalar, so that the plain model of a vector
+//! ([`Layout::model`]) and its dual twin ([`crate::diagnose::fit::tangent`])
+//! are the same arithmetic. Units: SI, rad.
 
-use crate::diagnose::effects::{EffectKind, EffectSet};
-use crate::diagnose::model::axles::axle_tyres;
+use crate::diagnose::effects::{EffectKind, Parameter, RollDynamics};
+use crate::diagnose::model::axles::{axle_tyres, AXLE_BOUNDS};
 use crate::diagnose::model::Augmented;
+use crate::scalar::Scalar;
+use crate::vehicle::Effects;
+use std::ops::Range;
 
-/// What a fit's parameter vector sets on a model: the axle
-/// characteristics first when they are fitted (`axle`), then each
-/// effect's parameters in `kinds` order, then the roll dynamics when a
-/// roll effect is among them (as [`with_effects`] builds the plain model,
-/// which the problem's own `build` gives).
-#[derive(Debug, Clone)]
+/// The layout of a fit's parameter vector: the axle characteristics first
+/// when they are fitted (`axle`), then each effect's parameters in `kinds`
+/// order, then the roll dynamics when a roll effect is among them.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Layout {
-    /// The model the parameters are set on (its tyres say whether the
-    /// replay has a generic form).
-    pub base: Augmented,
     /// The effects fitted, in vector order.
     pub kinds: Vec<EffectKind>,
     /// Whether the axle characteristics lead the vector.
     pub axle: bool,
 }
 
-/// Whether a candidate carries the roll-dynamics parameters.
-pub(crate) fn fits_roll(kinds: &[EffectKind]) -> bool {
-    kinds.iter().any(|e| e.uses_roll())
+impl Layout {
+    /// The layout of `kinds`, after the axle characteristics when `axle`.
+    pub fn new(kinds: &[EffectKind], axle: bool) -> Self {
+        Self {
+            kinds: kinds.to_vec(),
+            axle,
+        }
+    }
+
+    /// The number of axle characteristics leading the vector (0 or 3).
+    pub fn axle_count(&self) -> usize {
+        if self.axle {
+            AXLE_BOUNDS.len()
+        } else {
+            0
+        }
+    }
+
+    /// Whether the vector carries the roll dynamics (a roll effect is
+    /// among the effects).
+    pub fn fits_roll(&self) -> bool {
+        self.kinds.iter().any(|e| e.uses_roll())
+    }
+
+    /// Where the axle characteristics are (empty when not fitted).
+    pub fn axles(&self) -> Range<usize> {
+        0..self.axle_count()
+    }
+
+    /// Where the effects' parameters are (all of them, in order).
+    pub fn effects(&self) -> Range<usize> {
+        let start = self.axle_count();
+        let n: usize = self.kinds.iter().map(|e| e.parameters().len()).sum();
+        start..start + n
+    }
+
+    /// Where effect `i` (of `kinds`) has its parameters.
+    pub fn effect(&self, i: usize) -> Range<usize> {
+        let start = self.axle_count()
+            + self.kinds[..i]
+                .iter()
+                .map(|e| e.parameters().len())
+                .sum::<usize>();
+        start..start + self.kinds[i].parameters().len()
+    }
+
+    /// Where the roll dynamics are (empty when not fitted).
+    pub fn roll(&self) -> Range<usize> {
+        let end = self.effects().end;
+        let n = if self.fits_roll() {
+            RollDynamics::PARAMETERS.len()
+        } else {
+            0
+        };
+        end..end + n
+    }
+
+    /// The parameters after the axle characteristics, in vector order,
+    /// each with the name of its group (the effect's, or `roll`).
+    pub fn parameters(&self) -> impl Iterator<Item = (&'static str, &'static Parameter)> + '_ {
+        let roll = if self.fits_roll() {
+            RollDynamics::PARAMETERS
+        } else {
+            &[]
+        };
+        self.kinds
+            .iter()
+            .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)))
+            .chain(roll.iter().map(|q| ("roll", q)))
+    }
+
+    /// The effects vector `p` sets on `base` (the base model's effects), in
+    /// the scalar of `p`: each effect applied in order, then the roll
+    /// dynamics.
+    pub fn effects_of<T: Scalar>(&self, base: &Effects, p: &[T]) -> Effects<T> {
+        let mut e = base.lift::<T>();
+        for (i, kind) in self.kinds.iter().enumerate() {
+            kind.apply(&p[self.effect(i)], &mut e);
+        }
+        if self.fits_roll() {
+            RollDynamics::apply(&p[self.roll()], &mut e);
+        }
+        e
+    }
+
+    /// The model of vector `p` on `base`: the axle characteristics (when
+    /// fitted) as its tyres, the effects set on the base model's.
+    pub fn model(&self, base: &Augmented, p: &[f64]) -> Augmented {
+        let mut m = base.clone();
+        if self.axle {
+            (m.model.front, m.model.rear) = axle_tyres(&p[self.axles()]);
+        }
+        m.model.options.effects = self.effects_of(base.effects(), p);
+        m
+    }
+
+    /// The start of this layout with `added` appended, from a vector `p`
+    /// of this layout and a vector `q` of `added` alone (same axles): the
+    /// axle characteristics and effect values of `p`, the added effect's
+    /// values from `q`, and the roll dynamics from whichever of the two
+    /// fits them (`p` first).
+    pub fn combined(&self, p: &[f64], added: EffectKind, q: &[f64]) -> Vec<f64> {
+        let single = Layout::new(&[added], self.axle);
+        let mut start = p[..self.effects().end].to_vec();
+        start.extend(&q[single.effect(0)]);
+        if self.fits_roll() {
+            start.extend(&p[self.roll()]);
+        } else {
+            start.extend(&q[single.roll()]);
+        }
+        start
+    }
 }
 
-/// The model of a candidate's parameter vector: the axle characteristics
-/// first when they are fitted (`axle`), then each effect's parameters, then
-/// the roll dynamics when a roll effect is among them (`crate::diagnose::base::ROLL_DYNAMICS`).
-pub(crate) fn with_effects(
-    base: &Augmented,
-    fixed: &EffectSet,
-    kinds: &[EffectKind],
-    axle: bool,
-    p: &[f64],
-) -> Augmented {
-    let mut m = base.clone();
-    m.effects = *fixed;
-    let mut k = 0;
-    if axle {
-        (m.base.front, m.base.rear) = axle_tyres(&p[..3]);
-        k = 3;
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_blocks_follow_each_other() {
+        use EffectKind::{RoadBank, RollSteer, SensorBias};
+        let l = Layout::new(&[SensorBias, RollSteer, RoadBank], true);
+        assert_eq!(l.axles(), 0..3);
+        assert_eq!((l.effect(0), l.effect(1), l.effect(2)), (3..6, 6..8, 8..9));
+        assert_eq!((l.effects(), l.roll()), (3..9, 9..11));
+        let names: Vec<&str> = l.parameters().map(|(g, _)| g).collect();
+        assert_eq!(names[names.len() - 3..], ["road_bank", "roll", "roll"]);
+        let plain = Layout::new(&[RoadBank], false);
+        assert_eq!(
+            (plain.axles(), plain.effects(), plain.roll()),
+            (0..0, 0..1, 1..1)
+        );
+        // A roll effect added to a set without one brings its dynamics.
+        let p = [0.5, 0.5, 0.5, 0.03];
+        let q = [0.6, 0.6, 0.6, -0.1, 0.1, 1.2, 0.7];
+        let start = Layout::new(&[RoadBank], true).combined(&p, RollSteer, &q);
+        assert_eq!(start, [0.5, 0.5, 0.5, 0.03, -0.1, 0.1, 1.2, 0.7]);
+        // A set with roll keeps its own.
+        let p2 = [0.5, 0.5, 0.5, -0.1, 0.1, 1.5, 0.5];
+        let q2 = [0.6, 0.6, 0.6, 0.02];
+        let start = Layout::new(&[RollSteer], true).combined(&p2, RoadBank, &q2);
+        assert_eq!(start, [0.5, 0.5, 0.5, -0.1, 0.1, 0.02, 1.5, 0.5]);
     }
-    for e in kinds {
-        let n = e.parameters().len();
-        m.effects.set(*e, &p[k..k + n]);
-        k += n;
-    }
-    if fits_roll(kinds) {
-        m.roll.frequency = p[k];
-        m.roll.damping = p[k + 1];
-    }
-    m
 }

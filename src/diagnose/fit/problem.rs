@@ -2,7 +2,10 @@
 //! (effect parameters, or axle tyre characteristics) in, the scaled
 //! residuals of every run's replay out. Each evaluation replays the runs
 //! with the augmented model the parameters build and compares what its
-//! sensors would read with what was measured.
+//! sensors would read with what was measured. What the parameters set is
+//! the problem's `build` (a [`Layout`]'s model of the vector, or the axle
+//! tyres alone); with exact derivatives the problem also holds that layout
+//! and the base model's effects it applies to.
 //!
 //! The residual of channel c at a sample is `(simulated − measured)/s_c`,
 //! with `s_c` the channel's scale (its noise floor, at least 2 % of its RMS
@@ -14,6 +17,7 @@ use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::replay::{LastReplay, Prepared};
 use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
+use crate::vehicle::Effects;
 use nalgebra::DMatrix;
 use std::sync::Mutex;
 
@@ -34,9 +38,9 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     pub bounds: Vec<(f64, f64)>,
     /// The last replay of each run.
     last: Vec<Mutex<Option<LastReplay>>>,
-    /// What the parameters set, when the problem has exact derivatives
-    /// ([`Problem::with_layout`]).
-    layout: Option<Layout>,
+    /// What the parameters set and the base model's effects they are set
+    /// on, when the problem has exact derivatives ([`Problem::with_layout`]).
+    layout: Option<(Layout, Effects)>,
 }
 
 impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
@@ -60,25 +64,30 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     }
 
     /// The same problem with exact derivatives when `derivatives` asks
-    /// for them: `layout` says what the parameters set (as `build` sets
-    /// them), and the Jacobian comes from one
-    /// replay of each run in dual numbers ([`crate::diagnose::fit::tangent`]) instead of
+    /// for them and the model has a generic form (the axle
+    /// characteristics fitted, or tyres with a generic force; else forward
+    /// differences): `layout` says what the parameters set on `base` (as
+    /// `build` sets them), and the Jacobian comes from one replay of each
+    /// run in dual numbers ([`crate::diagnose::fit::tangent`]) instead of
     /// one per parameter.
-    pub fn with_layout(mut self, layout: Layout, derivatives: Derivatives) -> Self {
-        if derivatives == Derivatives::Exact {
-            self.layout = Some(layout);
+    pub fn with_layout(
+        mut self,
+        layout: Layout,
+        base: &Augmented,
+        derivatives: Derivatives,
+    ) -> Self {
+        let m = &base.model;
+        let generic = layout.axle
+            || (m.front.lateral_parameters().is_some() && m.rear.lateral_parameters().is_some());
+        if derivatives == Derivatives::Exact && generic {
+            self.layout = Some((layout, *base.effects()));
         }
         self
     }
 
-    /// Whether the Jacobian is exact: a layout, and tyres with a generic
-    /// force (else forward differences).
+    /// Whether the Jacobian is exact ([`Problem::with_layout`]).
     fn exact(&self) -> bool {
-        self.layout.as_ref().is_some_and(|l| {
-            let m = &l.base.base;
-            l.axle
-                || (m.front.lateral_parameters().is_some() && m.rear.lateral_parameters().is_some())
-        })
+        self.layout.is_some()
     }
 
     pub(crate) fn clamp(&self, p: &[f64]) -> Vec<f64> {
@@ -107,15 +116,14 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
     /// Exact (one dual replay of each run) with a layout whose tyres have
     /// a generic force, else forward differences into the box.
     fn jacobian(&self, p: &[f64], r0: &[f64], bounds: &[(f64, f64)]) -> DMatrix<f64> {
-        if self.exact() {
-            let layout = self.layout.as_ref().expect("exact() checked it");
+        if let Some((layout, base)) = &self.layout {
             let q = self.clamp(p);
             // The plain model of `q`, built once through `build` (whose
             // callers count and time-stamp their evaluations: the dual
             // replay is one evaluation in the fits' work reports).
             let plain = (self.build)(&q);
             if let Some(j) = crate::diagnose::fit::tangent::jacobian(
-                (layout, &plain),
+                (layout, base, &plain),
                 &self.runs,
                 &self.scales,
                 &q,

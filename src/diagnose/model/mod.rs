@@ -1,61 +1,64 @@
-//! The augmented model of the sim-to-real diagnosis: the base vehicle
-//! model ([`crate::vehicle`]) with the candidate effects of
-//! [`crate::diagnose::effects`] switched on, and its replay of a run.
+//! The augmented model of the sim-to-real diagnosis ([`Augmented`]): the
+//! vehicle model ([`crate::vehicle`]) with the candidate effects of
+//! [`crate::diagnose::effects`] set in its [`Effects`] — the base model's
+//! own with a candidate's applied on top (`crate::diagnose::fit::layout`)
+//! —, on the campaign's road, and its replay of a run.
 //!
-//! The physics is the vehicle model's own ([`VehicleModel::rates`], with
-//! its [`crate::vehicle::Effects`]), integrated by the simulation's
-//! integrator ([`Integrator::replay`]: RK4 on a grid where the run's inputs
-//! are sampled once, [`Drive`], so repeated replays only evaluate the
-//! model). What this module adds is the mapping of a candidate's values
-//! ([`EffectSet`]) onto the model — effects set, vehicle values scaled, road
-//! friction scaled — and the sensors ([`crate::diagnose::effects::sensors::Sensors`]) applied
-//! to the response. With every effect off it is the base model (tested
-//! against [`crate::sim::Integrator::run`]).
+//! The physics is the vehicle model's own ([`VehicleModel::rates`], which
+//! reads every number of its [`Effects`]: the vehicle values and road
+//! friction they scale too), integrated by the simulation's integrator
+//! ([`Integrator::replay`]: RK4 on a grid where the run's inputs are
+//! sampled once, [`Drive`], so repeated replays only evaluate the model).
+//! What this module adds is what acts outside the right-hand side: the
+//! sensors ([`crate::vehicle::Sensors`]) applied to the response, and the
+//! steer path. With every effect off it is the base model (tested against
+//! [`crate::sim::Integrator::run`]).
 //!
-//! The steer path ([`SteerPath`]: an actuator's delay and first-order lag
-//! between the logged steer and the road wheels) is linear in the input,
-//! so it is no state of the model: a replay whose steer path is on runs a
-//! copy of the drive whose steer samples are the path's exact output for
-//! the logged (piecewise-linear) steer ([`Augmented::steered`]); one whose
-//! path is off runs the drive itself. [`Augmented::simulate`] replays the
-//! drive it is given: the callers that replay logged runs
-//! ([`crate::diagnose::model::replay::Prepared::drive_for`], the proving ground) pass it
-//! through [`Augmented::steered`] first. Units: SI, rad.
+//! The steer path ([`crate::vehicle::SteerPath`]: an actuator's delay and
+//! first-order lag between the logged steer and the road wheels) is linear
+//! in the input, so it is no state of the model: a replay whose steer path
+//! is on runs a copy of the drive whose steer samples are the path's exact
+//! output for the logged (piecewise-linear) steer ([`Augmented::steered`]);
+//! one whose path is off runs the drive itself. [`Augmented::simulate`]
+//! replays the drive it is given: the callers that replay logged runs
+//! ([`crate::diagnose::model::replay::Prepared::drive_for`], the proving
+//! ground) pass it through [`Augmented::steered`] first. Units: SI, rad.
 
 pub(crate) mod axles;
 pub(crate) mod channels;
 pub(crate) mod replay;
 
-use crate::diagnose::effects::EffectSet;
-use crate::manoeuvre::{interpolate, interpolate_of};
-use crate::scalar::{off, Scalar};
+use crate::manoeuvre::interpolate;
 pub use crate::sim::{Drive, FixedStep};
 use crate::sim::{Integrator, TimeHistory};
-use crate::vehicle::{CombinedSlip, RollModel, State, StateVector, VehicleModel, LOAD_TOLERANCE};
+use crate::vehicle::{Effects, ModelOptions, State, StateVector, VehicleModel, LOAD_TOLERANCE};
 use std::borrow::Cow;
 
-/// The base model with effects.
+/// The vehicle model with effects, on the campaign's road.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Augmented {
-    /// The base model (vehicle, tyres, kinematics, load transfer).
-    pub base: VehicleModel,
-    /// Road friction scale of the campaign.
+    /// The vehicle model (vehicle, tyres, kinematics, load transfer) with
+    /// its effects: the base model's, and a candidate's set on them.
+    pub model: VehicleModel,
+    /// Road friction scale of the campaign (the effects may scale it).
     pub friction: f64,
-    /// The roll degree of freedom.
-    pub roll: RollModel,
-    /// The effects (default: none).
-    pub effects: EffectSet,
 }
 
 impl Augmented {
-    /// The base model alone.
-    pub fn new(base: VehicleModel, friction: f64) -> Self {
-        Self {
-            base,
-            friction,
-            roll: RollModel::default(),
-            effects: EffectSet::default(),
-        }
+    /// The model `model` with its own effects, on a road of friction
+    /// `friction`.
+    pub fn new(model: VehicleModel, friction: f64) -> Self {
+        Self { model, friction }
+    }
+
+    /// The effects.
+    pub fn effects(&self) -> &Effects {
+        &self.model.options.effects
+    }
+
+    /// The effects, to set them.
+    pub fn effects_mut(&mut self) -> &mut Effects {
+        &mut self.model.options.effects
     }
 
     /// Whether `other` integrates the same history as this model from the
@@ -63,66 +66,28 @@ impl Augmented {
     /// response only (their offsets move the start state, which the caller
     /// compares).
     pub(crate) fn same_dynamics(&self, other: &Augmented) -> bool {
-        let mut effects = other.effects;
-        effects.sensors = self.effects.sensors;
-        self.base == other.base
+        let (a, b) = (&self.model, &other.model);
+        let options = ModelOptions {
+            effects: Effects {
+                sensors: a.options.effects.sensors,
+                ..b.options.effects
+            },
+            ..b.options
+        };
+        a.vehicle == b.vehicle
+            && a.front == b.front
+            && a.rear == b.rear
+            && a.options == options
             && self.friction == other.friction
-            && self.roll == other.roll
-            && self.effects == effects
-    }
-
-    /// The vehicle model with the vehicle-side effects applied, and the road
-    /// friction it runs on.
-    pub(crate) fn model(&self) -> (VehicleModel, f64) {
-        let e = &self.effects;
-        let mut model = self.base.clone();
-        if let Some(chi) = e.load_transfer_front_share {
-            model.vehicle.load_transfer_front_share = Some(chi);
-        }
-        if let Some(s) = e.yaw_inertia_scale {
-            model.vehicle.yaw_inertia *= s;
-        }
-        let x = &mut model.options.effects;
-        // Aero load and bank add to what the campaign's base model has.
-        x.aero_load = [
-            x.aero_load[0] + e.aero_load[0],
-            x.aero_load[1] + e.aero_load[1],
-        ];
-        x.road_bank += e.road_bank;
-        x.relaxation_length = e.relaxation_length;
-        x.steering_compliance = e.steering_compliance;
-        x.roll_steer = e.roll_steer;
-        x.roll_camber = e.roll_camber;
-        x.cornering_stiffness_scale = e.cornering_stiffness_scale.unwrap_or([1.0; 2]);
-        // Like aero and bank, the longitudinal effects and the bank profile
-        // add to (or, for combined slip, replace) the base model's own.
-        x.longitudinal_load_transfer += e.longitudinal_load_transfer;
-        if let Some([drive, brake, share]) = e.combined_slip {
-            x.combined_slip = Some(CombinedSlip {
-                drive_front_share: drive,
-                brake_front_share: brake,
-                force_share: share,
-            });
-        }
-        x.bank_profile_scale += e.bank_profile[0];
-        x.road_bank += e.bank_profile[1];
-        x.roll = self.roll;
-        (model, self.friction * e.friction_scale.unwrap_or(1.0))
-    }
-
-    /// The steer path of its effects.
-    pub(crate) fn steer_path(&self) -> SteerPath {
-        let [delay, lag] = self.effects.steer_path;
-        SteerPath { delay, lag }
     }
 
     /// The drive the road wheels see when the steer logged as (`t`,
     /// `steer`), which `drive` samples, goes through the steer path:
     /// `drive` itself while the path is off (so the replay is the base
     /// model's bit for bit), else a copy whose steer at every stage time is
-    /// the path's output (`SteerPath::apply`).
+    /// the path's output ([`crate::vehicle::SteerPath::apply`]).
     pub(crate) fn steered<'d>(&self, drive: &'d Drive, t: &[f64], steer: &[f64]) -> Cow<'d, Drive> {
-        let path = self.steer_path();
+        let path = self.effects().steer_path;
         if path.is_off() {
             Cow::Borrowed(drive)
         } else {
@@ -135,8 +100,7 @@ impl Augmented {
     /// `yaw_rate`: lag states at their kinematic slip angles, roll at its
     /// steady value for ay = u·r.
     pub(crate) fn initial_state(&self, drive: &Drive, beta: f64, yaw_rate: f64) -> StateVector {
-        let (model, friction) = self.model();
-        Self::quasi_static(&model, friction, drive, beta, yaw_rate)
+        Self::quasi_static(&self.model, self.friction, drive, beta, yaw_rate)
     }
 
     fn quasi_static(
@@ -152,8 +116,7 @@ impl Augmented {
 
     /// Replays the drive from `x0`; the history carries the roll.
     pub(crate) fn simulate(&self, drive: &Drive, x0: StateVector) -> TimeHistory {
-        let (model, friction) = self.model();
-        Self::replay(&model, friction, drive, x0, LOAD_TOLERANCE)
+        Self::replay(&self.model, self.friction, drive, x0, LOAD_TOLERANCE)
     }
 
     /// Replays the drive from the state [`Augmented::initial_state`] gives
@@ -173,9 +136,8 @@ impl Augmented {
         yaw_rate: f64,
         tol: f64,
     ) -> TimeHistory {
-        let (model, friction) = self.model();
-        let x0 = Self::quasi_static(&model, friction, drive, beta, yaw_rate);
-        Self::replay(&model, friction, drive, x0, tol)
+        let x0 = Self::quasi_static(&self.model, self.friction, drive, beta, yaw_rate);
+        Self::replay(&self.model, self.friction, drive, x0, tol)
     }
 
     fn replay(
@@ -195,138 +157,22 @@ impl Augmented {
     /// What the sensors record of a response, interpolated at `times`:
     /// (yaw rate, ay, β).
     pub(crate) fn observe(&self, response: &TimeHistory, times: &[f64]) -> Observed {
-        let seen = self.effects.sensors.measure(response);
-        let at = |ys: &[f64]| -> Vec<f64> {
-            times.iter().map(|&t| interpolate(&seen.t, ys, t)).collect()
-        };
+        let h = response;
+        let [yaw_rate, ay, beta] = self
+            .effects()
+            .sensors
+            .seen(&h.t, &h.yaw_rate, &h.ay, &h.beta);
+        let at =
+            |ys: &[f64]| -> Vec<f64> { times.iter().map(|&t| interpolate(&h.t, ys, t)).collect() };
         Observed {
-            yaw_rate: at(&seen.yaw_rate),
-            ay: at(seen.ay.as_deref().unwrap_or(&[])),
-            beta: at(seen.beta.as_deref().unwrap_or(&[])),
+            yaw_rate: at(&yaw_rate),
+            ay: at(&ay),
+            beta: at(&beta),
             roll: times
                 .iter()
                 .map(|&t| interpolate(&response.t, &response.roll, t))
                 .collect(),
         }
-    }
-}
-
-/// The steer path between the logged steer δ and the road wheels:
-/// δ_wheel(t) = lag_τ(δ(t − delay)), with lag_τ a first-order lag of time
-/// constant `lag` (dy/dt = (u − y)/τ). The logged steer is the
-/// piecewise-linear signal through its samples, held at its first sample
-/// before the start (and at its last after the end), and the lag starts
-/// settled on that first sample. Its numbers may be dual numbers
-/// ([`crate::scalar`]): the output then carries their derivatives.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct SteerPath<T = f64> {
-    /// Dead time, s (≥ 0).
-    pub delay: T,
-    /// Time constant of the first-order lag, s (≥ 0; 0: none).
-    pub lag: T,
-}
-
-impl<T: Scalar> SteerPath<T> {
-    /// Whether the road wheels follow the logged steer as it is.
-    pub fn is_off(&self) -> bool {
-        off(self.delay) && off(self.lag)
-    }
-
-    /// The road-wheel steer at times `at` (in any order) of the steer
-    /// logged at increasing times `t` (repeated times allowed: a jump). The
-    /// delay interpolates the samples at `at − delay`; the lag is the exact
-    /// discretisation of the first-order lag driven by the delayed
-    /// piecewise-linear input, stepped from one break point or output time
-    /// to the next (the delayed input is linear between them), so the
-    /// output is exact to round-off at every time asked for, whatever the
-    /// spacing. Without a lag, a lag being differentiated at zero adds its
-    /// one-sided derivative `−τ·δ̇` (value unchanged).
-    pub fn apply(&self, t: &[f64], steer: &[f64], at: &[f64]) -> Vec<T> {
-        assert_eq!(t.len(), steer.len(), "one steer per time");
-        assert!(!t.is_empty(), "a steer path needs samples");
-        let delay = self.delay;
-        let logged: Vec<T> = steer.iter().map(|&v| T::from(v)).collect();
-        if self.lag.re() <= 0.0 {
-            return at
-                .iter()
-                .map(|&s| {
-                    let y = interpolate_of(t, &logged, T::from(s) - delay);
-                    if self.lag.is_constant() {
-                        y
-                    } else {
-                        y - self.lag * slope_below(t, steer, s - delay.re())
-                    }
-                })
-                .collect();
-        }
-        let tau = self.lag;
-        let one = T::from(1.0);
-        // One exact step of h of the lag from y with the input linear from
-        // u0 to u1: y·a + (1 − a)·u0 + (u1 − u0)·(1 − (1 − a)/x), with
-        // x = h/τ and a = e^(−x).
-        let advance = |y: T, u0: T, u1: T, h: T| -> T {
-            let x = h / tau;
-            if x.re() <= 0.0 {
-                // A step of no length whose ends move with the parameters
-                // (an output time on a delayed break point): the lag's
-                // first-order change, zero in value.
-                return if x.is_constant() { y } else { y + (u0 - y) * x };
-            }
-            let one_minus_a = -(-x).exp_m1();
-            let a = one - one_minus_a;
-            // 1 − (1 − a)/x: in dual numbers by its series for a short
-            // step, whose quotient of two small numbers would lose the
-            // derivative to rounding (the value is the same to rounding).
-            let ramp = if T::PLAIN || x.re() > 1e-3 {
-                one - one_minus_a / x
-            } else {
-                x * (one - x * (one - x * 0.25) * (1.0 / 3.0)) * 0.5
-            };
-            a * y + one_minus_a * u0 + (u1 - u0) * ramp
-        };
-        let mut order: Vec<usize> = (0..at.len()).collect();
-        order.sort_by(|&i, &j| at[i].total_cmp(&at[j]));
-        let node = |j: usize| delay + t[j];
-        let mut out = vec![T::from(0.0); at.len()];
-        // The state: time, input and output there; the next break point.
-        let (mut s, mut u, mut y) = (node(0), logged[0], logged[0]);
-        let mut j = 1;
-        // An output time on a break point whose time moves with the delay
-        // still steps (by nothing in value) to carry its derivative.
-        let ahead = |q: f64, s: T| q > s.re() || (q == s.re() && !s.is_constant());
-        for i in order {
-            let q = at[i];
-            if ahead(q, s) {
-                while j < t.len() && node(j).re() <= q {
-                    y = advance(y, u, logged[j], node(j) - s);
-                    (s, u) = (node(j), logged[j]);
-                    j += 1;
-                }
-                if ahead(q, s) {
-                    let uq = if j < t.len() {
-                        let w = (T::from(q) - delay - t[j - 1]) / (t[j] - t[j - 1]);
-                        logged[j - 1] + w * (steer[j] - steer[j - 1])
-                    } else {
-                        u
-                    };
-                    y = advance(y, u, uq, T::from(q) - s);
-                    (s, u) = (T::from(q), uq);
-                }
-            }
-            out[i] = y;
-        }
-        out
-    }
-}
-
-/// The slope of the piecewise-linear signal (`t`, `y`) just below time `x`
-/// (0 outside it and across a jump).
-fn slope_below(t: &[f64], y: &[f64], x: f64) -> f64 {
-    let k = t.partition_point(|v| *v < x);
-    if k == 0 || k >= t.len() || t[k] <= t[k - 1] {
-        0.0
-    } else {
-        (y[k] - y[k - 1]) / (t[k] - t[k - 1])
     }
 }
 

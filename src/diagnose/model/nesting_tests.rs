@@ -118,7 +118,7 @@ fn off(kind: EffectKind, nominal_share: f64) -> Vec<f64> {
 #[test]
 fn every_effect_at_its_off_values_replays_the_base_models_history() {
     let base = base();
-    let share = base.base.vehicle.front_transfer_share();
+    let share = base.model.vehicle.front_transfer_share();
     let mut all_off = base.clone();
     for r in runs() {
         let p = Prepared::new(&r, 0.01, 25.0);
@@ -131,8 +131,8 @@ fn every_effect_at_its_off_values_replays_the_base_models_history() {
         );
         for kind in EffectKind::ALL {
             let mut m = base.clone();
-            m.effects.set(kind, &off(kind, share));
-            all_off.effects.set(kind, &off(kind, share));
+            kind.apply(&off(kind, share), m.effects_mut());
+            kind.apply(&off(kind, share), all_off.effects_mut());
             let what = format!("{} on {}", kind.name(), r.path.display());
             same_history(&p.replay(&m), &reference, &what);
             same_observed(&p.observe(&m), &seen, &what);
@@ -156,7 +156,7 @@ fn the_longitudinal_effects_act_on_braking_and_not_on_a_noisy_constant_speed() {
     let change = |kind: EffectKind, p: &[f64], r: &MeasuredRun| {
         let prepared = Prepared::new(r, 0.01, 25.0);
         let mut m = base.clone();
-        m.effects.set(kind, p);
+        kind.apply(p, m.effects_mut());
         let a = prepared.replay(&m).yaw_rate;
         let b = prepared.replay(&base).yaw_rate;
         a.iter()
@@ -178,5 +178,37 @@ fn the_longitudinal_effects_act_on_braking_and_not_on_a_noisy_constant_speed() {
             "{}: {constant} vs {braking}",
             kind.name()
         );
+    }
+}
+
+#[test]
+fn every_effect_at_its_truth_changes_what_the_sensors_see() {
+    // The nesting above must not be an effect that does nothing: at its
+    // proving-ground truth every effect changes the observations of a
+    // braking run that carries `ax` and a `bank` channel (each effect's
+    // needs), so an effect whose numbers no physics reads fails here.
+    let base = base();
+    let mut r = run(
+        "braking_bank.csv",
+        |x| 25.0 - 3.0 * x.clamp(0.0, 5.0),
+        -3.0,
+        true,
+    );
+    r.bank = Some(r.t.iter().map(|&x| 0.05 * (0.4 * x).sin()).collect());
+    let p = Prepared::new(&r, 0.01, 25.0);
+    let seen = p.observe(&base);
+    for kind in EffectKind::ALL {
+        let mut m = base.clone();
+        kind.apply(kind.truth(), m.effects_mut());
+        let o = p.observe(&m);
+        let change = [
+            (&o.yaw_rate, &seen.yaw_rate),
+            (&o.ay, &seen.ay),
+            (&o.beta, &seen.beta),
+        ]
+        .iter()
+        .flat_map(|(a, b)| a.iter().zip(b.iter()).map(|(x, y)| (x - y).abs()))
+        .fold(0.0, f64::max);
+        assert!(change > 1e-9, "{}: {change:e}", kind.name());
     }
 }

@@ -4,7 +4,8 @@
 //! residuals are taken, and the measured channels at those times.
 //!
 //! A replay starts from the run's first measured state (sideslip, else 0,
-//! and yaw rate) less the model's sensor offsets, and runs on the
+//! and yaw rate) less the model's sensor offsets (its effects'
+//! [`crate::vehicle::Sensors`]), and runs on the
 //! campaign's fixed grid, smooth in the parameters: by classical RK4 while
 //! the model being replayed is stable under it there, else by the linearly
 //! implicit Rosenbrock-W method ROS34PW2 (Rang & Angermann 2005), stable at
@@ -145,7 +146,7 @@ impl Prepared {
     /// method [`Prepared::drive_for`] picks), and the logged times and
     /// steer the path acts on.
     pub(crate) fn unsteered_drive(&self, model: &Augmented) -> (&Drive, &[f64], &[f64]) {
-        let (vehicle, friction) = model.model();
+        let (vehicle, friction) = (&model.model, model.friction);
         let (lo, hi) = self.inputs.speeds;
         let rho = vehicle
             .fastest_rate(lo, friction)
@@ -191,7 +192,7 @@ impl Prepared {
     /// at 0 whatever the sideslip offset: else the offset of a channel the
     /// run lacks would steer its start and be "fitted" from that.
     fn start_of(&self, model: &Augmented) -> (f64, f64) {
-        let sensors = &model.effects.sensors;
+        let sensors = &model.effects().sensors;
         let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
         (
             if beta_measured {

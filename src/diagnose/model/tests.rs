@@ -62,13 +62,13 @@ fn roll_steer_changes_the_understeer_gradient_by_its_closed_form() {
     let l = base.vehicle.wheelbase();
     let k_base = base.understeer_gradient();
     let mut a = Augmented::new(base, 1.0);
-    a.effects.roll_steer = [-0.1, 0.05];
-    let k = k_base - (-0.1 - 0.05) * a.roll.gradient;
+    a.effects_mut().roll_steer = [-0.1, 0.05];
+    let k = k_base - (-0.1 - 0.05) * a.effects().roll.gradient;
     let expected = steer * u / (l + k * u * u);
     let got = steady_yaw_rate(&a, u, steer);
     assert!((got / expected - 1.0).abs() < 1e-6, "{got} {expected}");
     // Without it, the base gain.
-    a.effects.roll_steer = [0.0; 2];
+    a.effects_mut().roll_steer = [0.0; 2];
     let base_gain = steer * u / (l + k_base * u * u);
     assert!((steady_yaw_rate(&a, u, steer) / base_gain - 1.0).abs() < 1e-6);
 }
@@ -86,18 +86,18 @@ fn compliance_and_stiffness_scale_act_as_a_softer_front_axle() {
         steer * u / (v.wheelbase() + k * u * u)
     };
     let mut a = Augmented::new(base, 1.0);
-    a.effects.steering_compliance = 2e-6;
+    a.effects_mut().steering_compliance = 2e-6;
     let expected = gain(cf / (1.0 + 2e-6 * cf));
     let got = steady_yaw_rate(&a, u, steer);
     assert!((got / expected - 1.0).abs() < 1e-6, "{got} {expected}");
-    a.effects.steering_compliance = 0.0;
-    a.effects.cornering_stiffness_scale = Some([0.8, 1.0]);
+    a.effects_mut().steering_compliance = 0.0;
+    a.effects_mut().cornering_stiffness_scale = [0.8, 1.0];
     let got = steady_yaw_rate(&a, u, steer);
     assert!((got / gain(0.8 * cf) - 1.0).abs() < 1e-6);
     // A lag state with compliance reaches the same steady state.
-    a.effects.cornering_stiffness_scale = None;
-    a.effects.steering_compliance = 2e-6;
-    a.effects.relaxation_length = 0.5;
+    a.effects_mut().cornering_stiffness_scale = [1.0; 2];
+    a.effects_mut().steering_compliance = 2e-6;
+    a.effects_mut().relaxation_length = 0.5;
     let got = steady_yaw_rate(&a, u, steer);
     assert!((got / gain(cf / (1.0 + 2e-6 * cf)) - 1.0).abs() < 1e-6);
 }
@@ -113,7 +113,7 @@ fn relaxation_length_is_a_first_order_lag_of_the_slip_angles() {
     let r0 = a.simulate(&drive, [0.0; 6]).yaw_rate;
     let mut gaps = Vec::new();
     for sigma in [0.8, 0.08, 0.008] {
-        a.effects.relaxation_length = sigma;
+        a.effects_mut().relaxation_length = sigma;
         let r = a.simulate(&drive, [0.0; 6]).yaw_rate;
         let gap = r
             .iter()
@@ -130,7 +130,7 @@ fn relaxation_length_is_a_first_order_lag_of_the_slip_angles() {
     );
     // At 0.5 s + 0.1 s (the end of the steer ramp) a lagging tyre has built
     // less yaw rate.
-    a.effects.relaxation_length = 0.8;
+    a.effects_mut().relaxation_length = 0.8;
     let r = a.simulate(&drive, [0.0; 6]).yaw_rate;
     assert!(r[650] < 0.9 * r0[650]);
 }
@@ -140,17 +140,17 @@ fn steer_reversal_mirrors_the_response_with_effects_on() {
     let mut a = Augmented::new(pac89_model(), 1.0);
     // PAC89's offsets break the mirror; symmetric tyres keep it.
     let t = Tyre::MagicSimple(crate::tyre::MagicSimple::new(10.0, 1.3));
-    a.base.front = t.clone();
-    a.base.rear = t;
-    a.effects.relaxation_length = 0.6;
-    a.effects.steering_compliance = 3e-6;
-    a.effects.roll_steer = [-0.1, 0.02];
-    a.effects.roll_camber = [-1.0, 0.5];
-    a.effects.aero_load = [1.0, 1.5];
-    a.effects.load_transfer_front_share = Some(0.7);
-    a.effects.sensors.delay = 0.03;
-    a.effects.sensors.accelerometer_x = 0.4;
-    a.effects.sensors.roll_gradient = 0.005;
+    a.model.front = t.clone();
+    a.model.rear = t;
+    a.effects_mut().relaxation_length = 0.6;
+    a.effects_mut().steering_compliance = 3e-6;
+    a.effects_mut().roll_steer = [-0.1, 0.02];
+    a.effects_mut().roll_camber = [-1.0, 0.5];
+    a.effects_mut().aero_load = [1.0, 1.5];
+    a.effects_mut().transfer_share = Some(0.7);
+    a.effects_mut().sensors.delay = 0.03;
+    a.effects_mut().sensors.accelerometer_x = 0.4;
+    a.effects_mut().sensors.roll_gradient = 0.005;
     let sine = |amp: f64| {
         Manoeuvre::Sine(SineSteer {
             speed: 22.0,
@@ -181,9 +181,9 @@ fn roll_follows_lateral_acceleration_and_camber_thrust_adds_force() {
     let drive = Drive::new(&step(20.0, 0.02, 10.0), 1e-3);
     let r = a.simulate(&drive, [0.0; 6]);
     let n = r.roll.len() - 1;
-    assert!((r.roll[n] - a.roll.gradient * r.ay[n]).abs() < 1e-9);
+    assert!((r.roll[n] - a.effects().roll.gradient * r.ay[n]).abs() < 1e-9);
     // Rear camber thrust toward the turn adds rear force: less yaw rate.
-    a.effects.roll_camber = [0.0, 2.0];
+    a.effects_mut().roll_camber = [0.0, 2.0];
     let r2 = a.simulate(&drive, [0.0; 6]);
     assert!(r2.yaw_rate[n] < 0.99 * r.yaw_rate[n]);
 }
@@ -200,15 +200,15 @@ fn a_runs_measured_bank_and_ax_reach_the_model_only_through_their_effects() {
     assert_eq!(run(&base, &plain), run(&base, &measured));
     // The measured bank at scale 1 is the constant bank, to the bit.
     let mut profile = base.clone();
-    profile.base.options.effects.bank_profile_scale = 1.0;
+    profile.effects_mut().bank_profile_scale = 1.0;
     let mut constant = base.clone();
-    constant.base.options.effects.road_bank = 0.1;
+    constant.effects_mut().road_bank = 0.1;
     assert_eq!(run(&profile, &measured), run(&constant, &plain));
     assert_ne!(run(&profile, &measured), run(&base, &plain));
     // Braking at 5 m/s² moves load forward: the response changes, and only
     // with the measured ax (the speed is constant, so du/dt is zero).
     let mut pitch = base.clone();
-    pitch.base.options.effects.longitudinal_load_transfer = 1.0;
+    pitch.effects_mut().longitudinal_load_transfer = 1.0;
     assert_eq!(run(&pitch, &plain), run(&base, &plain));
     let braking = run(&pitch, &measured);
     let level = run(&base, &measured);
@@ -277,7 +277,7 @@ fn a_stiff_racing_car_is_replayed_by_a_method_it_is_stable_under() {
     // millisecond at 6 m/s) is as good as none: its replay at the same
     // 20 ms must match the lag-free reference.
     let mut lagged = model.clone();
-    lagged.effects.relaxation_length = 0.0015;
+    lagged.effects_mut().relaxation_length = 0.0015;
     assert_eq!(prepared.drive_for(&lagged).method, FixedStep::RosenbrockW);
     let lag_error = error(&prepared.observe(&lagged));
     // Measured 1.4e-5.
@@ -329,7 +329,7 @@ fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
     let prepared = Prepared::new(&run, 0.01, 25.0);
     let base = Augmented::new(pac89_model(), 1.0);
     let mut off = base.clone();
-    off.effects.set(EffectKind::SteerPath, &[0.0, 0.0]);
+    EffectKind::SteerPath.apply(&[0.0, 0.0], off.effects_mut());
     assert!(matches!(
         prepared.drive_for(&off),
         std::borrow::Cow::Borrowed(_)
@@ -340,7 +340,7 @@ fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
     assert_eq!(a.ay, b.ay);
     // Switched on it is another replay, whose steer the vehicle sees late.
     let mut on = base.clone();
-    on.effects.set(EffectKind::SteerPath, &[0.05, 0.15]);
+    EffectKind::SteerPath.apply(&[0.05, 0.15], on.effects_mut());
     let c = prepared.replay(&on);
     assert_eq!(c.t, a.t);
     assert!(c
@@ -358,85 +358,4 @@ fn a_steer_path_switched_off_replays_the_base_model_bit_for_bit() {
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f64::max);
     assert!(k > 0.005, "{k}");
-}
-
-#[test]
-fn a_pure_steer_delay_shifts_a_ramp() {
-    // A ramp from t = 1 s at 0.1 rad/s, sampled at 25 Hz, delayed 0.13 s
-    // (not a multiple of the sampling interval).
-    let t: Vec<f64> = (0..200).map(|i| 0.04 * i as f64).collect();
-    let ramp = |t: f64| 0.1 * (t - 1.0).max(0.0);
-    let steer: Vec<f64> = t.iter().map(|&t| ramp(t)).collect();
-    let path = SteerPath {
-        delay: 0.13,
-        lag: 0.0,
-    };
-    let at: Vec<f64> = (0..1000).map(|i| 0.0077 * i as f64).collect();
-    let out = path.apply(&t, &steer, &at);
-    for (&s, &y) in at.iter().zip(&out) {
-        let expected = if s - 0.13 >= *t.last().unwrap() {
-            *steer.last().unwrap()
-        } else {
-            ramp(s - 0.13)
-        };
-        // Before the ramp's corner is delayed past a sample the
-        // interpolation between samples sees the corner: exact elsewhere.
-        let near_corner = (s - 1.13).abs() < 0.04;
-        if !near_corner {
-            assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
-        }
-    }
-    // The first sample is held before the start.
-    let early = path.apply(&[0.0, 1.0], &[0.2, 0.3], &[-1.0, 0.0, 0.1, 0.13]);
-    assert_eq!(early, vec![0.2, 0.2, 0.2, 0.2]);
-    // The same with the lag: off, and every time order.
-    let off = SteerPath::<f64>::default().apply(&t, &steer, &at);
-    assert_eq!(
-        off,
-        at.iter()
-            .map(|&s| interpolate(&t, &steer, s))
-            .collect::<Vec<_>>()
-    );
-    let mut rev = at.clone();
-    rev.reverse();
-    let lagged = SteerPath {
-        delay: 0.13,
-        lag: 0.2,
-    };
-    let mut back = lagged.apply(&t, &steer, &rev);
-    back.reverse();
-    assert_eq!(back, lagged.apply(&t, &steer, &at));
-}
-
-#[test]
-fn the_steer_lag_of_a_step_is_one_minus_an_exponential() {
-    // A unit step 1e-14 s wide, then samples every millisecond: the lag's
-    // output at the samples is 1 − exp(−t/τ) (the ramp's width moves it
-    // by about 1e-14/(2τ)).
-    let tau = 0.15;
-    let mut t = vec![-1e-14];
-    t.extend((0..2000).map(|i| 1e-3 * i as f64));
-    let mut steer = vec![1.0; t.len()];
-    steer[0] = 0.0;
-    let path = SteerPath {
-        delay: 0.0,
-        lag: tau,
-    };
-    let out = path.apply(&t, &steer, &t);
-    assert_eq!(out[0], 0.0);
-    for (&s, &y) in t.iter().zip(&out).skip(1) {
-        let expected = 1.0 - (-s / tau).exp();
-        assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
-    }
-    // Delayed by 0.2 s, the same curve 0.2 s later, between the samples
-    // too.
-    let delayed = SteerPath {
-        delay: 0.2,
-        lag: tau,
-    };
-    let at: Vec<f64> = (0..700).map(|i| 0.2 + 0.00237 * i as f64).collect();
-    for (&s, &y) in at.iter().zip(&delayed.apply(&t, &steer, &at)) {
-        let expected = 1.0 - (-(s - 0.2) / tau).exp();
-        assert!((y - expected).abs() < 1e-12, "t {s}: {y} vs {expected}");
-    }
 }

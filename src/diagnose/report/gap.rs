@@ -22,6 +22,7 @@
 //! Units: SI, rad; times in s.
 
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{regime_samples, window_samples, Part};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
@@ -213,7 +214,7 @@ pub fn channel_gap(
     // Noise-free data (a simulation replayed) have a zero floor: a residual
     // below 1e-6 of the signal is numerical, not a gap.
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
-    let significant = rms > 3.0 * noise_floor && rms > 1e-6 * signal;
+    let significant = above_noise(rms, noise_floor) && rms > 1e-6 * signal;
     let verdict = if !significant {
         format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})")
     } else {

@@ -1,16 +1,28 @@
 //! The typed report of a diagnosis ([`super::diagnose`]): what
-//! `diagnosis.json` holds. Values are SI and rad unless a field names its
-//! unit; held-out errors J are dimensionless (residuals over channel
-//! scales).
+//! `diagnosis.json` holds. The outcome is typed ([`outcome`]: the verdict's
+//! cases, refusals, warnings, notes, findings); its sentences are made in
+//! one place ([`words`]) and written beside the types ([`json`]). Values
+//! are SI and rad unless a field names its unit; held-out errors J are
+//! dimensionless (residuals over channel scales).
 
 pub(crate) mod gap;
+mod json;
+pub mod outcome;
 pub(crate) mod parts;
 pub(crate) mod summary;
+pub mod words;
 
-use crate::diagnose::effects::{Bound, EffectKind};
+pub use crate::diagnose::base::identify::{Axle, AxleIdentification, AxleLimit, AxleValue, NoTyre};
+pub use crate::diagnose::base::TyreSource;
+use crate::diagnose::effects::{Bound, EffectKind, Parameter};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
+pub use crate::diagnose::report::outcome::{
+    above_noise, ChannelChange, ChannelWorsened, Explained, GapFinding, NoSignificantGap,
+    NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict,
+    VerdictKind, VerdictWarning,
+};
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
@@ -35,6 +47,41 @@ pub struct ParameterValue {
     /// standard error says nothing about how far) or a physical limit (no
     /// value lies beyond it).
     pub bound: Option<Bound>,
+    /// The runs determine it: its standard error is finite and no larger
+    /// than the parameter's whole range ([`ParameterValue::of`]).
+    pub determined: bool,
+}
+
+/// A value within this share of its parameter's range from a physical
+/// limit stands on it: no run resolves the difference (a steer lag of a
+/// few microseconds is no lag). A search bound is where a fit pressed
+/// against it stops, exactly ([`Parameter::bound_at`]).
+pub const LIMIT_RESOLUTION: f64 = 1e-4;
+
+impl ParameterValue {
+    /// Parameter `q` of the effect group `group` fitted to `value` with
+    /// standard error `std_error`, and where it stands: on a bound (a
+    /// search bound as [`Parameter::bound_at`] finds it, a physical limit
+    /// within [`LIMIT_RESOLUTION`] of the range), and determined by the
+    /// runs or not (a standard error missing, or larger than the whole
+    /// range, says the runs do not see it).
+    pub fn of(group: &str, q: &Parameter, value: f64, std_error: f64) -> Self {
+        let (lo, hi) = q.bounds;
+        let near = LIMIT_RESOLUTION * (hi - lo);
+        let physical = |limit: Bound, at: bool| (limit == Bound::Physical && at).then_some(limit);
+        let bound = q.bound_at(value).or_else(|| {
+            physical(q.limits.0, value - lo <= near).or(physical(q.limits.1, hi - value <= near))
+        });
+        Self {
+            name: format!("{group}.{}", q.name),
+            unit: q.unit,
+            value,
+            std_error,
+            at_bound: bound.is_some(),
+            bound,
+            determined: std_error.is_finite() && std_error <= hi - lo,
+        }
+    }
 }
 
 /// Held-out RMS of one channel.
@@ -57,7 +104,7 @@ pub struct Ranked {
     pub effects: Vec<EffectKind>,
     /// The axle characteristics refitted with them (no tyre data), with
     /// their standard errors and the limits they stand on.
-    pub axles: Option<Vec<crate::diagnose::base::identify::AxleValue>>,
+    pub axles: Option<Vec<AxleValue>>,
     /// Fitted parameters.
     pub parameters: Vec<ParameterValue>,
     /// Held-out combined error J of the base model.
@@ -76,9 +123,11 @@ pub struct Ranked {
     pub folds_converged: usize,
     /// Folds refitted.
     pub folds: usize,
-    /// Cross-validation that disagrees with the fit, or refits that did not
-    /// converge.
-    pub warning: Option<String>,
+    /// Cross-validation that disagrees with the fit, axles that are no
+    /// tyre, refits that did not converge (written as `warning`, one line
+    /// or null, and `warning_details`).
+    #[serde(flatten, serialize_with = "json::rank_warnings")]
+    pub warnings: Vec<RankWarning>,
     /// BIC of the all-run fit.
     pub bic: f64,
     /// BIC minus the base model's (negative: better).
@@ -108,30 +157,16 @@ pub struct Screened {
     pub delta_bic: f64,
 }
 
-/// Effects that explain the gap about equally well.
+/// Effects that explain the gap about equally well (written with the
+/// experiment that separates them, `separating_test`: each one's
+/// signature).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Confounded {
     /// The effects.
+    #[serde(flatten, serialize_with = "json::confounded")]
     pub effects: Vec<EffectKind>,
     /// Their reductions, %.
     pub reduction_percent: Vec<f64>,
-    /// The experiment that would separate them.
-    pub separating_test: String,
-}
-
-/// The verdict.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Verdict {
-    /// Effects the evidence supports (empty: the gap is within noise or no
-    /// effect explains it).
-    pub effects: Vec<EffectKind>,
-    /// Their parameters.
-    pub parameters: Vec<ParameterValue>,
-    /// In words.
-    pub statement: String,
-    /// Channels the verdict's effects leave worse on held-out runs: the
-    /// combined error can fall while one channel's rises.
-    pub warnings: Vec<String>,
 }
 
 /// Before/after on held-out runs for one part of the data.
@@ -194,15 +229,16 @@ pub struct GapReport {
     pub parts: Vec<Shrinkage>,
     /// Per run.
     pub runs: Vec<RunGap>,
-    /// The findings in words.
-    pub summary: Vec<String>,
+    /// The findings (written as `summary`, in words, and `findings`).
+    #[serde(flatten, serialize_with = "json::findings")]
+    pub findings: Vec<GapFinding>,
 }
 
-/// The base model.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// The base model (written with `tyres`, where they come from in words).
+#[derive(Debug, Clone, PartialEq)]
 pub struct BaseReport {
     /// Where its tyres come from.
-    pub tyres: String,
+    pub source: TyreSource,
     /// Front tyre (all-run or rig fit).
     pub front: Tyre,
     /// Rear tyre.
@@ -213,7 +249,7 @@ pub struct BaseReport {
     /// The axle characteristics identified from the runs (no tyre data):
     /// values, standard errors, the largest correlation, the limits they
     /// stand on and whether the base is a tyre at all.
-    pub axles: Option<crate::diagnose::base::identify::AxleIdentification>,
+    pub axles: Option<AxleIdentification>,
 }
 
 /// Everything the diagnosis found.
@@ -229,11 +265,16 @@ pub struct Diagnosis {
     pub runs: Vec<String>,
     /// Folds of the cross-validation.
     pub folds: usize,
-    /// Notes on the inputs.
-    pub notes: Vec<String>,
+    /// Notes on the inputs (written as `notes`, in words, and
+    /// `note_details`).
+    #[serde(flatten, serialize_with = "json::notes")]
+    pub notes: Vec<Note>,
     /// Glitches, standstills and crawling found in the runs and what was
     /// excluded, repaired or masked.
     pub cleaning: crate::measured::clean::CleaningReport,
+    /// Sensor offsets from the standstills and straights of the runs as
+    /// read, before the cleaning.
+    pub calibration: crate::measured::calibration::CalibrationReport,
     /// The road under each replayed piece: the bank measured or estimated
     /// from the lateral kinematics, the grade from `ax − du/dt`
     /// ([`crate::measured::road`]); reported, not fitted.

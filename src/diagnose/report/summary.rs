@@ -1,6 +1,7 @@
 //! Where the gap lies, in tables and words: the base model's gap on each
 //! run, held-out errors pooled per channel, window and regime before and
-//! after the verdict's effects, and the summary sentence of the report.
+//! after the verdict's effects, and the findings of the report (worded in
+//! [`super::words`]).
 //! Units: each channel's own (rad/s, m/s², rad).
 
 use crate::diagnose::model::channels::reduction;
@@ -8,6 +9,7 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
+use crate::diagnose::report::outcome::{above_noise, GapFinding};
 use crate::diagnose::report::{Part, RunGap, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
@@ -111,19 +113,21 @@ pub(crate) fn parts_table(
         .collect()
 }
 
-/// The gap in words: per channel, where it is largest and where the model is
-/// right.
+/// The gap's findings (the report words them): overall, per channel where
+/// it is largest and where the model is right (parts of at least ten
+/// samples, against three noise floors), and the frequency bands of a run
+/// whose yaw-rate response is off by more than 1 dB or 10°.
 pub(crate) fn gap_summary(
     runs: &[RunGap],
     parts: &[Shrinkage],
     significant: bool,
     j0: f64,
     jn: f64,
-) -> Vec<String> {
-    let mut out = vec![if significant {
-        format!("held-out error {j0:.3} against a noise level of {jn:.3}: the base model has a significant gap")
-    } else {
-        format!("held-out error {j0:.3} against a noise level of {jn:.3}: no significant gap")
+) -> Vec<GapFinding> {
+    let mut out = vec![GapFinding::Overall {
+        significant,
+        heldout_error: j0,
+        noise_level: jn,
     }];
     for ch in Channel::ALL {
         let rows: Vec<&Shrinkage> = parts.iter().filter(|p| p.channel == ch).collect();
@@ -131,39 +135,41 @@ pub(crate) fn gap_summary(
             continue;
         };
         let nf = all.noise_floor;
-        let wrong: Vec<String> = rows
+        let split = rows
             .iter()
-            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before > 3.0 * nf)
-            .map(|p| format!("{} ({:.3} {})", p.part, p.before, ch.unit()))
+            .filter(|p| p.part != Part::All && p.samples >= 10);
+        let wrong: Vec<(Part, f64)> = split
+            .clone()
+            .filter(|p| above_noise(p.before, nf))
+            .map(|p| (p.part, p.before))
             .collect();
-        let right: Vec<String> = rows
-            .iter()
-            .filter(|p| p.part != Part::All && p.samples >= 10 && p.before <= 3.0 * nf)
-            .map(|p| p.part.label())
+        let right: Vec<Part> = split
+            .filter(|p| !above_noise(p.before, nf))
+            .map(|p| p.part)
             .collect();
-        let significant_runs = runs
-            .iter()
-            .filter(|r| r.channels.iter().any(|c| c.channel == ch && c.significant))
-            .count();
-        out.push(format!(
-            "{}: RMS {:.4} {} (noise floor {:.4}); significant in {} of {} runs; wrong in: {}; right in: {}",
-            ch.name(),
-            all.before,
-            ch.unit(),
-            nf,
-            significant_runs,
-            runs.len(),
-            if wrong.is_empty() { "nowhere".into() } else { wrong.join(", ") },
-            if right.is_empty() { "nowhere".into() } else { right.join(", ") },
-        ));
+        out.push(GapFinding::Channel {
+            channel: ch,
+            rms: all.before,
+            noise_floor: nf,
+            significant_runs: runs
+                .iter()
+                .filter(|r| r.channels.iter().any(|c| c.channel == ch && c.significant))
+                .count(),
+            runs: runs.len(),
+            wrong,
+            right,
+        });
     }
     for r in runs {
         for b in &r.bands {
             if b.gain_error_db.abs() > 1.0 || b.phase_error_deg.abs() > 10.0 {
-                out.push(format!(
-                    "{}: yaw-rate response {:.2}–{:.2} Hz off by {:+.1} dB, {:+.0}°",
-                    r.run, b.f_low, b.f_high, b.gain_error_db, b.phase_error_deg
-                ));
+                out.push(GapFinding::Band {
+                    run: r.run.clone(),
+                    f_low: b.f_low,
+                    f_high: b.f_high,
+                    gain_error_db: b.gain_error_db,
+                    phase_error_deg: b.phase_error_deg,
+                });
             }
         }
     }

@@ -1,88 +1,63 @@
-//! A candidate of the diagnosis as a parameter vector ([`Setting`]): the
-//! axle characteristics of an identified base first (when the base has
-//! them), then each effect's parameters, then the roll dynamics when a
-//! roll effect is among them ([`crate::diagnose::fit::layout`]); its
-//! bounds and off values, the start of a combination from its members'
-//! fits ([`combined_start`]), and its fitted parameters as report rows
-//! ([`parameter_values`]). Units: SI, rad; the roll frequency in Hz.
+//! A candidate of the diagnosis as a parameter vector ([`Setting`]): its
+//! [`Layout`] (the axle characteristics of an identified base first when
+//! the base has them, then each effect's parameters, then the roll
+//! dynamics when a roll effect is among them), its bounds and off values,
+//! and its fitted parameters as report rows ([`parameter_values`]). The
+//! start of a combination from its members' fits is
+//! [`Layout::combined`]. Units: SI, rad; the roll frequency in Hz.
 
 use crate::diagnose::base::Bases;
-use crate::diagnose::effects::{EffectKind, EffectSet, Parameter, ROLL_DYNAMICS};
-use crate::diagnose::fit::layout::{fits_roll, Layout};
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::FitOutcome;
 use crate::diagnose::model::axles::AXLE_BOUNDS;
-use crate::diagnose::model::Augmented;
 use crate::diagnose::report::ParameterValue;
 
-/// A set of effects with their fitted values, and the model builder.
+/// A set of effects on the base models, as a parameter vector.
 #[derive(Clone)]
 pub(crate) struct Setting<'a> {
     pub(crate) base: &'a Bases,
-    pub(crate) kinds: Vec<EffectKind>,
-    pub(crate) fixed: EffectSet,
+    pub(crate) layout: Layout,
 }
 
-/// The start of a combination: the axle characteristics and effect values
-/// of the current set, the added effect's values from its single fit, and
-/// the roll dynamics from whichever of the two fitted them (the current
-/// set first).
-pub(crate) fn combined_start(
-    current: (&[EffectKind], &[f64]),
-    added: (EffectKind, &[f64]),
-    axle_count: usize,
-) -> Vec<f64> {
-    let (kinds, p) = current;
-    let effect_len: usize = kinds.iter().map(|e| e.parameters().len()).sum();
-    let end = axle_count + effect_len;
-    let n = added.0.parameters().len();
-    let mut start = p[..end].to_vec();
-    start.extend(&added.1[axle_count..axle_count + n]);
-    if fits_roll(kinds) {
-        start.extend(&p[end..end + 2]);
-    } else if added.0.uses_roll() {
-        start.extend(&added.1[axle_count + n..axle_count + n + 2]);
-    }
-    start
-}
-
-impl Setting<'_> {
-    pub(crate) fn axle(&self) -> bool {
-        self.base.axle.is_some()
-    }
-    /// What this setting's parameters set on `base` ([`with_effects`]).
-    pub(crate) fn layout(&self, base: &Augmented) -> Layout {
-        Layout {
-            base: base.clone(),
-            kinds: self.kinds.clone(),
-            axle: self.axle(),
+impl<'a> Setting<'a> {
+    /// The vector of `kinds` on `base` (after its axle characteristics
+    /// when it has them).
+    pub(crate) fn new(base: &'a Bases, kinds: Vec<EffectKind>) -> Self {
+        let axle = base.axle.is_some();
+        Self {
+            base,
+            layout: Layout { kinds, axle },
         }
     }
-    /// The effect parameters in vector order, the roll dynamics last.
-    pub(crate) fn parameters(&self) -> impl Iterator<Item = &'static Parameter> + '_ {
-        let roll = if fits_roll(&self.kinds) {
-            &ROLL_DYNAMICS[..]
+
+    /// The effects, in vector order.
+    pub(crate) fn kinds(&self) -> &[EffectKind] {
+        &self.layout.kinds
+    }
+
+    pub(crate) fn bounds(&self) -> Vec<(f64, f64)> {
+        let axle = if self.layout.axle {
+            &AXLE_BOUNDS[..]
         } else {
             &[]
         };
-        self.kinds
-            .iter()
-            .flat_map(|e| e.parameters().iter())
-            .chain(roll.iter())
-    }
-    pub(crate) fn bounds(&self) -> Vec<(f64, f64)> {
-        let axle = if self.axle() { &AXLE_BOUNDS[..] } else { &[] };
         axle.iter()
             .copied()
-            .chain(self.parameters().map(|q| q.bounds))
+            .chain(self.layout.parameters().map(|(_, q)| q.bounds))
             .collect()
     }
+
+    /// The vector with every effect off: the base's axle characteristics,
+    /// each effect's off values (the vehicle's own share where NaN), the
+    /// base's roll dynamics.
     pub(crate) fn off(&self) -> Vec<f64> {
         let axle = self.base.axle.as_ref().map_or(&[][..], |a| &a.0[..]);
-        let roll = self.base.all.roll;
+        let roll = self.base.all.effects().roll;
         let mut p: Vec<f64> = axle
             .iter()
             .copied()
-            .chain(self.kinds.iter().flat_map(|e| {
+            .chain(self.layout.kinds.iter().flat_map(|e| {
                 e.parameters().iter().map(|q| {
                     if q.off.is_nan() {
                         self.base.nominal_share
@@ -92,37 +67,20 @@ impl Setting<'_> {
                 })
             }))
             .collect();
-        if fits_roll(&self.kinds) {
+        if self.layout.fits_roll() {
             p.extend([roll.frequency, roll.damping]);
         }
         p
     }
 }
 
-/// The effect parameters of a fit whose first `skip` parameters are the
-/// axle characteristics.
-pub(crate) fn parameter_values(
-    kinds: &[EffectKind],
-    f: &FitOutcome,
-    skip: usize,
-) -> Vec<ParameterValue> {
-    let named = kinds
-        .iter()
-        .flat_map(|e| e.parameters().iter().map(move |q| (e.name(), q)));
-    let roll = fits_roll(kinds).then_some(ROLL_DYNAMICS.iter().map(|q| ("roll", q)));
-    named
-        .chain(roll.into_iter().flatten())
+/// The effect parameters (and roll dynamics) of a fit of `layout`, as
+/// report rows.
+pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<ParameterValue> {
+    let at = layout.effects().start;
+    layout
+        .parameters()
         .enumerate()
-        .map(|(i, (group, q))| {
-            let value = f.params[skip + i];
-            ParameterValue {
-                name: format!("{group}.{}", q.name),
-                unit: q.unit,
-                value,
-                std_error: f.std_errors[skip + i],
-                at_bound: q.bound_at(value).is_some(),
-                bound: q.bound_at(value),
-            }
-        })
+        .map(|(i, (group, q))| ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]))
         .collect()
 }

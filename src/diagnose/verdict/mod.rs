@@ -2,10 +2,14 @@
 //! scored on held-out runs (`score`: the folds, the held-out gap above
 //! noise and an effect's reduction of it), the singles screened before
 //! their cross-validation (`screening`), and the search for the set of
-//! effects that explains the gap with its acceptance rules (`search`).
+//! effects that explains the gap (`search`), the rules all three apply as
+//! pure functions (`rules`, with their thresholds), and the verdict's case
+//! from what the search found (`conclude`).
 //! Units: SI, rad; held-out errors J dimensionless.
 
 pub(crate) mod candidate;
+pub(crate) mod conclude;
+pub mod rules;
 pub(crate) mod score;
 pub(crate) mod screening;
 pub(crate) mod search;

@@ -2,13 +2,15 @@
 //! runs, each fold refitted from the all-run optimum; the held-out gap
 //! above noise `G = sqrt(J² − J_n²)` and an effect's reduction of it.
 //! The folds: run i in fold i mod k, with k the number of runs up to
-//! [`MAX_FOLDS`] (leave-one-run-out for up to that many runs).
+//! [`MAX_FOLDS`] (leave-one-run-out for up to that many runs). A
+//! candidate's model of a vector is its [`Setting`]'s layout applied to the
+//! base model of all runs or of the fold
+//! ([`crate::diagnose::fit::layout::Layout::model`]).
 
 use crate::diagnose::base::identify::axle_grid;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{EffectKind, EffectSet};
-use crate::diagnose::fit::layout::with_effects;
+use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
 use crate::diagnose::fit::{fit, swarm, FitOutcome, Polish};
@@ -65,7 +67,7 @@ impl Fitted<'_> {
     /// screened candidate, whose all-run fit the greedy additions use).
     pub(crate) fn unscored(&self) -> Scored {
         Scored {
-            kinds: self.setting.kinds.clone(),
+            kinds: self.setting.layout.kinds.clone(),
             full: FitOutcome {
                 linear: None,
                 ..self.full.clone()
@@ -88,12 +90,7 @@ impl<'a> Context<'a> {
     /// The parameter vector of `kinds` switched off (axle characteristics
     /// and roll dynamics at the base's).
     pub(crate) fn off(&self, kinds: &[EffectKind]) -> Vec<f64> {
-        Setting {
-            base: self.bases,
-            kinds: kinds.to_vec(),
-            fixed: EffectSet::default(),
-        }
-        .off()
+        Setting::new(self.bases, kinds.to_vec()).off()
     }
 
     pub(crate) fn training(&self, fold: usize) -> Vec<&Prepared> {
@@ -105,14 +102,8 @@ impl<'a> Context<'a> {
 
     /// Fits a candidate on all runs ([`Context::fit_all`]) and scores it on
     /// every fold ([`Context::cross_validate`]).
-    pub(crate) fn score(
-        &self,
-        kinds: Vec<EffectKind>,
-        fixed: EffectSet,
-        starts: &[Vec<f64>],
-        salt: u64,
-    ) -> Scored {
-        self.cross_validate(&self.fit_all(kinds, fixed, starts, salt))
+    pub(crate) fn score(&self, kinds: Vec<EffectKind>, starts: &[Vec<f64>], salt: u64) -> Scored {
+        self.cross_validate(&self.fit_all(kinds, starts, salt))
     }
 
     /// Fits a candidate on all runs (PSO from `start`, then
@@ -124,28 +115,23 @@ impl<'a> Context<'a> {
     pub(crate) fn fit_all(
         &self,
         kinds: Vec<EffectKind>,
-        fixed: EffectSet,
         starts: &[Vec<f64>],
         salt: u64,
     ) -> Fitted<'a> {
-        let s = Setting {
-            base: self.bases,
-            kinds,
-            fixed,
-        };
+        let s = Setting::new(self.bases, kinds);
         let stamps = self.timing.map(|_| Stamps::default());
         let problem = Problem::new(
             |p: &[f64]| {
                 if let Some(st) = &stamps {
                     st.tick();
                 }
-                with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), p)
+                s.layout.model(&self.bases.all, p)
             },
             self.runs.iter().collect(),
             self.scales,
             s.bounds(),
         )
-        .with_layout(s.layout(&self.bases.all), self.derivatives);
+        .with_layout(s.layout.clone(), &self.bases.all, self.derivatives);
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -166,7 +152,7 @@ impl<'a> Context<'a> {
             record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
         }
         drop(problem);
-        let all_model = with_effects(&self.bases.all, &s.fixed, &s.kinds, s.axle(), &full.params);
+        let all_model = s.layout.model(&self.bases.all, &full.params);
         let mut insample = ChannelErrors::default();
         for r in &self.runs {
             insample.add(&r.errors(&all_model));
@@ -185,7 +171,7 @@ impl<'a> Context<'a> {
     /// non-converged folds are counted and warned about).
     pub(crate) fn cross_validate(&self, fitted: &Fitted) -> Scored {
         let (s, full) = (&fitted.setting, &fitted.full);
-        if let (Some(rec), false) = (self.timing, s.kinds.is_empty()) {
+        if let (Some(rec), false) = (self.timing, s.kinds().is_empty()) {
             rec.candidate(true);
         }
         // Folds in parallel too: a candidate whose fit is slow (a steering
@@ -202,15 +188,15 @@ impl<'a> Context<'a> {
                         if let Some(st) = &stamps {
                             st.tick();
                         }
-                        with_effects(base, &s.fixed, &s.kinds, s.axle(), p)
+                        s.layout.model(base, p)
                     },
                     self.training(k),
                     self.scales,
                     s.bounds(),
                 )
-                .with_layout(s.layout(base), self.derivatives);
+                .with_layout(s.layout.clone(), base, self.derivatives);
                 let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
-                let model = with_effects(base, &s.fixed, &s.kinds, s.axle(), &f.params);
+                let model = s.layout.model(base, &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {
                     e.add(&self.runs[i].errors(&model));
@@ -251,7 +237,7 @@ impl<'a> Context<'a> {
         starts: &[Vec<f64>],
         pso: &Pso,
     ) -> Vec<f64> {
-        let held = if s.axle() { 3 } else { 0 };
+        let held = s.layout.axle_count();
         let mut tried: Vec<(f64, Vec<f64>)> = starts
             .iter()
             .map(|p| (problem.cost(p), p.clone()))
@@ -270,7 +256,7 @@ impl<'a> Context<'a> {
         // lower the cost by REGRID_GAIN; below that the grid would be the
         // base's own again), and at the input as logged; a combination's
         // starts already carry each member's axles.
-        if let (true, [kind]) = (s.axle(), &s.kinds[..]) {
+        if let (true, [kind]) = (s.layout.axle, s.kinds()) {
             let off = problem.cost(&s.off());
             let (cost, p) = tried
                 .iter()
@@ -288,17 +274,13 @@ impl<'a> Context<'a> {
     }
 
     /// Held-out replays of every run with a candidate's fold parameters.
-    pub(crate) fn heldout_observed(&self, sc: Option<&Scored>, fixed: &EffectSet) -> Vec<Observed> {
+    pub(crate) fn heldout_observed(&self, sc: Option<&Scored>) -> Vec<Observed> {
         let mut out = vec![Observed::default(); self.runs.len()];
         for (k, fold) in self.folds.iter().enumerate() {
             let model = match sc {
-                Some(sc) => with_effects(
-                    &self.bases.folds[k],
-                    fixed,
-                    &sc.kinds,
-                    self.bases.axle.is_some(),
-                    &sc.fold_params[k],
-                ),
+                Some(sc) => Setting::new(self.bases, sc.kinds.clone())
+                    .layout
+                    .model(&self.bases.folds[k], &sc.fold_params[k]),
                 None => self.bases.folds[k].clone(),
             };
             for &i in fold {

@@ -6,7 +6,7 @@
 //! reduction `R_in = 1 − G_in,after/G_in,before` (the gap above noise of
 //! the all-run fits, see [`crate::diagnose::verdict::score`]) costs nothing more. A
 //! candidate is screened when `R_in + `[`SCREEN_MARGIN`]` < `[`ACCEPT`]
-//! (in percent). Its held-out reduction `R_out` is then below the
+//! (in percent; [`rules::screened`]). Its held-out reduction `R_out` is then below the
 //! acceptance share as long as `R_out ≤ R_in + SCREEN_MARGIN`: the fold
 //! refits see fewer runs than the all-run fit, so an effect removes less
 //! of the gap on the runs it did not see than on those it was fitted to,
@@ -30,15 +30,14 @@
 //! significant gap nothing is searched, and every candidate below the
 //! threshold stays screened.
 
-use crate::diagnose::effects::{joined, EffectKind, EffectSet};
+use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::Screened;
+#[cfg(doc)]
+use crate::diagnose::verdict::rules::PARSIMONY;
+use crate::diagnose::verdict::rules::{self, ACCEPT, SCREEN_MARGIN};
 use crate::diagnose::verdict::score::{Context, Fitted, Scored};
-use crate::diagnose::verdict::search::{Baseline, ACCEPT, PARSIMONY};
+use crate::diagnose::verdict::search::Baseline;
 use rayon::prelude::*;
-
-/// Percentage points by which a candidate's held-out reduction may exceed
-/// its in-sample one and the screening still hold.
-pub const SCREEN_MARGIN: f64 = 10.0;
 
 /// A single effect fitted on all runs: cross-validated, or screened (its
 /// all-run fit kept, with the linearisation its folds would start from).
@@ -61,11 +60,12 @@ pub(crate) fn singles(
     let screens = screening && base.insample_gap();
     let mut slots: Vec<Slot> = effects
         .par_iter()
-        .enumerate()
-        .map(|(i, e)| {
-            let f = ctx.fit_all(vec![*e], EffectSet::default(), &[], i as u64 + 1);
+        .map(|e| {
+            // Seeded by the effect's name: its fit does not depend on
+            // which other effects the campaign lists.
+            let f = ctx.fit_all(vec![*e], &[], e.seed());
             let inside = base.insample_reduction(&f.insample);
-            if screens && inside + SCREEN_MARGIN < 100.0 * ACCEPT {
+            if screens && rules::screened(inside) {
                 Slot::Screened(f, inside)
             } else {
                 Slot::Scored(ctx.cross_validate(&f))
@@ -96,24 +96,27 @@ pub(crate) fn singles(
             }
         }
     }
+    // The cross-validated ones best first ([`rules::best_first`]).
     let scales = ctx.scales;
-    let mut order: Vec<usize> = (0..singles.len())
+    let scored: Vec<usize> = (0..singles.len())
         .filter(|i| !screened.contains(i))
         .collect();
-    order.sort_by(|&a, &b| {
-        singles[a]
-            .heldout
-            .combined(&scales)
-            .total_cmp(&singles[b].heldout.combined(&scales))
-    });
+    let errors: Vec<f64> = scored
+        .iter()
+        .map(|&i| singles[i].heldout.combined(&scales))
+        .collect();
+    let order = rules::best_first(&errors)
+        .into_iter()
+        .map(|k| scored[k])
+        .collect();
     (singles, order, screened, screened_rows)
 }
 
 /// Cross-validates the screened candidates the search could read: those
 /// whose least possible held-out error reaches the best cross-validated
 /// one's (every candidate, and the non-degenerate ones widened by
-/// [`PARSIMONY`] noise levels). A candidate so added can only lower the
-/// best: one pass suffices.
+/// [`PARSIMONY`] noise levels; [`rules::reaches`]). A candidate so added
+/// can only lower the best: one pass suffices.
 fn recheck(ctx: &Context, base: &Baseline, slots: &mut [Slot]) {
     let scales = ctx.scales;
     let (mut best, mut best_usable) = (f64::INFINITY, f64::INFINITY);
@@ -121,20 +124,19 @@ fn recheck(ctx: &Context, base: &Baseline, slots: &mut [Slot]) {
         if let Slot::Scored(sc) = slot {
             let j = sc.heldout.combined(&scales);
             best = best.min(j);
-            if base.degenerate(sc).is_none() {
+            if !base.degenerate(sc) {
                 best_usable = best_usable.min(j);
             }
         }
     }
-    let window = best_usable + PARSIMONY * base.jn;
     let reach: Vec<usize> = slots
         .iter()
         .enumerate()
         .filter_map(|(i, slot)| match slot {
             Slot::Screened(f, inside) => {
                 let floor = base.heldout_floor(inside + SCREEN_MARGIN);
-                let usable = base.degenerate(&f.unscored()).is_none();
-                (floor <= best || (usable && floor <= window)).then_some(i)
+                let usable = !base.degenerate(&f.unscored());
+                rules::reaches(floor, usable, best, best_usable, base.jn).then_some(i)
             }
             Slot::Scored(_) => None,
         })

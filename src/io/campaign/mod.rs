@@ -14,7 +14,9 @@
 //! pieces); paths are relative to the file.
 //!
 //! Runs are checked (`runs.rs`): a run shorter than [`MIN_RUN_SECONDS`] or
-//! [`MIN_RUN_SAMPLES`] is refused; then each is cleaned
+//! [`MIN_RUN_SAMPLES`] is refused; the sensor offsets their standstills and
+//! straights show are measured on the runs as read
+//! ([`crate::measured::calibration`]); then each is cleaned
 //! ([`crate::measured::clean`]):
 //! split at time gaps, glitches repaired or masked, samples below
 //! `[diagnose] min_speed` (default 5 m/s) excluded, the moving pieces
@@ -108,7 +110,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         folder,
         &mut folder_notes,
     )?;
-    let (runs, mut notes, cleaning) = read_runs(
+    let (runs, mut notes, cleaning, calibration) = read_runs(
         &files,
         f.runs.as_ref().and_then(|r| r.segment),
         f.diagnose.min_speed,
@@ -151,6 +153,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         effects,
         notes,
         cleaning,
+        calibration,
     })
 }
 

@@ -1,19 +1,21 @@
 //! The runs of a test campaign: the run files a campaign names (`[runs]
 //! files`, the `*.csv` of `[runs] dir` or of a campaign folder's `runs/`),
 //! each read, checked (long enough; the steer's sign and unit judged against
-//! the yaw rate it gives, ISO 8855 signs) and cleaned
+//! the yaw rate it gives, ISO 8855 signs), calibrated on its standstills and
+//! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
 use crate::error::{InputError, InputProblem};
 use crate::io::paths::beside;
 use crate::io::read_run;
 use crate::io::toml_file::TomlSource;
+use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
     clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
     MIN_RUN_SECONDS,
 };
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{yaw_per_neutral, STEER_IN_DEGREES};
+use crate::metrics::measured::{steer_problem, yaw_per_neutral};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -133,15 +135,25 @@ pub(super) fn run_files(
     Ok(files)
 }
 
-/// Reads, checks and cleans every run, cut into segments if asked: the
-/// pieces to replay, notes on what was done, the cleaning report.
+/// The runs read: the pieces to replay, notes on what was done, the
+/// cleaning report and the calibration of the raw runs.
+pub(super) type ReadRuns = (
+    Vec<MeasuredRun>,
+    Vec<String>,
+    CleaningReport,
+    CalibrationReport,
+);
+
+/// Reads, checks, calibrates and cleans every run, cut into segments if
+/// asked.
 pub(super) fn read_runs(
     files: &[PathBuf],
     segment: Option<f64>,
     min_speed: f64,
     wheelbase: f64,
     inputs: &mut Vec<PathBuf>,
-) -> Result<(Vec<MeasuredRun>, Vec<String>, CleaningReport), InputError> {
+) -> Result<ReadRuns, InputError> {
+    let mut raw = Vec::new();
     let mut runs = Vec::new();
     let mut notes = Vec::new();
     let clean = CleanSettings::diagnosis(min_speed);
@@ -154,6 +166,9 @@ pub(super) fn read_runs(
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
+        // The standstills the cleaning leaves out are the calibration's
+        // evidence: it reads the run as logged.
+        raw.push(run.clone());
         let pieces = clean_run(run, &clean, &mut cleaning);
         let gaps: Vec<String> = cleaning.glitches[listed..]
             .iter()
@@ -192,14 +207,16 @@ pub(super) fn read_runs(
             }
         }
     }
-    Ok((runs, notes, cleaning))
+    Ok((runs, notes, cleaning, calibrate(&raw)))
 }
 
-/// The steer judged against the yaw rate it gives
-/// ([`yaw_per_neutral`]): a negative median is a sign convention other
-/// than ISO 8855's (refused); one below 0.1 a steer in degrees or a
-/// steering-wheel angle, one above 3 a steer too small (noted: the
-/// diagnosis would fit a model-form error to a unit slip).
+/// The steer judged against the yaw rate it gives where it is held
+/// ([`yaw_per_neutral`]), by the rule `metrics` applies too
+/// ([`steer_problem`]): a yaw rate turning against the steer (another sign
+/// convention) or far smaller than a neutral car's (a steer in degrees or
+/// a steering-wheel angle) is refused; one above 3 a neutral car's (a
+/// steer too small, or a wrong wheelbase) is noted, since only the
+/// diagnosis knows the vehicle's wheelbase to judge it by.
 fn steer_against_yaw(
     run: &MeasuredRun,
     wheelbase: f64,
@@ -208,30 +225,15 @@ fn steer_against_yaw(
     let Some((m, n)) = yaw_per_neutral(run, wheelbase, min_speed) else {
         return Ok(None);
     };
-    let name = run.path.display();
-    if m < -0.1 {
-        return Err(file_error(
-            &run.path,
-            InputProblem::YawAgainstSteer {
-                median: m,
-                samples: n,
-            },
-        ));
+    if let Some(problem) = steer_problem(m, n, None) {
+        return Err(file_error(&run.path, problem));
     }
-    Ok(if m < STEER_IN_DEGREES {
-        let problem = InputProblem::SteerAboveYaw {
-            median: m,
-            samples: n,
-            assumed_wheelbase: None,
-        };
-        Some(format!("{name}: {problem}"))
-    } else if m > 3.0 {
-        Some(format!(
-            "{name}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?"
-        ))
-    } else {
-        None
-    })
+    Ok((m > 3.0).then(|| {
+        format!(
+            "{}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} held steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?",
+            run.path.display()
+        )
+    }))
 }
 
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the
@@ -314,14 +316,22 @@ mod tests {
                 .collect();
             steer_against_yaw(&r, l, 5.0)
         };
-        let sine = |s: f64| 0.03 * (s * 1.3).sin();
-        assert!(matches!(with(&sine, 0.8), Ok(None)));
-        // Logged in degrees: the yaw rate is 57/0.8 times too small for it.
-        let degrees = |s: f64| sine(s).to_degrees();
-        let note = with(&degrees, 0.8 / 57.29578).unwrap().expect("a note");
-        assert!(note.contains("72× smaller"), "{note}");
+        // Turns held for 1–2 s, left and right.
+        let turns = |s: f64| 0.03 * (2.0 * (s * 1.3).sin()).clamp(-1.0, 1.0);
+        assert!(matches!(with(&turns, 0.8), Ok(None)));
+        // Logged in degrees: the yaw rate is 57/0.8 times too small for it,
+        // refused as `metrics` refuses it.
+        let degrees = |s: f64| turns(s).to_degrees();
+        let e = with(&degrees, 0.8 / 57.29578).unwrap_err().to_string();
+        assert!(e.contains("72× smaller"), "{e}");
         // The other sign convention: refused.
-        assert!(with(&sine, -0.8).is_err());
+        assert!(with(&turns, -0.8).is_err());
+        // A steer that never holds (a sine of 1 Hz) is not judged, even
+        // with a yaw rate that does not follow it: on a real car the yaw
+        // rate lags such a steer, and the ratio would measure the lag, not
+        // the units.
+        let sweep = |s: f64| 0.03 * (s * std::f64::consts::TAU).sin();
+        assert!(matches!(with(&sweep, -0.8), Ok(None)));
         // A straight run whose steer sensor sits 6 mrad off shows no gain:
         // not judged, whatever the yaw rate's noise.
         assert!(matches!(with(&|_| 0.006, 0.0), Ok(None)));

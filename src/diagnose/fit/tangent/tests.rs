@@ -4,14 +4,13 @@
 //! bound (a delay or a lag at zero).
 
 use super::*;
-use crate::diagnose::effects::EffectSet;
-use crate::diagnose::effects::ROLL_DYNAMICS;
+use crate::diagnose::effects::{EffectKind, RollDynamics};
 use crate::diagnose::fit::problem::Problem;
 use crate::measured::MeasuredRun;
 use crate::optim::local::Residuals;
 use crate::sim::Drive;
 use crate::tyre::Tyre;
-use crate::vehicle::{Vehicle, VehicleModel};
+use crate::vehicle::{SteerPath, Vehicle, VehicleModel};
 
 /// A run of `truth` driven through a steer sine while speeding up from 14
 /// to 22 m/s over a road whose bank follows a slow sine, logged at 25 Hz
@@ -54,16 +53,10 @@ fn run(truth: &Augmented, step: f64, speed0: f64) -> Prepared {
     p
 }
 
-/// The plain model of parameters `q` of `layout` (no effect held fixed):
-/// what a problem's `build` gives.
-fn build(layout: &Layout, q: &[f64]) -> Augmented {
-    crate::diagnose::fit::layout::with_effects(
-        &layout.base,
-        &EffectSet::default(),
-        &layout.kinds,
-        layout.axle,
-        q,
-    )
+/// The plain model of parameters `q` of `layout` on `base`: what a
+/// problem's `build` gives.
+fn build(layout: &Layout, base: &Augmented, q: &[f64]) -> Augmented {
+    layout.model(base, q)
 }
 
 /// A parameter value inside its box, 31.3 % of the way from its off value
@@ -129,7 +122,7 @@ fn central(problem: &impl Residuals, p: &[f64], bounds: &[(f64, f64)], step: f64
 /// columns' errors against central differences of steps `step` of the
 /// boxes.
 fn check(
-    layout: &Layout,
+    (layout, base): (&Layout, &Augmented),
     runs: &[Prepared],
     p: &[f64],
     bounds: Vec<(f64, f64)>,
@@ -137,12 +130,16 @@ fn check(
 ) -> Vec<f64> {
     let scales = [0.01, 0.2, 0.002];
     let problem = Problem::new(
-        |q: &[f64]| build(layout, q),
+        |q: &[f64]| build(layout, base, q),
         runs.iter().collect(),
         scales,
         bounds.clone(),
     )
-    .with_layout(layout.clone(), crate::optim::local::Derivatives::Exact);
+    .with_layout(
+        layout.clone(),
+        base,
+        crate::optim::local::Derivatives::Exact,
+    );
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
     let exact = problem.jacobian(p, &r, &bounds);
@@ -153,13 +150,13 @@ fn check(
 /// How far central differences of steps 1e-3 and 5e-4 of the boxes
 /// disagree, per column (relative, as [`column_errors`]).
 fn reference_noise(
-    layout: &Layout,
+    (layout, base): (&Layout, &Augmented),
     runs: &[Prepared],
     p: &[f64],
     bounds: &[(f64, f64)],
 ) -> Vec<f64> {
     let problem = Problem::new(
-        |q: &[f64]| build(layout, q),
+        |q: &[f64]| build(layout, base, q),
         runs.iter().collect(),
         [0.01, 0.2, 0.002],
         bounds.to_vec(),
@@ -175,7 +172,7 @@ fn vector(kind: EffectKind) -> (Vec<f64>, Vec<(f64, f64)>) {
     let mut p = vec![0.5, 0.55, 0.5];
     let mut b = crate::diagnose::base::identify::AXLE_BOUNDS.to_vec();
     let roll: &[crate::diagnose::effects::Parameter] = if kind.uses_roll() {
-        &ROLL_DYNAMICS
+        RollDynamics::PARAMETERS
     } else {
         &[]
     };
@@ -191,13 +188,9 @@ fn every_effects_exact_jacobian_equals_central_differences_under_rk4() {
     let truth = sedan();
     let runs = vec![run(&truth, 0.01, 14.0)];
     for kind in EffectKind::ALL {
-        let layout = Layout {
-            base: sedan(),
-            kinds: vec![kind],
-            axle: true,
-        };
+        let (layout, base) = (Layout::new(&[kind], true), sedan());
         let (p, bounds) = vector(kind);
-        let errors = check(&layout, &runs, &p, bounds, 1e-3);
+        let errors = check((&layout, &base), &runs, &p, bounds, 1e-3);
         for (k, e) in errors.iter().enumerate() {
             assert!(*e < 1e-6, "{}: parameter {k}: {e:e}", kind.name());
         }
@@ -209,9 +202,9 @@ fn the_exact_jacobian_of_a_stiff_replay_by_ros34pw2_equals_central_differences()
     // Racing axles (k of 60 and 80 1/rad) at 3–8 m/s on a 20 ms step: too
     // stiff for RK4, the replay runs by ROS34PW2.
     let mut car = sedan();
-    car.base.vehicle = crate::vehicle::racing_car();
+    car.model.vehicle = crate::vehicle::racing_car();
     let shares = crate::diagnose::base::identify::shares(60.0, 80.0, 1.6);
-    (car.base.front, car.base.rear) = crate::diagnose::base::identify::axle_tyres(&shares);
+    (car.model.front, car.model.rear) = crate::diagnose::base::identify::axle_tyres(&shares);
     let runs = vec![run(&car, 0.02, 3.0)];
     assert_eq!(
         runs[0].drive_for(&car).method,
@@ -223,11 +216,8 @@ fn the_exact_jacobian_of_a_stiff_replay_by_ros34pw2_equals_central_differences()
         EffectKind::RollCamber,
         EffectKind::SteerPath,
     ] {
-        let layout = Layout {
-            base: car.clone(),
-            kinds: vec![kind],
-            axle: true,
-        };
+        let layout = Layout::new(&[kind], true);
+        let model = (&layout, &car);
         let (mut p, bounds) = vector(kind);
         p[..3].copy_from_slice(&shares);
         // ROS34PW2's matrix W is a forward difference of the right-hand
@@ -235,8 +225,8 @@ fn the_exact_jacobian_of_a_stiff_replay_by_ros34pw2_equals_central_differences()
         // replay rough at about that level, which the differences amplify
         // by 1/step. Their own noise is measured by two step sizes; the
         // exact Jacobian must agree within 1e-6 or twice that noise.
-        let errors = check(&layout, &runs, &p, bounds.clone(), 1e-3);
-        let noise = reference_noise(&layout, &runs, &p, &bounds);
+        let errors = check(model, &runs, &p, bounds.clone(), 1e-3);
+        let noise = reference_noise(model, &runs, &p, &bounds);
         for (k, e) in errors.iter().enumerate() {
             assert!(
                 noise[k] < 1e-5,
@@ -264,19 +254,19 @@ fn on_a_zero_delay_or_lag_the_exact_jacobian_is_the_one_sided_derivative_into_th
         (EffectKind::SteerPath, vec![0.0, 0.0]),
         (EffectKind::SteerPath, vec![0.0537, 0.0]),
     ] {
-        let layout = Layout {
-            base: sedan(),
-            kinds: vec![kind],
-            axle: false,
-        };
+        let (layout, base) = (Layout::new(&[kind], false), sedan());
         let bounds: Vec<(f64, f64)> = kind.parameters().iter().map(|q| q.bounds).collect();
         let problem = Problem::new(
-            |q: &[f64]| build(&layout, q),
+            |q: &[f64]| build(&layout, &base, q),
             runs.iter().collect(),
             [0.01, 0.2, 0.002],
             bounds.clone(),
         )
-        .with_layout(layout.clone(), crate::optim::local::Derivatives::Exact);
+        .with_layout(
+            layout.clone(),
+            &base,
+            crate::optim::local::Derivatives::Exact,
+        );
         let mut r0 = vec![0.0; problem.count()];
         problem.residuals(&p, &mut r0);
         let exact = problem.jacobian(&p, &r0, &bounds);
@@ -374,19 +364,15 @@ fn with_given_tyres_of_every_model_every_effects_exact_jacobian_holds() {
         );
         let runs = vec![run(&car, 0.01, 14.0)];
         for kind in EffectKind::ALL {
-            let layout = Layout {
-                base: car.clone(),
-                kinds: vec![kind],
-                axle: false,
-            };
+            let layout = Layout::new(&[kind], false);
             let (p, bounds) = vector(kind);
             let (p, bounds) = (&p[3..], &bounds[3..]);
-            let errors = check(&layout, &runs, p, bounds.to_vec(), 1e-3);
+            let errors = check((&layout, &car), &runs, p, bounds.to_vec(), 1e-3);
             // The brush model's transition to full sliding is a kink of
             // its higher derivatives, which central differences feel: the
             // exact Jacobian must agree within 1e-6 or twice the
             // differences' own disagreement between two steps.
-            let noise = reference_noise(&layout, &runs, p, bounds);
+            let noise = reference_noise((&layout, &car), &runs, p, bounds);
             for (k, e) in errors.iter().enumerate() {
                 let name = kind.name();
                 assert!(
@@ -399,4 +385,71 @@ fn with_given_tyres_of_every_model_every_effects_exact_jacobian_holds() {
             }
         }
     }
+}
+
+#[test]
+fn zz_dump_bits() {
+    use std::fmt::Write;
+    let truth = sedan();
+    let runs = [run(&truth, 0.01, 14.0)];
+    let mut out = String::new();
+    let mut sets: Vec<Vec<EffectKind>> = EffectKind::ALL.iter().map(|k| vec![*k]).collect();
+    sets.push(vec![EffectKind::RoadBank, EffectKind::BankProfile]);
+    sets.push(vec![EffectKind::BankProfile, EffectKind::RoadBank]);
+    sets.push(vec![EffectKind::AeroLoad, EffectKind::YawInertia]);
+    sets.push(vec![
+        EffectKind::RoadFriction,
+        EffectKind::CorneringStiffness,
+        EffectKind::RollSteer,
+    ]);
+    sets.push(vec![
+        EffectKind::SensorBias,
+        EffectKind::RollCamber,
+        EffectKind::SteerPath,
+    ]);
+    for (n, kinds) in sets.iter().enumerate() {
+        let axle = n % 2 == 0;
+        let (layout, base) = (Layout::new(kinds, axle), sedan());
+        let mut p = if axle { vec![0.5, 0.55, 0.5] } else { vec![] };
+        let mut bounds = if axle {
+            crate::diagnose::base::identify::AXLE_BOUNDS.to_vec()
+        } else {
+            vec![]
+        };
+        let roll: &[crate::diagnose::effects::Parameter] = if kinds.iter().any(|k| k.uses_roll()) {
+            RollDynamics::PARAMETERS
+        } else {
+            &[]
+        };
+        for q in kinds.iter().flat_map(|k| k.parameters().iter()).chain(roll) {
+            p.push(inside(q));
+            bounds.push(q.bounds);
+        }
+        let problem = Problem::new(
+            |q: &[f64]| build(&layout, &base, q),
+            runs.iter().collect(),
+            [0.01, 0.2, 0.002],
+            bounds.clone(),
+        )
+        .with_layout(
+            layout.clone(),
+            &base,
+            crate::optim::local::Derivatives::Exact,
+        );
+        let mut r = vec![0.0; problem.count()];
+        problem.residuals(&p, &mut r);
+        let j = problem.jacobian(&p, &r, &bounds);
+        let names: Vec<&str> = kinds.iter().map(|k| k.name()).collect();
+        writeln!(out, "set {} axle {axle}", names.join("+")).unwrap();
+        for x in &r {
+            write!(out, "{:016x} ", x.to_bits()).unwrap();
+        }
+        writeln!(out).unwrap();
+        for x in j.iter() {
+            write!(out, "{:016x} ", x.to_bits()).unwrap();
+        }
+        writeln!(out).unwrap();
+    }
+    let path = std::env::var("DUMP").unwrap_or("/tmp/effects_dump.txt".into());
+    std::fs::write(path, out).unwrap();
 }

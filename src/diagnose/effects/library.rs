@@ -1,0 +1,348 @@
+//! The library of candidate effects: the one list (expanded by
+//! `generate.rs` into [`EffectKind`], `EffectKind::ALL`, the dispatch and
+//! serde by name) and one [`Effect`] impl per effect, which is everything
+//! the crate knows of it but its physics: its name, parameters (units,
+//! search bounds, what bounds them, the values that switch it off), the
+//! signature that separates it from its look-alikes, what a run must carry
+//! for it to show, whether it acts through roll, its value on the
+//! augmented proving ground, and [`Effect::apply`], which sets its numbers
+//! on the vehicle model's [`Effects`] (the physics that reads them is the
+//! vehicle model's, [`crate::vehicle`]).
+//!
+//! `apply` acts on a copy of the base model's effects: it adds to what the
+//! base has where the base may have some already (aero load, road bank, the
+//! bank profile, longitudinal load transfer), scales what it scales (yaw
+//! inertia, road friction), and replaces the rest. A fit calls it in plain
+//! and in dual numbers alike, so its derivatives flow through it.
+//!
+//! The list's order is the order of `EffectKind::ALL` (the candidates of a
+//! campaign that names none, error messages, the report's tables). Signs
+//! follow ISO 8855; units: SI, rad; scales are dimensionless factors on
+//! the base model's value.
+
+use super::generate::effect_library;
+use super::{par, Effect, Needs, Parameter};
+use crate::scalar::Scalar;
+use crate::vehicle::{Effects, PASSENGER_CAR_ROLL_GRADIENT};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+effect_library! {
+    /// Tyre lag: first-order slip-angle response over a relaxation length.
+    RelaxationLength,
+    /// Steer angle lost to the front axle force through the steering system.
+    SteeringCompliance,
+    /// Axle steer proportional to body roll (needs the roll degree of freedom).
+    RollSteer,
+    /// Camber thrust proportional to body roll and load.
+    RollCamber,
+    /// Front share of the lateral load transfer.
+    LoadTransferDistribution,
+    /// Aerodynamic down-force growing with speed squared.
+    AeroLoad,
+    /// Road friction differing from the tyre data's.
+    RoadFriction,
+    /// Constant road bank (cross slope).
+    RoadBank,
+    /// Axle cornering stiffness differing from the tyre data's.
+    CorneringStiffness,
+    /// Yaw moment of inertia differing from the vehicle file's.
+    YawInertia,
+    /// All measured channels reported late.
+    SensorDelay,
+    /// Constant offsets of the yaw-rate, lateral-acceleration and sideslip
+    /// sensors.
+    SensorBias,
+    /// A body-fixed accelerometer that rolls with the body and feels g·sin φ.
+    AccelerometerRoll,
+    /// An accelerometer ahead of or behind the centre of gravity.
+    AccelerometerPosition,
+    /// Load moved between the axles by the longitudinal acceleration.
+    LongitudinalLoadTransfer,
+    /// Lateral force lost to the longitudinal force of braking and drive
+    /// (each tyre's friction circle), with a drive split, a brake balance
+    /// and the share of `m·ax` the tyres carry.
+    CombinedSlip,
+    /// The road bank of the run's `bank` channel, scaled, plus an offset.
+    BankProfile,
+    /// The steer actuator: the road wheels follow the logged steer late
+    /// (a dead time) and through a first-order lag.
+    SteerPath,
+}
+
+impl Effect for RelaxationLength {
+    const NAME: &'static str = "relaxation_length";
+    const PARAMETERS: &'static [Parameter] =
+        &[par("relaxation_length", "m", 0.0, 0.0, 3.0).floor()];
+    const SIGNATURE: &'static str =
+        "a lag that shrinks with speed (time constant σ/u): compare runs at two speeds";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.8];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.relaxation_length = p[0];
+    }
+}
+
+impl Effect for SteeringCompliance {
+    const NAME: &'static str = "steering_compliance";
+    const PARAMETERS: &'static [Parameter] =
+        &[par("steer_per_front_force", "rad/kN", 0.0, -0.02, 0.05)];
+    const SIGNATURE: &'static str = "understeer that grows with front axle force, not with roll: compare steady turns at one lateral acceleration and different speeds";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.003];
+    /// rad/kN to the model's rad/N.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.steering_compliance = p[0] * 1e-3;
+    }
+}
+
+impl Effect for RollSteer {
+    const NAME: &'static str = "roll_steer";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("front", "rad/rad", 0.0, -0.5, 0.5),
+        par("rear", "rad/rad", 0.0, -0.5, 0.5),
+    ];
+    const SIGNATURE: &'static str = "a steer change that follows body roll through the tyre's slip curve (saturates at the limit): a ramp steer to the limit";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = true;
+    const TRUTH: &'static [f64] = &[-0.15, 0.0];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.roll_steer = [p[0], p[1]];
+    }
+}
+
+impl Effect for RollCamber {
+    const NAME: &'static str = "roll_camber";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("front", "N/N per rad", 0.0, -8.0, 8.0),
+        par("rear", "N/N per rad", 0.0, -8.0, 8.0),
+    ];
+    const SIGNATURE: &'static str = "a force change proportional to roll and load that does not saturate with slip: a ramp steer to the limit";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = true;
+    const TRUTH: &'static [f64] = &[-1.5, 0.0];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.roll_camber = [p[0], p[1]];
+    }
+}
+
+impl Effect for LoadTransferDistribution {
+    const NAME: &'static str = "load_transfer_distribution";
+    /// Off (NaN) is the vehicle's own share.
+    const PARAMETERS: &'static [Parameter] = &[par("front_share", "-", f64::NAN, 0.0, 1.0).share()];
+    const SIGNATURE: &'static str = "a balance change only at high lateral acceleration: compare low- and high-level steps at one speed";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.85];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.transfer_share = Some(p[0]);
+    }
+}
+
+impl Effect for AeroLoad {
+    const NAME: &'static str = "aero_load";
+    /// No negative down-force (a lift is not the model): 0 is a physical
+    /// limit.
+    const PARAMETERS: &'static [Parameter] = &[
+        par("front", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
+        par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
+    ];
+    const SIGNATURE: &'static str = "grip and balance that change with speed squared at equal lateral acceleration: steps at two speeds, same level";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[1.5, 2.0];
+    /// On top of the base model's own down-force.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.aero_load = [e.aero_load[0] + p[0], e.aero_load[1] + p[1]];
+    }
+}
+
+impl Effect for RoadFriction {
+    const NAME: &'static str = "road_friction";
+    const PARAMETERS: &'static [Parameter] = &[par("friction_scale", "-", 1.0, 0.3, 1.5)];
+    const SIGNATURE: &'static str =
+        "no change in the linear range, a lower limit: a ramp steer to the limit";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.75];
+    /// A scale on the campaign's road friction.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.friction_scale *= p[0];
+    }
+}
+
+impl Effect for RoadBank {
+    const NAME: &'static str = "road_bank";
+    const PARAMETERS: &'static [Parameter] = &[par("bank", "rad", 0.0, -0.15, 0.15)];
+    const SIGNATURE: &'static str =
+        "a constant drift present before any steer: a straight run in both directions of travel";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.03];
+    /// On top of the base model's own bank.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.road_bank += p[0];
+    }
+}
+
+impl Effect for CorneringStiffness {
+    const NAME: &'static str = "cornering_stiffness";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("front_scale", "-", 1.0, 0.4, 2.0),
+        par("rear_scale", "-", 1.0, 0.4, 2.0),
+    ];
+    const SIGNATURE: &'static str =
+        "a change of the linear gains at every speed and level: steps at two speeds";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.8, 1.0];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.cornering_stiffness_scale = [p[0], p[1]];
+    }
+}
+
+impl Effect for YawInertia {
+    const NAME: &'static str = "yaw_inertia";
+    const PARAMETERS: &'static [Parameter] = &[par("scale", "-", 1.0, 0.4, 2.5)];
+    const SIGNATURE: &'static str =
+        "yaw-rate transient only, same steady state: a frequency sweep (yaw-rate phase)";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[1.3];
+    /// A scale on the vehicle file's yaw inertia.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.yaw_inertia_scale *= p[0];
+    }
+}
+
+impl Effect for SensorDelay {
+    const NAME: &'static str = "sensor_delay";
+    const PARAMETERS: &'static [Parameter] = &[par("delay", "s", 0.0, 0.0, 0.3).floor()];
+    const SIGNATURE: &'static str = "a lag independent of speed and of frequency-dependent dynamics (phase ∝ frequency): a sweep at two speeds";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.05];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.sensors.delay = p[0];
+    }
+}
+
+impl Effect for SensorBias {
+    const NAME: &'static str = "sensor_bias";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("yaw_rate", "rad/s", 0.0, -0.05, 0.05),
+        par("ay", "m/s²", 0.0, -1.0, 1.0),
+        par("beta", "rad", 0.0, -0.05, 0.05),
+    ];
+    const SIGNATURE: &'static str = "a constant offset that does not depend on the vehicle's direction of travel: a straight run both ways";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.008, 0.2, 0.004];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.sensors.yaw_rate_bias = p[0];
+        e.sensors.ay_bias = p[1];
+        e.sensors.beta_bias = p[2];
+    }
+}
+
+impl Effect for AccelerometerRoll {
+    const NAME: &'static str = "accelerometer_roll";
+    const PARAMETERS: &'static [Parameter] =
+        &[par("roll_gradient", "rad/(m/s²)", 0.0, -0.03, 0.03)];
+    const SIGNATURE: &'static str = "lateral acceleration reads high by g·sin φ while the yaw rate agrees: compare ay with u·r in steady turns";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[PASSENGER_CAR_ROLL_GRADIENT];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.sensors.roll_gradient = p[0];
+    }
+}
+
+impl Effect for AccelerometerPosition {
+    const NAME: &'static str = "accelerometer_position";
+    const PARAMETERS: &'static [Parameter] = &[par("x", "m", 0.0, -2.5, 2.5)];
+    const SIGNATURE: &'static str =
+        "ay error proportional to yaw acceleration, none in steady state: a frequency sweep";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.8];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.sensors.accelerometer_x = p[0];
+    }
+}
+
+impl Effect for LongitudinalLoadTransfer {
+    const NAME: &'static str = "longitudinal_load_transfer";
+    const PARAMETERS: &'static [Parameter] = &[par("share", "-", 0.0, 0.0, 2.0).floor()];
+    const SIGNATURE: &'static str = "a balance change that follows braking and throttle, none at constant speed: steady turns braking and accelerating";
+    const NEEDS: Needs = Needs::LongitudinalAcceleration;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[1.0];
+    /// On top of the base model's own share.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.longitudinal_load_transfer += p[0];
+    }
+}
+
+impl Effect for CombinedSlip {
+    const NAME: &'static str = "combined_slip";
+    /// Off when the tyres carry none of m·ax (force_share 0): the lateral
+    /// forces are then the pure-slip ones exactly, whatever the split and
+    /// balance (whose off values, rear-wheel drive and 60 % of the braking
+    /// in front, are only starts). The share's upper bound is a search
+    /// bound (the tyres may carry more than m·ax: drag and rolling
+    /// resistance against the throttle, an ax logged low).
+    const PARAMETERS: &'static [Parameter] = &[
+        par("drive_front_share", "-", 0.0, 0.0, 1.0).share(),
+        par("brake_front_share", "-", 0.6, 0.0, 1.0).share(),
+        par("force_share", "-", 0.0, 0.0, 1.5).floor(),
+    ];
+    const SIGNATURE: &'static str = "grip lost in proportion to the longitudinal force, most near the limit: braking in a turn against coasting at one lateral acceleration";
+    const NEEDS: Needs = Needs::LongitudinalAcceleration;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.0, 0.65, 1.0];
+    /// In place of the base model's.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.combined_slip = Some(crate::vehicle::CombinedSlip {
+            drive_front_share: p[0],
+            brake_front_share: p[1],
+            force_share: p[2],
+        });
+    }
+}
+
+impl Effect for BankProfile {
+    const NAME: &'static str = "bank_profile";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("scale", "-", 0.0, -0.5, 2.0),
+        par("offset", "rad", 0.0, -0.2, 0.2),
+    ];
+    const SIGNATURE: &'static str = "a drift that follows the measured bank, not the steer: the same corner driven at two speeds";
+    const NEEDS: Needs = Needs::BankChannel;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[1.0, 0.0];
+    /// On top of the base model's scale and constant bank.
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.bank_profile_scale += p[0];
+        e.road_bank += p[1];
+    }
+}
+
+impl Effect for SteerPath {
+    const NAME: &'static str = "steer_path";
+    const PARAMETERS: &'static [Parameter] = &[
+        par("delay", "s", 0.0, 0.0, 0.5).floor(),
+        par("lag", "s", 0.0, 0.0, 0.5).floor(),
+    ];
+    const SIGNATURE: &'static str = "a lag in the steer input, not the sensors: the response to a steer step changes shape (first-order filtered) as well as time, while the responses without steer (to speed changes, to the bank, a sensor's offset) keep their timing; a sensor delay shifts every channel alike: a steer step, and a speed change on a straight";
+    const NEEDS: Needs = Needs::Nothing;
+    const USES_ROLL: bool = false;
+    const TRUTH: &'static [f64] = &[0.05, 0.15];
+    fn apply<T: Scalar>(p: &[T], e: &mut Effects<T>) {
+        e.steer_path = crate::vehicle::SteerPath {
+            delay: p[0],
+            lag: p[1],
+        };
+    }
+}

@@ -1,0 +1,181 @@
+//! How the typed outcome is written to `diagnosis.json`: every field a
+//! reader had keeps its name and its words ([`super::words`]), and the
+//! types are added beside them — `verdict.kind` with the case's details
+//! (`refused`, `no_tyre`, `warning_details`, …), `ranking[].warning_details`,
+//! `note_details`, `gap.findings`, `base.source`, `base.axles.no_tyre`.
+//! Units as in the report (SI, rad; J dimensionless; reductions in %).
+
+use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
+use crate::diagnose::base::TyreSource;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::report::outcome::{
+    GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
+};
+use crate::diagnose::report::{words, BaseReport, ParameterValue};
+use crate::identify::grouping::GroupingReport;
+use crate::tyre::Tyre;
+use serde::ser::{SerializeMap, Serializer};
+use serde::Serialize;
+
+/// The case-specific part of the verdict.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum Details<'a> {
+    Explained {
+        heldout_error_after: f64,
+        reduction_percent: f64,
+        partial: bool,
+        warning_details: &'a [VerdictWarning],
+    },
+    NoSignificantGap {
+        threshold: f64,
+    },
+    NotIdentifiable {
+        no_tyre: &'a [NoTyre],
+        threshold_percent: f64,
+    },
+    OutsideLibrary {
+        refused: Option<&'a Refused>,
+        threshold_percent: f64,
+    },
+}
+
+#[derive(Serialize)]
+struct VerdictJson<'a> {
+    effects: &'a [EffectKind],
+    parameters: &'a [ParameterValue],
+    statement: String,
+    warnings: Vec<String>,
+    kind: VerdictKind,
+    heldout_error: f64,
+    noise_level: f64,
+    #[serde(flatten)]
+    details: Details<'a>,
+}
+
+impl Serialize for Verdict {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (heldout_error, noise_level, details) = match self {
+            Verdict::Explained(e) => (
+                e.heldout_error_before,
+                e.noise_level,
+                Details::Explained {
+                    heldout_error_after: e.heldout_error_after,
+                    reduction_percent: e.reduction_percent,
+                    partial: e.partial(),
+                    warning_details: &e.warnings,
+                },
+            ),
+            Verdict::NoSignificantGap(n) => (
+                n.heldout_error,
+                n.noise_level,
+                Details::NoSignificantGap {
+                    threshold: n.threshold,
+                },
+            ),
+            Verdict::NotIdentifiable(n) => (
+                n.heldout_error,
+                n.noise_level,
+                Details::NotIdentifiable {
+                    no_tyre: &n.no_tyre,
+                    threshold_percent: n.threshold_percent,
+                },
+            ),
+            Verdict::OutsideLibrary(o) => (
+                o.heldout_error,
+                o.noise_level,
+                Details::OutsideLibrary {
+                    refused: o.refused.as_ref(),
+                    threshold_percent: o.threshold_percent,
+                },
+            ),
+        };
+        VerdictJson {
+            effects: self.effects(),
+            parameters: self.parameters(),
+            statement: words::statement(self),
+            warnings: words::verdict_warnings(self),
+            kind: self.kind(),
+            heldout_error,
+            noise_level,
+            details,
+        }
+        .serialize(s)
+    }
+}
+
+/// A ranked candidate's warnings: `warning` (one line, or null) and
+/// `warning_details`.
+pub(crate) fn rank_warnings<S: Serializer>(w: &[RankWarning], s: S) -> Result<S::Ok, S::Error> {
+    let mut m = s.serialize_map(Some(2))?;
+    m.serialize_entry("warning", &words::rank_warnings(w))?;
+    m.serialize_entry("warning_details", w)?;
+    m.end()
+}
+
+/// The notes: `notes` (sentences) and `note_details`.
+pub(crate) fn notes<S: Serializer>(n: &[Note], s: S) -> Result<S::Ok, S::Error> {
+    let mut m = s.serialize_map(Some(2))?;
+    let lines: Vec<String> = n.iter().map(words::note).collect();
+    m.serialize_entry("notes", &lines)?;
+    m.serialize_entry("note_details", n)?;
+    m.end()
+}
+
+/// Where the gap lies: `summary` (sentences) and `findings`.
+pub(crate) fn findings<S: Serializer>(f: &[GapFinding], s: S) -> Result<S::Ok, S::Error> {
+    let mut m = s.serialize_map(Some(2))?;
+    let lines: Vec<String> = f.iter().map(words::finding).collect();
+    m.serialize_entry("summary", &lines)?;
+    m.serialize_entry("findings", f)?;
+    m.end()
+}
+
+/// Confounded effects: `effects` and the `separating_test` their
+/// signatures give.
+pub(crate) fn confounded<S: Serializer>(e: &[EffectKind], s: S) -> Result<S::Ok, S::Error> {
+    let mut m = s.serialize_map(Some(2))?;
+    m.serialize_entry("effects", e)?;
+    m.serialize_entry("separating_test", &words::signatures(e))?;
+    m.end()
+}
+
+/// The axles identified from the runs, with `degenerate` (why they are no
+/// tyre, in words, or null) beside the typed `no_tyre`.
+#[derive(Serialize)]
+struct AxlesJson<'a> {
+    #[serde(flatten)]
+    id: &'a AxleIdentification,
+    degenerate: Option<String>,
+}
+
+fn axles(id: &AxleIdentification) -> AxlesJson<'_> {
+    AxlesJson {
+        id,
+        degenerate: id.degenerate().then(|| words::no_tyre_list(&id.no_tyre)),
+    }
+}
+
+#[derive(Serialize)]
+struct BaseJson<'a> {
+    tyres: String,
+    source: &'a TyreSource,
+    front: &'a Tyre,
+    rear: &'a Tyre,
+    rig_grouping: &'a Option<GroupingReport>,
+    axles: Option<AxlesJson<'a>>,
+}
+
+impl Serialize for BaseReport {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        BaseJson {
+            tyres: words::tyre_source(self),
+            source: &self.source,
+            front: &self.front,
+            rear: &self.rear,
+            rig_grouping: &self.rig_grouping,
+            axles: self.axles.as_ref().map(axles),
+        }
+        .serialize(s)
+    }
+}

@@ -1,0 +1,504 @@
+//! What the diagnosis concludes, typed: the verdict and its four cases,
+//! why a candidate was refused, the warnings on a candidate and on the
+//! verdict, the notes on the inputs and the findings on where the gap
+//! lies. The sentences are made from these at the edge ([`super::words`]:
+//! the terminal, `diagnosis.json`'s strings, the page, the fleet table and
+//! Python read them from there); no rule reads a sentence.
+//!
+//! One rule lives here because the page and the verdict's warnings both
+//! read it: what the verdict's effects did to a channel's held-out gap
+//! ([`Shrinkage::change`]).
+//!
+//! Units: held-out errors J dimensionless (residuals over channel scales),
+//! reductions in percent, RMS values in the channel's unit (rad/s, m/s²,
+//! rad).
+
+use crate::diagnose::base::identify::NoTyre;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::parts::Part;
+use crate::diagnose::report::{ParameterValue, Shrinkage};
+use serde::{Deserialize, Serialize};
+
+/// Which case a verdict is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum VerdictKind {
+    /// Effects of the library explain the gap (all of it, or part).
+    Explained,
+    /// The base model's held-out error is within noise.
+    NoSignificantGap,
+    /// The base model is no tyre and no candidate makes it one.
+    NotIdentifiable,
+    /// A gap no candidate of the library is accepted for.
+    OutsideLibrary,
+}
+
+impl VerdictKind {
+    /// Every case.
+    pub const ALL: [VerdictKind; 4] = [
+        VerdictKind::Explained,
+        VerdictKind::NoSignificantGap,
+        VerdictKind::NotIdentifiable,
+        VerdictKind::OutsideLibrary,
+    ];
+
+    /// Its name in reports (`verdict.kind` in `diagnosis.json`).
+    pub fn name(self) -> &'static str {
+        match self {
+            VerdictKind::Explained => "explained",
+            VerdictKind::NoSignificantGap => "no_significant_gap",
+            VerdictKind::NotIdentifiable => "not_identifiable",
+            VerdictKind::OutsideLibrary => "outside_library",
+        }
+    }
+}
+
+/// What the diagnosis concludes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Verdict {
+    /// Effects explain the gap.
+    Explained(Explained),
+    /// No gap above noise.
+    NoSignificantGap(NoSignificantGap),
+    /// The base model is not identifiable from the runs.
+    NotIdentifiable(NotIdentifiable),
+    /// A model-form error outside the library.
+    OutsideLibrary(OutsideLibrary),
+}
+
+impl Verdict {
+    /// Its case.
+    pub fn kind(&self) -> VerdictKind {
+        match self {
+            Verdict::Explained(_) => VerdictKind::Explained,
+            Verdict::NoSignificantGap(_) => VerdictKind::NoSignificantGap,
+            Verdict::NotIdentifiable(_) => VerdictKind::NotIdentifiable,
+            Verdict::OutsideLibrary(_) => VerdictKind::OutsideLibrary,
+        }
+    }
+
+    /// The effects the evidence supports (empty unless explained).
+    pub fn effects(&self) -> &[EffectKind] {
+        match self {
+            Verdict::Explained(e) => &e.effects,
+            _ => &[],
+        }
+    }
+
+    /// Their fitted parameters.
+    pub fn parameters(&self) -> &[ParameterValue] {
+        match self {
+            Verdict::Explained(e) => &e.parameters,
+            _ => &[],
+        }
+    }
+
+    /// Its warnings (an explained verdict's).
+    pub fn warnings(&self) -> &[VerdictWarning] {
+        match self {
+            Verdict::Explained(e) => &e.warnings,
+            _ => &[],
+        }
+    }
+
+    /// The verdict in one sentence ([`super::words::statement`]).
+    pub fn statement(&self) -> String {
+        super::words::statement(self)
+    }
+}
+
+/// Below this held-out reduction (%) an accepted set explains only part
+/// of the gap, and the verdict says what share it leaves.
+pub const EXPLAINS_MOST: f64 = 50.0;
+
+/// Effects that explain the gap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Explained {
+    /// The effects.
+    pub effects: Vec<EffectKind>,
+    /// Their parameters.
+    pub parameters: Vec<ParameterValue>,
+    /// Held-out J of the base model.
+    pub heldout_error_before: f64,
+    /// Held-out J with the effects.
+    pub heldout_error_after: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// Share of the held-out gap above noise removed, %.
+    pub reduction_percent: f64,
+    /// What the verdict's effects leave worse, and a base that is no tyre.
+    pub warnings: Vec<VerdictWarning>,
+}
+
+impl Explained {
+    /// Whether the effects explain only part of the gap (below
+    /// [`EXPLAINS_MOST`]).
+    pub fn partial(&self) -> bool {
+        self.reduction_percent < EXPLAINS_MOST
+    }
+}
+
+/// A held-out error within noise.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct NoSignificantGap {
+    /// Held-out J of the base model.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// The multiple of the noise level a gap must exceed.
+    pub threshold: f64,
+}
+
+/// A base model that is no tyre, and no candidate that makes it one.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct NotIdentifiable {
+    /// Held-out J of the base model.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// Why the base's axles are no tyre.
+    pub no_tyre: Vec<NoTyre>,
+    /// The share of the gap a candidate must remove, %.
+    pub threshold_percent: f64,
+}
+
+/// A gap no candidate of the library is accepted for.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OutsideLibrary {
+    /// Held-out J of the base model.
+    pub heldout_error: f64,
+    /// J of the noise alone.
+    pub noise_level: f64,
+    /// The best single candidate on held-out runs and why it was refused
+    /// (None without any).
+    pub refused: Option<Refused>,
+    /// The share of the gap a candidate must remove, %.
+    pub threshold_percent: f64,
+}
+
+/// A candidate that is not the verdict, and why.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Refused {
+    /// Its effects.
+    pub effects: Vec<EffectKind>,
+    /// Share of the held-out gap above noise it removes, %.
+    pub reduction_percent: f64,
+    /// The rules it fails (every one; empty only where nothing is known).
+    pub why: Vec<Refusal>,
+}
+
+/// A rule a candidate fails.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Refusal {
+    /// It removes less than the acceptance share.
+    BelowAcceptance {
+        /// The acceptance share, %.
+        threshold_percent: f64,
+    },
+    /// Its BIC is not lower than the base model's.
+    BicNotLower {
+        /// Its BIC minus the base's.
+        delta_bic: f64,
+    },
+    /// Fitted with it, the axles are no tyre.
+    AxlesNoTyre {
+        /// Why.
+        no_tyre: Vec<NoTyre>,
+    },
+    /// It leaves a parameter idle: a simpler candidate within the
+    /// parsimony margin was taken in its place, and refused.
+    LeavesParameterIdle {
+        /// The simpler candidate.
+        simpler: Box<Refused>,
+    },
+    /// It passes, but the search from it ended on a set that was refused.
+    SearchEndedOn {
+        /// The set.
+        set: Box<Refused>,
+    },
+}
+
+/// A warning on an explained verdict.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum VerdictWarning {
+    /// A channel the verdict's effects leave worse on held-out runs.
+    ChannelWorsened(ChannelWorsened),
+    /// The base model alone is no tyre; with the verdict's effects the
+    /// axles are one.
+    BaseNoTyre {
+        /// Why the base alone is not.
+        no_tyre: Vec<NoTyre>,
+    },
+}
+
+/// A channel's held-out gap that the verdict's effects make larger.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelWorsened {
+    /// The channel.
+    pub channel: Channel,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
+    /// The channel's noise floor.
+    pub noise_floor: f64,
+    /// Share of the gap above noise added, %.
+    pub added_percent: f64,
+}
+
+/// A warning on a ranked candidate.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum RankWarning {
+    /// Its fit on all runs removes far more of the gap than it does on
+    /// held-out runs.
+    Disagreement {
+        /// In-sample reduction, %.
+        insample_percent: f64,
+        /// Held-out reduction, %.
+        heldout_percent: f64,
+    },
+    /// Fitted with it, the axles are no tyre: it cannot be a verdict.
+    AxlesNoTyre {
+        /// Why.
+        no_tyre: Vec<NoTyre>,
+    },
+    /// Fold refits that did not converge.
+    FoldsNotConverged {
+        /// Folds that did not.
+        failed: usize,
+        /// Folds refitted.
+        folds: usize,
+    },
+}
+
+/// A note on the inputs.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Note {
+    /// A note of the campaign reader (a file it left out, a steer that
+    /// looks too small), in its own words.
+    Campaign {
+        /// The note.
+        text: String,
+    },
+    /// An effect the runs cannot show, left out of the candidates.
+    NotACandidate {
+        /// The effect.
+        effect: EffectKind,
+        /// What the runs lack.
+        lacks: Unseen,
+    },
+    /// Runs with a bank channel but neither sideslip nor ay, on axles
+    /// identified from the runs: the bank shows only in the yaw rate.
+    BankOnlyInYawRate {
+        /// Such runs.
+        runs: usize,
+        /// All runs.
+        of: usize,
+    },
+    /// Runs the base model is too stiff to replay by RK4 at the step,
+    /// replayed by ROS34PW2.
+    StiffReplay {
+        /// The replay step, s.
+        step: f64,
+        /// Such runs.
+        runs: usize,
+        /// All runs.
+        of: usize,
+    },
+}
+
+/// What runs lack for an effect to show in them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Unseen {
+    /// A longitudinal acceleration above `threshold` (m/s²).
+    LongitudinalAcceleration {
+        /// m/s².
+        threshold: f64,
+    },
+    /// A bank channel.
+    BankChannel,
+}
+
+/// A finding on where the base model's gap lies.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum GapFinding {
+    /// The held-out error against the noise level.
+    Overall {
+        /// A gap above noise.
+        significant: bool,
+        /// Held-out J of the base model.
+        heldout_error: f64,
+        /// J of the noise alone.
+        noise_level: f64,
+    },
+    /// One channel over all runs.
+    Channel {
+        /// The channel.
+        channel: Channel,
+        /// Held-out RMS, all samples.
+        rms: f64,
+        /// Noise floor.
+        noise_floor: f64,
+        /// Runs in which its gap is significant.
+        significant_runs: usize,
+        /// Runs.
+        runs: usize,
+        /// Parts (windows, regimes) above three noise floors, with their RMS.
+        wrong: Vec<(Part, f64)>,
+        /// Parts within three noise floors.
+        right: Vec<Part>,
+    },
+    /// A frequency band whose yaw-rate response is off in a run.
+    Band {
+        /// The run.
+        run: String,
+        /// Band, Hz.
+        f_low: f64,
+        /// Band, Hz.
+        f_high: f64,
+        /// Gain error, dB.
+        gain_error_db: f64,
+        /// Phase error, degrees.
+        phase_error_deg: f64,
+    },
+    /// Runs without an ay channel: their |ay| levels are u·r.
+    WithoutAy {
+        /// Such runs.
+        runs: usize,
+        /// All runs.
+        of: usize,
+    },
+}
+
+/// A channel's held-out RMS is above noise beyond this many noise floors
+/// (the gap's rule per run, the gap summary's, the page's and the
+/// verdict's warnings').
+pub const SIGNIFICANT_NOISE_FLOORS: f64 = 3.0;
+
+/// A channel's gap above noise grown by more than this share (%) under
+/// the verdict's effects, to an RMS above noise, is a worsening: beyond
+/// the scatter of held-out scores, and the combined error that accepted
+/// them does not show it.
+pub const WORSENED: f64 = 10.0;
+
+/// Whether an RMS `rms` stands above a noise floor `noise_floor`: beyond
+/// [`SIGNIFICANT_NOISE_FLOORS`] of it.
+pub fn above_noise(rms: f64, noise_floor: f64) -> bool {
+    rms > SIGNIFICANT_NOISE_FLOORS * noise_floor
+}
+
+/// What the verdict's effects did to a channel's held-out gap.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ChannelChange {
+    /// Before and after within noise: nothing to reduce, nothing made
+    /// worse (a share of a gap within noise is noise).
+    WithinNoise,
+    /// The gap changed by this share (%, negative: grew), not a
+    /// worsening.
+    Changed(f64),
+    /// A worsening: the gap above noise grew by this share (%) to an RMS
+    /// above noise.
+    Worsened(f64),
+}
+
+impl Shrinkage {
+    /// What the verdict's effects did to this part's gap: within noise
+    /// where neither RMS is [`above_noise`]; a worsening where the RMS
+    /// after is above noise, larger than before, and its gap above noise
+    /// grew by more than [`WORSENED`]; else the change.
+    pub fn change(&self) -> ChannelChange {
+        let (before, after) = (
+            above_noise(self.before, self.noise_floor),
+            above_noise(self.after, self.noise_floor),
+        );
+        if !before && !after {
+            ChannelChange::WithinNoise
+        } else if after && self.after > self.before && self.reduction_percent < -WORSENED {
+            ChannelChange::Worsened(-self.reduction_percent)
+        } else {
+            ChannelChange::Changed(self.reduction_percent)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(before: f64, after: f64, noise_floor: f64) -> Shrinkage {
+        Shrinkage {
+            channel: Channel::Beta,
+            part: Part::All,
+            samples: 100,
+            before,
+            after,
+            noise_floor,
+            reduction_percent: crate::diagnose::model::channels::reduction(
+                before,
+                after,
+                noise_floor,
+            ),
+        }
+    }
+
+    #[test]
+    fn a_change_within_noise_is_no_worsening() {
+        // The blind campaign's sideslip: 0.0021 → 0.0022 rad on a floor of
+        // 0.0020 adds 43 % to a gap that is noise: within noise.
+        let r = row(0.0021, 0.0022, 0.0020);
+        assert!(r.reduction_percent < -40.0, "{}", r.reduction_percent);
+        assert_eq!(r.change(), ChannelChange::WithinNoise);
+        // Three noise floors is the line, on either side of the change.
+        assert_eq!(
+            row(0.0059, 0.0060, 0.002).change(),
+            ChannelChange::WithinNoise
+        );
+        assert!(matches!(
+            row(0.0059, 0.0061, 0.002).change(),
+            ChannelChange::Changed(_)
+        ));
+    }
+
+    #[test]
+    fn a_gap_above_noise_grown_by_more_than_ten_percent_is_a_worsening() {
+        // Gap above noise sqrt(after² − nf²): from 4 to 4.4 noise floors
+        // (+10 %) and to 4.41 (just over).
+        let nf = 1.0;
+        let rms = |g: f64| (g * g + nf * nf).sqrt();
+        let at = |g_after: f64| row(rms(4.0), rms(g_after), nf).change();
+        assert!(matches!(at(4.39), ChannelChange::Changed(p) if (p + 9.75).abs() < 1e-9));
+        assert!(matches!(at(4.41), ChannelChange::Worsened(p) if (p - 10.25).abs() < 1e-9));
+        // A channel within noise before and well above it after is worse.
+        assert!(matches!(
+            row(1.5, 5.0, 1.0).change(),
+            ChannelChange::Worsened(_)
+        ));
+        // A reduction is a change, whatever its size.
+        assert!(matches!(
+            row(5.0, 1.0, 1.0).change(),
+            ChannelChange::Changed(p) if p == 100.0
+        ));
+    }
+
+    #[test]
+    fn an_accepted_set_explains_part_of_the_gap_below_half_of_it() {
+        let e = |reduction_percent| Explained {
+            effects: vec![EffectKind::SensorDelay],
+            parameters: Vec::new(),
+            heldout_error_before: 3.0,
+            heldout_error_after: 2.0,
+            noise_level: 1.0,
+            reduction_percent,
+            warnings: Vec::new(),
+        };
+        assert!(e(49.9).partial());
+        assert!(!e(50.0).partial());
+    }
+}

@@ -1,0 +1,459 @@
+//! The diagnosis in words: every sentence the terminal, `diagnosis.json`'s
+//! strings (`verdict.statement`, `verdict.warnings`, `ranking[].warning`,
+//! `notes`, `gap.summary`, `base.tyres`, `base.axles.degenerate`,
+//! `confounded[].separating_test`), the page, the fleet table and Python
+//! show is made here from the typed outcome ([`super::outcome`]); nothing
+//! else words them, and no rule reads them.
+//!
+//! Values keep their units (SI, rad; slip angles of a peak in degrees, as
+//! tyre engineers read them); J is dimensionless, reductions in percent.
+
+use crate::diagnose::base::identify::{
+    AxleIdentification, AxleLimit, NoTyre, PEAK_SLIP_MIN, SHAPE,
+};
+use crate::diagnose::base::TyreSource;
+use crate::diagnose::effects::{joined, Bound, EffectKind};
+use crate::diagnose::report::outcome::{
+    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
+    Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+};
+use crate::diagnose::report::{BaseReport, Confounded, ParameterValue, Shrinkage};
+
+/// The verdict in one sentence.
+pub fn statement(v: &Verdict) -> String {
+    match v {
+        Verdict::Explained(e) => {
+            let head = format!(
+                "{} explains {}the gap: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
+                joined(&e.effects, "+"),
+                if e.partial() { "part of " } else { "" },
+                e.heldout_error_before,
+                e.heldout_error_after,
+                e.noise_level,
+                e.reduction_percent
+            );
+            if e.partial() {
+                format!(
+                    "{head}; the other {:.1} % no candidate explains",
+                    100.0 - e.reduction_percent
+                )
+            } else {
+                head
+            }
+        }
+        Verdict::NoSignificantGap(n) => format!(
+            "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
+            n.heldout_error, n.threshold, n.noise_level
+        ),
+        Verdict::NotIdentifiable(n) => not_identifiable(n),
+        Verdict::OutsideLibrary(o) => outside(o),
+    }
+}
+
+fn not_identifiable(n: &NotIdentifiable) -> String {
+    format!(
+        "the base model is not identifiable from these runs: {}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {:.3}, noise level {:.3}), so there is no model-form verdict",
+        no_tyre_list(&n.no_tyre),
+        n.threshold_percent,
+        n.heldout_error,
+        n.noise_level
+    )
+}
+
+/// A gap no candidate is accepted for. Where the best removes less than
+/// the acceptance share and fails nothing else, no candidate explains it:
+/// a model-form error outside the library. Where it fails another rule,
+/// the sentence says which, and never that nothing explains the gap.
+fn outside(o: &OutsideLibrary) -> String {
+    let gap = format!(
+        "a gap (held-out error {:.3}, noise level {:.3})",
+        o.heldout_error, o.noise_level
+    );
+    let Some(best) = &o.refused else {
+        return format!("{gap} that no candidate effect explains: no candidate was scored — a model-form error outside the library");
+    };
+    let name = joined(&best.effects, "+");
+    if let [Refusal::BelowAcceptance { threshold_percent }] = best.why[..] {
+        return format!(
+            "{gap} that no candidate effect explains: the best, {name}, removes {:.1} % of it (acceptance needs {threshold_percent:.0} %) — a model-form error outside the library",
+            best.reduction_percent
+        );
+    }
+    format!(
+        "{gap} for which no candidate effect is accepted: the best, {name}, removes {:.1} % of it (acceptance needs {:.0} %) but is refused: {} — no verdict from the library",
+        best.reduction_percent,
+        o.threshold_percent,
+        refusals(best)
+    )
+}
+
+/// Why a candidate is refused: its failed rules joined by "; ".
+pub fn refusals(r: &Refused) -> String {
+    let why: Vec<String> = r.why.iter().map(refusal).collect();
+    if why.is_empty() {
+        "not accepted by the search".into()
+    } else {
+        why.join("; ")
+    }
+}
+
+/// One failed rule.
+pub fn refusal(r: &Refusal) -> String {
+    let other = |x: &Refused| {
+        format!(
+            "{}, which removes {:.1} % and is refused: {}",
+            joined(&x.effects, "+"),
+            x.reduction_percent,
+            refusals(x)
+        )
+    };
+    match r {
+        Refusal::BelowAcceptance { threshold_percent } => {
+            format!("it removes less than the {threshold_percent:.0} % acceptance needs")
+        }
+        Refusal::BicNotLower { delta_bic } => {
+            format!("its BIC is not lower than the base model's (ΔBIC {delta_bic:+.0})")
+        }
+        Refusal::AxlesNoTyre { no_tyre } => format!(
+            "fitted with it, the axles are no tyre ({})",
+            no_tyre_list(no_tyre)
+        ),
+        Refusal::LeavesParameterIdle { simpler } => format!(
+            "it leaves a parameter idle, and the simpler candidate that does as well was taken in its place: {}",
+            other(simpler)
+        ),
+        Refusal::SearchEndedOn { set } => {
+            format!("the search from it ended on {}", other(set))
+        }
+    }
+}
+
+/// The verdict's warnings, one sentence each.
+pub fn verdict_warnings(v: &Verdict) -> Vec<String> {
+    match v {
+        Verdict::Explained(e) => e.warnings.iter().map(verdict_warning).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// One warning on the verdict.
+pub fn verdict_warning(w: &VerdictWarning) -> String {
+    match w {
+        VerdictWarning::ChannelWorsened(c) => format!(
+            "it leaves the {} gap larger on held-out runs: RMS {:.4} → {:.4} {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
+            c.channel.name(),
+            c.before,
+            c.after,
+            c.channel.unit(),
+            c.noise_floor,
+            c.added_percent
+        ),
+        VerdictWarning::BaseNoTyre { no_tyre } => format!(
+            "the base model alone is no tyre ({}); the reductions are measured against it, and with the verdict's effects the axles are a tyre",
+            no_tyre_list(no_tyre)
+        ),
+    }
+}
+
+/// A channel's held-out gap within noise before and after the verdict's
+/// effects ([`crate::diagnose::report::Shrinkage::change`]): no share of
+/// it is said.
+pub fn within_noise() -> String {
+    format!("not significant (within {SIGNIFICANT_NOISE_FLOORS} noise floors)")
+}
+
+/// One channel before and after the verdict's effects on held-out runs
+/// (all samples), as the terminal lists it.
+pub fn channel_change(s: &Shrinkage) -> String {
+    let what = match s.change() {
+        ChannelChange::WithinNoise => within_noise(),
+        ChannelChange::Changed(p) => format!("{p:.0} % of the gap above noise removed"),
+        ChannelChange::Worsened(p) => format!("{p:.0} % of the gap above noise added"),
+    };
+    format!(
+        "{:<9} {:.4} → {:.4} (noise floor {:.4}): {what}",
+        s.channel.name(),
+        s.before,
+        s.after,
+        s.noise_floor
+    )
+}
+
+/// A ranked candidate's warnings in one line (None without any).
+pub fn rank_warnings(w: &[RankWarning]) -> Option<String> {
+    let lines: Vec<String> = w.iter().map(rank_warning).collect();
+    (!lines.is_empty()).then(|| lines.join("; "))
+}
+
+/// One warning on a ranked candidate.
+pub fn rank_warning(w: &RankWarning) -> String {
+    match w {
+        RankWarning::Disagreement {
+            insample_percent,
+            heldout_percent,
+        } => format!(
+            "the fit on all runs removes {insample_percent:.0} % of the gap but only {heldout_percent:.0} % on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
+        ),
+        RankWarning::AxlesNoTyre { no_tyre } => format!(
+            "fitted with it, the axles are no tyre ({}): it cannot be a verdict",
+            no_tyre_list(no_tyre)
+        ),
+        RankWarning::FoldsNotConverged { failed, folds } => {
+            format!("{failed} of {folds} fold refits did not converge")
+        }
+    }
+}
+
+/// Reasons axles are no tyre, joined by "; ".
+pub fn no_tyre_list(reasons: &[NoTyre]) -> String {
+    reasons.iter().map(no_tyre).collect::<Vec<_>>().join("; ")
+}
+
+/// One reason axles are no tyre.
+pub fn no_tyre(r: &NoTyre) -> String {
+    match r {
+        NoTyre::Limit { parameter, limit } => limit_meaning(*limit, parameter),
+        NoTyre::EarlyPeak {
+            axle,
+            peak_slip,
+            coefficient_over_friction,
+        } => format!(
+            "the {} axle peaks at {:.2}° of slip (cornering coefficient over peak friction {:.0} 1/rad; no tyre peaks before {:.0}°): the data pull it to saturate early",
+            axle.name(),
+            peak_slip.to_degrees(),
+            coefficient_over_friction,
+            PEAK_SLIP_MIN.to_degrees()
+        ),
+    }
+}
+
+/// What an axle characteristic on a limit means, and which way the data
+/// pull, for the characteristic named `name`.
+pub fn limit_meaning(limit: AxleLimit, name: &str) -> String {
+    match limit {
+        AxleLimit::NoForce => format!(
+            "{name} at its physical limit 0.4 1/rad (an axle without cornering force; no tyre is that soft): the data pull it lower"
+        ),
+        AxleLimit::Rigid => format!(
+            "{name} at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher"
+        ),
+        AxleLimit::NoGrip => format!(
+            "{name} at its physical limit 0.11 (a road without grip): the data pull it lower"
+        ),
+        AxleLimit::Linear => format!(
+            "{name} at the top of its range (9): a tyre that never saturates on these runs, which stay in its linear range and do not identify it"
+        ),
+    }
+}
+
+/// The axles identified from the runs in one line.
+pub fn axles_line(id: &AxleIdentification) -> String {
+    let values: Vec<String> = id
+        .parameters
+        .iter()
+        .map(|v| {
+            let digits = if v.unit == "-" { 3 } else { 1 };
+            match v.limit {
+                Some(l) => limit_meaning(l, v.name).replacen(
+                    v.name,
+                    &format!("{} {:.digits$}", v.name, v.value),
+                    1,
+                ),
+                None if v.std_error.is_finite() => {
+                    // ± 5.1, not ± 5.1e0; ± 2.7e-4 where it is small.
+                    let se = if v.std_error >= 0.1 {
+                        format!("{:.1}", v.std_error)
+                    } else {
+                        format!("{:.1e}", v.std_error)
+                    };
+                    format!("{} {:.digits$} ± {se} {}", v.name, v.value, v.unit)
+                }
+                None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
+            }
+        })
+        .collect();
+    let mut s = format!(
+        "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; cornering coefficient = cornering stiffness per unit load; best of {} starts from a grid; refitted with every candidate): {}",
+        id.starts,
+        values.join(", ")
+    );
+    if let Some((a, b, rho)) = &id.largest_correlation {
+        s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
+    }
+    if id.degenerate() {
+        s.push_str(&format!("; no tyre: {}", no_tyre_list(&id.no_tyre)));
+    }
+    s
+}
+
+/// Where the base model's tyres come from, in one line.
+pub fn tyre_source(b: &BaseReport) -> String {
+    match (&b.source, &b.axles) {
+        (TyreSource::Given, _) => "given tyre files".into(),
+        (
+            TyreSource::Rig {
+                model,
+                path,
+                sigma_percent,
+            },
+            _,
+        ) => format!(
+            "{model} fitted to the rig data {} (σ {sigma_percent:.2} % of the force)",
+            path.display()
+        ),
+        (TyreSource::FromRuns, Some(id)) => format!("no tyre data: {}", axles_line(id)),
+        (TyreSource::FromRuns, None) => "no tyre data".into(),
+    }
+}
+
+/// A note on the inputs.
+pub fn note(n: &Note) -> String {
+    match n {
+        Note::Campaign { text } => text.clone(),
+        Note::NotACandidate { effect, lacks } => {
+            let why = match lacks {
+                Unseen::LongitudinalAcceleration { threshold } => format!(
+                    "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
+                ),
+                Unseen::BankChannel => "no run has a bank channel".into(),
+            };
+            format!("{}: not a candidate: {why}", effect.name())
+        }
+        Note::BankOnlyInYawRate { runs, of } => format!(
+            "bank_profile: {runs} of {of} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them"
+        ),
+        Note::StiffReplay { step, runs, of } => format!(
+            "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
+        ),
+    }
+}
+
+/// A finding on where the gap lies.
+pub fn finding(f: &GapFinding) -> String {
+    let listed = |v: Vec<String>| {
+        if v.is_empty() {
+            "nowhere".to_string()
+        } else {
+            v.join(", ")
+        }
+    };
+    match f {
+        GapFinding::Overall {
+            significant,
+            heldout_error,
+            noise_level,
+        } => format!(
+            "held-out error {heldout_error:.3} against a noise level of {noise_level:.3}: {}",
+            if *significant {
+                "the base model has a significant gap"
+            } else {
+                "no significant gap"
+            }
+        ),
+        GapFinding::Channel {
+            channel,
+            rms,
+            noise_floor,
+            significant_runs,
+            runs,
+            wrong,
+            right,
+        } => format!(
+            "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs; wrong in: {}; right in: {}",
+            channel.name(),
+            channel.unit(),
+            listed(
+                wrong
+                    .iter()
+                    .map(|(p, rms)| format!("{p} ({rms:.3} {})", channel.unit()))
+                    .collect()
+            ),
+            listed(right.iter().map(|p| p.label()).collect()),
+        ),
+        GapFinding::Band {
+            run,
+            f_low,
+            f_high,
+            gain_error_db,
+            phase_error_deg,
+        } => format!(
+            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {gain_error_db:+.1} dB, {phase_error_deg:+.0}°"
+        ),
+        GapFinding::WithoutAy { runs, of } => {
+            format!("|ay| levels are u·r on the {runs} of {of} runs without an ay channel")
+        }
+    }
+}
+
+/// The experiment that separates confounded effects: each one's
+/// signature.
+pub fn separating_test(c: &Confounded) -> String {
+    signatures(&c.effects)
+}
+
+/// Each effect's signature, as `name: signature` joined by "; ".
+pub fn signatures(effects: &[EffectKind]) -> String {
+    effects
+        .iter()
+        .map(|e| format!("{}: {}", e.name(), e.signature()))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// A fitted parameter in words: its value, unit and standard error; or
+/// the bound it stands on — a search bound (the data would take it
+/// further) or a physical limit (a length, a share, a load that would be
+/// negative beyond it); or, where the standard error is missing or larger
+/// than the parameter's whole range, that the runs do not determine it. A
+/// steering compliance, fitted in rad/kN, is given in rad/N too: the unit
+/// of `steering_compliance` in a scenario's `[model.effects]`.
+pub fn parameter(p: &ParameterValue) -> String {
+    let unit = if p.unit == "rad/kN" {
+        format!("rad/kN ({} rad/N)", value(p.value * 1e-3))
+    } else {
+        p.unit.to_string()
+    };
+    let v = value(p.value);
+    let Some(bound) = p.bound else {
+        return if p.determined {
+            format!("{} = {v} ± {:.2e} {unit}", p.name, p.std_error)
+        } else if p.std_error.is_finite() {
+            format!(
+                "{} = {v} {unit} (not determined by the runs: its standard error {:.2e} exceeds its whole range)",
+                p.name, p.std_error
+            )
+        } else {
+            // No standard error: the runs cannot see it (a channel they
+            // lack, a parameter pinned by another).
+            format!(
+                "{} = {v} {unit} (no standard error: not determined by the runs)",
+                p.name
+            )
+        };
+    };
+    let why = match bound {
+        Bound::Search => "at its search bound: the data would take it further",
+        // Every lower physical limit is 0 (a length, a delay, a share, a
+        // down-force); the upper ones are a share's 1: a value on one is
+        // within a hair of 0 or of 1.
+        Bound::Physical if p.value < 0.5 => {
+            "at its physical limit: any smaller value would be negative"
+        }
+        Bound::Physical => "at its physical limit: a share cannot exceed 1",
+    };
+    format!("{} = {v} {unit} ({why})", p.name)
+}
+
+/// A fitted value: below 0.01 to four significant digits (a steering
+/// compliance of 8.9e-5 rad/kN printed as 0.0001 would hide what was
+/// fitted), else to four decimals.
+pub fn value(v: f64) -> String {
+    if v != 0.0 && v.abs() < 0.01 {
+        format!("{v:.3e}")
+    } else {
+        format!("{v:.4}")
+    }
+}
+
+#[cfg(test)]
+mod tests;

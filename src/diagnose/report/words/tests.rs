@@ -1,0 +1,297 @@
+//! The words made from the typed outcome: the sentences readers and tests
+//! match, and what a sentence may not say.
+
+use super::*;
+use crate::diagnose::base::identify::{Axle, AxleLimit};
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
+
+fn explained(reduction_percent: f64) -> Verdict {
+    Verdict::Explained(Explained {
+        effects: vec![EffectKind::SensorDelay, EffectKind::RelaxationLength],
+        parameters: Vec::new(),
+        heldout_error_before: 3.628,
+        heldout_error_after: 1.073,
+        noise_level: 0.941,
+        reduction_percent,
+        warnings: Vec::new(),
+    })
+}
+
+#[test]
+fn an_explained_verdict_says_how_much_and_whether_part() {
+    assert_eq!(
+        statement(&explained(85.3)),
+        "sensor_delay+relaxation_length explains the gap: held-out error 3.628 → 1.073 (noise level 0.941), 85.3 % of the gap above noise removed"
+    );
+    assert_eq!(
+        statement(&explained(42.0)),
+        "sensor_delay+relaxation_length explains part of the gap: held-out error 3.628 → 1.073 (noise level 0.941), 42.0 % of the gap above noise removed; the other 58.0 % no candidate explains"
+    );
+}
+
+#[test]
+fn no_gap_names_its_threshold() {
+    let v = Verdict::NoSignificantGap(NoSignificantGap {
+        heldout_error: 1.05,
+        noise_level: 0.95,
+        threshold: 1.3,
+    });
+    assert_eq!(
+        statement(&v),
+        "no significant gap: held-out error 1.050 is within 1.3 × the noise level 0.950"
+    );
+    assert_eq!(v.kind().name(), "no_significant_gap");
+}
+
+fn peak() -> NoTyre {
+    NoTyre::EarlyPeak {
+        axle: Axle::Rear,
+        peak_slip: 1.81f64.to_radians(),
+        coefficient_over_friction: 44.0,
+    }
+}
+
+fn outside(reduction_percent: f64, why: Vec<Refusal>) -> Verdict {
+    Verdict::OutsideLibrary(OutsideLibrary {
+        heldout_error: 2.5,
+        noise_level: 1.0,
+        refused: Some(Refused {
+            effects: vec![EffectKind::SensorBias],
+            reduction_percent,
+            why,
+        }),
+        threshold_percent: 30.0,
+    })
+}
+
+#[test]
+fn a_best_below_acceptance_is_a_model_form_error_outside_the_library() {
+    let v = outside(
+        12.4,
+        vec![Refusal::BelowAcceptance {
+            threshold_percent: 30.0,
+        }],
+    );
+    assert_eq!(
+        statement(&v),
+        "a gap (held-out error 2.500, noise level 1.000) that no candidate effect explains: the best, sensor_bias, removes 12.4 % of it (acceptance needs 30 %) — a model-form error outside the library"
+    );
+}
+
+#[test]
+fn no_sentence_claims_a_removal_above_acceptance_and_that_nothing_explains_the_gap() {
+    // The sedan: sensor_bias removes 53.5 %, its axles are no tyre.
+    let v = outside(
+        53.5,
+        vec![Refusal::AxlesNoTyre {
+            no_tyre: vec![peak()],
+        }],
+    );
+    let s = statement(&v);
+    assert_eq!(
+        s,
+        "a gap (held-out error 2.500, noise level 1.000) for which no candidate effect is accepted: the best, sensor_bias, removes 53.5 % of it (acceptance needs 30 %) but is refused: fitted with it, the axles are no tyre (the rear axle peaks at 1.81° of slip (cornering coefficient over peak friction 44 1/rad; no tyre peaks before 2°): the data pull it to saturate early) — no verdict from the library"
+    );
+    // Every refusal that is not the share alone.
+    let simpler = Refused {
+        effects: vec![EffectKind::SensorDelay],
+        reduction_percent: 25.0,
+        why: vec![Refusal::BelowAcceptance {
+            threshold_percent: 30.0,
+        }],
+    };
+    for why in [
+        Refusal::BicNotLower { delta_bic: 4.0 },
+        Refusal::LeavesParameterIdle {
+            simpler: Box::new(simpler.clone()),
+        },
+        Refusal::SearchEndedOn {
+            set: Box::new(simpler),
+        },
+    ] {
+        let s = statement(&outside(53.5, vec![why]));
+        assert!(!s.contains("no candidate effect explains"), "{s}");
+        assert!(s.contains("removes 53.5 % of it"), "{s}");
+        assert!(s.contains("is refused: "), "{s}");
+    }
+}
+
+#[test]
+fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
+    let v = Verdict::NotIdentifiable(crate::diagnose::report::NotIdentifiable {
+        heldout_error: 4.0,
+        noise_level: 1.0,
+        no_tyre: vec![
+            NoTyre::Limit {
+                parameter: "rear cornering coefficient",
+                limit: AxleLimit::Rigid,
+            },
+            peak(),
+        ],
+        threshold_percent: 30.0,
+    });
+    assert_eq!(
+        statement(&v),
+        "the base model is not identifiable from these runs: rear cornering coefficient at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher; the rear axle peaks at 1.81° of slip (cornering coefficient over peak friction 44 1/rad; no tyre peaks before 2°): the data pull it to saturate early; no candidate effect fitted with it gives axles that are a tyre and removes 30 % of the gap (held-out error 4.000, noise level 1.000), so there is no model-form verdict"
+    );
+}
+
+#[test]
+fn ranking_warnings_and_notes_are_worded_as_readers_match_them() {
+    let w = [
+        RankWarning::Disagreement {
+            insample_percent: 64.0,
+            heldout_percent: 12.0,
+        },
+        RankWarning::FoldsNotConverged {
+            failed: 2,
+            folds: 8,
+        },
+    ];
+    assert_eq!(
+        rank_warnings(&w).unwrap(),
+        "the fit on all runs removes 64 % of the gap but only 12 % on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters; 2 of 8 fold refits did not converge"
+    );
+    assert_eq!(rank_warnings(&[]), None);
+    let n = Note::NotACandidate {
+        effect: EffectKind::CombinedSlip,
+        lacks: Unseen::LongitudinalAcceleration { threshold: 0.5 },
+    };
+    assert_eq!(
+        note(&n),
+        "combined_slip: not a candidate: no run has a longitudinal acceleration above 0.5 m/s² (an ax channel or a changing speed)"
+    );
+    let stiff = Note::StiffReplay {
+        step: 0.01,
+        runs: 2,
+        of: 8,
+    };
+    assert!(note(&stiff).starts_with(
+        "replay method: the base model is too stiff for RK4 at the 0.01 s step on 2 of 8 runs"
+    ));
+}
+
+fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> ParameterValue {
+    ParameterValue {
+        name: name.into(),
+        unit,
+        value: v,
+        std_error: f64::NAN,
+        at_bound: bound.is_some(),
+        bound,
+        determined: false,
+    }
+}
+
+#[test]
+fn a_parameter_on_a_physical_limit_is_not_worded_as_a_search_bound() {
+    // No negative down-force: aero's lower bound is a physical limit.
+    for q in EffectKind::AeroLoad.parameters() {
+        assert_eq!(q.bound_at(0.0), Some(Bound::Physical), "{}", q.name);
+        assert_eq!(q.bound_at(q.bounds.1), Some(Bound::Search), "{}", q.name);
+    }
+    let at = |v, b| {
+        parameter(&fitted(
+            "aero_load.front",
+            "N/(m/s)^2",
+            v,
+            EffectKind::AeroLoad.parameters()[0].bound_at(b),
+        ))
+    };
+    let floor = at(0.0, 0.0);
+    assert_eq!(
+        floor,
+        "aero_load.front = 0.0000 N/(m/s)^2 (at its physical limit: any smaller value would be negative)"
+    );
+    assert!(at(6.0, 6.0).contains("at its search bound: the data would take it further"));
+    let share = parameter(&fitted(
+        "load_transfer_distribution.front_share",
+        "-",
+        1.0,
+        Some(Bound::Physical),
+    ));
+    assert!(
+        share.ends_with("(at its physical limit: a share cannot exceed 1)"),
+        "{share}"
+    );
+}
+
+#[test]
+fn a_steering_compliance_is_given_in_the_unit_of_its_scenario_key_too() {
+    let mut p = fitted(
+        "steering_compliance.steer_per_front_force",
+        "rad/kN",
+        0.003,
+        None,
+    );
+    p.std_error = 2e-4;
+    p.determined = true;
+    assert_eq!(
+        parameter(&p),
+        "steering_compliance.steer_per_front_force = 3.000e-3 ± 2.00e-4 rad/kN (3.000e-6 rad/N)"
+    );
+}
+
+#[test]
+fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_on_its_limit() {
+    let [delay, lag] = EffectKind::SteerPath.parameters() else {
+        panic!("a steer path has a delay and a lag");
+    };
+    // ±6 s on a delay whose range is 0–0.5 s: the runs do not see it.
+    let p = ParameterValue::of("steer_path", delay, 0.12, 6.0);
+    assert!(!p.determined && !p.at_bound, "{p:?}");
+    assert_eq!(
+        parameter(&p),
+        "steer_path.delay = 0.1200 s (not determined by the runs: its standard error 6.00e0 exceeds its whole range)"
+    );
+    // Up to the whole range it is (a wide one, but a measure).
+    assert!(ParameterValue::of("steer_path", delay, 0.12, 0.5).determined);
+    assert!(!ParameterValue::of("steer_path", delay, 0.12, 0.5001).determined);
+    assert!(!ParameterValue::of("steer_path", delay, 0.12, f64::NAN).determined);
+    // A lag of a few microseconds stands on its physical limit 0 (within
+    // 1e-4 of its 0.5 s range); 60 µs does not.
+    let on = ParameterValue::of("steer_path", lag, 3e-6, 6.0);
+    assert_eq!(on.bound, Some(Bound::Physical));
+    assert!(on.at_bound);
+    assert_eq!(
+        parameter(&on),
+        "steer_path.lag = 3.000e-6 s (at its physical limit: any smaller value would be negative)"
+    );
+    assert_eq!(
+        ParameterValue::of("steer_path", lag, 5e-5, 1e-5).bound,
+        Some(Bound::Physical)
+    );
+    assert_eq!(
+        ParameterValue::of("steer_path", lag, 6e-5, 1e-5).bound,
+        None
+    );
+    // A search bound is where the fit stops, exactly: 1e-4 of the range
+    // off a bank's search bound is inside it.
+    let bank = &EffectKind::RoadBank.parameters()[0];
+    assert_eq!(
+        ParameterValue::of("road_bank", bank, 0.15, f64::NAN).bound,
+        Some(Bound::Search)
+    );
+    assert_eq!(
+        ParameterValue::of("road_bank", bank, 0.15 - 1e-5, 1e-3).bound,
+        None
+    );
+}
+
+#[test]
+fn a_channel_within_noise_is_said_so_on_the_terminal_as_on_the_page() {
+    let s = crate::diagnose::report::Shrinkage {
+        channel: crate::diagnose::model::channels::Channel::Beta,
+        part: crate::diagnose::report::Part::All,
+        samples: 10,
+        before: 0.0021,
+        after: 0.0022,
+        noise_floor: 0.0020,
+        reduction_percent: -43.0,
+    };
+    assert_eq!(
+        channel_change(&s),
+        "beta      0.0021 → 0.0022 (noise floor 0.0020): not significant (within 3 noise floors)"
+    );
+}

@@ -1,0 +1,101 @@
+//! The verdict from what the search found: its case ([`rules::case`]),
+//! and for each case what a reader needs — the explained set's figures
+//! with its warnings (the channels it leaves worse on held-out runs, by
+//! [`crate::diagnose::report::Shrinkage::change`]; a base that is no tyre
+//! alone), the threshold of no significant gap, why the base is not
+//! identifiable, or the best candidate and every rule it fails. Typed; the
+//! report words it. Units: J dimensionless, reductions in percent, RMS in
+//! the channel's unit.
+
+use crate::diagnose::base::identify::NoTyre;
+use crate::diagnose::report::{
+    ChannelChange, ChannelWorsened, Explained, NoSignificantGap, NotIdentifiable, OutsideLibrary,
+    Part, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+};
+use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
+use crate::diagnose::verdict::score::Scored;
+use crate::diagnose::verdict::search::{Baseline, Search};
+
+/// The verdict of a search `found` over the cross-validated `singles`
+/// (`order` ranks them, best first), on a gap that is `significant` or
+/// not; `shrinkage` is before and after on held-out runs, `base_no_tyre`
+/// why the base alone is no tyre (empty for a tyre).
+pub(crate) fn verdict(
+    found: &Search,
+    (singles, order): (&[Scored], &[usize]),
+    base: &Baseline,
+    significant: bool,
+    shrinkage: &[Shrinkage],
+    base_no_tyre: &[NoTyre],
+) -> Verdict {
+    let (heldout_error, noise_level) = (base.j0, base.jn);
+    let kind = rules::case(
+        found.chosen.is_some(),
+        significant,
+        !base_no_tyre.is_empty(),
+    );
+    match (kind, &found.chosen) {
+        (VerdictKind::Explained, Some(sc)) => {
+            let r = base.rank(sc);
+            let mut warnings = worsened(shrinkage);
+            if !base_no_tyre.is_empty() {
+                warnings.push(VerdictWarning::BaseNoTyre {
+                    no_tyre: base_no_tyre.to_vec(),
+                });
+            }
+            Verdict::Explained(Explained {
+                effects: r.effects,
+                parameters: r.parameters,
+                heldout_error_before: heldout_error,
+                heldout_error_after: r.heldout_error_after,
+                noise_level,
+                reduction_percent: r.reduction_percent,
+                warnings,
+            })
+        }
+        (VerdictKind::NoSignificantGap, _) => Verdict::NoSignificantGap(NoSignificantGap {
+            heldout_error,
+            noise_level,
+            threshold: SIGNIFICANT,
+        }),
+        (VerdictKind::NotIdentifiable, _) => Verdict::NotIdentifiable(NotIdentifiable {
+            heldout_error,
+            noise_level,
+            no_tyre: base_no_tyre.to_vec(),
+            threshold_percent: 100.0 * ACCEPT,
+        }),
+        _ => Verdict::OutsideLibrary(OutsideLibrary {
+            heldout_error,
+            noise_level,
+            // The best single on held-out runs (the ranking's first), and
+            // every rule it fails; where it fails none, the search went on
+            // from a simpler one in its place or ended on a set that failed.
+            refused: order.first().map(|&i| {
+                let gave_way = found.start.is_some_and(|s| s != i);
+                base.refused(&singles[i], gave_way, found.ended.clone())
+            }),
+            threshold_percent: 100.0 * ACCEPT,
+        }),
+    }
+}
+
+/// The channels the verdict's effects leave worse on held-out runs (all
+/// samples): a worsening by [`Shrinkage::change`], above noise.
+pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
+    shrinkage
+        .iter()
+        .filter(|s| s.part == Part::All)
+        .filter_map(|s| match s.change() {
+            ChannelChange::Worsened(added_percent) => {
+                Some(VerdictWarning::ChannelWorsened(ChannelWorsened {
+                    channel: s.channel,
+                    before: s.before,
+                    after: s.after,
+                    noise_floor: s.noise_floor,
+                    added_percent,
+                }))
+            }
+            _ => None,
+        })
+        .collect()
+}

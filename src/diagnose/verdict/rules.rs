@@ -1,0 +1,205 @@
+//! The rules that choose the verdict, as pure functions of a few numbers:
+//! held-out and in-sample reductions of the gap above noise (%), held-out
+//! errors J and the noise level J_n (dimensionless), BIC differences,
+//! parameter counts and two flags (a parameter left idle, axles that are
+//! no tyre). The search ([`super::search`]), the screening
+//! ([`super::screening`]) and the verdict ([`super::conclude`]) call them
+//! and nothing else decides; the tests below hold each threshold and each
+//! ordering at its boundary.
+//!
+//! The gap above noise is `G = sqrt(J² − J_n²)` and a reduction
+//! `1 − G_after/G_before` ([`crate::diagnose::verdict::score`]). The method
+//! is the project's own (the book's diagnosis chapter states it).
+
+use crate::diagnose::report::{Refusal, Refused, VerdictKind};
+
+/// Share of the held-out gap above noise an effect must remove to be
+/// accepted (and each further effect of what is left).
+pub const ACCEPT: f64 = 0.3;
+/// An effect whose remaining held-out gap above noise is at most this
+/// multiple of the accepted one's (plus [`CONFOUNDED_NOISE`] noise levels)
+/// explains the data about as well: it is confounded with it.
+pub const CONFOUNDED: f64 = 1.5;
+/// The noise allowance of the confounding test, in noise levels.
+pub const CONFOUNDED_NOISE: f64 = 0.25;
+/// A held-out error below this multiple of the noise level is no gap.
+pub const SIGNIFICANT: f64 = 1.3;
+/// Share of the gap a best single effect must remove for the greedy search
+/// to start from it (a pair whose halves each remove less than [`ACCEPT`]).
+pub const PROMISING: f64 = 0.1;
+/// In-sample minus held-out reduction (percentage points) past which a
+/// candidate's cross-validation disagrees with its fit: a warning.
+pub const DISAGREEMENT: f64 = 25.0;
+/// Look-alikes of the best single the verdict's search also starts from
+/// while the set found leaves a significant gap.
+pub const ALTERNATIVE_STARTS: usize = 2;
+/// Held-out error, in noise levels, by which a candidate that leaves a
+/// parameter idle must beat a simpler one (fewer parameters) to be
+/// preferred to it.
+pub const PARSIMONY: f64 = 0.1;
+/// Percentage points by which a candidate's held-out reduction may exceed
+/// its in-sample one and the screening still hold.
+pub const SCREEN_MARGIN: f64 = 10.0;
+
+/// Whether a held-out error `j` leaves a gap above the noise level `jn`:
+/// `J > SIGNIFICANT·J_n`.
+pub fn significant(j: f64, jn: f64) -> bool {
+    j > SIGNIFICANT * jn
+}
+
+/// Whether a candidate that removes `reduction_percent` of the gap (of the
+/// base's, or of what the set it extends leaves) with BIC `bic` is taken
+/// over the one of BIC `bic_before`: at least [`ACCEPT`] of the gap, and a
+/// lower BIC.
+pub fn accepted(reduction_percent: f64, bic: f64, bic_before: f64) -> bool {
+    reduction_percent >= 100.0 * ACCEPT && bic < bic_before
+}
+
+/// Whether the greedy search starts from a best single that removes
+/// `reduction_percent` with a BIC `delta_bic` from the base's: at least
+/// [`PROMISING`] and a lower BIC (it can be half of a pair).
+pub fn promising(reduction_percent: f64, delta_bic: f64) -> bool {
+    reduction_percent >= 100.0 * PROMISING && delta_bic < 0.0
+}
+
+/// Whether a single of held-out reduction `reduction_percent` and gap
+/// above noise `gap` is a look-alike of the best, whose gap is `best_gap`:
+/// it passes too and leaves about as small a gap (within
+/// [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n). A look-alike starts a
+/// search of its own and is reported as confounded.
+pub fn lookalike(reduction_percent: f64, gap: f64, best_gap: f64, jn: f64) -> bool {
+    reduction_percent >= 100.0 * ACCEPT && gap <= CONFOUNDED * best_gap + CONFOUNDED_NOISE * jn
+}
+
+/// Whether a set found from a look-alike (gap above noise `other`)
+/// replaces the set found first (`current`): it leaves clearly less of
+/// the gap, below 1/[`CONFOUNDED`] of it.
+pub fn replaces(other: f64, current: f64) -> bool {
+    other * CONFOUNDED < current
+}
+
+/// Whether a candidate's cross-validation disagrees with its fit: its fit
+/// on all runs removes at least [`ACCEPT`] in sample and more than
+/// [`DISAGREEMENT`] points more than on held-out runs.
+pub fn disagrees(insample_percent: f64, heldout_percent: f64) -> bool {
+    insample_percent - heldout_percent > DISAGREEMENT && insample_percent >= 100.0 * ACCEPT
+}
+
+/// Whether a single whose all-run fit removes `insample_percent` of the
+/// in-sample gap is screened (not cross-validated): even
+/// [`SCREEN_MARGIN`] points more held out would stay below [`ACCEPT`].
+pub fn screened(insample_percent: f64) -> bool {
+    insample_percent + SCREEN_MARGIN < 100.0 * ACCEPT
+}
+
+/// Whether a screened single is cross-validated after all: its least
+/// possible held-out error `floor` (that of its in-sample reduction plus
+/// [`SCREEN_MARGIN`]) reaches the best cross-validated error `best`, or,
+/// where its axles are a tyre (`usable`), the [`PARSIMONY`] window of the
+/// best whose axles are one (`best_usable`): there the search could read
+/// it.
+pub fn reaches(floor: f64, usable: bool, best: f64, best_usable: f64, jn: f64) -> bool {
+    floor <= best || (usable && floor <= best_usable + PARSIMONY * jn)
+}
+
+/// What the choice of a candidate reads of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Candidate {
+    /// Held-out error J.
+    pub heldout: f64,
+    /// Parameters fitted (axles and roll dynamics included).
+    pub parameters: usize,
+    /// It leaves one of its effect parameters idle (off, or not told from
+    /// off): it reduces to a simpler candidate.
+    pub idle: bool,
+    /// Its axles are no tyre: it cannot be a verdict, nor start one.
+    pub degenerate: bool,
+}
+
+/// Candidates best first: indices of `heldout` (held-out errors) from the
+/// lowest; ties keep their order.
+pub fn best_first(heldout: &[f64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..heldout.len()).collect();
+    order.sort_by(|&a, &b| heldout[a].total_cmp(&heldout[b]));
+    order
+}
+
+/// Of candidates ranked best first, the one to take (an index into
+/// `ranked`): those whose axles are no tyre left out, the first of the
+/// others, or where it leaves a parameter idle the one with the fewest
+/// parameters within [`PARSIMONY`] noise levels of it (the first of
+/// those with as few). `None` without a candidate whose axles are a tyre.
+pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
+    let usable: Vec<usize> = (0..ranked.len())
+        .filter(|&k| !ranked[k].degenerate)
+        .collect();
+    let top = &ranked[*usable.first()?];
+    if !top.idle {
+        return usable.first().copied();
+    }
+    usable
+        .into_iter()
+        .filter(|&k| ranked[k].heldout <= top.heldout + PARSIMONY * jn)
+        .min_by_key(|&k| ranked[k].parameters)
+}
+
+/// Which case the verdict is: effects `accepted`, else no gap where it is
+/// not `significant`, else not identifiable where the base is no tyre
+/// (what no candidate explains may be the base's own collapse), else
+/// outside the library.
+pub fn case(accepted: bool, significant: bool, base_no_tyre: bool) -> VerdictKind {
+    match (accepted, significant, base_no_tyre) {
+        (true, _, _) => VerdictKind::Explained,
+        (false, false, _) => VerdictKind::NoSignificantGap,
+        (false, true, true) => VerdictKind::NotIdentifiable,
+        (false, true, false) => VerdictKind::OutsideLibrary,
+    }
+}
+
+/// Why a candidate (its held-out reduction, BIC against the base's and
+/// whether its axles are no tyre, `no_tyre` their reasons) is not the
+/// verdict, by the rules it fails: its axles, the acceptance share, the
+/// BIC. Where it fails none, the search went on from `instead` (a
+/// simpler candidate it gave way to where it leaves a parameter `idle`,
+/// else the set its own search ended on), and that was refused.
+pub fn refused(
+    candidate: (Vec<crate::diagnose::effects::EffectKind>, f64, f64),
+    no_tyre: Vec<crate::diagnose::base::identify::NoTyre>,
+    idle: bool,
+    instead: Option<Refused>,
+) -> Refused {
+    let (effects, reduction_percent, delta_bic) = candidate;
+    let mut why = Vec::new();
+    if !no_tyre.is_empty() {
+        why.push(Refusal::AxlesNoTyre { no_tyre });
+    }
+    if reduction_percent < 100.0 * ACCEPT {
+        why.push(Refusal::BelowAcceptance {
+            threshold_percent: 100.0 * ACCEPT,
+        });
+    }
+    if delta_bic >= 0.0 {
+        why.push(Refusal::BicNotLower { delta_bic });
+    }
+    if why.is_empty() {
+        why.extend(instead.map(|other| {
+            if idle {
+                Refusal::LeavesParameterIdle {
+                    simpler: Box::new(other),
+                }
+            } else {
+                Refusal::SearchEndedOn {
+                    set: Box::new(other),
+                }
+            }
+        }));
+    }
+    Refused {
+        effects,
+        reduction_percent,
+        why,
+    }
+}
+
+#[cfg(test)]
+mod tests;

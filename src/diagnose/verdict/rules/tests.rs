@@ -1,0 +1,250 @@
+//! Each rule of the verdict on hand-built numbers, at its boundary: a
+//! changed threshold or ordering fails one of these.
+
+use super::*;
+use crate::diagnose::base::identify::{AxleLimit, NoTyre};
+use crate::diagnose::effects::EffectKind;
+
+#[test]
+fn a_gap_is_significant_above_1_3_noise_levels() {
+    assert!(!significant(1.3, 1.0));
+    assert!(!significant(1.2999, 1.0));
+    assert!(significant(1.3001, 1.0));
+    // Scaled with the noise level.
+    assert!(!significant(2.59, 2.0));
+    assert!(significant(2.61, 2.0));
+}
+
+#[test]
+fn acceptance_needs_30_percent_and_a_lower_bic() {
+    assert!(!accepted(29.9, -10.0, 0.0), "29.9 % is refused");
+    assert!(accepted(30.0, -10.0, 0.0), "30 % is accepted");
+    assert!(accepted(30.1, -10.0, 0.0), "30.1 % is accepted");
+    // The BIC must be strictly lower than the one it is compared with
+    // (the base's, or the set's it extends).
+    assert!(!accepted(95.0, 0.0, 0.0));
+    assert!(!accepted(95.0, 5.0, 0.0));
+    assert!(accepted(95.0, -100.0, -99.9));
+}
+
+#[test]
+fn the_greedy_search_starts_from_a_best_single_that_removes_10_percent() {
+    assert!(!promising(9.9, -1.0));
+    assert!(promising(10.0, -1.0));
+    assert!(promising(10.1, -1.0));
+    // With a BIC no lower than the base's it starts nothing.
+    assert!(!promising(80.0, 0.0));
+    assert!(!promising(80.0, 1.0));
+}
+
+#[test]
+fn a_lookalike_passes_and_leaves_a_gap_within_1_5_g_plus_a_quarter_noise_level() {
+    // Best's gap above noise 1, noise level 1: the limit is 1.75.
+    assert!(lookalike(30.0, 1.7499, 1.0, 1.0));
+    assert!(lookalike(30.0, 1.75, 1.0, 1.0));
+    assert!(!lookalike(30.0, 1.7501, 1.0, 1.0));
+    // The noise allowance scales with J_n, the factor with G.
+    assert!(lookalike(40.0, 3.49, 2.0, 2.0));
+    assert!(!lookalike(40.0, 3.51, 2.0, 2.0));
+    assert!(lookalike(40.0, 3.24, 2.0, 1.0));
+    assert!(!lookalike(40.0, 3.26, 2.0, 1.0));
+    // It must pass the acceptance share itself.
+    assert!(!lookalike(29.9, 0.5, 1.0, 1.0));
+}
+
+#[test]
+fn an_alternative_set_replaces_the_first_below_two_thirds_of_its_gap() {
+    assert!(!replaces(1.0, 1.5), "1.5 × 1.0 is not below 1.5");
+    assert!(replaces(1.0, 1.5001));
+    assert!(replaces(0.9, 1.5));
+    assert!(!replaces(1.1, 1.5));
+}
+
+#[test]
+fn cross_validation_disagrees_past_25_points_from_30_percent_in_sample() {
+    assert!(disagrees(55.0, 29.9));
+    assert!(
+        !disagrees(55.0, 30.0),
+        "25 points exactly is no disagreement"
+    );
+    // Below the acceptance share in sample, nothing to disagree about.
+    assert!(!disagrees(29.9, 0.0));
+    assert!(disagrees(30.0, 4.9));
+}
+
+#[test]
+fn a_single_is_screened_below_30_percent_less_the_10_point_margin() {
+    assert!(screened(19.9));
+    assert!(!screened(20.0));
+    assert!(!screened(20.1));
+    assert!(screened(-5.0));
+}
+
+#[test]
+fn a_screened_single_is_cross_validated_where_the_search_could_read_it() {
+    // Best cross-validated 2.0; best whose axles are a tyre 2.5; J_n 1.
+    assert!(reaches(2.0, false, 2.0, 2.5, 1.0));
+    assert!(!reaches(2.01, false, 2.0, 2.5, 1.0));
+    // A usable one within 0.1 J_n of the best usable.
+    assert!(reaches(2.59, true, 2.0, 2.5, 1.0));
+    assert!(!reaches(2.61, true, 2.0, 2.5, 1.0));
+}
+
+#[test]
+fn candidates_rank_best_first_and_ties_keep_their_order() {
+    assert_eq!(best_first(&[3.0, 1.0, 2.0, 1.0]), [1, 3, 2, 0]);
+    assert_eq!(best_first(&[]), Vec::<usize>::new());
+}
+
+fn cand(heldout: f64, parameters: usize, idle: bool, degenerate: bool) -> Candidate {
+    Candidate {
+        heldout,
+        parameters,
+        idle,
+        degenerate,
+    }
+}
+
+#[test]
+fn the_best_is_taken_unless_it_leaves_a_parameter_idle() {
+    let ranked = [cand(1.0, 2, false, false), cand(1.01, 1, false, false)];
+    assert_eq!(pick(&ranked, 1.0), Some(0));
+    // Idle: the fewest parameters within 0.1 noise levels of it.
+    let ranked = [
+        cand(1.0, 3, true, false),
+        cand(1.05, 2, false, false),
+        cand(1.0999, 1, false, false),
+        cand(1.1001, 0, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(2));
+    // The window scales with J_n.
+    assert_eq!(pick(&ranked, 2.0), Some(3));
+    // As few parameters: the first of them.
+    let ranked = [
+        cand(1.0, 2, true, false),
+        cand(1.02, 1, false, false),
+        cand(1.03, 1, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(1));
+    // None simpler within the window: the idle best itself.
+    let ranked = [cand(1.0, 2, true, false), cand(1.2, 1, false, false)];
+    assert_eq!(pick(&ranked, 1.0), Some(0));
+}
+
+#[test]
+fn candidates_whose_axles_are_no_tyre_are_never_picked() {
+    let ranked = [
+        cand(0.5, 1, false, true),
+        cand(1.0, 2, false, false),
+        cand(1.1, 1, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(1));
+    // Nor taken as the simpler one of an idle best.
+    let ranked = [
+        cand(1.0, 3, true, false),
+        cand(1.01, 1, false, true),
+        cand(1.02, 2, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(2));
+    // The window is measured from the best usable one.
+    let ranked = [
+        cand(0.5, 1, false, true),
+        cand(1.0, 3, true, false),
+        cand(1.09, 2, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(2));
+    assert_eq!(pick(&[cand(1.0, 1, false, true)], 1.0), None);
+    assert_eq!(pick(&[], 1.0), None);
+}
+
+#[test]
+fn the_verdict_case_follows_acceptance_then_the_gap_then_the_base() {
+    use VerdictKind::*;
+    assert_eq!(case(true, true, false), Explained);
+    assert_eq!(case(true, true, true), Explained);
+    assert_eq!(case(false, false, false), NoSignificantGap);
+    assert_eq!(case(false, false, true), NoSignificantGap);
+    assert_eq!(case(false, true, true), NotIdentifiable);
+    assert_eq!(case(false, true, false), OutsideLibrary);
+}
+
+fn rigid() -> Vec<NoTyre> {
+    vec![NoTyre::Limit {
+        parameter: "rear cornering coefficient",
+        limit: AxleLimit::Rigid,
+    }]
+}
+
+#[test]
+fn a_refused_candidate_names_every_rule_it_fails() {
+    let bias = vec![EffectKind::SensorBias];
+    // The sedan's sensor bias: 53.5 % held out, a lower BIC, axles no
+    // tyre — refused for the axles only, never for the share.
+    let r = refused((bias.clone(), 53.5, -500.0), rigid(), false, None);
+    assert_eq!(r.why, [Refusal::AxlesNoTyre { no_tyre: rigid() }]);
+    assert_eq!((r.effects, r.reduction_percent), (bias.clone(), 53.5));
+    // At the acceptance boundary.
+    let below = refused((bias.clone(), 29.9, -5.0), Vec::new(), false, None);
+    assert_eq!(
+        below.why,
+        [Refusal::BelowAcceptance {
+            threshold_percent: 30.0
+        }]
+    );
+    assert!(refused((bias.clone(), 30.0, 0.0), Vec::new(), false, None)
+        .why
+        .iter()
+        .all(|w| !matches!(w, Refusal::BelowAcceptance { .. })));
+    // Every rule it fails, in order: axles, share, BIC.
+    let all = refused((bias.clone(), 12.0, 3.0), rigid(), false, None);
+    assert_eq!(
+        all.why,
+        [
+            Refusal::AxlesNoTyre { no_tyre: rigid() },
+            Refusal::BelowAcceptance {
+                threshold_percent: 30.0
+            },
+            Refusal::BicNotLower { delta_bic: 3.0 },
+        ]
+    );
+}
+
+#[test]
+fn a_candidate_that_passes_is_refused_through_where_the_search_went_instead() {
+    let simpler = refused(
+        (vec![EffectKind::SensorDelay], 28.0, -9.0),
+        Vec::new(),
+        false,
+        None,
+    );
+    // It gave way to a simpler one (it leaves a parameter idle).
+    let idle = refused(
+        (vec![EffectKind::SteerPath], 31.0, -10.0),
+        Vec::new(),
+        true,
+        Some(simpler.clone()),
+    );
+    assert_eq!(
+        idle.why,
+        [Refusal::LeavesParameterIdle {
+            simpler: Box::new(simpler.clone())
+        }]
+    );
+    // It started the search, which ended on a set that failed.
+    let ended = refused(
+        (vec![EffectKind::SteerPath], 31.0, -10.0),
+        Vec::new(),
+        false,
+        Some(simpler.clone()),
+    );
+    assert!(matches!(&ended.why[..], [Refusal::SearchEndedOn { .. }]));
+    // Where it fails a rule itself, that is the reason, not the others.
+    let own = refused(
+        (vec![EffectKind::SteerPath], 20.0, -10.0),
+        Vec::new(),
+        true,
+        Some(simpler),
+    );
+    assert_eq!(own.why.len(), 1);
+    assert!(matches!(own.why[0], Refusal::BelowAcceptance { .. }));
+}

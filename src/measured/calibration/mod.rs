@@ -1,0 +1,310 @@
+//! Sensor offsets from a log's standstills and straights, measured on the
+//! raw runs before the cleaning ([`super::clean`]) excludes the slow
+//! samples.
+//!
+//! **Why.** A body-fixed accelerometer reads the specific force, so on a
+//! road banked by θ (`FORMATS.md`: positive with the left edge higher) its
+//! lateral channel reads `a_y = u·r + v̇ + g·sin θ + b_ay` (ISO 8855; the
+//! same sign as the model's: the accelerometer, the tyres' force over the
+//! mass, reads `g·sin θ` more than the path's acceleration), and a gyro
+//! reads `r + b_r`. Parked, `u = r = v̇ = 0`: the means are the offsets
+//! `b_r` and `b_ay + g·sin θ` (the static bias estimation of inertial
+//! sensors, and the zero-velocity and zero-angular-rate updates of a
+//! navigation filter while stationary: Groves 2013, *Principles of GNSS,
+//! Inertial, and Multisensor Integrated Navigation Systems*). Driving
+//! straight at a steady speed, `r ≈ 0`, `v̇ ≈ 0` and a road vehicle's
+//! lateral velocity is nearly zero (the non-holonomic constraint of land
+//! vehicles' inertial navigation, Dissanayake et al. 2001; Groves 2013),
+//! so the means of yaw rate, `a_y − g·sin θ` and sideslip are their
+//! offsets too. Sideslip is undefined at a standstill (no velocity) and is
+//! measured on straights only.
+//!
+//! **Standstills.** The speed's centred running median over
+//! [`MEDIAN_WINDOW`] below [`STANDSTILL_SPEED`]; [`STANDSTILL_TRIM`] cut
+//! from each end (the body still rocks on its springs after a stop, and
+//! the car creeps before it drives off); at least [`STANDSTILL_SECONDS`]
+//! left.
+//!
+//! **Straights.** On the same running medians, every sample: speed at
+//! least [`STRAIGHT_SPEED`]; yaw rate within [`STRAIGHT_YAW_RATE`] of the
+//! standstills' pooled yaw-rate offset (0 without one: a gyro offset larger
+//! than the band would hide the straights); the path's lateral
+//! acceleration `u·(r − r₀)` within [`STRAIGHT_LATERAL`]; steer within
+//! [`STRAIGHT_STEER`] of the run's straight-line steer (the median steer
+//! of its samples that pass the speed and yaw tests, which carries the
+//! steer sensor's own offset); `|ax|` within [`STRAIGHT_AX`] (without an
+//! `ax` column, the running median's slope across one window). Stretches that pass, cut by [`STRAIGHT_TRIM`] at each end (the
+//! corner's exit and the next one's entry) and at least
+//! [`STRAIGHT_SECONDS`] long, are candidates; a candidate whose yaw rate's
+//! running median has a standard deviation above
+//! [`STRAIGHT_YAW_VARIATION`] (weaving) or whose speed changes by more than
+//! [`STRAIGHT_SPEED_VARIATION`] of its mean is refused, and listed with the
+//! reason.
+//!
+//! **Means.** Per span and channel: masked samples and glitches (beyond
+//! five robust deviations of the span's median) left out, the mean of the
+//! rest, its standard error from the effective sample count of
+//! autocorrelated samples, the samples; for `ay` with a `bank` column,
+//! `g·sin(bank)` removed sample by sample (`stats.rs` has the rules). Per
+//! channel and kind the spans are pooled (inverse-variance weights, Birge
+//! scale factor) and tested for agreement: spans that disagree are a
+//! drifting offset (temperature, a sensor knocked on its mount), reported
+//! as such. The straights' offset is compared with the standstills': they
+//! agree within [`AGREEMENT_SIGMAS`] standard errors of the difference.
+//!
+//! **Limits.** A straight's means also hold what the criteria let through:
+//! a crosswind or a road's crown (a sideslip and a lateral force with no
+//! yaw: 2 % of crown reads 0.2 m/s² in `a_y`), an unlogged bank, the path's
+//! residual curvature (within [`STRAIGHT_LATERAL`]) and, on `a_y`, the body
+//! roll of a car leaning on its springs. A standstill's means hold the
+//! accelerometer's tilt on an unlogged slope and the body's static roll (a
+//! parked car on a bank leans a little on its springs), and the gyro's
+//! mean the Earth's rate (up to 7.3e-5 rad/s, below automotive gyros'
+//! resolution). Straights and standstills that differ say so; which is
+//! right the report cannot tell.
+//!
+//! Units: SI, rad, times in s. Layout: this file holds the criteria and
+//! [`calibrate`]; `spans.rs` finds the spans, `stats.rs` measures and pools
+//! them, `report.rs` holds the report and its lines.
+
+mod report;
+mod spans;
+mod stats;
+#[cfg(test)]
+mod tests;
+
+pub use report::{
+    Agreement, CalibrationReport, CalibrationSpan, ChannelCalibration, ChannelMean, Criteria,
+    Pooled, RejectedStraight, Rejection, SpanKind,
+};
+
+use super::clean::RunChannel;
+use super::MeasuredRun;
+use crate::constants::G;
+use stats::{mean_estimate, pool};
+
+/// Width of the centred running medians every criterion is applied to, s.
+pub const MEDIAN_WINDOW: f64 = 1.0;
+/// Standstill: speed below this, m/s (stricter than the cleaning's 0.5 m/s:
+/// creeping at 0.5 m/s on a 5 m radius turns at 0.1 rad/s).
+pub const STANDSTILL_SPEED: f64 = 0.2;
+/// Cut from each end of a standstill, s.
+pub const STANDSTILL_TRIM: f64 = 1.0;
+/// Shortest standstill after the cut, s.
+pub const STANDSTILL_SECONDS: f64 = 3.0;
+/// Straight: lowest speed, m/s (the diagnosis's default lowest speed).
+pub const STRAIGHT_SPEED: f64 = 5.0;
+/// Straight: largest yaw rate from the reference, rad/s (a radius of 1 km
+/// at 10 m/s).
+pub const STRAIGHT_YAW_RATE: f64 = 0.01;
+/// Straight: largest lateral acceleration of the path, m/s² (0.02 g).
+pub const STRAIGHT_LATERAL: f64 = 0.2;
+/// Straight: largest steer from the straight-line steer, rad (0.3°, about
+/// 5° at a steering wheel over a 16:1 ratio).
+pub const STRAIGHT_STEER: f64 = 0.005;
+/// Straight: largest |ax| (or |du/dt| without `ax`), m/s².
+pub const STRAIGHT_AX: f64 = 0.5;
+/// Straight: largest standard deviation of the yaw rate's running median,
+/// rad/s (a driver's corrections on a straight: ±0.006 rad/s in a racing
+/// car's pit lane at 9 m/s, a standard deviation of 0.0032).
+pub const STRAIGHT_YAW_VARIATION: f64 = 0.004;
+/// Straight: largest speed change, share of its mean.
+pub const STRAIGHT_SPEED_VARIATION: f64 = 0.1;
+/// Cut from each end of a straight, s.
+pub const STRAIGHT_TRIM: f64 = 0.5;
+/// Shortest straight after the cut, s.
+pub const STRAIGHT_SECONDS: f64 = 3.0;
+/// Standard errors within which straights and standstills agree.
+pub const AGREEMENT_SIGMAS: f64 = 3.0;
+
+/// The criteria, as the report states them.
+pub const CRITERIA: Criteria = Criteria {
+    median_window: MEDIAN_WINDOW,
+    standstill_speed: STANDSTILL_SPEED,
+    standstill_trim: STANDSTILL_TRIM,
+    standstill_seconds: STANDSTILL_SECONDS,
+    straight_speed: STRAIGHT_SPEED,
+    straight_yaw_rate: STRAIGHT_YAW_RATE,
+    straight_lateral: STRAIGHT_LATERAL,
+    straight_steer: STRAIGHT_STEER,
+    straight_ax: STRAIGHT_AX,
+    straight_yaw_variation: STRAIGHT_YAW_VARIATION,
+    straight_speed_variation: STRAIGHT_SPEED_VARIATION,
+    straight_trim: STRAIGHT_TRIM,
+    straight_seconds: STRAIGHT_SECONDS,
+    outlier_mads: stats::OUTLIER_MADS,
+    agreement_quantile: stats::AGREEMENT_QUANTILE,
+    agreement_sigmas: AGREEMENT_SIGMAS,
+};
+
+/// The response channels, in report order.
+const CHANNELS: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta];
+
+/// A channel's unit.
+fn unit(channel: RunChannel) -> &'static str {
+    match channel {
+        RunChannel::YawRate => "rad/s",
+        RunChannel::Ay => "m/s²",
+        RunChannel::T => "s",
+        RunChannel::Speed => "m/s",
+        RunChannel::Steer | RunChannel::Beta => "rad",
+    }
+}
+
+/// The values of a response channel of `run`.
+fn values(run: &MeasuredRun, channel: RunChannel) -> Option<&Vec<f64>> {
+    match channel {
+        RunChannel::YawRate => Some(&run.yaw_rate),
+        RunChannel::Ay => run.ay.as_ref(),
+        RunChannel::Beta => run.beta.as_ref(),
+        _ => None,
+    }
+}
+
+/// The sensor offsets the standstills and straights of `runs` show. The
+/// runs are taken as read (raw: before any cleaning).
+pub fn calibrate(runs: &[MeasuredRun]) -> CalibrationReport {
+    let c = CRITERIA;
+    let mut spans: Vec<(usize, CalibrationSpan)> = Vec::new();
+    for (k, run) in runs.iter().enumerate() {
+        for (lo, hi) in spans::standstills(run, &c) {
+            spans.push((k, measure(run, lo, hi, SpanKind::Standstill)));
+        }
+    }
+    let standing: Vec<&CalibrationSpan> = spans.iter().map(|(_, s)| s).collect();
+    let yaw_reference =
+        pooled(&standing, SpanKind::Standstill, RunChannel::YawRate).map_or(0.0, |p| p.mean);
+    let mut rejected = Vec::new();
+    for (k, run) in runs.iter().enumerate() {
+        let (found, refused) = spans::straights(run, yaw_reference, &c);
+        for (lo, hi) in found {
+            spans.push((k, measure(run, lo, hi, SpanKind::Straight)));
+        }
+        rejected.extend(refused);
+    }
+    spans.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.t_start.total_cmp(&b.1.t_start)));
+    let spans: Vec<CalibrationSpan> = spans.into_iter().map(|(_, s)| s).collect();
+    let all: Vec<&CalibrationSpan> = spans.iter().collect();
+    let channels = CHANNELS
+        .into_iter()
+        .filter_map(|ch| channel_calibration(&all, ch))
+        .collect();
+    CalibrationReport {
+        criteria: c,
+        yaw_reference,
+        spans,
+        rejected,
+        channels,
+    }
+}
+
+/// The response channels' means over `[lo, hi)` of `run`.
+fn measure(run: &MeasuredRun, lo: usize, hi: usize, kind: SpanKind) -> CalibrationSpan {
+    let live: Vec<usize> = (lo..hi)
+        .filter(|i| run.masked.binary_search(i).is_err())
+        .collect();
+    let mut channels = Vec::new();
+    let mut held = Vec::new();
+    for ch in CHANNELS {
+        // No velocity, no sideslip.
+        if ch == RunChannel::Beta && kind == SpanKind::Standstill {
+            continue;
+        }
+        let Some(x) = values(run, ch) else { continue };
+        let bank: Option<Vec<f64>> = match (ch, &run.bank) {
+            (RunChannel::Ay, Some(b)) => Some(live.iter().map(|&i| G * b[i].sin()).collect()),
+            _ => None,
+        };
+        let v: Vec<f64> = match &bank {
+            Some(g) => live.iter().zip(g).map(|(&i, g)| x[i] - g).collect(),
+            None => live.iter().map(|&i| x[i]).collect(),
+        };
+        let bank_term = bank.map(|g| g.iter().sum::<f64>() / g.len().max(1) as f64);
+        match mean_estimate(&v) {
+            Some(e) => channels.push(ChannelMean::new(ch, e, bank_term)),
+            None if !v.is_empty() => held.push(ch),
+            None => {}
+        }
+    }
+    let mut steer = run.steer[lo..hi].to_vec();
+    CalibrationSpan {
+        run: run.path.display().to_string(),
+        kind,
+        t_start: run.t[lo],
+        t_end: run.t[hi - 1],
+        speed: run.speed[lo..hi].iter().sum::<f64>() / (hi - lo) as f64,
+        steer: crate::measured::clean::median(&mut steer),
+        channels,
+        held,
+    }
+}
+
+/// The offset of `channel` pooled over the spans of `kind`; None without
+/// any.
+fn pooled(spans: &[&CalibrationSpan], kind: SpanKind, channel: RunChannel) -> Option<Pooled> {
+    let of: Vec<(&CalibrationSpan, &ChannelMean)> = spans
+        .iter()
+        .filter(|s| s.kind == kind)
+        .filter_map(|s| {
+            s.channels
+                .iter()
+                .find(|m| m.channel == channel)
+                .map(|m| (*s, m))
+        })
+        .collect();
+    if of.is_empty() {
+        return None;
+    }
+    let means: Vec<(f64, f64)> = of.iter().map(|(_, m)| (m.mean, m.std_error)).collect();
+    let p = pool(&means);
+    let (least, greatest) = means
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &(m, _)| (a.min(m), b.max(m)));
+    Some(Pooled {
+        spans: of.len(),
+        seconds: of.iter().map(|(s, _)| s.seconds()).sum(),
+        samples: of.iter().map(|(_, m)| m.samples).sum(),
+        mean: p.mean,
+        std_error: p.std_error,
+        chi2: p.chi2,
+        dof: p.dof,
+        consistent: p.agree,
+        least,
+        greatest,
+    })
+}
+
+/// One channel over the standstills and the straights; None when neither
+/// measures it.
+fn channel_calibration(
+    spans: &[&CalibrationSpan],
+    channel: RunChannel,
+) -> Option<ChannelCalibration> {
+    let standstill = pooled(spans, SpanKind::Standstill, channel);
+    let straight = pooled(spans, SpanKind::Straight, channel);
+    if standstill.is_none() && straight.is_none() {
+        return None;
+    }
+    let agreement = standstill.zip(straight).map(|(a, b)| {
+        let difference = b.mean - a.mean;
+        let std_error = a.std_error.hypot(b.std_error);
+        Agreement {
+            difference,
+            std_error,
+            agree: difference.abs() <= AGREEMENT_SIGMAS * std_error,
+        }
+    });
+    let bank_removed = spans.iter().any(|s| {
+        s.channels
+            .iter()
+            .any(|m| m.channel == channel && m.bank_term.is_some())
+    });
+    Some(ChannelCalibration {
+        channel,
+        unit: unit(channel),
+        bank_removed,
+        standstill,
+        straight,
+        agreement,
+    })
+}

@@ -1,0 +1,389 @@
+//! What a calibration reports: the criteria it used, every standstill and
+//! straight with its channels' means, the straights refused and why, and
+//! per channel the offsets pooled over the standstills and over the
+//! straights with whether they agree; and the terminal lines. Units: SI,
+//! rad; times in s.
+
+use super::stats::MeanEstimate;
+use crate::measured::clean::RunChannel;
+use serde::Serialize;
+
+/// The criteria a calibration applied (the constants of [`super`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Criteria {
+    /// Width of the centred running medians the spans are found on, s.
+    pub median_window: f64,
+    /// A standstill: the running median of the speed below this, m/s.
+    pub standstill_speed: f64,
+    /// Cut from each end of a standstill (the body still rocks), s.
+    pub standstill_trim: f64,
+    /// Shortest standstill after the cut, s.
+    pub standstill_seconds: f64,
+    /// A straight: the running median of the speed at least this, m/s.
+    pub straight_speed: f64,
+    /// Largest |yaw rate − the standstills' yaw offset| (running
+    /// median), rad/s.
+    pub straight_yaw_rate: f64,
+    /// Largest |speed·(yaw rate − the standstills' yaw offset)|, the
+    /// path's lateral acceleration, m/s².
+    pub straight_lateral: f64,
+    /// Largest |steer − the run's straight-line steer| (running median),
+    /// rad.
+    pub straight_steer: f64,
+    /// Largest |ax| (running median; without `ax`, the slope of the
+    /// speed's), m/s².
+    pub straight_ax: f64,
+    /// Largest standard deviation of the yaw rate's running median over a
+    /// straight (weaving), rad/s.
+    pub straight_yaw_variation: f64,
+    /// Largest (max − min)/mean of the speed's running median over a
+    /// straight.
+    pub straight_speed_variation: f64,
+    /// Cut from each end of a straight (the corner's exit and entry), s.
+    pub straight_trim: f64,
+    /// Shortest straight after the cut, s.
+    pub straight_seconds: f64,
+    /// Robust deviations from a span's median beyond which a sample is a
+    /// glitch.
+    pub outlier_mads: f64,
+    /// Quantile of χ² below which spans agree.
+    pub agreement_quantile: f64,
+    /// Standard errors within which the standstills' and the straights'
+    /// offsets agree.
+    pub agreement_sigmas: f64,
+}
+
+/// Standstill or straight.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpanKind {
+    /// Parked: no motion at all.
+    Standstill,
+    /// Driving straight at a steady speed.
+    Straight,
+}
+
+impl SpanKind {
+    /// In words, plural when `n` ≠ 1.
+    pub fn words(self, n: usize) -> &'static str {
+        match (self, n == 1) {
+            (SpanKind::Standstill, true) => "standstill",
+            (SpanKind::Standstill, false) => "standstills",
+            (SpanKind::Straight, true) => "straight",
+            (SpanKind::Straight, false) => "straights",
+        }
+    }
+}
+
+/// One channel's mean over one span.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ChannelMean {
+    /// The channel (yaw rate, ay or beta).
+    pub channel: RunChannel,
+    /// The mean: the offset, with `bank_term` removed from ay, in the
+    /// channel's unit.
+    pub mean: f64,
+    /// Its standard error (autocorrelation counted).
+    pub std_error: f64,
+    /// Samples averaged.
+    pub samples: usize,
+    /// Independent samples they are worth (samples over the integrated
+    /// autocorrelation time).
+    pub effective_samples: f64,
+    /// Samples left out as glitches.
+    pub outliers: usize,
+    /// Mean g·sin(bank) removed from ay (a logged bank), m/s².
+    pub bank_term: Option<f64>,
+}
+
+impl ChannelMean {
+    pub(super) fn new(channel: RunChannel, e: MeanEstimate, bank_term: Option<f64>) -> Self {
+        Self {
+            channel,
+            mean: e.mean,
+            std_error: e.std_error,
+            samples: e.samples,
+            effective_samples: e.effective_samples,
+            outliers: e.outliers,
+            bank_term,
+        }
+    }
+}
+
+/// A standstill or a straight.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CalibrationSpan {
+    /// The run (file) it is in.
+    pub run: String,
+    /// Which.
+    pub kind: SpanKind,
+    /// First sample, s.
+    pub t_start: f64,
+    /// Last sample, s.
+    pub t_end: f64,
+    /// Mean speed, m/s.
+    pub speed: f64,
+    /// Median steer, rad (on a straight: the steer that holds it).
+    pub steer: f64,
+    /// The response channels' means.
+    pub channels: Vec<ChannelMean>,
+    /// Channels holding one value throughout (gated or held by the
+    /// logger): no offset to measure.
+    pub held: Vec<RunChannel>,
+}
+
+impl CalibrationSpan {
+    /// Its length, s.
+    pub fn seconds(&self) -> f64 {
+        self.t_end - self.t_start
+    }
+}
+
+/// Why a candidate straight was refused.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "reason")]
+pub enum Rejection {
+    /// The yaw rate weaves.
+    YawRateVaries {
+        /// Standard deviation of its running median, rad/s.
+        std: f64,
+        /// The limit, rad/s.
+        limit: f64,
+    },
+    /// The speed changes.
+    SpeedVaries {
+        /// (max − min)/mean of its running median.
+        share: f64,
+        /// The limit.
+        limit: f64,
+    },
+}
+
+impl Rejection {
+    /// In words.
+    pub fn words(&self) -> String {
+        match self {
+            Rejection::YawRateVaries { std, limit } => {
+                format!("the yaw rate varies by {std:.4} rad/s (limit {limit})")
+            }
+            Rejection::SpeedVaries { share, limit } => format!(
+                "the speed varies by {:.0} % (limit {:.0} %)",
+                100.0 * share,
+                100.0 * limit
+            ),
+        }
+    }
+}
+
+/// A stretch that met the per-sample criteria of a straight but not the
+/// whole-span ones.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RejectedStraight {
+    /// The run.
+    pub run: String,
+    /// First sample, s.
+    pub t_start: f64,
+    /// Last sample, s.
+    pub t_end: f64,
+    /// Why.
+    pub reasons: Vec<Rejection>,
+}
+
+/// One channel's offset pooled over the spans of one kind.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Pooled {
+    /// Spans.
+    pub spans: usize,
+    /// Their total length, s.
+    pub seconds: f64,
+    /// Samples averaged.
+    pub samples: usize,
+    /// The inverse-variance weighted mean.
+    pub mean: f64,
+    /// Its standard error (times the Birge ratio when the spans scatter
+    /// beyond their errors).
+    pub std_error: f64,
+    /// χ² of the spans about the mean.
+    pub chi2: f64,
+    /// Its degrees of freedom (spans − 1).
+    pub dof: usize,
+    /// The spans agree (χ² below its quantile); false: the offset drifts.
+    pub consistent: bool,
+    /// Least span mean.
+    pub least: f64,
+    /// Greatest span mean.
+    pub greatest: f64,
+}
+
+/// The straights' offset against the standstills'.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Agreement {
+    /// Straights minus standstills.
+    pub difference: f64,
+    /// Its standard error.
+    pub std_error: f64,
+    /// Within [`Criteria::agreement_sigmas`] standard errors.
+    pub agree: bool,
+}
+
+/// One channel's calibration.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ChannelCalibration {
+    /// The channel.
+    pub channel: RunChannel,
+    /// Its unit.
+    pub unit: &'static str,
+    /// g·sin(bank) was removed (ay with a logged bank).
+    pub bank_removed: bool,
+    /// Over the standstills.
+    pub standstill: Option<Pooled>,
+    /// Over the straights.
+    pub straight: Option<Pooled>,
+    /// The two compared, when both are measured.
+    pub agreement: Option<Agreement>,
+}
+
+/// What the standstills and straights of a set of runs say about the
+/// response sensors' offsets.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CalibrationReport {
+    /// The criteria used.
+    pub criteria: Criteria,
+    /// Yaw rate the straights were judged against: the standstills'
+    /// pooled yaw-rate offset, 0 without one, rad/s.
+    pub yaw_reference: f64,
+    /// Every standstill and straight, by run and time.
+    pub spans: Vec<CalibrationSpan>,
+    /// Candidate straights refused.
+    pub rejected: Vec<RejectedStraight>,
+    /// Per channel with an offset measured.
+    pub channels: Vec<ChannelCalibration>,
+}
+
+impl Default for CalibrationReport {
+    fn default() -> Self {
+        Self {
+            criteria: super::CRITERIA,
+            yaw_reference: 0.0,
+            spans: Vec::new(),
+            rejected: Vec::new(),
+            channels: Vec::new(),
+        }
+    }
+}
+
+/// Decimals that show `error` to its first significant digit.
+fn digits(error: f64) -> usize {
+    if error > 0.0 && error.is_finite() {
+        (-error.log10().floor()).clamp(1.0, 8.0) as usize
+    } else {
+        6
+    }
+}
+
+/// `value ± error` to the error's first significant digit.
+fn plus_minus(value: f64, error: f64) -> String {
+    let d = digits(error);
+    format!("{value:.d$} ± {error:.d$}")
+}
+
+impl ChannelCalibration {
+    /// The channel's terminal line.
+    pub fn line(&self) -> String {
+        let name = self.channel.name();
+        let bank = if self.bank_removed {
+            " (g·sin(bank) removed)"
+        } else {
+            ""
+        };
+        let part = |p: &Pooled, kind: SpanKind, first: bool| {
+            let unit = if first {
+                format!(" {}", self.unit)
+            } else {
+                String::new()
+            };
+            let at = if kind == SpanKind::Standstill {
+                "at"
+            } else {
+                "on"
+            };
+            format!(
+                "{}{unit} {at} {} {} ({:.0} s)",
+                plus_minus(p.mean, p.std_error),
+                p.spans,
+                kind.words(p.spans),
+                p.seconds
+            )
+        };
+        let mut parts = Vec::new();
+        if let Some(p) = &self.standstill {
+            parts.push(part(p, SpanKind::Standstill, true));
+        }
+        if let Some(p) = &self.straight {
+            parts.push(part(p, SpanKind::Straight, parts.is_empty()));
+        }
+        let mut out = format!("{name} offset{bank} {}", parts.join(", "));
+        if let Some(a) = &self.agreement {
+            let verdict = if a.agree { "agree" } else { "differ" };
+            out.push_str(&format!(
+                "; straights − standstills {}: {verdict}",
+                plus_minus(a.difference, a.std_error)
+            ));
+        }
+        for (p, kind) in [
+            (&self.standstill, SpanKind::Standstill),
+            (&self.straight, SpanKind::Straight),
+        ] {
+            if let Some(p) = p.filter(|p| !p.consistent) {
+                // The spans' own precision, not the pooled error the drift
+                // inflated.
+                let ratio = p.chi2 / p.dof as f64;
+                let d = digits(p.std_error / ratio.sqrt().max(1.0)).min(4);
+                let r = if ratio < 100.0 { 1 } else { 0 };
+                out.push_str(&format!(
+                    "; the {} drift ({:.d$} to {:.d$}, χ²/dof = {ratio:.r$})",
+                    kind.words(2),
+                    p.least,
+                    p.greatest,
+                ));
+            }
+        }
+        out
+    }
+}
+
+impl CalibrationReport {
+    /// One line per channel with an offset measured, or one saying that
+    /// none was found (with the refused straights counted).
+    pub fn lines(&self) -> Vec<String> {
+        let mut out: Vec<String> = self.channels.iter().map(|c| c.line()).collect();
+        if out.is_empty() {
+            let c = &self.criteria;
+            out.push(format!(
+                "no standstill (speed below {} m/s for {} s) or straight ({} s at {} m/s or more) in the runs: no sensor offset measured",
+                c.standstill_speed,
+                c.standstill_seconds + 2.0 * c.standstill_trim,
+                c.straight_seconds + 2.0 * c.straight_trim,
+                c.straight_speed
+            ));
+        }
+        if !self.rejected.is_empty() {
+            let first = &self.rejected[0];
+            let why: Vec<String> = first.reasons.iter().map(Rejection::words).collect();
+            out.push(format!(
+                "{} candidate straight(s) refused, e.g. {} {:.1}–{:.1} s: {}",
+                self.rejected.len(),
+                first.run,
+                first.t_start,
+                first.t_end,
+                why.join(", ")
+            ));
+        }
+        out
+    }
+
+    /// The calibration of `channel`, when measured.
+    pub fn channel(&self, channel: RunChannel) -> Option<&ChannelCalibration> {
+        self.channels.iter().find(|c| c.channel == channel)
+    }
+}

@@ -1,0 +1,230 @@
+//! Finding the standstills and the straights of a raw run (the rules are in
+//! [`super`]): every criterion is applied to centred running medians over
+//! [`super::MEDIAN_WINDOW`], so that an isolated spike, a zero read or a
+//! short hold of a logger neither breaks a span nor makes one; the run is
+//! taken piece by piece between its time gaps, so no span bridges a
+//! dropout. Indices are the run's samples; spans are `[lo, hi)`.
+
+use super::report::{Criteria, RejectedStraight, Rejection};
+use crate::measured::clean::{median, GAP_INTERVALS};
+use crate::measured::MeasuredRun;
+
+/// The median sample interval of `t`, s.
+fn interval(t: &[f64]) -> f64 {
+    let mut dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    median(&mut dt)
+}
+
+/// The run's pieces `[lo, hi)` between its time gaps (steps longer than
+/// [`GAP_INTERVALS`] median intervals).
+fn gapless(t: &[f64]) -> Vec<(usize, usize)> {
+    let dt = interval(t);
+    let mut out = Vec::new();
+    let mut lo = 0;
+    for i in 1..t.len() {
+        if t[i] - t[i - 1] > GAP_INTERVALS * dt {
+            out.push((lo, i));
+            lo = i;
+        }
+    }
+    out.push((lo, t.len()));
+    out
+}
+
+/// Centred running median of `x` over `2h + 1` samples (fewer at the ends).
+fn running_median(x: &[f64], h: usize) -> Vec<f64> {
+    let n = x.len();
+    let mut buf = Vec::with_capacity(2 * h + 1);
+    (0..n)
+        .map(|i| {
+            buf.clear();
+            buf.extend_from_slice(&x[i.saturating_sub(h)..(i + h + 1).min(n)]);
+            let k = buf.len() / 2;
+            *buf.select_nth_unstable_by(k, f64::total_cmp).1
+        })
+        .collect()
+}
+
+/// The running medians of one channel of `run`, piece by piece between its
+/// time gaps, over `window` seconds.
+pub(super) fn smoothed(run: &MeasuredRun, x: &[f64], window: f64) -> Vec<f64> {
+    let mut out = Vec::with_capacity(x.len());
+    for (lo, hi) in gapless(&run.t) {
+        let dt = interval(&run.t[lo..hi]);
+        let h = if dt > 0.0 {
+            ((0.5 * window / dt).round() as usize).max(1)
+        } else {
+            1
+        };
+        out.extend(running_median(&x[lo..hi], h));
+    }
+    out
+}
+
+/// The speed's derivative without `ax`: central differences of its running
+/// median `u` across one window (one-sided at the pieces' ends).
+fn slope(t: &[f64], u: &[f64], window: f64) -> Vec<f64> {
+    let mut out = Vec::with_capacity(u.len());
+    for (lo, hi) in gapless(t) {
+        for i in lo..hi {
+            let a = lo + t[lo..i].partition_point(|&s| s < t[i] - 0.5 * window);
+            let b = i + t[i..hi].partition_point(|&s| s <= t[i] + 0.5 * window) - 1;
+            out.push(if t[b] > t[a] {
+                (u[b] - u[a]) / (t[b] - t[a])
+            } else {
+                0.0
+            });
+        }
+    }
+    out
+}
+
+/// The maximal stretches where `ok` holds, within the run's gapless
+/// pieces, cut by `trim` seconds at each end and at least `seconds` long
+/// after the cut.
+fn stretches(t: &[f64], ok: &[bool], trim: f64, seconds: f64) -> Vec<(usize, usize)> {
+    let mut out = Vec::new();
+    for (lo, hi) in gapless(t) {
+        let mut i = lo;
+        while i < hi {
+            if !ok[i] {
+                i += 1;
+                continue;
+            }
+            let mut j = i;
+            while j < hi && ok[j] {
+                j += 1;
+            }
+            let (a, b) = (t[i] + trim, t[j - 1] - trim);
+            let first = i + t[i..j].partition_point(|&s| s < a);
+            let end = i + t[i..j].partition_point(|&s| s <= b);
+            if end > first && t[end - 1] - t[first] >= seconds {
+                out.push((first, end));
+            }
+            i = j;
+        }
+    }
+    out
+}
+
+/// The standstills of `run`.
+pub(super) fn standstills(run: &MeasuredRun, c: &Criteria) -> Vec<(usize, usize)> {
+    let u = smoothed(run, &run.speed, c.median_window);
+    let ok: Vec<bool> = u.iter().map(|&v| v.abs() < c.standstill_speed).collect();
+    stretches(&run.t, &ok, c.standstill_trim, c.standstill_seconds)
+}
+
+/// The steer that holds the run straight: the median of the steer's
+/// running median over the moving samples whose yaw rate passes; None
+/// without any.
+fn straight_steer(d: &[f64], pass: &dyn Fn(usize) -> bool) -> Option<f64> {
+    let mut on: Vec<f64> = (0..d.len()).filter(|&i| pass(i)).map(|i| d[i]).collect();
+    (!on.is_empty()).then(|| median(&mut on))
+}
+
+/// The straights of `run` (judged against the yaw rate `yaw_reference`)
+/// and the candidates refused.
+pub(super) fn straights(
+    run: &MeasuredRun,
+    yaw_reference: f64,
+    c: &Criteria,
+) -> (Vec<(usize, usize)>, Vec<RejectedStraight>) {
+    let w = c.median_window;
+    let u = smoothed(run, &run.speed, w);
+    let r = smoothed(run, &run.yaw_rate, w);
+    let d = smoothed(run, &run.steer, w);
+    let ax = match &run.ax {
+        Some(a) => smoothed(run, a, w),
+        None => slope(&run.t, &u, w),
+    };
+    let turning = |i: usize| {
+        let dr = r[i] - yaw_reference;
+        u[i] < c.straight_speed
+            || dr.abs() > c.straight_yaw_rate
+            || (u[i] * dr).abs() > c.straight_lateral
+    };
+    let Some(d0) = straight_steer(&d, &|i| !turning(i)) else {
+        return (Vec::new(), Vec::new());
+    };
+    let ok: Vec<bool> = (0..u.len())
+        .map(|i| {
+            !turning(i) && (d[i] - d0).abs() <= c.straight_steer && ax[i].abs() <= c.straight_ax
+        })
+        .collect();
+    let mut kept = Vec::new();
+    let mut refused = Vec::new();
+    for (lo, hi) in stretches(&run.t, &ok, c.straight_trim, c.straight_seconds) {
+        let reasons = whole_span(&u[lo..hi], &r[lo..hi], c);
+        if reasons.is_empty() {
+            kept.push((lo, hi));
+        } else {
+            refused.push(RejectedStraight {
+                run: run.path.display().to_string(),
+                t_start: run.t[lo],
+                t_end: run.t[hi - 1],
+                reasons,
+            });
+        }
+    }
+    (kept, refused)
+}
+
+/// The whole-span tests of a candidate straight (running medians of speed
+/// `u` and yaw rate `r` over it): what fails.
+fn whole_span(u: &[f64], r: &[f64], c: &Criteria) -> Vec<Rejection> {
+    let n = r.len() as f64;
+    let mean_r = r.iter().sum::<f64>() / n;
+    let std = (r.iter().map(|x| (x - mean_r).powi(2)).sum::<f64>() / n).sqrt();
+    let mean_u = u.iter().sum::<f64>() / n;
+    let (lo, hi) = u
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+    let share = (hi - lo) / mean_u;
+    let mut out = Vec::new();
+    if std > c.straight_yaw_variation {
+        out.push(Rejection::YawRateVaries {
+            std,
+            limit: c.straight_yaw_variation,
+        });
+    }
+    if share > c.straight_speed_variation {
+        out.push(Rejection::SpeedVaries {
+            share,
+            limit: c.straight_speed_variation,
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_running_median_ignores_a_spike_and_keeps_a_step() {
+        let mut x = vec![0.0; 50];
+        x[20] = 100.0;
+        x[30..].iter_mut().for_each(|v| *v = 1.0);
+        let m = running_median(&x, 2);
+        assert_eq!(m[20], 0.0);
+        assert_eq!(m[29], 0.0);
+        assert_eq!(m[30], 1.0);
+    }
+
+    #[test]
+    fn stretches_are_cut_at_their_ends_and_at_time_gaps() {
+        // 100 Hz, 0–10 s and 12–20 s (a 2 s dropout), all passing.
+        let t: Vec<f64> = (0..1000)
+            .map(|i| i as f64 * 0.01)
+            .chain((0..800).map(|i| 12.0 + i as f64 * 0.01))
+            .collect();
+        let ok = vec![true; t.len()];
+        let s = stretches(&t, &ok, 1.0, 3.0);
+        assert_eq!(s.len(), 2);
+        assert!((t[s[0].0] - 1.0).abs() < 1e-9 && (t[s[0].1 - 1] - 8.99).abs() < 1e-9);
+        assert!((t[s[1].0] - 13.0).abs() < 1e-9 && (t[s[1].1 - 1] - 18.99).abs() < 1e-9);
+        // Too short after the cut: 4.5 s less 2 s is under 3 s.
+        let s = stretches(&t[..450], &ok[..450], 1.0, 3.0);
+        assert!(s.is_empty());
+    }
+}

@@ -1,0 +1,160 @@
+//! How a measurement system sees the vehicle ([`Sensors`]): the sensor
+//! effects among the diagnosis's candidates, part of the vehicle model's
+//! [`super::Effects`]. They act on the response the model computes, not
+//! on its dynamics. All zero is an ideal measurement.
+//!
+//! - `delay` (s): every channel reports its value `delay` seconds late;
+//! - `yaw_rate_bias` (rad/s), `ay_bias` (m/s²), `beta_bias` (rad): constant
+//!   offsets (a sideslip sensor's misalignment is one);
+//! - `accelerometer_x` (m, positive ahead of the centre of gravity): the
+//!   accelerometer also feels the yaw acceleration, `ay + x·ṙ`;
+//! - `roll_gradient` (rad per m/s²): the body rolls by φ = k·ay (ISO 8855:
+//!   positive φ puts the right side down, outward in a left turn) and a
+//!   body-fixed accelerometer reads `ay·cos φ + g·sin φ`.
+//!
+//! The numbers may be dual numbers ([`crate::scalar`]): what the sensors
+//! record then carries their derivatives. Units: SI, rad.
+
+use crate::constants::G;
+use crate::manoeuvre::interpolate_of;
+use crate::scalar::{off, Scalar};
+
+/// Sensor effects, in a scalar of [`crate::scalar`] (`f64` by default).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Sensors<T = f64> {
+    /// Reporting delay, s.
+    pub delay: T,
+    /// Yaw-rate offset, rad/s.
+    pub yaw_rate_bias: T,
+    /// Lateral-acceleration offset, m/s².
+    pub ay_bias: T,
+    /// Sideslip offset, rad.
+    pub beta_bias: T,
+    /// Accelerometer position ahead of the centre of gravity, m.
+    pub accelerometer_x: T,
+    /// Body roll per unit lateral acceleration, rad per m/s².
+    pub roll_gradient: T,
+}
+
+impl<T: Copy> Sensors<T> {
+    /// Every number mapped by `f` (a lift into dual numbers, their values).
+    pub fn map<U>(&self, f: impl Fn(T) -> U) -> Sensors<U> {
+        Sensors {
+            delay: f(self.delay),
+            yaw_rate_bias: f(self.yaw_rate_bias),
+            ay_bias: f(self.ay_bias),
+            beta_bias: f(self.beta_bias),
+            accelerometer_x: f(self.accelerometer_x),
+            roll_gradient: f(self.roll_gradient),
+        }
+    }
+}
+
+/// Central-difference derivative of `y` over `t` (one-sided at the ends).
+fn derivative<T: Scalar>(t: &[f64], y: &[T]) -> Vec<T> {
+    let n = t.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
+            if b > a {
+                (y[b] - y[a]) / (t[b] - t[a])
+            } else {
+                T::from(0.0)
+            }
+        })
+        .collect()
+}
+
+impl<T: Scalar> Sensors<T> {
+    /// What the sensors record of a response (yaw rate, `ay` and sideslip
+    /// at times `t`), at the same times: (yaw rate, ay, sideslip).
+    pub fn seen(&self, t: &[f64], yaw_rate: &[T], ay: &[T], beta: &[T]) -> [Vec<T>; 3] {
+        let yaw_acc = derivative(t, yaw_rate);
+        let ay_seen: Vec<T> = ay
+            .iter()
+            .zip(&yaw_acc)
+            .map(|(&ay, &ra)| {
+                let phi = self.roll_gradient * ay;
+                ay * phi.cos() + phi.sin() * G + self.accelerometer_x * ra + self.ay_bias
+            })
+            .collect();
+        let yaw_seen: Vec<T> = yaw_rate.iter().map(|&r| r + self.yaw_rate_bias).collect();
+        let late = |y: &[T]| -> Vec<T> {
+            if off(self.delay) {
+                y.to_vec()
+            } else {
+                t.iter()
+                    .map(|&s| interpolate_of(t, y, T::from(s) - self.delay))
+                    .collect()
+            }
+        };
+        let beta_seen = if off(self.beta_bias) {
+            late(beta)
+        } else {
+            let b: Vec<T> = beta.iter().map(|&b| b + self.beta_bias).collect();
+            late(&b)
+        };
+        [late(&yaw_seen), late(&ay_seen), beta_seen]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 10 s at 100 Hz of a 1.5 rad/s sine: (t, yaw rate, ay, sideslip).
+    fn history() -> [Vec<f64>; 4] {
+        let t: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.01).collect();
+        let wave = |a: f64| t.iter().map(|x| a * (1.5 * x).sin()).collect::<Vec<_>>();
+        let (r, ay, beta) = (wave(0.2), wave(4.0), wave(-0.01));
+        [t, r, ay, beta]
+    }
+
+    fn measure(s: &Sensors) -> [Vec<f64>; 3] {
+        let [t, r, ay, beta] = history();
+        s.seen(&t, &r, &ay, &beta)
+    }
+
+    #[test]
+    fn ideal_sensors_record_the_history() {
+        let [_, r, ay, beta] = history();
+        assert_eq!(measure(&Sensors::default()), [r, ay, beta]);
+    }
+
+    #[test]
+    fn each_sensor_effect_has_its_closed_form() {
+        let [time, r, ay, beta] = history();
+        let i = 400; // t = 4 s
+        let t = time[i];
+        let delayed = measure(&Sensors {
+            delay: 0.1,
+            ..Default::default()
+        });
+        assert!((delayed[0][i] - 0.2 * (1.5 * (t - 0.1)).sin()).abs() < 1e-4);
+        let biased = measure(&Sensors {
+            yaw_rate_bias: 0.01,
+            ay_bias: -0.2,
+            beta_bias: 0.003,
+            ..Default::default()
+        });
+        assert!((biased[2][i] - beta[i] - 0.003).abs() < 1e-15);
+        assert!((biased[0][i] - r[i] - 0.01).abs() < 1e-15);
+        assert!((biased[1][i] - ay[i] + 0.2).abs() < 1e-12);
+        let ahead = measure(&Sensors {
+            accelerometer_x: 0.5,
+            ..Default::default()
+        });
+        let rdot = 0.3 * (1.5 * t).cos();
+        assert!((ahead[1][i] - ay[i] - 0.5 * rdot).abs() < 1e-4);
+        let rolled = measure(&Sensors {
+            roll_gradient: 0.01,
+            ..Default::default()
+        });
+        let phi = 0.01 * ay[i];
+        assert!((rolled[1][i] - (ay[i] * phi.cos() + G * phi.sin())).abs() < 1e-12);
+        // Outward roll in a left turn (t = 1 s, ay > 0) reads more than the
+        // true acceleration.
+        let j = 100;
+        assert!(ay[j] > 0.0 && rolled[1][j] > ay[j]);
+    }
+}

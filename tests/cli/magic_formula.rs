@@ -447,7 +447,7 @@ fn tyre_eval_modes_agree_with_mfeval_past_the_limits() {
             let said = String::from_utf8_lossy(&o.stdout).to_string();
             assert!(said.contains(&format!("MFeval mode {mode}")), "{said}");
             assert_eq!(
-                said.contains("outside the file's limits"),
+                said.contains("outside the file's ranges"),
                 mode < 200.0,
                 "{said}"
             );

@@ -68,8 +68,10 @@ pub fn check_refusal(e: &InputError, path: &Path, bytes: &[u8], kind: Kind) -> R
         if kind == Kind::Csv && !named.iter().any(|n| msg.contains(n)) {
             return Err(format!("a CSV error naming no column: {msg}"));
         }
-        // A value refused on its merits names its key.
-        if kind == Kind::Text && msg.contains(" must ") && !msg.contains('`') {
+        // A value refused on its merits names its key (a byte that is not
+        // UTF-8 is the file's encoding, at its line and column, no value).
+        let encoding = msg.contains("is not UTF-8");
+        if kind == Kind::Text && msg.contains(" must ") && !msg.contains('`') && !encoding {
             return Err(format!("a value error naming no key: {msg}"));
         }
     }

@@ -10,11 +10,12 @@ mod json;
 pub mod outcome;
 pub(crate) mod parts;
 pub(crate) mod summary;
+mod values;
 pub mod words;
 
 pub use crate::diagnose::base::identify::{Axle, AxleIdentification, AxleLimit, AxleValue, NoTyre};
 pub use crate::diagnose::base::TyreSource;
-use crate::diagnose::effects::{Bound, EffectKind, Parameter};
+use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
@@ -24,65 +25,10 @@ pub use crate::diagnose::report::outcome::{
     VerdictKind, VerdictWarning,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
+pub use crate::diagnose::report::values::{ParameterValue, Shrinkage, LIMIT_RESOLUTION};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;
-
-/// A fitted parameter.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ParameterValue {
-    /// `effect.parameter`.
-    pub name: String,
-    /// Unit.
-    pub unit: &'static str,
-    /// Value fitted on all runs.
-    pub value: f64,
-    /// Its standard error (from the Jacobian; residual autocorrelation makes
-    /// it optimistic); NaN, written as `null`, where the runs do not pin it.
-    #[serde(serialize_with = "crate::report::finite_or_null")]
-    pub std_error: f64,
-    /// The value sits on one of its bounds ([`ParameterValue::bound`]).
-    pub at_bound: bool,
-    /// Which: a search bound (the data would take it further, and the
-    /// standard error says nothing about how far) or a physical limit (no
-    /// value lies beyond it).
-    pub bound: Option<Bound>,
-    /// The runs determine it: its standard error is finite and no larger
-    /// than the parameter's whole range ([`ParameterValue::of`]).
-    pub determined: bool,
-}
-
-/// A value within this share of its parameter's range from a physical
-/// limit stands on it: no run resolves the difference (a steer lag of a
-/// few microseconds is no lag). A search bound is where a fit pressed
-/// against it stops, exactly ([`Parameter::bound_at`]).
-pub const LIMIT_RESOLUTION: f64 = 1e-4;
-
-impl ParameterValue {
-    /// Parameter `q` of the effect group `group` fitted to `value` with
-    /// standard error `std_error`, and where it stands: on a bound (a
-    /// search bound as [`Parameter::bound_at`] finds it, a physical limit
-    /// within [`LIMIT_RESOLUTION`] of the range), and determined by the
-    /// runs or not (a standard error missing, or larger than the whole
-    /// range, says the runs do not see it).
-    pub fn of(group: &str, q: &Parameter, value: f64, std_error: f64) -> Self {
-        let (lo, hi) = q.bounds;
-        let near = LIMIT_RESOLUTION * (hi - lo);
-        let physical = |limit: Bound, at: bool| (limit == Bound::Physical && at).then_some(limit);
-        let bound = q.bound_at(value).or_else(|| {
-            physical(q.limits.0, value - lo <= near).or(physical(q.limits.1, hi - value <= near))
-        });
-        Self {
-            name: format!("{group}.{}", q.name),
-            unit: q.unit,
-            value,
-            std_error,
-            at_bound: bound.is_some(),
-            bound,
-            determined: std_error.is_finite() && std_error <= hi - lo,
-        }
-    }
-}
 
 /// Held-out RMS of one channel.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -167,25 +113,6 @@ pub struct Confounded {
     pub effects: Vec<EffectKind>,
     /// Their reductions, %.
     pub reduction_percent: Vec<f64>,
-}
-
-/// Before/after on held-out runs for one part of the data.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Shrinkage {
-    /// Channel.
-    pub channel: Channel,
-    /// All samples, a time window or a regime.
-    pub part: Part,
-    /// Samples.
-    pub samples: usize,
-    /// Held-out RMS with the base model.
-    pub before: f64,
-    /// Held-out RMS with the verdict's effects.
-    pub after: f64,
-    /// Noise floor of the channel.
-    pub noise_floor: f64,
-    /// Share of the gap above noise removed, %.
-    pub reduction_percent: f64,
 }
 
 /// Noise floor and scale of a channel.

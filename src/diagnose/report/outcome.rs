@@ -17,7 +17,7 @@ use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::parts::Part;
-use crate::diagnose::report::{ParameterValue, Shrinkage};
+use crate::diagnose::report::values::{ParameterValue, Shrinkage};
 use serde::{Deserialize, Serialize};
 
 /// Which case a verdict is.
@@ -100,11 +100,6 @@ impl Verdict {
             Verdict::Explained(e) => &e.warnings,
             _ => &[],
         }
-    }
-
-    /// The verdict in one sentence ([`super::words::statement`]).
-    pub fn statement(&self) -> String {
-        super::words::statement(self)
     }
 }
 

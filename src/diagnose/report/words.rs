@@ -19,6 +19,14 @@ use crate::diagnose::report::outcome::{
 };
 use crate::diagnose::report::{BaseReport, Confounded, ParameterValue, Shrinkage};
 
+impl Verdict {
+    /// The verdict in one sentence ([`statement`]; written here, beside
+    /// the other sentences, so that the types do not read their words).
+    pub fn statement(&self) -> String {
+        statement(self)
+    }
+}
+
 /// The verdict in one sentence.
 pub fn statement(v: &Verdict) -> String {
     match v {

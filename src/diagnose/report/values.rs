@@ -1,0 +1,87 @@
+//! The two report values the verdict's types carry: a fitted parameter
+//! where it stands against its bounds ([`ParameterValue`]) and a channel's
+//! held-out gap in one part of the data before and after the verdict's
+//! effects ([`Shrinkage`]). In their own file so that the typed outcome
+//! (`outcome.rs`) reads them without reading the report that holds it.
+//! Values in the parameter's own unit; RMS values in the channel's unit
+//! (rad/s, m/s², rad).
+
+use crate::diagnose::effects::{Bound, Parameter};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::parts::Part;
+use serde::Serialize;
+
+/// A fitted parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParameterValue {
+    /// `effect.parameter`.
+    pub name: String,
+    /// Unit.
+    pub unit: &'static str,
+    /// Value fitted on all runs.
+    pub value: f64,
+    /// Its standard error (from the Jacobian; residual autocorrelation makes
+    /// it optimistic); NaN, written as `null`, where the runs do not pin it.
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub std_error: f64,
+    /// The value sits on one of its bounds ([`ParameterValue::bound`]).
+    pub at_bound: bool,
+    /// Which: a search bound (the data would take it further, and the
+    /// standard error says nothing about how far) or a physical limit (no
+    /// value lies beyond it).
+    pub bound: Option<Bound>,
+    /// The runs determine it: its standard error is finite and no larger
+    /// than the parameter's whole range ([`ParameterValue::of`]).
+    pub determined: bool,
+}
+
+/// A value within this share of its parameter's range from a physical
+/// limit stands on it: no run resolves the difference (a steer lag of a
+/// few microseconds is no lag). A search bound is where a fit pressed
+/// against it stops, exactly ([`Parameter::bound_at`]).
+pub const LIMIT_RESOLUTION: f64 = 1e-4;
+
+impl ParameterValue {
+    /// Parameter `q` of the effect group `group` fitted to `value` with
+    /// standard error `std_error`, and where it stands: on a bound (a
+    /// search bound as [`Parameter::bound_at`] finds it, a physical limit
+    /// within [`LIMIT_RESOLUTION`] of the range), and determined by the
+    /// runs or not (a standard error missing, or larger than the whole
+    /// range, says the runs do not see it).
+    pub fn of(group: &str, q: &Parameter, value: f64, std_error: f64) -> Self {
+        let (lo, hi) = q.bounds;
+        let near = LIMIT_RESOLUTION * (hi - lo);
+        let physical = |limit: Bound, at: bool| (limit == Bound::Physical && at).then_some(limit);
+        let bound = q.bound_at(value).or_else(|| {
+            physical(q.limits.0, value - lo <= near).or(physical(q.limits.1, hi - value <= near))
+        });
+        Self {
+            name: format!("{group}.{}", q.name),
+            unit: q.unit,
+            value,
+            std_error,
+            at_bound: bound.is_some(),
+            bound,
+            determined: std_error.is_finite() && std_error <= hi - lo,
+        }
+    }
+}
+
+/// Before/after on held-out runs for one part of the data.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Shrinkage {
+    /// Channel.
+    pub channel: Channel,
+    /// All samples, a time window or a regime.
+    pub part: Part,
+    /// Samples.
+    pub samples: usize,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
+    /// Noise floor of the channel.
+    pub noise_floor: f64,
+    /// Share of the gap above noise removed, %.
+    pub reduction_percent: f64,
+}

@@ -118,6 +118,26 @@ fn central(problem: &impl Residuals, p: &[f64], bounds: &[(f64, f64)], step: f64
     j
 }
 
+/// The problem of `layout` on `runs` within `bounds`, its Jacobian exact
+/// (one dual replay of each run).
+fn exact_problem<'a>(
+    (layout, base): (&'a Layout, &'a Augmented),
+    runs: &'a [Prepared],
+    bounds: &[(f64, f64)],
+) -> Problem<'a, impl Fn(&[f64]) -> Augmented + Sync + 'a> {
+    Problem::new(
+        move |q: &[f64]| build(layout, base, q),
+        runs.iter().collect(),
+        [0.01, 0.2, 0.002],
+        bounds.to_vec(),
+    )
+    .with_layout(
+        layout.clone(),
+        base,
+        crate::optim::local::Derivatives::Exact,
+    )
+}
+
 /// The exact Jacobian of the problem of `layout` on `runs` at `p`, and its
 /// columns' errors against central differences of steps `step` of the
 /// boxes.
@@ -128,18 +148,7 @@ fn check(
     bounds: Vec<(f64, f64)>,
     step: f64,
 ) -> Vec<f64> {
-    let scales = [0.01, 0.2, 0.002];
-    let problem = Problem::new(
-        |q: &[f64]| build(layout, base, q),
-        runs.iter().collect(),
-        scales,
-        bounds.clone(),
-    )
-    .with_layout(
-        layout.clone(),
-        base,
-        crate::optim::local::Derivatives::Exact,
-    );
+    let problem = exact_problem((layout, base), runs, &bounds);
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
     let exact = problem.jacobian(p, &r, &bounds);
@@ -256,17 +265,7 @@ fn on_a_zero_delay_or_lag_the_exact_jacobian_is_the_one_sided_derivative_into_th
     ] {
         let (layout, base) = (Layout::new(&[kind], false), sedan());
         let bounds: Vec<(f64, f64)> = kind.parameters().iter().map(|q| q.bounds).collect();
-        let problem = Problem::new(
-            |q: &[f64]| build(&layout, &base, q),
-            runs.iter().collect(),
-            [0.01, 0.2, 0.002],
-            bounds.clone(),
-        )
-        .with_layout(
-            layout.clone(),
-            &base,
-            crate::optim::local::Derivatives::Exact,
-        );
+        let problem = exact_problem((&layout, &base), &runs, &bounds);
         let mut r0 = vec![0.0; problem.count()];
         problem.residuals(&p, &mut r0);
         let exact = problem.jacobian(&p, &r0, &bounds);
@@ -425,17 +424,7 @@ fn zz_dump_bits() {
             p.push(inside(q));
             bounds.push(q.bounds);
         }
-        let problem = Problem::new(
-            |q: &[f64]| build(&layout, &base, q),
-            runs.iter().collect(),
-            [0.01, 0.2, 0.002],
-            bounds.clone(),
-        )
-        .with_layout(
-            layout.clone(),
-            &base,
-            crate::optim::local::Derivatives::Exact,
-        );
+        let problem = exact_problem((&layout, &base), &runs, &bounds);
         let mut r = vec![0.0; problem.count()];
         problem.residuals(&p, &mut r);
         let j = problem.jacobian(&p, &r, &bounds);

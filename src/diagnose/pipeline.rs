@@ -56,8 +56,9 @@ use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
+use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::model::{Augmented, Observed};
-use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
+use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, run_scatter};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
@@ -88,9 +89,9 @@ pub fn work_units(c: &Campaign) -> usize {
     1 + singles + combos
 }
 
-/// Channel scales before the base model exists (for the axle fit): 2 % of
-/// each channel's RMS signal, refined with the noise floors later.
-fn signal_scales(c: &Campaign) -> [f64; 3] {
+/// Each channel's RMS signal over every sample of every run (0 where no
+/// run measures it).
+fn signal_rms(c: &Campaign) -> [f64; 3] {
     Channel::ALL.map(|ch| {
         let (mut s, mut n) = (0.0, 0usize);
         for r in &c.runs {
@@ -100,42 +101,74 @@ fn signal_scales(c: &Campaign) -> [f64; 3] {
             }
         }
         if n == 0 {
-            0.02
+            0.0
         } else {
-            0.02 * (s / n as f64).sqrt().max(1e-9)
+            (s / n as f64).sqrt()
         }
     })
 }
 
-/// Noise floors pooled over runs (median), the channel scales (the floor,
-/// at least `hint`) and the floors by channel index.
-fn noise_table(run_gaps: &[RunGap], hint: [f64; 3]) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
-    let mut scales = hint;
+/// How far each channel is trusted, before any model: the median over
+/// runs of its high-frequency scatter, the user's stated uncertainty and
+/// the sensor floors ([`channel_scale`]). The table, the fits' scales and
+/// the noise floors by channel index (a channel no run measures keeps
+/// scale 1 and floor 0: it has no residuals).
+fn channel_trust(c: &Campaign) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
+    let per_run: Vec<[Option<(f64, f64)>; 3]> = c.runs.par_iter().map(run_scatter).collect();
+    let rms = signal_rms(c);
+    let mut scales = [1.0; 3];
     let mut floors = [0.0; 3];
     let noise = Channel::ALL
         .into_iter()
         .filter_map(|ch| {
-            let per_run: Vec<f64> = run_gaps
+            let scatter: Vec<f64> = per_run
                 .iter()
-                .filter_map(|g| g.channels.iter().find(|x| x.channel == ch))
-                .map(|x| x.noise_floor)
+                .filter_map(|r| r[ch.index()].map(|x| x.0))
                 .collect();
-            (!per_run.is_empty()).then(|| {
-                let nf = median(per_run.clone());
-                scales[ch.index()] = nf.max(hint[ch.index()]);
-                floors[ch.index()] = nf;
+            (!scatter.is_empty()).then(|| {
+                let runs = scatter.len();
+                let trust = channel_scale(ch, &c.uncertainty, median(scatter), rms[ch.index()]);
+                scales[ch.index()] = trust.scale;
+                floors[ch.index()] = trust.uncertainty;
                 ChannelNoise {
                     channel: ch,
                     unit: ch.unit(),
-                    noise_floor: nf,
-                    scale: scales[ch.index()],
-                    runs: per_run.len(),
+                    noise_floor: trust.uncertainty,
+                    scale: trust.scale,
+                    source: trust.source,
+                    scatter: trust.scatter,
+                    runs,
                 }
             })
         })
         .collect();
     (noise, scales, floors)
 }
+
+/// The channel whose share of the base model's held-out error `J²`
+/// exceeds [`DOMINANT_SHARE`], when more than one channel is measured.
+fn dominant(e: &ChannelErrors, scales: &[f64; 3]) -> Option<GapFinding> {
+    let parts: Vec<(Channel, f64)> = Channel::ALL
+        .into_iter()
+        .filter(|c| e.count[c.index()] > 0)
+        .map(|c| (c, e.sum_sq[c.index()] / scales[c.index()].powi(2)))
+        .collect();
+    let total: f64 = parts.iter().map(|p| p.1).sum();
+    if parts.len() < 2 || total <= 0.0 {
+        return None;
+    }
+    parts
+        .into_iter()
+        .find(|p| p.1 / total > DOMINANT_SHARE)
+        .map(|(channel, part)| GapFinding::Dominant {
+            channel,
+            share_percent: 100.0 * part / total,
+        })
+}
+
+/// A channel carrying more than this share of the base's combined error
+/// decides every fit: the report names it.
+pub const DOMINANT_SHARE: f64 = 2.0 / 3.0;
 
 /// Held-out replays of every run, before and after, largest base gap first.
 fn overlays(ctx: &Context, before: &[Observed], after: &[Observed]) -> Vec<Overlay> {
@@ -316,14 +349,13 @@ fn run(
 ) -> Result<Diagnosis, Error> {
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
-    let hint = signal_scales(c);
-    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, hint, timing)?;
+    let (noise, scales, floors) = channel_trust(c);
+    let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, scales, timing)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);
     }
 
     let run_gaps = base_gaps(c, &bases.all);
-    let (noise, scales, floors) = noise_table(&run_gaps, hint);
     let ctx = Context {
         runs,
         folds,
@@ -377,7 +409,8 @@ fn run(
         &base_no_tyre,
     );
     let overlays = overlays(&ctx, &base_obs, &after_obs);
-    let findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
+    let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
+    findings.extend(dominant(&base.heldout, &scales));
     Ok(Diagnosis {
         campaign: c.name.clone(),
         seed: set.seed,

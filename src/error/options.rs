@@ -25,11 +25,13 @@ pub enum NameKind {
     Start,
     /// A coefficient of a Magic Formula `.tir` (`PKY4`, …).
     MfCoefficient,
+    /// A class of tyres (the prior of axles identified from runs).
+    TyreClass,
 }
 
 impl NameKind {
     /// Every kind.
-    pub const ALL: [NameKind; 8] = [
+    pub const ALL: [NameKind; 9] = [
         NameKind::TyreModel,
         NameKind::Metric,
         NameKind::Unit,
@@ -38,6 +40,7 @@ impl NameKind {
         NameKind::Effect,
         NameKind::Start,
         NameKind::MfCoefficient,
+        NameKind::TyreClass,
     ];
 
     /// The kind as the messages name it.
@@ -51,6 +54,7 @@ impl NameKind {
             NameKind::Effect => "effect",
             NameKind::Start => "start",
             NameKind::MfCoefficient => "Magic Formula coefficient",
+            NameKind::TyreClass => "tyre class",
         }
     }
 }

@@ -127,6 +127,10 @@ pub enum ParamReason {
     /// A `[tyres]` table that names no single source of tyres.
     #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
     TyreSource,
+    /// A prior of the axles (`class`, `cornering`, `friction`) beside tyre
+    /// files or rig data, which leave no axles to identify.
+    #[error("a prior of the axles (`class`, `cornering`, `friction`) applies only without tyre files or rig data, when the diagnosis identifies the axles from the runs")]
+    PriorWithTyres,
     /// A name that is no member of its closed set (a model, a unit, a
     /// metric, an effect): [`OptionsError::UnknownName`]. Boxed, as every
     /// large payload here, so that an error stays small to return.
@@ -186,6 +190,9 @@ pub enum Limit {
     /// The most effects a verdict names.
     #[error("the verdict names up to this many effects, so at least one")]
     MaxEffects,
+    /// The upper end of a prior's 95 % range.
+    #[error("a range's upper end must lie above its lower end")]
+    PriorRange,
     /// The particles of each effect fit's swarm.
     #[error("each effect fit's swarm needs a particle")]
     Particles,

@@ -78,6 +78,8 @@ impl Synthetic {
             vehicle: self.vehicle.clone(),
             friction: 1.0,
             tyres,
+            prior: Default::default(),
+            uncertainty: Default::default(),
             source,
             run_files: self.runs.len(),
             runs,

@@ -238,6 +238,7 @@ mod messages;
 mod mf_combined_fy;
 mod mf_identify;
 mod mf_vertical;
+mod priors;
 mod programmes;
 mod proving_ground;
 mod real_logs;

@@ -37,7 +37,7 @@ fn reduction(d: &serde_json::Value, effect: &str) -> f64 {
     ranked(d, effect)["reduction_percent"].as_f64().unwrap()
 }
 
-fn parameter(d: &serde_json::Value, name: &str) -> f64 {
+pub(crate) fn parameter(d: &serde_json::Value, name: &str) -> f64 {
     d["verdict"]["parameters"]
         .as_array()
         .unwrap()

@@ -33,6 +33,7 @@
 //! Units: SI, rad; k in 1/rad (N of lateral force per N of load per rad of
 //! slip), D dimensionless.
 
+use crate::diagnose::base::prior::PriorReport;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::FIT_TOLERANCE;
 #[cfg(test)]
@@ -160,6 +161,19 @@ pub enum NoTyre {
         /// Its cornering coefficient over the peak friction, 1/rad.
         coefficient_over_friction: f64,
     },
+    /// A characteristic far outside the prior of the car's tyres (beyond
+    /// [`crate::diagnose::base::prior::OUTSIDE_PRIOR`] standard deviations):
+    /// no tyre of that class.
+    OutsidePrior {
+        /// The characteristic ([`AXLE_NAMES`]).
+        parameter: &'static str,
+        /// Its value (1/rad, or dimensionless for the friction).
+        value: f64,
+        /// The prior's 95 % range.
+        range: [f64; 2],
+        /// Standard deviations from the prior's centre, in `ln x`.
+        z: f64,
+    },
 }
 
 /// One axle characteristic as identified, in physical units.
@@ -176,6 +190,9 @@ pub struct AxleValue {
     pub std_error: f64,
     /// The limit it stands on, if any.
     pub limit: Option<AxleLimit>,
+    /// Whether it was held at its prior's value (the peak friction of runs
+    /// that never approach the limit, [`crate::diagnose::base::prior`]).
+    pub held: bool,
 }
 
 /// The axle characteristics identified from the runs, and how well the
@@ -192,6 +209,9 @@ pub struct AxleIdentification {
     /// Why the base is no tyre (a rigid axle, one without force, no grip,
     /// an early peak); empty for a tyre.
     pub no_tyre: Vec<NoTyre>,
+    /// The prior the axles were fitted against, and where they lie on it
+    /// (the base's identification; None for a candidate's axles).
+    pub prior: Option<PriorReport>,
 }
 
 /// Names of the three characteristics.
@@ -219,6 +239,7 @@ impl AxleIdentification {
                 },
                 std_error: se[i] * if i < 2 { d_k(p[i]) } else { d_d(p[i]) },
                 limit: AxleLimit::of(i, p),
+                held: false,
             })
             .collect();
         let largest_correlation = cov.and_then(|c| {
@@ -250,7 +271,23 @@ impl AxleIdentification {
             largest_correlation,
             starts,
             no_tyre,
+            prior: None,
         }
+    }
+
+    /// The same identification fitted against `prior`: a peak friction the
+    /// rule held is named so, without a standard error (it was not
+    /// fitted).
+    pub fn with_prior(mut self, prior: PriorReport) -> Self {
+        self.no_tyre.extend(prior.far_outside());
+        if !prior.friction_rule.free {
+            let d = &mut self.parameters[2];
+            d.held = true;
+            d.std_error = f64::NAN;
+            d.limit = None;
+        }
+        self.prior = Some(prior);
+        self
     }
 
     /// Whether the axles are no tyre.
@@ -266,11 +303,14 @@ pub fn axle_grid<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     tail: &[f64],
 ) -> Vec<(f64, Vec<f64>)> {
+    // A held friction is where the grid starts too: a grid at another
+    // would be judged against its hold.
+    let friction_share = problem.grid_friction(GRID_FRICTION);
     let points: Vec<Vec<f64>> = GRID
         .iter()
         .flat_map(|&f| GRID.iter().map(move |&r| (f, r)))
         .map(|(f, r)| {
-            let mut p = vec![f, r, GRID_FRICTION];
+            let mut p = vec![f, r, friction_share];
             p.extend_from_slice(tail);
             p
         })

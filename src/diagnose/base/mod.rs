@@ -2,12 +2,17 @@
 //! model fitted to its rig data, or — with neither — axle characteristics
 //! identified from the runs (`identify`) and refitted on every fold and
 //! with every candidate, since an effect changes what the tyres must have
-//! been. The campaign's `[roll]` is the base models' roll
+//! been, against the campaign's prior of the axles (`prior`: by tyre
+//! class, the peak friction held where the runs never approach it). The
+//! campaign's `[roll]` is the base models' roll
 //! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
 pub(crate) mod identify;
+pub mod prior;
 
 use crate::diagnose::base::identify::{identify_axles, AxleIdentification};
+use crate::diagnose::base::prior::{FrictionRule, PriorReport, PriorRows};
+use crate::diagnose::campaign::prior::AxlePrior;
 use crate::diagnose::campaign::{BaseTyres, Campaign};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::problem::Problem;
@@ -59,6 +64,9 @@ pub(super) struct Bases {
     pub(super) axle: Option<(Vec<f64>, Vec<Vec<f64>>)>,
     /// How the runs pin them, and whether they are a tyre at all.
     pub(super) identification: Option<AxleIdentification>,
+    /// The prior's rows every fit of the axle characteristics appends
+    /// (they lead the vector).
+    pub(super) prior: Option<PriorRows>,
 }
 
 /// The base models: all runs and each fold's training runs.
@@ -83,6 +91,7 @@ pub(super) fn base_models(
         nominal_share,
         axle: None,
         identification: None,
+        prior: None,
     };
     match &c.tyres {
         BaseTyres::Given(f, r) => Ok((
@@ -123,8 +132,15 @@ pub(super) fn base_models(
         }
         BaseTyres::FromRuns => {
             let d = c.settings.derivatives;
-            let bases =
-                axles_from_runs(runs, folds, (scales_hint, nominal_share), (make, d), timing);
+            let rule = FrictionRule::of_runs(&c.prior, &c.runs);
+            let bases = axles_from_runs(
+                runs,
+                folds,
+                (scales_hint, nominal_share),
+                (make, d),
+                (c.prior, rule),
+                timing,
+            );
             Ok((bases, TyreSource::FromRuns, None))
         }
     }
@@ -145,8 +161,10 @@ fn axles_from_runs(
     folds: &[Vec<usize>],
     (scales_hint, nominal_share): ([f64; 3], f64),
     (make, derivatives): (impl Fn(Tyre, Tyre) -> Augmented + Sync, Derivatives),
+    (prior, rule): (AxlePrior, FrictionRule),
     timing: Option<&Recorder>,
 ) -> Bases {
+    let rows = PriorRows::new(&prior, &rule, 0);
     let build = |p: &[f64]| {
         let (f, r) = axle_tyres(p);
         make(f, r)
@@ -159,7 +177,8 @@ fn axles_from_runs(
         scales_hint,
         AXLE_BOUNDS.to_vec(),
     )
-    .with_layout(layout.clone(), &model, derivatives);
+    .with_layout(layout.clone(), &model, derivatives)
+    .with_prior(Some(rows));
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
@@ -190,8 +209,10 @@ fn axles_from_runs(
                 scales_hint,
                 AXLE_BOUNDS.to_vec(),
             )
-            .with_layout(layout.clone(), &model, derivatives);
-            let q = refit(&p, &full, &training_rows(runs, &folds[k])).params;
+            .with_layout(layout.clone(), &model, derivatives)
+            .with_prior(Some(rows));
+            let held_out = &folds[k];
+            let q = refit(&p, &full, &training_rows(runs, held_out, PriorRows::ROWS)).params;
             if let (Some(rec), Some(st)) = (timing, &stamps) {
                 rec.add(Phase::BaseFolds, t0.elapsed(), st.count());
             }
@@ -203,13 +224,15 @@ fn axles_from_runs(
         .linear
         .as_ref()
         .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
-    let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts);
+    let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts)
+        .with_prior(PriorReport::new(prior, rule, p));
     Bases {
         all: build(p),
         folds: fold_params.iter().map(|q| build(q)).collect(),
         nominal_share,
         axle: Some((p.clone(), fold_params)),
         identification: Some(id),
+        prior: Some(rows),
     }
 }
 

@@ -32,7 +32,7 @@ pub struct FitOutcome {
     pub params: Vec<f64>,
     /// Standard errors (NaN when not identifiable).
     pub std_errors: Vec<f64>,
-    /// ½·Σ e² of the scaled residuals.
+    /// ½·Σ e² of the scaled data residuals (without a prior's rows).
     pub cost: f64,
     /// Number of residuals.
     pub residuals: usize,
@@ -158,7 +158,10 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         evaluations += lm.evaluations;
         // The polish accepts only steps that lower the cost (and returns its
         // start when its cost is not finite): it ends no worse than it began.
-        (lm.params, lm.cost, lm.converged)
+        // The cost reported is the data's: the prior's rows regularise
+        // the fit, they are no misfit of the runs.
+        let data_cost = lm.cost - problem.prior_cost(&lm.params);
+        (lm.params, data_cost, lm.converged)
     };
     let mut params = params;
     let (std_errors, linear) = match polish {

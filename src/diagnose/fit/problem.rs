@@ -10,9 +10,13 @@
 //! The residual of channel c at a sample is `(simulated − measured)/s_c`,
 //! with `s_c` the channel's scale (its noise floor, at least 2 % of its RMS
 //! signal, so that a very quiet channel does not drown the others). The
-//! cost is `½·Σ r²` over every run and channel. Parameters are clamped into
-//! their box. Units: SI, rad.
+//! cost is `½·Σ r²` over every run and channel. Where the axle
+//! characteristics are fitted, their prior's rows follow the data's
+//! ([`Problem::with_prior`], [`PriorRows`]): the fit is regularised, and
+//! [`Problem::prior_cost`] is what the rows add to the cost. Parameters are
+//! clamped into their box. Units: SI, rad.
 
+use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::replay::{LastReplay, Prepared};
 use crate::diagnose::model::Augmented;
@@ -41,6 +45,8 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     /// What the parameters set and the base model's effects they are set
     /// on, when the problem has exact derivatives ([`Problem::with_layout`]).
     layout: Option<(Layout, Effects)>,
+    /// The prior's rows on the axle characteristics, after the data's.
+    prior: Option<PriorRows>,
 }
 
 impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
@@ -60,7 +66,35 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             bounds,
             last,
             layout: None,
+            prior: None,
         }
+    }
+
+    /// The same problem with the prior's rows `prior` after the data's
+    /// residuals (none for `None`).
+    pub fn with_prior(mut self, prior: Option<PriorRows>) -> Self {
+        self.prior = prior;
+        self
+    }
+
+    /// The prior's rows appended to the data residuals (0 without a prior).
+    pub fn prior_count(&self) -> usize {
+        self.prior.map_or(0, |_| PriorRows::ROWS)
+    }
+
+    /// What the prior's rows add to the cost at `p`, `½·Σ r²`.
+    pub fn prior_cost(&self, p: &[f64]) -> f64 {
+        self.prior.map_or(0.0, |rows| {
+            let mut r = [0.0; PriorRows::ROWS];
+            rows.write(&self.clamp(p), &mut r);
+            0.5 * r.iter().map(|e| e * e).sum::<f64>()
+        })
+    }
+
+    /// The friction share an axle grid starts from: a held friction's, else
+    /// `free`.
+    pub fn grid_friction(&self, free: f64) -> f64 {
+        self.prior.map_or(free, |rows| rows.grid_friction(free))
     }
 
     /// The same problem with exact derivatives when `derivatives` asks
@@ -108,10 +142,15 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
     /// polish, [`BoundedLm`](crate::optim::bounded::BoundedLm), stays
     /// inside them).
     fn count(&self) -> usize {
-        self.data_count()
+        self.data_count() + self.prior_count()
     }
     fn residuals(&self, p: &[f64], out: &mut [f64]) {
-        self.data_residuals(&self.clamp(p), out);
+        let q = self.clamp(p);
+        let (data, prior) = out.split_at_mut(self.data_count());
+        self.data_residuals(&q, data);
+        if let Some(rows) = &self.prior {
+            rows.write(&q, prior);
+        }
     }
     /// Exact (one dual replay of each run) with a layout whose tyres have
     /// a generic force, else forward differences into the box.
@@ -128,7 +167,17 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
                 &self.scales,
                 &q,
             ) {
-                return j;
+                return match &self.prior {
+                    Some(rows) => {
+                        let n = q.len();
+                        let mut all = j.resize_vertically(self.count(), 0.0);
+                        let tail = rows.jacobian(&q, n);
+                        all.rows_mut(self.data_count(), PriorRows::ROWS)
+                            .copy_from(&tail);
+                        all
+                    }
+                    None => j,
+                };
             }
         }
         inward_jacobian(self, p, r0, bounds)

@@ -91,8 +91,14 @@ const REFIT_MODEL_REJECTIONS: usize = 8;
 const REFIT_RELINEARISATIONS: usize = 4;
 
 /// The residual rows of a fold's training runs (all but `held_out`) in the
-/// all-run problem, whose rows follow the runs' order.
-pub(crate) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+/// all-run problem, whose rows follow the runs' order, then its `prior`
+/// rows (the axle characteristics' prior, [`Problem::with_prior`]), which
+/// every fold shares.
+pub(crate) fn training_rows(
+    runs: &[Prepared],
+    held_out: &[usize],
+    prior: usize,
+) -> Vec<std::ops::Range<usize>> {
     let mut start = 0;
     let mut rows = Vec::new();
     for (i, r) in runs.iter().enumerate() {
@@ -101,6 +107,9 @@ pub(crate) fn training_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::o
             rows.push(start..start + n);
         }
         start += n;
+    }
+    if prior > 0 {
+        rows.push(start..start + prior);
     }
     rows
 }
@@ -181,9 +190,9 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
         if predicted <= REFIT_DECREASE * cost {
             if trusted {
                 return FitOutcome {
-                    params: p,
                     std_errors: vec![f64::NAN; n],
-                    cost,
+                    cost: cost - problem.prior_cost(&p),
+                    params: p,
                     residuals: problem.data_count(),
                     evaluations,
                     converged: true,
@@ -293,7 +302,7 @@ mod tests {
                 .map(|i| &runs[i])
                 .collect();
             let fold = Problem::new(axle_model, train, SCALES, AXLES.to_vec());
-            let quick = refit(&fold, &full, &training_rows(&runs, &[held]));
+            let quick = refit(&fold, &full, &training_rows(&runs, &[held], 0));
             let slow = fit(&fold, &full.params, None, Polish::LevenbergMarquardt);
             assert!(quick.converged);
             assert!(
@@ -331,7 +340,7 @@ mod tests {
             SCALES,
             AXLES.to_vec(),
         );
-        let rows = training_rows(&runs, &[0]);
+        let rows = training_rows(&runs, &[0], 0);
         let quick = refit(&fold, &far, &rows);
         let slow = fit(&fold, &start, None, Polish::LevenbergMarquardt);
         assert!(quick.converged && slow.converged);

@@ -27,6 +27,7 @@
 pub(crate) mod axles;
 pub(crate) mod channels;
 pub(crate) mod replay;
+pub(crate) mod scale;
 
 use crate::manoeuvre::interpolate;
 pub use crate::sim::{Drive, FixedStep};

@@ -13,6 +13,8 @@ pub(crate) mod summary;
 mod values;
 pub mod words;
 
+pub use crate::diagnose::model::scale::ScaleSource;
+
 pub use crate::diagnose::base::identify::{Axle, AxleIdentification, AxleLimit, AxleValue, NoTyre};
 pub use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::EffectKind;
@@ -122,10 +124,16 @@ pub struct ChannelNoise {
     pub channel: Channel,
     /// Unit.
     pub unit: &'static str,
-    /// Median over runs of the noise floor.
+    /// The uncertainty the channel is trusted to, its noise floor: stated,
+    /// or the median over runs of its scatter, at least its sensor type's
+    /// floor, or an estimated output's ([`ScaleSource`]).
     pub noise_floor: f64,
     /// Residual scale used in the fits.
     pub scale: f64,
+    /// Where the noise floor comes from.
+    pub source: ScaleSource,
+    /// The median over runs of its high-frequency scatter.
+    pub scatter: f64,
     /// Runs measuring it.
     pub runs: usize,
 }

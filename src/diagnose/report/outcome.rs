@@ -363,6 +363,14 @@ pub enum GapFinding {
         /// Phase error, degrees.
         phase_error_deg: f64,
     },
+    /// One channel carries most of the base model's held-out error: it
+    /// decides every fit.
+    Dominant {
+        /// The channel.
+        channel: Channel,
+        /// Its share of `J²`, %.
+        share_percent: f64,
+    },
     /// Runs without an ay channel: their |ay| levels are u·r.
     WithoutAy {
         /// Such runs.

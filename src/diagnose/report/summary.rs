@@ -38,6 +38,23 @@ pub(crate) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> Ru
     }
 }
 
+/// The high-frequency scatter of each channel a run measures (None where
+/// it does not) and its RMS, on its scored samples, as the run's gap
+/// estimates its noise floor ([`channel_gap`]): known before any model.
+pub(crate) fn run_scatter(run: &MeasuredRun) -> [Option<(f64, f64)>; 3] {
+    let idx = crate::diagnose::report::gap::scored_samples(run);
+    let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
+    let (t, steer) = (pick(&run.t), pick(&run.steer));
+    let pre = &crate::diagnose::report::parts::window_samples(&t, &steer)[0].1;
+    Channel::ALL.map(|c| {
+        c.of(run).map(|v| {
+            let v = pick(v);
+            let rms = (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt();
+            (crate::diagnose::report::gap::scatter(pre, &v).0, rms)
+        })
+    })
+}
+
 /// Held-out RMS before/after pooled over runs per channel, window and regime.
 pub(crate) fn parts_table(
     runs: &[MeasuredRun],

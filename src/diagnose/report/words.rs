@@ -11,13 +11,16 @@
 use crate::diagnose::base::identify::{
     AxleIdentification, AxleLimit, NoTyre, PEAK_SLIP_MIN, SHAPE,
 };
+use crate::diagnose::base::prior::PriorReport;
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::outcome::{
     ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
     Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
-use crate::diagnose::report::{BaseReport, Confounded, ParameterValue, Shrinkage};
+use crate::diagnose::report::{
+    BaseReport, ChannelNoise, Confounded, ParameterValue, ScaleSource, Shrinkage,
+};
 
 impl Verdict {
     /// The verdict in one sentence ([`statement`]; written here, beside
@@ -232,6 +235,18 @@ pub fn no_tyre(r: &NoTyre) -> String {
             coefficient_over_friction,
             PEAK_SLIP_MIN.to_degrees()
         ),
+        NoTyre::OutsidePrior {
+            parameter,
+            value,
+            range,
+            z,
+        } => format!(
+            "the {parameter} {value:.3} lies {:.1} standard deviations {} the prior's range {:.2}–{:.2} (no tyre of the stated class): the data pull the axles to stand in for what the model lacks",
+            z.abs(),
+            if *z > 0.0 { "above the centre of" } else { "below the centre of" },
+            range[0],
+            range[1]
+        ),
     }
 }
 
@@ -261,6 +276,12 @@ pub fn axles_line(id: &AxleIdentification) -> String {
         .iter()
         .map(|v| {
             let digits = if v.unit == "-" { 3 } else { 1 };
+            if v.held {
+                return format!(
+                    "{} {:.digits$} (held at the prior's centre)",
+                    v.name, v.value
+                );
+            }
             match v.limit {
                 Some(l) => limit_meaning(l, v.name).replacen(
                     v.name,
@@ -288,10 +309,54 @@ pub fn axles_line(id: &AxleIdentification) -> String {
     if let Some((a, b, rho)) = &id.largest_correlation {
         s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
     }
+    if let Some(p) = &id.prior {
+        s.push_str(&format!("; {}", prior_line(p)));
+    }
     if id.degenerate() {
         s.push_str(&format!("; no tyre: {}", no_tyre_list(&id.no_tyre)));
     }
     s
+}
+
+/// The prior the axles were fitted against, the friction rule, and where
+/// the axles lie on it.
+pub fn prior_line(p: &PriorReport) -> String {
+    let a = &p.prior;
+    let class = a.class.map_or("stated ranges".to_string(), |c| {
+        format!("{} tyres", c.name().replace('_', " "))
+    });
+    let rule = &p.friction_rule;
+    let friction = if rule.free {
+        format!(
+            "peak friction fitted: the runs reach |ay| {:.1} m/s² (99.5th percentile), at least {:.1} m/s² (0.8 of the lowest grip)",
+            rule.ay, rule.threshold
+        )
+    } else {
+        format!(
+            "peak friction held at {:.2}: the runs reach |ay| {:.1} m/s² (99.5th percentile), below {:.1} m/s² (0.8 of the lowest grip), so they do not show it",
+            rule.value, rule.ay, rule.threshold
+        )
+    };
+    let names = ["front", "rear", "peak friction"];
+    let outside: Vec<String> = p
+        .against
+        .iter()
+        .zip(names)
+        .filter(|(x, _)| !x.within)
+        .map(|(x, n)| format!("{n} {:.3} is outside it ({:+.1} σ)", x.value, x.z))
+        .collect();
+    format!(
+        "prior {class}: cornering coefficient {:.0}–{:.0} 1/rad, peak friction {:.2}–{:.2} (95 % ranges); {friction}; {}",
+        a.cornering[0],
+        a.cornering[1],
+        a.friction[0],
+        a.friction[1],
+        if outside.is_empty() {
+            "the axles lie within it".to_string()
+        } else {
+            outside.join(", ")
+        }
+    )
 }
 
 /// Where the base model's tyres come from, in one line.
@@ -334,6 +399,25 @@ pub fn note(n: &Note) -> String {
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),
     }
+}
+
+/// How far a channel is trusted, and why.
+pub fn channel_trust(n: &ChannelNoise) -> String {
+    let why = match n.source {
+        ScaleSource::Stated => "stated".to_string(),
+        ScaleSource::Scatter => "its scatter".to_string(),
+        ScaleSource::SensorFloor => format!("its sensor type's floor; scatter {:.2e}", n.scatter),
+        ScaleSource::Estimated => format!(
+            "an estimated output's: its scatter {:.2e} is below any sensor's",
+            n.scatter
+        ),
+    };
+    format!(
+        "{} {:.4} {} ({why})",
+        n.channel.name(),
+        n.noise_floor,
+        n.unit
+    )
 }
 
 /// A finding on where the gap lies.
@@ -386,6 +470,13 @@ pub fn finding(f: &GapFinding) -> String {
             phase_error_deg,
         } => format!(
             "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {gain_error_db:+.1} dB, {phase_error_deg:+.0}°"
+        ),
+        GapFinding::Dominant {
+            channel,
+            share_percent,
+        } => format!(
+            "{} carries {share_percent:.0} % of the base model's held-out error (each channel over its noise floor): it decides every fit; where its floor is not what the channel can be trusted to, state it under [channels]",
+            channel.name()
         ),
         GapFinding::WithoutAy { runs, of } => {
             format!("|ay| levels are u·r on the {runs} of {of} runs without an ay channel")

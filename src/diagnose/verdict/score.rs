@@ -131,7 +131,8 @@ impl<'a> Context<'a> {
             self.scales,
             s.bounds(),
         )
-        .with_layout(s.layout.clone(), &self.bases.all, self.derivatives);
+        .with_layout(s.layout.clone(), &self.bases.all, self.derivatives)
+        .with_prior(self.bases.prior);
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -194,8 +195,10 @@ impl<'a> Context<'a> {
                     self.scales,
                     s.bounds(),
                 )
-                .with_layout(s.layout.clone(), base, self.derivatives);
-                let f = refit(&problem, full, &training_rows(&self.runs, &self.folds[k]));
+                .with_layout(s.layout.clone(), base, self.derivatives)
+                .with_prior(self.bases.prior);
+                let rows = training_rows(&self.runs, &self.folds[k], problem.prior_count());
+                let f = refit(&problem, full, &rows);
                 let model = s.layout.model(base, &f.params);
                 let mut e = ChannelErrors::default();
                 for &i in &self.folds[k] {

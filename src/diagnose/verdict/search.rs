@@ -31,6 +31,7 @@
 //! [`crate::diagnose::pipeline`] for the overview).
 
 use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
+use crate::diagnose::base::prior::PriorReport;
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
@@ -74,6 +75,11 @@ pub(crate) struct Baseline {
     folds: usize,
     /// Whether axle characteristics lead every parameter vector.
     axle: bool,
+    /// The base's held-out errors by channel.
+    pub(crate) heldout: ChannelErrors,
+    /// The prior the axles are fitted against (axles identified from the
+    /// runs).
+    prior: Option<PriorReport>,
 }
 
 impl Baseline {
@@ -85,7 +91,12 @@ impl Baseline {
             return Vec::new();
         }
         let (p, a) = (&sc.full, self.layout(&sc.kinds).axles());
-        AxleIdentification::new(&p.params[a.clone()], &p.std_errors[a], None, 0).no_tyre
+        let shares = &p.params[a.clone()];
+        let mut why = AxleIdentification::new(shares, &p.std_errors[a], None, 0).no_tyre;
+        if let Some(prior) = &self.prior {
+            why.extend(PriorReport::new(prior.prior, prior.friction_rule, shares).far_outside());
+        }
+        why
     }
 
     /// The parameter vector of `kinds` ([`Layout`]).
@@ -178,7 +189,13 @@ impl Baseline {
             effects: sc.kinds.clone(),
             axles: self.axle.then(|| {
                 let (p, a) = (&sc.full, self.layout(&sc.kinds).axles());
-                AxleIdentification::new(&p.params[a.clone()], &p.std_errors[a], None, 0).parameters
+                let shares = &p.params[a.clone()];
+                let id = AxleIdentification::new(shares, &p.std_errors[a], None, 0);
+                match &self.prior {
+                    Some(r) => id.with_prior(PriorReport::new(r.prior, r.friction_rule, shares)),
+                    None => id,
+                }
+                .parameters
             }),
             parameters: parameter_values(&self.layout(&sc.kinds), &sc.full),
             heldout_error_before: self.j0,
@@ -217,6 +234,8 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
         scales,
         folds: ctx.folds.len(),
         axle: ctx.bases.axle.is_some(),
+        heldout: scored.heldout,
+        prior: ctx.bases.identification.as_ref().and_then(|i| i.prior),
     }
 }
 

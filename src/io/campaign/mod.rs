@@ -34,7 +34,8 @@ use super::paths::beside;
 use super::rig::read_rig;
 use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road};
 use super::toml_file::{param_error, TomlSource};
-pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings};
+pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
+pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings, StatedUncertainty};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::error::{
     named, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError, ParamReason,
@@ -63,6 +64,15 @@ pub struct TyreSpec {
     pub model: Option<String>,
     /// MFeval's `useMode` for Magic Formula (.tir) tyre files (default 121).
     pub mode: Option<u32>,
+    /// Without tyre data: the class of the car's tyres, whose ranges are
+    /// the prior of the axles identified from the runs (default `road`).
+    pub class: Option<String>,
+    /// Without tyre data: the 95 % range of the axle cornering
+    /// coefficient, 1/rad (instead of the class's).
+    pub cornering: Option<[f64; 2]>,
+    /// Without tyre data: the 95 % range of the peak friction (instead of
+    /// the class's).
+    pub friction: Option<[f64; 2]>,
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -81,6 +91,8 @@ struct CampaignFile {
     roll: RollModel,
     #[serde(default)]
     diagnose: DiagnoseSettings,
+    #[serde(default)]
+    channels: StatedUncertainty,
 }
 
 /// Loads a campaign from a TOML file or a folder.
@@ -101,6 +113,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let effects = candidate_effects(&src, &f.diagnose)?;
     let mut inputs = vec![file.clone()];
     let tyres = base_tyres(&src, &f, &base, folder, &mut inputs)?;
+    let prior = axle_prior(&src, f.tyres.as_ref(), &tyres)?;
     let mut folder_notes = Vec::new();
     let files = run_files(
         &src,
@@ -146,6 +159,8 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         vehicle: f.vehicle,
         friction: f.road.friction,
         tyres,
+        prior,
+        uncertainty: f.channels,
         runs,
         run_files: files.len(),
         roll: f.roll,
@@ -164,6 +179,12 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     f.roll
         .validate()
         .map_err(|e| param_error(src, Some("roll"), e))?;
+    let c = &f.channels;
+    for (key, v) in [("yaw_rate", c.yaw_rate), ("ay", c.ay), ("beta", c.beta)] {
+        if let Some(v) = v {
+            ParamError::positive(key, v).map_err(|e| param_error(src, Some("channels"), e))?;
+        }
+    }
     let s = &f.diagnose;
     ParamError::in_range("step", s.step, 1e-4, 0.05, Limit::ReplayStep)
         .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
@@ -239,6 +260,54 @@ fn candidate_effects(
         kinds.push(kind);
     }
     Ok(kinds)
+}
+
+/// The prior of the axles identified from the runs: `[tyres] class`
+/// (default road), its ranges replaced by `cornering` and `friction` where
+/// given; refused with tyre data, which leaves no axles to identify.
+fn axle_prior(
+    src: &TomlSource,
+    spec: Option<&TyreSpec>,
+    tyres: &BaseTyres,
+) -> Result<AxlePrior, InputError> {
+    let Some(spec) = spec else {
+        return Ok(AxlePrior::default());
+    };
+    let stated = [
+        ("tyres.class", spec.class.is_some()),
+        ("tyres.cornering", spec.cornering.is_some()),
+        ("tyres.friction", spec.friction.is_some()),
+    ];
+    if !matches!(tyres, BaseTyres::FromRuns) {
+        if let Some((key, _)) = stated.iter().find(|s| s.1) {
+            return Err(
+                src.value_error(&ParamError::without_value(key, ParamReason::PriorWithTyres))
+            );
+        }
+    }
+    let mut prior = match &spec.class {
+        None => AxlePrior::default(),
+        Some(name) => AxlePrior::of(
+            named(&TyreClass::ALL, TyreClass::name, NameKind::TyreClass, name).map_err(|why| {
+                src.value_error(&ParamError::without_value(
+                    "tyres.class",
+                    ParamReason::Name(Box::new(why)),
+                ))
+            })?,
+        ),
+    };
+    for (key, range, slot) in [
+        ("tyres.cornering", spec.cornering, &mut prior.cornering),
+        ("tyres.friction", spec.friction, &mut prior.friction),
+    ] {
+        let Some([lo, hi]) = range else { continue };
+        ParamError::positive(key, lo)
+            .and_then(|_| ParamError::in_range(key, hi, lo, f64::INFINITY, Limit::PriorRange))
+            .map_err(|e| src.value_error(&e))?;
+        *slot = [lo, hi];
+        prior.class = None;
+    }
+    Ok(prior)
 }
 
 /// Where the base tyres come from: tyre files, rig data (read here) with

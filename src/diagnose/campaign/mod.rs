@@ -6,6 +6,8 @@
 //! virtual proving ground ([`crate::proving_ground`]) builds one in memory.
 //! Units: SI, rad.
 
+pub mod prior;
+
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
 use crate::measured::calibration::CalibrationReport;
@@ -14,7 +16,8 @@ use crate::measured::MeasuredRun;
 use crate::optim::local::Derivatives;
 use crate::tyre::{ModelName, Tyre};
 use crate::vehicle::Vehicle;
-use serde::Deserialize;
+use prior::AxlePrior;
+use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 
 /// The `[diagnose]` table: settings of the diagnosis.
@@ -66,6 +69,21 @@ impl Default for DiagnoseSettings {
     }
 }
 
+/// The `[channels]` table: a measurement uncertainty (one standard
+/// deviation) the user trusts per channel, in the channel's unit. A stated
+/// uncertainty is the channel's scale in every fit and its noise floor; a
+/// channel without one takes its estimate (`crate::diagnose::model::scale`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct StatedUncertainty {
+    /// Yaw rate, rad/s.
+    pub yaw_rate: Option<f64>,
+    /// Lateral acceleration, m/s².
+    pub ay: Option<f64>,
+    /// Sideslip, rad.
+    pub beta: Option<f64>,
+}
+
 /// Where the base model's tyres come from.
 #[derive(Debug, Clone)]
 pub enum BaseTyres {
@@ -99,6 +117,12 @@ pub struct Campaign {
     pub friction: f64,
     /// The base tyres.
     pub tyres: BaseTyres,
+    /// The prior of axle characteristics identified from the runs (used
+    /// only without tyre data, `BaseTyres::FromRuns`).
+    pub prior: AxlePrior,
+    /// The measurement uncertainty the user trusts per channel
+    /// (`[channels]`).
+    pub uncertainty: StatedUncertainty,
     /// The runs (after splitting at gaps and into segments).
     pub runs: Vec<MeasuredRun>,
     /// The run files (or logs) the runs were read from.

@@ -1,0 +1,156 @@
+//! How far each measured channel is trusted ([`channel_scale`]): the
+//! uncertainty that scales its residuals in every fit and serves as its
+//! noise floor in the gap above noise.
+//!
+//! A channel's weight in a fit is `1/s²`. Estimated from the channel's
+//! high-frequency scatter alone (the standard deviation before the first
+//! input, else of the first differences over √2), a *smooth* channel — a
+//! state estimator's sideslip, a filtered yaw rate — looks ten times more
+//! precise than a gyro and drowns the other channels, though its real
+//! error (the estimator's lag, drift and model) is at low frequency where
+//! the scatter does not see it. So the uncertainty is, in order:
+//! 1. the one the user states for the channel (`[channels]`);
+//! 2. for a channel whose scatter is below [`SMOOTH_SHARE`] of its sensor
+//!    type's floor — no sensor of that type is that quiet, so the channel is
+//!    a filtered or estimated output — the floor of an estimated output
+//!    ([`ESTIMATED`]);
+//! 3. else the scatter, at least the sensor type's floor ([`SENSOR_FLOOR`]).
+//!
+//! The scale of the fits is that uncertainty, at least 2 % of the
+//! channel's RMS signal (so that a very quiet channel on a loud signal
+//! does not drown the others).
+//!
+//! The floors: a vehicle-dynamics MEMS gyro and accelerometer resolve
+//! about 0.1 °/s and 0.02 m/s² in a car's vibration; an optical or
+//! GNSS/INS slip-angle sensor is specified to about ±0.1–0.2° (Kistler
+//! Correvit S-Motion and OxTS RT data sheets), 0.0017 rad at 1σ; a
+//! sideslip *estimated* from an inertial unit and a model is good to about
+//! 0.3° (0.005 rad), an estimated yaw rate to 0.3 °/s, an estimated ay to
+//! 0.1 m/s² (Chindamo, Lenzo & Gadola 2018, the review of sideslip
+//! estimators). Units: the channel's (rad/s, m/s², rad).
+
+use crate::diagnose::campaign::StatedUncertainty;
+use crate::diagnose::model::channels::Channel;
+use serde::Serialize;
+
+/// The floor of a sensor of each channel's type (yaw rate rad/s, ay m/s²,
+/// beta rad): no measurement of that type is trusted better.
+pub const SENSOR_FLOOR: [f64; 3] = [0.0017, 0.02, 0.0017];
+
+/// A channel whose scatter is below this share of its sensor floor is a
+/// filtered or estimated output, not a sensor's.
+pub const SMOOTH_SHARE: f64 = 0.5;
+
+/// The uncertainty of an estimated (smooth) output of each channel.
+pub const ESTIMATED: [f64; 3] = [0.005, 0.1, 0.005];
+
+/// The share of a channel's RMS signal below which no scale goes.
+pub const SIGNAL_SHARE: f64 = 0.02;
+
+/// Where a channel's uncertainty comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ScaleSource {
+    /// Stated by the user (`[channels]`).
+    Stated,
+    /// Its high-frequency scatter.
+    Scatter,
+    /// Its sensor type's floor, above its scatter.
+    SensorFloor,
+    /// Smoother than any sensor of its type: an estimated output's floor.
+    Estimated,
+}
+
+/// How far a channel is trusted.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ChannelScale {
+    /// The uncertainty (one standard deviation): the noise floor of the
+    /// gap above noise.
+    pub uncertainty: f64,
+    /// The residual scale of the fits: the uncertainty, at least
+    /// [`SIGNAL_SHARE`] of the RMS signal.
+    pub scale: f64,
+    /// Where the uncertainty comes from.
+    pub source: ScaleSource,
+    /// The high-frequency scatter measured.
+    pub scatter: f64,
+}
+
+/// The uncertainty and scale of channel `c` (module doc) from what the
+/// user `stated`, its measured `scatter` and its RMS `signal`.
+pub fn channel_scale(
+    c: Channel,
+    stated: &StatedUncertainty,
+    scatter: f64,
+    signal: f64,
+) -> ChannelScale {
+    let i = c.index();
+    let said = match c {
+        Channel::YawRate => stated.yaw_rate,
+        Channel::Ay => stated.ay,
+        Channel::Beta => stated.beta,
+    };
+    let (uncertainty, source) = match said {
+        Some(s) => (s, ScaleSource::Stated),
+        // A scatter that is not a number (no samples) is no sensor's either.
+        None if scatter.is_nan() || scatter < SMOOTH_SHARE * SENSOR_FLOOR[i] => {
+            (ESTIMATED[i], ScaleSource::Estimated)
+        }
+        None if scatter >= SENSOR_FLOOR[i] => (scatter, ScaleSource::Scatter),
+        None => (SENSOR_FLOOR[i], ScaleSource::SensorFloor),
+    };
+    ChannelScale {
+        uncertainty,
+        scale: uncertainty.max(SIGNAL_SHARE * signal),
+        source,
+        scatter,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const NONE: StatedUncertainty = StatedUncertainty {
+        yaw_rate: None,
+        ay: None,
+        beta: None,
+    };
+
+    #[test]
+    fn a_stated_uncertainty_wins_over_every_estimate() {
+        let s = StatedUncertainty {
+            beta: Some(0.004),
+            ..NONE
+        };
+        let c = channel_scale(Channel::Beta, &s, 0.0001, 0.01);
+        assert_eq!((c.uncertainty, c.source), (0.004, ScaleSource::Stated));
+    }
+
+    #[test]
+    fn a_channel_smoother_than_half_its_sensor_floor_is_an_estimated_output() {
+        // A state estimator's sideslip: 0.0002 rad of scatter.
+        let c = channel_scale(Channel::Beta, &NONE, 0.0002, 0.02);
+        assert_eq!((c.uncertainty, c.source), (0.005, ScaleSource::Estimated));
+        // Noise-free data are no more precise than an estimate.
+        let c = channel_scale(Channel::YawRate, &NONE, 0.0, 0.2);
+        assert_eq!(c.source, ScaleSource::Estimated);
+        let c = channel_scale(Channel::YawRate, &NONE, f64::NAN, 0.2);
+        assert_eq!(c.source, ScaleSource::Estimated);
+    }
+
+    #[test]
+    fn a_sensor_is_trusted_to_its_scatter_but_never_below_its_type_floor() {
+        let c = channel_scale(Channel::YawRate, &NONE, 0.003, 0.05);
+        assert_eq!((c.uncertainty, c.source), (0.003, ScaleSource::Scatter));
+        let c = channel_scale(Channel::Ay, &NONE, 0.015, 1.0);
+        assert_eq!((c.uncertainty, c.source), (0.02, ScaleSource::SensorFloor));
+    }
+
+    #[test]
+    fn the_scale_is_at_least_two_percent_of_the_signal() {
+        let c = channel_scale(Channel::YawRate, &NONE, 0.003, 0.5);
+        assert_eq!(c.uncertainty, 0.003);
+        assert!((c.scale - 0.01).abs() < 1e-15);
+    }
+}

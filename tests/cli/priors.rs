@@ -97,9 +97,7 @@ fn an_estimated_sideslip_is_trusted_as_an_estimate_and_the_logged_bank_is_named_
             "slow-oval-estimated-beta",
             "bank_profile",
             seed,
-            "effects = [\"bank_profile\", \"road_bank\", \"sensor_bias\"]
-max_effects = 1
-",
+            "effects = [\"bank_profile\", \"road_bank\", \"sensor_bias\"]\nmax_effects = 1\n",
         );
         let (stdout, d) = diagnose_campaign(&c);
         assert!(

@@ -7,7 +7,10 @@
 //! - `yaw_rate_bias` (rad/s), `ay_bias` (m/s²), `beta_bias` (rad): constant
 //!   offsets (a sideslip sensor's misalignment is one);
 //! - `accelerometer_x` (m, positive ahead of the centre of gravity): the
-//!   accelerometer also feels the yaw acceleration, `ay + x·ṙ`;
+//!   inertial unit's position. Its accelerometer also feels the yaw
+//!   acceleration, `ay + x·ṙ`, and a sideslip it measures (a GNSS/INS or
+//!   optical sensor at the unit) is the velocity angle there,
+//!   `β + x·r/u` (the lateral velocity at x is `v + x·r`; small angles);
 //! - `roll_gradient` (rad per m/s²): the body rolls by φ = k·ay (ISO 8855:
 //!   positive φ puts the right side down, outward in a left turn) and a
 //!   body-fixed accelerometer reads `ay·cos φ + g·sin φ`.
@@ -65,10 +68,29 @@ fn derivative<T: Scalar>(t: &[f64], y: &[T]) -> Vec<T> {
         .collect()
 }
 
+/// The lowest speed a sideslip away from the centre of gravity is taken
+/// at, m/s: below it `x·r/u` has no meaning (the replays start above the
+/// campaign's minimum speed, 5 m/s by default).
+const SIDESLIP_MIN_SPEED: f64 = 1.0;
+
 impl<T: Scalar> Sensors<T> {
+    /// What a sideslip measured at the inertial unit adds to the centre of
+    /// gravity's at yaw rate `r` and speed `u`: `x·r/u`.
+    pub fn sideslip_offset(&self, r: T, u: f64) -> T {
+        self.accelerometer_x * r / u.max(SIDESLIP_MIN_SPEED)
+    }
+
     /// What the sensors record of a response (yaw rate, `ay` and sideslip
-    /// at times `t`), at the same times: (yaw rate, ay, sideslip).
-    pub fn seen(&self, t: &[f64], yaw_rate: &[T], ay: &[T], beta: &[T]) -> [Vec<T>; 3] {
+    /// at times `t`, at forward speeds `speed`), at the same times: (yaw
+    /// rate, ay, sideslip).
+    pub fn seen(
+        &self,
+        t: &[f64],
+        speed: &[f64],
+        yaw_rate: &[T],
+        ay: &[T],
+        beta: &[T],
+    ) -> [Vec<T>; 3] {
         let yaw_acc = derivative(t, yaw_rate);
         let ay_seen: Vec<T> = ay
             .iter()
@@ -88,10 +110,15 @@ impl<T: Scalar> Sensors<T> {
                     .collect()
             }
         };
-        let beta_seen = if off(self.beta_bias) {
+        let beta_seen = if off(self.beta_bias) && off(self.accelerometer_x) {
             late(beta)
         } else {
-            let b: Vec<T> = beta.iter().map(|&b| b + self.beta_bias).collect();
+            let b: Vec<T> = beta
+                .iter()
+                .zip(yaw_rate)
+                .zip(speed)
+                .map(|((&b, &r), &u)| b + self.sideslip_offset(r, u) + self.beta_bias)
+                .collect();
             late(&b)
         };
         [late(&yaw_seen), late(&ay_seen), beta_seen]
@@ -112,7 +139,8 @@ mod tests {
 
     fn measure(s: &Sensors) -> [Vec<f64>; 3] {
         let [t, r, ay, beta] = history();
-        s.seen(&t, &r, &ay, &beta)
+        let u = vec![20.0; t.len()];
+        s.seen(&t, &u, &r, &ay, &beta)
     }
 
     #[test]
@@ -146,6 +174,9 @@ mod tests {
         });
         let rdot = 0.3 * (1.5 * t).cos();
         assert!((ahead[1][i] - ay[i] - 0.5 * rdot).abs() < 1e-4);
+        // The unit's sideslip: the velocity angle 0.5 m ahead, at 20 m/s.
+        assert!((ahead[2][i] - beta[i] - 0.5 * r[i] / 20.0).abs() < 1e-15);
+        assert_eq!(ahead[0], r);
         let rolled = measure(&Sensors {
             roll_gradient: 0.01,
             ..Default::default()

@@ -8,6 +8,7 @@
 //! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
 pub(crate) mod identify;
+pub(crate) mod no_tyre;
 pub mod prior;
 
 use crate::diagnose::base::identify::{identify_axles, AxleIdentification};
@@ -164,7 +165,7 @@ fn axles_from_runs(
     (prior, rule): (AxlePrior, FrictionRule),
     timing: Option<&Recorder>,
 ) -> Bases {
-    let rows = PriorRows::new(&prior, &rule, 0);
+    let rows = crate::diagnose::base::prior::rows(&prior, &rule, 0);
     let build = |p: &[f64]| {
         let (f, r) = axle_tyres(p);
         make(f, r)

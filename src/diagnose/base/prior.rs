@@ -17,16 +17,16 @@
 //! fitted (with its prior) where the runs' 99.5th percentile of `|ay|`
 //! (the accelerometer's, else `u·r`) reaches [`FREE_SHARE`] of the
 //! prior's lowest grip, `FREE_SHARE·lo·g`; else it is held at the prior's
-//! centre (a row of width [`HELD_WIDTH`] in `ln D`), and the report says so.
+//! centre (a row of width `HELD_WIDTH` in `ln D`, [`PriorRows`]), and the report says so.
 //!
 //! Units: SI, rad; k in 1/rad, D dimensionless.
 
 use crate::constants::G;
-use crate::diagnose::base::identify::{NoTyre, AXLE_NAMES};
+use crate::diagnose::base::no_tyre::{NoTyre, AXLE_NAMES};
 use crate::diagnose::campaign::prior::{AxlePrior, Z95};
-use crate::diagnose::model::axles::{coefficient, friction, D_REF};
+pub use crate::diagnose::fit::prior_rows::PriorRows;
+use crate::diagnose::model::axles::{coefficient, friction};
 use crate::measured::MeasuredRun;
-use nalgebra::DMatrix;
 use serde::Serialize;
 
 /// The share of the prior's lowest grip (`lo·g`) the runs' lateral
@@ -43,10 +43,6 @@ pub const AY_PERCENTILE: f64 = 99.5;
 /// range may be somewhat off for a given car; this far off, the data pull
 /// the axles to stand in for something the model lacks.
 pub const OUTSIDE_PRIOR: f64 = 3.29;
-
-/// Width (standard deviation of `ln D`) of the row that holds the peak
-/// friction: a hold, not a preference (a 1 % move of D adds 5,000 to the cost).
-pub const HELD_WIDTH: f64 = 1e-4;
 
 /// Whether the peak friction is fitted, by the largest lateral
 /// acceleration the runs hold against the prior's lowest grip.
@@ -180,76 +176,10 @@ impl PriorReport {
     }
 }
 
-/// The prior's rows appended to a fit's data residuals: one per axle
-/// coefficient and one for the peak friction (the hold when it is held),
-/// on the axle shares at `offset` of the parameter vector.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PriorRows {
-    /// Where the shares `[s_f, s_r, t]` are in the vector.
-    pub offset: usize,
-    /// `ln` of the centres: k front, k rear, D.
-    centres: [f64; 3],
-    /// Standard deviations of `ln k`, `ln k`, `ln D`.
-    sigmas: [f64; 3],
-}
-
-impl PriorRows {
-    /// Rows appended.
-    pub const ROWS: usize = 3;
-
-    /// The rows of `prior` with the peak friction by `rule`, on shares at
-    /// `offset`.
-    pub fn new(prior: &AxlePrior, rule: &FrictionRule, offset: usize) -> Self {
-        let k = AxlePrior::centre(prior.cornering).ln();
-        let s = AxlePrior::sigma_ln(prior.cornering);
-        let d = if rule.free {
-            AxlePrior::sigma_ln(prior.friction)
-        } else {
-            HELD_WIDTH
-        };
-        Self {
-            offset,
-            centres: [k, k, rule.value.ln()],
-            sigmas: [s, s, d],
-        }
-    }
-
-    /// The friction share the axle grid starts from: the held value, or
-    /// `free` (a friction that does not saturate) when it is fitted.
-    pub fn grid_friction(&self, free: f64) -> f64 {
-        if self.sigmas[2] == HELD_WIDTH {
-            let d = self.centres[2].exp();
-            d / (d + D_REF)
-        } else {
-            free
-        }
-    }
-
-    /// `ln k` or `ln D` of share `x` of characteristic `i`, and its
-    /// derivative in the share.
-    fn log_of(i: usize, x: f64) -> (f64, f64) {
-        let v = if i < 2 { coefficient(x) } else { friction(x) };
-        // ln(ref·x/(1 − x)): d/dx = 1/x + 1/(1 − x).
-        (v.ln(), 1.0 / x + 1.0 / (1.0 - x))
-    }
-
-    /// Writes the rows of vector `p` into `out` (`ROWS` long).
-    pub fn write(&self, p: &[f64], out: &mut [f64]) {
-        for (i, o) in out.iter_mut().enumerate().take(Self::ROWS) {
-            let (l, _) = Self::log_of(i, p[self.offset + i]);
-            *o = (l - self.centres[i]) / self.sigmas[i];
-        }
-    }
-
-    /// The rows' Jacobian in the `n` parameters at `p` (`ROWS × n`).
-    pub fn jacobian(&self, p: &[f64], n: usize) -> DMatrix<f64> {
-        let mut j = DMatrix::zeros(Self::ROWS, n);
-        for i in 0..Self::ROWS {
-            let (_, d) = Self::log_of(i, p[self.offset + i]);
-            j[(i, self.offset + i)] = d / self.sigmas[i];
-        }
-        j
-    }
+/// The prior's rows of `prior` with the peak friction by `rule`, on axle
+/// shares at `offset` of a fit's vector.
+pub fn rows(prior: &AxlePrior, rule: &FrictionRule, offset: usize) -> PriorRows {
+    PriorRows::new(prior, (!rule.free).then_some(rule.value), offset)
 }
 
 #[cfg(test)]
@@ -273,7 +203,7 @@ mod tests {
     fn the_rows_are_zero_at_the_centre_and_one_per_standard_deviation_off_it() {
         let prior = AxlePrior::of(TyreClass::Road);
         let rule = FrictionRule::new(&prior, 9.0);
-        let rows = PriorRows::new(&prior, &rule, 1);
+        let rows = rows(&prior, &rule, 1);
         let k0 = AxlePrior::centre(prior.cornering);
         let d0 = AxlePrior::centre(prior.friction);
         let sk = AxlePrior::sigma_ln(prior.cornering);
@@ -299,7 +229,7 @@ mod tests {
             FrictionRule::new(&prior, 20.0),
             FrictionRule::new(&prior, 1.0),
         ] {
-            let rows = PriorRows::new(&prior, &rule, 0);
+            let rows = rows(&prior, &rule, 0);
             let p = vec![0.55, 0.7, 0.6, 0.01];
             let j = rows.jacobian(&p, 4);
             for c in 0..4 {
@@ -325,10 +255,10 @@ mod tests {
     #[test]
     fn a_held_friction_starts_the_grid_at_its_value() {
         let prior = AxlePrior::of(TyreClass::Truck);
-        let held = PriorRows::new(&prior, &FrictionRule::new(&prior, 1.0), 0);
+        let held = rows(&prior, &FrictionRule::new(&prior, 1.0), 0);
         let t = held.grid_friction(0.8);
         assert!((friction(t) - AxlePrior::centre(prior.friction)).abs() < 1e-12);
-        let free = PriorRows::new(&prior, &FrictionRule::new(&prior, 9.0), 0);
+        let free = rows(&prior, &FrictionRule::new(&prior, 9.0), 0);
         assert_eq!(free.grid_friction(0.8), 0.8);
     }
 }

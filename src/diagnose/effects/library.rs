@@ -262,8 +262,10 @@ impl Effect for AccelerometerRoll {
 impl Effect for AccelerometerPosition {
     const NAME: &'static str = "accelerometer_position";
     const PARAMETERS: &'static [Parameter] = &[par("x", "m", 0.0, -2.5, 2.5)];
+    /// The inertial unit's position: its accelerometer and a sideslip it
+    /// measures ([`crate::vehicle::Sensors`]).
     const SIGNATURE: &'static str =
-        "ay error proportional to yaw acceleration, none in steady state: a frequency sweep";
+        "ay error proportional to yaw acceleration, a sideslip error proportional to yaw rate over speed: a frequency sweep and steady turns at two speeds";
     const NEEDS: Needs = Needs::Nothing;
     const USES_ROLL: bool = false;
     const TRUTH: &'static [f64] = &[0.8];

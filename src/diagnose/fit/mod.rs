@@ -12,6 +12,7 @@
 //! model ([`FitOutcome::bic`]).
 
 pub(crate) mod layout;
+pub(crate) mod prior_rows;
 pub(crate) mod problem;
 pub(crate) mod refit;
 pub(crate) mod tangent;

@@ -16,8 +16,8 @@
 //! [`Problem::prior_cost`] is what the rows add to the cost. Parameters are
 //! clamped into their box. Units: SI, rad.
 
-use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::fit::prior_rows::PriorRows;
 use crate::diagnose::model::replay::{LastReplay, Prepared};
 use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};

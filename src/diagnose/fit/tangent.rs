@@ -136,19 +136,24 @@ where
             .apply(logged_t, logged_steer, &drive.stage_times())
     });
     let ((beta0, r0), beta_measured) = run.start_values();
+    let r = D::<N>::from(r0) - effects.sensors.yaw_rate_bias;
     let beta = if beta_measured {
-        D::<N>::from(beta0) - effects.sensors.beta_bias
+        D::<N>::from(beta0)
+            - effects.sensors.beta_bias
+            - effects.sensors.sideslip_offset(r, run.start_speed())
     } else {
         D::<N>::from(beta0)
     };
-    let r = D::<N>::from(r0) - effects.sensors.yaw_rate_bias;
     let first = drive.first_inputs(plain.friction);
     let steer0 = steer.as_ref().map_or(D::<N>::from(first.steer), |s| s[0]);
     let x0 = m
         .model
         .quasi_static_of(&m.scalars, beta, r, first.speed, steer0);
     let h = m.replay(drive, steer.as_deref(), x0);
-    let seen = effects.sensors.seen(&h.t, &h.yaw_rate, &h.ay, &h.beta);
+    let speed = run.speed_at(&h.t);
+    let seen = effects
+        .sensors
+        .seen(&h.t, &speed, &h.yaw_rate, &h.ay, &h.beta);
     let mut rows = Vec::with_capacity(run.count());
     for (c, measured) in &run.measured {
         let ys = &seen[match c {

@@ -159,10 +159,10 @@ impl Augmented {
     /// (yaw rate, ay, β).
     pub(crate) fn observe(&self, response: &TimeHistory, times: &[f64]) -> Observed {
         let h = response;
-        let [yaw_rate, ay, beta] = self
-            .effects()
-            .sensors
-            .seen(&h.t, &h.yaw_rate, &h.ay, &h.beta);
+        let [yaw_rate, ay, beta] =
+            self.effects()
+                .sensors
+                .seen(&h.t, &h.speed, &h.yaw_rate, &h.ay, &h.beta);
         let at =
             |ys: &[f64]| -> Vec<f64> { times.iter().map(|&t| interpolate(&h.t, ys, t)).collect() };
         Observed {

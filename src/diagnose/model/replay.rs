@@ -194,14 +194,27 @@ impl Prepared {
     fn start_of(&self, model: &Augmented) -> (f64, f64) {
         let sensors = &model.effects().sensors;
         let beta_measured = self.measured.iter().any(|(c, _)| *c == Channel::Beta);
+        let r = self.start.1 - sensors.yaw_rate_bias;
         (
             if beta_measured {
-                self.start.0 - sensors.beta_bias
+                self.start.0 - sensors.beta_bias - sensors.sideslip_offset(r, self.start_speed())
             } else {
                 self.start.0
             },
-            self.start.1 - sensors.yaw_rate_bias,
+            r,
         )
+    }
+
+    /// The forward speed at the replay's start, m/s.
+    pub(crate) fn start_speed(&self) -> f64 {
+        crate::manoeuvre::interpolate(&self.inputs.t, &self.inputs.speed, self.times[0])
+    }
+
+    /// The forward speed at times `t`, m/s (the logged speed interpolated).
+    pub(crate) fn speed_at(&self, t: &[f64]) -> Vec<f64> {
+        t.iter()
+            .map(|&x| crate::manoeuvre::interpolate(&self.inputs.t, &self.inputs.speed, x))
+            .collect()
     }
 
     /// [`Prepared::observe`] through `slot`, the run's last replay: a model

@@ -23,7 +23,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::above_noise;
-use crate::diagnose::report::parts::{regime_samples, window_samples, Part};
+use crate::diagnose::report::parts::{regime_samples, scatter, window_samples, Part};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
@@ -119,23 +119,6 @@ fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
-fn std_dev(v: &[f64]) -> f64 {
-    let m = mean(v);
-    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len().max(1) as f64).sqrt()
-}
-
-/// A measured channel's high-frequency scatter: the standard deviation
-/// over the samples `pre` before the input (at least ten), else that of
-/// its first differences over √2.
-pub(crate) fn scatter(pre: &[usize], measured: &[f64]) -> (f64, NoiseSource) {
-    if pre.len() >= 10 {
-        let v: Vec<f64> = pre.iter().map(|&i| measured[i]).collect();
-        return (std_dev(&v), NoiseSource::BeforeInput);
-    }
-    let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
-    (std_dev(&d) / 2f64.sqrt(), NoiseSource::FirstDifferences)
-}
-
 /// Correlation of `a[i]` with `b[i − lag]`.
 fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
     let n = a.len();
@@ -199,7 +182,11 @@ pub fn channel_gap(
     let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
     let unit = channel.unit();
     let win = window_samples(t, steer);
-    let (noise_floor, noise_source) = scatter(&win[0].1, measured);
+    let noise_floor = scatter(&win[0].1, measured);
+    let noise_source = match win[0].1.len() {
+        0..=9 => NoiseSource::FirstDifferences,
+        _ => NoiseSource::BeforeInput,
+    };
     let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
     let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;

@@ -133,6 +133,22 @@ impl Serialize for Part {
     }
 }
 
+fn std_dev(v: &[f64]) -> f64 {
+    let m = v.iter().sum::<f64>() / v.len().max(1) as f64;
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len().max(1) as f64).sqrt()
+}
+
+/// A measured channel's high-frequency scatter: the standard deviation over
+/// the samples `pre` before the input (ten or more), else of its first
+/// differences over √2 (an upper bound for a smooth signal).
+pub(crate) fn scatter(pre: &[usize], measured: &[f64]) -> f64 {
+    if pre.len() >= 10 {
+        return std_dev(&pre.iter().map(|&i| measured[i]).collect::<Vec<_>>());
+    }
+    let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
+    std_dev(&d) / 2f64.sqrt()
+}
+
 /// The samples of each time window ([`Window::ALL`], in order): before the
 /// input, its first 0.5 s, 0.5–2 s, the rest. The input starts where the
 /// steer first leaves its initial value by more than 5 % of its largest

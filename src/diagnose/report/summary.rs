@@ -50,7 +50,7 @@ pub(crate) fn run_scatter(run: &MeasuredRun) -> [Option<(f64, f64)>; 3] {
         c.of(run).map(|v| {
             let v = pick(v);
             let rms = (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt();
-            (crate::diagnose::report::gap::scatter(pre, &v).0, rms)
+            (crate::diagnose::report::parts::scatter(pre, &v), rms)
         })
     })
 }

@@ -179,7 +179,7 @@ fn reference_noise(
 /// The parameter vector and bounds of `kind` fitted with the axles.
 fn vector(kind: EffectKind) -> (Vec<f64>, Vec<(f64, f64)>) {
     let mut p = vec![0.5, 0.55, 0.5];
-    let mut b = crate::diagnose::base::identify::AXLE_BOUNDS.to_vec();
+    let mut b = crate::diagnose::model::axles::AXLE_BOUNDS.to_vec();
     let roll: &[crate::diagnose::effects::Parameter] = if kind.uses_roll() {
         RollDynamics::PARAMETERS
     } else {
@@ -411,7 +411,7 @@ fn zz_dump_bits() {
         let (layout, base) = (Layout::new(kinds, axle), sedan());
         let mut p = if axle { vec![0.5, 0.55, 0.5] } else { vec![] };
         let mut bounds = if axle {
-            crate::diagnose::base::identify::AXLE_BOUNDS.to_vec()
+            crate::diagnose::model::axles::AXLE_BOUNDS.to_vec()
         } else {
             vec![]
         };

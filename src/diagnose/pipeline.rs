@@ -62,7 +62,7 @@ use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, r
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
-use crate::diagnose::verdict::score::{prepare, Context, Scored, MAX_FOLDS};
+use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
 use crate::diagnose::verdict::search::{baseline, confounded_with, search, Search};
 use crate::error::Error;
@@ -143,6 +143,26 @@ fn channel_trust(c: &Campaign) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
         })
         .collect();
     (noise, scales, floors)
+}
+
+/// Each response channel's offset as the runs' standstills measured it,
+/// else their straights (mean and standard error).
+fn calibrated(c: &Campaign) -> Calibrated {
+    use crate::measured::clean::RunChannel;
+    Channel::ALL.map(|ch| {
+        let run_channel = match ch {
+            Channel::YawRate => RunChannel::YawRate,
+            Channel::Ay => RunChannel::Ay,
+            Channel::Beta => RunChannel::Beta,
+        };
+        let k = c
+            .calibration
+            .channels
+            .iter()
+            .find(|k| k.channel == run_channel)?;
+        let pooled = k.standstill.as_ref().or(k.straight.as_ref())?;
+        Some((pooled.mean, pooled.std_error))
+    })
 }
 
 /// The channel whose share of the base model's held-out error `J²`
@@ -356,7 +376,9 @@ fn run(
     }
 
     let run_gaps = base_gaps(c, &bases.all);
+    let calibrated = calibrated(c);
     let ctx = Context {
+        calibrated,
         runs,
         folds,
         scales,
@@ -407,6 +429,7 @@ fn run(
         significant,
         &shrinkage,
         &base_no_tyre,
+        &calibrated,
     );
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);

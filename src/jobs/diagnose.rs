@@ -9,7 +9,7 @@
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
-use crate::diagnose::report::{words, Part};
+use crate::diagnose::report::{words, Part, Verdict};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
@@ -196,6 +196,13 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     }
     out.extend(screened_lines(d));
     out.push(format!("verdict: {}", d.verdict.statement()));
+    if let Verdict::Explained(e) = &d.verdict {
+        out.extend(
+            e.evidence
+                .iter()
+                .map(|x| format!("  {}", words::evidence(x))),
+        );
+    }
     out.extend(
         words::verdict_warnings(&d.verdict)
             .iter()

@@ -9,7 +9,7 @@ use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
-    GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
+    Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::report::{words, BaseReport, ParameterValue};
 use crate::identify::grouping::GroupingReport;
@@ -26,6 +26,7 @@ enum Details<'a> {
         reduction_percent: f64,
         partial: bool,
         warning_details: &'a [VerdictWarning],
+        evidence: &'a [Evidence],
     },
     NoSignificantGap {
         threshold: f64,
@@ -64,6 +65,7 @@ impl Serialize for Verdict {
                     reduction_percent: e.reduction_percent,
                     partial: e.partial(),
                     warning_details: &e.warnings,
+                    evidence: &e.evidence,
                 },
             ),
             Verdict::NoSignificantGap(n) => (

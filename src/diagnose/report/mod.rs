@@ -22,7 +22,7 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, ChannelChange, ChannelWorsened, Explained, GapFinding, NoSignificantGap,
+    above_noise, ChannelChange, ChannelWorsened, Evidence, Explained, GapFinding, NoSignificantGap,
     NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict,
     VerdictKind, VerdictWarning,
 };

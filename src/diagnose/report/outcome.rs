@@ -124,7 +124,35 @@ pub struct Explained {
     pub reduction_percent: f64,
     /// What the verdict's effects leave worse, and a base that is no tyre.
     pub warnings: Vec<VerdictWarning>,
+    /// What the runs show beside the fit that bears on it.
+    pub evidence: Vec<Evidence>,
 }
+
+/// What the runs show beside a verdict's fit that bears on it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Evidence {
+    /// A sensor offset the verdict fitted against the one the runs'
+    /// standstills (else straights) measured.
+    Calibration {
+        /// The channel.
+        channel: Channel,
+        /// Fitted, in the channel's unit.
+        fitted: f64,
+        /// Its standard error.
+        fitted_std_error: f64,
+        /// Measured on the standstills or straights.
+        measured: f64,
+        /// Its standard error.
+        measured_std_error: f64,
+        /// Within three combined standard errors.
+        agrees: bool,
+    },
+}
+
+/// Combined standard errors within which a fitted and a measured offset
+/// agree.
+pub const CALIBRATION_AGREES: f64 = 3.0;
 
 impl Explained {
     /// Whether the effects explain only part of the gap (below
@@ -500,6 +528,7 @@ mod tests {
             noise_level: 1.0,
             reduction_percent,
             warnings: Vec::new(),
+            evidence: Vec::new(),
         };
         assert!(e(49.9).partial());
         assert!(!e(50.0).partial());

@@ -15,8 +15,8 @@ use crate::diagnose::base::prior::PriorReport;
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::outcome::{
-    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
-    Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning,
+    Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{
     BaseReport, ChannelNoise, Confounded, ParameterValue, ScaleSource, Shrinkage,
@@ -418,6 +418,26 @@ pub fn channel_trust(n: &ChannelNoise) -> String {
         n.noise_floor,
         n.unit
     )
+}
+
+/// What the runs show beside a verdict's fit, in one line.
+pub fn evidence(e: &Evidence) -> String {
+    match e {
+        Evidence::Calibration {
+            channel,
+            fitted,
+            fitted_std_error,
+            measured,
+            measured_std_error,
+            agrees,
+        } => format!(
+            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the standstills' and straights' {measured:.4} ± {measured_std_error:.1e} {unit}",
+            if *agrees { "confirmed" } else { "not confirmed" },
+            channel.name(),
+            if *agrees { "agrees with" } else { "differs from" },
+            unit = channel.unit(),
+        ),
+    }
 }
 
 /// A finding on where the gap lies.

@@ -8,12 +8,15 @@
 //! the channel's unit.
 
 use crate::diagnose::base::identify::NoTyre;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::outcome::CALIBRATION_AGREES;
 use crate::diagnose::report::{
-    ChannelChange, ChannelWorsened, Explained, NoSignificantGap, NotIdentifiable, OutsideLibrary,
-    Part, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    ChannelChange, ChannelWorsened, Evidence, Explained, NoSignificantGap, NotIdentifiable,
+    OutsideLibrary, ParameterValue, Part, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
-use crate::diagnose::verdict::score::Scored;
+use crate::diagnose::verdict::score::{Calibrated, Scored};
 use crate::diagnose::verdict::search::{Baseline, Search};
 
 /// The verdict of a search `found` over the cross-validated `singles`
@@ -27,6 +30,7 @@ pub(crate) fn verdict(
     significant: bool,
     shrinkage: &[Shrinkage],
     base_no_tyre: &[NoTyre],
+    calibrated: &Calibrated,
 ) -> Verdict {
     let (heldout_error, noise_level) = (base.j0, base.jn);
     let kind = rules::case(
@@ -43,7 +47,9 @@ pub(crate) fn verdict(
                     no_tyre: base_no_tyre.to_vec(),
                 });
             }
+            let evidence = calibration_evidence(&r.parameters, calibrated);
             Verdict::Explained(Explained {
+                evidence,
                 effects: r.effects,
                 parameters: r.parameters,
                 heldout_error_before: heldout_error,
@@ -79,6 +85,30 @@ pub(crate) fn verdict(
     }
 }
 
+/// The sensor offsets among a verdict's `parameters` against the ones the
+/// runs' standstills and straights measured.
+fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) -> Vec<Evidence> {
+    Channel::ALL
+        .into_iter()
+        .filter_map(|c| {
+            let (measured, measured_std_error) = calibrated[c.index()]?;
+            let name = format!("{}.{}", EffectKind::SensorBias.name(), c.name());
+            let p = parameters
+                .iter()
+                .find(|p| p.name == name && p.std_error.is_finite())?;
+            let combined = p.std_error.hypot(measured_std_error);
+            Some(Evidence::Calibration {
+                channel: c,
+                fitted: p.value,
+                fitted_std_error: p.std_error,
+                measured,
+                measured_std_error,
+                agrees: (p.value - measured).abs() <= CALIBRATION_AGREES * combined,
+            })
+        })
+        .collect()
+}
+
 /// The channels the verdict's effects leave worse on held-out runs (all
 /// samples): a worsening by [`Shrinkage::change`], above noise.
 pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
@@ -98,4 +128,46 @@ pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
             _ => None,
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn offset(name: &str, value: f64, std_error: f64) -> ParameterValue {
+        ParameterValue {
+            name: name.into(),
+            unit: "m/s²",
+            value,
+            std_error,
+            at_bound: false,
+            bound: None,
+            determined: true,
+        }
+    }
+
+    #[test]
+    fn a_fitted_offset_agrees_with_the_standstills_within_three_combined_standard_errors() {
+        let calibrated: Calibrated = [None, Some((-0.600, 0.001)), Some((0.0, 0.001))];
+        // 3·√(0.004² + 0.001²) = 0.0124 m/s².
+        let params = [
+            offset("sensor_bias.ay", -0.612, 0.004),
+            offset("sensor_bias.yaw_rate", 0.01, 0.001),
+            offset("sensor_bias.beta", 0.02, f64::NAN),
+        ];
+        let e = calibration_evidence(&params, &calibrated);
+        // No yaw-rate calibration, no beta standard error: ay alone.
+        assert_eq!(e.len(), 1);
+        let Evidence::Calibration {
+            agrees, channel, ..
+        } = &e[0];
+        assert!(*agrees && *channel == Channel::Ay);
+        let e = calibration_evidence(&[offset("sensor_bias.ay", -0.613, 0.004)], &calibrated);
+        let Evidence::Calibration { agrees, .. } = &e[0];
+        assert!(!agrees);
+        // Another effect's parameter is no offset.
+        assert!(
+            calibration_evidence(&[offset("road_bank.bank", -0.6, 0.001)], &calibrated).is_empty()
+        );
+    }
 }

@@ -51,7 +51,14 @@ pub(crate) struct Context<'a> {
     pub(crate) timing: Option<&'a Recorder>,
     /// How the fits take their Jacobians.
     pub(crate) derivatives: Derivatives,
+    /// The sensor offsets the runs' standstills and straights measured: a
+    /// start of the sensor offsets' fit.
+    pub(crate) calibrated: Calibrated,
 }
+
+/// Each response channel's offset measured on the runs' standstills (else
+/// straights), with its standard error ([`crate::measured::calibration`]).
+pub(crate) type Calibrated = [Option<(f64, f64)>; 3];
 
 /// A candidate fitted on all runs, not yet cross-validated: its
 /// setting, its fit (with the optimum's linearisation the fold refits
@@ -254,6 +261,19 @@ impl<'a> Context<'a> {
             .map_or_else(|| s.off(), |(_, p)| p.clone());
         let (p, _) = swarm(problem, &from, pso, held);
         tried.push((problem.cost(&p), p));
+        // The sensor offsets as the standstills and straights measured
+        // them: a start in the basin a real log's offsets are in.
+        if let Some(i) = s.kinds().iter().position(|k| *k == EffectKind::SensorBias) {
+            if self.calibrated.iter().any(Option::is_some) {
+                let mut q = from.clone();
+                for (slot, c) in q[s.layout.effect(i)].iter_mut().zip(&self.calibrated) {
+                    if let Some((mean, _)) = c {
+                        *slot = *mean;
+                    }
+                }
+                tried.push((problem.cost(&q), q));
+            }
+        }
         // A single's axles are regridded at its effect values where its
         // swarm found them worth something (at the base's axles they
         // lower the cost by REGRID_GAIN; below that the grid would be the

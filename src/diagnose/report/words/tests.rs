@@ -15,7 +15,26 @@ fn explained(reduction_percent: f64) -> Verdict {
         noise_level: 0.941,
         reduction_percent,
         warnings: Vec::new(),
+        evidence: Vec::new(),
     })
+}
+
+#[test]
+fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
+    use crate::diagnose::report::outcome::Evidence;
+    let e = |fitted: f64, agrees: bool| Evidence::Calibration {
+        channel: crate::diagnose::model::channels::Channel::Ay,
+        fitted,
+        fitted_std_error: 0.005,
+        measured: -0.6,
+        measured_std_error: 0.001,
+        agrees,
+    };
+    assert_eq!(
+        evidence(&e(-0.6, true)),
+        "confirmed: the ay offset fitted, -0.6000 ± 5.0e-3 m/s², agrees with the standstills' and straights' -0.6000 ± 1.0e-3 m/s²"
+    );
+    assert!(evidence(&e(0.1, false)).starts_with("not confirmed: the ay offset fitted, 0.1000"));
 }
 
 #[test]

@@ -50,7 +50,7 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{GapFinding, Note, Unseen};
+use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
@@ -160,9 +160,27 @@ fn calibrated(c: &Campaign) -> Calibrated {
             .channels
             .iter()
             .find(|k| k.channel == run_channel)?;
-        let pooled = k.standstill.as_ref().or(k.straight.as_ref())?;
-        Some((pooled.mean, pooled.std_error))
+        let (pooled, on) = match (&k.standstill, &k.straight) {
+            (Some(p), _) => (p, CalibrationSource::Standstills),
+            (None, Some(p)) => (p, CalibrationSource::Straights),
+            (None, None) => return None,
+        };
+        Some((pooled.mean, pooled.std_error, on))
     })
+}
+
+/// The channels with an uncertainty stated under `[channels]` that no run
+/// measures (absent from the noise table `noise`).
+fn noise_unmeasured<'a>(
+    c: &'a Campaign,
+    noise: &'a [ChannelNoise],
+) -> impl Iterator<Item = Channel> + 'a {
+    let u = &c.uncertainty;
+    Channel::ALL
+        .into_iter()
+        .zip([u.yaw_rate, u.ay, u.beta])
+        .filter(|(ch, stated)| stated.is_some() && !noise.iter().any(|n| n.channel == *ch))
+        .map(|(ch, _)| ch)
 }
 
 /// The channel whose share of the base model's held-out error `J²`
@@ -393,6 +411,7 @@ fn run(
     let significant = rules::significant(j0, jn);
     let (effects, mut notes) = visible_effects(c);
     notes.extend(grid_note(&ctx, set.step));
+    notes.extend(noise_unmeasured(c, &noise).map(|channel| Note::UncertaintyUnused { channel }));
     let read = c
         .notes
         .iter()

@@ -193,6 +193,14 @@ pub enum Limit {
     /// The upper end of a prior's 95 % range.
     #[error("a range's upper end must lie above its lower end")]
     PriorRange,
+    /// A prior's cornering coefficients beyond what the axle
+    /// identification represents.
+    #[error("the axles identified from the runs have cornering coefficients of 0.4–4000 1/rad (a softer or stiffer axle is no tyre)")]
+    PriorCornering,
+    /// A prior's peak friction beyond what the axle identification
+    /// represents.
+    #[error("the axles identified from the runs have a peak friction of 0.11–9")]
+    PriorFriction,
     /// The particles of each effect fit's swarm.
     #[error("each effect fit's swarm needs a particle")]
     Particles,

@@ -68,6 +68,11 @@ pub fn page(
     for w in words::verdict_warnings(&d.verdict) {
         p.paragraph("warning", &w);
     }
+    if let crate::diagnose::report::Verdict::Explained(e) = &d.verdict {
+        for x in &e.evidence {
+            p.paragraph("verdict", &words::evidence(x));
+        }
+    }
     for c in &d.confounded {
         p.paragraph(
             "warning",
@@ -84,7 +89,16 @@ pub fn page(
         let notes: Vec<String> = d.notes.iter().map(words::note).collect();
         p.section("notes", "Notes on the inputs").lines(&notes);
     }
-    let findings: Vec<String> = d.gap.findings.iter().map(words::finding).collect();
+    let mut findings: Vec<String> = vec![format!(
+        "channels trusted to: {}",
+        d.gap
+            .noise
+            .iter()
+            .map(words::channel_trust)
+            .collect::<Vec<_>>()
+            .join("; ")
+    )];
+    findings.extend(d.gap.findings.iter().map(words::finding));
     p.section("gap", "Where the gap lies").lines(&findings);
     p.figure(
         "gap-map",
@@ -318,6 +332,14 @@ fn road_and_cleaning(p: &mut Page, d: &Diagnosis) {
         );
     } else {
         p.lines(&road);
+    }
+    let calibration = d.calibration.lines();
+    if !calibration.is_empty() {
+        p.section(
+            "calibration",
+            "Sensor offsets from standstills and straights",
+        )
+        .lines(&calibration);
     }
     let mut cleaning = d.cleaning.summary(CLEANING_LINES);
     if cleaning.is_empty() {

@@ -133,7 +133,7 @@ fn an_estimated_sideslip_is_trusted_as_an_estimate_and_the_logged_bank_is_named_
 #[test]
 fn stated_ranges_and_uncertainties_are_used_and_reported() {
     let dir = tempfile::tempdir().unwrap();
-    // A friction range the runs' 1.3 m/s² exceed 0.8 of (0.1 g): the peak
+    // A friction range the runs' 1.3 m/s² exceed 0.8 of (0.12 g): the peak
     // friction is fitted, against the stated range; the sideslip's stated
     // uncertainty is its floor and scale.
     let c = oval(
@@ -142,20 +142,24 @@ fn stated_ranges_and_uncertainties_are_used_and_reported() {
         "none",
         "1",
         &tables(
-            "cornering = [10.0, 30.0]\nfriction = [0.1, 0.3]",
-            "beta = 0.004",
+            "cornering = [10.0, 30.0]\nfriction = [0.12, 0.3]",
+            "beta = 0.004\nay = 0.05",
             "\"sensor_bias\"",
         ),
     );
     let (stdout, d) = diagnose_campaign(&c);
     let prior = &d["base"]["axles"]["prior"];
-    assert!(prior["prior"]["class"].is_null(), "{prior}");
+    assert_eq!(prior["prior"]["class"], "road", "{prior}");
+    assert_eq!(prior["prior"]["stated"], serde_json::json!([true, true]));
     assert_eq!(prior["prior"]["cornering"][1], 30.0);
     assert_eq!(prior["friction_rule"]["free"], true, "{prior}");
     let threshold = prior["friction_rule"]["threshold"].as_f64().unwrap();
-    assert!((threshold - 0.8 * 0.1 * 9.80665).abs() < 1e-9);
+    assert!((threshold - 0.8 * 0.12 * 9.80665).abs() < 1e-9);
     assert_eq!(d["base"]["axles"]["parameters"][2]["held"], false);
-    assert!(stdout.contains("prior stated ranges: cornering coefficient 10–30 1/rad"));
+    assert!(
+        stdout.contains("prior road tyres (cornering coefficient and peak friction stated): cornering coefficient 10–30 1/rad"),
+        "{stdout}"
+    );
     assert!(stdout.contains("peak friction fitted: the runs reach |ay|"));
     let beta = &d["gap"]["noise"][1];
     assert_eq!(
@@ -163,6 +167,11 @@ fn stated_ranges_and_uncertainties_are_used_and_reported() {
         (Some("stated"), Some(0.004))
     );
     assert!(stdout.contains("beta 0.0040 rad (stated)"), "{stdout}");
+    // The slow oval logs no ay: its stated uncertainty is unused, and said so.
+    assert!(
+        stdout.contains("[channels] ay: no run measures this channel"),
+        "{stdout}"
+    );
 }
 
 /// The error `diagnose` gives on a campaign whose `vehicle.toml` has
@@ -205,6 +214,12 @@ fn a_wrong_prior_or_uncertainty_is_refused_with_its_key_line_and_value() {
     let e = refused("\n[tyres]\nfriction = [1.0, 0.8]\n", "slow-oval");
     assert!(
         e.contains("tyres.friction") && e.contains("upper end"),
+        "{e}"
+    );
+    // A range no axle the identification represents can have.
+    let e = refused("\n[tyres]\ncornering = [1e-9, 1e9]\n", "slow-oval");
+    assert!(
+        e.contains("tyres.cornering") && e.contains("0.4–4000"),
         "{e}"
     );
     // The handling programme's campaign has rig data: no axles to identify.

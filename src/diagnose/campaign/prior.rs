@@ -64,8 +64,11 @@ impl TyreClass {
 /// coefficient (both axles) and of the peak friction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct AxlePrior {
-    /// The tyre class the ranges are from (None: stated in the campaign).
-    pub class: Option<TyreClass>,
+    /// The tyre class whose ranges are used where none is stated.
+    pub class: TyreClass,
+    /// Which ranges the campaign stated (cornering, friction) in place of
+    /// the class's.
+    pub stated: [bool; 2],
     /// Cornering coefficient, 1/rad: `[lo, hi]`.
     pub cornering: [f64; 2],
     /// Peak friction: `[lo, hi]`.
@@ -83,7 +86,8 @@ impl AxlePrior {
     pub fn of(class: TyreClass) -> Self {
         let (cornering, friction) = class.ranges();
         Self {
-            class: Some(class),
+            class,
+            stated: [false; 2],
             cornering,
             friction,
         }

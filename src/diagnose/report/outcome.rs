@@ -141,13 +141,25 @@ pub enum Evidence {
         fitted: f64,
         /// Its standard error.
         fitted_std_error: f64,
-        /// Measured on the standstills or straights.
+        /// Measured on the standstills, else on the straights.
         measured: f64,
+        /// Where it was measured.
+        measured_on: CalibrationSource,
         /// Its standard error.
         measured_std_error: f64,
         /// Within three combined standard errors.
         agrees: bool,
     },
+}
+
+/// Where a sensor offset was measured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CalibrationSource {
+    /// Standing still on a flat road (or a logged bank removed).
+    Standstills,
+    /// On straights at constant speed (no standstill measured it).
+    Straights,
 }
 
 /// Combined standard errors within which a fitted and a measured offset
@@ -332,6 +344,12 @@ pub enum Note {
         runs: usize,
         /// All runs.
         of: usize,
+    },
+    /// An uncertainty stated under `[channels]` for a channel no run
+    /// measures: unused.
+    UncertaintyUnused {
+        /// The channel.
+        channel: Channel,
     },
 }
 

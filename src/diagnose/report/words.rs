@@ -15,8 +15,8 @@ use crate::diagnose::base::prior::PriorReport;
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::outcome::{
-    ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning,
-    Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary,
+    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{
     BaseReport, ChannelNoise, Confounded, ParameterValue, ScaleSource, Shrinkage,
@@ -322,9 +322,20 @@ pub fn axles_line(id: &AxleIdentification) -> String {
 /// the axles lie on it.
 pub fn prior_line(p: &PriorReport) -> String {
     let a = &p.prior;
-    let class = a.class.map_or("stated ranges".to_string(), |c| {
-        format!("{} tyres", c.name().replace('_', " "))
-    });
+    let stated: Vec<&str> = ["cornering coefficient", "peak friction"]
+        .into_iter()
+        .zip(a.stated)
+        .filter_map(|(n, s)| s.then_some(n))
+        .collect();
+    let class = format!(
+        "{} tyres{}",
+        a.class.name().replace('_', " "),
+        if stated.is_empty() {
+            String::new()
+        } else {
+            format!(" ({} stated)", stated.join(" and "))
+        }
+    );
     let rule = &p.friction_rule;
     let friction = if rule.free {
         format!(
@@ -395,6 +406,10 @@ pub fn note(n: &Note) -> String {
         Note::BankOnlyInYawRate { runs, of } => format!(
             "bank_profile: {runs} of {of} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them"
         ),
+        Note::UncertaintyUnused { channel } => format!(
+            "[channels] {}: no run measures this channel, so its stated uncertainty is not used",
+            channel.name()
+        ),
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),
@@ -428,13 +443,18 @@ pub fn evidence(e: &Evidence) -> String {
             fitted,
             fitted_std_error,
             measured,
+            measured_on,
             measured_std_error,
             agrees,
         } => format!(
-            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the standstills' and straights' {measured:.4} ± {measured_std_error:.1e} {unit}",
+            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the {}' {measured:.4} ± {measured_std_error:.1e} {unit}",
             if *agrees { "confirmed" } else { "not confirmed" },
             channel.name(),
             if *agrees { "agrees with" } else { "differs from" },
+            match measured_on {
+                CalibrationSource::Standstills => "standstills",
+                CalibrationSource::Straights => "straights",
+            },
             unit = channel.unit(),
         ),
     }

@@ -91,7 +91,7 @@ fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) 
     Channel::ALL
         .into_iter()
         .filter_map(|c| {
-            let (measured, measured_std_error) = calibrated[c.index()]?;
+            let (measured, measured_std_error, measured_on) = calibrated[c.index()]?;
             let name = format!("{}.{}", EffectKind::SensorBias.name(), c.name());
             let p = parameters
                 .iter()
@@ -102,6 +102,7 @@ fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) 
                 fitted: p.value,
                 fitted_std_error: p.std_error,
                 measured,
+                measured_on,
                 measured_std_error,
                 agrees: (p.value - measured).abs() <= CALIBRATION_AGREES * combined,
             })
@@ -133,6 +134,7 @@ pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagnose::report::CalibrationSource;
 
     fn offset(name: &str, value: f64, std_error: f64) -> ParameterValue {
         ParameterValue {
@@ -148,7 +150,8 @@ mod tests {
 
     #[test]
     fn a_fitted_offset_agrees_with_the_standstills_within_three_combined_standard_errors() {
-        let calibrated: Calibrated = [None, Some((-0.600, 0.001)), Some((0.0, 0.001))];
+        let on = CalibrationSource::Standstills;
+        let calibrated: Calibrated = [None, Some((-0.600, 0.001, on)), Some((0.0, 0.001, on))];
         // 3·√(0.004² + 0.001²) = 0.0124 m/s².
         let params = [
             offset("sensor_bias.ay", -0.612, 0.004),

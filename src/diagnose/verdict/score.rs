@@ -17,6 +17,7 @@ use crate::diagnose::fit::{fit, swarm, FitOutcome, Polish};
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Observed;
+use crate::diagnose::report::CalibrationSource;
 use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
 use crate::diagnose::verdict::candidate::Setting;
 use crate::optim::local::{Derivatives, Residuals};
@@ -58,7 +59,7 @@ pub(crate) struct Context<'a> {
 
 /// Each response channel's offset measured on the runs' standstills (else
 /// straights), with its standard error ([`crate::measured::calibration`]).
-pub(crate) type Calibrated = [Option<(f64, f64)>; 3];
+pub(crate) type Calibrated = [Option<(f64, f64, CalibrationSource)>; 3];
 
 /// A candidate fitted on all runs, not yet cross-validated: its
 /// setting, its fit (with the optimum's linearisation the fold refits
@@ -267,7 +268,7 @@ impl<'a> Context<'a> {
             if self.calibrated.iter().any(Option::is_some) {
                 let mut q = from.clone();
                 for (slot, c) in q[s.layout.effect(i)].iter_mut().zip(&self.calibrated) {
-                    if let Some((mean, _)) = c {
+                    if let Some((mean, _, _)) = c {
                         *slot = *mean;
                     }
                 }

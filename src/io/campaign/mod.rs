@@ -296,16 +296,30 @@ fn axle_prior(
             })?,
         ),
     };
-    for (key, range, slot) in [
-        ("tyres.cornering", spec.cornering, &mut prior.cornering),
-        ("tyres.friction", spec.friction, &mut prior.friction),
-    ] {
+    // What the identification can represent (the axle shares' box).
+    let boxes = [
+        (0.4, 4000.0, Limit::PriorCornering),
+        (0.11, 9.0, Limit::PriorFriction),
+    ];
+    for (i, (key, range)) in [
+        ("tyres.cornering", spec.cornering),
+        ("tyres.friction", spec.friction),
+    ]
+    .into_iter()
+    .enumerate()
+    {
         let Some([lo, hi]) = range else { continue };
-        ParamError::positive(key, lo)
-            .and_then(|_| ParamError::in_range(key, hi, lo, f64::INFINITY, Limit::PriorRange))
+        let (min, max, within) = boxes[i];
+        ParamError::in_range(key, lo, min, max, within)
+            .and_then(|_| ParamError::in_range(key, hi, min, max, within))
+            .and_then(|_| ParamError::in_range(key, hi, lo, max, Limit::PriorRange))
             .map_err(|e| src.value_error(&e))?;
-        *slot = [lo, hi];
-        prior.class = None;
+        if i == 0 {
+            prior.cornering = [lo, hi];
+        } else {
+            prior.friction = [lo, hi];
+        }
+        prior.stated[i] = true;
     }
     Ok(prior)
 }

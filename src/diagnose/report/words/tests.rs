@@ -27,12 +27,13 @@ fn a_fitted_offset_is_confirmed_or_not_by_the_standstills_in_its_unit() {
         fitted,
         fitted_std_error: 0.005,
         measured: -0.6,
+        measured_on: crate::diagnose::report::outcome::CalibrationSource::Standstills,
         measured_std_error: 0.001,
         agrees,
     };
     assert_eq!(
         evidence(&e(-0.6, true)),
-        "confirmed: the ay offset fitted, -0.6000 ± 5.0e-3 m/s², agrees with the standstills' and straights' -0.6000 ± 1.0e-3 m/s²"
+        "confirmed: the ay offset fitted, -0.6000 ± 5.0e-3 m/s², agrees with the standstills' -0.6000 ± 1.0e-3 m/s²"
     );
     assert!(evidence(&e(0.1, false)).starts_with("not confirmed: the ay offset fitted, 0.1000"));
 }

@@ -155,15 +155,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     let mut out = vec![format!("base model: {}", words::tyre_source(&d.base))];
     let rig = d.base.rig_grouping.iter().flat_map(|g| g.lines());
     out.extend(rig.map(|l| format!("  rig data: {l}")));
-    out.push(format!(
-        "channels trusted to: {}",
-        d.gap
-            .noise
-            .iter()
-            .map(words::channel_trust)
-            .collect::<Vec<_>>()
-            .join("; ")
-    ));
+    out.push(words::channels_trusted(&d.gap.noise));
     out.push("where the gap lies:".into());
     out.extend(
         d.gap

@@ -89,15 +89,7 @@ pub fn page(
         let notes: Vec<String> = d.notes.iter().map(words::note).collect();
         p.section("notes", "Notes on the inputs").lines(&notes);
     }
-    let mut findings: Vec<String> = vec![format!(
-        "channels trusted to: {}",
-        d.gap
-            .noise
-            .iter()
-            .map(words::channel_trust)
-            .collect::<Vec<_>>()
-            .join("; ")
-    )];
+    let mut findings = vec![words::channels_trusted(&d.gap.noise)];
     findings.extend(d.gap.findings.iter().map(words::finding));
     p.section("gap", "Where the gap lies").lines(&findings);
     p.figure(

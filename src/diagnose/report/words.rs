@@ -416,6 +416,12 @@ pub fn note(n: &Note) -> String {
     }
 }
 
+/// How far every measured channel is trusted, in one line.
+pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
+    let each: Vec<String> = noise.iter().map(channel_trust).collect();
+    format!("channels trusted to: {}", each.join("; "))
+}
+
 /// How far a channel is trusted, and why.
 pub fn channel_trust(n: &ChannelNoise) -> String {
     let why = match n.source {

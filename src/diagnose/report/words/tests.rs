@@ -2,7 +2,7 @@
 //! match, and what a sentence may not say.
 
 use super::*;
-use crate::diagnose::base::identify::{Axle, AxleLimit};
+use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
 

@@ -36,9 +36,10 @@ pub enum Phase {
     BaseLinearisation,
     /// The base axles refitted on every fold.
     BaseFolds,
-    /// A candidate's start: the swarm over its parameters and, with axles
-    /// identified from the runs, their grid at its values.
-    CandidateSwarm,
+    /// A candidate's start: the global stage over its parameters (a grid
+    /// or a swarm) and, with axles identified from the runs, their grid at
+    /// its values.
+    CandidateSearch,
     /// A candidate's Levenberg–Marquardt polish on all runs (its
     /// finite-difference Jacobians included).
     CandidatePolish,
@@ -60,7 +61,7 @@ impl Phase {
         Phase::BasePolish,
         Phase::BaseLinearisation,
         Phase::BaseFolds,
-        Phase::CandidateSwarm,
+        Phase::CandidateSearch,
         Phase::CandidatePolish,
         Phase::CandidateJacobian,
         Phase::CandidateCurvature,
@@ -75,7 +76,7 @@ impl Phase {
             Phase::BasePolish => "base fit (Levenberg–Marquardt)",
             Phase::BaseLinearisation => "base linearisation",
             Phase::BaseFolds => "base fold refits",
-            Phase::CandidateSwarm => "candidate swarm (and axle regrid)",
+            Phase::CandidateSearch => "candidate global stage (grid or swarm, and axle regrid)",
             Phase::CandidatePolish => "candidate fit (Levenberg–Marquardt)",
             Phase::CandidateJacobian => "candidate Jacobian",
             Phase::CandidateCurvature => "candidate second derivatives",

@@ -7,7 +7,7 @@
 //! the Putnam racing log (`campaigns/putnam.toml`). Units: SI, rad.
 
 use crate::diagnose::fit::problem::Problem;
-use crate::diagnose::fit::{fit, pair_index, FitOutcome, Polish};
+use crate::diagnose::fit::{fit, pair_index, FitOutcome, GlobalSearch, Polish};
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::ProjectedModel;
@@ -196,6 +196,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
                     residuals: problem.data_count(),
                     evaluations,
                     converged: true,
+                    global: GlobalSearch::None,
                     linear: None,
                 };
             }
@@ -332,6 +333,7 @@ mod tests {
             residuals: all.data_count(),
             evaluations: 0,
             converged: false,
+            global: GlobalSearch::None,
             linear: Some(linearise(&all, &start)),
         };
         let fold = Problem::new(

@@ -18,6 +18,7 @@ pub use crate::diagnose::model::scale::ScaleSource;
 pub use crate::diagnose::base::identify::{Axle, AxleIdentification, AxleLimit, AxleValue, NoTyre};
 pub use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::EffectKind;
+use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
@@ -80,6 +81,9 @@ pub struct Ranked {
     pub bic: f64,
     /// BIC minus the base model's (negative: better).
     pub delta_bic: f64,
+    /// How the all-run fit's global stage searched (a grid along one or
+    /// two parameters, a swarm along more).
+    pub global_search: GlobalSearch,
 }
 
 /// A single effect not cross-validated: its fit on all runs removes so
@@ -103,6 +107,8 @@ pub struct Screened {
     pub margin_percent: f64,
     /// BIC of the all-run fit minus the base model's.
     pub delta_bic: f64,
+    /// How the all-run fit's global stage searched.
+    pub global_search: GlobalSearch,
 }
 
 /// Effects that explain the gap about equally well (written with the

@@ -13,7 +13,7 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
-use crate::diagnose::fit::{fit, swarm, FitOutcome, Polish};
+use crate::diagnose::fit::{fit, global_search, FitOutcome, GlobalSearch, Polish};
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Observed;
@@ -114,11 +114,11 @@ impl<'a> Context<'a> {
         self.cross_validate(&self.fit_all(kinds, starts, salt))
     }
 
-    /// Fits a candidate on all runs (PSO from `start`, then
+    /// Fits a candidate on all runs (a grid or a swarm from `start`, then
     /// Levenberg–Marquardt) and scores the fit on them. A combination
     /// comes with `starts` (its members' single fits, the set it extends
-    /// with the added effect off, the added effect's own axles): the swarm
-    /// then starts from the best of them, and the polish from the lowest
+    /// with the added effect off, the added effect's own axles): the global
+    /// stage then starts from the best of them, and the polish from the lowest
     /// cost found ([`Context::start`]).
     pub(crate) fn fit_all(
         &self,
@@ -146,11 +146,14 @@ impl<'a> Context<'a> {
             ..self.pso
         };
         let t0 = Instant::now();
-        let start = self.start(&problem, &s, starts, &pso);
+        let (start, global) = self.start(&problem, &s, starts, &pso);
         let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
-        let full = fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt);
+        let full = FitOutcome {
+            global,
+            ..fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt)
+        };
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
-            rec.add(Phase::CandidateSwarm, mark.0 - t0, mark.1);
+            rec.add(Phase::CandidateSearch, mark.0 - t0, mark.1);
             let phases = [
                 Phase::CandidatePolish,
                 Phase::CandidateJacobian,
@@ -233,12 +236,14 @@ impl<'a> Context<'a> {
         }
     }
 
-    /// The start of a candidate's polish: the lowest cost of `starts` and
-    /// of a swarm over the effect parameters from the best of them (from
-    /// the effect off without them; the axle characteristics held, one
-    /// particle at that point). Where the axle characteristics are fitted, the start must be
+    /// The start of a candidate's polish and how its global stage searched:
+    /// the lowest cost of `starts` and of the global stage over the effect
+    /// parameters from the best of them (from the effect off without them;
+    /// the axle characteristics held; [`global_search`]: a grid along one or
+    /// two parameters, a swarm with one particle at that point along more).
+    /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
-    /// grid is rerun at the swarm's effect values and, for an effect that
+    /// grid is rerun at the global stage's effect values and, for an effect that
     /// takes a measured input, at the input as logged ([`as_logged`]);
     /// the lowest cost of them all starts the polish.
     fn start<F: Fn(&[f64]) -> crate::diagnose::model::Augmented + Sync>(
@@ -247,20 +252,20 @@ impl<'a> Context<'a> {
         s: &Setting,
         starts: &[Vec<f64>],
         pso: &Pso,
-    ) -> Vec<f64> {
+    ) -> (Vec<f64>, GlobalSearch) {
         let held = s.layout.axle_count();
         let mut tried: Vec<(f64, Vec<f64>)> = starts
             .iter()
             .map(|p| (problem.cost(p), p.clone()))
             .collect();
-        // A single's swarm starts from the effect off; a combination's is
-        // a fresh swarm from its best start, so that it is not bound to
-        // the basin its members' fits were in.
+        // A single's global stage starts from the effect off; a
+        // combination's is a fresh search from its best start, so that it is
+        // not bound to the basin its members' fits were in.
         let from = tried
             .iter()
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .map_or_else(|| s.off(), |(_, p)| p.clone());
-        let (p, _) = swarm(problem, &from, pso, held);
+        let (p, global) = global_search(problem, &from, pso, held);
         tried.push((problem.cost(&p), p));
         // The sensor offsets as the standstills and straights measured
         // them: a start in the basin a real log's offsets are in.
@@ -276,7 +281,7 @@ impl<'a> Context<'a> {
             }
         }
         // A single's axles are regridded at its effect values where its
-        // swarm found them worth something (at the base's axles they
+        // global stage found them worth something (at the base's axles they
         // lower the cost by REGRID_GAIN; below that the grid would be the
         // base's own again), and at the input as logged; a combination's
         // starts already carry each member's axles.
@@ -285,16 +290,17 @@ impl<'a> Context<'a> {
             let (cost, p) = tried
                 .iter()
                 .min_by(|a, b| a.0.total_cmp(&b.0))
-                .expect("the swarm's best is tried");
+                .expect("the global stage's best is tried");
             let gained = (*cost < (1.0 - REGRID_GAIN) * off).then(|| p[held..].to_vec());
             for tail in gained.into_iter().chain(as_logged(*kind)) {
                 tried.extend(axle_grid(problem, &tail).into_iter().take(1));
             }
         }
-        tried
+        let best = tried
             .into_iter()
             .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or_else(|| s.off(), |(_, p)| p)
+            .map_or_else(|| s.off(), |(_, p)| p);
+        (best, global)
     }
 
     /// Held-out replays of every run with a candidate's fold parameters.
@@ -316,7 +322,7 @@ impl<'a> Context<'a> {
     }
 }
 
-/// Share of the cost a single's swarm must remove at the base's axles
+/// Share of the cost a single's global stage must remove at the base's axles
 /// for its axles to be regridded at its values.
 const REGRID_GAIN: f64 = 0.01;
 
@@ -339,7 +345,8 @@ const SWARM_STALL: Stall = Stall {
 
 /// The runs prepared for replay (sampled on the replay grid, residual
 /// times picked), the cross-validation folds (run i in fold i mod k) and
-/// the swarm every effect fit starts with.
+/// the swarm of the fits whose global stage searches more parameters than
+/// a grid affords.
 pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
     let set = &c.settings;
     let runs = Prepared::campaign_runs(c);

@@ -163,5 +163,6 @@ fn row(sc: &Scored, inside: f64, base: &Baseline) -> Screened {
         threshold_percent: 100.0 * ACCEPT,
         margin_percent: SCREEN_MARGIN,
         delta_bic: base.delta_bic(sc),
+        global_search: sc.full.global,
     }
 }

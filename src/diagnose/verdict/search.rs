@@ -209,6 +209,7 @@ impl Baseline {
             warnings,
             bic: sc.full.bic(),
             delta_bic: sc.full.bic() - self.bic0,
+            global_search: sc.full.global,
         }
     }
 }

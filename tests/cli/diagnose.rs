@@ -102,6 +102,21 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     for key in ["heldout_error_before", "heldout_error_after", "bic"] {
         assert!(top[key].is_number(), "{key}");
     }
+    // The delay's one parameter is searched on a grid of nine cells (and
+    // the start); the three sensor offsets by a swarm.
+    assert_eq!(
+        top["global_search"],
+        serde_json::json!({"kind": "grid", "per_parameter": 9, "points": 10})
+    );
+    let bias = d["screened"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .chain(d["ranking"].as_array().unwrap())
+        .find(|r| r["effect"] == "sensor_bias")
+        .expect("sensor_bias fitted");
+    assert_eq!(bias["global_search"]["kind"], "swarm", "{bias}");
+    assert!(bias["global_search"]["evaluations"].as_u64().unwrap() >= 10);
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert!(d["confounded"].is_array());
     // Constant-speed runs without ax: no candidate is worse in sample

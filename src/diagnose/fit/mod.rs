@@ -1,12 +1,6 @@
 //! Fitting a [`Problem`]'s parameters by output error: a global stage
 //! ([`global_search`]) that hands the polish a start in the optimum's basin,
-//! polished by Levenberg–Marquardt within the bounds ([`fit`]). The global
-//! stage of a search along one or two parameters is a deterministic grid of
-//! cell centres over their box ([`grid`]: 9 or 5 × 5 replays, where a swarm
-//! spends about 50); a wider search keeps the swarm ([`swarm`]: the crate's
-//! PSO over the box of each parameter, stopped once its best has settled).
-//! Either evaluates the start point too, so the fit is never worse than the
-//! model it starts from. The parameters'
+//! polished by Levenberg–Marquardt within the bounds ([`fit`]). The parameters'
 //! standard errors come from the Jacobian at the optimum,
 //! `s²·(JᵀJ)⁻¹` with `s²` the residual variance, those pressed onto a
 //! bound held there; the optimum's quadratic model of the residuals
@@ -15,52 +9,21 @@
 //! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
 //! model ([`FitOutcome::bic`]).
 
+pub(crate) mod global;
 pub(crate) mod layout;
 pub(crate) mod prior_rows;
 pub(crate) mod problem;
 pub(crate) mod refit;
 pub(crate) mod tangent;
 
+pub use crate::diagnose::fit::global::{global_search, GlobalSearch};
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::Residuals;
-use crate::optim::pso::Pso;
 use crate::optim::stats::{seen_columns, standard_errors};
 use nalgebra::DMatrix;
 use serde::Serialize;
-
-/// How the global stage of a fit searched its parameters (reported with
-/// each candidate: the grid is deterministic, the swarm seeded).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum GlobalSearch {
-    /// Nothing to search: every parameter held, or the polish started from
-    /// a nearby optimum.
-    None,
-    /// A grid of cell centres over the box, `points` replays of the runs
-    /// (with the start's).
-    Grid {
-        /// Cells per searched parameter.
-        per_parameter: usize,
-        /// Replays made.
-        points: usize,
-    },
-    /// The particle swarm, for a search along more parameters than a grid
-    /// affords.
-    Swarm {
-        /// Replays made.
-        evaluations: usize,
-    },
-}
-
-/// Cells per parameter of the grid stage, by the number of parameters
-/// searched (one, two); a wider search keeps the swarm. Nine cells put a
-/// centre within 1/18 of the box of any optimum, five per axis within 1/10:
-/// inside the basin of every effect of the library, whose costs are smooth
-/// and, over their boxes, single-valleyed along each parameter (the
-/// confusion matrices check that the verdicts are the swarm's).
-pub const GRID_CELLS: [usize; 2] = [9, 5];
 
 /// The outcome of a fit.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -137,94 +100,6 @@ pub enum Polish {
     /// the all-run fit): Levenberg–Marquardt to convergence, without the
     /// standard errors.
     Refit,
-}
-
-/// The global stage of a fit over every parameter but the first `held`
-/// (kept at their values in `start`): a grid ([`grid`]) along one or two
-/// parameters, the swarm ([`swarm`]) along more; its best point (never
-/// worse than `start`) and how it searched.
-pub fn global_search<F: Fn(&[f64]) -> Augmented + Sync>(
-    problem: &Problem<F>,
-    start: &[f64],
-    pso: &Pso,
-    held: usize,
-) -> (Vec<f64>, GlobalSearch) {
-    let searched = problem.bounds.len().saturating_sub(held);
-    match searched {
-        0 => (problem.clamp(start), GlobalSearch::None),
-        1 | 2 => {
-            let per_parameter = GRID_CELLS[searched - 1];
-            let (p, points) = grid(problem, start, held, per_parameter);
-            (
-                p,
-                GlobalSearch::Grid {
-                    per_parameter,
-                    points,
-                },
-            )
-        }
-        _ => {
-            let (p, evaluations) = swarm(problem, start, pso, held);
-            (p, GlobalSearch::Swarm { evaluations })
-        }
-    }
-}
-
-/// The grid stage: the cost at the centres of `cells` equal cells along
-/// each parameter but the first `held` (the product of them) and at
-/// `start`; the lowest of them and the replays made.
-pub fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
-    problem: &Problem<F>,
-    start: &[f64],
-    held: usize,
-    cells: usize,
-) -> (Vec<f64>, usize) {
-    let p0 = problem.clamp(start);
-    let d = p0.len().saturating_sub(held);
-    let mut best = (problem.cost(&p0), p0.clone());
-    let total = cells.pow(d as u32);
-    let mut q = p0.clone();
-    for index in 0..total {
-        let mut rest = index;
-        for (k, slot) in q[held..].iter_mut().enumerate() {
-            let (lo, hi) = problem.bounds[held + k];
-            *slot = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
-            rest /= cells;
-        }
-        let c = problem.cost(&q);
-        // A replay that fails (a cost not finite) is no candidate start.
-        if c.is_finite() && !(c >= best.0) {
-            best = (c, q.clone());
-        }
-    }
-    (best.1, total + 1)
-}
-
-/// The swarm search of a fit: PSO over the bounds of every parameter but
-/// the first `held` (kept at their values in `start`), one particle at
-/// `start`; its best point and the evaluations made. Nothing to search
-/// (all parameters held) returns `start`.
-pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
-    problem: &Problem<F>,
-    start: &[f64],
-    pso: &Pso,
-    held: usize,
-) -> (Vec<f64>, usize) {
-    let p0 = problem.clamp(start);
-    if p0.len() <= held {
-        return (p0, 0);
-    }
-    let full = |q: &[f64]| {
-        let mut p = p0[..held].to_vec();
-        p.extend_from_slice(q);
-        p
-    };
-    let r = pso.minimize_from(
-        |q| problem.cost(&full(q)),
-        &problem.bounds[held..],
-        &[p0[held..].to_vec()],
-    );
-    (full(&r.best), r.evaluations)
 }
 
 /// Fits `problem` from `start` by the polish (the start comes from a

@@ -1,0 +1,292 @@
+//! The global stage of a fit: what hands the Levenberg–Marquardt polish
+//! ([`super::fit`]) a start in the optimum's basin. Along one or two
+//! parameters it is a deterministic grid of cell centres over their box
+//! ([`grid`]: 9 or 5 × 5 replays of the runs, where a swarm spends about
+//! 50); along more it is the crate's particle swarm ([`swarm`]: PSO over
+//! the box of each parameter, one particle at the start, stopped once its
+//! best has settled). Either evaluates the start too, so a fit is never
+//! worse than the model it starts from; the parameters before `held` (the
+//! axle characteristics of a candidate) keep their values in the start.
+//! Units are the parameters' own; the cost is the problem's scaled
+//! ½·Σ e².
+
+use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::model::Augmented;
+use crate::optim::local::Residuals;
+use crate::optim::pso::Pso;
+use serde::Serialize;
+
+/// How the global stage of a fit searched its parameters (reported with
+/// each candidate: the grid is deterministic, the swarm seeded).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum GlobalSearch {
+    /// Nothing to search: every parameter held, or the polish started from
+    /// a nearby optimum.
+    None,
+    /// A grid of cell centres over the box, `points` replays of the runs
+    /// (with the start's).
+    Grid {
+        /// Cells per searched parameter.
+        per_parameter: usize,
+        /// Replays made.
+        points: usize,
+    },
+    /// The particle swarm, for a search along more parameters than a grid
+    /// affords.
+    Swarm {
+        /// Replays made.
+        evaluations: usize,
+    },
+}
+
+/// Cells per parameter of the grid stage, by the number of parameters
+/// searched (one, two); a wider search keeps the swarm. Nine cells put a
+/// centre within 1/18 of the box of any optimum, five per axis within 1/10:
+/// inside the basin of every effect of the library, whose costs are smooth
+/// and, over their boxes, single-valleyed along each parameter (the
+/// confusion matrices check that the verdicts are the swarm's).
+pub const GRID_CELLS: [usize; 2] = [9, 5];
+
+/// The global stage of a fit over every parameter but the first `held`
+/// (kept at their values in `start`): a grid ([`grid`]) along one or two
+/// parameters, the swarm ([`swarm`]) along more; its best point (never
+/// worse than `start`) and how it searched.
+pub fn global_search<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: &Pso,
+    held: usize,
+) -> (Vec<f64>, GlobalSearch) {
+    let searched = problem.bounds.len().saturating_sub(held);
+    match searched {
+        0 => (problem.clamp(start), GlobalSearch::None),
+        1 | 2 => {
+            let per_parameter = GRID_CELLS[searched - 1];
+            let (p, points) = grid(problem, start, held, per_parameter);
+            (
+                p,
+                GlobalSearch::Grid {
+                    per_parameter,
+                    points,
+                },
+            )
+        }
+        _ => {
+            let (p, evaluations) = swarm(problem, start, pso, held);
+            (p, GlobalSearch::Swarm { evaluations })
+        }
+    }
+}
+
+/// The grid stage: the cost at the centres of `cells` equal cells along
+/// each parameter but the first `held` (the product of them) and at
+/// `start`; the lowest of them and the replays made.
+pub fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    held: usize,
+    cells: usize,
+) -> (Vec<f64>, usize) {
+    let p0 = problem.clamp(start);
+    let d = p0.len().saturating_sub(held);
+    let mut best = (problem.cost(&p0), p0.clone());
+    let total = cells.pow(d as u32);
+    let mut q = p0.clone();
+    for index in 0..total {
+        let mut rest = index;
+        for (k, slot) in q[held..].iter_mut().enumerate() {
+            let (lo, hi) = problem.bounds[held + k];
+            *slot = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
+            rest /= cells;
+        }
+        let c = problem.cost(&q);
+        // A replay that fails (a cost not finite) is no candidate start.
+        if c.is_finite() && !(c >= best.0) {
+            best = (c, q.clone());
+        }
+    }
+    (best.1, total + 1)
+}
+
+/// The swarm search of a fit: PSO over the bounds of every parameter but
+/// the first `held` (kept at their values in `start`), one particle at
+/// `start`; its best point and the evaluations made. Nothing to search
+/// (all parameters held) returns `start`.
+pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: &Pso,
+    held: usize,
+) -> (Vec<f64>, usize) {
+    let p0 = problem.clamp(start);
+    if p0.len() <= held {
+        return (p0, 0);
+    }
+    let full = |q: &[f64]| {
+        let mut p = p0[..held].to_vec();
+        p.extend_from_slice(q);
+        p
+    };
+    let r = pso.minimize_from(
+        |q| problem.cost(&full(q)),
+        &problem.bounds[held..],
+        &[p0[held..].to_vec()],
+    );
+    (full(&r.best), r.evaluations)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::fit::{fit, Polish};
+    use crate::diagnose::model::replay::tests::sine_run;
+    use crate::diagnose::model::replay::Prepared;
+    use crate::manoeuvre::SineSteer;
+    use crate::tyre::{MagicSimple, Tyre};
+    use crate::vehicle::{Vehicle, VehicleModel};
+
+    /// A car on simplified-Magic-Formula axles of stiffness factors
+    /// `p[0]` (front), `p[1]` (rear) and peak friction `p[2]` (1.0 when
+    /// not given).
+    fn model(p: &[f64]) -> Augmented {
+        let d = p.get(2).copied().unwrap_or(1.0);
+        let tyre = |b: f64| Tyre::MagicSimple(MagicSimple { b, c: 1.3, d });
+        Augmented::new(
+            VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
+            1.0,
+        )
+    }
+
+    /// Noise-free runs of the car with B = 9 front, 13 rear: the cost is
+    /// zero there and nowhere else.
+    fn runs() -> Vec<Prepared> {
+        let truth = model(&[9.0, 13.0]);
+        (0..3)
+            .map(|k| {
+                let m = SineSteer {
+                    speed: 15.0 + 5.0 * k as f64,
+                    amplitude: 0.03,
+                    frequency: 0.4 + 0.2 * k as f64,
+                    start: 0.5,
+                    end: 7.5,
+                };
+                sine_run(&truth, k, m)
+            })
+            .collect()
+    }
+
+    const SCALES: [f64; 3] = [2e-3, 5e-2, 1.0];
+
+    /// The optimum of the replays (the 0.01 s replay step of the 1 ms
+    /// simulation moves it a little off the truth): Levenberg–Marquardt
+    /// from the truth.
+    fn optimum(problem: &Problem<fn(&[f64]) -> Augmented>) -> Vec<f64> {
+        let f = fit(problem, &[9.0, 13.0], None, Polish::LevenbergMarquardt);
+        assert!(f.converged);
+        assert!((f.params[0] - 9.0).abs() < 0.5 && (f.params[1] - 13.0).abs() < 0.5);
+        f.params
+    }
+
+    fn problem(runs: &[Prepared]) -> Problem<'_, fn(&[f64]) -> Augmented> {
+        let build: fn(&[f64]) -> Augmented = model;
+        Problem::new(
+            build,
+            runs.iter().collect(),
+            SCALES,
+            vec![(2.0, 40.0), (2.0, 40.0)],
+        )
+    }
+
+    #[test]
+    fn a_grid_starts_the_polish_in_the_basin_of_the_optimum() {
+        let runs = runs();
+        let problem = problem(&runs);
+        let best_fit = optimum(&problem);
+        let start = [35.0, 35.0];
+        let (best, points) = grid(&problem, &start, 0, 5);
+        assert_eq!(points, 26);
+        // The lowest of the 25 cell centres 2 + (i + ½)·7.6.
+        let centre = |i: usize| 2.0 + (i as f64 + 0.5) * 7.6;
+        let lowest = (0..25)
+            .map(|k| problem.cost(&[centre(k % 5), centre(k / 5)]))
+            .fold(f64::INFINITY, f64::min);
+        assert!((problem.cost(&best) - lowest).abs() <= 1e-12 * lowest);
+        assert!(lowest < problem.cost(&start));
+        let f = fit(&problem, &best, None, Polish::LevenbergMarquardt);
+        for k in 0..2 {
+            assert!(
+                (f.params[k] - best_fit[k]).abs() < 1e-4 * best_fit[k],
+                "{:?} against {best_fit:?}",
+                f.params
+            );
+        }
+    }
+
+    #[test]
+    fn a_grid_never_returns_worse_than_its_start_and_keeps_the_held_values() {
+        let runs = runs();
+        let problem = problem(&runs);
+        // At the optimum no cell is better.
+        let at = optimum(&problem);
+        let (best, points) = grid(&problem, &at, 0, 9);
+        assert_eq!((best, points), (at.clone(), 82));
+        // The front held at the optimum's: the best of the rear's nine
+        // cells is the centre nearest its optimum (2 + 2.5·38/9 = 12.56,
+        // the third).
+        let (best, points) = grid(&problem, &[at[0], 35.0], 1, 9);
+        assert_eq!(points, 10);
+        assert_eq!(best[0], at[0]);
+        assert!(
+            (best[1] - (2.0 + 2.5 * 38.0 / 9.0)).abs() < 1e-12,
+            "{best:?}"
+        );
+    }
+
+    #[test]
+    fn the_global_stage_is_a_grid_along_one_or_two_parameters_and_a_swarm_along_more() {
+        let runs = runs();
+        let two = Problem::new(
+            model,
+            runs.iter().collect(),
+            SCALES,
+            vec![(2.0, 40.0), (2.0, 40.0)],
+        );
+        let three = Problem::new(
+            model,
+            runs.iter().collect(),
+            SCALES,
+            vec![(2.0, 40.0), (2.0, 40.0), (0.5, 1.5)],
+        );
+        let pso = Pso {
+            particles: 6,
+            iterations: 3,
+            seed: 7,
+            ..Pso::default()
+        };
+        let start = [20.0, 20.0, 1.0];
+        let stage = |p: &Problem<_>, held| global_search(p, &start[..p.bounds.len()], &pso, held).1;
+        assert_eq!(
+            stage(&two, 0),
+            GlobalSearch::Grid {
+                per_parameter: 5,
+                points: 26
+            }
+        );
+        assert_eq!(
+            stage(&two, 1),
+            GlobalSearch::Grid {
+                per_parameter: 9,
+                points: 10
+            }
+        );
+        assert_eq!(stage(&two, 2), GlobalSearch::None);
+        assert!(
+            matches!(stage(&three, 0), GlobalSearch::Swarm { evaluations } if evaluations >= 6)
+        );
+        assert!(matches!(
+            stage(&three, 1),
+            GlobalSearch::Grid { points: 26, .. }
+        ));
+    }
+}

@@ -21,17 +21,6 @@ use handling::diagnose::{diagnose_timed, Campaign, DiagnoseSettings};
 use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
 use std::path::Path;
 
-/// User plus system CPU seconds of this process so far (Linux), if known.
-fn cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // Fields after the command name (in parentheses, which may hold spaces).
-    let rest = stat.rsplit_once(')')?.1;
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks: f64 = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
-    // The kernel's USER_HZ is 100 on every Linux the project runs on.
-    Some(ticks / 100.0)
-}
-
 fn load_average() -> String {
     std::fs::read_to_string("/proc/loadavg")
         .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
@@ -108,10 +97,8 @@ fn main() -> anyhow::Result<()> {
         c.runs.len(),
         c.settings.derivatives
     );
-    let cpu0 = cpu_seconds();
     let (d, t) = diagnose_timed(&c)?;
-    let cpu = cpu_seconds().zip(cpu0).map(|(a, b)| a - b);
-    print(&t, cpu);
+    print(&t, t.cpu_seconds);
     let screened: Vec<&str> = d.screened.iter().map(|s| s.effect.as_str()).collect();
     println!("screened: {}", screened.join(", "));
     println!("verdict: {}", joined(d.verdict.effects(), "+"));

@@ -59,7 +59,7 @@ use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, run_scatter};
-use crate::diagnose::timing::{Recorder, Timing};
+use crate::diagnose::timing::{process_cpu_seconds, Recorder, Timing};
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
@@ -365,26 +365,33 @@ fn base_report(
 }
 
 /// Runs the diagnosis of a campaign. `progress` counts work units (as many
-/// as `work_units` of the campaign).
+/// as `work_units` of the campaign). Where its time went is in the
+/// report's `timing` ([`crate::diagnose::timing`]).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
-    run(c, progress, None)
+    let recorder = Recorder::default();
+    let (t0, cpu0) = (Instant::now(), process_cpu_seconds());
+    let mut d = run(c, progress, &recorder)?;
+    let cpu = process_cpu_seconds().zip(cpu0).map(|(a, b)| a - b);
+    d.timing = recorder.timing(t0.elapsed(), cpu);
+    Ok(d)
 }
 
 /// Runs the diagnosis of a campaign and says where its time went
-/// ([`crate::diagnose::timing`]); the diagnosis is the same as [`diagnose`]'s.
+/// ([`crate::diagnose::timing`]): [`diagnose`] and its report's `timing`.
 pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
-    let recorder = Recorder::default();
-    let t0 = Instant::now();
-    let d = run(c, None, Some(&recorder))?;
-    Ok((d, recorder.timing(t0.elapsed())))
+    let d = diagnose(c, None)?;
+    let t = d.timing.clone();
+    Ok((d, t))
 }
 
-/// The diagnosis, its phases timed by `timing` when given.
+/// The diagnosis, its phases timed by `recorder` (its `timing` left to
+/// the caller, who holds the clock).
 fn run(
     c: &Campaign,
     progress: Option<&AtomicUsize>,
-    timing: Option<&Recorder>,
+    recorder: &Recorder,
 ) -> Result<Diagnosis, Error> {
+    let timing = Some(recorder);
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
     let (noise, scales, floors) = channel_trust(c);
@@ -485,5 +492,6 @@ fn run(
         confounded,
         shrinkage,
         overlays,
+        timing: recorder.timing(std::time::Duration::ZERO, None),
     })
 }

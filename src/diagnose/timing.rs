@@ -1,7 +1,9 @@
-//! Where a diagnosis spends its time: seconds and evaluations of the
-//! run set (replays of every run a fit sees, one per residual vector) by
-//! phase ([`Phase`]), recorded when a diagnosis is run through
-//! [`crate::diagnose::pipeline::diagnose_timed`] and never otherwise.
+//! Where a diagnosis spends its time: its wall and CPU time, the threads it
+//! ran on, and the seconds and evaluations of the run set (replays of every
+//! run a fit sees, one per residual vector) by phase ([`Phase`]). Every
+//! diagnosis records them (`timing` in `diagnosis.json`, the CLI's last
+//! line); [`crate::diagnose::pipeline::diagnose_timed`] hands them back
+//! beside it.
 //!
 //! The seconds of a phase are the sum, over every call in it, of the time
 //! between its start and its end. On one thread (`RAYON_NUM_THREADS=1`)
@@ -15,8 +17,9 @@
 //! at a point the run set was just replayed at reuse that replay
 //! ([`crate::diagnose::fit::problem::Problem`]): they are counted, at almost no cost.
 //!
-//! Nothing here reaches the diagnosis report: its numbers are the same
-//! with and without the timing.
+//! The timing reads the clock and counts; it decides nothing, so every
+//! other number of the report is the same run after run (the timing's own
+//! are not).
 
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
@@ -106,6 +109,12 @@ pub struct PhaseTime {
 pub struct Timing {
     /// Wall time of the whole diagnosis, s.
     pub wall_seconds: f64,
+    /// CPU time of the process over the diagnosis (user + system), s;
+    /// None where the system does not tell (Linux's `/proc` does).
+    pub cpu_seconds: Option<f64>,
+    /// Threads of the pool the diagnosis ran on (`RAYON_NUM_THREADS`, else
+    /// the cores).
+    pub threads: usize,
     /// By phase ([`Phase::Rest`]: the wall time not in another phase, on
     /// one thread).
     pub phases: Vec<PhaseTime>,
@@ -144,8 +153,9 @@ impl Recorder {
         c.fetch_add(1, Ordering::Relaxed);
     }
 
-    /// The totals, [`Phase::Rest`] being what `wall` leaves of the others.
-    pub(super) fn timing(&self, wall: Duration) -> Timing {
+    /// The totals, [`Phase::Rest`] being what `wall` leaves of the others;
+    /// `cpu` the process's CPU seconds over the same span.
+    pub(super) fn timing(&self, wall: Duration, cpu: Option<f64>) -> Timing {
         let mut phases: Vec<PhaseTime> = Phase::ALL
             .into_iter()
             .map(|p| PhaseTime {
@@ -161,11 +171,46 @@ impl Recorder {
         let cross_validated = self.cross_validated.load(Ordering::Relaxed);
         Timing {
             wall_seconds: wall.as_secs_f64(),
+            cpu_seconds: cpu,
+            threads: rayon::current_num_threads(),
             phases,
             candidates_fitted: self.screened.load(Ordering::Relaxed) + cross_validated,
             candidates_cross_validated: cross_validated,
         }
     }
+}
+
+impl Timing {
+    /// The phase with the most seconds (the rest aside), if any had some.
+    pub fn largest(&self) -> Option<&PhaseTime> {
+        self.phases
+            .iter()
+            .filter(|p| p.phase != Phase::Rest && p.seconds > 0.0)
+            .max_by(|a, b| a.seconds.total_cmp(&b.seconds))
+    }
+
+    /// A phase's share of the seconds of all phases, %.
+    pub fn share_percent(&self, p: &PhaseTime) -> f64 {
+        let all: f64 = self.phases.iter().map(|p| p.seconds).sum();
+        if all > 0.0 {
+            100.0 * p.seconds / all
+        } else {
+            0.0
+        }
+    }
+}
+
+/// User plus system CPU seconds of this process so far, where the system
+/// says (Linux's `/proc/self/stat`, in clock ticks of 1/100 s: the
+/// kernel's `USER_HZ` on every Linux the crate runs on); None elsewhere.
+pub fn process_cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // The fields after the command name, which is in parentheses and may
+    // hold spaces: utime and stime are the 12th and 13th of them.
+    let rest = stat.rsplit_once(')')?.1;
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks: f64 = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
+    Some(ticks / 100.0)
 }
 
 /// The instants at which a problem's model was built, one per evaluation

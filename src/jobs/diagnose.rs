@@ -111,6 +111,21 @@ impl DiagnoseReport {
         )
     }
 
+    /// Where the time went, for the line after the wall time: the CPU
+    /// seconds, the threads and the largest phase (` (25.8 s CPU on 2
+    /// threads; 43 % in the candidate global stage)`).
+    pub fn time_spent(&self) -> String {
+        let t = &self.diagnosis.timing;
+        let cpu = t
+            .cpu_seconds
+            .map_or_else(String::new, |c| format!("{c:.1} s CPU on "));
+        let s = if t.threads == 1 { "" } else { "s" };
+        let largest = t.largest().map_or_else(String::new, |p| {
+            format!("; {:.0} % in the {}", t.share_percent(p), p.phase.name())
+        });
+        format!(" ({cpu}{} thread{s}{largest})", t.threads)
+    }
+
     /// The campaign read and the short human report.
     pub fn summary(&self) -> Vec<String> {
         let d = &self.diagnosis;

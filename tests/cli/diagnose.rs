@@ -119,6 +119,31 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
     assert!(bias["global_search"]["evaluations"].as_u64().unwrap() >= 10);
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert!(d["confounded"].is_array());
+    // Where the time went: wall and CPU seconds, threads, the phases; the
+    // last line names the largest phase.
+    let t = &d["timing"];
+    let wall = t["wall_seconds"].as_f64().unwrap();
+    let cpu = t["cpu_seconds"].as_f64().unwrap();
+    let threads = t["threads"].as_u64().unwrap();
+    assert!(wall > 0.0 && cpu > 0.0 && threads >= 1, "{t}");
+    // The process cannot use more CPU than its threads give it (one more
+    // for the progress bar, the clock's ticks of 0.01 s).
+    assert!(cpu <= (threads + 1) as f64 * wall + 0.05, "{t}");
+    let phases = t["phases"].as_array().unwrap();
+    assert_eq!(phases.len(), 10);
+    let search = phases
+        .iter()
+        .find(|p| p["phase"] == "candidate_search")
+        .unwrap();
+    assert!(search["evaluations"].as_u64().unwrap() > 0, "{search}");
+    let last = stdout.lines().last().unwrap();
+    let s = if threads == 1 { "" } else { "s" };
+    assert!(
+        last.starts_with("diagnosed in ")
+            && last.contains(&format!(" s CPU on {threads} thread{s}; "))
+            && last.contains(" % in the candidate "),
+        "{last}"
+    );
     // Constant-speed runs without ax: no candidate is worse in sample
     // than the base it contains.
     for r in d["ranking"].as_array().unwrap() {

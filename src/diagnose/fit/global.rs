@@ -11,34 +11,10 @@
 //! ½·Σ e².
 
 use crate::diagnose::fit::problem::Problem;
+use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::model::Augmented;
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
-use serde::Serialize;
-
-/// How the global stage of a fit searched its parameters (reported with
-/// each candidate: the grid is deterministic, the swarm seeded).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum GlobalSearch {
-    /// Nothing to search: every parameter held, or the polish started from
-    /// a nearby optimum.
-    None,
-    /// A grid of cell centres over the box, `points` replays of the runs
-    /// (with the start's).
-    Grid {
-        /// Cells per searched parameter.
-        per_parameter: usize,
-        /// Replays made.
-        points: usize,
-    },
-    /// The particle swarm, for a search along more parameters than a grid
-    /// affords.
-    Swarm {
-        /// Replays made.
-        evaluations: usize,
-    },
-}
 
 /// Cells per parameter of the grid stage, by the number of parameters
 /// searched (one, two); a wider search keeps the swarm. Nine cells put a
@@ -102,7 +78,7 @@ pub fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
         }
         let c = problem.cost(&q);
         // A replay that fails (a cost not finite) is no candidate start.
-        if c.is_finite() && !(c >= best.0) {
+        if c.is_finite() && (best.0.is_nan() || c < best.0) {
             best = (c, q.clone());
         }
     }

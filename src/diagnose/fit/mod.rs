@@ -1,5 +1,5 @@
 //! Fitting a [`Problem`]'s parameters by output error: a global stage
-//! ([`global_search`]) that hands the polish a start in the optimum's basin,
+//! ([`global::global_search`]) that hands the polish a start in the optimum's basin,
 //! polished by Levenberg–Marquardt within the bounds ([`fit`]). The parameters'
 //! standard errors come from the Jacobian at the optimum,
 //! `s²·(JᵀJ)⁻¹` with `s²` the residual variance, those pressed onto a
@@ -16,7 +16,6 @@ pub(crate) mod problem;
 pub(crate) mod refit;
 pub(crate) mod tangent;
 
-pub use crate::diagnose::fit::global::{global_search, GlobalSearch};
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::BoundedLm;
@@ -24,6 +23,30 @@ use crate::optim::local::Residuals;
 use crate::optim::stats::{seen_columns, standard_errors};
 use nalgebra::DMatrix;
 use serde::Serialize;
+
+/// How the global stage of a fit searched its parameters (reported with
+/// each candidate: the grid is deterministic, the swarm seeded).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum GlobalSearch {
+    /// Nothing to search: every parameter held, or the polish started from
+    /// a nearby optimum.
+    None,
+    /// A grid of cell centres over the box, `points` replays of the runs
+    /// (with the start's).
+    Grid {
+        /// Cells per searched parameter.
+        per_parameter: usize,
+        /// Replays made.
+        points: usize,
+    },
+    /// The particle swarm, for a search along more parameters than a grid
+    /// affords.
+    Swarm {
+        /// Replays made.
+        evaluations: usize,
+    },
+}
 
 /// The outcome of a fit.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -29,6 +29,7 @@ pub use crate::diagnose::report::outcome::{
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{ParameterValue, Shrinkage, LIMIT_RESOLUTION};
+use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -239,6 +240,9 @@ pub struct Diagnosis {
     /// Held-out replays (measured / base / verdict) for the figures.
     #[serde(skip)]
     pub overlays: Vec<Overlay>,
+    /// Where the time went: wall and CPU seconds, threads, and the phases
+    /// (their seconds summed over calls, which overlap on several threads).
+    pub timing: Timing,
 }
 
 /// One run's held-out replays.

@@ -134,6 +134,12 @@ def test_diagnosis_is_typed_and_equals_its_json(tmp_path):
     written = json.loads((tmp_path / "d" / "diagnosis.json").read_text())
     assert d.to_dict() == written
     assert d.verdict.statement == written["verdict"]["statement"]
+    # The timing is reported and left out of equality (the clock's).
+    assert d.timing["wall_seconds"] > 0 and d.timing["threads"] >= 1
+    later = dict(written, timing=dict(written["timing"], wall_seconds=1e9))
+    assert handling.Diagnosis.from_dict(later) == d
+    other = dict(written, seed=written["seed"] + 1)
+    assert handling.Diagnosis.from_dict(other) != d
     # The verdict is typed: its case, and the figures of that case.
     assert d.verdict.kind is handling.VerdictKind.EXPLAINED
     assert written["verdict"]["kind"] == "explained"

@@ -18,10 +18,11 @@ use crate::optim::pso::Pso;
 
 /// Cells per parameter of the grid stage, by the number of parameters
 /// searched (one, two); a wider search keeps the swarm. Nine cells put a
-/// centre within 1/18 of the box of any optimum, five per axis within 1/10:
-/// inside the basin of every effect of the library, whose costs are smooth
-/// and, over their boxes, single-valleyed along each parameter (the
-/// confusion matrices check that the verdicts are the swarm's).
+/// centre within 1/18 of the box of any optimum, five per axis within 1/10;
+/// the polish needs no more than a start in the optimum's basin. That this
+/// is enough for the library's effects, whose costs are smooth in their
+/// parameters, is what the confusion matrices check: with the grid they
+/// give the swarm's verdicts, held-out errors and fitted values.
 pub const GRID_CELLS: [usize; 2] = [9, 5];
 
 /// The global stage of a fit over every parameter but the first `held`

@@ -300,22 +300,10 @@ mod tests {
     /// Runs of a car whose axles are the simplified Magic Formula of
     /// shares `truth`: sine steers at three speeds, 25 Hz, yaw rate and ay.
     fn runs_of(truth: &[f64]) -> Vec<crate::diagnose::model::replay::Prepared> {
-        use crate::manoeuvre::SineSteer;
         use crate::vehicle::{Vehicle, VehicleModel};
         let (f, r) = axle_tyres(truth);
         let car = Augmented::new(VehicleModel::new(Vehicle::compact_sedan(), f, r), 1.0);
-        (0..3)
-            .map(|k| {
-                let m = SineSteer {
-                    speed: 12.0 + 8.0 * k as f64,
-                    amplitude: 0.03,
-                    frequency: 0.4 + 0.2 * k as f64,
-                    start: 0.5,
-                    end: 8.0,
-                };
-                crate::diagnose::model::replay::tests::sine_run(&car, k, m)
-            })
-            .collect()
+        crate::diagnose::model::replay::tests::sine_runs(&car)
     }
 
     #[test]

@@ -117,9 +117,8 @@ pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
 mod tests {
     use super::*;
     use crate::diagnose::fit::{fit, Polish};
-    use crate::diagnose::model::replay::tests::sine_run;
+    use crate::diagnose::model::replay::tests::sine_runs;
     use crate::diagnose::model::replay::Prepared;
-    use crate::manoeuvre::SineSteer;
     use crate::tyre::{MagicSimple, Tyre};
     use crate::vehicle::{Vehicle, VehicleModel};
 
@@ -135,22 +134,9 @@ mod tests {
         )
     }
 
-    /// Noise-free runs of the car with B = 9 front, 13 rear: the cost is
-    /// zero there and nowhere else.
+    /// Noise-free runs of the car with B = 9 front, 13 rear.
     fn runs() -> Vec<Prepared> {
-        let truth = model(&[9.0, 13.0]);
-        (0..3)
-            .map(|k| {
-                let m = SineSteer {
-                    speed: 15.0 + 5.0 * k as f64,
-                    amplitude: 0.03,
-                    frequency: 0.4 + 0.2 * k as f64,
-                    start: 0.5,
-                    end: 7.5,
-                };
-                sine_run(&truth, k, m)
-            })
-            .collect()
+        sine_runs(&model(&[9.0, 13.0]))
     }
 
     const SCALES: [f64; 3] = [2e-3, 5e-2, 1.0];

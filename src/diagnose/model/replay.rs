@@ -340,6 +340,23 @@ pub(crate) mod tests {
         Prepared::new(&run, 0.01, 25.0)
     }
 
+    /// Sine steers of `truth` at 12, 20 and 28 m/s (0.03 rad at 0.4, 0.6
+    /// and 0.8 Hz for 7.5 s), 25 Hz, yaw rate and ay, noise-free.
+    pub(crate) fn sine_runs(truth: &Augmented) -> Vec<Prepared> {
+        (0..3)
+            .map(|k| {
+                let m = SineSteer {
+                    speed: 12.0 + 8.0 * k as f64,
+                    amplitude: 0.03,
+                    frequency: 0.4 + 0.2 * k as f64,
+                    start: 0.5,
+                    end: 8.0,
+                };
+                sine_run(truth, k, m)
+            })
+            .collect()
+    }
+
     /// A run of constant steer at `speed`, `ax` logged or not.
     fn run(t: Vec<f64>, speed: Vec<f64>, ax: Option<Vec<f64>>) -> MeasuredRun {
         let n = t.len();

@@ -69,7 +69,8 @@ fn not_identifiable(n: &NotIdentifiable) -> String {
 
 /// A gap no candidate is accepted for. Where the best removes less than
 /// the acceptance share and fails nothing else, no candidate explains it:
-/// a model-form error outside the library. Where it fails another rule,
+/// a model-form error outside the library, and the sentence adds any
+/// other rule it fails. Where it removes enough but fails another rule,
 /// the sentence says which, and never that nothing explains the gap.
 fn outside(o: &OutsideLibrary) -> String {
     let gap = format!(
@@ -84,6 +85,19 @@ fn outside(o: &OutsideLibrary) -> String {
         return format!(
             "{gap} that no candidate effect explains: the best, {name}, removes {:.1} % of it (acceptance needs {threshold_percent:.0} %) — a model-form error outside the library",
             best.reduction_percent
+        );
+    }
+    // Below the share and failing more: the share once, then the rest
+    // (not "removes 20 % (acceptance needs 30 %) but is refused: it
+    // removes less than the 30 % acceptance needs; …").
+    let below = |r: &Refusal| matches!(r, Refusal::BelowAcceptance { .. });
+    if best.why.iter().any(below) {
+        let rest: Vec<String> = best.why.iter().filter(|r| !below(r)).map(refusal).collect();
+        return format!(
+            "{gap} that no candidate effect explains: the best, {name}, removes {:.1} % of it, less than the {:.0} % acceptance needs, and besides {} — a model-form error outside the library",
+            best.reduction_percent,
+            o.threshold_percent,
+            rest.join("; ")
         );
     }
     format!(

@@ -100,6 +100,26 @@ fn a_best_below_acceptance_is_a_model_form_error_outside_the_library() {
 }
 
 #[test]
+fn a_best_below_acceptance_that_fails_more_names_the_share_once_then_the_rest() {
+    let v = outside(
+        12.4,
+        vec![
+            Refusal::BelowAcceptance {
+                threshold_percent: 30.0,
+            },
+            Refusal::BicNotLower { delta_bic: 4.0 },
+        ],
+    );
+    let s = statement(&v);
+    assert_eq!(
+        s,
+        "a gap (held-out error 2.500, noise level 1.000) that no candidate effect explains: the best, sensor_bias, removes 12.4 % of it, less than the 30 % acceptance needs, and besides its BIC is not lower than the base model's (ΔBIC +4) — a model-form error outside the library"
+    );
+    assert_eq!(s.matches("acceptance needs").count(), 1, "{s}");
+    assert!(!s.contains("but is refused"), "{s}");
+}
+
+#[test]
 fn no_sentence_claims_a_removal_above_acceptance_and_that_nothing_explains_the_gap() {
     // The sedan: sensor_bias removes 53.5 %, its axles are no tyre.
     let v = outside(

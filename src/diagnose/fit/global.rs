@@ -59,7 +59,7 @@ pub fn global_search<F: Fn(&[f64]) -> Augmented + Sync>(
 /// The grid stage: the cost at the centres of `cells` equal cells along
 /// each parameter but the first `held` (the product of them) and at
 /// `start`; the lowest of them and the replays made.
-pub fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
+fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     held: usize,
@@ -87,19 +87,16 @@ pub fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 /// The swarm search of a fit: PSO over the bounds of every parameter but
-/// the first `held` (kept at their values in `start`), one particle at
-/// `start`; its best point and the evaluations made. Nothing to search
-/// (all parameters held) returns `start`.
-pub fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
+/// the first `held` (kept at their values in `start`; at least one is
+/// searched, [`global_search`] sees to it), one particle at `start`; its
+/// best point and the evaluations made.
+fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
     held: usize,
 ) -> (Vec<f64>, usize) {
     let p0 = problem.clamp(start);
-    if p0.len() <= held {
-        return (p0, 0);
-    }
     let full = |q: &[f64]| {
         let mut p = p0[..held].to_vec();
         p.extend_from_slice(q);
@@ -151,20 +148,22 @@ mod tests {
         f.params
     }
 
-    fn problem(runs: &[Prepared]) -> Problem<'_, fn(&[f64]) -> Augmented> {
+    /// The stiffness factors' box, and the peak friction's.
+    const B: (f64, f64) = (2.0, 40.0);
+    const D: (f64, f64) = (0.5, 1.5);
+
+    fn problem<'a>(
+        runs: &'a [Prepared],
+        bounds: &[(f64, f64)],
+    ) -> Problem<'a, fn(&[f64]) -> Augmented> {
         let build: fn(&[f64]) -> Augmented = model;
-        Problem::new(
-            build,
-            runs.iter().collect(),
-            SCALES,
-            vec![(2.0, 40.0), (2.0, 40.0)],
-        )
+        Problem::new(build, runs.iter().collect(), SCALES, bounds.to_vec())
     }
 
     #[test]
     fn a_grid_starts_the_polish_in_the_basin_of_the_optimum() {
         let runs = runs();
-        let problem = problem(&runs);
+        let problem = problem(&runs, &[B, B]);
         let best_fit = optimum(&problem);
         let start = [35.0, 35.0];
         let (best, points) = grid(&problem, &start, 0, 5);
@@ -189,7 +188,7 @@ mod tests {
     #[test]
     fn a_grid_never_returns_worse_than_its_start_and_keeps_the_held_values() {
         let runs = runs();
-        let problem = problem(&runs);
+        let problem = problem(&runs, &[B, B]);
         // At the optimum no cell is better.
         let at = optimum(&problem);
         let (best, points) = grid(&problem, &at, 0, 9);
@@ -209,18 +208,8 @@ mod tests {
     #[test]
     fn the_global_stage_is_a_grid_along_one_or_two_parameters_and_a_swarm_along_more() {
         let runs = runs();
-        let two = Problem::new(
-            model,
-            runs.iter().collect(),
-            SCALES,
-            vec![(2.0, 40.0), (2.0, 40.0)],
-        );
-        let three = Problem::new(
-            model,
-            runs.iter().collect(),
-            SCALES,
-            vec![(2.0, 40.0), (2.0, 40.0), (0.5, 1.5)],
-        );
+        let two = problem(&runs, &[B, B]);
+        let three = problem(&runs, &[B, B, D]);
         let pso = Pso {
             particles: 6,
             iterations: 3,

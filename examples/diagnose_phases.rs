@@ -41,7 +41,8 @@ fn campaign_8_runs() -> Campaign {
     generate(&spec).campaign(EffectKind::ALL.to_vec(), DiagnoseSettings::default())
 }
 
-fn print(t: &Timing, cpu: Option<f64>) {
+fn print(t: &Timing) {
+    let cpu = t.cpu_seconds;
     // On a shared machine the phases' seconds are wall time, stretched
     // alike by the other processes: their shares of the process's CPU time
     // stand for their CPU time.
@@ -98,7 +99,7 @@ fn main() -> anyhow::Result<()> {
         c.settings.derivatives
     );
     let (d, t) = diagnose_timed(&c)?;
-    print(&t, t.cpu_seconds);
+    print(&t);
     let screened: Vec<&str> = d.screened.iter().map(|s| s.effect.as_str()).collect();
     println!("screened: {}", screened.join(", "));
     println!("verdict: {}", joined(d.verdict.effects(), "+"));

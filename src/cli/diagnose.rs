@@ -57,8 +57,7 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
     super::print(&r.summary());
     let f = r.outputs();
     println!(
-        "diagnosed in {:.1} s{}; wrote {}, {}, {}, {}",
-        r.seconds,
+        "diagnosed in {}; wrote {}, {}, {}, {}",
         r.time_spent(),
         f[0].display(),
         f[1].display(),

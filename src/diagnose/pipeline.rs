@@ -59,7 +59,7 @@ use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, run_scatter};
-use crate::diagnose::timing::{process_cpu_seconds, Recorder, Timing};
+use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
@@ -70,7 +70,6 @@ use crate::identify::grouping::GroupingReport;
 use crate::measured::road::RoadGeometry;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::Instant;
 
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
@@ -368,12 +367,7 @@ fn base_report(
 /// as `work_units` of the campaign). Where its time went is in the
 /// report's `timing` ([`crate::diagnose::timing`]).
 pub fn diagnose(c: &Campaign, progress: Option<&AtomicUsize>) -> Result<Diagnosis, Error> {
-    let recorder = Recorder::default();
-    let (t0, cpu0) = (Instant::now(), process_cpu_seconds());
-    let mut d = run(c, progress, &recorder)?;
-    let cpu = process_cpu_seconds().zip(cpu0).map(|(a, b)| a - b);
-    d.timing = recorder.timing(t0.elapsed(), cpu);
-    Ok(d)
+    run(c, progress, &Recorder::start())
 }
 
 /// Runs the diagnosis of a campaign and says where its time went
@@ -384,8 +378,7 @@ pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
     Ok((d, t))
 }
 
-/// The diagnosis, its phases timed by `recorder` (its `timing` left to
-/// the caller, who holds the clock).
+/// The diagnosis, its phases timed by `recorder`.
 fn run(
     c: &Campaign,
     progress: Option<&AtomicUsize>,
@@ -492,6 +485,6 @@ fn run(
         confounded,
         shrinkage,
         overlays,
-        timing: recorder.timing(std::time::Duration::ZERO, None),
+        timing: recorder.timing(),
     })
 }

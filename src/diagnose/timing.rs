@@ -125,16 +125,30 @@ pub struct Timing {
     pub candidates_cross_validated: usize,
 }
 
-/// The running totals of a timed diagnosis.
-#[derive(Default)]
+/// The running totals of a timed diagnosis, and when and at what CPU time
+/// it started.
 pub(super) struct Recorder {
     nanos: [AtomicU64; 10],
     evaluations: [AtomicUsize; 10],
     screened: AtomicUsize,
     cross_validated: AtomicUsize,
+    started: Instant,
+    cpu_at_start: Option<f64>,
 }
 
 impl Recorder {
+    /// A recorder whose clocks start now.
+    pub(super) fn start() -> Self {
+        Self {
+            nanos: Default::default(),
+            evaluations: Default::default(),
+            screened: AtomicUsize::new(0),
+            cross_validated: AtomicUsize::new(0),
+            started: Instant::now(),
+            cpu_at_start: process_cpu_seconds(),
+        }
+    }
+
     /// Adds `elapsed` and `evaluations` to `phase`.
     pub(super) fn add(&self, phase: Phase, elapsed: Duration, evaluations: usize) {
         let k = phase.index();
@@ -153,9 +167,13 @@ impl Recorder {
         c.fetch_add(1, Ordering::Relaxed);
     }
 
-    /// The totals, [`Phase::Rest`] being what `wall` leaves of the others;
-    /// `cpu` the process's CPU seconds over the same span.
-    pub(super) fn timing(&self, wall: Duration, cpu: Option<f64>) -> Timing {
+    /// The totals so far, [`Phase::Rest`] being what the wall time since
+    /// the start leaves of the others.
+    pub(super) fn timing(&self) -> Timing {
+        let wall = self.started.elapsed();
+        let cpu = process_cpu_seconds()
+            .zip(self.cpu_at_start)
+            .map(|(now, then)| now - then);
         let mut phases: Vec<PhaseTime> = Phase::ALL
             .into_iter()
             .map(|p| PhaseTime {

@@ -18,7 +18,6 @@ use crate::report::progress::Progress;
 use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// The report of `diagnose`: the diagnosis (`diagnosis.json`) and how the
 /// campaign was read.
@@ -39,9 +38,6 @@ pub struct DiagnoseReport {
     /// How the runs were cleaned, in lines.
     #[serde(skip)]
     pub cleaning: Vec<String>,
-    /// Wall time, s.
-    #[serde(skip)]
-    pub seconds: f64,
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
@@ -67,7 +63,6 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     );
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &campaign.inputs)?;
     let lock = OutputLock::acquire(&out_dir)?;
-    let t0 = Instant::now();
     let diagnosis = {
         let progress = Progress::start("diagnose", work_units(&campaign));
         crate::diagnose::diagnose(&campaign, Some(progress.counter()))?
@@ -80,7 +75,6 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         runs: campaign.runs.len(),
         run_files: campaign.run_files,
         cleaning: campaign.cleaning.summary(5),
-        seconds: t0.elapsed().as_secs_f64(),
         out_dir,
         lock,
     })
@@ -111,9 +105,9 @@ impl DiagnoseReport {
         )
     }
 
-    /// Where the time went, for the line after the wall time: the CPU
-    /// seconds, the threads and the largest phase (` (25.8 s CPU on 2
-    /// threads; 43 % in the candidate global stage)`).
+    /// Where the time went, in words: the wall seconds, the CPU seconds,
+    /// the threads and the largest phase (`13.4 s (25.8 s CPU on 2
+    /// threads; 43 % in the candidate global stage …)`).
     pub fn time_spent(&self) -> String {
         let t = &self.diagnosis.timing;
         let cpu = t
@@ -123,7 +117,10 @@ impl DiagnoseReport {
         let largest = t.largest().map_or_else(String::new, |p| {
             format!("; {:.0} % in the {}", t.share_percent(p), p.phase.name())
         });
-        format!(" ({cpu}{} thread{s}{largest})", t.threads)
+        format!(
+            "{:.1} s ({cpu}{} thread{s}{largest})",
+            t.wall_seconds, t.threads
+        )
     }
 
     /// The campaign read and the short human report.

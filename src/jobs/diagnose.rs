@@ -155,7 +155,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     let mut out = vec![format!("base model: {}", words::tyre_source(&d.base))];
     let rig = d.base.rig_grouping.iter().flat_map(|g| g.lines());
     out.extend(rig.map(|l| format!("  rig data: {l}")));
-    out.push("where the gap lies:".into());
+    out.push(format!("{}:", words::gap_heading(&d.gap.findings)));
     out.extend(
         d.gap
             .findings

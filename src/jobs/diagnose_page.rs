@@ -85,7 +85,9 @@ pub fn page(
         p.section("notes", "Notes on the inputs").lines(&notes);
     }
     let findings: Vec<String> = d.gap.findings.iter().map(words::finding).collect();
-    p.section("gap", "Where the gap lies").lines(&findings);
+    let heading = words::gap_heading(&d.gap.findings);
+    let heading = heading[..1].to_uppercase() + &heading[1..];
+    p.section("gap", &heading).lines(&findings);
     p.figure(
         "gap-map",
         gap_map,

@@ -297,3 +297,42 @@ fn rig_data_without_a_test_condition_say_where_their_samples_went() {
         "{e}"
     );
 }
+
+/// A campaign measured on the diagnosis's own model with no effect: its
+/// gap is noise. The terminal, the page and `diagnosis.json` say so in the
+/// same sentences, and none of them gives the noise a place (no "wrong
+/// in", no list of parts it is "right in").
+#[test]
+fn a_gap_at_noise_level_is_given_no_place_on_the_terminal_the_page_or_the_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let campaign = synth_campaign(dir.path(), "none", &[]);
+    let (stdout, d) = diagnose_campaign(&campaign);
+    assert!(stdout.contains("verdict: no significant gap"), "{stdout}");
+    assert!(stdout.contains("\nthe gap, within noise:\n"), "{stdout}");
+    assert!(!stdout.contains("where the gap lies"), "{stdout}");
+    let page = fs::read_to_string(campaign.with_extension("out").join("report.html")).unwrap();
+    assert!(page.contains(">The gap, within noise</h2>"), "{page}");
+    let summary = d["gap"]["summary"].as_array().unwrap();
+    assert_eq!(summary.len(), 4, "{summary:?}");
+    for s in summary {
+        let s = s.as_str().unwrap();
+        assert!(
+            stdout.contains(&format!("  {s}\n")),
+            "{s} not on the terminal"
+        );
+        assert!(page.contains(s), "{s} not on the page");
+        assert!(!s.contains("wrong in") && !s.contains("right in"), "{s}");
+    }
+    for channel in ["yaw_rate", "ay", "beta"] {
+        assert!(
+            summary.iter().any(|s| {
+                let s = s.as_str().unwrap();
+                s.starts_with(&format!("{channel}: RMS "))
+                    && s.ends_with(
+                        "within noise in every part, so no place where the base model is wrong",
+                    )
+            }),
+            "{channel}: {summary:?}"
+        );
+    }
+}

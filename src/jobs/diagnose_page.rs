@@ -42,9 +42,9 @@ pub fn page(
     p.paragraph(
         "",
         &format!(
-            "{} runs from {} files, {} candidate effects, {} folds, seed {}{}.",
+            "{} runs from {}, {} candidate effects, {} folds, seed {}{}.",
             inputs.runs,
-            inputs.run_files,
+            crate::format::plural(inputs.run_files, "file", "files"),
             d.ranking.len() + d.screened.len(),
             d.folds,
             d.seed,

@@ -15,7 +15,7 @@
 //! pure aligning moment and the overturning moment. The y range is the
 //! data's (the key sits beside the chart, [`crate::report::plot`]).
 
-use crate::format::fixed;
+use crate::format::{fixed, plural};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
 use crate::report::plot::{tick_label, Figure, Panel, Series, Style, INK};
 use crate::tyre::mf::MagicFormula;
@@ -344,7 +344,11 @@ fn panel(
     }
     let sigma = 100.0 * (e2 / y2).sqrt();
     Panel {
-        title: key.title(&format!("σ {} %, {} rows", fixed(sigma, 2), rows.len())),
+        title: key.title(&format!(
+            "σ {} %, {}",
+            fixed(sigma, 2),
+            plural(rows.len(), "row", "rows")
+        )),
         x_label,
         y_label: channel(st).into(),
         series,

@@ -432,3 +432,37 @@ fn a_swarm_fit_holds_a_parameter_at_the_value_given() {
     );
     assert_eq!(e.matches("contact_length").count(), 1, "{e}");
 }
+
+/// A step steer at an absurd speed is refused at `speed`, its own key and
+/// line: 1e308 m/s was refused as a non-finite `steer`, and 1e5 m/s ran
+/// (a negative yaw-rate gain, with no more than "not settled").
+#[test]
+fn an_absurd_step_steer_speed_is_refused_at_its_own_key() {
+    for speed in ["1e308", "1e5"] {
+        let step = STEP.replace("speed = 22.2222", &format!("speed = {speed}"));
+        let dir = scenario(VEHICLE, GIM, &step);
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains("scenario.toml:15:1: `manoeuvre.speed` = "),
+            "{e}"
+        );
+        assert!(
+            e.contains("must lie in (0, 150]: a step steer on a road runs below 150 m/s"),
+            "{e}"
+        );
+        assert!(!e.contains("steer`"), "{e}");
+    }
+    // 150 m/s itself runs.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        &STEP.replace("speed = 22.2222", "speed = 150.0"),
+    );
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

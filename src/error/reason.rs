@@ -210,6 +210,9 @@ pub enum Limit {
     /// A manoeuvre's end.
     #[error("the run must end after it starts")]
     EndAfterStart,
+    /// A parameter held at a value the user gives.
+    #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
+    HoldValue,
     /// A step steer's speed, m/s.
     #[error("a step steer on a road runs below 150 m/s (540 km/h); beyond it the tyre models and the 2-DOF model are far outside what they were made for")]
     StepSpeed,

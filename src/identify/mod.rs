@@ -239,6 +239,11 @@ pub(crate) fn fit_channel_holding(
         channel.set(&mut t, &p);
         t
     };
+    // A held value the model refuses (a negative friction) is refused
+    // before the fit, at its name, not fitted around.
+    if held.iter().any(|h| *h) {
+        start.validate()?;
+    }
     let mut free = free_parameters(start, channel, conditions)?;
     for (f, h) in free.iter_mut().zip(&held) {
         *f &= !h;

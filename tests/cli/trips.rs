@@ -431,6 +431,31 @@ fn a_swarm_fit_holds_a_parameter_at_the_value_given() {
         "{e}"
     );
     assert_eq!(e.matches("contact_length").count(), 1, "{e}");
+    // A value the model refuses is refused at its name, not fitted
+    // around; one beyond ±1e6 (which stalled the staged fit) too.
+    for (model, hold, said) in [
+        ("gim", "friction=-5", "`friction` = -5"),
+        (
+            "mf61",
+            "PKY1=1e308",
+            "`PKY1` = 1e308: must lie in (-1000000, 1000000]",
+        ),
+    ] {
+        let e = refused(
+            &run(&[
+                "identify",
+                rig.to_str().unwrap(),
+                "--model",
+                model,
+                "--hold",
+                hold,
+                "--out",
+                bad.to_str().unwrap(),
+            ]),
+            &bad,
+        );
+        assert!(e.contains(said), "{e}");
+    }
 }
 
 /// A step steer at an absurd speed is refused at `speed`, its own key and

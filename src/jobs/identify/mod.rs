@@ -18,7 +18,7 @@ mod figures;
 mod staged;
 mod staged_figure;
 
-use crate::error::{Error, FitError, NameKind, OptionsError, OutputError, ParamError};
+use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
 use crate::identify::{fit_channel_holding, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
@@ -79,8 +79,9 @@ impl Options {
         if let Some(c) = self.camber {
             ParamError::finite("camber", c)?;
         }
-        for (_, v) in &self.hold {
+        for (name, v) in &self.hold {
             ParamError::finite("hold", *v)?;
+            ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;
         }
         Ok(())
     }

@@ -6,6 +6,12 @@
 //! nothing, so that any layer (the errors, identification, the jobs) can
 //! use it.
 
+/// `n thing` or `n things`: a count with its noun in the number it takes
+/// ("1 sample", "0 samples", "2 samples").
+pub fn plural(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
 /// `v` with `decimals` decimals; a value that rounds to zero prints as an
 /// unsigned zero (a camber of −1e-5 rad is "0.00°", not "-0.00°").
 pub fn fixed(v: f64, decimals: usize) -> String {
@@ -100,6 +106,13 @@ pub fn did_you_mean(given: &str, known: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_count_of_one_takes_the_singular() {
+        assert_eq!(plural(1, "sample", "samples"), "1 sample");
+        assert_eq!(plural(0, "sample", "samples"), "0 samples");
+        assert_eq!(plural(2, "equilibrium", "equilibria"), "2 equilibria");
+    }
 
     #[test]
     fn zero_prints_unsigned() {

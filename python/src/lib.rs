@@ -189,6 +189,15 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                     attrs.push(("name", text(given)));
                     attrs.push(("known", py_obj(py, known.clone())));
                 }
+                LibOptionsError::UnknownHold {
+                    model,
+                    given,
+                    known,
+                } => {
+                    attrs.push(("what", text(&format!("{model} parameter"))));
+                    attrs.push(("name", text(given)));
+                    attrs.push(("known", py_obj(py, known.clone())));
+                }
                 LibOptionsError::UnknownLocalMethod { given }
                 | LibOptionsError::ShardText { given } => attrs.push(("name", text(given))),
                 LibOptionsError::ShardsDiffer { path: p, .. }
@@ -682,7 +691,7 @@ fn study(py: Python<'_>, study_file: PathBuf, out: Option<PathBuf>) -> PyResult<
 
 /// Fits a tyre model to rig data; `(report JSON, fitted tyre)`.
 #[pyfunction]
-#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS))]
+#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS, hold=Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 fn identify(
     py: Python<'_>,
@@ -698,6 +707,7 @@ fn identify(
     start: &str,
     template: Option<PathBuf>,
     max_iterations: usize,
+    hold: Vec<(String, f64)>,
 ) -> PyResult<(String, PyTyre)> {
     let model: IdentifyModel = model.parse().map_err(py_err)?;
     let local: Polish = local.parse().map_err(py_err)?;
@@ -718,7 +728,7 @@ fn identify(
         start,
         template,
         max_iterations,
-        hold: Vec::new(),
+        hold,
     };
     let (r, tyre) = detached(py, || {
         let r = jobs::identify::run(&o)?;

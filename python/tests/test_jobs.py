@@ -105,6 +105,26 @@ def test_identify_gim_recovers_its_tyre(root, tmp_path):
     assert isinstance(e.value, handling.HandlingError)
 
 
+def test_identify_holds_a_parameter_at_the_value_given(root, tmp_path):
+    t = handling.Tyre.load(root / "tyres" / "gim.toml")
+    fz = np.repeat([2000.0, 4000.0, 6000.0], 41)
+    a = np.tile(np.radians(np.linspace(-12, 12, 41)), 3)
+    fy = t.forces(fz, 0.0, a)["fy"]
+    p = tmp_path / "rig.csv"
+    np.savetxt(p, np.column_stack([fz, a, fy]), delimiter=",", header="fz,alpha,fy", comments="", fmt="%.17g")
+    free = handling.identify(p, "pac89", seed=1).to_dict()
+    a1 = next(q for q in free["parameters"] if q["name"] == "a1")
+    assert a1["free"] and a1["value"] != -20.0
+    held = handling.identify(p, "pac89", seed=1, hold={"a1": -20.0}).to_dict()
+    a1 = next(q for q in held["parameters"] if q["name"] == "a1")
+    assert (a1["value"], a1["free"]) == (-20.0, False)
+    assert "two_stage" not in held
+    with pytest.raises(handling.OptionsError) as e:
+        handling.identify(p, "pac89", hold={"A1": 1.0})
+    assert (e.value.name, e.value.what) == ("A1", "pac89 parameter")
+    assert "a1" in e.value.known and "did you mean `a1`" in str(e.value)
+
+
 def test_pac89_on_one_load_is_a_fit_error_naming_the_data(root, tmp_path):
     t = handling.Tyre.load(root / "tyres" / "gim.toml")
     a = np.radians(np.linspace(-12, 12, 41))

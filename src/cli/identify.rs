@@ -53,10 +53,13 @@ pub struct IdentifyArgs {
     /// mf61/mf62: Levenberg–Marquardt iterations per step.
     #[arg(long, default_value_t = handling::identify::mf_staged::LM_ITERATIONS)]
     max_iterations: usize,
-    /// mf61/mf62: hold a .tir coefficient at a value in every stage,
-    /// NAME=VALUE in the file's SI units (repeatable), e.g. --hold PKY4=2.
-    /// Without it, a parameter the data do not determine is held at the
-    /// template's value or Pacejka's (2012) book default, and said so.
+    /// Hold a parameter at a value, NAME=VALUE (repeatable): for mf61/mf62
+    /// a .tir coefficient in the file's SI units in every stage, e.g.
+    /// --hold PKY4=2 (without it, a parameter the data do not determine is
+    /// held at the template's value or Pacejka's (2012) book default, and
+    /// said so); for the other models one of the parameters of the tyre
+    /// file it writes, in its units, e.g. --hold a1=-22.1 for pac89
+    /// (PAC89's two-stage identification is then not run).
     #[arg(long, value_parser = hold_value)]
     hold: Vec<(String, f64)>,
 }

@@ -4,6 +4,7 @@
 //! diagnosis's failures on the rig data of its base model.
 
 use super::{Error, Variable};
+use crate::format::plural;
 use std::path::PathBuf;
 use thiserror::Error as ThisError;
 
@@ -22,7 +23,7 @@ fn prefix(channel: &Option<&'static str>) -> String {
 #[non_exhaustive]
 pub enum FitError {
     /// No more points than free parameters.
-    #[error("{points} points with a measured {quantity} cannot fit {parameters} parameters")]
+    #[error("{} with a measured {quantity} cannot fit {}", plural(*points, "point", "points"), plural(*parameters, "parameter", "parameters"))]
     TooFewPoints {
         /// Points with the quantity measured.
         points: usize,
@@ -188,7 +189,7 @@ pub enum SkipReason {
     #[error("{0}")]
     NoRows(StageRows),
     /// Fewer rows than the stage's free parameters need.
-    #[error("{rows} rows cannot fit {free} parameters")]
+    #[error("{} cannot fit {}", plural(*rows, "row", "rows"), plural(*free, "parameter", "parameters"))]
     TooFewRows {
         /// Rows the stage has.
         rows: usize,
@@ -241,8 +242,11 @@ impl std::fmt::Display for SampleAccount {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "{} samples: {} used in conditions, {} between levels (transitions), {} at levels not selected",
-            self.samples, self.used, self.between_levels, self.not_selected
+            "{}: {} used in conditions, {} between levels (transitions), {} at levels not selected",
+            plural(self.samples, "sample", "samples"),
+            self.used,
+            self.between_levels,
+            self.not_selected
         )?;
         for (v, n) in &self.levels {
             write!(f, "; {} levels: {n}", v.column())?;

@@ -186,11 +186,19 @@ pub enum OptionsError {
     /// `--start template` without a template file.
     #[error("--start template needs --template <file.tir>")]
     TemplateMissing,
-    /// `--hold` asked of a fit that holds no `.tir` coefficient.
-    #[error("--hold holds a coefficient of the staged Magic Formula fit (mf61, mf62), not of the {model} model")]
-    HoldNeedsStagedFit {
+    /// `--hold` of a name that is none of the model's fitted parameters.
+    #[error(
+        "--hold `{given}`: not a parameter of the {model} model{}: its parameters are {}",
+        crate::format::did_you_mean(given, &known.iter().map(String::as_str).collect::<Vec<_>>()),
+        known.join(", ")
+    )]
+    UnknownHold {
         /// The model's name.
         model: String,
+        /// The name given.
+        given: String,
+        /// The model's parameters (every block it fits).
+        known: Vec<String>,
     },
     /// A `--hold` that is not `NAME=VALUE` with a number.
     #[error("--hold `{given}`: expected NAME=VALUE with a number, e.g. PKY4=2")]

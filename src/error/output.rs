@@ -2,6 +2,7 @@
 //! of the run, a folder that exists, a failed write, a report that could
 //! not be encoded).
 
+use crate::format::plural;
 use std::path::PathBuf;
 use thiserror::Error;
 
@@ -104,7 +105,7 @@ pub enum OutputError {
         detail: String,
     },
     /// A CSV row with another number of cells than the header.
-    #[error("{}: a row of {cells} cells under {columns} columns", path.display())]
+    #[error("{}: a row of {} under {}", path.display(), plural(*cells, "cell", "cells"), plural(*columns, "column", "columns"))]
     RowLength {
         /// The CSV file.
         path: PathBuf,

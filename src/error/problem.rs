@@ -12,7 +12,7 @@ use super::duplicate::DuplicateAt;
 use super::number::Num;
 use super::rig::Variable;
 use super::{MetricsError, ParamError};
-use crate::format::significant;
+use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
 
@@ -437,7 +437,7 @@ pub enum InputProblem {
         assumed_wheelbase: Option<f64>,
     },
     /// A run too short to show a response.
-    #[error("the run is {span:.2} s long with {samples} samples: a run needs at least {} s and {min_samples} samples to show a response", Num(*min_span))]
+    #[error("the run is {span:.2} s long with {}: a run needs at least {} s and {min_samples} samples to show a response", plural(*samples, "sample", "samples"), Num(*min_span))]
     RunTooShort {
         /// Its duration, s.
         span: f64,
@@ -533,10 +533,10 @@ fn wrong_sign(
         (_, false) => format!("|alpha| ≤ {x} rad"),
     };
     let described = format!(
-        "{} {unit} (standard error {} {unit}) from {} samples ({} with {slip} > 0, {} with {slip} < 0)",
+        "{} {unit} (standard error {} {unit}) from {} ({} with {slip} > 0, {} with {slip} < 0)",
         significant(s.slope, 4),
         significant(s.standard_error, 2),
-        s.above + s.below,
+        plural(s.above + s.below, "sample", "samples"),
         s.above,
         s.below
     );

@@ -225,6 +225,12 @@ pub enum Limit {
     /// A manoeuvre's end.
     #[error("the run must end after it starts")]
     EndAfterStart,
+    /// A parameter held at a value the user gives.
+    #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
+    HoldValue,
+    /// A step steer's speed, m/s.
+    #[error("a step steer on a road runs below 150 m/s (540 km/h); beyond it the tyre models and the 2-DOF model are far outside what they were made for")]
+    StepSpeed,
     /// A step steer's ramp.
     #[error("ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)")]
     RampTime,

@@ -190,8 +190,64 @@ pub(crate) fn fit_channel(
     conditions: &[Condition],
     settings: &FitSettings,
 ) -> Result<Fit, Error> {
+    fit_channel_holding(start, channel, conditions, settings, &[])
+}
+
+/// The names of every parameter a swarm fit of `t` can fit: the lateral
+/// force's, then the aligning moment's and the longitudinal force's.
+pub fn fitted_names(t: &Tyre) -> Vec<String> {
+    [
+        Channel::LateralForce,
+        Channel::AligningMoment,
+        Channel::LongitudinalForce,
+    ]
+    .into_iter()
+    .flat_map(|c| c.names(t))
+    .fold(Vec::new(), |mut all, n| {
+        // A parameter two blocks share (GIM's contact length) once.
+        if !all.contains(&n) {
+            all.push(n);
+        }
+        all
+    })
+}
+
+/// [`fit_channel`] with the parameters named in `hold` (name, value in the
+/// model's units) set to their values and not fitted; a name of another
+/// channel's block is left to that channel's fit.
+pub(crate) fn fit_channel_holding(
+    start: &Tyre,
+    channel: Channel,
+    conditions: &[Condition],
+    settings: &FitSettings,
+    hold: &[(String, f64)],
+) -> Result<Fit, Error> {
     let t0 = Instant::now();
-    let free = free_parameters(start, channel, conditions)?;
+    let names = channel.names(start);
+    let held: Vec<bool> = names
+        .iter()
+        .map(|n| hold.iter().any(|(h, _)| h == n))
+        .collect();
+    let start = &{
+        let mut t = start.clone();
+        let mut p = channel.parameters(&t);
+        for (name, v) in hold {
+            if let Some(i) = names.iter().position(|n| n == name) {
+                p[i] = *v;
+            }
+        }
+        channel.set(&mut t, &p);
+        t
+    };
+    // A held value the model refuses (a negative friction) is refused
+    // before the fit, at its name, not fitted around.
+    if held.iter().any(|h| *h) {
+        start.validate()?;
+    }
+    let mut free = free_parameters(start, channel, conditions)?;
+    for (f, h) in free.iter_mut().zip(&held) {
+        *f &= !h;
+    }
     let problem = FitProblem::for_channel(start, channel, &free, conditions)
         .with_derivatives(settings.derivatives);
     if problem.count() <= problem.free.len() {
@@ -214,7 +270,10 @@ pub(crate) fn fit_channel(
     let sum_squares: f64 = res.iter().map(|e| e * e).sum();
     let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
     let covariance = stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares);
-    let parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
+    let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
+    for (p, _) in parameters.iter_mut().zip(&held).filter(|(_, h)| **h) {
+        p.warning = Some("held at the value given".into());
+    }
     let curves = conditions
         .iter()
         .map(|c| {

@@ -342,6 +342,9 @@ impl From<Manoeuvre> for Resolved {
     }
 }
 
+/// The fastest step steer, m/s ([`Limit::StepSpeed`]).
+const MAX_STEP_SPEED: f64 = 150.0;
+
 /// A step steer: timing checked (ISO 7401's rise time), the amplitude
 /// from `steer` or from the steady `lateral_acceleration` it must reach, the
 /// start at straight running (the steer and sideslip that give zero lateral
@@ -353,6 +356,12 @@ fn step_steer(
     friction: f64,
 ) -> Result<Resolved, InputError> {
     check(src, ParamError::positive("speed", s.speed))?;
+    // Refused at its own key: an absurd speed otherwise surfaces as a
+    // non-finite straight-running steer, blamed on `steer`.
+    check(
+        src,
+        ParamError::in_range("speed", s.speed, 0.0, MAX_STEP_SPEED, Limit::StepSpeed),
+    )?;
     check(src, ParamError::non_negative("start", s.start))?;
     check(
         src,

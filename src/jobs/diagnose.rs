@@ -168,7 +168,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     let rig = d.base.rig_grouping.iter().flat_map(|g| g.lines());
     out.extend(rig.map(|l| format!("  rig data: {l}")));
     out.push(words::channels_trusted(&d.gap.noise));
-    out.push("where the gap lies:".into());
+    out.push(format!("{}:", words::gap_heading(&d.gap.findings)));
     out.extend(
         d.gap
             .findings

@@ -42,9 +42,9 @@ pub fn page(
     p.paragraph(
         "",
         &format!(
-            "{} runs from {} files, {} candidate effects, {} folds, seed {}{}.",
+            "{} runs from {}, {} candidate effects, {} folds, seed {}{}.",
             inputs.runs,
-            inputs.run_files,
+            crate::format::plural(inputs.run_files, "file", "files"),
             d.ranking.len() + d.screened.len(),
             d.folds,
             d.seed,
@@ -91,7 +91,9 @@ pub fn page(
     }
     let mut findings = vec![words::channels_trusted(&d.gap.noise)];
     findings.extend(d.gap.findings.iter().map(words::finding));
-    p.section("gap", "Where the gap lies").lines(&findings);
+    let heading = words::gap_heading(&d.gap.findings);
+    let heading = heading[..1].to_uppercase() + &heading[1..];
+    p.section("gap", &heading).lines(&findings);
     p.figure(
         "gap-map",
         gap_map,

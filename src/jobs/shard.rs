@@ -154,10 +154,7 @@ impl ShardJob {
     }
 }
 
-/// `n thing` or `n things`.
-pub fn plural(n: usize, one: &str, many: &str) -> String {
-    format!("{n} {}", if n == 1 { one } else { many })
-}
+pub use crate::format::plural;
 
 impl ShardReport {
     /// The report in lines of text.

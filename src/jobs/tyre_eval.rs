@@ -247,8 +247,8 @@ impl TyreEvalReport {
             None => String::new(),
         };
         format!(
-            "{} points of {} ({} tyre) evaluated{mode}; wrote {}",
-            self.count,
+            "{} of {} ({} tyre) evaluated{mode}; wrote {}",
+            crate::format::plural(self.count, "point", "points"),
             self.points,
             self.model,
             self.out.display()

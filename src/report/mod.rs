@@ -7,6 +7,7 @@
 pub mod branches;
 mod cells;
 pub mod colour;
+mod encode;
 pub mod html;
 mod legend;
 pub mod lock;

@@ -170,9 +170,19 @@ impl Figure {
         (self.width, self.row_height * rows as u32)
     }
 
+    /// Draws into an RGB buffer and writes it as a PNG with a palette
+    /// ([`super::encode`]).
     fn draw(&self, tmp: &Path) -> Result<(), Box<dyn std::error::Error>> {
-        let root = BitMapBackend::new(tmp, self.size()).into_drawing_area();
-        self.draw_on(&root)
+        let (w, h) = self.size();
+        let mut rgb = vec![0u8; 3 * w as usize * h as usize];
+        {
+            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            self.draw_on(&root)?;
+        }
+        let mut png = Vec::new();
+        super::encode::write_png(&mut png, w, h, &rgb)?;
+        std::fs::write(tmp, png)?;
+        Ok(())
     }
 
     fn draw_on<DB: DrawingBackend>(

@@ -297,3 +297,197 @@ fn rig_data_without_a_test_condition_say_where_their_samples_went() {
         "{e}"
     );
 }
+
+/// A campaign measured on the diagnosis's own model with no effect: its
+/// gap is noise. The terminal, the page and `diagnosis.json` say so in the
+/// same sentences, and none of them gives the noise a place (no "wrong
+/// in", no list of parts it is "right in").
+#[test]
+fn a_gap_at_noise_level_is_given_no_place_on_the_terminal_the_page_or_the_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let campaign = synth_campaign(dir.path(), "none", &[]);
+    let (stdout, d) = diagnose_campaign(&campaign);
+    assert!(stdout.contains("verdict: no significant gap"), "{stdout}");
+    assert!(stdout.contains("\nthe gap, within noise:\n"), "{stdout}");
+    assert!(!stdout.contains("where the gap lies"), "{stdout}");
+    let page = fs::read_to_string(campaign.with_extension("out").join("report.html")).unwrap();
+    assert!(page.contains(">The gap, within noise</h2>"), "{page}");
+    let summary = d["gap"]["summary"].as_array().unwrap();
+    assert_eq!(summary.len(), 4, "{summary:?}");
+    for s in summary {
+        let s = s.as_str().unwrap();
+        assert!(
+            stdout.contains(&format!("  {s}\n")),
+            "{s} not on the terminal"
+        );
+        assert!(page.contains(s), "{s} not on the page");
+        assert!(!s.contains("wrong in") && !s.contains("right in"), "{s}");
+    }
+    for channel in ["yaw_rate", "ay", "beta"] {
+        assert!(
+            summary.iter().any(|s| {
+                let s = s.as_str().unwrap();
+                s.starts_with(&format!("{channel}: RMS "))
+                    && s.ends_with(
+                        "within noise in every part, so no place where the base model is wrong",
+                    )
+            }),
+            "{channel}: {summary:?}"
+        );
+    }
+}
+
+/// A count of one takes the singular: a one-point `tyre-eval`, a
+/// one-row rig file refused by `identify`.
+#[test]
+fn one_sample_is_one_sample_not_1_samples() {
+    let dir = scratch(&[
+        ("p.csv", "fz,kappa,alpha,camber,speed\n4000,0,0.01,0,20\n"),
+        ("rig.csv", "fz,alpha,fy\n4000,0.01,800\n"),
+    ]);
+    let out = dir.path().join("e.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
+        dir.path().join("p.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.starts_with("1 point of "), "{said}");
+    let o = identify_to(
+        &dir.path().join("rig.csv"),
+        "pac89",
+        &dir.path().join("t.toml"),
+    );
+    let e = refused(&o, &dir.path().join("t.toml"));
+    assert!(e.contains("(1 sample: 0 used in conditions"), "{e}");
+    assert!(!e.contains("1 samples"), "{e}");
+}
+
+/// `--hold` on a swarm fit: PAC89's `a1` held at the value given (in
+/// the written file, the report and the terminal, the two-stage fit not
+/// run), and a name that is none of the model's parameters refused with
+/// the nearest one and the model.
+#[test]
+fn a_swarm_fit_holds_a_parameter_at_the_value_given() {
+    let dir = tempfile::tempdir().unwrap();
+    let campaign = synth_campaign(dir.path(), "c", &[]);
+    let rig = campaign.join("tyre_rig.csv");
+    let out = dir.path().join("held.toml");
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--hold",
+        "a1=-22.1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("  held: a1 = -22.1: given with --hold"),
+        "{said}"
+    );
+    assert!(
+        said.contains("two-stage (Zhang et al. 2021): not run"),
+        "{said}"
+    );
+    let tyre: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(tyre["a"][1].as_float(), Some(-22.1));
+    let report = read_json(&out.with_extension("report.json"));
+    let a1 = report["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["name"] == "a1")
+        .unwrap();
+    assert_eq!(
+        (a1["value"].as_f64(), &a1["free"]),
+        (Some(-22.1), &serde_json::json!(false))
+    );
+    assert!(report["two_stage"].is_null());
+    // The fit still fits the rest: σ near the unheld fit's 0.74 %.
+    assert!(report["sigma_percent"].as_f64().unwrap() < 1.0, "{report}");
+    let bad = dir.path().join("bad.toml");
+    let e = refused(
+        &run(&[
+            "identify",
+            rig.to_str().unwrap(),
+            "--model",
+            "gim",
+            "--hold",
+            "frction=1",
+            "--out",
+            bad.to_str().unwrap(),
+        ]),
+        &bad,
+    );
+    assert!(
+        e.contains("--hold `frction`: not a parameter of the gim model (did you mean `friction`?): its parameters are cornering_stiffness,"),
+        "{e}"
+    );
+    assert_eq!(e.matches("contact_length").count(), 1, "{e}");
+    // A value the model refuses is refused at its name, not fitted
+    // around; one beyond ±1e6 (which stalled the staged fit) too.
+    for (model, hold, said) in [
+        ("gim", "friction=-5", "`friction` = -5"),
+        (
+            "mf61",
+            "PKY1=1e308",
+            "`PKY1` = 1e308: must lie in (-1000000, 1000000]",
+        ),
+    ] {
+        let e = refused(
+            &run(&[
+                "identify",
+                rig.to_str().unwrap(),
+                "--model",
+                model,
+                "--hold",
+                hold,
+                "--out",
+                bad.to_str().unwrap(),
+            ]),
+            &bad,
+        );
+        assert!(e.contains(said), "{e}");
+    }
+}
+
+/// A step steer at an absurd speed is refused at `speed`, its own key and
+/// line: 1e308 m/s was refused as a non-finite `steer`, and 1e5 m/s ran
+/// (a negative yaw-rate gain, with no more than "not settled").
+#[test]
+fn an_absurd_step_steer_speed_is_refused_at_its_own_key() {
+    for speed in ["1e308", "1e5"] {
+        let step = STEP.replace("speed = 22.2222", &format!("speed = {speed}"));
+        let dir = scenario(VEHICLE, GIM, &step);
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains("scenario.toml:15:1: `manoeuvre.speed` = "),
+            "{e}"
+        );
+        assert!(
+            e.contains("must lie in (0, 150]: a step steer on a road runs below 150 m/s"),
+            "{e}"
+        );
+        assert!(!e.contains("steer`"), "{e}");
+    }
+    // 150 m/s itself runs.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        &STEP.replace("speed = 22.2222", "speed = 150.0"),
+    );
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

@@ -894,12 +894,18 @@ def identify(
     start: str = "data",
     template: Optional[PathLike] = None,
     max_iterations: Optional[int] = None,
+    hold: Optional[Mapping[str, float]] = None,
 ) -> Identification:
     """Fits a tyre model to rig data (CSV), as ``handling identify``.
 
     ``model``: gim, magic-simple, unitire, pac89, linear, mf61, mf62;
     ``pressure`` in Pa and ``camber`` in rad select one level; ``bin_deg``
-    is the slip-angle thinning bin in degrees. Returns an
+    is the slip-angle thinning bin in degrees. ``hold`` holds parameters
+    at the values given, as ``--hold NAME=VALUE``: ``.tir`` coefficients
+    for mf61/mf62 (``{"PKY4": 2.0}``), the tyre file's parameters for the
+    other models (``{"a1": -22.1}`` for pac89); an unknown name is an
+    :class:`OptionsError` with ``name``, ``what`` (``"pac89 parameter"``)
+    and ``known``. Returns an
     :class:`Identification` (``to_dict()``: ``<out>.report.json``) with
     ``tyre``: the fitted :class:`Tyre`. With
     ``out`` the tyre file, the report and the figure are written.
@@ -907,6 +913,8 @@ def identify(
     kw: Dict[str, Any] = {}
     if max_iterations is not None:
         kw["max_iterations"] = max_iterations
+    if hold:
+        kw["hold"] = [(str(k), float(v)) for k, v in hold.items()]
     text, tyre = _handling.identify(
         _path(data),
         model,

@@ -244,6 +244,7 @@ def identify(
     start: str = ...,
     template: Optional[PathLike] = ...,
     max_iterations: Optional[int] = ...,
+    hold: Optional[Mapping[str, float]] = ...,
 ) -> Identification: ...
 def diagnose(campaign: PathLike, out: Optional[PathLike] = ...) -> Diagnosis: ...
 def synth(

@@ -13,10 +13,13 @@ pub use axles::{axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, ty
 
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::outcome::{
-    CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary,
-    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    above_noise, CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note,
+    OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
+    SIGNIFICANT_NOISE_FLOORS,
 };
-use crate::diagnose::report::{ChannelNoise, Confounded, ParameterValue, ScaleSource, Shrinkage};
+use crate::diagnose::report::{
+    ChannelNoise, Confounded, ParameterValue, Part, ScaleSource, Shrinkage,
+};
 
 impl Verdict {
     /// The verdict in one sentence ([`statement`]; written here, beside
@@ -301,6 +304,25 @@ pub fn evidence(e: &Evidence) -> String {
     }
 }
 
+/// The heading of the findings on the gap: where it lies, or, when the
+/// held-out error is within the noise level, that it has no place.
+pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
+    let within_noise = findings.iter().any(|f| {
+        matches!(
+            f,
+            GapFinding::Overall {
+                significant: false,
+                ..
+            }
+        )
+    });
+    if within_noise {
+        "the gap, within noise"
+    } else {
+        "where the gap lies"
+    }
+}
+
 /// A finding on where the gap lies.
 pub fn finding(f: &GapFinding) -> String {
     let listed = |v: Vec<String>| {
@@ -331,18 +353,36 @@ pub fn finding(f: &GapFinding) -> String {
             runs,
             wrong,
             right,
-        } => format!(
-            "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs; wrong in: {}; right in: {}",
-            channel.name(),
-            channel.unit(),
-            listed(
-                wrong
-                    .iter()
-                    .map(|(p, rms)| format!("{p} ({rms:.3} {})", channel.unit()))
-                    .collect()
-            ),
-            listed(right.iter().map(|p| p.label()).collect()),
-        ),
+        } => {
+            let head = format!(
+                "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs",
+                channel.name(),
+                channel.unit(),
+            );
+            let parts = |v: &[(Part, f64)]| {
+                listed(
+                    v.iter()
+                        .map(|(p, rms)| format!("{p} ({rms:.3} {})", channel.unit()))
+                        .collect(),
+                )
+            };
+            if above_noise(*rms, *noise_floor) || *significant_runs > 0 {
+                format!(
+                    "{head}; wrong in: {}; right in: {}",
+                    parts(wrong),
+                    listed(right.iter().map(|p| p.label()).collect()),
+                )
+            } else if wrong.is_empty() {
+                // A gap within noise has no place: listing the parts it is
+                // "right in" would read as a finding.
+                format!("{head}: within noise in every part, so no place where the base model is wrong")
+            } else {
+                format!(
+                    "{head}: within noise over the runs, so no place where the base model is wrong; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
+                    parts(wrong)
+                )
+            }
+        }
         GapFinding::Band {
             run,
             f_low,

@@ -41,6 +41,7 @@ pub use levels::{levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
 use crate::error::{InputError, InputProblem, SampleAccount};
+use crate::format::plural;
 use serde::Serialize;
 use std::path::Path;
 
@@ -120,10 +121,10 @@ impl GroupingReport {
     /// The report's lines for a terminal.
     pub fn lines(&self) -> Vec<String> {
         let mut out = vec![format!(
-            "{} samples: {} used in conditions, thinned to {} points ({}); {} between levels (transitions), {} at levels not selected",
-            self.samples,
+            "{}: {} used in conditions, thinned to {} ({}); {} between levels (transitions), {} at levels not selected",
+            plural(self.samples, "sample", "samples"),
             self.used,
-            self.points,
+            plural(self.points, "point", "points"),
             match self.slip_axis {
                 SlipAxis::Angle if self.slip_bin > 0.0 =>
                     format!("{:.3}° slip-angle bins", self.slip_bin.to_degrees()),
@@ -143,7 +144,10 @@ impl GroupingReport {
                 .collect();
             let mut line = format!("{} levels: {}", v.column(), levels.join(", "));
             if l.transition_samples > 0 {
-                line += &format!("; {} samples between levels", l.transition_samples);
+                line += &format!(
+                    "; {} between levels",
+                    plural(l.transition_samples, "sample", "samples")
+                );
             }
             out.push(line);
         }

@@ -18,8 +18,8 @@ mod figures;
 mod staged;
 mod staged_figure;
 
-use crate::error::{Error, FitError, NameKind, OptionsError, OutputError, ParamError};
-use crate::identify::{fit_channel, sigma, start_tyre_of, Channel, Fit, FitSettings};
+use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
+use crate::identify::{fit_channel_holding, sigma, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
@@ -79,25 +79,36 @@ impl Options {
         if let Some(c) = self.camber {
             ParamError::finite("camber", c)?;
         }
-        for (_, v) in &self.hold {
+        for (name, v) in &self.hold {
             ParamError::finite("hold", *v)?;
+            ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;
         }
         Ok(())
     }
 
-    /// Checks the `--hold` names: coefficients of a `.tir`, and only for
-    /// the staged Magic Formula fit.
-    fn validate_holds(&self) -> Result<(), OptionsError> {
+    /// Checks the `--hold` names: coefficients of a `.tir` for the staged
+    /// Magic Formula fit, the model's parameters (every block it fits:
+    /// lateral, aligning, longitudinal) for a swarm fit.
+    fn validate_holds(&self) -> Result<(), Error> {
         if self.hold.is_empty() {
             return Ok(());
         }
-        if self.model.swarm_model().is_some() {
-            return Err(OptionsError::HoldNeedsStagedFit {
-                model: self.model.to_string(),
-            });
-        }
+        let Some(model) = self.model.swarm_model() else {
+            for (name, _) in &self.hold {
+                crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
+            }
+            return Ok(());
+        };
+        let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
         for (name, _) in &self.hold {
-            crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
+            if !known.contains(name) {
+                return Err(OptionsError::UnknownHold {
+                    model: model.as_str().into(),
+                    given: name.clone(),
+                    known,
+                }
+                .into());
+            }
         }
         Ok(())
     }
@@ -243,8 +254,14 @@ impl IdentifyReport {
                     path: files[0].clone(),
                     source: e,
                 })?;
+                let holds: String = r
+                    .options
+                    .hold
+                    .iter()
+                    .map(|(n, v)| format!(" --hold {n}={v}"))
+                    .collect();
                 let header = format!(
-                    "# Identified by `handling identify {} --model {} --seed {}`: sigma {:.3} %.\n",
+                    "# Identified by `handling identify {} --model {} --seed {}{holds}`: sigma {:.3} %.\n",
                     r.options.data.display(),
                     r.options.model,
                     r.options.seed,
@@ -381,7 +398,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .iter()
         .find(|l| l.variable == Variable::Pressure)
         .map_or(0, |l| l.levels.len());
-    let fit = fit_channel(&tyre0, first, &conditions, &settings).map_err(on_data(o, None))?;
+    let fit = fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
+        .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         fit,
@@ -398,15 +416,23 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_conditions: Vec::new(),
         lock,
     };
+    // The two-stage identification fits every coefficient: with a
+    // coefficient held it is not run (the summary says so).
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
-    if asks_two_stage && first == Channel::LateralForce {
+    if asks_two_stage && first == Channel::LateralForce && o.hold.is_empty() {
         two_stage(o, &mut r, &settings)?;
     }
     // The aligning moment, where the data have it and the model has one,
     // with the lateral parameters just fitted held.
     if first == Channel::LateralForce && data.mz.is_some() && !r.tyre.aligning_names().is_empty() {
-        let mz = fit_channel(&r.tyre, Channel::AligningMoment, &r.conditions, &settings)
-            .map_err(on_data(o, Some("aligning moment")))?;
+        let mz = fit_channel_holding(
+            &r.tyre,
+            Channel::AligningMoment,
+            &r.conditions,
+            &settings,
+            &o.hold,
+        )
+        .map_err(on_data(o, Some("aligning moment")))?;
         r.tyre = mz.tyre.clone();
         r.aligning = Some(mz);
     }
@@ -416,11 +442,12 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         (&long_view, !r.tyre.longitudinal_names().is_empty(), first)
     {
         let g = group(&o.data, view, &grouping, SlipAxis::Ratio)?;
-        let fx = fit_channel(
+        let fx = fit_channel_holding(
             &r.tyre,
             Channel::LongitudinalForce,
             &g.conditions,
             &settings,
+            &o.hold,
         )
         .map_err(on_data(o, Some("longitudinal force")))?;
         r.tyre = fx.tyre.clone();
@@ -474,6 +501,13 @@ impl SwarmReport {
             o.seed
         )];
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
+        let two_stage_asked = o
+            .model
+            .swarm_model()
+            .is_some_and(|m| m.identification() == Identification::SwarmAndTwoStage);
+        if self.two_stage.is_none() && two_stage_asked && !o.hold.is_empty() {
+            out.push("  two-stage (Zhang et al. 2021): not run, it fits every coefficient and --hold holds some; the direct fit written".into());
+        }
         if let Some(t) = &self.two_stage {
             out.push(format!(
                 "  two-stage (Zhang et al. 2021): stage 1 mean σ {:.3} %, stage 2 mean σ {:.3} %, after the joint polish {:.3} %",
@@ -497,7 +531,7 @@ impl SwarmReport {
                 c.rms
             ));
         }
-        out.extend(parameter_warnings(f));
+        out.extend(parameter_warnings(f, &o.hold));
         if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
             // With the digits that tell the two apart: it was chosen for
             // being lower, which three decimals can hide.
@@ -513,7 +547,7 @@ impl SwarmReport {
                 "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {:.2} N·m, {:.2} s",
                 mz.sigma_percent, mz.sigma_pso_percent, mz.rms, mz.seconds
             ));
-            out.extend(parameter_warnings(mz));
+            out.extend(parameter_warnings(mz, &o.hold));
         }
         if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
             out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
@@ -521,16 +555,24 @@ impl SwarmReport {
                 "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {:.2} s",
                 fx.sigma_percent, fx.sigma_pso_percent, fx.rms, fx.seconds
             ));
+            out.extend(parameter_warnings(fx, &o.hold));
         }
         out
     }
 }
 
-/// The parameters of a fit that carry a warning, one line each.
-fn parameter_warnings(f: &Fit) -> Vec<String> {
+/// The parameters of a fit held at a value in `hold`, and those that
+/// carry a warning, one line each.
+fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
     f.parameters
         .iter()
         .filter_map(|p| {
+            if !p.free && hold.iter().any(|(h, _)| *h == p.name) {
+                return Some(format!(
+                    "  held: {} = {}: given with --hold",
+                    p.name, p.value
+                ));
+            }
             let w = p.warning.as_deref()?;
             Some(format!("  warning: {} = {:.6}: {w}", p.name, p.value))
         })

@@ -7,6 +7,7 @@
 
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
+use crate::format::plural;
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
@@ -53,10 +54,10 @@ impl StagedJob {
     pub fn summary(&self) -> Vec<String> {
         let o = &self.options;
         let mut out = vec![format!(
-            "{}: {} samples, {} rows; model {}, start {}",
+            "{}: {}, {}; model {}, start {}",
             o.data.display(),
-            self.rows.samples,
-            self.rows.rows,
+            plural(self.rows.samples, "sample", "samples"),
+            plural(self.rows.rows, "row", "rows"),
             o.model,
             o.start.as_str()
         )];

@@ -15,9 +15,9 @@
 //! pure aligning moment and the overturning moment. The y range is the
 //! data's (the key sits beside the chart, [`crate::report::plot`]).
 
-use crate::format::fixed;
-use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage};
-use crate::report::plot::{Figure, Panel, Series, Style, INK};
+use crate::format::{fixed, plural};
+use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
+use crate::report::plot::{tick_label, Figure, Panel, Series, Style, INK};
 use crate::tyre::mf::MagicFormula;
 
 /// A slip variable: the x of a panel, or the level its lines are drawn at.
@@ -86,8 +86,8 @@ impl Slip {
 
     fn level(self, v: f64) -> String {
         match self {
-            Slip::Angle => format!("α {}°", fixed(v.to_degrees(), 1)),
-            Slip::Ratio => format!("κ {} %", fixed(100.0 * v, 1)),
+            Slip::Angle => format!("α {}°", tick_label(v.to_degrees(), 10.0)),
+            Slip::Ratio => format!("κ {} %", tick_label(100.0 * v, 10.0)),
         }
     }
 }
@@ -171,37 +171,22 @@ impl Levels {
 /// `rows` (module notes). The panels form a grid whose columns are the
 /// pressure levels when there are several (a blank panel where a
 /// condition lacks one), else two columns when there are four panels or
-/// more.
+/// more; a row is tall enough for the longest key beside it.
 pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow]) -> Figure {
     let mut panels = Vec::new();
     let mut pressures = 1;
     for &st in stages {
-        let sel: Vec<&MfRow> = rows.iter().filter(|r| st.takes(r)).collect();
         let x = Slip::of_stage(st);
-        let lv = Levels::of(&sel, x.other());
-        pressures = pressures.max(lv.pressure.len());
-        // A panel per load where the other slip has levels of its own: the
-        // lines of a panel are then the other slip's levels.
-        let by_load = lv.other.len() > 1;
-        let loads = if by_load { lv.load.len() } else { 1 };
-        for c in 0..lv.camber.len().max(1) {
-            for l in 0..loads {
-                for p in 0..lv.pressure.len().max(1) {
-                    let at: Vec<(usize, &MfRow)> = sel
-                        .iter()
-                        .zip(&lv.of_row)
-                        .filter(|(_, k)| k[0] == c && k[1] == p && (!by_load || k[2] == l))
-                        .map(|(r, k)| (if by_load { k[3] } else { k[2] }, *r))
-                        .collect();
-                    let key = Key {
-                        stage: st,
-                        x,
-                        camber: lv.camber.get(c).copied(),
-                        pressure: lv.pressure.get(p).copied(),
-                        load: by_load.then(|| lv.load[l]),
-                    };
-                    panels.push(panel(tyre, &key, &at, &lv, by_load));
-                }
+        let sel: Vec<&MfRow> = rows.iter().filter(|r| st.takes(r)).collect();
+        // A stage fitted on every row (Mx, My) holds the pure sweeps of
+        // both slips: a sweep of the other slip at zero of this one is
+        // drawn against the slip it sweeps, not as a column of points.
+        let (along, across): (Vec<&MfRow>, Vec<&MfRow>) = sel
+            .into_iter()
+            .partition(|r| x.of(r).abs() > PURE_TOL || x.other().of(r).abs() <= PURE_TOL);
+        for (x, at) in [(x, along), (x.other(), across)] {
+            if !at.is_empty() {
+                pressures = pressures.max(stage_panels(tyre, st, x, &at, &mut panels));
             }
         }
     }
@@ -212,6 +197,11 @@ pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow
     } else {
         1
     };
+    let entries = panels
+        .iter()
+        .map(|p| p.series.iter().filter(|s| !s.label.is_empty()).count())
+        .max()
+        .unwrap_or(0);
     Figure {
         panels,
         columns,
@@ -220,8 +210,55 @@ pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow
         } else {
             650 * columns as u32
         },
-        row_height: 300,
+        row_height: ROW_HEIGHT.max(key_height(entries)),
     }
+}
+
+/// Height of a row of panels, px, unless a key needs more.
+const ROW_HEIGHT: u32 = 300;
+
+/// The height, px, a panel needs for a key of `entries` entries beside
+/// it: the key's top margin and rows ([`crate::report::plot`]'s legend)
+/// and the x axis's labels below.
+fn key_height(entries: usize) -> u32 {
+    40 + 20 * entries as u32 + 30
+}
+
+/// The panels of stage `st` along slip `x` on its rows `sel`, pushed onto
+/// `panels`; the number of pressure levels (the grid's columns).
+fn stage_panels(
+    tyre: &MagicFormula,
+    st: Stage,
+    x: Slip,
+    sel: &[&MfRow],
+    panels: &mut Vec<Panel>,
+) -> usize {
+    let lv = Levels::of(sel, x.other());
+    // A panel per load where the other slip has levels of its own: the
+    // lines of a panel are then the other slip's levels.
+    let by_load = lv.other.len() > 1;
+    let loads = if by_load { lv.load.len() } else { 1 };
+    for c in 0..lv.camber.len().max(1) {
+        for l in 0..loads {
+            for p in 0..lv.pressure.len().max(1) {
+                let at: Vec<(usize, &MfRow)> = sel
+                    .iter()
+                    .zip(&lv.of_row)
+                    .filter(|(_, k)| k[0] == c && k[1] == p && (!by_load || k[2] == l))
+                    .map(|(r, k)| (if by_load { k[3] } else { k[2] }, *r))
+                    .collect();
+                let key = Key {
+                    stage: st,
+                    x,
+                    camber: lv.camber.get(c).copied(),
+                    pressure: lv.pressure.get(p).copied(),
+                    load: by_load.then(|| lv.load[l]),
+                };
+                panels.push(panel(tyre, &key, &at, &lv, by_load));
+            }
+        }
+    }
+    lv.pressure.len()
 }
 
 /// What a panel shows: the stage, its x, and the levels it is at.
@@ -270,7 +307,7 @@ fn panel(
     }
     // The key's first entries say how measured and fitted are drawn.
     let mut series = vec![
-        Series::line("measured", &[], &[], 7).styled(Style::Points(3)),
+        Series::line("measured", &[], &[], MEASURED).styled(Style::Points(3)),
         Series::line("fitted", &[], &[], INK),
     ];
     let (mut e2, mut y2) = (0.0, 0.0);
@@ -288,7 +325,7 @@ fn panel(
         if at.is_empty() {
             continue;
         }
-        let colour = series.len() / 2 - 1;
+        let colour = level_colour(series.len() / 2 - 1);
         let xs: Vec<f64> = at.iter().map(|r| key.x.shown(key.x.of(r))).collect();
         let measured: Vec<f64> = at.iter().map(|r| st.measured(r)).collect();
         for (r, m) in at.iter().zip(&measured) {
@@ -307,7 +344,11 @@ fn panel(
     }
     let sigma = 100.0 * (e2 / y2).sqrt();
     Panel {
-        title: key.title(&format!("σ {} %, {} rows", fixed(sigma, 2), rows.len())),
+        title: key.title(&format!(
+            "σ {} %, {}",
+            fixed(sigma, 2),
+            plural(rows.len(), "row", "rows")
+        )),
         x_label,
         y_label: channel(st).into(),
         series,
@@ -315,8 +356,26 @@ fn panel(
     }
 }
 
+/// The colour of a panel's `k`-th line: the palette without the grey of
+/// the key's "measured" swatch.
+fn level_colour(k: usize) -> usize {
+    let c = k % (INK - 1);
+    if c >= MEASURED {
+        c + 1
+    } else {
+        c
+    }
+}
+
+/// The palette index of the key's "measured" swatch (grey).
+const MEASURED: usize = 7;
+
+/// Points of a model line: enough that the narrow peak of a combined-slip
+/// aligning moment near κ = 0 on a ±100 % axis is drawn as a curve.
+const LINE_POINTS: u32 = 240;
+
 /// The tyre's channel of stage `st` along the slip `x`, over the range of
-/// the condition's rows `at` (120 points, in increasing x), at their mean
+/// the condition's rows `at` ([`LINE_POINTS`] points, in increasing x), at their mean
 /// load, camber, pressure, speed and other slip.
 fn model_line(tyre: &MagicFormula, st: Stage, x: Slip, at: &[&MfRow]) -> (Vec<f64>, Vec<f64>) {
     let n = at.len() as f64;
@@ -340,9 +399,9 @@ fn model_line(tyre: &MagicFormula, st: Stage, x: Slip, at: &[&MfRow]) -> (Vec<f6
     if hi <= lo {
         return (Vec::new(), Vec::new());
     }
-    (0..120)
+    (0..LINE_POINTS)
         .map(|i| {
-            let v = lo + (hi - lo) * f64::from(i) / 119.0;
+            let v = lo + (hi - lo) * f64::from(i) / f64::from(LINE_POINTS - 1);
             x.set(&mut row, v);
             (x.shown(v), st.model(tyre, &row))
         })

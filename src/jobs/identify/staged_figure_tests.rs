@@ -192,7 +192,7 @@ fn each_panel_reads_its_own_sigma_and_its_stages_slip_with_units() {
         fx.title
     );
     let labels: Vec<&str> = fx.series.iter().map(|s| s.label.as_str()).collect();
-    assert_eq!(labels, ["measured", "fitted", "α 3.0°", "", "α 8.0°", ""]);
+    assert_eq!(labels, ["measured", "fitted", "α 3°", "", "α 8°", ""]);
     let (lo, hi) = (fx.series[2].x[0], fx.series[2].x[19]);
     assert_eq!((lo, hi), (-20.0, 20.0));
 }
@@ -222,4 +222,107 @@ fn several_pressures_are_the_columns_of_the_grid() {
         .title
         .starts_with("pure Fy, γ 0.00°, 220.0 kPa: σ"));
     assert_eq!(fig.panels[5].title, "pure Fy, γ 2.86°, 260.0 kPa: no rows");
+}
+
+/// Rows of a wheel-moment rig at one load and camber: a pure slip-angle
+/// sweep (0.5° steps), a pure slip-ratio sweep (29 ratios) and a grid of
+/// 11 slip ratios × 7 slip angles, with measured Mx and My.
+fn moment_rows(t: &MagicFormula) -> Vec<MfRow> {
+    let with_moments = |mut r: MfRow| {
+        r.mx = Stage::Mx.model(t, &r);
+        r.my = Stage::My.model(t, &r);
+        r
+    };
+    let mut out = Vec::new();
+    for i in -30..=30 {
+        let a = (0.5 * f64::from(i)).to_radians();
+        out.push(with_moments(row(t, 4000.0, 0.0, a, 0.0, 0.0)));
+    }
+    for i in (-14..=14).filter(|&i| i != 0) {
+        out.push(with_moments(row(
+            t,
+            4000.0,
+            0.05 * f64::from(i),
+            0.0,
+            0.0,
+            0.0,
+        )));
+    }
+    for k in [
+        -0.5, -0.2, -0.1, -0.05, -0.02, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0,
+    ] {
+        for a in [-8.0, -4.0, -2.0, 2.0, 4.0, 8.0, 12.0f64] {
+            out.push(with_moments(row(t, 4000.0, k, a.to_radians(), 0.0, 0.0)));
+        }
+    }
+    out
+}
+
+#[test]
+fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_its_row() {
+    let t = tyre();
+    let rows = moment_rows(&t);
+    let fig = staged_figure(&t, &[Stage::Mx, Stage::My], &rows);
+    let x_labels: Vec<(&str, &str)> = fig
+        .panels
+        .iter()
+        .map(|p| (p.y_label.as_str(), p.x_label.as_str()))
+        .collect();
+    // Each stage: the grid and its own pure sweep against the slip it
+    // sweeps, then the other pure sweep against the other slip.
+    assert_eq!(
+        x_labels,
+        [
+            ("Mx [N·m]", "slip angle α [deg]"),
+            ("Mx [N·m]", "slip ratio κ [%]"),
+            ("My [N·m]", "slip ratio κ [%]"),
+            ("My [N·m]", "slip angle α [deg]"),
+        ]
+    );
+    for p in &fig.panels {
+        let lines = p
+            .series
+            .iter()
+            .filter(|s| s.style == Style::Line && !s.x.is_empty())
+            .count();
+        let keyed = p.series.iter().filter(|s| !s.label.is_empty()).count();
+        // Every keyed level is a sweep with its line: no entry for a
+        // single point of the other slip's sweep.
+        assert_eq!(keyed, lines + 2, "{}", p.title);
+        assert!(
+            key_height(keyed) <= fig.row_height,
+            "{}: {keyed} entries in a {} px row",
+            p.title,
+            fig.row_height
+        );
+        let drawn: usize = p
+            .series
+            .iter()
+            .filter(|s| s.style == Style::Points(3))
+            .map(|s| s.x.len())
+            .sum();
+        assert!(p.title.ends_with(&format!("{drawn} rows")), "{}", p.title);
+    }
+    // The grid's slip ratios and the pure slip-angle sweep's κ = 0: 12
+    // lines; the pure slip-ratio sweep a line of its own.
+    let keyed = |k: usize| {
+        fig.panels[k]
+            .series
+            .iter()
+            .filter(|s| !s.label.is_empty())
+            .count()
+    };
+    assert_eq!((keyed(0), keyed(1)), (14, 3));
+    assert!(fig.row_height >= key_height(14));
+    // Every row on a panel of each stage: 61 + 28 + 77.
+    for k in [0, 2] {
+        let n = |p: &Panel| {
+            p.series
+                .iter()
+                .filter(|s| s.style == Style::Points(3))
+                .map(|s| s.x.len())
+                .sum::<usize>()
+        };
+        assert_eq!(n(&fig.panels[k]) + n(&fig.panels[k + 1]), 166);
+    }
 }

@@ -335,3 +335,60 @@ fn a_channel_within_noise_is_said_so_on_the_terminal_as_on_the_page() {
         "beta      0.0021 → 0.0022 (noise floor 0.0020): not significant (within 3 noise floors)"
     );
 }
+
+fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -> GapFinding {
+    GapFinding::Channel {
+        channel: crate::diagnose::model::channels::Channel::Beta,
+        rms,
+        noise_floor: 0.002,
+        significant_runs,
+        runs: 8,
+        wrong,
+        right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
+    }
+}
+
+#[test]
+fn a_gap_within_noise_is_given_no_place() {
+    let overall = |significant| GapFinding::Overall {
+        significant,
+        heldout_error: 1.05,
+        noise_level: 0.95,
+    };
+    assert_eq!(gap_heading(&[overall(false)]), "the gap, within noise");
+    assert_eq!(gap_heading(&[overall(true)]), "where the gap lies");
+    // Within three noise floors overall and in every part: no list.
+    let quiet = finding(&channel_finding(0.0021, 0, vec![]));
+    assert_eq!(
+        quiet,
+        "beta: RMS 0.0021 rad (noise floor 0.0020); significant in 0 of 8 runs: within noise in every part, so no place where the base model is wrong"
+    );
+    // One part above three floors of a channel within noise: named, not
+    // as where the model is wrong.
+    let one = finding(&channel_finding(
+        0.0021,
+        0,
+        vec![(
+            Part::Window(crate::diagnose::report::parts::Window::Later),
+            0.0071,
+        )],
+    ));
+    assert!(
+        one.ends_with("so no place where the base model is wrong; above 3 noise floors only in later (0.007 rad)"),
+        "{one}"
+    );
+    assert!(!one.contains("wrong in"), "{one}");
+    // A gap above noise: where it is wrong and right.
+    let loud = finding(&channel_finding(
+        0.0090,
+        3,
+        vec![(
+            Part::Window(crate::diagnose::report::parts::Window::Later),
+            0.0120,
+        )],
+    ));
+    assert!(
+        loud.ends_with("; wrong in: later (0.012 rad); right in: later"),
+        "{loud}"
+    );
+}

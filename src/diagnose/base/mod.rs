@@ -182,6 +182,12 @@ fn axles_from_runs(
     .with_prior(Some(rows));
     let t0 = Instant::now();
     let (start, starts) = identify_axles(&problem);
+    // The runs' evidence against the prior, from their residuals about the
+    // best start (the fit without tempering): every later fit (this one's
+    // polish, its folds, every candidate's) weighs the prior by it.
+    let tempering = problem.tempering(&start);
+    let rows = rows.tempered(tempering.prior_weight);
+    let problem = problem.with_prior(Some(rows));
     let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
     let full = fit(&problem, &start, None, Polish::LevenbergMarquardt);
     if let (Some(rec), Some(st)) = (timing, &stamps) {
@@ -226,7 +232,7 @@ fn axles_from_runs(
         .as_ref()
         .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
     let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts)
-        .with_prior(PriorReport::new(prior, rule, p));
+        .with_prior(PriorReport::new(prior, rule, p).with_tempering(tempering));
     Bases {
         all: build(p),
         folds: fold_params.iter().map(|q| build(q)).collect(),

@@ -25,6 +25,7 @@ use crate::constants::G;
 use crate::diagnose::base::no_tyre::{NoTyre, AXLE_NAMES};
 use crate::diagnose::campaign::prior::{AxlePrior, Z95};
 pub use crate::diagnose::fit::prior_rows::PriorRows;
+pub use crate::diagnose::fit::tempering::Tempering;
 use crate::diagnose::model::axles::{coefficient, friction};
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -137,6 +138,8 @@ pub struct PriorReport {
     pub friction_rule: FrictionRule,
     /// Front coefficient, rear coefficient, peak friction against it.
     pub against: [AgainstPrior; 3],
+    /// How the runs weighed against it in the fits.
+    pub tempering: Tempering,
 }
 
 impl PriorReport {
@@ -150,7 +153,13 @@ impl PriorReport {
                 AgainstPrior::new(coefficient(p[1]), prior.cornering),
                 AgainstPrior::new(friction(p[2]), prior.friction),
             ],
+            tempering: Tempering::NONE,
         }
+    }
+
+    /// The same report with the fits' `tempering`.
+    pub fn with_tempering(self, tempering: Tempering) -> Self {
+        Self { tempering, ..self }
     }
 
     /// Whether every axle characteristic lies within its prior's range.

@@ -15,6 +15,7 @@ pub(crate) mod prior_rows;
 pub(crate) mod problem;
 pub(crate) mod refit;
 pub(crate) mod tangent;
+pub mod tempering;
 
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;

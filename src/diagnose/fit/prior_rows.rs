@@ -26,6 +26,9 @@ pub struct PriorRows {
     centres: [f64; 3],
     /// Standard deviations of `ln k`, `ln k`, `ln D`.
     sigmas: [f64; 3],
+    /// What the rows of the prior (not a hold) are multiplied by: the
+    /// tempering of the data ([`PriorRows::tempered`]).
+    weight: f64,
 }
 
 impl PriorRows {
@@ -49,6 +52,29 @@ impl PriorRows {
             offset,
             centres: [k, k, d.ln()],
             sigmas: [s, s, width],
+            weight: 1.0,
+        }
+    }
+
+    /// The same rows weighed against data whose residuals count as fewer,
+    /// noisier samples than their rows ([`Tempering`]): the prior's rows
+    /// multiplied by its `prior_weight`. A hold stays a hold, as narrow
+    /// as it was.
+    ///
+    /// [`Tempering`]: crate::diagnose::fit::tempering::Tempering
+    pub fn tempered(self, prior_weight: f64) -> Self {
+        Self {
+            weight: prior_weight.max(1.0),
+            ..self
+        }
+    }
+
+    /// The multiplier of row `i`.
+    fn row_weight(&self, i: usize) -> f64 {
+        if self.sigmas[i] == HELD_WIDTH {
+            1.0
+        } else {
+            self.weight
         }
     }
 
@@ -75,7 +101,7 @@ impl PriorRows {
     pub fn write(&self, p: &[f64], out: &mut [f64]) {
         for (i, o) in out.iter_mut().enumerate().take(Self::ROWS) {
             let (l, _) = Self::log_of(i, p[self.offset + i]);
-            *o = (l - self.centres[i]) / self.sigmas[i];
+            *o = self.row_weight(i) * (l - self.centres[i]) / self.sigmas[i];
         }
     }
 
@@ -84,7 +110,7 @@ impl PriorRows {
         let mut j = DMatrix::zeros(Self::ROWS, n);
         for i in 0..Self::ROWS {
             let (_, d) = Self::log_of(i, p[self.offset + i]);
-            j[(i, self.offset + i)] = d / self.sigmas[i];
+            j[(i, self.offset + i)] = self.row_weight(i) * d / self.sigmas[i];
         }
         j
     }

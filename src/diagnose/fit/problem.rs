@@ -18,6 +18,7 @@
 
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::prior_rows::PriorRows;
+use crate::diagnose::fit::tempering::Tempering;
 use crate::diagnose::model::replay::{LastReplay, Prepared};
 use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
@@ -134,6 +135,19 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     /// Number of data residuals.
     pub fn data_count(&self) -> usize {
         self.runs.iter().map(|r| r.count()).sum()
+    }
+
+    /// How the data residuals at `p` weigh against a prior: their mean
+    /// square and correlation time over every run's channels.
+    pub fn tempering(&self, p: &[f64]) -> Tempering {
+        let mut r = vec![0.0; self.data_count()];
+        self.data_residuals(&self.clamp(p), &mut r);
+        let lengths: Vec<usize> = self
+            .runs
+            .iter()
+            .flat_map(|run| run.measured.iter().map(|(_, v)| v.len()))
+            .collect();
+        Tempering::of_residuals(&r, &lengths)
     }
 }
 

@@ -267,6 +267,13 @@ pub enum VerdictWarning {
         /// Why the base alone is not.
         no_tyre: Vec<NoTyre>,
     },
+    /// Parameters of the verdict's effects that lie on the end of their
+    /// search range: the data would take them further, so their values
+    /// are bounds, not measurements of the effects' size.
+    OnSearchBound {
+        /// The parameters, as the verdict reports them.
+        parameters: Vec<ParameterValue>,
+    },
 }
 
 /// A channel's held-out gap that the verdict's effects make larger.

@@ -176,6 +176,19 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             "the base model alone is no tyre ({}); the reductions are measured against it, and with the verdict's effects the axles are a tyre",
             no_tyre_list(no_tyre)
         ),
+        VerdictWarning::OnSearchBound { parameters } => {
+            let each: Vec<String> = parameters
+                .iter()
+                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
+                .collect();
+            format!(
+                "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",
+                each.join(", "),
+                if parameters.len() == 1 { "its" } else { "their" },
+                if parameters.len() == 1 { "it" } else { "them" },
+                if parameters.len() == 1 { "its value is" } else { "their values are" },
+            )
+        }
     }
 }
 

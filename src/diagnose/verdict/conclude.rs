@@ -8,7 +8,7 @@
 //! the channel's unit.
 
 use crate::diagnose::base::identify::NoTyre;
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::CALIBRATION_AGREES;
 use crate::diagnose::report::{
@@ -45,6 +45,12 @@ pub(crate) fn verdict(
             if !base_no_tyre.is_empty() {
                 warnings.push(VerdictWarning::BaseNoTyre {
                     no_tyre: base_no_tyre.to_vec(),
+                });
+            }
+            let on_bound = on_search_bound(&r.parameters);
+            if !on_bound.is_empty() {
+                warnings.push(VerdictWarning::OnSearchBound {
+                    parameters: on_bound,
                 });
             }
             let evidence = calibration_evidence(&r.parameters, calibrated);
@@ -112,6 +118,14 @@ fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) 
 
 /// The channels the verdict's effects leave worse on held-out runs (all
 /// samples): a worsening by [`Shrinkage::change`], above noise.
+/// The parameters of `p` on the end of their search range.
+pub(crate) fn on_search_bound(p: &[ParameterValue]) -> Vec<ParameterValue> {
+    p.iter()
+        .filter(|v| v.at_bound && v.bound == Some(Bound::Search))
+        .cloned()
+        .collect()
+}
+
 pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
     shrinkage
         .iter()
@@ -172,5 +186,16 @@ mod tests {
         assert!(
             calibration_evidence(&[offset("road_bank.bank", -0.6, 0.001)], &calibrated).is_empty()
         );
+    }
+
+    #[test]
+    fn only_a_parameter_on_its_search_bound_is_warned_of_not_one_on_a_physical_limit() {
+        let at = |bound: Option<Bound>| ParameterValue {
+            at_bound: bound.is_some(),
+            bound,
+            ..offset("x", 0.3, 0.01)
+        };
+        let p = [at(Some(Bound::Search)), at(Some(Bound::Physical)), at(None)];
+        assert_eq!(on_search_bound(&p), vec![p[0].clone()]);
     }
 }

@@ -8,6 +8,7 @@
 //! ([`crate::diagnose::fit::layout::Layout::model`]).
 
 use crate::diagnose::base::identify::axle_grid;
+use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
@@ -69,6 +70,9 @@ pub(crate) struct Fitted<'a> {
     setting: Setting<'a>,
     pub(crate) full: FitOutcome,
     pub(crate) insample: ChannelErrors,
+    /// The prior's rows as this candidate's fit weighed them (its folds
+    /// weigh them alike).
+    prior: Option<PriorRows>,
 }
 
 impl Fitted<'_> {
@@ -148,6 +152,16 @@ impl<'a> Context<'a> {
         };
         let t0 = Instant::now();
         let (start, global) = self.start(&problem, &s, starts, &pso);
+        // The prior weighed against the evidence the runs carry about this
+        // candidate (`crate::diagnose::fit::tempering`): its residuals at the
+        // global stage's best, so that a candidate that leaves white noise
+        // fits as if untempered and one that leaves a correlated misfit
+        // cannot buy a small gain by leaving the prior's range.
+        let prior = self
+            .bases
+            .prior
+            .map(|rows| rows.tempered(problem.tempering(&start).prior_weight));
+        let problem = problem.with_prior(prior);
         let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
         let full = FitOutcome {
             global,
@@ -175,6 +189,7 @@ impl<'a> Context<'a> {
             setting: s,
             full,
             insample,
+            prior,
         }
     }
 
@@ -208,7 +223,7 @@ impl<'a> Context<'a> {
                     s.bounds(),
                 )
                 .with_layout(s.layout.clone(), base, self.derivatives)
-                .with_prior(self.bases.prior);
+                .with_prior(fitted.prior);
                 let rows = training_rows(&self.runs, &self.folds[k], problem.prior_count());
                 let f = refit(&problem, full, &rows);
                 let model = s.layout.model(base, &f.params);

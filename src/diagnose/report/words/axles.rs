@@ -6,7 +6,7 @@
 use crate::diagnose::base::identify::{
     AxleIdentification, AxleLimit, NoTyre, PEAK_SLIP_MIN, SHAPE,
 };
-use crate::diagnose::base::prior::PriorReport;
+use crate::diagnose::base::prior::{PriorReport, Tempering};
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::report::BaseReport;
 
@@ -152,16 +152,32 @@ pub fn prior_line(p: &PriorReport) -> String {
         .map(|(x, n)| format!("{n} {:.3} is outside it ({:+.1} σ)", x.value, x.z))
         .collect();
     format!(
-        "prior {class}: cornering coefficient {:.0}–{:.0} 1/rad, peak friction {:.2}–{:.2} (95 % ranges); {friction}; {}",
+        "prior {class}: cornering coefficient {:.0}–{:.0} 1/rad, peak friction {:.2}–{:.2} (95 % ranges); {friction}; {}; {}",
         a.cornering[0],
         a.cornering[1],
         a.friction[0],
         a.friction[1],
+        tempering(&p.tempering),
         if outside.is_empty() {
             "the axles lie within it".to_string()
         } else {
             outside.join(", ")
         }
+    )
+}
+
+/// How the runs weighed against the prior, in a clause.
+pub fn tempering(t: &Tempering) -> String {
+    if t.prior_weight <= 1.0 {
+        return "the runs weigh as independent samples at their noise floors".into();
+    }
+    format!(
+        "the runs weigh as {:.0} independent samples ({} residuals correlated over {:.1}) at {:.2} noise floors, so the prior's rows count ×{:.1}",
+        t.effective_samples,
+        t.samples,
+        t.correlation_samples,
+        t.residual_variance.sqrt(),
+        t.prior_weight
     )
 }
 

@@ -392,3 +392,23 @@ fn a_gap_within_noise_is_given_no_place() {
         "{loud}"
     );
 }
+
+#[test]
+fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement() {
+    let one = VerdictWarning::OnSearchBound {
+        parameters: vec![fitted("sensor_delay.delay", "s", 0.3, Some(Bound::Search))],
+    };
+    assert_eq!(
+        verdict_warning(&one),
+        "sensor_delay.delay = 0.3000 s on its search bound: the data would take it further, so its value is a bound on the effect's size, not a measurement of it"
+    );
+    let two = VerdictWarning::OnSearchBound {
+        parameters: vec![
+            fitted("aero_load.front", "N/(m/s)^2", 6.0, Some(Bound::Search)),
+            fitted("aero_load.rear", "N/(m/s)^2", 6.0, Some(Bound::Search)),
+        ],
+    };
+    let w = verdict_warning(&two);
+    assert!(w.contains("on their search bound"), "{w}");
+    assert!(w.contains("their values are a bound"), "{w}");
+}

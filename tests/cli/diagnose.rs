@@ -578,6 +578,10 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
     // warning that its value is the end of its search range.
     let best = &d["ranking"][0];
     assert_eq!(best["effect"], "sensor_delay", "{best}");
+    // Weighed by its own residuals: smaller than the base's, but smoother,
+    // they are still far from independent samples.
+    let w = best["prior_weight"].as_f64().unwrap();
+    assert!(w > 10.0, "{w} against {t}");
     for a in best["axles"].as_array().unwrap().iter().take(2) {
         let k = a["value"].as_f64().unwrap();
         assert!((12.0..60.0).contains(&k), "{a}");

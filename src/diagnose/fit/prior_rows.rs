@@ -69,6 +69,11 @@ impl PriorRows {
         }
     }
 
+    /// What the prior's rows (not a hold) are multiplied by.
+    pub fn weight(&self) -> f64 {
+        self.weight
+    }
+
     /// The multiplier of row `i`.
     fn row_weight(&self, i: usize) -> f64 {
         if self.sigmas[i] == HELD_WIDTH {

@@ -65,7 +65,7 @@ impl Tempering {
         let n: usize = lengths.iter().sum();
         let r = &r[..n.min(r.len())];
         let sum_sq: f64 = r.iter().map(|x| x * x).sum();
-        if r.is_empty() || !(sum_sq > 0.0) || !sum_sq.is_finite() {
+        if r.is_empty() || sum_sq.is_nan() || sum_sq <= 0.0 || !sum_sq.is_finite() {
             return Tempering::NONE;
         }
         let variance = sum_sq / r.len() as f64;
@@ -173,7 +173,7 @@ mod tests {
         let mut r = Vec::new();
         for k in 0..10 {
             let s = if k % 2 == 0 { 1.0 } else { -1.0 };
-            r.extend(std::iter::repeat(s).take(100));
+            r.extend(std::iter::repeat_n(s, 100));
         }
         let t = Tempering::of_residuals(&r, &[100; 10]);
         assert_eq!(t.correlation_samples, 100.0);

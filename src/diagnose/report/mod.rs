@@ -55,6 +55,9 @@ pub struct Ranked {
     /// The axle characteristics refitted with them (no tyre data), with
     /// their standard errors and the limits they stand on.
     pub axles: Option<Vec<AxleValue>>,
+    /// What the prior's rows on the axles counted in its fits: `√(s²·τ)`
+    /// of its residuals at its global stage's best (no tyre data).
+    pub prior_weight: Option<f64>,
     /// Fitted parameters.
     pub parameters: Vec<ParameterValue>,
     /// Held-out combined error J of the base model.

@@ -41,6 +41,9 @@ pub(crate) struct Scored {
     pub(crate) heldout: ChannelErrors,
     pub(crate) fold_params: Vec<Vec<f64>>,
     pub(crate) folds_converged: usize,
+    /// What the prior's rows were multiplied by in its fits (axles from
+    /// the runs; [`crate::diagnose::fit::tempering`]).
+    pub(crate) prior_weight: Option<f64>,
 }
 
 pub(crate) struct Context<'a> {
@@ -89,6 +92,7 @@ impl Fitted<'_> {
             heldout: ChannelErrors::default(),
             fold_params: Vec::new(),
             folds_converged: 0,
+            prior_weight: self.prior.map(|r| r.weight()),
         }
     }
 }

@@ -197,6 +197,7 @@ impl Baseline {
                 }
                 .parameters
             }),
+            prior_weight: sc.prior_weight,
             parameters: parameter_values(&self.layout(&sc.kinds), &sc.full),
             heldout_error_before: self.j0,
             heldout_error_after: j,

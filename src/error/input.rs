@@ -79,14 +79,14 @@ pub enum InputError {
         header: Vec<String>,
     },
     /// A CSV row that the CSV reader cannot read.
-    #[error("{path}:{line}:1: malformed CSV row: {source}")]
+    #[error("{path}:{line}:1: malformed CSV row: {detail}")]
     MalformedRow {
         /// The file.
         path: PathBuf,
         /// 1-based line.
         line: usize,
-        /// The CSV reader's error.
-        source: csv::Error,
+        /// What the CSV reader found wrong.
+        detail: String,
     },
     /// A CSV cell that is not a finite number.
     #[error("{path}:{line}:{column}: column `{name}`: {}", problem.describe(cell))]

@@ -163,6 +163,16 @@ pub enum ParamReason {
     /// An effect the four-wheel truth does not have.
     #[error("not an effect of the four-wheel truth")]
     NotATruthEffect,
+    /// The steer a ramp steer reaches by its end, rad.
+    #[error("the ramp reaches {} rad ({:.0}°) by `end` = {end} s, beyond ±45° (0.785 rad; a car's largest mean road-wheel steer is about 35–40°): lower `rate` or end the run sooner{}", super::number::Num(*reached), reached.to_degrees(), if *in_degrees { "; is the rate in degrees per second? (the steer rate is in rad/s)" } else { "" })]
+    RampReach {
+        /// The steer at `end`, rad.
+        reached: f64,
+        /// The end of the run, s.
+        end: f64,
+        /// Whether the rate itself looks like one in degrees per second.
+        in_degrees: bool,
+    },
     /// An effect given another number of parameters than it takes.
     #[error("takes {needed} parameters")]
     ParameterCount {
@@ -228,9 +238,12 @@ pub enum Limit {
     /// A parameter held at a value the user gives.
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
     HoldValue,
-    /// A step steer's speed, m/s.
-    #[error("a step steer on a road runs below 150 m/s (540 km/h); beyond it the tyre models and the 2-DOF model are far outside what they were made for")]
-    StepSpeed,
+    /// A manoeuvre's speed, m/s.
+    #[error("a manoeuvre on a road runs below 150 m/s (540 km/h); beyond it the tyre models and the 2-DOF model are far outside what they were made for")]
+    ManoeuvreSpeed,
+    /// A steer frequency, Hz.
+    #[error("no handling manoeuvre steers faster than 50 Hz (a driver steers below about 5 Hz, handling tests sweep to a few hertz); a faster steer only multiplies the integration steps (is the value in rad/s, or a sample rate?)")]
+    SteerFrequency,
     /// A step steer's ramp.
     #[error("ISO 7401 asks for 10–90 % of the steer within 0.15 s: a linear 0–100 % ramp of at most 0.1875 s (GB/T 6323 allows 0.2 s)")]
     RampTime,

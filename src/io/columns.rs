@@ -58,6 +58,15 @@ impl Columns {
     }
 }
 
+/// The 1-based line of the record at `p` in `bytes`. The csv crate counts a
+/// line at its `\n`, and in a CRLF file a record ends at the `\r`: the next
+/// record's position then sits on the `\n` not yet counted, one line short
+/// (a NaN on line 3 was reported on line 2, a bad first row on the header's).
+fn line_of(bytes: &[u8], p: &csv::Position) -> usize {
+    let uncounted = bytes.get(p.byte() as usize) == Some(&b'\n');
+    p.line() as usize + usize::from(uncounted)
+}
+
 /// Reads the `required` and `optional` columns of a CSV file.
 pub fn read_columns(
     path: &Path,
@@ -65,19 +74,16 @@ pub fn read_columns(
     optional: &[&str],
 ) -> Result<Columns, InputError> {
     let file_err = |problem| InputError::problem(path, problem);
+    // Read whole to find each record's true line (see [`line_of`]).
+    let bytes = std::fs::read(path).map_err(|source| InputError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let line_at = |p: Option<&csv::Position>| p.map_or(0, |p| line_of(&bytes, p));
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .comment(Some(b'#'))
-        .from_path(path)
-        .map_err(|e| match e.into_kind() {
-            csv::ErrorKind::Io(source) => InputError::Io {
-                path: path.to_path_buf(),
-                source,
-            },
-            other => file_err(InputProblem::Csv {
-                detail: format!("{other:?}"),
-            }),
-        })?;
+        .from_reader(bytes.as_slice());
     let headers = rdr
         .headers()
         .map_err(|e| {
@@ -95,7 +101,7 @@ pub fn read_columns(
                 if let Some(j) = headers.iter().skip(i + 1).position(|h| h == *name) {
                     return Err(InputError::problem_at(
                         path,
-                        headers.position().map_or(1, |p| p.line() as usize),
+                        line_at(headers.position()).max(1),
                         i + j + 2,
                         InputProblem::Duplicate {
                             name: name.to_string(),
@@ -108,7 +114,7 @@ pub fn read_columns(
             None if required.contains(name) => {
                 return Err(InputError::MissingColumn {
                     path: path.to_path_buf(),
-                    line: headers.position().map_or(1, |p| p.line() as usize),
+                    line: line_at(headers.position()).max(1),
                     name: name.to_string(),
                     header: headers.iter().map(str::to_string).collect(),
                 })
@@ -123,14 +129,24 @@ pub fn read_columns(
     }
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {
-            let line = e.position().map_or(0, |p| p.line() as usize);
+            let line = line_at(e.position());
+            // The reader's own message repeats its line, one short in a
+            // CRLF file: only what is wrong is kept.
+            let detail = match e.kind() {
+                csv::ErrorKind::UnequalLengths {
+                    expected_len, len, ..
+                } => format!(
+                    "found a record with {len} fields, but the previous record has {expected_len}"
+                ),
+                _ => e.to_string(),
+            };
             InputError::MalformedRow {
                 path: path.to_path_buf(),
                 line,
-                source: e,
+                detail,
             }
         })?;
-        let line = rec.position().map_or(0, |p| p.line() as usize);
+        let line = line_at(rec.position());
         for (idx, name) in &wanted {
             let cell = rec.get(*idx).unwrap_or("");
             let at = |problem| InputError::Cell {

@@ -233,10 +233,30 @@ fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> {
     )
 }
 
-/// The checks every timed manoeuvre shares: a positive speed and an end
-/// after the start.
-fn timing(speed: f64, start: f64, end: f64) -> Result<(), ParamError> {
+/// The fastest manoeuvre, m/s ([`Limit::ManoeuvreSpeed`]).
+const MAX_SPEED: f64 = 150.0;
+
+/// The fastest steer frequency, Hz ([`Limit::SteerFrequency`]): a sine of
+/// 1 MHz asked 20 million integration steps before it was refused.
+const MAX_FREQUENCY: f64 = 50.0;
+
+/// A manoeuvre's speed: positive and below [`MAX_SPEED`], refused at its
+/// own key (an absurd speed otherwise hangs the integration, or surfaces
+/// as a non-finite straight-running steer blamed on `steer`).
+fn speed(speed: f64) -> Result<(), ParamError> {
     ParamError::positive("speed", speed)?;
+    ParamError::in_range("speed", speed, 0.0, MAX_SPEED, Limit::ManoeuvreSpeed)
+}
+
+/// A steer frequency at `key`: at most [`MAX_FREQUENCY`], above `lo`.
+fn frequency(key: &str, f: f64, lo: f64) -> Result<(), ParamError> {
+    ParamError::in_range(key, f, lo, MAX_FREQUENCY, Limit::SteerFrequency)
+}
+
+/// The checks every timed manoeuvre shares: a speed on a road and an end
+/// after the start.
+fn timing(v: f64, start: f64, end: f64) -> Result<(), ParamError> {
+    speed(v)?;
     ParamError::in_range("end", end, start, 1e6, Limit::EndAfterStart)
 }
 
@@ -342,9 +362,6 @@ impl From<Manoeuvre> for Resolved {
     }
 }
 
-/// The fastest step steer, m/s ([`Limit::StepSpeed`]).
-const MAX_STEP_SPEED: f64 = 150.0;
-
 /// A step steer: timing checked (ISO 7401's rise time), the amplitude
 /// from `steer` or from the steady `lateral_acceleration` it must reach, the
 /// start at straight running (the steer and sideslip that give zero lateral
@@ -355,13 +372,7 @@ fn step_steer(
     model: &VehicleModel,
     friction: f64,
 ) -> Result<Resolved, InputError> {
-    check(src, ParamError::positive("speed", s.speed))?;
-    // Refused at its own key: an absurd speed otherwise surfaces as a
-    // non-finite straight-running steer, blamed on `steer`.
-    check(
-        src,
-        ParamError::in_range("speed", s.speed, 0.0, MAX_STEP_SPEED, Limit::StepSpeed),
-    )?;
+    check(src, speed(s.speed))?;
     check(src, ParamError::non_negative("start", s.start))?;
     check(
         src,
@@ -488,24 +499,39 @@ fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved,
     })
 }
 
+/// The steer a ramp reaches by its `end`, within ±[`MAX_ROAD_WHEEL_STEER`],
+/// refused at `rate` naming that steer: the rate itself may be sound and
+/// the run too long. Degrees are suggested only for a rate that passes the
+/// limit within a second, which no ramp in rad/s of a road wheel does.
+fn ramp_reach(r: &RampSteer) -> Result<(), ParamError> {
+    let reached = r.rate * (r.end - r.start);
+    if road_wheel_steer("rate", reached).is_ok() {
+        return Ok(());
+    }
+    Err(ParamError::new(
+        "rate",
+        r.rate,
+        ParamReason::RampReach {
+            reached,
+            end: r.end,
+            in_degrees: r.rate.abs() > MAX_ROAD_WHEEL_STEER,
+        },
+    ))
+}
+
 /// Ramp, sine and sweep steers: their timing and rates checked.
 fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
     Ok(match spec {
         ManoeuvreSpec::RampSteer(r) => {
             check(src, timing(r.speed, r.start, r.end))?;
             check(src, ParamError::finite("rate", r.rate))?;
-            // The steer the ramp reaches at its end.
-            let last = r.rate * (r.end - r.start);
-            check(
-                src,
-                road_wheel_steer("rate", last)
-                    .map_err(|e| ParamError::new("rate", r.rate, e.reason)),
-            )?;
+            check(src, ramp_reach(r))?;
             Manoeuvre::RampSteer(*r)
         }
         ManoeuvreSpec::Sine(s) => {
             check(src, timing(s.speed, s.start, s.end))?;
             check(src, ParamError::positive("frequency", s.frequency))?;
+            check(src, frequency("frequency", s.frequency, 0.0))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
             Manoeuvre::Sine(*s)
         }
@@ -513,7 +539,11 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, timing(s.speed, s.start, s.end))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
             check(src, ParamError::non_negative("f_start", s.f_start))?;
+            // A guard below 0, as for the rise time: f_start = 0 is allowed
+            // and the range reads [0, 50].
+            check(src, frequency("f_start", s.f_start, -1e-12))?;
             check(src, ParamError::positive("f_end", s.f_end))?;
+            check(src, frequency("f_end", s.f_end, 0.0))?;
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::StepSteer(_) | ManoeuvreSpec::Replay(_) => {

@@ -31,6 +31,22 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// serde's `unknown variant `x`, expected one of `a`, `b`` with the nearest
+/// known name suggested after the unknown one, as every other unknown name
+/// is answered (a manoeuvre's `kind = "step_stear"`); other messages, and
+/// ones that already suggest, unchanged.
+fn suggest_variant(message: &str) -> String {
+    let parse = || {
+        let rest = message.strip_prefix("unknown variant `")?;
+        let (given, rest) = rest.split_once('`')?;
+        let list = rest.strip_prefix(", expected one of ")?;
+        let known: Vec<&str> = list.split(", ").map(|k| k.trim_matches('`')).collect();
+        let clause = crate::format::did_you_mean(given, &known);
+        (!clause.is_empty()).then(|| format!("unknown variant `{given}`{clause}{rest}"))
+    };
+    parse().unwrap_or_else(|| message.to_string())
+}
+
 /// The value a serde message says was of the wrong type or length
 /// (`invalid type: string "fast", expected f64`, `invalid length 13, …`).
 enum Offender {
@@ -72,10 +88,12 @@ fn offender(message: &str) -> Option<Offender> {
 impl Offender {
     /// Whether `item` is the value described.
     fn is(&self, item: &toml_edit::Item) -> bool {
+        item.as_value().is_some_and(|v| self.is_value(v))
+    }
+
+    /// Whether `v` is the value described.
+    fn is_value(&self, v: &toml_edit::Value) -> bool {
         use toml_edit::Value;
-        let Some(v) = item.as_value() else {
-            return false;
-        };
         match (v, self) {
             (Value::String(s), Offender::Str(x)) => s.value() == x,
             (Value::Array(a), Offender::Array(n)) => n.is_none_or(|n| a.len() == n),
@@ -146,6 +164,7 @@ impl TomlSource {
             .filter(|l| !l.is_empty())
             .collect::<Vec<_>>()
             .join("; ");
+        let message = suggest_variant(&message);
         // A value of the wrong type: toml's message names the value, the
         // key is named here; a value that does not parse, by the key
         // written on its line.
@@ -214,9 +233,19 @@ impl TomlSource {
             let inside = within
                 .as_ref()
                 .is_none_or(|w| at.start >= w.start && at.start <= w.end);
-            (inside && item.as_table_like().is_none() && o.is(item)).then(|| {
+            if !inside || item.as_table_like().is_some() {
+                return None;
+            }
+            if o.is(item) {
                 let key_span = table.get_key_value(key).and_then(|(k, _)| k.span());
-                (path.to_string(), key_span.unwrap_or(at))
+                return Some((path.to_string(), key_span.unwrap_or(at)));
+            }
+            // A wrong element of an array (a string among a tyre's
+            // coefficients): the element, at its own place.
+            let array = item.as_array()?;
+            array.iter().enumerate().find_map(|(i, v)| {
+                (o.is_value(v) && !matches!(o, Offender::Array(_)))
+                    .then(|| (format!("{path}[{i}]"), v.span().unwrap_or(at.clone())))
             })
         })
     }

@@ -35,6 +35,7 @@
 //! [`register`]`::<M>()` once: its tyre files, `simulate`, `identify` (when
 //! [`Model::IDENTIFICATION`] says so) and `tyre-eval` then accept it.
 
+mod arrays;
 mod dispatch;
 mod erased;
 mod generate;

@@ -49,12 +49,13 @@ pub struct Pac89 {
     /// Coefficient numbering; must be `adams-pac89`.
     pub form: Pac89Form,
     /// Lateral coefficients a0..a13.
+    #[serde(deserialize_with = "super::arrays::exactly")]
     pub a: [f64; 14],
     /// Longitudinal coefficients b0..b10 (absent: no longitudinal force).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "super::arrays::exactly_optional")]
     pub b: Option<[f64; 11]>,
     /// Aligning coefficients c0..c17 (absent: no aligning moment).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "super::arrays::exactly_optional")]
     pub c: Option<[f64; 18]>,
 }
 

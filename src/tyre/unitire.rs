@@ -32,6 +32,7 @@ use serde::{Deserialize, Serialize};
 #[serde(deny_unknown_fields)]
 pub struct UniTireLateral {
     /// p1..p10 as in the module docs.
+    #[serde(deserialize_with = "super::arrays::exactly")]
     pub p: [f64; 10],
 }
 
@@ -52,6 +53,7 @@ pub(crate) const DEFAULT_LONGITUDINAL: [f64; 10] =
 #[serde(deny_unknown_fields)]
 pub struct UniTireAligning {
     /// c1..c10 as in the module docs (Fz in kN, Dx in m).
+    #[serde(deserialize_with = "super::arrays::exactly")]
     pub c: [f64; 10],
 }
 

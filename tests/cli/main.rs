@@ -248,6 +248,7 @@ mod scenarios;
 mod shards;
 mod sweeps;
 mod trips;
+mod trips_inputs;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
 pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {

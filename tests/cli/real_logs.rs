@@ -179,7 +179,7 @@ fn a_140_s_standstill_is_excluded_and_the_pieces_either_side_replayed() {
         "{stdout}"
     );
     assert!(
-        stdout.contains("(1 standstill and 0 crawl spans)"),
+        stdout.contains("(1 standstill span and 0 crawl spans)"),
         "{stdout}"
     );
     assert!(stdout.contains("standstill 11.52–152.48 s"), "{stdout}");
@@ -254,7 +254,10 @@ fn a_crawl_at_2_m_s_is_left_out_of_metrics_and_replay() {
         o.remove("piece");
     }
     assert_eq!(m_crawl, m_moving);
-    assert!(err.contains("(0 standstill and 1 crawl spans)"), "{err}");
+    assert!(
+        err.contains("(0 standstill spans and 1 crawl span)"),
+        "{err}"
+    );
     assert!(err.contains("crawl 0.00–20.66 s"), "{err}");
     // The crawl kept (min speed 1 m/s): a different answer.
     let (m_all, err) = metrics(&dir.path().join("crawl.csv"), &["--min-speed", "1"]);
@@ -380,9 +383,12 @@ fn zero_reads_spikes_and_held_values_are_listed_and_left_out() {
     assert_eq!(c["samples_repaired"], 1);
     assert_eq!(c["samples_masked"], 1 + 1 + 9);
     assert!(
-        stdout.contains("glitches: 1 zero reads, 2 spikes, 1 stuck values, 0 time gaps"),
+        stdout.contains("glitches: 1 zero read, 2 spikes, 1 stuck value, 0 time gaps (1 input sample repaired, 11 response samples masked)"),
         "{stdout}"
     );
+    // Counts of one in the singular, the glitch's own line too.
+    assert!(stdout.contains("(1 sample, "), "{stdout}");
+    assert!(!stdout.contains("sample(s)"), "{stdout}");
     assert!(stdout.contains("zero_read at 8.000 s in"), "{stdout}");
     // Left out of the scores: the base model's residual never reaches the
     // zeroed end of the ramp or the ay spike; the masked samples are not

@@ -5,6 +5,7 @@
 //! unit.
 
 use crate::error::PieceRefusal;
+use crate::format::plural;
 use crate::measured::MeasuredRun;
 use serde::Serialize;
 
@@ -294,77 +295,87 @@ impl CleaningReport {
         self.glitches.push(g);
     }
 
-    /// The report in a few lines for the terminal: counts per kind, the
-    /// first few glitches, the slow spans and the pieces.
-    pub fn summary(&self, first: usize) -> Vec<String> {
+    /// The first line of [`Self::summary`]: every count, each noun in the
+    /// number its count takes ("1 spike", "2 spikes").
+    fn counts_line(&self) -> String {
         let c = &self.counts;
-        let mut out = vec![format!(
-            "{} samples read, {} kept; {} below {} m/s excluded ({} standstill and {} crawl spans), {} in {} pieces dropped; glitches: {} zero reads, {} spikes, {} stuck values, {} time gaps ({} input samples repaired, {} response samples masked)",
-            self.samples_read,
+        let spans = |kind: SlowKind| self.slow.iter().filter(|s| s.kind == kind).count();
+        format!(
+            "{} read, {} kept; {} below {} m/s excluded ({} and {}), {} in {} dropped; glitches: {}, {}, {}, {} ({} repaired, {} masked)",
+            plural(self.samples_read, "sample", "samples"),
             self.samples_kept,
             self.samples_slow,
             self.min_speed,
-            self.slow.iter().filter(|s| s.kind == SlowKind::Standstill).count(),
-            self.slow.iter().filter(|s| s.kind == SlowKind::Crawl).count(),
+            plural(spans(SlowKind::Standstill), "standstill span", "standstill spans"),
+            plural(spans(SlowKind::Crawl), "crawl span", "crawl spans"),
             self.samples_in_dropped_pieces,
-            self.dropped_pieces.len(),
-            c.zero_read,
-            c.spike,
-            c.stuck,
-            c.time_gap,
-            self.samples_repaired,
-            self.samples_masked,
-        )];
+            plural(self.dropped_pieces.len(), "piece", "pieces"),
+            plural(c.zero_read, "zero read", "zero reads"),
+            plural(c.spike, "spike", "spikes"),
+            plural(c.stuck, "stuck value", "stuck values"),
+            plural(c.time_gap, "time gap", "time gaps"),
+            plural(self.samples_repaired, "input sample", "input samples"),
+            plural(self.samples_masked, "response sample", "response samples"),
+        )
+    }
+
+    /// The report in a few lines for the terminal: counts per kind, the
+    /// first few glitches, the slow spans and the pieces.
+    pub fn summary(&self, first: usize) -> Vec<String> {
+        let mut out = vec![self.counts_line()];
         for h in &self.held {
             out.push(format!(
-                "held: {} in {} updates every {} samples ({:.1} Hz): {} held samples interpolated between its updates",
+                "held: {} in {} updates every {} ({:.1} Hz): {} interpolated between its updates",
                 h.channel.name(),
                 h.run,
-                h.every,
+                plural(h.every, "sample", "samples"),
                 h.update_rate,
-                h.samples
+                plural(h.samples, "held sample", "held samples")
             ));
         }
         for g in self.glitches.iter().take(first) {
             out.push(format!(
-                "{} at {:.3} s in {}: {} {} ({} sample(s), {})",
+                "{} at {:.3} s in {}: {} {} ({}, {})",
                 g.kind.name(),
                 g.t,
                 g.run,
                 g.channel.name(),
                 short(g.value),
-                g.samples,
+                plural(g.samples, "sample", "samples"),
                 g.treatment.name()
             ));
         }
         if self.glitches.len() > first {
             out.push(format!(
-                "… and {} more glitches (every one in the JSON report)",
-                self.glitches.len() - first
+                "… and {} more (every one in the JSON report)",
+                plural(self.glitches.len() - first, "glitch", "glitches")
             ));
         }
         for s in self.slow.iter().take(first) {
             out.push(format!(
-                "{} {:.2}–{:.2} s in {} ({} samples, up to {:.2} m/s) excluded",
+                "{} {:.2}–{:.2} s in {} ({}, up to {:.2} m/s) excluded",
                 s.kind.name(),
                 s.t_start,
                 s.t_end,
                 s.run,
-                s.samples,
+                plural(s.samples, "sample", "samples"),
                 // Truncated: a span below 5 m/s must not read "up to 5.00".
                 (s.max_speed * 100.0).floor() / 100.0
             ));
         }
         if self.slow.len() > first {
-            out.push(format!("… and {} more slow spans", self.slow.len() - first));
+            out.push(format!(
+                "… and {} more",
+                plural(self.slow.len() - first, "slow span", "slow spans")
+            ));
         }
         for p in self.dropped_pieces.iter().take(first) {
             out.push(format!(
-                "piece {} ({:.2}–{:.2} s, {} samples) dropped: {}",
+                "piece {} ({:.2}–{:.2} s, {}) dropped: {}",
                 p.name,
                 p.t_start,
                 p.t_end,
-                p.samples,
+                plural(p.samples, "sample", "samples"),
                 p.reason.as_ref().map_or(String::new(), |r| r.to_string())
             ));
         }

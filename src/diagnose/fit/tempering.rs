@@ -20,8 +20,8 @@
 //! `τ = 1 + 2 Σ_{k=1..M} ρ_k` with `ρ_k` the autocorrelation at lag `k`
 //! pooled over every run and channel (uncentred: a sustained offset is
 //! correlation, not a mean to remove), the window `M` the smallest with
-//! `M ≥ 5·τ(M)` (Sokal's automatic window; at most 1,000 lags), `τ` at
-//! most the longest sequence's length. `s²` and `τ` are at least 1: white noise about a right model
+//! `M ≥ 5·τ(M)` (Sokal's automatic window; at most 1,000 lags, so `τ` at
+//! most 2,001 samples), `τ` at most the longest sequence's length. `s²` and `τ` are at least 1: white noise about a right model
 //! gives the untempered fit. Units: dimensionless; τ in samples.
 
 use serde::Serialize;

@@ -172,7 +172,7 @@ pub fn tempering(t: &Tempering) -> String {
         return "the runs weigh as independent samples at their noise floors".into();
     }
     format!(
-        "the runs weigh as {:.0} independent samples ({} residuals correlated over {:.1}) at {:.2} noise floors, so the prior's rows count ×{:.1}",
+        "the runs weigh as {:.0} independent samples ({} residuals correlated over {:.1} samples) at {:.2} noise floors, so the prior's rows count ×{:.1}",
         t.effective_samples,
         t.samples,
         t.correlation_samples,

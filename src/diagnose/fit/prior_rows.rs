@@ -74,9 +74,14 @@ impl PriorRows {
         self.weight
     }
 
+    /// Whether row `i` is a hold (only the peak friction's can be).
+    fn holds(&self, i: usize) -> bool {
+        self.sigmas[i] == HELD_WIDTH
+    }
+
     /// The multiplier of row `i`.
     fn row_weight(&self, i: usize) -> f64 {
-        if self.sigmas[i] == HELD_WIDTH {
+        if self.holds(i) {
             1.0
         } else {
             self.weight
@@ -86,7 +91,7 @@ impl PriorRows {
     /// The friction share the axle grid starts from: the held value, or
     /// `free` (a friction that does not saturate) when it is fitted.
     pub fn grid_friction(&self, free: f64) -> f64 {
-        if self.sigmas[2] == HELD_WIDTH {
+        if self.holds(2) {
             let d = self.centres[2].exp();
             d / (d + D_REF)
         } else {

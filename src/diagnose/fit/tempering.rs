@@ -65,7 +65,7 @@ impl Tempering {
         let n: usize = lengths.iter().sum();
         let r = &r[..n.min(r.len())];
         let sum_sq: f64 = r.iter().map(|x| x * x).sum();
-        if r.is_empty() || sum_sq.is_nan() || sum_sq <= 0.0 || !sum_sq.is_finite() {
+        if r.is_empty() || !sum_sq.is_finite() || sum_sq <= 0.0 {
             return Tempering::NONE;
         }
         let variance = sum_sq / r.len() as f64;

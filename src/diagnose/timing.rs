@@ -13,9 +13,13 @@
 //! evaluation counts stay meaningful. The evaluations of a fit are told
 //! apart by their order: a polish ends with the optimum's linearisation,
 //! `1 + n` evaluations for the residuals and the Jacobian, then
-//! `n·(n + 3)/2` for the second derivatives (`n` parameters). Evaluations
-//! at a point the run set was just replayed at reuse that replay
-//! ([`crate::diagnose::fit::problem::Problem`]): they are counted, at almost no cost.
+//! `n·(n + 3)/2` for the second derivatives (`n` parameters); a candidate's
+//! second derivatives are taken when it is cross-validated, and timed
+//! there. Evaluations at a point the run set was just replayed at (or
+//! whose replay was kept) reuse that replay
+//! ([`crate::diagnose::fit::problem::Problem`]), and one stopped once its
+//! cost is known to be too high replays only some runs: both are counted,
+//! at less than a replay's cost.
 //!
 //! The timing reads the clock and counts; it decides nothing, so every
 //! other number of the report is the same run after run (the timing's own
@@ -272,13 +276,29 @@ pub(super) fn record_polish(
     linearised: bool,
     phases: [Phase; 3],
 ) {
-    let end = Instant::now();
-    let total = stamps.count() - before;
     let (jac, curv) = if linearised && n > 0 {
         (1 + jacobian, n * (n + 3) / 2)
     } else {
         (0, 0)
     };
+    record_split(rec, stamps, (from, before), (jac, curv), phases);
+}
+
+/// Records a polish that began at `from` with `before` evaluations already
+/// stamped and has just ended, its last `jac` evaluations the optimum's
+/// residuals and Jacobian and the `curv` after them its second
+/// derivatives (0: left for later, [`crate::diagnose::fit::fit_first_order`]):
+/// its evaluations and time split into `phases` (polish, Jacobian, second
+/// derivatives).
+pub(super) fn record_split(
+    rec: &Recorder,
+    stamps: &Stamps,
+    (from, before): (Instant, usize),
+    (jac, curv): (usize, usize),
+    phases: [Phase; 3],
+) {
+    let end = Instant::now();
+    let total = stamps.count() - before;
     let polish = total.saturating_sub(jac + curv);
     let split = |k: usize| stamps.at(before + k).unwrap_or(end);
     let (t_jac, t_curv) = (split(polish), split(polish + jac));

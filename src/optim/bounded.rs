@@ -66,6 +66,7 @@ impl BoundedLm {
         let m = problem.count();
         let mut r = vec![0.0; m];
         problem.residuals(&p, &mut r);
+        problem.keep_last();
         let mut cost = half_sum_of_squares(&r);
         let mut evaluations = 1;
         let mut converged = false;
@@ -95,10 +96,17 @@ impl BoundedLm {
                 };
                 let mut q: Vec<f64> = p.iter().zip(&step).map(|(p, d)| p + d).collect();
                 clamp(&mut q);
-                problem.residuals(&q, &mut trial);
+                // A trial is only taken below the cost: the problem may
+                // stop replaying once it knows it is not.
+                let below = problem.residuals_below(&q, &mut trial, cost);
                 evaluations += 1;
-                let c = half_sum_of_squares(&trial);
+                let c = if below {
+                    half_sum_of_squares(&trial)
+                } else {
+                    f64::INFINITY
+                };
                 if c.is_finite() && c < cost {
+                    problem.keep_last();
                     accepted = Some((q, c));
                     lambda = (lambda / 3.0).max(1e-12);
                     break;

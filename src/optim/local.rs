@@ -55,6 +55,36 @@ pub trait Residuals: Sync {
         self.residuals(p, &mut r);
         0.5 * r.iter().map(|e| e * e).sum::<f64>()
     }
+
+    /// The residuals at `p` for a caller that only uses them when their
+    /// cost ½·Σ e² is below `bound` (a trial step, a search point): true
+    /// with `out` filled as [`Residuals::residuals`] fills it, or false
+    /// when that cost is certainly at or above `bound` (`out` then partly
+    /// filled). A problem whose residuals are costly may stop as soon as it
+    /// knows; by default every residual is evaluated (true).
+    fn residuals_below(&self, p: &[f64], out: &mut [f64], bound: f64) -> bool {
+        let _ = bound;
+        self.residuals(p, out);
+        true
+    }
+
+    /// [`Residuals::cost`] where it is below `bound`, else either it or
+    /// infinity ([`Residuals::residuals_below`]): a comparison with
+    /// `bound` decides as the exact cost would.
+    fn cost_below(&self, p: &[f64], bound: f64) -> f64 {
+        let mut r = vec![0.0; self.count()];
+        if self.residuals_below(p, &mut r, bound) {
+            0.5 * r.iter().map(|e| e * e).sum::<f64>()
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Told that the point of the last [`Residuals::residuals`] (or
+    /// [`Residuals::residuals_below`] that returned true) is one the caller
+    /// will come back to (an accepted step, a search's best): a problem
+    /// that caches its evaluations may keep it. By default nothing.
+    fn keep_last(&self) {}
 }
 
 /// Forward-difference Jacobian at `p` given the residuals `r0` there

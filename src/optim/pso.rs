@@ -172,18 +172,45 @@ impl Pso {
     where
         F: Fn(&[f64]) -> f64 + Sync,
     {
+        self.minimize_bounded_from(|x, _| f(x), bounds, starts)
+    }
+
+    /// As [`Pso::minimize_from`], for an objective `f(x, bound)` that may
+    /// return infinity instead of its value where that value is at or
+    /// above `bound` (the particle's personal best): the swarm then moves
+    /// exactly as with the values, and a costly objective can stop early.
+    /// Only the linearly decreasing inertia without natural selection reads
+    /// nothing else of the values; the other schedules get no bound.
+    pub(crate) fn minimize_bounded_from<F>(
+        &self,
+        f: F,
+        bounds: &[(f64, f64)],
+        starts: &[Vec<f64>],
+    ) -> PsoResult
+    where
+        F: Fn(&[f64], f64) -> f64 + Sync,
+    {
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
         let mut swarm = Swarm::new(self, bounds, starts, &mut rng);
-        let eval = |x: &[f64], out: &mut Vec<f64>| {
+        let bounded = self.inertia == Inertia::LinearDecreasing && !self.natural_selection;
+        // The bound of particle i: its personal best (none before it has one).
+        let eval = |x: &[f64], pval: &[f64], out: &mut Vec<f64>| {
             let d = bounds.len();
+            let bound = |i: usize| match pval.get(i) {
+                Some(&b) if bounded => b,
+                _ => f64::INFINITY,
+            };
             if self.parallel {
-                x.par_chunks(d).map(|p| sane(f(p))).collect_into_vec(out);
+                x.par_chunks(d)
+                    .enumerate()
+                    .map(|(i, p)| sane(f(p, bound(i))))
+                    .collect_into_vec(out);
             } else {
                 out.clear();
-                out.extend(x.chunks(d).map(|p| sane(f(p))));
+                out.extend(x.chunks(d).enumerate().map(|(i, p)| sane(f(p, bound(i)))));
             }
         };
-        eval(&swarm.x, &mut swarm.fx);
+        eval(&swarm.x, &[], &mut swarm.fx);
         swarm.pbest = swarm.x.clone();
         swarm.pval = swarm.fx.clone();
         let mut evaluations = swarm.n;
@@ -198,7 +225,7 @@ impl Pso {
             iterations = k + 1;
             swarm.attract(self.topology, g);
             swarm.step(self, k, bounds, &mut rng);
-            eval(&swarm.x, &mut swarm.fx);
+            eval(&swarm.x, &swarm.pval, &mut swarm.fx);
             evaluations += swarm.n;
             swarm.remember_bests();
             if self.natural_selection {

@@ -29,45 +29,63 @@ pub const GRID_CELLS: [usize; 2] = [9, 5];
 /// (kept at their values in `start`): a grid ([`grid`]) along one or two
 /// parameters, the swarm ([`swarm`]) along more; its best point (never
 /// worse than `start`) and how it searched.
+// The diagnosis's fits take [`global_best`] (the cost too); this stays for
+// callers that need only the point.
+#[cfg_attr(not(test), allow(dead_code))]
 pub fn global_search<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
     held: usize,
 ) -> (Vec<f64>, GlobalSearch) {
+    let (p, _, global) = global_best(problem, start, pso, held);
+    (p, global)
+}
+
+/// [`global_search`] with the cost of its best point where it replayed it
+/// (None: nothing searched, `start` clamped), that point's replays kept by
+/// the problem ([`Residuals::keep_last`]): the polish starts there without
+/// replaying it again.
+pub fn global_best<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    pso: &Pso,
+    held: usize,
+) -> (Vec<f64>, Option<f64>, GlobalSearch) {
     let searched = problem.bounds.len().saturating_sub(held);
     match searched {
-        0 => (problem.clamp(start), GlobalSearch::None),
+        0 => (problem.clamp(start), None, GlobalSearch::None),
         1 | 2 => {
             let per_parameter = GRID_CELLS[searched - 1];
-            let (p, points) = grid(problem, start, held, per_parameter);
-            (
-                p,
-                GlobalSearch::Grid {
-                    per_parameter,
-                    points,
-                },
-            )
+            let (p, cost, points) = grid(problem, start, held, per_parameter);
+            let global = GlobalSearch::Grid {
+                per_parameter,
+                points,
+            };
+            (p, Some(cost), global)
         }
         _ => {
-            let (p, evaluations) = swarm(problem, start, pso, held);
-            (p, GlobalSearch::Swarm { evaluations })
+            let (p, cost, evaluations) = swarm(problem, start, pso, held);
+            (p, Some(cost), GlobalSearch::Swarm { evaluations })
         }
     }
 }
 
 /// The grid stage: the cost at the centres of `cells` equal cells along
 /// each parameter but the first `held` (the product of them) and at
-/// `start`; the lowest of them and the replays made.
+/// `start`; the lowest of them, its cost and the replays made (a point
+/// is replayed only until it is known not to be lower than the best so
+/// far, [`Residuals::cost_below`]).
 fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     held: usize,
     cells: usize,
-) -> (Vec<f64>, usize) {
+) -> (Vec<f64>, f64, usize) {
     let p0 = problem.clamp(start);
     let d = p0.len().saturating_sub(held);
     let mut best = (problem.cost(&p0), p0.clone());
+    problem.keep_last();
     let total = cells.pow(d as u32);
     let mut q = p0.clone();
     for index in 0..total {
@@ -77,37 +95,53 @@ fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
             *slot = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
             rest /= cells;
         }
-        let c = problem.cost(&q);
+        // Only a point below the best counts: with a best that is not a
+        // number, any finite one (no bound then).
+        let c = problem.cost_below(&q, best.0);
         // A replay that fails (a cost not finite) is no candidate start.
         if c.is_finite() && (best.0.is_nan() || c < best.0) {
             best = (c, q.clone());
+            problem.keep_last();
         }
     }
-    (best.1, total + 1)
+    (best.1, best.0, total + 1)
 }
 
 /// The swarm search of a fit: PSO over the bounds of every parameter but
 /// the first `held` (kept at their values in `start`; at least one is
 /// searched, [`global_search`] sees to it), one particle at `start`; its
-/// best point and the evaluations made.
+/// best point, its cost and the evaluations made (each replayed only until
+/// it is known not to be below its particle's best,
+/// [`Pso::minimize_bounded_from`]).
 fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
     held: usize,
-) -> (Vec<f64>, usize) {
+) -> (Vec<f64>, f64, usize) {
     let p0 = problem.clamp(start);
     let full = |q: &[f64]| {
         let mut p = p0[..held].to_vec();
         p.extend_from_slice(q);
         p
     };
-    let r = pso.minimize_from(
-        |q| problem.cost(&full(q)),
+    // The lowest cost so far, whose replays the problem keeps: the swarm's
+    // best (unless an equal one came later, then only replayed again).
+    let lowest = std::sync::Mutex::new(f64::INFINITY);
+    let r = pso.minimize_bounded_from(
+        |q, bound| {
+            let c = problem.cost_below(&full(q), bound);
+            let mut l = lowest.lock().unwrap_or_else(|e| e.into_inner());
+            if c < *l {
+                *l = c;
+                problem.keep_last();
+            }
+            c
+        },
         &problem.bounds[held..],
         &[p0[held..].to_vec()],
     );
-    (full(&r.best), r.evaluations)
+    (full(&r.best), r.value, r.evaluations)
 }
 
 #[cfg(test)]
@@ -166,7 +200,7 @@ mod tests {
         let problem = problem(&runs, &[B, B]);
         let best_fit = optimum(&problem);
         let start = [35.0, 35.0];
-        let (best, points) = grid(&problem, &start, 0, 5);
+        let (best, _, points) = grid(&problem, &start, 0, 5);
         assert_eq!(points, 26);
         // The lowest of the 25 cell centres 2 + (i + ½)·7.6.
         let centre = |i: usize| 2.0 + (i as f64 + 0.5) * 7.6;
@@ -191,12 +225,12 @@ mod tests {
         let problem = problem(&runs, &[B, B]);
         // At the optimum no cell is better.
         let at = optimum(&problem);
-        let (best, points) = grid(&problem, &at, 0, 9);
+        let (best, _, points) = grid(&problem, &at, 0, 9);
         assert_eq!((best, points), (at.clone(), 82));
         // The front held at the optimum's: the best of the rear's nine
         // cells is the centre nearest its optimum (2 + 2.5·38/9 = 12.56,
         // the third).
-        let (best, points) = grid(&problem, &[at[0], 35.0], 1, 9);
+        let (best, _, points) = grid(&problem, &[at[0], 35.0], 1, 9);
         assert_eq!(points, 10);
         assert_eq!(best[0], at[0]);
         assert!(

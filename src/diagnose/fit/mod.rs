@@ -138,6 +138,42 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
     off: Option<&[f64]>,
     polish: Polish,
 ) -> FitOutcome {
+    fit_with(problem, start, off, polish, true).0
+}
+
+/// [`fit`] by Levenberg–Marquardt whose linearisation leaves out the
+/// second derivatives (`n·(n + 3)/2` replays that only the fold refits
+/// read: a candidate screened out of its cross-validation never needs
+/// them), with the point it was linearised at (None: no linearisation);
+/// [`complete_curvature`] adds them there. The curvature left out has no
+/// columns.
+pub(crate) fn fit_first_order<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    off: Option<&[f64]>,
+) -> (FitOutcome, Option<Vec<f64>>) {
+    fit_with(problem, start, off, Polish::LevenbergMarquardt, false)
+}
+
+/// The second derivatives of a linearisation `linear` of `problem` at `p`
+/// that [`fit_first_order`] left out, as [`fit`] would have taken them.
+pub(crate) fn complete_curvature<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    linear: &mut Linearisation,
+) {
+    linear.curvature = curvature(problem, p, &linear.residuals);
+}
+
+/// [`fit`], the second derivatives of its linearisation taken when
+/// `second` (else left empty), and the point it was linearised at.
+fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    start: &[f64],
+    off: Option<&[f64]>,
+    polish: Polish,
+    second: bool,
+) -> (FitOutcome, Option<Vec<f64>>) {
     let mut evaluations = 0;
     let p0 = problem.clamp(start);
     let (params, cost, converged) = if start.is_empty() {
@@ -163,9 +199,10 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         (lm.params, data_cost, lm.converged)
     };
     let mut params = params;
+    let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
     let (std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
-            let linear = linearise(problem, &params);
+            let linear = linearise_with(problem, &params, second);
             evaluations += problem.jacobian_evaluations(params.len()) + 1;
             // A parameter the data cannot see (an accelerometer offset of a
             // run set without ay) is wherever the swarm left it: report its
@@ -186,7 +223,7 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         }
         _ => (vec![f64::NAN; params.len()], None),
     };
-    FitOutcome {
+    let outcome = FitOutcome {
         params,
         std_errors,
         cost,
@@ -195,20 +232,36 @@ pub fn fit<F: Fn(&[f64]) -> Augmented + Sync>(
         converged,
         global: GlobalSearch::None,
         linear,
-    }
+    };
+    (outcome, at)
 }
 
 /// The data residuals, their Jacobian and their second derivatives at `p`
 /// (`1 + n + n·(n + 3)/2` replays of the runs, the second differences in
 /// parallel).
+#[cfg(test)]
 pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
 ) -> Linearisation {
+    linearise_with(problem, p, true)
+}
+
+/// [`linearise`], the second derivatives left out (no columns) unless
+/// `second`.
+fn linearise_with<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    second: bool,
+) -> Linearisation {
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
     let jacobian = problem.jacobian(p, &r, &problem.bounds);
-    let curvature = curvature(problem, p, &r);
+    let curvature = if second {
+        curvature(problem, p, &r)
+    } else {
+        DMatrix::zeros(r.len(), 0)
+    };
     Linearisation {
         residuals: r,
         jacobian,

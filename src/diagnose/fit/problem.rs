@@ -19,7 +19,8 @@
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::prior_rows::PriorRows;
 use crate::diagnose::fit::tempering::Tempering;
-use crate::diagnose::model::replay::{LastReplay, Prepared};
+use crate::diagnose::model::channels::ChannelErrors;
+use crate::diagnose::model::replay::{Prepared, ReplayCache};
 use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
 use crate::vehicle::Effects;
@@ -28,10 +29,12 @@ use std::sync::Mutex;
 
 /// Output-error least squares over a set of runs: `build` turns the
 /// parameter vector into the model to replay. Each run's last replay is
-/// kept ([`Problem::new`]): a search over sensor parameters integrates the
-/// runs once, and an evaluation repeated at the same point (the polish
-/// starting where the swarm ended, the Jacobian's base point) costs no
-/// integration. Memory: one history per run.
+/// kept ([`Problem::new`]), and one more on request
+/// ([`Residuals::keep_last`]: a search's best, the polish's accepted
+/// steps): a search over sensor parameters integrates the runs once, and
+/// an evaluation repeated at such a point (the polish starting where the
+/// search ended, the optimum's linearisation and errors) costs no
+/// integration. Memory: two histories per run.
 pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     /// The model of a parameter vector.
     pub build: F,
@@ -41,8 +44,11 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     pub scales: [f64; 3],
     /// Parameter bounds: parameters are clamped into them.
     pub bounds: Vec<(f64, f64)>,
-    /// The last replay of each run.
-    last: Vec<Mutex<Option<LastReplay>>>,
+    /// The last replay of each run, and one kept.
+    last: Vec<ReplayCache>,
+    /// Each run's cost at the last evaluation that replayed them all: an
+    /// evaluation that may stop early replays the costliest first.
+    run_costs: Mutex<Vec<f64>>,
     /// What the parameters set and the base model's effects they are set
     /// on, when the problem has exact derivatives ([`Problem::with_layout`]).
     layout: Option<(Layout, Effects)>,
@@ -59,13 +65,15 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
         scales: [f64; 3],
         bounds: Vec<(f64, f64)>,
     ) -> Self {
-        let last = runs.iter().map(|_| Mutex::new(None)).collect();
+        let last = runs.iter().map(|_| ReplayCache::default()).collect();
+        let run_costs = Mutex::new(vec![0.0; runs.len()]);
         Self {
             build,
             runs,
             scales,
             bounds,
             last,
+            run_costs,
             layout: None,
             prior: None,
         }
@@ -204,7 +212,34 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Residuals for Problem<'_, F> {
             n
         }
     }
+    /// The runs replayed costliest first, stopping once the cost of those
+    /// replayed (and of the prior's rows) shows the whole is at or above
+    /// `bound`: most of a search's points and many rejected trial steps
+    /// need only a few of the runs.
+    fn residuals_below(&self, p: &[f64], out: &mut [f64], bound: f64) -> bool {
+        let q = self.clamp(p);
+        let (data, prior) = out.split_at_mut(self.data_count());
+        let mut floor = 0.0;
+        if let Some(rows) = &self.prior {
+            rows.write(&q, prior);
+            floor = 0.5 * prior.iter().map(|e| e * e).sum::<f64>();
+        }
+        self.data_residuals_below(&q, data, floor, bound)
+    }
+    fn keep_last(&self) {
+        for c in &self.last {
+            c.keep_last();
+        }
+    }
 }
+
+/// How far above a bound the cost of the runs replayed so far must be for
+/// an evaluation to stop ([`Problem::residuals_below`]): those costs are
+/// sums of squares, so the whole cost is at least theirs, up to the
+/// rounding of sums taken in another order (below 1e-9 relative for a
+/// billion residuals); this margin is far above it, so a stop never
+/// decides otherwise than the whole cost would.
+const STOP_MARGIN: f64 = 1e-6;
 
 impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     /// The data residuals at `q` (inside the bounds), the runs replayed in
@@ -212,22 +247,89 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     /// refit's model steps) follow one another, and a slow candidate's
     /// would otherwise leave a core idle once the others are done.
     fn data_residuals(&self, q: &[f64], out: &mut [f64]) {
+        let complete = self.data_residuals_below(q, out, 0.0, f64::INFINITY);
+        debug_assert!(complete);
+    }
+
+    /// The data residuals at `q` (inside the bounds) into `out`, unless the
+    /// runs replayed so far show that the cost, with `floor` (the prior
+    /// rows' share), is at or above `bound` (false; `out` partly written).
+    /// The runs are taken costliest first (as the last complete evaluation
+    /// found them) from a queue shared by the pool's threads, so that a
+    /// stop comes after as few replays as it can; the residuals written are
+    /// the same whichever thread writes them.
+    fn data_residuals_below(&self, q: &[f64], out: &mut [f64], floor: f64, bound: f64) -> bool {
         use rayon::prelude::*;
+        use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
         let model = (self.build)(q);
         let mut pieces = Vec::with_capacity(self.runs.len());
         let mut rest = out;
         for r in &self.runs {
             let (piece, tail) = rest.split_at_mut(r.count());
-            pieces.push(piece);
+            pieces.push(Mutex::new(piece));
             rest = tail;
         }
-        self.runs
-            .par_iter()
-            .zip(&self.last)
-            .zip(pieces)
-            .for_each(|((r, last), out)| {
-                let obs = r.observe_reusing(&model, last);
-                r.write_residuals(&obs, &self.scales, out);
-            });
+        let order = self.costliest_first();
+        // A bound that is not finite stops nothing (NaN compares false):
+        // not even a cost that overflows.
+        let limit = if bound.is_finite() {
+            bound + bound.abs() * STOP_MARGIN
+        } else {
+            f64::NAN
+        };
+        let next = AtomicUsize::new(0);
+        let stopped = AtomicBool::new(false);
+        let spent = Mutex::new((floor, vec![0.0; self.runs.len()]));
+        let work = |_| loop {
+            let k = next.fetch_add(1, Ordering::Relaxed);
+            if k >= order.len() || stopped.load(Ordering::Relaxed) {
+                break;
+            }
+            let i = order[k];
+            let (run, cache) = (self.runs[i], &self.last[i]);
+            let mut piece = pieces[i].lock().unwrap_or_else(|e| e.into_inner());
+            let obs = run.observe_reusing(&model, cache);
+            run.write_residuals(&obs, &self.scales, &mut piece);
+            let c = 0.5 * piece.iter().map(|e| e * e).sum::<f64>();
+            let mut s = spent.lock().unwrap_or_else(|e| e.into_inner());
+            s.0 += c;
+            s.1[i] = c;
+            if s.0 >= limit {
+                stopped.store(true, Ordering::Relaxed);
+            }
+        };
+        let workers = rayon::current_num_threads().clamp(1, order.len().max(1));
+        (0..workers).into_par_iter().for_each(work);
+        if stopped.into_inner() {
+            return false;
+        }
+        let (_, costs) = spent.into_inner().unwrap_or_else(|e| e.into_inner());
+        *self.run_costs.lock().unwrap_or_else(|e| e.into_inner()) = costs;
+        true
+    }
+
+    /// The runs' indices, the costliest at the last complete evaluation
+    /// first (run order among equals).
+    fn costliest_first(&self) -> Vec<usize> {
+        let costs = self
+            .run_costs
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone();
+        let mut order: Vec<usize> = (0..costs.len()).collect();
+        order.sort_by(|&a, &b| costs[b].total_cmp(&costs[a]));
+        order
+    }
+
+    /// Sum of squared unscaled residuals and sample count per channel of
+    /// every run at `p` (clamped), through the runs' cached replays: the
+    /// errors of an optimum the fit has just replayed cost no integration.
+    pub(crate) fn errors(&self, p: &[f64]) -> ChannelErrors {
+        let model = (self.build)(&self.clamp(p));
+        let mut e = ChannelErrors::default();
+        for (r, cache) in self.runs.iter().zip(&self.last) {
+            e.add(&r.errors_of(&r.observe_reusing(&model, cache)));
+        }
+        e
     }
 }

@@ -204,9 +204,15 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
             continue;
         }
         let q: Vec<f64> = problem.clamp(&p.iter().zip(&d).map(|(p, d)| p + d).collect::<Vec<_>>());
-        problem.residuals(&q, &mut trial);
+        // Only a step below the cost is taken: the replays may stop once
+        // they show it is not.
+        let below = problem.residuals_below(&q, &mut trial, cost);
         evaluations += 1;
-        let c = 0.5 * trial.iter().map(|e| e * e).sum::<f64>();
+        let c = if below {
+            0.5 * trial.iter().map(|e| e * e).sum::<f64>()
+        } else {
+            f64::INFINITY
+        };
         if c.is_finite() && c < cost {
             trusted = (0.5..=2.0).contains(&((cost - c) / predicted));
             (p, cost) = (q, c);

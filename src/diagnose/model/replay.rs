@@ -21,7 +21,7 @@ use crate::diagnose::model::{Augmented, Drive, FixedStep, Observed};
 use crate::measured::MeasuredRun;
 use crate::sim::TimeHistory;
 use std::borrow::Cow;
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 /// `h·ρ` up to which a replay runs by RK4, with `ρ` the model's fastest
 /// rate ([`VehicleModel::fastest_rate`]): inside RK4's stability region
@@ -217,40 +217,37 @@ impl Prepared {
             .collect()
     }
 
-    /// [`Prepared::observe`] through `slot`, the run's last replay: a model
-    /// that differs from the last one only in its sensors (a sensor delay,
-    /// gain or accelerometer position, whose start state is the same)
-    /// integrates the same history, so only the sensors are applied again.
-    pub(crate) fn observe_reusing(
-        &self,
-        model: &Augmented,
-        slot: &Mutex<Option<LastReplay>>,
-    ) -> Observed {
+    /// [`Prepared::observe`] through `cache`, the run's last replay and
+    /// one kept ([`ReplayCache`]): a model that differs from one of theirs
+    /// only in its sensors (a sensor delay, gain or accelerometer position,
+    /// whose start state is the same) integrates the same history, so only
+    /// the sensors are applied again.
+    pub(crate) fn observe_reusing(&self, model: &Augmented, cache: &ReplayCache) -> Observed {
         let start = self.start_of(model);
-        {
-            let last = slot.lock().unwrap_or_else(|e| e.into_inner());
-            if let Some(l) = last.as_ref() {
-                if l.start == start && l.model.same_dynamics(model) {
-                    return model.observe(&l.history, &self.times);
-                }
-            }
+        let found = [&cache.last, &cache.kept].into_iter().find_map(|slot| {
+            let entry = slot.lock().unwrap_or_else(|e| e.into_inner());
+            entry
+                .as_ref()
+                .filter(|l| l.start == start && l.model.same_dynamics(model))
+                .cloned()
+        });
+        if let Some(l) = found {
+            let observed = model.observe(&l.history, &self.times);
+            // The last slot holds the latest evaluation's replay, reused or
+            // not: that is what [`ReplayCache::keep_last`] keeps.
+            *cache.last.lock().unwrap_or_else(|e| e.into_inner()) = Some(l);
+            return observed;
         }
         // Integrated without the lock: evaluations in parallel (a parallel
         // swarm) do not wait for each other, the last one stored wins.
         let history = self.replay(model);
         let observed = model.observe(&history, &self.times);
-        *slot.lock().unwrap_or_else(|e| e.into_inner()) = Some(LastReplay {
+        *cache.last.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::new(LastReplay {
             model: model.clone(),
             start,
             history,
-        });
+        }));
         observed
-    }
-
-    /// Replays the run with `model` and writes the scaled residuals into
-    /// `out` (length [`Prepared::count`]).
-    pub(crate) fn residuals(&self, model: &Augmented, scales: &[f64; 3], out: &mut [f64]) {
-        self.write_residuals(&self.observe(model), scales, out);
     }
 
     /// The scaled residuals of observed outputs `obs` into `out`.
@@ -273,8 +270,14 @@ impl Prepared {
 
     /// Sum of squared unscaled residuals and sample count per channel.
     pub fn errors(&self, model: &Augmented) -> ChannelErrors {
+        self.errors_of(&self.observe(model))
+    }
+
+    /// [`Prepared::errors`] of observed outputs `obs` (a replay already
+    /// made).
+    pub(crate) fn errors_of(&self, obs: &Observed) -> ChannelErrors {
         let mut r = vec![0.0; self.count()];
-        self.residuals(model, &[1.0; 3], &mut r);
+        self.write_residuals(obs, &[1.0; 3], &mut r);
         let mut e = ChannelErrors::default();
         let mut k = 0;
         for (c, v) in &self.measured {
@@ -299,12 +302,31 @@ impl ReplayInputs {
     }
 }
 
-/// A run's last replay: the model (its sensors aside, the key), the start
+/// A run's replay: the model (its sensors aside, the key), the start
 /// state and the integrated history.
 pub(crate) struct LastReplay {
     model: Augmented,
     start: (f64, f64),
     history: TimeHistory,
+}
+
+/// A run's replays a problem may reuse: the last one made (or reused) and
+/// one kept on request ([`ReplayCache::keep_last`]), so that a point a fit
+/// comes back to (a search's best, where the polish starts; the polish's
+/// optimum, where it is linearised) is not integrated again after other
+/// points have been tried. Memory: two histories per run.
+#[derive(Default)]
+pub(crate) struct ReplayCache {
+    last: Mutex<Option<Arc<LastReplay>>>,
+    kept: Mutex<Option<Arc<LastReplay>>>,
+}
+
+impl ReplayCache {
+    /// Keeps the last replay.
+    pub(crate) fn keep_last(&self) {
+        let last = self.last.lock().unwrap_or_else(|e| e.into_inner()).clone();
+        *self.kept.lock().unwrap_or_else(|e| e.into_inner()) = last;
+    }
 }
 
 #[cfg(test)]

@@ -12,15 +12,16 @@ use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::fit::global::global_search;
+use crate::diagnose::fit::global::global_best;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
-use crate::diagnose::fit::{fit, FitOutcome, GlobalSearch, Polish};
+use crate::diagnose::fit::{complete_curvature, fit_first_order, FitOutcome, GlobalSearch};
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Augmented;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::CalibrationSource;
-use crate::diagnose::timing::{record_polish, Phase, Recorder, Stamps};
+use crate::diagnose::timing::{record_split, Phase, Recorder, Stamps};
 use crate::diagnose::verdict::candidate::Setting;
 use crate::optim::local::{Derivatives, Residuals};
 use crate::optim::pso::{Inertia, Pso, Stall};
@@ -76,6 +77,10 @@ pub(crate) struct Fitted<'a> {
     /// The prior's rows as this candidate's fit weighed them (its folds
     /// weigh them alike).
     prior: Option<PriorRows>,
+    /// Where `full` was linearised, its second derivatives not yet taken
+    /// (only a cross-validation reads them: [`Context::cross_validate`]
+    /// takes them there, as the fit would have).
+    linearised_at: Option<Vec<f64>>,
 }
 
 impl Fitted<'_> {
@@ -137,19 +142,7 @@ impl<'a> Context<'a> {
     ) -> Fitted<'a> {
         let s = Setting::new(self.bases, kinds);
         let stamps = self.timing.map(|_| Stamps::default());
-        let problem = Problem::new(
-            |p: &[f64]| {
-                if let Some(st) = &stamps {
-                    st.tick();
-                }
-                s.layout.model(&self.bases.all, p)
-            },
-            self.runs.iter().collect(),
-            self.scales,
-            s.bounds(),
-        )
-        .with_layout(s.layout.clone(), &self.bases.all, self.derivatives)
-        .with_prior(self.bases.prior);
+        let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior);
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -167,10 +160,8 @@ impl<'a> Context<'a> {
             .map(|rows| rows.tempered(problem.tempering(&start).prior_weight));
         let problem = problem.with_prior(prior);
         let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
-        let full = FitOutcome {
-            global,
-            ..fit(&problem, &start, Some(&s.off()), Polish::LevenbergMarquardt)
-        };
+        let (full, linearised_at) = fit_first_order(&problem, &start, Some(&s.off()));
+        let full = FitOutcome { global, ..full };
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
             rec.add(Phase::CandidateSearch, mark.0 - t0, mark.1);
             let phases = [
@@ -179,21 +170,69 @@ impl<'a> Context<'a> {
                 Phase::CandidateCurvature,
             ];
             let n = full.params.len();
-            let jacobian = problem.jacobian_evaluations(n);
-            record_polish(rec, st, mark, (n, jacobian), full.linear.is_some(), phases);
+            let jacobian = 1 + problem.jacobian_evaluations(n);
+            let linear = if full.linear.is_some() { jacobian } else { 0 };
+            record_split(rec, st, mark, (linear, 0), phases);
         }
+        // The optimum was just replayed (its linearisation's residuals):
+        // its errors come from the problem's kept replays.
+        let insample = problem.errors(&full.params);
         drop(problem);
-        let all_model = s.layout.model(&self.bases.all, &full.params);
-        let mut insample = ChannelErrors::default();
-        for r in &self.runs {
-            insample.add(&r.errors(&all_model));
-        }
         self.tick();
         Fitted {
             setting: s,
             full,
             insample,
             prior,
+            linearised_at,
+        }
+    }
+
+    /// The problem of fitting setting `s` on all runs with the prior's rows
+    /// `prior`, its evaluations stamped on `stamps`: the same for a fit and
+    /// for the second derivatives its cross-validation takes later.
+    fn all_runs<'s>(
+        &'s self,
+        s: &'s Setting,
+        stamps: Option<&'s Stamps>,
+        prior: Option<PriorRows>,
+    ) -> Problem<'s, impl Fn(&[f64]) -> Augmented + Sync + 's> {
+        Problem::new(
+            move |p: &[f64]| {
+                if let Some(st) = stamps {
+                    st.tick();
+                }
+                s.layout.model(&self.bases.all, p)
+            },
+            self.runs.iter().collect(),
+            self.scales,
+            s.bounds(),
+        )
+        .with_layout(s.layout.clone(), &self.bases.all, self.derivatives)
+        .with_prior(prior)
+    }
+
+    /// `fitted`'s all-run fit with the second derivatives of its
+    /// linearisation, taken now if the fit left them out.
+    fn with_curvature(&self, fitted: &Fitted) -> FitOutcome {
+        let full = &fitted.full;
+        let (Some(at), Some(linear)) = (&fitted.linearised_at, &full.linear) else {
+            return full.clone();
+        };
+        if linear.curvature.ncols() > 0 {
+            return full.clone();
+        }
+        let t0 = Instant::now();
+        let stamps = self.timing.map(|_| Stamps::default());
+        let problem = self.all_runs(&fitted.setting, stamps.as_ref(), fitted.prior);
+        let mut linear = linear.clone();
+        complete_curvature(&problem, at, &mut linear);
+        if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+            rec.add(Phase::CandidateCurvature, t0.elapsed(), st.count());
+        }
+        FitOutcome {
+            linear: Some(linear),
+            ..full.clone()
         }
     }
 
@@ -202,7 +241,8 @@ impl<'a> Context<'a> {
     /// Levenberg–Marquardt within a budget when that does not converge;
     /// non-converged folds are counted and warned about).
     pub(crate) fn cross_validate(&self, fitted: &Fitted) -> Scored {
-        let (s, full) = (&fitted.setting, &fitted.full);
+        let full = &self.with_curvature(fitted);
+        let s = &fitted.setting;
         if let (Some(rec), false) = (self.timing, s.kinds().is_empty()) {
             rec.candidate(true);
         }
@@ -259,7 +299,7 @@ impl<'a> Context<'a> {
     /// The start of a candidate's polish and how its global stage searched:
     /// the lowest cost of `starts` and of the global stage over the effect
     /// parameters from the best of them (from the effect off without them;
-    /// the axle characteristics held; [`global_search`]: a grid along one or
+    /// the axle characteristics held; [`global_best`]: a grid along one or
     /// two parameters, a swarm with one particle at that point along more).
     /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
@@ -285,8 +325,13 @@ impl<'a> Context<'a> {
             .iter()
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .map_or_else(|| s.off(), |(_, p)| p.clone());
-        let (p, global) = global_search(problem, &from, pso, held);
-        tried.push((problem.cost(&p), p));
+        // The global stage's best was replayed and kept: its cost as found
+        // (the same number a replay would give) where it was evaluated.
+        let (p, cost, global) = global_best(problem, &from, pso, held);
+        let cost = cost
+            .filter(|c| c.is_finite())
+            .unwrap_or_else(|| problem.cost(&p));
+        tried.push((cost, p));
         // The sensor offsets as the standstills and straights measured
         // them: a start in the basin a real log's offsets are in.
         if let Some(i) = s.kinds().iter().position(|k| *k == EffectKind::SensorBias) {

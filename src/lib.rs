@@ -35,6 +35,7 @@
 //! | cornering stiffness ↔ handling maps, the RBF network and the inverse | [`study`] |
 //! | the sim-to-real gap of measured runs and its diagnosis | [`diagnose`] |
 //! | the virtual proving ground: campaigns with known, withheld effects | [`proving_ground`] |
+//! | the next test to drive: manoeuvres that separate confounded candidates, with their predicted separation | [`design`] |
 //! | reading and validating files (scenarios, tyre and `.tir` files, rig data, runs, campaigns) | [`io`] |
 //! | the commands of the binary, each one function with a typed report | [`jobs`] |
 //!
@@ -63,6 +64,7 @@
 #![warn(missing_docs)]
 
 pub mod constants;
+pub mod design;
 pub mod diagnose;
 pub mod equilibria;
 pub mod error;

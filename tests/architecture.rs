@@ -580,7 +580,7 @@ const LAYERS: &[&[&str]] = &[
     &["sim"],
     &["metrics", "equilibria", "identify"],
     &["study", "diagnose"],
-    &["proving_ground"],
+    &["proving_ground", "design"],
     &["io"],
     &["jobs"],
     &["cli"],

@@ -53,6 +53,11 @@ const FIGURES: &[(&str, &str, &str)] = &[
         "out/speed_lt/branches_speed.png",
     ),
     ("identify_mf61_fit.png", "book-magic-formula", "out/fit.png"),
+    (
+        "design_separation.png",
+        "book-design",
+        "out/delays/design/separation.png",
+    ),
     ("study_maps.png", "book-study", "out/study/maps.png"),
 ];
 

@@ -774,7 +774,7 @@ fn verdict_kinds() -> Vec<&'static str> {
 /// a truth model with the named effects on, driving `programme`
 /// (`handling`, `oval` or `road-course`); report JSON.
 #[pyfunction]
-#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented", programme="handling"))]
+#[pyo3(signature = (out, effects=Vec::new(), seed=1, truth="augmented", programme="handling", drive=Vec::new()))]
 fn synth(
     py: Python<'_>,
     out: PathBuf,
@@ -782,6 +782,7 @@ fn synth(
     seed: u64,
     truth: &str,
     programme: &str,
+    drive: Vec<PathBuf>,
 ) -> PyResult<String> {
     let programme = programme.parse().map_err(py_err)?;
     let effects = effects
@@ -791,7 +792,70 @@ fn synth(
         .map_err(py_err)?;
     let truth = truth_named(truth).map_err(py_err)?;
     let r = detached(py, || {
-        let r = jobs::synth::run(&effects, seed, truth, programme, &out)?;
+        let mut r = jobs::synth::run(&effects, seed, truth, programme, &out)?;
+        r.drive(&drive)?;
+        r.write()?;
+        Ok(r)
+    })?;
+    json(&r)
+}
+
+/// The next test to drive for the diagnosis in folder `diagnosis`
+/// (`handling design`): `effects` names the candidates to separate (the
+/// reference first, `a+b` a combination; default the confounded sets);
+/// runs `measured` driven afterwards are measured against the first set.
+/// Writes the outputs to `out` (default `<diagnosis>/design`); report JSON.
+#[pyfunction]
+#[pyo3(signature = (diagnosis, campaign=None, effects=Vec::new(), ay_share=0.8, max_ax=3.0, top=3, measured=Vec::new(), out=None))]
+#[allow(clippy::too_many_arguments)]
+fn design(
+    py: Python<'_>,
+    diagnosis: PathBuf,
+    campaign: Option<PathBuf>,
+    effects: Vec<String>,
+    ay_share: f64,
+    max_ax: f64,
+    top: usize,
+    measured: Vec<PathBuf>,
+    out: Option<PathBuf>,
+) -> PyResult<String> {
+    let set = effects
+        .iter()
+        .map(|c| {
+            c.split('+')
+                .map(|n| {
+                    n.trim().parse::<EffectName>().and_then(|e| {
+                        e.0.ok_or_else(|| {
+                            handling::error::OptionsError::UnknownName {
+                                what: handling::error::NameKind::Effect,
+                                given: n.trim().to_string(),
+                                known: handling::diagnose::effects::EffectKind::ALL
+                                    .iter()
+                                    .map(|k| k.name())
+                                    .collect(),
+                            }
+                            .into()
+                        })
+                    })
+                })
+                .collect::<Result<Vec<_>, Error>>()
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(py_err)?;
+    let request = handling::design::DesignRequest {
+        sets: (!set.is_empty()).then(|| vec![set]),
+        ay_share,
+        ax: max_ax,
+        top,
+    };
+    let r = detached(py, || {
+        let r = jobs::design::run(
+            &diagnosis,
+            campaign.as_deref(),
+            &request,
+            &measured,
+            out.as_deref(),
+        )?;
         r.write()?;
         Ok(r)
     })?;
@@ -849,6 +913,7 @@ fn _handling(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(diagnose, m)?)?;
     m.add_function(wrap_pyfunction!(verdict_kinds, m)?)?;
     m.add_function(wrap_pyfunction!(synth, m)?)?;
+    m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(check_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(toml_file_json, m)?)?;
     m.add_function(wrap_pyfunction!(vehicle_from_toml, m)?)?;

@@ -168,3 +168,24 @@ def test_synth_drives_the_oval_with_ax_and_bank_channels(tmp_path):
     with pytest.raises(handling.OutputError) as e:
         handling.synth(tmp_path / "o", [], seed=2, programme="oval")
     assert e.value.kind == "output" and e.value.path == str(tmp_path / "o")
+
+
+def test_design_separates_the_delays_a_diagnosis_confounds_and_drives_its_best(tmp_path):
+    handling.synth(tmp_path / "c", ["sensor_delay"], seed=1)
+    v = tmp_path / "c" / "vehicle.toml"
+    v.write_text(v.read_text() + 'effects = ["sensor_delay", "steer_path"]\n')
+    d = handling.diagnose(tmp_path / "c", out=tmp_path / "d")
+    assert d.to_dict()["confounded"][0]["effects"] == ["sensor_delay", "steer_path"]
+    r = handling.design(tmp_path / "d")
+    best = r["sets"][0]["ranked"][0]
+    assert best["kind"] in ("brake_in_turn", "accelerate_in_turn", "constant_radius")
+    assert best["separation"] > 1.5 * r["sets"][0]["campaign_separation"]
+    scenario = tmp_path / "d" / "design" / "scenarios" / (best["name"] + ".toml")
+    s = handling.synth(tmp_path / "c2", ["sensor_delay"], seed=1, drive=[scenario])
+    assert s["runs"] == 9 and s["driven"] == 1
+    m = handling.design(
+        tmp_path / "d", measured=[tmp_path / "c2" / "runs" / (best["name"] + ".csv")], out=tmp_path / "m"
+    )
+    assert m["measured"][0]["favours"] in ("sensor_delay", "steer_path")
+    with pytest.raises(handling.DiagnosisError, match="did not fit `yaw_inertia`"):
+        handling.design(tmp_path / "d", effects=["sensor_delay", "yaw_inertia"], out=tmp_path / "x")

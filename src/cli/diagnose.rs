@@ -98,11 +98,16 @@ pub struct SynthArgs {
     /// Campaign folder to create.
     #[arg(long)]
     out: PathBuf,
+    /// Scenario files (`handling design` writes them) whose manoeuvres the
+    /// truth drives as further runs, named after the files.
+    #[arg(long)]
+    drive: Vec<PathBuf>,
 }
 
 /// `handling synth`: writes a campaign folder generated with the effects.
 pub fn synth(a: SynthArgs) -> Result<()> {
-    let r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
+    let mut r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
+    r.drive(&a.drive)?;
     r.write()?;
     println!("{}", r.wrote());
     Ok(())

@@ -2,6 +2,7 @@
 //! ([`handling::jobs`], [`handling::jobs::identify::run`], [`handling::jobs::study::run`])
 //! whose report the command writes and prints.
 
+mod design;
 mod diagnose;
 mod equilibria;
 mod identify;
@@ -51,6 +52,11 @@ enum Command {
     /// fits PAC89 to its rig data, or on the slow oval, which has none,
     /// identifies the axles from the runs).
     Synth(diagnose::SynthArgs),
+    /// The next test to drive: for the candidates a diagnosis confounds
+    /// (or those named), the manoeuvres within the runs' limits that tell
+    /// them apart best, with their predicted separation in noise floors;
+    /// writes design.json, scenarios/*.toml and separation.png.
+    Design(design::DesignArgs),
     /// Forces and moments of a tyre file (.tir or .toml) at the points of a
     /// CSV with columns fz, kappa, alpha, camber, speed and optionally
     /// pressure (SI, rad, Pa); writes them with fx, fy, mz (and mx, my for
@@ -72,6 +78,7 @@ pub fn run() -> ExitCode {
         Command::Identify(a) => identify::identify(a),
         Command::Diagnose(a) => diagnose::diagnose(a),
         Command::Synth(a) => diagnose::synth(a),
+        Command::Design(a) => design::design(a),
         Command::TyreEval(a) => tyre_eval::tyre_eval(a),
         Command::Metrics(a) => simulate::metrics(a),
         Command::Merge(a) => equilibria::merge(a),

@@ -29,12 +29,13 @@
 mod base;
 pub mod campaign;
 pub mod effects;
-mod fit;
+pub(crate) mod fit;
 pub(crate) mod model;
 pub mod pipeline;
 pub mod report;
 pub mod timing;
 mod verdict;
+pub(crate) use verdict::rules;
 
 pub use base::identify::{AxleIdentification, AxleLimit, AxleValue};
 pub use campaign::{BaseTyres, Campaign, DiagnoseSettings};

@@ -455,6 +455,7 @@ fn run(
     findings.extend(dominant(&base.heldout, &scales));
     Ok(Diagnosis {
         campaign: c.name.clone(),
+        source: c.source.clone(),
         seed: set.seed,
         derivatives: set.derivatives,
         runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),

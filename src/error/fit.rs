@@ -110,6 +110,9 @@ pub enum FitError {
     },
 }
 
+/// The errors of a design are the diagnosis's.
+pub type DesignError = DiagnosisError;
+
 impl FitError {
     /// A failure of a fit to `data`, of `channel` where named.
     pub(crate) fn in_data(data: &std::path::Path, channel: Option<&'static str>, e: Error) -> Self {
@@ -138,6 +141,26 @@ pub enum DiagnosisError {
         rig: PathBuf,
         /// Why the fit failed.
         source: Box<Error>,
+    },
+    /// A design asked of a diagnosis that names no confounded set.
+    #[error("the diagnosis names no confounded effects: ask for the candidates to separate (`--effects a,b`)")]
+    NothingConfounded,
+    /// A design asked for a candidate the diagnosis did not fit.
+    #[error("the diagnosis did not fit `{candidate}`; it fitted: {}", fitted.join(", "))]
+    NotFitted {
+        /// The candidate asked for.
+        candidate: String,
+        /// The candidates it fitted.
+        fitted: Vec<String>,
+    },
+    /// A design set with fewer than two members.
+    #[error("a design separates at least two candidates")]
+    OneMember,
+    /// A candidate whose values do not match this release's layout.
+    #[error("`{candidate}`: its values in the diagnosis do not match this release's parameters (diagnose again with this release)")]
+    Layout {
+        /// The candidate.
+        candidate: String,
     },
 }
 

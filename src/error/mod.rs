@@ -22,7 +22,9 @@ mod rig;
 mod tests;
 
 pub use duplicate::DuplicateAt;
-pub use fit::{DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip};
+pub use fit::{
+    DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip,
+};
 pub use input::{CellProblem, InputError, Location};
 pub use metrics::MetricsError;
 pub use number::{number, range, Num};

@@ -138,6 +138,13 @@ pub enum InputProblem {
         /// The byte.
         byte: u8,
     },
+    /// The JSON reader's own description of a syntax or structure error
+    /// (a `diagnosis.json` read back).
+    #[error("{detail}")]
+    Json {
+        /// The JSON reader's description.
+        detail: String,
+    },
     /// The TOML reader's own description of a syntax or structure error.
     #[error("{detail}")]
     Toml {
@@ -469,6 +476,7 @@ impl InputProblem {
             InputProblem::Csv { .. } => "Csv",
             InputProblem::Header { .. } => "Header",
             InputProblem::Toml { .. } => "Toml",
+            InputProblem::Json { .. } => "Json",
             InputProblem::NotUtf8 { .. } => "NotUtf8",
             InputProblem::MissingFile { .. } => "MissingFile",
             InputProblem::TirSectionUnclosed { .. } => "TirSectionUnclosed",

@@ -160,6 +160,28 @@ pub enum ParamReason {
         /// The programme asked.
         programme: String,
     },
+    /// A programme whose driver cannot drive a designed manoeuvre.
+    #[error("`{programme}` is driven by a closed-loop driver on its own track: it drives no designed manoeuvre (the handling programme, the ovals and the road course do)")]
+    DriveProgramme {
+        /// The programme asked.
+        programme: String,
+    },
+    /// A schedule's columns of unequal length.
+    #[error("`t`, `steer` and `speed` must have one value per breakpoint: {t}, {steer} and {speed} given (at least 2 each)")]
+    ScheduleLengths {
+        /// Times given.
+        t: usize,
+        /// Steers given.
+        steer: usize,
+        /// Speeds given.
+        speed: usize,
+    },
+    /// A schedule's time that does not follow the one before.
+    #[error("not after the time before it, {before} s: a schedule's times increase strictly")]
+    ScheduleTime {
+        /// The time before it, s.
+        before: f64,
+    },
     /// An effect the four-wheel truth does not have.
     #[error("not an effect of the four-wheel truth")]
     NotATruthEffect,

@@ -162,6 +162,24 @@ pub enum ManoeuvreSpec {
     Sweep(SweepSteer),
     /// Replay of a measured run.
     Replay(ReplaySpec),
+    /// Steer and speed at breakpoints, linear between them (a manoeuvre
+    /// `handling design` writes: a turn with a speed change, a lane
+    /// change, a constant radius at rising speed).
+    Schedule(ScheduleSpec),
+}
+
+/// Steer and speed given at breakpoints and linear between them, held
+/// after the last: the run starts from straight running at its first
+/// speed, so its first steer is normally 0.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScheduleSpec {
+    /// Breakpoint times, s, strictly increasing; the run ends at the last.
+    pub t: Vec<f64>,
+    /// Front road-wheel steer at each, rad.
+    pub steer: Vec<f64>,
+    /// Forward speed at each, m/s.
+    pub speed: Vec<f64>,
 }
 
 /// A scenario file.
@@ -519,6 +537,38 @@ fn ramp_reach(r: &RampSteer) -> Result<(), ParamError> {
     ))
 }
 
+/// A schedule's columns: equal lengths, times finite and increasing, each
+/// speed and steer within the manoeuvres' limits, refused at the element.
+fn schedule(s: &ScheduleSpec) -> Result<(), ParamError> {
+    let (n, m, k) = (s.t.len(), s.steer.len(), s.speed.len());
+    if n != m || n != k || n < 2 {
+        return Err(ParamError::without_value(
+            "t",
+            ParamReason::ScheduleLengths {
+                t: n,
+                steer: m,
+                speed: k,
+            },
+        ));
+    }
+    for (i, w) in s.t.iter().enumerate() {
+        let at = |key: &str| format!("{key}[{i}]");
+        ParamError::finite(&at("t"), *w)?;
+        if i > 0 && *w <= s.t[i - 1] {
+            let before = s.t[i - 1];
+            return Err(ParamError::new(
+                &at("t"),
+                *w,
+                ParamReason::ScheduleTime { before },
+            ));
+        }
+        ParamError::finite(&at("steer"), s.steer[i])?;
+        road_wheel_steer(&at("steer"), s.steer[i])?;
+        speed(s.speed[i]).map_err(|e| ParamError::new(&at("speed"), s.speed[i], e.reason))?;
+    }
+    Ok(())
+}
+
 /// Ramp, sine and sweep steers: their timing and rates checked.
 fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
     Ok(match spec {
@@ -545,6 +595,14 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, ParamError::positive("f_end", s.f_end))?;
             check(src, frequency("f_end", s.f_end, 0.0))?;
             Manoeuvre::Sweep(*s)
+        }
+        ManoeuvreSpec::Schedule(s) => {
+            check(src, schedule(s))?;
+            Manoeuvre::Replay(Replay {
+                t: s.t.clone(),
+                steer: s.steer.clone(),
+                speed: s.speed.clone(),
+            })
         }
         ManoeuvreSpec::StepSteer(_) | ManoeuvreSpec::Replay(_) => {
             unreachable!("resolved by their own functions")

@@ -12,6 +12,7 @@
 //! | `study` | [`study::run`] | [`study::StudyReport`] |
 //! | `diagnose` | [`diagnose::run`] | [`diagnose::DiagnoseReport`] |
 //! | `synth` | [`synth::run`] | [`synth::SynthReport`] |
+//! | `design` | [`design::run`] | [`design::DesignReport`] |
 //! | `tyre-eval` | [`tyre_eval::run`] | [`tyre_eval::TyreEvalReport`] |
 //! | `diagnose --batch DIR [--shard K/N]` | [`fleet::run_batch`], [`fleet::merge`] | [`fleet::FleetReport`] |
 //! | `equilibria --shard K/N`, `merge` | [`equilibria::run_shard`], [`equilibria::merge`] | [`shard::ShardReport`], [`equilibria::EquilibriaReport`] |
@@ -20,6 +21,7 @@
 //! modules (a scenario, the integrator and the metrics; the diagnosis and
 //! its figures) and hold their figures beside them.
 
+pub mod design;
 pub mod diagnose;
 pub mod diagnose_page;
 pub mod equilibria;

@@ -6,7 +6,9 @@
 
 use crate::diagnose::effects::EffectKind;
 use crate::error::{Error, NameKind, OptionsError, OutputError, WriteStep};
-use crate::proving_ground::{generate_with, Noise, Programme, SynthSpec, Synthetic, Truth};
+use crate::proving_ground::{
+    drive, generate_with, DrivenRun, Noise, Programme, SynthSpec, Synthetic, Truth,
+};
 use crate::report::{create_dir, write_bytes, write_columns};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -61,6 +63,8 @@ pub struct SynthReport {
     pub name: String,
     /// Noise seed.
     pub seed: u64,
+    /// Of the runs, those driven from scenario files (`--drive`).
+    pub driven: usize,
     /// The campaign.
     #[serde(skip)]
     pub campaign: Synthetic,
@@ -103,6 +107,7 @@ pub fn run(
     }
     let s = generate_with(&spec, truth)?;
     Ok(SynthReport {
+        driven: 0,
         out: out.to_path_buf(),
         runs: s.runs.len(),
         truth,
@@ -114,6 +119,40 @@ pub fn run(
 }
 
 impl SynthReport {
+    /// Adds the runs the truth logs driving the manoeuvres of the scenario
+    /// files `drives` (their vehicle, tyres and road are the scenario's
+    /// own and not used: the truth plays the car): each run is named after
+    /// its file and logged as the programme logs, with its own noise.
+    pub fn drive(&mut self, drives: &[PathBuf]) -> Result<(), Error> {
+        let mut runs = Vec::new();
+        for p in drives {
+            let sc = crate::io::load_scenario(p)?;
+            let name = p
+                .file_stem()
+                .map_or("driven".into(), |s| s.to_string_lossy().into_owned());
+            if self
+                .campaign
+                .runs
+                .iter()
+                .any(|r| r.path == Path::new(&format!("{name}.csv")))
+            {
+                return Err(OutputError::Overwrite {
+                    path: PathBuf::from("runs").join(format!("{name}.csv")),
+                }
+                .into());
+            }
+            runs.push(DrivenRun {
+                name,
+                manoeuvre: sc.manoeuvre,
+            });
+        }
+        let driven = drive(self.campaign.spec(), self.truth, &runs)?;
+        self.driven += driven.len();
+        self.runs += driven.len();
+        self.campaign.runs.extend(driven);
+        Ok(())
+    }
+
     /// Writes the campaign folder: into a sibling temporary folder, renamed
     /// when complete.
     pub fn write(&self) -> Result<(), Error> {
@@ -137,10 +176,11 @@ impl SynthReport {
     /// The closing line.
     pub fn wrote(&self) -> String {
         format!(
-            "wrote {} ({} {} runs, {}, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
+            "wrote {} ({} {} runs{}, {}, {} truth with {}, noise seed {}); diagnose it with `handling diagnose {}`",
             self.out.display(),
             self.runs,
             self.programme.name(),
+            if self.driven > 0 { format!(", {} of them driven from scenario files", self.driven) } else { String::new() },
             if self.campaign.rig.is_empty() { "no rig data" } else { "rig data" },
             self.truth.name(),
             self.name,

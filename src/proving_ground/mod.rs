@@ -60,6 +60,7 @@ use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::{Augmented, Drive};
 use crate::error::ParamError;
 use crate::identify::data::gauss;
+use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
 use crate::proving_ground::four_wheel::{FourWheel, FourWheelEffects, FourWheelVehicle};
 use crate::tyre::{SlipState, Tyre, TyreModel};
@@ -71,6 +72,7 @@ use std::path::PathBuf;
 mod analogues;
 mod campaign;
 mod closed_loop;
+mod drive;
 mod driver;
 mod estimator;
 mod laps;
@@ -78,6 +80,7 @@ mod programme;
 mod truth;
 mod winding;
 
+pub use drive::{drive, DrivenRun};
 use driver::LoggedInputs;
 pub use programme::Programme;
 use programme::{handling_programme, logged_runs, truth_downforce, truth_vehicle};
@@ -136,67 +139,113 @@ pub struct Synthetic {
     roll: RollModel,
 }
 
+impl Synthetic {
+    /// What it was generated from.
+    pub fn spec(&self) -> &SynthSpec {
+        &self.spec
+    }
+}
+
 /// Generates a campaign with the augmented truth.
 pub fn generate(spec: &SynthSpec) -> Synthetic {
     generate_with(spec, Truth::Augmented).expect("every effect is one of the augmented truth")
 }
 
+/// The models that play the car for `spec` on `truth`: the augmented
+/// truth (the diagnosis's model with the effects set), the four-wheel
+/// truth, and the base vehicle model the programmes' drivers steer for.
+pub(crate) struct TruthModels {
+    pub(crate) augmented: Augmented,
+    pub(crate) four_wheel: FourWheel,
+    pub(crate) base: VehicleModel,
+    pub(crate) vehicle: Vehicle,
+    pub(crate) tyre: Tyre,
+}
+
+impl TruthModels {
+    /// The truth of `spec` on `truth`; an error when `truth` lacks one of
+    /// the effects asked for or cannot drive the programme.
+    pub(crate) fn new(spec: &SynthSpec, truth: Truth) -> Result<Self, ParamError> {
+        truth.drives(spec.programme)?;
+        let vehicle = truth_vehicle(spec.programme);
+        let tyre = truth_tyre();
+        let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
+        base.options.effects.aero_load = truth_downforce(spec.programme);
+        let mut augmented = Augmented::new(base.clone(), 1.0);
+        for (k, p) in &spec.effects {
+            k.apply(p, augmented.effects_mut());
+        }
+        let asked: Vec<EffectKind> = spec.effects.iter().map(|(k, _)| *k).collect();
+        analogues::build_in(spec.programme, &mut augmented, &asked);
+        let four_wheel = FourWheel {
+            vehicle: FourWheelVehicle::sedan(),
+            effects: match truth {
+                Truth::FourWheel => four_wheel_effects(&spec.effects)?,
+                Truth::Augmented => FourWheelEffects::default(),
+            },
+        };
+        Ok(Self {
+            augmented,
+            four_wheel,
+            base,
+            vehicle,
+            tyre,
+        })
+    }
+
+    /// The noise-free yaw rate, ay and sideslip `truth` measures at `times`
+    /// driving the open-loop manoeuvre `m` from straight running.
+    pub(crate) fn measure(
+        &self,
+        truth: Truth,
+        m: &Manoeuvre,
+        times: &[f64],
+    ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        match truth {
+            Truth::Augmented => {
+                // The steer path (if on) filters the manoeuvre's steer as
+                // sampled on the 1 ms grid.
+                let drive = Drive::new(m, 1e-3);
+                let drive = self
+                    .augmented
+                    .steered(&drive, &drive.stage_times(), drive.steer_samples())
+                    .into_owned();
+                let response = self.augmented.simulate(&drive, [0.0; 6]);
+                let o = self.augmented.observe(&response, times);
+                (o.yaw_rate, o.ay, o.beta)
+            }
+            Truth::FourWheel => {
+                let response = self.four_wheel.simulate(m, 1e-3);
+                let o = self.four_wheel.observe(&response, times);
+                (o.yaw_rate, o.ay, o.beta)
+            }
+        }
+    }
+}
+
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
 /// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
-    truth.drives(spec.programme)?;
-    let vehicle = truth_vehicle(spec.programme);
-    let tyre = truth_tyre();
-    let mut base = VehicleModel::new(vehicle.clone(), tyre.clone(), tyre.clone());
-    base.options.effects.aero_load = truth_downforce(spec.programme);
-    let mut augmented = Augmented::new(base.clone(), 1.0);
-    for (k, p) in &spec.effects {
-        k.apply(p, augmented.effects_mut());
-    }
-    let asked: Vec<EffectKind> = spec.effects.iter().map(|(k, _)| *k).collect();
-    analogues::build_in(spec.programme, &mut augmented, &asked);
-    let four_wheel = FourWheel {
-        vehicle: FourWheelVehicle::sedan(),
-        effects: match truth {
-            Truth::FourWheel => four_wheel_effects(&spec.effects)?,
-            Truth::Augmented => FourWheelEffects::default(),
-        },
-    };
+    let models = TruthModels::new(spec, truth)?;
+    let (augmented, base) = (&models.augmented, &models.base);
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
-    let runs = if let Some(runs) = analogues::analogue_runs(spec.programme, &augmented, &mut rng) {
+    let runs = if let Some(runs) = analogues::analogue_runs(spec.programme, augmented, &mut rng) {
         runs
-    } else if let Some(logged) = logged_runs(spec.programme, &base) {
+    } else if let Some(logged) = logged_runs(spec.programme, base) {
         logged
             .iter()
-            .map(|p| logged_run(&augmented, spec.programme, p, &mut rng, n))
+            .map(|p| logged_run(augmented, spec.programme, p, &mut rng, n))
             .collect()
     } else {
-        handling_programme(&base)
+        handling_programme(base)
             .into_iter()
             .map(|(name, m)| {
                 let times: Vec<f64> = (0..)
                     .map(|i| 3.0 + 0.01 * i as f64)
                     .take_while(|t| *t <= m.end_time() + 1e-9)
                     .collect();
-                let (yaw_rate, ay, beta) = match truth {
-                    Truth::Augmented => {
-                        // The steer path (if on) filters the manoeuvre's
-                        // steer as sampled on the 1 ms grid.
-                        let drive = Drive::new(&m, 1e-3);
-                        let drive = augmented
-                            .steered(&drive, &drive.stage_times(), drive.steer_samples())
-                            .into_owned();
-                        let response = augmented.simulate(&drive, [0.0; 6]);
-                        let o = augmented.observe(&response, &times);
-                        (o.yaw_rate, o.ay, o.beta)
-                    }
-                    Truth::FourWheel => {
-                        let response = four_wheel.simulate(&m, 1e-3);
-                        let o = four_wheel.observe(&response, &times);
-                        (o.yaw_rate, o.ay, o.beta)
-                    }
-                };
+                let (yaw_rate, ay, beta) = models.measure(truth, &m, &times);
                 let mut noisy = |v: &[f64], s: f64| with_noise(v, s, &mut rng);
                 MeasuredRun {
                     path: PathBuf::from(format!("{name}.csv")),
@@ -217,10 +266,10 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
     Ok(finish(
         spec,
         truth,
-        vehicle,
-        &tyre,
+        models.vehicle,
+        &models.tyre,
         runs,
-        &four_wheel,
+        &models.four_wheel,
         &mut rng,
     ))
 }
@@ -269,8 +318,8 @@ fn finish(
 }
 
 /// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.
-const AX_NOISE: f64 = 0.05;
-const BANK_NOISE: f64 = 0.002;
+pub(crate) const AX_NOISE: f64 = 0.05;
+pub(crate) const BANK_NOISE: f64 = 0.002;
 
 /// `v` plus Gaussian noise of standard deviation `s`, drawn in order.
 fn with_noise(v: &[f64], s: f64, rng: &mut ChaCha8Rng) -> Vec<f64> {

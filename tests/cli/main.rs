@@ -230,6 +230,7 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
 mod analogues;
 mod calibration;
 mod cross_validation;
+mod design;
 mod diagnose;
 mod identify;
 mod magic_formula;

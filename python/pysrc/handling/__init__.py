@@ -946,6 +946,7 @@ def synth(
     seed: int = 1,
     truth: str = "augmented",
     programme: str = "handling",
+    drive: Sequence[PathLike] = (),
 ) -> Dict[str, Any]:
     """The virtual proving ground, as ``handling synth``: writes a campaign
     folder ``out`` measured on a truth model (``augmented`` or
@@ -953,5 +954,42 @@ def synth(
     ``handling`` (steps, a ramp and a sweep at constant speed, 100 Hz),
     ``oval`` (a 20 deg banked oval with braking, throttle and a standstill
     on the banking, 25 Hz, ``ax`` and ``bank`` channels) or ``road-course``
-    (trail braking and cambered corners, 25 Hz)."""
-    return json.loads(_handling.synth(_path(out), list(effects), seed, truth, programme))
+    (trail braking and cambered corners, 25 Hz). ``drive`` names scenario
+    files (``design`` writes them) whose manoeuvres the truth drives as
+    further runs."""
+    return json.loads(
+        _handling.synth(_path(out), list(effects), seed, truth, programme, [_path(d) for d in drive])
+    )
+
+
+def design(
+    diagnosis: PathLike,
+    campaign: Optional[PathLike] = None,
+    effects: Sequence[str] = (),
+    ay_share: float = 0.8,
+    max_ax: float = 3.0,
+    top: int = 3,
+    measured: Sequence[PathLike] = (),
+    out: Optional[PathLike] = None,
+) -> Dict[str, Any]:
+    """The next test to drive, as ``handling design``: for the candidates a
+    diagnosis (folder ``diagnosis``) confounds, or those named in
+    ``effects`` (the reference first), the manoeuvres within the runs'
+    limits that separate them best, with the separation in noise floors a
+    driven run is expected to measure; runs ``measured`` driven afterwards
+    are measured against it. Writes design.json, scenarios/*.toml and
+    separation.png to ``out`` (default ``<diagnosis>/design``); returns
+    design.json's content."""
+    return json.loads(
+        _handling.design(
+            _path(diagnosis),
+            _opt_path(campaign),
+            list(effects),
+            ay_share,
+            max_ax,
+            top,
+            [_path(m) for m in measured],
+            _opt_path(out),
+        )
+    )
+

@@ -253,4 +253,15 @@ def synth(
     seed: int = ...,
     truth: str = ...,
     programme: str = ...,
+    drive: Sequence[PathLike] = ...,
+) -> Dict[str, Any]: ...
+def design(
+    diagnosis: PathLike,
+    campaign: Optional[PathLike] = ...,
+    effects: Sequence[str] = ...,
+    ay_share: float = ...,
+    max_ax: float = ...,
+    top: int = ...,
+    measured: Sequence[PathLike] = ...,
+    out: Optional[PathLike] = ...,
 ) -> Dict[str, Any]: ...

@@ -202,6 +202,9 @@ pub struct BaseReport {
 pub struct Diagnosis {
     /// Campaign name.
     pub campaign: String,
+    /// The campaign's file or folder, as given (`handling design` reads it
+    /// back).
+    pub source: std::path::PathBuf,
     /// Seed of every random search.
     pub seed: u64,
     /// How the fits took their Jacobians (`[diagnose] derivatives`).

@@ -1,0 +1,184 @@
+//! The candidates of a diagnosis as it fitted them ([`Fitted`]): the base
+//! model's tyres, each candidate's effects with their values and standard
+//! errors (and its axle characteristics where the base identified them
+//! from the runs), the channels' noise floors and scales, the verdict and
+//! its confounded sets — what `diagnosis.json` records, read back into the
+//! models the diagnosis replayed ([`FittedCandidate::model`]: the base
+//! model with the candidate's parameter vector set by the diagnosis's own
+//! layout). Units: SI, rad; cornering coefficients in 1/rad.
+
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::fit::layout::Layout;
+use crate::diagnose::model::axles::shares;
+use crate::diagnose::model::Augmented;
+use crate::diagnose::{Diagnosis, Ranked};
+use crate::tyre::Tyre;
+use crate::vehicle::VehicleModel;
+use serde::Serialize;
+
+/// A fitted value and how far it is known.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FittedValue {
+    /// `effect.parameter`, or the axle characteristic's name.
+    pub name: String,
+    /// The value fitted on all runs.
+    pub value: f64,
+    /// Its standard error (NaN where the runs do not pin it).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
+    pub std_error: f64,
+    /// Whether its uncertainty counts: determined by the runs, off every
+    /// bound and held by nothing.
+    pub free: bool,
+}
+
+/// One candidate as the diagnosis fitted it on all runs.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FittedCandidate {
+    /// Its effects.
+    pub effects: Vec<EffectKind>,
+    /// Their parameters in the fit's order (each effect's, then the roll
+    /// dynamics when a roll effect is among them).
+    pub parameters: Vec<FittedValue>,
+    /// Front and rear cornering coefficient and peak friction refitted
+    /// with it (a base identified from the runs).
+    pub axles: Option<Vec<FittedValue>>,
+    /// Its held-out combined error J.
+    pub heldout_error: f64,
+}
+
+impl FittedCandidate {
+    /// Its label, `a+b`.
+    pub fn label(&self) -> String {
+        joined(&self.effects, "+")
+    }
+
+    /// The candidate of a diagnosis's ranking.
+    pub fn of(r: &Ranked) -> Self {
+        let value = |name: &str, v: f64, se: f64, free: bool| FittedValue {
+            name: name.to_string(),
+            value: v,
+            std_error: se,
+            free: free && se.is_finite(),
+        };
+        Self {
+            effects: r.effects.clone(),
+            parameters: r
+                .parameters
+                .iter()
+                .map(|p| value(&p.name, p.value, p.std_error, p.determined && !p.at_bound))
+                .collect(),
+            axles: r.axles.as_ref().map(|a| {
+                a.iter()
+                    .map(|x| value(x.name, x.value, x.std_error, x.limit.is_none() && !x.held))
+                    .collect()
+            }),
+            heldout_error: r.heldout_error_after,
+        }
+    }
+
+    /// The number of values ([`FittedCandidate::values`]).
+    pub fn len(&self) -> usize {
+        self.axles.as_ref().map_or(0, Vec::len) + self.parameters.len()
+    }
+
+    /// Whether it has no values.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Its values, axles first.
+    pub fn values(&self) -> impl Iterator<Item = &FittedValue> {
+        self.axles.iter().flatten().chain(&self.parameters)
+    }
+
+    /// The model it sets on `base` with `values` in the order of
+    /// [`FittedCandidate::values`] (its own, or perturbed), by the
+    /// diagnosis's own layout; None when the counts disagree with the
+    /// layout (a diagnosis written by another release).
+    pub fn model_with(&self, base: &Augmented, values: &[f64]) -> Option<Augmented> {
+        let layout = Layout::new(&self.effects, self.axles.is_some());
+        let axles = layout.axle_count();
+        let effects = layout.roll().end - axles;
+        if values.len() != axles + effects {
+            return None;
+        }
+        let mut p = Vec::with_capacity(values.len());
+        if axles > 0 {
+            p.extend(shares(values[0], values[1], values[2]));
+        }
+        p.extend(&values[axles..]);
+        Some(layout.model(base, &p))
+    }
+
+    /// The model it sets on `base` with its fitted values.
+    pub fn model(&self, base: &Augmented) -> Option<Augmented> {
+        let v: Vec<f64> = self.values().map(|x| x.value).collect();
+        self.model_with(base, &v)
+    }
+}
+
+/// What the design needs of a diagnosis.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Fitted {
+    /// The base model's front tyre (or axle characteristic).
+    pub front: Tyre,
+    /// Its rear.
+    pub rear: Tyre,
+    /// The noise floor of each channel by [`crate::diagnose::Channel`]
+    /// index (0 where no run measures it).
+    pub noise_floors: [f64; 3],
+    /// The scale of each channel's residuals in the fits.
+    pub scales: [f64; 3],
+    /// The held-out J of the noise alone.
+    pub noise_level: f64,
+    /// Single effects and combinations, as ranked.
+    pub candidates: Vec<FittedCandidate>,
+    /// The verdict's effects (empty without one).
+    pub verdict: Vec<EffectKind>,
+    /// Each confounded set: the verdict's first effect and its look-alikes.
+    pub confounded: Vec<Vec<EffectKind>>,
+}
+
+impl Fitted {
+    /// What `d` fitted.
+    pub fn of(d: &Diagnosis) -> Self {
+        let mut noise_floors = [0.0; 3];
+        let mut scales = [1.0; 3];
+        for n in &d.gap.noise {
+            noise_floors[n.channel.index()] = n.noise_floor;
+            scales[n.channel.index()] = n.scale;
+        }
+        Self {
+            front: d.base.front.clone(),
+            rear: d.base.rear.clone(),
+            noise_floors,
+            scales,
+            noise_level: d.gap.noise_level,
+            candidates: d
+                .ranking
+                .iter()
+                .chain(&d.combinations)
+                .map(FittedCandidate::of)
+                .collect(),
+            verdict: d.verdict.effects().to_vec(),
+            confounded: d.confounded.iter().map(|c| c.effects.clone()).collect(),
+        }
+    }
+
+    /// The base model of campaign `c` with these tyres: as the diagnosis
+    /// built it (the campaign's vehicle, road friction and roll).
+    pub fn base(&self, c: &Campaign) -> Augmented {
+        let model = VehicleModel::new(c.vehicle.clone(), self.front.clone(), self.rear.clone());
+        let mut m = Augmented::new(model, c.friction);
+        m.effects_mut().roll = c.roll;
+        m
+    }
+
+    /// The candidate whose effects are `effects` (in any order).
+    pub fn candidate(&self, effects: &[EffectKind]) -> Option<&FittedCandidate> {
+        self.candidates.iter().find(|x| {
+            x.effects.len() == effects.len() && effects.iter().all(|e| x.effects.contains(e))
+        })
+    }
+}

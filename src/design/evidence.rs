@@ -1,0 +1,117 @@
+//! What driven runs would show and did show: the runs of a designed
+//! manoeuvre the diagnosis's confounding rule needs before it tells two
+//! candidates apart ([`repetitions`]), and the separation a run driven
+//! after the design measures with the candidates as diagnosed before it
+//! ([`measured`]). Units: separations in noise floors; J dimensionless.
+
+use super::{models, separation, sets, DesignRequest, Fitted, Logging};
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::Augmented;
+use crate::diagnose::Prepared;
+use crate::error::Error;
+use crate::measured::MeasuredRun;
+use serde::Serialize;
+
+/// The most repetitions of a manoeuvre a design counts.
+pub const MAX_REPETITIONS: usize = 200;
+
+/// The held-out errors a diagnosis reported for two candidates.
+pub(crate) struct Held {
+    pub(crate) reference: f64,
+    pub(crate) other: f64,
+    pub(crate) noise: f64,
+    /// Residuals of the campaign's runs.
+    pub(crate) residuals: usize,
+}
+
+/// The runs of a manoeuvre (`run`, logged) to add before the confounding
+/// rule no longer holds the other for a look-alike of the reference: each
+/// run is expected to add the noise's sum of squares to both candidates'
+/// held-out J² (in the fits' scales) and `D²` (in those scales) to the
+/// other's; the gaps above noise then follow, and
+/// [`crate::diagnose::rules::lookalike`] decides.
+pub(crate) fn repetitions(
+    held: &Held,
+    run: &Prepared,
+    models: [&Augmented; 2],
+    fitted: &Fitted,
+    logging: &Logging,
+) -> Option<usize> {
+    use crate::diagnose::rules::lookalike;
+    let [a, b] = models.map(|m| run.observe(m));
+    let scales = fitted.scales;
+    let d2 = separation::separation(&a, &b, &scales, logging).powi(2);
+    // The noise's sum of squares per run, in the fits' scales.
+    let mut noise = 0.0;
+    let mut n = 0usize;
+    for ch in crate::diagnose::Channel::ALL {
+        let i = ch.index();
+        if logging.channels[i] && fitted.noise_floors[i] > 0.0 {
+            noise += run.times.len() as f64 * (fitted.noise_floors[i] / scales[i]).powi(2);
+            n += run.times.len();
+        }
+    }
+    let big_n = held.residuals as f64;
+    let gap = |j2: f64, jn2: f64| (j2 - jn2).max(0.0).sqrt();
+    (1..=MAX_REPETITIONS).find(|&k| {
+        let total = big_n + (k * n) as f64;
+        let grow = |j: f64, extra: f64| (j * j * big_n + k as f64 * (noise + extra)) / total;
+        let jn2 = grow(held.noise, 0.0);
+        let (ja2, jb2) = (grow(held.reference, 0.0), grow(held.other, d2));
+        !lookalike(100.0, gap(jb2, jn2), gap(ja2, jn2), jn2.sqrt())
+    })
+}
+
+/// The measured separation of a run driven after the design.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Measured {
+    /// The run.
+    pub run: String,
+    /// Each member's sum of squared residuals on it, in noise floors.
+    pub chi_square: Vec<(String, f64)>,
+    /// `√|χ²_other − χ²_reference|` against the weakest look-alike, signed:
+    /// positive where the run favours the reference.
+    pub separation: f64,
+    /// The member the run favours (the smallest χ²).
+    pub favours: String,
+}
+
+/// The measured separation of `run` for the set `members` (reference
+/// first), the candidates as `fitted` before it.
+pub fn measured(
+    c: &Campaign,
+    fitted: &Fitted,
+    members: &[Vec<EffectKind>],
+    run: &MeasuredRun,
+) -> Result<Measured, Error> {
+    let req = DesignRequest {
+        sets: Some(vec![members.to_vec()]),
+        ..DesignRequest::default()
+    };
+    let (members, _) = sets(fitted, &req)?.remove(0);
+    let base = fitted.base(c);
+    let models = models(&members, &base)?;
+    let prepared = Prepared::new(run, c.settings.step, c.settings.sample_rate);
+    let chi: Vec<f64> = models
+        .iter()
+        .map(|m| separation::chi_square(&prepared, m, &fitted.noise_floors))
+        .collect();
+    let weakest = (1..chi.len())
+        .min_by(|&a, &b| (chi[a] - chi[0]).abs().total_cmp(&(chi[b] - chi[0]).abs()))
+        .unwrap_or(1);
+    let diff = chi[weakest] - chi[0];
+    let best = (0..chi.len())
+        .min_by(|&a, &b| chi[a].total_cmp(&chi[b]))
+        .unwrap_or(0);
+    Ok(Measured {
+        run: run.path.display().to_string(),
+        chi_square: members
+            .iter()
+            .map(|m| m.label())
+            .zip(chi.iter().copied())
+            .collect(),
+        separation: diff.signum() * diff.abs().sqrt(),
+        favours: members[best].label(),
+    })
+}

@@ -1,0 +1,399 @@
+//! The family of manoeuvres a design searches, within the limits of what
+//! the car and its driver did in the campaign ([`Limits`]): steps of
+//! several sizes at several speeds, ramps, sine sweeps, a double lane
+//! change, a speed change on a straight, a steady turn with a speed change
+//! (braking and accelerating), and a constant-radius turn at rising speed.
+//! Every manoeuvre is a schedule of steer and speed (linear between
+//! breakpoints, [`Manoeuvre::Replay`]) that starts from straight running
+//! with a second at steady speed, so a scenario file and the proving
+//! ground drive exactly what was designed. Steers are sized for a target
+//! lateral acceleration by the steady state of the base model.
+//!
+//! Units: SI, rad; positive steer turns left (ISO 8855).
+
+use crate::diagnose::model::Augmented;
+use crate::manoeuvre::{Manoeuvre, Replay};
+use crate::measured::MeasuredRun;
+use serde::Serialize;
+
+/// What a designed manoeuvre may ask of the car and driver.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Limits {
+    /// Lowest and highest speed, m/s: the 5 and 95 % points of the runs'
+    /// speeds above the diagnosis's lowest speed.
+    pub speed: (f64, f64),
+    /// The lateral acceleration the runs reached, m/s²: the 99 % point of
+    /// |ay| (of |u·r| where no run measures ay).
+    pub ay_reached: f64,
+    /// The share of it a design may ask.
+    pub ay_share: f64,
+    /// The largest steer rate, rad/s (road wheel): the runs' 99 % point,
+    /// at least [`MIN_STEER_RATE`].
+    pub steer_rate: f64,
+    /// The largest |du/dt|, m/s²: stated (the runs' 99 % point where
+    /// larger).
+    pub ax: f64,
+}
+
+/// A steer rate any driver makes, rad/s of road wheel (a 0.15 s step of 3°).
+pub const MIN_STEER_RATE: f64 = 0.35;
+
+/// The |ax| a design may use when none is stated, m/s² (moderate braking).
+pub const DEFAULT_AX: f64 = 3.0;
+
+/// The share of the reached lateral acceleration a design may ask by
+/// default.
+pub const DEFAULT_AY_SHARE: f64 = 0.8;
+
+fn percentile(mut v: Vec<f64>, q: f64) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[((v.len() - 1) as f64 * q).round() as usize]
+}
+
+impl Limits {
+    /// The limits of runs `runs` (moving above `min_speed`), with the
+    /// stated `ay_share` and `ax`.
+    pub fn of(runs: &[MeasuredRun], min_speed: f64, ay_share: f64, ax: f64) -> Self {
+        let (mut speeds, mut ays, mut rates, mut axs) = (vec![], vec![], vec![], vec![]);
+        for r in runs {
+            for i in 0..r.t.len() {
+                if r.speed[i] < min_speed {
+                    continue;
+                }
+                speeds.push(r.speed[i]);
+                ays.push(match &r.ay {
+                    Some(a) => a[i].abs(),
+                    None => (r.speed[i] * r.yaw_rate[i]).abs(),
+                });
+                if i > 0 && r.t[i] > r.t[i - 1] {
+                    let dt = r.t[i] - r.t[i - 1];
+                    rates.push(((r.steer[i] - r.steer[i - 1]) / dt).abs());
+                    axs.push(((r.speed[i] - r.speed[i - 1]) / dt).abs());
+                }
+            }
+        }
+        Self {
+            speed: (percentile(speeds.clone(), 0.05), percentile(speeds, 0.95)),
+            ay_reached: percentile(ays, 0.99),
+            ay_share,
+            steer_rate: percentile(rates, 0.99).max(MIN_STEER_RATE),
+            ax: ax.max(percentile(axs, 0.99)),
+        }
+    }
+
+    /// The largest lateral acceleration a design may ask, m/s².
+    pub fn ay_max(&self) -> f64 {
+        self.ay_share * self.ay_reached
+    }
+}
+
+/// The kinds of manoeuvre in the family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Kind {
+    /// A steer step at constant speed.
+    Step,
+    /// A steer ramp at constant speed.
+    Ramp,
+    /// A sine sweep of the steer at constant speed.
+    Sweep,
+    /// A double lane change at constant speed.
+    LaneChange,
+    /// A speed change on a straight.
+    SpeedChange,
+    /// A steady turn whose speed falls (braking in the turn).
+    BrakeInTurn,
+    /// A steady turn whose speed rises.
+    AccelerateInTurn,
+    /// A constant-radius turn at rising speed.
+    ConstantRadius,
+}
+
+/// One manoeuvre of the family.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Designed {
+    /// Its name (the scenario file's stem).
+    pub name: String,
+    /// Its kind.
+    pub kind: Kind,
+    /// What the driver does, in words.
+    pub description: String,
+    /// The schedule.
+    pub manoeuvre: Manoeuvre,
+}
+
+/// Lead-in at steady speed and straight, s.
+const LEAD: f64 = 1.0;
+/// Sample interval of the sampled schedules (sweeps, lane changes, the
+/// constant radius), s.
+const SAMPLE: f64 = 0.02;
+
+/// A schedule from its breakpoints.
+fn schedule(points: Vec<(f64, f64, f64)>) -> Manoeuvre {
+    Manoeuvre::Replay(Replay {
+        t: points.iter().map(|p| p.0).collect(),
+        steer: points.iter().map(|p| p.1).collect(),
+        speed: points.iter().map(|p| p.2).collect(),
+    })
+}
+
+/// The steer that holds lateral acceleration `ay` at `speed` on `model`
+/// (None beyond its limit).
+fn steer_for(model: &Augmented, speed: f64, ay: f64) -> Option<f64> {
+    let m = &model.model;
+    let trim = m
+        .steady_state_for_lateral_acceleration(speed, model.friction, 0.0)
+        .ok()?;
+    let s = m
+        .steady_state_for_lateral_acceleration(speed, model.friction, ay)
+        .ok()?;
+    Some(s.steer - trim.steer)
+}
+
+/// The family within `limits`, steers sized on `model` (the base model).
+pub fn family(model: &Augmented, limits: &Limits) -> Vec<Designed> {
+    let (lo, hi) = limits.speed;
+    let speeds = [lo, 0.5 * (lo + hi), hi];
+    let ay = limits.ay_max();
+    let mut out = Vec::new();
+    for &u in &speeds {
+        for share in [0.4, 0.7, 1.0] {
+            out.extend(step(model, limits, u, share * ay));
+        }
+        out.extend(ramp(model, u, ay));
+        out.extend(sweep(model, u, 0.4 * ay));
+        out.extend(lane_change(model, u, 0.6 * ay));
+    }
+    out.extend(speed_change(limits));
+    for &u in &speeds[1..] {
+        for share in [0.5, 0.9] {
+            out.extend(brake_in_turn(model, limits, u, share * ay));
+        }
+    }
+    for &u in &speeds[..2] {
+        out.extend(accelerate_in_turn(model, limits, u, 0.5 * ay));
+    }
+    out.extend(constant_radius(model, limits));
+    out
+}
+
+fn kmh(u: f64) -> f64 {
+    (u * 3.6).round()
+}
+
+fn step(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed> {
+    let d = steer_for(model, u, ay)?;
+    let rise = (d.abs() / limits.steer_rate).max(0.15);
+    Some(Designed {
+        name: format!("step_{:03}kph_{:.1}ms2", kmh(u), ay),
+        kind: Kind::Step,
+        description: format!(
+            "a steer step of {:.2}° in {rise:.2} s at {:.0} km/h for {ay:.1} m/s², held 4 s",
+            d.to_degrees(),
+            kmh(u)
+        ),
+        manoeuvre: schedule(vec![
+            (0.0, 0.0, u),
+            (LEAD, 0.0, u),
+            (LEAD + rise, d, u),
+            (LEAD + 4.0, d, u),
+        ]),
+    })
+}
+
+fn ramp(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
+    let d = steer_for(model, u, ay)?;
+    let t = 8.0;
+    Some(Designed {
+        name: format!("ramp_{:03}kph", kmh(u)),
+        kind: Kind::Ramp,
+        description: format!(
+            "a steer ramp to {:.2}° over {t:.0} s at {:.0} km/h",
+            d.to_degrees(),
+            kmh(u)
+        ),
+        manoeuvre: schedule(vec![(0.0, 0.0, u), (LEAD, 0.0, u), (LEAD + t, d, u)]),
+    })
+}
+
+/// A sampled schedule of steer `f(τ)` at speed `u` for `length` s after the
+/// lead-in, then 2 s straight.
+fn sampled(u: f64, length: f64, f: impl Fn(f64) -> f64) -> Manoeuvre {
+    let n = (length / SAMPLE).round() as usize;
+    let mut p = vec![(0.0, 0.0, u)];
+    p.extend((0..=n).map(|k| {
+        let tau = k as f64 * SAMPLE;
+        (LEAD + tau, f(tau), u)
+    }));
+    p.push((LEAD + length + 2.0, 0.0, u));
+    schedule(p)
+}
+
+fn sweep(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
+    use std::f64::consts::TAU;
+    let d = steer_for(model, u, ay)?;
+    let (f0, f1, t) = (0.2, 3.0, 12.0);
+    let k = (f1 - f0) / t;
+    Some(Designed {
+        name: format!("sweep_{:03}kph", kmh(u)),
+        kind: Kind::Sweep,
+        description: format!(
+            "a steer sweep of ±{:.2}° from {f0} to {f1} Hz over {t:.0} s at {:.0} km/h",
+            d.to_degrees(),
+            kmh(u)
+        ),
+        manoeuvre: sampled(u, t, |tau| {
+            d * (TAU * (f0 * tau + 0.5 * k * tau * tau)).sin()
+        }),
+    })
+}
+
+fn lane_change(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
+    use std::f64::consts::TAU;
+    let d = steer_for(model, u, ay)?;
+    // Two lane changes of one sine period each (out and back), 0.5 Hz: a
+    // lateral offset of about ay/(2π·f)² ≈ 2.5 m at 2.5 m/s².
+    let f = 0.5;
+    let period = 1.0 / f;
+    Some(Designed {
+        name: format!("lane_change_{:03}kph", kmh(u)),
+        kind: Kind::LaneChange,
+        description: format!(
+            "a double lane change: two sine periods of ±{:.2}° at {f} Hz, the second mirrored, at {:.0} km/h",
+            d.to_degrees(),
+            kmh(u)
+        ),
+        manoeuvre: sampled(u, 2.0 * period + 1.0, |tau| {
+            if tau < period {
+                d * (TAU * f * tau).sin()
+            } else if tau < period + 1.0 {
+                0.0
+            } else if tau < 2.0 * period + 1.0 {
+                -d * (TAU * f * (tau - period - 1.0)).sin()
+            } else {
+                0.0
+            }
+        }),
+    })
+}
+
+fn speed_change(limits: &Limits) -> Option<Designed> {
+    let (lo, hi) = limits.speed;
+    let t = (hi - lo) / limits.ax;
+    (hi > lo).then(|| Designed {
+        name: format!("speed_change_{:03}_{:03}kph", kmh(hi), kmh(lo)),
+        kind: Kind::SpeedChange,
+        description: format!(
+            "braking on a straight from {:.0} to {:.0} km/h at {:.1} m/s², then 3 s steady",
+            kmh(hi),
+            kmh(lo),
+            limits.ax
+        ),
+        manoeuvre: schedule(vec![
+            (0.0, 0.0, hi),
+            (LEAD, 0.0, hi),
+            (LEAD + t, 0.0, lo),
+            (LEAD + t + 3.0, 0.0, lo),
+        ]),
+    })
+}
+
+/// A steady turn entered in 1 s at `u`, held 2 s, then the speed changed
+/// at `rate` (m/s², signed) for up to 3 s within the speed range, the
+/// steer held, then 2 s at the new speed.
+fn turn_with_speed_change(
+    model: &Augmented,
+    limits: &Limits,
+    u: f64,
+    ay: f64,
+    rate: f64,
+) -> Option<(f64, f64, f64, Manoeuvre)> {
+    let d = steer_for(model, u, ay)?;
+    let (lo, hi) = limits.speed;
+    let end = (u + 3.0 * rate).clamp(lo, hi);
+    let t = (end - u) / rate;
+    if t < 0.5 {
+        return None;
+    }
+    let s = LEAD + 1.0 + 2.0;
+    Some((
+        d,
+        end,
+        t,
+        schedule(vec![
+            (0.0, 0.0, u),
+            (LEAD, 0.0, u),
+            (LEAD + 1.0, d, u),
+            (s, d, u),
+            (s + t, d, end),
+            (s + t + 2.0, d, end),
+        ]),
+    ))
+}
+
+fn brake_in_turn(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed> {
+    let (d, end, t, m) = turn_with_speed_change(model, limits, u, ay, -limits.ax)?;
+    Some(Designed {
+        name: format!("brake_in_turn_{:03}kph_{:.1}ms2", kmh(u), ay),
+        kind: Kind::BrakeInTurn,
+        description: format!(
+            "a steady turn at {:.0} km/h and {ay:.1} m/s² ({:.2}° of steer), then braking to {:.0} km/h in {t:.1} s, the steer held",
+            kmh(u),
+            d.to_degrees(),
+            kmh(end)
+        ),
+        manoeuvre: m,
+    })
+}
+
+fn accelerate_in_turn(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed> {
+    // Accelerating raises ay with u² at a held steer: half the braking rate.
+    let (d, end, t, m) = turn_with_speed_change(model, limits, u, ay, 0.5 * limits.ax)?;
+    Some(Designed {
+        name: format!("accelerate_in_turn_{:03}kph_{:.1}ms2", kmh(u), ay),
+        kind: Kind::AccelerateInTurn,
+        description: format!(
+            "a steady turn at {:.0} km/h and {ay:.1} m/s² ({:.2}° of steer), then accelerating to {:.0} km/h in {t:.1} s, the steer held",
+            kmh(u),
+            d.to_degrees(),
+            kmh(end)
+        ),
+        manoeuvre: m,
+    })
+}
+
+fn constant_radius(model: &Augmented, limits: &Limits) -> Option<Designed> {
+    let (lo, hi) = limits.speed;
+    let ay = limits.ay_max();
+    if hi <= lo || ay <= 0.0 {
+        return None;
+    }
+    let radius = hi * hi / ay;
+    let rate = (0.5 * limits.ax).min(1.0);
+    let t = ((hi - lo) / rate).min(30.0);
+    let speed = |tau: f64| lo + (hi - lo) * (tau / t).min(1.0);
+    let n = (t / 0.5).ceil() as usize;
+    let mut p = vec![(0.0, 0.0, lo), (LEAD, 0.0, lo)];
+    // Into the circle in 2 s, then along it at rising speed.
+    let d0 = steer_for(model, lo, lo * lo / radius)?;
+    p.push((LEAD + 2.0, d0, lo));
+    for k in 1..=n {
+        let tau = t * k as f64 / n as f64;
+        let u = speed(tau);
+        p.push((LEAD + 2.0 + tau, steer_for(model, u, u * u / radius)?, u));
+    }
+    Some(Designed {
+        name: format!("constant_radius_{:.0}m", radius),
+        kind: Kind::ConstantRadius,
+        description: format!(
+            "a {radius:.0} m circle at rising speed, {:.0} to {:.0} km/h in {t:.0} s ({:.1} to {ay:.1} m/s²), the steer the base model needs on it",
+            kmh(lo),
+            kmh(hi),
+            lo * lo / radius
+        ),
+        manoeuvre: schedule(p),
+    })
+}

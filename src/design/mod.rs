@@ -1,0 +1,481 @@
+//! The next test to drive: for candidate effects that explain a gap about
+//! equally well (a diagnosis's confounded set, or any candidates asked
+//! for), the manoeuvres within the car's and driver's limits that tell
+//! them apart best, ranked by how far apart the candidates' responses are
+//! in the measured channels, in units of the campaign's noise, with the
+//! uncertainty of that separation.
+//!
+//! The candidates are those the diagnosis fitted, read back from it
+//! ([`candidates`]): the base model with each candidate's values set by
+//! the diagnosis's own layout, so a design replays what the diagnosis
+//! replayed. The manoeuvres are a family ([`family`]) bounded by
+//! [`Limits`] drawn from the campaign's runs (their speed range, a share of
+//! the lateral acceleration they reached, their steer rate) and a stated
+//! longitudinal acceleration; each is logged as the campaign logs and
+//! replayed with every candidate ([`separation`]). For a set of more than
+//! two, a manoeuvre's separation is its weakest pair's: the first member
+//! (the verdict's effect) against each look-alike. The measured
+//! separation of a run driven afterwards ([`measured`]) is `√(χ²_B − χ²_A)`
+//! with the candidates as fitted before it: `D ± 1` on a car that behaves
+//! as A, which is what makes the prediction checkable.
+//!
+//! Units: separations are dimensionless (noise floors); SI, rad
+//! elsewhere; ISO 8855 axes.
+
+pub mod candidates;
+pub mod evidence;
+pub mod family;
+pub mod separation;
+
+pub use candidates::{Fitted, FittedCandidate, FittedValue};
+pub use evidence::{measured, Measured, MAX_REPETITIONS};
+pub use family::{Designed, Kind, Limits};
+pub use separation::Logging;
+
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::Prepared;
+use crate::error::{DesignError, Error};
+use crate::manoeuvre::Manoeuvre;
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// What to design for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignRequest {
+    /// Sets of candidates to separate, each the reference first (None:
+    /// the diagnosis's confounded sets).
+    pub sets: Option<Vec<Vec<Vec<EffectKind>>>>,
+    /// The share of the reached lateral acceleration a design may ask.
+    pub ay_share: f64,
+    /// The largest |du/dt| a design may ask, m/s².
+    pub ax: f64,
+    /// How many of the best manoeuvres get their uncertainty and are kept.
+    pub top: usize,
+}
+
+impl Default for DesignRequest {
+    fn default() -> Self {
+        Self {
+            sets: None,
+            ay_share: family::DEFAULT_AY_SHARE,
+            ax: family::DEFAULT_AX,
+            top: 3,
+        }
+    }
+}
+
+/// The separation of the reference from one other member.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairSeparation {
+    /// The other member.
+    pub other: String,
+    /// D, noise units.
+    pub separation: f64,
+}
+
+/// A manoeuvre and how well it separates a set.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Scored {
+    /// Its name (the scenario file's stem).
+    pub name: String,
+    /// Its kind.
+    pub kind: Kind,
+    /// What the driver does.
+    pub description: String,
+    /// Its length, s.
+    pub duration: f64,
+    /// The weakest pair's separation D, noise units.
+    pub separation: f64,
+    /// Each pair's.
+    pub pairs: Vec<PairSeparation>,
+    /// The uncertainty of `expected` (1 σ): the noise's, the first
+    /// sample's and the parameters' parts (`separation`'s module doc) (the best `top` only).
+    pub uncertainty: Option<f64>,
+    /// The parameters' part alone.
+    pub parameter_uncertainty: Option<f64>,
+    /// The separation a driven run is expected to measure
+    /// ([`measured`]): `√(D² + shift)`, the shift from the noise of its
+    /// first sample, which the replays start from (the best `top` only).
+    pub expected: Option<f64>,
+    /// How many runs of it, added to the campaign, the diagnosis's
+    /// confounding rule ([`crate::diagnose::rules::lookalike`])
+    /// expects to need before it no longer calls the weakest look-alike
+    /// confounded (None: more than [`MAX_REPETITIONS`]; the best `top`
+    /// only).
+    pub repetitions: Option<usize>,
+    /// The largest |ay| of the reference's response, m/s².
+    pub peak_ay: f64,
+    /// The schedule.
+    #[serde(skip)]
+    pub manoeuvre: Manoeuvre,
+}
+
+/// Why a manoeuvre of the family was left out.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Excluded {
+    /// The reference's response goes beyond the lateral limit.
+    BeyondLateralLimit {
+        /// The manoeuvre.
+        name: String,
+        /// Its peak |ay|, m/s².
+        peak_ay: f64,
+        /// The limit, m/s².
+        limit: f64,
+    },
+    /// A candidate's replay diverged.
+    Diverged {
+        /// The manoeuvre.
+        name: String,
+    },
+}
+
+/// Where a set comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SetSource {
+    /// The diagnosis found it confounded.
+    Confounded,
+    /// The user asked for it.
+    Requested,
+}
+
+/// The predicted responses of a set's members to one manoeuvre.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prediction {
+    /// The manoeuvre's name.
+    pub name: String,
+    /// Residual times, s.
+    pub times: Vec<f64>,
+    /// Steer and speed at those times.
+    pub steer: Vec<f64>,
+    /// Speed, m/s.
+    pub speed: Vec<f64>,
+    /// Each member's label and response.
+    pub members: Vec<(String, Observed)>,
+}
+
+/// The design for one set.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SetDesign {
+    /// The members' labels, the reference first.
+    pub members: Vec<String>,
+    /// Where the set comes from.
+    pub source: SetSource,
+    /// How far the campaign's own runs separate the reference from its
+    /// weakest look-alike, D over all runs.
+    pub campaign_separation: f64,
+    /// The manoeuvres within the limits, best first.
+    pub ranked: Vec<Scored>,
+    /// What was left out, and why.
+    pub excluded: Vec<Excluded>,
+    /// The best manoeuvre's predicted responses (for the figure).
+    #[serde(skip)]
+    pub best: Option<Prediction>,
+}
+
+/// The design.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Design {
+    /// The limits the manoeuvres keep to.
+    pub limits: Limits,
+    /// How the campaign logs (the designed runs are logged alike).
+    #[serde(skip)]
+    pub logging: Logging,
+    /// Manoeuvres in the family.
+    pub family: usize,
+    /// The noise floor of each channel the separations are counted in.
+    #[serde(skip)]
+    pub noise_floors: [f64; 3],
+    /// One per set.
+    pub sets: Vec<SetDesign>,
+}
+
+/// The members of each set: the requested ones, else the confounded ones.
+fn sets(
+    fitted: &Fitted,
+    req: &DesignRequest,
+) -> Result<Vec<(Vec<FittedCandidate>, SetSource)>, Error> {
+    let (wanted, source) = match &req.sets {
+        Some(s) => (s.clone(), SetSource::Requested),
+        None => (
+            fitted
+                .confounded
+                .iter()
+                .map(|set| set.iter().map(|e| vec![*e]).collect())
+                .collect(),
+            SetSource::Confounded,
+        ),
+    };
+    if wanted.is_empty() {
+        return Err(DesignError::NothingConfounded.into());
+    }
+    wanted
+        .iter()
+        .map(|set| {
+            let members = set
+                .iter()
+                .map(|effects| {
+                    fitted.candidate(effects).cloned().ok_or_else(|| {
+                        Error::from(DesignError::NotFitted {
+                            candidate: joined(effects, "+"),
+                            fitted: fitted.candidates.iter().map(|c| c.label()).collect(),
+                        })
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            if members.len() < 2 {
+                return Err(DesignError::OneMember.into());
+            }
+            Ok((members, source))
+        })
+        .collect()
+}
+
+/// The models of `members` on `base`.
+fn models(members: &[FittedCandidate], base: &Augmented) -> Result<Vec<Augmented>, Error> {
+    members
+        .iter()
+        .map(|m| {
+            m.model(base).ok_or_else(|| {
+                DesignError::Layout {
+                    candidate: m.label(),
+                }
+                .into()
+            })
+        })
+        .collect()
+}
+
+/// Designs manoeuvres for campaign `c` as diagnosed (`fitted`).
+pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Design, Error> {
+    let limits = Limits::of(&c.runs, c.settings.min_speed, req.ay_share, req.ax);
+    let logging = Logging::of(c);
+    let base = fitted.base(c);
+    let family = family::family(&base, &limits);
+    let sets = sets(fitted, req)?
+        .into_iter()
+        .map(|(members, source)| {
+            design_set(
+                c, fitted, &base, &members, source, &family, &limits, &logging, req.top,
+            )
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Design {
+        limits,
+        logging,
+        noise_floors: fitted.noise_floors,
+        family: family.len(),
+        sets,
+    })
+}
+
+/// The separation of the reference (first) from each other member, given
+/// their responses.
+fn pairs(
+    obs: &[Observed],
+    labels: &[String],
+    floors: &[f64; 3],
+    logging: &Logging,
+) -> Vec<PairSeparation> {
+    (1..obs.len())
+        .map(|k| PairSeparation {
+            other: labels[k].clone(),
+            separation: separation::separation(&obs[0], &obs[k], floors, logging),
+        })
+        .collect()
+}
+
+fn peak_ay(obs: &Observed, speed: &[f64], logging: &Logging) -> f64 {
+    let ay: Vec<f64> = if logging.channels[crate::diagnose::Channel::Ay.index()] {
+        obs.ay.clone()
+    } else {
+        obs.yaw_rate.iter().zip(speed).map(|(r, u)| r * u).collect()
+    };
+    ay.iter().fold(0.0, |m: f64, a| m.max(a.abs()))
+}
+
+/// What scoring a manoeuvre for one set needs.
+struct SetContext<'a> {
+    c: &'a Campaign,
+    fitted: &'a Fitted,
+    base: &'a Augmented,
+    members: &'a [FittedCandidate],
+    models: Vec<Augmented>,
+    labels: Vec<String>,
+    limits: &'a Limits,
+    logging: &'a Logging,
+}
+
+impl SetContext<'_> {
+    /// Manoeuvre `m` logged as the campaign logs, ready for replays.
+    fn prepared(&self, name: &str, m: &Manoeuvre) -> Prepared {
+        let set = &self.c.settings;
+        Prepared::new(&self.logging.run(name, m), set.step, set.sample_rate)
+    }
+
+    /// Every member's response to `d`, its pairs' separations, or why it
+    /// is left out.
+    fn score(&self, d: &Designed) -> Result<(Scored, Prediction), Excluded> {
+        let run = self.prepared(&d.name, &d.manoeuvre);
+        let obs: Vec<Observed> = self.models.iter().map(|m| run.observe(m)).collect();
+        let speed: Vec<f64> = run.times.iter().map(|&t| d.manoeuvre.speed(t)).collect();
+        let peak = peak_ay(&obs[0], &speed, self.logging);
+        let limit = self.limits.ay_max();
+        if peak > 1.1 * limit {
+            let name = d.name.clone();
+            return Err(Excluded::BeyondLateralLimit {
+                name,
+                peak_ay: peak,
+                limit,
+            });
+        }
+        let pairs = pairs(&obs, &self.labels, &self.fitted.noise_floors, self.logging);
+        let weakest = pairs
+            .iter()
+            .map(|p| p.separation)
+            .fold(f64::INFINITY, f64::min);
+        if !weakest.is_finite() {
+            return Err(Excluded::Diverged {
+                name: d.name.clone(),
+            });
+        }
+        let prediction = Prediction {
+            name: d.name.clone(),
+            steer: run.times.iter().map(|&t| d.manoeuvre.steer(t)).collect(),
+            speed,
+            times: run.times.clone(),
+            members: self.labels.iter().cloned().zip(obs).collect(),
+        };
+        let scored = Scored {
+            name: d.name.clone(),
+            kind: d.kind,
+            description: d.description.clone(),
+            duration: d.manoeuvre.end_time() - d.manoeuvre.start_time(),
+            separation: weakest,
+            pairs,
+            uncertainty: None,
+            parameter_uncertainty: None,
+            expected: None,
+            repetitions: None,
+            peak_ay: peak,
+            manoeuvre: d.manoeuvre.clone(),
+        };
+        Ok((scored, prediction))
+    }
+
+    /// The expected measured separation of `s` against its weakest pair,
+    /// its uncertainty and the runs the confounding rule needs.
+    fn complete(&self, s: &mut Scored, campaign_residuals: usize) {
+        let weakest = s
+            .pairs
+            .iter()
+            .position(|p| p.separation == s.separation)
+            .map_or(1, |k| k + 1);
+        let run = self.prepared(&s.name, &s.manoeuvre);
+        let (floors, logging) = (&self.fitted.noise_floors, self.logging);
+        let pair = [&self.models[0], &self.models[weakest]];
+        let observe = |m: &Augmented| run.observe(m);
+        let members = [
+            (&self.members[0], pair[0]),
+            (&self.members[weakest], pair[1]),
+        ];
+        let spread = separation::parameter_spread(members, self.base, &observe, floors, logging);
+        let set = &self.c.settings;
+        let logged = logging.run(&s.name, &s.manoeuvre);
+        let terms = separation::start_terms(&logged, pair, floors, set.step, set.sample_rate);
+        // χ²_B − χ²_A = D² + start + 2·D·(noise + parameters), its mean
+        // D² plus the start's shift; the measured separation is its root.
+        let expected = (terms.d2 + terms.shift).max(0.0).sqrt();
+        let variance = 4.0 * terms.d2 * (1.0 + spread * spread) + terms.variance;
+        s.parameter_uncertainty = Some(spread);
+        s.expected = Some(expected);
+        s.uncertainty = Some((variance.sqrt() / (2.0 * expected)).max(1.0));
+        let held = evidence::Held {
+            reference: self.members[0].heldout_error,
+            other: self.members[weakest].heldout_error,
+            noise: self.fitted.noise_level,
+            residuals: campaign_residuals,
+        };
+        s.repetitions = evidence::repetitions(&held, &run, pair, self.fitted, logging);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn design_set(
+    c: &Campaign,
+    fitted: &Fitted,
+    base: &Augmented,
+    members: &[FittedCandidate],
+    source: SetSource,
+    family: &[Designed],
+    limits: &Limits,
+    logging: &Logging,
+    top: usize,
+) -> Result<SetDesign, Error> {
+    let cx = SetContext {
+        c,
+        fitted,
+        base,
+        members,
+        models: models(members, base)?,
+        labels: members.iter().map(|m| m.label()).collect(),
+        limits,
+        logging,
+    };
+    let (mut ranked, mut excluded) = (Vec::new(), Vec::new());
+    for s in family.par_iter().map(|d| cx.score(d)).collect::<Vec<_>>() {
+        match s {
+            Ok(x) => ranked.push(x),
+            Err(e) => excluded.push(e),
+        }
+    }
+    ranked.sort_by(|a, b| b.0.separation.total_cmp(&a.0.separation));
+    ranked.truncate(top.max(1));
+    let campaign_residuals: usize = Prepared::campaign_runs(c).iter().map(Prepared::count).sum();
+    for (s, _) in &mut ranked {
+        cx.complete(s, campaign_residuals);
+    }
+    let campaign_separation = campaign_separation(c, &cx.models, &fitted.noise_floors, logging);
+    let best = ranked.first().map(|(_, p)| p.clone());
+    Ok(SetDesign {
+        members: cx.labels,
+        source,
+        campaign_separation,
+        ranked: ranked.into_iter().map(|(s, _)| s).collect(),
+        excluded,
+        best,
+    })
+}
+
+/// D of the reference against its weakest look-alike over all the
+/// campaign's runs (each replayed from its measured start).
+fn campaign_separation(
+    c: &Campaign,
+    models: &[Augmented],
+    floors: &[f64; 3],
+    logging: &Logging,
+) -> f64 {
+    let runs = Prepared::campaign_runs(c);
+    (1..models.len())
+        .map(|k| {
+            runs.par_iter()
+                .map(|r| {
+                    let d = separation::separation(
+                        &r.observe(&models[0]),
+                        &r.observe(&models[k]),
+                        floors,
+                        logging,
+                    );
+                    d * d
+                })
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[cfg(test)]
+mod tests;

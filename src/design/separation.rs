@@ -1,0 +1,249 @@
+//! How far apart candidates' responses to a manoeuvre are, in units of
+//! the campaign's noise, and how well that is known.
+//!
+//! A manoeuvre is logged as the campaign's runs are (their sample
+//! interval, their channels) and replayed by the diagnosis's own replay
+//! ([`Prepared`]) with each candidate as fitted. The separation of
+//! candidates A and B is
+//! `D = sqrt(Σ_c Σ_i ((y_B,c,i − y_A,c,i)/σ_c)²)` over the measured
+//! channels c and the residual samples i, with σ_c the channel's noise
+//! floor: on a run driven by a car that behaves as A, with white noise of
+//! those floors, the difference of the two candidates' sums of squared
+//! residuals `χ²_B − χ²_A` has mean `D²` and standard deviation `2D`, so
+//! the measured separation `√(χ²_B − χ²_A)` is `D ± 1` (the noise's part of
+//! the uncertainty). The parameters' part is the delta method over each
+//! candidate's free values at their standard errors (central differences
+//! of D at ±1 standard error), their correlations not known to
+//! `diagnosis.json` and left out. A run of a car that behaves as neither
+//! adds model-form error that neither part covers; the book's design
+//! chapter measures how far that goes.
+//!
+//! Units: D is dimensionless (noise floors); SI, rad elsewhere.
+
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::{Channel, Prepared};
+use crate::manoeuvre::Manoeuvre;
+use crate::measured::MeasuredRun;
+use std::path::PathBuf;
+
+/// What a campaign logs: the sample interval and which channels.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Logging {
+    /// Sample interval, s (the runs' median).
+    pub interval: f64,
+    /// Which response channels, by [`Channel`] index.
+    pub channels: [bool; 3],
+    /// Whether it logs `ax` (written as the speed's derivative).
+    pub ax: bool,
+    /// Whether it logs the bank (written as 0: a flat pad).
+    pub bank: bool,
+}
+
+impl Logging {
+    /// How campaign `c` logs its runs.
+    pub fn of(c: &Campaign) -> Self {
+        let mut dts: Vec<f64> = c
+            .runs
+            .iter()
+            .flat_map(|r| r.t.windows(2).map(|w| w[1] - w[0]))
+            .filter(|d| *d > 0.0)
+            .collect();
+        dts.sort_by(f64::total_cmp);
+        let interval = dts.get(dts.len() / 2).copied().unwrap_or(0.01);
+        Self {
+            interval,
+            channels: Channel::ALL.map(|ch| c.runs.iter().any(|r| ch.of(r).is_some())),
+            ax: c.runs.iter().any(|r| r.ax.is_some()),
+            bank: c.runs.iter().any(|r| r.bank.is_some()),
+        }
+    }
+
+    /// Manoeuvre `m` as this logger records it, every response 0: the run
+    /// a replay of it starts from straight running.
+    pub fn run(&self, name: &str, m: &Manoeuvre) -> MeasuredRun {
+        let (t0, t1) = (m.start_time(), m.end_time());
+        let t: Vec<f64> = (0..)
+            .map(|i| t0 + self.interval * i as f64)
+            .take_while(|x| *x <= t1 + 1e-9)
+            .collect();
+        let zero = vec![0.0; t.len()];
+        let on = |c: Channel| self.channels[c.index()].then(|| zero.clone());
+        MeasuredRun {
+            path: PathBuf::from(format!("{name}.csv")),
+            speed: t.iter().map(|&x| m.speed(x)).collect(),
+            steer: t.iter().map(|&x| m.steer(x)).collect(),
+            yaw_rate: zero.clone(),
+            ay: on(Channel::Ay),
+            beta: on(Channel::Beta),
+            roll: None,
+            bank: self.bank.then(|| zero.clone()),
+            ax: self
+                .ax
+                .then(|| t.iter().map(|&x| m.speed_rate(x)).collect()),
+            masked: Vec::new(),
+            t,
+        }
+    }
+}
+
+/// The channels of an observation that a campaign measures, with their
+/// noise floors.
+fn channels(obs: &Observed, floors: &[f64; 3], logging: &Logging) -> Vec<(Channel, Vec<f64>, f64)> {
+    Channel::ALL
+        .into_iter()
+        .filter(|c| logging.channels[c.index()] && floors[c.index()] > 0.0)
+        .map(|c| {
+            let v = match c {
+                Channel::YawRate => obs.yaw_rate.clone(),
+                Channel::Ay => obs.ay.clone(),
+                Channel::Beta => obs.beta.clone(),
+            };
+            (c, v, floors[c.index()])
+        })
+        .collect()
+}
+
+/// The separation D of two observations of the same run (NaN when either
+/// diverged).
+pub fn separation(a: &Observed, b: &Observed, floors: &[f64; 3], logging: &Logging) -> f64 {
+    let ca = channels(a, floors, logging);
+    let cb = channels(b, floors, logging);
+    let mut s = 0.0;
+    for ((_, ya, sigma), (_, yb, _)) in ca.iter().zip(&cb) {
+        for (x, y) in ya.iter().zip(yb) {
+            let d = (y - x) / sigma;
+            s += d * d;
+        }
+    }
+    if s.is_finite() {
+        s.sqrt()
+    } else {
+        f64::NAN
+    }
+}
+
+/// The sum of squared residuals of `model` on `run` in units of the noise
+/// floors, over the measured channels.
+pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {
+    let scales = floors.map(|f| if f > 0.0 { f } else { 1.0 });
+    let mut r = vec![0.0; run.count()];
+    run.residuals(model, &scales, &mut r);
+    r.iter().map(|x| x * x).sum()
+}
+
+/// What the start of a driven run does to its measured separation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StartTerms {
+    /// `χ²_B − χ²_A` on the reference's own noise-free response (D²).
+    pub(crate) d2: f64,
+    /// Its expected change from the first sample's noise.
+    pub(crate) shift: f64,
+    /// The variance that noise adds to it.
+    pub(crate) variance: f64,
+}
+
+/// How the noise of a driven run's first sample moves `χ²_B − χ²_A`: a
+/// replay starts from that sample, so its noise starts both candidates off
+/// the car's state, and a transient follows (a sideslip one noise floor
+/// off is a lateral acceleration several floors off for a few tenths of a
+/// second, and a delayed sensor holds it for its delay). Each start
+/// channel the run measures is moved by ±1 noise floor on the reference's
+/// own noise-free response; the change `e(±)` is taken as quadratic in the
+/// start's error `x` (in floors, standard normal):
+/// `e = b·x + a·x²` with `a = (e₊ + e₋)/2`, `b = (e₊ − e₋)/2`, so its mean is
+/// `a` and its variance `b² + 2a²`, summed over the channels.
+pub(crate) fn start_terms(
+    template: &MeasuredRun,
+    models: [&Augmented; 2],
+    floors: &[f64; 3],
+    step: f64,
+    rate: f64,
+) -> StartTerms {
+    let clean = Prepared::new(template, step, 1e6).observe(models[0]);
+    let mut car = template.clone();
+    car.yaw_rate = clean.yaw_rate.clone();
+    if car.ay.is_some() {
+        car.ay = Some(clean.ay.clone());
+    }
+    if car.beta.is_some() {
+        car.beta = Some(clean.beta.clone());
+    }
+    let diff = |r: &MeasuredRun| {
+        let p = Prepared::new(r, step, rate);
+        chi_square(&p, models[1], floors) - chi_square(&p, models[0], floors)
+    };
+    let d2 = diff(&car);
+    let (mut shift, mut variance) = (0.0, 0.0);
+    for ch in [Channel::YawRate, Channel::Beta] {
+        let f = floors[ch.index()];
+        if f <= 0.0 || (ch == Channel::Beta && car.beta.is_none()) {
+            continue;
+        }
+        let moved = |sign: f64| {
+            let mut r = car.clone();
+            match ch {
+                Channel::YawRate => r.yaw_rate[0] += sign * f,
+                _ => r.beta.as_mut().expect("measured")[0] += sign * f,
+            }
+            diff(&r) - d2
+        };
+        let (up, down) = (moved(1.0), moved(-1.0));
+        let (a, b) = (0.5 * (up + down), 0.5 * (up - down));
+        if a.is_finite() && b.is_finite() {
+            shift += a;
+            variance += b * b + 2.0 * a * a;
+        }
+    }
+    StartTerms {
+        d2,
+        shift,
+        variance,
+    }
+}
+
+/// The parameters' part of the uncertainty of `D(a, b)`: for each free
+/// value of each candidate, half the change of D between ±1 standard
+/// error, added in quadrature. `a` and `b` are (candidate, its model's
+/// values) pairs; `observe` replays a model on the run.
+pub(crate) fn parameter_spread(
+    members: [(&super::FittedCandidate, &Augmented); 2],
+    base: &Augmented,
+    observe: &(dyn Fn(&Augmented) -> Observed + Sync),
+    floors: &[f64; 3],
+    logging: &Logging,
+) -> f64 {
+    use rayon::prelude::*;
+    let obs = members.map(|(_, m)| observe(m));
+    let mut jobs = Vec::new();
+    for (k, (cand, _)) in members.iter().enumerate() {
+        for (i, v) in cand.values().enumerate() {
+            if v.free {
+                jobs.push((k, i, v.std_error));
+            }
+        }
+    }
+    let var: f64 = jobs
+        .par_iter()
+        .map(|&(k, i, se)| {
+            let cand = members[k].0;
+            let at = |sign: f64| -> f64 {
+                let mut v: Vec<f64> = cand.values().map(|x| x.value).collect();
+                v[i] += sign * se;
+                let Some(m) = cand.model_with(base, &v) else {
+                    return f64::NAN;
+                };
+                let moved = observe(&m);
+                let other = &obs[1 - k];
+                separation(&moved, other, floors, logging)
+            };
+            let half = 0.5 * (at(1.0) - at(-1.0));
+            if half.is_finite() {
+                half * half
+            } else {
+                0.0
+            }
+        })
+        .sum();
+    var.sqrt()
+}

@@ -1,0 +1,202 @@
+//! The design against closed forms and the diagnosis it reads: the
+//! candidates rebuilt from a diagnosis replay its in-sample errors, a
+//! sensor delay and a steer delay are told apart only by a manoeuvre whose
+//! speed changes (at constant speed a delay of the input and a delay of
+//! the output are the same response), and runs of a car that behaves as
+//! the reference measure the separation expected, within its uncertainty.
+
+use super::*;
+use crate::diagnose::campaign::DiagnoseSettings;
+use crate::diagnose::{diagnose, Diagnosis};
+use crate::proving_ground::{generate, Noise, Programme, SynthSpec};
+use std::sync::OnceLock;
+
+fn spec(seed: u64) -> SynthSpec {
+    SynthSpec {
+        effects: vec![(EffectKind::SensorDelay, vec![0.05])],
+        seed,
+        noise: Noise::default(),
+        programme: Programme::Handling,
+    }
+}
+
+/// The sensor-delay campaign diagnosed against the two delays (seed 1):
+/// confounded.
+fn diagnosed() -> &'static (Campaign, Diagnosis) {
+    static D: OnceLock<(Campaign, Diagnosis)> = OnceLock::new();
+    D.get_or_init(|| {
+        let c = generate(&spec(1)).campaign(
+            vec![EffectKind::SensorDelay, EffectKind::SteerPath],
+            DiagnoseSettings::default(),
+        );
+        let d = diagnose(&c, None).unwrap();
+        (c, d)
+    })
+}
+
+#[test]
+fn separation_of_a_constant_offset_is_its_size_in_noise_floors_times_root_n() {
+    let n = 400;
+    let obs = |r: f64| Observed {
+        yaw_rate: vec![r; n],
+        ay: vec![0.0; n],
+        beta: vec![0.0; n],
+        roll: vec![0.0; n],
+    };
+    let logging = Logging {
+        interval: 0.01,
+        channels: [true, false, false],
+        ax: false,
+        bank: false,
+    };
+    let floors = [0.002, 0.05, 0.002];
+    let d = separation::separation(&obs(0.0), &obs(0.001), &floors, &logging);
+    assert!((d - 0.5 * (n as f64).sqrt()).abs() < 1e-9, "{d}");
+    // Symmetric, and blind to a channel the campaign does not measure.
+    assert_eq!(
+        d,
+        separation::separation(&obs(0.001), &obs(0.0), &floors, &logging)
+    );
+    let mut b = obs(0.0);
+    b.ay = vec![1.0; n];
+    assert_eq!(
+        separation::separation(&obs(0.0), &b, &floors, &logging),
+        0.0
+    );
+}
+
+#[test]
+fn candidates_read_back_from_a_diagnosis_replay_its_in_sample_errors() {
+    let (c, d) = diagnosed();
+    let fitted = Fitted::of(d);
+    let base = fitted.base(c);
+    let runs = Prepared::campaign_runs(c);
+    for r in d.ranking.iter() {
+        let cand = fitted.candidate(&r.effects).unwrap();
+        let m = cand.model(&base).unwrap();
+        let mut e = crate::diagnose::model::channels::ChannelErrors::default();
+        for run in &runs {
+            e.add(&run.errors(&m));
+        }
+        let j = e.combined(&fitted.scales);
+        assert!(
+            (j - r.insample_error_after).abs() < 1e-9 * j,
+            "{}: J {j} against the diagnosis's {}",
+            r.effect,
+            r.insample_error_after
+        );
+    }
+    // A wrong count of values is refused, not replayed.
+    let cand = fitted.candidate(&[EffectKind::SensorDelay]).unwrap();
+    assert!(cand.model_with(&base, &[0.05, 0.1]).is_none());
+}
+
+#[test]
+fn a_sensor_delay_and_a_steer_delay_are_separated_only_where_the_speed_changes() {
+    let (c, d) = diagnosed();
+    assert_eq!(
+        d.confounded.len(),
+        1,
+        "the campaign no longer confounds them"
+    );
+    let fitted = Fitted::of(d);
+    let design = design(
+        c,
+        &fitted,
+        &DesignRequest {
+            top: 40,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let set = &design.sets[0];
+    assert_eq!(set.members, ["sensor_delay", "steer_path"]);
+    let best = &set.ranked[0];
+    let speed_changes = [
+        Kind::BrakeInTurn,
+        Kind::AccelerateInTurn,
+        Kind::ConstantRadius,
+    ];
+    assert!(speed_changes.contains(&best.kind), "{best:?}");
+    // One 8 s run separates them by more noise floors than the campaign's
+    // 8 runs together.
+    assert!(best.separation > 10.0, "{}", best.separation);
+    assert!(
+        best.separation > 1.5 * set.campaign_separation,
+        "{} vs {}",
+        best.separation,
+        set.campaign_separation
+    );
+    for s in &set.ranked {
+        if matches!(
+            s.kind,
+            Kind::Step | Kind::Ramp | Kind::Sweep | Kind::LaneChange
+        ) {
+            assert!(
+                s.separation < 0.3 * best.separation,
+                "{}: {}",
+                s.name,
+                s.separation
+            );
+        }
+    }
+    // Every manoeuvre kept stays within the lateral limit.
+    for s in &set.ranked {
+        assert!(
+            s.peak_ay <= 1.1 * design.limits.ay_max() + 1e-9,
+            "{}: {}",
+            s.name,
+            s.peak_ay
+        );
+    }
+    assert_eq!(set.ranked.len() + set.excluded.len(), design.family);
+}
+
+#[test]
+fn on_a_car_that_behaves_as_the_reference_the_measured_separation_is_the_expected_within_its_uncertainty(
+) {
+    use crate::identify::data::gauss;
+    use rand::SeedableRng;
+    let (c, d) = diagnosed();
+    let fitted = Fitted::of(d);
+    let design = design(c, &fitted, &DesignRequest::default()).unwrap();
+    let best = &design.sets[0].ranked[0];
+    let u = best.uncertainty.unwrap();
+    // The parameters' part is small: the delays are pinned to 0.2 ms.
+    assert!(best.parameter_uncertainty.unwrap() < 0.5, "{best:?}");
+    let expected = best.expected.unwrap();
+    // The first sample's noise lowers it: the replays start there.
+    assert!(expected < best.separation && u > 1.5, "{best:?}");
+    // The run as the reference replays it, every channel with white noise
+    // at its floor: χ²_B − χ²_A has mean D² and deviation 2D.
+    let logging = Logging::of(c);
+    let template = logging.run(&best.name, &best.manoeuvre);
+    let reference = fitted.candidate(&[EffectKind::SensorDelay]).unwrap();
+    let model = reference.model(&fitted.base(c)).unwrap();
+    let clean = Prepared::new(&template, c.settings.step, 1e6).observe(&model);
+    let members = [vec![EffectKind::SensorDelay], vec![EffectKind::SteerPath]];
+    let seeds = 24;
+    let m: Vec<f64> = (0..seeds)
+        .map(|seed| {
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            let mut run = template.clone();
+            let f = fitted.noise_floors;
+            let mut noisy = |v: &[f64], s: f64| -> Vec<f64> {
+                v.iter().map(|x| x + s * gauss(&mut rng)).collect()
+            };
+            run.yaw_rate = noisy(&clean.yaw_rate, f[0]);
+            run.ay = Some(noisy(&clean.ay, f[1]));
+            run.beta = Some(noisy(&clean.beta, f[2]));
+            measured(c, &fitted, &members, &run).unwrap().separation
+        })
+        .collect();
+    let mean = m.iter().sum::<f64>() / seeds as f64;
+    let sd = (m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (seeds - 1) as f64).sqrt();
+    // Mean within 3 standard errors of the expected, deviation about the
+    // stated uncertainty.
+    assert!(
+        (mean - expected).abs() < 3.0 * u / (seeds as f64).sqrt(),
+        "{mean} against {expected} ± {u}"
+    );
+    assert!(sd > 0.6 * u && sd < 1.4 * u, "{sd} against {u}");
+}

@@ -1,0 +1,187 @@
+//! Designed manoeuvres driven on the proving ground: the truth of a
+//! campaign (its programme, effects and noise seed) drives open-loop
+//! manoeuvres given from outside — the scenario files `handling design`
+//! writes — and logs them as the programme logs its own runs (its sample
+//! rate and channels, its noise levels). The programme's own runs are not
+//! touched: the noise of a driven run is drawn from its own generator,
+//! seeded by the campaign's seed and the run's place among the driven
+//! ones, so adding a run to a campaign leaves every other run bit for bit.
+//!
+//! Each run starts from straight running at the manoeuvre's first speed and
+//! is logged from its first instant. A logged programme's `ax` is the
+//! speed's derivative and its `bank` 0 (a flat pad), both with the
+//! programme's noise. Units: SI, rad.
+
+use super::{
+    estimator, with_noise, Programme, SynthSpec, Truth, TruthModels, AX_NOISE, BANK_NOISE,
+};
+use crate::error::{ParamError, ParamReason};
+use crate::manoeuvre::Manoeuvre;
+use crate::measured::MeasuredRun;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::path::PathBuf;
+
+/// A manoeuvre to drive, with the name of the run it makes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DrivenRun {
+    /// The run's name (its file is `<name>.csv`).
+    pub name: String,
+    /// What the driver does.
+    pub manoeuvre: Manoeuvre,
+}
+
+/// The runs `truth` logs driving `runs` with the effects, noise and
+/// programme of `spec`. An error for a programme whose driver is
+/// closed-loop (the analogues of real logs) or one `truth` does not drive.
+pub fn drive(
+    spec: &SynthSpec,
+    truth: Truth,
+    runs: &[DrivenRun],
+) -> Result<Vec<MeasuredRun>, ParamError> {
+    let programme = spec.programme;
+    if matches!(
+        programme,
+        Programme::SedanWinding | Programme::RacingRearSteer
+    ) {
+        return Err(ParamError::without_value(
+            "programme",
+            ParamReason::DriveProgramme {
+                programme: programme.name().into(),
+            },
+        ));
+    }
+    let models = TruthModels::new(spec, truth)?;
+    Ok(runs
+        .iter()
+        .enumerate()
+        .map(|(k, r)| driven_run(&models, spec, truth, k, r))
+        .collect())
+}
+
+/// The sample interval of `programme`'s logger, s.
+fn interval(programme: Programme) -> f64 {
+    if programme.logged() {
+        0.04
+    } else {
+        0.01
+    }
+}
+
+/// Run `k` of the driven ones, logged with its own noise.
+fn driven_run(
+    models: &TruthModels,
+    spec: &SynthSpec,
+    truth: Truth,
+    k: usize,
+    r: &DrivenRun,
+) -> MeasuredRun {
+    let m = &r.manoeuvre;
+    let dt = interval(spec.programme);
+    let (t0, t1) = (m.start_time(), m.end_time());
+    let times: Vec<f64> = (0..)
+        .map(|i| t0 + dt * i as f64)
+        .take_while(|t| *t <= t1 + 1e-9)
+        .collect();
+    let (yaw_rate, ay, beta) = models.measure(truth, m, &times);
+    // Its own stream: the campaign's runs drew theirs from the seed alone.
+    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed ^ DRIVEN_STREAM.wrapping_mul(k as u64 + 1));
+    let n = spec.noise;
+    let p = spec.programme;
+    let yaw_rate = with_noise(&yaw_rate, n.yaw_rate, &mut rng);
+    let ay = with_noise(&ay, n.ay, &mut rng);
+    let beta = match p {
+        _ if !p.logs_beta() => None,
+        Programme::SlowOvalEstimatedBeta => Some(estimator::estimated(&times, &beta, &mut rng)),
+        _ => Some(with_noise(&beta, n.beta, &mut rng)),
+    };
+    let ax = p.logged().then(|| {
+        let rate: Vec<f64> = times.iter().map(|&t| m.speed_rate(t)).collect();
+        with_noise(&rate, AX_NOISE, &mut rng)
+    });
+    let bank = p
+        .logs_bank()
+        .then(|| with_noise(&vec![0.0; times.len()], BANK_NOISE, &mut rng));
+    MeasuredRun {
+        path: PathBuf::from(format!("{}.csv", r.name)),
+        speed: times.iter().map(|&t| m.speed(t)).collect(),
+        steer: times.iter().map(|&t| m.steer(t)).collect(),
+        yaw_rate,
+        ay: p.logs_ay().then_some(ay),
+        beta,
+        roll: None,
+        bank,
+        ax,
+        masked: Vec::new(),
+        t: times,
+    }
+}
+
+/// Mixed into the seed of the driven runs' noise (a constant with many
+/// bits set, so run k's stream is no other run's).
+const DRIVEN_STREAM: u64 = 0x9E37_79B9_7F4A_7C15;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::manoeuvre::StepSteer;
+    use crate::proving_ground::Noise;
+
+    fn spec(seed: u64) -> SynthSpec {
+        SynthSpec {
+            effects: vec![(
+                crate::diagnose::effects::EffectKind::SensorDelay,
+                vec![0.05],
+            )],
+            seed,
+            noise: Noise::default(),
+            programme: Programme::Handling,
+        }
+    }
+
+    fn step() -> DrivenRun {
+        DrivenRun {
+            name: "step".into(),
+            manoeuvre: Manoeuvre::StepSteer(StepSteer {
+                speed: 20.0,
+                amplitude: 0.02,
+                trim: 0.0,
+                start: 1.0,
+                rise_time: 0.15,
+                end: 4.0,
+            }),
+        }
+    }
+
+    #[test]
+    fn a_driven_run_is_the_truth_plus_its_own_seeded_noise() {
+        let s = spec(3);
+        let runs = drive(&s, Truth::Augmented, &[step()]).unwrap();
+        let r = &runs[0];
+        assert_eq!(r.t.len(), 401);
+        assert_eq!(r.t[0], 0.0);
+        // The truth's delayed response: nothing before the step plus 50 ms.
+        let quiet = r.yaw_rate[..100].iter().map(|x| x * x).sum::<f64>() / 100.0;
+        assert!(quiet.sqrt() < 2.0 * 0.003, "{}", quiet.sqrt());
+        assert!(r.yaw_rate[350] > 0.1, "{}", r.yaw_rate[350]);
+        // Seeded: the same again, another seed another noise.
+        assert_eq!(drive(&s, Truth::Augmented, &[step()]).unwrap()[0], *r);
+        assert_ne!(
+            drive(&spec(4), Truth::Augmented, &[step()]).unwrap()[0].yaw_rate,
+            r.yaw_rate
+        );
+        // A second run of the same manoeuvre draws other noise.
+        let two = drive(&s, Truth::Augmented, &[step(), step()]).unwrap();
+        assert_eq!(two[0], *r);
+        assert_ne!(two[1].yaw_rate, r.yaw_rate);
+    }
+
+    #[test]
+    fn an_analogue_drives_no_designed_manoeuvre() {
+        let mut s = spec(1);
+        s.effects.clear();
+        s.programme = Programme::SedanWinding;
+        let e = drive(&s, Truth::Augmented, &[step()]).unwrap_err();
+        assert!(e.to_string().contains("closed-loop"), "{e}");
+    }
+}

@@ -1,0 +1,160 @@
+//! `handling design` run as a user runs it: a campaign that confounds a
+//! sensor delay with a steer delay, diagnosed, designed for, the best
+//! manoeuvre simulated from its scenario file and driven on the proving
+//! ground, and the run measured against the prediction.
+
+use super::*;
+
+/// A synthetic campaign with a sensor delay, diagnosed against the two
+/// delays only (they come out confounded): its folder and diagnosis folder.
+fn confounded(dir: &Path, seed: &str) -> (PathBuf, PathBuf) {
+    let camp = synth_campaign(dir, "camp", &["--effects", "sensor_delay", "--seed", seed]);
+    let mut toml = fs::read_to_string(camp.join("vehicle.toml")).unwrap();
+    toml.push_str("effects = [\"sensor_delay\", \"steer_path\"]\n");
+    fs::write(camp.join("vehicle.toml"), toml).unwrap();
+    let out = dir.join("diagnosis");
+    let (_, d) = diagnose_to(&camp, &out);
+    assert_eq!(
+        d["confounded"][0]["effects"],
+        serde_json::json!(["sensor_delay", "steer_path"])
+    );
+    (camp, out)
+}
+
+#[test]
+fn a_confounded_delay_gets_a_manoeuvre_whose_speed_changes_written_as_a_scenario_that_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let (camp, diag) = confounded(dir.path(), "1");
+    let o = run(&["design", diag.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("sensor_delay / steer_path: the campaign's runs separate them by D = "),
+        "{text}"
+    );
+    let design = diag.join("design");
+    let j = read_json(&design.join("design.json"));
+    let set = &j["sets"][0];
+    assert_eq!(
+        set["members"],
+        serde_json::json!(["sensor_delay", "steer_path"])
+    );
+    let best = &set["ranked"][0];
+    // At constant speed a delay of the steer and a delay of the sensors
+    // are the same response: only a speed change tells them apart.
+    let kind = best["kind"].as_str().unwrap();
+    assert!(
+        ["brake_in_turn", "accelerate_in_turn", "constant_radius"].contains(&kind),
+        "{best}"
+    );
+    let (d, u) = (
+        best["separation"].as_f64().unwrap(),
+        best["uncertainty"].as_f64().unwrap(),
+    );
+    assert!(
+        d > 1.5 * set["campaign_separation"].as_f64().unwrap() && u >= 1.0 && u < 0.5 * d,
+        "{best}"
+    );
+    assert!(
+        best["peak_ay"].as_f64().unwrap()
+            <= 1.1
+                * j["limits"]["ay_share"].as_f64().unwrap()
+                * j["limits"]["ay_reached"].as_f64().unwrap()
+    );
+    // Its scenario file runs in `simulate` as written.
+    let name = best["name"].as_str().unwrap();
+    let scenario = design.join("scenarios").join(format!("{name}.toml"));
+    let sim = dir.path().join("sim");
+    let o = run(&[
+        "simulate",
+        scenario.to_str().unwrap(),
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(sim.join("history.csv").exists());
+    assert!(design.join("separation.png").exists());
+    // Driven on the proving ground (the same truth and seed) as a further
+    // run, and measured with the candidates as diagnosed before it.
+    let driven = dir.path().join("driven");
+    let o = run(&[
+        "synth",
+        "--effects",
+        "sensor_delay",
+        "--seed",
+        "1",
+        "--drive",
+        scenario.to_str().unwrap(),
+        "--out",
+        driven.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout)
+        .contains("9 handling runs, 1 of them driven from scenario files"));
+    let before = fs::read(camp.join("runs/step_040kph_3ms2.csv")).unwrap();
+    assert_eq!(
+        fs::read(driven.join("runs/step_040kph_3ms2.csv")).unwrap(),
+        before,
+        "a driven run moved the programme's noise"
+    );
+    let run_csv = driven.join("runs").join(format!("{name}.csv"));
+    let out = dir.path().join("measured");
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--measured",
+        run_csv.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let m = &read_json(&out.join("design.json"))["measured"][0];
+    assert!(m["separation"].as_f64().unwrap().is_finite(), "{m}");
+    assert!(String::from_utf8_lossy(&o.stdout).contains("separates them by"));
+}
+
+#[test]
+fn a_design_asks_for_candidates_the_diagnosis_fitted() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, diag) = confounded(dir.path(), "2");
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--effects",
+        "sensor_delay,yaw_inertia",
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("the diagnosis did not fit `yaw_inertia`; it fitted: "),
+        "{e}"
+    );
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--effects",
+        "sensor_dely,steer_path",
+    ]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("sensor_delay"), "{}", stderr(&o));
+    // A schedule with a time out of order is refused at its element.
+    let bad = dir.path().join("bad.toml");
+    let text = fs::read_to_string(root().join("scenarios/step_gbt6323_gim.toml")).unwrap();
+    let head = text
+        .split("[manoeuvre]")
+        .next()
+        .unwrap()
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    fs::write(&bad, format!("{head}[manoeuvre]\nkind = \"schedule\"\nt = [0, 1, 1]\nsteer = [0, 0.01, 0.01]\nspeed = [20, 20, 20]\n")).unwrap();
+    let o = run(&[
+        "simulate",
+        bad.to_str().unwrap(),
+        "--out",
+        dir.path().join("x").to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("`manoeuvre.t[2]` = 1: not after the time before it, 1 s"),
+        "{e}"
+    );
+}

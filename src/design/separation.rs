@@ -128,7 +128,7 @@ pub fn separation(a: &Observed, b: &Observed, floors: &[f64; 3], logging: &Loggi
 pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {
     let scales = floors.map(|f| if f > 0.0 { f } else { 1.0 });
     let mut r = vec![0.0; run.count()];
-    run.residuals(model, &scales, &mut r);
+    run.write_residuals(&run.observe(model), &scales, &mut r);
     r.iter().map(|x| x * x).sum()
 }
 

@@ -10,6 +10,7 @@ pub mod paths;
 pub mod rig;
 mod run;
 pub mod scenario;
+mod schedule;
 pub mod study;
 pub mod sweep;
 mod tables;

@@ -5,6 +5,7 @@
 //! speeds in m/s.
 
 use super::paths::beside;
+pub use super::schedule::ScheduleSpec;
 use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
@@ -168,20 +169,6 @@ pub enum ManoeuvreSpec {
     Schedule(ScheduleSpec),
 }
 
-/// Steer and speed given at breakpoints and linear between them, held
-/// after the last: the run starts from straight running at its first
-/// speed, so its first steer is normally 0.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ScheduleSpec {
-    /// Breakpoint times, s, strictly increasing; the run ends at the last.
-    pub t: Vec<f64>,
-    /// Front road-wheel steer at each, rad.
-    pub steer: Vec<f64>,
-    /// Forward speed at each, m/s.
-    pub speed: Vec<f64>,
-}
-
 /// A scenario file.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -241,7 +228,7 @@ pub struct Scenario {
 pub(crate) const MAX_ROAD_WHEEL_STEER: f64 = std::f64::consts::FRAC_PI_4;
 
 /// A steer angle a manoeuvre reaches, within ±[`MAX_ROAD_WHEEL_STEER`].
-fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> {
+pub(super) fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> {
     ParamError::in_range(
         key,
         steer,
@@ -261,7 +248,7 @@ const MAX_FREQUENCY: f64 = 50.0;
 /// A manoeuvre's speed: positive and below [`MAX_SPEED`], refused at its
 /// own key (an absurd speed otherwise hangs the integration, or surfaces
 /// as a non-finite straight-running steer blamed on `steer`).
-fn speed(speed: f64) -> Result<(), ParamError> {
+pub(super) fn speed(speed: f64) -> Result<(), ParamError> {
     ParamError::positive("speed", speed)?;
     ParamError::in_range("speed", speed, 0.0, MAX_SPEED, Limit::ManoeuvreSpeed)
 }
@@ -537,38 +524,6 @@ fn ramp_reach(r: &RampSteer) -> Result<(), ParamError> {
     ))
 }
 
-/// A schedule's columns: equal lengths, times finite and increasing, each
-/// speed and steer within the manoeuvres' limits, refused at the element.
-fn schedule(s: &ScheduleSpec) -> Result<(), ParamError> {
-    let (n, m, k) = (s.t.len(), s.steer.len(), s.speed.len());
-    if n != m || n != k || n < 2 {
-        return Err(ParamError::without_value(
-            "t",
-            ParamReason::ScheduleLengths {
-                t: n,
-                steer: m,
-                speed: k,
-            },
-        ));
-    }
-    for (i, w) in s.t.iter().enumerate() {
-        let at = |key: &str| format!("{key}[{i}]");
-        ParamError::finite(&at("t"), *w)?;
-        if i > 0 && *w <= s.t[i - 1] {
-            let before = s.t[i - 1];
-            return Err(ParamError::new(
-                &at("t"),
-                *w,
-                ParamReason::ScheduleTime { before },
-            ));
-        }
-        ParamError::finite(&at("steer"), s.steer[i])?;
-        road_wheel_steer(&at("steer"), s.steer[i])?;
-        speed(s.speed[i]).map_err(|e| ParamError::new(&at("speed"), s.speed[i], e.reason))?;
-    }
-    Ok(())
-}
-
 /// Ramp, sine and sweep steers: their timing and rates checked.
 fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
     Ok(match spec {
@@ -597,7 +552,7 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::Schedule(s) => {
-            check(src, schedule(s))?;
+            check(src, super::schedule::check(s))?;
             Manoeuvre::Replay(Replay {
                 t: s.t.clone(),
                 steer: s.steer.clone(),

@@ -1,0 +1,54 @@
+//! A manoeuvre given as a schedule (`kind = "schedule"` in a scenario's
+//! `[manoeuvre]`): steer and speed at breakpoints, linear between them —
+//! the form `handling design` writes its manoeuvres in — and the checks
+//! that refuse a bad one at its element. Units: s, rad, m/s.
+
+use super::scenario::{road_wheel_steer, speed};
+use crate::error::{ParamError, ParamReason};
+use serde::Deserialize;
+
+/// Steer and speed given at breakpoints and linear between them, held
+/// after the last: the run starts from straight running at its first
+/// speed, so its first steer is normally 0.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScheduleSpec {
+    /// Breakpoint times, s, strictly increasing; the run ends at the last.
+    pub t: Vec<f64>,
+    /// Front road-wheel steer at each, rad.
+    pub steer: Vec<f64>,
+    /// Forward speed at each, m/s.
+    pub speed: Vec<f64>,
+}
+
+/// A schedule's columns: equal lengths, times finite and increasing, each
+/// speed and steer within the manoeuvres' limits, refused at the element.
+pub(super) fn check(s: &ScheduleSpec) -> Result<(), ParamError> {
+    let (n, m, k) = (s.t.len(), s.steer.len(), s.speed.len());
+    if n != m || n != k || n < 2 {
+        return Err(ParamError::without_value(
+            "t",
+            ParamReason::ScheduleLengths {
+                t: n,
+                steer: m,
+                speed: k,
+            },
+        ));
+    }
+    for (i, w) in s.t.iter().enumerate() {
+        let at = |key: &str| format!("{key}[{i}]");
+        ParamError::finite(&at("t"), *w)?;
+        if i > 0 && *w <= s.t[i - 1] {
+            let before = s.t[i - 1];
+            return Err(ParamError::new(
+                &at("t"),
+                *w,
+                ParamReason::ScheduleTime { before },
+            ));
+        }
+        ParamError::finite(&at("steer"), s.steer[i])?;
+        road_wheel_steer(&at("steer"), s.steer[i])?;
+        speed(s.speed[i]).map_err(|e| ParamError::new(&at("speed"), s.speed[i], e.reason))?;
+    }
+    Ok(())
+}

@@ -9,6 +9,7 @@ mod columns;
 pub mod paths;
 pub mod rig;
 mod run;
+mod limits;
 pub mod scenario;
 mod schedule;
 pub mod study;

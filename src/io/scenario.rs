@@ -6,6 +6,7 @@
 
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
+use super::limits::{frequency, road_wheel_steer, speed, MAX_ROAD_WHEEL_STEER};
 use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
@@ -220,42 +221,6 @@ pub struct Scenario {
     pub inputs: Vec<PathBuf>,
     /// What cleaning the replayed run found and excluded.
     pub cleaning: Option<crate::measured::clean::CleaningReport>,
-}
-
-/// The largest front road-wheel steer a manoeuvre may ask for, rad (45°):
-/// above a car's lock (a mean road-wheel steer of about 35–40°), and the
-/// angle beyond which a steer in radians is likely one in degrees.
-pub(crate) const MAX_ROAD_WHEEL_STEER: f64 = std::f64::consts::FRAC_PI_4;
-
-/// A steer angle a manoeuvre reaches, within ±[`MAX_ROAD_WHEEL_STEER`].
-pub(super) fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> {
-    ParamError::in_range(
-        key,
-        steer,
-        -MAX_ROAD_WHEEL_STEER,
-        MAX_ROAD_WHEEL_STEER,
-        Limit::RoadWheelSteer,
-    )
-}
-
-/// The fastest manoeuvre, m/s ([`Limit::ManoeuvreSpeed`]).
-const MAX_SPEED: f64 = 150.0;
-
-/// The fastest steer frequency, Hz ([`Limit::SteerFrequency`]): a sine of
-/// 1 MHz asked 20 million integration steps before it was refused.
-const MAX_FREQUENCY: f64 = 50.0;
-
-/// A manoeuvre's speed: positive and below [`MAX_SPEED`], refused at its
-/// own key (an absurd speed otherwise hangs the integration, or surfaces
-/// as a non-finite straight-running steer blamed on `steer`).
-pub(super) fn speed(speed: f64) -> Result<(), ParamError> {
-    ParamError::positive("speed", speed)?;
-    ParamError::in_range("speed", speed, 0.0, MAX_SPEED, Limit::ManoeuvreSpeed)
-}
-
-/// A steer frequency at `key`: at most [`MAX_FREQUENCY`], above `lo`.
-fn frequency(key: &str, f: f64, lo: f64) -> Result<(), ParamError> {
-    ParamError::in_range(key, f, lo, MAX_FREQUENCY, Limit::SteerFrequency)
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end

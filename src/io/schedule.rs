@@ -3,7 +3,7 @@
 //! the form `handling design` writes its manoeuvres in — and the checks
 //! that refuse a bad one at its element. Units: s, rad, m/s.
 
-use super::scenario::{road_wheel_steer, speed};
+use super::limits::{road_wheel_steer, speed};
 use crate::error::{ParamError, ParamReason};
 use serde::Deserialize;
 

@@ -124,6 +124,9 @@ impl SynthReport {
     /// own and not used: the truth plays the car): each run is named after
     /// its file and logged as the programme logs, with its own noise.
     pub fn drive(&mut self, drives: &[PathBuf]) -> Result<(), Error> {
+        if drives.is_empty() {
+            return Ok(());
+        }
         let mut runs = Vec::new();
         for p in drives {
             let sc = crate::io::load_scenario(p)?;

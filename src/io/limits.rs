@@ -40,4 +40,3 @@ pub(super) fn speed(speed: f64) -> Result<(), ParamError> {
 pub(super) fn frequency(key: &str, f: f64, lo: f64) -> Result<(), ParamError> {
     ParamError::in_range(key, f, lo, MAX_FREQUENCY, Limit::SteerFrequency)
 }
-

@@ -6,10 +6,10 @@
 
 pub mod campaign;
 mod columns;
+mod limits;
 pub mod paths;
 pub mod rig;
 mod run;
-mod limits;
 pub mod scenario;
 mod schedule;
 pub mod study;

@@ -4,9 +4,9 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
+use super::limits::{frequency, road_wheel_steer, speed, MAX_ROAD_WHEEL_STEER};
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
-use super::limits::{frequency, road_wheel_steer, speed, MAX_ROAD_WHEEL_STEER};
 use super::tables::{check_road, check_vehicle, resolve_model};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};

@@ -32,6 +32,20 @@ pub struct FittedValue {
     pub free: bool,
 }
 
+impl FittedValue {
+    /// Value `value` of `name` with standard error `std_error` (NaN where
+    /// unknown); its uncertainty counts where `free` and the error is
+    /// finite.
+    pub fn new(name: &str, value: f64, std_error: f64, free: bool) -> Self {
+        Self {
+            name: name.to_string(),
+            value,
+            std_error,
+            free: free && std_error.is_finite(),
+        }
+    }
+}
+
 /// One candidate as the diagnosis fitted it on all runs.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FittedCandidate {
@@ -55,12 +69,7 @@ impl FittedCandidate {
 
     /// The candidate of a diagnosis's ranking.
     pub fn of(r: &Ranked) -> Self {
-        let value = |name: &str, v: f64, se: f64, free: bool| FittedValue {
-            name: name.to_string(),
-            value: v,
-            std_error: se,
-            free: free && se.is_finite(),
-        };
+        let value = FittedValue::new;
         Self {
             effects: r.effects.clone(),
             parameters: r
@@ -134,8 +143,6 @@ pub struct Fitted {
     pub noise_level: f64,
     /// Single effects and combinations, as ranked.
     pub candidates: Vec<FittedCandidate>,
-    /// The verdict's effects (empty without one).
-    pub verdict: Vec<EffectKind>,
     /// Each confounded set: the verdict's first effect and its look-alikes.
     pub confounded: Vec<Vec<EffectKind>>,
 }
@@ -161,7 +168,6 @@ impl Fitted {
                 .chain(&d.combinations)
                 .map(FittedCandidate::of)
                 .collect(),
-            verdict: d.verdict.effects().to_vec(),
             confounded: d.confounded.iter().map(|c| c.effects.clone()).collect(),
         }
     }

@@ -38,6 +38,7 @@ use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::Prepared;
 use crate::error::{DesignError, Error};
 use crate::manoeuvre::Manoeuvre;
+use crate::measured::MeasuredRun;
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -255,12 +256,22 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     let logging = Logging::of(c);
     let base = fitted.base(c);
     let family = family::family(&base, &limits);
+    let runs = Prepared::campaign_runs(c);
     let sets = sets(fitted, req)?
         .into_iter()
         .map(|(members, source)| {
-            design_set(
-                c, fitted, &base, &members, source, &family, &limits, &logging, req.top,
-            )
+            let cx = SetContext {
+                c,
+                fitted,
+                base: &base,
+                members: &members,
+                models: models(&members, &base)?,
+                labels: members.iter().map(|m| m.label()).collect(),
+                limits: &limits,
+                logging: &logging,
+                runs: &runs,
+            };
+            design_set(&cx, source, &family, req.top)
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Design {
@@ -307,19 +318,21 @@ struct SetContext<'a> {
     labels: Vec<String>,
     limits: &'a Limits,
     logging: &'a Logging,
+    /// The campaign's runs, prepared once for every set.
+    runs: &'a [Prepared],
 }
 
 impl SetContext<'_> {
     /// Manoeuvre `m` logged as the campaign logs, ready for replays.
-    fn prepared(&self, name: &str, m: &Manoeuvre) -> Prepared {
+    fn prepared(&self, logged: &MeasuredRun) -> Prepared {
         let set = &self.c.settings;
-        Prepared::new(&self.logging.run(name, m), set.step, set.sample_rate)
+        Prepared::new(logged, set.step, set.sample_rate)
     }
 
     /// Every member's response to `d`, its pairs' separations, or why it
     /// is left out.
     fn score(&self, d: &Designed) -> Result<(Scored, Prediction), Excluded> {
-        let run = self.prepared(&d.name, &d.manoeuvre);
+        let run = self.prepared(&self.logging.run(&d.name, &d.manoeuvre));
         let obs: Vec<Observed> = self.models.iter().map(|m| run.observe(m)).collect();
         let speed: Vec<f64> = run.times.iter().map(|&t| d.manoeuvre.speed(t)).collect();
         let peak = peak_ay(&obs[0], &speed, self.logging);
@@ -368,13 +381,14 @@ impl SetContext<'_> {
 
     /// The expected measured separation of `s` against its weakest pair,
     /// its uncertainty and the runs the confounding rule needs.
-    fn complete(&self, s: &mut Scored, campaign_residuals: usize) {
+    fn complete(&self, s: &mut Scored) {
         let weakest = s
             .pairs
             .iter()
             .position(|p| p.separation == s.separation)
             .map_or(1, |k| k + 1);
-        let run = self.prepared(&s.name, &s.manoeuvre);
+        let logged = self.logging.run(&s.name, &s.manoeuvre);
+        let run = self.prepared(&logged);
         let (floors, logging) = (&self.fitted.noise_floors, self.logging);
         let pair = [&self.models[0], &self.models[weakest]];
         let observe = |m: &Augmented| run.observe(m);
@@ -384,7 +398,6 @@ impl SetContext<'_> {
         ];
         let spread = separation::parameter_spread(members, self.base, &observe, floors, logging);
         let set = &self.c.settings;
-        let logged = logging.run(&s.name, &s.manoeuvre);
         let terms = separation::start_terms(&logged, pair, floors, set.step, set.sample_rate);
         // χ²_B − χ²_A = D² + start + 2·D·(noise + parameters), its mean
         // D² plus the start's shift; the measured separation is its root.
@@ -397,34 +410,20 @@ impl SetContext<'_> {
             reference: self.members[0].heldout_error,
             other: self.members[weakest].heldout_error,
             noise: self.fitted.noise_level,
-            residuals: campaign_residuals,
+            residuals: self.runs.iter().map(Prepared::count).sum(),
         };
         s.repetitions = evidence::repetitions(&held, &run, pair, self.fitted, logging);
     }
 }
 
-#[allow(clippy::too_many_arguments)]
+/// The design for the set of `cx`: the family scored, the best `top`
+/// completed.
 fn design_set(
-    c: &Campaign,
-    fitted: &Fitted,
-    base: &Augmented,
-    members: &[FittedCandidate],
+    cx: &SetContext,
     source: SetSource,
     family: &[Designed],
-    limits: &Limits,
-    logging: &Logging,
     top: usize,
 ) -> Result<SetDesign, Error> {
-    let cx = SetContext {
-        c,
-        fitted,
-        base,
-        members,
-        models: models(members, base)?,
-        labels: members.iter().map(|m| m.label()).collect(),
-        limits,
-        logging,
-    };
     let (mut ranked, mut excluded) = (Vec::new(), Vec::new());
     for s in family.par_iter().map(|d| cx.score(d)).collect::<Vec<_>>() {
         match s {
@@ -434,16 +433,14 @@ fn design_set(
     }
     ranked.sort_by(|a, b| b.0.separation.total_cmp(&a.0.separation));
     ranked.truncate(top.max(1));
-    let campaign_residuals: usize = Prepared::campaign_runs(c).iter().map(Prepared::count).sum();
     for (s, _) in &mut ranked {
-        cx.complete(s, campaign_residuals);
+        cx.complete(s);
     }
-    let campaign_separation = campaign_separation(c, &cx.models, &fitted.noise_floors, logging);
     let best = ranked.first().map(|(_, p)| p.clone());
     Ok(SetDesign {
-        members: cx.labels,
+        members: cx.labels.clone(),
         source,
-        campaign_separation,
+        campaign_separation: campaign_separation(cx),
         ranked: ranked.into_iter().map(|(s, _)| s).collect(),
         excluded,
         best,
@@ -452,28 +449,24 @@ fn design_set(
 
 /// D of the reference against its weakest look-alike over all the
 /// campaign's runs (each replayed from its measured start).
-fn campaign_separation(
-    c: &Campaign,
-    models: &[Augmented],
-    floors: &[f64; 3],
-    logging: &Logging,
-) -> f64 {
-    let runs = Prepared::campaign_runs(c);
-    (1..models.len())
-        .map(|k| {
-            runs.par_iter()
-                .map(|r| {
-                    let d = separation::separation(
-                        &r.observe(&models[0]),
-                        &r.observe(&models[k]),
-                        floors,
-                        logging,
-                    );
-                    d * d
+fn campaign_separation(cx: &SetContext) -> f64 {
+    let floors = &cx.fitted.noise_floors;
+    // Each run's reference replay once, against every look-alike's.
+    let per_run: Vec<Vec<f64>> = cx
+        .runs
+        .par_iter()
+        .map(|r| {
+            let reference = r.observe(&cx.models[0]);
+            cx.models[1..]
+                .iter()
+                .map(|m| {
+                    separation::separation(&reference, &r.observe(m), floors, cx.logging).powi(2)
                 })
-                .sum::<f64>()
-                .sqrt()
+                .collect()
         })
+        .collect();
+    (0..cx.models.len() - 1)
+        .map(|k| per_run.iter().map(|d| d[k]).sum::<f64>().sqrt())
         .fold(f64::INFINITY, f64::min)
 }
 

@@ -22,6 +22,7 @@
 
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::{Augmented, Observed};
+use crate::diagnose::pipeline::observed_channel;
 use crate::diagnose::{Channel, Prepared};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
@@ -87,31 +88,16 @@ impl Logging {
     }
 }
 
-/// The channels of an observation that a campaign measures, with their
-/// noise floors.
-fn channels(obs: &Observed, floors: &[f64; 3], logging: &Logging) -> Vec<(Channel, Vec<f64>, f64)> {
-    Channel::ALL
-        .into_iter()
-        .filter(|c| logging.channels[c.index()] && floors[c.index()] > 0.0)
-        .map(|c| {
-            let v = match c {
-                Channel::YawRate => obs.yaw_rate.clone(),
-                Channel::Ay => obs.ay.clone(),
-                Channel::Beta => obs.beta.clone(),
-            };
-            (c, v, floors[c.index()])
-        })
-        .collect()
-}
-
 /// The separation D of two observations of the same run (NaN when either
 /// diverged).
 pub fn separation(a: &Observed, b: &Observed, floors: &[f64; 3], logging: &Logging) -> f64 {
-    let ca = channels(a, floors, logging);
-    let cb = channels(b, floors, logging);
     let mut s = 0.0;
-    for ((_, ya, sigma), (_, yb, _)) in ca.iter().zip(&cb) {
-        for (x, y) in ya.iter().zip(yb) {
+    for c in Channel::ALL {
+        let sigma = floors[c.index()];
+        if !logging.channels[c.index()] || sigma <= 0.0 {
+            continue;
+        }
+        for (x, y) in observed_channel(a, c).iter().zip(observed_channel(b, c)) {
             let d = (y - x) / sigma;
             s += d * d;
         }

@@ -62,7 +62,6 @@ struct DiagnosisFile {
     gap: GapFile,
     ranking: Vec<CandidateFile>,
     combinations: Vec<CandidateFile>,
-    verdict: VerdictFile,
     confounded: Vec<ConfoundedFile>,
 }
 
@@ -112,12 +111,6 @@ struct AxleFile {
 }
 
 #[derive(Deserialize)]
-struct VerdictFile {
-    #[serde(default)]
-    effects: Vec<String>,
-}
-
-#[derive(Deserialize)]
 struct ConfoundedFile {
     effects: Vec<String>,
 }
@@ -146,22 +139,20 @@ fn candidate(path: &Path, c: &CandidateFile) -> Result<FittedCandidate, Error> {
         parameters: c
             .parameters
             .iter()
-            .map(|p| FittedValue {
-                name: p.name.clone(),
-                value: p.value,
-                std_error: nan(p.std_error),
-                free: p.determined && !p.at_bound && p.std_error.is_some(),
+            .map(|p| {
+                FittedValue::new(
+                    &p.name,
+                    p.value,
+                    nan(p.std_error),
+                    p.determined && !p.at_bound,
+                )
             })
             .collect(),
         axles: c.axles.as_ref().map(|a| {
             a.iter()
-                .map(|x| FittedValue {
-                    name: x.name.clone(),
-                    value: x.value,
-                    std_error: nan(x.std_error),
-                    free: x.limit.as_ref().is_none_or(|l| l.is_null())
-                        && !x.held
-                        && x.std_error.is_some(),
+                .map(|x| {
+                    let free = x.limit.as_ref().is_none_or(|l| l.is_null()) && !x.held;
+                    FittedValue::new(&x.name, x.value, nan(x.std_error), free)
                 })
                 .collect()
         }),
@@ -207,7 +198,6 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, PathBuf), Error> {
             .chain(&f.combinations)
             .map(|c| candidate(&path, c))
             .collect::<Result<_, _>>()?,
-        verdict: kinds(&path, &f.verdict.effects)?,
         confounded: f
             .confounded
             .iter()
@@ -270,8 +260,7 @@ fn vehicle_table(c: &Campaign) -> String {
 
 /// A number as TOML writes it (always with its decimal point or exponent).
 fn num(v: f64) -> String {
-    let s = format!("{v:?}");
-    s
+    format!("{v:?}")
 }
 
 fn list(v: &[f64]) -> String {

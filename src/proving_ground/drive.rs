@@ -12,8 +12,10 @@
 //! speed's derivative and its `bank` 0 (a flat pad), both with the
 //! programme's noise. Units: SI, rad.
 
+use super::driver::LOG_RATE;
 use super::{
     estimator, with_noise, Programme, SynthSpec, Truth, TruthModels, AX_NOISE, BANK_NOISE,
+    HANDLING_INTERVAL,
 };
 use crate::error::{ParamError, ParamReason};
 use crate::manoeuvre::Manoeuvre;
@@ -62,9 +64,9 @@ pub fn drive(
 /// The sample interval of `programme`'s logger, s.
 fn interval(programme: Programme) -> f64 {
     if programme.logged() {
-        0.04
+        1.0 / LOG_RATE
     } else {
-        0.01
+        HANDLING_INTERVAL
     }
 }
 

@@ -242,7 +242,7 @@ pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamE
             .into_iter()
             .map(|(name, m)| {
                 let times: Vec<f64> = (0..)
-                    .map(|i| 3.0 + 0.01 * i as f64)
+                    .map(|i| 3.0 + HANDLING_INTERVAL * i as f64)
                     .take_while(|t| *t <= m.end_time() + 1e-9)
                     .collect();
                 let (yaw_rate, ay, beta) = models.measure(truth, &m, &times);
@@ -316,6 +316,9 @@ fn finish(
         },
     }
 }
+
+/// Sample interval of the handling programme's logger, s (100 Hz).
+pub(crate) const HANDLING_INTERVAL: f64 = 0.01;
 
 /// Noise of the logged `ax` (m/s²) and `bank` (rad) channels.
 pub(crate) const AX_NOISE: f64 = 0.05;

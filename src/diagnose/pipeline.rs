@@ -307,11 +307,12 @@ fn grid_note(ctx: &Context, step: f64) -> Option<Note> {
     })
 }
 
-/// Where the gap lies: every run replayed by the all-run base model.
-fn base_gaps(c: &Campaign, all: &Augmented) -> Vec<RunGap> {
+/// Where the gap lies: every run replayed by the all-run base model, each
+/// channel against its trusted noise floor.
+fn base_gaps(c: &Campaign, all: &Augmented, floors: &[f64; 3]) -> Vec<RunGap> {
     c.runs
         .par_iter()
-        .map(|run| base_run_gap(all, run, c.settings.step))
+        .map(|run| base_run_gap(all, run, c.settings.step, floors))
         .collect()
 }
 
@@ -393,7 +394,7 @@ fn run(
         p.fetch_add(1, Ordering::Relaxed);
     }
 
-    let run_gaps = base_gaps(c, &bases.all);
+    let run_gaps = base_gaps(c, &bases.all, &floors);
     let calibrated = calibrated(c);
     let ctx = Context {
         calibrated,

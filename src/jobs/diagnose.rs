@@ -151,16 +151,24 @@ impl DiagnoseReport {
         out.extend(self.cleaning.iter().map(|l| format!("  cleaning: {l}")));
         let calibration = d.calibration.lines().into_iter();
         out.extend(calibration.map(|l| format!("  calibration: {l}")));
-        out.extend(
-            d.road
-                .iter()
-                .filter_map(|g| g.line())
-                .map(|l| format!("  road: {l}")),
-        );
+        let road: Vec<String> = d.road.iter().filter_map(|g| g.line()).collect();
+        out.extend(road.iter().take(ROAD_LINES).map(|l| format!("  road: {l}")));
+        if road.len() > ROAD_LINES {
+            // A long log cut into pieces has a line per piece: the rest
+            // are in the JSON report and on the page.
+            out.push(format!(
+                "  road: … and {} runs more (every one in the JSON report)",
+                road.len() - ROAD_LINES
+            ));
+        }
         out.extend(findings(d));
         out
     }
 }
+
+/// Runs whose road geometry the terminal lists (a programme's runs); the
+/// pieces of a long log beyond are counted.
+const ROAD_LINES: usize = 8;
 
 /// The findings: base model, gap, candidates, verdict, shrinkage.
 fn findings(d: &Diagnosis) -> Vec<String> {
@@ -200,6 +208,19 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     }
     out.extend(screened_lines(d));
     out.push(format!("verdict: {}", d.verdict.statement()));
+    // The verdict's own axles where they were refitted with it (no tyre
+    // data): the base's line above is not what the verdict stands on.
+    let effects = d.verdict.effects();
+    let verdict_row = d.ranking.iter().chain(d.combinations.iter());
+    if let Some(a) = verdict_row
+        .filter(|r| !effects.is_empty() && r.effects == effects)
+        .find_map(|r| r.axles.as_ref())
+    {
+        out.push(format!(
+            "  axles fitted with it: {}",
+            words::axle_values(a).join(", ")
+        ));
+    }
     if let Verdict::Explained(e) = &d.verdict {
         out.extend(
             e.evidence

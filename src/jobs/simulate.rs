@@ -102,7 +102,9 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     };
     let replay = sc.measured.as_ref().map(|run| ReplayGap {
         run: run.path.display().to_string(),
-        channels: run_gap(run, h),
+        // A lone replay has no trusted uncertainty: each channel against
+        // its own scatter.
+        channels: run_gap(run, h, &[0.0; 3]),
         cleaning: sc.cleaning.clone(),
     });
     Ok(SimulateReport {

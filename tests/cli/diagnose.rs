@@ -603,6 +603,21 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         printed.starts_with("putnam_run4_2: 23 runs (pieces of 1 file), 2 candidate effects"),
         "{printed}"
     );
+    // The verdict's own axles, refitted with the delay, under it: the
+    // base's line is not what the verdict stands on.
+    let front = best["axles"][0]["value"].as_f64().unwrap();
+    assert!(
+        printed.contains(&format!(
+            "\n  axles fitted with it: front cornering coefficient {front:.1} ± "
+        )),
+        "{printed}"
+    );
+    // 23 pieces, 23 road lines: eight printed, the rest counted.
+    assert_eq!(printed.matches("\n  road: ").count(), 9, "{printed}");
+    assert!(
+        printed.contains("\n  road: … and 15 runs more (every one in the JSON report)\n"),
+        "{printed}"
+    );
     // The log has no accelerometer: its |ay| levels are u·r, and say so.
     assert!(
         printed.contains("|ay| levels are u·r on the 23 of 23 runs without an ay channel"),
@@ -653,6 +668,23 @@ fn effects_the_runs_cannot_show_are_left_out_with_a_note() {
         .map(|r| r["effect"].as_str().unwrap())
         .collect();
     assert_eq!(ranked, ["sensor_bias"]);
+    // No run has a sideslip: its offset is held at 0, marked, and said so;
+    // the two offsets the runs measure are fitted.
+    let unseen: Vec<(&str, bool)> = d["ranking"][0]["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p["name"].as_str().unwrap(), p["unseen"].as_bool().unwrap()))
+        .collect();
+    assert_eq!(
+        unseen,
+        [
+            ("sensor_bias.yaw_rate", false),
+            ("sensor_bias.ay", false),
+            ("sensor_bias.beta", true)
+        ]
+    );
+    assert_eq!(d["ranking"][0]["parameters"][2]["value"], 0.0);
 }
 
 #[test]

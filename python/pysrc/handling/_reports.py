@@ -384,11 +384,12 @@ class RankedEffect:
     reduction_percent: float
     """Share of the held-out gap above noise removed, %."""
     warning: Optional[str]
-    """Cross-validation that disagrees with the fit, axles that are no
-    tyre, refits that did not converge, in words (None without)."""
+    """Cross-validation that disagrees with the fit (and fold refits that
+    landed far from it), axles that are no tyre, refits that did not
+    converge, in words (None without)."""
     warning_details: Optional[List[Dict[str, Any]]]
-    """The same typed (``kind``: ``disagreement``, ``axles_no_tyre``,
-    ``folds_not_converged``)."""
+    """The same typed (``kind``: ``disagreement``, ``folds_far``,
+    ``axles_no_tyre``, ``folds_not_converged``)."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "RankedEffect":

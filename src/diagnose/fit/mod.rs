@@ -66,6 +66,11 @@ pub struct FitOutcome {
     pub converged: bool,
     /// How the global stage searched (set by the caller that ran it).
     pub global: GlobalSearch,
+    /// Whether each parameter is held at its off value because no residual
+    /// responds to it (an offset of a channel no run measures): reported as
+    /// held, not counted in the BIC (empty: none held, as in a refit).
+    #[serde(skip)]
+    pub unseen: Vec<bool>,
     /// The data residuals and their Jacobian at the optimum (fits polished
     /// to convergence): the fold refits start from them.
     #[serde(skip)]
@@ -95,10 +100,22 @@ pub fn pair_index(n: usize, a: usize, b: usize) -> usize {
 
 impl FitOutcome {
     /// Bayesian information criterion of a Gaussian error model with the
-    /// variance estimated: `N·ln(RSS/N) + k·ln N`.
+    /// variance estimated: `N·ln(RSS/N) + k·ln N`, `k` the parameters the
+    /// data see (one held because no residual responds to it costs
+    /// nothing: it is no degree of freedom of the fit).
     pub fn bic(&self) -> f64 {
         let n = self.residuals.max(1) as f64;
-        n * (2.0 * self.cost / n).max(1e-300).ln() + self.params.len() as f64 * n.ln()
+        n * (2.0 * self.cost / n).max(1e-300).ln() + self.free_count() as f64 * n.ln()
+    }
+
+    /// The parameters the data see (all but the [`FitOutcome::unseen`]).
+    pub fn free_count(&self) -> usize {
+        self.params.len() - self.unseen.iter().filter(|&&u| u).count()
+    }
+
+    /// Whether parameter `i` is held because no residual responds to it.
+    pub fn is_unseen(&self, i: usize) -> bool {
+        self.unseen.get(i).copied().unwrap_or(false)
     }
 }
 
@@ -199,6 +216,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         (lm.params, data_cost, lm.converged)
     };
     let mut params = params;
+    let mut unseen = Vec::new();
     let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
     let (std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
@@ -208,8 +226,9 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
             // run set without ay) is wherever the swarm left it: report its
             // off value (the effect off), which fits as well.
             let off = problem.clamp(off.unwrap_or(start));
-            for (i, seen) in seen_columns(&linear.jacobian).into_iter().enumerate() {
-                if !seen {
+            unseen = seen_columns(&linear.jacobian).iter().map(|s| !s).collect();
+            for (i, &u) in unseen.iter().enumerate() {
+                if u {
                     params[i] = off[i];
                 }
             }
@@ -231,6 +250,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         evaluations: evaluations + 1,
         converged,
         global: GlobalSearch::None,
+        unseen,
         linear,
     };
     (outcome, at)
@@ -331,4 +351,50 @@ fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
         })
         .collect();
     DMatrix::from_fn(r0.len(), pairs.len(), |i, c| columns[c][i])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::refit::tests::{axle_model, runs, AXLES, SCALES};
+    use super::*;
+
+    /// A fourth parameter no residual responds to (an offset of a channel
+    /// no run measures) is held at its off value, marked unseen, given no
+    /// standard error and not counted: the fit's BIC is that of the three
+    /// the data see.
+    #[test]
+    fn a_parameter_no_residual_responds_to_is_held_at_its_off_value_and_not_counted() {
+        let runs = runs();
+        let three = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
+        let mut bounds = AXLES.to_vec();
+        bounds.push((-1.0, 1.0));
+        let four = Problem::new(
+            |p: &[f64]| axle_model(&p[..3]),
+            runs.iter().collect(),
+            SCALES,
+            bounds,
+        );
+        let f3 = fit(&three, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
+        let start = [10.0, 10.0, 1.0, 0.7];
+        let off = [10.0, 10.0, 1.0, 0.0];
+        let f4 = fit(&four, &start, Some(&off), Polish::LevenbergMarquardt);
+        assert_eq!(f4.unseen, [false, false, false, true]);
+        assert_eq!(f4.params[3], 0.0);
+        assert!(f4.std_errors[3].is_nan() && f4.std_errors[..3].iter().all(|s| s.is_finite()));
+        assert_eq!((f4.free_count(), f3.free_count()), (3, 3));
+        assert!(f3.unseen.iter().all(|&u| !u));
+        assert!(
+            (f4.bic() - f3.bic()).abs() <= 1e-9 * f3.bic().abs(),
+            "{} against {}",
+            f4.bic(),
+            f3.bic()
+        );
+        // Counted, the idle parameter would have cost ln N.
+        let counted = FitOutcome {
+            unseen: Vec::new(),
+            ..f4.clone()
+        };
+        let ln_n = (f4.residuals as f64).ln();
+        assert!((counted.bic() - f4.bic() - ln_n).abs() < 1e-9 * ln_n);
+    }
 }

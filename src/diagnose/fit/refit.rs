@@ -197,6 +197,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
                     evaluations,
                     converged: true,
                     global: GlobalSearch::None,
+                    unseen: Vec::new(),
                     linear: None,
                 };
             }
@@ -230,7 +231,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::diagnose::fit::linearise;
     use crate::diagnose::model::replay::tests::sine_run;
@@ -239,7 +240,7 @@ mod tests {
     use crate::vehicle::{Vehicle, VehicleModel};
 
     /// Axles of stiffness factors `B_f`, `B_r` and peak friction `D`.
-    fn axle_model(p: &[f64]) -> Augmented {
+    pub(in crate::diagnose::fit) fn axle_model(p: &[f64]) -> Augmented {
         let tyre = |b: f64| Tyre::MagicSimple(crate::tyre::MagicSimple { b, c: 1.3, d: p[2] });
         Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
@@ -249,7 +250,7 @@ mod tests {
 
     /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
     /// model-form gap far above the noise, as on a real log.
-    fn runs() -> Vec<Prepared> {
+    pub(in crate::diagnose::fit) fn runs() -> Vec<Prepared> {
         let pac89 = Tyre::Pac89(Pac89::adams_example());
         let truth = Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), pac89.clone(), pac89),
@@ -271,8 +272,9 @@ mod tests {
 
     /// The axle characteristics' box (B front, B rear, D) and the channel
     /// scales of the fold-refit tests.
-    const AXLES: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-    const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
+    pub(in crate::diagnose::fit) const AXLES: [(f64, f64); 3] =
+        [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+    pub(in crate::diagnose::fit) const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
 
     /// A refit lands on Levenberg–Marquardt's optimum: the cost to a few
     /// times what the refit's stopping test leaves (REFIT_DECREASE,
@@ -340,6 +342,7 @@ mod tests {
             evaluations: 0,
             converged: false,
             global: GlobalSearch::None,
+            unseen: Vec::new(),
             linear: Some(linearise(&all, &start)),
         };
         let fold = Problem::new(

@@ -94,6 +94,10 @@ pub enum NoiseSource {
     /// `std(Δx)/√2` over the whole record: an upper bound for a smooth signal.
     #[serde(rename = "first differences (an upper bound)")]
     FirstDifferences,
+    /// The uncertainty the diagnosis trusts the channel to (stated, or its
+    /// scatter over the runs at least a sensor's floor).
+    #[serde(rename = "the channel's trusted uncertainty")]
+    Trusted,
 }
 
 fn trapezoid(t: &[f64], f: impl Fn(usize) -> f64) -> f64 {
@@ -165,12 +169,24 @@ pub struct Record<'a> {
     pub speed: &'a [f64],
 }
 
-/// The gap of one channel of a record.
+/// The gap of one channel of a record, against its own scatter.
 pub fn channel_gap(
     channel: Channel,
     rec: &Record,
     measured: &[f64],
     simulated: &[f64],
+) -> ChannelGap {
+    trusted_channel_gap(channel, rec, measured, simulated, None)
+}
+
+/// The gap of one channel of a record against the noise floor `trusted`
+/// (the campaign's trusted uncertainty; its own scatter where None or 0).
+pub fn trusted_channel_gap(
+    channel: Channel,
+    rec: &Record,
+    measured: &[f64],
+    simulated: &[f64],
+    trusted: Option<f64>,
 ) -> ChannelGap {
     let Record {
         t,
@@ -182,10 +198,18 @@ pub fn channel_gap(
     let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
     let unit = channel.unit();
     let win = window_samples(t, steer);
-    let noise_floor = scatter(&win[0].1, measured);
-    let noise_source = match win[0].1.len() {
-        0..=9 => NoiseSource::FirstDifferences,
-        _ => NoiseSource::BeforeInput,
+    // The campaign's trusted uncertainty where it has one: a run's own
+    // scatter is a state estimator's smoothness or a hand-driven run's
+    // unquiet start, not what the channel can be trusted to.
+    let (noise_floor, noise_source) = match trusted {
+        Some(f) if f > 0.0 => (f, NoiseSource::Trusted),
+        _ => (
+            scatter(&win[0].1, measured),
+            match win[0].1.len() {
+                0..=9 => NoiseSource::FirstDifferences,
+                _ => NoiseSource::BeforeInput,
+            },
+        ),
     };
     let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
@@ -299,10 +323,12 @@ pub fn scored_samples(run: &crate::measured::MeasuredRun) -> Vec<usize> {
 }
 
 /// The gap of every measured channel of a replayed run, on its unmasked
-/// samples.
+/// samples, each against its `trusted` noise floor (by channel index; 0:
+/// the run's own scatter).
 pub fn run_gap(
     run: &crate::measured::MeasuredRun,
     sim: &crate::sim::TimeHistory,
+    trusted: &[f64; 3],
 ) -> Vec<ChannelGap> {
     let idx = scored_samples(run);
     let pick = |v: &[f64]| -> Vec<f64> { idx.iter().map(|&i| v[i]).collect() };
@@ -316,22 +342,15 @@ pub fn run_gap(
         ay: &ay_regime,
         speed: &speed,
     };
-    let mut out = vec![channel_gap(
-        Channel::YawRate,
-        &rec,
-        &pick(&run.yaw_rate),
-        &at(&sim.yaw_rate),
-    )];
+    let gap = |c: Channel, m: &[f64], s: &[f64]| {
+        trusted_channel_gap(c, &rec, &pick(m), &at(s), Some(trusted[c.index()]))
+    };
+    let mut out = vec![gap(Channel::YawRate, &run.yaw_rate, &sim.yaw_rate)];
     if let Some(ay) = &run.ay {
-        out.push(channel_gap(Channel::Ay, &rec, &pick(ay), &at(&sim.ay)));
+        out.push(gap(Channel::Ay, ay, &sim.ay));
     }
     if let Some(beta) = &run.beta {
-        out.push(channel_gap(
-            Channel::Beta,
-            &rec,
-            &pick(beta),
-            &at(&sim.beta),
-        ));
+        out.push(gap(Channel::Beta, beta, &sim.beta));
     }
     out
 }

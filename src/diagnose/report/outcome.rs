@@ -308,6 +308,26 @@ pub enum RankWarning {
         /// Why.
         no_tyre: Vec<NoTyre>,
     },
+    /// Fold refits that landed beyond
+    /// [`crate::diagnose::verdict::rules::FOLD_FAR`] standard errors of
+    /// the all-run fit: the held-out score measures those refits on fewer
+    /// runs as much as the effect.
+    FoldsFar {
+        /// The parameter whose fold landed farthest (`effect.parameter`).
+        parameter: String,
+        /// Its all-run value and standard error.
+        value: f64,
+        /// Its standard error on all runs.
+        std_error: f64,
+        /// The farthest fold's value.
+        fold_value: f64,
+        /// How far, in standard errors.
+        distance: f64,
+        /// Folds that landed beyond (of `folds`).
+        far: usize,
+        /// Folds refitted.
+        folds: usize,
+    },
     /// Fold refits that did not converge.
     FoldsNotConverged {
         /// Folds that did not.

@@ -15,8 +15,14 @@ use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
 
 /// The base model's gap on one run, at the run's own samples (the base
-/// model has no sensor effects: its history is what the sensors read).
-pub(crate) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> RunGap {
+/// model has no sensor effects: its history is what the sensors read),
+/// each channel against its `trusted` noise floor.
+pub(crate) fn base_run_gap(
+    base: &Augmented,
+    run: &MeasuredRun,
+    step: f64,
+    trusted: &[f64; 3],
+) -> RunGap {
     let p = Prepared::new(run, step, f64::INFINITY);
     let history = p.replay(base);
     let idx = crate::diagnose::report::gap::scored_samples(run);
@@ -28,7 +34,7 @@ pub(crate) fn base_run_gap(base: &Augmented, run: &MeasuredRun, step: f64) -> Ru
         .collect();
     RunGap {
         run: run.path.display().to_string(),
-        channels: run_gap(run, &history),
+        channels: run_gap(run, &history, trusted),
         bands: crate::diagnose::report::gap::band_gaps(
             &t,
             &pick(&run.steer),

@@ -33,6 +33,9 @@ pub struct ParameterValue {
     /// The runs determine it: its standard error is finite and no larger
     /// than the parameter's whole range ([`ParameterValue::of`]).
     pub determined: bool,
+    /// Held at its off value because no measured channel responds to it
+    /// (an offset of a channel no run carries): not fitted, not counted.
+    pub unseen: bool,
 }
 
 /// A value within this share of its parameter's range from a physical
@@ -63,6 +66,16 @@ impl ParameterValue {
             at_bound: bound.is_some(),
             bound,
             determined: std_error.is_finite() && std_error <= hi - lo,
+            unseen: false,
+        }
+    }
+
+    /// The same, held at its off value because no measured channel
+    /// responds to it ([`ParameterValue::unseen`]).
+    pub fn unseen(self) -> Self {
+        Self {
+            unseen: true,
+            ..self
         }
     }
 }

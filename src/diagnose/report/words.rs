@@ -9,7 +9,9 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
-pub use axles::{axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source};
+pub use axles::{
+    axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
+};
 
 use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::report::outcome::{
@@ -235,6 +237,19 @@ pub fn rank_warning(w: &RankWarning) -> String {
             "fitted with it, the axles are no tyre ({}): it cannot be a verdict",
             no_tyre_list(no_tyre)
         ),
+        RankWarning::FoldsFar {
+            parameter,
+            value: v,
+            std_error,
+            fold_value,
+            distance,
+            far,
+            folds,
+        } => format!(
+            "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {} ± {std_error:.2e}, {distance:.1} standard errors): its held-out score measures a fit on fewer runs as much as the effect",
+            value(*fold_value),
+            value(*v),
+        ),
         RankWarning::FoldsNotConverged { failed, folds } => {
             format!("{failed} of {folds} fold refits did not converge")
         }
@@ -437,8 +452,9 @@ pub fn signatures(effects: &[EffectKind]) -> String {
 /// the bound it stands on — a search bound (the data would take it
 /// further) or a physical limit (a length, a share, a load that would be
 /// negative beyond it); or, where the standard error is missing or larger
-/// than the parameter's whole range, that the runs do not determine it. A
-/// steering compliance, fitted in rad/kN, is given in rad/N too: the unit
+/// than the parameter's whole range, that the runs do not determine it;
+/// or that it is held at its off value (no measured channel responds to
+/// it). A steering compliance, fitted in rad/kN, is given in rad/N too: the unit
 /// of `steering_compliance` in a scenario's `[model.effects]`.
 pub fn parameter(p: &ParameterValue) -> String {
     let unit = if p.unit == "rad/kN" {
@@ -447,6 +463,12 @@ pub fn parameter(p: &ParameterValue) -> String {
         p.unit.to_string()
     };
     let v = value(p.value);
+    if p.unseen {
+        return format!(
+            "{} = {v} {unit} (held at its off value: no measured channel responds to it)",
+            p.name
+        );
+    }
     let Some(bound) = p.bound else {
         return if p.determined {
             format!("{} = {v} ± {:.2e} {unit}", p.name, p.std_error)

@@ -81,6 +81,13 @@ pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<Parameter
     layout
         .parameters()
         .enumerate()
-        .map(|(i, (group, q))| ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]))
+        .map(|(i, (group, q))| {
+            let v = ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]);
+            if f.is_unseen(at + i) {
+                v.unseen()
+            } else {
+                v
+            }
+        })
         .collect()
 }

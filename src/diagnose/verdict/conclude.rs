@@ -159,6 +159,7 @@ mod tests {
             at_bound: false,
             bound: None,
             determined: true,
+            unseen: false,
         }
     }
 

@@ -41,6 +41,46 @@ pub const PARSIMONY: f64 = 0.1;
 /// its in-sample one and the screening still hold.
 pub const SCREEN_MARGIN: f64 = 10.0;
 
+/// Standard errors of the all-run fit beyond which a fold's refit has
+/// landed far from it. Leaving one of `k` folds out moves a determined
+/// optimum by about `SE/√(k − 1)` (the grouped jackknife: Efron & Tibshirani
+/// 1993, §11.5), so a refit three standard errors away found another
+/// optimum on fewer runs: its held-out score measures that fit as much as
+/// the effect.
+pub const FOLD_FAR: f64 = 3.0;
+
+/// The parameter whose fold refits land farthest from the all-run fit, if
+/// any lands beyond [`FOLD_FAR`] standard errors: `(index, the farthest
+/// fold's value, its distance in standard errors, how many folds land
+/// beyond)`. `full` and `std_errors` are the all-run fit's, `folds` each
+/// fold's vector; only the parameters of `which` with a finite, positive
+/// standard error are read (one on a bound or not seen has none).
+pub fn far_folds(
+    full: &[f64],
+    std_errors: &[f64],
+    folds: &[Vec<f64>],
+    which: std::ops::Range<usize>,
+) -> Option<(usize, f64, f64, usize)> {
+    let mut worst: Option<(usize, f64, f64)> = None;
+    let mut far = vec![false; folds.len()];
+    for i in which {
+        let se = std_errors[i];
+        if !(se.is_finite() && se > 0.0) {
+            continue;
+        }
+        for (k, f) in folds.iter().enumerate() {
+            let d = (f[i] - full[i]).abs() / se;
+            if d > FOLD_FAR {
+                far[k] = true;
+                if worst.is_none_or(|w| d > w.2) {
+                    worst = Some((i, f[i], d));
+                }
+            }
+        }
+    }
+    worst.map(|(i, v, d)| (i, v, d, far.iter().filter(|&&f| f).count()))
+}
+
 /// Whether a held-out error `j` leaves a gap above the noise level `jn`:
 /// `J > SIGNIFICANT·J_n`.
 pub fn significant(j: f64, jn: f64) -> bool {

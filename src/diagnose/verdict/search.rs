@@ -126,7 +126,7 @@ impl Baseline {
     pub(crate) fn candidate(&self, sc: &Scored) -> Candidate {
         Candidate {
             heldout: sc.heldout.combined(&self.scales),
-            parameters: sc.full.params.len(),
+            parameters: sc.full.free_count(),
             idle: idle(sc, &self.layout(&sc.kinds)),
             degenerate: self.degenerate(sc),
         }
@@ -160,6 +160,31 @@ impl Baseline {
         (g * g + self.jn * self.jn).sqrt()
     }
 
+    /// The warning of fold refits landing far from the all-run fit
+    /// ([`rules::far_folds`], over the effect and roll parameters), said
+    /// where the cross-validation disagrees with the fit.
+    fn folds_far(&self, sc: &Scored) -> Option<RankWarning> {
+        let layout = self.layout(&sc.kinds);
+        let at = layout.effects().start;
+        let p = &sc.full;
+        let (i, fold_value, distance, far) = rules::far_folds(
+            &p.params,
+            &p.std_errors,
+            &sc.fold_params,
+            at..p.params.len(),
+        )?;
+        let (group, q) = layout.parameters().nth(i - at)?;
+        Some(RankWarning::FoldsFar {
+            parameter: format!("{group}.{}", q.name),
+            value: p.params[i],
+            std_error: p.std_errors[i],
+            fold_value,
+            distance,
+            far,
+            folds: sc.fold_params.len(),
+        })
+    }
+
     /// A scored candidate as a row of the report, with its warnings.
     pub(crate) fn rank(&self, sc: &Scored) -> Ranked {
         let j = sc.heldout.combined(&self.scales);
@@ -173,6 +198,11 @@ impl Baseline {
                 insample_percent: inside,
                 heldout_percent: held,
             });
+            // Why it may: folds whose refits found other optima. Only
+            // here: a model-form gap makes standard errors optimistic, so
+            // folds of a candidate that generalises land a few of them
+            // away too (measured: cornering_stiffness at 20 of them).
+            warnings.extend(self.folds_far(sc));
         }
         let no_tyre = self.no_tyre(sc);
         if !no_tyre.is_empty() {
@@ -372,10 +402,17 @@ fn lookalikes(
 /// Jacobian column all but a combination of the others': exact Jacobians
 /// show a steer path's lag at a few microseconds to be its delay's twin):
 /// that part of the effect is off, or the data cannot tell it from off,
-/// and it reduces to a simpler one.
+/// and it reduces to a simpler one. A parameter no measured channel
+/// responds to ([`crate::diagnose::fit::FitOutcome::unseen`]) is held, not
+/// idle.
 fn idle(sc: &Scored, layout: &Layout) -> bool {
     let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
     params.zip(layout.effects()).any(|(q, i)| {
+        // Held because no measured channel responds to it: not a part of
+        // the effect the runs could test, so not one they found off.
+        if sc.full.is_unseen(i) {
+            return false;
+        }
         let (value, se) = (sc.full.params[i], sc.full.std_errors[i]);
         // Off, or no further from off than the data can tell; a value on
         // a search bound (no standard error) is pressed there, not idle.

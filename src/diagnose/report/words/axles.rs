@@ -4,7 +4,7 @@
 //! dimensionless, peak slip angles in degrees as tyre engineers read them.
 
 use crate::diagnose::base::identify::{
-    AxleIdentification, AxleLimit, NoTyre, PEAK_SLIP_MIN, SHAPE,
+    AxleIdentification, AxleLimit, AxleValue, NoTyre, PEAK_SLIP_MIN, SHAPE,
 };
 use crate::diagnose::base::prior::{PriorReport, Tempering};
 use crate::diagnose::base::TyreSource;
@@ -66,8 +66,28 @@ pub fn limit_meaning(limit: AxleLimit, name: &str) -> String {
 
 /// The axles identified from the runs in one line.
 pub fn axles_line(id: &AxleIdentification) -> String {
-    let values: Vec<String> = id
-        .parameters
+    let values = axle_values(&id.parameters);
+    let mut s = format!(
+        "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; cornering coefficient = cornering stiffness per unit load; best of {} starts from a grid; refitted with every candidate): {}",
+        id.starts,
+        values.join(", ")
+    );
+    if let Some((a, b, rho)) = &id.largest_correlation {
+        s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
+    }
+    if let Some(p) = &id.prior {
+        s.push_str(&format!("; {}", prior_line(p)));
+    }
+    if id.degenerate() {
+        s.push_str(&format!("; no tyre: {}", no_tyre_list(&id.no_tyre)));
+    }
+    s
+}
+
+/// Each axle characteristic in words: its value with its standard error,
+/// the limit it stands on, or that it is held.
+pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
+    parameters
         .iter()
         .map(|v| {
             let digits = if v.unit == "-" { 3 } else { 1 };
@@ -95,22 +115,7 @@ pub fn axles_line(id: &AxleIdentification) -> String {
                 None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
             }
         })
-        .collect();
-    let mut s = format!(
-        "axle characteristics identified from the runs (simplified Magic Formula, C = {SHAPE}; cornering coefficient = cornering stiffness per unit load; best of {} starts from a grid; refitted with every candidate): {}",
-        id.starts,
-        values.join(", ")
-    );
-    if let Some((a, b, rho)) = &id.largest_correlation {
-        s.push_str(&format!("; largest correlation {a} / {b} {rho:+.2}"));
-    }
-    if let Some(p) = &id.prior {
-        s.push_str(&format!("; {}", prior_line(p)));
-    }
-    if id.degenerate() {
-        s.push_str(&format!("; no tyre: {}", no_tyre_list(&id.no_tyre)));
-    }
-    s
+        .collect()
 }
 
 /// The prior the axles were fitted against, the friction rule, and where

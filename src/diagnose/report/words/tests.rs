@@ -221,6 +221,7 @@ fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> Param
         at_bound: bound.is_some(),
         bound,
         determined: false,
+        unseen: false,
     }
 }
 
@@ -411,4 +412,37 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
     let w = verdict_warning(&two);
     assert!(w.contains("on their search bound"), "{w}");
     assert!(w.contains("their values are a bound"), "{w}");
+}
+
+#[test]
+fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {
+    let [_, ay, _] = EffectKind::SensorBias.parameters() else {
+        panic!("a sensor bias has three offsets");
+    };
+    let p = ParameterValue::of("sensor_bias", ay, 0.0, f64::NAN);
+    assert_eq!(
+        parameter(&p),
+        "sensor_bias.ay = 0.0000 m/s² (no standard error: not determined by the runs)"
+    );
+    assert_eq!(
+        parameter(&p.unseen()),
+        "sensor_bias.ay = 0.0000 m/s² (held at its off value: no measured channel responds to it)"
+    );
+}
+
+#[test]
+fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
+    let w = RankWarning::FoldsFar {
+        parameter: "roll.damping".into(),
+        value: 0.4095,
+        std_error: 0.02,
+        fold_value: 0.2,
+        distance: 10.47,
+        far: 2,
+        folds: 5,
+    };
+    assert_eq!(
+        rank_warning(&w),
+        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095 ± 2.00e-2, 10.5 standard errors): its held-out score measures a fit on fewer runs as much as the effect"
+    );
 }

@@ -248,3 +248,28 @@ fn a_candidate_that_passes_is_refused_through_where_the_search_went_instead() {
     assert_eq!(own.why.len(), 1);
     assert!(matches!(own.why[0], Refusal::BelowAcceptance { .. }));
 }
+
+#[test]
+fn a_fold_is_far_beyond_three_standard_errors_of_the_all_run_fit() {
+    let full = [1.0, 0.4, 9.0];
+    let se = [0.1, 0.02, f64::NAN];
+    let near = vec![1.29, 0.41, 50.0];
+    assert_eq!(far_folds(&full, &se, &[near.clone()], 0..3), None);
+    // 3.1 standard errors on the first, 10 on the second: the second is
+    // named, with the one fold that lands far.
+    let off = vec![1.31, 0.2, 9.0];
+    let (i, v, d, n) = far_folds(&full, &se, &[near.clone(), off.clone()], 0..3).unwrap();
+    assert_eq!((i, v, n), (1, 0.2, 1));
+    assert!((d - 10.0).abs() < 1e-9, "{d}");
+    // Parameters outside the range read (the axles) are not looked at.
+    assert_eq!(
+        far_folds(&full, &se, &[near.clone(), off.clone()], 2..3),
+        None
+    );
+    // Two folds beyond on different parameters count as two.
+    let other = vec![1.5, 0.4, 9.0];
+    assert_eq!(
+        far_folds(&full, &se, &[off, near, other], 0..3).map(|f| f.3),
+        Some(2)
+    );
+}

@@ -557,6 +557,36 @@ mod tests {
         );
     }
 
+    /// A smooth channel (a state estimator's output: almost no scatter
+    /// before the input) judged against its own scatter calls a small
+    /// offset a gap; against the uncertainty the campaign trusts it to, it
+    /// is within noise, and the floor says where it came from.
+    #[test]
+    fn a_run_is_judged_against_the_trusted_floor_not_its_own_scatter() {
+        let s = Step::new();
+        let truth = s.response(0.3);
+        let smooth = noisy(&truth, 2e-5, 3);
+        let offset: Vec<f64> = truth.iter().map(|v| v + 0.004).collect();
+        let own = channel_gap(Channel::YawRate, &s.record(), &smooth, &offset);
+        assert!(own.significant, "{}", own.verdict);
+        assert_eq!(own.noise_source, NoiseSource::BeforeInput);
+        let rec = s.record();
+        let trusted = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.005));
+        assert!(!trusted.significant, "{}", trusted.verdict);
+        assert_eq!(
+            (trusted.noise_floor, trusted.noise_source),
+            (0.005, NoiseSource::Trusted)
+        );
+        // Above three trusted floors it is a gap again; no floor (0) is
+        // the run's own.
+        let far: Vec<f64> = truth.iter().map(|v| v + 0.02).collect();
+        assert!(
+            trusted_channel_gap(Channel::YawRate, &rec, &smooth, &far, Some(0.005)).significant
+        );
+        let none = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.0));
+        assert_eq!(none.noise_source, NoiseSource::BeforeInput);
+    }
+
     #[test]
     fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
         let s = Step::new();

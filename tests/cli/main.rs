@@ -250,6 +250,7 @@ mod shards;
 mod sweeps;
 mod trips;
 mod trips_inputs;
+mod trips_units;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
 pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {

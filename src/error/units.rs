@@ -58,9 +58,11 @@ pub enum UnitSlip {
         limit: f64,
     },
     /// A wheel load of a few units: in kN.
-    #[error("column `fz`: a median |fz| of {} N is far below a tyre's load (no test runs a tyre below {} N): `fz` is in N (FORMATS.md); is the column in kN? multiply it by 1000", Num(*median), Num(*limit))]
+    #[error("column `fz`: {} N, in a file whose median load is {} N: no tyre is tested at a median load below {} N (a car tyre carries 2,000–8,000 N): `fz` is in N (FORMATS.md); is the column in kN? multiply it by 1000", Num(*value), Num(*median), Num(*limit))]
     LoadInKn {
-        /// The median |fz|, as read.
+        /// The first load below the limit, as read.
+        value: f64,
+        /// The median load, as read.
         median: f64,
         /// The smallest median load accepted, N.
         limit: f64,

@@ -269,7 +269,9 @@ pub(crate) fn fit_channel_holding(
     problem.residuals(&p, &mut res);
     let sum_squares: f64 = res.iter().map(|e| e * e).sum();
     let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
-    let covariance = stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares);
+    let covariance = (!p.is_empty())
+        .then(|| stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares))
+        .flatten();
     let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
     for (p, _) in parameters.iter_mut().zip(&held).filter(|(_, h)| **h) {
         p.warning = Some("held at the value given".into());
@@ -355,6 +357,15 @@ fn search(
     settings: &FitSettings,
 ) -> Found {
     let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
+    if bounds.is_empty() {
+        // Every parameter held: nothing to search, the start is the fit.
+        let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&[]), &problem.points);
+        return Found {
+            params: Vec::new(),
+            evaluations: 1,
+            sigma_pso,
+        };
+    }
     let r = settings
         .pso
         .minimize_from(|p| problem.cost(p), &bounds, &[start_p.to_vec()]);

@@ -131,6 +131,56 @@ impl Options {
     }
 }
 
+/// A parameter held with `--hold`: its name, the value given (the tyre
+/// file's units) and whether a fit it belongs to ran (a parameter of a
+/// block the data do not fit, such as an aligning one without `mz`, is
+/// not applied, and said so).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Held {
+    /// The parameter, as the tyre file names it.
+    pub name: String,
+    /// The value given.
+    pub value: f64,
+    /// Whether a fit held it (false: no fit it belongs to ran).
+    pub applied: bool,
+}
+
+/// The holds of `o`, each applied when `fitted` names it.
+pub(super) fn holds_of(o: &Options, fitted: &[String]) -> Vec<Held> {
+    o.hold
+        .iter()
+        .map(|(name, value)| Held {
+            name: name.clone(),
+            value: *value,
+            applied: fitted.contains(name),
+        })
+        .collect()
+}
+
+/// The terminal's lines of the holds: the parameters held, and those not
+/// applied.
+pub(super) fn held_lines(held: &[Held]) -> Vec<String> {
+    let applied: Vec<String> = held
+        .iter()
+        .filter(|h| h.applied)
+        .map(|h| format!("{} = {}", h.name, h.value))
+        .collect();
+    let mut out = Vec::new();
+    if !applied.is_empty() {
+        out.push(format!(
+            "  held with --hold (not fitted): {}",
+            applied.join(", ")
+        ));
+    }
+    out.extend(held.iter().filter(|h| !h.applied).map(|h| {
+        format!(
+            "  warning: --hold {}={}: not applied: no fit of its block ran on these data, and the file written does not hold it",
+            h.name, h.value
+        )
+    }));
+    out
+}
+
 /// The report of `identify`: `<out>.report.json` holds its serialised form.
 #[derive(Debug, Clone, Serialize)]
 #[serde(untagged)]
@@ -182,6 +232,8 @@ pub struct SwarmReport {
     pub longitudinal: Option<Fit>,
     /// The data file.
     pub data: String,
+    /// The parameters held with `--hold`.
+    pub held: Vec<Held>,
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -408,6 +460,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         aligning: None,
         longitudinal: None,
         data: o.data.display().to_string(),
+        held: Vec::new(),
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
@@ -455,6 +508,12 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
     }
+    let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
+        .into_iter()
+        .flatten()
+        .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
+        .collect();
+    r.held = holds_of(o, &fitted);
     Ok(r)
 }
 
@@ -501,6 +560,7 @@ impl SwarmReport {
             o.seed
         )];
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
+        out.extend(held_lines(&self.held));
         let two_stage_asked = o
             .model
             .swarm_model()

@@ -29,7 +29,9 @@ mod problem;
 pub use problem::{Channel, Derivatives, FitProblem};
 
 use crate::error::{Error, FitError, OptionsError};
-use crate::optim::local::{levenberg_marquardt, GaussNewton, Residuals};
+use crate::format::exact;
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::{levenberg_marquardt, GaussNewton, LocalResult, Residuals};
 use crate::optim::{stats, Inertia, Pso};
 use crate::tyre::{Identification, ModelName, Tyre};
 use data::Condition;
@@ -370,10 +372,13 @@ fn search(
         .pso
         .minimize_from(|p| problem.cost(p), &bounds, &[start_p.to_vec()]);
     let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&r.best), &problem.points);
-    let polish = |x: &[f64]| match settings.local {
-        LocalMethod::LevenbergMarquardt => Some(levenberg_marquardt(problem, x)),
-        LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(problem, x)),
-        LocalMethod::None => None,
+    let polish = |x: &[f64]| {
+        let l = match settings.local {
+            LocalMethod::LevenbergMarquardt => levenberg_marquardt(problem, x),
+            LocalMethod::GaussNewton => GaussNewton::default().minimize(problem, x),
+            LocalMethod::None => return None,
+        };
+        Some(within_box(problem, x, l, &bounds))
     };
     let mut found = Found {
         params: r.best.clone(),
@@ -392,6 +397,29 @@ fn search(
         }
     }
     found
+}
+
+/// The polish `l` from `x` when it stayed in the parameter box; else the
+/// same start polished within the box (a projected Levenberg–Marquardt),
+/// so that a fitted value is never written beyond the bounds the report
+/// states (a GIM `friction_decay` of −0.64, which no tyre file holds).
+fn within_box(
+    problem: &FitProblem,
+    x: &[f64],
+    l: LocalResult,
+    bounds: &[(f64, f64)],
+) -> LocalResult {
+    let inside = l
+        .params
+        .iter()
+        .zip(bounds)
+        .all(|(v, (lo, hi))| (lo..=hi).contains(&v));
+    if inside {
+        return l;
+    }
+    let mut boxed = BoundedLm::default().minimize(problem, x, bounds);
+    boxed.evaluations += l.evaluations;
+    boxed
 }
 
 /// One report per parameter of `channel`: value, whether it was free, its
@@ -425,12 +453,16 @@ fn parameter_reports(
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             let w = hi - lo;
+            // On its bound, the value is where the box stopped the fit (the
+            // polish stays in the box): said before its standard error,
+            // which a bound makes meaningless.
             if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
-                rep.warning = Some("at or beyond its search bound".into());
-            } else if values[i] < lo || values[i] > hi {
-                rep.warning = Some("outside its search box after the polish".into());
-            }
-            if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
+                rep.warning = Some(format!(
+                    "on its search bound ({} to {}): the fit would take it beyond; the value is the bound, not a fit",
+                    exact(lo),
+                    exact(hi)
+                ));
+            } else if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
                 rep.warning = Some(
                     "not identifiable from these data (standard error larger than the value)"
                         .into(),

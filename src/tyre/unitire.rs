@@ -330,6 +330,9 @@ impl ModelParameters for UniTire {
         // The inherent check above (inherent methods take precedence).
         UniTire::validate(self)
     }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        super::sizes::tyre_load("rated_load", self.rated_load)
+    }
     /// K = Fz·(p3 + p4·Fzn + p5·Fzn²) is proportional to p3..p5.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.lateral.scale_stiffness(k);

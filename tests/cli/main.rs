@@ -251,6 +251,7 @@ mod sweeps;
 mod trips;
 mod trips_identify;
 mod trips_inputs;
+mod trips_limits;
 mod trips_units;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

@@ -7,7 +7,7 @@
 
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
-use crate::format::plural;
+use crate::format::{exact, plural};
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
@@ -167,6 +167,8 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
     let raw = mf_staged::raw_rows(&data, &moments, default_speed);
     let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw);
+    crate::tyre::ModelParameters::check_sizes(&id.tyre)
+        .map_err(|source| FitError::BeyondAnyTyre { source })?;
     let tir = held_comment(o) + &crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
@@ -208,7 +210,7 @@ fn held_comment(o: &Options) -> String {
     let holds: String = o
         .hold
         .iter()
-        .map(|(n, v)| format!(" --hold {n}={v}"))
+        .map(|(n, v)| format!(" --hold {n}={}", exact(*v)))
         .collect();
     let mut s = format!(
         "$ identified by `handling identify {} --model {}{holds}`\n",
@@ -216,7 +218,10 @@ fn held_comment(o: &Options) -> String {
         o.model
     );
     for (n, v) in &o.hold {
-        s += &format!("$ held: {n} = {v}: given with --hold, not fitted (SI units)\n");
+        s += &format!(
+            "$ held: {n} = {}: given with --hold, not fitted (SI units)\n",
+            exact(*v)
+        );
     }
     s
 }

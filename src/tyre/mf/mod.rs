@@ -432,6 +432,9 @@ impl ModelParameters for MagicFormula {
         // The inherent check above (inherent methods take precedence).
         MagicFormula::validate(self)
     }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        crate::tyre::sizes::magic_formula(&self.coefficients)
+    }
     /// `Kyα` is proportional to its scaling factor `λ_Kyα`.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.coefficients.LKY *= k;

@@ -399,10 +399,12 @@ fn search(
     found
 }
 
-/// The polish `l` from `x` when it stayed in the parameter box; else the
-/// same start polished within the box (a projected Levenberg–Marquardt),
-/// so that a fitted value is never written beyond the bounds the report
-/// states (a GIM `friction_decay` of −0.64, which no tyre file holds).
+/// The polish `l` from `x` when it stayed in the parameter box or its
+/// tyre is valid (a value past a box that is narrower than the model, as
+/// PAC89's `a0`, is reported as beyond its bound); else the same start
+/// polished within the box (a projected Levenberg–Marquardt), so that no
+/// value the model refuses is written (a GIM `friction_decay` of −0.64,
+/// which no tyre file holds).
 fn within_box(
     problem: &FitProblem,
     x: &[f64],
@@ -414,7 +416,7 @@ fn within_box(
         .iter()
         .zip(bounds)
         .all(|(v, (lo, hi))| (lo..=hi).contains(&v));
-    if inside {
+    if inside || problem.tyre(&l.params).validate().is_ok() {
         return l;
     }
     let mut boxed = BoundedLm::default().minimize(problem, x, bounds);
@@ -456,7 +458,13 @@ fn parameter_reports(
             // On its bound, the value is where the box stopped the fit (the
             // polish stays in the box): said before its standard error,
             // which a bound makes meaningless.
-            if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
+            if values[i] < lo || values[i] > hi {
+                rep.warning = Some(format!(
+                    "beyond its search bound ({} to {}) after the polish: the data take it past the box",
+                    exact(lo),
+                    exact(hi)
+                ));
+            } else if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
                 rep.warning = Some(format!(
                     "on its search bound ({} to {}): the fit would take it beyond; the value is the bound, not a fit",
                     exact(lo),

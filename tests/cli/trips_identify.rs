@@ -1,4 +1,4 @@
-//! What a user still trips on in `identify` (issue 41): loads in kN,
+//! What a user still trips on in `identify`: loads in kN,
 //! `--hold` names that differ from the tyre file's, holds not reported,
 //! a stage that stops on its iteration cap.
 

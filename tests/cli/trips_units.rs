@@ -1,4 +1,4 @@
-//! What a user still trips on (issue 41): points a tyre model cannot
+//! What a user still trips on: points a tyre model cannot
 //! load, measured runs written in another unit than FORMATS.md's, and
 //! records that are not a step steer, run as a user runs the tool.
 

@@ -30,7 +30,7 @@ pub struct StagedJob {
     /// Samples and rows fitted.
     pub rows: RowAccount,
     /// The coefficients held with `--hold` (each written at its value).
-    pub held: Vec<super::Held>,
+    pub held: Vec<super::holds::Held>,
     /// The fit's overall σ: pooled over every raw sample and measured
     /// channel of the file (the stages' σ are over their own rows).
     pub sigma_pooled: PooledSigma,
@@ -66,7 +66,7 @@ impl StagedJob {
         if let Some(g) = &self.rows.thinning {
             out.extend(g.lines().iter().map(|l| format!("  {l}")));
         }
-        out.extend(super::held_lines(&self.held));
+        out.extend(super::holds::held_lines(&self.held));
         for s in &self.report.stages {
             match &s.skipped {
                 Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
@@ -187,7 +187,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // a stage that fits it ran: every hold is applied.
     let given: Vec<String> = o.hold.iter().map(|(n, _)| n.clone()).collect();
     Ok(StagedJob {
-        held: super::holds_of(o, &given),
+        held: super::holds::holds_of(o, &given),
         report: id.report,
         data: o.data.display().to_string(),
         rows: prepared.account,

@@ -29,6 +29,22 @@ pub fn significant(v: f64, digits: usize) -> String {
     fixed(v, decimals)
 }
 
+/// `v` as a written file holds it: the shortest text that reads back as
+/// the same `f64`, in plain decimals from 1e-4 to below 1e9 (`4000`,
+/// `0.3`, `-0.00123`) and with an exponent beyond (`1.5e-7`, `2.5e12`),
+/// so that no value is written with hundreds of digits or as `1e0`; zero
+/// as `0`.
+pub fn exact(v: f64) -> String {
+    let size = v.abs();
+    if v == 0.0 {
+        "0".into()
+    } else if (1e-4..1e9).contains(&size) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
 /// `a` and `b` with at least `decimals` decimals and as many more, up to
 /// `max_decimals`, as make the printed values differ, so a sentence saying
 /// one is below the other does not print two equal numbers. The flag is
@@ -106,6 +122,27 @@ pub fn did_you_mean(given: &str, known: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn exact_values_read_back_bit_for_bit_without_noise() {
+        assert_eq!(exact(1.0), "1");
+        assert_eq!(exact(4000.0), "4000");
+        assert_eq!(exact(-0.0), "0");
+        assert_eq!(exact(1.5e-7), "1.5e-7");
+        assert_eq!(exact(1e300), "1e300");
+        assert_eq!(exact(0.1 + 0.2), "0.30000000000000004");
+        for v in [
+            0.1 + 0.2,
+            -1.0 / 3.0,
+            1e-4,
+            9.999e8,
+            1e9,
+            6.02e23,
+            -2.5e-300,
+        ] {
+            assert_eq!(exact(v).parse::<f64>().unwrap(), v, "{v}");
+        }
+    }
 
     #[test]
     fn a_count_of_one_takes_the_singular() {

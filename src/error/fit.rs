@@ -74,6 +74,13 @@ pub enum FitError {
         /// Relative difference of the forces.
         difference: f64,
     },
+    /// A fitted coefficient beyond any tyre's ([`crate::tyre::sizes`]): its
+    /// file would be refused by every command that reads it.
+    #[error("the fit took {source}; no file is written, as every command would refuse it (the default start, `--start data`, keeps each coefficient within physical bounds)")]
+    BeyondAnyTyre {
+        /// The coefficient, its value and the limit.
+        source: super::ParamError,
+    },
     /// Rig data without lateral data, for a model without a longitudinal
     /// force.
     #[error("{}: no lateral data (columns `alpha` and `fy`), and the {model} model has no longitudinal force", data.display())]

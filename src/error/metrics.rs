@@ -2,6 +2,7 @@
 //! record): why a record's metrics could not be computed. Durations in s,
 //! steer in rad.
 
+use super::number::Num;
 use crate::format::{fixed, significant};
 use thiserror::Error;
 
@@ -64,4 +65,29 @@ pub enum MetricsError {
     /// A response never reaches 90 % of its steady value.
     #[error("the {0} never reaches 90 % of its steady-state value")]
     NoCrossing(&'static str),
+    /// The steer leaves its initial value inside the initial window: the
+    /// record starts too close to the step to read the initial values.
+    #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step", Num(to - from))]
+    StepInInitialWindow {
+        /// Where the steer first is 5 % of its step off its initial value, s.
+        moved: f64,
+        /// The initial window's start, s.
+        from: f64,
+        /// Its end, s.
+        to: f64,
+    },
+    /// The steer leaves its step after reaching it: a sweep or a sine.
+    #[error("the steer does not hold its step: after reaching 90 % of it at {reached:.2} s it is at {} % of it at {time:.2} s, where a step steer stays between {} % and {} %: a sweep or a sine is not measured as a step steer", fixed(100.0 * share, 0), Num(100.0 * HELD_STEP.0), Num(100.0 * HELD_STEP.1))]
+    SteerNotHeld {
+        /// Where the steer first reaches 90 % of its step, s.
+        reached: f64,
+        /// The first time after it outside [`HELD_STEP`], s.
+        time: f64,
+        /// The steer there, as a share of the step.
+        share: f64,
+    },
 }
+
+/// The band a step steer's normalised steer stays in once it has reached
+/// 90 % of its step (a driver's hand wobbles by far less than half a step).
+pub const HELD_STEP: (f64, f64) = (0.5, 1.5);

@@ -20,13 +20,14 @@ mod reason;
 mod rig;
 #[cfg(test)]
 mod tests;
+mod units;
 
 pub use duplicate::DuplicateAt;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip,
 };
 pub use input::{CellProblem, InputError, Location};
-pub use metrics::MetricsError;
+pub use metrics::{MetricsError, HELD_STEP};
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
@@ -37,6 +38,7 @@ pub use problem::{
 pub use reason::{Limit, ParamReason};
 pub use rig::Variable;
 use thiserror::Error;
+pub use units::UnitSlip;
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

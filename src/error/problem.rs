@@ -11,6 +11,7 @@
 use super::duplicate::DuplicateAt;
 use super::number::Num;
 use super::rig::Variable;
+use super::units::UnitSlip;
 use super::{MetricsError, ParamError};
 use crate::format::{plural, significant};
 use std::path::PathBuf;
@@ -443,6 +444,9 @@ pub enum InputProblem {
         /// The wheelbase l taken when the vehicle's is not known, m.
         assumed_wheelbase: Option<f64>,
     },
+    /// A column in another unit than FORMATS.md's.
+    #[error(transparent)]
+    UnitSlip(#[from] UnitSlip),
     /// A run too short to show a response.
     #[error("the run is {span:.2} s long with {}: a run needs at least {} s and {min_samples} samples to show a response", plural(*samples, "sample", "samples"), Num(*min_span))]
     RunTooShort {
@@ -518,6 +522,7 @@ impl InputProblem {
             InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
+            InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
         }

@@ -275,4 +275,30 @@ pub enum Limit {
     /// A front road-wheel steer angle, rad.
     #[error("no road wheel steers beyond ±45° (0.785 rad; a car's largest mean road-wheel steer is about 35–40°): steer angles are in radians, so is the value in degrees?")]
     RoadWheelSteer,
+    /// A tyre's contact length, m.
+    #[error("no tyre's contact patch is longer than 1 m (a car tyre's is 0.1–0.25 m, a truck's about 0.3 m); the key is in metres: is the value in millimetres? (180 mm is 0.18)")]
+    ContactLength,
+    /// A tyre's cornering stiffness, N/rad.
+    #[error("no tyre's cornering stiffness reaches 2e6 N/rad (a car tyre's is 5e4–1.5e5, a truck tyre's about 3e5); the key is in N/rad, per wheel: check the unit")]
+    CorneringStiffness,
+    /// A tyre's reference or rated load, N.
+    #[error("a tyre carries 100 N (a bicycle) to 1e5 N (a mining truck); the key is in N: is the value in kN? (4 kN is 4000)")]
+    TyreLoad,
+    /// A tyre's friction coefficient.
+    #[error(
+        "no tyre's friction coefficient reaches 5 (racing slicks reach about 1.8): check the value"
+    )]
+    TyreFriction,
+    /// A pneumatic trail, m.
+    #[error("a tyre's pneumatic trail is a few centimetres; the key is in metres: is the value in millimetres? (30 mm is 0.03)")]
+    PneumaticTrail,
+    /// A Magic Formula file's unloaded radius, m.
+    #[error("a tyre's unloaded radius is 0.05–2 m (a kart's about 0.13 m, a car's about 0.3 m): check the value against the file's [UNITS] LENGTH (millimetres written with LENGTH = 'meter'?)")]
+    UnloadedRadius,
+    /// A Magic Formula coefficient, dimensionless.
+    #[error("no coefficient of a published Magic Formula file reaches ±1e6 (their dimensionless coefficients stay within about ±2,000): a value beyond is no tyre's")]
+    MfCoefficient,
+    /// A Magic Formula stiffness (N/m) or pressure (Pa).
+    #[error("a tyre's vertical stiffness (N/m) and pressures (Pa) lie below 1e8 in SI (2e6 N/m, 1e6 Pa at most): check the value against the file's [UNITS]")]
+    MfDimensional,
 }

@@ -29,7 +29,9 @@ mod problem;
 pub use problem::{Channel, Derivatives, FitProblem};
 
 use crate::error::{Error, FitError, OptionsError};
-use crate::optim::local::{levenberg_marquardt, GaussNewton, Residuals};
+use crate::format::exact;
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::{levenberg_marquardt, GaussNewton, LocalResult, Residuals};
 use crate::optim::{stats, Inertia, Pso};
 use crate::tyre::{Identification, ModelName, Tyre};
 use data::Condition;
@@ -269,7 +271,9 @@ pub(crate) fn fit_channel_holding(
     problem.residuals(&p, &mut res);
     let sum_squares: f64 = res.iter().map(|e| e * e).sum();
     let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
-    let covariance = stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares);
+    let covariance = (!p.is_empty())
+        .then(|| stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares))
+        .flatten();
     let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
     for (p, _) in parameters.iter_mut().zip(&held).filter(|(_, h)| **h) {
         p.warning = Some("held at the value given".into());
@@ -355,14 +359,26 @@ fn search(
     settings: &FitSettings,
 ) -> Found {
     let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
+    if bounds.is_empty() {
+        // Every parameter held: nothing to search, the start is the fit.
+        let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&[]), &problem.points);
+        return Found {
+            params: Vec::new(),
+            evaluations: 1,
+            sigma_pso,
+        };
+    }
     let r = settings
         .pso
         .minimize_from(|p| problem.cost(p), &bounds, &[start_p.to_vec()]);
     let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&r.best), &problem.points);
-    let polish = |x: &[f64]| match settings.local {
-        LocalMethod::LevenbergMarquardt => Some(levenberg_marquardt(problem, x)),
-        LocalMethod::GaussNewton => Some(GaussNewton::default().minimize(problem, x)),
-        LocalMethod::None => None,
+    let polish = |x: &[f64]| {
+        let l = match settings.local {
+            LocalMethod::LevenbergMarquardt => levenberg_marquardt(problem, x),
+            LocalMethod::GaussNewton => GaussNewton::default().minimize(problem, x),
+            LocalMethod::None => return None,
+        };
+        Some(within_box(problem, x, l, &bounds))
     };
     let mut found = Found {
         params: r.best.clone(),
@@ -381,6 +397,31 @@ fn search(
         }
     }
     found
+}
+
+/// The polish `l` from `x` when it stayed in the parameter box or its
+/// tyre is valid (a value past a box that is narrower than the model, as
+/// PAC89's `a0`, is reported as beyond its bound); else the same start
+/// polished within the box (a projected Levenberg–Marquardt), so that no
+/// value the model refuses is written (a GIM `friction_decay` of −0.64,
+/// which no tyre file holds).
+fn within_box(
+    problem: &FitProblem,
+    x: &[f64],
+    l: LocalResult,
+    bounds: &[(f64, f64)],
+) -> LocalResult {
+    let inside = l
+        .params
+        .iter()
+        .zip(bounds)
+        .all(|(v, (lo, hi))| (lo..=hi).contains(&v));
+    if inside || problem.tyre(&l.params).validate().is_ok() {
+        return l;
+    }
+    let mut boxed = BoundedLm::default().minimize(problem, x, bounds);
+    boxed.evaluations += l.evaluations;
+    boxed
 }
 
 /// One report per parameter of `channel`: value, whether it was free, its
@@ -414,12 +455,22 @@ fn parameter_reports(
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             let w = hi - lo;
-            if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
-                rep.warning = Some("at or beyond its search bound".into());
-            } else if values[i] < lo || values[i] > hi {
-                rep.warning = Some("outside its search box after the polish".into());
-            }
-            if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
+            // On its bound, the value is where the box stopped the fit (the
+            // polish stays in the box): said before its standard error,
+            // which a bound makes meaningless.
+            if values[i] < lo || values[i] > hi {
+                rep.warning = Some(format!(
+                    "beyond its search bound ({} to {}) after the polish: the data take it past the box",
+                    exact(lo),
+                    exact(hi)
+                ));
+            } else if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
+                rep.warning = Some(format!(
+                    "on its search bound ({} to {}): the fit would take it beyond; the value is the bound, not a fit",
+                    exact(lo),
+                    exact(hi)
+                ));
+            } else if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
                 rep.warning = Some(
                     "not identifiable from these data (standard error larger than the value)"
                         .into(),

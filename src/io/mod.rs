@@ -10,6 +10,7 @@ mod limits;
 pub mod paths;
 pub mod rig;
 mod run;
+mod run_units;
 pub mod scenario;
 mod schedule;
 pub mod study;

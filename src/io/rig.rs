@@ -3,7 +3,7 @@
 //! (`kappa`, `fx`) or both, plus optional `camber`, `pressure` and `speed`,
 //! and the wheel moments `mx`, `my` ([`read_rig_moments`]).
 //! Read into [`RigData`] with every error located in the file; the data's
-//! sense is checked here (positive loads, angles in radians, the signs of
+//! sense is checked here (positive loads in N, not kN, angles in radians, the signs of
 //! the forces and the aligning moment at small slip).
 //!
 //! Units: N, N·m, rad, Pa, m/s; slip ratio dimensionless. Signs as in
@@ -41,6 +41,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             return Err(c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v }));
         }
     }
+    check_load_unit(path, &c, &fz)?;
     let n = fz.len();
     let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
         (Some(a), Some(f)) => Some((a, f)),
@@ -97,6 +98,30 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         alpha,
         fy,
     })
+}
+
+/// The smallest median load of a tyre test, N: a bicycle tyre carries
+/// 300–800 N, a car tyre's loads written in kN are 1–10.
+pub const MIN_MEDIAN_LOAD: f64 = 100.0;
+
+/// Refuses loads whose median is below [`MIN_MEDIAN_LOAD`] (in kN), at the
+/// first positive load below it.
+fn check_load_unit(path: &Path, c: &Columns, fz: &[f64]) -> Result<(), InputError> {
+    let mut sorted = fz.to_vec();
+    let median = crate::measured::clean::median(&mut sorted);
+    if median >= MIN_MEDIAN_LOAD {
+        return Ok(());
+    }
+    let i = fz
+        .iter()
+        .position(|v| *v > 0.0 && *v < MIN_MEDIAN_LOAD)
+        .unwrap_or(0);
+    let slip = crate::error::UnitSlip::LoadInKn {
+        value: fz[i],
+        median,
+        limit: MIN_MEDIAN_LOAD,
+    };
+    Err(c.error_at(path, i, "fz", slip.into()))
 }
 
 /// Reads rig data and refuses a file without lateral data.

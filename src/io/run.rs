@@ -1,7 +1,11 @@
 //! Measured vehicle runs (`FORMATS.md`): t, speed, steer, yaw_rate required;
-//! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs.
+//! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs. A
+//! channel whose size says it is in another unit (a time in ms, a steer in
+//! degrees, a yaw rate in deg/s, `ay` in g or ft/s²) is refused at its
+//! column ([`super::run_units`]).
 
 use super::columns::read_columns;
+use super::run_units::{check_ay, check_time_step, check_yaw_rate};
 use crate::error::{InputError, InputProblem};
 use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
@@ -31,6 +35,7 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     if t.len() < 2 {
         return Err(InputError::problem(path, InputProblem::TooFewSamples));
     }
+    check_time_step(path, &c, &t)?;
     // A road-wheel angle beyond 90° is a unit slip, not a manoeuvre: judged
     // on the 99th percentile so that a logger's spike (repaired later) does
     // not refuse the file.
@@ -53,13 +58,18 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
             },
         ));
     }
+    let (speed, yaw_rate, ay) = (c.take("speed"), c.take("yaw_rate"), c.take_optional("ay"));
+    check_yaw_rate(path, &c, &yaw_rate)?;
+    if let Some(ay) = &ay {
+        check_ay(path, &c, &speed, &yaw_rate, ay)?;
+    }
     Ok(MeasuredRun {
         path: path.to_path_buf(),
         t,
-        speed: c.take("speed"),
+        speed,
         steer,
-        yaw_rate: c.take("yaw_rate"),
-        ay: c.take_optional("ay"),
+        yaw_rate,
+        ay,
         beta: c.take_optional("beta"),
         roll: c.take_optional("roll"),
         bank: c.take_optional("bank"),

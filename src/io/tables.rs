@@ -76,7 +76,9 @@ pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
     }
     let src = TomlSource::read(path)?;
     let tyre: Tyre = src.parse()?;
-    tyre.validate().map_err(|e| param_error(&src, None, e))?;
+    tyre.validate()
+        .and_then(|()| tyre.check_sizes())
+        .map_err(|e| param_error(&src, None, e))?;
     Ok(tyre)
 }
 

@@ -13,15 +13,21 @@
 //! `CAMMIN`/`CAMMAX`, `PRESMIN`/`PRESMAX`) are read for MFeval's limit
 //! checks ([`crate::tyre::mf::MfMode`]), loads and pressures converted.
 //!
+//! A value no tyre has (`FNOMIN` in kN, a radius in mm, a coefficient of
+//! 1e30) is refused at its line ([`crate::tyre::sizes`]).
+//!
 //! Writing starts from the file that was read and replaces only the values
 //! the model holds (in the file's own units), so comments, sections and
-//! keys the model does not read round-trip unchanged.
+//! keys the model does not read round-trip unchanged. Each value is
+//! written as the shortest text that reads back as the same number
+//! ([`crate::format::exact`]: `4000`, `1`, `1.5e-7`).
 
 use crate::error::{DuplicateAt, InputError, InputProblem, ModeError};
+use crate::format::exact;
 use crate::tyre::mf::{
     MagicFormula, MfCoefficients, MfLimits, MfMode, MfOptions, MfVersion, TyreSide,
 };
-use crate::tyre::Tyre;
+use crate::tyre::{ModelParameters, Tyre};
 use std::path::{Path, PathBuf};
 
 /// The value of a `KEY = value` line.
@@ -320,14 +326,16 @@ impl TirDocument {
             limits,
             coefficients: c,
         };
-        tyre.validate().map_err(|e| match self.get(&e.key) {
-            Some((line, _)) => self.at(line, InputProblem::TirValue(e)),
-            None => InputError::Value {
-                path: self.path.clone(),
-                at: None,
-                source: e,
-            },
-        })?;
+        tyre.validate()
+            .and_then(|()| ModelParameters::check_sizes(&tyre))
+            .map_err(|e| match self.get(&e.key) {
+                Some((line, _)) => self.at(line, InputProblem::TirValue(e)),
+                None => InputError::Value {
+                    path: self.path.clone(),
+                    at: None,
+                    source: e,
+                },
+            })?;
         Ok(tyre)
     }
 
@@ -355,7 +363,7 @@ impl TirDocument {
                     }
                     .to_string(),
                 ),
-                k => c.get(k).map(|v| format!("{:e}", v / units.factor(k))),
+                k => c.get(k).map(|v| exact(v / units.factor(k))),
             };
             seen.insert(e.key.clone());
             match replacement {
@@ -378,7 +386,7 @@ impl TirDocument {
             out.push_str("[HANDLING_ADDED]\n");
             for k in missing {
                 let v = c.get(k).unwrap_or(0.0) / units.factor(k);
-                out.push_str(&format!("{k:<25} = {v:e}\n"));
+                out.push_str(&format!("{k:<25} = {}\n", exact(v)));
             }
         }
         Ok(out)
@@ -400,7 +408,7 @@ pub(crate) fn write_new(tyre: &MagicFormula) -> String {
     });
     s.push_str("[COEFFICIENTS]\n");
     for k in MfCoefficients::NAMES {
-        s.push_str(&format!("{k:<25} = {:e}\n", c.get(k).unwrap_or(0.0)));
+        s.push_str(&format!("{k:<25} = {}\n", exact(c.get(k).unwrap_or(0.0))));
     }
     let limits: Vec<_> = MfLimits::KEYS
         .iter()
@@ -409,7 +417,7 @@ pub(crate) fn write_new(tyre: &MagicFormula) -> String {
     if !limits.is_empty() {
         s.push_str("[LIMITS]\n");
         for (k, v) in limits {
-            s.push_str(&format!("{k:<25} = {v:e}\n"));
+            s.push_str(&format!("{k:<25} = {}\n", exact(v)));
         }
     }
     s

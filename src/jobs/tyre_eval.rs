@@ -2,7 +2,8 @@
 //! (`fz, kappa, alpha, camber, speed` and optionally `pressure`; SI, rad,
 //! Pa) in; the same points with `fx, fy, mz` (and `mx, my` for the Magic
 //! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
-//! vertical model) out. A Magic Formula tyre is evaluated in one of MFeval's modes
+//! vertical model: on every row, the free radius at zero or negative load,
+//! where the wheel is off the road, those points counted) out. A Magic Formula tyre is evaluated in one of MFeval's modes
 //! (`useMode`, default 121: limit checks on, `α*` on); with the limit
 //! checks on, the points outside the file's ranges are counted (their
 //! load, slip, camber and pressure are evaluated at the ranges' ends, as
@@ -102,6 +103,9 @@ pub struct TyreEvalReport {
     /// pressure, evaluated at the ranges' ends (limit checks on; 0
     /// otherwise).
     pub clamped: usize,
+    /// Points at zero or negative load whose loaded radius `rl` is the free
+    /// radius (the wheel off the road; 0 without an `rl` column).
+    pub off_road: usize,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -175,10 +179,9 @@ pub fn run(
                 })
                 .collect();
             let n = inputs.iter().filter(|p| t.is_clamped(p)).count();
-            // The loaded radius where the file has a vertical model (6.1, 6.2).
-            let rl: Option<Vec<f64>> = (t.coefficients.VERTICAL_STIFFNESS > 0.0
-                && t.loaded_radius(&inputs[0]).is_some())
-            .then(|| {
+            // The loaded radius, on every row, where the file has a
+            // vertical model (6.1, 6.2): the free radius off the road.
+            let rl: Option<Vec<f64>> = t.has_vertical_model().then(|| {
                 inputs
                     .iter()
                     .map(|p| t.loaded_radius(p).unwrap_or(f64::NAN))
@@ -187,6 +190,10 @@ pub fn run(
             (Some(t.mode().use_mode()), n, rl)
         }
         _ => (None, 0, None),
+    };
+    let off_road = match loaded_radius {
+        Some(_) => columns[0].1.iter().filter(|fz| **fz <= 0.0).count(),
+        None => 0,
     };
     if let Some(p) = pressure {
         columns.push(("pressure", p));
@@ -222,6 +229,7 @@ pub fn run(
         model: tyre.model_name(),
         mode,
         clamped,
+        off_road,
         columns,
         out: out.to_path_buf(),
     })
@@ -246,8 +254,15 @@ impl TyreEvalReport {
             Some(m) => format!(" in MFeval mode {m}"),
             None => String::new(),
         };
+        let off_road = match self.off_road {
+            0 => String::new(),
+            n => format!(
+                "; {} at fz ≤ 0 (off the road): no force, `rl` the free radius",
+                crate::format::plural(n, "point", "points")
+            ),
+        };
         format!(
-            "{} of {} ({} tyre) evaluated{mode}; wrote {}",
+            "{} of {} ({} tyre) evaluated{mode}{off_road}; wrote {}",
             crate::format::plural(self.count, "point", "points"),
             self.points,
             self.model,

@@ -1,12 +1,14 @@
 //! Step-steer metrics of a measured run as a logger wrote it: the run is
 //! cleaned ([`crate::measured::clean`]: standstills, crawling and glitches),
 //! and of its moving pieces, longest first, the first that holds a steer
-//! step is measured ([`step_metrics`]); the others are listed with the reason
+//! step is measured ([`step_metrics`]): a step held still before it over the
+//! initial window and held after it (not a sweep: [`check_step_shape`]); the others are listed with the reason
 //! they were left out. A run without `ay` gets the yaw-rate metrics (the
 //! lateral-acceleration ones are `None`). The steer's 10–90 % rise time is
 //! reported and checked against ISO 7401, which asks for at most 0.15 s.
 //! Units: SI, rad, s.
 
+use super::step_shape::check_step_shape;
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
@@ -212,6 +214,7 @@ pub fn measured_step_metrics(
                 p.beta.as_deref(),
                 settings,
             )
+            .and_then(|m| check_step_shape(&p.t, &p.steer, &m, settings).map(|()| m))
             .map(|m| (m, p))
             .map_err(PieceRefusal::NoStepMetrics)
         },

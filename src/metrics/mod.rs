@@ -43,6 +43,7 @@ use serde::{Deserialize, Serialize};
 pub(crate) mod continuous;
 pub mod measured;
 pub mod simulated;
+mod step_shape;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
 pub use simulated::{simulated_step_metrics, DenseRecord};

@@ -12,8 +12,9 @@
 //! Where process ids cannot be checked, a lock is taken as live and the
 //! message says which file to remove.
 //!
-//! A lock that names no process — empty, or text that is no process id (a
-//! disk that filled as it was written, an editor's save) — is taken over
+//! A lock that names no process — empty, text that is no process id or
+//! bytes that are not text (a disk that filled as it was written, an
+//! editor's save), each said as such in the note — is taken over
 //! once it is older than [`NAMELESS_AGE`]: a live run writes its id within
 //! microseconds of creating the file, so a nameless lock that old is no
 //! live run's. A younger one is refused as busy, the message saying when
@@ -38,6 +39,29 @@ fn age(file: &Path) -> f64 {
         .ok()
         .and_then(|t| t.elapsed().ok())
         .map_or(0.0, |d| d.as_secs_f64())
+}
+
+/// The process id a lock's bytes name: a decimal number, blanks around
+/// it allowed.
+fn process_named(bytes: &[u8]) -> Option<u32> {
+    std::str::from_utf8(bytes).ok()?.trim().parse().ok()
+}
+
+/// What a lock that names no process holds, as its take-over note says:
+/// nothing (or blanks), text, or bytes that are no text (a disk that
+/// filled, a crashed editor).
+fn nameless(bytes: &[u8]) -> String {
+    match std::str::from_utf8(bytes) {
+        Ok(t) if t.trim().is_empty() => "is empty".into(),
+        Ok(t) => format!(
+            "names no process ({})",
+            crate::format::plural(t.trim().chars().count(), "character", "characters")
+        ),
+        Err(_) => format!(
+            "names no process ({} that are not text)",
+            crate::format::plural(bytes.len(), "byte", "bytes")
+        ),
+    }
 }
 
 /// A held output folder (cheap to clone: copies share the one lock).
@@ -165,8 +189,8 @@ impl OutputLock {
                     .into())
                 }
             }
-            let text = fs::read_to_string(&file).unwrap_or_default();
-            let holder = text.trim().parse::<u32>().ok();
+            let text = fs::read(&file).unwrap_or_default();
+            let holder = process_named(&text);
             match holder {
                 Some(pid) if pid == me => return Ok(Self::held(file, created, false)),
                 Some(pid) if alive(pid) == Some(false) => {
@@ -183,8 +207,8 @@ impl OutputLock {
                     // A lock being written this instant holds no number
                     // yet: look again before judging it.
                     std::thread::sleep(std::time::Duration::from_millis(50));
-                    let again = fs::read_to_string(&file).unwrap_or_default();
-                    if again.trim().parse::<u32>().is_ok() {
+                    let again = fs::read(&file).unwrap_or_default();
+                    if process_named(&again).is_some() {
                         continue;
                     }
                     let old = age(&file);
@@ -195,11 +219,7 @@ impl OutputLock {
                             &format!("an unknown process: the lock names none, and is taken over once it is {NAMELESS_AGE} s old"),
                         ));
                     }
-                    let what = if again.trim().is_empty() {
-                        "is empty"
-                    } else {
-                        "names no process"
-                    };
+                    let what = nameless(&again);
                     Self::take_over(dir, &file, &again, &format!("{what} and is {old:.0} s old"))?;
                 }
             }
@@ -221,7 +241,7 @@ impl OutputLock {
     /// stale: `why`): renamed aside first (atomic), then checked to hold
     /// that content still before it is deleted, so that of two runs taking
     /// over at once only one does.
-    fn take_over(dir: &Path, file: &Path, text: &str, why: &str) -> Result<(), Error> {
+    fn take_over(dir: &Path, file: &Path, text: &[u8], why: &str) -> Result<(), Error> {
         let name = file
             .file_name()
             .map_or_else(|| LOCK_FILE.into(), |n| n.to_string_lossy().into_owned());
@@ -230,7 +250,7 @@ impl OutputLock {
             // Another run took it over first: the next round sees its lock.
             return Ok(());
         }
-        let moved = fs::read_to_string(&aside).unwrap_or_default();
+        let moved = fs::read(&aside).unwrap_or_default();
         if moved != text {
             // A live run's fresh lock was moved: give it back.
             let _ = fs::rename(&aside, file);

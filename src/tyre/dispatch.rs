@@ -126,6 +126,12 @@ impl Tyre {
         self.as_model().validate()
     }
 
+    /// Checks the sizes of the dimensional parameters, as a file holds
+    /// them ([`ModelParameters::check_sizes`]).
+    pub fn check_sizes(&self) -> Result<(), ParamError> {
+        self.as_model().check_sizes()
+    }
+
     /// Which parameters a lateral-force fit can identify from data with
     /// `loads` distinct loads and `cambers` distinct cambers: the rest stay
     /// at their start values ([`ModelParameters::lateral_free`]).

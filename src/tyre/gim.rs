@@ -194,6 +194,12 @@ impl ModelParameters for Gim {
         // The inherent check above (inherent methods take precedence).
         Gim::validate(self)
     }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        super::sizes::cornering_stiffness("cornering_stiffness", self.cornering_stiffness)?;
+        super::sizes::contact_length("contact_length", self.contact_length)?;
+        super::sizes::friction("friction", self.friction)?;
+        super::sizes::tyre_load("reference_load", self.reference_load)
+    }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
     }

@@ -99,6 +99,10 @@ impl ModelParameters for Linear {
         // The inherent check above (inherent methods take precedence).
         Linear::validate(self)
     }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        super::sizes::cornering_stiffness("cornering_stiffness", self.cornering_stiffness)?;
+        super::sizes::trail("pneumatic_trail", self.pneumatic_trail)
+    }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
     }

@@ -46,6 +46,7 @@ pub mod mf;
 mod name;
 pub(crate) mod pac89;
 mod registry;
+pub mod sizes;
 pub(crate) mod unitire;
 
 pub use gim::Gim;
@@ -335,6 +336,14 @@ pub enum Block {
 pub trait ModelParameters: TyreModel + Parameterised {
     /// Checks the parameters for physical sense; the error names the key.
     fn validate(&self) -> Result<(), ParamError>;
+
+    /// Checks that each dimensional parameter has a size some tyre has in
+    /// its unit ([`sizes`]): a tyre file's unit slip (a contact length in
+    /// mm) is refused at its key. Run where a file is read, after
+    /// [`Self::validate`].
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        Ok(())
+    }
 
     /// Multiplies the cornering stiffness by `k` while the friction limit
     /// stays: the parameter(s) the stiffness is proportional to are scaled.

@@ -261,9 +261,26 @@ impl LateralForceOf for UniTire {
     }
 }
 
+/// The lateral parameters' names as the tyre file writes them: the
+/// elements of `[lateral] p`, numbered p1..p10 as the model's (Zhang & Li's
+/// b1..b10); the longitudinal `longitudinal.p1..p10` and the aligning
+/// `aligning.c1..c10` alike (`--hold` takes these names).
+const LATERAL_NAMES: [&str; 10] = [
+    "lateral.p1",
+    "lateral.p2",
+    "lateral.p3",
+    "lateral.p4",
+    "lateral.p5",
+    "lateral.p6",
+    "lateral.p7",
+    "lateral.p8",
+    "lateral.p9",
+    "lateral.p10",
+];
+
 impl Parameterised for UniTire {
     fn parameter_names(&self) -> Vec<&'static str> {
-        vec!["b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8", "b9", "b10"]
+        LATERAL_NAMES.to_vec()
     }
     fn parameters(&self) -> Vec<f64> {
         self.lateral.p.to_vec()
@@ -313,6 +330,9 @@ impl ModelParameters for UniTire {
         // The inherent check above (inherent methods take precedence).
         UniTire::validate(self)
     }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        super::sizes::tyre_load("rated_load", self.rated_load)
+    }
     /// K = Fz·(p3 + p4·Fzn + p5·Fzn²) is proportional to p3..p5.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.lateral.scale_stiffness(k);
@@ -333,8 +353,8 @@ impl ModelParameters for UniTire {
     }
     fn block_names(&self, block: Block) -> Vec<String> {
         match block {
-            Block::Aligning => (1..=10).map(|i| format!("c{i}")).collect(),
-            Block::Longitudinal => (1..=10).map(|i| format!("a{i}")).collect(),
+            Block::Aligning => (1..=10).map(|i| format!("aligning.c{i}")).collect(),
+            Block::Longitudinal => (1..=10).map(|i| format!("longitudinal.p{i}")).collect(),
         }
     }
     /// Unset blocks start at [`DEFAULT_ALIGNING`] / [`DEFAULT_LONGITUDINAL`].

@@ -249,7 +249,10 @@ mod scenarios;
 mod shards;
 mod sweeps;
 mod trips;
+mod trips_identify;
 mod trips_inputs;
+mod trips_limits;
+mod trips_units;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
 pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {

@@ -316,7 +316,27 @@ pub(super) fn run_stage(
         evaluations: evaluations * fit.problem.count(),
         seconds: t0.elapsed().as_secs_f64(),
         parameters,
-        warnings: u.near_singular.into_iter().collect(),
+        warnings: u
+            .near_singular
+            .into_iter()
+            .chain(not_converged(result.converged, run))
+            .collect(),
         error_spread: None,
     }
+}
+
+/// The warning of a stage whose Levenberg–Marquardt stopped before its
+/// convergence test (its iteration cap), `None` when it converged.
+fn not_converged(converged: bool, run: &StageRun) -> Option<String> {
+    let cap = match run.start {
+        StartScheme::Paper => run.max_iterations.max(500),
+        StartScheme::Data | StartScheme::Template => run.max_iterations,
+    };
+    (!converged).then(|| {
+        format!(
+            "not converged: Levenberg–Marquardt stopped at its cap of {cap} iterations per step \
+             before its convergence test (its cost still falling by more than 1e-12 of itself \
+             per iteration): the values are where it stopped (--max-iterations sets the cap)"
+        )
+    })
 }

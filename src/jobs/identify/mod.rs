@@ -15,6 +15,9 @@ use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
 mod choices;
 mod figures;
+mod holds;
+pub use holds::Held;
+use holds::{held_lines, holds_of};
 mod staged;
 mod staged_figure;
 
@@ -182,6 +185,8 @@ pub struct SwarmReport {
     pub longitudinal: Option<Fit>,
     /// The data file.
     pub data: String,
+    /// The parameters held with `--hold`.
+    pub held: Vec<Held>,
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -408,6 +413,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         aligning: None,
         longitudinal: None,
         data: o.data.display().to_string(),
+        held: Vec::new(),
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
@@ -455,6 +461,12 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
     }
+    let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
+        .into_iter()
+        .flatten()
+        .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
+        .collect();
+    r.held = holds_of(o, &fitted);
     Ok(r)
 }
 
@@ -501,6 +513,7 @@ impl SwarmReport {
             o.seed
         )];
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
+        out.extend(held_lines(&self.held));
         let two_stage_asked = o
             .model
             .swarm_model()

@@ -7,7 +7,7 @@
 
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
-use crate::format::plural;
+use crate::format::{exact, plural};
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
@@ -29,6 +29,8 @@ pub struct StagedJob {
     pub data: String,
     /// Samples and rows fitted.
     pub rows: RowAccount,
+    /// The coefficients held with `--hold` (each written at its value).
+    pub held: Vec<super::holds::Held>,
     /// The fit's overall σ: pooled over every raw sample and measured
     /// channel of the file (the stages' σ are over their own rows).
     pub sigma_pooled: PooledSigma,
@@ -64,6 +66,7 @@ impl StagedJob {
         if let Some(g) = &self.rows.thinning {
             out.extend(g.lines().iter().map(|l| format!("  {l}")));
         }
+        out.extend(super::holds::held_lines(&self.held));
         for s in &self.report.stages {
             match &s.skipped {
                 Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
@@ -164,7 +167,9 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
     let raw = mf_staged::raw_rows(&data, &moments, default_speed);
     let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw);
-    let tir = crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
+    crate::tyre::ModelParameters::check_sizes(&id.tyre)
+        .map_err(|source| FitError::BeyondAnyTyre { source })?;
+    let tir = held_comment(o) + &crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
@@ -178,7 +183,11 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .map(|s| s.stage)
         .collect();
     let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows);
+    // A given value is set before the stages and written whether or not
+    // a stage that fits it ran: every hold is applied.
+    let given: Vec<String> = o.hold.iter().map(|(n, _)| n.clone()).collect();
     Ok(StagedJob {
+        held: super::holds::holds_of(o, &given),
         report: id.report,
         data: o.data.display().to_string(),
         rows: prepared.account,
@@ -189,4 +198,30 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         options: o.clone(),
         lock,
     })
+}
+
+/// The comment lines that open a .tir fitted with `--hold`: the command
+/// and each coefficient held at the value given, not fitted (empty
+/// without a hold). A `$` line is a comment wherever it stands.
+fn held_comment(o: &Options) -> String {
+    if o.hold.is_empty() {
+        return String::new();
+    }
+    let holds: String = o
+        .hold
+        .iter()
+        .map(|(n, v)| format!(" --hold {n}={}", exact(*v)))
+        .collect();
+    let mut s = format!(
+        "$ identified by `handling identify {} --model {}{holds}`\n",
+        o.data.display(),
+        o.model
+    );
+    for (n, v) in &o.hold {
+        s += &format!(
+            "$ held: {n} = {}: given with --hold, not fitted (SI units)\n",
+            exact(*v)
+        );
+    }
+    s
 }

@@ -269,9 +269,18 @@ impl MagicFormula {
         }
     }
 
+    /// Whether the file has a vertical model, hence a loaded radius: a 6.1
+    /// or 6.2 file with a positive `VERTICAL_STIFFNESS` and `NOMPRES`.
+    pub fn has_vertical_model(&self) -> bool {
+        let c = &self.coefficients;
+        self.version != MfVersion::Mf52 && c.VERTICAL_STIFFNESS > 0.0 && c.NOMPRES > 0.0
+    }
+
     /// The loaded radius (m) at a point, as MFeval computes it for a 6.1 or
     /// 6.2 file ([`vertical`]); `None` for a 5.2 file or one without
-    /// `VERTICAL_STIFFNESS` (no vertical model), and at zero load.
+    /// `VERTICAL_STIFFNESS` (no vertical model, [`Self::has_vertical_model`])
+    /// and at a non-finite load. At zero or negative load (the wheel off
+    /// the road) it is the free-spinning radius `RΩ` at zero load.
     pub fn loaded_radius(&self, p: &MfInput) -> Option<f64> {
         // MF 6.1's vertical force has no camber, Fy-shift or Fy-power
         // terms: a 6.1 file that carries those keys is evaluated without.
@@ -286,18 +295,18 @@ impl MagicFormula {
         } else {
             &self.coefficients
         };
-        if self.version == MfVersion::Mf52
-            || c.VERTICAL_STIFFNESS <= 0.0
-            || c.NOMPRES <= 0.0
-            || p.fz <= 0.0
-            || !p.fz.is_finite()
-        {
+        if !self.has_vertical_model() || !p.fz.is_finite() {
             return None;
         }
         let mirror = self.side == TyreSide::Right;
         let gamma = if mirror { -p.camber } else { p.camber };
         let alpha = if mirror { p.alpha } else { -p.alpha };
         let pressure = self.pressure(p.pressure);
+        if p.fz <= 0.0 {
+            // Off the road: no deflection, the free radius at zero load.
+            let dpi = (self.checked(0.0, gamma, pressure).p - c.NOMPRES) / c.NOMPRES;
+            return Some(vertical::radii(c, 0.0, p.kappa, p.speed, dpi).free);
+        }
         // ISO-W forces of the (mirrored) tyre; the vertical model is even
         // under the mirror.
         let o = self.evaluate_iso(p.fz, gamma, pressure, 1.0, p.kappa, alpha, p.speed);
@@ -422,6 +431,9 @@ impl ModelParameters for MagicFormula {
     fn validate(&self) -> Result<(), ParamError> {
         // The inherent check above (inherent methods take precedence).
         MagicFormula::validate(self)
+    }
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        crate::tyre::sizes::magic_formula(&self.coefficients)
     }
     /// `Kyα` is proportional to its scaling factor `λ_Kyα`.
     fn scale_cornering_stiffness(&mut self, k: f64) {

@@ -1,0 +1,94 @@
+//! A channel of an input file whose size says it is written in another
+//! unit than `FORMATS.md`'s (SI, radians, seconds): a yaw rate in deg/s, a
+//! lateral acceleration in g or ft/s², a time in milliseconds, a wheel
+//! load in kN. Each is judged on what no car reaches in the unit
+//! `FORMATS.md` asks for, and its message names the column, the value and
+//! the unit it is likely in.
+
+use super::number::Num;
+use crate::format::{fixed, plural, significant};
+use thiserror::Error;
+
+/// A column whose values are in another unit than `FORMATS.md`'s.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[non_exhaustive]
+pub enum UnitSlip {
+    /// A yaw rate beyond what any car reaches, over more than 1 % of the
+    /// run (a spike alone is repaired later).
+    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (1 % of the run reaches {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3))]
+    YawRate {
+        /// The first yaw rate beyond the limit, as read.
+        value: f64,
+        /// The 99th percentile of |yaw_rate|, as read.
+        p99: f64,
+        /// The largest yaw rate accepted, rad/s.
+        limit: f64,
+    },
+    /// A lateral acceleration beyond what any car reaches, over more than
+    /// 1 % of the run.
+    #[error("column `ay`: {} m/s² is beyond ±{} m/s² ({} g), which no car's lateral acceleration reaches (1 % of the run reaches {} m/s²): `ay` is in m/s² (FORMATS.md); is the column in ft/s² (divide it by 3.281) or another unit?", Num(*value), Num(*limit), fixed(limit / 9.80665, 1), significant(*p99, 3))]
+    AyTooLarge {
+        /// The first |ay| beyond the limit, as read.
+        value: f64,
+        /// The 99th percentile of |ay|, as read.
+        p99: f64,
+        /// The largest |ay| accepted, m/s².
+        limit: f64,
+    },
+    /// A lateral acceleration about 1/9.81 of speed × yaw rate: in g.
+    #[error("column `ay`: {} where speed × yaw_rate is {} m/s²: over {} turning at |speed × yaw_rate| ≥ {} m/s², `ay` is a median {} of it, where a car's lateral acceleration is about speed × yaw_rate: is `ay` in g? multiply it by 9.81 (FORMATS.md: m/s²)", Num(*value), significant(*expected, 3), plural(*samples, "sample", "samples"), Num(*turning), fixed(*median, 3))]
+    AyInG {
+        /// The row's `ay`, as read.
+        value: f64,
+        /// The row's speed × yaw rate, m/s².
+        expected: f64,
+        /// The median of ay/(speed·yaw_rate) over the turning samples.
+        median: f64,
+        /// The turning samples.
+        samples: usize,
+        /// The least |speed × yaw_rate| of a turning sample, m/s².
+        turning: f64,
+    },
+    /// A median time step no handling run is logged at.
+    #[error("column `t`: the median time step is {} ({}), coarser than any handling run is logged at (at most {} s, {} Hz): `t` is in seconds (FORMATS.md){}", Num(*step), rate(*step), Num(*limit), Num(1.0 / limit), in_ms(*step))]
+    TimeStep {
+        /// The median step, as read.
+        step: f64,
+        /// The largest median step accepted, s.
+        limit: f64,
+    },
+    /// A wheel load of a few units: in kN.
+    #[error("column `fz`: {} N, in a file whose median load is {} N: no tyre is tested at a median load below {} N (a car tyre carries 2,000–8,000 N): `fz` is in N (FORMATS.md); is the column in kN? multiply it by 1000", Num(*value), Num(*median), Num(*limit))]
+    LoadInKn {
+        /// The first load below the limit, as read.
+        value: f64,
+        /// The median load, as read.
+        median: f64,
+        /// The smallest median load accepted, N.
+        limit: f64,
+    },
+}
+
+/// `x` to three significant digits, as a message shows a number.
+fn three(x: f64) -> Num {
+    Num(significant(x, 3).parse().unwrap_or(x))
+}
+
+/// The sample rate of a time step read as seconds.
+fn rate(step: f64) -> String {
+    format!("{} Hz if in seconds", three(1.0 / step))
+}
+
+/// The question a step of that size raises: milliseconds, when read so
+/// it is a logger's rate (5 Hz to 10 kHz).
+fn in_ms(step: f64) -> String {
+    if (0.1..=200.0).contains(&step) {
+        format!(
+            "; is `t` in milliseconds ({} ms: {} Hz)? divide it by 1000",
+            Num(step),
+            three(1000.0 / step)
+        )
+    } else {
+        String::new()
+    }
+}

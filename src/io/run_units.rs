@@ -1,0 +1,136 @@
+//! The unit checks of a measured run ([`super::read_run`]): a channel whose
+//! size no car reaches in `FORMATS.md`'s unit is refused at its column and
+//! first such row, naming the unit it is likely in ([`UnitSlip`]). Judged
+//! on the 99th percentile of a channel's size, so that a logger's spike
+//! (repaired later by the cleaning) does not refuse a file, and on the
+//! median time step.
+
+use super::columns::Columns;
+use crate::error::{InputError, UnitSlip};
+use crate::measured::clean::{median, quantile};
+use std::path::Path;
+
+/// The largest yaw rate of a car, rad/s (172°/s; a car spinning out turns
+/// at about 2 rad/s): a step steer's 10°/s read as rad/s is beyond it.
+pub const MAX_YAW_RATE: f64 = 3.0;
+
+/// The largest lateral acceleration of a car, m/s² (3.1 g; a racing car
+/// with downforce reaches about 4 g only for moments).
+pub const MAX_AY: f64 = 30.0;
+
+/// The coarsest median time step of a handling run, s (5 Hz: a yaw
+/// response takes 0.1–0.3 s): 10 ms written as 10 is far beyond it.
+pub const MAX_TIME_STEP: f64 = 0.2;
+
+/// The fewest samples whose median step judges a logger's rate.
+const RATE_SAMPLES: usize = 10;
+
+/// A turning sample's least |speed × yaw_rate|, m/s²: well above the
+/// noise of a lateral accelerometer (0.1–0.3 m/s²).
+const TURNING: f64 = 1.0;
+
+/// Turning samples needed to judge `ay` against speed × yaw rate.
+const TURNING_SAMPLES: usize = 50;
+
+/// The band of ay/(speed·yaw_rate) of `ay` in g (1/9.81 = 0.10, within a
+/// factor of 2), where a car's is near 1 on a flat road.
+const AY_IN_G: (f64, f64) = (0.05, 0.2);
+
+/// The share of the turning samples inside [`AY_IN_G`] that says g: on a
+/// banked oval the ratio scatters (its median can lie in the band, 0.13
+/// on the synthetic oval, with 6 % of the samples in it), in g it holds.
+const AY_IN_G_SHARE: f64 = 0.8;
+
+/// The slowest sample judged for `ay`, m/s.
+const MOVING: f64 = 5.0;
+
+/// The 99th percentile of |x| and the first row beyond `limit`, when that
+/// percentile is beyond it.
+fn beyond(x: &[f64], limit: f64) -> Option<(usize, f64)> {
+    let mut size: Vec<f64> = x.iter().map(|v| v.abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let p99 = quantile(&size, 0.99)?;
+    (p99 > limit).then(|| (x.iter().position(|v| v.abs() > limit).unwrap_or(0), p99))
+}
+
+/// Refuses a yaw rate beyond [`MAX_YAW_RATE`] over more than 1 % of the
+/// run (deg/s).
+pub(super) fn check_yaw_rate(path: &Path, c: &Columns, r: &[f64]) -> Result<(), InputError> {
+    match beyond(r, MAX_YAW_RATE) {
+        Some((i, p99)) => Err(c.error_at(
+            path,
+            i,
+            "yaw_rate",
+            UnitSlip::YawRate {
+                value: r[i],
+                p99,
+                limit: MAX_YAW_RATE,
+            }
+            .into(),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Refuses an `ay` beyond [`MAX_AY`] over more than 1 % of the run, or
+/// whose median over the turning samples (at least 50 at 5 m/s or more
+/// with |speed × yaw_rate| ≥ 1 m/s²) is below 0.3 of speed × yaw rate (in
+/// g), located at the first turning sample.
+pub(super) fn check_ay(
+    path: &Path,
+    c: &Columns,
+    speed: &[f64],
+    r: &[f64],
+    ay: &[f64],
+) -> Result<(), InputError> {
+    if let Some((i, p99)) = beyond(ay, MAX_AY) {
+        let slip = UnitSlip::AyTooLarge {
+            value: ay[i],
+            p99,
+            limit: MAX_AY,
+        };
+        return Err(c.error_at(path, i, "ay", slip.into()));
+    }
+    let turning: Vec<usize> = (0..ay.len())
+        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
+        .collect();
+    if turning.len() < TURNING_SAMPLES {
+        return Ok(());
+    }
+    let mut q: Vec<f64> = turning.iter().map(|&i| ay[i] / (speed[i] * r[i])).collect();
+    let (lo, hi) = AY_IN_G;
+    let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
+    if (inside as f64) < AY_IN_G_SHARE * q.len() as f64 {
+        return Ok(());
+    }
+    let m = median(&mut q);
+    let i = turning[0];
+    let slip = UnitSlip::AyInG {
+        value: ay[i],
+        expected: speed[i] * r[i],
+        median: m,
+        samples: turning.len(),
+        turning: TURNING,
+    };
+    Err(c.error_at(path, i, "ay", slip.into()))
+}
+
+/// Refuses a median time step above [`MAX_TIME_STEP`] (a time in ms),
+/// judged on runs of at least 10 samples, at the first step of that size.
+pub(super) fn check_time_step(path: &Path, c: &Columns, t: &[f64]) -> Result<(), InputError> {
+    if t.len() < RATE_SAMPLES {
+        return Ok(());
+    }
+    let steps: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut sorted = steps.clone();
+    let step = median(&mut sorted);
+    if step <= MAX_TIME_STEP {
+        return Ok(());
+    }
+    let i = steps.iter().position(|s| *s >= step).map_or(1, |k| k + 1);
+    let slip = UnitSlip::TimeStep {
+        step,
+        limit: MAX_TIME_STEP,
+    };
+    Err(c.error_at(path, i, "t", slip.into()))
+}

@@ -1,0 +1,56 @@
+//! Whether a measured record is a step steer the metrics can read
+//! ([`check_step_shape`]): the steer held at its initial value over the
+//! initial window (else the initial values mix the step in: a record
+//! that starts just before the step), and held at its step once it has
+//! reached 90 % of it (else it is a sweep or a sine, whose "step" is the
+//! difference of two windows' means).
+
+use super::{first_crossing, window_mean, zero_phase_low_pass, MetricSettings, StepMetrics};
+use crate::error::{MetricsError, HELD_STEP};
+
+/// The share of the step by which the steer has left its initial value
+/// (the onset of the total-variance window).
+const ONSET: f64 = 0.05;
+
+/// Checks the steer of a record whose metrics `m` were measured with
+/// `s`: its normalised steer (filtered as the metrics were) must stay
+/// within 5 % of its step over the initial window, and once at 90 % within
+/// [`HELD_STEP`] to the end.
+pub(crate) fn check_step_shape(
+    t: &[f64],
+    steer: &[f64],
+    m: &StepMetrics,
+    s: &MetricSettings,
+) -> Result<(), MetricsError> {
+    let steer = match m.filter_hz {
+        Some(f) => {
+            let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+            dts.sort_by(f64::total_cmp);
+            zero_phase_low_pass(steer, dts[dts.len() / 2], f)
+        }
+        None => steer.to_vec(),
+    };
+    let (from, to) = (t[0], t[0] + s.pre_window);
+    let (d0, _) = window_mean(t, &steer, from, to);
+    let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
+    let initial = t.partition_point(|x| *x <= to);
+    if let Some(i) = d[..initial].iter().position(|v| v.abs() > ONSET) {
+        return Err(MetricsError::StepInInitialWindow {
+            moved: t[i],
+            from,
+            to,
+        });
+    }
+    let Some(reached) = first_crossing(t, &d, 0.9, from) else {
+        return Ok(());
+    };
+    let (lo, hi) = HELD_STEP;
+    match (0..t.len()).find(|&i| t[i] > reached && !(lo..=hi).contains(&d[i])) {
+        Some(i) => Err(MetricsError::SteerNotHeld {
+            reached,
+            time: t[i],
+            share: d[i],
+        }),
+        None => Ok(()),
+    }
+}

@@ -1,0 +1,100 @@
+//! The sizes a tyre file's dimensional parameters can hold: a value no
+//! tyre has in the file's unit is a unit slip (a contact length of 180 for
+//! 180 mm, a load of 4 for 4 kN, a coefficient of 1e30), refused when the
+//! file is read, at its key, with the unit it is likely in
+//! ([`crate::error::Limit`] says why). The limits lie well outside every
+//! tyre, so that no real one and no fitted one (the fits' boxes are
+//! narrower) is refused. Units: SI, as the models hold them (N, m, N/rad,
+//! Pa); a Magic Formula file's values after its `[UNITS]` are applied.
+
+use crate::error::{Limit, ParamError};
+use crate::tyre::mf::MfCoefficients;
+
+/// The longest contact patch, m (a car tyre's is 0.1–0.25 m, a truck's
+/// about 0.3 m).
+pub const MAX_CONTACT_LENGTH: f64 = 1.0;
+
+/// The stiffest tyre's cornering stiffness, N/rad (a truck tyre's is
+/// about 3e5 N/rad, a car's 5e4–1.5e5).
+pub const MAX_CORNERING_STIFFNESS: f64 = 2e6;
+
+/// The loads of a tyre, N: a bicycle's above 100 N, a mining truck's
+/// below 1e5 N.
+pub const TYRE_LOAD: (f64, f64) = (100.0, 1e5);
+
+/// The largest friction coefficient, μ (racing slicks reach about 1.8).
+pub const MAX_FRICTION: f64 = 5.0;
+
+/// The largest |pneumatic trail|, m (a car tyre's is a few centimetres).
+pub const MAX_TRAIL: f64 = 0.5;
+
+/// A tyre's unloaded radius, m: a kart's is above 0.1 m, a mining
+/// truck's below 2 m.
+pub const UNLOADED_RADIUS: (f64, f64) = (0.05, 2.0);
+
+/// The largest |coefficient| of a Magic Formula file, in SI: its
+/// dimensionless coefficients stay within about ±2,000 in published
+/// files (RBY4 of some reaches 1,747).
+pub const MAX_MF_COEFFICIENT: f64 = 1e6;
+
+/// The largest stiffness (N/m) or pressure (Pa) of a Magic Formula file:
+/// vertical stiffnesses are below 2e6 N/m, pressures below 1e6 Pa.
+pub const MAX_MF_DIMENSIONAL: f64 = 1e8;
+
+/// The coefficients of a Magic Formula file in N/m or Pa.
+const MF_DIMENSIONAL: [&str; 3] = ["VERTICAL_STIFFNESS", "NOMPRES", "INFLPRES"];
+
+/// A contact length, m.
+pub(crate) fn contact_length(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::in_range(key, v, 0.0, MAX_CONTACT_LENGTH, Limit::ContactLength)
+}
+
+/// A cornering stiffness, N/rad.
+pub(crate) fn cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::in_range(
+        key,
+        v,
+        0.0,
+        MAX_CORNERING_STIFFNESS,
+        Limit::CorneringStiffness,
+    )
+}
+
+/// A tyre's load (a reference or rated load), N.
+pub(crate) fn tyre_load(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::in_range(key, v, TYRE_LOAD.0, TYRE_LOAD.1, Limit::TyreLoad)
+}
+
+/// A friction coefficient.
+pub(crate) fn friction(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::in_range(key, v, 0.0, MAX_FRICTION, Limit::TyreFriction)
+}
+
+/// A pneumatic trail, m.
+pub(crate) fn trail(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::in_range(key, v, -MAX_TRAIL, MAX_TRAIL, Limit::PneumaticTrail)
+}
+
+/// The coefficients of a Magic Formula tyre, in SI: its load and radius,
+/// then every coefficient's size.
+pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
+    tyre_load("FNOMIN", c.FNOMIN)?;
+    let (lo, hi) = UNLOADED_RADIUS;
+    ParamError::in_range(
+        "UNLOADED_RADIUS",
+        c.UNLOADED_RADIUS,
+        lo,
+        hi,
+        Limit::UnloadedRadius,
+    )?;
+    for name in MfCoefficients::NAMES {
+        let v = c.get(name).unwrap_or(0.0);
+        let (max, why) = if MF_DIMENSIONAL.contains(name) {
+            (MAX_MF_DIMENSIONAL, Limit::MfDimensional)
+        } else {
+            (MAX_MF_COEFFICIENT, Limit::MfCoefficient)
+        };
+        ParamError::in_range(name, v, -max, max, why)?;
+    }
+    Ok(())
+}

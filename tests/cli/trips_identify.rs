@@ -1,0 +1,206 @@
+//! What a user still trips on in `identify`: loads in kN,
+//! `--hold` names that differ from the tyre file's, holds not reported,
+//! a stage that stops on its iteration cap.
+
+use super::*;
+
+/// Rig data at 2, 4 and 6 kN, a slip sweep of ±0.2 rad each, with `mz`;
+/// loads divided by `fz_scale`.
+fn rig(fz_scale: f64) -> String {
+    let mut s = String::from("fz,alpha,fy,mz\n");
+    for fz in [2000.0, 4000.0, 6000.0] {
+        for k in -10..=10 {
+            let alpha = 0.02 * f64::from(k);
+            let fy = fz * (1.4 * (12.0 * alpha).atan()).sin();
+            s += &format!("{},{alpha},{fy:.3},{:.4}\n", fz / fz_scale, 0.02 * fy);
+        }
+    }
+    s
+}
+
+/// Runs `identify rig.csv --model model args… --out out` in `dir`.
+fn identify_with(dir: &Path, model: &str, args: &[&str], out: &Path) -> Output {
+    let mut all = vec![
+        "identify".to_string(),
+        dir.join("rig.csv").display().to_string(),
+        "--model".into(),
+        model.into(),
+    ];
+    all.extend(args.iter().map(|a| a.to_string()));
+    all.extend(["--out".into(), out.display().to_string()]);
+    bin().args(&all).current_dir(dir).output().unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Loads in kN (2–6) were fitted as newtons.
+#[test]
+fn loads_in_kn_are_refused_at_their_column_with_the_hint() {
+    let dir = scratch(&[("rig.csv", &rig(1000.0))]);
+    for (model, out) in [("gim", "t.toml"), ("mf61", "t.tir")] {
+        let out = dir.path().join(out);
+        let e = refused(&identify_with(dir.path(), model, &[], &out), &out);
+        assert!(
+            e.contains("rig.csv:2:1: column `fz`: 2 N, in a file whose median load is 4 N: no tyre is tested at a median load below 100 N"),
+            "{model}: {e}"
+        );
+        assert!(
+            e.contains("is the column in kN? multiply it by 1000"),
+            "{e}"
+        );
+    }
+}
+
+/// UniTire's holds were named b1.., c1.., a1.. where the file it writes
+/// has `[lateral] p`, `[aligning] c`, `[longitudinal] p`; a hold of a
+/// block no fit ran was dropped silently.
+#[test]
+fn unitire_holds_take_the_names_of_the_file_it_writes_and_are_reported() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("u.toml");
+    let holds = [
+        "--hold",
+        "lateral.p1=0.3",
+        "--hold",
+        "aligning.c2=0.004",
+        "--hold",
+        "longitudinal.p3=18",
+    ];
+    let o = identify_with(dir.path(), "unitire", &holds, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stdout(&o);
+    assert!(
+        said.contains("held with --hold (not fitted): lateral.p1 = 0.3, aligning.c2 = 0.004"),
+        "{said}"
+    );
+    assert!(
+        said.contains("warning: --hold longitudinal.p3=18: not applied: no fit of its block ran on these data"),
+        "{said}"
+    );
+    let tyre: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(tyre["lateral"]["p"][0].as_float(), Some(0.3));
+    assert_eq!(tyre["aligning"]["c"][1].as_float(), Some(0.004));
+    assert!(tyre.get("longitudinal").is_none(), "{tyre}");
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["held"],
+        serde_json::json!([
+            {"name": "lateral.p1", "value": 0.3, "applied": true},
+            {"name": "aligning.c2", "value": 0.004, "applied": true},
+            {"name": "longitudinal.p3", "value": 18.0, "applied": false},
+        ])
+    );
+    // The fitter's own names are no longer taken.
+    let bad = dir.path().join("bad.toml");
+    let e = refused(
+        &identify_with(dir.path(), "unitire", &["--hold", "b1=0.3"], &bad),
+        &bad,
+    );
+    assert!(
+        e.contains("its parameters are lateral.p1, lateral.p2,"),
+        "{e}"
+    );
+}
+
+/// Holding the linear tyre's one parameter panicked in the swarm ("chunk
+/// size must not be zero").
+#[test]
+fn a_linear_tyre_with_its_stiffness_held_is_written_as_held() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("l.toml");
+    let o = identify_with(
+        dir.path(),
+        "linear",
+        &["--hold", "cornering_stiffness=60000"],
+        &out,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("held with --hold (not fitted): cornering_stiffness = 60000"),
+        "{}",
+        stdout(&o)
+    );
+    let tyre: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(tyre["cornering_stiffness"].as_float(), Some(60000.0));
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(report["held"][0]["applied"], true);
+    assert_eq!(report["parameters"][0]["free"], false);
+}
+
+/// A staged MF fit held a coefficient without a word in the .tir, and a
+/// stage stopped on its iteration cap said nothing.
+#[test]
+fn an_mf_fit_records_its_hold_in_the_tir_and_says_a_stage_did_not_converge() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("m.tir");
+    let args = ["--hold", "PKY4=2", "--max-iterations", "2"];
+    let o = identify_with(dir.path(), "mf61", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stdout(&o);
+    assert!(
+        said.contains("held with --hold (not fitted): PKY4 = 2"),
+        "{said}"
+    );
+    assert!(
+        said.contains("warning: not converged: Levenberg–Marquardt stopped at its cap of 2 iterations per step before its convergence test"),
+        "{said}"
+    );
+    let tir = fs::read_to_string(&out).unwrap();
+    assert!(
+        tir.starts_with("$ identified by `handling identify "),
+        "{tir}"
+    );
+    assert!(
+        tir.contains("\n$ held: PKY4 = 2: given with --hold, not fitted (SI units)\n"),
+        "{tir}"
+    );
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["held"],
+        serde_json::json!([{"name": "PKY4", "value": 2.0, "applied": true}])
+    );
+    assert!(
+        unconverged_stages_warn(&report, &said) > 0,
+        "two iterations stop a stage short"
+    );
+    // With the default cap: the warning where a stage stopped short, and
+    // only there.
+    let out = dir.path().join("m2.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report = read_json(&out.with_extension("report.json"));
+    assert!(
+        unconverged_stages_warn(&report, &stdout(&o)) < 3,
+        "{report}"
+    );
+}
+
+/// Checks that a fitted stage of `report` carries the "not converged"
+/// warning, in the report and on the terminal `said`, exactly when it did
+/// not converge; returns how many did not.
+fn unconverged_stages_warn(report: &serde_json::Value, said: &str) -> usize {
+    let fitted: Vec<&serde_json::Value> = report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["skipped"].is_null())
+        .collect();
+    let mut unconverged = 0;
+    for s in &fitted {
+        let warns = s["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().starts_with("not converged"));
+        assert_eq!(warns, s["converged"] == false, "{s}");
+        unconverged += usize::from(warns);
+    }
+    assert_eq!(
+        said.matches("warning: not converged").count(),
+        unconverged,
+        "{said}"
+    );
+    unconverged
+}

@@ -254,7 +254,10 @@ fn a_fold_is_far_beyond_three_standard_errors_of_the_all_run_fit() {
     let full = [1.0, 0.4, 9.0];
     let se = [0.1, 0.02, f64::NAN];
     let near = vec![1.29, 0.41, 50.0];
-    assert_eq!(far_folds(&full, &se, &[near.clone()], 0..3), None);
+    assert_eq!(
+        far_folds(&full, &se, std::slice::from_ref(&near), 0..3),
+        None
+    );
     // 3.1 standard errors on the first, 10 on the second: the second is
     // named, with the one fold that lands far.
     let off = vec![1.31, 0.2, 9.0];

@@ -137,6 +137,44 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
     ]);
     assert!(!o.status.success());
     assert!(stderr(&o).contains("sensor_delay"), "{}", stderr(&o));
+    // Options no design can honour are refused by name and value, never a
+    // panic (`--max-ax 0` indexed an empty schedule).
+    for (opt, value, says) in [
+        (
+            "--max-ax",
+            "0",
+            "--max-ax 0: must be a finite number > 0 (m/s²)",
+        ),
+        (
+            "--max-ax",
+            "nan",
+            "--max-ax NaN: must be a finite number > 0",
+        ),
+        (
+            "--ay-share",
+            "1.2",
+            "--ay-share 1.2: must be a finite number in (0, 1]",
+        ),
+        (
+            "--ay-share",
+            "0",
+            "--ay-share 0: must be a finite number in (0, 1]",
+        ),
+        ("--top", "0", "--top 0: must be at least 1"),
+        (
+            "--effects",
+            "sensor_delay,sensor_delay",
+            "`sensor_delay` is given more than once",
+        ),
+    ] {
+        let o = run(&["design", diag.to_str().unwrap(), opt, value]);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{opt} {value}: {e}");
+        assert!(
+            e.contains(says) && !e.contains("panicked"),
+            "{opt} {value}: {e}"
+        );
+    }
     // A schedule with a time out of order is refused at its element.
     let bad = dir.path().join("bad.toml");
     let text = fs::read_to_string(root().join("scenarios/step_gbt6323_gim.toml")).unwrap();

@@ -231,7 +231,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+mod tests {
     use super::*;
     use crate::diagnose::fit::linearise;
     use crate::diagnose::model::replay::tests::sine_run;
@@ -240,7 +240,7 @@ pub(super) mod tests {
     use crate::vehicle::{Vehicle, VehicleModel};
 
     /// Axles of stiffness factors `B_f`, `B_r` and peak friction `D`.
-    pub(in crate::diagnose::fit) fn axle_model(p: &[f64]) -> Augmented {
+    fn axle_model(p: &[f64]) -> Augmented {
         let tyre = |b: f64| Tyre::MagicSimple(crate::tyre::MagicSimple { b, c: 1.3, d: p[2] });
         Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
@@ -250,7 +250,7 @@ pub(super) mod tests {
 
     /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
     /// model-form gap far above the noise, as on a real log.
-    pub(in crate::diagnose::fit) fn runs() -> Vec<Prepared> {
+    fn runs() -> Vec<Prepared> {
         let pac89 = Tyre::Pac89(Pac89::adams_example());
         let truth = Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), pac89.clone(), pac89),
@@ -272,9 +272,8 @@ pub(super) mod tests {
 
     /// The axle characteristics' box (B front, B rear, D) and the channel
     /// scales of the fold-refit tests.
-    pub(in crate::diagnose::fit) const AXLES: [(f64, f64); 3] =
-        [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-    pub(in crate::diagnose::fit) const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
+    const AXLES: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+    const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
 
     /// A refit lands on Levenberg–Marquardt's optimum: the cost to a few
     /// times what the refit's stopping test leaves (REFIT_DECREASE,
@@ -356,5 +355,45 @@ pub(super) mod tests {
         let slow = fit(&fold, &start, None, Polish::LevenbergMarquardt);
         assert!(quick.converged && slow.converged);
         assert_same_optimum(&quick, &slow, "from afar");
+    }
+
+    /// A fourth parameter no residual responds to (an offset of a channel
+    /// no run measures) is held at its off value, marked unseen, given no
+    /// standard error and not counted: the fit's BIC is that of the three
+    /// the data see.
+    #[test]
+    fn a_parameter_no_residual_responds_to_is_held_at_its_off_value_and_not_counted() {
+        let runs = runs();
+        let three = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
+        let mut bounds = AXLES.to_vec();
+        bounds.push((-1.0, 1.0));
+        let four = Problem::new(
+            |p: &[f64]| axle_model(&p[..3]),
+            runs.iter().collect(),
+            SCALES,
+            bounds,
+        );
+        let f3 = fit(&three, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
+        let start = [10.0, 10.0, 1.0, 0.7];
+        let off = [10.0, 10.0, 1.0, 0.0];
+        let f4 = fit(&four, &start, Some(&off), Polish::LevenbergMarquardt);
+        assert_eq!(f4.unseen, [false, false, false, true]);
+        assert_eq!(f4.params[3], 0.0);
+        assert!(f4.std_errors[3].is_nan() && f4.std_errors[..3].iter().all(|s| s.is_finite()));
+        assert_eq!((f4.free_count(), f3.free_count()), (3, 3));
+        assert!(f3.unseen.iter().all(|&u| !u));
+        assert!(
+            (f4.bic() - f3.bic()).abs() <= 1e-9 * f3.bic().abs(),
+            "{} against {}",
+            f4.bic(),
+            f3.bic()
+        );
+        // Counted, the idle parameter would have cost ln N.
+        let counted = FitOutcome {
+            unseen: Vec::new(),
+            ..f4.clone()
+        };
+        let ln_n = (f4.residuals as f64).ln();
+        assert!((counted.bic() - f4.bic() - ln_n).abs() < 1e-9 * ln_n);
     }
 }

@@ -1,0 +1,178 @@
+//! The gap of a channel on hand-built records: noise is no gap, a slower
+//! model is one, a trusted floor judges a smooth channel.
+
+use super::*;
+use crate::diagnose::report::parts::Window;
+use std::f64::consts::PI;
+
+fn grid(n: usize, dt: f64) -> Vec<f64> {
+    (0..n).map(|i| i as f64 * dt).collect()
+}
+
+#[test]
+fn sprague_geers_of_scaled_and_shifted_sines() {
+    let t = grid(10_001, 1e-3);
+    let c: Vec<f64> = t.iter().map(|x| (2.0 * PI * x).sin()).collect();
+    let m: Vec<f64> = c.iter().map(|v| 1.1 * v).collect();
+    let (mag, ph, _) = sprague_geers(&t, &m, &c);
+    assert!((mag - 0.1).abs() < 1e-9 && ph.abs() < 1e-6, "{mag} {ph}");
+    let phi = 0.3;
+    let m: Vec<f64> = t.iter().map(|x| (2.0 * PI * x - phi).sin()).collect();
+    let (mag, ph, comp) = sprague_geers(&t, &m, &c);
+    assert!(
+        mag.abs() < 1e-6 && (ph - phi / PI).abs() < 1e-4,
+        "{mag} {ph}"
+    );
+    assert!((comp - ph).abs() < 1e-6);
+}
+
+/// A 20 s record at 100 Hz with a steer step at 5 s, and the first-order
+/// yaw-rate response of time constant `tau` to it.
+struct Step {
+    t: Vec<f64>,
+    steer: Vec<f64>,
+    ay: Vec<f64>,
+    speed: Vec<f64>,
+}
+
+impl Step {
+    fn new() -> Self {
+        let t = grid(2000, 0.01);
+        let n = t.len();
+        Self {
+            steer: t
+                .iter()
+                .map(|x| if *x > 5.0 { 0.02 } else { 0.0 })
+                .collect(),
+            ay: vec![1.0; n],
+            speed: vec![20.0; n],
+            t,
+        }
+    }
+    fn response(&self, tau: f64) -> Vec<f64> {
+        self.t
+            .iter()
+            .map(|x| {
+                if *x > 5.0 {
+                    0.2 * (1.0 - (-(x - 5.0) / tau).exp())
+                } else {
+                    0.0
+                }
+            })
+            .collect()
+    }
+    fn record(&self) -> Record<'_> {
+        Record {
+            t: &self.t,
+            steer: &self.steer,
+            ay: &self.ay,
+            speed: &self.speed,
+        }
+    }
+}
+
+/// `y` plus white Gaussian noise of standard deviation `sigma` (seeded).
+fn noisy(y: &[f64], sigma: f64, seed: u64) -> Vec<f64> {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    y.iter()
+        .map(|v| v + sigma * crate::identify::data::gauss(&mut rng))
+        .collect()
+}
+
+#[test]
+fn identical_records_have_no_gap_and_noise_is_not_a_gap() {
+    let s = Step::new();
+    let truth = s.response(0.3);
+    let g = channel_gap(Channel::YawRate, &s.record(), &truth, &truth);
+    assert_eq!(g.rms, 0.0);
+    assert!(!g.significant);
+    // White measurement noise of 0.002 rad/s: the floor is estimated from
+    // the 5 s before the input and the model is not blamed for it.
+    let measured = noisy(&truth, 0.002, 12345);
+    let g = channel_gap(Channel::YawRate, &s.record(), &measured, &truth);
+    assert!((g.noise_floor - 0.002).abs() < 0.0003, "{}", g.noise_floor);
+    assert!(!g.significant, "{}", g.verdict);
+    assert!(
+        g.lag1_autocorrelation.abs() < 0.1,
+        "{}",
+        g.lag1_autocorrelation
+    );
+}
+
+/// A smooth channel (a state estimator's output: almost no scatter
+/// before the input) judged against its own scatter calls a small
+/// offset a gap; against the uncertainty the campaign trusts it to, it
+/// is within noise, and the floor says where it came from.
+#[test]
+fn a_run_is_judged_against_the_trusted_floor_not_its_own_scatter() {
+    let s = Step::new();
+    let truth = s.response(0.3);
+    let smooth = noisy(&truth, 2e-5, 3);
+    let offset: Vec<f64> = truth.iter().map(|v| v + 0.004).collect();
+    let own = channel_gap(Channel::YawRate, &s.record(), &smooth, &offset);
+    assert!(own.significant, "{}", own.verdict);
+    assert_eq!(own.noise_source, NoiseSource::BeforeInput);
+    let rec = s.record();
+    let trusted = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.005));
+    assert!(!trusted.significant, "{}", trusted.verdict);
+    assert_eq!(
+        (trusted.noise_floor, trusted.noise_source),
+        (0.005, NoiseSource::Trusted)
+    );
+    // Above three trusted floors it is a gap again; no floor (0) is
+    // the run's own.
+    let far: Vec<f64> = truth.iter().map(|v| v + 0.02).collect();
+    assert!(trusted_channel_gap(Channel::YawRate, &rec, &smooth, &far, Some(0.005)).significant);
+    let none = trusted_channel_gap(Channel::YawRate, &rec, &smooth, &offset, Some(0.0));
+    assert_eq!(none.noise_source, NoiseSource::BeforeInput);
+}
+
+#[test]
+fn a_slower_model_is_a_significant_gap_that_follows_the_input() {
+    let s = Step::new();
+    let (measured, simulated) = (noisy(&s.response(0.2), 0.001, 7), s.response(0.5));
+    let g = channel_gap(Channel::YawRate, &s.record(), &measured, &simulated);
+    assert!(g.significant, "{}", g.verdict);
+    // The gap lies in the transient, not before the input or late.
+    let w = |window: Window| {
+        g.windows
+            .iter()
+            .find(|p| p.name == Part::Window(window))
+            .unwrap()
+            .rms
+    };
+    assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::BeforeInput));
+    assert!(w(Window::FirstHalfSecond) > 5.0 * w(Window::Later));
+    assert!(g.bias < 0.0, "a slower model lags: negative residual");
+    assert!(g.lag1_autocorrelation > 0.9);
+}
+
+#[test]
+fn band_analysis_finds_a_pure_delay_as_phase_growing_with_frequency() {
+    // A chirp 0.1–4 Hz; the model is the measurement delayed by 50 ms
+    // and 10 % too strong: +0.83 dB everywhere and a phase
+    // lag of 360°·f·0.05 s.
+    let t = grid(6001, 0.005);
+    let chirp = |x: f64| (PI * (0.1 * x + 0.65 / 2.0 * x * x / 1.0 * 0.5)).sin();
+    let steer: Vec<f64> = t.iter().map(|&x| 0.02 * chirp(x)).collect();
+    let measured: Vec<f64> = steer.iter().map(|d| 10.0 * d).collect();
+    let simulated: Vec<f64> = t.iter().map(|&x| 11.0 * 0.02 * chirp(x - 0.05)).collect();
+    let b = band_gaps(&t, &steer, &measured, &simulated);
+    assert!(b.len() >= 3, "{b:?}");
+    for g in &b {
+        assert!(
+            (g.gain_error_db - 20.0 * 1.1f64.log10()).abs() < 0.3,
+            "{g:?}"
+        );
+        let fc = 0.5 * (g.f_low + g.f_high);
+        let expected = -360.0 * fc * 0.05;
+        assert!(
+            (g.phase_error_deg - expected).abs() < 0.35 * expected.abs() + 2.0,
+            "{g:?}"
+        );
+    }
+    // A step has no band analysis.
+    let s = Step::new();
+    assert!(band_gaps(&s.t, &s.steer, &s.response(0.2), &s.response(0.3)).is_empty());
+}

@@ -210,12 +210,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     out.push(format!("verdict: {}", d.verdict.statement()));
     // The verdict's own axles where they were refitted with it (no tyre
     // data): the base's line above is not what the verdict stands on.
-    let effects = d.verdict.effects();
-    let verdict_row = d.ranking.iter().chain(d.combinations.iter());
-    if let Some(a) = verdict_row
-        .filter(|r| !effects.is_empty() && r.effects == effects)
-        .find_map(|r| r.axles.as_ref())
-    {
+    if let Some(a) = d.verdict_row().and_then(|r| r.axles.as_ref()) {
         out.push(format!(
             "  axles fitted with it: {}",
             words::axle_values(a).join(", ")

@@ -219,10 +219,7 @@ pub fn merge(shards: &[PathBuf], out: Option<&Path>) -> Result<FleetReport, Erro
 fn row_of(name: &str, r: &DiagnoseReport) -> FleetRow {
     let d = &r.diagnosis;
     let after = d
-        .ranking
-        .iter()
-        .chain(&d.combinations)
-        .find(|c| !d.verdict.effects().is_empty() && c.effects == d.verdict.effects())
+        .verdict_row()
         .map_or(d.gap.heldout_error, |c| c.heldout_error_after);
     FleetRow {
         campaign: name.to_string(),

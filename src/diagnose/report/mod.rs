@@ -251,6 +251,18 @@ pub struct Diagnosis {
     pub timing: Timing,
 }
 
+impl Diagnosis {
+    /// The ranking row of the verdict's effects (a single or a
+    /// combination), if there is a verdict.
+    pub fn verdict_row(&self) -> Option<&Ranked> {
+        let effects = self.verdict.effects();
+        self.ranking
+            .iter()
+            .chain(&self.combinations)
+            .find(|r| !effects.is_empty() && r.effects == effects)
+    }
+}
+
 /// One run's held-out replays.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Overlay {

@@ -51,34 +51,8 @@ fn candidate(name: &str) -> Result<Vec<EffectKind>> {
         .collect()
 }
 
-/// Refuses options no design can honour, naming the option and value.
-fn validate(a: &DesignArgs) -> Result<()> {
-    if !(a.max_ax.is_finite() && a.max_ax > 0.0) {
-        return Err(anyhow!(
-            "--max-ax {}: must be a finite number > 0 (m/s²)",
-            a.max_ax
-        ));
-    }
-    if !(a.ay_share.is_finite() && a.ay_share > 0.0 && a.ay_share <= 1.0) {
-        return Err(anyhow!(
-            "--ay-share {}: must be a finite number in (0, 1]",
-            a.ay_share
-        ));
-    }
-    if a.top == 0 {
-        return Err(anyhow!("--top 0: must be at least 1"));
-    }
-    for (i, e) in a.effects.iter().enumerate() {
-        if a.effects[..i].iter().any(|p| p.trim() == e.trim()) {
-            return Err(anyhow!("--effects: `{}` is given more than once", e.trim()));
-        }
-    }
-    Ok(())
-}
-
 /// `handling design`.
 pub fn design(a: DesignArgs) -> Result<()> {
-    validate(&a)?;
     let sets = if a.effects.is_empty() {
         None
     } else {

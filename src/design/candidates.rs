@@ -145,6 +145,21 @@ pub struct Fitted {
     pub candidates: Vec<FittedCandidate>,
     /// Each confounded set: the verdict's first effect and its look-alikes.
     pub confounded: Vec<Vec<EffectKind>>,
+    /// The candidates screened out before cross-validation: no held-out
+    /// fit to design with.
+    pub screened: Vec<ScreenedOut>,
+}
+
+/// A candidate the diagnosis screened out before cross-validating it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ScreenedOut {
+    /// Its effects.
+    pub effects: Vec<EffectKind>,
+    /// The share of the in-sample gap above noise its all-run fit removed, %.
+    pub insample_reduction_percent: f64,
+    /// The share below which it was screened out, % (the acceptance share
+    /// less the margin).
+    pub screen_percent: f64,
 }
 
 impl Fitted {
@@ -169,6 +184,15 @@ impl Fitted {
                 .map(FittedCandidate::of)
                 .collect(),
             confounded: d.confounded.iter().map(|c| c.effects.clone()).collect(),
+            screened: d
+                .screened
+                .iter()
+                .map(|s| ScreenedOut {
+                    effects: s.effects.clone(),
+                    insample_reduction_percent: s.insample_reduction_percent,
+                    screen_percent: s.threshold_percent - s.margin_percent,
+                })
+                .collect(),
         }
     }
 

@@ -75,6 +75,54 @@ pub struct Measured {
     pub separation: f64,
     /// The member the run favours (the smallest χ²).
     pub favours: String,
+    /// The designed manoeuvre the run is named after and its prediction
+    /// (None: no manoeuvre of the design has the run's file name).
+    pub predicted: Option<Predicted>,
+}
+
+/// What a design predicted for the manoeuvre a driven run is named after.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Predicted {
+    /// The manoeuvre (the run's file stem).
+    pub manoeuvre: String,
+    /// The separation a driven run was expected to measure, noise floors.
+    pub expected: f64,
+    /// Its uncertainty (1 σ).
+    pub uncertainty: f64,
+    /// (measured − expected) / uncertainty.
+    pub deviation: f64,
+    /// The largest |steer| difference between the run and the design over
+    /// the run's times, rad: how closely it was driven as designed.
+    pub steer_difference: f64,
+}
+
+/// The prediction of `set`'s ranked manoeuvre named as run `run` is, set on
+/// its measurement `m`.
+pub fn compare(m: &mut Measured, set: &super::SetDesign, run: &MeasuredRun) {
+    let stem = run
+        .path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned());
+    let Some(s) = set.ranked.iter().find(|s| Some(&s.name) == stem.as_ref()) else {
+        return;
+    };
+    let (Some(expected), Some(uncertainty)) = (s.expected, s.uncertainty) else {
+        return;
+    };
+    let t0 = s.manoeuvre.start_time();
+    let steer_difference = run
+        .t
+        .iter()
+        .zip(&run.steer)
+        .map(|(&t, &d)| (d - s.manoeuvre.steer(t0 + t - run.t[0])).abs())
+        .fold(0.0, f64::max);
+    m.predicted = Some(Predicted {
+        manoeuvre: s.name.clone(),
+        expected,
+        uncertainty,
+        deviation: (m.separation - expected) / uncertainty,
+        steer_difference,
+    });
 }
 
 /// The measured separation of `run` for the set `members` (reference
@@ -113,5 +161,6 @@ pub fn measured(
             .collect(),
         separation: diff.signum() * diff.abs().sqrt(),
         favours: members[best].label(),
+        predicted: None,
     })
 }

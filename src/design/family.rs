@@ -27,16 +27,19 @@ pub struct Limits {
     pub ay_reached: f64,
     /// The share of it a design may ask.
     pub ay_share: f64,
-    /// The largest steer rate, rad/s (road wheel): the runs' 99 % point,
-    /// at least [`MIN_STEER_RATE`].
+    /// The largest steer rate, rad/s (road wheel): the runs' 99 % point
+    /// (rates over 0.1 s), at least [`MIN_STEER_RATE`].
     pub steer_rate: f64,
-    /// The largest |du/dt|, m/s²: stated (the runs' 99 % point where
-    /// larger).
+    /// The largest |du/dt|, m/s²: stated (the runs' 99 % point over
+    /// 0.1 s where larger).
     pub ax: f64,
 }
 
 /// A steer rate any driver makes, rad/s of road wheel (a 0.15 s step of 3°).
 pub const MIN_STEER_RATE: f64 = 0.35;
+
+/// The span a rate of the runs is taken over, s.
+const RATE_SPAN: f64 = 0.1;
 
 /// The |ax| a design may use when none is stated, m/s² (moderate braking).
 pub const DEFAULT_AX: f64 = 3.0;
@@ -59,6 +62,7 @@ impl Limits {
     pub fn of(runs: &[MeasuredRun], min_speed: f64, ay_share: f64, ax: f64) -> Self {
         let (mut speeds, mut ays, mut rates, mut axs) = (vec![], vec![], vec![], vec![]);
         for r in runs {
+            let mut j = 0;
             for i in 0..r.t.len() {
                 if r.speed[i] < min_speed {
                     continue;
@@ -68,10 +72,16 @@ impl Limits {
                     Some(a) => a[i].abs(),
                     None => (r.speed[i] * r.yaw_rate[i]).abs(),
                 });
-                if i > 0 && r.t[i] > r.t[i - 1] {
-                    let dt = r.t[i] - r.t[i - 1];
-                    rates.push(((r.steer[i] - r.steer[i - 1]) / dt).abs());
-                    axs.push(((r.speed[i] - r.speed[i - 1]) / dt).abs());
+                // Rates over at least RATE_SPAN: a logger's sample-to-sample
+                // noise, differentiated, is no rate the driver made.
+                j = j.max(i);
+                while j < r.t.len() && r.t[j] - r.t[i] < RATE_SPAN {
+                    j += 1;
+                }
+                if j < r.t.len() {
+                    let dt = r.t[j] - r.t[i];
+                    rates.push(((r.steer[j] - r.steer[i]) / dt).abs());
+                    axs.push(((r.speed[j] - r.speed[i]) / dt).abs());
                 }
             }
         }
@@ -125,6 +135,10 @@ pub struct Designed {
     pub manoeuvre: Manoeuvre,
 }
 
+/// The smallest speed change a manoeuvre is built around, m/s: less is
+/// a manoeuvre at constant speed with a little noise in it.
+pub const MIN_SPEED_CHANGE: f64 = 1.0;
+
 /// Lead-in at steady speed and straight, s.
 const LEAD: f64 = 1.0;
 /// Sample interval of the sampled schedules (sweeps, lane changes, the
@@ -164,8 +178,8 @@ pub fn family(model: &Augmented, limits: &Limits) -> Vec<Designed> {
             out.extend(step(model, limits, u, share * ay));
         }
         out.extend(ramp(model, u, ay));
-        out.extend(sweep(model, u, 0.4 * ay));
-        out.extend(lane_change(model, u, 0.6 * ay));
+        out.extend(sweep(model, limits, u, 0.4 * ay));
+        out.extend(lane_change(model, limits, u, 0.6 * ay));
     }
     out.extend(speed_change(limits));
     for &u in &speeds[1..] {
@@ -232,16 +246,20 @@ fn sampled(u: f64, length: f64, f: impl Fn(f64) -> f64) -> Manoeuvre {
     schedule(p)
 }
 
-fn sweep(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
+fn sweep(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed> {
     use std::f64::consts::TAU;
+    let (f0, t) = (0.2, 12.0);
+    // The chirp's steer rate peaks at 2π·f1·d: the top frequency comes down
+    // to the driver's rate (to 1.5 Hz at least), then the amplitude.
     let d = steer_for(model, u, ay)?;
-    let (f0, f1, t) = (0.2, 3.0, 12.0);
+    let f1 = (limits.steer_rate / (TAU * d.abs())).clamp(1.5, 3.0);
+    let d = d.signum() * d.abs().min(limits.steer_rate / (TAU * f1));
     let k = (f1 - f0) / t;
     Some(Designed {
         name: format!("sweep_{:03}kph", kmh(u)),
         kind: Kind::Sweep,
         description: format!(
-            "a steer sweep of ±{:.2}° from {f0} to {f1} Hz over {t:.0} s at {:.0} km/h",
+            "a steer sweep of ±{:.2}° from {f0} to {f1:.2} Hz over {t:.0} s at {:.0} km/h",
             d.to_degrees(),
             kmh(u)
         ),
@@ -251,12 +269,15 @@ fn sweep(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
     })
 }
 
-fn lane_change(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
+fn lane_change(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Option<Designed> {
     use std::f64::consts::TAU;
-    let d = steer_for(model, u, ay)?;
     // Two lane changes of one sine period each (out and back), 0.5 Hz: a
-    // lateral offset of about ay/(2π·f)² ≈ 2.5 m at 2.5 m/s².
-    let f = 0.5;
+    // lateral offset of about ay/(2π·f)² ≈ 2.5 m at 2.5 m/s². Its steer
+    // rate peaks at 2π·f·d: slower (to 0.25 Hz) where the driver's rate
+    // asks it, then smaller.
+    let d = steer_for(model, u, ay)?;
+    let f = (limits.steer_rate / (TAU * d.abs())).clamp(0.25, 0.5);
+    let d = d.signum() * d.abs().min(limits.steer_rate / (TAU * f));
     let period = 1.0 / f;
     Some(Designed {
         name: format!("lane_change_{:03}kph", kmh(u)),
@@ -283,7 +304,7 @@ fn lane_change(model: &Augmented, u: f64, ay: f64) -> Option<Designed> {
 fn speed_change(limits: &Limits) -> Option<Designed> {
     let (lo, hi) = limits.speed;
     let t = (hi - lo) / limits.ax;
-    (hi > lo).then(|| Designed {
+    (hi - lo >= MIN_SPEED_CHANGE).then(|| Designed {
         name: format!("speed_change_{:03}_{:03}kph", kmh(hi), kmh(lo)),
         kind: Kind::SpeedChange,
         description: format!(
@@ -315,10 +336,12 @@ fn turn_with_speed_change(
     let (lo, hi) = limits.speed;
     let end = (u + 3.0 * rate).clamp(lo, hi);
     let t = (end - u) / rate;
-    if t < 0.5 {
+    if t < 0.5 || (end - u).abs() < MIN_SPEED_CHANGE {
         return None;
     }
-    let s = LEAD + 1.0 + 2.0;
+    // Into the turn in 1 s, or slower where the driver's rate asks it.
+    let entry = (d.abs() / limits.steer_rate).max(1.0);
+    let s = LEAD + entry + 2.0;
     Some((
         d,
         end,
@@ -326,7 +349,7 @@ fn turn_with_speed_change(
         schedule(vec![
             (0.0, 0.0, u),
             (LEAD, 0.0, u),
-            (LEAD + 1.0, d, u),
+            (LEAD + entry, d, u),
             (s, d, u),
             (s + t, d, end),
             (s + t + 2.0, d, end),
@@ -368,22 +391,26 @@ fn accelerate_in_turn(model: &Augmented, limits: &Limits, u: f64, ay: f64) -> Op
 fn constant_radius(model: &Augmented, limits: &Limits) -> Option<Designed> {
     let (lo, hi) = limits.speed;
     let ay = limits.ay_max();
-    if hi <= lo || ay <= 0.0 {
+    // At most 30 s on the circle: where the stated |du/dt| cannot cover
+    // the speed range in that time, the circle ends below the top speed.
+    let rate = (0.5 * limits.ax).min(1.0);
+    let top = hi.min(lo + rate * 30.0);
+    if top - lo < MIN_SPEED_CHANGE || ay <= 0.0 {
         return None;
     }
-    let radius = hi * hi / ay;
-    let rate = (0.5 * limits.ax).min(1.0);
-    let t = ((hi - lo) / rate).min(30.0);
-    let speed = |tau: f64| lo + (hi - lo) * (tau / t).min(1.0);
+    let radius = top * top / ay;
+    let t = (top - lo) / rate;
     let n = (t / 0.5).ceil() as usize;
     let mut p = vec![(0.0, 0.0, lo), (LEAD, 0.0, lo)];
-    // Into the circle in 2 s, then along it at rising speed.
+    // Into the circle in 2 s (slower where the driver's rate asks it),
+    // then along it at rising speed.
     let d0 = steer_for(model, lo, lo * lo / radius)?;
-    p.push((LEAD + 2.0, d0, lo));
+    let entry = (d0.abs() / limits.steer_rate).max(2.0);
+    p.push((LEAD + entry, d0, lo));
     for k in 1..=n {
         let tau = t * k as f64 / n as f64;
-        let u = speed(tau);
-        p.push((LEAD + 2.0 + tau, steer_for(model, u, u * u / radius)?, u));
+        let u = lo + (top - lo) * tau / t;
+        p.push((LEAD + entry + tau, steer_for(model, u, u * u / radius)?, u));
     }
     Some(Designed {
         name: format!("constant_radius_{:.0}m", radius),
@@ -391,9 +418,26 @@ fn constant_radius(model: &Augmented, limits: &Limits) -> Option<Designed> {
         description: format!(
             "a {radius:.0} m circle at rising speed, {:.0} to {:.0} km/h in {t:.0} s ({:.1} to {ay:.1} m/s²), the steer the base model needs on it",
             kmh(lo),
-            kmh(hi),
+            kmh(top),
             lo * lo / radius
         ),
         manoeuvre: schedule(p),
     })
+}
+
+/// The largest steer rate (rad/s) and |du/dt| (m/s²) of schedule `m`
+/// between its breakpoints (linear between them, so these are its peaks).
+pub fn peak_rates(m: &Manoeuvre) -> (f64, f64) {
+    let Manoeuvre::Replay(r) = m else {
+        return (0.0, 0.0);
+    };
+    let mut peak = (0.0f64, 0.0f64);
+    for i in 1..r.t.len() {
+        let dt = r.t[i] - r.t[i - 1];
+        if dt > 0.0 {
+            peak.0 = peak.0.max(((r.steer[i] - r.steer[i - 1]) / dt).abs());
+            peak.1 = peak.1.max(((r.speed[i] - r.speed[i - 1]) / dt).abs());
+        }
+    }
+    peak
 }

@@ -27,8 +27,8 @@ pub mod evidence;
 pub mod family;
 pub mod separation;
 
-pub use candidates::{Fitted, FittedCandidate, FittedValue};
-pub use evidence::{measured, Measured, MAX_REPETITIONS};
+pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
+pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
 pub use separation::Logging;
 
@@ -36,7 +36,7 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::Prepared;
-use crate::error::{DesignError, Error};
+use crate::error::{DesignError, Error, Limit, ParamError, ParamReason};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
 use rayon::prelude::*;
@@ -64,6 +64,34 @@ impl Default for DesignRequest {
             ax: family::DEFAULT_AX,
             top: 3,
         }
+    }
+}
+
+impl DesignRequest {
+    /// Ok when a design can honour the request: `ax` finite and > 0,
+    /// `ay_share` in (0, 1], `top` ≥ 1, no candidate named twice in a set.
+    /// The keys are the command line's options.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        ParamError::positive("--max-ax", self.ax)?;
+        ParamError::in_range("--ay-share", self.ay_share, 0.0, 1.0, Limit::AyShare)?;
+        if self.top == 0 {
+            return Err(ParamError::new("--top", 0.0, ParamReason::NotPositive));
+        }
+        for set in self.sets.iter().flatten() {
+            for (i, a) in set.iter().enumerate() {
+                let same =
+                    |b: &Vec<EffectKind>| b.len() == a.len() && b.iter().all(|e| a.contains(e));
+                if set[..i].iter().any(same) {
+                    return Err(ParamError::without_value(
+                        "--effects",
+                        ParamReason::GivenTwice {
+                            candidate: joined(a, "+"),
+                        },
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 }
 
@@ -219,12 +247,10 @@ fn sets(
             let members = set
                 .iter()
                 .map(|effects| {
-                    fitted.candidate(effects).cloned().ok_or_else(|| {
-                        Error::from(DesignError::NotFitted {
-                            candidate: joined(effects, "+"),
-                            fitted: fitted.candidates.iter().map(|c| c.label()).collect(),
-                        })
-                    })
+                    fitted
+                        .candidate(effects)
+                        .cloned()
+                        .ok_or_else(|| not_fitted(fitted, effects))
                 })
                 .collect::<Result<Vec<_>, _>>()?;
             if members.len() < 2 {
@@ -233,6 +259,27 @@ fn sets(
             Ok((members, source))
         })
         .collect()
+}
+
+/// Why candidate `effects` has no fit to design with: screened out, or
+/// never among the diagnosis's candidates.
+fn not_fitted(fitted: &Fitted, effects: &[EffectKind]) -> Error {
+    let same = |x: &[EffectKind]| x.len() == effects.len() && effects.iter().all(|e| x.contains(e));
+    let candidate = joined(effects, "+");
+    let fitted_labels = fitted.candidates.iter().map(|c| c.label()).collect();
+    match fitted.screened.iter().find(|s| same(&s.effects)) {
+        Some(s) => DesignError::ScreenedOut {
+            candidate,
+            insample_percent: s.insample_reduction_percent,
+            screen_percent: s.screen_percent,
+            fitted: fitted_labels,
+        },
+        None => DesignError::NotFitted {
+            candidate,
+            fitted: fitted_labels,
+        },
+    }
+    .into()
 }
 
 /// The models of `members` on `base`.
@@ -252,6 +299,7 @@ fn models(members: &[FittedCandidate], base: &Augmented) -> Result<Vec<Augmented
 
 /// Designs manoeuvres for campaign `c` as diagnosed (`fitted`).
 pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Design, Error> {
+    req.validate()?;
     let limits = Limits::of(&c.runs, c.settings.min_speed, req.ay_share, req.ax);
     let logging = Logging::of(c);
     let base = fitted.base(c);

@@ -200,3 +200,106 @@ fn on_a_car_that_behaves_as_the_reference_the_measured_separation_is_the_expecte
     );
     assert!(sd > 0.6 * u && sd < 1.4 * u, "{sd} against {u}");
 }
+
+/// The synthetic campaign and the truth's car without its effects as
+/// the base model (no diagnosis needed).
+fn base_of_campaign() -> (Campaign, Augmented) {
+    let c = generate(&spec(3)).campaign(vec![EffectKind::SensorDelay], DiagnoseSettings::default());
+    let tyre = crate::proving_ground::truth_tyre();
+    let model = crate::vehicle::VehicleModel::new(c.vehicle.clone(), tyre.clone(), tyre);
+    let base = Augmented::new(model, c.friction);
+    (c, base)
+}
+
+#[test]
+fn every_manoeuvre_of_the_family_keeps_to_the_steer_rate_the_speed_range_and_the_stated_ax() {
+    let (c, base) = base_of_campaign();
+    for ax in [0.2, family::DEFAULT_AX, 6.0] {
+        let limits = Limits::of(&c.runs, c.settings.min_speed, 0.8, ax);
+        let family = family::family(&base, &limits);
+        // A sweep and a lane change at each speed, steps, the speed changes
+        // and the circle: none of them dropped by keeping to the limits.
+        for kind in [
+            Kind::Sweep,
+            Kind::LaneChange,
+            Kind::ConstantRadius,
+            Kind::SpeedChange,
+        ] {
+            assert!(
+                family.iter().any(|d| d.kind == kind),
+                "ax {ax}: no {kind:?}"
+            );
+        }
+        for d in &family {
+            let (rate, du) = family::peak_rates(&d.manoeuvre);
+            assert!(
+                rate <= limits.steer_rate * (1.0 + 1e-9),
+                "{}: steer rate {rate} > {}",
+                d.name,
+                limits.steer_rate
+            );
+            assert!(
+                du <= limits.ax * (1.0 + 1e-9),
+                "{}: |du/dt| {du} > {}",
+                d.name,
+                limits.ax
+            );
+            let Manoeuvre::Replay(r) = &d.manoeuvre else {
+                panic!()
+            };
+            let (lo, hi) = limits.speed;
+            assert!(
+                r.speed.iter().all(|&u| u >= lo - 1e-9 && u <= hi + 1e-9),
+                "{}",
+                d.name
+            );
+            if matches!(
+                d.kind,
+                Kind::SpeedChange
+                    | Kind::BrakeInTurn
+                    | Kind::AccelerateInTurn
+                    | Kind::ConstantRadius
+            ) {
+                let (u0, u1) = (r.speed[0], *r.speed.last().unwrap());
+                assert!(
+                    (u1 - u0).abs() >= family::MIN_SPEED_CHANGE - 1e-9,
+                    "{}: a speed change of {}",
+                    d.name,
+                    u1 - u0
+                );
+            }
+        }
+    }
+}
+
+/// A sweep slowed to the driver's rate uses all of it: where the chirp
+/// to 3 Hz would steer faster than the limit, its peak steer rate is the
+/// limit (2π·f1·d), not below it; else it runs to 3 Hz.
+#[test]
+fn a_sweep_slowed_to_the_drivers_rate_uses_all_of_it() {
+    let (c, base) = base_of_campaign();
+    let mut limits = Limits::of(&c.runs, c.settings.min_speed, 0.8, 3.0);
+    limits.steer_rate = family::MIN_STEER_RATE;
+    let sweeps: Vec<_> = family::family(&base, &limits)
+        .into_iter()
+        .filter(|d| d.kind == Kind::Sweep)
+        .collect();
+    assert_eq!(sweeps.len(), 3);
+    let mut slowed = 0;
+    for d in sweeps {
+        let (rate, _) = family::peak_rates(&d.manoeuvre);
+        assert!(
+            rate <= limits.steer_rate * (1.0 + 1e-9),
+            "{}: {rate}",
+            d.name
+        );
+        if d.description.contains("to 3.00 Hz") {
+            continue;
+        }
+        slowed += 1;
+        // Sampled at 0.02 s, the chirp's linear pieces reach within 1 % of
+        // its continuous peak.
+        assert!(rate > 0.97 * limits.steer_rate, "{}: {rate}", d.name);
+    }
+    assert!(slowed > 0, "no sweep asked more than the driver's rate");
+}

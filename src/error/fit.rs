@@ -160,6 +160,26 @@ pub enum DiagnosisError {
         /// The candidates it fitted.
         fitted: Vec<String>,
     },
+    /// A design asked for a candidate the diagnosis screened out.
+    #[error("the diagnosis screened `{candidate}` out before cross-validating it (it removes {insample_percent:.1} % of the gap above noise in sample, below the {screen_percent:.1} % screen), so it has no held-out fit to design with; it cross-validated: {}", fitted.join(", "))]
+    ScreenedOut {
+        /// The candidate asked for.
+        candidate: String,
+        /// The share of the in-sample gap its all-run fit removed, %.
+        insample_percent: f64,
+        /// The share below which candidates are screened out, %.
+        screen_percent: f64,
+        /// The candidates it cross-validated.
+        fitted: Vec<String>,
+    },
+    /// The campaign a diagnosis names, not found from here.
+    #[error("{}: the campaign {} names is not found from here (a relative path is read from where `diagnose` ran): give it with --campaign", campaign.display(), diagnosis.display())]
+    CampaignNotFound {
+        /// The campaign's path as the diagnosis wrote it.
+        campaign: PathBuf,
+        /// The diagnosis file.
+        diagnosis: PathBuf,
+    },
     /// A design set with fewer than two members.
     #[error("a design separates at least two candidates")]
     OneMember,

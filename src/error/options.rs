@@ -220,6 +220,21 @@ pub enum OptionsError {
         /// The text given.
         given: String,
     },
+    /// A scenario driven as a run whose name the campaign already has.
+    #[error(
+        "--drive {}: the campaign already has a run named `{name}` ({}): each driven run is named after its file; rename the file",
+        path.display(),
+        if *programme { "one of the programme's own" } else { "driven from an earlier --drive file" }
+    )]
+    DriveName {
+        /// The scenario file.
+        path: PathBuf,
+        /// The run's name (the file's stem).
+        name: String,
+        /// Whether the name is one of the programme's runs (else an
+        /// earlier `--drive`'s).
+        programme: bool,
+    },
     /// A merge given no shard file.
     #[error("merge: no shard files given")]
     NoShards,

@@ -195,6 +195,12 @@ pub enum ParamReason {
         /// Whether the rate itself looks like one in degrees per second.
         in_degrees: bool,
     },
+    /// A candidate named twice among those a design separates.
+    #[error("`{candidate}` is given more than once")]
+    GivenTwice {
+        /// The candidate, `a+b`.
+        candidate: String,
+    },
     /// An effect given another number of parameters than it takes.
     #[error("takes {needed} parameters")]
     ParameterCount {
@@ -257,6 +263,9 @@ pub enum Limit {
     /// A manoeuvre's end.
     #[error("the run must end after it starts")]
     EndAfterStart,
+    /// The share of the reached lateral acceleration a design may ask.
+    #[error("a design asks at most the lateral acceleration the runs reached")]
+    AyShare,
     /// A parameter held at a value the user gives.
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
     HoldValue,

@@ -8,12 +8,13 @@
 //! afterwards, each run's measured separation against the prediction.
 
 use crate::design::{
-    design, measured, Design, DesignRequest, Fitted, FittedCandidate, FittedValue, Measured,
+    compare, design, measured, Design, DesignRequest, Fitted, FittedCandidate, FittedValue,
+    Measured, ScreenedOut,
 };
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::Channel;
-use crate::error::{Error, InputError, InputProblem};
+use crate::error::{DesignError, Error, InputError, InputProblem};
 use crate::io::campaign::load_campaign;
 use crate::io::read_run;
 use crate::manoeuvre::Manoeuvre;
@@ -63,6 +64,16 @@ struct DiagnosisFile {
     ranking: Vec<CandidateFile>,
     combinations: Vec<CandidateFile>,
     confounded: Vec<ConfoundedFile>,
+    #[serde(default)]
+    screened: Vec<ScreenedFile>,
+}
+
+#[derive(Deserialize)]
+struct ScreenedFile {
+    effects: Vec<String>,
+    insample_reduction_percent: f64,
+    threshold_percent: f64,
+    margin_percent: f64,
 }
 
 #[derive(Deserialize)]
@@ -203,6 +214,17 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, PathBuf), Error> {
             .iter()
             .map(|c| kinds(&path, &c.effects))
             .collect::<Result<_, _>>()?,
+        screened: f
+            .screened
+            .iter()
+            .map(|s| {
+                Ok(ScreenedOut {
+                    effects: kinds(&path, &s.effects)?,
+                    insample_reduction_percent: s.insample_reduction_percent,
+                    screen_percent: s.threshold_percent - s.margin_percent,
+                })
+            })
+            .collect::<Result<_, Error>>()?,
     };
     Ok((fitted, f.source))
 }
@@ -217,8 +239,19 @@ pub fn run(
     driven: &[PathBuf],
     out: Option<&Path>,
 ) -> Result<DesignReport, Error> {
+    request.validate()?;
     let (fitted, source) = read_diagnosis(dir)?;
-    let campaign_path = campaign.map_or(source, Path::to_path_buf);
+    let campaign_path = match campaign {
+        Some(p) => p.to_path_buf(),
+        None if !source.exists() => {
+            return Err(DesignError::CampaignNotFound {
+                campaign: source,
+                diagnosis: dir.join("diagnosis.json"),
+            }
+            .into())
+        }
+        None => source,
+    };
     let c = load_campaign(&campaign_path)?;
     let out_dir = out.map_or_else(|| dir.join("design"), Path::to_path_buf);
     let mut inputs = c.inputs.clone();
@@ -236,8 +269,15 @@ pub fn run(
     };
     let measured = driven
         .iter()
-        .map(|p| measured(&c, &fitted, &first, &read_run(p)?))
-        .collect::<Result<Vec<_>, _>>()?;
+        .map(|p| {
+            let run = read_run(p)?;
+            let mut m = measured(&c, &fitted, &first, &run)?;
+            if let Some(set) = d.sets.first() {
+                compare(&mut m, set, &run);
+            }
+            Ok(m)
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
     Ok(DesignReport {
         diagnosis: dir.to_path_buf(),
         campaign: campaign_path,
@@ -362,11 +402,9 @@ impl DesignReport {
                     .map(|(k, (label, obs))| {
                         let y = crate::diagnose::pipeline::observed_channel(obs, ch);
                         let s = Series::line(label, &p.times, y, colours[k % colours.len()]);
-                        if k == 0 {
-                            s
-                        } else {
-                            s.styled(Style::Dashed)
-                        }
+                        // Solid, dashed, dotted: the look-alikes lie on the
+                        // reference within a line's width.
+                        s.styled([Style::Line, Style::Dashed, Style::Dotted][k.min(2)])
                     })
                     .collect();
                 panels.push(Panel {
@@ -399,9 +437,16 @@ impl DesignReport {
                     ));
                 }
             }
+            // One noise floor either way: where a difference leaves the
+            // band is where the separation is earned.
+            let t_ends = [p.times[0], *p.times.last().unwrap_or(&p.times[0])];
+            for (label, y) in [("±1 noise floor", 1.0), ("", -1.0)] {
+                diff.push(Series::line(label, &t_ends, &[y, y], 7).styled(Style::Dotted));
+            }
+            let d = set.ranked.first().map_or(f64::NAN, |s| s.separation);
             panels.push(Panel {
                 title: format!(
-                    "{}: the look-alikes' responses less the reference's",
+                    "{}: the look-alikes' responses less the reference's (D = {d:.1})",
                     p.name
                 ),
                 x_label: "t, s".into(),
@@ -477,6 +522,21 @@ impl DesignReport {
                 "measured: {} separates them by {:.1} noise floors and favours {}",
                 m.run, m.separation, m.favours
             ));
+            out.push(match &m.predicted {
+                Some(p) => format!(
+                    "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
+                    p.manoeuvre,
+                    p.expected,
+                    p.uncertainty,
+                    p.deviation,
+                    if p.steer_difference > 0.1f64.to_radians() {
+                        format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
+                    } else {
+                        String::new()
+                    }
+                ),
+                None => "  no prediction to compare: the design ranks no manoeuvre of this run's file name".into(),
+            });
         }
         out.push(format!("wrote {}", self.out_dir.display()));
         out

@@ -6,6 +6,7 @@
 
 use crate::diagnose::effects::EffectKind;
 use crate::error::{Error, NameKind, OptionsError, OutputError, WriteStep};
+use crate::measured::MeasuredRun;
 use crate::proving_ground::{
     drive, generate_with, DrivenRun, Noise, Programme, SynthSpec, Synthetic, Truth,
 };
@@ -133,14 +134,13 @@ impl SynthReport {
             let name = p
                 .file_stem()
                 .map_or("driven".into(), |s| s.to_string_lossy().into_owned());
-            if self
-                .campaign
-                .runs
-                .iter()
-                .any(|r| r.path == Path::new(&format!("{name}.csv")))
-            {
-                return Err(OutputError::Overwrite {
-                    path: PathBuf::from("runs").join(format!("{name}.csv")),
+            let taken = |r: &MeasuredRun| r.path == Path::new(&format!("{name}.csv"));
+            let programme = self.campaign.runs.iter().any(taken);
+            if programme || runs.iter().any(|r: &DrivenRun| r.name == name) {
+                return Err(OptionsError::DriveName {
+                    path: p.clone(),
+                    name,
+                    programme,
                 }
                 .into());
             }

@@ -4,8 +4,9 @@
 //! writes — and logs them as the programme logs its own runs (its sample
 //! rate and channels, its noise levels). The programme's own runs are not
 //! touched: the noise of a driven run is drawn from its own generator,
-//! seeded by the campaign's seed and the run's place among the driven
-//! ones, so adding a run to a campaign leaves every other run bit for bit.
+//! seeded by the campaign's seed and the run's name, so adding a run to a
+//! campaign leaves every other run bit for bit, and a run's noise does not
+//! depend on which other runs are driven with it or in what order.
 //!
 //! Each run starts from straight running at the manoeuvre's first speed and
 //! is logged from its first instant. A logged programme's `ax` is the
@@ -56,8 +57,7 @@ pub fn drive(
     let models = TruthModels::new(spec, truth)?;
     Ok(runs
         .iter()
-        .enumerate()
-        .map(|(k, r)| driven_run(&models, spec, truth, k, r))
+        .map(|r| driven_run(&models, spec, truth, r))
         .collect())
 }
 
@@ -70,14 +70,16 @@ fn interval(programme: Programme) -> f64 {
     }
 }
 
-/// Run `k` of the driven ones, logged with its own noise.
-fn driven_run(
-    models: &TruthModels,
-    spec: &SynthSpec,
-    truth: Truth,
-    k: usize,
-    r: &DrivenRun,
-) -> MeasuredRun {
+/// FNV-1a of `name`: a hash fixed across releases and platforms (std's
+/// hasher is not), for the noise stream of a run by its name.
+fn name_hash(name: &str) -> u64 {
+    name.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// A driven run, logged with its own noise.
+fn driven_run(models: &TruthModels, spec: &SynthSpec, truth: Truth, r: &DrivenRun) -> MeasuredRun {
     let m = &r.manoeuvre;
     let dt = interval(spec.programme);
     let (t0, t1) = (m.start_time(), m.end_time());
@@ -87,7 +89,7 @@ fn driven_run(
         .collect();
     let (yaw_rate, ay, beta) = models.measure(truth, m, &times);
     // Its own stream: the campaign's runs drew theirs from the seed alone.
-    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed ^ DRIVEN_STREAM.wrapping_mul(k as u64 + 1));
+    let mut rng = ChaCha8Rng::seed_from_u64(spec.seed ^ DRIVEN_STREAM ^ name_hash(&r.name));
     let n = spec.noise;
     let p = spec.programme;
     let yaw_rate = with_noise(&yaw_rate, n.yaw_rate, &mut rng);
@@ -120,7 +122,7 @@ fn driven_run(
 }
 
 /// Mixed into the seed of the driven runs' noise (a constant with many
-/// bits set, so run k's stream is no other run's).
+/// bits set, so no driven run's stream is a programme run's).
 const DRIVEN_STREAM: u64 = 0x9E37_79B9_7F4A_7C15;
 
 #[cfg(test)]
@@ -172,10 +174,18 @@ mod tests {
             drive(&spec(4), Truth::Augmented, &[step()]).unwrap()[0].yaw_rate,
             r.yaw_rate
         );
-        // A second run of the same manoeuvre draws other noise.
-        let two = drive(&s, Truth::Augmented, &[step(), step()]).unwrap();
+        // A second run of the same manoeuvre under another name draws
+        // other noise; each run's noise is its own whatever the order.
+        let other = DrivenRun {
+            name: "step_again".into(),
+            ..step()
+        };
+        let two = drive(&s, Truth::Augmented, &[step(), other.clone()]).unwrap();
         assert_eq!(two[0], *r);
         assert_ne!(two[1].yaw_rate, r.yaw_rate);
+        let swapped = drive(&s, Truth::Augmented, &[other, step()]).unwrap();
+        assert_eq!(swapped[1], *r);
+        assert_eq!(swapped[0], two[1]);
     }
 
     #[test]

@@ -84,7 +84,8 @@ pub use drive::{drive, DrivenRun};
 use driver::LoggedInputs;
 pub use programme::Programme;
 use programme::{handling_programme, logged_runs, truth_downforce, truth_vehicle};
-use truth::{four_wheel_campaign_roll, four_wheel_effects, truth_tyre};
+pub(crate) use truth::truth_tyre;
+use truth::{four_wheel_campaign_roll, four_wheel_effects};
 pub use truth::{truth_values, Truth};
 
 /// Noise standard deviations of the synthetic measurements.

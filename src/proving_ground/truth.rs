@@ -184,6 +184,6 @@ pub fn truth_values(kind: EffectKind) -> Vec<f64> {
 }
 
 /// The bundled UniTire of the truth.
-pub(super) fn truth_tyre() -> Tyre {
+pub(crate) fn truth_tyre() -> Tyre {
     toml::from_str(include_str!("../../tyres/unitire.toml")).expect("the bundled UniTire file")
 }

@@ -104,13 +104,45 @@ fn a_confounded_delay_gets_a_manoeuvre_whose_speed_changes_written_as_a_scenario
         diag.to_str().unwrap(),
         "--measured",
         run_csv.to_str().unwrap(),
+        "--measured",
+        camp.join("runs/step_040kph_3ms2.csv").to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let m = &read_json(&out.join("design.json"))["measured"][0];
+    let j = read_json(&out.join("design.json"));
+    let m = &j["measured"][0];
     assert!(m["separation"].as_f64().unwrap().is_finite(), "{m}");
-    assert!(String::from_utf8_lossy(&o.stdout).contains("separates them by"));
+    // The driven run is compared with what the design predicted for it,
+    // and was driven as designed (its steer is the schedule's).
+    let p = &m["predicted"];
+    assert_eq!(p["manoeuvre"], name, "{m}");
+    assert!(p["steer_difference"].as_f64().unwrap() < 1e-9, "{m}");
+    let dev = p["deviation"].as_f64().unwrap();
+    let (measured_d, expected, sigma) = (
+        m["separation"].as_f64().unwrap(),
+        p["expected"].as_f64().unwrap(),
+        p["uncertainty"].as_f64().unwrap(),
+    );
+    assert!((dev - (measured_d - expected) / sigma).abs() < 1e-9, "{m}");
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("separates them by"), "{text}");
+    assert!(
+        text.contains(&format!("  predicted for {name}: ")),
+        "{text}"
+    );
+    // A run that is no designed manoeuvre is measured, with no prediction.
+    assert!(
+        j["measured"][1]["predicted"].is_null(),
+        "{}",
+        j["measured"][1]
+    );
+    assert!(
+        text.contains(
+            "no prediction to compare: the design ranks no manoeuvre of this run's file name"
+        ),
+        "{text}"
+    );
 }
 
 #[test]
@@ -140,31 +172,24 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
     // Options no design can honour are refused by name and value, never a
     // panic (`--max-ax 0` indexed an empty schedule).
     for (opt, value, says) in [
-        (
-            "--max-ax",
-            "0",
-            "--max-ax 0: must be a finite number > 0 (m/s²)",
-        ),
-        (
-            "--max-ax",
-            "nan",
-            "--max-ax NaN: must be a finite number > 0",
-        ),
+        ("--max-ax", "0", "`--max-ax` = 0: must be positive"),
+        ("--max-ax", "nan", "`--max-ax` = NaN: must be a finite number"),
         (
             "--ay-share",
             "1.2",
-            "--ay-share 1.2: must be a finite number in (0, 1]",
+            "`--ay-share` = 1.2: must lie in (0, 1]: a design asks at most the lateral acceleration the runs reached",
         ),
-        (
-            "--ay-share",
-            "0",
-            "--ay-share 0: must be a finite number in (0, 1]",
-        ),
-        ("--top", "0", "--top 0: must be at least 1"),
+        ("--ay-share", "0", "`--ay-share` = 0: must lie in (0, 1]"),
+        ("--top", "0", "`--top` = 0: must be positive"),
         (
             "--effects",
             "sensor_delay,sensor_delay",
-            "`sensor_delay` is given more than once",
+            "`--effects`: `sensor_delay` is given more than once",
+        ),
+        (
+            "--effects",
+            "sensor_delay+steer_path,steer_path+sensor_delay",
+            "`--effects`: `steer_path+sensor_delay` is given more than once",
         ),
     ] {
         let o = run(&["design", diag.to_str().unwrap(), opt, value]);
@@ -174,6 +199,102 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
             e.contains(says) && !e.contains("panicked"),
             "{opt} {value}: {e}"
         );
+    }
+    // A candidate the diagnosis screened out is said to be so, with its
+    // in-sample share, not called "not fitted".
+    let camp = synth_campaign(
+        dir.path(),
+        "wide",
+        &["--effects", "sensor_delay", "--seed", "2"],
+    );
+    let mut toml = fs::read_to_string(camp.join("vehicle.toml")).unwrap();
+    toml.push_str("effects = [\"sensor_delay\", \"steer_path\", \"roll_steer\"]\n");
+    fs::write(camp.join("vehicle.toml"), toml).unwrap();
+    // Diagnosed from the campaign's own folder, so the diagnosis names it
+    // by a relative path.
+    let o = bin()
+        .args(["diagnose", "wide", "--out", "wide_diagnosis"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let wide = dir.path().join("wide_diagnosis");
+    let d = read_json(&wide.join("diagnosis.json"));
+    assert_eq!(
+        d["screened"][0]["effect"], "roll_steer",
+        "{}",
+        d["screened"]
+    );
+    let o = run(&[
+        "design",
+        wide.to_str().unwrap(),
+        "--campaign",
+        camp.to_str().unwrap(),
+        "--effects",
+        "sensor_delay,roll_steer",
+    ]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains(
+            "the diagnosis screened `roll_steer` out before cross-validating it (it removes "
+        ) && e.contains("so it has no held-out fit to design with; it cross-validated: "),
+        "{e}"
+    );
+    // From another folder its relative campaign is not found: said, with
+    // the option that gives it; given, the design runs.
+    let o = run(&[
+        "design",
+        wide.to_str().unwrap(),
+        "--out",
+        dir.path().join("w").to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("wide: the campaign ")
+            && e.contains("is not found from here (a relative path is read from where `diagnose` ran): give it with --campaign"),
+        "{e}"
+    );
+    let o = run(&[
+        "design",
+        wide.to_str().unwrap(),
+        "--campaign",
+        camp.to_str().unwrap(),
+        "--out",
+        dir.path().join("w").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // A scenario driven under a run's name the campaign has, or given twice,
+    // is refused with the name and where it comes from (it was once called
+    // an input of the run, and a repeat silently overwrote the first).
+    let text = fs::read_to_string(root().join("scenarios/step_gbt6323_gim.toml"))
+        .unwrap()
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let clash = dir.path().join("step_040kph_3ms2.toml");
+    fs::write(&clash, &text).unwrap();
+    let again = dir.path().join("again.toml");
+    fs::write(&again, &text).unwrap();
+    for (drives, says) in [
+        (
+            vec![&clash],
+            "the campaign already has a run named `step_040kph_3ms2` (one of the programme's own)",
+        ),
+        (
+            vec![&again, &again],
+            "the campaign already has a run named `again` (driven from an earlier --drive file)",
+        ),
+    ] {
+        let mut args = vec!["synth", "--effects", "sensor_delay", "--seed", "2"];
+        for d in &drives {
+            args.extend(["--drive", d.to_str().unwrap()]);
+        }
+        let out = dir.path().join("never");
+        args.extend(["--out", out.to_str().unwrap()]);
+        let o = run(&args);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{e}");
+        assert!(e.contains(says) && e.contains("rename the file"), "{e}");
+        assert!(!out.exists());
     }
     // A schedule with a time out of order is refused at its element.
     let bad = dir.path().join("bad.toml");

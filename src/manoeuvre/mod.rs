@@ -187,7 +187,9 @@ impl Manoeuvre {
                 }
             }
             Manoeuvre::Sweep(s) => {
-                if t <= s.start || t >= s.end {
+                // Closed at `end`: the history's last row, at `end`, is the
+                // sweep's, not a straight wheel after it.
+                if t <= s.start || t > s.end {
                     return 0.0;
                 }
                 let tau = t - s.start;

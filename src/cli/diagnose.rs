@@ -41,7 +41,7 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
             BatchOutcome::Fleet(f) => {
                 super::print(&f.summary());
                 let [csv, json, html] = f.outputs();
-                println!(
+                say!(
                     "wrote {}, {}, {}",
                     csv.display(),
                     json.display(),
@@ -56,7 +56,7 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
     r.write()?;
     super::print(&r.summary());
     let f = r.outputs();
-    println!(
+    say!(
         "diagnosed in {}; wrote {}, {}, {}, {}",
         r.time_spent(),
         f[0].display(),
@@ -109,6 +109,6 @@ pub fn synth(a: SynthArgs) -> Result<()> {
     let mut r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
     r.drive(&a.drive)?;
     r.write()?;
-    println!("{}", r.wrote());
+    say!("{}", r.wrote());
     Ok(())
 }

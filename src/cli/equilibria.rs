@@ -45,9 +45,9 @@ pub fn equilibria(a: EquilibriaArgs) -> Result<()> {
         return Ok(());
     }
     let r = equilibria::run(&a.sweep, a.out.as_deref())?;
-    super::print(&r.summary());
     r.write()?;
-    println!("wrote {}", r.out_dir.display());
+    super::print(&r.summary());
+    say!("wrote {}", r.out_dir.display());
     Ok(())
 }
 
@@ -56,21 +56,21 @@ pub fn merge(a: MergeArgs) -> Result<()> {
     match shard_job(&a.shards[0])? {
         ShardJob::Equilibria => {
             let r = equilibria::merge(&a.shards, a.out.as_deref())?;
-            super::print(&r.summary());
             r.write()?;
-            println!("wrote {}", r.out_dir.display());
+            super::print(&r.summary());
+            say!("wrote {}", r.out_dir.display());
         }
         ShardJob::Study => {
             let r = handling::jobs::study::merge(&a.shards, a.out.as_deref())?;
-            super::print(&r.summary());
             r.write()?;
-            println!("wrote {}", r.out_dir.display());
+            super::print(&r.summary());
+            say!("wrote {}", r.out_dir.display());
         }
         ShardJob::Diagnose => {
             let r = handling::jobs::fleet::merge(&a.shards, a.out.as_deref())?;
             super::print(&r.summary());
             let [csv, json, html] = r.outputs();
-            println!(
+            say!(
                 "wrote {}, {}, {}",
                 csv.display(),
                 json.display(),

@@ -92,8 +92,8 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
     for w in r.warnings() {
         eprintln!("warning: {w}");
     }
-    super::print(&r.summary());
     r.write()?;
-    println!("{}", r.wrote());
+    super::print(&r.summary());
+    say!("{}", r.wrote());
     Ok(())
 }

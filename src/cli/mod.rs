@@ -2,6 +2,15 @@
 //! ([`handling::jobs`], [`handling::jobs::identify::run`], [`handling::jobs::study::run`])
 //! whose report the command writes and prints.
 
+/// `println!` that ends the process quietly when the reader of stdout has
+/// gone (`handling … | head -1`), as Unix tools do, where `println!`
+/// panics. The outputs are written before anything is printed.
+macro_rules! say {
+    ($($t:tt)*) => {
+        $crate::handling_cli::say_line(format_args!($($t)*))
+    };
+}
+
 mod design;
 mod diagnose;
 mod equilibria;
@@ -97,7 +106,20 @@ pub fn run() -> ExitCode {
 /// Prints a report's lines.
 fn print(lines: &[String]) {
     for l in lines {
-        println!("{l}");
+        say!("{l}");
+    }
+}
+
+/// Writes one line to stdout (see `say!`).
+pub(crate) fn say_line(args: std::fmt::Arguments) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = writeln!(out, "{args}").and_then(|()| out.flush()) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("error: writing to stdout: {e}");
+        std::process::exit(1);
     }
 }
 

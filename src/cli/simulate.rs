@@ -19,9 +19,10 @@ pub struct SimulateArgs {
 /// `handling simulate`.
 pub fn simulate(a: SimulateArgs) -> Result<()> {
     let r = simulate::run(&a.scenario, a.out.as_deref())?;
-    super::print(&r.summary());
+    // Written before printed: a reader that stops early ends the process.
     r.write()?;
-    println!("wrote {}", r.out_dir.display());
+    super::print(&r.summary());
+    say!("wrote {}", r.out_dir.display());
     Ok(())
 }
 
@@ -34,20 +35,20 @@ pub struct MetricsArgs {
     #[arg(long)]
     json: bool,
     /// Initial-value window, s.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     pre_window: f64,
     /// Steady-value window, s.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     steady_window: f64,
     /// Lowest speed kept, m/s: standstills and crawling are excluded.
     #[arg(long, default_value_t = 5.0)]
     min_speed: f64,
     /// Cut-off of the zero-phase low-pass applied to the run first, Hz
     /// (0: unfiltered).
-    #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ)]
+    #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ, allow_negative_numbers = true)]
     filter_hz: f64,
     /// Total-variance window from the steer onset, s.
-    #[arg(long, default_value_t = 4.0)]
+    #[arg(long, default_value_t = 4.0, allow_negative_numbers = true)]
     variance_window: f64,
 }
 
@@ -57,7 +58,8 @@ pub fn metrics(a: MetricsArgs) -> Result<()> {
         pre_window: a.pre_window,
         steady_window: a.steady_window,
         variance_window: a.variance_window,
-        filter_hz: (a.filter_hz > 0.0).then_some(a.filter_hz),
+        // 0 is "unfiltered"; anything else the library checks.
+        filter_hz: (a.filter_hz != 0.0).then_some(a.filter_hz),
         ..MetricSettings::default()
     };
     let r = metrics::run(&a.run, &settings, a.min_speed)?;
@@ -65,7 +67,7 @@ pub fn metrics(a: MetricsArgs) -> Result<()> {
         eprintln!("{line}");
     }
     if a.json {
-        println!("{}", serde_json::to_string_pretty(&r)?);
+        say!("{}", serde_json::to_string_pretty(&r)?);
     } else {
         super::print(&r.table());
     }

@@ -28,8 +28,8 @@ pub fn study(a: StudyArgs) -> Result<()> {
         return Ok(());
     }
     let r = handling::jobs::study::run(&a.study, a.out.as_deref())?;
-    super::print(&r.summary());
     r.write()?;
-    println!("wrote {}", r.out_dir.display());
+    super::print(&r.summary());
+    say!("wrote {}", r.out_dir.display());
     Ok(())
 }

@@ -26,6 +26,6 @@ pub struct TyreEvalArgs {
 pub fn tyre_eval(a: TyreEvalArgs) -> Result<()> {
     let r = tyre_eval::run(&a.tyre, &a.points, &a.out, a.mode)?;
     r.write()?;
-    println!("{}", r.wrote());
+    say!("{}", r.wrote());
     Ok(())
 }

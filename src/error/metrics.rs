@@ -86,6 +86,14 @@ pub enum MetricsError {
         /// The steer there, as a share of the step.
         share: f64,
     },
+    /// A steer held neither before its "step" nor after it.
+    #[error("no step steer in this record: the steer moves inside the initial window (at {moved:.2} s) and does not hold its step after it (at {time:.2} s); a step steer is a steer held straight, stepped and held: cut one out of the log to measure it")]
+    NeverHeld {
+        /// Where the steer first moves inside the initial window, s.
+        moved: f64,
+        /// Where it first leaves the held step, s.
+        time: f64,
+    },
 }
 
 /// The band a step steer's normalised steer stays in once it has reached

@@ -47,6 +47,26 @@ pub enum OutputError {
         /// The folder.
         path: PathBuf,
     },
+    /// A file to write named by a folder that exists.
+    #[error("{}: is a folder; name the file to write in it (e.g. {})", path.display(), path.join(format!("fit.{extension}")).display())]
+    IsAFolder {
+        /// The output.
+        path: PathBuf,
+        /// The extension the file takes.
+        extension: &'static str,
+    },
+    /// A file named with another format's extension.
+    #[error("{}: the {model} model is written as a .{expected} file, not .{given} (a .{expected} text under this name would not read back)", path.display())]
+    Extension {
+        /// The output.
+        path: PathBuf,
+        /// The model written.
+        model: String,
+        /// Its format's extension.
+        expected: &'static str,
+        /// The extension given.
+        given: String,
+    },
     /// An output below a file where its folder would be.
     #[error("{}: cannot write: {} is a file, not a folder", path.display(), file.display())]
     NotAFolder {
@@ -129,6 +149,8 @@ impl OutputError {
             OutputError::Overwrite { path }
             | OutputError::CampaignExists { path }
             | OutputError::NotAFolder { path, .. }
+            | OutputError::IsAFolder { path, .. }
+            | OutputError::Extension { path, .. }
             | OutputError::Io { path, .. }
             | OutputError::Encode { path, .. }
             | OutputError::Tyre { path, .. }

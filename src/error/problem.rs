@@ -246,6 +246,16 @@ pub enum InputProblem {
         /// The key.
         key: &'static str,
     },
+    /// Coefficients every published Magic Formula file carries, absent.
+    #[error("lacks {} of the peak and shape coefficients every Magic Formula file carries, without which its forces are meaningless: is the file complete (it has {lines} lines)?{}", missing.join(", "), near.iter().map(|(k, line, w)| format!(" `{w}` at line {line}: `{k}` misspelt?")).collect::<String>())]
+    TirCoefficientsMissing {
+        /// The coefficients missing.
+        missing: Vec<&'static str>,
+        /// Unknown keys like a missing one: (it, their line, as written).
+        near: Vec<(&'static str, usize, String)>,
+        /// The file's lines.
+        lines: usize,
+    },
     /// A coefficient whose value is not physical.
     #[error("`{}`: {} {}", .0.key, .0.value, .0.reason)]
     TirValue(ParamError),
@@ -495,6 +505,7 @@ impl InputProblem {
             InputProblem::TirNoFittyp => "TirNoFittyp",
             InputProblem::TirSide { .. } => "TirSide",
             InputProblem::TirMissingKey { .. } => "TirMissingKey",
+            InputProblem::TirCoefficientsMissing { .. } => "TirCoefficientsMissing",
             InputProblem::TirValue(_) => "TirValue",
             InputProblem::NotAShard { .. } => "NotAShard",
             InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",

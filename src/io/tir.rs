@@ -259,6 +259,15 @@ impl TirDocument {
 
     /// The Magic Formula tyre of this file, in SI.
     pub fn magic_formula(&self) -> Result<MagicFormula, InputError> {
+        self.core_coefficients(true)?;
+        self.template()
+    }
+
+    /// The Magic Formula tyre of this file as a template of a fit: its
+    /// constants, and coefficients that may be none (a fit sets them); the
+    /// core coefficients of each force it does describe must be there.
+    pub fn template(&self) -> Result<MagicFormula, InputError> {
+        self.core_coefficients(false)?;
         let units = self.units()?;
         let version = match self.get("FITTYP") {
             Some((line, fittyp)) => match &fittyp.value {
@@ -532,6 +541,8 @@ pub(crate) fn tir_text(
 pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError> {
     TirDocument::parse(Path::new(name), text)?.magic_formula()
 }
+
+mod core;
 
 #[cfg(test)]
 mod tests;

@@ -50,7 +50,21 @@ pub fn run(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
+    let mut m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
+    // Settings the run cannot honour are said, not dropped.
+    if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
+        m.warnings.push(format!(
+            "the low-pass at {} Hz is not below 0.4 × the run's sampling rate: the run is not filtered",
+            crate::error::Num(f)
+        ));
+    }
+    let piece = m.t_end - m.t_start;
+    if settings.variance_window > piece {
+        m.warnings.push(format!(
+            "the total-variance window, {} s, is longer than the measured piece ({piece:.2} s): the variances are over what was recorded",
+            crate::error::Num(settings.variance_window)
+        ));
+    }
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,

@@ -34,23 +34,25 @@ pub(crate) fn check_step_shape(
     let (d0, _) = window_mean(t, &steer, from, to);
     let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
     let initial = t.partition_point(|x| *x <= to);
-    if let Some(i) = d[..initial].iter().position(|v| v.abs() > ONSET) {
-        return Err(MetricsError::StepInInitialWindow {
-            moved: t[i],
-            from,
-            to,
-        });
-    }
-    let Some(reached) = first_crossing(t, &d, 0.9, from) else {
-        return Ok(());
-    };
+    let moved = d[..initial]
+        .iter()
+        .position(|v| v.abs() > ONSET)
+        .map(|i| t[i]);
     let (lo, hi) = HELD_STEP;
-    match (0..t.len()).find(|&i| t[i] > reached && !(lo..=hi).contains(&d[i])) {
-        Some(i) => Err(MetricsError::SteerNotHeld {
+    let not_held = first_crossing(t, &d, 0.9, from).and_then(|reached| {
+        (0..t.len())
+            .find(|&i| t[i] > reached && !(lo..=hi).contains(&d[i]))
+            .map(|i| (reached, t[i], d[i]))
+    });
+    match (moved, not_held) {
+        // Neither held before nor after: no step at all (a log of driving).
+        (Some(moved), Some((_, time, _))) => Err(MetricsError::NeverHeld { moved, time }),
+        (Some(moved), None) => Err(MetricsError::StepInInitialWindow { moved, from, to }),
+        (None, Some((reached, time, share))) => Err(MetricsError::SteerNotHeld {
             reached,
-            time: t[i],
-            share: d[i],
+            time,
+            share,
         }),
-        None => Ok(()),
+        (None, None) => Ok(()),
     }
 }

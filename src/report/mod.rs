@@ -139,7 +139,9 @@ pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Erro
         .into());
     }
     let header: Vec<&str> = columns.iter().map(|c| c.0).collect();
-    let rows = (0..n).map(|i| columns.iter().map(move |c| format!("{}", c.1[i])));
+    // The shortest text that reads back the same: no value of hundreds of
+    // digits (1e-300), no `-0`.
+    let rows = (0..n).map(|i| columns.iter().map(move |c| crate::format::exact(c.1[i])));
     write_csv(path, &header, rows)
 }
 

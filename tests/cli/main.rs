@@ -252,6 +252,7 @@ mod trips;
 mod trips_identify;
 mod trips_inputs;
 mod trips_limits;
+mod trips_outputs;
 mod trips_units;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

@@ -14,6 +14,8 @@ use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Varia
 use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
 mod choices;
+mod outputs;
+use outputs::{output_lock, outputs};
 mod figures;
 mod holds;
 pub use holds::Held;
@@ -114,23 +116,6 @@ impl Options {
             }
         }
         Ok(())
-    }
-
-    /// The tyre file written: `out`, else `out/<data stem>_<model>.toml`
-    /// (`.tir` for the Magic Formula).
-    pub(crate) fn output_path(&self) -> PathBuf {
-        let ext = if self.model.swarm_model().is_some() {
-            "toml"
-        } else {
-            "tir"
-        };
-        self.out.clone().unwrap_or_else(|| {
-            let stem = self
-                .data
-                .file_stem()
-                .map_or("data".into(), |s| s.to_string_lossy().into_owned());
-            PathBuf::from("out").join(format!("{stem}_{}.{ext}", self.model))
-        })
     }
 }
 
@@ -301,28 +286,6 @@ impl IdentifyReport {
     }
 }
 
-/// The tyre file, `<out>.report.json` and, with a figure, `<out>.png`.
-fn outputs(o: &Options, figure: bool) -> Vec<PathBuf> {
-    let out = o.output_path();
-    let mut files = vec![out.clone(), out.with_extension("report.json")];
-    if figure {
-        files.push(out.with_extension("png"));
-    }
-    files
-}
-
-/// The outputs of the fit (the fitted file and the files named after it),
-/// held for this run: two fits writing them at once are refused.
-pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
-    let out = o.output_path();
-    let dir = out.parent().filter(|d| !d.as_os_str().is_empty());
-    let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned());
-    OutputLock::acquire_outputs(
-        dir.unwrap_or(std::path::Path::new(".")),
-        stem.as_deref().unwrap_or("identify"),
-    )
-}
-
 /// Runs `identify`: checks the options, reads and groups the data, fits,
 /// and returns the report (nothing is written: [`IdentifyReport::write`]).
 /// An output that is one of the inputs is refused before anything is
@@ -330,6 +293,7 @@ pub(super) fn output_lock(o: &Options) -> Result<OutputLock, Error> {
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
     o.validate()?;
     o.validate_holds()?;
+    o.validate_out()?;
     match o.model {
         IdentifyModel::Swarm(model) => {
             run_swarm(o, model).map(|r| IdentifyReport::Swarm(Box::new(r)))

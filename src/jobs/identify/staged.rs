@@ -125,7 +125,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     )?;
     let lock = super::output_lock(o)?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
-    let template_tyre = template.as_ref().map(|d| d.magic_formula()).transpose()?;
+    let template_tyre = template.as_ref().map(|d| d.template()).transpose()?;
     let data = read_rig(&o.data)?;
     let default_speed = template_tyre
         .as_ref()

@@ -17,6 +17,12 @@ use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use serde::Serialize;
 
+/// Whether `a` and `b` name the same effects, in any order (`a+b` is
+/// `b+a`).
+pub fn same_effects(a: &[EffectKind], b: &[EffectKind]) -> bool {
+    a.len() == b.len() && b.iter().all(|e| a.contains(e))
+}
+
 /// A fitted value and how far it is known.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FittedValue {
@@ -207,8 +213,8 @@ impl Fitted {
 
     /// The candidate whose effects are `effects` (in any order).
     pub fn candidate(&self, effects: &[EffectKind]) -> Option<&FittedCandidate> {
-        self.candidates.iter().find(|x| {
-            x.effects.len() == effects.len() && effects.iter().all(|e| x.effects.contains(e))
-        })
+        self.candidates
+            .iter()
+            .find(|x| same_effects(&x.effects, effects))
     }
 }

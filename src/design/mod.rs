@@ -27,7 +27,7 @@ pub mod evidence;
 pub mod family;
 pub mod separation;
 
-pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
+pub use candidates::{same_effects, Fitted, FittedCandidate, FittedValue, ScreenedOut};
 pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
 pub use separation::Logging;
@@ -79,8 +79,7 @@ impl DesignRequest {
         }
         for set in self.sets.iter().flatten() {
             for (i, a) in set.iter().enumerate() {
-                let same =
-                    |b: &Vec<EffectKind>| b.len() == a.len() && b.iter().all(|e| a.contains(e));
+                let same = |b: &Vec<EffectKind>| same_effects(b, a);
                 if set[..i].iter().any(same) {
                     return Err(ParamError::without_value(
                         "--effects",
@@ -264,10 +263,13 @@ fn sets(
 /// Why candidate `effects` has no fit to design with: screened out, or
 /// never among the diagnosis's candidates.
 fn not_fitted(fitted: &Fitted, effects: &[EffectKind]) -> Error {
-    let same = |x: &[EffectKind]| x.len() == effects.len() && effects.iter().all(|e| x.contains(e));
     let candidate = joined(effects, "+");
     let fitted_labels = fitted.candidates.iter().map(|c| c.label()).collect();
-    match fitted.screened.iter().find(|s| same(&s.effects)) {
+    match fitted
+        .screened
+        .iter()
+        .find(|s| same_effects(&s.effects, effects))
+    {
         Some(s) => DesignError::ScreenedOut {
             candidate,
             insample_percent: s.insample_reduction_percent,

@@ -54,7 +54,9 @@ pub(crate) fn repetitions(
     }
     let big_n = held.residuals as f64;
     let gap = |j2: f64, jn2: f64| (j2 - jn2).max(0.0).sqrt();
-    (1..=MAX_REPETITIONS).find(|&k| {
+    // From 0: a pair the rule already tells apart (a set asked for, not
+    // confounded) needs no run.
+    (0..=MAX_REPETITIONS).find(|&k| {
         let total = big_n + (k * n) as f64;
         let grow = |j: f64, extra: f64| (j * j * big_n + k as f64 * (noise + extra)) / total;
         let jn2 = grow(held.noise, 0.0);
@@ -140,7 +142,12 @@ pub fn measured(
     let (members, _) = sets(fitted, &req)?.remove(0);
     let base = fitted.base(c);
     let models = models(&members, &base)?;
-    let prepared = Prepared::new(run, c.settings.step, c.settings.sample_rate);
+    let mut prepared = Prepared::new(run, c.settings.step, c.settings.sample_rate);
+    // Started from the opening stretch's mean, not its first sample, as
+    // the prediction's start terms assume.
+    if let Some((start, _)) = separation::settled_start(run) {
+        prepared.start = start;
+    }
     let chi: Vec<f64> = models
         .iter()
         .map(|m| separation::chi_square(&prepared, m, &fitted.noise_floors))
@@ -159,7 +166,7 @@ pub fn measured(
             .map(|m| m.label())
             .zip(chi.iter().copied())
             .collect(),
-        separation: diff.signum() * diff.abs().sqrt(),
+        separation: super::signed_root(diff),
         favours: members[best].label(),
         predicted: None,
     })

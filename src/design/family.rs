@@ -140,7 +140,7 @@ pub struct Designed {
 pub const MIN_SPEED_CHANGE: f64 = 1.0;
 
 /// Lead-in at steady speed and straight, s.
-const LEAD: f64 = 1.0;
+pub const LEAD: f64 = 1.0;
 /// Sample interval of the sampled schedules (sweeps, lane changes, the
 /// constant radius), s.
 const SAMPLE: f64 = 0.02;

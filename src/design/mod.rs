@@ -22,11 +22,14 @@
 //! Units: separations are dimensionless (noise floors); SI, rad
 //! elsewhere; ISO 8855 axes.
 
+pub mod calibration;
 pub mod candidates;
 pub mod evidence;
 pub mod family;
 pub mod separation;
 
+pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
+pub use calibration::{Calibration, CALIBRATING_D};
 pub use candidates::{same_effects, Fitted, FittedCandidate, FittedValue, ScreenedOut};
 pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
@@ -123,15 +126,20 @@ pub struct Scored {
     pub uncertainty: Option<f64>,
     /// The parameters' part alone.
     pub parameter_uncertainty: Option<f64>,
+    /// The uncertainty on a car that behaves as the reference with noise
+    /// of the stated floors: `uncertainty` before the campaign's scatter
+    /// widens it ([`Calibration`]).
+    pub noise_uncertainty: Option<f64>,
     /// The separation a driven run is expected to measure
-    /// ([`measured`]): `√(D² + shift)`, the shift from the noise of its
-    /// first sample, which the replays start from (the best `top` only).
+    /// ([`measured`]): the signed root of `D² + shift`, the shift from
+    /// the noise of its settled start, which the replays start from
+    /// ([`separation::settled_start`]; the best `top` only).
     pub expected: Option<f64>,
     /// How many runs of it, added to the campaign, the diagnosis's
     /// confounding rule ([`crate::diagnose::rules::lookalike`])
     /// expects to need before it no longer calls the weakest look-alike
-    /// confounded (None: more than [`MAX_REPETITIONS`]; the best `top`
-    /// only).
+    /// confounded (0: the rule already tells them apart; None: more than
+    /// [`MAX_REPETITIONS`]; the best `top` only).
     pub repetitions: Option<usize>,
     /// The largest |ay| of the reference's response, m/s².
     pub peak_ay: f64,
@@ -195,6 +203,10 @@ pub struct SetDesign {
     /// How far the campaign's own runs separate the reference from its
     /// weakest look-alike, D over all runs.
     pub campaign_separation: f64,
+    /// How the campaign's runs measure the separations their replays
+    /// predict: the scatter the expected separations' uncertainties are
+    /// widened by.
+    pub calibration: Calibration,
     /// The manoeuvres within the limits, best first.
     pub ranked: Vec<Scored>,
     /// What was left out, and why.
@@ -421,6 +433,7 @@ impl SetContext<'_> {
             pairs,
             uncertainty: None,
             parameter_uncertainty: None,
+            noise_uncertainty: None,
             expected: None,
             repetitions: None,
             peak_ay: peak,
@@ -430,8 +443,9 @@ impl SetContext<'_> {
     }
 
     /// The expected measured separation of `s` against its weakest pair,
-    /// its uncertainty and the runs the confounding rule needs.
-    fn complete(&self, s: &mut Scored) {
+    /// its uncertainty (the noise's part widened by `inflation`,
+    /// [`Calibration`]) and the runs the confounding rule needs.
+    fn complete(&self, s: &mut Scored, inflation: f64) {
         let weakest = s
             .pairs
             .iter()
@@ -451,11 +465,14 @@ impl SetContext<'_> {
         let terms = separation::start_terms(&logged, pair, floors, set.step, set.sample_rate);
         // χ²_B − χ²_A = D² + start + 2·D·(noise + parameters), its mean
         // D² plus the start's shift; the measured separation is its root.
-        let expected = (terms.d2 + terms.shift).max(0.0).sqrt();
-        let variance = 4.0 * terms.d2 * (1.0 + spread * spread) + terms.variance;
+        // The noise's and the start's parts widened by the scatter the
+        // campaign's runs show beyond the floors; the parameters' as it is.
+        let mean = terms.d2 + terms.shift;
+        let sd = |g2: f64| (4.0 * terms.d2 * (g2 + spread * spread) + g2 * terms.variance).sqrt();
         s.parameter_uncertainty = Some(spread);
-        s.expected = Some(expected);
-        s.uncertainty = Some((variance.sqrt() / (2.0 * expected)).max(1.0));
+        s.expected = Some(signed_root(mean));
+        s.noise_uncertainty = Some(root_uncertainty(mean, sd(1.0)));
+        s.uncertainty = Some(root_uncertainty(mean, sd(inflation * inflation)));
         let held = evidence::Held {
             reference: self.members[0].heldout_error,
             other: self.members[weakest].heldout_error,
@@ -483,14 +500,16 @@ fn design_set(
     }
     ranked.sort_by(|a, b| b.0.separation.total_cmp(&a.0.separation));
     ranked.truncate(top.max(1));
+    let (campaign_separation, calibration) = campaign_separation(cx);
     for (s, _) in &mut ranked {
-        cx.complete(s);
+        cx.complete(s, calibration.inflation);
     }
     let best = ranked.first().map(|(_, p)| p.clone());
     Ok(SetDesign {
         members: cx.labels.clone(),
         source,
-        campaign_separation: campaign_separation(cx),
+        campaign_separation,
+        calibration,
         ranked: ranked.into_iter().map(|(s, _)| s).collect(),
         excluded,
         best,
@@ -498,26 +517,49 @@ fn design_set(
 }
 
 /// D of the reference against its weakest look-alike over all the
-/// campaign's runs (each replayed from its measured start).
-fn campaign_separation(cx: &SetContext) -> f64 {
+/// campaign's runs (each replayed from its measured start), and how those
+/// runs measure it ([`Calibration`]).
+fn campaign_separation(cx: &SetContext) -> (f64, Calibration) {
     let floors = &cx.fitted.noise_floors;
-    // Each run's reference replay once, against every look-alike's.
-    let per_run: Vec<Vec<f64>> = cx
+    let scales = floors.map(|f| if f > 0.0 { f } else { 1.0 });
+    // Each run's reference replay once, against every look-alike's: per
+    // look-alike, (D², χ²_B − χ²_A) on the run.
+    let per_run: Vec<Vec<(f64, f64)>> = cx
         .runs
         .par_iter()
         .map(|r| {
+            let mut buf = vec![0.0; r.count()];
+            let mut chi = |obs: &Observed| {
+                r.write_residuals(obs, &scales, &mut buf);
+                buf.iter().map(|x| x * x).sum::<f64>()
+            };
             let reference = r.observe(&cx.models[0]);
+            let chi_a = chi(&reference);
             cx.models[1..]
                 .iter()
                 .map(|m| {
-                    separation::separation(&reference, &r.observe(m), floors, cx.logging).powi(2)
+                    let other = r.observe(m);
+                    let d = separation::separation(&reference, &other, floors, cx.logging);
+                    (d * d, chi(&other) - chi_a)
                 })
                 .collect()
         })
         .collect();
-    (0..cx.models.len() - 1)
-        .map(|k| per_run.iter().map(|d| d[k]).sum::<f64>().sqrt())
-        .fold(f64::INFINITY, f64::min)
+    let total = |k: usize| per_run.iter().map(|d| d[k].0).sum::<f64>().sqrt();
+    let Some(weakest) = (0..cx.models.len() - 1).min_by(|&a, &b| total(a).total_cmp(&total(b)))
+    else {
+        return (
+            f64::NAN,
+            Calibration {
+                runs: 0,
+                inflation: 1.0,
+            },
+        );
+    };
+    (
+        total(weakest),
+        calibration(per_run.iter().map(|d| d[weakest])),
+    )
 }
 
 #[cfg(test)]

@@ -118,6 +118,37 @@ pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {
     r.iter().map(|x| x * x).sum()
 }
 
+/// The start of a driven run's replay, settled: the mean sideslip (0
+/// where not measured) and yaw rate over its opening stretch of held
+/// steer (within [`SETTLED_STEER`] of its first value, at most
+/// [`super::family::LEAD`] s, the family's straight lead-in), and the
+/// samples averaged. A replay from one sample starts both candidates off
+/// by that sample's noise, and the transient that follows weighs on
+/// `χ²_B − χ²_A` as much as the manoeuvre (a delayed sensor holds it);
+/// the mean of `n` samples is off by `1/√n` of it. None: no two samples
+/// to average.
+pub fn settled_start(run: &MeasuredRun) -> Option<((f64, f64), usize)> {
+    let (t0, d0) = (*run.t.first()?, *run.steer.first()?);
+    let n = run
+        .t
+        .iter()
+        .zip(&run.steer)
+        .take_while(|(t, d)| {
+            **t - t0 <= super::family::LEAD + 1e-9 && (**d - d0).abs() <= SETTLED_STEER
+        })
+        .count();
+    if n < 2 {
+        return None;
+    }
+    let mean = |v: &[f64]| v[..n].iter().sum::<f64>() / n as f64;
+    let beta = run.beta.as_deref().map_or(0.0, mean);
+    Some(((beta, mean(&run.yaw_rate)), n))
+}
+
+/// How far the steer may move in the opening stretch a driven run's start
+/// is settled over, rad (0.1°: a hand holding the wheel).
+pub const SETTLED_STEER: f64 = 0.1 * std::f64::consts::PI / 180.0;
+
 /// What the start of a driven run does to its measured separation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct StartTerms {
@@ -146,6 +177,10 @@ pub(crate) fn start_terms(
     step: f64,
     rate: f64,
 ) -> StartTerms {
+    // The start is settled over the lead-in as a measured run's is
+    // ([`settled_start`]): its noise is the floor over √n.
+    let n = settled_start(template).map_or(1, |(_, n)| n);
+    let start_noise = 1.0 / (n as f64).sqrt();
     let clean = Prepared::new(template, step, 1e6).observe(models[0]);
     let mut car = template.clone();
     car.yaw_rate = clean.yaw_rate.clone();
@@ -162,7 +197,7 @@ pub(crate) fn start_terms(
     let d2 = diff(&car);
     let (mut shift, mut variance) = (0.0, 0.0);
     for ch in [Channel::YawRate, Channel::Beta] {
-        let f = floors[ch.index()];
+        let f = floors[ch.index()] * start_noise;
         if f <= 0.0 || (ch == Channel::Beta && car.beta.is_none()) {
             continue;
         }

@@ -180,6 +180,21 @@ pub enum DiagnosisError {
         /// The diagnosis file.
         diagnosis: PathBuf,
     },
+    /// A campaign given with `--campaign` that lacks runs the diagnosis
+    /// read: the candidates were fitted to other runs.
+    #[error("{}: has no run `{run}`, which {} diagnosed ({missing} of its {diagnosed} runs missing): give the campaign that diagnosis read", campaign.display(), diagnosis.display())]
+    OtherCampaign {
+        /// The campaign given.
+        campaign: PathBuf,
+        /// The diagnosis file.
+        diagnosis: PathBuf,
+        /// The first diagnosed run it lacks (its file name).
+        run: String,
+        /// How many of the diagnosed runs it lacks.
+        missing: usize,
+        /// How many runs the diagnosis read.
+        diagnosed: usize,
+    },
     /// A design set with fewer than two members.
     #[error("a design separates at least two candidates")]
     OneMember,

@@ -17,6 +17,8 @@ pub enum WriteStep {
     Write,
     /// Renaming the temporary file into place.
     MoveIntoPlace,
+    /// Removing a stale output an earlier run left.
+    RemoveStale,
 }
 
 impl WriteStep {
@@ -27,6 +29,7 @@ impl WriteStep {
             WriteStep::CreateFolder => "cannot create folder: ",
             WriteStep::Write => "",
             WriteStep::MoveIntoPlace => "cannot move into place: ",
+            WriteStep::RemoveStale => "cannot remove a stale output: ",
         }
     }
 }

@@ -7,21 +7,23 @@
 //! the best one overlaid (`separation.png`). With `--measured` runs driven
 //! afterwards, each run's measured separation against the prediction.
 
-use crate::design::{
-    compare, design, measured, Design, DesignRequest, Fitted, FittedCandidate, FittedValue,
-    Measured, ScreenedOut,
-};
+mod diagnosis_file;
+mod summary;
+
+pub use diagnosis_file::{read_diagnosis, Diagnosed};
+
+use crate::design::{compare, design, measured, Design, DesignRequest, Measured};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::Channel;
-use crate::error::{DesignError, Error, InputError, InputProblem};
+use crate::error::{DesignError, Error, OutputError, WriteStep};
 use crate::io::campaign::load_campaign;
 use crate::io::read_run;
 use crate::manoeuvre::Manoeuvre;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{create_dir, refuse_overwrites, write_bytes, write_json, OutputLock};
 use crate::tyre::Tyre;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// The report of `design`.
@@ -36,6 +38,9 @@ pub struct DesignReport {
     pub design: Design,
     /// The runs driven afterwards, measured against the first set.
     pub measured: Vec<Measured>,
+    /// Scenario files of an earlier design in the output folder, removed
+    /// on writing.
+    pub stale: Vec<PathBuf>,
     /// The output folder.
     #[serde(skip)]
     pub out_dir: PathBuf,
@@ -55,180 +60,6 @@ struct ScenarioParts {
     friction: f64,
 }
 
-/// `diagnosis.json` as the design reads it.
-#[derive(Deserialize)]
-struct DiagnosisFile {
-    source: PathBuf,
-    base: BaseFile,
-    gap: GapFile,
-    ranking: Vec<CandidateFile>,
-    combinations: Vec<CandidateFile>,
-    confounded: Vec<ConfoundedFile>,
-    #[serde(default)]
-    screened: Vec<ScreenedFile>,
-}
-
-#[derive(Deserialize)]
-struct ScreenedFile {
-    effects: Vec<String>,
-    insample_reduction_percent: f64,
-    threshold_percent: f64,
-    margin_percent: f64,
-}
-
-#[derive(Deserialize)]
-struct BaseFile {
-    front: Tyre,
-    rear: Tyre,
-}
-
-#[derive(Deserialize)]
-struct GapFile {
-    noise: Vec<NoiseFile>,
-    noise_level: f64,
-}
-
-#[derive(Deserialize)]
-struct NoiseFile {
-    channel: String,
-    noise_floor: f64,
-    scale: f64,
-}
-
-#[derive(Deserialize)]
-struct CandidateFile {
-    effects: Vec<String>,
-    heldout_error_after: f64,
-    parameters: Vec<ParameterFile>,
-    axles: Option<Vec<AxleFile>>,
-}
-
-#[derive(Deserialize)]
-struct ParameterFile {
-    name: String,
-    value: f64,
-    std_error: Option<f64>,
-    at_bound: bool,
-    determined: bool,
-}
-
-#[derive(Deserialize)]
-struct AxleFile {
-    name: String,
-    value: f64,
-    std_error: Option<f64>,
-    limit: Option<serde_json::Value>,
-    held: bool,
-}
-
-#[derive(Deserialize)]
-struct ConfoundedFile {
-    effects: Vec<String>,
-}
-
-fn kinds(path: &Path, names: &[String]) -> Result<Vec<EffectKind>, Error> {
-    names
-        .iter()
-        .map(|n| {
-            EffectKind::from_name(n).ok_or_else(|| {
-                InputError::problem(
-                    path,
-                    InputProblem::Json {
-                        detail: format!("`{n}` is no effect of this release"),
-                    },
-                )
-                .into()
-            })
-        })
-        .collect()
-}
-
-fn candidate(path: &Path, c: &CandidateFile) -> Result<FittedCandidate, Error> {
-    let nan = |se: Option<f64>| se.unwrap_or(f64::NAN);
-    Ok(FittedCandidate {
-        effects: kinds(path, &c.effects)?,
-        parameters: c
-            .parameters
-            .iter()
-            .map(|p| {
-                FittedValue::new(
-                    &p.name,
-                    p.value,
-                    nan(p.std_error),
-                    p.determined && !p.at_bound,
-                )
-            })
-            .collect(),
-        axles: c.axles.as_ref().map(|a| {
-            a.iter()
-                .map(|x| {
-                    let free = x.limit.as_ref().is_none_or(|l| l.is_null()) && !x.held;
-                    FittedValue::new(&x.name, x.value, nan(x.std_error), free)
-                })
-                .collect()
-        }),
-        heldout_error: c.heldout_error_after,
-    })
-}
-
-/// Reads what the design needs of the diagnosis in `dir` and the path of
-/// its campaign.
-pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, PathBuf), Error> {
-    let path = dir.join("diagnosis.json");
-    let text = std::fs::read_to_string(&path).map_err(|source| InputError::Io {
-        path: path.clone(),
-        source,
-    })?;
-    let f: DiagnosisFile = serde_json::from_str(&text).map_err(|e| {
-        InputError::problem_at(
-            &path,
-            e.line(),
-            e.column(),
-            InputProblem::Json {
-                detail: e.to_string(),
-            },
-        )
-    })?;
-    let mut noise_floors = [0.0; 3];
-    let mut scales = [1.0; 3];
-    for n in &f.gap.noise {
-        if let Some(c) = Channel::ALL.into_iter().find(|c| c.name() == n.channel) {
-            noise_floors[c.index()] = n.noise_floor;
-            scales[c.index()] = n.scale;
-        }
-    }
-    let fitted = Fitted {
-        front: f.base.front,
-        rear: f.base.rear,
-        noise_floors,
-        scales,
-        noise_level: f.gap.noise_level,
-        candidates: f
-            .ranking
-            .iter()
-            .chain(&f.combinations)
-            .map(|c| candidate(&path, c))
-            .collect::<Result<_, _>>()?,
-        confounded: f
-            .confounded
-            .iter()
-            .map(|c| kinds(&path, &c.effects))
-            .collect::<Result<_, _>>()?,
-        screened: f
-            .screened
-            .iter()
-            .map(|s| {
-                Ok(ScreenedOut {
-                    effects: kinds(&path, &s.effects)?,
-                    insample_reduction_percent: s.insample_reduction_percent,
-                    screen_percent: s.threshold_percent - s.margin_percent,
-                })
-            })
-            .collect::<Result<_, Error>>()?,
-    };
-    Ok((fitted, f.source))
-}
-
 /// Designs for the diagnosis in `dir` (its campaign at `campaign`, else
 /// where the diagnosis read it), measures the runs `driven` against the
 /// first set, for the output folder `out` (default `<dir>/design`).
@@ -240,7 +71,7 @@ pub fn run(
     out: Option<&Path>,
 ) -> Result<DesignReport, Error> {
     request.validate()?;
-    let (fitted, source) = read_diagnosis(dir)?;
+    let (fitted, Diagnosed { source, runs }) = read_diagnosis(dir)?;
     let campaign_path = match campaign {
         Some(p) => p.to_path_buf(),
         None if !source.exists() => {
@@ -253,6 +84,7 @@ pub fn run(
         None => source,
     };
     let c = load_campaign(&campaign_path)?;
+    same_runs(&c, &campaign_path, &runs, &dir.join("diagnosis.json"))?;
     let out_dir = out.map_or_else(|| dir.join("design"), Path::to_path_buf);
     let mut inputs = c.inputs.clone();
     inputs.push(dir.join("diagnosis.json"));
@@ -278,7 +110,7 @@ pub fn run(
             Ok(m)
         })
         .collect::<Result<Vec<_>, Error>>()?;
-    Ok(DesignReport {
+    let mut report = DesignReport {
         diagnosis: dir.to_path_buf(),
         campaign: campaign_path,
         design: d,
@@ -291,12 +123,43 @@ pub fn run(
             friction: c.friction,
         },
         lock,
-    })
+        stale: Vec::new(),
+    };
+    report.stale = report.stale_scenarios();
+    Ok(report)
+}
+
+/// Ok when campaign `c` (read from `path`) holds every run the diagnosis
+/// read (`runs`, by file name): a design replays the candidates as fitted
+/// to those runs, and its limits are theirs.
+fn same_runs(c: &Campaign, path: &Path, runs: &[PathBuf], diagnosis: &Path) -> Result<(), Error> {
+    let have: std::collections::HashSet<_> =
+        c.runs.iter().filter_map(|r| r.path.file_name()).collect();
+    let missing: Vec<String> = runs
+        .iter()
+        .filter_map(|r| r.file_name())
+        .filter(|n| !have.contains(n))
+        .map(|n| n.to_string_lossy().into_owned())
+        .collect();
+    match missing.first() {
+        None => Ok(()),
+        Some(run) => Err(DesignError::OtherCampaign {
+            campaign: path.to_path_buf(),
+            diagnosis: diagnosis.to_path_buf(),
+            run: run.clone(),
+            missing: missing.len(),
+            diagnosed: runs.len(),
+        }
+        .into()),
+    }
 }
 
 fn vehicle_table(c: &Campaign) -> String {
     toml::to_string(&c.vehicle).unwrap_or_default()
 }
+
+/// How every scenario file a design writes begins.
+const DESIGNED_HEADER: &str = "# Designed by `handling design ";
 
 /// A number as TOML writes it (always with its decimal point or exponent).
 fn num(v: f64) -> String {
@@ -321,7 +184,7 @@ impl DesignReport {
             unreachable!("the family is made of schedules")
         };
         format!(
-            "# Designed by `handling design {}`: {description}.\n# {separation}\nname = \"{name}\"\n\n[vehicle]\n{}\n[tyres]\nfront = \"tyres/front.toml\"\nrear = \"tyres/rear.toml\"\n\n[road]\nfriction = {}\n\n[model]\nkinematics = \"exact\"\nload_transfer = true\n\n[manoeuvre]\nkind = \"schedule\"\nt = [{}]\nsteer = [{}]\nspeed = [{}]\n",
+            "{DESIGNED_HEADER}{}`: {description}.\n# {separation}\nname = \"{name}\"\n\n[vehicle]\n{}\n[tyres]\nfront = \"tyres/front.toml\"\nrear = \"tyres/rear.toml\"\n\n[road]\nfriction = {}\n\n[model]\nkinematics = \"exact\"\nload_transfer = true\n\n[manoeuvre]\nkind = \"schedule\"\nt = [{}]\nsteer = [{}]\nspeed = [{}]\n",
             self.diagnosis.display(),
             self.scenario.vehicle,
             num(self.scenario.friction),
@@ -347,6 +210,27 @@ impl DesignReport {
         v
     }
 
+    /// The scenario files an earlier design wrote into this folder that
+    /// this one does not write (they start with its header): a folder
+    /// reused for another design would otherwise offer manoeuvres of the
+    /// old one beside the new. [`DesignReport::write`] removes them.
+    fn stale_scenarios(&self) -> Vec<PathBuf> {
+        let keep = self.outputs();
+        let Ok(entries) = std::fs::read_dir(self.out_dir.join("scenarios")) else {
+            return Vec::new();
+        };
+        let mut stale: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| {
+                p.extension().is_some_and(|x| x == "toml")
+                    && !keep.contains(p)
+                    && std::fs::read_to_string(p).is_ok_and(|t| t.starts_with(DESIGNED_HEADER))
+            })
+            .collect();
+        stale.sort();
+        stale
+    }
+
     fn scenario_path(&self, name: &str) -> PathBuf {
         self.out_dir.join("scenarios").join(format!("{name}.toml"))
     }
@@ -366,6 +250,10 @@ impl DesignReport {
             })?;
             let header = "# The base model's tyre as the diagnosis identified it.\n";
             write_bytes(&path, format!("{header}{text}").as_bytes())?;
+        }
+        for path in &self.stale {
+            std::fs::remove_file(path)
+                .map_err(|e| OutputError::io(path, WriteStep::RemoveStale, e))?;
         }
         for set in &self.design.sets {
             for s in &set.ranked {
@@ -469,76 +357,5 @@ impl DesignReport {
             });
         }
         Figure::stack(panels)
-    }
-
-    /// What the design found, in lines.
-    pub fn summary(&self) -> Vec<String> {
-        let l = &self.design.limits;
-        let mut out = vec![format!(
-            "limits: {:.1}–{:.1} m/s, |ay| ≤ {:.2} m/s² ({:.0} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
-            l.speed.0, l.speed.1, l.ay_max(), 100.0 * l.ay_share, l.ay_reached, l.steer_rate, l.ax, self.design.family
-        )];
-        for set in &self.design.sets {
-            out.push(format!(
-                "{}: the campaign's runs separate them by D = {:.1} noise floors",
-                set.members.join(" / "),
-                set.campaign_separation
-            ));
-            for (k, s) in set.ranked.iter().enumerate() {
-                let expected = match (s.expected, s.uncertainty) {
-                    (Some(e), Some(u)) => {
-                        format!("; a driven run is expected to measure {e:.1} ± {u:.1}")
-                    }
-                    _ => String::new(),
-                };
-                let enough = match s.repetitions {
-                    Some(k) => format!(
-                        "; the diagnosis tells them apart after {k} such run{}",
-                        if k == 1 { "" } else { "s" }
-                    ),
-                    None if s.expected.is_some() => format!(
-                        "; more than {} such runs before the diagnosis tells them apart",
-                        crate::design::MAX_REPETITIONS
-                    ),
-                    None => String::new(),
-                };
-                out.push(format!(
-                    "  {}. {} — D = {:.1}{expected}{enough}: {}",
-                    k + 1,
-                    s.name,
-                    s.separation,
-                    s.description
-                ));
-            }
-            if !set.excluded.is_empty() {
-                out.push(format!(
-                    "  left out: {} beyond the limits or diverged (design.json lists them)",
-                    set.excluded.len()
-                ));
-            }
-        }
-        for m in &self.measured {
-            out.push(format!(
-                "measured: {} separates them by {:.1} noise floors and favours {}",
-                m.run, m.separation, m.favours
-            ));
-            out.push(match &m.predicted {
-                Some(p) => format!(
-                    "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
-                    p.manoeuvre,
-                    p.expected,
-                    p.uncertainty,
-                    p.deviation,
-                    if p.steer_difference > 0.1f64.to_radians() {
-                        format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
-                    } else {
-                        String::new()
-                    }
-                ),
-                None => "  no prediction to compare: the design ranks no manoeuvre of this run's file name".into(),
-            });
-        }
-        out.push(format!("wrote {}", self.out_dir.display()));
-        out
     }
 }

@@ -1,0 +1,62 @@
+//! How well a design's predictions can be trusted: the scatter with which
+//! the campaign's own runs measure the separations their replays predict
+//! ([`Calibration`]), and the scale a measured separation is read on (the
+//! signed root of `χ²_B − χ²_A`, [`signed_root`]) with its uncertainty
+//! ([`root_uncertainty`]). Separations in noise floors (dimensionless).
+//! The method is the project's own (the book's design chapter states it);
+//! the widening by a measured scatter is the Birge ratio's idea (Birge
+//! 1932) applied to the separation's statistic.
+
+use serde::Serialize;
+
+/// How the campaign's own runs measure the separation their replays
+/// predict, for the reference and its weakest look-alike. On a run where
+/// the reference is the car and the residuals are noise of the stated
+/// floors, `χ²_B − χ²_A` is `D² ± 2D` ([`separation`]); a model-form error
+/// the candidates share (a tyre the base model lacks) adds a scatter
+/// along the candidates' difference that the floors do not hold. Each
+/// run's `z = (χ²_B − χ²_A − D²)/(2D)`, over the runs that separate the
+/// pair by at least [`CALIBRATING_D`], measures it: their RMS is 1 on
+/// such runs of noise alone. Their replays are the candidates' all-run
+/// fits, so the scatter is an in-sample one: a floor on what a new run
+/// shows.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Calibration {
+    /// The runs measured (D of at least [`CALIBRATING_D`]).
+    pub runs: usize,
+    /// RMS of their `z`, at least 1 (1 where no run is measured).
+    pub inflation: f64,
+}
+
+/// The least separation D of a campaign run whose measurement calibrates
+/// the predictions ([`Calibration`]): below it the run says nothing of
+/// the candidates' difference.
+pub const CALIBRATING_D: f64 = 1.0;
+
+/// [`Calibration`] from each run's `(D², χ²_B − χ²_A)`.
+pub(crate) fn calibration(runs: impl Iterator<Item = (f64, f64)>) -> Calibration {
+    let z: Vec<f64> = runs
+        .filter(|(d2, m)| *d2 >= CALIBRATING_D * CALIBRATING_D && m.is_finite())
+        .map(|(d2, m)| (m - d2) / (2.0 * d2.sqrt()))
+        .collect();
+    let rms = (z.iter().map(|x| x * x).sum::<f64>() / z.len().max(1) as f64).sqrt();
+    Calibration {
+        runs: z.len(),
+        inflation: if z.is_empty() { 1.0 } else { rms.max(1.0) },
+    }
+}
+
+/// The measured separation's scale: `sign(x)·√|x|` of `x = χ²_B − χ²_A`.
+pub(crate) fn signed_root(x: f64) -> f64 {
+    x.signum() * x.abs().sqrt()
+}
+
+/// The 1 σ uncertainty of [`signed_root`] of a quantity of mean `mean` and
+/// standard deviation `sd`: half the root's change over `mean ± sd`, at
+/// least the noise's 1. For a large mean that is `sd/(2√mean)`, the
+/// delta method's; near 0, where the root's slope is infinite, it stays
+/// finite (`√sd`), so a manoeuvre expected to separate nothing is said
+/// to measure 0 ± a number, not ± ∞.
+pub(crate) fn root_uncertainty(mean: f64, sd: f64) -> f64 {
+    (0.5 * (signed_root(mean + sd) - signed_root(mean - sd))).max(1.0)
+}

@@ -1,0 +1,95 @@
+//! What `design` prints: the limits, each set's ranked manoeuvres with
+//! their expected separation and the runs the diagnosis needs, and each
+//! measured run against its prediction. Separations in noise floors.
+
+use super::DesignReport;
+
+impl DesignReport {
+    /// What the design found, in lines.
+    pub fn summary(&self) -> Vec<String> {
+        let l = &self.design.limits;
+        let mut out = vec![format!(
+            "limits: {:.1}–{:.1} m/s, |ay| ≤ {:.2} m/s² ({:.0} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
+            l.speed.0, l.speed.1, l.ay_max(), 100.0 * l.ay_share, l.ay_reached, l.steer_rate, l.ax, self.design.family
+        )];
+        for set in &self.design.sets {
+            let cal = &set.calibration;
+            let measured = match cal.runs {
+                0 => "; none by one noise floor, so none measures the predictions' scatter".into(),
+                n => format!(
+                    "; the {n} that separate them by a noise floor or more measure it with {:.1} times the noise's scatter, which widens the uncertainties below",
+                    cal.inflation
+                ),
+            };
+            out.push(format!(
+                "{}: the campaign's runs separate them by D = {:.1} noise floors{measured}",
+                set.members.join(" / "),
+                set.campaign_separation
+            ));
+            for (k, s) in set.ranked.iter().enumerate() {
+                let expected = match (s.expected, s.uncertainty) {
+                    (Some(e), Some(u)) => {
+                        format!("; a driven run is expected to measure {e:.1} ± {u:.1}")
+                    }
+                    _ => String::new(),
+                };
+                let enough = match s.repetitions {
+                    Some(0) => "; the diagnosis already tells them apart".into(),
+                    Some(k) => format!(
+                        "; the diagnosis tells them apart after {k} such run{}",
+                        if k == 1 { "" } else { "s" }
+                    ),
+                    None if s.expected.is_some() => format!(
+                        "; more than {} such runs before the diagnosis tells them apart",
+                        crate::design::MAX_REPETITIONS
+                    ),
+                    None => String::new(),
+                };
+                out.push(format!(
+                    "  {}. {} — D = {:.1}{expected}{enough}: {}",
+                    k + 1,
+                    s.name,
+                    s.separation,
+                    s.description
+                ));
+            }
+            if !set.excluded.is_empty() {
+                out.push(format!(
+                    "  left out: {} beyond the limits or diverged (design.json lists them)",
+                    set.excluded.len()
+                ));
+            }
+        }
+        for m in &self.measured {
+            out.push(format!(
+                "measured: {} separates them by {:.1} noise floors and favours {}",
+                m.run, m.separation, m.favours
+            ));
+            out.push(match &m.predicted {
+                Some(p) => format!(
+                    "  predicted for {}: {:.1} ± {:.1}, measured {:+.1} σ from it{}",
+                    p.manoeuvre,
+                    p.expected,
+                    p.uncertainty,
+                    p.deviation,
+                    if p.steer_difference > 0.1f64.to_radians() {
+                        format!("; its steer departs from the design by up to {:.2}°: not driven as designed", p.steer_difference.to_degrees())
+                    } else {
+                        String::new()
+                    }
+                ),
+                None => "  no prediction to compare: the design ranks no manoeuvre of this run's file name".into(),
+            });
+        }
+        if !self.stale.is_empty() {
+            out.push(format!(
+                "removed {} scenario file{} of an earlier design from {} (design.json lists them)",
+                self.stale.len(),
+                if self.stale.len() == 1 { "" } else { "s" },
+                self.out_dir.join("scenarios").display()
+            ));
+        }
+        out.push(format!("wrote {}", self.out_dir.display()));
+        out
+    }
+}

@@ -30,14 +30,14 @@ pub fn significant(v: f64, digits: usize) -> String {
 }
 
 /// `v` to `digits` significant digits as a reader reads it: plain
-/// decimals from 1e-3 to below 1e6 (`2.049`, not `2.049e0`; `0.000275`,
-/// not `0.0000`), an exponent beyond (`1.68e5`, `2.7e-11`, `4e305`: no
+/// decimals from 1e-4 to below 1e6 (`2.049`, not `2.049e0`; `0.000275`,
+/// not `0.0000`), an exponent beyond (`1.68e7`, `2.7e-11`, `4e305`: no
 /// number printed with hundreds of digits); zero as `0`.
 pub fn readable(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return fixed(v, 0);
     }
-    if (1e-3..1e6).contains(&v.abs()) {
+    if (1e-4..1e6).contains(&v.abs()) {
         return significant(v, digits);
     }
     let s = format!("{v:.*e}", digits.max(1) - 1);
@@ -205,8 +205,9 @@ mod tests {
     #[test]
     fn readable_numbers_have_no_e0_and_no_300_digits() {
         assert_eq!(readable(2.04912, 4), "2.049");
-        assert_eq!(readable(168075.77, 3), "1.68e5");
-        assert_eq!(readable(150000.0, 3), "1.5e5");
+        assert_eq!(readable(168075.77, 3), "168076");
+        assert_eq!(readable(1.68e7, 3), "1.68e7");
+        assert_eq!(readable(1.5e7, 3), "1.5e7");
         assert_eq!(readable(2.7e-11, 2), "2.7e-11");
         assert_eq!(readable(4e305, 3), "4e305");
         assert_eq!(readable(0.000275123, 3), "0.000275");

@@ -1,4 +1,4 @@
-//! What a fresh-eyes check (issue 41) found a user trips on in `identify`,
+//! What a fresh-eyes check found a user trips on in `identify`,
 //! `metrics`, `tyre-eval` and the output folders, run as a user runs the
 //! tool: each test one finding, and what the tool now does.
 

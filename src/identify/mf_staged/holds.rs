@@ -362,6 +362,6 @@ mod tests {
             effect_percent: 715.1,
             source: HoldSource::PacejkaBook,
         };
-        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.1007 ± 2.049e0; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
     }
 }

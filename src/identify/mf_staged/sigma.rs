@@ -194,6 +194,6 @@ mod tests {
         assert_eq!(rms_text(7.925e-12, "N"), "7.9e-12 N");
         assert_eq!(rms_text(0.0, "N·m"), "0.00 N·m");
         assert_eq!(rms_text(41.254, channel_unit("fy")), "41.25 N");
-        assert_eq!(rms_text(0.0102, channel_unit("mz")), "0.01 N·m");
+        assert_eq!(rms_text(0.0102, channel_unit("mz")), "0.010 N·m");
     }
 }

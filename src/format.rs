@@ -29,6 +29,38 @@ pub fn significant(v: f64, digits: usize) -> String {
     fixed(v, decimals)
 }
 
+/// `v` to `digits` significant digits as a reader reads it: plain
+/// decimals from 1e-4 to below 1e6 (`2.049`, not `2.049e0`; `0.000275`,
+/// not `0.0000`), an exponent beyond (`1.68e7`, `2.7e-11`, `4e305`: no
+/// number printed with hundreds of digits); zero as `0`.
+pub fn readable(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return fixed(v, 0);
+    }
+    if (1e-4..1e6).contains(&v.abs()) {
+        return significant(v, digits);
+    }
+    let s = format!("{v:.*e}", digits.max(1) - 1);
+    // `1.50e5` reads as `1.5e5`: trailing zeros of the mantissa dropped.
+    match s.split_once('e') {
+        Some((m, e)) if m.contains('.') => {
+            format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+        }
+        _ => s,
+    }
+}
+
+/// `v` with `decimals` decimals where they show two significant digits
+/// or more, else with `digits` significant digits ([`readable`]): an RMS
+/// of 2.7e-4 N reads `0.000275`, not `0.0`, one of 12.34 N `12.3`.
+pub fn decimals_or_digits(v: f64, decimals: usize, digits: usize) -> String {
+    if v != 0.0 && v.is_finite() && v.abs() < 10f64.powi(1 - decimals as i32) {
+        readable(v, digits)
+    } else {
+        fixed(v, decimals)
+    }
+}
+
 /// `v` as a written file holds it: the shortest text that reads back as
 /// the same `f64`, in plain decimals from 1e-4 to below 1e9 (`4000`,
 /// `0.3`, `-0.00123`) and with an exponent beyond (`1.5e-7`, `2.5e12`),
@@ -168,6 +200,21 @@ mod tests {
         assert_eq!(significant(12.3456, 4), "12.35");
         assert_eq!(significant(-0.012345, 3), "-0.0123");
         assert_eq!(significant(0.0, 4), "0");
+    }
+
+    #[test]
+    fn readable_numbers_have_no_e0_and_no_300_digits() {
+        assert_eq!(readable(2.04912, 4), "2.049");
+        assert_eq!(readable(168075.77, 3), "168076");
+        assert_eq!(readable(1.68e7, 3), "1.68e7");
+        assert_eq!(readable(1.5e7, 3), "1.5e7");
+        assert_eq!(readable(2.7e-11, 2), "2.7e-11");
+        assert_eq!(readable(4e305, 3), "4e305");
+        assert_eq!(readable(0.000275123, 3), "0.000275");
+        assert_eq!(readable(-0.0, 3), "0");
+        assert_eq!(decimals_or_digits(0.000275123, 1, 3), "0.000275");
+        assert_eq!(decimals_or_digits(12.34, 1, 3), "12.3");
+        assert_eq!(decimals_or_digits(0.0, 1, 3), "0.0");
     }
 
     #[test]

@@ -74,6 +74,14 @@ pub enum FitError {
         /// Relative difference of the forces.
         difference: f64,
     },
+    /// A fit whose σ or a parameter is not a finite number: no file holds it.
+    #[error("the fit's {quantity} is {value}, not a finite number: the data hold values no tyre model reproduces (check the force columns' scale); no file is written")]
+    NonFiniteResult {
+        /// What is not finite (`σ`, a parameter's name).
+        quantity: String,
+        /// Its value.
+        value: f64,
+    },
     /// A fitted coefficient beyond any tyre's ([`crate::tyre::sizes`]): its
     /// file would be refused by every command that reads it.
     #[error("the fit took {source}; no file is written, as every command would refuse it (the default start, `--start data`, keeps each coefficient within physical bounds)")]

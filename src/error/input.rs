@@ -67,7 +67,7 @@ pub enum InputError {
         problem: Box<InputProblem>,
     },
     /// A CSV file without a column the reader needs.
-    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {})", header.join(", "))]
+    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {}){}", header.join(", "), meant.as_ref().map_or(String::new(), |m| format!("; header column `{m}`: did you mean `{name}`?")))]
     MissingColumn {
         /// The file.
         path: PathBuf,
@@ -77,6 +77,8 @@ pub enum InputError {
         name: String,
         /// The header's columns.
         header: Vec<String>,
+        /// The header column that likely means it (`yawrate`, `time`).
+        meant: Option<String>,
     },
     /// A CSV row that the CSV reader cannot read.
     #[error("{path}:{line}:1: malformed CSV row: {detail}")]
@@ -104,8 +106,14 @@ pub enum InputError {
         /// What is wrong with it.
         problem: CellProblem,
     },
+    /// A CSV file with nothing in it (zero bytes, or blank lines only).
+    #[error("{path}: the file is empty: a CSV file needs a header line naming its columns, then rows of data")]
+    EmptyFile {
+        /// The file.
+        path: PathBuf,
+    },
     /// A CSV file with a header and no data row.
-    #[error("{path}: no data rows")]
+    #[error("{path}: no data rows (the file has its header line only)")]
     NoRows {
         /// The file.
         path: PathBuf,
@@ -181,6 +189,7 @@ impl InputError {
             | InputError::MalformedRow { path, .. }
             | InputError::Cell { path, .. }
             | InputError::NoRows { path }
+            | InputError::EmptyFile { path }
             | InputError::Value { path, .. }
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }

@@ -351,7 +351,7 @@ pub enum ModeError {
         code: u32,
     },
     /// A mode given for a tyre that is not a Magic Formula one.
-    #[error("mode {code} applies to Magic Formula tyres (.tir); this one is {model}")]
+    #[error("mode {code} is MFeval's useMode, a setting of the Magic Formula (.tir) tyres only: its digits switch the Magic Formula's input-limit checks, its α* (cos α) correction and its combined or turn slip, none of which a {model} tyre has; a {model} tyre is evaluated as its file states: drop --mode (or evaluate a .tir tyre)")]
     NotMagicFormula {
         /// The code given.
         code: u32,

@@ -93,6 +93,19 @@ pub enum OutputError {
         /// The lock file.
         lock: PathBuf,
     },
+    /// A folder where the output folder's lock file should be: no run
+    /// can hold the folder through it, and it is no stale lock to remove.
+    #[error(
+        "{}: cannot take the folder: {} is a folder where this tool's lock file should be (not a lock left by a run); remove that folder or choose another --out",
+        folder.display(),
+        lock.display()
+    )]
+    LockIsAFolder {
+        /// The output folder.
+        folder: PathBuf,
+        /// The folder in the lock file's place.
+        lock: PathBuf,
+    },
     /// A file-system step that failed.
     #[error("{}: {}{source}", path.display(), step.prefix())]
     Io {
@@ -160,7 +173,7 @@ impl OutputError {
             | OutputError::Draw { path, .. }
             | OutputError::RowLength { path, .. }
             | OutputError::UnequalColumns { path } => path,
-            OutputError::Busy { folder, .. } => folder,
+            OutputError::Busy { folder, .. } | OutputError::LockIsAFolder { folder, .. } => folder,
         }
     }
 

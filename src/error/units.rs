@@ -1,7 +1,8 @@
 //! A channel of an input file whose size says it is written in another
 //! unit than `FORMATS.md`'s (SI, radians, seconds): a yaw rate in deg/s, a
 //! lateral acceleration in g or ft/s², a time in milliseconds, a wheel
-//! load in kN. Each is judged on what no car reaches in the unit
+//! load in kN, a speed in km/h; and a rig force
+//! no tyre carries. Each is judged on what no car reaches in the unit
 //! `FORMATS.md` asks for, and its message names the column, the value and
 //! the unit it is likely in.
 
@@ -66,6 +67,31 @@ pub enum UnitSlip {
         median: f64,
         /// The smallest median load accepted, N.
         limit: f64,
+    },
+    /// A forward speed beyond any car's over more than 1 % of the run, or
+    /// one sample beyond any vehicle's at all (no logger's glitch of a
+    /// car's speed reads 1e308).
+    #[error("column `speed`: {} m/s is beyond {} m/s ({} km/h), which no car's speed reaches (1 % of the run reaches {} m/s): `speed` is the forward speed in m/s (FORMATS.md); is the column in km/h (divide it by 3.6) or another unit?", Num(*value), Num(*limit), fixed(limit * 3.6, 0), Num(*p99))]
+    SpeedBeyondAnyCar {
+        /// The first speed beyond the limit, as read.
+        value: f64,
+        /// The 99th percentile of |speed|, as read.
+        p99: f64,
+        /// The largest speed accepted, m/s.
+        limit: f64,
+    },
+    /// A rig force or moment no tyre carries (a value scaled by a wrong
+    /// factor, or an overflow of the logger).
+    #[error("column `{column}`: {} {unit} is beyond ±{} {unit}, which no tyre on a rig carries: `{column}` is in {unit} (FORMATS.md); is the column scaled by a wrong factor?", Num(*value), Num(*limit))]
+    RigBeyondAnyTyre {
+        /// The column (`fy`, `fx`, `mz`, `mx`, `my`).
+        column: &'static str,
+        /// The first value beyond the limit, as read.
+        value: f64,
+        /// The largest size accepted.
+        limit: f64,
+        /// The column's unit.
+        unit: &'static str,
     },
 }
 

@@ -22,10 +22,13 @@
 
 pub mod data;
 pub mod grouping;
+mod held;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
 
+pub(crate) use held::value_in;
+pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 
 use crate::error::{Error, FitError, OptionsError};
@@ -113,8 +116,10 @@ pub struct ParameterReport {
     pub name: String,
     /// Value.
     pub value: f64,
-    /// Whether it was fitted (false: held at its start value).
+    /// Whether it was fitted (false: held, see `held`).
     pub free: bool,
+    /// Why it was held, and so at what (`value`): `None` when fitted.
+    pub held: Option<HeldFor>,
     /// Approximate standard error.
     pub std_error: Option<f64>,
     /// Search bounds.
@@ -246,9 +251,12 @@ pub(crate) fn fit_channel_holding(
     if held.iter().any(|h| *h) {
         start.validate()?;
     }
-    let mut free = free_parameters(start, channel, conditions)?;
-    for (f, h) in free.iter_mut().zip(&held) {
-        *f &= !h;
+    let (mut free, mut reasons) = free_parameters(start, channel, conditions)?;
+    for ((f, r), h) in free.iter_mut().zip(&mut reasons).zip(&held) {
+        if *h {
+            *f = false;
+            *r = Some(HeldFor::Given);
+        }
     }
     let problem = FitProblem::for_channel(start, channel, &free, conditions)
         .with_derivatives(settings.derivatives);
@@ -275,6 +283,9 @@ pub(crate) fn fit_channel_holding(
         .then(|| stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares))
         .flatten();
     let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
+    for (p, why) in parameters.iter_mut().zip(reasons) {
+        p.held = why;
+    }
     for (p, _) in parameters.iter_mut().zip(&held).filter(|(_, h)| **h) {
         p.warning = Some("held at the value given".into());
     }
@@ -311,13 +322,14 @@ pub(crate) fn fit_channel_holding(
     })
 }
 
-/// Which of `channel`'s parameters the conditions can identify, or why the
-/// model or the data cannot be fitted at all.
+/// Which of `channel`'s parameters the conditions can identify and why
+/// each other is held, or why the model or the data cannot be fitted at
+/// all.
 fn free_parameters(
     start: &Tyre,
     channel: Channel,
     conditions: &[Condition],
-) -> Result<Vec<bool>, Error> {
+) -> Result<(Vec<bool>, Vec<Option<HeldFor>>), Error> {
     if channel.names(start).is_empty() {
         return Err(FitError::NothingToFit {
             model: start.model_name(),
@@ -339,7 +351,9 @@ fn free_parameters(
         }
         .into());
     }
-    Ok(channel.free(start, loads.len(), cambers.len()))
+    let free = channel.free(start, loads.len(), cambers.len());
+    let reasons = held::held_reasons(start, channel, loads.len(), cambers.len(), &free);
+    Ok((free, reasons))
 }
 
 /// The best point of a fit's search and what it cost.
@@ -444,6 +458,7 @@ fn parameter_reports(
             name: name.to_string(),
             value: values[i],
             free: free[i],
+            held: None,
             std_error: None,
             bounds: (lo, hi),
             warning: None,

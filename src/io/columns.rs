@@ -67,6 +67,28 @@ fn line_of(bytes: &[u8], p: &csv::Position) -> usize {
     p.line() as usize + usize::from(uncounted)
 }
 
+/// Long names of the time column that a logger writes.
+const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
+
+/// The header column that likely means the missing `name`: one that is no
+/// known column and a slip of spelling away from it (`yawrate`, `Yaw_Rate`,
+/// [`crate::format::nearest_name`]), or the time under a long name.
+fn meant(
+    name: &str,
+    headers: &csv::StringRecord,
+    required: &[&str],
+    optional: &[&str],
+) -> Option<String> {
+    headers
+        .iter()
+        .filter(|h| !required.contains(h) && !optional.contains(h))
+        .find(|h| {
+            crate::format::nearest_name(h, &[name]).is_some()
+                || (name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str()))
+        })
+        .map(str::to_string)
+}
+
 /// Reads the `required` and `optional` columns of a CSV file.
 pub fn read_columns(
     path: &Path,
@@ -79,6 +101,12 @@ pub fn read_columns(
         path: path.to_path_buf(),
         source,
     })?;
+    // Nothing to name a column in: said as such, not as a missing `t`.
+    if bytes.iter().all(u8::is_ascii_whitespace) {
+        return Err(InputError::EmptyFile {
+            path: path.to_path_buf(),
+        });
+    }
     let line_at = |p: Option<&csv::Position>| p.map_or(0, |p| line_of(&bytes, p));
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
@@ -117,6 +145,7 @@ pub fn read_columns(
                     line: line_at(headers.position()).max(1),
                     name: name.to_string(),
                     header: headers.iter().map(str::to_string).collect(),
+                    meant: meant(name, &headers, required, optional),
                 })
             }
             None => {}

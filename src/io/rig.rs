@@ -22,7 +22,39 @@ use std::path::Path;
 /// forward axis, `my` negative while rolling forward).
 pub(crate) fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
     let mut c = read_columns(path, &["fz"], &["mx", "my"])?;
-    Ok([c.take_optional("mx"), c.take_optional("my")])
+    let (mx, my) = (c.take_optional("mx"), c.take_optional("my"));
+    check_size(path, &c, "mx", mx.as_deref(), MAX_RIG_MOMENT, "N·m")?;
+    check_size(path, &c, "my", my.as_deref(), MAX_RIG_MOMENT, "N·m")?;
+    Ok([mx, my])
+}
+
+/// The largest force a rig file may hold, N: 1 MN, three times an airliner
+/// tyre's load; a force scaled by 1e300 is no tyre's and would leave a
+/// fit of NaN.
+pub const MAX_RIG_FORCE: f64 = 1e6;
+
+/// The largest moment a rig file may hold, N·m (1 MN at 0.1 m).
+pub const MAX_RIG_MOMENT: f64 = 1e5;
+
+/// Refuses the first value of `column` beyond ±`limit`, at its row.
+fn check_size(
+    path: &Path,
+    c: &Columns,
+    column: &'static str,
+    values: Option<&[f64]>,
+    limit: f64,
+    unit: &'static str,
+) -> Result<(), InputError> {
+    let Some(i) = values.and_then(|v| v.iter().position(|x| x.abs() > limit)) else {
+        return Ok(());
+    };
+    let slip = crate::error::UnitSlip::RigBeyondAnyTyre {
+        column,
+        value: values.map_or(0.0, |v| v[i]),
+        limit,
+        unit,
+    };
+    Err(c.error_at(path, i, column, slip.into()))
 }
 
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
@@ -77,6 +109,20 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         }
     }
     let mz = c.take_optional("mz");
+    let sized = [
+        ("fz", Some(&fz), MAX_RIG_FORCE, "N"),
+        ("fy", lateral.as_ref().map(|l| &l.1), MAX_RIG_FORCE, "N"),
+        (
+            "fx",
+            longitudinal.as_ref().map(|l| &l.1),
+            MAX_RIG_FORCE,
+            "N",
+        ),
+        ("mz", mz.as_ref(), MAX_RIG_MOMENT, "N·m"),
+    ];
+    for (column, values, limit, unit) in sized {
+        check_size(path, &c, column, values.map(Vec::as_slice), limit, unit)?;
+    }
     check_signs(
         path,
         &c,

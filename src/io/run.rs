@@ -1,11 +1,11 @@
 //! Measured vehicle runs (`FORMATS.md`): t, speed, steer, yaw_rate required;
 //! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs. A
 //! channel whose size says it is in another unit (a time in ms, a steer in
-//! degrees, a yaw rate in deg/s, `ay` in g or ft/s²) is refused at its
+//! degrees, a yaw rate in deg/s, `ay` in g or ft/s², a speed in km/h) is refused at its
 //! column ([`super::run_units`]).
 
 use super::columns::read_columns;
-use super::run_units::{check_ay, check_time_step, check_yaw_rate};
+use super::run_units::{check_ay, check_speed, check_time_step, check_yaw_rate};
 use crate::error::{InputError, InputProblem};
 use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
@@ -59,6 +59,7 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
         ));
     }
     let (speed, yaw_rate, ay) = (c.take("speed"), c.take("yaw_rate"), c.take_optional("ay"));
+    check_speed(path, &c, &speed)?;
     check_yaw_rate(path, &c, &yaw_rate)?;
     if let Some(ay) = &ay {
         check_ay(path, &c, &speed, &yaw_rate, ay)?;

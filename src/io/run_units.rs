@@ -22,6 +22,16 @@ pub const MAX_AY: f64 = 30.0;
 /// response takes 0.1–0.3 s): 10 ms written as 10 is far beyond it.
 pub const MAX_TIME_STEP: f64 = 0.2;
 
+/// The highest forward speed of a car on a handling run, m/s (540 km/h;
+/// the fastest road cars reach 140 m/s): 200 km/h written as km/h is
+/// beyond it.
+pub const MAX_SPEED: f64 = 150.0;
+
+/// A speed no logger's glitch of a car reads, m/s (30 times the land
+/// speed record): one such sample refuses the run, where a spike below it
+/// is repaired later by the cleaning.
+const ABSURD_SPEED: f64 = 1e4;
+
 /// The fewest samples whose median step judges a logger's rate.
 const RATE_SAMPLES: usize = 10;
 
@@ -133,4 +143,29 @@ pub(super) fn check_time_step(path: &Path, c: &Columns, t: &[f64]) -> Result<(),
         limit: MAX_TIME_STEP,
     };
     Err(c.error_at(path, i, "t", slip.into()))
+}
+
+/// Refuses a speed beyond [`MAX_SPEED`] over more than 1 % of the run (a
+/// speed in km/h), or any sample beyond any vehicle's (a value such as
+/// 1e308 that no arithmetic on the run survives).
+pub(super) fn check_speed(path: &Path, c: &Columns, u: &[f64]) -> Result<(), InputError> {
+    let mut size: Vec<f64> = u.iter().map(|v| v.abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
+    let absurd = u.iter().position(|v| v.abs() > ABSURD_SPEED);
+    let found = absurd.or_else(|| beyond(u, MAX_SPEED).map(|(i, _)| i));
+    match found {
+        Some(i) => Err(c.error_at(
+            path,
+            i,
+            "speed",
+            UnitSlip::SpeedBeyondAnyCar {
+                value: u[i],
+                p99,
+                limit: MAX_SPEED,
+            }
+            .into(),
+        )),
+        None => Ok(()),
+    }
 }

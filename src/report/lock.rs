@@ -189,6 +189,15 @@ impl OutputLock {
                     .into())
                 }
             }
+            // A folder reads as no bytes, which would be judged an empty
+            // lock and moved aside for good: it is named for what it is.
+            if file.is_dir() {
+                return Err(OutputError::LockIsAFolder {
+                    folder: dir.to_path_buf(),
+                    lock: file,
+                }
+                .into());
+            }
             let text = fs::read(&file).unwrap_or_default();
             let holder = process_named(&text);
             match holder {

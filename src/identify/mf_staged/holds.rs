@@ -31,6 +31,7 @@
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
+use crate::format::readable;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::LocalResult;
 use serde::Serialize;
@@ -115,13 +116,16 @@ impl fmt::Display for HoldReason {
                 source,
             } => write!(
                 f,
-                "not identifiable from these data when fitted ({fitted:.4} ± {se:.3e}; one \
+                "not identifiable from these data when fitted ({} ± {}; one \
                  standard error moved the fit by {effect_percent:.1} % of the channel's RMS): \
-                 held at the {source}"
+                 held at the {source}",
+                readable(*fitted, 5),
+                readable(*se, 4)
             ),
             HoldReason::NotIdentifiable { fitted, source, .. } => write!(
                 f,
-                "the data do not move it (it stood at {fitted:.4}): held at the {source}"
+                "the data do not move it (it stood at {}): held at the {source}",
+                readable(*fitted, 5)
             ),
         }
     }
@@ -358,6 +362,6 @@ mod tests {
             effect_percent: 715.1,
             source: HoldSource::PacejkaBook,
         };
-        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.1007 ± 2.049e0; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
     }
 }

@@ -332,6 +332,9 @@ pub struct StageParameter {
     pub std_error: Option<f64>,
     /// Why a parameter was held, and at what (`value`).
     pub held: Option<HoldReason>,
+    /// The physical bound a fitted parameter ends on (the fit would take
+    /// it beyond: the value is the bound's, not the data's).
+    pub on_bound: Option<f64>,
     /// An identifiability warning.
     pub warning: Option<String>,
 }

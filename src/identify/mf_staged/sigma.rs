@@ -69,14 +69,10 @@ pub fn channel_unit(channel: &str) -> &'static str {
 }
 
 /// An RMS error as read on the terminal: two decimals, or two significant
-/// digits in scientific notation below 0.01 (a fit to noise-free data
-/// leaves 1e-11 N, which two decimals would show as a suspicious 0.00).
+/// digits below 0.1 (a fit to noise-free data leaves 1e-11 N, which two
+/// decimals would show as a suspicious 0.00).
 pub fn rms_text(rms: f64, unit: &str) -> String {
-    if rms == 0.0 || rms >= 0.01 || !rms.is_finite() {
-        format!("{rms:.2} {unit}")
-    } else {
-        format!("{rms:.1e} {unit}")
-    }
+    format!("{} {unit}", crate::format::decimals_or_digits(rms, 2, 2))
 }
 
 /// Every sample of the rig file as a row (no thinning), with the wheel
@@ -198,6 +194,6 @@ mod tests {
         assert_eq!(rms_text(7.925e-12, "N"), "7.9e-12 N");
         assert_eq!(rms_text(0.0, "N·m"), "0.00 N·m");
         assert_eq!(rms_text(41.254, channel_unit("fy")), "41.25 N");
-        assert_eq!(rms_text(0.0102, channel_unit("mz")), "0.01 N·m");
+        assert_eq!(rms_text(0.0102, channel_unit("mz")), "0.010 N·m");
     }
 }

@@ -291,14 +291,21 @@ pub(super) fn run_stage(
                 // The user's value, even where the levels would hold it too.
                 .or_else(|| run.holding.given(name).map(|_| HoldReason::Given))
                 .or_else(|| held_reason(*need, have));
+            let on_bound = fitted.and_then(|k| at_bound(fit.p[k], fit.bounds[k]));
             StageParameter {
                 name,
+                on_bound,
                 value,
                 start: fitted.map_or(value, |k| fit.starts[k]),
                 free: fitted.is_some(),
                 std_error: fitted.and_then(|k| u.std_error[k]),
                 held: if fitted.is_some() { None } else { because },
-                warning: fitted.and_then(|k| u.warning(k, value)),
+                // On its bound, the standard error means nothing: said
+                // first, as the swarm fits say it.
+                warning: on_bound
+                    .zip(fitted)
+                    .map(|(_, k)| bound_warning(fit.bounds[k]))
+                    .or_else(|| fitted.and_then(|k| u.warning(k, value))),
             }
         })
         .collect();
@@ -323,6 +330,23 @@ pub(super) fn run_stage(
             .collect(),
         error_spread: None,
     }
+}
+
+/// The bound of `(lo, hi)` that `v` ends on (within 1e-6 of the box's
+/// width, or of the bound's size for a box open on one side), if any.
+fn at_bound(v: f64, (lo, hi): (f64, f64)) -> Option<f64> {
+    let width = if (hi - lo).is_finite() { hi - lo } else { 0.0 };
+    let near = |b: f64| b.is_finite() && (v - b).abs() <= 1e-6 * width.max(b.abs()).max(1e-9);
+    [lo, hi].into_iter().find(|b| near(*b))
+}
+
+/// The warning of a parameter on a bound of `(lo, hi)`.
+fn bound_warning((lo, hi): (f64, f64)) -> String {
+    format!(
+        "on its physical bound ({} to {}): the fit would take it beyond; the value is the bound, not a fit",
+        crate::format::exact(lo),
+        crate::format::exact(hi)
+    )
 }
 
 /// The warning of a stage whose Levenberg–Marquardt stopped before its

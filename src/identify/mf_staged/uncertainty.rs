@@ -96,7 +96,8 @@ pub(super) fn uncertainty(problem: &StageProblem, p: &[f64]) -> Uncertainty {
                 .join(", ");
         }
         format!(
-            "near-singular Jacobian (condition number {condition:.2e}): the data barely separate {weak}"
+            "near-singular Jacobian (condition number {}): the data barely separate {weak}",
+            crate::format::readable(condition, 3)
         )
     });
     let std_error: Vec<Option<f64>> = (0..nf)
@@ -140,7 +141,8 @@ pub(super) fn identifiability_warning(value: f64, se: f64, effect: f64) -> Optio
     }
     (se >= value.abs() && effect >= EFFECT_FLOOR).then(|| {
         format!(
-            "not identifiable from these data (standard error {se:.3e} ≥ |value|; one standard error moves the fit by {:.1} % of the channel's RMS)",
+            "not identifiable from these data (standard error {} ≥ |value|; one standard error moves the fit by {:.1} % of the channel's RMS)",
+            crate::format::readable(se, 4),
             100.0 * effect
         )
     })

@@ -1,8 +1,13 @@
-//! The parameters held with `--hold` as `identify` reports them: each
-//! with the value given (the tyre file's units) and whether a fit applied
-//! it, and the terminal's lines that say so.
+//! The values `identify` held rather than fitted, as it reports them:
+//! each with its value (the tyre file's units), why it was held (given
+//! with `--hold`, too few levels in the data, a `.tir` constant without a
+//! template) and, for a hold, whether a fit applied it; and the
+//! terminal's lines that say so.
 
 use super::Options;
+use crate::format::exact;
+use crate::identify::{value_in, Fit, HeldFor};
+use crate::tyre::Tyre;
 use serde::Serialize;
 
 /// A parameter held with `--hold`: its name, the value given (the tyre
@@ -17,6 +22,9 @@ pub struct Held {
     pub value: f64,
     /// Whether a fit held it (false: no fit it belongs to ran).
     pub applied: bool,
+    /// Why it was held.
+    #[serde(flatten)]
+    pub reason: HeldFor,
 }
 
 /// The holds of `o`, each applied when `fitted` names it.
@@ -27,6 +35,7 @@ pub(crate) fn holds_of(o: &Options, fitted: &[String]) -> Vec<Held> {
             name: name.clone(),
             value: *value,
             applied: fitted.contains(name),
+            reason: HeldFor::Given,
         })
         .collect()
 }
@@ -36,7 +45,7 @@ pub(crate) fn holds_of(o: &Options, fitted: &[String]) -> Vec<Held> {
 pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
     let applied: Vec<String> = held
         .iter()
-        .filter(|h| h.applied)
+        .filter(|h| h.applied && h.reason == HeldFor::Given)
         .map(|h| format!("{} = {}", h.name, h.value))
         .collect();
     let mut out = Vec::new();
@@ -46,6 +55,21 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
             applied.join(", ")
         ));
     }
+    // The values held for another reason, one line per reason.
+    let mut reasons: Vec<HeldFor> = Vec::new();
+    for h in held.iter().filter(|h| h.reason != HeldFor::Given) {
+        if !reasons.contains(&h.reason) {
+            reasons.push(h.reason);
+        }
+    }
+    for why in reasons {
+        let values: Vec<String> = held
+            .iter()
+            .filter(|h| h.reason == why)
+            .map(|h| format!("{} = {}", h.name, exact(h.value)))
+            .collect();
+        out.push(format!("  held: {}: {why}", values.join(", ")));
+    }
     out.extend(held.iter().filter(|h| !h.applied).map(|h| {
         format!(
             "  warning: --hold {}={}: not applied: no fit of its block ran on these data, and the file written does not hold it",
@@ -53,4 +77,37 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
         )
     }));
     out
+}
+
+/// The parameters of `fits` held for another reason than `--hold` (the
+/// levels of the data, the model's design), at their value in `written`
+/// (PAC89's two-stage result holds its camber terms at zero).
+pub(crate) fn held_by_fits<'a>(fits: impl Iterator<Item = &'a Fit>, written: &Tyre) -> Vec<Held> {
+    fits.flat_map(|f| &f.parameters)
+        .filter_map(|p| match p.held {
+            Some(why) if why != HeldFor::Given => Some(Held {
+                name: p.name.clone(),
+                value: value_in(written, &p.name).unwrap_or(p.value),
+                applied: true,
+                reason: why,
+            }),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The comment lines of a written file (`mark`: `#` for TOML, `$` for a
+/// `.tir`) stating each value held for another reason than `--hold`.
+pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
+    held.iter()
+        .filter(|h| h.reason != HeldFor::Given)
+        .map(|h| {
+            format!(
+                "{mark} held: {} = {}: {}\n",
+                h.name,
+                exact(h.value),
+                h.reason
+            )
+        })
+        .collect()
 }

@@ -8,7 +8,7 @@
 //! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
-use crate::format::{distinct, fixed};
+use crate::format::{decimals_or_digits, distinct, fixed};
 use crate::identify::data::{Condition, Point};
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::identify::pac89_two_stage::{self, TwoStage};
@@ -19,7 +19,7 @@ use outputs::{output_lock, outputs};
 mod figures;
 mod holds;
 pub use holds::Held;
-use holds::{held_lines, holds_of};
+use holds::{held_by_fits, held_file_lines, held_lines, holds_of};
 mod staged;
 mod staged_figure;
 
@@ -257,7 +257,8 @@ impl IdentifyReport {
                     r.options.seed,
                     r.fit.sigma_percent
                 );
-                write_bytes(&files[0], format!("{header}{text}").as_bytes())?;
+                let held = held_file_lines(&r.held, "#");
+                write_bytes(&files[0], format!("{header}{held}{text}").as_bytes())?;
                 write_json_sorted(&files[1], r)?;
                 self.figure().save(&files[2])
             }
@@ -431,7 +432,28 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
         .collect();
     r.held = holds_of(o, &fitted);
+    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
+    r.held
+        .extend(held_by_fits(fits.into_iter().flatten(), &r.tyre));
+    finite_fits(&r).map_err(on_data(o, None))?;
     Ok(r)
+}
+
+/// Refuses fits whose σ or a parameter is not a finite number (data that
+/// no model reproduces): no such value is written.
+fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
+    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
+    for f in fits.into_iter().flatten() {
+        let sigma = (format!("{} σ", f.channel.quantity()), f.sigma_percent);
+        let values = f.parameters.iter().map(|p| (p.name.clone(), p.value));
+        if let Some((quantity, value)) = std::iter::once(sigma)
+            .chain(values)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(FitError::NonFiniteResult { quantity, value }.into());
+        }
+    }
+    Ok(())
 }
 
 /// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
@@ -493,19 +515,23 @@ impl SwarmReport {
         }
         let f = &self.fit;
         out.push(format!(
-            "  σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {} evaluations, {:.2} s",
-            f.sigma_percent, f.sigma_pso_percent, f.rms, f.evaluations, f.seconds
+            "  σ {:.3} % (PSO alone {:.3} %), RMS {} N, {} evaluations, {:.2} s",
+            f.sigma_percent,
+            f.sigma_pso_percent,
+            decimals_or_digits(f.rms, 1, 3),
+            f.evaluations,
+            f.seconds
         ));
         for c in &f.curves {
             out.push(format!(
-                "    Fz {:>7.0} N, camber {:>5}°, pressure {}: {:>4} points, σ {:.3} %, RMS {:.1} N",
+                "    Fz {:>7.0} N, camber {:>5}°, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
                 c.fz,
                 fixed(c.camber.to_degrees(), 2),
                 c.pressure
                     .map_or("—".into(), |p| format!("{:.0} kPa", p / 1000.0)),
                 c.points,
                 c.sigma_percent,
-                c.rms
+                decimals_or_digits(c.rms, 1, 3)
             ));
         }
         out.extend(parameter_warnings(f, &o.hold));
@@ -521,16 +547,22 @@ impl SwarmReport {
         }
         if let Some(mz) = &self.aligning {
             out.push(format!(
-                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {:.2} N·m, {:.2} s",
-                mz.sigma_percent, mz.sigma_pso_percent, mz.rms, mz.seconds
+                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
+                mz.sigma_percent,
+                mz.sigma_pso_percent,
+                decimals_or_digits(mz.rms, 2, 3),
+                mz.seconds
             ));
             out.extend(parameter_warnings(mz, &o.hold));
         }
         if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
             out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
             out.push(format!(
-                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {:.1} N, {:.2} s",
-                fx.sigma_percent, fx.sigma_pso_percent, fx.rms, fx.seconds
+                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {} N, {:.2} s",
+                fx.sigma_percent,
+                fx.sigma_pso_percent,
+                decimals_or_digits(fx.rms, 1, 3),
+                fx.seconds
             ));
             out.extend(parameter_warnings(fx, &o.hold));
         }

@@ -8,14 +8,16 @@
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::format::{exact, plural};
+use crate::identify::data::RigData;
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
+use crate::identify::{ConstantFrom, HeldFor};
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, OutputLock};
-use crate::tyre::mf::MfCoefficients;
+use crate::tyre::mf::{MagicFormula, MfCoefficients};
 use crate::tyre::StagedFit;
 use serde::Serialize;
 
@@ -98,6 +100,7 @@ impl StagedJob {
                 }
                 _ => None,
             }));
+            out.extend(level_held_lines(&s.parameters));
             out.extend(s.parameters.iter().filter_map(|p| {
                 let w = p.warning.as_deref()?;
                 Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
@@ -169,7 +172,13 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw);
     crate::tyre::ModelParameters::check_sizes(&id.tyre)
         .map_err(|source| FitError::BeyondAnyTyre { source })?;
-    let tir = held_comment(o) + &crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
+    let mut held = super::holds::holds_of(o, &given_names(o));
+    if o.template.is_none() {
+        held.extend(constants_held(&id.tyre, &data, o));
+    }
+    let tir = held_comment(o)
+        + &super::holds::held_file_lines(&held, "$")
+        + &crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
@@ -183,11 +192,8 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .map(|s| s.stage)
         .collect();
     let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows);
-    // A given value is set before the stages and written whether or not
-    // a stage that fits it ran: every hold is applied.
-    let given: Vec<String> = o.hold.iter().map(|(n, _)| n.clone()).collect();
     Ok(StagedJob {
-        held: super::holds::holds_of(o, &given),
+        held,
         report: id.report,
         data: o.data.display().to_string(),
         rows: prepared.account,
@@ -224,4 +230,65 @@ fn held_comment(o: &Options) -> String {
         );
     }
     s
+}
+
+/// The names given with `--hold`: a given value is set before the stages
+/// and written whether or not a stage that fits it ran, so every hold is
+/// applied.
+fn given_names(o: &Options) -> Vec<String> {
+    o.hold.iter().map(|(n, _)| n.clone()).collect()
+}
+
+/// The `.tir` constants a fit without a template sets (`FNOMIN`,
+/// `UNLOADED_RADIUS`, `NOMPRES`, `LONGVL`), each with where its value
+/// comes from; one given with `--hold` is said as such.
+fn constants_held(t: &MagicFormula, data: &RigData, o: &Options) -> Vec<super::holds::Held> {
+    let c = &t.coefficients;
+    let pressure = match data.pressure {
+        Some(_) => ConstantFrom::MedianPressure,
+        None => ConstantFrom::NoPressure,
+    };
+    let speed = match data.speed {
+        Some(_) => ConstantFrom::MedianSpeed,
+        None => ConstantFrom::DefaultSpeed,
+    };
+    [
+        ("FNOMIN", c.FNOMIN, ConstantFrom::MedianLoad),
+        (
+            "UNLOADED_RADIUS",
+            c.UNLOADED_RADIUS,
+            ConstantFrom::DefaultRadius,
+        ),
+        ("NOMPRES", c.NOMPRES, pressure),
+        ("LONGVL", c.LONGVL, speed),
+    ]
+    .into_iter()
+    .filter(|(name, ..)| !o.hold.iter().any(|(h, _)| h == name))
+    .map(|(name, value, from)| super::holds::Held {
+        name: name.into(),
+        value,
+        applied: true,
+        reason: HeldFor::Constant { from },
+    })
+    .collect()
+}
+
+/// The terminal's lines of a stage's parameters held for want of levels
+/// or by design, one per reason, each value as written.
+fn level_held_lines(parameters: &[mf_staged::StageParameter]) -> Vec<String> {
+    let mut groups: Vec<(String, Vec<String>)> = Vec::new();
+    for p in parameters {
+        let Some(why @ (HoldReason::Levels { .. } | HoldReason::ByDesign)) = &p.held else {
+            continue;
+        };
+        let (why, value) = (why.to_string(), format!("{} = {}", p.name, exact(p.value)));
+        match groups.iter_mut().find(|g| g.0 == why) {
+            Some(g) => g.1.push(value),
+            None => groups.push((why, vec![value])),
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(why, values)| format!("    held: {}: {why}", values.join(", ")))
+        .collect()
 }

@@ -1,0 +1,135 @@
+//! Why a parameter of a fit stands at a value it was not fitted to, as
+//! the report and the terminal state it beside the value: given with
+//! `--hold`, a term the data's levels cannot determine, one the model's
+//! fit never frees, or a constant of a written `.tir` that no template
+//! gave.
+
+use super::problem::Channel;
+use crate::format::plural;
+use crate::tyre::Tyre;
+use serde::Serialize;
+use std::fmt;
+
+/// Why a value was held rather than fitted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(tag = "why", rename_all = "kebab-case")]
+pub enum HeldFor {
+    /// The user gave it with `--hold`.
+    Given,
+    /// A term of the load, and the data have too few load levels.
+    LoadLevels {
+        /// Load levels in the data.
+        have: usize,
+    },
+    /// A term of the camber, and the data have too few camber levels.
+    CamberLevels {
+        /// Camber levels in the data.
+        have: usize,
+    },
+    /// The model's identification never frees it.
+    ByDesign,
+    /// A constant of a written `.tir`, set without a template.
+    Constant {
+        /// Where its value comes from.
+        from: ConstantFrom,
+    },
+}
+
+/// Where a `.tir` constant written without a template comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ConstantFrom {
+    /// The median load of the data (`FNOMIN`).
+    MedianLoad,
+    /// The median pressure of the data (`NOMPRES`).
+    MedianPressure,
+    /// No pressure column: 0, the pressure terms off (`NOMPRES`).
+    NoPressure,
+    /// The median rig speed (`LONGVL`).
+    MedianSpeed,
+    /// No speed column: the default speed (`LONGVL`).
+    DefaultSpeed,
+    /// The default radius: rig forces do not measure it (`UNLOADED_RADIUS`).
+    DefaultRadius,
+}
+
+impl fmt::Display for HeldFor {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            HeldFor::Given => f.write_str("given with --hold"),
+            HeldFor::LoadLevels { have } => write!(
+                f,
+                "load terms, which need more load levels than the data's {}",
+                plural(*have, "level", "levels")
+            ),
+            HeldFor::CamberLevels { have } => write!(
+                f,
+                "camber terms, which need more camber levels than the data's {}",
+                plural(*have, "level", "levels")
+            ),
+            HeldFor::ByDesign => f.write_str("not fitted by this model's identification"),
+            HeldFor::Constant { from } => write!(f, "no --template: {from}"),
+        }
+    }
+}
+
+impl fmt::Display for ConstantFrom {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ConstantFrom::MedianLoad => "the median load of the data, rounded to 10 N",
+            ConstantFrom::MedianPressure => "the median pressure of the data",
+            ConstantFrom::NoPressure => "no `pressure` column, so 0 (the pressure terms off)",
+            ConstantFrom::MedianSpeed => "the median rig speed of the data",
+            ConstantFrom::DefaultSpeed => "no `speed` column, so the default",
+            ConstantFrom::DefaultRadius => {
+                "a default, as rig forces do not measure the radius (give --template with your tyre's)"
+            }
+        })
+    }
+}
+
+/// Why each parameter of `channel` that `free` leaves out is held, for
+/// data with `loads` load and `cambers` camber levels: a term freed with
+/// more levels of one of them is held for want of those.
+pub(super) fn held_reasons(
+    start: &Tyre,
+    channel: Channel,
+    loads: usize,
+    cambers: usize,
+    free: &[bool],
+) -> Vec<Option<HeldFor>> {
+    // Many levels: what the data's own counts leave out is left out for
+    // want of them.
+    const MANY: usize = 1000;
+    let more_loads = channel.free(start, MANY, cambers);
+    let more_cambers = channel.free(start, loads, MANY);
+    free.iter()
+        .enumerate()
+        .map(|(i, f)| {
+            (!f).then(|| {
+                if more_loads.get(i) == Some(&true) {
+                    HeldFor::LoadLevels { have: loads }
+                } else if more_cambers.get(i) == Some(&true) {
+                    HeldFor::CamberLevels { have: cambers }
+                } else {
+                    HeldFor::ByDesign
+                }
+            })
+        })
+        .collect()
+}
+
+/// The value of parameter `name` in tyre `t` (any block a fit fits), as
+/// written: a held value is stated as the file holds it.
+pub(crate) fn value_in(t: &Tyre, name: &str) -> Option<f64> {
+    [
+        Channel::LateralForce,
+        Channel::AligningMoment,
+        Channel::LongitudinalForce,
+    ]
+    .into_iter()
+    .find_map(|c| {
+        let i = c.names(t).iter().position(|n| n == name)?;
+        c.parameters(t).get(i).copied()
+    })
+}

@@ -847,6 +847,7 @@ fn design(
         ay_share,
         ax: max_ax,
         top,
+        ..Default::default()
     };
     let r = detached(py, || {
         let r = jobs::design::run(

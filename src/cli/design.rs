@@ -68,6 +68,7 @@ pub fn design(a: DesignArgs) -> Result<()> {
         ay_share: a.ay_share,
         ax: a.max_ax,
         top: a.top,
+        also: Vec::new(),
     };
     let r = design::run(
         &a.diagnosis,

@@ -96,16 +96,28 @@ pub struct Predicted {
     /// The largest |steer| difference between the run and the design over
     /// the run's times, rad: how closely it was driven as designed.
     pub steer_difference: f64,
+    /// The share of the manoeuvre's length the run covers (1: all of it;
+    /// less, a run cut short, whose separation is part of the predicted).
+    pub coverage: f64,
+    /// The channels the prediction counts that the run does not log: its
+    /// separation lacks their part.
+    pub missing_channels: Vec<crate::diagnose::Channel>,
 }
 
 /// The prediction of `set`'s ranked manoeuvre named as run `run` is, set on
-/// its measurement `m`.
-pub fn compare(m: &mut Measured, set: &super::SetDesign, run: &MeasuredRun) {
+/// its measurement `m`, with how much of the manoeuvre and of the
+/// predicted channels (`logging`) the run holds.
+pub fn compare(m: &mut Measured, set: &super::SetDesign, run: &MeasuredRun, logging: &Logging) {
     let stem = run
         .path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned());
-    let Some(s) = set.ranked.iter().find(|s| Some(&s.name) == stem.as_ref()) else {
+    let Some(s) = set
+        .ranked
+        .iter()
+        .chain(&set.named)
+        .find(|s| Some(&s.name) == stem.as_ref())
+    else {
         return;
     };
     let (Some(expected), Some(uncertainty)) = (s.expected, s.uncertainty) else {
@@ -118,12 +130,24 @@ pub fn compare(m: &mut Measured, set: &super::SetDesign, run: &MeasuredRun) {
         .zip(&run.steer)
         .map(|(&t, &d)| (d - s.manoeuvre.steer(t0 + t - run.t[0])).abs())
         .fold(0.0, f64::max);
+    let length = s.manoeuvre.end_time() - t0;
+    let span = run.t.last().zip(run.t.first()).map_or(0.0, |(b, a)| b - a);
+    let missing_channels = crate::diagnose::Channel::ALL
+        .into_iter()
+        .filter(|&c| logging.channels[c.index()] && c.of(run).is_none())
+        .collect();
     m.predicted = Some(Predicted {
         manoeuvre: s.name.clone(),
         expected,
         uncertainty,
         deviation: (m.separation - expected) / uncertainty,
         steer_difference,
+        coverage: if length > 0.0 {
+            (span / length).min(1.0)
+        } else {
+            1.0
+        },
+        missing_channels,
     });
 }
 

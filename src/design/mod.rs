@@ -57,6 +57,9 @@ pub struct DesignRequest {
     pub ax: f64,
     /// How many of the best manoeuvres get their uncertainty and are kept.
     pub top: usize,
+    /// Manoeuvres to complete beyond the best `top` (the names of runs
+    /// driven afterwards, whose predictions they are compared with).
+    pub also: Vec<String>,
 }
 
 impl Default for DesignRequest {
@@ -66,6 +69,7 @@ impl Default for DesignRequest {
             ay_share: family::DEFAULT_AY_SHARE,
             ax: family::DEFAULT_AX,
             top: 3,
+            also: Vec::new(),
         }
     }
 }
@@ -209,6 +213,9 @@ pub struct SetDesign {
     pub calibration: Calibration,
     /// The manoeuvres within the limits, best first.
     pub ranked: Vec<Scored>,
+    /// Manoeuvres asked for by name ([`DesignRequest::also`]) beyond the
+    /// best, completed alike (no scenario file is written for them).
+    pub named: Vec<Scored>,
     /// What was left out, and why.
     pub excluded: Vec<Excluded>,
     /// The best manoeuvre's predicted responses (for the figure).
@@ -317,7 +324,8 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     let limits = Limits::of(&c.runs, c.settings.min_speed, req.ay_share, req.ax);
     let logging = Logging::of(c);
     let base = fitted.base(c);
-    let family = family::family(&base, &limits);
+    let mut family = family::family(&base, &limits);
+    distinct_names(&mut family, c);
     let runs = Prepared::campaign_runs(c);
     let sets = sets(fitted, req)?
         .into_iter()
@@ -333,7 +341,7 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
                 logging: &logging,
                 runs: &runs,
             };
-            design_set(&cx, source, &family, req.top)
+            design_set(&cx, source, &family, req)
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Design {
@@ -343,6 +351,22 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
         family: family.len(),
         sets,
     })
+}
+
+/// Renames the manoeuvres of `family` that share a name with one of the
+/// campaign's runs (`sweep_080kph` of a programme): a designed run driven
+/// and logged under its scenario's name must not be taken for that run,
+/// nor refused beside it.
+fn distinct_names(family: &mut [Designed], c: &Campaign) {
+    let taken: std::collections::HashSet<String> = c
+        .runs
+        .iter()
+        .filter_map(|r| r.path.file_stem())
+        .map(|s| s.to_string_lossy().into_owned())
+        .collect();
+    for d in family.iter_mut().filter(|d| taken.contains(&d.name)) {
+        d.name.push_str("_designed");
+    }
 }
 
 /// The separation of the reference (first) from each other member, given
@@ -489,7 +513,7 @@ fn design_set(
     cx: &SetContext,
     source: SetSource,
     family: &[Designed],
-    top: usize,
+    req: &DesignRequest,
 ) -> Result<SetDesign, Error> {
     let (mut ranked, mut excluded) = (Vec::new(), Vec::new());
     for s in family.par_iter().map(|d| cx.score(d)).collect::<Vec<_>>() {
@@ -499,9 +523,15 @@ fn design_set(
         }
     }
     ranked.sort_by(|a, b| b.0.separation.total_cmp(&a.0.separation));
-    ranked.truncate(top.max(1));
+    let mut named: Vec<Scored> = ranked
+        .iter()
+        .skip(req.top.max(1))
+        .filter(|(s, _)| req.also.contains(&s.name))
+        .map(|(s, _)| s.clone())
+        .collect();
+    ranked.truncate(req.top.max(1));
     let (campaign_separation, calibration) = campaign_separation(cx);
-    for (s, _) in &mut ranked {
+    for s in ranked.iter_mut().map(|(s, _)| s).chain(&mut named) {
         cx.complete(s, calibration.inflation);
     }
     let best = ranked.first().map(|(_, p)| p.clone());
@@ -511,6 +541,7 @@ fn design_set(
         campaign_separation,
         calibration,
         ranked: ranked.into_iter().map(|(s, _)| s).collect(),
+        named,
         excluded,
         best,
     })

@@ -149,7 +149,7 @@ fn a_confounded_delay_gets_a_manoeuvre_whose_speed_changes_written_as_a_scenario
     );
     assert!(
         text.contains(
-            "no prediction to compare: the design ranks no manoeuvre of this run's file name"
+            "no prediction to compare: the family has no manoeuvre of this run's file name"
         ),
         "{text}"
     );
@@ -374,5 +374,111 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
     assert!(
         e.contains("`manoeuvre.t[2]` = 1: not after the time before it, 1 s"),
         "{e}"
+    );
+}
+
+#[test]
+fn a_run_of_any_designed_manoeuvre_is_compared_named_apart_from_the_programme_and_said_partial() {
+    let dir = tempfile::tempdir().unwrap();
+    let (camp, diag) = confounded(dir.path(), "2");
+    let all = dir.path().join("all");
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--top",
+        "40",
+        "--out",
+        all.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j = read_json(&all.join("design.json"));
+    let names: Vec<&str> = j["sets"][0]["ranked"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    // The family's sweep at 80 km/h would share the programme's run's
+    // name: it is renamed.
+    for r in fs::read_dir(camp.join("runs")).unwrap() {
+        let stem = r
+            .unwrap()
+            .path()
+            .file_stem()
+            .unwrap()
+            .to_string_lossy()
+            .into_owned();
+        assert!(!names.contains(&stem.as_str()), "{stem} in {names:?}");
+    }
+    assert!(names.contains(&"sweep_080kph_designed"), "{names:?}");
+    // The fifth best, driven and measured under a design of the best
+    // three, is still compared with its prediction.
+    let fifth = names[4];
+    let driven = dir.path().join("driven");
+    let scenario = all.join("scenarios").join(format!("{fifth}.toml"));
+    let o = run(&[
+        "synth",
+        "--effects",
+        "sensor_delay",
+        "--seed",
+        "2",
+        "--drive",
+        scenario.to_str().unwrap(),
+        "--out",
+        driven.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = driven.join("runs").join(format!("{fifth}.csv"));
+    let out = dir.path().join("m");
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--measured",
+        csv.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j = read_json(&out.join("design.json"));
+    assert_eq!(j["sets"][0]["ranked"].as_array().unwrap().len(), 3);
+    let p = &j["measured"][0]["predicted"];
+    assert_eq!(p["manoeuvre"], fifth, "{}", j["measured"][0]);
+    assert!(p["coverage"].as_f64().unwrap() > 0.99, "{p}");
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("warning"));
+    // The same run cut to its first half, without its sideslip column:
+    // both said.
+    let text = fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let header: Vec<&str> = lines[0].split(',').collect();
+    let beta = header.iter().position(|h| *h == "beta").unwrap();
+    let cut: Vec<String> = lines[..lines.len() / 2]
+        .iter()
+        .map(|l| {
+            let mut f: Vec<&str> = l.split(',').collect();
+            f.remove(beta);
+            f.join(",")
+        })
+        .collect();
+    let part_dir = dir.path().join("part");
+    fs::create_dir_all(&part_dir).unwrap();
+    let part = part_dir.join(format!("{fifth}.csv"));
+    fs::write(&part, cut.join("\n") + "\n").unwrap();
+    let o = run(&[
+        "design",
+        diag.to_str().unwrap(),
+        "--measured",
+        part.to_str().unwrap(),
+        "--out",
+        dir.path().join("m2").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("warning: the run covers 4") || text.contains("warning: the run covers 5"),
+        "{text}"
+    );
+    assert!(
+        text.contains("warning: the run does not log beta"),
+        "{text}"
     );
 }

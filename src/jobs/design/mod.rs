@@ -94,7 +94,17 @@ pub fn run(
         &inputs,
     )?;
     let lock = OutputLock::acquire(&out_dir)?;
-    let d = design(&c, &fitted, request)?;
+    // A run driven from any manoeuvre of the family, not only the best,
+    // is compared with its prediction.
+    let request = DesignRequest {
+        also: driven
+            .iter()
+            .filter_map(|p| p.file_stem())
+            .map(|s| s.to_string_lossy().into_owned())
+            .collect(),
+        ..request.clone()
+    };
+    let d = design(&c, &fitted, &request)?;
     let first: Vec<Vec<EffectKind>> = match &request.sets {
         Some(s) => s[0].clone(),
         None => fitted.confounded[0].iter().map(|e| vec![*e]).collect(),
@@ -105,7 +115,7 @@ pub fn run(
             let run = read_run(p)?;
             let mut m = measured(&c, &fitted, &first, &run)?;
             if let Some(set) = d.sets.first() {
-                compare(&mut m, set, &run);
+                compare(&mut m, set, &run, &d.logging);
             }
             Ok(m)
         })
@@ -317,12 +327,13 @@ impl DesignReport {
                     let a = crate::diagnose::pipeline::observed_channel(&p.members[0].1, ch);
                     let b = crate::diagnose::pipeline::observed_channel(obs, ch);
                     let d: Vec<f64> = a.iter().zip(b).map(|(x, y)| (y - x) / floors[i]).collect();
-                    diff.push(Series::line(
-                        &format!("{label} − {}: {}", p.members[0].0, ch.name()),
-                        &p.times,
-                        &d,
-                        1 + (diff.len() + k) % 6,
-                    ));
+                    // A colour per channel, a line style per look-alike:
+                    // no two series alike however many look-alikes.
+                    let style = [Style::Line, Style::Dashed, Style::Dotted][(k - 1).min(2)];
+                    diff.push(
+                        Series::line(&format!("{label}: {}", ch.name()), &p.times, &d, 4 + i)
+                            .styled(style),
+                    );
                 }
             }
             // One noise floor either way: where a difference leaves the

@@ -4,6 +4,10 @@
 
 use super::DesignReport;
 
+/// The share of a manoeuvre below which a driven run is said to be a
+/// part of it (a logger's last samples aside).
+const PARTIAL: f64 = 0.98;
+
 impl DesignReport {
     /// What the design found, in lines.
     pub fn summary(&self) -> Vec<String> {
@@ -78,8 +82,23 @@ impl DesignReport {
                         String::new()
                     }
                 ),
-                None => "  no prediction to compare: the design ranks no manoeuvre of this run's file name".into(),
+                None => "  no prediction to compare: the family has no manoeuvre of this run's file name".into(),
             });
+            if let Some(p) = &m.predicted {
+                if p.coverage < PARTIAL {
+                    out.push(format!(
+                        "  warning: the run covers {:.0} % of the manoeuvre's length: its separation is that of a part, the prediction that of the whole",
+                        100.0 * p.coverage
+                    ));
+                }
+                if !p.missing_channels.is_empty() {
+                    let names: Vec<&str> = p.missing_channels.iter().map(|c| c.name()).collect();
+                    out.push(format!(
+                        "  warning: the run does not log {}, which the prediction counts: its separation lacks their part",
+                        names.join(", ")
+                    ));
+                }
+            }
         }
         if !self.stale.is_empty() {
             out.push(format!(

@@ -1,5 +1,5 @@
-//! What a fresh-eyes check found a user trips on in `diagnose`'s outputs
-//! (issue 41), run as a user runs the tool: each test one finding, and
+//! What a fresh-eyes check found a user trips on in `diagnose`'s outputs,
+//! run as a user runs the tool: each test one finding, and
 //! what the terminal, `report.html` and `diagnosis.json` now say.
 
 use super::*;

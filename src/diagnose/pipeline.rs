@@ -436,7 +436,10 @@ fn run(
     // Before and after on held-out runs, per channel, window and regime.
     let (base_obs, after_obs) = before_after(&ctx, chosen);
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
-    let parts = parts_table(&c.runs, &ctx.runs, &base_obs, &base_obs, &floors);
+    // The gap's parts are the same pooled before values; their `after` is
+    // the verdict's (base replays again would write after = before, which
+    // says the verdict changed nothing).
+    let parts = shrinkage.clone();
     let base_no_tyre = bases
         .identification
         .as_ref()

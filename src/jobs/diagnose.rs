@@ -9,7 +9,7 @@
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
-use crate::diagnose::report::{words, Part, Verdict};
+use crate::diagnose::report::{words, Part, Reduction, Verdict};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
@@ -194,11 +194,10 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     for r in d.ranking.iter().chain(d.combinations.iter()) {
         let p: Vec<String> = r.parameters.iter().map(words::parameter).collect();
         out.push(format!(
-            "  {:<28} {:>8.3} {:>9.1} % {:>8.1} % {:>12.0}  {}",
+            "  {:<28} {:>8.3} {} {:>12.0}  {}",
             r.effect,
             r.heldout_error_after,
-            r.reduction_percent,
-            r.insample_reduction_percent,
+            reduction_cells(d.reductions(r)),
             r.delta_bic,
             p.join(", ")
         ));
@@ -245,6 +244,19 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         );
     }
     out
+}
+
+/// The held-out and in-sample reduction columns of a ranking row, by the
+/// page's rule ([`Diagnosis::reductions`]): within noise, one "not
+/// significant" across both, where a percentage would be a share of noise.
+fn reduction_cells(r: [Reduction; 2]) -> String {
+    match r {
+        [Reduction::Percent(h), Reduction::Percent(i)] => format!("{h:>9.1} % {i:>8.1} %"),
+        [Reduction::WithinNoise, Reduction::WithinNoise] => {
+            format!("{:>22}", words::reduction(Reduction::WithinNoise))
+        }
+        [h, i] => format!("{:>11} {:>10}", words::reduction(h), words::reduction(i)),
+    }
 }
 
 /// The single effects screened before their cross-validation, and why.

@@ -6,7 +6,7 @@
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
 use crate::diagnose::effects::joined;
-use crate::diagnose::report::{words, ChannelChange, Part, Ranked, Shrinkage};
+use crate::diagnose::report::{words, ChannelChange, Part, Ranked, Reduction, Shrinkage};
 use crate::diagnose::Diagnosis;
 use crate::error::Error;
 use crate::report::html::{Cell, Page};
@@ -15,10 +15,6 @@ use std::path::Path;
 
 /// Cleaning lines shown in full before the rest is counted.
 const CLEANING_LINES: usize = 40;
-
-/// What a ranking's reduction cell says where the campaign has no
-/// significant gap to reduce.
-const NOT_SIGNIFICANT: &str = "not significant";
 
 /// What the page says of the campaign beside the diagnosis.
 #[derive(Debug, Clone, Copy)]
@@ -218,18 +214,16 @@ fn same_effects(r: &Ranked, effects: &[crate::diagnose::effects::EffectKind]) ->
 
 fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> {
     let params: Vec<String> = r.parameters.iter().map(words::parameter).collect();
-    let reduction = |x: f64| {
-        if d.gap.significant {
-            Cell::Number(format!("{x:.1}"))
-        } else {
-            Cell::Text(NOT_SIGNIFICANT.into())
-        }
-    };
+    // The terminal's rule ([`Diagnosis::reductions`]), so the two agree.
+    let [held_out, in_sample] = d.reductions(r).map(|x| match x {
+        Reduction::WithinNoise => Cell::Text(words::reduction(x)),
+        Reduction::Percent(_) => Cell::Number(words::reduction(x)),
+    });
     vec![
         Cell::Text(r.effect.clone()),
         Cell::Number(format!("{:.3}", r.heldout_error_after)),
-        reduction(r.reduction_percent),
-        reduction(r.insample_reduction_percent),
+        held_out,
+        in_sample,
         Cell::Number(format!("{:.0}", r.delta_bic)),
         Cell::Number(format!("{} of {}", r.folds_converged, r.folds)),
         Cell::Text(params.join("; ")),

@@ -249,6 +249,7 @@ mod scenarios;
 mod shards;
 mod sweeps;
 mod trips;
+mod trips_diagnose;
 mod trips_fresh;
 mod trips_identify;
 mod trips_inputs;

@@ -11,7 +11,7 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
     Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
 };
-use crate::diagnose::report::{words, BaseReport, ParameterValue};
+use crate::diagnose::report::{words, BaseReport, ChannelChange, ParameterValue, Shrinkage};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::ser::{SerializeMap, Serializer};
@@ -177,6 +177,51 @@ impl Serialize for BaseReport {
             rear: &self.rear,
             rig_grouping: &self.rig_grouping,
             axles: self.axles.as_ref().map(axles),
+        }
+        .serialize(s)
+    }
+}
+
+/// What the verdict's effects did to a part's gap, as `shrinkage[].change`.
+#[derive(Serialize)]
+#[serde(rename_all = "snake_case")]
+enum ChangeKind {
+    WithinNoise,
+    Changed,
+    Worsened,
+}
+
+#[derive(Serialize)]
+struct ShrinkageJson<'a> {
+    channel: crate::diagnose::model::channels::Channel,
+    part: &'a crate::diagnose::report::Part,
+    samples: usize,
+    before: f64,
+    after: f64,
+    noise_floor: f64,
+    reduction_percent: Option<f64>,
+    change: ChangeKind,
+}
+
+/// A part's before and after with the rule the terminal and the page say
+/// it by ([`Shrinkage::change`]): within noise, the share of the gap is
+/// `null`, since a share of noise (−73 %, −138 %) is no change at all.
+impl Serialize for Shrinkage {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (reduction_percent, change) = match self.change() {
+            ChannelChange::WithinNoise => (None, ChangeKind::WithinNoise),
+            ChannelChange::Changed(_) => (Some(self.reduction_percent), ChangeKind::Changed),
+            ChannelChange::Worsened(_) => (Some(self.reduction_percent), ChangeKind::Worsened),
+        };
+        ShrinkageJson {
+            channel: self.channel,
+            part: &self.part,
+            samples: self.samples,
+            before: self.before,
+            after: self.after,
+            noise_floor: self.noise_floor,
+            reduction_percent,
+            change,
         }
         .serialize(s)
     }

@@ -28,7 +28,7 @@ pub use crate::diagnose::report::outcome::{
     Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
-pub use crate::diagnose::report::values::{ParameterValue, Shrinkage, LIMIT_RESOLUTION};
+pub use crate::diagnose::report::values::{ParameterValue, Reduction, Shrinkage, LIMIT_RESOLUTION};
 use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
@@ -170,7 +170,9 @@ pub struct GapReport {
     pub noise_level: f64,
     /// Noise floors.
     pub noise: Vec<ChannelNoise>,
-    /// Per channel, window and regime over all runs (base model replays).
+    /// Per channel, window and regime over all runs: the base model's
+    /// held-out replays before, the verdict's after (the same rows as
+    /// [`Diagnosis::shrinkage`]; after = before without a verdict).
     pub parts: Vec<Shrinkage>,
     /// Per run.
     pub runs: Vec<RunGap>,
@@ -259,7 +261,21 @@ impl Diagnosis {
         self.ranking
             .iter()
             .chain(&self.combinations)
-            .find(|r| !effects.is_empty() && r.effects == effects)
+            // As sets: a combination's row is the set, in whichever order
+            // it was built.
+            .find(|r| {
+                !effects.is_empty()
+                    && r.effects.len() == effects.len()
+                    && effects.iter().all(|e| r.effects.contains(e))
+            })
+    }
+
+    /// How the report says candidate `r`'s held-out and in-sample
+    /// reductions: by [`Reduction::of`] against the campaign's gap, the
+    /// one rule of the terminal and the page.
+    pub fn reductions(&self, r: &Ranked) -> [Reduction; 2] {
+        let of = |p| Reduction::of(p, self.gap.significant);
+        [of(r.reduction_percent), of(r.insample_reduction_percent)]
     }
 }
 

@@ -3,6 +3,8 @@
 //! held-out gap in one part of the data before and after the verdict's
 //! effects ([`Shrinkage`]). In their own file so that the typed outcome
 //! (`outcome.rs`) reads them without reading the report that holds it.
+//! Beside them the one rule by which the terminal and the page say a
+//! candidate's reduction of the combined error ([`Reduction`]).
 //! Values in the parameter's own unit; RMS values in the channel's unit
 //! (rad/s, m/s², rad).
 
@@ -80,8 +82,35 @@ impl ParameterValue {
     }
 }
 
-/// Before/after on held-out runs for one part of the data.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// A candidate's reduction of the campaign's combined held-out error as
+/// the report says it: a share of a gap within noise is noise, neither a
+/// reduction nor a worsening, so it is not given as a percentage.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reduction {
+    /// The campaign's gap is within noise (`GapReport::significant` is
+    /// false): there is nothing above noise to take a share of.
+    WithinNoise,
+    /// Share of the gap above noise removed, % (negative: added).
+    Percent(f64),
+}
+
+impl Reduction {
+    /// A reduction of `percent` of a campaign's gap that is significant
+    /// (`gap_significant`) or not. The terminal and the page both call
+    /// this, so that they cannot disagree on a row.
+    pub fn of(percent: f64, gap_significant: bool) -> Self {
+        if gap_significant {
+            Self::Percent(percent)
+        } else {
+            Self::WithinNoise
+        }
+    }
+}
+
+/// Before/after on held-out runs for one part of the data (written with
+/// its [`crate::diagnose::report::ChannelChange`], `change`, and no
+/// percentage where that is within noise).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Shrinkage {
     /// Channel.
     pub channel: Channel,

@@ -20,7 +20,7 @@ use crate::diagnose::report::outcome::{
     SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{
-    ChannelNoise, Confounded, ParameterValue, Part, ScaleSource, Shrinkage,
+    ChannelNoise, Confounded, ParameterValue, Part, Reduction, ScaleSource, Shrinkage,
 };
 
 impl Verdict {
@@ -199,6 +199,15 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
 /// it is said.
 pub fn within_noise() -> String {
     format!("not significant (within {SIGNIFICANT_NOISE_FLOORS} noise floors)")
+}
+
+/// A candidate's reduction of the combined error ([`Reduction`]), the
+/// number to one decimal (%), or why none is given.
+pub fn reduction(r: Reduction) -> String {
+    match r {
+        Reduction::WithinNoise => "not significant".into(),
+        Reduction::Percent(p) => format!("{p:.1}"),
+    }
 }
 
 /// One channel before and after the verdict's effects on held-out runs

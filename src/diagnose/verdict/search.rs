@@ -361,11 +361,28 @@ pub(crate) fn search(
     } else {
         out.ended = Some(base.refused(&current, false, None));
     }
-    let mut seen = std::collections::HashSet::new();
-    out.combinations.retain(|r| seen.insert(r.effect.clone()));
+    let chosen = out.chosen.as_ref().map(|c| c.kinds.as_slice());
+    one_row_per_set(&mut out.combinations, chosen);
     out.combinations
         .sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
     out
+}
+
+/// Keeps one row per set of effects: the greedy searches from the best
+/// single and from its look-alikes try a pair in both orders
+/// (`steer_path+sensor_delay`, `sensor_delay+steer_path`), and a set is one
+/// candidate whatever the order it was built in. The row kept is the
+/// chosen set's own (its order, the numbers the verdict states) where it
+/// is one of them, else the first tried.
+fn one_row_per_set(rows: &mut Vec<Ranked>, chosen: Option<&[EffectKind]>) {
+    // Stable: the chosen set's row moves ahead of its other orders only.
+    rows.sort_by_key(|r| Some(r.effects.as_slice()) != chosen);
+    let mut seen = std::collections::HashSet::new();
+    rows.retain(|r| {
+        let mut set = r.effects.clone();
+        set.sort();
+        seen.insert(set)
+    });
 }
 
 /// Look-alikes of the first single (`first`, ranked as `r`): the other

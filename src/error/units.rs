@@ -80,6 +80,18 @@ pub enum UnitSlip {
         /// The largest speed accepted, m/s.
         limit: f64,
     },
+    /// A body roll or road bank column whose size says degrees.
+    #[error("column `{column}`: {} rad is beyond ±{:.0}° and 1 % of the run is beyond {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so in the campaign: `degrees = [\"{column}\"]` under [runs]", Num(*value), limit.to_degrees(), Num(*p99))]
+    RollInDegrees {
+        /// The column (`roll`, `bank`).
+        column: &'static str,
+        /// The first value beyond the limit, as read.
+        value: f64,
+        /// The 99th percentile of |value|.
+        p99: f64,
+        /// The largest accepted, rad.
+        limit: f64,
+    },
     /// A rig force or moment no tyre carries (a value scaled by a wrong
     /// factor, or an overflow of the logger).
     #[error("column `{column}`: {} {unit} is beyond ±{} {unit}, which no tyre on a rig carries: `{column}` is in {unit} (FORMATS.md); is the column scaled by a wrong factor?", Num(*value), Num(*limit))]

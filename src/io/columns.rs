@@ -24,6 +24,13 @@ impl Columns {
     pub fn take(&mut self, name: &str) -> Vec<f64> {
         self.data.remove(name).unwrap_or_default()
     }
+    /// Multiplies a column, where read, by `factor` (a unit the file
+    /// declares elsewhere, converted before any check).
+    pub(crate) fn scale(&mut self, name: &str, factor: f64) {
+        if let Some(v) = self.data.get_mut(name) {
+            v.iter_mut().for_each(|x| *x *= factor);
+        }
+    }
     /// An optional column.
     pub(crate) fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
         self.data.remove(name)

@@ -21,6 +21,6 @@ mod toml_file;
 
 pub use crate::measured::MeasuredRun;
 pub use columns::{read_columns, Columns};
-pub use run::read_run;
+pub use run::{read_run, read_run_with, AngleColumn};
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub use toml_file::{load_toml, param_error, TomlSource};

@@ -11,13 +11,57 @@ use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
 use std::path::Path;
 
+/// An angle (or angular rate) column of a run that a logger may write in
+/// degrees (deg/s): a campaign names those of its files ([`read_run_with`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AngleColumn {
+    /// Road-wheel steer.
+    Steer,
+    /// Yaw rate (deg/s).
+    YawRate,
+    /// Sideslip.
+    Beta,
+    /// Body roll.
+    Roll,
+    /// Road bank.
+    Bank,
+}
+
+impl AngleColumn {
+    /// The column's name in a run file.
+    pub fn name(self) -> &'static str {
+        match self {
+            AngleColumn::Steer => "steer",
+            AngleColumn::YawRate => "yaw_rate",
+            AngleColumn::Beta => "beta",
+            AngleColumn::Roll => "roll",
+            AngleColumn::Bank => "bank",
+        }
+    }
+}
+
+/// The largest body roll or road bank a run in radians holds, rad (1 rad,
+/// 57°: steeper than any banking, far beyond any car's body roll); a
+/// larger 99th percentile is a column in degrees.
+pub const MAX_ROLL_OR_BANK: f64 = 1.0;
+
 /// Reads and checks a measured run.
 pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
+    read_run_with(path, &[])
+}
+
+/// Reads and checks a measured run whose columns `degrees` are in degrees
+/// (deg/s for the yaw rate), converted to radians before any check.
+pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun, InputError> {
     let mut c = read_columns(
         path,
         &["t", "speed", "steer", "yaw_rate"],
         &["ay", "beta", "roll", "bank", "ax"],
     )?;
+    for a in degrees {
+        c.scale(a.name(), std::f64::consts::PI / 180.0);
+    }
     let t = c.take("t");
     for i in 1..t.len() {
         if t[i] <= t[i - 1] {
@@ -64,6 +108,12 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     if let Some(ay) = &ay {
         check_ay(path, &c, &speed, &yaw_rate, ay)?;
     }
+    let (roll, bank) = (c.take_optional("roll"), c.take_optional("bank"));
+    for (column, v) in [("roll", &roll), ("bank", &bank)] {
+        if let Some(v) = v {
+            check_roll_or_bank(path, &c, column, v)?;
+        }
+    }
     Ok(MeasuredRun {
         path: path.to_path_buf(),
         t,
@@ -72,9 +122,62 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
         yaw_rate,
         ay,
         beta: c.take_optional("beta"),
-        roll: c.take_optional("roll"),
-        bank: c.take_optional("bank"),
+        roll,
+        bank,
         ax: c.take_optional("ax"),
         masked: Vec::new(),
     })
+}
+
+/// Refuses a roll or bank column whose 99th percentile of |value| is beyond
+/// [`MAX_ROLL_OR_BANK`]: in degrees, it would read as a car on its side.
+/// Judged on the percentile so that a logger's spike does not refuse it.
+fn check_roll_or_bank(
+    path: &Path,
+    c: &super::columns::Columns,
+    column: &'static str,
+    v: &[f64],
+) -> Result<(), InputError> {
+    let mut size: Vec<f64> = v.iter().map(|x| x.abs()).collect();
+    size.sort_by(f64::total_cmp);
+    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
+    if p99 <= MAX_ROLL_OR_BANK {
+        return Ok(());
+    }
+    let i = v
+        .iter()
+        .position(|x| x.abs() > MAX_ROLL_OR_BANK)
+        .unwrap_or(0);
+    Err(c.error_at(
+        path,
+        i,
+        column,
+        crate::error::UnitSlip::RollInDegrees {
+            column,
+            value: v[i],
+            p99,
+            limit: MAX_ROLL_OR_BANK,
+        }
+        .into(),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_column_declared_in_degrees_is_read_in_radians_and_then_passes_the_checks() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("r.csv");
+        let mut s = String::from("t,speed,steer,yaw_rate,roll\n");
+        for i in 0..50 {
+            s += &format!("{},20,0,0,2.0\n", f64::from(i) * 0.01);
+        }
+        std::fs::write(&path, s).unwrap();
+        assert!(read_run(&path).is_err());
+        let run = read_run_with(&path, &[AngleColumn::Roll]).unwrap();
+        let roll = run.roll.unwrap();
+        assert!((roll[7] - 2f64.to_radians()).abs() < 1e-15, "{}", roll[7]);
+    }
 }

@@ -704,7 +704,7 @@ fn a_verdict_that_leaves_a_channel_worse_says_so() {
     let text = fs::read_to_string(&log).unwrap();
     let first: String = text.lines().take(1501).map(|l| format!("{l}\n")).collect();
     let campaign = format!(
-        "name = \"putnam60\"\n{}\n[tyres]\nfront = \"front.toml\"\nrear = \"rear.toml\"\n\n[runs]\nfiles = [\"putnam60.csv\"]\nsegment = 20.0\n\n[diagnose]\nstep = 0.02\neffects = [\"aero_load\", \"sensor_delay\"]\n",
+        "name = \"putnam60\"\n{}\n[tyres]\nfront = \"front.toml\"\nrear = \"rear.toml\"\n\n[runs]\nfiles = [\"putnam60.csv\"]\nsegment = 20.0\ndegrees = [\"roll\"]\n\n[diagnose]\nstep = 0.02\neffects = [\"aero_load\", \"sensor_delay\"]\n",
         "[vehicle]\nmass = 790.0\nyaw_inertia = 1000.0\na = 1.248\nb = 1.7328\ntrack_front = 1.6\ntrack_rear = 1.55\ncg_height = 0.3\n"
     );
     let axle = |b: f64| format!("model = \"magic-simple\"\nb = {b}\nc = 1.3\nd = 3.5\n");

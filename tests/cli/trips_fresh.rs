@@ -283,3 +283,25 @@ fn a_magic_formula_mode_for_a_toml_tyre_is_refused_with_why() {
         "{e}"
     );
 }
+
+/// Putnam's `roll` is logged in degrees: 2° read as radians is a car at
+/// 115° of roll. Refused at its cell, with the campaign key that says so.
+#[test]
+fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it() {
+    let mut s = String::from("t,speed,steer,yaw_rate,roll\n");
+    for i in 0..400 {
+        let t = f64::from(i) * 0.01;
+        let steer = if t > 1.0 { 0.02 } else { 0.0 };
+        s += &format!("{t:.2},20,{steer},{},{}\n", steer * 0.4, 1.5 + steer * 20.0);
+    }
+    let dir = scratch(&[("deg.csv", &s)]);
+    let o = run_in(dir.path(), &["metrics", "deg.csv"]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±57°")
+            && e.contains("is the column in degrees?")
+            && e.contains("`degrees = [\"roll\"]` under [runs]"),
+        "{e}"
+    );
+}

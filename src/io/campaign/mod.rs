@@ -125,7 +125,10 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     )?;
     let (runs, mut notes, cleaning, calibration) = read_runs(
         &files,
-        f.runs.as_ref().and_then(|r| r.segment),
+        (
+            f.runs.as_ref().and_then(|r| r.segment),
+            f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]),
+        ),
         f.diagnose.min_speed,
         f.vehicle.wheelbase(),
         &mut inputs,

@@ -7,8 +7,8 @@
 
 use crate::error::{InputError, InputProblem};
 use crate::io::paths::beside;
-use crate::io::read_run;
 use crate::io::toml_file::TomlSource;
+use crate::io::{read_run_with, AngleColumn};
 use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
     clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
@@ -30,6 +30,10 @@ pub struct RunSpec {
     pub dir: Option<PathBuf>,
     /// Cut every run into pieces of this length, s (long logs).
     pub segment: Option<f64>,
+    /// Angle columns the files hold in degrees (deg/s for the yaw rate),
+    /// converted to radians on reading: a logger's unit, stated once.
+    #[serde(default)]
+    pub degrees: Vec<AngleColumn>,
 }
 
 /// An error about a whole file (the campaign's, a run's).
@@ -148,7 +152,7 @@ pub(super) type ReadRuns = (
 /// asked.
 pub(super) fn read_runs(
     files: &[PathBuf],
-    segment: Option<f64>,
+    (segment, degrees): (Option<f64>, &[AngleColumn]),
     min_speed: f64,
     wheelbase: f64,
     inputs: &mut Vec<PathBuf>,
@@ -159,7 +163,7 @@ pub(super) fn read_runs(
     let clean = CleanSettings::diagnosis(min_speed);
     let mut cleaning = CleaningReport::new(min_speed);
     for p in files {
-        let run = read_run(p)?;
+        let run = read_run_with(p, degrees)?;
         check_length(&run)?;
         check_live_channels(&run)?;
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed)?);

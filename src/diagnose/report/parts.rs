@@ -91,13 +91,20 @@ pub enum Part {
 
 impl Part {
     /// Its label in reports: `all`, the window's name, `|ay| 2–4 m/s²`,
-    /// `speed 20–30 m/s`.
+    /// `speed 20–30 m/s`, and an open band `|ay| ≥ 8 m/s²` (not `8–inf`).
     pub fn label(&self) -> String {
+        let band = |lo: f64, hi: f64| {
+            if hi.is_finite() {
+                format!("{lo}–{hi}")
+            } else {
+                format!("≥ {lo}")
+            }
+        };
         match self {
             Part::All => "all".into(),
             Part::Window(w) => w.label().into(),
-            Part::Ay { lo, hi } => format!("|ay| {lo}–{hi} m/s²"),
-            Part::Speed { lo, hi } => format!("speed {lo}–{hi} m/s"),
+            Part::Ay { lo, hi } => format!("|ay| {} m/s²", band(*lo, *hi)),
+            Part::Speed { lo, hi } => format!("speed {} m/s", band(*lo, *hi)),
         }
     }
 
@@ -243,6 +250,7 @@ mod tests {
             }
         );
         assert_eq!(parts[8].position(), Some((PartAxis::Ay, 9.0)));
+        assert_eq!(parts[8].label(), "|ay| ≥ 8 m/s²");
         assert_eq!(parts[9], Part::Speed { lo: 0.0, hi: 10.0 });
         assert_eq!(parts[9].label(), "speed 0–10 m/s");
         assert_eq!(parts[4].label(), "|ay| 0–2 m/s²");

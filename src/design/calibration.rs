@@ -12,9 +12,12 @@ use serde::Serialize;
 /// How the campaign's own runs measure the separation their replays
 /// predict, for the reference and its weakest look-alike. On a run where
 /// the reference is the car and the residuals are noise of the stated
-/// floors, `χ²_B − χ²_A` is `D² ± 2D` ([`separation`]); a model-form error
-/// the candidates share (a tyre the base model lacks) adds a scatter
-/// along the candidates' difference that the floors do not hold. Each
+/// floors, `χ²_B − χ²_A` is `D² ± 2D` ([`super::separation`]); a
+/// model-form error the candidates share (a tyre the base model lacks)
+/// adds a scatter along the candidates' difference that the floors do not
+/// hold, and runs that favour the look-alike show as scatter too: a
+/// prediction assumes the reference is the car, and this measures how far
+/// the campaign's runs bear that out. Each
 /// run's `z = (χ²_B − χ²_A − D²)/(2D)`, over the runs that separate the
 /// pair by at least [`CALIBRATING_D`], measures it: their RMS is 1 on
 /// such runs of noise alone. Their replays are the candidates' all-run

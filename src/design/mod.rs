@@ -552,18 +552,13 @@ fn design_set(
 /// runs measure it ([`Calibration`]).
 fn campaign_separation(cx: &SetContext) -> (f64, Calibration) {
     let floors = &cx.fitted.noise_floors;
-    let scales = floors.map(|f| if f > 0.0 { f } else { 1.0 });
     // Each run's reference replay once, against every look-alike's: per
     // look-alike, (D², χ²_B − χ²_A) on the run.
     let per_run: Vec<Vec<(f64, f64)>> = cx
         .runs
         .par_iter()
         .map(|r| {
-            let mut buf = vec![0.0; r.count()];
-            let mut chi = |obs: &Observed| {
-                r.write_residuals(obs, &scales, &mut buf);
-                buf.iter().map(|x| x * x).sum::<f64>()
-            };
+            let chi = |obs: &Observed| separation::chi_square_of(r, obs, floors);
             let reference = r.observe(&cx.models[0]);
             let chi_a = chi(&reference);
             cx.models[1..]

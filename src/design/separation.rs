@@ -112,9 +112,14 @@ pub fn separation(a: &Observed, b: &Observed, floors: &[f64; 3], logging: &Loggi
 /// The sum of squared residuals of `model` on `run` in units of the noise
 /// floors, over the measured channels.
 pub fn chi_square(run: &Prepared, model: &Augmented, floors: &[f64; 3]) -> f64 {
+    chi_square_of(run, &run.observe(model), floors)
+}
+
+/// [`chi_square`] of a replay already made (`obs`, of `run`).
+pub(crate) fn chi_square_of(run: &Prepared, obs: &Observed, floors: &[f64; 3]) -> f64 {
     let scales = floors.map(|f| if f > 0.0 { f } else { 1.0 });
     let mut r = vec![0.0; run.count()];
-    run.write_residuals(&run.observe(model), &scales, &mut r);
+    run.write_residuals(obs, &scales, &mut r);
     r.iter().map(|x| x * x).sum()
 }
 

@@ -5,9 +5,10 @@
 //! column ([`super::run_units`]).
 
 use super::columns::read_columns;
-use super::run_units::{check_ay, check_speed, check_time_step, check_yaw_rate};
+use super::run_units::{
+    beyond, check_ay, check_roll_or_bank, check_speed, check_time_step, check_yaw_rate,
+};
 use crate::error::{InputError, InputProblem};
-use crate::measured::clean::quantile;
 use crate::measured::MeasuredRun;
 use std::path::Path;
 
@@ -40,11 +41,6 @@ impl AngleColumn {
         }
     }
 }
-
-/// The largest body roll or road bank a run in radians holds, rad (1 rad,
-/// 57°: steeper than any banking, far beyond any car's body roll); a
-/// larger 99th percentile is a column in degrees.
-pub const MAX_ROLL_OR_BANK: f64 = 1.0;
 
 /// Reads and checks a measured run.
 pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
@@ -84,14 +80,7 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
     // on the 99th percentile so that a logger's spike (repaired later) does
     // not refuse the file.
     let steer = c.take("steer");
-    let mut size: Vec<f64> = steer.iter().map(|d| d.abs()).collect();
-    size.sort_by(f64::total_cmp);
-    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
-    if p99 > std::f64::consts::FRAC_PI_2 {
-        let i = steer
-            .iter()
-            .position(|d| d.abs() > std::f64::consts::FRAC_PI_2)
-            .unwrap_or(0);
+    if let Some((i, p99)) = beyond(&steer, std::f64::consts::FRAC_PI_2) {
         return Err(c.error_at(
             path,
             i,
@@ -127,39 +116,6 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
         ax: c.take_optional("ax"),
         masked: Vec::new(),
     })
-}
-
-/// Refuses a roll or bank column whose 99th percentile of |value| is beyond
-/// [`MAX_ROLL_OR_BANK`]: in degrees, it would read as a car on its side.
-/// Judged on the percentile so that a logger's spike does not refuse it.
-fn check_roll_or_bank(
-    path: &Path,
-    c: &super::columns::Columns,
-    column: &'static str,
-    v: &[f64],
-) -> Result<(), InputError> {
-    let mut size: Vec<f64> = v.iter().map(|x| x.abs()).collect();
-    size.sort_by(f64::total_cmp);
-    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
-    if p99 <= MAX_ROLL_OR_BANK {
-        return Ok(());
-    }
-    let i = v
-        .iter()
-        .position(|x| x.abs() > MAX_ROLL_OR_BANK)
-        .unwrap_or(0);
-    Err(c.error_at(
-        path,
-        i,
-        column,
-        crate::error::UnitSlip::RollInDegrees {
-            column,
-            value: v[i],
-            p99,
-            limit: MAX_ROLL_OR_BANK,
-        }
-        .into(),
-    ))
 }
 
 #[cfg(test)]

@@ -27,6 +27,11 @@ pub const MAX_TIME_STEP: f64 = 0.2;
 /// beyond it.
 pub const MAX_SPEED: f64 = 150.0;
 
+/// The largest body roll or road bank a run in radians holds, rad (1 rad,
+/// 57°: steeper than any banking, far beyond any car's body roll); a
+/// larger 99th percentile is a column in degrees.
+pub const MAX_ROLL_OR_BANK: f64 = 1.0;
+
 /// A speed no logger's glitch of a car reads, m/s (30 times the land
 /// speed record): one such sample refuses the run, where a spike below it
 /// is repaired later by the cleaning.
@@ -56,11 +61,16 @@ const MOVING: f64 = 5.0;
 
 /// The 99th percentile of |x| and the first row beyond `limit`, when that
 /// percentile is beyond it.
-fn beyond(x: &[f64], limit: f64) -> Option<(usize, f64)> {
+pub(super) fn beyond(x: &[f64], limit: f64) -> Option<(usize, f64)> {
+    let p99 = p99(x)?;
+    (p99 > limit).then(|| (x.iter().position(|v| v.abs() > limit).unwrap_or(0), p99))
+}
+
+/// The 99th percentile of |x| (None: no samples).
+fn p99(x: &[f64]) -> Option<f64> {
     let mut size: Vec<f64> = x.iter().map(|v| v.abs()).collect();
     size.sort_by(f64::total_cmp);
-    let p99 = quantile(&size, 0.99)?;
-    (p99 > limit).then(|| (x.iter().position(|v| v.abs() > limit).unwrap_or(0), p99))
+    quantile(&size, 0.99)
 }
 
 /// Refuses a yaw rate beyond [`MAX_YAW_RATE`] over more than 1 % of the
@@ -149,13 +159,12 @@ pub(super) fn check_time_step(path: &Path, c: &Columns, t: &[f64]) -> Result<(),
 /// speed in km/h), or any sample beyond any vehicle's (a value such as
 /// 1e308 that no arithmetic on the run survives).
 pub(super) fn check_speed(path: &Path, c: &Columns, u: &[f64]) -> Result<(), InputError> {
-    let mut size: Vec<f64> = u.iter().map(|v| v.abs()).collect();
-    size.sort_by(f64::total_cmp);
-    let p99 = quantile(&size, 0.99).unwrap_or(0.0);
-    let absurd = u.iter().position(|v| v.abs() > ABSURD_SPEED);
-    let found = absurd.or_else(|| beyond(u, MAX_SPEED).map(|(i, _)| i));
+    let found = match u.iter().position(|v| v.abs() > ABSURD_SPEED) {
+        Some(i) => Some((i, p99(u).unwrap_or(0.0))),
+        None => beyond(u, MAX_SPEED),
+    };
     match found {
-        Some(i) => Err(c.error_at(
+        Some((i, p99)) => Err(c.error_at(
             path,
             i,
             "speed",
@@ -168,4 +177,24 @@ pub(super) fn check_speed(path: &Path, c: &Columns, u: &[f64]) -> Result<(), Inp
         )),
         None => Ok(()),
     }
+}
+
+/// Refuses a roll or bank column whose 99th percentile of |value| is beyond
+/// [`MAX_ROLL_OR_BANK`]: in degrees, it would read as a car on its side.
+pub(super) fn check_roll_or_bank(
+    path: &Path,
+    c: &Columns,
+    column: &'static str,
+    v: &[f64],
+) -> Result<(), InputError> {
+    let Some((i, p99)) = beyond(v, MAX_ROLL_OR_BANK) else {
+        return Ok(());
+    };
+    let slip = UnitSlip::RollInDegrees {
+        column,
+        value: v[i],
+        p99,
+        limit: MAX_ROLL_OR_BANK,
+    };
+    Err(c.error_at(path, i, column, slip.into()))
 }

@@ -227,6 +227,7 @@ pub(crate) fn simulate_err(dir: &Path) -> String {
     fails_cleanly("simulate", &dir.join("scenario.toml"), dir)
 }
 
+mod analogue_verdicts;
 mod analogues;
 mod calibration;
 mod cross_validation;

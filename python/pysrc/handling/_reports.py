@@ -332,8 +332,8 @@ class Verdict:
     statement: str
     """The verdict in words."""
     warnings: List[str]
-    """What the verdict's effects leave worse on held-out runs, and a base
-    that is no tyre alone, in words."""
+    """What the verdict's effects leave worse on held-out runs, and
+    parameters on their search bound, in words."""
     heldout_error: float
     """Held-out combined error J of the base model."""
     noise_level: float
@@ -347,11 +347,20 @@ class Verdict:
     warning_details: List[Dict[str, Any]] = field(default_factory=list)
     """The warnings typed (``kind``: ``channel_worsened`` with ``channel``,
     ``before``, ``after``, ``noise_floor``, ``added_percent``; or
-    ``base_no_tyre`` with ``no_tyre``)."""
+    ``on_search_bound`` with ``parameters``)."""
     threshold: Optional[float] = None
     """The multiple of the noise level a gap must exceed (no significant gap)."""
     no_tyre: List[Dict[str, Any]] = field(default_factory=list)
     """Why the base model is no tyre (not identifiable)."""
+    evidence: List[Dict[str, Any]] = field(default_factory=list)
+    """What the runs show beside the fit (explained; ``kind``:
+    ``calibration`` with ``channel``, ``fitted``, ``measured``,
+    ``measured_on`` and ``agrees``; or ``axles_restored`` with
+    ``no_tyre``)."""
+    closest: List[Dict[str, Any]] = field(default_factory=list)
+    """The candidates whose jointly fitted axles are a tyre, best held-out
+    first, each with ``effects`` and ``reduction_percent`` (not
+    identifiable)."""
     refused: Optional[Refused] = None
     """The best single candidate and why it was refused (outside the library)."""
     threshold_percent: Optional[float] = None

@@ -9,7 +9,7 @@ use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
 use crate::diagnose::base::TyreSource;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
-    Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
+    Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::report::{words, BaseReport, ChannelChange, ParameterValue, Shrinkage};
 use crate::identify::grouping::GroupingReport;
@@ -34,6 +34,7 @@ enum Details<'a> {
     NotIdentifiable {
         no_tyre: &'a [NoTyre],
         threshold_percent: f64,
+        closest: &'a [Closest],
     },
     OutsideLibrary {
         refused: Option<&'a Refused>,
@@ -81,6 +82,7 @@ impl Serialize for Verdict {
                 Details::NotIdentifiable {
                     no_tyre: &n.no_tyre,
                     threshold_percent: n.threshold_percent,
+                    closest: &n.closest,
                 },
             ),
             Verdict::OutsideLibrary(o) => (

@@ -23,7 +23,7 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
-    above_noise, CalibrationSource, ChannelChange, ChannelWorsened, Evidence, Explained,
+    above_noise, CalibrationSource, ChannelChange, ChannelWorsened, Closest, Evidence, Explained,
     GapFinding, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
     Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
 };

@@ -122,7 +122,7 @@ pub struct Explained {
     pub noise_level: f64,
     /// Share of the held-out gap above noise removed, %.
     pub reduction_percent: f64,
-    /// What the verdict's effects leave worse, and a base that is no tyre.
+    /// What the verdict's effects leave worse, and parameters on a bound.
     pub warnings: Vec<VerdictWarning>,
     /// What the runs show beside the fit that bears on it.
     pub evidence: Vec<Evidence>,
@@ -149,6 +149,13 @@ pub enum Evidence {
         measured_std_error: f64,
         /// Within three combined standard errors.
         agrees: bool,
+    },
+    /// The base model alone is no tyre; fitted with the verdict's effects
+    /// the axles are one: the effects account for what the base's axles
+    /// were bent to (Issue 39's item 3).
+    AxlesRestored {
+        /// Why the base alone is not.
+        no_tyre: Vec<NoTyre>,
     },
 }
 
@@ -196,6 +203,20 @@ pub struct NotIdentifiable {
     pub no_tyre: Vec<NoTyre>,
     /// The share of the gap a candidate must remove, %.
     pub threshold_percent: f64,
+    /// The candidates (singles and sets) whose axles, fitted jointly with
+    /// them, are a tyre, best held-out first: what the base's fingerprint
+    /// may come from, though none removes enough of the gap.
+    pub closest: Vec<Closest>,
+}
+
+/// A candidate whose jointly fitted axles are a tyre, and the share of the
+/// held-out gap above noise it removes (%).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Closest {
+    /// Its effects.
+    pub effects: Vec<EffectKind>,
+    /// Share of the held-out gap above noise removed, %.
+    pub reduction_percent: f64,
 }
 
 /// A gap no candidate of the library is accepted for.
@@ -261,12 +282,6 @@ pub enum Refusal {
 pub enum VerdictWarning {
     /// A channel the verdict's effects leave worse on held-out runs.
     ChannelWorsened(ChannelWorsened),
-    /// The base model alone is no tyre; with the verdict's effects the
-    /// axles are one.
-    BaseNoTyre {
-        /// Why the base alone is not.
-        no_tyre: Vec<NoTyre>,
-    },
     /// Parameters of the verdict's effects that lie on the end of their
     /// search range: the data would take them further, so their values
     /// are bounds, not measurements of the effects' size.

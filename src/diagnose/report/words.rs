@@ -63,8 +63,28 @@ pub fn statement(v: &Verdict) -> String {
 }
 
 fn not_identifiable(n: &NotIdentifiable) -> String {
+    let closest = if n.closest.is_empty() {
+        "no candidate fitted with it makes the axles a tyre: what bent them is outside the library"
+            .to_string()
+    } else {
+        let each: Vec<String> = n
+            .closest
+            .iter()
+            .map(|c| {
+                format!(
+                    "{} (removes {:.1} %)",
+                    joined(&c.effects, "+"),
+                    c.reduction_percent
+                )
+            })
+            .collect();
+        format!(
+            "the candidates that make the axles a tyre, fitted jointly, come closest: {}",
+            each.join(", ")
+        )
+    };
     format!(
-        "the base model is not identifiable from these runs: {}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {:.3}, noise level {:.3}), so there is no model-form verdict",
+        "the base model is not identifiable from these runs: {}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {:.3}, noise level {:.3}), so there is no model-form verdict; {closest}",
         no_tyre_list(&n.no_tyre),
         n.threshold_percent,
         n.heldout_error,
@@ -173,10 +193,6 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             c.channel.unit(),
             c.noise_floor,
             c.added_percent
-        ),
-        VerdictWarning::BaseNoTyre { no_tyre } => format!(
-            "the base model alone is no tyre ({}); the reductions are measured against it, and with the verdict's effects the axles are a tyre",
-            no_tyre_list(no_tyre)
         ),
         VerdictWarning::OnSearchBound { parameters } => {
             let each: Vec<String> = parameters
@@ -337,6 +353,10 @@ pub fn evidence(e: &Evidence) -> String {
                 CalibrationSource::Straights => "straights",
             },
             unit = channel.unit(),
+        ),
+        Evidence::AxlesRestored { no_tyre } => format!(
+            "axles restored: the base model alone is no tyre ({}); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)",
+            no_tyre_list(no_tyre)
         ),
     }
 }

@@ -12,8 +12,9 @@ use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::CALIBRATION_AGREES;
 use crate::diagnose::report::{
-    ChannelChange, ChannelWorsened, Evidence, Explained, NoSignificantGap, NotIdentifiable,
-    OutsideLibrary, ParameterValue, Part, Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    ChannelChange, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
+    NotIdentifiable, OutsideLibrary, ParameterValue, Part, RankWarning, Ranked, Shrinkage, Verdict,
+    VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
 use crate::diagnose::verdict::score::{Calibrated, Scored};
@@ -42,18 +43,21 @@ pub(crate) fn verdict(
         (VerdictKind::Explained, Some(sc)) => {
             let r = base.rank(sc);
             let mut warnings = worsened(shrinkage);
-            if !base_no_tyre.is_empty() {
-                warnings.push(VerdictWarning::BaseNoTyre {
-                    no_tyre: base_no_tyre.to_vec(),
-                });
-            }
             let on_bound = on_search_bound(&r.parameters);
             if !on_bound.is_empty() {
                 warnings.push(VerdictWarning::OnSearchBound {
                     parameters: on_bound,
                 });
             }
-            let evidence = calibration_evidence(&r.parameters, calibrated);
+            let mut evidence = calibration_evidence(&r.parameters, calibrated);
+            // Accepted, its axles are a tyre (a set whose are not is never
+            // chosen): where the base's alone are not, the effects account
+            // for what bent them.
+            if !base_no_tyre.is_empty() {
+                evidence.push(Evidence::AxlesRestored {
+                    no_tyre: base_no_tyre.to_vec(),
+                });
+            }
             Verdict::Explained(Explained {
                 evidence,
                 effects: r.effects,
@@ -75,6 +79,12 @@ pub(crate) fn verdict(
             noise_level,
             no_tyre: base_no_tyre.to_vec(),
             threshold_percent: 100.0 * ACCEPT,
+            closest: closest(
+                order
+                    .iter()
+                    .map(|&i| base.rank(&singles[i]))
+                    .chain(found.combinations.iter().cloned()),
+            ),
         }),
         _ => Verdict::OutsideLibrary(OutsideLibrary {
             heldout_error,
@@ -118,6 +128,41 @@ fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) 
 
 /// The channels the verdict's effects leave worse on held-out runs (all
 /// samples): a worsening by [`Shrinkage::change`], above noise.
+/// How many of the candidates whose axles are a tyre a not-identifiable
+/// verdict names.
+pub(crate) const CLOSEST: usize = 3;
+
+/// Of the candidate rows `rows` (singles and sets, as ranked), those whose
+/// jointly fitted axles are a tyre (no [`RankWarning::AxlesNoTyre`]), best
+/// held-out first, at most [`CLOSEST`], each set once.
+pub(crate) fn closest(rows: impl Iterator<Item = Ranked>) -> Vec<Closest> {
+    let mut tyres: Vec<Ranked> = rows
+        .filter(|r| {
+            !r.warnings
+                .iter()
+                .any(|w| matches!(w, RankWarning::AxlesNoTyre { .. }))
+        })
+        .collect();
+    tyres.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
+    let mut out: Vec<Closest> = Vec::new();
+    for r in tyres {
+        let mut set = r.effects.clone();
+        set.sort();
+        let seen = out.iter().any(|c| {
+            let mut other = c.effects.clone();
+            other.sort();
+            other == set
+        });
+        if !seen && out.len() < CLOSEST {
+            out.push(Closest {
+                effects: r.effects,
+                reduction_percent: r.reduction_percent,
+            });
+        }
+    }
+    out
+}
+
 /// The parameters of `p` on the end of their search range.
 pub(crate) fn on_search_bound(p: &[ParameterValue]) -> Vec<ParameterValue> {
     p.iter()
@@ -178,10 +223,15 @@ mod tests {
         assert_eq!(e.len(), 1);
         let Evidence::Calibration {
             agrees, channel, ..
-        } = &e[0];
+        } = &e[0]
+        else {
+            panic!("{e:?}")
+        };
         assert!(*agrees && *channel == Channel::Ay);
         let e = calibration_evidence(&[offset("sensor_bias.ay", -0.613, 0.004)], &calibrated);
-        let Evidence::Calibration { agrees, .. } = &e[0];
+        let Evidence::Calibration { agrees, .. } = &e[0] else {
+            panic!("{e:?}")
+        };
         assert!(!agrees);
         // Another effect's parameter is no offset.
         assert!(
@@ -198,5 +248,62 @@ mod tests {
         };
         let p = [at(Some(Bound::Search)), at(Some(Bound::Physical)), at(None)];
         assert_eq!(on_search_bound(&p), vec![p[0].clone()]);
+    }
+
+    /// A ranking row of `effects` with held-out error `j` (base 4, noise
+    /// 1), its axles a tyre or not.
+    fn row(effects: &[EffectKind], j: f64, tyre: bool) -> Ranked {
+        let no_tyre = vec![NoTyre::Limit {
+            parameter: "rear cornering coefficient",
+            limit: crate::diagnose::report::AxleLimit::Rigid,
+        }];
+        Ranked {
+            effect: crate::diagnose::effects::joined(effects, "+"),
+            effects: effects.to_vec(),
+            axles: None,
+            prior_weight: None,
+            parameters: Vec::new(),
+            heldout_error_before: 4.0,
+            heldout_error_after: j,
+            heldout_channels: Vec::new(),
+            reduction_percent: 100.0 * (4.0 - j) / 3.0,
+            insample_error_after: j,
+            insample_reduction_percent: 100.0 * (4.0 - j) / 3.0,
+            folds_converged: 8,
+            folds: 8,
+            warnings: if tyre {
+                Vec::new()
+            } else {
+                vec![RankWarning::AxlesNoTyre { no_tyre }]
+            },
+            bic: 0.0,
+            delta_bic: 0.0,
+            global_search: crate::diagnose::fit::GlobalSearch::None,
+        }
+    }
+
+    #[test]
+    fn the_closest_are_the_candidates_whose_axles_are_a_tyre_best_held_out_first_each_set_once() {
+        use EffectKind::{RoadBank, SensorBias, SensorDelay, SteerPath, YawInertia};
+        let rows = vec![
+            // The best on held-out runs, but its axles are no tyre.
+            row(&[RoadBank], 2.0, false),
+            row(&[SensorDelay], 3.5, true),
+            row(&[SensorBias, SteerPath], 3.2, true),
+            // The same set in the other order: said once.
+            row(&[SteerPath, SensorBias], 3.3, true),
+            row(&[YawInertia], 3.9, true),
+            row(&[SteerPath], 3.6, true),
+        ];
+        let c = closest(rows.into_iter());
+        let named: Vec<&[EffectKind]> = c.iter().map(|c| c.effects.as_slice()).collect();
+        assert_eq!(
+            named,
+            [&[SensorBias, SteerPath][..], &[SensorDelay], &[SteerPath]]
+        );
+        assert_eq!(c.len(), CLOSEST);
+        assert!((c[0].reduction_percent - 80.0 / 3.0).abs() < 1e-9);
+        // None whose axles are a tyre: none named.
+        assert!(closest(vec![row(&[RoadBank], 2.0, false)].into_iter()).is_empty());
     }
 }

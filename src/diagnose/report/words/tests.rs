@@ -170,10 +170,45 @@ fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
             peak(),
         ],
         threshold_percent: 30.0,
+        closest: Vec::new(),
     });
     assert_eq!(
         statement(&v),
-        "the base model is not identifiable from these runs: rear cornering coefficient at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher; the rear axle peaks at 1.81° of slip (cornering coefficient over peak friction 44 1/rad; no tyre peaks before 2°): the data pull it to saturate early; no candidate effect fitted with it gives axles that are a tyre and removes 30 % of the gap (held-out error 4.000, noise level 1.000), so there is no model-form verdict"
+        "the base model is not identifiable from these runs: rear cornering coefficient at its physical limit 4,000 1/rad (a rigid axle that never slips; no tyre is that stiff): the data pull it higher; the rear axle peaks at 1.81° of slip (cornering coefficient over peak friction 44 1/rad; no tyre peaks before 2°): the data pull it to saturate early; no candidate effect fitted with it gives axles that are a tyre and removes 30 % of the gap (held-out error 4.000, noise level 1.000), so there is no model-form verdict; no candidate fitted with it makes the axles a tyre: what bent them is outside the library"
+    );
+    // The candidates whose jointly fitted axles are a tyre, named with
+    // what they remove: where the fingerprint may come from.
+    let Verdict::NotIdentifiable(n) = v else {
+        unreachable!()
+    };
+    let v = Verdict::NotIdentifiable(crate::diagnose::report::NotIdentifiable {
+        closest: vec![
+            crate::diagnose::report::Closest {
+                effects: vec![EffectKind::SensorBias, EffectKind::SteerPath],
+                reduction_percent: 21.44,
+            },
+            crate::diagnose::report::Closest {
+                effects: vec![EffectKind::RollSteer],
+                reduction_percent: 8.0,
+            },
+        ],
+        ..n
+    });
+    assert!(
+        statement(&v).ends_with("so there is no model-form verdict; the candidates that make the axles a tyre, fitted jointly, come closest: sensor_bias+steer_path (removes 21.4 %), roll_steer (removes 8.0 %)"),
+        "{}",
+        statement(&v)
+    );
+}
+
+#[test]
+fn axles_restored_by_the_verdicts_effects_are_evidence_with_the_bases_reasons() {
+    let e = Evidence::AxlesRestored {
+        no_tyre: vec![peak()],
+    };
+    assert_eq!(
+        evidence(&e),
+        "axles restored: the base model alone is no tyre (the rear axle peaks at 1.81° of slip (cornering coefficient over peak friction 44 1/rad; no tyre peaks before 2°): the data pull it to saturate early); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)"
     );
 }
 

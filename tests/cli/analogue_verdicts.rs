@@ -1,0 +1,193 @@
+//! The analogues of real logs diagnosed through the CLI on three seeds, as
+//! a user runs them: `handling synth --programme <analogue> --seed s`, then
+//! `handling diagnose` of the folder. Each must be named on every seed with
+//! the parameters its truth was built with (stated in the campaign's
+//! `vehicle.toml` comment, withheld from the diagnosis).
+//!
+//! The candidates are the analogue's own effects and the look-alikes that
+//! compete with them on the full library (seen on seed 1 of each with every
+//! effect: `road_bank` against the sedan's offsets, `roll_steer` against
+//! the racing car's sideslip point, `road_bank` and `sensor_bias` against
+//! the bank). The full library on all three seeds costs minutes per
+//! campaign (the sedan's three 100 Hz runs about 135 s wall each on two
+//! cores), beyond what CI affords; the list keeps the same rules deciding.
+
+use super::programmes::parameter;
+use super::*;
+use std::fs;
+
+/// An analogue campaign of `programme` (with `effects` withheld, `none`
+/// for none) on noise `seed`, diagnosed against `candidates` (TOML
+/// strings, comma-separated): stdout and `diagnosis.json`.
+fn diagnosed(
+    dir: &Path,
+    programme: &str,
+    effects: &str,
+    seed: u64,
+    candidates: &str,
+) -> (String, serde_json::Value) {
+    let seed = seed.to_string();
+    let c = synth_campaign(
+        dir,
+        &format!("{programme}-{seed}"),
+        &[
+            "--programme",
+            programme,
+            "--effects",
+            effects,
+            "--seed",
+            &seed,
+        ],
+    );
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    // A campaign without tyre data: the base identifies its axles from the
+    // runs, as on the real logs.
+    assert!(!c.join("tyre_rig.csv").exists());
+    fs::write(&v, text + &format!("effects = [{candidates}]\n")).unwrap();
+    diagnose_campaign(&c)
+}
+
+/// The verdict's effects, and its held-out reduction (percent).
+fn named(d: &serde_json::Value) -> (Vec<String>, f64) {
+    let r = d["verdict"]["reduction_percent"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    (verdict_of(d), r)
+}
+
+#[test]
+fn the_sedans_logger_offsets_and_sideslip_point_are_named_on_three_seeds() {
+    // Truth (analogues.rs): ay −0.6 m/s², yaw rate +0.005 rad/s and
+    // sideslip −0.01 rad offsets, the sideslip measured 0.5 m ahead of the
+    // centre of gravity; a progressive steering ratio no candidate models.
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 1..=3 {
+        let (stdout, d) = diagnosed(
+            dir.path(),
+            "sedan-winding",
+            "none",
+            seed,
+            "\"sensor_bias\", \"accelerometer_position\", \"road_bank\", \"steer_path\"",
+        );
+        let (effects, reduction) = named(&d);
+        assert_eq!(
+            effects,
+            ["sensor_bias", "accelerometer_position"],
+            "seed {seed}: {stdout}"
+        );
+        assert!(reduction >= 60.0, "seed {seed}: {reduction} %");
+        let ay = parameter(&d, "sensor_bias.ay");
+        let r = parameter(&d, "sensor_bias.yaw_rate");
+        let beta = parameter(&d, "sensor_bias.beta");
+        assert!((ay + 0.6).abs() < 0.02, "seed {seed}: ay offset {ay}");
+        assert!((r - 0.005).abs() < 0.001, "seed {seed}: yaw offset {r}");
+        assert!(
+            (beta + 0.01).abs() < 0.001,
+            "seed {seed}: beta offset {beta}"
+        );
+        // Ahead of the centre of gravity as the truth's sideslip point is
+        // (0.74 m on seeds 1 and 2 with every effect a candidate): the
+        // fitted point also carries the ay channel, whose accelerometer
+        // the truth has at the centre of gravity.
+        let x = parameter(&d, "accelerometer_position.x");
+        assert!((0.3..1.0).contains(&x), "seed {seed}: x {x}");
+        // The standstills measure the offsets and confirm the fitted ones.
+        for channel in ["yaw_rate", "ay"] {
+            let confirmed = format!("confirmed: the {channel} offset fitted");
+            assert!(stdout.contains(&confirmed), "seed {seed}: {stdout}");
+        }
+    }
+}
+
+#[test]
+fn the_racing_cars_sideslip_point_ahead_is_named_on_three_seeds() {
+    // Truth: the sideslip measured 0.6 m ahead of the centre of gravity;
+    // a rear roll steer of 0.3 rad/rad that the axles identified from the
+    // runs take up (the verdict removes the whole gap above noise without
+    // it, on every seed).
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 1..=3 {
+        let (stdout, d) = diagnosed(
+            dir.path(),
+            "racing-rear-steer",
+            "none",
+            seed,
+            "\"accelerometer_position\", \"roll_steer\", \"sensor_bias\", \"road_bank\"",
+        );
+        let (effects, reduction) = named(&d);
+        assert_eq!(effects, ["accelerometer_position"], "seed {seed}: {stdout}");
+        assert!(reduction >= 90.0, "seed {seed}: {reduction} %");
+        // 0.554 m on every seed: what the unmodelled roll steer leaves of
+        // the 0.6 m.
+        let x = parameter(&d, "accelerometer_position.x");
+        assert!((x - 0.6).abs() < 0.1, "seed {seed}: x {x}");
+        // The axles fitted with it are a tyre's, within the slicks' prior.
+        assert!(
+            stdout.contains("axles fitted with it: front cornering coefficient"),
+            "{stdout}"
+        );
+    }
+}
+
+#[test]
+fn the_banked_ovals_bank_is_named_through_an_estimated_sideslip_on_three_seeds() {
+    // Truth: the logged bank at scale 1, no offset; the sideslip is a
+    // state estimator's (smooth, lagging, biased), trusted to no less than
+    // a sensor's floor.
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 1..=3 {
+        let (stdout, d) = diagnosed(
+            dir.path(),
+            "slow-oval-estimated-beta",
+            "bank_profile",
+            seed,
+            "\"bank_profile\", \"road_bank\", \"sensor_bias\", \"steer_path\"",
+        );
+        let (effects, reduction) = named(&d);
+        assert_eq!(effects, ["bank_profile"], "seed {seed}: {stdout}");
+        assert!(reduction >= 80.0, "seed {seed}: {reduction} %");
+        let scale = parameter(&d, "bank_profile.scale");
+        let offset = parameter(&d, "bank_profile.offset");
+        assert!((scale - 1.0).abs() < 0.1, "seed {seed}: scale {scale}");
+        assert!(offset.abs() < 0.03, "seed {seed}: offset {offset} rad");
+        assert!(
+            stdout.contains("an estimated output's"),
+            "seed {seed}: the sideslip's floor is not said: {stdout}"
+        );
+    }
+}
+
+#[test]
+fn without_a_sideslip_the_banked_oval_says_the_axles_can_take_up_the_bank() {
+    // Only the yaw rate is logged: the axles identified from the runs can
+    // take up the bank (on seed 1 to within noise: no significant gap).
+    // The diagnosis must say so, and name no effect but the bank.
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 1..=3 {
+        let (stdout, d) = diagnosed(
+            dir.path(),
+            "slow-oval-no-beta",
+            "bank_profile",
+            seed,
+            "\"bank_profile\", \"road_bank\", \"sensor_bias\"",
+        );
+        assert!(
+            stdout.contains("the bank shows only in the yaw rate, which the axles identified from the runs can take up"),
+            "seed {seed}: {stdout}"
+        );
+        let named = verdict_of_or_none(&d);
+        assert!(
+            named.is_empty() || named == ["bank_profile"],
+            "seed {seed}: {named:?}: {stdout}"
+        );
+    }
+}
+
+/// The verdict's effects, or none where the verdict names none.
+fn verdict_of_or_none(d: &serde_json::Value) -> Vec<String> {
+    d["verdict"]["effects"]
+        .as_array()
+        .map(|a| a.iter().map(|e| e.as_str().unwrap().to_string()).collect())
+        .unwrap_or_default()
+}

@@ -71,6 +71,12 @@ pub struct FitOutcome {
     /// held, not counted in the BIC (empty: none held, as in a refit).
     #[serde(skip)]
     pub unseen: Vec<bool>,
+    /// Parameters held at their off value because the free fit left them
+    /// undetermined ([`to_hold`]): the standard error each had there
+    /// (empty, or None: fitted). Counted in the BIC
+    /// ([`FitOutcome::free_count`]).
+    #[serde(skip)]
+    pub held: Vec<Option<f64>>,
     /// The data residuals and their Jacobian at the optimum (fits polished
     /// to convergence): the fold refits start from them.
     #[serde(skip)]
@@ -109,8 +115,19 @@ impl FitOutcome {
     }
 
     /// The parameters the data see (all but the [`FitOutcome::unseen`]).
+    /// One [`FitOutcome::held`] counts: it belongs to the effect's form,
+    /// which these runs see but cannot resolve (a steer path whose lag
+    /// the runs do not determine is no simpler hypothesis than a sensor
+    /// delay); the BIC and the parsimony rule compare forms, and holding
+    /// it only fixes what the report and the folds take for its value.
     pub fn free_count(&self) -> usize {
         self.params.len() - self.unseen.iter().filter(|&&u| u).count()
+    }
+
+    /// The standard error, fitted free, of parameter `i` where it is held
+    /// because that fit left it undetermined ([`to_hold`]).
+    pub fn held_for(&self, i: usize) -> Option<f64> {
+        self.held.get(i).copied().flatten()
     }
 
     /// Whether parameter `i` is held because no residual responds to it.
@@ -251,9 +268,64 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         converged,
         global: GlobalSearch::None,
         unseen,
+        held: Vec::new(),
         linear,
     };
     (outcome, at)
+}
+
+/// How far past its whole range a parameter's standard error must be for
+/// it to be held: at 1 the free fit moves it across its whole box for
+/// less than one standard deviation of the data, which is what "the runs
+/// do not determine it" means in the report.
+pub const UNDETERMINED: f64 = 1.0;
+
+/// How much the held fit's `2·cost` may exceed the free fit's, in units of
+/// the free fit's residual variance `s²`, for the hold to stand: a
+/// likelihood-ratio test of one parameter at about 95 % (`χ²₁` = 3.84).
+/// Past it the data reject the held value after all (the linear picture
+/// that made the standard error large was wrong over the box), and the
+/// parameter stays fitted.
+pub const HOLD_REJECTED: f64 = 3.84;
+
+/// The parameter of `f` (fitted within `bounds`) to hold next, if any:
+/// among those from `from` on (the effect parameters, not the axles) that
+/// are not already held, unseen or on a bound, whose standard error
+/// exceeds [`UNDETERMINED`] times their range, the one whose value is the
+/// fewest standard errors from its value in `off` (the cheapest to hold:
+/// of a steer path's delay and lag, which the runs see only as their sum,
+/// the lag at a few microseconds).
+pub fn to_hold(f: &FitOutcome, bounds: &[(f64, f64)], off: &[f64], from: usize) -> Option<usize> {
+    (from..f.params.len())
+        .filter(|&i| !f.is_unseen(i) && f.held_for(i).is_none())
+        .filter(|&i| {
+            let (lo, hi) = bounds[i];
+            let se = f.std_errors[i];
+            crate::diagnose::effects::on_bound(f.params[i], bounds[i]).is_none()
+                && se.is_finite()
+                && se > UNDETERMINED * (hi - lo)
+        })
+        .min_by(|&a, &b| {
+            let z = |i: usize| (f.params[i] - off[i]).abs() / f.std_errors[i];
+            z(a).total_cmp(&z(b))
+        })
+}
+
+/// Whether a fit holding one more parameter (`held`, its data cost) stands
+/// against the `free` fit: its `2·cost` exceeds the free fit's by at most
+/// [`HOLD_REJECTED`] residual variances of the free fit.
+pub fn hold_stands(free: &FitOutcome, held: &FitOutcome) -> bool {
+    let dof = free.residuals.saturating_sub(free.free_count()).max(1) as f64;
+    let s2 = 2.0 * free.cost / dof;
+    2.0 * (held.cost - free.cost) <= HOLD_REJECTED * s2
+}
+
+/// `bounds` with parameter `i` pinned at `value` (a box of no width: the
+/// polish and the fold refits keep it there).
+pub fn pinned(bounds: &[(f64, f64)], i: usize, value: f64) -> Vec<(f64, f64)> {
+    let mut b = bounds.to_vec();
+    b[i] = (value, value);
+    b
 }
 
 /// The data residuals, their Jacobian and their second derivatives at `p`
@@ -310,6 +382,11 @@ fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
         .map(|k| {
             let (lo, hi) = problem.bounds[k];
             let h = CURVATURE_STEP * (hi - lo);
+            // A parameter pinned (a box of no width) has no curvature:
+            // its columns stay zero below.
+            if h == 0.0 {
+                return 0.0;
+            }
             if p[k] + 2.0 * h > hi {
                 -h
             } else {
@@ -328,13 +405,21 @@ fn curvature<F: Fn(&[f64]) -> Augmented + Sync>(
     };
     let singles: Vec<(Vec<f64>, Vec<f64>)> = (0..n)
         .into_par_iter()
-        .map(|k| (shifted(&[(k, 1.0)]), shifted(&[(k, 2.0)])))
+        .map(|k| {
+            if h[k] == 0.0 {
+                (Vec::new(), Vec::new())
+            } else {
+                (shifted(&[(k, 1.0)]), shifted(&[(k, 2.0)]))
+            }
+        })
         .collect();
     let pairs: Vec<(usize, usize)> = (0..n).flat_map(|a| (a..n).map(move |b| (a, b))).collect();
     let columns: Vec<Vec<f64>> = pairs
         .par_iter()
         .map(|&(a, b)| {
-            if a == b {
+            if h[a] == 0.0 || h[b] == 0.0 {
+                vec![0.0; r0.len()]
+            } else if a == b {
                 let (one, two) = &singles[a];
                 let h2 = h[a] * h[a];
                 (0..r0.len())

@@ -198,6 +198,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
                     converged: true,
                     global: GlobalSearch::None,
                     unseen: Vec::new(),
+                    held: full.held.clone(),
                     linear: None,
                 };
             }
@@ -233,7 +234,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnose::fit::linearise;
+    use crate::diagnose::fit::{hold_stands, linearise, pinned, to_hold};
     use crate::diagnose::model::replay::tests::sine_run;
     use crate::manoeuvre::SineSteer;
     use crate::tyre::{Pac89, Tyre};
@@ -342,6 +343,7 @@ mod tests {
             converged: false,
             global: GlobalSearch::None,
             unseen: Vec::new(),
+            held: Vec::new(),
             linear: Some(linearise(&all, &start)),
         };
         let fold = Problem::new(
@@ -395,5 +397,113 @@ mod tests {
         };
         let ln_n = (f4.residuals as f64).ln();
         assert!((counted.bic() - f4.bic() - ln_n).abs() < 1e-9 * ln_n);
+    }
+
+    /// Of the effect parameters whose standard error exceeds their box,
+    /// the one fewest standard errors from its off value is held first,
+    /// then the next; one unseen, on a bound, already held, determined or
+    /// among the axles (before `from`) is not.
+    #[test]
+    fn the_parameter_held_first_is_the_undetermined_one_cheapest_to_hold() {
+        let bounds = [
+            (2.0, 80.0),
+            (0.3, 3.5),
+            (-1.0, 1.0),
+            (0.0, 2.0),
+            (-1.0, 1.0),
+            (0.0, 1.0),
+        ];
+        let off = [10.0, 1.0, 0.0, 0.0, 0.0, 0.0];
+        let mut f = FitOutcome {
+            // An axle past its box (index 0), two undetermined (2: 0.06
+            // standard errors from off; 3: 0.17), one unseen (4), one on
+            // its bound (5).
+            params: vec![40.0, 1.0, 0.3, 0.5, 0.9, 1.0],
+            std_errors: vec![100.0, 0.01, 5.0, 3.0, 9.0, 9.0],
+            cost: 1.0,
+            residuals: 100,
+            evaluations: 0,
+            converged: true,
+            global: GlobalSearch::None,
+            unseen: vec![false, false, false, false, true, false],
+            held: Vec::new(),
+            linear: None,
+        };
+        assert_eq!(to_hold(&f, &bounds, &off, 1), Some(2));
+        f.held = vec![None, None, Some(5.0), None, None, None];
+        assert_eq!(to_hold(&f, &bounds, &off, 1), Some(3));
+        // The unseen one is not counted; the held one is (the effect's
+        // form has it).
+        assert_eq!(f.free_count(), 5);
+        f.std_errors[3] = 1.9;
+        assert_eq!(to_hold(&f, &bounds, &off, 1), None);
+        // From the axles on, the axle past its box would be held too.
+        assert_eq!(to_hold(&f, &bounds, &off, 0), Some(0));
+    }
+
+    /// A fourth parameter pinned (a box of no width) at its off value
+    /// stays there: it has no standard error and no curvature, the three
+    /// others fit as the three-parameter model's (the fourth enters only
+    /// through its sum with the third, as a steer path's lag with its
+    /// delay), and the hold stands against that fit.
+    #[test]
+    fn a_pinned_parameter_stays_at_its_value_without_standard_error_or_curvature() {
+        let runs = runs();
+        let three = Problem::new(axle_model, runs.iter().collect(), SCALES, AXLES.to_vec());
+        let f3 = fit(&three, &[10.0, 10.0, 1.0], None, Polish::LevenbergMarquardt);
+        let mut bounds = AXLES.to_vec();
+        bounds.push((-1.0, 1.0));
+        let twin = |p: &[f64]| axle_model(&[p[0], p[1], p[2] + p[3]]);
+        let four = Problem::new(twin, runs.iter().collect(), SCALES, pinned(&bounds, 3, 0.0));
+        let off = [10.0, 10.0, 1.0, 0.0];
+        let held = fit(
+            &four,
+            &[10.0, 10.0, 1.0, 0.0],
+            Some(&off),
+            Polish::LevenbergMarquardt,
+        );
+        assert!(held.converged);
+        assert_eq!(held.params[3], 0.0);
+        assert!(held.std_errors[3].is_nan());
+        for i in 0..3 {
+            assert!(
+                (held.params[i] - f3.params[i]).abs() <= 0.1 * f3.std_errors[i],
+                "{:?} against {:?}",
+                held.params,
+                f3.params
+            );
+        }
+        assert!((held.cost - f3.cost).abs() <= 1e-6 * f3.cost);
+        assert!(hold_stands(&f3, &held));
+        let linear = held.linear.as_ref().unwrap();
+        for b in 0..4 {
+            let column = linear.curvature.column(pair_index(4, b, 3));
+            assert!(column.iter().all(|&c| c == 0.0), "pair ({b}, 3)");
+        }
+    }
+
+    /// The hold stands while the held fit's `2·cost` exceeds the free
+    /// fit's by at most 3.84 residual variances of the free fit.
+    #[test]
+    fn a_hold_the_data_reject_does_not_stand() {
+        // 1,002 residuals, 2 free parameters: s² = 2·500/1000 = 1.
+        let free = FitOutcome {
+            params: vec![0.0, 0.0],
+            std_errors: vec![1.0, 1.0],
+            cost: 500.0,
+            residuals: 1002,
+            evaluations: 0,
+            converged: true,
+            global: GlobalSearch::None,
+            unseen: Vec::new(),
+            held: Vec::new(),
+            linear: None,
+        };
+        let at = |cost: f64| FitOutcome {
+            cost,
+            ..free.clone()
+        };
+        assert!(hold_stands(&free, &at(500.0 + 1.9)));
+        assert!(!hold_stands(&free, &at(500.0 + 1.93)));
     }
 }

@@ -38,6 +38,11 @@ pub struct ParameterValue {
     /// Held at its off value because no measured channel responds to it
     /// (an offset of a channel no run carries): not fitted, not counted.
     pub unseen: bool,
+    /// Held at its off value (the campaign's, for the roll dynamics)
+    /// because fitted free its standard error, this, exceeded its whole
+    /// range: the runs do not determine it (`null`: fitted).
+    #[serde(rename = "held_std_error")]
+    pub held: Option<f64>,
 }
 
 /// A value within this share of its parameter's range from a physical
@@ -69,6 +74,7 @@ impl ParameterValue {
             bound,
             determined: std_error.is_finite() && std_error <= hi - lo,
             unseen: false,
+            held: None,
         }
     }
 
@@ -77,6 +83,17 @@ impl ParameterValue {
     pub fn unseen(self) -> Self {
         Self {
             unseen: true,
+            ..self
+        }
+    }
+
+    /// The same, held at its off value because fitted free its standard
+    /// error `free_std_error` exceeded its whole range
+    /// ([`ParameterValue::held`]).
+    pub fn held(self, free_std_error: f64) -> Self {
+        Self {
+            held: Some(free_std_error),
+            determined: false,
             ..self
         }
     }

@@ -483,7 +483,7 @@ pub fn signatures(effects: &[EffectKind]) -> String {
 /// negative beyond it); or, where the standard error is missing or larger
 /// than the parameter's whole range, that the runs do not determine it;
 /// or that it is held at its off value (no measured channel responds to
-/// it). A steering compliance, fitted in rad/kN, is given in rad/N too: the unit
+/// it, or fitted free the runs did not determine it). A steering compliance, fitted in rad/kN, is given in rad/N too: the unit
 /// of `steering_compliance` in a scenario's `[model.effects]`.
 pub fn parameter(p: &ParameterValue) -> String {
     let unit = if p.unit == "rad/kN" {
@@ -496,6 +496,18 @@ pub fn parameter(p: &ParameterValue) -> String {
         return format!(
             "{} = {v} {unit} (held at its off value: no measured channel responds to it)",
             p.name
+        );
+    }
+    if let Some(se) = p.held {
+        // The roll dynamics' off value is the campaign's `[roll]`.
+        let at = if p.name.starts_with("roll.") {
+            "the campaign's value"
+        } else {
+            "its off value"
+        };
+        return format!(
+            "{} = {v} {unit} (held at {at}: the runs do not determine it, fitted free its standard error {:.2e} exceeds its whole range)",
+            p.name, se
         );
     }
     let Some(bound) = p.bound else {

@@ -85,6 +85,8 @@ pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<Parameter
             let v = ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]);
             if f.is_unseen(at + i) {
                 v.unseen()
+            } else if let Some(se) = f.held_for(at + i) {
+                v.held(se)
             } else {
                 v
             }

@@ -205,6 +205,7 @@ mod tests {
             bound: None,
             determined: true,
             unseen: false,
+            held: None,
         }
     }
 

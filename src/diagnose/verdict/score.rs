@@ -15,7 +15,9 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::global::global_best;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
-use crate::diagnose::fit::{complete_curvature, fit_first_order, FitOutcome, GlobalSearch};
+use crate::diagnose::fit::{
+    complete_curvature, fit_first_order, hold_stands, pinned, to_hold, FitOutcome, GlobalSearch,
+};
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
@@ -81,6 +83,10 @@ pub(crate) struct Fitted<'a> {
     /// (only a cross-validation reads them: [`Context::cross_validate`]
     /// takes them there, as the fit would have).
     linearised_at: Option<Vec<f64>>,
+    /// The box it was fitted in: the setting's, pinned at the off value
+    /// where a parameter is held ([`Context::hold_undetermined`]); its
+    /// folds are refitted in the same.
+    bounds: Vec<(f64, f64)>,
 }
 
 impl Fitted<'_> {
@@ -142,7 +148,7 @@ impl<'a> Context<'a> {
     ) -> Fitted<'a> {
         let s = Setting::new(self.bases, kinds);
         let stamps = self.timing.map(|_| Stamps::default());
-        let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior);
+        let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior, s.bounds());
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
@@ -160,7 +166,9 @@ impl<'a> Context<'a> {
             .map(|rows| rows.tempered(problem.tempering(&start).prior_weight));
         let problem = problem.with_prior(prior);
         let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
-        let (full, linearised_at) = fit_first_order(&problem, &start, Some(&s.off()));
+        let free = fit_first_order(&problem, &start, Some(&s.off()));
+        let (full, linearised_at, bounds) =
+            self.hold_undetermined(&s, prior, stamps.as_ref(), free);
         let full = FitOutcome { global, ..full };
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
             rec.add(Phase::CandidateSearch, mark.0 - t0, mark.1);
@@ -185,7 +193,53 @@ impl<'a> Context<'a> {
             insample,
             prior,
             linearised_at,
+            bounds,
         }
+    }
+
+    /// A fit `free` of setting `s` (on all runs, with the prior's rows
+    /// `prior`) with each effect parameter it leaves undetermined held at
+    /// its off value, one at a time ([`to_hold`]: the cheapest first, the
+    /// rest refitted), for as long as the data do not reject the held
+    /// value ([`hold_stands`]). Engineers identifying a real log hold what
+    /// it cannot show rather than report where an optimiser wandered, and
+    /// the folds refit the rest around it instead of wandering off along
+    /// it. The held parameter still counts in the candidate's BIC and
+    /// parsimony ([`FitOutcome::free_count`]), so the choice between
+    /// effects is that of their forms. Returns the fit, where it was
+    /// linearised, and its box (pinned where held).
+    fn hold_undetermined(
+        &self,
+        s: &Setting,
+        prior: Option<PriorRows>,
+        stamps: Option<&Stamps>,
+        free: (FitOutcome, Option<Vec<f64>>),
+    ) -> (FitOutcome, Option<Vec<f64>>, Vec<(f64, f64)>) {
+        let (mut full, mut at) = free;
+        let mut bounds = s.bounds();
+        let off = s.off();
+        let from = s.layout.effects().start;
+        while let Some(i) = to_hold(&full, &bounds, &off, from) {
+            let box_held = pinned(&bounds, i, off[i]);
+            let problem = self.all_runs(s, stamps, prior, box_held.clone());
+            let mut start = full.params.clone();
+            start[i] = off[i];
+            let (mut held, held_at) = fit_first_order(&problem, &start, Some(&off));
+            if !held.converged || !hold_stands(&full, &held) {
+                break;
+            }
+            let mut marks = full.held.clone();
+            marks.resize(full.params.len(), None);
+            marks[i] = Some(full.std_errors[i]);
+            // A pinned parameter's difference column is zero: it is held
+            // because the free fit could not place it, not unseen.
+            for (u, m) in held.unseen.iter_mut().zip(&marks) {
+                *u &= m.is_none();
+            }
+            held.held = marks;
+            (full, at, bounds) = (held, held_at, box_held);
+        }
+        (full, at, bounds)
     }
 
     /// The problem of fitting setting `s` on all runs with the prior's rows
@@ -196,6 +250,7 @@ impl<'a> Context<'a> {
         s: &'s Setting,
         stamps: Option<&'s Stamps>,
         prior: Option<PriorRows>,
+        bounds: Vec<(f64, f64)>,
     ) -> Problem<'s, impl Fn(&[f64]) -> Augmented + Sync + 's> {
         Problem::new(
             move |p: &[f64]| {
@@ -206,7 +261,7 @@ impl<'a> Context<'a> {
             },
             self.runs.iter().collect(),
             self.scales,
-            s.bounds(),
+            bounds,
         )
         .with_layout(s.layout.clone(), &self.bases.all, self.derivatives)
         .with_prior(prior)
@@ -224,7 +279,12 @@ impl<'a> Context<'a> {
         }
         let t0 = Instant::now();
         let stamps = self.timing.map(|_| Stamps::default());
-        let problem = self.all_runs(&fitted.setting, stamps.as_ref(), fitted.prior);
+        let problem = self.all_runs(
+            &fitted.setting,
+            stamps.as_ref(),
+            fitted.prior,
+            fitted.bounds.clone(),
+        );
         let mut linear = linear.clone();
         complete_curvature(&problem, at, &mut linear);
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
@@ -264,7 +324,7 @@ impl<'a> Context<'a> {
                     },
                     self.training(k),
                     self.scales,
-                    s.bounds(),
+                    fitted.bounds.clone(),
                 )
                 .with_layout(s.layout.clone(), base, self.derivatives)
                 .with_prior(fitted.prior);

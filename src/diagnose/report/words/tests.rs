@@ -257,6 +257,7 @@ fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> Param
         bound,
         determined: false,
         unseen: false,
+        held: None,
     }
 }
 
@@ -479,5 +480,25 @@ fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
     assert_eq!(
         rank_warning(&w),
         "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095 ± 2.00e-2, 10.5 standard errors): its held-out score measures a fit on fewer runs as much as the effect"
+    );
+}
+
+#[test]
+fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
+    let [_, lag] = EffectKind::SteerPath.parameters() else {
+        panic!("a steer path has a delay and a lag");
+    };
+    let held = ParameterValue::of("steer_path", lag, 0.0, f64::NAN).held(69.8);
+    assert!(!held.determined && held.held == Some(69.8));
+    assert_eq!(
+        parameter(&held),
+        "steer_path.lag = 0.0000 s (held at its off value: the runs do not determine it, fitted free its standard error 6.98e1 exceeds its whole range)"
+    );
+    // The roll dynamics' off value is the campaign's.
+    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of("roll", &frequency, 3.0, f64::NAN).held(5.26);
+    assert_eq!(
+        parameter(&roll),
+        "roll.frequency = 3.0000 Hz (held at the campaign's value: the runs do not determine it, fitted free its standard error 5.26e0 exceeds its whole range)"
     );
 }

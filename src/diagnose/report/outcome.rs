@@ -152,7 +152,7 @@ pub enum Evidence {
     },
     /// The base model alone is no tyre; fitted with the verdict's effects
     /// the axles are one: the effects account for what the base's axles
-    /// were bent to (Issue 39's item 3).
+    /// were bent to.
     AxlesRestored {
         /// Why the base alone is not.
         no_tyre: Vec<NoTyre>,

@@ -68,7 +68,7 @@ fn the_sedans_logger_offsets_and_sideslip_point_are_named_on_three_seeds() {
             "sedan-winding",
             "none",
             seed,
-            "\"sensor_bias\", \"accelerometer_position\", \"road_bank\", \"steer_path\"",
+            "\"sensor_bias\", \"accelerometer_position\", \"road_bank\"",
         );
         let (effects, reduction) = named(&d);
         assert_eq!(

@@ -61,6 +61,18 @@ pub fn page(
             .collect();
         p.paragraph("verdict", &format!("Fitted: {}.", fitted.join("; ")));
     }
+    // The verdict's own axles where they were refitted with it (no tyre
+    // data), as the terminal gives them: the base's are not what the
+    // verdict stands on.
+    if let Some(a) = d.verdict_row().and_then(|r| r.axles.as_ref()) {
+        p.paragraph(
+            "verdict",
+            &format!(
+                "Axles fitted with it: {}.",
+                words::axle_values(a).join(", ")
+            ),
+        );
+    }
     for w in words::verdict_warnings(&d.verdict) {
         p.paragraph("warning", &w);
     }

@@ -122,10 +122,17 @@ fn the_racing_cars_sideslip_point_ahead_is_named_on_three_seeds() {
         // the 0.6 m.
         let x = parameter(&d, "accelerometer_position.x");
         assert!((x - 0.6).abs() < 0.1, "seed {seed}: x {x}");
-        // The axles fitted with it are a tyre's, within the slicks' prior.
+        // The axles fitted with it, on the terminal and on the page: the
+        // base's are not what the verdict stands on.
         assert!(
             stdout.contains("axles fitted with it: front cornering coefficient"),
             "{stdout}"
+        );
+        let out = dir.path().join(format!("racing-rear-steer-{seed}.out"));
+        let page = fs::read_to_string(out.join("report.html")).unwrap();
+        assert!(
+            page.contains("Axles fitted with it: front cornering coefficient"),
+            "seed {seed}: the page lacks the verdict's axles"
         );
     }
 }

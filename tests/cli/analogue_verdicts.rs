@@ -26,25 +26,11 @@ fn diagnosed(
     seed: u64,
     candidates: &str,
 ) -> (String, serde_json::Value) {
-    let seed = seed.to_string();
-    let c = synth_campaign(
-        dir,
-        &format!("{programme}-{seed}"),
-        &[
-            "--programme",
-            programme,
-            "--effects",
-            effects,
-            "--seed",
-            &seed,
-        ],
-    );
-    let v = c.join("vehicle.toml");
-    let text = fs::read_to_string(&v).unwrap();
+    let extra = format!("effects = [{candidates}]\n");
+    let c = synth_extended(dir, programme, effects, &seed.to_string(), &extra);
     // A campaign without tyre data: the base identifies its axles from the
     // runs, as on the real logs.
     assert!(!c.join("tyre_rig.csv").exists());
-    fs::write(&v, text + &format!("effects = [{candidates}]\n")).unwrap();
     diagnose_campaign(&c)
 }
 

@@ -269,6 +269,34 @@ pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
     out
 }
 
+/// A synthetic campaign of `programme` with `effects` withheld on noise
+/// `seed`, in `dir/<programme>-<seed>`, its `vehicle.toml` (whose last
+/// table is `[diagnose]`) extended by `extra`.
+pub(crate) fn synth_extended(
+    dir: &Path,
+    programme: &str,
+    effects: &str,
+    seed: &str,
+    extra: &str,
+) -> PathBuf {
+    let c = synth_campaign(
+        dir,
+        &format!("{programme}-{seed}"),
+        &[
+            "--programme",
+            programme,
+            "--effects",
+            effects,
+            "--seed",
+            seed,
+        ],
+    );
+    let v = c.join("vehicle.toml");
+    let text = std::fs::read_to_string(&v).unwrap();
+    std::fs::write(&v, text + extra).unwrap();
+    c
+}
+
 /// Runs `diagnose` on a campaign (outputs beside it, `<campaign>.out`):
 /// its stdout and `diagnosis.json`.
 pub(crate) fn diagnose_campaign(campaign: &Path) -> (String, serde_json::Value) {

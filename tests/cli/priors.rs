@@ -55,28 +55,6 @@ fn public_tyre_files_lie_within_the_ranges_their_class_states() {
     }
 }
 
-/// A slow-oval campaign of seed `seed` (no rig data: the axles are
-/// identified from the runs) with `effects` withheld and the programme
-/// `programme`, its `vehicle.toml` extended by `extra`.
-fn oval(dir: &Path, programme: &str, effects: &str, seed: &str, extra: &str) -> PathBuf {
-    let c = synth_campaign(
-        dir,
-        &format!("{programme}-{seed}"),
-        &[
-            "--programme",
-            programme,
-            "--effects",
-            effects,
-            "--seed",
-            seed,
-        ],
-    );
-    let v = c.join("vehicle.toml");
-    let text = fs::read_to_string(&v).unwrap();
-    fs::write(&v, text + extra).unwrap();
-    c
-}
-
 /// The `[tyres]` and `[diagnose]` additions of a campaign without tyre data.
 fn tables(tyres: &str, channels: &str, effects: &str) -> String {
     format!(
@@ -92,7 +70,7 @@ fn an_estimated_sideslip_is_trusted_as_an_estimate_and_the_logged_bank_is_named_
     // runs log is named, at its logged scale.
     let dir = tempfile::tempdir().unwrap();
     for seed in ["1", "2", "3"] {
-        let c = oval(
+        let c = synth_extended(
             dir.path(),
             "slow-oval-estimated-beta",
             "bank_profile",
@@ -136,7 +114,7 @@ fn stated_ranges_and_uncertainties_are_used_and_reported() {
     // A friction range the runs' 1.3 m/s² exceed 0.8 of (0.12 g): the peak
     // friction is fitted, against the stated range; the sideslip's stated
     // uncertainty is its floor and scale.
-    let c = oval(
+    let c = synth_extended(
         dir.path(),
         "slow-oval",
         "none",

@@ -483,8 +483,9 @@ pub fn signatures(effects: &[EffectKind]) -> String {
 /// negative beyond it); or, where the standard error is missing or larger
 /// than the parameter's whole range, that the runs do not determine it;
 /// or that it is held at its off value (no measured channel responds to
-/// it, or fitted free the runs did not determine it). A steering compliance, fitted in rad/kN, is given in rad/N too: the unit
-/// of `steering_compliance` in a scenario's `[model.effects]`.
+/// it, or fitted free the runs did not determine it). A steering
+/// compliance, fitted in rad/kN, is given in rad/N too: the unit of
+/// `steering_compliance` in a scenario's `[model.effects]`.
 pub fn parameter(p: &ParameterValue) -> String {
     let unit = if p.unit == "rad/kN" {
         format!("rad/kN ({} rad/N)", value(p.value * 1e-3))

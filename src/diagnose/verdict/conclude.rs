@@ -126,8 +126,6 @@ fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) 
         .collect()
 }
 
-/// The channels the verdict's effects leave worse on held-out runs (all
-/// samples): a worsening by [`Shrinkage::change`], above noise.
 /// How many of the candidates whose axles are a tyre a not-identifiable
 /// verdict names.
 pub(crate) const CLOSEST: usize = 3;
@@ -171,6 +169,8 @@ pub(crate) fn on_search_bound(p: &[ParameterValue]) -> Vec<ParameterValue> {
         .collect()
 }
 
+/// The channels the verdict's effects leave worse on held-out runs (all
+/// samples): a worsening by [`Shrinkage::change`], above noise.
 pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
     shrinkage
         .iter()

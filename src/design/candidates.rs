@@ -8,7 +8,7 @@
 //! layout). Units: SI, rad; cornering coefficients in 1/rad.
 
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::axles::shares;
 use crate::diagnose::model::Augmented;
@@ -16,12 +16,6 @@ use crate::diagnose::{Diagnosis, Ranked};
 use crate::tyre::Tyre;
 use crate::vehicle::VehicleModel;
 use serde::Serialize;
-
-/// Whether `a` and `b` name the same effects, in any order (`a+b` is
-/// `b+a`).
-pub fn same_effects(a: &[EffectKind], b: &[EffectKind]) -> bool {
-    a.len() == b.len() && b.iter().all(|e| a.contains(e))
-}
 
 /// A fitted value and how far it is known.
 #[derive(Debug, Clone, PartialEq, Serialize)]

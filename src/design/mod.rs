@@ -30,13 +30,13 @@ pub mod separation;
 
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
 pub use calibration::{Calibration, CALIBRATING_D};
-pub use candidates::{same_effects, Fitted, FittedCandidate, FittedValue, ScreenedOut};
+pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
 pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
 pub use separation::Logging;
 
 use crate::diagnose::campaign::Campaign;
-use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::Prepared;
 use crate::error::{DesignError, Error, Limit, ParamError, ParamReason};

@@ -163,10 +163,7 @@ fn base(p: &mut Page, d: &Diagnosis) {
 /// Every candidate (singles, then combinations) with its held-out scores.
 fn ranking(p: &mut Page, d: &Diagnosis) {
     let all: Vec<&Ranked> = d.ranking.iter().chain(&d.combinations).collect();
-    let verdict = all
-        .iter()
-        .copied()
-        .find(|r| !d.verdict.effects().is_empty() && same_effects(r, d.verdict.effects()));
+    let verdict = d.verdict_row();
     let rows: Vec<Vec<Cell>> = all.iter().map(|r| ranked_row(r, d, verdict)).collect();
     p.section("ranking", "Candidates on held-out runs");
     p.paragraph(
@@ -217,11 +214,6 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             ),
         );
     }
-}
-
-/// Whether candidate `r` is the set of effects `effects` (in any order).
-fn same_effects(r: &Ranked, effects: &[crate::diagnose::effects::EffectKind]) -> bool {
-    r.effects.len() == effects.len() && effects.iter().all(|e| r.effects.contains(e))
 }
 
 fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> {

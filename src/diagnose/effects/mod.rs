@@ -168,6 +168,12 @@ pub(crate) fn on_bound(value: f64, (lo, hi): (f64, f64)) -> Option<bool> {
     }
 }
 
+/// Whether `a` and `b` name the same effects, in any order (`a+b` is
+/// `b+a`: a combination is a set, in whichever order it was built).
+pub fn same_effects(a: &[EffectKind], b: &[EffectKind]) -> bool {
+    a.len() == b.len() && b.iter().all(|e| a.contains(e))
+}
+
 /// The names of `kinds` joined by `sep` (a candidate's label: `a+b`).
 pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
     let names: Vec<&str> = kinds.iter().map(|e| e.name()).collect();

@@ -17,7 +17,7 @@ pub use crate::diagnose::model::scale::ScaleSource;
 
 pub use crate::diagnose::base::identify::{Axle, AxleIdentification, AxleLimit, AxleValue, NoTyre};
 pub use crate::diagnose::base::TyreSource;
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{same_effects, EffectKind};
 use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::Observed;
@@ -263,11 +263,7 @@ impl Diagnosis {
             .chain(&self.combinations)
             // As sets: a combination's row is the set, in whichever order
             // it was built.
-            .find(|r| {
-                !effects.is_empty()
-                    && r.effects.len() == effects.len()
-                    && effects.iter().all(|e| r.effects.contains(e))
-            })
+            .find(|r| !effects.is_empty() && same_effects(&r.effects, effects))
     }
 
     /// How the report says candidate `r`'s held-out and in-sample

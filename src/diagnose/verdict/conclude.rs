@@ -8,7 +8,7 @@
 //! the channel's unit.
 
 use crate::diagnose::base::identify::NoTyre;
-use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::effects::{same_effects, Bound, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::CALIBRATION_AGREES;
 use crate::diagnose::report::{
@@ -144,13 +144,7 @@ pub(crate) fn closest(rows: impl Iterator<Item = Ranked>) -> Vec<Closest> {
     tyres.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
     let mut out: Vec<Closest> = Vec::new();
     for r in tyres {
-        let mut set = r.effects.clone();
-        set.sort();
-        let seen = out.iter().any(|c| {
-            let mut other = c.effects.clone();
-            other.sort();
-            other == set
-        });
+        let seen = out.iter().any(|c| same_effects(&c.effects, &r.effects));
         if !seen && out.len() < CLOSEST {
             out.push(Closest {
                 effects: r.effects,

@@ -169,18 +169,10 @@ fn without_a_sideslip_the_banked_oval_says_the_axles_can_take_up_the_bank() {
             stdout.contains("the bank shows only in the yaw rate, which the axles identified from the runs can take up"),
             "seed {seed}: {stdout}"
         );
-        let named = verdict_of_or_none(&d);
+        let named = verdict_of(&d);
         assert!(
             named.is_empty() || named == ["bank_profile"],
             "seed {seed}: {named:?}: {stdout}"
         );
     }
-}
-
-/// The verdict's effects, or none where the verdict names none.
-fn verdict_of_or_none(d: &serde_json::Value) -> Vec<String> {
-    d["verdict"]["effects"]
-        .as_array()
-        .map(|a| a.iter().map(|e| e.as_str().unwrap().to_string()).collect())
-        .unwrap_or_default()
 }

@@ -5,7 +5,7 @@
 //! Values in SI units and radians as in `diagnosis.json`; the figures are
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
-use crate::diagnose::effects::joined;
+use crate::diagnose::effects::{joined, Bound};
 use crate::diagnose::report::{words, ChannelChange, Part, Ranked, Reduction, Shrinkage};
 use crate::diagnose::Diagnosis;
 use crate::error::Error;
@@ -250,7 +250,17 @@ fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> Strin
     }
     let margin = (v.heldout_error_after - r.heldout_error_after) / noise_level;
     let (n, m) = (r.parameters.len(), v.parameters.len());
-    if n > m {
+    let pressed = |x: &Ranked| {
+        x.parameters
+            .iter()
+            .any(|p| p.at_bound && p.bound == Some(Bound::Search))
+    };
+    if pressed(r) && !pressed(v) {
+        format!(
+            "J lower by {margin:.3} × the noise level, but only with a parameter on its \
+             search bound: the verdict, inside its ranges, is taken"
+        )
+    } else if n > m {
         format!(
             "J lower by {margin:.3} × the noise level only, with {n} parameters to the \
              verdict's {m}: the simpler is taken"

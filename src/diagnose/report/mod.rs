@@ -5,6 +5,7 @@
 //! are SI and rad unless a field names its unit; held-out errors J are
 //! dimensionless (residuals over channel scales).
 
+mod evidence;
 pub(crate) mod gap;
 mod json;
 pub mod outcome;

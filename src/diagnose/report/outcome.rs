@@ -16,6 +16,7 @@
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
+pub use crate::diagnose::report::evidence::{CalibrationSource, Evidence, CALIBRATION_AGREES};
 use crate::diagnose::report::parts::Part;
 use crate::diagnose::report::values::{ParameterValue, Shrinkage};
 use serde::{Deserialize, Serialize};
@@ -128,51 +129,6 @@ pub struct Explained {
     pub evidence: Vec<Evidence>,
 }
 
-/// What the runs show beside a verdict's fit that bears on it.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Evidence {
-    /// A sensor offset the verdict fitted against the one the runs'
-    /// standstills (else straights) measured.
-    Calibration {
-        /// The channel.
-        channel: Channel,
-        /// Fitted, in the channel's unit.
-        fitted: f64,
-        /// Its standard error.
-        fitted_std_error: f64,
-        /// Measured on the standstills, else on the straights.
-        measured: f64,
-        /// Where it was measured.
-        measured_on: CalibrationSource,
-        /// Its standard error.
-        measured_std_error: f64,
-        /// Within three combined standard errors.
-        agrees: bool,
-    },
-    /// The base model alone is no tyre; fitted with the verdict's effects
-    /// the axles are one: the effects account for what the base's axles
-    /// were bent to.
-    AxlesRestored {
-        /// Why the base alone is not.
-        no_tyre: Vec<NoTyre>,
-    },
-}
-
-/// Where a sensor offset was measured.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum CalibrationSource {
-    /// Standing still on a flat road (or a logged bank removed).
-    Standstills,
-    /// On straights at constant speed (no standstill measured it).
-    Straights,
-}
-
-/// Combined standard errors within which a fitted and a measured offset
-/// agree.
-pub const CALIBRATION_AGREES: f64 = 3.0;
-
 impl Explained {
     /// Whether the effects explain only part of the gap (below
     /// [`EXPLAINS_MOST`]).
@@ -268,6 +224,12 @@ pub enum Refusal {
     LeavesParameterIdle {
         /// The simpler candidate.
         simpler: Box<Refused>,
+    },
+    /// A parameter of it is pressed on its search bound: a look-alike
+    /// inside its ranges was taken in its place, and refused.
+    PressedOnSearchBound {
+        /// The look-alike.
+        inside: Box<Refused>,
     },
     /// It passes, but the search from it ended on a set that was refused.
     SearchEndedOn {

@@ -168,6 +168,10 @@ pub fn refusal(r: &Refusal) -> String {
             "it leaves a parameter idle, and the simpler candidate that does as well was taken in its place: {}",
             other(simpler)
         ),
+        Refusal::PressedOnSearchBound { inside } => format!(
+            "a parameter of it is pressed on its search bound, and the look-alike inside its ranges was taken in its place: {}",
+            other(inside)
+        ),
         Refusal::SearchEndedOn { set } => {
             format!("the search from it ended on {}", other(set))
         }
@@ -358,6 +362,21 @@ pub fn evidence(e: &Evidence) -> String {
             "axles restored: the base model alone is no tyre ({}); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)",
             no_tyre_list(no_tyre)
         ),
+        Evidence::LookalikePressed {
+            effects,
+            reduction_percent,
+            pressed,
+        } => {
+            let at: Vec<String> = pressed
+                .iter()
+                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
+                .collect();
+            format!(
+                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges",
+                joined(effects, "+"),
+                at.join(", ")
+            )
+        }
     }
 }
 

@@ -58,6 +58,17 @@ pub(crate) fn verdict(
                     no_tyre: base_no_tyre.to_vec(),
                 });
             }
+            // The search started from a look-alike in place of a best
+            // pressed on its search bound: say what the verdict was taken
+            // over.
+            if let Some(i) = found.passed_over {
+                let p = base.rank(&singles[i]);
+                evidence.push(Evidence::LookalikePressed {
+                    pressed: on_search_bound(&p.parameters),
+                    effects: p.effects,
+                    reduction_percent: p.reduction_percent,
+                });
+            }
             Verdict::Explained(Explained {
                 evidence,
                 effects: r.effects,
@@ -93,7 +104,14 @@ pub(crate) fn verdict(
             // every rule it fails; where it fails none, the search went on
             // from a simpler one in its place or ended on a set that failed.
             refused: order.first().map(|&i| {
-                let gave_way = found.start.is_some_and(|s| s != i);
+                let gave_way = if found.passed_over == Some(i) {
+                    Some(rules::GaveWay::Pressed)
+                } else {
+                    found
+                        .start
+                        .is_some_and(|s| s != i)
+                        .then_some(rules::GaveWay::Idle)
+                };
                 base.refused(&singles[i], gave_way, found.ended.clone())
             }),
             threshold_percent: 100.0 * ACCEPT,

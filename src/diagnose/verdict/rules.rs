@@ -1,8 +1,8 @@
 //! The rules that choose the verdict, as pure functions of a few numbers:
 //! held-out and in-sample reductions of the gap above noise (%), held-out
 //! errors J and the noise level J_n (dimensionless), BIC differences,
-//! parameter counts and two flags (a parameter left idle, axles that are
-//! no tyre). The search ([`super::search`]), the screening
+//! parameter counts and three flags (a parameter left idle, one pressed on
+//! its search bound, axles that are no tyre). The search ([`super::search`]), the screening
 //! ([`super::screening`]) and the verdict ([`super::conclude`]) call them
 //! and nothing else decides; the tests below hold each threshold and each
 //! ordering at its boundary.
@@ -11,6 +11,7 @@
 //! `1 − G_after/G_before` ([`crate::diagnose::verdict::score`]). The method
 //! is the project's own (the book's diagnosis chapter states it).
 
+use crate::diagnose::model::channels::gap_above;
 use crate::diagnose::report::{Refusal, Refused, VerdictKind};
 
 /// Share of the held-out gap above noise an effect must remove to be
@@ -154,6 +155,10 @@ pub struct Candidate {
     pub idle: bool,
     /// Its axles are no tyre: it cannot be a verdict, nor start one.
     pub degenerate: bool,
+    /// One of its effect parameters is pressed on the end of its search
+    /// range: the data would take it further, so its value bounds the
+    /// effect's size rather than measures it.
+    pub pressed: bool,
 }
 
 /// Candidates best first: indices of `heldout` (held-out errors) from the
@@ -166,13 +171,22 @@ pub fn best_first(heldout: &[f64]) -> Vec<usize> {
 
 /// Of candidates ranked best first, the one to take (an index into
 /// `ranked`): those whose axles are no tyre left out, the first of the
-/// others, or where it leaves a parameter idle the one with the fewest
-/// parameters within [`PARSIMONY`] noise levels of it (the first of
-/// those with as few). `None` without a candidate whose axles are a tyre.
+/// others, with two exceptions. Where it is pressed on a search bound and
+/// a look-alike is not (one whose gap above noise is within the
+/// [`lookalike`] window of it: at most [`CONFOUNDED`]·G +
+/// [`CONFOUNDED_NOISE`]·J_n), only the candidates not pressed are read:
+/// an effect that explains the gap only at the end of its plausible range
+/// stands in for something else, where one that explains it about as well
+/// from inside its range measures it (a 0.3 s sensor delay against a
+/// steer path's determined delay and lag). And where the one read first
+/// leaves a parameter idle, the one with the fewest parameters within
+/// [`PARSIMONY`] noise levels of it is taken (the first of those with as
+/// few). `None` without a candidate whose axles are a tyre.
 pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
     let usable: Vec<usize> = (0..ranked.len())
         .filter(|&k| !ranked[k].degenerate)
         .collect();
+    let usable = inside_ranges(ranked, &usable, jn).unwrap_or(usable);
     let top = &ranked[*usable.first()?];
     if !top.idle {
         return usable.first().copied();
@@ -181,6 +195,32 @@ pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
         .into_iter()
         .filter(|&k| ranked[k].heldout <= top.heldout + PARSIMONY * jn)
         .min_by_key(|&k| ranked[k].parameters)
+}
+
+/// The best of `ranked` whose axles are a tyre where [`pick`] passes it
+/// over for being pressed on a search bound (an index into `ranked`).
+pub fn passed_over(ranked: &[Candidate], jn: f64) -> Option<usize> {
+    let usable: Vec<usize> = (0..ranked.len())
+        .filter(|&k| !ranked[k].degenerate)
+        .collect();
+    inside_ranges(ranked, &usable, jn).map(|_| usable[0])
+}
+
+/// Of the `usable` candidates (best first), those not pressed on a search
+/// bound whose gap is within the look-alike window of the first, where
+/// the first is pressed and there are any.
+fn inside_ranges(ranked: &[Candidate], usable: &[usize], jn: f64) -> Option<Vec<usize>> {
+    let first = &ranked[*usable.first()?];
+    if !first.pressed {
+        return None;
+    }
+    let window = CONFOUNDED * gap_above(first.heldout, jn) + CONFOUNDED_NOISE * jn;
+    let inside: Vec<usize> = usable
+        .iter()
+        .copied()
+        .filter(|&k| !ranked[k].pressed && gap_above(ranked[k].heldout, jn) <= window)
+        .collect();
+    (!inside.is_empty()).then_some(inside)
 }
 
 /// Which case the verdict is: effects `accepted`, else no gap where it is
@@ -196,16 +236,26 @@ pub fn case(accepted: bool, significant: bool, base_no_tyre: bool) -> VerdictKin
     }
 }
 
+/// Why the search started from another candidate than the best.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GaveWay {
+    /// The best leaves a parameter idle: a simpler one as good.
+    Idle,
+    /// The best is pressed on a search bound: a look-alike inside its
+    /// ranges.
+    Pressed,
+}
+
 /// Why a candidate (its held-out reduction, BIC against the base's and
 /// whether its axles are no tyre, `no_tyre` their reasons) is not the
 /// verdict, by the rules it fails: its axles, the acceptance share, the
-/// BIC. Where it fails none, the search went on from `instead` (a
-/// simpler candidate it gave way to where it leaves a parameter `idle`,
-/// else the set its own search ended on), and that was refused.
+/// BIC. Where it fails none, the search went on from `instead` (the
+/// candidate it `gave_way` to, else the set its own search ended on), and
+/// that was refused.
 pub fn refused(
     candidate: (Vec<crate::diagnose::effects::EffectKind>, f64, f64),
     no_tyre: Vec<crate::diagnose::base::identify::NoTyre>,
-    idle: bool,
+    gave_way: Option<GaveWay>,
     instead: Option<Refused>,
 ) -> Refused {
     let (effects, reduction_percent, delta_bic) = candidate;
@@ -222,16 +272,16 @@ pub fn refused(
         why.push(Refusal::BicNotLower { delta_bic });
     }
     if why.is_empty() {
-        why.extend(instead.map(|other| {
-            if idle {
-                Refusal::LeavesParameterIdle {
-                    simpler: Box::new(other),
-                }
-            } else {
-                Refusal::SearchEndedOn {
-                    set: Box::new(other),
-                }
-            }
+        why.extend(instead.map(|other| match gave_way {
+            Some(GaveWay::Idle) => Refusal::LeavesParameterIdle {
+                simpler: Box::new(other),
+            },
+            Some(GaveWay::Pressed) => Refusal::PressedOnSearchBound {
+                inside: Box::new(other),
+            },
+            None => Refusal::SearchEndedOn {
+                set: Box::new(other),
+            },
         }));
     }
     Refused {

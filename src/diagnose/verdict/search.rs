@@ -110,9 +110,14 @@ impl Baseline {
     }
 
     /// Why a candidate is not the verdict ([`rules::refused`]); `gave_way`
-    /// where the search started from a simpler one in its place, and
-    /// `instead` the set the search ended on.
-    pub(crate) fn refused(&self, sc: &Scored, gave_way: bool, instead: Option<Refused>) -> Refused {
+    /// why the search started from another in its place, and `instead`
+    /// the set the search ended on.
+    pub(crate) fn refused(
+        &self,
+        sc: &Scored,
+        gave_way: Option<rules::GaveWay>,
+        instead: Option<Refused>,
+    ) -> Refused {
         let r = self.rank(sc);
         rules::refused(
             (r.effects, r.reduction_percent, r.delta_bic),
@@ -129,6 +134,7 @@ impl Baseline {
             parameters: sc.full.free_count(),
             idle: idle(sc, &self.layout(&sc.kinds)),
             degenerate: self.degenerate(sc),
+            pressed: pressed(sc, &self.layout(&sc.kinds)),
         }
     }
 
@@ -282,6 +288,9 @@ pub(crate) struct Search {
     pub(crate) lookalikes: Vec<usize>,
     /// The single the search started from (an index into the singles).
     pub(crate) start: Option<usize>,
+    /// The best single where it was pressed on a search bound and the
+    /// search started from a look-alike inside its ranges instead.
+    pub(crate) passed_over: Option<usize>,
     /// Where no set was accepted, the one the search ended on and why it
     /// was refused.
     pub(crate) ended: Option<Refused>,
@@ -319,13 +328,16 @@ pub(crate) fn search(
         return out;
     };
     out.start = Some(first);
+    // The best whose axles are a tyre, where the pick passed it over for
+    // being pressed on a search bound.
+    out.passed_over = rules::passed_over(&ranked, jn).map(|k| order[k]);
     let best = &singles[first];
     let r = base.rank(best);
     // A best single below the acceptance share can still be half of a
     // pair of effects: the greedy search starts from it when it is
     // promising, and the set found must pass as a whole.
     if !rules::promising(r.reduction_percent, r.delta_bic) {
-        out.ended = Some(base.refused(best, false, None));
+        out.ended = Some(base.refused(best, None, None));
         return out;
     }
     out.lookalikes = lookalikes(singles, &usable, first, &r, base);
@@ -359,7 +371,7 @@ pub(crate) fn search(
     if rules::accepted(total, current.full.bic(), base.bic0) {
         out.chosen = Some(current);
     } else {
-        out.ended = Some(base.refused(&current, false, None));
+        out.ended = Some(base.refused(&current, None, None));
     }
     let chosen = out.chosen.as_ref().map(|c| c.kinds.as_slice());
     one_row_per_set(&mut out.combinations, chosen);
@@ -440,6 +452,16 @@ fn idle(sc: &Scored, layout: &Layout) -> bool {
             None => off || (!q.off.is_nan() && (se.is_nan() || (value - q.off).abs() < 2.0 * se)),
         }
     })
+}
+
+/// Whether one of a fit's effect parameters (not the roll dynamics, whose
+/// damping a roll effect presses on its bound where the runs barely roll)
+/// lies on the end of its search range ([`Bound::Search`]).
+fn pressed(sc: &Scored, layout: &Layout) -> bool {
+    let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
+    params
+        .zip(layout.effects())
+        .any(|(q, i)| q.bound_at(sc.full.params[i]) == Some(Bound::Search))
 }
 
 /// Greedy additions from `start`: the effect that best closes what is left,

@@ -146,6 +146,9 @@ fn no_sentence_claims_a_removal_above_acceptance_and_that_nothing_explains_the_g
         Refusal::LeavesParameterIdle {
             simpler: Box::new(simpler.clone()),
         },
+        Refusal::PressedOnSearchBound {
+            inside: Box::new(simpler.clone()),
+        },
         Refusal::SearchEndedOn {
             set: Box::new(simpler),
         },
@@ -259,6 +262,33 @@ fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> Param
         unseen: false,
         held: None,
     }
+}
+
+#[test]
+fn a_lookalike_passed_over_for_its_search_bound_is_named_with_the_value_it_needed() {
+    let e = Evidence::LookalikePressed {
+        effects: vec![EffectKind::SensorDelay],
+        reduction_percent: 54.3,
+        pressed: vec![fitted("sensor_delay.delay", "s", 0.3, Some(Bound::Search))],
+    };
+    assert_eq!(
+        evidence(&e),
+        "chosen over a look-alike pressed on its search range: sensor_delay, which removes 54.3 %, but only with sensor_delay.delay = 0.3000 s at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges"
+    );
+    let r = Refusal::PressedOnSearchBound {
+        inside: Box::new(Refused {
+            effects: vec![EffectKind::SteerPath],
+            reduction_percent: 25.0,
+            why: vec![Refusal::BelowAcceptance {
+                threshold_percent: 30.0,
+            }],
+        }),
+    };
+    let s = statement(&outside(31.0, vec![r]));
+    assert!(
+        s.contains("a parameter of it is pressed on its search bound, and the look-alike inside its ranges was taken in its place: steer_path, which removes 25.0 % and is refused"),
+        "{s}"
+    );
 }
 
 #[test]

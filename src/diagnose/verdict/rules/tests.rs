@@ -102,7 +102,58 @@ fn cand(heldout: f64, parameters: usize, idle: bool, degenerate: bool) -> Candid
         parameters,
         idle,
         degenerate,
+        pressed: false,
     }
+}
+
+fn pressed(c: Candidate) -> Candidate {
+    Candidate { pressed: true, ..c }
+}
+
+#[test]
+fn a_best_pressed_on_its_search_bound_gives_way_to_a_lookalike_inside_its_ranges() {
+    // Gaps above noise (J_n = 1): √(2.6² − 1) = 2.400, √(2.72² − 1) =
+    // 2.530; the window 1.5·2.400 + 0.25 = 3.850, J = √(3.85² + 1) = 3.978.
+    let ranked = [
+        pressed(cand(2.6, 1, false, false)),
+        cand(2.72, 2, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(1));
+    assert_eq!(passed_over(&ranked, 1.0), Some(0));
+    // Just inside the window, and just outside it: then the pressed best.
+    let at = |j: f64| {
+        [
+            pressed(cand(2.6, 1, false, false)),
+            cand(j, 2, false, false),
+        ]
+    };
+    assert_eq!(pick(&at(3.97), 1.0), Some(1));
+    assert_eq!(pick(&at(3.99), 1.0), Some(0));
+    assert_eq!(passed_over(&at(3.99), 1.0), None);
+    // A look-alike pressed too: the best.
+    let ranked = [
+        pressed(cand(2.6, 1, false, false)),
+        pressed(cand(2.7, 2, false, false)),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(0));
+    // Not pressed, the best is taken over a look-alike as usual.
+    let ranked = [cand(2.6, 1, false, false), cand(2.72, 2, false, false)];
+    assert_eq!(pick(&ranked, 1.0), Some(0));
+    // The look-alike read first leaves a parameter idle: the simplest
+    // within the parsimony window of it, the pressed one left out.
+    let ranked = [
+        pressed(cand(2.6, 1, false, false)),
+        cand(2.7, 3, true, false),
+        pressed(cand(2.72, 0, false, false)),
+        cand(2.75, 2, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(3));
+    // No tyre: never read, pressed or not.
+    let ranked = [
+        pressed(cand(2.6, 1, false, false)),
+        cand(2.7, 1, false, true),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(0));
 }
 
 #[test]
@@ -180,23 +231,23 @@ fn a_refused_candidate_names_every_rule_it_fails() {
     let bias = vec![EffectKind::SensorBias];
     // The sedan's sensor bias: 53.5 % held out, a lower BIC, axles no
     // tyre — refused for the axles only, never for the share.
-    let r = refused((bias.clone(), 53.5, -500.0), rigid(), false, None);
+    let r = refused((bias.clone(), 53.5, -500.0), rigid(), None, None);
     assert_eq!(r.why, [Refusal::AxlesNoTyre { no_tyre: rigid() }]);
     assert_eq!((r.effects, r.reduction_percent), (bias.clone(), 53.5));
     // At the acceptance boundary.
-    let below = refused((bias.clone(), 29.9, -5.0), Vec::new(), false, None);
+    let below = refused((bias.clone(), 29.9, -5.0), Vec::new(), None, None);
     assert_eq!(
         below.why,
         [Refusal::BelowAcceptance {
             threshold_percent: 30.0
         }]
     );
-    assert!(refused((bias.clone(), 30.0, 0.0), Vec::new(), false, None)
+    assert!(refused((bias.clone(), 30.0, 0.0), Vec::new(), None, None)
         .why
         .iter()
         .all(|w| !matches!(w, Refusal::BelowAcceptance { .. })));
     // Every rule it fails, in order: axles, share, BIC.
-    let all = refused((bias.clone(), 12.0, 3.0), rigid(), false, None);
+    let all = refused((bias.clone(), 12.0, 3.0), rigid(), None, None);
     assert_eq!(
         all.why,
         [
@@ -214,14 +265,14 @@ fn a_candidate_that_passes_is_refused_through_where_the_search_went_instead() {
     let simpler = refused(
         (vec![EffectKind::SensorDelay], 28.0, -9.0),
         Vec::new(),
-        false,
+        None,
         None,
     );
     // It gave way to a simpler one (it leaves a parameter idle).
     let idle = refused(
         (vec![EffectKind::SteerPath], 31.0, -10.0),
         Vec::new(),
-        true,
+        Some(GaveWay::Idle),
         Some(simpler.clone()),
     );
     assert_eq!(
@@ -234,15 +285,29 @@ fn a_candidate_that_passes_is_refused_through_where_the_search_went_instead() {
     let ended = refused(
         (vec![EffectKind::SteerPath], 31.0, -10.0),
         Vec::new(),
-        false,
+        None,
         Some(simpler.clone()),
     );
     assert!(matches!(&ended.why[..], [Refusal::SearchEndedOn { .. }]));
+    // It gave way to a look-alike inside its ranges (it is pressed on a
+    // search bound).
+    let pressed = refused(
+        (vec![EffectKind::SensorDelay], 54.3, -30.0),
+        Vec::new(),
+        Some(GaveWay::Pressed),
+        Some(simpler.clone()),
+    );
+    assert_eq!(
+        pressed.why,
+        [Refusal::PressedOnSearchBound {
+            inside: Box::new(simpler.clone())
+        }]
+    );
     // Where it fails a rule itself, that is the reason, not the others.
     let own = refused(
         (vec![EffectKind::SteerPath], 20.0, -10.0),
         Vec::new(),
-        true,
+        Some(GaveWay::Idle),
         Some(simpler),
     );
     assert_eq!(own.why.len(), 1);

@@ -23,7 +23,7 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::above_noise;
-use crate::diagnose::report::parts::{regime_samples, scatter, window_samples, Part};
+use crate::diagnose::report::parts::{regime_samples, scatter_by, window_samples, Part, Scatter};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
@@ -91,6 +91,10 @@ pub enum NoiseSource {
     /// ten samples).
     #[serde(rename = "standard deviation before the input")]
     BeforeInput,
+    /// `1.4826·MAD(Δ²x)/√6` over the whole record: the window before the
+    /// input holds motion.
+    #[serde(rename = "robust second differences (the window before the input holds motion)")]
+    SecondDifferences,
     /// `std(Δx)/√2` over the whole record: an upper bound for a smooth signal.
     #[serde(rename = "first differences (an upper bound)")]
     FirstDifferences,
@@ -203,13 +207,11 @@ pub fn trusted_channel_gap(
     // unquiet start, not what the channel can be trusted to.
     let (noise_floor, noise_source) = match trusted {
         Some(f) if f > 0.0 => (f, NoiseSource::Trusted),
-        _ => (
-            scatter(&win[0].1, measured),
-            match win[0].1.len() {
-                0..=9 => NoiseSource::FirstDifferences,
-                _ => NoiseSource::BeforeInput,
-            },
-        ),
+        _ => match scatter_by(&win[0].1, measured) {
+            (s, Scatter::BeforeInput) => (s, NoiseSource::BeforeInput),
+            (s, Scatter::SecondDifferences) => (s, NoiseSource::SecondDifferences),
+            (s, Scatter::FirstDifferences) => (s, NoiseSource::FirstDifferences),
+        },
     };
     let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);

@@ -145,15 +145,73 @@ fn std_dev(v: &[f64]) -> f64 {
     (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len().max(1) as f64).sqrt()
 }
 
+/// How a channel's high-frequency scatter was estimated ([`scatter_by`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Scatter {
+    /// The standard deviation over the window before the input.
+    BeforeInput,
+    /// The robust second differences: the window before the input holds
+    /// motion.
+    SecondDifferences,
+    /// The first differences over √2: no window before the input.
+    FirstDifferences,
+}
+
+/// A window before the input whose standard deviation exceeds this multiple
+/// of the robust second-difference scatter holds motion, not only noise.
+pub(crate) const MOTION: f64 = 1.5;
+
 /// A measured channel's high-frequency scatter: the standard deviation over
 /// the samples `pre` before the input (ten or more), else of its first
 /// differences over √2 (an upper bound for a smooth signal).
 pub(crate) fn scatter(pre: &[usize], measured: &[f64]) -> f64 {
+    scatter_by(pre, measured).0
+}
+
+/// [`scatter`] and how it was estimated. A window before the input is
+/// quiet in a step-steer programme, but a hand-driven log starts by pulling
+/// away and turning out of the pits: where its standard deviation exceeds
+/// [`MOTION`] times the robust scatter of the second differences
+/// ([`second_difference_scatter`]), the window holds motion and the second
+/// differences are the scatter.
+pub(crate) fn scatter_by(pre: &[usize], measured: &[f64]) -> (f64, Scatter) {
     if pre.len() >= 10 {
-        return std_dev(&pre.iter().map(|&i| measured[i]).collect::<Vec<_>>());
+        let before = std_dev(&pre.iter().map(|&i| measured[i]).collect::<Vec<_>>());
+        let robust = second_difference_scatter(measured);
+        return if before > MOTION * robust {
+            (robust, Scatter::SecondDifferences)
+        } else {
+            (before, Scatter::BeforeInput)
+        };
     }
     let d: Vec<f64> = measured.windows(2).map(|w| w[1] - w[0]).collect();
-    std_dev(&d) / 2f64.sqrt()
+    (std_dev(&d) / 2f64.sqrt(), Scatter::FirstDifferences)
+}
+
+/// The standard deviation of white noise on `x` from its second
+/// differences, robustly: `1.4826·MAD(Δ²x)/√6` (white noise of variance σ²
+/// has second differences of variance 6σ², and 1.4826·MAD estimates a
+/// Gaussian's standard deviation). A signal sampled fast against its
+/// bandwidth barely moves its second differences, and the median absolute
+/// deviation ignores the spikes and the fast stretches that do (Hampel
+/// 1974). NaN on fewer than three samples.
+pub(crate) fn second_difference_scatter(x: &[f64]) -> f64 {
+    if x.len() < 3 {
+        return f64::NAN;
+    }
+    let mut d: Vec<f64> = x.windows(3).map(|w| w[2] - 2.0 * w[1] + w[0]).collect();
+    let median = |v: &mut [f64]| {
+        v.sort_by(f64::total_cmp);
+        let n = v.len();
+        if n % 2 == 1 {
+            v[n / 2]
+        } else {
+            0.5 * (v[n / 2 - 1] + v[n / 2])
+        }
+    };
+    let m = median(&mut d);
+    let mut dev: Vec<f64> = d.iter().map(|v| (v - m).abs()).collect();
+    1.4826 * median(&mut dev) / 6f64.sqrt()
 }
 
 /// The samples of each time window ([`Window::ALL`], in order): before the
@@ -260,5 +318,56 @@ mod tests {
         let total = |v: &[(Part, Vec<usize>)]| v.iter().map(|p| p.1.len()).sum::<usize>();
         assert_eq!(total(&windows), t.len());
         assert_eq!(total(&regimes), 2 * t.len());
+    }
+
+    /// A record of `n` samples at 100 Hz: white Gaussian noise of standard
+    /// deviation `sigma` on `signal(t)`.
+    fn record(n: usize, sigma: f64, signal: impl Fn(f64) -> f64) -> Vec<f64> {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        (0..n)
+            .map(|i| signal(0.01 * i as f64) + sigma * crate::identify::data::gauss(&mut rng))
+            .collect()
+    }
+
+    #[test]
+    fn the_robust_second_differences_measure_white_noise_on_a_smooth_signal() {
+        // 0.002 of noise on a 0.3 amplitude, 0.5 Hz yaw rate: within 3 %.
+        let sine = |t: f64| 0.3 * (std::f64::consts::TAU * 0.5 * t).sin();
+        let x = record(10_000, 0.002, sine);
+        let s = second_difference_scatter(&x);
+        assert!((s / 0.002 - 1.0).abs() < 0.03, "{s}");
+        // One spike in a hundred samples moves it by little; the standard
+        // deviation of the first differences by a factor of more than 3.
+        let mut spiked = x.clone();
+        for v in spiked.iter_mut().step_by(100) {
+            *v += 0.1;
+        }
+        let s = second_difference_scatter(&spiked);
+        assert!((s / 0.002 - 1.0).abs() < 0.06, "{s}");
+        assert!(second_difference_scatter(&[1.0, 2.0]).is_nan());
+    }
+
+    #[test]
+    fn a_window_before_the_input_that_holds_motion_gives_way_to_the_second_differences() {
+        let pre: Vec<usize> = (0..500).collect();
+        // Quiet before the input: its standard deviation, as before.
+        let quiet = record(2000, 0.002, |t| if t < 5.0 { 0.0 } else { 0.2 });
+        let (s, how) = scatter_by(&pre, &quiet);
+        assert_eq!(how, Scatter::BeforeInput);
+        assert!((s / 0.002 - 1.0).abs() < 0.1, "{s}");
+        // Pulling away and turning out of the pits before the steer input:
+        // a 0.01 rad/s, 0.3 Hz wander that the standard deviation takes for
+        // noise (0.0073), and the second differences do not.
+        let moving = record(2000, 0.002, |t| {
+            0.01 * (std::f64::consts::TAU * 0.3 * t).sin()
+        });
+        let before = std_dev(&moving[..500]);
+        assert!(before > 3.0 * 0.002, "{before}");
+        let (s, how) = scatter_by(&pre, &moving);
+        assert_eq!(how, Scatter::SecondDifferences);
+        assert!((s / 0.002 - 1.0).abs() < 0.06, "{s}");
+        // Without a window before the input: the first differences.
+        assert_eq!(scatter_by(&[], &moving).1, Scatter::FirstDifferences);
     }
 }

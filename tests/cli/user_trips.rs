@@ -1,0 +1,70 @@
+//! What a user still trips on after the fresh-eyes round, run as a user
+//! runs the tool: a measured CSV saved as Latin-1.
+
+use super::*;
+
+/// The bundled sedan step simulated into `dir/sim`: its `history.csv`
+/// (a run in the measured format) as text.
+fn sedan_history(dir: &Path) -> String {
+    let sim = dir.join("sim");
+    let o = run(&[
+        "simulate",
+        root().join("scenarios/sedan_step.toml").to_str().unwrap(),
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    fs::read_to_string(sim.join("history.csv")).unwrap()
+}
+
+/// Runs `metrics` on `bytes` written as `dir/name`: success and what it
+/// printed (stdout, or stderr on failure).
+fn metrics_of(dir: &Path, name: &str, bytes: &[u8]) -> (bool, String) {
+    let file = dir.join(name);
+    fs::write(&file, bytes).unwrap();
+    let o = run(&["metrics", file.to_str().unwrap(), "--filter-hz", "0"]);
+    let said = match o.status.success() {
+        true => String::from_utf8_lossy(&o.stdout).into_owned(),
+        false => stderr(&o),
+    };
+    (o.status.success(), said)
+}
+
+const LATIN1: &str =
+    "byte 0xE9 is not UTF-8: the file must be UTF-8 text (was it saved as Latin-1 or Windows-1252?)";
+
+/// A byte that is not UTF-8 in a row or the header of a measured run is
+/// refused at its line and column, the row's naming its column, as a TOML
+/// file's is (it was "malformed CSV row: CSV parse error: record 2 (line 3,
+/// field: 1, …)" at column 1); one in a comment line is no refusal.
+#[test]
+fn a_csv_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let header: Vec<&str> = history.lines().next().unwrap().split(',').collect();
+    let steer = header.iter().position(|c| *c == "steer").unwrap();
+    // Line 3 (the second row): its steer cell starts with é in Latin-1.
+    let mut rows: Vec<Vec<u8>> = history.lines().map(|l| l.as_bytes().to_vec()).collect();
+    let mut cells: Vec<Vec<u8>> = rows[2].split(|&b| b == b',').map(<[u8]>::to_vec).collect();
+    cells[steer].insert(0, 0xE9);
+    rows[2] = cells.join(&b',');
+    let (ok, e) = metrics_of(dir.path(), "row.csv", &(rows.join(&b'\n')));
+    assert!(!ok, "{e}");
+    let expected = format!("row.csv:3:{}: column `steer`: {LATIN1}", steer + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // In the header: at its line and column.
+    let yaw = header.iter().position(|c| *c == "yaw_rate").unwrap();
+    let mut bytes = history.replacen("yaw_rate", "yaw_r\u{0}te", 1).into_bytes();
+    let at = bytes.iter().position(|&b| b == 0).unwrap();
+    bytes[at] = 0xE9;
+    let (ok, e) = metrics_of(dir.path(), "header.csv", &bytes);
+    assert!(!ok, "{e}");
+    let expected = format!("header.csv:1:{}: {LATIN1}", yaw + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // In a comment line: read as before.
+    let mut bytes = b"# essai d'\xE9t\xE9\n".to_vec();
+    bytes.extend(history.as_bytes());
+    let (ok, said) = metrics_of(dir.path(), "comment.csv", &bytes);
+    assert!(ok, "{said}");
+    assert!(said.contains("Er "), "{said}");
+}

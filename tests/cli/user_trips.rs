@@ -1,5 +1,6 @@
 //! What a user still trips on after the fresh-eyes round, run as a user
-//! runs the tool: a measured CSV saved as Latin-1.
+//! runs the tool: a measured CSV saved as Latin-1, and an output lock whose
+//! process id now belongs to another program.
 
 use super::*;
 
@@ -67,4 +68,60 @@ fn a_csv_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
     let (ok, said) = metrics_of(dir.path(), "comment.csv", &bytes);
     assert!(ok, "{said}");
     assert!(said.contains("Er "), "{said}");
+}
+
+/// Sets the modification time of `file` to `seconds` ago.
+fn age_by(file: &Path, seconds: u64) {
+    let then = std::time::SystemTime::now() - std::time::Duration::from_secs(seconds);
+    fs::File::options()
+        .write(true)
+        .open(file)
+        .unwrap()
+        .set_modified(then)
+        .unwrap();
+}
+
+/// A lock left by a killed run whose process id the system has since given
+/// to another program (after a restart, in a container) named a running
+/// process, and was never taken over; one naming a process that may have
+/// written it (started before it) is still refused.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_lock_naming_a_process_started_after_it_is_taken_over() {
+    let dir = scenario(VEHICLE, GIM, STEP);
+    let out = dir.path().join("out");
+    fs::create_dir(&out).unwrap();
+    let lock = out.join(".handling.lock");
+    let args = [
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]
+    .map(String::from);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    // This test's own process started before the lock: it may hold it.
+    let me = std::process::id();
+    fs::write(&lock, format!("{me}\n")).unwrap();
+    let o = run(&args);
+    let e = refused(&o, &out.join("history.csv"));
+    assert!(e.contains(&format!("another run (process {me})")), "{e}");
+    // A program started now, named by a lock written a minute ago.
+    let mut other = Command::new("sleep").arg("30").spawn().unwrap();
+    let pid = other.id();
+    fs::write(&lock, format!("{pid}\n")).unwrap();
+    age_by(&lock, 60);
+    let o = run(&args);
+    let _ = other.kill();
+    let _ = other.wait();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let note = stderr(&o);
+    assert!(
+        note.contains(&format!(
+            "was left by process {pid}, which is no longer running: process {pid} now is another program, started "
+        )) && note.contains("s after the lock was written; taking the folder over"),
+        "{note}"
+    );
+    assert!(out.join("history.csv").is_file());
+    assert!(!lock.exists(), "the lock is released after the run");
 }

@@ -1,6 +1,7 @@
 //! What a user still trips on after the fresh-eyes round, run as a user
-//! runs the tool: a measured CSV saved as Latin-1, and an output lock whose
-//! process id now belongs to another program.
+//! runs the tool: a measured CSV saved as Latin-1, an output lock whose
+//! process id now belongs to another program, and a manoeuvre that steers
+//! nothing.
 
 use super::*;
 
@@ -124,4 +125,56 @@ fn a_lock_naming_a_process_started_after_it_is_taken_over() {
     );
     assert!(out.join("history.csv").is_file());
     assert!(!lock.exists(), "the lock is released after the run");
+}
+
+/// A sine or sweep of amplitude 0, or a ramp whose rate reaches no steer
+/// by its end, ran as straight running without a word (a step steer of 0
+/// is refused at its key): refused at the key that asks for it.
+#[test]
+fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
+    let none = "the road wheels steer at most 0 rad (0.00°), less than the 0.00017 rad (0.01°) a manoeuvre must steer: the car would run straight, with no response to show";
+    for (manoeuvre, key, said) in [
+        (
+            "kind = \"sine\"\nspeed = 20.0\namplitude = 0.0\nfrequency = 0.5\nend = 4.0\n",
+            "amplitude",
+            format!("`manoeuvre.amplitude` = 0: {none}"),
+        ),
+        (
+            "kind = \"sweep\"\nspeed = 20.0\namplitude = 0\nf_start = 0.1\nf_end = 2.0\nend = 5.0\n",
+            "amplitude",
+            format!("`manoeuvre.amplitude` = 0: {none}"),
+        ),
+        (
+            // From the default start, 1 s: 3 s of ramp.
+            "kind = \"ramp-steer\"\nspeed = 20.0\nrate = 1e-5\nend = 4.0\n",
+            "rate",
+            "`manoeuvre.rate` = 1e-5: the road wheels steer at most 3e-5 rad (0.00°), less than the 0.00017 rad (0.01°)".to_string(),
+        ),
+    ] {
+        let dir = scenario(VEHICLE, GIM, &format!("[manoeuvre]\n{manoeuvre}"));
+        let file = dir.path().join("scenario.toml");
+        let text = fs::read_to_string(&file).unwrap();
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(&format!("{key} =")))
+            .unwrap()
+            + 1;
+        let e = simulate_err(dir.path());
+        let expected = format!("{}:{line}:1: {said}", file.display());
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+    // A small sine is a manoeuvre: run.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"sine\"\nspeed = 20.0\namplitude = 0.001\nfrequency = 0.5\nend = 4.0\n",
+    );
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
 }

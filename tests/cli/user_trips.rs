@@ -178,3 +178,41 @@ fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+/// A point beyond the file's load range was said to be "evaluated at the
+/// ranges' ends" while its `my`, which MFeval takes at the load given,
+/// read 800 kN·m at 1 MN: the line says which value keeps the load.
+#[test]
+fn tyre_eval_says_the_rolling_resistance_keeps_the_load_given() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.01,0.05,0,16.7\n1e6,0,0.05,0,16.7\n";
+    let dir = scratch(&[("points.csv", points)]);
+    let out = dir.path().join("forces.csv");
+    let o = run(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("1 of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends (`my` at the load given, as MFeval does)"),
+        "{said}"
+    );
+    // And it does: `my` grows with the load given, the forces do not.
+    let text = fs::read_to_string(&out).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let (fy, my) = (
+        header.iter().position(|c| *c == "fy").unwrap(),
+        header.iter().position(|c| *c == "my").unwrap(),
+    );
+    assert!(rows[1][fy].abs() < 20_000.0, "{text}");
+    assert!(rows[1][my].abs() > 100.0 * rows[0][my].abs(), "{text}");
+}

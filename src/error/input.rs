@@ -31,6 +31,11 @@ pub enum CellProblem {
     NotANumber,
     /// It is NaN or infinite.
     NotFinite,
+    /// It holds a byte that is not UTF-8 (a file saved as Latin-1).
+    NotUtf8 {
+        /// The first such byte.
+        byte: u8,
+    },
 }
 
 impl CellProblem {
@@ -39,6 +44,7 @@ impl CellProblem {
             CellProblem::NotANumber if cell.is_empty() => "empty cell: a number is needed".into(),
             CellProblem::NotANumber => format!("`{cell}` is not a number"),
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
+            CellProblem::NotUtf8 { byte } => InputProblem::NotUtf8 { byte }.to_string(),
         }
     }
 }

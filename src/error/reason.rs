@@ -19,6 +19,15 @@ pub enum ParamReason {
         /// The smallest step the metrics take as one, rad.
         min: f64,
     },
+    /// A ramp, sine or sweep whose steer stays below the smallest step the
+    /// metrics take as one: straight running, nothing to respond to. Rad.
+    #[error("the road wheels steer at most {} rad ({}°), less than the {min:.5} rad ({:.2}°) a manoeuvre must steer: the car would run straight, with no response to show", super::number::Num(*reached), crate::format::fixed(reached.to_degrees(), 2), min.to_degrees())]
+    NoSteer {
+        /// The largest steer the manoeuvre reaches, rad.
+        reached: f64,
+        /// The smallest step the metrics take as one, rad.
+        min: f64,
+    },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]
     NotPositive,

@@ -74,6 +74,37 @@ fn line_of(bytes: &[u8], p: &csv::Position) -> usize {
     p.line() as usize + usize::from(uncounted)
 }
 
+/// Where the CSV reader found a byte that is not UTF-8: the byte, its
+/// 1-based line and its 1-based CSV column (field).
+struct BadByte {
+    byte: u8,
+    line: usize,
+    column: usize,
+}
+
+/// The byte that is not UTF-8 behind the reader's error `e`, if that is
+/// what `e` is: the reader gives the record and the field, not the byte
+/// or its line (the first bad byte from the record's start is the one,
+/// and a quoted field may span lines, so the line is counted to it).
+/// A comment line the reader skips may hold any bytes: only a record's
+/// are refused.
+fn not_utf8(bytes: &[u8], e: &csv::Error) -> Option<BadByte> {
+    let csv::ErrorKind::Utf8 { pos, err } = e.kind() else {
+        return None;
+    };
+    let start = pos
+        .as_ref()
+        .map_or(0, |p| p.byte() as usize)
+        .min(bytes.len());
+    let offset = std::str::from_utf8(&bytes[start..]).err()?.valid_up_to();
+    let at = start + offset;
+    Some(BadByte {
+        byte: bytes[at],
+        line: bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1,
+        column: err.field() + 1,
+    })
+}
+
 /// Long names of the time column that a logger writes.
 const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
 
@@ -121,10 +152,16 @@ pub fn read_columns(
         .from_reader(bytes.as_slice());
     let headers = rdr
         .headers()
-        .map_err(|e| {
-            file_err(InputProblem::Header {
+        .map_err(|e| match not_utf8(&bytes, &e) {
+            Some(at) => InputError::problem_at(
+                path,
+                at.line,
+                at.column,
+                InputProblem::NotUtf8 { byte: at.byte },
+            ),
+            None => file_err(InputProblem::Header {
                 detail: e.to_string(),
-            })
+            }),
         })?
         .clone();
     let mut wanted: Vec<(usize, String)> = Vec::new();
@@ -165,6 +202,16 @@ pub fn read_columns(
     }
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {
+            if let Some(at) = not_utf8(&bytes, &e) {
+                return InputError::Cell {
+                    path: path.to_path_buf(),
+                    line: at.line,
+                    column: at.column,
+                    name: headers.get(at.column - 1).unwrap_or("").to_string(),
+                    cell: String::new(),
+                    problem: CellProblem::NotUtf8 { byte: at.byte },
+                };
+            }
             let line = line_at(e.position());
             // The reader's own message repeats its line, one short in a
             // CRLF file: only what is wrong is kept.

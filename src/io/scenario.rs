@@ -489,6 +489,21 @@ fn ramp_reach(r: &RampSteer) -> Result<(), ParamError> {
     ))
 }
 
+/// A manoeuvre that steers the road wheels by at most `reached`, rad,
+/// refused at `key` (written as `v`) below the smallest step the metrics
+/// take as one: a sine of amplitude 0 or a ramp of rate 0 ran as straight
+/// running without a word, answering nothing the file asked.
+fn steers(key: &str, v: f64, reached: f64) -> Result<(), ParamError> {
+    if reached.abs() >= MIN_STEP {
+        return Ok(());
+    }
+    let reason = ParamReason::NoSteer {
+        reached: reached.abs(),
+        min: MIN_STEP,
+    };
+    Err(ParamError::new(key, v, reason))
+}
+
 /// Ramp, sine and sweep steers: their timing and rates checked.
 fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
     Ok(match spec {
@@ -496,6 +511,7 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, timing(r.speed, r.start, r.end))?;
             check(src, ParamError::finite("rate", r.rate))?;
             check(src, ramp_reach(r))?;
+            check(src, steers("rate", r.rate, r.rate * (r.end - r.start)))?;
             Manoeuvre::RampSteer(*r)
         }
         ManoeuvreSpec::Sine(s) => {
@@ -503,11 +519,13 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, ParamError::positive("frequency", s.frequency))?;
             check(src, frequency("frequency", s.frequency, 0.0))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
+            check(src, steers("amplitude", s.amplitude, s.amplitude))?;
             Manoeuvre::Sine(*s)
         }
         ManoeuvreSpec::Sweep(s) => {
             check(src, timing(s.speed, s.start, s.end))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
+            check(src, steers("amplitude", s.amplitude, s.amplitude))?;
             check(src, ParamError::non_negative("f_start", s.f_start))?;
             // A guard below 0, as for the rise time: f_start = 0 is allowed
             // and the range reads [0, 50].

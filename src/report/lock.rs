@@ -9,8 +9,11 @@
 //! process gone (on Linux, `/proc/<pid>` absent or a zombie), takes the lock
 //! over with a note on stderr, and removes the temporary files the killed
 //! run left (`.<name>.partial-<pid>.<ext>`, see [`super::write_atomic`]).
-//! Where process ids cannot be checked, a lock is taken as live and the
-//! message says which file to remove.
+//! A lock naming a running process that started after the lock was
+//! written is taken over too: that process is not the run that wrote it,
+//! but another program given the dead run's id (ids are reused: after a
+//! restart, or in a container). Where process ids cannot be checked, a
+//! lock is taken as live and the message says which file to remove.
 //!
 //! A lock that names no process — empty, text that is no process id or
 //! bytes that are not text (a disk that filled as it was written, an
@@ -113,6 +116,58 @@ fn alive(pid: u32) -> Option<bool> {
     Some(!matches!(state, Some('Z' | 'X')))
 }
 
+/// Clock ticks a second of the start times /proc gives (Linux's USER_HZ:
+/// 100 on every architecture but Alpha, whatever the kernel's own tick).
+const USER_HZ: f64 = 100.0;
+
+/// How long process `pid` has been running, s, where /proc tells.
+fn running_for(pid: u32) -> Option<f64> {
+    let stat = fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    // Field 22, the start in ticks since boot, is the 20th after the
+    // parenthesised command name (which may hold blanks).
+    let start: f64 = stat
+        .rsplit(')')
+        .next()?
+        .split_whitespace()
+        .nth(19)?
+        .parse()
+        .ok()?;
+    let uptime = fs::read_to_string("/proc/uptime").ok()?;
+    let uptime: f64 = uptime.split_whitespace().next()?.parse().ok()?;
+    Some(uptime - start / USER_HZ)
+}
+
+/// Seconds by which a process must have started after its lock was
+/// written to be judged another program: the start and the file's time
+/// come from two clocks, each read to 10 ms, the file's set when the id
+/// was written, milliseconds after the run started.
+const START_MARGIN: f64 = 2.0;
+
+/// Why the lock `file`, which names process `pid`, is stale, or `None`
+/// when that process may be the run that wrote it: gone (a killed run),
+/// or running but started after the lock was written, so another program
+/// that the system gave the dead run's id (after a restart, or in a
+/// container whose first process takes the same small ids), which is no
+/// run of this tool holding the folder.
+fn stale_because(pid: u32, file: &Path) -> Option<String> {
+    match alive(pid) {
+        Some(false) => Some(format!(
+            "was left by process {pid}, which is no longer running (killed?)"
+        )),
+        Some(true) => {
+            let lock_age = age(file);
+            let ran = running_for(pid)?;
+            (ran + START_MARGIN < lock_age).then(|| {
+                format!(
+                    "was left by process {pid}, which is no longer running: process {pid} now is another program, started {:.0} s after the lock was written",
+                    lock_age - ran
+                )
+            })
+        }
+        None => None,
+    }
+}
+
 /// The folders `create_dir_all(dir)` is about to create, deepest first.
 fn missing_folders(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -202,16 +257,13 @@ impl OutputLock {
             let holder = process_named(&text);
             match holder {
                 Some(pid) if pid == me => return Ok(Self::held(file, created, false)),
-                Some(pid) if alive(pid) == Some(false) => {
-                    Self::take_over(
-                        dir,
-                        &file,
-                        &text,
-                        &format!("was left by process {pid}, which is no longer running (killed?)"),
-                    )?;
-                    remove_partials(dir, pid);
-                }
-                Some(pid) => return Err(Self::busy(dir, &file, &format!("process {pid}"))),
+                Some(pid) => match stale_because(pid, &file) {
+                    Some(why) => {
+                        Self::take_over(dir, &file, &text, &why)?;
+                        remove_partials(dir, pid);
+                    }
+                    None => return Err(Self::busy(dir, &file, &format!("process {pid}"))),
+                },
                 None => {
                     // A lock being written this instant holds no number
                     // yet: look again before judging it.

@@ -257,6 +257,7 @@ mod trips_inputs;
 mod trips_limits;
 mod trips_outputs;
 mod trips_units;
+mod user_trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.
 pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {

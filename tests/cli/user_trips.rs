@@ -1,0 +1,218 @@
+//! What a user still trips on after the fresh-eyes round, run as a user
+//! runs the tool: a measured CSV saved as Latin-1, an output lock whose
+//! process id now belongs to another program, and a manoeuvre that steers
+//! nothing.
+
+use super::*;
+
+/// The bundled sedan step simulated into `dir/sim`: its `history.csv`
+/// (a run in the measured format) as text.
+fn sedan_history(dir: &Path) -> String {
+    let sim = dir.join("sim");
+    let o = run(&[
+        "simulate",
+        root().join("scenarios/sedan_step.toml").to_str().unwrap(),
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    fs::read_to_string(sim.join("history.csv")).unwrap()
+}
+
+/// Runs `metrics` on `bytes` written as `dir/name`: success and what it
+/// printed (stdout, or stderr on failure).
+fn metrics_of(dir: &Path, name: &str, bytes: &[u8]) -> (bool, String) {
+    let file = dir.join(name);
+    fs::write(&file, bytes).unwrap();
+    let o = run(&["metrics", file.to_str().unwrap(), "--filter-hz", "0"]);
+    let said = match o.status.success() {
+        true => String::from_utf8_lossy(&o.stdout).into_owned(),
+        false => stderr(&o),
+    };
+    (o.status.success(), said)
+}
+
+const LATIN1: &str =
+    "byte 0xE9 is not UTF-8: the file must be UTF-8 text (was it saved as Latin-1 or Windows-1252?)";
+
+/// A byte that is not UTF-8 in a row or the header of a measured run is
+/// refused at its line and column, the row's naming its column, as a TOML
+/// file's is (it was "malformed CSV row: CSV parse error: record 2 (line 3,
+/// field: 1, …)" at column 1); one in a comment line is no refusal.
+#[test]
+fn a_csv_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let header: Vec<&str> = history.lines().next().unwrap().split(',').collect();
+    let steer = header.iter().position(|c| *c == "steer").unwrap();
+    // Line 3 (the second row): its steer cell starts with é in Latin-1.
+    let mut rows: Vec<Vec<u8>> = history.lines().map(|l| l.as_bytes().to_vec()).collect();
+    let mut cells: Vec<Vec<u8>> = rows[2].split(|&b| b == b',').map(<[u8]>::to_vec).collect();
+    cells[steer].insert(0, 0xE9);
+    rows[2] = cells.join(&b',');
+    let (ok, e) = metrics_of(dir.path(), "row.csv", &(rows.join(&b'\n')));
+    assert!(!ok, "{e}");
+    let expected = format!("row.csv:3:{}: column `steer`: {LATIN1}", steer + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // In the header: at its line and column.
+    let yaw = header.iter().position(|c| *c == "yaw_rate").unwrap();
+    let mut bytes = history.replacen("yaw_rate", "yaw_r\u{0}te", 1).into_bytes();
+    let at = bytes.iter().position(|&b| b == 0).unwrap();
+    bytes[at] = 0xE9;
+    let (ok, e) = metrics_of(dir.path(), "header.csv", &bytes);
+    assert!(!ok, "{e}");
+    let expected = format!("header.csv:1:{}: {LATIN1}", yaw + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // In a comment line: read as before.
+    let mut bytes = b"# essai d'\xE9t\xE9\n".to_vec();
+    bytes.extend(history.as_bytes());
+    let (ok, said) = metrics_of(dir.path(), "comment.csv", &bytes);
+    assert!(ok, "{said}");
+    assert!(said.contains("Er "), "{said}");
+}
+
+/// Sets the modification time of `file` to `seconds` ago.
+fn age_by(file: &Path, seconds: u64) {
+    let then = std::time::SystemTime::now() - std::time::Duration::from_secs(seconds);
+    fs::File::options()
+        .write(true)
+        .open(file)
+        .unwrap()
+        .set_modified(then)
+        .unwrap();
+}
+
+/// A lock left by a killed run whose process id the system has since given
+/// to another program (after a restart, in a container) named a running
+/// process, and was never taken over; one naming a process that may have
+/// written it (started before it) is still refused.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_lock_naming_a_process_started_after_it_is_taken_over() {
+    let dir = scenario(VEHICLE, GIM, STEP);
+    let out = dir.path().join("out");
+    fs::create_dir(&out).unwrap();
+    let lock = out.join(".handling.lock");
+    let args = [
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]
+    .map(String::from);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    // This test's own process started before the lock: it may hold it.
+    let me = std::process::id();
+    fs::write(&lock, format!("{me}\n")).unwrap();
+    let o = run(&args);
+    let e = refused(&o, &out.join("history.csv"));
+    assert!(e.contains(&format!("another run (process {me})")), "{e}");
+    // A program started now, named by a lock written a minute ago.
+    let mut other = Command::new("sleep").arg("30").spawn().unwrap();
+    let pid = other.id();
+    fs::write(&lock, format!("{pid}\n")).unwrap();
+    age_by(&lock, 60);
+    let o = run(&args);
+    let _ = other.kill();
+    let _ = other.wait();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let note = stderr(&o);
+    assert!(
+        note.contains(&format!(
+            "was left by process {pid}, which is no longer running: process {pid} now is another program, started "
+        )) && note.contains("s after the lock was written; taking the folder over"),
+        "{note}"
+    );
+    assert!(out.join("history.csv").is_file());
+    assert!(!lock.exists(), "the lock is released after the run");
+}
+
+/// A sine or sweep of amplitude 0, or a ramp whose rate reaches no steer
+/// by its end, ran as straight running without a word (a step steer of 0
+/// is refused at its key): refused at the key that asks for it.
+#[test]
+fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
+    let none = "the road wheels steer at most 0 rad (0.00°), less than the 0.00017 rad (0.01°) a manoeuvre must steer: the car would run straight, with no response to show";
+    for (manoeuvre, key, said) in [
+        (
+            "kind = \"sine\"\nspeed = 20.0\namplitude = 0.0\nfrequency = 0.5\nend = 4.0\n",
+            "amplitude",
+            format!("`manoeuvre.amplitude` = 0: {none}"),
+        ),
+        (
+            "kind = \"sweep\"\nspeed = 20.0\namplitude = 0\nf_start = 0.1\nf_end = 2.0\nend = 5.0\n",
+            "amplitude",
+            format!("`manoeuvre.amplitude` = 0: {none}"),
+        ),
+        (
+            // From the default start, 1 s: 3 s of ramp.
+            "kind = \"ramp-steer\"\nspeed = 20.0\nrate = 1e-5\nend = 4.0\n",
+            "rate",
+            "`manoeuvre.rate` = 1e-5: the road wheels steer at most 3e-5 rad (0.00°), less than the 0.00017 rad (0.01°)".to_string(),
+        ),
+    ] {
+        let dir = scenario(VEHICLE, GIM, &format!("[manoeuvre]\n{manoeuvre}"));
+        let file = dir.path().join("scenario.toml");
+        let text = fs::read_to_string(&file).unwrap();
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(&format!("{key} =")))
+            .unwrap()
+            + 1;
+        let e = simulate_err(dir.path());
+        let expected = format!("{}:{line}:1: {said}", file.display());
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+    // A small sine is a manoeuvre: run.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"sine\"\nspeed = 20.0\namplitude = 0.001\nfrequency = 0.5\nend = 4.0\n",
+    );
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// A point beyond the file's load range was said to be "evaluated at the
+/// ranges' ends" while its `my`, which MFeval takes at the load given,
+/// read 800 kN·m at 1 MN: the line says which value keeps the load.
+#[test]
+fn tyre_eval_says_the_rolling_resistance_keeps_the_load_given() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.01,0.05,0,16.7\n1e6,0,0.05,0,16.7\n";
+    let dir = scratch(&[("points.csv", points)]);
+    let out = dir.path().join("forces.csv");
+    let o = run(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("1 of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends (`my` at the load given, as MFeval does)"),
+        "{said}"
+    );
+    // And it does: `my` grows with the load given, the forces do not.
+    let text = fs::read_to_string(&out).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let (fy, my) = (
+        header.iter().position(|c| *c == "fy").unwrap(),
+        header.iter().position(|c| *c == "my").unwrap(),
+    );
+    assert!(rows[1][fy].abs() < 20_000.0, "{text}");
+    assert!(rows[1][my].abs() > 100.0 * rows[0][my].abs(), "{text}");
+}

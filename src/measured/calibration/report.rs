@@ -164,7 +164,7 @@ impl Rejection {
     pub fn words(&self) -> String {
         match self {
             Rejection::YawRateVaries { std, limit } => {
-                format!("the yaw rate varies by {std:.4} rad/s (limit {limit})")
+                format!("the yaw rate varies by {std:.4} rad/s (limit {limit:.4})")
             }
             Rejection::SpeedVaries { share, limit } => format!(
                 "the speed varies by {:.0} % (limit {:.0} %)",

@@ -1,7 +1,9 @@
 //! What a user still trips on after the fresh-eyes round, run as a user
-//! runs the tool: a measured CSV saved as Latin-1, an output lock whose
-//! process id now belongs to another program, and a manoeuvre that steers
-//! nothing.
+//! runs the tool: a measured CSV or a `.tir` saved as Latin-1, an output
+//! lock whose process id now belongs to another program, a manoeuvre that
+//! steers nothing, a schedule's short column, metrics windows longer than
+//! the run, a refusal that names its file twice, and a swept steer beyond
+//! the road-wheel limit `simulate` keeps to.
 
 use super::*;
 
@@ -215,4 +217,71 @@ fn tyre_eval_says_the_rolling_resistance_keeps_the_load_given() {
     );
     assert!(rows[1][fy].abs() < 20_000.0, "{text}");
     assert!(rows[1][my].abs() > 100.0 * rows[0][my].abs(), "{text}");
+}
+
+/// The sedan step's history with its steer column set to 0: a run that
+/// moves all through and holds no steer step.
+fn flat_run(history: &str) -> String {
+    let mut lines = history.lines();
+    let header = lines.next().unwrap();
+    let steer = header.split(',').position(|c| c == "steer").unwrap();
+    let mut text = format!("{header}\n");
+    for line in lines {
+        let mut cells: Vec<&str> = line.split(',').collect();
+        cells[steer] = "0";
+        text.push_str(&cells.join(","));
+        text.push('\n');
+    }
+    text
+}
+
+/// A run that is one moving piece, all its samples, was named twice:
+/// "flat.csv: no moving piece holds a steer step: flat.csv (0.00–6.00 s):
+/// no step-steer metrics (…)"; the file is said once.
+#[test]
+fn metrics_names_a_single_piece_run_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let flat = flat_run(&sedan_history(dir.path()));
+    let (ok, e) = metrics_of(dir.path(), "flat.csv", flat.as_bytes());
+    assert!(!ok, "{e}");
+    assert!(
+        e.contains("flat.csv: no step-steer metrics (no steer step: the steer stays at 0 rad (0.00°) from the initial window to the steady one"),
+        "{e}"
+    );
+    assert_eq!(e.matches("flat.csv").count(), 1, "{e}");
+}
+
+/// `--pre-window 1e308` was refused as "shorter than the initial and
+/// steady windows" without their values; a window that is no positive
+/// number of seconds was refused by the library's key, `pre_window`, not
+/// by the option given.
+#[test]
+fn metrics_windows_are_refused_with_their_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let file = dir.path().join("run.csv");
+    fs::write(&file, history).unwrap();
+    let metrics = |option: &str, value: &str| {
+        let o = run(&["metrics", file.to_str().unwrap(), option, value]);
+        assert!(!o.status.success(), "{option} {value}");
+        stderr(&o)
+    };
+    let e = metrics("--pre-window", "1e308");
+    assert!(
+        e.contains("run.csv: no step-steer metrics (the record (6.000 s) is shorter than the initial and steady windows together (`pre_window` = 1e308 s + `steady_window` = 1 s))"),
+        "{e}"
+    );
+    let e = metrics("--steady-window", "5.5");
+    assert!(
+        e.contains("(`pre_window` = 0.5 s + `steady_window` = 5.5 s)"),
+        "{e}"
+    );
+    for option in ["--pre-window", "--steady-window", "--variance-window"] {
+        let name = option[2..].replace('-', "_").to_uppercase();
+        for value in ["-1", "0", "inf", "NaN"] {
+            let e = metrics(option, value);
+            let expected = format!("invalid value '{value}' for '{option} <{name}>': a window is a positive, finite number of seconds");
+            assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        }
+    }
 }

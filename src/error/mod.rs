@@ -35,7 +35,7 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
-pub use reason::{Limit, ParamReason};
+pub use reason::{Limit, ParamReason, ScheduleColumn};
 pub use rig::Variable;
 use thiserror::Error;
 pub use units::UnitSlip;

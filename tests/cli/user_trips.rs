@@ -285,3 +285,52 @@ fn metrics_windows_are_refused_with_their_values() {
         }
     }
 }
+
+/// A schedule whose columns differ in length was refused at `t`, with
+/// the three lengths: it is refused at the short column's key and line,
+/// with its length and the longest's.
+#[test]
+fn a_schedule_s_short_column_is_refused_at_its_key() {
+    let three = "[0.0, 1.0, 2.0]";
+    let steers = "[0.0, 0.02, 0.02]";
+    let speeds = "[20.0, 20.0, 20.0]";
+    for (t, steer, speed, key, said) in [
+        (
+            three,
+            "[0.0, 0.02]",
+            speeds,
+            "steer",
+            "2 values where `t` has 3",
+        ),
+        (three, steers, "[20.0]", "speed", "1 value where `t` has 3"),
+        (
+            "[0.0, 1.0]",
+            steers,
+            speeds,
+            "t",
+            "2 values where `steer` has 3",
+        ),
+        (
+            "[0.0]",
+            "[0.0]",
+            "[20.0]",
+            "t",
+            "1 breakpoint: a schedule needs at least 2",
+        ),
+    ] {
+        let manoeuvre = format!(
+            "[manoeuvre]\nkind = \"schedule\"\nt = {t}\nsteer = {steer}\nspeed = {speed}\n"
+        );
+        let dir = scenario(VEHICLE, GIM, &manoeuvre);
+        let file = dir.path().join("scenario.toml");
+        let text = fs::read_to_string(&file).unwrap();
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(&format!("{key} =")))
+            .unwrap()
+            + 1;
+        let e = simulate_err(dir.path());
+        let expected = format!("{}:{line}:1: `manoeuvre.{key}`: {said}", file.display());
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+}

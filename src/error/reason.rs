@@ -104,9 +104,6 @@ pub enum ParamReason {
     /// A stiffness axis whose step or count gives no value.
     #[error("no values (a step or count that gives none?)")]
     NoValuesFromRange,
-    /// A swept steer beyond ±90°, or a friction or speed not positive.
-    #[error("steer must lie within ±90°, friction and speed must be positive")]
-    SweepValue,
     /// An effect the equilibrium analysis does not model.
     #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
     NotInEquilibrium,

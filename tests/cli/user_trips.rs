@@ -334,3 +334,59 @@ fn a_schedule_s_short_column_is_refused_at_its_key() {
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
     }
 }
+
+/// An equilibrium sweep of `steer`, `friction` and `speed` with the axis
+/// `axis` set to `value`, in a fresh folder.
+fn sweep_with(axis: &str, value: &str) -> tempfile::TempDir {
+    let mut sweep = [("steer", "0.1"), ("friction", "0.8"), ("speed", "20.0")];
+    sweep.iter_mut().find(|(a, _)| *a == axis).unwrap().1 = value;
+    let lines: Vec<String> = sweep.iter().map(|(a, v)| format!("{a} = {v}")).collect();
+    let file = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[sweep]\n{}\n",
+        lines.join("\n")
+    );
+    scratch(&[("sweep.toml", &file), ("tyre.toml", GIM)])
+}
+
+/// The equilibrium sweep took a steer up to ±90° where `simulate` stops at
+/// ±45°, and refused any axis with one sentence of every axis's rule: a
+/// swept steer keeps to `simulate`'s road-wheel limit, in its words, and
+/// each refusal names only the rule broken.
+#[test]
+fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
+    let sim = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"step-steer\"\nspeed = 20.0\nsteer = 1.2\n",
+    );
+    let e = simulate_err(sim.path());
+    let rule = e
+        .split("`manoeuvre.steer` = 1.2: ")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{e}"))
+        .trim();
+    assert!(rule.contains("±45°"), "{rule}");
+    let sweep_err = |axis: &str, value: &str| {
+        let dir = sweep_with(axis, value);
+        let e = fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path());
+        let file = dir.path().join("sweep.toml");
+        let line = fs::read_to_string(&file)
+            .unwrap()
+            .lines()
+            .position(|l| l.starts_with(&format!("{axis} =")))
+            .unwrap()
+            + 1;
+        (e, format!("{}:{line}:1: `sweep.{axis}` = ", file.display()))
+    };
+    for steer in ["1.2", "[0.1, 1.2]", "{ from = 0.0, to = 1.2, step = 0.6 }"] {
+        let (e, at) = sweep_err("steer", steer);
+        let expected = format!("{at}1.2: {rule}");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+    for (axis, value) in [("friction", "-1"), ("speed", "0")] {
+        let (e, at) = sweep_err(axis, value);
+        let expected = format!("{at}{value}: must be positive");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        assert!(!e.contains("steer"), "names only the rule broken: {e}");
+    }
+}

@@ -390,3 +390,50 @@ fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
         assert!(!e.contains("steer"), "names only the rule broken: {e}");
     }
 }
+
+/// A Latin-1 byte inside a `.tir` value reached the number reader as `�`
+/// ("`�1.0085` is not a number"): it is refused at its line and column
+/// as a TOML or CSV file's is; one in a comment is read past, as before.
+#[test]
+fn a_tir_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let text = fs::read_to_string(tir).unwrap();
+    let dir = scratch(&[(
+        "points.csv",
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n",
+    )]);
+    let eval = |name: &str, bytes: &[u8]| {
+        let file = dir.path().join(name);
+        fs::write(&file, bytes).unwrap();
+        let out = dir.path().join(format!("{name}.csv"));
+        let points = dir.path().join("points.csv");
+        let args = [file.to_str().unwrap(), points.to_str().unwrap()];
+        run(&[
+            "tyre-eval",
+            args[0],
+            args[1],
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    // The value of PDY1 starts with é; a comment elsewhere holds one too.
+    let mut lines: Vec<Vec<u8>> = text.lines().map(|l| l.as_bytes().to_vec()).collect();
+    let pdy1 = lines.iter().position(|l| l.starts_with(b"PDY1 ")).unwrap();
+    let at = lines[pdy1].iter().position(|&b| b == b'=').unwrap() + 1;
+    let at = at + lines[pdy1][at..].iter().take_while(|&&b| b == b' ').count();
+    lines[pdy1].insert(at, 0xE9);
+    let fnomin = lines
+        .iter()
+        .position(|l| l.starts_with(b"FNOMIN "))
+        .unwrap();
+    lines[fnomin].extend(b" $ charg\xE9e");
+    let o = eval("value.tir", &lines.join(&b'\n'));
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    let expected = format!("value.tir:{}:{}: {LATIN1}", pdy1 + 1, at + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // Only the comment's: read as before.
+    lines[pdy1].remove(at);
+    let o = eval("comment.tir", &lines.join(&b'\n'));
+    assert!(o.status.success(), "{}", stderr(&o));
+}

@@ -35,10 +35,10 @@ pub struct MetricsArgs {
     #[arg(long)]
     json: bool,
     /// Initial-value window, s.
-    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true, value_parser = window)]
     pre_window: f64,
     /// Steady-value window, s.
-    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true, value_parser = window)]
     steady_window: f64,
     /// Lowest speed kept, m/s: standstills and crawling are excluded.
     #[arg(long, default_value_t = 5.0)]
@@ -48,8 +48,19 @@ pub struct MetricsArgs {
     #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ, allow_negative_numbers = true)]
     filter_hz: f64,
     /// Total-variance window from the steer onset, s.
-    #[arg(long, default_value_t = 4.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 4.0, allow_negative_numbers = true, value_parser = window)]
     variance_window: f64,
+}
+
+/// A metrics window, s: refused at its option, with the value given, when
+/// it is not a positive finite number of seconds (the library refuses it
+/// too, but by its key in a scenario's `[metrics]`, not by the option).
+fn window(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        Ok(_) => Err("a window is a positive, finite number of seconds".into()),
+        Err(_) => Err("not a number (a window is in seconds)".into()),
+    }
 }
 
 /// `handling metrics`: notes on stderr, the table or JSON on stdout.

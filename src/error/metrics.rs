@@ -43,8 +43,15 @@ pub enum MetricsError {
     #[error("a step-steer record needs at least 10 samples with equal-length channels")]
     Shape,
     /// The record is too short for the windows.
-    #[error("the record ({0:.3} s) is shorter than the initial and steady windows together")]
-    TooShort(f64),
+    #[error("the record ({span:.3} s) is shorter than the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s)", Num(*pre_window), Num(*steady_window))]
+    TooShort {
+        /// The record's length, s.
+        span: f64,
+        /// The initial-value window, s.
+        pre_window: f64,
+        /// The steady-value window, s.
+        steady_window: f64,
+    },
     /// No steer step in the record: the steer's means in the initial and
     /// steady windows, rad, and the least change that is a step.
     #[error("{}", no_step(*initial, *steady, *min))]

@@ -15,6 +15,7 @@ mod number;
 mod options;
 mod output;
 mod param;
+mod piece;
 mod problem;
 mod reason;
 mod rig;
@@ -32,10 +33,9 @@ pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
-pub use problem::{
-    InputProblem, PathFound, PieceRefusal, RefusedPiece, RigChannel, SmallSlipSlope,
-};
-pub use reason::{Limit, ParamReason};
+pub use piece::{PieceRefusal, RefusedPiece};
+pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
+pub use reason::{Limit, ParamReason, ScheduleColumn};
 pub use rig::Variable;
 use thiserror::Error;
 pub use units::UnitSlip;

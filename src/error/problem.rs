@@ -10,9 +10,10 @@
 
 use super::duplicate::DuplicateAt;
 use super::number::Num;
+use super::piece::RefusedPiece;
 use super::rig::Variable;
 use super::units::UnitSlip;
-use super::{MetricsError, ParamError};
+use super::ParamError;
 use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
@@ -87,34 +88,6 @@ pub struct SmallSlipSlope {
     /// True when the other slip was limited to the window too (combined
     /// slip data).
     pub combined: bool,
-}
-
-/// A moving piece of a run that was not used, and why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RefusedPiece {
-    /// The piece's name (`file#k`).
-    pub name: String,
-    /// Its first time, s.
-    pub t_start: f64,
-    /// Its last time, s.
-    pub t_end: f64,
-    /// Why it was not used.
-    pub reason: PieceRefusal,
-}
-
-/// Why a moving piece of a run was not used (the cleaning report's reason
-/// for dropping it).
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum PieceRefusal {
-    /// Shorter than a piece must be to be replayed or measured.
-    #[error("too short")]
-    TooShort,
-    /// Another piece of the run was used (a single use takes one).
-    #[error("another piece was used")]
-    AnotherPieceUsed,
-    /// The piece gives no step-steer metrics.
-    #[error("no step-steer metrics ({0})")]
-    NoStepMetrics(MetricsError),
 }
 
 /// What is wrong with an input file's content.
@@ -385,7 +358,7 @@ pub enum InputProblem {
         read: usize,
     },
     /// A run none of whose moving pieces holds a steer step.
-    #[error("no moving piece holds a steer step: {}", pieces.iter().map(|p| format!("{} ({:.2}–{:.2} s): {}", p.name, p.t_start, p.t_end, p.reason)).collect::<Vec<_>>().join("; "))]
+    #[error("{}", super::piece::no_steer_step(pieces))]
     NoSteerStep {
         /// The pieces and why each was refused.
         pieces: Vec<RefusedPiece>,

@@ -1,6 +1,7 @@
 //! Tests of the input problems' messages.
 
 use super::*;
+use crate::error::{MetricsError, PieceRefusal};
 
 fn slope(
     slope: f64,
@@ -60,20 +61,37 @@ fn messages_read_as_the_text_they_replace() {
     let step = InputProblem::NoSteerStep {
         pieces: vec![
             RefusedPiece {
-                name: "run.csv#1".into(),
+                name: Some("run.csv#1".into()),
                 t_start: 0.0,
                 t_end: 12.5,
-                reason: PieceRefusal::NoStepMetrics(MetricsError::TooShort(12.5)),
+                reason: PieceRefusal::NoStepMetrics(MetricsError::TooShort {
+                    span: 12.5,
+                    pre_window: 10.0,
+                    steady_window: 3.0,
+                }),
             },
             RefusedPiece {
-                name: "run.csv#2".into(),
+                name: Some("run.csv#2".into()),
                 t_start: 13.0,
                 t_end: 20.0,
                 reason: PieceRefusal::AnotherPieceUsed,
             },
         ],
     };
-    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is shorter than the initial and steady windows together); run.csv#2 (13.00–20.00 s): another piece was used");
+    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is shorter than the initial and steady windows together (`pre_window` = 10 s + `steady_window` = 3 s)); run.csv#2 (13.00–20.00 s): another piece was used");
+    // A run that is one piece is the file the error names: said once.
+    let whole = InputProblem::NoSteerStep {
+        pieces: vec![RefusedPiece {
+            name: None,
+            t_start: 0.0,
+            t_end: 0.3,
+            reason: PieceRefusal::TooShort,
+        }],
+    };
+    assert_eq!(
+        whole.to_string(),
+        "no step-steer metrics (the run, 0.00–0.30 s, is too short)"
+    );
     let runs = |campaign_folder| InputProblem::NoRuns { campaign_folder }.to_string();
     assert_eq!(runs(None), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv)");
     assert_eq!(runs(Some(PathBuf::from("."))), "no measured runs: list them in [runs] files = [...] or dir = \"...\" (a campaign folder reads runs/*.csv); its folder has runs/: diagnose the folder instead, `handling diagnose .`");

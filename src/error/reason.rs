@@ -104,9 +104,6 @@ pub enum ParamReason {
     /// A stiffness axis whose step or count gives no value.
     #[error("no values (a step or count that gives none?)")]
     NoValuesFromRange,
-    /// A swept steer beyond ±90°, or a friction or speed not positive.
-    #[error("steer must lie within ±90°, friction and speed must be positive")]
-    SweepValue,
     /// An effect the equilibrium analysis does not model.
     #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
     NotInEquilibrium,
@@ -175,15 +172,21 @@ pub enum ParamReason {
         /// The programme asked.
         programme: String,
     },
-    /// A schedule's columns of unequal length.
-    #[error("`t`, `steer` and `speed` must have one value per breakpoint: {t}, {steer} and {speed} given (at least 2 each)")]
+    /// A schedule's column shorter than another (the error's key).
+    #[error("{} where `{longest}` has {longest_len}: `t`, `steer` and `speed` need one value per breakpoint", crate::format::plural(*len, "value", "values"))]
     ScheduleLengths {
-        /// Times given.
-        t: usize,
-        /// Steers given.
-        steer: usize,
-        /// Speeds given.
-        speed: usize,
+        /// Values in the short column.
+        len: usize,
+        /// The longest column.
+        longest: ScheduleColumn,
+        /// Values in it.
+        longest_len: usize,
+    },
+    /// A schedule of fewer than two breakpoints.
+    #[error("{}: a schedule needs at least 2, one value each in `t`, `steer` and `speed`", crate::format::plural(*len, "breakpoint", "breakpoints"))]
+    ScheduleTooShort {
+        /// Breakpoints given.
+        len: usize,
     },
     /// A schedule's time that does not follow the one before.
     #[error("not after the time before it, {before} s: a schedule's times increase strictly")]
@@ -319,4 +322,26 @@ pub enum Limit {
     /// A Magic Formula stiffness (N/m) or pressure (Pa).
     #[error("a tyre's vertical stiffness (N/m) and pressures (Pa) lie below 1e8 in SI (2e6 N/m, 1e6 Pa at most): check the value against the file's [UNITS]")]
     MfDimensional,
+}
+
+/// A column of a schedule manoeuvre; it displays as its key under
+/// `[manoeuvre]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ScheduleColumn {
+    /// The breakpoint times.
+    T,
+    /// The steers.
+    Steer,
+    /// The speeds.
+    Speed,
+}
+
+impl std::fmt::Display for ScheduleColumn {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ScheduleColumn::T => "t",
+            ScheduleColumn::Steer => "steer",
+            ScheduleColumn::Speed => "speed",
+        })
+    }
 }

@@ -4,7 +4,7 @@
 //! that refuse a bad one at its element. Units: s, rad, m/s.
 
 use super::limits::{road_wheel_steer, speed};
-use crate::error::{ParamError, ParamReason};
+use crate::error::{ParamError, ParamReason, ScheduleColumn};
 use serde::Deserialize;
 
 /// Steer and speed given at breakpoints and linear between them, held
@@ -24,16 +24,30 @@ pub struct ScheduleSpec {
 /// A schedule's columns: equal lengths, times finite and increasing, each
 /// speed and steer within the manoeuvres' limits, refused at the element.
 pub(super) fn check(s: &ScheduleSpec) -> Result<(), ParamError> {
-    let (n, m, k) = (s.t.len(), s.steer.len(), s.speed.len());
-    if n != m || n != k || n < 2 {
-        return Err(ParamError::without_value(
-            "t",
-            ParamReason::ScheduleLengths {
-                t: n,
-                steer: m,
-                speed: k,
-            },
-        ));
+    let columns = [
+        (ScheduleColumn::T, s.t.len()),
+        (ScheduleColumn::Steer, s.steer.len()),
+        (ScheduleColumn::Speed, s.speed.len()),
+    ];
+    // The first of the shortest and of the longest: a short column is
+    // refused at its own key, with the length it falls short of.
+    let short = columns
+        .iter()
+        .fold(columns[0], |a, &c| if c.1 < a.1 { c } else { a });
+    let long = columns
+        .iter()
+        .fold(columns[0], |a, &c| if c.1 > a.1 { c } else { a });
+    if short.1 < long.1 {
+        let reason = ParamReason::ScheduleLengths {
+            len: short.1,
+            longest: long.0,
+            longest_len: long.1,
+        };
+        return Err(ParamError::without_value(&short.0.to_string(), reason));
+    }
+    if short.1 < 2 {
+        let reason = ParamReason::ScheduleTooShort { len: short.1 };
+        return Err(ParamError::without_value("t", reason));
     }
     for (i, w) in s.t.iter().enumerate() {
         let at = |key: &str| format!("{key}[{i}]");

@@ -3,6 +3,7 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
+use super::limits::road_wheel_steer;
 use super::tables::{resolve_model, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use crate::constants::G;
@@ -196,15 +197,13 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         return Err(err(f64::NAN, ParamReason::NoValues));
     }
     for &x in &values {
-        let ok = x.is_finite()
-            && match axis {
-                "friction" => x > 0.0,
-                "speed" => x > 0.0,
-                _ => x.abs() < std::f64::consts::FRAC_PI_2,
-            };
-        if !ok {
-            return Err(err(x, ParamReason::SweepValue));
-        }
+        // The steer keeps to the road-wheel limit every manoeuvre keeps to
+        // (`simulate`'s), with its words; friction and speed are positive.
+        let checked = match axis {
+            "steer" => road_wheel_steer(&key, x),
+            _ => ParamError::positive(&key, x),
+        };
+        checked.map_err(|e| param_error(src, None, e))?;
     }
     Ok(values)
 }

@@ -152,7 +152,17 @@ impl TirDocument {
             path: path.to_path_buf(),
             source,
         })?;
-        // Some public files are Latin-1 in their comments.
+        // Some public files are Latin-1 in their comments, which are read
+        // past; a byte that is not UTF-8 before a line's comment would reach
+        // a key or value as `�`, so it is refused where it stands.
+        if let Some((line, column, byte)) = not_utf8_outside_comments(&bytes) {
+            return Err(InputError::problem_at(
+                path,
+                line,
+                column,
+                InputProblem::NotUtf8 { byte },
+            ));
+        }
         let text = String::from_utf8_lossy(&bytes);
         Self::parse(path, &text)
     }
@@ -452,6 +462,25 @@ pub(crate) fn set_tyre_mode(tyre: &mut Tyre, code: u32) -> Result<(), ModeError>
 /// Reads the Magic Formula tyre of a `.tir` file.
 pub fn load_tir(path: &Path) -> Result<MagicFormula, InputError> {
     TirDocument::read(path)?.magic_formula()
+}
+
+/// The first byte that is not UTF-8 outside a comment (after `$` or `!`,
+/// or a line starting with `$`, `!` or `{`): its line, its column (the
+/// characters before it, plus one) and the byte.
+fn not_utf8_outside_comments(bytes: &[u8]) -> Option<(usize, usize, u8)> {
+    for (i, raw) in bytes.split(|&b| b == b'\n').enumerate() {
+        let Err(e) = std::str::from_utf8(raw) else {
+            continue;
+        };
+        let at = e.valid_up_to();
+        // Bytes before `at` are UTF-8, where `$` and `!` are themselves.
+        let before = std::str::from_utf8(&raw[..at]).unwrap_or_default();
+        let comment = before.contains(['$', '!']) || before.trim_start().starts_with('{');
+        if !comment {
+            return Some((i + 1, before.chars().count() + 1, raw[at]));
+        }
+    }
+    None
 }
 
 fn parse_entry(

@@ -184,7 +184,11 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let (t_first, t_last) = rec.span();
     let span = t_last - t_first;
     if span <= s.pre_window + s.steady_window {
-        return Err(MetricsError::TooShort(span));
+        return Err(MetricsError::TooShort {
+            span,
+            pre_window: s.pre_window,
+            steady_window: s.steady_window,
+        });
     }
     let pre = (t_first, t_first + s.pre_window);
     let steady = (t_last - s.steady_window, t_last);

@@ -227,12 +227,14 @@ pub fn measured_step_metrics(
                 read: cleaning.samples_read,
             }
         } else {
+            let whole = path.display().to_string();
             let pieces = cleaning
                 .dropped_pieces
                 .iter()
                 .filter_map(|p| {
                     Some(RefusedPiece {
-                        name: p.name.clone(),
+                        // A piece named as the file is the whole run.
+                        name: (p.name != whole).then(|| p.name.clone()),
                         t_start: p.t_start,
                         t_end: p.t_end,
                         reason: p.reason.clone()?,

@@ -323,7 +323,11 @@ pub(crate) fn step_metrics(
     }
     let span = t[n - 1] - t[0];
     if span <= s.pre_window + s.steady_window {
-        return Err(MetricsError::TooShort(span));
+        return Err(MetricsError::TooShort {
+            span,
+            pre_window: s.pre_window,
+            steady_window: s.steady_window,
+        });
     }
     // The stated low-pass, when one is asked for and the sampling allows it.
     let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();

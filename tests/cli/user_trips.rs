@@ -1,7 +1,9 @@
 //! What a user still trips on after the fresh-eyes round, run as a user
-//! runs the tool: a measured CSV saved as Latin-1, an output lock whose
-//! process id now belongs to another program, and a manoeuvre that steers
-//! nothing.
+//! runs the tool: a measured CSV or a `.tir` saved as Latin-1, an output
+//! lock whose process id now belongs to another program, a manoeuvre that
+//! steers nothing, a schedule's short column, metrics windows longer than
+//! the run, a refusal that names its file twice, and a swept steer beyond
+//! the road-wheel limit `simulate` keeps to.
 
 use super::*;
 
@@ -215,4 +217,223 @@ fn tyre_eval_says_the_rolling_resistance_keeps_the_load_given() {
     );
     assert!(rows[1][fy].abs() < 20_000.0, "{text}");
     assert!(rows[1][my].abs() > 100.0 * rows[0][my].abs(), "{text}");
+}
+
+/// The sedan step's history with its steer column set to 0: a run that
+/// moves all through and holds no steer step.
+fn flat_run(history: &str) -> String {
+    let mut lines = history.lines();
+    let header = lines.next().unwrap();
+    let steer = header.split(',').position(|c| c == "steer").unwrap();
+    let mut text = format!("{header}\n");
+    for line in lines {
+        let mut cells: Vec<&str> = line.split(',').collect();
+        cells[steer] = "0";
+        text.push_str(&cells.join(","));
+        text.push('\n');
+    }
+    text
+}
+
+/// A run that is one moving piece, all its samples, was named twice:
+/// "flat.csv: no moving piece holds a steer step: flat.csv (0.00–6.00 s):
+/// no step-steer metrics (…)"; the file is said once.
+#[test]
+fn metrics_names_a_single_piece_run_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let flat = flat_run(&sedan_history(dir.path()));
+    let (ok, e) = metrics_of(dir.path(), "flat.csv", flat.as_bytes());
+    assert!(!ok, "{e}");
+    assert!(
+        e.contains("flat.csv: no step-steer metrics (no steer step: the steer stays at 0 rad (0.00°) from the initial window to the steady one"),
+        "{e}"
+    );
+    assert_eq!(e.matches("flat.csv").count(), 1, "{e}");
+}
+
+/// `--pre-window 1e308` was refused as "shorter than the initial and
+/// steady windows" without their values; a window that is no positive
+/// number of seconds was refused by the library's key, `pre_window`, not
+/// by the option given.
+#[test]
+fn metrics_windows_are_refused_with_their_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let file = dir.path().join("run.csv");
+    fs::write(&file, history).unwrap();
+    let metrics = |option: &str, value: &str| {
+        let o = run(&["metrics", file.to_str().unwrap(), option, value]);
+        assert!(!o.status.success(), "{option} {value}");
+        stderr(&o)
+    };
+    let e = metrics("--pre-window", "1e308");
+    assert!(
+        e.contains("run.csv: no step-steer metrics (the record (6.000 s) is shorter than the initial and steady windows together (`pre_window` = 1e308 s + `steady_window` = 1 s))"),
+        "{e}"
+    );
+    let e = metrics("--steady-window", "5.5");
+    assert!(
+        e.contains("(`pre_window` = 0.5 s + `steady_window` = 5.5 s)"),
+        "{e}"
+    );
+    for option in ["--pre-window", "--steady-window", "--variance-window"] {
+        let name = option[2..].replace('-', "_").to_uppercase();
+        for value in ["-1", "0", "inf", "NaN"] {
+            let e = metrics(option, value);
+            let expected = format!("invalid value '{value}' for '{option} <{name}>': a window is a positive, finite number of seconds");
+            assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        }
+    }
+}
+
+/// A schedule whose columns differ in length was refused at `t`, with
+/// the three lengths: it is refused at the short column's key and line,
+/// with its length and the longest's.
+#[test]
+fn a_schedule_s_short_column_is_refused_at_its_key() {
+    let three = "[0.0, 1.0, 2.0]";
+    let steers = "[0.0, 0.02, 0.02]";
+    let speeds = "[20.0, 20.0, 20.0]";
+    for (t, steer, speed, key, said) in [
+        (
+            three,
+            "[0.0, 0.02]",
+            speeds,
+            "steer",
+            "2 values where `t` has 3",
+        ),
+        (three, steers, "[20.0]", "speed", "1 value where `t` has 3"),
+        (
+            "[0.0, 1.0]",
+            steers,
+            speeds,
+            "t",
+            "2 values where `steer` has 3",
+        ),
+        (
+            "[0.0]",
+            "[0.0]",
+            "[20.0]",
+            "t",
+            "1 breakpoint: a schedule needs at least 2",
+        ),
+    ] {
+        let manoeuvre = format!(
+            "[manoeuvre]\nkind = \"schedule\"\nt = {t}\nsteer = {steer}\nspeed = {speed}\n"
+        );
+        let dir = scenario(VEHICLE, GIM, &manoeuvre);
+        let file = dir.path().join("scenario.toml");
+        let text = fs::read_to_string(&file).unwrap();
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(&format!("{key} =")))
+            .unwrap()
+            + 1;
+        let e = simulate_err(dir.path());
+        let expected = format!("{}:{line}:1: `manoeuvre.{key}`: {said}", file.display());
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+}
+
+/// An equilibrium sweep of `steer`, `friction` and `speed` with the axis
+/// `axis` set to `value`, in a fresh folder.
+fn sweep_with(axis: &str, value: &str) -> tempfile::TempDir {
+    let mut sweep = [("steer", "0.1"), ("friction", "0.8"), ("speed", "20.0")];
+    sweep.iter_mut().find(|(a, _)| *a == axis).unwrap().1 = value;
+    let lines: Vec<String> = sweep.iter().map(|(a, v)| format!("{a} = {v}")).collect();
+    let file = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[sweep]\n{}\n",
+        lines.join("\n")
+    );
+    scratch(&[("sweep.toml", &file), ("tyre.toml", GIM)])
+}
+
+/// The equilibrium sweep took a steer up to ±90° where `simulate` stops at
+/// ±45°, and refused any axis with one sentence of every axis's rule: a
+/// swept steer keeps to `simulate`'s road-wheel limit, in its words, and
+/// each refusal names only the rule broken.
+#[test]
+fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
+    let sim = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"step-steer\"\nspeed = 20.0\nsteer = 1.2\n",
+    );
+    let e = simulate_err(sim.path());
+    let rule = e
+        .split("`manoeuvre.steer` = 1.2: ")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{e}"))
+        .trim();
+    assert!(rule.contains("±45°"), "{rule}");
+    let sweep_err = |axis: &str, value: &str| {
+        let dir = sweep_with(axis, value);
+        let e = fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path());
+        let file = dir.path().join("sweep.toml");
+        let line = fs::read_to_string(&file)
+            .unwrap()
+            .lines()
+            .position(|l| l.starts_with(&format!("{axis} =")))
+            .unwrap()
+            + 1;
+        (e, format!("{}:{line}:1: `sweep.{axis}` = ", file.display()))
+    };
+    for steer in ["1.2", "[0.1, 1.2]", "{ from = 0.0, to = 1.2, step = 0.6 }"] {
+        let (e, at) = sweep_err("steer", steer);
+        let expected = format!("{at}1.2: {rule}");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+    for (axis, value) in [("friction", "-1"), ("speed", "0")] {
+        let (e, at) = sweep_err(axis, value);
+        let expected = format!("{at}{value}: must be positive");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        assert!(!e.contains("steer"), "names only the rule broken: {e}");
+    }
+}
+
+/// A Latin-1 byte inside a `.tir` value reached the number reader as `�`
+/// ("`�1.0085` is not a number"): it is refused at its line and column
+/// as a TOML or CSV file's is; one in a comment is read past, as before.
+#[test]
+fn a_tir_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let text = fs::read_to_string(tir).unwrap();
+    let dir = scratch(&[(
+        "points.csv",
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n",
+    )]);
+    let eval = |name: &str, bytes: &[u8]| {
+        let file = dir.path().join(name);
+        fs::write(&file, bytes).unwrap();
+        let out = dir.path().join(format!("{name}.csv"));
+        let points = dir.path().join("points.csv");
+        let args = [file.to_str().unwrap(), points.to_str().unwrap()];
+        run(&[
+            "tyre-eval",
+            args[0],
+            args[1],
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    // The value of PDY1 starts with é; a comment elsewhere holds one too.
+    let mut lines: Vec<Vec<u8>> = text.lines().map(|l| l.as_bytes().to_vec()).collect();
+    let pdy1 = lines.iter().position(|l| l.starts_with(b"PDY1 ")).unwrap();
+    let at = lines[pdy1].iter().position(|&b| b == b'=').unwrap() + 1;
+    let at = at + lines[pdy1][at..].iter().take_while(|&&b| b == b' ').count();
+    lines[pdy1].insert(at, 0xE9);
+    let fnomin = lines
+        .iter()
+        .position(|l| l.starts_with(b"FNOMIN "))
+        .unwrap();
+    lines[fnomin].extend(b" $ charg\xE9e");
+    let o = eval("value.tir", &lines.join(&b'\n'));
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    let expected = format!("value.tir:{}:{}: {LATIN1}", pdy1 + 1, at + 1);
+    assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    // Only the comment's: read as before.
+    lines[pdy1].remove(at);
+    let o = eval("comment.tir", &lines.join(&b'\n'));
+    assert!(o.status.success(), "{}", stderr(&o));
 }

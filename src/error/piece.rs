@@ -1,0 +1,67 @@
+//! The moving pieces of a measured run that were not used, and why: what
+//! [`InputProblem::NoSteerStep`] lists. A run that is one piece, all its
+//! samples, is the file the error already names, so its piece goes
+//! unnamed and the message says the file once.
+//!
+//! [`InputProblem::NoSteerStep`]: super::InputProblem::NoSteerStep
+
+use super::MetricsError;
+use thiserror::Error;
+
+/// A moving piece of a run that was not used, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RefusedPiece {
+    /// The piece's name (`file#k`); `None` when it is the whole run, which
+    /// the error's file names.
+    pub name: Option<String>,
+    /// Its first time, s.
+    pub t_start: f64,
+    /// Its last time, s.
+    pub t_end: f64,
+    /// Why it was not used.
+    pub reason: PieceRefusal,
+}
+
+/// Why a moving piece of a run was not used (the cleaning report's reason
+/// for dropping it).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PieceRefusal {
+    /// Shorter than a piece must be to be replayed or measured.
+    #[error("too short")]
+    TooShort,
+    /// Another piece of the run was used (a single use takes one).
+    #[error("another piece was used")]
+    AnotherPieceUsed,
+    /// The piece gives no step-steer metrics.
+    #[error("no step-steer metrics ({0})")]
+    NoStepMetrics(MetricsError),
+}
+
+/// The message of a run none of whose `pieces` holds a steer step: each
+/// piece by name, span and reason; a run that is one unnamed piece by its
+/// reason alone (its span is the file's).
+pub(super) fn no_steer_step(pieces: &[RefusedPiece]) -> String {
+    if let [RefusedPiece {
+        name: None,
+        t_start,
+        t_end,
+        reason,
+    }] = pieces
+    {
+        return match reason {
+            PieceRefusal::TooShort => {
+                format!("no step-steer metrics (the run, {t_start:.2}–{t_end:.2} s, is too short)")
+            }
+            PieceRefusal::NoStepMetrics(_) => reason.to_string(),
+            PieceRefusal::AnotherPieceUsed => format!("no step-steer metrics ({reason})"),
+        };
+    }
+    let each: Vec<String> = pieces
+        .iter()
+        .map(|p| {
+            let name = p.name.as_deref().unwrap_or("the run");
+            format!("{name} ({:.2}–{:.2} s): {}", p.t_start, p.t_end, p.reason)
+        })
+        .collect();
+    format!("no moving piece holds a steer step: {}", each.join("; "))
+}

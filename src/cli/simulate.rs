@@ -41,11 +41,11 @@ pub struct MetricsArgs {
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true, value_parser = window)]
     steady_window: f64,
     /// Lowest speed kept, m/s: standstills and crawling are excluded.
-    #[arg(long, default_value_t = 5.0)]
+    #[arg(long, default_value_t = 5.0, allow_negative_numbers = true, value_parser = min_speed)]
     min_speed: f64,
     /// Cut-off of the zero-phase low-pass applied to the run first, Hz
     /// (0: unfiltered).
-    #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = handling::metrics::MEASURED_FILTER_HZ, allow_negative_numbers = true, value_parser = cut_off)]
     filter_hz: f64,
     /// Total-variance window from the steer onset, s.
     #[arg(long, default_value_t = 4.0, allow_negative_numbers = true, value_parser = window)]
@@ -60,6 +60,27 @@ fn window(text: &str) -> Result<f64, String> {
         Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
         Ok(_) => Err("a window is a positive, finite number of seconds".into()),
         Err(_) => Err("not a number (a window is in seconds)".into()),
+    }
+}
+
+/// The lowest speed kept, m/s: refused at its option when it is not a
+/// finite number of at least 0 (the library refuses it by its key).
+fn min_speed(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        Ok(_) => Err("the lowest speed kept is a finite speed of at least 0 m/s".into()),
+        Err(_) => Err("not a number (the lowest speed kept is in m/s)".into()),
+    }
+}
+
+/// The low-pass cut-off, Hz: refused at its option when it is neither 0
+/// (unfiltered) nor a positive finite frequency (the library refuses it by
+/// its key).
+fn cut_off(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        Ok(_) => Err("a cut-off is a positive, finite frequency in Hz (0: unfiltered)".into()),
+        Err(_) => Err("not a number (a cut-off is in Hz)".into()),
     }
 }
 

@@ -284,6 +284,18 @@ fn metrics_windows_are_refused_with_their_values() {
             assert!(e.contains(&expected), "{e}\nexpected {expected}");
         }
     }
+    // The cut-off and the lowest speed likewise, by their options (they
+    // were refused by the library's keys, `filter_hz` = -1).
+    for value in ["-1", "inf", "NaN"] {
+        let e = metrics("--filter-hz", value);
+        let expected = format!("invalid value '{value}' for '--filter-hz <FILTER_HZ>': a cut-off is a positive, finite frequency in Hz (0: unfiltered)");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        let e = metrics("--min-speed", value);
+        let expected = format!("invalid value '{value}' for '--min-speed <MIN_SPEED>': the lowest speed kept is a finite speed of at least 0 m/s");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+    }
+    let e = metrics("--filter-hz", "ten");
+    assert!(e.contains("not a number (a cut-off is in Hz)"), "{e}");
 }
 
 /// A schedule whose columns differ in length was refused at `t`, with

@@ -296,6 +296,11 @@ pub enum Limit {
     /// A front road-wheel steer angle, rad.
     #[error("no road wheel steers beyond ±45° (0.785 rad; a car's largest mean road-wheel steer is about 35–40°): steer angles are in radians, so is the value in degrees?")]
     RoadWheelSteer,
+    /// A front road-wheel steer angle given in degrees.
+    #[error(
+        "no road wheel steers beyond ±45° (a car's largest mean road-wheel steer is about 35–40°)"
+    )]
+    RoadWheelSteerDegrees,
     /// A tyre's contact length, m.
     #[error("no tyre's contact patch is longer than 1 m (a car tyre's is 0.1–0.25 m, a truck's about 0.3 m); the key is in metres: is the value in millimetres? (180 mm is 0.18)")]
     ContactLength,

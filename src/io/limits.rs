@@ -21,6 +21,14 @@ pub(super) fn road_wheel_steer(key: &str, steer: f64) -> Result<(), ParamError> 
     )
 }
 
+/// A front road-wheel steer angle given in degrees at `key` (a sweep's
+/// `unit = "deg"`): the limit of [`road_wheel_steer`], said in degrees.
+pub(super) fn road_wheel_steer_degrees(key: &str, steer: f64) -> Result<(), ParamError> {
+    // 45°, as MAX_ROAD_WHEEL_STEER is π/4.
+    let limit = 45.0;
+    ParamError::in_range(key, steer, -limit, limit, Limit::RoadWheelSteerDegrees)
+}
+
 /// The fastest manoeuvre, m/s ([`Limit::ManoeuvreSpeed`]).
 const MAX_SPEED: f64 = 150.0;
 

@@ -3,7 +3,7 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
-use super::limits::road_wheel_steer;
+use super::limits::{road_wheel_steer, road_wheel_steer_degrees};
 use super::tables::{resolve_model, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use crate::constants::G;
@@ -174,13 +174,11 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
             }
         })
     };
-    let values = match v {
-        Values::One(x) => vec![*x],
-        Values::List(l) => l.clone(),
-        Values::Units(l) => {
-            let k = scale(&l.unit)?;
-            l.values.iter().map(|x| x * k).collect()
-        }
+    // The values as the file gives them, and the factor to SI.
+    let (given, k) = match v {
+        Values::One(x) => (vec![*x], 1.0),
+        Values::List(l) => (l.clone(), 1.0),
+        Values::Units(l) => (l.values.clone(), scale(&l.unit)?),
         Values::Range(r) => {
             let k = scale(&r.unit)?;
             if r.step.is_nan() || r.step <= 0.0 || r.to.is_nan() || r.to < r.from {
@@ -190,22 +188,24 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
             if n > 1_000_000 {
                 return Err(err(r.step, ParamReason::TooManyValues));
             }
-            (0..=n).map(|i| (r.from + i as f64 * r.step) * k).collect()
+            ((0..=n).map(|i| r.from + i as f64 * r.step).collect(), k)
         }
     };
-    if values.is_empty() {
+    if given.is_empty() {
         return Err(err(f64::NAN, ParamReason::NoValues));
     }
-    for &x in &values {
+    for &x in &given {
         // The steer keeps to the road-wheel limit every manoeuvre keeps to
-        // (`simulate`'s), with its words; friction and speed are positive.
+        // (`simulate`'s), with its words, said in the unit the file gives
+        // it in; friction and speed are positive.
         let checked = match axis {
+            "steer" if k != 1.0 => road_wheel_steer_degrees(&key, x),
             "steer" => road_wheel_steer(&key, x),
             _ => ParamError::positive(&key, x),
         };
         checked.map_err(|e| param_error(src, None, e))?;
     }
-    Ok(values)
+    Ok(given.into_iter().map(|x| x * k).collect())
 }
 
 /// Refuses effects the equilibrium analysis does not model: its residual

@@ -27,6 +27,11 @@ use super::MeasuredRun;
 use crate::constants::G;
 use serde::Serialize;
 
+/// An angle in rad as degrees to one decimal, never "-0.0".
+fn deg(a: f64) -> String {
+    crate::format::fixed(a.to_degrees(), 1)
+}
+
 /// Width of the centred moving average of the estimates, s.
 pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 
@@ -116,18 +121,19 @@ impl RoadGeometry {
         // An estimate's extremes are its worst samples (a sensor lag in a
         // hard stop reads as a steep grade): the line shows its bulk.
         let part = |what: &str, p: &AngleProfile| match p.source {
+            // No "-0.0°": a median of −0.01° is 0.0°.
             AngleSource::Measured => format!(
-                "{what} measured {:.1}° to {:.1}° (mean {:.1}°)",
-                p.min.to_degrees(),
-                p.max.to_degrees(),
-                p.mean.to_degrees()
+                "{what} measured {}° to {}° (mean {}°)",
+                deg(p.min),
+                deg(p.max),
+                deg(p.mean)
             ),
             _ => format!(
-                "{what} {} {:.1}° to {:.1}° (5–95 %; median {:.1}°)",
+                "{what} {} {}° to {}° (5–95 %; median {}°)",
                 p.source.words(),
-                p.p05.to_degrees(),
-                p.p95.to_degrees(),
-                p.median.to_degrees()
+                deg(p.p05),
+                deg(p.p95),
+                deg(p.median)
             ),
         };
         let mut parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
@@ -235,6 +241,13 @@ fn profile(source: AngleSource, v: Vec<f64>, masked: &[usize]) -> Option<AnglePr
 mod tests {
     use super::*;
     use std::path::PathBuf;
+
+    #[test]
+    fn an_angle_that_rounds_to_zero_is_said_without_a_sign() {
+        assert_eq!(deg(-1e-5), "0.0");
+        assert_eq!(deg(-0.01), "-0.6");
+        assert_eq!(deg(0.1), "5.7");
+    }
 
     /// A steady left turn (u = 25 m/s, r = 0.2 rad/s) whose road banks from
     /// 0 to −10° and back (left edge lower), on a 3 % uphill grade while the

@@ -395,6 +395,16 @@ fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
         let expected = format!("{at}1.2: {rule}");
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
     }
+    // Given in degrees, said in degrees, without asking whether it is.
+    for steer in [
+        "{ values = [10.0, 50.0], unit = \"deg\" }",
+        "{ from = 0.0, to = 50.0, step = 25.0, unit = \"deg\" }",
+    ] {
+        let (e, at) = sweep_err("steer", steer);
+        let expected = format!("{at}50: must lie in (-45, 45]: no road wheel steers beyond ±45° (a car's largest mean road-wheel steer is about 35–40°)");
+        assert!(e.contains(&expected), "{e}\nexpected {expected}");
+        assert!(!e.contains("in degrees?"), "{e}");
+    }
     for (axis, value) in [("friction", "-1"), ("speed", "0")] {
         let (e, at) = sweep_err(axis, value);
         let expected = format!("{at}{value}: must be positive");

@@ -117,6 +117,11 @@ fn short(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }
+    // Far from unity a rounded f64 prints with hundreds of digits (a cell
+    // of 1e300 read as 1000000000000000600000…): an exponent there.
+    if !(1e-4..1e6).contains(&v.abs()) {
+        return crate::format::readable(v, 6);
+    }
     let scale = 10f64.powi(5 - v.abs().log10().floor() as i32);
     format!("{}", (v * scale).round() / scale)
 }
@@ -380,5 +385,19 @@ impl CleaningReport {
             ));
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short;
+
+    #[test]
+    fn a_glitchs_value_is_said_in_six_digits_and_never_in_hundreds() {
+        assert_eq!(short(-0.034872), "-0.034872");
+        assert_eq!(short(2.0 / 3.0), "0.666667");
+        assert_eq!(short(1e300), "1e300");
+        assert_eq!(short(-1.23456789e-300), "-1.23457e-300");
+        assert_eq!(short(0.0), "0");
     }
 }

@@ -60,8 +60,12 @@ pub(crate) fn verdict(
             }
             // The search started from a look-alike in place of a best
             // pressed on its search bound: say what the verdict was taken
-            // over.
-            if let Some(i) = found.passed_over {
+            // over (unless a search from that best, unpressed in a set,
+            // replaced the one from the look-alike).
+            if let Some(i) = found
+                .passed_over
+                .filter(|&i| !r.effects.contains(&singles[i].kinds[0]))
+            {
                 let p = base.rank(&singles[i]);
                 evidence.push(Evidence::LookalikePressed {
                     pressed: on_search_bound(&p.parameters),

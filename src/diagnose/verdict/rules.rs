@@ -2,10 +2,10 @@
 //! held-out and in-sample reductions of the gap above noise (%), held-out
 //! errors J and the noise level J_n (dimensionless), BIC differences,
 //! parameter counts and three flags (a parameter left idle, one pressed on
-//! its search bound, axles that are no tyre). The search ([`super::search`]), the screening
-//! ([`super::screening`]) and the verdict ([`super::conclude`]) call them
-//! and nothing else decides; the tests below hold each threshold and each
-//! ordering at its boundary.
+//! its search bound, axles that are no tyre). The search
+//! ([`super::search`]), the screening ([`super::screening`]) and the
+//! verdict ([`super::conclude`]) call them and nothing else decides; the
+//! tests below hold each threshold and each ordering at its boundary.
 //!
 //! The gap above noise is `G = sqrt(J² − J_n²)` and a reduction
 //! `1 − G_after/G_before` ([`crate::diagnose::verdict::score`]). The method

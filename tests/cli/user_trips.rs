@@ -73,6 +73,16 @@ fn a_csv_saved_as_latin1_is_refused_at_the_byte_s_line_and_column() {
     assert!(said.contains("Er "), "{said}");
 }
 
+/// The line (from 1) of `file` on which `key = …` is written.
+fn line_of(file: &Path, key: &str) -> usize {
+    fs::read_to_string(file)
+        .unwrap()
+        .lines()
+        .position(|l| l.starts_with(&format!("{key} =")))
+        .unwrap_or_else(|| panic!("no `{key} =` in {}", file.display()))
+        + 1
+}
+
 /// Sets the modification time of `file` to `seconds` ago.
 fn age_by(file: &Path, seconds: u64) {
     let then = std::time::SystemTime::now() - std::time::Duration::from_secs(seconds);
@@ -155,12 +165,7 @@ fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
     ] {
         let dir = scenario(VEHICLE, GIM, &format!("[manoeuvre]\n{manoeuvre}"));
         let file = dir.path().join("scenario.toml");
-        let text = fs::read_to_string(&file).unwrap();
-        let line = text
-            .lines()
-            .position(|l| l.starts_with(&format!("{key} =")))
-            .unwrap()
-            + 1;
+        let line = line_of(&file, key);
         let e = simulate_err(dir.path());
         let expected = format!("{}:{line}:1: {said}", file.display());
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
@@ -335,12 +340,7 @@ fn a_schedule_s_short_column_is_refused_at_its_key() {
         );
         let dir = scenario(VEHICLE, GIM, &manoeuvre);
         let file = dir.path().join("scenario.toml");
-        let text = fs::read_to_string(&file).unwrap();
-        let line = text
-            .lines()
-            .position(|l| l.starts_with(&format!("{key} =")))
-            .unwrap()
-            + 1;
+        let line = line_of(&file, key);
         let e = simulate_err(dir.path());
         let expected = format!("{}:{line}:1: `manoeuvre.{key}`: {said}", file.display());
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
@@ -382,12 +382,7 @@ fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
         let dir = sweep_with(axis, value);
         let e = fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path());
         let file = dir.path().join("sweep.toml");
-        let line = fs::read_to_string(&file)
-            .unwrap()
-            .lines()
-            .position(|l| l.starts_with(&format!("{axis} =")))
-            .unwrap()
-            + 1;
+        let line = line_of(&file, axis);
         (e, format!("{}:{line}:1: `sweep.{axis}` = ", file.display()))
     };
     for steer in ["1.2", "[0.1, 1.2]", "{ from = 0.0, to = 1.2, step = 0.6 }"] {

@@ -183,9 +183,7 @@ pub fn best_first(heldout: &[f64]) -> Vec<usize> {
 /// [`PARSIMONY`] noise levels of it is taken (the first of those with as
 /// few). `None` without a candidate whose axles are a tyre.
 pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
-    let usable: Vec<usize> = (0..ranked.len())
-        .filter(|&k| !ranked[k].degenerate)
-        .collect();
+    let usable = tyres(ranked);
     let usable = inside_ranges(ranked, &usable, jn).unwrap_or(usable);
     let top = &ranked[*usable.first()?];
     if !top.idle {
@@ -200,10 +198,16 @@ pub fn pick(ranked: &[Candidate], jn: f64) -> Option<usize> {
 /// The best of `ranked` whose axles are a tyre where [`pick`] passes it
 /// over for being pressed on a search bound (an index into `ranked`).
 pub fn passed_over(ranked: &[Candidate], jn: f64) -> Option<usize> {
-    let usable: Vec<usize> = (0..ranked.len())
-        .filter(|&k| !ranked[k].degenerate)
-        .collect();
+    let usable = tyres(ranked);
     inside_ranges(ranked, &usable, jn).map(|_| usable[0])
+}
+
+/// The candidates whose axles are a tyre (indices into `ranked`, in its
+/// order).
+fn tyres(ranked: &[Candidate]) -> Vec<usize> {
+    (0..ranked.len())
+        .filter(|&k| !ranked[k].degenerate)
+        .collect()
 }
 
 /// Of the `usable` candidates (best first), those not pressed on a search

@@ -155,7 +155,11 @@ pub struct Fitted {
 pub struct ScreenedOut {
     /// Its effects.
     pub effects: Vec<EffectKind>,
-    /// The share of the in-sample gap above noise its all-run fit removed, %.
+    /// The set it extends (a set the greedy additions screened; empty: a
+    /// single, screened against the base model).
+    pub extends: Vec<EffectKind>,
+    /// The share of the in-sample gap above noise its all-run fit removed
+    /// (of the base model's, or of the one the set it extends leaves), %.
     pub insample_reduction_percent: f64,
     /// The share below which it was screened out, % (the acceptance share
     /// less the margin).
@@ -189,6 +193,7 @@ impl Fitted {
                 .iter()
                 .map(|s| ScreenedOut {
                     effects: s.effects.clone(),
+                    extends: s.extends.clone(),
                     insample_reduction_percent: s.insample_reduction_percent,
                     screen_percent: s.threshold_percent - s.margin_percent,
                 })

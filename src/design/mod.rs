@@ -292,6 +292,10 @@ fn not_fitted(fitted: &Fitted, effects: &[EffectKind]) -> Error {
         Some(s) => DesignError::ScreenedOut {
             candidate,
             insample_percent: s.insample_reduction_percent,
+            of: match s.extends.as_slice() {
+                [] => "the base model".to_string(),
+                set => joined(set, "+"),
+            },
             screen_percent: s.screen_percent,
             fitted: fitted_labels,
         },

@@ -60,11 +60,12 @@ use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, run_scatter};
 use crate::diagnose::timing::{Recorder, Timing};
+use crate::diagnose::verdict::baseline::baseline;
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{baseline, confounded_with, search, Search};
+use crate::diagnose::verdict::search::{confounded_with, search, Search};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::road::RoadGeometry;
@@ -424,7 +425,13 @@ fn run(
 
     let found = if significant {
         let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
-        search(&ctx, &singles, (&order, &all), &base, set.max_effects)
+        search(
+            &ctx,
+            &singles,
+            (&order, &all),
+            &base,
+            (set.max_effects, set.screening),
+        )
     } else {
         Search::default()
     };
@@ -484,7 +491,7 @@ fn run(
             findings,
         },
         ranking,
-        screened: screened_rows,
+        screened: screened_rows.into_iter().chain(found.screened).collect(),
         combinations: found.combinations,
         verdict,
         confounded,

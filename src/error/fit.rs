@@ -9,8 +9,10 @@ use std::path::PathBuf;
 use thiserror::Error as ThisError;
 
 /// The rounded loads of a message, N.
-fn rounded(loads: &[f64]) -> Vec<f64> {
-    loads.iter().map(|l| l.round()).collect()
+/// Loads to the newton, listed: `2000, 4000 N`.
+fn rounded(loads: &[f64]) -> String {
+    let listed: Vec<String> = loads.iter().map(|l| format!("{:.0}", l.round())).collect();
+    format!("{} N", listed.join(", "))
 }
 
 /// `channel: ` when a channel is named.
@@ -42,7 +44,7 @@ pub enum FitError {
     },
     /// Fewer distinct loads than the model's load dependence needs.
     #[error(
-        "the {model} model's load dependence needs at least {needed} loads; the data has {} ({:?} N)",
+        "the {model} model's load dependence needs at least {needed} loads; the data has {}: {}",
         loads.len(),
         rounded(loads)
     )]
@@ -169,12 +171,14 @@ pub enum DiagnosisError {
         fitted: Vec<String>,
     },
     /// A design asked for a candidate the diagnosis screened out.
-    #[error("the diagnosis screened `{candidate}` out before cross-validating it (it removes {insample_percent:.1} % of the gap above noise in sample, below the {screen_percent:.1} % screen), so it has no held-out fit to design with; it cross-validated: {}", fitted.join(", "))]
+    #[error("the diagnosis screened `{candidate}` out before cross-validating it (it removes {insample_percent:.1} % of the gap above noise {of} leaves in sample, below the {screen_percent:.1} % screen), so it has no held-out fit to design with; it cross-validated: {}", fitted.join(", "))]
     ScreenedOut {
         /// The candidate asked for.
         candidate: String,
         /// The share of the in-sample gap its all-run fit removed, %.
         insample_percent: f64,
+        /// Whose gap: "the base model", or the set it extends.
+        of: String,
         /// The share below which candidates are screened out, %.
         screen_percent: f64,
         /// The candidates it cross-validated.

@@ -70,7 +70,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     Ok(DiagnoseReport {
         // The candidates fitted (those the runs can show): every one is
         // ranked or screened.
-        effects: diagnosis.ranking.len() + diagnosis.screened.len(),
+        effects: diagnosis.ranking.len() + diagnosis.screened_singles().count(),
         diagnosis,
         runs: campaign.runs.len(),
         run_files: campaign.run_files,
@@ -259,21 +259,44 @@ fn reduction_cells(r: [Reduction; 2]) -> String {
     }
 }
 
-/// The single effects screened before their cross-validation, and why.
+/// The single effects screened before their cross-validation, and the
+/// sets the greedy additions screened, and why.
 fn screened_lines(d: &Diagnosis) -> Vec<String> {
-    let Some(first) = d.screened.first() else {
-        return Vec::new();
-    };
-    let mut out = vec![format!(
-        "screened, not cross-validated (in sample below {:.0} % − {:.0} points, so below {:.0} % held out):",
-        first.threshold_percent, first.margin_percent, first.threshold_percent
-    )];
-    out.extend(d.screened.iter().map(|s| {
-        format!(
-            "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12.0}",
-            s.effect, s.insample_error_after, "—", s.insample_reduction_percent, s.delta_bic
-        )
-    }));
+    let mut out = Vec::new();
+    let singles: Vec<_> = d.screened_singles().collect();
+    if let Some(first) = singles.first() {
+        out.push(format!(
+            "screened, not cross-validated (in sample below {:.0} % − {:.0} points, so below {:.0} % held out):",
+            first.threshold_percent, first.margin_percent, first.threshold_percent
+        ));
+        out.extend(singles.iter().map(|s| {
+            format!(
+                "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12.0}",
+                s.effect, s.insample_error_after, "—", s.insample_reduction_percent, s.delta_bic
+            )
+        }));
+    }
+    let sets: Vec<_> = d
+        .screened
+        .iter()
+        .filter(|s| !s.extends.is_empty())
+        .collect();
+    if let Some(first) = sets.first() {
+        out.push(format!(
+            "sets screened, not cross-validated (each removes in sample below {:.0} % − {:.0} points of the gap the set it extends leaves, so none could be added):",
+            first.threshold_percent, first.margin_percent
+        ));
+        out.extend(sets.iter().map(|s| {
+            format!(
+                "  {:<28} {:>8.3} {:>11} {:>8.1} % of what {} leaves",
+                s.effect,
+                s.insample_error_after,
+                "—",
+                s.insample_reduction_percent,
+                joined(&s.extends, "+")
+            )
+        }));
+    }
     out
 }
 

@@ -41,7 +41,7 @@ pub fn page(
             "{} runs from {}, {} candidate effects, {} folds, seed {}{}.",
             inputs.runs,
             crate::format::plural(inputs.run_files, "file", "files"),
-            d.ranking.len() + d.screened.len(),
+            d.ranking.len() + d.screened_singles().count(),
             d.folds,
             d.seed,
             match d.derivatives {
@@ -197,9 +197,32 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
         ],
         &rows,
     );
-    if let Some(first) = d.screened.first() {
-        let names: Vec<String> = d
-            .screened
+    let sets: Vec<String> = d
+        .screened
+        .iter()
+        .filter(|s| !s.extends.is_empty())
+        .map(|s| {
+            let of = joined(&s.extends, "+");
+            format!(
+                "{} ({:.1} % of what {of} leaves)",
+                s.effect, s.insample_reduction_percent
+            )
+        })
+        .collect();
+    if let Some(first) = d.screened.iter().find(|s| !s.extends.is_empty()) {
+        p.paragraph(
+            "",
+            &format!(
+                "Sets screened, not cross-validated (each removes in sample below {:.0} % − {:.0} points of the gap the set it extends leaves, so none could be added): {}.",
+                first.threshold_percent,
+                first.margin_percent,
+                sets.join(", ")
+            ),
+        );
+    }
+    let singles: Vec<_> = d.screened_singles().collect();
+    if let Some(first) = singles.first() {
+        let names: Vec<String> = singles
             .iter()
             .map(|s| format!("{} ({:.1} %)", s.effect, s.insample_reduction_percent))
             .collect();

@@ -123,8 +123,55 @@ pub(crate) fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 /// segment below it: the one a growing delay moves into, whose one-sided
 /// derivative a fit pressed onto a zero delay needs.
 pub(crate) fn interpolate_of<T: Scalar>(xs: &[f64], ys: &[T], x: T) -> T {
+    let k = xs.partition_point(|v| *v <= x.re());
+    interpolate_below(xs, ys, x, k)
+}
+
+/// [`interpolate_of`] at many abscissae in turn, each found from the last
+/// one's segment (a replay's sample times, a delayed copy of them): forward
+/// a few nodes at a time, by bisection beyond that or backwards. The
+/// values are [`interpolate_of`]'s to the bit.
+pub(crate) struct Interpolator<'a> {
+    xs: &'a [f64],
+    /// The count of nodes at or below the last abscissa.
+    k: usize,
+}
+
+/// Nodes an [`Interpolator`] steps over one by one before it bisects.
+const WALK: usize = 8;
+
+impl<'a> Interpolator<'a> {
+    /// An interpolator over the increasing nodes `xs`.
+    pub(crate) fn new(xs: &'a [f64]) -> Self {
+        Self { xs, k: 0 }
+    }
+
+    /// The value of `ys` at `x` ([`interpolate_of`]).
+    pub(crate) fn at<T: Scalar>(&mut self, ys: &[T], x: T) -> T {
+        let (xs, at) = (self.xs, x.re());
+        let mut k = self.k;
+        if k > 0 && xs[k - 1] > at {
+            k = xs.partition_point(|v| *v <= at);
+        } else {
+            let mut walked = 0;
+            while k < xs.len() && xs[k] <= at {
+                k += 1;
+                walked += 1;
+                if walked == WALK {
+                    k += xs[k..].partition_point(|v| *v <= at);
+                    break;
+                }
+            }
+        }
+        self.k = k;
+        interpolate_below(xs, ys, x, k)
+    }
+}
+
+/// [`interpolate_of`] given `k`, the count of nodes at or below `x`.
+fn interpolate_below<T: Scalar>(xs: &[f64], ys: &[T], x: T, k: usize) -> T {
     let at = x.re();
-    let mut k = xs.partition_point(|v| *v <= at);
+    let mut k = k;
     if k == 0 {
         return ys[0];
     }
@@ -273,6 +320,27 @@ impl Manoeuvre {
 
 #[cfg(test)]
 mod tests {
+    use super::{interpolate_of, Interpolator};
+
+    #[test]
+    fn the_interpolator_gives_interpolate_of_to_the_bit_in_any_order() {
+        // Nodes with a repeated time (a jump), abscissae below, on, between
+        // and beyond them, forwards by small and large strides and back.
+        let xs: [f64; 12] = [0.0, 0.1, 0.2, 0.2, 0.35, 0.5, 0.6, 0.8, 1.0, 1.1, 1.3, 1.5];
+        let ys: Vec<f64> = xs
+            .iter()
+            .enumerate()
+            .map(|(i, x)| (x * 7.0).sin() + i as f64)
+            .collect();
+        let mut at: Vec<f64> = (-3..170).map(|i| i as f64 * 0.01).collect();
+        at.extend([0.2, 0.05, 1.45, 0.0, 2.0, 0.2, 0.199, 1.3]);
+        let mut nodes = Interpolator::new(&xs);
+        for &x in &at {
+            let (a, b) = (nodes.at(&ys, x), interpolate_of(&xs, &ys, x));
+            assert_eq!(a.to_bits(), b.to_bits(), "at {x}: {a} against {b}");
+        }
+    }
+
     use super::*;
 
     #[test]

@@ -19,7 +19,7 @@
 //! record then carries their derivatives. Units: SI, rad.
 
 use crate::constants::G;
-use crate::manoeuvre::interpolate_of;
+use crate::manoeuvre::Interpolator;
 use crate::scalar::{off, Scalar};
 
 /// Sensor effects, in a scalar of [`crate::scalar`] (`f64` by default).
@@ -105,8 +105,9 @@ impl<T: Scalar> Sensors<T> {
             if off(self.delay) {
                 y.to_vec()
             } else {
+                let mut nodes = Interpolator::new(t);
                 t.iter()
-                    .map(|&s| interpolate_of(t, y, T::from(s) - self.delay))
+                    .map(|&s| nodes.at(y, T::from(s) - self.delay))
                     .collect()
             }
         };

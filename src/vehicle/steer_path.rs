@@ -8,7 +8,7 @@
 //! numbers ([`crate::scalar`]): the output then carries their derivatives.
 //! Units: s, rad.
 
-use crate::manoeuvre::interpolate_of;
+use crate::manoeuvre::Interpolator;
 use crate::scalar::{off, Scalar};
 
 /// The steer path between the logged steer δ and the road wheels:
@@ -57,10 +57,11 @@ impl<T: Scalar> SteerPath<T> {
         let delay = self.delay;
         let logged: Vec<T> = steer.iter().map(|&v| T::from(v)).collect();
         if self.lag.re() <= 0.0 {
+            let mut nodes = Interpolator::new(t);
             return at
                 .iter()
                 .map(|&s| {
-                    let y = interpolate_of(t, &logged, T::from(s) - delay);
+                    let y = nodes.at(&logged, T::from(s) - delay);
                     if self.lag.is_constant() {
                         y
                     } else {

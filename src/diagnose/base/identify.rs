@@ -44,7 +44,7 @@ pub(crate) use crate::diagnose::model::axles::axle_tyres;
 pub use crate::diagnose::model::axles::{coefficient, friction, shares, SHAPE};
 use crate::diagnose::model::axles::{D_REF, K_REF};
 use crate::diagnose::model::Augmented;
-use crate::optim::bounded::BoundedLm;
+use crate::optim::bounded::{BoundedLm, Jacobians};
 use crate::optim::local::Residuals;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -228,6 +228,7 @@ pub fn identify_axles<F: Fn(&[f64]) -> Augmented + Sync>(
             let lm = BoundedLm {
                 iterations: 30,
                 tolerance: FIT_TOLERANCE,
+                jacobians: Jacobians::Secant,
             }
             .minimize(problem, p, &problem.bounds);
             (lm.cost, lm.params)

@@ -19,7 +19,7 @@ pub mod tempering;
 
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
-use crate::optim::bounded::BoundedLm;
+use crate::optim::bounded::{BoundedLm, Jacobians};
 use crate::optim::local::Residuals;
 use crate::optim::stats::{seen_columns, standard_errors};
 use nalgebra::DMatrix;
@@ -219,9 +219,18 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
             Polish::LevenbergMarquardt => FIT_ITERATIONS,
             Polish::Refit => REFIT_ITERATIONS,
         };
+        // A fit's Jacobian costs a replay of the runs per parameter: an
+        // accepted step updates it (Broyden) where its model still serves,
+        // and the convergence test reads a fresh one. A refit keeps a
+        // fresh one each iteration: its budget is a handful of them.
+        let jacobians = match polish {
+            Polish::LevenbergMarquardt => Jacobians::Secant,
+            Polish::Refit => Jacobians::Every,
+        };
         let lm = BoundedLm {
             iterations,
             tolerance: FIT_TOLERANCE,
+            jacobians,
         }
         .minimize(problem, &p0, &problem.bounds);
         evaluations += lm.evaluations;

@@ -29,7 +29,7 @@ pub(crate) mod channels;
 pub(crate) mod replay;
 pub(crate) mod scale;
 
-use crate::manoeuvre::interpolate;
+use crate::manoeuvre::Interpolator;
 pub use crate::sim::{Drive, FixedStep};
 use crate::sim::{Integrator, TimeHistory};
 use crate::vehicle::{Effects, ModelOptions, State, StateVector, VehicleModel, LOAD_TOLERANCE};
@@ -163,16 +163,15 @@ impl Augmented {
             self.effects()
                 .sensors
                 .seen(&h.t, &h.speed, &h.yaw_rate, &h.ay, &h.beta);
-        let at =
-            |ys: &[f64]| -> Vec<f64> { times.iter().map(|&t| interpolate(&h.t, ys, t)).collect() };
+        let at = |ys: &[f64]| -> Vec<f64> {
+            let mut nodes = Interpolator::new(&h.t);
+            times.iter().map(|&t| nodes.at(ys, t)).collect()
+        };
         Observed {
             yaw_rate: at(&yaw_rate),
             ay: at(&ay),
             beta: at(&beta),
-            roll: times
-                .iter()
-                .map(|&t| interpolate(&response.t, &response.roll, t))
-                .collect(),
+            roll: at(&response.roll),
         }
     }
 }

@@ -101,9 +101,15 @@ pub struct Screened {
     pub effect: String,
     /// The effects.
     pub effects: Vec<EffectKind>,
+    /// The set a screened combination extends (the greedy search's
+    /// current set; empty: a single, screened against the base model).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extends: Vec<EffectKind>,
     /// Combined error J of the all-run fit on all runs (in sample).
     pub insample_error_after: f64,
-    /// Share of the in-sample gap above noise the all-run fit removes, %.
+    /// Share of the in-sample gap above noise the all-run fit removes, %:
+    /// of the base model's gap, or of the gap the set it
+    /// [`Screened::extends`] leaves.
     pub insample_reduction_percent: f64,
     /// Share of the held-out gap an effect must remove to be accepted, %.
     pub threshold_percent: f64,
@@ -265,6 +271,11 @@ impl Diagnosis {
             // As sets: a combination's row is the set, in whichever order
             // it was built.
             .find(|r| !effects.is_empty() && same_effects(&r.effects, effects))
+    }
+    /// The single effects screened before their cross-validation (not the
+    /// sets the greedy additions screened: [`Screened::extends`]).
+    pub fn screened_singles(&self) -> impl Iterator<Item = &Screened> {
+        self.screened.iter().filter(|s| s.extends.is_empty())
     }
 
     /// How the report says candidate `r`'s held-out and in-sample

@@ -16,9 +16,10 @@ use crate::diagnose::report::{
     NotIdentifiable, OutsideLibrary, ParameterValue, Part, RankWarning, Ranked, Shrinkage, Verdict,
     VerdictKind, VerdictWarning,
 };
+use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
 use crate::diagnose::verdict::score::{Calibrated, Scored};
-use crate::diagnose::verdict::search::{Baseline, Search};
+use crate::diagnose::verdict::search::Search;
 
 /// The verdict of a search `found` over the cross-validated `singles`
 /// (`order` ranks them, best first), on a gap that is `significant` or

@@ -1,12 +1,14 @@
 //! How the verdict is chosen: every candidate fitted on all runs and
 //! scored on held-out runs (`score`: the folds, the held-out gap above
-//! noise and an effect's reduction of it), the singles screened before
-//! their cross-validation (`screening`), and the search for the set of
+//! noise and an effect's reduction of it) against the base model's scores
+//! (`baseline`), the singles and the greedy additions' sets screened
+//! before their cross-validation (`screening`), and the search for the set of
 //! effects that explains the gap (`search`), the rules all three apply as
 //! pure functions (`rules`, with their thresholds), and the verdict's case
 //! from what the search found (`conclude`).
 //! Units: SI, rad; held-out errors J dimensionless.
 
+pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
 pub mod rules;

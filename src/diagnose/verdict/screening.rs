@@ -29,14 +29,23 @@
 //! from its all-run fit (which is all they use of it). Without a
 //! significant gap nothing is searched, and every candidate below the
 //! threshold stays screened.
+//!
+//! The greedy additions are screened alike ([`screened_additions`]): a set
+//! is added where it removes [`ACCEPT`] of the held-out gap the current set
+//! leaves, so a step whose every set removes less than `ACCEPT −
+//! SCREEN_MARGIN` of the in-sample gap the current set leaves adds none
+//! (the current set, refitted on the same folds, in the base model's
+//! place), and its sets are listed as screened with the set they extend.
+//! Where one set could pass, all are cross-validated: the pick among them
+//! reads every held-out error, as it does without screening.
 
 use crate::diagnose::effects::{joined, EffectKind};
-use crate::diagnose::report::Screened;
+use crate::diagnose::report::{Ranked, Screened};
+use crate::diagnose::verdict::baseline::Baseline;
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::PARSIMONY;
 use crate::diagnose::verdict::rules::{self, ACCEPT, SCREEN_MARGIN};
 use crate::diagnose::verdict::score::{Context, Fitted, Scored};
-use crate::diagnose::verdict::search::Baseline;
 use rayon::prelude::*;
 
 /// A single effect fitted on all runs: cross-validated, or screened (its
@@ -84,7 +93,7 @@ pub(crate) fn singles(
             Slot::Screened(f, inside) => {
                 screened.push(i);
                 let sc = f.unscored();
-                screened_rows.push(row(&sc, inside, base));
+                screened_rows.push(screened_row(&sc, inside, None, base));
                 singles.push(sc);
                 if let Some(rec) = ctx.timing {
                     rec.candidate(false);
@@ -153,11 +162,19 @@ fn recheck(ctx: &Context, base: &Baseline, slots: &mut [Slot]) {
     }
 }
 
-/// A screened candidate as a row of the report.
-fn row(sc: &Scored, inside: f64, base: &Baseline) -> Screened {
+/// A screened candidate as a row of the report: its in-sample reduction
+/// `inside` (%) of the gap the base leaves, or where it `extends` a set,
+/// of the gap that set leaves.
+pub(crate) fn screened_row(
+    sc: &Scored,
+    inside: f64,
+    extends: Option<&[EffectKind]>,
+    base: &Baseline,
+) -> Screened {
     Screened {
         effect: joined(&sc.kinds, "+"),
         effects: sc.kinds.clone(),
+        extends: extends.map(<[EffectKind]>::to_vec).unwrap_or_default(),
         insample_error_after: sc.insample.combined(&base.scales()),
         insample_reduction_percent: inside,
         threshold_percent: 100.0 * ACCEPT,
@@ -165,4 +182,62 @@ fn row(sc: &Scored, inside: f64, base: &Baseline) -> Screened {
         delta_bic: base.delta_bic(sc),
         global_search: sc.full.global,
     }
+}
+
+/// Keeps one screened row per set of effects, none for a set another
+/// greedy search cross-validated (`rows`).
+pub(crate) fn one_screened_row_per_set(screened: &mut Vec<Screened>, rows: &[Ranked]) {
+    let sorted = |effects: &[EffectKind]| {
+        let mut set = effects.to_vec();
+        set.sort();
+        set
+    };
+    let mut seen: std::collections::HashSet<Vec<EffectKind>> =
+        rows.iter().map(|r| sorted(&r.effects)).collect();
+    screened.retain(|r| seen.insert(sorted(&r.effects)));
+}
+
+/// The greedy step's screening: where `screening` is on and every set
+/// `fitted` (the current set with one effect added, fitted on all runs)
+/// removes less than [`ACCEPT`] less [`rules::SCREEN_MARGIN`] of the
+/// in-sample gap above noise the current set leaves
+/// ([`Baseline::insample_extra`]), none can remove [`ACCEPT`] of its
+/// held-out gap (the single effects' screening argument,
+/// [`crate::diagnose::verdict::screening`], with the current set in the
+/// base model's place: it is refitted on the same folds), so none can be
+/// added: their rows as screened, their folds spared. None: at least one
+/// could be added, and every set is cross-validated (the pick among them
+/// reads every held-out error, as without screening).
+pub(crate) fn screened_additions(
+    ctx: &Context,
+    base: &Baseline,
+    current: &Scored,
+    fitted: &[Fitted],
+    screening: bool,
+) -> Option<Vec<Screened>> {
+    if !screening {
+        return None;
+    }
+    let extra: Vec<f64> = fitted
+        .iter()
+        .map(|f| base.insample_extra(&current.insample, &f.insample))
+        .collect::<Option<_>>()?;
+    if !extra.iter().all(|&x| rules::screened(x)) {
+        return None;
+    }
+    let rows = fitted
+        .iter()
+        .zip(extra)
+        .map(|(f, x)| {
+            if let Some(rec) = ctx.timing {
+                rec.candidate(false);
+            }
+            // The folds it was spared count as done.
+            for _ in 0..ctx.folds.len() {
+                ctx.tick();
+            }
+            screened_row(&f.unscored(), x, Some(&current.kinds), base)
+        })
+        .collect();
+    Some(rows)
 }

@@ -248,6 +248,7 @@ pub(super) fn hold_undetermined(
     let lm = BoundedLm {
         iterations,
         tolerance: 1e-12,
+        ..BoundedLm::default()
     };
     while fit.p.len() > 1 {
         let u = uncertainty(&fit.problem, &fit.p);

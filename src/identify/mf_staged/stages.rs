@@ -45,6 +45,7 @@ fn bounded(
     BoundedLm {
         iterations,
         tolerance: 1e-12,
+        ..BoundedLm::default()
     }
     .minimize(problem, p0, bounds)
 }

@@ -29,6 +29,8 @@ struct DiagnosisFile {
 #[derive(Deserialize)]
 struct ScreenedFile {
     effects: Vec<String>,
+    #[serde(default)]
+    extends: Vec<String>,
     insample_reduction_percent: f64,
     threshold_percent: f64,
     margin_percent: f64,
@@ -186,6 +188,7 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, Diagnosed), Error> {
             .map(|s| {
                 Ok(ScreenedOut {
                     effects: kinds(&path, &s.effects)?,
+                    extends: kinds(&path, &s.extends)?,
                     insample_reduction_percent: s.insample_reduction_percent,
                     screen_percent: s.threshold_percent - s.margin_percent,
                 })

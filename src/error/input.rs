@@ -73,7 +73,7 @@ pub enum InputError {
         problem: Box<InputProblem>,
     },
     /// A CSV file without a column the reader needs.
-    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {}){}", header.join(", "), meant.as_ref().map_or(String::new(), |m| format!("; header column `{m}`: did you mean `{name}`?")))]
+    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {}){}{}", header.join(", "), meant.as_ref().map_or(String::new(), |m| format!("; header column `{m}`: did you mean `{name}`?")), separator_hint(header))]
     MissingColumn {
         /// The file.
         path: PathBuf,
@@ -222,4 +222,18 @@ impl InputError {
             _ => None,
         }
     }
+}
+
+/// Where a header read as one column holds another separator (a
+/// spreadsheet set to a decimal comma writes `;`), what to do about it.
+fn separator_hint(header: &[String]) -> String {
+    let [only] = header else {
+        return String::new();
+    };
+    [(';', "semicolons"), ('\t', "tabs")]
+        .iter()
+        .find(|(c, _)| only.contains(*c))
+        .map_or(String::new(), |(_, name)| {
+            format!("; the header is one column separated by {name}: the file must be comma-separated with a decimal point (export it as CSV with `,` between values and `.` in numbers)")
+        })
 }

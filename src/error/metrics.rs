@@ -40,8 +40,11 @@ fn no_step(initial: f64, steady: f64, min: f64) -> String {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum MetricsError {
     /// Channels of different lengths or too few samples.
-    #[error("a step-steer record needs at least 10 samples with equal-length channels")]
-    Shape,
+    #[error("a step-steer record needs at least 10 samples with equal-length channels; it has {}", lengths.iter().map(|(c, n)| format!("{c} {n}")).collect::<Vec<_>>().join(", "))]
+    Shape {
+        /// Each channel given and its sample count.
+        lengths: Vec<(&'static str, usize)>,
+    },
     /// The record is too short for the windows.
     #[error("the record ({span:.3} s) is shorter than the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s)", Num(*pre_window), Num(*steady_window))]
     TooShort {

@@ -158,9 +158,19 @@ fn pac89_on_one_load_is_a_fit_error_naming_the_loads() {
     let e = fit_lateral(&truth, &conditions[..1], &FitSettings::new(1)).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Fit);
     match e {
-        Error::Fit(FitError::TooFewLoads {
-            needed: 3, loads, ..
-        }) => assert_eq!(loads, vec![conditions[0].fz]),
+        Error::Fit(
+            ref fit @ FitError::TooFewLoads {
+                needed: 3,
+                ref loads,
+                ..
+            },
+        ) => {
+            assert_eq!(loads, &vec![conditions[0].fz]);
+            // Said in newtons, not as a debug list (`[4000.0] N`).
+            let said = fit.to_string();
+            let load = format!("{:.0} N", conditions[0].fz);
+            assert!(said.ends_with(&format!("the data has 1: {load}")), "{said}");
+        }
         other => panic!("not too few loads: {other:?}"),
     }
 }
@@ -172,7 +182,10 @@ fn a_record_too_short_for_metrics_is_a_metrics_error() {
     let r = crate::metrics::step_metrics(&t, &x, &x, None, None, &Default::default());
     let e = Error::from(r.unwrap_err());
     assert_eq!(e.kind(), ErrorKind::Metrics);
-    assert!(matches!(e, Error::Metrics(MetricsError::Shape)), "{e}");
+    assert!(
+        matches!(e, Error::Metrics(MetricsError::Shape { .. })),
+        "{e}"
+    );
 }
 
 /// A synthetic campaign whose rig data hold one load: the diagnosis's

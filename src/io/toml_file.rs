@@ -31,20 +31,29 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
     (line, col)
 }
 
-/// serde's `unknown variant `x`, expected one of `a`, `b`` with the nearest
+/// serde's `unknown variant `x`, expected one of `a`, `b`` (or `unknown
+/// field`: a misspelt key) with the nearest
 /// known name suggested after the unknown one, as every other unknown name
 /// is answered (a manoeuvre's `kind = "step_stear"`); other messages, and
 /// ones that already suggest, unchanged.
 fn suggest_variant(message: &str) -> String {
-    let parse = || {
-        let rest = message.strip_prefix("unknown variant `")?;
+    let parse = |what: &str| {
+        let rest = message.strip_prefix(&format!("unknown {what} `"))?;
         let (given, rest) = rest.split_once('`')?;
-        let list = rest.strip_prefix(", expected one of ")?;
-        let known: Vec<&str> = list.split(", ").map(|k| k.trim_matches('`')).collect();
+        let list = rest
+            .strip_prefix(", expected one of ")
+            .or_else(|| rest.strip_prefix(", expected "))?;
+        let known: Vec<&str> = list
+            .split(", ")
+            .flat_map(|k| k.split(" or "))
+            .map(|k| k.trim_matches('`'))
+            .collect();
         let clause = crate::format::did_you_mean(given, &known);
-        (!clause.is_empty()).then(|| format!("unknown variant `{given}`{clause}{rest}"))
+        (!clause.is_empty()).then(|| format!("unknown {what} `{given}`{clause}{rest}"))
     };
-    parse().unwrap_or_else(|| message.to_string())
+    parse("variant")
+        .or_else(|| parse("field"))
+        .unwrap_or_else(|| message.to_string())
 }
 
 /// The value a serde message says was of the wrong type or length

@@ -18,6 +18,8 @@
 //! output never holds a non-finite value.
 
 use crate::error::Error;
+use crate::error::UnitSlip;
+use crate::io::rig::MIN_MEDIAN_LOAD;
 use crate::io::tir::set_tyre_mode;
 use crate::io::{load_tyre, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
@@ -159,6 +161,9 @@ pub fn run(
             return Err(c.error_at(points, i, name, problem).into());
         }
     }
+    if let Some((i, slip)) = load_in_kn(&columns[0].1) {
+        return Err(c.error_at(points, i, "fz", slip.into()).into());
+    }
     let f = {
         let col = |i: usize| &columns[i].1;
         let p = pressure.clone().unwrap_or_default();
@@ -276,4 +281,24 @@ impl TyreEvalReport {
             self.out.display()
         )
     }
+}
+
+/// Where the loads on the road (`fz > 0`; a point off it is asked for on
+/// purpose) have a median below [`MIN_MEDIAN_LOAD`], the first of them and
+/// why: a car's loads written in kN.
+fn load_in_kn(fz: &[f64]) -> Option<(usize, UnitSlip)> {
+    let mut on_road: Vec<f64> = fz.iter().copied().filter(|v| *v > 0.0).collect();
+    if on_road.is_empty() {
+        return None;
+    }
+    let median = crate::measured::clean::median(&mut on_road);
+    (median < MIN_MEDIAN_LOAD).then(|| {
+        let i = fz.iter().position(|v| *v > 0.0).unwrap_or(0);
+        let slip = UnitSlip::LoadInKn {
+            value: fz[i],
+            median,
+            limit: MIN_MEDIAN_LOAD,
+        };
+        (i, slip)
+    })
 }

@@ -319,7 +319,14 @@ pub(crate) fn step_metrics(
         || ay.is_some_and(|a| a.len() != n)
         || beta.is_some_and(|b| b.len() != n)
     {
-        return Err(MetricsError::Shape);
+        let mut lengths = vec![
+            ("t", n),
+            ("steer", steer.len()),
+            ("yaw_rate", yaw_rate.len()),
+        ];
+        lengths.extend(ay.map(|a| ("ay", a.len())));
+        lengths.extend(beta.map(|b| ("beta", b.len())));
+        return Err(MetricsError::Shape { lengths });
     }
     let span = t[n - 1] - t[0];
     if span <= s.pre_window + s.steady_window {

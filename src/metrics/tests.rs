@@ -114,7 +114,12 @@ fn refuses_records_without_a_step() {
         None,
         &MetricSettings::default(),
     );
-    assert_eq!(e.unwrap_err(), MetricsError::Shape);
+    let e = e.unwrap_err();
+    assert!(matches!(e, MetricsError::Shape { .. }));
+    assert_eq!(
+        e.to_string(),
+        "a step-steer record needs at least 10 samples with equal-length channels; it has t 5, steer 5, yaw_rate 5, ay 5"
+    );
 }
 
 #[test]

@@ -55,7 +55,11 @@ fn process_named(bytes: &[u8]) -> Option<u32> {
 /// filled, a crashed editor).
 fn nameless(bytes: &[u8]) -> String {
     match std::str::from_utf8(bytes) {
-        Ok(t) if t.trim().is_empty() => "is empty".into(),
+        Ok("") => "is empty".into(),
+        Ok(t) if t.trim().is_empty() => format!(
+            "holds only blanks ({})",
+            crate::format::plural(t.chars().count(), "character", "characters")
+        ),
         Ok(t) => format!(
             "names no process ({})",
             crate::format::plural(t.trim().chars().count(), "character", "characters")
@@ -396,6 +400,17 @@ mod tests {
             .unwrap()
             .set_modified(then)
             .unwrap();
+    }
+
+    #[test]
+    fn a_nameless_lock_is_said_empty_only_when_it_holds_nothing() {
+        assert_eq!(nameless(b""), "is empty");
+        assert_eq!(nameless(b"   \n"), "holds only blanks (4 characters)");
+        assert_eq!(nameless(b"garbage\n"), "names no process (7 characters)");
+        assert_eq!(
+            nameless(&[0xff, 0xfe]),
+            "names no process (2 bytes that are not text)"
+        );
     }
 
     #[test]

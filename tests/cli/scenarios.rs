@@ -122,7 +122,11 @@ fn misspelt_key_is_named_with_its_line() {
     let dir = scenario(&VEHICLE.replace("yaw_inertia", "yaw_inertai"), GIM, STEP);
     let e = simulate_err(dir.path());
     assert!(e.contains("scenario.toml:3:"), "{e}");
-    assert!(e.contains("yaw_inertai"), "{e}");
+    // With the key meant, as every other unknown name is answered.
+    assert!(
+        e.contains("unknown field `yaw_inertai` (did you mean `yaw_inertia`?)"),
+        "{e}"
+    );
 }
 
 #[test]

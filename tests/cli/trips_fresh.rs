@@ -260,6 +260,28 @@ fn an_empty_csv_is_said_empty_and_a_misspelt_column_gets_the_name_meant() {
     );
 }
 
+/// A spreadsheet set to a decimal comma writes `;` between values: the
+/// header read as one column, and the error only listed it.
+#[test]
+fn a_semicolon_separated_csv_is_said_to_need_commas_and_decimal_points() {
+    let dir = scratch(&[
+        (
+            "semi.csv",
+            "t;speed;steer;yaw_rate\n0;20;0;0\n0,01;20;0;0\n",
+        ),
+        ("tab.csv", "t\tspeed\tsteer\tyaw_rate\n0\t20\t0\t0\n"),
+    ]);
+    for (file, name) in [("semi.csv", "semicolons"), ("tab.csv", "tabs")] {
+        let e = stderr(&run_in(dir.path(), &["metrics", file]));
+        assert!(
+            e.contains(&format!("{file}:1:1: missing required column"))
+                && e.contains(&format!("the header is one column separated by {name}"))
+                && e.contains("comma-separated with a decimal point"),
+            "{e}"
+        );
+    }
+}
+
 /// `--mode 121` for a `.toml` tyre was refused without saying why.
 #[test]
 fn a_magic_formula_mode_for_a_toml_tyre_is_refused_with_why() {

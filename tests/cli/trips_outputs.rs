@@ -167,6 +167,27 @@ fn a_tir_cut_short_or_with_a_core_coefficient_misspelt_is_refused_not_evaluated_
             && e.contains("is the file complete (it has 49 lines)?"),
         "{e}"
     );
+    // Cut before its lateral or its aligning coefficients: the
+    // longitudinal ones come first in every published file, so a file
+    // that has them and lacks a later force's was cut, and wrote fy = mz =
+    // 0 without a word.
+    for (section, lacks) in [
+        ("[LATERAL_COEFFICIENTS]", "PCY1, PDY1, PKY1, QBZ1, QDZ1"),
+        ("[ALIGNING_COEFFICIENTS]", "QBZ1, QDZ1"),
+    ] {
+        let at = full.find(section).unwrap();
+        let name = format!("cut_{}.tir", &section[1..4]);
+        let (o, out) = eval(&name, &full[..at]);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{e}");
+        assert!(
+            e.contains(&format!(
+                "{name}: lacks {lacks} of the peak and shape coefficients"
+            )) && e.contains("is the file complete"),
+            "{e}"
+        );
+        assert!(!out.exists());
+    }
 }
 
 #[test]

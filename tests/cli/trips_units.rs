@@ -116,6 +116,33 @@ fn tyre_eval_writes_rl_on_every_row_with_the_free_radius_off_the_road() {
     }
 }
 
+/// `fz = 4` (a car's 4 kN written in kN) was evaluated as 4 N: the loads
+/// on the road are refused at their cell when their median is no tyre
+/// test's; points off the road (`fz ≤ 0`) do not count.
+#[test]
+fn tyre_eval_refuses_loads_in_kn_at_their_cell() {
+    let dir = scratch(&[(
+        "points.csv",
+        "fz,kappa,alpha,camber,speed\n0,0,0.01,0,20\n4,0,0.01,0,20\n4.5,0,0.02,0,20\n5,0,0.03,0,20\n",
+    )]);
+    let out = dir.path().join("out.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains("points.csv:3:1: column `fz`: 4 N, in a file whose median load is 4.5 N")
+            && e.contains("is the column in kN?"),
+        "{e}"
+    );
+    assert!(!out.exists());
+}
+
 /// The same generator in SI units is measured: the refusals below are the
 /// units' and the records', not the generator's.
 #[test]

@@ -11,9 +11,11 @@ use crate::tyre::mf::{MfCoefficients, MfLimits};
 impl TirDocument {
     /// Ok when the file has the peak and shape coefficients every published
     /// Magic Formula file carries (all thirteen public files here, MF 5.2 to
-    /// 6.2) for each force it describes, and (`any`) describes one: a file
-    /// cut short, or one with such a key misspelt, would otherwise evaluate
-    /// with their defaults (a force of the wrong sign, or none).
+    /// 6.2) for each force it describes, for all three where it describes
+    /// the longitudinal force (listed first, so a file without the later
+    /// ones was cut short), and (`any`) describes one: a file cut short, or
+    /// one with such a key misspelt, would otherwise evaluate with their
+    /// defaults (a force of the wrong sign, or none).
     pub(super) fn core_coefficients(&self, any: bool) -> Result<(), InputError> {
         // (the channel's letters in a coefficient name: `P?Y…`, its core)
         const CORE: [(char, char, &[&str]); 3] = [
@@ -29,7 +31,13 @@ impl TirDocument {
             .iter()
             .filter(|(f, t, _)| self.entries().any(|(_, e)| of(&e.key, (*f, *t))))
             .collect();
-        let mut missing: Vec<&'static str> = if described.is_empty() && any {
+        // A published file lists the longitudinal coefficients first, then
+        // the lateral, then the aligning ones: one that describes the
+        // longitudinal force describes all three, and lacking a later one
+        // it was cut short. A file of the lateral force alone (and its
+        // moment) is a partial file as fitting tools write them.
+        let longitudinal = described.iter().any(|c| c.1 == 'X');
+        let mut missing: Vec<&'static str> = if (described.is_empty() && any) || longitudinal {
             CORE.iter().flat_map(|c| c.2.iter().copied()).collect()
         } else {
             described.iter().flat_map(|c| c.2.iter().copied()).collect()

@@ -275,13 +275,7 @@ pub(crate) fn fit_channel_holding(
     let tyre = problem.tyre(&found.params).canonical();
     let full = channel.parameters(&tyre);
     let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
-    let mut res = vec![0.0; problem.count()];
-    problem.residuals(&p, &mut res);
-    let sum_squares: f64 = res.iter().map(|e| e * e).sum();
-    let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
-    let covariance = (!p.is_empty())
-        .then(|| stats::covariance(&problem.jacobian(&p, &res, &unbounded), sum_squares))
-        .flatten();
+    let covariance = covariance_at(&problem, &p);
     let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
     for (p, why) in parameters.iter_mut().zip(reasons) {
         p.held = why;
@@ -289,21 +283,7 @@ pub(crate) fn fit_channel_holding(
     for (p, _) in parameters.iter_mut().zip(&held).filter(|(_, h)| **h) {
         p.warning = Some("held at the value given".into());
     }
-    let curves = conditions
-        .iter()
-        .map(|c| {
-            let (s, rms) = sigma_of(channel, &tyre, &c.points);
-            CurveReport {
-                fz: c.fz,
-                camber: c.camber,
-                pressure: c.pressure,
-                points: c.points.len(),
-                samples: c.samples,
-                sigma_percent: s,
-                rms,
-            }
-        })
-        .collect();
+    let curves = curves_of(channel, &tyre, conditions);
     let (s, rms) = sigma_of(channel, &tyre, &problem.points);
     Ok(Fit {
         channel,
@@ -320,6 +300,67 @@ pub(crate) fn fit_channel_holding(
         local: settings.local,
         covariance,
     })
+}
+
+/// The covariance of the free parameters `p` of `problem` from its
+/// Jacobian there and the residual variance (None: not determined).
+fn covariance_at(problem: &FitProblem, p: &[f64]) -> Option<DMatrix<f64>> {
+    let mut res = vec![0.0; problem.count()];
+    problem.residuals(p, &mut res);
+    let sum_squares: f64 = res.iter().map(|e| e * e).sum();
+    let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
+    (!p.is_empty())
+        .then(|| stats::covariance(&problem.jacobian(p, &res, &unbounded), sum_squares))
+        .flatten()
+}
+
+/// σ and RMS of `tyre`'s `channel` on each condition.
+fn curves_of(channel: Channel, tyre: &Tyre, conditions: &[Condition]) -> Vec<CurveReport> {
+    conditions
+        .iter()
+        .map(|c| {
+            let (s, rms) = sigma_of(channel, tyre, &c.points);
+            CurveReport {
+                fz: c.fz,
+                camber: c.camber,
+                pressure: c.pressure,
+                points: c.points.len(),
+                samples: c.samples,
+                sigma_percent: s,
+                rms,
+            }
+        })
+        .collect()
+}
+
+/// The report of `tyre` as a fit of `channel` to `conditions` made by
+/// another method than `like`'s (PAC89's two stages beside the direct
+/// fit): its values, σ and curves, the standard errors of the parameters
+/// `like` fitted from the Jacobian at `tyre`, those `like` held held
+/// alike; `like`'s seed, work and swarm σ.
+pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], like: &Fit) -> Fit {
+    let free: Vec<bool> = like.parameters.iter().map(|p| p.free).collect();
+    let problem = FitProblem::for_channel(&tyre, channel, &free, conditions);
+    let all = channel.parameters(&tyre);
+    let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
+    let covariance = covariance_at(&problem, &p);
+    let mut parameters = parameter_reports(&tyre, &tyre, channel, &free, covariance.as_ref());
+    for (p, was) in parameters.iter_mut().zip(&like.parameters) {
+        if !was.free {
+            p.held = was.held.clone();
+            p.warning = was.warning.clone();
+        }
+    }
+    let (s, rms) = sigma_of(channel, &tyre, &problem.points);
+    Fit {
+        curves: curves_of(channel, &tyre, conditions),
+        parameters,
+        sigma_percent: s,
+        rms,
+        covariance,
+        tyre,
+        ..like.clone()
+    }
 }
 
 /// Which of `channel`'s parameters the conditions can identify and why

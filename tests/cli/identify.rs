@@ -188,6 +188,30 @@ fn real_hoosier_rig_data_fits_within_a_few_percent() {
         5,
         "five loads at one pressure and camber"
     );
+    // The report and the terminal give the parameters, σ and curves of the
+    // fit the file holds: with the two-stage result written, its own (they
+    // were the direct fit's).
+    let written = fs::read_to_string(out.path().join("pac89.toml")).unwrap();
+    let a: Vec<f64> = text_between(&written, "\na = [", "]")
+        .split(", ")
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let reported: Vec<f64> = report["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["value"].as_f64().unwrap())
+        .collect();
+    assert_eq!(reported, a);
+    // Seed 1 writes the two-stage result (its σ a hair below the direct's).
+    assert_eq!(report["written"], "two-stage");
+    let t = &report["two_stage"];
+    assert_eq!(sigma, t["polished_overall_sigma_percent"].as_f64().unwrap());
+    assert!(sigma < t["direct_sigma_percent"].as_f64().unwrap());
+    assert!(
+        stdout.contains(&format!("  σ {sigma:.3} % (PSO alone")),
+        "{stdout}"
+    );
 }
 
 #[test]

@@ -24,7 +24,9 @@ mod staged;
 mod staged_figure;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
-use crate::identify::{fit_channel_holding, sigma, start_tyre_of, Channel, Fit, FitSettings};
+use crate::identify::{
+    fit_channel_holding, fit_report_of, sigma, start_tyre_of, Channel, Fit, FitSettings,
+};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
@@ -147,6 +149,10 @@ pub struct TwoStageReport {
     pub stages: TwoStage,
     /// σ over all points of the polished result, %.
     pub polished_overall_sigma_percent: f64,
+    /// σ over all points of the direct fit, %: where the two-stage result
+    /// is written, the report's `sigma_percent`, curves and parameters are
+    /// its own, and this is the direct fit's it was chosen over.
+    pub direct_sigma_percent: f64,
 }
 
 /// The report of a swarm fit: the lateral (or longitudinal) fit, then the
@@ -473,7 +479,11 @@ fn two_stage(o: &Options, r: &mut SwarmReport, settings: &FitSettings) -> Result
         ..Pac89::adams_example()
     });
     let (s, _) = sigma(&tyre, &all);
-    let written = if s < r.fit.sigma_percent {
+    let direct_sigma_percent = r.fit.sigma_percent;
+    let written = if s < direct_sigma_percent {
+        // The report says what the file holds: the two-stage result's
+        // parameters, standard errors and curves.
+        r.fit = fit_report_of(tyre.clone(), Channel::LateralForce, &r.conditions, &r.fit);
         r.tyre = tyre;
         Written::TwoStage
     } else {
@@ -483,6 +493,7 @@ fn two_stage(o: &Options, r: &mut SwarmReport, settings: &FitSettings) -> Result
     r.two_stage = Some(TwoStageReport {
         stages,
         polished_overall_sigma_percent: s,
+        direct_sigma_percent,
     });
     Ok(())
 }
@@ -538,7 +549,12 @@ impl SwarmReport {
         if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
             // With the digits that tell the two apart: it was chosen for
             // being lower, which three decimals can hide.
-            let (c, d, differ) = distinct(t.polished_overall_sigma_percent, f.sigma_percent, 3, 6);
+            let (c, d, differ) = distinct(
+                t.polished_overall_sigma_percent,
+                t.direct_sigma_percent,
+                3,
+                6,
+            );
             out.push(if differ {
                 format!("  writing the two-stage result (σ {c} % < direct {d} %)")
             } else {

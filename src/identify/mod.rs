@@ -347,7 +347,7 @@ pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], lik
     let mut parameters = parameter_reports(&tyre, &tyre, channel, &free, covariance.as_ref());
     for (p, was) in parameters.iter_mut().zip(&like.parameters) {
         if !was.free {
-            p.held = was.held.clone();
+            p.held = was.held;
             p.warning = was.warning.clone();
         }
     }

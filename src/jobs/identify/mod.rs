@@ -9,9 +9,8 @@
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
 use crate::format::{decimals_or_digits, distinct, fixed};
-use crate::identify::data::{Condition, Point};
+use crate::identify::data::Condition;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
-use crate::identify::pac89_two_stage::{self, TwoStage};
 use crate::io::rig::read_rig;
 mod choices;
 mod outputs;
@@ -21,16 +20,16 @@ mod holds;
 pub use holds::Held;
 use holds::{held_by_fits, held_file_lines, held_lines, holds_of};
 mod staged;
+mod two_stage;
+pub use two_stage::{TwoStageReport, Written};
 mod staged_figure;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
-use crate::identify::{
-    fit_channel_holding, fit_report_of, sigma, start_tyre_of, Channel, Fit, FitSettings,
-};
+use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
-use crate::tyre::{Identification, ModelName, Pac89, Tyre};
+use crate::tyre::{Identification, ModelName, Tyre};
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged::run_staged;
@@ -129,30 +128,6 @@ pub enum IdentifyReport {
     Swarm(Box<SwarmReport>),
     /// The staged Magic Formula fit.
     Staged(Box<StagedJob>),
-}
-
-/// Which of PAC89's two fits was written.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Written {
-    /// Zhang et al.'s (2021) two-stage identification.
-    TwoStage,
-    /// The direct swarm fit.
-    Direct,
-}
-
-/// Zhang et al.'s (2021) two stages with the overall σ of their result.
-#[derive(Debug, Clone, Serialize)]
-pub struct TwoStageReport {
-    /// The stages.
-    #[serde(flatten)]
-    pub stages: TwoStage,
-    /// σ over all points of the polished result, %.
-    pub polished_overall_sigma_percent: f64,
-    /// σ over all points of the direct fit, %: where the two-stage result
-    /// is written, the report's `sigma_percent`, curves and parameters are
-    /// its own, and this is the direct fit's it was chosen over.
-    pub direct_sigma_percent: f64,
 }
 
 /// The report of a swarm fit: the lateral (or longitudinal) fit, then the
@@ -397,7 +372,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     // coefficient held it is not run (the summary says so).
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
     if asks_two_stage && first == Channel::LateralForce && o.hold.is_empty() {
-        two_stage(o, &mut r, &settings)?;
+        two_stage::two_stage(o, &mut r, &settings)?;
     }
     // The aligning moment, where the data have it and the model has one,
     // with the lateral parameters just fitted held.
@@ -459,42 +434,6 @@ fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
             return Err(FitError::NonFiniteResult { quantity, value }.into());
         }
     }
-    Ok(())
-}
-
-/// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
-/// fit; the better of the two becomes the tyre.
-fn two_stage(o: &Options, r: &mut SwarmReport, settings: &FitSettings) -> Result<(), Error> {
-    let stages = pac89_two_stage::identify(&r.conditions, settings)
-        .map_err(|e| on_data(o, None)(e.into()))?;
-    let all: Vec<Point> = r
-        .conditions
-        .iter()
-        .flat_map(|c| c.points.iter().copied())
-        .collect();
-    let tyre = Tyre::Pac89(Pac89 {
-        a: stages.polished,
-        b: None,
-        c: None,
-        ..Pac89::adams_example()
-    });
-    let (s, _) = sigma(&tyre, &all);
-    let direct_sigma_percent = r.fit.sigma_percent;
-    let written = if s < direct_sigma_percent {
-        // The report says what the file holds: the two-stage result's
-        // parameters, standard errors and curves.
-        r.fit = fit_report_of(tyre.clone(), Channel::LateralForce, &r.conditions, &r.fit);
-        r.tyre = tyre;
-        Written::TwoStage
-    } else {
-        Written::Direct
-    };
-    r.written = Some(written);
-    r.two_stage = Some(TwoStageReport {
-        stages,
-        polished_overall_sigma_percent: s,
-        direct_sigma_percent,
-    });
     Ok(())
 }
 

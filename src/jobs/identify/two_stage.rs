@@ -1,0 +1,78 @@
+//! PAC89's second route: Zhang et al.'s (2021) two-stage identification
+//! (each condition's Magic Formula coefficients, then the load and camber
+//! laws through them, then a joint polish) run beside the direct swarm
+//! fit, and the better of the two written. Where the two-stage result is
+//! written, the report's fit is its own. Units: N, rad (PAC89's own inside
+//! its model file).
+
+use super::{on_data, Options, SwarmReport};
+use crate::error::Error;
+use crate::identify::data::Point;
+use crate::identify::pac89_two_stage::{self, TwoStage};
+use crate::identify::{fit_report_of, sigma, Channel, FitSettings};
+use crate::tyre::{Pac89, Tyre};
+use serde::Serialize;
+
+/// Which of PAC89's two fits was written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Written {
+    /// Zhang et al.'s (2021) two-stage identification.
+    TwoStage,
+    /// The direct swarm fit.
+    Direct,
+}
+
+/// Zhang et al.'s (2021) two stages with the overall σ of their result.
+#[derive(Debug, Clone, Serialize)]
+pub struct TwoStageReport {
+    /// The stages.
+    #[serde(flatten)]
+    pub stages: TwoStage,
+    /// σ over all points of the polished result, %.
+    pub polished_overall_sigma_percent: f64,
+    /// σ over all points of the direct fit, %: where the two-stage result
+    /// is written, the report's `sigma_percent`, curves and parameters are
+    /// its own, and this is the direct fit's it was chosen over.
+    pub direct_sigma_percent: f64,
+}
+
+/// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
+/// fit; the better of the two becomes the tyre.
+pub(super) fn two_stage(
+    o: &Options,
+    r: &mut SwarmReport,
+    settings: &FitSettings,
+) -> Result<(), Error> {
+    let stages = pac89_two_stage::identify(&r.conditions, settings)
+        .map_err(|e| on_data(o, None)(e.into()))?;
+    let all: Vec<Point> = r
+        .conditions
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .collect();
+    let tyre = Tyre::Pac89(Pac89 {
+        a: stages.polished,
+        b: None,
+        c: None,
+        ..Pac89::adams_example()
+    });
+    let (s, _) = sigma(&tyre, &all);
+    let direct_sigma_percent = r.fit.sigma_percent;
+    let written = if s < direct_sigma_percent {
+        // The report says what the file holds: the two-stage result's
+        // parameters, standard errors and curves.
+        r.fit = fit_report_of(tyre.clone(), Channel::LateralForce, &r.conditions, &r.fit);
+        r.tyre = tyre;
+        Written::TwoStage
+    } else {
+        Written::Direct
+    };
+    r.written = Some(written);
+    r.two_stage = Some(TwoStageReport {
+        stages,
+        polished_overall_sigma_percent: s,
+        direct_sigma_percent,
+    });
+    Ok(())
+}

@@ -69,14 +69,11 @@ fn refused_run(run: &Run) -> String {
     text
 }
 
-/// An MF 6.1 file at fz ≤ 0 lost its `rl` column when the first point was
-/// unloaded, and was refused ("non-finite `rl`") when a later one was.
-#[test]
-fn tyre_eval_writes_rl_on_every_row_with_the_free_radius_off_the_road() {
-    let dir = scratch(&[(
-        "points.csv",
-        "fz,kappa,alpha,camber,speed\n0,0,0.01,0,20\n4000,0,0.01,0,20\n-100,0,0.01,0,20\n0.001,0,0.01,0,20\n",
-    )]);
+/// `tyre-eval` of the MF 6.1 fixture at the points of `points` (CSV
+/// text): its output, the CSV it writes to, and the scratch folder that
+/// holds both.
+fn mf61_at(points: &str) -> (Output, PathBuf, tempfile::TempDir) {
+    let dir = scratch(&[("points.csv", points)]);
     let out = dir.path().join("out.csv");
     let o = run(&[
         "tyre-eval",
@@ -85,6 +82,16 @@ fn tyre_eval_writes_rl_on_every_row_with_the_free_radius_off_the_road() {
         "--out",
         out.to_str().unwrap(),
     ]);
+    (o, out, dir)
+}
+
+/// An MF 6.1 file at fz ≤ 0 lost its `rl` column when the first point was
+/// unloaded, and was refused ("non-finite `rl`") when a later one was.
+#[test]
+fn tyre_eval_writes_rl_on_every_row_with_the_free_radius_off_the_road() {
+    let (o, out, _dir) = mf61_at(
+        "fz,kappa,alpha,camber,speed\n0,0,0.01,0,20\n4000,0,0.01,0,20\n-100,0,0.01,0,20\n0.001,0,0.01,0,20\n",
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
@@ -121,18 +128,9 @@ fn tyre_eval_writes_rl_on_every_row_with_the_free_radius_off_the_road() {
 /// test's; points off the road (`fz ≤ 0`) do not count.
 #[test]
 fn tyre_eval_refuses_loads_in_kn_at_their_cell() {
-    let dir = scratch(&[(
-        "points.csv",
+    let (o, out, _dir) = mf61_at(
         "fz,kappa,alpha,camber,speed\n0,0,0.01,0,20\n4,0,0.01,0,20\n4.5,0,0.02,0,20\n5,0,0.03,0,20\n",
-    )]);
-    let out = dir.path().join("out.csv");
-    let o = run(&[
-        "tyre-eval",
-        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
-        dir.path().join("points.csv").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    );
     let e = stderr(&o);
     assert_eq!(o.status.code(), Some(1), "{e}");
     assert!(

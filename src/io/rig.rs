@@ -11,7 +11,7 @@
 
 use super::columns::Columns;
 use super::read_columns;
-use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope};
+use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip};
 use crate::identify::data::RigData;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
@@ -153,21 +153,34 @@ pub const MIN_MEDIAN_LOAD: f64 = 100.0;
 /// Refuses loads whose median is below [`MIN_MEDIAN_LOAD`] (in kN), at the
 /// first positive load below it.
 fn check_load_unit(path: &Path, c: &Columns, fz: &[f64]) -> Result<(), InputError> {
-    let mut sorted = fz.to_vec();
-    let median = crate::measured::clean::median(&mut sorted);
-    if median >= MIN_MEDIAN_LOAD {
-        return Ok(());
+    match load_in_kn(fz, |_| true) {
+        Some((i, slip)) => Err(c.error_at(path, i, "fz", slip.into())),
+        None => Ok(()),
     }
-    let i = fz
-        .iter()
-        .position(|v| *v > 0.0 && *v < MIN_MEDIAN_LOAD)
-        .unwrap_or(0);
-    let slip = crate::error::UnitSlip::LoadInKn {
-        value: fz[i],
-        median,
-        limit: MIN_MEDIAN_LOAD,
-    };
-    Err(c.error_at(path, i, "fz", slip.into()))
+}
+
+/// Where the loads of `fz` that are `judged` (a rig's all; `tyre-eval`'s
+/// those on the road, a point off it being asked for on purpose) have a
+/// median below [`MIN_MEDIAN_LOAD`]: the first positive load below it and
+/// why, a car's loads written in kN. None when none is judged.
+pub(crate) fn load_in_kn(fz: &[f64], judged: impl Fn(f64) -> bool) -> Option<(usize, UnitSlip)> {
+    let mut counted: Vec<f64> = fz.iter().copied().filter(|v| judged(*v)).collect();
+    if counted.is_empty() {
+        return None;
+    }
+    let median = crate::measured::clean::median(&mut counted);
+    (median < MIN_MEDIAN_LOAD).then(|| {
+        let i = fz
+            .iter()
+            .position(|v| *v > 0.0 && *v < MIN_MEDIAN_LOAD)
+            .unwrap_or(0);
+        let slip = UnitSlip::LoadInKn {
+            value: fz[i],
+            median,
+            limit: MIN_MEDIAN_LOAD,
+        };
+        (i, slip)
+    })
 }
 
 /// Reads rig data and refuses a file without lateral data.

@@ -18,8 +18,7 @@
 //! output never holds a non-finite value.
 
 use crate::error::Error;
-use crate::error::UnitSlip;
-use crate::io::rig::MIN_MEDIAN_LOAD;
+use crate::io::rig::load_in_kn;
 use crate::io::tir::set_tyre_mode;
 use crate::io::{load_tyre, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
@@ -161,7 +160,8 @@ pub fn run(
             return Err(c.error_at(points, i, name, problem).into());
         }
     }
-    if let Some((i, slip)) = load_in_kn(&columns[0].1) {
+    // A car's loads written in kN; the points off the road do not count.
+    if let Some((i, slip)) = load_in_kn(&columns[0].1, |fz| fz > 0.0) {
         return Err(c.error_at(points, i, "fz", slip.into()).into());
     }
     let f = {
@@ -281,24 +281,4 @@ impl TyreEvalReport {
             self.out.display()
         )
     }
-}
-
-/// Where the loads on the road (`fz > 0`; a point off it is asked for on
-/// purpose) have a median below [`MIN_MEDIAN_LOAD`], the first of them and
-/// why: a car's loads written in kN.
-fn load_in_kn(fz: &[f64]) -> Option<(usize, UnitSlip)> {
-    let mut on_road: Vec<f64> = fz.iter().copied().filter(|v| *v > 0.0).collect();
-    if on_road.is_empty() {
-        return None;
-    }
-    let median = crate::measured::clean::median(&mut on_road);
-    (median < MIN_MEDIAN_LOAD).then(|| {
-        let i = fz.iter().position(|v| *v > 0.0).unwrap_or(0);
-        let slip = UnitSlip::LoadInKn {
-            value: fz[i],
-            median,
-            limit: MIN_MEDIAN_LOAD,
-        };
-        (i, slip)
-    })
 }

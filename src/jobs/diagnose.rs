@@ -276,11 +276,7 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
             )
         }));
     }
-    let sets: Vec<_> = d
-        .screened
-        .iter()
-        .filter(|s| !s.extends.is_empty())
-        .collect();
+    let sets: Vec<_> = d.screened_sets().collect();
     if let Some(first) = sets.first() {
         out.push(format!(
             "sets screened, not cross-validated (each removes in sample below {:.0} % − {:.0} points of the gap the set it extends leaves, so none could be added):",

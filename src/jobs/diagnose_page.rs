@@ -197,10 +197,9 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
         ],
         &rows,
     );
-    let sets: Vec<String> = d
-        .screened
+    let screened_sets: Vec<_> = d.screened_sets().collect();
+    let sets: Vec<String> = screened_sets
         .iter()
-        .filter(|s| !s.extends.is_empty())
         .map(|s| {
             let of = joined(&s.extends, "+");
             format!(
@@ -209,7 +208,7 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             )
         })
         .collect();
-    if let Some(first) = d.screened.iter().find(|s| !s.extends.is_empty()) {
+    if let Some(first) = screened_sets.first() {
         p.paragraph(
             "",
             &format!(

@@ -6,7 +6,7 @@
 //! every candidate: the single effects against the base model, the sets the
 //! greedy additions screened against the set they extend.
 
-use handling::diagnose::effects::EffectKind;
+use handling::diagnose::effects::{same_effects, EffectKind};
 use handling::diagnose::report::Screened;
 use handling::diagnose::{diagnose, DiagnoseSettings, Diagnosis};
 use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
@@ -50,11 +50,7 @@ fn same_with_and_without(truth: &[EffectKind], seed: u64, hidden: &[EffectKind])
         let same = off.combinations.iter().find(|o| o.effect == r.effect);
         assert_eq!(format!("{r:?}"), format!("{:?}", same.unwrap()), "{what}");
     }
-    let sets: Vec<&Screened> = on
-        .screened
-        .iter()
-        .filter(|s| !s.extends.is_empty())
-        .collect();
+    let sets: Vec<&Screened> = on.screened_sets().collect();
     assert_eq!(
         on.combinations.len() + sets.len(),
         off.combinations.len(),
@@ -124,20 +120,15 @@ fn reduction(before: f64, after: f64, jn: f64) -> f64 {
 /// acceptance share, within the margin of its in-sample one, and not the
 /// verdict.
 fn set_screened_rightly(s: &Screened, off: &Diagnosis, what: &str) {
-    let sorted = |e: &[EffectKind]| {
-        let mut v = e.to_vec();
-        v.sort();
-        v
-    };
     let row = |effects: &[EffectKind]| {
         off.ranking
             .iter()
             .chain(&off.combinations)
-            .find(|r| sorted(&r.effects) == sorted(effects))
+            .find(|r| same_effects(&r.effects, effects))
             .unwrap_or_else(|| panic!("{what}: {effects:?} not cross-validated without screening"))
     };
     let (extended, larger) = (row(&s.extends), row(&s.effects));
-    assert_ne!(sorted(off.verdict.effects()), sorted(&s.effects), "{what}");
+    assert!(!same_effects(off.verdict.effects(), &s.effects), "{what}");
     let jn = off.gap.noise_level;
     let extra = reduction(extended.heldout_error_after, larger.heldout_error_after, jn);
     assert!(

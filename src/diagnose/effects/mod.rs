@@ -174,6 +174,14 @@ pub fn same_effects(a: &[EffectKind], b: &[EffectKind]) -> bool {
     a.len() == b.len() && b.iter().all(|e| a.contains(e))
 }
 
+/// The effects of `kinds` as a set: in one order whatever order they were
+/// listed in (a key for [`same_effects`]'s comparison).
+pub fn set_of(kinds: &[EffectKind]) -> Vec<EffectKind> {
+    let mut set = kinds.to_vec();
+    set.sort();
+    set
+}
+
 /// The names of `kinds` joined by `sep` (a candidate's label: `a+b`).
 pub fn joined(kinds: &[EffectKind], sep: &str) -> String {
     let names: Vec<&str> = kinds.iter().map(|e| e.name()).collect();

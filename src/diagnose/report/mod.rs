@@ -272,10 +272,17 @@ impl Diagnosis {
             // it was built.
             .find(|r| !effects.is_empty() && same_effects(&r.effects, effects))
     }
+
     /// The single effects screened before their cross-validation (not the
-    /// sets the greedy additions screened: [`Screened::extends`]).
+    /// sets the greedy additions screened: [`Diagnosis::screened_sets`]).
     pub fn screened_singles(&self) -> impl Iterator<Item = &Screened> {
         self.screened.iter().filter(|s| s.extends.is_empty())
+    }
+
+    /// The sets the greedy additions screened (each with the set it
+    /// [`Screened::extends`]).
+    pub fn screened_sets(&self) -> impl Iterator<Item = &Screened> {
+        self.screened.iter().filter(|s| !s.extends.is_empty())
     }
 
     /// How the report says candidate `r`'s held-out and in-sample

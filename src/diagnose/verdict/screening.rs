@@ -39,7 +39,7 @@
 //! Where one set could pass, all are cross-validated: the pick among them
 //! reads every held-out error, as it does without screening.
 
-use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::effects::{joined, set_of, EffectKind};
 use crate::diagnose::report::{Ranked, Screened};
 use crate::diagnose::verdict::baseline::Baseline;
 #[cfg(doc)]
@@ -187,14 +187,9 @@ pub(crate) fn screened_row(
 /// Keeps one screened row per set of effects, none for a set another
 /// greedy search cross-validated (`rows`).
 pub(crate) fn one_screened_row_per_set(screened: &mut Vec<Screened>, rows: &[Ranked]) {
-    let sorted = |effects: &[EffectKind]| {
-        let mut set = effects.to_vec();
-        set.sort();
-        set
-    };
     let mut seen: std::collections::HashSet<Vec<EffectKind>> =
-        rows.iter().map(|r| sorted(&r.effects)).collect();
-    screened.retain(|r| seen.insert(sorted(&r.effects)));
+        rows.iter().map(|r| set_of(&r.effects)).collect();
+    screened.retain(|r| seen.insert(set_of(&r.effects)));
 }
 
 /// The greedy step's screening: where `screening` is on and every set

@@ -30,7 +30,7 @@
 //! reductions in percent. The method is the project's own (see
 //! [`crate::diagnose::pipeline`] for the overview).
 
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{set_of, EffectKind};
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::report::{Confounded, Ranked, Refused, Screened};
 use crate::diagnose::verdict::baseline::Baseline;
@@ -162,11 +162,7 @@ fn one_row_per_set(rows: &mut Vec<Ranked>, chosen: Option<&[EffectKind]>) {
     // Stable: the chosen set's row moves ahead of its other orders only.
     rows.sort_by_key(|r| Some(r.effects.as_slice()) != chosen);
     let mut seen = std::collections::HashSet::new();
-    rows.retain(|r| {
-        let mut set = r.effects.clone();
-        set.sort();
-        seen.insert(set)
-    });
+    rows.retain(|r| seen.insert(set_of(&r.effects)));
 }
 
 /// Look-alikes of the first single (`first`, ranked as `r`): the other

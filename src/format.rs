@@ -132,15 +132,42 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The known name nearest `given`, when it is near enough to be what was
-/// meant: at most one edit per three characters of the longer name
+/// meant: one edit away (a slip); else the one known name that holds every
+/// word of `given` (`slick` for `racing_slick`) or whose every word
+/// `given` holds (`sine-steer` for `sine`), words split at `_`, `-` and
+/// spaces; else at most one edit per three characters of the longer name
 /// (`3·d ≤ n + 1`), so a slip or two in a long name is caught and an
 /// unrelated short word is not; the first of equally near names.
 pub fn nearest_name<'a>(given: &str, known: &[&'a str]) -> Option<&'a str> {
-    known
+    let closest = known
         .iter()
         .map(|k| (edit_distance(given, k), *k))
+        .min_by_key(|(d, _)| *d);
+    if let Some((_, k)) = closest.filter(|(d, _)| *d <= 1) {
+        return Some(k);
+    }
+    let words = |s: &str| -> Vec<String> {
+        s.to_lowercase()
+            .split(['_', '-', ' '])
+            .filter(|w| !w.is_empty())
+            .map(String::from)
+            .collect()
+    };
+    let g = words(given);
+    let within = |a: &[String], b: &[String]| !a.is_empty() && a.iter().all(|w| b.contains(w));
+    let sharing: Vec<&str> = known
+        .iter()
+        .filter(|k| {
+            let kw = words(k);
+            within(&g, &kw) || within(&kw, &g)
+        })
+        .copied()
+        .collect();
+    if let [one] = sharing[..] {
+        return Some(one);
+    }
+    closest
         .filter(|(d, k)| 3 * d <= given.chars().count().max(k.chars().count()) + 1)
-        .min_by_key(|(d, _)| *d)
         .map(|(_, k)| k)
 }
 
@@ -174,6 +201,19 @@ mod tests {
         ] {
             assert_eq!(exact(v).parse::<f64>().unwrap(), v, "{v}");
         }
+    }
+
+    #[test]
+    fn a_word_of_a_known_name_or_a_known_name_with_words_around_it_is_suggested() {
+        let classes = ["passenger_car", "racing_slick", "truck"];
+        assert_eq!(nearest_name("slick", &classes), Some("racing_slick"));
+        assert_eq!(nearest_name("racing", &classes), Some("racing_slick"));
+        let kinds = ["step-steer", "sine", "ramp", "sweep"];
+        assert_eq!(nearest_name("sine-steer", &kinds), Some("sine"));
+        // A slip still wins, and a word two names share suggests neither.
+        assert_eq!(nearest_name("step-stear", &kinds), Some("step-steer"));
+        assert_eq!(nearest_name("car", &["passenger_car", "race_car"]), None);
+        assert_eq!(nearest_name("wheel", &classes), None);
     }
 
     #[test]

@@ -160,7 +160,22 @@ pub enum InputError {
         /// The folder.
         path: PathBuf,
     },
+    /// Several places of one file refused at once, in file order (built by
+    /// [`InputError::all_of`]): a user mends them in one pass rather than
+    /// one per run.
+    #[error("{path}: {} places refused, in file order:{}{}", errors.len() + more, errors.iter().map(|e| format!("\n  {e}")).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    Several {
+        /// The file.
+        path: PathBuf,
+        /// The first [`SEVERAL_SHOWN`] of them, each located.
+        errors: Vec<InputError>,
+        /// How many more there are.
+        more: usize,
+    },
 }
+
+/// The places an [`InputError::Several`] lists before it counts the rest.
+pub const SEVERAL_SHOWN: usize = 20;
 
 impl InputError {
     /// A problem at line `line`, column `column` (1-based) of `path`.
@@ -186,6 +201,21 @@ impl InputError {
         }
     }
 
+    /// The errors of `path` (in file order) as one: none, the one, or
+    /// [`InputError::Several`] listing the first [`SEVERAL_SHOWN`].
+    pub(crate) fn all_of(path: &std::path::Path, mut errors: Vec<InputError>) -> Option<Self> {
+        if errors.len() < 2 {
+            return errors.pop();
+        }
+        let more = errors.len().saturating_sub(SEVERAL_SHOWN);
+        errors.truncate(SEVERAL_SHOWN);
+        Some(InputError::Several {
+            path: path.to_path_buf(),
+            errors,
+            more,
+        })
+    }
+
     /// The file the error is in.
     pub fn path(&self) -> &std::path::Path {
         match self {
@@ -199,7 +229,8 @@ impl InputError {
             | InputError::Value { path, .. }
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
-            | InputError::NoCampaign { path } => path,
+            | InputError::NoCampaign { path }
+            | InputError::Several { path, .. } => path,
         }
     }
 
@@ -219,6 +250,7 @@ impl InputError {
             InputError::Value { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,
+            InputError::Several { errors, .. } => errors.first().and_then(InputError::location),
             _ => None,
         }
     }

@@ -7,8 +7,15 @@ use crate::format::{fixed, significant};
 use thiserror::Error;
 
 /// An angle in rad with its value in degrees: "0.0017 rad (0.10°)".
+/// A steer below 1e-5 rad (a mean of rounding, far below any sensor's
+/// resolution) is written in exponent form, not with sixteen zeros.
 fn angle(v: f64) -> String {
-    format!("{} rad ({}°)", significant(v, 2), fixed(v.to_degrees(), 2))
+    let rad = if v != 0.0 && v.abs() < 1e-5 {
+        format!("{v:.1e}")
+    } else {
+        significant(v, 2)
+    };
+    format!("{rad} rad ({}°)", fixed(v.to_degrees(), 2))
 }
 
 /// The sentence of [`MetricsError::NoStep`] in plain terms: where the

@@ -87,11 +87,47 @@ pub fn number(v: f64) -> String {
     }
 }
 
+/// `v` as [`number`] shows it, with more digits where that would read as
+/// one of `bounds` it is not (`1.570797 rad is outside … 1.570796`, not
+/// `1.5708 … 1.5708`): a refused value never reads as the limit it broke.
+pub fn number_apart(v: f64, bounds: &[f64]) -> String {
+    let shown = number(v);
+    let clash = |text: &str| bounds.iter().any(|&b| b != v && number(b) == text);
+    if !v.is_finite() || v == 0.0 || !clash(&shown) {
+        return shown;
+    }
+    (DIGITS + 1..=17)
+        .map(|d| {
+            let size = v.abs();
+            if (1e-4..1e16).contains(&size) {
+                rounded(v, d)
+            } else {
+                exponent_form(v, d)
+            }
+        })
+        .find(|t| bounds.iter().all(|&b| b == v || *t != rounded_like(b, t)))
+        .unwrap_or_else(|| format!("{v:e}"))
+}
+
+/// `b` at the precision of the text `like` (its significant digits), to
+/// tell whether two numbers shown alike are.
+fn rounded_like(b: f64, like: &str) -> String {
+    let d = significant_digits(like).max(1);
+    if like.contains('e') {
+        exponent_form(b, d)
+    } else {
+        rounded(b, d)
+    }
+}
+
 /// What the check `lo < v ≤ hi` asks, after "must": `lie in (lo, hi]`;
 /// `lie in [0, hi]` when `lo` is 0 less a rounding guard; `be greater than
 /// lo` when `hi` is infinite.
 pub fn range(lo: f64, hi: f64) -> String {
     let guard = (-GUARD..0.0).contains(&lo);
+    if hi.is_finite() && lo == -hi && hi > 0.0 {
+        return format!("lie within ±{}", Num(hi));
+    }
     match (guard, hi.is_finite()) {
         (true, true) => format!("lie in [0, {}]", Num(hi)),
         (true, false) => "not be negative".into(),
@@ -103,6 +139,23 @@ pub fn range(lo: f64, hi: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_value_beside_its_bound_shows_the_digits_that_tell_them_apart() {
+        let quarter = std::f64::consts::FRAC_PI_2;
+        let past = quarter + 1e-12;
+        assert_eq!(number(past), number(quarter));
+        assert_eq!(number_apart(past, &[-quarter, quarter]), "1.570796326796");
+        assert_eq!(number_apart(1e308, &[-1e6, 1e6]), "1e308");
+        assert_eq!(number_apart(0.0174533, &[0.5]), "0.0174533");
+        assert_eq!(number_apart(quarter, &[quarter]), number(quarter));
+    }
+
+    #[test]
+    fn a_symmetric_range_reads_as_plus_or_minus() {
+        assert_eq!(range(-45.0, 45.0), "lie within ±45");
+        assert_eq!(range(0.0, 2.0), "lie in (0, 2]");
+    }
 
     #[test]
     fn short_values_show_as_written_and_computed_noise_is_rounded() {

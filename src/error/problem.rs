@@ -64,6 +64,17 @@ impl RigChannel {
 }
 
 /// `v` and its unit, if it has one: `300 m/s`, `10`.
+/// [`with_unit`] with as many digits as tell `v` from `bounds`
+/// ([`super::number::number_apart`]).
+fn apart_with_unit(v: f64, bounds: &[f64], unit: &str) -> String {
+    let v = super::number::number_apart(v, bounds);
+    if unit.is_empty() {
+        v
+    } else {
+        format!("{v} {unit}")
+    }
+}
+
 fn with_unit(v: f64, unit: &str) -> String {
     if unit.is_empty() {
         Num(v).to_string()
@@ -270,7 +281,7 @@ pub enum InputProblem {
         value: f64,
     },
     /// A tyre input outside the range a tyre model is evaluated in.
-    #[error("column `{column}`: {} is outside {} to {}, the range a tyre is evaluated in ({why})", with_unit(*value, unit), Num(*lo), with_unit(*hi, unit))]
+    #[error("column `{column}`: {} is outside {} to {}, the range a tyre is evaluated in ({why})", apart_with_unit(*value, &[*lo, *hi], unit), Num(*lo), with_unit(*hi, unit))]
     NotPhysical {
         /// The column.
         column: &'static str,

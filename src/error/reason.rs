@@ -260,6 +260,9 @@ pub enum Limit {
         /// The shortest run, s.
         min: f64,
     },
+    /// The low-pass cut-off of the step-steer metrics, Hz.
+    #[error("a zero-phase low-pass at f Hz rises in about 0.5/f s, a yaw-rate response in 0.1–0.5 s: below 1 Hz the filter smooths the steer step and the response themselves, and the metrics would measure the filter (5–10 Hz removes sensor noise and keeps the response)")]
+    FilterCutoff,
     /// The output step of a simulation.
     #[error("rows (and RK4 steps) more than 50 ms apart miss the yaw mode")]
     OutputStep,

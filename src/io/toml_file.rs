@@ -64,10 +64,18 @@ enum Offender {
     Int(i64),
     Float(f64),
     Bool(bool),
+    /// serde's `map`: a date or time (TOML reads `1970-01-01` as one) or
+    /// an inline table.
+    Map,
 }
 
 /// What `message` says the offending value was, if it says.
 fn offender(message: &str) -> Option<Offender> {
+    // A name no variant has: the string written (inside a tagged table
+    // toml gives it no place).
+    if let Some(rest) = message.strip_prefix("unknown variant `") {
+        return Some(Offender::Str(rest.split('`').next()?.to_string()));
+    }
     if let Some(rest) = message.strip_prefix("invalid length ") {
         let n = rest
             .split(|c: char| !c.is_ascii_digit())
@@ -83,6 +91,8 @@ fn offender(message: &str) -> Option<Offender> {
     let quoted = |prefix: &str| what.strip_prefix(prefix)?.strip_suffix('`');
     if what == "sequence" {
         Some(Offender::Array(None))
+    } else if what == "map" || what == "a date, time or table" {
+        Some(Offender::Map)
     } else if let Some(s) = what.strip_prefix("string \"") {
         Some(Offender::Str(s.strip_suffix('"')?.to_string()))
     } else if let Some(v) = quoted("integer `") {
@@ -109,6 +119,7 @@ impl Offender {
             (Value::Integer(i), Offender::Int(x)) => i.value() == x,
             (Value::Float(f), Offender::Float(x)) => f.value() == x,
             (Value::Boolean(b), Offender::Bool(x)) => b.value() == x,
+            (Value::Datetime(_) | Value::InlineTable(_), Offender::Map) => true,
             _ => false,
         }
     }
@@ -174,6 +185,11 @@ impl TomlSource {
             .collect::<Vec<_>>()
             .join("; ");
         let message = suggest_variant(&message);
+        // serde calls a TOML date a map: say what the reader wrote.
+        let message = match message.strip_prefix("invalid type: map, ") {
+            Some(rest) => format!("invalid type: a date, time or table, {rest}"),
+            None => message,
+        };
         // A value of the wrong type: toml's message names the value, the
         // key is named here; a value that does not parse, by the key
         // written on its line.

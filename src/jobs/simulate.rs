@@ -10,6 +10,7 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
+use crate::metrics::applicability::applicability;
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
@@ -41,6 +42,9 @@ pub struct SimulateReport {
     pub friction: f64,
     /// Step-steer metrics (step steers only).
     pub metrics: Option<StepMetrics>,
+    /// Where the metrics describe something other than a handling
+    /// response ([`applicability`]): a slide, a spin, a crawl.
+    pub warnings: Vec<String>,
     /// Intervals with a wheel off the ground.
     pub lift_offs: Vec<LiftOff>,
     /// A replayed measurement's gap.
@@ -69,6 +73,9 @@ struct MetricsFile<'a> {
     /// Intervals with a wheel off the ground (simulated runs only).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     lift_offs: &'a [LiftOff],
+    /// Where the metrics do not describe a handling response.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    warnings: &'a [String],
 }
 
 const FILES: [&str; 4] = ["history.csv", "metrics.json", "response.png", "gap.json"];
@@ -100,6 +107,9 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         ),
         _ => None,
     };
+    let warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
+        applicability(m, Some(sc.manoeuvre.speed(0.0)))
+    });
     let replay = sc.measured.as_ref().map(|run| ReplayGap {
         run: run.path.display().to_string(),
         // A lone replay has no trusted uncertainty: each channel against
@@ -112,6 +122,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
         friction: sc.integrator.friction,
         metrics,
+        warnings,
         lift_offs: h.lift_offs(),
         replay,
         history: sim.history,
@@ -132,6 +143,7 @@ impl SimulateReport {
         if let Some(m) = &self.metrics {
             out.extend(metric_lines(m));
         }
+        out.extend(self.warnings.iter().map(|w| format!("  warning: {w}")));
         // The four loads always add up to the weight; a wheel at zero load
         // has lifted off, and the 2-DOF model then carries its axle on one
         // wheel.
@@ -170,6 +182,7 @@ impl SimulateReport {
                 units: UNITS,
                 metrics: m,
                 lift_offs: &self.lift_offs,
+                warnings: &self.warnings,
             };
             write_json(&files[1], &file)?;
         }

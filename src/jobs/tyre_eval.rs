@@ -70,22 +70,28 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
 ];
 
-/// The first value of `values` (column `name`) outside its [`PHYSICAL`]
+/// Every value of `values` (column `name`) outside its [`PHYSICAL`]
 /// range: its row and the problem.
-fn not_physical(name: &str, values: &[f64]) -> Option<(usize, crate::error::InputProblem)> {
-    let &(column, lo, hi, unit, why) = PHYSICAL.iter().find(|p| p.0 == name)?;
-    let i = values.iter().position(|v| !(lo..=hi).contains(v))?;
-    Some((
-        i,
-        crate::error::InputProblem::NotPhysical {
-            column,
-            value: values[i],
-            lo,
-            hi,
-            unit,
-            why,
-        },
-    ))
+fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, crate::error::InputProblem)> {
+    let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
+        return Vec::new();
+    };
+    values
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| !(lo..=hi).contains(*v))
+        .map(|(i, &value)| {
+            let problem = crate::error::InputProblem::NotPhysical {
+                column,
+                value,
+                lo,
+                hi,
+                unit,
+                why,
+            };
+            (i, problem)
+        })
+        .collect()
 }
 
 /// The report of `tyre-eval`: the points with their forces and moments.
@@ -155,10 +161,22 @@ pub fn run(
         .iter()
         .map(|(n, v)| (*n, v))
         .chain(pressure.as_ref().map(|p| ("pressure", p)));
-    for (name, values) in given {
-        if let Some((i, problem)) = not_physical(name, values) {
-            return Err(c.error_at(points, i, name, problem).into());
-        }
+    // Every point no tyre is evaluated at, in row order (then column).
+    let mut refused: Vec<(usize, usize, &str, crate::error::InputProblem)> = given
+        .enumerate()
+        .flat_map(|(k, (name, values))| {
+            not_physical(name, values)
+                .into_iter()
+                .map(move |(i, problem)| (i, k, name, problem))
+        })
+        .collect();
+    refused.sort_by_key(|(i, k, _, _)| (*i, *k));
+    let errors = refused
+        .into_iter()
+        .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
+        .collect();
+    if let Some(e) = crate::error::InputError::all_of(points, errors) {
+        return Err(e.into());
     }
     // A car's loads written in kN; the points off the road do not count.
     if let Some((i, slip)) = load_in_kn(&columns[0].1, |fz| fz > 0.0) {
@@ -219,14 +237,28 @@ pub fn run(
     // A model that gives a non-finite value at a physical point is refused
     // at that point (its row, the first column).
     // (The first five columns are the inputs, checked above.)
-    for (output, values) in columns.iter().skip(5) {
-        if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+    let mut bad: Vec<(usize, &str)> = columns
+        .iter()
+        .skip(5)
+        .flat_map(|(output, values)| {
+            let rows = values.iter().enumerate().filter(|(_, v)| !v.is_finite());
+            rows.map(move |(i, _)| (i, *output))
+        })
+        .collect();
+    bad.sort_by_key(|(i, _)| *i);
+    bad.dedup_by_key(|(i, _)| *i);
+    let errors = bad
+        .into_iter()
+        .map(|(i, output)| {
             let problem = crate::error::InputProblem::NonFiniteOutput {
                 model: tyre.model_name(),
                 output,
             };
-            return Err(c.error_at(points, i, "fz", problem).into());
-        }
+            c.error_at(points, i, "fz", problem)
+        })
+        .collect();
+    if let Some(e) = crate::error::InputError::all_of(points, errors) {
+        return Err(e.into());
     }
     Ok(TyreEvalReport {
         points: points.display().to_string(),

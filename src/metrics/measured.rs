@@ -252,6 +252,16 @@ pub fn measured_step_metrics(
             "the steer rises from 10 % to 90 % of its step in {steer_rise_time:.3} s; ISO 7401 asks for at most {ISO_7401_RISE} s: the response times include the ramp"
         ));
     }
+    // The piece's median speed: a crawl is said, as a slide is.
+    let mut speeds: Vec<f64> = piece
+        .speed
+        .iter()
+        .copied()
+        .filter(|u| u.is_finite())
+        .collect();
+    speeds.sort_by(f64::total_cmp);
+    let speed = speeds.get(speeds.len() / 2).copied();
+    warnings.extend(super::applicability::applicability(&metrics, speed));
     if metrics.ay_steady.is_none() {
         warnings
             .push("the run has no `ay`: lateral-acceleration metrics and Er are left out".into());

@@ -40,7 +40,12 @@
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
 
+pub mod applicability;
 pub(crate) mod continuous;
+
+/// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
+/// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
+pub const MIN_FILTER_HZ: f64 = 1.0;
 pub mod measured;
 pub mod simulated;
 mod step_shape;
@@ -109,7 +114,15 @@ impl MetricSettings {
         ParamError::non_negative("e1", self.e1)?;
         ParamError::non_negative("e2", self.e2)?;
         if let Some(f) = self.filter_hz {
-            ParamError::positive("filter_hz", f)?;
+            ParamError::finite("filter_hz", f)?;
+            if f <= MIN_FILTER_HZ {
+                let reason = crate::error::ParamReason::OutOfRange {
+                    lo: MIN_FILTER_HZ,
+                    hi: f64::INFINITY,
+                    why: crate::error::Limit::FilterCutoff,
+                };
+                return Err(ParamError::new("filter_hz", f, reason));
+            }
         }
         Ok(())
     }

@@ -82,6 +82,11 @@ impl Gim {
         }
         let k = self.stiffness_at(s.fz);
         let t = safe_tan(s.alpha);
+        // Both are odd in the slip: zero at none, also where a load next to
+        // zero (a subnormal) makes θ = K/(3μFz) infinite and θ·0 undefined.
+        if t == 0.0 {
+            return (0.0, 0.0);
+        }
         let mu = self.friction * s.mu_scale / (1.0 + self.friction_decay * t.abs());
         if mu <= 0.0 {
             return (0.0, 0.0);
@@ -172,6 +177,10 @@ impl LateralForceOf for Gim {
         // e^0 is 1 exactly: at n = 0 the value is K's, bit for bit.
         let k = stiffness * ((s.fz / self.reference_load).ln() * exponent).exp();
         let t = safe_tan_of(s.alpha);
+        // As in [`Gim::cornering`]: zero at no slip whatever θ.
+        if t == 0.0 {
+            return zero;
+        }
         let mu = friction * s.mu_scale / (decay * t.abs() + 1.0);
         if mu <= 0.0 {
             return zero;

@@ -30,16 +30,33 @@ use crate::error::{ParamError, ParamReason};
 use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
-/// Which coefficient numbering a PAC89 file uses.
+/// Which coefficient numbering a PAC89 file uses. Read from its name
+/// (`adams-pac89`, `pacejka-1987`, or with `_`) through a string, so that
+/// a value of another type inside the `model`-tagged tyre table is named
+/// with its key and line like any other.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[serde(rename_all = "kebab-case", try_from = "String")]
 pub enum Pac89Form {
     /// The Adams PAC89 numbering (a0..a13, b0..b10, c0..c17): supported.
-    #[serde(alias = "adams_pac89")]
     AdamsPac89,
     /// The 1987 paper's numbering (a1..a13 ...): refused.
-    #[serde(rename = "pacejka-1987", alias = "pacejka_1987")]
+    #[serde(rename = "pacejka-1987")]
     Pacejka1987,
+}
+
+impl TryFrom<String> for Pac89Form {
+    type Error = String;
+    fn try_from(s: String) -> Result<Self, String> {
+        const NAMES: [&str; 2] = ["adams-pac89", "pacejka-1987"];
+        match s.replace('_', "-").as_str() {
+            "adams-pac89" => Ok(Pac89Form::AdamsPac89),
+            "pacejka-1987" => Ok(Pac89Form::Pacejka1987),
+            _ => Err(format!(
+                "unknown variant `{s}`, expected one of `{}`, `{}`",
+                NAMES[0], NAMES[1]
+            )),
+        }
+    }
 }
 
 /// PAC89 coefficients in the Adams numbering.

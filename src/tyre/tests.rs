@@ -222,7 +222,18 @@ fn aligning_moment_has_sign_of_fy_at_small_slip() {
 #[test]
 fn no_nan_at_the_edges_of_the_input_range() {
     for t in all_models() {
-        for fz in [-100.0, 0.0, 1e-9, 1.0, 4000.0, 20_000.0] {
+        // A subnormal load (5e-324) and the smallest normal one: θ = K/(3μFz)
+        // is infinite there, and must not meet a zero slip as ∞·0.
+        for fz in [
+            -100.0,
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1e-9,
+            1.0,
+            4000.0,
+            20_000.0,
+        ] {
             for alpha in [
                 -std::f64::consts::FRAC_PI_2,
                 -1.0,

@@ -250,6 +250,7 @@ mod scenarios;
 mod shards;
 mod sweeps;
 mod trips;
+mod trips_applicable;
 mod trips_diagnose;
 mod trips_fresh;
 mod trips_identify;

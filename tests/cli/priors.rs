@@ -183,6 +183,9 @@ fn a_wrong_prior_or_uncertainty_is_refused_with_its_key_line_and_value() {
         "{e}"
     );
     assert!(e.contains("did you mean `racing_slick`"), "{e}");
+    // A word of the name, as engineers say it, is answered too.
+    let e = refused("\n[tyres]\nclass = \"slick\"\n", "slow-oval");
+    assert!(e.contains("did you mean `racing_slick`"), "{e}");
     let e = refused("\n[channels]\nbeta = -0.002\n", "slow-oval");
     assert!(
         e.contains("channels") && e.contains("beta") && e.contains("-0.002"),

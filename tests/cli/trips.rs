@@ -98,7 +98,7 @@ fn simulate_refuses_a_steer_no_road_wheel_makes_and_a_step_of_nothing_at_its_key
     for (steer, expected) in [
         (
             "1.7",
-            "`manoeuvre.steer` = 1.7: must lie in (-0.785398, 0.785398]: no road wheel steers beyond ±45°",
+            "`manoeuvre.steer` = 1.7: must lie within ±0.785398: no road wheel steers beyond ±45°",
         ),
         (
             "0",
@@ -438,7 +438,7 @@ fn a_swarm_fit_holds_a_parameter_at_the_value_given() {
         (
             "mf61",
             "PKY1=1e308",
-            "`PKY1` = 1e308: must lie in (-1000000, 1000000]",
+            "`PKY1` = 1e308: must lie within ±1000000",
         ),
     ] {
         let e = refused(

@@ -105,6 +105,57 @@ fn a_mistyped_manoeuvre_kind_is_answered_with_the_nearest_name() {
     );
 }
 
+/// `start = 1970-01-01` (a TOML date) was put at the `[manoeuvre]` header
+/// as "invalid type: map, expected f64", naming no key.
+#[test]
+fn a_date_where_a_number_is_meant_is_refused_at_its_key() {
+    let e = refused_manoeuvre(&manoeuvre(
+        "step-steer",
+        "speed = 20\nsteer = 0.02\nstart = 1970-01-01\n",
+    ));
+    assert!(
+        e.contains("scenario.toml:17:1: `manoeuvre.start`: invalid type: a date, time or table, expected f64"),
+        "{e}"
+    );
+}
+
+/// `form = 1` in a PAC89 file said "invalid type: unit variant, expected
+/// string only" with no key or line; a misspelt form had no line either.
+#[test]
+fn a_pac89_form_of_the_wrong_type_or_name_is_refused_at_its_key() {
+    let text = fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap();
+    let cases = [
+        (
+            "form = 1",
+            "tyre.toml:7:1: `form`: invalid type: integer `1`, expected a string",
+        ),
+        (
+            "form = \"adams-pac98\"",
+            "tyre.toml:7:1: `form`: unknown variant `adams-pac98` (did you mean `adams-pac89`?)",
+        ),
+    ];
+    for (form, said) in cases {
+        let tyre = text.replace("form = \"adams-pac89\"", form);
+        let dir = scratch(&[
+            ("tyre.toml", &tyre),
+            (
+                "points.csv",
+                "fz,kappa,alpha,camber,speed\n4000,0,0.01,0,20\n",
+            ),
+        ]);
+        let out = dir.path().join("out.csv");
+        let o = run(&[
+            "tyre-eval",
+            dir.path().join("tyre.toml").to_str().unwrap(),
+            dir.path().join("points.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let e = refused(&o, &out);
+        assert!(e.contains(said), "{e}");
+    }
+}
+
 /// The bundled PAC89 file with its `a = [...]` line replaced by `a`.
 fn pac89_with_a(a: &str) -> String {
     let text = fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap();

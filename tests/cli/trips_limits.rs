@@ -74,7 +74,7 @@ fn a_tyre_file_in_millimetres_or_kilonewtons_is_refused_at_its_key() {
         ),
         (
             "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 30\n",
-            "tyre.toml:3:1: `pneumatic_trail` = 30: must lie in (-0.5, 0.5]",
+            "tyre.toml:3:1: `pneumatic_trail` = 30: must lie within ±0.5",
             "is the value in millimetres? (30 mm is 0.03)",
         ),
         (
@@ -107,7 +107,7 @@ fn a_tir_value_no_tyre_has_is_refused_at_its_line() {
         (
             206,
             "PKY1                     = 1e30",
-            "t.tir:206:28: `PKY1`: 1e30 must lie in (-1000000, 1000000]: no coefficient of a published Magic Formula file reaches ±1e6",
+            "t.tir:206:28: `PKY1`: 1e30 must lie within ±1000000: no coefficient of a published Magic Formula file reaches ±1e6",
         ),
         (
             48,
@@ -174,7 +174,7 @@ fn an_mf_fit_beyond_any_tyre_is_refused_before_its_file_is_written() {
     let e = refused(&o, &out);
     assert!(e.contains("error: the fit took `PKY1` = -"), "{e}");
     assert!(
-        e.contains("must lie in (-1000000, 1000000]: no coefficient of a published Magic Formula file reaches ±1e6"),
+        e.contains("must lie within ±1000000: no coefficient of a published Magic Formula file reaches ±1e6"),
         "{e}"
     );
     assert!(

@@ -58,6 +58,14 @@ fn metrics_options_the_run_cannot_honour_are_refused_or_said() {
         "{}",
         stderr(&o)
     );
+    // One slower than the response is refused with why (it smoothed the
+    // step away and the run was blamed for having none).
+    let o = metrics("--filter-hz", "0.5");
+    assert!(
+        stderr(&o).contains("`filter_hz` = 0.5: must be greater than 1: a zero-phase low-pass"),
+        "{}",
+        stderr(&o)
+    );
     // One the run's sampling cannot apply, or a window past the record, is
     // measured and said.
     let o = metrics("--filter-hz", "1e9");

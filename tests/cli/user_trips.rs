@@ -396,7 +396,7 @@ fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
         "{ from = 0.0, to = 50.0, step = 25.0, unit = \"deg\" }",
     ] {
         let (e, at) = sweep_err("steer", steer);
-        let expected = format!("{at}50: must lie in (-45, 45]: no road wheel steers beyond ±45° (a car's largest mean road-wheel steer is about 35–40°)");
+        let expected = format!("{at}50: must lie within ±45: no road wheel steers beyond ±45° (a car's largest mean road-wheel steer is about 35–40°)");
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
         assert!(!e.contains("in degrees?"), "{e}");
     }

@@ -506,19 +506,29 @@ pub fn signatures(effects: &[EffectKind]) -> String {
 /// compliance, fitted in rad/kN, is given in rad/N too: the unit of
 /// `steering_compliance` in a scenario's `[model.effects]`.
 pub fn parameter(p: &ParameterValue) -> String {
-    let unit = if p.unit == "rad/kN" {
-        format!("rad/kN ({} rad/N)", value(p.value * 1e-3))
-    } else {
-        p.unit.to_string()
+    // A dimensionless parameter (unit `-`) is written without a unit.
+    let unit = match p.unit {
+        "rad/kN" => format!(" rad/kN ({} rad/N)", value(p.value * 1e-3)),
+        "-" => String::new(),
+        u => format!(" {u}"),
+    };
+    // A standard error in the parameter's own unit, three digits.
+    let se = |x: f64| {
+        let u = if p.unit == "-" { "" } else { p.unit };
+        format!(
+            "{}{}{u}",
+            crate::format::readable(x, 3),
+            if u.is_empty() { "" } else { " " }
+        )
     };
     let v = value(p.value);
     if p.unseen {
         return format!(
-            "{} = {v} {unit} (held at its off value: no measured channel responds to it)",
+            "{} = {v}{unit} (held at its off value: no measured channel responds to it)",
             p.name
         );
     }
-    if let Some(se) = p.held {
+    if let Some(free) = p.held {
         // The roll dynamics' off value is the campaign's `[roll]`.
         let at = if p.name.starts_with("roll.") {
             "the campaign's value"
@@ -526,23 +536,23 @@ pub fn parameter(p: &ParameterValue) -> String {
             "its off value"
         };
         return format!(
-            "{} = {v} {unit} (held at {at}: the runs do not determine it, fitted free its standard error {:.2e} exceeds its whole range)",
-            p.name, se
+            "{} = {v}{unit} (held at {at}: the runs do not determine it, fitted free its standard error {} exceeds its whole range)",
+            p.name, se(free)
         );
     }
     let Some(bound) = p.bound else {
         return if p.determined {
-            format!("{} = {v} ± {:.2e} {unit}", p.name, p.std_error)
+            format!("{} = {v} ± {:.2e}{unit}", p.name, p.std_error)
         } else if p.std_error.is_finite() {
             format!(
-                "{} = {v} {unit} (not determined by the runs: its standard error {:.2e} exceeds its whole range)",
-                p.name, p.std_error
+                "{} = {v}{unit} (not determined by the runs: its standard error {} exceeds its whole range)",
+                p.name, se(p.std_error)
             )
         } else {
             // No standard error: the runs cannot see it (a channel they
             // lack, a parameter pinned by another).
             format!(
-                "{} = {v} {unit} (no standard error: not determined by the runs)",
+                "{} = {v}{unit} (no standard error: not determined by the runs)",
                 p.name
             )
         };
@@ -557,7 +567,7 @@ pub fn parameter(p: &ParameterValue) -> String {
         }
         Bound::Physical => "at its physical limit: a share cannot exceed 1",
     };
-    format!("{} = {v} {unit} ({why})", p.name)
+    format!("{} = {v}{unit} ({why})", p.name)
 }
 
 /// A fitted value: below 0.01 to four significant digits (a steering

@@ -350,7 +350,7 @@ fn a_standard_error_beyond_the_whole_range_is_not_determined_and_a_lag_at_0_is_o
     assert!(!p.determined && !p.at_bound, "{p:?}");
     assert_eq!(
         parameter(&p),
-        "steer_path.delay = 0.1200 s (not determined by the runs: its standard error 6.00e0 exceeds its whole range)"
+        "steer_path.delay = 0.1200 s (not determined by the runs: its standard error 6.00 s exceeds its whole range)"
     );
     // Up to the whole range it is (a wide one, but a measure).
     assert!(ParameterValue::of("steer_path", delay, 0.12, 0.5).determined);
@@ -522,13 +522,17 @@ fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
     assert!(!held.determined && held.held == Some(69.8));
     assert_eq!(
         parameter(&held),
-        "steer_path.lag = 0.0000 s (held at its off value: the runs do not determine it, fitted free its standard error 6.98e1 exceeds its whole range)"
+        "steer_path.lag = 0.0000 s (held at its off value: the runs do not determine it, fitted free its standard error 69.8 s exceeds its whole range)"
     );
     // The roll dynamics' off value is the campaign's.
     let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
     let roll = ParameterValue::of("roll", &frequency, 3.0, f64::NAN).held(5.26);
     assert_eq!(
         parameter(&roll),
-        "roll.frequency = 3.0000 Hz (held at the campaign's value: the runs do not determine it, fitted free its standard error 5.26e0 exceeds its whole range)"
+        "roll.frequency = 3.0000 Hz (held at the campaign's value: the runs do not determine it, fitted free its standard error 5.26 Hz exceeds its whole range)"
     );
+    // A dimensionless parameter carries no unit, not a stray `-`.
+    let scale = crate::diagnose::effects::EffectKind::YawInertia.parameters()[0];
+    let fitted = ParameterValue::of("yaw_inertia", &scale, 1.3038, 3.27e-3);
+    assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 3.27e-3");
 }

@@ -1,0 +1,120 @@
+//! Where a step steer's metrics describe something other than the
+//! handling response GB/T 6323 and ISO 7401 define them for, said as
+//! warnings beside the table rather than left for the reader to notice:
+//! a car sliding past its grip, a response that more than doubles its
+//! steady value, a step at a crawl.
+//!
+//! The limits are the project's reading of what the standards test:
+//! ISO 7401 (2011) runs its step at 80 km/h to a lateral acceleration of
+//! 4 m/s², in the range where the sideslip stays within a few degrees;
+//! a steady sideslip beyond [`SLIDING_SIDESLIP`] is a slide, a yaw-rate
+//! overshoot beyond [`SPIN_OVERSHOOT`] a car losing and regaining grip,
+//! and below [`CRAWL_SPEED`] the yaw rate follows the steer's geometry
+//! (`r ≈ u·δ/l`) with no dynamics for the times to measure. Units: rad,
+//! m/s and % as in [`StepMetrics`].
+
+use super::StepMetrics;
+
+/// The steady sideslip beyond which the car is sliding, rad (10°).
+pub const SLIDING_SIDESLIP: f64 = 10.0 * std::f64::consts::PI / 180.0;
+/// The yaw-rate overshoot beyond which the response is no handling
+/// response, %: the peak more than twice the steady value.
+pub const SPIN_OVERSHOOT: f64 = 100.0;
+/// The speed below which a step steer measures no dynamics, m/s
+/// (18 km/h).
+pub const CRAWL_SPEED: f64 = 5.0;
+
+/// The warnings on metrics `m` of a step steer at `speed` (m/s, where
+/// known): one sentence each, empty where the metrics are what the
+/// standards mean.
+pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
+    let mut out = Vec::new();
+    if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
+        out.push(format!(
+            "the step is at {:.2} m/s, below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry and the response times measure no handling (ISO 7401 steps at 80 km/h)",
+            u.abs()
+        ));
+    }
+    if let Some(beta) = m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
+        out.push(format!(
+            "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+            beta.to_degrees()
+        ));
+    }
+    if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
+        out.push(format!(
+            "the yaw rate overshoots its steady value by {:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe",
+            m.yaw_rate_overshoot
+        ));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Metrics of a well-behaved step: 0.5° sideslip, 12 % overshoot.
+    fn moderate() -> StepMetrics {
+        StepMetrics {
+            steer_step: 0.02,
+            time_zero: 1.0,
+            yaw_rate_response_time: 0.15,
+            yaw_rate_peak_time: Some(0.3),
+            yaw_rate_overshoot: 12.0,
+            ay_response_time: Some(0.2),
+            yaw_rate_gain: 0.3,
+            yaw_rate_steady: 0.006,
+            ay_steady: Some(2.0),
+            beta_steady: Some(-0.5_f64.to_radians()),
+            tb: Some(0.15),
+            yaw_rate_total_variance: 0.2,
+            ay_total_variance: Some(0.2),
+            er: Some(0.3),
+            settled: true,
+            yaw_rate_noise: 0.0,
+            filter_hz: None,
+        }
+    }
+
+    #[test]
+    fn a_step_below_the_limit_at_test_speed_gets_no_warning() {
+        assert!(applicability(&moderate(), Some(22.2)).is_empty());
+        assert!(applicability(&moderate(), None).is_empty());
+    }
+
+    #[test]
+    fn a_slide_a_spin_and_a_crawl_are_each_said() {
+        let sliding = StepMetrics {
+            beta_steady: Some(-18.8_f64.to_radians()),
+            ..moderate()
+        };
+        let w = applicability(&sliding, Some(22.2));
+        assert_eq!(w.len(), 1);
+        assert!(
+            w[0].starts_with("the steady sideslip is -18.8°, beyond 10°"),
+            "{w:?}"
+        );
+        let spinning = StepMetrics {
+            yaw_rate_overshoot: 503.6,
+            ..moderate()
+        };
+        let w = applicability(&spinning, Some(22.2));
+        assert!(
+            w[0].contains("overshoots its steady value by 504 %"),
+            "{w:?}"
+        );
+        let w = applicability(&moderate(), Some(0.5));
+        assert!(
+            w[0].starts_with("the step is at 0.50 m/s, below 5 m/s"),
+            "{w:?}"
+        );
+        // The limits themselves pass: 10° and 100 % are still a response.
+        let edge = StepMetrics {
+            beta_steady: Some(SLIDING_SIDESLIP),
+            yaw_rate_overshoot: SPIN_OVERSHOOT,
+            ..moderate()
+        };
+        assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+    }
+}

@@ -1,0 +1,190 @@
+//! What the third fresh-eyes check found: results that do not apply said
+//! so (a slide, a crawl, a filter slower than the response), every bad row
+//! of a points file in one error, a subnormal load, and names meant as
+//! words of a known one. Each test one finding, run as a user runs it.
+
+use super::*;
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// A step steer of the sedan at `speed` (m/s) and `steer` (rad); the
+/// terminal and metrics.json.
+fn step(speed: f64, steer: f64) -> (String, serde_json::Value) {
+    let manoeuvre = format!(
+        "[manoeuvre]\nkind = \"step-steer\"\nspeed = {speed}\nsteer = {steer}\nstart = 1.0\nrise_time = 0.1\nend = 6.0\n"
+    );
+    let dir = scenario(VEHICLE, GIM, &manoeuvre);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    (stdout(&o), read_json(&out.join("metrics.json")))
+}
+
+/// A 0.3 rad step at 80 km/h slid the car to −19° of sideslip with a
+/// 504 % overshoot, and the only word was "not settled"; a step at
+/// 0.5 m/s printed response times of nothing.
+#[test]
+fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
+    // The bundled sedan (its Gim tyres) stepped to 0.3 rad, as the user did.
+    let sedan = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
+        .unwrap()
+        .replace("steer = 0.0174533", "steer = 0.3")
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let dir = scratch(&[("s.toml", &sedan)]);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("s.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stdout(&o);
+    assert!(
+        said.contains("warning: the steady sideslip is -18.8°, beyond 10°: the car is sliding"),
+        "{said}"
+    );
+    assert!(
+        said.contains("warning: the yaw rate overshoots its steady value by 504 %"),
+        "{said}"
+    );
+    let warnings = read_json(&out.join("metrics.json"))["warnings"].clone();
+    assert_eq!(warnings.as_array().map(Vec::len), Some(2), "{warnings}");
+    // A car on stiffer tyres at the same step: grip regained, a spin-like peak.
+    let (said, _) = step(22.2222, 0.3);
+    assert!(
+        said.contains("warning: the yaw rate overshoots its steady value by 114 %"),
+        "{said}"
+    );
+    assert!(!said.contains("sliding"), "{said}");
+    let (said, _) = step(0.5, 0.01);
+    assert!(
+        said.contains("warning: the step is at 0.50 m/s, below 5 m/s (18 km/h)"),
+        "{said}"
+    );
+    // A 1° step at 80 km/h is a handling response: no warning.
+    let (said, metrics) = step(22.2222, 0.0174533);
+    assert!(!said.contains("warning:"), "{said}");
+    assert!(metrics.get("warnings").is_none(), "{metrics}");
+}
+
+/// `--filter-hz 0.01` smoothed a 1.2° step away and the run was blamed:
+/// "no steer step … a change of 0.000026 rad".
+#[test]
+fn metrics_refuses_a_low_pass_slower_than_the_response() {
+    let dir = tempfile::tempdir().unwrap();
+    let sim = dir.path().join("sim");
+    let o = run(&[
+        "simulate",
+        "scenarios/sedan_step.toml",
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let history = sim.join("history.csv");
+    let o = run(&["metrics", history.to_str().unwrap(), "--filter-hz", "0.01"]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("`filter_hz` = 0.01: must be greater than 1")
+            && e.contains("the metrics would measure the filter"),
+        "{e}"
+    );
+    // 5 Hz is a filter that keeps the response.
+    let o = run(&["metrics", history.to_str().unwrap(), "--filter-hz", "5"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// A points file with a non-physical value on several rows was refused
+/// one row per run, and not in row order (line 8's load before line 2's
+/// slip).
+#[test]
+fn tyre_eval_lists_every_non_physical_row_in_file_order() {
+    let points = "fz,kappa,alpha,camber,speed\n4000,1e308,0,0,20\n4000,0,0,0,1e308\n4000,0,0.01,0,20\n4000,0,1e308,0,20\n1e308,0,0,0,20\n";
+    let dir = scratch(&[("points.csv", points)]);
+    let out = dir.path().join("out.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = refused(&o, &out);
+    assert!(
+        e.contains("points.csv: 4 places refused, in file order:"),
+        "{e}"
+    );
+    let at = |needle: &str| e.find(needle).unwrap_or_else(|| panic!("{needle} in {e}"));
+    let lines = [
+        at("points.csv:2:2: column `kappa`: 1e308"),
+        at("points.csv:3:5: column `speed`: 1e308 m/s"),
+        at("points.csv:5:3: column `alpha`: 1e308 rad"),
+        at("points.csv:6:1: column `fz`: 1e308 N"),
+    ];
+    assert!(lines.windows(2).all(|w| w[0] < w[1]), "{e}");
+    // α a hair past 90° reads apart from the 90° it broke.
+    let dir = scratch(&[(
+        "p.csv",
+        "fz,kappa,alpha,camber,speed\n4000,0,1.5707963267958966,0,20\n",
+    )]);
+    let out = dir.path().join("o.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
+        dir.path().join("p.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = refused(&o, &out);
+    assert!(
+        e.contains("1.570796326796 rad is outside -1.5708 to 1.5708 rad"),
+        "{e}"
+    );
+}
+
+/// A Gim tyre at a subnormal load and no slip gave a non-finite force
+/// (θ = K/(3μFz) infinite, times a zero slip).
+#[test]
+fn a_gim_tyre_at_a_load_next_to_zero_gives_no_force() {
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n5e-324,0,0,0,0\n5e-324,0,0.05,0,16.7\n4000,0,0,0,16.7\n4000,0,-0.05,0,16.7\n";
+    let dir = scratch(&[("g.csv", points)]);
+    let out = dir.path().join("o.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tyres/gim.toml",
+        dir.path().join("g.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&out).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let fy = head.iter().position(|c| *c == "fy").unwrap();
+    let rows: Vec<f64> = lines
+        .map(|l| l.split(',').nth(fy).unwrap().parse().unwrap())
+        .collect();
+    assert!(rows[0] > 100.0, "{rows:?}");
+    assert_eq!(rows[1], 0.0);
+    assert!(rows[2].is_finite() && rows[2].abs() < 1e-300, "{rows:?}");
+}
+
+/// `kind = "sine-steer"` was answered with `step-steer`.
+#[test]
+fn a_known_name_given_with_words_around_it_is_suggested() {
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        "[manoeuvre]\nkind = \"sine-steer\"\nspeed = 20.0\n",
+    );
+    let e = simulate_err(dir.path());
+    assert!(e.contains("did you mean `sine`?"), "{e}");
+}

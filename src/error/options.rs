@@ -186,6 +186,18 @@ pub enum OptionsError {
     /// `--start template` without a template file.
     #[error("--start template needs --template <file.tir>")]
     TemplateMissing,
+    /// `--pressure` / `--camber` for a staged Magic Formula fit, which
+    /// fits every level of the file (the model has pressure and camber
+    /// terms).
+    #[error(
+        "--{option} is not taken by --model {model}: the staged Magic Formula fit fits every pressure and camber level of the file together (the model has pressure and camber terms), so it selects none; drop --{option}, or write a file holding only the level wanted"
+    )]
+    LevelSelectionNotTaken {
+        /// The option given (`pressure`, `camber`).
+        option: &'static str,
+        /// The model.
+        model: String,
+    },
     /// `--hold` of a name that is none of the model's fitted parameters.
     #[error(
         "--hold `{given}`: not a parameter of the {model} model{}: its parameters are {}",

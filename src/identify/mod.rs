@@ -23,6 +23,8 @@
 pub mod data;
 pub mod grouping;
 mod held;
+mod parameters;
+use parameters::parameter_reports;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
@@ -32,7 +34,6 @@ pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 
 use crate::error::{Error, FitError, OptionsError};
-use crate::format::exact;
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::{levenberg_marquardt, GaussNewton, LocalResult, Residuals};
 use crate::optim::{stats, Inertia, Pso};
@@ -477,66 +478,6 @@ fn within_box(
     let mut boxed = BoundedLm::default().minimize(problem, x, bounds);
     boxed.evaluations += l.evaluations;
     boxed
-}
-
-/// One report per parameter of `channel`: value, whether it was free, its
-/// standard error from `covariance` (over the free ones, in order) and a
-/// warning when it sits at a bound or the data cannot identify it.
-fn parameter_reports(
-    start: &Tyre,
-    tyre: &Tyre,
-    channel: Channel,
-    free: &[bool],
-    covariance: Option<&DMatrix<f64>>,
-) -> Vec<ParameterReport> {
-    let all_bounds = channel.bounds(start);
-    let values = channel.parameters(tyre);
-    let mut k = 0;
-    let mut parameters = Vec::new();
-    for (i, name) in channel.names(start).iter().enumerate() {
-        let (lo, hi) = all_bounds[i];
-        let mut rep = ParameterReport {
-            name: name.to_string(),
-            value: values[i],
-            free: free[i],
-            held: None,
-            std_error: None,
-            bounds: (lo, hi),
-            warning: None,
-        };
-        if free[i] {
-            let se = covariance
-                .map(|c| c[(k, k)])
-                .filter(|v| v.is_finite())
-                .map(|v| v.max(0.0).sqrt());
-            rep.std_error = se;
-            let w = hi - lo;
-            // On its bound, the value is where the box stopped the fit (the
-            // polish stays in the box): said before its standard error,
-            // which a bound makes meaningless.
-            if values[i] < lo || values[i] > hi {
-                rep.warning = Some(format!(
-                    "beyond its search bound ({} to {}) after the polish: the data take it past the box",
-                    exact(lo),
-                    exact(hi)
-                ));
-            } else if values[i] <= lo + 1e-6 * w || values[i] >= hi - 1e-6 * w {
-                rep.warning = Some(format!(
-                    "on its search bound ({} to {}): the fit would take it beyond; the value is the bound, not a fit",
-                    exact(lo),
-                    exact(hi)
-                ));
-            } else if se.is_none_or(|s| !s.is_finite() || s > values[i].abs().max(1e-12)) {
-                rep.warning = Some(
-                    "not identifiable from these data (standard error larger than the value)"
-                        .into(),
-                );
-            }
-            k += 1;
-        }
-        parameters.push(rep);
-    }
-    parameters
 }
 
 #[cfg(test)]

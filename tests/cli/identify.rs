@@ -25,7 +25,7 @@ pub(crate) fn assert_tidy_output(stdout: &str) {
         .lines()
         .filter(|l| l.contains("writing the two-stage result"))
     {
-        let chosen = text_between(line, "(σ ", " %");
+        let chosen = text_between(line, "(σ over all points ", " %");
         assert!(
             !line.contains(&format!("< direct {chosen} %")),
             "the two σ print alike: {line}"
@@ -350,5 +350,123 @@ fn longitudinal_rig_data_with_fx_reversed_is_refused() {
         "negate the `fx` column",
     ] {
         assert!(e.contains(says), "{says}: {e}");
+    }
+}
+
+/// The number printed after `prefix` on the first line holding it, up to
+/// the next space.
+fn printed_after<'a>(stdout: &'a str, prefix: &str) -> &'a str {
+    let line = stdout
+        .lines()
+        .find(|l| l.contains(prefix))
+        .unwrap_or_else(|| panic!("no `{prefix}` in: {stdout}"));
+    text_between(line, prefix, " ")
+}
+
+#[test]
+fn pac89s_two_stage_line_and_sigma_line_print_the_sigma_written() {
+    let dir = scratch(&[("rig.csv", &papers_layout_with_signs(1.0, 1.0))]);
+    let out = dir.path().join("pac89.toml");
+    let o = identify_to(&dir.path().join("rig.csv"), "pac89", &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_tidy_output(&stdout);
+    let report: serde_json::Value = read_json(&dir.path().join("pac89.report.json"));
+    let t = &report["two_stage"];
+    let written = format!("{:.3}", report["sigma_percent"].as_f64().unwrap());
+    let two_stage = format!(
+        "{:.3}",
+        t["polished_overall_sigma_percent"].as_f64().unwrap()
+    );
+    let direct = format!("{:.3}", t["direct_sigma_percent"].as_f64().unwrap());
+    // The overall σ line is the written fit's, the report's.
+    assert_eq!(printed_after(&stdout, "  σ "), written, "{stdout}");
+    // The two-stage line names its overall σ (the one compared) apart
+    // from the paper's mean of the conditions' σ.
+    assert_eq!(
+        printed_after(&stdout, "σ over all points after the joint polish "),
+        two_stage,
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("mean of the conditions' σ: stage 1 "),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains(&format!("(direct fit {direct} %)")),
+        "{stdout}"
+    );
+    // And the line saying which was written gives that fit's σ.
+    match report["written"].as_str().unwrap() {
+        "two-stage" => {
+            assert_eq!(written, two_stage);
+            assert!(stdout.contains("writing the two-stage result (σ over all points "));
+        }
+        "direct" => {
+            assert_eq!(written, direct);
+            // Printed with the digits that tell the two σ apart.
+            let said = printed_after(&stdout, "writing the direct fit (σ over all points ");
+            let decimals = said.split('.').nth(1).map_or(0, str::len) as i32;
+            let value = t["direct_sigma_percent"].as_f64().unwrap();
+            assert!(
+                (said.parse::<f64>().unwrap() - value).abs() <= 0.5 * 10f64.powi(-decimals),
+                "{said} vs {value}"
+            );
+        }
+        w => panic!("written {w}"),
+    }
+}
+
+#[test]
+fn the_staged_magic_formula_fit_refuses_pressure_and_camber_selection() {
+    let dir = scratch(&[("rig.csv", &papers_layout_with_signs(1.0, 1.0))]);
+    let out = dir.path().join("fit.tir");
+    for (option, value) in [("--pressure", "83.4"), ("--camber", "1.6")] {
+        let o = run(&[
+            "identify",
+            dir.path().join("rig.csv").to_str().unwrap(),
+            "--model",
+            "mf61",
+            option,
+            value,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let e = refused(&o, &out);
+        assert!(
+            e.contains(&format!("{option} is not taken by --model mf61"))
+                && e.contains("fits every pressure and camber level of the file"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn the_curve_lines_name_a_pressure_level_as_the_level_line_does() {
+    // Three loads at one pressure of 69.7 kPa: the level line and every
+    // curve line print it alike (they printed "70 kPa").
+    let mut s = String::from("fz,alpha,fy,pressure\n");
+    for fz in [2000.0, 4000.0, 6000.0] {
+        for i in -20..=20 {
+            let a = 0.005 * f64::from(i);
+            s += &format!("{fz},{a},{},69700\n", fz * (1.3 * (10.0 * a).atan()).sin());
+        }
+    }
+    let dir = scratch(&[("rig.csv", &s)]);
+    let out = dir.path().join("gim.toml");
+    let o = identify_to(&dir.path().join("rig.csv"), "gim", &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("pressure levels: 69.7 kPa (123)"),
+        "{stdout}"
+    );
+    let curves: Vec<&str> = stdout.lines().filter(|l| l.contains("    Fz ")).collect();
+    assert_eq!(curves.len(), 3, "{stdout}");
+    for (l, fz) in curves.iter().zip(["2000 N", "4000 N", "6000 N"]) {
+        assert!(
+            l.contains(&format!("Fz    {fz}, camber  0.00°, pressure 69.7 kPa:")),
+            "{l}"
+        );
     }
 }

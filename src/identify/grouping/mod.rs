@@ -37,7 +37,7 @@
 pub(crate) mod levels;
 
 pub use super::data::SlipAxis;
-pub use levels::{levels, Level, Levels, Variable};
+pub use levels::{level_label, levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
 use crate::error::{InputError, InputProblem, SampleAccount};

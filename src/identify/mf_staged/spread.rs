@@ -60,6 +60,12 @@ impl ErrorSpread {
     /// One line on where the error lies, or `None` when it is spread
     /// evenly (neither the sweeps' ends nor a load level lead it).
     pub fn line(&self) -> Option<String> {
+        self.line_naming(&|fz| crate::identify::grouping::Variable::Load.display(fz))
+    }
+
+    /// [`ErrorSpread::line`] with each load level spelt by `load` (the
+    /// terminal's name of the level, [`crate::identify::grouping::level_label`]).
+    pub fn line_naming(&self, load: &dyn Fn(f64) -> String) -> Option<String> {
         let by = |a: &&LoadSigma, b: &&LoadSigma| a.sigma_percent.total_cmp(&b.sigma_percent);
         let (lo, hi) = (
             self.by_load.iter().min_by(by),
@@ -67,8 +73,11 @@ impl ErrorSpread {
         );
         let loads = match (lo, hi) {
             (Some(lo), Some(hi)) if hi.sigma_percent >= 2.0 * lo.sigma_percent => Some(format!(
-                "by load, σ {:.1} % at {:.0} N to {:.1} % at {:.0} N",
-                lo.sigma_percent, lo.fz, hi.sigma_percent, hi.fz
+                "by load, σ {:.1} % at {} to {:.1} % at {}",
+                lo.sigma_percent,
+                load(lo.fz),
+                hi.sigma_percent,
+                load(hi.fz)
             )),
             _ => None,
         };

@@ -1,13 +1,16 @@
 //! The figure of a swarm fit: its measured points against the fitted
-//! curves, one panel per channel and camber (slip angle in degrees, slip
-//! ratio in percent); the staged Magic Formula fit's is in
-//! `staged_figure.rs`.
+//! curves, one panel per channel, camber and pressure (slip angle in
+//! degrees, slip ratio in percent), each titled with its own σ =
+//! sqrt(Σe²/ΣF²)·100 % over its points and its levels spelt as the
+//! terminal spells them ([`Variable::display`]); a colour per load within
+//! a panel. The staged Magic Formula fit's is in `staged_figure.rs`.
 
 use super::SwarmReport;
-use crate::format::fixed;
+use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
+use crate::identify::grouping::Variable;
 use crate::identify::Channel;
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Panel, Series, Style, INK};
 use crate::tyre::Tyre;
 
 /// Measured points against the fitted curves of every channel fitted.
@@ -25,20 +28,108 @@ pub(super) fn fit_figure(r: &SwarmReport) -> Figure {
     } else if r.longitudinal.is_some() {
         channels.push((Channel::LongitudinalForce, &r.longitudinal_conditions));
     }
-    let mut cambers: Vec<f64> = r.conditions.iter().map(|c| c.camber).collect();
-    cambers.sort_by(f64::total_cmp);
-    cambers.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
-    let model = r.options.model.as_str();
-    let panels = channels
-        .iter()
-        .flat_map(|&(ch, conds)| cambers.iter().map(move |&g| (ch, conds, g)))
-        .map(|(ch, conds, g)| panel(model, &r.tyre, ch, conds, g))
-        .collect();
-    Figure::stack(panels)
+    figure(&r.options.model.to_string(), &r.tyre, &channels)
 }
 
-/// One channel at one camber: a colour per load.
-fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber: f64) -> Panel {
+/// The figure of `tyre` fitted as `model` on each channel's conditions
+/// (module notes): a column per pressure level.
+fn figure(model: &str, tyre: &Tyre, channels: &[(Channel, &[Condition])]) -> Figure {
+    let mut panels = Vec::new();
+    let mut columns = 1;
+    for &(ch, conds) in channels {
+        // Pressures are the columns: a tyre engineer reads one pressure
+        // down a column and compares pressures across a row.
+        let pressures = levels(conds.iter().filter_map(|c| c.pressure), 1.0);
+        columns = columns.max(pressures.len());
+        for g in levels(conds.iter().map(|c| c.camber), 1e-3) {
+            for p in pressures_or_none(&pressures) {
+                let at: Vec<&Condition> = conds
+                    .iter()
+                    .filter(|c| (c.camber - g).abs() < 1e-3 && same_pressure(c.pressure, p))
+                    .collect();
+                panels.push(panel(model, tyre, ch, &at, g, p));
+            }
+        }
+    }
+    let entries = panels
+        .iter()
+        .map(|p| p.series.iter().filter(|s| !s.label.is_empty()).count())
+        .max()
+        .unwrap_or(0);
+    Figure {
+        panels,
+        columns,
+        width: if columns == 1 {
+            1000
+        } else {
+            650 * columns as u32
+        },
+        // Tall enough for every load's key entry beside the chart: the
+        // key's top margin, a 20 px row per entry and the x labels below.
+        row_height: 260.max(40 + 20 * entries as u32 + 30),
+    }
+}
+
+/// The distinct values (within `tol`), ascending.
+fn levels(values: impl Iterator<Item = f64>, tol: f64) -> Vec<f64> {
+    let mut v: Vec<f64> = values.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup_by(|a, b| (*a - *b).abs() < tol);
+    v
+}
+
+/// The pressures to draw a panel for: each level, or one panel without.
+fn pressures_or_none(pressures: &[f64]) -> Vec<Option<f64>> {
+    if pressures.is_empty() {
+        vec![None]
+    } else {
+        pressures.iter().map(|p| Some(*p)).collect()
+    }
+}
+
+fn same_pressure(a: Option<f64>, b: Option<f64>) -> bool {
+    match (a, b) {
+        (Some(a), Some(b)) => (a - b).abs() < 1.0,
+        (None, None) => true,
+        _ => false,
+    }
+}
+
+/// The panel's title: model, channel, levels as the terminal spells them,
+/// its own σ over its points.
+fn title(
+    model: &str,
+    ch: Channel,
+    camber: f64,
+    pressure: Option<f64>,
+    sigma: f64,
+    n: usize,
+) -> String {
+    let mut t = format!(
+        "{model} {}, γ {}",
+        ch.quantity(),
+        Variable::Camber.display(camber)
+    );
+    if let Some(p) = pressure {
+        t += &format!(", {}", Variable::Pressure.display(p));
+    }
+    format!(
+        "{t}: σ {} %, {}",
+        fixed(sigma, 2),
+        plural(n, "point", "points")
+    )
+}
+
+/// One channel at one camber and pressure: a colour per load, the
+/// measured points and the fitted line in it.
+fn panel(
+    model: &str,
+    tyre: &Tyre,
+    ch: Channel,
+    conditions: &[&Condition],
+    camber: f64,
+    pressure: Option<f64>,
+) -> Panel {
     let slip = |v: f64| {
         if ch == Channel::LongitudinalForce {
             100.0 * v
@@ -46,19 +137,30 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
             v.to_degrees()
         }
     };
+    let axis = match ch {
+        Channel::LongitudinalForce => SlipAxis::Ratio,
+        _ => SlipAxis::Angle,
+    };
     let mut series = Vec::new();
-    for (k, c) in conditions
-        .iter()
-        .filter(|c| (c.camber - camber).abs() < 1e-3)
-        .enumerate()
-    {
-        let (x, y): (Vec<f64>, Vec<f64>) = c
+    let (mut e2, mut y2, mut n) = (0.0, 0.0, 0);
+    for (k, c) in conditions.iter().enumerate() {
+        let measured: Vec<(f64, f64, f64)> = c
             .points
             .iter()
-            .map(|q| (slip(q.slip()), ch.measured(q)))
+            .map(|q| (slip(q.slip()), ch.measured(q), ch.model(tyre, q)))
             .filter(|p| p.1.is_finite())
-            .unzip();
-        series.push(Series::line("", &x, &y, k).styled(Style::Points(2)));
+            .collect();
+        for (_, m, f) in &measured {
+            e2 += (f - m).powi(2);
+            y2 += m * m;
+        }
+        n += measured.len();
+        let x: Vec<f64> = measured.iter().map(|p| p.0).collect();
+        let y: Vec<f64> = measured.iter().map(|p| p.1).collect();
+        // A colour per load, none twice in a panel (the palette has INK
+        // colours before its black).
+        let colour = k % INK;
+        series.push(Series::line("", &x, &y, colour).styled(Style::Points(2)));
         // The fitted curve over the condition's own slip range: the y
         // axis is then the data's, not the model's beyond them.
         let (lo, hi) = c
@@ -70,26 +172,27 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
             });
         let speed = c.points.first().map_or(10.0, |q| q.speed);
         let xs: Vec<f64> = (0..=200)
-            .map(|i| lo + (hi - lo) * i as f64 / 200.0)
+            .map(|i| lo + (hi - lo) * f64::from(i) / 200.0)
             .collect();
         let ys: Vec<f64> = xs
             .iter()
-            .map(|a| {
-                let axis = match ch {
-                    Channel::LongitudinalForce => SlipAxis::Ratio,
-                    _ => SlipAxis::Angle,
-                };
-                ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed))
-            })
+            .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        series.push(Series::line(&format!("{:.0} N", c.fz), &xd, &ys, k));
+        series.push(Series::line(
+            &Variable::Load.display(c.fz),
+            &xd,
+            &ys,
+            colour,
+        ));
     }
+    let sigma = if y2 > 0.0 {
+        100.0 * (e2 / y2).sqrt()
+    } else {
+        f64::NAN
+    };
     Panel {
-        title: format!(
-            "{model} fit, camber {}°: points measured, lines fitted",
-            fixed(camber.to_degrees(), 2)
-        ),
+        title: title(model, ch, camber, pressure, sigma, n),
         x_label: if ch == Channel::LongitudinalForce {
             "slip ratio [%]".into()
         } else {
@@ -104,3 +207,7 @@ fn panel(model: &str, tyre: &Tyre, ch: Channel, conditions: &[Condition], camber
         ..Panel::default()
     }
 }
+
+#[cfg(test)]
+#[path = "figures_tests.rs"]
+mod tests;

@@ -8,7 +8,7 @@
 //! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
-use crate::format::{decimals_or_digits, distinct, fixed};
+use crate::format::{decimals_or_digits, distinct};
 use crate::identify::data::Condition;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::io::rig::read_rig;
@@ -90,6 +90,24 @@ impl Options {
             ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;
         }
         Ok(())
+    }
+
+    /// Refuses `--pressure` / `--camber` for a model whose fit takes every
+    /// level (the staged Magic Formula): silently fitting all samples when
+    /// one level was asked for would write a tyre of other conditions.
+    fn validate_levels(&self) -> Result<(), Error> {
+        if self.model.swarm_model().is_some() {
+            return Ok(());
+        }
+        let given = [("pressure", self.pressure), ("camber", self.camber)];
+        match given.iter().find(|(_, v)| v.is_some()) {
+            Some((option, _)) => Err(OptionsError::LevelSelectionNotTaken {
+                option,
+                model: self.model.to_string(),
+            }
+            .into()),
+            None => Ok(()),
+        }
     }
 
     /// Checks the `--hold` names: coefficients of a `.tir` for the staged
@@ -275,6 +293,7 @@ impl IdentifyReport {
 pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
     o.validate()?;
     o.validate_holds()?;
+    o.validate_levels()?;
     o.validate_out()?;
     match o.model {
         IdentifyModel::Swarm(model) => {
@@ -458,9 +477,16 @@ impl SwarmReport {
             out.push("  two-stage (Zhang et al. 2021): not run, it fits every coefficient and --hold holds some; the direct fit written".into());
         }
         if let Some(t) = &self.two_stage {
+            // Two statistics: the paper's mean of the conditions' σ, and the
+            // σ over all points that is compared with the direct fit's and
+            // written; a lone "after the joint polish" read as the latter.
             out.push(format!(
-                "  two-stage (Zhang et al. 2021): stage 1 mean σ {:.3} %, stage 2 mean σ {:.3} %, after the joint polish {:.3} %",
-                t.stages.stage1_mean_sigma, t.stages.stage2_mean_sigma, t.stages.polished_mean_sigma
+                "  two-stage (Zhang et al. 2021): mean of the conditions' σ: stage 1 {:.3} %, stage 2 {:.3} %, after the joint polish {:.3} %; σ over all points after the joint polish {:.3} % (direct fit {:.3} %)",
+                t.stages.stage1_mean_sigma,
+                t.stages.stage2_mean_sigma,
+                t.stages.polished_mean_sigma,
+                t.polished_overall_sigma_percent,
+                t.direct_sigma_percent
             ));
         }
         let f = &self.fit;
@@ -473,12 +499,13 @@ impl SwarmReport {
             f.seconds
         ));
         for c in &f.curves {
+            // Levels as the grouping's lines and the figure spell them.
             out.push(format!(
-                "    Fz {:>7.0} N, camber {:>5}°, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
-                c.fz,
-                fixed(c.camber.to_degrees(), 2),
+                "    Fz {:>9}, camber {:>6}, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
+                Variable::Load.display(c.fz),
+                Variable::Camber.display(c.camber),
                 c.pressure
-                    .map_or("—".into(), |p| format!("{:.0} kPa", p / 1000.0)),
+                    .map_or("—".into(), |p| Variable::Pressure.display(p)),
                 c.points,
                 c.sigma_percent,
                 decimals_or_digits(c.rms, 1, 3)
@@ -495,9 +522,22 @@ impl SwarmReport {
                 6,
             );
             out.push(if differ {
-                format!("  writing the two-stage result (σ {c} % < direct {d} %)")
+                format!("  writing the two-stage result (σ over all points {c} % < direct {d} %)")
             } else {
-                format!("  writing the two-stage result (σ {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
+                format!("  writing the two-stage result (σ over all points {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
+            });
+        }
+        if let (Some(Written::Direct), Some(t)) = (self.written, &self.two_stage) {
+            let (d, c, differ) = distinct(
+                t.direct_sigma_percent,
+                t.polished_overall_sigma_percent,
+                3,
+                6,
+            );
+            out.push(if differ {
+                format!("  writing the direct fit (σ over all points {d} % ≤ two-stage {c} %)")
+            } else {
+                format!("  writing the direct fit (σ over all points {d} %, the two-stage result's {c} % to the printed precision, not lower beyond it)")
             });
         }
         if let Some(mz) = &self.aligning {

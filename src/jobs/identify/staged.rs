@@ -9,6 +9,7 @@ use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::format::{exact, plural};
 use crate::identify::data::RigData;
+use crate::identify::grouping::{level_label, Variable};
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
@@ -88,7 +89,14 @@ impl StagedJob {
                     s.seconds
                 )),
             }
-            if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line()) {
+            // Loads named as the level lines above name them.
+            let named = self
+                .rows
+                .thinning
+                .as_ref()
+                .map_or(&[][..], |g| &g.levels[..]);
+            let load = |fz: f64| level_label(named, Variable::Load, fz);
+            if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line_naming(&load)) {
                 out.push(format!("    where the error lies: {line}"));
             }
             out.extend(s.warnings.iter().map(|w| format!("    warning: {w}")));
@@ -191,7 +199,12 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .filter(|s| s.skipped.is_none())
         .map(|s| s.stage)
         .collect();
-    let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows);
+    let named = prepared
+        .account
+        .thinning
+        .as_ref()
+        .map_or(&[][..], |g| g.levels.as_slice());
+    let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows, named);
     Ok(StagedJob {
         held,
         report: id.report,

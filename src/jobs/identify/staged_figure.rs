@@ -16,6 +16,7 @@
 //! data's (the key sits beside the chart, [`crate::report::plot`]).
 
 use crate::format::{fixed, plural};
+use crate::identify::grouping::{Levels as Named, Variable};
 use crate::identify::mf_staged::{sweeps_slip_angle, MfRow, Stage, PURE_TOL};
 use crate::report::plot::{tick_label, Figure, Panel, Series, Style, INK};
 use crate::tyre::mf::MagicFormula;
@@ -139,12 +140,26 @@ struct Levels {
     of_row: Vec<[usize; 4]>,
 }
 
+/// `values` (levels of `variable` clustered from the rows) each replaced
+/// by the nominal of the grouping's level whose band holds it: the
+/// figure then names a level as the terminal does (534 N, not the 532 N
+/// its thinned rows average to).
+fn as_named(values: Vec<f64>, variable: Variable, named: &[Named]) -> Vec<f64> {
+    match named.iter().find(|l| l.variable == variable) {
+        Some(l) => values.into_iter().map(|v| l.named(v)).collect(),
+        None => values,
+    }
+}
+
 impl Levels {
-    fn of(rows: &[&MfRow], other: Slip) -> Self {
+    fn of(rows: &[&MfRow], other: Slip, named: &[Named]) -> Self {
         let p = |r: &MfRow| r.pressure.unwrap_or(f64::NAN);
         let camber = clusters(rows.iter().map(|r| r.camber), 0.25f64.to_radians());
+        let camber = as_named(camber, Variable::Camber, named);
         let pressure = clusters(rows.iter().map(|r| p(r)), 2e3);
+        let pressure = as_named(pressure, Variable::Pressure, named);
         let load = clusters(rows.iter().map(|r| r.fz), 200.0);
+        let load = as_named(load, Variable::Load, named);
         let others = clusters(rows.iter().map(|r| other.of(r)), other.gap());
         let of_row = rows
             .iter()
@@ -171,8 +186,15 @@ impl Levels {
 /// `rows` (module notes). The panels form a grid whose columns are the
 /// pressure levels when there are several (a blank panel where a
 /// condition lacks one), else two columns when there are four panels or
-/// more; a row is tall enough for the longest key beside it.
-pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow]) -> Figure {
+/// more; a row is tall enough for the longest key beside it. Levels are
+/// named by the grouping's nominals `named` where the rows were grouped
+/// ([`as_named`]).
+pub(super) fn staged_figure(
+    tyre: &MagicFormula,
+    stages: &[Stage],
+    rows: &[MfRow],
+    named: &[Named],
+) -> Figure {
     let mut panels = Vec::new();
     let mut pressures = 1;
     for &st in stages {
@@ -186,7 +208,7 @@ pub(super) fn staged_figure(tyre: &MagicFormula, stages: &[Stage], rows: &[MfRow
             .partition(|r| x.of(r).abs() > PURE_TOL || x.other().of(r).abs() <= PURE_TOL);
         for (x, at) in [(x, along), (x.other(), across)] {
             if !at.is_empty() {
-                pressures = pressures.max(stage_panels(tyre, st, x, &at, &mut panels));
+                pressures = pressures.max(stage_panels(tyre, st, x, &at, named, &mut panels));
             }
         }
     }
@@ -231,9 +253,10 @@ fn stage_panels(
     st: Stage,
     x: Slip,
     sel: &[&MfRow],
+    named: &[Named],
     panels: &mut Vec<Panel>,
 ) -> usize {
-    let lv = Levels::of(sel, x.other());
+    let lv = Levels::of(sel, x.other(), named);
     // A panel per load where the other slip has levels of its own: the
     // lines of a panel are then the other slip's levels.
     let by_load = lv.other.len() > 1;
@@ -274,13 +297,13 @@ impl Key {
     fn title(&self, tail: &str) -> String {
         let mut t = self.stage.label().to_string();
         if let Some(g) = self.camber {
-            t += &format!(", γ {}°", fixed(g.to_degrees(), 2));
+            t += &format!(", γ {}", Variable::Camber.display(g));
         }
         if let Some(p) = self.pressure {
-            t += &format!(", {} kPa", fixed(p / 1e3, 1));
+            t += &format!(", {}", Variable::Pressure.display(p));
         }
         if let Some(fz) = self.load {
-            t += &format!(", Fz {} N", fixed(fz, 0));
+            t += &format!(", Fz {}", Variable::Load.display(fz));
         }
         format!("{t}: {tail}")
     }
@@ -335,7 +358,7 @@ fn panel(
         let label = if by_other {
             key.x.other().level(lv.other[k])
         } else {
-            format!("{} N", fixed(lv.load[k], 0))
+            Variable::Load.display(lv.load[k])
         };
         series.push(Series::line(&label, &xs, &measured, colour).styled(Style::Points(3)));
         let (lx, ly) = model_line(tyre, st, key.x, &at);

@@ -86,6 +86,7 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points()
         &t,
         &[Stage::PureFy, Stage::PureMz, Stage::CombinedFx],
         &rows,
+        &[],
     );
     // Pure Fy and Mz: one panel per camber; combined Fx: one per load.
     assert_eq!(fig.panels.len(), 5);
@@ -141,7 +142,7 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_conditions_points()
 fn each_panel_reads_its_own_sigma_and_its_stages_slip_with_units() {
     let t = tyre();
     let rows = rows(&t);
-    let fig = staged_figure(&t, &[Stage::PureFy, Stage::CombinedFx], &rows);
+    let fig = staged_figure(&t, &[Stage::PureFy, Stage::CombinedFx], &rows, &[]);
     let titles: Vec<&str> = fig.panels.iter().map(|p| p.title.as_str()).collect();
     // Camber 0: ±1 % errors, camber 2°: ±3 %.
     let mut sigmas = Vec::new();
@@ -216,7 +217,7 @@ fn several_pressures_are_the_columns_of_the_grid() {
             rows.push(r);
         }
     }
-    let fig = staged_figure(&t, &[Stage::PureFy], &rows);
+    let fig = staged_figure(&t, &[Stage::PureFy], &rows, &[]);
     assert_eq!((fig.columns, fig.panels.len(), fig.width), (3, 6, 1950));
     assert!(fig.panels[1]
         .title
@@ -262,7 +263,7 @@ fn moment_rows(t: &MagicFormula) -> Vec<MfRow> {
 fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_its_row() {
     let t = tyre();
     let rows = moment_rows(&t);
-    let fig = staged_figure(&t, &[Stage::Mx, Stage::My], &rows);
+    let fig = staged_figure(&t, &[Stage::Mx, Stage::My], &rows, &[]);
     let x_labels: Vec<(&str, &str)> = fig
         .panels
         .iter()
@@ -325,4 +326,49 @@ fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_
         };
         assert_eq!(n(&fig.panels[k]) + n(&fig.panels[k + 1]), 166);
     }
+}
+
+#[test]
+fn levels_are_named_by_the_groupings_nominals_as_the_terminal_names_them() {
+    use crate::identify::grouping::{Level, Levels as Named, Variable};
+    let t = tyre();
+    // The thinned rows average 3000 and 6000 N and camber 2.00°; the
+    // grouping's nominals (the medians of the raw samples, which the
+    // terminal prints) are 3004 N, 5996 N and 1.99°.
+    let named = |variable, separation, at: &[(f64, f64)]| Named {
+        variable,
+        separation,
+        noise: 0.0,
+        levels: at
+            .iter()
+            .map(|&(v, nominal)| Level {
+                lo: v - 1.0e-3,
+                hi: v + 1.0e-3,
+                nominal,
+                samples: 10,
+            })
+            .collect(),
+        transition_samples: 0,
+    };
+    let groups = [
+        named(Variable::Load, 10.0, &[(3000.0, 3004.0), (6000.0, 5996.0)]),
+        named(
+            Variable::Camber,
+            0.1f64.to_radians(),
+            &[(0.0, 0.0), (2f64.to_radians(), 1.99f64.to_radians())],
+        ),
+    ];
+    let fig = staged_figure(&t, &[Stage::PureFy], &rows(&t), &groups);
+    let titles: Vec<&str> = fig.panels.iter().map(|p| p.title.as_str()).collect();
+    assert!(titles[1].starts_with("pure Fy, γ 1.99°: σ"), "{titles:?}");
+    let labels: Vec<&str> = fig.panels[0]
+        .series
+        .iter()
+        .map(|s| s.label.as_str())
+        .filter(|l| l.ends_with(" N"))
+        .collect();
+    // The terminal's spelling of each nominal, from the one formatter.
+    let want = [3004.0, 5996.0].map(|v| Variable::Load.display(v));
+    assert_eq!(labels, want);
+    assert_eq!(labels, ["3004 N", "5996 N"]);
 }

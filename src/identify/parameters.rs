@@ -1,0 +1,157 @@
+//! The per-parameter part of a fit's report: each parameter's value,
+//! standard error and the warning a tyre engineer needs when the data do
+//! not fix it (on or past its search bound, a standard error larger than
+//! the value, or a direction of the fit the data leave undetermined).
+
+use super::{Channel, ParameterReport};
+use crate::format::exact;
+use crate::tyre::Tyre;
+use nalgebra::DMatrix;
+
+/// One report per parameter of `channel`: value, whether it was free, its
+/// standard error from `covariance` (over the free ones, in order) and a
+/// warning when it sits at a bound or the data cannot identify it.
+pub(super) fn parameter_reports(
+    start: &Tyre,
+    tyre: &Tyre,
+    channel: Channel,
+    free: &[bool],
+    covariance: Option<&DMatrix<f64>>,
+) -> Vec<ParameterReport> {
+    let all_bounds = channel.bounds(start);
+    let values = channel.parameters(tyre);
+    let traded = undetermined_names(start, channel, free, covariance);
+    let mut k = 0;
+    let mut parameters = Vec::new();
+    for (i, name) in channel.names(start).iter().enumerate() {
+        let (lo, hi) = all_bounds[i];
+        let mut rep = ParameterReport {
+            name: name.to_string(),
+            value: values[i],
+            free: free[i],
+            held: None,
+            std_error: None,
+            bounds: (lo, hi),
+            warning: None,
+        };
+        if free[i] {
+            let se = covariance
+                .map(|c| c[(k, k)])
+                .filter(|v| v.is_finite())
+                .map(|v| v.max(0.0).sqrt());
+            rep.std_error = se;
+            rep.warning = warning(name, values[i], (lo, hi), se, &traded);
+            k += 1;
+        }
+        parameters.push(rep);
+    }
+    parameters
+}
+
+/// The free parameters of `channel` that the covariance leaves without a
+/// standard error (NaN on its diagonal: [`crate::optim::stats::covariance`] marks those
+/// along a direction where JᵀJ is singular), in order.
+fn undetermined_names(
+    start: &Tyre,
+    channel: Channel,
+    free: &[bool],
+    covariance: Option<&DMatrix<f64>>,
+) -> Vec<String> {
+    let Some(c) = covariance else {
+        return Vec::new();
+    };
+    channel
+        .names(start)
+        .iter()
+        .zip(free)
+        .filter(|(_, f)| **f)
+        .enumerate()
+        .filter(|(k, _)| c[(*k, *k)].is_nan())
+        .map(|(_, (n, _))| n.to_string())
+        .collect()
+}
+
+/// The warning on a free parameter `name` of value `v` in its search box
+/// `(lo, hi)` with standard error `se`, `traded` naming the parameters
+/// left without one ([`undetermined_names`]); `None` when the data fix it.
+fn warning(
+    name: &str,
+    v: f64,
+    (lo, hi): (f64, f64),
+    se: Option<f64>,
+    traded: &[String],
+) -> Option<String> {
+    let beyond = v < lo || v > hi;
+    let bounds = format!("{} to {}", exact(lo), exact(hi));
+    let w = hi - lo;
+    // On its bound, the value is where the box stopped the fit (the polish
+    // stays in the box): said first, before its standard error, which a
+    // bound makes meaningless.
+    if !beyond && (v <= lo + 1e-6 * w || v >= hi - 1e-6 * w) {
+        return Some(format!(
+            "on its search bound ({bounds}): the fit would take it beyond; the value is the bound, not a fit"
+        ));
+    }
+    if se.is_none() && traded.len() > 1 {
+        // The covariance marks the parameters along a direction where JᵀJ
+        // is singular: the data fix only a combination of them, so a value
+        // past the box is one of many that fit alike, not one the data ask
+        // for.
+        let others: Vec<&str> = traded
+            .iter()
+            .filter(|n| n.as_str() != name)
+            .map(String::as_str)
+            .collect();
+        let drift = if beyond {
+            format!("; the polish drifted past its search bound ({bounds}) along that direction")
+        } else {
+            String::new()
+        };
+        return Some(format!(
+            "not identified by the data: it trades off with {} (the Jacobian at the fit is singular along a direction they share, so only a combination of them is determined and there is no standard error){drift}",
+            others.join(", ")
+        ));
+    }
+    if beyond {
+        Some(format!(
+            "beyond its search bound ({bounds}) after the polish: the data take it past the box"
+        ))
+    } else if se.is_none() {
+        Some("not identifiable from these data (no standard error: the Jacobian at the fit is singular along it)".into())
+    } else if se.is_some_and(|s| !s.is_finite() || s > v.abs().max(1e-12)) {
+        Some("not identifiable from these data (standard error larger than the value)".into())
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parameters_without_standard_error_are_named_as_traded_not_data_driven() {
+        // PAC89's TTC fit: a0 (C) 0.0068 with a1, a2 (D's load law) huge,
+        // none with a standard error: only C·D is determined.
+        let traded: Vec<String> = ["a0", "a1", "a2"].map(String::from).into();
+        let w = warning("a0", 0.006819, (1.0, 2.0), None, &traded).unwrap();
+        assert!(
+            w.starts_with("not identified by the data: it trades off with a1, a2 ("),
+            "{w}"
+        );
+        assert!(w.contains("there is no standard error"), "{w}");
+        assert!(
+            w.ends_with("past its search bound (1 to 2) along that direction"),
+            "{w}"
+        );
+        assert!(!w.contains("the data take it past the box"), "{w}");
+        // With a standard error, past the box is the data's doing.
+        let w = warning("a0", 2.4, (1.0, 2.0), Some(0.01), &[]).unwrap();
+        assert!(w.contains("the data take it past the box"), "{w}");
+        // On its bound, that is said whatever its standard error.
+        let w = warning("a0", 1.0, (1.0, 2.0), None, &traded).unwrap();
+        assert!(w.starts_with("on its search bound (1 to 2)"), "{w}");
+        // A well-determined value inside the box carries no warning.
+        assert_eq!(warning("a3", 894.7, (-2e3, 2e3), Some(11.7), &[]), None);
+    }
+}

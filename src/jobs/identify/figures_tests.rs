@@ -1,0 +1,110 @@
+//! The swarm fit's figure measured on what it draws: a panel per pressure
+//! and camber, each titled with its own σ and its levels spelt as the
+//! terminal spells them, a colour per load, the fit a line over the
+//! points, the y axis the data's.
+
+use super::*;
+use crate::identify::data::identification_conditions;
+use crate::report::plot::Axes;
+use crate::tyre::Pac89;
+
+/// The PAC89 Adams example's rig points at three loads, repeated at three
+/// pressures with the measured force off the tyre's by 0, 4 and 8 % (so
+/// each pressure's panel has a σ of its own).
+fn conditions() -> (Tyre, Vec<Condition>) {
+    let tyre = Tyre::Pac89(Pac89::adams_example());
+    let (base, _) = identification_conditions(&tyre, 0.0, 1);
+    let mut out = Vec::new();
+    for (j, p) in [69.7e3, 83.4e3, 97.1e3].into_iter().enumerate() {
+        for c in &base {
+            let mut c = c.clone();
+            c.pressure = Some(p);
+            for q in &mut c.points {
+                *q = Point::lateral(
+                    q.slip(),
+                    q.fz,
+                    q.camber,
+                    q.speed,
+                    q.fy() * (1.0 + 0.04 * j as f64),
+                    q.mz(),
+                );
+            }
+            out.push(c);
+        }
+    }
+    (tyre, out)
+}
+
+#[test]
+fn a_panel_per_pressure_titled_with_its_own_sigma_and_the_terminals_levels() {
+    let (tyre, conds) = conditions();
+    let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)]);
+    assert_eq!(
+        fig.panels.len(),
+        3,
+        "a panel per pressure at the one camber"
+    );
+    assert_eq!(fig.columns, 3);
+    for (j, (p, kpa)) in fig.panels.iter().zip(["69.7", "83.4", "97.1"]).enumerate() {
+        // σ = sqrt(Σe²/ΣF²) of a force 1 + 0.04 j times the model's.
+        let r = 0.04 * j as f64;
+        let sigma = 100.0 * r / (1.0 + r);
+        let want = format!(
+            "pac89 lateral force, γ 0.00°, {kpa} kPa: σ {} %, 255 points",
+            fixed(sigma, 2)
+        );
+        assert_eq!(p.title, want);
+        // The labels are the terminal's ([`Variable::display`]), each
+        // load once, in a colour of its own that is not black.
+        let labelled: Vec<&Series> = p.series.iter().filter(|s| !s.label.is_empty()).collect();
+        let labels: Vec<&str> = labelled.iter().map(|s| s.label.as_str()).collect();
+        assert_eq!(labels, ["2800 N", "5700 N", "8600 N"]);
+        let mut colours: Vec<usize> = labelled.iter().map(|s| s.color).collect();
+        colours.dedup();
+        assert_eq!(colours.len(), 3, "{}: colours {colours:?}", p.title);
+        assert!(colours.iter().all(|c| *c != INK));
+        // The legend fits beside the chart: its top margin, a 20 px row
+        // per entry and the x labels below.
+        assert!(fig.row_height >= 40 + 20 * labels.len() as u32 + 30);
+    }
+}
+
+#[test]
+fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_loads_points() {
+    let (tyre, conds) = conditions();
+    let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)]);
+    for p in &fig.panels {
+        let points: Vec<&Series> = p
+            .series
+            .iter()
+            .filter(|s| s.style == Style::Points(2))
+            .collect();
+        let lines: Vec<&Series> = p.series.iter().filter(|s| s.style == Style::Line).collect();
+        assert_eq!((points.len(), lines.len()), (3, 3), "{}", p.title);
+        let (lo, hi) = points
+            .iter()
+            .flat_map(|s| s.y.iter().copied())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        let span = hi - lo;
+        let Axes { y, .. } = p.axes();
+        assert!(
+            y.0 <= lo && y.1 >= hi,
+            "{}: y {y:?}, data {lo}..{hi}",
+            p.title
+        );
+        assert!(
+            y.0 >= lo - 0.1 * span && y.1 <= hi + 0.1 * span,
+            "{}: y {y:?} is far wider than the data {lo}..{hi}",
+            p.title
+        );
+        for (m, l) in points.iter().zip(&lines) {
+            // The line is the points' colour, over their slip range.
+            assert_eq!(l.color, m.color);
+            assert!(l.x.len() > m.x.len() && l.x.windows(2).all(|w| w[1] > w[0]));
+            assert!((l.x[0] - m.x[0]).abs() < 1e-9);
+            assert!((l.x[l.x.len() - 1] - m.x[m.x.len() - 1]).abs() < 1e-9);
+        }
+    }
+}

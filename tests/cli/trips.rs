@@ -123,7 +123,7 @@ fn simulate_refuses_a_steer_no_road_wheel_makes_and_a_step_of_nothing_at_its_key
     );
     let e = simulate_err(dir.path());
     assert!(
-        e.contains("`manoeuvre.amplitude` = 1.05: must lie in"),
+        e.contains("`manoeuvre.amplitude` = 1.05: must lie within ±0.785398"),
         "{e}"
     );
 }

@@ -64,6 +64,27 @@ impl RigChannel {
 }
 
 /// `v` and its unit, if it has one: `300 m/s`, `10`.
+/// Where a request no level lies near would lie on one in the unit people
+/// read the variable in (a pressure in kPa, a camber in degrees, a load
+/// in kN), the question whether that was meant; else nothing.
+fn unit_slip(variable: Variable, requested: f64, levels: &[f64], separation: f64) -> String {
+    let (meant, si) = match variable {
+        Variable::Pressure => (requested * 1e3, "Pa"),
+        Variable::Camber => (requested.to_radians(), "rad"),
+        Variable::Load => (requested * 1e3, "N"),
+    };
+    let near = levels.iter().any(|l| (l - meant).abs() <= separation);
+    if near {
+        format!(
+            "; the request is in {si}: did you mean {} {si} ({})?",
+            super::number::number(meant),
+            variable.display(meant)
+        )
+    } else {
+        String::new()
+    }
+}
+
 /// [`with_unit`] with as many digits as tell `v` from `bounds`
 /// ([`super::number::number_apart`]).
 fn apart_with_unit(v: f64, bounds: &[f64], unit: &str) -> String {
@@ -338,7 +359,7 @@ pub enum InputProblem {
         fy_slope: Option<f64>,
     },
     /// A requested camber or pressure that no level of the file lies near.
-    #[error("no {} level near the requested {} (levels: {}; a level holds values within {} of its range)", variable.column(), variable.display(*requested), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
+    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), variable.display(*requested), unit_slip(*variable, *requested, levels, *separation), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
     NoLevelNear {
         /// The grouping variable.
         variable: Variable,

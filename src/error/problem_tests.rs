@@ -52,6 +52,31 @@ fn messages_read_as_the_text_they_replace() {
         separation: 5e3,
     };
     assert_eq!(level.to_string(), "no pressure level near the requested 250.0 kPa (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
+    // A pressure in kPa, a camber in degrees, where the option takes SI.
+    let kpa = InputProblem::NoLevelNear {
+        variable: Variable::Pressure,
+        requested: 83.4,
+        levels: vec![69.7e3, 83.4e3, 97.1e3],
+        separation: 2.2e3,
+    };
+    assert!(
+        kpa.to_string().contains(
+            "the requested 0.1 kPa; the request is in Pa: did you mean 83400 Pa (83.4 kPa)?"
+        ),
+        "{kpa}"
+    );
+    let degrees = InputProblem::NoLevelNear {
+        variable: Variable::Camber,
+        requested: 1.6,
+        levels: vec![0.0, 1.6_f64.to_radians()],
+        separation: 0.2_f64.to_radians(),
+    };
+    assert!(
+        degrees
+            .to_string()
+            .contains("the request is in rad: did you mean 0.0279253 rad (1.60°)?"),
+        "{degrees}"
+    );
     let angle = InputProblem::AngleInDegrees {
         column: "camber",
         value: 3.0,

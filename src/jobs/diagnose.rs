@@ -9,6 +9,7 @@
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
+use crate::diagnose::report::outcome::SIGNIFICANT_NOISE_FLOORS;
 use crate::diagnose::report::{words, Part, Reduction, Verdict};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
@@ -235,7 +236,9 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         )
     }));
     if !d.verdict.effects().is_empty() {
-        out.push("held-out before → after (all samples):".into());
+        out.push(format!(
+            "held-out before → after (all samples; each channel alone against {SIGNIFICANT_NOISE_FLOORS} noise floors, the verdict's share is of all channels together):"
+        ));
         out.extend(
             d.shrinkage
                 .iter()

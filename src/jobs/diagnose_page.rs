@@ -316,7 +316,13 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
         format!("after: with {}", joined(d.verdict.effects(), " + "))
     };
     p.section("before-after", "Before and after, per channel")
-        .paragraph("", &format!("Held-out RMS over all samples; {after}."))
+        .paragraph(
+            "",
+            &format!(
+                "Held-out RMS over all samples; {after}. {}",
+                words::channels_alone()
+            ),
+        )
         .table(
             "shrinkage",
             &[

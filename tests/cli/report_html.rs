@@ -198,6 +198,14 @@ fn no_reduction_percentage_for_a_gap_within_noise() {
         within += usize::from(said);
     }
     assert!(within > 0, "no channel within its noise floors");
+    // A channel judged alone is told apart from the verdict's rule, which
+    // takes the channels together (a verdict of 70 % sat above a table of
+    // channels each "not significant", with no word of why).
+    assert!(
+        page.contains("Each channel is judged alone against 3 noise floors;")
+            && page.contains("share is of the combined error of all channels"),
+        "the page does not say how a channel alone is judged"
+    );
     if !d["gap"]["significant"].as_bool().unwrap() {
         // Without a gap nothing is searched: the candidate is screened,
         // listed as such, and ranked nowhere.

@@ -221,6 +221,14 @@ pub fn within_noise() -> String {
     format!("not significant (within {SIGNIFICANT_NOISE_FLOORS} noise floors)")
 }
 
+/// How the per-channel table's "not significant" differs from the
+/// verdict's: each channel alone against its noise floors, the verdict on
+/// the channels together (the combined error against the noise level), so
+/// channels each within noise can carry a significant gap together.
+pub fn channels_alone() -> String {
+    format!("Each channel is judged alone against {SIGNIFICANT_NOISE_FLOORS} noise floors; the verdict's share is of the combined error of all channels, so channels each within noise can together carry a significant gap.")
+}
+
 /// A candidate's reduction of the combined error ([`Reduction`]), the
 /// number to one decimal (%), or why none is given.
 pub fn reduction(r: Reduction) -> String {

@@ -87,37 +87,39 @@ pub fn number(v: f64) -> String {
     }
 }
 
-/// `v` as [`number`] shows it, with more digits where that would read as
-/// one of `bounds` it is not (`1.570797 rad is outside … 1.570796`, not
-/// `1.5708 … 1.5708`): a refused value never reads as the limit it broke.
-pub fn number_apart(v: f64, bounds: &[f64]) -> String {
-    let shown = number(v);
-    let clash = |text: &str| bounds.iter().any(|&b| b != v && number(b) == text);
-    if !v.is_finite() || v == 0.0 || !clash(&shown) {
-        return shown;
+/// `v` as [`number`] shows it, at `digits` significant digits where it
+/// has more than [`SHORT_DIGITS`].
+fn number_at(v: f64, digits: usize) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return number(v);
     }
-    (DIGITS + 1..=17)
-        .map(|d| {
-            let size = v.abs();
-            if (1e-4..1e16).contains(&size) {
-                rounded(v, d)
-            } else {
-                exponent_form(v, d)
-            }
-        })
-        .find(|t| bounds.iter().all(|&b| b == v || *t != rounded_like(b, t)))
-        .unwrap_or_else(|| format!("{v:e}"))
+    let shortest = format!("{v}");
+    if !(1e-4..1e16).contains(&v.abs()) {
+        exponent_form(v, digits)
+    } else if significant_digits(&shortest) <= SHORT_DIGITS {
+        shortest
+    } else {
+        rounded(v, digits)
+    }
 }
 
-/// `b` at the precision of the text `like` (its significant digits), to
-/// tell whether two numbers shown alike are.
-fn rounded_like(b: f64, like: &str) -> String {
-    let d = significant_digits(like).max(1);
-    if like.contains('e') {
-        exponent_form(b, d)
-    } else {
-        rounded(b, d)
-    }
+/// `v` and `bounds` as [`number`] shows them, at the fewest digits (six or
+/// more) that tell `v` from each bound it is not (`1.5708 rad is outside
+/// -1.570796 to 1.570796`, not `1.5708 … 1.5708`): a refused value never
+/// reads as the limit it broke.
+pub fn numbers_apart(v: f64, bounds: &[f64]) -> (String, Vec<String>) {
+    let at = |d: usize| {
+        (
+            number_at(v, d),
+            bounds.iter().map(|&b| number_at(b, d)).collect(),
+        )
+    };
+    (DIGITS..=17)
+        .map(at)
+        .find(|(shown, b): &(String, Vec<String>)| {
+            bounds.iter().zip(b).all(|(&x, t)| x == v || t != shown)
+        })
+        .unwrap_or_else(|| at(17))
 }
 
 /// What the check `lo < v ≤ hi` asks, after "must": `lie in (lo, hi]`;
@@ -145,10 +147,24 @@ mod tests {
         let quarter = std::f64::consts::FRAC_PI_2;
         let past = quarter + 1e-12;
         assert_eq!(number(past), number(quarter));
-        assert_eq!(number_apart(past, &[-quarter, quarter]), "1.570796326796");
-        assert_eq!(number_apart(1e308, &[-1e6, 1e6]), "1e308");
-        assert_eq!(number_apart(0.0174533, &[0.5]), "0.0174533");
-        assert_eq!(number_apart(quarter, &[quarter]), number(quarter));
+        let (v, b) = numbers_apart(past, &[-quarter, quarter]);
+        assert_eq!(
+            (v.as_str(), b[1].as_str()),
+            ("1.5707963268", "1.57079632679")
+        );
+        // A value typed short is shown as typed, the bound to the digits
+        // that differ from it.
+        #[allow(clippy::approx_constant)]
+        let typed = 1.5708;
+        let (v, b) = numbers_apart(typed, &[-quarter, quarter]);
+        assert_eq!(
+            (v.as_str(), b[0].as_str(), b[1].as_str()),
+            ("1.5708", "-1.570796", "1.570796")
+        );
+        let (v, b) = numbers_apart(1e308, &[-1e6, 1e6]);
+        assert_eq!((v.as_str(), b[1].as_str()), ("1e308", "1000000"));
+        let (v, b) = numbers_apart(quarter, &[quarter]);
+        assert_eq!(v, b[0]);
     }
 
     #[test]

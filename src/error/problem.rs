@@ -85,23 +85,18 @@ fn unit_slip(variable: Variable, requested: f64, levels: &[f64], separation: f64
     }
 }
 
-/// [`with_unit`] with as many digits as tell `v` from `bounds`
-/// ([`super::number::number_apart`]).
-fn apart_with_unit(v: f64, bounds: &[f64], unit: &str) -> String {
-    let v = super::number::number_apart(v, bounds);
-    if unit.is_empty() {
-        v
-    } else {
-        format!("{v} {unit}")
-    }
-}
-
-fn with_unit(v: f64, unit: &str) -> String {
-    if unit.is_empty() {
-        Num(v).to_string()
-    } else {
-        format!("{} {unit}", Num(v))
-    }
+/// A value `v` outside `lo` to `hi` in `unit`, and the range, at the
+/// digits that tell them apart ([`super::number::numbers_apart`]).
+fn apart(v: f64, lo: f64, hi: f64, unit: &str) -> (String, String) {
+    let (v, b) = super::number::numbers_apart(v, &[lo, hi]);
+    let u = |x: &str| {
+        if unit.is_empty() {
+            x.to_string()
+        } else {
+            format!("{x} {unit}")
+        }
+    };
+    (u(&v), format!("{} to {}", b[0], u(&b[1])))
 }
 
 /// A least-squares slope of a channel against its slip near zero slip.
@@ -302,7 +297,7 @@ pub enum InputProblem {
         value: f64,
     },
     /// A tyre input outside the range a tyre model is evaluated in.
-    #[error("column `{column}`: {} is outside {} to {}, the range a tyre is evaluated in ({why})", apart_with_unit(*value, &[*lo, *hi], unit), Num(*lo), with_unit(*hi, unit))]
+    #[error("column `{column}`: {} is outside {}, the range a tyre is evaluated in ({why})", apart(*value, *lo, *hi, unit).0, apart(*value, *lo, *hi, unit).1)]
     NotPhysical {
         /// The column.
         column: &'static str,

@@ -68,6 +68,16 @@ pub enum UnitSlip {
         /// The smallest median load accepted, N.
         limit: f64,
     },
+    /// An inflation pressure of a few units: in kPa, bar or psi.
+    #[error("column `pressure`: {} Pa, in a file whose median pressure is {} Pa: no inflated tyre runs below {} Pa (0.1 bar; a racing slick runs at about 70 kPa, a car tyre at 200–300 kPa): `pressure` is in Pa (FORMATS.md); is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?", Num(*value), Num(*median), Num(*limit))]
+    PressureNotInPa {
+        /// The first pressure below the limit, as read.
+        value: f64,
+        /// The median pressure, as read.
+        median: f64,
+        /// The smallest median pressure accepted, Pa.
+        limit: f64,
+    },
     /// A forward speed beyond any car's over more than 1 % of the run, or
     /// one sample beyond any vehicle's at all (no logger's glitch of a
     /// car's speed reads 1e308).

@@ -137,7 +137,15 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         camber_measured: camber.is_some(),
         camber: camber.unwrap_or_else(|| vec![0.0; n]),
         mz,
-        pressure: c.take_optional("pressure"),
+        pressure: match c.take_optional("pressure") {
+            Some(p) => {
+                if let Some((i, slip)) = pressure_not_in_pa(&p) {
+                    return Err(c.error_at(path, i, "pressure", slip.into()));
+                }
+                Some(p)
+            }
+            None => None,
+        },
         speed: c.take_optional("speed"),
         longitudinal,
         fz,
@@ -149,6 +157,33 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
 /// The smallest median load of a tyre test, N: a bicycle tyre carries
 /// 300–800 N, a car tyre's loads written in kN are 1–10.
 pub const MIN_MEDIAN_LOAD: f64 = 100.0;
+
+/// The smallest median inflation pressure of a tyre test, Pa (0.1 bar):
+/// a pressure written in kPa, bar or psi reads 1–1000.
+pub const MIN_MEDIAN_PRESSURE: f64 = 1e4;
+
+/// Where the positive pressures of `p` have a median below
+/// [`MIN_MEDIAN_PRESSURE`]: the first positive pressure below it and why
+/// (written in kPa, bar or psi). None without a positive pressure.
+pub(crate) fn pressure_not_in_pa(p: &[f64]) -> Option<(usize, UnitSlip)> {
+    let mut counted: Vec<f64> = p.iter().copied().filter(|v| *v > 0.0).collect();
+    if counted.is_empty() {
+        return None;
+    }
+    let median = crate::measured::clean::median(&mut counted);
+    (median < MIN_MEDIAN_PRESSURE).then(|| {
+        let i = p
+            .iter()
+            .position(|v| *v > 0.0 && *v < MIN_MEDIAN_PRESSURE)
+            .unwrap_or(0);
+        let slip = UnitSlip::PressureNotInPa {
+            value: p[i],
+            median,
+            limit: MIN_MEDIAN_PRESSURE,
+        };
+        (i, slip)
+    })
+}
 
 /// Refuses loads whose median is below [`MIN_MEDIAN_LOAD`] (in kN), at the
 /// first positive load below it.

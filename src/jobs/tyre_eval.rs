@@ -18,7 +18,7 @@
 //! output never holds a non-finite value.
 
 use crate::error::Error;
-use crate::io::rig::load_in_kn;
+use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
 use crate::io::{load_tyre, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
@@ -177,6 +177,11 @@ pub fn run(
         .collect();
     if let Some(e) = crate::error::InputError::all_of(points, errors) {
         return Err(e.into());
+    }
+    // A pressure written in kPa, bar or psi (a .tir clamps it to its
+    // range without a word of the unit).
+    if let Some((i, slip)) = pressure.as_deref().and_then(pressure_not_in_pa) {
+        return Err(c.error_at(points, i, "pressure", slip.into()).into());
     }
     // A car's loads written in kN; the points off the road do not count.
     if let Some((i, slip)) = load_in_kn(&columns[0].1, |fz| fz > 0.0) {

@@ -130,24 +130,28 @@ fn tyre_eval_lists_every_non_physical_row_in_file_order() {
         at("points.csv:6:1: column `fz`: 1e308 N"),
     ];
     assert!(lines.windows(2).all(|w| w[0] < w[1]), "{e}");
-    // α a hair past 90° reads apart from the 90° it broke.
-    let dir = scratch(&[(
-        "p.csv",
-        "fz,kappa,alpha,camber,speed\n4000,0,1.5707963267958966,0,20\n",
-    )]);
-    let out = dir.path().join("o.csv");
-    let o = run(&[
-        "tyre-eval",
-        "tests/fixtures/tir/MagicFormula61_Parameters.tir",
-        dir.path().join("p.csv").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let e = refused(&o, &out);
-    assert!(
-        e.contains("1.570796326796 rad is outside -1.5708 to 1.5708 rad"),
-        "{e}"
-    );
+    // α typed as 1.5708, or a hair past 90°, reads apart from the 90° it
+    // broke (it read "1.5708 rad is outside -1.5708 to 1.5708 rad").
+    for (alpha, said) in [
+        ("1.5708", "1.5708 rad is outside -1.570796 to 1.570796 rad"),
+        (
+            "1.5707963267958966",
+            "1.5707963268 rad is outside -1.57079632679 to 1.57079632679 rad",
+        ),
+    ] {
+        let points = format!("fz,kappa,alpha,camber,speed\n4000,0,{alpha},0,20\n");
+        let dir = scratch(&[("p.csv", &points)]);
+        let out = dir.path().join("o.csv");
+        let o = run(&[
+            "tyre-eval",
+            "tests/fixtures/tir/MagicFormula61_Parameters.tir",
+            dir.path().join("p.csv").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let e = refused(&o, &out);
+        assert!(e.contains(said), "{e}");
+    }
 }
 
 /// A Gim tyre at a subnormal load and no slip gave a non-finite force
@@ -187,4 +191,40 @@ fn a_known_name_given_with_words_around_it_is_suggested() {
     );
     let e = simulate_err(dir.path());
     assert!(e.contains("did you mean `sine`?"), "{e}");
+}
+
+/// Pressures of 2.2 and 220 (bar and kPa) were clamped to the file's range
+/// and gave a force 51 % off the one at 220000 Pa, with no word of the unit.
+#[test]
+fn a_pressure_in_kpa_or_bar_is_refused_at_its_cell() {
+    let points = "fz,kappa,alpha,camber,speed,pressure\n4000,0,0.05,0,20,2.2\n4000,0,0.05,0,20,220\n4000,0,0.05,0,20,2.3\n";
+    let dir = scratch(&[("p.csv", points)]);
+    let out = dir.path().join("o.csv");
+    let o = run(&[
+        "tyre-eval",
+        "tests/fixtures/tir/MagicFormula62_Parameters.tir",
+        dir.path().join("p.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = refused(&o, &out);
+    assert!(
+        e.contains(
+            "p.csv:2:6: column `pressure`: 2.2 Pa, in a file whose median pressure is 2.3 Pa"
+        ) && e.contains(
+            "is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?"
+        ),
+        "{e}"
+    );
+    // Rig data in kPa, likewise, before any fit.
+    let mut rig = String::from("fz,alpha,fy,pressure\n");
+    for k in -5..=5 {
+        let alpha = 0.02 * f64::from(k);
+        rig += &format!("4000,{alpha},{},220\n", 60_000.0 * alpha);
+    }
+    let dir = scratch(&[("rig.csv", &rig)]);
+    let fit = dir.path().join("fit.toml");
+    let o = identify_to(&dir.path().join("rig.csv"), "linear", &fit);
+    let e = refused(&o, &fit);
+    assert!(e.contains("rig.csv:2:4: column `pressure`: 220 Pa"), "{e}");
 }

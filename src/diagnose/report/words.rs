@@ -9,19 +9,19 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
+mod parameters;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
 };
+pub use parameters::parameter;
 
-use crate::diagnose::effects::{joined, Bound, EffectKind};
+use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note,
     OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
     SIGNIFICANT_NOISE_FLOORS,
 };
-use crate::diagnose::report::{
-    ChannelNoise, Confounded, ParameterValue, Part, Reduction, ScaleSource, Shrinkage,
-};
+use crate::diagnose::report::{ChannelNoise, Confounded, Part, Reduction, ScaleSource, Shrinkage};
 
 impl Verdict {
     /// The verdict in one sentence ([`statement`]; written here, beside
@@ -502,80 +502,6 @@ pub fn signatures(effects: &[EffectKind]) -> String {
         .map(|e| format!("{}: {}", e.name(), e.signature()))
         .collect::<Vec<_>>()
         .join("; ")
-}
-
-/// A fitted parameter in words: its value, unit and standard error; or
-/// the bound it stands on — a search bound (the data would take it
-/// further) or a physical limit (a length, a share, a load that would be
-/// negative beyond it); or, where the standard error is missing or larger
-/// than the parameter's whole range, that the runs do not determine it;
-/// or that it is held at its off value (no measured channel responds to
-/// it, or fitted free the runs did not determine it). A steering
-/// compliance, fitted in rad/kN, is given in rad/N too: the unit of
-/// `steering_compliance` in a scenario's `[model.effects]`.
-pub fn parameter(p: &ParameterValue) -> String {
-    // A dimensionless parameter (unit `-`) is written without a unit.
-    let unit = match p.unit {
-        "rad/kN" => format!(" rad/kN ({} rad/N)", value(p.value * 1e-3)),
-        "-" => String::new(),
-        u => format!(" {u}"),
-    };
-    // A standard error in the parameter's own unit, three digits.
-    let se = |x: f64| {
-        let u = if p.unit == "-" { "" } else { p.unit };
-        format!(
-            "{}{}{u}",
-            crate::format::readable(x, 3),
-            if u.is_empty() { "" } else { " " }
-        )
-    };
-    let v = value(p.value);
-    if p.unseen {
-        return format!(
-            "{} = {v}{unit} (held at its off value: no measured channel responds to it)",
-            p.name
-        );
-    }
-    if let Some(free) = p.held {
-        // The roll dynamics' off value is the campaign's `[roll]`.
-        let at = if p.name.starts_with("roll.") {
-            "the campaign's value"
-        } else {
-            "its off value"
-        };
-        return format!(
-            "{} = {v}{unit} (held at {at}: the runs do not determine it, fitted free its standard error {} exceeds its whole range)",
-            p.name, se(free)
-        );
-    }
-    let Some(bound) = p.bound else {
-        return if p.determined {
-            format!("{} = {v} ± {:.2e}{unit}", p.name, p.std_error)
-        } else if p.std_error.is_finite() {
-            format!(
-                "{} = {v}{unit} (not determined by the runs: its standard error {} exceeds its whole range)",
-                p.name, se(p.std_error)
-            )
-        } else {
-            // No standard error: the runs cannot see it (a channel they
-            // lack, a parameter pinned by another).
-            format!(
-                "{} = {v}{unit} (no standard error: not determined by the runs)",
-                p.name
-            )
-        };
-    };
-    let why = match bound {
-        Bound::Search => "at its search bound: the data would take it further",
-        // Every lower physical limit is 0 (a length, a delay, a share, a
-        // down-force); the upper ones are a share's 1: a value on one is
-        // within a hair of 0 or of 1.
-        Bound::Physical if p.value < 0.5 => {
-            "at its physical limit: any smaller value would be negative"
-        }
-        Bound::Physical => "at its physical limit: a share cannot exceed 1",
-    };
-    format!("{} = {v}{unit} ({why})", p.name)
 }
 
 /// A fitted value: below 0.01 to four significant digits (a steering

@@ -3,8 +3,9 @@
 
 use super::*;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
-use crate::diagnose::effects::EffectKind;
+use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
+use crate::diagnose::report::ParameterValue;
 
 fn explained(reduction_percent: f64) -> Verdict {
     Verdict::Explained(Explained {
@@ -535,4 +536,8 @@ fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
     let scale = crate::diagnose::effects::EffectKind::YawInertia.parameters()[0];
     let fitted = ParameterValue::of("yaw_inertia", &scale, 1.3038, 3.27e-3);
     assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 3.27e-3");
+    // Not `1.03e0`: a standard error of 0.01 or more in plain digits.
+    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of("roll", &frequency, 3.0, 1.03);
+    assert_eq!(parameter(&roll), "roll.frequency = 3.0000 ± 1.03 Hz");
 }

@@ -132,7 +132,8 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The known name nearest `given`, when it is near enough to be what was
-/// meant: one edit away (a slip); else the one known name that holds every
+/// meant: one edit away in a name of three characters or more (a slip);
+/// else the one known name that holds every
 /// word of `given` (`slick` for `racing_slick`) or whose every word
 /// `given` holds (`sine-steer` for `sine`), words split at `_`, `-` and
 /// spaces; else at most one edit per three characters of the longer name
@@ -143,7 +144,10 @@ pub fn nearest_name<'a>(given: &str, known: &[&'a str]) -> Option<&'a str> {
         .iter()
         .map(|k| (edit_distance(given, k), *k))
         .min_by_key(|(d, _)| *d);
-    if let Some((_, k)) = closest.filter(|(d, _)| *d <= 1) {
+    // One edit in a name of three characters or more: a slip (in `x` for
+    // `y` it is a different name).
+    let longest = |k: &str| given.chars().count().max(k.chars().count());
+    if let Some((_, k)) = closest.filter(|(d, k)| *d <= 1 && longest(k) >= 3) {
         return Some(k);
     }
     let words = |s: &str| -> Vec<String> {
@@ -214,6 +218,9 @@ mod tests {
         assert_eq!(nearest_name("step-stear", &kinds), Some("step-steer"));
         assert_eq!(nearest_name("car", &["passenger_car", "race_car"]), None);
         assert_eq!(nearest_name("wheel", &classes), None);
+        // One edit between one-letter names is another name, not a slip.
+        assert_eq!(nearest_name("x", &["y", "z"]), None);
+        assert_eq!(nearest_name("fy", &["fx", "mz"]), Some("fx"));
     }
 
     #[test]

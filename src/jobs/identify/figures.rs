@@ -51,23 +51,9 @@ fn figure(model: &str, tyre: &Tyre, channels: &[(Channel, &[Condition])]) -> Fig
             }
         }
     }
-    let entries = panels
-        .iter()
-        .map(|p| p.series.iter().filter(|s| !s.label.is_empty()).count())
-        .max()
-        .unwrap_or(0);
-    Figure {
-        panels,
-        columns,
-        width: if columns == 1 {
-            1000
-        } else {
-            650 * columns as u32
-        },
-        // Tall enough for every load's key entry beside the chart: the
-        // key's top margin, a 20 px row per entry and the x labels below.
-        row_height: 260.max(40 + 20 * entries as u32 + 30),
-    }
+    // The key's top margin, a 20 px row per entry and the x labels below
+    // set the row's height where they need more than 260 px.
+    super::staged_figure::keyed(panels, columns, 260)
 }
 
 /// The distinct values (within `tol`), ascending.

@@ -219,6 +219,13 @@ pub(super) fn staged_figure(
     } else {
         1
     };
+    keyed(panels, columns, ROW_HEIGHT)
+}
+
+/// A fit figure of `panels` in `columns`: 1000 px wide in one column,
+/// 650 px a column in more, each row `row_height` px high unless a panel's
+/// key (its labelled series) needs more ([`key_height`]).
+pub(super) fn keyed(panels: Vec<Panel>, columns: usize, row_height: u32) -> Figure {
     let entries = panels
         .iter()
         .map(|p| p.series.iter().filter(|s| !s.label.is_empty()).count())
@@ -232,7 +239,7 @@ pub(super) fn staged_figure(
         } else {
             650 * columns as u32
         },
-        row_height: ROW_HEIGHT.max(key_height(entries)),
+        row_height: row_height.max(key_height(entries)),
     }
 }
 

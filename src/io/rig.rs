@@ -162,29 +162,6 @@ pub const MIN_MEDIAN_LOAD: f64 = 100.0;
 /// a pressure written in kPa, bar or psi reads 1–1000.
 pub const MIN_MEDIAN_PRESSURE: f64 = 1e4;
 
-/// Where the positive pressures of `p` have a median below
-/// [`MIN_MEDIAN_PRESSURE`]: the first positive pressure below it and why
-/// (written in kPa, bar or psi). None without a positive pressure.
-pub(crate) fn pressure_not_in_pa(p: &[f64]) -> Option<(usize, UnitSlip)> {
-    let mut counted: Vec<f64> = p.iter().copied().filter(|v| *v > 0.0).collect();
-    if counted.is_empty() {
-        return None;
-    }
-    let median = crate::measured::clean::median(&mut counted);
-    (median < MIN_MEDIAN_PRESSURE).then(|| {
-        let i = p
-            .iter()
-            .position(|v| *v > 0.0 && *v < MIN_MEDIAN_PRESSURE)
-            .unwrap_or(0);
-        let slip = UnitSlip::PressureNotInPa {
-            value: p[i],
-            median,
-            limit: MIN_MEDIAN_PRESSURE,
-        };
-        (i, slip)
-    })
-}
-
 /// Refuses loads whose median is below [`MIN_MEDIAN_LOAD`] (in kN), at the
 /// first positive load below it.
 fn check_load_unit(path: &Path, c: &Columns, fz: &[f64]) -> Result<(), InputError> {
@@ -199,22 +176,41 @@ fn check_load_unit(path: &Path, c: &Columns, fz: &[f64]) -> Result<(), InputErro
 /// median below [`MIN_MEDIAN_LOAD`]: the first positive load below it and
 /// why, a car's loads written in kN. None when none is judged.
 pub(crate) fn load_in_kn(fz: &[f64], judged: impl Fn(f64) -> bool) -> Option<(usize, UnitSlip)> {
-    let mut counted: Vec<f64> = fz.iter().copied().filter(|v| judged(*v)).collect();
+    let (i, median) = median_below(fz, judged, MIN_MEDIAN_LOAD)?;
+    let slip = UnitSlip::LoadInKn {
+        value: fz[i],
+        median,
+        limit: MIN_MEDIAN_LOAD,
+    };
+    Some((i, slip))
+}
+
+/// Where the positive pressures of `p` have a median below
+/// [`MIN_MEDIAN_PRESSURE`]: the first positive pressure below it and why
+/// (written in kPa, bar or psi). None without a positive pressure.
+pub(crate) fn pressure_not_in_pa(p: &[f64]) -> Option<(usize, UnitSlip)> {
+    let (i, median) = median_below(p, |v| v > 0.0, MIN_MEDIAN_PRESSURE)?;
+    let slip = UnitSlip::PressureNotInPa {
+        value: p[i],
+        median,
+        limit: MIN_MEDIAN_PRESSURE,
+    };
+    Some((i, slip))
+}
+
+/// The unit rule of a column written in a unit a thousand or more times
+/// too large: where the median of the `judged` values of `v` is below
+/// `limit`, the first positive value below it (the row an error names)
+/// and that median. None when nothing is judged or the median passes.
+fn median_below(v: &[f64], judged: impl Fn(f64) -> bool, limit: f64) -> Option<(usize, f64)> {
+    let mut counted: Vec<f64> = v.iter().copied().filter(|x| judged(*x)).collect();
     if counted.is_empty() {
         return None;
     }
     let median = crate::measured::clean::median(&mut counted);
-    (median < MIN_MEDIAN_LOAD).then(|| {
-        let i = fz
-            .iter()
-            .position(|v| *v > 0.0 && *v < MIN_MEDIAN_LOAD)
-            .unwrap_or(0);
-        let slip = UnitSlip::LoadInKn {
-            value: fz[i],
-            median,
-            limit: MIN_MEDIAN_LOAD,
-        };
-        (i, slip)
+    (median < limit).then(|| {
+        let i = v.iter().position(|x| *x > 0.0 && *x < limit).unwrap_or(0);
+        (i, median)
     })
 }
 

@@ -160,7 +160,11 @@ fn calibrated(c: &Campaign) -> Calibrated {
             .channels
             .iter()
             .find(|k| k.channel == run_channel)?;
-        let (pooled, on) = match (&k.standstill, &k.straight) {
+        // A standstill offset that only a logged bank not acting on the
+        // car (or of the other sign) explains is no evidence.
+        let doubted = k.bank.is_some_and(|b| !b.taken());
+        let standstill = k.standstill.as_ref().filter(|_| !doubted);
+        let (pooled, on) = match (standstill, &k.straight) {
             (Some(p), _) => (p, CalibrationSource::Standstills),
             (None, Some(p)) => (p, CalibrationSource::Straights),
             (None, None) => return None,

@@ -188,6 +188,9 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",
         d.folds, d.gap.heldout_error, d.gap.noise_level
     ));
+    if let Some(c) = words::within_noise_caveat(&d.gap.findings) {
+        out.push(format!("  ({c})"));
+    }
     out.push(format!(
         "  {:<28} {:>8} {:>11} {:>10} {:>12}  parameters",
         "effect", "J after", "held out", "in sample", "ΔBIC"

@@ -34,6 +34,18 @@ impl Noise {
 /// [`OFFSETS`] and white noise (0.002 rad/s, 0.05 m/s², 0.001 rad) on top.
 /// The `bank` column is written when `bank_logged`; no `ax`.
 fn log(seed: u64, parked_bank: f64, corner: bool, bank_logged: bool) -> String {
+    log_banks(
+        seed,
+        parked_bank,
+        bank_logged.then_some(parked_bank),
+        corner,
+    )
+}
+
+/// As [`log`], with the car parked on `felt` and the `bank` column (when
+/// given) logging `logged`, both easing to 0 as the car drives off.
+fn log_banks(seed: u64, felt: f64, logged: Option<f64>, corner: bool) -> String {
+    let bank_logged = logged.is_some();
     let mut noise = Noise(seed);
     let seconds = if corner { 60.0 } else { 35.0 };
     let mut s = String::from(if bank_logged {
@@ -45,7 +57,8 @@ fn log(seed: u64, parked_bank: f64, corner: bool, bank_logged: bool) -> String {
     for i in 0..(seconds * 100.0) as usize {
         let t = i as f64 * 0.01;
         let u = (5.0 * (t - 15.0)).clamp(0.0, 20.0);
-        let bank = parked_bank * (1.0 - (t - 15.0) / 4.0).clamp(0.0, 1.0);
+        let easing = (1.0 - (t - 15.0) / 4.0).clamp(0.0, 1.0);
+        let bank = felt * easing;
         let steer = if corner && (35.0..45.0).contains(&t) {
             0.02
         } else {
@@ -60,7 +73,7 @@ fn log(seed: u64, parked_bank: f64, corner: bool, bank_logged: bool) -> String {
             0.1 * steer + OFFSETS[2] + 0.001 * noise.gauss()
         );
         if bank_logged {
-            s += &format!(",{bank:.6}");
+            s += &format!(",{:.6}", logged.unwrap_or(0.0) * easing);
         }
         s += "\n";
     }
@@ -199,4 +212,37 @@ fn without_its_bank_column_a_banked_standstill_reads_g_sin_bank_and_drifts() {
     assert!(l.contains("; the standstills drift (-0.6"), "{l}");
     // Their pooled error spans the drift (Birge ratio).
     assert!(f(&p["std_error"]) > 0.3 * g, "{p}");
+}
+
+#[test]
+fn a_logged_bank_the_accelerometer_does_not_feel_is_named_not_taken_for_an_offset() {
+    // Parked on the flat while the bank column logs 0.35 rad (20°): read
+    // as logged, the accelerometer would carry an offset of −0.6 − 3.36.
+    let runs = |felt: f64, logged: f64| {
+        [3, 4].map(|seed| {
+            (
+                ["a.csv", "b.csv"][seed - 3],
+                log_banks(seed as u64, felt, Some(logged), true),
+            )
+        })
+    };
+    let (_dir, stdout, d) = diagnosed(&runs(0.0, 0.35));
+    let ay = channel(&d, "ay");
+    assert_eq!(ay["bank"]["seen"], "not_acting", "{ay}");
+    let term = 9.80665 * 0.35f64.sin();
+    assert!((f(&ay["bank"]["bank_term"]) - term).abs() < 1e-3, "{ay}");
+    assert!((f(&ay["bank"]["read"]) - OFFSETS[1]).abs() < 0.01, "{ay}");
+    let l = line(&stdout, "ay");
+    assert!(
+        l.contains("but parked where the logged bank gives g·sin(bank) = 3.36 m/s², the accelerometer reads -0.60 m/s²: an offset of -3.96 m/s² is beyond the 1 m/s² a mounted sensor shows, so the logged bank does not act on the car"),
+        "{l}"
+    );
+    // Logged with the other sign: named as reversed.
+    let (_dir, stdout, d) = diagnosed(&runs(0.35, -0.35));
+    assert_eq!(channel(&d, "ay")["bank"]["seen"], "reversed");
+    assert!(line(&stdout, "ay").contains("the bank channel's sign is reversed"));
+    // Felt as logged: taken, no doubt printed.
+    let (_dir, stdout, d) = diagnosed(&runs(0.35, 0.35));
+    assert_eq!(channel(&d, "ay")["bank"]["seen"], "as_logged");
+    assert!(!line(&stdout, "ay").contains("but parked"));
 }

@@ -312,6 +312,17 @@ fn a_gap_at_noise_level_is_given_no_place_on_the_terminal_the_page_or_the_json()
     assert!(!stdout.contains("where the gap lies"), "{stdout}");
     let page = fs::read_to_string(campaign.with_extension("out").join("report.html")).unwrap();
     assert!(page.contains(">The gap, within noise</h2>"), "{page}");
+    // The candidates' ΔBIC and standard errors, on thousands of correlated
+    // samples, are said not to be evidence where the gap is noise.
+    let caveat = "the ΔBIC and ± below count every sample as independent";
+    assert!(
+        stdout.contains(&format!("  (the gap is within noise: {caveat}")),
+        "{stdout}"
+    );
+    assert!(
+        page.contains(&format!("The gap is within noise: {caveat}")),
+        "{page}"
+    );
     let summary = d["gap"]["summary"].as_array().unwrap();
     assert_eq!(summary.len(), 4, "{summary:?}");
     for s in summary {

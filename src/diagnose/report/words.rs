@@ -407,6 +407,18 @@ pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
     }
 }
 
+/// Under the candidates of a campaign whose gap is within noise (`None`
+/// otherwise): their ΔBIC and standard errors count every sample as an
+/// independent one, but a replay's residuals are correlated over many
+/// samples (a model's error is smooth), so on thousands of samples both
+/// read as decisive where the held-out columns, which are judged against
+/// the noise, show nothing.
+pub fn within_noise_caveat(findings: &[GapFinding]) -> Option<&'static str> {
+    (gap_heading(findings) == "the gap, within noise").then_some(
+        "the gap is within noise: the ΔBIC and ± below count every sample as independent, and a replay's residuals are correlated over many samples, so on a gap within noise they look decisive where nothing is found; the held-out columns are the evidence",
+    )
+}
+
 /// A finding on where the gap lies.
 pub fn finding(f: &GapFinding) -> String {
     let listed = |v: Vec<String>| {

@@ -67,12 +67,14 @@
 //! [`calibrate`]; `spans.rs` finds the spans, `stats.rs` measures and pools
 //! them, `report.rs` holds the report and its lines.
 
+mod bank;
 mod report;
 mod spans;
 mod stats;
 #[cfg(test)]
 mod tests;
 
+pub use bank::{BankCheck, BankSeen, PLAUSIBLE_AY_OFFSET};
 pub use report::{
     Agreement, CalibrationReport, CalibrationSpan, ChannelCalibration, ChannelMean, Criteria,
     Pooled, RejectedStraight, Rejection, SpanKind,
@@ -274,6 +276,27 @@ fn pooled(spans: &[&CalibrationSpan], kind: SpanKind, channel: RunChannel) -> Op
     })
 }
 
+/// The standstills' `channel` (with a logged bank removed, pooled to
+/// `corrected`) read against that bank (`bank.rs`); None where no bank was
+/// removed.
+fn bank_check(
+    spans: &[&CalibrationSpan],
+    channel: RunChannel,
+    corrected: f64,
+) -> Option<BankCheck> {
+    let read: Vec<(f64, f64)> = spans
+        .iter()
+        .filter(|s| s.kind == SpanKind::Standstill)
+        .flat_map(|s| &s.channels)
+        .filter(|m| m.channel == channel)
+        .map(|m| m.bank_term.map(|b| (m.mean + b, m.std_error)))
+        .collect::<Option<_>>()?;
+    // Pooled with the same weights as the corrected means, so the
+    // difference is the pooled bank term.
+    let read = pool(&read).mean;
+    Some(BankCheck::judge(read, read - corrected))
+}
+
 /// One channel over the standstills and the straights; None when neither
 /// measures it.
 fn channel_calibration(
@@ -303,6 +326,7 @@ fn channel_calibration(
         channel,
         unit: unit(channel),
         bank_removed,
+        bank: standstill.and_then(|p| bank_check(spans, channel, p.mean)),
         standstill,
         straight,
         agreement,

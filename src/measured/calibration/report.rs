@@ -235,6 +235,9 @@ pub struct ChannelCalibration {
     pub unit: &'static str,
     /// g·sin(bank) was removed (ay with a logged bank).
     pub bank_removed: bool,
+    /// The standstills' reading of the logged bank (ay with a logged bank
+    /// and a standstill).
+    pub bank: Option<super::BankCheck>,
     /// Over the standstills.
     pub standstill: Option<Pooled>,
     /// Over the straights.
@@ -323,6 +326,9 @@ impl ChannelCalibration {
             parts.push(part(p, SpanKind::Straight, parts.is_empty()));
         }
         let mut out = format!("{name} offset{bank} {}", parts.join(", "));
+        if let Some(doubt) = self.bank.as_ref().and_then(|b| b.doubt()) {
+            out.push_str(&format!("; but {doubt}"));
+        }
         if let Some(a) = &self.agreement {
             let verdict = if a.agree { "agree" } else { "differ" };
             out.push_str(&format!(

@@ -50,6 +50,15 @@ pub fn readable(v: f64, digits: usize) -> String {
     }
 }
 
+/// `v` rounded to `digits` significant digits and written without the
+/// zeros that rounding leaves (`50`, not `50.0`; `0.0025`, not
+/// `0.00250`): a limit a user types back.
+pub fn rounded(v: f64, digits: usize) -> String {
+    readable(v, digits)
+        .parse::<f64>()
+        .map_or_else(|_| readable(v, digits), exact)
+}
+
 /// `v` with `decimals` decimals where they show two significant digits
 /// or more, else with `digits` significant digits ([`readable`]): an RMS
 /// of 2.7e-4 N reads `0.000275`, not `0.0`, one of 12.34 N `12.3`.
@@ -259,6 +268,9 @@ mod tests {
         assert_eq!(readable(4e305, 3), "4e305");
         assert_eq!(readable(0.000275123, 3), "0.000275");
         assert_eq!(readable(-0.0, 3), "0");
+        assert_eq!(rounded(49.999999, 3), "50");
+        assert_eq!(rounded(0.0025, 3), "0.0025");
+        assert_eq!(rounded(1.0 / 3.0, 3), "0.333");
         assert_eq!(decimals_or_digits(0.000275123, 1, 3), "0.000275");
         assert_eq!(decimals_or_digits(12.34, 1, 3), "12.3");
         assert_eq!(decimals_or_digits(0.0, 1, 3), "0.0");

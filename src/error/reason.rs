@@ -28,6 +28,16 @@ pub enum ParamReason {
         /// The smallest step the metrics take as one, rad.
         min: f64,
     },
+    /// A steer frequency the recorded rows cannot resolve: rows every
+    /// `step` s sample below twice the frequency (Nyquist), so the written
+    /// history aliases the steer. Hz, s.
+    #[error("the rows every {step} s ([simulation] step) sample at {} Hz, less than twice this frequency: the written steer and response would alias (a 40 Hz sweep drawn as slow beating); set step to at most {} s, or {} s to draw the waveform", crate::format::rounded(1.0 / *step, 3), crate::format::rounded(0.5 / *frequency, 3), crate::format::rounded(0.1 / *frequency, 3))]
+    Aliased {
+        /// The recorded rows' interval, s.
+        step: f64,
+        /// The highest steer frequency, Hz.
+        frequency: f64,
+    },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]
     NotPositive,

@@ -293,7 +293,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
             inputs.push(run_path);
             resolved
         }
-        spec => Resolved::from(other_manoeuvre(src, spec)?),
+        spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
@@ -504,8 +504,26 @@ fn steers(key: &str, v: f64, reached: f64) -> Result<(), ParamError> {
     Err(ParamError::new(key, v, reason))
 }
 
-/// Ramp, sine and sweep steers: their timing and rates checked.
-fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, InputError> {
+/// A steer of frequency `frequency` (the key `key`) the rows every `step`
+/// s resolve: sampled at least twice a period (Nyquist).
+fn resolved(key: &str, frequency: f64, step: f64) -> Result<(), ParamError> {
+    if 2.0 * frequency * step <= 1.0 {
+        return Ok(());
+    }
+    Err(ParamError::new(
+        key,
+        frequency,
+        ParamReason::Aliased { step, frequency },
+    ))
+}
+
+/// Ramp, sine and sweep steers: their timing and rates checked, and the
+/// frequencies the rows every `step` s resolve.
+fn other_manoeuvre(
+    src: &TomlSource,
+    spec: &ManoeuvreSpec,
+    step: f64,
+) -> Result<Manoeuvre, InputError> {
     Ok(match spec {
         ManoeuvreSpec::RampSteer(r) => {
             check(src, timing(r.speed, r.start, r.end))?;
@@ -518,6 +536,7 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, timing(s.speed, s.start, s.end))?;
             check(src, ParamError::positive("frequency", s.frequency))?;
             check(src, frequency("frequency", s.frequency, 0.0))?;
+            check(src, resolved("frequency", s.frequency, step))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
             check(src, steers("amplitude", s.amplitude, s.amplitude))?;
             Manoeuvre::Sine(*s)
@@ -532,6 +551,7 @@ fn other_manoeuvre(src: &TomlSource, spec: &ManoeuvreSpec) -> Result<Manoeuvre, 
             check(src, frequency("f_start", s.f_start, -1e-12))?;
             check(src, ParamError::positive("f_end", s.f_end))?;
             check(src, frequency("f_end", s.f_end, 0.0))?;
+            check(src, resolved("f_end", s.f_end.max(s.f_start), step))?;
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::Schedule(s) => {

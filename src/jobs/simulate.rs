@@ -10,7 +10,7 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::applicability::applicability;
+use crate::metrics::applicability::{applicability, schedule_applicability};
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
@@ -107,9 +107,18 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         ),
         _ => None,
     };
-    let warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
+    let mut warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
         applicability(m, Some(sc.manoeuvre.speed(0.0)))
     });
+    // A schedule (a replay of no measured run) is a speed someone wrote:
+    // held to what a car on this road can drive.
+    if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {
+        warnings.extend(schedule_applicability(
+            &r.t,
+            &r.speed,
+            sc.integrator.friction,
+        ));
+    }
     let replay = sc.measured.as_ref().map(|run| ReplayGap {
         run: run.path.display().to_string(),
         // A lone replay has no trusted uncertainty: each channel against

@@ -12,6 +12,10 @@
 //! and below [`CRAWL_SPEED`] the yaw rate follows the steer's geometry
 //! (`r ≈ u·δ/l`) with no dynamics for the times to measure. Units: rad,
 //! m/s and % as in [`StepMetrics`].
+//!
+//! A speed schedule is held to what a car on the road can drive
+//! ([`schedule_applicability`]): the 2-DOF model takes the speed as an
+//! input, so a change faster than the road's `μ·g` would run unchecked.
 
 use super::StepMetrics;
 
@@ -45,6 +49,52 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
         out.push(format!(
             "the yaw rate overshoots its steady value by {:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe",
             m.yaw_rate_overshoot
+        ));
+    }
+    out
+}
+
+/// The warnings on a speed schedule (`t`, `speed` at breakpoints, linear
+/// between) for a car whose tyres on this road grip to `mu` (the peak
+/// friction coefficient at static load, road friction scale included): a
+/// speed change faster than `μ·g` (the 2-DOF model takes the speed as
+/// given, so nothing stops it), and the time spent below [`CRAWL_SPEED`].
+/// Empty where the schedule is one the car can drive.
+pub fn schedule_applicability(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let grip = mu * crate::constants::G;
+    let steepest = t
+        .windows(2)
+        .zip(speed.windows(2))
+        .map(|(t, u)| ((u[1] - u[0]) / (t[1] - t[0]), t[0], t[1]))
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+    if let Some((rate, t0, t1)) = steepest.filter(|s| s.0.abs() > grip) {
+        out.push(format!(
+            "the speed {} at {:.1} m/s² ({:.1} g) from t = {t0} s to {t1} s, more than the tyres' grip on this road gives (μ·g = {grip:.1} m/s²): the 2-DOF model takes the speed as given, so the run goes where tyres on this road could not take the car",
+            if rate < 0.0 { "falls" } else { "rises" },
+            rate.abs(),
+            rate.abs() / crate::constants::G
+        ));
+    }
+    // Time below the crawl speed, on the piecewise linear speed.
+    let crawl: f64 = t
+        .windows(2)
+        .zip(speed.windows(2))
+        .map(|(t, u)| {
+            let (lo, hi) = (u[0].abs().min(u[1].abs()), u[0].abs().max(u[1].abs()));
+            let share = if hi < CRAWL_SPEED {
+                1.0
+            } else if lo >= CRAWL_SPEED {
+                0.0
+            } else {
+                (CRAWL_SPEED - lo) / (hi - lo)
+            };
+            share * (t[1] - t[0])
+        })
+        .sum();
+    if crawl > 0.0 {
+        out.push(format!(
+            "the schedule spends {crawl:.1} s below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry, with no handling dynamics to show"
         ));
     }
     out
@@ -116,5 +166,32 @@ mod tests {
             ..moderate()
         };
         assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+    }
+
+    #[test]
+    fn a_schedule_braking_past_the_roads_grip_or_crawling_is_said() {
+        // 40 → 1 m/s in 0.5 s: 78 m/s², 8 g; then 6.5 s at 1 m/s plus the
+        // last 0.064 s of the drop below 5 m/s.
+        let (t, u) = ([0.0, 1.0, 1.5, 8.0], [40.0, 40.0, 1.0, 1.0]);
+        let w = schedule_applicability(&t, &u, 1.0);
+        assert_eq!(w.len(), 2, "{w:?}");
+        assert!(
+            w[0].starts_with("the speed falls at 78.0 m/s² (8.0 g) from t = 1 s to 1.5 s, more than the tyres' grip on this road gives (μ·g = 9.8 m/s²)"),
+            "{w:?}"
+        );
+        let crawl = 6.5 + 0.5 * 4.0 / 39.0;
+        assert!(
+            w[1].starts_with(&format!("the schedule spends {crawl:.1} s below 5 m/s")),
+            "{w:?}"
+        );
+        // At μ·g and above the crawl speed: nothing to say.
+        let g = crate::constants::G;
+        assert!(schedule_applicability(&[0.0, 1.0], &[20.0, 20.0 - g], 1.0).is_empty());
+        // On ice the same 0.5 g braking is past the grip.
+        let w = schedule_applicability(&[0.0, 1.0], &[20.0, 20.0 - 0.5 * g], 0.3);
+        assert!(
+            w[0].starts_with("the speed falls at 4.9 m/s² (0.5 g)"),
+            "{w:?}"
+        );
     }
 }

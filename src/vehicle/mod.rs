@@ -225,6 +225,16 @@ impl VehicleModel {
         )
     }
 
+    /// The larger axle's peak friction coefficient at static load on a
+    /// road of friction scale `mu_scale` (infinite for a tyre with no
+    /// limit): what the tyres can give the car, over its weight.
+    pub fn static_peak_friction(&self, mu_scale: f64) -> f64 {
+        let (front, rear) = self.vehicle.static_axle_loads();
+        let f = self.front.friction_coefficient(0.5 * front, mu_scale);
+        let r = self.rear.friction_coefficient(0.5 * rear, mu_scale);
+        f.max(r)
+    }
+
     /// Textbook steady-state yaw-rate gain r/δ = u/(l + K·u²) of the linear
     /// bicycle model, 1/s.
     pub fn linear_yaw_rate_gain(&self, speed: f64) -> f64 {

@@ -228,3 +228,88 @@ fn a_pressure_in_kpa_or_bar_is_refused_at_its_cell() {
     let e = refused(&o, &fit);
     assert!(e.contains("rig.csv:2:4: column `pressure`: 220 Pa"), "{e}");
 }
+
+/// A 40 Hz sweep written every 0.02 s: rows at 50 Hz drew the steer as
+/// slow beating and a yaw rate that decays, without a word.
+#[test]
+fn simulate_refuses_rows_too_coarse_for_the_steers_frequency() {
+    let manoeuvre = "[manoeuvre]\nkind = \"sweep\"\nspeed = 22.2\namplitude = 0.02\nf_start = 0.1\nf_end = 40.0\nstart = 1.0\nend = 6.0\n\n[simulation]\nstep = 0.02\n";
+    let dir = scenario(VEHICLE, GIM, manoeuvre);
+    let path = dir.path().join("scenario.toml");
+    let o = run(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("`manoeuvre.f_end` = 40: the rows every 0.02 s ([simulation] step) sample at 50 Hz, less than twice this frequency: the written steer and response would alias (a 40 Hz sweep drawn as slow beating); set step to at most 0.0125 s, or 0.0025 s to draw the waveform"),
+        "{e}"
+    );
+    assert!(e.contains("scenario.toml:"), "{e}");
+    assert!(!dir.path().join("out").exists());
+    // At the Nyquist step it runs; a sine at 30 Hz is held to the same rule.
+    let at = manoeuvre.replace("step = 0.02", "step = 0.0125");
+    let dir = scenario(VEHICLE, GIM, &at);
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let sine = "[manoeuvre]\nkind = \"sine\"\nspeed = 22.2\namplitude = 0.02\nfrequency = 30.0\nstart = 1.0\nend = 3.0\n\n[simulation]\nstep = 0.02\n";
+    let dir = scenario(VEHICLE, GIM, sine);
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(
+        stderr(&o).contains("`manoeuvre.frequency` = 30: the rows every 0.02 s"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// A schedule dropping from 40 to 1 m/s in 0.5 s (8 g) and crawling for
+/// 6.5 s ran without a word: the model takes the speed as given.
+#[test]
+fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
+    let head: String = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
+        .unwrap()
+        .lines()
+        .take_while(|l| !l.starts_with("[manoeuvre]"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let head = head.replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let schedule = |speed: &str| {
+        format!("{head}[manoeuvre]\nkind = \"schedule\"\nt = [0.0, 1.0, 1.5, 8.0]\nsteer = [0.0, 0.0, 0.02, 0.02]\nspeed = {speed}\n")
+    };
+    let said = |text: String| {
+        let dir = scratch(&[("s.toml", &text)]);
+        let o = run(&[
+            "simulate",
+            dir.path().join("s.toml").to_str().unwrap(),
+            "--out",
+            dir.path().join("out").to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        stdout(&o)
+    };
+    let s = said(schedule("[40.0, 40.0, 1.0, 1.0]"));
+    assert!(
+        s.contains("  warning: the speed falls at 78.0 m/s² (8.0 g) from t = 1 s to 1.5 s, more than the tyres' grip on this road gives (μ·g = 9.8 m/s²)"),
+        "{s}"
+    );
+    assert!(
+        s.contains("  warning: the schedule spends 6.6 s below 5 m/s (18 km/h)"),
+        "{s}"
+    );
+    // Braking at 0.8 g to 25 m/s: a schedule the sedan can drive.
+    let s = said(schedule("[40.0, 40.0, 36.0, 25.0]"));
+    assert!(!s.contains("warning"), "{s}");
+}

@@ -224,17 +224,28 @@ fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -
         panel("lateral acceleration", "ay [m/s²]", "model", &h.ay),
         panel("sideslip", "β [deg]", "model", &deg(&h.beta)),
     ];
+    // A speed that changes (a schedule, a replay) drives the response: its
+    // trace goes under the steer.
+    let (lo, hi) = h
+        .speed
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &u| (a.min(u), b.max(u)));
+    let speed_varies = hi - lo > 1e-6 * hi.abs().max(1.0);
+    if speed_varies {
+        panels.insert(1, panel("forward speed", "u [m/s]", "", &h.speed));
+    }
     if let Some(run) = measured {
+        let k = usize::from(speed_varies);
         let add = |p: &mut Panel, y: &[f64]| {
             p.series
                 .push(Series::line("measured", &run.t, y, 1).styled(Style::Dashed));
         };
-        add(&mut panels[1], &deg(&run.yaw_rate));
+        add(&mut panels[1 + k], &deg(&run.yaw_rate));
         if let Some(ay) = &run.ay {
-            add(&mut panels[2], ay);
+            add(&mut panels[2 + k], ay);
         }
         if let Some(b) = &run.beta {
-            add(&mut panels[3], &deg(b));
+            add(&mut panels[3 + k], &deg(b));
         }
     }
     Figure::stack(panels)

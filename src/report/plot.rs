@@ -195,33 +195,54 @@ impl Figure {
         let rows = self.panels.len().div_ceil(self.columns).max(1);
         root.fill(&WHITE)?;
         let areas = root.split_evenly((rows, self.columns));
-        for (area, panel) in areas.iter().zip(&self.panels) {
-            draw_panel(area, panel)?;
+        // A column with a key anywhere keeps the key's room in every panel,
+        // so that its panels share one x extent (a steer above a yaw rate
+        // is read across by eye).
+        let keyed_columns: Vec<bool> = (0..self.columns)
+            .map(|c| {
+                self.panels
+                    .iter()
+                    .skip(c)
+                    .step_by(self.columns)
+                    .any(Panel::keyed)
+            })
+            .collect();
+        for (k, (area, panel)) in areas.iter().zip(&self.panels).enumerate() {
+            draw_panel(area, panel, keyed_columns[k % self.columns])?;
         }
         root.present()?;
         Ok(())
     }
 }
 
+impl Panel {
+    /// The panel has a key (a labelled series or a colour scale).
+    fn keyed(&self) -> bool {
+        self.series
+            .iter()
+            .any(|s| !s.label.is_empty() || s.scale.is_some())
+    }
+}
+
 /// One panel: the chart on the left, its legend and colour bar in a column
-/// of their own on the right, so that no key hides data.
+/// of their own on the right, so that no key hides data; that column is
+/// kept empty where `key_room` asks it (another panel of the stack has a
+/// key).
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
+    key_room: bool,
 ) -> Result<(), Box<dyn std::error::Error>>
 where
     DB::ErrorType: 'static,
 {
-    let keyed = panel
-        .series
-        .iter()
-        .any(|s| !s.label.is_empty() || s.scale.is_some());
+    let keyed = panel.keyed();
     let width = area.dim_in_pixel().0 as i32;
     // The key beside the chart, or below it when the panel is too narrow
     // to give up a column.
-    let (plot, side, below) = if keyed && width > 2 * SIDE {
+    let (plot, side, below) = if (keyed || key_room) && width > 2 * SIDE {
         let (p, s) = area.split_horizontally(width - SIDE);
-        (p, Some(s), None)
+        (p, keyed.then_some(s), None)
     } else if keyed {
         let height = area.dim_in_pixel().1 as i32;
         let strip = super::legend::below_height(&panel.series, width - 16).min(height / 2);
@@ -424,6 +445,38 @@ mod tests {
             .collect();
         assert_eq!(labels.len(), 2, "{svg}");
         assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
+    }
+
+    #[test]
+    fn stacked_panels_share_one_time_axis_whether_or_not_they_have_a_key() {
+        // A steer without a key above a yaw rate with one (simulate's
+        // response.png): t = 10 s falls at one x in both.
+        let t: Vec<f64> = (0..=10).map(f64::from).collect();
+        let y: Vec<f64> = t.iter().map(|t| 0.05 * t).collect();
+        let panel = |label: &str| Panel {
+            series: vec![Series::line(label, &t, &y, 0)],
+            x_range: Some((0.0, 10.0)),
+            ..Panel::default()
+        };
+        let fig = Figure::stack(vec![panel(""), panel("model")]);
+        let svg = fig.svg(Path::new("test.svg")).unwrap();
+        let tens: Vec<f64> = texts(&svg)
+            .into_iter()
+            .filter(|(_, t)| t == "10")
+            .map(|(x, _)| x)
+            .collect();
+        assert_eq!(tens.len(), 2, "{svg}");
+        assert!((tens[0] - tens[1]).abs() < 0.5, "{tens:?}");
+        // Alone, an unkeyed panel takes the whole width.
+        let alone = Figure::stack(vec![panel("")])
+            .svg(Path::new("t.svg"))
+            .unwrap();
+        let ten = texts(&alone)
+            .into_iter()
+            .find(|(_, t)| t == "10")
+            .unwrap()
+            .0;
+        assert!(ten > tens[0] + 0.5 * f64::from(SIDE), "{ten} {tens:?}");
     }
 
     #[test]

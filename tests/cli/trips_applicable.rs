@@ -289,7 +289,9 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
     let schedule = |speed: &str| {
         format!("{head}[manoeuvre]\nkind = \"schedule\"\nt = [0.0, 1.0, 1.5, 8.0]\nsteer = [0.0, 0.0, 0.02, 0.02]\nspeed = {speed}\n")
     };
-    let said = |text: String| {
+    // The terminal, and the height of response.png (260 px a panel, read
+    // from the PNG's IHDR).
+    let said_drawn = |text: String| {
         let dir = scratch(&[("s.toml", &text)]);
         let o = run(&[
             "simulate",
@@ -298,8 +300,11 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
             dir.path().join("out").to_str().unwrap(),
         ]);
         assert!(o.status.success(), "{}", stderr(&o));
-        stdout(&o)
+        let png = fs::read(dir.path().join("out/response.png")).unwrap();
+        let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
+        (stdout(&o), height)
     };
+    let said = |text: String| said_drawn(text).0;
     let s = said(schedule("[40.0, 40.0, 1.0, 1.0]"));
     assert!(
         s.contains("  warning: the speed falls at 78.0 m/s² (8.0 g) from t = 1 s to 1.5 s, more than the tyres' grip on this road gives (μ·g = 9.8 m/s²)"),
@@ -310,6 +315,9 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
         "{s}"
     );
     // Braking at 0.8 g to 25 m/s: a schedule the sedan can drive.
-    let s = said(schedule("[40.0, 40.0, 36.0, 25.0]"));
+    let (s, height) = said_drawn(schedule("[40.0, 40.0, 36.0, 25.0]"));
     assert!(!s.contains("warning"), "{s}");
+    // The speed it drove is drawn under the steer: five panels, not four.
+    assert_eq!(height, 5 * 260);
+    assert_eq!(said_drawn(schedule("[25.0, 25.0, 25.0, 25.0]")).1, 4 * 260);
 }

@@ -56,6 +56,26 @@ fn suggest_variant(message: &str) -> String {
         .unwrap_or_else(|| message.to_string())
 }
 
+/// serde's type names in `message` said as a TOML writer says them
+/// (`expected f64` → `expected a number`, `expected struct Vehicle` → `expected
+/// a table`, `expected variant identifier` → `expected a name in quotes`).
+fn plain_types(message: &str) -> String {
+    let Some((head, expected)) = message.rsplit_once(", expected ") else {
+        return message.to_string();
+    };
+    let word = match expected {
+        "f64" | "f32" => "a number",
+        "i8" | "i16" | "i32" | "i64" | "u8" | "u16" | "u32" | "u64" | "usize" | "isize" => {
+            "a whole number"
+        }
+        "variant identifier" => "a name in quotes",
+        e if e.starts_with("struct ") || e.starts_with("a map") => "a table",
+        e if e.starts_with("a sequence") || e.starts_with("a tuple") => "an array [ … ]",
+        _ => return message.to_string(),
+    };
+    format!("{head}, expected {word}")
+}
+
 /// The value a serde message says was of the wrong type or length
 /// (`invalid type: string "fast", expected f64`, `invalid length 13, …`).
 enum Offender {
@@ -155,10 +175,27 @@ impl TomlSource {
 
     /// Deserialises the whole file.
     pub fn parse<T: DeserializeOwned>(&self) -> Result<T, InputError> {
-        toml::from_str(&self.text).map_err(|e| self.toml_error(&e))
+        // A name's place holding no name (`kind = 3`): the names are found
+        // by reading the file again with a string there, which serde
+        // answers with its list.
+        let names = |at: std::ops::Range<usize>| {
+            let mut probe = self.text.clone();
+            probe.replace_range(at, "\"?\"");
+            let e = toml::from_str::<T>(&probe).err()?;
+            let rest = e
+                .message()
+                .trim()
+                .strip_prefix("unknown variant `?`, expected ")?;
+            Some(rest.trim_start_matches("one of ").to_string())
+        };
+        toml::from_str(&self.text).map_err(|e| self.toml_error(&e, &names))
     }
 
-    fn toml_error(&self, e: &toml::de::Error) -> InputError {
+    fn toml_error(
+        &self,
+        e: &toml::de::Error,
+        names: &dyn Fn(std::ops::Range<usize>) -> Option<String>,
+    ) -> InputError {
         let mut message = e.message().trim().to_string();
         // toml says nothing of some characters (a lone carriage return):
         // name the one found.
@@ -190,6 +227,7 @@ impl TomlSource {
             Some(rest) => format!("invalid type: a date, time or table, {rest}"),
             None => message,
         };
+        let message = plain_types(&message);
         // A value of the wrong type: toml's message names the value, the
         // key is named here; a value that does not parse, by the key
         // written on its line.
@@ -207,6 +245,13 @@ impl TomlSource {
                 Some((k, at)) => (Some(at), Some(k)),
                 None => (span, None),
             },
+        };
+        let message = match (&span, message.strip_suffix(", expected a name in quotes")) {
+            (Some(at), Some(head)) => match names(at.clone()) {
+                Some(list) => format!("{head}, expected one of {list}"),
+                None => message,
+            },
+            _ => message,
         };
         match key {
             Some(key) => InputError::Key {
@@ -253,7 +298,7 @@ impl TomlSource {
         o: &Offender,
         within: Option<std::ops::Range<usize>>,
     ) -> Option<(String, std::ops::Range<usize>)> {
-        self.find(&mut |path, key, table, item| {
+        self.find(&mut |path, _, _, item| {
             let at = item.span()?;
             let inside = within
                 .as_ref()
@@ -261,9 +306,9 @@ impl TomlSource {
             if !inside || item.as_table_like().is_some() {
                 return None;
             }
+            // At the value, as an error with toml's own span is.
             if o.is(item) {
-                let key_span = table.get_key_value(key).and_then(|(k, _)| k.span());
-                return Some((path.to_string(), key_span.unwrap_or(at)));
+                return Some((path.to_string(), at));
             }
             // A wrong element of an array (a string among a tyre's
             // coefficients): the element, at its own place.
@@ -313,19 +358,32 @@ impl TomlSource {
         walk(doc.as_table(), "", visit)
     }
 
-    /// Byte span of the key at dotted `key_path` (`vehicle.mass`,
-    /// `lateral.p[3]` looks up `lateral.p`).
+    /// Byte span of the value at dotted `key_path` (`vehicle.mass`), of
+    /// an element of an array (`lateral.p[3]`), or of the key where its
+    /// value is a table: an error points at what is wrong, as toml's own
+    /// errors of type do.
     pub(crate) fn key_span(&self, key_path: &str) -> Option<std::ops::Range<usize>> {
         let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
         let mut table: &dyn toml_edit::TableLike = doc.as_table();
-        let parts: Vec<&str> = key_path
+        let parts: Vec<(&str, Option<usize>)> = key_path
             .split('.')
-            .map(|p| p.split('[').next().unwrap_or(p))
+            .map(|p| match p.split_once('[') {
+                Some((k, i)) => (k, i.trim_end_matches(']').parse().ok()),
+                None => (p, None),
+            })
             .collect();
-        for (i, part) in parts.iter().enumerate() {
+        for (i, &(part, index)) in parts.iter().enumerate() {
             let (key, item) = table.get_key_value(part)?;
             if i + 1 == parts.len() {
-                return key.span().or_else(|| item.span());
+                let value = item.as_value();
+                let element = index
+                    .and_then(|k| value?.as_array()?.get(k))
+                    .and_then(|v| v.span());
+                let value = value.and_then(|v| v.span());
+                return element
+                    .or(value)
+                    .or_else(|| key.span())
+                    .or_else(|| item.span());
             }
             table = item.as_table_like()?;
         }

@@ -221,17 +221,17 @@ fn diagnose_refuses_bad_campaigns_clearly() {
         (
             "yaw_inertia = 2315.0",
             "yaw_inertia = 23150000.0",
-            "vehicle.toml:3:1: `vehicle.yaw_inertia` = 23150000: yaw_inertia / (mass·a·b) = 8.162e3, outside 0.1–10",
+            "vehicle.toml:3:15: `vehicle.yaw_inertia` = 23150000: yaw_inertia / (mass·a·b) = 8.162e3, outside 0.1–10",
         ),
         (
             "mass = 1530.0",
             "mass = 1e30",
-            "vehicle.toml:2:1: `vehicle.mass` = 1e30: above 1e6 kg",
+            "vehicle.toml:2:8: `vehicle.mass` = 1e30: above 1e6 kg",
         ),
         (
             "b = 1.67",
             "b = 1670.0",
-            "vehicle.toml:5:1: `vehicle.b` = 1670: above 30 m",
+            "vehicle.toml:5:5: `vehicle.b` = 1670: above 30 m",
         ),
     ] {
         let v = VEHICLE.replace(from, to);

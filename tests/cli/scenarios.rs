@@ -143,7 +143,7 @@ fn missing_key_is_named() {
 fn negative_mass_is_refused_with_file_line_and_value() {
     let dir = scenario(&VEHICLE.replace("1530.0", "-1530.0"), GIM, STEP);
     let e = simulate_err(dir.path());
-    assert!(e.contains("scenario.toml:2:1"), "{e}");
+    assert!(e.contains("scenario.toml:2:8"), "{e}");
     assert!(
         e.contains("vehicle.mass") && e.contains("-1530") && e.contains("positive"),
         "{e}"

@@ -479,7 +479,7 @@ fn an_absurd_step_steer_speed_is_refused_at_its_own_key() {
         let dir = scenario(VEHICLE, GIM, &step);
         let e = simulate_err(dir.path());
         assert!(
-            e.contains("scenario.toml:15:1: `manoeuvre.speed` = "),
+            e.contains("scenario.toml:15:9: `manoeuvre.speed` = "),
             "{e}"
         );
         assert!(

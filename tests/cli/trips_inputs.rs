@@ -32,7 +32,7 @@ fn an_absurd_speed_is_refused_for_every_manoeuvre_kind() {
         for speed in ["1000", "1e308"] {
             let e = refused_manoeuvre(&manoeuvre(kind, &format!("speed = {speed}\n{rest}")));
             assert!(
-                e.contains(&format!("scenario.toml:15:1: `manoeuvre.speed` = {speed}: must lie in (0, 150]: a manoeuvre on a road runs below 150 m/s")),
+                e.contains(&format!("scenario.toml:15:9: `manoeuvre.speed` = {speed}: must lie in (0, 150]: a manoeuvre on a road runs below 150 m/s")),
                 "{kind}: {e}"
             );
         }
@@ -47,17 +47,17 @@ fn a_steer_frequency_above_50_hz_is_refused_at_its_key() {
         (
             "sine",
             "speed = 20\namplitude = 0.02\nfrequency = 1e6\nend = 5.0\n",
-            "scenario.toml:17:1: `manoeuvre.frequency` = 1000000: must lie in (0, 50]",
+            "scenario.toml:17:13: `manoeuvre.frequency` = 1000000: must lie in (0, 50]",
         ),
         (
             "sweep",
             "speed = 20\namplitude = 0.02\nf_start = 0\nf_end = 1000\nend = 5.0\n",
-            "scenario.toml:18:1: `manoeuvre.f_end` = 1000: must lie in (0, 50]",
+            "scenario.toml:18:9: `manoeuvre.f_end` = 1000: must lie in (0, 50]",
         ),
         (
             "sweep",
             "speed = 20\namplitude = 0.02\nf_start = 60\nf_end = 10\nend = 5.0\n",
-            "scenario.toml:17:1: `manoeuvre.f_start` = 60: must lie in [0, 50]",
+            "scenario.toml:17:11: `manoeuvre.f_start` = 60: must lie in [0, 50]",
         ),
     ];
     for (kind, rest, said) in cases {
@@ -84,7 +84,7 @@ fn a_ramp_steer_run_too_long_is_refused_naming_the_steer_it_reaches() {
     };
     let e = ramp("0.7");
     assert!(
-        e.contains("scenario.toml:16:1: `manoeuvre.rate` = 0.7: the ramp reaches 3.5 rad (201°) by `end` = 6 s, beyond ±45°"),
+        e.contains("scenario.toml:16:8: `manoeuvre.rate` = 0.7: the ramp reaches 3.5 rad (201°) by `end` = 6 s, beyond ±45°"),
         "{e}"
     );
     assert!(e.contains("lower `rate` or end the run sooner"), "{e}");
@@ -106,7 +106,8 @@ fn a_mistyped_manoeuvre_kind_is_answered_with_the_nearest_name() {
 }
 
 /// `start = 1970-01-01` (a TOML date) was put at the `[manoeuvre]` header
-/// as "invalid type: map, expected f64", naming no key.
+/// as "invalid type: map, expected f64", naming no key; it is put at the
+/// value, as every other wrong value is, in a TOML writer's words.
 #[test]
 fn a_date_where_a_number_is_meant_is_refused_at_its_key() {
     let e = refused_manoeuvre(&manoeuvre(
@@ -114,7 +115,7 @@ fn a_date_where_a_number_is_meant_is_refused_at_its_key() {
         "speed = 20\nsteer = 0.02\nstart = 1970-01-01\n",
     ));
     assert!(
-        e.contains("scenario.toml:17:1: `manoeuvre.start`: invalid type: a date, time or table, expected f64"),
+        e.contains("scenario.toml:17:9: `manoeuvre.start`: invalid type: a date, time or table, expected a number"),
         "{e}"
     );
 }
@@ -127,11 +128,11 @@ fn a_pac89_form_of_the_wrong_type_or_name_is_refused_at_its_key() {
     let cases = [
         (
             "form = 1",
-            "tyre.toml:7:1: `form`: invalid type: integer `1`, expected a string",
+            "tyre.toml:7:8: `form`: invalid type: integer `1`, expected a string",
         ),
         (
             "form = \"adams-pac98\"",
-            "tyre.toml:7:1: `form`: unknown variant `adams-pac98` (did you mean `adams-pac89`?)",
+            "tyre.toml:7:8: `form`: unknown variant `adams-pac98` (did you mean `adams-pac89`?)",
         ),
     ];
     for (form, said) in cases {
@@ -174,15 +175,15 @@ fn a_tyre_array_of_the_wrong_type_or_length_is_refused_at_its_key_with_its_lengt
     let cases = [
         (
             good.replace("[1.65,", "[\"1.65\","),
-            "tyre.toml:8:6: `a[0]`: invalid type: string \"1.65\", expected f64",
+            "tyre.toml:8:6: `a[0]`: invalid type: string \"1.65\", expected a number",
         ),
         (
             good.replace("[1.65,", "[1.65, 9.0,"),
-            "tyre.toml:8:1: `a`: invalid length 15, expected an array of length 14",
+            "tyre.toml:8:5: `a`: invalid length 15, expected an array of length 14",
         ),
         (
             good.replace("[1.65, -34.0,", "[1.65,"),
-            "tyre.toml:8:1: `a`: invalid length 13, expected an array of length 14",
+            "tyre.toml:8:5: `a`: invalid length 13, expected an array of length 14",
         ),
     ];
     for (a, said) in cases {
@@ -252,4 +253,37 @@ fn a_crlf_csv_reports_the_true_line() {
             "{ending:?}: {e}"
         );
     }
+}
+
+/// `speed = "fast"` said `expected f64`, `vehicle = 3` said `expected struct
+/// Vehicle` and `kind = 3` said `expected variant identifier` without the
+/// kinds: serde's words, not a TOML writer's.
+#[test]
+fn a_value_of_the_wrong_type_is_answered_in_a_toml_writers_words() {
+    let kinds = "expected one of `step-steer`, `step_steer`, `ramp-steer`, `ramp_steer`, `sine`, `sweep`, `replay`, `schedule`";
+    let e = refused_manoeuvre("[manoeuvre]\nkind = 3\n");
+    assert!(
+        e.contains(&format!(
+            "`manoeuvre.kind`: invalid type: integer `3`, {kinds}"
+        )),
+        "{e}"
+    );
+    let e = refused_manoeuvre(&manoeuvre("step-steer", "speed = \"fast\"\nsteer = 0.02\n"));
+    assert!(
+        e.contains("`manoeuvre.speed`: invalid type: string \"fast\", expected a number"),
+        "{e}"
+    );
+    let dir = scenario(
+        &format!(
+            "vehicle = 3\n{}",
+            VEHICLE.replace("[vehicle]", "[not_vehicle]")
+        ),
+        GIM,
+        &manoeuvre("step-steer", "speed = 20\nsteer = 0.02\n"),
+    );
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains(":1:11: `vehicle`: invalid type: integer `3`, expected a table"),
+        "{e}"
+    );
 }

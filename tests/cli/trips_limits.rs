@@ -64,22 +64,22 @@ fn a_tyre_file_in_millimetres_or_kilonewtons_is_refused_at_its_key() {
     let cases = [
         (
             "model = \"gim\"\ncornering_stiffness = 57296.0\ncontact_length = 180\n",
-            "tyre.toml:3:1: `contact_length` = 180: must lie in (0, 1]: no tyre's contact patch is longer than 1 m",
+            "tyre.toml:3:18: `contact_length` = 180: must lie in (0, 1]: no tyre's contact patch is longer than 1 m",
             "is the value in millimetres? (180 mm is 0.18)",
         ),
         (
             "model = \"gim\"\ncornering_stiffness = 57296.0\ncontact_length = 0.18\nreference_load = 4\n",
-            "tyre.toml:4:1: `reference_load` = 4: must lie in (100, 100000]",
+            "tyre.toml:4:18: `reference_load` = 4: must lie in (100, 100000]",
             "the key is in N: is the value in kN? (4 kN is 4000)",
         ),
         (
             "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 30\n",
-            "tyre.toml:3:1: `pneumatic_trail` = 30: must lie within ±0.5",
+            "tyre.toml:3:19: `pneumatic_trail` = 30: must lie within ±0.5",
             "is the value in millimetres? (30 mm is 0.03)",
         ),
         (
             "model = \"gim\"\ncornering_stiffness = 5e7\ncontact_length = 0.18\n",
-            "tyre.toml:2:1: `cornering_stiffness` = 50000000: must lie in (0, 2000000]",
+            "tyre.toml:2:23: `cornering_stiffness` = 50000000: must lie in (0, 2000000]",
             "no tyre's cornering stiffness reaches 2e6 N/rad",
         ),
     ];

@@ -167,7 +167,8 @@ fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
         let file = dir.path().join("scenario.toml");
         let line = line_of(&file, key);
         let e = simulate_err(dir.path());
-        let expected = format!("{}:{line}:1: {said}", file.display());
+        // At the value: after `key = `.
+        let expected = format!("{}:{line}:{}: {said}", file.display(), key.len() + 4);
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
     }
     // A small sine is a manoeuvre: run.
@@ -342,7 +343,11 @@ fn a_schedule_s_short_column_is_refused_at_its_key() {
         let file = dir.path().join("scenario.toml");
         let line = line_of(&file, key);
         let e = simulate_err(dir.path());
-        let expected = format!("{}:{line}:1: `manoeuvre.{key}`: {said}", file.display());
+        let expected = format!(
+            "{}:{line}:{}: `manoeuvre.{key}`: {said}",
+            file.display(),
+            key.len() + 4
+        );
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
     }
 }
@@ -383,7 +388,14 @@ fn a_swept_steer_keeps_to_the_road_wheel_limit_of_simulate() {
         let e = fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path());
         let file = dir.path().join("sweep.toml");
         let line = line_of(&file, axis);
-        (e, format!("{}:{line}:1: `sweep.{axis}` = ", file.display()))
+        (
+            e,
+            format!(
+                "{}:{line}:{}: `sweep.{axis}` = ",
+                file.display(),
+                axis.len() + 4
+            ),
+        )
     };
     for steer in ["1.2", "[0.1, 1.2]", "{ from = 0.0, to = 1.2, step = 0.6 }"] {
         let (e, at) = sweep_err("steer", steer);

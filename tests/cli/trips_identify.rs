@@ -214,3 +214,120 @@ fn unconverged_stages_warn(report: &serde_json::Value, said: &str) -> usize {
     );
     unconverged
 }
+
+/// Rig data at 2, 4 and 6 kN, two cambers (0, 0.03 rad) and two
+/// pressures (180, 220 kPa), with `mz`: levels to select.
+fn rig_with_levels() -> String {
+    let mut s = String::from("fz,alpha,camber,pressure,fy,mz\n");
+    for p in [180e3, 220e3] {
+        for camber in [0.0, 0.03] {
+            for fz in [2000.0, 4000.0, 6000.0] {
+                for k in -10..=10 {
+                    let alpha = 0.02 * f64::from(k);
+                    let mu = 1.4 - 0.5 * camber - (p - 200e3) * 1e-6;
+                    let fy = fz * (mu * (12.0 * alpha).atan()).sin();
+                    s += &format!("{fz},{alpha},{camber},{p},{fy:.3},{:.4}\n", 0.02 * fy);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// The text of the first line of `text` between the first pair of
+/// backquotes.
+fn quoted_command(text: &str) -> String {
+    let line = text.lines().next().unwrap();
+    let start = line.find('`').unwrap() + 1;
+    let len = line[start..].find('`').unwrap();
+    line[start..start + len].to_string()
+}
+
+/// The header named `--model gim --seed 1 --hold …` only: without the
+/// `--pressure`, `--camber`, `--local` and `--bin-deg` of the fit, the
+/// command it stated fitted other data.
+#[test]
+fn the_header_states_every_option_that_changes_the_fit_and_repeats_it() {
+    let dir = scratch(&[("rig.csv", &rig_with_levels())]);
+    let out = dir.path().join("g.toml");
+    let args = [
+        "--seed",
+        "3",
+        "--pressure",
+        "220000",
+        "--camber",
+        "0.03",
+        "--local",
+        "gn",
+        "--bin-deg",
+        "0.5",
+        "--hold",
+        "friction_decay=0.1",
+    ];
+    let o = identify_with(dir.path(), "gim", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&out).unwrap();
+    let rig = dir.path().join("rig.csv");
+    let command = format!(
+        "handling identify {} --model gim --seed 3 --pressure 220000 --camber 0.03 --local gn --bin-deg 0.5 --bin-kappa 0.0025 --hold friction_decay=0.1",
+        rig.display()
+    );
+    assert_eq!(quoted_command(&text), command);
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["options"],
+        serde_json::json!({
+            "command": command, "model": "gim", "seed": 3, "pressure": 220000.0,
+            "camber": 0.03, "local": "gn", "bin_deg": 0.5, "bin_kappa": 0.0025,
+            "hold": [{"name": "friction_decay", "value": 0.1}],
+        })
+    );
+    // The stated command, run, writes the same tyre.
+    let again = dir.path().join("again.toml");
+    let words: Vec<&str> = command.split(' ').skip(1).collect();
+    let o = bin()
+        .args(&words)
+        .args(["--out", again.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let body = |t: &str| t.lines().skip(1).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(&fs::read_to_string(&again).unwrap()), body(&text));
+    // A fit of the other levels is another tyre: the options mattered.
+    let other = dir.path().join("other.toml");
+    let o = identify_with(dir.path(), "gim", &args[..4], &other);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ne!(body(&fs::read_to_string(&other).unwrap()), body(&text));
+}
+
+/// A staged fit's .tir named its command only with a hold, and then
+/// without its start, template, iteration cap and bin.
+#[test]
+fn an_mf_tir_states_the_command_that_repeats_its_fit() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("m.tir");
+    let args = [
+        "--start",
+        "paper",
+        "--max-iterations",
+        "40",
+        "--bin-deg",
+        "0",
+    ];
+    let o = identify_with(dir.path(), "mf62", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let command = format!(
+        "handling identify {} --model mf62 --start paper --max-iterations 40 --bin-deg 0",
+        dir.path().join("rig.csv").display()
+    );
+    let tir = fs::read_to_string(&out).unwrap();
+    assert_eq!(quoted_command(&tir), command);
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["options"],
+        serde_json::json!({
+            "command": command, "model": "mf62", "bin_deg": 0.0, "start": "paper",
+            "template": null, "max_iterations": 40, "hold": [],
+        })
+    );
+}

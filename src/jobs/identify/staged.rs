@@ -30,6 +30,9 @@ pub struct StagedJob {
     pub report: StagedReport,
     /// The data file.
     pub data: String,
+    /// The options that change the fit, and the command that repeats it.
+    #[serde(rename = "options")]
+    pub recorded: super::RecordedOptions,
     /// Samples and rows fitted.
     pub rows: RowAccount,
     /// The coefficients held with `--hold` (each written at its value).
@@ -209,6 +212,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         held,
         report: id.report,
         data: o.data.display().to_string(),
+        recorded: o.recorded(),
         rows: prepared.account,
         sigma_pooled,
         round_trip_relative_difference: back,
@@ -219,23 +223,12 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     })
 }
 
-/// The comment lines that open a .tir fitted with `--hold`: the command
-/// and each coefficient held at the value given, not fitted (empty
-/// without a hold). A `$` line is a comment wherever it stands.
+/// The comment lines that open a written .tir: the command that repeats
+/// the fit (every option that changes it) and each coefficient held at
+/// the value given, not fitted. A `$` line is a comment wherever it
+/// stands.
 fn held_comment(o: &Options) -> String {
-    if o.hold.is_empty() {
-        return String::new();
-    }
-    let holds: String = o
-        .hold
-        .iter()
-        .map(|(n, v)| format!(" --hold {n}={}", exact(*v)))
-        .collect();
-    let mut s = format!(
-        "$ identified by `handling identify {} --model {}{holds}`\n",
-        o.data.display(),
-        o.model
-    );
+    let mut s = format!("$ identified by `{}`\n", o.command());
     for (n, v) in &o.hold {
         s += &format!(
             "$ held: {n} = {}: given with --hold, not fitted (SI units)\n",

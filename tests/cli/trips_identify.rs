@@ -331,3 +331,68 @@ fn an_mf_tir_states_the_command_that_repeats_its_fit() {
         })
     );
 }
+
+/// `--hold friction=50` was fitted and written, and `tyre-eval` then
+/// refused the file; a stiffness held at 1 N/rad drove the contact length
+/// to thousands of metres, written alike.
+#[test]
+fn no_file_is_written_that_the_tyre_reader_refuses() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let cases = [
+        (
+            "gim",
+            "friction=50",
+            "t.toml",
+            "`--hold friction` = 50: must lie in (0, 5]: no tyre's friction coefficient reaches 5",
+        ),
+        (
+            "unitire",
+            "lateral.p2=-1",
+            "u.toml",
+            "`--hold lateral.p2` = -1: must be positive",
+        ),
+        (
+            "mf61",
+            "FNOMIN=4",
+            "m.tir",
+            "`--hold FNOMIN` = 4: must lie in (100, 100000]: a tyre carries 100 N",
+        ),
+    ];
+    for (model, hold, out, said) in cases {
+        let out = dir.path().join(out);
+        let e = refused(
+            &identify_with(dir.path(), model, &["--hold", hold], &out),
+            &out,
+        );
+        assert!(e.contains(said), "{model}: {e}");
+        // Refused before the data are read: nothing is fitted.
+        assert!(!e.contains("rig.csv"), "{e}");
+    }
+    // A value within the limits that drives another past them.
+    let out = dir.path().join("k.toml");
+    let args = ["--hold", "cornering_stiffness=1000"];
+    let e = refused(&identify_with(dir.path(), "gim", &args, &out), &out);
+    assert!(
+        e.contains("rig.csv: the fitted tyre is not written, as the tyre readers (tyre-eval, simulate) would refuse it (the fit ran with the values given with --hold, which may have driven it there): `contact_length` = "),
+        "{e}"
+    );
+    assert!(
+        e.contains(": must lie in (0, 1]: no tyre's contact patch is longer than 1 m"),
+        "{e}"
+    );
+    // Within them, the file written is one the reader takes.
+    let out = dir.path().join("ok.toml");
+    let args = ["--hold", "friction=1.2"];
+    let o = identify_with(dir.path(), "gim", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let points = dir.path().join("points.csv");
+    fs::write(&points, "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,10\n").unwrap();
+    let forces = dir.path().join("forces.csv");
+    let e = bin()
+        .args(["tyre-eval", out.to_str().unwrap(), points.to_str().unwrap()])
+        .args(["--out", forces.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(e.status.success(), "{}", stderr(&e));
+    assert!(fs::read_to_string(&forces).unwrap().lines().count() == 2);
+}

@@ -16,17 +16,18 @@ mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod outputs;
 mod summary;
+mod written;
 use outputs::{output_lock, outputs};
 mod figures;
 mod holds;
 pub use holds::Held;
-use holds::{held_by_fits, held_file_lines, holds_of};
+use holds::{held_by_fits, holds_of};
 mod staged;
 mod two_stage;
 pub use two_stage::{TwoStageReport, Written};
 mod staged_figure;
 
-use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
+use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
 use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
@@ -123,7 +124,7 @@ impl Options {
             for (name, _) in &self.hold {
                 crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
             }
-            return Ok(());
+            return holds::check_hold_values(None, &self.hold);
         };
         let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
         for (name, _) in &self.hold {
@@ -136,7 +137,7 @@ impl Options {
                 .into());
             }
         }
-        Ok(())
+        holds::check_hold_values(Some(model), &self.hold)
     }
 }
 
@@ -184,6 +185,10 @@ pub struct SwarmReport {
     /// The tyre written (every channel fitted).
     #[serde(skip)]
     pub tyre: Tyre,
+    /// The text of the tyre file, its header included, checked to be read
+    /// back by the tyre reader.
+    #[serde(skip)]
+    pub file: String,
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
@@ -244,17 +249,7 @@ impl IdentifyReport {
         let files = self.outputs();
         match self {
             IdentifyReport::Swarm(r) => {
-                let text = toml::to_string(&r.tyre).map_err(|e| OutputError::Tyre {
-                    path: files[0].clone(),
-                    source: e,
-                })?;
-                let header = format!(
-                    "# Identified by `{}`: sigma {:.3} %.\n",
-                    r.options.command(),
-                    r.fit.sigma_percent
-                );
-                let held = held_file_lines(&r.held, "#");
-                write_bytes(&files[0], format!("{header}{held}{text}").as_bytes())?;
+                write_bytes(&files[0], r.file.as_bytes())?;
                 write_json_sorted(&files[1], r)?;
                 self.figure().save(&files[2])
             }
@@ -369,6 +364,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
+        file: String::new(),
         fit,
         two_stage: None,
         written: None,
@@ -434,6 +430,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     r.held
         .extend(held_by_fits(fits.into_iter().flatten(), &r.tyre));
     finite_fits(&r).map_err(on_data(o, None))?;
+    r.file = written::tyre_file_text(&r, &o.output_path())?;
     Ok(r)
 }
 

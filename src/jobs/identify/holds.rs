@@ -84,9 +84,18 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
 
 /// The parameters of `fits` held for another reason than `--hold` (the
 /// levels of the data, the model's design), at their value in `written`
-/// (PAC89's two-stage result holds its camber terms at zero).
-pub(crate) fn held_by_fits<'a>(fits: impl Iterator<Item = &'a Fit>, written: &Tyre) -> Vec<Held> {
-    fits.flat_map(|f| &f.parameters)
+/// (PAC89's two-stage result holds its camber terms at zero); one that
+/// another of the fits fitted (Gim's contact length, held by the lateral
+/// fit and fitted to the aligning moment) is not held.
+pub(crate) fn held_by_fits(fits: &[&Fit], written: &Tyre) -> Vec<Held> {
+    let fitted = |name: &str| {
+        fits.iter()
+            .flat_map(|f| &f.parameters)
+            .any(|p| p.free && p.name == name)
+    };
+    fits.iter()
+        .flat_map(|f| &f.parameters)
+        .filter(|p| !fitted(&p.name))
         .filter_map(|p| match p.held {
             Some(why) if why != HeldFor::Given => Some(Held {
                 name: p.name.clone(),

@@ -14,6 +14,7 @@ use crate::io::rig::read_rig;
 mod choices;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
+mod notes;
 mod outputs;
 mod summary;
 mod written;
@@ -427,8 +428,10 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .collect();
     r.held = holds_of(o, &fitted);
     let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
-    r.held
-        .extend(held_by_fits(fits.into_iter().flatten(), &r.tyre));
+    r.held.extend(held_by_fits(
+        &fits.into_iter().flatten().collect::<Vec<_>>(),
+        &r.tyre,
+    ));
     finite_fits(&r).map_err(on_data(o, None))?;
     r.file = written::tyre_file_text(&r, &o.output_path())?;
     Ok(r)

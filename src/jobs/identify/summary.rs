@@ -3,6 +3,7 @@
 //! its parameters.
 
 use super::holds::held_lines;
+use super::notes::later_fit_notes;
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
@@ -102,6 +103,7 @@ impl SwarmReport {
                 mz.seconds
             ));
             out.extend(parameter_warnings(mz, &o.hold));
+            out.extend(later_fit_notes(self, mz).iter().map(|n| n.line(" ")));
         }
         if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
             out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
@@ -113,6 +115,7 @@ impl SwarmReport {
                 fx.seconds
             ));
             out.extend(parameter_warnings(fx, &o.hold));
+            out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
         out
     }

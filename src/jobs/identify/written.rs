@@ -5,6 +5,7 @@
 //! never writes a file that `tyre-eval` or `simulate` refuse.
 
 use super::holds::held_file_lines;
+use super::notes::notes;
 use super::SwarmReport;
 use crate::error::{Error, FitError, OutputError, ParamError};
 use crate::io::TomlSource;
@@ -32,7 +33,8 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
         r.fit.sigma_percent
     );
     let held = held_file_lines(&r.held, "#");
-    let text = format!("{header}{held}{tyre}");
+    let notes: String = notes(r).iter().map(|n| n.line("#") + "\n").collect();
+    let text = format!("{header}{held}{notes}{tyre}");
     match read_back(path, &text)? {
         Ok(()) => Ok(text),
         Err(e) => Err(FitError::InData {

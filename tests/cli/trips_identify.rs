@@ -462,3 +462,79 @@ fn gims_contact_length_is_said_fitted_to_mz_and_a_trail_that_misses_is_warned() 
     let text = fs::read_to_string(&out).unwrap();
     assert!(text.contains(&format!("\n# {warning}")), "{text}");
 }
+
+/// `tyre-eval`'s `fy` of the tyre file `tyre` at load `fz` and slip angle
+/// `alpha` (rad), in `dir`.
+fn fy_at(dir: &Path, tyre: &Path, fz: f64, alpha: f64) -> f64 {
+    let points = dir.join("points.csv");
+    fs::write(
+        &points,
+        format!("fz,kappa,alpha,camber,speed\n{fz},0,{alpha},0,10\n"),
+    )
+    .unwrap();
+    let forces = dir.join("forces.csv");
+    let o = bin()
+        .args([
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            points.to_str().unwrap(),
+        ])
+        .args(["--out", forces.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&forces).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    row[head.iter().position(|h| *h == "fy").unwrap()]
+        .parse()
+        .unwrap()
+}
+
+/// A .tir written by identify had no FZMIN…PRESMAX, so tyre-eval
+/// extrapolated past the data silently; a cornering-only file's
+/// longitudinal coefficients were said only as "pure Fx skipped".
+#[test]
+fn a_fitted_tir_holds_the_datas_ranges_and_says_its_longitudinal_force_is_not_fitted() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("m.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let tir = fs::read_to_string(&out).unwrap();
+    for range in [
+        "[VERTICAL_FORCE_RANGE]\nFZMIN                     = 2000\nFZMAX                     = 6000\n",
+        "[SLIP_ANGLE_RANGE]\nALPMIN                    = -0.2\nALPMAX                    = 0.2\n",
+    ] {
+        assert!(tir.contains(range), "{tir}");
+    }
+    // No slip ratio in the data: no range that would cut Fx off.
+    assert!(!tir.contains("KPUMIN"), "{tir}");
+    assert!(
+        tir.contains(
+            "\n$ at one value in the rows: kappa at 0, camber at 0 rad: no range is written\n"
+        ),
+        "{tir}"
+    );
+    let no_fx = "no longitudinal data: the file's longitudinal force coefficients are not fitted (no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)): the defaults (no --template)";
+    assert!(tir.contains(&format!("\n$ {no_fx}\n")), "{tir}");
+    assert!(
+        stdout(&o).contains(&format!("\n  {no_fx}\n")),
+        "{}",
+        stdout(&o)
+    );
+    // Past the data, tyre-eval holds the force at the range's edge.
+    let edge = fy_at(dir.path(), &out, 6000.0, 0.2);
+    assert_eq!(fy_at(dir.path(), &out, 6000.0, 0.35), edge);
+    assert_eq!(fy_at(dir.path(), &out, 9000.0, 0.2), edge);
+    assert!(fy_at(dir.path(), &out, 6000.0, 0.1) < edge);
+    // A TOML tyre states the ranges in its header.
+    let out = dir.path().join("g.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&out).unwrap();
+    assert_eq!(
+        text.lines().nth(1),
+        Some("# ranges of the rig data fitted: fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad, camber at 0 rad; the tyre is not checked beyond them")
+    );
+}

@@ -16,6 +16,7 @@ mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod notes;
 mod outputs;
+mod ranges;
 mod summary;
 mod written;
 use outputs::{output_lock, outputs};

@@ -6,6 +6,7 @@
 
 use super::holds::held_file_lines;
 use super::notes::notes;
+use super::ranges;
 use super::SwarmReport;
 use crate::error::{Error, FitError, OutputError, ParamError};
 use crate::io::TomlSource;
@@ -34,7 +35,14 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
     );
     let held = held_file_lines(&r.held, "#");
     let notes: String = notes(r).iter().map(|n| n.line("#") + "\n").collect();
-    let text = format!("{header}{held}{notes}{tyre}");
+    let conditions: Vec<_> = r
+        .conditions
+        .iter()
+        .chain(&r.longitudinal_conditions)
+        .cloned()
+        .collect();
+    let ranges = ranges::toml_line(&ranges::condition_spans(&conditions));
+    let text = format!("{header}# {ranges}\n{held}{notes}{tyre}");
     match read_back(path, &text)? {
         Ok(()) => Ok(text),
         Err(e) => Err(FitError::InData {

@@ -538,3 +538,41 @@ fn a_fitted_tir_holds_the_datas_ranges_and_says_its_longitudinal_force_is_not_fi
         Some("# ranges of the rig data fitted: fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad, camber at 0 rad; the tyre is not checked beyond them")
     );
 }
+
+/// Cambers pooled into a model without camber terms said nothing, where
+/// pressures pooled alike were warned.
+#[test]
+fn cambers_pooled_into_a_model_without_camber_terms_are_warned_as_pressures_are() {
+    let dir = scratch(&[("rig.csv", &rig_with_levels())]);
+    let warning = |model: &str| {
+        format!("warning: 2 cambers pooled into one {model} fit, which has no camber terms: select one with --camber")
+    };
+    for model in ["gim", "linear", "magic-simple", "unitire"] {
+        let out = dir.path().join(format!("{model}.toml"));
+        let o = identify_with(dir.path(), model, &["--pressure", "180000"], &out);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains(&warning(model)),
+            "{model}: {}",
+            stderr(&o)
+        );
+        assert!(!stderr(&o).contains("pressures pooled"), "{}", stderr(&o));
+        // One camber selected: nothing pooled.
+        let args = ["--pressure", "180000", "--camber", "0"];
+        let o = identify_with(dir.path(), model, &args, &out.with_extension("one.toml"));
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(!stderr(&o).contains("pooled"), "{}", stderr(&o));
+    }
+    // PAC89 has camber terms: its cambers are fitted, not pooled.
+    let out = dir.path().join("pac89.toml");
+    let o = identify_with(dir.path(), "pac89", &["--pressure", "180000"], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("cambers pooled"), "{}", stderr(&o));
+    // Both pooled: both said.
+    let out = dir.path().join("both.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("warning: 2 pressures pooled into one gim fit, which has no pressure terms: select one with --pressure"), "{e}");
+    assert!(e.contains(&warning("gim")), "{e}");
+}

@@ -197,6 +197,10 @@ pub struct SwarmReport {
     /// Pressure levels pooled into one fit (a warning when more than one).
     #[serde(skip)]
     pub pressures_pooled: usize,
+    /// Camber levels pooled into one fit of a model without camber terms
+    /// (a warning when more than one; 0 for a model with them).
+    #[serde(skip)]
+    pub cambers_pooled: usize,
     /// The conditions of the first channel.
     #[serde(skip)]
     pub conditions: Vec<Condition>,
@@ -217,17 +221,31 @@ impl IdentifyReport {
         }
     }
 
-    /// Warnings on the fit's inputs.
+    /// Warnings on the fit's inputs: levels pooled into a model without
+    /// terms for them.
     pub fn warnings(&self) -> Vec<String> {
-        match self {
-            IdentifyReport::Swarm(r) if r.options.pressure.is_none() && r.pressures_pooled > 1 => {
-                vec![format!(
-                    "{} pressures pooled into one {} fit, which has no pressure terms: select one with --pressure",
-                    r.pressures_pooled, r.options.model
-                )]
-            }
-            _ => Vec::new(),
-        }
+        let IdentifyReport::Swarm(r) = self else {
+            return Vec::new();
+        };
+        let pooled = [
+            (
+                "pressures",
+                "pressure",
+                r.options.pressure,
+                r.pressures_pooled,
+            ),
+            ("cambers", "camber", r.options.camber, r.cambers_pooled),
+        ];
+        pooled
+            .into_iter()
+            .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
+            .map(|(levels, option, _, n)| {
+                format!(
+                    "{n} {levels} pooled into one {} fit, which has no {option} terms: select one with --{option}",
+                    r.options.model
+                )
+            })
+            .collect()
     }
 
     /// The report in lines of text.
@@ -356,12 +374,24 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     let lock = output_lock(o)?;
     // The models fitted here have no pressure terms: several pressures
     // pooled into one parameter set blur their differences into the fit.
-    let pressures_pooled = grouped
-        .report
-        .levels
-        .iter()
-        .find(|l| l.variable == Variable::Pressure)
-        .map_or(0, |l| l.levels.len());
+    let levels_of = |v: Variable| {
+        grouped
+            .report
+            .levels
+            .iter()
+            .find(|l| l.variable == v)
+            .map_or(0, |l| l.levels.len())
+    };
+    let pressures_pooled = levels_of(Variable::Pressure);
+    // A model whose lateral fit frees nothing more with more cambers has
+    // no camber terms: pooled cambers blur into it alike.
+    let many = 1000;
+    let camber_terms = tyre0.lateral_free(many, many) != tyre0.lateral_free(many, 1);
+    let cambers_pooled = if camber_terms {
+        0
+    } else {
+        levels_of(Variable::Camber)
+    };
     let fit = fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
         .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
@@ -379,6 +409,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_grouping: None,
         options: o.clone(),
         pressures_pooled,
+        cambers_pooled,
         conditions,
         longitudinal_conditions: Vec::new(),
         lock,

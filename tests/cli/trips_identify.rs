@@ -343,19 +343,19 @@ fn no_file_is_written_that_the_tyre_reader_refuses() {
             "gim",
             "friction=50",
             "t.toml",
-            "`--hold friction` = 50: must lie in (0, 5]: no tyre's friction coefficient reaches 5",
+            "`friction` = 50: must lie in (0, 5]: no tyre's friction coefficient reaches 5",
         ),
         (
             "unitire",
             "lateral.p2=-1",
             "u.toml",
-            "`--hold lateral.p2` = -1: must be positive",
+            "`lateral.p2` = -1: must be positive",
         ),
         (
             "mf61",
             "FNOMIN=4",
             "m.tir",
-            "`--hold FNOMIN` = 4: must lie in (100, 100000]: a tyre carries 100 N",
+            "`FNOMIN` = 4: must lie in (100, 100000]: a tyre carries 100 N",
         ),
     ];
     for (model, hold, out, said) in cases {

@@ -130,8 +130,8 @@ const CHECK_LOAD: f64 = 4000.0;
 
 /// Refuses a value given with `--hold` that the tyre reader refuses (its
 /// own checks, [`Tyre::validate`] and [`Tyre::check_sizes`], on a start
-/// tyre holding it): the error names `--hold NAME`, the value and the
-/// limit, before any data are read. `model` is `None` for the staged
+/// tyre holding it): the error names the parameter as `--hold` does, the
+/// value and the reader's limit, before any data are read. `model` is `None` for the staged
 /// Magic Formula fit (a `.tir` coefficient).
 pub(crate) fn check_hold_values(
     model: Option<ModelName>,
@@ -161,9 +161,11 @@ pub(crate) fn check_hold_values(
             }
             t => with_value(t, name, *v),
         };
+        // At the parameter's name, as the other checks of a held value
+        // (finite, within ±1e6) and the Python `key` give it.
         if let Some(Err(e)) = held.as_ref().map(reader) {
             return Err(ParamError {
-                key: format!("--hold {name}"),
+                key: name.clone(),
                 ..e
             }
             .into());

@@ -133,3 +133,22 @@ pub(crate) fn value_in(t: &Tyre, name: &str) -> Option<f64> {
         c.parameters(t).get(i).copied()
     })
 }
+
+/// `t` with its parameter `name` (any block a fit fits) set to `v`;
+/// `None` when no block of `t` has it.
+pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {
+    [
+        Channel::LateralForce,
+        Channel::AligningMoment,
+        Channel::LongitudinalForce,
+    ]
+    .into_iter()
+    .find_map(|c| {
+        let i = c.names(t).iter().position(|n| n == name)?;
+        let mut p = c.parameters(t);
+        p[i] = v;
+        let mut out = t.clone();
+        c.set(&mut out, &p);
+        Some(out)
+    })
+}

@@ -29,7 +29,7 @@ pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
 
-pub(crate) use held::value_in;
+pub(crate) use held::{value_in, with_value};
 pub use held::{ConstantFrom, HeldFor};
 pub use problem::{Channel, Derivatives, FitProblem};
 

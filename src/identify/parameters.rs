@@ -4,7 +4,7 @@
 //! the value, or a direction of the fit the data leave undetermined).
 
 use super::{Channel, ParameterReport};
-use crate::format::exact;
+use crate::format::{exact, readable};
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
 
@@ -74,6 +74,9 @@ fn undetermined_names(
 /// The warning on a free parameter `name` of value `v` in its search box
 /// `(lo, hi)` with standard error `se`, `traded` naming the parameters
 /// left without one ([`undetermined_names`]); `None` when the data fix it.
+/// A value the data do not determine (no standard error, or one larger
+/// than the value) is said to be so whether or not it lies past its box:
+/// past it, the polish drifted there, the data did not take it there.
 fn warning(
     name: &str,
     v: f64,
@@ -92,36 +95,39 @@ fn warning(
             "on its search bound ({bounds}): the fit would take it beyond; the value is the bound, not a fit"
         ));
     }
-    if se.is_none() && traded.len() > 1 {
+    let drift = if beyond {
+        format!("; the polish drifted past its search bound ({bounds})")
+    } else {
+        String::new()
+    };
+    match se {
         // The covariance marks the parameters along a direction where JᵀJ
         // is singular: the data fix only a combination of them, so a value
         // past the box is one of many that fit alike, not one the data ask
         // for.
-        let others: Vec<&str> = traded
-            .iter()
-            .filter(|n| n.as_str() != name)
-            .map(String::as_str)
-            .collect();
-        let drift = if beyond {
-            format!("; the polish drifted past its search bound ({bounds}) along that direction")
-        } else {
-            String::new()
-        };
-        return Some(format!(
-            "not identified by the data: it trades off with {} (the Jacobian at the fit is singular along a direction they share, so only a combination of them is determined and there is no standard error){drift}",
-            others.join(", ")
-        ));
-    }
-    if beyond {
-        Some(format!(
+        None if traded.len() > 1 => {
+            let others: Vec<&str> = traded
+                .iter()
+                .filter(|n| n.as_str() != name)
+                .map(String::as_str)
+                .collect();
+            Some(format!(
+                "not identified by the data: it trades off with {} (the Jacobian at the fit is singular along a direction they share, so only a combination of them is determined and there is no standard error){drift}{}",
+                others.join(", "),
+                if beyond { " along that direction" } else { "" }
+            ))
+        }
+        None => Some(format!(
+            "not identified by the data: no standard error (the Jacobian at the fit is singular along it){drift}"
+        )),
+        Some(s) if !s.is_finite() || s > v.abs().max(1e-12) => Some(format!(
+            "not identified by the data: its standard error {} is larger than its value{drift}",
+            readable(s, 3)
+        )),
+        Some(_) if beyond => Some(format!(
             "beyond its search bound ({bounds}) after the polish: the data take it past the box"
-        ))
-    } else if se.is_none() {
-        Some("not identifiable from these data (no standard error: the Jacobian at the fit is singular along it)".into())
-    } else if se.is_some_and(|s| !s.is_finite() || s > v.abs().max(1e-12)) {
-        Some("not identifiable from these data (standard error larger than the value)".into())
-    } else {
-        None
+        )),
+        Some(_) => None,
     }
 }
 
@@ -148,6 +154,25 @@ mod tests {
         // With a standard error, past the box is the data's doing.
         let w = warning("a0", 2.4, (1.0, 2.0), Some(0.01), &[]).unwrap();
         assert!(w.contains("the data take it past the box"), "{w}");
+        // A standard error larger than the value: not the data's doing,
+        // past the box or not (UniTire's aligning c8 of 3354.6, ± 8.9e6).
+        let w = warning("c8", 3354.6, (0.1, 100.0), Some(8.9e6), &[]).unwrap();
+        assert_eq!(
+            w,
+            "not identified by the data: its standard error 8.9e6 is larger than its value; the polish drifted past its search bound (0.1 to 100)"
+        );
+        let w = warning("a9", 0.0022, (-1.0, 1.0), Some(0.003), &[]).unwrap();
+        assert_eq!(
+            w,
+            "not identified by the data: its standard error 0.00300 is larger than its value"
+        );
+        // No standard error, alone (UniTire's longitudinal p2 of 6473).
+        let w = warning("p2", 6473.0, (0.1, 100.0), None, &[]).unwrap();
+        assert!(
+            w.starts_with("not identified by the data: no standard error"),
+            "{w}"
+        );
+        assert!(w.ends_with("past its search bound (0.1 to 100)"), "{w}");
         // On its bound, that is said whatever its standard error.
         let w = warning("a0", 1.0, (1.0, 2.0), None, &traded).unwrap();
         assert!(w.starts_with("on its search bound (1 to 2)"), "{w}");

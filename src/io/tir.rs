@@ -20,7 +20,8 @@
 //! the model holds (in the file's own units), so comments, sections and
 //! keys the model does not read round-trip unchanged. Each value is
 //! written as the shortest text that reads back as the same number
-//! ([`crate::format::exact`]: `4000`, `1`, `1.5e-7`).
+//! ([`crate::format::exact`]: `4000`, `1`, `1.5e-7`). The validity ranges
+//! are written in their published sections (`ranges.rs`).
 
 use crate::error::{DuplicateAt, InputError, InputProblem, ModeError};
 use crate::format::exact;
@@ -382,6 +383,13 @@ impl TirDocument {
                     }
                     .to_string(),
                 ),
+                k if MfLimits::KEYS.contains(&k) => {
+                    let read = match e.value {
+                        TirValue::Number(x) => Some(x),
+                        TirValue::Text(_) => None,
+                    };
+                    ranges::range_replacement(&tyre.limits, units, k, read)
+                }
                 k => c.get(k).map(|v| exact(v / units.factor(k))),
             };
             seen.insert(e.key.clone());
@@ -408,6 +416,9 @@ impl TirDocument {
                 out.push_str(&format!("{k:<25} = {}\n", exact(v)));
             }
         }
+        out.push_str(&ranges::range_sections(&tyre.limits, units, &|k| {
+            seen.contains(k)
+        }));
         Ok(out)
     }
 }
@@ -429,16 +440,13 @@ pub(crate) fn write_new(tyre: &MagicFormula) -> String {
     for k in MfCoefficients::NAMES {
         s.push_str(&format!("{k:<25} = {}\n", exact(c.get(k).unwrap_or(0.0))));
     }
-    let limits: Vec<_> = MfLimits::KEYS
-        .iter()
-        .filter_map(|k| tyre.limits.get(k).map(|v| (k, v)))
-        .collect();
-    if !limits.is_empty() {
-        s.push_str("[LIMITS]\n");
-        for (k, v) in limits {
-            s.push_str(&format!("{k:<25} = {}\n", exact(v)));
-        }
-    }
+    let si = Units {
+        length: 1.0,
+        force: 1.0,
+        time: 1.0,
+        pressure: None,
+    };
+    s.push_str(&ranges::range_sections(&tyre.limits, si, &|_| false));
     s
 }
 
@@ -572,6 +580,7 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 }
 
 mod core;
+mod ranges;
 
 #[cfg(test)]
 mod tests;

@@ -470,3 +470,67 @@ fn the_curve_lines_name_a_pressure_level_as_the_level_line_does() {
         );
     }
 }
+
+/// UniTire's aligning c8 = 3354.6 with a standard error of 8.9e6 was
+/// worded "beyond its search bound … the data take it past the box": a
+/// value the data do not determine is said so, past its box or not.
+#[test]
+fn a_parameter_with_a_standard_error_above_its_value_is_not_identified_past_its_box_or_not() {
+    let Some(data) = shared_data(
+        "a_parameter_with_a_standard_error_above_its_value_is_not_identified_past_its_box_or_not",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let out = tempfile::tempdir().unwrap();
+    let tyre = out.path().join("uni.toml");
+    let o = run(&[
+        "identify",
+        data.to_str().unwrap(),
+        "--model",
+        "unitire",
+        "--pressure",
+        "83400",
+        "--camber",
+        "0",
+        "--out",
+        tyre.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let report = read_json(&tyre.with_extension("report.json"));
+    let mut undetermined_past_box = 0;
+    for fit in [&report, &report["aligning"]] {
+        for p in fit["parameters"].as_array().unwrap() {
+            let (v, (lo, hi)) = (
+                p["value"].as_f64().unwrap(),
+                (
+                    p["bounds"][0].as_f64().unwrap(),
+                    p["bounds"][1].as_f64().unwrap(),
+                ),
+            );
+            let se = p["std_error"].as_f64();
+            if !p["free"].as_bool().unwrap() || se.is_some_and(|s| s <= v.abs()) {
+                continue;
+            }
+            let w = p["warning"].as_str().unwrap();
+            assert!(w.starts_with("not identified by the data: "), "{p}");
+            let line = format!("warning: {} = ", p["name"].as_str().unwrap());
+            let said = stdout.lines().find(|l| l.contains(&line)).unwrap();
+            assert!(said.ends_with(w), "{said}");
+            if v < lo || v > hi {
+                undetermined_past_box += 1;
+                assert!(
+                    w.contains("the polish drifted past its search bound"),
+                    "{w}"
+                );
+            }
+        }
+    }
+    // c8 (and c5) lie past their box with a standard error above the value.
+    assert!(undetermined_past_box >= 1, "{stdout}");
+    assert!(
+        !stdout.contains("the data take it past the box"),
+        "{stdout}"
+    );
+}

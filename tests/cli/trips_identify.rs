@@ -214,3 +214,365 @@ fn unconverged_stages_warn(report: &serde_json::Value, said: &str) -> usize {
     );
     unconverged
 }
+
+/// Rig data at 2, 4 and 6 kN, two cambers (0, 0.03 rad) and two
+/// pressures (180, 220 kPa), with `mz`: levels to select.
+fn rig_with_levels() -> String {
+    let mut s = String::from("fz,alpha,camber,pressure,fy,mz\n");
+    for p in [180e3, 220e3] {
+        for camber in [0.0, 0.03] {
+            for fz in [2000.0, 4000.0, 6000.0] {
+                for k in -10..=10 {
+                    let alpha = 0.02 * f64::from(k);
+                    let mu = 1.4 - 0.5 * camber - (p - 200e3) * 1e-6;
+                    let fy = fz * (mu * (12.0 * alpha).atan()).sin();
+                    s += &format!("{fz},{alpha},{camber},{p},{fy:.3},{:.4}\n", 0.02 * fy);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// The text of the first line of `text` between the first pair of
+/// backquotes.
+fn quoted_command(text: &str) -> String {
+    let line = text.lines().next().unwrap();
+    let start = line.find('`').unwrap() + 1;
+    let len = line[start..].find('`').unwrap();
+    line[start..start + len].to_string()
+}
+
+/// The header named `--model gim --seed 1 --hold …` only: without the
+/// `--pressure`, `--camber`, `--local` and `--bin-deg` of the fit, the
+/// command it stated fitted other data.
+#[test]
+fn the_header_states_every_option_that_changes_the_fit_and_repeats_it() {
+    let dir = scratch(&[("rig.csv", &rig_with_levels())]);
+    let out = dir.path().join("g.toml");
+    let args = [
+        "--seed",
+        "3",
+        "--pressure",
+        "220000",
+        "--camber",
+        "0.03",
+        "--local",
+        "gn",
+        "--bin-deg",
+        "0.5",
+        "--hold",
+        "friction_decay=0.1",
+    ];
+    let o = identify_with(dir.path(), "gim", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&out).unwrap();
+    let rig = dir.path().join("rig.csv");
+    let command = format!(
+        "handling identify {} --model gim --seed 3 --pressure 220000 --camber 0.03 --local gn --bin-deg 0.5 --bin-kappa 0.0025 --hold friction_decay=0.1",
+        rig.display()
+    );
+    assert_eq!(quoted_command(&text), command);
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["options"],
+        serde_json::json!({
+            "command": command, "model": "gim", "seed": 3, "pressure": 220000.0,
+            "camber": 0.03, "local": "gn", "bin_deg": 0.5, "bin_kappa": 0.0025,
+            "hold": [{"name": "friction_decay", "value": 0.1}],
+        })
+    );
+    // The stated command, run, writes the same tyre.
+    let again = dir.path().join("again.toml");
+    let words: Vec<&str> = command.split(' ').skip(1).collect();
+    let o = bin()
+        .args(&words)
+        .args(["--out", again.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let body = |t: &str| t.lines().skip(1).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(&fs::read_to_string(&again).unwrap()), body(&text));
+    // A fit of the other levels is another tyre: the options mattered.
+    let other = dir.path().join("other.toml");
+    let o = identify_with(dir.path(), "gim", &args[..4], &other);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ne!(body(&fs::read_to_string(&other).unwrap()), body(&text));
+}
+
+/// A staged fit's .tir named its command only with a hold, and then
+/// without its start, template, iteration cap and bin.
+#[test]
+fn an_mf_tir_states_the_command_that_repeats_its_fit() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("m.tir");
+    let args = [
+        "--start",
+        "paper",
+        "--max-iterations",
+        "40",
+        "--bin-deg",
+        "0",
+    ];
+    let o = identify_with(dir.path(), "mf62", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let command = format!(
+        "handling identify {} --model mf62 --start paper --max-iterations 40 --bin-deg 0",
+        dir.path().join("rig.csv").display()
+    );
+    let tir = fs::read_to_string(&out).unwrap();
+    assert_eq!(quoted_command(&tir), command);
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(
+        report["options"],
+        serde_json::json!({
+            "command": command, "model": "mf62", "bin_deg": 0.0, "start": "paper",
+            "template": null, "max_iterations": 40, "hold": [],
+        })
+    );
+}
+
+/// `--hold friction=50` was fitted and written, and `tyre-eval` then
+/// refused the file; a stiffness held at 1 N/rad drove the contact length
+/// to thousands of metres, written alike.
+#[test]
+fn no_file_is_written_that_the_tyre_reader_refuses() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let cases = [
+        (
+            "gim",
+            "friction=50",
+            "t.toml",
+            "`friction` = 50: must lie in (0, 5]: no tyre's friction coefficient reaches 5",
+        ),
+        (
+            "unitire",
+            "lateral.p2=-1",
+            "u.toml",
+            "`lateral.p2` = -1: must be positive",
+        ),
+        (
+            "mf61",
+            "FNOMIN=4",
+            "m.tir",
+            "`FNOMIN` = 4: must lie in (100, 100000]: a tyre carries 100 N",
+        ),
+    ];
+    for (model, hold, out, said) in cases {
+        let out = dir.path().join(out);
+        let e = refused(
+            &identify_with(dir.path(), model, &["--hold", hold], &out),
+            &out,
+        );
+        assert!(e.contains(said), "{model}: {e}");
+        // Refused before the data are read: nothing is fitted.
+        assert!(!e.contains("rig.csv"), "{e}");
+    }
+    // A value within the limits that drives another past them.
+    let out = dir.path().join("k.toml");
+    let args = ["--hold", "cornering_stiffness=1000"];
+    let e = refused(&identify_with(dir.path(), "gim", &args, &out), &out);
+    assert!(
+        e.contains("rig.csv: the fitted tyre is not written, as the tyre readers (tyre-eval, simulate) would refuse it (the fit ran with the values given with --hold, which may have driven it there): `contact_length` = "),
+        "{e}"
+    );
+    assert!(
+        e.contains(": must lie in (0, 1]: no tyre's contact patch is longer than 1 m"),
+        "{e}"
+    );
+    // Within them, the file written is one the reader takes.
+    let out = dir.path().join("ok.toml");
+    let args = ["--hold", "friction=1.2"];
+    let o = identify_with(dir.path(), "gim", &args, &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let points = dir.path().join("points.csv");
+    fs::write(&points, "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,10\n").unwrap();
+    let forces = dir.path().join("forces.csv");
+    let e = bin()
+        .args(["tyre-eval", out.to_str().unwrap(), points.to_str().unwrap()])
+        .args(["--out", forces.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(e.status.success(), "{}", stderr(&e));
+    assert!(fs::read_to_string(&forces).unwrap().lines().count() == 2);
+}
+
+/// Rig data of a Gim tyre (60 kN/rad, contact length 0.2 m, μ 1.2) at 2,
+/// 4 and 6 kN, with its `mz`: the trail model follows them.
+fn gim_rig() -> String {
+    let (k, l, mu) = (60_000.0_f64, 0.2, 1.2);
+    let mut s = String::from("fz,alpha,fy,mz\n");
+    for fz in [2000.0, 4000.0, 6000.0] {
+        for i in -10..=10 {
+            let alpha = 0.02 * f64::from(i);
+            let (t, theta) = (f64::tan(alpha), k / (3.0 * mu * fz));
+            let ln = (1.0 - theta * t.abs()).max(0.0);
+            let fy = mu * fz * (1.0 - ln.powi(3)) * t.signum();
+            let mz = mu * fz * 0.5 * l * theta * t * ln.powi(3);
+            s += &format!("{fz},{alpha},{fy},{mz}\n");
+        }
+    }
+    s
+}
+
+/// Gim's contact length, fitted to `mz`, was printed `held: contact_length
+/// = 0.3944…: not fitted…` with 17 digits; an Mz fit of σ 44.7 % said
+/// nothing.
+#[test]
+fn gims_contact_length_is_said_fitted_to_mz_and_a_trail_that_misses_is_warned() {
+    let dir = scratch(&[("rig.csv", &gim_rig())]);
+    let out = dir.path().join("g.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stdout(&o);
+    let fitted = "contact_length = 0.2000 (standard error ";
+    let line = said
+        .lines()
+        .find(|l| l.contains(fitted))
+        .unwrap_or_else(|| panic!("{said}"));
+    assert!(
+        line.ends_with("): fitted to the aligning moment (σ 0.0 %), not to the lateral force"),
+        "{line}"
+    );
+    assert!(!said.contains("held: contact_length"), "{said}");
+    assert!(!said.contains("does not follow these data"), "{said}");
+    let text = fs::read_to_string(&out).unwrap();
+    assert!(
+        text.contains(&format!("\n# {}", line.trim_start())),
+        "{text}"
+    );
+    let report = read_json(&out.with_extension("report.json"));
+    assert_eq!(report["held"], serde_json::json!([]), "{report}");
+    // Data whose mz is a fixed share of fy: the trail model misses them.
+    fs::write(dir.path().join("rig.csv"), rig(1.0)).unwrap();
+    let out = dir.path().join("g2.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report = read_json(&out.with_extension("report.json"));
+    let sigma = report["aligning"]["sigma_percent"].as_f64().unwrap();
+    assert!(sigma > 20.0, "{sigma}");
+    let warning = format!(
+        "warning: the aligning moment's σ is {sigma:.1} %: the gim model's aligning moment does not follow these data"
+    );
+    assert!(
+        stdout(&o).contains(&format!("  {warning}")),
+        "{}",
+        stdout(&o)
+    );
+    let text = fs::read_to_string(&out).unwrap();
+    assert!(text.contains(&format!("\n# {warning}")), "{text}");
+}
+
+/// `tyre-eval`'s `fy` of the tyre file `tyre` at load `fz` and slip angle
+/// `alpha` (rad), in `dir`.
+fn fy_at(dir: &Path, tyre: &Path, fz: f64, alpha: f64) -> f64 {
+    let points = dir.join("points.csv");
+    fs::write(
+        &points,
+        format!("fz,kappa,alpha,camber,speed\n{fz},0,{alpha},0,10\n"),
+    )
+    .unwrap();
+    let forces = dir.join("forces.csv");
+    let o = bin()
+        .args([
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            points.to_str().unwrap(),
+        ])
+        .args(["--out", forces.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&forces).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    row[head.iter().position(|h| *h == "fy").unwrap()]
+        .parse()
+        .unwrap()
+}
+
+/// A .tir written by identify had no FZMIN…PRESMAX, so tyre-eval
+/// extrapolated past the data silently; a cornering-only file's
+/// longitudinal coefficients were said only as "pure Fx skipped".
+#[test]
+fn a_fitted_tir_holds_the_datas_ranges_and_says_its_longitudinal_force_is_not_fitted() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let out = dir.path().join("m.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let tir = fs::read_to_string(&out).unwrap();
+    for range in [
+        "[VERTICAL_FORCE_RANGE]\nFZMIN                     = 2000\nFZMAX                     = 6000\n",
+        "[SLIP_ANGLE_RANGE]\nALPMIN                    = -0.2\nALPMAX                    = 0.2\n",
+    ] {
+        assert!(tir.contains(range), "{tir}");
+    }
+    // No slip ratio in the data: no range that would cut Fx off.
+    assert!(!tir.contains("KPUMIN"), "{tir}");
+    assert!(
+        tir.contains(
+            "\n$ at one value in the rows: kappa at 0, camber at 0 rad: no range is written\n"
+        ),
+        "{tir}"
+    );
+    let no_fx = "no longitudinal data: the file's longitudinal force coefficients are not fitted (no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)): the defaults (no --template)";
+    assert!(tir.contains(&format!("\n$ {no_fx}\n")), "{tir}");
+    assert!(
+        stdout(&o).contains(&format!("\n  {no_fx}\n")),
+        "{}",
+        stdout(&o)
+    );
+    // Past the data, tyre-eval holds the force at the range's edge.
+    let edge = fy_at(dir.path(), &out, 6000.0, 0.2);
+    assert_eq!(fy_at(dir.path(), &out, 6000.0, 0.35), edge);
+    assert_eq!(fy_at(dir.path(), &out, 9000.0, 0.2), edge);
+    assert!(fy_at(dir.path(), &out, 6000.0, 0.1) < edge);
+    // A TOML tyre states the ranges in its header.
+    let out = dir.path().join("g.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&out).unwrap();
+    assert_eq!(
+        text.lines().nth(1),
+        Some("# ranges of the rig data fitted: fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad, camber at 0 rad; the tyre is not checked beyond them")
+    );
+}
+
+/// Cambers pooled into a model without camber terms said nothing, where
+/// pressures pooled alike were warned.
+#[test]
+fn cambers_pooled_into_a_model_without_camber_terms_are_warned_as_pressures_are() {
+    let dir = scratch(&[("rig.csv", &rig_with_levels())]);
+    let warning = |model: &str| {
+        format!("warning: 2 cambers pooled into one {model} fit, which has no camber terms: select one with --camber")
+    };
+    for model in ["gim", "linear", "magic-simple", "unitire"] {
+        let out = dir.path().join(format!("{model}.toml"));
+        let o = identify_with(dir.path(), model, &["--pressure", "180000"], &out);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains(&warning(model)),
+            "{model}: {}",
+            stderr(&o)
+        );
+        assert!(!stderr(&o).contains("pressures pooled"), "{}", stderr(&o));
+        // One camber selected: nothing pooled.
+        let args = ["--pressure", "180000", "--camber", "0"];
+        let o = identify_with(dir.path(), model, &args, &out.with_extension("one.toml"));
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(!stderr(&o).contains("pooled"), "{}", stderr(&o));
+    }
+    // PAC89 has camber terms: its cambers are fitted, not pooled.
+    let out = dir.path().join("pac89.toml");
+    let o = identify_with(dir.path(), "pac89", &["--pressure", "180000"], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("cambers pooled"), "{}", stderr(&o));
+    // Both pooled: both said.
+    let out = dir.path().join("both.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("warning: 2 pressures pooled into one gim fit, which has no pressure terms: select one with --pressure"), "{e}");
+    assert!(e.contains(&warning("gim")), "{e}");
+}

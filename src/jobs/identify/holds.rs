@@ -2,12 +2,15 @@
 //! each with its value (the tyre file's units), why it was held (given
 //! with `--hold`, too few levels in the data, a `.tir` constant without a
 //! template) and, for a hold, whether a fit applied it; and the
-//! terminal's lines that say so.
+//! terminal's lines that say so; and the check that a held value lies
+//! within the limits the tyre reader applies to the file written.
 
 use super::Options;
+use crate::error::{Error, ParamError};
 use crate::format::exact;
-use crate::identify::{value_in, Fit, HeldFor};
-use crate::tyre::Tyre;
+use crate::identify::{value_in, with_value, Fit, HeldFor};
+use crate::tyre::mf::{MagicFormula, MfCoefficients, MfOptions, MfVersion, TyreSide};
+use crate::tyre::{ModelName, Tyre};
 use serde::Serialize;
 
 /// A parameter held with `--hold`: its name, the value given (the tyre
@@ -81,9 +84,18 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
 
 /// The parameters of `fits` held for another reason than `--hold` (the
 /// levels of the data, the model's design), at their value in `written`
-/// (PAC89's two-stage result holds its camber terms at zero).
-pub(crate) fn held_by_fits<'a>(fits: impl Iterator<Item = &'a Fit>, written: &Tyre) -> Vec<Held> {
-    fits.flat_map(|f| &f.parameters)
+/// (PAC89's two-stage result holds its camber terms at zero); one that
+/// another of the fits fitted (Gim's contact length, held by the lateral
+/// fit and fitted to the aligning moment) is not held.
+pub(crate) fn held_by_fits(fits: &[&Fit], written: &Tyre) -> Vec<Held> {
+    let fitted = |name: &str| {
+        fits.iter()
+            .flat_map(|f| &f.parameters)
+            .any(|p| p.free && p.name == name)
+    };
+    fits.iter()
+        .flat_map(|f| &f.parameters)
+        .filter(|p| !fitted(&p.name))
         .filter_map(|p| match p.held {
             Some(why) if why != HeldFor::Given => Some(Held {
                 name: p.name.clone(),
@@ -110,4 +122,54 @@ pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
             )
         })
         .collect()
+}
+
+/// The load the hold check's start tyre is made at, N (within every
+/// reader's load limits).
+const CHECK_LOAD: f64 = 4000.0;
+
+/// Refuses a value given with `--hold` that the tyre reader refuses (its
+/// own checks, [`Tyre::validate`] and [`Tyre::check_sizes`], on a start
+/// tyre holding it): the error names the parameter as `--hold` does, the
+/// value and the reader's limit, before any data are read. `model` is `None` for the staged
+/// Magic Formula fit (a `.tir` coefficient).
+pub(crate) fn check_hold_values(
+    model: Option<ModelName>,
+    hold: &[(String, f64)],
+) -> Result<(), Error> {
+    let start = match model {
+        Some(m) => super::start_tyre_of(m, CHECK_LOAD)?,
+        None => Tyre::MagicFormula(Box::new(MagicFormula {
+            version: MfVersion::Mf61,
+            side: TyreSide::Left,
+            options: MfOptions::default(),
+            limits: Default::default(),
+            coefficients: MfCoefficients::default(),
+        })),
+    };
+    let reader = |t: &Tyre| t.validate().and_then(|()| t.check_sizes());
+    // A start the reader refuses would blame the hold for it.
+    if reader(&start).is_err() {
+        return Ok(());
+    }
+    for (name, v) in hold {
+        let held = match &start {
+            Tyre::MagicFormula(mf) => {
+                let mut mf = mf.clone();
+                mf.coefficients.set(name, *v);
+                Some(Tyre::MagicFormula(mf))
+            }
+            t => with_value(t, name, *v),
+        };
+        // At the parameter's name, as the other checks of a held value
+        // (finite, within ±1e6) and the Python `key` give it.
+        if let Some(Err(e)) = held.as_ref().map(reader) {
+            return Err(ParamError {
+                key: name.clone(),
+                ..e
+            }
+            .into());
+        }
+    }
+    Ok(())
 }

@@ -8,23 +8,28 @@
 //! 6.2 is fitted by Wei et al.'s (2010) staged Levenberg–Marquardt
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
-use crate::format::{decimals_or_digits, distinct};
 use crate::identify::data::Condition;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::io::rig::read_rig;
 mod choices;
+mod command;
+pub use command::{RecordedHold, RecordedOptions};
+mod notes;
 mod outputs;
+mod ranges;
+mod summary;
+mod written;
 use outputs::{output_lock, outputs};
 mod figures;
 mod holds;
 pub use holds::Held;
-use holds::{held_by_fits, held_file_lines, held_lines, holds_of};
+use holds::{held_by_fits, holds_of};
 mod staged;
 mod two_stage;
 pub use two_stage::{TwoStageReport, Written};
 mod staged_figure;
 
-use crate::error::{Error, FitError, Limit, NameKind, OptionsError, OutputError, ParamError};
+use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
 use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSettings};
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
@@ -121,7 +126,7 @@ impl Options {
             for (name, _) in &self.hold {
                 crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;
             }
-            return Ok(());
+            return holds::check_hold_values(None, &self.hold);
         };
         let known = crate::identify::fitted_names(&start_tyre_of(model, 1.0)?);
         for (name, _) in &self.hold {
@@ -134,7 +139,7 @@ impl Options {
                 .into());
             }
         }
-        Ok(())
+        holds::check_hold_values(Some(model), &self.hold)
     }
 }
 
@@ -169,6 +174,9 @@ pub struct SwarmReport {
     pub longitudinal: Option<Fit>,
     /// The data file.
     pub data: String,
+    /// The options that change the fit, and the command that repeats it.
+    #[serde(rename = "options")]
+    pub recorded: RecordedOptions,
     /// The parameters held with `--hold`.
     pub held: Vec<Held>,
     /// Where every sample went.
@@ -179,12 +187,20 @@ pub struct SwarmReport {
     /// The tyre written (every channel fitted).
     #[serde(skip)]
     pub tyre: Tyre,
+    /// The text of the tyre file, its header included, checked to be read
+    /// back by the tyre reader.
+    #[serde(skip)]
+    pub file: String,
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
     /// Pressure levels pooled into one fit (a warning when more than one).
     #[serde(skip)]
     pub pressures_pooled: usize,
+    /// Camber levels pooled into one fit of a model without camber terms
+    /// (a warning when more than one; 0 for a model with them).
+    #[serde(skip)]
+    pub cambers_pooled: usize,
     /// The conditions of the first channel.
     #[serde(skip)]
     pub conditions: Vec<Condition>,
@@ -205,17 +221,31 @@ impl IdentifyReport {
         }
     }
 
-    /// Warnings on the fit's inputs.
+    /// Warnings on the fit's inputs: levels pooled into a model without
+    /// terms for them.
     pub fn warnings(&self) -> Vec<String> {
-        match self {
-            IdentifyReport::Swarm(r) if r.options.pressure.is_none() && r.pressures_pooled > 1 => {
-                vec![format!(
-                    "{} pressures pooled into one {} fit, which has no pressure terms: select one with --pressure",
-                    r.pressures_pooled, r.options.model
-                )]
-            }
-            _ => Vec::new(),
-        }
+        let IdentifyReport::Swarm(r) = self else {
+            return Vec::new();
+        };
+        let pooled = [
+            (
+                "pressures",
+                "pressure",
+                r.options.pressure,
+                r.pressures_pooled,
+            ),
+            ("cambers", "camber", r.options.camber, r.cambers_pooled),
+        ];
+        pooled
+            .into_iter()
+            .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
+            .map(|(levels, option, _, n)| {
+                format!(
+                    "{n} {levels} pooled into one {} fit, which has no {option} terms: select one with --{option}",
+                    r.options.model
+                )
+            })
+            .collect()
     }
 
     /// The report in lines of text.
@@ -239,25 +269,7 @@ impl IdentifyReport {
         let files = self.outputs();
         match self {
             IdentifyReport::Swarm(r) => {
-                let text = toml::to_string(&r.tyre).map_err(|e| OutputError::Tyre {
-                    path: files[0].clone(),
-                    source: e,
-                })?;
-                let holds: String = r
-                    .options
-                    .hold
-                    .iter()
-                    .map(|(n, v)| format!(" --hold {n}={v}"))
-                    .collect();
-                let header = format!(
-                    "# Identified by `handling identify {} --model {} --seed {}{holds}`: sigma {:.3} %.\n",
-                    r.options.data.display(),
-                    r.options.model,
-                    r.options.seed,
-                    r.fit.sigma_percent
-                );
-                let held = held_file_lines(&r.held, "#");
-                write_bytes(&files[0], format!("{header}{held}{text}").as_bytes())?;
+                write_bytes(&files[0], r.file.as_bytes())?;
                 write_json_sorted(&files[1], r)?;
                 self.figure().save(&files[2])
             }
@@ -362,27 +374,42 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     let lock = output_lock(o)?;
     // The models fitted here have no pressure terms: several pressures
     // pooled into one parameter set blur their differences into the fit.
-    let pressures_pooled = grouped
-        .report
-        .levels
-        .iter()
-        .find(|l| l.variable == Variable::Pressure)
-        .map_or(0, |l| l.levels.len());
+    let levels_of = |v: Variable| {
+        grouped
+            .report
+            .levels
+            .iter()
+            .find(|l| l.variable == v)
+            .map_or(0, |l| l.levels.len())
+    };
+    let pressures_pooled = levels_of(Variable::Pressure);
+    // A model whose lateral fit frees nothing more with more cambers has
+    // no camber terms: pooled cambers blur into it alike.
+    let many = 1000;
+    let camber_terms = tyre0.lateral_free(many, many) != tyre0.lateral_free(many, 1);
+    let cambers_pooled = if camber_terms {
+        0
+    } else {
+        levels_of(Variable::Camber)
+    };
     let fit = fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
         .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
+        file: String::new(),
         fit,
         two_stage: None,
         written: None,
         aligning: None,
         longitudinal: None,
         data: o.data.display().to_string(),
+        recorded: o.recorded(),
         held: Vec::new(),
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
         pressures_pooled,
+        cambers_pooled,
         conditions,
         longitudinal_conditions: Vec::new(),
         lock,
@@ -433,9 +460,12 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .collect();
     r.held = holds_of(o, &fitted);
     let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
-    r.held
-        .extend(held_by_fits(fits.into_iter().flatten(), &r.tyre));
+    r.held.extend(held_by_fits(
+        &fits.into_iter().flatten().collect::<Vec<_>>(),
+        &r.tyre,
+    ));
     finite_fits(&r).map_err(on_data(o, None))?;
+    r.file = written::tyre_file_text(&r, &o.output_path())?;
     Ok(r)
 }
 
@@ -454,131 +484,4 @@ fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
         }
     }
     Ok(())
-}
-
-impl SwarmReport {
-    /// The report in lines of text.
-    pub fn summary(&self) -> Vec<String> {
-        let o = &self.options;
-        let mut out = vec![format!(
-            "{}: {}; model {}, seed {}",
-            o.data.display(),
-            crate::jobs::shard::plural(self.conditions.len(), "condition", "conditions"),
-            o.model,
-            o.seed
-        )];
-        out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
-        out.extend(held_lines(&self.held));
-        let two_stage_asked = o
-            .model
-            .swarm_model()
-            .is_some_and(|m| m.identification() == Identification::SwarmAndTwoStage);
-        if self.two_stage.is_none() && two_stage_asked && !o.hold.is_empty() {
-            out.push("  two-stage (Zhang et al. 2021): not run, it fits every coefficient and --hold holds some; the direct fit written".into());
-        }
-        if let Some(t) = &self.two_stage {
-            // Two statistics: the paper's mean of the conditions' σ, and the
-            // σ over all points that is compared with the direct fit's and
-            // written; a lone "after the joint polish" read as the latter.
-            out.push(format!(
-                "  two-stage (Zhang et al. 2021): mean of the conditions' σ: stage 1 {:.3} %, stage 2 {:.3} %, after the joint polish {:.3} %; σ over all points after the joint polish {:.3} % (direct fit {:.3} %)",
-                t.stages.stage1_mean_sigma,
-                t.stages.stage2_mean_sigma,
-                t.stages.polished_mean_sigma,
-                t.polished_overall_sigma_percent,
-                t.direct_sigma_percent
-            ));
-        }
-        let f = &self.fit;
-        out.push(format!(
-            "  σ {:.3} % (PSO alone {:.3} %), RMS {} N, {} evaluations, {:.2} s",
-            f.sigma_percent,
-            f.sigma_pso_percent,
-            decimals_or_digits(f.rms, 1, 3),
-            f.evaluations,
-            f.seconds
-        ));
-        for c in &f.curves {
-            // Levels as the grouping's lines and the figure spell them.
-            out.push(format!(
-                "    Fz {:>9}, camber {:>6}, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
-                Variable::Load.display(c.fz),
-                Variable::Camber.display(c.camber),
-                c.pressure
-                    .map_or("—".into(), |p| Variable::Pressure.display(p)),
-                c.points,
-                c.sigma_percent,
-                decimals_or_digits(c.rms, 1, 3)
-            ));
-        }
-        out.extend(parameter_warnings(f, &o.hold));
-        if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
-            // With the digits that tell the two apart: it was chosen for
-            // being lower, which three decimals can hide.
-            let (c, d, differ) = distinct(
-                t.polished_overall_sigma_percent,
-                t.direct_sigma_percent,
-                3,
-                6,
-            );
-            out.push(if differ {
-                format!("  writing the two-stage result (σ over all points {c} % < direct {d} %)")
-            } else {
-                format!("  writing the two-stage result (σ over all points {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
-            });
-        }
-        if let (Some(Written::Direct), Some(t)) = (self.written, &self.two_stage) {
-            let (d, c, differ) = distinct(
-                t.direct_sigma_percent,
-                t.polished_overall_sigma_percent,
-                3,
-                6,
-            );
-            out.push(if differ {
-                format!("  writing the direct fit (σ over all points {d} % ≤ two-stage {c} %)")
-            } else {
-                format!("  writing the direct fit (σ over all points {d} %, the two-stage result's {c} % to the printed precision, not lower beyond it)")
-            });
-        }
-        if let Some(mz) = &self.aligning {
-            out.push(format!(
-                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
-                mz.sigma_percent,
-                mz.sigma_pso_percent,
-                decimals_or_digits(mz.rms, 2, 3),
-                mz.seconds
-            ));
-            out.extend(parameter_warnings(mz, &o.hold));
-        }
-        if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
-            out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
-            out.push(format!(
-                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {} N, {:.2} s",
-                fx.sigma_percent,
-                fx.sigma_pso_percent,
-                decimals_or_digits(fx.rms, 1, 3),
-                fx.seconds
-            ));
-            out.extend(parameter_warnings(fx, &o.hold));
-        }
-        out
-    }
-}
-
-/// The parameters of a fit held at a value in `hold`, and those that
-/// carry a warning, one line each.
-fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
-    f.parameters
-        .iter()
-        .filter_map(|p| {
-            if !p.free && hold.iter().any(|(h, _)| *h == p.name) {
-                return Some(format!(
-                    "  held: {} = {}: given with --hold",
-                    p.name, p.value
-                ));
-            }
-            let w = p.warning.as_deref()?;
-            Some(format!("  warning: {} = {:.6}: {w}", p.name, p.value))
-        })
-        .collect()
 }

@@ -30,6 +30,9 @@ pub struct StagedJob {
     pub report: StagedReport,
     /// The data file.
     pub data: String,
+    /// The options that change the fit, and the command that repeats it.
+    #[serde(rename = "options")]
+    pub recorded: super::RecordedOptions,
     /// Samples and rows fitted.
     pub rows: RowAccount,
     /// The coefficients held with `--hold` (each written at its value).
@@ -115,6 +118,9 @@ impl StagedJob {
             }));
         }
         out.push(format!("  {}", self.sigma_pooled.line()));
+        out.extend(
+            no_longitudinal_data(&self.report, o.template.is_some()).map(|l| format!("  {l}")),
+        );
         out
     }
 }
@@ -149,6 +155,15 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         o.alpha_bin_deg.to_radians(),
         default_speed,
     )?;
+    // The rows' ranges as the fit's and the file's validity ranges: a
+    // template's own (a pressure range of 200–400 kPa) would saturate data
+    // outside them in the fit, and the file would extrapolate past the
+    // data silently.
+    let spans = super::ranges::row_spans(&prepared.rows);
+    let template_tyre = template_tyre.map(|mut t| {
+        t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
+        t
+    });
     let settings = mf_staged::Settings {
         version: fit.version,
         start: match o.start {
@@ -184,9 +199,14 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     if o.template.is_none() {
         held.extend(constants_held(&id.tyre, &data, o));
     }
+    let mut written = id.tyre.clone();
+    written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
+    let no_fx = no_longitudinal_data(&id.report, o.template.is_some());
     let tir = held_comment(o)
+        + &super::ranges::tir_comment(&spans, o.template.is_some())
+        + &no_fx.iter().map(|l| format!("$ {l}\n")).collect::<String>()
         + &super::holds::held_file_lines(&held, "$")
-        + &crate::io::tir::tir_text(&id.tyre, template.as_ref())?;
+        + &crate::io::tir::tir_text(&written, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
@@ -209,6 +229,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         held,
         report: id.report,
         data: o.data.display().to_string(),
+        recorded: o.recorded(),
         rows: prepared.account,
         sigma_pooled,
         round_trip_relative_difference: back,
@@ -219,23 +240,12 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     })
 }
 
-/// The comment lines that open a .tir fitted with `--hold`: the command
-/// and each coefficient held at the value given, not fitted (empty
-/// without a hold). A `$` line is a comment wherever it stands.
+/// The comment lines that open a written .tir: the command that repeats
+/// the fit (every option that changes it) and each coefficient held at
+/// the value given, not fitted. A `$` line is a comment wherever it
+/// stands.
 fn held_comment(o: &Options) -> String {
-    if o.hold.is_empty() {
-        return String::new();
-    }
-    let holds: String = o
-        .hold
-        .iter()
-        .map(|(n, v)| format!(" --hold {n}={}", exact(*v)))
-        .collect();
-    let mut s = format!(
-        "$ identified by `handling identify {} --model {}{holds}`\n",
-        o.data.display(),
-        o.model
-    );
+    let mut s = format!("$ identified by `{}`\n", o.command());
     for (n, v) in &o.hold {
         s += &format!(
             "$ held: {n} = {}: given with --hold, not fitted (SI units)\n",
@@ -243,6 +253,25 @@ fn held_comment(o: &Options) -> String {
         );
     }
     s
+}
+
+/// The line saying that the file's longitudinal force is not fitted,
+/// when the pure Fx stage had no rows (a cornering-only rig file): its
+/// coefficients are the template's (`template`) or the defaults.
+pub(super) fn no_longitudinal_data(report: &StagedReport, template: bool) -> Option<String> {
+    let pure_fx = report
+        .stages
+        .iter()
+        .find(|s| s.stage == mf_staged::Stage::PureFx)?;
+    let why = pure_fx.skipped.as_ref()?;
+    let from = if template {
+        "the template's values"
+    } else {
+        "the defaults (no --template)"
+    };
+    Some(format!(
+        "no longitudinal data: the file's longitudinal force coefficients are not fitted ({why}): {from}"
+    ))
 }
 
 /// The names given with `--hold`: a given value is set before the stages

@@ -1,0 +1,93 @@
+//! What a swarm fit of `identify` tells its user beside the numbers, on
+//! the terminal and in the written file's header alike: a parameter one
+//! fit held and a later one fitted (Gim's contact length, fitted to the
+//! aligning moment), and a channel the model does not follow (an aligning
+//! moment's σ above [`LARGE_SIGMA_PERCENT`]).
+
+use super::SwarmReport;
+use crate::format::{fixed, readable};
+use crate::identify::{Fit, HeldFor};
+
+/// The σ of a fitted channel above which the model is said not to follow
+/// the data, %: a fit that misses by a fifth of the measured values.
+pub(crate) const LARGE_SIGMA_PERCENT: f64 = 20.0;
+
+/// A line of what the fit tells: a plain statement, or a warning.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Note {
+    /// The text, without a mark.
+    pub text: String,
+    /// A warning (said `warning:`).
+    pub warning: bool,
+}
+
+impl Note {
+    fn said(text: String) -> Self {
+        Note {
+            text,
+            warning: false,
+        }
+    }
+    fn warned(text: String) -> Self {
+        Note {
+            text,
+            warning: true,
+        }
+    }
+
+    /// The note as a line after `mark` (`  ` on the terminal, `#` in a
+    /// TOML file).
+    pub(crate) fn line(&self, mark: &str) -> String {
+        let w = if self.warning { "warning: " } else { "" };
+        format!("{mark} {w}{}", self.text)
+    }
+}
+
+/// The notes of a fit's later channel `f` (the aligning moment, the
+/// longitudinal force): each parameter the first fit held by design that
+/// `f` fitted, with its value and standard error, and a warning when `f`'s
+/// σ is large.
+pub(crate) fn later_fit_notes(r: &SwarmReport, f: &Fit) -> Vec<Note> {
+    let quantity = f.channel.quantity();
+    let mut notes: Vec<Note> = f
+        .parameters
+        .iter()
+        .filter(|p| p.free && held_by_design(&r.fit, &p.name))
+        .map(|p| {
+            let se = p.std_error.map_or("no standard error".into(), |s| {
+                format!("standard error {}", readable(s, 2))
+            });
+            Note::said(format!(
+                "{} = {} ({se}): fitted to the {quantity} (σ {} %), not to the {}",
+                p.name,
+                readable(p.value, 4),
+                fixed(f.sigma_percent, 1),
+                r.fit.channel.quantity()
+            ))
+        })
+        .collect();
+    if f.sigma_percent > LARGE_SIGMA_PERCENT {
+        notes.push(Note::warned(format!(
+            "the {quantity}'s σ is {} %: the {} model's {quantity} does not follow these data (a σ above {LARGE_SIGMA_PERCENT} % misses by more than a fifth of the measured values); do not rely on its {quantity}",
+            fixed(f.sigma_percent, 1),
+            f.model
+        )));
+    }
+    notes
+}
+
+/// Whether `fit` holds its parameter `name` by the model's design.
+fn held_by_design(fit: &Fit, name: &str) -> bool {
+    fit.parameters
+        .iter()
+        .any(|p| p.name == name && p.held == Some(HeldFor::ByDesign))
+}
+
+/// Every note of `r`, in the order the terminal gives them.
+pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
+    [r.aligning.as_ref(), r.longitudinal.as_ref()]
+        .into_iter()
+        .flatten()
+        .flat_map(|f| later_fit_notes(r, f))
+        .collect()
+}

@@ -1,0 +1,161 @@
+//! The ranges of the rig data a fit was made on (load, slip angle, slip
+//! ratio, camber, pressure), which the written file states: a `.tir`'s
+//! validity ranges (`FZMIN`…`PRESMAX`, so that `tyre-eval` saturates past
+//! the data instead of extrapolating silently) with a `$` comment, and a
+//! `#` comment in a TOML tyre. A variable the rows hold at one value has
+//! no range written (a slip-ratio range of 0 to 0 would cut every
+//! longitudinal force off), and the comment says so.
+
+use crate::format::readable;
+use crate::identify::data::{Condition, Sweep};
+use crate::identify::mf_staged::MfRow;
+use crate::tyre::mf::{MfLimits, TyreSide};
+
+/// A variable's smallest and largest value over some rows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Span {
+    /// The variable, as the rig file names it.
+    pub name: &'static str,
+    /// Its unit in the comment.
+    pub unit: &'static str,
+    /// Smallest value (the crate's convention, SI).
+    pub lo: f64,
+    /// Largest value.
+    pub hi: f64,
+}
+
+impl Span {
+    /// The span of `values` (`None`: no value).
+    fn of(
+        name: &'static str,
+        unit: &'static str,
+        values: impl Iterator<Item = f64>,
+    ) -> Option<Span> {
+        let (lo, hi) = values
+            .filter(|v| v.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            });
+        (lo <= hi).then_some(Span { name, unit, lo, hi })
+    }
+
+    /// `fz 534 to 2751 N`, or `kappa at 0` for one value.
+    fn text(&self) -> String {
+        let unit = if self.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", self.unit)
+        };
+        if self.lo < self.hi {
+            format!(
+                "{} {} to {}{unit}",
+                self.name,
+                readable(self.lo, 4),
+                readable(self.hi, 4)
+            )
+        } else {
+            format!("{} at {}{unit}", self.name, readable(self.lo, 4))
+        }
+    }
+}
+
+/// The spans of the staged fit's rows: load, slip ratio, slip angle,
+/// camber, pressure (where measured).
+pub(crate) fn row_spans(rows: &[MfRow]) -> Vec<Span> {
+    [
+        Span::of("fz", "N", rows.iter().map(|r| r.fz)),
+        Span::of("kappa", "", rows.iter().map(|r| r.kappa)),
+        Span::of("alpha", "rad", rows.iter().map(|r| r.alpha)),
+        Span::of("camber", "rad", rows.iter().map(|r| r.camber)),
+        Span::of("pressure", "Pa", rows.iter().filter_map(|r| r.pressure)),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// The validity ranges of `spans` in the file frame of a tyre of `side`
+/// (a left tyre's ISO slip angle is the crate's negated; a right tyre's
+/// inclination is the camber negated), a range for each span that is not
+/// one value; `base` keeps the others.
+pub(crate) fn mf_limits(spans: &[Span], side: TyreSide, base: MfLimits) -> MfLimits {
+    let mut limits = base;
+    for s in spans.iter().filter(|s| s.lo < s.hi) {
+        let flip = match (s.name, side) {
+            ("alpha", TyreSide::Left) | ("camber", TyreSide::Right) => -1.0,
+            _ => 1.0,
+        };
+        let (a, b) = (flip * s.lo, flip * s.hi);
+        let keys = match s.name {
+            "fz" => ["FZMIN", "FZMAX"],
+            "kappa" => ["KPUMIN", "KPUMAX"],
+            "alpha" => ["ALPMIN", "ALPMAX"],
+            "camber" => ["CAMMIN", "CAMMAX"],
+            _ => ["PRESMIN", "PRESMAX"],
+        };
+        limits.set(keys[0], a.min(b));
+        limits.set(keys[1], a.max(b));
+    }
+    limits
+}
+
+/// The comment on the ranges of a `.tir`: those written, and the
+/// variables held at one value, whose range is not written (`kept`: the
+/// template's, where it gives one).
+pub(crate) fn tir_comment(spans: &[Span], template: bool) -> String {
+    let varied: Vec<String> = spans
+        .iter()
+        .filter(|s| s.lo < s.hi)
+        .map(Span::text)
+        .collect();
+    let fixed: Vec<String> = spans
+        .iter()
+        .filter(|s| s.lo >= s.hi)
+        .map(Span::text)
+        .collect();
+    let mut s = format!(
+        "$ validity ranges: those of the rig rows fitted ({}), written as FZMIN…PRESMAX\n",
+        varied.join(", ")
+    );
+    if !fixed.is_empty() {
+        let kept = if template {
+            "the template's range, if any, is kept"
+        } else {
+            "no range is written"
+        };
+        s += &format!("$ at one value in the rows: {}: {kept}\n", fixed.join(", "));
+    }
+    s
+}
+
+/// The spans of a swarm fit's conditions: load, slip angle or ratio,
+/// camber.
+pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
+    let points = || conditions.iter().flat_map(|c| &c.points);
+    let alpha = points().filter_map(|p| match p.sweep {
+        Sweep::Lateral { alpha, .. } => Some(alpha),
+        _ => None,
+    });
+    let kappa = points().filter_map(|p| match p.sweep {
+        Sweep::Longitudinal { kappa, .. } => Some(kappa),
+        _ => None,
+    });
+    [
+        Span::of("fz", "N", points().map(|p| p.fz)),
+        Span::of("alpha", "rad", alpha),
+        Span::of("kappa", "", kappa),
+        Span::of("camber", "rad", points().map(|p| p.camber)),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// The line on a swarm fit's data ranges (without its mark).
+pub(crate) fn toml_line(spans: &[Span]) -> String {
+    let all: Vec<String> = spans.iter().map(Span::text).collect();
+    format!(
+        "ranges of the rig data fitted: {}; the tyre is not checked beyond them",
+        all.join(", ")
+    )
+}

@@ -1,0 +1,140 @@
+//! The terminal's lines of a swarm fit of `identify`: the data and their
+//! levels, the holds, each channel's σ and curves, and the warnings on
+//! its parameters.
+
+use super::holds::held_lines;
+use super::notes::later_fit_notes;
+use super::{SwarmReport, Written};
+use crate::format::{decimals_or_digits, distinct};
+use crate::identify::grouping::Variable;
+use crate::identify::Fit;
+use crate::tyre::Identification;
+
+impl SwarmReport {
+    /// The report in lines of text.
+    pub fn summary(&self) -> Vec<String> {
+        let o = &self.options;
+        let mut out = vec![format!(
+            "{}: {}; model {}, seed {}",
+            o.data.display(),
+            crate::jobs::shard::plural(self.conditions.len(), "condition", "conditions"),
+            o.model,
+            o.seed
+        )];
+        out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
+        out.extend(held_lines(&self.held));
+        let two_stage_asked = o
+            .model
+            .swarm_model()
+            .is_some_and(|m| m.identification() == Identification::SwarmAndTwoStage);
+        if self.two_stage.is_none() && two_stage_asked && !o.hold.is_empty() {
+            out.push("  two-stage (Zhang et al. 2021): not run, it fits every coefficient and --hold holds some; the direct fit written".into());
+        }
+        if let Some(t) = &self.two_stage {
+            // Two statistics: the paper's mean of the conditions' σ, and the
+            // σ over all points that is compared with the direct fit's and
+            // written; a lone "after the joint polish" read as the latter.
+            out.push(format!(
+                "  two-stage (Zhang et al. 2021): mean of the conditions' σ: stage 1 {:.3} %, stage 2 {:.3} %, after the joint polish {:.3} %; σ over all points after the joint polish {:.3} % (direct fit {:.3} %)",
+                t.stages.stage1_mean_sigma,
+                t.stages.stage2_mean_sigma,
+                t.stages.polished_mean_sigma,
+                t.polished_overall_sigma_percent,
+                t.direct_sigma_percent
+            ));
+        }
+        let f = &self.fit;
+        out.push(format!(
+            "  σ {:.3} % (PSO alone {:.3} %), RMS {} N, {} evaluations, {:.2} s",
+            f.sigma_percent,
+            f.sigma_pso_percent,
+            decimals_or_digits(f.rms, 1, 3),
+            f.evaluations,
+            f.seconds
+        ));
+        for c in &f.curves {
+            // Levels as the grouping's lines and the figure spell them.
+            out.push(format!(
+                "    Fz {:>9}, camber {:>6}, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
+                Variable::Load.display(c.fz),
+                Variable::Camber.display(c.camber),
+                c.pressure
+                    .map_or("—".into(), |p| Variable::Pressure.display(p)),
+                c.points,
+                c.sigma_percent,
+                decimals_or_digits(c.rms, 1, 3)
+            ));
+        }
+        out.extend(parameter_warnings(f, &o.hold));
+        if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
+            // With the digits that tell the two apart: it was chosen for
+            // being lower, which three decimals can hide.
+            let (c, d, differ) = distinct(
+                t.polished_overall_sigma_percent,
+                t.direct_sigma_percent,
+                3,
+                6,
+            );
+            out.push(if differ {
+                format!("  writing the two-stage result (σ over all points {c} % < direct {d} %)")
+            } else {
+                format!("  writing the two-stage result (σ over all points {c} %, the direct fit's {d} % to the printed precision, lower beyond it)")
+            });
+        }
+        if let (Some(Written::Direct), Some(t)) = (self.written, &self.two_stage) {
+            let (d, c, differ) = distinct(
+                t.direct_sigma_percent,
+                t.polished_overall_sigma_percent,
+                3,
+                6,
+            );
+            out.push(if differ {
+                format!("  writing the direct fit (σ over all points {d} % ≤ two-stage {c} %)")
+            } else {
+                format!("  writing the direct fit (σ over all points {d} %, the two-stage result's {c} % to the printed precision, not lower beyond it)")
+            });
+        }
+        if let Some(mz) = &self.aligning {
+            out.push(format!(
+                "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
+                mz.sigma_percent,
+                mz.sigma_pso_percent,
+                decimals_or_digits(mz.rms, 2, 3),
+                mz.seconds
+            ));
+            out.extend(parameter_warnings(mz, &o.hold));
+            out.extend(later_fit_notes(self, mz).iter().map(|n| n.line(" ")));
+        }
+        if let (Some(g), Some(fx)) = (&self.longitudinal_grouping, &self.longitudinal) {
+            out.extend(g.lines().iter().map(|l| format!("  longitudinal: {l}")));
+            out.push(format!(
+                "  longitudinal force: σ {:.3} % (PSO alone {:.3} %), RMS {} N, {:.2} s",
+                fx.sigma_percent,
+                fx.sigma_pso_percent,
+                decimals_or_digits(fx.rms, 1, 3),
+                fx.seconds
+            ));
+            out.extend(parameter_warnings(fx, &o.hold));
+            out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
+        }
+        out
+    }
+}
+
+/// The parameters of a fit held at a value in `hold`, and those that
+/// carry a warning, one line each.
+fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
+    f.parameters
+        .iter()
+        .filter_map(|p| {
+            if !p.free && hold.iter().any(|(h, _)| *h == p.name) {
+                return Some(format!(
+                    "  held: {} = {}: given with --hold",
+                    p.name, p.value
+                ));
+            }
+            let w = p.warning.as_deref()?;
+            Some(format!("  warning: {} = {:.6}: {w}", p.name, p.value))
+        })
+        .collect()
+}

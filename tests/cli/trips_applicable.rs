@@ -5,6 +5,17 @@
 
 use super::*;
 
+/// `simulate <file> --out <its folder>/out`.
+fn simulated(file: &Path) -> Output {
+    let out = file.parent().unwrap().join("out");
+    run(&[
+        "simulate",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
 fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
@@ -17,12 +28,7 @@ fn step(speed: f64, steer: f64) -> (String, serde_json::Value) {
     );
     let dir = scenario(VEHICLE, GIM, &manoeuvre);
     let out = dir.path().join("out");
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = simulated(&dir.path().join("scenario.toml"));
     assert!(o.status.success(), "{}", stderr(&o));
     (stdout(&o), read_json(&out.join("metrics.json")))
 }
@@ -39,12 +45,7 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         .replace("../tyres/", &format!("{}/tyres/", root().display()));
     let dir = scratch(&[("s.toml", &sedan)]);
     let out = dir.path().join("out");
-    let o = run(&[
-        "simulate",
-        dir.path().join("s.toml").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = simulated(&dir.path().join("s.toml"));
     assert!(o.status.success(), "{}", stderr(&o));
     let said = stdout(&o);
     assert!(
@@ -236,12 +237,7 @@ fn simulate_refuses_rows_too_coarse_for_the_steers_frequency() {
     let manoeuvre = "[manoeuvre]\nkind = \"sweep\"\nspeed = 22.2\namplitude = 0.02\nf_start = 0.1\nf_end = 40.0\nstart = 1.0\nend = 6.0\n\n[simulation]\nstep = 0.02\n";
     let dir = scenario(VEHICLE, GIM, manoeuvre);
     let path = dir.path().join("scenario.toml");
-    let o = run(&[
-        "simulate",
-        path.to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let o = simulated(&path);
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
@@ -253,21 +249,11 @@ fn simulate_refuses_rows_too_coarse_for_the_steers_frequency() {
     // At the Nyquist step it runs; a sine at 30 Hz is held to the same rule.
     let at = manoeuvre.replace("step = 0.02", "step = 0.0125");
     let dir = scenario(VEHICLE, GIM, &at);
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let o = simulated(&dir.path().join("scenario.toml"));
     assert!(o.status.success(), "{}", stderr(&o));
     let sine = "[manoeuvre]\nkind = \"sine\"\nspeed = 22.2\namplitude = 0.02\nfrequency = 30.0\nstart = 1.0\nend = 3.0\n\n[simulation]\nstep = 0.02\n";
     let dir = scenario(VEHICLE, GIM, sine);
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let o = simulated(&dir.path().join("scenario.toml"));
     assert!(
         stderr(&o).contains("`manoeuvre.frequency` = 30: the rows every 0.02 s"),
         "{}",
@@ -293,12 +279,7 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
     // from the PNG's IHDR).
     let said_drawn = |text: String| {
         let dir = scratch(&[("s.toml", &text)]);
-        let o = run(&[
-            "simulate",
-            dir.path().join("s.toml").to_str().unwrap(),
-            "--out",
-            dir.path().join("out").to_str().unwrap(),
-        ]);
+        let o = simulated(&dir.path().join("s.toml"));
         assert!(o.status.success(), "{}", stderr(&o));
         let png = fs::read(dir.path().join("out/response.png")).unwrap();
         let height = u32::from_be_bytes(png[20..24].try_into().unwrap());

@@ -305,9 +305,9 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
             vec![
                 Cell::Text(s.channel.name().into()),
                 Cell::Text(s.channel.unit().into()),
-                Cell::Number(number(s.before)),
-                Cell::Number(number(s.after)),
-                Cell::Number(number(s.noise_floor)),
+                Cell::Number(words::rms(s.before)),
+                Cell::Number(words::rms(s.after)),
+                Cell::Number(words::rms(s.noise_floor)),
                 channel_reduction(s),
                 Cell::Number(s.samples.to_string()),
             ]

@@ -247,12 +247,19 @@ pub fn channel_change(s: &Shrinkage) -> String {
         ChannelChange::Worsened(p) => format!("{p:.0} % of the gap above noise added"),
     };
     format!(
-        "{:<9} {:.4} → {:.4} (noise floor {:.4}): {what}",
+        "{:<9} {} → {} (noise floor {}): {what}",
         s.channel.name(),
-        s.before,
-        s.after,
-        s.noise_floor
+        rms(s.before),
+        rms(s.after),
+        rms(s.noise_floor)
     )
+}
+
+/// An RMS or a noise floor as the terminal and the page print it: four
+/// decimals where they show two significant digits, else two significant
+/// digits (0.0032 rad/s, 0.00021 rad), one text for one number.
+pub fn rms(v: f64) -> String {
+    crate::format::decimals_or_digits(v, 4, 2)
 }
 
 /// A ranked candidate's warnings in one line (None without any).

@@ -402,6 +402,16 @@ fn a_channel_within_noise_is_said_so_on_the_terminal_as_on_the_page() {
         channel_change(&s),
         "beta      0.0021 → 0.0022 (noise floor 0.0020): not significant (within 3 noise floors)"
     );
+    // The page's cells are these texts: 0.00325 was 3.250e-3 there and
+    // 0.0032 here; a floor of 2.1e-4 rad reads as two digits, not 0.0002.
+    assert_eq!(rms(0.0032), "0.0032");
+    assert_eq!(rms(0.00021), "0.00021");
+    assert_eq!(rms(0.2174), "0.2174");
+    let small = crate::diagnose::report::Shrinkage {
+        noise_floor: 0.00021,
+        ..s
+    };
+    assert!(channel_change(&small).contains("(noise floor 0.00021)"));
 }
 
 fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -> GapFinding {

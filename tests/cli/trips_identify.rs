@@ -576,3 +576,48 @@ fn cambers_pooled_into_a_model_without_camber_terms_are_warned_as_pressures_are(
     assert!(e.contains("warning: 2 pressures pooled into one gim fit, which has no pressure terms: select one with --pressure"), "{e}");
     assert!(e.contains(&warning("gim")), "{e}");
 }
+
+/// A longitudinal-only rig file fitted with PAC89 or UniTire kept the
+/// defaults' lateral coefficients silently (a lateral force of another
+/// tyre); a lateral-only one its longitudinal coefficients alike.
+#[test]
+fn a_block_without_data_is_said_not_fitted_on_the_terminal_and_in_the_file() {
+    let mut long = String::from("fz,kappa,fx\n");
+    for fz in [2000.0, 4000.0, 6000.0, 8000.0] {
+        for k in -20..=20 {
+            let kappa = 0.01 * f64::from(k);
+            let fx = 1.2 * fz * (1.6 * (14.0 * kappa).atan()).sin();
+            long += &format!("{fz},{kappa},{fx:.3}\n");
+        }
+    }
+    let not_fitted = |data: &str, what: &str, columns: &str, model: &str| {
+        format!("no {data} data: the file's {what} coefficients are not fitted (no {columns} columns in the data): the defaults' values (the {model} model's start values")
+    };
+    for model in ["pac89", "unitire"] {
+        for (rig, said, unsaid) in [
+            (long.clone(), ("lateral", "lateral force", "alpha/fy"), None),
+            (
+                rig(1.0),
+                ("longitudinal", "longitudinal force", "kappa/fx"),
+                Some(("aligning moment", "aligning moment", "mz")),
+            ),
+        ] {
+            let dir = scratch(&[("rig.csv", &rig)]);
+            let out = dir.path().join("t.toml");
+            let o = identify_with(dir.path(), model, &[], &out);
+            assert!(o.status.success(), "{model}: {}", stderr(&o));
+            let file = std::fs::read_to_string(&out).unwrap();
+            let line = not_fitted(said.0, said.1, said.2, model);
+            assert!(
+                stdout(&o).contains(&format!("  {line}")),
+                "{model}: {}",
+                stdout(&o)
+            );
+            assert!(file.contains(&format!("# {line}")), "{model}: {file}");
+            if let Some(u) = unsaid {
+                // The rig has mz: the aligning moment was fitted.
+                assert!(!file.contains(&not_fitted(u.0, u.1, u.2, model)), "{file}");
+            }
+        }
+    }
+}

@@ -3,7 +3,7 @@
 //! its parameters.
 
 use super::holds::held_lines;
-use super::notes::later_fit_notes;
+use super::notes::{later_fit_notes, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
@@ -117,6 +117,7 @@ impl SwarmReport {
             out.extend(parameter_warnings(fx, &o.hold));
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
+        out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
         out
     }
 }

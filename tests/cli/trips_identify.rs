@@ -621,3 +621,61 @@ fn a_block_without_data_is_said_not_fitted_on_the_terminal_and_in_the_file() {
         }
     }
 }
+
+/// `--model linear` drew a line through saturated data (15.6 kN/rad
+/// against ~57 at zero slip on one load of the Hoosier file) and wrote
+/// `pneumatic_trail = 0` silently.
+#[test]
+fn a_linear_tyre_is_fitted_to_small_slip_and_its_trail_to_mz() {
+    let Some(data) = shared_data(
+        "a_linear_tyre_is_fitted_to_small_slip_and_its_trail_to_mz",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let text = std::fs::read_to_string(data).unwrap();
+    let mut lines = text.lines();
+    let head = lines.next().unwrap();
+    let col = |n: &str| head.split(',').position(|c| c == n).unwrap();
+    let (fz, p, c, a, fy) = (
+        col("fz"),
+        col("pressure"),
+        col("camber"),
+        col("alpha"),
+        col("fy"),
+    );
+    let mut one = format!("{head}\n");
+    let (mut sxy, mut sxx) = (0.0, 0.0);
+    for l in lines {
+        let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+        if (v[p] - 83_400.0).abs() < 2000.0 && v[c].abs() < 0.005 && (v[fz] - 1656.0).abs() < 150.0
+        {
+            one += &format!("{l}\n");
+            if v[a].abs() <= 2f64.to_radians() {
+                (sxy, sxx) = (sxy + v[a] * v[fy], sxx + v[a] * v[a]);
+            }
+        }
+    }
+    let dir = scratch(&[("rig.csv", &one)]);
+    let out = dir.path().join("lin.toml");
+    let o = identify_with(dir.path(), "linear", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = std::fs::read_to_string(&out).unwrap();
+    let tyre: toml::Value = toml::from_str(&file).unwrap();
+    let c_alpha = tyre["cornering_stiffness"].as_float().unwrap();
+    let slope = sxy / sxx;
+    assert!(
+        (c_alpha / slope - 1.0).abs() < 0.15,
+        "{c_alpha} against {slope}"
+    );
+    let window = "linear window: fitted to |alpha| <= 2 deg only (";
+    assert!(file.contains(&format!("# {window}")), "{file}");
+    assert!(stdout(&o).contains(window), "{}", stdout(&o));
+    let report = read_json(&dir.path().join("lin.report.json"));
+    let w = &report["linear_window"];
+    assert!(w["points_left_out"].as_u64().unwrap() > 0, "{w}");
+    let trail = tyre["pneumatic_trail"].as_float().unwrap();
+    assert_eq!(w["pneumatic_trail"].as_f64(), Some(trail), "{w}");
+    assert!(trail != 0.0 && trail.abs() < 0.1, "{trail}");
+    assert!(file.contains("# pneumatic_trail = "), "{file}");
+}

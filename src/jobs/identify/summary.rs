@@ -66,6 +66,9 @@ impl SwarmReport {
             ));
         }
         out.extend(parameter_warnings(f, &o.hold));
+        if let Some(w) = &self.linear_window {
+            out.extend(w.lines(" "));
+        }
         if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
             // With the digits that tell the two apart: it was chosen for
             // being lower, which three decimals can hide.

@@ -14,6 +14,8 @@ use crate::io::rig::read_rig;
 mod choices;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
+mod linear_window;
+pub use linear_window::LinearWindow;
 mod notes;
 mod outputs;
 mod ranges;
@@ -166,6 +168,10 @@ pub struct SwarmReport {
     /// PAC89: which fit was written.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub written: Option<Written>,
+    /// `--model linear`: the small-slip window fitted, the points left
+    /// out and the pneumatic trail.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub linear_window: Option<LinearWindow>,
     /// The aligning moment's fit.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub aligning: Option<Fit>,
@@ -359,7 +365,15 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
             .into())
         }
     };
-    let conditions = grouped.conditions;
+    let mut conditions = grouped.conditions;
+    // A linear tyre is fitted to small slip only (a line through saturated
+    // data is a secant).
+    let mut window = None;
+    if model.as_str() == "linear" && first == Channel::LateralForce {
+        let (kept, w) = linear_window::windowed(conditions);
+        conditions = kept;
+        window = Some(w);
+    }
     if conditions.is_empty() {
         return Err(FitError::NoCondition {
             data: o.data.clone(),
@@ -400,6 +414,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         fit,
         two_stage: None,
         written: None,
+        linear_window: window,
         aligning: None,
         longitudinal: None,
         data: o.data.display().to_string(),
@@ -452,6 +467,10 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         r.longitudinal = Some(fx);
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
+    }
+    if let Some(w) = r.linear_window.as_mut() {
+        w.pneumatic_trail = linear_window::trail(&r.conditions);
+        linear_window::set_trail(&mut r.tyre, w.pneumatic_trail.unwrap_or(0.0));
     }
     let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
         .into_iter()

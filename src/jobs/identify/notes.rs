@@ -2,7 +2,10 @@
 //! the terminal and in the written file's header alike: a parameter one
 //! fit held and a later one fitted (Gim's contact length, fitted to the
 //! aligning moment), and a channel the model does not follow (an aligning
-//! moment's σ above [`LARGE_SIGMA_PERCENT`]).
+//! moment's σ above [`LARGE_SIGMA_PERCENT`]), and a block of the model
+//! no fit ran on for want of its columns (a longitudinal-only rig file
+//! fitted with PAC89 or UniTire keeps the defaults' lateral coefficients),
+//! in the words of the Magic Formula's `no longitudinal data` line.
 
 use super::SwarmReport;
 use crate::format::{fixed, readable};
@@ -83,11 +86,45 @@ fn held_by_design(fit: &Fit, name: &str) -> bool {
         .any(|p| p.name == name && p.held == Some(HeldFor::ByDesign))
 }
 
+/// The blocks of the written tyre no fit ran on, for want of their
+/// columns in the data: each says its coefficients are the model's
+/// defaults (its start values at the data's median load), not fitted.
+pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
+    use crate::identify::Channel;
+    let lateral = r.fit.channel == Channel::LateralForce;
+    let blocks = [
+        ("lateral", "lateral force", "alpha/fy", !lateral),
+        (
+            "aligning moment",
+            "aligning moment",
+            "mz",
+            r.aligning.is_none() && !r.tyre.aligning_names().is_empty(),
+        ),
+        (
+            "longitudinal",
+            "longitudinal force",
+            "kappa/fx",
+            lateral && r.longitudinal.is_none() && !r.tyre.longitudinal_names().is_empty(),
+        ),
+    ];
+    blocks
+        .into_iter()
+        .filter(|b| b.3)
+        .map(|(data, quantity, columns, _)| {
+            Note::said(format!(
+                "no {data} data: the file's {quantity} coefficients are not fitted (no {columns} columns in the data): the defaults' values (the {} model's start values at the data's median load)",
+                r.options.model
+            ))
+        })
+        .collect()
+}
+
 /// Every note of `r`, in the order the terminal gives them.
 pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
     [r.aligning.as_ref(), r.longitudinal.as_ref()]
         .into_iter()
         .flatten()
         .flat_map(|f| later_fit_notes(r, f))
+        .chain(unfitted_notes(r))
         .collect()
 }

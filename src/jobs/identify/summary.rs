@@ -3,7 +3,7 @@
 //! its parameters.
 
 use super::holds::held_lines;
-use super::notes::later_fit_notes;
+use super::notes::{later_fit_notes, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
@@ -66,6 +66,9 @@ impl SwarmReport {
             ));
         }
         out.extend(parameter_warnings(f, &o.hold));
+        if let Some(w) = &self.linear_window {
+            out.extend(w.lines(" "));
+        }
         if let (Some(Written::TwoStage), Some(t)) = (self.written, &self.two_stage) {
             // With the digits that tell the two apart: it was chosen for
             // being lower, which three decimals can hide.
@@ -117,6 +120,7 @@ impl SwarmReport {
             out.extend(parameter_warnings(fx, &o.hold));
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
+        out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
         out
     }
 }

@@ -34,7 +34,11 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
         r.fit.sigma_percent
     );
     let held = held_file_lines(&r.held, "#");
-    let notes: String = notes(r).iter().map(|n| n.line("#") + "\n").collect();
+    let window = r.linear_window.iter().flat_map(|w| w.lines("#"));
+    let notes: String = window
+        .chain(notes(r).iter().map(|n| n.line("#")))
+        .map(|l| l + "\n")
+        .collect();
     let conditions: Vec<_> = r
         .conditions
         .iter()

@@ -1,0 +1,94 @@
+//! The window a linear tyre is fitted in. A straight line through
+//! saturated data is a secant, not the tyre's cornering stiffness (15.6
+//! kN/rad through every row of one load of the Hoosier file against 33.8
+//! kN/rad through those with |α| ≤ 2°, 37.6 kN/rad within 1°), so `--model linear` fits only the points of small slip angle,
+//! |α| ≤ [`WINDOW_DEG`] — a rule of this program, chosen as the range
+//! where a passenger-car or racing tyre's lateral force stays close to
+//! its slope at zero slip — and says how many points it left out. Its
+//! pneumatic trail is fitted in the same window when the data have `mz`
+//! (`t_p` = the ratio of the slopes of Mz and Fy on α, as
+//! [`crate::tyre::Linear`] writes `Mz = t_p·Fy`), or said held at 0.
+
+use crate::identify::data::Condition;
+use crate::tyre::Tyre;
+use serde::Serialize;
+
+/// The largest |α| a linear tyre is fitted to, degrees.
+pub(crate) const WINDOW_DEG: f64 = 2.0;
+
+/// The window of a linear fit, as written to the report.
+#[derive(Debug, Clone, Serialize)]
+pub struct LinearWindow {
+    /// The largest |α| fitted, degrees.
+    pub max_abs_alpha_deg: f64,
+    /// Points fitted (after thinning: rows with `--bin-deg 0`).
+    pub points_fitted: usize,
+    /// Points left out, with |α| above the window.
+    pub points_left_out: usize,
+    /// The pneumatic trail fitted in the window, m (`None`: no `mz`, held at 0).
+    pub pneumatic_trail: Option<f64>,
+}
+
+impl LinearWindow {
+    /// The lines said on the terminal (`mark` `" "`) and in the file's
+    /// header (`mark` `"#"`).
+    pub(crate) fn lines(&self, mark: &str) -> Vec<String> {
+        let trail = match self.pneumatic_trail {
+            Some(t) => format!(
+                "pneumatic_trail = {t:.5} m fitted to mz in the same window (the ratio of the slopes of mz and fy on alpha)"
+            ),
+            None => "pneumatic_trail held at 0 (no mz data)".into(),
+        };
+        vec![
+            format!(
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates)",
+                self.max_abs_alpha_deg, self.points_fitted, self.points_left_out
+            ),
+            format!("{mark} {trail}"),
+        ]
+    }
+}
+
+/// `conditions` kept to the window (a condition left with fewer than two
+/// points dropped), and the window's account (no trail yet).
+pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWindow) {
+    let max = WINDOW_DEG.to_radians();
+    let total: usize = conditions.iter().map(|c| c.points.len()).sum();
+    let kept: Vec<Condition> = conditions
+        .into_iter()
+        .map(|mut c| {
+            c.points.retain(|p| p.slip().abs() <= max);
+            c
+        })
+        .filter(|c| c.points.len() >= 2)
+        .collect();
+    let fitted: usize = kept.iter().map(|c| c.points.len()).sum();
+    let w = LinearWindow {
+        max_abs_alpha_deg: WINDOW_DEG,
+        points_fitted: fitted,
+        points_left_out: total - fitted,
+        pneumatic_trail: None,
+    };
+    (kept, w)
+}
+
+/// The pneumatic trail of the points of `conditions` with a measured
+/// `mz`: Σα·Mz / Σα·Fy, the ratio of the least-squares slopes through
+/// zero of Mz and Fy on α (m); `None` without such points.
+pub(crate) fn trail(conditions: &[Condition]) -> Option<f64> {
+    let (mut amz, mut afy) = (0.0, 0.0);
+    for p in conditions.iter().flat_map(|c| &c.points) {
+        if p.mz().is_finite() && p.fy().is_finite() {
+            amz += p.slip() * p.mz();
+            afy += p.slip() * p.fy();
+        }
+    }
+    (afy != 0.0 && amz.is_finite()).then(|| amz / afy)
+}
+
+/// Sets the trail of a linear `tyre` to `t`.
+pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
+    if let Tyre::Linear(l) = tyre {
+        l.pneumatic_trail = t;
+    }
+}

@@ -119,36 +119,32 @@ pub(super) fn held_reasons(
         .collect()
 }
 
-/// The value of parameter `name` in tyre `t` (any block a fit fits), as
-/// written: a held value is stated as the file holds it.
-pub(crate) fn value_in(t: &Tyre, name: &str) -> Option<f64> {
+/// The block of `t` (any a fit fits) that has parameter `name`, and the
+/// parameter's index in it.
+fn place_of(t: &Tyre, name: &str) -> Option<(Channel, usize)> {
     [
         Channel::LateralForce,
         Channel::AligningMoment,
         Channel::LongitudinalForce,
     ]
     .into_iter()
-    .find_map(|c| {
-        let i = c.names(t).iter().position(|n| n == name)?;
-        c.parameters(t).get(i).copied()
-    })
+    .find_map(|c| Some((c, c.names(t).iter().position(|n| n == name)?)))
+}
+
+/// The value of parameter `name` in tyre `t` (any block a fit fits), as
+/// written: a held value is stated as the file holds it.
+pub(crate) fn value_in(t: &Tyre, name: &str) -> Option<f64> {
+    let (c, i) = place_of(t, name)?;
+    c.parameters(t).get(i).copied()
 }
 
 /// `t` with its parameter `name` (any block a fit fits) set to `v`;
 /// `None` when no block of `t` has it.
 pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {
-    [
-        Channel::LateralForce,
-        Channel::AligningMoment,
-        Channel::LongitudinalForce,
-    ]
-    .into_iter()
-    .find_map(|c| {
-        let i = c.names(t).iter().position(|n| n == name)?;
-        let mut p = c.parameters(t);
-        p[i] = v;
-        let mut out = t.clone();
-        c.set(&mut out, &p);
-        Some(out)
-    })
+    let (c, i) = place_of(t, name)?;
+    let mut p = c.parameters(t);
+    p[i] = v;
+    let mut out = t.clone();
+    c.set(&mut out, &p);
+    Some(out)
 }

@@ -234,6 +234,7 @@ mod cross_validation;
 mod design;
 mod diagnose;
 mod identify;
+mod identify_blocks;
 mod magic_formula;
 mod measured_metrics;
 mod messages;

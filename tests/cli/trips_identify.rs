@@ -6,7 +6,7 @@ use super::*;
 
 /// Rig data at 2, 4 and 6 kN, a slip sweep of ±0.2 rad each, with `mz`;
 /// loads divided by `fz_scale`.
-fn rig(fz_scale: f64) -> String {
+pub(super) fn rig(fz_scale: f64) -> String {
     let mut s = String::from("fz,alpha,fy,mz\n");
     for fz in [2000.0, 4000.0, 6000.0] {
         for k in -10..=10 {
@@ -19,7 +19,7 @@ fn rig(fz_scale: f64) -> String {
 }
 
 /// Runs `identify rig.csv --model model args… --out out` in `dir`.
-fn identify_with(dir: &Path, model: &str, args: &[&str], out: &Path) -> Output {
+pub(super) fn identify_with(dir: &Path, model: &str, args: &[&str], out: &Path) -> Output {
     let mut all = vec![
         "identify".to_string(),
         dir.join("rig.csv").display().to_string(),
@@ -41,7 +41,7 @@ fn given(report: &serde_json::Value) -> serde_json::Value {
         .collect()
 }
 
-fn stdout(o: &Output) -> String {
+pub(super) fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
@@ -575,107 +575,4 @@ fn cambers_pooled_into_a_model_without_camber_terms_are_warned_as_pressures_are(
     let e = stderr(&o);
     assert!(e.contains("warning: 2 pressures pooled into one gim fit, which has no pressure terms: select one with --pressure"), "{e}");
     assert!(e.contains(&warning("gim")), "{e}");
-}
-
-/// A longitudinal-only rig file fitted with PAC89 or UniTire kept the
-/// defaults' lateral coefficients silently (a lateral force of another
-/// tyre); a lateral-only one its longitudinal coefficients alike.
-#[test]
-fn a_block_without_data_is_said_not_fitted_on_the_terminal_and_in_the_file() {
-    let mut long = String::from("fz,kappa,fx\n");
-    for fz in [2000.0, 4000.0, 6000.0, 8000.0] {
-        for k in -20..=20 {
-            let kappa = 0.01 * f64::from(k);
-            let fx = 1.2 * fz * (1.6 * (14.0 * kappa).atan()).sin();
-            long += &format!("{fz},{kappa},{fx:.3}\n");
-        }
-    }
-    let not_fitted = |data: &str, what: &str, columns: &str, model: &str| {
-        format!("no {data} data: the file's {what} coefficients are not fitted (no {columns} columns in the data): the defaults' values (the {model} model's start values")
-    };
-    for model in ["pac89", "unitire"] {
-        for (rig, said, unsaid) in [
-            (long.clone(), ("lateral", "lateral force", "alpha/fy"), None),
-            (
-                rig(1.0),
-                ("longitudinal", "longitudinal force", "kappa/fx"),
-                Some(("aligning moment", "aligning moment", "mz")),
-            ),
-        ] {
-            let dir = scratch(&[("rig.csv", &rig)]);
-            let out = dir.path().join("t.toml");
-            let o = identify_with(dir.path(), model, &[], &out);
-            assert!(o.status.success(), "{model}: {}", stderr(&o));
-            let file = std::fs::read_to_string(&out).unwrap();
-            let line = not_fitted(said.0, said.1, said.2, model);
-            assert!(
-                stdout(&o).contains(&format!("  {line}")),
-                "{model}: {}",
-                stdout(&o)
-            );
-            assert!(file.contains(&format!("# {line}")), "{model}: {file}");
-            if let Some(u) = unsaid {
-                // The rig has mz: the aligning moment was fitted.
-                assert!(!file.contains(&not_fitted(u.0, u.1, u.2, model)), "{file}");
-            }
-        }
-    }
-}
-
-/// `--model linear` drew a line through saturated data (15.6 kN/rad
-/// against ~57 at zero slip on one load of the Hoosier file) and wrote
-/// `pneumatic_trail = 0` silently.
-#[test]
-fn a_linear_tyre_is_fitted_to_small_slip_and_its_trail_to_mz() {
-    let Some(data) = shared_data(
-        "a_linear_tyre_is_fitted_to_small_slip_and_its_trail_to_mz",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
-        return;
-    };
-    let text = std::fs::read_to_string(data).unwrap();
-    let mut lines = text.lines();
-    let head = lines.next().unwrap();
-    let col = |n: &str| head.split(',').position(|c| c == n).unwrap();
-    let (fz, p, c, a, fy) = (
-        col("fz"),
-        col("pressure"),
-        col("camber"),
-        col("alpha"),
-        col("fy"),
-    );
-    let mut one = format!("{head}\n");
-    let (mut sxy, mut sxx) = (0.0, 0.0);
-    for l in lines {
-        let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-        if (v[p] - 83_400.0).abs() < 2000.0 && v[c].abs() < 0.005 && (v[fz] - 1656.0).abs() < 150.0
-        {
-            one += &format!("{l}\n");
-            if v[a].abs() <= 2f64.to_radians() {
-                (sxy, sxx) = (sxy + v[a] * v[fy], sxx + v[a] * v[a]);
-            }
-        }
-    }
-    let dir = scratch(&[("rig.csv", &one)]);
-    let out = dir.path().join("lin.toml");
-    let o = identify_with(dir.path(), "linear", &[], &out);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let file = std::fs::read_to_string(&out).unwrap();
-    let tyre: toml::Value = toml::from_str(&file).unwrap();
-    let c_alpha = tyre["cornering_stiffness"].as_float().unwrap();
-    let slope = sxy / sxx;
-    assert!(
-        (c_alpha / slope - 1.0).abs() < 0.15,
-        "{c_alpha} against {slope}"
-    );
-    let window = "linear window: fitted to |alpha| <= 2 deg only (";
-    assert!(file.contains(&format!("# {window}")), "{file}");
-    assert!(stdout(&o).contains(window), "{}", stdout(&o));
-    let report = read_json(&dir.path().join("lin.report.json"));
-    let w = &report["linear_window"];
-    assert!(w["points_left_out"].as_u64().unwrap() > 0, "{w}");
-    let trail = tyre["pneumatic_trail"].as_float().unwrap();
-    assert_eq!(w["pneumatic_trail"].as_f64(), Some(trail), "{w}");
-    assert!(trail != 0.0 && trail.abs() < 0.1, "{trail}");
-    assert!(file.contains("# pneumatic_trail = "), "{file}");
 }

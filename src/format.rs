@@ -59,6 +59,18 @@ pub fn rounded(v: f64, digits: usize) -> String {
         .map_or_else(|_| readable(v, digits), exact)
 }
 
+/// A positive `v` rounded down to `digits` significant digits, written as
+/// [`rounded`] writes it: a limit that must not be exceeded (a step below
+/// 0.016667 s reads `0.0166`, not `0.0167`).
+pub fn rounded_down(v: f64, digits: usize) -> String {
+    if !(v.is_finite() && v > 0.0) {
+        return rounded(v, digits);
+    }
+    let scale = 10f64.powi(digits as i32 - 1 - v.log10().floor() as i32);
+    // A hair of slack so that 0.0125 (stored a little below) stays 0.0125.
+    rounded(((v * scale) * (1.0 + 1e-12)).floor() / scale, digits)
+}
+
 /// `v` with `decimals` decimals where they show two significant digits
 /// or more, else with `digits` significant digits ([`readable`]): an RMS
 /// of 2.7e-4 N reads `0.000275`, not `0.0`, one of 12.34 N `12.3`.
@@ -271,6 +283,10 @@ mod tests {
         assert_eq!(rounded(49.999999, 3), "50");
         assert_eq!(rounded(0.0025, 3), "0.0025");
         assert_eq!(rounded(1.0 / 3.0, 3), "0.333");
+        assert_eq!(rounded_down(0.5 / 30.0, 3), "0.0166");
+        assert_eq!(rounded_down(0.5 / 40.0, 3), "0.0125");
+        assert_eq!(rounded_down(0.4 / 30.0, 2), "0.013");
+        assert_eq!(rounded_down(0.1 / 30.0, 2), "0.0033");
         assert_eq!(decimals_or_digits(0.000275123, 1, 3), "0.000275");
         assert_eq!(decimals_or_digits(12.34, 1, 3), "12.3");
         assert_eq!(decimals_or_digits(0.0, 1, 3), "0.0");

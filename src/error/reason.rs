@@ -29,9 +29,10 @@ pub enum ParamReason {
         min: f64,
     },
     /// A steer frequency the recorded rows cannot resolve: rows every
-    /// `step` s sample below twice the frequency (Nyquist), so the written
+    /// `step` s sample at no more than twice the frequency (Nyquist; at
+    /// exactly twice they can fall on the zero crossings), so the written
     /// history aliases the steer. Hz, s.
-    #[error("the rows every {step} s ([simulation] step) sample at {} Hz, less than twice this frequency: the written steer and response would alias (a 40 Hz sweep drawn as slow beating); set step to at most {} s, or {} s to draw the waveform", crate::format::rounded(1.0 / *step, 3), crate::format::rounded(0.5 / *frequency, 3), crate::format::rounded(0.1 / *frequency, 3))]
+    #[error("the rows every {step} s ([simulation] step) sample at {} Hz, not more than twice this frequency: the written steer and response would alias (a fast steer drawn as a slow one, or as zeros where the rows fall on its zero crossings); set step below {} s, e.g. {} s, or {} s to draw the waveform", crate::format::rounded(1.0 / *step, 3), crate::format::rounded_down(0.5 / *frequency, 3), crate::format::rounded_down(0.4 / *frequency, 2), crate::format::rounded_down(0.1 / *frequency, 2))]
     Aliased {
         /// The recorded rows' interval, s.
         step: f64,

@@ -505,9 +505,10 @@ fn steers(key: &str, v: f64, reached: f64) -> Result<(), ParamError> {
 }
 
 /// A steer of frequency `frequency` (the key `key`) the rows every `step`
-/// s resolve: sampled at least twice a period (Nyquist).
+/// s resolve: sampled more than twice a period (Nyquist; at exactly twice
+/// the rows can fall on its zero crossings and write a sine as zeros).
 fn resolved(key: &str, frequency: f64, step: f64) -> Result<(), ParamError> {
-    if 2.0 * frequency * step <= 1.0 {
+    if 2.0 * frequency * step < 1.0 {
         return Ok(());
     }
     Err(ParamError::new(
@@ -551,7 +552,13 @@ fn other_manoeuvre(
             check(src, frequency("f_start", s.f_start, -1e-12))?;
             check(src, ParamError::positive("f_end", s.f_end))?;
             check(src, frequency("f_end", s.f_end, 0.0))?;
-            check(src, resolved("f_end", s.f_end.max(s.f_start), step))?;
+            // The sweep's highest frequency, at the key that holds it.
+            let (key, highest) = if s.f_start > s.f_end {
+                ("f_start", s.f_start)
+            } else {
+                ("f_end", s.f_end)
+            };
+            check(src, resolved(key, highest, step))?;
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::Schedule(s) => {

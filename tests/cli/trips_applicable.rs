@@ -241,23 +241,49 @@ fn simulate_refuses_rows_too_coarse_for_the_steers_frequency() {
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
-        e.contains("`manoeuvre.f_end` = 40: the rows every 0.02 s ([simulation] step) sample at 50 Hz, less than twice this frequency: the written steer and response would alias (a 40 Hz sweep drawn as slow beating); set step to at most 0.0125 s, or 0.0025 s to draw the waveform"),
+        e.contains("`manoeuvre.f_end` = 40: the rows every 0.02 s ([simulation] step) sample at 50 Hz, not more than twice this frequency: the written steer and response would alias (a fast steer drawn as a slow one, or as zeros where the rows fall on its zero crossings); set step below 0.0125 s, e.g. 0.01 s, or 0.0025 s to draw the waveform"),
         "{e}"
     );
     assert!(e.contains("scenario.toml:"), "{e}");
     assert!(!dir.path().join("out").exists());
-    // At the Nyquist step it runs; a sine at 30 Hz is held to the same rule.
-    let at = manoeuvre.replace("step = 0.02", "step = 0.0125");
-    let dir = scenario(VEHICLE, GIM, &at);
+    // At the Nyquist step itself the rows can fall on the zero crossings
+    // (a 10 Hz sine every 0.05 s was written as zeros): refused; the step
+    // suggested runs.
+    let refused_at = |text: &str| {
+        let dir = scenario(VEHICLE, GIM, text);
+        stderr(&simulated(&dir.path().join("scenario.toml")))
+    };
+    let at_nyquist = manoeuvre.replace("step = 0.02", "step = 0.0125");
+    assert!(refused_at(&at_nyquist).contains("`manoeuvre.f_end` = 40: the rows every 0.0125 s"));
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        &manoeuvre.replace("step = 0.02", "step = 0.01"),
+    );
     let o = simulated(&dir.path().join("scenario.toml"));
     assert!(o.status.success(), "{}", stderr(&o));
-    let sine = "[manoeuvre]\nkind = \"sine\"\nspeed = 22.2\namplitude = 0.02\nfrequency = 30.0\nstart = 1.0\nend = 3.0\n\n[simulation]\nstep = 0.02\n";
-    let dir = scenario(VEHICLE, GIM, sine);
-    let o = simulated(&dir.path().join("scenario.toml"));
+    // A sine at 30 Hz is held to the same rule, and the step it is told
+    // to stay below (rounded down) is one it accepts.
+    let sine = |step: &str| {
+        format!("[manoeuvre]\nkind = \"sine\"\nspeed = 22.2\namplitude = 0.02\nfrequency = 30.0\nstart = 1.0\nend = 3.0\n\n[simulation]\nstep = {step}\n")
+    };
+    let e = refused_at(&sine("0.02"));
     assert!(
-        stderr(&o).contains("`manoeuvre.frequency` = 30: the rows every 0.02 s"),
-        "{}",
-        stderr(&o)
+        e.contains("`manoeuvre.frequency` = 30: the rows every 0.02 s"),
+        "{e}"
+    );
+    assert!(e.contains("set step below 0.0166 s, e.g. 0.013 s"), "{e}");
+    let dir = scenario(VEHICLE, GIM, &sine("0.0166"));
+    let o = simulated(&dir.path().join("scenario.toml"));
+    assert!(o.status.success(), "{}", stderr(&o));
+    // A sweep run downwards: its highest frequency is at `f_start`.
+    let down = manoeuvre
+        .replace("f_start = 0.1", "f_start = 40.0")
+        .replace("f_end = 40.0", "f_end = 0.1");
+    let e = refused_at(&down);
+    assert!(
+        e.contains("`manoeuvre.f_start` = 40: the rows every 0.02 s"),
+        "{e}"
     );
 }
 

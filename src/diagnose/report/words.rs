@@ -398,7 +398,16 @@ pub fn evidence(e: &Evidence) -> String {
 /// The heading of the findings on the gap: where it lies, or, when the
 /// held-out error is within the noise level, that it has no place.
 pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
-    let within_noise = findings.iter().any(|f| {
+    if gap_within_noise(findings) {
+        "the gap, within noise"
+    } else {
+        "where the gap lies"
+    }
+}
+
+/// The overall finding says the gap is within noise.
+fn gap_within_noise(findings: &[GapFinding]) -> bool {
+    findings.iter().any(|f| {
         matches!(
             f,
             GapFinding::Overall {
@@ -406,12 +415,7 @@ pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
                 ..
             }
         )
-    });
-    if within_noise {
-        "the gap, within noise"
-    } else {
-        "where the gap lies"
-    }
+    })
 }
 
 /// Under the candidates of a campaign whose gap is within noise (`None`
@@ -421,7 +425,7 @@ pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
 /// read as decisive where the held-out columns, which are judged against
 /// the noise, show nothing.
 pub fn within_noise_caveat(findings: &[GapFinding]) -> Option<&'static str> {
-    (gap_heading(findings) == "the gap, within noise").then_some(
+    gap_within_noise(findings).then_some(
         "the gap is within noise: the ΔBIC and ± below count every sample as independent, and a replay's residuals are correlated over many samples, so on a gap within noise they look decisive where nothing is found; the held-out columns are the evidence",
     )
 }

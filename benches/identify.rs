@@ -82,6 +82,7 @@ fn mf61_hoosier(c: &mut Criterion) {
         model: IdentifyModel::Mf61,
         seed: 1,
         out: Some(std::env::temp_dir().join("mf61_hoosier_rig_bench.tir")),
+        load: None,
         pressure: None,
         camber: None,
         local: Polish::Lm,

@@ -277,6 +277,7 @@ fn identify_recovers_the_toys_stiffness() {
         model: "toy-linear".parse().unwrap(),
         seed: 3,
         out: Some(out.clone()),
+        load: None,
         pressure: None,
         camber: None,
         local: Polish::Lm,

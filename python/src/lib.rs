@@ -215,6 +215,7 @@ fn py_class_attrs(py: Python<'_>, e: &Error) -> (PyErr, Vec<(&'static str, Py<Py
                 LibFitError::NoLateralData { data, .. }
                 | LibFitError::NoData { data }
                 | LibFitError::NoCondition { data, .. }
+                | LibFitError::NoSmallSlip { data, .. }
                 | LibFitError::InData { data, .. } => path(data),
                 _ => py.None(),
             };
@@ -691,7 +692,7 @@ fn study(py: Python<'_>, study_file: PathBuf, out: Option<PathBuf>) -> PyResult<
 
 /// Fits a tyre model to rig data; `(report JSON, fitted tyre)`.
 #[pyfunction]
-#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS, hold=Vec::new()))]
+#[pyo3(signature = (data, model, seed=1, out=None, pressure=None, camber=None, local="lm", bin_deg=0.25, bin_kappa=0.0025, start="data", template=None, max_iterations=handling::identify::mf_staged::LM_ITERATIONS, hold=Vec::new(), load=None))]
 #[allow(clippy::too_many_arguments)]
 fn identify(
     py: Python<'_>,
@@ -708,6 +709,7 @@ fn identify(
     template: Option<PathBuf>,
     max_iterations: usize,
     hold: Vec<(String, f64)>,
+    load: Option<f64>,
 ) -> PyResult<(String, PyTyre)> {
     let model: IdentifyModel = model.parse().map_err(py_err)?;
     let local: Polish = local.parse().map_err(py_err)?;
@@ -720,6 +722,7 @@ fn identify(
         model,
         seed,
         out,
+        load,
         pressure,
         camber,
         local,

@@ -21,6 +21,11 @@ pub struct IdentifyArgs {
     /// Tyre file to write (default: out/<data>_<model>.toml).
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Keep only the load level holding this value, N (default: all; an
+    /// error when no level lies near it): a model without load terms, such
+    /// as `linear`, fits one.
+    #[arg(long)]
+    load: Option<f64>,
     /// Keep only the pressure level holding this value, Pa (an error when
     /// the file has no pressure column or no level near it).
     #[arg(long)]
@@ -74,11 +79,13 @@ fn hold_value(s: &str) -> Result<(String, f64), String> {
 
 /// `handling identify`.
 pub fn identify(a: IdentifyArgs) -> Result<()> {
+    let hold = a.hold.clone();
     let r = identify::run(&Options {
         data: a.data,
         model: a.model,
         seed: a.seed,
         out: a.out,
+        load: a.load,
         pressure: a.pressure,
         camber: a.camber,
         local: a.local,
@@ -88,7 +95,8 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
         template: a.template,
         max_iterations: a.max_iterations,
         hold: a.hold,
-    })?;
+    })
+    .map_err(|e| named_hold(e, &hold))?;
     for w in r.warnings() {
         eprintln!("warning: {w}");
     }
@@ -96,4 +104,17 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
     super::print(&r.summary());
     say!("{}", r.wrote());
     Ok(())
+}
+
+/// A refused held value said as the user gave it: the library's error
+/// names the parameter (as Python's `key` does), the command line the
+/// option, `--hold NAME=VALUE`, too.
+fn named_hold(e: handling::error::Error, hold: &[(String, f64)]) -> anyhow::Error {
+    match &e {
+        handling::error::Error::Param(p) => match hold.iter().find(|(name, _)| *name == p.key) {
+            Some((name, v)) => anyhow::anyhow!("--hold {name}={v}: {e}"),
+            None => e.into(),
+        },
+        _ => e.into(),
+    }
 }

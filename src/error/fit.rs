@@ -114,6 +114,19 @@ pub enum FitError {
         /// Where its samples went.
         grouping: SampleAccount,
     },
+    /// A linear tyre's fit with no condition holding two points within its
+    /// small-slip window.
+    #[error("{}: no condition has two points within |alpha| <= {window_deg} deg, where a linear tyre is fitted ({points} points, the smallest |alpha| {smallest_deg:.2} deg): a linear tyre's stiffness is the slope at small slip; fit a model with saturation (gim, magic-simple) to these data", data.display())]
+    NoSmallSlip {
+        /// The rig data.
+        data: PathBuf,
+        /// The window, degrees.
+        window_deg: f64,
+        /// Points before the window.
+        points: usize,
+        /// The smallest |α| among them, degrees.
+        smallest_deg: f64,
+    },
     /// A fit to rig data that failed: the data and, where several channels
     /// are fitted, the channel.
     #[error("{}: {}{source}", data.display(), prefix(channel))]

@@ -268,6 +268,7 @@ fn a_job_refuses_settings_that_are_not_numbers_before_it_reads() {
         model: "pac89".parse().unwrap(),
         seed: 1,
         out: None,
+        load: None,
         pressure: None,
         camber: None,
         local: Polish::Lm,

@@ -23,6 +23,7 @@ fn options(data: &Path, model: IdentifyModel, out: &Path) -> Options {
         model,
         seed: 1,
         out: Some(out.to_path_buf()),
+        load: None,
         pressure: None,
         camber: None,
         local: Default::default(),

@@ -895,11 +895,13 @@ def identify(
     template: Optional[PathLike] = None,
     max_iterations: Optional[int] = None,
     hold: Optional[Mapping[str, float]] = None,
+    load: Optional[float] = None,
 ) -> Identification:
     """Fits a tyre model to rig data (CSV), as ``handling identify``.
 
     ``model``: gim, magic-simple, unitire, pac89, linear, mf61, mf62;
-    ``pressure`` in Pa and ``camber`` in rad select one level; ``bin_deg``
+    ``load`` in N, ``pressure`` in Pa and ``camber`` in rad select one
+    level; ``bin_deg``
     is the slip-angle thinning bin in degrees. ``hold`` holds parameters
     at the values given, as ``--hold NAME=VALUE``: ``.tir`` coefficients
     for mf61/mf62 (``{"PKY4": 2.0}``), the tyre file's parameters for the
@@ -915,6 +917,8 @@ def identify(
         kw["max_iterations"] = max_iterations
     if hold:
         kw["hold"] = [(str(k), float(v)) for k, v in hold.items()]
+    if load is not None:
+        kw["load"] = float(load)
     text, tyre = _handling.identify(
         _path(data),
         model,

@@ -245,6 +245,7 @@ def identify(
     template: Optional[PathLike] = ...,
     max_iterations: Optional[int] = ...,
     hold: Optional[Mapping[str, float]] = ...,
+    load: Optional[float] = ...,
 ) -> Identification: ...
 def diagnose(campaign: PathLike, out: Optional[PathLike] = ...) -> Diagnosis: ...
 def synth(

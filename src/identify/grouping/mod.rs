@@ -19,9 +19,11 @@
 //!   ramp between two levels does not merge them. A level is kept whatever
 //!   its share of the file; fewer than three samples apart from the rest are
 //!   not a level but ramp or isolated samples, counted as transitions.
-//! - **Selection** of one pressure or camber level: an error when the file
-//!   has no such column or when the value lies outside every level's band
-//!   (the level's range widened by the separation threshold).
+//! - **Selection** of one load, pressure or camber level: an error when the
+//!   file has no such column or when the value lies outside every level's
+//!   band (the level's range widened by the separation threshold). The
+//!   level a value selects is recorded ([`Selected`]) with its nominal and
+//!   its samples' range, as a value asked for need not be a nominal.
 //! - **Thinning** averages the samples of one condition that fall into one
 //!   slip bin (`alpha_bin` for slip angle, `kappa_bin` for slip ratio): a bin
 //!   with one sample keeps it, so no slip point is ever lost; up and down
@@ -58,6 +60,8 @@ pub struct Grouping {
     pub alpha_bin: f64,
     /// Slip-ratio bin for thinning of longitudinal data (0: no thinning).
     pub kappa_bin: f64,
+    /// Keep only the load level holding this value, N.
+    pub load: Option<f64>,
     /// Keep only the pressure level holding this value, Pa.
     pub pressure: Option<f64>,
     /// Keep only the camber level holding this value, rad.
@@ -74,6 +78,7 @@ impl Default for Grouping {
             pressure_resolution: 1000.0,
             alpha_bin: 0.25f64.to_radians(),
             kappa_bin: 0.0025,
+            load: None,
             pressure: None,
             camber: None,
             default_speed: 10.0,
@@ -98,8 +103,39 @@ pub struct GroupingReport {
     pub levels: Vec<Levels>,
     /// Samples between levels of some variable, dropped.
     pub dropped_in_transitions: usize,
-    /// Samples at other pressure or camber levels than the one selected.
+    /// Samples at other load, pressure or camber levels than the one
+    /// selected.
     pub not_selected: usize,
+    /// The levels selected by a value asked for (none: every level).
+    pub selected: Vec<Selected>,
+}
+
+/// The level a value asked for selects: a value inside a level's band
+/// (its samples' range widened by the separation) selects it, though it
+/// need not be its nominal.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Selected {
+    /// The variable.
+    pub variable: Variable,
+    /// The value asked for (SI).
+    pub requested: f64,
+    /// The level selected.
+    pub level: Level,
+}
+
+impl Selected {
+    /// The line saying which level the value asked for selected.
+    pub fn line(&self) -> String {
+        let v = self.variable;
+        format!(
+            "{} {} asked for: the {} level selected (its samples {} to {})",
+            v.column(),
+            v.display(self.requested),
+            v.display(self.level.nominal),
+            v.display(self.level.lo),
+            v.display(self.level.hi)
+        )
+    }
 }
 
 impl GroupingReport {
@@ -151,6 +187,7 @@ impl GroupingReport {
             }
             out.push(line);
         }
+        out.extend(self.selected.iter().map(Selected::line));
         out
     }
 }
@@ -168,15 +205,53 @@ pub struct Grouped {
 /// samples are at 0), rad.
 const NO_CAMBER_COLUMN_TOLERANCE: f64 = 1e-6;
 
-/// The levels a [`Grouping`] selects: camber and pressure level indices
-/// (`None`: all). A request the file cannot meet is an error.
+/// The level indices a [`Grouping`] selects (`None`: all). A request the
+/// file cannot meet is an error.
+struct Selection {
+    load: Option<usize>,
+    camber: Option<usize>,
+    pressure: Option<usize>,
+}
+
+impl Selection {
+    /// Whether a sample at level indices (`l`, `c`, `p`) is selected.
+    fn keeps(&self, l: usize, c: usize, p: Option<usize>) -> bool {
+        self.load.is_none_or(|w| w == l)
+            && self.camber.is_none_or(|w| w == c)
+            && (self.pressure.is_none() || p == self.pressure)
+    }
+
+    /// The levels selected, each with the value asked for.
+    fn record(&self, g: &Grouping, all: [Option<&Levels>; 3]) -> Vec<Selected> {
+        let [loads, cambers, pressures] = all;
+        [
+            (g.load, self.load, loads),
+            (g.camber, self.camber, cambers),
+            (g.pressure, self.pressure, pressures),
+        ]
+        .into_iter()
+        .filter_map(|(asked, k, levels)| {
+            let (requested, k, levels) = (asked?, k?, levels?);
+            Some(Selected {
+                variable: levels.variable,
+                requested,
+                level: levels.levels[k],
+            })
+        })
+        .collect()
+    }
+}
+
+/// The levels a [`Grouping`] selects. A request the file cannot meet is
+/// an error.
 fn selection(
     refuse: &dyn Fn(InputProblem) -> InputError,
     d: &RigData,
     g: &Grouping,
+    loads: &Levels,
     cambers: &Levels,
     pressures: Option<&Levels>,
-) -> Result<(Option<usize>, Option<usize>), InputError> {
+) -> Result<Selection, InputError> {
     let select = |l: &Levels, want: f64| {
         l.select(want).ok_or_else(|| {
             refuse(InputProblem::NoLevelNear {
@@ -187,12 +262,13 @@ fn selection(
             })
         })
     };
-    let want_p = match (g.pressure, pressures) {
+    let load = g.load.map(|w| select(loads, w)).transpose()?;
+    let pressure = match (g.pressure, pressures) {
         (None, _) => None,
         (Some(_), None) => return Err(refuse(InputProblem::NoPressureColumn)),
         (Some(p), Some(levels)) => Some(select(levels, p)?),
     };
-    let want_c = match g.camber {
+    let camber = match g.camber {
         None => None,
         // Without the column every sample is at camber 0 (FORMATS.md): a
         // request for 0 selects them all, any other camber is not there.
@@ -202,7 +278,11 @@ fn selection(
         }
         Some(c) => Some(select(cambers, c)?),
     };
-    Ok((want_c, want_p))
+    Ok(Selection {
+        load,
+        camber,
+        pressure,
+    })
 }
 
 /// The slip and force columns of the sweep along `axis`, and the aligning
@@ -255,7 +335,7 @@ pub fn group(
         .pressure
         .as_ref()
         .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
-    let (want_c, want_p) = selection(&refuse, d, g, &cambers, pressures.as_ref())?;
+    let selection = selection(&refuse, d, g, &loads, &cambers, pressures.as_ref())?;
     // (load, camber, pressure) level indices and the samples there.
     type Key = (usize, usize, Option<usize>);
     let mut groups: Vec<(Key, Vec<usize>)> = Vec::new();
@@ -272,7 +352,7 @@ pub fn group(
             transitions += 1;
             continue;
         };
-        if want_c.is_some_and(|w| w != c) || (want_p.is_some() && p != want_p) {
+        if !selection.keeps(l, c, p) {
             not_selected += 1;
             continue;
         }
@@ -296,6 +376,7 @@ pub fn group(
             points: thin(d, &columns, &idx, bin, g.default_speed),
         })
         .collect();
+    let selected = selection.record(g, [Some(&loads), Some(&cambers), pressures.as_ref()]);
     let mut all_levels = vec![loads, cambers];
     all_levels.extend(pressures);
     let report = GroupingReport {
@@ -307,6 +388,7 @@ pub fn group(
         levels: all_levels,
         dropped_in_transitions: transitions,
         not_selected,
+        selected,
     };
     debug_assert_eq!(report.used + transitions + not_selected, report.samples);
     Ok(Grouped { conditions, report })

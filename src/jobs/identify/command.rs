@@ -30,6 +30,9 @@ pub struct RecordedOptions {
     /// `--seed` (swarm fits).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
+    /// `--load`, N (swarm fits; null: every level pooled).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load: Option<Option<f64>>,
     /// `--pressure`, Pa (swarm fits; null: every level pooled).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure: Option<Option<f64>>,
@@ -66,6 +69,7 @@ impl Options {
             command: self.command(),
             model: self.model.to_string(),
             seed: swarm.then_some(self.seed),
+            load: swarm.then_some(self.load),
             pressure: swarm.then_some(self.pressure),
             camber: swarm.then_some(self.camber),
             local: swarm.then_some(self.local.as_str()),
@@ -96,6 +100,9 @@ impl Options {
         ];
         if self.model.swarm_model().is_some() {
             words.push(format!("--seed {}", self.seed));
+            if let Some(l) = self.load {
+                words.push(format!("--load {}", exact(l)));
+            }
             if let Some(p) = self.pressure {
                 words.push(format!("--pressure {}", exact(p)));
             }

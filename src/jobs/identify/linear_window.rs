@@ -72,6 +72,16 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
     (kept, w)
 }
 
+/// The smallest |α| of the points of `conditions`, rad (infinite
+/// without points).
+pub(crate) fn smallest_slip(conditions: &[Condition]) -> f64 {
+    conditions
+        .iter()
+        .flat_map(|c| &c.points)
+        .map(|p| p.slip().abs())
+        .fold(f64::INFINITY, f64::min)
+}
+
 /// The pneumatic trail of the points of `conditions` with a measured
 /// `mz`: Σα·Mz / Σα·Fy, the ratio of the least-squares slopes through
 /// zero of Mz and Fy on α (m); `None` without such points.

@@ -17,6 +17,7 @@ pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;
 pub use linear_window::LinearWindow;
 mod notes;
+pub use notes::Note;
 mod outputs;
 mod ranges;
 mod summary;
@@ -36,7 +37,7 @@ use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSetti
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
-use crate::tyre::{Identification, ModelName, Tyre};
+use crate::tyre::{Identification, ModelName, SlipState, Tyre};
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged::run_staged;
@@ -57,6 +58,8 @@ pub struct Options {
     pub seed: u64,
     /// Tyre file to write (default: [`Options::output_path`]).
     pub out: Option<PathBuf>,
+    /// Keep only the load level holding this value, N.
+    pub load: Option<f64>,
     /// Keep only the pressure level holding this value, Pa.
     pub pressure: Option<f64>,
     /// Keep only the camber level holding this value, rad.
@@ -86,6 +89,9 @@ impl Options {
     pub fn validate(&self) -> Result<(), ParamError> {
         ParamError::non_negative("bin_deg", self.alpha_bin_deg)?;
         ParamError::non_negative("bin_kappa", self.kappa_bin)?;
+        if let Some(l) = self.load {
+            ParamError::positive("load", l)?;
+        }
         if let Some(p) = self.pressure {
             ParamError::positive("pressure", p)?;
         }
@@ -99,14 +105,18 @@ impl Options {
         Ok(())
     }
 
-    /// Refuses `--pressure` / `--camber` for a model whose fit takes every
+    /// Refuses `--load` / `--pressure` / `--camber` for a model whose fit takes every
     /// level (the staged Magic Formula): silently fitting all samples when
     /// one level was asked for would write a tyre of other conditions.
     fn validate_levels(&self) -> Result<(), Error> {
         if self.model.swarm_model().is_some() {
             return Ok(());
         }
-        let given = [("pressure", self.pressure), ("camber", self.camber)];
+        let given = [
+            ("load", self.load),
+            ("pressure", self.pressure),
+            ("camber", self.camber),
+        ];
         match given.iter().find(|(_, v)| v.is_some()) {
             Some((option, _)) => Err(OptionsError::LevelSelectionNotTaken {
                 option,
@@ -185,6 +195,11 @@ pub struct SwarmReport {
     pub recorded: RecordedOptions,
     /// The parameters held with `--hold`.
     pub held: Vec<Held>,
+    /// What the terminal and the file's header say beside the numbers:
+    /// a parameter fitted by a later channel, a block not fitted, a
+    /// level pooled into a model without terms for it, a parameter not
+    /// identified.
+    pub notes: Vec<Note>,
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -200,6 +215,11 @@ pub struct SwarmReport {
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
+    /// Load levels pooled into one fit of a model whose force does not
+    /// change with load (a warning when more than one; 0 for a model
+    /// whose force does).
+    #[serde(skip)]
+    pub loads_pooled: usize,
     /// Pressure levels pooled into one fit (a warning when more than one).
     #[serde(skip)]
     pub pressures_pooled: usize,
@@ -230,28 +250,10 @@ impl IdentifyReport {
     /// Warnings on the fit's inputs: levels pooled into a model without
     /// terms for them.
     pub fn warnings(&self) -> Vec<String> {
-        let IdentifyReport::Swarm(r) = self else {
-            return Vec::new();
-        };
-        let pooled = [
-            (
-                "pressures",
-                "pressure",
-                r.options.pressure,
-                r.pressures_pooled,
-            ),
-            ("cambers", "camber", r.options.camber, r.cambers_pooled),
-        ];
-        pooled
-            .into_iter()
-            .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
-            .map(|(levels, option, _, n)| {
-                format!(
-                    "{n} {levels} pooled into one {} fit, which has no {option} terms: select one with --{option}",
-                    r.options.model
-                )
-            })
-            .collect()
+        match self {
+            IdentifyReport::Swarm(r) => r.input_warnings(),
+            IdentifyReport::Staged(_) => Vec::new(),
+        }
     }
 
     /// The report in lines of text.
@@ -342,6 +344,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .into());
     }
     let grouping = Grouping {
+        load: o.load,
         pressure: o.pressure,
         camber: o.camber,
         alpha_bin: o.alpha_bin_deg.to_radians(),
@@ -370,7 +373,17 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     // data is a secant).
     let mut window = None;
     if model.as_str() == "linear" && first == Channel::LateralForce {
+        let smallest = linear_window::smallest_slip(&conditions);
         let (kept, w) = linear_window::windowed(conditions);
+        if kept.is_empty() && w.points_left_out > 0 {
+            return Err(FitError::NoSmallSlip {
+                data: o.data.clone(),
+                window_deg: w.max_abs_alpha_deg,
+                points: w.points_left_out,
+                smallest_deg: smallest.to_degrees(),
+            }
+            .into());
+        }
         conditions = kept;
         window = Some(w);
     }
@@ -406,6 +419,14 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     } else {
         levels_of(Variable::Camber)
     };
+    // A model whose force is the same at two loads (a linear tyre's
+    // C·α) has no load terms: pooled loads blur into its one stiffness.
+    let at = |fz| tyre0.point_forces(&SlipState::lateral(0.02, fz), None).fy;
+    let loads_pooled = if at(1000.0) == at(3000.0) {
+        levels_of(Variable::Load)
+    } else {
+        0
+    };
     let fit = fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
         .map_err(on_data(o, None))?;
     let mut r = SwarmReport {
@@ -420,9 +441,11 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         data: o.data.display().to_string(),
         recorded: o.recorded(),
         held: Vec::new(),
+        notes: Vec::new(),
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
+        loads_pooled,
         pressures_pooled,
         cambers_pooled,
         conditions,
@@ -484,6 +507,10 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         &r.tyre,
     ));
     finite_fits(&r).map_err(on_data(o, None))?;
+    r.notes = notes::notes(&r)
+        .into_iter()
+        .chain(r.warning_notes())
+        .collect();
     r.file = written::tyre_file_text(&r, &o.output_path())?;
     Ok(r)
 }

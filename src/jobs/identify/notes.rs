@@ -5,19 +5,22 @@
 //! moment's σ above [`LARGE_SIGMA_PERCENT`]), and a block of the model
 //! no fit ran on for want of its columns (a longitudinal-only rig file
 //! fitted with PAC89 or UniTire keeps the defaults' lateral coefficients),
-//! in the words of the Magic Formula's `no longitudinal data` line.
+//! in the words of the Magic Formula's `no longitudinal data` line; and
+//! the warnings on the fit's inputs (levels pooled into a model without
+//! terms for them) and on its parameters (not identified, past a bound).
 
 use super::SwarmReport;
 use crate::format::{fixed, readable};
-use crate::identify::{Fit, HeldFor};
+use crate::identify::{Fit, HeldFor, ParameterReport};
+use serde::Serialize;
 
 /// The σ of a fitted channel above which the model is said not to follow
 /// the data, %: a fit that misses by a fifth of the measured values.
 pub(crate) const LARGE_SIGMA_PERCENT: f64 = 20.0;
 
 /// A line of what the fit tells: a plain statement, or a warning.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Note {
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Note {
     /// The text, without a mark.
     pub text: String,
     /// A warning (said `warning:`).
@@ -127,4 +130,53 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         .flat_map(|f| later_fit_notes(r, f))
         .chain(unfitted_notes(r))
         .collect()
+}
+
+/// The warnings on the fit's parameters (one not identified, one past
+/// its bound), each with its value.
+pub(crate) fn parameter_warnings(f: &Fit) -> Vec<Note> {
+    f.parameters.iter().filter_map(parameter_warning).collect()
+}
+
+/// The warning on one fitted parameter, with its value.
+pub(crate) fn parameter_warning(p: &ParameterReport) -> Option<Note> {
+    let w = p.warning.as_deref()?;
+    Some(Note::warned(format!("{} = {:.6}: {w}", p.name, p.value)))
+}
+
+impl SwarmReport {
+    /// Warnings on the fit's inputs: levels pooled into a model without
+    /// terms for them (a load, pressure or camber not selected).
+    pub(crate) fn input_warnings(&self) -> Vec<String> {
+        let o = &self.options;
+        let pooled = [
+            ("loads", "load", o.load, self.loads_pooled),
+            ("pressures", "pressure", o.pressure, self.pressures_pooled),
+            ("cambers", "camber", o.camber, self.cambers_pooled),
+        ];
+        pooled
+            .into_iter()
+            .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
+            .map(|(levels, option, _, n)| {
+                format!(
+                    "{n} {levels} pooled into one {} fit, which has no {option} terms: select one with --{option}",
+                    o.model
+                )
+            })
+            .collect()
+    }
+
+    /// The warnings of the whole fit, as the file's header gives them:
+    /// its inputs', then each channel's parameters'.
+    pub(crate) fn warning_notes(&self) -> Vec<Note> {
+        let inputs = self.input_warnings().into_iter().map(Note::warned);
+        let fits = [
+            Some(&self.fit),
+            self.aligning.as_ref(),
+            self.longitudinal.as_ref(),
+        ];
+        inputs
+            .chain(fits.into_iter().flatten().flat_map(parameter_warnings))
+            .collect()
+    }
 }

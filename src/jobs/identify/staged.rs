@@ -73,56 +73,75 @@ impl StagedJob {
             out.extend(g.lines().iter().map(|l| format!("  {l}")));
         }
         out.extend(super::holds::held_lines(&self.held));
-        for s in &self.report.stages {
-            match &s.skipped {
-                Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
-                None => out.push(format!(
-                    "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS error {}, {:.2} s",
-                    s.stage.label(),
-                    s.points,
-                    s.parameters.iter().filter(|p| p.free).count(),
-                    s.sigma_percent,
-                    s.sigma_start_percent,
-                    if s.paper_sigma_percent.is_finite() {
-                        format!("; Wei et al. 2010: {:.2} %", s.paper_sigma_percent)
-                    } else {
-                        String::new()
-                    },
-                    rms_text(s.rms, s.stage.unit()),
-                    s.seconds
-                )),
-            }
-            // Loads named as the level lines above name them.
-            let named = self
-                .rows
-                .thinning
-                .as_ref()
-                .map_or(&[][..], |g| &g.levels[..]);
-            let load = |fz: f64| level_label(named, Variable::Load, fz);
-            if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line_naming(&load)) {
-                out.push(format!("    where the error lies: {line}"));
-            }
-            out.extend(s.warnings.iter().map(|w| format!("    warning: {w}")));
-            // What was held at a stated value rather than fitted (the
-            // parameters held for want of levels are in the report).
-            out.extend(s.parameters.iter().filter_map(|p| match &p.held {
-                Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => {
-                    Some(format!("    held: {} = {}: {why}", p.name, p.value))
-                }
-                _ => None,
-            }));
-            out.extend(level_held_lines(&s.parameters));
-            out.extend(s.parameters.iter().filter_map(|p| {
-                let w = p.warning.as_deref()?;
-                Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
-            }));
-        }
+        let named = self
+            .rows
+            .thinning
+            .as_ref()
+            .map_or(&[][..], |g| &g.levels[..]);
+        out.extend(stage_lines(&self.report, named, true));
         out.push(format!("  {}", self.sigma_pooled.line()));
         out.extend(
             no_longitudinal_data(&self.report, o.template.is_some()).map(|l| format!("  {l}")),
         );
         out
     }
+}
+
+/// The terminal's lines of each stage of `report` (indented as the
+/// summary gives them): its σ or why it was skipped, where its error lies
+/// (loads named as `named`, the grouping's levels, name them), its
+/// warnings and what it held. The written file's header repeats them
+/// without the seconds (`timed` false), so that a refit of the same data
+/// writes the same file.
+fn stage_lines(
+    report: &StagedReport,
+    named: &[crate::identify::grouping::Levels],
+    timed: bool,
+) -> Vec<String> {
+    let mut out = Vec::new();
+    for s in &report.stages {
+        match &s.skipped {
+            Some(why) => out.push(format!("  {:<12} skipped: {why}", s.stage.label())),
+            None => out.push(format!(
+                "  {:<12} {:>5} points, {} free: σ {:.3} % (start {:.2} %{}), RMS error {}{}",
+                s.stage.label(),
+                s.points,
+                s.parameters.iter().filter(|p| p.free).count(),
+                s.sigma_percent,
+                s.sigma_start_percent,
+                if s.paper_sigma_percent.is_finite() {
+                    format!("; Wei et al. 2010: {:.2} %", s.paper_sigma_percent)
+                } else {
+                    String::new()
+                },
+                rms_text(s.rms, s.stage.unit()),
+                if timed {
+                    format!(", {:.2} s", s.seconds)
+                } else {
+                    String::new()
+                }
+            )),
+        }
+        let load = |fz: f64| level_label(named, Variable::Load, fz);
+        if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line_naming(&load)) {
+            out.push(format!("    where the error lies: {line}"));
+        }
+        out.extend(s.warnings.iter().map(|w| format!("    warning: {w}")));
+        // What was held at a stated value rather than fitted (the
+        // parameters held for want of levels are in the report).
+        out.extend(s.parameters.iter().filter_map(|p| match &p.held {
+            Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => {
+                Some(format!("    held: {} = {}: {why}", p.name, p.value))
+            }
+            _ => None,
+        }));
+        out.extend(level_held_lines(&s.parameters));
+        out.extend(s.parameters.iter().filter_map(|p| {
+            let w = p.warning.as_deref()?;
+            Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
+        }));
+    }
+    out
 }
 
 /// Runs the staged fit of `o`, version `fit` of its model's (from the
@@ -202,10 +221,23 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
     let no_fx = no_longitudinal_data(&id.report, o.template.is_some());
+    let named = prepared
+        .account
+        .thinning
+        .as_ref()
+        .map_or(&[][..], |g| g.levels.as_slice());
+    // The terminal's record of each stage, so that the file says what its
+    // fit left undetermined or unconverged.
+    let stages: String = stage_lines(&id.report, named, false)
+        .iter()
+        .chain(std::iter::once(&sigma_pooled.line()))
+        .map(|l| format!("$ {}\n", l.trim_start()))
+        .collect();
     let tir = held_comment(o)
         + &super::ranges::tir_comment(&spans, o.template.is_some())
         + &no_fx.iter().map(|l| format!("$ {l}\n")).collect::<String>()
         + &super::holds::held_file_lines(&held, "$")
+        + &stages
         + &crate::io::tir::tir_text(&written, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
@@ -219,11 +251,6 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .filter(|s| s.skipped.is_none())
         .map(|s| s.stage)
         .collect();
-    let named = prepared
-        .account
-        .thinning
-        .as_ref()
-        .map_or(&[][..], |g| g.levels.as_slice());
     let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows, named);
     Ok(StagedJob {
         held,

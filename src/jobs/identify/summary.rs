@@ -137,8 +137,7 @@ fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
                     p.name, p.value
                 ));
             }
-            let w = p.warning.as_deref()?;
-            Some(format!("  warning: {} = {:.6}: {w}", p.name, p.value))
+            super::notes::parameter_warning(p).map(|n| n.line(" "))
         })
         .collect()
 }

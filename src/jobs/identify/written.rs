@@ -5,7 +5,6 @@
 //! never writes a file that `tyre-eval` or `simulate` refuse.
 
 use super::holds::held_file_lines;
-use super::notes::notes;
 use super::ranges;
 use super::SwarmReport;
 use crate::error::{Error, FitError, OutputError, ParamError};
@@ -35,8 +34,14 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
     );
     let held = held_file_lines(&r.held, "#");
     let window = r.linear_window.iter().flat_map(|w| w.lines("#"));
+    let selected = r
+        .grouping
+        .selected
+        .iter()
+        .map(|s| format!("# {}", s.line()));
     let notes: String = window
-        .chain(notes(r).iter().map(|n| n.line("#")))
+        .chain(selected)
+        .chain(r.notes.iter().map(|n| n.line("#")))
         .map(|l| l + "\n")
         .collect();
     let conditions: Vec<_> = r

@@ -25,6 +25,9 @@ pub struct TyreEvalArgs {
 /// `handling tyre-eval`.
 pub fn tyre_eval(a: TyreEvalArgs) -> Result<()> {
     let r = tyre_eval::run(&a.tyre, &a.points, &a.out, a.mode)?;
+    for w in r.warnings() {
+        eprintln!("warning: {w}");
+    }
     r.write()?;
     say!("{}", r.wrote());
     Ok(())

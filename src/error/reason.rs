@@ -45,6 +45,12 @@ pub enum ParamReason {
     /// Negative where only non-negative values are physical.
     #[error("must not be negative")]
     Negative,
+    /// The upper end of a `[low, high]` range at or below its lower end.
+    #[error("must lie above the range's lower end, {lo}")]
+    RangeReversed {
+        /// The lower end.
+        lo: f64,
+    },
     /// Outside the range `(lo, hi]`, for the reason `why`.
     #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {

@@ -6,6 +6,7 @@
 
 pub mod campaign;
 mod columns;
+pub mod fitted_ranges;
 mod limits;
 pub mod paths;
 pub mod rig;
@@ -23,4 +24,5 @@ pub use crate::measured::MeasuredRun;
 pub use columns::{read_columns, Columns};
 pub use run::{read_run, read_run_with, AngleColumn};
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
+pub use tables::load_tyre_with_ranges;
 pub use toml_file::{load_toml, param_error, TomlSource};

@@ -5,6 +5,7 @@
 //! model here; campaign files their vehicle and road.
 //! Units: SI, rad.
 
+use super::fitted_ranges::FittedRanges;
 use super::paths::beside;
 use super::toml_file::{param_error, TomlSource};
 use crate::error::{InputError, ParamError, ParamReason};
@@ -68,18 +69,26 @@ fn one() -> f64 {
 
 /// Reads and validates a tyre file.
 pub fn load_tyre(path: &Path) -> Result<Tyre, InputError> {
+    Ok(load_tyre_with_ranges(path)?.0)
+}
+
+/// Reads and validates a tyre file, with the ranges of the data a TOML
+/// tyre was fitted to where it states them (`[fitted_ranges]`; a `.tir`
+/// carries its own validity ranges in the tyre).
+pub fn load_tyre_with_ranges(path: &Path) -> Result<(Tyre, Option<FittedRanges>), InputError> {
     if path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("tir"))
     {
-        return Ok(Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?)));
+        let tyre = Tyre::MagicFormula(Box::new(super::tir::load_tir(path)?));
+        return Ok((tyre, None));
     }
-    let src = TomlSource::read(path)?;
+    let (src, ranges) = super::fitted_ranges::split(&TomlSource::read(path)?)?;
     let tyre: Tyre = src.parse()?;
     tyre.validate()
         .and_then(|()| tyre.check_sizes())
         .map_err(|e| param_error(&src, None, e))?;
-    Ok(tyre)
+    Ok((tyre, ranges))
 }
 
 /// Checks a `[vehicle]` table.

@@ -261,3 +261,62 @@ fn a_linear_fit_without_small_slip_angles_names_the_window() {
     );
     assert!(!dir.path().join("t.toml").exists());
 }
+
+/// `tyre-eval` of a TOML tyre said nothing of inputs its model does not
+/// read (a Gim tyre's camber and pressure) or of points beyond the rig
+/// data it was fitted to, which its header stated in a comment only.
+#[test]
+fn tyre_eval_says_what_the_model_does_not_read_and_where_it_extrapolates() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let tyre = dir.path().join("g.toml");
+    let o = identify_with(dir.path(), "gim", &[], &tyre);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = fs::read_to_string(&tyre).unwrap();
+    assert!(
+        file.contains("\n[fitted_ranges]\nfz = [2000.0, 6000.0]\nalpha = [-0.2, 0.2]\n"),
+        "{file}"
+    );
+    // Inside, above the loads, beyond the slip angles.
+    let points = "fz,kappa,alpha,camber,speed,pressure\n\
+                  4000,0,0.1,0.02,20,200000\n\
+                  9000,0,0.1,0,20,200000\n\
+                  4000,0,-0.3,0,20,200000\n";
+    fs::write(dir.path().join("p.csv"), points).unwrap();
+    let eval = |tyre: &Path, out: &str| {
+        bin()
+            .args(["tyre-eval", tyre.to_str().unwrap(), "p.csv", "--out", out])
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    let o = eval(&tyre, "e.csv");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let e = stderr(&o);
+    for w in [
+        "warning: the gim model does not read `camber`: its forces and moments are the same at any value (1 point with camber ≠ 0, evaluated as at 0)",
+        "warning: the gim model does not read `pressure`: its forces and moments are the same at any value (the pressure given at 3 points ignored)",
+        "warning: 2 of 3 points outside the ranges of the rig data the tyre was fitted to (fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad; its [fitted_ranges]): evaluated by extrapolation",
+    ] {
+        assert!(e.contains(w), "{w}\n{e}");
+    }
+    // kappa is 0 at every point: not said.
+    assert!(!e.contains("`kappa`"), "{e}");
+    // A hand-written tyre states no ranges: no point is counted.
+    let o = eval(&root().join("tyres/gim.toml"), "e2.csv");
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("outside the ranges"), "{}", stderr(&o));
+    // A reversed range is refused at its element.
+    fs::write(
+        dir.path().join("bad.toml"),
+        file.replace("fz = [2000.0, 6000.0]", "fz = [6000.0, 2000.0]"),
+    )
+    .unwrap();
+    let o = eval(&dir.path().join("bad.toml"), "e3.csv");
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o)
+            .contains("`fitted_ranges.fz[1]` = 2000: must lie above the range's lower end, 6000"),
+        "{}",
+        stderr(&o)
+    );
+}

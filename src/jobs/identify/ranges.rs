@@ -9,6 +9,7 @@
 use crate::format::readable;
 use crate::identify::data::{Condition, Sweep};
 use crate::identify::mf_staged::MfRow;
+use crate::io::fitted_ranges::FittedRanges;
 use crate::tyre::mf::{MfLimits, TyreSide};
 
 /// A variable's smallest and largest value over some rows.
@@ -129,7 +130,7 @@ pub(crate) fn tir_comment(spans: &[Span], template: bool) -> String {
 }
 
 /// The spans of a swarm fit's conditions: load, slip angle or ratio,
-/// camber.
+/// camber, pressure (where measured).
 pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
     let points = || conditions.iter().flat_map(|c| &c.points);
     let alpha = points().filter_map(|p| match p.sweep {
@@ -145,10 +146,32 @@ pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
         Span::of("alpha", "rad", alpha),
         Span::of("kappa", "", kappa),
         Span::of("camber", "rad", points().map(|p| p.camber)),
+        Span::of(
+            "pressure",
+            "Pa",
+            conditions.iter().filter_map(|c| c.pressure),
+        ),
     ]
     .into_iter()
     .flatten()
     .collect()
+}
+
+/// The `[fitted_ranges]` of `spans`: each that is not one value (a
+/// slip-ratio range of 0 to 0 would count every longitudinal point).
+pub(crate) fn fitted_ranges(spans: &[Span]) -> FittedRanges {
+    let mut r = FittedRanges::default();
+    for s in spans.iter().filter(|s| s.lo < s.hi) {
+        let range = Some([s.lo, s.hi]);
+        match s.name {
+            "fz" => r.fz = range,
+            "alpha" => r.alpha = range,
+            "kappa" => r.kappa = range,
+            "camber" => r.camber = range,
+            _ => r.pressure = range,
+        }
+    }
+    r
 }
 
 /// The line on a swarm fit's data ranges (without its mark).

@@ -8,7 +8,7 @@ use super::holds::held_file_lines;
 use super::ranges;
 use super::SwarmReport;
 use crate::error::{Error, FitError, OutputError, ParamError};
-use crate::io::TomlSource;
+use crate::io::{fitted_ranges, TomlSource};
 use crate::tyre::Tyre;
 use std::path::Path;
 
@@ -50,8 +50,10 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
         .chain(&r.longitudinal_conditions)
         .cloned()
         .collect();
-    let ranges = ranges::toml_line(&ranges::condition_spans(&conditions));
-    let text = format!("{header}# {ranges}\n{held}{notes}{tyre}");
+    let spans = ranges::condition_spans(&conditions);
+    let table = fitted_ranges::table_text(&ranges::fitted_ranges(&spans));
+    let ranges = ranges::toml_line(&spans);
+    let text = format!("{header}# {ranges}\n{held}{notes}{tyre}{table}");
     match read_back(path, &text)? {
         Ok(()) => Ok(text),
         Err(e) => Err(FitError::InData {
@@ -75,6 +77,7 @@ fn read_back(path: &Path, text: &str) -> Result<Result<(), ParamError>, Error> {
         path: path.to_path_buf(),
         text: text.to_string(),
     };
+    let (src, _) = fitted_ranges::split(&src)?;
     let tyre: Tyre = src.parse()?;
     Ok(tyre.validate().and_then(|()| tyre.check_sizes()))
 }

@@ -16,11 +16,22 @@
 //! ±300 m/s, a pressure above 5 MPa. A model that still gives a
 //! non-finite force or moment at a point is refused at that point: the
 //! output never holds a non-finite value.
+//!
+//! What the evaluation cannot stand behind is said, not dropped: an input
+//! column the model does not read (`unread.rs`: a Gim tyre's camber), and
+//! the points beyond the ranges of the rig data a TOML tyre was fitted to
+//! (its `[fitted_ranges]`, which `identify` writes), evaluated by
+//! extrapolation.
+
+mod unread;
+
+pub use unread::Unread;
 
 use crate::error::Error;
+use crate::io::fitted_ranges::{FittedRanges, RangePoint};
 use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
-use crate::io::{load_tyre, read_columns};
+use crate::io::{load_tyre_with_ranges, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
 use crate::tyre::mf::MfInput;
 use crate::tyre::PointForces;
@@ -113,6 +124,13 @@ pub struct TyreEvalReport {
     /// Points at zero or negative load whose loaded radius `rl` is the free
     /// radius (the wheel off the road; 0 without an `rl` column).
     pub off_road: usize,
+    /// The input columns the model does not read, set at some points.
+    pub unread: Vec<Unread>,
+    /// The ranges of the rig data a TOML tyre was fitted to (its
+    /// `[fitted_ranges]`; `None`: the file states none).
+    pub fitted_ranges: Option<FittedRanges>,
+    /// Points beyond those ranges, evaluated by extrapolation.
+    pub beyond_fitted: usize,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -131,7 +149,7 @@ pub fn run(
     mode: Option<u32>,
 ) -> Result<TyreEvalReport, Error> {
     refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
-    let mut tyre = load_tyre(tyre_path)?;
+    let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
     if let Some(code) = mode {
         set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
     }
@@ -193,6 +211,13 @@ pub fn run(
         tyre.evaluate_points(col(0), col(1), col(2), col(3), col(4), &p)
     };
     let count = columns[0].1.len();
+    let p = pressure.clone().unwrap_or_default();
+    let points_in = unread::Points {
+        columns: [0, 1, 2, 3, 4].map(|i| &columns[i].1[..]),
+        pressure: &p,
+    };
+    let unread = unread::unread(&tyre, &points_in, &f);
+    let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &points_in));
     let (mode, clamped, loaded_radius) = match &tyre {
         Tyre::MagicFormula(t) => {
             let col = |i: usize| &columns[i].1;
@@ -272,12 +297,46 @@ pub fn run(
         mode,
         clamped,
         off_road,
+        unread,
+        fitted_ranges,
+        beyond_fitted,
         columns,
         out: out.to_path_buf(),
     })
 }
 
+/// The points of `p` outside the ranges `r`.
+fn beyond(r: &FittedRanges, p: &unread::Points) -> usize {
+    let [fz, kappa, alpha, camber, _] = p.columns;
+    (0..fz.len())
+        .filter(|&i| {
+            r.outside(&RangePoint {
+                fz: fz[i],
+                alpha: alpha[i],
+                kappa: kappa[i],
+                camber: camber[i],
+                pressure: p.pressure.get(i).copied(),
+            })
+        })
+        .count()
+}
+
 impl TyreEvalReport {
+    /// What the evaluation cannot stand behind: the columns the model does
+    /// not read, and the points beyond the ranges the tyre was fitted to.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
+        if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
+            out.push(format!(
+                "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",
+                n,
+                crate::format::plural(self.count, "point", "points"),
+                r.text()
+            ));
+        }
+        out
+    }
+
     /// Writes the output CSV.
     pub fn write(&self) -> Result<(), Error> {
         let cols: Vec<(&str, &[f64])> = self.columns.iter().map(|(n, v)| (*n, &v[..])).collect();

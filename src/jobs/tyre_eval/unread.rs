@@ -1,0 +1,166 @@
+//! The input columns of `tyre-eval` a tyre's model does not read: a Gim
+//! tyre has no camber, pressure or longitudinal slip terms, a linear tyre
+//! reads only load and slip angle, and a points file that sets them is
+//! evaluated as if it did not, which a user takes for a result unless it
+//! is said. Found by behaviour, not by a list per model: the column is
+//! changed at the points (slip ratio and camber to 0, pressure raised by
+//! a quarter) and the model is unread in it when no output moves at any
+//! of them. The speed is not probed: the points file must give it, and
+//! only a sliding-speed friction law reads it. Nor is a Magic Formula
+//! tyre: it has terms in every input, and past its file's ranges it holds
+//! an input at the range's end (`tyre-eval` counts those points), where
+//! a probe would take saturation for an input not read.
+
+use crate::tyre::{PointForces, Tyre};
+use serde::Serialize;
+
+/// The points the probe re-evaluates at most (the first ones where the
+/// column is set): a model reads a column everywhere or nowhere.
+const PROBED: usize = 256;
+
+/// An input column the model does not read.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Unread {
+    /// The column.
+    pub column: &'static str,
+    /// Points where it is set (non-zero; every point for a pressure),
+    /// evaluated as if it were not.
+    pub points: usize,
+}
+
+impl Unread {
+    /// The sentence on the terminal, for `model`.
+    pub fn line(&self, model: &str) -> String {
+        let set = match self.column {
+            "kappa" | "camber" => format!(
+                "{} with {} ≠ 0, evaluated as at 0",
+                crate::format::plural(self.points, "point", "points"),
+                self.column
+            ),
+            _ => format!(
+                "the {} given at {} ignored",
+                self.column,
+                crate::format::plural(self.points, "point", "points")
+            ),
+        };
+        format!(
+            "the {model} model does not read `{}`: its forces and moments are the same at any value ({set})",
+            self.column
+        )
+    }
+}
+
+/// The inputs of the points, by column (`fz, kappa, alpha, camber,
+/// speed`), and the pressures (empty: none given).
+pub(crate) struct Points<'a> {
+    pub columns: [&'a [f64]; 5],
+    pub pressure: &'a [f64],
+}
+
+/// A column probed: its name, its index (5: the pressure) and the value
+/// it is changed to.
+type Probe = (&'static str, usize, fn(f64) -> f64);
+
+/// The columns of `p` that `tyre` does not read, given its outputs `f`
+/// at them.
+pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> {
+    let [fz, kappa, alpha, camber, speed] = p.columns;
+    if matches!(tyre, Tyre::MagicFormula(_)) {
+        return Vec::new();
+    }
+    let probes: [Probe; 3] = [
+        ("kappa", 1, |_| 0.0),
+        ("camber", 3, |_| 0.0),
+        ("pressure", 5, |v| 1.25 * v),
+    ];
+    let mut out = Vec::new();
+    for (column, k, changed) in probes {
+        let values = if k == 5 { p.pressure } else { p.columns[k] };
+        // Slip ratio and camber are set where non-zero; a pressure at
+        // every point that gives one.
+        let set: Vec<usize> = (0..values.len())
+            .filter(|&i| k == 5 || values[i] != 0.0)
+            .filter(|&i| fz[i] > 0.0)
+            .collect();
+        if set.is_empty() {
+            continue;
+        }
+        let idx = &set[..set.len().min(PROBED)];
+        let pick = |c: &[f64]| idx.iter().map(|&i| c[i]).collect::<Vec<f64>>();
+        let mut cols = [
+            pick(fz),
+            pick(kappa),
+            pick(alpha),
+            pick(camber),
+            pick(speed),
+        ];
+        let mut pressure = if p.pressure.is_empty() {
+            Vec::new()
+        } else {
+            pick(p.pressure)
+        };
+        let target = if k == 5 { &mut pressure } else { &mut cols[k] };
+        target.iter_mut().for_each(|v| *v = changed(*v));
+        let g = tyre.evaluate_points(&cols[0], &cols[1], &cols[2], &cols[3], &cols[4], &pressure);
+        let same = idx
+            .iter()
+            .zip(&g)
+            .all(|(&i, b)| f[i].fx == b.fx && f[i].fy == b.fy && f[i].mz == b.mz);
+        if same {
+            out.push(Unread {
+                column,
+                points: set.len(),
+            });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tyre::Linear;
+
+    fn probe(tyre: &Tyre) -> Vec<&'static str> {
+        let fz = [3000.0, 4000.0];
+        let kappa = [0.05, 0.0];
+        let alpha = [0.05, -0.03];
+        let camber = [0.02, 0.0];
+        let speed = [20.0, 20.0];
+        let pressure = [200e3, 200e3];
+        let f = tyre.evaluate_points(&fz, &kappa, &alpha, &camber, &speed, &pressure);
+        let p = Points {
+            columns: [&fz, &kappa, &alpha, &camber, &speed],
+            pressure: &pressure,
+        };
+        unread(tyre, &p, &f).iter().map(|u| u.column).collect()
+    }
+
+    #[test]
+    fn a_linear_tyre_reads_neither_slip_ratio_camber_nor_pressure() {
+        let t = Tyre::Linear(Linear {
+            cornering_stiffness: 60e3,
+            pneumatic_trail: 0.03,
+        });
+        assert_eq!(probe(&t), ["kappa", "camber", "pressure"]);
+    }
+
+    fn tyre_file(name: &str) -> Tyre {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        crate::io::load_tyre(&root.join("tyres").join(name)).unwrap()
+    }
+
+    #[test]
+    fn pac89_reads_slip_ratio_and_camber_but_not_pressure() {
+        assert_eq!(probe(&tyre_file("pac89_adams_example.toml")), ["pressure"]);
+    }
+
+    #[test]
+    fn gim_reads_neither_slip_ratio_camber_nor_pressure() {
+        // Gim's brush model is lateral: no slip ratio either.
+        assert_eq!(
+            probe(&tyre_file("gim.toml")),
+            ["kappa", "camber", "pressure"]
+        );
+    }
+}

@@ -235,7 +235,7 @@ mod tests {
         assert!(!r.outside(&RangePoint { fz: 0.0, ..p }));
         assert_eq!(
             r.text(),
-            "fz 500 to 3000 N, alpha -0.2000 to 0.2000 rad, pressure 80000 to 100000 Pa"
+            "fz 500.0 to 3000 N, alpha -0.2000 to 0.2000 rad, pressure 80000 to 100000 Pa"
         );
     }
 

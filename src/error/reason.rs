@@ -135,9 +135,12 @@ pub enum ParamReason {
         /// The lateral acceleration asked, m/s².
         ay: f64,
     },
-    /// A step steer given both or neither of its amplitudes.
-    #[error("a step steer needs exactly one of `steer` (rad) and `lateral_acceleration` (m/s²)")]
-    StepSteerAmplitude,
+    /// A step steer given both of its amplitudes.
+    #[error("a step steer takes one of `steer` (rad) and `lateral_acceleration` (m/s²), and both are given: keep one")]
+    StepSteerBothAmplitudes,
+    /// A step steer given neither of its amplitudes.
+    #[error("a step steer needs one of `steer` (rad) and `lateral_acceleration` (m/s²), and neither is given")]
+    StepSteerNoAmplitude,
     /// An empty list of candidate effects.
     #[error("an empty list: name at least one effect, or leave the key out for the whole library")]
     NoEffects,

@@ -19,6 +19,8 @@ use crate::sim::{Integrator, Method, MethodName, Tolerances};
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
+pub use step_steer::StepSteerSpec;
+use step_steer::{Amplitude, MAX_RAMP_TIME};
 
 /// Integration settings (`[simulation]`, or `[integrator]`): the method,
 /// the interval of the recorded rows, and Dormand–Prince's tolerances.
@@ -90,46 +92,6 @@ impl SimulationSettings {
             }
         }
     }
-}
-
-/// Step steer as written in a file: the amplitude is either a steer angle or
-/// the steady lateral acceleration it must produce (GB/T 6323: 2 m/s²).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct StepSteerSpec {
-    /// Forward speed, m/s.
-    pub speed: f64,
-    /// Steer step, rad, from the straight-running steer.
-    #[serde(default)]
-    pub steer: Option<f64>,
-    /// Steady lateral acceleration to reach from straight running, m/s²
-    /// (sign gives the direction).
-    #[serde(default)]
-    pub lateral_acceleration: Option<f64>,
-    /// Time the steer starts, s.
-    #[serde(default = "default_start")]
-    pub start: f64,
-    /// 0–100 % rise time of the linear steer ramp, s (ISO 7401: 10–90 %
-    /// within 0.15 s, so at most 0.1875 s; GB/T 6323: at most 0.2 s).
-    #[serde(default = "default_rise")]
-    pub rise_time: f64,
-    /// End of the run, s.
-    #[serde(default = "default_end")]
-    pub end: f64,
-}
-
-fn default_start() -> f64 {
-    1.0
-}
-/// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
-/// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
-pub(crate) const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
-
-fn default_rise() -> f64 {
-    0.1
-}
-fn default_end() -> f64 {
-    6.0
 }
 
 /// Replay of a measured run's steer and speed.
@@ -395,24 +357,17 @@ fn step_steer(
         }
         road_wheel_steer(key, d + trim.steer).map_err(|e| ParamError::new(key, v, e.reason))
     };
-    let amplitude = match (s.steer, s.lateral_acceleration) {
-        (Some(d), None) => {
+    let amplitude = match s.amplitude(src)? {
+        Amplitude::Steer(d) => {
             check(src, ParamError::finite("steer", d))?;
             check(src, step("steer", d, d))?;
             d
         }
-        (None, Some(ay)) => {
+        Amplitude::LateralAcceleration(ay) => {
             check(src, ParamError::finite("lateral_acceleration", ay))?;
             let d = solve(ay)?.steer - trim.steer;
             check(src, step("lateral_acceleration", ay, d))?;
             d
-        }
-        _ => {
-            return Err(param_error(
-                src,
-                Some("manoeuvre"),
-                ParamError::without_value("kind", ParamReason::StepSteerAmplitude),
-            ))
         }
     };
     Ok(Resolved {
@@ -574,6 +529,8 @@ fn other_manoeuvre(
         }
     })
 }
+
+mod step_steer;
 
 #[cfg(test)]
 mod tests {

@@ -11,6 +11,9 @@ use std::path::{Path, PathBuf};
 type KeyVisitor<'v, R> =
     dyn FnMut(&str, &str, &dyn toml_edit::TableLike, &toml_edit::Item) -> Option<R> + 'v;
 
+/// Byte range of something in a file's text.
+type Span = std::ops::Range<usize>;
+
 /// A TOML file's path and text, kept to locate errors found after parsing.
 #[derive(Debug, Clone)]
 pub struct TomlSource {
@@ -48,12 +51,73 @@ fn suggest_variant(message: &str) -> String {
             .flat_map(|k| k.split(" or "))
             .map(|k| k.trim_matches('`'))
             .collect();
-        let clause = crate::format::did_you_mean(given, &known);
+        let clause = Some(what)
+            .filter(|w| *w == "field")
+            .and_then(|_| same_quantity(given, &known))
+            .unwrap_or_else(|| crate::format::did_you_mean(given, &known));
         (!clause.is_empty()).then(|| format!("unknown {what} `{given}`{clause}{rest}"))
     };
     parse("variant")
         .or_else(|| parse("field"))
         .unwrap_or_else(|| message.to_string())
+}
+
+/// Keys the manoeuvre kinds (`scenario.rs`) give one quantity under
+/// different names: the steer is a step steer's `steer`, a sine's or a
+/// sweep's `amplitude`, a ramp's `rate`; the frequency is a sine's
+/// `frequency`, a sweep's `f_start` and `f_end`. Spelling alone answers a
+/// sine's `steer` with `speed`.
+const SAME_QUANTITY: &[&[&str]] = &[
+    &["steer", "amplitude", "rate"],
+    &["frequency", "f_start", "f_end"],
+];
+
+/// The known keys that hold what the unknown key `given` holds in another
+/// kind of table, as a clause (` (did you mean `amplitude`?)`).
+fn same_quantity(given: &str, known: &[&str]) -> Option<String> {
+    let group = SAME_QUANTITY.iter().find(|g| g.contains(&given))?;
+    let names: Vec<String> = known
+        .iter()
+        .filter(|k| group.contains(k))
+        .map(|k| format!("`{k}`"))
+        .collect();
+    (!names.is_empty()).then(|| format!(" (did you mean {}?)", names.join(" or ")))
+}
+
+/// toml's "expected newline, `#`" (after a value or a table header the
+/// line goes on) said as what was found there and what a line holds;
+/// other messages unchanged. `rest` is the text from the error's place.
+fn plain_syntax(message: &str, rest: Option<&str>) -> String {
+    let (after, rule) = match message {
+        "expected newline, `#`" => (
+            "the value",
+            "TOML takes one `key = value` per line, and after the value only a `# comment`",
+        ),
+        "invalid table header; expected newline, `#`" => (
+            "the table header",
+            "a `[table]` header stands alone on its line, but for a `# comment`",
+        ),
+        _ => return message.to_string(),
+    };
+    match rest.and_then(found_text) {
+        Some(found) => format!("unexpected {found} after {after}: {rule}"),
+        None => message.to_string(),
+    }
+}
+
+/// What `rest` starts with, as a message names it: a word or number whole
+/// (`b`, `2.5`), a sign (`,`), a character that does not show by its code.
+fn found_text(rest: &str) -> Option<String> {
+    let word = |c: char| c.is_alphanumeric() || matches!(c, '_' | '-' | '.' | '+');
+    let c = rest.chars().next()?;
+    Some(if word(c) {
+        let end = rest.find(|c: char| !word(c)).unwrap_or(rest.len());
+        format!("`{}`", &rest[..end])
+    } else if c.is_ascii_graphic() {
+        format!("`{c}`")
+    } else {
+        format!("character {c:?} (U+{:04X})", c as u32)
+    })
 }
 
 /// serde's type names in `message` said as a TOML writer says them
@@ -178,7 +242,7 @@ impl TomlSource {
         // A name's place holding no name (`kind = 3`): the names are found
         // by reading the file again with a string there, which serde
         // answers with its list.
-        let names = |at: std::ops::Range<usize>| {
+        let names = |at: Span| {
             let mut probe = self.text.clone();
             probe.replace_range(at, "\"?\"");
             let e = toml::from_str::<T>(&probe).err()?;
@@ -194,58 +258,10 @@ impl TomlSource {
     fn toml_error(
         &self,
         e: &toml::de::Error,
-        names: &dyn Fn(std::ops::Range<usize>) -> Option<String>,
+        names: &dyn Fn(Span) -> Option<String>,
     ) -> InputError {
-        let mut message = e.message().trim().to_string();
-        // toml says nothing of some characters (a lone carriage return):
-        // name the one found.
-        if message.is_empty() {
-            let found = e
-                .span()
-                .and_then(|s| self.text.get(s.start..)?.chars().next());
-            message = found.map_or("unexpected end of file".into(), |c| {
-                format!("unexpected character {c:?} (U+{:04X}) here", c as u32)
-            });
-        }
-        // Errors inside a `model`-tagged table come without a span; an
-        // unknown field can still be found by its name.
-        let span = e.span().or_else(|| {
-            let name = message.strip_prefix("unknown field `")?.split('`').next()?;
-            self.find_key(name)
-        });
-        // toml's syntax messages run over lines ("invalid string\nexpected
-        // `\"`"): one line, as every other message (a fleet table's row).
-        let message = message
-            .lines()
-            .map(str::trim)
-            .filter(|l| !l.is_empty())
-            .collect::<Vec<_>>()
-            .join("; ");
-        let message = suggest_variant(&message);
-        // serde calls a TOML date a map: say what the reader wrote.
-        let message = match message.strip_prefix("invalid type: map, ") {
-            Some(rest) => format!("invalid type: a date, time or table, {rest}"),
-            None => message,
-        };
-        let message = plain_types(&message);
-        // A value of the wrong type: toml's message names the value, the
-        // key is named here; a value that does not parse, by the key
-        // written on its line.
-        let key = span.as_ref().and_then(|s| {
-            self.key_of_value_at(s.start)
-                .or_else(|| self.key_on_line_of(s.start))
-        });
-        // A tagged table (`[manoeuvre]`, a tyre's `model`) reports a wrong
-        // type or length at the table or nowhere: the value the message
-        // describes is looked up among the table's keys (the document's
-        // without a span), and the error put at its key.
-        let (span, key) = match key {
-            Some(k) => (span, Some(k)),
-            None => match offender(&message).and_then(|o| self.culprit(&o, span.clone())) {
-                Some((k, at)) => (Some(at), Some(k)),
-                None => (span, None),
-            },
-        };
+        let message = self.plain_message(e);
+        let (span, key) = self.place(e, &message);
         let message = match (&span, message.strip_suffix(", expected a name in quotes")) {
             (Some(at), Some(head)) => match names(at.clone()) {
                 Some(list) => format!("{head}, expected one of {list}"),
@@ -261,6 +277,71 @@ impl TomlSource {
                 detail: message,
             },
             None => self.located(span, InputProblem::Toml { detail: message }),
+        }
+    }
+
+    /// toml's message for `e` in a TOML writer's words: on one line, with
+    /// the nearest known name suggested, serde's type names and toml's
+    /// syntax terms said plainly.
+    fn plain_message(&self, e: &toml::de::Error) -> String {
+        let rest = e.span().and_then(|s| self.text.get(s.start..));
+        let mut message = e.message().trim().to_string();
+        // toml says nothing of some characters (a lone carriage return):
+        // name the one found.
+        if message.is_empty() {
+            let found = rest.and_then(|r| r.chars().next());
+            message = found.map_or("unexpected end of file".into(), |c| {
+                format!("unexpected character {c:?} (U+{:04X}) here", c as u32)
+            });
+        }
+        // toml's syntax messages run over lines ("invalid string\nexpected
+        // `\"`"): one line, as every other message (a fleet table's row).
+        let message = message
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect::<Vec<_>>()
+            .join("; ");
+        let message = suggest_variant(&message);
+        // serde calls a TOML date a map: say what the reader wrote.
+        let message = match message.strip_prefix("invalid type: map, ") {
+            Some(rest) => format!("invalid type: a date, time or table, {rest}"),
+            None => message,
+        };
+        plain_syntax(&plain_types(&message), rest)
+    }
+
+    /// Where the error saying `message` is in the file, and the dotted key
+    /// it concerns where one is found.
+    fn place(&self, e: &toml::de::Error, message: &str) -> (Option<Span>, Option<String>) {
+        // An unknown key: toml puts it at the key, at the whole table in a
+        // tagged one (`[manoeuvre]`), nowhere inside a `model`-tagged one.
+        // The key of that name within the place given (anywhere without
+        // one) is what is wrong.
+        let unknown = message
+            .strip_prefix("unknown field `")
+            .and_then(|r| r.split('`').next());
+        if let Some((key, at)) = unknown.and_then(|name| self.find_key(name, e.span())) {
+            return (Some(at), Some(key));
+        }
+        let span = e.span();
+        // A value of the wrong type: toml's message names the value, the
+        // key is named here; a value that does not parse, by the key
+        // written on its line.
+        let key = span.as_ref().and_then(|s| {
+            self.key_of_value_at(s.start)
+                .or_else(|| self.key_on_line_of(s.start))
+        });
+        if key.is_some() {
+            return (span, key);
+        }
+        // A tagged table (`[manoeuvre]`, a tyre's `model`) reports a wrong
+        // type or length at the table or nowhere: the value the message
+        // describes is looked up among the table's keys (the document's
+        // without a span), and the error put at its key.
+        match offender(message).and_then(|o| self.culprit(&o, span.clone())) {
+            Some((k, at)) => (Some(at), Some(k)),
+            None => (span, None),
         }
     }
 
@@ -293,11 +374,7 @@ impl TomlSource {
 
     /// The first key (dotted path, and the key's span) within `within`
     /// (anywhere without it) whose value is the one `o` describes.
-    fn culprit(
-        &self,
-        o: &Offender,
-        within: Option<std::ops::Range<usize>>,
-    ) -> Option<(String, std::ops::Range<usize>)> {
+    fn culprit(&self, o: &Offender, within: Option<Span>) -> Option<(String, Span)> {
         self.find(&mut |path, _, _, item| {
             let at = item.span()?;
             let inside = within
@@ -320,11 +397,22 @@ impl TomlSource {
         })
     }
 
-    /// The dotted path of the key whose value starts at byte `pos`.
+    /// The dotted path of the key whose value starts at byte `pos`, or of
+    /// the element of an array there (`tyres.friction[1]`): toml places a
+    /// wrong element at the element itself.
     fn key_of_value_at(&self, pos: usize) -> Option<String> {
+        fn within(path: &str, v: &toml_edit::Value, pos: usize) -> Option<String> {
+            if v.span().is_some_and(|s| s.start == pos) {
+                return Some(path.to_string());
+            }
+            v.as_array()?
+                .iter()
+                .enumerate()
+                .find_map(|(i, e)| within(&format!("{path}[{i}]"), e, pos))
+        }
         self.find(&mut |path, _, _, item| {
-            (item.as_table_like().is_none() && item.span().is_some_and(|s| s.start == pos))
-                .then(|| path.to_string())
+            let value = item.as_value().filter(|_| item.as_table_like().is_none())?;
+            within(path, value, pos)
         })
     }
 
@@ -362,7 +450,7 @@ impl TomlSource {
     /// an element of an array (`lateral.p[3]`), or of the key where its
     /// value is a table: an error points at what is wrong, as toml's own
     /// errors of type do.
-    pub(crate) fn key_span(&self, key_path: &str) -> Option<std::ops::Range<usize>> {
+    pub(crate) fn key_span(&self, key_path: &str) -> Option<Span> {
         let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
         let mut table: &dyn toml_edit::TableLike = doc.as_table();
         let parts: Vec<(&str, Option<usize>)> = key_path
@@ -390,12 +478,17 @@ impl TomlSource {
         None
     }
 
-    /// Span of the first key called `name` at any depth.
-    fn find_key(&self, name: &str) -> Option<std::ops::Range<usize>> {
-        // The first key of that name ends the search, span or not.
-        self.find(&mut |_, key, table, _| {
-            (key == name).then(|| table.get_key_value(key).and_then(|(k, _)| k.span()))
-        })?
+    /// The dotted path and span of the first key called `name` at any
+    /// depth whose span starts within `within` (anywhere without it).
+    fn find_key(&self, name: &str, within: Option<Span>) -> Option<(String, Span)> {
+        self.find(&mut |path, key, table, _| {
+            if key != name {
+                return None;
+            }
+            let at = table.get_key_value(key).and_then(|(k, _)| k.span())?;
+            let inside = within.as_ref().is_none_or(|w| w.contains(&at.start));
+            inside.then(|| (path.to_string(), at))
+        })
     }
 
     /// The file `path` that the value of `key_path` names, checked to
@@ -443,7 +536,7 @@ impl TomlSource {
     }
 
     /// An error at `span` of this file, or of the whole file without one.
-    fn located(&self, span: Option<std::ops::Range<usize>>, problem: InputProblem) -> InputError {
+    fn located(&self, span: Option<Span>, problem: InputProblem) -> InputError {
         InputError::Invalid {
             path: self.path.clone(),
             at: span.map(|s| self.location(s.start)),

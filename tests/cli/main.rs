@@ -251,6 +251,7 @@ mod rig_layouts;
 mod scenarios;
 mod shards;
 mod sweeps;
+mod toml_errors;
 mod trips;
 mod trips_applicable;
 mod trips_diagnose;

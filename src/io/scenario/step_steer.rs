@@ -1,0 +1,77 @@
+//! A step steer as a scenario file gives it (`kind = "step-steer"`): its
+//! keys, their defaults, and which of its two amplitudes is given.
+
+use crate::error::{InputError, ParamError, ParamReason};
+use crate::io::toml_file::{param_error, TomlSource};
+use serde::Deserialize;
+
+/// Step steer as written in a file: the amplitude is either a steer angle or
+/// the steady lateral acceleration it must produce (GB/T 6323: 2 m/s²).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StepSteerSpec {
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Steer step, rad, from the straight-running steer.
+    #[serde(default)]
+    pub steer: Option<f64>,
+    /// Steady lateral acceleration to reach from straight running, m/s²
+    /// (sign gives the direction).
+    #[serde(default)]
+    pub lateral_acceleration: Option<f64>,
+    /// Time the steer starts, s.
+    #[serde(default = "default_start")]
+    pub start: f64,
+    /// 0–100 % rise time of the linear steer ramp, s (ISO 7401: 10–90 %
+    /// within 0.15 s, so at most 0.1875 s; GB/T 6323: at most 0.2 s).
+    #[serde(default = "default_rise")]
+    pub rise_time: f64,
+    /// End of the run, s.
+    #[serde(default = "default_end")]
+    pub end: f64,
+}
+
+fn default_start() -> f64 {
+    1.0
+}
+/// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
+/// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
+pub(crate) const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
+
+fn default_rise() -> f64 {
+    0.1
+}
+fn default_end() -> f64 {
+    6.0
+}
+
+/// The one amplitude a step steer is given.
+pub(crate) enum Amplitude {
+    /// `steer`, rad.
+    Steer(f64),
+    /// `lateral_acceleration`, m/s².
+    LateralAcceleration(f64),
+}
+
+impl StepSteerSpec {
+    /// The amplitude given, from `src`. Both given is refused at the later
+    /// of the two in the file, the key that makes it two; neither, at the
+    /// manoeuvre's `kind`, as no key holds what is missing.
+    pub(crate) fn amplitude(&self, src: &TomlSource) -> Result<Amplitude, InputError> {
+        let e = match (self.steer, self.lateral_acceleration) {
+            (Some(d), None) => return Ok(Amplitude::Steer(d)),
+            (None, Some(ay)) => return Ok(Amplitude::LateralAcceleration(ay)),
+            (None, None) => ParamError::without_value("kind", ParamReason::StepSteerNoAmplitude),
+            (Some(d), Some(ay)) => {
+                let at = |k: &str| src.key_span(&format!("manoeuvre.{k}")).map(|s| s.start);
+                let (key, v) = if at("steer") > at("lateral_acceleration") {
+                    ("steer", d)
+                } else {
+                    ("lateral_acceleration", ay)
+                };
+                ParamError::new(key, v, ParamReason::StepSteerBothAmplitudes)
+            }
+        };
+        Err(param_error(src, Some("manoeuvre"), e))
+    }
+}

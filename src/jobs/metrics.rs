@@ -160,7 +160,7 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         out.push("  no overshoot: no yaw-rate maximum stands above the steady state by more than the noise".into());
     }
     if !m.settled {
-        out.push("  warning: the response has not settled in the steady window".into());
+        out.push("  warning: the response has not settled in the steady window (it spreads by more than 2 % of the step beyond its noise)".into());
     }
     out
 }

@@ -115,6 +115,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {
         warnings.extend(schedule_applicability(
             &r.t,
+            &r.steer,
             &r.speed,
             sc.integrator.friction,
         ));

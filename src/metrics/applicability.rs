@@ -13,9 +13,12 @@
 //! (`r ≈ u·δ/l`) with no dynamics for the times to measure. Units: rad,
 //! m/s and % as in [`StepMetrics`].
 //!
-//! A speed schedule is held to what a car on the road can drive
+//! A schedule is held to what a car on the road can drive
 //! ([`schedule_applicability`]): the 2-DOF model takes the speed as an
-//! input, so a change faster than the road's `μ·g` would run unchecked.
+//! input, so a change faster than the road's `μ·g` would run unchecked;
+//! its steer to what a steering system can do, a road-wheel rate within
+//! [`STEER_RATE`]; and a run that starts with its steer already applied
+//! starts with an instant step from straight running.
 
 use super::StepMetrics;
 
@@ -27,6 +30,11 @@ pub const SPIN_OVERSHOOT: f64 = 100.0;
 /// The speed below which a step steer measures no dynamics, m/s
 /// (18 km/h).
 pub const CRAWL_SPEED: f64 = 5.0;
+/// The fastest road-wheel steer rate a schedule is taken to mean, rad/s:
+/// steering robots drive the handwheel at up to about 3,000°/s (ESC's
+/// sine with dwell needs about 1,200°/s), about 3.5 rad/s at the road
+/// wheels over a 15:1 ratio; 5 rad/s leaves room for a quick rack.
+pub const STEER_RATE: f64 = 5.0;
 
 /// The warnings on metrics `m` of a step steer at `speed` (m/s, where
 /// known): one sentence each, empty where the metrics are what the
@@ -54,13 +62,42 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
     out
 }
 
+/// The warnings on a schedule (`t`, `steer`, `speed` at breakpoints,
+/// linear between) for a car whose tyres on this road grip to `mu`: its
+/// speed's ([`speed_schedule`]), a steer rate above [`STEER_RATE`], and a
+/// first steer other than 0 (the run starts from straight running).
+pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let fastest = t
+        .windows(2)
+        .zip(steer.windows(2))
+        .map(|(t, d)| ((d[1] - d[0]) / (t[1] - t[0]), t[0], t[1]))
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+    if let Some((rate, t0, t1)) = fastest.filter(|s| s.0.abs() > STEER_RATE) {
+        out.push(format!(
+            "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) from t = {t0} s to {t1} s, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): the run shows a step no driver or robot can steer",
+            rate.abs(),
+            rate.abs().to_degrees()
+        ));
+    }
+    if let (Some(&d0), Some(&t0)) = (steer.first(), t.first()) {
+        if d0 != 0.0 {
+            out.push(format!(
+                "the schedule starts with steer = {d0} rad at t = {t0} s, but the run starts from straight running (no yaw rate, no sideslip): it opens with an instant steer step; start the steer at 0 and ramp it"
+            ));
+        }
+    }
+    out.extend(speed_schedule(t, speed, mu));
+    out
+}
+
 /// The warnings on a speed schedule (`t`, `speed` at breakpoints, linear
 /// between) for a car whose tyres on this road grip to `mu` (the peak
 /// friction coefficient at static load, road friction scale included): a
 /// speed change faster than `μ·g` (the 2-DOF model takes the speed as
 /// given, so nothing stops it), and the time spent below [`CRAWL_SPEED`].
 /// Empty where the schedule is one the car can drive.
-pub fn schedule_applicability(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
+fn speed_schedule(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
     let mut out = Vec::new();
     let grip = mu * crate::constants::G;
     let steepest = t
@@ -173,7 +210,7 @@ mod tests {
         // 40 → 1 m/s in 0.5 s: 78 m/s², 8 g; then 6.5 s at 1 m/s plus the
         // last 0.064 s of the drop below 5 m/s.
         let (t, u) = ([0.0, 1.0, 1.5, 8.0], [40.0, 40.0, 1.0, 1.0]);
-        let w = schedule_applicability(&t, &u, 1.0);
+        let w = speed_schedule(&t, &u, 1.0);
         assert_eq!(w.len(), 2, "{w:?}");
         assert!(
             w[0].starts_with("the speed falls at 78.0 m/s² (8.0 g) from t = 1 s to 1.5 s, more than the tyres' grip on this road gives (μ·g = 9.8 m/s²)"),
@@ -186,11 +223,38 @@ mod tests {
         );
         // At μ·g and above the crawl speed: nothing to say.
         let g = crate::constants::G;
-        assert!(schedule_applicability(&[0.0, 1.0], &[20.0, 20.0 - g], 1.0).is_empty());
+        assert!(speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - g], 1.0).is_empty());
         // On ice the same 0.5 g braking is past the grip.
-        let w = schedule_applicability(&[0.0, 1.0], &[20.0, 20.0 - 0.5 * g], 0.3);
+        let w = speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - 0.5 * g], 0.3);
         assert!(
             w[0].starts_with("the speed falls at 4.9 m/s² (0.5 g)"),
+            "{w:?}"
+        );
+    }
+
+    #[test]
+    fn a_steer_faster_than_a_steering_system_or_applied_at_the_start_is_said() {
+        // 0 → 0.5 rad in 1 ms: 500 rad/s.
+        let (t, u) = ([0.0, 1.0, 1.001, 3.0], [30.0; 4]);
+        let w = schedule_applicability(&t, &[0.0, 0.0, 0.5, 0.5], &u, 1.0);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(
+            w[0].starts_with("the steer changes at 500.0 rad/s (28648°/s at the road wheels) from t = 1 s to 1.001 s"),
+            "{w:?}"
+        );
+        // Just within the limit: nothing to say.
+        let edge = [
+            0.0,
+            0.0,
+            0.99 * STEER_RATE * 0.001,
+            0.99 * STEER_RATE * 0.001,
+        ];
+        assert!(schedule_applicability(&t, &edge, &u, 1.0).is_empty());
+        // A first steer other than 0: an instant step at the start.
+        let w = schedule_applicability(&[0.5, 3.0], &[0.1, 0.1], &[30.0, 30.0], 1.0);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(
+            w[0].starts_with("the schedule starts with steer = 0.1 rad at t = 0.5 s, but the run starts from straight running"),
             "{w:?}"
         );
     }

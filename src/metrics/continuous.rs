@@ -256,7 +256,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_total_variance: e_r,
         ay_total_variance: Some(e_ay),
         er: Some(s.e1 * e_r + s.e2 * e_ay),
-        settled: r_spread < 0.02 && a_spread < 0.02,
+        settled: r_spread < super::SETTLED_SPREAD && a_spread < super::SETTLED_SPREAD,
         yaw_rate_noise: 0.0,
         filter_hz: None,
     })

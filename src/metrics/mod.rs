@@ -268,6 +268,19 @@ fn normalise(
     })
 }
 
+/// The spread about the steady value, relative to the step, beyond which
+/// a response has not settled.
+const SETTLED_SPREAD: f64 = 0.02;
+
+/// Whether a response whose steady window spreads by `spread` (relative to
+/// the step) has settled, given the white noise `noise` left in it after
+/// the filter (relative alike): the spread beyond the noise, `√(spread² −
+/// noise²)`, within [`SETTLED_SPREAD`]. Unfiltered, a gyro's noise of 3 %
+/// of the step is no motion.
+fn settled(spread: f64, noise: f64) -> bool {
+    (spread * spread - noise * noise).max(0.0).sqrt() < SETTLED_SPREAD
+}
+
 /// ∫ (a − b)² dt over [from, to] (trapezoid, partial end intervals
 /// interpolated).
 fn total_variance(t: &[f64], a: &[f64], b: &[f64], from: f64, to: f64) -> f64 {
@@ -422,7 +435,8 @@ pub(crate) fn step_metrics(
         yaw_rate_total_variance: e_r,
         ay_total_variance: e_ay,
         er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
-        settled: r.spread < 0.02 && a.as_ref().is_none_or(|a| a.spread < 0.02),
+        settled: settled(r.spread, r_noise)
+            && a.as_ref().is_none_or(|a| settled(a.spread, gain * a.noise)),
         yaw_rate_noise: r_noise,
         filter_hz,
     })

@@ -165,3 +165,47 @@ fn the_zero_phase_low_pass_halves_its_cutoff_and_moves_nothing() {
     let c = zero_phase_low_pass(&vec![3.5; 500], dt, 10.0);
     assert!(c.iter().all(|v| (v - 3.5).abs() < 1e-12));
 }
+
+/// Unfiltered (`--filter-hz 0`), a steady yaw rate whose gyro noise is 3 %
+/// of the step was called "not settled": noise is no motion, a drift is.
+#[test]
+fn noise_in_the_steady_window_is_no_motion_and_a_drift_is() {
+    // A deterministic white sequence (an LCG), ±√3·σ uniform: σ = 3 % of
+    // the 0.4 rad/s step.
+    let mut state = 12345u64;
+    let mut white = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+        (2.0 * u - 1.0) * 3f64.sqrt()
+    };
+    let s = MetricSettings {
+        filter_hz: None,
+        ..MetricSettings::default()
+    };
+    let (t, steer, clean) = record(|s| 0.4 * (1.0 - (-s / 0.2).exp()));
+    let noisy: Vec<f64> = clean.iter().map(|v| v + 0.012 * white()).collect();
+    let m = step_metrics(&t, &steer, &noisy, None, None, &s).unwrap();
+    assert!(m.settled, "white noise of 3 % of the step");
+    // A drift of 10 % of the step over the steady window (the last 1 s):
+    // a spread of 10/√12 = 2.9 % beyond the noise.
+    let drifting: Vec<f64> = t
+        .iter()
+        .zip(&noisy)
+        .map(|(&x, v)| v + 0.04 * (x - 11.0).max(0.0))
+        .collect();
+    let m = step_metrics(&t, &steer, &drifting, None, None, &s).unwrap();
+    assert!(!m.settled, "a drift of 10 % of the step");
+    // The same drift without noise: not settled either.
+    let smooth: Vec<f64> = t
+        .iter()
+        .zip(&clean)
+        .map(|(&x, v)| v + 0.04 * (x - 11.0).max(0.0))
+        .collect();
+    assert!(
+        !step_metrics(&t, &steer, &smooth, None, None, &s)
+            .unwrap()
+            .settled
+    );
+}

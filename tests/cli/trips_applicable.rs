@@ -328,3 +328,39 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
     assert_eq!(height, 5 * 260);
     assert_eq!(said_drawn(schedule("[25.0, 25.0, 25.0, 25.0]")).1, 4 * 260);
 }
+
+/// A schedule steering 0 → 0.5 rad in 1 ms at 30 m/s, and one opening
+/// with its steer already applied, ran without a word: only the speed
+/// was checked.
+#[test]
+fn simulate_says_when_a_schedule_steers_faster_than_a_steering_system_or_starts_steered() {
+    let head: String = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
+        .unwrap()
+        .lines()
+        .take_while(|l| !l.starts_with("[manoeuvre]"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let head = head.replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let said = |t: &str, steer: &str| {
+        let text = format!(
+            "{head}[manoeuvre]\nkind = \"schedule\"\nt = {t}\nsteer = {steer}\nspeed = [30.0, 30.0, 30.0, 30.0]\n"
+        );
+        let dir = scratch(&[("s.toml", &text)]);
+        let o = simulated(&dir.path().join("s.toml"));
+        assert!(o.status.success(), "{}", stderr(&o));
+        stdout(&o)
+    };
+    let s = said("[0.0, 1.0, 1.001, 3.0]", "[0.0, 0.0, 0.05, 0.05]");
+    assert!(
+        s.contains("  warning: the steer changes at 50.0 rad/s (2865°/s at the road wheels) from t = 1 s to 1.001 s, faster than a steering system turns the wheels"),
+        "{s}"
+    );
+    let s = said("[0.5, 1.0, 1.5, 3.0]", "[0.02, 0.02, 0.03, 0.03]");
+    assert!(
+        s.contains("  warning: the schedule starts with steer = 0.02 rad at t = 0.5 s, but the run starts from straight running (no yaw rate, no sideslip): it opens with an instant steer step"),
+        "{s}"
+    );
+    // From 0, at 0.1 rad/s: a step a driver steers, nothing to say.
+    let s = said("[0.0, 1.0, 1.2, 3.0]", "[0.0, 0.0, 0.02, 0.02]");
+    assert!(!s.contains("warning"), "{s}");
+}

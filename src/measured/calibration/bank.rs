@@ -92,8 +92,9 @@ impl BankCheck {
         self.read - self.bank_term
     }
 
-    /// The terminal's words when the logged bank is not taken; None when
-    /// it is.
+    /// The terminal's words when the logged bank is not taken, to lead
+    /// the channel's line (the offset it would imply follows there); None
+    /// when it is taken.
     pub fn doubt(&self) -> Option<String> {
         let why = match self.seen {
             BankSeen::AsLogged => return None,
@@ -102,7 +103,7 @@ impl BankCheck {
         };
         let m = |x: f64| fixed(x, 2);
         Some(format!(
-            "parked where the logged bank gives g·sin(bank) = {} m/s², the accelerometer reads {} m/s²: an offset of {} m/s² is beyond the {PLAUSIBLE_AY_OFFSET} m/s² a mounted sensor shows, so {why}; not used as evidence",
+            "no offset taken, not used as evidence: parked where the logged bank gives g·sin(bank) = {} m/s², the accelerometer reads {} m/s², an offset of {} m/s², beyond the {PLAUSIBLE_AY_OFFSET} m/s² a mounted sensor shows, so {why}",
             m(self.bank_term),
             m(self.read),
             m(self.offset_as_logged())

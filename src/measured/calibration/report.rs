@@ -325,10 +325,15 @@ impl ChannelCalibration {
         if let Some(p) = &self.straight {
             parts.push(part(p, SpanKind::Straight, parts.is_empty()));
         }
-        let mut out = format!("{name} offset{bank} {}", parts.join(", "));
-        if let Some(doubt) = self.bank.as_ref().and_then(|b| b.doubt()) {
-            out.push_str(&format!("; but {doubt}"));
-        }
+        // A doubted bank leads: the offset read with it is no offset, and
+        // a reader who stops at the number takes it for one.
+        let mut out = match self.bank.as_ref().and_then(|b| b.doubt()) {
+            Some(doubt) => format!(
+                "{name}: {doubt}; read with the bank as logged{bank}: {}",
+                parts.join(", ")
+            ),
+            None => format!("{name} offset{bank} {}", parts.join(", ")),
+        };
         if let Some(a) = &self.agreement {
             let verdict = if a.agree { "agree" } else { "differ" };
             out.push_str(&format!(

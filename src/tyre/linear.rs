@@ -2,7 +2,12 @@
 //! bicycle model, used for closed-form checks. It has no friction limit, so
 //! `mu_scale` does not act on it.
 //!
-//! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`.
+//! Units: N/rad, m, rad. Signs as in `tyre/mod.rs`: `mz` has the sign of
+//! `fy` at small slip (it turns the wheel back toward zero slip), so a
+//! physical pneumatic trail `t_p` is positive (the contact patch's force
+//! acts behind the wheel centre); `identify` fits it as the ratio of the
+//! slopes of `mz` and `fy` at small slip (0.0285 m on one load of the
+//! Hoosier rig file).
 
 use super::{
     LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces, TyreModel,

@@ -364,3 +364,60 @@ fn simulate_says_when_a_schedule_steers_faster_than_a_steering_system_or_starts_
     let s = said("[0.0, 1.0, 1.2, 3.0]", "[0.0, 0.0, 0.02, 0.02]");
     assert!(!s.contains("warning"), "{s}");
 }
+
+/// The public `FSAE_Defaults.tir` (PKX1 = 50, PKX2 = -80: Kx/Fz = 0 at
+/// dfz = 0.625, 1625 N, inside its FZMAX of 2000 N) was evaluated past that
+/// load without a word: its longitudinal force there opposes the slip.
+#[test]
+fn tyre_eval_says_where_a_slip_stiffness_changes_sign_inside_the_loads() {
+    let test = "tyre_eval_says_where_a_slip_stiffness_changes_sign_inside_the_loads";
+    let Some(tir) = shared_data(test, "tir_public/FSAE_Defaults.tir") else {
+        return;
+    };
+    let points = "fz,kappa,alpha,camber,speed\n500,0.01,0.01,0,16\n1900,0.01,0.01,0,16\n";
+    let dir = scratch(&[("p.csv", points)]);
+    let eval = |csv: &str| {
+        fs::write(dir.path().join("p.csv"), csv).unwrap();
+        let _ = fs::remove_file(dir.path().join("f.csv"));
+        let o = bin()
+            .args([
+                "tyre-eval",
+                tir.to_str().unwrap(),
+                "p.csv",
+                "--out",
+                "f.csv",
+            ])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        stderr(&o)
+    };
+    let e = eval(points);
+    let said = "warning: the longitudinal slip stiffness (the force's slope at zero slip) changes sign between fz = ";
+    let at = e.find(said).unwrap_or_else(|| panic!("{e}"));
+    let loads: Vec<f64> = e[at + said.len()..]
+        .split(" N")
+        .take(2)
+        .map(|x| x.trim_start_matches(" and ").parse().unwrap())
+        .collect();
+    assert!(
+        loads[0] <= 1625.0 && 1625.0 <= loads[1] && loads[1] - loads[0] < 50.0,
+        "{e}"
+    );
+    // The fx written at 1900 N is against the slip, as the file says.
+    let out = fs::read_to_string(dir.path().join("f.csv")).unwrap();
+    let fx: f64 = out
+        .lines()
+        .nth(2)
+        .unwrap()
+        .split(',')
+        .nth(5)
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(fx < 0.0, "{out}");
+    // Loads below the crossing only: nothing to say.
+    let e = eval("fz,kappa,alpha,camber,speed\n500,0.01,0.01,0,16\n1500,0.01,0.01,0,16\n");
+    assert!(!e.contains("changes sign"), "{e}");
+}

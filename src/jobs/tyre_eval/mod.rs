@@ -21,10 +21,13 @@
 //! column the model does not read (`unread.rs`: a Gim tyre's camber), and
 //! the points beyond the ranges of the rig data a TOML tyre was fitted to
 //! (its `[fitted_ranges]`, which `identify` writes), evaluated by
-//! extrapolation.
+//! extrapolation, and a slip stiffness that changes sign inside the loads
+//! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N).
 
+mod stiffness;
 mod unread;
 
+pub use stiffness::SignChange;
 pub use unread::Unread;
 
 use crate::error::Error;
@@ -131,6 +134,9 @@ pub struct TyreEvalReport {
     pub fitted_ranges: Option<FittedRanges>,
     /// Points beyond those ranges, evaluated by extrapolation.
     pub beyond_fitted: usize,
+    /// The slip stiffnesses that change sign inside the loads evaluated.
+    #[serde(skip)]
+    pub sign_changes: Vec<SignChange>,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -139,20 +145,19 @@ pub struct TyreEvalReport {
     pub out: PathBuf,
 }
 
-/// Evaluates the tyre of `tyre_path` at the points of `points`, for the
-/// output file `out` (never one of the inputs); `mode` is MFeval's
-/// `useMode` for a Magic Formula tyre (`None`: 121).
-pub fn run(
-    tyre_path: &Path,
-    points: &Path,
-    out: &Path,
-    mode: Option<u32>,
-) -> Result<TyreEvalReport, Error> {
-    refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
-    let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
-    if let Some(code) = mode {
-        set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
-    }
+/// The points file's columns, checked: `fz, kappa, alpha, camber,
+/// speed` in that order, the pressures where given, and the file's
+/// columns for errors found later.
+struct PointColumns {
+    file: crate::io::Columns,
+    inputs: Vec<(&'static str, Vec<f64>)>,
+    pressure: Option<Vec<f64>>,
+}
+
+/// Reads the points of `points`, refusing a value no tyre is evaluated
+/// at (every one, in row order), a pressure not positive or not in Pa
+/// and loads in kN, each at its cell.
+fn read_points(points: &Path) -> Result<PointColumns, Error> {
     let mut c = read_columns(
         points,
         &["fz", "kappa", "alpha", "camber", "speed"],
@@ -161,21 +166,15 @@ pub fn run(
     let pressure = c.take_optional("pressure");
     if let Some(p) = &pressure {
         if let Some(i) = p.iter().position(|v| *v <= 0.0) {
-            return Err(c
-                .error_at(
-                    points,
-                    i,
-                    "pressure",
-                    crate::error::InputProblem::NonPositivePressure { value: p[i] },
-                )
-                .into());
+            let problem = crate::error::InputProblem::NonPositivePressure { value: p[i] };
+            return Err(c.error_at(points, i, "pressure", problem).into());
         }
     }
-    let mut columns: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
+    let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()
         .map(|n| (n, c.take(n)))
         .collect();
-    let given = columns
+    let given = inputs
         .iter()
         .map(|(n, v)| (*n, v))
         .chain(pressure.as_ref().map(|p| ("pressure", p)));
@@ -202,71 +201,54 @@ pub fn run(
         return Err(c.error_at(points, i, "pressure", slip.into()).into());
     }
     // A car's loads written in kN; the points off the road do not count.
-    if let Some((i, slip)) = load_in_kn(&columns[0].1, |fz| fz > 0.0) {
+    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
         return Err(c.error_at(points, i, "fz", slip.into()).into());
     }
-    let f = {
-        let col = |i: usize| &columns[i].1;
-        let p = pressure.clone().unwrap_or_default();
-        tyre.evaluate_points(col(0), col(1), col(2), col(3), col(4), &p)
+    Ok(PointColumns {
+        file: c,
+        inputs,
+        pressure,
+    })
+}
+
+/// A Magic Formula tyre's mode, its points outside the file's ranges and
+/// its loaded radius at every point (where it has a vertical model);
+/// none of them for another model.
+fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> (Option<u32>, usize, Option<Vec<f64>>) {
+    let Tyre::MagicFormula(t) = tyre else {
+        return (None, 0, None);
     };
-    let count = columns[0].1.len();
-    let p = pressure.clone().unwrap_or_default();
-    let points_in = unread::Points {
-        columns: [0, 1, 2, 3, 4].map(|i| &columns[i].1[..]),
-        pressure: &p,
-    };
-    let unread = unread::unread(&tyre, &points_in, &f);
-    let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &points_in));
-    let (mode, clamped, loaded_radius) = match &tyre {
-        Tyre::MagicFormula(t) => {
-            let col = |i: usize| &columns[i].1;
-            let inputs: Vec<MfInput> = (0..count)
-                .map(|i| MfInput {
-                    fz: col(0)[i],
-                    kappa: col(1)[i],
-                    alpha: col(2)[i],
-                    camber: col(3)[i],
-                    speed: col(4)[i],
-                    pressure: pressure.as_ref().map(|p| p[i]),
-                })
-                .collect();
-            let n = inputs.iter().filter(|p| t.is_clamped(p)).count();
-            // The loaded radius, on every row, where the file has a
-            // vertical model (6.1, 6.2): the free radius off the road.
-            let rl: Option<Vec<f64>> = t.has_vertical_model().then(|| {
-                inputs
-                    .iter()
-                    .map(|p| t.loaded_radius(p).unwrap_or(f64::NAN))
-                    .collect()
-            });
-            (Some(t.mode().use_mode()), n, rl)
-        }
-        _ => (None, 0, None),
-    };
-    let off_road = match loaded_radius {
-        Some(_) => columns[0].1.iter().filter(|fz| **fz <= 0.0).count(),
-        None => 0,
-    };
-    if let Some(p) = pressure {
-        columns.push(("pressure", p));
-    }
-    let of = |g: fn(&PointForces) -> f64| f.iter().map(g).collect::<Vec<_>>();
-    columns.extend([
-        ("fx", of(|x| x.fx)),
-        ("fy", of(|x| x.fy)),
-        ("mz", of(|x| x.mz)),
-    ]);
-    if tyre.has_wheel_moments() {
-        columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
-        columns.push(("my", of(|x| x.my.unwrap_or(f64::NAN))));
-    }
-    if let Some(rl) = loaded_radius {
-        columns.push(("rl", rl));
-    }
-    // A model that gives a non-finite value at a physical point is refused
-    // at that point (its row, the first column).
-    // (The first five columns are the inputs, checked above.)
+    let [fz, kappa, alpha, camber, speed] = p.columns;
+    let inputs: Vec<MfInput> = (0..fz.len())
+        .map(|i| MfInput {
+            fz: fz[i],
+            kappa: kappa[i],
+            alpha: alpha[i],
+            camber: camber[i],
+            speed: speed[i],
+            pressure: p.pressure.get(i).copied(),
+        })
+        .collect();
+    let n = inputs.iter().filter(|q| t.is_clamped(q)).count();
+    // The loaded radius, on every row, where the file has a vertical
+    // model (6.1, 6.2): the free radius off the road.
+    let rl: Option<Vec<f64>> = t.has_vertical_model().then(|| {
+        inputs
+            .iter()
+            .map(|q| t.loaded_radius(q).unwrap_or(f64::NAN))
+            .collect()
+    });
+    (Some(t.mode().use_mode()), n, rl)
+}
+
+/// Refuses the points where the model gave a non-finite output (`columns`
+/// past the five inputs), at the point's row and the load's column.
+fn refuse_non_finite(
+    points: &Path,
+    file: &crate::io::Columns,
+    columns: &[(&'static str, Vec<f64>)],
+    model: &'static str,
+) -> Result<(), Error> {
     let mut bad: Vec<(usize, &str)> = columns
         .iter()
         .skip(5)
@@ -280,16 +262,66 @@ pub fn run(
     let errors = bad
         .into_iter()
         .map(|(i, output)| {
-            let problem = crate::error::InputProblem::NonFiniteOutput {
-                model: tyre.model_name(),
-                output,
-            };
-            c.error_at(points, i, "fz", problem)
+            let problem = crate::error::InputProblem::NonFiniteOutput { model, output };
+            file.error_at(points, i, "fz", problem)
         })
         .collect();
-    if let Some(e) = crate::error::InputError::all_of(points, errors) {
-        return Err(e.into());
+    match crate::error::InputError::all_of(points, errors) {
+        Some(e) => Err(e.into()),
+        None => Ok(()),
     }
+}
+
+/// Evaluates the tyre of `tyre_path` at the points of `points`, for the
+/// output file `out` (never one of the inputs); `mode` is MFeval's
+/// `useMode` for a Magic Formula tyre (`None`: 121).
+pub fn run(
+    tyre_path: &Path,
+    points: &Path,
+    out: &Path,
+    mode: Option<u32>,
+) -> Result<TyreEvalReport, Error> {
+    refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
+    let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
+    if let Some(code) = mode {
+        set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
+    }
+    let PointColumns {
+        file,
+        mut inputs,
+        pressure,
+    } = read_points(points)?;
+    let p = pressure.clone().unwrap_or_default();
+    let given = unread::Points {
+        columns: [0, 1, 2, 3, 4].map(|i| &inputs[i].1[..]),
+        pressure: &p,
+    };
+    let [fz, kappa, alpha, camber, speed] = given.columns;
+    let f = tyre.evaluate_points(fz, kappa, alpha, camber, speed, &p);
+    let count = fz.len();
+    let unread = unread::unread(&tyre, &given, &f);
+    let sign_changes = stiffness::sign_changes(&tyre, fz);
+    let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
+    let (mode, clamped, loaded_radius) = magic_formula_extras(&tyre, &given);
+    let off_road = match loaded_radius {
+        Some(_) => fz.iter().filter(|fz| **fz <= 0.0).count(),
+        None => 0,
+    };
+    let mut columns = std::mem::take(&mut inputs);
+    columns.extend(pressure.map(|p| ("pressure", p)));
+    let of = |g: fn(&PointForces) -> f64| f.iter().map(g).collect::<Vec<_>>();
+    columns.extend([
+        ("fx", of(|x| x.fx)),
+        ("fy", of(|x| x.fy)),
+        ("mz", of(|x| x.mz)),
+    ]);
+    if tyre.has_wheel_moments() {
+        columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
+        columns.push(("my", of(|x| x.my.unwrap_or(f64::NAN))));
+    }
+    columns.extend(loaded_radius.map(|rl| ("rl", rl)));
+    // (The first five columns are the inputs, checked when read.)
+    refuse_non_finite(points, &file, &columns, tyre.model_name())?;
     Ok(TyreEvalReport {
         points: points.display().to_string(),
         count,
@@ -298,6 +330,7 @@ pub fn run(
         clamped,
         off_road,
         unread,
+        sign_changes,
         fitted_ranges,
         beyond_fitted,
         columns,
@@ -326,6 +359,7 @@ impl TyreEvalReport {
     /// not read, and the points beyond the ranges the tyre was fitted to.
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
+        out.extend(self.sign_changes.iter().map(SignChange::line));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

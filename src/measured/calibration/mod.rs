@@ -65,7 +65,9 @@
 //!
 //! Units: SI, rad, times in s. Layout: this file holds the criteria and
 //! [`calibrate`]; `spans.rs` finds the spans, `stats.rs` measures and pools
-//! them, `report.rs` holds the report and its lines.
+//! them, `bank.rs` checks a logged bank against the standstills' `a_y`
+//! (as logged, not acting, reversed), `report.rs` holds the report and its
+//! lines.
 
 mod bank;
 mod report;

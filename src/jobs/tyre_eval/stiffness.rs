@@ -1,0 +1,147 @@
+//! A slip stiffness that changes sign inside the loads a points file
+//! evaluates: a `.tir` whose `PKX1 + PKX2·dfz` crosses 0 within its load
+//! range (the public `FSAE_Defaults.tir` at 1625 N) gives a longitudinal
+//! force against its slip above that load, and `tyre-eval` writes it like
+//! any other. Found by behaviour, for any model: the force's slope at zero
+//! slip (a central difference of ±[`SLIP`]) at loads across the points'
+//! range, and a change of its sign between two of them.
+
+use crate::tyre::{SlipState, Tyre};
+
+/// The slip (ratio and angle, rad) of the central difference.
+const SLIP: f64 = 1e-4;
+
+/// Loads the slope is read at across the points' range.
+const LOADS: usize = 65;
+
+/// A stiffness whose sign changes between two loads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SignChange {
+    /// `longitudinal slip` or `cornering`.
+    pub stiffness: &'static str,
+    /// The loads it changes sign between, N.
+    pub between: (f64, f64),
+    /// The range of loads evaluated, N.
+    pub loads: (f64, f64),
+}
+
+impl SignChange {
+    /// The sentence on the terminal.
+    pub fn line(&self) -> String {
+        let n = |f: f64| format!("{f:.0}");
+        format!(
+            "the {} stiffness (the force's slope at zero slip) changes sign between fz = {} N and {} N, inside the loads evaluated ({} to {} N): on one side of it the tyre's force opposes its slip; check the file's load coefficients (a .tir's PKX1 + PKX2·dfz, PKY1…)",
+            self.stiffness,
+            n(self.between.0),
+            n(self.between.1),
+            n(self.loads.0),
+            n(self.loads.1)
+        )
+    }
+}
+
+/// The stiffnesses of `tyre` that change sign over the positive loads of
+/// `fz`.
+pub(crate) fn sign_changes(tyre: &Tyre, fz: &[f64]) -> Vec<SignChange> {
+    let (lo, hi) = fz
+        .iter()
+        .filter(|f| **f > 0.0 && f.is_finite())
+        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &f| {
+            (lo.min(f), hi.max(f))
+        });
+    if lo >= hi {
+        return Vec::new();
+    }
+    let loads: Vec<f64> = (0..LOADS)
+        .map(|k| lo + (hi - lo) * k as f64 / (LOADS - 1) as f64)
+        .collect();
+    let slope = |fz: f64, longitudinal: bool| {
+        let at = |s: f64| {
+            let mut p = SlipState::lateral(0.0, fz);
+            if longitudinal {
+                p.kappa = s;
+                tyre.point_forces(&p, None).fx
+            } else {
+                p.alpha = s;
+                tyre.point_forces(&p, None).fy
+            }
+        };
+        (at(SLIP) - at(-SLIP)) / (2.0 * SLIP)
+    };
+    [("longitudinal slip", true), ("cornering", false)]
+        .into_iter()
+        .filter_map(|(stiffness, longitudinal)| {
+            let k: Vec<f64> = loads.iter().map(|&f| slope(f, longitudinal)).collect();
+            // A model without the force (a lateral-only Gim) has none.
+            let scale = k.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let tiny = 1e-6 * scale;
+            // Between the last load of one sign and the first of the
+            // other (a load where it is 0 lies between them).
+            let signed: Vec<usize> = (0..LOADS).filter(|&i| k[i].abs() > tiny).collect();
+            let w = signed
+                .windows(2)
+                .find(|w| k[w[0]].signum() != k[w[1]].signum())?;
+            Some(SignChange {
+                stiffness,
+                between: (loads[w[0]], loads[w[1]]),
+                loads: (lo, hi),
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tir(name: &str) -> Tyre {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        crate::io::load_tyre(&root.join("tests/fixtures/tir").join(name)).unwrap()
+    }
+
+    #[test]
+    fn a_tyre_whose_stiffnesses_keep_their_sign_gives_nothing() {
+        let t = tir("MagicFormula61_Parameters.tir");
+        assert!(sign_changes(&t, &[1000.0, 8000.0]).is_empty());
+    }
+
+    #[test]
+    fn a_slip_stiffness_crossing_zero_is_found_between_two_loads() {
+        // The MF 6.1 file (FNOMIN 6752 N, PKX1 32.9102) with PKX2 set so
+        // that PKX1 + PKX2·dfz = 0 at dfz = 0.25, at 1.25·FNOMIN = 8440 N,
+        // as FSAE_Defaults.tir's does at 1625 N.
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let text =
+            std::fs::read_to_string(root.join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
+                .unwrap();
+        let text = text
+            .replace(
+                "PKX2                     =    12.7911",
+                "PKX2                     =    -131.6408",
+            )
+            .replace(
+                "PKX3                     =    -0.11254",
+                "PKX3                     =    0",
+            );
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("crossing.tir");
+        assert!(
+            text.contains("-131.6408")
+                && text.contains("=    0       $Exponent in slip stiffness Kfx"),
+            "the file changed"
+        );
+        std::fs::write(&path, text).unwrap();
+        let t = crate::io::load_tyre(&path).unwrap();
+        let cross = 6752.0 * 1.25;
+        let found = sign_changes(&t, &[0.5 * cross, 1.5 * cross]);
+        assert_eq!(found.len(), 1, "{found:?}");
+        let s = &found[0];
+        assert_eq!(s.stiffness, "longitudinal slip");
+        assert!(
+            s.between.0 <= cross && cross <= s.between.1,
+            "{s:?} against {cross}"
+        );
+        // Evaluated on one side of it only: nothing to say.
+        assert!(sign_changes(&t, &[0.5 * cross, 0.9 * cross]).is_empty());
+    }
+}

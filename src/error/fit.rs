@@ -44,7 +44,7 @@ pub enum FitError {
     },
     /// Fewer distinct loads than the model's load dependence needs.
     #[error(
-        "the {model} model's load dependence needs at least {needed} loads; the data has {}: {}",
+        "the {model} model's load dependence needs at least {needed} loads; the data has {}: {}: fit a model that takes one load (gim, magic-simple, linear), or, where --load selected it, drop --load",
         loads.len(),
         rounded(loads)
     )]

@@ -218,6 +218,16 @@ pub enum OptionsError {
         /// The argument given.
         given: String,
     },
+    /// A parameter held twice (the last value would be taken silently).
+    #[error("--hold {name} is given twice ({first} and {second}): hold each parameter once")]
+    HoldTwice {
+        /// The parameter.
+        name: String,
+        /// The first value.
+        first: f64,
+        /// The second.
+        second: f64,
+    },
     /// A shard K of N outside 1 ≤ K ≤ N.
     #[error("shard {index}/{count}: expected K/N with 1 ≤ K ≤ N, e.g. 3/8")]
     ShardOutOfRange {

@@ -338,6 +338,9 @@ pub enum Limit {
         "no tyre's friction coefficient reaches 5 (racing slicks reach about 1.8): check the value"
     )]
     TyreFriction,
+    /// A road's friction, a scale on the tyres' own.
+    #[error("the road's friction scales the tyres' own (1 = as measured on the rig, 0.1–0.3 on ice); no road grips three times a tyre's rig surface: is it a speed or a percentage?")]
+    RoadFriction,
     /// A pneumatic trail, m.
     #[error("a tyre's pneumatic trail is a few centimetres; the key is in metres: is the value in millimetres? (30 mm is 0.03)")]
     PneumaticTrail,

@@ -8,7 +8,7 @@
 use super::fitted_ranges::FittedRanges;
 use super::paths::beside;
 use super::toml_file::{param_error, TomlSource};
-use crate::error::{InputError, ParamError, ParamReason};
+use crate::error::{InputError, Limit, ParamError, ParamReason};
 use crate::tyre::Tyre;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
 use serde::Deserialize;
@@ -98,9 +98,20 @@ pub(crate) fn check_vehicle(src: &TomlSource, vehicle: &Vehicle) -> Result<(), I
         .map_err(|e| param_error(src, Some("vehicle"), e))
 }
 
+/// The largest road friction, a scale on the tyres' own (1 = the rig's
+/// surface): a road grippier than three rig surfaces is a slip of the pen.
+pub(crate) const MAX_ROAD_FRICTION: f64 = 3.0;
+
 /// Checks a `[road]` table.
 pub(crate) fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
-    ParamError::positive("friction", road.friction).map_err(|e| param_error(src, Some("road"), e))
+    ParamError::in_range(
+        "friction",
+        road.friction,
+        0.0,
+        MAX_ROAD_FRICTION,
+        Limit::RoadFriction,
+    )
+    .map_err(|e| param_error(src, Some("road"), e))
 }
 
 /// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables, and

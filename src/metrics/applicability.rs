@@ -62,18 +62,22 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
     out
 }
 
+/// The steepest piece of `x` given at breakpoints `t` (linear between):
+/// its rate and the times it runs between.
+fn steepest(t: &[f64], x: &[f64]) -> Option<(f64, f64, f64)> {
+    t.windows(2)
+        .zip(x.windows(2))
+        .map(|(t, x)| ((x[1] - x[0]) / (t[1] - t[0]), t[0], t[1]))
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()))
+}
+
 /// The warnings on a schedule (`t`, `steer`, `speed` at breakpoints,
 /// linear between) for a car whose tyres on this road grip to `mu`: its
 /// speed's ([`speed_schedule`]), a steer rate above [`STEER_RATE`], and a
 /// first steer other than 0 (the run starts from straight running).
 pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
     let mut out = Vec::new();
-    let fastest = t
-        .windows(2)
-        .zip(steer.windows(2))
-        .map(|(t, d)| ((d[1] - d[0]) / (t[1] - t[0]), t[0], t[1]))
-        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
-    if let Some((rate, t0, t1)) = fastest.filter(|s| s.0.abs() > STEER_RATE) {
+    if let Some((rate, t0, t1)) = steepest(t, steer).filter(|s| s.0.abs() > STEER_RATE) {
         out.push(format!(
             "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) from t = {t0} s to {t1} s, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): the run shows a step no driver or robot can steer",
             rate.abs(),
@@ -100,12 +104,7 @@ pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) 
 fn speed_schedule(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
     let mut out = Vec::new();
     let grip = mu * crate::constants::G;
-    let steepest = t
-        .windows(2)
-        .zip(speed.windows(2))
-        .map(|(t, u)| ((u[1] - u[0]) / (t[1] - t[0]), t[0], t[1]))
-        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
-    if let Some((rate, t0, t1)) = steepest.filter(|s| s.0.abs() > grip) {
+    if let Some((rate, t0, t1)) = steepest(t, speed).filter(|s| s.0.abs() > grip) {
         out.push(format!(
             "the speed {} at {:.1} m/s² ({:.1} g) from t = {t0} s to {t1} s, more than the tyres' grip on this road gives (μ·g = {grip:.1} m/s²): the 2-DOF model takes the speed as given, so the run goes where tyres on this road could not take the car",
             if rate < 0.0 { "falls" } else { "rises" },

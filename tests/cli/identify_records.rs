@@ -320,3 +320,79 @@ fn tyre_eval_says_what_the_model_does_not_read_and_where_it_extrapolates() {
         stderr(&o)
     );
 }
+
+/// A parameter held twice was taken at its last value silently, a road
+/// friction of 100 ran for minutes into a spin, and a held value was
+/// written among the warnings.
+#[test]
+fn a_hold_given_twice_and_a_road_friction_past_any_road_are_refused() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let args = ["--hold", "friction=1.5", "--hold", "friction=1.6"];
+    let o = identify_with(dir.path(), "gim", &args, &dir.path().join("t.toml"));
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains(
+            "error: --hold friction is given twice (1.5 and 1.6): hold each parameter once"
+        ),
+        "{}",
+        stderr(&o)
+    );
+    // Held once: said as held, not warned of.
+    let out = dir.path().join("h.toml");
+    let o = identify_with(dir.path(), "gim", &args[..2], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = fs::read_to_string(&out).unwrap();
+    assert!(!file.contains("warning: friction ="), "{file}");
+    let scenario = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
+        .unwrap()
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let scenario = match scenario.find("[road]") {
+        Some(_) => scenario.replacen("friction = 1.0", "friction = 100.0", 1),
+        None => format!("{scenario}\n[road]\nfriction = 100.0\n"),
+    };
+    fs::write(dir.path().join("s.toml"), &scenario).unwrap();
+    let o = bin()
+        .args(["simulate", "s.toml", "--out", "out"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains(
+            "`road.friction` = 100: must lie in (0, 3]: the road's friction scales the tyres' own"
+        ),
+        "{e}"
+    );
+}
+
+/// The written `[fitted_ranges]` ran over the thinned points' loads (bin
+/// means, 1601–1681 N on a Hoosier level whose samples ran 1474–1823 N),
+/// so `tyre-eval` called measured loads an extrapolation.
+#[test]
+fn the_fitted_ranges_hold_every_sample_of_the_levels_fitted() {
+    // Loads wandering ±50 N about 2, 4 and 6 kN, several samples a bin.
+    let mut s = String::from("fz,alpha,fy\n");
+    for fz0 in [2000.0, 4000.0, 6000.0] {
+        for k in 0..=400 {
+            let alpha = -0.2 + 0.001 * f64::from(k);
+            let fz = fz0 + 50.0 * (0.37 * f64::from(k)).sin();
+            let fy = fz * (1.4 * (12.0 * alpha).atan()).sin();
+            s += &format!("{fz:.3},{alpha},{fy:.3}\n");
+        }
+    }
+    let dir = scratch(&[("rig.csv", &s)]);
+    let out = dir.path().join("g.toml");
+    let o = identify_with(dir.path(), "gim", &[], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = fs::read_to_string(&out).unwrap();
+    let line = file.lines().find(|l| l.starts_with("fz = [")).unwrap();
+    let v: Vec<f64> = line
+        .trim_start_matches("fz = [")
+        .trim_end_matches(']')
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    assert!(v[0] <= 1950.5 && v[1] >= 6049.5, "{line}");
+    assert!(v[0] >= 1949.0 && v[1] <= 6051.0, "{line}");
+}

@@ -287,17 +287,23 @@ fn simulate_refuses_rows_too_coarse_for_the_steers_frequency() {
     );
 }
 
-/// A schedule dropping from 40 to 1 m/s in 0.5 s (8 g) and crawling for
-/// 6.5 s ran without a word: the model takes the speed as given.
-#[test]
-fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
+/// The bundled sedan scenario before its `[manoeuvre]`, its tyre paths
+/// made absolute: a vehicle to write manoeuvres for.
+fn sedan_head() -> String {
     let head: String = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
         .unwrap()
         .lines()
         .take_while(|l| !l.starts_with("[manoeuvre]"))
         .map(|l| format!("{l}\n"))
         .collect();
-    let head = head.replace("../tyres/", &format!("{}/tyres/", root().display()));
+    head.replace("../tyres/", &format!("{}/tyres/", root().display()))
+}
+
+/// A schedule dropping from 40 to 1 m/s in 0.5 s (8 g) and crawling for
+/// 6.5 s ran without a word: the model takes the speed as given.
+#[test]
+fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
+    let head = sedan_head();
     let schedule = |speed: &str| {
         format!("{head}[manoeuvre]\nkind = \"schedule\"\nt = [0.0, 1.0, 1.5, 8.0]\nsteer = [0.0, 0.0, 0.02, 0.02]\nspeed = {speed}\n")
     };
@@ -334,13 +340,7 @@ fn simulate_says_when_a_schedule_brakes_past_the_tyres_grip_or_crawls() {
 /// was checked.
 #[test]
 fn simulate_says_when_a_schedule_steers_faster_than_a_steering_system_or_starts_steered() {
-    let head: String = fs::read_to_string(root().join("scenarios/sedan_step.toml"))
-        .unwrap()
-        .lines()
-        .take_while(|l| !l.starts_with("[manoeuvre]"))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let head = head.replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let head = sedan_head();
     let said = |t: &str, steer: &str| {
         let text = format!(
             "{head}[manoeuvre]\nkind = \"schedule\"\nt = {t}\nsteer = {steer}\nspeed = [30.0, 30.0, 30.0, 30.0]\n"

@@ -134,6 +134,16 @@ impl Options {
         if self.hold.is_empty() {
             return Ok(());
         }
+        for (i, (name, v)) in self.hold.iter().enumerate() {
+            if let Some((_, first)) = self.hold[..i].iter().find(|(n, _)| n == name) {
+                return Err(OptionsError::HoldTwice {
+                    name: name.clone(),
+                    first: *first,
+                    second: *v,
+                }
+                .into());
+            }
+        }
         let Some(model) = self.model.swarm_model() else {
             for (name, _) in &self.hold {
                 crate::error::named(MfCoefficients::NAMES, |k| k, NameKind::MfCoefficient, name)?;

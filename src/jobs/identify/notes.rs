@@ -132,12 +132,6 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         .collect()
 }
 
-/// The warnings on the fit's parameters (one not identified, one past
-/// its bound), each with its value.
-pub(crate) fn parameter_warnings(f: &Fit) -> Vec<Note> {
-    f.parameters.iter().filter_map(parameter_warning).collect()
-}
-
 /// The warning on one fitted parameter, with its value.
 pub(crate) fn parameter_warning(p: &ParameterReport) -> Option<Note> {
     let w = p.warning.as_deref()?;
@@ -175,8 +169,13 @@ impl SwarmReport {
             self.aligning.as_ref(),
             self.longitudinal.as_ref(),
         ];
+        // A value given with --hold is said as held (the header's `held:`
+        // lines), not warned of, as the terminal does.
+        let hold = &self.options.hold;
+        let given = |p: &&ParameterReport| !p.free && hold.iter().any(|(h, _)| *h == p.name);
+        let params = fits.into_iter().flatten().flat_map(|f| &f.parameters);
         inputs
-            .chain(fits.into_iter().flatten().flat_map(parameter_warnings))
+            .chain(params.filter(|p| !given(p)).filter_map(parameter_warning))
             .collect()
     }
 }

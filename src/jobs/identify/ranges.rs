@@ -8,6 +8,7 @@
 
 use crate::format::readable;
 use crate::identify::data::{Condition, Sweep};
+use crate::identify::grouping::{Levels, Variable};
 use crate::identify::mf_staged::MfRow;
 use crate::io::fitted_ranges::FittedRanges;
 use crate::tyre::mf::{MfLimits, TyreSide};
@@ -155,6 +156,35 @@ pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
     .into_iter()
     .flatten()
     .collect()
+}
+
+/// `spans` widened to the samples of the levels the conditions were
+/// grouped at (`levels`, a grouping's): a condition's points are means of
+/// its samples, so their load ranges over 1601–1681 N where the level's
+/// samples ran from 1474 to 1823 N, every one of them measured.
+pub(crate) fn widened_to_levels(
+    mut spans: Vec<Span>,
+    levels: &[&Levels],
+    conditions: &[Condition],
+) -> Vec<Span> {
+    for s in &mut spans {
+        let (variable, of): (Variable, fn(&Condition) -> Option<f64>) = match s.name {
+            "fz" => (Variable::Load, |c| Some(c.fz)),
+            "camber" => (Variable::Camber, |c| Some(c.camber)),
+            "pressure" => (Variable::Pressure, |c| c.pressure),
+            _ => continue,
+        };
+        let used = levels
+            .iter()
+            .filter(|l| l.variable == variable)
+            .flat_map(|l| &l.levels)
+            .filter(|q| conditions.iter().any(|c| of(c) == Some(q.nominal)));
+        for q in used {
+            s.lo = s.lo.min(q.lo);
+            s.hi = s.hi.max(q.hi);
+        }
+    }
+    spans
 }
 
 /// The `[fitted_ranges]` of `spans`: each that is not one value (a

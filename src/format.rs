@@ -71,6 +71,18 @@ pub fn rounded_down(v: f64, digits: usize) -> String {
     rounded(((v * scale) * (1.0 + 1e-12)).floor() / scale, digits)
 }
 
+/// A positive `v` rounded up to `digits` significant digits, written as
+/// [`rounded`] writes it: a least value to reach (a step of at least
+/// 0.00301 s reads `0.0031`).
+pub fn rounded_up(v: f64, digits: usize) -> String {
+    if !(v.is_finite() && v > 0.0) {
+        return rounded(v, digits);
+    }
+    let scale = 10f64.powi(digits as i32 - 1 - v.log10().floor() as i32);
+    // A hair of slack so that 0.0125 (stored a little above) stays 0.0125.
+    rounded(((v * scale) * (1.0 - 1e-12)).ceil() / scale, digits)
+}
+
 /// `v` with `decimals` decimals where they show two significant digits
 /// or more, else with `digits` significant digits ([`readable`]): an RMS
 /// of 2.7e-4 N reads `0.000275`, not `0.0`, one of 12.34 N `12.3`.
@@ -287,6 +299,9 @@ mod tests {
         assert_eq!(rounded_down(0.5 / 40.0, 3), "0.0125");
         assert_eq!(rounded_down(0.4 / 30.0, 2), "0.013");
         assert_eq!(rounded_down(0.1 / 30.0, 2), "0.0033");
+        assert_eq!(rounded_up(0.1 / 30.0, 2), "0.0034");
+        assert_eq!(rounded_up(0.5 / 40.0, 3), "0.0125");
+        assert_eq!(rounded_up(6e5 / 2e6, 2), "0.3");
         assert_eq!(decimals_or_digits(0.000275123, 1, 3), "0.000275");
         assert_eq!(decimals_or_digits(12.34, 1, 3), "12.3");
         assert_eq!(decimals_or_digits(0.0, 1, 3), "0.0");

@@ -6,6 +6,10 @@
 use super::options::{ModeError, OptionsError};
 use thiserror::Error;
 
+/// The size of a row of `history.csv` as written, bytes (14 columns of
+/// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
+pub const HISTORY_ROW_BYTES: f64 = 280.0;
+
 /// Why a parameter value is wrong.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -38,6 +42,18 @@ pub enum ParamReason {
         step: f64,
         /// The highest steer frequency, Hz.
         frequency: f64,
+    },
+    /// A run whose rows every `step` s would make a history beyond
+    /// `max_rows` rows: gigabytes of `history.csv` that no one asked for
+    /// in those words (its size quoted at [`HISTORY_ROW_BYTES`]). s.
+    #[error("the run lasts {} s: rows every {step} s ([simulation] step) make {} rows (about {} GB of history.csv), beyond the {} a history holds; set step to at least {} s, or shorten the run", super::number::Num(*duration), crate::format::rounded(*duration / *step + 1.0, 3), crate::format::rounded(HISTORY_ROW_BYTES * *duration / *step / 1e9, 2), crate::format::rounded(*max_rows, 3), crate::format::rounded_up(*duration / *max_rows, 2))]
+    TooManyRows {
+        /// The recorded rows' interval, s.
+        step: f64,
+        /// The run's length, s.
+        duration: f64,
+        /// The most rows (after the first) a history holds.
+        max_rows: f64,
     },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]

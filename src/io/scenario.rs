@@ -4,10 +4,11 @@
 //! Tyre and run paths are relative to the scenario file. Units: SI, rad;
 //! speeds in m/s.
 
+use super::fitted_ranges::FittedRanges;
 use super::limits::{frequency, road_wheel_steer, speed, MAX_ROAD_WHEEL_STEER};
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
-use super::tables::{check_road, check_vehicle, resolve_model};
+use super::tables::{check_road, check_vehicle, resolve_model, ResolvedModel};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::{read_run, MeasuredRun};
@@ -44,6 +45,11 @@ pub struct SimulationSettings {
     #[serde(default)]
     pub max_step: Option<f64>,
 }
+
+/// The most rows (after the first) a history holds: a run ten times longer than an hour of
+/// logging at 1 kHz would need a step the user meant; beyond, a slip of
+/// the step (1e-6 s for 1e-3) writes gigabytes.
+pub const MAX_ROWS: f64 = 2.0e6;
 
 fn default_step() -> f64 {
     Integrator::default().step
@@ -183,6 +189,9 @@ pub struct Scenario {
     pub inputs: Vec<PathBuf>,
     /// What cleaning the replayed run found and excluded.
     pub cleaning: Option<crate::measured::clean::CleaningReport>,
+    /// The ranges the front and rear tyres were fitted to, where their
+    /// files state them (`[fitted_ranges]`).
+    pub fitted_ranges: [Option<FittedRanges>; 2],
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end
@@ -225,7 +234,11 @@ pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError>
 /// kinds that embed a scenario's tables use it too).
 pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
-    let (model, tyre_files) = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
+    let ResolvedModel {
+        model,
+        files: tyre_files,
+        fitted_ranges,
+    } = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
     check_road(src, &f.road)?;
     f.metrics
         .validate()
@@ -257,6 +270,18 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         }
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
+    let duration = manoeuvre.end_time() - manoeuvre.start_time();
+    // Intervals, not rows: the least step the refusal suggests then runs
+    // (a hair of slack for its rounding).
+    if duration / f.simulation.step > MAX_ROWS * (1.0 + 1e-9) {
+        let reason = ParamReason::TooManyRows {
+            step: f.simulation.step,
+            duration,
+            max_rows: MAX_ROWS,
+        };
+        let e = ParamError::new("step", f.simulation.step, reason);
+        return Err(param_error(src, Some("simulation"), e));
+    }
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
             .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
@@ -271,6 +296,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         measured,
         inputs,
         cleaning,
+        fitted_ranges,
     })
 }
 

@@ -4,7 +4,7 @@
 //! otherwise (`deg`, `km/h`), converted on reading.
 
 use super::limits::{road_wheel_steer, road_wheel_steer_degrees};
-use super::tables::{resolve_model, TyreRefs};
+use super::tables::{resolve_model, ResolvedModel, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
@@ -227,7 +227,11 @@ fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<
 pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     let src = TomlSource::read(path)?;
     let f: SweepFile = src.parse()?;
-    let (model, [front_path, rear_path]) = resolve_model(&src, &f.vehicle, &f.tyres, f.model)?;
+    let ResolvedModel {
+        model,
+        files: [front_path, rear_path],
+        ..
+    } = resolve_model(&src, &f.vehicle, &f.tyres, f.model)?;
     equilibrium_effects(&src, &f.model.effects)?;
     let grid = Grid {
         steer: expand(&f.sweep.steer, "steer", &src)?,

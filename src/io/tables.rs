@@ -114,14 +114,25 @@ pub(crate) fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError
     .map_err(|e| param_error(src, Some("road"), e))
 }
 
-/// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables, and
-/// the tyre files read (front, rear).
+/// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables, the
+/// tyre files read and the ranges their tyres were fitted to.
+pub(crate) struct ResolvedModel {
+    /// The vehicle model.
+    pub model: VehicleModel,
+    /// The tyre files read (front, rear).
+    pub files: [PathBuf; 2],
+    /// Their `[fitted_ranges]` (front, rear; `None`: the file states none).
+    pub fitted_ranges: [Option<FittedRanges>; 2],
+}
+
+/// The model of a file's `[vehicle]`, `[tyres]` and `[model]` tables
+/// ([`ResolvedModel`]).
 pub(crate) fn resolve_model(
     src: &TomlSource,
     vehicle: &Vehicle,
     tyres: &TyreRefs,
     options: ModelOptions,
-) -> Result<(VehicleModel, [PathBuf; 2]), InputError> {
+) -> Result<ResolvedModel, InputError> {
     check_vehicle(src, vehicle)?;
     options
         .effects
@@ -134,9 +145,14 @@ pub(crate) fn resolve_model(
     if tyres.rear.is_some() {
         src.referenced_file("tyres.rear", &rear_path)?;
     }
-    let (mut front, mut rear) = (load_tyre(&front_path)?, load_tyre(&rear_path)?);
+    let (mut front, front_ranges) = load_tyre_with_ranges(&front_path)?;
+    let (mut rear, rear_ranges) = load_tyre_with_ranges(&rear_path)?;
     apply_tyre_mode(src, "tyres.mode", tyres.mode, &mut [&mut front, &mut rear])?;
     let mut model = VehicleModel::new(vehicle.clone(), front, rear);
     model.options = options;
-    Ok((model, [front_path, rear_path]))
+    Ok(ResolvedModel {
+        model,
+        files: [front_path, rear_path],
+        fitted_ranges: [front_ranges, rear_ranges],
+    })
 }

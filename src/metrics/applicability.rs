@@ -22,6 +22,11 @@
 
 use super::StepMetrics;
 
+/// The change of speed over a measured step, as a share of its median
+/// speed, beyond which the metrics mix speeds: the standards hold the
+/// test speed constant, and a steady yaw-rate gain (`u/(l + K·u²)`)
+/// moves by about as much as the speed does.
+pub const VARYING_SPEED: f64 = 0.1;
 /// The steady sideslip beyond which the car is sliding, rad (10°).
 pub const SLIDING_SIDESLIP: f64 = 10.0 * std::f64::consts::PI / 180.0;
 /// The yaw-rate overshoot beyond which the response is no handling
@@ -62,13 +67,72 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
     out
 }
 
-/// The steepest piece of `x` given at breakpoints `t` (linear between):
-/// its rate and the times it runs between.
-fn steepest(t: &[f64], x: &[f64]) -> Option<(f64, f64, f64)> {
-    t.windows(2)
+/// The warning on a measured step whose speeds, sorted, are `sorted`
+/// (m/s): where its 5th and 95th percentiles lie further apart than
+/// [`VARYING_SPEED`] of the median (percentiles, so that a noise spike
+/// is no change of speed).
+pub fn varying_speed(sorted: &[f64]) -> Option<String> {
+    let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
+    if sorted.is_empty() {
+        return None;
+    }
+    let (lo, median, hi) = (at(0.05), at(0.5), at(0.95));
+    ((hi - lo) > VARYING_SPEED * median.abs()).then(|| {
+        format!(
+            "the speed changes from {lo:.2} to {hi:.2} m/s over the measured piece (5th to 95th percentile; {:.0} % of its median {median:.2} m/s): GB/T 6323 and ISO 7401 hold the speed constant, and the metrics here mix the responses of several speeds",
+            100.0 * (hi - lo) / median.abs()
+        )
+    })
+}
+
+/// The pieces of `x` given at breakpoints `t` (linear between) that
+/// change faster than `limit`: the steepest (its rate and the times it
+/// runs between), how many there are and how long they last in all.
+fn steeper_than(t: &[f64], x: &[f64], limit: f64) -> Option<Steep> {
+    let over: Vec<(f64, f64, f64)> = t
+        .windows(2)
         .zip(x.windows(2))
         .map(|(t, x)| ((x[1] - x[0]) / (t[1] - t[0]), t[0], t[1]))
-        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()))
+        .filter(|p| p.0.abs() > limit)
+        .collect();
+    let &(rate, t0, t1) = over.iter().max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()))?;
+    Some(Steep {
+        rate,
+        t0,
+        t1,
+        pieces: over.len(),
+        time: over.iter().map(|p| p.2 - p.1).sum(),
+    })
+}
+
+/// The pieces of a schedule steeper than a limit ([`steeper_than`]).
+struct Steep {
+    /// The steepest piece's rate, unit of `x` per s.
+    rate: f64,
+    /// Its start, s.
+    t0: f64,
+    /// Its end, s.
+    t1: f64,
+    /// How many pieces exceed the limit.
+    pieces: usize,
+    /// Their time in all, s.
+    time: f64,
+}
+
+impl Steep {
+    /// `from t = 1 s to 1.01 s`, and for several pieces how many and how
+    /// long in all.
+    fn when(&self) -> String {
+        let (t0, t1) = (self.t0, self.t1);
+        if self.pieces == 1 {
+            format!("from t = {t0} s to {t1} s")
+        } else {
+            format!(
+                "from t = {t0} s to {t1} s (the steepest of {} pieces beyond the limit, {:.2} s in all)",
+                self.pieces, self.time
+            )
+        }
+    }
 }
 
 /// The warnings on a schedule (`t`, `steer`, `speed` at breakpoints,
@@ -77,11 +141,13 @@ fn steepest(t: &[f64], x: &[f64]) -> Option<(f64, f64, f64)> {
 /// first steer other than 0 (the run starts from straight running).
 pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
     let mut out = Vec::new();
-    if let Some((rate, t0, t1)) = steepest(t, steer).filter(|s| s.0.abs() > STEER_RATE) {
+    if let Some(steep) = steeper_than(t, steer, STEER_RATE) {
+        let rate = steep.rate;
         out.push(format!(
-            "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) from t = {t0} s to {t1} s, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): the run shows a step no driver or robot can steer",
+            "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) {}, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): the run shows a step no driver or robot can steer",
             rate.abs(),
-            rate.abs().to_degrees()
+            rate.abs().to_degrees(),
+            steep.when()
         ));
     }
     if let (Some(&d0), Some(&t0)) = (steer.first(), t.first()) {
@@ -104,12 +170,14 @@ pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) 
 fn speed_schedule(t: &[f64], speed: &[f64], mu: f64) -> Vec<String> {
     let mut out = Vec::new();
     let grip = mu * crate::constants::G;
-    if let Some((rate, t0, t1)) = steepest(t, speed).filter(|s| s.0.abs() > grip) {
+    if let Some(steep) = steeper_than(t, speed, grip) {
+        let rate = steep.rate;
         out.push(format!(
-            "the speed {} at {:.1} m/s² ({:.1} g) from t = {t0} s to {t1} s, more than the tyres' grip on this road gives (μ·g = {grip:.1} m/s²): the 2-DOF model takes the speed as given, so the run goes where tyres on this road could not take the car",
+            "the speed {} at {:.1} m/s² ({:.1} g) {}, more than the tyres' grip on this road gives (μ·g = {grip:.1} m/s²): the 2-DOF model takes the speed as given, so the run goes where tyres on this road could not take the car",
             if rate < 0.0 { "falls" } else { "rises" },
             rate.abs(),
-            rate.abs() / crate::constants::G
+            rate.abs() / crate::constants::G,
+            steep.when()
         ));
     }
     // Time below the crawl speed, on the piecewise linear speed.
@@ -223,12 +291,42 @@ mod tests {
         // At μ·g and above the crawl speed: nothing to say.
         let g = crate::constants::G;
         assert!(speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - g], 1.0).is_empty());
+        // Two hard brakings and a launch: all three counted, the steepest
+        // named.
+        let (t, u) = (
+            [0.0, 1.0, 2.0, 3.0, 3.5, 4.0],
+            [40.0, 20.0, 20.0, 40.0, 10.0, 10.0],
+        );
+        let w = speed_schedule(&t, &u, 1.0);
+        assert!(
+            w[0].starts_with("the speed falls at 60.0 m/s² (6.1 g) from t = 3 s to 3.5 s (the steepest of 3 pieces beyond the limit, 2.50 s in all), more than"),
+            "{w:?}"
+        );
         // On ice the same 0.5 g braking is past the grip.
         let w = speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - 0.5 * g], 0.3);
         assert!(
             w[0].starts_with("the speed falls at 4.9 m/s² (0.5 g)"),
             "{w:?}"
         );
+    }
+
+    #[test]
+    fn a_measured_step_at_varying_speed_is_said_and_a_noise_spike_is_not() {
+        // 20 → 25 m/s over the piece: 24 % of the median.
+        let rising: Vec<f64> = (0..=100).map(|i| 20.0 + 0.05 * f64::from(i)).collect();
+        let w = varying_speed(&rising).expect("a 24 % change is said");
+        assert!(
+            w.starts_with("the speed changes from 20.25 to 24.75 m/s over the measured piece (5th to 95th percentile; 20 % of its median 22.50 m/s)"),
+            "{w}"
+        );
+        // Constant 20 m/s with two samples of 40 (a spike): nothing.
+        let mut spiky = vec![20.0; 100];
+        spiky.extend([40.0, 40.0]);
+        assert_eq!(varying_speed(&spiky), None);
+        // 8.6 % is within the limit.
+        let slow: Vec<f64> = (0..=100).map(|i| 20.0 + 0.02 * f64::from(i)).collect();
+        assert_eq!(varying_speed(&slow), None);
+        assert_eq!(varying_speed(&[]), None);
     }
 
     #[test]

@@ -262,6 +262,7 @@ pub fn measured_step_metrics(
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
     warnings.extend(super::applicability::applicability(&metrics, speed));
+    warnings.extend(super::applicability::varying_speed(&speeds));
     if metrics.ay_steady.is_none() {
         warnings
             .push("the run has no `ay`: lateral-acceleration metrics and Er are left out".into());

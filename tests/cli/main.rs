@@ -260,6 +260,7 @@ mod trips_identify;
 mod trips_inputs;
 mod trips_limits;
 mod trips_outputs;
+mod trips_simulate;
 mod trips_units;
 mod user_trips;
 

@@ -1,7 +1,10 @@
 //! `simulate` as one job: a scenario in; the time history (`history.csv`),
 //! the step-steer metrics (`metrics.json`), the response figure
 //! (`response.png`) and, for a replayed measurement, where the model and
-//! the run disagree (`gap.json`) out.
+//! the run disagree (`gap.json`) out; beside them, what the run is that
+//! the scenario's words do not say ([`checks`]).
+
+mod checks;
 
 use super::metrics::{metric_lines, UNITS};
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
@@ -42,8 +45,12 @@ pub struct SimulateReport {
     pub friction: f64,
     /// Step-steer metrics (step steers only).
     pub metrics: Option<StepMetrics>,
+    /// Facts of the run the scenario does not state (a step steer's
+    /// straight-running trim).
+    pub notes: Vec<String>,
     /// Where the metrics describe something other than a handling
-    /// response ([`applicability`]): a slide, a spin, a crawl.
+    /// response ([`applicability`]): a slide, a spin, a crawl; and where
+    /// the run is not what its input's words suggest ([`checks`]).
     pub warnings: Vec<String>,
     /// Intervals with a wheel off the ground.
     pub lift_offs: Vec<LiftOff>,
@@ -73,6 +80,9 @@ struct MetricsFile<'a> {
     /// Intervals with a wheel off the ground (simulated runs only).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     lift_offs: &'a [LiftOff],
+    /// Facts of the run the scenario does not state (a trim).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    notes: &'a [String],
     /// Where the metrics do not describe a handling response.
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     warnings: &'a [String],
@@ -120,6 +130,8 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             sc.integrator.friction,
         ));
     }
+    let said = checks::checks(&sc, h);
+    warnings.extend(said.warnings);
     let replay = sc.measured.as_ref().map(|run| ReplayGap {
         run: run.path.display().to_string(),
         // A lone replay has no trusted uncertainty: each channel against
@@ -132,6 +144,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
         friction: sc.integrator.friction,
         metrics,
+        notes: said.notes,
         warnings,
         lift_offs: h.lift_offs(),
         replay,
@@ -153,6 +166,7 @@ impl SimulateReport {
         if let Some(m) = &self.metrics {
             out.extend(metric_lines(m));
         }
+        out.extend(self.notes.iter().map(|w| format!("  note: {w}")));
         out.extend(self.warnings.iter().map(|w| format!("  warning: {w}")));
         // The four loads always add up to the weight; a wheel at zero load
         // has lifted off, and the 2-DOF model then carries its axle on one
@@ -192,6 +206,7 @@ impl SimulateReport {
                 units: UNITS,
                 metrics: m,
                 lift_offs: &self.lift_offs,
+                notes: &self.notes,
                 warnings: &self.warnings,
             };
             write_json(&files[1], &file)?;

@@ -1,0 +1,173 @@
+//! What `simulate` says beside its outputs where the run is not what the
+//! scenario's words suggest, for every manoeuvre (the step steer's metrics
+//! have their own, [`crate::metrics::applicability`]):
+//!
+//! - **straight running with tyres that make force at zero slip**
+//!   (conicity, ply steer: a Magic Formula's `SHY`/`SVY` shifts). A step
+//!   steer starts from the steer and sideslip that hold the car straight
+//!   (its `trim`), said as a note; a ramp, sine, sweep or schedule starts
+//!   from zero steer and sideslip, so the car drifts from the start, said
+//!   as a warning with the trim it would need.
+//! - **a slide**: a sideslip beyond
+//!   [`SLIDING_SIDESLIP`](crate::metrics::applicability::SLIDING_SIDESLIP)
+//!   (10°) anywhere in a ramp, sine, sweep or schedule.
+//! - **a steer no steering system makes**: a ramp's rate, a sine's or a
+//!   sweep's peak rate (`2π·f·A`) beyond
+//!   [`STEER_RATE`](crate::metrics::applicability::STEER_RATE).
+//! - **tyres beyond the data they were fitted to**: the rows whose wheel
+//!   loads or axle slip angles leave a tyre file's `[fitted_ranges]`
+//!   (each wheel at zero slip ratio and camber, as the 2-DOF model
+//!   evaluates it), counted per axle.
+//!
+//! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
+
+use crate::io::fitted_ranges::{FittedRanges, RangePoint};
+use crate::io::Scenario;
+use crate::manoeuvre::Manoeuvre;
+use crate::metrics::applicability::{SLIDING_SIDESLIP, STEER_RATE};
+use crate::sim::TimeHistory;
+use std::f64::consts::TAU;
+
+/// The straight-running steer or sideslip below which tyres are taken to
+/// make no force at zero slip, rad (0.006°: a thousandth of a typical
+/// step).
+const TRIM: f64 = 1e-4;
+
+/// What `simulate` says: notes (facts of the run) and warnings (where the
+/// run is not what its words suggest).
+#[derive(Debug, Default)]
+pub(super) struct Said {
+    pub notes: Vec<String>,
+    pub warnings: Vec<String>,
+}
+
+/// Everything this module says about scenario `sc` and its history `h`.
+pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
+    let mut said = Said::default();
+    straight_running(sc, &mut said);
+    if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
+        said.warnings.extend(sliding(h));
+    }
+    said.warnings.extend(steer_rate(&sc.manoeuvre));
+    for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
+        if let Some(r) = ranges {
+            said.warnings.extend(beyond_fitted(axle, r, h));
+        }
+    }
+    said
+}
+
+/// The step steer's trim as a note; for any other input that starts from
+/// zero steer, the drift as a warning.
+fn straight_running(sc: &Scenario, said: &mut Said) {
+    if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
+        if s.trim.abs() > TRIM || sc.initial.beta.abs() > TRIM {
+            said.notes.push(format!(
+                "the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there and the {:.3}° step is added to that steer",
+                s.trim.to_degrees(),
+                sc.initial.beta.to_degrees(),
+                s.amplitude.to_degrees()
+            ));
+        }
+        return;
+    }
+    // A replay of a measured run starts from the measured state.
+    if sc.measured.is_some() {
+        return;
+    }
+    let speed = sc.manoeuvre.speed(sc.manoeuvre.start_time());
+    let Ok(trim) =
+        sc.model
+            .steady_state_for_lateral_acceleration(speed, sc.integrator.friction, 0.0)
+    else {
+        return;
+    };
+    if trim.steer.abs() > TRIM || trim.beta.abs() > TRIM {
+        said.warnings.push(format!(
+            "the tyres make lateral force at zero slip (conicity, ply steer): straight running at {speed:.1} m/s needs a steer of {:.3}° and a sideslip of {:.3}°, but this input starts from zero steer and sideslip, so the car drifts from the start; add the {:.3}° to the steer to start straight",
+            trim.steer.to_degrees(),
+            trim.beta.to_degrees(),
+            trim.steer.to_degrees()
+        ));
+    }
+}
+
+/// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`].
+fn sliding(h: &TimeHistory) -> Option<String> {
+    let (i, beta) = h
+        .beta
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
+    (beta.abs() > SLIDING_SIDESLIP).then(|| {
+        let from = h.beta.iter().position(|b| b.abs() > SLIDING_SIDESLIP);
+        format!(
+            "the sideslip reaches {:.1}° at t = {:.2} s (beyond 10° from t = {:.2} s): the car slides past its grip, where a 2-DOF model with the tyres' steady curves no longer says how a car behaves",
+            beta.to_degrees(),
+            h.t[i],
+            from.map_or(h.t[i], |j| h.t[j])
+        )
+    })
+}
+
+/// The input's fastest road-wheel steer rate, where beyond [`STEER_RATE`].
+fn steer_rate(m: &Manoeuvre) -> Option<String> {
+    let (rate, what) = match m {
+        Manoeuvre::RampSteer(r) => (r.rate.abs(), "the ramp's rate".to_string()),
+        Manoeuvre::Sine(s) => (
+            TAU * s.frequency * s.amplitude.abs(),
+            format!("the sine's peak rate (2π·{} Hz·amplitude)", s.frequency),
+        ),
+        Manoeuvre::Sweep(s) => {
+            let f = s.f_start.max(s.f_end);
+            (
+                TAU * f * s.amplitude.abs(),
+                format!("the sweep's peak rate at {f} Hz (2π·f·amplitude)"),
+            )
+        }
+        // A step's rise is checked against ISO 7401's timing, a
+        // schedule's pieces by `schedule_applicability`.
+        Manoeuvre::StepSteer(_) | Manoeuvre::Replay(_) => return None,
+    };
+    (rate > STEER_RATE).then(|| {
+        format!(
+            "{what} is {rate:.1} rad/s ({:.0}°/s at the road wheels), faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): no driver or robot can steer this input",
+            rate.to_degrees()
+        )
+    })
+}
+
+/// The rows whose wheels leave the ranges `r` the tyre of `axle` (0
+/// front, 1 rear) was fitted to: counted, with the extremes reached.
+fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<String> {
+    let (name, wheels, alpha) = if axle == 0 {
+        ("front", [&h.fz[0], &h.fz[1]], &h.alpha_front)
+    } else {
+        ("rear", [&h.fz[2], &h.fz[3]], &h.alpha_rear)
+    };
+    let point = |fz: f64, alpha: f64| RangePoint {
+        fz,
+        alpha,
+        kappa: 0.0,
+        camber: 0.0,
+        pressure: None,
+    };
+    let outside = (0..h.len())
+        .filter(|&i| wheels.iter().any(|fz| r.outside(&point(fz[i], alpha[i]))))
+        .count();
+    if outside == 0 {
+        return None;
+    }
+    let fz_max = wheels
+        .iter()
+        .flat_map(|w| w.iter())
+        .fold(0.0_f64, |a, &b| a.max(b));
+    let alpha_max = alpha.iter().fold(0.0_f64, |a, &b| a.max(b.abs()));
+    Some(format!(
+        "{outside} of {} rows take the {name} tyres outside the ranges of the rig data they were fitted to ({}; their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation: wheel loads up to {fz_max:.0} N, slip angles up to {:.4} rad ({:.2}°)",
+        h.len(),
+        r.text(),
+        alpha_max,
+        alpha_max.to_degrees()
+    ))
+}

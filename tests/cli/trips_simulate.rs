@@ -1,0 +1,178 @@
+//! What the fourth fresh-eyes check found in `simulate` and `metrics`:
+//! runs that were not what their input's words suggest and said nothing
+//! (a trim, a drift, a slide outside a step, a steer no rack makes, tyres
+//! beyond their fitted data, gigabytes of rows, a step at varying speed).
+//! Each test one finding, run as a user runs it.
+
+use super::*;
+
+/// `simulate <dir>/scenario.toml --out <dir>/out`: status, stdout, stderr.
+fn simulated(dir: &Path) -> (bool, String, String) {
+    let o = run(&[
+        "simulate",
+        dir.join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        stderr(&o),
+    )
+}
+
+/// The bundled PAC89 tyre, whose curve is shifted (force at zero slip).
+fn pac89() -> String {
+    fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap()
+}
+
+/// The bundled step on PAC89 tyres started from a trimmed steer and
+/// sideslip without a word; a ramp on the same tyres started from zero
+/// and drifted without one.
+#[test]
+fn a_step_says_its_straight_running_trim_and_a_ramp_on_shifted_tyres_warns_of_its_drift() {
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&[
+        "simulate",
+        "scenarios/step_gbt6323_pac89.toml",
+        "--out",
+        out.path().join("o").to_str().unwrap(),
+    ]);
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("note: the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of -0.019° and a sideslip of 0.051°; the run starts there and the 0.677° step is added to that steer"),
+        "{said}"
+    );
+    assert!(!said.contains("warning:"), "{said}");
+    let ramp =
+        "[manoeuvre]\nkind = \"ramp-steer\"\nspeed = 22.2\nrate = 0.01\nstart = 1.0\nend = 3.0\n";
+    let dir = scenario(VEHICLE, &pac89(), ramp);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the tyres make lateral force at zero slip (conicity, ply steer): straight running at 22.2 m/s needs a steer of -0.0"),
+        "{said}"
+    );
+    assert!(said.contains("so the car drifts from the start"), "{said}");
+    // Symmetric Gim tyres hold a straight line at zero steer: nothing.
+    let dir = scenario(VEHICLE, GIM, ramp);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(!said.contains("zero slip"), "{said}");
+}
+
+/// A 10 Hz sine of 0.1 rad (6.3 rad/s at the wheels) and a sweep that
+/// slid the car ran without a word: only step steers were checked.
+#[test]
+fn a_sine_no_rack_can_steer_and_a_sweep_that_slides_are_said() {
+    let sine = "[manoeuvre]\nkind = \"sine\"\nspeed = 22.2\namplitude = 0.1\nfrequency = 10.0\nstart = 1.0\nend = 3.0\n";
+    let dir = scenario(VEHICLE, GIM, sine);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the sine's peak rate (2π·10 Hz·amplitude) is 6.3 rad/s (360°/s at the road wheels), faster than a steering system turns the wheels"),
+        "{said}"
+    );
+    // 0.2 rad at 0.5 Hz on the sedan at 80 km/h: past its grip.
+    let slide = "[manoeuvre]\nkind = \"sweep\"\nspeed = 22.2\namplitude = 0.2\nf_start = 0.2\nf_end = 0.5\nstart = 1.0\nend = 8.0\n";
+    let dir = scenario(VEHICLE, GIM, slide);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(said.contains("warning: the sideslip reaches "), "{said}");
+    assert!(
+        said.contains("the car slides past its grip, where a 2-DOF model"),
+        "{said}"
+    );
+    assert!(!said.contains("peak rate"), "{said}");
+    // The same sweep at a tenth of the amplitude: a handling response.
+    let dir = scenario(
+        VEHICLE,
+        GIM,
+        &slide.replace("0.2\nf_start", "0.02\nf_start"),
+    );
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(!said.contains("warning:"), "{said}");
+}
+
+/// A tyre `identify` fitted to 1–4 kN was run at 4.5 kN per front wheel
+/// without a word, where `tyre-eval` counts such points.
+#[test]
+fn simulate_counts_the_rows_beyond_a_tyres_fitted_ranges() {
+    let tyre = format!("{GIM}\n[fitted_ranges]\nfz = [1000.0, 4000.0]\nalpha = [-0.1, 0.1]\n");
+    let dir = scenario(VEHICLE, &tyre, STEP);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    // Front wheels carry 4.5 kN static (5.2 kN loaded in the turn), the
+    // rear 3.0 kN: every row of the front beyond 4 kN, no rear row beyond
+    // either range.
+    let front = said
+        .lines()
+        .find(|l| l.contains("take the front tyres outside"))
+        .unwrap_or_else(|| panic!("{said}"));
+    let rows = front
+        .trim_start_matches("  warning: ")
+        .split(' ')
+        .collect::<Vec<_>>();
+    assert_eq!(rows[0], rows[2], "{front}");
+    assert!(
+        front.contains("(fz 1000 to 4000 N, alpha -0.1000 to 0.1000 rad; their [fitted_ranges]"),
+        "{front}"
+    );
+    assert!(front.contains("wheel loads up to 51"), "{front}");
+    assert!(!said.contains("rear tyres outside"), "{said}");
+    // Within a wider range: nothing.
+    let wide = tyre.replace("4000.0", "6000.0");
+    let dir = scenario(VEHICLE, &wide, STEP);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(!said.contains("outside the ranges"), "{said}");
+}
+
+/// `step = 1e-6` over a 6,000 s run began writing 6.8 GB of history.
+#[test]
+fn a_run_of_millions_of_rows_is_refused_at_its_step_with_the_least_step_that_fits() {
+    let long =
+        format!("{STEP}start = 1.0\nrise_time = 0.1\nend = 3000.0\n\n[simulation]\nstep = 0.001\n");
+    let dir = scenario(VEHICLE, GIM, &long);
+    let (ok, _, err) = simulated(dir.path());
+    assert!(!ok);
+    assert!(!dir.path().join("out").exists(), "nothing written");
+    assert!(err.contains("scenario.toml:22:"), "{err}");
+    assert!(
+        err.contains("the run lasts 3000 s: rows every 0.001 s ([simulation] step) make 3000000 rows (about 0.84 GB of history.csv), beyond the 2000000 a history holds; set step to at least 0.0015 s, or shorten the run"),
+        "{err}"
+    );
+    // At that step it runs.
+    let dir = scenario(VEHICLE, GIM, &long.replace("0.001\n", "0.0015\n"));
+    let (ok, _, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+}
+
+/// `metrics` measured a step while the speed rose by a quarter, and said
+/// nothing: the standards hold the speed constant.
+#[test]
+fn metrics_says_when_the_speed_changes_over_the_measured_step() {
+    // A schedule: steady at 20 m/s, a 1.5° step at 2 s, the speed then
+    // rising to 26 m/s; its history is the measured run.
+    let schedule = |end_speed: f64| {
+        format!(
+            "[manoeuvre]\nkind = \"schedule\"\nt = [0.0, 2.0, 2.1, 8.0]\nsteer = [0.0, 0.0, 0.026, 0.026]\nspeed = [20.0, 20.0, 20.0, {end_speed}]\n"
+        )
+    };
+    for (end_speed, said) in [(26.0, true), (20.5, false)] {
+        let dir = scenario(VEHICLE, GIM, &schedule(end_speed));
+        let (ok, _, err) = simulated(dir.path());
+        assert!(ok, "{err}");
+        let history = dir.path().join("out/history.csv");
+        let o = run(&["metrics", history.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let report: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let warned = report["warnings"].as_array().unwrap().iter().any(|w| {
+            w.as_str()
+                .unwrap()
+                .starts_with("the speed changes from 20.")
+        });
+        assert_eq!(warned, said, "{end_speed}: {report}");
+    }
+}

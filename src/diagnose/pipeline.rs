@@ -68,7 +68,8 @@ use crate::diagnose::verdict::screening::singles;
 use crate::diagnose::verdict::search::{confounded_with, search, Search};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
-use crate::measured::road::RoadGeometry;
+use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
+use crate::measured::road::{RoadGeometry, SensorOffsets};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -143,6 +144,20 @@ fn channel_trust(c: &Campaign) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
         })
         .collect();
     (noise, scales, floors)
+}
+
+/// The yaw-rate and `ay` offsets of `calibrated` (0 where none was
+/// measured), for the road's bank estimate. An `ay` offset beyond
+/// [`PLAUSIBLE_AY_OFFSET`] is no mounting offset but, without a bank
+/// column, a car parked on a bank (`g·sin θ`): it is not removed, or the
+/// banking it stood on would vanish from the estimate.
+fn offsets(calibrated: &Calibrated) -> SensorOffsets {
+    let of = |ch: Channel| calibrated[ch.index()].map_or(0.0, |(mean, _, _)| mean);
+    let ay = of(Channel::Ay);
+    SensorOffsets {
+        ay: if ay.abs() <= PLAUSIBLE_AY_OFFSET { ay } else { 0.0 },
+        yaw_rate: of(Channel::YawRate),
+    }
 }
 
 /// Each response channel's offset as the runs' standstills measured it,
@@ -456,7 +471,7 @@ fn run(
         .as_ref()
         .map_or_else(Vec::new, |i| i.no_tyre.clone());
     let ranked = (&singles[..], &order[..]);
-    let verdict = verdict(
+    let mut verdict = verdict(
         &found,
         ranked,
         &base,
@@ -465,6 +480,10 @@ fn run(
         &base_no_tyre,
         &calibrated,
     );
+    // The verdict is one of its look-alikes until a test separates them.
+    if let (Verdict::Explained(e), Some(c)) = (&mut verdict, confounded.first()) {
+        e.confounded_with = c.effects[1..].to_vec();
+    }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     findings.extend(dominant(&base.heldout, &scales));
@@ -482,7 +501,7 @@ fn run(
             .runs
             .iter()
             .zip(&ctx.runs)
-            .map(|(m, r)| RoadGeometry::of(&r.name, m))
+            .map(|(m, r)| RoadGeometry::of(&r.name, m, offsets(&calibrated)))
             .collect(),
         base: base_report(&bases, tyre_source, rig_grouping),
         gap: GapReport {

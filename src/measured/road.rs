@@ -19,8 +19,11 @@
 //! they carry what the kinematics leaves out: the body roll and pitch of an
 //! accelerometer that rolls and pitches with the body (about `g·φ` and
 //! `g·θ_pitch`, a few tenths of a degree per m/s²), and sensor offsets (an
-//! `a_y` offset of 0.1 m/s² reads as 0.6° of bank). Masked samples are
-//! left out. Units: rad.
+//! `a_y` offset of 0.1 m/s² reads as 0.6° of bank). The offsets the runs'
+//! standstills or straights measured ([`SensorOffsets`]) are removed
+//! first, and the line says so: on a flat road an accelerometer mounted
+//! with an offset of −0.6 m/s² would otherwise read a bank of −3.5°.
+//! Masked samples are left out. Units: rad.
 
 use super::clean::quantile;
 use super::MeasuredRun;
@@ -79,11 +82,25 @@ pub struct AngleProfile {
     pub samples: usize,
 }
 
+/// Sensor offsets the calibration measured (standstills, else straights),
+/// removed from the channels before the bank is estimated from them; 0
+/// where none was measured.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct SensorOffsets {
+    /// Lateral accelerometer offset, m/s².
+    pub ay: f64,
+    /// Yaw-rate offset, rad/s.
+    pub yaw_rate: f64,
+}
+
 /// The road under one run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RoadGeometry {
     /// Run name.
     pub run: String,
+    /// The offsets removed before the bank was estimated (None: a bank
+    /// measured, or no offset known).
+    pub offsets_removed: Option<SensorOffsets>,
     /// Bank (positive: left edge higher); None without `bank` and `ay`.
     pub bank: Option<AngleProfile>,
     /// Grade (positive: uphill); None without `ax`.
@@ -91,13 +108,15 @@ pub struct RoadGeometry {
 }
 
 impl RoadGeometry {
-    /// The road under `run`, named `name`.
-    pub fn of(name: &str, run: &MeasuredRun) -> Self {
+    /// The road under `run`, named `name`, a bank estimated with the
+    /// sensor `offsets` removed.
+    pub fn of(name: &str, run: &MeasuredRun, offsets: SensorOffsets) -> Self {
+        let estimated = run.bank.is_none() && run.ay.is_some();
         let bank = match (&run.bank, &run.ay) {
             (Some(b), _) => profile(AngleSource::Measured, b.clone(), &[]),
             (None, Some(ay)) => profile(
                 AngleSource::LateralKinematics,
-                bank_estimate(run, ay),
+                bank_estimate(run, ay, offsets),
                 &run.masked,
             ),
             (None, None) => None,
@@ -111,6 +130,7 @@ impl RoadGeometry {
         });
         Self {
             run: name.to_string(),
+            offsets_removed: (estimated && offsets != SensorOffsets::default()).then_some(offsets),
             bank,
             grade,
         }
@@ -129,8 +149,15 @@ impl RoadGeometry {
                 deg(p.mean)
             ),
             _ => format!(
-                "{what} {} {}° to {}° (5–95 %; median {}°)",
+                "{what} {}{} {}° to {}° (5–95 %; median {}°)",
                 p.source.words(),
+                match (&self.offsets_removed, p.source) {
+                    (Some(o), AngleSource::LateralKinematics) => format!(
+                        " less the offsets the calibration measured (ay {:.3} m/s², yaw rate {:.4} rad/s)",
+                        o.ay, o.yaw_rate
+                    ),
+                    _ => String::new(),
+                },
                 deg(p.p05),
                 deg(p.p95),
                 deg(p.median)
@@ -147,10 +174,11 @@ impl RoadGeometry {
     }
 }
 
-/// `asin((a_y − u·r)/g)` smoothed, rad per sample.
-pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64]) -> Vec<f64> {
+/// `asin((a_y − b_ay − u·(r − b_r))/g)` smoothed, rad per sample: the
+/// sensors' offsets `b` removed.
+pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Vec<f64> {
     let raw: Vec<f64> = (0..run.t.len())
-        .map(|k| (ay[k] - run.speed[k] * run.yaw_rate[k]) / G)
+        .map(|k| (ay[k] - offsets.ay - run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate)) / G)
         .collect();
     smoothed_angle(&run.t, &raw, &run.masked)
 }
@@ -286,7 +314,7 @@ mod tests {
     #[test]
     fn the_bank_and_grade_of_exact_readings_come_back() {
         let (r, bank) = run();
-        let est = bank_estimate(&r, r.ay.as_ref().unwrap());
+        let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
         // The 1 s average of a 10 s half-sine differs from it by at most
         // its curvature over the window, (π/10)²·(0.5²/6)·10° ≈ 0.041°,
         // plus the sine's curvature (the average is taken of sin θ).
@@ -300,7 +328,7 @@ mod tests {
                 bank[k].to_degrees()
             );
         }
-        let g = RoadGeometry::of("turn", &r);
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
         let b = g.bank.unwrap();
         assert_eq!(b.source, AngleSource::LateralKinematics);
         assert!((b.min.to_degrees() + 10.0).abs() < 0.05, "{b:?}");
@@ -323,11 +351,47 @@ mod tests {
         assert!((b.p05 - p05).abs() < 0.05f64.to_radians(), "{b:?}");
     }
 
+    /// A flat road read by an accelerometer mounted with an offset of
+    /// −0.6 m/s² and a gyro reading 0.005 rad/s high: −3.6° of bank
+    /// without the offsets, none with them.
+    #[test]
+    fn the_offsets_the_calibration_measured_are_no_bank() {
+        let (mut r, bank) = run();
+        let (b_ay, b_r) = (-0.6, 0.005);
+        let ay: Vec<f64> = (0..r.t.len())
+            .map(|k| r.ay.as_ref().unwrap()[k] - G * bank[k].sin() + b_ay)
+            .collect();
+        r.ay = Some(ay);
+        r.yaw_rate.iter_mut().for_each(|x| *x += b_r);
+        let g = RoadGeometry::of("flat", &r, SensorOffsets::default());
+        let median = g.bank.unwrap().median.to_degrees();
+        let unseen = ((b_ay - 25.0 * b_r) / G).asin().to_degrees();
+        assert!((median - unseen).abs() < 0.35, "{median} vs {unseen}");
+        assert!(median < -3.0, "{median}");
+        let offsets = SensorOffsets {
+            ay: b_ay,
+            yaw_rate: b_r,
+        };
+        let g = RoadGeometry::of("flat", &r, offsets);
+        let b = g.bank.unwrap();
+        for x in [b.p05, b.median, b.p95] {
+            assert!(x.to_degrees().abs() < 1e-9, "{b:?}");
+        }
+        let line = g.line().unwrap();
+        assert!(
+            line.contains("bank estimated from ay − u·r less the offsets the calibration measured (ay -0.600 m/s², yaw rate 0.0050 rad/s) 0.0° to 0.0°"),
+            "{line}"
+        );
+        // A measured bank is taken as logged: no offset is said removed.
+        r.bank = Some(bank);
+        assert_eq!(RoadGeometry::of("flat", &r, offsets).offsets_removed, None);
+    }
+
     #[test]
     fn a_bank_column_is_reported_as_measured_and_masked_samples_are_left_out() {
         let (mut r, bank) = run();
         r.bank = Some(bank);
-        let g = RoadGeometry::of("turn", &r);
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
         assert_eq!(g.bank.unwrap().source, AngleSource::Measured);
         // A 0.5 s glitch of ay at 9 g, masked: the estimate does not see it.
         let (mut r, _) = run();
@@ -336,7 +400,7 @@ mod tests {
             *a = 90.0;
         }
         r.masked = (400..450).collect();
-        let est = bank_estimate(&r, r.ay.as_ref().unwrap());
+        let est = bank_estimate(&r, r.ay.as_ref().unwrap(), SensorOffsets::default());
         assert!(
             est.iter().all(|b| b.is_finite() && b.abs() < 0.2),
             "no glitch in it"
@@ -344,7 +408,7 @@ mod tests {
         // Without ay and bank, no bank; without ax, no grade.
         let (mut r, _) = run();
         (r.ay, r.ax) = (None, None);
-        let g = RoadGeometry::of("turn", &r);
+        let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
         assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
     }
 }

@@ -27,6 +27,7 @@ enum Details<'a> {
         partial: bool,
         warning_details: &'a [VerdictWarning],
         evidence: &'a [Evidence],
+        confounded_with: &'a [EffectKind],
     },
     NoSignificantGap {
         threshold: f64,
@@ -67,6 +68,7 @@ impl Serialize for Verdict {
                     partial: e.partial(),
                     warning_details: &e.warnings,
                     evidence: &e.evidence,
+                    confounded_with: &e.confounded_with,
                 },
             ),
             Verdict::NoSignificantGap(n) => (

@@ -127,6 +127,10 @@ pub struct Explained {
     pub warnings: Vec<VerdictWarning>,
     /// What the runs show beside the fit that bears on it.
     pub evidence: Vec<Evidence>,
+    /// Effects that explain the gap about as well as the verdict's first
+    /// (its look-alikes, the report's `confounded`): the verdict is one of
+    /// them until a test separates them. Empty: no look-alike.
+    pub confounded_with: Vec<EffectKind>,
 }
 
 impl Explained {
@@ -551,6 +555,7 @@ mod tests {
             reduction_percent,
             warnings: Vec::new(),
             evidence: Vec::new(),
+            confounded_with: Vec::new(),
         };
         assert!(e(49.9).partial());
         assert!(!e(50.0).partial());

@@ -44,13 +44,22 @@ pub fn statement(v: &Verdict) -> String {
                 e.noise_level,
                 e.reduction_percent
             );
-            if e.partial() {
+            let head = if e.partial() {
                 format!(
                     "{head}; the other {:.1} % no candidate explains",
                     100.0 - e.reduction_percent
                 )
             } else {
                 head
+            };
+            match (e.confounded_with.is_empty(), e.effects.first()) {
+                (false, Some(first)) => format!(
+                    "{head}; but {} explain{} it about as well in place of {} (confounded): the runs do not tell them apart",
+                    joined(&e.confounded_with, ", "),
+                    if e.confounded_with.len() == 1 { "s" } else { "" },
+                    first.name()
+                ),
+                _ => head,
             }
         }
         Verdict::NoSignificantGap(n) => format!(

@@ -83,6 +83,9 @@ pub(crate) fn verdict(
                 noise_level,
                 reduction_percent: r.reduction_percent,
                 warnings,
+                // Its look-alikes are the report's `confounded`, found
+                // after the verdict (`pipeline` fills them in).
+                confounded_with: Vec::new(),
             })
         }
         (VerdictKind::NoSignificantGap, _) => Verdict::NoSignificantGap(NoSignificantGap {

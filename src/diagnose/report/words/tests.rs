@@ -17,6 +17,7 @@ fn explained(reduction_percent: f64) -> Verdict {
         reduction_percent,
         warnings: Vec::new(),
         evidence: Vec::new(),
+        confounded_with: Vec::new(),
     })
 }
 
@@ -48,6 +49,18 @@ fn an_explained_verdict_says_how_much_and_whether_part() {
     assert_eq!(
         statement(&explained(42.0)),
         "sensor_delay+relaxation_length explains part of the gap: held-out error 3.628 → 1.073 (noise level 0.941), 42.0 % of the gap above noise removed; the other 58.0 % no candidate explains"
+    );
+}
+
+#[test]
+fn an_explained_verdict_with_a_look_alike_says_it_is_one_of_them() {
+    let mut v = explained(85.3);
+    if let Verdict::Explained(e) = &mut v {
+        e.confounded_with = vec![EffectKind::SteerPath];
+    }
+    assert_eq!(
+        statement(&v),
+        "sensor_delay+relaxation_length explains the gap: held-out error 3.628 → 1.073 (noise level 0.941), 85.3 % of the gap above noise removed; but steer_path explains it about as well in place of sensor_delay (confounded): the runs do not tell them apart"
     );
 }
 

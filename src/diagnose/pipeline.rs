@@ -155,7 +155,11 @@ fn offsets(calibrated: &Calibrated) -> SensorOffsets {
     let of = |ch: Channel| calibrated[ch.index()].map_or(0.0, |(mean, _, _)| mean);
     let ay = of(Channel::Ay);
     SensorOffsets {
-        ay: if ay.abs() <= PLAUSIBLE_AY_OFFSET { ay } else { 0.0 },
+        ay: if ay.abs() <= PLAUSIBLE_AY_OFFSET {
+            ay
+        } else {
+            0.0
+        },
         yaw_rate: of(Channel::YawRate),
     }
 }

@@ -140,7 +140,8 @@ impl RoadGeometry {
     pub fn line(&self) -> Option<String> {
         // An estimate's extremes are its worst samples (a sensor lag in a
         // hard stop reads as a steep grade): the line shows its bulk.
-        let part = |what: &str, p: &AngleProfile| match p.source {
+        let part = |what: &str, p: &AngleProfile| {
+            match p.source {
             // No "-0.0°": a median of −0.01° is 0.0°.
             AngleSource::Measured => format!(
                 "{what} measured {}° to {}° (mean {}°)",
@@ -162,6 +163,7 @@ impl RoadGeometry {
                 deg(p.p95),
                 deg(p.median)
             ),
+        }
         };
         let mut parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
             .into_iter()

@@ -231,7 +231,7 @@ fn axles_from_runs(
         .linear
         .as_ref()
         .and_then(|l| covariance(&l.jacobian, 2.0 * full.cost));
-    let id = AxleIdentification::new(p, &full.std_errors, cov.as_ref(), starts)
+    let id = AxleIdentification::new(p, &full.reported_std_errors(), cov.as_ref(), starts)
         .with_prior(PriorReport::new(prior, rule, p).with_tempering(tempering));
     Bases {
         all: build(p),

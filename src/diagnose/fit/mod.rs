@@ -14,6 +14,8 @@ pub(crate) mod layout;
 pub(crate) mod prior_rows;
 pub(crate) mod problem;
 pub(crate) mod refit;
+#[cfg(test)]
+mod std_error_tests;
 pub(crate) mod tangent;
 pub mod tempering;
 
@@ -21,7 +23,7 @@ use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::{BoundedLm, Jacobians};
 use crate::optim::local::Residuals;
-use crate::optim::stats::{seen_columns, standard_errors};
+use crate::optim::stats::{sandwich_standard_errors, seen_columns, standard_errors};
 use nalgebra::DMatrix;
 use serde::Serialize;
 
@@ -81,6 +83,10 @@ pub struct FitOutcome {
     /// to convergence): the fold refits start from them.
     #[serde(skip)]
     pub linear: Option<Linearisation>,
+    /// The standard errors robust to residuals correlated over time
+    /// ([`robust_std_errors`]; empty where not linearised): the ones
+    /// reported.
+    pub robust_std_errors: Vec<f64>,
 }
 
 /// Data residuals `r`, their Jacobian `J` and second derivatives of a
@@ -105,6 +111,19 @@ pub fn pair_index(n: usize, a: usize, b: usize) -> usize {
 }
 
 impl FitOutcome {
+    /// The standard errors as reported: robust to residuals correlated
+    /// over time where the fit was linearised ([`robust_std_errors`]),
+    /// else the Jacobian's. The rules that hold a parameter, call an
+    /// effect idle or folds far keep the Jacobian's (their thresholds
+    /// were set on them; the likelihood-ratio test of a hold checks them).
+    pub fn reported_std_errors(&self) -> Vec<f64> {
+        if self.robust_std_errors.len() == self.std_errors.len() {
+            self.robust_std_errors.clone()
+        } else {
+            self.std_errors.clone()
+        }
+    }
+
     /// Bayesian information criterion of a Gaussian error model with the
     /// variance estimated: `N·ln(RSS/N) + k·ln N`, `k` the parameters the
     /// data see (one held because no residual responds to it costs
@@ -244,7 +263,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
     let mut params = params;
     let mut unseen = Vec::new();
     let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
-    let (std_errors, linear) = match polish {
+    let (std_errors, robust_std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
             let linear = linearise_with(problem, &params, second);
             evaluations += problem.jacobian_evaluations(params.len()) + 1;
@@ -264,10 +283,12 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
                     free.column_mut(i).fill(0.0);
                 }
             }
-            (standard_errors(&free, 2.0 * cost), Some(linear))
+            let robust = robust_std_errors(problem, &linear, &free);
+            (standard_errors(&free, 2.0 * cost), robust, Some(linear))
         }
-        _ => (vec![f64::NAN; params.len()], None),
+        _ => (vec![f64::NAN; params.len()], Vec::new(), None),
     };
+
     let outcome = FitOutcome {
         params,
         std_errors,
@@ -279,6 +300,7 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         unseen,
         held: Vec::new(),
         linear,
+        robust_std_errors,
     };
     (outcome, at)
 }
@@ -346,6 +368,39 @@ pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
     p: &[f64],
 ) -> Linearisation {
     linearise_with(problem, p, true)
+}
+
+/// The standard errors of the fit linearised as `linear` (its Jacobian's
+/// columns of parameters on a bound zeroed: `free`), robust to residuals
+/// correlated over time: the block sandwich
+/// ([`sandwich_standard_errors`]) over blocks of each run's channel of
+/// twice the residuals' integrated autocorrelation time (Sokal 1997;
+/// [`tempering::Tempering`]), the prior's rows each a block of its own. A
+/// misfit that lasts a manoeuvre carries the evidence of `N/τ` samples,
+/// not of `N`: the Jacobian's standard errors, which count every sample
+/// as independent, are optimistic by about `√τ` on a real log.
+fn robust_std_errors<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    linear: &Linearisation,
+    free: &DMatrix<f64>,
+) -> Vec<f64> {
+    let n = problem.data_count();
+    let tau = problem
+        .tempering_of(&linear.residuals[..n])
+        .correlation_samples;
+    let length = (2.0 * tau).ceil().max(1.0) as usize;
+    let mut blocks = Vec::new();
+    let mut start = 0;
+    for len in problem.sequence_lengths() {
+        let mut k = 0;
+        while k < len {
+            let end = (k + length).min(len);
+            blocks.push(start + k..start + end);
+            k = end;
+        }
+        start += len;
+    }
+    sandwich_standard_errors(free, &linear.residuals, &blocks)
 }
 
 /// [`linearise`], the second derivatives left out (no columns) unless

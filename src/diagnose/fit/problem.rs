@@ -150,12 +150,22 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
     pub fn tempering(&self, p: &[f64]) -> Tempering {
         let mut r = vec![0.0; self.data_count()];
         self.data_residuals(&self.clamp(p), &mut r);
-        let lengths: Vec<usize> = self
-            .runs
+        self.tempering_of(&r)
+    }
+
+    /// How the data residuals `r` (laid out as [`Problem::data_residuals`]
+    /// writes them) weigh against a prior.
+    pub fn tempering_of(&self, r: &[f64]) -> Tempering {
+        Tempering::of_residuals(r, &self.sequence_lengths())
+    }
+
+    /// The lengths of the data residuals' sequences, in their order: each
+    /// run's channel, in time order.
+    pub fn sequence_lengths(&self) -> Vec<usize> {
+        self.runs
             .iter()
             .flat_map(|run| run.measured.iter().map(|(_, v)| v.len()))
-            .collect();
-        Tempering::of_residuals(&r, &lengths)
+            .collect()
     }
 }
 

@@ -226,6 +226,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
                     unseen: Vec::new(),
                     held: full.held.clone(),
                     linear: None,
+                    robust_std_errors: Vec::new(),
                 };
             }
             doubted = true;
@@ -258,7 +259,7 @@ pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::diagnose::fit::{hold_stands, linearise, pinned, to_hold};
     use crate::diagnose::model::replay::tests::sine_run;
@@ -267,7 +268,7 @@ mod tests {
     use crate::vehicle::{Vehicle, VehicleModel};
 
     /// Axles of stiffness factors `B_f`, `B_r` and peak friction `D`.
-    fn axle_model(p: &[f64]) -> Augmented {
+    pub(in crate::diagnose::fit) fn axle_model(p: &[f64]) -> Augmented {
         let tyre = |b: f64| Tyre::MagicSimple(crate::tyre::MagicSimple { b, c: 1.3, d: p[2] });
         Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), tyre(p[0]), tyre(p[1])),
@@ -277,7 +278,7 @@ mod tests {
 
     /// Runs of a PAC89 car fitted with simplified-Magic-Formula axles: a
     /// model-form gap far above the noise, as on a real log.
-    fn runs() -> Vec<Prepared> {
+    pub(in crate::diagnose::fit) fn runs() -> Vec<Prepared> {
         let pac89 = Tyre::Pac89(Pac89::adams_example());
         let truth = Augmented::new(
             VehicleModel::new(Vehicle::compact_sedan(), pac89.clone(), pac89),
@@ -299,8 +300,9 @@ mod tests {
 
     /// The axle characteristics' box (B front, B rear, D) and the channel
     /// scales of the fold-refit tests.
-    const AXLES: [(f64, f64); 3] = [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
-    const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
+    pub(in crate::diagnose::fit) const AXLES: [(f64, f64); 3] =
+        [(2.0, 80.0), (2.0, 80.0), (0.3, 3.5)];
+    pub(in crate::diagnose::fit) const SCALES: [f64; 3] = [2e-4, 5e-3, 1.0];
 
     /// A refit lands on Levenberg–Marquardt's optimum: the cost to a few
     /// times what the refit's stopping test leaves (REFIT_DECREASE,
@@ -371,6 +373,7 @@ mod tests {
             unseen: Vec::new(),
             held: Vec::new(),
             linear: Some(linearise(&all, &start)),
+            robust_std_errors: Vec::new(),
         };
         let fold = Problem::new(
             axle_model,
@@ -454,6 +457,7 @@ mod tests {
             unseen: vec![false, false, false, false, true, false],
             held: Vec::new(),
             linear: None,
+            robust_std_errors: Vec::new(),
         };
         assert_eq!(to_hold(&f, &bounds, &off, 1), Some(2));
         f.held = vec![None, None, Some(5.0), None, None, None];
@@ -524,6 +528,7 @@ mod tests {
             unseen: Vec::new(),
             held: Vec::new(),
             linear: None,
+            robust_std_errors: Vec::new(),
         };
         let at = |cost: f64| FitOutcome {
             cost,

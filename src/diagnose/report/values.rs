@@ -22,8 +22,9 @@ pub struct ParameterValue {
     pub unit: &'static str,
     /// Value fitted on all runs.
     pub value: f64,
-    /// Its standard error (from the Jacobian; residual autocorrelation makes
-    /// it optimistic); NaN, written as `null`, where the runs do not pin it.
+    /// Its standard error: the Jacobian's times `√τ`, the residuals'
+    /// correlation time ([`crate::diagnose::fit::FitOutcome::reported_std_errors`]);
+    /// NaN, written as `null`, where the runs do not pin it.
     #[serde(serialize_with = "crate::report::finite_or_null")]
     pub std_error: f64,
     /// The value sits on one of its bounds ([`ParameterValue::bound`]).

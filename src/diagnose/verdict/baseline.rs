@@ -214,7 +214,7 @@ impl Baseline {
             axles: self.axle.then(|| {
                 let (p, a) = (&sc.full, self.layout(&sc.kinds).axles());
                 let shares = &p.params[a.clone()];
-                let id = AxleIdentification::new(shares, &p.std_errors[a], None, 0);
+                let id = AxleIdentification::new(shares, &p.reported_std_errors()[a], None, 0);
                 match &self.prior {
                     Some(r) => id.with_prior(PriorReport::new(r.prior, r.friction_rule, shares)),
                     None => id,

@@ -78,11 +78,12 @@ impl<'a> Setting<'a> {
 /// report rows.
 pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<ParameterValue> {
     let at = layout.effects().start;
+    let reported = f.reported_std_errors();
     layout
         .parameters()
         .enumerate()
         .map(|(i, (group, q))| {
-            let v = ParameterValue::of(group, q, f.params[at + i], f.std_errors[at + i]);
+            let v = ParameterValue::of(group, q, f.params[at + i], reported[at + i]);
             if f.is_unseen(at + i) {
                 v.unseen()
             } else if let Some(se) = f.held_for(at + i) {

@@ -235,6 +235,7 @@ mod design;
 mod diagnose;
 mod identify;
 mod identify_blocks;
+mod identify_hints;
 mod identify_records;
 mod magic_formula;
 mod measured_metrics;

@@ -299,6 +299,17 @@ pub enum InputProblem {
         /// The output column.
         output: &'static str,
     },
+    /// A load a Magic Formula file's vertical model carries at no loaded
+    /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
+    #[error("fz = {} N is more than the tyre's vertical model carries: {} N at a deflection of its whole free radius ({} m), so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), significant(*most, 4), significant(*free, 4))]
+    LoadNotCarried {
+        /// The load, N.
+        fz: f64,
+        /// The most the vertical model carries, N.
+        most: f64,
+        /// The free radius, m.
+        free: f64,
+    },
     /// An angle beyond what a tyre test in radians reaches.
     #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
     AngleInDegrees {
@@ -496,6 +507,7 @@ impl InputProblem {
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
             InputProblem::NotPhysical { .. } => "NotPhysical",
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
+            InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
             InputProblem::NoSweep => "NoSweep",
             InputProblem::NoLateral => "NoLateral",

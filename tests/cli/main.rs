@@ -262,6 +262,7 @@ mod trips_inputs;
 mod trips_limits;
 mod trips_outputs;
 mod trips_units;
+mod tyre_eval;
 mod user_trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

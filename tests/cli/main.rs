@@ -236,6 +236,7 @@ mod diagnose;
 mod identify;
 mod identify_blocks;
 mod identify_hints;
+mod identify_hoosier;
 mod identify_records;
 mod magic_formula;
 mod measured_metrics;

@@ -46,9 +46,10 @@ impl NoLongitudinalForce {
             None => String::new(),
         };
         format!(
-            "{} of {} have kappa ≠ 0 and fx = 0: the tyre has no longitudinal force{why}; its fx is not a prediction",
+            "{} of {} {} kappa ≠ 0 and fx = 0: the tyre has no longitudinal force{why}; its fx is not a prediction",
             self.points,
-            crate::format::plural(count, "point", "points")
+            crate::format::plural(count, "point", "points"),
+            if self.points == 1 { "has" } else { "have" }
         )
     }
 }

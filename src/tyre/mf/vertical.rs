@@ -154,7 +154,8 @@ pub fn loaded_radius(c: &MfCoefficients, s: &VerticalState, fz: f64) -> Result<f
         return Ok(hi);
     }
     let most = vertical_force(c, s, lo);
-    if !(most > fz) {
+    // A NaN force (a degenerate file) carries nothing either.
+    if most <= fz || most.is_nan() {
         return Err(NotCarried {
             fz,
             most,

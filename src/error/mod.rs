@@ -10,6 +10,7 @@
 mod duplicate;
 mod fit;
 mod input;
+mod level_slip;
 mod metrics;
 mod number;
 mod options;
@@ -28,6 +29,7 @@ pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip,
 };
 pub use input::{CellProblem, InputError, Location};
+pub use level_slip::{unit_slips, LevelSlip};
 pub use metrics::{MetricsError, HELD_STEP};
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};

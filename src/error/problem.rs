@@ -9,6 +9,7 @@
 //! [`InputError::Invalid`]: super::InputError::Invalid
 
 use super::duplicate::DuplicateAt;
+use super::level_slip::{requested as requested_text, unit_slip, LevelSlip};
 use super::number::Num;
 use super::piece::RefusedPiece;
 use super::rig::Variable;
@@ -60,28 +61,6 @@ impl RigChannel {
             RigChannel::Mz => "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
             RigChannel::Fx => "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
         }
-    }
-}
-
-/// `v` and its unit, if it has one: `300 m/s`, `10`.
-/// Where a request no level lies near would lie on one in the unit people
-/// read the variable in (a pressure in kPa, a camber in degrees, a load
-/// in kN), the question whether that was meant; else nothing.
-fn unit_slip(variable: Variable, requested: f64, levels: &[f64], separation: f64) -> String {
-    let (meant, si) = match variable {
-        Variable::Pressure => (requested * 1e3, "Pa"),
-        Variable::Camber => (requested.to_radians(), "rad"),
-        Variable::Load => (requested * 1e3, "N"),
-    };
-    let near = levels.iter().any(|l| (l - meant).abs() <= separation);
-    if near {
-        format!(
-            "; the request is in {si}: did you mean {} {si} ({})?",
-            super::number::number(meant),
-            variable.display(meant)
-        )
-    } else {
-        String::new()
     }
 }
 
@@ -320,6 +299,17 @@ pub enum InputProblem {
         /// The output column.
         output: &'static str,
     },
+    /// A load a Magic Formula file's vertical model carries at no loaded
+    /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
+    #[error("fz = {} N is more than the tyre's vertical model carries: {} N at a deflection of its whole free radius ({} m), so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), significant(*most, 4), significant(*free, 4))]
+    LoadNotCarried {
+        /// The load, N.
+        fz: f64,
+        /// The most the vertical model carries, N.
+        most: f64,
+        /// The free radius, m.
+        free: f64,
+    },
     /// An angle beyond what a tyre test in radians reaches.
     #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
     AngleInDegrees {
@@ -354,7 +344,7 @@ pub enum InputProblem {
         fy_slope: Option<f64>,
     },
     /// A requested camber or pressure that no level of the file lies near.
-    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), variable.display(*requested), unit_slip(*variable, *requested, levels, *separation), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
+    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
     NoLevelNear {
         /// The grouping variable.
         variable: Variable,
@@ -364,6 +354,8 @@ pub enum InputProblem {
         levels: Vec<f64>,
         /// The separation of levels (SI).
         separation: f64,
+        /// The request read in another unit, where it selects a level.
+        slip: Option<LevelSlip>,
     },
     /// A pressure requested from a file without pressures.
     #[error("a pressure was requested but the file has no `pressure` column")]
@@ -515,6 +507,7 @@ impl InputProblem {
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
             InputProblem::NotPhysical { .. } => "NotPhysical",
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
+            InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
             InputProblem::NoSweep => "NoSweep",
             InputProblem::NoLateral => "NoLateral",

@@ -50,31 +50,43 @@ fn messages_read_as_the_text_they_replace() {
         requested: 250e3,
         levels: vec![200e3, 220e3],
         separation: 5e3,
+        slip: None,
     };
-    assert_eq!(level.to_string(), "no pressure level near the requested 250.0 kPa (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
-    // A pressure in kPa, a camber in degrees, where the option takes SI.
-    let kpa = InputProblem::NoLevelNear {
-        variable: Variable::Pressure,
-        requested: 83.4,
-        levels: vec![69.7e3, 83.4e3, 97.1e3],
-        separation: 2.2e3,
+    assert_eq!(level.to_string(), "no pressure level near the requested 250000 Pa (250.0 kPa) (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
+    // A load in kN, a camber in degrees, where the option takes SI: the
+    // request as typed, then the conversion and the level it selects.
+    let kn = InputProblem::NoLevelNear {
+        variable: Variable::Load,
+        requested: 1.65,
+        levels: vec![534.0, 1656.0],
+        separation: 96.0,
+        slip: Some(LevelSlip {
+            meant: 1650.0,
+            unit: "kN",
+            level: 1656.0,
+        }),
     };
     assert!(
-        kpa.to_string().contains(
-            "the requested 0.1 kPa; the request is in Pa: did you mean 83400 Pa (83.4 kPa)?"
+        kn.to_string().contains(
+            "the requested 1.65 N; the value is read in N: did you mean 1650 N (1.65 kN), which selects the 1656 N level? (levels: 534 N, 1656 N;"
         ),
-        "{kpa}"
+        "{kn}"
     );
     let degrees = InputProblem::NoLevelNear {
         variable: Variable::Camber,
         requested: 1.6,
         levels: vec![0.0, 1.6_f64.to_radians()],
         separation: 0.2_f64.to_radians(),
+        slip: Some(LevelSlip {
+            meant: 1.6_f64.to_radians(),
+            unit: "°",
+            level: 1.6_f64.to_radians(),
+        }),
     };
     assert!(
-        degrees
-            .to_string()
-            .contains("the request is in rad: did you mean 0.0279253 rad (1.60°)?"),
+        degrees.to_string().contains(
+            "the requested 1.6 rad (91.67°); the value is read in rad: did you mean 0.0279253 rad (1.6°), which selects the 1.60° level?"
+        ),
         "{degrees}"
     );
     let angle = InputProblem::AngleInDegrees {

@@ -77,9 +77,9 @@ impl fmt::Display for ConstantFrom {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             ConstantFrom::MedianLoad => "the median load of the data, rounded to 10 N",
-            ConstantFrom::MedianPressure => "the median pressure of the data",
+            ConstantFrom::MedianPressure => "the median pressure of the data, rounded to 100 Pa",
             ConstantFrom::NoPressure => "no `pressure` column, so 0 (the pressure terms off)",
-            ConstantFrom::MedianSpeed => "the median rig speed of the data",
+            ConstantFrom::MedianSpeed => "the median rig speed of the data, rounded to 0.1 m/s",
             ConstantFrom::DefaultSpeed => "no `speed` column, so the default",
             ConstantFrom::DefaultRadius => {
                 "a default, as rig forces do not measure the radius (give --template with your tyre's)"

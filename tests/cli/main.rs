@@ -235,6 +235,8 @@ mod design;
 mod diagnose;
 mod identify;
 mod identify_blocks;
+mod identify_hints;
+mod identify_hoosier;
 mod identify_records;
 mod magic_formula;
 mod measured_metrics;
@@ -262,6 +264,7 @@ mod trips_limits;
 mod trips_outputs;
 mod trips_simulate;
 mod trips_units;
+mod tyre_eval;
 mod user_trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

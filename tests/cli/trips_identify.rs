@@ -516,7 +516,7 @@ fn a_fitted_tir_holds_the_datas_ranges_and_says_its_longitudinal_force_is_not_fi
         ),
         "{tir}"
     );
-    let no_fx = "no longitudinal data: the file's longitudinal force coefficients are not fitted (no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)): the defaults (no --template)";
+    let no_fx = "no longitudinal data: the longitudinal force block is not fitted (no pure longitudinal rows (columns `kappa` and `fx`, |α| ≤ 1e-3 rad)): its coefficients are the defaults' (no --template); the written file's longitudinal force is 0 at any slip ratio (PDX1 = 0, PKX1 = 0): give --template with a tyre's longitudinal coefficients for one";
     assert!(tir.contains(&format!("\n$ {no_fx}\n")), "{tir}");
     assert!(
         stdout(&o).contains(&format!("\n  {no_fx}\n")),

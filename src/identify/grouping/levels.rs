@@ -56,6 +56,29 @@ impl Levels {
             })
     }
 
+    /// The request `want` read in another unit people write the variable
+    /// in ([`crate::error::unit_slips`]), where it then selects a level;
+    /// `None` for a request inside the span of the levels: one between two
+    /// of them (3°, in rad, between levels at 1.6° and 3.2°) is in the
+    /// right unit and merely has no level, and its conversion (3° read as
+    /// 3 rad, or as 0.05° near a level at 0) would point the wrong way.
+    pub(super) fn unit_slip(&self, want: f64) -> Option<crate::error::LevelSlip> {
+        let (lo, hi) = (self.levels.first()?.lo, self.levels.last()?.hi);
+        if (lo - self.separation..=hi + self.separation).contains(&want) {
+            return None;
+        }
+        let slips = crate::error::unit_slips(self.variable);
+        slips.iter().find_map(|&(unit, factor)| {
+            let meant = want * factor;
+            let k = self.select(meant)?;
+            Some(crate::error::LevelSlip {
+                meant,
+                unit,
+                level: self.levels[k].nominal,
+            })
+        })
+    }
+
     /// The nominal of the level a value measured from this variable's
     /// samples (a mean of thinned rows) belongs to ([`Levels::select`]),
     /// or the value itself outside every band: what the terminal names

@@ -259,6 +259,7 @@ fn selection(
                 requested: want,
                 levels: l.levels.iter().map(|q| q.nominal).collect(),
                 separation: l.separation,
+                slip: l.unit_slip(want),
             })
         })
     };

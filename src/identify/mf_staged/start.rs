@@ -27,9 +27,13 @@ pub(super) fn base_tyre(rows: &[MfRow], s: &Settings) -> MagicFormula {
         if p.is_finite() {
             c.NOMPRES = (p / 100.0).round() * 100.0;
         }
+        // To 0.1 m/s, as FNOMIN and NOMPRES are rounded: a rig's median
+        // speed to sixteen digits (11.169666666666668) is noise, not a
+        // reference; divided (not multiplied by 0.1) so that it prints as
+        // 11.2, and never 0, which LONGVL divides by.
         let v = median(rows.iter().map(|r| r.speed).collect());
         if v.is_finite() && v > 0.0 {
-            c.LONGVL = v;
+            c.LONGVL = ((v * 10.0).round() / 10.0).max(0.1);
         }
         MagicFormula {
             version: s.version,

@@ -172,10 +172,19 @@ impl SwarmReport {
         // A value given with --hold is said as held (the header's `held:`
         // lines), not warned of, as the terminal does.
         let hold = &self.options.hold;
-        let given = |p: &&ParameterReport| !p.free && hold.iter().any(|(h, _)| *h == p.name);
         let params = fits.into_iter().flatten().flat_map(|f| &f.parameters);
         inputs
-            .chain(params.filter(|p| !given(p)).filter_map(parameter_warning))
+            .chain(
+                params
+                    .filter(|p| !held_as_given(p, hold))
+                    .filter_map(parameter_warning),
+            )
             .collect()
     }
+}
+
+/// Whether `p` is held at the value given for it with `--hold` (`hold`):
+/// said as held, on the terminal and in the header alike, never warned of.
+pub(crate) fn held_as_given(p: &ParameterReport, hold: &[(String, f64)]) -> bool {
+    !p.free && hold.iter().any(|(h, _)| *h == p.name)
 }

@@ -46,6 +46,10 @@ pub struct StagedJob {
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
+    /// The line saying the longitudinal force is not fitted, and what the
+    /// written file's is ([`no_longitudinal_data`]).
+    #[serde(skip)]
+    pub no_longitudinal: Option<String>,
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
@@ -80,9 +84,7 @@ impl StagedJob {
             .map_or(&[][..], |g| &g.levels[..]);
         out.extend(stage_lines(&self.report, named, true));
         out.push(format!("  {}", self.sigma_pooled.line()));
-        out.extend(
-            no_longitudinal_data(&self.report, o.template.is_some()).map(|l| format!("  {l}")),
-        );
+        out.extend(self.no_longitudinal.iter().map(|l| format!("  {l}")));
         out
     }
 }
@@ -220,7 +222,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     }
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
-    let no_fx = no_longitudinal_data(&id.report, o.template.is_some());
+    let no_fx = no_longitudinal_data(&id.report, o.template.is_some(), &written);
     let named = prepared
         .account
         .thinning
@@ -262,6 +264,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         round_trip_relative_difference: back,
         figure,
         tir,
+        no_longitudinal: no_fx,
         options: o.clone(),
         lock,
     })
@@ -284,8 +287,15 @@ fn held_comment(o: &Options) -> String {
 
 /// The line saying that the file's longitudinal force is not fitted,
 /// when the pure Fx stage had no rows (a cornering-only rig file): its
-/// coefficients are the template's (`template`) or the defaults.
-pub(super) fn no_longitudinal_data(report: &StagedReport, template: bool) -> Option<String> {
+/// coefficients are the template's (`template`) or the defaults, and what
+/// Fx the written tyre `t` then gives (without a template none: the
+/// defaults' PDX1 = PKX1 = 0, which reads as a tyre that grips only
+/// sideways unless it is said).
+pub(super) fn no_longitudinal_data(
+    report: &StagedReport,
+    template: bool,
+    t: &MagicFormula,
+) -> Option<String> {
     let pure_fx = report
         .stages
         .iter()
@@ -294,11 +304,39 @@ pub(super) fn no_longitudinal_data(report: &StagedReport, template: bool) -> Opt
     let from = if template {
         "the template's values"
     } else {
-        "the defaults (no --template)"
+        "the defaults' (no --template)"
+    };
+    let c = &t.coefficients;
+    let gives = if gives_no_longitudinal_force(t) {
+        format!(
+            "the written file's longitudinal force is 0 at any slip ratio (PDX1 = {}, PKX1 = {}): give --template with a tyre's longitudinal coefficients for one",
+            exact(c.PDX1),
+            exact(c.PKX1)
+        )
+    } else {
+        "the written file's longitudinal force is theirs, not these data's".into()
     };
     Some(format!(
-        "no longitudinal data: the file's longitudinal force coefficients are not fitted ({why}): {from}"
+        "no longitudinal data: the longitudinal force block is not fitted ({why}): its coefficients are {from}; {gives}"
     ))
+}
+
+/// Whether `t` gives no longitudinal force at all: 0 at a slip ratio of
+/// ±0.1 at its nominal load, found by evaluating it, not by naming the
+/// coefficients that cause it (a peak factor or a slip stiffness of 0).
+fn gives_no_longitudinal_force(t: &MagicFormula) -> bool {
+    let c = &t.coefficients;
+    [-0.1, 0.1].into_iter().all(|kappa| {
+        let p = crate::tyre::mf::MfInput {
+            fz: c.FNOMIN,
+            kappa,
+            alpha: 0.0,
+            camber: 0.0,
+            speed: c.LONGVL,
+            pressure: None,
+        };
+        t.evaluate(&p).fx == 0.0
+    })
 }
 
 /// The names given with `--hold`: a given value is set before the stages

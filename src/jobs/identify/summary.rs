@@ -3,7 +3,7 @@
 //! its parameters.
 
 use super::holds::held_lines;
-use super::notes::{later_fit_notes, unfitted_notes};
+use super::notes::{held_as_given, later_fit_notes, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
@@ -131,7 +131,7 @@ fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
     f.parameters
         .iter()
         .filter_map(|p| {
-            if !p.free && hold.iter().any(|(h, _)| *h == p.name) {
+            if held_as_given(p, hold) {
                 return Some(format!(
                     "  held: {} = {}: given with --hold",
                     p.name, p.value

@@ -2,8 +2,12 @@
 //! (`fz, kappa, alpha, camber, speed` and optionally `pressure`; SI, rad,
 //! Pa) in; the same points with `fx, fy, mz` (and `mx, my` for the Magic
 //! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
-//! vertical model: on every row, the free radius at zero or negative load,
-//! where the wheel is off the road, those points counted) out. A Magic Formula tyre is evaluated in one of MFeval's modes
+//! vertical model: on every row, the free radius at zero or negative load)
+//! out. A point at zero or negative load has its wheel off the road: no
+//! force, for every model, and those points counted. A load the vertical
+//! model carries at no loaded radius above 0 (limit checks off, a 100 kN
+//! load on an FSAE tyre) is refused at its row: MFeval's closed form gives
+//! a radius of 0 or below there. A Magic Formula tyre is evaluated in one of MFeval's modes
 //! (`useMode`, default 121: limit checks on, `α*` on); with the limit
 //! checks on, the points outside the file's ranges are counted (their
 //! load, slip, camber and pressure are evaluated at the ranges' ends, as
@@ -22,11 +26,15 @@
 //! the points beyond the ranges of the rig data a TOML tyre was fitted to
 //! (its `[fitted_ranges]`, which `identify` writes), evaluated by
 //! extrapolation, and a slip stiffness that changes sign inside the loads
-//! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N).
+//! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N),
+//! and (`checks.rs`) a tyre with no longitudinal force evaluated at a slip
+//! ratio, and a Magic Formula `my` at a speed past its speed terms' reach.
 
+mod checks;
 mod stiffness;
 mod unread;
 
+pub use checks::{BeyondMySpeed, NoLongitudinalForce, MY_SPEED_TERMS};
 pub use stiffness::SignChange;
 pub use unread::Unread;
 
@@ -124,9 +132,13 @@ pub struct TyreEvalReport {
     /// pressure, evaluated at the ranges' ends (limit checks on; 0
     /// otherwise).
     pub clamped: usize,
-    /// Points at zero or negative load whose loaded radius `rl` is the free
-    /// radius (the wheel off the road; 0 without an `rl` column).
+    /// Points at zero or negative load: the wheel off the road, no force
+    /// (and the loaded radius `rl`, where written, the free radius).
     pub off_road: usize,
+    /// Points with a slip ratio where the tyre gives no longitudinal force.
+    pub no_longitudinal_force: Option<NoLongitudinalForce>,
+    /// Points faster than a Magic Formula `my`'s speed terms reach.
+    pub beyond_my_speed: Option<BeyondMySpeed>,
     /// The input columns the model does not read, set at some points.
     pub unread: Vec<Unread>,
     /// The ranges of the rig data a TOML tyre was fitted to (its
@@ -211,12 +223,22 @@ fn read_points(points: &Path) -> Result<PointColumns, Error> {
     })
 }
 
-/// A Magic Formula tyre's mode, its points outside the file's ranges and
-/// its loaded radius at every point (where it has a vertical model);
-/// none of them for another model.
-fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> (Option<u32>, usize, Option<Vec<f64>>) {
+/// What a Magic Formula tyre adds to the evaluation: its mode, its points
+/// outside the file's ranges, and its loaded radius at every point (where
+/// it has a vertical model), with the points whose load it carries at no
+/// radius. All empty for another model.
+#[derive(Default)]
+struct MfExtras {
+    mode: Option<u32>,
+    clamped: usize,
+    loaded_radius: Option<Vec<f64>>,
+    not_carried: Vec<(usize, crate::tyre::mf::vertical::NotCarried)>,
+}
+
+/// The [`MfExtras`] of `tyre` at the points `p`.
+fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> MfExtras {
     let Tyre::MagicFormula(t) = tyre else {
-        return (None, 0, None);
+        return MfExtras::default();
     };
     let [fz, kappa, alpha, camber, speed] = p.columns;
     let inputs: Vec<MfInput> = (0..fz.len())
@@ -229,16 +251,53 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> (Option<u32>, usize,
             pressure: p.pressure.get(i).copied(),
         })
         .collect();
-    let n = inputs.iter().filter(|q| t.is_clamped(q)).count();
+    let clamped = inputs.iter().filter(|q| t.is_clamped(q)).count();
+    let mut not_carried = Vec::new();
     // The loaded radius, on every row, where the file has a vertical
     // model (6.1, 6.2): the free radius off the road.
-    let rl: Option<Vec<f64>> = t.has_vertical_model().then(|| {
-        inputs
-            .iter()
-            .map(|q| t.loaded_radius(q).unwrap_or(f64::NAN))
+    let loaded_radius: Option<Vec<f64>> = t.has_vertical_model().then(|| {
+        let rl = inputs.iter().map(|q| t.loaded_radius_or_not_carried(q));
+        rl.enumerate()
+            .map(|(i, r)| match r {
+                Some(Ok(r)) => r,
+                Some(Err(n)) => {
+                    not_carried.push((i, n));
+                    f64::NAN
+                }
+                None => f64::NAN,
+            })
             .collect()
     });
-    (Some(t.mode().use_mode()), n, rl)
+    MfExtras {
+        mode: Some(t.mode().use_mode()),
+        clamped,
+        loaded_radius,
+        not_carried,
+    }
+}
+
+/// Refuses the points whose load the vertical model does not carry, at
+/// the point's row and the load's column.
+fn refuse_not_carried(
+    points: &Path,
+    file: &crate::io::Columns,
+    not_carried: &[(usize, crate::tyre::mf::vertical::NotCarried)],
+) -> Result<(), Error> {
+    let errors = not_carried
+        .iter()
+        .map(|(i, n)| {
+            let problem = crate::error::InputProblem::LoadNotCarried {
+                fz: n.fz,
+                most: n.most,
+                free: n.free,
+            };
+            file.error_at(points, *i, "fz", problem)
+        })
+        .collect();
+    match crate::error::InputError::all_of(points, errors) {
+        Some(e) => Err(e.into()),
+        None => Ok(()),
+    }
 }
 
 /// Refuses the points where the model gave a non-finite output (`columns`
@@ -302,11 +361,14 @@ pub fn run(
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
-    let (mode, clamped, loaded_radius) = magic_formula_extras(&tyre, &given);
-    let off_road = match loaded_radius {
-        Some(_) => fz.iter().filter(|fz| **fz <= 0.0).count(),
-        None => 0,
-    };
+    let no_longitudinal_force = checks::no_longitudinal_force(&tyre, &given, &f, &unread);
+    let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
+    let extras = magic_formula_extras(&tyre, &given);
+    refuse_not_carried(points, &file, &extras.not_carried)?;
+    let (mode, clamped) = (extras.mode, extras.clamped);
+    // Every model gives no force off the road: said for each, not only
+    // where a loaded radius is written.
+    let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
     let mut columns = std::mem::take(&mut inputs);
     columns.extend(pressure.map(|p| ("pressure", p)));
     let of = |g: fn(&PointForces) -> f64| f.iter().map(g).collect::<Vec<_>>();
@@ -319,7 +381,7 @@ pub fn run(
         columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
         columns.push(("my", of(|x| x.my.unwrap_or(f64::NAN))));
     }
-    columns.extend(loaded_radius.map(|rl| ("rl", rl)));
+    columns.extend(extras.loaded_radius.map(|rl| ("rl", rl)));
     // (The first five columns are the inputs, checked when read.)
     refuse_non_finite(points, &file, &columns, tyre.model_name())?;
     Ok(TyreEvalReport {
@@ -329,6 +391,8 @@ pub fn run(
         mode,
         clamped,
         off_road,
+        no_longitudinal_force,
+        beyond_my_speed,
         unread,
         sign_changes,
         fitted_ranges,
@@ -360,6 +424,12 @@ impl TyreEvalReport {
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
         out.extend(self.sign_changes.iter().map(SignChange::line));
+        out.extend(
+            self.no_longitudinal_force
+                .iter()
+                .map(|n| n.line(self.count)),
+        );
+        out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",
@@ -396,10 +466,14 @@ impl TyreEvalReport {
             Some(m) => format!(" in MFeval mode {m}"),
             None => String::new(),
         };
+        let rl = match self.columns.iter().any(|(n, _)| *n == "rl") {
+            true => ", `rl` the free radius",
+            false => "",
+        };
         let off_road = match self.off_road {
             0 => String::new(),
             n => format!(
-                "; {} at fz ≤ 0 (off the road): no force, `rl` the free radius",
+                "; {} at fz ≤ 0 (off the road): no force{rl}",
                 crate::format::plural(n, "point", "points")
             ),
         };

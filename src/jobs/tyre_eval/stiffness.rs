@@ -4,7 +4,11 @@
 //! force against its slip above that load, and `tyre-eval` writes it like
 //! any other. Found by behaviour, for any model: the force's slope at zero
 //! slip (a central difference of ±[`SLIP`]) at loads across the points'
-//! range, and a change of its sign between two of them.
+//! range, and a change of its sign between two of them. A Magic Formula
+//! tyre with its limit checks on evaluates its forces at no load above its
+//! file's `FZMAX`: the loads probed, and the range the warning names, stop
+//! there (the points' 5000 N on `FSAE_Defaults.tir`, whose `FZMAX` is
+//! 2000 N, are evaluated at 2000 N).
 
 use crate::tyre::{SlipState, Tyre};
 
@@ -21,16 +25,26 @@ pub struct SignChange {
     pub stiffness: &'static str,
     /// The loads it changes sign between, N.
     pub between: (f64, f64),
-    /// The range of loads evaluated, N.
+    /// The range of loads evaluated, N (after the limit checks).
     pub loads: (f64, f64),
+    /// The largest load of the points, where the limit checks evaluate it
+    /// at a lower one (the file's `FZMAX`), N.
+    pub held_from: Option<f64>,
 }
 
 impl SignChange {
     /// The sentence on the terminal.
     pub fn line(&self) -> String {
         let n = |f: f64| format!("{f:.0}");
+        let held = match self.held_from {
+            Some(f) => format!(
+                ", the points' loads up to {} N held at the file's FZMAX",
+                n(f)
+            ),
+            None => String::new(),
+        };
         format!(
-            "the {} stiffness (the force's slope at zero slip) changes sign between fz = {} N and {} N, inside the loads evaluated ({} to {} N): on one side of it the tyre's force opposes its slip; check the file's load coefficients (a .tir's PKX1 + PKX2·dfz, PKY1…)",
+            "the {} stiffness (the force's slope at zero slip) changes sign between fz = {} N and {} N, inside the loads evaluated ({} to {} N{held}): on one side of it the tyre's force opposes its slip; check the file's load coefficients (a .tir's PKX1 + PKX2·dfz, PKY1…)",
             self.stiffness,
             n(self.between.0),
             n(self.between.1),
@@ -49,6 +63,16 @@ pub(crate) fn sign_changes(tyre: &Tyre, fz: &[f64]) -> Vec<SignChange> {
         .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &f| {
             (lo.min(f), hi.max(f))
         });
+    // The load the forces are evaluated at: a Magic Formula tyre with its
+    // limit checks on holds a load above FZMAX there.
+    let fz_max = match tyre {
+        Tyre::MagicFormula(t) if t.options.limit_checks => t.limits.fz_max,
+        _ => None,
+    };
+    let (hi, held_from) = match fz_max {
+        Some(m) if hi > m => (m, Some(hi)),
+        _ => (hi, None),
+    };
     if lo >= hi {
         return Vec::new();
     }
@@ -85,6 +109,7 @@ pub(crate) fn sign_changes(tyre: &Tyre, fz: &[f64]) -> Vec<SignChange> {
                 stiffness,
                 between: (loads[w[0]], loads[w[1]]),
                 loads: (lo, hi),
+                held_from,
             })
         })
         .collect()

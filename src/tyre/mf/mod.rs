@@ -279,9 +279,20 @@ impl MagicFormula {
     /// The loaded radius (m) at a point, as MFeval computes it for a 6.1 or
     /// 6.2 file ([`vertical`]); `None` for a 5.2 file or one without
     /// `VERTICAL_STIFFNESS` (no vertical model, [`Self::has_vertical_model`])
-    /// and at a non-finite load. At zero or negative load (the wheel off
-    /// the road) it is the free-spinning radius `RΩ` at zero load.
+    /// and at a non-finite load, and at a load the vertical model does not
+    /// carry ([`Self::loaded_radius_or_not_carried`]). At zero or negative
+    /// load (the wheel off the road) it is the free-spinning radius `RΩ` at
+    /// zero load.
     pub fn loaded_radius(&self, p: &MfInput) -> Option<f64> {
+        self.loaded_radius_or_not_carried(p)?.ok()
+    }
+
+    /// [`Self::loaded_radius`], with a load the vertical model carries at
+    /// no loaded radius above 0 said as such ([`vertical::NotCarried`]).
+    pub fn loaded_radius_or_not_carried(
+        &self,
+        p: &MfInput,
+    ) -> Option<Result<f64, vertical::NotCarried>> {
         // MF 6.1's vertical force has no camber, Fy-shift or Fy-power
         // terms: a 6.1 file that carries those keys is evaluated without.
         let mf61;
@@ -305,7 +316,7 @@ impl MagicFormula {
         if p.fz <= 0.0 {
             // Off the road: no deflection, the free radius at zero load.
             let dpi = (self.checked(0.0, gamma, pressure).p - c.NOMPRES) / c.NOMPRES;
-            return Some(vertical::radii(c, 0.0, p.kappa, p.speed, dpi).free);
+            return Some(Ok(vertical::radii(c, 0.0, p.kappa, p.speed, dpi).free));
         }
         // ISO-W forces of the (mirrored) tyre; the vertical model is even
         // under the mirror.

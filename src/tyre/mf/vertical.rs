@@ -130,13 +130,37 @@ pub fn vertical_force(c: &MfCoefficients, s: &VerticalState, rl: f64) -> f64 {
         * fz0
 }
 
+/// A load the vertical model does not carry at any loaded radius above 0:
+/// even a deflection of the whole free radius (the axle on the road) gives
+/// less. MFeval's closed form returns a loaded radius of 0 or below there;
+/// no tyre has one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NotCarried {
+    /// The load asked for (after the limit checks), N.
+    pub fz: f64,
+    /// The most the model carries, at that deflection, N.
+    pub most: f64,
+    /// The free radius `RΩ` at the point, m.
+    pub free: f64,
+}
+
 /// The loaded radius (m) at load `fz`: the root of [`vertical_force`] `=
-/// fz` between `RΩ − R0` and `RΩ` (bisection to 1e-13 m); `RΩ` at zero
-/// load and `RΩ − R0` where even that deflection does not carry `fz`.
-pub fn loaded_radius(c: &MfCoefficients, s: &VerticalState, fz: f64) -> f64 {
-    let (mut lo, mut hi) = (s.radii.free - c.UNLOADED_RADIUS, s.radii.free);
+/// fz` between `max(RΩ − R0, 0)` and `RΩ` (bisection to 1e-13 m); `RΩ` at
+/// zero load; [`NotCarried`] where even the lower end does not carry `fz`
+/// (a 100 kN load on an FSAE tyre with the limit checks off).
+pub fn loaded_radius(c: &MfCoefficients, s: &VerticalState, fz: f64) -> Result<f64, NotCarried> {
+    let (mut lo, mut hi) = ((s.radii.free - c.UNLOADED_RADIUS).max(0.0), s.radii.free);
     if fz <= 0.0 {
-        return hi;
+        return Ok(hi);
+    }
+    let most = vertical_force(c, s, lo);
+    // A NaN force (a degenerate file) carries nothing either.
+    if most <= fz || most.is_nan() {
+        return Err(NotCarried {
+            fz,
+            most,
+            free: s.radii.free,
+        });
     }
     for _ in 0..200 {
         if hi - lo <= 1e-13 {
@@ -149,5 +173,5 @@ pub fn loaded_radius(c: &MfCoefficients, s: &VerticalState, fz: f64) -> f64 {
             hi = mid;
         }
     }
-    0.5 * (lo + hi)
+    Ok(0.5 * (lo + hi))
 }

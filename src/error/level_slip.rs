@@ -1,0 +1,63 @@
+//! A request for a rig file's level (`identify --load`, `--camber`,
+//! `--pressure`) that no level lies near, but that would select one read
+//! in the unit people write the variable in: a load in kN, a camber in
+//! degrees, a pressure in kPa, bar or psi, where the options take N, rad
+//! and Pa. Only a conversion that selects a level is offered, so the hint
+//! never points at a value the file does not have.
+
+use super::rig::Variable;
+
+/// A request no level lies near that would select one in the unit people
+/// write the variable in: a load in kN, a camber in degrees, a pressure in
+/// kPa, bar or psi, where the option takes N, rad and Pa.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelSlip {
+    /// The request converted to SI from `unit`.
+    pub meant: f64,
+    /// The unit the request reads as: `kN`, `°`, `kPa`, `bar`, `psi`.
+    pub unit: &'static str,
+    /// The nominal value (SI) of the level `meant` selects.
+    pub level: f64,
+}
+
+/// The units a request of `variable` may have been written in, each with
+/// its factor to SI, most likely first.
+pub fn unit_slips(variable: Variable) -> &'static [(&'static str, f64)] {
+    match variable {
+        Variable::Load => &[("kN", 1e3)],
+        Variable::Camber => &[("°", std::f64::consts::PI / 180.0)],
+        Variable::Pressure => &[("kPa", 1e3), ("bar", 1e5), ("psi", 6894.757)],
+    }
+}
+
+/// The request as typed, in SI, and in the unit people read it in where
+/// that differs: `1.65 N`, `2 rad (114.59°)`, `83 Pa (0.1 kPa)`.
+pub(super) fn requested(variable: Variable, v: f64) -> String {
+    let (si, shown) = (super::number::number(v), variable.display(v));
+    match variable {
+        Variable::Load => format!("{si} N"),
+        Variable::Camber => format!("{si} rad ({shown})"),
+        Variable::Pressure => format!("{si} Pa ({shown})"),
+    }
+}
+
+/// The question whether the request was written in another unit, where
+/// it would then select a level ([`LevelSlip`]); else nothing.
+pub(super) fn unit_slip(variable: Variable, requested: f64, slip: &Option<LevelSlip>) -> String {
+    let Some(s) = slip else {
+        return String::new();
+    };
+    let si = match variable {
+        Variable::Load => "N",
+        Variable::Camber => "rad",
+        Variable::Pressure => "Pa",
+    };
+    let gap = if s.unit == "°" { "" } else { " " };
+    format!(
+        "; the value is read in {si}: did you mean {} {si} ({}{gap}{}), which selects the {} level?",
+        super::number::number(s.meant),
+        super::number::number(requested),
+        s.unit,
+        variable.display(s.level)
+    )
+}

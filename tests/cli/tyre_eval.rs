@@ -1,0 +1,197 @@
+//! What `tyre-eval` cannot stand behind, said at the points it concerns: a
+//! tyre without a longitudinal force evaluated at a slip ratio, a Magic
+//! Formula `my` past the speed its speed terms reach, a load its vertical
+//! model carries at no loaded radius, a TOML tyre off the road, and the
+//! loads a slip stiffness's sign change is named within.
+
+use super::*;
+use crate::trips_identify::{identify_with, rig, stdout};
+
+/// The MF 6.1 sample file of the fixtures, with `edits` (key, value) made.
+fn mf61(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
+    let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
+        .unwrap();
+    let mut out = String::new();
+    for line in text.lines() {
+        let key = line.split_whitespace().next().unwrap_or("");
+        match edits.iter().find(|(k, _)| *k == key) {
+            Some((k, v)) => out += &format!("{k} = {v}\n"),
+            None => out += &format!("{line}\n"),
+        }
+    }
+    let path = dir.join("tyre.tir");
+    fs::write(&path, out).unwrap();
+    path
+}
+
+/// `tyre-eval` of `tyre` at the points `csv` (written to `dir`), with
+/// `args`: the output, and the CSV written.
+fn eval(dir: &Path, tyre: &Path, csv: &str, args: &[&str]) -> (Output, String) {
+    fs::write(dir.join("p.csv"), csv).unwrap();
+    let _ = fs::remove_file(dir.join("f.csv"));
+    let mut all = vec![
+        "tyre-eval",
+        tyre.to_str().unwrap(),
+        "p.csv",
+        "--out",
+        "f.csv",
+    ];
+    all.extend_from_slice(args);
+    let o = bin().args(all).current_dir(dir).output().unwrap();
+    let written = fs::read_to_string(dir.join("f.csv")).unwrap_or_default();
+    (o, written)
+}
+
+/// The column `name` of a written CSV.
+fn column(csv: &str, name: &str) -> Vec<f64> {
+    let mut lines = csv.lines();
+    let at = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("no {name}: {csv}"));
+    lines
+        .map(|l| l.split(',').nth(at).unwrap().parse().unwrap())
+        .collect()
+}
+
+/// A .tir `identify` wrote from cornering-only data (PDX1 = PKX1 = 0) gave
+/// fx = 0 at every slip ratio without a word; its identify line said the
+/// coefficients kept "the defaults" as if they gave a force.
+#[test]
+fn a_tyre_without_longitudinal_force_is_warned_of_at_a_slip_ratio() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let tir = dir.path().join("m.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &tir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = "the written file's longitudinal force is 0 at any slip ratio (PDX1 = 0, PKX1 = 0)";
+    assert!(String::from_utf8_lossy(&o.stdout).contains(said));
+    assert!(fs::read_to_string(&tir).unwrap().contains(said));
+    let points =
+        "fz,kappa,alpha,camber,speed\n4000,0.05,0.02,0,20\n4000,0,0.02,0,20\n4000,-0.1,0,0,20\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(column(&written, "fx"), [0.0, 0.0, 0.0]);
+    assert!(
+        stderr(&o).contains("warning: 2 of 3 points have kappa ≠ 0 and fx = 0: the tyre has no longitudinal force (PDX1 = 0, PKX1 = 0"),
+        "{}",
+        stderr(&o)
+    );
+    // A file with a longitudinal force: nothing to say.
+    let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
+    assert!(
+        o.status.success() && !stderr(&o).contains("fx = 0"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// The MF 6.1 sample's `my` at 200 m/s (V/LONGVL = 12.05: 0.0004·12.05 + 4e-5·12.05⁴ = 0.848
+/// against QSY1 = 0.01) was written without a word.
+#[test]
+fn a_rolling_resistance_moment_past_its_speed_terms_reach_is_warned_of() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,16.6\n4000,0,0,0,200\n4000,0,0,0,-150\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let my = column(&written, "my");
+    assert!(my[1].abs() > 50.0 * my[0].abs(), "{my:?}");
+    // 0.0004·x + 4e-5·x⁴ = 0.1 at x = 7.06, 117 m/s.
+    let e = stderr(&o);
+    assert!(
+        e.contains("warning: 2 of 3 points faster than 117 m/s, where the speed terms of `my`")
+            && e.contains("(at 200 m/s the terms come to 0.848, against QSY1 = 0.01)"),
+        "{e}"
+    );
+    let (o, _) = eval(
+        dir.path(),
+        &tir,
+        "fz,kappa,alpha,camber,speed\n4000,0,0,0,100\n",
+        &[],
+    );
+    assert!(
+        o.status.success() && !stderr(&o).contains("`my`"),
+        "{}",
+        stderr(&o)
+    );
+    // Without speed terms, no speed is past them.
+    let flat = mf61(dir.path(), &[("QSY3", "0"), ("QSY4", "0")]);
+    let (o, _) = eval(dir.path(), &flat, points, &[]);
+    assert!(
+        o.status.success() && !stderr(&o).contains("`my`"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// With the limit checks off (mode 221) a load far past FZMAX gave a
+/// loaded radius of 3e-14 m (the bisection's end at a deflection of the
+/// whole radius), or below 0 on other files, as MFeval's closed form does.
+#[test]
+fn a_load_the_vertical_model_does_not_carry_is_refused_at_its_row() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,16\n1000000,0,0,0,16\n";
+    let (o, _) = eval(dir.path(), &tir, points, &["--mode", "221"]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("p.csv:3:1: fz = 1000000 N is more than the tyre's vertical model carries: ")
+            && e.contains("so no loaded radius `rl` is physical there"),
+        "{e}"
+    );
+    assert!(!e.contains("p.csv:2:"), "{e}");
+    // The limit checks hold the load at FZMAX (18000 N): a radius below
+    // the free one and above 0.
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rl = column(&written, "rl");
+    assert!(rl.iter().all(|r| *r > 0.3 && *r < 0.3945), "{rl:?}");
+}
+
+/// A TOML tyre at a negative load gave no force and no word, where a
+/// Magic Formula file's points off the road were counted.
+#[test]
+fn a_toml_tyre_off_the_road_is_counted_as_a_magic_formula_one_is() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n-1000,0.05,0.05,0,20\n0,0.05,0.05,0,20\n3000,0.05,0.05,0,20\n";
+    for toml in ["pac89_adams_example.toml", "unitire.toml", "gim.toml"] {
+        let (o, written) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
+        assert!(o.status.success(), "{toml}: {}", stderr(&o));
+        assert!(
+            stdout(&o).contains("3 points of p.csv (")
+                && stdout(&o).contains("; 2 points at fz ≤ 0 (off the road): no force; wrote "),
+            "{toml}: {}",
+            stdout(&o)
+        );
+        assert_eq!(column(&written, "fy")[..2], [0.0, 0.0], "{toml}");
+    }
+}
+
+/// `FSAE_Defaults.tir` (FZMAX 2000 N) at points of 500 and 5000 N named
+/// "the loads evaluated (500 to 5000 N)", where its forces are evaluated
+/// at no load above 2000 N.
+#[test]
+fn a_slip_stiffness_sign_change_names_the_loads_the_limit_checks_leave() {
+    let test = "a_slip_stiffness_sign_change_names_the_loads_the_limit_checks_leave";
+    let Some(tir) = shared_data(test, "tir_public/FSAE_Defaults.tir") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n500,0.01,0.01,0,16\n5000,0.01,0.01,0,16\n";
+    let (o, _) = eval(dir.path(), &tir, points, &[]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("inside the loads evaluated (500 to 2000 N, the points' loads up to 5000 N held at the file's FZMAX)"),
+        "{e}"
+    );
+    // With the limit checks off the loads are evaluated as given.
+    let (o, _) = eval(dir.path(), &tir, points, &["--mode", "221"]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("inside the loads evaluated (500 to 5000 N):"),
+        "{e}"
+    );
+}

@@ -624,7 +624,11 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
             p["value"].as_f64().unwrap(),
             p["std_error"].as_f64().unwrap(),
         );
-        assert!((lo..hi).contains(&x) && se < 0.01, "{p}");
+        // Standard errors that allow for the residuals' correlation over
+        // time (their Jacobian's were below 0.01 s): still a tenth or
+        // less of the value, and the runs determine both.
+        assert!((lo..hi).contains(&x) && se < 0.05, "{p}");
+        assert_eq!(p["determined"], true, "{p}");
         assert_eq!(p["at_bound"], false, "{p}");
     }
     assert!(v["warning_details"].as_array().unwrap().is_empty(), "{v}");

@@ -24,15 +24,15 @@ pub struct IdentifyArgs {
     /// Keep only the load level holding this value, N (default: all; an
     /// error when no level lies near it): a model without load terms, such
     /// as `linear`, fits one.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     load: Option<f64>,
     /// Keep only the pressure level holding this value, Pa (an error when
     /// the file has no pressure column or no level near it).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pressure: Option<f64>,
     /// Keep only the camber level holding this value, rad (default: all;
     /// an error when the file has no camber column or no level near it).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     camber: Option<f64>,
     /// Local polish: lm, gn (Zhang & Li's (2017) modified Gauss-Newton) or none.
     #[arg(long, default_value = "lm", value_parser = super::named::<Polish>(|| Polish::ALL.map(Polish::as_str).to_vec()))]
@@ -40,10 +40,10 @@ pub struct IdentifyArgs {
     /// Slip-angle bin for thinning, degrees (0: no thinning): the
     /// samples of one condition in one bin are averaged; a lone sample is
     /// kept as it is.
-    #[arg(long, default_value_t = 0.25)]
+    #[arg(long, default_value_t = 0.25, allow_hyphen_values = true)]
     bin_deg: f64,
     /// Slip-ratio bin for thinning longitudinal data (0: no thinning).
-    #[arg(long, default_value_t = 0.0025)]
+    #[arg(long, default_value_t = 0.0025, allow_hyphen_values = true)]
     bin_kappa: f64,
     /// mf61/mf62: where the parameters start — `template` (the template's values), `data` (estimates from
     /// the data, then MINPACK's LM) or `paper` (all 1, Wei et al.'s LM

@@ -47,14 +47,16 @@ enum Command {
     /// Cornering stiffness against handling (Wang & Liang): map, RBF, inverse;
     /// writes study.csv, maps.png, rbf.json, rbf.png, inverse.json, summary.json.
     Study(study::StudyArgs),
-    /// Fit a tyre model's lateral force to rig data (CSV, FORMATS.md): PSO
-    /// then Levenberg–Marquardt or modified Gauss–Newton; writes a tyre file,
-    /// a JSON report and a PNG.
+    /// Fit a tyre model to rig data (CSV, FORMATS.md): its lateral force
+    /// by PSO then Levenberg–Marquardt or modified Gauss–Newton, or the
+    /// Magic Formula's Fy, Fx, Mz and combined slip stage by stage; writes
+    /// a tyre file, a JSON report and a PNG.
     Identify(identify::IdentifyArgs),
     /// The sim-to-real gap of a campaign (a TOML file or a folder with
     /// vehicle.toml, runs/*.csv and optionally tyre_rig.csv): where the base
     /// model is wrong, which candidate effect explains it, how far the
-    /// held-out gap shrinks; writes diagnosis.json, gap_map.png, overlays.png.
+    /// held-out gap shrinks; writes diagnosis.json, gap_map.png,
+    /// overlays.png and report.html.
     Diagnose(diagnose::DiagnoseArgs),
     /// Virtual proving ground: writes a campaign folder measured on a truth
     /// model with the given effects on (noise, UniTire tyres; the diagnosis

@@ -103,6 +103,16 @@ pub enum MetricsError {
         /// The steer there, as a share of the step.
         share: f64,
     },
+    /// A steer that takes longer than a step may to rise: a ramp.
+    #[error("the steer rises from 10 % to 90 % of its change in {rise:.2} s, from {from:.2} s: a ramp steer, not a step (GB/T 6323 steps within 0.2 s, ISO 7401 within 0.15 s; a step taking more than {} s is refused), and the step-steer metrics measure nothing of it", Num(*limit))]
+    SteerRamp {
+        /// The 10–90 % rise, s.
+        rise: f64,
+        /// Where it reaches 10 %, s.
+        from: f64,
+        /// The longest rise taken as a step, s.
+        limit: f64,
+    },
     /// A steer held neither before its "step" nor after it.
     #[error("no step steer in this record: the steer moves inside the initial window (at {moved:.2} s) and does not hold its step after it (at {time:.2} s); a step steer is a steer held straight, stepped and held: cut one out of the log to measure it")]
     NeverHeld {

@@ -367,7 +367,7 @@ pub enum InputProblem {
         camber: f64,
     },
     /// A run with no two successive samples fast enough.
-    #[error("no two successive samples at or above min_speed = {} m/s ({slow} of {read} samples below it)", Num(*min_speed))]
+    #[error("no two successive samples at or above min_speed = {} m/s ({slow} of {read} samples below it): a run this slow is measured with a lower --min-speed (min_speed in a campaign, Python's min_speed=)", Num(*min_speed))]
     NoMovingSamples {
         /// The speed threshold, m/s.
         min_speed: f64,

@@ -270,6 +270,12 @@ pub enum Limit {
     /// A steering compliance, rad/N.
     #[error("no steering system loses more than 0.1 rad (5.7°) of road-wheel steer per kN of front axle force (1e-4 rad/N); the scenario key is in rad/N (0.003 rad/kN, the diagnosis's unit, is 3e-6 rad/N)")]
     SteeringCompliance,
+    /// A slip-angle bin, degrees.
+    #[error("a slip-angle bin wider than 2° averages the curve's rise to its peak away (a rig sweeps to about 12°, the peak lies at 3–8°); 0 keeps every sample")]
+    SlipAngleBin,
+    /// A slip-ratio bin.
+    #[error("a slip-ratio bin wider than 0.05 averages the curve's rise to its peak away (the peak lies at a slip ratio of 0.05–0.15); 0 keeps every sample")]
+    SlipRatioBin,
     /// The replay step of a diagnosis.
     #[error("a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)")]
     ReplayStep,

@@ -70,8 +70,9 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
 /// The warning on a measured step whose speeds, sorted, are `sorted`
 /// (m/s): where its 5th and 95th percentiles lie further apart than
 /// [`VARYING_SPEED`] of the median (percentiles, so that a noise spike
-/// is no change of speed).
-pub fn varying_speed(sorted: &[f64]) -> Option<String> {
+/// is no change of speed); `rising` says which way it went (its last
+/// tenth against its first).
+pub fn varying_speed(sorted: &[f64], rising: bool) -> Option<String> {
     let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
     if sorted.is_empty() {
         return None;
@@ -79,7 +80,8 @@ pub fn varying_speed(sorted: &[f64]) -> Option<String> {
     let (lo, median, hi) = (at(0.05), at(0.5), at(0.95));
     ((hi - lo) > VARYING_SPEED * median.abs()).then(|| {
         format!(
-            "the speed changes from {lo:.2} to {hi:.2} m/s over the measured piece (5th to 95th percentile; {:.0} % of its median {median:.2} m/s): GB/T 6323 and ISO 7401 hold the speed constant, and the metrics here mix the responses of several speeds",
+            "the speed {} over the measured piece, between {lo:.2} and {hi:.2} m/s (5th to 95th percentile; {:.0} % of its median {median:.2} m/s): GB/T 6323 and ISO 7401 hold the speed constant, and the metrics here mix the responses of several speeds",
+            if rising { "rises" } else { "falls" },
             100.0 * (hi - lo) / median.abs()
         )
     })
@@ -314,19 +316,22 @@ mod tests {
     fn a_measured_step_at_varying_speed_is_said_and_a_noise_spike_is_not() {
         // 20 → 25 m/s over the piece: 24 % of the median.
         let rising: Vec<f64> = (0..=100).map(|i| 20.0 + 0.05 * f64::from(i)).collect();
-        let w = varying_speed(&rising).expect("a 24 % change is said");
+        let w = varying_speed(&rising, true).expect("a 24 % change is said");
         assert!(
-            w.starts_with("the speed changes from 20.25 to 24.75 m/s over the measured piece (5th to 95th percentile; 20 % of its median 22.50 m/s)"),
+            w.starts_with("the speed rises over the measured piece, between 20.25 and 24.75 m/s (5th to 95th percentile; 20 % of its median 22.50 m/s)"),
             "{w}"
         );
+        assert!(varying_speed(&rising, false)
+            .unwrap()
+            .starts_with("the speed falls over"));
         // Constant 20 m/s with two samples of 40 (a spike): nothing.
         let mut spiky = vec![20.0; 100];
         spiky.extend([40.0, 40.0]);
-        assert_eq!(varying_speed(&spiky), None);
+        assert_eq!(varying_speed(&spiky, true), None);
         // 8.6 % is within the limit.
         let slow: Vec<f64> = (0..=100).map(|i| 20.0 + 0.02 * f64::from(i)).collect();
-        assert_eq!(varying_speed(&slow), None);
-        assert_eq!(varying_speed(&[]), None);
+        assert_eq!(varying_speed(&slow, true), None);
+        assert_eq!(varying_speed(&[], true), None);
     }
 
     #[test]

@@ -262,7 +262,18 @@ pub fn measured_step_metrics(
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
     warnings.extend(super::applicability::applicability(&metrics, speed));
-    warnings.extend(super::applicability::varying_speed(&speeds));
+    // Which way: the last tenth of the piece against its first.
+    let moving: Vec<f64> = piece
+        .speed
+        .iter()
+        .copied()
+        .filter(|u| u.is_finite())
+        .collect();
+    let tenth = (moving.len() / 10).max(1);
+    let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
+    let rising = mean(&moving[moving.len().saturating_sub(tenth)..])
+        >= mean(&moving[..tenth.min(moving.len())]);
+    warnings.extend(super::applicability::varying_speed(&speeds, rising));
     if metrics.ay_steady.is_none() {
         warnings
             .push("the run has no `ay`: lateral-acceleration metrics and Er are left out".into());

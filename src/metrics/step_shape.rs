@@ -1,9 +1,11 @@
 //! Whether a measured record is a step steer the metrics can read
 //! ([`check_step_shape`]): the steer held at its initial value over the
 //! initial window (else the initial values mix the step in: a record
-//! that starts just before the step), and held at its step once it has
+//! that starts just before the step), held at its step once it has
 //! reached 90 % of it (else it is a sweep or a sine, whose "step" is the
-//! difference of two windows' means).
+//! difference of two windows' means), and risen within [`MAX_RISE`] (else
+//! it is a ramp, whose response times are those of a car following its
+//! input, about zero).
 
 use super::{first_crossing, window_mean, zero_phase_low_pass, MetricSettings, StepMetrics};
 use crate::error::{MetricsError, HELD_STEP};
@@ -11,6 +13,10 @@ use crate::error::{MetricsError, HELD_STEP};
 /// The share of the step by which the steer has left its initial value
 /// (the onset of the total-variance window).
 const ONSET: f64 = 0.05;
+
+/// The longest 10–90 % rise of the steer taken as a step, s: five times
+/// GB/T 6323's 0.2 s, room for a hand-driven step, none for a ramp.
+pub(crate) const MAX_RISE: f64 = 1.0;
 
 /// Checks the steer of a record whose metrics `m` were measured with
 /// `s`: its normalised steer (filtered as the metrics were) must stay
@@ -53,6 +59,16 @@ pub(crate) fn check_step_shape(
             time,
             share,
         }),
-        (None, None) => Ok(()),
+        (None, None) => {
+            let t10 = first_crossing(t, &d, 0.1, from);
+            match (t10, first_crossing(t, &d, 0.9, from)) {
+                (Some(a), Some(b)) if b - a > MAX_RISE => Err(MetricsError::SteerRamp {
+                    rise: b - a,
+                    from: a,
+                    limit: MAX_RISE,
+                }),
+                _ => Ok(()),
+            }
+        }
     }
 }

@@ -87,9 +87,32 @@ pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 
 /// Writes a value as pretty JSON, its fields in their declared order.
 pub fn write_json<T: serde::Serialize>(path: &Path, value: &T) -> Result<(), Error> {
-    let mut text = serde_json::to_string_pretty(value).map_err(|e| OutputError::encode(path, e))?;
+    let text = serde_json::to_string_pretty(value).map_err(|e| OutputError::encode(path, e))?;
+    let mut text = unsigned_zeros(&text);
     text.push('\n');
     write_bytes(path, text.as_bytes())
+}
+
+/// `text` (pretty JSON) with every number `-0.0` written `0.0`: a camber
+/// level a hair below 0, rounded to zero, is no negative camber (a value
+/// is a number where it ends at `,`, `]`, `}` or a line's end).
+fn unsigned_zeros(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("-0.0") {
+        let after = &rest[i + 4..];
+        let number = after
+            .chars()
+            .next()
+            .is_none_or(|c| matches!(c, ',' | ']' | '}' | '\n'));
+        let before = rest[..i].chars().next_back();
+        let starts = before.is_none_or(|c| matches!(c, ' ' | '[' | ':'));
+        out.push_str(&rest[..i]);
+        out.push_str(if number && starts { "0.0" } else { "-0.0" });
+        rest = after;
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Writes a value as pretty JSON with the keys of every object in
@@ -189,6 +212,28 @@ pub fn refuse_overwrites<'a>(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_negative_zero_is_written_as_zero_and_nothing_else_changes() {
+        let text = serde_json::to_string_pretty(&serde_json::json!({
+            "camber": -0.0, "levels": [-0.0, -0.05, 0.0], "name": "-0.0,x", "x": -0.001
+        }))
+        .unwrap();
+        let fixed = super::unsigned_zeros(&text);
+        let back: serde_json::Value = serde_json::from_str(&fixed).unwrap();
+        assert!(
+            back["camber"].as_f64().unwrap().is_sign_positive(),
+            "{fixed}"
+        );
+        assert!(back["levels"][0].as_f64().unwrap().is_sign_positive());
+        assert_eq!(back["levels"][1], -0.05);
+        assert_eq!(back["name"], "-0.0,x");
+        assert_eq!(back["x"], -0.001);
+        assert!(
+            !fixed.contains(": -0.0,") && !fixed.contains(" -0.0\n"),
+            "{fixed}"
+        );
+    }
+
     use super::*;
 
     #[test]

@@ -101,6 +101,12 @@ fn a_level_request_no_unit_slip_explains_gets_the_levels_alone() {
             "0.05236",
             "the requested 0.05236 rad (3.00°) (levels: 0.00°, 1.60°, 3.19°;",
         ),
+        // The sign slipped, typed as it is: no degrees read into it.
+        (
+            "--camber",
+            "-0.0279",
+            "the requested -0.0279 rad (-1.60°) (levels: 0.00°, 1.60°, 3.19°;",
+        ),
         (
             "--load",
             "40",

@@ -293,8 +293,8 @@ fn tyre_eval_says_what_the_model_does_not_read_and_where_it_extrapolates() {
     assert!(o.status.success(), "{}", stderr(&o));
     let e = stderr(&o);
     for w in [
-        "warning: the gim model does not read `camber`: its forces and moments are the same at any value (1 point with camber ≠ 0, evaluated as at 0)",
-        "warning: the gim model does not read `pressure`: its forces and moments are the same at any value (the pressure given at 3 points ignored)",
+        "warning: this gim tyre does not respond to `camber`: its forces and moments are the same at any value (1 point with camber ≠ 0, evaluated as at 0); its model does not read it, or its coefficients give it no effect",
+        "warning: this gim tyre does not respond to `pressure`: its forces and moments are the same at any value (the pressure given at 3 points ignored); its model does not read it, or its coefficients give it no effect",
         "warning: 2 of 3 points outside the ranges of the rig data the tyre was fitted to (fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad; its [fitted_ranges]): evaluated by extrapolation",
     ] {
         assert!(e.contains(w), "{w}\n{e}");

@@ -57,7 +57,12 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         "{said}"
     );
     let warnings = read_json(&out.join("metrics.json"))["warnings"].clone();
-    assert_eq!(warnings.as_array().map(Vec::len), Some(2), "{warnings}");
+    // The slide and the spin, and each axle past its peak.
+    assert_eq!(warnings.as_array().map(Vec::len), Some(4), "{warnings}");
+    assert!(
+        said.contains("warning: the front axle's slip angle reaches 48.1° at t = 3.86 s (beyond 15° from t = 1.09 s)"),
+        "{said}"
+    );
     // A car on stiffer tyres at the same step: grip regained, a spin-like peak.
     let (said, _) = step(22.2222, 0.3);
     assert!(

@@ -40,7 +40,7 @@ fn a_step_says_its_straight_running_trim_and_a_ramp_on_shifted_tyres_warns_of_it
     ]);
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("note: the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of -0.019° and a sideslip of 0.051°; the run starts there and the 0.677° step is added to that steer"),
+        said.contains("note: the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of -0.019° and a sideslip of 0.051°; the run starts there, the 0.677° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)"),
         "{said}"
     );
     assert!(!said.contains("warning:"), "{said}");
@@ -119,7 +119,11 @@ fn simulate_counts_the_rows_beyond_a_tyres_fitted_ranges() {
         front.contains("(fz 1000 to 4000 N, alpha -0.1000 to 0.1000 rad; their [fitted_ranges]"),
         "{front}"
     );
-    assert!(front.contains("wheel loads up to 51"), "{front}");
+    assert!(
+        front.contains("evaluated by extrapolation: there, wheel loads 4"),
+        "{front}"
+    );
+    assert!(!front.contains("slip angles"), "{front}");
     assert!(!said.contains("rear tyres outside"), "{said}");
     // Within a wider range: nothing.
     let wide = tyre.replace("4000.0", "6000.0");
@@ -171,8 +175,132 @@ fn metrics_says_when_the_speed_changes_over_the_measured_step() {
         let warned = report["warnings"].as_array().unwrap().iter().any(|w| {
             w.as_str()
                 .unwrap()
-                .starts_with("the speed changes from 20.")
+                .starts_with("the speed rises over the measured piece, between 20.")
         });
         assert_eq!(warned, said, "{end_speed}: {report}");
     }
+}
+
+/// A 40° road-wheel step at 80 km/h ran with a full metric table: the
+/// front axle at 40° of slip ploughed on while the body's sideslip stayed
+/// below 1°; a car lifted on both left wheels printed its metrics too.
+#[test]
+fn an_axle_past_its_peak_and_a_car_on_two_wheels_are_said() {
+    let pac89 = fs::read_to_string(root().join("scenarios/step_gbt6323_pac89.toml"))
+        .unwrap()
+        .replace("lateral_acceleration = 2.0", "steer = 0.7")
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let dir = scratch(&[("scenario.toml", &pac89)]);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the front axle's slip angle reaches 39.9°"),
+        "{said}"
+    );
+    assert!(said.contains("past the peak of any tyre's curve"), "{said}");
+    // The bundled step (0.7°): no axle near 15°.
+    let dir = scratch(&[(
+        "scenario.toml",
+        &pac89.replace("steer = 0.7", "lateral_acceleration = 2.0"),
+    )]);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(!said.contains("warning:"), "{said}");
+    // A tall car at 8 m/s²: both inner wheels lift.
+    let tall = VEHICLE.replace("cg_height = 0.55", "cg_height = 1.5");
+    let step = "[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nlateral_acceleration = 8.0\n";
+    let dir = scenario(&tall, GIM, step);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("wheels are off the ground at t = ")
+            && said.contains("the car is on two wheels"),
+        "{said}"
+    );
+}
+
+/// `metrics` measured a 6.8 s ramp as a step: response times of 0.1 ms,
+/// "settled", and only a warning that the times "include the ramp".
+#[test]
+fn metrics_refuses_a_ramp_as_a_step() {
+    let ramp =
+        "[manoeuvre]\nkind = \"ramp-steer\"\nspeed = 22.2\nrate = 0.004\nstart = 1.0\nend = 10.0\n";
+    let dir = scenario(VEHICLE, GIM, ramp);
+    let (ok, _, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    let history = dir.path().join("out/history.csv");
+    let o = run(&["metrics", history.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("the steer rises from 10 % to 90 % of its change in 6.80 s, from 1.85 s: a ramp steer, not a step"),
+        "{err}"
+    );
+}
+
+/// `--bin-deg 1e300` printed a 300-digit bin and wrote a tyre fitted to one
+/// point per condition; `--camber -0.0279` was taken for an option.
+#[test]
+fn identify_refuses_a_bin_wider_than_the_curves_rise_and_takes_negative_values() {
+    let dir = scratch(&[("rig.csv", &super::trips_identify::rig(1.0))]);
+    let rig = dir.path().join("rig.csv");
+    let out = dir.path().join("t.toml");
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "gim",
+        "--bin-deg",
+        "1e300",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(err.contains("bin_deg"), "{err}");
+    assert!(err.contains("a slip-angle bin wider than 2°"), "{err}");
+    assert!(!out.exists());
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "gim",
+        "--camber",
+        "-0.0279",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert!(!err.contains("unexpected argument"), "{err}");
+}
+
+/// A PAC89 fit of lateral data said its longitudinal block kept "the
+/// defaults' values" and wrote a tyre with no longitudinal force; its
+/// `tyre-eval` then said the PAC89 model "does not read kappa".
+#[test]
+fn a_lateral_pac89_fit_says_its_file_has_no_longitudinal_force() {
+    let dir = scratch(&[("rig.csv", &super::trips_identify::rig(1.0))]);
+    let out = dir.path().join("p.toml");
+    let o = super::trips_identify::identify_with(dir.path(), "pac89", &["--seed", "1"], &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("no longitudinal data: the file's longitudinal force coefficients are not fitted (no kappa/fx columns in the data): the written file's longitudinal force is 0 at any slip ratio"),
+        "{said}"
+    );
+    let points = dir.path().join("points.csv");
+    fs::write(&points, "fz,kappa,alpha,camber,speed\n3000,0.1,0,0,10\n").unwrap();
+    let o = run(&[
+        "tyre-eval",
+        out.to_str().unwrap(),
+        points.to_str().unwrap(),
+        "--out",
+        dir.path().join("e.csv").to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert!(!err.contains("the pac89 model does not read"), "{err}");
+    assert!(
+        err.contains("this pac89 tyre does not respond to `kappa`"),
+        "{err}"
+    );
 }

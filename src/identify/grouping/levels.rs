@@ -68,7 +68,20 @@ impl Levels {
             return None;
         }
         let slips = crate::error::unit_slips(self.variable);
+        let (small, large) = (lo.abs().min(hi.abs()), lo.abs().max(hi.abs()));
         slips.iter().find_map(|&(unit, factor)| {
+            // A value typed in a smaller unit (degrees for rad) reads
+            // larger than the levels, one in a larger unit (kN for N)
+            // smaller: a request the other way is no slip of that unit (a
+            // camber of −0.0279 rad, the sign slipped, is not −0.0279°).
+            let slipped = if factor < 1.0 {
+                want.abs() > large
+            } else {
+                want.abs() < small
+            };
+            if !slipped {
+                return None;
+            }
             let meant = want * factor;
             let k = self.select(meant)?;
             Some(crate::error::LevelSlip {

@@ -89,6 +89,13 @@ impl Options {
     pub fn validate(&self) -> Result<(), ParamError> {
         ParamError::non_negative("bin_deg", self.alpha_bin_deg)?;
         ParamError::non_negative("bin_kappa", self.kappa_bin)?;
+        // 0 keeps every sample; the range check's lower end is open.
+        if self.alpha_bin_deg > 0.0 {
+            ParamError::in_range("bin_deg", self.alpha_bin_deg, 0.0, 2.0, Limit::SlipAngleBin)?;
+        }
+        if self.kappa_bin > 0.0 {
+            ParamError::in_range("bin_kappa", self.kappa_bin, 0.0, 0.05, Limit::SlipRatioBin)?;
+        }
         if let Some(l) = self.load {
             ParamError::positive("load", l)?;
         }

@@ -10,7 +10,12 @@
 //!   as a warning with the trim it would need.
 //! - **a slide**: a sideslip beyond
 //!   [`SLIDING_SIDESLIP`](crate::metrics::applicability::SLIDING_SIDESLIP)
-//!   (10°) anywhere in a ramp, sine, sweep or schedule.
+//!   (10°) anywhere in a ramp, sine, sweep or schedule; and in any
+//!   manoeuvre an axle's slip angle beyond [`SLIDING_SLIP`] (15°), past the
+//!   peak of any road or racing tyre's curve (3–10°): a front axle
+//!   ploughing on with the body barely turned, which the sideslip misses.
+//! - **a car on two wheels**: both wheels of one side off the ground at
+//!   once, a rollover the 2-DOF model does not follow.
 //! - **a steer no steering system makes**: a ramp's rate, a sine's or a
 //!   sweep's peak rate (`2π·f·A`) beyond
 //!   [`STEER_RATE`](crate::metrics::applicability::STEER_RATE).
@@ -27,6 +32,10 @@ use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{SLIDING_SIDESLIP, STEER_RATE};
 use crate::sim::TimeHistory;
 use std::f64::consts::TAU;
+
+/// The axle slip angle beyond which the axle slides, rad (15°): past the
+/// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
+pub(crate) const SLIDING_SLIP: f64 = 15.0 * std::f64::consts::PI / 180.0;
 
 /// The straight-running steer or sideslip below which tyres are taken to
 /// make no force at zero slip, rad (0.006°: a thousandth of a typical
@@ -48,6 +57,8 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
         said.warnings.extend(sliding(h));
     }
+    said.warnings.extend(axle_sliding(h));
+    said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
@@ -63,7 +74,7 @@ fn straight_running(sc: &Scenario, said: &mut Said) {
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         if s.trim.abs() > TRIM || sc.initial.beta.abs() > TRIM {
             said.notes.push(format!(
-                "the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there and the {:.3}° step is added to that steer",
+                "the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)",
                 s.trim.to_degrees(),
                 sc.initial.beta.to_degrees(),
                 s.amplitude.to_degrees()
@@ -110,6 +121,39 @@ fn sliding(h: &TimeHistory) -> Option<String> {
     })
 }
 
+/// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest,
+/// when, and from when.
+fn axle_sliding(h: &TimeHistory) -> Vec<String> {
+    [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
+        .into_iter()
+        .filter_map(|(axle, alpha)| {
+            let (i, a) = alpha
+                .iter()
+                .enumerate()
+                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
+            let from = alpha.iter().position(|a| a.abs() > SLIDING_SLIP)?;
+            Some(format!(
+                "the {axle} axle's slip angle reaches {:.1}° at t = {:.2} s (beyond 15° from t = {:.2} s), past the peak of any tyre's curve: the {axle} axle slides, and the response is no handling response",
+                a.to_degrees(),
+                h.t[i],
+                h.t[from]
+            ))
+        })
+        .collect()
+}
+
+/// Both wheels of one side off the ground at the same row: the first such
+/// row.
+fn on_two_wheels(h: &TimeHistory) -> Option<String> {
+    let off = |w: usize, k: usize| h.fz[w][k] <= 0.0;
+    let k = (0..h.len()).find(|&k| (off(0, k) && off(2, k)) || (off(1, k) && off(3, k)))?;
+    let side = if off(0, k) { "left" } else { "right" };
+    Some(format!(
+        "both {side} wheels are off the ground at t = {:.2} s: the car is on two wheels, rolling over, which a model without a roll-over degree of freedom does not follow; the run past it, and its metrics, describe no car",
+        h.t[k]
+    ))
+}
+
 /// The input's fastest road-wheel steer rate, where beyond [`STEER_RATE`].
 fn steer_rate(m: &Manoeuvre) -> Option<String> {
     let (rate, what) = match m {
@@ -152,22 +196,45 @@ fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<Strin
         camber: 0.0,
         pressure: None,
     };
-    let outside = (0..h.len())
+    let rows: Vec<usize> = (0..h.len())
         .filter(|&i| wheels.iter().any(|fz| r.outside(&point(fz[i], alpha[i]))))
-        .count();
-    if outside == 0 {
+        .collect();
+    if rows.is_empty() {
         return None;
     }
-    let fz_max = wheels
-        .iter()
-        .flat_map(|w| w.iter())
-        .fold(0.0_f64, |a, &b| a.max(b));
-    let alpha_max = alpha.iter().fold(0.0_f64, |a, &b| a.max(b.abs()));
+    // What left the ranges, over the rows outside: each variable's extent
+    // there, named only where it lies beyond its own range.
+    let extent = |x: &mut dyn Iterator<Item = f64>| {
+        x.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        })
+    };
+    let (fz_lo, fz_hi) = extent(&mut rows.iter().flat_map(|&i| wheels.iter().map(move |w| w[i])));
+    let (a_lo, a_hi) = extent(&mut rows.iter().map(|&i| alpha[i]));
+    let beyond =
+        |range: Option<[f64; 2]>, lo: f64, hi: f64| range.is_some_and(|[a, b]| lo < a || hi > b);
+    let mut what = Vec::new();
+    if beyond(r.fz, fz_lo, fz_hi) {
+        what.push(format!("wheel loads {fz_lo:.0} to {fz_hi:.0} N"));
+    }
+    if beyond(r.alpha, a_lo, a_hi) {
+        what.push(format!(
+            "slip angles {a_lo:.4} to {a_hi:.4} rad ({:.2}° to {:.2}°)",
+            a_lo.to_degrees(),
+            a_hi.to_degrees()
+        ));
+    }
+    if beyond(r.kappa, 0.0, 0.0) {
+        what.push("a slip ratio of 0".into());
+    }
+    if beyond(r.camber, 0.0, 0.0) {
+        what.push("a camber of 0".into());
+    }
     Some(format!(
-        "{outside} of {} rows take the {name} tyres outside the ranges of the rig data they were fitted to ({}; their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation: wheel loads up to {fz_max:.0} N, slip angles up to {:.4} rad ({:.2}°)",
+        "{} of {} rows take the {name} tyres outside the ranges of the rig data they were fitted to ({}; their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation: there, {}",
+        rows.len(),
         h.len(),
         r.text(),
-        alpha_max,
-        alpha_max.to_degrees()
+        what.join(", ")
     ))
 }

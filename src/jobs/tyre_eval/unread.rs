@@ -44,7 +44,7 @@ impl Unread {
             ),
         };
         format!(
-            "the {model} model does not read `{}`: its forces and moments are the same at any value ({set})",
+            "this {model} tyre does not respond to `{}`: its forces and moments are the same at any value ({set}); its model does not read it, or its coefficients give it no effect",
             self.column
         )
     }

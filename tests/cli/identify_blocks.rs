@@ -19,8 +19,15 @@ fn a_block_without_data_is_said_not_fitted_on_the_terminal_and_in_the_file() {
             long += &format!("{fz},{kappa},{fx:.3}\n");
         }
     }
+    // What the block then holds: the start values, or, where those give
+    // no force at all (both models' longitudinal block), that.
     let not_fitted = |data: &str, what: &str, columns: &str, model: &str| {
-        format!("no {data} data: the file's {what} coefficients are not fitted (no {columns} columns in the data): the defaults' values (the {model} model's start values")
+        let holds = if data == "longitudinal" {
+            "the written file's longitudinal force is 0 at any slip ratio (the {model} model's longitudinal coefficients start at zero)".replace("{model}", model)
+        } else {
+            format!("the defaults' values (the {model} model's start values")
+        };
+        format!("no {data} data: the file's {what} coefficients are not fitted (no {columns} columns in the data): {holds}")
     };
     for model in ["pac89", "unitire"] {
         for (rig, said, unsaid) in [

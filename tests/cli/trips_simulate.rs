@@ -120,7 +120,7 @@ fn simulate_counts_the_rows_beyond_a_tyres_fitted_ranges() {
         "{front}"
     );
     assert!(
-        front.contains("evaluated by extrapolation: there, wheel loads 4"),
+        front.contains("evaluated by extrapolation: there, wheel loads 40"),
         "{front}"
     );
     assert!(!front.contains("slip angles"), "{front}");

@@ -202,32 +202,36 @@ fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<Strin
     if rows.is_empty() {
         return None;
     }
-    // What left the ranges, over the rows outside: each variable's extent
-    // there, named only where it lies beyond its own range.
+    // What left the ranges: the extent of the values beyond their own
+    // range, over the rows outside.
+    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|[a, b]| v < a || v > b);
     let extent = |x: &mut dyn Iterator<Item = f64>| {
-        x.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
+        x.fold(None, |e: Option<(f64, f64)>, v| {
+            Some(e.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))
         })
     };
-    let (fz_lo, fz_hi) = extent(&mut rows.iter().flat_map(|&i| wheels.iter().map(move |w| w[i])));
-    let (a_lo, a_hi) = extent(&mut rows.iter().map(|&i| alpha[i]));
-    let beyond =
-        |range: Option<[f64; 2]>, lo: f64, hi: f64| range.is_some_and(|[a, b]| lo < a || hi > b);
     let mut what = Vec::new();
-    if beyond(r.fz, fz_lo, fz_hi) {
-        what.push(format!("wheel loads {fz_lo:.0} to {fz_hi:.0} N"));
+    let loads = rows.iter().flat_map(|&i| wheels.iter().map(move |w| w[i]));
+    if let Some((lo, hi)) = extent(&mut loads.filter(|&v| v > 0.0 && out_of(r.fz, v))) {
+        what.push(format!("wheel loads {lo:.0} to {hi:.0} N"));
     }
-    if beyond(r.alpha, a_lo, a_hi) {
+    if let Some((lo, hi)) = extent(
+        &mut rows
+            .iter()
+            .map(|&i| alpha[i])
+            .filter(|&v| out_of(r.alpha, v)),
+    ) {
         what.push(format!(
-            "slip angles {a_lo:.4} to {a_hi:.4} rad ({:.2}° to {:.2}°)",
-            a_lo.to_degrees(),
-            a_hi.to_degrees()
+            "slip angles {lo:.4} to {hi:.4} rad ({:.2}° to {:.2}°)",
+            lo.to_degrees(),
+            hi.to_degrees()
         ));
     }
-    if beyond(r.kappa, 0.0, 0.0) {
+    let beyond = |range: Option<[f64; 2]>, v: f64| out_of(range, v);
+    if beyond(r.kappa, 0.0) {
         what.push("a slip ratio of 0".into());
     }
-    if beyond(r.camber, 0.0, 0.0) {
+    if beyond(r.camber, 0.0) {
         what.push("a camber of 0".into());
     }
     Some(format!(

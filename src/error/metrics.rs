@@ -7,9 +7,11 @@ use crate::format::{fixed, significant};
 use thiserror::Error;
 
 /// An angle in rad with its value in degrees: "0.0017 rad (0.10°)".
-/// A steer below 1e-5 rad (a mean of rounding, far below any sensor's
-/// resolution) is written in exponent form, not with sixteen zeros.
+/// A steer below 1e-9 rad is a mean of rounding (a sweep's mean of
+/// 7.2e-16 rad) and is written 0; one below 1e-5 rad, far below any
+/// sensor's resolution, in exponent form, not with sixteen zeros.
 fn angle(v: f64) -> String {
+    let v = if v.abs() < 1e-9 { 0.0 } else { v };
     let rad = if v != 0.0 && v.abs() < 1e-5 {
         format!("{v:.1e}")
     } else {

@@ -32,7 +32,7 @@ fn a_gim_fit_keeps_its_parameters_in_their_box_and_says_one_on_its_bound() {
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("warning: friction_decay = 0.000000: on its search bound (0 to 1): the fit would take it beyond; the value is the bound, not a fit"),
+        said.contains("warning: friction_decay = 0: on its search bound (0 to 1): the fit would take it beyond; the value is the bound, not a fit"),
         "{said}"
     );
     let report = read_json(&out.with_extension("report.json"));

@@ -158,7 +158,11 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
 /// The warning on one fitted parameter, with its value.
 pub(crate) fn parameter_warning(p: &ParameterReport) -> Option<Note> {
     let w = p.warning.as_deref()?;
-    Some(Note::warned(format!("{} = {:.6}: {w}", p.name, p.value)))
+    Some(Note::warned(format!(
+        "{} = {}: {w}",
+        p.name,
+        crate::format::rounded(p.value, 4)
+    )))
 }
 
 impl SwarmReport {

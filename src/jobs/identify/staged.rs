@@ -140,7 +140,11 @@ fn stage_lines(
         out.extend(level_held_lines(&s.parameters));
         out.extend(s.parameters.iter().filter_map(|p| {
             let w = p.warning.as_deref()?;
-            Some(format!("    warning: {} = {:.6}: {w}", p.name, p.value))
+            Some(format!(
+                "    warning: {} = {}: {w}",
+                p.name,
+                crate::format::rounded(p.value, 4)
+            ))
         }));
     }
     out

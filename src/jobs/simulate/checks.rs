@@ -38,8 +38,8 @@ use std::f64::consts::TAU;
 pub(crate) const SLIDING_SLIP: f64 = 15.0 * std::f64::consts::PI / 180.0;
 
 /// The straight-running steer or sideslip below which tyres are taken to
-/// make no force at zero slip, rad (0.006°: a thousandth of a typical
-/// step).
+/// make no force at zero slip, rad (0.006°, below the smallest steer step
+/// the metrics take, 0.01°).
 const TRIM: f64 = 1e-4;
 
 /// What `simulate` says: notes (facts of the run) and warnings (where the

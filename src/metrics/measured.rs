@@ -259,20 +259,15 @@ pub fn measured_step_metrics(
         .copied()
         .filter(|u| u.is_finite())
         .collect();
+    // Which way the speed went, while the speeds are in time order: the
+    // last tenth of the piece against its first.
+    let tenth = (speeds.len() / 10).max(1);
+    let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
+    let rising = mean(&speeds[speeds.len().saturating_sub(tenth)..])
+        >= mean(&speeds[..tenth.min(speeds.len())]);
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
     warnings.extend(super::applicability::applicability(&metrics, speed));
-    // Which way: the last tenth of the piece against its first.
-    let moving: Vec<f64> = piece
-        .speed
-        .iter()
-        .copied()
-        .filter(|u| u.is_finite())
-        .collect();
-    let tenth = (moving.len() / 10).max(1);
-    let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
-    let rising = mean(&moving[moving.len().saturating_sub(tenth)..])
-        >= mean(&moving[..tenth.min(moving.len())]);
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
     if metrics.ay_steady.is_none() {
         warnings

@@ -103,22 +103,26 @@ fn straight_running(sc: &Scenario, said: &mut Said) {
     }
 }
 
-/// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`].
-fn sliding(h: &TimeHistory) -> Option<String> {
-    let (i, beta) = h
-        .beta
+/// Where `x` goes beyond `limit` in magnitude: its largest value, the
+/// row of it and the first row beyond.
+fn largest_beyond(x: &[f64], limit: f64) -> Option<(f64, usize, usize)> {
+    let from = x.iter().position(|v| v.abs() > limit)?;
+    let (i, v) = x
         .iter()
         .enumerate()
         .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
-    (beta.abs() > SLIDING_SIDESLIP).then(|| {
-        let from = h.beta.iter().position(|b| b.abs() > SLIDING_SIDESLIP);
-        format!(
-            "the sideslip reaches {:.1}° at t = {:.2} s (beyond 10° from t = {:.2} s): the car slides past its grip, where a 2-DOF model with the tyres' steady curves no longer says how a car behaves",
-            beta.to_degrees(),
-            h.t[i],
-            from.map_or(h.t[i], |j| h.t[j])
-        )
-    })
+    Some((*v, i, from))
+}
+
+/// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`].
+fn sliding(h: &TimeHistory) -> Option<String> {
+    let (beta, i, from) = largest_beyond(&h.beta, SLIDING_SIDESLIP)?;
+    Some(format!(
+        "the sideslip reaches {:.1}° at t = {:.2} s (beyond 10° from t = {:.2} s): the car slides past its grip, where a 2-DOF model with the tyres' steady curves no longer says how a car behaves",
+        beta.to_degrees(),
+        h.t[i],
+        h.t[from]
+    ))
 }
 
 /// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest,
@@ -127,11 +131,7 @@ fn axle_sliding(h: &TimeHistory) -> Vec<String> {
     [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
         .into_iter()
         .filter_map(|(axle, alpha)| {
-            let (i, a) = alpha
-                .iter()
-                .enumerate()
-                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
-            let from = alpha.iter().position(|a| a.abs() > SLIDING_SLIP)?;
+            let (a, i, from) = largest_beyond(alpha, SLIDING_SLIP)?;
             Some(format!(
                 "the {axle} axle's slip angle reaches {:.1}° at t = {:.2} s (beyond 15° from t = {:.2} s), past the peak of any tyre's curve: the {axle} axle slides, and the response is no handling response",
                 a.to_degrees(),
@@ -227,11 +227,10 @@ fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<Strin
             hi.to_degrees()
         ));
     }
-    let beyond = |range: Option<[f64; 2]>, v: f64| out_of(range, v);
-    if beyond(r.kappa, 0.0) {
+    if out_of(r.kappa, 0.0) {
         what.push("a slip ratio of 0".into());
     }
-    if beyond(r.camber, 0.0) {
+    if out_of(r.camber, 0.0) {
         what.push("a camber of 0".into());
     }
     Some(format!(

@@ -584,7 +584,8 @@ fn _bench_simulate(py: Python<'_>, scenario: PathBuf, n: usize) -> PyResult<f64>
 
 /// Step-steer metrics of a measured run; report JSON.
 #[pyfunction]
-#[pyo3(signature = (run, pre_window=0.5, steady_window=1.0, min_speed=5.0, filter_hz=handling::metrics::MEASURED_FILTER_HZ, variance_window=4.0))]
+#[pyo3(signature = (run, pre_window=0.5, steady_window=1.0, min_speed=5.0, filter_hz=handling::metrics::MEASURED_FILTER_HZ, variance_window=4.0, min_overshoot=handling::metrics::DEFAULT_MIN_OVERSHOOT))]
+#[allow(clippy::too_many_arguments)]
 fn metrics(
     py: Python<'_>,
     run: PathBuf,
@@ -593,12 +594,14 @@ fn metrics(
     min_speed: f64,
     filter_hz: f64,
     variance_window: f64,
+    min_overshoot: f64,
 ) -> PyResult<String> {
     let settings = MetricSettings {
         pre_window,
         steady_window,
         variance_window,
         filter_hz: (filter_hz > 0.0).then_some(filter_hz),
+        min_overshoot,
         ..MetricSettings::default()
     };
     let r = detached(py, || jobs::metrics::run(&run, &settings, min_speed))?;

@@ -35,6 +35,23 @@ def test_simulate_dataframe_when_pandas_present(root):
     assert isinstance(r.history, pd.DataFrame)
 
 
+def test_min_overshoot_decides_whether_a_flat_maximum_is_a_peak(root, tmp_path):
+    # The bundled UniTire step overshoots by about 0.1 %: no peak by default
+    # (1 %), a peak with its TB when any maximum counts, simulated or measured.
+    sc = handling.Scenario.load(root / "scenarios" / "step_gbt6323_unitire.toml")
+    default = handling.metrics(sc)
+    assert default.yaw_rate_peak_time is None and default.tb is None
+    assert default.yaw_rate_peak_threshold == 1.0
+    anything = handling.metrics(sc, min_overshoot=0)
+    assert 0.05 < anything.yaw_rate_overshoot < 0.5 and anything.tb > 0.1
+    h = handling.simulate(sc, out=tmp_path / "sim", pandas=False)
+    run = tmp_path / "sim" / "history.csv"
+    assert handling.metrics(run).metrics.yaw_rate_peak_time is None
+    rows = handling.metrics(run, filter_hz=0, min_overshoot=0).metrics
+    assert rows.yaw_rate_peak_time == pytest.approx(anything.yaw_rate_peak_time, abs=0.01)
+    assert h.metrics == default
+
+
 def test_metrics_of_a_measured_run(root, tmp_path):
     h = handling.simulate(root / "scenarios" / "sedan_step.toml", pandas=False).history
     cols = ["t", "steer", "speed", "yaw_rate", "ay"]

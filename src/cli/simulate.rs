@@ -50,6 +50,10 @@ pub struct MetricsArgs {
     /// Total-variance window from the steer onset, s.
     #[arg(long, default_value_t = 4.0, allow_negative_numbers = true, value_parser = window)]
     variance_window: f64,
+    /// The least yaw-rate overshoot that counts as a peak, % of the step
+    /// (0: any maximum above the noise).
+    #[arg(long, default_value_t = handling::metrics::DEFAULT_MIN_OVERSHOOT, allow_negative_numbers = true, value_parser = percent)]
+    min_overshoot: f64,
 }
 
 /// A metrics window, s: refused at its option, with the value given, when
@@ -73,6 +77,16 @@ fn min_speed(text: &str) -> Result<f64, String> {
     }
 }
 
+/// The least overshoot of a peak, %: refused at its option when it is not a
+/// finite share of at least 0 (the library refuses it by its key).
+fn percent(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        Ok(_) => Err("the least overshoot is a finite share of at least 0 %".into()),
+        Err(_) => Err("not a number (the least overshoot is in % of the step)".into()),
+    }
+}
+
 /// The low-pass cut-off, Hz: refused at its option when it is neither 0
 /// (unfiltered) nor a positive finite frequency (the library refuses it by
 /// its key).
@@ -92,6 +106,7 @@ pub fn metrics(a: MetricsArgs) -> Result<()> {
         variance_window: a.variance_window,
         // 0 is "unfiltered"; anything else the library checks.
         filter_hz: (a.filter_hz != 0.0).then_some(a.filter_hz),
+        min_overshoot: a.min_overshoot,
         ..MetricSettings::default()
     };
     let r = metrics::run(&a.run, &settings, a.min_speed)?;

@@ -364,9 +364,17 @@ fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
             let before: Vec<f64> = pts.iter().map(|p| p.before).collect();
             let after: Vec<f64> = pts.iter().map(|p| p.after).collect();
             let name = symbol(ch);
+            // The time windows are four pools of unequal, open-ended
+            // spans: a line between them would draw a time history that
+            // is not there, so they are points; the |ay| and speed bands
+            // are a profile over a continuous level, joined.
+            let (base_style, after_style) = match axis {
+                PartAxis::Time => (Style::Points(4), Style::Points(4)),
+                PartAxis::Ay | PartAxis::Speed => (Style::Dotted, Style::Line),
+            };
             series.push(
                 Series::line(&format!("{name}, base model"), &x, &before, colour)
-                    .styled(Style::Dotted)
+                    .styled(base_style)
                     .marked(Marker {
                         shape: Shape::Ring,
                         size: 4,
@@ -380,6 +388,7 @@ fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
                         &after,
                         colour,
                     )
+                    .styled(after_style)
                     .marked(Marker {
                         shape: Shape::Disc,
                         size: 4,
@@ -394,7 +403,7 @@ fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
             .push(Series::line("3 × noise floor", &[x0, x1], &[3.0, 3.0], 7).styled(Style::Dashed));
         let (x_label, title) = match axis {
             PartAxis::Time => (
-                "time after the input starts (window centre), s",
+                "time after the input starts (window centre; 'later' at 3), s",
                 "by time window",
             ),
             PartAxis::Ay => ("|a_y| band centre, m/s²", "by |a_y| level"),
@@ -520,6 +529,13 @@ mod tests {
             ]
         );
         assert_eq!(time.axes().x, (0.5, 2.5));
+        // The windows are points, not a line; the bands a joined profile.
+        for (panel, joined) in fig.panels.iter().zip([false, true, true]) {
+            for s in &panel.series[..6] {
+                let points = matches!(s.style, Style::Points(_));
+                assert_eq!(points, !joined, "{}: {:?}", panel.title, s.style);
+            }
+        }
         assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
         assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
         assert_eq!(quantity(Channel::Beta), "sideslip β, rad");

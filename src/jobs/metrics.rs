@@ -157,7 +157,10 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         ));
     }
     if m.yaw_rate_peak_time.is_none() {
-        out.push("  no overshoot: no yaw-rate maximum stands above the steady state by more than the noise".into());
+        out.push(format!(
+            "  no overshoot: no yaw-rate maximum stands more than {} % above the steady state (the larger of min_overshoot and what the noise and the steady scatter allow)",
+            crate::format::rounded(m.yaw_rate_peak_threshold, 3)
+        ));
     }
     if !m.settled {
         out.push("  warning: the response has not settled in the steady window (it spreads by more than 2 % of the step beyond its noise)".into());

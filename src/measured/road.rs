@@ -9,8 +9,13 @@
 //! by θ (positive: left edge higher) `a_y = u·r + v̇ + g·sin θ`, and on a
 //! grade γ (positive: uphill, nose up) `a_x = u̇ + g·sin γ`. Hence the
 //! estimates
-//! - bank: `sin θ ≈ (a_y − u·r)/g`, leaving out `v̇ = u·β̇` (zero on
-//!   average over a corner, not at its entry and exit);
+//! - bank: `sin θ = (a_y − u·r − v̇)/g`, `v̇ = d(u·β)/dt` by central
+//!   differences when the run has a `beta` column (measured at the
+//!   accelerometer, as an inertial unit gives both, the lever arm's `x·ṙ`
+//!   is in both and cancels); without one `v̇` is left out, zero on average
+//!   over a corner but not at its entry and exit, where a step steer at
+//!   80 km/h reads as degrees of bank for about a second, and the line
+//!   says so;
 //! - grade: `sin γ = (a_x − u̇)/g`, `u̇` by central differences.
 //!
 //! Both are smoothed by a centred moving average over
@@ -44,8 +49,12 @@ pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 pub enum AngleSource {
     /// The run's `bank` column.
     Measured,
-    /// The kinematic mismatch of the lateral channels (`a_y − u·r`).
+    /// The kinematic mismatch of the lateral channels without the
+    /// sideslip's rate (`a_y − u·r`: no `beta` column).
     LateralKinematics,
+    /// The kinematic mismatch of the lateral channels, `a_y − u·r −
+    /// d(u·β)/dt`.
+    LateralKinematicsWithSideslip,
     /// The mismatch of `a_x` and the speed's derivative.
     LongitudinalKinematics,
 }
@@ -56,6 +65,7 @@ impl AngleSource {
         match self {
             AngleSource::Measured => "measured",
             AngleSource::LateralKinematics => "estimated from ay − u·r",
+            AngleSource::LateralKinematicsWithSideslip => "estimated from ay − u·r − d(u·β)/dt",
             AngleSource::LongitudinalKinematics => "estimated from ax − du/dt",
         }
     }
@@ -115,7 +125,11 @@ impl RoadGeometry {
         let bank = match (&run.bank, &run.ay) {
             (Some(b), _) => profile(AngleSource::Measured, b.clone(), &[]),
             (None, Some(ay)) => profile(
-                AngleSource::LateralKinematics,
+                if run.beta.is_some() {
+                    AngleSource::LateralKinematicsWithSideslip
+                } else {
+                    AngleSource::LateralKinematics
+                },
                 bank_estimate(run, ay, offsets),
                 &run.masked,
             ),
@@ -136,38 +150,48 @@ impl RoadGeometry {
         }
     }
 
-    /// One line for a summary, None when neither angle is known.
-    pub fn line(&self) -> Option<String> {
-        // An estimate's extremes are its worst samples (a sensor lag in a
-        // hard stop reads as a steep grade): the line shows its bulk.
-        let part = |what: &str, p: &AngleProfile| {
-            match p.source {
+    /// One angle in words. An estimate's extremes are its worst samples (a
+    /// sensor lag in a hard stop reads as a steep grade): its bulk is said.
+    fn part(&self, what: &str, p: &AngleProfile) -> String {
+        if p.source == AngleSource::Measured {
             // No "-0.0°": a median of −0.01° is 0.0°.
-            AngleSource::Measured => format!(
+            return format!(
                 "{what} measured {}° to {}° (mean {}°)",
                 deg(p.min),
                 deg(p.max),
                 deg(p.mean)
-            ),
-            _ => format!(
-                "{what} {}{} {}° to {}° (5–95 %; median {}°)",
-                p.source.words(),
-                match (&self.offsets_removed, p.source) {
-                    (Some(o), AngleSource::LateralKinematics) => format!(
-                        " less the offsets the calibration measured (ay {:.3} m/s², yaw rate {:.4} rad/s)",
-                        o.ay, o.yaw_rate
-                    ),
-                    _ => String::new(),
-                },
-                deg(p.p05),
-                deg(p.p95),
-                deg(p.median)
-            ),
+            );
         }
+        let lateral = matches!(
+            p.source,
+            AngleSource::LateralKinematics | AngleSource::LateralKinematicsWithSideslip
+        );
+        let offsets = match self.offsets_removed {
+            Some(o) if lateral => format!(
+                " less the offsets the calibration measured (ay {:.3} m/s², yaw rate {:.4} rad/s)",
+                o.ay, o.yaw_rate
+            ),
+            _ => String::new(),
         };
+        let caveat = if p.source == AngleSource::LateralKinematics {
+            " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
+        } else {
+            ""
+        };
+        format!(
+            "{what} {}{offsets} {}° to {}° (5–95 %; median {}°){caveat}",
+            p.source.words(),
+            deg(p.p05),
+            deg(p.p95),
+            deg(p.median)
+        )
+    }
+
+    /// One line for a summary, None when neither angle is known.
+    pub fn line(&self) -> Option<String> {
         let mut parts: Vec<String> = [("bank", &self.bank), ("grade", &self.grade)]
             .into_iter()
-            .filter_map(|(w, p)| p.as_ref().map(|p| part(w, p)))
+            .filter_map(|(w, p)| p.as_ref().map(|p| self.part(w, p)))
             .collect();
         if self.bank.is_none() && !parts.is_empty() {
             parts.insert(0, "bank unknown (no bank or ay column)".into());
@@ -176,28 +200,48 @@ impl RoadGeometry {
     }
 }
 
-/// `asin((a_y − b_ay − u·(r − b_r))/g)` smoothed, rad per sample: the
-/// sensors' offsets `b` removed.
+/// `asin((a_y − b_ay − u·(r − b_r) − d(u·β)/dt)/g)` smoothed, rad per
+/// sample: the sensors' offsets `b` removed, the sideslip's rate where the
+/// run has `beta` (a sample beside a masked one has none: NaN, left out).
 pub(crate) fn bank_estimate(run: &MeasuredRun, ay: &[f64], offsets: SensorOffsets) -> Vec<f64> {
+    let lateral: Option<Vec<f64>> = run
+        .beta
+        .as_ref()
+        .map(|b| b.iter().zip(&run.speed).map(|(b, u)| u * b.tan()).collect());
+    let masked = |k: usize| run.masked.binary_search(&k).is_ok();
     let raw: Vec<f64> = (0..run.t.len())
-        .map(|k| (ay[k] - offsets.ay - run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate)) / G)
+        .map(|k| {
+            let v_dot = match &lateral {
+                Some(v) if central(k, v.len()).iter().any(|&i| masked(i)) => f64::NAN,
+                Some(v) => rate(&run.t, v, k),
+                None => 0.0,
+            };
+            (ay[k] - offsets.ay - run.speed[k] * (run.yaw_rate[k] - offsets.yaw_rate) - v_dot) / G
+        })
         .collect();
     smoothed_angle(&run.t, &raw, &run.masked)
 }
 
+/// The neighbours of sample `k` of `n` a central difference takes (one
+/// side at the ends).
+fn central(k: usize, n: usize) -> [usize; 2] {
+    [k.saturating_sub(1), (k + 1).min(n - 1)]
+}
+
+/// `dx/dt` at sample `k` by central differences (0 for a single sample).
+fn rate(t: &[f64], x: &[f64], k: usize) -> f64 {
+    let [i, j] = central(k, x.len());
+    if j > i {
+        (x[j] - x[i]) / (t[j] - t[i])
+    } else {
+        0.0
+    }
+}
+
 /// `asin((a_x − u̇)/g)` smoothed, rad per sample.
 pub(crate) fn grade_estimate(run: &MeasuredRun, ax: &[f64]) -> Vec<f64> {
-    let n = run.t.len();
-    let raw: Vec<f64> = (0..n)
-        .map(|k| {
-            let (i, j) = (k.saturating_sub(1), (k + 1).min(n - 1));
-            let du = if j > i {
-                (run.speed[j] - run.speed[i]) / (run.t[j] - run.t[i])
-            } else {
-                0.0
-            };
-            (ax[k] - du) / G
-        })
+    let raw: Vec<f64> = (0..run.t.len())
+        .map(|k| (ax[k] - rate(&run.t, &run.speed, k)) / G)
         .collect();
     // `ax` is not among the masked response channels: only the spans the
     // cleaning masked in the others are left out with them.
@@ -412,5 +456,95 @@ mod tests {
         (r.ay, r.ax) = (None, None);
         let g = RoadGeometry::of("turn", &r, SensorOffsets::default());
         assert!(g.bank.is_none() && g.grade.is_none() && g.line().is_none());
+    }
+
+    /// A 2° step steer at 80 km/h on a flat road: the sideslip settles to
+    /// −0.02 rad with a 0.3 s lag and the accelerometer reads `u·r + v̇`.
+    /// With `beta` the estimate finds the flat road; without, `v̇` reads as
+    /// bank at the step and the line says why.
+    #[test]
+    fn a_step_on_a_flat_road_is_no_bank_when_the_run_has_its_sideslip() {
+        let n = 601;
+        let u = 22.2;
+        let t: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+        let lag = |t: f64| {
+            if t < 2.0 {
+                0.0
+            } else {
+                1.0 - (-(t - 2.0) / 0.3).exp()
+            }
+        };
+        let beta: Vec<f64> = t.iter().map(|&t| -0.02 * lag(t)).collect();
+        let r: Vec<f64> = t.iter().map(|&t| 0.2 * lag(t)).collect();
+        let ay: Vec<f64> = (0..n)
+            .map(|k| {
+                let v_dot = -0.02 * u * (-(t[k] - 2.0) / 0.3).exp() / 0.3;
+                u * r[k]
+                    + if t[k] < 2.0 {
+                        0.0
+                    } else {
+                        v_dot / beta_cos(beta[k])
+                    }
+            })
+            .collect();
+        let mut run = MeasuredRun {
+            path: PathBuf::from("step.csv"),
+            t,
+            yaw_rate: r,
+            steer: vec![0.0; n],
+            speed: vec![u; n],
+            ay: Some(ay),
+            beta: Some(beta),
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let with = RoadGeometry::of("step", &run, SensorOffsets::default());
+        let b = with.bank.unwrap();
+        assert_eq!(b.source, AngleSource::LateralKinematicsWithSideslip);
+        // Central differences of a 0.3 s lag at 100 Hz: within 0.05°.
+        for x in [b.min, b.max] {
+            assert!(x.to_degrees().abs() < 0.05, "{b:?}");
+        }
+        assert!(with
+            .line()
+            .unwrap()
+            .contains("bank estimated from ay − u·r − d(u·β)/dt"));
+        run.beta = None;
+        let without = RoadGeometry::of("step", &run, SensorOffsets::default());
+        let b = without.bank.unwrap();
+        assert_eq!(b.source, AngleSource::LateralKinematics);
+        // The 1 s average of v̇ over the step: −0.02·22.2/1 s = −0.44 m/s²,
+        // −2.6° at its largest.
+        assert!(b.min.to_degrees() < -2.0, "{b:?}");
+        assert!(without
+            .line()
+            .unwrap()
+            .contains("no beta column: the sideslip's rate v̇ is left out"));
+        // A masked sample's neighbours take no difference across it.
+        run.beta = with_beta(&run);
+        run.masked = vec![300];
+        let est = bank_estimate(&run, run.ay.as_ref().unwrap(), SensorOffsets::default());
+        assert!(est
+            .iter()
+            .all(|x| x.is_finite() && x.to_degrees().abs() < 0.05));
+    }
+
+    /// `v = u·tan β`: the lateral velocity's rate is `u·β̇/cos²β` at a
+    /// steady speed; the factor the readings carry.
+    fn beta_cos(beta: f64) -> f64 {
+        beta.cos().powi(2)
+    }
+
+    fn with_beta(run: &MeasuredRun) -> Option<Vec<f64>> {
+        let lag = |t: f64| {
+            if t < 2.0 {
+                0.0
+            } else {
+                1.0 - (-(t - 2.0) / 0.3).exp()
+            }
+        };
+        Some(run.t.iter().map(|&t| -0.02 * lag(t)).collect())
     }
 }

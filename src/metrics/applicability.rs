@@ -229,6 +229,7 @@ mod tests {
             er: Some(0.3),
             settled: true,
             yaw_rate_noise: 0.0,
+            yaw_rate_peak_threshold: 1.0,
             filter_hz: None,
         }
     }

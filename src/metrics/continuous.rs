@@ -227,7 +227,8 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     // The peak: the first local maximum of the normalised yaw rate above the
     // threshold is the first zero of its derivative after it first exceeds
     // the threshold; a maximum at the record's end is not one.
-    let level = 1.0 + (2.0 * r_spread).max(1e-9);
+    let threshold = (2.0 * r_spread).max(s.min_overshoot / 100.0).max(1e-9);
+    let level = 1.0 + threshold;
     let peak = first_reach(rec, tr, |x| rn(x) - level).and_then(|above| {
         let tp = first_reach(rec, above, |x| -x.yaw_acceleration / r_step)?;
         (tp < t_last).then(|| (tp, rn(&rec.sample(tp))))
@@ -258,6 +259,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         er: Some(s.e1 * e_r + s.e2 * e_ay),
         settled: r_spread < super::SETTLED_SPREAD && a_spread < super::SETTLED_SPREAD,
         yaw_rate_noise: 0.0,
+        yaw_rate_peak_threshold: threshold * 100.0,
         filter_hz: None,
     })
 }

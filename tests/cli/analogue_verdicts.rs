@@ -103,6 +103,22 @@ fn the_sedans_logger_offsets_and_sideslip_point_are_named_on_three_seeds() {
             let confirmed = format!("confirmed: the {channel} offset fitted");
             assert!(stdout.contains(&confirmed), "seed {seed}: {stdout}");
         }
+        // The progressive steering ratio no candidate holds stays in the
+        // yaw rate (1 % of its gap removed on seed 1): the verdict says it
+        // leaves that channel, in its sentence and as a typed warning.
+        assert!(
+            stdout.contains("explains the gap but not its yaw_rate part"),
+            "seed {seed}: {stdout}"
+        );
+        let left: Vec<&serde_json::Value> = d["verdict"]["warning_details"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["kind"] == "channel_left")
+            .collect();
+        assert_eq!(left.len(), 1, "seed {seed}: {}", d["verdict"]);
+        assert_eq!(left[0]["channel"], "yaw_rate");
+        assert!(left[0]["removed_percent"].as_f64().unwrap() < 30.0);
     }
 }
 

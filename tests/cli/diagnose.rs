@@ -90,6 +90,16 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
         ],
     );
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
+    // Flat roads: with the runs' sideslip the bank's estimate takes the
+    // sideslip's rate out (left in, the 100 km/h, 6 m/s² step read as
+    // −5.2° of bank at its 5th percentile).
+    for r in d["road"].as_array().unwrap() {
+        let b = &r["bank"];
+        assert_eq!(b["source"], "lateral_kinematics_with_sideslip", "{r}");
+        for q in ["p05", "p95"] {
+            assert!(b[q].as_f64().unwrap().to_degrees().abs() < 2.0, "{r}");
+        }
+    }
     assert_eq!(d["seed"], 3);
     assert_eq!(d["campaign"], "delay_0.05");
     // The verdict's row (a steer-path delay, a look-alike with an idle

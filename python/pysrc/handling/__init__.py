@@ -412,7 +412,7 @@ class Scenario:
       | "rk4", "step": s, "rtol": ..., "atol": rad, "max_step": s}``
     - ``metrics``: the step-steer metric settings (``pre_window``,
       ``steady_window``, ``variance_window`` s, ``e1``, ``e2``,
-      ``filter_hz`` Hz)
+      ``filter_hz`` Hz, ``min_overshoot`` %)
     - ``name`` (default ``scenario``), ``description``
 
     Compares by value and pickles (its keywords, tyres included).
@@ -778,6 +778,7 @@ def metrics(
     min_speed: Optional[float] = None,
     filter_hz: Optional[float] = None,
     variance_window: Optional[float] = None,
+    min_overshoot: Optional[float] = None,
     *,
     vehicle: Union[Vehicle, Mapping[str, float], None] = None,
     tyres: Any = None,
@@ -793,13 +794,15 @@ def metrics(
     Of a measured run (CSV, FORMATS.md), as ``handling metrics --json``:
     windows in s (defaults 0.5, 1.0 and 4.0), ``min_speed`` in m/s
     (default 5), ``filter_hz`` the zero-phase low-pass cut-off in Hz
-    (default 10; 0: unfiltered); a :class:`MeasuredMetrics` (its
+    (default 10; 0: unfiltered), ``min_overshoot`` the least yaw-rate
+    overshoot that is a peak in % (default 1; 0: any maximum above the
+    noise); a :class:`MeasuredMetrics` (its
     ``metrics`` a :class:`StepMetrics`, with the run's cleaning report).
 
     Of a simulated step steer, given a :class:`Scenario` or its keywords
     (``vehicle``, ``tyres``, ``manoeuvre``, ...: see :class:`Scenario`):
-    the :class:`StepMetrics` of :func:`simulate`; the windows and
-    ``filter_hz`` given here go into the scenario's metric settings
+    the :class:`StepMetrics` of :func:`simulate`; the windows,
+    ``filter_hz`` and ``min_overshoot`` given here go into the scenario's metric settings
     (``filter_hz`` 0: unfiltered, the default for simulations).
     """
     kw = dict(
@@ -817,7 +820,12 @@ def metrics(
             raise TypeError("metrics: `min_speed` applies to a measured run, not to a scenario")
         sc = _scenario(run, kw, "metrics")
         assert isinstance(sc, Scenario)
-        windows = dict(pre_window=pre_window, steady_window=steady_window, variance_window=variance_window)
+        windows = dict(
+            pre_window=pre_window,
+            steady_window=steady_window,
+            variance_window=variance_window,
+            min_overshoot=min_overshoot,
+        )
         settings = dict(sc._kw.get("metrics", {}))
         settings.update({k: v for k, v in windows.items() if v is not None})
         if filter_hz is not None:
@@ -844,6 +852,7 @@ def metrics(
             5.0 if min_speed is None else min_speed,
             10.0 if filter_hz is None else filter_hz,
             4.0 if variance_window is None else variance_window,
+            1.0 if min_overshoot is None else min_overshoot,
         )
     ))
 

@@ -81,6 +81,8 @@ class StepMetrics:
     """Whether yaw rate and ay are steady in the steady window."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""
+    yaw_rate_peak_threshold: float
+    """The overshoot a maximum needed to be a peak, % of the step."""
     filter_hz: Optional[float]
     """The zero-phase low-pass applied, Hz (None: unfiltered)."""
 
@@ -346,7 +348,9 @@ class Verdict:
     """The effects explain only part of the gap, below 50 % (explained)."""
     warning_details: List[Dict[str, Any]] = field(default_factory=list)
     """The warnings typed (``kind``: ``channel_worsened`` with ``channel``,
-    ``before``, ``after``, ``noise_floor``, ``added_percent``; or
+    ``before``, ``after``, ``noise_floor``, ``added_percent``;
+    ``channel_left`` with ``channel``, ``before``, ``after``,
+    ``noise_floor``, ``removed_percent``, ``acceptance_percent``; or
     ``on_search_bound`` with ``parameters``)."""
     threshold: Optional[float] = None
     """The multiple of the noise level a gap must exceed (no significant gap)."""

@@ -139,6 +139,17 @@ impl Explained {
     pub fn partial(&self) -> bool {
         self.reduction_percent < EXPLAINS_MOST
     }
+
+    /// The channels whose gap the effects leave ([`ChannelLeft`]).
+    pub fn channels_left(&self) -> Vec<Channel> {
+        self.warnings
+            .iter()
+            .filter_map(|w| match w {
+                VerdictWarning::ChannelLeft(c) => Some(c.channel),
+                _ => None,
+            })
+            .collect()
+    }
 }
 
 /// A held-out error within noise.
@@ -248,6 +259,10 @@ pub enum Refusal {
 pub enum VerdictWarning {
     /// A channel the verdict's effects leave worse on held-out runs.
     ChannelWorsened(ChannelWorsened),
+    /// A channel whose held-out gap above noise the verdict's effects
+    /// leave nearly as it was: the combined error fell through the other
+    /// channels, and this one's gap has another cause.
+    ChannelLeft(ChannelLeft),
     /// Parameters of the verdict's effects that lie on the end of their
     /// search range: the data would take them further, so their values
     /// are bounds, not measurements of the effects' size.
@@ -270,6 +285,27 @@ pub struct ChannelWorsened {
     pub noise_floor: f64,
     /// Share of the gap above noise added, %.
     pub added_percent: f64,
+}
+
+/// A channel's held-out gap, above noise before and after, of which the
+/// verdict's effects remove less than the acceptance share
+/// ([`crate::diagnose::verdict::rules::ACCEPT`]) the verdict needs of the
+/// whole.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChannelLeft {
+    /// The channel.
+    pub channel: Channel,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
+    /// The channel's noise floor.
+    pub noise_floor: f64,
+    /// Share of the gap above noise removed, % (negative: grown, by less
+    /// than a worsening).
+    pub removed_percent: f64,
+    /// The share the acceptance asks of the whole gap, %.
+    pub acceptance_percent: f64,
 }
 
 /// A warning on a ranked candidate.

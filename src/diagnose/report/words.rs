@@ -35,10 +35,16 @@ impl Verdict {
 pub fn statement(v: &Verdict) -> String {
     match v {
         Verdict::Explained(e) => {
+            let left: Vec<&str> = e.channels_left().iter().map(|c| c.name()).collect();
             let head = format!(
-                "{} explains {}the gap: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
+                "{} explains {}the gap{}: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
                 joined(&e.effects, "+"),
                 if e.partial() { "part of " } else { "" },
+                if left.is_empty() {
+                    String::new()
+                } else {
+                    format!(" but not its {} part", left.join(" and "))
+                },
                 e.heldout_error_before,
                 e.heldout_error_after,
                 e.noise_level,
@@ -206,6 +212,16 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             c.channel.unit(),
             c.noise_floor,
             c.added_percent
+        ),
+        VerdictWarning::ChannelLeft(c) => format!(
+            "it leaves the {} gap: RMS {:.4} → {:.4} {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
+            c.channel.name(),
+            c.before,
+            c.after,
+            c.channel.unit(),
+            c.noise_floor,
+            c.removed_percent,
+            c.acceptance_percent
         ),
         VerdictWarning::OnSearchBound { parameters } => {
             let each: Vec<String> = parameters

@@ -1,7 +1,8 @@
 //! The verdict from what the search found: its case ([`rules::case`]),
 //! and for each case what a reader needs — the explained set's figures
 //! with its warnings (the channels it leaves worse on held-out runs, by
-//! [`crate::diagnose::report::Shrinkage::change`]; a base that is no tyre
+//! [`crate::diagnose::report::Shrinkage::change`], and those whose gap it
+//! leaves nearly whole, [`left`]; a base that is no tyre
 //! alone), the threshold of no significant gap, why the base is not
 //! identifiable, or the best candidate and every rule it fails. Typed; the
 //! report words it. Units: J dimensionless, reductions in percent, RMS in
@@ -10,9 +11,10 @@
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::{same_effects, Bound, EffectKind};
 use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::above_noise;
 use crate::diagnose::report::outcome::CALIBRATION_AGREES;
 use crate::diagnose::report::{
-    ChannelChange, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
+    ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
     NotIdentifiable, OutsideLibrary, ParameterValue, Part, RankWarning, Ranked, Shrinkage, Verdict,
     VerdictKind, VerdictWarning,
 };
@@ -44,6 +46,7 @@ pub(crate) fn verdict(
         (VerdictKind::Explained, Some(sc)) => {
             let r = base.rank(sc);
             let mut warnings = worsened(shrinkage);
+            warnings.extend(left(shrinkage));
             let on_bound = on_search_bound(&r.parameters);
             if !on_bound.is_empty() {
                 warnings.push(VerdictWarning::OnSearchBound {
@@ -210,6 +213,34 @@ pub(crate) fn worsened(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
         .collect()
 }
 
+/// The channels whose held-out gap (all samples) the verdict's effects
+/// leave: above noise before and after, less than [`ACCEPT`] of its gap
+/// above noise removed, and not worsened (that is its own warning). The
+/// combined error that accepted the effects can fall through one channel
+/// while another's gap stays: a verdict that "explains the gap" must not
+/// hide it.
+pub(crate) fn left(shrinkage: &[Shrinkage]) -> Vec<VerdictWarning> {
+    let acceptance_percent = 100.0 * ACCEPT;
+    shrinkage
+        .iter()
+        .filter(|s| s.part == Part::All)
+        .filter(|s| above_noise(s.before, s.noise_floor) && above_noise(s.after, s.noise_floor))
+        .filter_map(|s| match s.change() {
+            ChannelChange::Changed(removed) if removed < acceptance_percent => {
+                Some(VerdictWarning::ChannelLeft(ChannelLeft {
+                    channel: s.channel,
+                    before: s.before,
+                    after: s.after,
+                    noise_floor: s.noise_floor,
+                    removed_percent: removed,
+                    acceptance_percent,
+                }))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -326,5 +357,63 @@ mod tests {
         assert!((c[0].reduction_percent - 80.0 / 3.0).abs() < 1e-9);
         // None whose axles are a tyre: none named.
         assert!(closest(vec![row(&[RoadBank], 2.0, false)].into_iter()).is_empty());
+    }
+
+    fn shrink(channel: Channel, part: Part, before: f64, after: f64, floor: f64) -> Shrinkage {
+        Shrinkage {
+            channel,
+            part,
+            samples: 1000,
+            before,
+            after,
+            noise_floor: floor,
+            reduction_percent: crate::diagnose::model::channels::reduction(before, after, floor),
+        }
+    }
+
+    #[test]
+    fn a_channel_whose_gap_the_effects_leave_is_warned_of_and_not_one_within_noise_or_explained() {
+        use Channel::{Ay, Beta, YawRate};
+        // The sedan analogue: ay and beta fall by 61 % and 84 %, the yaw
+        // rate 10× its noise floor before and after.
+        let rows = [
+            shrink(YawRate, Part::All, 0.0247, 0.0216, 0.0020),
+            shrink(Ay, Part::All, 0.446, 0.184, 0.059),
+            shrink(Beta, Part::All, 0.0147, 0.0032, 0.0022),
+            // Another part's rows are not the channel's verdict.
+            shrink(Ay, Part::Ay { lo: 4.0, hi: 6.0 }, 0.5, 0.5, 0.059),
+        ];
+        let w = left(&rows);
+        assert_eq!(w.len(), 1, "{w:?}");
+        let VerdictWarning::ChannelLeft(c) = &w[0] else {
+            panic!("{w:?}")
+        };
+        assert_eq!(c.channel, YawRate);
+        assert!(
+            (c.removed_percent - 12.64).abs() < 0.01,
+            "{}",
+            c.removed_percent
+        );
+        assert_eq!(c.acceptance_percent, 30.0);
+        // Just at the acceptance: explained; just below: left.
+        let floor = 0.002;
+        let at = |removed: f64| {
+            let before: f64 = 0.02;
+            let gap = (before * before - floor * floor).sqrt() * (1.0 - removed);
+            shrink(
+                YawRate,
+                Part::All,
+                before,
+                (gap * gap + floor * floor).sqrt(),
+                floor,
+            )
+        };
+        assert!(left(&[at(0.301)]).is_empty());
+        assert_eq!(left(&[at(0.299)]).len(), 1);
+        // Within noise after: nothing left; a worsening is its own warning.
+        assert!(left(&[shrink(Beta, Part::All, 0.0147, 0.0021, 0.0022)]).is_empty());
+        let grown = shrink(Beta, Part::All, 0.0147, 0.0200, 0.0022);
+        assert!(left(std::slice::from_ref(&grown)).is_empty());
+        assert_eq!(worsened(&[grown]).len(), 1);
     }
 }

@@ -53,6 +53,31 @@ fn an_explained_verdict_says_how_much_and_whether_part() {
 }
 
 #[test]
+fn an_explained_verdict_names_a_channel_whose_gap_it_leaves_in_its_sentence_and_warning() {
+    use crate::diagnose::model::channels::Channel;
+    use crate::diagnose::report::outcome::{ChannelLeft, VerdictWarning};
+    let mut v = explained(52.5);
+    if let Verdict::Explained(e) = &mut v {
+        e.warnings = vec![VerdictWarning::ChannelLeft(ChannelLeft {
+            channel: Channel::YawRate,
+            before: 0.0247,
+            after: 0.0216,
+            noise_floor: 0.0020,
+            removed_percent: 12.6,
+            acceptance_percent: 30.0,
+        })];
+    }
+    assert_eq!(
+        statement(&v),
+        "sensor_delay+relaxation_length explains the gap but not its yaw_rate part: held-out error 3.628 → 1.073 (noise level 0.941), 52.5 % of the gap above noise removed"
+    );
+    assert_eq!(
+        verdict_warnings(&v),
+        ["it leaves the yaw_rate gap: RMS 0.0247 → 0.0216 rad/s on held-out runs (noise floor 0.0020), 13 % of the gap above noise removed, less than the 30 % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)"]
+    );
+}
+
+#[test]
 fn an_explained_verdict_with_a_look_alike_says_it_is_one_of_them() {
     let mut v = explained(85.3);
     if let Verdict::Explained(e) = &mut v {

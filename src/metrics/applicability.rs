@@ -73,11 +73,8 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
 /// is no change of speed); `rising` says which way it went (its last
 /// tenth against its first).
 pub fn varying_speed(sorted: &[f64], rising: bool) -> Option<String> {
-    let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
-    if sorted.is_empty() {
-        return None;
-    }
-    let (lo, median, hi) = (at(0.05), at(0.5), at(0.95));
+    let at = |q: f64| crate::measured::clean::quantile(sorted, q);
+    let (lo, median, hi) = (at(0.05)?, at(0.5)?, at(0.95)?);
     ((hi - lo) > VARYING_SPEED * median.abs()).then(|| {
         format!(
             "the speed {} over the measured piece, between {lo:.2} and {hi:.2} m/s (5th to 95th percentile; {:.0} % of its median {median:.2} m/s): GB/T 6323 and ISO 7401 hold the speed constant, and the metrics here mix the responses of several speeds",

@@ -40,7 +40,7 @@ pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
 pub use reason::{Limit, ParamReason, ScheduleColumn};
 pub use rig::Variable;
 use thiserror::Error;
-pub use units::UnitSlip;
+pub use units::{PressureMeant, UnitSlip};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

@@ -275,6 +275,12 @@ pub enum InputProblem {
         /// The pressure, Pa.
         value: f64,
     },
+    /// A tyre point's speed below 0 (a slip angle within ±90° rolls forwards).
+    #[error("column `speed`: {} m/s is negative: `speed` is the wheel's forward speed, 0 or more (FORMATS.md): a slip angle within ±90° already has the wheel rolling forwards (ISO 8855 measures it from the wheel's heading to its travel), and the models differ on a negative speed (a Magic Formula flips fy and my, the others ignore it); give the speed's size", Num(*value))]
+    NegativeSpeed {
+        /// The speed, m/s.
+        value: f64,
+    },
     /// A tyre input outside the range a tyre model is evaluated in.
     #[error("column `{column}`: {} is outside {}, the range a tyre is evaluated in ({why})", apart(*value, *lo, *hi, unit).0, apart(*value, *lo, *hi, unit).1)]
     NotPhysical {
@@ -505,6 +511,7 @@ impl InputProblem {
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
+            InputProblem::NegativeSpeed { .. } => "NegativeSpeed",
             InputProblem::NotPhysical { .. } => "NotPhysical",
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
             InputProblem::LoadNotCarried { .. } => "LoadNotCarried",

@@ -78,6 +78,20 @@ pub enum UnitSlip {
         /// The smallest median pressure accepted, Pa.
         limit: f64,
     },
+    /// One inflation pressure of a few units in a column whose median is
+    /// in Pa: that value written in kPa, bar or psi.
+    #[error("column `pressure`: {} Pa: no inflated tyre runs below {} Pa (0.1 bar), and the column's median is {} Pa: `pressure` is in Pa (FORMATS.md): {}", Num(*value), Num(*limit), Num(*median), pressure_meant(*value, meant))]
+    PressureRowNotInPa {
+        /// The pressure, as read.
+        value: f64,
+        /// The median pressure of the column, as read.
+        median: f64,
+        /// The smallest pressure accepted, Pa.
+        limit: f64,
+        /// The reading in another unit that lands among the tyre's
+        /// pressures, where one does.
+        meant: Option<PressureMeant>,
+    },
     /// A forward speed beyond any car's over more than 1 % of the run, or
     /// one sample beyond any vehicle's at all (no logger's glitch of a
     /// car's speed reads 1e308).
@@ -115,6 +129,40 @@ pub enum UnitSlip {
         /// The column's unit.
         unit: &'static str,
     },
+}
+
+/// A pressure read in another unit that lands among a tyre's pressures
+/// ([`UnitSlip::PressureRowNotInPa`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressureMeant {
+    /// The value converted to Pa.
+    pub pa: f64,
+    /// The unit it reads in: `kPa`, `bar`, `psi`.
+    pub unit: &'static str,
+    /// The pressures it lands among, Pa.
+    pub among: [f64; 2],
+    /// What they are (`the file's PRESMIN to PRESMAX`).
+    pub what: &'static str,
+}
+
+/// The question a pressure `value` of a few Pa raises: the reading that
+/// lands among the tyre's pressures, as [`super::level_slip`] offers the
+/// one that selects a level; else every unit it may be in.
+fn pressure_meant(value: f64, meant: &Option<PressureMeant>) -> String {
+    match meant {
+        Some(m) => format!(
+            "did you mean {} Pa ({} {}), within {} ({} to {} Pa)?",
+            significant(m.pa, 4),
+            Num(value),
+            m.unit,
+            m.what,
+            Num(m.among[0]),
+            Num(m.among[1])
+        ),
+        None => {
+            "is the value in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?".into()
+        }
+    }
 }
 
 /// `x` to three significant digits, as a message shows a number.

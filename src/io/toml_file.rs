@@ -2,7 +2,10 @@
 //! with toml's own span, value errors found after parsing (a negative mass)
 //! are located by looking the key path up in the document's spans.
 
+mod home;
+
 use crate::error::{InputError, InputProblem, Location, ParamError, PathFound};
+use home::Reparse;
 use serde::de::DeserializeOwned;
 use std::path::{Path, PathBuf};
 
@@ -43,14 +46,7 @@ fn suggest_variant(message: &str) -> String {
     let parse = |what: &str| {
         let rest = message.strip_prefix(&format!("unknown {what} `"))?;
         let (given, rest) = rest.split_once('`')?;
-        let list = rest
-            .strip_prefix(", expected one of ")
-            .or_else(|| rest.strip_prefix(", expected "))?;
-        let known: Vec<&str> = list
-            .split(", ")
-            .flat_map(|k| k.split(" or "))
-            .map(|k| k.trim_matches('`'))
-            .collect();
+        let known = home::listed(rest.strip_prefix(", expected ")?);
         let clause = Some(what)
             .filter(|w| *w == "field")
             .and_then(|_| same_quantity(given, &known))
@@ -239,35 +235,38 @@ impl TomlSource {
 
     /// Deserialises the whole file.
     pub fn parse<T: DeserializeOwned>(&self) -> Result<T, InputError> {
+        // What serde knows and the file does not say (the names a place
+        // takes, the keys of another table) is learnt by reading an edited
+        // copy of the file as the same type.
+        let reparse = |text: &str| {
+            let e = toml::from_str::<T>(text).err()?;
+            Some(e.message().trim().to_string())
+        };
+        toml::from_str(&self.text).map_err(|e| self.toml_error(&e, &reparse))
+    }
+
+    fn toml_error(&self, e: &toml::de::Error, reparse: &Reparse) -> InputError {
+        let message = self.plain_message(e);
+        let (span, key) = self.place(e, &message);
         // A name's place holding no name (`kind = 3`): the names are found
-        // by reading the file again with a string there, which serde
-        // answers with its list.
+        // with a string there, which serde answers with its list.
         let names = |at: Span| {
             let mut probe = self.text.clone();
             probe.replace_range(at, "\"?\"");
-            let e = toml::from_str::<T>(&probe).err()?;
-            let rest = e
-                .message()
-                .trim()
-                .strip_prefix("unknown variant `?`, expected ")?;
+            let message = reparse(&probe)?;
+            let rest = message.strip_prefix("unknown variant `?`, expected ")?;
             Some(rest.trim_start_matches("one of ").to_string())
         };
-        toml::from_str(&self.text).map_err(|e| self.toml_error(&e, &names))
-    }
-
-    fn toml_error(
-        &self,
-        e: &toml::de::Error,
-        names: &dyn Fn(Span) -> Option<String>,
-    ) -> InputError {
-        let message = self.plain_message(e);
-        let (span, key) = self.place(e, &message);
         let message = match (&span, message.strip_suffix(", expected a name in quotes")) {
             (Some(at), Some(head)) => match names(at.clone()) {
                 Some(list) => format!("{head}, expected one of {list}"),
                 None => message,
             },
             _ => message,
+        };
+        let message = match &key {
+            Some(path) => self.sent_home(message, path, reparse),
+            None => message,
         };
         match key {
             Some(key) => InputError::Key {
@@ -278,6 +277,27 @@ impl TomlSource {
             },
             None => self.located(span, InputProblem::Toml { detail: message }),
         }
+    }
+
+    /// An unknown key's `message` with the tables that know a key of its
+    /// name (`unknown field `step` (it belongs in [simulation]), expected
+    /// …`): a key in the wrong table is no misspelling, so the place said
+    /// replaces a nearest name; other messages unchanged. `path` is the
+    /// key's dotted path.
+    fn sent_home(&self, message: String, path: &str, reparse: &Reparse) -> String {
+        let refused = message
+            .strip_prefix("unknown field `")
+            .and_then(|r| r.split_once('`'))
+            // The key found at the place is the one refused.
+            .filter(|(name, _)| path.rsplit('.').next() == Some(*name));
+        let Some((name, rest)) = refused else {
+            return message;
+        };
+        let Some(clause) = home::belongs(&self.text, path, reparse) else {
+            return message;
+        };
+        let tail = rest.find(", expected").map_or("", |i| &rest[i..]);
+        format!("unknown field `{name}`{clause}{tail}")
     }
 
     /// toml's message for `e` in a TOML writer's words: on one line, with

@@ -10,8 +10,11 @@
 //! a steady sideslip beyond [`SLIDING_SIDESLIP`] is a slide, a yaw-rate
 //! overshoot beyond [`SPIN_OVERSHOOT`] a car losing and regaining grip,
 //! and below [`CRAWL_SPEED`] the yaw rate follows the steer's geometry
-//! (`r ≈ u·δ/l`) with no dynamics for the times to measure. Units: rad,
-//! m/s and % as in [`StepMetrics`].
+//! (`r ≈ u·δ/l`) with no dynamics for the times to measure. A sideslip is
+//! a slide only where the tyres are near their grip: at a crawl a large
+//! steer turns the car about a point near the line of its rear axle, and
+//! its sideslip (`β ≈ b·δ/l`) passes 10° with the tyres barely loaded
+//! ([`KINEMATIC_GRIP`]). Units: rad, m/s and % as in [`StepMetrics`].
 //!
 //! A schedule is held to what a car on the road can drive
 //! ([`schedule_applicability`]): the 2-DOF model takes the speed as an
@@ -29,6 +32,13 @@ use super::StepMetrics;
 pub const VARYING_SPEED: f64 = 0.1;
 /// The steady sideslip beyond which the car is sliding, rad (10°).
 pub const SLIDING_SIDESLIP: f64 = 10.0 * std::f64::consts::PI / 180.0;
+/// The share of the tyres' grip below which a sideslip beyond
+/// [`SLIDING_SIDESLIP`] is no slide. In a steady turn each axle's lateral
+/// force over its load is `ay/g`, so `|ay|/(μ·g)` is the grip the tyres
+/// use; at under half of it every tyre curve is still short of its peak,
+/// its slip angle a few degrees, and the rest of the sideslip is the
+/// turn's geometry (`b·r/u`, which only a crawl makes large).
+pub const KINEMATIC_GRIP: f64 = 0.5;
 /// The yaw-rate overshoot beyond which the response is no handling
 /// response, %: the peak more than twice the steady value.
 pub const SPIN_OVERSHOOT: f64 = 100.0;
@@ -43,8 +53,21 @@ pub const STEER_RATE: f64 = 5.0;
 
 /// The warnings on metrics `m` of a step steer at `speed` (m/s, where
 /// known): one sentence each, empty where the metrics are what the
-/// standards mean.
+/// standards mean. A measured run's grip is not known:
+/// [`applicability_with_grip`] for a run whose tyres are.
 pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
+    applicability_with_grip(m, speed, None)
+}
+
+/// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
+/// m/s², the lower axle's peak at static load, road friction included):
+/// a sideslip beyond 10° with the tyres at under [`KINEMATIC_GRIP`] of it
+/// is said as the kinematic turn it is ([`kinematic_turn`]), not a slide.
+pub fn applicability_with_grip(
+    m: &StepMetrics,
+    speed: Option<f64>,
+    grip: Option<f64>,
+) -> Vec<String> {
     let mut out = Vec::new();
     if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
         out.push(format!(
@@ -53,10 +76,19 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
         ));
     }
     if let Some(beta) = m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
-        out.push(format!(
-            "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
-            beta.to_degrees()
-        ));
+        // In the steady turn both axles use |ay|/(μ·g) of their grip.
+        let share = grip.zip(m.ay_steady).map(|(g, ay)| ay.abs() / g);
+        out.push(match (share.filter(|s| *s < KINEMATIC_GRIP), speed) {
+            (Some(share), Some(u)) => format!(
+                "the steady sideslip is {:.1}°, beyond 10°, {}",
+                beta.to_degrees(),
+                kinematic_turn(share, u, m.steer_step)
+            ),
+            _ => format!(
+                "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
+                beta.to_degrees()
+            ),
+        });
     }
     if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
         out.push(format!(
@@ -65,6 +97,20 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
         ));
     }
     out
+}
+
+/// Why a sideslip beyond 10° is no slide, where the tyres use `share`
+/// (below [`KINEMATIC_GRIP`]) of their grip at `speed` (m/s) and
+/// road-wheel steer `steer` (rad): the end of a sentence that names the
+/// sideslip. A slow car's sideslip is the geometry of its turn, so what
+/// limits the turn is the steer, and the lock beside it says how close.
+pub(crate) fn kinematic_turn(share: f64, speed: f64, steer: f64) -> String {
+    format!(
+        "but no slide: the tyres use no more than {:.0} % of their grip, and at {:.2} m/s the {:.1}° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip",
+        100.0 * share,
+        speed.abs(),
+        steer.to_degrees()
+    )
 }
 
 /// The warning on a measured step whose speeds, sorted, are `sorted`
@@ -270,6 +316,27 @@ mod tests {
             ..moderate()
         };
         assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+    }
+
+    #[test]
+    fn a_sideslip_with_the_tyres_far_below_their_grip_is_said_as_a_kinematic_turn() {
+        // 17.8° at 2 m/s after a 28.6° step, 0.78 m/s² steady.
+        let slow = StepMetrics {
+            steer_step: 0.5,
+            beta_steady: Some(17.8_f64.to_radians()),
+            ay_steady: Some(0.78),
+            ..moderate()
+        };
+        let w = applicability_with_grip(&slow, Some(2.0), Some(9.8));
+        assert!(
+            w[1].starts_with("the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 8 % of their grip, and at 2.00 m/s the 28.6° steer"),
+            "{w:?}"
+        );
+        // At half the grip and above, or with the grip unknown: a slide.
+        for grip in [Some(1.56), None] {
+            let w = applicability_with_grip(&slow, Some(2.0), grip);
+            assert!(w[1].contains("the car is sliding, past its grip"), "{w:?}");
+        }
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Bad input in a TOML file, refused at the line and column of what is
 //! wrong and in plain words: a key one manoeuvre kind names another way,
 //! a step steer given both amplitudes, text after a value on its line, a
-//! wrong element of a campaign's prior range.
+//! wrong element of a campaign's prior range, a key in the wrong table.
 
 use super::*;
 
@@ -172,6 +172,64 @@ fn a_string_in_a_prior_range_is_refused_at_its_element() {
         e.contains(&format!(
             "vehicle.toml:{line}:18: `tyres.friction[1]`: invalid type: string \"1\", expected a number"
         )),
+        "{e}"
+    );
+}
+
+/// `step = 0.001` written under `[model]` was refused with `[model]`'s
+/// keys and no word of where it goes. A key another table of the file
+/// takes is sent there, from any table and from before the first header,
+/// whether that table is written or not; `[integrator]`, another name of
+/// `[simulation]`, is not named beside it; a key no table has gets no
+/// home.
+#[test]
+fn a_key_of_another_table_is_refused_with_the_table_it_belongs_in() {
+    let under_model = |t: &str| {
+        t.replace(
+            "load_transfer = true\n",
+            "load_transfer = true\nstep = 0.001\n",
+        )
+    };
+    let e = refused_bundled("model_step", &under_model);
+    assert!(
+        e.contains("model_step.toml:24:1: `model.step`: unknown field `step` (it belongs in [simulation]), expected one of `kinematics`, `load_transfer`, `effects`"),
+        "{e}"
+    );
+    let e = refused_bundled("unwritten", &|t| {
+        let t = under_model(t);
+        t[..t.find("[simulation]").unwrap()].to_string()
+    });
+    assert!(
+        e.contains(
+            "unwritten.toml:24:1: `model.step`: unknown field `step` (it belongs in [simulation])"
+        ),
+        "{e}"
+    );
+    let e = refused_bundled("top", &|t| format!("step = 0.001\n{t}"));
+    assert!(
+        e.contains("top.toml:1:1: `step`: unknown field `step` (it belongs in [simulation]), expected one of `name`"),
+        "{e}"
+    );
+    let e = refused_bundled("speed", &|t| t.replace("mass = ", "speed = 20.0\nmass = "));
+    assert!(
+        e.contains("`vehicle.speed`: unknown field `speed` (it belongs in [manoeuvre])"),
+        "{e}"
+    );
+    let e = refused_bundled("friction", &|t| {
+        t.replace("end = 6.0", "end = 6.0\nfriction = 0.8")
+    });
+    assert!(
+        e.contains("`manoeuvre.friction`: unknown field `friction` (it belongs in [road])"),
+        "{e}"
+    );
+    let e = refused_bundled("nowhere", &|t| {
+        t.replace(
+            "load_transfer = true\n",
+            "load_transfer = true\nstride = 0.001\n",
+        )
+    });
+    assert!(
+        e.contains("`model.stride`: unknown field `stride`") && !e.contains("belongs"),
         "{e}"
     );
 }

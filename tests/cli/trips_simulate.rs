@@ -1,7 +1,8 @@
 //! What the fourth fresh-eyes check found in `simulate` and `metrics`:
 //! runs that were not what their input's words suggest and said nothing
 //! (a trim, a drift, a slide outside a step, a steer no rack makes, tyres
-//! beyond their fitted data, gigabytes of rows, a step at varying speed).
+//! beyond their fitted data, gigabytes of rows, a step at varying speed),
+//! and a slow car's turn said as a slide.
 //! Each test one finding, run as a user runs it.
 
 use super::*;
@@ -303,4 +304,34 @@ fn a_lateral_pac89_fit_says_its_file_has_no_longitudinal_force() {
         err.contains("this pac89 tyre does not respond to `kappa`"),
         "{err}"
     );
+}
+
+/// A 28.6° step at 2 m/s was said to be "sliding, past its grip": its 18°
+/// sideslip is the geometry of a slow turn about a point near the rear
+/// axle's line (β ≈ b·δ/l = 17.2°), the tyres at 8 % of their grip (a
+/// steady ay of 0.78 m/s²); a ramp to the same steer at 2 m/s was said to
+/// slide likewise. A slide at speed is still a slide (the sweep above).
+#[test]
+fn a_large_steer_at_a_crawl_is_said_as_a_kinematic_turn_not_a_slide() {
+    let step = "[manoeuvre]\nkind = \"step-steer\"\nspeed = 2.0\nsteer = 0.5\n";
+    let dir = scenario(VEHICLE, GIM, step);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 8 % of their grip, and at 2.00 m/s the 28.6° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip"),
+        "{said}"
+    );
+    assert!(!said.contains("past its grip"), "{said}");
+    let ramp =
+        "[manoeuvre]\nkind = \"ramp-steer\"\nspeed = 2.0\nrate = 0.2\nstart = 1.0\nend = 3.5\n";
+    let dir = scenario(VEHICLE, GIM, ramp);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the sideslip reaches 1")
+            && said.contains("but no slide: the tyres use no more than ")
+            && said.contains("at 2.00 m/s the 28.6° steer"),
+        "{said}"
+    );
+    assert!(!said.contains("slides past its grip"), "{said}");
 }

@@ -1,8 +1,10 @@
 //! What `tyre-eval` cannot stand behind, said at the points it concerns: a
-//! tyre without a longitudinal force evaluated at a slip ratio, a Magic
-//! Formula `my` past the speed its speed terms reach, a load its vertical
-//! model carries at no loaded radius, a TOML tyre off the road, and the
-//! loads a slip stiffness's sign change is named within.
+//! tyre without a longitudinal force evaluated at a slip ratio, or without
+//! an overturning or rolling resistance moment, a Magic Formula `my` past
+//! the speed its speed terms reach, a load its vertical model carries at
+//! no loaded radius, a TOML tyre off the road, the loads a slip
+//! stiffness's sign change is named within, a negative speed and a
+//! pressure row in kPa.
 
 use super::*;
 use crate::trips_identify::{identify_with, rig, stdout};
@@ -93,7 +95,7 @@ fn a_tyre_without_longitudinal_force_is_warned_of_at_a_slip_ratio() {
 fn a_rolling_resistance_moment_past_its_speed_terms_reach_is_warned_of() {
     let dir = tempfile::tempdir().unwrap();
     let tir = mf61(dir.path(), &[]);
-    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,16.6\n4000,0,0,0,200\n4000,0,0,0,-150\n";
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,16.6\n4000,0,0,0,200\n4000,0,0,0,150\n";
     let (o, written) = eval(dir.path(), &tir, points, &[]);
     assert!(o.status.success(), "{}", stderr(&o));
     let my = column(&written, "my");
@@ -192,6 +194,88 @@ fn a_slip_stiffness_sign_change_names_the_loads_the_limit_checks_leave() {
     let e = stderr(&o);
     assert!(
         e.contains("inside the loads evaluated (500 to 5000 N):"),
+        "{e}"
+    );
+}
+
+/// The .tir `identify` wrote from cornering-only data gave mx = my = 0 at
+/// every point without a word, its `QSX` and `QSY` blocks all 0; the
+/// sample file, with both, says nothing.
+#[test]
+fn a_tyre_without_wheel_moments_is_warned_of() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let tir = dir.path().join("m.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &tir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.02,0,20\n4000,0,0,0.02,20\n0,0,0.02,0,20\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(column(&written, "mx"), [0.0; 3]);
+    assert_eq!(column(&written, "my"), [0.0; 3]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("warning: 2 of 3 points have fy or camber ≠ 0 and mx = 0: the tyre has no overturning moment (QSX1 to QSX14 all 0: the file carries no overturning moment coefficients, as `identify` writes a block it had no data to fit); its mx is not a prediction"),
+        "{e}"
+    );
+    assert!(
+        e.contains("warning: 2 of 3 points have speed ≠ 0 and my = 0: the tyre has no rolling resistance moment (QSY1 to QSY8 all 0: the file carries no rolling resistance coefficients,"),
+        "{e}"
+    );
+    let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
+    let e = stderr(&o);
+    assert!(
+        o.status.success() && !e.contains("= 0: the tyre has no"),
+        "{e}"
+    );
+}
+
+/// A speed of -20 m/s was taken: the Magic Formula flipped its fy (2395 N
+/// to -2302 N) and my, a Gim tyre gave the same forces as at +20 m/s.
+#[test]
+fn a_negative_speed_is_refused_at_its_row() {
+    let dir = tempfile::tempdir().unwrap();
+    let points =
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n4000,0,0.05,0,-20\n4000,0,0.05,0,0\n";
+    let gim = root().join("tyres/gim.toml");
+    for tyre in [mf61(dir.path(), &[]), gim] {
+        let (o, written) = eval(dir.path(), &tyre, points, &[]);
+        let e = stderr(&o);
+        assert!(!o.status.success() && written.is_empty(), "{e}");
+        assert!(
+            e.contains("p.csv:3:5: column `speed`: -20 m/s is negative: `speed` is the wheel's forward speed, 0 or more (FORMATS.md): a slip angle within ±90° already has the wheel rolling forwards (ISO 8855 measures it from the wheel's heading to its travel)"),
+            "{e}"
+        );
+        assert!(!e.contains("p.csv:2:") && !e.contains("p.csv:4:"), "{e}");
+    }
+}
+
+/// One row's pressure written in kPa (220) among rows in Pa passed the
+/// column's median and was held at the file's PRESMIN without a word of
+/// the unit; each such row is refused at its cell with the reading that
+/// lands among the tyre's pressures.
+#[test]
+fn a_pressure_row_in_kpa_bar_or_psi_is_refused_with_the_reading_meant() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed,pressure\n4000,0,0.05,0,20,260000\n4000,0,0.05,0,20,220\n4000,0,0.05,0,20,2.6\n4000,0,0.05,0,20,260000\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    let e = stderr(&o);
+    assert!(!o.status.success() && written.is_empty(), "{e}");
+    assert!(
+        e.contains("p.csv:3:6: column `pressure`: 220 Pa: no inflated tyre runs below 10000 Pa (0.1 bar), and the column's median is 260000 Pa: `pressure` is in Pa (FORMATS.md): did you mean 220000 Pa (220 kPa), within the file's PRESMIN to PRESMAX (200000 to 400000 Pa)?"),
+        "{e}"
+    );
+    assert!(
+        e.contains("p.csv:4:6: column `pressure`: 2.6 Pa")
+            && e.contains("did you mean 260000 Pa (2.6 bar)"),
+        "{e}"
+    );
+    // A TOML tyre states no pressures: the column's median is the guide.
+    let gim = root().join("tyres/gim.toml");
+    let (o, _) = eval(dir.path(), &gim, points, &[]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("did you mean 220000 Pa (220 kPa), within half to twice the median (130000 to 520000 Pa)?"),
         "{e}"
     );
 }

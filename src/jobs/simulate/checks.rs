@@ -10,7 +10,9 @@
 //!   as a warning with the trim it would need.
 //! - **a slide**: a sideslip beyond
 //!   [`SLIDING_SIDESLIP`](crate::metrics::applicability::SLIDING_SIDESLIP)
-//!   (10°) anywhere in a ramp, sine, sweep or schedule; and in any
+//!   (10°) anywhere in a ramp, sine, sweep or schedule, where the tyres
+//!   use at least [`KINEMATIC_GRIP`] of their grip (below it the sideslip
+//!   is a slow car's turn, said as such); and in any
 //!   manoeuvre an axle's slip angle beyond [`SLIDING_SLIP`] (15°), past the
 //!   peak of any road or racing tyre's curve (3–10°): a front axle
 //!   ploughing on with the body barely turned, which the sideslip misses.
@@ -29,8 +31,9 @@
 use crate::io::fitted_ranges::{FittedRanges, RangePoint};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
-use crate::metrics::applicability::{SLIDING_SIDESLIP, STEER_RATE};
+use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
 use crate::sim::TimeHistory;
+use crate::tyre::TyreModel;
 use std::f64::consts::TAU;
 
 /// The axle slip angle beyond which the axle slides, rad (15°): past the
@@ -55,7 +58,7 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     let mut said = Said::default();
     straight_running(sc, &mut said);
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
-        said.warnings.extend(sliding(h));
+        said.warnings.extend(sliding(h, axle_friction(sc)));
     }
     said.warnings.extend(axle_sliding(h));
     said.warnings.extend(on_two_wheels(h));
@@ -114,9 +117,45 @@ fn largest_beyond(x: &[f64], limit: f64) -> Option<(f64, usize, usize)> {
     Some((*v, i, from))
 }
 
-/// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`].
-fn sliding(h: &TimeHistory) -> Option<String> {
+/// The peak friction coefficient of the front and rear tyres at static
+/// load on this road (friction scale included), where both have one (a
+/// linear tyre has no limit).
+pub(super) fn axle_friction(sc: &Scenario) -> Option<[f64; 2]> {
+    let (front, rear) = sc.model.vehicle.static_axle_loads();
+    let mu = sc.integrator.friction;
+    let f = sc.model.front.friction_coefficient(0.5 * front, mu);
+    let r = sc.model.rear.friction_coefficient(0.5 * rear, mu);
+    (f.is_finite() && r.is_finite() && f > 0.0 && r > 0.0).then_some([f, r])
+}
+
+/// The share of its grip the busier axle uses at row `k`: its lateral
+/// force over its peak (`μ` of [`axle_friction`] times its load).
+fn grip_used(h: &TimeHistory, mu: [f64; 2], k: usize) -> f64 {
+    let front = h.fy_front[k].abs() / (mu[0] * (h.fz[0][k] + h.fz[1][k]));
+    let rear = h.fy_rear[k].abs() / (mu[1] * (h.fz[2][k] + h.fz[3][k]));
+    front.max(rear)
+}
+
+/// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`]; where
+/// the tyres of `mu` ([`axle_friction`]) use under [`KINEMATIC_GRIP`] of
+/// their grip at every such row, a kinematic turn instead.
+fn sliding(h: &TimeHistory, mu: Option<[f64; 2]>) -> Option<String> {
     let (beta, i, from) = largest_beyond(&h.beta, SLIDING_SIDESLIP)?;
+    let share = mu.map(|mu| {
+        (0..h.len())
+            .filter(|&k| h.beta[k].abs() > SLIDING_SIDESLIP)
+            .map(|k| grip_used(h, mu, k))
+            .fold(0.0, f64::max)
+    });
+    if let Some(share) = share.filter(|s| *s < KINEMATIC_GRIP) {
+        return Some(format!(
+            "the sideslip reaches {:.1}° at t = {:.2} s (beyond 10° from t = {:.2} s), {}",
+            beta.to_degrees(),
+            h.t[i],
+            h.t[from],
+            kinematic_turn(share, h.speed[i], h.steer[i])
+        ));
+    }
     Some(format!(
         "the sideslip reaches {:.1}° at t = {:.2} s (beyond 10° from t = {:.2} s): the car slides past its grip, where a 2-DOF model with the tyres' steady curves no longer says how a car behaves",
         beta.to_degrees(),

@@ -13,7 +13,7 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::applicability::{applicability, schedule_applicability};
+use crate::metrics::applicability::{applicability_with_grip, schedule_applicability};
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
@@ -49,8 +49,9 @@ pub struct SimulateReport {
     /// straight-running trim).
     pub notes: Vec<String>,
     /// Where the metrics describe something other than a handling
-    /// response ([`applicability`]): a slide, a spin, a crawl; and where
-    /// the run is not what its input's words suggest ([`checks`]).
+    /// response ([`applicability_with_grip`]): a slide, a spin, a crawl;
+    /// and where the run is not what its input's words suggest
+    /// ([`checks`]).
     pub warnings: Vec<String>,
     /// Intervals with a wheel off the ground.
     pub lift_offs: Vec<LiftOff>,
@@ -117,8 +118,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         ),
         _ => None,
     };
+    // The tyres' grip on this road (the lower axle's): a sideslip with
+    // the tyres far below it is a slow car's turn, not a slide.
+    let grip = checks::axle_friction(&sc).map(|[f, r]| f.min(r) * crate::constants::G);
     let mut warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
-        applicability(m, Some(sc.manoeuvre.speed(0.0)))
+        applicability_with_grip(m, Some(sc.manoeuvre.speed(0.0)), grip)
     });
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

@@ -1,12 +1,19 @@
 //! Points `tyre-eval` evaluates but cannot stand behind, counted and said:
 //!
-//! - a longitudinal force of exactly 0 at a slip ratio other than 0 and a
-//!   positive load: the tyre has no longitudinal force at all (a `.tir`
-//!   with `PDX1 = 0` or `PKX1 = 0`, as `identify` writes from a rig file
-//!   without longitudinal slip and no template). Found by behaviour, at
-//!   the points themselves: no force model gives an exact 0 off zero slip
-//!   otherwise. A model that does not read `kappa` at all (Gim, linear) is
-//!   said so by `unread.rs` instead.
+//! - a force or moment of exactly 0 at every point where a tyre that has
+//!   it gives some ([`ZeroOutput`]): `fx` at a slip ratio other than 0,
+//!   `mx` with a lateral force or a camber, `my` at a speed other than 0,
+//!   each at a positive load. The tyre has none of it at all: a `.tir`
+//!   with `PDX1 = 0` or `PKX1 = 0`, or with its `QSX` or `QSY` block all 0,
+//!   as `identify` writes from rig data without longitudinal slip or
+//!   wheel moments and no template. Found by behaviour, at the points
+//!   themselves, one rule for the three: no force model gives an exact 0
+//!   there otherwise. The Magic Formula coefficients that cause it are
+//!   named; a block not all 0 that still gives none (the public
+//!   `FSAE_Defaults.tir`'s `mx`: its `QSX4` term's sine is of `QSX7` and
+//!   `QSX8`, both 0) is said as giving none at these points. A model that
+//!   does not read `kappa` at all (Gim, linear) is said so by `unread.rs`
+//!   instead.
 //! - a Magic Formula rolling resistance moment `my` at a speed where its
 //!   speed terms `QSY3·|V/LONGVL| + QSY4·(V/LONGVL)⁴` alone exceed
 //!   [`MY_SPEED_TERMS`]: a rolling resistance of a tenth of the load, where
@@ -24,57 +31,187 @@ use serde::Serialize;
 /// resistance coefficient) past which the speed is beyond the model.
 pub const MY_SPEED_TERMS: f64 = 0.1;
 
-/// Points with a slip ratio at which the tyre gives no longitudinal force.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct NoLongitudinalForce {
-    /// Points at a positive load with `kappa` ≠ 0 and `fx` = 0.
-    pub points: usize,
-    /// A Magic Formula file's peak factor and slip stiffness coefficients
-    /// (`PDX1`, `PKX1`), which say why.
-    pub pdx1_pkx1: Option<(f64, f64)>,
+/// A force or moment a tyre may have no coefficients for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Output {
+    /// The longitudinal force.
+    Fx,
+    /// The overturning moment (Magic Formula only).
+    Mx,
+    /// The rolling resistance moment (Magic Formula only).
+    My,
 }
 
-impl NoLongitudinalForce {
+impl Output {
+    /// Its column.
+    pub fn column(self) -> &'static str {
+        match self {
+            Output::Fx => "fx",
+            Output::Mx => "mx",
+            Output::My => "my",
+        }
+    }
+
+    /// What it is, in words.
+    fn what(self) -> &'static str {
+        match self {
+            Output::Fx => "longitudinal force",
+            Output::Mx => "overturning moment",
+            Output::My => "rolling resistance moment",
+        }
+    }
+
+    /// The block of a Magic Formula file that gives it.
+    fn block(self) -> &'static str {
+        match self {
+            Output::Fx => "longitudinal",
+            Output::Mx => "overturning moment",
+            Output::My => "rolling resistance",
+        }
+    }
+
+    /// Where a tyre that has it gives some, in words ([`Self::expected`]).
+    fn where_given(self) -> &'static str {
+        match self {
+            Output::Fx => "kappa ≠ 0",
+            Output::Mx => "fy or camber ≠ 0",
+            Output::My => "speed ≠ 0",
+        }
+    }
+
+    /// Whether a tyre that has it gives some at point `i` of `p`, whose
+    /// lateral force is `fy`: at a positive load, with a slip ratio
+    /// (`fx`), a lateral force or a camber (`mx`: without either a file
+    /// may give only its offset `QSX1`, often 0), a speed (`my`, which a
+    /// Magic Formula fades to 0 at standstill).
+    fn expected(self, p: &Points, i: usize, fy: f64) -> bool {
+        let [fz, kappa, _, camber, speed] = p.columns;
+        fz[i] > 0.0
+            && match self {
+                Output::Fx => kappa[i] != 0.0,
+                Output::Mx => fy != 0.0 || camber[i] != 0.0,
+                Output::My => speed[i] != 0.0,
+            }
+    }
+
+    /// Its value in `f`, where the model gives it.
+    fn of(self, f: &PointForces) -> Option<f64> {
+        match self {
+            Output::Fx => Some(f.fx),
+            Output::Mx => f.mx,
+            Output::My => f.my,
+        }
+    }
+
+    /// The Magic Formula coefficients that give it none: the peak factor
+    /// and slip stiffness of `fx` (either 0 is enough), the whole `QSX`
+    /// or `QSY` block of a moment.
+    fn coefficients(self) -> &'static [&'static str] {
+        match self {
+            Output::Fx => &["PDX1", "PKX1"],
+            Output::Mx => &[
+                "QSX1", "QSX2", "QSX3", "QSX4", "QSX5", "QSX6", "QSX7", "QSX8", "QSX9", "QSX10",
+                "QSX11", "QSX12", "QSX13", "QSX14",
+            ],
+            Output::My => &[
+                "QSY1", "QSY2", "QSY3", "QSY4", "QSY5", "QSY6", "QSY7", "QSY8",
+            ],
+        }
+    }
+}
+
+/// Points at which the tyre gives none of a force or moment, where a tyre
+/// that has it gives some.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ZeroOutput {
+    /// The output.
+    pub output: Output,
+    /// Points where it is expected ([`Output::where_given`]), all at 0.
+    pub points: usize,
+    /// A Magic Formula file's coefficients that say why, by name: `PDX1`
+    /// and `PKX1` for `fx`, a moment's `QSX` or `QSY` block (empty for
+    /// another model).
+    pub coefficients: Vec<(&'static str, f64)>,
+}
+
+impl ZeroOutput {
     /// The sentence on the terminal.
     pub fn line(&self, count: usize) -> String {
-        let why = match self.pdx1_pkx1 {
-            Some((d, k)) => format!(
-                " (PDX1 = {}, PKX1 = {}: as `identify` writes a longitudinal block it had no data to fit)",
-                crate::format::exact(d),
-                crate::format::exact(k)
+        let o = self.output;
+        let block = o.block();
+        let why = match self.coefficients.as_slice() {
+            [(a, x), (b, y)] => format!(
+                " ({a} = {}, {b} = {}: as `identify` writes a {block} block it had no data to fit)",
+                crate::format::exact(*x),
+                crate::format::exact(*y)
             ),
-            None => String::new(),
+            [(first, _), .., (last, _)] if self.coefficients.iter().all(|(_, v)| *v == 0.0) => {
+                format!(
+                    " ({first} to {last} all 0: the file carries no {block} coefficients, as `identify` writes a block it had no data to fit)"
+                )
+            }
+            [(first, _), .., (last, _)] => {
+                format!(" (its {first} to {last} give none at these points)")
+            }
+            [] | [_] => String::new(),
         };
         format!(
-            "{} of {} {} kappa ≠ 0 and fx = 0: the tyre has no longitudinal force{why}; its fx is not a prediction",
+            "{} of {} {} {} and {} = 0: the tyre has no {}{why}; its {} is not a prediction",
             self.points,
             crate::format::plural(count, "point", "points"),
-            if self.points == 1 { "has" } else { "have" }
+            if self.points == 1 { "has" } else { "have" },
+            o.where_given(),
+            o.column(),
+            o.what(),
+            o.column()
         )
     }
 }
 
-/// The points of `p` where `tyre`'s outputs `f` have no longitudinal
-/// force at a slip ratio; `None` where there are none, or where `unread`
-/// already says the model does not read `kappa`.
-pub(crate) fn no_longitudinal_force(
+/// The outputs `tyre` gives none of at the points `p` (outputs `f`): each
+/// exactly 0 at every point where a tyre that has it gives some, and at
+/// one at least. A slip ratio the model does not read (`unread`) is said
+/// there instead.
+pub(crate) fn zero_outputs(
     tyre: &Tyre,
     p: &Points,
     f: &[PointForces],
     unread: &[Unread],
-) -> Option<NoLongitudinalForce> {
-    if unread.iter().any(|u| u.column == "kappa") {
-        return None;
+) -> Vec<ZeroOutput> {
+    let kappa_unread = unread.iter().any(|u| u.column == "kappa");
+    [Output::Fx, Output::Mx, Output::My]
+        .into_iter()
+        .filter(|o| !(*o == Output::Fx && kappa_unread))
+        .filter_map(|o| zero_output(o, tyre, p, f))
+        .collect()
+}
+
+/// [`zero_outputs`] for one output `o`.
+fn zero_output(o: Output, tyre: &Tyre, p: &Points, f: &[PointForces]) -> Option<ZeroOutput> {
+    let mut points = 0;
+    for (i, fi) in f.iter().enumerate() {
+        let value = o.of(fi)?;
+        if o.expected(p, i, fi.fy) {
+            if value != 0.0 {
+                return None;
+            }
+            points += 1;
+        }
     }
-    let [fz, kappa, ..] = p.columns;
-    let points = (0..fz.len())
-        .filter(|&i| fz[i] > 0.0 && kappa[i] != 0.0 && f[i].fx == 0.0)
-        .count();
-    let pdx1_pkx1 = match tyre {
-        Tyre::MagicFormula(t) => Some((t.coefficients.PDX1, t.coefficients.PKX1)),
-        _ => None,
+    let coefficients = match tyre {
+        Tyre::MagicFormula(t) => o
+            .coefficients()
+            .iter()
+            .map(|&n| (n, t.coefficients.get(n).unwrap_or(f64::NAN)))
+            .collect(),
+        _ => Vec::new(),
     };
-    (points > 0).then_some(NoLongitudinalForce { points, pdx1_pkx1 })
+    (points > 0).then_some(ZeroOutput {
+        output: o,
+        points,
+        coefficients,
+    })
 }
 
 /// Points whose speed is beyond a Magic Formula file's rolling

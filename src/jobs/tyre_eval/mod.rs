@@ -17,9 +17,13 @@
 //! value, before anything is evaluated ([`PHYSICAL`]): a load beyond
 //! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
 //! road speed), a slip or camber angle beyond ±90°, a speed beyond
-//! ±300 m/s, a pressure above 5 MPa. A model that still gives a
-//! non-finite force or moment at a point is refused at that point: the
-//! output never holds a non-finite value.
+//! ±300 m/s, a pressure above 5 MPa; and a negative speed: the points
+//! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
+//! forwards, so the speed is its size (a Magic Formula's own sign of the
+//! speed, which flips its `fy` and `my`, stays inside its model), and a
+//! pressure of a few Pa, written in kPa, bar or psi (`pressure.rs`). A
+//! model that still gives a non-finite force or moment at a point is
+//! refused at that point: the output never holds a non-finite value.
 //!
 //! What the evaluation cannot stand behind is said, not dropped: an input
 //! column the model does not read (`unread.rs`: a Gim tyre's camber), and
@@ -28,17 +32,20 @@
 //! extrapolation, and a slip stiffness that changes sign inside the loads
 //! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N),
 //! and (`checks.rs`) a tyre with no longitudinal force evaluated at a slip
-//! ratio, and a Magic Formula `my` at a speed past its speed terms' reach.
+//! ratio, a Magic Formula file with no overturning or rolling resistance
+//! coefficients, and a Magic Formula `my` at a speed past its speed terms'
+//! reach.
 
 mod checks;
+mod pressure;
 mod stiffness;
 mod unread;
 
-pub use checks::{BeyondMySpeed, NoLongitudinalForce, MY_SPEED_TERMS};
+pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
 pub use stiffness::SignChange;
 pub use unread::Unread;
 
-use crate::error::Error;
+use crate::error::{Error, InputProblem};
 use crate::io::fitted_ranges::{FittedRanges, RangePoint};
 use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
@@ -93,27 +100,31 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
 ];
 
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
-/// range: its row and the problem.
-fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, crate::error::InputProblem)> {
+/// range, and a speed within it below 0: its row and the problem.
+fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
     let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
         return Vec::new();
     };
-    values
-        .iter()
-        .enumerate()
-        .filter(|(_, v)| !(lo..=hi).contains(*v))
-        .map(|(i, &value)| {
-            let problem = crate::error::InputProblem::NotPhysical {
+    let refused = |(i, &value): (usize, &f64)| {
+        let problem = if !(lo..=hi).contains(&value) {
+            InputProblem::NotPhysical {
                 column,
                 value,
                 lo,
                 hi,
                 unit,
                 why,
-            };
-            (i, problem)
-        })
-        .collect()
+            }
+        } else if name == "speed" && value < 0.0 {
+            // A slip angle within ±90° already says the wheel rolls
+            // forwards (ISO 8855): the speed is its size.
+            InputProblem::NegativeSpeed { value }
+        } else {
+            return None;
+        };
+        Some((i, problem))
+    };
+    values.iter().enumerate().filter_map(refused).collect()
 }
 
 /// The report of `tyre-eval`: the points with their forces and moments.
@@ -135,8 +146,10 @@ pub struct TyreEvalReport {
     /// Points at zero or negative load: the wheel off the road, no force
     /// (and the loaded radius `rl`, where written, the free radius).
     pub off_road: usize,
-    /// Points with a slip ratio where the tyre gives no longitudinal force.
-    pub no_longitudinal_force: Option<NoLongitudinalForce>,
+    /// The forces and moments the tyre gives none of where a tyre that
+    /// has them gives some (`fx` at a slip ratio, a Magic Formula's `mx`,
+    /// `my`).
+    pub zero_outputs: Vec<ZeroOutput>,
     /// Points faster than a Magic Formula `my`'s speed terms reach.
     pub beyond_my_speed: Option<BeyondMySpeed>,
     /// The input columns the model does not read, set at some points.
@@ -168,8 +181,9 @@ struct PointColumns {
 
 /// Reads the points of `points`, refusing a value no tyre is evaluated
 /// at (every one, in row order), a pressure not positive or not in Pa
-/// and loads in kN, each at its cell.
-fn read_points(points: &Path) -> Result<PointColumns, Error> {
+/// (a row's read against the pressures `known` of the tyre) and loads in
+/// kN, each at its cell.
+fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointColumns, Error> {
     let mut c = read_columns(
         points,
         &["fz", "kappa", "alpha", "camber", "speed"],
@@ -178,7 +192,7 @@ fn read_points(points: &Path) -> Result<PointColumns, Error> {
     let pressure = c.take_optional("pressure");
     if let Some(p) = &pressure {
         if let Some(i) = p.iter().position(|v| *v <= 0.0) {
-            let problem = crate::error::InputProblem::NonPositivePressure { value: p[i] };
+            let problem = InputProblem::NonPositivePressure { value: p[i] };
             return Err(c.error_at(points, i, "pressure", problem).into());
         }
     }
@@ -191,7 +205,7 @@ fn read_points(points: &Path) -> Result<PointColumns, Error> {
         .map(|(n, v)| (*n, v))
         .chain(pressure.as_ref().map(|p| ("pressure", p)));
     // Every point no tyre is evaluated at, in row order (then column).
-    let mut refused: Vec<(usize, usize, &str, crate::error::InputProblem)> = given
+    let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
         .enumerate()
         .flat_map(|(k, (name, values))| {
             not_physical(name, values)
@@ -211,6 +225,9 @@ fn read_points(points: &Path) -> Result<PointColumns, Error> {
     // range without a word of the unit).
     if let Some((i, slip)) = pressure.as_deref().and_then(pressure_not_in_pa) {
         return Err(c.error_at(points, i, "pressure", slip.into()).into());
+    }
+    if let Some(p) = &pressure {
+        pressure::refuse_rows_not_in_pa(points, &c, p, known)?;
     }
     // A car's loads written in kN; the points off the road do not count.
     if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
@@ -286,7 +303,7 @@ fn refuse_not_carried(
     let errors = not_carried
         .iter()
         .map(|(i, n)| {
-            let problem = crate::error::InputProblem::LoadNotCarried {
+            let problem = InputProblem::LoadNotCarried {
                 fz: n.fz,
                 most: n.most,
                 free: n.free,
@@ -321,7 +338,7 @@ fn refuse_non_finite(
     let errors = bad
         .into_iter()
         .map(|(i, output)| {
-            let problem = crate::error::InputProblem::NonFiniteOutput { model, output };
+            let problem = InputProblem::NonFiniteOutput { model, output };
             file.error_at(points, i, "fz", problem)
         })
         .collect();
@@ -349,7 +366,10 @@ pub fn run(
         file,
         mut inputs,
         pressure,
-    } = read_points(points)?;
+    } = read_points(
+        points,
+        pressure::tyre_pressures(&tyre, fitted_ranges.as_ref()),
+    )?;
     let p = pressure.clone().unwrap_or_default();
     let given = unread::Points {
         columns: [0, 1, 2, 3, 4].map(|i| &inputs[i].1[..]),
@@ -361,7 +381,7 @@ pub fn run(
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
-    let no_longitudinal_force = checks::no_longitudinal_force(&tyre, &given, &f, &unread);
+    let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let extras = magic_formula_extras(&tyre, &given);
     refuse_not_carried(points, &file, &extras.not_carried)?;
@@ -391,7 +411,7 @@ pub fn run(
         mode,
         clamped,
         off_road,
-        no_longitudinal_force,
+        zero_outputs,
         beyond_my_speed,
         unread,
         sign_changes,
@@ -424,11 +444,7 @@ impl TyreEvalReport {
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
         out.extend(self.sign_changes.iter().map(SignChange::line));
-        out.extend(
-            self.no_longitudinal_force
-                .iter()
-                .map(|n| n.line(self.count)),
-        );
+        out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(

@@ -321,6 +321,9 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     let text = String::from_utf8_lossy(&o.stdout);
     println!("{text}");
     assert!(text.contains("59965 samples: 59965 used"), "{text}");
+    crate::identify_hoosier::the_book_quotes_the_hoosier_mf61_fit_as_the_terminal_prints_it(
+        &text, &out,
+    );
     let report = read_json(&out.with_extension("report.json"));
     assert_eq!(report["rows"]["samples"], 59965);
     assert!(stage(&report, "pure-fx")["skipped"].is_string());

@@ -476,7 +476,12 @@ fn rk4_stays_available_and_agrees_with_the_default_to_its_own_accuracy() {
         "rk4.toml",
         "method = \"rk4\"",
     );
-    let dopri = any_peak(scenario_with("step_gbt6323_pac89.toml", dir.path(), "d.toml", ""));
+    let dopri = any_peak(scenario_with(
+        "step_gbt6323_pac89.toml",
+        dir.path(),
+        "d.toml",
+        "",
+    ));
     let rk4 = any_peak(rk4);
     let (a, b) = (dir.path().join("a"), dir.path().join("b"));
     let text = simulate_to(&rk4, &a);

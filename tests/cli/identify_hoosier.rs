@@ -44,7 +44,7 @@ pub(super) fn the_book_quotes_the_hoosier_mf61_fit_as_the_terminal_prints_it(
     }
     // Each stage stopped on its cap says so on the terminal, in the
     // header and in report.json alike.
-    let file = fs::read_to_string(&tir).unwrap();
+    let file = fs::read_to_string(tir).unwrap();
     let report: serde_json::Value =
         serde_json::from_str(&fs::read_to_string(tir.with_extension("report.json")).unwrap())
             .unwrap();

@@ -18,6 +18,18 @@ pub fn fixed(v: f64, decimals: usize) -> String {
     unsigned_zero(format!("{v:.decimals$}"))
 }
 
+/// `v` to `decimals` decimals with its sign, `+` for a positive value
+/// (`+3.5`, `-0.2`) and none for what rounds to zero (`0.0`, never `-0.0`
+/// or `+0.0`): a change or an error read by its sign.
+pub fn signed(v: f64, decimals: usize) -> String {
+    let s = fixed(v, decimals);
+    if s.starts_with('-') || s.chars().all(|c| c == '0' || c == '.') {
+        s
+    } else {
+        format!("+{s}")
+    }
+}
+
 /// `v` with `digits` significant digits in fixed notation (no negative
 /// zero): slopes spanning 1e1–1e6 read naturally.
 pub fn significant(v: f64, digits: usize) -> String {
@@ -218,6 +230,15 @@ pub fn did_you_mean(given: &str, known: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_signed_value_that_rounds_to_zero_has_no_sign() {
+        assert_eq!(signed(-0.29, 0), "0");
+        assert_eq!(signed(0.04, 1), "0.0");
+        assert_eq!(signed(-0.4, 0), "0");
+        assert_eq!(signed(-35.14, 1), "-35.1");
+        assert_eq!(signed(3.5, 1), "+3.5");
+    }
 
     #[test]
     fn exact_values_read_back_bit_for_bit_without_noise() {

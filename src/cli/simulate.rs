@@ -54,6 +54,24 @@ pub struct MetricsArgs {
     /// (0: any maximum above the noise).
     #[arg(long, default_value_t = handling::metrics::DEFAULT_MIN_OVERSHOOT, allow_negative_numbers = true, value_parser = percent)]
     min_overshoot: f64,
+    /// A column the run gives in degrees (deg/s for `yaw_rate`), converted
+    /// to radians: `steer`, `yaw_rate`, `beta`, `roll` or `bank`
+    /// (repeatable).
+    #[arg(long, value_parser = angle_column)]
+    degrees: Vec<handling::io::AngleColumn>,
+}
+
+/// An angle column's name: refused at its option, with the names known.
+fn angle_column(text: &str) -> Result<handling::io::AngleColumn, String> {
+    use handling::io::AngleColumn;
+    AngleColumn::from_name(text.trim()).ok_or_else(|| {
+        let names: Vec<&str> = AngleColumn::ALL.iter().map(|c| c.name()).collect();
+        format!(
+            "not an angle column of a run{}: one of {}",
+            handling::format::did_you_mean(text, &names),
+            names.join(", ")
+        )
+    })
 }
 
 /// A metrics window, s: refused at its option, with the value given, when
@@ -68,11 +86,15 @@ fn window(text: &str) -> Result<f64, String> {
 }
 
 /// The lowest speed kept, m/s: refused at its option when it is not a
-/// finite number of at least 0 (the library refuses it by its key).
+/// speed from 0 to the fastest a run's speed may be
+/// ([`handling::io::MAX_SPEED`]; the library refuses it by its key).
 fn min_speed(text: &str) -> Result<f64, String> {
+    use handling::io::MAX_SPEED;
     match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        Ok(_) => Err("the lowest speed kept is a finite speed of at least 0 m/s".into()),
+        Ok(v) if v.is_finite() && (0.0..=MAX_SPEED).contains(&v) => Ok(v),
+        Ok(_) => Err(format!(
+            "the lowest speed kept is a speed of 0 to {MAX_SPEED} m/s (no car runs faster)"
+        )),
         Err(_) => Err("not a number (the lowest speed kept is in m/s)".into()),
     }
 }
@@ -109,7 +131,7 @@ pub fn metrics(a: MetricsArgs) -> Result<()> {
         min_overshoot: a.min_overshoot,
         ..MetricSettings::default()
     };
-    let r = metrics::run(&a.run, &settings, a.min_speed)?;
+    let r = metrics::run_with_degrees(&a.run, &settings, a.min_speed, &a.degrees)?;
     for line in r.notes() {
         eprintln!("{line}");
     }

@@ -104,10 +104,44 @@ pub enum UnitSlip {
         /// The largest speed accepted, m/s.
         limit: f64,
     },
-    /// A body roll or road bank column whose size says degrees.
-    #[error("column `{column}`: {} rad is beyond ±{:.0}° and 1 % of the run is beyond {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so in the campaign: `degrees = [\"{column}\"]` under [runs]", Num(*value), limit.to_degrees(), Num(*p99))]
+    /// A speed whose product with the yaw rate is about 3.6 times the
+    /// lateral acceleration: in km/h.
+    #[error("column `speed`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (1/3.6 = 0.278): is `speed` in km/h? divide it by 3.6 (FORMATS.md: m/s)", Num(*value), fixed(*median, 3), plural(*samples, "sample", "samples"), Num(*turning))]
+    SpeedInKmh {
+        /// The speed at the first turning sample, as read.
+        value: f64,
+        /// Median of ay/(speed·yaw_rate) over the turning samples.
+        median: f64,
+        /// Turning samples judged.
+        samples: usize,
+        /// The least |speed × yaw_rate| of a turning sample, m/s².
+        turning: f64,
+    },
+    /// A speed whose median is backwards at speed: another sign
+    /// convention.
+    #[error("column `speed`: {} m/s, and the run's median is {} m/s: `speed` is the forward speed, positive (FORMATS.md, ISO 8855); is the column in another sign convention? negate it", Num(*value), fixed(*median, 2))]
+    SpeedBackwards {
+        /// The first speed backwards beyond 5 m/s, as read.
+        value: f64,
+        /// The run's median speed, as read.
+        median: f64,
+    },
+    /// A sideslip many times what a turning car shows: in degrees.
+    #[error("column `beta`: {} rad where a car turning as this one does shows at most about {} rad (3 m × yaw_rate/speed + 0.1 rad per g of speed × yaw_rate), and over {} `beta` is a median {}× that: is `beta` in degrees? Convert it, or say so: `degrees = [\"beta\"]` under [runs] in a campaign, `--degrees beta` to `metrics`", Num(*value), significant(*bound, 2), plural(*samples, "turning sample", "turning samples"), fixed(*median, 1))]
+    BetaInDegrees {
+        /// The sideslip at the first turning sample, as read.
+        value: f64,
+        /// The bound there, rad.
+        bound: f64,
+        /// Median of |β| over the bound.
+        median: f64,
+        /// Turning samples judged.
+        samples: usize,
+    },
+    /// A body roll, road bank or sideslip column whose size says degrees.
+    #[error("column `{column}`: {} rad is beyond ±{:.0}° and 1 % of the run is beyond {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so: `degrees = [\"{column}\"]` under [runs] in a campaign, `--degrees {column}` to `metrics`", Num(*value), limit.to_degrees(), Num(*p99))]
     RollInDegrees {
-        /// The column (`roll`, `bank`).
+        /// The column (`roll`, `bank`, `beta`).
         column: &'static str,
         /// The first value beyond the limit, as read.
         value: f64,

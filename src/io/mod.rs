@@ -12,6 +12,7 @@ pub mod paths;
 pub mod rig;
 mod run;
 mod run_units;
+pub use run_units::MAX_SPEED;
 pub mod scenario;
 mod schedule;
 pub mod study;

@@ -6,7 +6,7 @@
 
 use super::columns::read_columns;
 use super::run_units::{
-    beyond, check_ay, check_roll_or_bank, check_speed, check_time_step, check_yaw_rate,
+    beyond, check_ay, check_beta, check_roll_or_bank, check_speed, check_time_step, check_yaw_rate,
 };
 use crate::error::{InputError, InputProblem};
 use crate::measured::MeasuredRun;
@@ -30,6 +30,20 @@ pub enum AngleColumn {
 }
 
 impl AngleColumn {
+    /// Every angle column, in a run file's order.
+    pub const ALL: [AngleColumn; 5] = [
+        AngleColumn::Steer,
+        AngleColumn::YawRate,
+        AngleColumn::Beta,
+        AngleColumn::Roll,
+        AngleColumn::Bank,
+    ];
+
+    /// The column named `name`, if it is an angle column.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|c| c.name() == name)
+    }
+
     /// The column's name in a run file.
     pub fn name(self) -> &'static str {
         match self {
@@ -98,10 +112,14 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
         check_ay(path, &c, &speed, &yaw_rate, ay)?;
     }
     let (roll, bank) = (c.take_optional("roll"), c.take_optional("bank"));
-    for (column, v) in [("roll", &roll), ("bank", &bank)] {
+    let beta = c.take_optional("beta");
+    for (column, v) in [("roll", &roll), ("bank", &bank), ("beta", &beta)] {
         if let Some(v) = v {
             check_roll_or_bank(path, &c, column, v)?;
         }
+    }
+    if let Some(beta) = &beta {
+        check_beta(path, &c, &speed, &yaw_rate, beta)?;
     }
     Ok(MeasuredRun {
         path: path.to_path_buf(),
@@ -110,7 +128,7 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
         steer,
         yaw_rate,
         ay,
-        beta: c.take_optional("beta"),
+        beta,
         roll,
         bank,
         ax: c.take_optional("ax"),

@@ -27,8 +27,9 @@ pub const MAX_TIME_STEP: f64 = 0.2;
 /// beyond it.
 pub const MAX_SPEED: f64 = 150.0;
 
-/// The largest body roll or road bank a run in radians holds, rad (1 rad,
-/// 57°: steeper than any banking, far beyond any car's body roll); a
+/// The largest body roll, road bank or sideslip a run in radians holds,
+/// rad (1 rad, 57°: steeper than any banking, far beyond any car's body
+/// roll, and a sideslip past which a car is spinning, not driven); a
 /// larger 99th percentile is a column in degrees.
 pub const MAX_ROLL_OR_BANK: f64 = 1.0;
 
@@ -51,9 +52,14 @@ const TURNING_SAMPLES: usize = 50;
 /// factor of 2), where a car's is near 1 on a flat road.
 const AY_IN_G: (f64, f64) = (0.05, 0.2);
 
-/// The share of the turning samples inside [`AY_IN_G`] that says g: on a
-/// banked oval the ratio scatters (its median can lie in the band, 0.13
-/// on the synthetic oval, with 6 % of the samples in it), in g it holds.
+/// The band of ay/(speed·yaw_rate) of a speed in km/h (1/3.6 = 0.28,
+/// within a factor of 1.4), where a car's is near 1 on a flat road.
+const SPEED_IN_KMH: (f64, f64) = (0.2, 0.4);
+
+/// The share of the turning samples inside [`AY_IN_G`] (or
+/// [`SPEED_IN_KMH`]) that says the unit: on a banked oval the ratio
+/// scatters (its median can lie in the band, 0.13 on the synthetic oval,
+/// with 6 % of the samples in it), in g it holds.
 const AY_IN_G_SHARE: f64 = 0.8;
 
 /// The slowest sample judged for `ay`, m/s.
@@ -118,13 +124,28 @@ pub(super) fn check_ay(
         return Ok(());
     }
     let mut q: Vec<f64> = turning.iter().map(|&i| ay[i] / (speed[i] * r[i])).collect();
-    let (lo, hi) = AY_IN_G;
-    let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
-    if (inside as f64) < AY_IN_G_SHARE * q.len() as f64 {
+    let holds = |(lo, hi): (f64, f64)| {
+        let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
+        inside as f64 >= AY_IN_G_SHARE * q.len() as f64
+    };
+    let (in_g, in_kmh) = (holds(AY_IN_G), holds(SPEED_IN_KMH));
+    if !in_g && !in_kmh {
         return Ok(());
     }
     let m = median(&mut q);
     let i = turning[0];
+    if in_kmh {
+        // ay and yaw rate agree with each other's units (checked above and
+        // by their sizes); speed × yaw rate 3.6 times ay is a speed in
+        // km/h whose values stay below any car's top speed in m/s.
+        let slip = UnitSlip::SpeedInKmh {
+            value: speed[i],
+            median: m,
+            samples: turning.len(),
+            turning: TURNING,
+        };
+        return Err(c.error_at(path, i, "speed", slip.into()));
+    }
     let slip = UnitSlip::AyInG {
         value: ay[i],
         expected: speed[i] * r[i],
@@ -133,6 +154,57 @@ pub(super) fn check_ay(
         turning: TURNING,
     };
     Err(c.error_at(path, i, "ay", slip.into()))
+}
+
+/// The largest sideslip of a car turning at yaw rate `r` and speed `u`
+/// that this check allows for, rad: the geometry of the turn (`b·r/u`, with
+/// 3 m for any car's `b`) and the rear tyres' slip (0.1 rad per g of
+/// `u·r`, a rear cornering stiffness of 10 per unit load, softer than any
+/// road tyre's 15–25).
+fn sideslip_bound(u: f64, r: f64) -> f64 {
+    3.0 * r.abs() / u + 0.1 * (u * r).abs() / crate::constants::G
+}
+
+/// Beyond this median of |β| over [`sideslip_bound`] the sideslip is in
+/// degrees: a car's is 0.08–0.5 of the bound (the synthetic programme, the
+/// sedan analogue, the Putnam log), in degrees 4.5–27; a car drifting at
+/// 0.5 rad on a 20 m radius at 1 g reaches 2.
+const BETA_IN_DEGREES: f64 = 2.5;
+
+/// Refuses a `beta` whose median over the turning samples (as
+/// [`check_ay`]'s) is beyond [`BETA_IN_DEGREES`] of [`sideslip_bound`]: a
+/// sideslip in degrees that stays below 1 rad, which
+/// [`check_roll_or_bank`]'s size check leaves.
+pub(super) fn check_beta(
+    path: &Path,
+    c: &Columns,
+    speed: &[f64],
+    r: &[f64],
+    beta: &[f64],
+) -> Result<(), InputError> {
+    let turning: Vec<usize> = (0..beta.len())
+        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
+        .filter(|&i| beta[i].is_finite())
+        .collect();
+    if turning.len() < TURNING_SAMPLES {
+        return Ok(());
+    }
+    let mut q: Vec<f64> = turning
+        .iter()
+        .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
+        .collect();
+    let m = median(&mut q);
+    if m <= BETA_IN_DEGREES {
+        return Ok(());
+    }
+    let i = turning[0];
+    let slip = UnitSlip::BetaInDegrees {
+        value: beta[i],
+        bound: sideslip_bound(speed[i], r[i]),
+        median: m,
+        samples: turning.len(),
+    };
+    Err(c.error_at(path, i, "beta", slip.into()))
 }
 
 /// Refuses a median time step above [`MAX_TIME_STEP`] (a time in ms),
@@ -163,6 +235,18 @@ pub(super) fn check_speed(path: &Path, c: &Columns, u: &[f64]) -> Result<(), Inp
         Some(i) => Some((i, p99(u).unwrap_or(0.0))),
         None => beyond(u, MAX_SPEED),
     };
+    // A car reverses slowly and briefly: a run whose median is backwards
+    // at speed is a forward speed logged in another sign convention.
+    let mut sorted = u.to_vec();
+    let backwards = !u.is_empty() && median(&mut sorted) < -MOVING;
+    if found.is_none() && backwards {
+        let i = u.iter().position(|v| *v < -MOVING).unwrap_or(0);
+        let slip = UnitSlip::SpeedBackwards {
+            value: u[i],
+            median: median(&mut sorted),
+        };
+        return Err(c.error_at(path, i, "speed", slip.into()));
+    }
     match found {
         Some((i, p99)) => Err(c.error_at(
             path,

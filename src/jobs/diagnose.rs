@@ -198,11 +198,11 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     for r in d.ranking.iter().chain(d.combinations.iter()) {
         let p: Vec<String> = r.parameters.iter().map(words::parameter).collect();
         out.push(format!(
-            "  {:<28} {:>8.3} {} {:>12.0}  {}",
+            "  {:<28} {:>8.3} {} {:>12}  {}",
             r.effect,
             r.heldout_error_after,
             reduction_cells(d.reductions(r)),
-            r.delta_bic,
+            crate::format::fixed(r.delta_bic, 0),
             p.join(", ")
         ));
         if let Some(w) = words::rank_warnings(&r.warnings) {
@@ -277,8 +277,12 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(singles.iter().map(|s| {
             format!(
-                "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12.0}",
-                s.effect, s.insample_error_after, "—", s.insample_reduction_percent, s.delta_bic
+                "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12}",
+                s.effect,
+                s.insample_error_after,
+                "—",
+                s.insample_reduction_percent,
+                crate::format::fixed(s.delta_bic, 0)
             )
         }));
     }

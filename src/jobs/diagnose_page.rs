@@ -253,7 +253,7 @@ fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> 
         Cell::Number(format!("{:.3}", r.heldout_error_after)),
         held_out,
         in_sample,
-        Cell::Number(format!("{:.0}", r.delta_bic)),
+        Cell::Number(crate::format::fixed(r.delta_bic, 0)),
         Cell::Number(format!("{} of {}", r.folds_converged, r.folds)),
         Cell::Text(params.join("; ")),
         Cell::Text(words::rank_warnings(&r.warnings).unwrap_or_default()),

@@ -3,7 +3,7 @@
 //! `simulate` prints too.
 
 use crate::error::{Error, ParamError};
-use crate::io::read_run;
+use crate::io::{read_run_with, AngleColumn};
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
 use crate::metrics::{MetricSettings, StepMetrics};
@@ -48,9 +48,20 @@ pub fn run(
     settings: &MetricSettings,
     min_speed: f64,
 ) -> Result<MeasuredMetricsReport, Error> {
+    run_with_degrees(path, settings, min_speed, &[])
+}
+
+/// [`run`] of a file whose columns `degrees` are in degrees (deg/s for the
+/// yaw rate), as a campaign's `[runs] degrees` says of its files.
+pub fn run_with_degrees(
+    path: &Path,
+    settings: &MetricSettings,
+    min_speed: f64,
+    degrees: &[AngleColumn],
+) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let mut m = measured_step_metrics(read_run(path)?, min_speed, settings)?;
+    let mut m = measured_step_metrics(read_run_with(path, degrees)?, min_speed, settings)?;
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
         m.warnings.push(format!(
@@ -122,9 +133,14 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  yaw-rate peak time       {:>10} s",
             opt(m.yaw_rate_peak_time, 1.0)
         ),
+        // Without a peak the overshoot is below what the run resolves (the
+        // line after the table says how far), not a measured 0.
         format!(
-            "  yaw-rate overshoot       {:>10.2} %",
-            m.yaw_rate_overshoot
+            "  yaw-rate overshoot       {:>10} %",
+            match m.yaw_rate_peak_time {
+                Some(_) => format!("{:.2}", m.yaw_rate_overshoot),
+                None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
+            }
         ),
         format!(
             "  ay response time         {:>10} s",

@@ -75,6 +75,18 @@ pub fn applicability_with_grip(
             u.abs()
         ));
     }
+    for (name, time) in [
+        ("yaw rate", Some(m.yaw_rate_response_time)),
+        ("lateral acceleration", m.ay_response_time),
+    ] {
+        if let Some(t) = time.filter(|t| *t <= 0.0) {
+            out.push(format!(
+                "the {name} reaches 90 % of its step {} s before the steer reaches half of its own (response time {} s): a response that leads the steer is a crawl's geometry or a record whose channels are not aligned in time, not the lag GB/T 6323 and ISO 7401 measure",
+                crate::format::significant(-t, 2),
+                crate::format::significant(t, 2)
+            ));
+        }
+    }
     if let Some(beta) = m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
         // In the steady turn both axles use |ay|/(μ·g) of their grip.
         let share = grip.zip(m.ay_steady).map(|(g, ay)| ay.abs() / g);

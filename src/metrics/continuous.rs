@@ -221,8 +221,12 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
     let an = |x: &Sample| (x.ay - a0) / a_step;
     let t0 = first_reach(rec, t_first, |x| dn(x) - 0.5).ok_or(MetricsError::NoHalfStep)?;
-    let tr = first_reach(rec, t0, |x| rn(x) - 0.9).ok_or(MetricsError::NoCrossing("yaw rate"))?;
-    let ta = first_reach(rec, t0, |x| an(x) - 0.9)
+    // From the steer's onset, not t₀: a response may lead the steer's
+    // half-way point ([`super`]).
+    let onset = first_reach(rec, t_first, |x| dn(x) - 0.05).unwrap_or(t0);
+    let tr =
+        first_reach(rec, onset, |x| rn(x) - 0.9).ok_or(MetricsError::NoCrossing("yaw rate"))?;
+    let ta = first_reach(rec, onset, |x| an(x) - 0.9)
         .ok_or(MetricsError::NoCrossing("lateral acceleration"))?;
     // The peak: the first local maximum of the normalised yaw rate above the
     // threshold is the first zero of its derivative after it first exceeds
@@ -236,7 +240,6 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let peak_time = peak.map(|(tp, _)| tp - t0);
     let beta_steady = bs - b0;
     let tb = peak_time.map(|tp| tp * beta_steady.abs().to_degrees());
-    let onset = first_reach(rec, t_first, |x| dn(x) - 0.05).unwrap_or(t0);
     let to = (onset + s.variance_window).min(t_last);
     let [e_r, e_ay] = integrate(rec, onset, to, |_, x| {
         let d = dn(x);

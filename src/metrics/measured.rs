@@ -68,10 +68,13 @@ fn held(t: &[f64], steer: &[f64]) -> Vec<bool> {
 /// units: a frequency sweep gives medians near or below zero), the median
 /// of `q = r·l/(u·δ)` and the samples; about `1/(1 + K·u²)` (0.2–1 for an
 /// understeering car, somewhat above 1 for an oversteering one). None for
-/// a run that does not steer (95th percentile below 0.01 rad: a straight
-/// run whose steer sensor sits a few milliradians off shows no gain) or
-/// with fewer than 50 such samples. `metrics` and `diagnose` judge a run
-/// by it alike ([`steer_problem`]).
+/// a run that neither steers nor turns (95th percentiles of |δ| and of the
+/// neutral steer `|r|·l/u` both below 0.01 rad: a straight run whose steer
+/// sensor sits a few milliradians off shows no gain) or with fewer than 50
+/// such samples. A run that turns on a steer below 0.01 rad (a radian
+/// steer divided by 57 once more) is judged on its steered samples alike,
+/// so that its ratio, far above 1, is seen. `metrics` and `diagnose` judge
+/// a run by it alike ([`steer_problem`]).
 pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<(f64, usize)> {
     let at_speed: Vec<usize> = (0..run.t.len())
         .filter(|&i| run.speed[i] >= min_speed.max(5.0))
@@ -79,10 +82,17 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
     let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
     size.sort_by(f64::total_cmp);
     let p95 = quantile(&size, 0.95)?;
-    if p95 < 0.01 {
-        return None;
-    }
-    let steered = (0.3 * p95).max(0.005);
+    let mut neutral: Vec<f64> = (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
+        .map(|i| (run.yaw_rate[i] * wheelbase / run.speed[i]).abs())
+        .collect();
+    neutral.sort_by(f64::total_cmp);
+    let turns = quantile(&neutral, 0.95)? >= 0.01;
+    let steered = match (p95 >= 0.01, turns) {
+        (true, _) => (0.3 * p95).max(0.005),
+        (false, true) if p95 > 0.0 => 0.3 * p95,
+        _ => return None,
+    };
     let held = held(&run.t, &run.steer);
     let mut q: Vec<f64> = at_speed
         .into_iter()

@@ -7,7 +7,9 @@
 //!   seconds, its steady value its mean over the last `steady_window` seconds;
 //!   x̂ = (x − x₀)/(x_ss − x₀) is the normalised response;
 //! - time zero t₀ is where δ̂ first reaches 0.5 (50 % of the steer input);
-//! - response time: t₀ to the first time x̂ = 0.9; peak response time: t₀ to
+//! - response time: t₀ to the first time x̂ = 0.9 after the steer's onset
+//!   (negative where the response leads the steer's half-way point, as a
+//!   crawl's lateral acceleration does); peak response time: t₀ to
 //!   the peak of r̂, the first local maximum after the 90 % crossing that
 //!   exceeds the steady state by more than the noise allows and by at least
 //!   `min_overshoot` (`1 + max(5·σ̂, 2·s_ss, min_overshoot)`, 1 % by default:
@@ -417,10 +419,15 @@ pub(crate) fn step_metrics(
     };
     let r_noise = gain * r.noise;
     let t0 = first_crossing(t, &d.values, 0.5, t[0]).ok_or(MetricsError::NoHalfStep)?;
-    let tr = first_crossing(t, &r.values, 0.9, t0).ok_or(MetricsError::NoCrossing("yaw rate"))?;
+    // The 90 % crossings are looked for from the steer's onset, not from
+    // time zero: at a crawl the lateral acceleration (through v̇) leads the
+    // steer's half-way point, and a search from t₀ would find t₀ itself.
+    let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
+    let tr =
+        first_crossing(t, &r.values, 0.9, onset).ok_or(MetricsError::NoCrossing("yaw rate"))?;
     let ta = match &a {
         Some(a) => Some(
-            first_crossing(t, &a.values, 0.9, t0)
+            first_crossing(t, &a.values, 0.9, onset)
                 .ok_or(MetricsError::NoCrossing("lateral acceleration"))?,
         ),
         None => None,
@@ -444,7 +451,6 @@ pub(crate) fn step_metrics(
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,
     };
-    let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
     let window = (onset, onset + s.variance_window);
     let e_r = total_variance(t, &d.values, &r.values, window.0, window.1);
     let e_ay = a

@@ -22,6 +22,7 @@ use crate::diagnose::report::outcome::{
     SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Part, Reduction, ScaleSource, Shrinkage};
+use crate::format::signed;
 
 impl Verdict {
     /// The verdict in one sentence ([`statement`]; written here, beside
@@ -173,7 +174,10 @@ pub fn refusal(r: &Refusal) -> String {
             format!("it removes less than the {threshold_percent:.0} % acceptance needs")
         }
         Refusal::BicNotLower { delta_bic } => {
-            format!("its BIC is not lower than the base model's (ΔBIC {delta_bic:+.0})")
+            format!(
+                "its BIC is not lower than the base model's (ΔBIC {})",
+                signed(*delta_bic, 0)
+            )
         }
         Refusal::AxlesNoTyre { no_tyre } => format!(
             "fitted with it, the axles are no tyre ({})",
@@ -522,7 +526,9 @@ pub fn finding(f: &GapFinding) -> String {
             gain_error_db,
             phase_error_deg,
         } => format!(
-            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {gain_error_db:+.1} dB, {phase_error_deg:+.0}°"
+            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {} dB, {}°",
+            signed(*gain_error_db, 1),
+            signed(*phase_error_deg, 0)
         ),
         GapFinding::Dominant {
             channel,

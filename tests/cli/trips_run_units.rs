@@ -1,0 +1,179 @@
+//! Measured runs written in another unit or sign than FORMATS.md's that
+//! pass every size check (a speed in km/h below any car's top speed in m/s,
+//! a sideslip in degrees below 1 "rad", a steer divided by 57 once more, a
+//! speed logged backwards), and a response that leads the steer: each
+//! caught by the kinematics the run's own channels obey, as a user runs
+//! the tool.
+
+use super::*;
+
+/// The rows of the bundled sedan step (80 km/h, 1°) as `simulate` writes
+/// them, with the columns of a logger: t, speed, steer, yaw_rate, ay, beta,
+/// and `edit` applied to each row's (speed, steer, beta).
+fn logged(dir: &Path, edit: fn(&mut [f64; 6])) -> PathBuf {
+    let out = dir.join("sim");
+    if !out.join("history.csv").exists() {
+        let o = run(&[
+            "simulate",
+            "scenarios/sedan_step.toml",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let text = fs::read_to_string(out.join("history.csv")).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |name: &str| head.iter().position(|h| *h == name).unwrap();
+    let cols = ["t", "speed", "steer", "yaw_rate", "ay", "beta"].map(at);
+    let mut csv = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+    for line in lines {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let mut row = cols.map(|k| v[k]);
+        edit(&mut row);
+        let cells: Vec<String> = row.iter().map(|x| format!("{x}")).collect();
+        csv += &(cells.join(",") + "\n");
+    }
+    let p = dir.join("run.csv");
+    fs::write(&p, csv).unwrap();
+    p
+}
+
+/// `metrics` of `path` with `extra` options: success, stdout and stderr.
+fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
+    let mut args = vec!["metrics", path.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let o = run(&args);
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    (o.status.success(), said, stderr(&o))
+}
+
+#[test]
+fn a_speed_in_km_h_below_any_cars_top_speed_in_m_s_is_refused_by_ay_against_speed_times_yaw_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    // 80 km/h written as 80: below the 150 m/s no car reaches.
+    let p = logged(dir.path(), |r| r[1] *= 3.6);
+    let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok);
+    assert!(e.contains("run.csv:"), "{e}");
+    assert!(
+        e.contains("column `speed`: 79.9") && e.contains("is `speed` in km/h? divide it by 3.6"),
+        "{e}"
+    );
+    // In m/s the same run is measured.
+    let p = logged(dir.path(), |_| {});
+    assert!(metrics(&p, &[]).0);
+}
+
+#[test]
+fn a_sideslip_in_degrees_is_refused_and_measured_once_declared() {
+    let dir = tempfile::tempdir().unwrap();
+    // The step's sideslip, about 0.5°, is 0.5 "rad" in degrees: below the
+    // 1 rad a size check refuses, 15 times what this turn allows.
+    let p = logged(dir.path(), |r| r[5] = r[5].to_degrees());
+    let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok);
+    assert!(
+        e.contains("column `beta`:") && e.contains("is `beta` in degrees?"),
+        "{e}"
+    );
+    assert!(e.contains("`--degrees beta` to `metrics`"), "{e}");
+    let (ok, said, e) = metrics(&p, &["--degrees", "beta"]);
+    assert!(ok, "{e}");
+    let (_, si, _) = metrics(&logged(dir.path(), |_| {}), &[]);
+    let line = |s: &str| {
+        s.lines()
+            .find(|l| l.contains("steady sideslip"))
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(line(&said), line(&si));
+    // A name that is no angle column is refused with the one meant.
+    let (ok, _, e) = metrics(&p, &["--degrees", "bet"]);
+    assert!(!ok && e.contains("did you mean `beta`?"), "{e}");
+}
+
+#[test]
+fn a_speed_logged_backwards_is_refused_at_its_row_not_measured_as_a_standstill() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged(dir.path(), |r| r[1] = -r[1]);
+    let (ok, _, e) = metrics(&p, &["--min-speed", "0"]);
+    assert!(!ok);
+    assert!(
+        e.contains("run.csv:2:2: column `speed`: -22.2") && e.contains("negate it"),
+        "{e}"
+    );
+    // A lowest speed no car reaches is refused at its option.
+    let (ok, _, e) = metrics(&logged(dir.path(), |_| {}), &["--min-speed", "1e308"]);
+    assert!(!ok && e.contains("--min-speed"), "{e}");
+}
+
+#[test]
+fn a_steer_divided_by_57_once_more_is_noted_in_the_diagnosis() {
+    // Every run's steer a radian steer taken for degrees: below the 0.01
+    // rad under which a run counted as not steering, while the car turns.
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "small", &["--seed", "1"]);
+    for e in fs::read_dir(c.join("runs")).unwrap() {
+        let p = e.unwrap().path();
+        let text = fs::read_to_string(&p).unwrap();
+        let mut lines = text.lines();
+        let head = lines.next().unwrap();
+        let k = head.split(',').position(|h| h == "steer").unwrap();
+        let mut out = format!("{head}\n");
+        for l in lines {
+            let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+            cells[k] = format!("{}", cells[k].parse::<f64>().unwrap().to_radians());
+            out += &(cells.join(",") + "\n");
+        }
+        fs::write(&p, out).unwrap();
+    }
+    let (stdout, d) = diagnose_campaign(&c);
+    let notes = d["notes"].to_string();
+    assert!(
+        notes.contains("step_040kph_3ms2.csv: the yaw rate is")
+            && notes.contains("× a neutral car's for this steer"),
+        "{notes}"
+    );
+    assert!(
+        stdout.contains("is `steer` the road-wheel angle in radians"),
+        "{stdout}"
+    );
+    // Its gap, flat in frequency at −35 dB (1/57), printed its phase as
+    // "-0°": nothing rounded to zero keeps a sign.
+    assert!(stdout.contains("off by -35."), "{stdout}");
+    for signed_zero in ["-0°", "+0°", " -0 ", "-0.0 "] {
+        assert!(!stdout.contains(signed_zero), "{signed_zero}: {stdout}");
+    }
+}
+
+#[test]
+fn a_lateral_acceleration_that_leads_the_steer_has_a_negative_response_time_said_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let tyres = format!("\"{}/", root().join("tyres").display());
+    let text = text.replace("\"../tyres/", &tyres);
+    let speed = text
+        .lines()
+        .find(|l| l.starts_with("speed"))
+        .expect("a speed key");
+    let sc = dir.path().join("slow.toml");
+    fs::write(&sc, text.replace(speed, "speed = 6.0")).unwrap();
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let m = read_json(&out.join("metrics.json"));
+    let ta = m["ay_response_time"].as_f64().unwrap();
+    assert!(ta < 0.0, "{m}");
+    let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
+    assert!(
+        said.contains("the lateral acceleration reaches 90 % of its step")
+            && said.contains("before the steer reaches half of its own"),
+        "{said}"
+    );
+}

@@ -145,7 +145,7 @@ impl Synthetic {
         };
         let [front, rear] = truth_downforce(self.spec.programme);
         let model = if front != 0.0 || rear != 0.0 {
-            format!("{model}, down-force {front}/{rear} N/(m/s)^2 front/rear")
+            format!("{model}, down-force {front}/{rear} N/(m/s)² front/rear")
         } else {
             model
         };

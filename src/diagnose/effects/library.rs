@@ -145,8 +145,8 @@ impl Effect for AeroLoad {
     /// No negative down-force (a lift is not the model): 0 is a physical
     /// limit.
     const PARAMETERS: &'static [Parameter] = &[
-        par("front", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
-        par("rear", "N/(m/s)^2", 0.0, 0.0, 6.0).floor(),
+        par("front", "N/(m/s)²", 0.0, 0.0, 6.0).floor(),
+        par("rear", "N/(m/s)²", 0.0, 0.0, 6.0).floor(),
     ];
     const SIGNATURE: &'static str = "grip and balance that change with speed squared at equal lateral acceleration: steps at two speeds, same level";
     const NEEDS: Needs = Needs::Nothing;

@@ -340,7 +340,7 @@ fn a_parameter_on_a_physical_limit_is_not_worded_as_a_search_bound() {
     let at = |v, b| {
         parameter(&fitted(
             "aero_load.front",
-            "N/(m/s)^2",
+            "N/(m/s)²",
             v,
             EffectKind::AeroLoad.parameters()[0].bound_at(b),
         ))
@@ -348,7 +348,7 @@ fn a_parameter_on_a_physical_limit_is_not_worded_as_a_search_bound() {
     let floor = at(0.0, 0.0);
     assert_eq!(
         floor,
-        "aero_load.front = 0.0000 N/(m/s)^2 (at its physical limit: any smaller value would be negative)"
+        "aero_load.front = 0.0000 N/(m/s)² (at its physical limit: any smaller value would be negative)"
     );
     assert!(at(6.0, 6.0).contains("at its search bound: the data would take it further"));
     let share = parameter(&fitted(
@@ -520,8 +520,8 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
     );
     let two = VerdictWarning::OnSearchBound {
         parameters: vec![
-            fitted("aero_load.front", "N/(m/s)^2", 6.0, Some(Bound::Search)),
-            fitted("aero_load.rear", "N/(m/s)^2", 6.0, Some(Bound::Search)),
+            fitted("aero_load.front", "N/(m/s)²", 6.0, Some(Bound::Search)),
+            fitted("aero_load.rear", "N/(m/s)²", 6.0, Some(Bound::Search)),
         ],
     };
     let w = verdict_warning(&two);

@@ -2,8 +2,10 @@
 //! `--pressure`) that no level lies near, but that would select one read
 //! in the unit people write the variable in: a load in kN, a camber in
 //! degrees, a pressure in kPa, bar or psi, where the options take N, rad
-//! and Pa. Only a conversion that selects a level is offered, so the hint
-//! never points at a value the file does not have.
+//! and Pa. A conversion is offered where it selects a level, or where
+//! the request is no tyre test's in the option's unit (`--camber 2`, 115°):
+//! then saying it selects no level either, so the hint never points at a
+//! value the file does not have.
 
 use super::rig::Variable;
 
@@ -16,8 +18,9 @@ pub struct LevelSlip {
     pub meant: f64,
     /// The unit the request reads as: `kN`, `°`, `kPa`, `bar`, `psi`.
     pub unit: &'static str,
-    /// The nominal value (SI) of the level `meant` selects.
-    pub level: f64,
+    /// The nominal value (SI) of the level `meant` selects (`None`: it
+    /// selects none, offered because the request is no test's in SI).
+    pub level: Option<f64>,
 }
 
 /// The units a request of `variable` may have been written in, each with
@@ -53,11 +56,14 @@ pub(super) fn unit_slip(variable: Variable, requested: f64, slip: &Option<LevelS
         Variable::Pressure => "Pa",
     };
     let gap = if s.unit == "°" { "" } else { " " };
+    let selects = match s.level {
+        Some(level) => format!(", which selects the {} level?", variable.display(level)),
+        None => "? no level lies near that either".into(),
+    };
     format!(
-        "; the value is read in {si}: did you mean {} {si} ({}{gap}{}), which selects the {} level?",
+        "; the value is read in {si}: did you mean {} {si} ({}{gap}{}){selects}",
         super::number::number(s.meant),
         super::number::number(requested),
         s.unit,
-        variable.display(s.level)
     )
 }

@@ -350,7 +350,7 @@ pub enum InputProblem {
         fy_slope: Option<f64>,
     },
     /// A requested camber or pressure that no level of the file lies near.
-    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), levels.iter().map(|v| variable.display(*v)).collect::<Vec<_>>().join(", "), variable.display(*separation))]
+    #[error("no {} level near the requested {}{} (levels: {}; a level holds values within {} of its range)", variable.column(), requested_text(*variable, *requested), unit_slip(*variable, *requested, slip), levels.iter().map(|v| variable.in_option_unit(*v)).collect::<Vec<_>>().join(", "), variable.in_option_unit(*separation))]
     NoLevelNear {
         /// The grouping variable.
         variable: Variable,
@@ -360,7 +360,8 @@ pub enum InputProblem {
         levels: Vec<f64>,
         /// The separation of levels (SI).
         separation: f64,
-        /// The request read in another unit, where it selects a level.
+        /// The request read in another unit, where it selects a level or
+        /// the request is no test's in SI.
         slip: Option<LevelSlip>,
     },
     /// A pressure requested from a file without pressures.

@@ -63,7 +63,7 @@ fn messages_read_as_the_text_they_replace() {
         slip: Some(LevelSlip {
             meant: 1650.0,
             unit: "kN",
-            level: 1656.0,
+            level: Some(1656.0),
         }),
     };
     assert!(
@@ -80,7 +80,7 @@ fn messages_read_as_the_text_they_replace() {
         slip: Some(LevelSlip {
             meant: 1.6_f64.to_radians(),
             unit: "°",
-            level: 1.6_f64.to_radians(),
+            level: Some(1.6_f64.to_radians()),
         }),
     };
     assert!(

@@ -55,6 +55,17 @@ pub enum ParamReason {
         /// The most rows (after the first) a history holds.
         max_rows: f64,
     },
+    /// Metric windows that do not fit in a step steer's record (0 to its
+    /// `end`), s: the initial window at its start, the steady at its end.
+    #[error("the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s) do not fit in the record, 0 to `end` = {} s: shorten the window or lengthen the manoeuvre's `end`", super::number::Num(*pre_window), super::number::Num(*steady_window), super::number::Num(*end))]
+    WindowsBeyondRecord {
+        /// The initial-value window, s.
+        pre_window: f64,
+        /// The steady-value window, s.
+        steady_window: f64,
+        /// The record's end, s.
+        end: f64,
+    },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]
     NotPositive,
@@ -352,6 +363,9 @@ pub enum Limit {
     /// A tyre's cornering stiffness, N/rad.
     #[error("no tyre's cornering stiffness reaches 2e6 N/rad (a car tyre's is 5e4–1.5e5, a truck tyre's about 3e5); the key is in N/rad, per wheel: check the unit")]
     CorneringStiffness,
+    /// A tyre's cornering stiffness below any tyre's: in N/deg.
+    #[error("no tyre's cornering stiffness is below 900 N/rad (a bicycle tyre's is about 5e3, a car tyre's 5e4–1.5e5); the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 (500 N/deg is 28648 N/rad)")]
+    CorneringStiffnessInDegrees,
     /// A tyre's reference or rated load, N.
     #[error("a tyre carries 100 N (a bicycle) to 1e5 N (a mining truck); the key is in N: is the value in kN? (4 kN is 4000)")]
     TyreLoad,

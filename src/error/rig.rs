@@ -35,4 +35,25 @@ impl Variable {
             Variable::Pressure => format!("{} kPa", fixed(v / 1000.0, 1)),
         }
     }
+
+    /// A value in the unit its option takes, with the unit people read it
+    /// in beside where they differ: `0.0279 rad (1.60°)`, `2193 N`.
+    pub fn in_option_unit(self, v: f64) -> String {
+        match self {
+            Variable::Camber => format!("{} rad ({})", fixed(v, 4), self.display(v)),
+            _ => self.display(v),
+        }
+    }
+
+    /// Whether a request (SI) is no tyre test's in the option's unit at
+    /// all: a load under any test's, a camber past ±45°, a pressure under
+    /// 0.1 bar. Such a request is answered with its likeliest other unit
+    /// even where that selects no level.
+    pub fn implausible(self, v: f64) -> bool {
+        match self {
+            Variable::Load => v.abs() < crate::io::rig::MIN_MEDIAN_LOAD,
+            Variable::Camber => v.abs() > std::f64::consts::FRAC_PI_4,
+            Variable::Pressure => v.abs() < crate::io::rig::MIN_MEDIAN_PRESSURE,
+        }
+    }
 }

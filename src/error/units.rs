@@ -68,6 +68,16 @@ pub enum UnitSlip {
         /// The smallest median load accepted, N.
         limit: f64,
     },
+    /// One load of a few units between loaded rows: in kN.
+    #[error("column `fz`: {} N between rows at {} and {} N, where no tyre test dips below {} N for one sample: `fz` is in N (FORMATS.md); is the cell in kN? {} kN is {} N", Num(*value), Num(neighbours[0]), Num(neighbours[1]), Num(*limit), Num(*value), Num(value * 1e3))]
+    LoadRowInKn {
+        /// The load, as read.
+        value: f64,
+        /// The loads of the rows before and after, as read.
+        neighbours: [f64; 2],
+        /// The smallest load accepted between loaded rows, N.
+        limit: f64,
+    },
     /// An inflation pressure of a few units: in kPa, bar or psi.
     #[error("column `pressure`: {} Pa, in a file whose median pressure is {} Pa: no inflated tyre runs below {} Pa (0.1 bar; a racing slick runs at about 70 kPa, a car tyre at 200–300 kPa): `pressure` is in Pa (FORMATS.md); is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?", Num(*value), Num(*median), Num(*limit))]
     PressureNotInPa {

@@ -10,6 +10,7 @@ pub mod fitted_ranges;
 mod limits;
 pub mod paths;
 pub mod rig;
+pub(crate) mod rig_rows;
 mod run;
 mod run_units;
 pub use run_units::MAX_SPEED;

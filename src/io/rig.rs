@@ -74,6 +74,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         }
     }
     check_load_unit(path, &c, &fz)?;
+    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
     let n = fz.len();
     let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
         (Some(a), Some(f)) => Some((a, f)),
@@ -142,6 +143,9 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
                 if let Some((i, slip)) = pressure_not_in_pa(&p) {
                     return Err(c.error_at(path, i, "pressure", slip.into()));
                 }
+                // One cell in kPa among Pa: refused at it, not dropped as
+                // a sample between levels.
+                super::rig_rows::refuse_rows_not_in_pa(path, &c, &p, None)?;
                 Some(p)
             }
             None => None,

@@ -270,6 +270,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         }
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
+    check_windows(src, &f.metrics, &manoeuvre)?;
     let duration = manoeuvre.end_time() - manoeuvre.start_time();
     // Intervals, not rows: the least step the refusal suggests then runs
     // (a hair of slack for its rounding).
@@ -410,6 +411,27 @@ fn step_steer(
             end: s.end,
         }))
     })
+}
+
+/// A step steer's `[metrics]` windows against its record, refused at the
+/// longer window's key: found when the scenario is read, not after the run.
+fn check_windows(src: &TomlSource, s: &MetricSettings, m: &Manoeuvre) -> Result<(), InputError> {
+    let Manoeuvre::StepSteer(step) = m else {
+        return Ok(());
+    };
+    if s.pre_window + s.steady_window < step.end {
+        return Ok(());
+    }
+    let reason = ParamReason::WindowsBeyondRecord {
+        pre_window: s.pre_window,
+        steady_window: s.steady_window,
+        end: step.end,
+    };
+    let e = match s.pre_window > s.steady_window {
+        true => ParamError::new("pre_window", s.pre_window, reason),
+        false => ParamError::new("steady_window", s.steady_window, reason),
+    };
+    Err(param_error(src, Some("metrics"), e))
 }
 
 /// A replay of a measured run: the run read and cleaned (standstills,

@@ -56,17 +56,21 @@ pub const STEER_RATE: f64 = 5.0;
 /// standards mean. A measured run's grip is not known:
 /// [`applicability_with_grip`] for a run whose tyres are.
 pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
-    applicability_with_grip(m, speed, None)
+    applicability_with_grip(m, speed, None, None)
 }
 
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
 /// m/s², the lower axle's peak at static load, road friction included):
 /// a sideslip beyond 10° with the tyres at under [`KINEMATIC_GRIP`] of it
-/// is said as the kinematic turn it is ([`kinematic_turn`]), not a slide.
+/// is said as the kinematic turn it is ([`kinematic_turn`]), not a slide;
+/// and a yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] where no axle used
+/// more than [`KINEMATIC_GRIP`] of its grip anywhere in the run
+/// (`peak_share`) as the lightly damped linear response it is, not a spin.
 pub fn applicability_with_grip(
     m: &StepMetrics,
     speed: Option<f64>,
     grip: Option<f64>,
+    peak_share: Option<f64>,
 ) -> Vec<String> {
     let mut out = Vec::new();
     if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
@@ -102,7 +106,18 @@ pub fn applicability_with_grip(
             ),
         });
     }
-    if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
+    let linear = peak_share.filter(|s| *s < KINEMATIC_GRIP);
+    if let (true, Some(share)) = (m.yaw_rate_overshoot > SPIN_OVERSHOOT, linear) {
+        // A 2-DOF car's yaw damping falls as 1/u while its stiffness
+        // (from the tyres) does not: at high speed a step rings, with
+        // every tyre on the linear part of its curve.
+        out.push(format!(
+            "the yaw rate overshoots its steady value by {:.0} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{}); the metrics still describe it, a response far from the standards' well-damped steps",
+            m.yaw_rate_overshoot,
+            100.0 * share,
+            speed.map_or_else(String::new, |u| format!(", here {:.1} m/s", u.abs()))
+        ));
+    } else if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
         out.push(format!(
             "the yaw rate overshoots its steady value by {:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe",
             m.yaw_rate_overshoot
@@ -339,14 +354,14 @@ mod tests {
             ay_steady: Some(0.78),
             ..moderate()
         };
-        let w = applicability_with_grip(&slow, Some(2.0), Some(9.8));
+        let w = applicability_with_grip(&slow, Some(2.0), Some(9.8), None);
         assert!(
             w[1].starts_with("the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 8 % of their grip, and at 2.00 m/s the 28.6° steer"),
             "{w:?}"
         );
         // At half the grip and above, or with the grip unknown: a slide.
         for grip in [Some(1.56), None] {
-            let w = applicability_with_grip(&slow, Some(2.0), grip);
+            let w = applicability_with_grip(&slow, Some(2.0), grip, None);
             assert!(w[1].contains("the car is sliding, past its grip"), "{w:?}");
         }
     }

@@ -18,6 +18,12 @@ pub const MAX_CONTACT_LENGTH: f64 = 1.0;
 /// about 3e5 N/rad, a car's 5e4–1.5e5).
 pub const MAX_CORNERING_STIFFNESS: f64 = 2e6;
 
+/// The least cornering stiffness, N/rad: a bicycle tyre's is about 5e3,
+/// a car tyre's 5e4–1.5e5; a car tyre's stiffness typed in N/deg (500–2,500)
+/// lands below or near it. Under the fits' box (1e3), so that no fitted
+/// tyre is refused.
+pub const MIN_CORNERING_STIFFNESS: f64 = 900.0;
+
 /// The loads of a tyre, N: a bicycle's above 100 N, a mining truck's
 /// below 1e5 N.
 pub const TYRE_LOAD: (f64, f64) = (100.0, 1e5);
@@ -49,14 +55,19 @@ pub(crate) fn contact_length(key: &str, v: f64) -> Result<(), ParamError> {
     ParamError::in_range(key, v, 0.0, MAX_CONTACT_LENGTH, Limit::ContactLength)
 }
 
-/// A cornering stiffness, N/rad.
+/// A cornering stiffness, N/rad: a small positive one is said as the
+/// N/deg it likely is.
 pub(crate) fn cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
+    let why = match v > 0.0 && v <= MIN_CORNERING_STIFFNESS {
+        true => Limit::CorneringStiffnessInDegrees,
+        false => Limit::CorneringStiffness,
+    };
     ParamError::in_range(
         key,
         v,
-        0.0,
+        MIN_CORNERING_STIFFNESS,
         MAX_CORNERING_STIFFNESS,
-        Limit::CorneringStiffness,
+        why,
     )
 }
 

@@ -83,37 +83,25 @@ fn a_level_request_no_unit_slip_explains_gets_the_levels_alone() {
         return;
     };
     let cases = [
-        // 2° and 0.5° are no level of the file either.
-        (
-            "--camber",
-            "2",
-            "the requested 2 rad (114.59°) (levels: 0.00°, 1.60°, 3.19°;",
-        ),
+        // 0.5 rad is a camber a rig could set (28.65°).
         (
             "--camber",
             "0.5",
-            "the requested 0.5 rad (28.65°) (levels: 0.00°, 1.60°, 3.19°;",
+            "the requested 0.5 rad (28.65°) (levels: 0.0000 rad (0.00°), 0.0278 rad (1.60°), 0.0557 rad (3.19°);",
         ),
         // 3° in rad, between the levels at 1.60° and 3.19°: read as
         // degrees it would be 0.05°, near the level at 0.
         (
             "--camber",
             "0.05236",
-            "the requested 0.05236 rad (3.00°) (levels: 0.00°, 1.60°, 3.19°;",
+            "the requested 0.05236 rad (3.00°) (levels: 0.0000 rad (0.00°), 0.0278 rad (1.60°),",
         ),
         // The sign slipped, typed as it is: no degrees read into it.
         (
             "--camber",
             "-0.0279",
-            "the requested -0.0279 rad (-1.60°) (levels: 0.00°, 1.60°, 3.19°;",
+            "the requested -0.0279 rad (-1.60°) (levels: 0.0000 rad (0.00°),",
         ),
-        (
-            "--load",
-            "40",
-            "the requested 40 N (levels: 534 N, 1095 N, 1656 N, 2193 N, 2751 N;",
-        ),
-        // 5 kN is above the heaviest level.
-        ("--load", "5", "the requested 5 N (levels: 534 N,"),
         (
             "--pressure",
             "250000",
@@ -128,5 +116,79 @@ fn a_level_request_no_unit_slip_explains_gets_the_levels_alone() {
             "{option} {value}: {e}"
         );
         assert!(!e.contains("did you mean"), "{option} {value}: {e}");
+    }
+}
+
+/// A rig file of 201 rows at 2500 N and 220 kPa (Pa), the fy of a linear
+/// tyre, with row `row` (0-based, after the header) changed by `edit`.
+fn rig_with(row: usize, edit: fn(&mut [String; 4])) -> tempfile::TempDir {
+    let mut text = String::from("fz,alpha,fy,pressure\n");
+    for i in 0..201 {
+        let alpha = -0.1 + 0.001 * i as f64;
+        let mut cells = [
+            "2500".to_string(),
+            format!("{alpha:.4}"),
+            format!("{:.2}", 60000.0 * alpha),
+            "220000".to_string(),
+        ];
+        if i == row {
+            edit(&mut cells);
+        }
+        text.push_str(&cells.join(","));
+        text.push('\n');
+    }
+    scratch(&[("rig.csv", &text)])
+}
+
+/// One `fz` cell of 2.5 (kN) among 2500 N rows, or one `pressure` cell of
+/// 220 (kPa) among 220000 Pa rows, was dropped as "1 sample between levels
+/// (transitions)"; `tyre-eval` refused such a pressure at its cell.
+#[test]
+fn a_lone_cell_in_kn_or_kpa_is_refused_at_its_cell() {
+    let dir = rig_with(50, |c| c[0] = "2.5".into());
+    let o = identify(&dir.path().join("rig.csv"), &[]);
+    let e = stderr(&o);
+    assert!(
+        !o.status.success() && e.contains("rig.csv:52:1: column `fz`: 2.5 N between rows at 2500 and 2500 N, where no tyre test dips below 100 N for one sample: `fz` is in N (FORMATS.md); is the cell in kN? 2.5 kN is 2500 N"),
+        "{e}"
+    );
+    let dir = rig_with(100, |c| c[3] = "220".into());
+    let o = identify(&dir.path().join("rig.csv"), &[]);
+    let e = stderr(&o);
+    assert!(
+        !o.status.success() && e.contains("rig.csv:102:4: column `pressure`: 220 Pa: no inflated tyre runs below 10000 Pa (0.1 bar), and the column's median is 220000 Pa: `pressure` is in Pa (FORMATS.md): did you mean 220000 Pa (220 kPa)"),
+        "{e}"
+    );
+    // The file as written fits.
+    let dir = rig_with(0, |_| ());
+    let o = identify(&dir.path().join("rig.csv"), &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// `identify --camber 0.0349` (2°, in rad) was answered with levels in
+/// degrees alone, and `--camber 2` (degrees typed; no test's camber in
+/// rad) with no word of degrees, as it selects no level. A request no
+/// test has in SI gets its likeliest unit, saying it selects none either.
+#[test]
+fn a_request_no_test_has_in_si_gets_its_unit_even_without_a_level() {
+    let Some(data) = shared_data(
+        "a_request_no_test_has_in_si_gets_its_unit_even_without_a_level",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let cases = [
+        ("--camber", "2", "the requested 2 rad (114.59°); the value is read in rad: did you mean 0.0349066 rad (2°)? no level lies near that either (levels: 0.0000 rad (0.00°), 0.0278 rad (1.60°), 0.0557 rad (3.19°); a level holds values within 0.0"),
+        ("--camber", "0.0349", "the requested 0.0349 rad (2.00°) (levels: 0.0000 rad (0.00°), 0.0278 rad (1.60°), 0.0557 rad (3.19°);"),
+        ("--load", "40", "the requested 40 N; the value is read in N: did you mean 40000 N (40 kN)? no level lies near that either (levels: 534 N, 1095 N, 1656 N, 2193 N, 2751 N;"),
+        ("--load", "5", "the requested 5 N; the value is read in N: did you mean 5000 N (5 kN)? no level lies near that either (levels: 534 N,"),
+    ];
+    for (option, value, said) in cases {
+        let o = identify(&data, &[option, value]);
+        let e = stderr(&o);
+        assert!(
+            !o.status.success() && e.contains(said),
+            "{option} {value}: {e}"
+        );
     }
 }

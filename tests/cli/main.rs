@@ -262,6 +262,7 @@ mod trips_identify;
 mod trips_inputs;
 mod trips_limits;
 mod trips_outputs;
+mod trips_ranges;
 mod trips_run_units;
 mod trips_simulate;
 mod trips_units;

@@ -140,12 +140,12 @@ fn tyre_eval_refuses_a_point_no_tyre_is_evaluated_at_by_row_and_never_writes_a_n
         (
             "4000,0.01,0.01,0,1e308",
             5,
-            "column `speed`: 1e308 m/s is outside -300 to 300 m/s",
+            "column `speed`: 1e308 m/s is outside 0 to 300 m/s",
         ),
         (
             "4000,0.01,2.0,0,16.7",
             3,
-            "column `alpha`: 2 rad is outside",
+            "column `alpha`: 2 rad is beyond ±90°: angles are in radians (FORMATS.md); is the column in degrees?",
         ),
     ] {
         let points = format!("fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n{row}\n");

@@ -79,7 +79,7 @@ fn a_tyre_file_in_millimetres_or_kilonewtons_is_refused_at_its_key() {
         ),
         (
             "model = \"gim\"\ncornering_stiffness = 5e7\ncontact_length = 0.18\n",
-            "tyre.toml:2:23: `cornering_stiffness` = 50000000: must lie in (0, 2000000]",
+            "tyre.toml:2:23: `cornering_stiffness` = 50000000: must lie in (900, 2000000]",
             "no tyre's cornering stiffness reaches 2e6 N/rad",
         ),
     ];

@@ -279,3 +279,27 @@ fn a_pressure_row_in_kpa_bar_or_psi_is_refused_with_the_reading_meant() {
         "{e}"
     );
 }
+
+/// A speed of 400 m/s was said to be "outside -300 to 300 m/s", though
+/// negative speeds are refused anyway; a slip angle of 5 (degrees, in a
+/// column of radians) was refused with no word of degrees, where
+/// `identify` asks "is the column in degrees?".
+#[test]
+fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
+    let dir = tempfile::tempdir().unwrap();
+    let gim = root().join("tyres/gim.toml");
+    let points =
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,400\n4000,0,5,0,20\n4000,0,0.05,0,20\n";
+    let (o, written) = eval(dir.path(), &gim, points, &[]);
+    let e = stderr(&o);
+    assert!(!o.status.success() && written.is_empty(), "{e}");
+    assert!(
+        e.contains("p.csv:2:5: column `speed`: 400 m/s is outside 0 to 300 m/s"),
+        "{e}"
+    );
+    assert!(
+        e.contains("p.csv:3:3: column `alpha`: 5 rad is beyond ±90°: angles are in radians (FORMATS.md); is the column in degrees?"),
+        "{e}"
+    );
+    assert!(!e.contains("p.csv:4:"), "{e}");
+}

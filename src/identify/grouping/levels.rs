@@ -69,7 +69,7 @@ impl Levels {
         }
         let slips = crate::error::unit_slips(self.variable);
         let (small, large) = (lo.abs().min(hi.abs()), lo.abs().max(hi.abs()));
-        slips.iter().find_map(|&(unit, factor)| {
+        let selecting = slips.iter().find_map(|&(unit, factor)| {
             // A value typed in a smaller unit (degrees for rad) reads
             // larger than the levels, one in a larger unit (kN for N)
             // smaller: a request the other way is no slip of that unit (a
@@ -87,8 +87,20 @@ impl Levels {
             Some(crate::error::LevelSlip {
                 meant,
                 unit,
-                level: self.levels[k].nominal,
+                level: Some(self.levels[k].nominal),
             })
+        });
+        // A request no test has in SI: its likeliest unit, though it
+        // selects no level (`--camber 2`: 2°, between levels).
+        let (unit, factor) = slips[0];
+        selecting.or_else(|| {
+            self.variable
+                .implausible(want)
+                .then_some(crate::error::LevelSlip {
+                    meant: want * factor,
+                    unit,
+                    level: None,
+                })
         })
     }
 

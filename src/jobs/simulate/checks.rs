@@ -24,7 +24,11 @@
 //! - **tyres beyond the data they were fitted to**: the rows whose wheel
 //!   loads or axle slip angles leave a tyre file's `[fitted_ranges]`
 //!   (each wheel at zero slip ratio and camber, as the 2-DOF model
-//!   evaluates it), counted per axle.
+//!   evaluates it), counted per axle; and likewise the rows beyond a
+//!   `.tir`'s own ranges (`FZMIN`/`FZMAX`, `ALPMIN`/`ALPMAX`,
+//!   `CAMMIN`/`CAMMAX`, `KPUMIN`/`KPUMAX`), where the Magic Formula holds
+//!   each input at its range's end (MFeval's limit checks) or, with them
+//!   off, extrapolates.
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
@@ -33,7 +37,8 @@ use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
 use crate::sim::TimeHistory;
-use crate::tyre::TyreModel;
+use crate::tyre::mf::{MagicFormula, TyreSide};
+use crate::tyre::{Tyre, TyreModel};
 use std::f64::consts::TAU;
 
 /// The axle slip angle beyond which the axle slides, rad (15°): past the
@@ -63,9 +68,20 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said.warnings.extend(axle_sliding(h));
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
+    said.warnings.extend(variance_window(sc));
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
-            said.warnings.extend(beyond_fitted(axle, r, h));
+            said.warnings
+                .extend(beyond_fitted(axle, r, RangeSource::Fitted, h));
+        }
+    }
+    for (axle, tyre) in [&sc.model.front, &sc.model.rear].into_iter().enumerate() {
+        if let Tyre::MagicFormula(t) = tyre {
+            let source = RangeSource::Tir {
+                held: t.options.limit_checks,
+            };
+            said.warnings
+                .extend(beyond_fitted(axle, &tir_ranges(t), source, h));
         }
     }
     said
@@ -136,6 +152,15 @@ fn grip_used(h: &TimeHistory, mu: [f64; 2], k: usize) -> f64 {
     front.max(rear)
 }
 
+/// The most of its grip the busier axle uses at any row ([`grip_used`];
+/// rows with an axle off the ground left out).
+pub(super) fn peak_grip_used(h: &TimeHistory, mu: [f64; 2]) -> f64 {
+    (0..h.len())
+        .map(|k| grip_used(h, mu, k))
+        .filter(|s| s.is_finite())
+        .fold(0.0, f64::max)
+}
+
 /// A slide: the largest sideslip, where beyond [`SLIDING_SIDESLIP`]; where
 /// the tyres of `mu` ([`axle_friction`]) use under [`KINEMATIC_GRIP`] of
 /// their grip at every such row, a kinematic turn instead.
@@ -193,6 +218,25 @@ fn on_two_wheels(h: &TimeHistory) -> Option<String> {
     ))
 }
 
+/// A step's total-variance window running past the record's end: the
+/// metrics take the variances over what was recorded (as `metrics` says
+/// for a measured run).
+fn variance_window(sc: &Scenario) -> Option<String> {
+    let Manoeuvre::StepSteer(s) = &sc.manoeuvre else {
+        return None;
+    };
+    let w = sc.metrics.variance_window;
+    (s.start + w > s.end).then(|| {
+        format!(
+            "the total-variance window, `variance_window` = {} s, is longer than the record after the step ({:.2} s, from the step at t = {} s to `end` = {} s): the variances are over what was recorded; lengthen `end` or shorten the window",
+            crate::error::Num(w),
+            s.end - s.start,
+            crate::error::Num(s.start),
+            crate::error::Num(s.end)
+        )
+    })
+}
+
 /// The input's fastest road-wheel steer rate, where beyond [`STEER_RATE`].
 fn steer_rate(m: &Manoeuvre) -> Option<String> {
     let (rate, what) = match m {
@@ -220,9 +264,48 @@ fn steer_rate(m: &Manoeuvre) -> Option<String> {
     })
 }
 
-/// The rows whose wheels leave the ranges `r` the tyre of `axle` (0
-/// front, 1 rear) was fitted to: counted, with the extremes reached.
-fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<String> {
+/// Where a tyre's ranges come from, for what the model does beyond them.
+#[derive(Debug, Clone, Copy)]
+enum RangeSource {
+    /// A TOML tyre's `[fitted_ranges]`: its model extrapolates.
+    Fitted,
+    /// A `.tir`'s own validity ranges: the Magic Formula holds each input
+    /// at its range's end where the limit checks are on (`held`), and
+    /// extrapolates where they are off.
+    Tir { held: bool },
+}
+
+/// A `.tir`'s validity ranges in the crate's convention (the file states
+/// slip and camber in its own frame: a left-side file's slip angle is the
+/// crate's negated, a right-side file's camber is), a missing bound
+/// unbounded. Pressure is left out: the run uses the file's own.
+fn tir_ranges(t: &MagicFormula) -> FittedRanges {
+    let l = &t.limits;
+    let range = |lo: Option<f64>, hi: Option<f64>| {
+        (lo.is_some() || hi.is_some())
+            .then(|| [lo.unwrap_or(f64::NEG_INFINITY), hi.unwrap_or(f64::INFINITY)])
+    };
+    let negated = |r: Option<[f64; 2]>| r.map(|[lo, hi]| [-hi, -lo]);
+    let alpha = range(l.alpha_min, l.alpha_max);
+    let camber = range(l.camber_min, l.camber_max);
+    let right = t.side == TyreSide::Right;
+    FittedRanges {
+        fz: range(l.fz_min, l.fz_max),
+        alpha: if right { alpha } else { negated(alpha) },
+        kappa: range(l.kappa_min, l.kappa_max),
+        camber: if right { negated(camber) } else { camber },
+        pressure: None,
+    }
+}
+
+/// The rows whose wheels leave the ranges `r` of the tyre of `axle` (0
+/// front, 1 rear), from `source`: counted, with the extremes reached.
+fn beyond_fitted(
+    axle: usize,
+    r: &FittedRanges,
+    source: RangeSource,
+    h: &TimeHistory,
+) -> Option<String> {
     let (name, wheels, alpha) = if axle == 0 {
         ("front", [&h.fz[0], &h.fz[1]], &h.alpha_front)
     } else {
@@ -272,8 +355,22 @@ fn beyond_fitted(axle: usize, r: &FittedRanges, h: &TimeHistory) -> Option<Strin
     if out_of(r.camber, 0.0) {
         what.push("a camber of 0".into());
     }
+    let (ranges, evaluated) = match source {
+        RangeSource::Fitted => (
+            "the ranges of the rig data they were fitted to",
+            "their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation",
+        ),
+        RangeSource::Tir { held: true } => (
+            "their .tir's validity ranges",
+            "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated at the ranges' ends (MFeval's limit checks: the force stays that of the range's end, however far beyond)",
+        ),
+        RangeSource::Tir { held: false } => (
+            "their .tir's validity ranges",
+            "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation (the limit checks are off)",
+        ),
+    };
     Some(format!(
-        "{} of {} rows take the {name} tyres outside the ranges of the rig data they were fitted to ({}; their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation: there, {}",
+        "{} of {} rows take the {name} tyres outside {ranges} ({}; {evaluated}: there, {}",
         rows.len(),
         h.len(),
         r.text(),

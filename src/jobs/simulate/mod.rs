@@ -120,9 +120,13 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     };
     // The tyres' grip on this road (the lower axle's): a sideslip with
     // the tyres far below it is a slow car's turn, not a slide.
-    let grip = checks::axle_friction(&sc).map(|[f, r]| f.min(r) * crate::constants::G);
+    let friction = checks::axle_friction(&sc);
+    let grip = friction.map(|[f, r]| f.min(r) * crate::constants::G);
+    // The most of its grip either axle uses: a large overshoot far below
+    // it is a lightly damped response, not a spin.
+    let peak_share = friction.map(|mu| checks::peak_grip_used(h, mu));
     let mut warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
-        applicability_with_grip(m, Some(sc.manoeuvre.speed(0.0)), grip)
+        applicability_with_grip(m, Some(sc.manoeuvre.speed(0.0)), grip, peak_share)
     });
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

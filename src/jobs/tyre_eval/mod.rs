@@ -16,8 +16,8 @@
 //! A point no tyre is evaluated at is refused, by file, line, column and
 //! value, before anything is evaluated ([`PHYSICAL`]): a load beyond
 //! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
-//! road speed), a slip or camber angle beyond ±90°, a speed beyond
-//! ±300 m/s, a pressure above 5 MPa; and a negative speed: the points
+//! road speed), a slip or camber angle beyond ±90° (said as degrees where
+//! it reads as an angle in degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
 //! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
 //! forwards, so the speed is its size (a Magic Formula's own sign of the
 //! speed, which flips its `fy` and `my`, stays inside its model), and a
@@ -85,7 +85,7 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
     (
         "speed",
-        -300.0,
+        0.0,
         300.0,
         "m/s",
         "1080 km/h, above any pneumatic tyre's speed",
@@ -106,7 +106,17 @@ fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
         return Vec::new();
     };
     let refused = |(i, &value): (usize, &f64)| {
-        let problem = if !(lo..=hi).contains(&value) {
+        let problem = if name == "speed" && value < 0.0 {
+            // A slip angle within ±90° already says the wheel rolls
+            // forwards (ISO 8855): the speed is its size.
+            InputProblem::NegativeSpeed { value }
+        } else if unit == "rad" && in_degrees(value, hi) {
+            InputProblem::AngleInDegrees {
+                column,
+                value,
+                limit: hi,
+            }
+        } else if !(lo..=hi).contains(&value) {
             InputProblem::NotPhysical {
                 column,
                 value,
@@ -115,16 +125,20 @@ fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
                 unit,
                 why,
             }
-        } else if name == "speed" && value < 0.0 {
-            // A slip angle within ±90° already says the wheel rolls
-            // forwards (ISO 8855): the speed is its size.
-            InputProblem::NegativeSpeed { value }
         } else {
             return None;
         };
         Some((i, problem))
     };
     values.iter().enumerate().filter_map(refused).collect()
+}
+
+/// Whether an angle beyond `limit` (rad) reads as one in degrees: more
+/// than 1° past it (a hair past 90° is 90° rounded, said as such) and
+/// within it in degrees, as `identify` says of its rig files.
+fn in_degrees(value: f64, limit: f64) -> bool {
+    let v = value.abs();
+    v > limit + 1f64.to_radians() && v.to_radians() <= limit
 }
 
 /// The report of `tyre-eval`: the points with their forces and moments.

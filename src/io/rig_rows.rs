@@ -1,0 +1,92 @@
+//! Single cells of a rig or points file in another unit than the rest of
+//! their column: a pressure of a few units (220 for 220 kPa) among
+//! pressures in Pa, a load of a few units (2.5 for 2.5 kN) among loads in
+//! N. A whole column so written is refused by its median (`super::rig`);
+//! one cell among others passes that, and would be held at a `.tir`'s
+//! range or counted as a sample between levels: refused here at its
+//! cell, with the reading that lands among the column's values.
+
+use super::rig::{MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+use super::Columns;
+use crate::error::{unit_slips, InputError, PressureMeant, UnitSlip, Variable};
+use std::path::Path;
+
+/// Pressures (Pa) and what they are.
+pub(crate) type Known = ([f64; 2], &'static str);
+
+/// Refuses every positive pressure of `p` below [`MIN_MEDIAN_PRESSURE`]
+/// at its cell of `file` (the points file `path`), each with the reading
+/// in kPa, bar or psi that lands among the pressures `known` (of the
+/// tyre, else near the column's median). Run once the median has passed.
+pub(crate) fn refuse_rows_not_in_pa(
+    path: &Path,
+    file: &Columns,
+    p: &[f64],
+    known: Option<Known>,
+) -> Result<(), InputError> {
+    let mut sorted: Vec<f64> = p.iter().copied().filter(|v| *v > 0.0).collect();
+    sorted.sort_by(f64::total_cmp);
+    let Some(&median) = sorted.get(sorted.len() / 2) else {
+        return Ok(());
+    };
+    let known = known.unwrap_or(([0.5 * median, 2.0 * median], "half to twice the median"));
+    let errors = p
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| **v > 0.0 && **v < MIN_MEDIAN_PRESSURE)
+        .map(|(i, &value)| {
+            let slip = UnitSlip::PressureRowNotInPa {
+                value,
+                median,
+                limit: MIN_MEDIAN_PRESSURE,
+                meant: meant(value, known),
+            };
+            file.error_at(path, i, "pressure", slip.into())
+        })
+        .collect();
+    InputError::all_of(path, errors).map_or(Ok(()), Err)
+}
+
+/// The first reading of `value` in kPa, bar or psi that lands among the
+/// pressures `known`.
+fn meant(value: f64, (among, what): Known) -> Option<PressureMeant> {
+    unit_slips(Variable::Pressure)
+        .iter()
+        .map(|&(unit, factor)| (unit, value * factor))
+        .find(|(_, pa)| (among[0]..=among[1]).contains(pa))
+        .map(|(unit, pa)| PressureMeant {
+            pa,
+            unit,
+            among,
+            what,
+        })
+}
+
+/// Refuses every load of `fz` below [`MIN_MEDIAN_LOAD`] whose rows on
+/// both sides carry at least that (a lone cell among loaded rows, not a
+/// ramp from zero) and whose reading in kN lands among the file's loads
+/// above it: a load written in kN. Run once the median has passed.
+pub(crate) fn refuse_loads_in_kn(
+    path: &Path,
+    file: &Columns,
+    fz: &[f64],
+) -> Result<(), InputError> {
+    let loaded = fz.iter().copied().filter(|v| *v >= MIN_MEDIAN_LOAD);
+    let (lo, hi) = loaded.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+    let lone = |i: usize| {
+        i > 0 && i + 1 < fz.len() && fz[i - 1] >= MIN_MEDIAN_LOAD && fz[i + 1] >= MIN_MEDIAN_LOAD
+    };
+    let errors = (0..fz.len())
+        .filter(|&i| fz[i] > 0.0 && fz[i] < MIN_MEDIAN_LOAD && lone(i))
+        .filter(|&i| (lo..=hi).contains(&(1e3 * fz[i])))
+        .map(|i| {
+            let slip = UnitSlip::LoadRowInKn {
+                value: fz[i],
+                neighbours: [fz[i - 1], fz[i + 1]],
+                limit: MIN_MEDIAN_LOAD,
+            };
+            file.error_at(path, i, "fz", slip.into())
+        })
+        .collect();
+    InputError::all_of(path, errors).map_or(Ok(()), Err)
+}

@@ -1,0 +1,138 @@
+//! What the fifth fresh-eyes check found in `simulate`: a `.tir` held at
+//! its ranges' ends without a word, a lightly damped step said as a spin,
+//! metric windows refused only after the run (or cut without a word), and
+//! a cornering stiffness typed in N/deg run as N/rad.
+//! Each test one finding, run as a user runs it.
+
+use super::*;
+
+/// `simulate <dir>/scenario.toml --out <dir>/out`: status, stdout, stderr.
+fn simulated(dir: &Path) -> (bool, String, String) {
+    let o = run(&[
+        "simulate",
+        dir.join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        stderr(&o),
+    )
+}
+
+/// The bundled sedan step (Gim tyres) with `from` replaced by `to`, its
+/// tyre paths made absolute.
+fn sedan_step(from: &str, to: &str) -> tempfile::TempDir {
+    let text = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let tyres = root().join("tyres").display().to_string();
+    let text = text.replace("../tyres", &tyres).replace(from, to);
+    assert!(text.contains(to), "{text}");
+    scratch(&[("scenario.toml", &text)])
+}
+
+/// The sedan on the public `FSAE_Defaults.tir` (FZMAX 2000 N) ran its
+/// 3–5 kN wheels at 2000 N without a word.
+#[test]
+fn simulate_counts_the_rows_beyond_a_tirs_own_ranges() {
+    let test = "simulate_counts_the_rows_beyond_a_tirs_own_ranges";
+    let Some(tir) = shared_data(test, "tir_public/FSAE_Defaults.tir") else {
+        return;
+    };
+    let sc = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"{}\"\n\n{STEP}",
+        tir.display()
+    );
+    let dir = scratch(&[("scenario.toml", &sc)]);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    for axle in ["front", "rear"] {
+        let line = said
+            .lines()
+            .find(|l| {
+                l.contains(&format!(
+                    "take the {axle} tyres outside their .tir's validity ranges"
+                ))
+            })
+            .unwrap_or_else(|| panic!("{said}"));
+        // Every row: each wheel carries more than 2000 N throughout.
+        let words: Vec<&str> = line.trim_start_matches("  warning: ").split(' ').collect();
+        assert_eq!(words[0], words[2], "{line}");
+        assert!(line.contains("(fz 0 to 2000 N, "), "{line}");
+        assert!(
+            line.contains("evaluated at the ranges' ends (MFeval's limit checks"),
+            "{line}"
+        );
+        assert!(line.contains("there, wheel loads "), "{line}");
+    }
+}
+
+/// The sedan's 1° step at 60 m/s rings (146 % overshoot) with its tyres
+/// at 2–3° of slip, and was said to be "losing and regaining grip or
+/// spinning".
+#[test]
+fn a_lightly_damped_step_far_below_the_grip_is_no_spin() {
+    let dir = sedan_step("speed = 22.2222", "speed = 60.0");
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the yaw rate overshoots its steady value by 146 % with the tyres using no more than "),
+        "{said}"
+    );
+    assert!(
+        said.contains("no spin, but a lightly damped linear response (the yaw damping falls with speed, here 60.0 m/s)"),
+        "{said}"
+    );
+    assert!(!said.contains("spinning"), "{said}");
+}
+
+/// `steady_window = 10` on a 6 s step failed after the run with no file,
+/// line or key; `variance_window = 100` was cut to the record silently.
+#[test]
+fn metric_windows_are_held_to_the_record_when_the_scenario_is_read() {
+    let dir = sedan_step(
+        "end = 6.0\n",
+        "end = 6.0\n\n[metrics]\nsteady_window = 10\n",
+    );
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains("scenario.toml:28:17: `metrics.steady_window` = 10: the initial and steady windows together (`pre_window` = 0.5 s + `steady_window` = 10 s) do not fit in the record, 0 to `end` = 6 s: shorten the window or lengthen the manoeuvre's `end`"),
+        "{e}"
+    );
+    let dir = sedan_step(
+        "end = 6.0\n",
+        "end = 6.0\n\n[metrics]\nvariance_window = 100\n",
+    );
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        said.contains("warning: the total-variance window, `variance_window` = 100 s, is longer than the record after the step (5.00 s, from the step at t = 1 s to `end` = 6 s): the variances are over what was recorded"),
+        "{said}"
+    );
+    let dir = sedan_step("end = 6.0\n", "end = 6.0\n");
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(!said.contains("variance"), "{said}");
+}
+
+/// `cornering_stiffness = 500` (N/deg typed for N/rad, 57 times too
+/// soft) ran without a word.
+#[test]
+fn a_cornering_stiffness_in_n_per_degree_is_refused_with_the_factor() {
+    for extra in [
+        "model = \"gim\"\ncontact_length = 0.18",
+        "model = \"linear\"",
+    ] {
+        let tyre = format!("{extra}\ncornering_stiffness = 500\n");
+        let dir = scenario(VEHICLE, &tyre, STEP);
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains("`cornering_stiffness` = 500: must lie in (900, 2000000]: no tyre's cornering stiffness is below 900 N/rad"),
+            "{e}"
+        );
+        assert!(
+            e.contains("is the value in N/deg? multiply it by 57.3"),
+            "{e}"
+        );
+    }
+}

@@ -6,6 +6,14 @@
 use crate::format::fixed;
 use serde::Serialize;
 
+/// The smallest median load of a tyre test, N: a bicycle tyre carries
+/// 300–800 N, a car tyre's loads written in kN are 1–10.
+pub const MIN_MEDIAN_LOAD: f64 = 100.0;
+
+/// The smallest median inflation pressure of a tyre test, Pa (0.1 bar):
+/// a pressure written in kPa, bar or psi reads 1–1000.
+pub const MIN_MEDIAN_PRESSURE: f64 = 1e4;
+
 /// A grouping variable of rig data.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -51,9 +59,9 @@ impl Variable {
     /// even where that selects no level.
     pub fn implausible(self, v: f64) -> bool {
         match self {
-            Variable::Load => v.abs() < crate::io::rig::MIN_MEDIAN_LOAD,
+            Variable::Load => v.abs() < MIN_MEDIAN_LOAD,
             Variable::Camber => v.abs() > std::f64::consts::FRAC_PI_4,
-            Variable::Pressure => v.abs() < crate::io::rig::MIN_MEDIAN_PRESSURE,
+            Variable::Pressure => v.abs() < MIN_MEDIAN_PRESSURE,
         }
     }
 }

@@ -158,13 +158,9 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     })
 }
 
-/// The smallest median load of a tyre test, N: a bicycle tyre carries
-/// 300–800 N, a car tyre's loads written in kN are 1–10.
-pub const MIN_MEDIAN_LOAD: f64 = 100.0;
-
-/// The smallest median inflation pressure of a tyre test, Pa (0.1 bar):
-/// a pressure written in kPa, bar or psi reads 1–1000.
-pub const MIN_MEDIAN_PRESSURE: f64 = 1e4;
+/// The least median load and pressure of a tyre test: defined beside the
+/// unit hints that name them ([`crate::error::Variable`]).
+pub use crate::error::{MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 
 /// Refuses loads whose median is below [`MIN_MEDIAN_LOAD`] (in kN), at the
 /// first positive load below it.

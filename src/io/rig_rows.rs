@@ -6,9 +6,9 @@
 //! range or counted as a sample between levels: refused here at its
 //! cell, with the reading that lands among the column's values.
 
-use super::rig::{MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 use super::Columns;
 use crate::error::{unit_slips, InputError, PressureMeant, UnitSlip, Variable};
+use crate::error::{MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 use std::path::Path;
 
 /// Pressures (Pa) and what they are.

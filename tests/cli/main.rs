@@ -134,6 +134,14 @@ pub(crate) fn read_json(p: &Path) -> serde_json::Value {
 }
 
 /// Writes `files` into a fresh folder and returns it.
+/// The text of the bundled scenario `scenarios/<name>` with its tyre
+/// paths made absolute, so that it runs from any folder it is copied to.
+pub(crate) fn bundled_scenario(name: &str) -> String {
+    let text = fs::read_to_string(root().join("scenarios").join(name)).unwrap();
+    let tyres = format!("\"{}/", root().join("tyres").display());
+    text.replace("\"../tyres/", &tyres)
+}
+
 pub(crate) fn scratch(files: &[(&str, &str)]) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     for (name, text) in files {

@@ -284,9 +284,7 @@ fn a_log_of_several_manoeuvres_is_measured_on_its_step_and_a_run_without_ay_on_y
 #[test]
 fn a_flat_maximum_below_the_least_overshoot_is_no_peak_simulated_or_measured() {
     let dir = tempfile::tempdir().unwrap();
-    let text = fs::read_to_string(root().join("scenarios/step_gbt6323_unitire.toml")).unwrap();
-    let tyres = format!("\"{}/", root().join("tyres").display());
-    let text = text.replace("\"../tyres/", &tyres);
+    let text = bundled_scenario("step_gbt6323_unitire.toml");
     let simulate = |name: &str, extra: &str| {
         let sc = dir.path().join(format!("{name}.toml"));
         fs::write(&sc, format!("{text}\n{extra}")).unwrap();

@@ -363,9 +363,7 @@ fn wheel_lift_off_keeps_the_weight_and_is_reported() {
 /// A bundled scenario copied into `dir` with its tyre paths made absolute
 /// and `settings` added to its `[simulation]` table.
 fn scenario_with(name: &str, dir: &Path, file: &str, settings: &str) -> PathBuf {
-    let text = fs::read_to_string(root().join("scenarios").join(name)).unwrap();
-    let tyres = format!("\"{}/", root().join("tyres").display());
-    let mut text = text.replace("\"../tyres/", &tyres);
+    let mut text = bundled_scenario(name);
     if text.contains("\n[simulation]\n") {
         text = text.replace("\n[simulation]\n", &format!("\n[simulation]\n{settings}\n"));
     } else {

@@ -5,28 +5,12 @@
 //! Each test one finding, run as a user runs it.
 
 use super::*;
-
-/// `simulate <dir>/scenario.toml --out <dir>/out`: status, stdout, stderr.
-fn simulated(dir: &Path) -> (bool, String, String) {
-    let o = run(&[
-        "simulate",
-        dir.join("scenario.toml").to_str().unwrap(),
-        "--out",
-        dir.join("out").to_str().unwrap(),
-    ]);
-    (
-        o.status.success(),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        stderr(&o),
-    )
-}
+use crate::trips_simulate::simulated;
 
 /// The bundled sedan step (Gim tyres) with `from` replaced by `to`, its
 /// tyre paths made absolute.
 fn sedan_step(from: &str, to: &str) -> tempfile::TempDir {
-    let text = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
-    let tyres = root().join("tyres").display().to_string();
-    let text = text.replace("../tyres", &tyres).replace(from, to);
+    let text = bundled_scenario("sedan_step.toml").replace(from, to);
     assert!(text.contains(to), "{text}");
     scratch(&[("scenario.toml", &text)])
 }

@@ -150,9 +150,7 @@ fn a_steer_divided_by_57_once_more_is_noted_in_the_diagnosis() {
 #[test]
 fn a_lateral_acceleration_that_leads_the_steer_has_a_negative_response_time_said_so() {
     let dir = tempfile::tempdir().unwrap();
-    let text = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
-    let tyres = format!("\"{}/", root().join("tyres").display());
-    let text = text.replace("\"../tyres/", &tyres);
+    let text = bundled_scenario("sedan_step.toml");
     let speed = text
         .lines()
         .find(|l| l.starts_with("speed"))

@@ -8,7 +8,7 @@
 use super::*;
 
 /// `simulate <dir>/scenario.toml --out <dir>/out`: status, stdout, stderr.
-fn simulated(dir: &Path) -> (bool, String, String) {
+pub(super) fn simulated(dir: &Path) -> (bool, String, String) {
     let o = run(&[
         "simulate",
         dir.join("scenario.toml").to_str().unwrap(),

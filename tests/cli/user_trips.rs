@@ -297,7 +297,7 @@ fn metrics_windows_are_refused_with_their_values() {
         let expected = format!("invalid value '{value}' for '--filter-hz <FILTER_HZ>': a cut-off is a positive, finite frequency in Hz (0: unfiltered)");
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
         let e = metrics("--min-speed", value);
-        let expected = format!("invalid value '{value}' for '--min-speed <MIN_SPEED>': the lowest speed kept is a finite speed of at least 0 m/s");
+        let expected = format!("invalid value '{value}' for '--min-speed <MIN_SPEED>': the lowest speed kept is a speed of 0 to 150 m/s (no car runs faster)");
         assert!(e.contains(&expected), "{e}\nexpected {expected}");
     }
     let e = metrics("--filter-hz", "ten");

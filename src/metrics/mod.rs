@@ -98,10 +98,10 @@ pub const MEASURED_FILTER_HZ: f64 = 10.0;
 const PEAK_NOISE: f64 = 5.0;
 /// The least overshoot that counts as a GB/T 6323 peak by default, %. Below
 /// it the maximum is flat and within what a test resolves: a simulation
-/// would report a peak time (and a TB) that the same car driven with a
-/// gyro's noise of 0.1 % of the step does not show, so simulated and
-/// measured metrics of one car would disagree on whether it has a peak at
-/// all. The bundled PAC89 and UniTire steps overshoot by 0.05 % and 0.12 %.
+/// would report a peak time (and a TB) that the same run with a noise of
+/// 0.07 % of the step does not show (a noisy copy of the bundled UniTire
+/// step), so simulated and measured metrics of one car would disagree on
+/// whether it has a peak at all. The bundled PAC89 and UniTire steps overshoot by 0.05 % and 0.12 %.
 /// The value is this project's reading, not the standard's: set
 /// `min_overshoot = 0` to take any maximum above the steady state.
 pub const DEFAULT_MIN_OVERSHOOT: f64 = 1.0;

@@ -289,14 +289,8 @@ fn a_flat_maximum_below_the_least_overshoot_is_no_peak_simulated_or_measured() {
         let sc = dir.path().join(format!("{name}.toml"));
         fs::write(&sc, format!("{text}\n{extra}")).unwrap();
         let out = dir.path().join(name);
-        let o = run(&[
-            "simulate",
-            sc.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{}", stderr(&o));
-        (out, String::from_utf8_lossy(&o.stdout).into_owned())
+        let said = crate::scenarios::simulate_to(&sc, &out);
+        (out, said)
     };
     let measure = |history: &Path, extra: &[&str]| -> serde_json::Value {
         let mut args = vec!["metrics", history.to_str().unwrap(), "--json"];

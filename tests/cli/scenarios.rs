@@ -384,7 +384,9 @@ fn any_peak(scenario: PathBuf) -> PathBuf {
     scenario
 }
 
-fn simulate_to(scenario: &Path, out: &Path) -> String {
+/// `simulate <scenario> --out <out>`, which must succeed: its stdout (the
+/// metrics, notes and warnings).
+pub(crate) fn simulate_to(scenario: &Path, out: &Path) -> String {
     let o = run(&[
         "simulate",
         scenario.to_str().unwrap(),

@@ -158,17 +158,10 @@ fn a_lateral_acceleration_that_leads_the_steer_has_a_negative_response_time_said
     let sc = dir.path().join("slow.toml");
     fs::write(&sc, text.replace(speed, "speed = 6.0")).unwrap();
     let out = dir.path().join("out");
-    let o = run(&[
-        "simulate",
-        sc.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let said = crate::scenarios::simulate_to(&sc, &out);
     let m = read_json(&out.join("metrics.json"));
     let ta = m["ay_response_time"].as_f64().unwrap();
     assert!(ta < 0.0, "{m}");
-    let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
     assert!(
         said.contains("the lateral acceleration reaches 90 % of its step")
             && said.contains("before the steer reaches half of its own"),

@@ -16,6 +16,7 @@ pub use axles::{
 pub use parameters::parameter;
 
 use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note,
     OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
@@ -205,24 +206,26 @@ pub fn verdict_warnings(v: &Verdict) -> Vec<String> {
     }
 }
 
+/// A channel's held-out RMS before and after the verdict's effects, in its
+/// unit: `RMS 0.0247 → 0.0216 rad/s`.
+fn rms_change(channel: Channel, before: f64, after: f64) -> String {
+    format!("RMS {before:.4} → {after:.4} {}", channel.unit())
+}
+
 /// One warning on the verdict.
 pub fn verdict_warning(w: &VerdictWarning) -> String {
     match w {
         VerdictWarning::ChannelWorsened(c) => format!(
-            "it leaves the {} gap larger on held-out runs: RMS {:.4} → {:.4} {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
+            "it leaves the {} gap larger on held-out runs: {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
             c.channel.name(),
-            c.before,
-            c.after,
-            c.channel.unit(),
+            rms_change(c.channel, c.before, c.after),
             c.noise_floor,
             c.added_percent
         ),
         VerdictWarning::ChannelLeft(c) => format!(
-            "it leaves the {} gap: RMS {:.4} → {:.4} {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
+            "it leaves the {} gap: {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
             c.channel.name(),
-            c.before,
-            c.after,
-            c.channel.unit(),
+            rms_change(c.channel, c.before, c.after),
             c.noise_floor,
             c.removed_percent,
             c.acceptance_percent

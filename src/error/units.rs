@@ -137,7 +137,7 @@ pub enum UnitSlip {
         median: f64,
     },
     /// A sideslip many times what a turning car shows: in degrees.
-    #[error("column `beta`: {} rad where a car turning as this one does shows at most about {} rad (3 m × yaw_rate/speed + 0.1 rad per g of speed × yaw_rate), and over {} `beta` is a median {}× that: is `beta` in degrees? Convert it, or say so: `degrees = [\"beta\"]` under [runs] in a campaign, `--degrees beta` to `metrics`", Num(*value), significant(*bound, 2), plural(*samples, "turning sample", "turning samples"), fixed(*median, 1))]
+    #[error("column `beta`: {} rad where a car turning as this one does shows at most about {} rad (3 m × yaw_rate/speed + 0.1 rad per g of speed × yaw_rate), and over {} `beta` is a median {}× that: is `beta` in degrees? Convert it, or say so: `degrees = [\"beta\"]` under [runs] in a campaign or a replay's [manoeuvre], `--degrees beta` to `metrics`", Num(*value), significant(*bound, 2), plural(*samples, "turning sample", "turning samples"), fixed(*median, 1))]
     BetaInDegrees {
         /// The sideslip at the first turning sample, as read.
         value: f64,
@@ -149,7 +149,7 @@ pub enum UnitSlip {
         samples: usize,
     },
     /// A body roll, road bank or sideslip column whose size says degrees.
-    #[error("column `{column}`: {} rad is beyond ±{:.0}° and 1 % of the run is beyond {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so: `degrees = [\"{column}\"]` under [runs] in a campaign, `--degrees {column}` to `metrics`", Num(*value), limit.to_degrees(), Num(*p99))]
+    #[error("column `{column}`: {} rad is beyond ±{:.0}° and 1 % of the run is beyond {} rad: angles are in radians (FORMATS.md); is the column in degrees? Convert it, or say so: `degrees = [\"{column}\"]` under [runs] in a campaign or a replay's [manoeuvre], `--degrees {column}` to `metrics`", Num(*value), limit.to_degrees(), Num(*p99))]
     RollInDegrees {
         /// The column (`roll`, `bank`, `beta`).
         column: &'static str,

@@ -17,6 +17,9 @@ pub struct Columns {
     /// Column name → its 1-based position in the header, for errors found
     /// after parsing (a negative load, time running backwards).
     pub positions: BTreeMap<String, usize>,
+    /// The header's names, in the file's order: what a reader left unread
+    /// is named from it.
+    pub header: Vec<String>,
 }
 
 impl Columns {
@@ -195,7 +198,10 @@ pub fn read_columns(
             None => {}
         }
     }
-    let mut out = Columns::default();
+    let mut out = Columns {
+        header: headers.iter().map(str::to_string).collect(),
+        ..Columns::default()
+    };
     for (i, name) in &wanted {
         out.data.insert(name.clone(), Vec::new());
         out.positions.insert(name.clone(), i + 1);

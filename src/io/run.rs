@@ -61,14 +61,28 @@ pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
     read_run_with(path, &[])
 }
 
+/// The optional channels of a run file, in `FORMATS.md`'s order.
+pub const OPTIONAL_CHANNELS: [&str; 5] = ["ay", "beta", "roll", "bank", "ax"];
+
 /// Reads and checks a measured run whose columns `degrees` are in degrees
 /// (deg/s for the yaw rate), converted to radians before any check.
 pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun, InputError> {
-    let mut c = read_columns(
-        path,
-        &["t", "speed", "steer", "yaw_rate"],
-        &["ay", "beta", "roll", "bank", "ax"],
-    )?;
+    read_run_reading(path, degrees, &OPTIONAL_CHANNELS).map(|(run, _)| run)
+}
+
+/// [`read_run_with`] reading of the optional channels only `optional` (a
+/// job that uses no more): the others are neither read nor checked, and
+/// are returned by name where the file has them, for the job to say.
+pub fn read_run_reading(
+    path: &Path,
+    degrees: &[AngleColumn],
+    optional: &[&str],
+) -> Result<(MeasuredRun, Vec<&'static str>), InputError> {
+    let mut c = read_columns(path, &["t", "speed", "steer", "yaw_rate"], optional)?;
+    let unread: Vec<&'static str> = OPTIONAL_CHANNELS
+        .into_iter()
+        .filter(|n| !optional.contains(n) && c.header.iter().any(|h| h == n))
+        .collect();
     for a in degrees {
         c.scale(a.name(), std::f64::consts::PI / 180.0);
     }
@@ -121,7 +135,7 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
     if let Some(beta) = &beta {
         check_beta(path, &c, &speed, &yaw_rate, beta)?;
     }
-    Ok(MeasuredRun {
+    let run = MeasuredRun {
         path: path.to_path_buf(),
         t,
         speed,
@@ -133,7 +147,8 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
         bank,
         ax: c.take_optional("ax"),
         masked: Vec::new(),
-    })
+    };
+    Ok((run, unread))
 }
 
 #[cfg(test)]

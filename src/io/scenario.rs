@@ -11,13 +11,14 @@ pub use super::schedule::ScheduleSpec;
 use super::tables::{check_road, check_vehicle, resolve_model, ResolvedModel};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
-use super::{read_run, MeasuredRun};
-use crate::error::{InputError, InputProblem, Limit, ParamError, ParamReason};
+use super::MeasuredRun;
+use crate::error::{InputError, Limit, ParamError, ParamReason};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
 use crate::metrics::MIN_STEP;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
+pub use replay::ReplaySpec;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 pub use step_steer::StepSteerSpec;
@@ -98,22 +99,6 @@ impl SimulationSettings {
             }
         }
     }
-}
-
-/// Replay of a measured run's steer and speed.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ReplaySpec {
-    /// The run file (`FORMATS.md`), relative to the scenario.
-    pub run: PathBuf,
-    /// Lowest speed replayed, m/s (default 5): the longest piece at or
-    /// above it is replayed, glitches repaired or masked (`measured::clean`).
-    #[serde(default = "default_min_speed")]
-    pub min_speed: f64,
-}
-
-fn default_min_speed() -> f64 {
-    crate::measured::clean::DEFAULT_MIN_SPEED
 }
 
 /// A manoeuvre as written in a file; `kind` selects it.
@@ -264,9 +249,14 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         ManoeuvreSpec::StepSteer(s) => step_steer(src, s, &model, f.road.friction)?,
         ManoeuvreSpec::Replay(r) => {
             let run_path = beside(dir, &r.run);
-            let resolved = replay(src, r, &run_path)?;
+            let r = replay::resolve(src, r, &run_path)?;
             inputs.push(run_path);
-            resolved
+            Resolved {
+                manoeuvre: Manoeuvre::Replay(r.replay),
+                initial: r.initial,
+                measured: Some(r.run),
+                cleaning: Some(r.cleaning),
+            }
         }
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
@@ -434,44 +424,6 @@ fn check_windows(src: &TomlSource, s: &MetricSettings, m: &Manoeuvre) -> Result<
     Err(param_error(src, Some("metrics"), e))
 }
 
-/// A replay of a measured run: the run read and cleaned (standstills,
-/// glitches), started from its first unmasked sample.
-fn replay(src: &TomlSource, r: &ReplaySpec, run_path: &Path) -> Result<Resolved, InputError> {
-    check(src, ParamError::non_negative("min_speed", r.min_speed))?;
-    let settings = crate::measured::clean::CleanSettings::single(r.min_speed);
-    let mut report = crate::measured::clean::CleaningReport::new(r.min_speed);
-    src.referenced_file("manoeuvre.run", run_path)?;
-    let read = read_run(run_path)?;
-    let run =
-        crate::measured::clean::clean_single(read, &settings, &mut report).ok_or_else(|| {
-            InputError::problem(
-                run_path,
-                InputProblem::NoMovingSamples {
-                    min_speed: r.min_speed,
-                    slow: report.samples_slow,
-                    read: report.samples_read,
-                },
-            )
-        })?;
-    // A masked first sample is a glitch, not the initial state.
-    let first = (0..run.t.len())
-        .find(|i| !run.masked.contains(i))
-        .unwrap_or(0);
-    Ok(Resolved {
-        manoeuvre: Manoeuvre::Replay(Replay {
-            t: run.t.clone(),
-            steer: run.steer.clone(),
-            speed: run.speed.clone(),
-        }),
-        initial: State {
-            beta: run.beta.as_ref().map_or(0.0, |b| b[first]),
-            yaw_rate: run.yaw_rate[first],
-        },
-        measured: Some(run),
-        cleaning: Some(report),
-    })
-}
-
 /// The steer a ramp reaches by its `end`, within ±[`MAX_ROAD_WHEEL_STEER`],
 /// refused at `rate` naming that steer: the rate itself may be sound and
 /// the run too long. Degrees are suggested only for a rate that passes the
@@ -578,6 +530,7 @@ fn other_manoeuvre(
     })
 }
 
+mod replay;
 mod step_steer;
 
 #[cfg(test)]

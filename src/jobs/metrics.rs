@@ -3,7 +3,7 @@
 //! `simulate` prints too.
 
 use crate::error::{Error, ParamError};
-use crate::io::{read_run_with, AngleColumn};
+use crate::io::{read_run_reading, AngleColumn};
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
 use crate::metrics::{MetricSettings, StepMetrics};
@@ -13,6 +13,11 @@ use std::path::Path;
 /// The units of the metric reports.
 pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot in %; \
                          tb in s·deg (GB/T 6323); total variances and er in s";
+
+/// The optional channels of a run that the step's metrics read: the
+/// others (roll, bank, ax) are left unread, so that a column the metrics do
+/// not use cannot refuse the run.
+const METRIC_CHANNELS: [&str; 2] = ["ay", "beta"];
 
 /// The report of `metrics` (`--json` prints it): the metrics, the piece
 /// measured and how the run was cleaned.
@@ -33,6 +38,9 @@ pub struct MeasuredMetricsReport {
     pub warnings: Vec<String>,
     /// How the run was cleaned.
     pub cleaning: CleaningReport,
+    /// The run's optional columns that the metrics do not use (roll, bank,
+    /// ax), left unread and unchecked.
+    pub unread_columns: Vec<&'static str>,
     /// The piece's first sample, s.
     #[serde(skip)]
     pub t_start: f64,
@@ -61,7 +69,8 @@ pub fn run_with_degrees(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let mut m = measured_step_metrics(read_run_with(path, degrees)?, min_speed, settings)?;
+    let (run, unread_columns) = read_run_reading(path, degrees, &METRIC_CHANNELS)?;
+    let mut m = measured_step_metrics(run, min_speed, settings)?;
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
         m.warnings.push(format!(
@@ -84,6 +93,7 @@ pub fn run_with_degrees(
         steer_rise_time: m.steer_rise_time,
         warnings: m.warnings,
         cleaning: m.cleaning,
+        unread_columns,
         t_start: m.t_start,
         t_end: m.t_end,
     })
@@ -103,6 +113,13 @@ impl MeasuredMetricsReport {
             "measured piece: {} ({:.2}–{:.2} s); steer 10–90 % rise {:.3} s",
             self.piece, self.t_start, self.t_end, self.steer_rise_time
         ));
+        if !self.unread_columns.is_empty() {
+            out.push(format!(
+                "not read: {} (the step's metrics use t, speed, steer, yaw_rate, {})",
+                self.unread_columns.join(", "),
+                METRIC_CHANNELS.join(", ")
+            ));
+        }
         out.extend(self.warnings.iter().map(|w| format!("warning: {w}")));
         out
     }

@@ -168,3 +168,79 @@ fn a_lateral_acceleration_that_leads_the_steer_has_a_negative_response_time_said
         "{said}"
     );
 }
+
+/// The logged step of [`logged`] with a `roll` column in degrees (2–3°, as
+/// a logger writes it), beside the run.
+fn logged_with_roll_in_degrees(dir: &Path) -> PathBuf {
+    let p = logged(dir, |_| {});
+    let text = fs::read_to_string(&p).unwrap();
+    let mut lines = text.lines();
+    let mut csv = format!("{},roll\n", lines.next().unwrap());
+    for line in lines {
+        let ay: f64 = line.split(',').nth(4).unwrap().parse().unwrap();
+        csv += &format!("{line},{}\n", 2.0 + 0.3 * ay);
+    }
+    fs::write(&p, csv).unwrap();
+    p
+}
+
+#[test]
+fn metrics_leaves_a_roll_column_in_degrees_unread_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged_with_roll_in_degrees(dir.path());
+    let (ok, out, e) = metrics(&p, &[]);
+    assert!(ok, "{e}");
+    let said = format!("{out}{e}");
+    assert!(
+        said.contains(
+            "not read: roll (the step's metrics use t, speed, steer, yaw_rate, ay, beta)"
+        ),
+        "{said}"
+    );
+    // The same run measured as before the column was added.
+    let (_, plain, _) = metrics(&logged(dir.path(), |_| {}), &[]);
+    assert_eq!(out, plain);
+    assert!(out.contains("yaw-rate gain"), "{out}");
+}
+
+#[test]
+fn a_replay_declares_its_runs_roll_in_degrees_under_its_manoeuvre() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged_with_roll_in_degrees(dir.path());
+    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let tyres = root().join("tyres");
+    let base = base.replace("../tyres", tyres.to_str().unwrap());
+    let head = &base[..base.find("[manoeuvre]").unwrap()];
+    let write = |name: &str, extra: &str| {
+        let sc = dir.path().join(name);
+        let text = format!(
+            "{head}[manoeuvre]\nkind = \"replay\"\nrun = \"{}\"\n{extra}",
+            p.file_name().unwrap().to_str().unwrap()
+        );
+        fs::write(&sc, text).unwrap();
+        sc
+    };
+    let refused = write("refused.toml", "");
+    let o = run(&[
+        "simulate",
+        refused.to_str().unwrap(),
+        "--out",
+        dir.path().join("o1").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("column `roll`") && e.contains("a replay's [manoeuvre]"),
+        "{e}"
+    );
+    let declared = write("declared.toml", "degrees = [\"roll\"]\n");
+    let out = dir.path().join("o2");
+    let o = run(&[
+        "simulate",
+        declared.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(out.join("history.csv").exists());
+}

@@ -18,6 +18,8 @@ pub(crate) mod refit;
 mod std_error_tests;
 pub(crate) mod tangent;
 pub mod tempering;
+#[cfg(test)]
+mod unseen_tests;
 
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::model::Augmented;
@@ -271,7 +273,9 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
             // run set without ay) is wherever the swarm left it: report its
             // off value (the effect off), which fits as well.
             let off = problem.clamp(off.unwrap_or(start));
-            unseen = seen_columns(&linear.jacobian).iter().map(|s| !s).collect();
+            let probes;
+            (unseen, probes) = unseen_at(problem, &params, &linear);
+            evaluations += probes;
             for (i, &u) in unseen.iter().enumerate() {
                 if u {
                     params[i] = off[i];
@@ -303,6 +307,54 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
         robust_std_errors,
     };
     (outcome, at)
+}
+
+/// The step, as a share of a parameter's range, at which a parameter on a
+/// bound whose Jacobian column there is zero is probed: 1 % of the range
+/// is 1 cm of a relaxation length's 0–1 m, a lag the runs see.
+const PROBE: f64 = 0.01;
+
+/// The parameters no measured channel responds to at `p`: a zero column
+/// of the Jacobian, except at a bound where a probe [`PROBE`] of the range
+/// into the box changes the residuals. An effect that switches off at its
+/// bound (a relaxation length below 1 mm is no lag) has a zero derivative
+/// there though the runs see it one step inside: it is on its bound, not
+/// unseen.
+fn unseen_at<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    p: &[f64],
+    linear: &Linearisation,
+) -> (Vec<bool>, usize) {
+    let j = &linear.jacobian;
+    let mut probes = 0;
+    let largest = j.column_iter().map(|c| c.norm()).fold(0.0, f64::max);
+    let mut unseen: Vec<bool> = seen_columns(j).iter().map(|s| !s).collect();
+    for (i, u) in unseen.iter_mut().enumerate() {
+        let b = problem.bounds[i];
+        let Some(upper) = (*u)
+            .then(|| crate::diagnose::effects::on_bound(p[i], b))
+            .flatten()
+        else {
+            continue;
+        };
+        let step = PROBE * (b.1 - b.0);
+        let mut q = p.to_vec();
+        q[i] += if upper { -step } else { step };
+        let mut r = vec![0.0; linear.residuals.len()];
+        problem.residuals(&q, &mut r);
+        probes += 1;
+        let change = r
+            .iter()
+            .zip(&linear.residuals)
+            .map(|(a, b)| (a - b).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        // The seen test of [`seen_columns`], on the probe's difference
+        // quotient; a step with no seen column at all is judged on its own.
+        let quotient = change / step;
+        *u = !(quotient.is_finite() && quotient > 1e-9 * largest.max(f64::MIN_POSITIVE));
+    }
+    (unseen, probes)
 }
 
 /// How far past its whole range a parameter's standard error must be for

@@ -188,25 +188,34 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",
         d.folds, d.gap.heldout_error, d.gap.noise_level
     ));
+    // Tyres from rig data or files are held: what the candidates' standard
+    // errors are conditional on (a bias of those tyres moves every value).
+    if d.base.axles.is_none() {
+        out.push(
+            "  (± a standard error with the base model's tyres held as they are: their own uncertainty is not in it)"
+                .into(),
+        );
+    }
+    let w = effect_width(d);
     if let Some(c) = words::within_noise_caveat(&d.gap.findings) {
         out.push(format!("  ({c})"));
     }
     out.push(format!(
-        "  {:<28} {:>8} {:>11} {:>10} {:>12}  parameters",
+        "  {:<w$} {:>8} {:>11} {:>10} {:>12}  parameters",
         "effect", "J after", "held out", "in sample", "ΔBIC"
     ));
     for r in d.ranking.iter().chain(d.combinations.iter()) {
         let p: Vec<String> = r.parameters.iter().map(words::parameter).collect();
         out.push(format!(
-            "  {:<28} {:>8.3} {} {:>12}  {}",
+            "  {:<w$} {:>8.3} {} {:>12}  {}",
             r.effect,
             r.heldout_error_after,
             reduction_cells(d.reductions(r)),
             crate::format::fixed(r.delta_bic, 0),
             p.join(", ")
         ));
-        if let Some(w) = words::rank_warnings(&r.warnings) {
-            out.push(format!("  {:<28} warning: {w}", ""));
+        if let Some(said) = words::rank_warnings(&r.warnings) {
+            out.push(format!("  {:<w$} warning: {said}", ""));
         }
     }
     out.extend(screened_lines(d));
@@ -265,9 +274,21 @@ fn reduction_cells(r: [Reduction; 2]) -> String {
     }
 }
 
+/// The width of the candidate tables' effect column: 28, or the longest
+/// name of a set, so that a long combination keeps the columns aligned.
+fn effect_width(d: &Diagnosis) -> usize {
+    let ranked = d.ranking.iter().chain(&d.combinations).map(|r| &r.effect);
+    let screened = d.screened.iter().map(|s| &s.effect);
+    ranked
+        .chain(screened)
+        .map(|e| e.chars().count())
+        .fold(28, usize::max)
+}
+
 /// The single effects screened before their cross-validation, and the
 /// sets the greedy additions screened, and why.
 fn screened_lines(d: &Diagnosis) -> Vec<String> {
+    let w = effect_width(d);
     let mut out = Vec::new();
     let singles: Vec<_> = d.screened_singles().collect();
     if let Some(first) = singles.first() {
@@ -277,7 +298,7 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(singles.iter().map(|s| {
             format!(
-                "  {:<28} {:>8.3} {:>11} {:>8.1} % {:>12}",
+                "  {:<w$} {:>8.3} {:>11} {:>8.1} % {:>12}",
                 s.effect,
                 s.insample_error_after,
                 "—",
@@ -294,7 +315,7 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(sets.iter().map(|s| {
             format!(
-                "  {:<28} {:>8.3} {:>11} {:>8.1} % of what {} leaves",
+                "  {:<w$} {:>8.3} {:>11} {:>8.1} % of what {} leaves",
                 s.effect,
                 s.insample_error_after,
                 "—",

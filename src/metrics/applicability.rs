@@ -39,6 +39,43 @@ pub const SLIDING_SIDESLIP: f64 = 10.0 * std::f64::consts::PI / 180.0;
 /// its slip angle a few degrees, and the rest of the sideslip is the
 /// turn's geometry (`b·r/u`, which only a crawl makes large).
 pub const KINEMATIC_GRIP: f64 = 0.5;
+/// The grip a measured run's crawl is judged against, m/s² (0.3 g): below
+/// any paved road's, wet or dry (only snow and ice are below it), so that
+/// a crawl using under [`KINEMATIC_GRIP`] of it uses under that share of
+/// any such road's. No channel of a run measures its tyres' grip.
+pub const PAVED_ROAD_GRIP: f64 = 0.3 * crate::constants::G;
+
+/// What a sideslip is judged against: the tyres' own grip (`μ·g` of the
+/// lower axle at static load, m/s²), or, for a measured run,
+/// [`PAVED_ROAD_GRIP`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Grip {
+    /// The tyres' grip on this road, m/s².
+    Tyres(f64),
+    /// A paved road's least ([`PAVED_ROAD_GRIP`]).
+    PavedRoad,
+}
+
+impl Grip {
+    /// The grip, m/s².
+    pub fn accel(self) -> f64 {
+        match self {
+            Grip::Tyres(g) => g,
+            Grip::PavedRoad => PAVED_ROAD_GRIP,
+        }
+    }
+
+    /// Whose grip, in a sentence: "their grip" or the road's.
+    fn words(self) -> &'static str {
+        match self {
+            Grip::Tyres(_) => "their grip",
+            Grip::PavedRoad => {
+                "the grip of any paved road, wet or dry (0.3 g; the run does not measure its tyres')"
+            }
+        }
+    }
+}
+
 /// The yaw-rate overshoot beyond which the response is no handling
 /// response, %: the peak more than twice the steady value.
 pub const SPIN_OVERSHOOT: f64 = 100.0;
@@ -59,6 +96,15 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
     applicability_with_grip(m, speed, None, None)
 }
 
+/// [`applicability`] of a measured run, whose grip no channel gives: at a
+/// crawl (below [`CRAWL_SPEED`]) a sideslip beyond 10° is judged against
+/// [`Grip::PavedRoad`], and said so; faster, a sideslip beyond 10° is a
+/// slide on any road.
+pub fn applicability_measured(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
+    let crawl = speed.is_some_and(|u| u.abs() < CRAWL_SPEED);
+    applicability_with_grip(m, speed, crawl.then_some(Grip::PavedRoad), None)
+}
+
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
 /// m/s², the lower axle's peak at static load, road friction included):
 /// a sideslip beyond 10° with the tyres at under [`KINEMATIC_GRIP`] of it
@@ -69,7 +115,7 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
 pub fn applicability_with_grip(
     m: &StepMetrics,
     speed: Option<f64>,
-    grip: Option<f64>,
+    grip: Option<Grip>,
     peak_share: Option<f64>,
 ) -> Vec<String> {
     let mut out = Vec::new();
@@ -93,12 +139,14 @@ pub fn applicability_with_grip(
     }
     if let Some(beta) = m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
         // In the steady turn both axles use |ay|/(μ·g) of their grip.
-        let share = grip.zip(m.ay_steady).map(|(g, ay)| ay.abs() / g);
-        out.push(match (share.filter(|s| *s < KINEMATIC_GRIP), speed) {
-            (Some(share), Some(u)) => format!(
+        let share = grip
+            .zip(m.ay_steady)
+            .map(|(g, ay)| (ay.abs() / g.accel(), g));
+        out.push(match (share.filter(|s| s.0 < KINEMATIC_GRIP), speed) {
+            (Some((share, g)), Some(u)) => format!(
                 "the steady sideslip is {:.1}°, beyond 10°, {}",
                 beta.to_degrees(),
-                kinematic_turn(share, u, m.steer_step)
+                kinematic_turn(share, g.words(), u, m.steer_step)
             ),
             _ => format!(
                 "the steady sideslip is {:.1}°, beyond 10°: the car is sliding, past its grip, and the step-steer metrics, defined for a handling response below the limit, do not apply (a smaller steer step measures the handling)",
@@ -127,13 +175,13 @@ pub fn applicability_with_grip(
 }
 
 /// Why a sideslip beyond 10° is no slide, where the tyres use `share`
-/// (below [`KINEMATIC_GRIP`]) of their grip at `speed` (m/s) and
+/// (below [`KINEMATIC_GRIP`]) of the grip `whose` names at `speed` (m/s) and
 /// road-wheel steer `steer` (rad): the end of a sentence that names the
 /// sideslip. A slow car's sideslip is the geometry of its turn, so what
 /// limits the turn is the steer, and the lock beside it says how close.
-pub(crate) fn kinematic_turn(share: f64, speed: f64, steer: f64) -> String {
+pub(crate) fn kinematic_turn(share: f64, whose: &str, speed: f64, steer: f64) -> String {
     format!(
-        "but no slide: the tyres use no more than {:.0} % of their grip, and at {:.2} m/s the {:.1}° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip",
+        "but no slide: the tyres use no more than {:.0} % of {whose}, and at {:.2} m/s the {:.1}° steer (a car's lock is about 35–40° at the road wheels) turns the car about a point near the line of its rear axle, where the sideslip is the turn's geometry (β ≈ b·δ/l), not the tyres sliding: the response is kinematic, limited by the steer, not by grip",
         100.0 * share,
         speed.abs(),
         steer.to_degrees()
@@ -354,14 +402,14 @@ mod tests {
             ay_steady: Some(0.78),
             ..moderate()
         };
-        let w = applicability_with_grip(&slow, Some(2.0), Some(9.8), None);
+        let w = applicability_with_grip(&slow, Some(2.0), Some(Grip::Tyres(9.8)), None);
         assert!(
             w[1].starts_with("the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 8 % of their grip, and at 2.00 m/s the 28.6° steer"),
             "{w:?}"
         );
         // At half the grip and above, or with the grip unknown: a slide.
         for grip in [Some(1.56), None] {
-            let w = applicability_with_grip(&slow, Some(2.0), grip, None);
+            let w = applicability_with_grip(&slow, Some(2.0), grip.map(Grip::Tyres), None);
             assert!(w[1].contains("the car is sliding, past its grip"), "{w:?}");
         }
     }

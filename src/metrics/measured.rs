@@ -277,7 +277,9 @@ pub fn measured_step_metrics(
         >= mean(&speeds[..tenth.min(speeds.len())]);
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
-    warnings.extend(super::applicability::applicability(&metrics, speed));
+    warnings.extend(super::applicability::applicability_measured(
+        &metrics, speed,
+    ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
     if metrics.ay_steady.is_none() {
         warnings

@@ -90,6 +90,17 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
         ],
     );
     assert_eq!(d["verdict"]["effects"], serde_json::json!(["sensor_delay"]));
+    // The runs pooled list their speed bands in order, whichever run
+    // showed one first (the first runs are at 20–30 m/s).
+    for line in stdout.lines().filter(|l| l.contains("wrong in:")) {
+        let lows: Vec<f64> = line
+            .split("speed ")
+            .skip(1)
+            .map(|s| s.split('–').next().unwrap().parse().unwrap())
+            .collect();
+        assert!(lows.len() >= 2, "{line}");
+        assert!(lows.windows(2).all(|w| w[0] < w[1]), "{line}");
+    }
     // Flat roads: with the runs' sideslip the bank's estimate takes the
     // sideslip's rate out (left in, the 100 km/h, 6 m/s² step read as
     // −5.2° of bank at its 5th percentile).

@@ -322,6 +322,17 @@ fn a_large_steer_at_a_crawl_is_said_as_a_kinematic_turn_not_a_slide() {
         "{said}"
     );
     assert!(!said.contains("past its grip"), "{said}");
+    // Measured, the same step: the run's grip is unknown, so its crawl is
+    // judged against the least a paved road gives, and said so.
+    let history = dir.path().join("out/history.csv");
+    let o = run(&["metrics", history.to_str().unwrap(), "--min-speed", "1"]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert!(
+        e.contains("the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 26 % of the grip of any paved road, wet or dry (0.3 g; the run does not measure its tyres'), and at 2.00 m/s the 28.6° steer"),
+        "{e}"
+    );
+    assert!(!e.contains("past its grip"), "{e}");
     let ramp =
         "[manoeuvre]\nkind = \"ramp-steer\"\nspeed = 2.0\nrate = 0.2\nstart = 1.0\nend = 3.5\n";
     let dir = scenario(VEHICLE, GIM, ramp);

@@ -29,7 +29,9 @@ pub use crate::diagnose::report::outcome::{
     Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
-pub use crate::diagnose::report::values::{ParameterValue, Reduction, Shrinkage, LIMIT_RESOLUTION};
+pub use crate::diagnose::report::values::{
+    jackknife, ParameterValue, Reduction, Shrinkage, LIMIT_RESOLUTION, UNDERSTATED,
+};
 use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;

@@ -325,6 +325,17 @@ pub enum RankWarning {
         /// Why.
         no_tyre: Vec<NoTyre>,
     },
+    /// The set fits the runs worse in sample than a set it contains (whose
+    /// optimum it contains with its other effects off): its fit stopped
+    /// short, or held a parameter the smaller set fits.
+    WorseThanSubset {
+        /// The contained set that fits better (`a+b`).
+        subset: String,
+        /// Its in-sample error.
+        subset_error: f64,
+        /// This set's in-sample error.
+        error: f64,
+    },
     /// Fold refits that landed beyond
     /// [`crate::diagnose::verdict::rules::FOLD_FAR`] standard errors of
     /// the all-run fit: the held-out score measures those refits on fewer

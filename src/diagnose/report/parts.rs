@@ -108,6 +108,18 @@ impl Part {
         }
     }
 
+    /// Its place in a report's lists: all, the windows in time, the |ay|
+    /// bands, then the speed bands, each by its lower edge (a campaign
+    /// pools runs whose bands appear in any order).
+    pub fn order(&self) -> (u8, f64) {
+        match *self {
+            Part::All => (0, 0.0),
+            Part::Window(w) => (1, w.centre()),
+            Part::Ay { lo, .. } => (2, lo),
+            Part::Speed { lo, .. } => (3, lo),
+        }
+    }
+
     /// Where the gap map draws it: its axis and position (a window's
     /// centre, a band's centre, or one above the lower edge of an open
     /// band). `None` for [`Part::All`].
@@ -369,5 +381,35 @@ mod tests {
         assert!((s / 0.002 - 1.0).abs() < 0.06, "{s}");
         // Without a window before the input: the first differences.
         assert_eq!(scatter_by(&[], &moving).1, Scatter::FirstDifferences);
+    }
+
+    #[test]
+    fn parts_are_listed_windows_then_ay_then_speed_each_by_its_lower_edge() {
+        let mut parts = vec![
+            Part::Speed { lo: 20.0, hi: 30.0 },
+            Part::Ay { lo: 2.0, hi: 4.0 },
+            Part::Speed { lo: 10.0, hi: 20.0 },
+            Part::Window(Window::Later),
+            Part::All,
+            Part::Ay { lo: 0.0, hi: 2.0 },
+            Part::Window(Window::BeforeInput),
+        ];
+        parts.sort_by(|a, b| {
+            let (ka, kb) = (a.order(), b.order());
+            ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
+        });
+        let labels: Vec<String> = parts.iter().map(Part::label).collect();
+        assert_eq!(
+            labels,
+            [
+                "all",
+                Window::BeforeInput.label(),
+                Window::Later.label(),
+                "|ay| 0–2 m/s²",
+                "|ay| 2–4 m/s²",
+                "speed 10–20 m/s",
+                "speed 20–30 m/s"
+            ]
+        );
     }
 }

@@ -118,6 +118,14 @@ pub(crate) fn parts_table(
             }
         }
     }
+    // Pooled in the order the runs showed them: listed in the parts' own.
+    acc.sort_by(|a, b| {
+        let key = |x: &(Channel, Part, f64, f64, usize)| (x.0.index(), x.1.order());
+        let (ka, kb) = (key(a), key(b));
+        ka.0.cmp(&kb.0)
+            .then(ka.1 .0.cmp(&kb.1 .0))
+            .then(ka.1 .1.total_cmp(&kb.1 .1))
+    });
     acc.into_iter()
         .filter(|x| x.4 > 0)
         .map(|(ch, part, b2, a2, n)| {

@@ -326,6 +326,13 @@ pub fn rank_warning(w: &RankWarning) -> String {
             value(*fold_value),
             value(*v),
         ),
+        RankWarning::WorseThanSubset {
+            subset,
+            subset_error,
+            error,
+        } => format!(
+            "it fits the runs worse than {subset}, which it contains (in-sample error {error:.3} against {subset_error:.3}): its fit stopped short of that optimum or holds a parameter {subset} fits, so its scores understate the set"
+        ),
         RankWarning::FoldsNotConverged { failed, folds } => {
             format!("{failed} of {folds} fold refits did not converge")
         }

@@ -222,7 +222,7 @@ impl Baseline {
                 .parameters
             }),
             prior_weight: sc.prior_weight,
-            parameters: parameter_values(&self.layout(&sc.kinds), &sc.full),
+            parameters: parameter_values(&self.layout(&sc.kinds), &sc.full, &sc.fold_params),
             heldout_error_before: self.j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),

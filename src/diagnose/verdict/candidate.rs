@@ -76,14 +76,23 @@ impl<'a> Setting<'a> {
 
 /// The effect parameters (and roll dynamics) of a fit of `layout`, as
 /// report rows.
-pub(crate) fn parameter_values(layout: &Layout, f: &FitOutcome) -> Vec<ParameterValue> {
+///
+/// `folds`: the parameters of each fold refit (none where the candidate was
+/// not cross-validated), for each parameter's jackknife.
+pub(crate) fn parameter_values(
+    layout: &Layout,
+    f: &FitOutcome,
+    folds: &[Vec<f64>],
+) -> Vec<ParameterValue> {
     let at = layout.effects().start;
     let reported = f.reported_std_errors();
     layout
         .parameters()
         .enumerate()
         .map(|(i, (group, q))| {
-            let v = ParameterValue::of(group, q, f.params[at + i], reported[at + i]);
+            let fold_values: Vec<f64> = folds.iter().map(|p| p[at + i]).collect();
+            let v = ParameterValue::of(group, q, f.params[at + i], reported[at + i])
+                .with_folds(&fold_values);
             if f.is_unseen(at + i) {
                 v.unseen()
             } else if let Some(se) = f.held_for(at + i) {

@@ -257,6 +257,7 @@ mod tests {
             determined: true,
             unseen: false,
             held: None,
+            fold_std_error: None,
         }
     }
 

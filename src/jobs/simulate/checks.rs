@@ -178,7 +178,7 @@ fn sliding(h: &TimeHistory, mu: Option<[f64; 2]>) -> Option<String> {
             beta.to_degrees(),
             h.t[i],
             h.t[from],
-            kinematic_turn(share, h.speed[i], h.steer[i])
+            kinematic_turn(share, "their grip", h.speed[i], h.steer[i])
         ));
     }
     Some(format!(

@@ -13,7 +13,7 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::applicability::{applicability_with_grip, schedule_applicability};
+use crate::metrics::applicability::{applicability_with_grip, schedule_applicability, Grip};
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
@@ -126,7 +126,12 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     // it is a lightly damped response, not a spin.
     let peak_share = friction.map(|mu| checks::peak_grip_used(h, mu));
     let mut warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
-        applicability_with_grip(m, Some(sc.manoeuvre.speed(0.0)), grip, peak_share)
+        applicability_with_grip(
+            m,
+            Some(sc.manoeuvre.speed(0.0)),
+            grip.map(Grip::Tyres),
+            peak_share,
+        )
     });
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.

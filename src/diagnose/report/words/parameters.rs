@@ -16,7 +16,9 @@ use crate::diagnose::report::ParameterValue;
 /// or that it is held at its off value (no measured channel responds to
 /// it, or fitted free the runs did not determine it). A steering
 /// compliance, fitted in rad/kN, is given in rad/N too: the unit of
-/// `steering_compliance` in a scenario's `[model.effects]`.
+/// `steering_compliance` in a scenario's `[model.effects]`. A standard
+/// error that the fold refits' jackknife exceeds several times over is said
+/// to understate ([`ParameterValue::understated`]).
 pub fn parameter(p: &ParameterValue) -> String {
     // A dimensionless parameter (unit `-`) is written without a unit.
     let unit = match p.unit {
@@ -54,7 +56,15 @@ pub fn parameter(p: &ParameterValue) -> String {
     }
     let Some(bound) = p.bound else {
         return if p.determined {
-            format!("{} = {v} ± {}{unit}", p.name, std_error(p.std_error))
+            let said = format!("{} = {v} ± {}{unit}", p.name, std_error(p.std_error));
+            match p.fold_std_error.filter(|_| p.understated()) {
+                Some(j) => format!(
+                    "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
+                    std_error(j),
+                    j / p.std_error
+                ),
+                None => said,
+            }
         } else if p.std_error.is_finite() {
             format!(
                 "{} = {v}{unit} (not determined by the runs: its standard error {} exceeds its whole range)",

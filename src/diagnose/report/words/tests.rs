@@ -300,6 +300,7 @@ fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> Param
         determined: false,
         unseen: false,
         held: None,
+        fold_std_error: None,
     }
 }
 
@@ -588,4 +589,49 @@ fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
     let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
     let roll = ParameterValue::of("roll", &frequency, 3.0, 1.03);
     assert_eq!(parameter(&roll), "roll.frequency = 3.0000 ± 1.03 Hz");
+}
+
+#[test]
+fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate() {
+    let [front, _] = EffectKind::RollSteer.parameters() else {
+        panic!("roll steer has a front and a rear");
+    };
+    let v = ParameterValue::of("roll_steer", front, -0.4112, 4.65e-3);
+    // Five folds at ±0.02 about -0.41: the jackknife √(4/5·Σd²) = 0.0358.
+    let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
+    let j = crate::diagnose::report::jackknife(&folds).unwrap();
+    assert!((j - (0.8f64 * 4.0 * 0.0004).sqrt()).abs() < 1e-12, "{j}");
+    let flagged = v.clone().with_folds(&folds);
+    assert!(flagged.understated());
+    assert_eq!(
+        parameter(&flagged),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 8× it: the runs disagree beyond their noise, which the standard error does not cover)"
+    );
+    // Folds within three standard errors, or too few to judge, say nothing.
+    let close = v
+        .clone()
+        .with_folds(&[-0.405, -0.415, -0.41, -0.405, -0.415]);
+    assert!(!close.understated());
+    assert_eq!(
+        parameter(&close),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
+    );
+    assert_eq!(v.clone().with_folds(&[-0.3, -0.5]).fold_std_error, None);
+    // A parameter on a bound has no standard error to understate.
+    let on_bound =
+        ParameterValue::of("roll_steer", front, front.bounds.0, 4.65e-3).with_folds(&folds);
+    assert!(!on_bound.understated());
+}
+
+#[test]
+fn a_set_worse_in_sample_than_one_it_contains_says_so() {
+    let w = RankWarning::WorseThanSubset {
+        subset: "sensor_delay".into(),
+        subset_error: 1.234,
+        error: 1.5,
+    };
+    assert_eq!(
+        rank_warning(&w),
+        "it fits the runs worse than sensor_delay, which it contains (in-sample error 1.500 against 1.234): its fit stopped short of that optimum or holds a parameter sensor_delay fits, so its scores understate the set"
+    );
 }

@@ -307,23 +307,34 @@ fn a_magic_formula_mode_for_a_toml_tyre_is_refused_with_why() {
 }
 
 /// Putnam's `roll` is logged in degrees: 2° read as radians is a car at
-/// 115° of roll. Refused at its cell, with the campaign key that says so.
+/// 115° of roll. A replay of it is refused at its cell, with the keys that
+/// say so; `metrics`, which does not use the roll, leaves it unread.
 #[test]
 fn a_roll_column_in_degrees_is_refused_at_its_cell_with_the_key_that_declares_it() {
     let mut s = String::from("t,speed,steer,yaw_rate,roll\n");
     for i in 0..400 {
         let t = f64::from(i) * 0.01;
         let steer = if t > 1.0 { 0.02 } else { 0.0 };
-        s += &format!("{t:.2},20,{steer},{},{}\n", steer * 0.4, 1.5 + steer * 20.0);
+        s += &format!("{t:.2},20,{steer},{},{}\n", steer * 4.0, 1.5 + steer * 20.0);
     }
-    let dir = scratch(&[("deg.csv", &s)]);
-    let o = run_in(dir.path(), &["metrics", "deg.csv"]);
+    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let base = base.replace("../tyres", root().join("tyres").to_str().unwrap());
+    let head = &base[..base.find("[manoeuvre]").unwrap()];
+    let scenario = format!("{head}[manoeuvre]\nkind = \"replay\"\nrun = \"deg.csv\"\n");
+    let dir = scratch(&[("deg.csv", &s), ("replay.toml", &scenario)]);
+    let o = run_in(dir.path(), &["simulate", "replay.toml", "--out", "o"]);
     let e = stderr(&o);
     assert_eq!(o.status.code(), Some(1), "{e}");
     assert!(
         e.contains("deg.csv:2:5: column `roll`: 1.5 rad is beyond ±57°")
             && e.contains("is the column in degrees?")
-            && e.contains("`degrees = [\"roll\"]` under [runs]"),
+            && e.contains(
+                "`degrees = [\"roll\"]` under [runs] in a campaign or a replay's [manoeuvre]"
+            ),
         "{e}"
     );
+    let o = run_in(dir.path(), &["metrics", "deg.csv"]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert!(e.contains("not read: roll"), "{e}");
 }

@@ -303,3 +303,48 @@ fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
     );
     assert!(!e.contains("p.csv:4:"), "{e}");
 }
+
+/// A PAC89 `a3` of 3.036 (kN/deg typed for 3036 N/deg: a cornering
+/// stiffness 1000 times too soft) and a UniTire `p3` of 0.244 (14 per
+/// degree, 57 times too soft) were evaluated without a word, where a Gim
+/// or linear tyre's cornering stiffness in N/deg is refused.
+#[test]
+fn a_pac89_or_unitire_stiffness_in_another_unit_is_refused_at_its_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n";
+    let pac89 = fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap();
+    let unitire = fs::read_to_string(root().join("tyres/unitire.toml")).unwrap();
+    let cases = [
+        (
+            "p.toml",
+            pac89.replace("1250.0, 3036.0,", "1250.0, 3.036,"),
+            "p.toml:8:27: `a[3]` = 3.036: must be greater than 15: PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg",
+            "is the value in kN/deg? multiply it by 1000",
+        ),
+        (
+            "u.toml",
+            unitire.replacen("1.2, 14.0, -2.0, 0.2,", "1.2, 0.244, -0.0349, 0.0035,", 1),
+            "u.toml:13:16: `lateral.p[2]` = 0.244: must be greater than 0.9: UniTire's cornering stiffness",
+            "are p3, p4 and p5 per degree? multiply them by 57.3",
+        ),
+        (
+            "u.toml",
+            unitire.replacen("1.0, 18.0, -1.5, 0.1,", "1.0, 0.18, -0.015, 0.001,", 1),
+            "u.toml:16:16: `longitudinal.p[2]` = 0.18: must be greater than 0.9: UniTire's longitudinal slip stiffness",
+            "are p3, p4 and p5 per percent of slip? multiply them by 100",
+        ),
+    ];
+    for (name, text, said, hint) in cases {
+        let tyre = dir.path().join(name);
+        fs::write(&tyre, text).unwrap();
+        let (o, written) = eval(dir.path(), &tyre, points, &[]);
+        let e = stderr(&o);
+        assert!(!o.status.success() && written.is_empty(), "{e}");
+        assert!(e.contains(said) && e.contains(hint), "{e}");
+    }
+    // The bundled files, in their units, are read.
+    for toml in ["pac89_adams_example.toml", "unitire.toml"] {
+        let (o, _) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
+        assert!(o.status.success(), "{toml}: {}", stderr(&o));
+    }
+}

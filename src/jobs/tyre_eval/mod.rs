@@ -237,7 +237,10 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
     }
     // A pressure written in kPa, bar or psi (a .tir clamps it to its
     // range without a word of the unit).
-    if let Some((i, slip)) = pressure.as_deref().and_then(pressure_not_in_pa) {
+    if let Some((i, slip)) = pressure
+        .as_deref()
+        .and_then(|p| pressure_not_in_pa(p, known))
+    {
         return Err(c.error_at(points, i, "pressure", slip.into()).into());
     }
     if let Some(p) = &pressure {

@@ -41,6 +41,7 @@ mod pressure;
 mod stiffness;
 mod unread;
 
+pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
 pub use stiffness::SignChange;
 pub use unread::Unread;

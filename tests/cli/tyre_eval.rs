@@ -304,6 +304,41 @@ fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
     assert!(!e.contains("p.csv:4:"), "{e}");
 }
 
+/// The bundled UniTire at κ = α = 0.1 gave its pure-slip fy with its
+/// pure-slip fx, a resultant 1.34 times its friction, without a word; so
+/// did PAC89. A Magic Formula tyre couples them: nothing to say.
+#[test]
+fn an_uncoupled_model_at_combined_slip_is_said_with_its_resultant_beyond_friction() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.1,0.1,0,20\n4000,0.1,0,0,20\n4000,0,0.1,0,20\n4000,-0.02,0.01,0,20\n";
+    for toml in ["unitire.toml", "pac89_adams_example.toml"] {
+        let model = toml.split(['_', '.']).next().unwrap();
+        let (o, written) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
+        let e = stderr(&o);
+        assert!(o.status.success(), "{toml}: {e}");
+        let (fx, fy) = (column(&written, "fx"), column(&written, "fy"));
+        // Each force its pure-slip one: the first row's the next two's.
+        assert_eq!((fx[0], fy[0]), (fx[1], fy[2]), "{toml}");
+        assert!(
+            e.contains(&format!("warning: this {model} tyre does not couple fx and fy: at the 2 of 4 points at combined slip (kappa ≠ 0 and alpha ≠ 0) its fx is its pure-slip force at kappa and its fy at alpha")),
+            "{toml}: {e}"
+        );
+        // The first point only: the last, at small slips, is within its
+        // friction however the two add.
+        assert!(
+            e.contains("warning: 1 of 4 points has √(fx² + fy²) more than 5 % above the tyre's friction μ·Fz")
+                && e.contains("at fz = 4000 N, kappa = 0.1000, alpha = 0.1000 rad: the model does not couple fx and fy (above)"),
+            "{toml}: {e}"
+        );
+    }
+    let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
+    let e = stderr(&o);
+    assert!(
+        o.status.success() && !e.contains("couple") && !e.contains("friction μ·Fz"),
+        "{e}"
+    );
+}
+
 /// A PAC89 `a3` of 3.036 (kN/deg typed for 3036 N/deg: a cornering
 /// stiffness 1000 times too soft) and a UniTire `p3` of 0.244 (14 per
 /// degree, 57 times too soft) were evaluated without a word, where a Gim

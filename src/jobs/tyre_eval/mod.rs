@@ -34,15 +34,19 @@
 //! and (`checks.rs`) a tyre with no longitudinal force evaluated at a slip
 //! ratio, a Magic Formula file with no overturning or rolling resistance
 //! coefficients, and a Magic Formula `my` at a speed past its speed terms'
-//! reach.
+//! reach; (`friction.rs`) a resultant `√(fx² + fy²)` beyond the tyre's
+//! friction and a model that does not couple `fx` and `fy` at combined
+//! slip (UniTire, PAC89).
 
 mod checks;
+mod friction;
 mod pressure;
 mod stiffness;
 mod unread;
 
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
+pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
 pub use stiffness::SignChange;
 pub use unread::Unread;
 
@@ -167,6 +171,12 @@ pub struct TyreEvalReport {
     pub zero_outputs: Vec<ZeroOutput>,
     /// Points faster than a Magic Formula `my`'s speed terms reach.
     pub beyond_my_speed: Option<BeyondMySpeed>,
+    /// Points whose `√(fx² + fy²)` exceeds the tyre's `μ·Fz` by more than
+    /// [`FRICTION_TOLERANCE`].
+    pub beyond_friction: Option<BeyondFriction>,
+    /// Points at combined slip of a model that does not couple `fx` and
+    /// `fy` (each its pure-slip force).
+    pub uncoupled: Option<Uncoupled>,
     /// The input columns the model does not read, set at some points.
     pub unread: Vec<Unread>,
     /// The ranges of the rig data a TOML tyre was fitted to (its
@@ -401,6 +411,7 @@ pub fn run(
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
+    let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
     let extras = magic_formula_extras(&tyre, &given);
     refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped) = (extras.mode, extras.clamped);
@@ -431,6 +442,8 @@ pub fn run(
         off_road,
         zero_outputs,
         beyond_my_speed,
+        beyond_friction,
+        uncoupled,
         unread,
         sign_changes,
         fitted_ranges,
@@ -464,6 +477,17 @@ impl TyreEvalReport {
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
+        out.extend(
+            self.uncoupled
+                .iter()
+                .map(|u| u.line(self.count, self.model)),
+        );
+        let uncoupled = self.uncoupled.is_some();
+        out.extend(
+            self.beyond_friction
+                .iter()
+                .map(|b| b.line(self.count, uncoupled)),
+        );
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

@@ -4,7 +4,9 @@
 //! the speed its speed terms reach, a load its vertical model carries at
 //! no loaded radius, a TOML tyre off the road, the loads a slip
 //! stiffness's sign change is named within, a negative speed and a
-//! pressure row in kPa.
+//! pressure row in kPa; a model that does not couple fx and fy and a
+//! resultant beyond friction, a Magic Formula mz at zero speed, and a
+//! PAC89 or UniTire stiffness in another unit.
 
 use super::*;
 use crate::trips_identify::{identify_with, rig, stdout};
@@ -336,6 +338,36 @@ fn an_uncoupled_model_at_combined_slip_is_said_with_its_resultant_beyond_frictio
     assert!(
         o.status.success() && !e.contains("couple") && !e.contains("friction μ·Fz"),
         "{e}"
+    );
+}
+
+/// The MF 6.1 sample at α = −0.05 rad gave mz = +0.21 N·m at zero speed
+/// (−43 N·m at 20 m/s, fy negative at both) without a word: MFeval's
+/// cos'α = Vx/(Vc + εV) takes the trail's term away at Vx = 0. Kept, as
+/// MFeval has it, and said with a count.
+#[test]
+fn a_magic_formula_mz_at_zero_speed_is_said_to_be_its_residual_torque() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,-0.05,0,20\n4000,0,-0.05,0,0\n4000,0,0.05,0,0\n4000,0,0,0,0\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    let (fy, mz) = (column(&written, "fy"), column(&written, "mz"));
+    assert!(
+        fy[0] < 0.0 && fy[1] < 0.0 && mz[0] < -40.0 && mz[1] > 0.0,
+        "{written}"
+    );
+    assert!(
+        e.contains("warning: 2 of 4 points at zero speed (below 0.0001 m/s): mz there is the residual torque alone, of the opposite sign to the same point's at VXLOW = 1.00 m/s at 1 of them (0.210 N·m against -47.5 N·m), as MFeval's formula gives it (cos'α = Vx/(Vc + εV)"),
+        "{e}"
+    );
+    // At any speed the trail is there: nothing to say.
+    let (o, _) = eval(dir.path(), &tir, &points.replace(",0\n", ",0.5\n"), &[]);
+    assert!(
+        o.status.success() && !stderr(&o).contains("zero speed"),
+        "{}",
+        stderr(&o)
     );
 }
 

@@ -36,17 +36,20 @@
 //! coefficients, and a Magic Formula `my` at a speed past its speed terms'
 //! reach; (`friction.rs`) a resultant `√(fx² + fy²)` beyond the tyre's
 //! friction and a model that does not couple `fx` and `fy` at combined
-//! slip (UniTire, PAC89).
+//! slip (UniTire, PAC89); (`standstill.rs`) a Magic Formula `mz` at zero
+//! speed, its residual torque alone.
 
 mod checks;
 mod friction;
 mod pressure;
+mod standstill;
 mod stiffness;
 mod unread;
 
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
+pub use standstill::{StandstillMz, STANDSTILL};
 pub use stiffness::SignChange;
 pub use unread::Unread;
 
@@ -177,6 +180,9 @@ pub struct TyreEvalReport {
     /// Points at combined slip of a model that does not couple `fx` and
     /// `fy` (each its pure-slip force).
     pub uncoupled: Option<Uncoupled>,
+    /// Points at zero speed whose Magic Formula `mz` lacks the pneumatic
+    /// trail's term.
+    pub standstill_mz: Option<StandstillMz>,
     /// The input columns the model does not read, set at some points.
     pub unread: Vec<Unread>,
     /// The ranges of the rig data a TOML tyre was fitted to (its
@@ -412,6 +418,7 @@ pub fn run(
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
+    let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
     let extras = magic_formula_extras(&tyre, &given);
     refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped) = (extras.mode, extras.clamped);
@@ -444,6 +451,7 @@ pub fn run(
         beyond_my_speed,
         beyond_friction,
         uncoupled,
+        standstill_mz,
         unread,
         sign_changes,
         fitted_ranges,
@@ -488,6 +496,7 @@ impl TyreEvalReport {
                 .iter()
                 .map(|b| b.line(self.count, uncoupled)),
         );
+        out.extend(self.standstill_mz.iter().map(|s| s.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

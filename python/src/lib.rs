@@ -12,7 +12,7 @@
 
 use handling::error::{
     DiagnosisError as LibDiagnosisError, Error, FitError as LibFitError,
-    InputError as LibInputError, InputProblem, OptionsError as LibOptionsError,
+    InputError as LibInputError, InputProblem, OptionsError as LibOptionsError, UnitSlip,
 };
 use handling::io::{load_scenario, load_tyre, tir::read_tir_text};
 use handling::jobs;
@@ -112,6 +112,41 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
             ..
         } => (Some(variable.column()), Some(*requested)),
         InputProblem::NoCamberColumn { camber } => (Some("camber"), Some(*camber)),
+        InputProblem::NegativeSpeed { value } => (Some("speed"), Some(*value)),
+        InputProblem::NotPhysical { column, value, .. } => (Some(column), Some(*value)),
+        InputProblem::NonFiniteOutput { output, .. } => (Some(output), None),
+        InputProblem::LoadNotCarried { fz, .. } => (Some("fz"), Some(*fz)),
+        InputProblem::DeadChannel { channel, value, .. } => (Some(channel), Some(*value)),
+        InputProblem::UnitSlip(u) => unit_slip_key_value(u),
+        _ => (None, None),
+    }
+}
+
+/// The column and the value read of a column in another unit than
+/// FORMATS.md's: a run's channel (yaw rate in deg/s, `ay` in g, a speed in
+/// km/h, …), a rig's or tyre-eval's load in kN or pressure in kPa, a rig
+/// force no tyre carries. `TimeStep`'s value is the median step.
+fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
+    match u {
+        UnitSlip::YawRate { value, .. } => (Some("yaw_rate"), Some(*value)),
+        UnitSlip::AyTooLarge { value, .. } | UnitSlip::AyInG { value, .. } => {
+            (Some("ay"), Some(*value))
+        }
+        UnitSlip::TimeStep { step, .. } => (Some("t"), Some(*step)),
+        UnitSlip::LoadInKn { value, .. } | UnitSlip::LoadRowInKn { value, .. } => {
+            (Some("fz"), Some(*value))
+        }
+        UnitSlip::PressureNotInPa { value, .. } | UnitSlip::PressureRowNotInPa { value, .. } => {
+            (Some("pressure"), Some(*value))
+        }
+        UnitSlip::SpeedBeyondAnyCar { value, .. }
+        | UnitSlip::SpeedInKmh { value, .. }
+        | UnitSlip::SpeedBackwards { value, .. } => (Some("speed"), Some(*value)),
+        UnitSlip::BetaInDegrees { value, .. } => (Some("beta"), Some(*value)),
+        UnitSlip::RollInDegrees { column, value, .. }
+        | UnitSlip::RigBeyondAnyTyre { column, value, .. } => (Some(column), Some(*value)),
+        // `UnitSlip` may grow (non-exhaustive): a new slip has no key here
+        // until it is named above.
         _ => (None, None),
     }
 }

@@ -212,3 +212,26 @@ def test_design_separates_the_delays_a_diagnosis_confounds_and_drives_its_best(t
         handling.design(tmp_path / "d", max_ax=0.0, out=tmp_path / "y")
     with pytest.raises(handling.ParamError, match="`--top` = 0"):
         handling.design(tmp_path / "d", top=0, out=tmp_path / "y")
+
+
+def test_a_unit_slip_is_an_input_error_naming_its_column_and_value(tmp_path):
+    # One load written in kN among loads in N, and a pressure column all
+    # in kPa: typed as unit slips, whose column and value the exception
+    # carries as any other input error's.
+    rows = ["fz,alpha,fy,pressure"]
+    for i in range(41):
+        a = -0.1 + 0.005 * i
+        fz = "2.5" if i == 20 else "2500"
+        rows.append(f"{fz},{a:.4f},{60000.0 * a:.2f},220000")
+    p = tmp_path / "rig.csv"
+    p.write_text("\n".join(rows) + "\n")
+    with pytest.raises(handling.InputError) as e:
+        handling.identify(p, "linear", seed=1)
+    assert (e.value.path, e.value.line, e.value.column) == (str(p), 22, 1)
+    assert (e.value.key, e.value.value) == ("fz", 2.5)
+    assert e.value.problem is not None and "kN" in e.value.reason
+    p.write_text("\n".join(r.replace(",220000", ",220") for r in rows).replace("2.5,", "2500,") + "\n")
+    with pytest.raises(handling.InputError) as e:
+        handling.identify(p, "linear", seed=1)
+    assert (e.value.key, e.value.value) == ("pressure", 220.0)
+    assert "220000 Pa" in e.value.reason

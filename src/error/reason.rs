@@ -366,6 +366,18 @@ pub enum Limit {
     /// A tyre's cornering stiffness below any tyre's: in N/deg.
     #[error("no tyre's cornering stiffness is below 900 N/rad (a bicycle tyre's is about 5e3, a car tyre's 5e4–1.5e5); the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 (500 N/deg is 28648 N/rad)")]
     CorneringStiffnessInDegrees,
+    /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too
+    /// small: in kN/deg.
+    #[error("PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg (the model's slip angle is in degrees, its force in N), so |a3| bounds it: no tyre's is below 15 N/deg (900 N/rad; a car tyre's a3 is 1000–3000 N/deg): is the value in kN/deg? multiply it by 1000")]
+    Pac89CorneringStiffnessInKn,
+    /// A UniTire file's cornering stiffness per unit load `p3`, too small:
+    /// per degree.
+    #[error("UniTire's cornering stiffness is K = Fz·(p3 + p4·Fzn + p5·Fzn²) per unit tan α, so p3 (`p[2]`) is K/Fz at light load, 10–25 for a road or racing tyre: no tyre's is below 0.9: are p3, p4 and p5 per degree? multiply them by 57.3")]
+    UniTireCorneringStiffness,
+    /// A UniTire file's longitudinal slip stiffness per unit load `p3`, too
+    /// small: per percent of slip.
+    #[error("UniTire's longitudinal slip stiffness is K = Fz·(p3 + p4·Fzn + p5·Fzn²) per unit slip ratio Sx, so p3 (`p[2]`) is K/Fz at light load, 10–30 for a road or racing tyre: no tyre's is below 0.9: are p3, p4 and p5 per percent of slip? multiply them by 100")]
+    UniTireSlipStiffness,
     /// A tyre's reference or rated load, N.
     #[error("a tyre carries 100 N (a bicycle) to 1e5 N (a mining truck); the key is in N: is the value in kN? (4 kN is 4000)")]
     TyreLoad,

@@ -79,7 +79,7 @@ pub enum UnitSlip {
         limit: f64,
     },
     /// An inflation pressure of a few units: in kPa, bar or psi.
-    #[error("column `pressure`: {} Pa, in a file whose median pressure is {} Pa: no inflated tyre runs below {} Pa (0.1 bar; a racing slick runs at about 70 kPa, a car tyre at 200–300 kPa): `pressure` is in Pa (FORMATS.md); is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?", Num(*value), Num(*median), Num(*limit))]
+    #[error("column `pressure`: {} Pa, in a file whose median pressure is {} Pa: no inflated tyre runs below {} Pa (0.1 bar; a racing slick runs at about 70 kPa, a car tyre at 200–300 kPa): `pressure` is in Pa (FORMATS.md); {}", Num(*value), Num(*median), Num(*limit), column_meant(*median, meant))]
     PressureNotInPa {
         /// The first pressure below the limit, as read.
         value: f64,
@@ -87,6 +87,9 @@ pub enum UnitSlip {
         median: f64,
         /// The smallest median pressure accepted, Pa.
         limit: f64,
+        /// The median read in the unit that lands it among the tyre's
+        /// pressures (or a pneumatic tyre's), where one does.
+        meant: Option<PressureMeant>,
     },
     /// One inflation pressure of a few units in a column whose median is
     /// in Pa: that value written in kPa, bar or psi.
@@ -206,6 +209,27 @@ fn pressure_meant(value: f64, meant: &Option<PressureMeant>) -> String {
         None => {
             "is the value in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?".into()
         }
+    }
+}
+
+/// The question a whole column of pressures of a few Pa raises: the unit
+/// its `median` reads in among the tyre's pressures, with the factor that
+/// converts the column, as [`pressure_meant`] answers for one cell; else
+/// every unit it may be in.
+fn column_meant(median: f64, meant: &Option<PressureMeant>) -> String {
+    match meant {
+        Some(m) => format!(
+            "is the column in {unit}? its median, {} {unit}, is {} Pa, within {} ({} to {} Pa): multiply the column by {}",
+            Num(median),
+            significant(m.pa, 4),
+            m.what,
+            Num(m.among[0]),
+            Num(m.among[1]),
+            significant(m.pa / median, 4),
+            unit = m.unit,
+        ),
+        None => "is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?"
+            .into(),
     }
 }
 

@@ -11,6 +11,7 @@
 
 use super::columns::Columns;
 use super::read_columns;
+use super::rig_rows::Known;
 use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip};
 use crate::identify::data::RigData;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
@@ -140,7 +141,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         mz,
         pressure: match c.take_optional("pressure") {
             Some(p) => {
-                if let Some((i, slip)) = pressure_not_in_pa(&p) {
+                if let Some((i, slip)) = pressure_not_in_pa(&p, None) {
                     return Err(c.error_at(path, i, "pressure", slip.into()));
                 }
                 // One cell in kPa among Pa: refused at it, not dropped as
@@ -185,15 +186,25 @@ pub(crate) fn load_in_kn(fz: &[f64], judged: impl Fn(f64) -> bool) -> Option<(us
     Some((i, slip))
 }
 
+/// The pressures a pneumatic tyre is inflated to, Pa, where the file
+/// names no tyre's: a racing slick's 55 kPa (8 psi) to a truck's 900 kPa,
+/// rounded outwards. A median that lands here in one of kPa, bar and psi
+/// (in that order) is said in it: 83 reads as 83 kPa, 2.2 as 2.2 bar, 30
+/// as 30 psi.
+pub(crate) const INFLATION: Known = ([50e3, 1e6], "a pneumatic tyre's inflation pressures");
+
 /// Where the positive pressures of `p` have a median below
 /// [`MIN_MEDIAN_PRESSURE`]: the first positive pressure below it and why
-/// (written in kPa, bar or psi). None without a positive pressure.
-pub(crate) fn pressure_not_in_pa(p: &[f64]) -> Option<(usize, UnitSlip)> {
+/// (written in kPa, bar or psi), with the unit the median reads in among
+/// the pressures `known` of the tyre (else [`INFLATION`]). None without
+/// a positive pressure.
+pub(crate) fn pressure_not_in_pa(p: &[f64], known: Option<Known>) -> Option<(usize, UnitSlip)> {
     let (i, median) = median_below(p, |v| v > 0.0, MIN_MEDIAN_PRESSURE)?;
     let slip = UnitSlip::PressureNotInPa {
         value: p[i],
         median,
         limit: MIN_MEDIAN_PRESSURE,
+        meant: super::rig_rows::meant(median, known.unwrap_or(INFLATION)),
     };
     Some((i, slip))
 }

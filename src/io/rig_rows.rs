@@ -49,7 +49,7 @@ pub(crate) fn refuse_rows_not_in_pa(
 
 /// The first reading of `value` in kPa, bar or psi that lands among the
 /// pressures `known`.
-fn meant(value: f64, (among, what): Known) -> Option<PressureMeant> {
+pub(crate) fn meant(value: f64, (among, what): Known) -> Option<PressureMeant> {
     unit_slips(Variable::Pressure)
         .iter()
         .map(|&(unit, factor)| (unit, value * factor))

@@ -434,6 +434,11 @@ impl ModelParameters for Pac89 {
         // The inherent check above (inherent methods take precedence).
         Pac89::validate(self)
     }
+    /// The lateral curve's largest cornering stiffness `a3` (N/deg) by
+    /// its size: one typed in kN/deg is refused at its key.
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        super::sizes::pac89_cornering_stiffness("a[3]", self.a[3])
+    }
     /// BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|) is proportional to a3 (the
     /// offset Sh makes the stiffness at α = 0 only nearly so).
     fn scale_cornering_stiffness(&mut self, k: f64) {

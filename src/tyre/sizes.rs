@@ -7,7 +7,7 @@
 //! narrower) is refused. Units: SI, as the models hold them (N, m, N/rad,
 //! Pa); a Magic Formula file's values after its `[UNITS]` are applied.
 
-use crate::error::{Limit, ParamError};
+use crate::error::{Limit, ParamError, ParamReason};
 use crate::tyre::mf::MfCoefficients;
 
 /// The longest contact patch, m (a car tyre's is 0.1–0.25 m, a truck's
@@ -23,6 +23,25 @@ pub const MAX_CORNERING_STIFFNESS: f64 = 2e6;
 /// lands below or near it. Under the fits' box (1e3), so that no fitted
 /// tyre is refused.
 pub const MIN_CORNERING_STIFFNESS: f64 = 900.0;
+
+/// The least |`a3`| of a PAC89 file, N/deg: `a3` bounds its lateral
+/// curve's cornering stiffness `BCD = a3·sin(2·atan(Fz/a4))` (PAC89's
+/// slip angle is in degrees). A car tyre's is 1000–3000 N/deg;
+/// [`MIN_CORNERING_STIFFNESS`] is 15.7 N/deg, rounded down here, under
+/// the fit's box (100). An `a3` typed in kN/deg (1–3) lands below. No
+/// upper end: a tyre whose stiffness rises in proportion to the load to
+/// the last load tested is fitted with `a3` and `a4` both far above any
+/// load (Zhang et al.'s two-stage fit reaches 1e11), which `BCD` never
+/// reaches.
+pub const MIN_PAC89_A3: f64 = 15.0;
+
+/// The least `p3` of a UniTire file's lateral or longitudinal block: the
+/// slip stiffness per unit load at light load, `K/Fz` per unit `tan α` or
+/// slip ratio `Sx` (`K = Fz·(p3 + p4·Fzn + p5·Fzn²)`), 10–30 for road and
+/// racing tyres. The same per degree (0.17–0.5) or per percent of slip
+/// (0.1–0.3) lands below it; under the fit's box (1), so that no fitted
+/// tyre is refused.
+pub const MIN_UNITIRE_P3: f64 = 0.9;
 
 /// The loads of a tyre, N: a bicycle's above 100 N, a mining truck's
 /// below 1e5 N.
@@ -69,6 +88,36 @@ pub(crate) fn cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
         MAX_CORNERING_STIFFNESS,
         why,
     )
+}
+
+/// PAC89's `a3`, N/deg, by its size (`a3` and `a4` may both be negative,
+/// [`crate::tyre::ModelParameters::canonicalise`]): one below
+/// [`MIN_PAC89_A3`] is said as the kN/deg it likely is.
+pub(crate) fn pac89_cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
+    ParamError::finite(key, v)?;
+    match v.abs() > MIN_PAC89_A3 {
+        true => Ok(()),
+        false => Err(ParamError::new(
+            key,
+            v,
+            ParamReason::OutOfRange {
+                lo: MIN_PAC89_A3,
+                hi: f64::INFINITY,
+                why: Limit::Pac89CorneringStiffnessInKn,
+            },
+        )),
+    }
+}
+
+/// A UniTire block's `p3` (`longitudinal`: the longitudinal block's),
+/// above [`MIN_UNITIRE_P3`]: a small one is said as the per-degree or
+/// per-percent value it likely is.
+pub(crate) fn unitire_stiffness(key: &str, v: f64, longitudinal: bool) -> Result<(), ParamError> {
+    let why = match longitudinal {
+        true => Limit::UniTireSlipStiffness,
+        false => Limit::UniTireCorneringStiffness,
+    };
+    ParamError::in_range(key, v, MIN_UNITIRE_P3, f64::INFINITY, why)
 }
 
 /// A tyre's load (a reference or rated load), N.

@@ -330,8 +330,16 @@ impl ModelParameters for UniTire {
         // The inherent check above (inherent methods take precedence).
         UniTire::validate(self)
     }
+    /// The rated load, and each block's slip stiffness per unit load at
+    /// light load, `p3`: one typed per degree or per percent of slip is
+    /// refused at its key.
     fn check_sizes(&self) -> Result<(), ParamError> {
-        super::sizes::tyre_load("rated_load", self.rated_load)
+        super::sizes::tyre_load("rated_load", self.rated_load)?;
+        super::sizes::unitire_stiffness("lateral.p[2]", self.lateral.p[2], false)?;
+        match &self.longitudinal {
+            Some(l) => super::sizes::unitire_stiffness("longitudinal.p[2]", l.p[2], true),
+            None => Ok(()),
+        }
     }
     /// K = Fz·(p3 + p4·Fzn + p5·Fzn²) is proportional to p3..p5.
     fn scale_cornering_stiffness(&mut self, k: f64) {

@@ -115,3 +115,38 @@ fn a_linear_tyre_is_fitted_to_small_slip_and_its_trail_to_mz() {
     assert!(trail != 0.0 && trail.abs() < 0.1, "{trail}");
     assert!(file.contains("# pneumatic_trail = "), "{file}");
 }
+
+/// `identify --model mf61` on lateral-only rig data said its longitudinal
+/// block was not fitted (Fx = 0 in the written file) but not that its
+/// QSX and QSY blocks were all 0 too, so that the file's `mx` and `my`
+/// are 0 everywhere; the rule that finds them is `tyre-eval`'s, which
+/// then warns of the same at the points it evaluates.
+#[test]
+fn a_lateral_only_mf61_fit_says_its_wheel_moments_are_not_fitted() {
+    let dir = scratch(&[("rig.csv", &rig(1.0))]);
+    let tir = dir.path().join("m.tir");
+    let o = identify_with(dir.path(), "mf61", &[], &tir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = fs::read_to_string(&tir).unwrap();
+    let lines = [
+        "no longitudinal data: the longitudinal force block is not fitted (",
+        "no overturning moment data: the overturning moment block is not fitted (no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)): its coefficients are the defaults' (no --template); the written file's overturning moment is 0 at any lateral force or camber (QSX1 to QSX14 all 0): give --template with a tyre's overturning moment coefficients for one",
+        "no rolling resistance data: the rolling resistance moment block is not fitted (no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)): its coefficients are the defaults' (no --template); the written file's rolling resistance moment is 0 at any speed (QSY1 to QSY8 all 0): give --template with a tyre's rolling resistance coefficients for one",
+    ];
+    for line in lines {
+        assert!(stdout(&o).contains(&format!("  {line}")), "{}", stdout(&o));
+        assert!(file.contains(&format!("$ {line}")), "{file}");
+    }
+    // With a template that has them, they are the template's.
+    let template = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let tir = dir.path().join("t.tir");
+    let args = ["--template", template.to_str().unwrap()];
+    let o = identify_with(dir.path(), "mf61", &args, &tir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("its coefficients are the template's values; the written file's overturning moment is theirs, not these data's")
+            && stdout(&o).contains("its coefficients are the template's values; the written file's rolling resistance moment is theirs, not these data's"),
+        "{}",
+        stdout(&o)
+    );
+}

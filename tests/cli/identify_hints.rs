@@ -192,3 +192,52 @@ fn a_request_no_test_has_in_si_gets_its_unit_even_without_a_level() {
         );
     }
 }
+
+/// A `pressure` column all in kPa (220) was refused with the column's
+/// median but not the reading meant, where one cell in kPa is answered
+/// with it; in bar or psi alike, and in `tyre-eval` against the file's
+/// PRESMIN to PRESMAX.
+#[test]
+fn a_pressure_column_in_kpa_bar_or_psi_is_answered_with_its_median_in_pa() {
+    let cases = [
+        ("220", "is the column in kPa? its median, 220 kPa, is 220000 Pa, within a pneumatic tyre's inflation pressures (50000 to 1000000 Pa): multiply the column by 1000"),
+        ("2.2", "is the column in bar? its median, 2.2 bar, is 220000 Pa, within a pneumatic tyre's inflation pressures (50000 to 1000000 Pa): multiply the column by 100000"),
+        ("32", "is the column in psi? its median, 32 psi, is 220632 Pa, within a pneumatic tyre's inflation pressures (50000 to 1000000 Pa): multiply the column by 6895"),
+    ];
+    for (cell, said) in cases {
+        let dir = rig_with(0, |_| ());
+        let path = dir.path().join("rig.csv");
+        let text = fs::read_to_string(&path)
+            .unwrap()
+            .replace(",220000\n", &format!(",{cell}\n"));
+        fs::write(&path, text).unwrap();
+        let o = identify(&path, &[]);
+        let e = stderr(&o);
+        assert!(
+            !o.status.success() && e.contains(&format!("rig.csv:2:4: column `pressure`: {cell} Pa, in a file whose median pressure is {cell} Pa: ")) && e.contains(said),
+            "{cell}: {e}"
+        );
+    }
+    // `tyre-eval` reads the median among the tyre's own pressures.
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("p.csv");
+    fs::write(
+        &points,
+        "fz,kappa,alpha,camber,speed,pressure\n4000,0,0.05,0,20,260\n4000,0,0.05,0,20,260\n",
+    )
+    .unwrap();
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let out = dir.path().join("f.csv");
+    let o = run(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        points.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert!(
+        !o.status.success() && e.contains("is the column in kPa? its median, 260 kPa, is 260000 Pa, within the file's PRESMIN to PRESMAX (200000 to 400000 Pa): multiply the column by 1000"),
+        "{e}"
+    );
+}

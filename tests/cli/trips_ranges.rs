@@ -120,3 +120,45 @@ fn a_cornering_stiffness_in_n_per_degree_is_refused_with_the_factor() {
         );
     }
 }
+
+/// The MF 6.1 sample with `INFLPRES` = 150 kPa, below its `PRESMIN` of
+/// 200 kPa, ran at 200 kPa (the limit checks) without a word of the
+/// pressure; and a file without `FZMIN` said its load range as `fz -inf
+/// to 2000 N`.
+#[test]
+fn simulate_checks_a_tirs_own_pressure_and_says_a_one_ended_range() {
+    let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
+        .unwrap();
+    let edited: String = text
+        .lines()
+        .filter(|l| !l.starts_with("FZMIN"))
+        .map(|l| match l.split_whitespace().next() {
+            Some("INFLPRES") => "INFLPRES = 150000\n".to_string(),
+            Some("FZMAX") => "FZMAX = 2000\n".to_string(),
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let sc = format!("{VEHICLE}\n[tyres]\nfront = \"tyre.tir\"\n\n{STEP}");
+    let dir = scratch(&[("scenario.toml", &sc), ("tyre.tir", &edited)]);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok, "{err}");
+    let line = said
+        .lines()
+        .find(|l| l.contains("take the front tyres outside their .tir's validity ranges"))
+        .unwrap_or_else(|| panic!("{said}"));
+    assert!(
+        line.contains("(fz ≤ 2000 N, alpha -0.9600 to 0.9600 rad, kappa -1.000 to 1.000, camber -0.1050 to 0.08730 rad, pressure 200000 to 400000 Pa; "),
+        "{line}"
+    );
+    assert!(!line.contains("inf"), "{line}");
+    assert!(
+        line.contains("there, wheel loads ")
+            && line.contains(", a pressure of 150000 Pa (the file's INFLPRES)"),
+        "{line}"
+    );
+    // At its own pressure, within the range, the pressure is not named.
+    let within = edited.replace("INFLPRES = 150000", "INFLPRES = 250000");
+    let dir = scratch(&[("scenario.toml", &sc), ("tyre.tir", &within)]);
+    let (ok, said, err) = simulated(dir.path());
+    assert!(ok && !said.contains("a pressure of"), "{err}{said}");
+}

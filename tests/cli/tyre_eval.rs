@@ -4,7 +4,9 @@
 //! the speed its speed terms reach, a load its vertical model carries at
 //! no loaded radius, a TOML tyre off the road, the loads a slip
 //! stiffness's sign change is named within, a negative speed and a
-//! pressure row in kPa.
+//! pressure row in kPa; a model that does not couple fx and fy and a
+//! resultant beyond friction, a Magic Formula mz at zero speed, and a
+//! PAC89 or UniTire stiffness in another unit.
 
 use super::*;
 use crate::trips_identify::{identify_with, rig, stdout};
@@ -302,4 +304,114 @@ fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
         "{e}"
     );
     assert!(!e.contains("p.csv:4:"), "{e}");
+}
+
+/// The bundled UniTire at κ = α = 0.1 gave its pure-slip fy with its
+/// pure-slip fx, a resultant 1.34 times its friction, without a word; so
+/// did PAC89. A Magic Formula tyre couples them: nothing to say.
+#[test]
+fn an_uncoupled_model_at_combined_slip_is_said_with_its_resultant_beyond_friction() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.1,0.1,0,20\n4000,0.1,0,0,20\n4000,0,0.1,0,20\n4000,-0.02,0.01,0,20\n";
+    for toml in ["unitire.toml", "pac89_adams_example.toml"] {
+        let model = toml.split(['_', '.']).next().unwrap();
+        let (o, written) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
+        let e = stderr(&o);
+        assert!(o.status.success(), "{toml}: {e}");
+        let (fx, fy) = (column(&written, "fx"), column(&written, "fy"));
+        // Each force its pure-slip one: the first row's the next two's.
+        assert_eq!((fx[0], fy[0]), (fx[1], fy[2]), "{toml}");
+        assert!(
+            e.contains(&format!("warning: this {model} tyre does not couple fx and fy: at the 2 of 4 points at combined slip (kappa ≠ 0 and alpha ≠ 0) its fx is its pure-slip force at kappa and its fy at alpha")),
+            "{toml}: {e}"
+        );
+        // The first point only: the last, at small slips, is within its
+        // friction however the two add.
+        assert!(
+            e.contains("warning: 1 of 4 points has √(fx² + fy²) more than 5 % above the tyre's friction μ·Fz")
+                && e.contains("at fz = 4000 N, kappa = 0.1000, alpha = 0.1000 rad: the model does not couple fx and fy (above)"),
+            "{toml}: {e}"
+        );
+    }
+    let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
+    let e = stderr(&o);
+    assert!(
+        o.status.success() && !e.contains("couple") && !e.contains("friction μ·Fz"),
+        "{e}"
+    );
+}
+
+/// The MF 6.1 sample at α = −0.05 rad gave mz = +0.21 N·m at zero speed
+/// (−43 N·m at 20 m/s, fy negative at both) without a word: MFeval's
+/// cos'α = Vx/(Vc + εV) takes the trail's term away at Vx = 0. Kept, as
+/// MFeval has it, and said with a count.
+#[test]
+fn a_magic_formula_mz_at_zero_speed_is_said_to_be_its_residual_torque() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,-0.05,0,20\n4000,0,-0.05,0,0\n4000,0,0.05,0,0\n4000,0,0,0,0\n";
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    let (fy, mz) = (column(&written, "fy"), column(&written, "mz"));
+    assert!(
+        fy[0] < 0.0 && fy[1] < 0.0 && mz[0] < -40.0 && mz[1] > 0.0,
+        "{written}"
+    );
+    assert!(
+        e.contains("warning: 2 of 4 points at zero speed (below 0.0001 m/s): mz there is the residual torque alone, of the opposite sign to the same point's at VXLOW = 1.00 m/s at 1 of them (0.210 N·m against -47.5 N·m), as MFeval's formula gives it (cos'α = Vx/(Vc + εV)"),
+        "{e}"
+    );
+    // At any speed the trail is there: nothing to say.
+    let (o, _) = eval(dir.path(), &tir, &points.replace(",0\n", ",0.5\n"), &[]);
+    assert!(
+        o.status.success() && !stderr(&o).contains("zero speed"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// A PAC89 `a3` of 3.036 (kN/deg typed for 3036 N/deg: a cornering
+/// stiffness 1000 times too soft) and a UniTire `p3` of 0.244 (14 per
+/// degree, 57 times too soft) were evaluated without a word, where a Gim
+/// or linear tyre's cornering stiffness in N/deg is refused.
+#[test]
+fn a_pac89_or_unitire_stiffness_in_another_unit_is_refused_at_its_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n";
+    let pac89 = fs::read_to_string(root().join("tyres/pac89_adams_example.toml")).unwrap();
+    let unitire = fs::read_to_string(root().join("tyres/unitire.toml")).unwrap();
+    let cases = [
+        (
+            "p.toml",
+            pac89.replace("1250.0, 3036.0,", "1250.0, 3.036,"),
+            "p.toml:8:27: `a[3]` = 3.036: must be greater than 15: PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg",
+            "is the value in kN/deg? multiply it by 1000",
+        ),
+        (
+            "u.toml",
+            unitire.replacen("1.2, 14.0, -2.0, 0.2,", "1.2, 0.244, -0.0349, 0.0035,", 1),
+            "u.toml:13:16: `lateral.p[2]` = 0.244: must be greater than 0.9: UniTire's cornering stiffness",
+            "are p3, p4 and p5 per degree? multiply them by 57.3",
+        ),
+        (
+            "u.toml",
+            unitire.replacen("1.0, 18.0, -1.5, 0.1,", "1.0, 0.18, -0.015, 0.001,", 1),
+            "u.toml:16:16: `longitudinal.p[2]` = 0.18: must be greater than 0.9: UniTire's longitudinal slip stiffness",
+            "are p3, p4 and p5 per percent of slip? multiply them by 100",
+        ),
+    ];
+    for (name, text, said, hint) in cases {
+        let tyre = dir.path().join(name);
+        fs::write(&tyre, text).unwrap();
+        let (o, written) = eval(dir.path(), &tyre, points, &[]);
+        let e = stderr(&o);
+        assert!(!o.status.success() && written.is_empty(), "{e}");
+        assert!(e.contains(said) && e.contains(hint), "{e}");
+    }
+    // The bundled files, in their units, are read.
+    for toml in ["pac89_adams_example.toml", "unitire.toml"] {
+        let (o, _) = eval(dir.path(), &root().join("tyres").join(toml), points, &[]);
+        assert!(o.status.success(), "{toml}: {}", stderr(&o));
+    }
 }

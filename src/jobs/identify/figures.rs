@@ -3,14 +3,16 @@
 //! degrees, slip ratio in percent), each titled with its own σ =
 //! sqrt(Σe²/ΣF²)·100 % over its points and its levels spelt as the
 //! terminal spells them ([`Variable::display`]); a colour per load within
-//! a panel. The staged Magic Formula fit's is in `staged_figure.rs`.
+//! a panel, the key opening with what is measured (points) and what
+//! fitted (lines). The staged Magic Formula fit's is in `staged_figure.rs`.
 
+use super::staged_figure::{key_entries, level_colour, MEASURED};
 use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
 use crate::identify::grouping::Variable;
 use crate::identify::Channel;
-use crate::report::plot::{Figure, Panel, Series, Style, INK};
+use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::tyre::Tyre;
 
 /// Measured points against the fitted curves of every channel fitted.
@@ -127,7 +129,10 @@ fn panel(
         Channel::LongitudinalForce => SlipAxis::Ratio,
         _ => SlipAxis::Angle,
     };
-    let mut series = Vec::new();
+    // The key says which marks are measured (points) and which fitted
+    // (lines), in grey, before the loads' colours: a line per load in its
+    // points' colour.
+    let mut series = key_entries(Style::Points(2), MEASURED);
     let (mut e2, mut y2, mut n) = (0.0, 0.0, 0);
     for (k, c) in conditions.iter().enumerate() {
         let measured: Vec<(f64, f64, f64)> = c
@@ -144,8 +149,8 @@ fn panel(
         let x: Vec<f64> = measured.iter().map(|p| p.0).collect();
         let y: Vec<f64> = measured.iter().map(|p| p.1).collect();
         // A colour per load, none twice in a panel (the palette has INK
-        // colours before its black).
-        let colour = k % INK;
+        // colours before its black), none the key's grey.
+        let colour = level_colour(k);
         series.push(Series::line("", &x, &y, colour).styled(Style::Points(2)));
         // The fitted curve over the condition's own slip range: the y
         // axis is then the data's, not the model's beyond them.

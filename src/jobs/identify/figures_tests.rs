@@ -5,7 +5,7 @@
 
 use super::*;
 use crate::identify::data::identification_conditions;
-use crate::report::plot::Axes;
+use crate::report::plot::{Axes, INK};
 use crate::tyre::Pac89;
 
 /// The PAC89 Adams example's rig points at three loads, repeated at three
@@ -54,15 +54,25 @@ fn a_panel_per_pressure_titled_with_its_own_sigma_and_the_terminals_levels() {
             fixed(sigma, 2)
         );
         assert_eq!(p.title, want);
-        // The labels are the terminal's ([`Variable::display`]), each
-        // load once, in a colour of its own that is not black.
+        // The key says which marks are measured and which fitted, then
+        // the loads as the terminal spells them ([`Variable::display`]),
+        // each once, in a colour of its own that is neither black nor
+        // the key's grey.
         let labelled: Vec<&Series> = p.series.iter().filter(|s| !s.label.is_empty()).collect();
         let labels: Vec<&str> = labelled.iter().map(|s| s.label.as_str()).collect();
-        assert_eq!(labels, ["2800 N", "5700 N", "8600 N"]);
-        let mut colours: Vec<usize> = labelled.iter().map(|s| s.color).collect();
+        assert_eq!(
+            labels,
+            ["measured", "fitted", "2800 N", "5700 N", "8600 N"],
+            "{}",
+            p.title
+        );
+        // Measured as points, fitted as a line, as the panel draws them.
+        assert_eq!(labelled[0].style, Style::Points(2));
+        assert_eq!(labelled[1].style, Style::Line);
+        let mut colours: Vec<usize> = labelled[2..].iter().map(|s| s.color).collect();
         colours.dedup();
         assert_eq!(colours.len(), 3, "{}: colours {colours:?}", p.title);
-        assert!(colours.iter().all(|c| *c != INK));
+        assert!(colours.iter().all(|c| *c != INK && *c != MEASURED));
         // The legend fits beside the chart: its top margin, a 20 px row
         // per entry and the x labels below.
         assert!(fig.row_height >= 40 + 20 * labels.len() as u32 + 30);
@@ -74,12 +84,10 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_loads_points() {
     let (tyre, conds) = conditions();
     let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)]);
     for p in &fig.panels {
-        let points: Vec<&Series> = p
-            .series
-            .iter()
-            .filter(|s| s.style == Style::Points(2))
-            .collect();
-        let lines: Vec<&Series> = p.series.iter().filter(|s| s.style == Style::Line).collect();
+        // The key's two entries hold no data.
+        let drawn = || p.series.iter().filter(|s| !s.x.is_empty());
+        let points: Vec<&Series> = drawn().filter(|s| s.style == Style::Points(2)).collect();
+        let lines: Vec<&Series> = drawn().filter(|s| s.style == Style::Line).collect();
         assert_eq!((points.len(), lines.len()), (3, 3), "{}", p.title);
         let (lo, hi) = points
             .iter()

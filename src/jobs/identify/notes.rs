@@ -12,6 +12,7 @@
 use super::SwarmReport;
 use crate::format::{fixed, readable};
 use crate::identify::{Fit, HeldFor, ParameterReport};
+use crate::jobs::tyre_eval::{gives_none, Output};
 use serde::Serialize;
 
 /// The σ of a fitted channel above which the model is said not to follow
@@ -114,9 +115,10 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
         .into_iter()
         .filter(|b| b.3)
         .map(|(data, quantity, columns, _)| {
-            // Found by evaluating the written tyre: a model whose start
-            // values leave the block at zero gives no force at all.
-            let what = if data == "longitudinal" && no_longitudinal_force(&r.tyre) {
+            // Found by evaluating the written tyre, by `tyre-eval`'s rule
+            // ([`gives_none`]): a model whose start values leave the
+            // block at zero gives no force at all.
+            let what = if data == "longitudinal" && gives_none(&r.tyre, Output::Fx).is_some() {
                 format!(
                     "the written file's longitudinal force is 0 at any slip ratio (the {} model's longitudinal coefficients start at zero): fit rig data with kappa and fx for one",
                     r.options.model
@@ -132,17 +134,6 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
             ))
         })
         .collect()
-}
-
-/// Whether `tyre` gives no longitudinal force: 0 at slip ratios of ±0.1,
-/// at loads of 1, 3 and 6 kN (no force model gives an exact 0 there
-/// otherwise).
-fn no_longitudinal_force(tyre: &crate::tyre::Tyre) -> bool {
-    let fz = [1000.0, 1000.0, 3000.0, 3000.0, 6000.0, 6000.0];
-    let kappa = [-0.1, 0.1, -0.1, 0.1, -0.1, 0.1];
-    tyre.evaluate_points(&fz, &kappa, &[0.0; 6], &[0.0; 6], &[10.0; 6], &[])
-        .iter()
-        .all(|f| f.fx == 0.0)
 }
 
 /// Every note of `r`, in the order the terminal gives them.

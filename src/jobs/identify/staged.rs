@@ -16,6 +16,7 @@ use crate::identify::mf_staged::{
 use crate::identify::{ConstantFrom, HeldFor};
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
+use crate::jobs::tyre_eval::gives_none;
 use crate::report::plot::Figure;
 use crate::report::{refuse_overwrites, OutputLock};
 use crate::tyre::mf::{MagicFormula, MfCoefficients};
@@ -46,10 +47,10 @@ pub struct StagedJob {
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
-    /// The line saying the longitudinal force is not fitted, and what the
-    /// written file's is ([`no_longitudinal_data`]).
+    /// The lines saying the longitudinal force and the wheel moments are
+    /// not fitted, and what the written file's are ([`unfitted_blocks`]).
     #[serde(skip)]
-    pub no_longitudinal: Option<String>,
+    pub unfitted: Vec<String>,
     /// What the job was asked.
     #[serde(skip)]
     pub options: Options,
@@ -84,7 +85,7 @@ impl StagedJob {
             .map_or(&[][..], |g| &g.levels[..]);
         out.extend(stage_lines(&self.report, named, true));
         out.push(format!("  {}", self.sigma_pooled.line()));
-        out.extend(self.no_longitudinal.iter().map(|l| format!("  {l}")));
+        out.extend(self.unfitted.iter().map(|l| format!("  {l}")));
         out
     }
 }
@@ -226,7 +227,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     }
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
-    let no_fx = no_longitudinal_data(&id.report, o.template.is_some(), &written);
+    let unfitted = unfitted_blocks(&id.report, o.template.is_some(), &written);
     let named = prepared
         .account
         .thinning
@@ -241,7 +242,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .collect();
     let tir = held_comment(o)
         + &super::ranges::tir_comment(&spans, o.template.is_some())
-        + &no_fx.iter().map(|l| format!("$ {l}\n")).collect::<String>()
+        + &unfitted
+            .iter()
+            .map(|l| format!("$ {l}\n"))
+            .collect::<String>()
         + &super::holds::held_file_lines(&held, "$")
         + &stages
         + &crate::io::tir::tir_text(&written, template.as_ref())?;
@@ -268,7 +272,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         round_trip_relative_difference: back,
         figure,
         tir,
-        no_longitudinal: no_fx,
+        unfitted,
         options: o.clone(),
         lock,
     })
@@ -289,58 +293,67 @@ fn held_comment(o: &Options) -> String {
     s
 }
 
-/// The line saying that the file's longitudinal force is not fitted,
-/// when the pure Fx stage had no rows (a cornering-only rig file): its
-/// coefficients are the template's (`template`) or the defaults, and what
-/// Fx the written tyre `t` then gives (without a template none: the
-/// defaults' PDX1 = PKX1 = 0, which reads as a tyre that grips only
-/// sideways unless it is said).
-pub(super) fn no_longitudinal_data(
+/// The blocks the fit wrote without data, one line each: where the pure
+/// Fx stage had no rows (a cornering-only rig file), the longitudinal
+/// force; where the Mx or My stage had none (no `mx`, `my` columns), the
+/// overturning or rolling resistance moment. Each says that its
+/// coefficients are the template's (`template`) or the defaults', and
+/// what the written tyre `t` then gives: without a template none (the
+/// defaults' PDX1 = PKX1 = 0, QSX*, QSY* all 0), found by `tyre-eval`'s
+/// rule ([`gives_none`]), which would read as a tyre that grips only
+/// sideways, or has no wheel moments, unless it is said.
+pub(super) fn unfitted_blocks(
     report: &StagedReport,
     template: bool,
     t: &MagicFormula,
-) -> Option<String> {
-    let pure_fx = report
-        .stages
-        .iter()
-        .find(|s| s.stage == mf_staged::Stage::PureFx)?;
-    let why = pure_fx.skipped.as_ref()?;
+) -> Vec<String> {
+    use crate::jobs::tyre_eval::Output;
+    use mf_staged::Stage;
+    let tyre = crate::tyre::Tyre::MagicFormula(Box::new(t.clone()));
+    let blocks = [
+        (
+            Stage::PureFx,
+            Output::Fx,
+            "longitudinal",
+            "longitudinal force",
+        ),
+        (
+            Stage::Mx,
+            Output::Mx,
+            "overturning moment",
+            "overturning moment",
+        ),
+        (
+            Stage::My,
+            Output::My,
+            "rolling resistance",
+            "rolling resistance moment",
+        ),
+    ];
     let from = if template {
         "the template's values"
     } else {
         "the defaults' (no --template)"
     };
-    let c = &t.coefficients;
-    let gives = if gives_no_longitudinal_force(t) {
-        format!(
-            "the written file's longitudinal force is 0 at any slip ratio (PDX1 = {}, PKX1 = {}): give --template with a tyre's longitudinal coefficients for one",
-            exact(c.PDX1),
-            exact(c.PKX1)
-        )
-    } else {
-        "the written file's longitudinal force is theirs, not these data's".into()
-    };
-    Some(format!(
-        "no longitudinal data: the longitudinal force block is not fitted ({why}): its coefficients are {from}; {gives}"
-    ))
-}
-
-/// Whether `t` gives no longitudinal force at all: 0 at a slip ratio of
-/// ±0.1 at its nominal load, found by evaluating it, not by naming the
-/// coefficients that cause it (a peak factor or a slip stiffness of 0).
-fn gives_no_longitudinal_force(t: &MagicFormula) -> bool {
-    let c = &t.coefficients;
-    [-0.1, 0.1].into_iter().all(|kappa| {
-        let p = crate::tyre::mf::MfInput {
-            fz: c.FNOMIN,
-            kappa,
-            alpha: 0.0,
-            camber: 0.0,
-            speed: c.LONGVL,
-            pressure: None,
-        };
-        t.evaluate(&p).fx == 0.0
-    })
+    blocks
+        .into_iter()
+        .filter_map(|(stage, o, data, block)| {
+            let skipped = report.stages.iter().find(|s| s.stage == stage)?;
+            let why = skipped.skipped.as_ref()?;
+            let gives = match gives_none(&tyre, o).and_then(|z| z.cause()) {
+                Some((cause, _)) => format!(
+                    "the written file's {} is 0 {} ({cause}): give --template with a tyre's {} coefficients for one",
+                    o.what(),
+                    o.anywhere(),
+                    o.block()
+                ),
+                None => format!("the written file's {} is theirs, not these data's", o.what()),
+            };
+            Some(format!(
+                "no {data} data: the {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
+            ))
+        })
+        .collect()
 }
 
 /// The names given with `--hold`: a given value is set before the stages

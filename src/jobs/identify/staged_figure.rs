@@ -335,11 +335,7 @@ fn panel(
             ..Panel::default()
         };
     }
-    // The key's first entries say how measured and fitted are drawn.
-    let mut series = vec![
-        Series::line("measured", &[], &[], MEASURED).styled(Style::Points(3)),
-        Series::line("fitted", &[], &[], INK),
-    ];
+    let mut series = key_entries(Style::Points(3), INK);
     let (mut e2, mut y2) = (0.0, 0.0);
     let count = if by_other {
         lv.other.len()
@@ -386,9 +382,20 @@ fn panel(
     }
 }
 
+/// The first entries of a fit figure's key, which say how measured and
+/// fitted are drawn: the measured points (grey, drawn as `points`) and
+/// the fitted line (in colour `fitted`). Every fit figure's panel opens
+/// its key with them; the levels' colours follow.
+pub(super) fn key_entries(points: Style, fitted: usize) -> Vec<Series> {
+    vec![
+        Series::line("measured", &[], &[], MEASURED).styled(points),
+        Series::line("fitted", &[], &[], fitted),
+    ]
+}
+
 /// The colour of a panel's `k`-th line: the palette without the grey of
 /// the key's "measured" swatch.
-fn level_colour(k: usize) -> usize {
+pub(super) fn level_colour(k: usize) -> usize {
     let c = k % (INK - 1);
     if c >= MEASURED {
         c + 1
@@ -398,7 +405,7 @@ fn level_colour(k: usize) -> usize {
 }
 
 /// The palette index of the key's "measured" swatch (grey).
-const MEASURED: usize = 7;
+pub(super) const MEASURED: usize = 7;
 
 /// Points of a model line: enough that the narrow peak of a combined-slip
 /// aligning moment near κ = 0 on a ±100 % axis is drawn as a curve.

@@ -26,9 +26,12 @@
 //!   (each wheel at zero slip ratio and camber, as the 2-DOF model
 //!   evaluates it), counted per axle; and likewise the rows beyond a
 //!   `.tir`'s own ranges (`FZMIN`/`FZMAX`, `ALPMIN`/`ALPMAX`,
-//!   `CAMMIN`/`CAMMAX`, `KPUMIN`/`KPUMAX`), where the Magic Formula holds
+//!   `CAMMIN`/`CAMMAX`, `KPUMIN`/`KPUMAX`, and `PRESMIN`/`PRESMAX`
+//!   against the file's own `INFLPRES` (else `NOMPRES`), which its wheels
+//!   run at: a scenario states no pressure), where the Magic Formula holds
 //!   each input at its range's end (MFeval's limit checks) or, with them
-//!   off, extrapolates.
+//!   off, extrapolates. A range with one end given is said as `≥ X` or
+//!   `≤ X`.
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
@@ -79,6 +82,7 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         if let Tyre::MagicFormula(t) = tyre {
             let source = RangeSource::Tir {
                 held: t.options.limit_checks,
+                pressure: t.own_pressure(),
             };
             said.warnings
                 .extend(beyond_fitted(axle, &tir_ranges(t), source, h));
@@ -271,14 +275,48 @@ enum RangeSource {
     Fitted,
     /// A `.tir`'s own validity ranges: the Magic Formula holds each input
     /// at its range's end where the limit checks are on (`held`), and
-    /// extrapolates where they are off.
-    Tir { held: bool },
+    /// extrapolates where they are off. Its wheels run at the file's own
+    /// `pressure` (Pa, and the key that gives it; a scenario states none),
+    /// `None` where no pressure moves the model.
+    Tir {
+        held: bool,
+        pressure: Option<(f64, &'static str)>,
+    },
+}
+
+impl RangeSource {
+    /// What the ranges are and how the model evaluates beyond them, in
+    /// words.
+    fn words(self) -> (&'static str, &'static str) {
+        match self {
+            RangeSource::Fitted => (
+                "the ranges of the rig data they were fitted to",
+                "their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation",
+            ),
+            RangeSource::Tir { held: true, .. } => (
+                "their .tir's validity ranges",
+                "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated at the ranges' ends (MFeval's limit checks: the force stays that of the range's end, however far beyond)",
+            ),
+            RangeSource::Tir { held: false, .. } => (
+                "their .tir's validity ranges",
+                "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation (the limit checks are off)",
+            ),
+        }
+    }
+
+    /// The inflation pressure the wheels run at, where it is checked.
+    fn pressure(self) -> Option<(f64, &'static str)> {
+        match self {
+            RangeSource::Fitted => None,
+            RangeSource::Tir { pressure, .. } => pressure,
+        }
+    }
 }
 
 /// A `.tir`'s validity ranges in the crate's convention (the file states
 /// slip and camber in its own frame: a left-side file's slip angle is the
 /// crate's negated, a right-side file's camber is), a missing bound
-/// unbounded. Pressure is left out: the run uses the file's own.
+/// unbounded ([`ranges_text`] says such a range as `≥ X` or `≤ X`).
 fn tir_ranges(t: &MagicFormula) -> FittedRanges {
     let l = &t.limits;
     let range = |lo: Option<f64>, hi: Option<f64>| {
@@ -294,8 +332,36 @@ fn tir_ranges(t: &MagicFormula) -> FittedRanges {
         alpha: if right { alpha } else { negated(alpha) },
         kappa: range(l.kappa_min, l.kappa_max),
         camber: if right { negated(camber) } else { camber },
-        pressure: None,
+        pressure: range(l.pressure_min, l.pressure_max),
     }
+}
+
+/// The ranges of `r` in words, as [`FittedRanges::text`] gives them
+/// (`fz 0 to 2000 N, alpha -0.2000 to 0.2000 rad`), a range with one end
+/// (a `.tir` that gives `FZMAX` and no `FZMIN`) as `fz ≤ 2000 N` or
+/// `fz ≥ 100 N`, not with an `inf` end.
+fn ranges_text(r: &FittedRanges) -> String {
+    let named = [
+        ("fz", " N", r.fz),
+        ("alpha", " rad", r.alpha),
+        ("kappa", "", r.kappa),
+        ("camber", " rad", r.camber),
+        ("pressure", " Pa", r.pressure),
+    ];
+    let n = |v: f64| crate::format::readable(v, 4);
+    let parts: Vec<String> = named
+        .into_iter()
+        .filter_map(|(name, unit, range)| {
+            let [lo, hi] = range?;
+            Some(match (lo.is_finite(), hi.is_finite()) {
+                (true, true) => format!("{name} {} to {}{unit}", n(lo), n(hi)),
+                (true, false) => format!("{name} ≥ {}{unit}", n(lo)),
+                (false, true) => format!("{name} ≤ {}{unit}", n(hi)),
+                (false, false) => return None,
+            })
+        })
+        .collect();
+    parts.join(", ")
 }
 
 /// The rows whose wheels leave the ranges `r` of the tyre of `axle` (0
@@ -311,12 +377,13 @@ fn beyond_fitted(
     } else {
         ("rear", [&h.fz[2], &h.fz[3]], &h.alpha_rear)
     };
+    let pressure = source.pressure();
     let point = |fz: f64, alpha: f64| RangePoint {
         fz,
         alpha,
         kappa: 0.0,
         camber: 0.0,
-        pressure: None,
+        pressure: pressure.map(|p| p.0),
     };
     let rows: Vec<usize> = (0..h.len())
         .filter(|&i| wheels.iter().any(|fz| r.outside(&point(fz[i], alpha[i]))))
@@ -355,25 +422,18 @@ fn beyond_fitted(
     if out_of(r.camber, 0.0) {
         what.push("a camber of 0".into());
     }
-    let (ranges, evaluated) = match source {
-        RangeSource::Fitted => (
-            "the ranges of the rig data they were fitted to",
-            "their [fitted_ranges]; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation",
-        ),
-        RangeSource::Tir { held: true } => (
-            "their .tir's validity ranges",
-            "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated at the ranges' ends (MFeval's limit checks: the force stays that of the range's end, however far beyond)",
-        ),
-        RangeSource::Tir { held: false } => (
-            "their .tir's validity ranges",
-            "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated by extrapolation (the limit checks are off)",
-        ),
-    };
+    if let Some((p, key)) = pressure.filter(|p| out_of(r.pressure, p.0)) {
+        what.push(format!(
+            "a pressure of {} Pa (the file's {key})",
+            crate::format::readable(p, 4)
+        ));
+    }
+    let (ranges, evaluated) = source.words();
     Some(format!(
         "{} of {} rows take the {name} tyres outside {ranges} ({}; {evaluated}: there, {}",
         rows.len(),
         h.len(),
-        r.text(),
+        ranges_text(r),
         what.join(", ")
     ))
 }

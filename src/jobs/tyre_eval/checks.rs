@@ -54,7 +54,7 @@ impl Output {
     }
 
     /// What it is, in words.
-    fn what(self) -> &'static str {
+    pub(crate) fn what(self) -> &'static str {
         match self {
             Output::Fx => "longitudinal force",
             Output::Mx => "overturning moment",
@@ -63,11 +63,21 @@ impl Output {
     }
 
     /// The block of a Magic Formula file that gives it.
-    fn block(self) -> &'static str {
+    pub(crate) fn block(self) -> &'static str {
         match self {
             Output::Fx => "longitudinal",
             Output::Mx => "overturning moment",
             Output::My => "rolling resistance",
+        }
+    }
+
+    /// Where a tyre without it gives none, said of a whole tyre: every
+    /// point [`Self::where_given`] names.
+    pub(crate) fn anywhere(self) -> &'static str {
+        match self {
+            Output::Fx => "at any slip ratio",
+            Output::Mx => "at any lateral force or camber",
+            Output::My => "at any speed",
         }
     }
 
@@ -136,25 +146,45 @@ pub struct ZeroOutput {
 }
 
 impl ZeroOutput {
+    /// The Magic Formula coefficients that give none, in words (`PDX1 =
+    /// 0, PKX1 = 0`; `QSX1 to QSX14 all 0`; `its QSX1 to QSX14 give none
+    /// at these points`), and whether the block is all 0; `None` for
+    /// another model.
+    pub(crate) fn cause(&self) -> Option<(String, bool)> {
+        let all_zero = self.coefficients.iter().all(|(_, v)| *v == 0.0);
+        match self.coefficients.as_slice() {
+            [(a, x), (b, y)] => Some((
+                format!(
+                    "{a} = {}, {b} = {}",
+                    crate::format::exact(*x),
+                    crate::format::exact(*y)
+                ),
+                all_zero,
+            )),
+            [(first, _), .., (last, _)] if all_zero => {
+                Some((format!("{first} to {last} all 0"), true))
+            }
+            [(first, _), .., (last, _)] => Some((
+                format!("its {first} to {last} give none at these points"),
+                false,
+            )),
+            [] | [_] => None,
+        }
+    }
+
     /// The sentence on the terminal.
     pub fn line(&self, count: usize) -> String {
         let o = self.output;
         let block = o.block();
-        let why = match self.coefficients.as_slice() {
-            [(a, x), (b, y)] => format!(
-                " ({a} = {}, {b} = {}: as `identify` writes a {block} block it had no data to fit)",
-                crate::format::exact(*x),
-                crate::format::exact(*y)
+        let why = match self.cause() {
+            Some((cause, _)) if self.coefficients.len() == 2 => format!(
+                " ({cause}: as `identify` writes a {block} block it had no data to fit)"
             ),
-            [(first, _), .., (last, _)] if self.coefficients.iter().all(|(_, v)| *v == 0.0) => {
-                format!(
-                    " ({first} to {last} all 0: the file carries no {block} coefficients, as `identify` writes a block it had no data to fit)"
-                )
-            }
-            [(first, _), .., (last, _)] => {
-                format!(" (its {first} to {last} give none at these points)")
-            }
-            [] | [_] => String::new(),
+            Some((cause, true)) => format!(
+                " ({cause}: the file carries no {block} coefficients, as `identify` writes a block it had no data to fit)"
+            ),
+            Some((cause, false)) => format!(" ({cause})"),
+            None => String::new(),
         };
         format!(
             "{} of {} {} {} and {} = 0: the tyre has no {}{why}; its {} is not a prediction",
@@ -185,6 +215,24 @@ pub(crate) fn zero_outputs(
         .filter(|o| !(*o == Output::Fx && kappa_unread))
         .filter_map(|o| zero_output(o, tyre, p, f))
         .collect()
+}
+
+/// The output `o` of `tyre` where it gives none at all: [`zero_output`]'s
+/// rule at points where a tyre that has it gives some (loads of 1, 3 and
+/// 6 kN, slip ratios of ±0.1, a slip angle of 0.05 rad, a camber of 0.02
+/// rad, 10 m/s), so that `identify` says what a tyre it writes lacks by
+/// the rule `tyre-eval` warns by. `None` where it gives some, or where
+/// the model has no such output.
+pub(crate) fn gives_none(tyre: &Tyre, o: Output) -> Option<ZeroOutput> {
+    let fz = [1000.0, 1000.0, 3000.0, 3000.0, 6000.0, 6000.0];
+    let kappa = [-0.1, 0.1, -0.1, 0.1, -0.1, 0.1];
+    let (alpha, camber, speed) = ([0.05; 6], [0.02; 6], [10.0; 6]);
+    let f = tyre.evaluate_points(&fz, &kappa, &alpha, &camber, &speed, &[]);
+    let p = Points {
+        columns: [&fz, &kappa, &alpha, &camber, &speed],
+        pressure: &[],
+    };
+    zero_output(o, tyre, &p, &f)
 }
 
 /// [`zero_outputs`] for one output `o`.

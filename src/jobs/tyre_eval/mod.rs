@@ -34,14 +34,22 @@
 //! and (`checks.rs`) a tyre with no longitudinal force evaluated at a slip
 //! ratio, a Magic Formula file with no overturning or rolling resistance
 //! coefficients, and a Magic Formula `my` at a speed past its speed terms'
-//! reach.
+//! reach; (`friction.rs`) a resultant `√(fx² + fy²)` beyond the tyre's
+//! friction and a model that does not couple `fx` and `fy` at combined
+//! slip (UniTire, PAC89); (`standstill.rs`) a Magic Formula `mz` at zero
+//! speed, its residual torque alone.
 
 mod checks;
+mod friction;
 mod pressure;
+mod standstill;
 mod stiffness;
 mod unread;
 
+pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
+pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
+pub use standstill::{StandstillMz, STANDSTILL};
 pub use stiffness::SignChange;
 pub use unread::Unread;
 
@@ -166,6 +174,15 @@ pub struct TyreEvalReport {
     pub zero_outputs: Vec<ZeroOutput>,
     /// Points faster than a Magic Formula `my`'s speed terms reach.
     pub beyond_my_speed: Option<BeyondMySpeed>,
+    /// Points whose `√(fx² + fy²)` exceeds the tyre's `μ·Fz` by more than
+    /// [`FRICTION_TOLERANCE`].
+    pub beyond_friction: Option<BeyondFriction>,
+    /// Points at combined slip of a model that does not couple `fx` and
+    /// `fy` (each its pure-slip force).
+    pub uncoupled: Option<Uncoupled>,
+    /// Points at zero speed whose Magic Formula `mz` lacks the pneumatic
+    /// trail's term.
+    pub standstill_mz: Option<StandstillMz>,
     /// The input columns the model does not read, set at some points.
     pub unread: Vec<Unread>,
     /// The ranges of the rig data a TOML tyre was fitted to (its
@@ -237,7 +254,10 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
     }
     // A pressure written in kPa, bar or psi (a .tir clamps it to its
     // range without a word of the unit).
-    if let Some((i, slip)) = pressure.as_deref().and_then(pressure_not_in_pa) {
+    if let Some((i, slip)) = pressure
+        .as_deref()
+        .and_then(|p| pressure_not_in_pa(p, known))
+    {
         return Err(c.error_at(points, i, "pressure", slip.into()).into());
     }
     if let Some(p) = &pressure {
@@ -397,6 +417,8 @@ pub fn run(
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
+    let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
+    let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
     let extras = magic_formula_extras(&tyre, &given);
     refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped) = (extras.mode, extras.clamped);
@@ -427,6 +449,9 @@ pub fn run(
         off_road,
         zero_outputs,
         beyond_my_speed,
+        beyond_friction,
+        uncoupled,
+        standstill_mz,
         unread,
         sign_changes,
         fitted_ranges,
@@ -460,6 +485,18 @@ impl TyreEvalReport {
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
+        out.extend(
+            self.uncoupled
+                .iter()
+                .map(|u| u.line(self.count, self.model)),
+        );
+        let uncoupled = self.uncoupled.is_some();
+        out.extend(
+            self.beyond_friction
+                .iter()
+                .map(|b| b.line(self.count, uncoupled)),
+        );
+        out.extend(self.standstill_mz.iter().map(|s| s.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

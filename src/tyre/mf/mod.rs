@@ -333,6 +333,22 @@ impl MagicFormula {
         Some(vertical::loaded_radius(c, &state, checked.fz))
     }
 
+    /// The inflation pressure a point without one is evaluated at, Pa
+    /// (a vehicle's wheels: a scenario states none), and the key that
+    /// gives it: `INFLPRES`, else `NOMPRES`. `None` where no pressure moves
+    /// the model (a 5.2 file, or a 6.x file without `NOMPRES`: the
+    /// pressure terms are off).
+    pub fn own_pressure(&self) -> Option<(f64, &'static str)> {
+        let c = &self.coefficients;
+        if self.version == MfVersion::Mf52 || c.NOMPRES <= 0.0 {
+            return None;
+        }
+        Some(match c.INFLPRES > 0.0 {
+            true => (c.INFLPRES, "INFLPRES"),
+            false => (c.NOMPRES, "NOMPRES"),
+        })
+    }
+
     pub(super) fn pressure(&self, p: Option<f64>) -> f64 {
         let c = &self.coefficients;
         p.unwrap_or(if c.INFLPRES > 0.0 {

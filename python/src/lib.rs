@@ -128,7 +128,9 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
 /// force no tyre carries. `TimeStep`'s value is the median step.
 fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
     match u {
-        UnitSlip::YawRate { value, .. } => (Some("yaw_rate"), Some(*value)),
+        UnitSlip::YawRate { value, .. } | UnitSlip::YawRateInDegPerS { value, .. } => {
+            (Some("yaw_rate"), Some(*value))
+        }
         UnitSlip::AyTooLarge { value, .. } | UnitSlip::AyInG { value, .. } => {
             (Some("ay"), Some(*value))
         }

@@ -20,6 +20,7 @@ mod piece;
 mod problem;
 mod reason;
 mod rig;
+mod rig_sign;
 #[cfg(test)]
 mod tests;
 mod units;

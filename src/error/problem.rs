@@ -13,56 +13,13 @@ use super::level_slip::{requested as requested_text, unit_slip, LevelSlip};
 use super::number::Num;
 use super::piece::RefusedPiece;
 use super::rig::Variable;
+use super::rig_sign::wrong_sign;
+pub use super::rig_sign::{RigChannel, SmallSlipSlope};
 use super::units::UnitSlip;
 use super::ParamError;
 use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
-
-/// A rig channel whose sign FORMATS.md (ISO 8855) fixes at small slip.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum RigChannel {
-    /// Lateral force, against the slip angle.
-    Fy,
-    /// Aligning moment, against the slip angle.
-    Mz,
-    /// Longitudinal force, against the slip ratio.
-    Fx,
-}
-
-impl RigChannel {
-    /// The column's name.
-    pub fn column(self) -> &'static str {
-        match self {
-            RigChannel::Fy => "fy",
-            RigChannel::Mz => "mz",
-            RigChannel::Fx => "fx",
-        }
-    }
-    /// The slip column the channel is judged against.
-    fn slip(self) -> &'static str {
-        match self {
-            RigChannel::Fy | RigChannel::Mz => "alpha",
-            RigChannel::Fx => "kappa",
-        }
-    }
-    /// The slope's unit.
-    fn unit(self) -> &'static str {
-        match self {
-            RigChannel::Fy => "N/rad",
-            RigChannel::Mz => "N·m/rad",
-            RigChannel::Fx => "N",
-        }
-    }
-    /// The sign FORMATS.md requires, in words.
-    fn requires(self) -> &'static str {
-        match self {
-            RigChannel::Fy => "a positive slope there: a positive slip angle gives a positive lateral force (fy ≈ +C_alpha·alpha)",
-            RigChannel::Mz => "`mz` to have the sign of `fy` at small slip (it turns the wheel back toward zero slip), so a slope of the same sign",
-            RigChannel::Fx => "a positive slope there: x points forward, so a positive (driving) slip ratio gives a positive longitudinal force (fx ≈ +C_kappa·kappa)",
-        }
-    }
-}
 
 /// A value `v` outside `lo` to `hi` in `unit`, and the range, at the
 /// digits that tell them apart ([`super::number::numbers_apart`]).
@@ -76,24 +33,6 @@ fn apart(v: f64, lo: f64, hi: f64, unit: &str) -> (String, String) {
         }
     };
     (u(&v), format!("{} to {}", b[0], u(&b[1])))
-}
-
-/// A least-squares slope of a channel against its slip near zero slip.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SmallSlipSlope {
-    /// The slope (N/rad, N·m/rad or N per unit slip ratio).
-    pub slope: f64,
-    /// Its standard error, same unit.
-    pub standard_error: f64,
-    /// Samples with positive slip.
-    pub above: usize,
-    /// Samples with negative slip.
-    pub below: usize,
-    /// The window: |slip| up to this (rad, or slip ratio).
-    pub small_slip: f64,
-    /// True when the other slip was limited to the window too (combined
-    /// slip data).
-    pub combined: bool,
 }
 
 /// What is wrong with an input file's content.
@@ -444,7 +383,7 @@ pub enum InputProblem {
     },
     /// A steer far larger than the yaw rate it gives: in degrees, or a
     /// steering-wheel angle.
-    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? The steer is the road-wheel angle in radians", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
+    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
     SteerAboveYaw {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,
@@ -452,6 +391,18 @@ pub enum InputProblem {
         samples: usize,
         /// The wheelbase l taken when the vehicle's is not known, m.
         assumed_wheelbase: Option<f64>,
+    },
+    /// A yaw rate far larger than a car's for its steer: a steer in
+    /// radians divided by 57 once more, a yaw rate in deg/s, or a column
+    /// declared in degrees that was not.
+    #[error("the yaw rate is {}× a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples, with l = {} m, shorter than any car's wheelbase): no car that is not spinning turns so much for its steer; is `steer` in radians divided by 57 once more, or `yaw_rate` in deg/s, or was a column declared in degrees (`--degrees`) already in radians?", crate::format::readable(*median, 2), crate::format::readable(*median, 3), Num(*wheelbase))]
+    YawAboveSteer {
+        /// Median of r·l/(u·δ) over the steered samples.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+        /// The wheelbase l taken, m (the shortest a car has).
+        wheelbase: f64,
     },
     /// A column in another unit than FORMATS.md's.
     #[error(transparent)]
@@ -534,44 +485,12 @@ impl InputProblem {
             InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
+            InputProblem::YawAboveSteer { .. } => "YawAboveSteer",
             InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
         }
     }
-}
-
-/// The wrong-sign message: the slope found, the window it was fitted in,
-/// what FORMATS.md requires and the likely fix.
-fn wrong_sign(
-    channel: RigChannel,
-    position: usize,
-    s: &SmallSlipSlope,
-    fy_slope: Option<f64>,
-) -> String {
-    let (column, slip, unit) = (channel.column(), channel.slip(), channel.unit());
-    let x = s.small_slip;
-    let window = match (channel, s.combined) {
-        (RigChannel::Fx, true) => format!("|kappa| ≤ {x}, |alpha| ≤ {x} rad"),
-        (RigChannel::Fx, false) => format!("|kappa| ≤ {x}"),
-        (_, true) => format!("|alpha| ≤ {x} rad, |kappa| ≤ {x}"),
-        (_, false) => format!("|alpha| ≤ {x} rad"),
-    };
-    let described = format!(
-        "{} {unit} (standard error {} {unit}) from {} ({} with {slip} > 0, {} with {slip} < 0)",
-        significant(s.slope, 4),
-        significant(s.standard_error, 2),
-        plural(s.above + s.below, "sample", "samples"),
-        s.above,
-        s.below
-    );
-    let versus = fy_slope.map_or(String::new(), |f| {
-        format!(", while that of `fy` is {} N/rad", significant(f, 4))
-    });
-    format!(
-        "column `{column}` (column {position} of the header) has the wrong sign: near zero slip ({window}) its least-squares slope against `{slip}` is {described}{versus}; FORMATS.md (ISO 8855) requires {}. The file is likely in the SAE or another sign convention: negate the `{column}` column",
-        channel.requires()
-    )
 }
 
 /// What a path a key names leads to, when it is not what the key wants.

@@ -130,6 +130,19 @@ pub enum UnitSlip {
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
     },
+    /// A yaw rate whose speed × yaw rate is 57 times the lateral
+    /// acceleration: in deg/s, below the size check's limit.
+    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? Convert it, or say so: `degrees = [\"yaw_rate\"]` under [runs] in a campaign or a replay's [manoeuvre], `--degrees yaw_rate` to `metrics`", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning))]
+    YawRateInDegPerS {
+        /// The yaw rate at the first turning sample, as read.
+        value: f64,
+        /// Median of ay/(speed·yaw_rate) over the turning samples.
+        median: f64,
+        /// Turning samples judged.
+        samples: usize,
+        /// The least |speed × yaw_rate| of a turning sample, m/s².
+        turning: f64,
+    },
     /// A speed whose median is backwards at speed: another sign
     /// convention.
     #[error("column `speed`: {} m/s, and the run's median is {} m/s: `speed` is the forward speed, positive (FORMATS.md, ISO 8855); is the column in another sign convention? negate it", Num(*value), fixed(*median, 2))]

@@ -56,8 +56,12 @@ const AY_IN_G: (f64, f64) = (0.05, 0.2);
 /// within a factor of 1.4), where a car's is near 1 on a flat road.
 const SPEED_IN_KMH: (f64, f64) = (0.2, 0.4);
 
+/// The band of ay/(speed·yaw_rate) of a yaw rate in deg/s (π/180 =
+/// 0.0175, within a factor of 1.7), where a car's is near 1 on a flat road.
+const YAW_IN_DEG: (f64, f64) = (0.01, 0.03);
+
 /// The share of the turning samples inside [`AY_IN_G`] (or
-/// [`SPEED_IN_KMH`]) that says the unit: on a banked oval the ratio
+/// [`SPEED_IN_KMH`], [`YAW_IN_DEG`]) that says the unit: on a banked oval the ratio
 /// scatters (its median can lie in the band, 0.13 on the synthetic oval,
 /// with 6 % of the samples in it), in g it holds.
 const AY_IN_G_SHARE: f64 = 0.8;
@@ -99,9 +103,10 @@ pub(super) fn check_yaw_rate(path: &Path, c: &Columns, r: &[f64]) -> Result<(), 
 }
 
 /// Refuses an `ay` beyond [`MAX_AY`] over more than 1 % of the run, or
-/// whose median over the turning samples (at least 50 at 5 m/s or more
-/// with |speed × yaw_rate| ≥ 1 m/s²) is below 0.3 of speed × yaw rate (in
-/// g), located at the first turning sample.
+/// whose ratio to speed × yaw rate over the turning samples (at least 50 at
+/// 5 m/s or more with |speed × yaw_rate| ≥ 1 m/s²) says a unit: `ay` in g
+/// ([`AY_IN_G`]), a speed in km/h ([`SPEED_IN_KMH`]) or a yaw rate in
+/// deg/s ([`YAW_IN_DEG`]), located at the first turning sample.
 pub(super) fn check_ay(
     path: &Path,
     c: &Columns,
@@ -128,12 +133,22 @@ pub(super) fn check_ay(
         let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
         inside as f64 >= AY_IN_G_SHARE * q.len() as f64
     };
-    let (in_g, in_kmh) = (holds(AY_IN_G), holds(SPEED_IN_KMH));
-    if !in_g && !in_kmh {
+    let (in_g, in_kmh, in_deg) = (holds(AY_IN_G), holds(SPEED_IN_KMH), holds(YAW_IN_DEG));
+    if !in_g && !in_kmh && !in_deg {
         return Ok(());
     }
     let m = median(&mut q);
     let i = turning[0];
+    if in_deg {
+        // Below `MAX_YAW_RATE` in deg/s (a gentle run): ay says it.
+        let slip = UnitSlip::YawRateInDegPerS {
+            value: r[i],
+            median: m,
+            samples: turning.len(),
+            turning: TURNING,
+        };
+        return Err(c.error_at(path, i, "yaw_rate", slip.into()));
+    }
     if in_kmh {
         // ay and yaw rate agree with each other's units (checked above and
         // by their sizes); speed × yaw rate 3.6 times ay is a speed in

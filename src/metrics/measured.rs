@@ -29,6 +29,17 @@ pub const STEER_IN_DEGREES: f64 = 0.1;
 /// any car's, so that a real car's response is never judged too small.
 pub const LONGEST_WHEELBASE: f64 = 5.0;
 
+/// The wheelbase a run's yaw rate is judged too large against, m: shorter
+/// than any car's (a kart's is about 1.05 m), so that a real car's response
+/// is never judged too large.
+pub const SHORTEST_WHEELBASE: f64 = 1.0;
+
+/// Above this median of r·l/(u·δ) with [`SHORTEST_WHEELBASE`] the yaw rate
+/// is too large for its steer: a 2.7 m car turning at 13.5× a neutral
+/// car's rate, which only a car past its critical speed does (spinning, no
+/// step response); a steer divided by 57 once more gives about 20.
+pub const YAW_ABOVE_STEER: f64 = 5.0;
+
 /// Steered samples needed to judge the steer against the yaw rate.
 const STEER_CHECK_SAMPLES: usize = 50;
 
@@ -135,12 +146,23 @@ pub fn steer_problem(
 
 /// Refuses a run whose steer is far larger than the yaw rate it gives, or
 /// turns against it ([`steer_problem`]), with the longest wheelbase for
-/// the vehicle's.
+/// the vehicle's; or far smaller ([`YAW_ABOVE_STEER`], with the shortest).
+/// `diagnose`, which knows the car's wheelbase, notes a yaw rate above
+/// three times a neutral car's instead.
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let Some((median, samples)) = yaw_per_neutral(run, LONGEST_WHEELBASE, min_speed) else {
         return Ok(());
     };
-    match steer_problem(median, samples, Some(LONGEST_WHEELBASE)) {
+    // The same median at the shortest wheelbase: r·l/(u·δ) is linear in l.
+    let short = median * SHORTEST_WHEELBASE / LONGEST_WHEELBASE;
+    let problem = steer_problem(median, samples, Some(LONGEST_WHEELBASE)).or_else(|| {
+        (short > YAW_ABOVE_STEER).then_some(InputProblem::YawAboveSteer {
+            median: short,
+            samples,
+            wheelbase: SHORTEST_WHEELBASE,
+        })
+    });
+    match problem {
         Some(problem) => Err(InputError::problem(&run.path, problem)),
         None => Ok(()),
     }

@@ -244,3 +244,53 @@ fn a_replay_declares_its_runs_roll_in_degrees_under_its_manoeuvre() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(out.join("history.csv").exists());
 }
+
+#[test]
+fn a_gentle_yaw_rate_in_deg_per_s_is_refused_by_ay_against_speed_times_yaw_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    // A 0.2° step: 0.75 deg/s, below the 3 rad/s no car turns at.
+    let p = logged(dir.path(), |r| {
+        for k in [2, 3, 4, 5] {
+            r[k] *= 0.2;
+        }
+        r[3] = r[3].to_degrees();
+    });
+    let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok);
+    assert!(
+        e.contains("column `yaw_rate`: 0.")
+            && e.contains("where `ay` is a median 0.017")
+            && e.contains("is `yaw_rate` in deg/s?")
+            && e.contains("`--degrees yaw_rate` to `metrics`"),
+        "{e}"
+    );
+    // Declared, it is read.
+    let (ok, out, e) = metrics(&p, &["--degrees", "yaw_rate"]);
+    assert!(ok, "{e}");
+    assert!(out.contains("yaw-rate gain"), "{out}");
+}
+
+#[test]
+fn a_steer_declared_in_degrees_that_was_in_radians_is_refused_as_a_yaw_rate_no_car_has() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged(dir.path(), |_| {});
+    let (ok, _, e) = metrics(&p, &["--degrees", "steer"]);
+    assert!(!ok);
+    assert!(
+        e.contains("the yaw rate is ")
+            && e.contains("× a neutral car's for this steer")
+            && e.contains("with l = 1 m, shorter than any car's wheelbase")
+            && e.contains("was a column declared in degrees (`--degrees`) already in radians?"),
+        "{e}"
+    );
+    // Read as logged, the same run is measured.
+    assert!(metrics(&p, &[]).0);
+    // A yaw rate declared in deg/s that was in rad/s: the steer's message
+    // names that too.
+    let (ok, _, e) = metrics(&p, &["--degrees", "yaw_rate"]);
+    assert!(!ok);
+    assert!(
+        e.contains("or `yaw_rate` declared in degrees while it was in rad/s?"),
+        "{e}"
+    );
+}

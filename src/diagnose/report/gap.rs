@@ -260,8 +260,8 @@ pub fn trusted_channel_gap(
             }
         };
         let mut s = format!(
-            "gap: RMS {rms:.4} {unit} ({floors}), bias {:.4} {unit}; magnitude error {}, phase error {}",
-            mean(&e),
+            "gap: RMS {rms:.4} {unit} ({floors}), bias {} {unit}; Sprague–Geers magnitude error {}, phase error {} (0 in phase, 1 opposed)",
+            crate::format::fixed(mean(&e), 4),
             or_undefined(magnitude_error, format!("{:+.1} %", 100.0 * magnitude_error)),
             or_undefined(phase_error, format!("{phase_error:.3}")),
         );

@@ -536,7 +536,7 @@ pub fn finding(f: &GapFinding) -> String {
             gain_error_db,
             phase_error_deg,
         } => format!(
-            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {} dB, {}°",
+            "{run}: yaw-rate response {f_low:.2}–{f_high:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads)",
             signed(*gain_error_db, 1),
             signed(*phase_error_deg, 0)
         ),

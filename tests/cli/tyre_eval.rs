@@ -415,3 +415,33 @@ fn a_pac89_or_unitire_stiffness_in_another_unit_is_refused_at_its_key() {
         assert!(o.status.success(), "{toml}: {}", stderr(&o));
     }
 }
+
+/// A .tir whose pressure coefficients turn its cornering stiffness over
+/// inside its own PRESMIN–PRESMAX (the public car205_60R19.tir gave
+/// fy = −1945 N at α = +0.05 rad and 800 kPa without a word): counted at
+/// the points' own conditions; the sample file as published says nothing.
+#[test]
+fn a_cornering_stiffness_the_pressure_turns_negative_is_counted_at_the_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let points =
+        "fz,kappa,alpha,camber,speed,pressure\n4000,0,0.05,0,20,260000\n4000,0,0.05,0,20,380000\n";
+    let sample = mf61(dir.path(), &[]);
+    let (o, _) = eval(dir.path(), &sample, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        !stderr(&o).contains("negative cornering stiffness"),
+        "{}",
+        stderr(&o)
+    );
+    // PPY1 = −3: Kyα ∝ 1 + PPY1·dpi is negative above 1/3 of NOMPRES over it.
+    let turned = mf61(dir.path(), &[("PPY1", "-3.0")]);
+    let (o, written) = eval(dir.path(), &turned, points, &[]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert!(
+        e.contains("1 of 2 points has a negative cornering stiffness at its own load, camber, pressure and speed (the first, point 2: fz = 4000 N, camber = 0 rad, pressure = 380000 Pa): there the force opposes the slip"),
+        "{e}"
+    );
+    let fy = column(&written, "fy");
+    assert!(fy[0] > 0.0 && fy[1] < 0.0, "{fy:?}");
+}

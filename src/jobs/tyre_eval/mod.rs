@@ -50,7 +50,7 @@ pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
 pub use standstill::{StandstillMz, STANDSTILL};
-pub use stiffness::SignChange;
+pub use stiffness::{AgainstSlip, SignChange};
 pub use unread::Unread;
 
 use crate::error::{Error, InputProblem};
@@ -193,6 +193,8 @@ pub struct TyreEvalReport {
     /// The slip stiffnesses that change sign inside the loads evaluated.
     #[serde(skip)]
     pub sign_changes: Vec<SignChange>,
+    /// Points whose slip stiffness at their own conditions is negative.
+    pub against_slip: Vec<AgainstSlip>,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -414,6 +416,7 @@ pub fn run(
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
+    let against_slip = stiffness::against_slip(&tyre, &given);
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
@@ -454,6 +457,7 @@ pub fn run(
         standstill_mz,
         unread,
         sign_changes,
+        against_slip,
         fitted_ranges,
         beyond_fitted,
         columns,
@@ -483,6 +487,7 @@ impl TyreEvalReport {
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
         out.extend(self.sign_changes.iter().map(SignChange::line));
+        out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
         out.extend(

@@ -10,7 +10,9 @@
 //! there (the points' 5000 N on `FSAE_Defaults.tir`, whose `FZMAX` is
 //! 2000 N, are evaluated at 2000 N).
 
+use super::unread::Points;
 use crate::tyre::{SlipState, Tyre};
+use serde::Serialize;
 
 /// The slip (ratio and angle, rad) of the central difference.
 const SLIP: f64 = 1e-4;
@@ -52,6 +54,95 @@ impl SignChange {
             n(self.loads.1)
         )
     }
+}
+
+/// Points whose slip stiffness, at their own load, camber, pressure and
+/// speed, is negative: there the force opposes the slip (ISO 8855:
+/// `fx ≈ +C_κ·κ`, `fy ≈ +C_α·α`). What [`sign_changes`] finds along the
+/// load at nominal conditions, counted at the points' own: a `.tir`'s
+/// pressure coefficients can turn the cornering stiffness over inside its
+/// own `PRESMIN`–`PRESMAX` (the public `car205_60R19.tir` above about
+/// 500 kPa), and a load held at `FZMAX` past a sign change keeps it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AgainstSlip {
+    /// `longitudinal slip` or `cornering`.
+    pub stiffness: &'static str,
+    /// Points at a positive load where it is negative.
+    pub points: usize,
+    /// The first of them (0-based among the points), and its load (N),
+    /// camber (rad) and pressure (Pa; 0 where the points give none).
+    pub first: (usize, [f64; 3]),
+}
+
+impl AgainstSlip {
+    /// The sentence on the terminal.
+    pub fn line(&self, count: usize) -> String {
+        let (i, [fz, camber, pressure]) = self.first;
+        let n = |v: f64| crate::format::readable(v, 4);
+        let at_pressure = if pressure > 0.0 {
+            format!(", pressure = {} Pa", n(pressure))
+        } else {
+            String::new()
+        };
+        format!(
+            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first, point {}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are the file's coefficients extrapolated, not a tyre",
+            self.points,
+            crate::format::plural(count, "point", "points"),
+            if self.points == 1 { "has" } else { "have" },
+            self.stiffness,
+            if self.points == 1 { "its" } else { "their" },
+            i + 1,
+            n(fz),
+            n(camber),
+        )
+    }
+}
+
+/// The points of `p` whose slip stiffnesses are negative
+/// ([`AgainstSlip`]), by a central difference of ±[`SLIP`] at each point's
+/// own conditions; a stiffness within 1e-6 of the largest found is no sign
+/// (a model without that force).
+pub(crate) fn against_slip(tyre: &Tyre, p: &Points) -> Vec<AgainstSlip> {
+    let [fz, _, _, camber, speed] = p.columns;
+    let n = fz.len();
+    let zero = vec![0.0; n];
+    let at = |s: f64| vec![s; n];
+    let eval = |kappa: &[f64], alpha: &[f64]| {
+        tyre.evaluate_points(fz, kappa, alpha, camber, speed, p.pressure)
+    };
+    let slopes = |plus: Vec<f64>, minus: Vec<f64>| -> Vec<f64> {
+        plus.iter()
+            .zip(&minus)
+            .map(|(a, b)| (a - b) / (2.0 * SLIP))
+            .collect()
+    };
+    let kx = slopes(
+        eval(&at(SLIP), &zero).iter().map(|f| f.fx).collect(),
+        eval(&at(-SLIP), &zero).iter().map(|f| f.fx).collect(),
+    );
+    let ky = slopes(
+        eval(&zero, &at(SLIP)).iter().map(|f| f.fy).collect(),
+        eval(&zero, &at(-SLIP)).iter().map(|f| f.fy).collect(),
+    );
+    [("longitudinal slip", kx), ("cornering", ky)]
+        .into_iter()
+        .filter_map(|(stiffness, k)| {
+            let scale = k
+                .iter()
+                .filter(|v| v.is_finite())
+                .fold(0.0_f64, |m, v| m.max(v.abs()));
+            let against: Vec<usize> = (0..n)
+                .filter(|&i| fz[i] > 0.0 && k[i] < -1e-6 * scale)
+                .collect();
+            let &i = against.first()?;
+            let pressure = p.pressure.get(i).copied().unwrap_or(0.0);
+            Some(AgainstSlip {
+                stiffness,
+                points: against.len(),
+                first: (i, [fz[i], camber[i], pressure]),
+            })
+        })
+        .collect()
 }
 
 /// The stiffnesses of `tyre` that change sign over the positive loads of

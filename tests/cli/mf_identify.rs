@@ -324,6 +324,18 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     crate::identify_hoosier::the_book_quotes_the_hoosier_mf61_fit_as_the_terminal_prints_it(
         &text, &out,
     );
+    // The load range written is the rig's tested loads (405–2929 N, as the
+    // PAC89 fit of the same file records), not the thinned means' (455 N
+    // at the lightest level): tyre-eval would hold a tested 420 N at 455 N.
+    let tir = fs::read_to_string(&out).unwrap();
+    assert!(
+        tir.contains("FZMIN                     = 405.3\nFZMAX                     = 2928.5\n"),
+        "{}",
+        tir.lines()
+            .filter(|l| l.starts_with("FZM"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
     let report = read_json(&out.with_extension("report.json"));
     assert_eq!(report["rows"]["samples"], 59965);
     assert!(stage(&report, "pure-fx")["skipped"].is_string());

@@ -187,6 +187,34 @@ pub(crate) fn widened_to_levels(
     spans
 }
 
+/// `spans` of thinned rows (means over slip-angle bins) widened to the
+/// sample ranges of the levels `levels` that they reach: a bin's mean load
+/// lies inside its level, so the rows' span is narrower than what the rig
+/// tested, and a `.tir`'s `FZMIN` from it would saturate a tested load (the
+/// Hoosier file's 420 N at the means' 455 N).
+pub(crate) fn widened_to_reached_levels(mut spans: Vec<Span>, levels: &[Levels]) -> Vec<Span> {
+    for s in &mut spans {
+        let variable = match s.name {
+            "fz" => Variable::Load,
+            "camber" => Variable::Camber,
+            "pressure" => Variable::Pressure,
+            _ => continue,
+        };
+        let reached = levels
+            .iter()
+            .filter(|l| l.variable == variable)
+            .flat_map(|l| &l.levels)
+            .filter(|q| q.hi >= s.lo && q.lo <= s.hi)
+            .map(|q| (q.lo, q.hi))
+            .collect::<Vec<_>>();
+        for (lo, hi) in reached {
+            s.lo = s.lo.min(lo);
+            s.hi = s.hi.max(hi);
+        }
+    }
+    spans
+}
+
 /// The `[fitted_ranges]` of `spans`: each that is not one value (a
 /// slip-ratio range of 0 to 0 would count every longitudinal point).
 pub(crate) fn fitted_ranges(spans: &[Span]) -> FittedRanges {

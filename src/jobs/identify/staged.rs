@@ -186,6 +186,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // outside them in the fit, and the file would extrapolate past the
     // data silently.
     let spans = super::ranges::row_spans(&prepared.rows);
+    let spans = match &prepared.account.thinning {
+        Some(g) => super::ranges::widened_to_reached_levels(spans, &g.levels),
+        None => spans,
+    };
     let template_tyre = template_tyre.map(|mut t| {
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t

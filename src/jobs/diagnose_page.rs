@@ -348,7 +348,7 @@ fn shrinkage(p: &mut Page, d: &Diagnosis) {
 /// and the terminal agree.
 fn channel_reduction(s: &Shrinkage) -> Cell {
     match s.change() {
-        ChannelChange::WithinNoise => Cell::Text(words::within_noise()),
+        ChannelChange::WithinNoise => Cell::Text(words::within_noise(s)),
         ChannelChange::Changed(p) => Cell::Number(format!("{p:.0}")),
         ChannelChange::Worsened(p) => Cell::Number(format!("{:.0}", -p)),
     }

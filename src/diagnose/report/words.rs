@@ -248,9 +248,16 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
 
 /// A channel's held-out gap within noise before and after the verdict's
 /// effects ([`crate::diagnose::report::Shrinkage::change`]): no share of
-/// it is said.
-pub fn within_noise() -> String {
-    format!("not significant (within {SIGNIFICANT_NOISE_FLOORS} noise floors)")
+/// it is said, but how many noise floors it was and is, so that a channel
+/// the verdict brought from 2.5 floors to 1 does not read as untouched
+/// beside a significant combined error.
+pub fn within_noise(s: &Shrinkage) -> String {
+    let floors = |rms: f64| crate::format::fixed(rms / s.noise_floor, 1);
+    format!(
+        "not significant alone ({} → {} noise floors; a channel alone needs {SIGNIFICANT_NOISE_FLOORS})",
+        floors(s.before),
+        floors(s.after)
+    )
 }
 
 /// How the per-channel table's "not significant" differs from the
@@ -274,7 +281,7 @@ pub fn reduction(r: Reduction) -> String {
 /// (all samples), as the terminal lists it.
 pub fn channel_change(s: &Shrinkage) -> String {
     let what = match s.change() {
-        ChannelChange::WithinNoise => within_noise(),
+        ChannelChange::WithinNoise => within_noise(s),
         ChannelChange::Changed(p) => format!("{p:.0} % of the gap above noise removed"),
         ChannelChange::Worsened(p) => format!("{p:.0} % of the gap above noise added"),
     };

@@ -385,7 +385,7 @@ mod tests {
 
     #[test]
     fn parts_are_listed_windows_then_ay_then_speed_each_by_its_lower_edge() {
-        let mut parts = vec![
+        let mut parts = [
             Part::Speed { lo: 20.0, hi: 30.0 },
             Part::Ay { lo: 2.0, hi: 4.0 },
             Part::Speed { lo: 10.0, hi: 20.0 },

@@ -439,7 +439,7 @@ fn a_channel_within_noise_is_said_so_on_the_terminal_as_on_the_page() {
     };
     assert_eq!(
         channel_change(&s),
-        "beta      0.0021 → 0.0022 (noise floor 0.0020): not significant alone (1.1 → 1.1 noise floors; a channel alone needs 3)"
+        "beta      0.0021 → 0.0022 (noise floor 0.0020): not significant alone (1.0 → 1.1 noise floors; a channel alone needs 3)"
     );
     // The page's cells are these texts: 0.00325 was 3.250e-3 there and
     // 0.0032 here; a floor of 2.1e-4 rad reads as two digits, not 0.0002.

@@ -10,7 +10,7 @@ use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
 use crate::diagnose::report::outcome::SIGNIFICANT_NOISE_FLOORS;
-use crate::diagnose::report::{words, Part, Reduction, Verdict};
+use crate::diagnose::report::{words, GapFinding, Part, Reduction, Verdict};
 use crate::error::Error;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
@@ -331,6 +331,11 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
 /// the |ay| level and the speed band, with the base model and with the
 /// verdict's effects ([`gap_figure`]).
 fn gap_map(d: &Diagnosis) -> Figure {
+    let without_ay = d
+        .gap
+        .findings
+        .iter()
+        .any(|f| matches!(f, GapFinding::WithoutAy { .. }));
     let points: Vec<GapPoint> = d
         .shrinkage
         .iter()
@@ -345,7 +350,7 @@ fn gap_map(d: &Diagnosis) -> Figure {
             })
         })
         .collect();
-    gap_figure(d.verdict.effects(), &points)
+    gap_figure(d.verdict.effects(), &points, without_ay)
 }
 
 /// One point of the gap map: a channel's held-out RMS over its noise floor
@@ -368,8 +373,9 @@ const GAP_MAP_WIDTH: u32 = 640;
 /// band), one column, the three channels in each (the ratio to the noise
 /// floor is one scale for all), a colour per channel — the base model
 /// dotted with rings, with the verdict's effects solid with discs — and
-/// 3 × the noise floor dashed.
-fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
+/// 3 × the noise floor dashed. `without_ay`: some run has no `ay`, its
+/// |ay| levels are u·r's, and the axis says so.
+fn gap_figure(effects: &[EffectKind], points: &[GapPoint], without_ay: bool) -> Figure {
     let mut panels = Vec::new();
     for axis in PartAxis::ALL {
         let mut series = Vec::new();
@@ -430,6 +436,11 @@ fn gap_figure(effects: &[EffectKind], points: &[GapPoint]) -> Figure {
             PartAxis::Time => (
                 "time after the input starts (window centre; 'later' at 3), s",
                 "by time window",
+            ),
+            // A run without `ay` is banded by u·r (`regime_acceleration`).
+            PartAxis::Ay if without_ay => (
+                "|a_y| band centre (u·r where a run has no a_y), m/s²",
+                "by |a_y| level",
             ),
             PartAxis::Ay => ("|a_y| band centre, m/s²", "by |a_y| level"),
             PartAxis::Speed => ("speed band centre, m/s", "by speed"),
@@ -531,7 +542,7 @@ mod tests {
                 }
             }
         }
-        let fig = gap_figure(&[EffectKind::SensorDelay], &points);
+        let fig = gap_figure(&[EffectKind::SensorDelay], &points, false);
         assert_eq!((fig.panels.len(), fig.columns), (3, 1));
         assert!(
             fig.printed_label_points() >= 9.5,
@@ -566,8 +577,14 @@ mod tests {
         assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
         // Without a verdict: the base model alone, and no report name
         // (yaw_rate, ay, beta) in a label.
-        let base = gap_figure(&[], &points);
+        let base = gap_figure(&[], &points, true);
         assert_eq!(base.panels[1].series.len(), 4);
+        // Runs without ay are banded by u·r: the axis says so.
+        assert_eq!(
+            base.panels[1].x_label,
+            "|a_y| band centre (u·r where a run has no a_y), m/s²"
+        );
+        assert_eq!(fig.panels[1].x_label, "|a_y| band centre, m/s²");
         for s in &base.panels[1].series {
             for ch in Channel::ALL {
                 assert!(!s.label.contains(ch.name()), "{}", s.label);

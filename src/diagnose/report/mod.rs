@@ -10,6 +10,7 @@ pub(crate) mod gap;
 mod json;
 pub mod outcome;
 pub(crate) mod parts;
+mod rank_warning;
 pub(crate) mod summary;
 mod values;
 pub mod words;

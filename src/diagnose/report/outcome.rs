@@ -18,6 +18,7 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
 pub use crate::diagnose::report::evidence::{CalibrationSource, Evidence, CALIBRATION_AGREES};
 use crate::diagnose::report::parts::Part;
+pub use crate::diagnose::report::rank_warning::RankWarning;
 use crate::diagnose::report::values::{ParameterValue, Shrinkage};
 use serde::{Deserialize, Serialize};
 
@@ -306,63 +307,6 @@ pub struct ChannelLeft {
     pub removed_percent: f64,
     /// The share the acceptance asks of the whole gap, %.
     pub acceptance_percent: f64,
-}
-
-/// A warning on a ranked candidate.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum RankWarning {
-    /// Its fit on all runs removes far more of the gap than it does on
-    /// held-out runs.
-    Disagreement {
-        /// In-sample reduction, %.
-        insample_percent: f64,
-        /// Held-out reduction, %.
-        heldout_percent: f64,
-    },
-    /// Fitted with it, the axles are no tyre: it cannot be a verdict.
-    AxlesNoTyre {
-        /// Why.
-        no_tyre: Vec<NoTyre>,
-    },
-    /// The set fits the runs worse in sample than a set it contains (whose
-    /// optimum it contains with its other effects off): its fit stopped
-    /// short, or held a parameter the smaller set fits.
-    WorseThanSubset {
-        /// The contained set that fits better (`a+b`).
-        subset: String,
-        /// Its in-sample error.
-        subset_error: f64,
-        /// This set's in-sample error.
-        error: f64,
-    },
-    /// Fold refits that landed beyond
-    /// [`crate::diagnose::verdict::rules::FOLD_FAR`] standard errors of
-    /// the all-run fit: the held-out score measures those refits on fewer
-    /// runs as much as the effect.
-    FoldsFar {
-        /// The parameter whose fold landed farthest (`effect.parameter`).
-        parameter: String,
-        /// Its all-run value and standard error.
-        value: f64,
-        /// Its standard error on all runs.
-        std_error: f64,
-        /// The farthest fold's value.
-        fold_value: f64,
-        /// How far, in standard errors.
-        distance: f64,
-        /// Folds that landed beyond (of `folds`).
-        far: usize,
-        /// Folds refitted.
-        folds: usize,
-    },
-    /// Fold refits that did not converge.
-    FoldsNotConverged {
-        /// Folds that did not.
-        failed: usize,
-        /// Folds refitted.
-        folds: usize,
-    },
 }
 
 /// A note on the inputs.

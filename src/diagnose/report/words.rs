@@ -587,4 +587,6 @@ pub fn value(v: f64) -> String {
 }
 
 #[cfg(test)]
+mod parameter_tests;
+#[cfg(test)]
 mod tests;

@@ -1,0 +1,113 @@
+//! A parameter and a ranked candidate's warnings in words: held, unseen,
+//! on a bound, a standard error the folds say understates, a set worse
+//! than one it contains.
+
+use super::*;
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::report::ParameterValue;
+
+#[test]
+fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {
+    let [_, ay, _] = EffectKind::SensorBias.parameters() else {
+        panic!("a sensor bias has three offsets");
+    };
+    let p = ParameterValue::of("sensor_bias", ay, 0.0, f64::NAN);
+    assert_eq!(
+        parameter(&p),
+        "sensor_bias.ay = 0.0000 m/s² (no standard error: not determined by the runs)"
+    );
+    assert_eq!(
+        parameter(&p.unseen()),
+        "sensor_bias.ay = 0.0000 m/s² (held at its off value: no measured channel responds to it)"
+    );
+}
+
+#[test]
+fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
+    let w = RankWarning::FoldsFar {
+        parameter: "roll.damping".into(),
+        value: 0.4095,
+        std_error: 0.02,
+        fold_value: 0.2,
+        distance: 10.47,
+        far: 2,
+        folds: 5,
+    };
+    assert_eq!(
+        rank_warning(&w),
+        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095 ± 2.00e-2, 10.5 standard errors): its held-out score measures a fit on fewer runs as much as the effect"
+    );
+}
+
+#[test]
+fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
+    let [_, lag] = EffectKind::SteerPath.parameters() else {
+        panic!("a steer path has a delay and a lag");
+    };
+    let held = ParameterValue::of("steer_path", lag, 0.0, f64::NAN).held(69.8);
+    assert!(!held.determined && held.held == Some(69.8));
+    assert_eq!(
+        parameter(&held),
+        "steer_path.lag = 0.0000 s (held at its off value: the runs do not determine it, fitted free its standard error 69.8 s exceeds its whole range)"
+    );
+    // The roll dynamics' off value is the campaign's.
+    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of("roll", &frequency, 3.0, f64::NAN).held(5.26);
+    assert_eq!(
+        parameter(&roll),
+        "roll.frequency = 3.0000 Hz (held at the campaign's value: the runs do not determine it, fitted free its standard error 5.26 Hz exceeds its whole range)"
+    );
+    // A dimensionless parameter carries no unit, not a stray `-`.
+    let scale = crate::diagnose::effects::EffectKind::YawInertia.parameters()[0];
+    let fitted = ParameterValue::of("yaw_inertia", &scale, 1.3038, 3.27e-3);
+    assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 3.27e-3");
+    // Not `1.03e0`: a standard error of 0.01 or more in plain digits.
+    let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
+    let roll = ParameterValue::of("roll", &frequency, 3.0, 1.03);
+    assert_eq!(parameter(&roll), "roll.frequency = 3.0000 ± 1.03 Hz");
+}
+
+#[test]
+fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate() {
+    let [front, _] = EffectKind::RollSteer.parameters() else {
+        panic!("roll steer has a front and a rear");
+    };
+    let v = ParameterValue::of("roll_steer", front, -0.4112, 4.65e-3);
+    // Five folds at ±0.02 about -0.41: the jackknife √(4/5·Σd²) = 0.0358.
+    let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
+    let j = crate::diagnose::report::jackknife(&folds).unwrap();
+    assert!((j - (0.8f64 * 4.0 * 0.0004).sqrt()).abs() < 1e-12, "{j}");
+    let flagged = v.clone().with_folds(&folds);
+    assert!(flagged.understated());
+    assert_eq!(
+        parameter(&flagged),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 8× it: the runs disagree beyond their noise, which the standard error does not cover)"
+    );
+    // Folds within three standard errors, or too few to judge, say nothing.
+    let close = v
+        .clone()
+        .with_folds(&[-0.405, -0.415, -0.41, -0.405, -0.415]);
+    assert!(!close.understated());
+    assert_eq!(
+        parameter(&close),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
+    );
+    assert_eq!(v.clone().with_folds(&[-0.3, -0.5]).fold_std_error, None);
+    // A parameter on a bound has no standard error to understate.
+    let on_bound =
+        ParameterValue::of("roll_steer", front, front.bounds.0, 4.65e-3).with_folds(&folds);
+    assert!(!on_bound.understated());
+}
+
+#[test]
+fn a_set_worse_in_sample_than_one_it_contains_says_so() {
+    let w = RankWarning::WorseThanSubset {
+        subset: "sensor_delay".into(),
+        subset_error: 1.234,
+        error: 1.5,
+    };
+    assert_eq!(
+        rank_warning(&w),
+        "it fits the runs worse than sensor_delay, which it contains (in-sample error 1.500 against 1.234): its fit stopped short of that optimum or holds a parameter sensor_delay fits, so its scores understate the set"
+    );
+}

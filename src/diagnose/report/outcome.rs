@@ -19,7 +19,7 @@ use crate::diagnose::model::channels::Channel;
 pub use crate::diagnose::report::evidence::{CalibrationSource, Evidence, CALIBRATION_AGREES};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
-use crate::diagnose::report::values::{ParameterValue, Shrinkage};
+use crate::diagnose::report::values::{ParameterValue, Shrinkage, SteadyOffset};
 use serde::{Deserialize, Serialize};
 
 /// Which case a verdict is.
@@ -394,6 +394,10 @@ pub enum GapFinding {
         wrong: Vec<(Part, f64)>,
         /// Parts within three noise floors.
         right: Vec<Part>,
+        /// A residual mean of one sign over the runs, at least a noise
+        /// floor ([`SteadyOffset::of`]): a sensor offset or a bias of the
+        /// model that an RMS against three noise floors does not single out.
+        offset: Option<SteadyOffset>,
     },
     /// A frequency band whose yaw-rate response is off in a run.
     Band {

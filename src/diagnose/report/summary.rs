@@ -10,6 +10,7 @@ use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, GapFinding};
+use crate::diagnose::report::values::SteadyOffset;
 use crate::diagnose::report::{Part, RunGap, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
@@ -189,6 +190,15 @@ pub(crate) fn gap_summary(
             runs: runs.len(),
             wrong,
             right,
+            offset: SteadyOffset::of(
+                &runs
+                    .iter()
+                    .flat_map(|r| r.channels.iter().filter(|c| c.channel == ch))
+                    .map(|c| c.bias)
+                    .collect::<Vec<_>>(),
+                nf,
+                all.before,
+            ),
         });
     }
     for r in runs {

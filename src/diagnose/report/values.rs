@@ -152,6 +152,69 @@ impl ParameterValue {
     }
 }
 
+/// A channel's residual mean of one sign over the runs (simulated minus
+/// measured, the channel's unit).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SteadyOffset {
+    /// The runs' mean residual, averaged over the runs.
+    pub mean: f64,
+    /// Runs whose mean residual has its sign.
+    pub same_sign: usize,
+    /// Runs with the channel.
+    pub runs: usize,
+    /// `|mean|` in noise floors.
+    pub floors: f64,
+    /// The share of the channel's mean square residual the offset
+    /// carries, `mean²/RMS²`.
+    pub share: f64,
+}
+
+/// Runs a steady offset needs.
+pub const OFFSET_RUNS: usize = 3;
+/// The share of the runs whose mean residual must have the offset's sign.
+pub const OFFSET_SAME_SIGN: f64 = 0.8;
+/// The least offset, in noise floors: at one floor it shifts the whole
+/// trace by the scatter of the noise, plain in any overlay, while its RMS
+/// alone stays far below three floors.
+pub const OFFSET_FLOORS: f64 = 1.0;
+/// The least share of the mean square residual an offset carries: a
+/// sensor offset leaves little else (0.79–0.83 on a campaign with all
+/// three logger offsets withheld), a gain error of runs that mostly turn
+/// one way has a mean of one sign too, but most of its residual comes and
+/// goes with the manoeuvre (0.18–0.27 with a steering compliance withheld).
+pub const OFFSET_SHARE: f64 = 0.5;
+
+impl SteadyOffset {
+    /// The steady offset of the runs' mean residuals `biases` against the
+    /// noise floor `noise_floor` and the channel's RMS residual `rms`:
+    /// their average where at least [`OFFSET_RUNS`] runs, [`OFFSET_SAME_SIGN`]
+    /// of them of its sign, at least [`OFFSET_FLOORS`] noise floors and
+    /// [`OFFSET_SHARE`] of the mean square.
+    pub fn of(biases: &[f64], noise_floor: f64, rms: f64) -> Option<Self> {
+        let runs = biases.len();
+        if runs < OFFSET_RUNS || noise_floor.is_nan() || noise_floor <= 0.0 {
+            return None;
+        }
+        let mean = biases.iter().sum::<f64>() / runs as f64;
+        let same_sign = biases
+            .iter()
+            .filter(|b| b.signum() == mean.signum())
+            .count();
+        let floors = mean.abs() / noise_floor;
+        let share = (mean / rms).powi(2);
+        let steady = same_sign as f64 >= OFFSET_SAME_SIGN * runs as f64
+            && floors >= OFFSET_FLOORS
+            && share >= OFFSET_SHARE;
+        steady.then_some(Self {
+            mean,
+            same_sign,
+            runs,
+            floors,
+            share,
+        })
+    }
+}
+
 /// A candidate's reduction of the campaign's combined held-out error as
 /// the report says it: a share of a gap within noise is noise, neither a
 /// reduction nor a worsening, so it is not given as a percentage.

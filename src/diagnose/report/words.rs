@@ -506,7 +506,19 @@ pub fn finding(f: &GapFinding) -> String {
             runs,
             wrong,
             right,
+            offset,
         } => {
+            let said = offset.map_or(String::new(), |o| {
+                format!(
+                    "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), a sensor offset or a bias of the model that the RMS does not single out",
+                    crate::format::signed(o.mean, 4),
+                    channel.unit(),
+                    o.same_sign,
+                    o.runs,
+                    crate::format::fixed(o.floors, 1),
+                    100.0 * o.share
+                )
+            });
             let head = format!(
                 "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs",
                 channel.name(),
@@ -519,7 +531,7 @@ pub fn finding(f: &GapFinding) -> String {
                         .collect(),
                 )
             };
-            if above_noise(*rms, *noise_floor) || *significant_runs > 0 {
+            let place = if above_noise(*rms, *noise_floor) || *significant_runs > 0 {
                 format!(
                     "{head}; wrong in: {}; right in: {}",
                     parts(wrong),
@@ -534,7 +546,8 @@ pub fn finding(f: &GapFinding) -> String {
                     "{head}: within noise over the runs, so no place where the base model is wrong; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
                     parts(wrong)
                 )
-            }
+            };
+            place + &said
         }
         GapFinding::Band {
             run,

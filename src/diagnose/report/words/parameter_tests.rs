@@ -111,3 +111,46 @@ fn a_set_worse_in_sample_than_one_it_contains_says_so() {
         "it fits the runs worse than sensor_delay, which it contains (in-sample error 1.500 against 1.234): its fit stopped short of that optimum or holds a parameter sensor_delay fits, so its scores understate the set"
     );
 }
+
+#[test]
+fn a_steady_offset_is_one_sign_over_the_runs_a_noise_floor_and_most_of_the_mean_square() {
+    use crate::diagnose::report::values::SteadyOffset;
+    // The sensor-offset campaign's sideslip: −0.0041 rad in 8 of 8 runs,
+    // floor 0.0019, RMS 0.0046.
+    let biases = [
+        -0.0040, -0.0043, -0.0039, -0.0042, -0.0041, -0.0040, -0.0042, -0.0041,
+    ];
+    let o = SteadyOffset::of(&biases, 0.0019, 0.0046).unwrap();
+    assert_eq!((o.same_sign, o.runs), (8, 8));
+    assert!((o.floors - 0.0041 / 0.0019).abs() < 1e-3, "{o:?}");
+    // A gain error of runs that mostly turn one way: one sign, above a
+    // floor, but a quarter of the mean square.
+    assert_eq!(SteadyOffset::of(&biases, 0.0019, 0.0082), None);
+    // Below a noise floor, or of mixed signs, or on two runs: none.
+    assert_eq!(SteadyOffset::of(&biases, 0.005, 0.0046), None);
+    let mixed = [-0.004, 0.004, -0.004, 0.004, -0.004];
+    assert_eq!(SteadyOffset::of(&mixed, 0.001, 0.004), None);
+    assert_eq!(SteadyOffset::of(&biases[..2], 0.0019, 0.0046), None);
+}
+
+#[test]
+fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
+    use crate::diagnose::report::values::SteadyOffset;
+    let biases = [
+        -0.0040, -0.0043, -0.0039, -0.0042, -0.0041, -0.0040, -0.0042, -0.0041,
+    ];
+    let f = GapFinding::Channel {
+        channel: Channel::Beta,
+        rms: 0.0046,
+        noise_floor: 0.0019,
+        significant_runs: 0,
+        runs: 8,
+        wrong: vec![],
+        right: vec![Part::All],
+        offset: SteadyOffset::of(&biases, 0.0019, 0.0046),
+    };
+    assert_eq!(
+        finding(&f),
+        "beta: RMS 0.0046 rad (noise floor 0.0019); significant in 0 of 8 runs: within noise in every part, so no place where the base model is wrong; a steady offset: mean residual -0.0041 rad over the runs, of that sign in 8 of 8 runs (2.2 noise floors, 79 % of the mean square), a sensor offset or a bias of the model that the RMS does not single out"
+    );
+}

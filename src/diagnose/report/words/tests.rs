@@ -462,6 +462,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         runs: 8,
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
+        offset: None,
     }
 }
 

@@ -128,9 +128,9 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
 /// force no tyre carries. `TimeStep`'s value is the median step.
 fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
     match u {
-        UnitSlip::YawRate { value, .. } | UnitSlip::YawRateInDegPerS { value, .. } => {
-            (Some("yaw_rate"), Some(*value))
-        }
+        UnitSlip::YawRate { value, .. }
+        | UnitSlip::YawRateInDegPerS { value, .. }
+        | UnitSlip::YawRateTooSmall { value, .. } => (Some("yaw_rate"), Some(*value)),
         UnitSlip::AyTooLarge { value, .. } | UnitSlip::AyInG { value, .. } => {
             (Some("ay"), Some(*value))
         }
@@ -144,7 +144,9 @@ fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
         UnitSlip::SpeedBeyondAnyCar { value, .. }
         | UnitSlip::SpeedInKmh { value, .. }
         | UnitSlip::SpeedBackwards { value, .. } => (Some("speed"), Some(*value)),
-        UnitSlip::BetaInDegrees { value, .. } => (Some("beta"), Some(*value)),
+        UnitSlip::BetaInDegrees { value, .. } | UnitSlip::BetaDeclaredInDegrees { value, .. } => {
+            (Some("beta"), Some(*value))
+        }
         UnitSlip::RollInDegrees { column, value, .. }
         | UnitSlip::RigBeyondAnyTyre { column, value, .. } => (Some(column), Some(*value)),
         // `UnitSlip` may grow (non-exhaustive): a new slip has no key here

@@ -395,14 +395,15 @@ pub enum InputProblem {
     /// A yaw rate far larger than a car's for its steer: a steer in
     /// radians divided by 57 once more, a yaw rate in deg/s, or a column
     /// declared in degrees that was not.
-    #[error("the yaw rate is {}× a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples, with l = {} m, shorter than any car's wheelbase): no car that is not spinning turns so much for its steer; is `steer` in radians divided by 57 once more, or `yaw_rate` in deg/s, or was a column declared in degrees (`--degrees`) already in radians?", crate::format::readable(*median, 2), crate::format::readable(*median, 3), Num(*wheelbase))]
+    #[error("the yaw rate is {}× a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples{}): no car that is not spinning turns so much for its steer; is `steer` in radians divided by 57 once more, or `yaw_rate` in deg/s, or was a column declared in degrees already in radians?", crate::format::readable(*median, 2), crate::format::readable(*median, 3), assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, shorter than any car's wheelbase", Num(l))))]
     YawAboveSteer {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,
         /// The steered samples.
         samples: usize,
-        /// The wheelbase l taken, m (the shortest a car has).
-        wheelbase: f64,
+        /// The wheelbase l taken where the vehicle's is not known (the
+        /// shortest a car has), m.
+        assumed_wheelbase: Option<f64>,
     },
     /// A column in another unit than FORMATS.md's.
     #[error(transparent)]

@@ -143,6 +143,27 @@ pub enum UnitSlip {
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
     },
+    /// A yaw rate 57 times too small against `ay`: declared in deg/s while
+    /// in rad/s.
+    #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {}, where a car's lateral acceleration is about speed × yaw_rate: the yaw rate is about 57 times too small; was it declared in degrees (`degrees = [\"yaw_rate\"]`, `--degrees yaw_rate`) while it was in rad/s?", Num(*value), fixed(*median, 1), plural(*samples, "turning sample", "turning samples"))]
+    YawRateTooSmall {
+        /// The yaw rate at the first turning sample, as converted.
+        value: f64,
+        /// Median of ay/(speed·yaw_rate) over the turning samples.
+        median: f64,
+        /// Turning samples judged.
+        samples: usize,
+    },
+    /// A sideslip declared in degrees that was in radians.
+    #[error("column `beta`: {} as read, declared in degrees, is a median {} of what a car turning as this one does shows (3 m × yaw_rate/speed + 0.1 rad per g of speed × yaw_rate) over {}: a car's is 0.08–0.5 of it, so the column was already in radians; drop `beta` from the columns declared in degrees", Num(*value), fixed(*median, 4), plural(*samples, "turning sample", "turning samples"))]
+    BetaDeclaredInDegrees {
+        /// The sideslip at the first turning sample, as the file has it.
+        value: f64,
+        /// Median of |β|/bound over the turning samples, converted.
+        median: f64,
+        /// Turning samples judged.
+        samples: usize,
+    },
     /// A speed whose median is backwards at speed: another sign
     /// convention.
     #[error("column `speed`: {} m/s, and the run's median is {} m/s: `speed` is the forward speed, positive (FORMATS.md, ISO 8855); is the column in another sign convention? negate it", Num(*value), fixed(*median, 2))]

@@ -6,7 +6,8 @@
 
 use super::columns::read_columns;
 use super::run_units::{
-    beyond, check_ay, check_beta, check_roll_or_bank, check_speed, check_time_step, check_yaw_rate,
+    beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
+    check_time_step, check_yaw_rate,
 };
 use crate::error::{InputError, InputProblem};
 use crate::measured::MeasuredRun;
@@ -79,11 +80,18 @@ pub fn read_run_reading(
     optional: &[&str],
 ) -> Result<(MeasuredRun, Vec<&'static str>), InputError> {
     let mut c = read_columns(path, &["t", "speed", "steer", "yaw_rate"], optional)?;
+    // A column named twice is converted once: it is in degrees or not.
+    let mut declared: Vec<AngleColumn> = Vec::new();
+    for a in degrees {
+        if !declared.contains(a) {
+            declared.push(*a);
+        }
+    }
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()
         .filter(|n| !optional.contains(n) && c.header.iter().any(|h| h == n))
         .collect();
-    for a in degrees {
+    for a in &declared {
         c.scale(a.name(), std::f64::consts::PI / 180.0);
     }
     let t = c.take("t");
@@ -134,6 +142,9 @@ pub fn read_run_reading(
     }
     if let Some(beta) = &beta {
         check_beta(path, &c, &speed, &yaw_rate, beta)?;
+        if declared.contains(&AngleColumn::Beta) {
+            check_beta_declared(path, &c, &speed, &yaw_rate, beta)?;
+        }
     }
     let run = MeasuredRun {
         path: path.to_path_buf(),

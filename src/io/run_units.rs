@@ -134,11 +134,22 @@ pub(super) fn check_ay(
         inside as f64 >= AY_IN_G_SHARE * q.len() as f64
     };
     let (in_g, in_kmh, in_deg) = (holds(AY_IN_G), holds(SPEED_IN_KMH), holds(YAW_IN_DEG));
-    if !in_g && !in_kmh && !in_deg {
+    let too_small = holds(YAW_TOO_SMALL);
+    if !in_g && !in_kmh && !in_deg && !too_small {
         return Ok(());
     }
     let m = median(&mut q);
     let i = turning[0];
+    if too_small {
+        // No logger writes a yaw rate 57 times too small: a yaw rate in
+        // rad/s declared in deg/s and converted.
+        let slip = UnitSlip::YawRateTooSmall {
+            value: r[i],
+            median: m,
+            samples: turning.len(),
+        };
+        return Err(c.error_at(path, i, "yaw_rate", slip.into()));
+    }
     if in_deg {
         // Below `MAX_YAW_RATE` in deg/s (a gentle run): ay says it.
         let slip = UnitSlip::YawRateInDegPerS {
@@ -183,8 +194,18 @@ fn sideslip_bound(u: f64, r: f64) -> f64 {
 /// Beyond this median of |β| over [`sideslip_bound`] the sideslip is in
 /// degrees: a car's is 0.08–0.5 of the bound (the synthetic programme, the
 /// sedan analogue, the Putnam log), in degrees 4.5–27; a car drifting at
-/// 0.5 rad on a 20 m radius at 1 g reaches 2.
-const BETA_IN_DEGREES: f64 = 2.5;
+/// 0.5 rad on a 20 m radius at 1 g reaches 2, and the sedan's 0.3 rad step
+/// at 80 km/h, sliding, 3.1.
+const BETA_IN_DEGREES: f64 = 4.0;
+
+/// Below this median of |β| over [`sideslip_bound`] a `beta` declared in
+/// degrees was in radians: converted, a car's 0.08–0.5 becomes 0.0014–0.009.
+const BETA_DECLARED_IN_RADIANS: f64 = 0.04;
+
+/// The band of ay/(speed·yaw_rate) of a yaw rate 57 times too small (a
+/// yaw rate in rad/s declared in deg/s and converted), where a car's is
+/// near 1 on a flat road.
+const YAW_TOO_SMALL: (f64, f64) = (30.0, 110.0);
 
 /// Refuses a `beta` whose median over the turning samples (as
 /// [`check_ay`]'s) is beyond [`BETA_IN_DEGREES`] of [`sideslip_bound`]: a
@@ -204,18 +225,55 @@ pub(super) fn check_beta(
     if turning.len() < TURNING_SAMPLES {
         return Ok(());
     }
+    let ratio: Vec<f64> = turning
+        .iter()
+        .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
+        .collect();
+    let m = median(&mut ratio.clone());
+    if m <= BETA_IN_DEGREES {
+        return Ok(());
+    }
+    // The first turning sample that breaks the rule the message states.
+    let k = ratio.iter().position(|q| *q > BETA_IN_DEGREES).unwrap_or(0);
+    let i = turning[k];
+    let slip = UnitSlip::BetaInDegrees {
+        value: beta[i],
+        bound: sideslip_bound(speed[i], r[i]),
+        median: m,
+        samples: turning.len(),
+    };
+    Err(c.error_at(path, i, "beta", slip.into()))
+}
+
+/// Refuses a `beta` declared in degrees (and converted) whose median over
+/// the turning samples is below [`BETA_DECLARED_IN_RADIANS`] of
+/// [`sideslip_bound`]: it was in radians, and the conversion made it 57
+/// times too small.
+pub(super) fn check_beta_declared(
+    path: &Path,
+    c: &Columns,
+    speed: &[f64],
+    r: &[f64],
+    beta: &[f64],
+) -> Result<(), InputError> {
+    let turning: Vec<usize> = (0..beta.len())
+        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
+        .filter(|&i| beta[i].is_finite())
+        .collect();
+    if turning.len() < TURNING_SAMPLES {
+        return Ok(());
+    }
     let mut q: Vec<f64> = turning
         .iter()
         .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
         .collect();
     let m = median(&mut q);
-    if m <= BETA_IN_DEGREES {
+    if m >= BETA_DECLARED_IN_RADIANS {
         return Ok(());
     }
     let i = turning[0];
-    let slip = UnitSlip::BetaInDegrees {
-        value: beta[i],
-        bound: sideslip_bound(speed[i], r[i]),
+    let slip = UnitSlip::BetaDeclaredInDegrees {
+        value: beta[i].to_degrees(),
         median: m,
         samples: turning.len(),
     };

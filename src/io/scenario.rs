@@ -249,7 +249,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         ManoeuvreSpec::StepSteer(s) => step_steer(src, s, &model, f.road.friction)?,
         ManoeuvreSpec::Replay(r) => {
             let run_path = beside(dir, &r.run);
-            let r = replay::resolve(src, r, &run_path)?;
+            let r = replay::resolve(src, r, &run_path, model.vehicle.wheelbase())?;
             inputs.push(run_path);
             Resolved {
                 manoeuvre: Manoeuvre::Replay(r.replay),

@@ -159,7 +159,7 @@ fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError
         (short > YAW_ABOVE_STEER).then_some(InputProblem::YawAboveSteer {
             median: short,
             samples,
-            wheelbase: SHORTEST_WHEELBASE,
+            assumed_wheelbase: Some(SHORTEST_WHEELBASE),
         })
     });
     match problem {

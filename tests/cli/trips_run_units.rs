@@ -280,7 +280,7 @@ fn a_steer_declared_in_degrees_that_was_in_radians_is_refused_as_a_yaw_rate_no_c
         e.contains("the yaw rate is ")
             && e.contains("× a neutral car's for this steer")
             && e.contains("with l = 1 m, shorter than any car's wheelbase")
-            && e.contains("was a column declared in degrees (`--degrees`) already in radians?"),
+            && e.contains("was a column declared in degrees already in radians?"),
         "{e}"
     );
     // Read as logged, the same run is measured.
@@ -291,6 +291,95 @@ fn a_steer_declared_in_degrees_that_was_in_radians_is_refused_as_a_yaw_rate_no_c
     assert!(!ok);
     assert!(
         e.contains("or `yaw_rate` declared in degrees while it was in rad/s?"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_column_declared_in_degrees_that_was_in_radians_is_refused_and_a_repeat_converts_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged(dir.path(), |_| {});
+    // beta in rad declared in degrees: 57 times too small for a car.
+    let (ok, _, e) = metrics(&p, &["--degrees", "beta"]);
+    assert!(!ok);
+    assert!(
+        e.contains("column `beta`:")
+            && e.contains("declared in degrees")
+            && e.contains("so the column was already in radians; drop `beta`"),
+        "{e}"
+    );
+    // A yaw rate in rad/s declared in deg/s.
+    let (ok, _, e) = metrics(&p, &["--degrees", "yaw_rate"]);
+    assert!(!ok);
+    assert!(
+        e.contains("yaw_rate") && e.contains("declared in degrees"),
+        "{e}"
+    );
+    // A beta in degrees declared twice is converted once, as once.
+    let deg = logged(dir.path(), |r| r[5] = r[5].to_degrees());
+    let (ok, once, e) = metrics(&deg, &["--degrees", "beta"]);
+    assert!(ok, "{e}");
+    let (ok, twice, e) = metrics(&deg, &["--degrees", "beta", "--degrees", "beta"]);
+    assert!(ok, "{e}");
+    assert_eq!(once, twice);
+    assert!(
+        once.contains("steady sideslip             -0.5790 deg"),
+        "{once}"
+    );
+}
+
+#[test]
+fn simulates_own_history_of_a_slide_is_measured_not_refused_as_beta_in_degrees() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let base = base
+        .replace("../tyres", root().join("tyres").to_str().unwrap())
+        .replace("steer = 0.0174533", "steer = 0.3");
+    let sc = dir.path().join("big.toml");
+    fs::write(&sc, base).unwrap();
+    let out = dir.path().join("big");
+    let o = run(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (ok, _, e) = metrics(&out.join("history.csv"), &["--filter-hz", "0"]);
+    assert!(ok, "{e}");
+    assert!(e.contains("the car is sliding"), "{e}");
+}
+
+#[test]
+fn a_replay_whose_steer_is_declared_in_degrees_but_was_in_radians_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    // A 3° step (the 1° one, tripled): a turn the check judges.
+    let p = logged(dir.path(), |r| {
+        for k in [2, 3, 4, 5] {
+            r[k] *= 3.0;
+        }
+    });
+    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let base = base.replace("../tyres", root().join("tyres").to_str().unwrap());
+    let head = &base[..base.find("[manoeuvre]").unwrap()];
+    let sc = dir.path().join("replay.toml");
+    fs::write(
+        &sc,
+        format!("{head}[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\ndegrees = [\"steer\"]\n"),
+    )
+    .unwrap();
+    let o = run(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        dir.path().join("o").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("run.csv: the yaw rate is ")
+            && e.contains("× a neutral car's for this steer")
+            && e.contains("was a column declared in degrees already in radians?"),
         "{e}"
     );
 }

@@ -273,7 +273,7 @@ pub fn channels_alone() -> String {
 pub fn reduction(r: Reduction) -> String {
     match r {
         Reduction::WithinNoise => "not significant".into(),
-        Reduction::Percent(p) => format!("{p:.1}"),
+        Reduction::Percent(p) => crate::format::fixed(p, 1),
     }
 }
 

@@ -166,7 +166,8 @@ pub(super) fn read_runs(
         let run = read_run_with(p, degrees)?;
         check_length(&run)?;
         check_live_channels(&run)?;
-        notes.extend(steer_against_yaw(&run, wheelbase, min_speed)?);
+        let declared = degrees.contains(&AngleColumn::Steer);
+        notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -220,11 +221,13 @@ pub(super) fn read_runs(
 /// convention) or far smaller than a neutral car's (a steer in degrees or
 /// a steering-wheel angle) is refused; one above 3 a neutral car's (a
 /// steer too small, or a wrong wheelbase) is noted, since only the
-/// diagnosis knows the vehicle's wheelbase to judge it by.
+/// diagnosis knows the vehicle's wheelbase to judge it by; the note asks
+/// whether a steer `declared` in degrees under `[runs]` was in radians.
 fn steer_against_yaw(
     run: &MeasuredRun,
     wheelbase: f64,
     min_speed: f64,
+    declared: bool,
 ) -> Result<Option<String>, InputError> {
     let Some((m, n)) = yaw_per_neutral(run, wheelbase, min_speed) else {
         return Ok(None);
@@ -232,9 +235,13 @@ fn steer_against_yaw(
     if let Some(problem) = steer_problem(m, n, None) {
         return Err(file_error(&run.path, problem));
     }
+    let ask = match declared {
+        true => " `steer` is declared in degrees under [runs]: was it already in radians?",
+        false => "",
+    };
     Ok((m > 3.0).then(|| {
         format!(
-            "{}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} held steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?",
+            "{}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} held steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?{ask}",
             run.path.display()
         )
     }))
@@ -318,7 +325,7 @@ mod tests {
                 .enumerate()
                 .map(|(i, &s)| gain * 20.0 * steer(s) / l + 1e-3 * ((i * 7919 % 13) as f64 - 6.0))
                 .collect();
-            steer_against_yaw(&r, l, 5.0)
+            steer_against_yaw(&r, l, 5.0, false)
         };
         // Turns held for 1–2 s, left and right.
         let turns = |s: f64| 0.03 * (2.0 * (s * 1.3).sin()).clamp(-1.0, 1.0);

@@ -8,6 +8,7 @@ use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, MeasuredRun};
 use crate::manoeuvre::Replay;
 use crate::measured::clean::{clean_single, CleanSettings, CleaningReport};
+use crate::metrics::measured::{steer_problem, yaw_per_neutral, YAW_ABOVE_STEER};
 use crate::vehicle::State;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -43,11 +44,16 @@ pub(super) struct ResolvedReplay {
 }
 
 /// Reads and cleans the run at `run_path` (the spec's `run`, resolved
-/// beside the scenario), started from its first unmasked sample.
+/// beside the scenario), started from its first unmasked sample. Its steer
+/// is judged against its yaw rate with the scenario's `wheelbase` (m), by
+/// the rule `metrics` and `diagnose` apply ([`steer_problem`]), and a yaw
+/// rate beyond [`YAW_ABOVE_STEER`] times a neutral car's is refused too: a
+/// steer declared in degrees that was in radians.
 pub(super) fn resolve(
     src: &TomlSource,
     r: &ReplaySpec,
     run_path: &Path,
+    wheelbase: f64,
 ) -> Result<ResolvedReplay, InputError> {
     ParamError::non_negative("min_speed", r.min_speed)
         .map_err(|e| param_error(src, Some("manoeuvre"), e))?;
@@ -55,6 +61,16 @@ pub(super) fn resolve(
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run_with(run_path, &r.degrees)?;
+    if let Some((m, n)) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
+        let above = (m > YAW_ABOVE_STEER).then_some(InputProblem::YawAboveSteer {
+            median: m,
+            samples: n,
+            assumed_wheelbase: None,
+        });
+        if let Some(p) = steer_problem(m, n, None).or(above) {
+            return Err(InputError::problem(run_path, p));
+        }
+    }
     let run = clean_single(read, &settings, &mut cleaning).ok_or_else(|| {
         InputError::problem(
             run_path,

@@ -354,7 +354,7 @@ fn simulates_own_history_of_a_slide_is_measured_not_refused_as_beta_in_degrees()
 fn a_replay_whose_steer_is_declared_in_degrees_but_was_in_radians_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     // A 3° step (the 1° one, tripled): a turn the check judges.
-    let p = logged(dir.path(), |r| {
+    logged(dir.path(), |r| {
         for k in [2, 3, 4, 5] {
             r[k] *= 3.0;
         }

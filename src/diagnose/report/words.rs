@@ -9,6 +9,7 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
+mod gap;
 mod parameters;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
@@ -18,11 +19,10 @@ pub use parameters::parameter;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
-    above_noise, CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note,
-    OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
-    SIGNIFICANT_NOISE_FLOORS,
+    CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary,
+    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
-use crate::diagnose::report::{ChannelNoise, Confounded, Part, Reduction, ScaleSource, Shrinkage};
+use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
 
 impl Verdict {
@@ -478,13 +478,6 @@ pub fn within_noise_caveat(findings: &[GapFinding]) -> Option<&'static str> {
 
 /// A finding on where the gap lies.
 pub fn finding(f: &GapFinding) -> String {
-    let listed = |v: Vec<String>| {
-        if v.is_empty() {
-            "nowhere".to_string()
-        } else {
-            v.join(", ")
-        }
-    };
     match f {
         GapFinding::Overall {
             significant,
@@ -498,57 +491,7 @@ pub fn finding(f: &GapFinding) -> String {
                 "no significant gap"
             }
         ),
-        GapFinding::Channel {
-            channel,
-            rms,
-            noise_floor,
-            significant_runs,
-            runs,
-            wrong,
-            right,
-            offset,
-        } => {
-            let said = offset.map_or(String::new(), |o| {
-                format!(
-                    "; a steady offset: mean residual {} {} over the runs, of that sign in {} of {} runs ({} noise floors, {:.0} % of the mean square), a sensor offset or a bias of the model that the RMS does not single out",
-                    crate::format::signed(o.mean, 4),
-                    channel.unit(),
-                    o.same_sign,
-                    o.runs,
-                    crate::format::fixed(o.floors, 1),
-                    100.0 * o.share
-                )
-            });
-            let head = format!(
-                "{}: RMS {rms:.4} {} (noise floor {noise_floor:.4}); significant in {significant_runs} of {runs} runs",
-                channel.name(),
-                channel.unit(),
-            );
-            let parts = |v: &[(Part, f64)]| {
-                listed(
-                    v.iter()
-                        .map(|(p, rms)| format!("{p} ({rms:.3} {})", channel.unit()))
-                        .collect(),
-                )
-            };
-            let place = if above_noise(*rms, *noise_floor) || *significant_runs > 0 {
-                format!(
-                    "{head}; wrong in: {}; right in: {}",
-                    parts(wrong),
-                    listed(right.iter().map(|p| p.label()).collect()),
-                )
-            } else if wrong.is_empty() {
-                // A gap within noise has no place: listing the parts it is
-                // "right in" would read as a finding.
-                format!("{head}: within noise in every part, so no place where the base model is wrong")
-            } else {
-                format!(
-                    "{head}: within noise over the runs, so no place where the base model is wrong; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
-                    parts(wrong)
-                )
-            };
-            place + &said
-        }
+        GapFinding::Channel { .. } => gap::channel(f),
         GapFinding::Band {
             run,
             f_low,

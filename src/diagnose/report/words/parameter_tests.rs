@@ -5,6 +5,7 @@
 use super::*;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::ParameterValue;
+use crate::diagnose::report::Part;
 
 #[test]
 fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {

@@ -6,6 +6,7 @@ use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
 use crate::diagnose::report::ParameterValue;
+use crate::diagnose::report::Part;
 
 fn explained(reduction_percent: f64) -> Verdict {
     Verdict::Explained(Explained {

@@ -191,6 +191,23 @@ fn sideslip_bound(u: f64, r: f64) -> f64 {
     3.0 * r.abs() / u + 0.1 * (u * r).abs() / crate::constants::G
 }
 
+/// The turning samples of a run (as [`check_ay`]'s, with a finite `beta`)
+/// and their |β| over [`sideslip_bound`]; None below [`TURNING_SAMPLES`].
+fn sideslip_ratios(speed: &[f64], r: &[f64], beta: &[f64]) -> Option<(Vec<usize>, Vec<f64>)> {
+    let turning: Vec<usize> = (0..beta.len())
+        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
+        .filter(|&i| beta[i].is_finite())
+        .collect();
+    if turning.len() < TURNING_SAMPLES {
+        return None;
+    }
+    let ratio = turning
+        .iter()
+        .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
+        .collect();
+    Some((turning, ratio))
+}
+
 /// Beyond this median of |β| over [`sideslip_bound`] the sideslip is in
 /// degrees: a car's is 0.08–0.5 of the bound (the synthetic programme, the
 /// sedan analogue, the Putnam log), in degrees 4.5–27; a car drifting at
@@ -218,17 +235,9 @@ pub(super) fn check_beta(
     r: &[f64],
     beta: &[f64],
 ) -> Result<(), InputError> {
-    let turning: Vec<usize> = (0..beta.len())
-        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
-        .filter(|&i| beta[i].is_finite())
-        .collect();
-    if turning.len() < TURNING_SAMPLES {
+    let Some((turning, ratio)) = sideslip_ratios(speed, r, beta) else {
         return Ok(());
-    }
-    let ratio: Vec<f64> = turning
-        .iter()
-        .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
-        .collect();
+    };
     let m = median(&mut ratio.clone());
     if m <= BETA_IN_DEGREES {
         return Ok(());
@@ -256,17 +265,9 @@ pub(super) fn check_beta_declared(
     r: &[f64],
     beta: &[f64],
 ) -> Result<(), InputError> {
-    let turning: Vec<usize> = (0..beta.len())
-        .filter(|&i| speed[i] >= MOVING && (speed[i] * r[i]).abs() >= TURNING)
-        .filter(|&i| beta[i].is_finite())
-        .collect();
-    if turning.len() < TURNING_SAMPLES {
+    let Some((turning, mut q)) = sideslip_ratios(speed, r, beta) else {
         return Ok(());
-    }
-    let mut q: Vec<f64> = turning
-        .iter()
-        .map(|&i| beta[i].abs() / sideslip_bound(speed[i], r[i]))
-        .collect();
+    };
     let m = median(&mut q);
     if m >= BETA_DECLARED_IN_RADIANS {
         return Ok(());

@@ -39,6 +39,21 @@ fn logged(dir: &Path, edit: fn(&mut [f64; 6])) -> PathBuf {
     p
 }
 
+/// A replay scenario `name` beside `run` (the bundled sedan, its tyres
+/// found from anywhere) with `extra` lines under its `[manoeuvre]`.
+fn replay_scenario(run: &Path, name: &str, extra: &str) -> PathBuf {
+    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let base = base.replace("../tyres", root().join("tyres").to_str().unwrap());
+    let head = &base[..base.find("[manoeuvre]").unwrap()];
+    let sc = run.with_file_name(name);
+    let text = format!(
+        "{head}[manoeuvre]\nkind = \"replay\"\nrun = \"{}\"\n{extra}",
+        run.file_name().unwrap().to_str().unwrap()
+    );
+    fs::write(&sc, text).unwrap();
+    sc
+}
+
 /// `metrics` of `path` with `extra` options: success, stdout and stderr.
 fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
     let mut args = vec!["metrics", path.to_str().unwrap()];
@@ -207,19 +222,7 @@ fn metrics_leaves_a_roll_column_in_degrees_unread_and_says_so() {
 fn a_replay_declares_its_runs_roll_in_degrees_under_its_manoeuvre() {
     let dir = tempfile::tempdir().unwrap();
     let p = logged_with_roll_in_degrees(dir.path());
-    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
-    let tyres = root().join("tyres");
-    let base = base.replace("../tyres", tyres.to_str().unwrap());
-    let head = &base[..base.find("[manoeuvre]").unwrap()];
-    let write = |name: &str, extra: &str| {
-        let sc = dir.path().join(name);
-        let text = format!(
-            "{head}[manoeuvre]\nkind = \"replay\"\nrun = \"{}\"\n{extra}",
-            p.file_name().unwrap().to_str().unwrap()
-        );
-        fs::write(&sc, text).unwrap();
-        sc
-    };
+    let write = |name: &str, extra: &str| replay_scenario(&p, name, extra);
     let refused = write("refused.toml", "");
     let o = run(&[
         "simulate",
@@ -354,20 +357,12 @@ fn simulates_own_history_of_a_slide_is_measured_not_refused_as_beta_in_degrees()
 fn a_replay_whose_steer_is_declared_in_degrees_but_was_in_radians_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     // A 3° step (the 1° one, tripled): a turn the check judges.
-    logged(dir.path(), |r| {
+    let p = logged(dir.path(), |r| {
         for k in [2, 3, 4, 5] {
             r[k] *= 3.0;
         }
     });
-    let base = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
-    let base = base.replace("../tyres", root().join("tyres").to_str().unwrap());
-    let head = &base[..base.find("[manoeuvre]").unwrap()];
-    let sc = dir.path().join("replay.toml");
-    fs::write(
-        &sc,
-        format!("{head}[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\ndegrees = [\"steer\"]\n"),
-    )
-    .unwrap();
+    let sc = replay_scenario(&p, "replay.toml", "degrees = [\"steer\"]\n");
     let o = run(&[
         "simulate",
         sc.to_str().unwrap(),

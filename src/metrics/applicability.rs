@@ -99,24 +99,49 @@ pub fn applicability(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
 /// [`applicability`] of a measured run, whose grip no channel gives: at a
 /// crawl (below [`CRAWL_SPEED`]) a sideslip beyond 10° is judged against
 /// [`Grip::PavedRoad`], and said so; faster, a sideslip beyond 10° is a
-/// slide on any road.
-pub fn applicability_measured(m: &StepMetrics, speed: Option<f64>) -> Vec<String> {
+/// slide on any road. A yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] is
+/// judged by the largest |β| of the run (`largest_sideslip`, rad, where it
+/// logs `beta`): a spinning car's sideslip grows past a slide's.
+pub fn applicability_measured(
+    m: &StepMetrics,
+    speed: Option<f64>,
+    largest_sideslip: Option<f64>,
+) -> Vec<String> {
     let crawl = speed.is_some_and(|u| u.abs() < CRAWL_SPEED);
-    applicability_with_grip(m, speed, crawl.then_some(Grip::PavedRoad), None)
+    let evidence = Some(largest_sideslip.map_or(Overshoot::NoSideslip, Overshoot::Sideslip));
+    applicability_with_grip(m, speed, crawl.then_some(Grip::PavedRoad), evidence)
+}
+
+/// What tells a yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] from a spin.
+/// A 2-DOF car's yaw damping falls as 1/u while its stiffness (from the
+/// tyres) does not: at high speed a step rings, with every tyre on the
+/// linear part of its curve and the car nowhere near sliding.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Overshoot {
+    /// The most of its grip either axle used anywhere in the run (a
+    /// simulation's, whose tyres are known): below [`KINEMATIC_GRIP`] no
+    /// tyre passed the linear part of its curve.
+    GripUsed(f64),
+    /// The largest |β| of a measured run, rad: within
+    /// [`SLIDING_SIDESLIP`] the car never slid, so it did not spin.
+    Sideslip(f64),
+    /// A measured run without `beta`: nothing tells the two apart.
+    NoSideslip,
 }
 
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
 /// m/s², the lower axle's peak at static load, road friction included):
 /// a sideslip beyond 10° with the tyres at under [`KINEMATIC_GRIP`] of it
 /// is said as the kinematic turn it is ([`kinematic_turn`]), not a slide;
-/// and a yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] where no axle used
-/// more than [`KINEMATIC_GRIP`] of its grip anywhere in the run
-/// (`peak_share`) as the lightly damped linear response it is, not a spin.
+/// and a yaw-rate overshoot beyond [`SPIN_OVERSHOOT`] where the run shows
+/// no slide (`overshoot`: no axle used more than [`KINEMATIC_GRIP`] of its
+/// grip anywhere in it, or its sideslip stayed within [`SLIDING_SIDESLIP`])
+/// as the lightly damped response it is, not a spin.
 pub fn applicability_with_grip(
     m: &StepMetrics,
     speed: Option<f64>,
     grip: Option<Grip>,
-    peak_share: Option<f64>,
+    overshoot: Option<Overshoot>,
 ) -> Vec<String> {
     let mut out = Vec::new();
     if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
@@ -154,24 +179,33 @@ pub fn applicability_with_grip(
             ),
         });
     }
-    let linear = peak_share.filter(|s| *s < KINEMATIC_GRIP);
-    if let (true, Some(share)) = (m.yaw_rate_overshoot > SPIN_OVERSHOOT, linear) {
-        // A 2-DOF car's yaw damping falls as 1/u while its stiffness
-        // (from the tyres) does not: at high speed a step rings, with
-        // every tyre on the linear part of its curve.
-        out.push(format!(
-            "the yaw rate overshoots its steady value by {:.0} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{}); the metrics still describe it, a response far from the standards' well-damped steps",
-            m.yaw_rate_overshoot,
-            100.0 * share,
-            speed.map_or_else(String::new, |u| format!(", here {:.1} m/s", u.abs()))
-        ));
-    } else if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
-        out.push(format!(
-            "the yaw rate overshoots its steady value by {:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe",
-            m.yaw_rate_overshoot
-        ));
+    if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
+        out.push(overshoot_words(m.yaw_rate_overshoot, speed, overshoot));
     }
     out
+}
+
+/// The warning on a yaw-rate overshoot of `percent` beyond
+/// [`SPIN_OVERSHOOT`] at `speed` (m/s), judged by `evidence`.
+fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>) -> String {
+    let at = speed.map_or_else(String::new, |u| format!(", here {:.1} m/s", u.abs()));
+    let ringing =
+        "the metrics still describe it, a response far from the standards' well-damped steps";
+    let spin = format!("the yaw rate overshoots its steady value by {percent:.0} %: a peak more than twice the steady value is a car losing and regaining grip or spinning, not the handling response the metrics describe");
+    match evidence {
+        Some(Overshoot::GripUsed(share)) if share < KINEMATIC_GRIP => format!(
+            "the yaw rate overshoots its steady value by {percent:.0} % with the tyres using no more than {:.0} % of their grip: no spin, but a lightly damped linear response (the yaw damping falls with speed{at}); {ringing}",
+            100.0 * share
+        ),
+        Some(Overshoot::Sideslip(beta)) if beta <= SLIDING_SIDESLIP => format!(
+            "the yaw rate overshoots its steady value by {percent:.0} % with the sideslip within ±{:.1}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
+            beta.to_degrees()
+        ),
+        Some(Overshoot::NoSideslip) => format!(
+            "{spin}; or, at speed, a lightly damped response that never left the tyres' linear range: the run has no `beta` to tell them apart"
+        ),
+        _ => spin,
+    }
 }
 
 /// Why a sideslip beyond 10° is no slide, where the tyres use `share`
@@ -391,6 +425,55 @@ mod tests {
             ..moderate()
         };
         assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+    }
+
+    #[test]
+    fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
+        let ringing = StepMetrics {
+            yaw_rate_overshoot: 229.0,
+            ..moderate()
+        };
+        let said = |e: Option<Overshoot>| applicability_with_grip(&ringing, Some(80.0), None, e);
+        // The tyres at a third of their grip, or the car within 2.2° of
+        // sideslip: no spin.
+        let w = said(Some(Overshoot::GripUsed(0.35)));
+        assert!(
+            w[0].contains("using no more than 35 % of their grip: no spin"),
+            "{w:?}"
+        );
+        let w = said(Some(Overshoot::Sideslip(2.2_f64.to_radians())));
+        assert!(
+            w[0].contains("with the sideslip within ±2.2° throughout"),
+            "{w:?}"
+        );
+        assert!(!w[0].contains("spinning"), "{w:?}");
+        // At the limits themselves (half the grip is used, 10° is a
+        // slide's least) and beyond, or with nothing to judge by: a spin.
+        for e in [
+            Some(Overshoot::GripUsed(KINEMATIC_GRIP)),
+            Some(Overshoot::Sideslip(SLIDING_SIDESLIP + 1e-9)),
+            None,
+        ] {
+            let w = said(e);
+            assert!(
+                w[0].ends_with("not the handling response the metrics describe"),
+                "{e:?}: {w:?}"
+            );
+        }
+        // A measured run without `beta`: both readings are said.
+        let w = said(Some(Overshoot::NoSideslip));
+        assert!(
+            w[0].contains("spinning") && w[0].contains("no `beta` to tell them apart"),
+            "{w:?}"
+        );
+        // An overshoot within a response's is no warning whatever the evidence.
+        assert!(applicability_with_grip(
+            &moderate(),
+            Some(80.0),
+            None,
+            Some(Overshoot::NoSideslip)
+        )
+        .is_empty());
     }
 
     #[test]

@@ -299,8 +299,16 @@ pub fn measured_step_metrics(
         >= mean(&speeds[..tenth.min(speeds.len())]);
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
+    // The largest |β| the piece logs: a spinning car's passes a slide's.
+    let largest_sideslip = piece.beta.as_ref().map(|b| {
+        b.iter()
+            .filter(|x| x.is_finite())
+            .fold(0.0_f64, |m, x| m.max(x.abs()))
+    });
     warnings.extend(super::applicability::applicability_measured(
-        &metrics, speed,
+        &metrics,
+        speed,
+        largest_sideslip,
     ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
     if metrics.ay_steady.is_none() {

@@ -1,5 +1,6 @@
 //! What the fifth fresh-eyes check found in `simulate`: a `.tir` held at
-//! its ranges' ends without a word, a lightly damped step said as a spin,
+//! its ranges' ends without a word, a lightly damped step said as a spin
+//! (by `simulate`, and by `metrics` on its history),
 //! metric windows refused only after the run (or cut without a word), and
 //! a cornering stiffness typed in N/deg run as N/rad.
 //! Each test one finding, run as a user runs it.
@@ -68,6 +69,44 @@ fn a_lightly_damped_step_far_below_the_grip_is_no_spin() {
         "{said}"
     );
     assert!(!said.contains("spinning"), "{said}");
+    // `metrics` on the same history, a measured run whose grip no channel
+    // gives, called it a spin: its sideslip says it never slid.
+    let history = dir.path().join("out/history.csv");
+    let o = run(&["metrics", history.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // The warnings go to stderr, beside the table on stdout.
+    let said = stderr(&o);
+    assert!(
+        said.contains(
+            "warning: the yaw rate overshoots its steady value by 146 % with the sideslip within ±"
+        ),
+        "{said}"
+    );
+    assert!(
+        said.contains("° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed, here 60.0 m/s)"),
+        "{said}"
+    );
+    assert!(!said.contains("spinning"), "{said}");
+    // Without `beta` nothing tells a ringing car from a spinning one: both
+    // are said.
+    let text = fs::read_to_string(&history).unwrap();
+    let cut: Vec<String> = text
+        .lines()
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            [&cells[..3], &cells[4..]].concat().join(",")
+        })
+        .collect();
+    assert!(text.starts_with("t,steer,speed,beta,"), "{text:.80}");
+    let no_beta = dir.path().join("no_beta.csv");
+    fs::write(&no_beta, cut.join("\n")).unwrap();
+    let o = run(&["metrics", no_beta.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("losing and regaining grip or spinning, not the handling response the metrics describe; or, at speed, a lightly damped response that never left the tyres' linear range: the run has no `beta` to tell them apart"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 /// `steady_window = 10` on a 6 s step failed after the run with no file,

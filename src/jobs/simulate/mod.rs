@@ -13,7 +13,9 @@ use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::applicability::{applicability_with_grip, schedule_applicability, Grip};
+use crate::metrics::applicability::{
+    applicability_with_grip, schedule_applicability, Grip, Overshoot,
+};
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
@@ -130,7 +132,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             m,
             Some(sc.manoeuvre.speed(0.0)),
             grip.map(Grip::Tyres),
-            peak_share,
+            peak_share.map(Overshoot::GripUsed),
         )
     });
     // A schedule (a replay of no measured run) is a speed someone wrote:

@@ -118,51 +118,79 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
     Some((median(&mut q), n))
 }
 
+/// The wheelbase a run's steer is judged with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Wheelbase {
+    /// The vehicle's, m (a campaign's, a replay's scenario).
+    Known(f64),
+    /// Not known (`metrics` on a run alone): a yaw rate too small is judged
+    /// with [`LONGEST_WHEELBASE`], one too large with [`SHORTEST_WHEELBASE`],
+    /// so that no real car's is refused either way.
+    Unknown,
+}
+
+impl Wheelbase {
+    /// The wheelbase the median of [`yaw_per_neutral`] is taken with.
+    pub fn for_median(self) -> f64 {
+        match self {
+            Self::Known(l) => l,
+            Self::Unknown => LONGEST_WHEELBASE,
+        }
+    }
+}
+
 /// What is wrong with a run's steer, judged by the median `median` of
-/// [`yaw_per_neutral`] over `samples` held samples (`assumed_wheelbase`:
-/// the wheelbase taken where the vehicle's is not known): below
-/// −[`STEER_IN_DEGREES`] the yaw rate turns against the steer (another
-/// sign convention), below [`STEER_IN_DEGREES`] it is far smaller than a
-/// neutral car's (a steer in degrees, 57×, or a steering-wheel angle,
-/// 15×). Both refuse the run, in `metrics` and in `diagnose`: fitted, such
-/// a steer gives a model-form error that is a unit slip.
-pub fn steer_problem(
-    median: f64,
-    samples: usize,
-    assumed_wheelbase: Option<f64>,
-) -> Option<InputProblem> {
+/// [`yaw_per_neutral`] over `samples` held samples, taken with
+/// `wheelbase`'s [`Wheelbase::for_median`]: below −[`STEER_IN_DEGREES`] the
+/// yaw rate turns against the steer (another sign convention), below
+/// [`STEER_IN_DEGREES`] it is far smaller than a neutral car's (a steer in
+/// degrees, 57×, or a steering-wheel angle, 15×), above
+/// [`YAW_ABOVE_STEER`] far larger (a steer declared in degrees that was in
+/// radians). Each refuses the run, in `metrics`, in a replay and in
+/// `diagnose` alike: fitted, such a steer gives a model-form error that is
+/// a unit slip.
+pub fn steer_problem(median: f64, samples: usize, wheelbase: Wheelbase) -> Option<InputProblem> {
+    let assumed = match wheelbase {
+        Wheelbase::Known(_) => None,
+        Wheelbase::Unknown => Some(LONGEST_WHEELBASE),
+    };
+    // r·l/(u·δ) is linear in l: the same median at the shortest wheelbase.
+    let (above, assumed_above) = match wheelbase {
+        Wheelbase::Known(_) => (median, None),
+        Wheelbase::Unknown => (
+            median * SHORTEST_WHEELBASE / LONGEST_WHEELBASE,
+            Some(SHORTEST_WHEELBASE),
+        ),
+    };
     if median < -STEER_IN_DEGREES {
         Some(InputProblem::YawAgainstSteer { median, samples })
     } else if median < STEER_IN_DEGREES {
         Some(InputProblem::SteerAboveYaw {
             median,
             samples,
-            assumed_wheelbase,
+            assumed_wheelbase: assumed,
+        })
+    } else if above > YAW_ABOVE_STEER {
+        Some(InputProblem::YawAboveSteer {
+            median: above,
+            samples,
+            assumed_wheelbase: assumed_above,
         })
     } else {
         None
     }
 }
 
-/// Refuses a run whose steer is far larger than the yaw rate it gives, or
-/// turns against it ([`steer_problem`]), with the longest wheelbase for
-/// the vehicle's; or far smaller ([`YAW_ABOVE_STEER`], with the shortest).
-/// `diagnose`, which knows the car's wheelbase, notes a yaw rate above
-/// three times a neutral car's instead.
+/// Refuses a run whose steer the yaw rate it gives contradicts
+/// ([`steer_problem`], the vehicle's wheelbase not known). `diagnose`,
+/// which knows the car's wheelbase, also notes a yaw rate above three
+/// times a neutral car's.
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
-    let Some((median, samples)) = yaw_per_neutral(run, LONGEST_WHEELBASE, min_speed) else {
+    let wheelbase = Wheelbase::Unknown;
+    let Some((median, samples)) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
         return Ok(());
     };
-    // The same median at the shortest wheelbase: r·l/(u·δ) is linear in l.
-    let short = median * SHORTEST_WHEELBASE / LONGEST_WHEELBASE;
-    let problem = steer_problem(median, samples, Some(LONGEST_WHEELBASE)).or_else(|| {
-        (short > YAW_ABOVE_STEER).then_some(InputProblem::YawAboveSteer {
-            median: short,
-            samples,
-            assumed_wheelbase: Some(SHORTEST_WHEELBASE),
-        })
-    });
-    match problem {
+    match steer_problem(median, samples, wheelbase) {
         Some(problem) => Err(InputError::problem(&run.path, problem)),
         None => Ok(()),
     }

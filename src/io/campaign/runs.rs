@@ -15,7 +15,7 @@ use crate::measured::clean::{
     MIN_RUN_SECONDS,
 };
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{steer_problem, yaw_per_neutral};
+use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -217,12 +217,13 @@ pub(super) fn read_runs(
 
 /// The steer judged against the yaw rate it gives where it is held
 /// ([`yaw_per_neutral`]), by the rule `metrics` applies too
-/// ([`steer_problem`]): a yaw rate turning against the steer (another sign
-/// convention) or far smaller than a neutral car's (a steer in degrees or
-/// a steering-wheel angle) is refused; one above 3 a neutral car's (a
-/// steer too small, or a wrong wheelbase) is noted, since only the
-/// diagnosis knows the vehicle's wheelbase to judge it by; the note asks
-/// whether a steer `declared` in degrees under `[runs]` was in radians.
+/// ([`steer_problem`]) with the campaign's wheelbase, as a replay judges
+/// its run: a yaw rate turning against the steer (another sign
+/// convention), far smaller than a neutral car's (a steer in degrees or a
+/// steering-wheel angle) or far larger is refused; one above 3 a neutral
+/// car's (a steer too small, or a wrong wheelbase) is noted, and the note
+/// asks whether a steer `declared` in degrees under `[runs]` was in
+/// radians.
 fn steer_against_yaw(
     run: &MeasuredRun,
     wheelbase: f64,
@@ -232,7 +233,7 @@ fn steer_against_yaw(
     let Some((m, n)) = yaw_per_neutral(run, wheelbase, min_speed) else {
         return Ok(None);
     };
-    if let Some(problem) = steer_problem(m, n, None) {
+    if let Some(problem) = steer_problem(m, n, Wheelbase::Known(wheelbase)) {
         return Err(file_error(&run.path, problem));
     }
     let ask = match declared {

@@ -8,7 +8,7 @@ use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, MeasuredRun};
 use crate::manoeuvre::Replay;
 use crate::measured::clean::{clean_single, CleanSettings, CleaningReport};
-use crate::metrics::measured::{steer_problem, yaw_per_neutral, YAW_ABOVE_STEER};
+use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
 use crate::vehicle::State;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -46,9 +46,7 @@ pub(super) struct ResolvedReplay {
 /// Reads and cleans the run at `run_path` (the spec's `run`, resolved
 /// beside the scenario), started from its first unmasked sample. Its steer
 /// is judged against its yaw rate with the scenario's `wheelbase` (m), by
-/// the rule `metrics` and `diagnose` apply ([`steer_problem`]), and a yaw
-/// rate beyond [`YAW_ABOVE_STEER`] times a neutral car's is refused too: a
-/// steer declared in degrees that was in radians.
+/// the rule `metrics` and `diagnose` apply ([`steer_problem`]).
 pub(super) fn resolve(
     src: &TomlSource,
     r: &ReplaySpec,
@@ -62,12 +60,7 @@ pub(super) fn resolve(
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run_with(run_path, &r.degrees)?;
     if let Some((m, n)) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
-        let above = (m > YAW_ABOVE_STEER).then_some(InputProblem::YawAboveSteer {
-            median: m,
-            samples: n,
-            assumed_wheelbase: None,
-        });
-        if let Some(p) = steer_problem(m, n, None).or(above) {
+        if let Some(p) = steer_problem(m, n, Wheelbase::Known(wheelbase)) {
             return Err(InputError::problem(run_path, p));
         }
     }

@@ -46,8 +46,8 @@
 //! rest, its standard error from the effective sample count of
 //! autocorrelated samples, the samples; for `ay` with a `bank` column,
 //! `g·sin(bank)` removed sample by sample (`stats.rs` has the rules). Per
-//! channel and kind the spans are pooled (inverse-variance weights, Birge
-//! scale factor) and tested for agreement: spans that disagree are a
+//! channel and kind the spans are pooled (a random-effects mean: weights
+//! `1/(s² + τ²)`, DerSimonian & Laird 1986) and tested for agreement: spans that disagree are a
 //! drifting offset (temperature, a sensor knocked on its mount), reported
 //! as such. The straights' offset is compared with the standstills': they
 //! agree within [`AGREEMENT_SIGMAS`] standard errors of the difference.
@@ -271,6 +271,7 @@ fn pooled(spans: &[&CalibrationSpan], kind: SpanKind, channel: RunChannel) -> Op
         mean: p.mean,
         std_error: p.std_error,
         chi2: p.chi2,
+        between_spans: p.between,
         dof: p.dof,
         consistent: p.agree,
         least,

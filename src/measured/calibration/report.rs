@@ -198,11 +198,15 @@ pub struct Pooled {
     pub seconds: f64,
     /// Samples averaged.
     pub samples: usize,
-    /// The inverse-variance weighted mean.
+    /// The spans' mean, each weighed by `1/(s² + τ²)` (the inverse
+    /// variance where they agree; DerSimonian & Laird 1986 where they
+    /// scatter beyond their errors).
     pub mean: f64,
-    /// Its standard error (times the Birge ratio when the spans scatter
-    /// beyond their errors).
+    /// Its standard error, the scatter beyond the spans' errors included.
     pub std_error: f64,
+    /// τ: the spread of the spans' offsets beyond their own errors (0
+    /// where χ² ≤ dof).
+    pub between_spans: f64,
     /// χ² of the spans about the mean.
     pub chi2: f64,
     /// Its degrees of freedom (spans − 1).

@@ -18,12 +18,17 @@
 //!   `τ ≈ 1`; a first-order (AR(1)) noise of lag-one correlation φ has
 //!   `τ = (1 + φ)/(1 − φ)`. `τ` is held within `[1, n]`: a span never counts
 //!   more independent samples than it has, nor fewer than one.
-//! - Pooling: the inverse-variance weighted mean of the spans' means, its
-//!   standard error `1/√Σw` multiplied by the Birge ratio `√(χ²/(k − 1))`
-//!   when that exceeds 1 (the scale factor the Particle Data Group applies to
-//!   averages of measurements that scatter more than their errors say). The
-//!   spans agree when `χ²` stays below its [`AGREEMENT_QUANTILE`] quantile
-//!   with `k − 1` degrees of freedom (the Wilson & Hilferty 1931 cube-root
+//! - Pooling: a random-effects mean of the spans' means (DerSimonian &
+//!   Laird 1986): Cochran's `Q = Σ w(m − m̄)²` about the inverse-variance
+//!   mean (`w = 1/s²`) gives the spans' spread beyond their errors,
+//!   `τ² = max(0, (Q − (k − 1))/(Σw − Σw²/Σw))`, and each span is weighed
+//!   by `1/(s² + τ²)`, the standard error `1/√Σ(1/(s² + τ²))`. Where the
+//!   spans agree within their errors τ = 0 and this is the inverse-variance
+//!   mean; where they drift, a short span's tiny error cannot carry the
+//!   mean for the rest (it did under the Birge ratio, which only widened
+//!   the error). The spans agree when `χ²` stays below its
+//!   [`AGREEMENT_QUANTILE`] quantile with `k − 1` degrees of freedom (the
+//!   Wilson & Hilferty 1931 cube-root
 //!   approximation); else the offset drifts between them.
 
 use crate::measured::clean::median;
@@ -137,40 +142,58 @@ pub(super) fn mean_estimate(v: &[f64]) -> Option<MeanEstimate> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Pool {
     pub(super) mean: f64,
-    /// Inflated by the Birge ratio when the spans scatter more than their
-    /// errors say.
+    /// The random-effects standard error: the spans' own errors and their
+    /// scatter beyond them (`between`) together.
     pub(super) std_error: f64,
+    /// χ² (Cochran's Q) of the spans about their inverse-variance mean.
     pub(super) chi2: f64,
     pub(super) dof: usize,
     pub(super) agree: bool,
+    /// The spread of the spans' true offsets beyond their errors
+    /// (DerSimonian–Laird τ; 0 where χ² ≤ dof).
+    pub(super) between: f64,
 }
 
-/// Pools `(mean, standard error)` pairs (at least one).
+/// Pools `(mean, standard error)` pairs (at least one) as a random-effects
+/// mean (DerSimonian & Laird 1986): where the spans scatter beyond their
+/// errors (a drifting offset), each is weighed by `1/(s² + τ²)`, τ² the
+/// between-span variance estimated from Cochran's χ², so that a short span
+/// with a tiny error of its own cannot carry the mean for the rest (fixed
+/// inverse-variance weights did: one 4 s straight against a lap's). Where
+/// they agree (χ² ≤ dof), τ = 0 and the mean is the inverse-variance one.
 pub(super) fn pool(means: &[(f64, f64)]) -> Pool {
     // A noise-free span has a zero standard error: floor it at rounding.
-    let w: Vec<f64> = means
+    let var: Vec<f64> = means
         .iter()
-        .map(|&(m, s)| 1.0 / s.max(f64::EPSILON * m.abs().max(1e-300)).powi(2))
+        .map(|&(m, s)| s.max(f64::EPSILON * m.abs().max(1e-300)).powi(2))
         .collect();
-    let sw: f64 = w.iter().sum();
-    let mean = means.iter().zip(&w).map(|(&(m, _), w)| w * m).sum::<f64>() / sw;
+    let weighted = |w: &[f64]| {
+        let sw: f64 = w.iter().sum();
+        let mean = means.iter().zip(w).map(|(&(m, _), w)| w * m).sum::<f64>() / sw;
+        (mean, sw)
+    };
+    let w: Vec<f64> = var.iter().map(|v| 1.0 / v).collect();
+    let (fixed, sw) = weighted(&w);
     let chi2: f64 = means
         .iter()
         .zip(&w)
-        .map(|(&(m, _), w)| w * (m - mean).powi(2))
+        .map(|(&(m, _), w)| w * (m - fixed).powi(2))
         .sum();
     let dof = means.len() - 1;
-    let birge = if dof > 0 {
-        (chi2 / dof as f64).sqrt().max(1.0)
-    } else {
-        1.0
+    let sw2: f64 = w.iter().map(|w| w * w).sum();
+    let tau2 = match dof {
+        0 => 0.0,
+        _ => ((chi2 - dof as f64) / (sw - sw2 / sw)).max(0.0),
     };
+    let w_re: Vec<f64> = var.iter().map(|v| 1.0 / (v + tau2)).collect();
+    let (mean, sw_re) = weighted(&w_re);
     Pool {
         mean,
-        std_error: birge / sw.sqrt(),
+        std_error: 1.0 / sw_re.sqrt(),
         chi2,
         dof,
         agree: dof == 0 || chi2 <= chi2_quantile(dof, AGREEMENT_Z),
+        between: tau2.sqrt(),
     }
 }
 
@@ -222,10 +245,35 @@ mod tests {
         let p = pool(&[(1.0, 0.01), (1.01, 0.01), (0.995, 0.01)]);
         assert!(p.agree && (p.mean - 1.001_667).abs() < 1e-6);
         assert!((p.std_error - 0.01 / 3f64.sqrt()).abs() < 1e-12);
-        // Ten errors apart: a drift, and the pooled error grows with it.
+        assert_eq!(p.between, 0.0);
+        // Ten errors apart: a drift, and the pooled error grows with it
+        // (τ² = (Q − 1)/(Σw − Σw²/Σw) = 49/1e4: two spans, each weighed
+        // 1/(1e-4 + 4.9e-3) = 200, so ± 1/√400).
         let p = pool(&[(1.0, 0.01), (1.1, 0.01)]);
         assert!(!p.agree);
         assert!((p.std_error - 0.05).abs() < 1e-12, "{}", p.std_error);
+        assert!((p.between - 0.07).abs() < 1e-12, "{}", p.between);
         assert!(p.chi2 > 49.0 && p.dof == 1);
+    }
+
+    #[test]
+    fn a_short_span_with_a_tiny_error_does_not_carry_a_drifting_mean() {
+        // A 4 s straight at −0.600 ± 0.001 beside three laps' −0.66 to
+        // −0.68 ± 0.01: inverse-variance weights gave −0.602; the spans'
+        // scatter (τ ≈ 0.049) weighs them about alike: −0.652.
+        let spans = [
+            (-0.600, 0.001),
+            (-0.670, 0.01),
+            (-0.680, 0.01),
+            (-0.660, 0.01),
+        ];
+        let p = pool(&spans);
+        assert!(!p.agree);
+        let plain = spans.iter().map(|s| s.0).sum::<f64>() / 4.0;
+        assert!((p.mean - plain).abs() < 0.005, "{} against {plain}", p.mean);
+        assert!(p.mean < -0.64, "{}", p.mean);
+        assert!((0.045..0.055).contains(&p.between), "{}", p.between);
+        // The error covers the spread of four spans, not the short one's.
+        assert!(p.std_error > 0.01, "{}", p.std_error);
     }
 }

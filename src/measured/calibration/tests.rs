@@ -347,7 +347,8 @@ fn a_drifting_offset_is_a_finding() {
     let p = c.standstill.unwrap();
     assert!(!p.consistent && p.spans == 2, "{p:?}");
     assert!((p.least + 0.62).abs() < 0.005 && (p.greatest + 0.58).abs() < 0.005);
-    // The pooled error covers the spread (Birge ratio), not the noise.
+    // The pooled error covers the spread (τ, the scatter between the
+    // stops), not the noise.
     assert!(p.std_error > 0.015, "{p:?}");
     assert!(
         c.line().contains("the standstills drift (-0.6"),

@@ -146,7 +146,7 @@ pub fn applicability_with_grip(
     let mut out = Vec::new();
     if let Some(u) = speed.filter(|u| u.abs() < CRAWL_SPEED) {
         out.push(format!(
-            "the step is at {:.2} m/s, below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry and the response times measure no handling (ISO 7401 steps at 80 km/h)",
+            "the step is at {:.2} m/s, below {CRAWL_SPEED} m/s (18 km/h): at a crawl the yaw rate follows the steer's geometry, and neither the response times nor the total variances (E_r, E_ay, Er: the lags of a geometric turn) measure handling (ISO 7401 steps at 80 km/h, as Wang & Liang's validation of Er does)",
             u.abs()
         ));
     }

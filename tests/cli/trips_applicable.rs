@@ -75,6 +75,11 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         said.contains("warning: the step is at 0.50 m/s, below 5 m/s (18 km/h)"),
         "{said}"
     );
+    // The total variances are a crawl's geometric lags too, said as such.
+    assert!(
+        said.contains("neither the response times nor the total variances (E_r, E_ay, Er"),
+        "{said}"
+    );
     // A 1° step at 80 km/h is a handling response: no warning.
     let (said, metrics) = step(22.2222, 0.0174533);
     assert!(!said.contains("warning:"), "{said}");

@@ -7,7 +7,10 @@
 mod checks;
 
 use super::metrics::{metric_lines, UNITS};
+use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
+use crate::diagnose::report::trust::channel_trust;
+use crate::diagnose::report::{words, ChannelNoise};
 use crate::error::Error;
 use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
@@ -28,6 +31,9 @@ pub struct ReplayGap {
     pub run: String,
     /// Per channel.
     pub channels: Vec<ChannelGap>,
+    /// How far each channel is trusted, its noise floor and where it comes
+    /// from, by `diagnose`'s rule on this one run.
+    pub noise: Vec<ChannelNoise>,
     /// How the run was cleaned.
     pub cleaning: Option<CleaningReport>,
 }
@@ -145,12 +151,17 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     }
     let said = checks::checks(&sc, h);
     warnings.extend(said.warnings);
-    let replay = sc.measured.as_ref().map(|run| ReplayGap {
-        run: run.path.display().to_string(),
-        // A lone replay has no trusted uncertainty: each channel against
-        // its own scatter.
-        channels: run_gap(run, h, &[0.0; 3]),
-        cleaning: sc.cleaning.clone(),
+    let replay = sc.measured.as_ref().map(|run| {
+        // The floors `diagnose` would trust this run's channels to, by its
+        // own rule: a run's scatter alone trusts a state estimator's smooth
+        // output, or a quiet gyro, beyond any sensor of its type.
+        let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
+        ReplayGap {
+            run: run.path.display().to_string(),
+            channels: run_gap(run, h, &trust.floors),
+            noise: trust.noise,
+            cleaning: sc.cleaning.clone(),
+        }
     });
     Ok(SimulateReport {
         integration,
@@ -200,6 +211,7 @@ impl SimulateReport {
         if let Some(r) = &self.replay {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
+            out.push(format!("  {}", words::channels_trusted(&r.noise)));
             out.extend(
                 r.channels
                     .iter()

@@ -1,0 +1,96 @@
+//! What fresh-eyes users of the last release still tripped on (issue 41),
+//! run as a user runs the tool: a replay's noise floors against
+//! `diagnose`'s, a `degrees` naming no column, the numbers' digits.
+//! Each test one finding.
+
+use super::*;
+
+/// A logged step at 100 Hz for 6 s (0.02 rad at 1 s, 20 m/s, first-order
+/// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and the
+/// sideslip of a state estimator, smooth to its last digit.
+fn estimator_run() -> String {
+    let mut s = String::from("t,speed,steer,yaw_rate,beta\n");
+    for i in 0..=600 {
+        let t = f64::from(i) / 100.0;
+        let on = t > 1.0;
+        let r = if on {
+            0.2 * (1.0 - (-(t - 1.0) / 0.15).exp())
+        } else {
+            0.0
+        };
+        // A deterministic scatter, uniform in ±0.007 rad/s (σ 0.004).
+        let u = ((f64::from(i) * 12.9898).sin() * 43758.5453).fract();
+        let steer = if on { 0.02 } else { 0.0 };
+        s += &format!("{t:.2},20,{steer},{:.6},{:.6}\n", r + 0.007 * u, -0.05 * r);
+    }
+    s
+}
+
+/// A replay read the run's own scatter as its noise floors (the Putnam
+/// log's yaw rate 25 floors where `diagnose`, trusting a gyro no better
+/// than its type's floor, reads 15; its estimated sideslip 14 where
+/// `diagnose` reads 2): the replay now trusts each channel by `diagnose`'s
+/// rule and says so.
+#[test]
+fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
+    let dir = scratch(&[(
+        "vehicle.toml",
+        &format!("{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"),
+    )]);
+    linear_tyre(dir.path());
+    fs::create_dir(dir.path().join("runs")).unwrap();
+    // Held-out scoring needs two runs: the same run twice, whose median
+    // scatter is its own.
+    for name in ["a.csv", "b.csv"] {
+        fs::write(dir.path().join("runs").join(name), estimator_run()).unwrap();
+    }
+    let sc = format!(
+        "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"runs/a.csv\"\n"
+    );
+    fs::write(dir.path().join("replay.toml"), sc).unwrap();
+    let o = run(&[
+        "simulate",
+        dir.path().join("replay.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("sim").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    let gap = read_json(&dir.path().join("sim/gap.json"));
+    let (printed, d) = diagnose_to(dir.path(), &dir.path().join("out"));
+    let trusted = |text: &str| {
+        text.lines()
+            .find(|l| l.contains("channels trusted to:"))
+            .map(|l| l.trim().to_string())
+            .unwrap_or_else(|| panic!("no trust line: {text}"))
+    };
+    // One rule, one sentence.
+    assert_eq!(trusted(&said), trusted(&printed));
+    assert!(
+        trusted(&said).contains("beta 0.0050 rad (an estimated output's"),
+        "{said}"
+    );
+    // The same floors, scales and sources (the diagnosis counts its two
+    // runs, the replay its one).
+    let without_runs = |v: &serde_json::Value| {
+        let mut v = v.clone();
+        for n in v.as_array_mut().unwrap() {
+            n.as_object_mut().unwrap().remove("runs");
+        }
+        v
+    };
+    assert_eq!(without_runs(&gap["noise"]), without_runs(&d["gap"]["noise"]));
+    for ch in gap["channels"].as_array().unwrap() {
+        let name = &ch["channel"];
+        let diag = d["gap"]["noise"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|n| &n["channel"] == name)
+            .unwrap();
+        assert_eq!(ch["noise_floor"], diag["noise_floor"], "{name}");
+        assert_eq!(ch["noise_source"], "the channel's trusted uncertainty");
+    }
+    // The smooth sideslip is no longer trusted to its own 1e-6 scatter.
+    assert_eq!(gap["noise"][1]["source"], "estimated");
+}

@@ -3,7 +3,7 @@
 //! `simulate` prints too.
 
 use crate::error::{Error, ParamError};
-use crate::io::{read_run_reading, AngleColumn};
+use crate::io::{read_run_reading, AngleColumn, DeclaredBy};
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
 use crate::metrics::{MetricSettings, StepMetrics};
@@ -69,7 +69,7 @@ pub fn run_with_degrees(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let (run, unread_columns) = read_run_reading(path, degrees, &METRIC_CHANNELS)?;
+    let (run, unread_columns) = read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
     let mut m = measured_step_metrics(run, min_speed, settings)?;
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {

@@ -94,3 +94,77 @@ fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
     // The smooth sideslip is no longer trusted to its own 1e-6 scatter.
     assert_eq!(gap["noise"][1]["source"], "estimated");
 }
+
+/// `metrics` of `path` with `extra` options: success, stdout and stderr.
+fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
+    let mut args = vec!["metrics", path.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let o = run(&args);
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    (o.status.success(), said, stderr(&o))
+}
+
+/// `--degrees beta` on a file whose sideslip column is `beta_deg` converted
+/// nothing and measured without a sideslip, without a word; so did a
+/// replay's and a campaign's `degrees`.
+#[test]
+fn a_degrees_column_the_file_does_not_have_is_refused_with_its_columns() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("run.csv");
+    fs::write(&p, estimator_run().replacen("beta", "beta_deg", 1)).unwrap();
+    let (ok, _, e) = metrics(&p, &["--degrees", "beta"]);
+    assert!(!ok);
+    assert!(
+        e.contains("run.csv:1:1: `--degrees` to `metrics` names `beta`, a column this file does not have (its columns: t, speed, steer, yaw_rate, beta_deg); did you mean `beta_deg`? Rename the column to `beta`"),
+        "{e}"
+    );
+    // A replay's [manoeuvre] degrees.
+    let sc = format!(
+        "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\ndegrees = [\"roll\"]\n"
+    );
+    fs::write(dir.path().join("scenario.toml"), sc).unwrap();
+    linear_tyre(dir.path());
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains("run.csv:1:1: `degrees` under [manoeuvre] names `roll`, a column this file does not have"),
+        "{e}"
+    );
+}
+
+/// A campaign's `[runs] degrees` naming a column one of its files lacks
+/// (a roll sensor on some runs) is said; naming one no file has, refused.
+#[test]
+fn a_campaigns_degrees_column_is_said_where_a_file_lacks_it_and_refused_where_all_do() {
+    let with_roll = estimator_run()
+        .lines()
+        .enumerate()
+        .map(|(i, l)| match i {
+            0 => format!("{l},roll\n"),
+            _ => format!("{l},1.5\n"),
+        })
+        .collect::<String>();
+    let campaign = |degrees: &str| {
+        let dir = scratch(&[(
+            "vehicle.toml",
+            &format!("{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[runs]\ndegrees = [{degrees}]\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"),
+        )]);
+        linear_tyre(dir.path());
+        fs::create_dir(dir.path().join("runs")).unwrap();
+        fs::write(dir.path().join("runs/a.csv"), &with_roll).unwrap();
+        fs::write(dir.path().join("runs/b.csv"), estimator_run()).unwrap();
+        dir
+    };
+    let dir = campaign("\"roll\"");
+    let (printed, _) = diagnose(dir.path());
+    assert!(
+        printed.contains("`degrees` under [runs] names `roll`, a column 1 of 2 files do not have:")
+            && printed.contains("b.csv"),
+        "{printed}"
+    );
+    let dir = campaign("\"roll\", \"bank\"");
+    let e = fails_cleanly("diagnose", dir.path(), dir.path());
+    assert!(
+        e.contains("a.csv:1:1: `degrees` under [runs] names `bank`, a column this file does not have"),
+        "{e}"
+    );
+}

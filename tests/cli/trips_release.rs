@@ -35,7 +35,9 @@ fn estimator_run() -> String {
 fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
     let dir = scratch(&[(
         "vehicle.toml",
-        &format!("{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"),
+        &format!(
+            "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+        ),
     )]);
     linear_tyre(dir.path());
     fs::create_dir(dir.path().join("runs")).unwrap();
@@ -79,7 +81,10 @@ fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
         }
         v
     };
-    assert_eq!(without_runs(&gap["noise"]), without_runs(&d["gap"]["noise"]));
+    assert_eq!(
+        without_runs(&gap["noise"]),
+        without_runs(&d["gap"]["noise"])
+    );
     for ch in gap["channels"].as_array().unwrap() {
         let name = &ch["channel"];
         let diag = d["gap"]["noise"]
@@ -164,7 +169,68 @@ fn a_campaigns_degrees_column_is_said_where_a_file_lacks_it_and_refused_where_al
     let dir = campaign("\"roll\", \"bank\"");
     let e = fails_cleanly("diagnose", dir.path(), dir.path());
     assert!(
-        e.contains("a.csv:1:1: `degrees` under [runs] names `bank`, a column this file does not have"),
+        e.contains(
+            "a.csv:1:1: `degrees` under [runs] names `bank`, a column this file does not have"
+        ),
         "{e}"
     );
+}
+
+/// The significant digits of a written number (`193.849121` has 9).
+fn digits(cell: &str) -> usize {
+    let mantissa = cell.split(['e', 'E']).next().unwrap();
+    let d: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let d = d.trim_start_matches('0');
+    // Trailing zeros of an integer (`4000`) are its size, not digits.
+    let d = if mantissa.contains('.') {
+        d
+    } else {
+        d.trim_end_matches('0')
+    };
+    d.len()
+}
+
+/// `simulate` wrote its history with 17 significant digits
+/// (`193.84912128812175`), `identify` its `[fitted_ranges]` so too, and
+/// `metrics` a noise-free run's yaw-rate noise as `0.00 %`: each with the
+/// digits it carries now.
+#[test]
+fn results_are_written_with_the_digits_they_carry() {
+    let dir = tempfile::tempdir().unwrap();
+    let sim = dir.path().join("sim");
+    let o = run(&[
+        "simulate",
+        "scenarios/sedan_step.toml",
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let history = fs::read_to_string(sim.join("history.csv")).unwrap();
+    let most = history
+        .lines()
+        .skip(1)
+        .flat_map(|l| l.split(','))
+        .map(digits)
+        .max()
+        .unwrap();
+    assert_eq!(most, 9, "a 1e-9 integration carries 9 digits");
+    let (ok, said, e) = metrics(&sim.join("history.csv"), &[]);
+    assert!(ok, "{e}");
+    let noise = said.lines().find(|l| l.contains("yaw-rate noise")).unwrap();
+    assert!(!noise.contains("noise 0.00 %"), "{noise}");
+    assert!(noise.contains("e-7 % of the step"), "{noise}");
+    // A rig fit's ranges, to six digits.
+    let pg = synth_campaign(dir.path(), "pg", &[]);
+    let tyre = dir.path().join("pac89.toml");
+    let o = identify_to(&pg.join("tyre_rig.csv"), "pac89", &tyre);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&tyre).unwrap();
+    let table = &text[text.find("[fitted_ranges]").unwrap()..];
+    for line in table.lines().skip(1) {
+        let inside = &line[line.find('[').unwrap() + 1..line.find(']').unwrap()];
+        for cell in inside.split(',') {
+            assert!(digits(cell.trim()) <= 6, "{line}");
+        }
+    }
+    assert!(table.contains("alpha = [-0.208567, 0.208567]"), "{table}");
 }

@@ -459,7 +459,10 @@ fn each_range_a_point_leaves_is_named_with_its_count_ends_and_first_point() {
     let (o, _) = eval(dir.path(), &tir, points, &[]);
     assert!(o.status.success(), "{}", stderr(&o));
     let (said, warned) = (stdout(&o), stderr(&o));
-    assert!(said.contains("; 4 of them outside the file's ranges"), "{said}");
+    assert!(
+        said.contains("; 4 of them outside the file's ranges"),
+        "{said}"
+    );
     for line in [
         "warning: 2 of 5 points outside FZMIN–FZMAX (0 to 18000 N): evaluated at its end; the first at line 3, fz = 20000 N",
         "warning: 2 of 5 points outside ALPMIN–ALPMAX (-0.96 to 0.96 rad, in the points' frame): evaluated at its end; the first at line 4, alpha = 1.2 rad",
@@ -467,7 +470,10 @@ fn each_range_a_point_leaves_is_named_with_its_count_ends_and_first_point() {
     ] {
         assert!(warned.contains(line), "{line}\n{warned}");
     }
-    assert!(!warned.contains("KPUMIN") && !warned.contains("PRESMIN"), "{warned}");
+    assert!(
+        !warned.contains("KPUMIN") && !warned.contains("PRESMIN"),
+        "{warned}"
+    );
 }
 
 /// The public `car235_80R17.tir`'s `PHX1 = 0.01014` gave fx = 773 N at

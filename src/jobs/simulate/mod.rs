@@ -19,7 +19,9 @@ use crate::measured::MeasuredRun;
 use crate::metrics::applicability::{applicability_with_grip, schedule_applicability, Grip};
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
-use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
+use crate::report::{
+    refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
+};
 use crate::sim::{LiftOff, Method, TimeHistory, Wheel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -224,7 +226,9 @@ impl SimulateReport {
     /// Writes the history, the metrics, the replay's gap and the figure.
     pub fn write(&self) -> Result<(), Error> {
         let files = FILES.map(|f| self.out_dir.join(f));
-        write_columns(&files[0], &self.history.columns())?;
+        // Nine significant digits: what a run integrated to a relative
+        // tolerance of 1e-9 carries (17 wrote the arithmetic's noise).
+        write_columns_to(&files[0], &self.history.columns(), Some(9))?;
         if let Some(m) = &self.metrics {
             let file = MetricsFile {
                 scenario: &self.scenario,

@@ -530,6 +530,9 @@ impl TyreEvalReport {
     /// Writes the output CSV.
     pub fn write(&self) -> Result<(), Error> {
         let cols: Vec<(&str, &[f64])> = self.columns.iter().map(|(n, v)| (*n, &v[..])).collect();
+        // Every digit, the shortest text that reads back the same `f64`:
+        // this file is what the model is checked against MFeval with, to
+        // 1e-12 of the loaded radius (rounded, it would fail that check).
         write_columns(&self.out, &cols)
     }
 

@@ -49,7 +49,9 @@ pub(crate) fn fx_at_zero_slip(
     let over: Vec<usize> = (0..fz.len())
         .filter(|&i| fz[i] > 0.0 && kappa[i] == 0.0 && share(i) > ZERO_SLIP_SHARE)
         .collect();
-    let &worst = over.iter().max_by(|&&a, &&b| share(a).total_cmp(&share(b)))?;
+    let &worst = over
+        .iter()
+        .max_by(|&&a, &&b| share(a).total_cmp(&share(b)))?;
     Some(FxAtZeroSlip {
         points: over.len(),
         largest: (
@@ -78,7 +80,8 @@ fn responsible(tyre: &Tyre, p: &Points, i: usize, fx: f64) -> Vec<(&'static str,
     let without = |name: &str| {
         let mut m = t.clone();
         m.coefficients.set(name, 0.0);
-        let f = Tyre::MagicFormula(m).evaluate_points(&fz, &kappa, &alpha, &camber, &speed, &pressure);
+        let f =
+            Tyre::MagicFormula(m).evaluate_points(&fz, &kappa, &alpha, &camber, &speed, &pressure);
         f[0].fx
     };
     let named: Vec<(&'static str, f64)> = given
@@ -100,7 +103,10 @@ impl FxAtZeroSlip {
         let cause = match self.coefficients.as_slice() {
             [] => "the model's offsets give it".to_string(),
             c => {
-                let each: Vec<String> = c.iter().map(|(n, v)| format!("{n} = {}", exact(*v))).collect();
+                let each: Vec<String> = c
+                    .iter()
+                    .map(|(n, v)| format!("{n} = {}", exact(*v)))
+                    .collect();
                 let verb = if c.len() == 1 { "gives" } else { "give" };
                 format!("the file's {} {verb} it", each.join(", "))
             }

@@ -290,21 +290,48 @@ impl MagicFormula {
         }
         let l = &self.limits;
         let mirror = self.side == super::TyreSide::Right;
-        let range = |keys, column, unit, lo: Option<f64>, hi: Option<f64>, negated: bool| {
-            InputRange {
+        let range =
+            |keys, column, unit, lo: Option<f64>, hi: Option<f64>, negated: bool| InputRange {
                 keys,
                 column,
                 unit,
                 lo: if negated { hi.map(|h| -h) } else { lo },
                 hi: if negated { lo.map(|l| -l) } else { hi },
-            }
-        };
+            };
         vec![
             range(["FZMIN", "FZMAX"], "fz", "N", l.fz_min, l.fz_max, false),
-            range(["KPUMIN", "KPUMAX"], "kappa", "", l.kappa_min, l.kappa_max, false),
-            range(["ALPMIN", "ALPMAX"], "alpha", "rad", l.alpha_min, l.alpha_max, !mirror),
-            range(["CAMMIN", "CAMMAX"], "camber", "rad", l.camber_min, l.camber_max, mirror),
-            range(["PRESMIN", "PRESMAX"], "pressure", "Pa", l.pressure_min, l.pressure_max, false),
+            range(
+                ["KPUMIN", "KPUMAX"],
+                "kappa",
+                "",
+                l.kappa_min,
+                l.kappa_max,
+                false,
+            ),
+            range(
+                ["ALPMIN", "ALPMAX"],
+                "alpha",
+                "rad",
+                l.alpha_min,
+                l.alpha_max,
+                !mirror,
+            ),
+            range(
+                ["CAMMIN", "CAMMAX"],
+                "camber",
+                "rad",
+                l.camber_min,
+                l.camber_max,
+                mirror,
+            ),
+            range(
+                ["PRESMIN", "PRESMAX"],
+                "pressure",
+                "Pa",
+                l.pressure_min,
+                l.pressure_max,
+                false,
+            ),
         ]
     }
 
@@ -313,13 +340,7 @@ impl MagicFormula {
     /// leaves below `FZMIN` too (the trail then takes `FZMIN`), but only
     /// above zero: a wheel off the road is no point outside a range.
     pub fn ranges_left(&self, p: &super::MfInput) -> Vec<(InputRange, f64)> {
-        let values = [
-            p.fz,
-            p.kappa,
-            p.alpha,
-            p.camber,
-            self.pressure(p.pressure),
-        ];
+        let values = [p.fz, p.kappa, p.alpha, p.camber, self.pressure(p.pressure)];
         self.input_ranges()
             .into_iter()
             .zip(values)

@@ -1,4 +1,4 @@
-//! What fresh-eyes users of the last release still tripped on (issue 41),
+//! What fresh-eyes users of the last release still tripped on,
 //! run as a user runs the tool: a replay's noise floors against
 //! `diagnose`'s, a `degrees` naming no column, the numbers' digits.
 //! Each test one finding.

@@ -106,6 +106,18 @@ pub fn decimals_or_digits(v: f64, decimals: usize, digits: usize) -> String {
     }
 }
 
+/// `v` rounded to the `digits` significant digits it carries, written as
+/// [`exact`] writes that rounded value (`193.849121`, not
+/// `193.84912128812175`): a physical result in a file meant for people,
+/// whose further digits are the arithmetic's, not the model's.
+pub fn carried(v: f64, digits: usize) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return exact(v);
+    }
+    let r: f64 = format!("{v:.*e}", digits.max(1) - 1).parse().unwrap_or(v);
+    exact(r)
+}
+
 /// `v` as a written file holds it: the shortest text that reads back as
 /// the same `f64`, in plain decimals from 1e-4 to below 1e9 (`4000`,
 /// `0.3`, `-0.00123`) and with an exponent beyond (`1.5e-7`, `2.5e12`),
@@ -314,6 +326,10 @@ mod tests {
         assert_eq!(readable(0.000275123, 3), "0.000275");
         assert_eq!(readable(-0.0, 3), "0");
         assert_eq!(rounded(49.999999, 3), "50");
+        assert_eq!(carried(193.84912128812175, 9), "193.849121");
+        assert_eq!(carried(-0.2085668456133224, 9), "-0.208566846");
+        assert_eq!(carried(4000.0, 9), "4000");
+        assert_eq!(carried(1.23456789012e-7, 9), "1.23456789e-7");
         assert_eq!(rounded(0.0025, 3), "0.0025");
         assert_eq!(rounded(1.0 / 3.0, 3), "0.333");
         assert_eq!(rounded_down(0.5 / 30.0, 3), "0.0166");

@@ -8,7 +8,8 @@
 //!    `base.rs`.
 //! 2. Gap: every run replayed with its own steer and speed
 //!    ([`crate::diagnose::report::gap`], `summary.rs`); noise floors pooled over runs
-//!    (median).
+//!    (median: [`crate::diagnose::report::trust`], the rule a `simulate`
+//!    replay uses too).
 //! 3. Candidates: every effect of the library fitted on all runs (PSO +
 //!    Levenberg–Marquardt) for its parameters and BIC, then scored by
 //!    K-fold cross-validation (leave-one-run-out up to eight runs; run i in
@@ -56,9 +57,9 @@ use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
-use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::model::{Augmented, Observed};
-use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table, run_scatter};
+use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
+use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::baseline;
 use crate::diagnose::verdict::conclude::verdict;
@@ -73,77 +74,12 @@ use crate::measured::road::{RoadGeometry, SensorOffsets};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    if v.is_empty() {
-        f64::NAN
-    } else {
-        v[v.len() / 2]
-    }
-}
-
 /// Work units reported to the progress counter for a campaign.
 pub fn work_units(c: &Campaign) -> usize {
     let folds = c.runs.len().min(MAX_FOLDS);
     let singles = c.effects.len() * (1 + folds);
     let combos = c.settings.max_effects.saturating_sub(1) * c.effects.len() * (1 + folds);
     1 + singles + combos
-}
-
-/// Each channel's RMS signal over every sample of every run (0 where no
-/// run measures it).
-fn signal_rms(c: &Campaign) -> [f64; 3] {
-    Channel::ALL.map(|ch| {
-        let (mut s, mut n) = (0.0, 0usize);
-        for r in &c.runs {
-            if let Some(v) = ch.of(r) {
-                s += v.iter().map(|x| x * x).sum::<f64>();
-                n += v.len();
-            }
-        }
-        if n == 0 {
-            0.0
-        } else {
-            (s / n as f64).sqrt()
-        }
-    })
-}
-
-/// How far each channel is trusted, before any model: the median over
-/// runs of its high-frequency scatter, the user's stated uncertainty and
-/// the sensor floors ([`channel_scale`]). The table, the fits' scales and
-/// the noise floors by channel index (a channel no run measures keeps
-/// scale 1 and floor 0: it has no residuals).
-fn channel_trust(c: &Campaign) -> (Vec<ChannelNoise>, [f64; 3], [f64; 3]) {
-    let per_run: Vec<[Option<(f64, f64)>; 3]> = c.runs.par_iter().map(run_scatter).collect();
-    let rms = signal_rms(c);
-    let mut scales = [1.0; 3];
-    let mut floors = [0.0; 3];
-    let noise = Channel::ALL
-        .into_iter()
-        .filter_map(|ch| {
-            let scatter: Vec<f64> = per_run
-                .iter()
-                .filter_map(|r| r[ch.index()].map(|x| x.0))
-                .collect();
-            (!scatter.is_empty()).then(|| {
-                let runs = scatter.len();
-                let trust = channel_scale(ch, &c.uncertainty, median(scatter), rms[ch.index()]);
-                scales[ch.index()] = trust.scale;
-                floors[ch.index()] = trust.uncertainty;
-                ChannelNoise {
-                    channel: ch,
-                    unit: ch.unit(),
-                    noise_floor: trust.uncertainty,
-                    scale: trust.scale,
-                    source: trust.source,
-                    scatter: trust.scatter,
-                    runs,
-                }
-            })
-        })
-        .collect();
-    (noise, scales, floors)
 }
 
 /// The yaw-rate and `ay` offsets of `calibrated` (0 where none was
@@ -412,7 +348,11 @@ fn run(
     let timing = Some(recorder);
     let set = &c.settings;
     let (runs, folds, pso) = prepare(c);
-    let (noise, scales, floors) = channel_trust(c);
+    let Trust {
+        noise,
+        scales,
+        floors,
+    } = channel_trust(&c.runs, &c.uncertainty);
     let (bases, tyre_source, rig_grouping) = base_models(c, &runs, &folds, scales, timing)?;
     if let Some(p) = progress {
         p.fetch_add(1, Ordering::Relaxed);

@@ -405,6 +405,19 @@ pub enum InputProblem {
         /// shortest a car has), m.
         assumed_wheelbase: Option<f64>,
     },
+    /// A column declared in degrees that the file does not have: the
+    /// declaration would otherwise be dropped without a word (a misspelt
+    /// header, a declaration meant for another file).
+    #[error("{by} names `{column}`, a column this file does not have (its columns: {}){}", header.join(", "), crate::format::nearest_name(column, &header.iter().map(String::as_str).collect::<Vec<_>>()).map_or(String::new(), |k| format!("; did you mean `{k}`? Rename the column to `{column}`")))]
+    DegreesColumnAbsent {
+        /// The column declared.
+        column: &'static str,
+        /// Where it was declared (`--degrees` to `metrics`, `degrees`
+        /// under `[runs]` or `[manoeuvre]`).
+        by: &'static str,
+        /// The header's columns.
+        header: Vec<String>,
+    },
     /// A column in another unit than FORMATS.md's.
     #[error(transparent)]
     UnitSlip(#[from] UnitSlip),
@@ -487,6 +500,7 @@ impl InputProblem {
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::YawAboveSteer { .. } => "YawAboveSteer",
+            InputProblem::DegreesColumnAbsent { .. } => "DegreesColumnAbsent",
             InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",

@@ -4,7 +4,7 @@
 //! the value, or a direction of the fit the data leave undetermined).
 
 use super::{Channel, ParameterReport};
-use crate::format::{exact, readable};
+use crate::format::{readable, rounded};
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
 
@@ -85,7 +85,9 @@ fn warning(
     traded: &[String],
 ) -> Option<String> {
     let beyond = v < lo || v > hi;
-    let bounds = format!("{} to {}", exact(lo), exact(hi));
+    // Six significant digits: a box of `c ± (5|c| + 1)` printed exactly
+    // read `-1.0160799999999999`.
+    let bounds = format!("{} to {}", rounded(lo, 6), rounded(hi, 6));
     let w = hi - lo;
     // On its bound, the value is where the box stopped the fit (the polish
     // stays in the box): said first, before its standard error, which a
@@ -176,6 +178,14 @@ mod tests {
         // On its bound, that is said whatever its standard error.
         let w = warning("a0", 1.0, (1.0, 2.0), None, &traded).unwrap();
         assert!(w.starts_with("on its search bound (1 to 2)"), "{w}");
+        // A PAC89 box of c ± (5|c| + 1) about c = 0.00402 printed
+        // `-1.0160799999999999`: six digits.
+        let (lo, hi) = (0.00402 - 5.0 * 0.00402 - 1.0, 0.00402 + 5.0 * 0.00402 + 1.0);
+        let w = warning("b6", lo, (lo, hi), None, &[]).unwrap();
+        assert!(
+            w.starts_with("on its search bound (-1.01608 to 1.02412)"),
+            "{w}"
+        );
         // A well-determined value inside the box carries no warning.
         assert_eq!(warning("a3", 894.7, (-2e3, 2e3), Some(11.7), &[]), None);
     }

@@ -17,6 +17,8 @@ pub struct Columns {
     /// Column name → its 1-based position in the header, for errors found
     /// after parsing (a negative load, time running backwards).
     pub positions: BTreeMap<String, usize>,
+    /// The 1-based line of the header, for what a header lacks.
+    pub header_line: usize,
     /// The header's names, in the file's order: what a reader left unread
     /// is named from it.
     pub header: Vec<String>,
@@ -200,6 +202,7 @@ pub fn read_columns(
     }
     let mut out = Columns {
         header: headers.iter().map(str::to_string).collect(),
+        header_line: line_at(headers.position()).max(1),
         ..Columns::default()
     };
     for (i, name) in &wanted {

@@ -21,6 +21,40 @@ use serde::{Deserialize, Serialize};
 /// The table's name in a TOML tyre file.
 pub const TABLE: &str = "fitted_ranges";
 
+/// The significant digits a written range keeps: a rig's load or slip
+/// angle is not measured to more (17 wrote `0.2085668456133224` rad).
+pub const RANGE_DIGITS: usize = 6;
+
+/// `[lo, hi]` rounded outward to `digits` significant digits: the range
+/// written still holds every point of the data it was read from.
+fn outward([lo, hi]: [f64; 2], digits: usize) -> [f64; 2] {
+    let round = |v: f64, up: bool| {
+        if v == 0.0 || !v.is_finite() {
+            return v;
+        }
+        // By a power of ten that is exact (10^k, k ≥ 0) both ways, so the
+        // result is the double nearest its decimal text.
+        let e = digits as i32 - 1 - v.abs().log10().floor() as i32;
+        let p = 10f64.powi(e.abs());
+        let (x, back): (f64, &dyn Fn(f64) -> f64) = if e >= 0 {
+            (v * p, &|r| r / p)
+        } else {
+            (v / p, &|r| r * p)
+        };
+        // A value already at `digits` digits (2500) stays as it is.
+        let snapped = x.round();
+        let r = if (x - snapped).abs() <= 1e-9 * x.abs() {
+            snapped
+        } else if up {
+            x.ceil()
+        } else {
+            x.floor()
+        };
+        back(r)
+    };
+    [round(lo, false), round(hi, true)]
+}
+
 /// The ranges of the data a tyre was fitted to, each `[low, high]`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -40,6 +74,20 @@ pub struct FittedRanges {
     /// Inflation pressure, Pa.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure: Option<[f64; 2]>,
+}
+
+impl FittedRanges {
+    /// Every range rounded outward to `digits` significant digits.
+    pub fn rounded_outward(&self, digits: usize) -> Self {
+        let o = |r: Option<[f64; 2]>| r.map(|r| outward(r, digits));
+        FittedRanges {
+            fz: o(self.fz),
+            alpha: o(self.alpha),
+            kappa: o(self.kappa),
+            camber: o(self.camber),
+            pressure: o(self.pressure),
+        }
+    }
 }
 
 /// One point's inputs, as the ranges read them.
@@ -177,7 +225,7 @@ fn table_name(line: &str) -> Option<&str> {
 
 /// The table as `identify` writes it at the end of a TOML tyre file.
 pub(crate) fn table_text(r: &FittedRanges) -> String {
-    let body = toml::to_string(r).unwrap_or_default();
+    let body = toml::to_string(&r.rounded_outward(RANGE_DIGITS)).unwrap_or_default();
     format!("\n# The ranges of the rig data fitted (SI units, rad): `tyre-eval` counts the points beyond them.\n[{TABLE}]\n{body}")
 }
 
@@ -191,6 +239,24 @@ mod tests {
             path: PathBuf::from("t.toml"),
             text: text.into(),
         }
+    }
+
+    #[test]
+    fn a_written_range_keeps_six_digits_and_still_holds_its_data() {
+        assert_eq!(
+            outward([-0.2085668456133224, 0.2085668456133224], 6),
+            [-0.208567, 0.208567]
+        );
+        assert_eq!(outward([2500.0, 7000.0], 6), [2500.0, 7000.0]);
+        assert_eq!(
+            outward([405.29999999999995, 1234567.8], 6),
+            [405.3, 1234570.0]
+        );
+        let r = FittedRanges {
+            alpha: Some([-0.2085668456133224, 0.2085668456133224]),
+            ..FittedRanges::default()
+        };
+        assert!(table_text(&r).contains("alpha = [-0.208567, 0.208567]"));
     }
 
     #[test]

@@ -57,18 +57,46 @@ impl AngleColumn {
     }
 }
 
+/// Where a run's angle columns were declared in degrees: named when a
+/// declared column is not in the file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DeclaredBy {
+    /// `metrics --degrees COLUMN`.
+    MetricsOption,
+    /// A campaign's `[runs] degrees`.
+    CampaignRuns,
+    /// A replay scenario's `[manoeuvre] degrees`.
+    ReplayManoeuvre,
+}
+
+impl DeclaredBy {
+    /// The option or key, as a message names it.
+    pub fn words(self) -> &'static str {
+        match self {
+            DeclaredBy::MetricsOption => "`--degrees` to `metrics`",
+            DeclaredBy::CampaignRuns => "`degrees` under [runs]",
+            DeclaredBy::ReplayManoeuvre => "`degrees` under [manoeuvre]",
+        }
+    }
+}
+
 /// Reads and checks a measured run.
 pub fn read_run(path: &Path) -> Result<MeasuredRun, InputError> {
-    read_run_with(path, &[])
+    read_run_with(path, &[], DeclaredBy::CampaignRuns)
 }
 
 /// The optional channels of a run file, in `FORMATS.md`'s order.
 pub const OPTIONAL_CHANNELS: [&str; 5] = ["ay", "beta", "roll", "bank", "ax"];
 
 /// Reads and checks a measured run whose columns `degrees` are in degrees
-/// (deg/s for the yaw rate), converted to radians before any check.
-pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun, InputError> {
-    read_run_reading(path, degrees, &OPTIONAL_CHANNELS).map(|(run, _)| run)
+/// (deg/s for the yaw rate), converted to radians before any check; a
+/// declared column the file does not have is refused, naming `by`.
+pub fn read_run_with(
+    path: &Path,
+    degrees: &[AngleColumn],
+    by: DeclaredBy,
+) -> Result<MeasuredRun, InputError> {
+    read_run_reading(path, (degrees, by), &OPTIONAL_CHANNELS).map(|(run, _)| run)
 }
 
 /// [`read_run_with`] reading of the optional channels only `optional` (a
@@ -76,7 +104,7 @@ pub fn read_run_with(path: &Path, degrees: &[AngleColumn]) -> Result<MeasuredRun
 /// are returned by name where the file has them, for the job to say.
 pub fn read_run_reading(
     path: &Path,
-    degrees: &[AngleColumn],
+    (degrees, by): (&[AngleColumn], DeclaredBy),
     optional: &[&str],
 ) -> Result<(MeasuredRun, Vec<&'static str>), InputError> {
     let mut c = read_columns(path, &["t", "speed", "steer", "yaw_rate"], optional)?;
@@ -86,6 +114,23 @@ pub fn read_run_reading(
         if !declared.contains(a) {
             declared.push(*a);
         }
+    }
+    // A declaration of a column the file does not have converts nothing:
+    // a misspelt header would then be read as no channel at all.
+    if let Some(a) = declared
+        .iter()
+        .find(|a| !c.header.iter().any(|h| h == a.name()))
+    {
+        return Err(InputError::problem_at(
+            path,
+            c.header_line,
+            1,
+            InputProblem::DegreesColumnAbsent {
+                column: a.name(),
+                by: by.words(),
+                header: c.header.clone(),
+            },
+        ));
     }
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()
@@ -176,8 +221,16 @@ mod tests {
         }
         std::fs::write(&path, s).unwrap();
         assert!(read_run(&path).is_err());
-        let run = read_run_with(&path, &[AngleColumn::Roll]).unwrap();
+        let run = read_run_with(&path, &[AngleColumn::Roll], DeclaredBy::CampaignRuns).unwrap();
         let roll = run.roll.unwrap();
         assert!((roll[7] - 2f64.to_radians()).abs() < 1e-15, "{}", roll[7]);
+        // A declared column the file lacks is said, not dropped.
+        let e = read_run_with(&path, &[AngleColumn::Bank], DeclaredBy::ReplayManoeuvre)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.ends_with("r.csv:1:1: `degrees` under [manoeuvre] names `bank`, a column this file does not have (its columns: t, speed, steer, yaw_rate, roll)"),
+            "{e}"
+        );
     }
 }

@@ -3,7 +3,7 @@
 //! `simulate` prints too.
 
 use crate::error::{Error, ParamError};
-use crate::io::{read_run_reading, AngleColumn};
+use crate::io::{read_run_reading, AngleColumn, DeclaredBy};
 use crate::measured::clean::CleaningReport;
 use crate::metrics::measured::measured_step_metrics;
 use crate::metrics::{MetricSettings, StepMetrics};
@@ -69,7 +69,8 @@ pub fn run_with_degrees(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let (run, unread_columns) = read_run_reading(path, degrees, &METRIC_CHANNELS)?;
+    let (run, unread_columns) =
+        read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
     let mut m = measured_step_metrics(run, min_speed, settings)?;
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
@@ -185,8 +186,10 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     ];
     if let Some(f) = m.filter_hz {
         out.push(format!(
-            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {:.2} % of the step",
-            100.0 * m.yaw_rate_noise
+            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {} % of the step",
+            // Two decimals, or two significant digits below 0.1 %: a
+            // noise-free run's 0.0042 % read `0.00 %`.
+            crate::format::decimals_or_digits(100.0 * m.yaw_rate_noise, 2, 2)
         ));
     }
     if m.yaw_rate_peak_time.is_none() {

@@ -154,6 +154,17 @@ where
 
 /// Writes named columns of equal length as CSV with a header line.
 pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Error> {
+    write_columns_to(path, columns, None)
+}
+
+/// [`write_columns`] with each value rounded to `digits` significant
+/// digits ([`crate::format::carried`]; `None`: the shortest text that
+/// reads back the same `f64`, where exactness matters).
+pub fn write_columns_to(
+    path: &Path,
+    columns: &[(&str, &[f64])],
+    digits: Option<usize>,
+) -> Result<(), Error> {
     let n = columns.first().map_or(0, |c| c.1.len());
     if columns.iter().any(|c| c.1.len() != n) {
         return Err(OutputError::UnequalColumns {
@@ -162,9 +173,13 @@ pub fn write_columns(path: &Path, columns: &[(&str, &[f64])]) -> Result<(), Erro
         .into());
     }
     let header: Vec<&str> = columns.iter().map(|c| c.0).collect();
-    // The shortest text that reads back the same: no value of hundreds of
-    // digits (1e-300), no `-0`.
-    let rows = (0..n).map(|i| columns.iter().map(move |c| crate::format::exact(c.1[i])));
+    // The shortest text that reads back the same (no value of hundreds of
+    // digits, 1e-300, no `-0`), or the digits the values carry.
+    let text = move |v: f64| match digits {
+        Some(d) => crate::format::carried(v, d),
+        None => crate::format::exact(v),
+    };
+    let rows = (0..n).map(move |i| columns.iter().map(move |c| text(c.1[i])));
     write_csv(path, &header, rows)
 }
 

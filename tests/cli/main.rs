@@ -271,6 +271,7 @@ mod trips_inputs;
 mod trips_limits;
 mod trips_outputs;
 mod trips_ranges;
+mod trips_release;
 mod trips_run_units;
 mod trips_simulate;
 mod trips_units;

@@ -73,12 +73,14 @@ fn metrics_of_a_written_history_match_the_simulation() {
         serde_json::from_slice(&o.stdout).unwrap()
     };
     let b: serde_json::Value = read_json(&out.path().join("metrics.json"));
-    // Unfiltered, as a simulated record is measured: the same numbers.
+    // Unfiltered, as a simulated record is measured: the same numbers, to
+    // the nine significant digits the rows are written with (the
+    // overshoot, a difference over a sixth of its terms, to about 1e-8).
     let a = metrics(&["--filter-hz", "0"]);
     for key in ["yaw_rate_response_time", "yaw_rate_overshoot", "er", "tb"] {
         let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
         assert!(
-            (x - y).abs() <= 1e-9 * y.abs().max(1.0),
+            (x - y).abs() <= 1e-8 * y.abs().max(1.0),
             "{key}: {x} vs {y}"
         );
     }

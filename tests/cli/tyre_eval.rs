@@ -445,3 +445,57 @@ fn a_cornering_stiffness_the_pressure_turns_negative_is_counted_at_the_points() 
     let fy = column(&written, "fy");
     assert!(fy[0] > 0.0 && fy[1] < 0.0, "{fy:?}");
 }
+
+/// `tyre-eval` said "4 of them outside the file's ranges of load, slip,
+/// camber or pressure" and left the user to find which range each point
+/// left: each range is now named with its count, its ends in the points'
+/// frame (the sample file is a right-side tyre: its camber range mirrored)
+/// and its first point's line and value.
+#[test]
+fn each_range_a_point_leaves_is_named_with_its_count_ends_and_first_point() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = mf61(dir.path(), &[]);
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n20000,0,0.05,0,20\n4000,0,1.2,0,20\n4000,0,-1.5,0.1,20\n25000,0,0,0,20\n";
+    let (o, _) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (said, warned) = (stdout(&o), stderr(&o));
+    assert!(
+        said.contains("; 4 of them outside the file's ranges"),
+        "{said}"
+    );
+    for line in [
+        "warning: 2 of 5 points outside FZMIN–FZMAX (0 to 18000 N): evaluated at its end; the first at line 3, fz = 20000 N",
+        "warning: 2 of 5 points outside ALPMIN–ALPMAX (-0.96 to 0.96 rad, in the points' frame): evaluated at its end; the first at line 4, alpha = 1.2 rad",
+        "warning: 1 of 5 points outside CAMMIN–CAMMAX (-0.105 to 0.0873 rad, in the points' frame): evaluated at its end; the first at line 5, camber = 0.1 rad",
+    ] {
+        assert!(warned.contains(line), "{line}\n{warned}");
+    }
+    assert!(
+        !warned.contains("KPUMIN") && !warned.contains("PRESMIN"),
+        "{warned}"
+    );
+}
+
+/// The public `car235_80R17.tir`'s `PHX1 = 0.01014` gave fx = 773 N at
+/// kappa = 0 and 4000 N, a car pushed at 0.19 g by tyres that do not slip,
+/// without a word: said, counted, with the coefficient that makes it.
+#[test]
+fn a_large_fx_at_zero_slip_is_said_with_the_shift_that_makes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0,0,20\n6000,0,0.05,0,20\n4000,0.05,0,0,20\n";
+    // The sample file's own shifts give about 1 % at FNOMIN: no word.
+    let (o, _) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("kappa = 0"), "{}", stderr(&o));
+    let tir = mf61(dir.path(), &[("PHX1", "0.01014")]);
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let fx = column(&written, "fx");
+    assert!(fx[0].abs() > 0.05 * 4000.0, "{fx:?}");
+    let e = stderr(&o);
+    assert!(
+        e.contains("warning: 2 of 3 points at kappa = 0 have |fx| above 5 % of fz (the largest ")
+            && e.contains("where a free-rolling tyre gives its rolling resistance, about 1 %: the file's PHX1 = 0.01014 gives it; check them"),
+        "{e}"
+    );
+}

@@ -12,6 +12,7 @@ pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
 pub(crate) mod summary;
+pub(crate) mod trust;
 mod values;
 pub mod words;
 

@@ -8,7 +8,7 @@
 use crate::error::{InputError, InputProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
-use crate::io::{read_run_with, AngleColumn};
+use crate::io::{read_run_with, AngleColumn, DeclaredBy};
 use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
     clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
@@ -162,8 +162,12 @@ pub(super) fn read_runs(
     let mut notes = Vec::new();
     let clean = CleanSettings::diagnosis(min_speed);
     let mut cleaning = CleaningReport::new(min_speed);
+    // A declared column some files lack (a sideslip sensor on some runs)
+    // is converted where it is and said where it is not; one no file has
+    // is refused, as `metrics` and a replay refuse it.
+    let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
     for p in files {
-        let run = read_run_with(p, degrees)?;
+        let run = read_declared(p, degrees, &mut absent)?;
         check_length(&run)?;
         check_live_channels(&run)?;
         let declared = degrees.contains(&AngleColumn::Steer);
@@ -212,7 +216,51 @@ pub(super) fn read_runs(
             }
         }
     }
+    for (column, lacking, first) in absent {
+        if lacking.len() == files.len() {
+            return Err(first);
+        }
+        notes.push(format!(
+            "`degrees` under [runs] names `{}`, a column {} of {} files do not have: {}",
+            column.name(),
+            lacking.len(),
+            files.len(),
+            lacking.join(", ")
+        ));
+    }
     Ok((runs, notes, cleaning, calibrate(&raw)))
+}
+
+/// The run `p` with its columns `degrees` converted, those it lacks left
+/// out and recorded in `absent` (the column, the files lacking it, the
+/// first file's refusal).
+fn read_declared(
+    p: &Path,
+    degrees: &[AngleColumn],
+    absent: &mut Vec<(AngleColumn, Vec<String>, InputError)>,
+) -> Result<MeasuredRun, InputError> {
+    let mut declared = degrees.to_vec();
+    loop {
+        match read_run_with(p, &declared, DeclaredBy::CampaignRuns) {
+            Err(e) => {
+                let InputError::Invalid { problem, .. } = &e else {
+                    return Err(e);
+                };
+                let InputProblem::DegreesColumnAbsent { column, .. } = **problem else {
+                    return Err(e);
+                };
+                let Some(a) = AngleColumn::from_name(column) else {
+                    return Err(e);
+                };
+                declared.retain(|d| *d != a);
+                match absent.iter_mut().find(|x| x.0 == a) {
+                    Some(x) => x.1.push(p.display().to_string()),
+                    None => absent.push((a, vec![p.display().to_string()], e)),
+                }
+            }
+            ok => return ok,
+        }
+    }
 }
 
 /// The steer judged against the yaw rate it gives where it is held

@@ -5,7 +5,7 @@
 
 use crate::error::{InputError, InputProblem, ParamError};
 use crate::io::toml_file::{param_error, TomlSource};
-use crate::io::{read_run_with, AngleColumn, MeasuredRun};
+use crate::io::{read_run_with, AngleColumn, DeclaredBy, MeasuredRun};
 use crate::manoeuvre::Replay;
 use crate::measured::clean::{clean_single, CleanSettings, CleaningReport};
 use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
@@ -58,7 +58,7 @@ pub(super) fn resolve(
     let settings = CleanSettings::single(r.min_speed);
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
-    let read = read_run_with(run_path, &r.degrees)?;
+    let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)?;
     if let Some((m, n)) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
         if let Some(p) = steer_problem(m, n, Wheelbase::Known(wheelbase)) {
             return Err(InputError::problem(run_path, p));

@@ -7,7 +7,10 @@
 mod checks;
 
 use super::metrics::{metric_lines, UNITS};
+use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
+use crate::diagnose::report::trust::channel_trust;
+use crate::diagnose::report::{words, ChannelNoise};
 use crate::error::Error;
 use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
@@ -18,7 +21,9 @@ use crate::metrics::applicability::{
 };
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
-use crate::report::{refuse_overwrites, write_columns, write_json, write_json_sorted, OutputLock};
+use crate::report::{
+    refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
+};
 use crate::sim::{LiftOff, Method, TimeHistory, Wheel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -30,6 +35,9 @@ pub struct ReplayGap {
     pub run: String,
     /// Per channel.
     pub channels: Vec<ChannelGap>,
+    /// How far each channel is trusted, its noise floor and where it comes
+    /// from, by `diagnose`'s rule on this one run.
+    pub noise: Vec<ChannelNoise>,
     /// How the run was cleaned.
     pub cleaning: Option<CleaningReport>,
 }
@@ -147,12 +155,17 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     }
     let said = checks::checks(&sc, h);
     warnings.extend(said.warnings);
-    let replay = sc.measured.as_ref().map(|run| ReplayGap {
-        run: run.path.display().to_string(),
-        // A lone replay has no trusted uncertainty: each channel against
-        // its own scatter.
-        channels: run_gap(run, h, &[0.0; 3]),
-        cleaning: sc.cleaning.clone(),
+    let replay = sc.measured.as_ref().map(|run| {
+        // The floors `diagnose` would trust this run's channels to, by its
+        // own rule: a run's scatter alone trusts a state estimator's smooth
+        // output, or a quiet gyro, beyond any sensor of its type.
+        let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
+        ReplayGap {
+            run: run.path.display().to_string(),
+            channels: run_gap(run, h, &trust.floors),
+            noise: trust.noise,
+            cleaning: sc.cleaning.clone(),
+        }
     });
     Ok(SimulateReport {
         integration,
@@ -202,6 +215,7 @@ impl SimulateReport {
         if let Some(r) = &self.replay {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
+            out.push(format!("  {}", words::channels_trusted(&r.noise)));
             out.extend(
                 r.channels
                     .iter()
@@ -214,7 +228,9 @@ impl SimulateReport {
     /// Writes the history, the metrics, the replay's gap and the figure.
     pub fn write(&self) -> Result<(), Error> {
         let files = FILES.map(|f| self.out_dir.join(f));
-        write_columns(&files[0], &self.history.columns())?;
+        // Nine significant digits: what a run integrated to a relative
+        // tolerance of 1e-9 carries (17 wrote the arithmetic's noise).
+        write_columns_to(&files[0], &self.history.columns(), Some(9))?;
         if let Some(m) = &self.metrics {
             let file = MetricsFile {
                 scenario: &self.scenario,

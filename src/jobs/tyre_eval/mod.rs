@@ -42,9 +42,11 @@
 mod checks;
 mod friction;
 mod pressure;
+mod ranges;
 mod standstill;
 mod stiffness;
 mod unread;
+mod zero_slip;
 
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
@@ -165,6 +167,8 @@ pub struct TyreEvalReport {
     /// pressure, evaluated at the ranges' ends (limit checks on; 0
     /// otherwise).
     pub clamped: usize,
+    /// The ranges those points leave, each with its count and first point.
+    pub ranges_left: Vec<ranges::RangeLeft>,
     /// Points at zero or negative load: the wheel off the road, no force
     /// (and the loaded radius `rl`, where written, the free radius).
     pub off_road: usize,
@@ -177,6 +181,9 @@ pub struct TyreEvalReport {
     /// Points whose `√(fx² + fy²)` exceeds the tyre's `μ·Fz` by more than
     /// [`FRICTION_TOLERANCE`].
     pub beyond_friction: Option<BeyondFriction>,
+    /// Points at zero slip ratio whose `|fx|` exceeds a free-rolling
+    /// tyre's by far ([`zero_slip::ZERO_SLIP_SHARE`] of `fz`).
+    pub fx_at_zero_slip: Option<zero_slip::FxAtZeroSlip>,
     /// Points at combined slip of a model that does not couple `fx` and
     /// `fy` (each its pure-slip force).
     pub uncoupled: Option<Uncoupled>,
@@ -284,12 +291,13 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
 struct MfExtras {
     mode: Option<u32>,
     clamped: usize,
+    ranges_left: Vec<ranges::RangeLeft>,
     loaded_radius: Option<Vec<f64>>,
     not_carried: Vec<(usize, crate::tyre::mf::vertical::NotCarried)>,
 }
 
 /// The [`MfExtras`] of `tyre` at the points `p`.
-fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> MfExtras {
+fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfExtras {
     let Tyre::MagicFormula(t) = tyre else {
         return MfExtras::default();
     };
@@ -324,6 +332,7 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points) -> MfExtras {
     MfExtras {
         mode: Some(t.mode().use_mode()),
         clamped,
+        ranges_left: ranges::ranges_left(t, &inputs, lines),
         loaded_radius,
         not_carried,
     }
@@ -422,9 +431,10 @@ pub fn run(
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
     let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
-    let extras = magic_formula_extras(&tyre, &given);
+    let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
+    let extras = magic_formula_extras(&tyre, &given, &file.lines);
     refuse_not_carried(points, &file, &extras.not_carried)?;
-    let (mode, clamped) = (extras.mode, extras.clamped);
+    let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
     // Every model gives no force off the road: said for each, not only
     // where a loaded radius is written.
     let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
@@ -449,10 +459,12 @@ pub fn run(
         model: tyre.model_name(),
         mode,
         clamped,
+        ranges_left,
         off_road,
         zero_outputs,
         beyond_my_speed,
         beyond_friction,
+        fx_at_zero_slip,
         uncoupled,
         standstill_mz,
         unread,
@@ -490,6 +502,7 @@ impl TyreEvalReport {
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
+        out.extend(self.fx_at_zero_slip.iter().map(|z| z.line(self.count)));
         out.extend(
             self.uncoupled
                 .iter()
@@ -502,6 +515,7 @@ impl TyreEvalReport {
                 .map(|b| b.line(self.count, uncoupled)),
         );
         out.extend(self.standstill_mz.iter().map(|s| s.line(self.count)));
+        out.extend(self.ranges_left.iter().map(|r| r.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",
@@ -516,6 +530,9 @@ impl TyreEvalReport {
     /// Writes the output CSV.
     pub fn write(&self) -> Result<(), Error> {
         let cols: Vec<(&str, &[f64])> = self.columns.iter().map(|(n, v)| (*n, &v[..])).collect();
+        // Every digit, the shortest text that reads back the same `f64`:
+        // this file is what the model is checked against MFeval with, to
+        // 1e-12 of the loaded radius (rounded, it would fail that check).
         write_columns(&self.out, &cols)
     }
 

@@ -97,7 +97,7 @@ pub mod vertical;
 
 pub use channel::{Held, MfChannel, MfPoint};
 pub use coefficients::{MfCoefficients, MfCoefficientsOf};
-pub use mode::{MfLimits, MfMode};
+pub use mode::{InputRange, MfLimits, MfMode};
 pub use version::MfVersion;
 
 use super::{

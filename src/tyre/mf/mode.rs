@@ -274,18 +274,100 @@ impl MagicFormula {
     /// Whether the point (crate convention) lies outside the file's ranges
     /// and the limit checks are on: it is then evaluated at the limits.
     pub fn is_clamped(&self, p: &super::MfInput) -> bool {
+        !self.ranges_left(p).is_empty()
+    }
+
+    /// The ranges the limit checks hold a point's inputs to (below
+    /// `FZMIN` only the trail's load is held), in the
+    /// crate's frame (the columns of `tyre-eval`'s points), in the order
+    /// load, slip ratio, slip angle, camber, pressure; none with the checks
+    /// off. A left-side file's slip angle is the crate's negated, a right
+    /// side file's inclination (as `evaluate` mirrors them): the range is
+    /// negated and its ends swapped there.
+    pub fn input_ranges(&self) -> Vec<InputRange> {
         if !self.options.limit_checks {
-            return false;
+            return Vec::new();
         }
-        // Crate → the file's frame (as `evaluate`).
+        let l = &self.limits;
         let mirror = self.side == super::TyreSide::Right;
-        let (alpha, gamma) = if mirror {
-            (p.alpha, -p.camber)
-        } else {
-            (-p.alpha, p.camber)
-        };
-        let pressure = self.pressure(p.pressure);
-        self.limits.outside(p.fz, p.kappa, alpha, gamma, pressure)
+        let range =
+            |keys, column, unit, lo: Option<f64>, hi: Option<f64>, negated: bool| InputRange {
+                keys,
+                column,
+                unit,
+                lo: if negated { hi.map(|h| -h) } else { lo },
+                hi: if negated { lo.map(|l| -l) } else { hi },
+            };
+        vec![
+            range(["FZMIN", "FZMAX"], "fz", "N", l.fz_min, l.fz_max, false),
+            range(
+                ["KPUMIN", "KPUMAX"],
+                "kappa",
+                "",
+                l.kappa_min,
+                l.kappa_max,
+                false,
+            ),
+            range(
+                ["ALPMIN", "ALPMAX"],
+                "alpha",
+                "rad",
+                l.alpha_min,
+                l.alpha_max,
+                !mirror,
+            ),
+            range(
+                ["CAMMIN", "CAMMAX"],
+                "camber",
+                "rad",
+                l.camber_min,
+                l.camber_max,
+                mirror,
+            ),
+            range(
+                ["PRESMIN", "PRESMAX"],
+                "pressure",
+                "Pa",
+                l.pressure_min,
+                l.pressure_max,
+                false,
+            ),
+        ]
+    }
+
+    /// Each range of [`Self::input_ranges`] the point `p` leaves, with its
+    /// value there (crate frame; the pressure it is evaluated at). The load
+    /// leaves below `FZMIN` too (the trail then takes `FZMIN`), but only
+    /// above zero: a wheel off the road is no point outside a range.
+    pub fn ranges_left(&self, p: &super::MfInput) -> Vec<(InputRange, f64)> {
+        let values = [p.fz, p.kappa, p.alpha, p.camber, self.pressure(p.pressure)];
+        self.input_ranges()
+            .into_iter()
+            .zip(values)
+            .filter(|(r, x)| (r.column != "fz" || *x > 0.0) && r.leaves(*x))
+            .collect()
+    }
+}
+
+/// One of a `.tir` file's ranges in the frame of the points evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct InputRange {
+    /// The `.tir` keys of its ends (`["ALPMIN", "ALPMAX"]`).
+    pub keys: [&'static str; 2],
+    /// The input it limits, as a points file names it.
+    pub column: &'static str,
+    /// The input's unit (`""`: none).
+    pub unit: &'static str,
+    /// Lower end (`None`: not given).
+    pub lo: Option<f64>,
+    /// Upper end (`None`: not given).
+    pub hi: Option<f64>,
+}
+
+impl InputRange {
+    /// Whether `x` lies outside the range (saturated by the limit checks).
+    pub fn leaves(&self, x: f64) -> bool {
+        saturate(x, self.lo, self.hi) != x
     }
 }
 

@@ -1,0 +1,97 @@
+//! How far each measured channel of a set of runs is trusted, before any
+//! model: the one rule that `diagnose` states as `channels trusted to:` and
+//! that a `simulate` replay of one run uses for its noise floors, so that
+//! the same run reads the same number of noise floors in both.
+//!
+//! Per channel: the median over the runs of its high-frequency scatter
+//! (each run's as its gap estimates it: [`run_scatter`]), then the user's
+//! stated uncertainty, the sensor type's floor or an estimated output's
+//! ([`channel_scale`]). A channel's own scatter alone would trust a state
+//! estimator's smooth output ten times a gyro. Units: each channel's own
+//! (rad/s, m/s², rad).
+
+use crate::diagnose::campaign::StatedUncertainty;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::scale::channel_scale;
+use crate::diagnose::report::summary::run_scatter;
+use crate::diagnose::report::ChannelNoise;
+use crate::measured::MeasuredRun;
+use rayon::prelude::*;
+
+/// How far the channels of a set of runs are trusted.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trust {
+    /// Each channel some run measures: its noise floor, scale and source.
+    pub noise: Vec<ChannelNoise>,
+    /// The fits' residual scales by channel index (1 where no run measures
+    /// the channel: it has no residuals).
+    pub scales: [f64; 3],
+    /// The noise floors by channel index (0 where no run measures it).
+    pub floors: [f64; 3],
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v[v.len() / 2]
+    }
+}
+
+/// Each channel's RMS signal over every sample of every run (0 where no
+/// run measures it).
+fn signal_rms(runs: &[MeasuredRun]) -> [f64; 3] {
+    Channel::ALL.map(|ch| {
+        let (mut s, mut n) = (0.0, 0usize);
+        for r in runs {
+            if let Some(v) = ch.of(r) {
+                s += v.iter().map(|x| x * x).sum::<f64>();
+                n += v.len();
+            }
+        }
+        if n == 0 {
+            0.0
+        } else {
+            (s / n as f64).sqrt()
+        }
+    })
+}
+
+/// How far each channel of `runs` is trusted, with the uncertainties the
+/// user `stated` (module doc).
+pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust {
+    let per_run: Vec<[Option<(f64, f64)>; 3]> = runs.par_iter().map(run_scatter).collect();
+    let rms = signal_rms(runs);
+    let mut scales = [1.0; 3];
+    let mut floors = [0.0; 3];
+    let noise = Channel::ALL
+        .into_iter()
+        .filter_map(|ch| {
+            let scatter: Vec<f64> = per_run
+                .iter()
+                .filter_map(|r| r[ch.index()].map(|x| x.0))
+                .collect();
+            (!scatter.is_empty()).then(|| {
+                let runs = scatter.len();
+                let trust = channel_scale(ch, stated, median(scatter), rms[ch.index()]);
+                scales[ch.index()] = trust.scale;
+                floors[ch.index()] = trust.uncertainty;
+                ChannelNoise {
+                    channel: ch,
+                    unit: ch.unit(),
+                    noise_floor: trust.uncertainty,
+                    scale: trust.scale,
+                    source: trust.source,
+                    scatter: trust.scatter,
+                    runs,
+                }
+            })
+        })
+        .collect();
+    Trust {
+        noise,
+        scales,
+        floors,
+    }
+}

@@ -1,0 +1,236 @@
+//! What fresh-eyes users of the last release still tripped on,
+//! run as a user runs the tool: a replay's noise floors against
+//! `diagnose`'s, a `degrees` naming no column, the numbers' digits.
+//! Each test one finding.
+
+use super::*;
+
+/// A logged step at 100 Hz for 6 s (0.02 rad at 1 s, 20 m/s, first-order
+/// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and the
+/// sideslip of a state estimator, smooth to its last digit.
+fn estimator_run() -> String {
+    let mut s = String::from("t,speed,steer,yaw_rate,beta\n");
+    for i in 0..=600 {
+        let t = f64::from(i) / 100.0;
+        let on = t > 1.0;
+        let r = if on {
+            0.2 * (1.0 - (-(t - 1.0) / 0.15).exp())
+        } else {
+            0.0
+        };
+        // A deterministic scatter, uniform in ±0.007 rad/s (σ 0.004).
+        let u = ((f64::from(i) * 12.9898).sin() * 43758.5453).fract();
+        let steer = if on { 0.02 } else { 0.0 };
+        s += &format!("{t:.2},20,{steer},{:.6},{:.6}\n", r + 0.007 * u, -0.05 * r);
+    }
+    s
+}
+
+/// A replay read the run's own scatter as its noise floors (the Putnam
+/// log's yaw rate 25 floors where `diagnose`, trusting a gyro no better
+/// than its type's floor, reads 15; its estimated sideslip 14 where
+/// `diagnose` reads 2): the replay now trusts each channel by `diagnose`'s
+/// rule and says so.
+#[test]
+fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
+    let dir = scratch(&[(
+        "vehicle.toml",
+        &format!(
+            "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+        ),
+    )]);
+    linear_tyre(dir.path());
+    fs::create_dir(dir.path().join("runs")).unwrap();
+    // Held-out scoring needs two runs: the same run twice, whose median
+    // scatter is its own.
+    for name in ["a.csv", "b.csv"] {
+        fs::write(dir.path().join("runs").join(name), estimator_run()).unwrap();
+    }
+    let sc = format!(
+        "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"runs/a.csv\"\n"
+    );
+    fs::write(dir.path().join("replay.toml"), sc).unwrap();
+    let o = run(&[
+        "simulate",
+        dir.path().join("replay.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("sim").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    let gap = read_json(&dir.path().join("sim/gap.json"));
+    let (printed, d) = diagnose_to(dir.path(), &dir.path().join("out"));
+    let trusted = |text: &str| {
+        text.lines()
+            .find(|l| l.contains("channels trusted to:"))
+            .map(|l| l.trim().to_string())
+            .unwrap_or_else(|| panic!("no trust line: {text}"))
+    };
+    // One rule, one sentence.
+    assert_eq!(trusted(&said), trusted(&printed));
+    assert!(
+        trusted(&said).contains("beta 0.0050 rad (an estimated output's"),
+        "{said}"
+    );
+    // The same floors, scales and sources (the diagnosis counts its two
+    // runs, the replay its one).
+    let without_runs = |v: &serde_json::Value| {
+        let mut v = v.clone();
+        for n in v.as_array_mut().unwrap() {
+            n.as_object_mut().unwrap().remove("runs");
+        }
+        v
+    };
+    assert_eq!(
+        without_runs(&gap["noise"]),
+        without_runs(&d["gap"]["noise"])
+    );
+    for ch in gap["channels"].as_array().unwrap() {
+        let name = &ch["channel"];
+        let diag = d["gap"]["noise"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|n| &n["channel"] == name)
+            .unwrap();
+        assert_eq!(ch["noise_floor"], diag["noise_floor"], "{name}");
+        assert_eq!(ch["noise_source"], "the channel's trusted uncertainty");
+    }
+    // The smooth sideslip is no longer trusted to its own 1e-6 scatter.
+    assert_eq!(gap["noise"][1]["source"], "estimated");
+}
+
+/// `metrics` of `path` with `extra` options: success, stdout and stderr.
+fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
+    let mut args = vec!["metrics", path.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let o = run(&args);
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    (o.status.success(), said, stderr(&o))
+}
+
+/// `--degrees beta` on a file whose sideslip column is `beta_deg` converted
+/// nothing and measured without a sideslip, without a word; so did a
+/// replay's and a campaign's `degrees`.
+#[test]
+fn a_degrees_column_the_file_does_not_have_is_refused_with_its_columns() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("run.csv");
+    fs::write(&p, estimator_run().replacen("beta", "beta_deg", 1)).unwrap();
+    let (ok, _, e) = metrics(&p, &["--degrees", "beta"]);
+    assert!(!ok);
+    assert!(
+        e.contains("run.csv:1:1: `--degrees` to `metrics` names `beta`, a column this file does not have (its columns: t, speed, steer, yaw_rate, beta_deg); did you mean `beta_deg`? Rename the column to `beta`"),
+        "{e}"
+    );
+    // A replay's [manoeuvre] degrees.
+    let sc = format!(
+        "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\ndegrees = [\"roll\"]\n"
+    );
+    fs::write(dir.path().join("scenario.toml"), sc).unwrap();
+    linear_tyre(dir.path());
+    let e = simulate_err(dir.path());
+    assert!(
+        e.contains("run.csv:1:1: `degrees` under [manoeuvre] names `roll`, a column this file does not have"),
+        "{e}"
+    );
+}
+
+/// A campaign's `[runs] degrees` naming a column one of its files lacks
+/// (a roll sensor on some runs) is said; naming one no file has, refused.
+#[test]
+fn a_campaigns_degrees_column_is_said_where_a_file_lacks_it_and_refused_where_all_do() {
+    let with_roll = estimator_run()
+        .lines()
+        .enumerate()
+        .map(|(i, l)| match i {
+            0 => format!("{l},roll\n"),
+            _ => format!("{l},1.5\n"),
+        })
+        .collect::<String>();
+    let campaign = |degrees: &str| {
+        let dir = scratch(&[(
+            "vehicle.toml",
+            &format!("{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[runs]\ndegrees = [{degrees}]\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"),
+        )]);
+        linear_tyre(dir.path());
+        fs::create_dir(dir.path().join("runs")).unwrap();
+        fs::write(dir.path().join("runs/a.csv"), &with_roll).unwrap();
+        fs::write(dir.path().join("runs/b.csv"), estimator_run()).unwrap();
+        dir
+    };
+    let dir = campaign("\"roll\"");
+    let (printed, _) = diagnose(dir.path());
+    assert!(
+        printed.contains("`degrees` under [runs] names `roll`, a column 1 of 2 files do not have:")
+            && printed.contains("b.csv"),
+        "{printed}"
+    );
+    let dir = campaign("\"roll\", \"bank\"");
+    let e = fails_cleanly("diagnose", dir.path(), dir.path());
+    assert!(
+        e.contains(
+            "a.csv:1:1: `degrees` under [runs] names `bank`, a column this file does not have"
+        ),
+        "{e}"
+    );
+}
+
+/// The significant digits of a written number (`193.849121` has 9).
+fn digits(cell: &str) -> usize {
+    let mantissa = cell.split(['e', 'E']).next().unwrap();
+    let d: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let d = d.trim_start_matches('0');
+    // Trailing zeros of an integer (`4000`) are its size, not digits.
+    let d = if mantissa.contains('.') {
+        d
+    } else {
+        d.trim_end_matches('0')
+    };
+    d.len()
+}
+
+/// `simulate` wrote its history with 17 significant digits
+/// (`193.84912128812175`), `identify` its `[fitted_ranges]` so too, and
+/// `metrics` a noise-free run's yaw-rate noise as `0.00 %`: each with the
+/// digits it carries now.
+#[test]
+fn results_are_written_with_the_digits_they_carry() {
+    let dir = tempfile::tempdir().unwrap();
+    let sim = dir.path().join("sim");
+    let o = run(&[
+        "simulate",
+        "scenarios/sedan_step.toml",
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let history = fs::read_to_string(sim.join("history.csv")).unwrap();
+    let most = history
+        .lines()
+        .skip(1)
+        .flat_map(|l| l.split(','))
+        .map(digits)
+        .max()
+        .unwrap();
+    assert_eq!(most, 9, "a 1e-9 integration carries 9 digits");
+    let (ok, said, e) = metrics(&sim.join("history.csv"), &[]);
+    assert!(ok, "{e}");
+    let noise = said.lines().find(|l| l.contains("yaw-rate noise")).unwrap();
+    assert!(!noise.contains("noise 0.00 %"), "{noise}");
+    assert!(noise.contains("e-7 % of the step"), "{noise}");
+    // A rig fit's ranges, to six digits.
+    let pg = synth_campaign(dir.path(), "pg", &[]);
+    let tyre = dir.path().join("pac89.toml");
+    let o = identify_to(&pg.join("tyre_rig.csv"), "pac89", &tyre);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(&tyre).unwrap();
+    let table = &text[text.find("[fitted_ranges]").unwrap()..];
+    for line in table.lines().skip(1) {
+        let inside = &line[line.find('[').unwrap() + 1..line.find(']').unwrap()];
+        for cell in inside.split(',') {
+            assert!(digits(cell.trim()) <= 6, "{line}");
+        }
+    }
+    assert!(table.contains("alpha = [-0.208567, 0.208567]"), "{table}");
+}

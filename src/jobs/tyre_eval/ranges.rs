@@ -3,7 +3,11 @@
 //! points leave it, its ends and the first such point's line and value. A
 //! count over all ranges alone left a user to find which one the points
 //! left. Each range in the points' frame (a left-side file's slip angle
-//! range negated); units N, rad, Pa.
+//! range negated); units N, rad, Pa. Each end is said apart: a point
+//! beyond one is evaluated at that end, except a load below `FZMIN`, which
+//! MFeval (as TNO's MF-Tyre) does not saturate: its forces are evaluated at
+//! the load given, only the pneumatic trail at `FZMIN` and the rolling and
+//! overturning moments scaled down below it.
 
 use crate::format::{plural, rounded};
 use crate::tyre::mf::{InputRange, MfInput};
@@ -21,6 +25,8 @@ pub struct RangeLeft {
     pub first_line: usize,
     /// Its value there (the pressure it is evaluated at).
     pub first_value: f64,
+    /// The points leave it below its lower end (else above its upper).
+    pub below: bool,
 }
 
 /// The ranges of `tyre` the points `inputs` (at file lines `lines`) leave,
@@ -29,13 +35,16 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
     let mut out: Vec<RangeLeft> = Vec::new();
     for (i, q) in inputs.iter().enumerate() {
         for (range, value) in tyre.ranges_left(q) {
-            match out.iter_mut().find(|r| r.range.keys == range.keys) {
+            let below = range.lo.is_some_and(|lo| value < lo);
+            let same = |r: &&mut RangeLeft| r.range.keys == range.keys && r.below == below;
+            match out.iter_mut().find(same) {
                 Some(r) => r.points += 1,
                 None => out.push(RangeLeft {
                     range,
                     points: 1,
                     first_line: lines.get(i).copied().unwrap_or(0),
                     first_value: value,
+                    below,
                 }),
             }
         }
@@ -44,7 +53,7 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
         let all = tyre.input_ranges();
         all.iter().position(|a| a.keys == r.range.keys)
     };
-    out.sort_by_key(order);
+    out.sort_by_key(|r| (order(r), !r.below));
     out
 }
 
@@ -57,18 +66,25 @@ impl RangeLeft {
             u => format!(" {u}"),
         };
         let end = |v: Option<f64>| v.map_or("unbounded".to_string(), |v| rounded(v, 4));
+        let (side, key, bound) = match self.below {
+            true => ("below", r.keys[0], r.lo),
+            false => ("above", r.keys[1], r.hi),
+        };
+        let evaluated = match (r.column, self.below) {
+            ("fz", true) => "fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and the rolling and overturning moments scaled down below it",
+            _ => "evaluated at that end",
+        };
         format!(
-            "{} of {} outside {}–{} ({} to {}{unit}{}): evaluated at its end; the first at line {}, {} = {}{unit}",
+            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}",
             self.points,
             plural(count, "point", "points"),
-            r.keys[0],
-            r.keys[1],
-            end(r.lo),
-            end(r.hi),
+            end(bound),
             match r.column {
                 "alpha" | "camber" => ", in the points' frame",
                 _ => "",
             },
+            end(r.lo),
+            end(r.hi),
             self.first_line,
             r.column,
             rounded(self.first_value, 6)

@@ -8,7 +8,12 @@
 //! tyres that do not slip. Above [`ZERO_SLIP_SHARE`] of `fz` the points
 //! are counted and the coefficients that make the force are named (those
 //! whose removal alone takes a third of it off at the largest point).
-//! Units: N.
+//! A Magic Formula point below the file's `VXLOW` is judged apart: there
+//! MFeval fades the vertical shift `SVx` to 0 towards rest (its factor
+//! `|Vx|/VXLOW`), so that at rest `fx` is the horizontal shift's alone (the
+//! MF 6.1 sample: −353.9 N at 4000 N at rest, −53.3 N from 1 m/s up), a
+//! force of the speed, not of the file's shifts.
+//! Units: N, m/s.
 
 use super::unread::Points;
 use crate::format::{exact, plural, rounded};
@@ -26,14 +31,17 @@ const SHIFTS: [&str; 4] = ["PHX1", "PHX2", "PVX1", "PVX2"];
 /// their load.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FxAtZeroSlip {
-    /// The points (at a positive load).
+    /// The points (at a positive load, at or above `VXLOW`).
     pub points: usize,
-    /// The largest `|fx|/fz`'s point: its line in the points file, `fx`
-    /// and `fz`, N.
-    pub largest: (usize, f64, f64),
+    /// The largest `|fx|/fz`'s point among them: its line in the points
+    /// file, `fx` and `fz`, N (None: every such point is below `VXLOW`).
+    pub largest: Option<(usize, f64, f64)>,
     /// The Magic Formula coefficients that make it, with their values
     /// (empty for another model).
     pub coefficients: Vec<(&'static str, f64)>,
+    /// Such points below a Magic Formula file's `VXLOW`: their count, the
+    /// largest one's line and `fx` (N), and `VXLOW` (m/s).
+    pub below_vxlow: Option<(usize, usize, f64, f64)>,
 }
 
 /// The points of `p` (outputs `f`, file lines `lines`) at `kappa = 0` with
@@ -44,22 +52,33 @@ pub(crate) fn fx_at_zero_slip(
     f: &[PointForces],
     lines: &[usize],
 ) -> Option<FxAtZeroSlip> {
-    let [fz, kappa, ..] = p.columns;
+    let [fz, kappa, _, _, speed] = p.columns;
     let share = |i: usize| f[i].fx.abs() / fz[i];
+    let vxlow = match tyre {
+        Tyre::MagicFormula(t) => Some(t.coefficients.VXLOW),
+        _ => None,
+    };
+    let slow = |i: usize| vxlow.is_some_and(|v| speed[i].abs() < v);
     let over: Vec<usize> = (0..fz.len())
         .filter(|&i| fz[i] > 0.0 && kappa[i] == 0.0 && share(i) > ZERO_SLIP_SHARE)
         .collect();
-    let &worst = over
-        .iter()
-        .max_by(|&&a, &&b| share(a).total_cmp(&share(b)))?;
+    let worst = |of: &[usize]| {
+        of.iter()
+            .copied()
+            .max_by(|&a, &b| share(a).total_cmp(&share(b)))
+    };
+    let line = |i: usize| lines.get(i).copied().unwrap_or(0);
+    let (below, moving): (Vec<usize>, Vec<usize>) = over.iter().partition(|&&i| slow(i));
+    let below_vxlow = worst(&below).zip(vxlow).map(|(w, v)| (below.len(), line(w), f[w].fx, v));
+    let largest = worst(&moving);
+    if largest.is_none() && below_vxlow.is_none() {
+        return None;
+    }
     Some(FxAtZeroSlip {
-        points: over.len(),
-        largest: (
-            lines.get(worst).copied().unwrap_or(0),
-            f[worst].fx,
-            fz[worst],
-        ),
-        coefficients: responsible(tyre, p, worst, f[worst].fx),
+        points: moving.len(),
+        largest: largest.map(|w| (line(w), f[w].fx, fz[w])),
+        coefficients: largest.map_or_else(Vec::new, |w| responsible(tyre, p, w, f[w].fx)),
+        below_vxlow,
     })
 }
 
@@ -99,7 +118,23 @@ fn responsible(tyre: &Tyre, p: &Points, i: usize, fx: f64) -> Vec<(&'static str,
 impl FxAtZeroSlip {
     /// The sentence on the terminal, of `count` points.
     pub fn line(&self, count: usize) -> String {
-        let (line, fx, fz) = self.largest;
+        // The points below VXLOW: alone, or after the moving ones.
+        let slow = |lead: String| {
+            self.below_vxlow.map(|(n, line, fx, vxlow)| {
+                format!(
+                    "{lead} at kappa = 0 below the file's VXLOW = {} m/s {} |fx| above {} % of fz (the largest {} N, line {line}): MFeval fades the vertical shift SVx to 0 towards rest, so there fx is the horizontal shift's alone, a force of the low speed, not a free-rolling tyre's; give the wheel's speed for that",
+                    rounded(vxlow, 4),
+                    if n == 1 { "has" } else { "have" },
+                    rounded(100.0 * ZERO_SLIP_SHARE, 3),
+                    rounded(fx, 4),
+                )
+            })
+        };
+        let Some((line, fx, fz)) = self.largest else {
+            let n = self.below_vxlow.map_or(0, |b| b.0);
+            let lead = format!("{n} of {}", plural(count, "point", "points"));
+            return slow(lead).unwrap_or_default();
+        };
         let cause = match self.coefficients.as_slice() {
             [] => "the model's offsets give it".to_string(),
             c => {
@@ -111,8 +146,11 @@ impl FxAtZeroSlip {
                 format!("the file's {} {verb} it", each.join(", "))
             }
         };
+        let more = self.below_vxlow.map_or(0, |b| b.0);
+        let also = slow(format!("{more} more"))
+            .map_or_else(String::new, |s| format!("; and {s}"));
         format!(
-            "{} of {} at kappa = 0 have |fx| above {} % of fz (the largest {} N at fz = {} N, line {line}: {} %), where a free-rolling tyre gives its rolling resistance, about 1 %: {cause}; check them",
+            "{} of {} at kappa = 0 have |fx| above {} % of fz (the largest {} N at fz = {} N, line {line}: {} %), where a free-rolling tyre gives its rolling resistance, about 1 %: {cause}; check them{also}",
             self.points,
             plural(count, "point", "points"),
             rounded(100.0 * ZERO_SLIP_SHARE, 3),

@@ -519,7 +519,10 @@ fn a_large_fx_at_zero_slip_is_said_with_the_shift_that_makes_it() {
     let (o, written) = eval(dir.path(), &mf61(dir.path(), &[]), points, &[]);
     assert!(o.status.success(), "{}", stderr(&o));
     let fx = column(&written, "fx");
-    assert!(fx[0].abs() > 0.05 * 4000.0 && fx[1].abs() < 0.05 * 4000.0, "{fx:?}");
+    assert!(
+        fx[0].abs() > 0.05 * 4000.0 && fx[1].abs() < 0.05 * 4000.0,
+        "{fx:?}"
+    );
     let e = stderr(&o);
     assert!(
         e.contains("warning: 1 of 2 points at kappa = 0 below the file's VXLOW = 1 m/s has |fx| above 5 % of fz (the largest -235.6 N, line 2): MFeval fades the vertical shift SVx to 0 towards rest"),

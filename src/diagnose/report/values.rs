@@ -48,10 +48,19 @@ pub struct ParameterValue {
     /// far the fit moves when a fold's runs are left out,
     /// `√((k−1)/k · Σ(θᵢ − θ̄)²)` over `k` folds (`null`: not
     /// cross-validated, or fewer than [`MIN_JACKKNIFE_FOLDS`] folds).
-    /// Far above [`ParameterValue::std_error`] ([`ParameterValue::understated`])
+    /// Far above what the runs' noise alone gives it
+    /// ([`ParameterValue::fold_noise_std_error`]; [`ParameterValue::understated`])
     /// the runs disagree on the value by more than their noise allows: a
     /// model that lacks something, which no standard error covers.
     pub fold_std_error: Option<f64>,
+    /// The fold jackknife the runs' noise alone gives: the standard error
+    /// times `f` of [`crate::diagnose::fit::fold_noise`], 1 for runs of
+    /// equal information, far more where one run carries most of what
+    /// determines the parameter (`null`: not cross-validated).
+    pub fold_noise_std_error: Option<f64>,
+    /// The degrees of freedom of that jackknife (Satterthwaite's count of
+    /// the folds' unequal variances: 1 where one fold carries the rest).
+    pub fold_noise_dof: Option<f64>,
 }
 
 /// Folds below which no jackknife is given: with two, the spread of one
@@ -65,6 +74,10 @@ pub const MIN_JACKKNIFE_FOLDS: usize = 3;
 /// gives against the jackknife over runs on a model that lacks something:
 /// 0.5–2×, `fit::std_error_tests`).
 pub const UNDERSTATED: f64 = 3.0;
+
+/// The standard normal quantile of the chance a fold jackknife is allowed
+/// above its yardstick before it is said to understate: 99.9 %.
+pub const FOLD_CHANCE_Z: f64 = 3.0902;
 
 /// The grouped jackknife standard error of `values`, one per fold (None
 /// below [`MIN_JACKKNIFE_FOLDS`] or with a value not finite).
@@ -109,24 +122,53 @@ impl ParameterValue {
             unseen: false,
             held: None,
             fold_std_error: None,
+            fold_noise_std_error: None,
+            fold_noise_dof: None,
         }
     }
 
-    /// The same with the fold refits' jackknife ([`jackknife`]).
-    pub fn with_folds(self, fold_values: &[f64]) -> Self {
+    /// The same with the fold refits' jackknife ([`jackknife`]) and the one
+    /// the runs' noise alone gives, `noise.0` standard errors with `noise.1`
+    /// degrees of freedom (None: not known).
+    pub fn with_folds(self, fold_values: &[f64], noise: Option<(f64, f64)>) -> Self {
+        let fold_std_error = jackknife(fold_values);
+        let noise = fold_std_error.and(noise);
         Self {
-            fold_std_error: jackknife(fold_values),
+            fold_std_error,
+            fold_noise_std_error: noise.map(|(f, _)| f * self.std_error),
+            fold_noise_dof: noise.map(|(_, nu)| nu).filter(|nu| nu.is_finite()),
             ..self
         }
     }
 
-    /// The fold jackknife is more than [`UNDERSTATED`] times the standard
-    /// error of a fitted, determined parameter: the standard error covers
-    /// the noise, not what the model lacks.
+    /// What the fold jackknife is judged against: the standard error, or
+    /// the larger jackknife the runs' noise alone gives where one run
+    /// carries most of what determines the parameter.
+    pub fn fold_yardstick(&self) -> f64 {
+        self.fold_noise_std_error
+            .filter(|x| x.is_finite())
+            .map_or(self.std_error, |n| n.max(self.std_error))
+    }
+
+    /// How many times [`ParameterValue::fold_yardstick`] the fold jackknife
+    /// may reach by chance: [`UNDERSTATED`], or more where few folds carry
+    /// it (the 99.9 % point of `√(χ²_ν/ν)`, 3.3 for one degree of freedom).
+    pub fn fold_limit(&self) -> f64 {
+        let chance = self.fold_noise_dof.map_or(0.0, |nu| {
+            let q = crate::measured::calibration::stats::chi2_quantile_of(nu, FOLD_CHANCE_Z);
+            (q / nu).sqrt()
+        });
+        UNDERSTATED.max(chance)
+    }
+
+    /// The fold jackknife is more than [`ParameterValue::fold_limit`] times
+    /// [`ParameterValue::fold_yardstick`] for a fitted, determined
+    /// parameter: the standard error covers the noise, not what the model
+    /// lacks.
     pub fn understated(&self) -> bool {
         let fitted = !self.unseen && self.held.is_none() && self.bound.is_none() && self.determined;
         match self.fold_std_error {
-            Some(j) => fitted && j > UNDERSTATED * self.std_error,
+            Some(j) => fitted && j > self.fold_limit() * self.fold_yardstick(),
             None => false,
         }
     }

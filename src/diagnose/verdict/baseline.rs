@@ -222,7 +222,11 @@ impl Baseline {
                 .parameters
             }),
             prior_weight: sc.prior_weight,
-            parameters: parameter_values(&self.layout(&sc.kinds), &sc.full, &sc.fold_params),
+            parameters: parameter_values(
+                &self.layout(&sc.kinds),
+                &sc.full,
+                (&sc.fold_params, &sc.fold_noise),
+            ),
             heldout_error_before: self.j0,
             heldout_error_after: j,
             heldout_channels: channel_errors(&sc.heldout),

@@ -78,11 +78,13 @@ impl<'a> Setting<'a> {
 /// report rows.
 ///
 /// `folds`: the parameters of each fold refit (none where the candidate was
-/// not cross-validated), for each parameter's jackknife.
+/// not cross-validated), for each parameter's jackknife, and the
+/// jackknife the runs' noise alone gives each, in standard errors, with
+/// its degrees of freedom ([`crate::diagnose::fit::fold_noise`]).
 pub(crate) fn parameter_values(
     layout: &Layout,
     f: &FitOutcome,
-    folds: &[Vec<f64>],
+    (folds, noise): (&[Vec<f64>], &[(f64, f64)]),
 ) -> Vec<ParameterValue> {
     let at = layout.effects().start;
     let reported = f.reported_std_errors();
@@ -91,8 +93,9 @@ pub(crate) fn parameter_values(
         .enumerate()
         .map(|(i, (group, q))| {
             let fold_values: Vec<f64> = folds.iter().map(|p| p[at + i]).collect();
+            let factor = noise.get(at + i).copied().filter(|x| x.0.is_finite());
             let v = ParameterValue::of(group, q, f.params[at + i], reported[at + i])
-                .with_folds(&fold_values);
+                .with_folds(&fold_values, factor);
             if f.is_unseen(at + i) {
                 v.unseen()
             } else if let Some(se) = f.held_for(at + i) {

@@ -258,6 +258,8 @@ mod tests {
             unseen: false,
             held: None,
             fold_std_error: None,
+            fold_noise_std_error: None,
+            fold_noise_dof: None,
         }
     }
 

@@ -12,9 +12,10 @@ use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
+use crate::diagnose::fit::fold_noise::fold_noise_factors;
 use crate::diagnose::fit::global::global_best;
 use crate::diagnose::fit::problem::Problem;
-use crate::diagnose::fit::refit::{refit, training_rows};
+use crate::diagnose::fit::refit::{held_rows, refit, training_rows};
 use crate::diagnose::fit::{
     complete_curvature, fit_first_order, hold_stands, pinned, to_hold, FitOutcome, GlobalSearch,
 };
@@ -43,6 +44,11 @@ pub(crate) struct Scored {
     pub(crate) insample: ChannelErrors,
     pub(crate) heldout: ChannelErrors,
     pub(crate) fold_params: Vec<Vec<f64>>,
+    /// Per parameter, how many standard errors the fold refits' jackknife
+    /// reaches by the runs' noise alone and its degrees of freedom
+    /// ([`fold_noise_factors`]; NaN where not fitted; empty where not
+    /// cross-validated).
+    pub(crate) fold_noise: Vec<(f64, f64)>,
     pub(crate) folds_converged: usize,
     /// What the prior's rows were multiplied by in its fits (axles from
     /// the runs; [`crate::diagnose::fit::tempering`]).
@@ -102,6 +108,7 @@ impl Fitted<'_> {
             insample: self.insample,
             heldout: ChannelErrors::default(),
             fold_params: Vec::new(),
+            fold_noise: Vec::new(),
             folds_converged: 0,
             prior_weight: self.prior.map(|r| r.weight()),
         }
@@ -350,10 +357,32 @@ impl<'a> Context<'a> {
         // hold its Jacobian and second derivatives (rows × n² reals).
         Scored {
             heldout,
+            fold_noise: self.fold_noise(full),
             folds_converged: per_fold.iter().filter(|f| f.2).count(),
             fold_params: per_fold.into_iter().map(|(_, p, _)| p).collect(),
             ..fitted.unscored()
         }
+    }
+
+    /// The fold refits' jackknife that the runs' noise alone gives each
+    /// parameter of the all-run fit `full`, in its standard errors
+    /// ([`fold_noise_factors`]): the folds' held-out rows taken from its
+    /// linearisation's Jacobian, the fitted parameters inside their box.
+    fn fold_noise(&self, full: &FitOutcome) -> Vec<(f64, f64)> {
+        let Some(linear) = &full.linear else {
+            return Vec::new();
+        };
+        let free: Vec<bool> = (0..full.params.len())
+            .map(|i| {
+                full.std_errors[i].is_finite() && full.held_for(i).is_none() && !full.is_unseen(i)
+            })
+            .collect();
+        let held: Vec<_> = self
+            .folds
+            .iter()
+            .map(|f| held_rows(&self.runs, f))
+            .collect();
+        fold_noise_factors(&linear.jacobian, &held, &free)
     }
 
     /// The start of a candidate's polish and how its global stage searched:

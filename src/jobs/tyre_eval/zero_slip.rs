@@ -69,7 +69,9 @@ pub(crate) fn fx_at_zero_slip(
     };
     let line = |i: usize| lines.get(i).copied().unwrap_or(0);
     let (below, moving): (Vec<usize>, Vec<usize>) = over.iter().partition(|&&i| slow(i));
-    let below_vxlow = worst(&below).zip(vxlow).map(|(w, v)| (below.len(), line(w), f[w].fx, v));
+    let below_vxlow = worst(&below)
+        .zip(vxlow)
+        .map(|(w, v)| (below.len(), line(w), f[w].fx, v));
     let largest = worst(&moving);
     if largest.is_none() && below_vxlow.is_none() {
         return None;
@@ -147,8 +149,7 @@ impl FxAtZeroSlip {
             }
         };
         let more = self.below_vxlow.map_or(0, |b| b.0);
-        let also = slow(format!("{more} more"))
-            .map_or_else(String::new, |s| format!("; and {s}"));
+        let also = slow(format!("{more} more")).map_or_else(String::new, |s| format!("; and {s}"));
         format!(
             "{} of {} at kappa = 0 have |fx| above {} % of fz (the largest {} N at fz = {} N, line {line}: {} %), where a free-rolling tyre gives its rolling resistance, about 1 %: {cause}; check them{also}",
             self.points,

@@ -72,7 +72,7 @@
 mod bank;
 mod report;
 mod spans;
-mod stats;
+pub(crate) mod stats;
 #[cfg(test)]
 mod tests;
 

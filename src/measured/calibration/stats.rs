@@ -200,8 +200,13 @@ pub(super) fn pool(means: &[(f64, f64)]) -> Pool {
 /// The χ² quantile with `dof` degrees of freedom at the standard normal
 /// quantile `z` (Wilson & Hilferty 1931: `(χ²/k)^(1/3)` is nearly normal
 /// with mean `1 − 2/(9k)` and variance `2/(9k)`).
-pub(super) fn chi2_quantile(dof: usize, z: f64) -> f64 {
-    let k = dof as f64;
+pub(crate) fn chi2_quantile(dof: usize, z: f64) -> f64 {
+    chi2_quantile_of(dof as f64, z)
+}
+
+/// [`chi2_quantile`] for a real number of degrees of freedom `k` (a
+/// Satterthwaite count).
+pub(crate) fn chi2_quantile_of(k: f64, z: f64) -> f64 {
     let a = 2.0 / (9.0 * k);
     k * (1.0 - a + z * a.sqrt()).powi(3)
 }

@@ -78,7 +78,7 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
     let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
     let j = crate::diagnose::report::jackknife(&folds).unwrap();
     assert!((j - (0.8f64 * 4.0 * 0.0004).sqrt()).abs() < 1e-12, "{j}");
-    let flagged = v.clone().with_folds(&folds);
+    let flagged = v.clone().with_folds(&folds, Some((1.0, 4.0)));
     assert!(flagged.understated());
     assert_eq!(
         parameter(&flagged),
@@ -87,17 +87,55 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
     // Folds within three standard errors, or too few to judge, say nothing.
     let close = v
         .clone()
-        .with_folds(&[-0.405, -0.415, -0.41, -0.405, -0.415]);
+        .with_folds(&[-0.405, -0.415, -0.41, -0.405, -0.415], Some((1.0, 4.0)));
     assert!(!close.understated());
     assert_eq!(
         parameter(&close),
         "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
     );
-    assert_eq!(v.clone().with_folds(&[-0.3, -0.5]).fold_std_error, None);
+    assert_eq!(
+        v.clone()
+            .with_folds(&[-0.3, -0.5], Some((1.0, 4.0)))
+            .fold_std_error,
+        None
+    );
     // A parameter on a bound has no standard error to understate.
     let on_bound =
-        ParameterValue::of("roll_steer", front, front.bounds.0, 4.65e-3).with_folds(&folds);
+        ParameterValue::of("roll_steer", front, front.bounds.0, 4.65e-3).with_folds(&folds, None);
     assert!(!on_bound.understated());
+}
+
+#[test]
+fn folds_the_runs_noise_alone_moves_far_are_not_said_to_understate() {
+    let [front, _] = EffectKind::RollSteer.parameters() else {
+        panic!("roll steer has a front and a rear");
+    };
+    let v = ParameterValue::of("roll_steer", front, -0.4112, 4.65e-3);
+    let folds = [-0.39, -0.43, -0.41, -0.39, -0.43];
+    // One run carries most of what determines it: leaving it out moves
+    // the fold 5 standard errors by noise alone; 8× the standard error is
+    // under 2× that.
+    let heavy = v.clone().with_folds(&folds, Some((5.0, 4.0)));
+    assert!((heavy.fold_noise_std_error.unwrap() - 5.0 * 4.65e-3).abs() < 1e-15);
+    assert!(!heavy.understated());
+    assert_eq!(
+        parameter(&heavy),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
+    );
+    // Beyond three times that yardstick it is said, against the yardstick.
+    let far = v.clone().with_folds(&folds, Some((2.0, 4.0)));
+    assert!(far.understated());
+    // 3.1× a yardstick of 2.5 standard errors: past 3× where the folds
+    // share it (four degrees of freedom), within what chance gives where
+    // one fold carries the rest (one degree of freedom: 3.3× at 99.9 %).
+    assert!(v.clone().with_folds(&folds, Some((2.5, 4.0))).understated());
+    let one = v.clone().with_folds(&folds, Some((2.5, 1.0)));
+    assert!(!one.understated());
+    assert!((one.fold_limit() - 3.34).abs() < 0.05, "{}", one.fold_limit());
+    assert_eq!(
+        parameter(&far),
+        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 4× the ± 9.30e-3 the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)"
+    );
 }
 
 #[test]

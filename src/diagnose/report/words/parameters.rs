@@ -57,11 +57,20 @@ pub fn parameter(p: &ParameterValue) -> String {
     let Some(bound) = p.bound else {
         return if p.determined {
             let said = format!("{} = {v} ± {}{unit}", p.name, std_error(p.std_error));
+            let yardstick = p.fold_yardstick();
             match p.fold_std_error.filter(|_| p.understated()) {
-                Some(j) => format!(
+                // The runs of equal information: the standard error is
+                // what their noise moves the folds by.
+                Some(j) if yardstick <= p.std_error => format!(
                     "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
                     std_error(j),
                     j / p.std_error
+                ),
+                Some(j) => format!(
+                    "{said} (the fold refits scatter ± {}, {:.0}× the ± {} the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)",
+                    std_error(j),
+                    j / yardstick,
+                    std_error(yardstick)
                 ),
                 None => said,
             }

@@ -302,6 +302,8 @@ fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> Param
         unseen: false,
         held: None,
         fold_std_error: None,
+        fold_noise_std_error: None,
+        fold_noise_dof: None,
     }
 }
 

@@ -51,7 +51,7 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Unseen};
+use crate::diagnose::report::{CalibrationSource, GapFinding, InSet, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
@@ -66,7 +66,7 @@ use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{confounded_with, search, Search};
+use crate::diagnose::verdict::search::{confounded_with, in_set, search, Search};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -402,6 +402,10 @@ fn run(
     let confounded = chosen.map_or_else(Vec::new, |sc| {
         confounded_with(sc, &singles, &found.lookalikes, &base)
     });
+    // A set's look-alikes fitted in it: their rows join the combinations.
+    let swapped = chosen.map_or_else(Vec::new, |sc| {
+        in_set(&ctx, sc, &singles, &confounded, &base, &found.combinations)
+    });
 
     // Before and after on held-out runs, per channel, window and regime.
     let (base_obs, after_obs) = before_after(&ctx, chosen);
@@ -427,6 +431,7 @@ fn run(
     // The verdict is one of its look-alikes until a test separates them.
     if let (Verdict::Explained(e), Some(c)) = (&mut verdict, confounded.first()) {
         e.confounded_with = c.effects[1..].to_vec();
+        e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
@@ -459,11 +464,19 @@ fn run(
         },
         ranking,
         screened: screened_rows.into_iter().chain(found.screened).collect(),
-        combinations: found.combinations,
+        combinations: with_rows(found.combinations, &swapped),
         verdict,
         confounded,
         shrinkage,
         overlays,
         timing: recorder.timing(),
     })
+}
+
+/// `rows` with the rows of the look-alikes fitted in the verdict's set
+/// ([`in_set`]) that are not among them, ordered by held-out error.
+fn with_rows(mut rows: Vec<Ranked>, swapped: &[(InSet, Option<Ranked>)]) -> Vec<Ranked> {
+    rows.extend(swapped.iter().filter_map(|(_, r)| r.clone()));
+    rows.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
+    rows
 }

@@ -1,6 +1,8 @@
 //! What fresh-eyes users of the last release still tripped on,
 //! run as a user runs the tool: a replay's noise floors against
-//! `diagnose`'s, a `degrees` naming no column, the numbers' digits.
+//! `diagnose`'s, a `degrees` naming no column, the numbers' digits, a
+//! set's look-alike claimed confounded without a fit, and folds said to
+//! disagree beyond their noise on the campaign's own truth.
 //! Each test one finding.
 
 use super::*;
@@ -233,4 +235,75 @@ fn results_are_written_with_the_digits_they_carry() {
         }
     }
     assert!(table.contains("alpha = [-0.208567, 0.208567]"), "{table}");
+}
+
+/// `synth --effects sensor_delay,relaxation_length --seed 2`: the verdict
+/// said steer_path could stand in for sensor_delay in the set, from the
+/// singles alone (no set with steer_path was fitted), and every parameter
+/// of the verdict "the runs disagree beyond their noise", though the runs
+/// are the truth's plus white noise and it comes back within 0.2 of a
+/// standard error.
+#[test]
+fn a_sets_look_alike_is_fitted_in_the_set_and_its_own_truth_is_not_said_to_disagree() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(
+        dir.path(),
+        "pair",
+        &["--effects", "sensor_delay,relaxation_length", "--seed", "2"],
+    );
+    let (stdout, d) = diagnose_campaign(&c);
+    let verdict = stdout
+        .lines()
+        .find(|l| l.starts_with("verdict: "))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(
+        verdict.starts_with("verdict: sensor_delay+relaxation_length explains the gap"),
+        "{verdict}"
+    );
+    // The look-alike, fitted in the set, does as well: confounded, said
+    // with its set's own figure, and ranked among the combinations.
+    assert!(
+        verdict.contains("but steer_path explains it about as well in place of sensor_delay (steer_path+relaxation_length removes "),
+        "{verdict}"
+    );
+    let row = ranked_combination(&d, "steer_path+relaxation_length");
+    assert!(row["reduction_percent"].as_f64().unwrap() > 85.0, "{row}");
+    let in_set = &d["verdict"]["in_set"][0];
+    assert_eq!(in_set["confounded"], true, "{}", d["verdict"]);
+    // The verdict's relaxation length: its folds scatter 5× its standard
+    // error, as the runs' noise alone moves them leaving out the one sweep.
+    let rl = d["verdict"]["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["name"] == "relaxation_length.relaxation_length")
+        .unwrap();
+    let (value, se) = (
+        rl["value"].as_f64().unwrap(),
+        rl["std_error"].as_f64().unwrap(),
+    );
+    assert!((value - 0.8).abs() < se, "{rl}");
+    assert!(rl["fold_std_error"].as_f64().unwrap() > 3.0 * se, "{rl}");
+    assert!(
+        rl["fold_noise_std_error"].as_f64().unwrap() > 1.3 * se,
+        "{rl}"
+    );
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("  sensor_delay+relaxation_length "))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(
+        !line.contains("the runs disagree beyond their noise"),
+        "{line}"
+    );
+}
+
+/// The row of `effects` among a diagnosis's combinations.
+fn ranked_combination<'a>(d: &'a serde_json::Value, effects: &str) -> &'a serde_json::Value {
+    d["combinations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["effect"] == effects)
+        .unwrap_or_else(|| panic!("{effects} is not among {}", d["combinations"]))
 }

@@ -20,8 +20,24 @@
 //! 7 for eight folds alike, about 1 where one fold carries the rest. Units:
 //! none (a factor of a standard error, a count).
 
+use crate::diagnose::model::replay::Prepared;
 use nalgebra::DMatrix;
 use std::ops::Range;
+
+/// The residual rows of the runs `held_out` in the all-run problem of
+/// `runs` (their rows in run order): a fold's held-out rows.
+pub(crate) fn held_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut start = 0;
+    let mut rows = Vec::new();
+    for (i, r) in runs.iter().enumerate() {
+        let n = r.count();
+        if held_out.contains(&i) {
+            rows.push(start..start + n);
+        }
+        start += n;
+    }
+    rows
+}
 
 /// `(f_j, ν_j)` for each column of the Jacobian `j` (the all-run fit's,
 /// prior rows included), each fold leaving out the rows `held[i]`; only
@@ -79,7 +95,7 @@ mod tests {
     fn runs(weights: &[f64], n: usize) -> (DMatrix<f64>, Vec<Vec<Range<usize>>>) {
         let j = DMatrix::from_fn(weights.len() * n, 1, |r, _| weights[r / n]);
         let held = (0..weights.len())
-            .map(|i| vec![i * n..(i + 1) * n])
+            .map(|i| std::iter::once(i * n..(i + 1) * n).collect())
             .collect();
         (j, held)
     }

@@ -136,21 +136,6 @@ pub(crate) fn training_rows(
     rows
 }
 
-/// The residual rows of the runs `held_out` in the all-run problem of
-/// `runs` (their rows in run order): a fold's held-out rows.
-pub(crate) fn held_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
-    let mut start = 0;
-    let mut rows = Vec::new();
-    for (i, r) in runs.iter().enumerate() {
-        let n = r.count();
-        if held_out.contains(&i) {
-            rows.push(start..start + n);
-        }
-        start += n;
-    }
-    rows
-}
-
 /// Refits `problem` (the training runs of a fold, whose residual rows are
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
 /// optimum moves little when one run of several leaves, so the all-run

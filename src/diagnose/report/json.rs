@@ -11,7 +11,7 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
     Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
 };
-use crate::diagnose::report::{words, BaseReport, ChannelChange, ParameterValue, Shrinkage};
+use crate::diagnose::report::{words, BaseReport, ChannelChange, InSet, ParameterValue, Shrinkage};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::ser::{SerializeMap, Serializer};
@@ -28,6 +28,7 @@ enum Details<'a> {
         warning_details: &'a [VerdictWarning],
         evidence: &'a [Evidence],
         confounded_with: &'a [EffectKind],
+        in_set: &'a [InSet],
     },
     NoSignificantGap {
         threshold: f64,
@@ -69,6 +70,7 @@ impl Serialize for Verdict {
                     warning_details: &e.warnings,
                     evidence: &e.evidence,
                     confounded_with: &e.confounded_with,
+                    in_set: &e.in_set,
                 },
             ),
             Verdict::NoSignificantGap(n) => (

@@ -27,8 +27,8 @@ use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence,
-    Explained, GapFinding, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary, RankWarning,
-    Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
+    Explained, GapFinding, InSet, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary,
+    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

@@ -132,6 +132,23 @@ pub struct Explained {
     /// (its look-alikes, the report's `confounded`): the verdict is one of
     /// them until a test separates them. Empty: no look-alike.
     pub confounded_with: Vec<EffectKind>,
+    /// For a verdict of several effects, each look-alike fitted in the set
+    /// in place of its first ([`InSet`]): whether the set still explains
+    /// the gap about as well with it. Empty for a single effect.
+    pub in_set: Vec<InSet>,
+}
+
+/// A look-alike of a set's first effect fitted in the set in its place.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InSet {
+    /// The set with the look-alike in place of the first effect.
+    pub effects: Vec<EffectKind>,
+    /// Its held-out reduction of the gap above noise, %.
+    pub reduction_percent: f64,
+    /// It leaves about the verdict's gap (the look-alike rule of
+    /// [`crate::diagnose::verdict::rules::lookalike`]): still confounded in
+    /// the set; false: the set tells them apart.
+    pub confounded: bool,
 }
 
 impl Explained {
@@ -551,6 +568,7 @@ mod tests {
             warnings: Vec::new(),
             evidence: Vec::new(),
             confounded_with: Vec::new(),
+            in_set: Vec::new(),
         };
         assert!(e(49.9).partial());
         assert!(!e(50.0).partial());

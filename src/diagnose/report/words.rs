@@ -19,8 +19,9 @@ pub use parameters::parameter;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
-    CalibrationSource, ChannelChange, Evidence, GapFinding, NotIdentifiable, Note, OutsideLibrary,
-    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    CalibrationSource, ChannelChange, Evidence, Explained, GapFinding, InSet, NotIdentifiable,
+    Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
+    SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -61,6 +62,7 @@ pub fn statement(v: &Verdict) -> String {
                 head
             };
             match (e.confounded_with.is_empty(), e.effects.first()) {
+                (false, Some(first)) if !e.in_set.is_empty() => in_set(head, e, *first),
                 (false, Some(first)) => format!(
                     "{head}; but {} explain{} it about as well in place of {} (confounded): the runs do not tell them apart",
                     joined(&e.confounded_with, ", "),
@@ -77,6 +79,48 @@ pub fn statement(v: &Verdict) -> String {
         Verdict::NotIdentifiable(n) => not_identifiable(n),
         Verdict::OutsideLibrary(o) => outside(o),
     }
+}
+
+/// The verdict sentence `head` of a set `e` whose first effect `first`
+/// has look-alikes fitted in the set in its place ([`InSet`]): those that
+/// do about as well stay confounded, the others the set tells apart.
+fn in_set(head: String, e: &Explained, first: EffectKind) -> String {
+    let (alike, apart): (Vec<&InSet>, Vec<&InSet>) = e.in_set.iter().partition(|s| s.confounded);
+    let each = |v: &[&InSet]| {
+        v.iter()
+            .map(|s| {
+                format!(
+                    "{} removes {:.1} %",
+                    joined(&s.effects, "+"),
+                    s.reduction_percent
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let names = |v: &[&InSet]| {
+        let n: Vec<EffectKind> = v.iter().map(|s| s.effects[0]).collect();
+        (joined(&n, ", "), if n.len() == 1 { "s" } else { "" })
+    };
+    let mut out = head;
+    if !alike.is_empty() {
+        let (who, s) = names(&alike);
+        out += &format!(
+            "; but {who} explain{s} it about as well in place of {} ({}; confounded): the runs do not tell them apart",
+            first.name(),
+            each(&alike)
+        );
+    }
+    if !apart.is_empty() {
+        let (who, s) = names(&apart);
+        out += &format!(
+            "; {who} alone explain{s} about as much as {} alone, but in its place in the set {}, against {:.1} %: the set tells them apart",
+            first.name(),
+            each(&apart),
+            e.reduction_percent
+        );
+    }
+    out
 }
 
 fn not_identifiable(n: &NotIdentifiable) -> String {

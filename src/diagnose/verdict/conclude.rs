@@ -89,6 +89,7 @@ pub(crate) fn verdict(
                 // Its look-alikes are the report's `confounded`, found
                 // after the verdict (`pipeline` fills them in).
                 confounded_with: Vec::new(),
+                in_set: Vec::new(),
             })
         }
         (VerdictKind::NoSignificantGap, _) => Verdict::NoSignificantGap(NoSignificantGap {

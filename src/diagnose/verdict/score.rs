@@ -12,10 +12,10 @@ use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::fit::fold_noise::fold_noise_factors;
+use crate::diagnose::fit::fold_noise::{fold_noise_factors, held_rows};
 use crate::diagnose::fit::global::global_best;
 use crate::diagnose::fit::problem::Problem;
-use crate::diagnose::fit::refit::{held_rows, refit, training_rows};
+use crate::diagnose::fit::refit::{refit, training_rows};
 use crate::diagnose::fit::{
     complete_curvature, fit_first_order, hold_stands, pinned, to_hold, FitOutcome, GlobalSearch,
 };

@@ -32,7 +32,7 @@
 
 use crate::diagnose::effects::{joined, set_of, EffectKind};
 use crate::diagnose::model::channels::{gap_above, reduction};
-use crate::diagnose::report::{Confounded, RankWarning, Ranked, Refused, Screened};
+use crate::diagnose::report::{Confounded, InSet, RankWarning, Ranked, Refused, Screened};
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -351,6 +351,58 @@ pub(crate) fn confounded_with(
             .map(|x| base.rank(x).reduction_percent)
             .collect(),
     }]
+}
+
+/// Each look-alike of the `chosen` set's first effect (`confounded`, as
+/// [`confounded_with`] gives them) fitted and cross-validated in the set
+/// in its place, where the set has more than one effect: the singles'
+/// likeness says nothing of the set's, which no search fitted (the search
+/// starts again from a look-alike only while a significant gap is left).
+/// Started from the look-alike's single fit with each other member's
+/// added ([`crate::diagnose::fit::layout::Layout::combined`]); a set the
+/// search already cross-validated (`tried`) is read, not fitted again.
+/// Returns each as [`InSet`] and its report row where it is new.
+pub(crate) fn in_set(
+    ctx: &Context,
+    chosen: &Scored,
+    singles: &[Scored],
+    confounded: &[Confounded],
+    base: &Baseline,
+    tried: &[Ranked],
+) -> Vec<(InSet, Option<Ranked>)> {
+    let (Some(c), true) = (confounded.first(), chosen.kinds.len() > 1) else {
+        return Vec::new();
+    };
+    let single = |e: EffectKind| singles.iter().find(|s| s.kinds[0] == e);
+    let g_chosen = gap_above(chosen.heldout.combined(&base.scales()), base.jn);
+    c.effects[1..]
+        .par_iter()
+        .filter_map(|&other| {
+            let mut kinds = vec![other];
+            kinds.extend_from_slice(&chosen.kinds[1..]);
+            let known = tried.iter().find(|r| set_of(&r.effects) == set_of(&kinds));
+            let (r, new) = match known {
+                Some(r) => (r.clone(), false),
+                None => {
+                    let mut start = single(other)?.full.params.clone();
+                    for (k, &e) in chosen.kinds[1..].iter().enumerate() {
+                        start =
+                            base.layout(&kinds[..=k])
+                                .combined(&start, e, &single(e)?.full.params);
+                    }
+                    let salt = other.seed().wrapping_add(2);
+                    (base.rank(&ctx.score(kinds.clone(), &[start], salt)), true)
+                }
+            };
+            let gap = gap_above(r.heldout_error_after, base.jn);
+            let row = InSet {
+                effects: kinds,
+                reduction_percent: r.reduction_percent,
+                confounded: rules::lookalike(r.reduction_percent, gap, g_chosen, base.jn),
+            };
+            Some((row, new.then_some(r)))
+        })
+        .collect()
 }
 
 #[cfg(test)]

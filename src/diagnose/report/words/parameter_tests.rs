@@ -131,7 +131,11 @@ fn folds_the_runs_noise_alone_moves_far_are_not_said_to_understate() {
     assert!(v.clone().with_folds(&folds, Some((2.5, 4.0))).understated());
     let one = v.clone().with_folds(&folds, Some((2.5, 1.0)));
     assert!(!one.understated());
-    assert!((one.fold_limit() - 3.34).abs() < 0.05, "{}", one.fold_limit());
+    assert!(
+        (one.fold_limit() - 3.34).abs() < 0.05,
+        "{}",
+        one.fold_limit()
+    );
     assert_eq!(
         parameter(&far),
         "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 4× the ± 9.30e-3 the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)"

@@ -19,6 +19,7 @@ fn explained(reduction_percent: f64) -> Verdict {
         warnings: Vec::new(),
         evidence: Vec::new(),
         confounded_with: Vec::new(),
+        in_set: Vec::new(),
     })
 }
 
@@ -87,6 +88,32 @@ fn an_explained_verdict_with_a_look_alike_says_it_is_one_of_them() {
     assert_eq!(
         statement(&v),
         "sensor_delay+relaxation_length explains the gap: held-out error 3.628 → 1.073 (noise level 0.941), 85.3 % of the gap above noise removed; but steer_path explains it about as well in place of sensor_delay (confounded): the runs do not tell them apart"
+    );
+}
+
+#[test]
+fn a_sets_look_alike_fitted_in_its_place_is_confounded_or_told_apart_by_the_set() {
+    use crate::diagnose::report::InSet;
+    use EffectKind::{RelaxationLength as R, SteerPath as S, YawInertia as Y};
+    let mut v = explained(85.3);
+    if let Verdict::Explained(e) = &mut v {
+        e.confounded_with = vec![S, Y];
+        e.in_set = vec![
+            InSet {
+                effects: vec![S, R],
+                reduction_percent: 86.1,
+                confounded: true,
+            },
+            InSet {
+                effects: vec![Y, R],
+                reduction_percent: 40.2,
+                confounded: false,
+            },
+        ];
+    }
+    assert_eq!(
+        statement(&v),
+        "sensor_delay+relaxation_length explains the gap: held-out error 3.628 → 1.073 (noise level 0.941), 85.3 % of the gap above noise removed; but steer_path explains it about as well in place of sensor_delay (steer_path+relaxation_length removes 86.1 %; confounded): the runs do not tell them apart; yaw_inertia alone explains about as much as sensor_delay alone, but in its place in the set yaw_inertia+relaxation_length removes 40.2 %, against 85.3 %: the set tells them apart"
     );
 }
 

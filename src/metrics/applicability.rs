@@ -289,6 +289,30 @@ impl Steep {
     }
 }
 
+/// The warning on a step steer of `amplitude` (rad) that rises in
+/// `rise_time` (s, 0–100 %) faster than [`STEER_RATE`]: at 0 an instant
+/// step, an infinite steer rate. None where a steering system drives it.
+pub fn step_rate_applicability(amplitude: f64, rise_time: f64) -> Option<String> {
+    let rate = amplitude.abs() / rise_time;
+    if rate <= STEER_RATE {
+        return None;
+    }
+    let how = if rise_time <= 0.0 {
+        "rise_time = 0: an instant step, an infinite steer rate".to_string()
+    } else {
+        format!(
+            "the step of {:.3} rad rises in {} s, {:.1} rad/s ({:.0}°/s at the road wheels)",
+            amplitude.abs(),
+            rise_time,
+            rate,
+            rate.to_degrees()
+        )
+    };
+    Some(format!(
+        "{how}, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s; GB/T 6323 and ISO 7401 time a step of 0.1–0.2 s): the response times measure an input no driver or robot can give"
+    ))
+}
+
 /// The warnings on a schedule (`t`, `steer`, `speed` at breakpoints,
 /// linear between) for a car whose tyres on this road grip to `mu`: its
 /// speed's ([`speed_schedule`]), a steer rate above [`STEER_RATE`], and a
@@ -425,6 +449,20 @@ mod tests {
             ..moderate()
         };
         assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+    }
+
+    #[test]
+    fn a_step_faster_than_any_steering_is_said_and_an_instant_one_named() {
+        // The bundled 1° step in 0.1 s, and a 17° one: a steering drives them.
+        assert_eq!(step_rate_applicability(0.0174533, 0.1), None);
+        assert_eq!(step_rate_applicability(0.3, 0.1), None);
+        let w = step_rate_applicability(0.7, 0.1).unwrap();
+        assert!(w.starts_with("the step of 0.700 rad rises in 0.1 s, 7.0 rad/s (401°/s at the road wheels), faster than a steering system"), "{w}");
+        let w = step_rate_applicability(0.0174533, 0.0).unwrap();
+        assert!(
+            w.starts_with("rise_time = 0: an instant step, an infinite steer rate, faster"),
+            "{w}"
+        );
     }
 
     #[test]

@@ -2,7 +2,8 @@
 //! run as a user runs the tool: a replay's noise floors against
 //! `diagnose`'s, a `degrees` naming no column, the numbers' digits, a
 //! set's look-alike claimed confounded without a fit, and folds said to
-//! disagree beyond their noise on the campaign's own truth.
+//! disagree beyond their noise on the campaign's own truth, an instant
+//! steer step run without a word.
 //! Each test one finding.
 
 use super::*;
@@ -306,4 +307,30 @@ fn ranked_combination<'a>(d: &'a serde_json::Value, effects: &str) -> &'a serde_
         .iter()
         .find(|r| r["effect"] == effects)
         .unwrap_or_else(|| panic!("{effects} is not among {}", d["combinations"]))
+}
+
+/// `rise_time = 0` ran an instant step (an infinite steer rate) and wrote
+/// its response times without a word, where a schedule steering faster
+/// than 5 rad/s was warned of.
+#[test]
+fn a_step_no_steering_can_drive_is_said() {
+    let text = bundled_scenario("sedan_step.toml");
+    assert!(text.contains("rise_time = 0.1\n"), "{text}");
+    for (rise, said) in [
+        ("0.0", "warning: rise_time = 0: an instant step, an infinite steer rate, faster than a steering system turns the wheels"),
+        ("0.001", "warning: the step of 0.017 rad rises in 0.001 s, 17.5 rad/s (1000°/s at the road wheels), faster than a steering system"),
+    ] {
+        let dir = scratch(&[("scenario.toml", &text.replace("rise_time = 0.1\n", &format!("rise_time = {rise}\n")))]);
+        let (ok, out, err) = crate::trips_simulate::simulated(dir.path());
+        assert!(ok, "{err}");
+        assert!(out.contains(said), "{rise}: {out}");
+    }
+    // The bundled 0.1 s rise: no word.
+    let dir = scratch(&[("scenario.toml", &text)]);
+    let (ok, out, err) = crate::trips_simulate::simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        !out.contains("steer rate") && !out.contains("rises in"),
+        "{out}"
+    );
 }

@@ -17,7 +17,7 @@ use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
 use crate::metrics::applicability::{
-    applicability_with_grip, schedule_applicability, Grip, Overshoot,
+    applicability_with_grip, schedule_applicability, step_rate_applicability, Grip, Overshoot,
 };
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, Style};
@@ -143,6 +143,10 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             peak_share.map(Overshoot::GripUsed),
         )
     });
+    // A step no steering can drive (an instant one, at rise_time = 0).
+    if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
+        warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));
+    }
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.
     if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {

@@ -22,8 +22,10 @@ def test_simulate_returns_arrays_and_the_cli_metrics(root, tmp_path):
     assert (tmp_path / "response.png").exists()
     csv = np.genfromtxt(tmp_path / "history.csv", delimiter=",", names=True)
     assert list(csv.dtype.names) == list(h)
+    # history.csv carries nine significant digits (an integration to 1e-9):
+    # each value to within half a unit of its ninth.
     for c in h:
-        assert np.allclose(csv[c], h[c], rtol=1e-12, atol=0), c
+        assert np.allclose(csv[c], h[c], rtol=1e-8, atol=0), c
     # README example: 16.90 % overshoot, 3.7096 1/s gain.
     assert m.yaw_rate_overshoot == pytest.approx(16.90, abs=0.01)
     assert m.yaw_rate_gain == pytest.approx(3.7096, abs=1e-4)

@@ -51,7 +51,7 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{CalibrationSource, GapFinding, InSet, Note, Unseen};
+use crate::diagnose::report::{CalibrationSource, Confounded, GapFinding, InSet, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
 use crate::diagnose::campaign::Campaign;
@@ -399,13 +399,15 @@ fn run(
         Search::default()
     };
     let chosen = found.chosen.as_ref();
-    let confounded = chosen.map_or_else(Vec::new, |sc| {
+    let mut confounded = chosen.map_or_else(Vec::new, |sc| {
         confounded_with(sc, &singles, &found.lookalikes, &base)
     });
-    // A set's look-alikes fitted in it: their rows join the combinations.
+    // A set's look-alikes fitted in it: their rows join the combinations,
+    // and those the set tells apart are confounded no longer.
     let swapped = chosen.map_or_else(Vec::new, |sc| {
         in_set(&ctx, sc, &singles, &confounded, &base, &found.combinations)
     });
+    told_apart(&mut confounded, &swapped);
 
     // Before and after on held-out runs, per channel, window and regime.
     let (base_obs, after_obs) = before_after(&ctx, chosen);
@@ -429,8 +431,10 @@ fn run(
         &calibrated,
     );
     // The verdict is one of its look-alikes until a test separates them.
-    if let (Verdict::Explained(e), Some(c)) = (&mut verdict, confounded.first()) {
-        e.confounded_with = c.effects[1..].to_vec();
+    if let Verdict::Explained(e) = &mut verdict {
+        if let Some(c) = confounded.first() {
+            e.confounded_with = c.effects[1..].to_vec();
+        }
         e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
@@ -479,4 +483,53 @@ fn with_rows(mut rows: Vec<Ranked>, swapped: &[(InSet, Option<Ranked>)]) -> Vec<
     rows.extend(swapped.iter().filter_map(|(_, r)| r.clone()));
     rows.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
     rows
+}
+
+/// Drops from `confounded` the look-alikes the verdict's set tells apart
+/// ([`in_set`]: fitted in its first effect's place, the set does clearly
+/// worse), and the group where one effect is left.
+fn told_apart(confounded: &mut Vec<Confounded>, swapped: &[(InSet, Option<Ranked>)]) {
+    let apart: Vec<EffectKind> = swapped
+        .iter()
+        .filter(|(s, _)| !s.confounded)
+        .map(|(s, _)| s.effects[0])
+        .collect();
+    for c in confounded.iter_mut() {
+        let keep: Vec<bool> = c.effects.iter().map(|e| !apart.contains(e)).collect();
+        let mut k = keep.iter();
+        c.effects.retain(|_| *k.next().unwrap_or(&true));
+        let mut k = keep.iter();
+        c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
+    }
+    confounded.retain(|c| c.effects.len() > 1);
+}
+
+#[cfg(test)]
+mod told_apart_tests {
+    use super::*;
+    use EffectKind::{AeroLoad as A, RoadFriction as F, SensorBias as B, SteerPath as S};
+
+    #[test]
+    fn a_look_alike_the_set_tells_apart_is_confounded_no_longer() {
+        let row = |effects: Vec<EffectKind>, confounded| {
+            let s = InSet {
+                effects,
+                reduction_percent: 50.0,
+                confounded,
+            };
+            (s, None)
+        };
+        let group = || Confounded {
+            effects: vec![A, S, F],
+            reduction_percent: vec![90.0, 89.0, 88.0],
+        };
+        let mut c = vec![group()];
+        told_apart(&mut c, &[row(vec![S, B], true), row(vec![F, B], false)]);
+        assert_eq!(c[0].effects, [A, S]);
+        assert_eq!(c[0].reduction_percent, [90.0, 89.0]);
+        // Every look-alike told apart: no group is left.
+        let mut c = vec![group()];
+        told_apart(&mut c, &[row(vec![S, B], false), row(vec![F, B], false)]);
+        assert!(c.is_empty());
+    }
 }

@@ -66,6 +66,13 @@ pub enum ParamReason {
         /// The record's end, s.
         end: f64,
     },
+    /// A step steer starting inside the metrics' initial window (0 to
+    /// `pre_window`), which measures the straight running before it, s.
+    #[error("the step starts inside the metrics' initial window (0 to `pre_window` = {} s), which measures the straight running before the step: the initial values would be the step's own; start the step at {} s or later, or shorten `[metrics] pre_window`", super::number::Num(*pre_window), super::number::Num(*pre_window))]
+    StepInInitialWindow {
+        /// The initial-value window, s.
+        pre_window: f64,
+    },
     /// Zero or negative where only positive values are physical.
     #[error("must be positive")]
     NotPositive,

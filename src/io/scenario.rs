@@ -404,11 +404,21 @@ fn step_steer(
 }
 
 /// A step steer's `[metrics]` windows against its record, refused at the
-/// longer window's key: found when the scenario is read, not after the run.
+/// longer window's key, and its start against the initial window, refused
+/// at `start`: found when the scenario is read, not after the run.
 fn check_windows(src: &TomlSource, s: &MetricSettings, m: &Manoeuvre) -> Result<(), InputError> {
     let Manoeuvre::StepSteer(step) = m else {
         return Ok(());
     };
+    // The initial values are the straight running before the step
+    // (`metrics` on the history refuses a record that starts at its step).
+    if step.start < s.pre_window {
+        let reason = ParamReason::StepInInitialWindow {
+            pre_window: s.pre_window,
+        };
+        let e = ParamError::new("start", step.start, reason);
+        return Err(param_error(src, Some("manoeuvre"), e));
+    }
     if s.pre_window + s.steady_window < step.end {
         return Ok(());
     }

@@ -3,7 +3,7 @@
 //! `diagnose`'s, a `degrees` naming no column, the numbers' digits, a
 //! set's look-alike claimed confounded without a fit, and folds said to
 //! disagree beyond their noise on the campaign's own truth, an instant
-//! steer step run without a word.
+//! steer step run without a word, a step at 0 s measured 10× wrong.
 //! Each test one finding.
 
 use super::*;
@@ -331,6 +331,36 @@ fn a_step_no_steering_can_drive_is_said() {
     assert!(ok, "{err}");
     assert!(
         !out.contains("steer rate") && !out.contains("rises in"),
+        "{out}"
+    );
+}
+
+/// A step at `start = 0`: `simulate` printed a gain of 18.2 1/s and a
+/// step of −0.11° for a −1.15° step (its initial window held the step),
+/// where `metrics` on the same history refused the record.
+#[test]
+fn a_step_inside_the_initial_window_is_refused_at_its_start() {
+    let text = bundled_scenario("sedan_step.toml");
+    assert!(text.contains("start = 1.0\n"), "{text}");
+    let dir = scratch(&[(
+        "scenario.toml",
+        &text.replace("start = 1.0\n", "start = 0.0\n"),
+    )]);
+    let (ok, _, err) = crate::trips_simulate::simulated(dir.path());
+    assert!(!ok);
+    assert!(
+        err.contains("scenario.toml:23:9: `manoeuvre.start` = 0: the step starts inside the metrics' initial window (0 to `pre_window` = 0.5 s)"),
+        "{err}"
+    );
+    // At the window's end it is measured.
+    let dir = scratch(&[(
+        "scenario.toml",
+        &text.replace("start = 1.0\n", "start = 0.5\n"),
+    )]);
+    let (ok, out, err) = crate::trips_simulate::simulated(dir.path());
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("yaw-rate gain                3.7096 1/s"),
         "{out}"
     );
 }

@@ -62,7 +62,7 @@ pub fn statement(v: &Verdict) -> String {
                 head
             };
             match (e.confounded_with.is_empty(), e.effects.first()) {
-                (false, Some(first)) if !e.in_set.is_empty() => in_set(head, e, *first),
+                (_, Some(first)) if !e.in_set.is_empty() => in_set(head, e, *first),
                 (false, Some(first)) => format!(
                     "{head}; but {} explain{} it about as well in place of {} (confounded): the runs do not tell them apart",
                     joined(&e.confounded_with, ", "),

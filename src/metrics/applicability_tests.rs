@@ -1,0 +1,236 @@
+//! Tests of the step steer's applicability warnings (`applicability.rs`).
+
+use super::*;
+
+/// Metrics of a well-behaved step: 0.5° sideslip, 12 % overshoot.
+fn moderate() -> StepMetrics {
+    StepMetrics {
+        steer_step: 0.02,
+        time_zero: 1.0,
+        yaw_rate_response_time: 0.15,
+        yaw_rate_peak_time: Some(0.3),
+        yaw_rate_overshoot: 12.0,
+        ay_response_time: Some(0.2),
+        yaw_rate_gain: 0.3,
+        yaw_rate_steady: 0.006,
+        ay_steady: Some(2.0),
+        beta_steady: Some(-0.5_f64.to_radians()),
+        tb: Some(0.15),
+        yaw_rate_total_variance: 0.2,
+        ay_total_variance: Some(0.2),
+        er: Some(0.3),
+        settled: true,
+        yaw_rate_noise: 0.0,
+        yaw_rate_peak_threshold: 1.0,
+        filter_hz: None,
+    }
+}
+
+#[test]
+fn a_step_below_the_limit_at_test_speed_gets_no_warning() {
+    assert!(applicability(&moderate(), Some(22.2)).is_empty());
+    assert!(applicability(&moderate(), None).is_empty());
+}
+
+#[test]
+fn a_slide_a_spin_and_a_crawl_are_each_said() {
+    let sliding = StepMetrics {
+        beta_steady: Some(-18.8_f64.to_radians()),
+        ..moderate()
+    };
+    let w = applicability(&sliding, Some(22.2));
+    assert_eq!(w.len(), 1);
+    assert!(
+        w[0].starts_with("the steady sideslip is -18.8°, beyond 10°"),
+        "{w:?}"
+    );
+    let spinning = StepMetrics {
+        yaw_rate_overshoot: 503.6,
+        ..moderate()
+    };
+    let w = applicability(&spinning, Some(22.2));
+    assert!(
+        w[0].contains("overshoots its steady value by 504 %"),
+        "{w:?}"
+    );
+    let w = applicability(&moderate(), Some(0.5));
+    assert!(
+        w[0].starts_with("the step is at 0.50 m/s, below 5 m/s"),
+        "{w:?}"
+    );
+    // The limits themselves pass: 10° and 100 % are still a response.
+    let edge = StepMetrics {
+        beta_steady: Some(SLIDING_SIDESLIP),
+        yaw_rate_overshoot: SPIN_OVERSHOOT,
+        ..moderate()
+    };
+    assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
+}
+
+#[test]
+fn a_step_faster_than_any_steering_is_said_and_an_instant_one_named() {
+    // The bundled 1° step in 0.1 s, and a 17° one: a steering drives them.
+    assert_eq!(step_rate_applicability(0.0174533, 0.1), None);
+    assert_eq!(step_rate_applicability(0.3, 0.1), None);
+    let w = step_rate_applicability(0.7, 0.1).unwrap();
+    assert!(w.starts_with("the step of 0.700 rad rises in 0.1 s, 7.0 rad/s (401°/s at the road wheels), faster than a steering system"), "{w}");
+    let w = step_rate_applicability(0.0174533, 0.0).unwrap();
+    assert!(
+        w.starts_with("rise_time = 0: an instant step, an infinite steer rate, faster"),
+        "{w}"
+    );
+}
+
+#[test]
+fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
+    let ringing = StepMetrics {
+        yaw_rate_overshoot: 229.0,
+        ..moderate()
+    };
+    let said = |e: Option<Overshoot>| applicability_with_grip(&ringing, Some(80.0), None, e);
+    // The tyres at a third of their grip, or the car within 2.2° of
+    // sideslip: no spin.
+    let w = said(Some(Overshoot::GripUsed(0.35)));
+    assert!(
+        w[0].contains("using no more than 35 % of their grip: no spin"),
+        "{w:?}"
+    );
+    let w = said(Some(Overshoot::Sideslip(2.2_f64.to_radians())));
+    assert!(
+        w[0].contains("with the sideslip within ±2.2° throughout"),
+        "{w:?}"
+    );
+    assert!(!w[0].contains("spinning"), "{w:?}");
+    // At the limits themselves (half the grip is used, 10° is a
+    // slide's least) and beyond, or with nothing to judge by: a spin.
+    for e in [
+        Some(Overshoot::GripUsed(KINEMATIC_GRIP)),
+        Some(Overshoot::Sideslip(SLIDING_SIDESLIP + 1e-9)),
+        None,
+    ] {
+        let w = said(e);
+        assert!(
+            w[0].ends_with("not the handling response the metrics describe"),
+            "{e:?}: {w:?}"
+        );
+    }
+    // A measured run without `beta`: both readings are said.
+    let w = said(Some(Overshoot::NoSideslip));
+    assert!(
+        w[0].contains("spinning") && w[0].contains("no `beta` to tell them apart"),
+        "{w:?}"
+    );
+    // An overshoot within a response's is no warning whatever the evidence.
+    assert!(
+        applicability_with_grip(&moderate(), Some(80.0), None, Some(Overshoot::NoSideslip))
+            .is_empty()
+    );
+}
+
+#[test]
+fn a_sideslip_with_the_tyres_far_below_their_grip_is_said_as_a_kinematic_turn() {
+    // 17.8° at 2 m/s after a 28.6° step, 0.78 m/s² steady.
+    let slow = StepMetrics {
+        steer_step: 0.5,
+        beta_steady: Some(17.8_f64.to_radians()),
+        ay_steady: Some(0.78),
+        ..moderate()
+    };
+    let w = applicability_with_grip(&slow, Some(2.0), Some(Grip::Tyres(9.8)), None);
+    assert!(
+        w[1].starts_with("the steady sideslip is 17.8°, beyond 10°, but no slide: the tyres use no more than 8 % of their grip, and at 2.00 m/s the 28.6° steer"),
+        "{w:?}"
+    );
+    // At half the grip and above, or with the grip unknown: a slide.
+    for grip in [Some(1.56), None] {
+        let w = applicability_with_grip(&slow, Some(2.0), grip.map(Grip::Tyres), None);
+        assert!(w[1].contains("the car is sliding, past its grip"), "{w:?}");
+    }
+}
+
+#[test]
+fn a_schedule_braking_past_the_roads_grip_or_crawling_is_said() {
+    // 40 → 1 m/s in 0.5 s: 78 m/s², 8 g; then 6.5 s at 1 m/s plus the
+    // last 0.064 s of the drop below 5 m/s.
+    let (t, u) = ([0.0, 1.0, 1.5, 8.0], [40.0, 40.0, 1.0, 1.0]);
+    let w = speed_schedule(&t, &u, 1.0);
+    assert_eq!(w.len(), 2, "{w:?}");
+    assert!(
+        w[0].starts_with("the speed falls at 78.0 m/s² (8.0 g) from t = 1 s to 1.5 s, more than the tyres' grip on this road gives (μ·g = 9.8 m/s²)"),
+        "{w:?}"
+    );
+    let crawl = 6.5 + 0.5 * 4.0 / 39.0;
+    assert!(
+        w[1].starts_with(&format!("the schedule spends {crawl:.1} s below 5 m/s")),
+        "{w:?}"
+    );
+    // At μ·g and above the crawl speed: nothing to say.
+    let g = crate::constants::G;
+    assert!(speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - g], 1.0).is_empty());
+    // Two hard brakings and a launch: all three counted, the steepest
+    // named.
+    let (t, u) = (
+        [0.0, 1.0, 2.0, 3.0, 3.5, 4.0],
+        [40.0, 20.0, 20.0, 40.0, 10.0, 10.0],
+    );
+    let w = speed_schedule(&t, &u, 1.0);
+    assert!(
+        w[0].starts_with("the speed falls at 60.0 m/s² (6.1 g) from t = 3 s to 3.5 s (the steepest of 3 pieces beyond the limit, 2.50 s in all), more than"),
+        "{w:?}"
+    );
+    // On ice the same 0.5 g braking is past the grip.
+    let w = speed_schedule(&[0.0, 1.0], &[20.0, 20.0 - 0.5 * g], 0.3);
+    assert!(
+        w[0].starts_with("the speed falls at 4.9 m/s² (0.5 g)"),
+        "{w:?}"
+    );
+}
+
+#[test]
+fn a_measured_step_at_varying_speed_is_said_and_a_noise_spike_is_not() {
+    // 20 → 25 m/s over the piece: 24 % of the median.
+    let rising: Vec<f64> = (0..=100).map(|i| 20.0 + 0.05 * f64::from(i)).collect();
+    let w = varying_speed(&rising, true).expect("a 24 % change is said");
+    assert!(
+        w.starts_with("the speed rises over the measured piece, between 20.25 and 24.75 m/s (5th to 95th percentile; 20 % of its median 22.50 m/s)"),
+        "{w}"
+    );
+    assert!(varying_speed(&rising, false)
+        .unwrap()
+        .starts_with("the speed falls over"));
+    // Constant 20 m/s with two samples of 40 (a spike): nothing.
+    let mut spiky = vec![20.0; 100];
+    spiky.extend([40.0, 40.0]);
+    assert_eq!(varying_speed(&spiky, true), None);
+    // 8.6 % is within the limit.
+    let slow: Vec<f64> = (0..=100).map(|i| 20.0 + 0.02 * f64::from(i)).collect();
+    assert_eq!(varying_speed(&slow, true), None);
+    assert_eq!(varying_speed(&[], true), None);
+}
+
+#[test]
+fn a_steer_faster_than_a_steering_system_or_applied_at_the_start_is_said() {
+    // 0 → 0.5 rad in 1 ms: 500 rad/s.
+    let (t, u) = ([0.0, 1.0, 1.001, 3.0], [30.0; 4]);
+    let w = schedule_applicability(&t, &[0.0, 0.0, 0.5, 0.5], &u, 1.0);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("the steer changes at 500.0 rad/s (28648°/s at the road wheels) from t = 1 s to 1.001 s"),
+        "{w:?}"
+    );
+    // Just within the limit: nothing to say.
+    let edge = [
+        0.0,
+        0.0,
+        0.99 * STEER_RATE * 0.001,
+        0.99 * STEER_RATE * 0.001,
+    ];
+    assert!(schedule_applicability(&t, &edge, &u, 1.0).is_empty());
+    // A first steer other than 0: an instant step at the start.
+    let w = schedule_applicability(&[0.5, 3.0], &[0.1, 0.1], &[30.0, 30.0], 1.0);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("the schedule starts with steer = 0.1 rad at t = 0.5 s, but the run starts from straight running"),
+        "{w:?}"
+    );
+}

@@ -71,6 +71,16 @@ fn a_confounded_delay_gets_a_manoeuvre_whose_speed_changes_written_as_a_scenario
     // Its scenario file runs in `simulate` as written.
     let name = best["name"].as_str().unwrap();
     let scenario = design.join("scenarios").join(format!("{name}.toml"));
+    // Its schedule with the digits it carries (`20.899999998637263` and
+    // `1.1400000000000001` were written).
+    let written = fs::read_to_string(&scenario).unwrap();
+    for key in ["t = [", "steer = [", "speed = ["] {
+        let line = written.lines().find(|l| l.starts_with(key)).unwrap();
+        for v in line[key.len()..line.len() - 1].split(", ") {
+            let digits = v.chars().filter(char::is_ascii_digit).count();
+            assert!(digits <= 12 && v.parse::<f64>().is_ok(), "{v} in {line}");
+        }
+    }
     let sim = dir.path().join("sim");
     let o = run(&[
         "simulate",

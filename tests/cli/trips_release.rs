@@ -7,6 +7,7 @@
 //! Each test one finding.
 
 use super::*;
+use crate::trips_run_units::metrics;
 
 /// A logged step at 100 Hz for 6 s (0.02 rad at 1 s, 20 m/s, first-order
 /// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and the
@@ -101,15 +102,6 @@ fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
     }
     // The smooth sideslip is no longer trusted to its own 1e-6 scatter.
     assert_eq!(gap["noise"][1]["source"], "estimated");
-}
-
-/// `metrics` of `path` with `extra` options: success, stdout and stderr.
-fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
-    let mut args = vec!["metrics", path.to_str().unwrap()];
-    args.extend_from_slice(extra);
-    let o = run(&args);
-    let said = String::from_utf8_lossy(&o.stdout).into_owned();
-    (o.status.success(), said, stderr(&o))
 }
 
 /// `--degrees beta` on a file whose sideslip column is `beta_deg` converted

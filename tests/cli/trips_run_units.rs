@@ -55,7 +55,7 @@ fn replay_scenario(run: &Path, name: &str, extra: &str) -> PathBuf {
 }
 
 /// `metrics` of `path` with `extra` options: success, stdout and stderr.
-fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
+pub(super) fn metrics(path: &Path, extra: &[&str]) -> (bool, String, String) {
     let mut args = vec!["metrics", path.to_str().unwrap()];
     args.extend_from_slice(extra);
     let o = run(&args);

@@ -171,9 +171,17 @@ fn vehicle_table(c: &Campaign) -> String {
 /// How every scenario file a design writes begins.
 const DESIGNED_HEADER: &str = "# Designed by `handling design ";
 
-/// A number as TOML writes it (always with its decimal point or exponent).
+/// A number of a designed schedule as TOML reads it back (always with its
+/// decimal point or exponent), to the nine significant digits a schedule
+/// carries ([`crate::format::carried`]): its breakpoints are a search's
+/// arithmetic, `20.899999998637263` is 20.9 m/s.
 fn num(v: f64) -> String {
-    format!("{v:?}")
+    let s = crate::format::carried(v, 9);
+    if s.contains(['.', 'e', 'E']) || !v.is_finite() {
+        s
+    } else {
+        s + ".0"
+    }
 }
 
 fn list(v: &[f64]) -> String {

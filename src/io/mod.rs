@@ -24,7 +24,10 @@ mod toml_file;
 
 pub use crate::measured::MeasuredRun;
 pub use columns::{read_columns, Columns};
-pub use run::{read_run, read_run_reading, read_run_with, AngleColumn, DeclaredBy};
+pub use run::{
+    read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
+    DeclaredBy,
+};
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub use tables::load_tyre_with_ranges;
 pub use toml_file::{load_toml, param_error, TomlSource};

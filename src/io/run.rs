@@ -99,14 +99,46 @@ pub fn read_run_with(
     read_run_reading(path, (degrees, by), &OPTIONAL_CHANNELS).map(|(run, _)| run)
 }
 
+/// A declared column a run file does not have, with the refusal a job
+/// that reads that file alone gives.
+pub type AbsentColumn = (AngleColumn, InputError);
+
+/// [`read_run_with`] for one file of several (a campaign's `[runs]
+/// degrees`, where a sensor may be on some runs only): a declared column
+/// the file lacks is left out and returned with its refusal, for the
+/// caller to refuse where every file lacks it.
+pub fn read_run_declared(
+    path: &Path,
+    degrees: &[AngleColumn],
+) -> Result<(MeasuredRun, Vec<AbsentColumn>), InputError> {
+    read_run_lacking(
+        path,
+        (degrees, DeclaredBy::CampaignRuns),
+        &OPTIONAL_CHANNELS,
+        true,
+    )
+    .map(|(run, _, absent)| (run, absent))
+}
+
 /// [`read_run_with`] reading of the optional channels only `optional` (a
 /// job that uses no more): the others are neither read nor checked, and
 /// are returned by name where the file has them, for the job to say.
 pub fn read_run_reading(
     path: &Path,
-    (degrees, by): (&[AngleColumn], DeclaredBy),
+    declared_by: (&[AngleColumn], DeclaredBy),
     optional: &[&str],
 ) -> Result<(MeasuredRun, Vec<&'static str>), InputError> {
+    read_run_lacking(path, declared_by, optional, false).map(|(run, unread, _)| (run, unread))
+}
+
+/// [`read_run_reading`], with a declared column the file lacks refused
+/// (`lacking` false) or left out and returned ([`read_run_declared`]).
+fn read_run_lacking(
+    path: &Path,
+    (degrees, by): (&[AngleColumn], DeclaredBy),
+    optional: &[&str],
+    lacking: bool,
+) -> Result<(MeasuredRun, Vec<&'static str>, Vec<AbsentColumn>), InputError> {
     let mut c = read_columns(path, &["t", "speed", "steer", "yaw_rate"], optional)?;
     // A column named twice is converted once: it is in degrees or not.
     let mut declared: Vec<AngleColumn> = Vec::new();
@@ -117,20 +149,22 @@ pub fn read_run_reading(
     }
     // A declaration of a column the file does not have converts nothing:
     // a misspelt header would then be read as no channel at all.
-    if let Some(a) = declared
-        .iter()
-        .find(|a| !c.header.iter().any(|h| h == a.name()))
-    {
-        return Err(InputError::problem_at(
-            path,
-            c.header_line,
-            1,
-            InputProblem::DegreesColumnAbsent {
+    let mut absent: Vec<AbsentColumn> = Vec::new();
+    declared.retain(|a| {
+        let has = c.header.iter().any(|h| h == a.name());
+        if !has {
+            let problem = InputProblem::DegreesColumnAbsent {
                 column: a.name(),
                 by: by.words(),
                 header: c.header.clone(),
-            },
-        ));
+            };
+            absent.push((*a, InputError::problem_at(path, c.header_line, 1, problem)));
+        }
+        has
+    });
+    // A job that reads this file alone refuses the first it lacks.
+    if !lacking && !absent.is_empty() {
+        return Err(absent.swap_remove(0).1);
     }
     let unread: Vec<&'static str> = OPTIONAL_CHANNELS
         .into_iter()
@@ -204,7 +238,7 @@ pub fn read_run_reading(
         ax: c.take_optional("ax"),
         masked: Vec::new(),
     };
-    Ok((run, unread))
+    Ok((run, unread, absent))
 }
 
 #[cfg(test)]

@@ -289,6 +289,12 @@ impl Steep {
     }
 }
 
+/// What a steer rate beyond [`STEER_RATE`] is beyond, its bracket left
+/// open for the sentence's own reference.
+fn beyond_steering() -> String {
+    format!("faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s")
+}
+
 /// The warning on a step steer of `amplitude` (rad) that rises in
 /// `rise_time` (s, 0–100 %) faster than [`STEER_RATE`]: at 0 an instant
 /// step, an infinite steer rate. None where a steering system drives it.
@@ -309,7 +315,8 @@ pub fn step_rate_applicability(amplitude: f64, rise_time: f64) -> Option<String>
         )
     };
     Some(format!(
-        "{how}, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s; GB/T 6323 and ISO 7401 time a step of 0.1–0.2 s): the response times measure an input no driver or robot can give"
+        "{how}, {}; GB/T 6323 and ISO 7401 time a step of 0.1–0.2 s): the response times measure an input no driver or robot can give",
+        beyond_steering()
     ))
 }
 
@@ -322,10 +329,11 @@ pub fn schedule_applicability(t: &[f64], steer: &[f64], speed: &[f64], mu: f64) 
     if let Some(steep) = steeper_than(t, steer, STEER_RATE) {
         let rate = steep.rate;
         out.push(format!(
-            "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) {}, faster than a steering system turns the wheels (up to about {STEER_RATE} rad/s; a steering robot's 3,000°/s at the handwheel is about 3.5 rad/s): the run shows a step no driver or robot can steer",
+            "the steer changes at {:.1} rad/s ({:.0}°/s at the road wheels) {}, {}): the run shows a step no driver or robot can steer",
             rate.abs(),
             rate.abs().to_degrees(),
-            steep.when()
+            steep.when(),
+            beyond_steering()
         ));
     }
     if let (Some(&d0), Some(&t0)) = (steer.first(), t.first()) {

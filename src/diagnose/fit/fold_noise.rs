@@ -24,19 +24,25 @@ use crate::diagnose::model::replay::Prepared;
 use nalgebra::DMatrix;
 use std::ops::Range;
 
-/// The residual rows of the runs `held_out` in the all-run problem of
-/// `runs` (their rows in run order): a fold's held-out rows.
-pub(crate) fn held_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<std::ops::Range<usize>> {
+/// The residual rows, in the all-run problem of `runs` (their rows in run
+/// order), of the runs `pick` takes: a fold's held-out rows, or its
+/// training rows ([`crate::diagnose::fit::refit::training_rows`]).
+pub(crate) fn run_rows(runs: &[Prepared], pick: impl Fn(usize) -> bool) -> Vec<Range<usize>> {
     let mut start = 0;
     let mut rows = Vec::new();
     for (i, r) in runs.iter().enumerate() {
         let n = r.count();
-        if held_out.contains(&i) {
+        if pick(i) {
             rows.push(start..start + n);
         }
         start += n;
     }
     rows
+}
+
+/// The residual rows of the runs `held_out`: a fold's held-out rows.
+pub(crate) fn held_rows(runs: &[Prepared], held_out: &[usize]) -> Vec<Range<usize>> {
+    run_rows(runs, |i| held_out.contains(&i))
 }
 
 /// `(f_j, ν_j)` for each column of the Jacobian `j` (the all-run fit's,

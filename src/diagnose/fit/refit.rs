@@ -6,6 +6,7 @@
 //! all-run residuals. The counts of replays quoted below were measured on
 //! the Putnam racing log (`campaigns/putnam.toml`). Units: SI, rad.
 
+use crate::diagnose::fit::fold_noise::run_rows;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::{fit, pair_index, FitOutcome, GlobalSearch, Polish};
 use crate::diagnose::model::replay::Prepared;
@@ -121,17 +122,10 @@ pub(crate) fn training_rows(
     held_out: &[usize],
     prior: usize,
 ) -> Vec<std::ops::Range<usize>> {
-    let mut start = 0;
-    let mut rows = Vec::new();
-    for (i, r) in runs.iter().enumerate() {
-        let n = r.count();
-        if !held_out.contains(&i) {
-            rows.push(start..start + n);
-        }
-        start += n;
-    }
+    let mut rows = run_rows(runs, |i| !held_out.contains(&i));
     if prior > 0 {
-        rows.push(start..start + prior);
+        let all: usize = runs.iter().map(Prepared::count).sum();
+        rows.push(all..all + prior);
     }
     rows
 }

@@ -15,6 +15,7 @@ use crate::diagnose::model::channels::Channel;
 use crate::diagnose::model::scale::channel_scale;
 use crate::diagnose::report::summary::run_scatter;
 use crate::diagnose::report::ChannelNoise;
+use crate::measured::clean::median;
 use crate::measured::MeasuredRun;
 use rayon::prelude::*;
 
@@ -28,15 +29,6 @@ pub struct Trust {
     pub scales: [f64; 3],
     /// The noise floors by channel index (0 where no run measures it).
     pub floors: [f64; 3],
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    if v.is_empty() {
-        f64::NAN
-    } else {
-        v[v.len() / 2]
-    }
 }
 
 /// Each channel's RMS signal over every sample of every run (0 where no
@@ -68,13 +60,14 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
     let noise = Channel::ALL
         .into_iter()
         .filter_map(|ch| {
-            let scatter: Vec<f64> = per_run
+            let mut scatter: Vec<f64> = per_run
                 .iter()
                 .filter_map(|r| r[ch.index()].map(|x| x.0))
                 .collect();
             (!scatter.is_empty()).then(|| {
                 let runs = scatter.len();
-                let trust = channel_scale(ch, stated, median(scatter), rms[ch.index()]);
+                let scatter = median(&mut scatter);
+                let trust = channel_scale(ch, stated, scatter, rms[ch.index()]);
                 scales[ch.index()] = trust.scale;
                 floors[ch.index()] = trust.uncertainty;
                 ChannelNoise {

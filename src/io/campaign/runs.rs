@@ -8,7 +8,7 @@
 use crate::error::{InputError, InputProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
-use crate::io::{read_run_with, AngleColumn, DeclaredBy};
+use crate::io::{read_run_declared, AngleColumn};
 use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
     clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
@@ -167,7 +167,13 @@ pub(super) fn read_runs(
     // is refused, as `metrics` and a replay refuse it.
     let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
     for p in files {
-        let run = read_declared(p, degrees, &mut absent)?;
+        let (run, lacks) = read_run_declared(p, degrees)?;
+        for (a, e) in lacks {
+            match absent.iter_mut().find(|x| x.0 == a) {
+                Some(x) => x.1.push(p.display().to_string()),
+                None => absent.push((a, vec![p.display().to_string()], e)),
+            }
+        }
         check_length(&run)?;
         check_live_channels(&run)?;
         let declared = degrees.contains(&AngleColumn::Steer);
@@ -229,38 +235,6 @@ pub(super) fn read_runs(
         ));
     }
     Ok((runs, notes, cleaning, calibrate(&raw)))
-}
-
-/// The run `p` with its columns `degrees` converted, those it lacks left
-/// out and recorded in `absent` (the column, the files lacking it, the
-/// first file's refusal).
-fn read_declared(
-    p: &Path,
-    degrees: &[AngleColumn],
-    absent: &mut Vec<(AngleColumn, Vec<String>, InputError)>,
-) -> Result<MeasuredRun, InputError> {
-    let mut declared = degrees.to_vec();
-    loop {
-        match read_run_with(p, &declared, DeclaredBy::CampaignRuns) {
-            Err(e) => {
-                let InputError::Invalid { problem, .. } = &e else {
-                    return Err(e);
-                };
-                let InputProblem::DegreesColumnAbsent { column, .. } = **problem else {
-                    return Err(e);
-                };
-                let Some(a) = AngleColumn::from_name(column) else {
-                    return Err(e);
-                };
-                declared.retain(|d| *d != a);
-                match absent.iter_mut().find(|x| x.0 == a) {
-                    Some(x) => x.1.push(p.display().to_string()),
-                    None => absent.push((a, vec![p.display().to_string()], e)),
-                }
-            }
-            ok => return ok,
-        }
-    }
 }
 
 /// The steer judged against the yaw rate it gives where it is held

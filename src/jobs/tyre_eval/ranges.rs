@@ -49,10 +49,8 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
             }
         }
     }
-    let order = |r: &RangeLeft| {
-        let all = tyre.input_ranges();
-        all.iter().position(|a| a.keys == r.range.keys)
-    };
+    let all = tyre.input_ranges();
+    let order = |r: &RangeLeft| all.iter().position(|a| a.keys == r.range.keys);
     out.sort_by_key(|r| (order(r), !r.below));
     out
 }

@@ -103,6 +103,7 @@ fn offsets(calibrated: &Calibrated) -> SensorOffsets {
 /// Each response channel's offset as the runs' standstills measured it,
 /// else their straights (mean and standard error).
 fn calibrated(c: &Campaign) -> Calibrated {
+    use crate::measured::calibration::SpanKind;
     use crate::measured::clean::RunChannel;
     Channel::ALL.map(|ch| {
         let run_channel = match ch {
@@ -115,16 +116,14 @@ fn calibrated(c: &Campaign) -> Calibrated {
             .channels
             .iter()
             .find(|k| k.channel == run_channel)?;
-        // A standstill offset that only a logged bank not acting on the
-        // car (or of the other sign) explains is no evidence.
-        let doubted = k.bank.is_some_and(|b| !b.taken());
-        let standstill = k.standstill.as_ref().filter(|_| !doubted);
-        let (pooled, on) = match (standstill, &k.straight) {
-            (Some(p), _) => (p, CalibrationSource::Standstills),
-            (None, Some(p)) => (p, CalibrationSource::Straights),
-            (None, None) => return None,
+        // The calibration's own rule: a standstill offset that only a
+        // logged bank not acting on the car explains is no evidence.
+        let o = k.offset?;
+        let on = match o.from {
+            SpanKind::Standstill => CalibrationSource::Standstills,
+            SpanKind::Straight => CalibrationSource::Straights,
         };
-        Some((pooled.mean, pooled.std_error, on))
+        Some((o.mean, o.std_error, on))
     })
 }
 

@@ -43,6 +43,15 @@ fn deg(a: f64) -> String {
 /// Width of the centred moving average of the estimates, s.
 pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 
+/// Steepest grade an estimate is read as a road's without a caveat, rad:
+/// a 10 % grade (5.7°), beyond the 6–8 % that road design allows on
+/// main roads and reached on few circuits. An estimate beyond it is more
+/// likely what `a_x` and `u̇` disagree on besides the grade: the body's
+/// pitch under braking (the accelerometer tilts with it), a lag between
+/// the speed's source and `a_x` (a 0.1 s lag in a 1.5 g stop reads as
+/// degrees), wheel slip in a wheel-speed signal.
+pub const PLAUSIBLE_GRADE: f64 = 0.09967;
+
 /// Where a road angle comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -173,10 +182,16 @@ impl RoadGeometry {
             ),
             _ => String::new(),
         };
-        let caveat = if p.source == AngleSource::LateralKinematics {
-            " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
-        } else {
-            ""
+        let caveat = match p.source {
+            AngleSource::LateralKinematics => {
+                " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
+            }
+            AngleSource::LongitudinalKinematics
+                if p.p05.abs().max(p.p95.abs()) > PLAUSIBLE_GRADE =>
+            {
+                " (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade, the body's pitch, a lag between the speed and ax, wheel slip in the speed; reported, not used)"
+            }
+            _ => "",
         };
         format!(
             "{what} {}{offsets} {}° to {}° (5–95 %; median {}°){caveat}",
@@ -390,6 +405,18 @@ mod tests {
         );
         assert!(
             line.contains("grade estimated from ax − du/dt 1.7° to 1.7° (5–95 %; median 1.7°)"),
+            "{line}"
+        );
+        assert!(!line.contains("steeper than"), "{line}");
+        // A 12 % grade read from ax: beyond a road's, said to be likely
+        // something else.
+        let mut steep = r.clone();
+        steep.ax = Some(vec![1.0 + G * 0.12f64.atan().sin(); steep.t.len()]);
+        let line = RoadGeometry::of("turn", &steep, SensorOffsets::default())
+            .line()
+            .unwrap();
+        assert!(
+            line.contains("grade estimated from ax − du/dt 6.8° to 6.8° (5–95 %; median 6.8°) (steeper than a 10 % grade: more likely what ax and du/dt disagree on besides the grade"),
             "{line}"
         );
         // The bank's 5th percentile of a half-sine to −10°: −10°·cos(0.05·π/2).

@@ -235,6 +235,14 @@ fn a_logged_bank_the_accelerometer_does_not_feel_is_named_not_taken_for_an_offse
     let term = 9.80665 * 0.35f64.sin();
     assert!((f(&ay["bank"]["bank_term"]) - term).abs() < 1e-3, "{ay}");
     assert!((f(&ay["bank"]["read"]) - OFFSETS[1]).abs() < 0.01, "{ay}");
+    // The offset the calibration gives is the straights' (the bank has
+    // eased to 0 there), not the standstills' read with the bank as logged.
+    assert_eq!(ay["offset"]["from"], "straight", "{ay}");
+    assert!((f(&ay["offset"]["mean"]) - OFFSETS[1]).abs() < 0.02, "{ay}");
+    assert!(
+        (f(&ay["standstill"]["mean"]) - (OFFSETS[1] - term)).abs() < 0.02,
+        "{ay}"
+    );
     let l = line(&stdout, "ay");
     assert!(
         l.starts_with("  calibration: ay: no offset taken, not used as evidence: parked where the logged bank gives g·sin(bank) = 3.36 m/s², the accelerometer reads -0.60 m/s², an offset of -3.96 m/s², beyond the 1 m/s² a mounted sensor shows, so the logged bank does not act on the car"),
@@ -247,5 +255,6 @@ fn a_logged_bank_the_accelerometer_does_not_feel_is_named_not_taken_for_an_offse
     // Felt as logged: taken, no doubt printed.
     let (_dir, stdout, d) = diagnosed(&runs(0.35, 0.35));
     assert_eq!(channel(&d, "ay")["bank"]["seen"], "as_logged");
+    assert_eq!(channel(&d, "ay")["offset"]["from"], "standstill");
     assert!(!line(&stdout, "ay").contains("no offset taken"));
 }

@@ -288,6 +288,21 @@ pub enum VerdictWarning {
         /// The parameters, as the verdict reports them.
         parameters: Vec<ParameterValue>,
     },
+    /// What the verdict's effects leave is itself a gap: a held-out error
+    /// above the significance threshold of the noise level, the rest of
+    /// the gap a further cause and not noise. Said of a verdict that
+    /// explains most of the gap (one that explains part says what it
+    /// leaves in its sentence).
+    GapRemains {
+        /// Held-out J with the effects.
+        heldout_error_after: f64,
+        /// J of the noise alone.
+        noise_level: f64,
+        /// The multiple of the noise level a gap exceeds.
+        threshold: f64,
+        /// Share of the gap above noise left, %.
+        left_percent: f64,
+    },
 }
 
 /// A channel's held-out gap that the verdict's effects make larger.

@@ -287,6 +287,14 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
                 if parameters.len() == 1 { "its value is" } else { "their values are" },
             )
         }
+        VerdictWarning::GapRemains {
+            heldout_error_after,
+            noise_level,
+            threshold,
+            left_percent,
+        } => format!(
+            "what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
+        ),
     }
 }
 

@@ -12,7 +12,7 @@ use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::{same_effects, Bound, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::above_noise;
-use crate::diagnose::report::outcome::CALIBRATION_AGREES;
+use crate::diagnose::report::outcome::{CALIBRATION_AGREES, EXPLAINS_MOST};
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
     NotIdentifiable, OutsideLibrary, ParameterValue, Part, RankWarning, Ranked, Shrinkage, Verdict,
@@ -53,6 +53,7 @@ pub(crate) fn verdict(
                     parameters: on_bound,
                 });
             }
+            warnings.extend(remains(&r, noise_level));
             let mut evidence = calibration_evidence(&r.parameters, calibrated);
             // Accepted, its axles are a tyre (a set whose are not is never
             // chosen): where the base's alone are not, the effects account
@@ -133,6 +134,21 @@ pub(crate) fn verdict(
 
 /// The sensor offsets among a verdict's `parameters` against the ones the
 /// runs' standstills and straights measured.
+/// The gap a verdict that explains most of it (`ranked`) leaves above the
+/// noise level `noise_level`, where that rest is itself significant
+/// ([`rules::significant`]).
+fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
+    let most = ranked.reduction_percent >= EXPLAINS_MOST;
+    (most && rules::significant(ranked.heldout_error_after, noise_level)).then(|| {
+        VerdictWarning::GapRemains {
+            heldout_error_after: ranked.heldout_error_after,
+            noise_level,
+            threshold: rules::SIGNIFICANT,
+            left_percent: 100.0 - ranked.reduction_percent,
+        }
+    })
+}
+
 fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) -> Vec<Evidence> {
     Channel::ALL
         .into_iter()
@@ -304,6 +320,34 @@ mod tests {
         };
         let p = [at(Some(Bound::Search)), at(Some(Bound::Physical)), at(None)];
         assert_eq!(on_search_bound(&p), vec![p[0].clone()]);
+    }
+
+    #[test]
+    fn a_rest_above_the_significance_threshold_is_warned_of_only_where_the_sentence_does_not_say_it(
+    ) {
+        let with = |j: f64, reduction: f64| {
+            let mut r = row(&[EffectKind::SensorDelay], j, true);
+            r.reduction_percent = reduction;
+            remains(&r, 1.0)
+        };
+        // J 1.366 against noise 1.000: above 1.3 × the noise level.
+        let Some(VerdictWarning::GapRemains {
+            heldout_error_after,
+            threshold,
+            left_percent,
+            ..
+        }) = with(1.366, 84.0)
+        else {
+            panic!("no warning at J 1.366");
+        };
+        assert_eq!((heldout_error_after, threshold), (1.366, SIGNIFICANT));
+        assert!((left_percent - 16.0).abs() < 1e-12);
+        // At the threshold and below it, the rest is noise.
+        assert!(with(1.3, 84.0).is_none() && with(1.1, 90.0).is_none());
+        // A verdict that explains part of the gap says the rest in its
+        // sentence: no second word.
+        assert!(with(2.5, 49.9).is_none());
+        assert!(with(2.5, EXPLAINS_MOST).is_some());
     }
 
     /// A ranking row of `effects` with held-out error `j` (base 4, noise

@@ -145,6 +145,36 @@ mod tests {
     }
 
     #[test]
+    fn a_standstill_offset_read_through_a_refused_bank_is_not_the_offset_given() {
+        use crate::measured::calibration::{Offset, Pooled, SpanKind};
+        let pooled = |mean: f64| Pooled {
+            spans: 2,
+            seconds: 20.0,
+            samples: 2000,
+            mean,
+            std_error: 0.01,
+            between_spans: 0.0,
+            chi2: 0.5,
+            dof: 1,
+            consistent: true,
+            least: mean,
+            greatest: mean,
+        };
+        let term = crate::constants::G * (-0.349f64).sin();
+        let refused = BankCheck::judge(0.20, term);
+        let (standstill, straight) = (pooled(0.20 - term), pooled(0.21));
+        // The straights' offset, not the standstills' 3.56 read with the bank.
+        let o = Offset::of(Some(&standstill), Some(&straight), Some(&refused)).unwrap();
+        assert_eq!((o.from, o.mean), (SpanKind::Straight, 0.21));
+        // Without straights, none.
+        assert!(Offset::of(Some(&standstill), None, Some(&refused)).is_none());
+        // A bank taken as logged: the standstills'.
+        let taken = BankCheck::judge(0.20 - 0.3, -0.3);
+        let o = Offset::of(Some(&standstill), Some(&straight), Some(&taken)).unwrap();
+        assert_eq!(o.from, SpanKind::Standstill);
+    }
+
+    #[test]
     fn a_bank_of_the_other_sign_is_named_as_reversed() {
         let term = crate::constants::G * 0.3f64.sin();
         let c = BankCheck::judge(-term - 0.2, term);

@@ -79,7 +79,7 @@ mod tests;
 pub use bank::{BankCheck, BankSeen, PLAUSIBLE_AY_OFFSET};
 pub use report::{
     Agreement, CalibrationReport, CalibrationSpan, ChannelCalibration, ChannelMean, Criteria,
-    Pooled, RejectedStraight, Rejection, SpanKind,
+    Offset, Pooled, RejectedStraight, Rejection, SpanKind,
 };
 
 use super::clean::RunChannel;
@@ -325,11 +325,13 @@ fn channel_calibration(
             .iter()
             .any(|m| m.channel == channel && m.bank_term.is_some())
     });
+    let bank = standstill.and_then(|p| bank_check(spans, channel, p.mean));
     Some(ChannelCalibration {
         channel,
         unit: unit(channel),
         bank_removed,
-        bank: standstill.and_then(|p| bank_check(spans, channel, p.mean)),
+        bank,
+        offset: Offset::of(standstill.as_ref(), straight.as_ref(), bank.as_ref()),
         standstill,
         straight,
         agreement,

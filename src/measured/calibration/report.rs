@@ -242,12 +242,53 @@ pub struct ChannelCalibration {
     /// The standstills' reading of the logged bank (ay with a logged bank
     /// and a standstill).
     pub bank: Option<super::BankCheck>,
-    /// Over the standstills.
+    /// Over the standstills, with a logged bank removed as logged (also
+    /// where [`ChannelCalibration::bank`] refuses that reading: then this
+    /// mean is no offset, and [`ChannelCalibration::offset`] says what is).
     pub standstill: Option<Pooled>,
     /// Over the straights.
     pub straight: Option<Pooled>,
     /// The two compared, when both are measured.
     pub agreement: Option<Agreement>,
+    /// The offset the calibration gives (as evidence, and as the start of a
+    /// fitted offset): the standstills' where they are measured and their
+    /// bank reading is taken, else the straights'; None where neither is.
+    pub offset: Option<Offset>,
+}
+
+/// The offset a channel's calibration gives, and the spans it comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Offset {
+    /// The offset, in the channel's unit.
+    pub mean: f64,
+    /// Its standard error.
+    pub std_error: f64,
+    /// The kind of span it is pooled over.
+    pub from: SpanKind,
+}
+
+impl Offset {
+    /// The offset of a channel pooled over `standstill` and `straight`, the
+    /// standstills' refused where a logged `bank` reading is not taken (an
+    /// offset only a bank that does not act on the car, or acts with the
+    /// other sign, explains is none).
+    pub fn of(
+        standstill: Option<&Pooled>,
+        straight: Option<&Pooled>,
+        bank: Option<&super::BankCheck>,
+    ) -> Option<Self> {
+        let refused = bank.is_some_and(|b| !b.taken());
+        let (p, from) = match (standstill.filter(|_| !refused), straight) {
+            (Some(p), _) => (p, SpanKind::Standstill),
+            (None, Some(p)) => (p, SpanKind::Straight),
+            (None, None) => return None,
+        };
+        Some(Self {
+            mean: p.mean,
+            std_error: p.std_error,
+            from,
+        })
+    }
 }
 
 /// What the standstills and straights of a set of runs say about the

@@ -560,3 +560,18 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
     assert!(w.contains("on their search bound"), "{w}");
     assert!(w.contains("their values are a bound"), "{w}");
 }
+
+#[test]
+fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
+    use crate::diagnose::report::outcome::VerdictWarning;
+    let w = VerdictWarning::GapRemains {
+        heldout_error_after: 1.366,
+        noise_level: 1.0,
+        threshold: 1.3,
+        left_percent: 16.0,
+    };
+    assert_eq!(
+        verdict_warning(&w),
+        "what it leaves is still a gap: held-out error 1.366, above 1.3 × the noise level 1.000, so the other 16.0 % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
+    );
+}

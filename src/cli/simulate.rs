@@ -55,8 +55,8 @@ pub struct MetricsArgs {
     #[arg(long, default_value_t = handling::metrics::DEFAULT_MIN_OVERSHOOT, allow_negative_numbers = true, value_parser = percent)]
     min_overshoot: f64,
     /// A column the run gives in degrees (deg/s for `yaw_rate`), converted
-    /// to radians: `steer`, `yaw_rate`, `beta`, `roll` or `bank`
-    /// (repeatable).
+    /// to radians: `steer`, `yaw_rate` or `beta`, the angle columns the
+    /// metrics read (repeatable).
     #[arg(long, value_parser = angle_column)]
     degrees: Vec<handling::io::AngleColumn>,
 }

@@ -264,10 +264,10 @@ pub enum StageRows {
     #[error("no rows with longitudinal slip (|κ| above 1e-3) and a measured `mz`")]
     LongitudinalSlipMz,
     /// Mx.
-    #[error("no rows with a measured `mx` (column `mx`, in a file with `kappa` and `fx`)")]
+    #[error("no rows with a measured `mx`: `mx` is fitted only from a rig file with `mx`, `kappa` and `fx` columns, whose samples are its rows (a file without `kappa` and `fx` is averaged into slip-angle bins of `fy` and `mz`, and its `mx` left out); to fit it, give `mx` in a file with `kappa` and `fx` (on a cornering sweep, `kappa` = 0 and the rig's measured `fx`)")]
     Mx,
     /// My.
-    #[error("no rows with a measured `my` (column `my`, in a file with `kappa` and `fx`)")]
+    #[error("no rows with a measured `my`: `my` is fitted only from a rig file with `my`, `kappa` and `fx` columns, whose samples are its rows (a file without `kappa` and `fx` is averaged into slip-angle bins of `fy` and `mz`, and its `my` left out); to fit it, give `my` in a file with `kappa` and `fx` (on a cornering sweep, `kappa` = 0 and the rig's measured `fx`)")]
     My,
 }
 

@@ -418,6 +418,20 @@ pub enum InputProblem {
         /// The header's columns.
         header: Vec<String>,
     },
+    /// A column declared in degrees that the job does not read (`metrics
+    /// --degrees roll`): the declaration would convert nothing, without a
+    /// word, as [`InputProblem::DegreesColumnAbsent`]'s would.
+    #[error("{by} names `{column}`, a column {job} does not read (the angle columns it reads: {}): the declaration would convert nothing; leave it out", reads.join(", "))]
+    DegreesColumnUnread {
+        /// The column declared.
+        column: &'static str,
+        /// Where it was declared.
+        by: &'static str,
+        /// The job that reads the file (`` `metrics` ``).
+        job: &'static str,
+        /// The angle columns it reads.
+        reads: Vec<&'static str>,
+    },
     /// A column in another unit than FORMATS.md's.
     #[error(transparent)]
     UnitSlip(#[from] UnitSlip),
@@ -501,6 +515,7 @@ impl InputProblem {
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::YawAboveSteer { .. } => "YawAboveSteer",
             InputProblem::DegreesColumnAbsent { .. } => "DegreesColumnAbsent",
+            InputProblem::DegreesColumnUnread { .. } => "DegreesColumnUnread",
             InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",

@@ -70,6 +70,15 @@ pub enum DeclaredBy {
 }
 
 impl DeclaredBy {
+    /// The job that reads the file, as a message names it.
+    pub fn job(self) -> &'static str {
+        match self {
+            DeclaredBy::MetricsOption => "`metrics`",
+            DeclaredBy::CampaignRuns => "`diagnose`",
+            DeclaredBy::ReplayManoeuvre => "a replay",
+        }
+    }
+
     /// The option or key, as a message names it.
     pub fn words(self) -> &'static str {
         match self {
@@ -146,6 +155,23 @@ fn read_run_lacking(
         if !declared.contains(a) {
             declared.push(*a);
         }
+    }
+    // A declaration of a column the job does not read converts nothing
+    // either (`metrics --degrees roll`): refused first, whether the file
+    // has the column or not, with the columns it reads.
+    let reads: Vec<&'static str> = AngleColumn::ALL
+        .into_iter()
+        .map(AngleColumn::name)
+        .filter(|n| ["steer", "yaw_rate"].contains(n) || optional.contains(n))
+        .collect();
+    if let Some(a) = declared.iter().find(|a| !reads.contains(&a.name())) {
+        let problem = InputProblem::DegreesColumnUnread {
+            column: a.name(),
+            by: by.words(),
+            job: by.job(),
+            reads,
+        };
+        return Err(InputError::problem_at(path, c.header_line, 1, problem));
     }
     // A declaration of a column the file does not have converts nothing:
     // a misspelt header would then be read as no channel at all.

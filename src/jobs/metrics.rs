@@ -193,8 +193,17 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         ));
     }
     if m.yaw_rate_peak_time.is_none() {
+        let why = match m.yaw_rate_filter_ringing {
+            0.0 => "the larger of min_overshoot and what the noise and the steady scatter allow".to_string(),
+            // The filter's own overshoot on the steer step: a maximum
+            // within it is the low-pass ringing, not the car.
+            ringing => format!(
+                "the largest of min_overshoot, what the noise and the steady scatter allow, and the {} % the low-pass alone lifts the steer step by: a maximum within that is the filter ringing, not the car",
+                crate::format::rounded(ringing, 3)
+            ),
+        };
         out.push(format!(
-            "  no overshoot: no yaw-rate maximum stands more than {} % above the steady state (the larger of min_overshoot and what the noise and the steady scatter allow)",
+            "  no overshoot: no yaw-rate maximum stands more than {} % above the steady state ({why})",
             crate::format::rounded(m.yaw_rate_peak_threshold, 3)
         ));
     }

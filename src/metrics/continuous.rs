@@ -263,6 +263,8 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         settled: r_spread < super::SETTLED_SPREAD && a_spread < super::SETTLED_SPREAD,
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: threshold * 100.0,
+        // Unfiltered: no ringing of a filter.
+        yaw_rate_filter_ringing: 0.0,
         filter_hz: None,
     })
 }

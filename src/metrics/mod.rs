@@ -11,8 +11,11 @@
 //!   (negative where the response leads the steer's half-way point, as a
 //!   crawl's lateral acceleration does); peak response time: t₀ to
 //!   the peak of r̂, the first local maximum after the 90 % crossing that
-//!   exceeds the steady state by more than the noise allows and by at least
-//!   `min_overshoot` (`1 + max(5·σ̂, 2·s_ss, min_overshoot)`, 1 % by default:
+//!   exceeds the steady state by more than the noise allows, by more than
+//!   the low-pass alone lifts the steer step (`ρ`, the filtered steer's
+//!   overshoot beyond the raw steer's: its ringing, which a yaw rate that
+//!   follows the steer has too) and by at least `min_overshoot` (`1 +
+//!   max(5·σ̂, 2·s_ss, ρ, min_overshoot)`, 1 % by default:
 //!   a flatter maximum is one no test resolves, see [`DEFAULT_MIN_OVERSHOOT`];
 //!   s_ss the scatter of r̂ in the steady window and σ̂ its noise:
 //!   the robust deviation of the raw samples' differences over the record,
@@ -202,10 +205,15 @@ pub struct StepMetrics {
     /// filter), as a share of the step.
     pub yaw_rate_noise: f64,
     /// The overshoot a maximum needed to be a peak, % of the step: the
-    /// largest of `min_overshoot`, five noise deviations and twice the
-    /// steady scatter.
+    /// largest of `min_overshoot`, five noise deviations, twice the
+    /// steady scatter and [`Self::yaw_rate_filter_ringing`].
     #[serde(default)]
     pub yaw_rate_peak_threshold: f64,
+    /// What the low-pass alone makes of the steer step, % of it: the
+    /// filtered steer's overshoot beyond the raw steer's (0 unfiltered). A
+    /// yaw-rate maximum within it is the filter's ringing, not a peak.
+    #[serde(default)]
+    pub yaw_rate_filter_ringing: f64,
     /// The low-pass applied, Hz (none: unfiltered).
     pub filter_hz: Option<f64>,
 }
@@ -433,11 +441,14 @@ pub(crate) fn step_metrics(
         None => None,
     };
     // The peak: the first local maximum after the 90 % crossing that stands
-    // above the steady state by more than the noise allows; a maximum at the
+    // above the steady state by more than the noise allows, and by more
+    // than the low-pass alone makes of the steer step; a maximum at the
     // record's end is not one.
+    let ringing = filter_ringing(t, steer, &steer_f, &d, t0);
     let threshold = (PEAK_NOISE * r_noise)
         .max(2.0 * r.spread)
         .max(s.min_overshoot / 100.0)
+        .max(ringing)
         .max(1e-9);
     let level = 1.0 + threshold;
     let v = &r.values;
@@ -475,8 +486,26 @@ pub(crate) fn step_metrics(
             && a.as_ref().is_none_or(|a| settled(a.spread, gain * a.noise)),
         yaw_rate_noise: r_noise,
         yaw_rate_peak_threshold: threshold * 100.0,
+        yaw_rate_filter_ringing: ringing * 100.0,
         filter_hz,
     })
+}
+
+/// What the low-pass alone makes of the steer step, as a share of it: the
+/// filtered steer's (`filtered`, normalised as `d`) highest value from
+/// `from` on above the raw steer's (`raw`) there. A zero-phase Butterworth
+/// rings at a ramp's ends (a 10 Hz one lifts a 0.08 s ramp's end by about
+/// 1.2 %), and a yaw rate that follows the steer (a crawl's geometry)
+/// rings alike: a maximum within this is the filter's, not the car's. A
+/// driver's own overshoot of the steer is in both, and no part of it; 0
+/// unfiltered.
+fn filter_ringing(t: &[f64], raw: &[f64], filtered: &[f64], d: &Normalised, from: f64) -> f64 {
+    let (mut most_filtered, mut most_raw) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for i in (0..t.len()).filter(|&i| t[i] >= from) {
+        most_filtered = most_filtered.max(d.values[i]);
+        most_raw = most_raw.max(d.values[i] + (raw[i] - filtered[i]) / d.steady);
+    }
+    (most_filtered - most_raw).max(0.0)
 }
 
 #[cfg(test)]

@@ -359,7 +359,7 @@ fn a_magic_formula_mz_at_zero_speed_is_said_to_be_its_residual_torque() {
         "{written}"
     );
     assert!(
-        e.contains("warning: 2 of 4 points at zero speed (below 0.0001 m/s): mz there is the residual torque alone, of the opposite sign to the same point's at VXLOW = 1.00 m/s at 1 of them (0.210 N·m against -47.5 N·m), as MFeval's formula gives it (cos'α = Vx/(Vc + εV)"),
+        e.contains("warning: 2 of the 3 points at zero speed (below 0.0001 m/s) have a slip angle ≠ 0: mz there is the residual torque alone, of the opposite sign to the same point's at VXLOW = 1.00 m/s at 1 of them (0.210 N·m against -47.5 N·m), as MFeval's formula gives it (cos'α = Vx/(Vc + εV)"),
         "{e}"
     );
     // At any speed the trail is there: nothing to say.
@@ -439,7 +439,7 @@ fn a_cornering_stiffness_the_pressure_turns_negative_is_counted_at_the_points() 
     let e = stderr(&o);
     assert!(o.status.success(), "{e}");
     assert!(
-        e.contains("1 of 2 points has a negative cornering stiffness at its own load, camber, pressure and speed (the first, point 2: fz = 4000 N, camber = 0 rad, pressure = 380000 Pa): there the force opposes the slip"),
+        e.contains("1 of 2 points has a negative cornering stiffness at its own load, camber, pressure and speed (the first at line 3: fz = 4000 N, camber = 0 rad, pressure = 380000 Pa): there the force opposes the slip"),
         "{e}"
     );
     let fy = column(&written, "fy");

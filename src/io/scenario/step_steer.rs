@@ -34,9 +34,12 @@ pub struct StepSteerSpec {
 fn default_start() -> f64 {
     1.0
 }
-/// Longest 0–100 % steer ramp a step steer may have: ISO 7401 asks for the
-/// steer to go from 10 % to 90 % within 0.15 s, 0.8 of a linear ramp.
-pub(crate) const MAX_RAMP_TIME: f64 = 0.15 / 0.8;
+/// Longest 0–100 % steer ramp a step steer may have, inclusive: ISO 7401
+/// asks for the steer to go from 10 % to 90 % within 0.15 s, 0.8 of a
+/// linear ramp, so 0.1875 s. Written as the number itself (3/16, exact in
+/// binary): `0.15 / 0.8` is 0.18749999999999997 in `f64`, which refused
+/// the `rise_time = 0.1875` the message and the book say is allowed.
+pub(crate) const MAX_RAMP_TIME: f64 = 0.1875;
 
 fn default_rise() -> f64 {
     0.1

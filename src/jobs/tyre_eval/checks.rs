@@ -22,6 +22,9 @@
 //!   grow with the fourth power of the speed past it (the public
 //!   `FSAE_Defaults.tir`'s `my` at 200 m/s is 400 times its value at 10
 //!   m/s; its terms pass 0.1 at 78 m/s).
+//!
+//! A Magic Formula `my` below [`MY_RESOLUTION`] of `R0·|Fz|` (the low-speed
+//! fade's last digits at a speed of 1e-9 m/s) is written as 0.
 
 use super::unread::{Points, Unread};
 use crate::tyre::{PointForces, Tyre};
@@ -30,6 +33,38 @@ use serde::Serialize;
 /// The size of `my`'s speed terms (a multiple of `R0·Fz`, the rolling
 /// resistance coefficient) past which the speed is beyond the model.
 pub const MY_SPEED_TERMS: f64 = 0.1;
+
+/// The share of `R0·|Fz|` below which a Magic Formula `my` is written as
+/// 0, N·m per N·m. Every term of `my` is `R0·Fz` times a dimensionless
+/// rolling resistance coefficient (`QSY1` about 0.01), and below `VXLOW`
+/// the model fades it towards 0 with the speed: the MF 6.1 sample's `my`
+/// at 4 kN is −2.7e-17 N·m at 1e-9 m/s, digits of the fade's arithmetic,
+/// not a moment, which a reader takes for a number that means something.
+/// 1e-12 is a rolling resistance coefficient ten orders of magnitude below
+/// a tyre's, below anything a rig resolves and the 1e-6 of `FNOMIN·R0` the
+/// moment is matched to MFeval with, and still about 4500 times the
+/// round-off (`f64::EPSILON`) of a sum of terms of the size `R0·Fz`: a
+/// value below it carries no digit of the tyre.
+pub const MY_RESOLUTION: f64 = 1e-12;
+
+/// The `my` of a Magic Formula `tyre` at the loads `fz`, each below
+/// [`MY_RESOLUTION`] of `R0·|fz|` written as 0 (never `-0`); a non-finite
+/// value is kept, for the evaluation to refuse at its point.
+pub(crate) fn resolved_my(tyre: &Tyre, fz: &[f64], my: Vec<f64>) -> Vec<f64> {
+    let Tyre::MagicFormula(t) = tyre else {
+        return my;
+    };
+    let r0 = t.coefficients.UNLOADED_RADIUS.abs();
+    fz.iter()
+        .zip(my)
+        .map(
+            |(f, m)| match m.abs() < MY_RESOLUTION * r0 * f.abs() || m == 0.0 {
+                true => 0.0,
+                false => m,
+            },
+        )
+        .collect()
+}
 
 /// A force or moment a tyre may have no coefficients for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

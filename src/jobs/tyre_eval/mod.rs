@@ -41,6 +41,7 @@
 
 mod checks;
 mod friction;
+mod physical;
 mod pressure;
 mod ranges;
 mod standstill;
@@ -49,9 +50,10 @@ mod unread;
 mod zero_slip;
 
 pub(crate) use checks::gives_none;
-pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_SPEED_TERMS};
+pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
-pub use standstill::{StandstillMz, STANDSTILL};
+pub use physical::PHYSICAL;
+pub use standstill::{AtRest, StandstillMz, STANDSTILL};
 pub use stiffness::{AgainstSlip, SignChange};
 pub use unread::Unread;
 
@@ -65,91 +67,7 @@ use crate::tyre::mf::MfInput;
 use crate::tyre::PointForces;
 use crate::tyre::Tyre;
 use serde::Serialize;
-use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};
-
-/// The range each input column of `tyre-eval` must lie in: (column, low
-/// end, high end, unit, what the ends are). Ends included.
-pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
-    ("fz", -1e6, 1e6, "N", "1 MN, above any tyre's load"),
-    (
-        "kappa",
-        -10.0,
-        10.0,
-        "",
-        "a wheel spinning at eleven times the road speed",
-    ),
-    (
-        "alpha",
-        -FRAC_PI_2,
-        FRAC_PI_2,
-        "rad",
-        "±90°: beyond it the wheel rolls backwards",
-    ),
-    (
-        "camber",
-        -FRAC_PI_2,
-        FRAC_PI_2,
-        "rad",
-        "±90°: a wheel on its side",
-    ),
-    (
-        "speed",
-        0.0,
-        300.0,
-        "m/s",
-        "1080 km/h, above any pneumatic tyre's speed",
-    ),
-    (
-        "pressure",
-        0.0,
-        5e6,
-        "Pa",
-        "5 MPa, above any pneumatic tyre's inflation",
-    ),
-];
-
-/// Every value of `values` (column `name`) outside its [`PHYSICAL`]
-/// range, and a speed within it below 0: its row and the problem.
-fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
-    let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
-        return Vec::new();
-    };
-    let refused = |(i, &value): (usize, &f64)| {
-        let problem = if name == "speed" && value < 0.0 {
-            // A slip angle within ±90° already says the wheel rolls
-            // forwards (ISO 8855): the speed is its size.
-            InputProblem::NegativeSpeed { value }
-        } else if unit == "rad" && in_degrees(value, hi) {
-            InputProblem::AngleInDegrees {
-                column,
-                value,
-                limit: hi,
-            }
-        } else if !(lo..=hi).contains(&value) {
-            InputProblem::NotPhysical {
-                column,
-                value,
-                lo,
-                hi,
-                unit,
-                why,
-            }
-        } else {
-            return None;
-        };
-        Some((i, problem))
-    };
-    values.iter().enumerate().filter_map(refused).collect()
-}
-
-/// Whether an angle beyond `limit` (rad) reads as one in degrees: more
-/// than 1° past it (a hair past 90° is 90° rounded, said as such) and
-/// within it in degrees, as `identify` says of its rig files.
-fn in_degrees(value: f64, limit: f64) -> bool {
-    let v = value.abs();
-    v > limit + 1f64.to_radians() && v.to_radians() <= limit
-}
 
 /// The report of `tyre-eval`: the points with their forces and moments.
 #[derive(Debug, Clone, Serialize)]
@@ -187,6 +105,8 @@ pub struct TyreEvalReport {
     /// Points at combined slip of a model that does not couple `fx` and
     /// `fy` (each its pure-slip force).
     pub uncoupled: Option<Uncoupled>,
+    /// Points at rest, where some are at a slip ratio or angle ≠ 0.
+    pub at_rest: Option<AtRest>,
     /// Points at zero speed whose Magic Formula `mz` lacks the pneumatic
     /// trail's term.
     pub standstill_mz: Option<StandstillMz>,
@@ -248,7 +168,7 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
     let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
         .enumerate()
         .flat_map(|(k, (name, values))| {
-            not_physical(name, values)
+            physical::not_physical(name, values)
                 .into_iter()
                 .map(move |(i, problem)| (i, k, name, problem))
         })
@@ -425,11 +345,12 @@ pub fn run(
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
-    let against_slip = stiffness::against_slip(&tyre, &given);
+    let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
     let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
+    let at_rest = standstill::at_rest(&tyre, &given, &f, &file.lines);
     let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
@@ -448,7 +369,8 @@ pub fn run(
     ]);
     if tyre.has_wheel_moments() {
         columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
-        columns.push(("my", of(|x| x.my.unwrap_or(f64::NAN))));
+        let my = of(|x| x.my.unwrap_or(f64::NAN));
+        columns.push(("my", checks::resolved_my(&tyre, &columns[0].1, my)));
     }
     columns.extend(extras.loaded_radius.map(|rl| ("rl", rl)));
     // (The first five columns are the inputs, checked when read.)
@@ -466,6 +388,7 @@ pub fn run(
         beyond_friction,
         fx_at_zero_slip,
         uncoupled,
+        at_rest,
         standstill_mz,
         unread,
         sign_changes,
@@ -514,7 +437,8 @@ impl TyreEvalReport {
                 .iter()
                 .map(|b| b.line(self.count, uncoupled)),
         );
-        out.extend(self.standstill_mz.iter().map(|s| s.line(self.count)));
+        out.extend(self.at_rest.iter().map(|a| a.line(self.count)));
+        out.extend(self.standstill_mz.iter().map(StandstillMz::line));
         out.extend(self.ranges_left.iter().map(|r| r.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(

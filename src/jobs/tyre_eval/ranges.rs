@@ -23,7 +23,8 @@ pub struct RangeLeft {
     pub points: usize,
     /// The first such point's line in the points file (1-based).
     pub first_line: usize,
-    /// Its value there (the pressure it is evaluated at).
+    /// Its value there, as given (the pressure the file's `INFLPRES`, else
+    /// `NOMPRES`, where the points give none).
     pub first_value: f64,
     /// The points leave it below its lower end (else above its upper).
     pub below: bool,
@@ -68,12 +69,14 @@ impl RangeLeft {
             true => ("below", r.keys[0], r.lo),
             false => ("above", r.keys[1], r.hi),
         };
-        let evaluated = match (r.column, self.below) {
-            ("fz", true) => "fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and the rolling and overturning moments scaled down below it",
-            _ => "evaluated at that end",
+        // The value given, and the one evaluated where it is the end's (a
+        // 2 MPa pressure is evaluated at PRESMAX): both said.
+        let (evaluated, at) = match (r.column, self.below) {
+            ("fz", true) => ("fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and the rolling and overturning moments scaled down below it", String::new()),
+            _ => ("evaluated at that end", format!(" given, evaluated at {}{unit}", end(bound))),
         };
         format!(
-            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}",
+            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}{at}",
             self.points,
             plural(count, "point", "points"),
             end(bound),

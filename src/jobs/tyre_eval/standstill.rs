@@ -1,3 +1,12 @@
+//! Points at rest (a speed below [`STANDSTILL`]), every one counted, and
+//! those at a slip ratio or slip angle ≠ 0 said apart ([`AtRest`]): a slip
+//! is a slip velocity over the speed (`κ = −Vsx/|Vx|`, `tan α =
+//! −Vsy/|Vx|`), and a standing wheel has neither, so a slip at zero speed
+//! is no physical state. A model evaluates it all the same, as the
+//! steady-state force of a wheel rolling at that slip (the MF 6.1 sample at
+//! 4 kN, κ = 0.05 and rest: fx = 4010 N), which is said with what was
+//! evaluated, not left to read as a standing tyre's force.
+//!
 //! A Magic Formula aligning moment at zero speed, counted and said: the
 //! pneumatic trail's term of `mz` is `−t·Fy` with `t ∝ cos'α =
 //! Vcx/(Vc + εV)` (Pacejka 2012 eq. 4.E6a, `εV` = 1e-6 m/s, as MFeval
@@ -22,12 +31,87 @@ use serde::Serialize;
 /// `cos α`.
 pub const STANDSTILL: f64 = 1e-4;
 
+/// The points at rest: a speed below [`STANDSTILL`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AtRest {
+    /// Every point at rest.
+    pub points: usize,
+    /// Of them, those at a slip ratio or slip angle ≠ 0.
+    pub with_slip: usize,
+    /// The first of those: its line in the points file, `kappa`, `alpha`
+    /// (rad), and the `fx` and `fy` evaluated there (N).
+    pub first: (usize, [f64; 4]),
+    /// A Magic Formula's `VXLOW`, m/s (`None` for another model).
+    pub vxlow: Option<f64>,
+}
+
+impl AtRest {
+    /// The sentence on the terminal, of `count` points.
+    pub fn line(&self, count: usize) -> String {
+        let n = |v: f64| crate::format::rounded(v, 4);
+        let (line, [kappa, alpha, fx, fy]) = self.first;
+        let faded = match self.vxlow {
+            Some(v) => format!(
+                ", its vertical shifts and `my` faded to 0 (linearly below VXLOW = {} m/s)",
+                n(v)
+            ),
+            None => String::new(),
+        };
+        format!(
+            "{} of {} at zero speed (below {STANDSTILL} m/s), {} of them at a slip ratio or slip angle ≠ 0 (the first at line {line}: kappa = {}, alpha = {} rad, evaluated to fx = {} N, fy = {} N): a slip at zero speed is not a physical state (κ = −Vsx/|Vx| and tan α = −Vsy/|Vx| are slip velocities over the speed, and a standing wheel has none); what was evaluated is the model's steady-state force of a wheel rolling at that slip{faded}, not a standing tyre's; give the wheel's speed, or a slip of 0 for a tyre at rest",
+            self.points,
+            crate::format::plural(count, "point", "points"),
+            self.with_slip,
+            n(kappa),
+            n(alpha),
+            n(fx),
+            n(fy),
+        )
+    }
+}
+
+/// The points of `p` (outputs `f`, file lines `lines`) at rest, where one
+/// is at a slip ratio or slip angle ≠ 0; `None` otherwise (a tyre standing
+/// without slip is a physical state, and its forces are said elsewhere:
+/// `zero_slip.rs`).
+pub(crate) fn at_rest(
+    tyre: &Tyre,
+    p: &Points,
+    f: &[PointForces],
+    lines: &[usize],
+) -> Option<AtRest> {
+    let [_, kappa, alpha, _, speed] = p.columns;
+    let resting: Vec<usize> = (0..f.len())
+        .filter(|&i| speed[i].abs() < STANDSTILL)
+        .collect();
+    let slipping: Vec<usize> = resting
+        .iter()
+        .copied()
+        .filter(|&i| kappa[i] != 0.0 || alpha[i] != 0.0)
+        .collect();
+    let &i = slipping.first()?;
+    Some(AtRest {
+        points: resting.len(),
+        with_slip: slipping.len(),
+        first: (
+            lines.get(i).copied().unwrap_or(i + 2),
+            [kappa[i], alpha[i], f[i].fx, f[i].fy],
+        ),
+        vxlow: match tyre {
+            Tyre::MagicFormula(t) => Some(t.coefficients.VXLOW),
+            _ => None,
+        },
+    })
+}
+
 /// Points at zero speed whose `mz` lacks the pneumatic trail's term.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StandstillMz {
     /// Points at a positive load, a slip angle ≠ 0 and a speed below
     /// [`STANDSTILL`].
     pub points: usize,
+    /// Every point at a speed below [`STANDSTILL`], those among them.
+    pub at_rest: usize,
     /// Of them, those whose `mz` has the opposite sign to the same
     /// point's at `VXLOW`.
     pub reversed: usize,
@@ -40,7 +124,7 @@ pub struct StandstillMz {
 
 impl StandstillMz {
     /// The sentence on the terminal.
-    pub fn line(&self, count: usize) -> String {
+    pub fn line(&self) -> String {
         let n = |v: f64| crate::format::readable(v, 3);
         let reversed = match self.example {
             Some([at_rest, moving]) => format!(
@@ -53,9 +137,10 @@ impl StandstillMz {
             None => String::new(),
         };
         format!(
-            "{} of {} at zero speed (below {STANDSTILL} m/s): mz there is the residual torque alone{reversed}, as MFeval's formula gives it (cos'α = Vx/(Vc + εV), Pacejka 2012 eq. 4.E6a with εV = 1e-6 m/s, is 0 at Vx = 0, so the pneumatic trail's term −t·fy drops); give the wheel's speed for the aligning moment of a rolling tyre",
+            "{} of the {} at zero speed (below {STANDSTILL} m/s) {} a slip angle ≠ 0: mz there is the residual torque alone{reversed}, as MFeval's formula gives it (cos'α = Vx/(Vc + εV), Pacejka 2012 eq. 4.E6a with εV = 1e-6 m/s, is 0 at Vx = 0, so the pneumatic trail's term −t·fy drops); give the wheel's speed for the aligning moment of a rolling tyre",
             self.points,
-            crate::format::plural(count, "point", "points")
+            crate::format::plural(self.at_rest, "point", "points"),
+            if self.points == 1 { "has" } else { "have" },
         )
     }
 }
@@ -96,6 +181,7 @@ pub(crate) fn standstill_mz(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Optio
         .collect();
     Some(StandstillMz {
         points: idx.len(),
+        at_rest: speed.iter().filter(|v| v.abs() < STANDSTILL).count(),
         reversed: reversed.len(),
         vxlow,
         example: reversed.first().copied(),
@@ -125,7 +211,10 @@ mod tests {
         // a negative one, with fy.
         assert!(f[1].mz > 0.0 && f[2].mz < -40.0 && f[1].fy < 0.0, "{f:?}");
         let s = standstill_mz(&t, &p, &f).unwrap();
-        assert_eq!((s.points, s.reversed), (2, 1));
+        assert_eq!((s.points, s.at_rest, s.reversed), (2, 3, 1));
+        // Every point at rest counted, those with a slip apart.
+        let a = at_rest(&t, &p, &f, &[2, 3, 4, 5]).unwrap();
+        assert_eq!((a.points, a.with_slip, a.first.0), (3, 2, 2));
         let [at_rest, moving] = s.example.unwrap();
         assert_eq!(at_rest, f[1].mz);
         assert!(moving < -40.0, "{moving}");

@@ -69,7 +69,8 @@ pub struct AgainstSlip {
     pub stiffness: &'static str,
     /// Points at a positive load where it is negative.
     pub points: usize,
-    /// The first of them (0-based among the points), and its load (N),
+    /// The first of them, by its line in the points file (1-based, as
+    /// every other warning of `tyre-eval` names a point), and its load (N),
     /// camber (rad) and pressure (Pa; 0 where the points give none).
     pub first: (usize, [f64; 3]),
 }
@@ -77,7 +78,7 @@ pub struct AgainstSlip {
 impl AgainstSlip {
     /// The sentence on the terminal.
     pub fn line(&self, count: usize) -> String {
-        let (i, [fz, camber, pressure]) = self.first;
+        let (line, [fz, camber, pressure]) = self.first;
         let n = |v: f64| crate::format::readable(v, 4);
         let at_pressure = if pressure > 0.0 {
             format!(", pressure = {} Pa", n(pressure))
@@ -85,24 +86,23 @@ impl AgainstSlip {
             String::new()
         };
         format!(
-            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first, point {}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are the file's coefficients extrapolated, not a tyre",
+            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first at line {line}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are the file's coefficients extrapolated, not a tyre",
             self.points,
             crate::format::plural(count, "point", "points"),
             if self.points == 1 { "has" } else { "have" },
             self.stiffness,
             if self.points == 1 { "its" } else { "their" },
-            i + 1,
             n(fz),
             n(camber),
         )
     }
 }
 
-/// The points of `p` whose slip stiffnesses are negative
-/// ([`AgainstSlip`]), by a central difference of ±[`SLIP`] at each point's
-/// own conditions; a stiffness within 1e-6 of the largest found is no sign
-/// (a model without that force).
-pub(crate) fn against_slip(tyre: &Tyre, p: &Points) -> Vec<AgainstSlip> {
+/// The points of `p` (at file lines `lines`) whose slip stiffnesses are
+/// negative ([`AgainstSlip`]), by a central difference of ±[`SLIP`] at each
+/// point's own conditions; a stiffness within 1e-6 of the largest found is
+/// no sign (a model without that force).
+pub(crate) fn against_slip(tyre: &Tyre, p: &Points, lines: &[usize]) -> Vec<AgainstSlip> {
     let [fz, _, _, camber, speed] = p.columns;
     let n = fz.len();
     let zero = vec![0.0; n];
@@ -139,7 +139,10 @@ pub(crate) fn against_slip(tyre: &Tyre, p: &Points) -> Vec<AgainstSlip> {
             Some(AgainstSlip {
                 stiffness,
                 points: against.len(),
-                first: (i, [fz[i], camber[i], pressure]),
+                first: (
+                    lines.get(i).copied().unwrap_or(i + 2),
+                    [fz[i], camber[i], pressure],
+                ),
             })
         })
         .collect()

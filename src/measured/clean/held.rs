@@ -4,11 +4,20 @@
 //! residuals no model can close, of the size of the signal's change over an
 //! update interval. Such a channel is found by its holds — at least
 //! [`MIN_HOLDS`] of them, the median at least 2 samples long and
-//! [`REGULAR_SHARE`] within one sample of it (a quantised channel holds
-//! values too, but for irregular lengths) — and its held samples are
-//! interpolated linearly in time between the updates (the value is taken
-//! as the measurement at its update instant); the last hold, with no next
-//! update, stays. Every such channel and the samples changed are reported.
+//! [`REGULAR_SHARE`] of them at least 2 samples long and within one sample
+//! of it (a quantised channel holds values too, but for irregular lengths;
+//! a value that changes at the next sample is no hold, so a smooth channel
+//! whose last written digit repeats at every other sample or so, holds of
+//! 1, 2 and 3 samples, is not one updated every 2) — and whose updates
+//! are not steps of its resolution: a channel that changes, at
+//! [`REGULAR_SHARE`] of its updates, by no more than 1.5 times its
+//! smallest change moves by its last written digit (a smooth slow ramp
+//! crossing a digit every 2 or 3 samples; a simulated yaw rate at 0.5 m/s
+//! dithering by ±1e-11 rad/s, 4 samples a side), where a logger's updates
+//! carry the signal's change over the interval, of every size — and its
+//! held samples are interpolated linearly in time between the updates (the
+//! value is taken as the measurement at its update instant); the last
+//! hold, with no next update, stays. Every such channel and the samples changed are reported.
 //! Units: the channel's SI unit; times in s.
 
 use super::glitches::repair;
@@ -19,7 +28,8 @@ use crate::measured::MeasuredRun;
 /// Fewest complete holds to call a channel held.
 const MIN_HOLDS: usize = 20;
 
-/// Share of the holds within one sample of the median length.
+/// Share of the holds at least 2 samples long and within one sample of
+/// the median length.
 const REGULAR_SHARE: f64 = 0.8;
 
 /// The starts of the holds of `x` (the samples where its value changes,
@@ -35,9 +45,27 @@ fn holds(x: &[f64]) -> Option<(Vec<usize>, usize)> {
     }
     lengths.sort_unstable();
     let every = lengths[lengths.len() / 2];
-    let regular = lengths.iter().filter(|&&l| l.abs_diff(every) <= 1).count();
-    (every >= 2 && regular as f64 >= REGULAR_SHARE * lengths.len() as f64)
-        .then_some((starts, every))
+    let regular = lengths
+        .iter()
+        .filter(|&&l| l >= 2 && l.abs_diff(every) <= 1)
+        .count();
+    (every >= 2
+        && regular as f64 >= REGULAR_SHARE * lengths.len() as f64
+        && !by_resolution(x, &starts))
+    .then_some((starts, every))
+}
+
+/// Whether `x`'s changes at the hold starts `starts` are, at
+/// [`REGULAR_SHARE`] of them, within 1.5 times the smallest: a channel
+/// moving by the last digit it is written with, not a held one.
+fn by_resolution(x: &[f64], starts: &[usize]) -> bool {
+    let steps: Vec<f64> = starts
+        .windows(2)
+        .map(|w| (x[w[1]] - x[w[0]]).abs())
+        .collect();
+    let least = steps.iter().copied().fold(f64::INFINITY, f64::min);
+    let one = steps.iter().filter(|&&s| s <= 1.5 * least).count();
+    one as f64 >= REGULAR_SHARE * steps.len() as f64
 }
 
 /// Interpolates `x` (sampled at `t`) between the hold starts `starts`, as
@@ -121,5 +149,35 @@ mod tests {
             .collect();
         assert!(holds(&q).is_none());
         assert!(holds(&[0.5; 3000]).is_none());
+    }
+
+    #[test]
+    fn a_smooth_channel_repeating_or_dithering_in_its_last_digit_is_not_held() {
+        // A slow ramp written to its last digit (1e-5), crossing one every
+        // 2.2 samples or so: holds of 2 and 3 samples, as regular as a
+        // channel updated every 2.
+        let ramp: Vec<f64> = (0..3000)
+            .map(|i| {
+                let i = i as f64;
+                (0.45 * i + 40.0 * (i / 700.0).sin()).round() * 1e-5
+            })
+            .collect();
+        assert!(holds(&ramp).is_none());
+        // A slow exponential so written: holds of 1, 2, 3 samples and more
+        // (at 1 m/s, 83 % of a simulated sideslip's holds were within one
+        // sample of 2, a third of them of 1 sample).
+        let slow: Vec<f64> = (0..3000)
+            .map(|i| {
+                let v = 0.0113 * (1.0 - (-(i as f64) / 900.0).exp()) + 0.01;
+                (v * 1e5).round() / 1e5
+            })
+            .collect();
+        assert!(holds(&slow).is_none());
+        // A steady value dithering by one unit of its last digit, 4 samples
+        // a side: regular holds, every update a return.
+        let dither: Vec<f64> = (0..3000)
+            .map(|i| 0.003_138_641_3 + if (i / 4) % 2 == 0 { 0.0 } else { 1e-11 })
+            .collect();
+        assert!(holds(&dither).is_none());
     }
 }

@@ -1,0 +1,91 @@
+//! The range each input of `tyre-eval` must lie in ([`PHYSICAL`]): a
+//! value outside it is no tyre's state (a load beyond ±1 MN, a slip ratio
+//! beyond ±10, an angle beyond ±90°, said as degrees where it reads as an
+//! angle in degrees, a speed beyond 300 m/s or below 0, a pressure above
+//! 5 MPa), and is refused at its cell before anything is evaluated.
+
+use crate::error::InputProblem;
+use std::f64::consts::FRAC_PI_2;
+
+/// The range each input column of `tyre-eval` must lie in: (column, low
+/// end, high end, unit, what the ends are). Ends included.
+pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
+    ("fz", -1e6, 1e6, "N", "1 MN, above any tyre's load"),
+    (
+        "kappa",
+        -10.0,
+        10.0,
+        "",
+        "a wheel spinning at eleven times the road speed",
+    ),
+    (
+        "alpha",
+        -FRAC_PI_2,
+        FRAC_PI_2,
+        "rad",
+        "±90°: beyond it the wheel rolls backwards",
+    ),
+    (
+        "camber",
+        -FRAC_PI_2,
+        FRAC_PI_2,
+        "rad",
+        "±90°: a wheel on its side",
+    ),
+    (
+        "speed",
+        0.0,
+        300.0,
+        "m/s",
+        "1080 km/h, above any pneumatic tyre's speed",
+    ),
+    (
+        "pressure",
+        0.0,
+        5e6,
+        "Pa",
+        "5 MPa, above any pneumatic tyre's inflation",
+    ),
+];
+
+/// Every value of `values` (column `name`) outside its [`PHYSICAL`]
+/// range, and a speed within it below 0: its row and the problem.
+pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
+    let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
+        return Vec::new();
+    };
+    let refused = |(i, &value): (usize, &f64)| {
+        let problem = if name == "speed" && value < 0.0 {
+            // A slip angle within ±90° already says the wheel rolls
+            // forwards (ISO 8855): the speed is its size.
+            InputProblem::NegativeSpeed { value }
+        } else if unit == "rad" && in_degrees(value, hi) {
+            InputProblem::AngleInDegrees {
+                column,
+                value,
+                limit: hi,
+            }
+        } else if !(lo..=hi).contains(&value) {
+            InputProblem::NotPhysical {
+                column,
+                value,
+                lo,
+                hi,
+                unit,
+                why,
+            }
+        } else {
+            return None;
+        };
+        Some((i, problem))
+    };
+    values.iter().enumerate().filter_map(refused).collect()
+}
+
+/// Whether an angle beyond `limit` (rad) reads as one in degrees: more
+/// than 1° past it (a hair past 90° is 90° rounded, said as such) and
+/// within it in degrees, as `identify` says of its rig files.
+fn in_degrees(value: f64, limit: f64) -> bool {
+    let v = value.abs();
+    v > limit + 1f64.to_radians() && v.to_radians() <= limit
+}

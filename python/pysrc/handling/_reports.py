@@ -83,6 +83,9 @@ class StepMetrics:
     """Noise of the normalised yaw rate in the initial window, share of the step."""
     yaw_rate_peak_threshold: float
     """The overshoot a maximum needed to be a peak, % of the step."""
+    yaw_rate_filter_ringing: float
+    """What the low-pass alone lifts the steer step by, % of it: a yaw-rate
+    maximum within it is the filter's ringing, not a peak (0 unfiltered)."""
     filter_hz: Optional[float]
     """The zero-phase low-pass applied, Hz (None: unfiltered)."""
 

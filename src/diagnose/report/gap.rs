@@ -11,7 +11,10 @@
 //! over lags 0–1 s (a residual that follows the input points to a dynamic
 //! error: a lag, a stiffness, a gain). The residual is also split by time
 //! window (before the input, the first 0.5 s after it starts, 0.5–2 s, the
-//! rest) and by regime (lateral-acceleration level, speed band).
+//! rest; only for a run whose steer holds its initial value for
+//! [`crate::diagnose::report::parts::STEADY_BEFORE_INPUT`] before the
+//! input, not a piece of a lap) and by regime (lateral-acceleration level,
+//! speed band).
 //!
 //! The noise floor of each channel is its standard deviation in the
 //! pre-input window (the steer not yet moved) when that window has at least
@@ -23,7 +26,9 @@
 
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::above_noise;
-use crate::diagnose::report::parts::{regime_samples, scatter_by, window_samples, Part, Scatter};
+use crate::diagnose::report::parts::{
+    regime_samples, scatter_by, timed_from_an_input, window_samples, Part, Scatter,
+};
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
 
@@ -221,9 +226,13 @@ pub fn trusted_channel_gap(
         .map(|l| (l, correlation(&e, steer, l)))
         .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
         .unwrap_or((0, 0.0));
+    // A run with no input to time from (a piece of a lap) is split by
+    // regime only: its "first 0.5 s of the input" would be a time picked
+    // by a steering correction.
+    let timed = timed_from_an_input(t, steer);
     let windows: Vec<PartGap> = win
         .into_iter()
-        .filter(|w| !w.1.is_empty())
+        .filter(|w| timed && !w.1.is_empty())
         .map(|(name, idx)| part(name, &idx, &e))
         .collect();
     let regimes: Vec<PartGap> = regime_samples(ay, speed)

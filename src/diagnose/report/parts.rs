@@ -226,18 +226,41 @@ pub(crate) fn second_difference_scatter(x: &[f64]) -> f64 {
     1.4826 * median(&mut dev) / 6f64.sqrt()
 }
 
-/// The samples of each time window ([`Window::ALL`], in order): before the
-/// input, its first 0.5 s, 0.5–2 s, the rest. The input starts where the
-/// steer first leaves its initial value by more than 5 % of its largest
-/// excursion (and 1 mrad).
-pub fn window_samples(t: &[f64], steer: &[f64]) -> Vec<(Part, Vec<usize>)> {
+/// Shortest time the steer must hold its initial value before an input
+/// for the run's time windows to be read as times after that input, s:
+/// the initial window a step's metrics take their initial values over
+/// ([`crate::metrics::MetricSettings`]'s default `pre_window`). A run
+/// that starts in the middle of its driving (a piece of a lap, an oval's
+/// steady turn with its corrections) has no input to time from: its
+/// samples are pooled by regime only.
+pub const STEADY_BEFORE_INPUT: f64 = 0.5;
+
+/// When the input starts: where the steer first leaves its initial value
+/// by more than 5 % of its largest excursion (and 1 mrad); None where it
+/// never does.
+fn input_start(t: &[f64], steer: &[f64]) -> Option<f64> {
     let d0 = steer[0];
     let excursion = steer.iter().map(|d| (d - d0).abs()).fold(0.0, f64::max);
     let threshold = (0.05 * excursion).max(1e-3);
-    let start = steer
+    steer
         .iter()
         .position(|d| (d - d0).abs() > threshold)
-        .map_or(t[t.len() - 1], |i| t[i]);
+        .map(|i| t[i])
+}
+
+/// Whether the run has an input its time windows can be timed from: the
+/// steer held at its initial value for [`STEADY_BEFORE_INPUT`], then left.
+pub fn timed_from_an_input(t: &[f64], steer: &[f64]) -> bool {
+    input_start(t, steer).is_some_and(|s| s - t[0] >= STEADY_BEFORE_INPUT)
+}
+
+/// The samples of each time window ([`Window::ALL`], in order): before the
+/// input, its first 0.5 s, 0.5–2 s, the rest ([`input_start`]; without an
+/// input every sample is before it). Only a run
+/// [`timed_from_an_input`] reads them as times after an input; the window
+/// before it serves any run's noise floor.
+pub fn window_samples(t: &[f64], steer: &[f64]) -> Vec<(Part, Vec<usize>)> {
+    let start = input_start(t, steer).unwrap_or(t[t.len() - 1]);
     let bounds = [
         (f64::NEG_INFINITY, start),
         (start, start + 0.5),

@@ -176,3 +176,41 @@ fn band_analysis_finds_a_pure_delay_as_phase_growing_with_frequency() {
     let s = Step::new();
     assert!(band_gaps(&s.t, &s.steer, &s.response(0.2), &s.response(0.3)).is_empty());
 }
+
+/// A piece of a lap starts in the middle of its driving: the steer leaves
+/// its first value at once, so "the first 0.5 s of the input" would be a
+/// time a steering correction picked. Its gap is split by regime only;
+/// the same step after 0.5 s held still is split by time too.
+#[test]
+fn a_run_with_no_steady_start_is_not_split_by_time_after_an_input() {
+    let s = Step::new();
+    let (measured, simulated) = (s.response(0.2), s.response(0.5));
+    let from = |k: usize| {
+        let rec = Record {
+            t: &s.t[k..],
+            steer: &s.steer[k..],
+            ay: &s.ay[k..],
+            speed: &s.speed[k..],
+        };
+        channel_gap(Channel::YawRate, &rec, &measured[k..], &simulated[k..])
+    };
+    // The step at 5 s; a record from 4.6 s holds the steer 0.4 s, one from
+    // 4.4 s 0.6 s, one from 5.5 s not at all (the input is under way).
+    for (k, timed) in [(0, true), (440, true), (460, false), (550, false)] {
+        let g = from(k);
+        assert!(g.significant, "{}", g.verdict);
+        assert_eq!(
+            !g.windows.is_empty(),
+            timed,
+            "from sample {k}: {:?}",
+            g.windows
+        );
+        assert!(!g.regimes.is_empty());
+        assert_eq!(
+            g.verdict.contains("largest in the window"),
+            timed,
+            "{}",
+            g.verdict
+        );
+    }
+}

@@ -178,11 +178,15 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     out.extend(rig.map(|l| format!("  rig data: {l}")));
     out.push(words::channels_trusted(&d.gap.noise));
     out.push(format!("{}:", words::gap_heading(&d.gap.findings)));
+    // A band off in many runs is said once, with its runs counted.
+    let bands = words::band_lines(&d.gap.findings, d.gap.runs.len());
     out.extend(
         d.gap
             .findings
             .iter()
-            .map(|f| format!("  {}", words::finding(f))),
+            .filter(|f| !matches!(f, GapFinding::Band { .. }))
+            .map(|f| format!("  {}", words::finding(f)))
+            .chain(bands.into_iter().map(|l| format!("  {l}"))),
     );
     out.push(format!(
         "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",

@@ -430,6 +430,11 @@ pub enum GapFinding {
         /// floor ([`SteadyOffset::of`]): a sensor offset or a bias of the
         /// model that an RMS against three noise floors does not single out.
         offset: Option<SteadyOffset>,
+        /// The combined held-out gap of all channels over all runs is
+        /// significant ([`GapFinding::Overall`]): a channel within noise in
+        /// every run and part then carries a gap spread thinly over them,
+        /// not none.
+        combined_significant: bool,
     },
     /// A frequency band whose yaw-rate response is off in a run.
     Band {

@@ -199,6 +199,7 @@ pub(crate) fn gap_summary(
                 nf,
                 all.before,
             ),
+            combined_significant: significant,
         });
     }
     for r in runs {

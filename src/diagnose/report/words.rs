@@ -11,17 +11,18 @@
 mod axles;
 mod gap;
 mod parameters;
+mod warnings;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
 };
+pub use gap::band_lines;
 pub use parameters::parameter;
+pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
-use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::{
     CalibrationSource, ChannelChange, Evidence, Explained, GapFinding, InSet, NotIdentifiable,
-    Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictWarning,
-    SIGNIFICANT_NOISE_FLOORS,
+    Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -247,54 +248,6 @@ pub fn verdict_warnings(v: &Verdict) -> Vec<String> {
     match v {
         Verdict::Explained(e) => e.warnings.iter().map(verdict_warning).collect(),
         _ => Vec::new(),
-    }
-}
-
-/// A channel's held-out RMS before and after the verdict's effects, in its
-/// unit: `RMS 0.0247 → 0.0216 rad/s`.
-fn rms_change(channel: Channel, before: f64, after: f64) -> String {
-    format!("RMS {before:.4} → {after:.4} {}", channel.unit())
-}
-
-/// One warning on the verdict.
-pub fn verdict_warning(w: &VerdictWarning) -> String {
-    match w {
-        VerdictWarning::ChannelWorsened(c) => format!(
-            "it leaves the {} gap larger on held-out runs: {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
-            c.channel.name(),
-            rms_change(c.channel, c.before, c.after),
-            c.noise_floor,
-            c.added_percent
-        ),
-        VerdictWarning::ChannelLeft(c) => format!(
-            "it leaves the {} gap: {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
-            c.channel.name(),
-            rms_change(c.channel, c.before, c.after),
-            c.noise_floor,
-            c.removed_percent,
-            c.acceptance_percent
-        ),
-        VerdictWarning::OnSearchBound { parameters } => {
-            let each: Vec<String> = parameters
-                .iter()
-                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
-                .collect();
-            format!(
-                "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",
-                each.join(", "),
-                if parameters.len() == 1 { "its" } else { "their" },
-                if parameters.len() == 1 { "it" } else { "them" },
-                if parameters.len() == 1 { "its value is" } else { "their values are" },
-            )
-        }
-        VerdictWarning::GapRemains {
-            heldout_error_after,
-            noise_level,
-            threshold,
-            left_percent,
-        } => format!(
-            "what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
-        ),
     }
 }
 
@@ -594,6 +547,8 @@ pub fn value(v: f64) -> String {
     }
 }
 
+#[cfg(test)]
+mod band_tests;
 #[cfg(test)]
 mod parameter_tests;
 #[cfg(test)]

@@ -27,6 +27,7 @@ pub(super) fn channel(f: &GapFinding) -> String {
         wrong,
         right,
         offset,
+        combined_significant,
     } = f
     else {
         return String::new();
@@ -60,6 +61,20 @@ pub(super) fn channel(f: &GapFinding) -> String {
             parts(wrong),
             listed(right.iter().map(|p| p.label()).collect()),
         )
+    } else if *combined_significant {
+        // The channels together over every run show a gap that no run or
+        // part shows alone: it is spread thinly, and "no place where the
+        // base model is wrong" would read as none.
+        let floors = crate::format::fixed(rms / noise_floor, 1);
+        let only = if wrong.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "; above {SIGNIFICANT_NOISE_FLOORS} noise floors only in {}",
+                parts(wrong)
+            )
+        };
+        format!("{head}: {floors} noise floors over the runs, below the {SIGNIFICANT_NOISE_FLOORS} a run or part needs alone, so a gap spread over the runs, not in one place (the frequency bands and offsets below say more){only}")
     } else if wrong.is_empty() {
         // A gap within noise has no place: listing the parts it is
         // "right in" would read as a finding.
@@ -71,4 +86,55 @@ pub(super) fn channel(f: &GapFinding) -> String {
                 )
     };
     place + &said
+}
+
+/// The terminal's lines for the frequency bands whose yaw-rate response is
+/// off ([`GapFinding::Band`], one per run and band in the report): a band
+/// off in one run is said of that run; one off in several runs once, with
+/// the runs counted of `runs` and the range of its gain and phase errors
+/// (each run's stays in `diagnosis.json` and on the page).
+pub fn band_lines(findings: &[GapFinding], runs: usize) -> Vec<String> {
+    let mut bands: Vec<((f64, f64), Vec<(&str, f64, f64)>)> = Vec::new();
+    for f in findings {
+        if let GapFinding::Band {
+            run,
+            f_low,
+            f_high,
+            gain_error_db,
+            phase_error_deg,
+        } = f
+        {
+            let entry = (run.as_str(), *gain_error_db, *phase_error_deg);
+            match bands.iter_mut().find(|(b, _)| *b == (*f_low, *f_high)) {
+                Some((_, v)) => v.push(entry),
+                None => bands.push(((*f_low, *f_high), vec![entry])),
+            }
+        }
+    }
+    bands.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
+    let range = |v: &[(&str, f64, f64)], pick: fn(&(&str, f64, f64)) -> f64, d: usize| {
+        let lo = v.iter().map(pick).fold(f64::INFINITY, f64::min);
+        let hi = v.iter().map(pick).fold(f64::NEG_INFINITY, f64::max);
+        format!(
+            "{} to {}",
+            crate::format::signed(lo, d),
+            crate::format::signed(hi, d)
+        )
+    };
+    bands
+        .into_iter()
+        .map(|((lo, hi), v)| match v.as_slice() {
+            [(run, gain, phase)] => format!(
+                "{run}: yaw-rate response {lo:.2}–{hi:.2} Hz off by {} dB, {}° (simulated against measured: + the model leads)",
+                crate::format::signed(*gain, 1),
+                crate::format::signed(*phase, 0)
+            ),
+            _ => format!(
+                "yaw-rate response {lo:.2}–{hi:.2} Hz off in {} of {runs} runs: {} dB, {}° (simulated against measured: + the model leads; each run's in diagnosis.json)",
+                v.len(),
+                range(&v, |e| e.1, 1),
+                range(&v, |e| e.2, 0)
+            ),
+        })
+        .collect()
 }

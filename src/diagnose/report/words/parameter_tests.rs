@@ -3,6 +3,7 @@
 //! than one it contains.
 
 use super::*;
+use crate::diagnose::model::channels::Channel;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;
@@ -191,6 +192,7 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
         wrong: vec![],
         right: vec![Part::All],
         offset: SteadyOffset::of(&biases, 0.0019, 0.0046),
+        combined_significant: false,
     };
     assert_eq!(
         finding(&f),

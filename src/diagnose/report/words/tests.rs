@@ -2,6 +2,7 @@
 //! match, and what a sentence may not say.
 
 use super::*;
+use crate::diagnose::report::outcome::VerdictWarning;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
@@ -493,6 +494,7 @@ fn channel_finding(rms: f64, significant_runs: usize, wrong: Vec<(Part, f64)>) -
         wrong,
         right: vec![Part::Window(crate::diagnose::report::parts::Window::Later)],
         offset: None,
+        combined_significant: false,
     }
 }
 

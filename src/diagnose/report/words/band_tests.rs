@@ -1,0 +1,51 @@
+//! The gap's words where a whole campaign shows what no run shows alone:
+//! a channel within noise per run under a significant combined gap, and
+//! a frequency band off in many runs said once.
+
+use super::*;
+use crate::diagnose::report::Part;
+
+#[test]
+fn a_channel_within_noise_alone_under_a_significant_combined_gap_is_not_said_to_be_right() {
+    let f = GapFinding::Channel {
+        channel: crate::diagnose::model::channels::Channel::Beta,
+        rms: 0.0046,
+        noise_floor: 0.002,
+        significant_runs: 0,
+        runs: 8,
+        wrong: vec![],
+        right: vec![Part::All],
+        offset: None,
+        combined_significant: true,
+    };
+    assert_eq!(
+        finding(&f),
+        "beta: RMS 0.0046 rad (noise floor 0.0020); significant in 0 of 8 runs: 2.3 noise floors over the runs, below the 3 a run or part needs alone, so a gap spread over the runs, not in one place (the frequency bands and offsets below say more)"
+    );
+}
+
+#[test]
+fn a_band_off_in_several_runs_is_said_once_with_its_runs_counted() {
+    let band = |run: &str, f_low: f64, gain: f64, phase: f64| GapFinding::Band {
+        run: run.into(),
+        f_low,
+        f_high: 2.0 * f_low,
+        gain_error_db: gain,
+        phase_error_deg: phase,
+    };
+    let findings = [
+        band("a.csv", 0.6, 0.9, 56.0),
+        band("a.csv", 0.3, 0.4, 31.0),
+        band("b.csv", 0.3, 1.6, 19.0),
+        band("c.csv", 0.3, -0.2, 25.0),
+        band("c.csv", 0.1, 0.0, 14.0),
+    ];
+    assert_eq!(
+        band_lines(&findings, 29),
+        [
+            "c.csv: yaw-rate response 0.10–0.20 Hz off by 0.0 dB, +14° (simulated against measured: + the model leads)",
+            "yaw-rate response 0.30–0.60 Hz off in 3 of 29 runs: -0.2 to +1.6 dB, +19 to +31° (simulated against measured: + the model leads; each run's in diagnosis.json)",
+            "a.csv: yaw-rate response 0.60–1.20 Hz off by +0.9 dB, +56° (simulated against measured: + the model leads)",
+        ]
+    );
+}

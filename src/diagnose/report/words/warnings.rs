@@ -1,0 +1,55 @@
+//! A verdict's warnings in words ([`VerdictWarning`]): a channel the
+//! effects leave worse or leave, parameters on their search bound, and a
+//! rest of the gap that is itself significant. RMS values in the channel's
+//! unit; shares in percent of the gap above noise.
+
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::outcome::VerdictWarning;
+
+/// A channel's held-out RMS before and after the verdict's effects, in its
+/// unit: `RMS 0.0247 → 0.0216 rad/s`.
+fn rms_change(channel: Channel, before: f64, after: f64) -> String {
+    format!("RMS {before:.4} → {after:.4} {}", channel.unit())
+}
+
+/// One warning on the verdict.
+pub fn verdict_warning(w: &VerdictWarning) -> String {
+    match w {
+        VerdictWarning::ChannelWorsened(c) => format!(
+            "it leaves the {} gap larger on held-out runs: {} (noise floor {:.4}), {:.0} % of the gap above noise added; the combined error falls through the other channels (check this channel's sensor and whether the effect's physics can make it worse)",
+            c.channel.name(),
+            rms_change(c.channel, c.before, c.after),
+            c.noise_floor,
+            c.added_percent
+        ),
+        VerdictWarning::ChannelLeft(c) => format!(
+            "it leaves the {} gap: {} on held-out runs (noise floor {:.4}), {:.0} % of the gap above noise removed, less than the {:.0} % the verdict needs of the whole; the combined error falls through the other channels, so this channel's gap has another cause (a model-form error the candidates do not hold, or this channel's sensor)",
+            c.channel.name(),
+            rms_change(c.channel, c.before, c.after),
+            c.noise_floor,
+            c.removed_percent,
+            c.acceptance_percent
+        ),
+        VerdictWarning::OnSearchBound { parameters } => {
+            let each: Vec<String> = parameters
+                .iter()
+                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
+                .collect();
+            format!(
+                "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",
+                each.join(", "),
+                if parameters.len() == 1 { "its" } else { "their" },
+                if parameters.len() == 1 { "it" } else { "them" },
+                if parameters.len() == 1 { "its value is" } else { "their values are" },
+            )
+        }
+        VerdictWarning::GapRemains {
+            heldout_error_after,
+            noise_level,
+            threshold,
+            left_percent,
+        } => format!(
+            "what it leaves is still a gap: held-out error {heldout_error_after:.3}, above {threshold} × the noise level {noise_level:.3}, so the other {left_percent:.1} % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
+        ),
+    }
+}

@@ -139,14 +139,14 @@ pub(crate) fn verdict(
 /// ([`rules::significant`]).
 fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
     let most = ranked.reduction_percent >= EXPLAINS_MOST;
-    (most && rules::significant(ranked.heldout_error_after, noise_level)).then(|| {
+    (most && rules::significant(ranked.heldout_error_after, noise_level)).then_some(
         VerdictWarning::GapRemains {
             heldout_error_after: ranked.heldout_error_after,
             noise_level,
             threshold: rules::SIGNIFICANT,
             left_percent: 100.0 - ranked.reduction_percent,
-        }
-    })
+        },
+    )
 }
 
 fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) -> Vec<Evidence> {

@@ -94,7 +94,9 @@ pub(super) fn channel(f: &GapFinding) -> String {
 /// the runs counted of `runs` and the range of its gain and phase errors
 /// (each run's stays in `diagnosis.json` and on the page).
 pub fn band_lines(findings: &[GapFinding], runs: usize) -> Vec<String> {
-    let mut bands: Vec<((f64, f64), Vec<(&str, f64, f64)>)> = Vec::new();
+    // Per band (Hz): each run's name, gain error (dB), phase error (°).
+    type Runs<'a> = Vec<(&'a str, f64, f64)>;
+    let mut bands: Vec<((f64, f64), Runs)> = Vec::new();
     for f in findings {
         if let GapFinding::Band {
             run,

@@ -3,8 +3,8 @@
 //! than one it contains.
 
 use super::*;
-use crate::diagnose::model::channels::Channel;
 use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;
 

@@ -2,9 +2,9 @@
 //! match, and what a sentence may not say.
 
 use super::*;
-use crate::diagnose::report::outcome::VerdictWarning;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::report::outcome::VerdictWarning;
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;

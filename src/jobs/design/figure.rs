@@ -18,12 +18,15 @@ const CANDIDATE_COLOURS: [usize; 8] = [0, 1, 2, 3, 4, 5, 6, 9];
 /// The line styles that tell series of one colour apart.
 const STYLES: [Style; 3] = [Style::Line, Style::Dashed, Style::Dotted];
 
-/// The colour and style of member `k` of a set: a colour of its own, the
-/// style changing only when the colours run out, so no two members are
-/// drawn alike.
+/// The colour and style of member `k` of a set: a colour of its own, and
+/// solid, dashed and dotted in turn, so that look-alikes lying on the
+/// reference within a line's width still show, and no two of up to 24
+/// members are drawn alike (8 colours, 3 styles, 8 and 3 coprime).
 pub(super) fn member_look(k: usize) -> (usize, Style) {
-    let n = CANDIDATE_COLOURS.len();
-    (CANDIDATE_COLOURS[k % n], STYLES[(k / n) % STYLES.len()])
+    (
+        CANDIDATE_COLOURS[k % CANDIDATE_COLOURS.len()],
+        STYLES[k % STYLES.len()],
+    )
 }
 
 /// The figure of `design`.

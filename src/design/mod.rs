@@ -22,84 +22,32 @@
 //! Units: separations are dimensionless (noise floors); SI, rad
 //! elsewhere; ISO 8855 axes.
 
+pub mod advice;
 pub mod calibration;
 pub mod candidates;
 pub mod evidence;
 pub mod family;
+mod request;
 pub mod separation;
 
+pub use advice::{Advised, AdvisedBest, Missing, Recommendation, Worth};
 pub(crate) use calibration::{calibration, root_uncertainty, signed_root};
 pub use calibration::{Calibration, CALIBRATING_D};
 pub use candidates::{Fitted, FittedCandidate, FittedValue, ScreenedOut};
 pub use evidence::{compare, measured, Measured, Predicted, MAX_REPETITIONS};
 pub use family::{Designed, Kind, Limits};
+pub use request::DesignRequest;
 pub use separation::Logging;
 
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::Prepared;
-use crate::error::{DesignError, Error, Limit, ParamError, ParamReason};
+use crate::error::{DesignError, Error};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::MeasuredRun;
 use rayon::prelude::*;
 use serde::Serialize;
-
-/// What to design for.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DesignRequest {
-    /// Sets of candidates to separate, each the reference first (None:
-    /// the diagnosis's confounded sets).
-    pub sets: Option<Vec<Vec<Vec<EffectKind>>>>,
-    /// The share of the reached lateral acceleration a design may ask.
-    pub ay_share: f64,
-    /// The largest |du/dt| a design may ask, m/s².
-    pub ax: f64,
-    /// How many of the best manoeuvres get their uncertainty and are kept.
-    pub top: usize,
-    /// Manoeuvres to complete beyond the best `top` (the names of runs
-    /// driven afterwards, whose predictions they are compared with).
-    pub also: Vec<String>,
-}
-
-impl Default for DesignRequest {
-    fn default() -> Self {
-        Self {
-            sets: None,
-            ay_share: family::DEFAULT_AY_SHARE,
-            ax: family::DEFAULT_AX,
-            top: 3,
-            also: Vec::new(),
-        }
-    }
-}
-
-impl DesignRequest {
-    /// Ok when a design can honour the request: `ax` finite and > 0,
-    /// `ay_share` in (0, 1], `top` ≥ 1, no candidate named twice in a set.
-    /// The keys are the command line's options.
-    pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::positive("--max-ax", self.ax)?;
-        ParamError::in_range("--ay-share", self.ay_share, 0.0, 1.0, Limit::AyShare)?;
-        if self.top == 0 {
-            return Err(ParamError::new("--top", 0.0, ParamReason::NotPositive));
-        }
-        for set in self.sets.iter().flatten() {
-            for (i, a) in set.iter().enumerate() {
-                let same = |b: &Vec<EffectKind>| same_effects(b, a);
-                if set[..i].iter().any(same) {
-                    return Err(ParamError::without_value(
-                        "--effects",
-                        ParamReason::GivenTwice {
-                            candidate: joined(a, "+"),
-                        },
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
-}
 
 /// The separation of the reference from one other member.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -145,6 +93,9 @@ pub struct Scored {
     /// confounded (0: the rule already tells them apart; None: more than
     /// [`MAX_REPETITIONS`]; the best `top` only).
     pub repetitions: Option<usize>,
+    /// Whether a driven run is worth it ([`advice::worth`]; the best
+    /// `top` only).
+    pub worth: Option<Worth>,
     /// The largest |ay| of the reference's response, m/s².
     pub peak_ay: f64,
     /// The schedule.
@@ -213,6 +164,11 @@ pub struct SetDesign {
     pub calibration: Calibration,
     /// The manoeuvres within the limits, best first.
     pub ranked: Vec<Scored>,
+    /// Whether any of them is worth driving ([`advice::recommendation`]).
+    pub recommendation: Recommendation,
+    /// What the diagnosis advises to separate each member's effects, and
+    /// where the family's manoeuvres of that test rank.
+    pub advised: Vec<Advised>,
     /// Manoeuvres asked for by name ([`DesignRequest::also`]) beyond the
     /// best, completed alike (no scenario file is written for them).
     pub named: Vec<Scored>,
@@ -464,6 +420,7 @@ impl SetContext<'_> {
             noise_uncertainty: None,
             expected: None,
             repetitions: None,
+            worth: None,
             peak_ay: peak,
             manoeuvre: d.manoeuvre.clone(),
         };
@@ -472,8 +429,9 @@ impl SetContext<'_> {
 
     /// The expected measured separation of `s` against its weakest pair,
     /// its uncertainty (the noise's part widened by `inflation`,
-    /// [`Calibration`]) and the runs the confounding rule needs.
-    fn complete(&self, s: &mut Scored, inflation: f64) {
+    /// [`Calibration`]), the runs the confounding rule needs and whether
+    /// it is worth driving against a campaign that separates by `campaign`.
+    fn complete(&self, s: &mut Scored, inflation: f64, campaign: f64) {
         let weakest = s
             .pairs
             .iter()
@@ -501,6 +459,10 @@ impl SetContext<'_> {
         s.expected = Some(signed_root(mean));
         s.noise_uncertainty = Some(root_uncertainty(mean, sd(1.0)));
         s.uncertainty = Some(root_uncertainty(mean, sd(inflation * inflation)));
+        s.worth = s
+            .expected
+            .zip(s.uncertainty)
+            .map(|(e, u)| advice::worth(e, u, campaign));
         let held = evidence::Held {
             reference: self.members[0].heldout_error,
             other: self.members[weakest].heldout_error,
@@ -533,18 +495,23 @@ fn design_set(
         .filter(|(s, _)| req.also.contains(&s.name))
         .map(|(s, _)| s.clone())
         .collect();
+    let effects: Vec<_> = cx.members.iter().flat_map(|m| m.effects.clone()).collect();
+    let advised = advice::advice_of(&effects, &ranked.iter().map(|(s, _)| s).collect::<Vec<_>>());
     ranked.truncate(req.top.max(1));
     let (campaign_separation, calibration) = campaign_separation(cx);
     for s in ranked.iter_mut().map(|(s, _)| s).chain(&mut named) {
-        cx.complete(s, calibration.inflation);
+        cx.complete(s, calibration.inflation, campaign_separation);
     }
     let best = ranked.first().map(|(_, p)| p.clone());
+    let ranked: Vec<Scored> = ranked.into_iter().map(|(s, _)| s).collect();
     Ok(SetDesign {
         members: cx.labels.clone(),
         source,
         campaign_separation,
         calibration,
-        ranked: ranked.into_iter().map(|(s, _)| s).collect(),
+        recommendation: advice::recommendation(&ranked, campaign_separation),
+        advised,
+        ranked,
         named,
         excluded,
         best,

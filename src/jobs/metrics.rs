@@ -186,10 +186,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     ];
     if let Some(f) = m.filter_hz {
         out.push(format!(
-            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {} % of the step",
-            // Two decimals, or two significant digits below 0.1 %: a
-            // noise-free run's 0.0042 % read `0.00 %`.
-            crate::format::decimals_or_digits(100.0 * m.yaw_rate_noise, 2, 2)
+            "  filtered: zero-phase 2nd-order Butterworth low-pass at {f} Hz; yaw-rate noise {}",
+            m.yaw_rate_noise_text()
         ));
     }
     if m.yaw_rate_peak_time.is_none() {

@@ -235,3 +235,25 @@ fn a_steer_faster_than_a_steering_system_or_applied_at_the_start_is_said() {
         "{w:?}"
     );
 }
+
+/// A noise-free record's noise of exactly 0 was printed `0.00 %`, as if
+/// rounded: it is said as none measured, and a tiny noise carries its
+/// digits.
+#[test]
+fn a_yaw_rate_noise_of_zero_is_said_as_none_and_a_tiny_one_with_its_digits() {
+    let none = moderate().yaw_rate_noise_text();
+    assert_eq!(
+        none,
+        "0 % of the step (none measured: at least half of its successive samples are equal)"
+    );
+    let tiny = StepMetrics {
+        yaw_rate_noise: 5.4e-9,
+        ..moderate()
+    };
+    assert_eq!(tiny.yaw_rate_noise_text(), "5.4e-7 % of the step");
+    let some = StepMetrics {
+        yaw_rate_noise: 0.0123,
+        ..moderate()
+    };
+    assert_eq!(some.yaw_rate_noise_text(), "1.23 % of the step");
+}

@@ -221,6 +221,23 @@ pub struct StepMetrics {
 /// Smallest steer step that counts as a step, rad (0.01°).
 pub(crate) const MIN_STEP: f64 = 1.745e-4;
 
+impl StepMetrics {
+    /// The yaw-rate noise as the terminal says it, % of the step: two
+    /// decimals, or two significant digits below 0.1 % (a noise-free
+    /// run's 0.0042 % read `0.00 %`); none measured said so, not `0.00 %`
+    /// (the median difference of neighbouring samples is 0 when at least
+    /// half of them repeat, as a noise-free simulated record's do).
+    pub fn yaw_rate_noise_text(&self) -> String {
+        if self.yaw_rate_noise == 0.0 {
+            "0 % of the step (none measured: at least half of its successive samples are equal)"
+                .into()
+        } else {
+            let v = crate::format::decimals_or_digits(100.0 * self.yaw_rate_noise, 2, 2);
+            format!("{v} % of the step")
+        }
+    }
+}
+
 fn window_mean(t: &[f64], x: &[f64], from: f64, to: f64) -> (f64, f64) {
     let (mut s, mut s2, mut n) = (0.0, 0.0, 0usize);
     for (ti, xi) in t.iter().zip(x) {

@@ -3,10 +3,13 @@
 //! over all channels together (Zhang & Li (2017)'s definition, as the
 //! stages use per channel), beside each channel's own σ and RMS. Raw
 //! samples, not the thinned rows the stages fit: the figure does not depend
-//! on the binning. Units: N and N·m as measured (the pooled sum is then
-//! led by the forces, as the published figures it is compared with).
+//! on the binning. A channel no stage fitted (an `mx` column whose stage
+//! was skipped) is listed as not fitted, with no σ, and left out of the
+//! pooled sums; a channel measured 0 throughout has no relative error,
+//! said in words. Units: N and N·m as measured (the pooled sum is then led
+//! by the forces, as the published figures it is compared with).
 
-use super::MfRow;
+use super::{MfRow, Stage};
 use crate::identify::data::RigData;
 use crate::tyre::mf::MagicFormula;
 use serde::Serialize;
@@ -18,8 +21,11 @@ pub struct ChannelSigma {
     pub channel: &'static str,
     /// Samples with the channel measured.
     pub samples: usize,
-    /// `sqrt(Σe²/ΣF²)·100 %`.
-    pub sigma_percent: f64,
+    /// Whether a stage fitted it (else it has no σ and is not pooled).
+    pub fitted: bool,
+    /// `sqrt(Σe²/ΣF²)·100 %` (None: not fitted, or measured 0 throughout,
+    /// where no error is relative to anything).
+    pub sigma_percent: Option<f64>,
     /// RMS error, N or N·m.
     pub rms: f64,
 }
@@ -29,33 +35,46 @@ pub struct ChannelSigma {
 pub struct PooledSigma {
     /// Raw samples in the file.
     pub samples: usize,
-    /// `sqrt(Σ_channels Σe² / Σ_channels ΣF²)·100 %`.
+    /// `sqrt(Σ_channels Σe² / Σ_channels ΣF²)·100 %` over the fitted
+    /// channels (NaN when they measured 0 throughout).
     pub sigma_percent: f64,
-    /// Each measured channel's own σ.
+    /// Each measured channel's own σ, the ones not fitted included.
     pub channels: Vec<ChannelSigma>,
 }
 
 impl PooledSigma {
-    /// One line: the pooled figure and the channels it pools.
+    /// One line: the pooled figure and the channels it pools; a channel
+    /// not fitted, or measured 0 throughout, said so in words.
     pub fn line(&self) -> String {
-        let parts: Vec<String> = self
-            .channels
-            .iter()
-            .map(|c| {
-                format!(
-                    "{} {:.3} %, RMS error {}",
-                    c.channel,
-                    c.sigma_percent,
-                    rms_text(c.rms, channel_unit(c.channel))
-                )
-            })
-            .collect();
+        let parts: Vec<String> = self.channels.iter().map(ChannelSigma::part).collect();
+        let pooled = if self.sigma_percent.is_finite() {
+            format!("{:.3} %", self.sigma_percent)
+        } else {
+            "no relative error (the fitted channels measured 0 throughout)".into()
+        };
         format!(
-            "σ pooled over all {} raw samples: {:.3} % ({})",
+            "σ pooled over all {} raw samples: {pooled} ({})",
             self.samples,
-            self.sigma_percent,
             parts.join("; ")
         )
+    }
+}
+
+impl ChannelSigma {
+    /// The channel's part of [`PooledSigma::line`].
+    fn part(&self) -> String {
+        let rms = rms_text(self.rms, channel_unit(self.channel));
+        match (self.fitted, self.sigma_percent) {
+            (false, _) => format!(
+                "{} not fitted (its stage was skipped): no σ, left out of the pool",
+                self.channel
+            ),
+            (true, Some(s)) => format!("{} {s:.3} %, RMS error {rms}", self.channel),
+            (true, None) => format!(
+                "{} measured 0 throughout: no relative error, RMS error {rms}",
+                self.channel
+            ),
+        }
     }
 }
 
@@ -96,8 +115,20 @@ pub fn raw_rows(d: &RigData, moments: &[Option<Vec<f64>>; 2], default_speed: f64
         .collect()
 }
 
-/// The pooled σ of `tyre` over `rows` (each channel where measured).
-pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow]) -> PooledSigma {
+/// The index in [`pooled_sigma`]'s channels of the channel `stage` fits.
+fn channel_of(stage: Stage) -> usize {
+    match stage {
+        Stage::PureFx | Stage::CombinedFx => 0,
+        Stage::PureFy | Stage::CombinedFy => 1,
+        Stage::PureMz | Stage::CombinedMz => 2,
+        Stage::Mx => 3,
+        Stage::My => 4,
+    }
+}
+
+/// The pooled σ of `tyre` over `rows` (each channel where measured), the
+/// sums over the channels the stages `fitted` fit.
+pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow], fitted: &[Stage]) -> PooledSigma {
     const NAMES: [&str; 5] = ["fx", "fy", "mz", "mx", "my"];
     let (mut e2, mut y2, mut n) = ([0.0f64; 5], [0.0f64; 5], [0usize; 5]);
     for r in rows {
@@ -118,18 +149,22 @@ pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow]) -> PooledSigma {
             }
         }
     }
+    let is_fitted = |k: usize| fitted.iter().any(|&s| channel_of(s) == k);
     let channels: Vec<ChannelSigma> = (0..5)
         .filter(|&k| n[k] > 0)
         .map(|k| ChannelSigma {
             channel: NAMES[k],
             samples: n[k],
-            sigma_percent: 100.0 * (e2[k] / y2[k]).sqrt(),
+            fitted: is_fitted(k),
+            sigma_percent: Some(100.0 * (e2[k] / y2[k]).sqrt())
+                .filter(|s| is_fitted(k) && s.is_finite()),
             rms: (e2[k] / n[k] as f64).sqrt(),
         })
         .collect();
+    let pooled = |v: &[f64; 5]| (0..5).filter(|&k| is_fitted(k)).map(|k| v[k]).sum::<f64>();
     PooledSigma {
         samples: rows.len(),
-        sigma_percent: 100.0 * (e2.iter().sum::<f64>() / y2.iter().sum::<f64>()).sqrt(),
+        sigma_percent: 100.0 * (pooled(&e2) / pooled(&y2)).sqrt(),
         channels,
     }
 }
@@ -173,7 +208,7 @@ mod tests {
         };
         // fy off by 30 N at one of two rows; mz model 0 vs measured 3 and 4.
         let rows = [row(0.05, 30.0, 3.0), row(0.1, 0.0, 4.0)];
-        let s = pooled_sigma(&t, &rows);
+        let s = pooled_sigma(&t, &rows, &[Stage::PureFy, Stage::PureMz]);
         let fy2: f64 = rows.iter().map(|r| r.fy * r.fy).sum();
         let want = 100.0 * ((900.0 + 25.0) / (fy2 + 25.0)).sqrt();
         assert!(
@@ -182,11 +217,66 @@ mod tests {
             s.sigma_percent
         );
         assert_eq!(s.channels.len(), 2);
-        assert!((s.channels[1].sigma_percent - 100.0).abs() < 1e-9);
+        assert!((s.channels[1].sigma_percent.unwrap() - 100.0).abs() < 1e-9);
         assert!((s.channels[0].rms - (900.0f64 / 2.0).sqrt()).abs() < 1e-9);
         let line = s.line();
         assert!(line.contains("%, RMS error 21.21 N; "), "{line}");
         assert!(line.contains("mz 100.000 %, RMS error 3.54 N·m"), "{line}");
+    }
+
+    /// An `mx` measured but not fitted (its stage skipped) gets no σ and
+    /// is not pooled; an `fx` measured 0 throughout has no relative error,
+    /// said in words, never `NaN %`.
+    #[test]
+    fn a_channel_not_fitted_gets_no_sigma_and_an_all_zero_one_no_nan() {
+        let t = MagicFormula {
+            version: MfVersion::Mf61,
+            side: TyreSide::Left,
+            options: MfOptions::default(),
+            limits: Default::default(),
+            coefficients: MfCoefficients::default(),
+        };
+        let rows: Vec<MfRow> = [0.02, 0.05, 0.1]
+            .iter()
+            .map(|&alpha| MfRow {
+                fz: 4000.0,
+                kappa: 0.0,
+                alpha,
+                camber: 0.0,
+                speed: 16.7,
+                pressure: None,
+                fx: 0.0,
+                fy: 3000.0 * alpha,
+                mz: 10.0,
+                mx: 40.0,
+                my: f64::NAN,
+            })
+            .collect();
+        let fitted = [Stage::PureFx, Stage::PureFy, Stage::PureMz];
+        let s = pooled_sigma(&t, &rows, &fitted);
+        let only = pooled_sigma(&t, &rows, &fitted[1..]);
+        let mx = s.channels.iter().find(|c| c.channel == "mx").unwrap();
+        assert!(!mx.fitted && mx.sigma_percent.is_none(), "{mx:?}");
+        let fx = s.channels.iter().find(|c| c.channel == "fx").unwrap();
+        assert!(fx.fitted && fx.sigma_percent.is_none(), "{fx:?}");
+        // mx left out of the pool: the pool is fy's and mz's alone (fx
+        // adds no square).
+        let (fy, mz) = (&s.channels[1], &s.channels[2]);
+        let e2 = |c: &ChannelSigma| c.rms * c.rms * c.samples as f64;
+        let y2: f64 = rows.iter().map(|r| r.fy * r.fy + r.mz * r.mz).sum();
+        let want = 100.0 * ((e2(fy) + e2(mz) + e2(fx)) / y2).sqrt();
+        assert!((s.sigma_percent - want).abs() < 1e-9 * want, "{s:?}");
+        let line = s.line();
+        assert!(!line.contains("NaN") && !line.contains("mx 100"), "{line}");
+        assert!(
+            line.contains("mx not fitted (its stage was skipped): no σ, left out of the pool"),
+            "{line}"
+        );
+        assert!(
+            line.contains("fx measured 0 throughout: no relative error, RMS error"),
+            "{line}"
+        );
+        assert!(only.line().contains("fx not fitted"), "{}", only.line());
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! afterwards, each run's measured separation against the prediction.
 
 mod diagnosis_file;
+mod figure;
 mod summary;
 
 pub use diagnosis_file::{read_diagnosis, Diagnosed};
@@ -15,12 +16,10 @@ pub use diagnosis_file::{read_diagnosis, Diagnosed};
 use crate::design::{compare, design, measured, Design, DesignRequest, Measured};
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::Channel;
 use crate::error::{DesignError, Error, OutputError, WriteStep};
 use crate::io::campaign::load_campaign;
 use crate::io::read_run;
 use crate::manoeuvre::Manoeuvre;
-use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::report::{create_dir, refuse_overwrites, write_bytes, write_json, OutputLock};
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -277,9 +276,14 @@ impl DesignReport {
             for s in &set.ranked {
                 let sep = match (s.expected, s.uncertainty) {
                     (Some(e), Some(u)) => format!(
-                        "Separates {} by D = {:.1} noise floors; a driven run is expected to measure {e:.1} ± {u:.1}.",
+                        "Separates {} by D = {:.1} noise floors; a driven run is expected to measure {e:.1} ± {u:.1}{}.",
                         set.members.join(" / "),
-                        s.separation
+                        s.separation,
+                        match s.worth {
+                            Some(crate::design::Worth::Separates) | None => "",
+                            Some(crate::design::Worth::WithinUncertainty) => "; not recommended: within its own uncertainty",
+                            Some(crate::design::Worth::BelowCampaign) => "; not recommended: less than the campaign's runs separate them by",
+                        }
                     ),
                     _ => format!("Separates {} by D = {:.1} noise floors.", set.members.join(" / "), s.separation),
                 };
@@ -287,94 +291,6 @@ impl DesignReport {
                 write_bytes(&self.scenario_path(&s.name), text.as_bytes())?;
             }
         }
-        self.figure().save(&self.out_dir.join("separation.png"))
-    }
-
-    /// The predicted responses of each set's members to its best
-    /// manoeuvre, overlaid per measured channel, with its steer and speed.
-    pub fn figure(&self) -> Figure {
-        let mut panels = Vec::new();
-        let colours = [1, 2, 3, 4, 5, 6];
-        for set in &self.design.sets {
-            let Some(p) = &set.best else { continue };
-            for ch in Channel::ALL {
-                if !self.design.logging.channels[ch.index()] {
-                    continue;
-                }
-                let series = p
-                    .members
-                    .iter()
-                    .enumerate()
-                    .map(|(k, (label, obs))| {
-                        let y = crate::diagnose::pipeline::observed_channel(obs, ch);
-                        let s = Series::line(label, &p.times, y, colours[k % colours.len()]);
-                        // Solid, dashed, dotted: the look-alikes lie on the
-                        // reference within a line's width.
-                        s.styled([Style::Line, Style::Dashed, Style::Dotted][k.min(2)])
-                    })
-                    .collect();
-                panels.push(Panel {
-                    title: format!("{}: {} predicted", p.name, ch.name()),
-                    x_label: "t, s".into(),
-                    y_label: format!("{}, {}", ch.name(), ch.unit()),
-                    series,
-                    x_range: None,
-                    y_range: None,
-                });
-            }
-            // Where the separation lives: each look-alike minus the
-            // reference, in noise floors, per measured channel.
-            let floors = &self.design.noise_floors;
-            let mut diff = Vec::new();
-            for (k, (label, obs)) in p.members.iter().enumerate().skip(1) {
-                for ch in Channel::ALL {
-                    let i = ch.index();
-                    if !self.design.logging.channels[i] || floors[i] <= 0.0 {
-                        continue;
-                    }
-                    let a = crate::diagnose::pipeline::observed_channel(&p.members[0].1, ch);
-                    let b = crate::diagnose::pipeline::observed_channel(obs, ch);
-                    let d: Vec<f64> = a.iter().zip(b).map(|(x, y)| (y - x) / floors[i]).collect();
-                    // A colour per channel, a line style per look-alike:
-                    // no two series alike however many look-alikes.
-                    let style = [Style::Line, Style::Dashed, Style::Dotted][(k - 1).min(2)];
-                    diff.push(
-                        Series::line(&format!("{label}: {}", ch.name()), &p.times, &d, 4 + i)
-                            .styled(style),
-                    );
-                }
-            }
-            // One noise floor either way: where a difference leaves the
-            // band is where the separation is earned.
-            let t_ends = [p.times[0], *p.times.last().unwrap_or(&p.times[0])];
-            for (label, y) in [("±1 noise floor", 1.0), ("", -1.0)] {
-                diff.push(Series::line(label, &t_ends, &[y, y], 7).styled(Style::Dotted));
-            }
-            let d = set.ranked.first().map_or(f64::NAN, |s| s.separation);
-            panels.push(Panel {
-                title: format!(
-                    "{}: the look-alikes' responses less the reference's (D = {d:.1})",
-                    p.name
-                ),
-                x_label: "t, s".into(),
-                y_label: "difference, noise floors".into(),
-                series: diff,
-                x_range: None,
-                y_range: None,
-            });
-            let deg: Vec<f64> = p.steer.iter().map(|d| d.to_degrees()).collect();
-            panels.push(Panel {
-                title: format!("{}: steer and speed", p.name),
-                x_label: "t, s".into(),
-                y_label: "steer, ° · speed, m/s".into(),
-                series: vec![
-                    Series::line("steer, °", &p.times, &deg, 7),
-                    Series::line("speed, m/s", &p.times, &p.speed, 8).styled(Style::Dashed),
-                ],
-                x_range: None,
-                y_range: None,
-            });
-        }
-        Figure::stack(panels)
+        figure::figure(&self.design).save(&self.out_dir.join("separation.png"))
     }
 }

@@ -1,8 +1,10 @@
 //! What `design` prints: the limits, each set's ranked manoeuvres with
-//! their expected separation and the runs the diagnosis needs, and each
-//! measured run against its prediction. Separations in noise floors.
+//! their expected separation, whether each is worth driving and the runs
+//! the diagnosis needs, what the diagnosis advises and where it ranks, and
+//! each measured run against its prediction. Separations in noise floors.
 
 use super::DesignReport;
+use crate::design::{Recommendation, SetDesign, Worth};
 
 /// The share of a manoeuvre below which a driven run is said to be a
 /// part of it (a logger's last samples aside).
@@ -50,13 +52,16 @@ impl DesignReport {
                     None => String::new(),
                 };
                 out.push(format!(
-                    "  {}. {} — D = {:.1}{expected}{enough}: {}",
+                    "  {}. {} — D = {:.1}{expected}{}{enough}: {}",
                     k + 1,
                     s.name,
                     s.separation,
+                    worth_words(s.worth),
                     s.description
                 ));
             }
+            out.extend(recommendation_line(set));
+            out.extend(advised_line(set, self.design.family - set.excluded.len()));
             if !set.excluded.is_empty() {
                 out.push(format!(
                     "  left out: {} beyond the limits or diverged (design.json lists them)",
@@ -111,4 +116,101 @@ impl DesignReport {
         out.push(format!("wrote {}", self.out_dir.display()));
         out
     }
+}
+
+/// Whether a manoeuvre is recommended, in words after its expectation.
+fn worth_words(worth: Option<Worth>) -> &'static str {
+    match worth {
+        Some(Worth::Separates) => "; recommended",
+        Some(Worth::WithinUncertainty) => {
+            "; not recommended: within its own uncertainty, one run may show no separation or favour the wrong candidate"
+        }
+        Some(Worth::BelowCampaign) => {
+            "; not recommended: less than the campaign's runs already separate them by"
+        }
+        None => "",
+    }
+}
+
+/// The set's recommendation when none of its best is worth driving.
+fn recommendation_line(set: &SetDesign) -> Option<String> {
+    let Recommendation::NoneWorthDriving {
+        best_expected: e,
+        best_uncertainty: u,
+        campaign_separates_more,
+    } = set.recommendation
+    else {
+        return None;
+    };
+    let n = set.ranked.len();
+    let these = if n == 1 { "it" } else { "any of these" };
+    Some(if campaign_separates_more {
+        format!(
+            "  none is worth driving to separate them: the campaign's runs already separate them by D = {:.1}, more than {these} is expected to add (at most {e:.1} ± {u:.1})",
+            set.campaign_separation
+        )
+    } else {
+        format!(
+            "  none is worth driving to separate them: each one's expected separation lies within its own uncertainty (at most {e:.1} ± {u:.1})"
+        )
+    })
+}
+
+/// What the diagnosis advises to separate the set's effects, and where
+/// the family's manoeuvres of that test rank among the `ranked` within
+/// the limits.
+fn advised_line(set: &SetDesign, ranked: usize) -> Option<String> {
+    use crate::design::Missing;
+    if set.advised.is_empty() {
+        return None;
+    }
+    let parts: Vec<String> = set
+        .advised
+        .iter()
+        .map(|a| {
+            let what = match (&a.missing, &a.best) {
+                (Some(Missing::StraightBothWays), _) => {
+                    "a straight run both ways, which the family, driven one way, does not make".into()
+                }
+                (Some(Missing::BankedCorner), _) => {
+                    "a banked corner at two speeds, which the family, driven on a flat road, does not make".into()
+                }
+                (None, Some(b)) => format!(
+                    "{} (the best, {}, ranks {} of {ranked}, D = {:.1})",
+                    kinds_words(&a.kinds),
+                    b.name,
+                    b.rank,
+                    b.separation
+                ),
+                (None, None) => format!(
+                    "{} (every one of the family's left out beyond the limits)",
+                    kinds_words(&a.kinds)
+                ),
+            };
+            format!("{} by {what}", a.effect)
+        })
+        .collect();
+    Some(format!(
+        "  the diagnosis advises to separate {}",
+        parts.join("; ")
+    ))
+}
+
+/// The family's kinds of an advised test, in words.
+fn kinds_words(kinds: &[crate::design::Kind]) -> String {
+    use crate::design::Kind::*;
+    let words: Vec<&str> = kinds
+        .iter()
+        .map(|k| match k {
+            Step => "steps",
+            Ramp => "a ramp",
+            Sweep => "sweeps",
+            LaneChange => "lane changes",
+            SpeedChange => "a speed change on a straight",
+            BrakeInTurn => "steady turns then braking",
+            AccelerateInTurn => "steady turns then accelerating",
+            ConstantRadius => "a constant-radius turn",
+        })
+        .collect();
+    words.join(" or ")
 }

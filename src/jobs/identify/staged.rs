@@ -221,8 +221,15 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     };
     let id = mf_staged::identify(&prepared.rows, &settings)
         .map_err(|e| FitError::in_data(&o.data, None, e.into()))?;
+    let fitted: Vec<mf_staged::Stage> = id
+        .report
+        .stages
+        .iter()
+        .filter(|s| s.skipped.is_none())
+        .map(|s| s.stage)
+        .collect();
     let raw = mf_staged::raw_rows(&data, &moments, default_speed);
-    let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw);
+    let sigma_pooled = mf_staged::pooled_sigma(&id.tyre, &raw, &fitted);
     crate::tyre::ModelParameters::check_sizes(&id.tyre)
         .map_err(|source| FitError::BeyondAnyTyre { source })?;
     let mut held = super::holds::holds_of(o, &given_names(o));
@@ -258,13 +265,6 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     if back > 1e-9 {
         return Err(FitError::RoundTrip { difference: back }.into());
     }
-    let fitted: Vec<mf_staged::Stage> = id
-        .report
-        .stages
-        .iter()
-        .filter(|s| s.skipped.is_none())
-        .map(|s| s.stage)
-        .collect();
     let figure = super::staged_figure::staged_figure(&id.tyre, &fitted, &prepared.rows, named);
     Ok(StagedJob {
         held,

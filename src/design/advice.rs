@@ -1,0 +1,295 @@
+//! What a design recommends, and whether its family holds what the
+//! diagnosis advises.
+//!
+//! A manoeuvre is recommended ([`Worth::Separates`]) only when a driven run
+//! is expected to separate the pair beyond its own uncertainty (`expected`
+//! above its 1 σ) and by at least as much as the campaign's runs already
+//! do: a run whose separation lies within its uncertainty may measure
+//! nothing or favour the wrong candidate, and one that separates less than
+//! the campaign adds less than the runs that left the pair confounded.
+//! When none of the best is recommended, the set says so
+//! ([`Recommendation`]) instead of offering them as separating tests.
+//!
+//! The diagnosis's confounded words name, per effect, the test that
+//! separates it (its signature, e.g. "steps at two speeds"); [`advised`]
+//! reads that test as the family's kinds, or says why the family has none
+//! (a straight run both ways, a banked corner), so the design states where
+//! the advised manoeuvres rank.
+//!
+//! Units: separations in noise floors.
+
+use super::family::Kind;
+use super::Scored;
+use crate::diagnose::effects::EffectKind;
+use serde::Serialize;
+
+/// Whether one manoeuvre is worth driving to separate a pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Worth {
+    /// Expected to separate beyond its own uncertainty, by at least the
+    /// campaign's separation.
+    Separates,
+    /// Its expected separation lies within its own uncertainty: one run
+    /// may show no separation, or favour the wrong candidate.
+    WithinUncertainty,
+    /// Beyond its uncertainty, but less than the campaign's runs already
+    /// separate the pair by, without the diagnosis telling them apart.
+    BelowCampaign,
+}
+
+/// The worth of a manoeuvre a driven run of which is expected to measure
+/// `expected ± uncertainty` against a campaign that separates the pair by
+/// `campaign` (D over all its runs). A non-finite value is no separation.
+pub fn worth(expected: f64, uncertainty: f64, campaign: f64) -> Worth {
+    if !(expected.is_finite() && uncertainty.is_finite() && expected > uncertainty) {
+        Worth::WithinUncertainty
+    } else if campaign.is_finite() && expected < campaign {
+        Worth::BelowCampaign
+    } else {
+        Worth::Separates
+    }
+}
+
+/// What the design recommends for a set.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Recommendation {
+    /// Drive the manoeuvres marked [`Worth::Separates`] (`count` of the
+    /// best).
+    Drive {
+        /// How many.
+        count: usize,
+    },
+    /// None of the best is worth driving as a separating test.
+    NoneWorthDriving {
+        /// The largest expected separation among them (NaN: none
+        /// completed).
+        best_expected: f64,
+        /// Its uncertainty.
+        best_uncertainty: f64,
+        /// Whether the campaign's runs already separate the pair by more
+        /// than any of them is expected to.
+        campaign_separates_more: bool,
+    },
+}
+
+/// The recommendation for a set whose completed best are `ranked`, its
+/// campaign separating the pair by `campaign`.
+pub fn recommendation(ranked: &[Scored], campaign: f64) -> Recommendation {
+    let count = ranked
+        .iter()
+        .filter(|s| s.worth == Some(Worth::Separates))
+        .count();
+    if count > 0 {
+        return Recommendation::Drive { count };
+    }
+    let best = ranked
+        .iter()
+        .filter_map(|s| s.expected.zip(s.uncertainty))
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    let (best_expected, best_uncertainty) = best.unwrap_or((f64::NAN, f64::NAN));
+    Recommendation::NoneWorthDriving {
+        best_expected,
+        best_uncertainty,
+        campaign_separates_more: campaign > best_expected,
+    }
+}
+
+/// Why the family has no manoeuvre of an advised test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Missing {
+    /// A straight run in both directions of travel: the family's
+    /// manoeuvres are driven one way, and an offset shows only against
+    /// the same run the other way.
+    StraightBothWays,
+    /// The same banked corner at two speeds: the family is driven on a
+    /// flat road (a designed run's bank is not known before it is driven).
+    BankedCorner,
+}
+
+/// The kinds of manoeuvre of the family that make the test the
+/// diagnosis advises to separate `effect` by (its signature), or why the
+/// family has none.
+pub fn advised(effect: EffectKind) -> Result<&'static [Kind], Missing> {
+    use Kind::*;
+    const STEADY_TURNS: &[Kind] = &[BrakeInTurn, AccelerateInTurn, ConstantRadius];
+    Ok(match effect.name() {
+        // Runs at two speeds; steps at two speeds (one level, or two
+        // levels at one speed).
+        "relaxation_length" => &[Step, Sweep, LaneChange],
+        "load_transfer_distribution" | "aero_load" | "cornering_stiffness" => &[Step],
+        // Steady turns at one lateral acceleration and several speeds (the
+        // family's open with one), or compared with u·r.
+        "steering_compliance" | "accelerometer_roll" => STEADY_TURNS,
+        "roll_steer" | "roll_camber" | "road_friction" => &[Ramp],
+        "yaw_inertia" | "sensor_delay" => &[Sweep],
+        "accelerometer_position" => &[Sweep, BrakeInTurn, AccelerateInTurn, ConstantRadius],
+        "longitudinal_load_transfer" => &[BrakeInTurn, AccelerateInTurn],
+        "combined_slip" => &[BrakeInTurn],
+        "steer_path" => &[Step, SpeedChange],
+        "road_bank" | "sensor_bias" => return Err(Missing::StraightBothWays),
+        "bank_profile" => return Err(Missing::BankedCorner),
+        _ => &[],
+    })
+}
+
+/// The family's best manoeuvre of an advised test.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AdvisedBest {
+    /// Its name.
+    pub name: String,
+    /// Its place in the whole ranking, 1 the best.
+    pub rank: usize,
+    /// Its D.
+    pub separation: f64,
+}
+
+/// What the diagnosis advises to separate one member's effect, and where
+/// the family's manoeuvres of that test rank.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Advised {
+    /// The effect.
+    pub effect: String,
+    /// The family's kinds that make the test (empty when missing).
+    pub kinds: Vec<Kind>,
+    /// Why the family has none of it.
+    pub missing: Option<Missing>,
+    /// The best of those kinds within the limits (None: every one left
+    /// out, or missing).
+    pub best: Option<AdvisedBest>,
+}
+
+/// What the diagnosis advises for each effect of `effects` (each once),
+/// against the family's whole ranking `ranked` (best first).
+pub fn advice_of(effects: &[EffectKind], ranked: &[&Scored]) -> Vec<Advised> {
+    let mut seen: Vec<EffectKind> = Vec::new();
+    let mut out = Vec::new();
+    for &e in effects {
+        if seen.contains(&e) {
+            continue;
+        }
+        seen.push(e);
+        let (kinds, missing) = match advised(e) {
+            Ok(k) => (k.to_vec(), None),
+            Err(m) => (Vec::new(), Some(m)),
+        };
+        let best = ranked
+            .iter()
+            .enumerate()
+            .find(|(_, s)| kinds.contains(&s.kind))
+            .map(|(k, s)| AdvisedBest {
+                name: s.name.clone(),
+                rank: k + 1,
+                separation: s.separation,
+            });
+        out.push(Advised {
+            effect: e.name().to_string(),
+            kinds,
+            missing,
+            best,
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 3.1 ± 9.5 is no separation, whatever the campaign; 27 ± 1.9 against
+    /// a campaign of 8.2 is; 5 ± 1 against a campaign of 7.5 adds less than
+    /// the campaign already shows.
+    #[test]
+    fn a_separation_within_its_uncertainty_or_below_the_campaigns_is_not_recommended() {
+        assert_eq!(worth(3.1, 9.5, 7.5), Worth::WithinUncertainty);
+        assert_eq!(worth(3.1, 9.5, 0.5), Worth::WithinUncertainty);
+        assert_eq!(worth(27.0, 1.9, 8.2), Worth::Separates);
+        assert_eq!(worth(5.0, 1.0, 7.5), Worth::BelowCampaign);
+        assert_eq!(worth(f64::NAN, 1.0, 7.5), Worth::WithinUncertainty);
+        assert_eq!(worth(5.0, 1.0, f64::NAN), Worth::Separates);
+    }
+
+    /// A set none of whose best is worth driving says so, and whether the
+    /// campaign already separates the pair by more than the best would.
+    #[test]
+    fn a_set_with_nothing_worth_driving_says_whether_the_campaign_separates_more() {
+        let scored = |expected: f64, uncertainty: f64, campaign: f64| Scored {
+            name: "m".into(),
+            kind: Kind::Sweep,
+            description: String::new(),
+            duration: 12.0,
+            separation: expected,
+            pairs: Vec::new(),
+            uncertainty: Some(uncertainty),
+            parameter_uncertainty: None,
+            noise_uncertainty: None,
+            expected: Some(expected),
+            repetitions: None,
+            worth: Some(worth(expected, uncertainty, campaign)),
+            peak_ay: 1.0,
+            manoeuvre: crate::manoeuvre::Manoeuvre::Replay(crate::manoeuvre::Replay {
+                t: vec![0.0, 1.0],
+                steer: vec![0.0; 2],
+                speed: vec![20.0; 2],
+            }),
+        };
+        let none = recommendation(&[scored(3.1, 9.5, 7.5), scored(2.0, 8.0, 7.5)], 7.5);
+        assert_eq!(
+            none,
+            Recommendation::NoneWorthDriving {
+                best_expected: 3.1,
+                best_uncertainty: 9.5,
+                campaign_separates_more: true
+            }
+        );
+        let wide = recommendation(&[scored(11.8, 15.7, 6.1)], 6.1);
+        assert!(
+            matches!(
+                wide,
+                Recommendation::NoneWorthDriving {
+                    campaign_separates_more: false,
+                    ..
+                }
+            ),
+            "{wide:?}"
+        );
+        let drive = recommendation(&[scored(27.0, 1.9, 8.2), scored(5.0, 1.0, 8.2)], 8.2);
+        assert_eq!(drive, Recommendation::Drive { count: 1 });
+    }
+
+    /// Every effect of the library has its advised test in the family, or
+    /// a stated reason why not; the test words of its signature name it.
+    #[test]
+    fn every_effects_advised_test_is_in_the_family_or_said_missing() {
+        for e in EffectKind::ALL {
+            match advised(e) {
+                Ok(kinds) => assert!(!kinds.is_empty(), "{}", e.name()),
+                Err(Missing::StraightBothWays) => {
+                    assert!(e.signature().contains("both"), "{}", e.name())
+                }
+                Err(Missing::BankedCorner) => {
+                    assert!(e.signature().contains("corner"), "{}", e.name())
+                }
+            }
+            let words = e.signature().rsplit(':').next().unwrap_or("");
+            for (word, kind) in [
+                ("sweep", Kind::Sweep),
+                ("ramp", Kind::Ramp),
+                ("steady turns", Kind::BrakeInTurn),
+                ("braking in a turn", Kind::BrakeInTurn),
+                ("steps", Kind::Step),
+                ("a steer step", Kind::Step),
+            ] {
+                if words.contains(word) {
+                    assert!(
+                        advised(e).is_ok_and(|k| k.contains(&kind)),
+                        "{}: {words}",
+                        e.name()
+                    );
+                }
+            }
+        }
+    }
+}

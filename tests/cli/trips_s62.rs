@@ -11,24 +11,7 @@
 
 use super::*;
 use crate::trips_run_units::metrics;
-
-/// The MF 6.1 sample of the fixtures, written to `dir` with each key of
-/// `edits` given the value beside it.
-fn mf61(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
-    let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
-        .unwrap();
-    let mut out = String::new();
-    for line in text.lines() {
-        let key = line.split_whitespace().next().unwrap_or("");
-        match edits.iter().find(|(k, _)| *k == key) {
-            Some((k, v)) => out += &format!("{k} = {v}\n"),
-            None => out += &format!("{line}\n"),
-        }
-    }
-    let path = dir.join("tyre.tir");
-    fs::write(&path, out).unwrap();
-    path
-}
+use crate::tyre_eval::mf61;
 
 /// `tyre-eval` of `tyre` at the points `csv`, written to `dir`: whether it
 /// succeeded, its stderr and the CSV it wrote.
@@ -278,8 +261,9 @@ fn a_rise_time_at_the_books_bound_runs_and_one_just_above_is_refused() {
     );
 }
 
-/// A lateral rig file with cornering data.
-fn rig(columns: &str, row: fn(f64, f64, f64) -> String) -> String {
+/// A lateral rig file with cornering data at three loads, each row as
+/// `row` writes it from (load, slip angle, lateral force).
+pub(crate) fn rig(columns: &str, row: fn(f64, f64, f64) -> String) -> String {
     let mut s = format!("{columns}\n");
     for fz in [2000.0, 4000.0, 6000.0] {
         for k in -10..=10 {

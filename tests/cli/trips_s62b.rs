@@ -7,6 +7,7 @@
 //! `0.00 %`. Each test one finding.
 
 use super::*;
+use crate::trips_s62::rig;
 
 /// The road course with a steering compliance withheld: the diagnosis
 /// confounds it with a stiffness scale and the roll effects, and its runs
@@ -91,21 +92,6 @@ fn design_recommends_no_manoeuvre_within_its_uncertainty_and_ranks_the_diagnosis
     let name = set["ranked"][0]["name"].as_str().unwrap();
     let scenario = fs::read_to_string(d.join(format!("design/scenarios/{name}.toml"))).unwrap();
     assert!(scenario.contains("; not recommended: "), "{scenario}");
-}
-
-/// A lateral rig file with cornering data at three loads, each row as
-/// `row` writes it from (load, slip angle, lateral force).
-fn rig(columns: &str, row: fn(f64, f64, f64) -> String) -> String {
-    let mut s = format!("{columns}\n");
-    for fz in [2000.0, 4000.0, 6000.0] {
-        for k in -10..=10 {
-            let alpha = 0.02 * f64::from(k);
-            let fy = fz * (1.4 * (12.0 * alpha).atan()).sin();
-            s += &row(fz, alpha, fy);
-            s += "\n";
-        }
-    }
-    s
 }
 
 /// `identify --model mf61` printed `mx 100.000 %` in its pooled σ line for

@@ -12,7 +12,7 @@ use super::*;
 use crate::trips_identify::{identify_with, rig, stdout};
 
 /// The MF 6.1 sample file of the fixtures, with `edits` (key, value) made.
-fn mf61(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
+pub(crate) fn mf61(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
     let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
         .unwrap();
     let mut out = String::new();

@@ -6,6 +6,7 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
+use crate::format::fixed;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
@@ -270,7 +271,9 @@ fn findings(d: &Diagnosis) -> Vec<String> {
 /// significant" across both, where a percentage would be a share of noise.
 fn reduction_cells(r: [Reduction; 2]) -> String {
     match r {
-        [Reduction::Percent(h), Reduction::Percent(i)] => format!("{h:>9.1} % {i:>8.1} %"),
+        [Reduction::Percent(h), Reduction::Percent(i)] => {
+            format!("{:>9} % {:>8} %", fixed(h, 1), fixed(i, 1))
+        }
         [Reduction::WithinNoise, Reduction::WithinNoise] => {
             format!("{:>22}", words::reduction(Reduction::WithinNoise))
         }
@@ -302,11 +305,11 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(singles.iter().map(|s| {
             format!(
-                "  {:<w$} {:>8.3} {:>11} {:>8.1} % {:>12}",
+                "  {:<w$} {:>8.3} {:>11} {:>8} % {:>12}",
                 s.effect,
                 s.insample_error_after,
                 "—",
-                s.insample_reduction_percent,
+                fixed(s.insample_reduction_percent, 1),
                 crate::format::fixed(s.delta_bic, 0)
             )
         }));
@@ -319,11 +322,11 @@ fn screened_lines(d: &Diagnosis) -> Vec<String> {
         ));
         out.extend(sets.iter().map(|s| {
             format!(
-                "  {:<w$} {:>8.3} {:>11} {:>8.1} % of what {} leaves",
+                "  {:<w$} {:>8.3} {:>11} {:>8} % of what {} leaves",
                 s.effect,
                 s.insample_error_after,
                 "—",
-                s.insample_reduction_percent,
+                fixed(s.insample_reduction_percent, 1),
                 joined(&s.extends, "+")
             )
         }));
@@ -524,75 +527,5 @@ fn overlays(d: &Diagnosis) -> Figure {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Nine channel-and-axis charts become three print-sized panels: a
-    /// panel per axis holding every channel, labels about 10 pt on a
-    /// 170 mm text width, each channel's series named with its quantity.
-    #[test]
-    fn the_gap_map_is_three_panels_legible_in_print() {
-        let mut points = Vec::new();
-        for ch in Channel::ALL {
-            for axis in PartAxis::ALL {
-                for (x, b, a) in [(1.0, 5.0, 1.0), (2.0, 4.0, 1.5)] {
-                    points.push(GapPoint {
-                        channel: ch,
-                        axis,
-                        x,
-                        before: b,
-                        after: a,
-                    });
-                }
-            }
-        }
-        let fig = gap_figure(&[EffectKind::SensorDelay], &points, false);
-        assert_eq!((fig.panels.len(), fig.columns), (3, 1));
-        assert!(
-            fig.printed_label_points() >= 9.5,
-            "{}",
-            fig.printed_label_points()
-        );
-        let time = &fig.panels[0];
-        assert_eq!(time.title, "Held-out gap by time window");
-        let labels: Vec<&str> = time.series.iter().map(|s| s.label.as_str()).collect();
-        assert_eq!(
-            labels,
-            [
-                "yaw rate r, base model",
-                "yaw rate r, with sensor_delay",
-                "lateral acceleration a_y, base model",
-                "lateral acceleration a_y, with sensor_delay",
-                "sideslip β, base model",
-                "sideslip β, with sensor_delay",
-                "3 × noise floor"
-            ]
-        );
-        assert_eq!(time.axes().x, (0.5, 2.5));
-        // The windows are points, not a line; the bands a joined profile.
-        for (panel, joined) in fig.panels.iter().zip([false, true, true]) {
-            for s in &panel.series[..6] {
-                let points = matches!(s.style, Style::Points(_));
-                assert_eq!(points, !joined, "{}: {:?}", panel.title, s.style);
-            }
-        }
-        assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
-        assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
-        assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
-        // Without a verdict: the base model alone, and no report name
-        // (yaw_rate, ay, beta) in a label.
-        let base = gap_figure(&[], &points, true);
-        assert_eq!(base.panels[1].series.len(), 4);
-        // Runs without ay are banded by u·r: the axis says so.
-        assert_eq!(
-            base.panels[1].x_label,
-            "|a_y| band centre (u·r where a run has no a_y), m/s²"
-        );
-        assert_eq!(fig.panels[1].x_label, "|a_y| band centre, m/s²");
-        for s in &base.panels[1].series {
-            for ch in Channel::ALL {
-                assert!(!s.label.contains(ch.name()), "{}", s.label);
-            }
-        }
-    }
-}
+#[path = "diagnose_tests.rs"]
+mod tests;

@@ -206,8 +206,9 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
         .map(|s| {
             let of = joined(&s.extends, "+");
             format!(
-                "{} ({:.1} % of what {of} leaves)",
-                s.effect, s.insample_reduction_percent
+                "{} ({} % of what {of} leaves)",
+                s.effect,
+                crate::format::fixed(s.insample_reduction_percent, 1)
             )
         })
         .collect();
@@ -226,7 +227,10 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
     if let Some(first) = singles.first() {
         let names: Vec<String> = singles
             .iter()
-            .map(|s| format!("{} ({:.1} %)", s.effect, s.insample_reduction_percent))
+            .map(|s| {
+                let r = crate::format::fixed(s.insample_reduction_percent, 1);
+                format!("{} ({r} %)", s.effect)
+            })
             .collect();
         p.paragraph(
             "",

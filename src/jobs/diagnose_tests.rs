@@ -1,0 +1,82 @@
+//! The diagnosis job's terminal and figures: the gap map's panels and
+//! the reduction columns.
+
+use super::*;
+
+/// Nine channel-and-axis charts become three print-sized panels: a
+/// panel per axis holding every channel, labels about 10 pt on a
+/// 170 mm text width, each channel's series named with its quantity.
+#[test]
+fn the_gap_map_is_three_panels_legible_in_print() {
+    let mut points = Vec::new();
+    for ch in Channel::ALL {
+        for axis in PartAxis::ALL {
+            for (x, b, a) in [(1.0, 5.0, 1.0), (2.0, 4.0, 1.5)] {
+                points.push(GapPoint {
+                    channel: ch,
+                    axis,
+                    x,
+                    before: b,
+                    after: a,
+                });
+            }
+        }
+    }
+    let fig = gap_figure(&[EffectKind::SensorDelay], &points, false);
+    assert_eq!((fig.panels.len(), fig.columns), (3, 1));
+    assert!(
+        fig.printed_label_points() >= 9.5,
+        "{}",
+        fig.printed_label_points()
+    );
+    let time = &fig.panels[0];
+    assert_eq!(time.title, "Held-out gap by time window");
+    let labels: Vec<&str> = time.series.iter().map(|s| s.label.as_str()).collect();
+    assert_eq!(
+        labels,
+        [
+            "yaw rate r, base model",
+            "yaw rate r, with sensor_delay",
+            "lateral acceleration a_y, base model",
+            "lateral acceleration a_y, with sensor_delay",
+            "sideslip β, base model",
+            "sideslip β, with sensor_delay",
+            "3 × noise floor"
+        ]
+    );
+    assert_eq!(time.axes().x, (0.5, 2.5));
+    // The windows are points, not a line; the bands a joined profile.
+    for (panel, joined) in fig.panels.iter().zip([false, true, true]) {
+        for s in &panel.series[..6] {
+            let points = matches!(s.style, Style::Points(_));
+            assert_eq!(points, !joined, "{}: {:?}", panel.title, s.style);
+        }
+    }
+    assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
+    assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
+    assert_eq!(quantity(Channel::Beta), "sideslip β, rad");
+    // Without a verdict: the base model alone, and no report name
+    // (yaw_rate, ay, beta) in a label.
+    let base = gap_figure(&[], &points, true);
+    assert_eq!(base.panels[1].series.len(), 4);
+    // Runs without ay are banded by u·r: the axis says so.
+    assert_eq!(
+        base.panels[1].x_label,
+        "|a_y| band centre (u·r where a run has no a_y), m/s²"
+    );
+    assert_eq!(fig.panels[1].x_label, "|a_y| band centre, m/s²");
+    for s in &base.panels[1].series {
+        for ch in Channel::ALL {
+            assert!(!s.label.contains(ch.name()), "{}", s.label);
+        }
+    }
+}
+
+/// A reduction that rounds to zero from below is no "-0.0 %".
+#[test]
+fn a_reduction_that_rounds_to_zero_has_no_sign() {
+    let cells = reduction_cells([Reduction::Percent(-0.04), Reduction::Percent(-0.01)]);
+    assert_eq!(cells, "      0.0 %      0.0 %");
+    let cells = reduction_cells([Reduction::Percent(-1.25), Reduction::Percent(12.34)]);
+    assert_eq!(cells, "     -1.2 %     12.3 %");
+}

@@ -163,6 +163,13 @@ pub enum OptionsError {
         /// The effects it can show.
         known: Vec<&'static str>,
     },
+    /// `synth --effects` naming an effect twice: the truth would list it
+    /// twice (read as two delays, say) while applying it once.
+    #[error("--effects names {effect} twice: name each effect once (its size is the truth's, not a count)")]
+    EffectTwice {
+        /// The effect.
+        effect: &'static str,
+    },
     /// A model asked of the swarm fit that only its staged fit identifies.
     #[error("the {model} model is identified by its staged fit ({})", fits.join(" or "))]
     StagedFitOnly {

@@ -162,7 +162,7 @@ pub enum ParamReason {
     #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
     ToleranceWithRk4,
     /// A lateral acceleration no steady state holds at the speed.
-    #[error("no steady state at {speed} m/s with ay = {ay} m/s²: beyond the vehicle's lateral limit (or the solver did not converge)")]
+    #[error("no steady state at {} m/s with ay = {} m/s²: beyond the vehicle's lateral limit (or the solver did not converge)", crate::format::exact(*speed), crate::format::exact(*ay))]
     NoSteadyState {
         /// The speed, m/s.
         speed: f64,

@@ -177,6 +177,9 @@ pub struct Scenario {
     /// The ranges the front and rear tyres were fitted to, where their
     /// files state them (`[fitted_ranges]`).
     pub fitted_ranges: [Option<FittedRanges>; 2],
+    /// The steady lateral acceleration a step steer was sized for
+    /// (`lateral_acceleration`), m/s²; None for any other amplitude.
+    pub asked_ay: Option<f64>,
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end
@@ -245,6 +248,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         initial,
         measured,
         cleaning,
+        asked_ay,
     } = match &f.manoeuvre {
         ManoeuvreSpec::StepSteer(s) => step_steer(src, s, &model, f.road.friction)?,
         ManoeuvreSpec::Replay(r) => {
@@ -256,6 +260,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
                 initial: r.initial,
                 measured: Some(r.run),
                 cleaning: Some(r.cleaning),
+                asked_ay: None,
             }
         }
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
@@ -288,6 +293,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         inputs,
         cleaning,
         fitted_ranges,
+        asked_ay,
     })
 }
 
@@ -298,6 +304,7 @@ struct Resolved {
     initial: State,
     measured: Option<MeasuredRun>,
     cleaning: Option<crate::measured::clean::CleaningReport>,
+    asked_ay: Option<f64>,
 }
 
 impl From<Manoeuvre> for Resolved {
@@ -307,6 +314,7 @@ impl From<Manoeuvre> for Resolved {
             initial: State::default(),
             measured: None,
             cleaning: None,
+            asked_ay: None,
         }
     }
 }
@@ -374,20 +382,21 @@ fn step_steer(
         }
         road_wheel_steer(key, d + trim.steer).map_err(|e| ParamError::new(key, v, e.reason))
     };
-    let amplitude = match s.amplitude(src)? {
+    let (amplitude, asked_ay) = match s.amplitude(src)? {
         Amplitude::Steer(d) => {
             check(src, ParamError::finite("steer", d))?;
             check(src, step("steer", d, d))?;
-            d
+            (d, None)
         }
         Amplitude::LateralAcceleration(ay) => {
             check(src, ParamError::finite("lateral_acceleration", ay))?;
             let d = solve(ay)?.steer - trim.steer;
             check(src, step("lateral_acceleration", ay, d))?;
-            d
+            (d, Some(ay))
         }
     };
     Ok(Resolved {
+        asked_ay,
         initial: State {
             beta: trim.beta,
             yaw_rate: trim.yaw_rate,

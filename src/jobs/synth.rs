@@ -90,6 +90,9 @@ pub fn run(
     // Before the effects: a truth that cannot drive the programme has none.
     truth.drives(programme)?;
     for k in kinds {
+        if spec.effects.iter().any(|(e, _)| *e == k) {
+            return Err(OptionsError::EffectTwice { effect: k.name() }.into());
+        }
         let values = truth.values(programme, k).ok_or_else(|| {
             Error::Options(OptionsError::EffectNotShown {
                 effect: k.name(),

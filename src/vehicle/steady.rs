@@ -12,8 +12,10 @@ use thiserror::Error;
 /// beyond the vehicle's lateral limit, or the solver did not converge.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error(
-    "no steady state at {speed} m/s with ay = {ay} m/s²: beyond the vehicle's \
-     lateral limit (or the solver did not converge)"
+    "no steady state at {} m/s with ay = {} m/s²: beyond the vehicle's \
+     lateral limit (or the solver did not converge)",
+    crate::format::exact(*speed),
+    crate::format::exact(*ay)
 )]
 pub struct NoSteadyState {
     /// The speed, m/s (at least the model's smallest speed).

@@ -91,6 +91,30 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said
 }
 
+/// Share of the asked steady lateral acceleration by which a step sized
+/// for it may settle elsewhere unsaid: the steady window's own scatter
+/// and the metrics' averaging stay far inside it.
+pub(super) const ASKED_AY_MISS: f64 = 0.02;
+
+/// A step steer sized for a steady lateral acceleration `asked` (m/s²)
+/// whose run settles at `reached` (the metrics' steady change) beyond
+/// [`ASKED_AY_MISS`] of it: the steady state its steer was solved from is
+/// not the one the step reaches (past an axle's peak it is unstable and
+/// the car settles on another branch, or slides on).
+pub(super) fn asked_ay_missed(asked: f64, reached: Option<f64>) -> Option<String> {
+    let reached = reached?;
+    let miss = (reached - asked) / asked.abs().max(1e-12);
+    (miss.abs() > ASKED_AY_MISS).then(|| {
+        format!(
+            "the step was sized for a steady lateral acceleration of {} m/s² (`lateral_acceleration`), but the run settles at {} m/s² ({} %): the steady state its steer was solved from is not the one the step reaches (an unstable one past an axle's peak, where the car settles on another, or a slide); the metrics describe the run, not {} m/s²",
+            crate::format::exact(asked),
+            crate::format::fixed(reached, 2),
+            crate::format::signed(100.0 * miss, 0),
+            crate::format::exact(asked)
+        )
+    })
+}
+
 /// The step steer's trim as a note; for any other input that starts from
 /// zero steer, the drift as a warning.
 fn straight_running(sc: &Scenario, said: &mut Said) {

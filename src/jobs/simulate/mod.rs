@@ -147,6 +147,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));
     }
+    // A step sized for a steady lateral acceleration that settles at
+    // another.
+    if let (Some(asked), Some(m)) = (sc.asked_ay, &metrics) {
+        warnings.extend(checks::asked_ay_missed(asked, m.ay_steady));
+    }
     // A schedule (a replay of no measured run) is a speed someone wrote:
     // held to what a car on this road can drive.
     if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {

@@ -338,6 +338,9 @@ pub enum Limit {
     /// A manoeuvre's end.
     #[error("the run must end after it starts")]
     EndAfterStart,
+    /// A manoeuvre's start.
+    #[error("a run starts at 0 s or later and before the 1e6 s its end may reach")]
+    StartBeforeEnd,
     /// The share of the reached lateral acceleration a design may ask.
     #[error("a design asks at most the lateral acceleration the runs reached")]
     AyShare,

@@ -186,7 +186,15 @@ pub struct Scenario {
 /// after the start.
 fn timing(v: f64, start: f64, end: f64) -> Result<(), ParamError> {
     speed(v)?;
+    run_start(start)?;
     ParamError::in_range("end", end, start, 1e6, Limit::EndAfterStart)
+}
+
+/// A manoeuvre's `start`, refused at its own key where no end can follow
+/// it (else the end is blamed for a start it cannot lie after).
+fn run_start(start: f64) -> Result<(), ParamError> {
+    ParamError::in_range("start", start, -1e-12, 1e6, Limit::StartBeforeEnd)?;
+    ParamError::non_negative("start", start)
 }
 
 fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> {
@@ -330,7 +338,7 @@ fn step_steer(
     friction: f64,
 ) -> Result<Resolved, InputError> {
     check(src, speed(s.speed))?;
-    check(src, ParamError::non_negative("start", s.start))?;
+    check(src, run_start(s.start))?;
     check(
         src,
         ParamError::in_range(

@@ -6,13 +6,13 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
-use crate::format::fixed;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
 use crate::diagnose::report::outcome::SIGNIFICANT_NOISE_FLOORS;
 use crate::diagnose::report::{words, GapFinding, Part, Reduction, Verdict};
 use crate::error::Error;
+use crate::format::fixed;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
 use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};

@@ -55,6 +55,12 @@ const MAX_LENGTH: f64 = 30.0;
 /// (g, kg·mm², slug).
 const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
 
+/// Range of a track over the wheelbase: road cars about 0.55–0.65, a
+/// Formula Student car 0.8, a kart 1.1, a long truck or bus 0.3. A track
+/// beyond it is in the wrong unit (mm, cm) or a key holds another's value
+/// (a track of 1 µm lifts a wheel at any turn; 10 m has no vehicle).
+const TRACK_TO_WHEELBASE: (f64, f64) = (0.15, 2.0);
+
 impl Vehicle {
     /// Wheelbase l = a + b, m.
     pub fn wheelbase(&self) -> f64 {
@@ -102,6 +108,17 @@ impl Vehicle {
                     v,
                     ParamReason::LengthTooLarge { max: MAX_LENGTH },
                 ));
+            }
+        }
+        for (key, track) in [
+            ("track_front", self.track_front),
+            ("track_rear", self.track_rear),
+        ] {
+            let ratio = track / self.wheelbase();
+            if !(TRACK_TO_WHEELBASE.0..=TRACK_TO_WHEELBASE.1).contains(&ratio) {
+                let (lo, hi) = TRACK_TO_WHEELBASE;
+                let reason = ParamReason::TrackToWheelbase { key, ratio, lo, hi };
+                return Err(ParamError::new(key, track, reason));
             }
         }
         let index = self.yaw_inertia / (self.mass * self.a * self.b);

@@ -90,3 +90,31 @@ fn synth_refuses_an_effect_named_twice() {
     );
     assert!(!out.exists());
 }
+
+/// A track of 1 µm lifted a wheel at once and printed metrics; 10 m was
+/// accepted: a track out of proportion with the wheelbase is refused at
+/// its key with the ratio, and the sedan's own runs.
+#[test]
+fn a_track_out_of_proportion_with_the_wheelbase_is_refused_at_its_key() {
+    let text = bundled_scenario("sedan_step.toml");
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("track_front"))
+        .map(str::to_string);
+    let track = line.expect("the sedan has a track_front line");
+    for (value, ratio) in [("1e-6", "3.6e-7"), ("10", "3.60")] {
+        let edited = text.replace(&track, &format!("track_front = {value}"));
+        let dir = scratch(&[("scenario.toml", &edited)]);
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains(&format!("`vehicle.track_front` = {value}")),
+            "{e}"
+        );
+        assert!(
+            e.contains(&format!(
+                "track_front / wheelbase = {ratio}, outside 0.15–2"
+            )),
+            "{e}"
+        );
+    }
+}

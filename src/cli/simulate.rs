@@ -61,17 +61,22 @@ pub struct MetricsArgs {
     degrees: Vec<handling::io::AngleColumn>,
 }
 
-/// An angle column's name: refused at its option, with the names known.
+/// The angle columns `metrics` reads (its `--degrees` takes no other).
+const METRICS_ANGLES: [&str; 3] = ["steer", "yaw_rate", "beta"];
+
+/// An angle column `metrics` reads: refused at its option, with those it
+/// reads (a run's other angle columns, `roll` and `bank`, it does not).
 fn angle_column(text: &str) -> Result<handling::io::AngleColumn, String> {
     use handling::io::AngleColumn;
-    AngleColumn::from_name(text.trim()).ok_or_else(|| {
-        let names: Vec<&str> = AngleColumn::ALL.iter().map(|c| c.name()).collect();
-        format!(
-            "not an angle column of a run{}: one of {}",
-            handling::format::did_you_mean(text, &names),
-            names.join(", ")
-        )
-    })
+    AngleColumn::from_name(text.trim())
+        .filter(|c| METRICS_ANGLES.contains(&c.name()))
+        .ok_or_else(|| {
+            format!(
+                "not an angle column `metrics` reads{}: one of {}",
+                handling::format::did_you_mean(text, &METRICS_ANGLES),
+                METRICS_ANGLES.join(", ")
+            )
+        })
 }
 
 /// A metrics window, s: refused at its option, with the value given, when

@@ -36,6 +36,9 @@ pub enum Worth {
     /// Beyond its uncertainty, but less than the campaign's runs already
     /// separate the pair by, without the diagnosis telling them apart.
     BelowCampaign,
+    /// The diagnosis already tells the pair apart: no run is needed to
+    /// separate them, whatever it would add.
+    AlreadyToldApart,
 }
 
 /// The worth of a manoeuvre a driven run of which is expected to measure
@@ -61,6 +64,8 @@ pub enum Recommendation {
         /// How many.
         count: usize,
     },
+    /// The diagnosis already tells the pair apart: none needs driving.
+    AlreadyToldApart,
     /// None of the best is worth driving as a separating test.
     NoneWorthDriving {
         /// The largest expected separation among them (NaN: none
@@ -83,6 +88,12 @@ pub fn recommendation(ranked: &[Scored], campaign: f64) -> Recommendation {
         .count();
     if count > 0 {
         return Recommendation::Drive { count };
+    }
+    if ranked
+        .iter()
+        .any(|s| s.worth == Some(Worth::AlreadyToldApart))
+    {
+        return Recommendation::AlreadyToldApart;
     }
     let best = ranked
         .iter()

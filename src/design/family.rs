@@ -44,6 +44,10 @@ const RATE_SPAN: f64 = 0.1;
 /// The |ax| a design may use when none is stated, m/s² (moderate braking).
 pub const DEFAULT_AX: f64 = 3.0;
 
+/// The largest |ax| a design may be asked, m/s²: beyond what tyres give
+/// (μ ≈ 1.5).
+pub const MAX_AX: f64 = 15.0;
+
 /// The share of the reached lateral acceleration a design may ask by
 /// default.
 pub const DEFAULT_AY_SHARE: f64 = 0.8;
@@ -169,29 +173,68 @@ fn steer_for(model: &Augmented, speed: f64, ay: f64) -> Option<f64> {
 
 /// The family within `limits`, steers sized on `model` (the base model).
 pub fn family(model: &Augmented, limits: &Limits) -> Vec<Designed> {
+    family_and_left_out(model, limits).0
+}
+
+/// The family within `limits`, and the manoeuvres of it the limits leave
+/// out (a speed change too short at the stated |ax|, a steer beyond any
+/// steady state of the base model, …), each named by its kind and speed.
+pub fn family_and_left_out(model: &Augmented, limits: &Limits) -> (Vec<Designed>, Vec<String>) {
     let (lo, hi) = limits.speed;
     let speeds = [lo, 0.5 * (lo + hi), hi];
     let ay = limits.ay_max();
     let mut out = Vec::new();
+    let mut left = Vec::new();
+    let mut take = |what: &str, at: Option<(f64, f64)>, d: Option<Designed>| match d {
+        Some(d) => out.push(d),
+        None => left.push(match at {
+            Some((u, ay)) => format!("{what} at {:.0} km/h and {ay:.1} m/s²", kmh(u)),
+            None => what.to_string(),
+        }),
+    };
     for &u in &speeds {
         for share in [0.4, 0.7, 1.0] {
-            out.extend(step(model, limits, u, share * ay));
+            take(
+                "a step",
+                Some((u, share * ay)),
+                step(model, limits, u, share * ay),
+            );
         }
-        out.extend(ramp(model, u, ay));
-        out.extend(sweep(model, limits, u, 0.4 * ay));
-        out.extend(lane_change(model, limits, u, 0.6 * ay));
+        take("a ramp", Some((u, ay)), ramp(model, u, ay));
+        take(
+            "a sweep",
+            Some((u, 0.4 * ay)),
+            sweep(model, limits, u, 0.4 * ay),
+        );
+        take(
+            "a lane change",
+            Some((u, 0.6 * ay)),
+            lane_change(model, limits, u, 0.6 * ay),
+        );
     }
-    out.extend(speed_change(limits));
+    take("the speed change on a straight", None, speed_change(limits));
     for &u in &speeds[1..] {
         for share in [0.5, 0.9] {
-            out.extend(brake_in_turn(model, limits, u, share * ay));
+            take(
+                "braking in a turn",
+                Some((u, share * ay)),
+                brake_in_turn(model, limits, u, share * ay),
+            );
         }
     }
     for &u in &speeds[..2] {
-        out.extend(accelerate_in_turn(model, limits, u, 0.5 * ay));
+        take(
+            "accelerating in a turn",
+            Some((u, 0.5 * ay)),
+            accelerate_in_turn(model, limits, u, 0.5 * ay),
+        );
     }
-    out.extend(constant_radius(model, limits));
-    out
+    take(
+        "the constant-radius turn",
+        None,
+        constant_radius(model, limits),
+    );
+    (out, left)
 }
 
 fn kmh(u: f64) -> f64 {

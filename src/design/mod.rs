@@ -189,6 +189,9 @@ pub struct Design {
     pub logging: Logging,
     /// Manoeuvres in the family.
     pub family: usize,
+    /// The manoeuvres of the family the limits leave out, by kind and
+    /// speed (a speed change too short at the stated |ax|, …).
+    pub left_out_by_limits: Vec<String>,
     /// The noise floor of each channel the separations are counted in.
     #[serde(skip)]
     pub noise_floors: [f64; 3],
@@ -284,7 +287,7 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
     let limits = Limits::of(&c.runs, c.settings.min_speed, req.ay_share, req.ax);
     let logging = Logging::of(c);
     let base = fitted.base(c);
-    let mut family = family::family(&base, &limits);
+    let (mut family, left_out_by_limits) = family::family_and_left_out(&base, &limits);
     distinct_names(&mut family, c);
     let runs = Prepared::campaign_runs(c);
     let sets = sets(fitted, req)?
@@ -309,6 +312,7 @@ pub fn design(c: &Campaign, fitted: &Fitted, req: &DesignRequest) -> Result<Desi
         logging,
         noise_floors: fitted.noise_floors,
         family: family.len(),
+        left_out_by_limits,
         sets,
     })
 }
@@ -470,6 +474,9 @@ impl SetContext<'_> {
             residuals: self.runs.iter().map(Prepared::count).sum(),
         };
         s.repetitions = evidence::repetitions(&held, &run, pair, self.fitted, logging);
+        if s.repetitions == Some(0) {
+            s.worth = Some(Worth::AlreadyToldApart);
+        }
     }
 }
 

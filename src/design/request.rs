@@ -36,11 +36,11 @@ impl Default for DesignRequest {
 }
 
 impl DesignRequest {
-    /// Ok when a design can honour the request: `ax` finite and > 0,
+    /// Ok when a design can honour the request: `ax` in (0, 15] m/s²,
     /// `ay_share` in (0, 1], `top` ≥ 1, no candidate named twice in a set.
     /// The keys are the command line's options.
     pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::positive("--max-ax", self.ax)?;
+        ParamError::in_range("--max-ax", self.ax, 0.0, family::MAX_AX, Limit::MaxAx)?;
         ParamError::in_range("--ay-share", self.ay_share, 0.0, 1.0, Limit::AyShare)?;
         if self.top == 0 {
             return Err(ParamError::new("--top", 0.0, ParamReason::NotPositive));

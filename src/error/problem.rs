@@ -267,9 +267,13 @@ pub enum InputProblem {
     },
     /// A rig file with neither a lateral nor a longitudinal sweep.
     #[error(
-        "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`)"
+        "no lateral data (columns `alpha` and `fy`) and no longitudinal data (`kappa` and `fx`); the header has: {}",
+        header.join(", ")
     )]
-    NoSweep,
+    NoSweep {
+        /// The header's names, in the file's order.
+        header: Vec<String>,
+    },
     /// A rig file without the lateral sweep a lateral fit needs.
     #[error("no lateral data: a lateral fit needs the columns `alpha` and `fy`")]
     NoLateral,
@@ -496,7 +500,7 @@ impl InputProblem {
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
             InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
-            InputProblem::NoSweep => "NoSweep",
+            InputProblem::NoSweep { .. } => "NoSweep",
             InputProblem::NoLateral => "NoLateral",
             InputProblem::NoLongitudinal => "NoLongitudinal",
             InputProblem::WrongSign { .. } => "WrongSign",

@@ -357,6 +357,12 @@ pub enum Limit {
     /// The share of the reached lateral acceleration a design may ask.
     #[error("a design asks at most the lateral acceleration the runs reached")]
     AyShare,
+    /// The longitudinal acceleration a design may ask, m/s².
+    #[error("tyres give a car at most about 15 m/s² (μ ≈ 1.5) of braking or driving")]
+    MaxAx,
+    /// The least overshoot a step's maximum must reach, % of the step.
+    #[error("a car's step response overshoots its steady state by far less than 100 %; a threshold beyond takes no maximum as an overshoot")]
+    MinOvershoot,
     /// A parameter held at a value the user gives.
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
     HoldValue,

@@ -86,7 +86,8 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         _ => None,
     };
     if lateral.is_none() && longitudinal.is_none() {
-        return Err(InputError::problem(path, InputProblem::NoSweep));
+        let header = c.header.clone();
+        return Err(InputError::problem(path, InputProblem::NoSweep { header }));
     }
     let camber = c.take_optional("camber");
     // Angles in degrees are the commonest slip of a hand-made file: a slip

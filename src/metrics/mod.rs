@@ -109,6 +109,11 @@ const PEAK_NOISE: f64 = 5.0;
 /// `min_overshoot = 0` to take any maximum above the steady state.
 pub const DEFAULT_MIN_OVERSHOOT: f64 = 1.0;
 
+/// The largest least overshoot a setting may ask, % of the step: a
+/// threshold beyond takes no maximum of a car's step response as an
+/// overshoot, and says nothing.
+pub const MAX_MIN_OVERSHOOT: f64 = 100.0;
+
 fn default_min_overshoot() -> f64 {
     DEFAULT_MIN_OVERSHOOT
 }
@@ -138,6 +143,13 @@ impl MetricSettings {
         ParamError::non_negative("e1", self.e1)?;
         ParamError::non_negative("e2", self.e2)?;
         ParamError::non_negative("min_overshoot", self.min_overshoot)?;
+        ParamError::in_range(
+            "min_overshoot",
+            self.min_overshoot,
+            -f64::MIN_POSITIVE,
+            MAX_MIN_OVERSHOOT,
+            crate::error::Limit::MinOvershoot,
+        )?;
         if let Some(f) = self.filter_hz {
             ParamError::finite("filter_hz", f)?;
             if f <= MIN_FILTER_HZ {

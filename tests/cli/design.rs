@@ -241,7 +241,7 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
     // Options no design can honour are refused by name and value, never a
     // panic (`--max-ax 0` indexed an empty schedule).
     for (opt, value, says) in [
-        ("--max-ax", "0", "`--max-ax` = 0: must be positive"),
+        ("--max-ax", "0", "`--max-ax` = 0: must lie in (0, 15]"),
         ("--max-ax", "nan", "`--max-ax` = NaN: must be a finite number"),
         (
             "--ay-share",

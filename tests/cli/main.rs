@@ -275,6 +275,7 @@ mod trips_release;
 mod trips_run_units;
 mod trips_s62;
 mod trips_s62b;
+mod trips_s62c;
 mod trips_s62d;
 mod trips_simulate;
 mod trips_units;

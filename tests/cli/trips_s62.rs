@@ -225,10 +225,14 @@ fn metrics_refuses_a_degrees_column_it_does_not_read_with_the_columns_it_reads()
         let (ok, _, e) = metrics(&p, &["--degrees", column]);
         assert!(!ok);
         assert!(
-            e.contains(&format!("run.csv:1:1: `--degrees` to `metrics` names `{column}`, a column `metrics` does not read (the angle columns it reads: steer, yaw_rate, beta): the declaration would convert nothing; leave it out")),
+            e.contains(&format!("invalid value '{column}' for '--degrees <DEGREES>': not an angle column `metrics` reads: one of steer, yaw_rate, beta")),
             "{e}"
         );
     }
+    // A misspelt one is offered only the columns metrics reads.
+    let (ok, _, e) = metrics(&p, &["--degrees", "steeer"]);
+    assert!(!ok);
+    assert!(e.contains("(did you mean `steer`?): one of steer, yaw_rate, beta"), "{e}");
     // A column it reads, the file has and gives in radians, as before.
     let (ok, _, e) = metrics(&p, &[]);
     assert!(ok, "{e}");

@@ -43,7 +43,7 @@ pub use levels::{level_label, levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
 use crate::error::{InputError, InputProblem, SampleAccount};
-use crate::format::plural;
+use crate::format::{plural, readable};
 use serde::Serialize;
 use std::path::Path;
 
@@ -99,6 +99,9 @@ pub struct GroupingReport {
     pub slip_axis: SlipAxis,
     /// Thinning bin.
     pub slip_bin: f64,
+    /// Whether the bin is below the resolution of the data's slips (a
+    /// slip's bin number beyond 2⁵²): every sample is then kept.
+    pub slip_bin_below_resolution: bool,
     /// Levels of load, camber and (if measured) pressure.
     pub levels: Vec<Levels>,
     /// Samples between levels of some variable, dropped.
@@ -162,8 +165,17 @@ impl GroupingReport {
             self.used,
             plural(self.points, "point", "points"),
             match self.slip_axis {
-                SlipAxis::Angle if self.slip_bin > 0.0 =>
+                _ if self.slip_bin_below_resolution => format!(
+                    "no thinning: a bin of {} is below the resolution of the data's slips, so every sample is kept",
+                    match self.slip_axis {
+                        SlipAxis::Angle => format!("{}°", readable(self.slip_bin.to_degrees(), 3)),
+                        SlipAxis::Ratio => readable(self.slip_bin, 3),
+                    }
+                ),
+                SlipAxis::Angle if self.slip_bin.to_degrees() >= 1e-3 =>
                     format!("{:.3}° slip-angle bins", self.slip_bin.to_degrees()),
+                SlipAxis::Angle if self.slip_bin > 0.0 =>
+                    format!("{}° slip-angle bins", readable(self.slip_bin.to_degrees(), 3)),
                 SlipAxis::Ratio if self.slip_bin > 0.0 =>
                     format!("{} slip-ratio bins", self.slip_bin),
                 _ => "no thinning".into(),
@@ -363,10 +375,20 @@ pub fn group(
         }
     }
     groups.sort_by_key(|e| (e.0 .2, e.0 .1, e.0 .0));
-    let bin = match axis {
+    let asked = match axis {
         SlipAxis::Angle => g.alpha_bin,
         SlipAxis::Ratio => g.kappa_bin,
     };
+    // A bin so fine that a slip's bin number passes 2⁵² is below the
+    // resolution of the data's doubles: every sample is a bin of its own
+    // there, and the numbers would saturate an integer and merge the
+    // curve into a few points. It keeps every sample.
+    let below_resolution = asked > 0.0
+        && columns
+            .slip
+            .iter()
+            .any(|v| (v / asked).abs() >= RESOLVED_BINS);
+    let bin = if below_resolution { 0.0 } else { asked };
     let conditions: Vec<Condition> = groups
         .into_iter()
         .map(|((l, c, p), idx)| Condition {
@@ -385,7 +407,8 @@ pub fn group(
         used: conditions.iter().map(|c| c.samples).sum(),
         points: conditions.iter().map(|c| c.points.len()).sum(),
         slip_axis: axis,
-        slip_bin: bin,
+        slip_bin: asked,
+        slip_bin_below_resolution: below_resolution,
         levels: all_levels,
         dropped_in_transitions: transitions,
         not_selected,
@@ -394,6 +417,10 @@ pub fn group(
     debug_assert_eq!(report.used + transitions + not_selected, report.samples);
     Ok(Grouped { conditions, report })
 }
+
+/// The largest bin number a slip's bin may reach for the bins to be
+/// resolved: 2⁵², beyond which a double's integers are its values.
+const RESOLVED_BINS: f64 = 4_503_599_627_370_496.0;
 
 /// The fit points of the samples `idx` on the sweep `s`: the mean of the
 /// samples in each slip bin of width `bin` (each sample its own point when

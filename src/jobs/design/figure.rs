@@ -9,7 +9,7 @@
 use crate::design::{Design, Prediction};
 use crate::diagnose::pipeline::observed_channel;
 use crate::diagnose::Channel;
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Panel, Series, Style, INK};
 
 /// The palette's colours a candidate is drawn in, in member order (grey,
 /// index 7, is the noise band's; light blue, 8, is for context).
@@ -77,12 +77,12 @@ pub(super) fn prediction_panels(
     panels.push(panel(
         format!("{}: steer", p.name),
         "steer, °".into(),
-        vec![Series::line("steer, °", &p.times, &deg, 0)],
+        vec![Series::line("steer, °", &p.times, &deg, INK)],
     ));
     panels.push(panel(
         format!("{}: speed", p.name),
         "speed, m/s".into(),
-        vec![Series::line("speed, m/s", &p.times, &p.speed, 1)],
+        vec![Series::line("speed, m/s", &p.times, &p.speed, INK)],
     ));
     panels
 }

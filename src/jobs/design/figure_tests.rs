@@ -107,3 +107,19 @@ fn the_steer_and_the_speed_each_have_an_axis_of_their_own_range() {
     let Axes { y, .. } = speed.axes();
     assert!(y.0 <= 20.9 && y.1 >= 20.9 && y.0 > 15.0, "{y:?}");
 }
+
+/// The steer and speed panels were drawn in the first two candidates'
+/// colours (blue, red): an input read as a candidate's response. They are
+/// drawn in black, a colour no candidate has.
+#[test]
+fn the_steer_and_speed_are_drawn_in_a_colour_no_candidate_has() {
+    let p = prediction(24);
+    let panels = prediction_panels(&p, &[true, true, true], &[0.01, 0.05, 0.002], 1.2);
+    let candidates: Vec<usize> = (0..24).map(|k| member_look(k).0).collect();
+    for panel in &panels[4..] {
+        for s in &panel.series {
+            assert_eq!(s.color, crate::report::plot::INK, "{}", panel.title);
+            assert!(!candidates.contains(&s.color), "{}", panel.title);
+        }
+    }
+}

@@ -283,6 +283,7 @@ impl DesignReport {
                             Some(crate::design::Worth::Separates) | None => "",
                             Some(crate::design::Worth::WithinUncertainty) => "; not recommended: within its own uncertainty",
                             Some(crate::design::Worth::BelowCampaign) => "; not recommended: less than the campaign's runs separate them by",
+                            Some(crate::design::Worth::AlreadyToldApart) => "; not needed: the diagnosis already tells them apart",
                         }
                     ),
                     _ => format!("Separates {} by D = {:.1} noise floors.", set.members.join(" / "), s.separation),

@@ -5,6 +5,7 @@
 
 use super::DesignReport;
 use crate::design::{Recommendation, SetDesign, Worth};
+use crate::format::readable;
 
 /// The share of a manoeuvre below which a driven run is said to be a
 /// part of it (a logger's last samples aside).
@@ -15,9 +16,23 @@ impl DesignReport {
     pub fn summary(&self) -> Vec<String> {
         let l = &self.design.limits;
         let mut out = vec![format!(
-            "limits: {:.1}–{:.1} m/s, |ay| ≤ {:.2} m/s² ({:.0} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
-            l.speed.0, l.speed.1, l.ay_max(), 100.0 * l.ay_share, l.ay_reached, l.steer_rate, l.ax, self.design.family
+            "limits: {:.1}–{:.1} m/s, |ay| ≤ {} m/s² ({} % of the {:.2} reached), steer rate ≤ {:.2} rad/s, |ax| ≤ {:.1} m/s²; {} manoeuvres in the family",
+            l.speed.0,
+            l.speed.1,
+            fixed_or_digits(l.ay_max(), 2),
+            fixed_or_digits(100.0 * l.ay_share, 0),
+            l.ay_reached,
+            l.steer_rate,
+            l.ax,
+            self.design.family
         )];
+        if !self.design.left_out_by_limits.is_empty() {
+            out.push(format!(
+                "  the limits leave out {} of the family: {}",
+                self.design.left_out_by_limits.len(),
+                self.design.left_out_by_limits.join(", ")
+            ));
+        }
         for set in &self.design.sets {
             let cal = &set.calibration;
             let measured = match cal.runs {
@@ -34,13 +49,16 @@ impl DesignReport {
             ));
             for (k, s) in set.ranked.iter().enumerate() {
                 let expected = match (s.expected, s.uncertainty) {
+                    (Some(e), Some(u)) if e < 0.0 => format!(
+                        "; a driven run is expected to measure {e:.1} ± {u:.1} (below 0: the noise of the start the replays take costs the reference more than its look-alike, favouring the look-alike on average)"
+                    ),
                     (Some(e), Some(u)) => {
                         format!("; a driven run is expected to measure {e:.1} ± {u:.1}")
                     }
                     _ => String::new(),
                 };
                 let enough = match s.repetitions {
-                    Some(0) => "; the diagnosis already tells them apart".into(),
+                    Some(0) => String::new(),
                     Some(k) => format!(
                         "; the diagnosis tells them apart after {k} such run{}",
                         if k == 1 { "" } else { "s" }
@@ -128,12 +146,30 @@ fn worth_words(worth: Option<Worth>) -> &'static str {
         Some(Worth::BelowCampaign) => {
             "; not recommended: less than the campaign's runs already separate them by"
         }
+        Some(Worth::AlreadyToldApart) => {
+            "; not needed: the diagnosis already tells them apart, no run is needed to separate them"
+        }
         None => "",
+    }
+}
+
+/// `v` with `decimals` decimals where they show it, else with its first
+/// three significant digits (0.000815, not 0.00).
+fn fixed_or_digits(v: f64, decimals: usize) -> String {
+    if v >= 10f64.powi(-(decimals as i32)) {
+        format!("{v:.decimals$}")
+    } else {
+        readable(v, 3)
     }
 }
 
 /// The set's recommendation when none of its best is worth driving.
 fn recommendation_line(set: &SetDesign) -> Option<String> {
+    if set.recommendation == Recommendation::AlreadyToldApart {
+        return Some(
+            "  none needs driving: the diagnosis already tells them apart (drive one only to confirm it)".into(),
+        );
+    }
     let Recommendation::NoneWorthDriving {
         best_expected: e,
         best_uncertainty: u,
@@ -143,6 +179,11 @@ fn recommendation_line(set: &SetDesign) -> Option<String> {
         return None;
     };
     let n = set.ranked.len();
+    if n == 0 || !(e.is_finite() && u.is_finite()) {
+        return Some(
+            "  no manoeuvre of the family fits within the limits (each is left out beyond them): none to drive; widen --ay-share or --max-ax".into(),
+        );
+    }
     let these = if n == 1 { "it" } else { "any of these" };
     Some(if campaign_separates_more {
         format!(

@@ -12,6 +12,8 @@ use crate::identify::data::Condition;
 use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
 use crate::io::rig::read_rig;
 mod choices;
+mod curvature;
+pub use curvature::CurvatureExcess;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;
@@ -89,13 +91,17 @@ impl Options {
     pub fn validate(&self) -> Result<(), ParamError> {
         ParamError::non_negative("bin_deg", self.alpha_bin_deg)?;
         ParamError::non_negative("bin_kappa", self.kappa_bin)?;
-        // 0 keeps every sample; the range check's lower end is open.
-        if self.alpha_bin_deg > 0.0 {
-            ParamError::in_range("bin_deg", self.alpha_bin_deg, 0.0, 2.0, Limit::SlipAngleBin)?;
-        }
-        if self.kappa_bin > 0.0 {
-            ParamError::in_range("bin_kappa", self.kappa_bin, 0.0, 0.05, Limit::SlipRatioBin)?;
-        }
+        // 0 keeps every sample: the range is closed, [0, 2] (a lower end
+        // a rounding guard below 0 reads so).
+        let zero = -f64::MIN_POSITIVE;
+        ParamError::in_range(
+            "bin_deg",
+            self.alpha_bin_deg,
+            zero,
+            2.0,
+            Limit::SlipAngleBin,
+        )?;
+        ParamError::in_range("bin_kappa", self.kappa_bin, zero, 0.05, Limit::SlipRatioBin)?;
         if let Some(l) = self.load {
             ParamError::positive("load", l)?;
         }

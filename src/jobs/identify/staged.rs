@@ -44,6 +44,9 @@ pub struct StagedJob {
     /// Largest relative difference between the forces of the written .tir
     /// read back and the fitted ones.
     pub round_trip_relative_difference: f64,
+    /// The curvatures `Ey`, `Ex` of the written file above 1 over the
+    /// fitted data, each where it is largest (none: none is).
+    pub curvature_above_one: Vec<super::curvature::CurvatureExcess>,
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
@@ -85,6 +88,11 @@ impl StagedJob {
             .map_or(&[][..], |g| &g.levels[..]);
         out.extend(stage_lines(&self.report, named, true));
         out.push(format!("  {}", self.sigma_pooled.line()));
+        out.extend(
+            self.curvature_above_one
+                .iter()
+                .map(|e| format!("  warning: {}", e.line())),
+        );
         out.extend(self.unfitted.iter().map(|l| format!("  {l}")));
         out
     }
@@ -251,6 +259,11 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .chain(std::iter::once(&sigma_pooled.line()))
         .map(|l| format!("$ {}\n", l.trim_start()))
         .collect();
+    let curvature_above_one = super::curvature::curvature_excess(&written, &spans, &fitted);
+    let curvature: String = curvature_above_one
+        .iter()
+        .map(|e| format!("$ warning: {}\n", e.line()))
+        .collect();
     let tir = held_comment(o)
         + &super::ranges::tir_comment(&spans, o.template.is_some())
         + &unfitted
@@ -259,6 +272,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
             .collect::<String>()
         + &super::holds::held_file_lines(&held, "$")
         + &stages
+        + &curvature
         + &crate::io::tir::tir_text(&written, template.as_ref())?;
     let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
@@ -274,6 +288,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         rows: prepared.account,
         sigma_pooled,
         round_trip_relative_difference: back,
+        curvature_above_one,
         figure,
         tir,
         unfitted,

@@ -112,6 +112,9 @@ pub struct TyreEvalReport {
     pub standstill_mz: Option<StandstillMz>,
     /// The input columns the model does not read, set at some points.
     pub unread: Vec<Unread>,
+    /// The points file's columns `tyre-eval` neither reads nor writes
+    /// (not carried to the output).
+    pub not_written: Vec<String>,
     /// The ranges of the rig data a TOML tyre was fitted to (its
     /// `[fitted_ranges]`; `None`: the file states none).
     pub fitted_ranges: Option<FittedRanges>,
@@ -375,7 +378,16 @@ pub fn run(
     columns.extend(extras.loaded_radius.map(|rl| ("rl", rl)));
     // (The first five columns are the inputs, checked when read.)
     refuse_non_finite(points, &file, &columns, tyre.model_name())?;
+    // The points file's other columns (a label, a measured force) are not
+    // evaluated and not written: named, not dropped silently.
+    let not_written: Vec<String> = file
+        .header
+        .iter()
+        .map(|h| h.trim().to_string())
+        .filter(|h| !h.is_empty() && !columns.iter().any(|(n, _)| n == h))
+        .collect();
     Ok(TyreEvalReport {
+        not_written,
         points: points.display().to_string(),
         count,
         model: tyre.model_name(),
@@ -421,6 +433,18 @@ impl TyreEvalReport {
     /// not read, and the points beyond the ranges the tyre was fitted to.
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
+        if !self.not_written.is_empty() {
+            out.push(format!(
+                "the points file's column{} {} not carried to the output: tyre-eval reads fz, kappa, alpha, camber, speed and pressure and writes them with the tyre's outputs",
+                if self.not_written.len() == 1 { "" } else { "s" },
+                self.not_written
+                    .iter()
+                    .map(|c| format!("`{c}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+                    + if self.not_written.len() == 1 { " is" } else { " are" }
+            ));
+        }
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));

@@ -108,17 +108,11 @@ pub enum ParamReason {
         max: f64,
     },
     /// A track out of proportion with the wheelbase (a unit slip, or a
-    /// key given another's value).
-    #[error("{key} / wheelbase = {}, outside {lo}–{hi} (road and racing vehicles about 0.3–1.2): check the unit (m) and that the key holds the track", crate::format::readable(*ratio, 3))]
+    /// key given another's value): outside 0.15–2.
+    #[error("track / wheelbase = {}, outside 0.15–2 (road and racing vehicles about 0.3–1.2): check the unit (m) and that the key holds the track", crate::format::readable(*ratio, 3))]
     TrackToWheelbase {
-        /// The track's key.
-        key: &'static str,
         /// Track over wheelbase.
         ratio: f64,
-        /// Least ratio accepted.
-        lo: f64,
-        /// Greatest ratio accepted.
-        hi: f64,
     },
     /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have.
     #[error("yaw_inertia / (mass·a·b) = {index:.3e}, outside {lo}–{hi} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)")]

@@ -55,7 +55,8 @@ const MAX_LENGTH: f64 = 30.0;
 /// (g, kg·mm², slug).
 const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
 
-/// Range of a track over the wheelbase: road cars about 0.55–0.65, a
+/// Range of a track over the wheelbase (the refusal's words state it):
+/// road cars about 0.55–0.65, a
 /// Formula Student car 0.8, a kart 1.1, a long truck or bus 0.3. A track
 /// beyond it is in the wrong unit (mm, cm) or a key holds another's value
 /// (a track of 1 µm lifts a wheel at any turn; 10 m has no vehicle).
@@ -116,8 +117,7 @@ impl Vehicle {
         ] {
             let ratio = track / self.wheelbase();
             if !(TRACK_TO_WHEELBASE.0..=TRACK_TO_WHEELBASE.1).contains(&ratio) {
-                let (lo, hi) = TRACK_TO_WHEELBASE;
-                let reason = ParamReason::TrackToWheelbase { key, ratio, lo, hi };
+                let reason = ParamReason::TrackToWheelbase { ratio };
                 return Err(ParamError::new(key, track, reason));
             }
         }

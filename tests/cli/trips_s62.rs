@@ -232,7 +232,10 @@ fn metrics_refuses_a_degrees_column_it_does_not_read_with_the_columns_it_reads()
     // A misspelt one is offered only the columns metrics reads.
     let (ok, _, e) = metrics(&p, &["--degrees", "steeer"]);
     assert!(!ok);
-    assert!(e.contains("(did you mean `steer`?): one of steer, yaw_rate, beta"), "{e}");
+    assert!(
+        e.contains("(did you mean `steer`?): one of steer, yaw_rate, beta"),
+        "{e}"
+    );
     // A column it reads, the file has and gives in radians, as before.
     let (ok, _, e) = metrics(&p, &[]);
     assert!(ok, "{e}");

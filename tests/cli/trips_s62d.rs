@@ -111,9 +111,7 @@ fn a_track_out_of_proportion_with_the_wheelbase_is_refused_at_its_key() {
             "{e}"
         );
         assert!(
-            e.contains(&format!(
-                "track_front / wheelbase = {ratio}, outside 0.15–2"
-            )),
+            e.contains(&format!("track / wheelbase = {ratio}, outside 0.15–2")),
             "{e}"
         );
     }

@@ -19,27 +19,20 @@ use crate::trips_s62::rig;
 #[test]
 fn design_recommends_no_manoeuvre_within_its_uncertainty_and_ranks_the_diagnosiss_advice() {
     let dir = tempfile::tempdir().unwrap();
-    let (c, d) = (dir.path().join("c"), dir.path().join("d"));
-    let o = run(&[
-        "synth",
-        "--programme",
-        "road-course",
-        "--effects",
-        "steering_compliance",
-        "--seed",
-        "1",
-        "--out",
-        c.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let o = run(&[
-        "diagnose",
-        c.to_str().unwrap(),
-        "--out",
-        d.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let diagnosis = read_json(&d.join("diagnosis.json"));
+    let c = synth_campaign(
+        dir.path(),
+        "c",
+        &[
+            "--programme",
+            "road-course",
+            "--effects",
+            "steering_compliance",
+            "--seed",
+            "1",
+        ],
+    );
+    let d = dir.path().join("d");
+    let (_, diagnosis) = diagnose_to(&c, &d);
     let confounded = diagnosis["confounded"][0]["effects"].to_string();
     assert!(
         confounded.contains("steering_compliance") && confounded.contains("cornering_stiffness"),

@@ -45,28 +45,13 @@ fn identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data() {
 /// steer path too, diagnosed into `dir/d` (as the book's design chapter
 /// does): the diagnosis `design` is run on.
 fn sensor_delay_diagnosis(dir: &Path) -> PathBuf {
-    let (c, d) = (dir.join("c"), dir.join("d"));
-    let o = run(&[
-        "synth",
-        "--effects",
-        "sensor_delay",
-        "--seed",
-        "1",
-        "--out",
-        c.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let c = synth_campaign(dir, "c", &["--effects", "sensor_delay", "--seed", "1"]);
     let vehicle = c.join("vehicle.toml");
     let mut text = std::fs::read_to_string(&vehicle).unwrap();
     text += "effects = [\"sensor_delay\", \"steer_path\"]\n";
     std::fs::write(&vehicle, text).unwrap();
-    let o = run(&[
-        "diagnose",
-        c.to_str().unwrap(),
-        "--out",
-        d.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let d = dir.join("d");
+    diagnose_to(&c, &d);
     d
 }
 
@@ -127,24 +112,13 @@ fn design_refuses_absurd_limits_names_what_they_leave_out_and_never_prints_nan()
 #[test]
 fn design_does_not_recommend_a_test_for_a_pair_already_told_apart() {
     let dir = tempfile::tempdir().unwrap();
-    let (c, d) = (dir.path().join("c"), dir.path().join("d"));
-    let o = run(&[
-        "synth",
-        "--effects",
-        "sensor_delay",
-        "--seed",
-        "1",
-        "--out",
-        c.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let o = run(&[
-        "diagnose",
-        c.to_str().unwrap(),
-        "--out",
-        d.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let c = synth_campaign(
+        dir.path(),
+        "c",
+        &["--effects", "sensor_delay", "--seed", "1"],
+    );
+    let d = dir.path().join("d");
+    diagnose_to(&c, &d);
     let o = run(&[
         "design",
         d.to_str().unwrap(),

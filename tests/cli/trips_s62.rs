@@ -16,21 +16,7 @@ use crate::tyre_eval::mf61;
 /// `tyre-eval` of `tyre` at the points `csv`, written to `dir`: whether it
 /// succeeded, its stderr and the CSV it wrote.
 fn tyre_eval(dir: &Path, tyre: &Path, csv: &str) -> (bool, String, String) {
-    fs::write(dir.join("p.csv"), csv).unwrap();
-    let out = dir.join("f.csv");
-    let _ = fs::remove_file(&out);
-    let o = bin()
-        .args([
-            "tyre-eval",
-            tyre.to_str().unwrap(),
-            "p.csv",
-            "--out",
-            "f.csv",
-        ])
-        .current_dir(dir)
-        .output()
-        .unwrap();
-    let written = fs::read_to_string(out).unwrap_or_default();
+    let (o, written) = crate::tyre_eval::eval(dir, tyre, csv, &[]);
     (o.status.success(), stderr(&o), written)
 }
 

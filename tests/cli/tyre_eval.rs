@@ -30,7 +30,7 @@ pub(crate) fn mf61(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
 
 /// `tyre-eval` of `tyre` at the points `csv` (written to `dir`), with
 /// `args`: the output, and the CSV written.
-fn eval(dir: &Path, tyre: &Path, csv: &str, args: &[&str]) -> (Output, String) {
+pub(crate) fn eval(dir: &Path, tyre: &Path, csv: &str, args: &[&str]) -> (Output, String) {
     fs::write(dir.join("p.csv"), csv).unwrap();
     let _ = fs::remove_file(dir.join("f.csv"));
     let mut all = vec![

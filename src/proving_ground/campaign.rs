@@ -13,7 +13,6 @@ use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::identify::data::RigData;
 use crate::measured::calibration::calibrate;
 use crate::measured::clean::{clean_runs, segments, CleanSettings};
-use crate::proving_ground::four_wheel::FourWheelVehicle;
 use crate::tyre::ModelName;
 use std::path::PathBuf;
 
@@ -125,7 +124,7 @@ impl Synthetic {
             ),
             Truth::Augmented => ("UniTire tyres".to_string(), String::new()),
             Truth::FourWheel => {
-                let t = FourWheelVehicle::sedan();
+                let t = &self.four_wheel;
                 (
                     format!(
                         "four-wheel model with roll (roll gradient {:.2} deg/g, roll stiffness {:.0}/{:.0} N m/rad, \

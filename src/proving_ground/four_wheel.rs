@@ -173,7 +173,6 @@ impl FourWheelVehicle {
         let arm = h - (b * roll_centre[0] + a * roll_centre[1]) / (a + b);
         let total = mass * arm / (6f64.to_radians() / GRAVITY);
         let roll_inertia = 500.0;
-        let damping = 2.0 * 0.35 * (total * roll_inertia).sqrt();
         Self {
             mass,
             yaw_inertia: 2315.0,
@@ -185,8 +184,21 @@ impl FourWheelVehicle {
             cg_height: h,
             roll_centre,
             roll_stiffness: [0.62 * total, 0.38 * total],
-            roll_damping: [0.55 * damping, 0.45 * damping],
+            roll_damping: [0.0; 2],
             tyre: MfTyre::default(),
+        }
+        .with_roll_damping_ratio(0.35)
+    }
+
+    /// The same car with roll damping ratio `zeta`
+    /// (`ζ = (C_f + C_r)/(2·√((K_f + K_r)·I_x))`, the diagnosis's roll
+    /// model's ζ for this truth's steady roll), split 55/45 front/rear.
+    pub fn with_roll_damping_ratio(self, zeta: f64) -> Self {
+        let total = self.roll_stiffness[0] + self.roll_stiffness[1];
+        let damping = 2.0 * zeta * (total * self.roll_inertia).sqrt();
+        Self {
+            roll_damping: [0.55 * damping, 0.45 * damping],
+            ..self
         }
     }
 

@@ -135,6 +135,8 @@ pub struct Synthetic {
     spec: SynthSpec,
     /// The model that played the car.
     truth: Truth,
+    /// The four-wheel truth's vehicle (its roll, said in `vehicle.toml`).
+    four_wheel: FourWheelVehicle,
     /// The roll the campaign file states (for the four-wheel truth it
     /// differs from the truth's).
     roll: RollModel,
@@ -167,6 +169,15 @@ impl TruthModels {
     /// The truth of `spec` on `truth`; an error when `truth` lacks one of
     /// the effects asked for or cannot drive the programme.
     pub(crate) fn new(spec: &SynthSpec, truth: Truth) -> Result<Self, ParamError> {
+        Self::with_four_wheel(spec, truth, FourWheelVehicle::sedan())
+    }
+
+    /// [`TruthModels::new`] with `car` as the four-wheel truth's vehicle.
+    fn with_four_wheel(
+        spec: &SynthSpec,
+        truth: Truth,
+        car: FourWheelVehicle,
+    ) -> Result<Self, ParamError> {
         truth.drives(spec.programme)?;
         let vehicle = truth_vehicle(spec.programme);
         let tyre = truth_tyre();
@@ -179,7 +190,7 @@ impl TruthModels {
         let asked: Vec<EffectKind> = spec.effects.iter().map(|(k, _)| *k).collect();
         analogues::build_in(spec.programme, &mut augmented, &asked);
         let four_wheel = FourWheel {
-            vehicle: FourWheelVehicle::sedan(),
+            vehicle: car,
             effects: match truth {
                 Truth::FourWheel => four_wheel_effects(&spec.effects)?,
                 Truth::Augmented => FourWheelEffects::default(),
@@ -227,7 +238,28 @@ impl TruthModels {
 /// Generates a campaign with `truth`; an error when `truth` lacks one of
 /// the effects asked for or cannot drive the programme.
 pub fn generate_with(spec: &SynthSpec, truth: Truth) -> Result<Synthetic, ParamError> {
-    let models = TruthModels::new(spec, truth)?;
+    generate_from(spec, truth, TruthModels::new(spec, truth)?)
+}
+
+/// Generates a campaign on the four-wheel truth with `car` as its vehicle
+/// (for example [`FourWheelVehicle::with_roll_damping_ratio`]): the proving
+/// ground's sedan made lighter or heavier damped than its own, to check
+/// that a fit recovers the roll it did not assume. An error as
+/// [`generate_with`]'s.
+pub fn generate_on_four_wheel(
+    spec: &SynthSpec,
+    car: FourWheelVehicle,
+) -> Result<Synthetic, ParamError> {
+    let truth = Truth::FourWheel;
+    generate_from(spec, truth, TruthModels::with_four_wheel(spec, truth, car)?)
+}
+
+/// The campaign of `spec` measured on `models` (of `truth`).
+fn generate_from(
+    spec: &SynthSpec,
+    truth: Truth,
+    models: TruthModels,
+) -> Result<Synthetic, ParamError> {
     let (augmented, base) = (&models.augmented, &models.base);
     let mut rng = ChaCha8Rng::seed_from_u64(spec.seed);
     let n = spec.noise;
@@ -311,6 +343,7 @@ fn finish(
         runs,
         spec: spec.clone(),
         truth,
+        four_wheel: four_wheel.vehicle,
         roll: match truth {
             Truth::Augmented => analogues::campaign_roll(spec.programme),
             Truth::FourWheel => four_wheel_campaign_roll(),

@@ -144,7 +144,7 @@ impl RollDynamics {
     /// Frequency (Hz) and damping ratio, in the order of a fit's vector.
     pub const PARAMETERS: &'static [Parameter] = &[
         par("frequency", "Hz", f64::NAN, 0.5, 4.0),
-        par("damping", "-", f64::NAN, 0.2, 1.5),
+        par("damping", "-", f64::NAN, 0.05, 1.5),
     ];
 
     /// Sets the roll model's frequency and damping to `p`.

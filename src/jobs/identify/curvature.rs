@@ -14,12 +14,39 @@ use crate::identify::mf_staged::Stage;
 use crate::tyre::mf::{MagicFormula, TyreSide};
 use serde::Serialize;
 
+/// Which of the Magic Formula's curvature factors: the file's names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Curvature {
+    /// `Ey`, of the pure lateral force, over the slip angle.
+    Ey,
+    /// `Ex`, of the pure longitudinal force, over the slip ratio.
+    Ex,
+}
+
+impl Curvature {
+    /// Its name in the file and the literature.
+    pub fn name(self) -> &'static str {
+        match self {
+            Curvature::Ey => "Ey",
+            Curvature::Ex => "Ex",
+        }
+    }
+
+    /// The slip it curves the force over, in words.
+    fn slip(self) -> &'static str {
+        match self {
+            Curvature::Ey => "slip angle",
+            Curvature::Ex => "slip ratio",
+        }
+    }
+}
+
 /// Where a curvature of the fitted tyre is largest above 1 within the
 /// fitted ranges.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CurvatureExcess {
-    /// `Ey` (lateral) or `Ex` (longitudinal).
-    pub curvature: &'static str,
+    /// Which curvature.
+    pub curvature: Curvature,
     /// Its largest value over the fitted ranges.
     pub largest: f64,
     /// The load there (N).
@@ -33,18 +60,14 @@ pub struct CurvatureExcess {
 impl CurvatureExcess {
     /// The warning, one line.
     pub fn line(&self) -> String {
-        let slip = match self.curvature {
-            "Ey" => "slip angle",
-            _ => "slip ratio",
-        };
         format!(
             "curvature {} reaches {} above 1 over the fitted data (at fz {} N, camber {}°, {} {}): the file relies on a limit check clipping E at 1 (MFeval's useLimitsCheck; tyre-eval's mode 121, the default); with the checks off (mode 221) its force departs from the fit",
-            self.curvature,
+            self.curvature.name(),
             readable(self.largest, 3),
             readable(self.fz, 4),
             readable(self.camber.to_degrees(), 3),
             if self.slip_sign > 0.0 { "positive" } else { "negative" },
-            slip,
+            self.curvature.slip(),
         )
     }
 }
@@ -88,7 +111,7 @@ pub(crate) fn curvature_excess(
     let alpha_flip = if t.side == TyreSide::Left { -1.0 } else { 1.0 };
     let camber_flip = if t.side == TyreSide::Right { -1.0 } else { 1.0 };
     let mut out = Vec::new();
-    let mut worst = |name: &'static str, e: &dyn Fn(f64, f64, f64) -> f64, slips: Vec<f64>| {
+    let mut worst = |name: Curvature, e: &dyn Fn(f64, f64, f64) -> f64, slips: Vec<f64>| {
         let mut best: Option<CurvatureExcess> = None;
         for &fz in &loads {
             for &g in &cambers {
@@ -110,7 +133,7 @@ pub(crate) fn curvature_excess(
     };
     if fitted.contains(&Stage::PureFy) {
         worst(
-            "Ey",
+            Curvature::Ey,
             &|dfz, gs, s| {
                 (c.PEY1 + c.PEY2 * dfz)
                     * c.LEY
@@ -121,7 +144,7 @@ pub(crate) fn curvature_excess(
     }
     if fitted.contains(&Stage::PureFx) {
         worst(
-            "Ex",
+            Curvature::Ex,
             &|dfz, _, s| (c.PEX1 + c.PEX2 * dfz + c.PEX3 * dfz * dfz) * (1.0 - c.PEX4 * s) * c.LEX,
             signs("kappa", 1.0),
         );

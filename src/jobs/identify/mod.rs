@@ -13,7 +13,7 @@ use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Varia
 use crate::io::rig::read_rig;
 mod choices;
 mod curvature;
-pub use curvature::CurvatureExcess;
+pub use curvature::{Curvature, CurvatureExcess};
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;

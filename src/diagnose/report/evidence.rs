@@ -2,7 +2,8 @@
 //! fitted sensor offset against the one the standstills or straights
 //! measured (in the channel's unit: rad/s, m/s², rad), axles the verdict's
 //! effects made a tyre again, a look-alike that needed the end of its
-//! search range. [`super::words::evidence`] words them.
+//! search range, one that left a parameter idle where a simpler candidate
+//! did about as well. [`super::words::evidence`] words them.
 
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
@@ -50,6 +51,41 @@ pub enum Evidence {
         /// Its parameters on a search bound.
         pressed: Vec<ParameterValue>,
     },
+    /// A look-alike that leaves less of the gap but leaves a parameter
+    /// idle, passed over for a simpler candidate ([`Parsimony`]).
+    ChosenForParsimony(Parsimony),
+}
+
+/// A look-alike that leaves less of the gap, but leaves a parameter idle
+/// (off, or not told from off): the candidate with the fewest free
+/// parameters whose held-out error is within the parsimony window of its,
+/// `heldout_error + window_noise_levels · noise_level`, was taken in its
+/// place ([`crate::diagnose::verdict::rules::simpler_than`]): the verdict
+/// itself, or the set its search started from or extended.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Parsimony {
+    /// The look-alike's effects.
+    pub effects: Vec<EffectKind>,
+    /// Share of the held-out gap above noise it removes, %.
+    pub reduction_percent: f64,
+    /// Its held-out error J.
+    pub heldout_error: f64,
+    /// Its free parameters (axles and roll dynamics included).
+    pub free_parameters: usize,
+    /// Its parameters left idle.
+    pub idle: Vec<ParameterValue>,
+    /// The effects taken in its place.
+    pub taken: Vec<EffectKind>,
+    /// Share of the held-out gap above noise they remove, %.
+    pub taken_reduction_percent: f64,
+    /// Their held-out error J.
+    pub taken_heldout_error: f64,
+    /// Their free parameters.
+    pub taken_free_parameters: usize,
+    /// The noise level J_n.
+    pub noise_level: f64,
+    /// The window, in noise levels.
+    pub window_noise_levels: f64,
 }
 
 /// Where a sensor offset was measured.

@@ -28,7 +28,7 @@ use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence,
     Explained, GapFinding, InSet, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary,
-    RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
+    Parsimony, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

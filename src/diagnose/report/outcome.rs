@@ -16,7 +16,9 @@
 use crate::diagnose::base::identify::NoTyre;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::model::channels::Channel;
-pub use crate::diagnose::report::evidence::{CalibrationSource, Evidence, CALIBRATION_AGREES};
+pub use crate::diagnose::report::evidence::{
+    CalibrationSource, Evidence, Parsimony, CALIBRATION_AGREES,
+};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 use crate::diagnose::report::values::{ParameterValue, Shrinkage, SteadyOffset};

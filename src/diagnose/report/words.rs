@@ -9,20 +9,22 @@
 //! tyre engineers read them); J is dimensionless, reductions in percent.
 
 mod axles;
+mod evidence;
 mod gap;
 mod parameters;
 mod warnings;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
 };
+pub use evidence::evidence;
 pub use gap::band_lines;
 pub use parameters::parameter;
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
-    CalibrationSource, ChannelChange, Evidence, Explained, GapFinding, InSet, NotIdentifiable,
-    Note, OutsideLibrary, RankWarning, Refusal, Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
+    ChannelChange, Explained, GapFinding, InSet, NotIdentifiable, Note, OutsideLibrary,
+    RankWarning, Refusal, Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -402,50 +404,6 @@ pub fn channel_trust(n: &ChannelNoise) -> String {
     )
 }
 
-/// What the runs show beside a verdict's fit, in one line.
-pub fn evidence(e: &Evidence) -> String {
-    match e {
-        Evidence::Calibration {
-            channel,
-            fitted,
-            fitted_std_error,
-            measured,
-            measured_on,
-            measured_std_error,
-            agrees,
-        } => format!(
-            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the {}' {measured:.4} ± {measured_std_error:.1e} {unit}",
-            if *agrees { "confirmed" } else { "not confirmed" },
-            channel.name(),
-            if *agrees { "agrees with" } else { "differs from" },
-            match measured_on {
-                CalibrationSource::Standstills => "standstills",
-                CalibrationSource::Straights => "straights",
-            },
-            unit = channel.unit(),
-        ),
-        Evidence::AxlesRestored { no_tyre } => format!(
-            "axles restored: the base model alone is no tyre ({}); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)",
-            no_tyre_list(no_tyre)
-        ),
-        Evidence::LookalikePressed {
-            effects,
-            reduction_percent,
-            pressed,
-        } => {
-            let at: Vec<String> = pressed
-                .iter()
-                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
-                .collect();
-            format!(
-                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges",
-                joined(effects, "+"),
-                at.join(", ")
-            )
-        }
-    }
-}
-
 /// The heading of the findings on the gap: where it lies, or, when the
 /// held-out error is within the noise level, that it has no place.
 pub fn gap_heading(findings: &[GapFinding]) -> &'static str {
@@ -549,6 +507,8 @@ pub fn value(v: f64) -> String {
 
 #[cfg(test)]
 mod band_tests;
+#[cfg(test)]
+mod evidence_tests;
 #[cfg(test)]
 mod parameter_tests;
 #[cfg(test)]

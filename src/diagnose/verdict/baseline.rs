@@ -12,7 +12,7 @@ use crate::diagnose::effects::{joined, Bound, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
-use crate::diagnose::report::{ChannelError, RankWarning, Ranked, Refused};
+use crate::diagnose::report::{ChannelError, ParameterValue, RankWarning, Ranked, Refused};
 use crate::diagnose::verdict::candidate::parameter_values;
 use crate::diagnose::verdict::rules::{self, Candidate};
 use crate::diagnose::verdict::score::{Context, Scored};
@@ -106,6 +106,19 @@ impl Baseline {
             degenerate: self.degenerate(sc),
             pressed: pressed(sc, &self.layout(&sc.kinds)),
         }
+    }
+
+    /// The effect parameters a candidate leaves idle, as its report row
+    /// gives them ([`Baseline::rank`]; [`Baseline::candidate`] reads them
+    /// as one flag).
+    pub(crate) fn idle_values(&self, sc: &Scored) -> Vec<ParameterValue> {
+        let layout = self.layout(&sc.kinds);
+        let at = layout.effects().start;
+        let row = self.rank(sc).parameters;
+        idle_parameters(sc, &layout)
+            .into_iter()
+            .filter_map(|i| row.get(i - at).cloned())
+            .collect()
     }
 
     /// The channel scales of the combined errors.
@@ -279,8 +292,14 @@ pub(crate) fn baseline(ctx: &Context, floors: &[f64; 3]) -> Baseline {
 /// responds to ([`crate::diagnose::fit::FitOutcome::unseen`]) is held, not
 /// idle.
 fn idle(sc: &Scored, layout: &Layout) -> bool {
+    !idle_parameters(sc, layout).is_empty()
+}
+
+/// The effect parameters [`idle`] finds idle, as indices into the fit's
+/// vector.
+fn idle_parameters(sc: &Scored, layout: &Layout) -> Vec<usize> {
     let params = sc.kinds.iter().flat_map(|e| e.parameters().iter());
-    params.zip(layout.effects()).any(|(q, i)| {
+    let idle = params.zip(layout.effects()).filter(|&(q, i)| {
         // Held because no measured channel responds to it: not a part of
         // the effect the runs could test, so not one they found off.
         if sc.full.is_unseen(i) {
@@ -295,7 +314,8 @@ fn idle(sc: &Scored, layout: &Layout) -> bool {
             Some(Bound::Physical) => off,
             None => off || (!q.off.is_nan() && (se.is_nan() || (value - q.off).abs() < 2.0 * se)),
         }
-    })
+    });
+    idle.map(|(_, i)| i).collect()
 }
 
 /// Whether one of a fit's effect parameters (not the roll dynamics, whose

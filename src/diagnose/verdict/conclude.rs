@@ -15,8 +15,8 @@ use crate::diagnose::report::above_noise;
 use crate::diagnose::report::outcome::{CALIBRATION_AGREES, EXPLAINS_MOST};
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
-    NotIdentifiable, OutsideLibrary, ParameterValue, Part, RankWarning, Ranked, Shrinkage, Verdict,
-    VerdictKind, VerdictWarning,
+    NotIdentifiable, OutsideLibrary, ParameterValue, Parsimony, Part, RankWarning, Ranked,
+    Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
@@ -63,21 +63,7 @@ pub(crate) fn verdict(
                     no_tyre: base_no_tyre.to_vec(),
                 });
             }
-            // The search started from a look-alike in place of a best
-            // pressed on its search bound: say what the verdict was taken
-            // over (unless a search from that best, unpressed in a set,
-            // replaced the one from the look-alike).
-            if let Some(i) = found
-                .passed_over
-                .filter(|&i| !r.effects.contains(&singles[i].kinds[0]))
-            {
-                let p = base.rank(&singles[i]);
-                evidence.push(Evidence::LookalikePressed {
-                    pressed: on_search_bound(&p.parameters),
-                    effects: p.effects,
-                    reduction_percent: p.reduction_percent,
-                });
-            }
+            evidence.extend(chosen_over(found, singles, base, &r.effects));
             Verdict::Explained(Explained {
                 evidence,
                 effects: r.effects,
@@ -132,8 +118,56 @@ pub(crate) fn verdict(
     }
 }
 
-/// The sensor offsets among a verdict's `parameters` against the ones the
-/// runs' standstills and straights measured.
+/// What the verdict (its `effects`) was chosen over on the way: a best
+/// single pressed on its search bound, passed over for a look-alike inside
+/// its ranges (unless a search from that best, unpressed in a set,
+/// replaced the one from the look-alike), and each candidate passed over
+/// for a simpler one within the parsimony window whose effects the verdict
+/// does not take in after all, unless the pressed one already names it.
+fn chosen_over(
+    found: &Search,
+    singles: &[Scored],
+    base: &Baseline,
+    effects: &[EffectKind],
+) -> Vec<Evidence> {
+    let mut out = Vec::new();
+    if let Some(i) = found
+        .passed_over
+        .filter(|&i| !effects.contains(&singles[i].kinds[0]))
+    {
+        let p = base.rank(&singles[i]);
+        out.push(Evidence::LookalikePressed {
+            pressed: on_search_bound(&p.parameters),
+            effects: p.effects,
+            reduction_percent: p.reduction_percent,
+        });
+    }
+    for s in &found.simpler {
+        let contained = s.over.kinds.iter().all(|e| effects.contains(e));
+        let named = out.iter().any(|e| {
+            matches!(e, Evidence::LookalikePressed { effects: p, .. } if same_effects(p, &s.over.kinds))
+        });
+        if contained || named {
+            continue;
+        }
+        let (o, t) = (base.rank(&s.over), base.rank(&s.taken));
+        out.push(Evidence::ChosenForParsimony(Parsimony {
+            idle: base.idle_values(&s.over),
+            effects: o.effects,
+            reduction_percent: o.reduction_percent,
+            heldout_error: o.heldout_error_after,
+            free_parameters: s.over.full.free_count(),
+            taken: t.effects,
+            taken_reduction_percent: t.reduction_percent,
+            taken_heldout_error: t.heldout_error_after,
+            taken_free_parameters: s.taken.full.free_count(),
+            noise_level: base.jn,
+            window_noise_levels: rules::PARSIMONY,
+        }));
+    }
+    out
+}
+
 /// The gap a verdict that explains most of it (`ranked`) leaves above the
 /// noise level `noise_level`, where that rest is itself significant
 /// ([`rules::significant`]).
@@ -149,6 +183,8 @@ fn remains(ranked: &Ranked, noise_level: f64) -> Option<VerdictWarning> {
     )
 }
 
+/// The sensor offsets among a verdict's `parameters` against the ones the
+/// runs' standstills and straights measured.
 fn calibration_evidence(parameters: &[ParameterValue], calibrated: &Calibrated) -> Vec<Evidence> {
     Channel::ALL
         .into_iter()

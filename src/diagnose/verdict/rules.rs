@@ -202,6 +202,20 @@ pub fn passed_over(ranked: &[Candidate], jn: f64) -> Option<usize> {
     inside_ranges(ranked, &usable, jn).map(|_| usable[0])
 }
 
+/// The candidate [`pick`] passes over for a simpler one (an index into
+/// `ranked`): the first it reads (after the candidates whose axles are no
+/// tyre, and those pressed on a search bound where a look-alike is not),
+/// where that one leaves a parameter idle and one with fewer parameters
+/// within [`PARSIMONY`] noise levels of it is taken instead. A best
+/// passed over for being pressed is [`passed_over`]'s, never this one's:
+/// its reason is its bound, not its parameters.
+pub fn simpler_than(ranked: &[Candidate], jn: f64) -> Option<usize> {
+    let usable = tyres(ranked);
+    let usable = inside_ranges(ranked, &usable, jn).unwrap_or(usable);
+    let top = *usable.first()?;
+    pick(ranked, jn).filter(|&k| k != top).map(|_| top)
+}
+
 /// The candidates whose axles are a tyre (indices into `ranked`, in its
 /// order).
 fn tyres(ranked: &[Candidate]) -> Vec<usize> {

@@ -31,6 +31,7 @@
 //! [`crate::diagnose::pipeline`] for the overview).
 
 use crate::diagnose::effects::{joined, set_of, EffectKind};
+use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::report::{Confounded, InSet, RankWarning, Ranked, Refused, Screened};
 use crate::diagnose::verdict::baseline::Baseline;
@@ -64,6 +65,20 @@ pub(crate) struct Search {
     /// Sets the greedy additions screened instead of cross-validating
     /// ([`screened_additions`]), one row per set.
     pub(crate) screened: Vec<Screened>,
+    /// Where a set was accepted, each candidate its search passed over for
+    /// a simpler one on the way to it (the start, then each added effect).
+    pub(crate) simpler: Vec<Simpler>,
+}
+
+/// A candidate the search passed over for a simpler one within the
+/// parsimony window ([`rules::simpler_than`]), and the one it took.
+#[derive(Clone)]
+pub(crate) struct Simpler {
+    /// Passed over: it leaves a parameter idle.
+    pub(crate) over: Scored,
+    /// Taken in its place: fewer parameters, within [`rules::PARSIMONY`]
+    /// noise levels of its held-out error.
+    pub(crate) taken: Scored,
 }
 
 /// The verdict's search: the best single (`order` ranks the
@@ -102,6 +117,10 @@ pub(crate) fn search(
     // being pressed on a search bound.
     out.passed_over = rules::passed_over(&ranked, jn).map(|k| order[k]);
     let best = &singles[first];
+    let start_simpler = rules::simpler_than(&ranked, jn).map(|k| Simpler {
+        over: singles[order[k]].clone(),
+        taken: best.clone(),
+    });
     let r = base.rank(best);
     // A best single below the acceptance share can still be half of a
     // pair of effects: the greedy search starts from it when it is
@@ -112,7 +131,8 @@ pub(crate) fn search(
     }
     out.lookalikes = lookalikes(singles, &usable, first, &r, base);
     let limits = (max_effects, screening);
-    let mut current = greedy(ctx, singles, all, base, limits, best, &mut out);
+    let (mut current, mut simpler) = greedy(ctx, singles, all, base, limits, best, &mut out);
+    simpler.splice(0..0, start_simpler);
     // The best single can be a look-alike that mimics part of a pair and
     // leads the greedy search away from it (a fast, lightly damped roll
     // steering the axles looks like a yaw inertia and aero load together).
@@ -129,18 +149,19 @@ pub(crate) fn search(
         if !rules::significant(jc, jn) {
             break;
         }
-        let other = greedy(ctx, singles, all, base, limits, &singles[i], &mut out);
+        let (other, other_simpler) = greedy(ctx, singles, all, base, limits, &singles[i], &mut out);
         let (g, g_other) = (
             gap_above(jc, jn),
             gap_above(other.heldout.combined(&scales), jn),
         );
         if rules::replaces(g_other, g) {
-            current = other;
+            (current, simpler) = (other, other_simpler);
         }
     }
     let total = reduction(base.j0, current.heldout.combined(&scales), jn);
     if rules::accepted(total, current.full.bic(), base.bic0()) {
         out.chosen = Some(current);
+        out.simpler = simpler;
     } else {
         out.ended = Some(base.refused(&current, None, None));
     }
@@ -246,7 +267,8 @@ fn lookalikes(
 /// Greedy additions from `start`: the effect that best closes what is left,
 /// tried jointly with every remaining effect, while each removes
 /// [`ACCEPT`] of what is left and lowers the BIC. Every set tried goes into
-/// `out.combinations`.
+/// `out.combinations`. Returns the set it ends on and the sets each
+/// accepted step passed over for a simpler one.
 fn greedy(
     ctx: &Context,
     singles: &[Scored],
@@ -255,9 +277,10 @@ fn greedy(
     (max_effects, screening): (usize, bool),
     start: &Scored,
     out: &mut Search,
-) -> Scored {
+) -> (Scored, Vec<Simpler>) {
     let (scales, jn) = (base.scales(), base.jn);
     let mut current = start.clone();
+    let mut simpler = Vec::new();
     // Greedy: add the effect that best closes what is left.
     while current.kinds.len() < max_effects {
         let jc = current.heldout.combined(&scales);
@@ -271,27 +294,7 @@ fn greedy(
             .map(|&i| singles[i].kinds[0])
             .filter(|e| !current.kinds.contains(e))
             .collect();
-        let cur = &current;
-        // Each set's seed is that of the effect added (its name's, not its
-        // place in the ranking, which screening shortens), one apart from
-        // its single fit's.
-        let fitted: Vec<Fitted> = tries
-            .par_iter()
-            .map(|e| {
-                let mut kinds = cur.kinds.clone();
-                kinds.push(*e);
-                let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
-                let layout = base.layout(&cur.kinds);
-                let members = layout.combined(&cur.full.params, *e, &single.full.params);
-                let extended = layout.combined(&cur.full.params, *e, &ctx.off(&[*e]));
-                // Each member's own optimum: the axles the added effect
-                // fitted alone want can differ from the current set's.
-                let mut own = members.clone();
-                let axles = layout.axles();
-                own[axles.clone()].copy_from_slice(&single.full.params[axles]);
-                ctx.fit_all(kinds, &[members, extended, own], e.seed().wrapping_add(1))
-            })
-            .collect();
+        let fitted = extensions(ctx, singles, base, &current, &tries);
         if let Some(rows) = screened_additions(ctx, base, &current, &fitted, screening) {
             out.screened.extend(rows);
             break;
@@ -310,15 +313,72 @@ fn greedy(
         let Some(k) = rules::pick(&ranked, jn) else {
             break;
         };
+        let over = rules::simpler_than(&ranked, jn).map(|t| scored[t].clone());
         let next = scored.swap_remove(k);
         let extra = reduction(jc, next.heldout.combined(&scales), jn);
-        if rules::accepted(extra, next.full.bic(), current.full.bic()) {
-            current = next;
-        } else {
+        if !rules::accepted(extra, next.full.bic(), current.full.bic()) {
             break;
         }
+        simpler.extend(over.map(|over| Simpler {
+            over,
+            taken: next.clone(),
+        }));
+        current = next;
     }
-    current
+    (current, simpler)
+}
+
+/// The sets of `current` plus each effect of `tries`, fitted on all runs.
+/// Each set's seed is that of the effect added (its name's, not its place
+/// in the ranking, which screening shortens), one apart from its single
+/// fit's.
+fn extensions<'a>(
+    ctx: &Context<'a>,
+    singles: &[Scored],
+    base: &Baseline,
+    current: &Scored,
+    tries: &[EffectKind],
+) -> Vec<Fitted<'a>> {
+    tries
+        .par_iter()
+        .map(|e| {
+            let mut kinds = current.kinds.clone();
+            kinds.push(*e);
+            let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
+            let layout = base.layout(&current.kinds);
+            let members = layout.combined(&current.full.params, *e, &single.full.params);
+            let extended = layout.combined(&current.full.params, *e, &ctx.off(&[*e]));
+            // Each member's own optimum: the axles the added effect
+            // fitted alone want can differ from the current set's.
+            let mut own = members.clone();
+            let axles = layout.axles();
+            own[axles.clone()].copy_from_slice(&single.full.params[axles]);
+            let added = alone(&layout, &ctx.off(&current.kinds), *e, &single.full.params);
+            let starts = [members, extended, own, added];
+            ctx.fit_all(kinds, &starts, e.seed().wrapping_add(1))
+        })
+        .collect()
+}
+
+/// The start of the set of `layout` (the current set's) with `added`
+/// appended at the added effect's own single fit `single`, the current
+/// set's effects off (`off`, its off vector): the set contains that
+/// single, and a fit started only from the current set's basin can stop
+/// short of its optimum. Where the current set was taken for parsimony
+/// over a twin of the added effect (a sensor delay over a steer path
+/// whose lag is idle), the set's fit otherwise ends between the two
+/// delays, each undetermined yet well inside its range, and fits the runs
+/// worse than the single it contains. Axle characteristics and roll
+/// dynamics the added effect fits are its own.
+fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec<f64> {
+    let mut start = layout.combined(off, added, single);
+    let one = Layout::new(&[added], layout.axle);
+    start[layout.axles()].copy_from_slice(&single[one.axles()]);
+    let set = Layout::new(&[layout.kinds.as_slice(), &[added]].concat(), layout.axle);
+    if !one.roll().is_empty() {
+        start[set.roll()].copy_from_slice(&single[one.roll()]);
+    }
+    start
 }
 
 /// The accepted first effect's look-alikes, less those the verdict took in
@@ -409,6 +469,51 @@ pub(crate) fn in_set(
 mod tests {
     use super::*;
     use EffectKind::{RelaxationLength as R, SensorDelay as D, SteerPath as S};
+
+    #[test]
+    fn a_set_starts_too_from_the_added_effect_alone_the_current_set_off() {
+        // A sensor delay taken for parsimony over a steer path (lag idle):
+        // the pair starts at the steer path's own fit, the delay off.
+        let one = Layout::new(&[D], false);
+        assert_eq!(alone(&one, &[0.0], S, &[0.0762, 0.0]), [0.0, 0.0762, 0.0]);
+        // Axles fitted: the added effect's own.
+        let one = Layout::new(&[D], true);
+        let off = [1.0, 2.0, 3.0, 0.0];
+        let single = [4.0, 5.0, 6.0, 0.07, 0.01];
+        assert_eq!(
+            alone(&one, &off, S, &single),
+            [4.0, 5.0, 6.0, 0.0, 0.07, 0.01]
+        );
+    }
+
+    #[test]
+    fn the_roll_dynamics_of_a_set_started_alone_are_the_added_effects_where_it_fits_them() {
+        use EffectKind::{RollCamber, RollSteer};
+        let vector = |kinds: &[EffectKind], from: f64| {
+            let l = Layout::new(kinds, false);
+            let n = l.roll().end;
+            (l, (0..n).map(|i| from + i as f64).collect::<Vec<f64>>())
+        };
+        // The added effect fits roll, the current set does not.
+        let (current, off) = vector(&[D], 0.0);
+        let (_, single) = vector(&[RollSteer], 10.0);
+        let mut want = off.clone();
+        want.extend(&single);
+        assert_eq!(alone(&current, &off, RollSteer, &single), want);
+        // The current set fits roll, the added effect does not: its own.
+        let (current, off) = vector(&[RollSteer], 0.0);
+        let start = alone(&current, &off, D, &[0.05]);
+        let set = Layout::new(&[RollSteer, D], false);
+        assert_eq!(start[set.roll()], off[current.roll()]);
+        assert_eq!(start[set.effect(1)], [0.05]);
+        // Both: the added effect's.
+        let (camber, single) = vector(&[RollCamber], 20.0);
+        let start = alone(&current, &off, RollCamber, &single);
+        let set = Layout::new(&[RollSteer, RollCamber], false);
+        assert_eq!(start[set.roll()], single[camber.roll()]);
+        assert_eq!(start[set.effect(1)], single[camber.effect(0)]);
+        assert_eq!(start[set.effect(0)], off[current.effect(0)]);
+    }
 
     #[test]
     fn a_set_worse_in_sample_than_one_it_contains_is_found_with_the_best_such() {

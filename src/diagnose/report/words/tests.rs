@@ -4,6 +4,7 @@
 use super::*;
 use crate::diagnose::base::identify::{Axle, AxleLimit, NoTyre};
 use crate::diagnose::effects::{Bound, EffectKind};
+use crate::diagnose::report::outcome::Evidence;
 use crate::diagnose::report::outcome::VerdictWarning;
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
 use crate::diagnose::report::ParameterValue;

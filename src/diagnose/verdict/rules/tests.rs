@@ -183,6 +183,61 @@ fn the_best_is_taken_unless_it_leaves_a_parameter_idle() {
 }
 
 #[test]
+fn a_best_passed_over_for_a_simpler_one_is_named_and_only_then() {
+    // The delays campaign: a steer path (2 parameters, its lag idle) at
+    // J 1.060, a sensor delay (1) at 1.073; J_n 0.941, the window 1.154.
+    let ranked = [cand(1.060, 2, true, false), cand(1.073, 1, false, false)];
+    assert_eq!(pick(&ranked, 0.941), Some(1));
+    assert_eq!(simpler_than(&ranked, 0.941), Some(0));
+    // Just outside the window the idle best is taken: nothing passed over.
+    let ranked = [cand(1.060, 2, true, false), cand(1.155, 1, false, false)];
+    assert_eq!(pick(&ranked, 0.941), Some(0));
+    assert_eq!(simpler_than(&ranked, 0.941), None);
+    // A best not idle is taken over a simpler one within the window.
+    let ranked = [cand(1.060, 2, false, false), cand(1.073, 1, false, false)];
+    assert_eq!(simpler_than(&ranked, 0.941), None);
+    // Idle, but none simpler within the window: as many parameters.
+    let ranked = [cand(1.060, 2, true, false), cand(1.073, 2, false, false)];
+    assert_eq!(simpler_than(&ranked, 0.941), None);
+    // The best whose axles are a tyre is the one passed over, not a
+    // better one whose axles are none.
+    let ranked = [
+        cand(0.9, 1, false, true),
+        cand(1.060, 2, true, false),
+        cand(1.073, 1, false, false),
+    ];
+    assert_eq!(simpler_than(&ranked, 0.941), Some(1));
+    assert_eq!(simpler_or_pressed(&ranked), (Some(1), None));
+}
+
+#[test]
+fn a_best_passed_over_for_its_search_bound_is_not_said_to_be_passed_over_for_parsimony() {
+    // Pressed and idle too: the look-alike inside its ranges is taken for
+    // the bound (passed_over), not for parsimony.
+    let ranked = [
+        pressed(cand(2.6, 1, true, false)),
+        cand(2.72, 2, false, false),
+    ];
+    assert_eq!(simpler_or_pressed(&ranked), (None, Some(0)));
+    // The look-alike read first leaves a parameter idle and a simpler one
+    // within the window is taken: that look-alike is the one passed over
+    // for parsimony, the pressed best for its bound.
+    let ranked = [
+        pressed(cand(2.6, 1, false, false)),
+        cand(2.7, 3, true, false),
+        cand(2.75, 2, false, false),
+    ];
+    assert_eq!(pick(&ranked, 1.0), Some(2));
+    assert_eq!(simpler_or_pressed(&ranked), (Some(1), Some(0)));
+    assert_eq!(simpler_than(&[], 1.0), None);
+}
+
+/// What [`simpler_than`] and [`passed_over`] find at J_n = 1.
+fn simpler_or_pressed(ranked: &[Candidate]) -> (Option<usize>, Option<usize>) {
+    (simpler_than(ranked, 1.0), passed_over(ranked, 1.0))
+}
+
+#[test]
 fn candidates_whose_axles_are_no_tyre_are_never_picked() {
     let ranked = [
         cand(0.5, 1, false, true),

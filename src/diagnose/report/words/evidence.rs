@@ -1,0 +1,80 @@
+//! What the runs show beside a verdict's fit, in words ([`Evidence`]): a
+//! fitted sensor offset against the measured one (in the channel's unit),
+//! axles the effects made a tyre again, and what the verdict was chosen
+//! over — a look-alike pressed on its search range, or one that leaves a
+//! parameter idle where a simpler candidate does about as well (held-out
+//! errors J dimensionless, reductions in percent).
+
+use super::{no_tyre_list, parameter};
+use crate::diagnose::effects::joined;
+use crate::diagnose::report::outcome::{CalibrationSource, Evidence, Parsimony};
+
+/// What the runs show beside a verdict's fit, in one line.
+pub fn evidence(e: &Evidence) -> String {
+    match e {
+        Evidence::Calibration {
+            channel,
+            fitted,
+            fitted_std_error,
+            measured,
+            measured_on,
+            measured_std_error,
+            agrees,
+        } => format!(
+            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the {}' {measured:.4} ± {measured_std_error:.1e} {unit}",
+            if *agrees { "confirmed" } else { "not confirmed" },
+            channel.name(),
+            if *agrees { "agrees with" } else { "differs from" },
+            match measured_on {
+                CalibrationSource::Standstills => "standstills",
+                CalibrationSource::Straights => "straights",
+            },
+            unit = channel.unit(),
+        ),
+        Evidence::AxlesRestored { no_tyre } => format!(
+            "axles restored: the base model alone is no tyre ({}); fitted with the verdict's effects the axles are a tyre, so the effects account for what bent them (the reductions are measured against the base alone)",
+            no_tyre_list(no_tyre)
+        ),
+        Evidence::LookalikePressed {
+            effects,
+            reduction_percent,
+            pressed,
+        } => {
+            let at: Vec<String> = pressed
+                .iter()
+                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
+                .collect();
+            format!(
+                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges",
+                joined(effects, "+"),
+                at.join(", ")
+            )
+        }
+        Evidence::ChosenForParsimony(c) => parsimony(c),
+    }
+}
+
+/// The verdict (or the set its search started from or extended) taken for
+/// parsimony over a look-alike that leaves a parameter idle, with the
+/// numbers of the rule.
+fn parsimony(c: &Parsimony) -> String {
+    let idle: Vec<String> = c.idle.iter().map(parameter).collect();
+    let (j, n, jn) = (c.heldout_error, c.window_noise_levels, c.noise_level);
+    format!(
+        "chosen for parsimony over a look-alike that removes more: {} removes {:.1} % (held-out error {j:.3}) with {}, but leaves {} idle (off, or not told from off); {} removes {:.1} % with {}, within {n} noise levels of it (held-out error {:.3} ≤ {j:.3} + {n} × {jn:.3} = {:.3}), and within that window the candidate with the fewest free parameters is taken",
+        joined(&c.effects, "+"),
+        c.reduction_percent,
+        free(c.free_parameters),
+        if idle.is_empty() { "a parameter".to_string() } else { idle.join(", ") },
+        joined(&c.taken, "+"),
+        c.taken_reduction_percent,
+        free(c.taken_free_parameters),
+        c.taken_heldout_error,
+        j + n * jn,
+    )
+}
+
+/// `n free parameters`, in the singular for one.
+fn free(n: usize) -> String {
+    format!("{n} free parameter{}", if n == 1 { "" } else { "s" })
+}

@@ -1,0 +1,135 @@
+//! What a fresh-eyes check of `diagnose` found unexplained or unmarked,
+//! run as a user runs the tool: a verdict taken for parsimony over a
+//! look-alike that removes more now says so (terminal, page and
+//! `diagnosis.json`), and a set that contains a twin of its first effect
+//! no longer reports its split of the two as fitted values whose standard
+//! errors are hundreds of times their size.
+
+use super::*;
+
+/// A synthetic campaign with `effects` on (seed 1) whose candidates are
+/// narrowed to `candidates` (a TOML list's items), diagnosed into
+/// `dir/out`: stdout, `diagnosis.json` and `report.html`.
+fn narrowed(dir: &Path, effects: &str, candidates: &str) -> (String, serde_json::Value, String) {
+    let campaign = synth_campaign(dir, "c", &["--effects", effects, "--seed", "1"]);
+    // synth's vehicle.toml ends in its [diagnose] table.
+    let vehicle = campaign.join("vehicle.toml");
+    let text = fs::read_to_string(&vehicle).unwrap();
+    fs::write(&vehicle, format!("{text}effects = [{candidates}]\n")).unwrap();
+    let out = dir.join("out");
+    let (stdout, d) = diagnose_to(&campaign, &out);
+    let page = fs::read_to_string(out.join("report.html")).unwrap();
+    (stdout, d, page)
+}
+
+/// The verdict's evidence of `kind`.
+fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {
+    d["verdict"]["evidence"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == kind)
+        .collect()
+}
+
+/// The delays campaign (`campaigns/delays.toml`): sensor_delay (85.3 %)
+/// was the verdict over steer_path (86.1 %, its lag on its physical limit)
+/// and nothing said why.
+#[test]
+fn a_verdict_taken_for_parsimony_over_a_lookalike_that_removes_more_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let (stdout, d, page) = narrowed(
+        dir.path(),
+        "sensor_delay",
+        "\"sensor_delay\", \"steer_path\"",
+    );
+    assert_eq!(verdict_of(&d), ["sensor_delay"]);
+    let e = evidence(&d, "chosen_for_parsimony");
+    assert_eq!(e.len(), 1, "{}", d["verdict"]["evidence"]);
+    let e = e[0];
+    assert_eq!(e["effects"], serde_json::json!(["steer_path"]));
+    assert_eq!(e["taken"], serde_json::json!(["sensor_delay"]));
+    assert_eq!(
+        (
+            e["free_parameters"].as_u64(),
+            e["taken_free_parameters"].as_u64()
+        ),
+        (Some(2), Some(1))
+    );
+    assert_eq!(e["idle"][0]["name"], "steer_path.lag");
+    assert_eq!(e["window_noise_levels"], 0.1);
+    let f = |k: &str| e[k].as_f64().unwrap();
+    // The numbers are the ranking's, and the rule holds on them.
+    assert_eq!(
+        f("reduction_percent"),
+        ranked(&d, "steer_path")["reduction_percent"]
+            .as_f64()
+            .unwrap()
+    );
+    assert_eq!(
+        f("taken_reduction_percent"),
+        d["verdict"]["reduction_percent"].as_f64().unwrap()
+    );
+    assert!(f("reduction_percent") > f("taken_reduction_percent"), "{e}");
+    assert!(
+        f("taken_heldout_error") <= f("heldout_error") + 0.1 * f("noise_level"),
+        "{e}"
+    );
+    // Not pressed on a search bound: that evidence is not given.
+    assert!(evidence(&d, "lookalike_pressed").is_empty());
+    let said = "chosen for parsimony over a look-alike that removes more: steer_path removes 86.1 % (held-out error 1.060) with 2 free parameters, but leaves steer_path.lag = 0.0000 s";
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with(&format!("  {said}")))
+        .unwrap_or_else(|| panic!("no parsimony line: {stdout}"));
+    assert!(
+        line.ends_with("sensor_delay removes 85.3 % with 1 free parameter, within 0.1 noise levels of it (held-out error 1.073 ≤ 1.060 + 0.1 × 0.941 = 1.154), and within that window the candidate with the fewest free parameters is taken"),
+        "{line}"
+    );
+    assert!(page.contains(said), "the page does not say it");
+}
+
+/// `sensor_delay+steer_path` reported `steer_path.delay = 5.056e-3 ±
+/// 0.451 s` and `steer_path.lag = 1.141e-3 ± 0.497 s` on this campaign:
+/// its fit, started only from the sensor delay's basin, stopped between
+/// the two delays (each a quarter of its 0.5 s range by its Jacobian's
+/// standard error, so not undetermined by the hold's rule) and fitted the
+/// runs worse than steer_path, which it contains. Started from steer
+/// path's own fit too, it reaches that optimum: the sensor delay and the
+/// lag stand on their physical limit, marked as a single's are.
+#[test]
+fn a_set_with_a_twin_of_its_first_effect_reports_no_value_dwarfed_by_its_standard_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, d, _) = narrowed(
+        dir.path(),
+        "sensor_delay,relaxation_length",
+        "\"sensor_delay\", \"steer_path\", \"relaxation_length\"",
+    );
+    let set = d["combinations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["effect"] == "sensor_delay+steer_path")
+        .unwrap_or_else(|| panic!("no sensor_delay+steer_path: {}", d["combinations"]));
+    for p in set["parameters"].as_array().unwrap() {
+        let marked = p["at_bound"] == true || !p["held_std_error"].is_null();
+        let fitted = p["std_error"]
+            .as_f64()
+            .is_some_and(|se| se < p["value"].as_f64().unwrap().abs());
+        assert!(marked || fitted, "{p}");
+    }
+    let on_limit: Vec<&str> = set["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| p["bound"] == "physical")
+        .map(|p| p["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(on_limit, ["sensor_delay.delay", "steer_path.lag"], "{set}");
+    let worse = set["warning_details"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["kind"] == "worse_than_subset");
+    assert!(!worse, "{}", set["warning_details"]);
+}

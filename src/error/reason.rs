@@ -361,7 +361,7 @@ pub enum Limit {
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]
     HoldValue,
     /// A manoeuvre's speed, m/s.
-    #[error("a manoeuvre on a road runs below 150 m/s (540 km/h); beyond it the tyre models and the 2-DOF model are far outside what they were made for")]
+    #[error("the model evaluates no speed below 0.5 m/s (its slip angles divide by the speed; a slower run would run at 0.5 m/s), and a manoeuvre on a road runs below 150 m/s (540 km/h), beyond which the tyre models and the 2-DOF model are far outside what they were made for")]
     ManoeuvreSpeed,
     /// A steer frequency, Hz.
     #[error("no handling manoeuvre steers faster than 50 Hz (a driver steers below about 5 Hz, handling tests sweep to a few hertz); a faster steer only multiplies the integration steps (is the value in rad/s, or a sample rate?)")]

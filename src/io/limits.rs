@@ -36,12 +36,15 @@ const MAX_SPEED: f64 = 150.0;
 /// 1 MHz asked 20 million integration steps before it was refused.
 const MAX_FREQUENCY: f64 = 50.0;
 
-/// A manoeuvre's speed: positive and below [`MAX_SPEED`], refused at its
-/// own key (an absurd speed otherwise hangs the integration, or surfaces
-/// as a non-finite straight-running steer blamed on `steer`).
+/// A manoeuvre's speed: positive, above the model's lowest speed
+/// ([`crate::vehicle::MIN_SPEED`]: a slower one ran at that speed, its
+/// gains printed as the car's at a crawl) and at most [`MAX_SPEED`],
+/// refused at its own key (an absurd speed otherwise hangs the integration,
+/// or surfaces as a non-finite straight-running steer blamed on `steer`).
 pub(super) fn speed(speed: f64) -> Result<(), ParamError> {
     ParamError::positive("speed", speed)?;
-    ParamError::in_range("speed", speed, 0.0, MAX_SPEED, Limit::ManoeuvreSpeed)
+    let lo = crate::vehicle::MIN_SPEED;
+    ParamError::in_range("speed", speed, lo, MAX_SPEED, Limit::ManoeuvreSpeed)
 }
 
 /// A steer frequency at `key`: at most [`MAX_FREQUENCY`], above `lo`.

@@ -483,7 +483,7 @@ fn an_absurd_step_steer_speed_is_refused_at_its_own_key() {
             "{e}"
         );
         assert!(
-            e.contains("must lie in (0, 150]: a manoeuvre on a road runs below 150 m/s"),
+            e.contains("must lie in (0.5, 150]: the model evaluates no speed below 0.5 m/s"),
             "{e}"
         );
         assert!(!e.contains("steer`"), "{e}");

@@ -35,7 +35,7 @@ fn step(speed: f64, steer: f64) -> (String, serde_json::Value) {
 
 /// A 0.3 rad step at 80 km/h slid the car to −19° of sideslip with a
 /// 504 % overshoot, and the only word was "not settled"; a step at
-/// 0.5 m/s printed response times of nothing.
+/// a crawl printed response times of nothing.
 #[test]
 fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
     // The bundled sedan (its Gim tyres) stepped to 0.3 rad, as the user did.
@@ -70,9 +70,9 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         "{said}"
     );
     assert!(!said.contains("sliding"), "{said}");
-    let (said, _) = step(0.5, 0.01);
+    let (said, _) = step(1.0, 0.01);
     assert!(
-        said.contains("warning: the step is at 0.50 m/s, below 5 m/s (18 km/h)"),
+        said.contains("warning: the step is at 1.00 m/s, below 5 m/s (18 km/h)"),
         "{said}"
     );
     // The total variances are a crawl's geometric lags too, said as such.

@@ -32,7 +32,7 @@ fn an_absurd_speed_is_refused_for_every_manoeuvre_kind() {
         for speed in ["1000", "1e308"] {
             let e = refused_manoeuvre(&manoeuvre(kind, &format!("speed = {speed}\n{rest}")));
             assert!(
-                e.contains(&format!("scenario.toml:15:9: `manoeuvre.speed` = {speed}: must lie in (0, 150]: a manoeuvre on a road runs below 150 m/s")),
+                e.contains(&format!("scenario.toml:15:9: `manoeuvre.speed` = {speed}: must lie in (0.5, 150]: the model evaluates no speed below 0.5 m/s")),
                 "{kind}: {e}"
             );
         }

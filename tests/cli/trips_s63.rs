@@ -3,7 +3,8 @@
 //! look-alike that removes more now says so (terminal, page and
 //! `diagnosis.json`), and a set that contains a twin of its first effect
 //! no longer reports its split of the two as fitted values whose standard
-//! errors are hundreds of times their size.
+//! errors are hundreds of times their size; and of `simulate`: a speed
+//! below what the model evaluates is refused.
 
 use super::*;
 
@@ -83,7 +84,7 @@ fn a_verdict_taken_for_parsimony_over_a_lookalike_that_removes_more_says_so() {
         .find(|l| l.starts_with(&format!("  {said}")))
         .unwrap_or_else(|| panic!("no parsimony line: {stdout}"));
     assert!(
-        line.ends_with("sensor_delay removes 85.3 % with 1 free parameter, within 0.1 noise levels of it (held-out error 1.073 ≤ 1.060 + 0.1 × 0.941 = 1.154), and within that window the candidate with the fewest free parameters is taken"),
+        line.ends_with("sensor_delay removes 85.3 % with 1 free parameter, within 0.1 noise levels of it (held-out error 1.073 ≤ 1.060 + 0.1 × 0.941 = 1.154), and within that window the candidate with the fewest free parameters is taken: a tie the runs do not break, settled by the rule, not evidence against the other"),
         "{line}"
     );
     assert!(page.contains(said), "the page does not say it");
@@ -132,4 +133,36 @@ fn a_set_with_a_twin_of_its_first_effect_reports_no_value_dwarfed_by_its_standar
         .iter()
         .any(|w| w["kind"] == "worse_than_subset");
     assert!(!worse, "{}", set["warning_details"]);
+}
+
+/// A step at 0.01 m/s ran at the model's lowest speed, 0.5 m/s, and
+/// printed a yaw-rate gain of 0.18 1/s (0.5 m/s over the wheelbase) as the
+/// car's, 50 times the 0.0036 of its geometry at 0.01 m/s, and called it
+/// settled: refused at its key, with the range and why.
+#[test]
+fn a_speed_below_what_the_model_evaluates_is_refused_at_its_key() {
+    let text = bundled_scenario("sedan_step.toml");
+    let slow = text.replace("speed = 22.2222 ", "speed = 0.01 ");
+    assert_ne!(slow, text, "the sedan's speed line moved");
+    let dir = scratch(&[("scenario.toml", &slow)]);
+    let e = simulate_err(dir.path());
+    assert!(e.contains("scenario.toml"), "{e}");
+    assert!(e.contains("speed"), "{e}");
+    assert!(e.contains("(0.5, 150]"), "{e}");
+    assert!(
+        e.contains("the model evaluates no speed below 0.5 m/s"),
+        "{e}"
+    );
+    // At 1 m/s it runs (and says a crawl's metrics measure no handling).
+    let crawl = scratch(&[(
+        "scenario.toml",
+        &text.replace("speed = 22.2222 ", "speed = 1 "),
+    )]);
+    let o = run(&[
+        "simulate",
+        crawl.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        crawl.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
 }

@@ -42,10 +42,14 @@ pub enum RankWarning {
     FoldsFar {
         /// The parameter whose fold landed farthest (`effect.parameter`).
         parameter: String,
-        /// Its all-run value and standard error.
+        /// Its all-run value.
         value: f64,
-        /// Its standard error on all runs.
+        /// Its standard error on all runs as the rule reads it: the
+        /// Jacobian's, of white residuals.
         std_error: f64,
+        /// Its standard error as the report gives it (robust to residuals
+        /// correlated over time), which can be several times larger.
+        reported_std_error: f64,
         /// The farthest fold's value.
         fold_value: f64,
         /// How far, in standard errors.

@@ -320,9 +320,17 @@ pub fn rank_warning(w: &RankWarning) -> String {
         RankWarning::Disagreement {
             insample_percent,
             heldout_percent,
-        } => format!(
-            "the fit on all runs removes {insample_percent:.0} % of the gap but only {heldout_percent:.0} % on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
-        ),
+        } => {
+            // A negative reduction is a larger gap, not a smaller removal.
+            let heldout = if *heldout_percent < 0.0 {
+                format!("makes it {:.0} % larger", -heldout_percent)
+            } else {
+                format!("only {heldout_percent:.0} %")
+            };
+            format!(
+                "the fit on all runs removes {insample_percent:.0} % of the gap but {heldout} on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
+            )
+        }
         RankWarning::AxlesNoTyre { no_tyre } => format!(
             "fitted with it, the axles are no tyre ({}): it cannot be a verdict",
             no_tyre_list(no_tyre)
@@ -331,14 +339,16 @@ pub fn rank_warning(w: &RankWarning) -> String {
             parameter,
             value: v,
             std_error,
+            reported_std_error,
             fold_value,
             distance,
             far,
             folds,
         } => format!(
-            "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {} ± {std_error:.2e}, {distance:.1} standard errors): its held-out score measures a fit on fewer runs as much as the effect",
+            "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {std_error:.2e}; {:.1} times the ± {reported_std_error:.2e} given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect",
             value(*fold_value),
             value(*v),
+            (fold_value - v).abs() / reported_std_error,
         ),
         RankWarning::WorseThanSubset {
             subset,

@@ -185,6 +185,7 @@ impl Baseline {
             parameter: format!("{group}.{}", q.name),
             value: p.params[i],
             std_error: p.std_errors[i],
+            reported_std_error: p.reported_std_errors()[i],
             fold_value,
             distance,
             far,

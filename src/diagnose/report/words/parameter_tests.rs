@@ -30,6 +30,7 @@ fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
         parameter: "roll.damping".into(),
         value: 0.4095,
         std_error: 0.02,
+        reported_std_error: 0.05,
         fold_value: 0.2,
         distance: 10.47,
         far: 2,
@@ -37,7 +38,7 @@ fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
     };
     assert_eq!(
         rank_warning(&w),
-        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095 ± 2.00e-2, 10.5 standard errors): its held-out score measures a fit on fewer runs as much as the effect"
+        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 2.00e-2; 4.2 times the ± 5.00e-2 given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect"
     );
 }
 
@@ -197,5 +198,17 @@ fn a_channel_within_noise_with_a_steady_offset_says_the_offset() {
     assert_eq!(
         finding(&f),
         "beta: RMS 0.0046 rad (noise floor 0.0019); significant in 0 of 8 runs: within noise in every part, so no place where the base model is wrong; a steady offset: mean residual -0.0041 rad over the runs, of that sign in 8 of 8 runs (2.2 noise floors, 79 % of the mean square), a sensor offset or a bias of the model that the RMS does not single out"
+    );
+}
+
+#[test]
+fn a_fit_that_enlarges_the_held_out_gap_says_larger_not_only_a_negative_share() {
+    let w = RankWarning::Disagreement {
+        insample_percent: 39.4,
+        heldout_percent: -8.1,
+    };
+    assert_eq!(
+        rank_warning(&w),
+        "the fit on all runs removes 39 % of the gap but makes it 8 % larger on held-out runs: the effect does not generalise across runs, or the runs cannot pin its parameters"
     );
 }

@@ -344,12 +344,22 @@ pub fn rank_warning(w: &RankWarning) -> String {
             distance,
             far,
             folds,
-        } => format!(
-            "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {std_error:.2e}; {:.1} times the ± {reported_std_error:.2e} given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect",
-            value(*fold_value),
-            value(*v),
-            (fold_value - v).abs() / reported_std_error,
-        ),
+        } => {
+            // The robust standard error the table gives, where there is one.
+            let given = if reported_std_error.is_finite() && *reported_std_error > 0.0 {
+                format!(
+                    "; {:.1} times the ± {reported_std_error:.2e} given, robust to correlated residuals",
+                    (fold_value - v).abs() / reported_std_error
+                )
+            } else {
+                String::new()
+            };
+            format!(
+                "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {std_error:.2e}{given}): its held-out score measures a fit on fewer runs as much as the effect",
+                value(*fold_value),
+                value(*v),
+            )
+        }
         RankWarning::WorseThanSubset {
             subset,
             subset_error,

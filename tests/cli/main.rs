@@ -216,6 +216,25 @@ pub(crate) fn diagnose(dir: &Path) -> (String, serde_json::Value) {
     diagnose_to(dir, &dir.join("out"))
 }
 
+/// A synthetic campaign with `effects` on (seed 1) whose candidates are
+/// narrowed to `candidates` (a TOML list's items), diagnosed into
+/// `dir/out`: stdout, `diagnosis.json` and `report.html`.
+pub(crate) fn narrowed(
+    dir: &Path,
+    effects: &str,
+    candidates: &str,
+) -> (String, serde_json::Value, String) {
+    let campaign = synth_campaign(dir, "c", &["--effects", effects, "--seed", "1"]);
+    // synth's vehicle.toml ends in its [diagnose] table.
+    let vehicle = campaign.join("vehicle.toml");
+    let text = fs::read_to_string(&vehicle).unwrap();
+    fs::write(&vehicle, format!("{text}effects = [{candidates}]\n")).unwrap();
+    let out = dir.join("out");
+    let (stdout, d) = diagnose_to(&campaign, &out);
+    let page = fs::read_to_string(out.join("report.html")).unwrap();
+    (stdout, d, page)
+}
+
 /// Runs `diagnose campaign --out out`; returns stdout and diagnosis.json.
 pub(crate) fn diagnose_to(campaign: &Path, out: &Path) -> (String, serde_json::Value) {
     let o = run(&[

@@ -4,24 +4,6 @@
 
 use super::*;
 
-/// A synthetic campaign with `effects` on (seed 1) whose candidates are
-/// narrowed to `candidates` (a TOML list's items), diagnosed beside it:
-/// stdout, `diagnosis.json` and `report.html`.
-fn diagnosed(dir: &Path, effects: &str, candidates: &str) -> (String, serde_json::Value, String) {
-    let campaign = synth_campaign(dir, "c", &["--effects", effects, "--seed", "1"]);
-    // synth's vehicle.toml ends in its [diagnose] table.
-    let vehicle = campaign.join("vehicle.toml");
-    let text = fs::read_to_string(&vehicle).unwrap();
-    fs::write(&vehicle, format!("{text}effects = [{candidates}]\n")).unwrap();
-    let out = dir.join("out");
-    let (stdout, d) = diagnose_to(&campaign, &out);
-    (
-        stdout,
-        d,
-        fs::read_to_string(out.join("report.html")).unwrap(),
-    )
-}
-
 /// A ranking row of the page (`<tr>` of the ranking table up to `</tr>`).
 fn page_row<'a>(page: &'a str, effect: &str) -> &'a str {
     let at = page
@@ -37,7 +19,7 @@ fn page_row<'a>(page: &'a str, effect: &str) -> &'a str {
 #[test]
 fn a_reduction_within_noise_reads_the_same_on_terminal_and_page() {
     let dir = tempfile::tempdir().unwrap();
-    let (stdout, d, page) = diagnosed(
+    let (stdout, d, page) = narrowed(
         dir.path(),
         "none",
         "\"cornering_stiffness\", \"steering_compliance\"",
@@ -58,7 +40,7 @@ fn a_reduction_within_noise_reads_the_same_on_terminal_and_page() {
 #[test]
 fn a_part_within_noise_has_no_percentage_and_the_gap_parts_have_the_verdicts_after() {
     let dir = tempfile::tempdir().unwrap();
-    let (_, d, _) = diagnosed(dir.path(), "sensor_delay", "\"sensor_delay\"");
+    let (_, d, _) = narrowed(dir.path(), "sensor_delay", "\"sensor_delay\"");
     assert_eq!(verdict_of(&d), ["sensor_delay"]);
     let rows = d["shrinkage"].as_array().unwrap();
     let mut within = 0;
@@ -89,7 +71,7 @@ fn a_part_within_noise_has_no_percentage_and_the_gap_parts_have_the_verdicts_aft
 #[test]
 fn a_set_of_effects_is_listed_once_whatever_its_order() {
     let dir = tempfile::tempdir().unwrap();
-    let (stdout, d, _) = diagnosed(
+    let (stdout, d, _) = narrowed(
         dir.path(),
         "sensor_delay,yaw_inertia",
         "\"sensor_delay\", \"steer_path\"",

@@ -8,21 +8,6 @@
 
 use super::*;
 
-/// A synthetic campaign with `effects` on (seed 1) whose candidates are
-/// narrowed to `candidates` (a TOML list's items), diagnosed into
-/// `dir/out`: stdout, `diagnosis.json` and `report.html`.
-fn narrowed(dir: &Path, effects: &str, candidates: &str) -> (String, serde_json::Value, String) {
-    let campaign = synth_campaign(dir, "c", &["--effects", effects, "--seed", "1"]);
-    // synth's vehicle.toml ends in its [diagnose] table.
-    let vehicle = campaign.join("vehicle.toml");
-    let text = fs::read_to_string(&vehicle).unwrap();
-    fs::write(&vehicle, format!("{text}effects = [{candidates}]\n")).unwrap();
-    let out = dir.join("out");
-    let (stdout, d) = diagnose_to(&campaign, &out);
-    let page = fs::read_to_string(out.join("report.html")).unwrap();
-    (stdout, d, page)
-}
-
 /// The verdict's evidence of `kind`.
 fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {
     d["verdict"]["evidence"]

@@ -3,25 +3,13 @@
 //! delays: the rule, the look-alike and its reduction, the window.
 
 use super::evidence;
+use super::tests::fitted;
 use crate::diagnose::effects::{Bound, EffectKind};
 use crate::diagnose::report::{Evidence, ParameterValue, Parsimony};
 
 /// The steer path's lag on its physical limit, as the ranking gives it.
 fn lag_on_limit() -> ParameterValue {
-    ParameterValue {
-        name: "steer_path.lag".into(),
-        unit: "s",
-        value: 0.0,
-        std_error: f64::NAN,
-        at_bound: true,
-        bound: Some(Bound::Physical),
-        determined: false,
-        unseen: false,
-        held: None,
-        fold_std_error: None,
-        fold_noise_std_error: None,
-        fold_noise_dof: None,
-    }
+    fitted("steer_path.lag", "s", 0.0, Some(Bound::Physical))
 }
 
 fn chosen() -> Parsimony {

@@ -24,33 +24,30 @@ fn a_parameter_no_channel_responds_to_reads_as_held_not_as_undetermined() {
     );
 }
 
-#[test]
-fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
-    let w = RankWarning::FoldsFar {
+/// The roll damping's farthest fold 10.5 standard errors of white
+/// residuals from the all-run fit, the report's robust one `reported`.
+fn far_fold(reported: f64) -> RankWarning {
+    RankWarning::FoldsFar {
         parameter: "roll.damping".into(),
         value: 0.4095,
         std_error: 0.02,
-        reported_std_error: 0.05,
+        reported_std_error: reported,
         fold_value: 0.2,
         distance: 10.47,
         far: 2,
         folds: 5,
-    };
+    }
+}
+
+#[test]
+fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
+    let w = far_fold(0.05);
     assert_eq!(
         rank_warning(&w),
         "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 2.00e-2; 4.2 times the ± 5.00e-2 given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect"
     );
     // No robust standard error: only the one the rule reads, no NaN.
-    let w = RankWarning::FoldsFar {
-        parameter: "roll.damping".into(),
-        value: 0.4095,
-        std_error: 0.02,
-        reported_std_error: f64::NAN,
-        fold_value: 0.2,
-        distance: 10.47,
-        far: 2,
-        folds: 5,
-    };
+    let w = far_fold(f64::NAN);
     assert_eq!(
         rank_warning(&w),
         "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 2.00e-2): its held-out score measures a fit on fewer runs as much as the effect"

@@ -319,7 +319,13 @@ fn ranking_warnings_and_notes_are_worded_as_readers_match_them() {
     ));
 }
 
-fn fitted(name: &str, unit: &'static str, v: f64, bound: Option<Bound>) -> ParameterValue {
+/// A fitted value of no known standard error, on `bound` if any.
+pub(super) fn fitted(
+    name: &str,
+    unit: &'static str,
+    v: f64,
+    bound: Option<Bound>,
+) -> ParameterValue {
     ParameterValue {
         name: name.into(),
         unit,

@@ -124,6 +124,13 @@ fn missing_data_skips_outside_ci_and_fails_under_it() {
     );
 }
 
+/// Runs the binary with `args`, asserts it succeeds; its stdout.
+pub(crate) fn succeeds(args: &[&str]) -> String {
+    let o = run(args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
 pub(crate) fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }

@@ -74,18 +74,14 @@ fn design_refuses_absurd_limits_names_what_they_leave_out_and_never_prints_nan()
         ),
         "{e}"
     );
-    let o = run(&["design", d, "--max-ax", "0.1"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let text = succeeds(&["design", d, "--max-ax", "0.1"]);
     assert!(
         text.contains("  the limits leave out 6 of the family: braking in a turn at 80 km/h and "),
         "{text}"
     );
     let report = read_json(&Path::new(d).join("design/design.json"));
     assert_eq!(report["left_out_by_limits"].as_array().unwrap().len(), 6);
-    let o = run(&["design", d, "--ay-share", "0.0001"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let text = succeeds(&["design", d, "--ay-share", "0.0001"]);
     assert!(!text.contains("NaN"), "{text}");
     assert!(
         text.contains("|ay| ≤ 0.000815 m/s² (0.0100 % of the"),
@@ -96,9 +92,7 @@ fn design_refuses_absurd_limits_names_what_they_leave_out_and_never_prints_nan()
         "{text}"
     );
     // A negative expected separation is explained where it is printed.
-    let o = run(&["design", d]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let text = succeeds(&["design", d]);
     for line in text.lines().filter(|l| l.contains("expected to measure -")) {
         assert!(
             line.contains("(below 0: the noise of the start the replays take costs the reference more than its look-alike"),
@@ -119,14 +113,12 @@ fn design_does_not_recommend_a_test_for_a_pair_already_told_apart() {
     );
     let d = dir.path().join("d");
     diagnose_to(&c, &d);
-    let o = run(&[
+    let text = succeeds(&[
         "design",
         d.to_str().unwrap(),
         "--effects",
         "sensor_delay,relaxation_length",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout).into_owned();
     assert!(!text.contains("; recommended"), "{text}");
     assert!(
         text.contains("; not needed: the diagnosis already tells them apart"),

@@ -66,7 +66,7 @@ use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{confounded_with, in_set, search, Search};
+use crate::diagnose::verdict::search::{confounded_with, in_set, lookalikes_alone, search, Search};
 use crate::error::Error;
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -431,9 +431,7 @@ fn run(
     );
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {
-        if let Some(c) = confounded.first() {
-            e.confounded_with = c.effects[1..].to_vec();
-        }
+        e.confounded_with = lookalikes_alone(&singles, &confounded, found.start, &base);
         e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
     }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
@@ -514,6 +512,8 @@ mod told_apart_tests {
             let s = InSet {
                 effects,
                 reduction_percent: 50.0,
+                gap: 1.0,
+                window: crate::diagnose::verdict::rules::window(1.0, 1.0),
                 confounded,
             };
             (s, None)

@@ -85,8 +85,9 @@ pub fn page(
         p.paragraph(
             "warning",
             &format!(
-                "Confounded: {} explain the gap about equally. A test that shows one of \
-                 these signatures separates them:",
+                "Confounded: the runs do not tell {} apart (their held-out gaps lie \
+                 within the confounding window the verdict states). A test that shows one \
+                 of these signatures separates them:",
                 joined(&c.effects, " and ")
             ),
         );

@@ -256,7 +256,7 @@ fn a_sets_look_alike_is_fitted_in_the_set_and_its_own_truth_is_not_said_to_disag
     // The look-alike, fitted in the set, does as well: confounded, said
     // with its set's own figure, and ranked among the combinations.
     assert!(
-        verdict.contains("but steer_path explains it about as well in place of sensor_delay (steer_path+relaxation_length removes "),
+        verdict.contains("but steer_path in place of sensor_delay (the single the set was grown from): steer_path+relaxation_length removes "),
         "{verdict}"
     );
     let row = ranked_combination(&d, "steer_path+relaxation_length");

@@ -11,7 +11,9 @@ use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
     Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
 };
-use crate::diagnose::report::{words, BaseReport, ChannelChange, InSet, ParameterValue, Shrinkage};
+use crate::diagnose::report::{
+    words, BaseReport, ChannelChange, InSet, Lookalikes, ParameterValue, Shrinkage,
+};
 use crate::identify::grouping::GroupingReport;
 use crate::tyre::Tyre;
 use serde::ser::{SerializeMap, Serializer};
@@ -27,7 +29,8 @@ enum Details<'a> {
         partial: bool,
         warning_details: &'a [VerdictWarning],
         evidence: &'a [Evidence],
-        confounded_with: &'a [EffectKind],
+        confounded_with: Vec<EffectKind>,
+        lookalikes: Option<&'a Lookalikes>,
         in_set: &'a [InSet],
     },
     NoSignificantGap {
@@ -69,7 +72,12 @@ impl Serialize for Verdict {
                     partial: e.partial(),
                     warning_details: &e.warnings,
                     evidence: &e.evidence,
-                    confounded_with: &e.confounded_with,
+                    confounded_with: e
+                        .confounded_with
+                        .iter()
+                        .flat_map(|l| l.members.iter().map(|m| m.effect))
+                        .collect(),
+                    lookalikes: e.confounded_with.as_ref(),
                     in_set: &e.in_set,
                 },
             ),

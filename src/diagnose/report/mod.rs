@@ -8,6 +8,7 @@
 mod evidence;
 pub(crate) mod gap;
 mod json;
+mod lookalike;
 pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
@@ -27,8 +28,9 @@ use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence,
-    Explained, GapFinding, InSet, NoSignificantGap, NotIdentifiable, Note, OutsideLibrary,
-    Parsimony, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind, VerdictWarning,
+    Explained, GapFinding, InSet, Lookalike, Lookalikes, NoSignificantGap, NotIdentifiable, Note,
+    OutsideLibrary, Parsimony, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind,
+    VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{
@@ -126,7 +128,7 @@ pub struct Screened {
     pub global_search: GlobalSearch,
 }
 
-/// Effects that explain the gap about equally well (written with the
+/// Effects whose held-out gaps lie within one another's confounding window (written with the
 /// experiment that separates them, `separating_test`: each one's
 /// signature).
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -19,6 +19,7 @@ use crate::diagnose::model::channels::Channel;
 pub use crate::diagnose::report::evidence::{
     CalibrationSource, Evidence, Parsimony, CALIBRATION_AGREES,
 };
+pub use crate::diagnose::report::lookalike::{InSet, Lookalike, Lookalikes, Window};
 use crate::diagnose::report::parts::Part;
 pub use crate::diagnose::report::rank_warning::RankWarning;
 use crate::diagnose::report::values::{ParameterValue, Shrinkage, SteadyOffset};
@@ -130,27 +131,15 @@ pub struct Explained {
     pub warnings: Vec<VerdictWarning>,
     /// What the runs show beside the fit that bears on it.
     pub evidence: Vec<Evidence>,
-    /// Effects that explain the gap about as well as the verdict's first
-    /// (its look-alikes, the report's `confounded`): the verdict is one of
-    /// them until a test separates them. Empty: no look-alike.
-    pub confounded_with: Vec<EffectKind>,
+    /// Singles whose gap lies within the confounding window of the single
+    /// the search started from ([`Lookalikes`]; the report's
+    /// `confounded`): the verdict is one of them until a test separates
+    /// them. None: no look-alike.
+    pub confounded_with: Option<Lookalikes>,
     /// For a verdict of several effects, each look-alike fitted in the set
-    /// in place of its first ([`InSet`]): whether the set still explains
-    /// the gap about as well with it. Empty for a single effect.
+    /// in place of its first ([`InSet`]): whether the set's gap with it
+    /// still lies within the set's window. Empty for a single effect.
     pub in_set: Vec<InSet>,
-}
-
-/// A look-alike of a set's first effect fitted in the set in its place.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct InSet {
-    /// The set with the look-alike in place of the first effect.
-    pub effects: Vec<EffectKind>,
-    /// Its held-out reduction of the gap above noise, %.
-    pub reduction_percent: f64,
-    /// It leaves about the verdict's gap (the look-alike rule of
-    /// [`crate::diagnose::verdict::rules::lookalike`]): still confounded in
-    /// the set; false: the set tells them apart.
-    pub confounded: bool,
 }
 
 impl Explained {
@@ -589,7 +578,7 @@ mod tests {
             reduction_percent,
             warnings: Vec::new(),
             evidence: Vec::new(),
-            confounded_with: Vec::new(),
+            confounded_with: None,
             in_set: Vec::new(),
         };
         assert!(e(49.9).partial());

@@ -11,6 +11,7 @@
 mod axles;
 mod evidence;
 mod gap;
+mod lookalikes;
 mod parameters;
 mod warnings;
 pub use axles::{
@@ -18,13 +19,15 @@ pub use axles::{
 };
 pub use evidence::evidence;
 pub use gap::band_lines;
+pub use lookalikes::window;
+use lookalikes::{alone, in_set};
 pub use parameters::parameter;
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
-    ChannelChange, Explained, GapFinding, InSet, NotIdentifiable, Note, OutsideLibrary,
-    RankWarning, Refusal, Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
+    ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
+    Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -64,14 +67,9 @@ pub fn statement(v: &Verdict) -> String {
             } else {
                 head
             };
-            match (e.confounded_with.is_empty(), e.effects.first()) {
+            match (&e.confounded_with, e.effects.first()) {
                 (_, Some(first)) if !e.in_set.is_empty() => in_set(head, e, *first),
-                (false, Some(first)) => format!(
-                    "{head}; but {} explain{} it about as well in place of {} (confounded): the runs do not tell them apart",
-                    joined(&e.confounded_with, ", "),
-                    if e.confounded_with.len() == 1 { "s" } else { "" },
-                    first.name()
-                ),
+                (Some(l), Some(first)) => alone(head, l, *first),
                 _ => head,
             }
         }
@@ -82,48 +80,6 @@ pub fn statement(v: &Verdict) -> String {
         Verdict::NotIdentifiable(n) => not_identifiable(n),
         Verdict::OutsideLibrary(o) => outside(o),
     }
-}
-
-/// The verdict sentence `head` of a set `e` whose first effect `first`
-/// has look-alikes fitted in the set in its place ([`InSet`]): those that
-/// do about as well stay confounded, the others the set tells apart.
-fn in_set(head: String, e: &Explained, first: EffectKind) -> String {
-    let (alike, apart): (Vec<&InSet>, Vec<&InSet>) = e.in_set.iter().partition(|s| s.confounded);
-    let each = |v: &[&InSet]| {
-        v.iter()
-            .map(|s| {
-                format!(
-                    "{} removes {:.1} %",
-                    joined(&s.effects, "+"),
-                    s.reduction_percent
-                )
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let names = |v: &[&InSet]| {
-        let n: Vec<EffectKind> = v.iter().map(|s| s.effects[0]).collect();
-        (joined(&n, ", "), if n.len() == 1 { "s" } else { "" })
-    };
-    let mut out = head;
-    if !alike.is_empty() {
-        let (who, s) = names(&alike);
-        out += &format!(
-            "; but {who} explain{s} it about as well in place of {} ({}; confounded): the runs do not tell them apart",
-            first.name(),
-            each(&alike)
-        );
-    }
-    if !apart.is_empty() {
-        let (who, s) = names(&apart);
-        out += &format!(
-            "; {who} alone explain{s} about as much as {} alone, but in its place in the set {}, against {:.1} %: the set tells them apart",
-            first.name(),
-            each(&apart),
-            e.reduction_percent
-        );
-    }
-    out
 }
 
 fn not_identifiable(n: &NotIdentifiable) -> String {
@@ -348,16 +304,18 @@ pub fn rank_warning(w: &RankWarning) -> String {
             // The robust standard error the table gives, where there is one.
             let given = if reported_std_error.is_finite() && *reported_std_error > 0.0 {
                 format!(
-                    "; {:.1} times the ± {reported_std_error:.2e} given, robust to correlated residuals",
-                    (fold_value - v).abs() / reported_std_error
+                    "; {:.1} times the ± {} given, robust to correlated residuals",
+                    (fold_value - v).abs() / reported_std_error,
+                    self::std_error(*reported_std_error)
                 )
             } else {
                 String::new()
             };
             format!(
-                "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {std_error:.2e}{given}): its held-out score measures a fit on fewer runs as much as the effect",
+                "{far} of {folds} fold refits land far from the fit on all runs ({parameter} {} against {}: {distance:.1} times its standard error of white residuals, ± {}{given}): its held-out score measures a fit on fewer runs as much as the effect",
                 value(*fold_value),
                 value(*v),
+                self::std_error(*std_error),
             )
         }
         RankWarning::WorseThanSubset {
@@ -516,19 +474,32 @@ pub fn signatures(effects: &[EffectKind]) -> String {
 
 /// A fitted value: below 0.01 to four significant digits (a steering
 /// compliance of 8.9e-5 rad/kN printed as 0.0001 would hide what was
-/// fitted), else to four decimals.
+/// fitted), else to four decimals; in the notation [`std_error`] writes
+/// its standard error in (plain decimals from 1e-4, an exponent below).
 pub fn value(v: f64) -> String {
     if v != 0.0 && v.abs() < 0.01 {
-        format!("{v:.3e}")
+        crate::format::readable(v, 4)
     } else {
         format!("{v:.4}")
     }
+}
+
+/// A standard error (or a scatter said as one) as every sentence of the
+/// diagnosis writes it: three significant digits, in plain decimals from
+/// 1e-4 to below 1e6 and with an exponent beyond
+/// ([`crate::format::readable`]), the notation [`value`] writes a value
+/// in: `0.0496 ± 0.000224 s`, `± 0.00465` beside `± 0.0358`, never
+/// `2.24e-4` in one sentence and `0.0358` in the next.
+pub fn std_error(se: f64) -> String {
+    crate::format::readable(se, 3)
 }
 
 #[cfg(test)]
 mod band_tests;
 #[cfg(test)]
 mod evidence_tests;
+#[cfg(test)]
+mod lookalike_tests;
 #[cfg(test)]
 mod parameter_tests;
 #[cfg(test)]

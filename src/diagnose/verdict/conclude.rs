@@ -75,7 +75,7 @@ pub(crate) fn verdict(
                 warnings,
                 // Its look-alikes are the report's `confounded`, found
                 // after the verdict (`pipeline` fills them in).
-                confounded_with: Vec::new(),
+                confounded_with: None,
                 in_set: Vec::new(),
             })
         }

@@ -12,7 +12,7 @@
 //! is the project's own (the book's diagnosis chapter states it).
 
 use crate::diagnose::model::channels::gap_above;
-use crate::diagnose::report::{Refusal, Refused, VerdictKind};
+use crate::diagnose::report::{Refusal, Refused, VerdictKind, Window};
 
 /// Share of the held-out gap above noise an effect must remove to be
 /// accepted (and each further effect of what is left).
@@ -109,7 +109,15 @@ pub fn promising(reduction_percent: f64, delta_bic: f64) -> bool {
 /// [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n). A look-alike starts a
 /// search of its own and is reported as confounded.
 pub fn lookalike(reduction_percent: f64, gap: f64, best_gap: f64, jn: f64) -> bool {
-    reduction_percent >= 100.0 * ACCEPT && gap <= CONFOUNDED * best_gap + CONFOUNDED_NOISE * jn
+    reduction_percent >= 100.0 * ACCEPT && gap <= window(best_gap, jn).bound
+}
+
+/// The confounding window of a candidate whose held-out gap above noise
+/// is `gap` at noise level `jn`: [`lookalike`]'s bound,
+/// [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n, with its terms (the words
+/// say them, not "about as well").
+pub fn window(gap: f64, jn: f64) -> Window {
+    Window::of(gap, jn, (CONFOUNDED, CONFOUNDED_NOISE))
 }
 
 /// Whether a set found from a look-alike (gap above noise `other`)
@@ -232,7 +240,7 @@ fn inside_ranges(ranked: &[Candidate], usable: &[usize], jn: f64) -> Option<Vec<
     if !first.pressed {
         return None;
     }
-    let window = CONFOUNDED * gap_above(first.heldout, jn) + CONFOUNDED_NOISE * jn;
+    let window = window(gap_above(first.heldout, jn), jn).bound;
     let inside: Vec<usize> = usable
         .iter()
         .copied()

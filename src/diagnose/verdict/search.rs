@@ -33,7 +33,9 @@
 use crate::diagnose::effects::{joined, set_of, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
-use crate::diagnose::report::{Confounded, InSet, RankWarning, Ranked, Refused, Screened};
+use crate::diagnose::report::{
+    Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
+};
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -413,6 +415,45 @@ pub(crate) fn confounded_with(
     }]
 }
 
+/// The look-alikes alone the verdict is confounded with (the first group
+/// of `confounded`, less its first member, the verdict's own first
+/// effect), each with its reduction and gap above noise, and the window of
+/// the single the search started from (`start`, an index into `singles`)
+/// they lie in ([`rules::lookalike`]). None without a look-alike.
+pub(crate) fn lookalikes_alone(
+    singles: &[Scored],
+    confounded: &[Confounded],
+    start: Option<usize>,
+    base: &Baseline,
+) -> Option<Lookalikes> {
+    let (c, start) = (confounded.first()?, &singles[start?]);
+    let alone = |e: EffectKind| {
+        singles
+            .iter()
+            .find(|s| s.kinds[0] == e)
+            .map(|s| base.rank(s))
+    };
+    let members: Vec<Lookalike> = c.effects[1..]
+        .iter()
+        .filter_map(|&effect| {
+            let r = alone(effect)?;
+            Some(Lookalike {
+                effect,
+                reduction_percent: r.reduction_percent,
+                gap: gap_above(r.heldout_error_after, base.jn),
+            })
+        })
+        .collect();
+    let r = base.rank(start);
+    let gap = gap_above(r.heldout_error_after, base.jn);
+    (!members.is_empty()).then(|| Lookalikes {
+        start: start.kinds[0],
+        start_reduction_percent: r.reduction_percent,
+        window: rules::window(gap, base.jn),
+        members,
+    })
+}
+
 /// Each look-alike of the `chosen` set's first effect (`confounded`, as
 /// [`confounded_with`] gives them) fitted and cross-validated in the set
 /// in its place, where the set has more than one effect: the singles'
@@ -458,6 +499,8 @@ pub(crate) fn in_set(
             let row = InSet {
                 effects: kinds,
                 reduction_percent: r.reduction_percent,
+                gap,
+                window: rules::window(g_chosen, base.jn),
                 confounded: rules::lookalike(r.reduction_percent, gap, g_chosen, base.jn),
             };
             Some((row, new.then_some(r)))

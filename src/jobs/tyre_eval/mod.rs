@@ -41,6 +41,7 @@
 
 mod checks;
 mod friction;
+mod light_load;
 mod physical;
 mod pressure;
 mod ranges;
@@ -52,6 +53,7 @@ mod zero_slip;
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
+pub use light_load::{LightLoad, LoadFloor, LIGHT_LOAD_SHARE};
 pub use physical::PHYSICAL;
 pub use standstill::{AtRest, StandstillMz, STANDSTILL};
 pub use stiffness::{AgainstSlip, SignChange};
@@ -87,6 +89,9 @@ pub struct TyreEvalReport {
     pub clamped: usize,
     /// The ranges those points leave, each with its count and first point.
     pub ranges_left: Vec<ranges::RangeLeft>,
+    /// Points at a positive load below a Magic Formula file's floor (its
+    /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
+    pub light_load: Option<LightLoad>,
     /// Points at zero or negative load: the wheel off the road, no force
     /// (and the loaded radius `rl`, where written, the free radius).
     pub off_road: usize,
@@ -357,6 +362,7 @@ pub fn run(
     let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
+    let light_load = light_load::light_load(&tyre, fz, &file.lines);
     refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
     // Every model gives no force off the road: said for each, not only
@@ -394,6 +400,7 @@ pub fn run(
         mode,
         clamped,
         ranges_left,
+        light_load,
         off_road,
         zero_outputs,
         beyond_my_speed,
@@ -464,6 +471,7 @@ impl TyreEvalReport {
         out.extend(self.at_rest.iter().map(|a| a.line(self.count)));
         out.extend(self.standstill_mz.iter().map(StandstillMz::line));
         out.extend(self.ranges_left.iter().map(|r| r.line(self.count)));
+        out.extend(self.light_load.iter().map(|l| l.line(self.count)));
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

@@ -103,15 +103,13 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
                     &format!("{} {:.digits$}", v.name, v.value),
                     1,
                 ),
-                None if v.std_error.is_finite() => {
-                    // ± 5.1, not ± 5.1e0; ± 2.7e-4 where it is small.
-                    let se = if v.std_error >= 0.1 {
-                        format!("{:.1}", v.std_error)
-                    } else {
-                        format!("{:.1e}", v.std_error)
-                    };
-                    format!("{} {:.digits$} ± {se} {}", v.name, v.value, v.unit)
-                }
+                None if v.std_error.is_finite() => format!(
+                    "{} {:.digits$} ± {} {}",
+                    v.name,
+                    v.value,
+                    super::std_error(v.std_error),
+                    v.unit
+                ),
                 None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
             }
         })

@@ -5,7 +5,7 @@
 //! parameter idle where a simpler candidate does about as well (held-out
 //! errors J dimensionless, reductions in percent).
 
-use super::{no_tyre_list, parameter};
+use super::{no_tyre_list, parameter, std_error};
 use crate::diagnose::effects::joined;
 use crate::diagnose::report::outcome::{CalibrationSource, Evidence, Parsimony};
 
@@ -21,14 +21,16 @@ pub fn evidence(e: &Evidence) -> String {
             measured_std_error,
             agrees,
         } => format!(
-            "{}: the {} offset fitted, {fitted:.4} ± {fitted_std_error:.1e} {unit}, {} the {}' {measured:.4} ± {measured_std_error:.1e} {unit}",
+            "{}: the {} offset fitted, {fitted:.4} ± {} {unit}, {} the {}' {measured:.4} ± {} {unit}",
             if *agrees { "confirmed" } else { "not confirmed" },
             channel.name(),
+            std_error(*fitted_std_error),
             if *agrees { "agrees with" } else { "differs from" },
             match measured_on {
                 CalibrationSource::Standstills => "standstills",
                 CalibrationSource::Straights => "straights",
             },
+            std_error(*measured_std_error),
             unit = channel.unit(),
         ),
         Evidence::AxlesRestored { no_tyre } => format!(

@@ -44,13 +44,13 @@ fn a_fold_far_from_the_full_fit_names_the_parameter_and_how_far() {
     let w = far_fold(0.05);
     assert_eq!(
         rank_warning(&w),
-        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 2.00e-2; 4.2 times the ± 5.00e-2 given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect"
+        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 0.0200; 4.2 times the ± 0.0500 given, robust to correlated residuals): its held-out score measures a fit on fewer runs as much as the effect"
     );
     // No robust standard error: only the one the rule reads, no NaN.
     let w = far_fold(f64::NAN);
     assert_eq!(
         rank_warning(&w),
-        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 2.00e-2): its held-out score measures a fit on fewer runs as much as the effect"
+        "2 of 5 fold refits land far from the fit on all runs (roll.damping 0.2000 against 0.4095: 10.5 times its standard error of white residuals, ± 0.0200): its held-out score measures a fit on fewer runs as much as the effect"
     );
 }
 
@@ -75,7 +75,7 @@ fn a_parameter_held_because_the_runs_do_not_determine_it_says_where_and_why() {
     // A dimensionless parameter carries no unit, not a stray `-`.
     let scale = crate::diagnose::effects::EffectKind::YawInertia.parameters()[0];
     let fitted = ParameterValue::of("yaw_inertia", &scale, 1.3038, 3.27e-3);
-    assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 3.27e-3");
+    assert_eq!(parameter(&fitted), "yaw_inertia.scale = 1.3038 ± 0.00327");
     // Not `1.03e0`: a standard error of 0.01 or more in plain digits.
     let frequency = crate::diagnose::effects::RollDynamics::PARAMETERS[0];
     let roll = ParameterValue::of("roll", &frequency, 3.0, 1.03);
@@ -96,7 +96,7 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
     assert!(flagged.understated());
     assert_eq!(
         parameter(&flagged),
-        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 8× it: the runs disagree beyond their noise, which the standard error does not cover)"
+        "roll_steer.front = -0.4112 ± 0.00465 rad/rad (the fold refits scatter ± 0.0358, 8× it: the runs disagree beyond their noise, which the standard error does not cover)"
     );
     // Folds within three standard errors, or too few to judge, say nothing.
     let close = v
@@ -105,7 +105,7 @@ fn a_standard_error_the_fold_jackknife_exceeds_threefold_is_said_to_understate()
     assert!(!close.understated());
     assert_eq!(
         parameter(&close),
-        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
+        "roll_steer.front = -0.4112 ± 0.00465 rad/rad"
     );
     assert_eq!(
         v.clone()
@@ -134,7 +134,7 @@ fn folds_the_runs_noise_alone_moves_far_are_not_said_to_understate() {
     assert!(!heavy.understated());
     assert_eq!(
         parameter(&heavy),
-        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad"
+        "roll_steer.front = -0.4112 ± 0.00465 rad/rad"
     );
     // Beyond three times that yardstick it is said, against the yardstick.
     let far = v.clone().with_folds(&folds, Some((2.0, 4.0)));
@@ -152,7 +152,7 @@ fn folds_the_runs_noise_alone_moves_far_are_not_said_to_understate() {
     );
     assert_eq!(
         parameter(&far),
-        "roll_steer.front = -0.4112 ± 4.65e-3 rad/rad (the fold refits scatter ± 0.0358, 4× the ± 9.30e-3 the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)"
+        "roll_steer.front = -0.4112 ± 0.00465 rad/rad (the fold refits scatter ± 0.0358, 4× the ± 0.00930 the runs' noise alone moves them by, leaving out a run that carries much of what determines it: the runs disagree beyond their noise, which the standard error does not cover)"
     );
 }
 

@@ -4,7 +4,7 @@
 //! compliance in rad/kN with rad/N beside it); a dimensionless parameter
 //! (unit `-`) is written without one.
 
-use super::value;
+use super::{std_error, value};
 use crate::diagnose::effects::Bound;
 use crate::diagnose::report::ParameterValue;
 
@@ -26,14 +26,10 @@ pub fn parameter(p: &ParameterValue) -> String {
         "-" => String::new(),
         u => format!(" {u}"),
     };
-    // A standard error in the parameter's own unit, three digits.
+    // A standard error in the parameter's own unit ([`std_error`]).
     let se = |x: f64| {
         let u = if p.unit == "-" { "" } else { p.unit };
-        format!(
-            "{}{}{u}",
-            crate::format::readable(x, 3),
-            if u.is_empty() { "" } else { " " }
-        )
+        format!("{}{}{u}", std_error(x), if u.is_empty() { "" } else { " " })
     };
     let v = value(p.value);
     if p.unseen {
@@ -99,15 +95,4 @@ pub fn parameter(p: &ParameterValue) -> String {
         Bound::Physical => "at its physical limit: a share cannot exceed 1",
     };
     format!("{} = {v}{unit} ({why})", p.name)
-}
-
-/// A standard error beside its value: exponent form below 0.01 (as
-/// [`value`] writes small values), three digits above (`1.03`, not
-/// `1.03e0`).
-fn std_error(se: f64) -> String {
-    if se != 0.0 && se.abs() < 0.01 {
-        format!("{se:.2e}")
-    } else {
-        crate::format::readable(se, 3)
-    }
 }

@@ -1,0 +1,112 @@
+//! A verdict's look-alikes in words: each one's share and held-out gap
+//! above noise beside those of what it stands in for, and the confounding
+//! window they lie in with its terms (`1.5 × G + 0.25 × J_n = bound`), for
+//! a single verdict ([`Lookalikes`]) and for a set's look-alikes fitted in
+//! its place ([`InSet`]). Not "about as well": a look-alike that removes
+//! 50 % against the verdict's 74 % can lie in the window. Gaps and held-out
+//! errors are dimensionless, reductions in percent.
+
+use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::report::outcome::{Explained, InSet, Lookalikes, Window};
+
+/// A confounding window with its terms: `1.5 × 0.310 + 0.25 × 0.941 =
+/// 0.700` (gaps above noise, dimensionless), so that a look-alike that
+/// removes a visibly smaller share reads as what the rule holds it to.
+pub fn window(w: &Window) -> String {
+    format!(
+        "{} × {:.3} + {} × {:.3} = {:.3}",
+        crate::format::exact(w.gap_factor),
+        w.gap,
+        crate::format::exact(w.noise_factor),
+        w.noise_level,
+        w.bound
+    )
+}
+
+/// The verdict sentence `head` of an effect `first` with look-alikes
+/// alone ([`Lookalikes`]): each one's share and gap beside the share and
+/// gap of the single the window is of, and the window, not "about as
+/// well" (a look-alike may remove 50 % against the verdict's 74 % and
+/// still lie in it).
+pub(super) fn alone(head: String, l: &Lookalikes, first: EffectKind) -> String {
+    let each: Vec<String> = l
+        .members
+        .iter()
+        .map(|m| {
+            format!(
+                "{} removes {:.1} % (gap above noise {:.3})",
+                m.effect.name(),
+                m.reduction_percent,
+                m.gap
+            )
+        })
+        .collect();
+    let it = if l.members.len() == 1 { "it" } else { "them" };
+    format!(
+        "{head}; but {} alone, against {}'s {:.1} % ({:.3}): within the confounding window of {}'s gap, {}, so the runs do not tell {it} from {} (confounded)",
+        each.join(", "),
+        l.start.name(),
+        l.start_reduction_percent,
+        l.window.gap,
+        l.start.name(),
+        window(&l.window),
+        first.name()
+    )
+}
+
+/// The verdict sentence `head` of a set `e` whose first effect `first`
+/// (the single the set was grown from) has look-alikes fitted in the set
+/// in its place ([`InSet`]): those whose gap lies in the set's window stay
+/// confounded, the others the set tells apart; the window is said.
+pub(super) fn in_set(head: String, e: &Explained, first: EffectKind) -> String {
+    let (alike, apart): (Vec<&InSet>, Vec<&InSet>) = e.in_set.iter().partition(|s| s.confounded);
+    let each = |v: &[&InSet]| {
+        v.iter()
+            .map(|s| {
+                format!(
+                    "{} removes {:.1} % (gap above noise {:.3})",
+                    joined(&s.effects, "+"),
+                    s.reduction_percent,
+                    s.gap
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let names = |v: &[&InSet]| {
+        let n: Vec<EffectKind> = v.iter().map(|s| s.effects[0]).collect();
+        (joined(&n, ", "), n.len() == 1)
+    };
+    let set = joined(&e.effects, "+");
+    let mut out = head;
+    if let Some(w) = alike.first().map(|s| &s.window) {
+        let (who, one) = names(&alike);
+        out += &format!(
+            "; but {who} in place of {} (the single the set was grown from): {}, against {set}'s {:.1} % ({:.3}): within the set's confounding window, {}, so the runs do not tell {} apart (confounded)",
+            first.name(),
+            each(&alike),
+            e.reduction_percent,
+            w.gap,
+            window(w),
+            if one { "the two" } else { "them" }
+        );
+    }
+    if let Some(w) = apart.first().map(|s| &s.window) {
+        let (who, one) = names(&apart);
+        // The start said once: in the first clause that names it.
+        let grown = match alike.is_empty() {
+            true => " (the single the set was grown from)",
+            false => "",
+        };
+        out += &format!(
+            "; {who} alone {} in the confounding window of {} alone{grown}, but in its place in the set {}, against {set}'s {:.1} % ({:.3}): outside the set's confounding window, {}, so the set tells them apart",
+            if one { "lies" } else { "lie" },
+            first.name(),
+            each(&apart),
+            e.reduction_percent,
+            w.gap,
+            window(w)
+        );
+    }
+    out
+}

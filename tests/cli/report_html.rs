@@ -163,8 +163,9 @@ fn the_page_says_why_the_verdict_is_its_row_and_what_it_fitted() {
     // effect with the signature that would separate them.
     assert!(!d["confounded"].as_array().unwrap().is_empty());
     assert!(page.contains(
-        "<p class=\"warning\">Confounded: sensor_delay and steer_path explain the gap about \
-         equally. A test that shows one of these signatures separates them:</p>\n<ul class=\"lines\">\n<li>sensor_delay: "
+        "<p class=\"warning\">Confounded: the runs do not tell sensor_delay and steer_path apart \
+         (their held-out gaps lie within the confounding window the verdict states). A test that \
+         shows one of these signatures separates them:</p>\n<ul class=\"lines\">\n<li>sensor_delay: "
     ));
     // The ranking marks the verdict's row, explains the order, and says
     // why a row scoring better than the verdict is not it.

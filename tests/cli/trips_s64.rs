@@ -103,6 +103,15 @@ fn a_sets_look_alike_names_the_single_the_set_was_grown_from_and_the_sets_window
     assert!(!verdict.contains("about as well"), "{verdict}");
     let rows = d["verdict"]["in_set"].as_array().unwrap();
     assert!(!rows.is_empty(), "{}", d["verdict"]);
+    // Whether the set keeps the look-alike confounded or tells it apart,
+    // the single it was grown from is named as such, once.
+    let grown = "(the single the set was grown from)";
+    assert_eq!(verdict.matches(grown).count(), 1, "{verdict}");
+    let before = &verdict[..verdict.find(grown).unwrap()];
+    assert!(
+        before.ends_with(&format!("{first} ")) || before.ends_with(&format!("{first} alone ")),
+        "{verdict}"
+    );
     for row in rows {
         let f = |k: &str| row[k].as_f64().unwrap_or_else(|| panic!("{row}"));
         let w = &row["window"];

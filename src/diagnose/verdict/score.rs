@@ -14,6 +14,7 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::fold_noise::{fold_noise_factors, held_rows};
 use crate::diagnose::fit::global::global_best;
+use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
 use crate::diagnose::fit::{
@@ -386,9 +387,9 @@ impl<'a> Context<'a> {
     }
 
     /// The start of a candidate's polish and how its global stage searched:
-    /// the lowest cost of `starts` and of the global stage over the effect
-    /// parameters from the best of them (from the effect off without them;
-    /// the axle characteristics held; [`global_best`]: a grid along one or
+    /// the lowest cost of `starts` and of the global stage from the best of
+    /// them (from the effect off without them) over the parameters
+    /// [`searched_from`] leaves free ([`global_best`]: a grid along one or
     /// two parameters, a swarm with one particle at that point along more).
     /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
@@ -402,14 +403,14 @@ impl<'a> Context<'a> {
         starts: &[Vec<f64>],
         pso: &Pso,
     ) -> (Vec<f64>, GlobalSearch) {
-        let held = s.layout.axle_count();
+        let held = searched_from(&s.layout);
         let mut tried: Vec<(f64, Vec<f64>)> = starts
             .iter()
             .map(|p| (problem.cost(p), p.clone()))
             .collect();
         // A single's global stage starts from the effect off; a
-        // combination's is a fresh search from its best start, so that it is
-        // not bound to the basin its members' fits were in.
+        // combination's from its best start, along the added effect's own
+        // parameters (the current set's stay at that start's values).
         let from = tried
             .iter()
             .min_by(|a, b| a.0.total_cmp(&b.0))
@@ -518,4 +519,21 @@ pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
         ..Pso::default()
     };
     (runs, folds, pso)
+}
+
+/// Where the global stage of a fit of `layout` starts searching: after the
+/// axle characteristics for a single effect (its own parameters and roll
+/// dynamics are searched); for a combination, at the added (last) effect,
+/// so that only its parameters and the roll dynamics after them are
+/// searched. A combination's starts already carry the current set at its
+/// own fit and the added effect at its single fit, with the current set's
+/// effects off beside it (`search::extensions`): what is left unknown is
+/// where the added effect sits beside the set, a grid along its one or two
+/// parameters where a swarm over every effect parameter of the set made
+/// about 45 replays for the same optimum (see the book's benchmarks).
+pub(crate) fn searched_from(layout: &Layout) -> usize {
+    match layout.kinds.len() {
+        0 | 1 => layout.axle_count(),
+        n => layout.effect(n - 1).start,
+    }
 }

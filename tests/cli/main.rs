@@ -285,6 +285,7 @@ mod real_logs;
 mod report_html;
 mod rig_layouts;
 mod scenarios;
+mod set_search;
 mod shards;
 mod sweeps;
 mod toml_errors;

@@ -537,3 +537,22 @@ pub(crate) fn searched_from(layout: &Layout) -> usize {
         n => layout.effect(n - 1).start,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use EffectKind::{RelaxationLength, SensorDelay, SteerPath};
+
+    #[test]
+    fn a_single_searches_after_the_axles_and_a_set_only_the_effect_it_adds() {
+        let axles = Layout::new(&[SteerPath], true).axle_count();
+        assert_eq!(searched_from(&Layout::new(&[SteerPath], true)), axles);
+        assert_eq!(searched_from(&Layout::new(&[SteerPath], false)), 0);
+        // The steer path's delay and lag come first; the sensor delay after.
+        let set = Layout::new(&[SteerPath, SensorDelay], true);
+        assert_eq!(searched_from(&set), axles + 2);
+        assert_eq!(set.effect(1), axles + 2..axles + 3);
+        let set = Layout::new(&[SensorDelay, SteerPath, RelaxationLength], false);
+        assert_eq!(searched_from(&set), 3);
+    }
+}

@@ -530,7 +530,7 @@ pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
 /// effects off beside it (`search::extensions`): what is left unknown is
 /// where the added effect sits beside the set, a grid along its one or two
 /// parameters where a swarm over every effect parameter of the set made
-/// about 45 replays for the same optimum (see the book's benchmarks).
+/// about 45 replays for the same optimum (the book's measured history).
 pub(crate) fn searched_from(layout: &Layout) -> usize {
     match layout.kinds.len() {
         0 | 1 => layout.axle_count(),

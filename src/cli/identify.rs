@@ -106,15 +106,22 @@ pub fn identify(a: IdentifyArgs) -> Result<()> {
     Ok(())
 }
 
-/// A refused held value said as the user gave it: the library's error
-/// names the parameter (as Python's `key` does), the command line the
-/// option, `--hold NAME=VALUE`, too.
+/// A refused option said as the user gave it: the library's error names
+/// the parameter or option as Python's keyword does (`a1`, `bin_deg`), the
+/// command line the flag too (`--hold a1=1e308`, `--bin-deg -1`). A value
+/// is written in its shortest form (`1e308`, not 309 digits).
 fn named_hold(e: handling::error::Error, hold: &[(String, f64)]) -> anyhow::Error {
-    match &e {
-        handling::error::Error::Param(p) => match hold.iter().find(|(name, _)| *name == p.key) {
-            Some((name, v)) => anyhow::anyhow!("--hold {name}={v}: {e}"),
-            None => e.into(),
-        },
-        _ => e.into(),
+    let handling::error::Error::Param(p) = &e else {
+        return e.into();
+    };
+    if let Some((name, v)) = hold.iter().find(|(name, _)| *name == p.key) {
+        return anyhow::anyhow!("--hold {name}={v:?}: {e}");
+    }
+    match OPTIONS.iter().find(|k| **k == p.key) {
+        Some(k) => anyhow::anyhow!("--{}: {e}", k.replace('_', "-")),
+        None => e.into(),
     }
 }
+
+/// The options `Options::validate` names by their Python keyword.
+const OPTIONS: [&str; 5] = ["bin_deg", "bin_kappa", "load", "pressure", "camber"];

@@ -202,9 +202,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         );
     }
     let w = effect_width(d);
-    if let Some(c) = words::within_noise_caveat(&d.gap.findings) {
-        out.push(format!("  ({c})"));
-    }
+    out.push(format!("  ({})", words::bic_caveat(&d.gap.findings)));
     out.push(format!(
         "  {:<w$} {:>8} {:>11} {:>10} {:>12}  parameters",
         "effect", "J after", "held out", "in sample", "ΔBIC"

@@ -174,9 +174,8 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
             d.gap.heldout_error, d.gap.noise_level
         ),
     );
-    if let Some(c) = words::within_noise_caveat(&d.gap.findings) {
-        p.paragraph("", &format!("{}{}.", c[..1].to_uppercase(), &c[1..]));
-    }
+    let c = words::bic_caveat(&d.gap.findings);
+    p.paragraph("", &format!("{}{}.", c[..1].to_uppercase(), &c[1..]));
     p.paragraph(
         "",
         "Single effects come first, lowest held-out J first, then combinations. The verdict \

@@ -405,16 +405,19 @@ fn gap_within_noise(findings: &[GapFinding]) -> bool {
     })
 }
 
-/// Under the candidates of a campaign whose gap is within noise (`None`
-/// otherwise): their ΔBIC and standard errors count every sample as an
-/// independent one, but a replay's residuals are correlated over many
-/// samples (a model's error is smooth), so on thousands of samples both
-/// read as decisive where the held-out columns, which are judged against
-/// the noise, show nothing.
-pub fn within_noise_caveat(findings: &[GapFinding]) -> Option<&'static str> {
-    gap_within_noise(findings).then_some(
-        "the gap is within noise: the ΔBIC and ± below count every sample as independent, and a replay's residuals are correlated over many samples, so on a gap within noise they look decisive where nothing is found; the held-out columns are the evidence",
-    )
+/// Under the candidates' table: their ΔBIC (and, on a gap within noise,
+/// their standard errors) count every sample as an independent one, but a
+/// replay's residuals are correlated over many samples (a model's error is
+/// smooth), so on thousands of samples a ΔBIC difference of hundreds
+/// between two candidates reads as decisive where the held-out columns,
+/// judged against the noise, do not tell them apart. On a gap within noise
+/// the standard errors mislead the same way.
+pub fn bic_caveat(findings: &[GapFinding]) -> &'static str {
+    if gap_within_noise(findings) {
+        "the gap is within noise: the ΔBIC and ± below count every sample as independent, and a replay's residuals are correlated over many samples, so on a gap within noise they look decisive where nothing is found; the held-out columns are the evidence"
+    } else {
+        "the ΔBIC below counts every sample as independent, and a replay's residuals are correlated over many samples, so a ΔBIC difference of hundreds between two candidates is no evidence between them; the held-out columns, against the noise, decide which the runs tell apart"
+    }
 }
 
 /// A finding on where the gap lies.

@@ -112,7 +112,7 @@ impl Options {
             ParamError::finite("camber", c)?;
         }
         for (name, v) in &self.hold {
-            ParamError::finite("hold", *v)?;
+            ParamError::finite(name, *v)?;
             ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;
         }
         Ok(())

@@ -115,7 +115,7 @@ fn named_hold(e: handling::error::Error, hold: &[(String, f64)]) -> anyhow::Erro
         return e.into();
     };
     if let Some((name, v)) = hold.iter().find(|(name, _)| *name == p.key) {
-        return anyhow::anyhow!("--hold {name}={v:?}: {e}");
+        return anyhow::anyhow!("--hold {name}={}: {e}", handling::error::Num(*v));
     }
     match OPTIONS.iter().find(|k| **k == p.key) {
         Some(k) => anyhow::anyhow!("--{}: {e}", k.replace('_', "-")),

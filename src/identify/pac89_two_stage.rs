@@ -305,7 +305,12 @@ fn polish(a: [f64; 14], conditions: &[Condition], with_camber: bool) -> [f64; 14
         .filter(|(_, f)| **f)
         .map(|(v, _)| *v)
         .collect();
-    let l = levenberg_marquardt(&problem, &p0);
+    // Within the direct fit's box unless the data take a value past it, as
+    // the direct fit's polish: stage 2's least squares are unbounded and
+    // start the polish where `a0`, `a1`, `a2` trade off freely.
+    let all_bounds = super::Channel::LateralForce.bounds(&start);
+    let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
+    let l = super::within_box(&problem, &p0, levenberg_marquardt(&problem, &p0), &bounds);
     let polished_tyre = if l.cost.is_finite() && l.cost <= problem.cost(&p0) {
         problem.tyre(&l.params).canonical()
     } else {

@@ -278,6 +278,7 @@ mod messages;
 mod mf_combined_fy;
 mod mf_identify;
 mod mf_vertical;
+mod pac89_bounds;
 mod priors;
 mod programmes;
 mod proving_ground;

@@ -7,11 +7,19 @@
 //! limit checks on (MFeval's `useLimitsCheck`, `tyre-eval`'s default mode
 //! 121) clips it at 1 and reproduces the fit; without them (mode 221) the
 //! force departs from the data. The excess is said, not hidden.
+//!
+//! PAC89 (Adams numbering, `E = a6·Fz + a7`, Fz in kN) has no limit check:
+//! above 1 its lateral force falls past the peak and changes sign at a
+//! slip angle where `φ = B·x·(1 − E) + E·atan(B·x)` returns to zero — the
+//! Hoosier file's fit reaches E 1.24 and reverses near 40°, outside the
+//! data's 9.7° but inside a simulation's reach. The angle is said.
 
 use super::ranges::Span;
 use crate::format::readable;
 use crate::identify::mf_staged::Stage;
 use crate::tyre::mf::{MagicFormula, TyreSide};
+use crate::tyre::pac89::magic_formula;
+use crate::tyre::Pac89;
 use serde::Serialize;
 
 /// Which of the Magic Formula's curvature factors: the file's names.
@@ -150,4 +158,161 @@ pub(crate) fn curvature_excess(
         );
     }
     out
+}
+
+/// Where a fitted PAC89's lateral curvature `E` is largest above 1 over
+/// the fitted loads, and the slip angle beyond which its lateral force
+/// changes sign there.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Pac89Reversal {
+    /// The largest `E` over the fitted loads.
+    pub largest: f64,
+    /// The load there (N).
+    pub fz: f64,
+    /// The slip angle beyond which the lateral force at that load and zero
+    /// camber has the opposite sign to its slope (rad).
+    pub reverses_beyond: f64,
+    /// The largest |slip angle| of the data (rad).
+    pub data_alpha: f64,
+}
+
+impl Pac89Reversal {
+    /// The warning, one line.
+    pub fn line(&self) -> String {
+        format!(
+            "curvature E = a6·Fz + a7 reaches {} above 1 over the fitted loads (at fz {} N): PAC89 has no limit check, so past its peak the lateral force falls through zero and changes sign beyond |alpha| = {}° at that load (the data reach {}°); do not drive the file past its data's slip angles, or hold E at 1 (`--hold a6=0 --hold a7=1`)",
+            readable(self.largest, 3),
+            readable(self.fz, 4),
+            readable(self.reverses_beyond.to_degrees(), 3),
+            readable(self.data_alpha.to_degrees(), 3),
+        )
+    }
+}
+
+/// The PAC89 reversal of `t` over `spans`' loads (none where `E ≤ 1`
+/// throughout, without a load span, or where the force keeps its sign to
+/// 90°).
+pub(crate) fn pac89_reversal(t: &Pac89, spans: &[Span]) -> Option<Pac89Reversal> {
+    let fz = span(spans, "fz")?;
+    // E is linear in the load: largest at an end.
+    let (e, at) = [fz.lo, fz.hi]
+        .into_iter()
+        .map(|f| (t.a[6] * f / 1000.0 + t.a[7], f))
+        .fold(
+            (f64::NEG_INFINITY, 0.0),
+            |b, x| if x.0 > b.0 { x } else { b },
+        );
+    if e <= 1.0 + 1e-9 {
+        return None;
+    }
+    let c = t.lateral_curve(at / 1000.0, 0.0);
+    let force = |x_deg: f64| magic_formula(c.b, c.c, c.d, c.e, x_deg + c.sh) + c.sv;
+    let reverses = [1.0, -1.0]
+        .into_iter()
+        .filter_map(|side| sign_change(&force, side))
+        .fold(f64::INFINITY, f64::min);
+    let data_alpha = span(spans, "alpha").map_or(0.0, |s| s.lo.abs().max(s.hi.abs()));
+    reverses.is_finite().then(|| Pac89Reversal {
+        largest: e,
+        fz: at,
+        reverses_beyond: reverses.to_radians(),
+        data_alpha,
+    })
+}
+
+/// The smallest |x| (degrees, on the side `side` of zero, within 90°)
+/// past which `force` has the opposite sign to its sign at 1° on that
+/// side, by a scan in quarter degrees and bisection.
+fn sign_change(force: &dyn Fn(f64) -> f64, side: f64) -> Option<f64> {
+    let sign = force(side).signum();
+    let (mut lo, mut hi) = (1.0, 1.0);
+    while force(side * hi).signum() == sign {
+        lo = hi;
+        hi += 0.25;
+        if hi > 90.0 {
+            return None;
+        }
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if force(side * mid).signum() == sign {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spans(fz: (f64, f64), alpha: f64) -> Vec<Span> {
+        vec![
+            Span {
+                name: "fz",
+                unit: "N",
+                lo: fz.0,
+                hi: fz.1,
+            },
+            Span {
+                name: "alpha",
+                unit: "rad",
+                lo: -alpha,
+                hi: alpha,
+            },
+        ]
+    }
+
+    #[test]
+    fn a_pac89_whose_e_exceeds_one_reverses_where_its_force_changes_sign() {
+        let mut t = Pac89::adams_example();
+        t.a[6] = 0.08;
+        t.a[7] = 1.0;
+        let r = pac89_reversal(&t, &spans((400.0, 3000.0), 0.17)).unwrap();
+        assert!((r.largest - 1.24).abs() < 1e-12, "{}", r.largest);
+        assert_eq!(r.fz, 3000.0);
+        // The force at zero camber changes sign at the angle said:
+        // positive just inside it, negative past (the Adams example's
+        // shifts are positive, so the positive side reverses first).
+        let c = t.lateral_curve(3.0, 0.0);
+        let f = |alpha: f64| magic(&c, alpha.to_degrees());
+        assert!(f(r.reverses_beyond * 0.999) > 0.0);
+        assert!(f(r.reverses_beyond * 1.001) < 0.0);
+        // Near the root of φ = B·x·(1 − E) + E·atan(B·x), which the
+        // shifts move by little.
+        let u = {
+            let phi = |u: f64| u * (1.0 - r.largest) + r.largest * u.atan();
+            let (mut lo, mut hi) = (1.0, 100.0);
+            for _ in 0..100 {
+                let m = 0.5 * (lo + hi);
+                if phi(m) > 0.0 {
+                    lo = m
+                } else {
+                    hi = m
+                }
+            }
+            lo
+        };
+        let x0 = u / c.b;
+        assert!(
+            (r.reverses_beyond.to_degrees() - x0).abs() < 0.05 * x0,
+            "{} vs {x0}",
+            r.reverses_beyond.to_degrees()
+        );
+        assert!(r.line().contains("beyond |alpha|"), "{}", r.line());
+    }
+
+    #[test]
+    fn a_pac89_whose_e_stays_at_or_below_one_is_not_flagged() {
+        let mut t = Pac89::adams_example();
+        t.a[6] = -0.02;
+        t.a[7] = 1.0;
+        assert_eq!(pac89_reversal(&t, &spans((400.0, 3000.0), 0.17)), None);
+    }
+
+    fn magic(c: &crate::tyre::pac89::CurveCoefficients, x: f64) -> f64 {
+        magic_formula(c.b, c.c, c.d, c.e, x + c.sh) + c.sv
+    }
 }

@@ -13,7 +13,7 @@ use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Varia
 use crate::io::rig::read_rig;
 mod choices;
 mod curvature;
-pub use curvature::{Curvature, CurvatureExcess};
+pub use curvature::{Curvature, CurvatureExcess, Pac89Reversal};
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;
@@ -205,6 +205,10 @@ pub struct SwarmReport {
     /// out and the pneumatic trail.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub linear_window: Option<LinearWindow>,
+    /// PAC89: its lateral curvature `E` above 1 over the fitted loads and
+    /// where its lateral force changes sign.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pac89_reversal: Option<Pac89Reversal>,
     /// The aligning moment's fit.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub aligning: Option<Fit>,
@@ -457,6 +461,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         file: String::new(),
         fit,
         two_stage: None,
+        pac89_reversal: None,
         written: None,
         linear_window: window,
         aligning: None,
@@ -530,6 +535,12 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         &r.tyre,
     ));
     finite_fits(&r).map_err(on_data(o, None))?;
+    r.pac89_reversal = match (&r.tyre, r.fit.channel) {
+        (Tyre::Pac89(p), Channel::LateralForce) => {
+            curvature::pac89_reversal(p, &ranges::fitted_spans(&r))
+        }
+        _ => None,
+    };
     r.notes = notes::notes(&r)
         .into_iter()
         .chain(r.warning_notes())

@@ -143,6 +143,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         .flatten()
         .flat_map(|f| later_fit_notes(r, f))
         .chain(unfitted_notes(r))
+        .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))
         .collect()
 }
 

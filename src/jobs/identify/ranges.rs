@@ -158,6 +158,23 @@ pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
     .collect()
 }
 
+/// The spans of every condition a swarm fit ran on (lateral and
+/// longitudinal), widened to the levels they were grouped at: what the
+/// written file's header states as fitted.
+pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
+    let conditions: Vec<_> = r
+        .conditions
+        .iter()
+        .chain(&r.longitudinal_conditions)
+        .cloned()
+        .collect();
+    let levels: Vec<_> = std::iter::once(&r.grouping)
+        .chain(&r.longitudinal_grouping)
+        .flat_map(|g| &g.levels)
+        .collect();
+    widened_to_levels(condition_spans(&conditions), &levels, &conditions)
+}
+
 /// `spans` widened to the samples of the levels the conditions were
 /// grouped at (`levels`, a grouping's): a condition's points are means of
 /// its samples, so their load ranges over 1601–1681 N where the level's

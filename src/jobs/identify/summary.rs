@@ -121,6 +121,10 @@ impl SwarmReport {
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
         out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
+        out.extend(
+            self.pac89_reversal
+                .map(|x| format!("  warning: {}", x.line())),
+        );
         out
     }
 }

@@ -44,18 +44,7 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
         .chain(r.notes.iter().map(|n| n.line("#")))
         .map(|l| l + "\n")
         .collect();
-    let conditions: Vec<_> = r
-        .conditions
-        .iter()
-        .chain(&r.longitudinal_conditions)
-        .cloned()
-        .collect();
-    let levels: Vec<_> = std::iter::once(&r.grouping)
-        .chain(&r.longitudinal_grouping)
-        .flat_map(|g| &g.levels)
-        .collect();
-    let spans =
-        ranges::widened_to_levels(ranges::condition_spans(&conditions), &levels, &conditions);
+    let spans = ranges::fitted_spans(r);
     let table = fitted_ranges::table_text(&ranges::fitted_ranges(&spans));
     let ranges = ranges::toml_line(&spans);
     let text = format!("{header}# {ranges}\n{held}{notes}{tyre}{table}");

@@ -311,6 +311,7 @@ mod trips_s64b;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;
+mod tyre_eval_beyond;
 mod user_trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

@@ -5,6 +5,8 @@
 //!   `mx` with a lateral force or a camber, `my` at a speed other than 0,
 //!   each at a positive load. The tyre has none of it at all: a `.tir`
 //!   with `PDX1 = 0` or `PKX1 = 0`, or with its `QSX` or `QSY` block all 0,
+//!   and `mz` at a slip angle other than 0 (a simplified Magic Formula
+//!   tyre has no aligning moment, a PAC89 file without its `c` block none),
 //!   as `identify` writes from rig data without longitudinal slip or
 //!   wheel moments and no template. Found by behaviour, at the points
 //!   themselves, one rule for the three: no force model gives an exact 0
@@ -76,6 +78,9 @@ pub enum Output {
     Mx,
     /// The rolling resistance moment (Magic Formula only).
     My,
+    /// The aligning moment (a simplified Magic Formula has none; a PAC89
+    /// file without its `c` block none).
+    Mz,
 }
 
 impl Output {
@@ -85,6 +90,7 @@ impl Output {
             Output::Fx => "fx",
             Output::Mx => "mx",
             Output::My => "my",
+            Output::Mz => "mz",
         }
     }
 
@@ -94,6 +100,7 @@ impl Output {
             Output::Fx => "longitudinal force",
             Output::Mx => "overturning moment",
             Output::My => "rolling resistance moment",
+            Output::Mz => "aligning moment",
         }
     }
 
@@ -103,6 +110,7 @@ impl Output {
             Output::Fx => "longitudinal",
             Output::Mx => "overturning moment",
             Output::My => "rolling resistance",
+            Output::Mz => "aligning moment",
         }
     }
 
@@ -113,6 +121,7 @@ impl Output {
             Output::Fx => "at any slip ratio",
             Output::Mx => "at any lateral force or camber",
             Output::My => "at any speed",
+            Output::Mz => "at any slip angle",
         }
     }
 
@@ -122,6 +131,7 @@ impl Output {
             Output::Fx => "kappa ≠ 0",
             Output::Mx => "fy or camber ≠ 0",
             Output::My => "speed ≠ 0",
+            Output::Mz => "alpha ≠ 0",
         }
     }
 
@@ -137,6 +147,7 @@ impl Output {
                 Output::Fx => kappa[i] != 0.0,
                 Output::Mx => fy != 0.0 || camber[i] != 0.0,
                 Output::My => speed[i] != 0.0,
+                Output::Mz => p.columns[2][i] != 0.0,
             }
     }
 
@@ -146,6 +157,7 @@ impl Output {
             Output::Fx => Some(f.fx),
             Output::Mx => f.mx,
             Output::My => f.my,
+            Output::Mz => Some(f.mz),
         }
     }
 
@@ -162,6 +174,9 @@ impl Output {
             Output::My => &[
                 "QSY1", "QSY2", "QSY3", "QSY4", "QSY5", "QSY6", "QSY7", "QSY8",
             ],
+            // A Magic Formula file always has its trail and residual
+            // moment: no block of it gives none.
+            Output::Mz => &[],
         }
     }
 }
@@ -245,7 +260,7 @@ pub(crate) fn zero_outputs(
     unread: &[Unread],
 ) -> Vec<ZeroOutput> {
     let kappa_unread = unread.iter().any(|u| u.column == "kappa");
-    [Output::Fx, Output::Mx, Output::My]
+    [Output::Fx, Output::Mx, Output::My, Output::Mz]
         .into_iter()
         .filter(|o| !(*o == Output::Fx && kappa_unread))
         .filter_map(|o| zero_output(o, tyre, p, f))

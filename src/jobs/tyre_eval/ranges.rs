@@ -3,7 +3,9 @@
 //! points leave it, its ends and the first such point's line and value. A
 //! count over all ranges alone left a user to find which one the points
 //! left. Each range in the points' frame (a left-side file's slip angle
-//! range negated); units N, rad, Pa. Each end is said apart: a point
+//! range negated); units N, rad, Pa. With the limit checks off (mode 2xx)
+//! the points are evaluated at the values given, and the ranges they leave
+//! are said as extrapolated past. Each end is said apart: a point
 //! beyond one is evaluated at that end, except a load below `FZMIN`, which
 //! MFeval (as TNO's MF-Tyre) does not saturate: its forces are evaluated at
 //! the load given, only the pneumatic trail at `FZMIN` and the rolling and
@@ -28,14 +30,20 @@ pub struct RangeLeft {
     pub first_value: f64,
     /// The points leave it below its lower end (else above its upper).
     pub below: bool,
+    /// The limit checks were off (mode 2xx): the points were evaluated at
+    /// the values given, past the range, not at its end.
+    pub as_given: bool,
 }
 
 /// The ranges of `tyre` the points `inputs` (at file lines `lines`) leave,
-/// in [`MagicFormula::input_ranges`]'s order.
+/// in [`MagicFormula::file_ranges`]'s order: with the limit checks on, the
+/// ends the points were held to; off, the ranges they were evaluated
+/// beyond as given (a 100 kN point of an 18 kN file is said either way).
 pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> Vec<RangeLeft> {
+    let as_given = !tyre.mode().limit_checks;
     let mut out: Vec<RangeLeft> = Vec::new();
     for (i, q) in inputs.iter().enumerate() {
-        for (range, value) in tyre.ranges_left(q) {
+        for (range, value) in tyre.file_ranges_left(q) {
             let below = range.lo.is_some_and(|lo| value < lo);
             let same = |r: &&mut RangeLeft| r.range.keys == range.keys && r.below == below;
             match out.iter_mut().find(same) {
@@ -46,11 +54,12 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
                     first_line: lines.get(i).copied().unwrap_or(0),
                     first_value: value,
                     below,
+                    as_given,
                 }),
             }
         }
     }
-    let all = tyre.input_ranges();
+    let all = tyre.file_ranges();
     let order = |r: &RangeLeft| all.iter().position(|a| a.keys == r.range.keys);
     out.sort_by_key(|r| (order(r), !r.below));
     out
@@ -72,6 +81,10 @@ impl RangeLeft {
         // The value given, and the one evaluated where it is the end's (a
         // 2 MPa pressure is evaluated at PRESMAX): both said.
         let (evaluated, at) = match (r.column, self.below) {
+            _ if self.as_given => (
+                "evaluated at the value given, past the range (the limit checks off, mode 2xx): an extrapolation of the file",
+                String::new(),
+            ),
             ("fz", true) => ("fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and the rolling and overturning moments scaled down below it", String::new()),
             _ => ("evaluated at that end", format!(" given, evaluated at {}{unit}", end(bound))),
         };

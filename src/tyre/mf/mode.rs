@@ -288,6 +288,13 @@ impl MagicFormula {
         if !self.options.limit_checks {
             return Vec::new();
         }
+        self.file_ranges()
+    }
+
+    /// The file's ranges as [`Self::input_ranges`] gives them, whether or
+    /// not the limit checks hold a point to them: with the checks off, the
+    /// ranges a point is evaluated beyond as given.
+    pub fn file_ranges(&self) -> Vec<InputRange> {
         let l = &self.limits;
         let mirror = self.side == super::TyreSide::Right;
         let range =
@@ -340,8 +347,16 @@ impl MagicFormula {
     /// leaves below `FZMIN` too (the trail then takes `FZMIN`), but only
     /// above zero: a wheel off the road is no point outside a range.
     pub fn ranges_left(&self, p: &super::MfInput) -> Vec<(InputRange, f64)> {
+        if !self.options.limit_checks {
+            return Vec::new();
+        }
+        self.file_ranges_left(p)
+    }
+
+    /// [`Self::ranges_left`] whether or not the limit checks are on.
+    pub fn file_ranges_left(&self, p: &super::MfInput) -> Vec<(InputRange, f64)> {
         let values = [p.fz, p.kappa, p.alpha, p.camber, self.pressure(p.pressure)];
-        self.input_ranges()
+        self.file_ranges()
             .into_iter()
             .zip(values)
             .filter(|(r, x)| (r.column != "fz" || *x > 0.0) && r.leaves(*x))

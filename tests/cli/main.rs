@@ -276,6 +276,7 @@ mod magic_formula;
 mod measured_metrics;
 mod messages;
 mod mf_combined_fy;
+mod mf_holds;
 mod mf_identify;
 mod mf_vertical;
 mod pac89_bounds;

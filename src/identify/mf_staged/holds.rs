@@ -13,7 +13,10 @@
 //!   data do not move it at all (`stages.rs`, `identifiability`). Of the
 //!   parameters so flagged (the four with the largest relative standard
 //!   error), the one whose hold raises the stage's cost least is held at
-//!   its stated value and the stage refitted from its optimum; this
+//!   its stated value (of holds whose costs differ by less than half a
+//!   residual variance, which the data cannot tell apart, the coefficient
+//!   latest in the stage's order) and the stage refitted from its
+//!   optimum; this
 //!   repeats until no free parameter is flagged. Two parameters that trade
 //!   along one near-null direction (`PKY1` and `PKY4` along the curvature
 //!   of `Kyα(Fz)` on loads that never reach its peak; `QBZ4·γ` and
@@ -33,7 +36,7 @@ use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
 use crate::format::readable;
 use crate::optim::bounded::BoundedLm;
-use crate::optim::local::LocalResult;
+use crate::optim::local::{LocalResult, Residuals};
 use serde::Serialize;
 use std::fmt;
 
@@ -260,7 +263,7 @@ pub(super) fn hold_undetermined(
             .collect();
         flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
         flagged.truncate(CANDIDATES);
-        let mut best: Option<(usize, StageProblem, Vec<f64>, f64)> = None;
+        let mut tried: Vec<(usize, StageProblem, Vec<f64>, f64)> = Vec::new();
         for &k in &flagged {
             let without = |v: &[f64]| -> Vec<f64> {
                 v.iter()
@@ -283,13 +286,29 @@ pub(super) fn hold_undetermined(
             );
             let mut bounds = fit.bounds.clone();
             bounds.remove(k);
-            let r = lm.minimize(&sub, &without(&fit.p), &bounds);
+            // From the optimum with the rest moved as they trade against
+            // the held value, where that starts lower than the optimum as
+            // it is: a warm start that jumps one coefficient of a traded
+            // pair alone can stall far from the pair's valley.
+            let dv = stated(fit.problem.names[k]).0 - fit.p[k];
+            let moved: Vec<f64> = fit
+                .p
+                .iter()
+                .zip(u.compensating(k, dv))
+                .map(|(p, d)| p + d)
+                .collect();
+            let start = [without(&moved), without(&fit.p)]
+                .into_iter()
+                .map(|x| clamped(x, &bounds))
+                .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
+                .unwrap_or_default();
+            let r = lm.minimize(&sub, &start, &bounds);
             *evaluations += r.evaluations;
-            if r.cost.is_finite() && best.as_ref().is_none_or(|b| r.cost < b.3) {
-                best = Some((k, sub, r.params, r.cost));
+            if r.cost.is_finite() {
+                tried.push((k, sub, r.params, r.cost));
             }
         }
-        let Some((k, problem, mut p, cost)) = best else {
+        let Some((k, problem, mut p, cost)) = spared(tried, fit) else {
             break;
         };
         let mut needs = fit.needs.clone();
@@ -318,6 +337,37 @@ pub(super) fn hold_undetermined(
         fit.p = p;
     }
     held
+}
+
+/// `x` within `bounds`.
+fn clamped(mut x: Vec<f64>, bounds: &[(f64, f64)]) -> Vec<f64> {
+    for (v, (lo, hi)) in x.iter_mut().zip(bounds) {
+        *v = v.clamp(*lo, *hi);
+    }
+    x
+}
+
+/// The hold the fit can best spare among those `tried` (parameter,
+/// problem, refitted values, cost): the lowest cost, except that costs
+/// within half the residual variance of it (the sum of squares raised by
+/// less than one residual variance: holds the data cannot tell apart) go
+/// to the coefficient latest in the stage's order, a secondary term
+/// before a primary one (`PKY4` before `PKY1`, `QBZ5` before `QBZ4`).
+/// Without the tie rule the choice between two parameters along one
+/// null direction fell to the last digits of where the optimiser stopped,
+/// and changed with `--max-iterations`.
+fn spared<'a>(
+    tried: Vec<(usize, StageProblem<'a>, Vec<f64>, f64)>,
+    fit: &StageFit,
+) -> Option<(usize, StageProblem<'a>, Vec<f64>, f64)> {
+    let lowest = tried.iter().map(|t| t.3).fold(f64::INFINITY, f64::min);
+    let dof = fit.problem.count().saturating_sub(fit.p.len()).max(1) as f64;
+    // cost = SSR/2, so half a residual variance is cost/dof.
+    let tie = fit.problem.cost(&fit.p) / dof;
+    tried
+        .into_iter()
+        .filter(|t| t.3 <= lowest + tie)
+        .max_by_key(|t| t.0)
 }
 
 #[cfg(test)]

@@ -23,9 +23,38 @@ pub(super) struct Uncertainty {
     /// The warning of a near-singular Jacobian (condition number above
     /// 1e8), naming the parameters of its weakest direction.
     pub(super) near_singular: Option<String>,
+    /// `(JᵀJ)⁺` of the column-scaled Jacobian, and the columns' norms.
+    scaled_cov: Option<nalgebra::DMatrix<f64>>,
+    norms: Vec<f64>,
 }
 
 impl Uncertainty {
+    /// The change of every free parameter that best keeps the fit when
+    /// parameter `k` moves by `dv`: to first order the others' regression
+    /// on it, `Σ_jk/Σ_kk·dv` (`dv` itself for `k`), so that a parameter
+    /// held away from its fitted value starts the refit with the rest
+    /// moved along the direction they trade on (`QBZ4·γ` against
+    /// `QBZ5·|γ|` on cambers of one sign); only `dv` where there is no
+    /// covariance.
+    pub(super) fn compensating(&self, k: usize, dv: f64) -> Vec<f64> {
+        let n = self.norms.len();
+        let mut d = vec![0.0; n];
+        d[k] = dv;
+        let Some(c) = &self.scaled_cov else {
+            return d;
+        };
+        let ckk = c[(k, k)];
+        if !(ckk > 0.0 && self.norms[k] > 0.0) {
+            return d;
+        }
+        for (j, dj) in d.iter_mut().enumerate() {
+            if j != k && self.norms[j] > 0.0 {
+                *dj = c[(j, k)] * self.norms[k] / (ckk * self.norms[j]) * dv;
+            }
+        }
+        d
+    }
+
     /// Whether free parameter `k`, at `value`, is not identifiable.
     pub(super) fn flagged(&self, k: usize, value: f64) -> bool {
         match self.std_error[k] {
@@ -114,6 +143,8 @@ pub(super) fn uncertainty(problem: &StageProblem, p: &[f64]) -> Uncertainty {
         effect,
         condition,
         near_singular,
+        scaled_cov: cov,
+        norms,
     }
 }
 

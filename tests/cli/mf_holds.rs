@@ -1,0 +1,47 @@
+//! The staged Magic Formula fit of the public Hoosier cornering file holds
+//! what the data do not determine: which coefficient of a traded pair it
+//! held (`QBZ4·γ` against `QBZ5·|γ|` on cambers of one sign) changed with
+//! `--max-iterations` (QBZ5 at 60 and 150, QBZ4 at 300), because the
+//! warm refit that held QBZ5 from the 300-iteration optimum stalled.
+
+use super::*;
+
+/// The names `identify` held as not identifiable, from its report.
+fn not_identifiable(dir: &Path, data: &Path, iterations: &str) -> Vec<String> {
+    let tir = dir.join(format!("hoosier_{iterations}.tir"));
+    succeeds(&[
+        "identify",
+        data.to_str().unwrap(),
+        "--model",
+        "mf61",
+        "--max-iterations",
+        iterations,
+        "--out",
+        tir.to_str().unwrap(),
+    ]);
+    let text = fs::read_to_string(&tir).unwrap();
+    let mut held: Vec<String> = text
+        .lines()
+        .filter(|l| l.contains("not identifiable from these data"))
+        .filter_map(|l| l.split("held: ").nth(1))
+        .map(|l| l.split(' ').next().unwrap().to_string())
+        .collect();
+    held.sort();
+    held
+}
+
+#[test]
+fn which_coefficient_of_a_traded_pair_is_held_does_not_depend_on_the_iteration_cap() {
+    let Some(data) = shared_data(
+        "which_coefficient_of_a_traded_pair_is_held_does_not_depend_on_the_iteration_cap",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let short = not_identifiable(dir.path(), &data, "60");
+    let long = not_identifiable(dir.path(), &data, "300");
+    assert!(short.contains(&"QBZ5".to_string()), "{short:?}");
+    assert!(short.contains(&"PKY4".to_string()), "{short:?}");
+    assert_eq!(short, long);
+}

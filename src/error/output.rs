@@ -51,10 +51,12 @@ pub enum OutputError {
         path: PathBuf,
     },
     /// A file to write named by a folder that exists.
-    #[error("{}: is a folder; name the file to write in it (e.g. {})", path.display(), path.join(format!("fit.{extension}")).display())]
+    #[error("{}: is a folder; name the file to write in it (e.g. {})", path.display(), path.join(format!("{stem}.{extension}")).display())]
     IsAFolder {
         /// The output.
         path: PathBuf,
+        /// A name for the file, without its extension (`fit`, `forces`).
+        stem: &'static str,
         /// The extension the file takes.
         extension: &'static str,
     },

@@ -63,3 +63,36 @@ fn a_tyre_without_an_aligning_moment_is_warned_of_at_a_slip_angle() {
     let (o, _) = eval(dir.path(), &root().join("tyres/linear.toml"), csv, &[]);
     assert!(!stderr(&o).contains("mz = 0"), "{}", stderr(&o));
 }
+
+/// `--out` naming a folder was refused after the evaluation, as "cannot
+/// move into place: Is a directory (os error 21)".
+#[test]
+fn an_output_that_is_a_folder_is_refused_before_the_evaluation_with_a_file_to_name() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::create_dir(dir.path().join("out")).unwrap();
+    fs::write(
+        dir.path().join("p.csv"),
+        "fz,kappa,alpha,camber,speed\n3000,0,0.05,0,20\n",
+    )
+    .unwrap();
+    let o = bin()
+        .args([
+            "tyre-eval",
+            root().join("tyres/linear.toml").to_str().unwrap(),
+            "p.csv",
+            "--out",
+            "out",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert_eq!(
+        e.trim_end(),
+        format!(
+            "error: out: is a folder; name the file to write in it (e.g. {})",
+            Path::new("out").join("forces.csv").display()
+        )
+    );
+}

@@ -20,6 +20,7 @@ impl Options {
         if out.is_dir() {
             return Err(OutputError::IsAFolder {
                 path: out.clone(),
+                stem: "fit",
                 extension: expected,
             }
             .into());

@@ -169,12 +169,14 @@ pub enum ParamReason {
     #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
     ToleranceWithRk4,
     /// A lateral acceleration no steady state holds at the speed.
-    #[error("no steady state at {} m/s with ay = {} m/s²: beyond the vehicle's lateral limit (or the solver did not converge)", crate::format::exact(*speed), crate::format::exact(*ay))]
+    #[error("{}", crate::vehicle::steady::no_steady_words(*speed, *ay, *limit))]
     NoSteadyState {
         /// The speed, m/s.
         speed: f64,
         /// The lateral acceleration asked, m/s².
         ay: f64,
+        /// The largest steady lateral acceleration at the speed, m/s².
+        limit: Option<f64>,
     },
     /// A step steer given both of its amplitudes.
     #[error("a step steer takes one of `steer` (rad) and `lateral_acceleration` (m/s²), and both are given: keep one")]

@@ -372,6 +372,7 @@ fn step_steer(
                         ParamReason::NoSteadyState {
                             speed: m.speed,
                             ay: m.ay,
+                            limit: m.limit,
                         },
                     ),
                 )

@@ -11,17 +11,32 @@ use thiserror::Error;
 /// No steady state holds the asked lateral acceleration at the speed:
 /// beyond the vehicle's lateral limit, or the solver did not converge.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
-#[error(
-    "no steady state at {} m/s with ay = {} m/s²: beyond the vehicle's \
-     lateral limit (or the solver did not converge)",
-    crate::format::exact(*speed),
-    crate::format::exact(*ay)
-)]
+#[error("{}", no_steady_words(*speed, *ay, *limit))]
 pub struct NoSteadyState {
     /// The speed, m/s (at least the model's smallest speed).
     pub speed: f64,
     /// The lateral acceleration asked, m/s².
     pub ay: f64,
+    /// The largest steady lateral acceleration of the same sign at the
+    /// speed, m/s² (`None`: none found, not even 0).
+    pub limit: Option<f64>,
+}
+
+/// The sentence of [`NoSteadyState`]: the limit said where the bisection
+/// found one clearly below the asked value (else the solver's failure).
+pub(crate) fn no_steady_words(speed: f64, ay: f64, limit: Option<f64>) -> String {
+    let head = format!(
+        "no steady state at {} m/s with ay = {} m/s²",
+        crate::format::exact(speed),
+        crate::format::exact(ay)
+    );
+    match limit {
+        Some(l) if l.abs() < 0.99 * ay.abs() => format!(
+            "{head}: beyond the vehicle's lateral limit at this speed, {} m/s² with these tyres and this road (the largest steady ay, within 45° of steer and sideslip)",
+            crate::format::readable(l, 3)
+        ),
+        _ => format!("{head}: the solver did not converge"),
+    }
 }
 
 /// Largest sideslip or steer a steady state may have, rad (45°): beyond it
@@ -151,15 +166,10 @@ pub(crate) fn newton2_analytic(
 }
 
 impl VehicleModel {
-    /// The steady state at `speed` with lateral acceleration `ay`: the steer
-    /// angle that holds it and the sideslip. Fails beyond the friction limit.
-    pub(crate) fn steady_state_for_lateral_acceleration(
-        &self,
-        speed: f64,
-        friction: f64,
-        ay: f64,
-    ) -> Result<SteadyState, NoSteadyState> {
-        let u = speed.max(MIN_SPEED);
+    /// The steady state at speed `u` with lateral acceleration `ay`: the
+    /// steer angle that holds it and the sideslip (`None` beyond the
+    /// friction limit, past 45° of either, or where Newton stalls).
+    fn steady_state_holding(&self, u: f64, friction: f64, ay: f64) -> Option<SteadyState> {
         // `ay` is what the accelerometer reads (the tyres' force over the
         // mass); on a banked road the path needs g·sin θ less.
         let r = (ay - self.bank_acceleration()) / u;
@@ -180,16 +190,47 @@ impl VehicleModel {
             // that would let Newton 'converge' by running off to β = ±90°.
             [(o.ay - ay) / u, o.yaw_acceleration]
         };
-        let fail = || NoSteadyState { speed: u, ay };
-        let (x, _) = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100).ok_or_else(fail)?;
-        if x[0].abs() > MAX_ANGLE || x[1].abs() > MAX_ANGLE {
-            return Err(fail());
-        }
-        Ok(SteadyState {
+        let held = newton2(f, [beta0, steer0], [0.01, 0.01], 1e-12, 100)
+            .map(|(x, _)| x)
+            .filter(|x| x[0].abs() <= MAX_ANGLE && x[1].abs() <= MAX_ANGLE);
+        held.map(|x| SteadyState {
             beta: x[0],
             yaw_rate: r,
             steer: x[1],
             ay,
+        })
+    }
+
+    /// The steady state of the model that holds lateral acceleration `ay`
+    /// at `speed` on a road of `friction`, or, where none does, the
+    /// largest that one does (by bisection between 0 and `ay`).
+    pub(crate) fn steady_state_for_lateral_acceleration(
+        &self,
+        speed: f64,
+        friction: f64,
+        ay: f64,
+    ) -> Result<SteadyState, NoSteadyState> {
+        let u = speed.max(MIN_SPEED);
+        if let Some(s) = self.steady_state_holding(u, friction, ay) {
+            return Ok(s);
+        }
+        let holds = |a: f64| self.steady_state_holding(u, friction, a).is_some();
+        let limit = holds(0.0).then(|| {
+            let (mut lo, mut hi) = (0.0, ay);
+            for _ in 0..40 {
+                let mid = 0.5 * (lo + hi);
+                if holds(mid) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            lo
+        });
+        Err(NoSteadyState {
+            speed: u,
+            ay,
+            limit,
         })
     }
 }

@@ -56,16 +56,23 @@ fn linear_steady_yaw_gain_matches_the_bicycle_model() {
     let e = m
         .steady_state_for_lateral_acceleration(20.0, 1.0, 1000.0)
         .unwrap_err();
-    assert_eq!(
-        e,
-        crate::vehicle::steady::NoSteadyState {
-            speed: 20.0,
-            ay: 1000.0
-        }
-    );
+    assert_eq!((e.speed, e.ay), (20.0, 1000.0));
+    // The limit said is the largest ay held: one just below holds, one
+    // just above does not (the 45° cap of the linear tyres' model).
+    let limit = e.limit.unwrap();
+    assert!(limit > 0.0 && limit < 1000.0, "{limit}");
+    assert!(m
+        .steady_state_for_lateral_acceleration(20.0, 1.0, 0.999 * limit)
+        .is_ok());
+    assert!(m
+        .steady_state_for_lateral_acceleration(20.0, 1.0, 1.001 * limit)
+        .is_err());
     assert_eq!(
         e.to_string(),
-        "no steady state at 20 m/s with ay = 1000 m/s²: beyond the vehicle's lateral limit (or the solver did not converge)"
+        format!(
+            "no steady state at 20 m/s with ay = 1000 m/s²: beyond the vehicle's lateral limit at this speed, {} m/s² with these tyres and this road (the largest steady ay, within 45° of steer and sideslip)",
+            crate::format::readable(limit, 3)
+        )
     );
 }
 

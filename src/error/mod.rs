@@ -21,6 +21,7 @@ mod problem;
 mod reason;
 mod rig;
 mod rig_sign;
+mod steady;
 #[cfg(test)]
 mod tests;
 mod units;
@@ -40,6 +41,7 @@ pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
 pub use reason::{Limit, ParamReason, ScheduleColumn};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{PressureMeant, UnitSlip};
 

@@ -169,15 +169,9 @@ pub enum ParamReason {
     #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
     ToleranceWithRk4,
     /// A lateral acceleration no steady state holds at the speed.
-    #[error("{}", crate::vehicle::steady::no_steady_words(*speed, *ay, *limit))]
-    NoSteadyState {
-        /// The speed, m/s.
-        speed: f64,
-        /// The lateral acceleration asked, m/s².
-        ay: f64,
-        /// The largest steady lateral acceleration at the speed, m/s².
-        limit: Option<f64>,
-    },
+    /// (Boxed: the error enum stays as small as its other variants.)
+    #[error("{0}")]
+    NoSteadyState(Box<super::NoSteadyState>),
     /// A step steer given both of its amplitudes.
     #[error("a step steer takes one of `steer` (rad) and `lateral_acceleration` (m/s²), and both are given: keep one")]
     StepSteerBothAmplitudes,

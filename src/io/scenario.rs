@@ -369,11 +369,7 @@ fn step_steer(
                     ParamError::new(
                         "lateral_acceleration",
                         ay,
-                        ParamReason::NoSteadyState {
-                            speed: m.speed,
-                            ay: m.ay,
-                            limit: m.limit,
-                        },
+                        ParamReason::NoSteadyState(Box::new(m)),
                     ),
                 )
             })

@@ -57,16 +57,11 @@ fn linear_steady_yaw_gain_matches_the_bicycle_model() {
         .steady_state_for_lateral_acceleration(20.0, 1.0, 1000.0)
         .unwrap_err();
     assert_eq!((e.speed, e.ay), (20.0, 1000.0));
-    // The limit said is the largest ay held: one just below holds, one
-    // just above does not (the 45° cap of the linear tyres' model).
-    let limit = e.limit.unwrap();
-    assert!(limit > 0.0 && limit < 1000.0, "{limit}");
-    assert!(m
-        .steady_state_for_lateral_acceleration(20.0, 1.0, 0.999 * limit)
-        .is_ok());
-    assert!(m
-        .steady_state_for_lateral_acceleration(20.0, 1.0, 1.001 * limit)
-        .is_err());
+    // The limit said is the largest ay held (the linear tyres' 45° cap).
+    let (limit, ay) = (e.limit.unwrap(), |a| {
+        m.steady_state_for_lateral_acceleration(20.0, 1.0, a)
+    });
+    assert!(ay(0.999 * limit).is_ok() && ay(1.001 * limit).is_err());
     assert_eq!(
         e.to_string(),
         format!(

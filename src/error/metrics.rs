@@ -95,6 +95,18 @@ pub enum MetricsError {
         /// Its end, s.
         to: f64,
     },
+    /// The steer still moves inside the steady window: the steady values
+    /// would mix the step in (a window that reaches back over the step).
+    #[error("the steer moves by more than 5 % of its step inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values: {}; the steady values would mix the step in", Num(to - from), settles.map_or("it does not settle within 5 % of its held value before the record ends".to_string(), |t| format!("it settles within 5 % of its held value only at {t:.2} s, so a `--steady-window` of at most {} s starts after it", fixed(((to - t) * 100.0).floor().max(0.0) / 100.0, 2))))]
+    StepInSteadyWindow {
+        /// From when on the steer stays within 5 % of its step of its held
+        /// value, s (none: not before the record's end).
+        settles: Option<f64>,
+        /// The steady window's start, s.
+        from: f64,
+        /// Its end, s.
+        to: f64,
+    },
     /// The steer leaves its step after reaching it: a sweep or a sine.
     #[error("the steer does not hold its step: after reaching 90 % of it at {reached:.2} s it is at {} % of it at {time:.2} s, where a step steer stays between {} % and {} %: a sweep or a sine is not measured as a step steer", fixed(100.0 * share, 0), Num(100.0 * HELD_STEP.0), Num(100.0 * HELD_STEP.1))]
     SteerNotHeld {

@@ -66,6 +66,16 @@ pub enum ParamReason {
         /// The record's end, s.
         end: f64,
     },
+    /// A steady window reaching back over the step's ramp: its means would
+    /// mix the step in. `settles`: where the steer reaches its step
+    /// (`start + rise_time`), `end` the record's end, s.
+    #[error("the steady window (the last `steady_window` s before `end` = {} s) starts before the steer settles at its step at {} s (`start` + `rise_time`): the steady values would mix the step in; a `steady_window` of at most {} s starts after it", super::number::Num(*end), super::number::Num(*settles), crate::format::fixed(((end - settles) * 100.0 + 1e-9).floor().max(0.0) / 100.0, 2))]
+    StepInSteadyWindow {
+        /// Where the steer reaches its step, s.
+        settles: f64,
+        /// The record's end, s.
+        end: f64,
+    },
     /// A step steer starting inside the metrics' initial window (0 to
     /// `pre_window`), which measures the straight running before it, s.
     #[error("the step starts inside the metrics' initial window (0 to `pre_window` = {} s), which measures the straight running before the step: the initial values would be the step's own; start the step at {} s or later, or shorten `[metrics] pre_window`", super::number::Num(*pre_window), super::number::Num(*pre_window))]

@@ -368,7 +368,7 @@ pub enum InputProblem {
     /// A response channel that holds one value over a whole run: a dead
     /// or unplugged sensor, to which no model can be fitted (its noise
     /// floor is zero, every gap infinitely significant).
-    #[error("channel `{channel}` holds one value ({}) over the whole run: a dead or unplugged sensor, to which no model can be fitted; {}", Num(*value), if *required { "fix the log or leave the run out" } else { "remove the column (it is optional) or fix the log" })]
+    #[error("channel `{channel}` holds one value ({}) over the whole run: a dead or unplugged sensor, which measures nothing (no model can be fitted to it, no metric read from it); {}", Num(*value), if *required { "fix the log or leave the run out" } else { "remove the column (it is optional) or fix the log" })]
     DeadChannel {
         /// The channel.
         channel: &'static str,
@@ -466,6 +466,15 @@ pub enum InputProblem {
 }
 
 impl InputProblem {
+    /// [`InputProblem::DeadChannel`] of a dead channel.
+    pub fn dead(d: &crate::measured::DeadChannel) -> Self {
+        InputProblem::DeadChannel {
+            channel: d.channel,
+            value: d.value,
+            required: d.required,
+        }
+    }
+
     /// The problem's name (its variant), for callers that report kinds.
     pub fn name(&self) -> &'static str {
         match self {

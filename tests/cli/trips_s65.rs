@@ -89,3 +89,83 @@ fn a_scenarios_steady_window_over_the_step_is_refused_at_its_key() {
         "{e}"
     );
 }
+
+/// The sedan's history with column `column` set to 0 on every row (a dead
+/// sensor logging zeros), written as `dir/dead_<column>.csv`.
+fn with_dead(history: &Path, dir: &Path, column: &str) -> PathBuf {
+    let text = fs::read_to_string(history).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let at = header.split(',').position(|c| c == column).unwrap();
+    let mut out = vec![header.to_string()];
+    for line in lines {
+        let mut cells: Vec<&str> = line.split(',').collect();
+        cells[at] = "0";
+        out.push(cells.join(","));
+    }
+    let path = dir.join(format!("dead_{column}.csv"));
+    fs::write(&path, out.join("\n") + "\n").unwrap();
+    path
+}
+
+/// A sideslip column of zeros was read as a steady sideslip of 0 and a TB
+/// of 0; its metrics are now absent (`null`), and the warning names the
+/// file, the column and its value, in `--json` as on the terminal.
+#[test]
+fn a_dead_sideslip_channel_is_left_out_and_said_not_read_as_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = with_dead(&sedan_history(dir.path()), dir.path(), "beta");
+    let o = run(&["metrics", csv.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(j["beta_steady"].is_null() && j["tb"].is_null(), "{j}");
+    // The other metrics are measured as before.
+    assert!(
+        (j["yaw_rate_gain"].as_f64().unwrap() - 3.7096).abs() < 0.01,
+        "{j}"
+    );
+    let said = format!(
+        "{}: channel `beta` holds one value (0) over the whole run: a dead or unplugged sensor; its metrics (steady sideslip and TB) are left out (null in --json)",
+        csv.display()
+    );
+    assert!(j["warnings"].to_string().contains(&said), "{j}");
+    assert!(
+        stderr(&o).contains(&format!("warning: {said}")),
+        "{}",
+        stderr(&o)
+    );
+    let table = succeeds(&["metrics", csv.to_str().unwrap()]);
+    let line = table
+        .lines()
+        .find(|l| l.contains("steady sideslip"))
+        .unwrap();
+    assert!(line.ends_with("— deg"), "{table}");
+}
+
+/// A yaw rate of zeros was refused as a steer in degrees ("the yaw rate is
+/// far smaller than a neutral car's"): it is refused as the dead sensor it
+/// is, by `diagnose`'s rule and words; a dead `ay` is left out and said.
+#[test]
+fn a_dead_yaw_rate_is_refused_as_dead_and_a_dead_ay_is_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let yaw = with_dead(&history, dir.path(), "yaw_rate");
+    let o = run(&["metrics", yaw.to_str().unwrap()]);
+    assert!(!o.status.success(), "a dead yaw rate was measured");
+    let e = stderr(&o);
+    assert!(
+        e.contains(
+            "channel `yaw_rate` holds one value (0) over the whole run: a dead or unplugged sensor"
+        ),
+        "{e}"
+    );
+    assert!(!e.contains("far smaller"), "{e}");
+    let ay = with_dead(&history, dir.path(), "ay");
+    let o = run(&["metrics", ay.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(j["ay_steady"].is_null() && j["er"].is_null(), "{j}");
+    let w = j["warnings"].to_string();
+    assert!(w.contains("channel `ay` holds one value (0)"), "{w}");
+    assert!(!w.contains("the run has no `ay`"), "said twice: {w}");
+}

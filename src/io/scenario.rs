@@ -443,7 +443,9 @@ fn check_windows(src: &TomlSource, s: &MetricSettings, m: &Manoeuvre) -> Result<
     // steer's ramp reads a smaller step and hides the overshoot (the
     // measured-run check, `MetricsError::StepInSteadyWindow`, mirrored).
     let settles = step.start + step.rise_time.max(0.0);
-    if step.end - s.steady_window < settles {
+    // (1e-9 s: a window given to the digit where the steer settles, 6 −
+    // 4.9 s, is not refused for the rounding of its difference.)
+    if step.end - s.steady_window < settles - 1e-9 {
         let reason = ParamReason::StepInSteadyWindow {
             settles,
             end: step.end,

@@ -114,6 +114,11 @@ pub fn run_with_degrees(
 /// response that does not change. Their metrics are `null`, not 0.
 fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> {
     let mut warnings = Vec::new();
+    // A steer held throughout gives no response to a live sensor either
+    // (straight running): the run is refused as holding no step.
+    if crate::measured::one_value(&run.steer).is_some() {
+        return Ok(warnings);
+    }
     for d in run.dead_channels() {
         let left_out = match d.channel {
             "ay" => {
@@ -173,7 +178,8 @@ impl MeasuredMetricsReport {
 }
 
 /// The metric table: one line per metric, `—` where a response lacks one,
-/// and the notes on filtering, overshoot and settling.
+/// and the notes on filtering and overshoot (a response that has not
+/// settled is a warning of the report: [`StepMetrics::settling_warning`]).
 pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt =
         |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
@@ -243,9 +249,6 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  no overshoot: no yaw-rate maximum stands more than {} % above the steady state ({why})",
             crate::format::rounded(m.yaw_rate_peak_threshold, 3)
         ));
-    }
-    if !m.settled {
-        out.push("  warning: the response has not settled in the steady window (it spreads by more than 2 % of the step beyond its noise)".into());
     }
     out
 }

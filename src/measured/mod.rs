@@ -72,14 +72,20 @@ impl MeasuredRun {
         channels
             .into_iter()
             .filter_map(|(channel, values, required)| {
-                let mut finite = values?.iter().copied().filter(|x| x.is_finite());
-                let first = finite.next()?;
-                finite.all(|x| x == first).then_some(DeadChannel {
+                one_value(values?).map(|value| DeadChannel {
                     channel,
-                    value: first,
+                    value,
                     required,
                 })
             })
             .collect()
     }
+}
+
+/// The one finite value `v` holds throughout (samples that are not numbers
+/// aside), if it holds one: the rule of [`MeasuredRun::dead_channels`].
+pub fn one_value(v: &[f64]) -> Option<f64> {
+    let mut finite = v.iter().copied().filter(|x| x.is_finite());
+    let first = finite.next()?;
+    finite.all(|x| x == first).then_some(first)
 }

@@ -344,6 +344,7 @@ pub fn measured_step_metrics(
         largest_sideslip,
     ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
+    warnings.extend(metrics.settling_warning());
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());
     }

@@ -169,3 +169,53 @@ fn a_dead_yaw_rate_is_refused_as_dead_and_a_dead_ay_is_left_out() {
     assert!(w.contains("channel `ay` holds one value (0)"), "{w}");
     assert!(!w.contains("the run has no `ay`"), "said twice: {w}");
 }
+
+/// The words of a response that has not settled in the steady window.
+const NOT_SETTLED: &str = "the response has not settled in the steady window (it spreads by more than 2 % of the step beyond its noise)";
+
+/// A steady window from 1.1 s, where the sedan's yaw rate still rings: the
+/// terminal warned that it had not settled and `--json` did not; the
+/// warning is the report's now, said once by both.
+#[test]
+fn metrics_json_says_a_response_has_not_settled_as_the_terminal_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let o = metrics_with_window(&history, "4.9");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+    assert_eq!(said.matches(NOT_SETTLED).count(), 1, "{said}");
+    let h = history.to_str().unwrap();
+    let args = [
+        "metrics",
+        h,
+        "--filter-hz",
+        "0",
+        "--steady-window",
+        "4.9",
+        "--json",
+    ];
+    let j: serde_json::Value = serde_json::from_str(&succeeds(&args)).unwrap();
+    assert_eq!(j["settled"], false, "{j}");
+    assert!(j["warnings"].to_string().contains(NOT_SETTLED), "{j}");
+    // A settled response is not warned of.
+    let settled = metrics_with_window(&history, "1");
+    assert!(!String::from_utf8_lossy(&settled.stdout).contains("not settled"));
+    assert!(!stderr(&settled).contains("not settled"));
+}
+
+/// `simulate`'s `metrics.json` carries the same warning.
+#[test]
+fn simulates_metrics_json_says_a_response_has_not_settled() {
+    let dir = tempfile::tempdir().unwrap();
+    let sc = sedan(dir.path(), "\n[metrics]\nsteady_window = 4.9\n");
+    let out = dir.path().join("out");
+    let stdout = succeeds(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(stdout.matches(NOT_SETTLED).count(), 1, "{stdout}");
+    let j = read_json(&out.join("metrics.json"));
+    assert!(j["warnings"].to_string().contains(NOT_SETTLED), "{j}");
+}

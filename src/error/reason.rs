@@ -125,7 +125,7 @@ pub enum ParamReason {
         ratio: f64,
     },
     /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have.
-    #[error("yaw_inertia / (mass·a·b) = {index:.3e}, outside {lo}–{hi} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)")]
+    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {lo}–{hi} (road vehicles about 0.8–1.2); check the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3))]
     DynamicIndex {
         /// The index of the values given.
         index: f64,
@@ -133,6 +133,30 @@ pub enum ParamReason {
         lo: f64,
         /// The largest index accepted.
         hi: f64,
+        /// The mass it was computed with, kg.
+        mass: f64,
+        /// a·b, m².
+        ab: f64,
+    },
+    /// A mass too small for a vehicle of its wheelbase: in tonnes, likely.
+    #[error("a vehicle with a wheelbase of {} m (a + b) weighs at least {} kg (a kart without its driver is about 75 kg): is the mass in tonnes? give it in kg ({} kg for {} t)", crate::format::significant(*wheelbase, 3), super::number::Num(*min), super::number::Num(1000.0 * mass), super::number::Num(*mass))]
+    MassTooSmall {
+        /// The mass given, kg.
+        mass: f64,
+        /// The least mass accepted, kg.
+        min: f64,
+        /// The wheelbase, m.
+        wheelbase: f64,
+    },
+    /// A centre of gravity so high that the car tips over standing.
+    #[error("the car would tip over at {} g of lateral acceleration (track/(2·cg_height) on the narrower track, {} m), below {} g, where even a loaded tanker truck holds about 0.35 g (cars 1.0–1.5 g): the rule asks for a cg_height of at most track/(2·0.3) = {} m; is it in another unit, or another key's value?", crate::format::significant(*tips_at, 2), super::number::Num(*track), super::number::Num(*min), crate::format::significant(track / (2.0 * min), 3))]
+    TipsOver {
+        /// track/(2·cg_height), g.
+        tips_at: f64,
+        /// The narrower track, m.
+        track: f64,
+        /// The least accepted, g.
+        min: f64,
     },
     /// A wheelbase that is not a + b (to 1 mm).
     #[error("a + b = {a} + {b} = {:.4} m differs from the wheelbase by more than 1 mm", a + b)]

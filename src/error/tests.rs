@@ -97,7 +97,7 @@ fn a_parameter_error_says_why_by_its_kind() {
     };
     let e = v.validate().unwrap_err();
     assert_eq!(e.key, "yaw_inertia");
-    let ParamReason::DynamicIndex { index, lo, hi } = e.reason else {
+    let ParamReason::DynamicIndex { index, lo, hi, .. } = e.reason else {
         panic!("not a dynamic index: {e:?}");
     };
     assert!(index > hi && lo < hi, "{index} outside {lo}–{hi}");

@@ -55,6 +55,22 @@ const MAX_LENGTH: f64 = 30.0;
 /// (g, kg·mm², slug).
 const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
 
+/// Least mass of a vehicle whose wheelbase is at least [`MASS_CHECK_WHEELBASE`],
+/// kg: a kart without its driver is about 75 kg. Less is a mass in tonnes
+/// (1.53 for 1530 kg), which the dynamic index blamed on `yaw_inertia`.
+const MIN_MASS: f64 = 50.0;
+
+/// Wheelbase from which [`MIN_MASS`] holds, m: below it (a scale model,
+/// a robot) nothing is judged by the mass alone.
+const MASS_CHECK_WHEELBASE: f64 = 1.0;
+
+/// Least static stability factor `track/(2·cg_height)`, the lateral
+/// acceleration (in g) at which a rigid car on a flat road tips over:
+/// road cars 1.0–1.5, a loaded tanker truck about 0.35. Below 0.3 g the
+/// centre of gravity is in the wrong unit or another key's value (5.5 m
+/// for 0.55).
+const MIN_TIP_OVER: f64 = 0.3;
+
 /// Range of a track over the wheelbase (the refusal's words state it):
 /// road cars about 0.55–0.65, a
 /// Formula Student car 0.8, a kart 1.1, a long truck or bus 0.3. A track
@@ -78,6 +94,34 @@ impl Vehicle {
     pub(crate) fn front_transfer_share(&self) -> f64 {
         self.load_transfer_front_share
             .unwrap_or(self.b / self.wheelbase())
+    }
+
+    /// A mass below [`MIN_MASS`] for a wheelbase of at least
+    /// [`MASS_CHECK_WHEELBASE`] (refused at `mass`, before the dynamic
+    /// index blames `yaw_inertia` for it), and a centre of gravity so high
+    /// that the car tips over at under [`MIN_TIP_OVER`] g: `cg_height >
+    /// track/(2·0.3)` on the narrower track (refused at `cg_height`).
+    fn plausible_mass_and_cg(&self) -> Result<(), ParamError> {
+        let l = self.wheelbase();
+        if l >= MASS_CHECK_WHEELBASE && self.mass < MIN_MASS {
+            let reason = ParamReason::MassTooSmall {
+                mass: self.mass,
+                min: MIN_MASS,
+                wheelbase: l,
+            };
+            return Err(ParamError::new("mass", self.mass, reason));
+        }
+        let track = self.track_front.min(self.track_rear);
+        let tips_at = track / (2.0 * self.cg_height);
+        if tips_at < MIN_TIP_OVER {
+            let reason = ParamReason::TipsOver {
+                tips_at,
+                track,
+                min: MIN_TIP_OVER,
+            };
+            return Err(ParamError::new("cg_height", self.cg_height, reason));
+        }
+        Ok(())
     }
 
     /// Checks every value for physical sense; the error names the key.
@@ -121,6 +165,10 @@ impl Vehicle {
                 return Err(ParamError::new(key, track, reason));
             }
         }
+        // After the track (a track in the wrong unit is the track's error,
+        // not the height's) and before the dynamic index (a mass in tonnes
+        // is the mass's, not the inertia's).
+        self.plausible_mass_and_cg()?;
         let index = self.yaw_inertia / (self.mass * self.a * self.b);
         if !(DYNAMIC_INDEX.0..=DYNAMIC_INDEX.1).contains(&index) {
             return Err(ParamError::new(
@@ -130,6 +178,8 @@ impl Vehicle {
                     index,
                     lo: DYNAMIC_INDEX.0,
                     hi: DYNAMIC_INDEX.1,
+                    mass: self.mass,
+                    ab: self.a * self.b,
                 },
             ));
         }

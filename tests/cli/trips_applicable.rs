@@ -61,7 +61,9 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
     // not settled in the steady window.
     assert_eq!(warnings.as_array().map(Vec::len), Some(5), "{warnings}");
     assert!(
-        warnings.to_string().contains("the response has not settled"),
+        warnings
+            .to_string()
+            .contains("the response has not settled"),
         "{warnings}"
     );
     assert!(

@@ -219,3 +219,65 @@ fn simulates_metrics_json_says_a_response_has_not_settled() {
     let j = read_json(&out.join("metrics.json"));
     assert!(j["warnings"].to_string().contains(NOT_SETTLED), "{j}");
 }
+
+/// `simulate` of the sedan whose `[vehicle]` has `from` replaced by `to`:
+/// its stderr, the run refused.
+fn sedan_vehicle_refused(from: &str, to: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let text = bundled_scenario("sedan_step.toml");
+    assert!(text.contains(from), "{from}");
+    let sc = dir.path().join("sedan_step.toml");
+    fs::write(&sc, text.replace(from, to)).unwrap();
+    let out = dir.path().join("out");
+    refused(
+        &run(&[
+            "simulate",
+            sc.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]),
+        &out,
+    )
+}
+
+/// A mass in tonnes (1.53) was blamed on `yaw_inertia` with a ratio of
+/// `8.162e2`; it is refused at `mass`, with the kilograms meant.
+#[test]
+fn a_mass_in_tonnes_is_refused_at_mass_not_blamed_on_the_inertia() {
+    let e = sedan_vehicle_refused("mass = 1530.0", "mass = 1.53");
+    assert!(e.contains("`vehicle.mass` = 1.53: a vehicle with a wheelbase of 2.78 m (a + b) weighs at least 50 kg"), "{e}");
+    assert!(
+        e.contains("is the mass in tonnes? give it in kg (1530 kg for 1.53 t)"),
+        "{e}"
+    );
+    assert!(!e.contains("yaw_inertia"), "{e}");
+    // An inertia off by 1e4 says both values and the radius of gyration
+    // they imply, in plain numbers.
+    let e = sedan_vehicle_refused("yaw_inertia = 2315.0", "yaw_inertia = 23150000.0");
+    assert!(e.contains("`vehicle.yaw_inertia` = 23150000: with mass = 1530 kg it gives a radius of gyration √(yaw_inertia/mass) of 123 m, against √(a·b) = 1.36 m from the axles: yaw_inertia / (mass·a·b) = 8162"), "{e}");
+    assert!(!e.contains("e3") && !e.contains("e2"), "{e}");
+}
+
+/// A centre of gravity 5.5 m up (for 0.55) was simulated without a word:
+/// the car would tip over standing at 0.14 g.
+#[test]
+fn a_cg_height_that_tips_the_car_over_is_refused_at_its_key() {
+    let e = sedan_vehicle_refused("cg_height = 0.55", "cg_height = 5.5");
+    assert!(e.contains("sedan_step.toml:13:13: `vehicle.cg_height` = 5.5: the car would tip over at 0.14 g of lateral acceleration"), "{e}");
+    assert!(
+        e.contains("a cg_height of at most track/(2·0.3) = 2.58 m"),
+        "{e}"
+    );
+    // A tall van's 1.5 m on the same track tips at 0.52 g: accepted.
+    let dir = tempfile::tempdir().unwrap();
+    let sc = dir.path().join("tall.toml");
+    let text = bundled_scenario("sedan_step.toml").replace("cg_height = 0.55", "cg_height = 1.5");
+    fs::write(&sc, text).unwrap();
+    let out = dir.path().join("out");
+    succeeds(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+}

@@ -72,10 +72,12 @@ pub enum InputProblem {
     },
     /// A key naming a file or folder that does not exist, or is the other
     /// of the two.
-    #[error("`{key}` names {}, {} (paths are relative to the folder of {})", target.display(), found.describe(), base.display())]
+    #[error("`{key}`{} names {}, {} ({})", written.as_ref().map_or(String::new(), |w| format!(" = \"{w}\"")), target.display(), found.describe(), read_from(written.as_deref(), base))]
     MissingFile {
         /// Dotted key.
         key: String,
+        /// The path as the file writes it, when the key holds one string.
+        written: Option<String>,
         /// The path it resolved to.
         target: PathBuf,
         /// The file the key is in.
@@ -533,6 +535,28 @@ impl InputProblem {
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
         }
+    }
+}
+
+/// Where [`InputProblem::MissingFile`]'s path was read from: a relative
+/// path as `written` in the file `base`, from that file's folder.
+fn read_from(written: Option<&str>, base: &std::path::Path) -> String {
+    let folder = match base.parent().map(|p| p.display().to_string()) {
+        Some(p) if !p.is_empty() => p,
+        _ => ".".into(),
+    };
+    match written {
+        Some(w) if std::path::Path::new(w).is_absolute() => {
+            format!("as written in {}", base.display())
+        }
+        Some(w) => format!(
+            "\"{w}\" read from {folder}, the folder of {}",
+            base.display()
+        ),
+        None => format!(
+            "relative paths are read from {folder}, the folder of {}",
+            base.display()
+        ),
     }
 }
 

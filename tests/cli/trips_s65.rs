@@ -281,3 +281,43 @@ fn a_cg_height_that_tips_the_car_over_is_refused_at_its_key() {
         out.to_str().unwrap(),
     ]);
 }
+
+/// `simulate sc/s.toml` run from `dir`, `sc/s.toml` holding `text`: its
+/// stderr, the run refused.
+fn simulate_from(dir: &Path, text: &str) -> String {
+    fs::create_dir_all(dir.join("sc")).unwrap();
+    fs::write(dir.join("sc/s.toml"), text).unwrap();
+    let o = bin()
+        .args(["simulate", "sc/s.toml", "--out", "out"])
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    refused(&o, &dir.join("out"))
+}
+
+/// A tyre path `../tyres/…` that does not exist was printed as
+/// `tyres/…` (relative to the working directory) beside "paths are
+/// relative to the folder of sc/s.toml"; the message gives the path as
+/// written and where it leads, absolute, and a replay's run alike.
+#[test]
+fn a_missing_path_is_given_as_written_and_as_resolved() {
+    let dir = tempfile::tempdir().unwrap();
+    let home = dir.path().canonicalize().unwrap();
+    let tyre = format!("{}/tyres/gim_sedan_front.toml", root().display());
+    let text = bundled_scenario("sedan_step.toml").replace(&tyre, "../tyres/absent.toml");
+    let e = simulate_from(&home, &text);
+    let expected = format!(
+        "sc/s.toml:16:9: `tyres.front` = \"../tyres/absent.toml\" names {}, which does not exist (\"../tyres/absent.toml\" read from sc, the folder of sc/s.toml)",
+        home.join("tyres/absent.toml").display()
+    );
+    assert!(e.contains(&expected), "{e}");
+    let replay = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"{tyre}\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"../runs/absent.csv\"\n"
+    );
+    let e = simulate_from(&home, &replay);
+    let expected = format!(
+        "`manoeuvre.run` = \"../runs/absent.csv\" names {}, which does not exist (\"../runs/absent.csv\" read from sc, the folder of sc/s.toml)",
+        home.join("runs/absent.csv").display()
+    );
+    assert!(e.contains(&expected), "{e}");
+}

@@ -86,7 +86,7 @@ pub enum MetricsError {
     NoCrossing(&'static str),
     /// The steer leaves its initial value inside the initial window: the
     /// record starts too close to the step to read the initial values.
-    #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step", Num(to - from))]
+    #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step; one of at most {} s ends before it moves", Num(to - from), fixed(((moved - from) * 100.0 + 1e-9).floor().max(0.0) / 100.0, 2))]
     StepInInitialWindow {
         /// Where the steer first is 5 % of its step off its initial value, s.
         moved: f64,

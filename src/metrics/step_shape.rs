@@ -40,10 +40,17 @@ pub(crate) fn check_step_shape(
     let (d0, _) = window_mean(t, &steer, from, to);
     let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
     let initial = t.partition_point(|x| *x <= to);
-    let moved = d[..initial]
-        .iter()
-        .position(|v| v.abs() > ONSET)
-        .map(|i| t[i]);
+    // Whether the steer moves inside the initial window is judged against
+    // the window's mean; where it moves, against its first value: a step
+    // inside the window pulls the mean, so the first sample already stands
+    // 5 % off it and "moves at 0.00 s" said nothing of where the step is.
+    let moved = d[..initial].iter().any(|v| v.abs() > ONSET).then(|| {
+        let i = d[..initial]
+            .iter()
+            .position(|v| (v - d[0]).abs() > ONSET)
+            .unwrap_or(0);
+        t[i]
+    });
     let (lo, hi) = HELD_STEP;
     let not_held = first_crossing(t, &d, 0.9, from).and_then(|reached| {
         (0..t.len())

@@ -321,3 +321,23 @@ fn a_missing_path_is_given_as_written_and_as_resolved() {
     );
     assert!(e.contains(&expected), "{e}");
 }
+
+/// A 1.2 s initial window over the sedan's step at 1.0 s was refused as a
+/// steer that "moves … at 0.00 s" (the first sample against the window's
+/// mean, which the step pulls); it says where the steer moves, and the
+/// longest window that ends before it.
+#[test]
+fn an_initial_window_over_the_step_says_where_the_steer_moves() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let h = history.to_str().unwrap();
+    let o = run(&["metrics", h, "--filter-hz", "0", "--pre-window", "1.2"]);
+    assert!(!o.status.success(), "a window over the step was measured");
+    let e = stderr(&o);
+    assert!(e.contains("the steer moves by more than 5 % of its step at 1.00 s, inside the initial window (0.00–1.20 s)"), "{e}");
+    assert!(
+        e.contains("one of at most 1.00 s ends before it moves"),
+        "{e}"
+    );
+    assert!(!e.contains("at 0.00 s"), "{e}");
+}

@@ -76,12 +76,13 @@ pub enum InputProblem {
     MissingFile {
         /// Dotted key.
         key: String,
-        /// The path as the file writes it, when the key holds one string.
-        written: Option<String>,
+        /// The path as the file writes it, when the key holds one string
+        /// (boxed, as the paths: the error stays as small as it was).
+        written: Option<Box<str>>,
         /// The path it resolved to.
-        target: PathBuf,
+        target: Box<std::path::Path>,
         /// The file the key is in.
-        base: PathBuf,
+        base: Box<std::path::Path>,
         /// What is there instead.
         found: PathFound,
     },

@@ -6,6 +6,13 @@
 use super::options::{ModeError, OptionsError};
 use thiserror::Error;
 
+/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
+/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
+/// gyration would be a tenth, or three times, of its axles' distance from
+/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
+/// (g, kg·mm², slug).
+pub const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
+
 /// The size of a row of `history.csv` as written, bytes (14 columns of
 /// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
 pub const HISTORY_ROW_BYTES: f64 = 280.0;
@@ -124,15 +131,12 @@ pub enum ParamReason {
         /// Track over wheelbase.
         ratio: f64,
     },
-    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have.
-    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {lo}–{hi} (road vehicles about 0.8–1.2); check the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3))]
+    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
+    /// ([`DYNAMIC_INDEX`]).
+    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road vehicles about 0.8–1.2); check the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1)]
     DynamicIndex {
         /// The index of the values given.
         index: f64,
-        /// The smallest index accepted.
-        lo: f64,
-        /// The largest index accepted.
-        hi: f64,
         /// The mass it was computed with, kg.
         mass: f64,
         /// a·b, m².

@@ -539,14 +539,15 @@ impl TomlSource {
             .clone()
             .and_then(|s| self.text.get(s))
             .and_then(|t| t.parse::<toml_edit::Value>().ok())
-            .and_then(|v| v.as_str().map(str::to_string));
+            .and_then(|v| v.as_str().map(Box::from));
         let problem = InputProblem::MissingFile {
             key: key_path.to_string(),
             written,
             target: super::paths::normalised(
                 &std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf()),
-            ),
-            base: self.path.clone(),
+            )
+            .into_boxed_path(),
+            base: self.path.clone().into_boxed_path(),
             found,
         };
         Err(self.located(span, problem))

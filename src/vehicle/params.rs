@@ -4,7 +4,7 @@
 //! to the front and rear axle.
 
 use crate::constants::G;
-use crate::error::{ParamError, ParamReason};
+use crate::error::{ParamError, ParamReason, DYNAMIC_INDEX};
 use serde::{Deserialize, Serialize};
 
 /// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
@@ -47,13 +47,6 @@ const MAX_MASS: f64 = 1e6;
 
 /// Largest axle distance or track, m: a unit slip (millimetres) beyond.
 const MAX_LENGTH: f64 = 30.0;
-
-/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
-/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
-/// gyration would be a tenth, or three times, of its axles' distance from
-/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
-/// (g, kg·mm², slug).
-const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
 
 /// Least mass of a vehicle whose wheelbase is at least [`MASS_CHECK_WHEELBASE`],
 /// kg: a kart without its driver is about 75 kg. Less is a mass in tonnes
@@ -176,8 +169,6 @@ impl Vehicle {
                 self.yaw_inertia,
                 ParamReason::DynamicIndex {
                     index,
-                    lo: DYNAMIC_INDEX.0,
-                    hi: DYNAMIC_INDEX.1,
                     mass: self.mass,
                     ab: self.a * self.b,
                 },

@@ -356,7 +356,9 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let dir = scratch(&[("c.toml", &text)]);
     let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
     assert!(
-        e.contains("c.toml:") && e.contains("`tyres.rig` names") && e.contains("rig.csv"),
+        e.contains("c.toml:")
+            && e.contains("`tyres.rig` = \"rig.csv\" names")
+            && e.contains("rig.csv"),
         "{e}"
     );
     let text = format!("{VEHICLE}\n[runs]\nfiles = [\"missing.csv\"]\n");

@@ -469,15 +469,6 @@ pub enum InputProblem {
 }
 
 impl InputProblem {
-    /// [`InputProblem::DeadChannel`] of a dead channel.
-    pub fn dead(d: &crate::measured::DeadChannel) -> Self {
-        InputProblem::DeadChannel {
-            channel: d.channel,
-            value: d.value,
-            required: d.required,
-        }
-    }
-
     /// The problem's name (its variant), for callers that report kinds.
     pub fn name(&self) -> &'static str {
         match self {

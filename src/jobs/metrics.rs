@@ -130,7 +130,7 @@ fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> 
                 "steady sideslip and TB"
             }
             _ => {
-                let problem = crate::error::InputProblem::dead(&d);
+                let problem = d.problem();
                 return Err(crate::error::InputError::problem(&run.path, problem).into());
             }
         };

@@ -59,6 +59,17 @@ pub struct DeadChannel {
     pub required: bool,
 }
 
+impl DeadChannel {
+    /// The refusal of a run with this dead channel.
+    pub fn problem(&self) -> crate::error::InputProblem {
+        crate::error::InputProblem::DeadChannel {
+            channel: self.channel,
+            value: self.value,
+            required: self.required,
+        }
+    }
+}
+
 impl MeasuredRun {
     /// The response channels (yaw rate, `ay`, `beta`) that hold one finite
     /// value over the whole run (samples that are not numbers aside), in

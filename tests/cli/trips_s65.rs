@@ -1,6 +1,8 @@
 //! What a fresh-eyes user still tripped on in `metrics` and `simulate`
-//! input handling (issue 41): a steady window reaching back over the step,
-//! accepted and measured as if the steer were held.
+//! input handling: a steady window reaching back over the step, a dead
+//! channel, a warning only the terminal gave, a mass in tonnes, a centre of
+//! gravity that tips the car over, a missing path, an initial window over
+//! the step.
 
 use super::*;
 

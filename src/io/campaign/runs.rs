@@ -275,7 +275,7 @@ fn steer_against_yaw(
 /// its noise floor would be zero and any gap to it infinitely significant.
 fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
     match run.dead_channels().first() {
-        Some(d) => Err(file_error(&run.path, InputProblem::dead(d))),
+        Some(d) => Err(file_error(&run.path, d.problem())),
         None => Ok(()),
     }
 }

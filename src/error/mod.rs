@@ -39,7 +39,7 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
-pub use reason::{Limit, ParamReason, ScheduleColumn};
+pub use reason::{Limit, ParamReason, ScheduleColumn, DYNAMIC_INDEX};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;

@@ -72,14 +72,17 @@ pub enum InputProblem {
     },
     /// A key naming a file or folder that does not exist, or is the other
     /// of the two.
-    #[error("`{key}` names {}, {} (paths are relative to the folder of {})", target.display(), found.describe(), base.display())]
+    #[error("`{key}`{} names {}, {} ({})", written.as_ref().map_or(String::new(), |w| format!(" = \"{w}\"")), target.display(), found.describe(), read_from(written.as_deref(), base))]
     MissingFile {
         /// Dotted key.
         key: String,
+        /// The path as the file writes it, when the key holds one string
+        /// (boxed, as the paths: the error stays as small as it was).
+        written: Option<Box<str>>,
         /// The path it resolved to.
-        target: PathBuf,
+        target: Box<std::path::Path>,
         /// The file the key is in.
-        base: PathBuf,
+        base: Box<std::path::Path>,
         /// What is there instead.
         found: PathFound,
     },
@@ -368,7 +371,7 @@ pub enum InputProblem {
     /// A response channel that holds one value over a whole run: a dead
     /// or unplugged sensor, to which no model can be fitted (its noise
     /// floor is zero, every gap infinitely significant).
-    #[error("channel `{channel}` holds one value ({}) over the whole run: a dead or unplugged sensor, to which no model can be fitted; {}", Num(*value), if *required { "fix the log or leave the run out" } else { "remove the column (it is optional) or fix the log" })]
+    #[error("channel `{channel}` holds one value ({}) over the whole run: a dead or unplugged sensor, which measures nothing (no model can be fitted to it, no metric read from it); {}", Num(*value), if *required { "fix the log or leave the run out" } else { "remove the column (it is optional) or fix the log" })]
     DeadChannel {
         /// The channel.
         channel: &'static str,
@@ -524,6 +527,28 @@ impl InputProblem {
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
         }
+    }
+}
+
+/// Where [`InputProblem::MissingFile`]'s path was read from: a relative
+/// path as `written` in the file `base`, from that file's folder.
+fn read_from(written: Option<&str>, base: &std::path::Path) -> String {
+    let folder = match base.parent().map(|p| p.display().to_string()) {
+        Some(p) if !p.is_empty() => p,
+        _ => ".".into(),
+    };
+    match written {
+        Some(w) if std::path::Path::new(w).is_absolute() => {
+            format!("as written in {}", base.display())
+        }
+        Some(w) => format!(
+            "\"{w}\" read from {folder}, the folder of {}",
+            base.display()
+        ),
+        None => format!(
+            "relative paths are read from {folder}, the folder of {}",
+            base.display()
+        ),
     }
 }
 

@@ -6,6 +6,13 @@
 use super::options::{ModeError, OptionsError};
 use thiserror::Error;
 
+/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
+/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
+/// gyration would be a tenth, or three times, of its axles' distance from
+/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
+/// (g, kg·mm², slug).
+pub const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
+
 /// The size of a row of `history.csv` as written, bytes (14 columns of
 /// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
 pub const HISTORY_ROW_BYTES: f64 = 280.0;
@@ -66,6 +73,16 @@ pub enum ParamReason {
         /// The record's end, s.
         end: f64,
     },
+    /// A steady window reaching back over the step's ramp: its means would
+    /// mix the step in. `settles`: where the steer reaches its step
+    /// (`start + rise_time`), `end` the record's end, s.
+    #[error("the steady window (the last `steady_window` s before `end` = {} s) starts before the steer settles at its step at {} s (`start` + `rise_time`): the steady values would mix the step in; a `steady_window` of at most {} s starts after it", super::number::Num(*end), super::number::Num(*settles), crate::format::fixed(((end - settles) * 100.0 + 1e-9).floor().max(0.0) / 100.0, 2))]
+    StepInSteadyWindow {
+        /// Where the steer reaches its step, s.
+        settles: f64,
+        /// The record's end, s.
+        end: f64,
+    },
     /// A step steer starting inside the metrics' initial window (0 to
     /// `pre_window`), which measures the straight running before it, s.
     #[error("the step starts inside the metrics' initial window (0 to `pre_window` = {} s), which measures the straight running before the step: the initial values would be the step's own; start the step at {} s or later, or shorten `[metrics] pre_window`", super::number::Num(*pre_window), super::number::Num(*pre_window))]
@@ -114,15 +131,36 @@ pub enum ParamReason {
         /// Track over wheelbase.
         ratio: f64,
     },
-    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have.
-    #[error("yaw_inertia / (mass·a·b) = {index:.3e}, outside {lo}–{hi} (road vehicles about 0.8–1.2): check the units of mass and yaw_inertia (kg, kg·m²)")]
+    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
+    /// ([`DYNAMIC_INDEX`]).
+    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road vehicles about 0.8–1.2); check the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1)]
     DynamicIndex {
         /// The index of the values given.
         index: f64,
-        /// The smallest index accepted.
-        lo: f64,
-        /// The largest index accepted.
-        hi: f64,
+        /// The mass it was computed with, kg.
+        mass: f64,
+        /// a·b, m².
+        ab: f64,
+    },
+    /// A mass too small for a vehicle of its wheelbase: in tonnes, likely.
+    #[error("a vehicle with a wheelbase of {} m (a + b) weighs at least {} kg (a kart without its driver is about 75 kg): is the mass in tonnes? give it in kg ({} kg for {} t)", crate::format::significant(*wheelbase, 3), super::number::Num(*min), super::number::Num(1000.0 * mass), super::number::Num(*mass))]
+    MassTooSmall {
+        /// The mass given, kg.
+        mass: f64,
+        /// The least mass accepted, kg.
+        min: f64,
+        /// The wheelbase, m.
+        wheelbase: f64,
+    },
+    /// A centre of gravity so high that the car tips over standing.
+    #[error("the car would tip over at {} g of lateral acceleration (track/(2·cg_height) on the narrower track, {} m), below {} g, where even a loaded tanker truck holds about 0.35 g (cars 1.0–1.5 g): the rule asks for a cg_height of at most track/(2·0.3) = {} m; is it in another unit, or another key's value?", crate::format::significant(*tips_at, 2), super::number::Num(*track), super::number::Num(*min), crate::format::significant(track / (2.0 * min), 3))]
+    TipsOver {
+        /// track/(2·cg_height), g.
+        tips_at: f64,
+        /// The narrower track, m.
+        track: f64,
+        /// The least accepted, g.
+        min: f64,
     },
     /// A wheelbase that is not a + b (to 1 mm).
     #[error("a + b = {a} + {b} = {:.4} m differs from the wheelbase by more than 1 mm", a + b)]

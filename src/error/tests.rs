@@ -97,9 +97,10 @@ fn a_parameter_error_says_why_by_its_kind() {
     };
     let e = v.validate().unwrap_err();
     assert_eq!(e.key, "yaw_inertia");
-    let ParamReason::DynamicIndex { index, lo, hi } = e.reason else {
+    let ParamReason::DynamicIndex { index, .. } = e.reason else {
         panic!("not a dynamic index: {e:?}");
     };
+    let (lo, hi) = crate::error::DYNAMIC_INDEX;
     assert!(index > hi && lo < hi, "{index} outside {lo}–{hi}");
     let e = ParamError::in_range("step", 0.2, 0.0, 0.05, Limit::OutputStep).unwrap_err();
     assert_eq!(

@@ -433,19 +433,38 @@ fn check_windows(src: &TomlSource, s: &MetricSettings, m: &Manoeuvre) -> Result<
         let e = ParamError::new("start", step.start, reason);
         return Err(param_error(src, Some("manoeuvre"), e));
     }
-    if s.pre_window + s.steady_window < step.end {
-        return Ok(());
+    if s.pre_window + s.steady_window >= step.end {
+        return Err(windows_beyond_record(src, s, step.end));
     }
+    // The steady values are the held step: a window reaching back over the
+    // steer's ramp reads a smaller step and hides the overshoot (the
+    // measured-run check, `MetricsError::StepInSteadyWindow`, mirrored).
+    let settles = step.start + step.rise_time.max(0.0);
+    // (1e-9 s: a window given to the digit where the steer settles, 6 −
+    // 4.9 s, is not refused for the rounding of its difference.)
+    if step.end - s.steady_window < settles - 1e-9 {
+        let reason = ParamReason::StepInSteadyWindow {
+            settles,
+            end: step.end,
+        };
+        let e = ParamError::new("steady_window", s.steady_window, reason);
+        return Err(param_error(src, Some("metrics"), e));
+    }
+    Ok(())
+}
+
+/// [`ParamReason::WindowsBeyondRecord`] at the longer window's key.
+fn windows_beyond_record(src: &TomlSource, s: &MetricSettings, end: f64) -> InputError {
     let reason = ParamReason::WindowsBeyondRecord {
         pre_window: s.pre_window,
         steady_window: s.steady_window,
-        end: step.end,
+        end,
     };
     let e = match s.pre_window > s.steady_window {
         true => ParamError::new("pre_window", s.pre_window, reason),
         false => ParamError::new("steady_window", s.steady_window, reason),
     };
-    Err(param_error(src, Some("metrics"), e))
+    param_error(src, Some("metrics"), e)
 }
 
 /// The steer a ramp reaches by its `end`, within ±[`MAX_ROAD_WHEEL_STEER`],

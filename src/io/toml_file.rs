@@ -531,13 +531,26 @@ impl TomlSource {
             (true, true, false) => PathFound::FolderNotFile,
             (true, false, true) => PathFound::FileNotFolder,
         };
+        // The path as written (a key holding one string) beside the path
+        // it resolved to, made absolute: a path relative to the working
+        // directory read as one relative to the file's folder.
+        let span = self.key_span(key_path);
+        let written = span
+            .clone()
+            .and_then(|s| self.text.get(s))
+            .and_then(|t| t.parse::<toml_edit::Value>().ok())
+            .and_then(|v| v.as_str().map(Box::from));
         let problem = InputProblem::MissingFile {
             key: key_path.to_string(),
-            target: path.to_path_buf(),
-            base: self.path.clone(),
+            written,
+            target: super::paths::normalised(
+                &std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf()),
+            )
+            .into_boxed_path(),
+            base: self.path.clone().into_boxed_path(),
             found,
         };
-        Err(self.located(self.key_span(key_path), problem))
+        Err(self.located(span, problem))
     }
 
     /// A located error for a value that failed validation.

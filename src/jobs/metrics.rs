@@ -5,7 +5,8 @@
 use crate::error::{Error, ParamError};
 use crate::io::{read_run_reading, AngleColumn, DeclaredBy};
 use crate::measured::clean::CleaningReport;
-use crate::metrics::measured::measured_step_metrics;
+use crate::measured::MeasuredRun;
+use crate::metrics::measured::{measured_step_metrics, NO_AY};
 use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
@@ -69,9 +70,15 @@ pub fn run_with_degrees(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let (run, unread_columns) =
+    let (mut run, unread_columns) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
+    let dead = leave_out_dead_channels(&mut run)?;
     let mut m = measured_step_metrics(run, min_speed, settings)?;
+    if !dead.is_empty() {
+        // A dead `ay`'s warning says more than that the run has none.
+        m.warnings.retain(|w| w != NO_AY);
+        m.warnings.splice(0..0, dead);
+    }
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
         m.warnings.push(format!(
@@ -98,6 +105,43 @@ pub fn run_with_degrees(
         t_start: m.t_start,
         t_end: m.t_end,
     })
+}
+
+/// Refuses a run whose yaw rate is dead ([`MeasuredRun::dead_channels`],
+/// the rule `diagnose` refuses runs by), and leaves out a dead `ay` or
+/// `beta`, returning the warning that says so: a sideslip sensor logging
+/// zeros was read as a steady sideslip of 0 (TB 0), and a dead `ay` as a
+/// response that does not change. Their metrics are `null`, not 0.
+fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> {
+    let mut warnings = Vec::new();
+    // A steer held throughout gives no response to a live sensor either
+    // (straight running): the run is refused as holding no step.
+    if crate::measured::one_value(&run.steer).is_some() {
+        return Ok(warnings);
+    }
+    for d in run.dead_channels() {
+        let left_out = match d.channel {
+            "ay" => {
+                run.ay = None;
+                "ay response time, steady ay, E_ay and Er"
+            }
+            "beta" => {
+                run.beta = None;
+                "steady sideslip and TB"
+            }
+            _ => {
+                let problem = d.problem();
+                return Err(crate::error::InputError::problem(&run.path, problem).into());
+            }
+        };
+        warnings.push(format!(
+            "{}: channel `{}` holds one value ({}) over the whole run: a dead or unplugged sensor; its metrics ({left_out}) are left out (null in --json), not read from it",
+            run.path.display(),
+            d.channel,
+            crate::error::Num(d.value)
+        ));
+    }
+    Ok(warnings)
 }
 
 impl MeasuredMetricsReport {
@@ -134,7 +178,8 @@ impl MeasuredMetricsReport {
 }
 
 /// The metric table: one line per metric, `—` where a response lacks one,
-/// and the notes on filtering, overshoot and settling.
+/// and the notes on filtering and overshoot (a response that has not
+/// settled is a warning of the report: [`StepMetrics::settling_warning`]).
 pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
     let opt =
         |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
@@ -204,9 +249,6 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  no overshoot: no yaw-rate maximum stands more than {} % above the steady state ({why})",
             crate::format::rounded(m.yaw_rate_peak_threshold, 3)
         ));
-    }
-    if !m.settled {
-        out.push("  warning: the response has not settled in the steady window (it spreads by more than 2 % of the step beyond its noise)".into());
     }
     out
 }

@@ -42,3 +42,61 @@ pub struct MeasuredRun {
     /// fits and scores (logger glitches, see [`clean`]), ascending.
     pub masked: Vec<usize>,
 }
+
+/// A response channel of a run that holds one value throughout: a dead or
+/// unplugged sensor (a logger writing zeros). Its noise floor is zero, so
+/// `diagnose` would take any gap to it as infinitely significant, and its
+/// step is none, so `metrics` would read a yaw rate that does not move as a
+/// unit error and a sideslip that does not as 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeadChannel {
+    /// The column.
+    pub channel: &'static str,
+    /// The one value it holds (in the run's units after reading).
+    pub value: f64,
+    /// Whether the format requires the column (`yaw_rate`), else it is
+    /// optional (`ay`, `beta`).
+    pub required: bool,
+}
+
+impl DeadChannel {
+    /// The refusal of a run with this dead channel.
+    pub fn problem(&self) -> crate::error::InputProblem {
+        crate::error::InputProblem::DeadChannel {
+            channel: self.channel,
+            value: self.value,
+            required: self.required,
+        }
+    }
+}
+
+impl MeasuredRun {
+    /// The response channels (yaw rate, `ay`, `beta`) that hold one finite
+    /// value over the whole run (samples that are not numbers aside), in
+    /// that order: the one rule of a dead channel, for every job.
+    pub fn dead_channels(&self) -> Vec<DeadChannel> {
+        let channels = [
+            ("yaw_rate", Some(&self.yaw_rate), true),
+            ("ay", self.ay.as_ref(), false),
+            ("beta", self.beta.as_ref(), false),
+        ];
+        channels
+            .into_iter()
+            .filter_map(|(channel, values, required)| {
+                one_value(values?).map(|value| DeadChannel {
+                    channel,
+                    value,
+                    required,
+                })
+            })
+            .collect()
+    }
+}
+
+/// The one finite value `v` holds throughout (samples that are not numbers
+/// aside), if it holds one: the rule of [`MeasuredRun::dead_channels`].
+pub fn one_value(v: &[f64]) -> Option<f64> {
+    let mut finite = v.iter().copied().filter(|x| x.is_finite());
+    let first = finite.next()?;
+    finite.all(|x| x == first).then_some(first)
+}

@@ -251,6 +251,11 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
     }
 }
 
+/// The warning of a run without `ay` (a dead `ay` left out says so itself,
+/// and `metrics` drops this one for it).
+pub(crate) const NO_AY: &str =
+    "the run has no `ay`: lateral-acceleration metrics and Er are left out";
+
 /// Cleans `run`, finds the piece with a steer step and measures it.
 pub fn measured_step_metrics(
     run: MeasuredRun,
@@ -339,9 +344,9 @@ pub fn measured_step_metrics(
         largest_sideslip,
     ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
+    warnings.extend(metrics.settling_warning());
     if metrics.ay_steady.is_none() {
-        warnings
-            .push("the run has no `ay`: lateral-acceleration metrics and Er are left out".into());
+        warnings.push(NO_AY.into());
     }
     Ok(MeasuredMetrics {
         metrics,

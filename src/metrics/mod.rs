@@ -234,6 +234,18 @@ pub struct StepMetrics {
 pub(crate) const MIN_STEP: f64 = 1.745e-4;
 
 impl StepMetrics {
+    /// The warning of a response that has not settled in the steady window
+    /// (`settled` false), for the report's `warnings`: in the typed report,
+    /// so that `--json`, `metrics.json` and the terminal say the same.
+    pub fn settling_warning(&self) -> Option<String> {
+        (!self.settled).then(|| {
+            format!(
+                "the response has not settled in the steady window (it spreads by more than {} % of the step beyond its noise)",
+                crate::error::Num(100.0 * SETTLED_SPREAD)
+            )
+        })
+    }
+
     /// The yaw-rate noise as the terminal says it, % of the step: two
     /// decimals, or two significant digits below 0.1 % (a noise-free
     /// run's 0.0042 % read `0.00 %`); none measured said so, not `0.00 %`

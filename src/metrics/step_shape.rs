@@ -40,10 +40,17 @@ pub(crate) fn check_step_shape(
     let (d0, _) = window_mean(t, &steer, from, to);
     let d: Vec<f64> = steer.iter().map(|x| (x - d0) / m.steer_step).collect();
     let initial = t.partition_point(|x| *x <= to);
-    let moved = d[..initial]
-        .iter()
-        .position(|v| v.abs() > ONSET)
-        .map(|i| t[i]);
+    // Whether the steer moves inside the initial window is judged against
+    // the window's mean; where it moves, against its first value: a step
+    // inside the window pulls the mean, so the first sample already stands
+    // 5 % off it and "moves at 0.00 s" said nothing of where the step is.
+    let moved = d[..initial].iter().any(|v| v.abs() > ONSET).then(|| {
+        let i = d[..initial]
+            .iter()
+            .position(|v| (v - d[0]).abs() > ONSET)
+            .unwrap_or(0);
+        t[i]
+    });
     let (lo, hi) = HELD_STEP;
     let not_held = first_crossing(t, &d, 0.9, from).and_then(|reached| {
         (0..t.len())
@@ -67,8 +74,48 @@ pub(crate) fn check_step_shape(
                     from: a,
                     limit: MAX_RISE,
                 }),
-                _ => Ok(()),
+                _ => check_steady_window(t, &steer, d0, s),
             }
         }
+    }
+}
+
+/// The initial window's test mirrored: the steer (filtered as the metrics
+/// were) must stay within 5 % of its step of its held value over the
+/// steady window, else the steady means mix the step in (a window that
+/// reaches back over it reads a smaller step and hides the overshoot).
+/// The held value is the median of the steer once it has crossed half of
+/// its change, not the steady window's mean, which the step itself pulls.
+fn check_steady_window(
+    t: &[f64],
+    steer: &[f64],
+    d0: f64,
+    s: &MetricSettings,
+) -> Result<(), MetricsError> {
+    let (from, to) = (t[t.len() - 1] - s.steady_window, t[t.len() - 1]);
+    let end = steer[steer.len() - 1];
+    let half = d0 + 0.5 * (end - d0);
+    let sign = (end - d0).signum();
+    let Some(reached) = steer.iter().position(|x| sign * (x - half) >= 0.0) else {
+        return Ok(());
+    };
+    let mut after = steer[reached..].to_vec();
+    after.sort_by(f64::total_cmp);
+    let held = after[after.len() / 2];
+    let band = ONSET * (held - d0).abs();
+    let last_off = (reached..t.len())
+        .rev()
+        .find(|&i| (steer[i] - held).abs() > band);
+    let first_off = (0..t.len()).find(|&i| t[i] >= from && (steer[i] - held).abs() > band);
+    match first_off {
+        None => Ok(()),
+        Some(_) => Err(MetricsError::StepInSteadyWindow {
+            settles: match last_off {
+                None => Some(t[reached]),
+                Some(i) => t.get(i + 1).copied(),
+            },
+            from,
+            to,
+        }),
     }
 }

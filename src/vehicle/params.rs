@@ -4,7 +4,7 @@
 //! to the front and rear axle.
 
 use crate::constants::G;
-use crate::error::{ParamError, ParamReason};
+use crate::error::{ParamError, ParamReason, DYNAMIC_INDEX};
 use serde::{Deserialize, Serialize};
 
 /// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
@@ -48,12 +48,21 @@ const MAX_MASS: f64 = 1e6;
 /// Largest axle distance or track, m: a unit slip (millimetres) beyond.
 const MAX_LENGTH: f64 = 30.0;
 
-/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
-/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
-/// gyration would be a tenth, or three times, of its axles' distance from
-/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
-/// (g, kg·mm², slug).
-const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
+/// Least mass of a vehicle whose wheelbase is at least [`MASS_CHECK_WHEELBASE`],
+/// kg: a kart without its driver is about 75 kg. Less is a mass in tonnes
+/// (1.53 for 1530 kg), which the dynamic index blamed on `yaw_inertia`.
+const MIN_MASS: f64 = 50.0;
+
+/// Wheelbase from which [`MIN_MASS`] holds, m: below it (a scale model,
+/// a robot) nothing is judged by the mass alone.
+const MASS_CHECK_WHEELBASE: f64 = 1.0;
+
+/// Least static stability factor `track/(2·cg_height)`, the lateral
+/// acceleration (in g) at which a rigid car on a flat road tips over:
+/// road cars 1.0–1.5, a loaded tanker truck about 0.35. Below 0.3 g the
+/// centre of gravity is in the wrong unit or another key's value (5.5 m
+/// for 0.55).
+const MIN_TIP_OVER: f64 = 0.3;
 
 /// Range of a track over the wheelbase (the refusal's words state it):
 /// road cars about 0.55–0.65, a
@@ -78,6 +87,34 @@ impl Vehicle {
     pub(crate) fn front_transfer_share(&self) -> f64 {
         self.load_transfer_front_share
             .unwrap_or(self.b / self.wheelbase())
+    }
+
+    /// A mass below [`MIN_MASS`] for a wheelbase of at least
+    /// [`MASS_CHECK_WHEELBASE`] (refused at `mass`, before the dynamic
+    /// index blames `yaw_inertia` for it), and a centre of gravity so high
+    /// that the car tips over at under [`MIN_TIP_OVER`] g: `cg_height >
+    /// track/(2·0.3)` on the narrower track (refused at `cg_height`).
+    fn plausible_mass_and_cg(&self) -> Result<(), ParamError> {
+        let l = self.wheelbase();
+        if l >= MASS_CHECK_WHEELBASE && self.mass < MIN_MASS {
+            let reason = ParamReason::MassTooSmall {
+                mass: self.mass,
+                min: MIN_MASS,
+                wheelbase: l,
+            };
+            return Err(ParamError::new("mass", self.mass, reason));
+        }
+        let track = self.track_front.min(self.track_rear);
+        let tips_at = track / (2.0 * self.cg_height);
+        if tips_at < MIN_TIP_OVER {
+            let reason = ParamReason::TipsOver {
+                tips_at,
+                track,
+                min: MIN_TIP_OVER,
+            };
+            return Err(ParamError::new("cg_height", self.cg_height, reason));
+        }
+        Ok(())
     }
 
     /// Checks every value for physical sense; the error names the key.
@@ -121,6 +158,10 @@ impl Vehicle {
                 return Err(ParamError::new(key, track, reason));
             }
         }
+        // After the track (a track in the wrong unit is the track's error,
+        // not the height's) and before the dynamic index (a mass in tonnes
+        // is the mass's, not the inertia's).
+        self.plausible_mass_and_cg()?;
         let index = self.yaw_inertia / (self.mass * self.a * self.b);
         if !(DYNAMIC_INDEX.0..=DYNAMIC_INDEX.1).contains(&index) {
             return Err(ParamError::new(
@@ -128,8 +169,8 @@ impl Vehicle {
                 self.yaw_inertia,
                 ParamReason::DynamicIndex {
                     index,
-                    lo: DYNAMIC_INDEX.0,
-                    hi: DYNAMIC_INDEX.1,
+                    mass: self.mass,
+                    ab: self.a * self.b,
                 },
             ));
         }

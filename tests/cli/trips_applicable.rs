@@ -57,8 +57,15 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         "{said}"
     );
     let warnings = read_json(&out.join("metrics.json"))["warnings"].clone();
-    // The slide and the spin, and each axle past its peak.
-    assert_eq!(warnings.as_array().map(Vec::len), Some(4), "{warnings}");
+    // The slide and the spin, each axle past its peak, and the response
+    // not settled in the steady window.
+    assert_eq!(warnings.as_array().map(Vec::len), Some(5), "{warnings}");
+    assert!(
+        warnings
+            .to_string()
+            .contains("the response has not settled"),
+        "{warnings}"
+    );
     assert!(
         said.contains("warning: the front axle's slip angle reaches 48.1° at t = 3.86 s (beyond 15° from t = 1.09 s)"),
         "{said}"

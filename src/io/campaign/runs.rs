@@ -271,30 +271,13 @@ fn steer_against_yaw(
 }
 
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the
-/// whole run (a dead sensor logging zeros): its noise floor would be zero
-/// and any gap to it infinitely significant.
+/// whole run (a dead sensor logging zeros, [`MeasuredRun::dead_channels`]):
+/// its noise floor would be zero and any gap to it infinitely significant.
 fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
-    let channels = [
-        ("yaw_rate", Some(&run.yaw_rate), true),
-        ("ay", run.ay.as_ref(), false),
-        ("beta", run.beta.as_ref(), false),
-    ];
-    for (channel, values, required) in channels {
-        let Some(v) = values else { continue };
-        let mut finite = v.iter().copied().filter(|x| x.is_finite());
-        let Some(first) = finite.next() else { continue };
-        if finite.all(|x| x == first) {
-            return Err(file_error(
-                &run.path,
-                InputProblem::DeadChannel {
-                    channel,
-                    value: first,
-                    required,
-                },
-            ));
-        }
+    match run.dead_channels().first() {
+        Some(d) => Err(file_error(&run.path, d.problem())),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 fn check_length(run: &MeasuredRun) -> Result<(), InputError> {

@@ -143,6 +143,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             peak_share.map(Overshoot::GripUsed),
         )
     });
+    warnings.extend(metrics.as_ref().and_then(StepMetrics::settling_warning));
     // A step no steering can drive (an instant one, at rise_time = 0).
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));

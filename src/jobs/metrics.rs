@@ -72,8 +72,14 @@ pub fn run_with_degrees(
     ParamError::finite("min_speed", min_speed)?;
     let (mut run, unread_columns) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
-    let dead = leave_out_dead_channels(&mut run)?;
-    let mut m = measured_step_metrics(run, min_speed, settings)?;
+    let mut dead = leave_out_dead_channels(&mut run)?;
+    let mut m = measured_step_metrics(run.clone(), min_speed, settings)?;
+    // An `ay` that disagrees with u·r is measured again without it.
+    if let Some(w) = m.ay_disagreement() {
+        run.ay = None;
+        m = measured_step_metrics(run, min_speed, settings)?;
+        dead.push(w);
+    }
     if !dead.is_empty() {
         // A dead `ay`'s warning says more than that the run has none.
         m.warnings.retain(|w| w != NO_AY);

@@ -213,6 +213,44 @@ pub struct MeasuredMetrics {
     pub warnings: Vec<String>,
     /// How the run was cleaned, every piece left out with its reason.
     pub cleaning: CleaningReport,
+    /// The piece's median speed, m/s.
+    pub speed: Option<f64>,
+}
+
+/// The share of `u·Δr` by which a steady `Δay` may differ from it before
+/// the accelerometer is said to disagree with the gyro: at a steady state
+/// `ay = u·r` (ISO 8855, `β̇ = 0`), over a step the bank's constant
+/// `g·sin θ` cancels, and a slowly changing speed moves it by a few
+/// percent, so half is a sensor fault (a dead accelerometer logging
+/// noise, a gain in g, a channel of another axis), not a car.
+pub const AY_DISAGREES: f64 = 0.5;
+
+/// The smallest `|u·Δr|` the check judges, m/s²: below it an
+/// accelerometer's noise and offset drift are of its size.
+pub const AY_CHECKED_FROM: f64 = 0.5;
+
+impl MeasuredMetrics {
+    /// The warning that the steady change of `ay` disagrees with the speed
+    /// times the steady change of the yaw rate (`None`: it agrees, or one of
+    /// them is missing or too small to judge).
+    pub fn ay_disagreement(&self) -> Option<String> {
+        let (ay, u) = (self.metrics.ay_steady?, self.speed?);
+        let expected = u * self.metrics.yaw_rate_steady;
+        if expected.abs() < AY_CHECKED_FROM
+            || (ay - expected).abs() <= AY_DISAGREES * expected.abs()
+        {
+            return None;
+        }
+        Some(format!(
+            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain or unit, another axis); the ay metrics (ay response time, steady ay, E_ay and Er) are left out (null in --json), not read from it",
+            self.piece,
+            crate::format::readable(ay, 3),
+            crate::format::readable(u, 3),
+            crate::format::readable(self.metrics.yaw_rate_steady, 3),
+            crate::format::readable(expected, 3),
+            crate::format::fixed(100.0 * AY_DISAGREES, 0)
+        ))
+    }
 }
 
 /// The first time after `from` at which `x` crosses `level` (linear
@@ -356,5 +394,6 @@ pub fn measured_step_metrics(
         steer_rise_time,
         warnings,
         cleaning,
+        speed,
     })
 }

@@ -343,3 +343,41 @@ fn an_initial_window_over_the_step_says_where_the_steer_moves() {
     );
     assert!(!e.contains("at 0.00 s"), "{e}");
 }
+
+/// An `ay` column of noise (a dead accelerometer is never exactly
+/// constant) gave `E_ay` 114 s and `Er` 114 s with no word but "not
+/// settled": it is checked against the speed times the yaw rate (at a
+/// steady state ay = u·r) and left out where it disagrees by half; the
+/// live channel of the same run passes the check.
+#[test]
+fn an_ay_that_disagrees_with_speed_times_yaw_rate_is_left_out_and_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let text = fs::read_to_string(&history).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let at = header.split(',').position(|c| c == "ay").unwrap();
+    let mut out = vec![header.to_string()];
+    // A deterministic ±0.05 m/s² scatter about 0.
+    for (k, line) in lines.enumerate() {
+        let mut cells: Vec<String> = line.split(',').map(String::from).collect();
+        cells[at] = format!("{}", 0.05 * ((k * 7919 % 13) as f64 / 6.0 - 1.0));
+        out.push(cells.join(","));
+    }
+    let noisy = dir.path().join("noisy_ay.csv");
+    fs::write(&noisy, out.join("\n") + "\n").unwrap();
+    let o = run(&["metrics", noisy.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(j["ay_steady"].is_null() && j["er"].is_null(), "{j}");
+    let w = j["warnings"].to_string();
+    assert!(w.contains("the steady change of `ay` ("), "{w}");
+    assert!(
+        w.contains("disagrees with the speed times that of the yaw rate (22.2 m/s × "),
+        "{w}"
+    );
+    let live = run(&["metrics", history.to_str().unwrap(), "--json"]);
+    let j: serde_json::Value = serde_json::from_slice(&live.stdout).unwrap();
+    assert!(j["ay_steady"].as_f64().is_some(), "{j}");
+    assert!(!j["warnings"].to_string().contains("disagrees"), "{j}");
+}

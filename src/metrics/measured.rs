@@ -242,7 +242,7 @@ impl MeasuredMetrics {
             return None;
         }
         Some(format!(
-            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain or unit, another axis); the ay metrics (ay response time, steady ay, E_ay and Er) are left out (null in --json), not read from it",
+            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics (ay response time, steady ay, E_ay and Er) are left out (null in --json), not read from it",
             self.piece,
             crate::format::readable(ay, 3),
             crate::format::readable(u, 3),

@@ -20,6 +20,18 @@ fn not_identifiable(dir: &Path, data: &Path, iterations: &str) -> Vec<String> {
         tir.to_str().unwrap(),
     ]);
     let text = fs::read_to_string(&tir).unwrap();
+    // A coefficient held by design says why where the user reads it, not
+    // "(see the module notes)" of a source they do not have.
+    let qbz9 = text
+        .lines()
+        .find(|l| l.contains("held: QBZ9 = "))
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!(
+        qbz9.contains(
+            "held by design: no stage fits it (QBZ9 is a second constant beside QBZ10·By·Cy"
+        ),
+        "{qbz9}"
+    );
     let mut held: Vec<String> = text
         .lines()
         .filter(|l| l.contains("not identifiable from these data"))

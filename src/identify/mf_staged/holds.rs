@@ -110,7 +110,7 @@ impl fmt::Display for HoldReason {
                     .collect();
                 f.write_str(&why.join(", "))
             }
-            HoldReason::ByDesign => f.write_str("held by design (see the module notes)"),
+            HoldReason::ByDesign => f.write_str(BY_DESIGN),
             HoldReason::Given => f.write_str("given with --hold"),
             HoldReason::NotIdentifiable {
                 fitted,
@@ -133,6 +133,11 @@ impl fmt::Display for HoldReason {
         }
     }
 }
+
+/// The words of [`HoldReason::ByDesign`]: why each coefficient no stage
+/// fits is held, said where the user reads it (it pointed at the module
+/// notes, which a user of the binary cannot read).
+const BY_DESIGN: &str = "held by design: no stage fits it (QBZ9 is a second constant beside QBZ10·By·Cy in the residual torque's slope, which rig data barely separate; QSY3 and QSY4 are the rolling resistance's speed terms, which a rig at one speed does not determine)";
 
 /// Why parameter `need` cannot be fitted with `have` levels.
 pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<HoldReason> {

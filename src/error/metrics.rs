@@ -86,7 +86,7 @@ pub enum MetricsError {
     NoCrossing(&'static str),
     /// The steer leaves its initial value inside the initial window: the
     /// record starts too close to the step to read the initial values.
-    #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step; one of at most {} s ends before it moves", Num(to - from), fixed(((moved - from) * 100.0 + 1e-9).floor().max(0.0) / 100.0, 2))]
+    #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step; one of at most {} s ends before it moves", Num(to - from), super::hundredths_down(moved - from + 1e-11))]
     StepInInitialWindow {
         /// Where the steer first is 5 % of its step off its initial value, s.
         moved: f64,
@@ -97,7 +97,7 @@ pub enum MetricsError {
     },
     /// The steer still moves inside the steady window: the steady values
     /// would mix the step in (a window that reaches back over the step).
-    #[error("the steer moves by more than 5 % of its step inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values: {}; the steady values would mix the step in", Num(to - from), settles.map_or("it does not settle within 5 % of its held value before the record ends".to_string(), |t| format!("it settles within 5 % of its held value only at {t:.2} s, so a `--steady-window` of at most {} s starts after it", fixed(((to - t) * 100.0).floor().max(0.0) / 100.0, 2))))]
+    #[error("the steer moves by more than 5 % of its step inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values: {}; the steady values would mix the step in", Num(to - from), settles.map_or("it does not settle within 5 % of its held value before the record ends".to_string(), |t| format!("it settles within 5 % of its held value only at {t:.2} s, so a `--steady-window` of at most {} s starts after it", super::hundredths_down(to - t))))]
     StepInSteadyWindow {
         /// From when on the steer stays within 5 % of its step of its held
         /// value, s (none: not before the record's end).

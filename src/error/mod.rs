@@ -33,6 +33,7 @@ pub use fit::{
 pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use metrics::{MetricsError, HELD_STEP};
+pub(crate) use number::hundredths_down;
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};

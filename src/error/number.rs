@@ -18,6 +18,15 @@ const DIGITS: usize = 6;
 /// means "not negative".
 const GUARD: f64 = 1e-9;
 
+/// A window length `seconds` rounded down to hundredths, as a refusal
+/// offers the longest window that fits (never longer than `seconds`, never
+/// below 0): one rule for the initial and steady windows of `metrics` and
+/// a scenario's `[metrics]`. A caller whose difference may fall a hair
+/// below a hundredth by rounding (6 − 4.9) adds its own guard.
+pub(crate) fn hundredths_down(seconds: f64) -> String {
+    crate::format::fixed((seconds * 100.0).floor().max(0.0) / 100.0, 2)
+}
+
 /// A number formatted for a message ([`Display`](fmt::Display)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Num(pub f64);

@@ -161,6 +161,24 @@ pub enum OutputError {
 }
 
 impl OutputError {
+    /// [`OutputError::IsAFolder`] where the file to write, `path`, names a
+    /// folder that exists (`stem.extension` the name offered in it), checked
+    /// before the job's work rather than at the rename after it.
+    pub fn unless_a_file(
+        path: &std::path::Path,
+        stem: &'static str,
+        extension: &'static str,
+    ) -> Result<(), OutputError> {
+        match path.is_dir() {
+            true => Err(OutputError::IsAFolder {
+                path: path.to_path_buf(),
+                stem,
+                extension,
+            }),
+            false => Ok(()),
+        }
+    }
+
     /// The output.
     pub fn path(&self) -> &std::path::Path {
         match self {

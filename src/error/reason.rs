@@ -76,7 +76,7 @@ pub enum ParamReason {
     /// A steady window reaching back over the step's ramp: its means would
     /// mix the step in. `settles`: where the steer reaches its step
     /// (`start + rise_time`), `end` the record's end, s.
-    #[error("the steady window (the last `steady_window` s before `end` = {} s) starts before the steer settles at its step at {} s (`start` + `rise_time`): the steady values would mix the step in; a `steady_window` of at most {} s starts after it", super::number::Num(*end), super::number::Num(*settles), crate::format::fixed(((end - settles) * 100.0 + 1e-9).floor().max(0.0) / 100.0, 2))]
+    #[error("the steady window (the last `steady_window` s before `end` = {} s) starts before the steer settles at its step at {} s (`start` + `rise_time`): the steady values would mix the step in; a `steady_window` of at most {} s starts after it", super::number::Num(*end), super::number::Num(*settles), super::hundredths_down(end - settles + 1e-11))]
     StepInSteadyWindow {
         /// Where the steer reaches its step, s.
         settles: f64,

@@ -6,7 +6,7 @@ use crate::error::{Error, ParamError};
 use crate::io::{read_run_reading, AngleColumn, DeclaredBy};
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{measured_step_metrics, NO_AY};
+use crate::metrics::measured::{measured_step_metrics, AY_METRICS, NO_AY};
 use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
@@ -129,7 +129,7 @@ fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> 
         let left_out = match d.channel {
             "ay" => {
                 run.ay = None;
-                "ay response time, steady ay, E_ay and Er"
+                AY_METRICS
             }
             "beta" => {
                 run.beta = None;

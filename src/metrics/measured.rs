@@ -225,6 +225,10 @@ pub struct MeasuredMetrics {
 /// noise, a gain in g, a channel of another axis), not a car.
 pub const AY_DISAGREES: f64 = 0.5;
 
+/// The metrics a run without a usable `ay` leaves out, as the warnings
+/// name them.
+pub(crate) const AY_METRICS: &str = "ay response time, steady ay, E_ay and Er";
+
 /// The smallest `|u·Δr|` the check judges, m/s²: below it an
 /// accelerometer's noise and offset drift are of its size.
 pub const AY_CHECKED_FROM: f64 = 0.5;
@@ -242,7 +246,7 @@ impl MeasuredMetrics {
             return None;
         }
         Some(format!(
-            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics (ay response time, steady ay, E_ay and Er) are left out (null in --json), not read from it",
+            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics ({AY_METRICS}) are left out (null in --json), not read from it",
             self.piece,
             crate::format::readable(ay, 3),
             crate::format::readable(u, 3),

@@ -301,7 +301,8 @@ fn broyden_update(j: &mut DMatrix<f64>, delta: &[f64], change: &[f64], bounds: &
     }
 }
 
-fn clamp(p: &mut [f64], bounds: &[(f64, f64)]) {
+/// `p` moved into `bounds`, each within its own.
+pub(crate) fn clamp(p: &mut [f64], bounds: &[(f64, f64)]) {
     for (x, (lo, hi)) in p.iter_mut().zip(bounds) {
         *x = x.clamp(*lo, *hi);
     }

@@ -35,7 +35,7 @@ use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
 use crate::format::readable;
-use crate::optim::bounded::BoundedLm;
+use crate::optim::bounded::{clamp, BoundedLm};
 use crate::optim::local::{LocalResult, Residuals};
 use serde::Serialize;
 use std::fmt;
@@ -304,7 +304,10 @@ pub(super) fn hold_undetermined(
                 .collect();
             let start = [without(&moved), without(&fit.p)]
                 .into_iter()
-                .map(|x| clamped(x, &bounds))
+                .map(|mut x| {
+                    clamp(&mut x, &bounds);
+                    x
+                })
                 .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
                 .unwrap_or_default();
             let r = lm.minimize(&sub, &start, &bounds);
@@ -342,14 +345,6 @@ pub(super) fn hold_undetermined(
         fit.p = p;
     }
     held
-}
-
-/// `x` within `bounds`.
-fn clamped(mut x: Vec<f64>, bounds: &[(f64, f64)]) -> Vec<f64> {
-    for (v, (lo, hi)) in x.iter_mut().zip(bounds) {
-        *v = v.clamp(*lo, *hi);
-    }
-    x
 }
 
 /// The hold the fit can best spare among those `tried` (parameter,

@@ -17,14 +17,7 @@ impl Options {
             return Ok(());
         };
         let expected = self.extension();
-        if out.is_dir() {
-            return Err(OutputError::IsAFolder {
-                path: out.clone(),
-                stem: "fit",
-                extension: expected,
-            }
-            .into());
-        }
+        OutputError::unless_a_file(out, "fit", expected)?;
         match out
             .extension()
             .map(|e| e.to_string_lossy().to_ascii_lowercase())

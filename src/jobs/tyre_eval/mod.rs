@@ -331,15 +331,7 @@ pub fn run(
     mode: Option<u32>,
 ) -> Result<TyreEvalReport, Error> {
     refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
-    // Before the evaluation, not at the rename after it.
-    if out.is_dir() {
-        return Err(crate::error::OutputError::IsAFolder {
-            path: out.to_path_buf(),
-            stem: "forces",
-            extension: "csv",
-        }
-        .into());
-    }
+    crate::error::OutputError::unless_a_file(out, "forces", "csv")?;
     let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
     if let Some(code) = mode {
         set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;

@@ -388,6 +388,20 @@ pub enum InputProblem {
         /// The steered samples.
         samples: usize,
     },
+    /// A yaw rate that does not follow the steer: it turns with it on no
+    /// more samples than against it, or holds one value wherever the steer
+    /// is held (a channel logging noise, a frozen sensor).
+    #[error("the yaw rate does not follow the steer: where the steer is held ({samples} samples at speed), {}; a steer in degrees or a steering-wheel angle would still turn the car with the steer on nearly all of them: is `yaw_rate` the gyro's yaw rate, logged while the car moved?", match one_value { Some(v) => format!("it holds one value, {} rad/s, on every one (a frozen sensor; the cleaning finds a stuck value only between moving samples)", crate::format::readable(*v, 3)), None => format!("it turns with the steer on {} % of them and against it on {} % (noise about zero, not a response)", crate::format::readable(100.0 * with_steer, 2), crate::format::readable(100.0 * against, 2)) })]
+    YawIgnoresSteer {
+        /// Share of the samples whose yaw rate turns with the steer.
+        with_steer: f64,
+        /// Share turning against it.
+        against: f64,
+        /// The one value the yaw rate holds on all of them, rad/s.
+        one_value: Option<f64>,
+        /// The held steered samples.
+        samples: usize,
+    },
     /// A steer far larger than the yaw rate it gives: in degrees, or a
     /// steering-wheel angle.
     #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
@@ -520,6 +534,7 @@ impl InputProblem {
             InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
+            InputProblem::YawIgnoresSteer { .. } => "YawIgnoresSteer",
             InputProblem::YawAboveSteer { .. } => "YawAboveSteer",
             InputProblem::DegreesColumnAbsent { .. } => "DegreesColumnAbsent",
             InputProblem::DegreesColumnUnread { .. } => "DegreesColumnUnread",

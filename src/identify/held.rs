@@ -28,6 +28,9 @@ pub enum HeldFor {
     },
     /// The model's identification never frees it.
     ByDesign,
+    /// PAC89's lateral curvature, held at or below its limit 1 where the
+    /// free fit's reversed the force (`jobs/identify/curvature_hold.rs`).
+    CurvatureLimit,
     /// A constant of a written `.tir`, set without a template.
     Constant {
         /// Where its value comes from.
@@ -68,6 +71,9 @@ impl fmt::Display for HeldFor {
                 plural(*have, "level", "levels")
             ),
             HeldFor::ByDesign => f.write_str("not fitted by this model's identification"),
+            HeldFor::CurvatureLimit => f.write_str(
+                "the lateral curvature held at or below 1: fitted free, it rose above 1 and turned the lateral force around past its peak (see the note)",
+            ),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
         }
     }

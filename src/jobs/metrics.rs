@@ -206,8 +206,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         // line after the table says how far), not a measured 0.
         format!(
             "  yaw-rate overshoot       {:>10} %",
-            match m.yaw_rate_peak_time {
-                Some(_) => format!("{:.2}", m.yaw_rate_overshoot),
+            match m.yaw_rate_overshoot {
+                Some(percent) => format!("{percent:.2}"),
                 None => format!("< {}", crate::format::rounded(m.yaw_rate_peak_threshold, 3)),
             }
         ),

@@ -179,8 +179,8 @@ pub fn applicability_with_grip(
             ),
         });
     }
-    if m.yaw_rate_overshoot > SPIN_OVERSHOOT {
-        out.push(overshoot_words(m.yaw_rate_overshoot, speed, overshoot));
+    if let Some(percent) = m.yaw_rate_overshoot.filter(|p| *p > SPIN_OVERSHOOT) {
+        out.push(overshoot_words(percent, speed, overshoot));
     }
     out
 }

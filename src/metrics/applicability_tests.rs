@@ -9,7 +9,7 @@ fn moderate() -> StepMetrics {
         time_zero: 1.0,
         yaw_rate_response_time: 0.15,
         yaw_rate_peak_time: Some(0.3),
-        yaw_rate_overshoot: 12.0,
+        yaw_rate_overshoot: Some(12.0),
         ay_response_time: Some(0.2),
         yaw_rate_gain: 0.3,
         yaw_rate_steady: 0.006,
@@ -46,7 +46,7 @@ fn a_slide_a_spin_and_a_crawl_are_each_said() {
         "{w:?}"
     );
     let spinning = StepMetrics {
-        yaw_rate_overshoot: 503.6,
+        yaw_rate_overshoot: Some(503.6),
         ..moderate()
     };
     let w = applicability(&spinning, Some(22.2));
@@ -62,7 +62,7 @@ fn a_slide_a_spin_and_a_crawl_are_each_said() {
     // The limits themselves pass: 10° and 100 % are still a response.
     let edge = StepMetrics {
         beta_steady: Some(SLIDING_SIDESLIP),
-        yaw_rate_overshoot: SPIN_OVERSHOOT,
+        yaw_rate_overshoot: Some(SPIN_OVERSHOOT),
         ..moderate()
     };
     assert!(applicability(&edge, Some(CRAWL_SPEED)).is_empty());
@@ -85,7 +85,7 @@ fn a_step_faster_than_any_steering_is_said_and_an_instant_one_named() {
 #[test]
 fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
     let ringing = StepMetrics {
-        yaw_rate_overshoot: 229.0,
+        yaw_rate_overshoot: Some(229.0),
         ..moderate()
     };
     let said = |e: Option<Overshoot>| applicability_with_grip(&ringing, Some(80.0), None, e);

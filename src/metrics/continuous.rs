@@ -250,7 +250,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         time_zero: t0,
         yaw_rate_response_time: tr - t0,
         yaw_rate_peak_time: peak_time,
-        yaw_rate_overshoot: peak.map_or(0.0, |(_, v)| (v - 1.0) * 100.0),
+        yaw_rate_overshoot: peak.map(|(_, v)| (v - 1.0) * 100.0),
         ay_response_time: Some(ta - t0),
         yaw_rate_gain: r_step / d_step,
         yaw_rate_steady: r_step,

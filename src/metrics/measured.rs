@@ -86,7 +86,7 @@ fn held(t: &[f64], steer: &[f64]) -> Vec<bool> {
 /// steer divided by 57 once more) is judged on its steered samples alike,
 /// so that its ratio, far above 1, is seen. `metrics` and `diagnose` judge
 /// a run by it alike ([`steer_problem`]).
-pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<(f64, usize)> {
+pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<YawPerNeutral> {
     let at_speed: Vec<usize> = (0..run.t.len())
         .filter(|&i| run.speed[i] >= min_speed.max(5.0))
         .collect();
@@ -105,18 +105,54 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         _ => return None,
     };
     let held = held(&run.t, &run.steer);
-    let mut q: Vec<f64> = at_speed
+    let samples: Vec<usize> = at_speed
         .into_iter()
         .filter(|&i| run.steer[i].abs() >= steered && held[i])
-        .map(|i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
-        .filter(|q| q.is_finite())
+        .filter(|&i| (run.yaw_rate[i] / (run.speed[i] * run.steer[i])).is_finite())
+        .collect();
+    let mut q: Vec<f64> = samples
+        .iter()
+        .map(|&i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
         .collect();
     if q.len() < STEER_CHECK_SAMPLES {
         return None;
     }
-    let n = q.len();
-    Some((median(&mut q), n))
+    let n = q.len() as f64;
+    let share = |f: fn(f64) -> bool| q.iter().filter(|x| f(**x)).count() as f64 / n;
+    let (with_steer, against) = (share(|x| x > 0.0), share(|x| x < 0.0));
+    let yaw: Vec<f64> = samples.iter().map(|&i| run.yaw_rate[i]).collect();
+    Some(YawPerNeutral {
+        median: median(&mut q),
+        samples: q.len(),
+        with_steer,
+        against,
+        one_value: crate::measured::one_value(&yaw),
+    })
 }
+
+/// A run's yaw rate against a neutral car's where its steer is held
+/// ([`yaw_per_neutral`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct YawPerNeutral {
+    /// The median of `r·l/(u·δ)`.
+    pub median: f64,
+    /// The held steered samples it is taken over.
+    pub samples: usize,
+    /// Their share whose yaw rate turns with the steer (`r·δ > 0`).
+    pub with_steer: f64,
+    /// Their share whose yaw rate turns against it (`r·δ < 0`).
+    pub against: f64,
+    /// The one value the yaw rate holds over all of them, if it holds one
+    /// (a sensor frozen after the step), rad/s.
+    pub one_value: Option<f64>,
+}
+
+/// The share of held steered samples a yaw rate must turn on one side of
+/// the steer to follow it: a steer in degrees or a steering-wheel angle
+/// still turns the car with the steer on nearly every sample (its yaw rate
+/// stands many noise spreads from 0), a yaw rate that logs noise or a
+/// frozen sensor on about half or none.
+const FOLLOWS_STEER: f64 = 0.8;
 
 /// The wheelbase a run's steer is judged with.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -149,7 +185,8 @@ impl Wheelbase {
 /// radians). Each refuses the run, in `metrics`, in a replay and in
 /// `diagnose` alike: fitted, such a steer gives a model-form error that is
 /// a unit slip.
-pub fn steer_problem(median: f64, samples: usize, wheelbase: Wheelbase) -> Option<InputProblem> {
+pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputProblem> {
+    let (median, samples) = (y.median, y.samples);
     let assumed = match wheelbase {
         Wheelbase::Known(_) => None,
         Wheelbase::Unknown => Some(LONGEST_WHEELBASE),
@@ -162,7 +199,7 @@ pub fn steer_problem(median: f64, samples: usize, wheelbase: Wheelbase) -> Optio
             Some(SHORTEST_WHEELBASE),
         ),
     };
-    if median < -STEER_IN_DEGREES {
+    let units = if median < -STEER_IN_DEGREES {
         Some(InputProblem::YawAgainstSteer { median, samples })
     } else if median < STEER_IN_DEGREES {
         Some(InputProblem::SteerAboveYaw {
@@ -178,6 +215,20 @@ pub fn steer_problem(median: f64, samples: usize, wheelbase: Wheelbase) -> Optio
         })
     } else {
         None
+    };
+    // A yaw rate that does not follow the steer either way, or holds one
+    // value wherever the steer is held, says nothing of the steer's units:
+    // the channel itself is wrong. (A quantised gyro may hold one value
+    // over a single steady state whose ratio is a car's: no claim then.)
+    let follows = y.with_steer >= FOLLOWS_STEER || y.against >= FOLLOWS_STEER;
+    match units {
+        Some(_) if y.one_value.is_some() || !follows => Some(InputProblem::YawIgnoresSteer {
+            with_steer: y.with_steer,
+            against: y.against,
+            one_value: y.one_value,
+            samples,
+        }),
+        units => units,
     }
 }
 
@@ -187,10 +238,10 @@ pub fn steer_problem(median: f64, samples: usize, wheelbase: Wheelbase) -> Optio
 /// times a neutral car's.
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let wheelbase = Wheelbase::Unknown;
-    let Some((median, samples)) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
+    let Some(y) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
         return Ok(());
     };
-    match steer_problem(median, samples, wheelbase) {
+    match steer_problem(&y, wheelbase) {
         Some(problem) => Err(InputError::problem(&run.path, problem)),
         None => Ok(()),
     }

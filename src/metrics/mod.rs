@@ -22,7 +22,7 @@
 //!   `MAD(Δx)/(0.6745·√2)` — the few differences of the step itself do not
 //!   move a median — times the filter's noise gain `√Σh²`); without one
 //!   there is no overshoot (peak time none,
-//!   overshoot 0, TB none); overshoot = (r̂_peak − 1)·100 %;
+//!   overshoot none, TB none); overshoot = (r̂_peak − 1)·100 %;
 //! - steady-state yaw-rate gain (r_ss − r₀)/(δ_ss − δ₀), 1/s; steady sideslip
 //!   β_ss − β₀, rad; TB = peak response time × steady sideslip in s·deg
 //!   (GB/T's unit);
@@ -190,8 +190,10 @@ pub struct StepMetrics {
     pub yaw_rate_response_time: f64,
     /// Yaw-rate peak response time, s; `None` without a peak above steady state.
     pub yaw_rate_peak_time: Option<f64>,
-    /// Yaw-rate overshoot, % (0 without a peak).
-    pub yaw_rate_overshoot: f64,
+    /// Yaw-rate overshoot, %; `None` without a peak: below
+    /// the threshold the run resolves (a measured run's
+    /// `yaw_rate_peak_threshold`), not a measured 0.
+    pub yaw_rate_overshoot: Option<f64>,
     /// Lateral-acceleration response time, s (`None` for a run without `ay`).
     pub ay_response_time: Option<f64>,
     /// Steady-state yaw-rate gain r/δ, 1/s.
@@ -513,7 +515,7 @@ pub(crate) fn step_metrics(
         time_zero: t0,
         yaw_rate_response_time: tr - t0,
         yaw_rate_peak_time: peak_time,
-        yaw_rate_overshoot: peak_at.map_or(0.0, |i| (v[i] - 1.0) * 100.0),
+        yaw_rate_overshoot: peak_at.map(|i| (v[i] - 1.0) * 100.0),
         ay_response_time: ta.map(|ta| ta - t0),
         yaw_rate_gain: r.steady / d.steady,
         yaw_rate_steady: r.steady,

@@ -165,7 +165,10 @@ impl Metric {
             Metric::AyTotalVariance => m.ay_total_variance,
             Metric::YawRateResponseTime => Some(m.yaw_rate_response_time),
             Metric::AyResponseTime => m.ay_response_time,
-            Metric::YawRateOvershoot => Some(m.yaw_rate_overshoot),
+            // A map or a design target reads a response without a peak as
+            // no overshoot: 0, so that its contours close over the
+            // well-damped cars.
+            Metric::YawRateOvershoot => Some(m.yaw_rate_overshoot.unwrap_or(0.0)),
             Metric::YawRatePeakTime => m.yaw_rate_peak_time,
             Metric::YawRateGain => Some(m.yaw_rate_gain),
             Metric::BetaSteady => m.beta_steady,

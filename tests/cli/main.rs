@@ -310,6 +310,7 @@ mod trips_s63;
 mod trips_s64;
 mod trips_s64b;
 mod trips_s65;
+mod trips_s66;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -180,7 +180,8 @@ fn an_overdamped_noisy_response_has_no_overshoot() {
     for seed in 1..=12 {
         let m = metrics(dir.path(), "run.csv", &run_csv(&cols, 0.005, seed));
         assert!(m["yaw_rate_peak_time"].is_null(), "seed {seed}: {m}");
-        assert_eq!(f(&m, "yaw_rate_overshoot"), 0.0);
+        // Below what the run resolves: not a measured 0.
+        assert!(m["yaw_rate_overshoot"].is_null(), "seed {seed}: {m}");
         assert!(m["tb"].is_null());
     }
 }

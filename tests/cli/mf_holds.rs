@@ -57,3 +57,52 @@ fn which_coefficient_of_a_traded_pair_is_held_does_not_depend_on_the_iteration_c
     assert!(short.contains(&"PKY4".to_string()), "{short:?}");
     assert_eq!(short, long);
 }
+
+/// At 20 iterations the pure-Fy stage stops on its cap with PKY4 =
+/// 0.455 ± 0.38 free, where 60 or more hold it: its standard errors, and
+/// what they call not identifiable, are those of where it stopped, and the
+/// stage's warning says so, on the terminal and in the report alike.
+#[test]
+fn a_stage_stopped_on_its_cap_says_its_holds_are_judged_where_it_stopped() {
+    let Some(data) = shared_data(
+        "a_stage_stopped_on_its_cap_says_its_holds_are_judged_where_it_stopped",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let tir = dir.path().join("short.tir");
+    let said = succeeds(&[
+        "identify",
+        data.to_str().unwrap(),
+        "--model",
+        "mf61",
+        "--max-iterations",
+        "20",
+        "--out",
+        tir.to_str().unwrap(),
+    ]);
+    let report = read_json(&tir.with_extension("report.json"));
+    let words = "its standard errors, and what they call not identifiable and hold, are taken where it stopped, not at an optimum";
+    let unconverged: Vec<&serde_json::Value> = report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["skipped"].is_null() && s["converged"] == false)
+        .collect();
+    assert!(
+        !unconverged.is_empty(),
+        "20 iterations stop a stage short: {said}"
+    );
+    for s in &unconverged {
+        assert!(
+            s["warnings"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|w| w.as_str().unwrap().contains(words)),
+            "{s}"
+        );
+    }
+    assert_eq!(said.matches(words).count(), unconverged.len(), "{said}");
+}

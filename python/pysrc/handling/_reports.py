@@ -57,8 +57,8 @@ class StepMetrics:
     """Yaw-rate response time (time zero to 90 % of steady state), s."""
     yaw_rate_peak_time: Optional[float]
     """Yaw-rate peak response time, s; None without a peak above steady state."""
-    yaw_rate_overshoot: float
-    """Yaw-rate overshoot, % (0 without a peak)."""
+    yaw_rate_overshoot: Optional[float]
+    """Yaw-rate overshoot, %; None without a peak (below what the run resolves)."""
     ay_response_time: Optional[float]
     """Lateral-acceleration response time, s (None without ``ay``)."""
     yaw_rate_gain: float

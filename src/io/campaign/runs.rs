@@ -252,10 +252,11 @@ fn steer_against_yaw(
     min_speed: f64,
     declared: bool,
 ) -> Result<Option<String>, InputError> {
-    let Some((m, n)) = yaw_per_neutral(run, wheelbase, min_speed) else {
+    let Some(y) = yaw_per_neutral(run, wheelbase, min_speed) else {
         return Ok(None);
     };
-    if let Some(problem) = steer_problem(m, n, Wheelbase::Known(wheelbase)) {
+    let (m, n) = (y.median, y.samples);
+    if let Some(problem) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
         return Err(file_error(&run.path, problem));
     }
     let ask = match declared {

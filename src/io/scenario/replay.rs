@@ -59,8 +59,8 @@ pub(super) fn resolve(
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)?;
-    if let Some((m, n)) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
-        if let Some(p) = steer_problem(m, n, Wheelbase::Known(wheelbase)) {
+    if let Some(y) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
+        if let Some(p) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
             return Err(InputError::problem(run_path, p));
         }
     }

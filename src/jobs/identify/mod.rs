@@ -14,6 +14,8 @@ use crate::io::rig::read_rig;
 mod choices;
 mod curvature;
 pub use curvature::{Curvature, CurvatureExcess, Pac89Reversal};
+mod curvature_hold;
+pub use curvature_hold::CurvatureHeld;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;
@@ -209,6 +211,10 @@ pub struct SwarmReport {
     /// where its lateral force changes sign.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pac89_reversal: Option<Pac89Reversal>,
+    /// PAC89: the lateral curvature held at its limit where the free fit's
+    /// reversed the force, and that fit's σ.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curvature_held: Option<CurvatureHeld>,
     /// The aligning moment's fit.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub aligning: Option<Fit>,
@@ -462,6 +468,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         fit,
         two_stage: None,
         pac89_reversal: None,
+        curvature_held: None,
         written: None,
         linear_window: window,
         aligning: None,
@@ -485,6 +492,9 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
     if asks_two_stage && first == Channel::LateralForce && o.hold.is_empty() {
         two_stage::two_stage(o, &mut r, &settings)?;
+    }
+    if let Tyre::Pac89(_) = r.tyre {
+        curvature_hold::hold_curvature(o, &mut r, &tyre0, &settings)?;
     }
     // The aligning moment, where the data have it and the model has one,
     // with the lateral parameters just fitted held.

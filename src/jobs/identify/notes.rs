@@ -143,6 +143,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         .flatten()
         .flat_map(|f| later_fit_notes(r, f))
         .chain(unfitted_notes(r))
+        .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))
         .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))
         .collect()
 }

@@ -97,6 +97,13 @@ impl SwarmReport {
                 format!("  writing the direct fit (σ over all points {d} %, the two-stage result's {c} % to the printed precision, not lower beyond it)")
             });
         }
+        if let (Some(Written::CurvatureHeld), Some(h)) = (self.written, &self.curvature_held) {
+            out.push(format!(
+                "  writing the direct fit again with its lateral curvature held (σ over all points {} %): the better of the direct fit and the two-stage result, σ {} %, turned the lateral force around (below)",
+                crate::format::readable(h.sigma_percent, 4),
+                crate::format::readable(h.free_sigma_percent, 4)
+            ));
+        }
         if let Some(mz) = &self.aligning {
             out.push(format!(
                 "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",
@@ -121,6 +128,11 @@ impl SwarmReport {
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
         out.extend(unfitted_notes(self).iter().map(|n| n.line(" ")));
+        out.extend(
+            self.curvature_held
+                .as_ref()
+                .map(|x| format!("  {}", x.line())),
+        );
         out.extend(
             self.pac89_reversal
                 .map(|x| format!("  warning: {}", x.line())),

@@ -21,6 +21,10 @@ pub enum Written {
     TwoStage,
     /// The direct swarm fit.
     Direct,
+    /// The direct fit again with its lateral curvature held, the fit
+    /// chosen of the two having reversed the force
+    /// (`curvature_hold.rs`).
+    CurvatureHeld,
 }
 
 /// Zhang et al.'s (2021) two stages with the overall σ of their result.

@@ -497,18 +497,29 @@ impl TyreEvalReport {
     /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
-            // MFeval takes the rolling resistance at the load given, not
-            // the one saturated to FZMAX: said, or a 1 MN point's `my`
-            // reads as one evaluated at the file's range.
-            Some(m) if self.clamped > 0 => format!(
-                " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
-                 camber or pressure, evaluated at the ranges' ends{}",
-                self.clamped,
-                match self.columns.iter().any(|(n, _)| *n == "my") {
-                    true => " (`my` at the load given, as MFeval does)",
-                    false => "",
-                }
-            ),
+            // MFeval takes the rolling resistance and the loaded radius at
+            // the load given, not the one saturated to FZMAX: said, or a
+            // 1 MN point's `my` or `rl` reads as one evaluated at the
+            // file's range.
+            Some(m) if self.clamped > 0 => {
+                let given: Vec<String> = ["my", "rl"]
+                    .into_iter()
+                    .filter(|k| self.columns.iter().any(|(n, _)| n == k))
+                    .map(|k| format!("`{k}`"))
+                    .collect();
+                format!(
+                    " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
+                     camber or pressure, evaluated at the ranges' ends{}",
+                    self.clamped,
+                    match given.is_empty() {
+                        false => format!(
+                            " ({} at the load given, as MFeval does)",
+                            given.join(" and ")
+                        ),
+                        true => String::new(),
+                    }
+                )
+            }
             Some(m) => format!(" in MFeval mode {m}"),
             None => String::new(),
         };

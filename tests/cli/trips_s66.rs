@@ -1,0 +1,183 @@
+//! What a fresh-eyes user still tripped on: a yaw rate that logs noise or
+//! freezes after the step blamed on the steer's units; an overshoot below
+//! what the run resolves written as a measured 0; a loaded radius past the
+//! file's load range said to be evaluated at its end.
+
+use super::*;
+
+/// The bundled sedan step steer (1° at 1.0–1.1 s, to 6 s) simulated into
+/// `dir/run`: its history's header and rows.
+fn sedan_rows(dir: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let sc = dir.join("sedan_step.toml");
+    fs::write(&sc, bundled_scenario("sedan_step.toml")).unwrap();
+    let out = dir.join("run");
+    succeeds(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let text = fs::read_to_string(out.join("history.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<String> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+/// Writes the sedan's t, steer, speed, yaw rate and ay to `dir/name`, at
+/// 100 Hz, the yaw rate and steer of each row made by `change(t, steer,
+/// yaw_rate, row)`; returns the path.
+fn measured(
+    dir: &Path,
+    name: &str,
+    change: &dyn Fn(f64, f64, f64, usize) -> (f64, f64),
+) -> PathBuf {
+    let (header, rows) = sedan_rows(dir);
+    let at = |k: &str| header.iter().position(|h| h == k).unwrap();
+    let (t, steer, speed, r, ay) = (at("t"), at("steer"), at("speed"), at("yaw_rate"), at("ay"));
+    let mut text = String::from("t,steer,speed,yaw_rate,ay\n");
+    for (i, row) in rows.iter().step_by(10).enumerate() {
+        let (d, y) = change(row[t], row[steer], row[r], i);
+        text += &format!("{},{d},{},{y},{}\n", row[t], row[speed], row[ay]);
+    }
+    let path = dir.join(name);
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// A yaw rate logging only noise about zero (a channel not wired to the
+/// gyro) read as "42× smaller than a neutral car's: is `steer` in
+/// degrees?": now refused as not following the steer, with the shares of
+/// samples turning with and against it; a steer in degrees, whose yaw rate
+/// does follow it, is still asked about its units.
+#[test]
+fn a_yaw_rate_logging_noise_is_refused_as_not_following_the_steer_not_as_units() {
+    let dir = tempfile::tempdir().unwrap();
+    // A deterministic scatter of ±0.003 rad/s about zero, both signs alike.
+    let noise = |i: usize| 0.003 * (((i * 7919) % 13) as f64 - 6.0) / 6.0;
+    let run_path = measured(dir.path(), "noise.csv", &|_, d, _, i| (d, noise(i)));
+    let o = run(&["metrics", run_path.to_str().unwrap()]);
+    assert!(!o.status.success(), "a noise-only yaw rate was measured");
+    let e = stderr(&o);
+    assert!(e.contains("the yaw rate does not follow the steer"), "{e}");
+    assert!(e.contains("noise about zero, not a response"), "{e}");
+    assert!(!e.contains("is `steer` in degrees"), "{e}");
+    // The same run with its real yaw rate and the steer in degrees.
+    let degrees = measured(dir.path(), "degrees.csv", &|_, d, r, _| (d.to_degrees(), r));
+    let e = stderr(&run(&["metrics", degrees.to_str().unwrap()]));
+    assert!(e.contains("is `steer` in degrees (57×)"), "{e}");
+    assert!(!e.contains("does not follow the steer"), "{e}");
+}
+
+/// A yaw rate that freezes after the step (the sensor stops updating and
+/// the logger repeats its last value to the end) is refused as frozen,
+/// with the value it holds; the cleaning cannot flag a hold that reaches
+/// the end of the record, so the refusal names it.
+#[test]
+fn a_yaw_rate_frozen_after_the_step_is_refused_as_frozen() {
+    let dir = tempfile::tempdir().unwrap();
+    let run_path = measured(dir.path(), "frozen.csv", &|t, d, r, _| {
+        (d, if t < 1.05 { r } else { 0.0012 })
+    });
+    let o = run(&["metrics", run_path.to_str().unwrap()]);
+    assert!(!o.status.success(), "a frozen yaw rate was measured");
+    let e = stderr(&o);
+    assert!(
+        e.contains("it holds one value, 0.00120 rad/s, on every one (a frozen sensor"),
+        "{e}"
+    );
+    assert!(!e.contains("is `steer` in degrees"), "{e}");
+}
+
+/// A run whose yaw rate has no maximum above its steady state wrote
+/// `"yaw_rate_overshoot": 0.0` where the terminal said "< 1 %": the file
+/// now writes null, as it does the peak time, and a run with a peak
+/// writes the number the terminal gives.
+#[test]
+fn an_overshoot_below_what_the_run_resolves_is_null_not_a_measured_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    // A first-order yaw rate (time constant 0.1 s): no maximum above its
+    // steady state.
+    let flat = measured(dir.path(), "flat.csv", &|t, d, _, _| {
+        (d, 0.065 * (1.0 - (-(t - 1.05).max(0.0) / 0.1).exp()))
+    });
+    let (said, m) = table_and_json(&flat);
+    assert!(m["yaw_rate_peak_time"].is_null(), "{said}");
+    assert!(m["yaw_rate_overshoot"].is_null(), "{m}");
+    assert!(overshoot_line(&said).contains("< "), "{said}");
+    // A second-order response with a 16 % overshoot: a number, as said.
+    let ringing = measured(dir.path(), "ringing.csv", &|t, d, _, _| {
+        let s = (t - 1.05).max(0.0);
+        let (z, w) = (0.5_f64, 12.0_f64);
+        let wd = w * (1.0 - z * z).sqrt();
+        let resp = 1.0 - (-z * w * s).exp() * ((wd * s).cos() + z * w / wd * (wd * s).sin());
+        (d, 0.065 * resp)
+    });
+    let (said, m) = table_and_json(&ringing);
+    let percent = m["yaw_rate_overshoot"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{m}"));
+    assert!((10.0..20.0).contains(&percent), "{m}");
+    let line = overshoot_line(&said);
+    assert!(
+        line.contains(&format!("{percent:.2}")),
+        "{line} against {percent}"
+    );
+}
+
+/// `metrics <run>`'s table and `metrics <run> --json`'s object.
+fn table_and_json(run_path: &Path) -> (String, serde_json::Value) {
+    let said = succeeds(&["metrics", run_path.to_str().unwrap()]);
+    let json = succeeds(&["metrics", run_path.to_str().unwrap(), "--json"]);
+    (said, serde_json::from_str(&json).unwrap())
+}
+
+/// The table's overshoot line.
+fn overshoot_line(said: &str) -> String {
+    said.lines()
+        .find(|l| l.contains("yaw-rate overshoot"))
+        .unwrap_or_else(|| panic!("{said}"))
+        .to_string()
+}
+
+/// With the limit checks on (mode 121) a load above `FZMAX` is said to be
+/// evaluated at that end, but the loaded radius, like the rolling
+/// resistance, takes the load given (MFeval's `calculateRhoRl61` takes
+/// `Fz_lowLimit`, limited below only): the closing line names both, and
+/// the file shows it (`rl` differs between 40 kN and the 18 kN end, the
+/// forces do not).
+#[test]
+fn a_loaded_radius_past_the_load_range_is_said_to_take_the_load_given() {
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let points = "fz,kappa,alpha,camber,speed\n18000,0,0.05,0,16.7\n40000,0,0.05,0,16.7\n";
+    let dir = scratch(&[("points.csv", points)]);
+    let out = dir.path().join("forces.csv");
+    let said = succeeds(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        said.contains("(`my` and `rl` at the load given, as MFeval does)"),
+        "{said}"
+    );
+    let text = fs::read_to_string(&out).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    let col = |k: &str| header.iter().position(|h| *h == k).unwrap();
+    assert_eq!(rows[0][col("fy")], rows[1][col("fy")], "{text}");
+    assert_ne!(rows[0][col("rl")], rows[1][col("rl")], "{text}");
+}

@@ -124,4 +124,11 @@ fn named_hold(e: handling::error::Error, hold: &[(String, f64)]) -> anyhow::Erro
 }
 
 /// The options `Options::validate` names by their Python keyword.
-const OPTIONS: [&str; 5] = ["bin_deg", "bin_kappa", "load", "pressure", "camber"];
+const OPTIONS: [&str; 6] = [
+    "bin_deg",
+    "bin_kappa",
+    "load",
+    "pressure",
+    "camber",
+    "max_iterations",
+];

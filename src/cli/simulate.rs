@@ -125,6 +125,26 @@ fn cut_off(text: &str) -> Result<f64, String> {
     }
 }
 
+/// A refused setting said at the option the user typed (`--filter-hz 1`),
+/// where the library names it by its key (`filter_hz`, as a scenario's
+/// `[metrics]` and Python's keyword do).
+fn at_flag(e: handling::error::Error) -> anyhow::Error {
+    const SETTINGS: [&str; 6] = [
+        "filter_hz",
+        "min_overshoot",
+        "pre_window",
+        "steady_window",
+        "variance_window",
+        "min_speed",
+    ];
+    match &e {
+        handling::error::Error::Param(p) if SETTINGS.contains(&p.key.as_str()) => {
+            anyhow::anyhow!("--{}: {e}", p.key.replace('_', "-"))
+        }
+        _ => e.into(),
+    }
+}
+
 /// `handling metrics`: notes on stderr, the table or JSON on stdout.
 pub fn metrics(a: MetricsArgs) -> Result<()> {
     let settings = MetricSettings {
@@ -136,7 +156,8 @@ pub fn metrics(a: MetricsArgs) -> Result<()> {
         min_overshoot: a.min_overshoot,
         ..MetricSettings::default()
     };
-    let r = metrics::run_with_degrees(&a.run, &settings, a.min_speed, &a.degrees)?;
+    let r =
+        metrics::run_with_degrees(&a.run, &settings, a.min_speed, &a.degrees).map_err(at_flag)?;
     for line in r.notes() {
         eprintln!("{line}");
     }

@@ -12,7 +12,9 @@ use serde::Serialize;
 use std::path::Path;
 
 /// The units of the metric reports.
-pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot in %; \
+pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot, \
+                         yaw_rate_peak_threshold and yaw_rate_filter_ringing in %; \
+                         yaw_rate_noise as a fraction of the step (the terminal's % / 100); \
                          tb in s·deg (GB/T 6323); total variances and er in s";
 
 /// The optional channels of a run that the step's metrics read: the

@@ -349,6 +349,26 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
 pub(crate) const NO_AY: &str =
     "the run has no `ay`: lateral-acceleration metrics and Er are left out";
 
+/// The warning of a steady window whose response samples the cleaning
+/// masked (a stuck sensor to the end of the record, spikes) and the
+/// metrics read filled from their neighbours: the steady state then stands
+/// on the fill.
+fn filled_steady(piece: &MeasuredRun, window: f64) -> Option<String> {
+    let last = *piece.t.last()?;
+    let from = last - window;
+    let inside = piece.t.iter().filter(|t| **t >= from).count();
+    let masked = piece.masked.iter().filter(|&&i| piece.t[i] >= from).count();
+    (masked > 0).then(|| {
+        format!(
+            "{masked} of the {inside} samples of the steady window ({from:.2}–{last:.2} s) are masked by the cleaning (see its lines) and were filled from the samples beside them: the steady state, the gain and what is measured against them stand on that fill{}",
+            match 2 * masked > inside {
+                true => ", not on measurements: do not use these metrics",
+                false => "",
+            }
+        )
+    })
+}
+
 /// Cleans `run`, finds the piece with a steer step and measures it.
 pub fn measured_step_metrics(
     run: MeasuredRun,
@@ -438,6 +458,7 @@ pub fn measured_step_metrics(
     ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
     warnings.extend(metrics.settling_warning());
+    warnings.extend(filled_steady(&piece, settings.steady_window));
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());
     }

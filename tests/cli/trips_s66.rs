@@ -181,3 +181,83 @@ fn a_loaded_radius_past_the_load_range_is_said_to_take_the_load_given() {
     assert_eq!(rows[0][col("fy")], rows[1][col("fy")], "{text}");
     assert_ne!(rows[0][col("rl")], rows[1][col("rl")], "{text}");
 }
+
+/// A gyro that freezes a second after the step (400 of 601 samples at one
+/// value to the end) was measured without a word, its noise before the
+/// step called 66 spikes: the hold is found as stuck, the noise is not,
+/// and the metrics warn that their steady window stands on the fill.
+#[test]
+fn a_yaw_rate_frozen_to_the_end_is_found_stuck_and_its_steady_window_said_filled() {
+    let dir = tempfile::tempdir().unwrap();
+    // ±0.002 rad/s of deterministic scatter on every sample before 2 s.
+    let noise = |i: usize| 0.002 * (((i * 7919) % 13) as f64 - 6.0) / 6.0;
+    let run_path = measured(dir.path(), "late.csv", &|t, d, r, i| {
+        (d, if t <= 2.0 { r + noise(i) } else { 0.0646 })
+    });
+    let o = run(&["metrics", run_path.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let e = stderr(&o);
+    // The scatter before the step is no longer taken for spikes (66 were;
+    // one sample at the step's onset may be).
+    let spikes: usize = e
+        .split("zero reads, ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(spikes <= 2 && e.contains(", 1 stuck value, "), "{e}");
+    assert!(e.contains("stuck at 2.010 s in "), "{e}");
+    assert!(
+        e.contains("late.csv: yaw_rate 0.0646 (400 samples, masked)"),
+        "{e}"
+    );
+    assert!(
+        e.contains(
+            "101 of the 101 samples of the steady window (5.00–6.00 s) are masked by the cleaning"
+        ),
+        "{e}"
+    );
+    assert!(e.contains("do not use these metrics"), "{e}");
+    // The same run without the freeze: no stuck value, no such warning.
+    let fine = measured(dir.path(), "fine.csv", &|_, d, r, i| (d, r + noise(i)));
+    let e = stderr(&run(&["metrics", fine.to_str().unwrap()]));
+    assert!(e.contains(" 0 stuck values"), "{e}");
+    assert!(!e.contains("masked by the cleaning"), "{e}");
+}
+
+/// `--max-iterations 0` fitted nothing and reported a fit ("stopped at its
+/// cap of 0 iterations", coefficients held as "the data do not move it");
+/// a metrics setting the library refuses was named by its key
+/// (`filter_hz`), not by the option typed.
+#[test]
+fn no_iterations_are_refused_and_a_refused_metrics_setting_names_its_option() {
+    let dir = tempfile::tempdir().unwrap();
+    let rig = "fz,alpha,fy\n4000,0.0,0\n4000,0.05,3000\n4000,0.1,4000\n";
+    fs::write(dir.path().join("rig.csv"), rig).unwrap();
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "mf61",
+        "--max-iterations",
+        "0",
+        "--out",
+        dir.path().join("x.tir").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("--max-iterations: `max_iterations` = 0: must be positive"),
+        "{e}"
+    );
+    assert!(!dir.path().join("x.tir").exists());
+    let run_path = measured(dir.path(), "run.csv", &|_, d, r, _| (d, r));
+    let e = stderr(&run(&[
+        "metrics",
+        run_path.to_str().unwrap(),
+        "--filter-hz",
+        "1",
+    ]));
+    assert!(e.starts_with("error: --filter-hz: `filter_hz` = 1"), "{e}");
+}

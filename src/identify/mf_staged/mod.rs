@@ -360,8 +360,9 @@ pub struct StageReport {
     pub rms: f64,
     /// Condition number of the column-scaled Jacobian at the optimum.
     pub condition_number: f64,
-    /// Whether LM stopped on its own test.
-    pub converged: bool,
+    /// Whether LM stopped on its own test, or where a Gauss–Newton step
+    /// would barely improve the fit (`None`: the stage was skipped).
+    pub converged: Option<bool>,
     /// Evaluations of the stage's channel at its rows (one per row per
     /// residual vector; a differenced Jacobian counts its columns, an
     /// exact one nothing).
@@ -388,7 +389,7 @@ impl StageReport {
             paper_sigma_percent: stage.paper_sigma_percent(),
             rms: f64::NAN,
             condition_number: f64::NAN,
-            converged: false,
+            converged: None,
             evaluations: 0,
             seconds: 0.0,
             parameters: Vec::new(),

@@ -330,7 +330,7 @@ pub(super) fn run_stage(
         paper_sigma_percent: stage.paper_sigma_percent(),
         rms,
         condition_number: u.condition,
-        converged,
+        converged: Some(converged),
         evaluations: evaluations * fit.problem.count(),
         seconds: t0.elapsed().as_secs_f64(),
         parameters,

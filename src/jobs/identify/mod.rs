@@ -113,6 +113,8 @@ impl Options {
         if let Some(c) = self.camber {
             ParamError::finite("camber", c)?;
         }
+        // No iteration is no fit: its report would read as one.
+        ParamError::positive("max_iterations", self.max_iterations as f64)?;
         for (name, v) in &self.hold {
             ParamError::finite(name, *v)?;
             ParamError::in_range(name, *v, -1e6, 1e6, Limit::HoldValue)?;

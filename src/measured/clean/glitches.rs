@@ -95,9 +95,20 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
     if n < 5 {
         return Vec::new();
     }
-    let sc = scale(x, slow);
     let mut flagged = vec![false; n];
     let mut out = Vec::new();
+    // A hold to the end of the record is judged first and kept out of the
+    // spread: its zero differences would make the noise before it spikes.
+    let tail = frozen_tail(x, slow);
+    let sc = match tail {
+        Some(f) => {
+            flagged[f.start..].iter_mut().for_each(|b| *b = true);
+            out.push(f);
+            let held: Vec<bool> = (0..n).map(|i| slow[i] || i >= f.start).collect();
+            scale(x, &held)
+        }
+        None => scale(x, slow),
+    };
     zero_reads(x, &sc, &mut flagged, &mut out);
     spikes(x, sc.threshold, &mut flagged, &mut out);
     stuck_values(x, slow, &mut flagged, &mut out);
@@ -181,6 +192,37 @@ fn spikes(x: &[f64], tt: f64, flagged: &mut [bool], out: &mut Vec<Found>) {
             });
         }
     }
+}
+
+/// A hold that runs to the end of the record (a sensor that stopped
+/// updating, the logger repeating its last value): [`stuck_values`] judges
+/// a hold by both sides and cannot see it. Judged by the side it has: at
+/// least [`MIN_STUCK`] samples, not all slow, after a stretch of at least
+/// [`STUCK_CONTEXT`] samples (up to the hold's length) that moves on most
+/// samples (fewer than half its differences zero) and roughly (second
+/// differences at least half the first: noise, not a smooth noise-free
+/// signal), and long enough that chance would hardly hold the channel so
+/// (`n·p₀^(len−1) < 1e-3`, `p₀` the share of zero differences before it).
+fn frozen_tail(x: &[f64], slow: &[bool]) -> Option<Found> {
+    let n = x.len();
+    let last = x[n - 1];
+    let start = (0..n).rev().take_while(|&i| x[i] == last).last()?;
+    let len = n - start;
+    let from = start.saturating_sub(len.max(STUCK_CONTEXT));
+    if start < STUCK_CONTEXT || len < MIN_STUCK || slow[start..].iter().all(|s| *s) {
+        return None;
+    }
+    let d: Vec<f64> = (from + 1..=start).map(|k| x[k] - x[k - 1]).collect();
+    let zeros = d.iter().filter(|v| **v == 0.0).count();
+    let m1 = d.iter().map(|v| v.abs()).sum::<f64>() / d.len() as f64;
+    let m2 = d.windows(2).map(|w| (w[1] - w[0]).abs()).sum::<f64>() / (d.len() - 1) as f64;
+    let p0 = zeros as f64 / d.len() as f64;
+    let chance = n as f64 * p0.powi(len as i32 - 1);
+    (2 * zeros < d.len() && m1 > 0.0 && m2 >= 0.5 * m1 && chance < 1e-3).then_some(Found {
+        start,
+        len,
+        kind: GlitchKind::Stuck,
+    })
 }
 
 /// Stuck values: holds that chance would hardly give this channel.
@@ -330,6 +372,35 @@ mod tests {
     use super::super::test_signals::{gauss_noise, no_slow};
     use super::super::{clean_runs, CleanSettings};
     use super::*;
+
+    /// A noisy channel that holds its last value to the end of the record
+    /// is stuck from where the hold starts, and its noise before is no
+    /// spike; a noise-free smooth signal that ends level, a short hold at
+    /// the end and a parked end are not stuck.
+    #[test]
+    fn a_hold_to_the_end_of_a_noisy_channel_is_stuck_and_its_noise_no_spike() {
+        for seed in 0..10 {
+            let mut x = gauss_noise(600, 0.01, seed);
+            let held = x[199];
+            x[200..].iter_mut().for_each(|v| *v = held);
+            let found = detect(&x, &no_slow(600));
+            assert_eq!(found.len(), 1, "seed {seed}: {found:?}");
+            assert_eq!((found[0].start, found[0].len), (199, 401), "seed {seed}");
+            assert_eq!(found[0].kind, GlitchKind::Stuck);
+            // Parked from where it holds: a stopped car, not a sensor.
+            let slow: Vec<bool> = (0..600).map(|i| i >= 199).collect();
+            assert!(detect(&x, &slow).is_empty(), "seed {seed}");
+            // Three samples alike at the end are chance, not a hold.
+            let mut y = gauss_noise(600, 0.01, seed);
+            y[597..].iter_mut().for_each(|v| *v = 0.5);
+            assert!(frozen_tail(&y, &no_slow(600)).is_none(), "seed {seed}");
+        }
+        // A first-order rise, noise-free, reaching its level in doubles.
+        let smooth: Vec<f64> = (0..600)
+            .map(|i| (1.0 - (-(i as f64) / 20.0).exp()).min(0.999))
+            .collect();
+        assert!(frozen_tail(&smooth, &no_slow(600)).is_none());
+    }
 
     #[test]
     fn white_noise_a_step_and_a_sweep_have_no_glitch() {

@@ -404,7 +404,7 @@ pub enum InputProblem {
     },
     /// A steer far larger than the yaw rate it gives: in degrees, or a
     /// steering-wheel angle.
-    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
+    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's)", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
     SteerAboveYaw {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,

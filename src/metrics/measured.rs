@@ -350,15 +350,16 @@ pub(crate) const NO_AY: &str =
     "the run has no `ay`: lateral-acceleration metrics and Er are left out";
 
 /// The warning of a steady window whose response samples the cleaning
-/// masked (a stuck sensor to the end of the record, spikes) and the
-/// metrics read filled from their neighbours: the steady state then stands
-/// on the fill.
+/// masked (a stuck sensor to the end of the record, a burst of spikes) and
+/// the metrics read filled from their neighbours, for a tenth of the
+/// window or more: the steady state then stands on the fill. A spike or
+/// two filled is what the cleaning is for, not worth a word.
 fn filled_steady(piece: &MeasuredRun, window: f64) -> Option<String> {
     let last = *piece.t.last()?;
     let from = last - window;
     let inside = piece.t.iter().filter(|t| **t >= from).count();
     let masked = piece.masked.iter().filter(|&&i| piece.t[i] >= from).count();
-    (masked > 0).then(|| {
+    (10 * masked >= inside && masked > 0).then(|| {
         format!(
             "{masked} of the {inside} samples of the steady window ({from:.2}–{last:.2} s) are masked by the cleaning (see its lines) and were filled from the samples beside them: the steady state, the gain and what is measured against them stand on that fill{}",
             match 2 * masked > inside {

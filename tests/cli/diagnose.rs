@@ -856,7 +856,7 @@ fn a_steer_in_another_unit_or_sign_is_caught_against_the_yaw_rate() {
     // takes a 5 m wheelbase where the campaign gives the vehicle's).
     let dir = folder("1.1459");
     let e = campaign_err(dir.path());
-    let slip = "is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians";
+    let slip = "is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's)";
     assert!(
         e.contains("a.csv: the yaw rate is 41× smaller than a neutral car's for this steer")
             && e.contains(slip),

@@ -244,12 +244,6 @@ pub(super) fn run_stage(
         }
     };
     let mut evaluations = result.evaluations;
-    // Stopped on its cap at a point a Gauss–Newton step would barely
-    // improve, the stage is at its optimum for the holds and the report
-    // (`Uncertainty::at_optimum`); the strict test per iteration is the
-    // optimiser's, not the data's.
-    let converged = result.converged
-        || (run.start != StartScheme::Paper && uncertainty(&problem, &result.params).at_optimum());
     let mut fit = StageFit {
         problem,
         needs: free.iter().map(|f| f.1).collect(),
@@ -290,6 +284,11 @@ pub(super) fn run_stage(
     *tyre = fit.problem.tyre(&fit.p);
     let (sigma_end, rms, ..) = sigma(stage, tyre, rows);
     let u = uncertainty(&fit.problem, &fit.p);
+    // Stopped on its cap at a point a Gauss–Newton step would barely
+    // improve (after its holds), the stage is at its optimum for the
+    // report (`Uncertainty::at_optimum`); the strict test per iteration
+    // is the optimiser's, not the data's.
+    let converged = result.converged || (run.start != StartScheme::Paper && u.at_optimum());
     let parameters = table
         .iter()
         .map(|(name, need)| {

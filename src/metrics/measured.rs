@@ -105,15 +105,17 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         _ => return None,
     };
     let held = held(&run.t, &run.steer);
-    let samples: Vec<usize> = at_speed
+    let (samples, mut q): (Vec<usize>, Vec<f64>) = at_speed
         .into_iter()
         .filter(|&i| run.steer[i].abs() >= steered && held[i])
-        .filter(|&i| (run.yaw_rate[i] / (run.speed[i] * run.steer[i])).is_finite())
-        .collect();
-    let mut q: Vec<f64> = samples
-        .iter()
-        .map(|&i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
-        .collect();
+        .map(|i| {
+            (
+                i,
+                run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]),
+            )
+        })
+        .filter(|(_, q)| q.is_finite())
+        .unzip();
     if q.len() < STEER_CHECK_SAMPLES {
         return None;
     }

@@ -23,25 +23,14 @@ fn array(text: &str, key: &str) -> Vec<f64> {
 
 /// `fy` of the tyre file at `fz` for each slip angle (rad), by `tyre-eval`.
 fn fy_at(dir: &Path, tyre: &Path, fz: f64, alphas: &[f64]) -> Vec<f64> {
-    let points = dir.join("points.csv");
     let rows: String = alphas
         .iter()
         .map(|a| format!("{fz},0,{a},0,11\n"))
         .collect();
-    fs::write(&points, format!("fz,kappa,alpha,camber,speed\n{rows}")).unwrap();
-    let out = dir.join("forces.csv");
-    succeeds(&[
-        "tyre-eval",
-        tyre.to_str().unwrap(),
-        points.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let mut r = csv::Reader::from_path(&out).unwrap();
-    let col = r.headers().unwrap().iter().position(|h| h == "fy").unwrap();
-    r.records()
-        .map(|row| row.unwrap()[col].parse().unwrap())
-        .collect()
+    let points = format!("fz,kappa,alpha,camber,speed\n{rows}");
+    let (o, written) = super::tyre_eval::eval(dir, tyre, &points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    super::tyre_eval::column(&written, "fy")
 }
 
 /// `identify <hoosier> --model pac89 --seed 1 <extra> --out dir/<name>`:

@@ -15,7 +15,7 @@ fn sedan(dir: &Path, extra: &str) -> PathBuf {
 }
 
 /// The sedan's history, simulated into `dir/run`.
-fn sedan_history(dir: &Path) -> PathBuf {
+pub(super) fn sedan_history(dir: &Path) -> PathBuf {
     let sc = sedan(dir, "");
     let out = dir.join("run");
     succeeds(&[

@@ -5,51 +5,50 @@
 
 use super::*;
 
-/// The bundled sedan step steer (1° at 1.0–1.1 s, to 6 s) simulated into
-/// `dir/run`: its history's header and rows.
-fn sedan_rows(dir: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let sc = dir.join("sedan_step.toml");
-    fs::write(&sc, bundled_scenario("sedan_step.toml")).unwrap();
-    let out = dir.join("run");
-    succeeds(&[
-        "simulate",
-        sc.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let text = fs::read_to_string(out.join("history.csv")).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<String> = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
+/// The bundled sedan step steer's history (1° at 1.0–1.1 s, to 6 s),
+/// simulated once per test: its header and rows.
+struct Sedan {
+    header: Vec<String>,
+    rows: Vec<Vec<f64>>,
 }
 
-/// Writes the sedan's t, steer, speed, yaw rate and ay to `dir/name`, at
-/// 100 Hz, the yaw rate and steer of each row made by `change(t, steer,
-/// yaw_rate, row)`; returns the path.
-fn measured(
-    dir: &Path,
-    name: &str,
-    change: &dyn Fn(f64, f64, f64, usize) -> (f64, f64),
-) -> PathBuf {
-    let (header, rows) = sedan_rows(dir);
-    let at = |k: &str| header.iter().position(|h| h == k).unwrap();
-    let (t, steer, speed, r, ay) = (at("t"), at("steer"), at("speed"), at("yaw_rate"), at("ay"));
-    let mut text = String::from("t,steer,speed,yaw_rate,ay\n");
-    for (i, row) in rows.iter().step_by(10).enumerate() {
-        let (d, y) = change(row[t], row[steer], row[r], i);
-        text += &format!("{},{d},{},{y},{}\n", row[t], row[speed], row[ay]);
+impl Sedan {
+    fn simulated(dir: &Path) -> Self {
+        let text = fs::read_to_string(super::trips_s65::sedan_history(dir)).unwrap();
+        let mut lines = text.lines();
+        let header = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .map(str::to_string)
+            .collect();
+        let rows = lines
+            .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+            .collect();
+        Self { header, rows }
     }
-    let path = dir.join(name);
-    fs::write(&path, text).unwrap();
-    path
+
+    /// Writes its t, steer, speed, yaw rate and ay to `dir/name`, at
+    /// 100 Hz, the steer and yaw rate of each row made by `change(t,
+    /// steer, yaw_rate, row)`; returns the path.
+    fn measured(
+        &self,
+        dir: &Path,
+        name: &str,
+        change: &dyn Fn(f64, f64, f64, usize) -> (f64, f64),
+    ) -> PathBuf {
+        let at = |k: &str| self.header.iter().position(|h| h == k).unwrap();
+        let (t, steer, speed, r, ay) =
+            (at("t"), at("steer"), at("speed"), at("yaw_rate"), at("ay"));
+        let mut text = String::from("t,steer,speed,yaw_rate,ay\n");
+        for (i, row) in self.rows.iter().step_by(10).enumerate() {
+            let (d, y) = change(row[t], row[steer], row[r], i);
+            text += &format!("{},{d},{},{y},{}\n", row[t], row[speed], row[ay]);
+        }
+        let path = dir.join(name);
+        fs::write(&path, text).unwrap();
+        path
+    }
 }
 
 /// A yaw rate logging only noise about zero (a channel not wired to the
@@ -60,9 +59,10 @@ fn measured(
 #[test]
 fn a_yaw_rate_logging_noise_is_refused_as_not_following_the_steer_not_as_units() {
     let dir = tempfile::tempdir().unwrap();
+    let sedan = Sedan::simulated(dir.path());
     // A deterministic scatter of ±0.003 rad/s about zero, both signs alike.
     let noise = |i: usize| 0.003 * (((i * 7919) % 13) as f64 - 6.0) / 6.0;
-    let run_path = measured(dir.path(), "noise.csv", &|_, d, _, i| (d, noise(i)));
+    let run_path = sedan.measured(dir.path(), "noise.csv", &|_, d, _, i| (d, noise(i)));
     let o = run(&["metrics", run_path.to_str().unwrap()]);
     assert!(!o.status.success(), "a noise-only yaw rate was measured");
     let e = stderr(&o);
@@ -70,7 +70,7 @@ fn a_yaw_rate_logging_noise_is_refused_as_not_following_the_steer_not_as_units()
     assert!(e.contains("noise about zero, not a response"), "{e}");
     assert!(!e.contains("is `steer` in degrees"), "{e}");
     // The same run with its real yaw rate and the steer in degrees.
-    let degrees = measured(dir.path(), "degrees.csv", &|_, d, r, _| (d.to_degrees(), r));
+    let degrees = sedan.measured(dir.path(), "degrees.csv", &|_, d, r, _| (d.to_degrees(), r));
     let e = stderr(&run(&["metrics", degrees.to_str().unwrap()]));
     assert!(e.contains("is `steer` in degrees (57×)"), "{e}");
     assert!(!e.contains("does not follow the steer"), "{e}");
@@ -83,7 +83,8 @@ fn a_yaw_rate_logging_noise_is_refused_as_not_following_the_steer_not_as_units()
 #[test]
 fn a_yaw_rate_frozen_after_the_step_is_refused_as_frozen() {
     let dir = tempfile::tempdir().unwrap();
-    let run_path = measured(dir.path(), "frozen.csv", &|t, d, r, _| {
+    let sedan = Sedan::simulated(dir.path());
+    let run_path = sedan.measured(dir.path(), "frozen.csv", &|t, d, r, _| {
         (d, if t < 1.05 { r } else { 0.0012 })
     });
     let o = run(&["metrics", run_path.to_str().unwrap()]);
@@ -103,9 +104,10 @@ fn a_yaw_rate_frozen_after_the_step_is_refused_as_frozen() {
 #[test]
 fn an_overshoot_below_what_the_run_resolves_is_null_not_a_measured_zero() {
     let dir = tempfile::tempdir().unwrap();
+    let sedan = Sedan::simulated(dir.path());
     // A first-order yaw rate (time constant 0.1 s): no maximum above its
     // steady state.
-    let flat = measured(dir.path(), "flat.csv", &|t, d, _, _| {
+    let flat = sedan.measured(dir.path(), "flat.csv", &|t, d, _, _| {
         (d, 0.065 * (1.0 - (-(t - 1.05).max(0.0) / 0.1).exp()))
     });
     let (said, m) = table_and_json(&flat);
@@ -113,7 +115,7 @@ fn an_overshoot_below_what_the_run_resolves_is_null_not_a_measured_zero() {
     assert!(m["yaw_rate_overshoot"].is_null(), "{m}");
     assert!(overshoot_line(&said).contains("< "), "{said}");
     // A second-order response with a 16 % overshoot: a number, as said.
-    let ringing = measured(dir.path(), "ringing.csv", &|t, d, _, _| {
+    let ringing = sedan.measured(dir.path(), "ringing.csv", &|t, d, _, _| {
         let s = (t - 1.05).max(0.0);
         let (z, w) = (0.5_f64, 12.0_f64);
         let wd = w * (1.0 - z * z).sqrt();
@@ -155,31 +157,20 @@ fn overshoot_line(said: &str) -> String {
 /// forces do not).
 #[test]
 fn a_loaded_radius_past_the_load_range_is_said_to_take_the_load_given() {
+    use super::tyre_eval::{column, eval};
     let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
     let points = "fz,kappa,alpha,camber,speed\n18000,0,0.05,0,16.7\n40000,0,0.05,0,16.7\n";
-    let dir = scratch(&[("points.csv", points)]);
-    let out = dir.path().join("forces.csv");
-    let said = succeeds(&[
-        "tyre-eval",
-        tir.to_str().unwrap(),
-        dir.path().join("points.csv").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let dir = tempfile::tempdir().unwrap();
+    let (o, written) = eval(dir.path(), &tir, points, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
     assert!(
         said.contains("(`my` and `rl` at the load given, as MFeval does)"),
         "{said}"
     );
-    let text = fs::read_to_string(&out).unwrap();
-    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
-    let col = |k: &str| header.iter().position(|h| *h == k).unwrap();
-    assert_eq!(rows[0][col("fy")], rows[1][col("fy")], "{text}");
-    assert_ne!(rows[0][col("rl")], rows[1][col("rl")], "{text}");
+    let (fy, rl) = (column(&written, "fy"), column(&written, "rl"));
+    assert_eq!(fy[0], fy[1], "{written}");
+    assert_ne!(rl[0], rl[1], "{written}");
 }
 
 /// A gyro that freezes a second after the step (400 of 601 samples at one
@@ -189,9 +180,10 @@ fn a_loaded_radius_past_the_load_range_is_said_to_take_the_load_given() {
 #[test]
 fn a_yaw_rate_frozen_to_the_end_is_found_stuck_and_its_steady_window_said_filled() {
     let dir = tempfile::tempdir().unwrap();
+    let sedan = Sedan::simulated(dir.path());
     // ±0.002 rad/s of deterministic scatter on every sample before 2 s.
     let noise = |i: usize| 0.002 * (((i * 7919) % 13) as f64 - 6.0) / 6.0;
-    let run_path = measured(dir.path(), "late.csv", &|t, d, r, i| {
+    let run_path = sedan.measured(dir.path(), "late.csv", &|t, d, r, i| {
         (d, if t <= 2.0 { r + noise(i) } else { 0.0646 })
     });
     let o = run(&["metrics", run_path.to_str().unwrap()]);
@@ -220,7 +212,7 @@ fn a_yaw_rate_frozen_to_the_end_is_found_stuck_and_its_steady_window_said_filled
     );
     assert!(e.contains("do not use these metrics"), "{e}");
     // The same run without the freeze: no stuck value, no such warning.
-    let fine = measured(dir.path(), "fine.csv", &|_, d, r, i| (d, r + noise(i)));
+    let fine = sedan.measured(dir.path(), "fine.csv", &|_, d, r, i| (d, r + noise(i)));
     let e = stderr(&run(&["metrics", fine.to_str().unwrap()]));
     assert!(e.contains(" 0 stuck values"), "{e}");
     assert!(!e.contains("masked by the cleaning"), "{e}");
@@ -233,6 +225,7 @@ fn a_yaw_rate_frozen_to_the_end_is_found_stuck_and_its_steady_window_said_filled
 #[test]
 fn no_iterations_are_refused_and_a_refused_metrics_setting_names_its_option() {
     let dir = tempfile::tempdir().unwrap();
+    let sedan = Sedan::simulated(dir.path());
     let rig = "fz,alpha,fy\n4000,0.0,0\n4000,0.05,3000\n4000,0.1,4000\n";
     fs::write(dir.path().join("rig.csv"), rig).unwrap();
     let o = run(&[
@@ -252,7 +245,7 @@ fn no_iterations_are_refused_and_a_refused_metrics_setting_names_its_option() {
         "{e}"
     );
     assert!(!dir.path().join("x.tir").exists());
-    let run_path = measured(dir.path(), "run.csv", &|_, d, r, _| (d, r));
+    let run_path = sedan.measured(dir.path(), "run.csv", &|_, d, r, _| (d, r));
     let e = stderr(&run(&[
         "metrics",
         run_path.to_str().unwrap(),

@@ -47,7 +47,7 @@ pub(crate) fn eval(dir: &Path, tyre: &Path, csv: &str, args: &[&str]) -> (Output
 }
 
 /// The column `name` of a written CSV.
-fn column(csv: &str, name: &str) -> Vec<f64> {
+pub(crate) fn column(csv: &str, name: &str) -> Vec<f64> {
     let mut lines = csv.lines();
     let at = lines
         .next()

@@ -17,7 +17,7 @@ use super::curvature::{pac89_reversal, Pac89Reversal};
 use super::{on_data, ranges, Options, SwarmReport, Written};
 use crate::error::Error;
 use crate::format::readable;
-use crate::identify::{fit_channel_holding, Channel, Fit, FitSettings, HeldFor};
+use crate::identify::{fit_channel_holding, Channel, FitSettings, HeldFor};
 use crate::tyre::Tyre;
 use serde::Serialize;
 
@@ -84,27 +84,17 @@ pub(super) fn hold_curvature(
     let Some(free) = reversal(&r.tyre, &spans) else {
         return Ok(());
     };
-    let mut holds = o.hold.clone();
-    let mut fit: Option<Fit> = None;
-    for (name, value) in [("a6", 0.0), ("a7", 1.0)] {
-        holds.push((name.to_string(), value));
-        let f = fit_channel_holding(
-            start,
-            Channel::LateralForce,
-            &r.conditions,
-            settings,
-            &holds,
-        )
-        .map_err(on_data(o, None))?;
-        let done = reversal(&f.tyre, &spans).is_none();
-        fit = Some(f);
-        if done {
-            break;
-        }
-    }
-    let Some(mut fit) = fit else {
-        return Ok(());
+    let refit = |holds: &[(String, f64)]| {
+        fit_channel_holding(start, Channel::LateralForce, &r.conditions, settings, holds)
+            .map_err(on_data(o, None))
     };
+    let mut holds = o.hold.clone();
+    holds.push(("a6".into(), 0.0));
+    let mut fit = refit(&holds)?;
+    if reversal(&fit.tyre, &spans).is_some() {
+        holds.push(("a7".into(), 1.0));
+        fit = refit(&holds)?;
+    }
     for p in fit.parameters.iter_mut() {
         if !p.free && (p.name == "a6" || p.name == "a7") {
             // Said by the note, not as a value given.

@@ -5,6 +5,7 @@
 //! in time, responses (yaw rate, ay, beta) masked. Units: the channel's SI
 //! unit; times in s.
 
+use super::moves::Moves;
 use super::report::{CleaningReport, Glitch, GlitchKind, Treatment};
 use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SEARCHED, SPIKE_MADS, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
@@ -99,7 +100,7 @@ fn detect(x: &[f64], slow: &[bool]) -> Vec<Found> {
     let mut out = Vec::new();
     // A hold to the end of the record is judged first and kept out of the
     // spread: its zero differences would make the noise before it spikes.
-    let tail = frozen_tail(x, slow);
+    let tail = frozen_tail(x, slow, &flagged);
     let sc = match tail {
         Some(f) => {
             flagged[f.start..].iter_mut().for_each(|b| *b = true);
@@ -203,7 +204,7 @@ fn spikes(x: &[f64], tt: f64, flagged: &mut [bool], out: &mut Vec<Found>) {
 /// differences at least half the first: noise, not a smooth noise-free
 /// signal), and long enough that chance would hardly hold the channel so
 /// (`n·p₀^(len−1) < 1e-3`, `p₀` the share of zero differences before it).
-fn frozen_tail(x: &[f64], slow: &[bool]) -> Option<Found> {
+fn frozen_tail(x: &[f64], slow: &[bool], flagged: &[bool]) -> Option<Found> {
     let n = x.len();
     let last = x[n - 1];
     let start = (0..n).rev().take_while(|&i| x[i] == last).last()?;
@@ -212,17 +213,13 @@ fn frozen_tail(x: &[f64], slow: &[bool]) -> Option<Found> {
     if start < STUCK_CONTEXT || len < MIN_STUCK || slow[start..].iter().all(|s| *s) {
         return None;
     }
-    let d: Vec<f64> = (from + 1..=start).map(|k| x[k] - x[k - 1]).collect();
-    let zeros = d.iter().filter(|v| **v == 0.0).count();
-    let m1 = d.iter().map(|v| v.abs()).sum::<f64>() / d.len() as f64;
-    let m2 = d.windows(2).map(|w| (w[1] - w[0]).abs()).sum::<f64>() / (d.len() - 1) as f64;
-    let p0 = zeros as f64 / d.len() as f64;
-    let chance = n as f64 * p0.powi(len as i32 - 1);
-    (2 * zeros < d.len() && m1 > 0.0 && m2 >= 0.5 * m1 && chance < 1e-3).then_some(Found {
-        start,
-        len,
-        kind: GlitchKind::Stuck,
-    })
+    let before = Moves::over(x, flagged, from, start + 1);
+    (before.moving() && before.m1() > 0.0 && before.rough() && before.chance(n, len) < 1e-3)
+        .then_some(Found {
+            start,
+            len,
+            kind: GlitchKind::Stuck,
+        })
 }
 
 /// Stuck values: holds that chance would hardly give this channel.
@@ -243,37 +240,17 @@ fn stuck_values(x: &[f64], slow: &[bool], flagged: &mut [bool], out: &mut Vec<Fo
         // large as first ones) or a release jump of the size the signal
         // would have moved meanwhile make it a stuck sensor.
         let stuck = i - lo >= STUCK_CONTEXT && hi - j >= STUCK_CONTEXT && {
-            // Per side: zero differences, differences, Σ|Δx|, Σ|Δ²x|, second
-            // differences; samples already found glitched are skipped.
-            let side = |from: usize, to: usize| {
-                let (mut zeros, mut count, mut d1, mut d2, mut count2) = (0, 0, 0.0, 0.0, 0);
-                for k in from + 1..to {
-                    if flagged[k] || flagged[k - 1] {
-                        continue;
-                    }
-                    let d = x[k] - x[k - 1];
-                    zeros += usize::from(d == 0.0);
-                    count += 1;
-                    d1 += d.abs();
-                    if k >= from + 2 && !flagged[k - 2] {
-                        d2 += (d - (x[k - 1] - x[k - 2])).abs();
-                        count2 += 1;
-                    }
-                }
-                (zeros, count, d1, d2, count2)
-            };
-            let (a, b) = (side(lo, i), side(j, hi));
-            let moving = |s: (usize, usize, f64, f64, usize)| s.1 >= 3 && 2 * s.0 < s.1;
-            let (zeros, count) = (a.0 + b.0, a.1 + b.1);
-            let (m1, m2) = (
-                (a.2 + b.2) / count.max(1) as f64,
-                (a.3 + b.3) / (a.4 + b.4).max(1) as f64,
+            let (a, b) = (
+                Moves::over(x, flagged, lo, i),
+                Moves::over(x, flagged, j, hi),
             );
-            let p0 = zeros as f64 / count.max(1) as f64;
-            let chance = (n as f64) * p0.powi(len as i32 - 1);
-            let rough = m2 >= 0.5 * m1;
-            let jump = (x[j] - x[j - 1]).abs() >= 0.5 * len as f64 * m1;
-            moving(a) && moving(b) && chance < 1e-3 && m1 > 0.0 && (rough || jump)
+            let both = a.and(b);
+            let jump = (x[j] - x[j - 1]).abs() >= 0.5 * len as f64 * both.m1();
+            a.moving()
+                && b.moving()
+                && both.chance(n, len) < 1e-3
+                && both.m1() > 0.0
+                && (both.rough() || jump)
         };
         let stopped = slow[i..j].iter().all(|s| *s);
         if len >= MIN_STUCK && stuck && !stopped && !flagged[i..j].iter().any(|f| *f) {
@@ -393,13 +370,16 @@ mod tests {
             // Three samples alike at the end are chance, not a hold.
             let mut y = gauss_noise(600, 0.01, seed);
             y[597..].iter_mut().for_each(|v| *v = 0.5);
-            assert!(frozen_tail(&y, &no_slow(600)).is_none(), "seed {seed}");
+            assert!(
+                frozen_tail(&y, &no_slow(600), &[false; 600]).is_none(),
+                "seed {seed}"
+            );
         }
         // A first-order rise, noise-free, reaching its level in doubles.
         let smooth: Vec<f64> = (0..600)
             .map(|i| (1.0 - (-(i as f64) / 20.0).exp()).min(0.999))
             .collect();
-        assert!(frozen_tail(&smooth, &no_slow(600)).is_none());
+        assert!(frozen_tail(&smooth, &no_slow(600), &[false; 600]).is_none());
     }
 
     #[test]

@@ -46,6 +46,7 @@
 mod glitches;
 mod held;
 mod inject;
+mod moves;
 mod pieces;
 mod report;
 #[cfg(test)]

@@ -209,6 +209,7 @@ pub fn read_columns(
         out.data.insert(name.clone(), Vec::new());
         out.positions.insert(name.clone(), i + 1);
     }
+    let mut bad: Vec<InputError> = Vec::new();
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {
             if let Some(at) = not_utf8(&bytes, &e) {
@@ -249,13 +250,25 @@ pub fn read_columns(
                 cell: cell.to_string(),
                 problem,
             };
-            let v: f64 = cell.parse().map_err(|_| at(CellProblem::NotANumber))?;
-            if !v.is_finite() {
-                return Err(at(CellProblem::NotFinite));
-            }
+            // Every bad cell is said, not only the first: a user fixing a
+            // file learns of them all at once.
+            let v = match cell.parse::<f64>() {
+                Err(_) => {
+                    bad.push(at(CellProblem::NotANumber));
+                    f64::NAN
+                }
+                Ok(v) if !v.is_finite() => {
+                    bad.push(at(CellProblem::NotFinite));
+                    v
+                }
+                Ok(v) => v,
+            };
             out.data.get_mut(name).expect("inserted above").push(v);
         }
         out.lines.push(line);
+    }
+    if let Some(e) = InputError::all_of(path, bad) {
+        return Err(e);
     }
     if out.is_empty() {
         return Err(InputError::NoRows {

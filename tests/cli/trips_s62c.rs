@@ -13,7 +13,10 @@ use super::*;
 /// The Hoosier cornering fit reaches `Ey` above 1 within its data (PEY1
 /// on its bound of 1, PEY2, PEY5 large): the file reproduces the data
 /// only with limit checks clipping E at 1. `identify` says so, in its
-/// output, its report and the `.tir`.
+/// output, its report and the `.tir`, with the slip angle beyond which the
+/// file's lateral force without the checks changes sign where the fit's
+/// does not: `tyre-eval --mode 221` against its default 121 finds the
+/// change there, on a sweep in tenths of a degree.
 #[test]
 fn identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data() {
     let test = "identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data";
@@ -39,6 +42,51 @@ fn identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data() {
     assert!(e["largest"].as_f64().unwrap() > 1.0, "{e}");
     let tir = std::fs::read_to_string(&out).unwrap();
     assert!(tir.contains("$ warning: curvature Ey reaches "), "{tir}");
+    // Where the file without the checks turns against the fit.
+    let beyond = e["reverses_beyond"].as_f64().unwrap();
+    let at = e["reverses_at"].as_array().unwrap();
+    let (fz, camber, sign) = (
+        at[0].as_f64().unwrap(),
+        at[1].as_f64().unwrap(),
+        at[2].as_f64().unwrap(),
+    );
+    assert!(beyond < e["data_slip"].as_f64().unwrap(), "{e}");
+    let said: f64 = line
+        .split("beyond |alpha| = ")
+        .nth(1)
+        .and_then(|s| s.split('°').next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{line}"));
+    assert!((said - beyond.to_degrees()).abs() < 0.01, "{line}");
+    // A left tyre's file-frame slip angle is the points' negated.
+    let side = if tir.contains("TYRESIDE = 'LEFT'") {
+        -sign
+    } else {
+        sign
+    };
+    let degrees: Vec<f64> = (1..=200).map(|k| 0.1 * k as f64).collect();
+    let rows: String = degrees
+        .iter()
+        .map(|d| format!("{fz},0,{},{camber},11.2\n", side * d.to_radians()))
+        .collect();
+    let points = format!("fz,kappa,alpha,camber,speed\n{rows}");
+    let fy = |mode: &str| {
+        let (o, written) = super::tyre_eval::eval(dir.path(), &out, &points, &["--mode", mode]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        super::tyre_eval::column(&written, "fy")
+    };
+    let (with, without) = (fy("121"), fy("221"));
+    let first = degrees
+        .iter()
+        .zip(with.iter().zip(&without))
+        .find(|(_, (a, b))| *a * *b < 0.0)
+        .map(|(d, _)| *d)
+        .unwrap_or_else(|| panic!("no change of sign to 20°: {with:?} {without:?}"));
+    assert!(
+        first > beyond.to_degrees() && first - 0.1 <= beyond.to_degrees(),
+        "tyre-eval: first opposite sign at {first}°, the warning says beyond {}°",
+        beyond.to_degrees()
+    );
 }
 
 /// A synthetic campaign with a sensor delay, its vehicle file claiming a

@@ -6,7 +6,15 @@
 //! while each coefficient lies within its bound. The formula with its
 //! limit checks on (MFeval's `useLimitsCheck`, `tyre-eval`'s default mode
 //! 121) clips it at 1 and reproduces the fit; without them (mode 221) the
-//! force departs from the data. The excess is said, not hidden.
+//! force departs from the data. The excess is said, not hidden, with the
+//! slip beyond which the file's force, without the checks, changes sign
+//! where the fit's does not: the Hoosier file's `Ey` reaches 4.89 at 3.2°
+//! camber, and its lateral force reverses there inside the data's slip
+//! angles. The fit is not constrained to `E ≤ 1`: on that file the
+//! constraint (tried as penalty rows) cost a quarter of the lateral σ,
+//! 1.76 → 2.2 %, and made the stage's optimum depend on its start; the
+//! clipped curvature is the formula's own with the checks on (Pacejka
+//! 2012, eq. 4.E24, `Ey ≤ 1`).
 //!
 //! PAC89 (Adams numbering, `E = a6·Fz + a7`, Fz in kN) has no limit check:
 //! above 1 its lateral force falls past the peak and changes sign at a
@@ -17,7 +25,7 @@
 use super::ranges::Span;
 use crate::format::readable;
 use crate::identify::mf_staged::Stage;
-use crate::tyre::mf::{MagicFormula, TyreSide};
+use crate::tyre::mf::{MagicFormula, MfInput, TyreSide};
 use crate::tyre::pac89::magic_formula;
 use crate::tyre::Pac89;
 use serde::Serialize;
@@ -50,7 +58,8 @@ impl Curvature {
 }
 
 /// Where a curvature of the fitted tyre is largest above 1 within the
-/// fitted ranges.
+/// fitted ranges, and what the file's force does there without the limit
+/// checks.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CurvatureExcess {
     /// Which curvature.
@@ -63,13 +72,49 @@ pub struct CurvatureExcess {
     pub camber: f64,
     /// The sign of the slip there (+1 or −1, the file's frame).
     pub slip_sign: f64,
+    /// The smallest |slip| (slip angle in rad, or slip ratio) beyond which
+    /// the force, evaluated without the limit checks (mode 221), has the
+    /// opposite sign to the fit's (with them), over the places where the
+    /// curvature exceeds 1; `None` where it keeps it (to 90°, or a slip
+    /// ratio of 1).
+    pub reverses_beyond: Option<f64>,
+    /// The place of that reversal: load (N), camber (rad, crate
+    /// convention), slip sign (the file's frame).
+    pub reverses_at: Option<(f64, f64, f64)>,
+    /// The largest |slip| of that kind the data reach.
+    pub data_slip: f64,
 }
 
 impl CurvatureExcess {
+    /// A slip of this curvature's kind in words (`6.31°`, `0.35`).
+    fn slip_text(&self, x: f64) -> String {
+        match self.curvature {
+            Curvature::Ey => format!("{}°", readable(x.to_degrees(), 3)),
+            Curvature::Ex => readable(x, 3),
+        }
+    }
+
     /// The warning, one line.
     pub fn line(&self) -> String {
+        let (name, symbol) = match self.curvature {
+            Curvature::Ey => ("lateral", "|alpha|"),
+            Curvature::Ex => ("longitudinal", "|kappa|"),
+        };
+        let without = match self.reverses_beyond.zip(self.reverses_at) {
+            Some((x, (fz, camber, sign))) => format!(
+                "with the checks off (mode 221) its {name} force changes sign beyond {symbol} = {} at fz {} N, camber {}°, {} {} ({} the data's {}), where the fit's does not",
+                self.slip_text(x),
+                readable(fz, 4),
+                readable(camber.to_degrees(), 3),
+                if sign > 0.0 { "positive" } else { "negative" },
+                self.curvature.slip(),
+                if x <= self.data_slip { "inside" } else { "outside" },
+                self.slip_text(self.data_slip),
+            ),
+            None => "with the checks off (mode 221) its force departs from the fit".into(),
+        };
         format!(
-            "curvature {} reaches {} above 1 over the fitted data (at fz {} N, camber {}°, {} {}): the file relies on a limit check clipping E at 1 (MFeval's useLimitsCheck; tyre-eval's mode 121, the default); with the checks off (mode 221) its force departs from the fit",
+            "curvature {} reaches {} above 1 over the fitted data (at fz {} N, camber {}°, {} {}): the file relies on a limit check clipping E at 1 (MFeval's useLimitsCheck; tyre-eval's mode 121, the default); {without}",
             self.curvature.name(),
             readable(self.largest, 3),
             readable(self.fz, 4),
@@ -84,20 +129,25 @@ fn span<'a>(spans: &'a [Span], name: &str) -> Option<&'a Span> {
     spans.iter().find(|s| s.name == name)
 }
 
-/// Points of a span: its ends and 24 steps between (its one value when it
-/// is one).
-fn points(s: Option<&Span>, none: f64) -> Vec<f64> {
-    match s {
-        None => vec![none],
-        Some(s) if s.lo >= s.hi => vec![s.lo],
-        Some(s) => (0..=24)
-            .map(|k| s.lo + (s.hi - s.lo) * k as f64 / 24.0)
-            .collect(),
-    }
+/// The ends of a span and the vertex `v` where it lies inside; `none`
+/// without a span.
+fn ends_and(s: Option<(f64, f64)>, none: f64, v: Option<f64>) -> Vec<f64> {
+    let (lo, hi) = s.unwrap_or((none, none));
+    let mut out = vec![lo, hi];
+    out.extend(v.filter(|v| (lo.min(hi)..=lo.max(hi)).contains(v)));
+    out
 }
+
+/// A place a curvature is evaluated at: slip sign (file frame), load (N),
+/// camber (rad, crate convention).
+type Place = (f64, f64, f64);
 
 /// The curvatures of `t` above 1 over `spans`, the fitted stages' (`Ey`
 /// where the pure lateral stage was fitted, `Ex` where the longitudinal).
+/// `Ey` is linear in the load and quadratic in `γ* = sin γ`, `Ex`
+/// quadratic in the load: the largest value over the ranges lies at an
+/// end or at the vertex, which are the places evaluated (exactly, where a
+/// grid would miss a vertex between its points).
 pub(crate) fn curvature_excess(
     t: &MagicFormula,
     spans: &[Span],
@@ -105,59 +155,136 @@ pub(crate) fn curvature_excess(
 ) -> Vec<CurvatureExcess> {
     let c = &t.coefficients;
     let fz0 = c.FNOMIN * c.LFZO;
-    let loads = points(span(spans, "fz"), c.FNOMIN);
-    let cambers = points(span(spans, "camber"), 0.0);
-    // The slip signs the data reach, in the file's frame (a left tyre's
-    // slip angle is the crate's negated).
-    let signs = |name: &str, flip: f64| -> Vec<f64> {
-        let s = span(spans, name);
-        [1.0, -1.0]
-            .into_iter()
-            .filter(|&g| s.is_some_and(|s| (flip * s.lo * g).max(flip * s.hi * g) > 0.0))
-            .collect()
-    };
+    let range = |name: &str| span(spans, name).map(|s| (s.lo, s.hi));
+    // A left tyre's slip angle is the crate's negated; a right tyre's
+    // camber likewise.
     let alpha_flip = if t.side == TyreSide::Left { -1.0 } else { 1.0 };
     let camber_flip = if t.side == TyreSide::Right { -1.0 } else { 1.0 };
+    let signs = |name: &str, flip: f64| -> Vec<f64> {
+        let s = range(name);
+        [1.0, -1.0]
+            .into_iter()
+            .filter(|&g| s.is_some_and(|(lo, hi)| (flip * lo * g).max(flip * hi * g) > 0.0))
+            .collect()
+    };
+    let gs_range =
+        range("camber").map(|(lo, hi)| ((camber_flip * lo).sin(), (camber_flip * hi).sin()));
     let mut out = Vec::new();
-    let mut worst = |name: Curvature, e: &dyn Fn(f64, f64, f64) -> f64, slips: Vec<f64>| {
-        let mut best: Option<CurvatureExcess> = None;
-        for &fz in &loads {
-            for &g in &cambers {
-                for &s in &slips {
-                    let v = e((fz - fz0) / fz0, (camber_flip * g).sin(), s);
-                    if v > 1.0 + 1e-9 && best.as_ref().is_none_or(|b| v > b.largest) {
-                        best = Some(CurvatureExcess {
-                            curvature: name,
-                            largest: v,
-                            fz,
-                            camber: g,
-                            slip_sign: s,
-                        });
-                    }
+    if fitted.contains(&Stage::PureFy) {
+        let mut places: Vec<(f64, Place)> = Vec::new();
+        for s in signs("alpha", alpha_flip) {
+            let vertex = (c.PEY5 != 0.0).then(|| c.PEY4 * s / (2.0 * c.PEY5));
+            for &fz in &ends_and(range("fz"), c.FNOMIN, None) {
+                for gs in ends_and(gs_range, 0.0, vertex) {
+                    let dfz = (fz - fz0) / fz0;
+                    let e = (c.PEY1 + c.PEY2 * dfz)
+                        * c.LEY
+                        * (1.0 + c.PEY5 * gs * gs - (c.PEY3 + c.PEY4 * gs) * s);
+                    places.push((e, (s, fz, camber_flip * gs.asin())));
                 }
             }
         }
-        out.extend(best);
-    };
-    if fitted.contains(&Stage::PureFy) {
-        worst(
-            Curvature::Ey,
-            &|dfz, gs, s| {
-                (c.PEY1 + c.PEY2 * dfz)
-                    * c.LEY
-                    * (1.0 + c.PEY5 * gs * gs - (c.PEY3 + c.PEY4 * gs) * s)
-            },
-            signs("alpha", alpha_flip),
-        );
+        out.extend(excess(t, Curvature::Ey, places, range("alpha")));
     }
     if fitted.contains(&Stage::PureFx) {
-        worst(
-            Curvature::Ex,
-            &|dfz, _, s| (c.PEX1 + c.PEX2 * dfz + c.PEX3 * dfz * dfz) * (1.0 - c.PEX4 * s) * c.LEX,
-            signs("kappa", 1.0),
-        );
+        let camber = range("camber").map_or(0.0, |r| r.0);
+        let dfz = range("fz").map(|(lo, hi)| ((lo - fz0) / fz0, (hi - fz0) / fz0));
+        let vertex = (c.PEX3 != 0.0).then(|| -c.PEX2 / (2.0 * c.PEX3));
+        let mut places: Vec<(f64, Place)> = Vec::new();
+        for s in signs("kappa", 1.0) {
+            for d in ends_and(dfz, (c.FNOMIN - fz0) / fz0, vertex) {
+                let e = (c.PEX1 + c.PEX2 * d + c.PEX3 * d * d) * (1.0 - c.PEX4 * s) * c.LEX;
+                places.push((e, (s, fz0 * (1.0 + d), camber)));
+            }
+        }
+        out.extend(excess(t, Curvature::Ex, places, range("kappa")));
     }
     out
+}
+
+/// The largest of `places` (curvature, place) above 1, with where the
+/// force there reverses without the limit checks; `slips` the data's range
+/// of the curvature's slip (crate convention).
+fn excess(
+    t: &MagicFormula,
+    curvature: Curvature,
+    places: Vec<(f64, Place)>,
+    slips: Option<(f64, f64)>,
+) -> Option<CurvatureExcess> {
+    let above: Vec<(f64, Place)> = places.into_iter().filter(|p| p.0 > 1.0 + 1e-9).collect();
+    let (largest, (s, fz, camber)) = *above.iter().max_by(|a, b| a.0.total_cmp(&b.0))?;
+    // The earliest reversal may be where the curvature is not largest
+    // (the other slip sign, where the force's shifts differ).
+    let first = above
+        .iter()
+        .filter_map(|(_, at)| reversal(t, curvature, *at).map(|x| (x, *at)))
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    Some(CurvatureExcess {
+        curvature,
+        largest,
+        fz,
+        camber,
+        slip_sign: s,
+        reverses_beyond: first.map(|f| f.0),
+        reverses_at: first.map(|(_, (s, fz, camber))| (fz, camber, s)),
+        data_slip: slips.map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs())),
+    })
+}
+
+/// The smallest |slip| at `place` past which the pure force of `t`
+/// without the limit checks has the opposite sign to the force with them
+/// (the fit's), by a scan (quarter degrees to 90°; slip ratio steps of
+/// 0.0025 to 1) and bisection; `None` where it keeps the sign.
+fn reversal(t: &MagicFormula, curvature: Curvature, (s, fz, camber): Place) -> Option<f64> {
+    let mut free = t.clone();
+    free.options.limit_checks = false;
+    // The crate's slip of file-frame sign `s` (a left tyre's slip angle is
+    // the file's negated).
+    let flip = match (curvature, t.side) {
+        (Curvature::Ey, TyreSide::Left) => -1.0,
+        _ => 1.0,
+    };
+    let force = |tyre: &MagicFormula, x: f64| {
+        let slip = flip * s * x;
+        let (kappa, alpha) = match curvature {
+            Curvature::Ey => (0.0, slip),
+            Curvature::Ex => (slip, 0.0),
+        };
+        let o = tyre.evaluate(&MfInput {
+            fz,
+            kappa,
+            alpha,
+            camber,
+            speed: t.coefficients.LONGVL,
+            pressure: None,
+        });
+        match curvature {
+            Curvature::Ey => o.fy,
+            Curvature::Ex => o.fx,
+        }
+    };
+    let opposite = |x: f64| force(&free, x) * force(t, x) < 0.0;
+    let (step, end) = match curvature {
+        Curvature::Ey => (0.25f64.to_radians(), std::f64::consts::FRAC_PI_2),
+        Curvature::Ex => (0.0025, 1.0),
+    };
+    let (mut lo, mut hi) = (step, step);
+    while !opposite(hi) {
+        lo = hi;
+        hi += step;
+        if hi > end {
+            return None;
+        }
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if opposite(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
 }
 
 /// Where a fitted PAC89's lateral curvature `E` is largest above 1 over
@@ -310,6 +437,40 @@ mod tests {
         t.a[6] = -0.02;
         t.a[7] = 1.0;
         assert_eq!(pac89_reversal(&t, &spans((400.0, 3000.0), 0.17)), None);
+    }
+
+    /// `Ey` concave in the camber (`PEY5 < 0`) peaks between the camber
+    /// ends, at `γ* = PEY4·s/(2·PEY5)`: found there exactly (a grid of the
+    /// range would step over it), and a curvature a thousandth above 1
+    /// turns the force, if at all, only past 80° (where it is near zero).
+    #[test]
+    fn a_curvature_above_one_only_at_its_camber_vertex_is_found_there() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/tir");
+        let mut t = crate::io::tir::load_tir(&dir.join("MagicFormula61_Parameters.tir")).unwrap();
+        let c = &mut t.coefficients;
+        (c.PEY1, c.PEY2, c.PEY3, c.PEY4, c.PEY5, c.LEY) = (1.0, 0.0, 0.0, 0.5, -60.0, 1.0);
+        let mut at = spans((2000.0, 6000.0), 0.2);
+        at.push(Span {
+            name: "camber",
+            unit: "rad",
+            lo: -0.05,
+            hi: 0.06,
+        });
+        let e = curvature_excess(&t, &at, &[Stage::PureFy]);
+        assert_eq!(e.len(), 1, "{e:?}");
+        // 1 + PEY4²/(4·|PEY5|) at |γ*| = 1/240.
+        assert!((e[0].largest - (1.0 + 0.25 / 240.0)).abs() < 1e-12, "{e:?}");
+        assert!(
+            (e[0].camber.abs() - (1.0f64 / 240.0).asin()).abs() < 1e-12,
+            "{e:?}"
+        );
+        assert!(
+            e[0].reverses_beyond.is_none_or(|x| x > 80f64.to_radians()),
+            "{e:?}"
+        );
+        // At the ends alone it is below 1: nothing said without the vertex.
+        t.coefficients.PEY1 = 0.99;
+        assert!(curvature_excess(&t, &at, &[Stage::PureFy]).is_empty());
     }
 
     fn magic(c: &crate::tyre::pac89::CurveCoefficients, x: f64) -> f64 {

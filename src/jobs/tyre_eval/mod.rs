@@ -158,12 +158,6 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
         &["pressure"],
     )?;
     let pressure = c.take_optional("pressure");
-    if let Some(p) = &pressure {
-        if let Some(i) = p.iter().position(|v| *v <= 0.0) {
-            let problem = InputProblem::NonPositivePressure { value: p[i] };
-            return Err(c.error_at(points, i, "pressure", problem).into());
-        }
-    }
     let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()
         .map(|n| (n, c.take(n)))
@@ -181,6 +175,23 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
                 .map(move |(i, problem)| (i, k, name, problem))
         })
         .collect();
+    // A pressure at or below zero is said as such, with the rest.
+    if let Some(p) = &pressure {
+        refused.retain(|(i, _, name, _)| *name != "pressure" || p[*i] > 0.0);
+        refused.extend(
+            p.iter()
+                .enumerate()
+                .filter(|(_, v)| **v <= 0.0)
+                .map(|(i, &value)| {
+                    (
+                        i,
+                        5,
+                        "pressure",
+                        InputProblem::NonPositivePressure { value },
+                    )
+                }),
+        );
+    }
     refused.sort_by_key(|(i, k, _, _)| (*i, *k));
     let errors = refused
         .into_iter()

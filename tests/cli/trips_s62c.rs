@@ -58,12 +58,12 @@ fn identify_warns_where_the_fitted_curvature_exceeds_one_over_its_data() {
         .and_then(|v| v.parse().ok())
         .unwrap_or_else(|| panic!("{line}"));
     assert!((said - beyond.to_degrees()).abs() < 0.01, "{line}");
-    // A left tyre's file-frame slip angle is the points' negated.
-    let side = if tir.contains("TYRESIDE = 'LEFT'") {
-        -sign
-    } else {
-        sign
-    };
+    // In the points' frame, as the warning says it.
+    let side = sign;
+    assert!(
+        line.contains("signs as tyre-eval's points give them"),
+        "{line}"
+    );
     let degrees: Vec<f64> = (1..=200).map(|k| 0.1 * k as f64).collect();
     let rows: String = degrees
         .iter()

@@ -130,11 +130,10 @@ use std::time::Instant;
 /// Jacobians (iterations) per step of the projected Levenberg–Marquardt at
 /// most; a step normally stops earlier, on its tolerance (a relative cost
 /// decrease or parameter step below 1e-12). Enough for the synthetic stages
-/// and for both stages of the Hoosier rig data (3,551 rows, 27 parameters),
-/// which at 150 left pure `Fy` unconverged at the same σ (4.6 s for the
-/// command against 3.5 s); the cap keeps a degenerate direction (`RVY1..4`
+/// and for the Hoosier rig data's pure `Fy` (3,551 rows, 27 parameters:
+/// the same σ with 600); the cap keeps a degenerate direction (`RVY1..4`
 /// on data without small slip angles) from wandering for seconds.
-pub const LM_ITERATIONS: usize = 300;
+pub const LM_ITERATIONS: usize = 150;
 
 /// A slip below this is "zero" when rows are sorted into pure and combined.
 pub const PURE_TOL: f64 = 1e-3;

@@ -70,7 +70,8 @@ pub struct CurvatureExcess {
     pub fz: f64,
     /// The camber there (rad, the crate's convention).
     pub camber: f64,
-    /// The sign of the slip there (+1 or −1, the file's frame).
+    /// The sign of the slip there (+1 or −1), in the frame of the points
+    /// `tyre-eval` reads (the crate's: a left tyre's file frame negated).
     pub slip_sign: f64,
     /// The smallest |slip| (slip angle in rad, or slip ratio) beyond which
     /// the force, evaluated without the limit checks (mode 221), has the
@@ -78,8 +79,8 @@ pub struct CurvatureExcess {
     /// curvature exceeds 1; `None` where it keeps it (to 90°, or a slip
     /// ratio of 1).
     pub reverses_beyond: Option<f64>,
-    /// The place of that reversal: load (N), camber (rad, crate
-    /// convention), slip sign (the file's frame).
+    /// The place of that reversal: load (N), camber (rad), slip sign, all
+    /// in the frame of the points `tyre-eval` reads.
     pub reverses_at: Option<(f64, f64, f64)>,
     /// The largest |slip| of that kind the data reach.
     pub data_slip: f64,
@@ -102,7 +103,7 @@ impl CurvatureExcess {
         };
         let without = match self.reverses_beyond.zip(self.reverses_at) {
             Some((x, (fz, camber, sign))) => format!(
-                "with the checks off (mode 221) its {name} force changes sign beyond {symbol} = {} at fz {} N, camber {}°, {} {} ({} the data's {}), where the fit's does not",
+                "with the checks off (mode 221) its {name} force changes sign beyond {symbol} = {} at fz {} N, camber {}°, {} {} ({} the data's {}), while with them it keeps its sign (signs as tyre-eval's points give them)",
                 self.slip_text(x),
                 readable(fz, 4),
                 readable(camber.to_degrees(), 3),
@@ -138,8 +139,8 @@ fn ends_and(s: Option<(f64, f64)>, none: f64, v: Option<f64>) -> Vec<f64> {
     out
 }
 
-/// A place a curvature is evaluated at: slip sign (file frame), load (N),
-/// camber (rad, crate convention).
+/// A place a curvature is evaluated at: slip sign, load (N), camber (rad),
+/// in the crate's frame (that of `tyre-eval`'s points).
 type Place = (f64, f64, f64);
 
 /// The curvatures of `t` above 1 over `spans`, the fitted stages' (`Ey`
@@ -180,7 +181,7 @@ pub(crate) fn curvature_excess(
                     let e = (c.PEY1 + c.PEY2 * dfz)
                         * c.LEY
                         * (1.0 + c.PEY5 * gs * gs - (c.PEY3 + c.PEY4 * gs) * s);
-                    places.push((e, (s, fz, camber_flip * gs.asin())));
+                    places.push((e, (alpha_flip * s, fz, camber_flip * gs.asin())));
                 }
             }
         }
@@ -238,14 +239,8 @@ fn excess(
 fn reversal(t: &MagicFormula, curvature: Curvature, (s, fz, camber): Place) -> Option<f64> {
     let mut free = t.clone();
     free.options.limit_checks = false;
-    // The crate's slip of file-frame sign `s` (a left tyre's slip angle is
-    // the file's negated).
-    let flip = match (curvature, t.side) {
-        (Curvature::Ey, TyreSide::Left) => -1.0,
-        _ => 1.0,
-    };
     let force = |tyre: &MagicFormula, x: f64| {
-        let slip = flip * s * x;
+        let slip = s * x;
         let (kappa, alpha) = match curvature {
             Curvature::Ey => (0.0, slip),
             Curvature::Ex => (slip, 0.0),

@@ -79,7 +79,10 @@ pub enum HoldReason {
         have: [usize; 3],
     },
     /// Never fitted (the module notes of `mf_staged` say why).
-    ByDesign,
+    ByDesign {
+        /// Why this coefficient.
+        design: DesignHold,
+    },
     /// The user gave its value.
     Given,
     /// Fitted first, and not determined by the data (module notes).
@@ -110,7 +113,7 @@ impl fmt::Display for HoldReason {
                     .collect();
                 f.write_str(&why.join(", "))
             }
-            HoldReason::ByDesign => f.write_str(BY_DESIGN),
+            HoldReason::ByDesign { design } => f.write_str(design.why()),
             HoldReason::Given => f.write_str("given with --hold"),
             HoldReason::NotIdentifiable {
                 fitted,
@@ -134,15 +137,43 @@ impl fmt::Display for HoldReason {
     }
 }
 
-/// The words of [`HoldReason::ByDesign`]: why each coefficient no stage
-/// fits is held, said where the user reads it (it pointed at the module
-/// notes, which a user of the binary cannot read).
-const BY_DESIGN: &str = "held by design: no stage fits it (QBZ9 is a second constant beside QBZ10·By·Cy in the residual torque's slope, which rig data barely separate; QSY3 and QSY4 are the rolling resistance's speed terms, which a rig at one speed does not determine)";
+/// Why a coefficient no stage fits is held: each said for its own
+/// coefficients, where the user reads it (one sentence for both once put
+/// each coefficient's line beside the other's reason).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum DesignHold {
+    /// `QBZ9`.
+    ResidualTorqueConstant,
+    /// `QSY3`, `QSY4`.
+    RollingResistanceSpeed,
+}
 
-/// Why parameter `need` cannot be fitted with `have` levels.
-pub(super) fn held_reason(need: Need, have: [usize; 3]) -> Option<HoldReason> {
+impl DesignHold {
+    /// The design hold of coefficient `name` (one the table marks held).
+    fn of(name: &str) -> Self {
+        match name {
+            "QBZ9" => DesignHold::ResidualTorqueConstant,
+            _ => DesignHold::RollingResistanceSpeed,
+        }
+    }
+
+    /// The words.
+    fn why(self) -> &'static str {
+        match self {
+            DesignHold::ResidualTorqueConstant => "held by design: no stage fits it (a second constant beside QBZ10·By·Cy in the residual torque's slope, which rig data barely separate)",
+            DesignHold::RollingResistanceSpeed => "held by design: no stage fits them (the rolling resistance's speed terms, which a rig at one speed does not determine)",
+        }
+    }
+}
+
+/// Why parameter `name`, needing `need` levels, cannot be fitted with
+/// `have`.
+pub(super) fn held_reason(name: &str, need: Need, have: [usize; 3]) -> Option<HoldReason> {
     if need == HELD {
-        return Some(HoldReason::ByDesign);
+        return Some(HoldReason::ByDesign {
+            design: DesignHold::of(name),
+        });
     }
     let want = [need.loads, need.cambers, need.pressures];
     want.iter()
@@ -395,6 +426,18 @@ mod tests {
         assert_eq!(h.given("PKY4"), Some(1.5));
         assert_eq!(h.stated("QBZ4", Some(2.1)), (2.1, HoldSource::Template));
         assert_eq!(h.stated("QBZ5", Some(1.0)), (0.0, HoldSource::PacejkaBook));
+    }
+
+    /// Each coefficient held by design gives its own reason, none the
+    /// other's.
+    #[test]
+    fn a_coefficient_held_by_design_gives_its_own_reason() {
+        let why = |name| held_reason(name, HELD, [3, 3, 3]).unwrap().to_string();
+        assert!(why("QBZ9").contains("QBZ10·By·Cy") && !why("QBZ9").contains("rolling"));
+        for name in ["QSY3", "QSY4"] {
+            assert!(why(name).contains("rolling resistance's speed terms"));
+            assert!(!why(name).contains("QBZ10"));
+        }
     }
 
     #[test]

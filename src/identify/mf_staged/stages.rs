@@ -213,7 +213,7 @@ pub(super) fn run_stage(
         .iter()
         .copied()
         .filter(|(name, need)| {
-            held_reason(*need, have).is_none() && run.holding.given(name).is_none()
+            held_reason(name, *need, have).is_none() && run.holding.given(name).is_none()
         })
         .collect();
     if rows.len() <= free.len() + 5 {
@@ -300,7 +300,7 @@ pub(super) fn run_stage(
                 .map(|h| h.2.clone())
                 // The user's value, even where the levels would hold it too.
                 .or_else(|| run.holding.given(name).map(|_| HoldReason::Given))
-                .or_else(|| held_reason(*need, have));
+                .or_else(|| held_reason(name, *need, have));
             let on_bound = fitted.and_then(|k| at_bound(fit.p[k], fit.bounds[k]));
             StageParameter {
                 name,

@@ -421,7 +421,7 @@ fn constants_held(t: &MagicFormula, data: &RigData, o: &Options) -> Vec<super::h
 fn level_held_lines(parameters: &[mf_staged::StageParameter]) -> Vec<String> {
     let mut groups: Vec<(String, Vec<String>)> = Vec::new();
     for p in parameters {
-        let Some(why @ (HoldReason::Levels { .. } | HoldReason::ByDesign)) = &p.held else {
+        let Some(why @ (HoldReason::Levels { .. } | HoldReason::ByDesign { .. })) = &p.held else {
             continue;
         };
         let (why, value) = (why.to_string(), format!("{} = {}", p.name, exact(p.value)));

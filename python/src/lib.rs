@@ -148,7 +148,8 @@ fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
             (Some("beta"), Some(*value))
         }
         UnitSlip::RollInDegrees { column, value, .. }
-        | UnitSlip::RigBeyondAnyTyre { column, value, .. } => (Some(column), Some(*value)),
+        | UnitSlip::RigBeyondAnyTyre { column, value, .. }
+        | UnitSlip::RigForceAboveLoad { column, value, .. } => (Some(column), Some(*value)),
         // `UnitSlip` may grow (non-exhaustive): a new slip has no key here
         // until it is named above.
         _ => (None, None),

@@ -44,7 +44,7 @@ pub use reason::{Limit, ParamReason, ScheduleColumn, DYNAMIC_INDEX};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;
-pub use units::{PressureMeant, UnitSlip};
+pub use units::{PressureMeant, UnitSlip, MAX_RIG_FRICTION};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

@@ -210,7 +210,26 @@ pub enum UnitSlip {
         /// The column's unit.
         unit: &'static str,
     },
+    /// A rig sample whose force is more than [`MAX_RIG_FRICTION`] times
+    /// its load: a spike, or a row in another unit.
+    #[error("column `{column}`: {} N at fz {} N is {} times the load, which no tyre grips at (a racing slick reaches about 2; the limit is {MAX_RIG_FRICTION} times the load plus a twentieth of the median load, {} N): a spike of the logger, or a row in another unit?", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*median))]
+    RigForceAboveLoad {
+        /// The column (`fy`, `fx`).
+        column: &'static str,
+        /// The force, N.
+        value: f64,
+        /// The sample's load, N.
+        fz: f64,
+        /// The file's median load, N.
+        median: f64,
+    },
 }
+
+/// The most a rig sample's force may be, in multiples of its load (plus a
+/// twentieth of the median load, for samples near zero load): 5, past
+/// any tyre's friction (a racing slick reaches about 2; the Hoosier rig
+/// file's largest is 1.37).
+pub const MAX_RIG_FRICTION: f64 = 5.0;
 
 /// A pressure read in another unit that lands among a tyre's pressures
 /// ([`UnitSlip::PressureRowNotInPa`]).

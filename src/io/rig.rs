@@ -12,7 +12,9 @@
 use super::columns::Columns;
 use super::read_columns;
 use super::rig_rows::Known;
-use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip};
+use crate::error::{
+    InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip, MAX_RIG_FRICTION,
+};
 use crate::identify::data::RigData;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
@@ -24,8 +26,16 @@ use std::path::Path;
 pub(crate) fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
     let mut c = read_columns(path, &["fz"], &["mx", "my"])?;
     let (mx, my) = (c.take_optional("mx"), c.take_optional("my"));
-    check_size(path, &c, "mx", mx.as_deref(), MAX_RIG_MOMENT, "N·m")?;
-    check_size(path, &c, "my", my.as_deref(), MAX_RIG_MOMENT, "N·m")?;
+    let mut errors = check_size(path, &c, "mx", mx.as_deref(), MAX_RIG_MOMENT, "N·m");
+    errors.extend(check_size(
+        path,
+        &c,
+        "my",
+        my.as_deref(),
+        MAX_RIG_MOMENT,
+        "N·m",
+    ));
+    refuse_all(path, errors)?;
     Ok([mx, my])
 }
 
@@ -37,7 +47,7 @@ pub const MAX_RIG_FORCE: f64 = 1e6;
 /// The largest moment a rig file may hold, N·m (1 MN at 0.1 m).
 pub const MAX_RIG_MOMENT: f64 = 1e5;
 
-/// Refuses the first value of `column` beyond ±`limit`, at its row.
+/// Every value of `column` beyond ±`limit`, refused at its row.
 fn check_size(
     path: &Path,
     c: &Columns,
@@ -45,17 +55,62 @@ fn check_size(
     values: Option<&[f64]>,
     limit: f64,
     unit: &'static str,
-) -> Result<(), InputError> {
-    let Some(i) = values.and_then(|v| v.iter().position(|x| x.abs() > limit)) else {
-        return Ok(());
-    };
-    let slip = crate::error::UnitSlip::RigBeyondAnyTyre {
-        column,
-        value: values.map_or(0.0, |v| v[i]),
-        limit,
-        unit,
-    };
-    Err(c.error_at(path, i, column, slip.into()))
+) -> Vec<InputError> {
+    let values = values.unwrap_or_default();
+    let beyond = values.iter().enumerate().filter(|(_, x)| x.abs() > limit);
+    beyond
+        .map(|(i, &value)| {
+            let slip = crate::error::UnitSlip::RigBeyondAnyTyre {
+                column,
+                value,
+                limit,
+                unit,
+            };
+            c.error_at(path, i, column, slip.into())
+        })
+        .collect()
+}
+
+/// Every sample of force `column` above [`MAX_RIG_FRICTION`] times its
+/// load (plus a twentieth of the `median` load), refused at its row; a
+/// sample refused for its size or its load's sign is not said twice.
+fn check_friction(
+    path: &Path,
+    c: &Columns,
+    column: &'static str,
+    values: Option<&[f64]>,
+    fz: &[f64],
+    median: f64,
+) -> Vec<InputError> {
+    let values = values.unwrap_or_default();
+    let above = values
+        .iter()
+        .zip(fz)
+        .enumerate()
+        // A negative or oversized load, or an oversized force, is refused
+        // as such already.
+        .filter(|(_, (f, z))| (0.0..=MAX_RIG_FORCE).contains(*z) && f.abs() <= MAX_RIG_FORCE)
+        .filter(|(_, (f, z))| f.abs() > MAX_RIG_FRICTION * (*z + 0.05 * median));
+    above
+        .map(|(i, (&value, &fz))| {
+            let slip = crate::error::UnitSlip::RigForceAboveLoad {
+                column,
+                value,
+                fz,
+                median,
+            };
+            c.error_at(path, i, column, slip.into())
+        })
+        .collect()
+}
+
+/// Refuses `errors` together, in file order, if any.
+fn refuse_all(path: &Path, mut errors: Vec<InputError>) -> Result<(), InputError> {
+    errors.sort_by_key(|e| e.location().map(|l| (l.line, l.column)));
+    match InputError::all_of(path, errors) {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
 }
 
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
@@ -69,13 +124,14 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         ],
     )?;
     let fz = c.take("fz");
-    for (i, v) in fz.iter().enumerate() {
-        if *v < 0.0 {
-            return Err(c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v }));
-        }
-    }
-    check_load_unit(path, &c, &fz)?;
-    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
+    // Every sample no tyre test holds, refused together: a user fixing the
+    // file learns of them all at once.
+    let mut errors: Vec<InputError> = fz
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| **v < 0.0)
+        .map(|(i, v)| c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v }))
+        .collect();
     let n = fz.len();
     let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
         (Some(a), Some(f)) => Some((a, f)),
@@ -98,18 +154,15 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     ];
     for (name, values, limit) in angles {
         let Some(values) = values else { continue };
-        if let Some(i) = values.iter().position(|v| v.abs() > limit) {
-            return Err(c.error_at(
-                path,
-                i,
-                name,
-                InputProblem::AngleInDegrees {
-                    column: name,
-                    value: values[i],
-                    limit,
-                },
-            ));
-        }
+        let beyond = values.iter().enumerate().filter(|(_, v)| v.abs() > limit);
+        errors.extend(beyond.map(|(i, &value)| {
+            let problem = InputProblem::AngleInDegrees {
+                column: name,
+                value,
+                limit,
+            };
+            c.error_at(path, i, name, problem)
+        }));
     }
     let mz = c.take_optional("mz");
     let sized = [
@@ -124,8 +177,26 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         ("mz", mz.as_ref(), MAX_RIG_MOMENT, "N·m"),
     ];
     for (column, values, limit, unit) in sized {
-        check_size(path, &c, column, values.map(Vec::as_slice), limit, unit)?;
+        errors.extend(check_size(
+            path,
+            &c,
+            column,
+            values.map(Vec::as_slice),
+            limit,
+            unit,
+        ));
     }
+    let median = crate::measured::clean::median(&mut fz.clone());
+    let forces = [
+        ("fy", lateral.as_ref().map(|l| l.1.as_slice())),
+        ("fx", longitudinal.as_ref().map(|l| l.1.as_slice())),
+    ];
+    for (column, values) in forces {
+        errors.extend(check_friction(path, &c, column, values, &fz, median));
+    }
+    refuse_all(path, errors)?;
+    check_load_unit(path, &c, &fz)?;
+    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
     check_signs(
         path,
         &c,

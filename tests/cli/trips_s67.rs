@@ -55,3 +55,85 @@ fn tyre_eval_names_every_pressure_at_or_below_zero_with_the_other_refusals() {
     ];
     assert!(order.windows(2).all(|w| w[0] < w[1]), "{err}");
 }
+
+/// A lateral rig sweep at 2, 4 and 6 kN (a Magic Formula curve, friction
+/// 1), with `change(row, line)` applied to each row's text.
+fn rig(change: &dyn Fn(usize, String) -> String) -> String {
+    let mut s = String::from("fz,alpha,fy\n");
+    let mut row = 0;
+    for fz in [2000.0, 4000.0, 6000.0] {
+        for k in 0..41 {
+            let alpha = -0.2 + 0.01 * k as f64;
+            let fy = fz * (1.3 * (10.0 * alpha as f64).atan()).sin();
+            s += &change(row, format!("{fz},{alpha},{fy}"));
+            s += "\n";
+            row += 1;
+        }
+    }
+    s
+}
+
+#[test]
+fn identify_refuses_a_rig_sample_whose_force_no_tyre_grips_at_by_its_line() {
+    // One sample of 123 with a lateral force 200 times its load: the fit
+    // took it (σ 79 %, coefficients on their bounds) and never named it.
+    let spiked = rig(&|row, line| {
+        if row == 60 {
+            "2500,0.05,500000".into()
+        } else {
+            line
+        }
+    });
+    let dir = scratch(&[("rig.csv", &spiked)]);
+    let out = dir.path().join("t.toml");
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = refused(&o, &out);
+    // Row 60 is line 62 (the header is line 1); `fy` is column 3.
+    assert!(
+        err.contains("rig.csv:62:3: column `fy`: 500000 N at fz 2500 N is 200 times the load"),
+        "{err}"
+    );
+}
+
+#[test]
+fn identify_names_every_rig_sample_no_tyre_test_holds_at_once() {
+    let bad = rig(&|row, line| match row {
+        10 => "-4000,0.0,0.0".into(),
+        30 => "4000,12,3000".into(),
+        50 => "4000,0.05,1e300".into(),
+        70 => "6000,0.05,40000".into(),
+        _ => line,
+    });
+    let dir = scratch(&[("rig.csv", &bad)]);
+    let out = dir.path().join("t.toml");
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = refused(&o, &out);
+    assert!(err.contains("4 places refused, in file order"), "{err}");
+    let at = |cell: &str| {
+        err.find(cell)
+            .unwrap_or_else(|| panic!("no {cell:?} in: {err}"))
+    };
+    let order = [
+        at("rig.csv:12:1: column `fz`: -4000 N is negative"),
+        at("rig.csv:32:2: column `alpha`: 12 rad is beyond ±90°"),
+        at("rig.csv:52:3: column `fy`: 1e300 N is beyond ±1000000 N"),
+        at("rig.csv:72:3: column `fy`: 40000 N at fz 6000 N is 6.66667 times the load"),
+    ];
+    assert!(order.windows(2).all(|w| w[0] < w[1]), "{err}");
+    // Each cell said once.
+    assert_eq!(err.matches("rig.csv:52:3").count(), 1, "{err}");
+}

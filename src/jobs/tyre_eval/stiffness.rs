@@ -86,7 +86,7 @@ impl AgainstSlip {
             String::new()
         };
         format!(
-            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first at line {line}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are the file's coefficients extrapolated, not a tyre",
+            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first at line {line}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are what the file's coefficients give where they describe no tyre (inside the file's ranges or not)",
             self.points,
             crate::format::plural(count, "point", "points"),
             if self.points == 1 { "has" } else { "have" },

@@ -368,6 +368,15 @@ pub enum InputProblem {
         /// Where it appears first.
         first: DuplicateAt,
     },
+    /// A header column a slip of spelling away from a column the command
+    /// reads and the file lacks: it would be ignored, and its values lost.
+    #[error("column `{found}` is not one this command reads: did you mean `{meant}`? Rename it (a column the command does not read is ignored, and the values of `{meant}` taken as absent)")]
+    Misspelled {
+        /// The header's column.
+        found: String,
+        /// The column it likely means.
+        meant: &'static str,
+    },
     /// A response channel that holds one value over a whole run: a dead
     /// or unplugged sensor, to which no model can be fitted (its noise
     /// floor is zero, every gap infinitely significant).
@@ -532,6 +541,7 @@ impl InputProblem {
             InputProblem::NoVehicleFile => "NoVehicleFile",
             InputProblem::DeadChannel { .. } => "DeadChannel",
             InputProblem::Duplicate { .. } => "Duplicate",
+            InputProblem::Misspelled { .. } => "Misspelled",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
             InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
             InputProblem::YawIgnoresSteer { .. } => "YawIgnoresSteer",

@@ -60,6 +60,46 @@ impl Columns {
             problem,
         )
     }
+    /// Refuses the header columns that read as slips of an `optional`
+    /// column the file lacks (`presure` for `pressure`, `Camber` for
+    /// `camber`), each at its place in the header; columns in `known` (the
+    /// reader's others) are never taken for one.
+    pub(crate) fn refuse_misspelled(
+        &self,
+        path: &Path,
+        optional: &[&'static str],
+        known: &[&str],
+    ) -> Result<(), InputError> {
+        let absent: Vec<&'static str> = optional
+            .iter()
+            .copied()
+            .filter(|n| !self.header.iter().any(|h| h == n))
+            .collect();
+        let errors = self
+            .header
+            .iter()
+            .enumerate()
+            .filter(|(_, h)| !known.contains(&h.as_str()) && !optional.contains(&h.as_str()))
+            .filter_map(|(i, h)| {
+                let meant = crate::format::nearest_name(h, &absent)?;
+                let problem = InputProblem::Misspelled {
+                    found: h.clone(),
+                    meant,
+                };
+                Some(InputError::problem_at(
+                    path,
+                    self.header_line,
+                    i + 1,
+                    problem,
+                ))
+            })
+            .collect();
+        match InputError::all_of(path, errors) {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+
     /// Number of rows.
     pub fn len(&self) -> usize {
         self.lines.len()

@@ -116,13 +116,12 @@ fn refuse_all(path: &Path, mut errors: Vec<InputError>) -> Result<(), InputError
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
 /// `fx`) sweeps; a file with neither pair is refused.
 pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
-    let mut c = read_columns(
-        path,
-        &["fz"],
-        &[
-            "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
-        ],
-    )?;
+    const OPTIONAL: [&str; 8] = [
+        "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
+    ];
+    let mut c = read_columns(path, &["fz"], &OPTIONAL)?;
+    // The wheel moments are read beside ([`read_rig_moments`]).
+    c.refuse_misspelled(path, &OPTIONAL, &["fz", "mx", "my"])?;
     let fz = c.take("fz");
     // Every sample no tyre test holds, refused together: a user fixing the
     // file learns of them all at once.

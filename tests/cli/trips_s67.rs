@@ -137,3 +137,41 @@ fn identify_names_every_rig_sample_no_tyre_test_holds_at_once() {
     // Each cell said once.
     assert_eq!(err.matches("rig.csv:52:3").count(), 1, "{err}");
 }
+
+#[test]
+fn identify_and_tyre_eval_refuse_a_misspelled_column_they_would_have_ignored() {
+    // `presure` was dropped without a word: the three pressures of the
+    // Hoosier file pooled, its stage σ as good as the right run's.
+    let text = rig(&|_, line| format!("{line},83000,0.0"))
+        .replacen("fz,alpha,fy", "fz,alpha,fy,presure,Camber", 1);
+    let dir = scratch(&[("rig.csv", &text)]);
+    let out = dir.path().join("t.toml");
+    let o = run(&[
+        "identify",
+        dir.path().join("rig.csv").to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = refused(&o, &out);
+    for said in [
+        "rig.csv:1:4: column `presure` is not one this command reads: did you mean `pressure`?",
+        "rig.csv:1:5: column `Camber` is not one this command reads: did you mean `camber`?",
+    ] {
+        assert!(err.contains(said), "no {said:?} in: {err}");
+    }
+    let points = "fz,kappa,alpha,camber,speed,presure\n4000,0,0.1,0,16,220000\n";
+    let (o, written) = super::tyre_eval::eval(
+        dir.path(),
+        &root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"),
+        points,
+        &[],
+    );
+    assert!(!o.status.success() && written.is_empty(), "{written}");
+    assert!(
+        stderr(&o).contains("p.csv:1:6: column `presure` is not one this command reads: did you mean `pressure`?"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -157,6 +157,11 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
         &["fz", "kappa", "alpha", "camber", "speed"],
         &["pressure"],
     )?;
+    c.refuse_misspelled(
+        points,
+        &["pressure"],
+        &["fz", "kappa", "alpha", "camber", "speed"],
+    )?;
     let pressure = c.take_optional("pressure");
     let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()

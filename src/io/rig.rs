@@ -185,17 +185,21 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             unit,
         ));
     }
+    refuse_all(path, errors)?;
+    check_load_unit(path, &c, &fz)?;
+    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
+    // After the loads' units: a lone cell in kN makes its force look a
+    // hundred times the load, and is said as what it is.
     let median = crate::measured::clean::median(&mut fz.clone());
     let forces = [
         ("fy", lateral.as_ref().map(|l| l.1.as_slice())),
         ("fx", longitudinal.as_ref().map(|l| l.1.as_slice())),
     ];
+    let mut errors = Vec::new();
     for (column, values) in forces {
         errors.extend(check_friction(path, &c, column, values, &fz, median));
     }
     refuse_all(path, errors)?;
-    check_load_unit(path, &c, &fz)?;
-    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
     check_signs(
         path,
         &c,

@@ -101,6 +101,10 @@ pub fn run_with_degrees(
             crate::error::Num(settings.variance_window)
         ));
     }
+    m.warnings.extend(noise_in_variance(
+        &m.metrics,
+        settings.variance_window.min(piece),
+    ));
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,
@@ -150,6 +154,30 @@ fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> 
         ));
     }
     Ok(warnings)
+}
+
+/// The warning of a yaw-rate total variance a tenth or more of which is
+/// the noise's: white noise of deviation σ (after the filter, a share of
+/// the step) adds `W·σ²` to `E_r = ∫(δ̂ − r̂)² dt` over a window `W`, in
+/// expectation, whatever its correlation; a noise of a tenth of the step
+/// over 4 s adds 0.04 s, the size of a car's `E_r`. One run scatters about
+/// it by as much (the noise of the initial and steady means that
+/// normalise the response, and the noise's product with the response
+/// error): the figure is a bias, not a correction of the run.
+fn noise_in_variance(m: &StepMetrics, window: f64) -> Option<String> {
+    let added = window * m.yaw_rate_noise.powi(2);
+    let e = m.yaw_rate_total_variance;
+    (added > 0.0 && added >= 0.1 * e).then(|| {
+        format!(
+            "the yaw-rate noise ({}) adds about {} s to E_r ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_r and Er read high by that much (e1 times it for Er), E_r − {} = {} s is the estimate without it; filter harder (--filter-hz) or log a quieter gyro",
+            m.yaw_rate_noise_text(),
+            crate::format::readable(added, 3),
+            crate::format::readable(e, 4),
+            crate::error::Num(window),
+            crate::format::readable(added, 3),
+            crate::format::readable(e - added, 3),
+        )
+    })
 }
 
 impl MeasuredMetricsReport {

@@ -7,13 +7,13 @@ use super::*;
 
 /// The bundled sedan step steer's history (1° at 1.0–1.1 s, to 6 s),
 /// simulated once per test: its header and rows.
-struct Sedan {
-    header: Vec<String>,
-    rows: Vec<Vec<f64>>,
+pub(super) struct Sedan {
+    pub(super) header: Vec<String>,
+    pub(super) rows: Vec<Vec<f64>>,
 }
 
 impl Sedan {
-    fn simulated(dir: &Path) -> Self {
+    pub(super) fn simulated(dir: &Path) -> Self {
         let text = fs::read_to_string(super::trips_s65::sedan_history(dir)).unwrap();
         let mut lines = text.lines();
         let header = lines
@@ -31,7 +31,7 @@ impl Sedan {
     /// Writes its t, steer, speed, yaw rate and ay to `dir/name`, at
     /// 100 Hz, the steer and yaw rate of each row made by `change(t,
     /// steer, yaw_rate, row)`; returns the path.
-    fn measured(
+    pub(super) fn measured(
         &self,
         dir: &Path,
         name: &str,

@@ -258,6 +258,18 @@ pub enum InputProblem {
         /// The free radius, m.
         free: f64,
     },
+    /// A pressure outside a Magic Formula file's range at which its
+    /// vertical model does not carry the point's load, which it carries at
+    /// the range's end (the limit checks off).
+    #[error("pressure = {} Pa, outside the file's PRESMIN–PRESMAX, is why the tyre's vertical model does not carry this load (at most {} N at a deflection of its whole free radius, {} m, where at the range's end it carries it): its pressure terms extrapolated this far describe no tyre, and no loaded radius `rl` exists (the limit checks, mode 1xx, hold the pressure within the range)", Num(*pressure), significant(*most, 4), significant(*free, 4))]
+    PressureCarriesNoLoad {
+        /// The pressure, Pa.
+        pressure: f64,
+        /// What the vertical model carries there at most, N.
+        most: f64,
+        /// The free radius, m.
+        free: f64,
+    },
     /// An angle beyond what a tyre test in radians reaches.
     #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
     AngleInDegrees {
@@ -525,6 +537,7 @@ impl InputProblem {
             InputProblem::NotPhysical { .. } => "NotPhysical",
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
             InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
+            InputProblem::PressureCarriesNoLoad { .. } => "PressureCarriesNoLoad",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
             InputProblem::NoSweep { .. } => "NoSweep",
             InputProblem::NoLateral => "NoLateral",

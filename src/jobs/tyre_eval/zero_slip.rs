@@ -37,8 +37,12 @@ pub struct FxAtZeroSlip {
     /// file, `fx` and `fz`, N (None: every such point is below `VXLOW`).
     pub largest: Option<(usize, f64, f64)>,
     /// The Magic Formula coefficients that make it, with their values
-    /// (empty for another model).
+    /// (empty for another model, and where no shift alone takes a third of
+    /// it off).
     pub coefficients: Vec<(&'static str, f64)>,
+    /// Whether the tyre is a Magic Formula (whose shifts were judged).
+    #[serde(default)]
+    pub magic_formula: bool,
     /// Such points below a Magic Formula file's `VXLOW`: their count, the
     /// largest one's line and `fx` (N), and `VXLOW` (m/s).
     pub below_vxlow: Option<(usize, usize, f64, f64)>,
@@ -80,12 +84,15 @@ pub(crate) fn fx_at_zero_slip(
         points: moving.len(),
         largest: largest.map(|w| (line(w), f[w].fx, fz[w])),
         coefficients: largest.map_or_else(Vec::new, |w| responsible(tyre, p, w, f[w].fx)),
+        magic_formula: vxlow.is_some(),
         below_vxlow,
     })
 }
 
 /// The shifts of a Magic Formula `tyre` whose removal alone takes a third
-/// of `fx` off at point `i` of `p` (every shift not 0 where none does).
+/// of `fx` off at point `i` of `p` (none where none does: a pressure far
+/// past the file's range gave 3.5·Fz that a shift of −0.0016 was blamed
+/// for).
 fn responsible(tyre: &Tyre, p: &Points, i: usize, fx: f64) -> Vec<(&'static str, f64)> {
     let Tyre::MagicFormula(t) = tyre else {
         return Vec::new();
@@ -105,16 +112,11 @@ fn responsible(tyre: &Tyre, p: &Points, i: usize, fx: f64) -> Vec<(&'static str,
             Tyre::MagicFormula(m).evaluate_points(&fz, &kappa, &alpha, &camber, &speed, &pressure);
         f[0].fx
     };
-    let named: Vec<(&'static str, f64)> = given
+    given
         .iter()
         .copied()
         .filter(|(n, _)| (fx - without(n)).abs() >= fx.abs() / 3.0)
-        .collect();
-    if named.is_empty() {
-        given
-    } else {
-        named
-    }
+        .collect()
 }
 
 impl FxAtZeroSlip {
@@ -138,6 +140,7 @@ impl FxAtZeroSlip {
             return slow(lead).unwrap_or_default();
         };
         let cause = match self.coefficients.as_slice() {
+            [] if self.magic_formula => "no shift of the file (PHX1, PHX2, PVX1, PVX2) gives a third of it alone: the point's own conditions (its load, pressure or speed, past the file's ranges?) take the coefficients where they describe no tyre".to_string(),
             [] => "the model's offsets give it".to_string(),
             c => {
                 let each: Vec<String> = c

@@ -435,9 +435,12 @@ impl ModelParameters for Pac89 {
         Pac89::validate(self)
     }
     /// The lateral curve's largest cornering stiffness `a3` (N/deg) by
-    /// its size: one typed in kN/deg is refused at its key.
+    /// its size: one typed in kN/deg is refused at its key, and one whose
+    /// `a3·sin(2·atan(Fz/a4))` passes any tyre's at a load from 0.1 to
+    /// 100 kN.
     fn check_sizes(&self) -> Result<(), ParamError> {
-        super::sizes::pac89_cornering_stiffness("a[3]", self.a[3])
+        super::sizes::pac89_cornering_stiffness("a[3]", self.a[3])?;
+        super::sizes::pac89_peak_stiffness(self.a[3], self.a[4])
     }
     /// BCD = a3·sin(2·atan(Fz/a4))·(1 − a5·|γ|) is proportional to a3 (the
     /// offset Sh makes the stiffness at α = 0 only nearly so).

@@ -109,6 +109,34 @@ pub(crate) fn pac89_cornering_stiffness(key: &str, v: f64) -> Result<(), ParamEr
     }
 }
 
+/// The largest cornering stiffness of a PAC89 file's lateral curve,
+/// `|a3·sin(2·atan(Fz/a4))|` (N/deg) over loads of 0.1 to 100 kN (`a4` in
+/// kN), below [`MAX_CORNERING_STIFFNESS`]: `a3` alone has no upper end (a
+/// fit with both `a3` and `a4` far above any load is a tyre), their
+/// combination does.
+pub(crate) fn pac89_peak_stiffness(a3: f64, a4: f64) -> Result<(), ParamError> {
+    let limit = MAX_CORNERING_STIFFNESS.to_radians();
+    // sin(2·atan(x)) peaks at x = 1 (Fz = a4) and is monotone either side.
+    let at = |fz: f64| (a3 * (2.0 * (fz / a4).atan()).sin()).abs();
+    let peak = if (0.1..=100.0).contains(&a4.abs()) {
+        a3.abs()
+    } else {
+        at(0.1).max(at(100.0))
+    };
+    if peak.is_finite() && peak <= limit {
+        return Ok(());
+    }
+    Err(ParamError::new(
+        "a[3]",
+        a3,
+        ParamReason::OutOfRange {
+            lo: -limit,
+            hi: limit,
+            why: Limit::Pac89CorneringStiffnessBeyondAnyTyre,
+        },
+    ))
+}
+
 /// A UniTire block's `p3` (`longitudinal`: the longitudinal block's),
 /// above [`MIN_UNITIRE_P3`]: a small one is said as the per-degree or
 /// per-percent value it likely is.
@@ -157,4 +185,27 @@ pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
         ParamError::in_range(name, v, -max, max, why)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A PAC89 cornering stiffness is judged by `a3·sin(2·atan(Fz/a4))`
+    /// over the loads a tyre carries, not by `a3` alone: the Adams example
+    /// passes, so does a fit with `a3` and `a4` both at 1e11 (at 100 kN its
+    /// stiffness is 200 N/deg), and an `a3` of 1e6 N/deg with a load-sized
+    /// `a4` (a force that steps at zero slip) is refused.
+    #[test]
+    fn a_pac89_stiffness_is_judged_with_its_load_scale() {
+        assert!(pac89_peak_stiffness(1250.0, 12.8).is_ok());
+        assert!(pac89_peak_stiffness(1e11, 1e11).is_ok());
+        let e = pac89_peak_stiffness(1e6, 12.8).unwrap_err().to_string();
+        assert!(e.contains("a step at zero slip"), "{e}");
+        assert!(pac89_peak_stiffness(3e300, 12.8).is_err());
+        // Just inside and just outside 2e6 N/rad at the peak (Fz = a4).
+        let limit = MAX_CORNERING_STIFFNESS.to_radians();
+        assert!(pac89_peak_stiffness(0.999 * limit, 12.8).is_ok());
+        assert!(pac89_peak_stiffness(1.001 * limit, 12.8).is_err());
+    }
 }

@@ -206,7 +206,14 @@ pub(super) fn staged_figure(
         let (along, across): (Vec<&MfRow>, Vec<&MfRow>) = sel
             .into_iter()
             .partition(|r| x.of(r).abs() > PURE_TOL || x.other().of(r).abs() <= PURE_TOL);
-        for (x, at) in [(x, along), (x.other(), across)] {
+        // A combined lateral stage's rows at zero slip angle are the
+        // longitudinal force's pure sweeps, to slip ratios of ±100 %: drawn
+        // apart, so that they do not stretch the combined sweeps' ±10 %
+        // over a tenth of the panel's width.
+        let (zero, along): (Vec<&MfRow>, Vec<&MfRow>) = along.into_iter().partition(|r| {
+            matches!(st, Stage::CombinedFy | Stage::CombinedMz) && r.alpha.abs() <= PURE_TOL
+        });
+        for (x, at) in [(x, along), (x, zero), (x.other(), across)] {
             if !at.is_empty() {
                 pressures = pressures.max(stage_panels(tyre, st, x, &at, named, &mut panels));
             }

@@ -372,3 +372,39 @@ fn levels_are_named_by_the_groupings_nominals_as_the_terminal_names_them() {
     assert_eq!(labels, want);
     assert_eq!(labels, ["3004 N", "5996 N"]);
 }
+
+/// A combined lateral stage's rows at zero slip angle (the pure
+/// longitudinal sweeps, to ±100 %) are drawn in a panel of their own: the
+/// combined sweeps' panel spans their ±10 %, not ±100 % (they filled a
+/// tenth of its width).
+#[test]
+fn combined_lateral_sweeps_are_not_stretched_by_the_pure_longitudinal_ones() {
+    let t = tyre();
+    let mut rows = Vec::new();
+    for i in (-50..=50).filter(|&i| i != 0) {
+        rows.push(row(&t, 4000.0, 0.02 * f64::from(i), 0.0, 0.0, 0.0));
+    }
+    for a in [4f64.to_radians(), 8f64.to_radians()] {
+        for i in (-10..=10).filter(|&i| i != 0) {
+            rows.push(row(&t, 4000.0, 0.01 * f64::from(i), a, 0.0, 0.0));
+        }
+    }
+    // The channel of the combined rows: the tyre's combined Fy.
+    for r in rows.iter_mut() {
+        r.fy = Stage::CombinedFy.model(&t, r);
+    }
+    let fig = staged_figure(&t, &[Stage::CombinedFy], &rows, &[]);
+    assert_eq!(
+        fig.panels.len(),
+        2,
+        "{:?}",
+        fig.panels.iter().map(|p| &p.title).collect::<Vec<_>>()
+    );
+    let x = |p: &Panel| {
+        let Axes { x, .. } = p.axes();
+        x
+    };
+    let (combined, zero) = (x(&fig.panels[0]), x(&fig.panels[1]));
+    assert!(combined.0 >= -12.0 && combined.1 <= 12.0, "{combined:?}");
+    assert!(zero.0 <= -99.0 && zero.1 >= 99.0, "{zero:?}");
+}

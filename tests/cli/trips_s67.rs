@@ -64,7 +64,7 @@ fn rig(change: &dyn Fn(usize, String) -> String) -> String {
     for fz in [2000.0, 4000.0, 6000.0] {
         for k in 0..41 {
             let alpha = -0.2 + 0.01 * k as f64;
-            let fy = fz * (1.3 * (10.0 * alpha as f64).atan()).sin();
+            let fy = fz * (1.3 * (10.0 * alpha).atan()).sin();
             s += &change(row, format!("{fz},{alpha},{fy}"));
             s += "\n";
             row += 1;

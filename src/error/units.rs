@@ -16,7 +16,7 @@ use thiserror::Error;
 pub enum UnitSlip {
     /// A yaw rate beyond what any car reaches, over more than 1 % of the
     /// run (a spike alone is repaired later).
-    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (1 % of the run reaches {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3))]
+    #[error("column `yaw_rate`: {} rad/s is beyond ±{} rad/s ({:.0}°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is {} rad/s): the yaw rate is in rad/s (FORMATS.md); is the column in deg/s? divide it by 57.3", Num(*value), Num(*limit), limit.to_degrees(), significant(*p99, 3))]
     YawRate {
         /// The first yaw rate beyond the limit, as read.
         value: f64,
@@ -27,7 +27,7 @@ pub enum UnitSlip {
     },
     /// A lateral acceleration beyond what any car reaches, over more than
     /// 1 % of the run.
-    #[error("column `ay`: {} m/s² is beyond ±{} m/s² ({} g), which no car's lateral acceleration reaches (1 % of the run reaches {} m/s²): `ay` is in m/s² (FORMATS.md); is the column in ft/s² (divide it by 3.281) or another unit?", Num(*value), Num(*limit), fixed(limit / 9.80665, 1), significant(*p99, 3))]
+    #[error("column `ay`: {} m/s² is beyond ±{} m/s² ({} g), which no car's lateral acceleration reaches (the run's 99th percentile of |ay| is {} m/s²): `ay` is in m/s² (FORMATS.md); is the column in ft/s² (divide it by 3.281) or another unit?", Num(*value), Num(*limit), fixed(limit / 9.80665, 1), significant(*p99, 3))]
     AyTooLarge {
         /// The first |ay| beyond the limit, as read.
         value: f64,
@@ -108,7 +108,7 @@ pub enum UnitSlip {
     /// A forward speed beyond any car's over more than 1 % of the run, or
     /// one sample beyond any vehicle's at all (no logger's glitch of a
     /// car's speed reads 1e308).
-    #[error("column `speed`: {} m/s is beyond {} m/s ({} km/h), which no car's speed reaches (1 % of the run reaches {} m/s): `speed` is the forward speed in m/s (FORMATS.md); is the column in km/h (divide it by 3.6) or another unit?", Num(*value), Num(*limit), fixed(limit * 3.6, 0), Num(*p99))]
+    #[error("column `speed`: {} m/s is beyond {} m/s ({} km/h), which no car's speed reaches (the run's 99th percentile of |speed| is {} m/s): `speed` is the forward speed in m/s (FORMATS.md); is the column in km/h (divide it by 3.6) or another unit?", Num(*value), Num(*limit), fixed(limit * 3.6, 0), Num(*p99))]
     SpeedBeyondAnyCar {
         /// The first speed beyond the limit, as read.
         value: f64,
@@ -212,7 +212,7 @@ pub enum UnitSlip {
     },
     /// A rig sample whose force is more than [`MAX_RIG_FRICTION`] times
     /// its load: a spike, or a row in another unit.
-    #[error("column `{column}`: {} N at fz {} N is {} times the load, which no tyre grips at (a racing slick reaches about 2; the limit is {MAX_RIG_FRICTION} times the load plus a twentieth of the median load, {} N): a spike of the logger, or a row in another unit?", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*median))]
+    #[error("column `{column}`: {} N at fz {} N is {} times the load, which no tyre grips at (a racing slick reaches about 2): a spike of the logger, or a row in another unit? (the limit there is {MAX_RIG_FRICTION} × (fz + a twentieth of the file's median load, {} N) = {} N)", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*median), Num(MAX_RIG_FRICTION * (fz + 0.05 * median)))]
     RigForceAboveLoad {
         /// The column (`fy`, `fx`).
         column: &'static str,

@@ -36,6 +36,10 @@ impl Columns {
             v.iter_mut().for_each(|x| *x *= factor);
         }
     }
+    /// A column, where read, left in place.
+    pub(crate) fn get(&self, name: &str) -> Option<&[f64]> {
+        self.data.get(name).map(Vec::as_slice)
+    }
     /// An optional column.
     pub(crate) fn take_optional(&mut self, name: &str) -> Option<Vec<f64>> {
         self.data.remove(name)
@@ -172,12 +176,29 @@ fn meant(
         .map(str::to_string)
 }
 
-/// Reads the `required` and `optional` columns of a CSV file.
+/// Reads the `required` and `optional` columns of a CSV file; every cell
+/// that is not a finite number refused at once.
 pub fn read_columns(
     path: &Path,
     required: &[&str],
     optional: &[&str],
 ) -> Result<Columns, InputError> {
+    let (columns, bad) = read_columns_with_bad_cells(path, required, optional)?;
+    match InputError::all_of(path, bad) {
+        Some(e) => Err(e),
+        None => Ok(columns),
+    }
+}
+
+/// [`read_columns`], the cells that are not finite numbers returned with
+/// the columns (as NaN, or the infinity read) rather than refused: for a
+/// reader that refuses them together with its own checks of the values,
+/// so that a file's every bad cell is said in one run.
+pub(crate) fn read_columns_with_bad_cells(
+    path: &Path,
+    required: &[&str],
+    optional: &[&str],
+) -> Result<(Columns, Vec<InputError>), InputError> {
     let file_err = |problem| InputError::problem(path, problem);
     // Read whole to find each record's true line (see [`line_of`]).
     let bytes = std::fs::read(path).map_err(|source| InputError::Io {
@@ -307,13 +328,10 @@ pub fn read_columns(
         }
         out.lines.push(line);
     }
-    if let Some(e) = InputError::all_of(path, bad) {
-        return Err(e);
-    }
     if out.is_empty() {
         return Err(InputError::NoRows {
             path: path.to_path_buf(),
         });
     }
-    Ok(out)
+    Ok((out, bad))
 }

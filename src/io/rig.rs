@@ -57,7 +57,10 @@ fn check_size(
     unit: &'static str,
 ) -> Vec<InputError> {
     let values = values.unwrap_or_default();
-    let beyond = values.iter().enumerate().filter(|(_, x)| x.abs() > limit);
+    let beyond = values
+        .iter()
+        .enumerate()
+        .filter(|(_, x)| x.is_finite() && x.abs() > limit);
     beyond
         .map(|(i, &value)| {
             let slip = crate::error::UnitSlip::RigBeyondAnyTyre {
@@ -119,18 +122,31 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     const OPTIONAL: [&str; 8] = [
         "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
     ];
-    let mut c = read_columns(path, &["fz"], &OPTIONAL)?;
+    let (mut c, mut errors) =
+        super::columns::read_columns_with_bad_cells(path, &["fz"], &OPTIONAL)?;
     // The wheel moments are read beside ([`read_rig_moments`]).
     c.refuse_misspelled(path, &OPTIONAL, &["fz", "mx", "my"])?;
     let fz = c.take("fz");
-    // Every sample no tyre test holds, refused together: a user fixing the
-    // file learns of them all at once.
-    let mut errors: Vec<InputError> = fz
-        .iter()
-        .enumerate()
-        .filter(|(_, v)| **v < 0.0)
-        .map(|(i, v)| c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v }))
-        .collect();
+    // Every sample no tyre test holds, refused together with the cells
+    // that are no numbers: a user fixing the file learns of them all at
+    // once. (A cell that is no finite number is said as such alone.)
+    errors.extend(
+        fz.iter()
+            .enumerate()
+            .filter(|(_, v)| v.is_finite() && **v < 0.0)
+            .map(|(i, v)| c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v })),
+    );
+    if let Some(speed) = c.get("speed") {
+        errors.extend(
+            speed
+                .iter()
+                .enumerate()
+                .filter(|(_, v)| v.is_finite() && **v < 0.0)
+                .map(|(i, &value)| {
+                    c.error_at(path, i, "speed", InputProblem::NegativeSpeed { value })
+                }),
+        );
+    }
     let n = fz.len();
     let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
         (Some(a), Some(f)) => Some((a, f)),
@@ -153,7 +169,10 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     ];
     for (name, values, limit) in angles {
         let Some(values) = values else { continue };
-        let beyond = values.iter().enumerate().filter(|(_, v)| v.abs() > limit);
+        let beyond = values
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.is_finite() && v.abs() > limit);
         errors.extend(beyond.map(|(i, &value)| {
             let problem = InputProblem::AngleInDegrees {
                 column: name,

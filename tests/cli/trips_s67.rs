@@ -32,13 +32,14 @@ fn tyre_eval_names_every_cell_that_is_not_a_finite_number_at_once() {
 }
 
 #[test]
-fn tyre_eval_names_every_pressure_at_or_below_zero_with_the_other_refusals() {
+fn tyre_eval_names_every_pressure_at_or_below_zero_and_bad_cell_with_the_other_refusals() {
     let dir = tempfile::tempdir().unwrap();
     let points = "fz,kappa,alpha,camber,speed,pressure\n\
                   4000,0,0.1,0,16,220000\n\
                   4000,0,0.1,0,16,0\n\
                   4000,0,0.1,0,-3,220000\n\
-                  4000,0,0.1,0,16,-1\n";
+                  4000,0,0.1,0,16,-1\n\
+                  abc,0,0.1,0,16,220000\n";
     let (o, written) = super::tyre_eval::eval(dir.path(), &sample_tir(), points, &[]);
     assert!(!o.status.success() && written.is_empty(), "{written}");
     let err = stderr(&o);
@@ -52,6 +53,7 @@ fn tyre_eval_names_every_pressure_at_or_below_zero_with_the_other_refusals() {
         at("p.csv:3:6: column `pressure`: 0 Pa is not a positive pressure"),
         at("p.csv:4:5: column `speed`"),
         at("p.csv:5:6: column `pressure`: -1 Pa is not a positive pressure"),
+        at("p.csv:6:1: column `fz`: `abc` is not a number"),
     ];
     assert!(order.windows(2).all(|w| w[0] < w[1]), "{err}");
 }
@@ -73,16 +75,10 @@ fn rig(change: &dyn Fn(usize, String) -> String) -> String {
     s
 }
 
-#[test]
-fn identify_refuses_a_rig_sample_whose_force_no_tyre_grips_at_by_its_line() {
-    // One sample of 123 with a lateral force 200 times its load: the fit
-    // took it (σ 79 %, coefficients on their bounds) and never named it.
-    let spiked = rig(&|row, line| match row {
-        60 => "2500,0.05,500000".into(),
-        70 => "6000,0.05,40000".into(),
-        _ => line,
-    });
-    let dir = scratch(&[("rig.csv", &spiked)]);
+/// `identify <rig> --model pac89` on `text` written as `rig.csv`, which
+/// must be refused without writing: the refusal, and the folder.
+fn identify_refuses(text: &str) -> (String, tempfile::TempDir) {
+    let dir = scratch(&[("rig.csv", text)]);
     let out = dir.path().join("t.toml");
     let o = run(&[
         "identify",
@@ -92,7 +88,19 @@ fn identify_refuses_a_rig_sample_whose_force_no_tyre_grips_at_by_its_line() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    let err = refused(&o, &out);
+    (refused(&o, &out), dir)
+}
+
+#[test]
+fn identify_refuses_a_rig_sample_whose_force_no_tyre_grips_at_by_its_line() {
+    // One sample of 123 with a lateral force 200 times its load: the fit
+    // took it (σ 79 %, coefficients on their bounds) and never named it.
+    let spiked = rig(&|row, line| match row {
+        60 => "2500,0.05,500000".into(),
+        70 => "6000,0.05,40000".into(),
+        _ => line,
+    });
+    let err = identify_refuses(&spiked).0;
     // Row 60 is line 62 (the header is line 1); `fy` is column 3.
     for said in [
         "rig.csv:62:3: column `fy`: 500000 N at fz 2500 N is 200 times the load",
@@ -106,28 +114,20 @@ fn identify_refuses_a_rig_sample_whose_force_no_tyre_grips_at_by_its_line() {
 fn identify_names_every_rig_sample_no_tyre_test_holds_at_once() {
     let bad = rig(&|row, line| match row {
         10 => "-4000,0.0,0.0".into(),
+        20 => "4000,xx,0.0".into(),
         30 => "4000,12,3000".into(),
         50 => "4000,0.05,1e300".into(),
         _ => line,
     });
-    let dir = scratch(&[("rig.csv", &bad)]);
-    let out = dir.path().join("t.toml");
-    let o = run(&[
-        "identify",
-        dir.path().join("rig.csv").to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let err = refused(&o, &out);
-    assert!(err.contains("3 places refused, in file order"), "{err}");
+    let err = identify_refuses(&bad).0;
+    assert!(err.contains("4 places refused, in file order"), "{err}");
     let at = |cell: &str| {
         err.find(cell)
             .unwrap_or_else(|| panic!("no {cell:?} in: {err}"))
     };
     let order = [
         at("rig.csv:12:1: column `fz`: -4000 N is negative"),
+        at("rig.csv:22:2: column `alpha`: `xx` is not a number"),
         at("rig.csv:32:2: column `alpha`: 12 rad is beyond ±90°"),
         at("rig.csv:52:3: column `fy`: 1e300 N is beyond ±1000000 N"),
     ];
@@ -145,17 +145,7 @@ fn identify_and_tyre_eval_refuse_a_misspelled_column_they_would_have_ignored() {
         "fz,alpha,fy,presure,Camber",
         1,
     );
-    let dir = scratch(&[("rig.csv", &text)]);
-    let out = dir.path().join("t.toml");
-    let o = run(&[
-        "identify",
-        dir.path().join("rig.csv").to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let err = refused(&o, &out);
+    let (err, dir) = identify_refuses(&text);
     for said in [
         "rig.csv:1:4: column `presure` is not one this command reads: did you mean `pressure`?",
         "rig.csv:1:5: column `Camber` is not one this command reads: did you mean `camber`?",

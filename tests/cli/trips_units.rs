@@ -162,7 +162,7 @@ fn a_yaw_rate_in_degrees_per_second_is_refused_at_its_column() {
     });
     assert!(e.contains("run.csv:213:4: column `yaw_rate`: 3.085"), "{e}");
     assert!(
-        e.contains("rad/s is beyond ±3 rad/s (172°/s), which no car's yaw rate reaches (1 % of the run reaches 6.88 rad/s)"),
+        e.contains("rad/s is beyond ±3 rad/s (172°/s), which no car's yaw rate reaches (the run's 99th percentile of |yaw_rate| is 6.88 rad/s)"),
         "{e}"
     );
     assert!(
@@ -195,7 +195,7 @@ fn a_lateral_acceleration_beyond_30_m_s2_is_refused_at_its_column() {
     });
     assert!(e.contains("column `ay`: 30."), "{e}");
     assert!(
-        e.contains("m/s² is beyond ±30 m/s² (3.1 g), which no car's lateral acceleration reaches (1 % of the run reaches 39.4 m/s²)"),
+        e.contains("m/s² is beyond ±30 m/s² (3.1 g), which no car's lateral acceleration reaches (the run's 99th percentile of |ay| is 39.4 m/s²)"),
         "{e}"
     );
     assert!(

@@ -61,9 +61,9 @@ pub use unread::Unread;
 
 use crate::error::{Error, InputProblem};
 use crate::io::fitted_ranges::{FittedRanges, RangePoint};
+use crate::io::load_tyre_with_ranges;
 use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
-use crate::io::{load_tyre_with_ranges, read_columns};
 use crate::report::{refuse_overwrite, write_columns};
 use crate::tyre::mf::MfInput;
 use crate::tyre::PointForces;
@@ -152,7 +152,9 @@ struct PointColumns {
 /// (a row's read against the pressures `known` of the tyre) and loads in
 /// kN, each at its cell.
 fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointColumns, Error> {
-    let mut c = read_columns(
+    // The cells that are no finite numbers are said with the values no
+    // tyre is evaluated at, in one run.
+    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(
         points,
         &["fz", "kappa", "alpha", "camber", "speed"],
         &["pressure"],
@@ -186,7 +188,7 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
         refused.extend(
             p.iter()
                 .enumerate()
-                .filter(|(_, v)| **v <= 0.0)
+                .filter(|(_, v)| v.is_finite() && **v <= 0.0)
                 .map(|(i, &value)| {
                     (
                         i,
@@ -198,10 +200,12 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
         );
     }
     refused.sort_by_key(|(i, k, _, _)| (*i, *k));
-    let errors = refused
+    let mut errors: Vec<crate::error::InputError> = refused
         .into_iter()
         .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
         .collect();
+    errors.extend(bad_cells);
+    errors.sort_by_key(|e| e.location().map(|l| (l.line, l.column)));
     if let Some(e) = crate::error::InputError::all_of(points, errors) {
         return Err(e.into());
     }

@@ -79,7 +79,13 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
         };
         Some((i, problem))
     };
-    values.iter().enumerate().filter_map(refused).collect()
+    // A cell that is no finite number is said as such by the reader.
+    values
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| v.is_finite())
+        .filter_map(refused)
+        .collect()
 }
 
 /// Whether an angle beyond `limit` (rad) reads as one in degrees: more

@@ -43,6 +43,11 @@ pub struct FxAtZeroSlip {
     /// Whether the tyre is a Magic Formula (whose shifts were judged).
     #[serde(default)]
     pub magic_formula: bool,
+    /// The largest point's pressure where it lies past the Magic Formula
+    /// file's range, with the range (Pa): its pressure terms extrapolated
+    /// there scale the force a shift gives.
+    #[serde(default)]
+    pub pressure_past_range: Option<(f64, f64, f64)>,
     /// Such points below a Magic Formula file's `VXLOW`: their count, the
     /// largest one's line and `fx` (N), and `VXLOW` (m/s).
     pub below_vxlow: Option<(usize, usize, f64, f64)>,
@@ -85,8 +90,20 @@ pub(crate) fn fx_at_zero_slip(
         largest: largest.map(|w| (line(w), f[w].fx, fz[w])),
         coefficients: largest.map_or_else(Vec::new, |w| responsible(tyre, p, w, f[w].fx)),
         magic_formula: vxlow.is_some(),
+        pressure_past_range: largest.and_then(|w| past_range(tyre, p, w)),
         below_vxlow,
     })
+}
+
+/// The pressure of point `i` where it lies past a Magic Formula file's
+/// pressure range, with the range.
+fn past_range(tyre: &Tyre, p: &Points, i: usize) -> Option<(f64, f64, f64)> {
+    let Tyre::MagicFormula(t) = tyre else {
+        return None;
+    };
+    let pressure = *p.pressure.get(i)?;
+    let (lo, hi) = (t.limits.pressure_min?, t.limits.pressure_max?);
+    (!(lo..=hi).contains(&pressure)).then_some((pressure, lo, hi))
 }
 
 /// The shifts of a Magic Formula `tyre` whose removal alone takes a third
@@ -150,6 +167,15 @@ impl FxAtZeroSlip {
                 let verb = if c.len() == 1 { "gives" } else { "give" };
                 format!("the file's {} {verb} it", each.join(", "))
             }
+        };
+        let cause = match self.pressure_past_range {
+            Some((p, lo, hi)) => format!(
+                "{cause}, at a pressure of {} Pa past the file's PRESMIN–PRESMAX ({}–{} Pa), where its pressure terms extrapolated scale the force (see the pressure warning)",
+                rounded(p, 6),
+                rounded(lo, 6),
+                rounded(hi, 6)
+            ),
+            None => cause,
         };
         let more = self.below_vxlow.map_or(0, |b| b.0);
         let also = slow(format!("{more} more")).map_or_else(String::new, |s| format!("; and {s}"));

@@ -18,6 +18,7 @@ mod output;
 mod param;
 mod piece;
 mod problem;
+mod problem_name;
 mod reason;
 mod rig;
 mod rig_sign;

@@ -42,6 +42,7 @@
 mod checks;
 mod friction;
 mod light_load;
+mod not_carried;
 mod physical;
 mod pressure;
 mod ranges;
@@ -241,13 +242,8 @@ struct MfExtras {
     clamped: usize,
     ranges_left: Vec<ranges::RangeLeft>,
     loaded_radius: Option<Vec<f64>>,
-    not_carried: Vec<NotCarriedAt>,
+    not_carried: Vec<not_carried::NotCarriedAt>,
 }
-
-/// A point whose load the vertical model does not carry: its row, what
-/// the model carries, and the point's pressure where that is the cause
-/// (outside the file's range, and carried at the range's end).
-type NotCarriedAt = (usize, crate::tyre::mf::vertical::NotCarried, Option<f64>);
 
 /// The [`MfExtras`] of `tyre` at the points `p`.
 fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfExtras {
@@ -275,7 +271,7 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
             .map(|(i, r)| match r {
                 Some(Ok(r)) => r,
                 Some(Err(n)) => {
-                    not_carried.push((i, n, pressure_to_blame(t, &inputs[i])));
+                    not_carried.push((i, n, not_carried::pressure_to_blame(t, &inputs[i])));
                     f64::NAN
                 }
                 None => f64::NAN,
@@ -288,61 +284,6 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
         ranges_left: ranges::ranges_left(t, &inputs, lines),
         loaded_radius,
         not_carried,
-    }
-}
-
-/// The pressure of `q` where it, not the load, is why the vertical model
-/// of `t` does not carry the point: outside the file's pressure range, and
-/// carried at the range's nearer end.
-fn pressure_to_blame(t: &crate::tyre::mf::MagicFormula, q: &MfInput) -> Option<f64> {
-    let p = q.pressure?;
-    let l = &t.limits;
-    let within = p
-        .max(l.pressure_min.unwrap_or(p))
-        .min(l.pressure_max.unwrap_or(p));
-    let carried = |pressure| {
-        let at = MfInput {
-            pressure: Some(pressure),
-            ..*q
-        };
-        matches!(t.loaded_radius_or_not_carried(&at), Some(Ok(_)))
-    };
-    (within != p && carried(within)).then_some(p)
-}
-
-/// Refuses the points whose load the vertical model does not carry, at
-/// the point's row and the load's column; where the pressure is the cause
-/// ([`pressure_to_blame`]), at the pressure's column.
-fn refuse_not_carried(
-    points: &Path,
-    file: &crate::io::Columns,
-    not_carried: &[NotCarriedAt],
-) -> Result<(), Error> {
-    let errors = not_carried
-        .iter()
-        .map(|(i, n, blamed)| match blamed {
-            Some(pressure) => {
-                let pressure = *pressure;
-                let problem = InputProblem::PressureCarriesNoLoad {
-                    pressure,
-                    most: n.most,
-                    free: n.free,
-                };
-                file.error_at(points, *i, "pressure", problem)
-            }
-            _ => {
-                let problem = InputProblem::LoadNotCarried {
-                    fz: n.fz,
-                    most: n.most,
-                    free: n.free,
-                };
-                file.error_at(points, *i, "fz", problem)
-            }
-        })
-        .collect();
-    match crate::error::InputError::all_of(points, errors) {
-        Some(e) => Err(e.into()),
-        None => Ok(()),
     }
 }
 
@@ -420,7 +361,7 @@ pub fn run(
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
     let light_load = light_load::light_load(&tyre, fz, &file.lines);
-    refuse_not_carried(points, &file, &extras.not_carried)?;
+    not_carried::refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
     // Every model gives no force off the road: said for each, not only
     // where a loaded radius is written.

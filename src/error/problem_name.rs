@@ -1,0 +1,70 @@
+//! The name of each [`InputProblem`] variant, for callers that report an
+//! error's kind (the Python module's exceptions): one arm per variant, so
+//! that the compiler asks for a new problem's name here.
+
+use super::InputProblem;
+
+impl InputProblem {
+    /// The problem's name (its variant), for callers that report kinds.
+    pub fn name(&self) -> &'static str {
+        match self {
+            InputProblem::Csv { .. } => "Csv",
+            InputProblem::Header { .. } => "Header",
+            InputProblem::Toml { .. } => "Toml",
+            InputProblem::Json { .. } => "Json",
+            InputProblem::NotUtf8 { .. } => "NotUtf8",
+            InputProblem::MissingFile { .. } => "MissingFile",
+            InputProblem::TirSectionUnclosed { .. } => "TirSectionUnclosed",
+            InputProblem::TirNotAKey { .. } => "TirNotAKey",
+            InputProblem::TirStringUnclosed { .. } => "TirStringUnclosed",
+            InputProblem::TirNoValue { .. } => "TirNoValue",
+            InputProblem::TirNotFinite { .. } => "TirNotFinite",
+            InputProblem::TirNotANumber { .. } => "TirNotANumber",
+            InputProblem::TirUnknownUnit { .. } => "TirUnknownUnit",
+            InputProblem::TirAngleNotRadians { .. } => "TirAngleNotRadians",
+            InputProblem::TirUnsupportedFittyp { .. } => "TirUnsupportedFittyp",
+            InputProblem::TirNoFittyp => "TirNoFittyp",
+            InputProblem::TirSide { .. } => "TirSide",
+            InputProblem::TirMissingKey { .. } => "TirMissingKey",
+            InputProblem::TirCoefficientsMissing { .. } => "TirCoefficientsMissing",
+            InputProblem::TirValue(_) => "TirValue",
+            InputProblem::NotAShard { .. } => "NotAShard",
+            InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",
+            InputProblem::TooFewSamples => "TooFewSamples",
+            InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
+            InputProblem::NegativeLoad { .. } => "NegativeLoad",
+            InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
+            InputProblem::NegativeSpeed { .. } => "NegativeSpeed",
+            InputProblem::NotPhysical { .. } => "NotPhysical",
+            InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
+            InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
+            InputProblem::PressureCarriesNoLoad { .. } => "PressureCarriesNoLoad",
+            InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
+            InputProblem::NoSweep { .. } => "NoSweep",
+            InputProblem::NoLateral => "NoLateral",
+            InputProblem::NoLongitudinal => "NoLongitudinal",
+            InputProblem::WrongSign { .. } => "WrongSign",
+            InputProblem::NoLevelNear { .. } => "NoLevelNear",
+            InputProblem::NoPressureColumn => "NoPressureColumn",
+            InputProblem::NoCamberColumn { .. } => "NoCamberColumn",
+            InputProblem::NoMovingSamples { .. } => "NoMovingSamples",
+            InputProblem::NoSteerStep { .. } => "NoSteerStep",
+            InputProblem::EmptyRunsFolder { .. } => "EmptyRunsFolder",
+            InputProblem::RunListedTwice { .. } => "RunListedTwice",
+            InputProblem::NoRuns { .. } => "NoRuns",
+            InputProblem::NoVehicleFile => "NoVehicleFile",
+            InputProblem::DeadChannel { .. } => "DeadChannel",
+            InputProblem::Duplicate { .. } => "Duplicate",
+            InputProblem::Misspelled { .. } => "Misspelled",
+            InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",
+            InputProblem::SteerAboveYaw { .. } => "SteerAboveYaw",
+            InputProblem::YawIgnoresSteer { .. } => "YawIgnoresSteer",
+            InputProblem::YawAboveSteer { .. } => "YawAboveSteer",
+            InputProblem::DegreesColumnAbsent { .. } => "DegreesColumnAbsent",
+            InputProblem::DegreesColumnUnread { .. } => "DegreesColumnUnread",
+            InputProblem::UnitSlip(_) => "UnitSlip",
+            InputProblem::RunTooShort { .. } => "RunTooShort",
+            InputProblem::TooFewRuns { .. } => "TooFewRuns",
+        }
+    }
+}

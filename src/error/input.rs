@@ -216,6 +216,16 @@ impl InputError {
         })
     }
 
+    /// [`Self::all_of`] for errors gathered by several checks, put in file
+    /// order first (by line, then column; an error without a place first).
+    pub(crate) fn all_in_file_order(
+        path: &std::path::Path,
+        mut errors: Vec<InputError>,
+    ) -> Option<Self> {
+        errors.sort_by_key(|e| e.location().map(|l| (l.line, l.column)));
+        Self::all_of(path, errors)
+    }
+
     /// The file the error is in.
     pub fn path(&self) -> &std::path::Path {
         match self {

@@ -108,12 +108,8 @@ fn check_friction(
 }
 
 /// Refuses `errors` together, in file order, if any.
-fn refuse_all(path: &Path, mut errors: Vec<InputError>) -> Result<(), InputError> {
-    errors.sort_by_key(|e| e.location().map(|l| (l.line, l.column)));
-    match InputError::all_of(path, errors) {
-        Some(e) => Err(e),
-        None => Ok(()),
-    }
+fn refuse_all(path: &Path, errors: Vec<InputError>) -> Result<(), InputError> {
+    InputError::all_in_file_order(path, errors).map_or(Ok(()), Err)
 }
 
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,

@@ -80,14 +80,7 @@ fn rig(change: &dyn Fn(usize, String) -> String) -> String {
 fn identify_refuses(text: &str) -> (String, tempfile::TempDir) {
     let dir = scratch(&[("rig.csv", text)]);
     let out = dir.path().join("t.toml");
-    let o = run(&[
-        "identify",
-        dir.path().join("rig.csv").to_str().unwrap(),
-        "--model",
-        "pac89",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = identify_to(&dir.path().join("rig.csv"), "pac89", &out);
     (refused(&o, &out), dir)
 }
 

@@ -200,14 +200,12 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
                 }),
         );
     }
-    refused.sort_by_key(|(i, k, _, _)| (*i, *k));
     let mut errors: Vec<crate::error::InputError> = refused
         .into_iter()
         .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
         .collect();
     errors.extend(bad_cells);
-    errors.sort_by_key(|e| e.location().map(|l| (l.line, l.column)));
-    if let Some(e) = crate::error::InputError::all_of(points, errors) {
+    if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
         return Err(e.into());
     }
     // A pressure written in kPa, bar or psi (a .tir clamps it to its

@@ -21,18 +21,20 @@ use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
 
-/// A value `v` outside `lo` to `hi` in `unit`, and the range, at the
-/// digits that tell them apart ([`super::number::numbers_apart`]).
-fn apart(v: f64, lo: f64, hi: f64, unit: &str) -> (String, String) {
-    let (v, b) = super::number::numbers_apart(v, &[lo, hi]);
-    let u = |x: &str| {
-        if unit.is_empty() {
-            x.to_string()
-        } else {
-            format!("{x} {unit}")
-        }
+/// `v` beside the end of `lo..=hi` it passes, each with its unit and the
+/// digits that tell them apart: "6000000 Pa is above 5000000 Pa, the
+/// largest", not "outside 0 to 5000000 Pa" (a range whose other end a
+/// reader takes for the least value accepted).
+fn past_end(v: f64, lo: f64, hi: f64, unit: &str) -> String {
+    let (v_text, b) = super::number::numbers_apart(v, &[lo, hi]);
+    let u = |x: &str| match unit {
+        "" => x.to_string(),
+        _ => format!("{x} {unit}"),
     };
-    (u(&v), format!("{} to {}", b[0], u(&b[1])))
+    match v > hi {
+        true => format!("{} is above {}, the largest", u(&v_text), u(&b[1])),
+        false => format!("{} is below {}, the least", u(&v_text), u(&b[0])),
+    }
 }
 
 /// What is wrong with an input file's content.
@@ -224,7 +226,7 @@ pub enum InputProblem {
         value: f64,
     },
     /// A tyre input outside the range a tyre model is evaluated in.
-    #[error("column `{column}`: {} is outside {}, the range a tyre is evaluated in ({why})", apart(*value, *lo, *hi, unit).0, apart(*value, *lo, *hi, unit).1)]
+    #[error("column `{column}`: {} a tyre is evaluated at ({why})", past_end(*value, *lo, *hi, unit))]
     NotPhysical {
         /// The column.
         column: &'static str,
@@ -387,7 +389,7 @@ pub enum InputProblem {
         /// The header's column.
         found: String,
         /// The column it likely means.
-        meant: &'static str,
+        meant: Box<str>,
     },
     /// A response channel that holds one value over a whole run: a dead
     /// or unplugged sensor, to which no model can be fitted (its noise

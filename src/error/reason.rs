@@ -102,6 +102,27 @@ pub enum ParamReason {
         /// The lower end.
         lo: f64,
     },
+    /// A magnitude at or below `min`, for the reason `why`: the sign is
+    /// free (a side's, or a convention's), the size is not.
+    #[error("must be larger than {} in magnitude (either sign): {why}", super::number::Num(*.min))]
+    MagnitudeAtMost {
+        /// The largest magnitude refused.
+        min: f64,
+        /// Why.
+        why: Limit,
+    },
+    /// A PAC89 cornering stiffness `|a3·sin(2·atan(Fz/a4))|` (N/deg)
+    /// above any tyre's at the load `fz` (kN) from 0.1 to 100 kN: the
+    /// combination is refused, `a3` alone has no upper end.
+    #[error("with a4 = {} kN, BCD = a3·sin(2·atan(Fz/a4)) reaches {} N/deg at Fz = {} kN, above any tyre's {} N/deg (2e6 N/rad; a car tyre's is 1000–3000 N/deg): the lateral force would be a step at zero slip, not a curve; check a3 and a4 (a3 is the peak stiffness, reached at Fz = a4)", super::number::Num(*a4), crate::format::readable(*peak, 4), crate::format::rounded(*fz, 4), crate::format::rounded(crate::tyre::sizes::MAX_CORNERING_STIFFNESS.to_radians(), 5))]
+    Pac89PeakStiffness {
+        /// `a4`, kN.
+        a4: f64,
+        /// The largest stiffness over the loads, N/deg.
+        peak: f64,
+        /// The load it is reached at, kN.
+        fz: f64,
+    },
     /// Outside the range `(lo, hi]`, for the reason `why`.
     #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {
@@ -427,10 +448,6 @@ pub enum Limit {
     /// small: in kN/deg.
     #[error("PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg (the model's slip angle is in degrees, its force in N), so |a3| bounds it: no tyre's is below 15 N/deg (900 N/rad; a car tyre's a3 is 1000–3000 N/deg): is the value in kN/deg? multiply it by 1000")]
     Pac89CorneringStiffnessInKn,
-    /// A PAC89 file whose cornering stiffness `a3·sin(2·atan(Fz/a4))`
-    /// reaches beyond any tyre's at a load a tyre carries.
-    #[error("PAC89's cornering stiffness BCD = a3·sin(2·atan(Fz/a4)) (N/deg, Fz and a4 in kN) reaches this at some load from 0.1 to 100 kN, above any tyre's 34907 N/deg (2e6 N/rad; a car tyre's is 1000–3000 N/deg): its lateral force is then a step at zero slip, not a curve; check a3 (one beyond it is a tyre's only with a4 far above any load too)")]
-    Pac89CorneringStiffnessBeyondAnyTyre,
     /// A UniTire file's cornering stiffness per unit load `p3`, too small:
     /// per degree.
     #[error("UniTire's cornering stiffness is K = Fz·(p3 + p4·Fzn + p5·Fzn²) per unit tan α, so p3 (`p[2]`) is K/Fz at light load, 10–25 for a road or racing tyre: no tyre's is below 0.9: are p3, p4 and p5 per degree? multiply them by 57.3")]

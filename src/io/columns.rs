@@ -64,46 +64,6 @@ impl Columns {
             problem,
         )
     }
-    /// Refuses the header columns that read as slips of an `optional`
-    /// column the file lacks (`presure` for `pressure`, `Camber` for
-    /// `camber`), each at its place in the header; columns in `known` (the
-    /// reader's others) are never taken for one.
-    pub(crate) fn refuse_misspelled(
-        &self,
-        path: &Path,
-        optional: &[&'static str],
-        known: &[&str],
-    ) -> Result<(), InputError> {
-        let absent: Vec<&'static str> = optional
-            .iter()
-            .copied()
-            .filter(|n| !self.header.iter().any(|h| h == n))
-            .collect();
-        let errors = self
-            .header
-            .iter()
-            .enumerate()
-            .filter(|(_, h)| !known.contains(&h.as_str()) && !optional.contains(&h.as_str()))
-            .filter_map(|(i, h)| {
-                let meant = crate::format::nearest_name(h, &absent)?;
-                let problem = InputProblem::Misspelled {
-                    found: h.clone(),
-                    meant,
-                };
-                Some(InputError::problem_at(
-                    path,
-                    self.header_line,
-                    i + 1,
-                    problem,
-                ))
-            })
-            .collect();
-        match InputError::all_of(path, errors) {
-            Some(e) => Err(e),
-            None => Ok(()),
-        }
-    }
-
     /// Number of rows.
     pub fn len(&self) -> usize {
         self.lines.len()
@@ -176,6 +136,53 @@ fn meant(
         .map(str::to_string)
 }
 
+/// The header columns that read as slips of an `optional` column the file
+/// lacks (`presure` for `pressure`, `Camber` for `camber`), each refused
+/// at its place in the header (line `line`); columns in `known` (the
+/// reader's others) are never taken for one.
+fn misspelled(
+    path: &Path,
+    header: &[String],
+    line: usize,
+    optional: &[&str],
+    known: &[&str],
+) -> Vec<InputError> {
+    let absent: Vec<&str> = optional
+        .iter()
+        .copied()
+        .filter(|n| !header.iter().any(|h| h == n))
+        .collect();
+    header
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| !known.contains(&h.as_str()) && !optional.contains(&h.as_str()))
+        .filter_map(|(i, h)| {
+            let meant = crate::format::nearest_name(h, &absent)?;
+            let problem = InputProblem::Misspelled {
+                found: h.clone(),
+                meant: meant.into(),
+            };
+            Some(InputError::problem_at(path, line, i + 1, problem))
+        })
+        .collect()
+}
+
+/// How a reader takes a CSV file's columns: those it needs, those it
+/// reads where given, and (`Some`) the file's other columns it reads
+/// elsewhere, which turns on the refusal of a header column that is a
+/// slip of spelling from an optional one the file lacks (`None`: a file's
+/// other columns are ignored unseen, as `FORMATS.md` allows a log's).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Layout<'a> {
+    /// Columns every file must have.
+    pub required: &'a [&'a str],
+    /// Columns read where given.
+    pub optional: &'a [&'a str],
+    /// Other columns read elsewhere, never taken for a slip; `None`: no
+    /// slip refused.
+    pub also_read: Option<&'a [&'a str]>,
+}
+
 /// Reads the `required` and `optional` columns of a CSV file; every cell
 /// that is not a finite number refused at once.
 pub fn read_columns(
@@ -183,22 +190,34 @@ pub fn read_columns(
     required: &[&str],
     optional: &[&str],
 ) -> Result<Columns, InputError> {
-    let (columns, bad) = read_columns_with_bad_cells(path, required, optional)?;
+    let layout = Layout {
+        required,
+        optional,
+        also_read: None,
+    };
+    let (columns, bad) = read_columns_with_bad_cells(path, layout)?;
     match InputError::all_of(path, bad) {
         Some(e) => Err(e),
         None => Ok(columns),
     }
 }
 
-/// [`read_columns`], the cells that are not finite numbers returned with
-/// the columns (as NaN, or the infinity read) rather than refused: for a
-/// reader that refuses them together with its own checks of the values,
-/// so that a file's every bad cell is said in one run.
+/// [`read_columns`] by a [`Layout`], the cells that are not finite numbers
+/// returned with the columns (as NaN, or the infinity read) rather than
+/// refused: for a reader that refuses them together with its own checks
+/// of the values, so that a file's every bad cell is said in one run. The
+/// header's slips of spelling (where the layout asks) are among them; a
+/// file without a required column is refused with every required column
+/// it lacks and every slip at once.
 pub(crate) fn read_columns_with_bad_cells(
     path: &Path,
-    required: &[&str],
-    optional: &[&str],
+    layout: Layout,
 ) -> Result<(Columns, Vec<InputError>), InputError> {
+    let Layout {
+        required,
+        optional,
+        also_read,
+    } = layout;
     let file_err = |problem| InputError::problem(path, problem);
     // Read whole to find each record's true line (see [`line_of`]).
     let bytes = std::fs::read(path).map_err(|source| InputError::Io {
@@ -231,6 +250,7 @@ pub(crate) fn read_columns_with_bad_cells(
         })?
         .clone();
     let mut wanted: Vec<(usize, String)> = Vec::new();
+    let mut missing: Vec<InputError> = Vec::new();
     for name in required.iter().chain(optional) {
         match headers.iter().position(|h| h == *name) {
             Some(i) => {
@@ -249,15 +269,13 @@ pub(crate) fn read_columns_with_bad_cells(
                 }
                 wanted.push((i, name.to_string()));
             }
-            None if required.contains(name) => {
-                return Err(InputError::MissingColumn {
-                    path: path.to_path_buf(),
-                    line: line_at(headers.position()).max(1),
-                    name: name.to_string(),
-                    header: headers.iter().map(str::to_string).collect(),
-                    meant: meant(name, &headers, required, optional),
-                })
-            }
+            None if required.contains(name) => missing.push(InputError::MissingColumn {
+                path: path.to_path_buf(),
+                line: line_at(headers.position()).max(1),
+                name: name.to_string(),
+                header: headers.iter().map(str::to_string).collect(),
+                meant: meant(name, &headers, required, optional),
+            }),
             None => {}
         }
     }
@@ -266,11 +284,34 @@ pub(crate) fn read_columns_with_bad_cells(
         header_line: line_at(headers.position()).max(1),
         ..Columns::default()
     };
+    // A header column already said to mean a missing required one (`Fz`
+    // for `fz`) is not also said to mean an optional one (`mz`).
+    let taken: Vec<String> = missing
+        .iter()
+        .filter_map(|e| match e {
+            InputError::MissingColumn { meant, .. } => meant.clone(),
+            _ => None,
+        })
+        .collect();
+    let mut bad: Vec<InputError> = also_read.map_or_else(Vec::new, |also| {
+        let known: Vec<&str> = required
+            .iter()
+            .chain(also)
+            .copied()
+            .chain(taken.iter().map(String::as_str))
+            .collect();
+        misspelled(path, &out.header, out.header_line, optional, &known)
+    });
+    if !missing.is_empty() {
+        missing.append(&mut bad);
+        if let Some(e) = InputError::all_in_file_order(path, missing) {
+            return Err(e);
+        }
+    }
     for (i, name) in &wanted {
         out.data.insert(name.clone(), Vec::new());
         out.positions.insert(name.clone(), i + 1);
     }
-    let mut bad: Vec<InputError> = Vec::new();
     for rec in rdr.records() {
         let rec = rec.map_err(|e| {
             if let Some(at) = not_utf8(&bytes, &e) {

@@ -23,8 +23,8 @@ pub mod tir;
 mod toml_file;
 
 pub use crate::measured::MeasuredRun;
-pub(crate) use columns::read_columns_with_bad_cells;
 pub use columns::{read_columns, Columns};
+pub(crate) use columns::{read_columns_with_bad_cells, Layout};
 pub use run::{
     read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
     DeclaredBy,

@@ -118,10 +118,13 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     const OPTIONAL: [&str; 8] = [
         "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
     ];
-    let (mut c, mut errors) =
-        super::columns::read_columns_with_bad_cells(path, &["fz"], &OPTIONAL)?;
     // The wheel moments are read beside ([`read_rig_moments`]).
-    c.refuse_misspelled(path, &OPTIONAL, &["fz", "mx", "my"])?;
+    let layout = super::columns::Layout {
+        required: &["fz"],
+        optional: &OPTIONAL,
+        also_read: Some(&["mx", "my"]),
+    };
+    let (mut c, mut errors) = super::columns::read_columns_with_bad_cells(path, layout)?;
     let fz = c.take("fz");
     // Every sample no tyre test holds, refused together with the cells
     // that are no numbers: a user fixing the file learns of them all at

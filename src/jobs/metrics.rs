@@ -105,6 +105,7 @@ pub fn run_with_degrees(
         &m.metrics,
         settings.variance_window.min(piece),
     ));
+    m.warnings.extend(peak_moved_by_noise(&m.metrics));
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,
@@ -178,6 +179,40 @@ fn noise_in_variance(m: &StepMetrics, window: f64) -> Option<String> {
             crate::format::readable(e - added, 3),
         )
     })
+}
+
+/// The share of the peak time by which noise must move it to be said: a
+/// twentieth, two 100 Hz samples of a 0.4 s peak.
+pub const PEAK_SPREAD_SAID: f64 = 0.05;
+
+/// The warning of a yaw-rate peak the run's noise moves by
+/// [`PEAK_SPREAD_SAID`] of its time or more, or loses in a quarter of
+/// noisy copies or more (`metrics/peak.rs`): its time, and TB with it, are
+/// then the noise's as much as the car's.
+fn peak_moved_by_noise(m: &StepMetrics) -> Option<String> {
+    let tp = m.yaw_rate_peak_time?;
+    let (sd, found) = (m.yaw_rate_peak_time_spread?, m.yaw_rate_peak_found_share?);
+    if sd < PEAK_SPREAD_SAID * tp.abs() && found >= 0.75 {
+        return None;
+    }
+    let draws = crate::metrics::PEAK_DRAWS;
+    let lost = draws - (found * draws as f64).round() as usize;
+    let lost = match lost {
+        0 => String::new(),
+        k => format!(", and {k} of the {draws} find no peak above the threshold at all"),
+    };
+    let tb = match m.tb {
+        Some(_) => " and TB with it",
+        None => "",
+    };
+    Some(format!(
+        "the yaw-rate peak is flat within the noise ({}): in {draws} copies of the run with its noise added again (seed {}) the peak time, {} s, moves by ±{} s ({} %, one standard deviation){lost}; read the peak time{tb} as uncertain by that much (an upper estimate: a copy carries the noise twice), or filter harder (--filter-hz) or log a quieter gyro",
+        m.yaw_rate_noise_text(),
+        crate::metrics::PEAK_SEED,
+        crate::format::readable(tp, 3),
+        crate::format::readable(sd, 2),
+        crate::format::rounded(100.0 * sd / tp.abs(), 2),
+    ))
 }
 
 impl MeasuredMetricsReport {

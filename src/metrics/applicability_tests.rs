@@ -24,6 +24,8 @@ fn moderate() -> StepMetrics {
         yaw_rate_peak_threshold: 1.0,
         yaw_rate_filter_ringing: 0.0,
         filter_hz: None,
+        yaw_rate_peak_time_spread: None,
+        yaw_rate_peak_found_share: None,
     }
 }
 

@@ -266,5 +266,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         // Unfiltered: no ringing of a filter.
         yaw_rate_filter_ringing: 0.0,
         filter_hz: None,
+        yaw_rate_peak_time_spread: None,
+        yaw_rate_peak_found_share: None,
     })
 }

@@ -54,10 +54,12 @@ pub(crate) mod continuous;
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
 pub const MIN_FILTER_HZ: f64 = 1.0;
 pub mod measured;
+mod peak;
 pub mod simulated;
 mod step_shape;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
+pub use peak::{DRAWS as PEAK_DRAWS, SEED as PEAK_SEED};
 pub use simulated::{simulated_step_metrics, DenseRecord};
 
 /// Settings of the metric computation. The fields are public for struct
@@ -230,6 +232,14 @@ pub struct StepMetrics {
     pub yaw_rate_filter_ringing: f64,
     /// The low-pass applied, Hz (none: unfiltered).
     pub filter_hz: Option<f64>,
+    /// How far the run's own noise moves the peak time: its standard
+    /// deviation over noisy copies of the record that find a peak, s
+    /// (`peak.rs`); `None` without a peak or without noise.
+    #[serde(default)]
+    pub yaw_rate_peak_time_spread: Option<f64>,
+    /// The share of those copies that find a peak at all.
+    #[serde(default)]
+    pub yaw_rate_peak_found_share: Option<f64>,
 }
 
 /// Smallest steer step that counts as a step, rad (0.01°).
@@ -495,9 +505,9 @@ pub(crate) fn step_metrics(
         .max(1e-9);
     let level = 1.0 + threshold;
     let v = &r.values;
-    let peak_at =
-        (1..n - 1).find(|&i| t[i] >= tr && v[i] > level && v[i] >= v[i - 1] && v[i] > v[i + 1]);
+    let peak_at = peak::peak_index(t, v, tr, level);
     let peak_time = peak_at.map(|i| t[i] - t0);
+    let spread = peak_at.and(peak::peak_spread(t, v, (tr, level), r.noise, &filtered));
     let beta_steady = beta
         .zip(beta_f.as_deref())
         .map(|(raw, b)| normalise(t, raw, b, s, "sideslip").map_or(0.0, |nb| nb.steady));
@@ -531,6 +541,8 @@ pub(crate) fn step_metrics(
         yaw_rate_peak_threshold: threshold * 100.0,
         yaw_rate_filter_ringing: ringing * 100.0,
         filter_hz,
+        yaw_rate_peak_time_spread: spread.map(|s| s.sd),
+        yaw_rate_peak_found_share: spread.map(|s| s.found),
     })
 }
 

@@ -100,9 +100,8 @@ pub(crate) fn pac89_cornering_stiffness(key: &str, v: f64) -> Result<(), ParamEr
         false => Err(ParamError::new(
             key,
             v,
-            ParamReason::OutOfRange {
-                lo: MIN_PAC89_A3,
-                hi: f64::INFINITY,
+            ParamReason::MagnitudeAtMost {
+                min: MIN_PAC89_A3,
                 why: Limit::Pac89CorneringStiffnessInKn,
             },
         )),
@@ -113,15 +112,17 @@ pub(crate) fn pac89_cornering_stiffness(key: &str, v: f64) -> Result<(), ParamEr
 /// `|a3·sin(2·atan(Fz/a4))|` (N/deg) over loads of 0.1 to 100 kN (`a4` in
 /// kN), below [`MAX_CORNERING_STIFFNESS`]: `a3` alone has no upper end (a
 /// fit with both `a3` and `a4` far above any load is a tyre), their
-/// combination does.
+/// combination does, and the refusal says so with the load it peaks at.
 pub(crate) fn pac89_peak_stiffness(a3: f64, a4: f64) -> Result<(), ParamError> {
     let limit = MAX_CORNERING_STIFFNESS.to_radians();
     // sin(2·atan(x)) peaks at x = 1 (Fz = a4) and is monotone either side.
     let at = |fz: f64| (a3 * (2.0 * (fz / a4).atan()).sin()).abs();
-    let peak = if (0.1..=100.0).contains(&a4.abs()) {
-        a3.abs()
+    let (peak, fz) = if (0.1..=100.0).contains(&a4.abs()) {
+        (a3.abs(), a4.abs())
+    } else if at(0.1) >= at(100.0) {
+        (at(0.1), 0.1)
     } else {
-        at(0.1).max(at(100.0))
+        (at(100.0), 100.0)
     };
     if peak.is_finite() && peak <= limit {
         return Ok(());
@@ -129,11 +130,7 @@ pub(crate) fn pac89_peak_stiffness(a3: f64, a4: f64) -> Result<(), ParamError> {
     Err(ParamError::new(
         "a[3]",
         a3,
-        ParamReason::OutOfRange {
-            lo: -limit,
-            hi: limit,
-            why: Limit::Pac89CorneringStiffnessBeyondAnyTyre,
-        },
+        ParamReason::Pac89PeakStiffness { a4, peak, fz },
     ))
 }
 
@@ -207,5 +204,28 @@ mod tests {
         let limit = MAX_CORNERING_STIFFNESS.to_radians();
         assert!(pac89_peak_stiffness(0.999 * limit, 12.8).is_ok());
         assert!(pac89_peak_stiffness(1.001 * limit, 12.8).is_err());
+        // Said with the load it peaks at, not as a bound on a3 alone
+        // (which a large a4 lets a3 pass).
+        assert!(e.contains("reaches 1e6 N/deg at Fz = 12.8 kN"), "{e}");
+        let e = pac89_peak_stiffness(1e9, 500.0).unwrap_err().to_string();
+        assert!(e.contains("at Fz = 100 kN"), "{e}");
+    }
+
+    /// `a3`'s sign is a side's: −5 is refused as +5 is, −20 passes as +20
+    /// does, and the refusal says the rule is on the magnitude (it read
+    /// "must be greater than 15" for −5 while −20 passed).
+    #[test]
+    fn a_pac89_a3_is_refused_by_its_magnitude_and_said_so() {
+        for v in [-5.0, 5.0, 15.0] {
+            let e = pac89_cornering_stiffness("a[3]", v)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains("larger than 15 in magnitude (either sign)"),
+                "{e}"
+            );
+        }
+        assert!(pac89_cornering_stiffness("a[3]", -20.0).is_ok());
+        assert!(pac89_cornering_stiffness("a[3]", 20.0).is_ok());
     }
 }

@@ -135,7 +135,7 @@ fn tyre_eval_refuses_a_point_no_tyre_is_evaluated_at_by_row_and_never_writes_a_n
         (
             "4000,1e308,0.01,0,16.7",
             2,
-            "column `kappa`: 1e308 is outside -10 to 10, the range a tyre is evaluated in",
+            "column `kappa`: 1e308 is above 10, the largest a tyre is evaluated at",
         ),
         (
             "4000,0.01,0.01,0,1e308",

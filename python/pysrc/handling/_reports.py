@@ -88,6 +88,12 @@ class StepMetrics:
     maximum within it is the filter's ringing, not a peak (0 unfiltered)."""
     filter_hz: Optional[float]
     """The zero-phase low-pass applied, Hz (None: unfiltered)."""
+    yaw_rate_peak_time_spread: Optional[float]
+    """How far the run's own noise moves the peak time: its standard
+    deviation over noisy copies of the record, s (None without a peak or
+    without noise; an upper estimate)."""
+    yaw_rate_peak_found_share: Optional[float]
+    """The share of those noisy copies that find a peak at all."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":

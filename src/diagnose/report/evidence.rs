@@ -70,7 +70,8 @@ pub struct Parsimony {
     pub reduction_percent: f64,
     /// Its held-out error J.
     pub heldout_error: f64,
-    /// Its free parameters (axles and roll dynamics included).
+    /// Its parameters (axles and roll dynamics included), the idle ones
+    /// counted whether fitted to their off value or held there.
     pub free_parameters: usize,
     /// Its parameters left idle.
     pub idle: Vec<ParameterValue>,

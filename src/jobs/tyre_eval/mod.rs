@@ -39,6 +39,7 @@
 //! slip (UniTire, PAC89); (`standstill.rs`) a Magic Formula `mz` at zero
 //! speed, its residual torque alone.
 
+mod camber;
 mod checks;
 mod friction;
 mod light_load;
@@ -51,6 +52,7 @@ mod stiffness;
 mod unread;
 mod zero_slip;
 
+pub use camber::{SteepCamber, STEEP_CAMBER};
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
@@ -93,6 +95,9 @@ pub struct TyreEvalReport {
     /// Points at a positive load below a Magic Formula file's floor (its
     /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
     pub light_load: Option<LightLoad>,
+    /// The points at a camber steeper than any car tyre's measured range,
+    /// of a model that states no camber range.
+    pub steep_camber: Option<SteepCamber>,
     /// Points at zero or negative load: the wheel off the road, no force
     /// (and the loaded radius `rl`, where written, the free radius).
     pub off_road: usize,
@@ -155,16 +160,12 @@ struct PointColumns {
 fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointColumns, Error> {
     // The cells that are no finite numbers are said with the values no
     // tyre is evaluated at, in one run.
-    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(
-        points,
-        &["fz", "kappa", "alpha", "camber", "speed"],
-        &["pressure"],
-    )?;
-    c.refuse_misspelled(
-        points,
-        &["pressure"],
-        &["fz", "kappa", "alpha", "camber", "speed"],
-    )?;
+    let layout = crate::io::Layout {
+        required: &["fz", "kappa", "alpha", "camber", "speed"],
+        optional: &["pressure"],
+        also_read: Some(&[]),
+    };
+    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(points, layout)?;
     let pressure = c.take_optional("pressure");
     let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()
@@ -350,7 +351,7 @@ pub fn run(
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
-    let beyond_fitted = fitted_ranges.map_or(0, |r| beyond(&r, &given));
+    let beyond_fitted = fitted_ranges.as_ref().map_or(0, |r| beyond(r, &given));
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
@@ -359,6 +360,15 @@ pub fn run(
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
     let light_load = light_load::light_load(&tyre, fz, &file.lines);
+    let camber_read = !unread.iter().any(|u| u.column == "camber");
+    let steep_camber = camber::steep_camber(
+        &tyre,
+        fitted_ranges.as_ref(),
+        camber_read,
+        [fz, camber],
+        &f,
+        &file.lines,
+    );
     not_carried::refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
     // Every model gives no force off the road: said for each, not only
@@ -397,6 +407,7 @@ pub fn run(
         clamped,
         ranges_left,
         light_load,
+        steep_camber,
         off_road,
         zero_outputs,
         beyond_my_speed,
@@ -468,6 +479,11 @@ impl TyreEvalReport {
         out.extend(self.standstill_mz.iter().map(StandstillMz::line));
         out.extend(self.ranges_left.iter().map(|r| r.line(self.count)));
         out.extend(self.light_load.iter().map(|l| l.line(self.count)));
+        out.extend(
+            self.steep_camber
+                .iter()
+                .map(|c| c.line(self.model, self.count)),
+        );
         if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
             out.push(format!(
                 "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",

@@ -63,7 +63,7 @@ fn parsimony(c: &Parsimony) -> String {
     let idle: Vec<String> = c.idle.iter().map(parameter).collect();
     let (j, n, jn) = (c.heldout_error, c.window_noise_levels, c.noise_level);
     format!(
-        "chosen for parsimony over a look-alike that removes more: {} removes {:.1} % (held-out error {j:.3}) with {}, but leaves {} idle (off, or not told from off); {} removes {:.1} % with {}, within {n} noise levels of it (held-out error {:.3} ≤ {j:.3} + {n} × {jn:.3} = {:.3}), and within that window the candidate with the fewest free parameters is taken: a tie the runs do not break, settled by the rule, not evidence against the other",
+        "chosen for parsimony over a look-alike that removes more: {} removes {:.1} % (held-out error {j:.3}) with {}, but leaves {} idle (off, or not told from off); {} removes {:.1} % with {}, within {n} noise levels of it (held-out error {:.3} ≤ {j:.3} + {n} × {jn:.3} = {:.3}), and within that window the candidate with the fewest parameters is taken, an idle one counted (a candidate that matches only with a parameter idle is the simpler one's look-alike with a parameter more): a tie the runs do not break, settled by the rule, not evidence against the other",
         joined(&c.effects, "+"),
         c.reduction_percent,
         free(c.free_parameters),
@@ -76,7 +76,9 @@ fn parsimony(c: &Parsimony) -> String {
     )
 }
 
-/// `n free parameters`, in the singular for one.
+/// `n parameters`, in the singular for one: a candidate's, its idle ones
+/// counted (fitted to their off value or held there, they are still the
+/// candidate's, and what makes it the look-alike of a simpler one).
 fn free(n: usize) -> String {
-    format!("{n} free parameter{}", if n == 1 { "" } else { "s" })
+    format!("{n} parameter{}", if n == 1 { "" } else { "s" })
 }

@@ -114,7 +114,7 @@ pub enum ParamReason {
     /// A PAC89 cornering stiffness `|a3·sin(2·atan(Fz/a4))|` (N/deg)
     /// above any tyre's at the load `fz` (kN) from 0.1 to 100 kN: the
     /// combination is refused, `a3` alone has no upper end.
-    #[error("with a4 = {} kN, BCD = a3·sin(2·atan(Fz/a4)) reaches {} N/deg at Fz = {} kN, above any tyre's {} N/deg (2e6 N/rad; a car tyre's is 1000–3000 N/deg): the lateral force would be a step at zero slip, not a curve; check a3 and a4 (a3 is the peak stiffness, reached at Fz = a4)", super::number::Num(*a4), crate::format::readable(*peak, 4), crate::format::rounded(*fz, 4), crate::format::rounded(crate::tyre::sizes::MAX_CORNERING_STIFFNESS.to_radians(), 5))]
+    #[error("with a4 = {} kN, BCD = a3·sin(2·atan(Fz/a4)) reaches {} N/deg at Fz = {} kN, above any tyre's 34907 N/deg (2e6 N/rad; a car tyre's is 1000–3000 N/deg): the lateral force would be a step at zero slip, not a curve; check a3 and a4 (a3 is the peak stiffness, reached at Fz = a4)", super::number::Num(*a4), crate::format::readable(*peak, 4), crate::format::rounded(*fz, 4))]
     Pac89PeakStiffness {
         /// `a4`, kN.
         a4: f64,

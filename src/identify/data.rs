@@ -261,12 +261,7 @@ pub fn identification_conditions(truth: &Tyre, noise: f64, seed: u64) -> (Vec<Co
     (conditions, 100.0 * (e2 / y2).sqrt())
 }
 
-/// A standard normal draw (Box–Muller) from a seeded stream.
-pub fn gauss(rng: &mut rand_chacha::ChaCha8Rng) -> f64 {
-    use rand::RngExt;
-    let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-}
+pub use crate::optim::stats::gauss;
 
 /// `n` draws of white noise of standard deviation `sd` from seed `seed`
 /// (the tests' logger noise).

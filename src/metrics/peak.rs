@@ -63,7 +63,7 @@ pub(super) fn peak_spread(
     let mut times = Vec::with_capacity(DRAWS);
     for _ in 0..DRAWS {
         z.iter_mut()
-            .for_each(|x| *x = noise * crate::identify::data::gauss(&mut rng));
+            .for_each(|x| *x = noise * crate::optim::stats::gauss(&mut rng));
         // The filter is linear: the copy is v plus the filtered noise.
         let copy: Vec<f64> = v.iter().zip(filter(&z)).map(|(a, b)| a + b).collect();
         if let Some(i) = peak_index(t, &copy, from, level) {

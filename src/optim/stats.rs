@@ -147,6 +147,14 @@ pub(crate) fn sandwich_standard_errors(
         .collect()
 }
 
+/// A standard normal draw (Box–Muller) from a seeded stream: the noise of
+/// the tests' synthetic data and of `metrics`' noisy copies of a run.
+pub fn gauss(rng: &mut rand_chacha::ChaCha8Rng) -> f64 {
+    use rand::RngExt;
+    let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -207,6 +207,10 @@ mod tests {
         // Said with the load it peaks at, not as a bound on a3 alone
         // (which a large a4 lets a3 pass).
         assert!(e.contains("reaches 1e6 N/deg at Fz = 12.8 kN"), "{e}");
+        // The limit the message states (text, in the error layer) is this
+        // module's.
+        let stated = format!("any tyre's {} N/deg", limit.round());
+        assert!(e.contains(&stated), "{e}");
         let e = pac89_peak_stiffness(1e9, 500.0).unwrap_err().to_string();
         assert!(e.contains("at Fz = 100 kN"), "{e}");
     }

@@ -140,7 +140,7 @@ fn tyre_eval_refuses_a_point_no_tyre_is_evaluated_at_by_row_and_never_writes_a_n
         (
             "4000,0.01,0.01,0,1e308",
             5,
-            "column `speed`: 1e308 m/s is outside 0 to 300 m/s",
+            "column `speed`: 1e308 m/s is above 300 m/s, the largest a tyre is evaluated at",
         ),
         (
             "4000,0.01,2.0,0,16.7",

@@ -1,4 +1,4 @@
-//! What the fresh-eyes checks of issue 41 left: a yaw-rate peak that noise
+//! What the last fresh-eyes checks left: a yaw-rate peak that noise
 //! moves with no word, PAC89 `a3` refusals that contradicted each other, a
 //! PAC89 camber of 86° evaluated silently, a pressure range read as "0 to
 //! 5 MPa", and a file's missing column and misspelled one said in two runs.

@@ -282,12 +282,12 @@ fn a_pressure_row_in_kpa_bar_or_psi_is_refused_with_the_reading_meant() {
     );
 }
 
-/// A speed of 400 m/s was said to be "outside -300 to 300 m/s", though
+/// A speed of 400 m/s was said to be "outside -300 to 300 m/s" (then "outside 0 to 300 m/s"; now "above 300 m/s"), though
 /// negative speeds are refused anyway; a slip angle of 5 (degrees, in a
 /// column of radians) was refused with no word of degrees, where
 /// `identify` asks "is the column in degrees?".
 #[test]
-fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
+fn a_speed_past_its_range_names_the_end_passed_and_an_angle_in_degrees_is_said_as_such() {
     let dir = tempfile::tempdir().unwrap();
     let gim = root().join("tyres/gim.toml");
     let points =
@@ -296,7 +296,7 @@ fn a_speed_range_says_0_to_300_and_an_angle_in_degrees_is_said_as_such() {
     let e = stderr(&o);
     assert!(!o.status.success() && written.is_empty(), "{e}");
     assert!(
-        e.contains("p.csv:2:5: column `speed`: 400 m/s is outside 0 to 300 m/s"),
+        e.contains("p.csv:2:5: column `speed`: 400 m/s is above 300 m/s, the largest"),
         "{e}"
     );
     assert!(

@@ -1,4 +1,4 @@
-//! What a user still tripped on (issue 41): `identify --model pac89` on
+//! What a user still tripped on: `identify --model pac89` on
 //! the public Hoosier file wrote `a1 = −59.45 ± 320`, `a2 = 1328 ± 7117`
 //! and `a7 = 0.9957 ± 24.4` with warnings only. The swarm fit now holds a
 //! parameter the data do not determine at the model's start value and

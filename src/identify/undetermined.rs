@@ -36,6 +36,7 @@ use crate::optim::local::{LocalResult, Residuals};
 use crate::optim::stats;
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// The fraction of the channel's RMS one standard error must move it by
@@ -226,42 +227,46 @@ fn spare(
     let mut flagged: Vec<usize> = (0..p.len()).filter(|&k| spread.flagged(k, p[k])).collect();
     flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
     flagged.truncate(CANDIDATES);
-    let mut tried = Vec::new();
-    for &k in &flagged {
-        let value = stated[problem.free[k]];
-        let sub = problem.holding(p, k, value);
-        let sub_bounds: Vec<(f64, f64)> = sub.free.iter().map(|&i| bounds[i]).collect();
-        let without = |v: &[f64]| -> Vec<f64> {
-            v.iter()
-                .enumerate()
-                .filter(|(i, _)| *i != k)
-                .map(|e| *e.1)
-                .collect()
-        };
-        // From the optimum, or with the rest moved as they trade against
-        // the held value where that starts lower: a warm start that jumps
-        // one parameter of a traded pair alone can stall far from the
-        // pair's valley.
-        let moved: Vec<f64> = p
-            .iter()
-            .zip(spread.compensating(k, value - p[k]))
-            .map(|(a, d)| a + d)
-            .collect();
-        let x = [without(&moved), without(p)]
-            .into_iter()
-            .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
-            .unwrap_or_default();
-        let r = refit(&sub, &x, &sub_bounds, local);
-        *evaluations += r.evaluations;
-        if r.cost.is_finite() {
-            tried.push(Tried {
+    // The holds tried are independent refits: run side by side (a
+    // UniTire aligning fit tries four per round, each a full polish).
+    let tried: Vec<(Option<Tried>, usize)> = flagged
+        .par_iter()
+        .map(|&k| {
+            let value = stated[problem.free[k]];
+            let sub = problem.holding(p, k, value);
+            let sub_bounds: Vec<(f64, f64)> = sub.free.iter().map(|&i| bounds[i]).collect();
+            let without = |v: &[f64]| -> Vec<f64> {
+                v.iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i != k)
+                    .map(|e| *e.1)
+                    .collect()
+            };
+            // From the optimum, or with the rest moved as they trade
+            // against the held value where that starts lower: a warm start
+            // that jumps one parameter of a traded pair alone can stall far
+            // from the pair's valley.
+            let moved: Vec<f64> = p
+                .iter()
+                .zip(spread.compensating(k, value - p[k]))
+                .map(|(a, d)| a + d)
+                .collect();
+            let x = [without(&moved), without(p)]
+                .into_iter()
+                .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
+                .unwrap_or_default();
+            let r = refit(&sub, &x, &sub_bounds, local);
+            let tried = Tried {
                 k,
                 problem: sub,
                 p: r.params,
                 cost: r.cost,
-            });
-        }
-    }
+            };
+            (r.cost.is_finite().then_some(tried), r.evaluations)
+        })
+        .collect();
+    *evaluations += tried.iter().map(|t| t.1).sum::<usize>();
+    let tried: Vec<Tried> = tried.into_iter().filter_map(|t| t.0).collect();
     let lowest = tried.iter().map(|t| t.cost).fold(f64::INFINITY, f64::min);
     // cost = ½·Σe², so half a residual variance Σe²/dof is cost/dof.
     let dof = problem.count().saturating_sub(p.len()).max(1) as f64;

@@ -1,17 +1,18 @@
 //! Why a parameter of a fit stands at a value it was not fitted to, as
 //! the report and the terminal state it beside the value: given with
 //! `--hold`, a term the data's levels cannot determine, one the model's
-//! fit never frees, or a constant of a written `.tir` that no template
-//! gave.
+//! fit never frees, one the data did not determine when fitted
+//! (`undetermined.rs`), or a constant of a written `.tir` that no
+//! template gave.
 
 use super::problem::Channel;
-use crate::format::plural;
+use crate::format::{plural, readable};
 use crate::tyre::Tyre;
 use serde::Serialize;
 use std::fmt;
 
 /// Why a value was held rather than fitted.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "why", rename_all = "kebab-case")]
 pub enum HeldFor {
     /// The user gave it with `--hold`.
@@ -31,6 +32,20 @@ pub enum HeldFor {
     /// PAC89's lateral curvature, held at or below its limit 1 where the
     /// free fit's reversed the force (`jobs/identify/curvature_hold.rs`).
     CurvatureLimit,
+    /// Fitted free, the data did not determine it (its standard error
+    /// reached its value and moved the channel by 1 % of its RMS, or it
+    /// had none): held at the model's start value and the rest refitted
+    /// (`undetermined.rs`).
+    Undetermined {
+        /// Its value in the free fit.
+        fitted: f64,
+        /// Its standard error there (`None`: the Jacobian is singular
+        /// along it).
+        std_error: Option<f64>,
+        /// One standard error's effect on the channel there, % of the
+        /// channel's RMS (`None` without a standard error).
+        effect_percent: Option<f64>,
+    },
     /// A constant of a written `.tir`, set without a template.
     Constant {
         /// Where its value comes from.
@@ -73,6 +88,22 @@ impl fmt::Display for HeldFor {
             HeldFor::ByDesign => f.write_str("not fitted by this model's identification"),
             HeldFor::CurvatureLimit => f.write_str(
                 "the lateral curvature held at or below 1: fitted free, it rose above 1 and turned the lateral force around past its peak (see the note)",
+            ),
+            HeldFor::Undetermined {
+                fitted,
+                std_error: Some(se),
+                effect_percent,
+            } => write!(
+                f,
+                "not determined by these data: fitted free it was {} ± {} (one standard error moved the fit by {:.1} % of the channel's RMS), so it is held at the model's start value and the rest refitted",
+                readable(*fitted, 4),
+                readable(*se, 3),
+                effect_percent.unwrap_or(f64::NAN)
+            ),
+            HeldFor::Undetermined { fitted, .. } => write!(
+                f,
+                "not determined by these data: fitted free it was {} with no standard error (the fit is singular along it), so it is held at the model's start value and the rest refitted",
+                readable(*fitted, 4)
             ),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
         }

@@ -12,7 +12,10 @@
 //! have `mz` and the model an aligning moment, its aligning parameters with
 //! the lateral ones held. The parameters the data cannot identify stay at
 //! their start values
-//! ([`crate::tyre::Tyre::lateral_free`]). Units: SI inside; the models'
+//! ([`crate::tyre::Tyre::lateral_free`]); with
+//! [`FitSettings::hold_undetermined`] (as `identify` fits), those the data
+//! do not determine when fitted are held at the model's start values and
+//! the rest refitted (`undetermined.rs`). Units: SI inside; the models'
 //! own units stay in their files.
 //!
 //! The least-squares problem (`problem.rs`): the lateral force's Jacobian
@@ -28,6 +31,9 @@ use parameters::parameter_reports;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
+mod undetermined;
+pub(crate) use undetermined::hold_undetermined;
+use undetermined::Spread;
 
 pub(crate) use held::{value_in, with_value};
 pub use held::{ConstantFrom, HeldFor};
@@ -64,6 +70,11 @@ pub struct FitSettings {
     pub local: LocalMethod,
     /// The Jacobian's derivatives.
     pub derivatives: Derivatives,
+    /// Whether a parameter the data do not determine is held at the
+    /// start tyre's value and the rest refitted (`undetermined.rs`):
+    /// `identify` does; off by default, so that a caller comparing free
+    /// fits (`diagnose`, the benches) gets them as they are.
+    pub hold_undetermined: bool,
 }
 
 impl FitSettings {
@@ -87,6 +98,7 @@ impl FitSettings {
             },
             local: LocalMethod::LevenbergMarquardt,
             derivatives: Derivatives::Exact,
+            hold_undetermined: false,
         }
     }
 }
@@ -123,6 +135,10 @@ pub struct ParameterReport {
     pub held: Option<HeldFor>,
     /// Approximate standard error.
     pub std_error: Option<f64>,
+    /// One standard error's effect on the channel, alone, % of the
+    /// channel's RMS over the points (`‖∂F/∂p‖·se/‖F‖`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub effect_percent: Option<f64>,
     /// Search bounds.
     pub bounds: (f64, f64),
     /// Warning, if any.
@@ -145,6 +161,10 @@ pub struct Fit {
     pub sigma_percent: f64,
     /// σ overall after PSO alone, %.
     pub sigma_pso_percent: f64,
+    /// σ overall before the parameters the data do not determine were
+    /// held, % (`None`: none was).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub free_sigma_percent: Option<f64>,
     /// RMS error overall, N.
     pub rms: f64,
     /// Per condition.
@@ -276,8 +296,8 @@ pub(crate) fn fit_channel_holding(
     let tyre = problem.tyre(&found.params).canonical();
     let full = channel.parameters(&tyre);
     let p: Vec<f64> = problem.free.iter().map(|&i| full[i]).collect();
-    let covariance = covariance_at(&problem, &p);
-    let mut parameters = parameter_reports(start, &tyre, channel, &free, covariance.as_ref());
+    let spread = Spread::at(&problem, &p);
+    let mut parameters = parameter_reports(start, &tyre, channel, &free, &spread);
     for (p, why) in parameters.iter_mut().zip(reasons) {
         p.held = why;
     }
@@ -286,20 +306,26 @@ pub(crate) fn fit_channel_holding(
     }
     let curves = curves_of(channel, &tyre, conditions);
     let (s, rms) = sigma_of(channel, &tyre, &problem.points);
-    Ok(Fit {
+    let fit = Fit {
         channel,
         model: start.model_name(),
         seed: settings.pso.seed,
         tyre,
         sigma_percent: s,
         sigma_pso_percent: found.sigma_pso,
+        free_sigma_percent: None,
         rms,
         curves,
         parameters,
         evaluations: found.evaluations,
         seconds: t0.elapsed().as_secs_f64(),
         local: settings.local,
-        covariance,
+        covariance: spread.covariance,
+    };
+    Ok(if settings.hold_undetermined {
+        hold_undetermined(fit, start, conditions, settings)
+    } else {
+        fit
     })
 }
 
@@ -316,7 +342,11 @@ fn covariance_at(problem: &FitProblem, p: &[f64]) -> Option<DMatrix<f64>> {
 }
 
 /// σ and RMS of `tyre`'s `channel` on each condition.
-fn curves_of(channel: Channel, tyre: &Tyre, conditions: &[Condition]) -> Vec<CurveReport> {
+pub(super) fn curves_of(
+    channel: Channel,
+    tyre: &Tyre,
+    conditions: &[Condition],
+) -> Vec<CurveReport> {
     conditions
         .iter()
         .map(|c| {
@@ -344,8 +374,8 @@ pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], lik
     let problem = FitProblem::for_channel(&tyre, channel, &free, conditions);
     let all = channel.parameters(&tyre);
     let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
-    let covariance = covariance_at(&problem, &p);
-    let mut parameters = parameter_reports(&tyre, &tyre, channel, &free, covariance.as_ref());
+    let spread = Spread::at(&problem, &p);
+    let mut parameters = parameter_reports(&tyre, &tyre, channel, &free, &spread);
     for (p, was) in parameters.iter_mut().zip(&like.parameters) {
         if !was.free {
             p.held = was.held;
@@ -358,7 +388,8 @@ pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], lik
         parameters,
         sigma_percent: s,
         rms,
-        covariance,
+        covariance: spread.covariance,
+        free_sigma_percent: None,
         tyre,
         ..like.clone()
     }
@@ -428,14 +459,7 @@ fn search(
         .pso
         .minimize_from(|p| problem.cost(p), &bounds, &[start_p.to_vec()]);
     let (sigma_pso, _) = sigma_of(problem.channel, &problem.tyre(&r.best), &problem.points);
-    let polish = |x: &[f64]| {
-        let l = match settings.local {
-            LocalMethod::LevenbergMarquardt => levenberg_marquardt(problem, x),
-            LocalMethod::GaussNewton => GaussNewton::default().minimize(problem, x),
-            LocalMethod::None => return None,
-        };
-        Some(within_box(problem, x, l, &bounds))
-    };
+    let polish = |x: &[f64]| polish(problem, x, &bounds, settings.local);
     let mut found = Found {
         params: r.best.clone(),
         evaluations: r.evaluations,
@@ -453,6 +477,22 @@ fn search(
         }
     }
     found
+}
+
+/// The local polish of `problem` from `x` by `local` (`None`: no
+/// polish), kept within `bounds` as [`within_box`] says.
+fn polish(
+    problem: &FitProblem,
+    x: &[f64],
+    bounds: &[(f64, f64)],
+    local: LocalMethod,
+) -> Option<LocalResult> {
+    let l = match local {
+        LocalMethod::LevenbergMarquardt => levenberg_marquardt(problem, x),
+        LocalMethod::GaussNewton => GaussNewton::default().minimize(problem, x),
+        LocalMethod::None => return None,
+    };
+    Some(within_box(problem, x, l, bounds))
 }
 
 /// The polish `l` from `x` when it stayed in the parameter box, or when

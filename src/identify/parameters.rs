@@ -3,21 +3,22 @@
 //! not fix it (on or past its search bound, a standard error larger than
 //! the value, or a direction of the fit the data leave undetermined).
 
-use super::{Channel, ParameterReport};
+use super::{Channel, ParameterReport, Spread};
 use crate::format::{readable, rounded};
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
 
 /// One report per parameter of `channel`: value, whether it was free, its
-/// standard error from `covariance` (over the free ones, in order) and a
-/// warning when it sits at a bound or the data cannot identify it.
+/// standard error and effect from `spread` (over the free ones, in order)
+/// and a warning when it sits at a bound or the data cannot identify it.
 pub(super) fn parameter_reports(
     start: &Tyre,
     tyre: &Tyre,
     channel: Channel,
     free: &[bool],
-    covariance: Option<&DMatrix<f64>>,
+    spread: &Spread,
 ) -> Vec<ParameterReport> {
+    let covariance = spread.covariance.as_ref();
     let all_bounds = channel.bounds(start);
     let values = channel.parameters(tyre);
     let traded = undetermined_names(start, channel, free, covariance);
@@ -31,6 +32,7 @@ pub(super) fn parameter_reports(
             free: free[i],
             held: None,
             std_error: None,
+            effect_percent: None,
             bounds: (lo, hi),
             warning: None,
         };
@@ -40,6 +42,7 @@ pub(super) fn parameter_reports(
                 .filter(|v| v.is_finite())
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
+            rep.effect_percent = se.map(|_| 100.0 * spread.effect[k]);
             rep.warning = warning(name, values[i], (lo, hi), se, &traded);
             k += 1;
         }

@@ -198,6 +198,32 @@ impl FitProblem {
         j
     }
 
+    /// The same problem at `p` with its free parameter `k` (in the free
+    /// order) held at `value`: the others stay free, in their order.
+    pub(super) fn holding(&self, p: &[f64], k: usize, value: f64) -> Self {
+        let mut base = self.tyre(p);
+        let mut all = self.channel.parameters(&base);
+        all[self.free[k]] = value;
+        self.channel.set(&mut base, &all);
+        let mut free = self.free.clone();
+        free.remove(k);
+        Self {
+            base,
+            free,
+            points: self.points.clone(),
+            ..*self
+        }
+    }
+
+    /// The measured values' norm over the points, `‖F‖`.
+    pub(super) fn measured_norm(&self) -> f64 {
+        self.points
+            .iter()
+            .map(|q| self.channel.measured(q).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    }
+
     /// The tyre with free parameters `p`.
     pub fn tyre(&self, p: &[f64]) -> Tyre {
         let mut full = self.channel.parameters(&self.base);

@@ -313,6 +313,7 @@ mod trips_s65;
 mod trips_s66;
 mod trips_s67;
 mod trips_s68;
+mod trips_s68_holds;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -12,6 +12,14 @@
 //! simplest feasible form and, on the Hoosier rig file, costs 0.007
 //! points of σ. Both σ are reported: the user who wants the free fit
 //! holds `a7` at a value of their own.
+//!
+//! The rule that holds what the data do not determine
+//! (`identify/undetermined.rs`) runs inside each fit: the fit checked here
+//! is the one written, its undetermined parameters held; the refit from
+//! the start carries `a6` (and `a7`) as values given, never free, so the
+//! rule cannot hold them too, and holds what the refit leaves
+//! undetermined (on the Hoosier file, `a1` and `a2` of the friction's load
+//! law).
 
 use super::curvature::{pac89_reversal, Pac89Reversal};
 use super::{on_data, ranges, Options, SwarmReport, Written};
@@ -95,8 +103,10 @@ pub(super) fn hold_curvature(
         holds.push(("a7".into(), 1.0));
         fit = refit(&holds)?;
     }
+    let ours = &holds[o.hold.len()..];
     for p in fit.parameters.iter_mut() {
-        if !p.free && (p.name == "a6" || p.name == "a7") {
+        // Those this rule held, not one the undetermined rule held.
+        if !p.free && ours.iter().any(|(k, _)| *k == p.name) {
             // Said by the note, not as a value given.
             p.held = Some(HeldFor::CurvatureLimit);
             p.warning = None;
@@ -108,7 +118,7 @@ pub(super) fn hold_curvature(
         free,
         free_sigma_percent: r.fit.sigma_percent,
         sigma_percent: fit.sigma_percent,
-        held: holds[o.hold.len()..]
+        held: ours
             .iter()
             .map(|(k, _)| (k.clone(), value(k).unwrap_or(f64::NAN)))
             .collect(),

@@ -370,6 +370,9 @@ fn on_data<'a>(o: &'a Options, channel: Option<&'static str>) -> impl Fn(Error) 
 fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     let mut settings = FitSettings::new(o.seed);
     settings.local = o.local.into();
+    // What the data do not determine is held, not written where the
+    // optimiser left it (`identify/undetermined.rs`).
+    settings.hold_undetermined = true;
     let data = read_rig(&o.data)?;
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
         return Err(FitError::NoLateralData {
@@ -490,10 +493,13 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         lock,
     };
     // The two-stage identification fits every coefficient: with a
-    // coefficient held it is not run (the summary says so).
+    // coefficient held with --hold it is not run (the summary says so).
+    // It runs beside the rule that holds what the data do not determine:
+    // the two free fits are compared, and the rule then holds what the
+    // one written leaves undetermined (`two_stage.rs`).
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
     if asks_two_stage && first == Channel::LateralForce && o.hold.is_empty() {
-        two_stage::two_stage(o, &mut r, &settings)?;
+        two_stage::two_stage(o, &mut r, &tyre0, &settings)?;
     }
     if let Tyre::Pac89(_) = r.tyre {
         curvature_hold::hold_curvature(o, &mut r, &tyre0, &settings)?;

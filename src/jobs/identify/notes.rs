@@ -7,7 +7,9 @@
 //! fitted with PAC89 or UniTire keeps the defaults' lateral coefficients),
 //! in the words of the Magic Formula's `no longitudinal data` line; and
 //! the warnings on the fit's inputs (levels pooled into a model without
-//! terms for them) and on its parameters (not identified, past a bound).
+//! terms for them) and on its parameters (not identified, past a bound);
+//! and, for a channel whose parameters the data did not all determine,
+//! which were held and its σ before and after (`identify/undetermined.rs`).
 
 use super::SwarmReport;
 use crate::format::{fixed, readable};
@@ -136,12 +138,39 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
         .collect()
 }
 
+/// The note of a fit that held parameters the data do not determine:
+/// which, and its σ with them held against fitted free.
+pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
+    let free = f.free_sigma_percent?;
+    let names: Vec<&str> = f
+        .parameters
+        .iter()
+        .filter(|p| matches!(p.held, Some(HeldFor::Undetermined { .. })))
+        .map(|p| p.name.as_str())
+        .collect();
+    Some(Note::said(format!(
+        "{}: {} held at the model's start {}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free",
+        f.channel.quantity(),
+        names.join(", "),
+        if names.len() == 1 { "value" } else { "values" },
+        if names.len() == 1 { "it" } else { "them" },
+        fixed(f.sigma_percent, 3),
+        fixed(free, 3)
+    )))
+}
+
 /// Every note of `r`, in the order the terminal gives them.
 pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
-    [r.aligning.as_ref(), r.longitudinal.as_ref()]
-        .into_iter()
+    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
+    fits.into_iter()
         .flatten()
-        .flat_map(|f| later_fit_notes(r, f))
+        .filter_map(undetermined_note)
+        .chain(
+            [r.aligning.as_ref(), r.longitudinal.as_ref()]
+                .into_iter()
+                .flatten()
+                .flat_map(|f| later_fit_notes(r, f)),
+        )
         .chain(unfitted_notes(r))
         .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))
         .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))

@@ -3,7 +3,7 @@
 //! its parameters.
 
 use super::holds::held_lines;
-use super::notes::{held_as_given, later_fit_notes, unfitted_notes};
+use super::notes::{held_as_given, later_fit_notes, undetermined_note, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
@@ -141,12 +141,14 @@ impl SwarmReport {
     }
 }
 
-/// The parameters of a fit held at a value in `hold`, and those that
-/// carry a warning, one line each.
+/// The parameters of a fit held at a value in `hold`, those the data do
+/// not determine (one line), and those that carry a warning, one line
+/// each.
 fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
-    f.parameters
-        .iter()
-        .filter_map(|p| {
+    let undetermined = undetermined_note(f).map(|n| n.line(" "));
+    undetermined
+        .into_iter()
+        .chain(f.parameters.iter().filter_map(|p| {
             if held_as_given(p, hold) {
                 return Some(format!(
                     "  held: {} = {}: given with --hold",
@@ -154,6 +156,6 @@ fn parameter_warnings(f: &Fit, hold: &[(String, f64)]) -> Vec<String> {
                 ));
             }
             super::notes::parameter_warning(p).map(|n| n.line(" "))
-        })
+        }))
         .collect()
 }

@@ -2,14 +2,19 @@
 //! (each condition's Magic Formula coefficients, then the load and camber
 //! laws through them, then a joint polish) run beside the direct swarm
 //! fit, and the better of the two written. Where the two-stage result is
-//! written, the report's fit is its own. Units: N, rad (PAC89's own inside
+//! written, the report's fit is its own. The two are compared free: the
+//! direct fit's σ before the parameters the data do not determine were
+//! held (`identify/undetermined.rs`), so that the rule does not decide
+//! the route; the two-stage result, where written, then has the same rule
+//! applied (its undetermined parameters held at the start tyre's values,
+//! the rest polished from its optimum). Units: N, rad (PAC89's own inside
 //! its model file).
 
 use super::{on_data, Options, SwarmReport};
 use crate::error::Error;
 use crate::identify::data::Point;
 use crate::identify::pac89_two_stage::{self, TwoStage};
-use crate::identify::{fit_report_of, sigma, Channel, FitSettings};
+use crate::identify::{fit_report_of, hold_undetermined, sigma, Channel, FitSettings};
 use crate::tyre::{Pac89, Tyre};
 use serde::Serialize;
 
@@ -35,17 +40,21 @@ pub struct TwoStageReport {
     pub stages: TwoStage,
     /// σ over all points of the polished result, %.
     pub polished_overall_sigma_percent: f64,
-    /// σ over all points of the direct fit, %: where the two-stage result
-    /// is written, the report's `sigma_percent`, curves and parameters are
-    /// its own, and this is the direct fit's it was chosen over.
+    /// σ over all points of the direct fit, %, free (before the
+    /// parameters the data do not determine were held): where the
+    /// two-stage result is written, the report's `sigma_percent`, curves
+    /// and parameters are its own, and this is the direct fit's it was
+    /// chosen over.
     pub direct_sigma_percent: f64,
 }
 
 /// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
-/// fit; the better of the two becomes the tyre.
+/// fit; the better of the two becomes the tyre, its undetermined
+/// parameters held at `start`'s values (module notes).
 pub(super) fn two_stage(
     o: &Options,
     r: &mut SwarmReport,
+    start: &Tyre,
     settings: &FitSettings,
 ) -> Result<(), Error> {
     let stages = pac89_two_stage::identify(&r.conditions, settings)
@@ -62,12 +71,13 @@ pub(super) fn two_stage(
         ..Pac89::adams_example()
     });
     let (s, _) = sigma(&tyre, &all);
-    let direct_sigma_percent = r.fit.sigma_percent;
+    let direct_sigma_percent = r.fit.free_sigma_percent.unwrap_or(r.fit.sigma_percent);
     let written = if s < direct_sigma_percent {
         // The report says what the file holds: the two-stage result's
         // parameters, standard errors and curves.
-        r.fit = fit_report_of(tyre.clone(), Channel::LateralForce, &r.conditions, &r.fit);
-        r.tyre = tyre;
+        let fit = fit_report_of(tyre, Channel::LateralForce, &r.conditions, &r.fit);
+        r.fit = hold_undetermined(fit, start, &r.conditions, settings);
+        r.tyre = r.fit.tyre.clone();
         Written::TwoStage
     } else {
         Written::Direct

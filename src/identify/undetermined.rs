@@ -1,0 +1,294 @@
+//! Parameters of a swarm fit the data do not determine, held at a stated
+//! value rather than left where the optimiser wandered: the rule of the
+//! staged Magic Formula fit (`mf_staged/holds.rs`) for the swarm fit of
+//! one channel (lateral force, aligning moment, longitudinal force).
+//!
+//! After the channel's fit (swarm and polish), a free parameter is *not
+//! determined* when its standard error (`cov = s²·(JᵀJ)⁻¹` at the optimum)
+//! reaches its magnitude and one standard error, alone, moves the channel
+//! by at least 1 % of its RMS over the points (`‖J_k‖·se/‖F‖ ≥ 0.01`, the
+//! √n of both RMS cancelling), or when it has no standard error (the
+//! Jacobian is singular along it). Of the parameters so flagged, the four
+//! with the largest relative standard error are tried: each held at its
+//! stated value with the rest refitted from the optimum (the configured
+//! local polish, Levenberg–Marquardt for `--local none`: no new swarm),
+//! and the hold that raises the cost least is kept; this repeats until no
+//! free parameter is flagged. Holds whose costs differ by less than half
+//! a residual variance (the data cannot tell them apart) go to the one
+//! with the largest relative standard error, the least determined: the
+//! staged fit gives them to the coefficient latest in its stage's order,
+//! which for the Magic Formula is a secondary term, but the swarm models'
+//! orders do not rank their terms so (PAC89's `a1`, a load variation,
+//! comes before `a2`, the friction).
+//!
+//! The stated value is the start tyre's, the model's own start values at
+//! the data's median load (`start_tyre_of`; the swarm route has no
+//! template), with a value given with `--hold` or by PAC89's curvature
+//! rule set there already and so never free here. Two parameters that
+//! trade along one near-null direction thus lose the one the fit can best
+//! spare, and the other is determined again.
+
+use super::parameters::parameter_reports;
+use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
+use super::{data::Condition, LocalMethod};
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::{LocalResult, Residuals};
+use crate::optim::stats;
+use crate::tyre::Tyre;
+use nalgebra::DMatrix;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// The fraction of the channel's RMS one standard error must move it by
+/// for the parameter to count as not determined (the staged fit's floor).
+pub(super) const EFFECT_FLOOR: f64 = 0.01;
+
+/// Flagged parameters tried per round, the largest relative standard
+/// error first (the staged fit's count).
+const CANDIDATES: usize = 4;
+
+/// How well the points determine a problem's free parameters at a point.
+pub(super) struct Spread {
+    /// Their covariance (NaN where the Jacobian is singular).
+    pub(super) covariance: Option<DMatrix<f64>>,
+    /// One standard error's effect, alone, as a fraction of the measured
+    /// values' norm (NaN without a standard error).
+    pub(super) effect: Vec<f64>,
+}
+
+impl Spread {
+    /// The spread of `problem`'s free parameters at `p`.
+    pub(super) fn at(problem: &FitProblem, p: &[f64]) -> Self {
+        let mut res = vec![0.0; problem.count()];
+        problem.residuals(p, &mut res);
+        let unbounded = vec![(f64::NEG_INFINITY, f64::INFINITY); p.len()];
+        // One Jacobian for both (the aligning and longitudinal blocks
+        // difference theirs): as `covariance_at` takes it.
+        let j = problem.jacobian(p, &res, &unbounded);
+        let sum_squares: f64 = res.iter().map(|e| e * e).sum();
+        let covariance = (!p.is_empty())
+            .then(|| stats::covariance(&j, sum_squares))
+            .flatten();
+        let y = problem.measured_norm().max(f64::MIN_POSITIVE);
+        let effect = (0..p.len())
+            .map(|k| {
+                let se = covariance.as_ref().map_or(f64::NAN, |c| c[(k, k)].sqrt());
+                j.column(k).norm() * se / y
+            })
+            .collect();
+        Self { covariance, effect }
+    }
+
+    /// The standard error of free parameter `k` (`None`: none).
+    fn std_error(&self, k: usize) -> Option<f64> {
+        let c = self.covariance.as_ref()?;
+        // NaN (singular along it) stays none: `NaN.max(0)` would be 0.
+        Some(c[(k, k)])
+            .filter(|v| v.is_finite())
+            .map(|v| v.max(0.0).sqrt())
+    }
+
+    /// Whether free parameter `k` at `value` is not determined (module
+    /// notes).
+    pub(super) fn flagged(&self, k: usize, value: f64) -> bool {
+        match self.std_error(k) {
+            None => true,
+            Some(se) => se >= value.abs() && self.effect[k] >= EFFECT_FLOOR,
+        }
+    }
+
+    /// The change of every free parameter that best keeps the fit when
+    /// `k` moves by `dv`: to first order the others' regression on it,
+    /// `Σ_jk/Σ_kk·dv`; only `dv` where the covariance does not say.
+    fn compensating(&self, k: usize, dv: f64) -> Vec<f64> {
+        let n = self.effect.len();
+        let mut d = vec![0.0; n];
+        d[k] = dv;
+        if let (Some(c), Some(_)) = (&self.covariance, self.std_error(k)) {
+            for (j, dj) in d.iter_mut().enumerate() {
+                let shift = c[(j, k)] / c[(k, k)] * dv;
+                if j != k && shift.is_finite() {
+                    *dj = shift;
+                }
+            }
+        }
+        d
+    }
+}
+
+/// One hold tried: the parameter (free order), the problem without it
+/// and its refit.
+struct Tried {
+    k: usize,
+    problem: FitProblem,
+    p: Vec<f64>,
+    cost: f64,
+}
+
+/// `fit` with the parameters the data do not determine held at `start`'s
+/// values and the rest refitted (module notes), its report redone; `fit`
+/// as it is when none is flagged. `conditions` are the fit's.
+pub(crate) fn hold_undetermined(
+    fit: Fit,
+    start: &Tyre,
+    conditions: &[Condition],
+    settings: &FitSettings,
+) -> Fit {
+    let t0 = Instant::now();
+    let channel = fit.channel;
+    let mut free: Vec<bool> = fit.parameters.iter().map(|p| p.free).collect();
+    let mut problem = FitProblem::for_channel(&fit.tyre, channel, &free, conditions)
+        .with_derivatives(settings.derivatives);
+    let now = channel.parameters(&fit.tyre);
+    let mut p: Vec<f64> = problem.free.iter().map(|&i| now[i]).collect();
+    let stated = channel.parameters(start);
+    let bounds = channel.bounds(start);
+    let mut held: Vec<(usize, HeldFor)> = Vec::new();
+    let mut evaluations = 0;
+    while p.len() > 1 {
+        let spread = Spread::at(&problem, &p);
+        if spread.covariance.is_none() {
+            break;
+        }
+        let Some(t) = spare(
+            &problem,
+            &p,
+            &spread,
+            &stated,
+            &bounds,
+            settings.local,
+            &mut evaluations,
+        ) else {
+            break;
+        };
+        let i = problem.free[t.k];
+        held.push((
+            i,
+            HeldFor::Undetermined {
+                fitted: p[t.k],
+                std_error: spread.std_error(t.k),
+                effect_percent: spread.std_error(t.k).map(|_| 100.0 * spread.effect[t.k]),
+            },
+        ));
+        free[i] = false;
+        problem = t.problem;
+        p = t.p;
+    }
+    if held.is_empty() {
+        return fit;
+    }
+    let tyre = problem.tyre(&p).canonical();
+    let all = channel.parameters(&tyre);
+    let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
+    let spread = Spread::at(&problem, &p);
+    let mut parameters = parameter_reports(start, &tyre, channel, &free, &spread);
+    for (new, old) in parameters.iter_mut().zip(&fit.parameters) {
+        if !old.free {
+            new.held = old.held;
+            new.warning.clone_from(&old.warning);
+        }
+    }
+    for (i, why) in held {
+        parameters[i].held = Some(why);
+    }
+    let (s, rms) = sigma_of(channel, &tyre, &problem.points);
+    Fit {
+        curves: curves_of(channel, &tyre, conditions),
+        parameters,
+        free_sigma_percent: Some(fit.sigma_percent),
+        sigma_percent: s,
+        rms,
+        evaluations: fit.evaluations + evaluations,
+        seconds: fit.seconds + t0.elapsed().as_secs_f64(),
+        covariance: spread.covariance,
+        tyre,
+        ..fit
+    }
+}
+
+/// The flagged parameter of `problem` at `p` whose hold at its `stated`
+/// value (the channel's full vector) the fit can best spare, with the
+/// rest refitted within `bounds` (the channel's); `None` when none is
+/// flagged (module notes).
+fn spare(
+    problem: &FitProblem,
+    p: &[f64],
+    spread: &Spread,
+    stated: &[f64],
+    bounds: &[(f64, f64)],
+    local: LocalMethod,
+    evaluations: &mut usize,
+) -> Option<Tried> {
+    let relative = |k: usize| {
+        spread
+            .std_error(k)
+            .map_or(f64::INFINITY, |s| s / p[k].abs().max(f64::MIN_POSITIVE))
+    };
+    let mut flagged: Vec<usize> = (0..p.len()).filter(|&k| spread.flagged(k, p[k])).collect();
+    flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
+    flagged.truncate(CANDIDATES);
+    // The holds tried are independent refits: run side by side (a
+    // UniTire aligning fit tries four per round, each a full polish).
+    let tried: Vec<(Option<Tried>, usize)> = flagged
+        .par_iter()
+        .map(|&k| {
+            let value = stated[problem.free[k]];
+            let sub = problem.holding(p, k, value);
+            let sub_bounds: Vec<(f64, f64)> = sub.free.iter().map(|&i| bounds[i]).collect();
+            let without = |v: &[f64]| -> Vec<f64> {
+                v.iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i != k)
+                    .map(|e| *e.1)
+                    .collect()
+            };
+            // From the optimum, or with the rest moved as they trade
+            // against the held value where that starts lower: a warm start
+            // that jumps one parameter of a traded pair alone can stall far
+            // from the pair's valley.
+            let moved: Vec<f64> = p
+                .iter()
+                .zip(spread.compensating(k, value - p[k]))
+                .map(|(a, d)| a + d)
+                .collect();
+            let x = [without(&moved), without(p)]
+                .into_iter()
+                .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
+                .unwrap_or_default();
+            let r = refit(&sub, &x, &sub_bounds, local);
+            let tried = Tried {
+                k,
+                problem: sub,
+                p: r.params,
+                cost: r.cost,
+            };
+            (r.cost.is_finite().then_some(tried), r.evaluations)
+        })
+        .collect();
+    *evaluations += tried.iter().map(|t| t.1).sum::<usize>();
+    let tried: Vec<Tried> = tried.into_iter().filter_map(|t| t.0).collect();
+    let lowest = tried.iter().map(|t| t.cost).fold(f64::INFINITY, f64::min);
+    // cost = ½·Σe², so half a residual variance Σe²/dof is cost/dof.
+    let dof = problem.count().saturating_sub(p.len()).max(1) as f64;
+    let tie = problem.cost(p) / dof;
+    // `tried` is in the flagged order: the first within the tie is the
+    // least determined.
+    tried.into_iter().find(|t| t.cost <= lowest + tie)
+}
+
+/// The refit of `problem` from `x` within `bounds`: the fit's own polish,
+/// or Levenberg–Marquardt within the box where the fit has none (a hold
+/// with the rest left where they traded against it is no fit).
+fn refit(
+    problem: &FitProblem,
+    x: &[f64],
+    bounds: &[(f64, f64)],
+    local: LocalMethod,
+) -> LocalResult {
+    polish(problem, x, bounds, local)
+        .unwrap_or_else(|| BoundedLm::default().minimize(problem, x, bounds))
+}
+
+#[cfg(test)]
+#[path = "undetermined_tests.rs"]
+mod tests;

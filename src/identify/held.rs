@@ -95,7 +95,7 @@ impl fmt::Display for HeldFor {
                 effect_percent,
             } => write!(
                 f,
-                "not determined by these data: fitted free it was {} ± {} (one standard error moved the fit by {:.1} % of the channel's RMS), so it is held at the model's start value and the rest refitted",
+                "not determined by these data: fitted free it was {} ± {} (one standard error of it alone moves the fit by {:.1} % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at the model's start value and the rest refitted",
                 readable(*fitted, 4),
                 readable(*se, 3),
                 effect_percent.unwrap_or(f64::NAN)

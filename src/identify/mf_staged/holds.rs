@@ -123,8 +123,9 @@ impl fmt::Display for HoldReason {
             } => write!(
                 f,
                 "not identifiable from these data when fitted ({} ± {}; one \
-                 standard error moved the fit by {effect_percent:.1} % of the channel's RMS): \
-                 held at the {source}",
+                 standard error of it alone moves the fit by {effect_percent:.1} % of the \
+                 channel's RMS, which the other parameters' trade-off undoes): held at the \
+                 {source}",
                 readable(*fitted, 5),
                 readable(*se, 4)
             ),
@@ -456,6 +457,6 @@ mod tests {
             effect_percent: 715.1,
             source: HoldSource::PacejkaBook,
         };
-        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error moved the fit by 715.1 % of the channel's RMS): held at the Pacejka 2012 book default");
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default");
     }
 }

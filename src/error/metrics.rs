@@ -55,7 +55,7 @@ pub enum MetricsError {
         lengths: Vec<(&'static str, usize)>,
     },
     /// The record is too short for the windows.
-    #[error("the record ({span:.3} s) is shorter than the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s)", Num(*pre_window), Num(*steady_window))]
+    #[error("the record ({span:.3} s) is not longer than the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s)", Num(*pre_window), Num(*steady_window))]
     TooShort {
         /// The record's length, s.
         span: f64,

@@ -115,7 +115,7 @@ fn messages_read_as_the_text_they_replace() {
             },
         ],
     };
-    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is shorter than the initial and steady windows together (`pre_window` = 10 s + `steady_window` = 3 s)); run.csv#2 (13.00–20.00 s): another piece was used");
+    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is not longer than the initial and steady windows together (`pre_window` = 10 s + `steady_window` = 3 s)); run.csv#2 (13.00–20.00 s): another piece was used");
     // A run that is one piece is the file the error names: said once.
     let whole = InputProblem::NoSteerStep {
         pieces: vec![RefusedPiece {

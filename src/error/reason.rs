@@ -147,10 +147,14 @@ pub enum ParamReason {
     },
     /// A track out of proportion with the wheelbase (a unit slip, or a
     /// key given another's value): outside 0.15–2.
-    #[error("track / wheelbase = {}, outside 0.15–2 (road and racing vehicles about 0.3–1.2): check the unit (m) and that the key holds the track", crate::format::readable(*ratio, 3))]
+    #[error("track / wheelbase = {}, outside 0.15–2 (road and racing vehicles about 0.3–1.2), with the wheelbase a + b = {} + {} = {} m: check the unit (m), that the key holds the track, and a and b (the wheelbase may be the one wrong)", crate::format::readable(*ratio, 3), super::number::Num(*a), super::number::Num(*b), crate::format::readable(a + b, 4))]
     TrackToWheelbase {
         /// Track over wheelbase.
         ratio: f64,
+        /// The front axle's distance from the centre of gravity, m.
+        a: f64,
+        /// The rear axle's, m.
+        b: f64,
     },
     /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
     /// ([`DYNAMIC_INDEX`]).

@@ -8,7 +8,9 @@
 //! reaches its magnitude and one standard error, alone, moves the channel
 //! by at least 1 % of its RMS over the points (`‖J_k‖·se/‖F‖ ≥ 0.01`, the
 //! √n of both RMS cancelling), or when it has no standard error (the
-//! Jacobian is singular along it). Of the parameters so flagged, the four
+//! Jacobian is singular along it); not one on its search bound, which
+//! the data press against (its warning says so). Of the parameters so
+//! flagged, the four
 //! with the largest relative standard error are tried: each held at its
 //! stated value with the rest refitted from the optimum (the configured
 //! local polish, Levenberg–Marquardt for `--local none`: no new swarm),
@@ -224,7 +226,17 @@ fn spare(
             .std_error(k)
             .map_or(f64::INFINITY, |s| s / p[k].abs().max(f64::MIN_POSITIVE))
     };
-    let mut flagged: Vec<usize> = (0..p.len()).filter(|&k| spread.flagged(k, p[k])).collect();
+    // A value on its search bound is where the box stopped the data, not
+    // where they leave it free: its standard error means nothing there,
+    // and its warning says so (`parameters.rs`).
+    let on_bound = |k: usize| {
+        let (lo, hi) = bounds[problem.free[k]];
+        let w = hi - lo;
+        p[k] <= lo + 1e-6 * w || p[k] >= hi - 1e-6 * w
+    };
+    let mut flagged: Vec<usize> = (0..p.len())
+        .filter(|&k| spread.flagged(k, p[k]) && !on_bound(k))
+        .collect();
     flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
     flagged.truncate(CANDIDATES);
     // The holds tried are independent refits: run side by side (a

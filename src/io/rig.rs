@@ -156,8 +156,18 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         _ => None,
     };
     if lateral.is_none() && longitudinal.is_none() {
-        let header = c.header.clone();
-        return Err(InputError::problem(path, InputProblem::NoSweep { header }));
+        // With the header's slips of spelling (`Fy` for `fy`) and the bad
+        // cells, in one run.
+        let no_sweep = || {
+            InputError::problem(
+                path,
+                InputProblem::NoSweep {
+                    header: c.header.clone(),
+                },
+            )
+        };
+        errors.push(no_sweep());
+        return Err(InputError::all_in_file_order(path, errors).unwrap_or_else(no_sweep));
     }
     let camber = c.take_optional("camber");
     // Angles in degrees are the commonest slip of a hand-made file: a slip

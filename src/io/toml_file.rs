@@ -125,9 +125,10 @@ fn plain_types(message: &str) -> String {
     };
     let word = match expected {
         "f64" | "f32" => "a number",
-        "i8" | "i16" | "i32" | "i64" | "u8" | "u16" | "u32" | "u64" | "usize" | "isize" => {
-            "a whole number"
-        }
+        "i8" | "i16" | "i32" | "i64" | "isize" => "a whole number",
+        // A negative whole number is refused by these: "expected a whole
+        // number" for −1 read as a contradiction.
+        "u8" | "u16" | "u32" | "u64" | "usize" => "a whole number of 0 or more",
         "variant identifier" => "a name in quotes",
         e if e.starts_with("struct ") || e.starts_with("a map") => "a table",
         e if e.starts_with("a sequence") || e.starts_with("a tuple") => "an array [ … ]",

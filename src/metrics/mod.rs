@@ -10,8 +10,8 @@
 //! - response time: t₀ to the first time x̂ = 0.9 after the steer's onset
 //!   (negative where the response leads the steer's half-way point, as a
 //!   crawl's lateral acceleration does); peak response time: t₀ to
-//!   the peak of r̂, the first local maximum after the 90 % crossing that
-//!   exceeds the steady state by more than the noise allows, by more than
+//!   the peak of r̂, the highest sample of its first stretch after the 90 %
+//!   crossing that exceeds the steady state by more than the noise allows, by more than
 //!   the low-pass alone lifts the steer step (`ρ`, the filtered steer's
 //!   overshoot beyond the raw steer's: its ringing, which a yaw rate that
 //!   follows the steer has too) and by at least `min_overshoot` (`1 +

@@ -154,7 +154,11 @@ impl Vehicle {
         ] {
             let ratio = track / self.wheelbase();
             if !(TRACK_TO_WHEELBASE.0..=TRACK_TO_WHEELBASE.1).contains(&ratio) {
-                let reason = ParamReason::TrackToWheelbase { ratio };
+                let reason = ParamReason::TrackToWheelbase {
+                    ratio,
+                    a: self.a,
+                    b: self.b,
+                };
                 return Err(ParamError::new(key, track, reason));
             }
         }

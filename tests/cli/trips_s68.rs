@@ -25,13 +25,16 @@ fn peak_of(path: &Path) -> (Option<f64>, Option<f64>, Vec<String>) {
 }
 
 /// Noise of 1 % of the step moved the sedan's yaw-rate peak time from
-/// 0.435 s to 0.359–0.423 s (and TB with it) without a word. The run now
-/// says how far its own noise moves the peak: over 12 seeds the spread it
-/// states (an upper estimate: its copies carry the noise twice) is at
-/// least 0.7 and at most 2.5 times the scatter of the peak times the
-/// seeds give (1.4 times, as a copy's doubled noise makes it), the
-/// warning appears where the stated spread reaches a twentieth of the peak
-/// time (most seeds here), and the clean run states next to none.
+/// 0.435 s to 0.359–0.423 s (and TB with it) without a word, and noise of
+/// 10 % to 0.298 s: the first local maximum above the threshold was a
+/// noise bump on the rising flank. The peak is now the highest sample of
+/// the first stretch above it, and the run says how far its own noise
+/// moves it. Over 12 seeds at each level, the peak times stay within
+/// three stated spreads of the clean one, the spread stated is within
+/// 0.7–3 times the scatter the seeds give (a copy carries the noise twice:
+/// 1.2 times at 1 %, 2.5 times at 10 %, where the doubled noise blurs the
+/// peak more than in proportion), the warning appears where the stated spread reaches a
+/// twentieth of the peak time, and the clean run states next to none.
 #[test]
 fn metrics_says_how_far_noise_moves_the_yaw_rate_peak() {
     use rand::SeedableRng;
@@ -39,47 +42,51 @@ fn metrics_says_how_far_noise_moves_the_yaw_rate_peak() {
     let sedan = super::trips_s66::Sedan::simulated(dir.path());
     let clean = sedan.measured(dir.path(), "clean.csv", &|_, d, r, _| (d, r));
     let (tp0, spread0, said) = peak_of(&clean);
-    assert!(
-        tp0.is_some() && spread0.is_none_or(|s| s < 1e-3),
-        "{tp0:?} {spread0:?}"
-    );
+    let tp0 = tp0.unwrap();
+    assert!(spread0.is_none_or(|s| s < 1e-3), "{spread0:?}");
     assert!(!said.iter().any(|w| w.contains("peak is flat")), "{said:?}");
     let at = sedan.header.iter().position(|h| h == "yaw_rate").unwrap();
     let step = sedan.rows.last().unwrap()[at] - sedan.rows[0][at];
-    let (mut times, mut stated) = (Vec::new(), Vec::new());
-    for seed in 0..12 {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-        let noise: Vec<f64> = (0..sedan.rows.len())
-            .map(|_| 0.01 * step * handling::identify::data::gauss(&mut rng))
-            .collect();
-        let noisy = sedan.measured(dir.path(), "noisy.csv", &|_, d, r, i| (d, r + noise[i]));
-        let (tp, spread, said) = peak_of(&noisy);
-        let (Some(tp), Some(spread)) = (tp, spread) else {
-            continue;
-        };
-        let warned = said
-            .iter()
-            .any(|w| w.contains("peak is flat within the noise"));
-        assert_eq!(
-            warned,
-            spread >= handling::jobs::metrics::PEAK_SPREAD_SAID * tp,
-            "{spread} of {tp}: {said:?}"
+    for level in [0.01, 0.1] {
+        let (mut times, mut stated) = (Vec::new(), Vec::new());
+        for seed in 0..12 {
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            let noise: Vec<f64> = (0..sedan.rows.len())
+                .map(|_| level * step * handling::identify::data::gauss(&mut rng))
+                .collect();
+            let noisy = sedan.measured(dir.path(), "noisy.csv", &|_, d, r, i| (d, r + noise[i]));
+            let (tp, spread, said) = peak_of(&noisy);
+            let (Some(tp), Some(spread)) = (tp, spread) else {
+                continue;
+            };
+            let warned = said
+                .iter()
+                .any(|w| w.contains("peak is flat within the noise"));
+            let share = handling::jobs::metrics::PEAK_SPREAD_SAID;
+            assert_eq!(warned, spread >= share * tp, "{spread} of {tp}: {said:?}");
+            assert!(
+                (tp - tp0).abs() <= 3.0 * spread.max(0.01),
+                "{tp} against {tp0} ± {spread}"
+            );
+            times.push(tp);
+            stated.push(spread);
+        }
+        // At 10 % the threshold (five noise deviations) passes a few
+        // seeds' overshoot: those have no peak, said as none.
+        assert!(times.len() >= 6, "{times:?}");
+        let mean = times.iter().sum::<f64>() / times.len() as f64;
+        let scatter = (times.iter().map(|t| (t - mean).powi(2)).sum::<f64>()
+            / (times.len() - 1) as f64)
+            .sqrt();
+        let figure = stated.iter().sum::<f64>() / stated.len() as f64;
+        eprintln!(
+            "noise {level}: peak times {times:?}: mean {mean} scatter {scatter}, stated {figure}"
         );
-        times.push(tp);
-        stated.push(spread);
+        assert!(
+            (0.7 * scatter..=3.0 * scatter).contains(&figure),
+            "the seeds' peak times scatter by {scatter} s, the runs state {figure} s"
+        );
     }
-    assert!(times.len() >= 9, "{times:?}");
-    let warned = stated.iter().zip(&times).filter(|(s, t)| **s >= 0.05 * **t);
-    assert!(warned.count() >= 6, "{stated:?} of {times:?}");
-    let mean = times.iter().sum::<f64>() / times.len() as f64;
-    let scatter =
-        (times.iter().map(|t| (t - mean).powi(2)).sum::<f64>() / (times.len() - 1) as f64).sqrt();
-    let figure = stated.iter().sum::<f64>() / stated.len() as f64;
-    eprintln!("peak times {times:?}: scatter {scatter}, stated {figure}");
-    assert!(
-        (0.7 * scatter..=2.5 * scatter).contains(&figure),
-        "the seeds' peak times scatter by {scatter} s, the runs state {figure} s"
-    );
 }
 
 /// The bundled PAC89 example with its `a3` and `a4` replaced.
@@ -234,4 +241,100 @@ fn a_missing_column_and_a_misspelled_one_are_refused_in_one_run() {
     ] {
         assert!(e.contains(said), "no {said:?} in {e}");
     }
+}
+
+/// A rig file whose only lateral column is a slip of spelling (`Fy`) was
+/// refused as having no sweep, with neither the slip nor the other slips
+/// of its header: now all at once.
+#[test]
+fn a_rig_file_without_a_sweep_says_its_slips_of_spelling_with_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let rig = dir.path().join("rig.csv");
+    fs::write(
+        &rig,
+        "fz,alpha,Fy,presure\n4000,0.1,3000,2e5\n4000,0.2,3500,2e5\n",
+    )
+    .unwrap();
+    let o = identify_to(&rig, "gim", &dir.path().join("g.toml"));
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    for said in [
+        "3 places refused",
+        "no lateral data (columns `alpha` and `fy`)",
+        "rig.csv:1:3: column `Fy` is not one this command reads: did you mean `fy`?",
+        "rig.csv:1:4: column `presure` is not one this command reads: did you mean `pressure`?",
+    ] {
+        assert!(e.contains(said), "no {said:?} in {e}");
+    }
+}
+
+/// Rig data on one side of zero slip with the force's sign flipped (the
+/// sign check needs both sides) were fitted at σ 107 % and written
+/// without a word: a σ of 100 % or more, worse than a zero force, is now
+/// said with the sign to check.
+#[test]
+fn identify_warns_of_a_fit_worse_than_a_zero_force() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("fz,alpha,fy\n");
+    for i in 0..29 {
+        let alpha = -0.21 + 0.0009 * i as f64;
+        text += &format!("4000,{alpha},{}\n", 3500.0 + 10.0 * i as f64);
+    }
+    let rig = dir.path().join("rig.csv");
+    fs::write(&rig, text).unwrap();
+    let o = identify_to(&rig, "gim", &dir.path().join("g.toml"));
+    let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+    assert!(
+        said.contains("it misses by more than a zero force would (is the column's sign the tyre's, as FORMATS.md fixes it?)"),
+        "{said}"
+    );
+}
+
+/// A slip ratio of −11 read "a wheel spinning at eleven times the road
+/// speed", which is +10's: each end is said.
+#[test]
+fn tyre_eval_says_what_a_slip_ratio_past_either_end_means() {
+    let dir = tempfile::tempdir().unwrap();
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let points = "fz,kappa,alpha,camber,speed\n4000,-11,0.05,0,20\n";
+    let (o, _) = super::tyre_eval::eval(dir.path(), &tir, points, &[]);
+    let e = stderr(&o);
+    assert!(
+        e.contains("-11 is below -10, the least a tyre is evaluated at (±10: a wheel spinning forwards at eleven times the road speed, or backwards at nine times it)"),
+        "{e}"
+    );
+}
+
+/// A campaign's `seed = -1` read "expected a whole number" (−1 is one);
+/// a wheelbase typed wrong (`a = 11.1`) was blamed on the track alone.
+#[test]
+fn a_negative_seed_and_a_wrong_wheelbase_are_said_as_what_they_are() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = fs::read_to_string(root().join("scenarios/sedan_step.toml")).unwrap();
+    let a_line = scenario
+        .lines()
+        .find(|l| l.trim_start().starts_with("a ="))
+        .unwrap();
+    let wrong = scenario.replace(a_line, "a = 11.1");
+    fs::write(dir.path().join("s.toml"), wrong).unwrap();
+    let o = run(&["simulate", dir.path().join("s.toml").to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("with the wheelbase a + b = 11.1 + ")
+            && e.contains("and a and b (the wheelbase may be the one wrong)"),
+        "{e}"
+    );
+    let campaign = fs::read_to_string(root().join("campaigns/delays.toml")).unwrap();
+    let seeded = campaign.replace("seed = 1\n", "seed = -1\n");
+    assert_ne!(seeded, campaign);
+    let path = dir.path().join("c.toml");
+    fs::write(&path, seeded).unwrap();
+    let o = run(&["diagnose", path.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("c.toml:25:8") && e.contains("expected a whole number of 0 or more"),
+        "{e}"
+    );
 }

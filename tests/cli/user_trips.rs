@@ -274,7 +274,7 @@ fn metrics_windows_are_refused_with_their_values() {
     };
     let e = metrics("--pre-window", "1e308");
     assert!(
-        e.contains("run.csv: no step-steer metrics (the record (6.000 s) is shorter than the initial and steady windows together (`pre_window` = 1e308 s + `steady_window` = 1 s))"),
+        e.contains("run.csv: no step-steer metrics (the record (6.000 s) is not longer than the initial and steady windows together (`pre_window` = 1e308 s + `steady_window` = 1 s))"),
         "{e}"
     );
     let e = metrics("--steady-window", "5.5");

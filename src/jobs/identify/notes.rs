@@ -75,14 +75,26 @@ pub(crate) fn later_fit_notes(r: &SwarmReport, f: &Fit) -> Vec<Note> {
             ))
         })
         .collect();
-    if f.sigma_percent > LARGE_SIGMA_PERCENT {
-        notes.push(Note::warned(format!(
-            "the {quantity}'s σ is {} %: the {} model's {quantity} does not follow these data (a σ above {LARGE_SIGMA_PERCENT} % misses by more than a fifth of the measured values); do not rely on its {quantity}",
+    notes.extend(large_sigma(f));
+    notes
+}
+
+/// The warning of a fit whose σ passes [`LARGE_SIGMA_PERCENT`]; one at
+/// 100 % or more is worse than no force at all (a sign the data flip, or a
+/// model that cannot take their shape), and said so.
+pub(crate) fn large_sigma(f: &Fit) -> Option<Note> {
+    let quantity = f.channel.quantity();
+    let worse = match f.sigma_percent >= 100.0 {
+        true => ": it misses by more than a zero force would (is the column's sign the tyre's, as FORMATS.md fixes it?)",
+        false => "",
+    };
+    (f.sigma_percent > LARGE_SIGMA_PERCENT).then(|| {
+        Note::warned(format!(
+            "the {quantity}'s σ is {} %: the {} model's {quantity} does not follow these data (a σ above {LARGE_SIGMA_PERCENT} % misses by more than a fifth of the measured values){worse}; do not rely on its {quantity}",
             fixed(f.sigma_percent, 1),
             f.model
-        )));
-    }
-    notes
+        ))
+    })
 }
 
 /// Whether `fit` holds its parameter `name` by the model's design.
@@ -171,6 +183,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
                 .flatten()
                 .flat_map(|f| later_fit_notes(r, f)),
         )
+        .chain(large_sigma(&r.fit))
         .chain(unfitted_notes(r))
         .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))
         .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))

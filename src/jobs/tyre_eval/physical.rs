@@ -16,7 +16,7 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
         -10.0,
         10.0,
         "",
-        "a wheel spinning at eleven times the road speed",
+        "±10: a wheel spinning forwards at eleven times the road speed, or backwards at nine times it",
     ),
     (
         "alpha",

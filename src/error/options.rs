@@ -197,7 +197,7 @@ pub enum OptionsError {
     /// fits every level of the file (the model has pressure and camber
     /// terms).
     #[error(
-        "--{option} is not taken by --model {model}: the staged Magic Formula fit fits every pressure and camber level of the file together (the model has pressure and camber terms), so it selects none; drop --{option}, or write a file holding only the level wanted"
+        "--{option} is not taken by --model {model}: the staged Magic Formula fit fits every load, pressure and camber level of the file together (the model has terms in each), so it selects none; drop --{option}, or write a file holding only the level wanted"
     )]
     LevelSelectionNotTaken {
         /// The option given (`pressure`, `camber`).

@@ -8,6 +8,10 @@ use crate::format::{readable, rounded};
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
 
+/// The fraction of the channel's RMS one standard error must move it by
+/// for the parameter to count as not determined (the staged fit's floor).
+pub(super) const EFFECT_FLOOR: f64 = 0.01;
+
 /// One report per parameter of `channel`: value, whether it was free, its
 /// standard error and effect from `spread` (over the free ones, in order)
 /// and a warning when it sits at a bound or the data cannot identify it.
@@ -43,7 +47,19 @@ pub(super) fn parameter_reports(
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             rep.effect_percent = se.map(|_| 100.0 * spread.effect[k]);
-            rep.warning = warning(name, values[i], (lo, hi), se, &traded);
+            rep.warning = warning(name, values[i], (lo, hi), se, &traded).map(|w| {
+                // A standard error past the value that the fit hardly
+                // feels is said as such: the rule that holds what the data
+                // do not determine passes it by (`undetermined.rs`).
+                let floor = 100.0 * EFFECT_FLOOR;
+                match rep.effect_percent {
+                    Some(e) if e < floor && se.is_some_and(|s| s > values[i].abs()) => format!(
+                        "{w}, but one standard error of it alone moves the fit by only {} % of the channel's RMS (under the {floor} % that would have it held): what it leaves unsettled the fit hardly shows",
+                        crate::format::decimals_or_digits(e, 1, 2)
+                    ),
+                    _ => w,
+                }
+            });
             k += 1;
         }
         parameters.push(rep);

@@ -30,7 +30,7 @@
 //! trade along one near-null direction thus lose the one the fit can best
 //! spare, and the other is determined again.
 
-use super::parameters::parameter_reports;
+use super::parameters::{parameter_reports, EFFECT_FLOOR};
 use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
 use super::{data::Condition, LocalMethod};
 use crate::optim::bounded::BoundedLm;
@@ -40,10 +40,6 @@ use crate::tyre::Tyre;
 use nalgebra::DMatrix;
 use rayon::prelude::*;
 use std::time::Instant;
-
-/// The fraction of the channel's RMS one standard error must move it by
-/// for the parameter to count as not determined (the staged fit's floor).
-pub(super) const EFFECT_FLOOR: f64 = 0.01;
 
 /// Flagged parameters tried per round, the largest relative standard
 /// error first (the staged fit's count).

@@ -27,7 +27,7 @@ pub use columns::{read_columns, Columns};
 pub(crate) use columns::{read_columns_with_bad_cells, Layout};
 pub use run::{
     read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
-    DeclaredBy,
+    DeclaredBy, OPTIONAL_CHANNELS,
 };
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub use tables::load_tyre_with_ranges;

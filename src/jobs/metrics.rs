@@ -74,7 +74,9 @@ pub fn run_with_degrees(
     ParamError::finite("min_speed", min_speed)?;
     let (mut run, unread_columns) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
+    let slips = slips_of_spelling(path, &run);
     let mut dead = leave_out_dead_channels(&mut run)?;
+    dead.extend(slips);
     let mut m = measured_step_metrics(run.clone(), min_speed, settings)?;
     // An `ay` that disagrees with u·r is measured again without it.
     if let Some(w) = m.ay_disagreement() {
@@ -118,6 +120,42 @@ pub fn run_with_degrees(
         t_start: m.t_start,
         t_end: m.t_end,
     })
+}
+
+/// The warnings of header columns of `path` that are slips of spelling of
+/// a channel the metrics read and `run` lacks (`bta` for `beta`): a run
+/// may carry columns of its own (FORMATS.md), so they are said, not
+/// refused, with what the run goes without.
+fn slips_of_spelling(path: &Path, run: &MeasuredRun) -> Vec<String> {
+    let absent: Vec<&str> = [("ay", run.ay.is_none()), ("beta", run.beta.is_none())]
+        .into_iter()
+        .filter(|(_, absent)| *absent)
+        .map(|(c, _)| c)
+        .collect();
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Vec::new();
+    };
+    let Some(header) = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('#'))
+    else {
+        return Vec::new();
+    };
+    let known = ["t", "speed", "steer", "yaw_rate"];
+    header
+        .split(',')
+        .map(str::trim)
+        .filter(|h| !known.contains(h) && !crate::io::OPTIONAL_CHANNELS.contains(h))
+        .filter_map(|h| {
+            let meant = crate::format::nearest_name(h, &absent)?;
+            let metrics = if meant == "beta" { "steady sideslip and TB" } else { AY_METRICS };
+            Some(format!(
+                "{}: column `{h}` is not one a run has: did you mean `{meant}`? It is not read, and the metrics of `{meant}` ({metrics}) are left out (null in --json); rename it",
+                path.display()
+            ))
+        })
+        .collect()
 }
 
 /// Refuses a run whose yaw rate is dead ([`MeasuredRun::dead_channels`],

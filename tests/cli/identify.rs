@@ -435,7 +435,7 @@ fn the_staged_magic_formula_fit_refuses_pressure_and_camber_selection() {
         let e = refused(&o, &out);
         assert!(
             e.contains(&format!("{option} is not taken by --model mf61"))
-                && e.contains("fits every pressure and camber level of the file"),
+                && e.contains("fits every load, pressure and camber level of the file"),
             "{e}"
         );
     }

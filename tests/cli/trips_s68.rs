@@ -338,3 +338,38 @@ fn a_negative_seed_and_a_wrong_wheelbase_are_said_as_what_they_are() {
         "{e}"
     );
 }
+
+/// A run whose sideslip column is typed `bta` gave no steady sideslip and
+/// no TB without a word: the slip is said, with what the run goes
+/// without, and the run still measured (a run may carry columns of its
+/// own).
+#[test]
+fn metrics_says_a_column_that_is_a_slip_of_a_channel_it_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let sim = dir.path().join("sim");
+    let o = run(&[
+        "simulate",
+        root().join("scenarios/sedan_step.toml").to_str().unwrap(),
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let history = fs::read_to_string(sim.join("history.csv")).unwrap();
+    let header = history.lines().next().unwrap();
+    assert!(header.contains(",beta,"), "{header}");
+    let slipped = history.replacen(",beta,", ",bta,", 1);
+    fs::write(dir.path().join("run.csv"), slipped).unwrap();
+    let (tp, _, said) = peak_of(&dir.path().join("run.csv"));
+    assert!(tp.is_some(), "{said:?}");
+    assert!(
+        said.iter().any(
+            |w| w.contains("column `bta` is not one a run has: did you mean `beta`?")
+                && w.contains("steady sideslip and TB")
+        ),
+        "{said:?}"
+    );
+    // The run as written says nothing of the kind.
+    fs::write(dir.path().join("ok.csv"), &history).unwrap();
+    let (_, _, said) = peak_of(&dir.path().join("ok.csv"));
+    assert!(!said.iter().any(|w| w.contains("did you mean")), "{said:?}");
+}

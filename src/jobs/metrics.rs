@@ -132,13 +132,16 @@ fn slips_of_spelling(path: &Path, run: &MeasuredRun) -> Vec<String> {
         .filter(|(_, absent)| *absent)
         .map(|(c, _)| c)
         .collect();
-    let Ok(text) = std::fs::read_to_string(path) else {
+    // The header line only: the run was read whole already, and a long
+    // log need not be read again for its first line.
+    use std::io::BufRead;
+    let Ok(file) = std::fs::File::open(path) else {
         return Vec::new();
     };
-    let Some(header) = text
+    let Some(header) = std::io::BufReader::new(file)
         .lines()
-        .map(str::trim)
-        .find(|l| !l.is_empty() && !l.starts_with('#'))
+        .map_while(Result::ok)
+        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
     else {
         return Vec::new();
     };

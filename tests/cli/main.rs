@@ -197,6 +197,35 @@ pub(crate) fn identify_to(rig: &Path, model: &str, out: &Path) -> Output {
     ])
 }
 
+/// The public Hoosier cornering file fitted by `identify --model pac89`
+/// (its default seed), once for every test that reads that fit: the fit
+/// takes about 45 s of both cores, and the tests that check what it
+/// writes, holds and says need the same run.
+pub(crate) struct HoosierPac89 {
+    /// What the terminal said.
+    pub(crate) stdout: String,
+    /// The tyre file written (its report beside it, `*.report.json`).
+    pub(crate) tyre: PathBuf,
+}
+
+/// [`HoosierPac89`], fitted by the first test that asks into the test
+/// run's own scratch folder; `None` where [`shared_data`] skips `test`.
+pub(crate) fn hoosier_pac89(test: &str) -> Option<&'static HoosierPac89> {
+    static FIT: std::sync::OnceLock<HoosierPac89> = std::sync::OnceLock::new();
+    let rig = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv")?;
+    Some(FIT.get_or_init(|| {
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hoosier_pac89");
+        fs::create_dir_all(&dir).unwrap();
+        let tyre = dir.join("hoosier_pac89.toml");
+        let o = identify_to(&rig, "pac89", &tyre);
+        assert!(o.status.success(), "{}", stderr(&o));
+        HoosierPac89 {
+            stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+            tyre,
+        }
+    }))
+}
+
 /// The stderr of a run `o` that must have failed without writing `out`.
 pub(crate) fn refused(o: &Output, out: &Path) -> String {
     assert!(!o.status.success(), "expected failure");

@@ -62,14 +62,13 @@ fn number_after(line: &str, before: &str, until: char) -> f64 {
 
 #[test]
 fn a_pac89_fit_keeps_what_the_data_do_not_see_in_its_box_and_holds_a_curvature_that_reverses() {
-    let Some(data) = shared_data(
+    let Some(fit) = hoosier_pac89(
         "a_pac89_fit_keeps_what_the_data_do_not_see_in_its_box_and_holds_a_curvature_that_reverses",
-        "tyre_ttc_hoosier_43075/cornering.csv",
     ) else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let (text, tyre) = pac89_fit(dir.path(), &data, "hoosier_pac89.toml", &[]);
+    let (text, tyre) = (&fit.stdout, &fit.tyre);
     let a = array(&fs::read_to_string(&tyre).unwrap(), "a");
     for (i, (lo, hi)) in [(1.0, 2.0), (-400.0, 400.0), (200.0, 5000.0)]
         .into_iter()

@@ -93,6 +93,8 @@ fn a_sharded_stiffness_study_merges_to_the_unsharded_outputs() {
         .unwrap()
         .replace("step = 20.0 }", "step = 100.0 }")
         .replace("validation = [4, 14, 24, 34, 44]", "validation = [2, 8]")
+        // RK4 at 4 ms: the shards must give the unsharded bytes at any step.
+        .replace("step = 0.001", "step = 0.004")
         .replace("../tyres/", &format!("{}/tyres/", root().display()));
     let dir = scratch(&[("study.toml", &text)]);
     sharded_equals_unsharded("study", &dir.path().join("study.toml"));

@@ -16,18 +16,12 @@ const ALIGNING_RISE: f64 = 0.1;
 
 #[test]
 fn pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine() {
-    let Some(rig) = shared_data(
-        "pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine",
-        "tyre_ttc_hoosier_43075/cornering.csv",
-    ) else {
+    let Some(fit) = hoosier_pac89("pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine")
+    else {
         return;
     };
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("h.toml");
-    let o = identify_to(&rig, "pac89", &out);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout).into_owned();
-    let file = fs::read_to_string(&out).unwrap();
+    let (text, out) = (&fit.stdout, &fit.tyre);
+    let file = fs::read_to_string(out).unwrap();
     let report = read_json(&out.with_extension("report.json"));
     let held: Vec<&serde_json::Value> = report["held"]
         .as_array()

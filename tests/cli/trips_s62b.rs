@@ -31,6 +31,12 @@ fn design_recommends_no_manoeuvre_within_its_uncertainty_and_ranks_the_diagnosis
             "1",
         ],
     );
+    // The pair the full library confounds here, fitted alone: the design
+    // reads only the candidates of the confounded set.
+    let vehicle = c.join("vehicle.toml");
+    let text = fs::read_to_string(&vehicle).unwrap();
+    let pair = "effects = [\"steering_compliance\", \"cornering_stiffness\"]\n";
+    fs::write(&vehicle, format!("{text}{pair}")).unwrap();
     let d = dir.path().join("d");
     let (_, diagnosis) = diagnose_to(&c, &d);
     let confounded = diagnosis["confounded"][0]["effects"].to_string();

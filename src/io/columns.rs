@@ -119,34 +119,46 @@ const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
 
 /// The header column that likely means the missing `name`: one that is no
 /// known column and a slip of spelling away from it (`yawrate`, `Yaw_Rate`,
-/// [`crate::format::nearest_name`]), or the time under a long name.
+/// [`crate::format::nearest_name`]), or the time under a long name; of
+/// several, the nearest (the first of equals): in a capitalised header
+/// `Speed` is two edits from `steer`, and was named for it where `Steer`
+/// stood after it.
 fn meant(
     name: &str,
     headers: &csv::StringRecord,
     required: &[&str],
     optional: &[&str],
 ) -> Option<String> {
+    let time = |h: &str| name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str());
     headers
         .iter()
         .filter(|h| !required.contains(h) && !optional.contains(h))
-        .find(|h| {
-            crate::format::nearest_name(h, &[name]).is_some()
-                || (name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str()))
+        .filter(|h| crate::format::nearest_name(h, &[name]).is_some() || time(h))
+        .min_by_key(|h| match time(h) {
+            true => 0,
+            false => crate::format::edit_distance(h, name),
         })
         .map(str::to_string)
 }
 
+/// A header column that reads as a slip of spelling of an optional column
+/// the file lacks (`presure` for `pressure`, `bta` for `beta`): a reader
+/// refuses it ([`read_columns_with_bad_cells`]) or returns it for its job
+/// to say ([`read_columns_with_slips`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Slip {
+    /// The header's column.
+    pub found: String,
+    /// The optional column it likely means.
+    pub meant: String,
+    /// Its 1-based position in the header.
+    pub column: usize,
+}
+
 /// The header columns that read as slips of an `optional` column the file
-/// lacks (`presure` for `pressure`, `Camber` for `camber`), each refused
-/// at its place in the header (line `line`); columns in `known` (the
-/// reader's others) are never taken for one.
-fn misspelled(
-    path: &Path,
-    header: &[String],
-    line: usize,
-    optional: &[&str],
-    known: &[&str],
-) -> Vec<InputError> {
+/// lacks (`Camber` for `camber`); columns in `known` (the reader's
+/// others) are never taken for one.
+fn slips(header: &[String], optional: &[&str], known: &[&str]) -> Vec<Slip> {
     let absent: Vec<&str> = optional
         .iter()
         .copied()
@@ -158,20 +170,31 @@ fn misspelled(
         .filter(|(_, h)| !known.contains(&h.as_str()) && !optional.contains(&h.as_str()))
         .filter_map(|(i, h)| {
             let meant = crate::format::nearest_name(h, &absent)?;
-            let problem = InputProblem::Misspelled {
+            Some(Slip {
                 found: h.clone(),
-                meant: meant.into(),
-            };
-            Some(InputError::problem_at(path, line, i + 1, problem))
+                meant: meant.to_string(),
+                column: i + 1,
+            })
         })
         .collect()
 }
 
+/// The refusal of `slip`, at its place in the header (line `line`).
+fn refusal(path: &Path, line: usize, slip: Slip) -> InputError {
+    let problem = InputProblem::Misspelled {
+        found: slip.found,
+        meant: slip.meant.into(),
+    };
+    InputError::problem_at(path, line, slip.column, problem)
+}
+
 /// How a reader takes a CSV file's columns: those it needs, those it
 /// reads where given, and (`Some`) the file's other columns it reads
-/// elsewhere, which turns on the refusal of a header column that is a
-/// slip of spelling from an optional one the file lacks (`None`: a file's
-/// other columns are ignored unseen, as `FORMATS.md` allows a log's).
+/// elsewhere, which turns on the check of a header column that is a slip
+/// of spelling from an optional one the file lacks, refused
+/// ([`read_columns_with_bad_cells`]) or returned to be warned of
+/// ([`read_columns_with_slips`]); `None`: a file's other columns are
+/// ignored unseen, as `FORMATS.md` allows a log's.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Layout<'a> {
     /// Columns every file must have.
@@ -213,6 +236,32 @@ pub(crate) fn read_columns_with_bad_cells(
     path: &Path,
     layout: Layout,
 ) -> Result<(Columns, Vec<InputError>), InputError> {
+    read_layout(path, layout, true).map(|(columns, bad, _)| (columns, bad))
+}
+
+/// [`read_columns`] by a [`Layout`] whose header slips are warned of
+/// rather than refused: a file whose other columns may be its own (a
+/// vehicle run, `FORMATS.md`) is read, and the slips returned for the job
+/// to say with what it goes without. They play no part in a refusal.
+pub(crate) fn read_columns_with_slips(
+    path: &Path,
+    layout: Layout,
+) -> Result<(Columns, Vec<Slip>), InputError> {
+    let (columns, bad, slips) = read_layout(path, layout, false)?;
+    match InputError::all_of(path, bad) {
+        Some(e) => Err(e),
+        None => Ok((columns, slips)),
+    }
+}
+
+/// The reading behind [`read_columns_with_bad_cells`] (`refuse_slips`:
+/// the slips among the refusals) and [`read_columns_with_slips`] (the
+/// slips returned apart).
+fn read_layout(
+    path: &Path,
+    layout: Layout,
+    refuse_slips: bool,
+) -> Result<(Columns, Vec<InputError>, Vec<Slip>), InputError> {
     let Layout {
         required,
         optional,
@@ -293,17 +342,27 @@ pub(crate) fn read_columns_with_bad_cells(
             _ => None,
         })
         .collect();
-    let mut bad: Vec<InputError> = also_read.map_or_else(Vec::new, |also| {
+    let mut slipped: Vec<Slip> = also_read.map_or_else(Vec::new, |also| {
         let known: Vec<&str> = required
             .iter()
             .chain(also)
             .copied()
             .chain(taken.iter().map(String::as_str))
             .collect();
-        misspelled(path, &out.header, out.header_line, optional, &known)
+        slips(&out.header, optional, &known)
     });
+    let mut bad: Vec<InputError> = Vec::new();
+    if refuse_slips {
+        let line = out.header_line;
+        bad.extend(slipped.drain(..).map(|s| refusal(path, line, s)));
+    }
     if !missing.is_empty() {
         missing.append(&mut bad);
+        // A file refused for its header says every column to rename in
+        // that one run, the slips a reader would only have warned of too
+        // (`ay [m/s^2]` beside `t [s]`).
+        let line = out.header_line;
+        missing.extend(slipped.iter().cloned().map(|s| refusal(path, line, s)));
         if let Some(e) = InputError::all_in_file_order(path, missing) {
             return Err(e);
         }
@@ -374,5 +433,5 @@ pub(crate) fn read_columns_with_bad_cells(
             path: path.to_path_buf(),
         });
     }
-    Ok((out, bad))
+    Ok((out, bad, slipped))
 }

@@ -23,11 +23,11 @@ pub mod tir;
 mod toml_file;
 
 pub use crate::measured::MeasuredRun;
-pub use columns::{read_columns, Columns};
+pub use columns::{read_columns, Columns, Slip};
 pub(crate) use columns::{read_columns_with_bad_cells, Layout};
 pub use run::{
     read_run, read_run_declared, read_run_reading, read_run_with, AbsentColumn, AngleColumn,
-    DeclaredBy, OPTIONAL_CHANNELS,
+    DeclaredBy, RunHeader, OPTIONAL_CHANNELS,
 };
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub use tables::load_tyre_with_ranges;

@@ -4,7 +4,7 @@
 //! degrees, a yaw rate in deg/s, `ay` in g or ft/s², a speed in km/h) is refused at its
 //! column ([`super::run_units`]).
 
-use super::columns::read_columns;
+use super::columns::{read_columns_with_slips, Layout, Slip};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
     check_time_step, check_yaw_rate,
@@ -129,15 +129,27 @@ pub fn read_run_declared(
     .map(|(run, _, absent)| (run, absent))
 }
 
+/// What a run's header holds beside the channels read, for a job to say.
+#[derive(Debug, Clone, Default)]
+pub struct RunHeader {
+    /// The optional channels the file has and the job does not read.
+    pub unread: Vec<&'static str>,
+    /// The header's columns that are slips of spelling of an optional
+    /// channel read and absent (`bta` for `beta`): a run may carry
+    /// columns of its own (`FORMATS.md`), so they are not refused.
+    pub slips: Vec<Slip>,
+}
+
 /// [`read_run_with`] reading of the optional channels only `optional` (a
 /// job that uses no more): the others are neither read nor checked, and
-/// are returned by name where the file has them, for the job to say.
+/// are returned by name where the file has them, with the header's slips,
+/// for the job to say.
 pub fn read_run_reading(
     path: &Path,
     declared_by: (&[AngleColumn], DeclaredBy),
     optional: &[&str],
-) -> Result<(MeasuredRun, Vec<&'static str>), InputError> {
-    read_run_lacking(path, declared_by, optional, false).map(|(run, unread, _)| (run, unread))
+) -> Result<(MeasuredRun, RunHeader), InputError> {
+    read_run_lacking(path, declared_by, optional, false).map(|(run, header, _)| (run, header))
 }
 
 /// [`read_run_reading`], with a declared column the file lacks refused
@@ -147,8 +159,18 @@ fn read_run_lacking(
     (degrees, by): (&[AngleColumn], DeclaredBy),
     optional: &[&str],
     lacking: bool,
-) -> Result<(MeasuredRun, Vec<&'static str>, Vec<AbsentColumn>), InputError> {
-    let mut c = read_columns(path, &["t", "speed", "steer", "yaw_rate"], optional)?;
+) -> Result<(MeasuredRun, RunHeader, Vec<AbsentColumn>), InputError> {
+    // The channels not read are known names all the same, never slips.
+    let others: Vec<&str> = OPTIONAL_CHANNELS
+        .into_iter()
+        .filter(|n| !optional.contains(n))
+        .collect();
+    let layout = Layout {
+        required: &["t", "speed", "steer", "yaw_rate"],
+        optional,
+        also_read: Some(&others),
+    };
+    let (mut c, slips) = read_columns_with_slips(path, layout)?;
     // A column named twice is converted once: it is in degrees or not.
     let mut declared: Vec<AngleColumn> = Vec::new();
     for a in degrees {
@@ -264,7 +286,7 @@ fn read_run_lacking(
         ax: c.take_optional("ax"),
         masked: Vec::new(),
     };
-    Ok((run, unread, absent))
+    Ok((run, RunHeader { unread, slips }, absent))
 }
 
 #[cfg(test)]

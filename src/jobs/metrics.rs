@@ -3,13 +3,15 @@
 //! `simulate` prints too.
 
 use crate::error::{Error, ParamError};
-use crate::io::{read_run_reading, AngleColumn, DeclaredBy};
+use crate::io::{read_run_reading, AngleColumn, DeclaredBy, Slip};
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{measured_step_metrics, AY_METRICS, NO_AY};
+use crate::metrics::measured::{measured_step_metrics, MeasuredMetrics, AY_METRICS, NO_AY};
 use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
+
+mod steps;
 
 /// The units of the metric reports.
 pub const UNITS: &str = "SI and rad; times in s; yaw_rate_gain in 1/s; yaw_rate_overshoot, \
@@ -72,12 +74,18 @@ pub fn run_with_degrees(
 ) -> Result<MeasuredMetricsReport, Error> {
     settings.validate()?;
     ParamError::finite("min_speed", min_speed)?;
-    let (mut run, unread_columns) =
+    let (mut run, header) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
-    let slips = slips_of_spelling(path, &run);
     let mut dead = leave_out_dead_channels(&mut run)?;
-    dead.extend(slips);
-    let mut m = measured_step_metrics(run.clone(), min_speed, settings)?;
+    dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
+    let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
+        Ok(m) => (run, m),
+        Err(e) => {
+            let (run, m, said) = first_of_several(run, min_speed, settings).ok_or(e)?;
+            dead.push(said);
+            (run, m)
+        }
+    };
     // An `ay` that disagrees with u·r is measured again without it.
     if let Some(w) = m.ay_disagreement() {
         run.ay = None;
@@ -116,49 +124,54 @@ pub fn run_with_degrees(
         steer_rise_time: m.steer_rise_time,
         warnings: m.warnings,
         cleaning: m.cleaning,
-        unread_columns,
+        unread_columns: header.unread,
         t_start: m.t_start,
         t_end: m.t_end,
     })
 }
 
-/// The warnings of header columns of `path` that are slips of spelling of
-/// a channel the metrics read and `run` lacks (`bta` for `beta`): a run
-/// may carry columns of its own (FORMATS.md), so they are said, not
-/// refused, with what the run goes without.
-fn slips_of_spelling(path: &Path, run: &MeasuredRun) -> Vec<String> {
-    let absent: Vec<&str> = [("ay", run.ay.is_none()), ("beta", run.beta.is_none())]
-        .into_iter()
-        .filter(|(_, absent)| *absent)
-        .map(|(c, _)| c)
-        .collect();
-    // The header line only: the run was read whole already, and a long
-    // log need not be read again for its first line.
-    use std::io::BufRead;
-    let Ok(file) = std::fs::File::open(path) else {
-        return Vec::new();
+/// The first step of a run that holds several ([`steps::several_steps`]),
+/// measured on the run cut before the second, with the warning that says
+/// so: the whole run's windows read the steer back at its start as no step
+/// (or two steps as a slow ramp), and refused it with a reason that does
+/// not match what the user logged. `None` where the run is no such run or
+/// its first step cannot be measured either (the whole run's refusal
+/// stands).
+fn first_of_several(
+    run: MeasuredRun,
+    min_speed: f64,
+    settings: &MetricSettings,
+) -> Option<(MeasuredRun, MeasuredMetrics, String)> {
+    let (at, cut) = steps::several_steps(&run)?;
+    let first = crate::measured::clean::slice(&run, 0, cut, "");
+    let m = measured_step_metrics(first.clone(), min_speed, settings).ok()?;
+    let times: Vec<String> = at.iter().map(|t| format!("{t:.2} s")).collect();
+    let said = format!(
+        "{}: the run holds {} steer steps (at {}): the first is measured, on the run up to {:.2} s, before the second; cut the log into one run per step to measure the others",
+        run.path.display(),
+        at.len(),
+        times.join(", "),
+        first.t[first.t.len() - 1]
+    );
+    Some((first, m, said))
+}
+
+/// The warning of a header column of `path` that is a slip of spelling
+/// of a channel the metrics read and the run lacks (`bta` for `beta`,
+/// found by the run's reader): a run may carry columns of its own
+/// (FORMATS.md), so it is said, not refused, with what the run goes
+/// without.
+fn slip_warning(path: &Path, slip: &Slip) -> String {
+    let (found, meant) = (&slip.found, &slip.meant);
+    let metrics = if meant == "beta" {
+        "steady sideslip and TB"
+    } else {
+        AY_METRICS
     };
-    let Some(header) = std::io::BufReader::new(file)
-        .lines()
-        .map_while(Result::ok)
-        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-    else {
-        return Vec::new();
-    };
-    let known = ["t", "speed", "steer", "yaw_rate"];
-    header
-        .split(',')
-        .map(str::trim)
-        .filter(|h| !known.contains(h) && !crate::io::OPTIONAL_CHANNELS.contains(h))
-        .filter_map(|h| {
-            let meant = crate::format::nearest_name(h, &absent)?;
-            let metrics = if meant == "beta" { "steady sideslip and TB" } else { AY_METRICS };
-            Some(format!(
-                "{}: column `{h}` is not one a run has: did you mean `{meant}`? It is not read, and the metrics of `{meant}` ({metrics}) are left out (null in --json); rename it",
-                path.display()
-            ))
-        })
-        .collect()
+    format!(
+        "{}: column `{found}` is not one a run has: did you mean `{meant}`? It is not read, and the metrics of `{meant}` ({metrics}) are left out (null in --json); rename it",
+        path.display()
+    )
 }
 
 /// Refuses a run whose yaw rate is dead ([`MeasuredRun::dead_channels`],

@@ -343,6 +343,7 @@ mod trips_s66;
 mod trips_s67;
 mod trips_s68;
 mod trips_s68_holds;
+mod trips_s69_metrics;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;
@@ -412,4 +413,19 @@ pub(crate) fn verdict_of(d: &serde_json::Value) -> Vec<String> {
         .iter()
         .map(|e| e.as_str().unwrap().to_string())
         .collect()
+}
+
+/// Runs `metrics <run> --json`, which must succeed: its report and the
+/// report's warnings.
+pub(crate) fn metrics_json(run_csv: &Path) -> (serde_json::Value, Vec<String>) {
+    let o = run(&["metrics", run_csv.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let warnings = j["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w.as_str().unwrap().to_string())
+        .collect();
+    (j, warnings)
 }

@@ -165,15 +165,7 @@ fn identify_and_tyre_eval_refuse_a_misspelled_column_they_would_have_ignored() {
 /// `E_r` and the yaw-rate noise of `metrics --json` on `run`, and its
 /// warnings.
 fn yaw_variance(run_path: &Path) -> (f64, f64, Vec<String>) {
-    let o = run(&["metrics", run_path.to_str().unwrap(), "--json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let warnings = j["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w.as_str().unwrap().to_string())
-        .collect();
+    let (j, warnings) = metrics_json(run_path);
     let number = |k: &str| j[k].as_f64().unwrap();
     (
         number("yaw_rate_total_variance"),

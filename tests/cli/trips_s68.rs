@@ -8,15 +8,7 @@ use super::*;
 /// The peak time and its stated spread of `metrics --json` on `path`, and
 /// the warnings.
 fn peak_of(path: &Path) -> (Option<f64>, Option<f64>, Vec<String>) {
-    let o = run(&["metrics", path.to_str().unwrap(), "--json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let warnings = j["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w.as_str().unwrap().to_string())
-        .collect();
+    let (j, warnings) = metrics_json(path);
     (
         j["yaw_rate_peak_time"].as_f64(),
         j["yaw_rate_peak_time_spread"].as_f64(),

@@ -1,0 +1,154 @@
+//! `metrics` on run files laid out as real loggers write them: a step and
+//! its return in one log, a header with units in brackets, a capitalised
+//! header, a byte-order mark and CRLF line endings.
+
+use super::*;
+
+/// The sedan's step (1° at 1.0–1.1 s, to 6 s) at 100 Hz: t, speed,
+/// steer, yaw_rate and ay of each row.
+fn sedan_rows(dir: &Path) -> Vec<[f64; 5]> {
+    let sedan = super::trips_s66::Sedan::simulated(dir);
+    let at = |k: &str| sedan.header.iter().position(|h| h == k).unwrap();
+    let cols = [at("t"), at("speed"), at("steer"), at("yaw_rate"), at("ay")];
+    sedan
+        .rows
+        .iter()
+        .step_by(10)
+        .map(|row| cols.map(|c| row[c]))
+        .collect()
+}
+
+/// `rows` as a run file: `header` and `end` (the line ending) as given.
+fn run_text(header: &str, rows: &[[f64; 5]], end: &str) -> String {
+    let mut text = format!("{header}{end}");
+    for r in rows {
+        let cells: Vec<String> = r.iter().map(f64::to_string).collect();
+        text += &format!("{}{end}", cells.join(","));
+    }
+    text
+}
+
+const HEADER: &str = "t,speed,steer,yaw_rate,ay";
+
+/// A log of a step and, 6 s on, the step back (or a second step on top)
+/// was refused as holding "no steer step: the steer stays at 0 rad" (the
+/// initial and steady windows both at rest) or as a 6 s "ramp steer": the
+/// first step is now measured, on the run cut before the second, as the
+/// step alone measures, and the warning says the run holds two steps and
+/// where.
+#[test]
+fn a_run_holding_a_step_and_its_return_measures_its_first_step_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let alone = dir.path().join("alone.csv");
+    fs::write(&alone, run_text(HEADER, &rows, "\n")).unwrap();
+    let (one, said) = metrics_json(&alone);
+    assert!(!said.iter().any(|w| w.contains("steer steps")), "{said:?}");
+    let last = *rows.last().unwrap();
+    for (name, sign) in [("back.csv", -1.0), ("again.csv", 1.0)] {
+        let second = rows.iter().map(|r| {
+            let mut s = *r;
+            s[0] += last[0] + 0.01;
+            for k in 2..5 {
+                s[k] = last[k] + sign * r[k];
+            }
+            s
+        });
+        let both: Vec<[f64; 5]> = rows.iter().copied().chain(second).collect();
+        let path = dir.path().join(name);
+        fs::write(&path, run_text(HEADER, &both, "\n")).unwrap();
+        let (j, said) = metrics_json(&path);
+        assert!(
+            said.iter().any(
+                |w| w.contains("the run holds 2 steer steps (at 1.05 s, 7.0")
+                    && w.contains("the first is measured")
+            ),
+            "{name}: {said:?}"
+        );
+        for k in [
+            "yaw_rate_response_time",
+            "yaw_rate_gain",
+            "ay_response_time",
+        ] {
+            let (a, b) = (j[k].as_f64().unwrap(), one[k].as_f64().unwrap());
+            assert!(
+                (a - b).abs() < 1e-3 * b.abs(),
+                "{name} {k}: {a} against {b}"
+            );
+        }
+    }
+}
+
+/// A header with each column's unit in brackets was refused for its four
+/// required columns, and once those were renamed the run was measured
+/// without its `ay [m/s^2]` (warned): every column to rename is now said
+/// in the one refusal.
+#[test]
+fn a_header_with_units_in_brackets_is_refused_naming_every_column_to_rename() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let header = "t [s],speed [m/s],steer [rad],yaw_rate [rad/s],ay [m/s^2]";
+    let path = dir.path().join("units.csv");
+    fs::write(&path, run_text(header, &rows, "\n")).unwrap();
+    let o = run(&["metrics", path.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(e.contains("units.csv: 5 places refused"), "{e}");
+    for (found, meant) in [("t [s]", "t"), ("yaw_rate [rad/s]", "yaw_rate")] {
+        assert!(
+            e.contains(&format!("header column `{found}`: did you mean `{meant}`?")),
+            "{e}"
+        );
+    }
+    assert!(
+        e.contains(
+            "units.csv:1:5: column `ay [m/s^2]` is not one this command reads: did you mean `ay`?"
+        ),
+        "{e}"
+    );
+}
+
+/// In a capitalised header (`T,Speed,Steer,Yaw_Rate`) the missing `steer`
+/// was said to be meant by `Speed`, two edits from it, the first close
+/// column: each missing column now names its nearest.
+#[test]
+fn a_capitalised_header_names_the_nearest_column_for_each_missing_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let path = dir.path().join("caps.csv");
+    fs::write(&path, run_text("T,Speed,Steer,Yaw_Rate,Ay", &rows, "\n")).unwrap();
+    let o = run(&["metrics", path.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("missing required column `steer` (the header has: T, Speed, Steer, Yaw_Rate, Ay); header column `Steer`: did you mean `steer`?"),
+        "{e}"
+    );
+    assert!(!e.contains("`Speed`: did you mean `steer`"), "{e}");
+    assert!(
+        e.contains("column `Ay` is not one this command reads: did you mean `ay`?"),
+        "{e}"
+    );
+}
+
+/// A spreadsheet's export (a byte-order mark, CRLF line endings) is read
+/// as the plain file: the same metrics, no column lost to the mark.
+#[test]
+fn a_run_with_a_byte_order_mark_and_crlf_endings_measures_as_the_plain_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let plain = dir.path().join("plain.csv");
+    fs::write(&plain, run_text(HEADER, &rows, "\n")).unwrap();
+    let exported = dir.path().join("exported.csv");
+    fs::write(
+        &exported,
+        format!("\u{feff}{}", run_text(HEADER, &rows, "\r\n")),
+    )
+    .unwrap();
+    let (a, _) = metrics_json(&plain);
+    let (b, said) = metrics_json(&exported);
+    assert!(!said.iter().any(|w| w.contains("did you mean")), "{said:?}");
+    for k in ["yaw_rate_response_time", "yaw_rate_peak_time", "er"] {
+        assert_eq!(a[k], b[k], "{k}");
+    }
+}

@@ -189,7 +189,7 @@ pub enum InputProblem {
         detail: String,
     },
     /// A time that does not follow the previous one.
-    #[error("column `t`: {} does not follow {} (time must be strictly increasing)", Num(*value), Num(*previous))]
+    #[error("column `t`: {} does not follow {} (time must be strictly increasing{})", Num(*value), Num(*previous), if value < previous { ": the clock goes back, as where a logger starts a new recording in the same file; split the file at this line into two runs" } else { ": a time repeated, a row logged twice?" })]
     TimeNotIncreasing {
         /// The time, s.
         value: f64,
@@ -427,7 +427,7 @@ pub enum InputProblem {
     },
     /// A steer far larger than the yaw rate it gives: in degrees, or a
     /// steering-wheel angle.
-    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's)", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
+    #[error("the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples{}): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians (a steer in degrees makes it 57× smaller on a neutral car, more on an understeering one, less where the wheelbase taken is longer than the car's); a column in degrees is declared so: `metrics --degrees steer`, or `degrees = [\"steer\"]` under a campaign's [runs]", if *median > 0.0 { format!("{}× smaller", crate::format::readable(1.0 / median, 2)) } else { "far smaller".into() }, assumed_wheelbase.map_or(String::new(), |l| format!(", with l = {} m, longer than any car's wheelbase", Num(l))))]
     SteerAboveYaw {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,

@@ -152,3 +152,42 @@ fn a_run_with_a_byte_order_mark_and_crlf_endings_measures_as_the_plain_run() {
         assert_eq!(a[k], b[k], "{k}");
     }
 }
+
+/// A logger that starts a new recording in the same file sets its clock
+/// back: refused at the line, with what happened and what to do (split
+/// the file there), not only "time must be strictly increasing"; a steer
+/// logged in degrees is refused with how to declare it.
+#[test]
+fn a_clock_that_restarts_and_a_steer_in_degrees_say_what_to_do() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let again: Vec<[f64; 5]> = rows.iter().chain(rows.iter()).copied().collect();
+    let twice = dir.path().join("twice.csv");
+    fs::write(&twice, run_text(HEADER, &again, "\n")).unwrap();
+    let o = run(&["metrics", twice.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    // The second recording's first row is line 2 + the first's rows.
+    assert!(e.contains(&format!("twice.csv:{}:", rows.len() + 2)), "{e}");
+    assert!(
+        e.contains("the clock goes back, as where a logger starts a new recording in the same file; split the file at this line into two runs"),
+        "{e}"
+    );
+    let degrees: Vec<[f64; 5]> = rows
+        .iter()
+        .map(|r| {
+            let mut d = *r;
+            d[2] = d[2].to_degrees();
+            d
+        })
+        .collect();
+    let small = dir.path().join("small.csv");
+    fs::write(&small, run_text(HEADER, &degrees, "\n")).unwrap();
+    let o = run(&["metrics", small.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(
+        e.contains("a column in degrees is declared so: `metrics --degrees steer`, or `degrees = [\"steer\"]` under a campaign's [runs]"),
+        "{e}"
+    );
+}

@@ -31,6 +31,10 @@ pub enum CellProblem {
     NotANumber,
     /// It is NaN or infinite.
     NotFinite,
+    /// The first row under the header holds no number in any column
+    /// read (the cell is the row's cells, joined): a row of units, as
+    /// loggers and spreadsheets write one.
+    UnitsRow,
     /// It holds a byte that is not UTF-8 (a file saved as Latin-1).
     NotUtf8 {
         /// The first such byte.
@@ -44,6 +48,7 @@ impl CellProblem {
             CellProblem::NotANumber if cell.is_empty() => "empty cell: a number is needed".into(),
             CellProblem::NotANumber => format!("`{cell}` is not a number"),
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
+            CellProblem::UnitsRow => format!("no cell of this row is a number (`{cell}`): a row of units under the header? Delete it: the columns hold numbers in the units FORMATS.md gives them"),
             CellProblem::NotUtf8 { byte } => InputProblem::NotUtf8 { byte }.to_string(),
         }
     }

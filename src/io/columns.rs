@@ -356,6 +356,12 @@ fn read_layout(
         let line = out.header_line;
         bad.extend(slipped.drain(..).map(|s| refusal(path, line, s)));
     }
+    // A header of one column holding `;` or tabs is one problem, said once
+    // (the first missing column's refusal carries what to do), not once
+    // per column it hides.
+    if headers.len() == 1 && headers[0].contains([';', '\t']) {
+        missing.truncate(1);
+    }
     if !missing.is_empty() {
         missing.append(&mut bad);
         // A file refused for its header says every column to rename in
@@ -401,6 +407,16 @@ fn read_layout(
             }
         })?;
         let line = line_at(rec.position());
+        if out.lines.is_empty() {
+            if let Some(e) = units_row(path, line, &rec, &wanted) {
+                bad.push(e);
+                for (_, name) in &wanted {
+                    out.data.get_mut(name).expect("inserted above").push(f64::NAN);
+                }
+                out.lines.push(line);
+                continue;
+            }
+        }
         for (idx, name) in &wanted {
             let cell = rec.get(*idx).unwrap_or("");
             let at = |problem| InputError::Cell {
@@ -434,4 +450,31 @@ fn read_layout(
         });
     }
     Ok((out, bad, slipped))
+}
+
+/// The first row under the header read as a row of units (`s, m/s, rad`):
+/// no cell read is empty or a number, and there are two or more; one
+/// refusal for the row, not one per cell.
+fn units_row(
+    path: &Path,
+    line: usize,
+    rec: &csv::StringRecord,
+    wanted: &[(usize, String)],
+) -> Option<InputError> {
+    let cells: Vec<&str> = wanted
+        .iter()
+        .map(|(i, _)| rec.get(*i).unwrap_or("").trim())
+        .collect();
+    let words = cells.len() >= 2
+        && cells
+            .iter()
+            .all(|c| !c.is_empty() && c.parse::<f64>().is_err());
+    words.then(|| InputError::Cell {
+        path: path.to_path_buf(),
+        line,
+        column: wanted[0].0 + 1,
+        name: wanted[0].1.clone(),
+        cell: cells.join(", "),
+        problem: CellProblem::UnitsRow,
+    })
 }

@@ -411,7 +411,10 @@ fn read_layout(
             if let Some(e) = units_row(path, line, &rec, &wanted) {
                 bad.push(e);
                 for (_, name) in &wanted {
-                    out.data.get_mut(name).expect("inserted above").push(f64::NAN);
+                    out.data
+                        .get_mut(name)
+                        .expect("inserted above")
+                        .push(f64::NAN);
                 }
                 out.lines.push(line);
                 continue;

@@ -212,11 +212,16 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     }
     // Spreads of the normalised responses in the steady window, about the
     // mean (a second pass: E[x²] − m² would cancel to rounding).
-    let [vr, va] = integrate(rec, steady.0, steady.1, |_, x| {
-        [(x.yaw_rate - rs).powi(2), (x.ay - as_).powi(2)]
+    let [vr, va, vb] = integrate(rec, steady.0, steady.1, |_, x| {
+        [
+            (x.yaw_rate - rs).powi(2),
+            (x.ay - as_).powi(2),
+            (x.beta - bs).powi(2),
+        ]
     });
     let r_spread = (vr / s.steady_window).sqrt() / r_step.abs();
     let a_spread = (va / s.steady_window).sqrt() / a_step.abs();
+    let b_spread = (vb / s.steady_window).sqrt() / super::sideslip_scale(bs - b0, d_step);
     let dn = |x: &Sample| (x.steer - d0) / d_step;
     let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
     let an = |x: &Sample| (x.ay - a0) / a_step;
@@ -260,7 +265,9 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_total_variance: e_r,
         ay_total_variance: Some(e_ay),
         er: Some(s.e1 * e_r + s.e2 * e_ay),
-        settled: r_spread < super::SETTLED_SPREAD && a_spread < super::SETTLED_SPREAD,
+        settled: [r_spread, a_spread, b_spread]
+            .iter()
+            .all(|&spread| spread < super::SETTLED_SPREAD),
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: threshold * 100.0,
         // Unfiltered: no ringing of a filter.

@@ -252,7 +252,7 @@ impl StepMetrics {
     pub fn settling_warning(&self) -> Option<String> {
         (!self.settled).then(|| {
             format!(
-                "the response has not settled in the steady window (it spreads by more than {} % of the step beyond its noise)",
+                "the response has not settled in the steady window (the yaw rate, lateral acceleration or sideslip spreads by more than {} % of its step beyond its noise: a car sliding at its grip limit holds its yaw rate and lateral acceleration while its sideslip grows)",
                 crate::error::Num(100.0 * SETTLED_SPREAD)
             )
         })
@@ -360,6 +360,16 @@ fn normalise(
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
 const SETTLED_SPREAD: f64 = 0.02;
+
+/// The scale a sideslip's spread is judged on, rad: its step `beta_step`,
+/// or the steer step `steer_step` where that is larger (a sideslip that
+/// barely changes, near the speed where it changes sign, is not judged
+/// against its own near-zero step). A car sliding at its grip limit keeps
+/// its yaw rate and lateral acceleration while its sideslip grows: only
+/// the sideslip shows that it has not settled.
+fn sideslip_scale(beta_step: f64, steer_step: f64) -> f64 {
+    beta_step.abs().max(steer_step.abs())
+}
 
 /// Whether a response whose steady window spreads by `spread` (relative to
 /// the step) has settled, given the white noise `noise` left in it after
@@ -508,9 +518,17 @@ pub(crate) fn step_metrics(
     let peak_at = peak::peak_index(t, v, tr, level);
     let peak_time = peak_at.map(|i| t[i] - t0);
     let spread = peak_at.and(peak::peak_spread(t, v, (tr, level), r.noise, &filtered));
-    let beta_steady = beta
+    let beta_n = beta
         .zip(beta_f.as_deref())
-        .map(|(raw, b)| normalise(t, raw, b, s, "sideslip").map_or(0.0, |nb| nb.steady));
+        .map(|(raw, b)| normalise(t, raw, b, s, "sideslip").ok());
+    let beta_steady = beta_n
+        .as_ref()
+        .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
+    // The sideslip's spread and noise on the scale of [`sideslip_scale`].
+    let beta_settled = beta_n.flatten().is_none_or(|nb| {
+        let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, d.steady);
+        settled(nb.spread * to_scale, gain * nb.noise * to_scale)
+    });
     let tb = match (peak_time, beta_steady) {
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,
@@ -536,7 +554,8 @@ pub(crate) fn step_metrics(
         ay_total_variance: e_ay,
         er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
         settled: settled(r.spread, r_noise)
-            && a.as_ref().is_none_or(|a| settled(a.spread, gain * a.noise)),
+            && a.as_ref().is_none_or(|a| settled(a.spread, gain * a.noise))
+            && beta_settled,
         yaw_rate_noise: r_noise,
         yaw_rate_peak_threshold: threshold * 100.0,
         yaw_rate_filter_ringing: ringing * 100.0,

@@ -1,0 +1,43 @@
+//! What a user still tripped on: a car sliding at its grip limit holds
+//! its yaw rate and lateral acceleration while its sideslip keeps
+//! growing, and `simulate` gave it clean step-steer metrics, `settled`
+//! true and no warning.
+
+use super::*;
+
+/// `simulate` of the bundled sedan step on a road of the given friction:
+/// the terminal and `metrics.json`.
+fn sedan_on(friction: Option<f64>) -> (String, serde_json::Value) {
+    let mut text = bundled_scenario("sedan_step.toml");
+    if let Some(mu) = friction {
+        text += &format!("\n[road]\nfriction = {mu}\n");
+    }
+    let dir = scratch(&[("scenario.toml", &text)]);
+    let out = dir.path().join("out");
+    let said = succeeds(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (said, read_json(&out.join("metrics.json")))
+}
+
+#[test]
+fn a_car_sliding_at_its_grip_limit_is_not_said_settled() {
+    const NOT_SETTLED: &str = "the response has not settled in the steady window";
+    let (said, m) = sedan_on(None);
+    assert_eq!(m["settled"], true, "{m}");
+    assert!(!said.contains(NOT_SETTLED), "{said}");
+    // At μ = 0.1 the lateral acceleration sits at μ·g and the sideslip
+    // grows by about 0.8° a second through the steady window.
+    let (said, m) = sedan_on(Some(0.1));
+    assert_eq!(m["settled"], false, "{m}");
+    let ay = m["ay_steady"].as_f64().unwrap();
+    assert!((ay.abs() - 0.1 * 9.80665).abs() < 0.05, "{m}");
+    let warned = said
+        .lines()
+        .find(|l| l.contains(NOT_SETTLED))
+        .unwrap_or_else(|| panic!("{said}"));
+    assert!(warned.contains("sideslip"), "{warned}");
+}

@@ -8,7 +8,7 @@
 //! reported and checked against ISO 7401, which asks for at most 0.15 s.
 //! Units: SI, rad, s.
 
-use super::step_shape::check_step_shape;
+use super::step_shape::{check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
@@ -320,7 +320,10 @@ fn crossing(t: &[f64], x: &[f64], level: f64, sign: f64, from: f64) -> Option<f6
 }
 
 /// The steer's 10–90 % rise: levels from the mean steer of the pre-input
-/// window (as the metrics take it) and the metrics' steer step.
+/// window (as the metrics take it) and the metrics' steer step; from the
+/// last crossing of 10 % before the first of 90 %, since a noisy steer
+/// crosses 10 % back and forth before the step (a sensor's noise of 3 %
+/// of the step read a 0.08 s ramp as 0.23 s from its first crossing).
 fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
     let pre: Vec<f64> = run
         .t
@@ -331,19 +334,11 @@ fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
         .collect();
     let base = pre.iter().sum::<f64>() / pre.len().max(1) as f64;
     let sign = m.steer_step.signum();
-    let at = |share: f64| {
-        crossing(
-            &run.t,
-            &run.steer,
-            base + share * m.steer_step,
-            sign,
-            run.t[0],
-        )
-    };
-    match (at(0.1), at(0.9)) {
-        (Some(a), Some(b)) if b >= a => b - a,
-        _ => f64::NAN,
-    }
+    let level = |share: f64| base + share * m.steer_step;
+    let rise = crossing(&run.t, &run.steer, level(0.9), sign, run.t[0]).and_then(|t90| {
+        last_crossing(&run.t, &run.steer, level(0.1), sign, t90).map(|t10| t90 - t10)
+    });
+    rise.unwrap_or(f64::NAN)
 }
 
 /// The warning of a run without `ay` (a dead `ay` left out says so itself,

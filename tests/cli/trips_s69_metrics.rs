@@ -191,3 +191,43 @@ fn a_clock_that_restarts_and_a_steer_in_degrees_say_what_to_do() {
         "{e}"
     );
 }
+
+/// A steer sensor's white noise of a few % of the step crossed 10 % of
+/// the step back and forth before it: the rise read 0.23 s for a 0.08 s
+/// ramp (3 % noise) with a warning that the response times include the
+/// ramp, and at 7.5 % the run was refused as starting too close to the
+/// step. The rise is now read from the last 10 % crossing before the
+/// first 90 % one, and a move within four of the filtered steer's noise
+/// deviations is not a move.
+#[test]
+fn a_noisy_steer_sensor_neither_lengthens_the_rise_nor_refuses_the_run() {
+    use rand::SeedableRng;
+    let dir = tempfile::tempdir().unwrap();
+    let rows = sedan_rows(dir.path());
+    let step = rows.last().unwrap()[2];
+    for (share, seed) in [(0.03, 1), (0.075, 2)] {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let noisy: Vec<[f64; 5]> = rows
+            .iter()
+            .map(|r| {
+                let mut n = *r;
+                n[2] += share * step * handling::identify::data::gauss(&mut rng);
+                n
+            })
+            .collect();
+        let path = dir.path().join(format!("noisy_{seed}.csv"));
+        fs::write(&path, run_text(HEADER, &noisy, "\n")).unwrap();
+        let o = run(&["metrics", path.to_str().unwrap()]);
+        let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
+        assert!(o.status.success(), "{share}: {said}");
+        let rise: f64 = said
+            .split("steer 10–90 % rise ")
+            .nth(1)
+            .and_then(|s| s.split(' ').next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| panic!("{said}"));
+        // The ramp lasts 0.1 s: 10–90 % of it is 0.08 s.
+        assert!((rise - 0.08).abs() < 0.01, "{share}: rise {rise}");
+        assert!(!said.contains("include the ramp"), "{said}");
+    }
+}

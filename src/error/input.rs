@@ -163,13 +163,16 @@ pub enum InputError {
     /// Several places of one file refused at once, in file order (built by
     /// [`InputError::all_of`]): a user mends them in one pass rather than
     /// one per run.
-    #[error("{path}: {} places refused, in file order:{}{}", errors.len() + more, errors.iter().map(|e| format!("\n  {e}")).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    #[error("{path}: {} places refused, in file order:{}{}", errors.iter().map(|e| e.1).sum::<usize>() + more, errors.iter().map(|(e, n)| format!("\n  {e}{}", alike(*n))).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
     Several {
         /// The file.
         path: PathBuf,
-        /// The first [`SEVERAL_SHOWN`] of them, each located.
-        errors: Vec<InputError>,
-        /// How many more there are.
+        /// The first place refused by each rule, in file order, with how
+        /// many places that rule refused (the first [`SEVERAL_SHOWN`]
+        /// rules): a column in degrees is one line, not a screenful of
+        /// lines alike.
+        errors: Vec<(InputError, usize)>,
+        /// How many places the rules not shown refused.
         more: usize,
     },
 }
@@ -207,8 +210,17 @@ impl InputError {
         if errors.len() < 2 {
             return errors.pop();
         }
-        let more = errors.len().saturating_sub(SEVERAL_SHOWN);
-        errors.truncate(SEVERAL_SHOWN);
+        // One line per rule, at its first place, in the order given.
+        let mut rules: Vec<(InputError, usize)> = Vec::new();
+        for e in errors {
+            match rules.iter_mut().find(|(r, _)| r.rule() == e.rule()) {
+                Some(r) => r.1 += 1,
+                None => rules.push((e, 1)),
+            }
+        }
+        let more = rules.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
+        rules.truncate(SEVERAL_SHOWN);
+        let errors = rules;
         Some(InputError::Several {
             path: path.to_path_buf(),
             errors,
@@ -260,8 +272,45 @@ impl InputError {
             InputError::Value { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,
-            InputError::Several { errors, .. } => errors.first().and_then(InputError::location),
+            InputError::Several { errors, .. } => errors.first().and_then(|e| e.0.location()),
             _ => None,
+        }
+    }
+}
+
+/// What a rule's first place adds when the rule refused `n` places.
+fn alike(n: usize) -> String {
+    match n {
+        1 => String::new(),
+        _ => format!(" (the first of {n} places refused alike)"),
+    }
+}
+
+/// The rule an error breaks, as [`InputError::all_of`] groups them: its
+/// kind (and its problem's or cell's) and its column; its value and line
+/// left out.
+#[derive(PartialEq)]
+struct Rule {
+    kind: std::mem::Discriminant<InputError>,
+    problem: Option<std::mem::Discriminant<InputProblem>>,
+    cell: Option<std::mem::Discriminant<CellProblem>>,
+    column: Option<usize>,
+}
+
+impl InputError {
+    /// The rule it breaks (see [`Rule`]).
+    fn rule(&self) -> Rule {
+        Rule {
+            kind: std::mem::discriminant(self),
+            problem: match self {
+                InputError::Invalid { problem, .. } => Some(std::mem::discriminant(&**problem)),
+                _ => None,
+            },
+            cell: match self {
+                InputError::Cell { problem, .. } => Some(std::mem::discriminant(problem)),
+                _ => None,
+            },
+            column: self.location().map(|l| l.column),
         }
     }
 }

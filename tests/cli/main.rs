@@ -314,6 +314,7 @@ mod trips_s66;
 mod trips_s67;
 mod trips_s68;
 mod trips_s68_holds;
+mod trips_s69_identify;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

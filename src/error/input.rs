@@ -167,10 +167,11 @@ pub enum InputError {
     Several {
         /// The file.
         path: PathBuf,
-        /// The first place refused by each rule, in file order, with how
-        /// many places that rule refused (the first [`SEVERAL_SHOWN`]
-        /// rules): a column in degrees is one line, not a screenful of
-        /// lines alike.
+        /// The places refused, in file order, each with how many places it
+        /// stands for: 1, or the count of a rule that refused more than
+        /// [`SAID_EACH`] places, listed at its first (the first
+        /// [`SEVERAL_SHOWN`] entries): a column in degrees is one line,
+        /// not a screenful of lines alike.
         errors: Vec<(InputError, usize)>,
         /// How many places the rules not shown refused.
         more: usize,
@@ -179,6 +180,10 @@ pub enum InputError {
 
 /// The places an [`InputError::Several`] lists before it counts the rest.
 pub const SEVERAL_SHOWN: usize = 20;
+
+/// The places of one rule an [`InputError::Several`] lists each; a rule
+/// that refuses more is listed once, at its first place, with its count.
+pub const SAID_EACH: usize = 3;
 
 impl InputError {
     /// A problem at line `line`, column `column` (1-based) of `path`.
@@ -210,17 +215,33 @@ impl InputError {
         if errors.len() < 2 {
             return errors.pop();
         }
-        // One line per rule, at its first place, in the order given.
-        let mut rules: Vec<(InputError, usize)> = Vec::new();
-        for e in errors {
-            match rules.iter_mut().find(|(r, _)| r.rule() == e.rule()) {
+        // A rule that refuses more than SAID_EACH places is one line at
+        // its first, with its count (a column in degrees); a few places
+        // of one rule are each said, to be mended one by one.
+        let mut counts: Vec<(Rule, usize)> = Vec::new();
+        for e in &errors {
+            let rule = e.rule();
+            match counts.iter_mut().find(|(r, _)| *r == rule) {
                 Some(r) => r.1 += 1,
-                None => rules.push((e, 1)),
+                None => counts.push((rule, 1)),
             }
         }
-        let more = rules.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
-        rules.truncate(SEVERAL_SHOWN);
-        let errors = rules;
+        let count = |e: &InputError| {
+            let rule = e.rule();
+            counts.iter().find(|(r, _)| *r == rule).map_or(1, |r| r.1)
+        };
+        let mut shown: Vec<(InputError, usize)> = Vec::new();
+        for e in errors {
+            let n = count(&e);
+            if n <= SAID_EACH {
+                shown.push((e, 1));
+            } else if !shown.iter().any(|(f, _)| f.rule() == e.rule()) {
+                shown.push((e, n));
+            }
+        }
+        let more = shown.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
+        shown.truncate(SEVERAL_SHOWN);
+        let errors = shown;
         Some(InputError::Several {
             path: path.to_path_buf(),
             errors,

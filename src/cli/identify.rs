@@ -15,8 +15,8 @@ pub struct IdentifyArgs {
     /// .tir).
     #[arg(long, value_parser = super::named::<IdentifyModel>(IdentifyModel::names))]
     model: IdentifyModel,
-    /// Random seed of the swarm.
-    #[arg(long, default_value_t = 1)]
+    /// Random seed of the swarm (a whole number of 0 or more).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number)]
     seed: u64,
     /// Tyre file to write (default: out/<data>_<model>.toml).
     #[arg(long)]

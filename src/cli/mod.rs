@@ -125,6 +125,15 @@ pub(crate) fn say_line(args: std::fmt::Arguments) {
     }
 }
 
+/// A whole number of 0 or more (a seed): a negative one, which clap took
+/// for an unknown flag (`unexpected argument '-1'`), or any other text is
+/// refused in the words the TOML reader refuses a campaign's `seed = -1`
+/// with; clap names the flag and the value before them.
+fn whole_number(s: &str) -> Result<u64, String> {
+    s.parse::<u64>()
+        .map_err(|_| "expected a whole number of 0 or more".to_string())
+}
+
 /// The parser of a closed set of names the library lists (the registry's
 /// models, a job's choices): its values listed in the help, an unknown
 /// value refused with the library's own message (`FromStr`), which names

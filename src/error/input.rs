@@ -168,19 +168,27 @@ pub enum InputError {
     /// Several places of one file refused at once, in file order (built by
     /// [`InputError::all_of`]): a user mends them in one pass rather than
     /// one per run.
-    #[error("{path}: {} places refused, in file order:{}{}", errors.len() + more, errors.iter().map(|e| format!("\n  {e}")).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    #[error("{path}: {} places refused, in file order:{}{}", errors.iter().map(|e| e.1).sum::<usize>() + more, errors.iter().map(|(e, n)| format!("\n  {e}{}", alike(*n))).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
     Several {
         /// The file.
         path: PathBuf,
-        /// The first [`SEVERAL_SHOWN`] of them, each located.
-        errors: Vec<InputError>,
-        /// How many more there are.
+        /// The places refused, in file order, each with how many places it
+        /// stands for: 1, or the count of a rule that refused more than
+        /// [`SAID_EACH`] places, listed at its first (the first
+        /// [`SEVERAL_SHOWN`] entries): a column in degrees is one line,
+        /// not a screenful of lines alike.
+        errors: Vec<(InputError, usize)>,
+        /// How many places the rules not shown refused.
         more: usize,
     },
 }
 
 /// The places an [`InputError::Several`] lists before it counts the rest.
 pub const SEVERAL_SHOWN: usize = 20;
+
+/// The places of one rule an [`InputError::Several`] lists each; a rule
+/// that refuses more is listed once, at its first place, with its count.
+pub const SAID_EACH: usize = 3;
 
 impl InputError {
     /// A problem at line `line`, column `column` (1-based) of `path`.
@@ -212,8 +220,33 @@ impl InputError {
         if errors.len() < 2 {
             return errors.pop();
         }
-        let more = errors.len().saturating_sub(SEVERAL_SHOWN);
-        errors.truncate(SEVERAL_SHOWN);
+        // A rule that refuses more than SAID_EACH places is one line at
+        // its first, with its count (a column in degrees); a few places
+        // of one rule are each said, to be mended one by one.
+        let mut counts: Vec<(Rule, usize)> = Vec::new();
+        for e in &errors {
+            let rule = e.rule();
+            match counts.iter_mut().find(|(r, _)| *r == rule) {
+                Some(r) => r.1 += 1,
+                None => counts.push((rule, 1)),
+            }
+        }
+        let count = |e: &InputError| {
+            let rule = e.rule();
+            counts.iter().find(|(r, _)| *r == rule).map_or(1, |r| r.1)
+        };
+        let mut shown: Vec<(InputError, usize)> = Vec::new();
+        for e in errors {
+            let n = count(&e);
+            if n <= SAID_EACH {
+                shown.push((e, 1));
+            } else if !shown.iter().any(|(f, _)| f.rule() == e.rule()) {
+                shown.push((e, n));
+            }
+        }
+        let more = shown.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
+        shown.truncate(SEVERAL_SHOWN);
+        let errors = shown;
         Some(InputError::Several {
             path: path.to_path_buf(),
             errors,
@@ -265,8 +298,45 @@ impl InputError {
             InputError::Value { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,
-            InputError::Several { errors, .. } => errors.first().and_then(InputError::location),
+            InputError::Several { errors, .. } => errors.first().and_then(|e| e.0.location()),
             _ => None,
+        }
+    }
+}
+
+/// What a rule's first place adds when the rule refused `n` places.
+fn alike(n: usize) -> String {
+    match n {
+        1 => String::new(),
+        _ => format!(" (the first of {n} places refused alike)"),
+    }
+}
+
+/// The rule an error breaks, as [`InputError::all_of`] groups them: its
+/// kind (and its problem's or cell's) and its column; its value and line
+/// left out.
+#[derive(PartialEq)]
+struct Rule {
+    kind: std::mem::Discriminant<InputError>,
+    problem: Option<std::mem::Discriminant<InputProblem>>,
+    cell: Option<std::mem::Discriminant<CellProblem>>,
+    column: Option<usize>,
+}
+
+impl InputError {
+    /// The rule it breaks (see [`Rule`]).
+    fn rule(&self) -> Rule {
+        Rule {
+            kind: std::mem::discriminant(self),
+            problem: match self {
+                InputError::Invalid { problem, .. } => Some(std::mem::discriminant(&**problem)),
+                _ => None,
+            },
+            cell: match self {
+                InputError::Cell { problem, .. } => Some(std::mem::discriminant(problem)),
+                _ => None,
+            },
+            column: self.location().map(|l| l.column),
         }
     }
 }

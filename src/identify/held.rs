@@ -6,6 +6,7 @@
 //! template gave.
 
 use super::problem::Channel;
+use super::spare::lean_clause;
 use crate::format::{plural, readable};
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -45,6 +46,10 @@ pub enum HeldFor {
         /// One standard error's effect on the channel there, % of the
         /// channel's RMS (`None` without a standard error).
         effect_percent: Option<f64>,
+        /// How many standard errors the value held lies from `fitted`
+        /// (`None` without a standard error); past 2 the data lean
+        /// against it, and its line says so (`spare.rs`).
+        standard_errors_away: Option<f64>,
     },
     /// A constant of a written `.tir`, set without a template.
     Constant {
@@ -93,6 +98,7 @@ impl fmt::Display for HeldFor {
                 fitted,
                 std_error: Some(se),
                 effect_percent,
+                ..
             } => write!(
                 f,
                 "not determined by these data: fitted free it was {} ± {} (one standard error of it alone moves the fit by {:.1} % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at the model's start value and the rest refitted",
@@ -106,6 +112,21 @@ impl fmt::Display for HeldFor {
                 readable(*fitted, 4)
             ),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
+        }
+    }
+}
+
+impl HeldFor {
+    /// The reason as the held line of parameter `name` says it: its
+    /// words, and for a value the data lean against, by how far and the
+    /// option that chooses another (`spare.rs`).
+    pub fn said(&self, name: &str) -> String {
+        match self {
+            HeldFor::Undetermined {
+                standard_errors_away,
+                ..
+            } => format!("{self}{}", lean_clause(name, *standard_errors_away)),
+            _ => self.to_string(),
         }
     }
 }
@@ -184,4 +205,39 @@ pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {
     let mut out = t.clone();
     c.set(&mut out, &p);
     Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// PAC89's aligning c9 on the Hoosier file, held at its start value
+    /// −1.3329 where the free fit gave −0.1947 ± 0.317: its line says the
+    /// data lean against the value, how far, and how to choose another;
+    /// the report keeps the distance as a number.
+    #[test]
+    fn an_undetermined_hold_the_data_lean_against_says_so_and_how_to_choose() {
+        let held = HeldFor::Undetermined {
+            fitted: -0.1947,
+            std_error: Some(0.317),
+            effect_percent: Some(10.7),
+            standard_errors_away: super::super::spare::standard_errors_away(
+                -1.3329,
+                -0.1947,
+                Some(0.317),
+            ),
+        };
+        assert_eq!(
+            held.said("c9"),
+            format!("{held}; the data lean against that value: it lies 3.6 standard errors from the free fit, outside the ±2 the data allow (to hold it at a value of your own, give --hold c9=VALUE)")
+        );
+        let json = serde_json::to_value(held).unwrap();
+        assert!(
+            (json["standard_errors_away"].as_f64().unwrap() - 3.59).abs() < 0.01,
+            "{json}"
+        );
+        // Another reason is said as it was.
+        let levels = HeldFor::CamberLevels { have: 1 };
+        assert_eq!(levels.said("a5"), levels.to_string());
+    }
 }

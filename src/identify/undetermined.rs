@@ -28,9 +28,15 @@
 //! template), with a value given with `--hold` or by PAC89's curvature
 //! rule set there already and so never free here. Two parameters that
 //! trade along one near-null direction thus lose the one the fit can best
-//! spare, and the other is determined again.
+//! spare, and the other is determined again. A stated value more than
+//! two standard errors from the free fit is said to be one the data lean
+//! against (`spare.rs`, [`HeldFor`]'s words).
+//!
+//! The trying and choosing of holds is the staged fit's own code
+//! (`spare.rs`); this module builds the channel's problems and refits.
 
 use super::parameters::{parameter_reports, EFFECT_FLOOR};
+use super::spare::{self, candidates, standard_errors_away, HoldFit, HoldWays, TieBreak, Tried};
 use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
 use super::{data::Condition, LocalMethod};
 use crate::optim::bounded::BoundedLm;
@@ -38,12 +44,7 @@ use crate::optim::local::{LocalResult, Residuals};
 use crate::optim::stats;
 use crate::tyre::Tyre;
 use nalgebra::DMatrix;
-use rayon::prelude::*;
 use std::time::Instant;
-
-/// Flagged parameters tried per round, the largest relative standard
-/// error first (the staged fit's count).
-const CANDIDATES: usize = 4;
 
 /// How well the points determine a problem's free parameters at a point.
 pub(super) struct Spread {
@@ -114,15 +115,6 @@ impl Spread {
     }
 }
 
-/// One hold tried: the parameter (free order), the problem without it
-/// and its refit.
-struct Tried {
-    k: usize,
-    problem: FitProblem,
-    p: Vec<f64>,
-    cost: f64,
-}
-
 /// `fit` with the parameters the data do not determine held at `start`'s
 /// values and the rest refitted (module notes), its report redone; `fit`
 /// as it is when none is flagged. `conditions` are the fit's.
@@ -166,6 +158,11 @@ pub(crate) fn hold_undetermined(
                 fitted: p[t.k],
                 std_error: spread.std_error(t.k),
                 effect_percent: spread.std_error(t.k).map(|_| 100.0 * spread.effect[t.k]),
+                standard_errors_away: standard_errors_away(
+                    stated[i],
+                    p[t.k],
+                    spread.std_error(t.k),
+                ),
             },
         ));
         free[i] = false;
@@ -207,7 +204,7 @@ pub(crate) fn hold_undetermined(
 /// The flagged parameter of `problem` at `p` whose hold at its `stated`
 /// value (the channel's full vector) the fit can best spare, with the
 /// rest refitted within `bounds` (the channel's); `None` when none is
-/// flagged (module notes).
+/// flagged (module notes; the rule's core is `spare.rs`).
 fn spare(
     problem: &FitProblem,
     p: &[f64],
@@ -216,7 +213,7 @@ fn spare(
     bounds: &[(f64, f64)],
     local: LocalMethod,
     evaluations: &mut usize,
-) -> Option<Tried> {
+) -> Option<Tried<FitProblem>> {
     let relative = |k: usize| {
         spread
             .std_error(k)
@@ -230,58 +227,26 @@ fn spare(
         let w = hi - lo;
         p[k] <= lo + 1e-6 * w || p[k] >= hi - 1e-6 * w
     };
-    let mut flagged: Vec<usize> = (0..p.len())
+    let flagged: Vec<usize> = (0..p.len())
         .filter(|&k| spread.flagged(k, p[k]) && !on_bound(k))
         .collect();
-    flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
-    flagged.truncate(CANDIDATES);
-    // The holds tried are independent refits: run side by side (a
-    // UniTire aligning fit tries four per round, each a full polish).
-    let tried: Vec<(Option<Tried>, usize)> = flagged
-        .par_iter()
-        .map(|&k| {
-            let value = stated[problem.free[k]];
-            let sub = problem.holding(p, k, value);
-            let sub_bounds: Vec<(f64, f64)> = sub.free.iter().map(|&i| bounds[i]).collect();
-            let without = |v: &[f64]| -> Vec<f64> {
-                v.iter()
-                    .enumerate()
-                    .filter(|(i, _)| *i != k)
-                    .map(|e| *e.1)
-                    .collect()
-            };
-            // From the optimum, or with the rest moved as they trade
-            // against the held value where that starts lower: a warm start
-            // that jumps one parameter of a traded pair alone can stall far
-            // from the pair's valley.
-            let moved: Vec<f64> = p
-                .iter()
-                .zip(spread.compensating(k, value - p[k]))
-                .map(|(a, d)| a + d)
-                .collect();
-            let x = [without(&moved), without(p)]
-                .into_iter()
-                .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
-                .unwrap_or_default();
-            let r = refit(&sub, &x, &sub_bounds, local);
-            let tried = Tried {
-                k,
-                problem: sub,
-                p: r.params,
-                cost: r.cost,
-            };
-            (r.cost.is_finite().then_some(tried), r.evaluations)
-        })
-        .collect();
-    *evaluations += tried.iter().map(|t| t.1).sum::<usize>();
-    let tried: Vec<Tried> = tried.into_iter().filter_map(|t| t.0).collect();
-    let lowest = tried.iter().map(|t| t.cost).fold(f64::INFINITY, f64::min);
-    // cost = ½·Σe², so half a residual variance Σe²/dof is cost/dof.
-    let dof = problem.count().saturating_sub(p.len()).max(1) as f64;
-    let tie = problem.cost(p) / dof;
-    // `tried` is in the flagged order: the first within the tie is the
-    // least determined.
-    tried.into_iter().find(|t| t.cost <= lowest + tie)
+    let free_bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| bounds[i]).collect();
+    let fit = HoldFit {
+        problem,
+        p,
+        bounds: &free_bounds,
+        clamp_starts: false,
+        tie: TieBreak::LeastDetermined,
+    };
+    let ways = HoldWays {
+        without: |k: usize, value: f64| problem.holding(p, k, value),
+        stated: |k: usize| stated[problem.free[k]],
+        compensating: |k: usize, dv: f64| spread.compensating(k, dv),
+        refit: |sub: &FitProblem, x: &[f64], b: &[(f64, f64)]| refit(sub, x, b, local),
+    };
+    let (tried, n) = spare::spare(&fit, &candidates(flagged, relative), &ways);
+    *evaluations += n;
+    tried
 }
 
 /// The refit of `problem` from `x` within `bounds`: the fit's own polish,

@@ -96,6 +96,7 @@ fn linear_range_data_hold_the_peak_and_curvature_terms_not_the_stiffness() {
             fitted,
             std_error,
             effect_percent,
+            ..
         }) = p.held
         else {
             unreachable!()

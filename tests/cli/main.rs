@@ -344,6 +344,7 @@ mod trips_s67;
 mod trips_s68;
 mod trips_s68_holds;
 mod trips_s69;
+mod trips_s69_identify;
 mod trips_s69_metrics;
 mod trips_simulate;
 mod trips_units;

@@ -22,7 +22,11 @@
 //!   of `Kyα(Fz)` on loads that never reach its peak; `QBZ4·γ` and
 //!   `QBZ5·|γ|` on cambers of one sign, where they are one function) thus
 //!   lose the one the fit can best spare, and the other is determined
-//!   again.
+//!   again. The trying and choosing is the swarm fit's code too
+//!   (`identify/spare.rs`, with this tie rule as its parameter). A stated
+//!   value more than two standard errors from the fitted one is said, on
+//!   its held line, to be one the data lean against, with `--hold` to
+//!   choose another.
 //!
 //! The stated value of a parameter held by the rule: the template's, when
 //! a template file gives the key; else the default of Pacejka (2012),
@@ -35,8 +39,11 @@ use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
 use crate::format::readable;
-use crate::optim::bounded::{clamp, BoundedLm};
-use crate::optim::local::{LocalResult, Residuals};
+use crate::identify::spare::{
+    candidates, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, TieBreak, Tried,
+};
+use crate::optim::bounded::BoundedLm;
+use crate::optim::local::LocalResult;
 use serde::Serialize;
 use std::fmt;
 
@@ -95,7 +102,26 @@ pub enum HoldReason {
         effect_percent: f64,
         /// Where the value it is held at comes from.
         source: HoldSource,
+        /// How many standard errors the value held lies from `fitted`
+        /// (`None` without a standard error); past 2 the data lean
+        /// against it, and its line says so (`spare.rs`).
+        standard_errors_away: Option<f64>,
     },
+}
+
+impl HoldReason {
+    /// The reason as the held line of coefficient `name` says it: its
+    /// words, and for a value the data lean against, by how far and the
+    /// option that chooses another.
+    pub fn said(&self, name: &str) -> String {
+        match self {
+            HoldReason::NotIdentifiable {
+                standard_errors_away,
+                ..
+            } => format!("{self}{}", lean_clause(name, *standard_errors_away)),
+            _ => self.to_string(),
+        }
+    }
 }
 
 impl fmt::Display for HoldReason {
@@ -120,6 +146,7 @@ impl fmt::Display for HoldReason {
                 std_error: Some(se),
                 effect_percent,
                 source,
+                ..
             } => write!(
                 f,
                 "not identifiable from these data when fitted ({} ± {}; one \
@@ -265,10 +292,6 @@ pub(super) struct StageFit<'a> {
 pub(super) type Refit<'r> =
     dyn Fn(&StageProblem, &[Need], &[f64], &[(f64, f64)]) -> LocalResult + 'r;
 
-/// Flagged parameters tried per round, those of the largest relative
-/// standard error first.
-const CANDIDATES: usize = 4;
-
 /// Holds the parameters of `fit` the data do not determine at their
 /// `stated` values, one at a time (module notes). The hold is chosen by
 /// refitting the rest from the optimum (Levenberg–Marquardt within the
@@ -295,60 +318,46 @@ pub(super) fn hold_undetermined(
         let relative = |k: usize| {
             u.std_error[k].map_or(f64::INFINITY, |s| s / fit.p[k].abs().max(f64::MIN_POSITIVE))
         };
-        let mut flagged: Vec<usize> = (0..fit.p.len())
+        let flagged: Vec<usize> = (0..fit.p.len())
             .filter(|&k| u.flagged(k, fit.p[k]))
             .collect();
-        flagged.sort_by(|&a, &b| relative(b).total_cmp(&relative(a)));
-        flagged.truncate(CANDIDATES);
-        let mut tried: Vec<(usize, StageProblem, Vec<f64>, f64)> = Vec::new();
-        for &k in &flagged {
-            let without = |v: &[f64]| -> Vec<f64> {
-                v.iter()
-                    .enumerate()
-                    .filter(|(i, _)| *i != k)
-                    .map(|e| *e.1)
-                    .collect()
-            };
-            let mut base = fit.problem.tyre(&fit.p);
-            base.coefficients
-                .set(fit.problem.names[k], stated(fit.problem.names[k]).0);
-            let mut names = fit.problem.names.clone();
-            names.remove(k);
-            let sub = StageProblem::new(
-                base,
-                fit.problem.stage,
-                names,
-                fit.problem.rows.clone(),
-                fit.problem.derivatives,
-            );
-            let mut bounds = fit.bounds.clone();
-            bounds.remove(k);
-            // From the optimum with the rest moved as they trade against
-            // the held value, where that starts lower than the optimum as
-            // it is: a warm start that jumps one coefficient of a traded
-            // pair alone can stall far from the pair's valley.
-            let dv = stated(fit.problem.names[k]).0 - fit.p[k];
-            let moved: Vec<f64> = fit
-                .p
-                .iter()
-                .zip(u.compensating(k, dv))
-                .map(|(p, d)| p + d)
-                .collect();
-            let start = [without(&moved), without(&fit.p)]
-                .into_iter()
-                .map(|mut x| {
-                    clamp(&mut x, &bounds);
-                    x
-                })
-                .min_by(|a, b| sub.cost(a).total_cmp(&sub.cost(b)))
-                .unwrap_or_default();
-            let r = lm.minimize(&sub, &start, &bounds);
-            *evaluations += r.evaluations;
-            if r.cost.is_finite() {
-                tried.push((k, sub, r.params, r.cost));
-            }
-        }
-        let Some((k, problem, mut p, cost)) = spared(tried, fit) else {
+        // The stated values up front: the holds are tried side by side.
+        let values: Vec<f64> = fit.problem.names.iter().map(|n| stated(n).0).collect();
+        let (problem, p) = (&fit.problem, &fit.p);
+        let ways = HoldWays {
+            without: |k: usize, value: f64| {
+                let mut base = problem.tyre(p);
+                base.coefficients.set(problem.names[k], value);
+                let mut names = problem.names.clone();
+                names.remove(k);
+                StageProblem::new(
+                    base,
+                    problem.stage,
+                    names,
+                    problem.rows.clone(),
+                    problem.derivatives,
+                )
+            },
+            stated: |k: usize| values[k],
+            compensating: |k: usize, dv: f64| u.compensating(k, dv),
+            refit: |sub: &StageProblem, x: &[f64], b: &[(f64, f64)]| lm.minimize(sub, x, b),
+        };
+        let holding = HoldFit {
+            problem,
+            p,
+            bounds: &fit.bounds,
+            clamp_starts: true,
+            tie: TieBreak::LatestInOrder,
+        };
+        let (tried, n) = spare(&holding, &candidates(flagged, relative), &ways);
+        *evaluations += n;
+        let Some(Tried {
+            k,
+            problem,
+            p: mut refitted,
+            cost,
+        }) = tried
+        else {
             break;
         };
         let mut needs = fit.needs.clone();
@@ -358,7 +367,7 @@ pub(super) fn hold_undetermined(
         let fresh = refit(&problem, &needs, &fit.starts, &fit.bounds);
         *evaluations += fresh.evaluations;
         if fresh.cost.is_finite() && fresh.cost < cost {
-            p = fresh.params;
+            refitted = fresh.params;
         }
         let name = fit.problem.names[k];
         let (value, source) = stated(name);
@@ -370,36 +379,14 @@ pub(super) fn hold_undetermined(
                 std_error: u.std_error[k],
                 effect_percent: 100.0 * u.effect[k],
                 source,
+                standard_errors_away: standard_errors_away(value, fit.p[k], u.std_error[k]),
             },
         ));
         fit.problem = problem;
         fit.needs = needs;
-        fit.p = p;
+        fit.p = refitted;
     }
     held
-}
-
-/// The hold the fit can best spare among those `tried` (parameter,
-/// problem, refitted values, cost): the lowest cost, except that costs
-/// within half the residual variance of it (the sum of squares raised by
-/// less than one residual variance: holds the data cannot tell apart) go
-/// to the coefficient latest in the stage's order, a secondary term
-/// before a primary one (`PKY4` before `PKY1`, `QBZ5` before `QBZ4`).
-/// Without the tie rule the choice between two parameters along one
-/// null direction fell to the last digits of where the optimiser stopped,
-/// and changed with `--max-iterations`.
-fn spared<'a>(
-    tried: Vec<(usize, StageProblem<'a>, Vec<f64>, f64)>,
-    fit: &StageFit,
-) -> Option<(usize, StageProblem<'a>, Vec<f64>, f64)> {
-    let lowest = tried.iter().map(|t| t.3).fold(f64::INFINITY, f64::min);
-    let dof = fit.problem.count().saturating_sub(fit.p.len()).max(1) as f64;
-    // cost = SSR/2, so half a residual variance is cost/dof.
-    let tie = fit.problem.cost(&fit.p) / dof;
-    tried
-        .into_iter()
-        .filter(|t| t.3 <= lowest + tie)
-        .max_by_key(|t| t.0)
 }
 
 #[cfg(test)]
@@ -456,7 +443,27 @@ mod tests {
             std_error: Some(2.049),
             effect_percent: 715.1,
             source: HoldSource::PacejkaBook,
+            standard_errors_away: Some(0.049),
         };
         assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default");
+    }
+
+    /// A stated value more than two standard errors from the fitted one
+    /// is said to be leaned against, naming `--hold` for that coefficient;
+    /// within two, the line is the reason alone.
+    #[test]
+    fn a_held_line_says_when_the_data_lean_against_the_stated_value() {
+        let rule = |away| HoldReason::NotIdentifiable {
+            fitted: 0.0009574,
+            std_error: Some(0.002192),
+            effect_percent: 9.2,
+            source: HoldSource::Template,
+            standard_errors_away: away,
+        };
+        let far = rule(Some(37.93)).said("QDZ1");
+        assert!(far.starts_with(&rule(None).to_string()), "{far}");
+        assert!(far.ends_with("held at the template's value; the data lean against that value: it lies 37.9 standard errors from the free fit, outside the ±2 the data allow (to hold it at a value of your own, give --hold QDZ1=VALUE)"), "{far}");
+        assert_eq!(rule(Some(1.9)).said("QDZ1"), rule(Some(1.9)).to_string());
+        assert_eq!(HoldReason::Given.said("PKY4"), "given with --hold");
     }
 }

@@ -4,7 +4,7 @@
 //! sqrt(Σe²/ΣF²)·100 % over its points and its levels spelt as the
 //! terminal spells them ([`Variable::display`]); a colour per load within
 //! a panel, the key opening with what is measured (points) and what
-//! fitted (lines). The staged Magic Formula fit's is in `staged_figure.rs`.
+//! fitted (lines), the lines drawn over every load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
 use super::staged_figure::{key_entries, level_colour, MEASURED};
 use super::SwarmReport;
@@ -133,6 +133,11 @@ fn panel(
     // (lines), in grey, before the loads' colours: a line per load in its
     // points' colour.
     let mut series = key_entries(Style::Points(2), MEASURED);
+    // Every load's fitted line is drawn after every load's points: a line
+    // drawn before the next load's points lay under them where two loads'
+    // curves cross or meet (the aligning moment's near zero slip and past
+    // its peak).
+    let mut lines = Vec::new();
     let (mut e2, mut y2, mut n) = (0.0, 0.0, 0);
     for (k, c) in conditions.iter().enumerate() {
         let measured: Vec<(f64, f64, f64)> = c
@@ -170,13 +175,14 @@ fn panel(
             .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        series.push(Series::line(
+        lines.push(Series::line(
             &Variable::Load.display(c.fz),
             &xd,
             &ys,
             colour,
         ));
     }
+    series.extend(lines);
     let sigma = if y2 > 0.0 {
         100.0 * (e2 / y2).sqrt()
     } else {

@@ -79,22 +79,44 @@ fn a_panel_per_pressure_titled_with_its_own_sigma_and_the_terminals_levels() {
     }
 }
 
+/// Both channels' panels, lateral force and aligning moment: the y axis
+/// spans the measured points without running far past them, and every
+/// load's fitted line is drawn over every load's points (a line drawn
+/// before the next load's points lay under them where the aligning
+/// moment's curves meet).
 #[test]
 fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_loads_points() {
     let (tyre, conds) = conditions();
-    let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)]);
+    let fig = figure(
+        "pac89",
+        &tyre,
+        &[
+            (Channel::LateralForce, &conds),
+            (Channel::AligningMoment, &conds),
+        ],
+    );
+    assert_eq!(fig.panels.len(), 6, "a panel per channel and pressure");
+    assert!(fig.panels[3..].iter().all(|p| p.y_label == "Mz [N·m]"));
     for p in &fig.panels {
         // The key's two entries hold no data.
         let drawn = || p.series.iter().filter(|s| !s.x.is_empty());
         let points: Vec<&Series> = drawn().filter(|s| s.style == Style::Points(2)).collect();
         let lines: Vec<&Series> = drawn().filter(|s| s.style == Style::Line).collect();
         assert_eq!((points.len(), lines.len()), (3, 3), "{}", p.title);
+        let styles: Vec<Style> = drawn().map(|s| s.style).collect();
+        let first_line = styles.iter().position(|s| *s == Style::Line).unwrap();
+        assert!(
+            styles[first_line..].iter().all(|s| *s == Style::Line),
+            "{}: a line drawn before a load's points: {styles:?}",
+            p.title
+        );
         let (lo, hi) = points
             .iter()
             .flat_map(|s| s.y.iter().copied())
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
                 (a.min(v), b.max(v))
             });
+        assert!(lo < 0.0 && hi > 0.0, "{}: data {lo}..{hi}", p.title);
         let span = hi - lo;
         let Axes { y, .. } = p.axes();
         assert!(

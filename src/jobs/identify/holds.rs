@@ -71,7 +71,13 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
             .filter(|h| h.reason == why)
             .map(|h| format!("{} = {}", h.name, exact(h.value)))
             .collect();
-        out.push(format!("  held: {}: {why}", values.join(", ")));
+        // An undetermined parameter's reason is its own (its fitted
+        // value), so `said` names the one parameter of its line.
+        let name = held
+            .iter()
+            .find(|h| h.reason == why)
+            .map_or("", |h| &h.name);
+        out.push(format!("  held: {}: {}", values.join(", "), why.said(name)));
     }
     out.extend(held.iter().filter(|h| !h.applied).map(|h| {
         format!(
@@ -118,7 +124,7 @@ pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
                 "{mark} held: {} = {}: {}\n",
                 h.name,
                 exact(h.value),
-                h.reason
+                h.reason.said(&h.name)
             )
         })
         .collect()

@@ -158,7 +158,10 @@ pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
         .parameters
         .iter()
         .filter(|p| matches!(p.held, Some(HeldFor::Undetermined { .. })))
-        .map(|p| p.name.as_str())
+        // Inside its own block a parameter goes without the block's
+        // prefix (UniTire's `aligning.c3` is `c3` after "aligning
+        // moment:"); the held lines keep the name --hold takes.
+        .map(|p| p.name.rsplit_once('.').map_or(p.name.as_str(), |(_, n)| n))
         .collect();
     Some(Note::said(format!(
         "{}: {} held at the model's start {}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free",

@@ -141,9 +141,12 @@ fn stage_lines(
         // What was held at a stated value rather than fitted (the
         // parameters held for want of levels are in the report).
         out.extend(s.parameters.iter().filter_map(|p| match &p.held {
-            Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => {
-                Some(format!("    held: {} = {}: {why}", p.name, p.value))
-            }
+            Some(why @ (HoldReason::NotIdentifiable { .. } | HoldReason::Given)) => Some(format!(
+                "    held: {} = {}: {}",
+                p.name,
+                p.value,
+                why.said(p.name)
+            )),
             _ => None,
         }));
         out.extend(level_held_lines(&s.parameters));

@@ -2,12 +2,12 @@
 //! levels, the holds, each channel's σ and curves, and the warnings on
 //! its parameters.
 
-use super::holds::held_lines;
+use super::holds::{held_lines, Held};
 use super::notes::{held_as_given, later_fit_notes, undetermined_note, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
 use crate::identify::grouping::Variable;
-use crate::identify::Fit;
+use crate::identify::{Fit, HeldFor};
 use crate::tyre::Identification;
 
 impl SwarmReport {
@@ -22,7 +22,9 @@ impl SwarmReport {
             o.seed
         )];
         out.extend(self.grouping.lines().iter().map(|l| format!("  {l}")));
-        out.extend(held_lines(&self.held));
+        // Each channel's held lines sit with its block: the lateral
+        // force's (and every --hold) here, before its σ table.
+        out.extend(held_lines(&self.held_in(Block::First)));
         let two_stage_asked = o
             .model
             .swarm_model()
@@ -34,13 +36,17 @@ impl SwarmReport {
             // Two statistics: the paper's mean of the conditions' σ, and the
             // σ over all points that is compared with the direct fit's and
             // written; a lone "after the joint polish" read as the latter.
+            // What each stage is and what its percentage is of, in the
+            // words of the σ line: "stage 2 41.688 %" alone read as
+            // nothing a tyre engineer could place.
             out.push(format!(
-                "  two-stage (Zhang et al. 2021): mean of the conditions' σ: stage 1 {:.3} %, stage 2 {:.3} %, after the joint polish {:.3} %; σ over all points after the joint polish {:.3} % (direct fit {:.3} %)",
+                "  two-stage (Zhang et al. 2021): mean of the conditions' σ: stage 1 {:.3} % (each condition's own curve, B, C, D, E, Sh, Sv fitted to it alone), stage 2 {:.3} % (a0..a13 fitted to those coefficients as laws of load and camber), after the joint polish {:.3} % (a0..a13 on all points together); σ over all points after the joint polish {:.3} % (direct fit {:.3} %); a condition's σ is its RMS error as % of its RMS measured force, the mean over the {}",
                 t.stages.stage1_mean_sigma,
                 t.stages.stage2_mean_sigma,
                 t.stages.polished_mean_sigma,
                 t.polished_overall_sigma_percent,
-                t.direct_sigma_percent
+                t.direct_sigma_percent,
+                crate::jobs::shard::plural(t.stages.stage1.len(), "condition", "conditions"),
             ));
         }
         let f = &self.fit;
@@ -113,6 +119,7 @@ impl SwarmReport {
                 decimals_or_digits(mz.rms, 2, 3),
                 mz.seconds
             ));
+            out.extend(held_lines(&self.held_in(Block::Aligning)));
             out.extend(parameter_warnings(mz, &o.hold));
             out.extend(later_fit_notes(self, mz).iter().map(|n| n.line(" ")));
         }
@@ -125,6 +132,7 @@ impl SwarmReport {
                 decimals_or_digits(fx.rms, 1, 3),
                 fx.seconds
             ));
+            out.extend(held_lines(&self.held_in(Block::Longitudinal)));
             out.extend(parameter_warnings(fx, &o.hold));
             out.extend(later_fit_notes(self, fx).iter().map(|n| n.line(" ")));
         }
@@ -139,6 +147,44 @@ impl SwarmReport {
                 .map(|x| format!("  warning: {}", x.line())),
         );
         out
+    }
+}
+
+/// The block of the terminal's lines a held value is said in.
+#[derive(Clone, Copy, PartialEq)]
+enum Block {
+    /// The first fit's (the lateral force's, or a longitudinal-only
+    /// file's longitudinal force), and every value given with `--hold`.
+    First,
+    /// The aligning moment's.
+    Aligning,
+    /// The longitudinal force's after a lateral fit.
+    Longitudinal,
+}
+
+impl SwarmReport {
+    /// The held values said in `block`: a value held for another reason
+    /// than `--hold` in the block of the later fit that has it.
+    fn held_in(&self, block: Block) -> Vec<Held> {
+        let has = |f: Option<&Fit>, name: &str| {
+            f.is_some_and(|f| f.parameters.iter().any(|p| p.name == name))
+        };
+        let block_of = |h: &Held| {
+            if h.reason == HeldFor::Given {
+                Block::First
+            } else if has(self.aligning.as_ref(), &h.name) {
+                Block::Aligning
+            } else if has(self.longitudinal.as_ref(), &h.name) {
+                Block::Longitudinal
+            } else {
+                Block::First
+            }
+        };
+        self.held
+            .iter()
+            .filter(|h| block_of(h) == block)
+            .cloned()
+            .collect()
     }
 }
 

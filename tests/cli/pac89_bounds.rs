@@ -69,7 +69,7 @@ fn a_pac89_fit_keeps_what_the_data_do_not_see_in_its_box_and_holds_a_curvature_t
     };
     let dir = tempfile::tempdir().unwrap();
     let (text, tyre) = (&fit.stdout, &fit.tyre);
-    let a = array(&fs::read_to_string(&tyre).unwrap(), "a");
+    let a = array(&fs::read_to_string(tyre).unwrap(), "a");
     for (i, (lo, hi)) in [(1.0, 2.0), (-400.0, 400.0), (200.0, 5000.0)]
         .into_iter()
         .enumerate()
@@ -116,7 +116,7 @@ fn a_pac89_fit_keeps_what_the_data_do_not_see_in_its_box_and_holds_a_curvature_t
         .flat_map(|d: &f64| [d.to_radians(), -d.to_radians()])
         .collect();
     for fz in [405.0, 2928.0] {
-        let fy = fy_at(dir.path(), &tyre, fz, &angles);
+        let fy = fy_at(dir.path(), tyre, fz, &angles);
         for pair in fy.chunks(2).skip(1) {
             assert_eq!(pair[0].signum(), fy[0].signum(), "fz {fz}: {fy:?}");
             assert_eq!(pair[1].signum(), fy[1].signum(), "fz {fz}: {fy:?}");

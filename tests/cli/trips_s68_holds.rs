@@ -45,7 +45,7 @@ fn pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine() {
         }
         // The file's header and the terminal say it, with its reason.
         let line = format!("held: {name} = ");
-        for (what, said) in [("file", &file), ("terminal", &text)] {
+        for (what, said) in [("file", &file), ("terminal", text)] {
             let at = said
                 .lines()
                 .find(|l| l.contains(&line))

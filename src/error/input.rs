@@ -321,6 +321,9 @@ struct Rule {
     problem: Option<std::mem::Discriminant<InputProblem>>,
     cell: Option<std::mem::Discriminant<CellProblem>>,
     column: Option<usize>,
+    /// A missing column's name: each is a column of its own to add or
+    /// rename, never "alike".
+    missing: Option<String>,
 }
 
 impl InputError {
@@ -337,6 +340,10 @@ impl InputError {
                 _ => None,
             },
             column: self.location().map(|l| l.column),
+            missing: match self {
+                InputError::MissingColumn { name, .. } => Some(name.clone()),
+                _ => None,
+            },
         }
     }
 }

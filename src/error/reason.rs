@@ -396,10 +396,10 @@ pub enum Limit {
     #[error("a relative tolerance below 1e-14 is below rounding, above 1e-2 not a simulation")]
     RelativeTolerance,
     /// Dormand–Prince's absolute tolerance.
-    #[error("the absolute tolerance (rad, rad/s) must lie in [1e-16, 1e-2]")]
+    #[error("the absolute tolerance (rad, rad/s) must lie in (1e-16, 1e-2]")]
     AbsoluteTolerance,
     /// Dormand–Prince's largest step.
-    #[error("the largest step must lie in [1e-6, 1] s")]
+    #[error("the largest step must lie in (1e-6, 1] s")]
     MaxStep,
     /// A manoeuvre's end.
     #[error("the run must end after it starts")]

@@ -196,10 +196,7 @@ fn findings(d: &Diagnosis) -> Vec<String> {
     // Tyres from rig data or files are held: what the candidates' standard
     // errors are conditional on (a bias of those tyres moves every value).
     if d.base.axles.is_none() {
-        out.push(
-            "  (± a standard error with the base model's tyres held as they are: their own uncertainty is not in it)"
-                .into(),
-        );
+        out.push(format!("  ({})", words::TYRES_HELD));
     }
     let w = effect_width(d);
     out.push(format!("  ({})", words::bic_caveat(&d.gap.findings)));

@@ -59,7 +59,12 @@ pub fn page(
             .iter()
             .map(words::parameter)
             .collect();
-        p.paragraph("verdict", &format!("Fitted: {}.", fitted.join("; ")));
+        let held = if d.base.axles.is_none() {
+            format!(" ({})", words::TYRES_HELD)
+        } else {
+            String::new()
+        };
+        p.paragraph("verdict", &format!("Fitted: {}{held}.", fitted.join("; ")));
     }
     // The verdict's own axles where they were refitted with it (no tyre
     // data), as the terminal gives them: the base's are not what the

@@ -252,7 +252,7 @@ impl StepMetrics {
     pub fn settling_warning(&self) -> Option<String> {
         (!self.settled).then(|| {
             format!(
-                "the response has not settled in the steady window (the yaw rate, lateral acceleration or sideslip spreads by more than {} % of its step beyond its noise: a car sliding at its grip limit holds its yaw rate and lateral acceleration while its sideslip grows)",
+                "the response has not settled in the steady window (the yaw rate, lateral acceleration or sideslip spreads by more than {} % of its step beyond its noise; at its grip limit a car can hold its yaw rate and lateral acceleration while its sideslip grows)",
                 crate::error::Num(100.0 * SETTLED_SPREAD)
             )
         })

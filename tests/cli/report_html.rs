@@ -159,6 +159,13 @@ fn the_page_says_why_the_verdict_is_its_row_and_what_it_fitted() {
         p["value"].as_f64().unwrap()
     );
     assert!(page.contains(&fitted), "{fitted} not in the page");
+    // The tyres fitted to the rig are held: the page, as the terminal,
+    // says what its standard errors leave out.
+    assert!(
+        page.contains("(± a standard error with the base model&#39;s tyres held as they are: their own uncertainty is not in it).")
+            || page.contains("(± a standard error with the base model's tyres held as they are: their own uncertainty is not in it)."),
+        "no caveat in the page"
+    );
     // The two look-alikes are confounded: one sentence, then one line per
     // effect with the signature that would separate them.
     assert!(!d["confounded"].as_array().unwrap().is_empty());

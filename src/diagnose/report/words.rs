@@ -405,6 +405,14 @@ fn gap_within_noise(findings: &[GapFinding]) -> bool {
     })
 }
 
+/// What a candidate's standard errors leave out where the base model's
+/// tyres come from rig data or files: those tyres are held, so a bias of
+/// theirs moves every fitted value and is in no standard error. Said on
+/// the terminal under the candidates' table and on the page under the
+/// verdict's fitted values.
+pub const TYRES_HELD: &str =
+    "± a standard error with the base model's tyres held as they are: their own uncertainty is not in it";
+
 /// Under the candidates' table: their ΔBIC (and, on a gap within noise,
 /// their standard errors) count every sample as an independent one, but a
 /// replay's residuals are correlated over many samples (a model's error is

@@ -47,7 +47,7 @@ pub fn evidence(e: &Evidence) -> String {
                 .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
                 .collect();
             format!(
-                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges",
+                "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges",
                 joined(effects, "+"),
                 at.join(", ")
             )

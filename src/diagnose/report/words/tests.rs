@@ -313,7 +313,7 @@ fn a_lookalike_passed_over_for_its_search_bound_is_named_with_the_value_it_neede
     };
     assert_eq!(
         evidence(&e),
-        "chosen over a look-alike pressed on its search range: sensor_delay, which removes 54.3 %, but only with sensor_delay.delay = 0.3000 s at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict does about as well from inside its ranges"
+        "chosen over a look-alike pressed on its search range: sensor_delay, which removes 54.3 %, but only with sensor_delay.delay = 0.3000 s at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges"
     );
     let r = Refusal::PressedOnSearchBound {
         inside: Box::new(Refused {

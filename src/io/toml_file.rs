@@ -248,6 +248,7 @@ impl TomlSource {
 
     fn toml_error(&self, e: &toml::de::Error, reparse: &Reparse) -> InputError {
         let message = self.plain_message(e);
+        let message = home::case_slip(&self.text, &message).unwrap_or(message);
         let (span, key) = self.place(e, &message);
         // A name's place holding no name (`kind = 3`): the names are found
         // with a string there, which serde answers with its list.

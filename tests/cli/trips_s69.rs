@@ -41,3 +41,27 @@ fn a_car_sliding_at_its_grip_limit_is_not_said_settled() {
         .unwrap_or_else(|| panic!("{said}"));
     assert!(warned.contains("sideslip"), "{warned}");
 }
+
+/// A tyre file with `Model = "gim"` was refused as "missing field
+/// `model`", leaving the user to find the capital: the key written is
+/// named with the fix.
+#[test]
+fn a_tyre_key_written_in_capitals_is_named_with_its_fix() {
+    let text = fs::read_to_string(root().join("tyres/gim_sedan_front.toml"))
+        .unwrap()
+        .replace("model = \"gim\"", "Model = \"gim\"");
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n";
+    let dir = scratch(&[("tyre.toml", &text), ("points.csv", points)]);
+    let o = run(&[
+        "tyre-eval",
+        dir.path().join("tyre.toml").to_str().unwrap(),
+        dir.path().join("points.csv").to_str().unwrap(),
+        "--out",
+        dir.path().join("out.csv").to_str().unwrap(),
+    ]);
+    let e = refused(&o, &dir.path().join("out.csv"));
+    assert!(
+        e.contains("tyre.toml:1:1: missing field `model`: the file writes `Model`, and keys are matched as written, in lower case: rename it `model`"),
+        "{e}"
+    );
+}

@@ -224,3 +224,33 @@ mod tests {
         assert_eq!(listed("`a`"), ["a"]);
     }
 }
+
+/// A required key refused as missing (`missing field `model``) where the
+/// file writes it in another case (`Model = "gim"`): that key named, with
+/// the fix, since keys are matched exactly and lower case.
+pub(super) fn case_slip(text: &str, message: &str) -> Option<String> {
+    let name = message.strip_prefix("missing field `")?.split('`').next()?;
+    let written = text.lines().find_map(|l| {
+        let key = l.split_once('=')?.0.trim();
+        (key != name && key.eq_ignore_ascii_case(name)).then_some(key)
+    })?;
+    Some(format!(
+        "missing field `{name}`: the file writes `{written}`, and keys are matched as written, in lower case: rename it `{name}`"
+    ))
+}
+
+#[cfg(test)]
+mod case_tests {
+    use super::case_slip;
+
+    #[test]
+    fn a_required_key_written_in_capitals_is_named_with_its_fix() {
+        let said = case_slip("Model = \"gim\"\nfriction = 1\n", "missing field `model`");
+        assert_eq!(
+            said.as_deref(),
+            Some("missing field `model`: the file writes `Model`, and keys are matched as written, in lower case: rename it `model`")
+        );
+        assert_eq!(case_slip("friction = 1\n", "missing field `model`"), None);
+        assert_eq!(case_slip("Model = 1\n", "invalid type"), None);
+    }
+}

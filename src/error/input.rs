@@ -348,16 +348,23 @@ impl InputError {
     }
 }
 
-/// Where a header read as one column holds another separator (a
-/// spreadsheet set to a decimal comma writes `;`), what to do about it.
-fn separator_hint(header: &[String]) -> String {
+/// The separator a header read as one column holds instead of commas
+/// (a spreadsheet set to a decimal comma writes `;`), by name: such a
+/// header is one problem, however many columns it hides.
+pub(crate) fn one_column_separator(header: &[String]) -> Option<&'static str> {
     let [only] = header else {
-        return String::new();
+        return None;
     };
     [(';', "semicolons"), ('\t', "tabs")]
         .iter()
         .find(|(c, _)| only.contains(*c))
-        .map_or(String::new(), |(_, name)| {
-            format!("; the header is one column separated by {name}: the file must be comma-separated with a decimal point (export it as CSV with `,` between values and `.` in numbers)")
-        })
+        .map(|(_, name)| *name)
+}
+
+/// Where a header read as one column holds another separator, what to do
+/// about it ([`one_column_separator`]).
+fn separator_hint(header: &[String]) -> String {
+    one_column_separator(header).map_or(String::new(), |name| {
+        format!("; the header is one column separated by {name}: the file must be comma-separated with a decimal point (export it as CSV with `,` between values and `.` in numbers)")
+    })
 }

@@ -31,6 +31,7 @@ pub use duplicate::DuplicateAt;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip,
 };
+pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use metrics::{MetricsError, HELD_STEP};

@@ -3,7 +3,7 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
-use crate::error::{CellProblem, DuplicateAt, InputError, InputProblem};
+use crate::error::{one_column_separator, CellProblem, DuplicateAt, InputError, InputProblem};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -359,7 +359,7 @@ fn read_layout(
     // A header of one column holding `;` or tabs is one problem, said once
     // (the first missing column's refusal carries what to do), not once
     // per column it hides.
-    if headers.len() == 1 && headers[0].contains([';', '\t']) {
+    if one_column_separator(&out.header).is_some() {
         missing.truncate(1);
     }
     if !missing.is_empty() {

@@ -8,7 +8,7 @@ use super::*;
 
 /// The bundled sedan step steer (1° at 1.0–1.1 s, to 6 s) in `dir`, with
 /// `extra` appended to its text.
-fn sedan(dir: &Path, extra: &str) -> PathBuf {
+pub(super) fn sedan(dir: &Path, extra: &str) -> PathBuf {
     let path = dir.join("sedan_step.toml");
     fs::write(&path, bundled_scenario("sedan_step.toml") + extra).unwrap();
     path

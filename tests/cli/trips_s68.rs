@@ -338,15 +338,7 @@ fn a_negative_seed_and_a_wrong_wheelbase_are_said_as_what_they_are() {
 #[test]
 fn metrics_says_a_column_that_is_a_slip_of_a_channel_it_reads() {
     let dir = tempfile::tempdir().unwrap();
-    let sim = dir.path().join("sim");
-    let o = run(&[
-        "simulate",
-        root().join("scenarios/sedan_step.toml").to_str().unwrap(),
-        "--out",
-        sim.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let history = fs::read_to_string(sim.join("history.csv")).unwrap();
+    let history = fs::read_to_string(super::trips_s65::sedan_history(dir.path())).unwrap();
     let header = history.lines().next().unwrap();
     assert!(header.contains(",beta,"), "{header}");
     let slipped = history.replacen(",beta,", ",bta,", 1);

@@ -8,15 +8,13 @@ use super::*;
 /// `simulate` of the bundled sedan step on a road of the given friction:
 /// the terminal and `metrics.json`.
 fn sedan_on(friction: Option<f64>) -> (String, serde_json::Value) {
-    let mut text = bundled_scenario("sedan_step.toml");
-    if let Some(mu) = friction {
-        text += &format!("\n[road]\nfriction = {mu}\n");
-    }
-    let dir = scratch(&[("scenario.toml", &text)]);
+    let road = friction.map_or(String::new(), |mu| format!("\n[road]\nfriction = {mu}\n"));
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = super::trips_s65::sedan(dir.path(), &road);
     let out = dir.path().join("out");
     let said = succeeds(&[
         "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
+        scenario.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);

@@ -46,6 +46,7 @@
 //! [`CONFOUNDED_NOISE`]: crate::diagnose::verdict::rules::CONFOUNDED_NOISE
 //! [`SIGNIFICANT`]: crate::diagnose::verdict::rules::SIGNIFICANT
 
+use crate::diagnose::model::scale::{ScaleSource, SCATTER_EXCESS};
 pub use crate::diagnose::report::summary::observed_channel;
 pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
@@ -139,6 +140,18 @@ fn noise_unmeasured<'a>(
         .zip([u.yaw_rate, u.ay, u.beta])
         .filter(|(ch, stated)| stated.is_some() && !noise.iter().any(|n| n.channel == *ch))
         .map(|(ch, _)| ch)
+}
+
+/// The note of a channel stated more precise than its own scatter shows
+/// ([`SCATTER_EXCESS`]).
+fn below_scatter(n: &ChannelNoise) -> Option<Note> {
+    (n.source == ScaleSource::Stated && n.scatter > SCATTER_EXCESS * n.noise_floor).then_some(
+        Note::UncertaintyBelowScatter {
+            channel: n.channel,
+            stated: n.noise_floor,
+            scatter: n.scatter,
+        },
+    )
 }
 
 /// The channel whose share of the base model's held-out error `J²`
@@ -376,6 +389,7 @@ fn run(
     let (effects, mut notes) = visible_effects(c);
     notes.extend(grid_note(&ctx, set.step));
     notes.extend(noise_unmeasured(c, &noise).map(|channel| Note::UncertaintyUnused { channel }));
+    notes.extend(noise.iter().filter_map(below_scatter));
     let read = c
         .notes
         .iter()

@@ -250,6 +250,18 @@ pub enum ParamReason {
         /// The effect.
         name: String,
     },
+    /// A channel uncertainty stated under `[channels]` at least the
+    /// channel's RMS signal over the runs (its unit's): the channel would
+    /// carry nothing.
+    #[error("is at least the channel's RMS signal over the runs ({} {unit}): a channel trusted no better than its whole motion carries nothing into any fit; a sensor of this kind is good to about {} {unit} (leave the key out for the tool's estimate from the channel's own scatter, or leave the column out of the runs to leave the channel out)", crate::format::rounded(*signal, 3), super::number::Num(*floor))]
+    UncertaintyBeyondSignal {
+        /// The channel's RMS signal over every run, its unit.
+        signal: f64,
+        /// The channel's unit.
+        unit: &'static str,
+        /// The floor of a sensor of its kind, its unit.
+        floor: f64,
+    },
     /// A `[tyres]` table that names no single source of tyres.
     #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
     TyreSource,

@@ -346,6 +346,7 @@ mod trips_s68_holds;
 mod trips_s69;
 mod trips_s69_identify;
 mod trips_s69_metrics;
+mod trips_s70;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

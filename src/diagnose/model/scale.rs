@@ -33,6 +33,7 @@
 
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::model::channels::Channel;
+use crate::measured::MeasuredRun;
 use serde::Serialize;
 
 /// The floor of a sensor of each channel's type (yaw rate rad/s, ay m/s²,
@@ -78,6 +79,31 @@ pub struct ChannelScale {
     pub scatter: f64,
 }
 
+/// The uncertainty the user `stated` for channel `c`, if any.
+pub fn stated_of(c: Channel, stated: &StatedUncertainty) -> Option<f64> {
+    match c {
+        Channel::YawRate => stated.yaw_rate,
+        Channel::Ay => stated.ay,
+        Channel::Beta => stated.beta,
+    }
+}
+
+/// A stated uncertainty at least the channel's RMS `signal` on the runs:
+/// a channel trusted no better than its whole motion would carry nothing
+/// into any fit and no gap of it could rise above noise, so it is a slip
+/// (a unit, a digit), refused where it is read. False without a signal.
+pub fn beyond_signal(stated: f64, signal: f64) -> bool {
+    signal > 0.0 && stated >= signal
+}
+
+/// How many times a channel's high-frequency scatter may exceed its
+/// stated uncertainty before the statement is noted as contradicted: a
+/// channel scattering more from sample to sample than it is trusted to
+/// would be weighted past what its own record shows (and dominate every
+/// fit). A scatter within three times is the noise of the estimate itself
+/// on short runs.
+pub const SCATTER_EXCESS: f64 = 3.0;
+
 /// The uncertainty and scale of channel `c` (module doc) from what the
 /// user `stated`, its measured `scatter` and its RMS `signal`.
 pub fn channel_scale(
@@ -87,12 +113,7 @@ pub fn channel_scale(
     signal: f64,
 ) -> ChannelScale {
     let i = c.index();
-    let said = match c {
-        Channel::YawRate => stated.yaw_rate,
-        Channel::Ay => stated.ay,
-        Channel::Beta => stated.beta,
-    };
-    let (uncertainty, source) = match said {
+    let (uncertainty, source) = match stated_of(c, stated) {
         Some(s) => (s, ScaleSource::Stated),
         // A scatter that is not a number (no samples) is no sensor's either.
         None if scatter.is_nan() || scatter < SMOOTH_SHARE * SENSOR_FLOOR[i] => {
@@ -107,6 +128,25 @@ pub fn channel_scale(
         source,
         scatter,
     }
+}
+
+/// Each channel's RMS signal over every sample of every run (0 where no
+/// run measures it).
+pub fn signal_rms(runs: &[MeasuredRun]) -> [f64; 3] {
+    Channel::ALL.map(|ch| {
+        let (mut s, mut n) = (0.0, 0usize);
+        for r in runs {
+            if let Some(v) = ch.of(r) {
+                s += v.iter().map(|x| x * x).sum::<f64>();
+                n += v.len();
+            }
+        }
+        if n == 0 {
+            0.0
+        } else {
+            (s / n as f64).sqrt()
+        }
+    })
 }
 
 #[cfg(test)]

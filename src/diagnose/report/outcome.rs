@@ -373,6 +373,18 @@ pub enum Note {
         /// The channel.
         channel: Channel,
     },
+    /// An uncertainty stated under `[channels]` that the channel's own
+    /// high-frequency scatter exceeds more than
+    /// [`crate::diagnose::model::scale::SCATTER_EXCESS`] times: the
+    /// channel is weighted past what its record shows.
+    UncertaintyBelowScatter {
+        /// The channel.
+        channel: Channel,
+        /// The stated uncertainty, the channel's unit.
+        stated: f64,
+        /// The scatter measured (median over runs), the channel's unit.
+        scatter: f64,
+    },
 }
 
 /// What runs lack for an effect to show in them.

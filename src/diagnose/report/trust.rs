@@ -12,7 +12,7 @@
 
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::model::scale::channel_scale;
+use crate::diagnose::model::scale::{channel_scale, signal_rms};
 use crate::diagnose::report::summary::run_scatter;
 use crate::diagnose::report::ChannelNoise;
 use crate::measured::clean::median;
@@ -29,25 +29,6 @@ pub struct Trust {
     pub scales: [f64; 3],
     /// The noise floors by channel index (0 where no run measures it).
     pub floors: [f64; 3],
-}
-
-/// Each channel's RMS signal over every sample of every run (0 where no
-/// run measures it).
-fn signal_rms(runs: &[MeasuredRun]) -> [f64; 3] {
-    Channel::ALL.map(|ch| {
-        let (mut s, mut n) = (0.0, 0usize);
-        for r in runs {
-            if let Some(v) = ch.of(r) {
-                s += v.iter().map(|x| x * x).sum::<f64>();
-                n += v.len();
-            }
-        }
-        if n == 0 {
-            0.0
-        } else {
-            (s / n as f64).sqrt()
-        }
-    })
 }
 
 /// How far each channel of `runs` is trusted, with the uncertainties the

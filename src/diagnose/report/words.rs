@@ -351,6 +351,18 @@ pub fn note(n: &Note) -> String {
             "[channels] {}: no run measures this channel, so its stated uncertainty is not used",
             channel.name()
         ),
+        Note::UncertaintyBelowScatter {
+            channel,
+            stated,
+            scatter,
+        } => format!(
+            "[channels] {} = {} {u}: the channel scatters by {} {u} from sample to sample, {} times what is stated; it is weighted as stated and may dominate every fit (state at least its scatter, or leave the key out for the tool's estimate)",
+            channel.name(),
+            crate::error::Num(*stated),
+            crate::format::rounded(*scatter, 2),
+            crate::format::rounded(scatter / stated, 2),
+            u = channel.unit(),
+        ),
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),

@@ -37,6 +37,8 @@ use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings, StatedUncertainty};
 use crate::diagnose::effects::{EffectKind, RollModel};
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::model::scale::{beyond_signal, signal_rms, stated_of, SENSOR_FLOOR};
 use crate::error::{
     named, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError, ParamReason,
 };
@@ -134,6 +136,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         &mut inputs,
     )?;
     notes.splice(0..0, folder_notes);
+    check_stated(&src, &f.channels, &runs)?;
     if runs.len() < 2 {
         return Err(file_error(
             &file,
@@ -222,6 +225,35 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
             },
         )
         .map_err(|e| param_error(src, Some("runs"), e))?;
+    }
+    Ok(())
+}
+
+/// Refuses a channel uncertainty under `[channels]` no smaller than the
+/// channel's RMS signal over the `runs` ([`beyond_signal`]).
+fn check_stated(
+    src: &TomlSource,
+    stated: &StatedUncertainty,
+    runs: &[crate::measured::MeasuredRun],
+) -> Result<(), InputError> {
+    let rms = signal_rms(runs);
+    for ch in Channel::ALL {
+        let Some(s) = stated_of(ch, stated) else {
+            continue;
+        };
+        let signal = rms[ch.index()];
+        if beyond_signal(s, signal) {
+            let reason = ParamReason::UncertaintyBeyondSignal {
+                signal,
+                unit: ch.unit(),
+                floor: SENSOR_FLOOR[ch.index()],
+            };
+            return Err(param_error(
+                src,
+                Some("channels"),
+                ParamError::new(ch.name(), s, reason),
+            ));
+        }
     }
     Ok(())
 }

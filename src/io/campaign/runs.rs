@@ -166,6 +166,7 @@ pub(super) fn read_runs(
     // is converted where it is and said where it is not; one no file has
     // is refused, as `metrics` and a replay refuse it.
     let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
+    let (mut longest, mut was_cut) = (0.0_f64, false);
     for p in files {
         let (run, lacks) = read_run_declared(p, degrees)?;
         for (a, e) in lacks {
@@ -214,13 +215,18 @@ pub(super) fn read_runs(
         for piece in pieces {
             match segment {
                 Some(seg) => {
+                    longest = longest.max(piece.t[piece.t.len() - 1] - piece.t[0]);
                     let cut = segments(piece, seg);
+                    was_cut |= cut.len() > 1;
                     cleaning.pieces.extend(cut.iter().filter_map(Piece::kept));
                     runs.extend(cut);
                 }
                 None => runs.push(piece),
             }
         }
+    }
+    if let Some(seg) = segment.filter(|_| !was_cut && !runs.is_empty()) {
+        notes.push(uncut_note(seg, longest));
     }
     for (column, lacking, first) in absent {
         if lacking.len() == files.len() {
@@ -235,6 +241,17 @@ pub(super) fn read_runs(
         ));
     }
     Ok((runs, notes, cleaning, calibrate(&raw)))
+}
+
+/// The note of a `segment` (s) that cut no piece, the `longest` lasting
+/// less than one and a half segments: asked for and silently without
+/// effect, a segment of 1e9 s read as if it had cut the logs.
+fn uncut_note(segment: f64, longest: f64) -> String {
+    format!(
+        "segment = {} s under [runs] cut nothing: the longest piece lasts {} s, less than one and a half segments, so every piece is replayed whole",
+        crate::error::Num(segment),
+        crate::format::fixed(longest, 1)
+    )
 }
 
 /// The steer judged against the yaw rate it gives where it is held

@@ -1,0 +1,80 @@
+//! Campaign keys that are accepted but cannot mean what they say: a
+//! channel uncertainty larger than the channel's whole signal is refused
+//! at its key; one the channel's own scatter contradicts, and a segment
+//! longer than every run, are noted where the diagnosis is read.
+
+use super::*;
+use std::fs;
+
+/// A `[channels]` uncertainty of 30 rad/s on runs whose yaw rate has an
+/// RMS of 0.15 rad/s carries nothing: refused at its line, with the signal.
+#[test]
+fn an_uncertainty_above_the_channels_whole_signal_is_refused_at_its_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    let text = text.replacen("[tyres]", "[channels]\nyaw_rate = 30\n\n[tyres]", 1);
+    let line = text
+        .lines()
+        .position(|l| l == "yaw_rate = 30")
+        .unwrap()
+        + 1;
+    fs::write(&v, text).unwrap();
+    let o = run(&["diagnose", c.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains(&format!("vehicle.toml:{line}:12: `channels.yaw_rate` = 30: is at least the channel's RMS signal over the runs (0.1")),
+        "{e}"
+    );
+    assert!(e.contains("good to about 0.0017 rad/s"), "{e}");
+}
+
+/// A yaw rate stated to 1e-7 rad/s where the gyro scatters by 0.003 from
+/// sample to sample, and `segment = 1e9` on 21 s runs: both diagnosed as
+/// stated, both said in the terminal and the report.
+#[test]
+fn a_stated_uncertainty_below_the_channels_scatter_and_a_segment_that_cuts_nothing_are_noted() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap().replacen(
+        "[tyres]",
+        "[runs]\ndir = \"runs\"\nsegment = 1e9\n\n[channels]\nyaw_rate = 1e-7\n\n[tyres]",
+        1,
+    ) + "effects = [\"sensor_delay\"]\nmax_effects = 1\n";
+    fs::write(&v, text).unwrap();
+    let (stdout, d) = diagnose_campaign(&c);
+    let notes: Vec<&str> = d["notes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    let segment = notes
+        .iter()
+        .find(|n| n.starts_with("segment = "))
+        .unwrap_or_else(|| panic!("{notes:?}"));
+    assert!(
+        segment.contains("cut nothing: the longest piece lasts 21.0 s"),
+        "{segment}"
+    );
+    let stated = notes
+        .iter()
+        .find(|n| n.starts_with("[channels] yaw_rate = 1e-7 rad/s"))
+        .unwrap_or_else(|| panic!("{notes:?}"));
+    // The scatter a MEMS gyro shows, and the ratio to what is stated.
+    let scatter: f64 = stated
+        .split("scatters by ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((0.0017..0.01).contains(&scatter), "{stated}");
+    assert!(stated.contains("may dominate every fit"), "{stated}");
+    for n in [segment, stated] {
+        assert!(stdout.contains(&format!("note: {n}")), "{stdout}");
+    }
+}

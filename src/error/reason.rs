@@ -375,6 +375,9 @@ pub enum Limit {
     /// The replay step of a diagnosis.
     #[error("a replay step finer than 0.1 ms gains nothing on a log and costs memory and time in proportion, one coarser than 50 ms misses the yaw mode (a model too stiff for RK4 at the step is replayed by ROS34PW2 at it, not on a finer grid)")]
     ReplayStep,
+    /// The rate of the fits' residuals, Hz.
+    #[error("the fits compare model and runs at this rate and see motions up to half of it: a car's yaw and lateral response reach 1–2 Hz, which residuals at 4 Hz or less would miss or alias, so above 4 Hz (the default is 25 Hz; a rate above the logs' takes every sample)")]
+    ResidualRate,
     /// The most effects a verdict names.
     #[error("the verdict names up to this many effects, so at least one")]
     MaxEffects,

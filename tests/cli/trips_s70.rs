@@ -1,7 +1,9 @@
 //! Campaign keys that are accepted but cannot mean what they say: a
-//! channel uncertainty larger than the channel's whole signal is refused
-//! at its key; one the channel's own scatter contradicts, and a segment
-//! longer than every run, are noted where the diagnosis is read.
+//! channel uncertainty larger than the channel's whole signal, and a
+//! residual rate too low to see a car respond, are refused at their key;
+//! an uncertainty the channel's own scatter contradicts, a segment longer
+//! than every run and a residual rate above the logs' are noted where the
+//! diagnosis is read.
 
 use super::*;
 use std::fs;
@@ -31,9 +33,31 @@ fn an_uncertainty_above_the_channels_whole_signal_is_refused_at_its_key() {
     assert!(e.contains("good to about 0.0017 rad/s"), "{e}");
 }
 
+/// Residuals at 0.001 Hz (one per run, or none) miss every response:
+/// refused at the key, with the range.
+#[test]
+fn a_residual_rate_too_low_to_see_a_cars_response_is_refused_at_its_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap() + "sample_rate = 0.001\n";
+    let line = text.lines().count();
+    fs::write(&v, text).unwrap();
+    let o = run(&["diagnose", c.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains(&format!(
+            "vehicle.toml:{line}:15: `diagnose.sample_rate` = 0.001: must be greater than 4"
+        )),
+        "{e}"
+    );
+}
+
 /// A yaw rate stated to 1e-7 rad/s where the gyro scatters by 0.003 from
-/// sample to sample, and `segment = 1e9` on 21 s runs: both diagnosed as
-/// stated, both said in the terminal and the report.
+/// sample to sample, `segment = 1e9` on 21 s runs and residuals at 1e9 Hz
+/// on 100 Hz logs: diagnosed as stated, each said in the terminal and the
+/// report.
 #[test]
 fn a_stated_uncertainty_below_the_channels_scatter_and_a_segment_that_cuts_nothing_are_noted() {
     let dir = tempfile::tempdir().unwrap();
@@ -43,7 +67,7 @@ fn a_stated_uncertainty_below_the_channels_scatter_and_a_segment_that_cuts_nothi
         "[tyres]",
         "[runs]\ndir = \"runs\"\nsegment = 1e9\n\n[channels]\nyaw_rate = 1e-7\n\n[tyres]",
         1,
-    ) + "effects = [\"sensor_delay\"]\nmax_effects = 1\n";
+    ) + "effects = [\"sensor_delay\"]\nmax_effects = 1\nsample_rate = 1e9\n";
     fs::write(&v, text).unwrap();
     let (stdout, d) = diagnose_campaign(&c);
     let notes: Vec<&str> = d["notes"]
@@ -74,7 +98,16 @@ fn a_stated_uncertainty_below_the_channels_scatter_and_a_segment_that_cuts_nothi
         .unwrap();
     assert!((0.0017..0.01).contains(&scatter), "{stated}");
     assert!(stated.contains("may dominate every fit"), "{stated}");
-    for n in [segment, stated] {
+    // A residual rate above the logs' 100 Hz takes every sample.
+    let rate = notes
+        .iter()
+        .find(|n| n.starts_with("sample_rate = "))
+        .unwrap_or_else(|| panic!("{notes:?}"));
+    assert!(
+        rate.contains("above the runs' own rates (at most 100 Hz): every sample is a residual"),
+        "{rate}"
+    );
+    for n in [segment, stated, rate] {
         assert!(stdout.contains(&format!("note: {n}")), "{stdout}");
     }
 }

@@ -137,6 +137,8 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     )?;
     notes.splice(0..0, folder_notes);
     check_stated(&src, &f.channels, &runs)?;
+    let stated_rate = src.key_span("diagnose.sample_rate").is_some();
+    notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));
     if runs.len() < 2 {
         return Err(file_error(
             &file,
@@ -178,6 +180,9 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     })
 }
 
+/// The lowest rate of the fits' residuals, Hz ([`Limit::ResidualRate`]).
+const MIN_RESIDUAL_RATE: f64 = 4.0;
+
 /// Checks the vehicle, road, roll, diagnosis and segment values.
 fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     check_vehicle(src, &f.vehicle)?;
@@ -193,7 +198,15 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     }
     let s = &f.diagnose;
     ParamError::in_range("step", s.step, 1e-4, 0.05, Limit::ReplayStep)
-        .and_then(|_| ParamError::positive("sample_rate", s.sample_rate))
+        .and_then(|_| {
+            ParamError::in_range(
+                "sample_rate",
+                s.sample_rate,
+                MIN_RESIDUAL_RATE,
+                f64::INFINITY,
+                Limit::ResidualRate,
+            )
+        })
         .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
         .and_then(|_| {
             ParamError::in_range(
@@ -256,6 +269,27 @@ fn check_stated(
         }
     }
     Ok(())
+}
+
+/// The note of a residual rate above every run's own (by its median
+/// interval): every sample is taken, as at the runs' rate, which the user
+/// who asked for more should know.
+fn rate_note(rate: f64, runs: &[crate::measured::MeasuredRun]) -> Option<String> {
+    let highest = runs
+        .iter()
+        .filter_map(|r| {
+            let mut dt: Vec<f64> = r.t.windows(2).map(|w| w[1] - w[0]).collect();
+            (!dt.is_empty()).then(|| 1.0 / crate::measured::clean::median(&mut dt))
+        })
+        .fold(0.0_f64, f64::max);
+    (highest > 0.0 && rate > 1.01 * highest).then(|| {
+        format!(
+            "sample_rate = {} Hz under [diagnose] is above the runs' own rates (at most {} Hz): every sample is a residual, as at {} Hz",
+            crate::error::Num(rate),
+            crate::format::rounded(highest, 3),
+            crate::format::rounded(highest, 3)
+        )
+    })
 }
 
 /// The candidate effects named by `[diagnose] effects` (all by default).

@@ -306,8 +306,10 @@ impl MeasuredMetricsReport {
 /// and the notes on filtering and overshoot (a response that has not
 /// settled is a warning of the report: [`StepMetrics::settling_warning`]).
 pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
-    let opt =
-        |v: Option<f64>, scale: f64| v.map_or("—".to_string(), |x| format!("{:.4}", x * scale));
+    // `0.0000`, never `-0.0000`: a value that rounds to zero has no sign.
+    let opt = |v: Option<f64>, scale: f64| {
+        v.map_or("—".to_string(), |x| crate::format::fixed(x * scale, 4))
+    };
     let mut out = vec![
         format!(
             "  steer step               {:>10.4} deg",
@@ -334,7 +336,10 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
             "  ay response time         {:>10} s",
             opt(m.ay_response_time, 1.0)
         ),
-        format!("  yaw-rate gain            {:>10.4} 1/s", m.yaw_rate_gain),
+        format!(
+            "  yaw-rate gain            {:>10} 1/s",
+            crate::format::fixed(m.yaw_rate_gain, 4)
+        ),
         format!(
             "  steady ay                {:>10} m/s²",
             opt(m.ay_steady, 1.0)
@@ -345,8 +350,8 @@ pub(crate) fn metric_lines(m: &StepMetrics) -> Vec<String> {
         ),
         format!("  TB                       {:>10} s·deg", opt(m.tb, 1.0)),
         format!(
-            "  E_r (yaw rate)           {:>10.4} s",
-            m.yaw_rate_total_variance
+            "  E_r (yaw rate)           {:>10} s",
+            crate::format::fixed(m.yaw_rate_total_variance, 4)
         ),
         format!(
             "  E_ay                     {:>10} s",

@@ -7,7 +7,7 @@ use super::*;
 
 /// `simulate` of the bundled sedan step on a road of the given friction:
 /// the terminal and `metrics.json`.
-fn sedan_on(friction: Option<f64>) -> (String, serde_json::Value) {
+pub(super) fn sedan_on(friction: Option<f64>) -> (String, serde_json::Value) {
     let road = friction.map_or(String::new(), |mu| format!("\n[road]\nfriction = {mu}\n"));
     let dir = tempfile::tempdir().unwrap();
     let scenario = super::trips_s65::sedan(dir.path(), &road);

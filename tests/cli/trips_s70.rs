@@ -111,3 +111,28 @@ fn a_stated_uncertainty_below_the_channels_scatter_and_a_segment_that_cuts_nothi
         assert!(stdout.contains(&format!("note: {n}")), "{stdout}");
     }
 }
+
+/// The bundled sedan's 1° step on roads of friction 1e-9 and 0.1 reached
+/// μ·g and gave response times and an Er better than the car's own (0.0487
+/// s against 0.1251 s) without a word: the friction limit is said, and a
+/// sideslip that rounds to zero is printed without a sign.
+#[test]
+fn a_step_steer_held_at_the_friction_limit_is_said_to_measure_the_limit() {
+    const AT_LIMIT: &str = "the car turns at its friction limit, so the response times, the yaw-rate gain and Er describe that limit";
+    let (said, _) = super::trips_s69::sedan_on(None);
+    assert!(!said.contains(AT_LIMIT), "{said}");
+    for (mu, written) in [(1e-9, "1e-9"), (0.1, "0.1")] {
+        let (said, m) = super::trips_s69::sedan_on(Some(mu));
+        let warned = said
+            .lines()
+            .find(|l| l.contains(AT_LIMIT))
+            .unwrap_or_else(|| panic!("μ = {mu}: {said}"));
+        assert!(
+            warned.contains(&format!("on a road of friction {written}")),
+            "{warned}"
+        );
+        let ay = m["ay_steady"].as_f64().unwrap().abs();
+        assert!((ay / (mu * 9.80665) - 1.0).abs() < 0.02, "{m}");
+        assert!(!said.contains("-0.0000"), "{said}");
+    }
+}

@@ -67,6 +67,9 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     straight_running(sc, &mut said);
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
         said.warnings.extend(sliding(h, axle_friction(sc)));
+    } else if let Some(mu) = axle_friction(sc) {
+        said.warnings
+            .extend(steady_at_limit(h, mu, sc.integrator.friction));
     }
     said.warnings.extend(axle_sliding(h));
     said.warnings.extend(on_two_wheels(h));
@@ -215,6 +218,29 @@ fn sliding(h: &TimeHistory, mu: Option<[f64; 2]>) -> Option<String> {
         h.t[i],
         h.t[from]
     ))
+}
+
+/// The share of its grip the busier axle may use at the end of a step
+/// steer before its steady state is the friction limit: within 5 % the
+/// tyres are on the flat top of their curves.
+pub(super) const AT_LIMIT: f64 = 0.95;
+
+/// A step steer whose busier axle uses at least [`AT_LIMIT`] of its grip
+/// (tyres of `mu`, [`axle_friction`], on a road of friction `road`) at
+/// its last row: the steady values are the limit's (ay ≈ μg), and the
+/// response times and Er of a car that cannot turn further read as good
+/// handling (a road friction of 1e-9 gave an Er better than the car's).
+fn steady_at_limit(h: &TimeHistory, mu: [f64; 2], road: f64) -> Option<String> {
+    let k = h.len().checked_sub(1)?;
+    let used = grip_used(h, mu, k);
+    (used.is_finite() && used >= AT_LIMIT).then(|| {
+        format!(
+            "at the end of the step the busier axle uses {} % of its grip (steady ay {} m/s² on a road of friction {}): the car turns at its friction limit, so the response times, the yaw-rate gain and Er describe that limit, not the car's handling; a smaller step, or a road with more grip, measures handling",
+            crate::format::fixed(100.0 * used, 0),
+            crate::format::rounded(h.ay[k].abs(), 3),
+            crate::error::Num(road)
+        )
+    })
 }
 
 /// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest,

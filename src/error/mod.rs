@@ -46,7 +46,7 @@ pub use reason::{Limit, ParamReason, ScheduleColumn, DYNAMIC_INDEX};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;
-pub use units::{PressureMeant, UnitSlip, MAX_RIG_FRICTION};
+pub use units::{PressureMeant, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

@@ -223,7 +223,40 @@ pub enum UnitSlip {
         /// The file's median load, N.
         median: f64,
     },
+    /// A rig column whose largest force, over a sweep that reaches
+    /// `slip` (rad or slip ratio), is below [`MIN_RIG_GRIP`] of its load:
+    /// forces in kN beside loads in N, or a column scaled down.
+    #[error("column `{column}`: its largest force, {} N at fz {} N, is {} of the load over a sweep reaching a slip of {}, where every tyre makes more than {MIN_RIG_GRIP} of its load: {}", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*slip), grip_hint((value / fz).abs()))]
+    RigForcesBelowGrip {
+        /// The column (`fy`, `fx`).
+        column: &'static str,
+        /// The largest force relative to its load, N.
+        value: f64,
+        /// That sample's load, N.
+        fz: f64,
+        /// The largest slip the sweep reaches (rad, or slip ratio).
+        slip: f64,
+    },
 }
+
+/// The question a rig force of `share` of its load ends on: kN where a
+/// thousand times it is a tyre's grip.
+fn grip_hint(share: f64) -> &'static str {
+    if (MIN_RIG_GRIP..=MAX_RIG_FRICTION).contains(&(1000.0 * share)) {
+        "is the column in kN? multiply it by 1000"
+    } else {
+        "is the column scaled, or in another unit?"
+    }
+}
+
+/// The least share of its load a tyre's force reaches at a slip angle of
+/// [`MIN_RIG_SLIP`] (or that slip ratio): a truck tyre's cornering
+/// coefficient of about 5 1/rad gives 0.05 at 0.01 rad, a car's 0.13.
+pub const MIN_RIG_GRIP: f64 = 0.02;
+
+/// The slip (rad, or slip ratio) a sweep must reach for its forces to be
+/// judged against [`MIN_RIG_GRIP`].
+pub const MIN_RIG_SLIP: f64 = 0.01;
 
 /// The most a rig sample's force may be, in multiples of its load (plus a
 /// twentieth of the median load, for samples near zero load): 5, past

@@ -13,7 +13,8 @@ use super::columns::Columns;
 use super::read_columns;
 use super::rig_rows::Known;
 use crate::error::{
-    InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip, MAX_RIG_FRICTION,
+    InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP,
+    MIN_RIG_SLIP,
 };
 use crate::identify::data::RigData;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
@@ -105,6 +106,38 @@ fn check_friction(
             c.error_at(path, i, column, slip.into())
         })
         .collect()
+}
+
+/// Refuses a sweep (`slip`, `force`) reaching [`MIN_RIG_SLIP`] whose
+/// largest force is below [`MIN_RIG_GRIP`] of its load, at that row: a
+/// force column in kN beside loads in N fitted to a tyre of friction 0.001
+/// and was written as a good fit.
+fn check_grip(
+    path: &Path,
+    c: &Columns,
+    column: &'static str,
+    (slip, force): (&[f64], &[f64]),
+    fz: &[f64],
+) -> Result<(), InputError> {
+    let reach = slip
+        .iter()
+        .filter(|s| s.is_finite())
+        .fold(0.0_f64, |m, s| m.max(s.abs()));
+    let share = |i: usize| (force[i] / fz[i]).abs();
+    let on_road = (0..force.len()).filter(|&i| fz[i] > 0.0 && force[i].is_finite());
+    let Some(i) = on_road.max_by(|&a, &b| share(a).total_cmp(&share(b))) else {
+        return Ok(());
+    };
+    if reach < MIN_RIG_SLIP || share(i) >= MIN_RIG_GRIP {
+        return Ok(());
+    }
+    let slip = crate::error::UnitSlip::RigForcesBelowGrip {
+        column,
+        value: force[i],
+        fz: fz[i],
+        slip: reach,
+    };
+    Err(c.error_at(path, i, column, slip.into()))
 }
 
 /// Refuses `errors` together, in file order, if any.
@@ -228,6 +261,12 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         errors.extend(check_friction(path, &c, column, values, &fz, median));
     }
     refuse_all(path, errors)?;
+    let sweeps = [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())];
+    for (column, sweep) in sweeps {
+        if let Some((slip, force)) = sweep {
+            check_grip(path, &c, column, (slip, force), &fz)?;
+        }
+    }
     check_signs(
         path,
         &c,

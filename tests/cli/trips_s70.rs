@@ -17,11 +17,7 @@ fn an_uncertainty_above_the_channels_whole_signal_is_refused_at_its_key() {
     let v = c.join("vehicle.toml");
     let text = fs::read_to_string(&v).unwrap();
     let text = text.replacen("[tyres]", "[channels]\nyaw_rate = 30\n\n[tyres]", 1);
-    let line = text
-        .lines()
-        .position(|l| l == "yaw_rate = 30")
-        .unwrap()
-        + 1;
+    let line = text.lines().position(|l| l == "yaw_rate = 30").unwrap() + 1;
     fs::write(&v, text).unwrap();
     let o = run(&["diagnose", c.to_str().unwrap()]);
     assert!(!o.status.success());

@@ -241,14 +241,22 @@ pub enum InputProblem {
         /// What the range's ends are.
         why: &'static str,
     },
-    /// A tyre model that gives a non-finite output at a point.
-    #[error("the {model} tyre gives a non-finite `{output}` at this point")]
+    /// A tyre model that gives a non-finite output at a point; at a load
+    /// so small that its square underflows (`tiny_load`), that load is
+    /// the cause, said with it.
+    #[error("the {model} tyre gives a non-finite `{output}` at this point{}", tiny_load.map_or(String::new(), |fz| format!(": fz = {} N is a load so small that the model's load terms underflow to 0 (no tyre on the road carries it; a wheel off the road is fz ≤ 0)", Num(fz))))]
     NonFiniteOutput {
         /// The tyre model.
         model: &'static str,
         /// The output column.
         output: &'static str,
+        /// The point's load, N, where it is positive and so small that its
+        /// square underflows.
+        tiny_load: Option<f64>,
     },
+    /// A points CSV given where `tyre-eval` takes its tyre file.
+    #[error("not a tyre file (.tir/.toml): it looks like a points CSV; the order is `tyre-eval <tyre> <points>`")]
+    PointsAsTyre,
     /// A load a Magic Formula file's vertical model carries at no loaded
     /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
     #[error("fz = {} N is more than the tyre's vertical model carries: {} N at a deflection of its whole free radius ({} m), so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), significant(*most, 4), significant(*free, 4))]

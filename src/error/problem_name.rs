@@ -37,6 +37,7 @@ impl InputProblem {
             InputProblem::NegativeSpeed { .. } => "NegativeSpeed",
             InputProblem::NotPhysical { .. } => "NotPhysical",
             InputProblem::NonFiniteOutput { .. } => "NonFiniteOutput",
+            InputProblem::PointsAsTyre => "PointsAsTyre",
             InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
             InputProblem::PressureCarriesNoLoad { .. } => "PressureCarriesNoLoad",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",

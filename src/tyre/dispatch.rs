@@ -211,6 +211,11 @@ impl Tyre {
         self.as_model().has_wheel_moments()
     }
 
+    /// The loads the model is meant for ([`super::ModelParameters::load_range`]).
+    pub fn load_range(&self) -> Option<super::LoadRange> {
+        self.as_model().load_range()
+    }
+
     /// Forces and moments at one point; `pressure` (Pa) is read by the
     /// Magic Formula only (`None`: the file's inflation pressure).
     pub(crate) fn point_forces(&self, s: &SlipState, pressure: Option<f64>) -> PointForces {

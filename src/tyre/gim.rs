@@ -16,8 +16,8 @@
 //! Units: N, N/rad, m, rad. Signs as in `tyre/mod.rs`.
 
 use super::{
-    safe_tan, safe_tan_of, Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
-    SlipState, TyreForces, TyreModel,
+    safe_tan, safe_tan_of, Block, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,
+    SlipOf, SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
 use num_dual::DualNum;
@@ -211,6 +211,16 @@ impl ModelParameters for Gim {
     }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
+    }
+    /// Around its `reference_load` where the stiffness depends on the
+    /// load; a stiffness that does not (`load_exponent = 0`, Wang &
+    /// Liang's) holds at no load in particular.
+    fn load_range(&self) -> Option<LoadRange> {
+        Some(if self.load_exponent == 0.0 {
+            LoadRange::any_tyre(<Self as Model>::NAME)
+        } else {
+            LoadRange::of_nominal("reference_load", self.reference_load)
+        })
     }
     /// The contact length acts on Mz only (it is the aligning block), and
     /// the load exponent needs more than one load.

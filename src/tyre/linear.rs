@@ -10,7 +10,8 @@
 //! Hoosier rig file).
 
 use super::{
-    LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces, TyreModel,
+    LateralForceOf, LoadRange, Model, ModelParameters, Parameterised, SlipOf, SlipState,
+    TyreForces, TyreModel,
 };
 use crate::error::ParamError;
 use num_dual::DualNum;
@@ -110,6 +111,10 @@ impl ModelParameters for Linear {
     }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
+    }
+    /// Its force does not depend on the load: no load of its own.
+    fn load_range(&self) -> Option<LoadRange> {
+        Some(LoadRange::any_tyre(<Self as Model>::NAME))
     }
 }
 

@@ -9,7 +9,8 @@
 //! Units: B in 1/rad, C and D dimensionless, Fz in N. Odd in α.
 
 use super::{
-    LateralForceOf, Model, ModelParameters, Parameterised, SlipOf, SlipState, TyreForces, TyreModel,
+    LateralForceOf, LoadRange, Model, ModelParameters, Parameterised, SlipOf, SlipState,
+    TyreForces, TyreModel,
 };
 use crate::error::{Limit, ParamError};
 use num_dual::DualNum;
@@ -114,6 +115,11 @@ impl ModelParameters for MagicSimple {
     /// does not depend on it.
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.b *= k;
+    }
+    /// Its force is proportional to the load at every slip (852 kN at
+    /// 1 MN): no load of its own.
+    fn load_range(&self) -> Option<LoadRange> {
+        Some(LoadRange::any_tyre(<Self as Model>::NAME))
     }
 }
 

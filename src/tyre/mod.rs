@@ -41,6 +41,7 @@ mod erased;
 mod generate;
 mod gim;
 mod linear;
+pub mod load_range;
 mod magic_simple;
 pub mod mf;
 mod name;
@@ -57,6 +58,7 @@ pub use pac89::{Pac89, Pac89Form};
 pub use unitire::{UniTire, UniTireLateral, UniTireLongitudinal};
 
 pub use erased::Erased;
+pub use load_range::LoadRange;
 pub use name::ModelName;
 pub use registry::{model_names, models, register, swarm_models, ModelEntry, Tyre};
 
@@ -415,6 +417,13 @@ pub trait ModelParameters: TyreModel + Parameterised {
     /// True when [`ModelParameters::point_forces`] gives `mx` and `my`.
     fn has_wheel_moments(&self) -> bool {
         false
+    }
+
+    /// The loads the model is meant for ([`LoadRange`]); `None` where the
+    /// model says its ranges itself (a Magic Formula file's `FZMIN`,
+    /// `FZMAX`) or states none.
+    fn load_range(&self) -> Option<LoadRange> {
+        None
     }
 }
 

@@ -23,8 +23,8 @@
 //! does not depend on the road). The offsets Sh, Sv make the model not odd.
 
 use super::{
-    Block, Identification, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
-    SlipState, TyreForces, TyreModel,
+    Block, Identification, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,
+    SlipOf, SlipState, TyreForces, TyreModel,
 };
 use crate::error::{ParamError, ParamReason};
 use num_dual::DualNum;
@@ -450,6 +450,38 @@ impl ModelParameters for Pac89 {
     /// D, BCD and E are functions of the load: three loads.
     fn loads_needed(&self) -> usize {
         3
+    }
+    /// PAC89 states no nominal load; its peak forces `(a1·Fz + a2)·Fz` and
+    /// `(b1·Fz + b2)·Fz` (Fz in kN) stop growing with the load at
+    /// `−a2/(2·a1)` and `−b2/(2·b1)` where `a1`, `b1` < 0, and past it
+    /// more load gives less grip, which no tyre does (the Adams example's
+    /// lateral force falls from 10.3 kN at 15 kN to 2.7 kN at 1 MN). The
+    /// lighter of those is the heaviest load, 1 % of it the lightest.
+    fn load_range(&self) -> Option<LoadRange> {
+        let peak = |k1: f64, k2: f64, name: &str| {
+            (k1 < 0.0 && k2 > 0.0).then(|| (-k2 / (2.0 * k1) * 1000.0, name.to_string()))
+        };
+        let lateral = peak(self.a[1], self.a[2], "lateral force (−a2/(2·a1)");
+        let longitudinal = self
+            .b
+            .and_then(|b| peak(b[1], b[2], "longitudinal force (−b2/(2·b1)"));
+        let Some((hi, which)) = [lateral, longitudinal]
+            .into_iter()
+            .flatten()
+            .min_by(|x, y| x.0.total_cmp(&y.0))
+        else {
+            return Some(LoadRange::any_tyre(<Self as Model>::NAME));
+        };
+        let lo = super::load_range::LIGHT_SHARE * hi;
+        Some(LoadRange {
+            lo,
+            hi,
+            basis: format!(
+                "it states no nominal load: up to where its peak {which} = {} N) stops growing with the load, from {} % of that",
+                crate::format::rounded(hi, 6),
+                crate::format::rounded(100.0 * super::load_range::LIGHT_SHARE, 2)
+            ),
+        })
     }
     fn lateral_free(&self, _loads: usize, cambers: usize) -> Vec<bool> {
         (0..14)

@@ -20,8 +20,8 @@
 //! The road friction scales the final μ. Odd in α and in Sx.
 
 use super::{
-    safe_tan, safe_tan_of, Block, LateralForceOf, Model, ModelParameters, Parameterised, SlipOf,
-    SlipState, TyreForces, TyreModel,
+    safe_tan, safe_tan_of, Block, LateralForceOf, LoadRange, Model, ModelParameters, Parameterised,
+    SlipOf, SlipState, TyreForces, TyreModel,
 };
 use crate::error::ParamError;
 use num_dual::DualNum;
@@ -351,6 +351,11 @@ impl ModelParameters for UniTire {
     }
     fn lateral_free(&self, _loads: usize, _cambers: usize) -> Vec<bool> {
         without_sliding_law()
+    }
+    /// Around its rated load: past a few times it the friction
+    /// `p6·exp(−Fzn/p7)` takes the force to nothing (0.0003 N at 1 MN).
+    fn load_range(&self) -> Option<LoadRange> {
+        Some(LoadRange::of_nominal("rated_load", self.rated_load))
     }
     /// p2 enters as (Fzn/p2)² only: its sign is conventional positive.
     fn canonicalise(&mut self) {

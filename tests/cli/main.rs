@@ -351,6 +351,7 @@ mod trips_simulate;
 mod trips_units;
 mod tyre_eval;
 mod tyre_eval_beyond;
+mod tyre_eval_loads;
 mod user_trips;
 
 /// Runs `synth` with `args` into `dir/name` and returns the campaign folder.

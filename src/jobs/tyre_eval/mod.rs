@@ -29,7 +29,8 @@
 //! column the model does not read (`unread.rs`: a Gim tyre's camber), and
 //! the points beyond the ranges of the rig data a TOML tyre was fitted to
 //! (its `[fitted_ranges]`, which `identify` writes), evaluated by
-//! extrapolation, and a slip stiffness that changes sign inside the loads
+//! extrapolation, or else beyond the loads its model is meant for
+//! (`model_loads.rs`), and a slip stiffness that changes sign inside the loads
 //! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N),
 //! and (`checks.rs`) a tyre with no longitudinal force evaluated at a slip
 //! ratio, a Magic Formula file with no overturning or rolling resistance
@@ -43,7 +44,9 @@ mod camber;
 mod checks;
 mod friction;
 mod light_load;
+mod model_loads;
 mod not_carried;
+mod order;
 mod physical;
 mod pressure;
 mod ranges;
@@ -57,6 +60,7 @@ pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
 pub use light_load::{LightLoad, LoadFloor, LIGHT_LOAD_SHARE};
+pub use model_loads::LoadsLeft;
 pub use physical::PHYSICAL;
 pub use standstill::{AtRest, StandstillMz, STANDSTILL};
 pub use stiffness::{AgainstSlip, SignChange};
@@ -92,6 +96,9 @@ pub struct TyreEvalReport {
     pub clamped: usize,
     /// The ranges those points leave, each with its count and first point.
     pub ranges_left: Vec<ranges::RangeLeft>,
+    /// The points outside the loads a TOML tyre's model is meant for, by
+    /// side (`model_loads.rs`).
+    pub loads_left: Vec<LoadsLeft>,
     /// Points at a positive load below a Magic Formula file's floor (its
     /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
     pub light_load: Option<LightLoad>,
@@ -307,7 +314,14 @@ fn refuse_non_finite(
     let errors = bad
         .into_iter()
         .map(|(i, output)| {
-            let problem = InputProblem::NonFiniteOutput { model, output };
+            // A positive load whose square underflows is the cause, said.
+            let fz = columns[0].1[i];
+            let tiny_load = (fz > 0.0 && fz * fz < f64::MIN_POSITIVE).then_some(fz);
+            let problem = InputProblem::NonFiniteOutput {
+                model,
+                output,
+                tiny_load,
+            };
             file.error_at(points, i, "fz", problem)
         })
         .collect();
@@ -328,6 +342,7 @@ pub fn run(
 ) -> Result<TyreEvalReport, Error> {
     refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
     crate::error::OutputError::unless_a_file(out, "forces", "csv")?;
+    order::refuse_points_as_tyre(tyre_path)?;
     let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
     if let Some(code) = mode {
         set_tyre_mode(&mut tyre, code).map_err(|why| Error::Options(why.into()))?;
@@ -360,6 +375,7 @@ pub fn run(
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
     let light_load = light_load::light_load(&tyre, fz, &file.lines);
+    let loads_left = model_loads::loads_left(&tyre, fitted_ranges.as_ref(), fz, &file.lines);
     let camber_read = !unread.iter().any(|u| u.column == "camber");
     let steep_camber = camber::steep_camber(
         &tyre,
@@ -406,6 +422,7 @@ pub fn run(
         mode,
         clamped,
         ranges_left,
+        loads_left,
         light_load,
         steep_camber,
         off_road,
@@ -478,6 +495,11 @@ impl TyreEvalReport {
         out.extend(self.at_rest.iter().map(|a| a.line(self.count)));
         out.extend(self.standstill_mz.iter().map(StandstillMz::line));
         out.extend(self.ranges_left.iter().map(|r| r.line(self.count)));
+        out.extend(
+            self.loads_left
+                .iter()
+                .map(|l| l.line(self.count, self.model)),
+        );
         out.extend(self.light_load.iter().map(|l| l.line(self.count)));
         out.extend(
             self.steep_camber
@@ -508,27 +530,28 @@ impl TyreEvalReport {
     /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
-            // MFeval takes the rolling resistance and the loaded radius at
-            // the load given, not the one saturated to FZMAX: said, or a
-            // 1 MN point's `my` or `rl` reads as one evaluated at the
-            // file's range.
+            // MFeval takes the rolling resistance at the load given, not the
+            // one saturated to FZMAX: said, or a 1 MN point's `my` reads as
+            // one evaluated at the file's range. The loaded radius is held
+            // at FZMAX with the forces (MFeval's grows past the free
+            // radius there): said too.
             Some(m) if self.clamped > 0 => {
-                let given: Vec<String> = ["my", "rl"]
-                    .into_iter()
-                    .filter(|k| self.columns.iter().any(|(n, _)| n == k))
-                    .map(|k| format!("`{k}`"))
-                    .collect();
+                let has = |k: &str| self.columns.iter().any(|(n, _)| *n == k);
+                let notes: Vec<&str> = [
+                    (has("my"), "`my` at the load given, as MFeval does"),
+                    (has("rl"), "`rl` at FZMAX above it, as the forces"),
+                ]
+                .into_iter()
+                .filter_map(|(has, note)| has.then_some(note))
+                .collect();
+                let notes = match notes.is_empty() {
+                    true => String::new(),
+                    false => format!(" ({})", notes.join("; ")),
+                };
                 format!(
                     " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
-                     camber or pressure, evaluated at the ranges' ends{}",
+                     camber or pressure, evaluated at the ranges' ends{notes}",
                     self.clamped,
-                    match given.is_empty() {
-                        false => format!(
-                            " ({} at the load given, as MFeval does)",
-                            given.join(" and ")
-                        ),
-                        true => String::new(),
-                    }
                 )
             }
             Some(m) => format!(" in MFeval mode {m}"),

@@ -9,10 +9,13 @@
 //! beyond one is evaluated at that end, except a load below `FZMIN`, which
 //! MFeval (as TNO's MF-Tyre) does not saturate: its forces are evaluated at
 //! the load given, only the pneumatic trail at `FZMIN` and the rolling and
-//! overturning moments scaled down below it.
+//! overturning moments scaled down below it; a 6.x file with `QSY7 = 0`
+//! has a rolling resistance that does not depend on the load (TNO eq. A48:
+//! `My ∝ (Fz/Fz0)^QSY7`; the public `Truck_430_50R38.tir` gives −201.93 N·m
+//! from 1 N to 60 kN), which the words say with its value instead.
 
 use crate::format::{plural, rounded};
-use crate::tyre::mf::{InputRange, MfInput};
+use crate::tyre::mf::{InputRange, MfInput, MfVersion};
 use crate::tyre::MagicFormula;
 use serde::Serialize;
 
@@ -33,6 +36,9 @@ pub struct RangeLeft {
     /// The limit checks were off (mode 2xx): the points were evaluated at
     /// the values given, past the range, not at its end.
     pub as_given: bool,
+    /// Below `FZMIN` of a file whose rolling resistance does not depend on
+    /// the load (`QSY7 = 0`): its `my` at the first such point, N·m.
+    pub load_free_my: Option<f64>,
 }
 
 /// The ranges of `tyre` the points `inputs` (at file lines `lines`) leave,
@@ -55,6 +61,9 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
                     first_value: value,
                     below,
                     as_given,
+                    load_free_my: (below && range.column == "fz")
+                        .then(|| load_free_my(tyre, q))
+                        .flatten(),
                 }),
             }
         }
@@ -65,7 +74,30 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
     out
 }
 
+/// What a Magic Formula evaluates below `FZMIN`.
+const BELOW_FZMIN: &str = "fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and";
+
+/// The rolling resistance of `tyre` at `q` where it does not depend on
+/// the load: a 6.x file's `(Fz/Fz0)^QSY7` with `QSY7 = 0` (a 5.2 file's
+/// `My` is proportional to the load whatever its `QSY7`).
+fn load_free_my(tyre: &MagicFormula, q: &MfInput) -> Option<f64> {
+    let c = &tyre.coefficients;
+    (tyre.version != MfVersion::Mf52 && c.QSY7 == 0.0).then(|| tyre.evaluate(q).my)
+}
+
 impl RangeLeft {
+    /// What the points below `FZMIN` were evaluated at: the rolling
+    /// resistance said with its value where it does not depend on the load.
+    fn below_fzmin(&self) -> String {
+        match self.load_free_my {
+            Some(my) => format!(
+                "{BELOW_FZMIN} the overturning moment scaled down below it; this file's rolling resistance does not depend on the load (QSY7 = 0): my = {} N·m at the first of them, the same at any load",
+                rounded(my, 6)
+            ),
+            None => format!("{BELOW_FZMIN} the rolling and overturning moments scaled down below it"),
+        }
+    }
+
     /// The range in words, of `count` points.
     pub fn line(&self, count: usize) -> String {
         let r = &self.range;
@@ -82,11 +114,11 @@ impl RangeLeft {
         // 2 MPa pressure is evaluated at PRESMAX): both said.
         let (evaluated, at) = match (r.column, self.below) {
             _ if self.as_given => (
-                "evaluated at the value given, past the range (the limit checks off, mode 2xx): an extrapolation of the file",
+                "evaluated at the value given, past the range (the limit checks off, mode 2xx): an extrapolation of the file".to_string(),
                 String::new(),
             ),
-            ("fz", true) => ("fx and fy evaluated at the load given (MFeval saturates the load only at FZMAX), the pneumatic trail at FZMIN and the rolling and overturning moments scaled down below it", String::new()),
-            _ => ("evaluated at that end", format!(" given, evaluated at {}{unit}", end(bound))),
+            ("fz", true) => (self.below_fzmin(), String::new()),
+            _ => ("evaluated at that end".to_string(), format!(" given, evaluated at {}{unit}", end(bound))),
         };
         format!(
             "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}{at}",

@@ -132,3 +132,86 @@ fn a_step_steer_held_at_the_friction_limit_is_said_to_measure_the_limit() {
         assert!(!said.contains("-0.0000"), "{said}");
     }
 }
+
+/// The proving ground's rig data with `fy` in kN beside `fz` in N fitted
+/// to a tyre of friction 0.001 and was written with "σ 3.7 %": refused at
+/// the row of its largest force, with the unit named; scaled by 1e-9 the
+/// question is the scale.
+#[test]
+fn rig_forces_a_thousand_times_too_small_are_refused_as_kilonewtons() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let text = fs::read_to_string(c.join("tyre_rig.csv")).unwrap();
+    for (scale, asked) in [
+        (1e-3, "is the column in kN? multiply it by 1000"),
+        (1e-9, "is the column scaled, or in another unit?"),
+    ] {
+        let mut rows = text.lines();
+        let mut out = vec![rows.next().unwrap().to_string()];
+        out.extend(rows.map(|r| {
+            let v: Vec<f64> = r.split(',').map(|x| x.parse().unwrap()).collect();
+            format!("{},{},{}", v[0], v[1], v[2] * scale)
+        }));
+        let rig = dir.path().join(format!("rig_{scale}.csv"));
+        fs::write(&rig, out.join("\n") + "\n").unwrap();
+        let o = run(&[
+            "identify",
+            rig.to_str().unwrap(),
+            "--model",
+            "magic-simple",
+            "--out",
+            dir.path().join("t.toml").to_str().unwrap(),
+        ]);
+        assert!(!o.status.success());
+        let e = stderr(&o);
+        assert!(e.contains(&format!("rig_{scale}.csv:")), "{e}");
+        assert!(
+            e.contains("column `fy`: its largest force") && e.contains(asked),
+            "{e}"
+        );
+        assert!(!dir.path().join("t_magic-simple.toml").exists());
+    }
+}
+
+/// MFeval's loaded radius at a load far past `FZMAX` (1 MN on the public
+/// FSAE tyre) is 2.39 m, ten times the free radius: written as MFeval
+/// gives it, and said, with the first point.
+#[test]
+fn a_loaded_radius_above_the_free_radius_is_said() {
+    let Some(tir) = shared_data(
+        "a_loaded_radius_above_the_free_radius_is_said",
+        "tir_public/fsae190_50R10.tir",
+    ) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("p.csv");
+    fs::write(
+        &points,
+        "fz,kappa,alpha,camber,speed\n1000,0,0,0,16.7\n100000,0,0,0,16.7\n999999,0,0,0,16.7\n",
+    )
+    .unwrap();
+    let out = dir.path().join("f.csv");
+    let o = run(&[
+        "tyre-eval",
+        tir.to_str().unwrap(),
+        points.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stderr(&o);
+    let rl: Vec<f64> = fs::read_to_string(&out)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
+        .collect();
+    // Below the free radius up to 100 kN, past it at 1 MN (MFeval's).
+    assert!(rl[0] < 0.2332 && rl[1] < 0.2332 && rl[2] > 2.0, "{rl:?}");
+    assert!(
+        said.contains("warning: 1 of 3 points on the road with a loaded radius rl above the free radius UNLOADED_RADIUS = 0.2332 m")
+            && said.contains("the first at line 4, fz = 999999 N, rl = 2.386 m"),
+        "{said}"
+    );
+}

@@ -3,9 +3,8 @@
 //! `.tir` file's `FZMIN` and `FZMAX` are); a `.tir` file whose rolling
 //! resistance does not depend on the load says so below `FZMIN`, and a
 //! load so small its square underflows is named as the cause of a
-//! non-finite output; the loaded radius above `FZMAX` is held there and
-//! never exceeds the free radius; a points CSV given as the tyre file is
-//! refused with the order of the arguments.
+//! non-finite output; a points CSV given as the tyre file is refused with
+//! the order of the arguments.
 
 use super::*;
 use crate::tyre_eval::{column, eval};
@@ -95,29 +94,6 @@ fn a_load_whose_square_underflows_is_named_as_the_cause_of_a_non_finite_my() {
         stderr(&o).contains("p.csv:4:1: the magic-formula tyre gives a non-finite `my` at this point: fz = 1e-290 N is a load so small that the model's load terms underflow to 0"),
         "{}",
         stderr(&o)
-    );
-}
-
-#[test]
-fn the_loaded_radius_above_fzmax_is_held_there_below_the_free_radius() {
-    let test = "the_loaded_radius_above_fzmax_is_held_there_below_the_free_radius";
-    let Some(tir) = shared_data(test, "tir_public/fsae190_50R10.tir") else {
-        return;
-    };
-    let dir = tempfile::tempdir().unwrap();
-    let csv = "fz,kappa,alpha,camber,speed\n10000,0,0,0,16.7\n12000,0,0,0,16.7\n100000,0,0,0,16.7\n999999,0,0,0,16.7\n";
-    let (o, written) = eval(dir.path(), &tir, csv, &[]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let rl = column(&written, "rl");
-    // UNLOADED_RADIUS = 0.23323 m; MFeval's radius at 1 MN is 2.39 m.
-    assert!(rl.iter().all(|r| *r < 0.23323), "{rl:?}");
-    assert!(rl.iter().all(|r| *r == rl[0]), "{rl:?}");
-    let all = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
-    assert!(
-        all.contains(
-            "(`my` at the load given, as MFeval does; `rl` at FZMAX above it, as the forces)"
-        ),
-        "{all}"
     );
 }
 

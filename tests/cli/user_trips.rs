@@ -206,7 +206,7 @@ fn tyre_eval_says_the_rolling_resistance_keeps_the_load_given() {
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
-        said.contains("1 of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends (`my` at the load given, as MFeval does; `rl` at FZMAX above it, as the forces)"),
+        said.contains("1 of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends (`my` and `rl` at the load given, as MFeval does)"),
         "{said}"
     );
     // And it does: `my` grows with the load given, the forces do not.

@@ -49,6 +49,7 @@ mod not_carried;
 mod order;
 mod physical;
 mod pressure;
+mod radius;
 mod ranges;
 mod standstill;
 mod stiffness;
@@ -99,6 +100,8 @@ pub struct TyreEvalReport {
     /// The points outside the loads a TOML tyre's model is meant for, by
     /// side (`model_loads.rs`).
     pub loads_left: Vec<LoadsLeft>,
+    /// Points whose loaded radius exceeds the free radius (`radius.rs`).
+    pub radius_above_free: Option<radius::RadiusAboveFree>,
     /// Points at a positive load below a Magic Formula file's floor (its
     /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
     pub light_load: Option<LightLoad>,
@@ -375,6 +378,8 @@ pub fn run(
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
     let extras = magic_formula_extras(&tyre, &given, &file.lines);
     let light_load = light_load::light_load(&tyre, fz, &file.lines);
+    let radius_above_free =
+        radius::above_free(&tyre, extras.loaded_radius.as_deref(), fz, &file.lines);
     let loads_left = model_loads::loads_left(&tyre, fitted_ranges.as_ref(), fz, &file.lines);
     let camber_read = !unread.iter().any(|u| u.column == "camber");
     let steep_camber = camber::steep_camber(
@@ -423,6 +428,7 @@ pub fn run(
         clamped,
         ranges_left,
         loads_left,
+        radius_above_free,
         light_load,
         steep_camber,
         off_road,
@@ -501,6 +507,7 @@ impl TyreEvalReport {
                 .map(|l| l.line(self.count, self.model)),
         );
         out.extend(self.light_load.iter().map(|l| l.line(self.count)));
+        out.extend(self.radius_above_free.iter().map(|r| r.line(self.count)));
         out.extend(
             self.steep_camber
                 .iter()
@@ -530,28 +537,27 @@ impl TyreEvalReport {
     /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
-            // MFeval takes the rolling resistance at the load given, not the
-            // one saturated to FZMAX: said, or a 1 MN point's `my` reads as
-            // one evaluated at the file's range. The loaded radius is held
-            // at FZMAX with the forces (MFeval's grows past the free
-            // radius there): said too.
+            // MFeval takes the rolling resistance and the loaded radius at
+            // the load given, not the one saturated to FZMAX: said, or a
+            // 1 MN point's `my` or `rl` reads as one evaluated at the
+            // file's range.
             Some(m) if self.clamped > 0 => {
-                let has = |k: &str| self.columns.iter().any(|(n, _)| *n == k);
-                let notes: Vec<&str> = [
-                    (has("my"), "`my` at the load given, as MFeval does"),
-                    (has("rl"), "`rl` at FZMAX above it, as the forces"),
-                ]
-                .into_iter()
-                .filter_map(|(has, note)| has.then_some(note))
-                .collect();
-                let notes = match notes.is_empty() {
-                    true => String::new(),
-                    false => format!(" ({})", notes.join("; ")),
-                };
+                let given: Vec<String> = ["my", "rl"]
+                    .into_iter()
+                    .filter(|k| self.columns.iter().any(|(n, _)| n == k))
+                    .map(|k| format!("`{k}`"))
+                    .collect();
                 format!(
                     " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
-                     camber or pressure, evaluated at the ranges' ends{notes}",
+                     camber or pressure, evaluated at the ranges' ends{}",
                     self.clamped,
+                    match given.is_empty() {
+                        false => format!(
+                            " ({} at the load given, as MFeval does)",
+                            given.join(" and ")
+                        ),
+                        true => String::new(),
+                    }
                 )
             }
             Some(m) => format!(" in MFeval mode {m}"),

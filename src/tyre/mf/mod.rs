@@ -282,8 +282,7 @@ impl MagicFormula {
     /// and at a non-finite load, and at a load the vertical model does not
     /// carry ([`Self::loaded_radius_or_not_carried`]). At zero or negative
     /// load (the wheel off the road) it is the free-spinning radius `RΩ` at
-    /// zero load; above `FZMAX` with the limit checks on, the radius at
-    /// `FZMAX` (where MFeval's grows past the free radius).
+    /// zero load.
     pub fn loaded_radius(&self, p: &MfInput) -> Option<f64> {
         self.loaded_radius_or_not_carried(p)?.ok()
     }
@@ -324,18 +323,10 @@ impl MagicFormula {
         let o = self.evaluate_iso(p.fz, gamma, pressure, 1.0, p.kappa, alpha, p.speed);
         let checked = self.checked(p.fz, gamma, pressure);
         let dpi = (checked.p - c.NOMPRES) / c.NOMPRES;
-        // The radii at the load the deflection is solved for (FZMAX above
-        // it, with the limit checks on), so that `rl` is held at FZMAX as
-        // the forces are. MFeval takes them at the load given: past FZMAX
-        // its effective radius `RΩ − (Fz0/Cz)·(DREFF·atan(BREFF·Fz/Fz0) +
-        // FREFF·Fz/Fz0)` falls through 0, the wheel speed `Vx/Re` and with
-        // it the centrifugal growth of `RΩ` blow up, and its `rl` jumps
-        // past the free radius (2.39 m on the public fsae190_50R10.tir at
-        // 1 MN, free radius 0.233 m): no radius of the tyre.
         let state = vertical::VerticalState {
             gamma: checked.gamma,
             dpi,
-            radii: vertical::radii(c, checked.fz, p.kappa, p.speed, dpi),
+            radii: vertical::radii(c, p.fz, p.kappa, p.speed, dpi),
             fx: o.fx,
             fy: o.fy,
         };

@@ -86,6 +86,7 @@ pub fn run_with_degrees(
             (run, m)
         }
     };
+    let clock = run.t.clone();
     // An `ay` that disagrees with u·r is measured again without it.
     if let Some(w) = m.ay_disagreement() {
         run.ay = None;
@@ -105,12 +106,7 @@ pub fn run_with_degrees(
         ));
     }
     let piece = m.t_end - m.t_start;
-    if settings.variance_window > piece {
-        m.warnings.push(format!(
-            "the total-variance window, {} s, is longer than the measured piece ({piece:.2} s): the variances are over what was recorded",
-            crate::error::Num(settings.variance_window)
-        ));
-    }
+    m.warnings.extend(windows_said(&m.metrics, settings, &clock, m.t_end));
     m.warnings.extend(noise_in_variance(
         &m.metrics,
         settings.variance_window.min(piece),
@@ -128,6 +124,46 @@ pub fn run_with_degrees(
         t_start: m.t_start,
         t_end: m.t_end,
     })
+}
+
+/// The windows the run cannot honour as asked, each said: a total-variance
+/// window that runs past the measured piece's end (from the steer's time
+/// zero, a little after its onset) or ends before the yaw rate has
+/// responded (Er is then the start of a response, 0 s at a window of 5 ms),
+/// and an initial or steady window shorter than two of the run's sample
+/// intervals (t, s), whose mean is one noisy sample.
+fn windows_said(m: &StepMetrics, s: &MetricSettings, t: &[f64], t_end: f64) -> Vec<String> {
+    let mut said = Vec::new();
+    let window = s.variance_window;
+    if m.time_zero + window > t_end {
+        said.push(format!(
+            "the total-variance window, {} s from the steer's onset, runs past the end of the measured piece at {} s: the variances are over what was recorded",
+            crate::error::Num(window),
+            crate::format::fixed(t_end, 2)
+        ));
+    }
+    if window < m.yaw_rate_response_time {
+        said.push(format!(
+            "the total-variance window, {} s, ends before the yaw rate responds (its response time is {} s): E_r, E_ay and Er measure only the start of the response; the default is 4 s",
+            crate::error::Num(window),
+            crate::format::fixed(m.yaw_rate_response_time, 3)
+        ));
+    }
+    let mut dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    if dt.is_empty() {
+        return said;
+    }
+    let dt = crate::measured::clean::median(&mut dt);
+    for (name, w) in [("initial", s.pre_window), ("steady", s.steady_window)] {
+        if w < 2.0 * dt {
+            said.push(format!(
+                "the {name} window, {} s, is shorter than two of the run's sample intervals ({} s): its mean is one sample, with all its noise",
+                crate::error::Num(w),
+                crate::format::rounded(dt, 3)
+            ));
+        }
+    }
+    said
 }
 
 /// The first step of a run that holds several ([`steps::several_steps`]),

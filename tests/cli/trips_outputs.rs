@@ -79,10 +79,30 @@ fn metrics_options_the_run_cannot_honour_are_refused_or_said() {
     let o = metrics("--variance-window", "1e308");
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(
-        stderr(&o).contains("warning: the total-variance window, 1e308 s, is longer than the measured piece (6.00 s)"),
+        stderr(&o).contains("warning: the total-variance window, 1e308 s from the steer's onset, runs past the end of the measured piece at 6.00 s"),
         "{}",
         stderr(&o)
     );
+    // A window of 5 ms gave Er 0.0000 s and one of 1e-300 s a one-sample
+    // steady mean, without a word.
+    let o = metrics("--variance-window", "0.005");
+    assert!(
+        stderr(&o).contains("warning: the total-variance window, 0.005 s, ends before the yaw rate responds (its response time is 0.1"),
+        "{}",
+        stderr(&o)
+    );
+    for (option, name) in [("--steady-window", "steady"), ("--pre-window", "initial")] {
+        let o = metrics(option, "1e-300");
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains(&format!("warning: the {name} window, 1e-300 s, is shorter than two of the run's sample intervals")),
+            "{}",
+            stderr(&o)
+        );
+    }
+    // The default windows say none of it.
+    let o = run(&["metrics", history.to_str().unwrap()]);
+    assert!(!stderr(&o).contains("window"), "{}", stderr(&o));
 }
 
 #[test]

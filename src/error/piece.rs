@@ -38,9 +38,11 @@ pub enum PieceRefusal {
 }
 
 /// The message of a run none of whose `pieces` holds a steer step: each
-/// piece by name, span and reason; a run that is one unnamed piece by its
-/// reason alone (its span is the file's).
-pub(super) fn no_steer_step(pieces: &[RefusedPiece]) -> String {
+/// piece by name, span and reason, and the time `gaps` (start, length, s)
+/// that split the run into them (a step cut by a gap reads as two pieces
+/// without one, which only the gap explains); a run that is one unnamed
+/// piece by its reason alone (its span is the file's).
+pub(super) fn no_steer_step(pieces: &[RefusedPiece], gaps: &[(f64, f64)]) -> String {
     if let [RefusedPiece {
         name: None,
         t_start,
@@ -63,5 +65,21 @@ pub(super) fn no_steer_step(pieces: &[RefusedPiece]) -> String {
             format!("{name} ({:.2}–{:.2} s): {}", p.t_start, p.t_end, p.reason)
         })
         .collect();
-    format!("no moving piece holds a steer step: {}", each.join("; "))
+    let split = match gaps {
+        [] => String::new(),
+        _ => {
+            let at: Vec<String> = gaps
+                .iter()
+                .map(|(t, dt)| format!("{t:.3}–{:.3} s", t + dt))
+                .collect();
+            format!(
+                " (the run is split where its clock jumps: no rows {})",
+                at.join(", ")
+            )
+        }
+    };
+    format!(
+        "no moving piece holds a steer step: {}{split}",
+        each.join("; ")
+    )
 }

@@ -352,10 +352,12 @@ pub enum InputProblem {
         read: usize,
     },
     /// A run none of whose moving pieces holds a steer step.
-    #[error("{}", super::piece::no_steer_step(pieces))]
+    #[error("{}", super::piece::no_steer_step(pieces, gaps))]
     NoSteerStep {
         /// The pieces and why each was refused.
         pieces: Vec<RefusedPiece>,
+        /// The time gaps that split the run into them: start, length, s.
+        gaps: Vec<(f64, f64)>,
     },
     /// A runs folder without CSV files.
     #[error("no measured runs: the runs folder {} holds no *.csv file", folder.display())]

@@ -114,8 +114,9 @@ fn messages_read_as_the_text_they_replace() {
                 reason: PieceRefusal::AnotherPieceUsed,
             },
         ],
+        gaps: vec![(12.5, 0.5)],
     };
-    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is not longer than the initial and steady windows together (`pre_window` = 10 s + `steady_window` = 3 s)); run.csv#2 (13.00–20.00 s): another piece was used");
+    assert_eq!(step.to_string(), "no moving piece holds a steer step: run.csv#1 (0.00–12.50 s): no step-steer metrics (the record (12.500 s) is not longer than the initial and steady windows together (`pre_window` = 10 s + `steady_window` = 3 s)); run.csv#2 (13.00–20.00 s): another piece was used (the run is split where its clock jumps: no rows 12.500–13.000 s)");
     // A run that is one piece is the file the error names: said once.
     let whole = InputProblem::NoSteerStep {
         pieces: vec![RefusedPiece {
@@ -124,6 +125,7 @@ fn messages_read_as_the_text_they_replace() {
             t_end: 0.3,
             reason: PieceRefusal::TooShort,
         }],
+        gaps: vec![],
     };
     assert_eq!(
         whole.to_string(),

@@ -106,7 +106,8 @@ pub fn run_with_degrees(
         ));
     }
     let piece = m.t_end - m.t_start;
-    m.warnings.extend(windows_said(&m.metrics, settings, &clock, m.t_end));
+    m.warnings
+        .extend(windows_said(&m.metrics, settings, &clock, m.t_end));
     m.warnings.extend(noise_in_variance(
         &m.metrics,
         settings.variance_window.min(piece),

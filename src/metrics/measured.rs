@@ -12,7 +12,7 @@ use super::step_shape::{check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
-    clean_single_with, fill_masked, median, quantile, CleanSettings, CleaningReport,
+    clean_single_with, fill_masked, median, quantile, CleanSettings, CleaningReport, GlitchKind,
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -417,7 +417,13 @@ pub fn measured_step_metrics(
                     })
                 })
                 .collect();
-            InputProblem::NoSteerStep { pieces }
+            let gaps = cleaning
+                .glitches
+                .iter()
+                .filter(|g| g.kind == GlitchKind::TimeGap)
+                .map(|g| (g.t, g.value))
+                .collect();
+            InputProblem::NoSteerStep { pieces, gaps }
         };
         return Err(InputError::problem(&path, problem));
     };

@@ -21,7 +21,8 @@
 //!
 //! And a guard: a hold whose refit raises the cost (`½Σe²`) of the fit it
 //! is tried on by more than [`guard`] allows, about 2.5 times that fit's
-//! residual variance `s²`, is not kept, whatever its value. Moving one
+//! residual variance `s²` or a rise of σ by [`SIGMA_RISE`] of itself,
+//! whichever is larger, is not kept, whatever its value. Moving one
 //! parameter `z` standard errors from its optimum, the rest refitted,
 //! raises `Σe²` by `z²·s²` to first order, so `½Σe²` by `½z²s²`: `2s²` is
 //! a hold at the edge of the ±2 standard errors, the most the data can
@@ -77,6 +78,13 @@ pub(crate) struct HoldFit<'a, P> {
     pub(crate) bounds: &'a [(f64, f64)],
     pub(crate) clamp_starts: bool,
     pub(crate) tie: TieBreak,
+    /// Whether the [`guard`] refuses a hold that costs too much. The
+    /// staged Magic Formula fit holds at a template of published values,
+    /// a prior the engineer chose and the literature's procedure keeps
+    /// (its line says the σ held against the σ fitted free); the swarm
+    /// fits hold at a model's start value, no prior, which must not cost
+    /// the fit.
+    pub(crate) guarded: bool,
 }
 
 /// The ways a fit builds and refits a hold: the problem with free
@@ -168,7 +176,10 @@ where
         .collect();
     let evaluations = tried.iter().map(|t| t.1).sum();
     let base = fit.problem.cost(fit.p);
-    let most = guard(base, fit.problem.count(), fit.p.len());
+    let most = match fit.guarded {
+        true => guard(base, fit.problem.count(), fit.p.len()),
+        false => f64::INFINITY,
+    };
     // A refit that failed (no finite cost) is refused as one past the
     // guard: the hold left no fit to keep.
     let (kept, refused): (Vec<_>, Vec<_>) = tried
@@ -214,20 +225,33 @@ fn chosen<P: Residuals>(fit: &HoldFit<P>, tried: Vec<Tried<P>>) -> Option<Tried<
 /// [`LEAN_STANDARD_ERRORS`]: a hold at that edge costs `½·2²·s² = 2s²` to
 /// first order, so a guard of exactly `2s²` would keep or refuse it by the
 /// last digits of where its refit stopped; `½·2.25²·s² ≈ 2.5s²` keeps it,
-/// and still refuses the holds the data reject (on the Hoosier file,
-/// measured: PAC89's aligning c9 at its ±2 edge cost 4.6s², UniTire's
-/// 22s²; the staged fit's PKY4 at its book default 2, 0.9 standard errors
-/// from the free fit along a trade-off far from linear, 340s²).
+/// and on few residuals still refuses the holds the data reject (on the
+/// many of a rig file, [`SIGMA_RISE`] decides).
 const GUARD_STANDARD_ERRORS: f64 = 2.25;
+
+/// The rise of σ, relative, that a hold may always cost: the residuals
+/// of a tyre model on rig data are its form's error more than the rig's
+/// noise, correlated along each sweep, so the statistical guard, which
+/// takes them for independent noise, calls on tens of thousands of points
+/// a rise of σ by a thousandth significant. A hold that raises σ by under
+/// 5 % of itself (0.08 points of a 1.7 % fit) stays within what the model
+/// form leaves: the staged fit's PKY4 held at its book default 2 raises
+/// pure Fy's σ on the Hoosier file from 1.68 % to 1.76 % (+4.4 %) and is
+/// kept, UniTire's aligning c9 held at its start value, 9.67 % to 25.1 %,
+/// is not.
+pub(crate) const SIGMA_RISE: f64 = 0.05;
 
 /// The most a hold may raise the cost (`½Σe²`) of a fit of `cost` on
 /// `count` residuals and `free` parameters and be kept (module notes):
 /// `½·z²·s²` at `z` = [`GUARD_STANDARD_ERRORS`], with the residual
-/// variance `s² = Σe²/dof = 2·cost/dof` the standard errors are scaled by.
+/// variance `s² = Σe²/dof = 2·cost/dof` the standard errors are scaled by,
+/// or the cost of σ rising by [`SIGMA_RISE`] of itself, whichever is
+/// larger.
 pub(crate) fn guard(cost: f64, count: usize, free: usize) -> f64 {
     let dof = count.saturating_sub(free).max(1) as f64;
     let s2 = 2.0 * cost / dof;
-    0.5 * GUARD_STANDARD_ERRORS * GUARD_STANDARD_ERRORS * s2
+    let statistical = 0.5 * GUARD_STANDARD_ERRORS * GUARD_STANDARD_ERRORS * s2;
+    statistical.max(cost * ((1.0 + SIGMA_RISE).powi(2) - 1.0))
 }
 
 /// The distance, in standard errors, past which a stated value is said
@@ -238,13 +262,22 @@ pub(crate) const LEAN_STANDARD_ERRORS: f64 = 2.0;
 /// The value a flagged parameter is held at (module notes): `stated` when
 /// it lies within [`LEAN_STANDARD_ERRORS`] standard errors `se` of the
 /// free fit's `fitted` or there is no standard error; else the end of
-/// `fitted ± 2·se` nearest `stated`, clamped into `bounds`.
+/// `fitted ± 2·se` nearest `stated`, clamped into `bounds`, rounded
+/// towards `fitted` to a hundredth of the standard error's decade (−0.828
+/// for −0.8296 with a standard error of 0.317): a value that reads as
+/// written in the file's header and on a `--hold` option, still inside
+/// the interval.
 pub(crate) fn held_value(stated: f64, fitted: f64, se: Option<f64>, bounds: (f64, f64)) -> f64 {
-    match standard_errors_away(stated, fitted, se) {
-        Some(z) if z > LEAN_STANDARD_ERRORS => {
-            let reach = LEAN_STANDARD_ERRORS * se.unwrap_or(0.0);
+    match (standard_errors_away(stated, fitted, se), se) {
+        (Some(z), Some(se)) if z > LEAN_STANDARD_ERRORS => {
+            let reach = LEAN_STANDARD_ERRORS * se;
             let edge = fitted + reach.copysign(stated - fitted);
-            edge.clamp(bounds.0.min(bounds.1), bounds.1.max(bounds.0))
+            let step = 10f64.powf(se.log10().floor() - 2.0);
+            let towards = if edge > fitted { f64::floor } else { f64::ceil };
+            let rounded = towards(edge / step) * step;
+            // The rounding's last bit, read back through `{}`.
+            let rounded: f64 = format!("{rounded:.12e}").parse().unwrap_or(rounded);
+            rounded.clamp(bounds.0.min(bounds.1), bounds.1.max(bounds.0))
         }
         _ => stated,
     }
@@ -309,11 +342,11 @@ mod tests {
         assert_eq!(held_value(0.77394, 0.9957, Some(24.4), wide), 0.77394);
         assert_eq!(held_value(3.0, 1.0, Some(1.0), wide), 3.0);
         // PAC89's aligning c9: stated −1.3329, free −0.1947 ± 0.317.
-        let c9 = held_value(-1.3329, -0.1947, Some(0.317), wide);
-        assert!((c9 - (-0.1947 - 2.0 * 0.317)).abs() < 1e-12, "{c9}");
-        // UniTire's aligning c9: stated 0.3, free 0.0002232 ± 0.00111.
-        let c9 = held_value(0.3, 0.0002232, Some(0.00111), wide);
-        assert!((c9 - (0.0002232 + 2.0 * 0.00111)).abs() < 1e-12, "{c9}");
+        // Its edge −0.8287, rounded towards the free fit to 0.001.
+        assert_eq!(held_value(-1.3329, -0.1947, Some(0.317), wide), -0.828);
+        // UniTire's aligning c9: stated 0.3, free 0.0002232 ± 0.00111, edge
+        // 0.0024432.
+        assert_eq!(held_value(0.3, 0.0002232, Some(0.00111), wide), 0.00244);
         // The edge past a bound is the bound.
         assert_eq!(held_value(5.0, 1.0, Some(1.0), (0.0, 2.5)), 2.5);
         assert_eq!(held_value(-5.0, 1.0, Some(1.0), (0.0, 2.5)), 0.0);
@@ -323,12 +356,15 @@ mod tests {
         assert_eq!(standard_errors_away(3.0, 1.0, Some(f64::NAN)), None);
     }
 
-    /// The guard is what one parameter 2.25 standard errors off costs:
-    /// `½·2.25²·s²` with `s² = 2·cost/dof`.
+    /// The guard is what one parameter 2.25 standard errors off costs,
+    /// `½·2.25²·s²` with `s² = 2·cost/dof`, or σ rising by 5 %.
     #[test]
-    fn the_guard_is_a_quarter_standard_error_past_the_edge() {
-        // cost 50 on 110 residuals, 10 free: s² = 1.
-        assert!((guard(50.0, 110, 10) - 0.5 * 2.25 * 2.25).abs() < 1e-12);
+    fn the_guard_is_a_quarter_standard_error_past_the_edge_or_a_twentieth_of_sigma() {
+        // cost 0.5 on 2 residuals, 1 free: s² = 1.
+        assert!((guard(0.5, 2, 1) - 0.5 * 2.25 * 2.25).abs() < 1e-12);
+        // cost 50 on 110 residuals, 10 free: s² = 1, but σ rising by 5 %
+        // costs more, 50·(1.05² − 1).
+        assert!((guard(50.0, 110, 10) - 5.125).abs() < 1e-9);
         // At least one degree of freedom.
         assert!((guard(1.0, 3, 5) - 2.0 * 0.5 * 2.25 * 2.25).abs() < 1e-12);
     }
@@ -411,6 +447,7 @@ mod tests {
             bounds: &bounds,
             clamp_starts: true,
             tie: TieBreak::LeastDetermined,
+            guarded: true,
         };
         let ways = HoldWays {
             without: |k: usize, v: f64| Line {
@@ -445,9 +482,12 @@ mod tests {
         let s2 = 2.0 * line.cost(&p) / (line.count() - 2) as f64;
         let edge = round([p[0] - 100.0 * sa, 0.0], wide, [true; 2], &[0]);
         let kept = edge.kept.as_ref().expect("the edge hold is kept");
-        assert!((kept.value - (p[0] - 2.0 * sa)).abs() < 1e-12);
+        // At the edge, rounded towards the fit by at most a hundredth of
+        // a standard error: z in [1.99, 2], a rise of ½z²s².
+        let inside = kept.value - (p[0] - 2.0 * sa);
+        assert!((0.0..=0.01 * sa).contains(&inside), "{inside}");
         let rise = kept.cost - line.cost(&p);
-        assert!((rise / s2 - 2.0).abs() < 1e-6, "{}", rise / s2);
+        assert!((1.98..=2.0 + 1e-6).contains(&(rise / s2)), "{}", rise / s2);
         assert!(edge.refused.is_empty());
         // Clamped ten standard errors out: refused, and nothing kept.
         let narrow = [(p[0] + 10.0 * sa, 100.0), (-100.0, 100.0)];
@@ -472,7 +512,7 @@ mod tests {
         let held = held_value(-1.3329, -0.1947, Some(0.317), (-10.0, 10.0));
         assert_eq!(
             held_at(start, -1.3329, held, away),
-            "held at -0.8287, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, where the data would not put it)"
+            "held at -0.828, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, where the data would not put it)"
         );
         assert_eq!(
             lean_clause("c9", -1.3329, held, away),

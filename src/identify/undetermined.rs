@@ -260,6 +260,7 @@ fn spare(
         bounds: &free_bounds,
         clamp_starts: false,
         tie: TieBreak::LeastDetermined,
+        guarded: true,
     };
     let ways = HoldWays {
         without: |k: usize, value: f64| problem.holding(p, k, value),

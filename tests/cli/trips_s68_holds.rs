@@ -9,8 +9,8 @@
 //! standard errors of the free fit, else the nearest end of those two;
 //! a hold that costs more than the data can ignore is refused, and the
 //! parameter left free with its warning (aligning c9: start −1.3329, free
-//! −0.1947 ± 0.317, its ±2 edge −0.8287 cost 4.6 times the residual
-//! variance, past the guard's 2.5).
+//! −0.1947 ± 0.3174, is held at −0.829, its ±2 edge rounded towards the
+//! fit, at a σ rise well within the guard's 5 % of σ).
 
 use super::*;
 
@@ -98,7 +98,7 @@ fn pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine() {
         assert!(p["warning"].is_null() && p["free"] == false, "{p}");
     }
     // No parameter written is undetermined with a visible effect unsaid:
-    // one the guard left free (aligning c9) carries its warning.
+    // one the guard left free would carry its warning; here none is.
     let mut refused = Vec::new();
     for f in [&report, &report["aligning"]] {
         for p in f["parameters"].as_array().unwrap() {
@@ -117,7 +117,13 @@ fn pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine() {
             }
         }
     }
-    assert_eq!(refused, ["c9"], "{text}");
+    assert!(refused.is_empty(), "{refused:?}: {text}");
+    let c9 = held.iter().find(|h| h["name"] == "c9").expect("c9 held");
+    assert_eq!(c9["value"].as_f64(), Some(-0.829), "{c9}");
+    assert!(
+        text.contains("so it is held at -0.829, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329"),
+        "{text}"
+    );
     // Holding them costs little.
     for (f, rise) in [
         (&report, LATERAL_RISE),

@@ -376,6 +376,7 @@ pub(super) fn hold_undetermined(
             bounds: &fit.bounds,
             clamp_starts: true,
             tie: TieBreak::LatestInOrder,
+            guarded: false,
         };
         let Spared {
             kept,
@@ -523,7 +524,7 @@ mod tests {
             }
         };
         let far = rule(0.084).said("QDZ1");
-        assert!(far.ends_with("held at 0.0053414, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit, where the data would not put it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
+        assert!(far.ends_with("held at 0.00534, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit, where the data would not put it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
         let near = rule(0.004);
         assert_eq!(near.said("QDZ1"), near.to_string());
         assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 the data allow)"), "{near}");

@@ -235,10 +235,9 @@ const GUARD_STANDARD_ERRORS: f64 = 2.25;
 /// takes them for independent noise, calls on tens of thousands of points
 /// a rise of σ by a thousandth significant. A hold that raises σ by under
 /// 5 % of itself (0.08 points of a 1.7 % fit) stays within what the model
-/// form leaves: the staged fit's PKY4 held at its book default 2 raises
-/// pure Fy's σ on the Hoosier file from 1.68 % to 1.76 % (+4.4 %) and is
-/// kept, UniTire's aligning c9 held at its start value, 9.67 % to 25.1 %,
-/// is not.
+/// form leaves: on the Hoosier file PAC89's aligning c9 held at its ±2
+/// edge (σ 16.28 % → 16.30 %) is kept, UniTire's aligning c9 held at its
+/// start value (9.67 % → 25.1 %) is not.
 pub(crate) const SIGMA_RISE: f64 = 0.05;
 
 /// The most a hold may raise the cost (`½Σe²`) of a fit of `cost` on

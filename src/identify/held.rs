@@ -6,11 +6,14 @@
 //! template gave.
 
 use super::problem::Channel;
-use super::spare::lean_clause;
+use super::spare::{held_at, lean_clause};
 use crate::format::{plural, readable};
 use crate::tyre::Tyre;
 use serde::Serialize;
 use std::fmt;
+
+/// What the swarm fits' stated value is, as a held line names it.
+const START: &str = "the model's start value";
 
 /// Why a value was held rather than fitted.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -35,8 +38,9 @@ pub enum HeldFor {
     CurvatureLimit,
     /// Fitted free, the data did not determine it (its standard error
     /// reached its value and moved the channel by 1 % of its RMS, or it
-    /// had none): held at the model's start value and the rest refitted
-    /// (`undetermined.rs`).
+    /// had none): held at the model's start value, or at the nearest value
+    /// within two standard errors of the free fit where that lies beyond,
+    /// and the rest refitted (`undetermined.rs`, `spare.rs`).
     Undetermined {
         /// Its value in the free fit.
         fitted: f64,
@@ -46,9 +50,13 @@ pub enum HeldFor {
         /// One standard error's effect on the channel there, % of the
         /// channel's RMS (`None` without a standard error).
         effect_percent: Option<f64>,
-        /// How many standard errors the value held lies from `fitted`
-        /// (`None` without a standard error); past 2 the data lean
-        /// against it, and its line says so (`spare.rs`).
+        /// The model's start value, the value stated for it.
+        stated: f64,
+        /// The value held: `stated`, or the end of `fitted ± 2` standard
+        /// errors nearest it where `stated` lies beyond (`spare.rs`).
+        held_at: f64,
+        /// How many standard errors `stated` lies from `fitted` (`None`
+        /// without a standard error).
         standard_errors_away: Option<f64>,
     },
     /// A constant of a written `.tir`, set without a template.
@@ -98,18 +106,27 @@ impl fmt::Display for HeldFor {
                 fitted,
                 std_error: Some(se),
                 effect_percent,
+                stated,
+                held_at: held,
+                standard_errors_away,
+            } => write!(
+                f,
+                "not determined by these data: fitted free it was {} ± {} (one standard error of it alone moves the fit by {:.1} % of the channel's RMS, which the other parameters' trade-off undoes), so it is {}, and the rest refitted",
+                readable(*fitted, 4),
+                readable(*se, 3),
+                effect_percent.unwrap_or(f64::NAN),
+                held_at(START, *stated, *held, *standard_errors_away)
+            ),
+            HeldFor::Undetermined {
+                fitted,
+                stated,
+                held_at: held,
                 ..
             } => write!(
                 f,
-                "not determined by these data: fitted free it was {} ± {} (one standard error of it alone moves the fit by {:.1} % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at the model's start value and the rest refitted",
+                "not determined by these data: fitted free it was {} with no standard error (the fit is singular along it), so it is {} and the rest refitted",
                 readable(*fitted, 4),
-                readable(*se, 3),
-                effect_percent.unwrap_or(f64::NAN)
-            ),
-            HeldFor::Undetermined { fitted, .. } => write!(
-                f,
-                "not determined by these data: fitted free it was {} with no standard error (the fit is singular along it), so it is held at the model's start value and the rest refitted",
-                readable(*fitted, 4)
+                held_at(START, *stated, *held, None)
             ),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
         }
@@ -118,14 +135,19 @@ impl fmt::Display for HeldFor {
 
 impl HeldFor {
     /// The reason as the held line of parameter `name` says it: its
-    /// words, and for a value the data lean against, by how far and the
-    /// option that chooses another (`spare.rs`).
+    /// words, and for a value held off its stated one, the option that
+    /// holds it where the user says (`spare.rs`).
     pub fn said(&self, name: &str) -> String {
         match self {
             HeldFor::Undetermined {
+                stated,
+                held_at,
                 standard_errors_away,
                 ..
-            } => format!("{self}{}", lean_clause(name, *standard_errors_away)),
+            } => format!(
+                "{self}{}",
+                lean_clause(name, *stated, *held_at, *standard_errors_away)
+            ),
             _ => self.to_string(),
         }
     }
@@ -211,30 +233,51 @@ pub(crate) fn with_value(t: &Tyre, name: &str, v: f64) -> Option<Tyre> {
 mod tests {
     use super::*;
 
-    /// PAC89's aligning c9 on the Hoosier file, held at its start value
-    /// −1.3329 where the free fit gave −0.1947 ± 0.317: its line says the
-    /// data lean against the value, how far, and how to choose another;
-    /// the report keeps the distance as a number.
+    /// PAC89's aligning c9 on the Hoosier file, stated −1.3329 where the
+    /// free fit gave −0.1947 ± 0.317: held at the end of the ±2 standard
+    /// errors nearest the stated value, −0.828 (−0.8287 rounded towards the fit); its line says both values,
+    /// how far the stated one lay and how to choose another; the report
+    /// keeps them as numbers.
     #[test]
-    fn an_undetermined_hold_the_data_lean_against_says_so_and_how_to_choose() {
+    fn an_undetermined_hold_says_the_value_held_and_the_stated_one() {
+        use super::super::spare::{held_value, standard_errors_away};
+        let (stated, fitted, se) = (-1.3329, -0.1947, Some(0.317));
         let held = HeldFor::Undetermined {
-            fitted: -0.1947,
-            std_error: Some(0.317),
+            fitted,
+            std_error: se,
             effect_percent: Some(10.7),
-            standard_errors_away: super::super::spare::standard_errors_away(
-                -1.3329,
-                -0.1947,
-                Some(0.317),
-            ),
+            stated,
+            held_at: held_value(stated, fitted, se, (-10.0, 10.0)),
+            standard_errors_away: standard_errors_away(stated, fitted, se),
         };
         assert_eq!(
             held.said("c9"),
-            format!("{held}; the data lean against that value: it lies 3.6 standard errors from the free fit, outside the ±2 the data allow (to hold it at a value of your own, give --hold c9=VALUE)")
+            "not determined by these data: fitted free it was -0.1947 ± 0.317 (one standard error of it alone moves the fit by 10.7 % of the channel's RMS, which the other parameters' trade-off undoes), so it is held at -0.828, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, where the data would not put it), and the rest refitted; to hold it at a value of your own, give --hold c9=VALUE"
         );
         let json = serde_json::to_value(held).unwrap();
         assert!(
             (json["standard_errors_away"].as_f64().unwrap() - 3.59).abs() < 0.01,
             "{json}"
+        );
+        assert_eq!(json["stated"].as_f64(), Some(-1.3329), "{json}");
+        assert!(
+            (json["held_at"].as_f64().unwrap() + 0.828).abs() < 1e-9,
+            "{json}"
+        );
+        // Within two standard errors the stated value is held, and said so
+        // without the option.
+        let within = HeldFor::Undetermined {
+            fitted: 0.9957,
+            std_error: Some(24.4),
+            effect_percent: Some(318.5),
+            stated: 0.77394,
+            held_at: 0.77394,
+            standard_errors_away: standard_errors_away(0.77394, 0.9957, Some(24.4)),
+        };
+        assert!(
+            within.said("a7").ends_with("so it is held at the model's start value 0.77394, 0.0 standard errors from the free fit (within the ±2 the data allow), and the rest refitted"),
+            "{}",
+            within.said("a7")
         );
         // Another reason is said as it was.
         let levels = HeldFor::CamberLevels { have: 1 };

@@ -3,17 +3,38 @@
 //! Magic Formula fit (`mf_staged/holds.rs`), which differ in how they build
 //! a problem, refit it and rank a tie, not in the rule: each flagged
 //! parameter (the largest relative standard error first, at most
-//! [`CANDIDATES`]) is held in turn at its stated value and the rest
-//! refitted, from the optimum or with the rest moved along the trade-off
-//! where that starts lower, and the hold that raises the cost least is
-//! kept, of those within half a residual variance of it (which the data
-//! cannot tell apart) the one the [`TieBreak`] names.
+//! [`CANDIDATES`]) is held in turn at the value [`held_value`] gives and
+//! the rest refitted, from the optimum or with the rest moved along the
+//! trade-off where that starts lower, and the hold that raises the cost
+//! least is kept, of those within half a residual variance of it (which
+//! the data cannot tell apart) the one the [`TieBreak`] names.
 //!
-//! And the words of a stated value the data lean against: one more than
-//! [`LEAN_STANDARD_ERRORS`] standard errors from the free fit is held where
-//! the data would not put it, and the user is told so with the option
-//! that chooses another.
+//! The value held is one the data allow. A parameter is flagged when its
+//! standard error reaches its value: a large *relative* error, which a
+//! free value near zero has with a small standard error too, so the data
+//! may still reject a stated value far from it. It is held at its stated
+//! value when that lies within [`LEAN_STANDARD_ERRORS`] standard errors
+//! of the free fit (about the 95 % interval the data allow); otherwise at
+//! the end of that interval nearest the stated value, clamped into its
+//! bounds: the closest to the prior the data allow. Without a standard
+//! error (the fit is singular along it) the stated value is held.
+//!
+//! And a guard: a hold whose refit raises the cost (`½Σe²`) of the fit it
+//! is tried on by more than [`guard`] allows, about 2.5 times that fit's
+//! residual variance `s²` or a rise of σ by [`SIGMA_RISE`] of itself,
+//! whichever is larger, is not kept, whatever its value. Moving one
+//! parameter `z` standard errors from its optimum, the rest refitted,
+//! raises `Σe²` by `z²·s²` to first order, so `½Σe²` by `½z²s²`: `2s²` is
+//! a hold at the edge of the ±2 standard errors, the most the data can
+//! ignore, and the guard leaves a quarter of a standard error past it for
+//! the refit's own tolerance ([`GUARD_STANDARD_ERRORS`]). A hold that
+//! costs more (a trade-off far from linear, where the standard error
+//! misjudges the interval; a stated value held without a standard error;
+//! a clamp) would keep a value the data reject: the parameter is left
+//! free instead, with its warning as a free parameter's, and not tried
+//! again in later rounds.
 
+use crate::format::{exact, rounded};
 use crate::optim::bounded::clamp;
 use crate::optim::local::{LocalResult, Residuals};
 use rayon::prelude::*;
@@ -34,25 +55,36 @@ pub(crate) enum TieBreak {
     LatestInOrder,
 }
 
-/// One hold tried: the parameter (index in the free vector), the problem
-/// without it, its refitted values and cost.
+/// One hold tried: the parameter (index in the free vector), the value
+/// it is held at ([`held_value`]), the problem without it, its refitted
+/// values and cost.
 pub(crate) struct Tried<P> {
     pub(crate) k: usize,
+    pub(crate) value: f64,
     pub(crate) problem: P,
     pub(crate) p: Vec<f64>,
     pub(crate) cost: f64,
 }
 
 /// The fit the holds are tried on: its problem at its optimum `p`, the
-/// free parameters' `bounds`, whether a refit's start is clamped into them
+/// free parameters' standard errors there (`None`: none), their `bounds`,
+/// whether a refit's start is clamped into them
 /// (the staged fit's bounded LM wants it; the swarm's polish may start, as
 /// its optimum may lie, past the box) and the tie rule.
 pub(crate) struct HoldFit<'a, P> {
     pub(crate) problem: &'a P,
     pub(crate) p: &'a [f64],
+    pub(crate) std_errors: &'a [Option<f64>],
     pub(crate) bounds: &'a [(f64, f64)],
     pub(crate) clamp_starts: bool,
     pub(crate) tie: TieBreak,
+    /// Whether the [`guard`] refuses a hold that costs too much. The
+    /// staged Magic Formula fit holds at a template of published values,
+    /// a prior the engineer chose and the literature's procedure keeps
+    /// (its line says the σ held against the σ fitted free); the swarm
+    /// fits hold at a model's start value, no prior, which must not cost
+    /// the fit.
+    pub(crate) guarded: bool,
 }
 
 /// The ways a fit builds and refits a hold: the problem with free
@@ -74,13 +106,21 @@ pub(crate) fn candidates(mut flagged: Vec<usize>, relative: impl Fn(usize) -> f6
     flagged
 }
 
-/// The hold among `candidates` the fit can best spare (module notes), and
-/// the residual evaluations the refits took.
+/// What one round of holds came to: the hold kept, if any, the
+/// candidates refused by the [`guard`] (their refits raised the cost past
+/// it), and the residual evaluations the refits took.
+pub(crate) struct Spared<P> {
+    pub(crate) kept: Option<Tried<P>>,
+    pub(crate) refused: Vec<usize>,
+    pub(crate) evaluations: usize,
+}
+
+/// The hold among `candidates` the fit can best spare (module notes).
 pub(crate) fn spare<P, W, S, C, R>(
     fit: &HoldFit<P>,
     candidates: &[usize],
     ways: &HoldWays<W, S, C, R>,
-) -> (Option<Tried<P>>, usize)
+) -> Spared<P>
 where
     P: Residuals + Send + Sync,
     W: Fn(usize, f64) -> P + Sync,
@@ -93,7 +133,7 @@ where
     let tried: Vec<(Option<Tried<P>>, usize)> = candidates
         .par_iter()
         .map(|&k| {
-            let value = (ways.stated)(k);
+            let value = held_value((ways.stated)(k), fit.p[k], fit.std_errors[k], fit.bounds[k]);
             let sub = (ways.without)(k, value);
             let without = |v: &[f64]| -> Vec<f64> {
                 v.iter()
@@ -126,6 +166,7 @@ where
             let r = (ways.refit)(&sub, &x, &bounds);
             let tried = Tried {
                 k,
+                value,
                 problem: sub,
                 p: r.params,
                 cost: r.cost,
@@ -134,8 +175,24 @@ where
         })
         .collect();
     let evaluations = tried.iter().map(|t| t.1).sum();
-    let tried: Vec<Tried<P>> = tried.into_iter().filter_map(|t| t.0).collect();
-    (chosen(fit, tried), evaluations)
+    let base = fit.problem.cost(fit.p);
+    let most = match fit.guarded {
+        true => guard(base, fit.problem.count(), fit.p.len()),
+        false => f64::INFINITY,
+    };
+    // A refit that failed (no finite cost) is refused as one past the
+    // guard: the hold left no fit to keep.
+    let (kept, refused): (Vec<_>, Vec<_>) = tried
+        .into_iter()
+        .partition(|t| t.0.as_ref().is_some_and(|t| t.cost - base <= most));
+    Spared {
+        kept: chosen(fit, kept.into_iter().filter_map(|t| t.0).collect()),
+        refused: refused
+            .iter()
+            .filter_map(|t| t.0.as_ref().map(|t| t.k))
+            .collect(),
+        evaluations,
+    }
 }
 
 /// `bounds` without entry `k`.
@@ -162,10 +219,68 @@ fn chosen<P: Residuals>(fit: &HoldFit<P>, tried: Vec<Tried<P>>) -> Option<Tried<
     }
 }
 
+/// The reach of the [`guard`], in standard errors: a hold is kept when
+/// its refit costs no more than holding one parameter this far from its
+/// optimum does to first order. A quarter past the ±2 of
+/// [`LEAN_STANDARD_ERRORS`]: a hold at that edge costs `½·2²·s² = 2s²` to
+/// first order, so a guard of exactly `2s²` would keep or refuse it by the
+/// last digits of where its refit stopped; `½·2.25²·s² ≈ 2.5s²` keeps it,
+/// and on few residuals still refuses the holds the data reject (on the
+/// many of a rig file, [`SIGMA_RISE`] decides).
+const GUARD_STANDARD_ERRORS: f64 = 2.25;
+
+/// The rise of σ, relative, that a hold may always cost: the residuals
+/// of a tyre model on rig data are its form's error more than the rig's
+/// noise, correlated along each sweep, so the statistical guard, which
+/// takes them for independent noise, calls on tens of thousands of points
+/// a rise of σ by a thousandth significant. A hold that raises σ by under
+/// 5 % of itself (0.08 points of a 1.7 % fit) stays within what the model
+/// form leaves: on the Hoosier file PAC89's aligning c9 held at its ±2
+/// edge (σ 16.28 % → 16.30 %) is kept, UniTire's aligning c9 held at its
+/// start value (9.67 % → 25.1 %) is not.
+pub(crate) const SIGMA_RISE: f64 = 0.05;
+
+/// The most a hold may raise the cost (`½Σe²`) of a fit of `cost` on
+/// `count` residuals and `free` parameters and be kept (module notes):
+/// `½·z²·s²` at `z` = [`GUARD_STANDARD_ERRORS`], with the residual
+/// variance `s² = Σe²/dof = 2·cost/dof` the standard errors are scaled by,
+/// or the cost of σ rising by [`SIGMA_RISE`] of itself, whichever is
+/// larger.
+pub(crate) fn guard(cost: f64, count: usize, free: usize) -> f64 {
+    let dof = count.saturating_sub(free).max(1) as f64;
+    let s2 = 2.0 * cost / dof;
+    let statistical = 0.5 * GUARD_STANDARD_ERRORS * GUARD_STANDARD_ERRORS * s2;
+    statistical.max(cost * ((1.0 + SIGMA_RISE).powi(2) - 1.0))
+}
+
 /// The distance, in standard errors, past which a stated value is said
 /// to lie where the data would not put it: the free fit's value ± two
 /// standard errors is about the 95 % interval the data allow.
 pub(crate) const LEAN_STANDARD_ERRORS: f64 = 2.0;
+
+/// The value a flagged parameter is held at (module notes): `stated` when
+/// it lies within [`LEAN_STANDARD_ERRORS`] standard errors `se` of the
+/// free fit's `fitted` or there is no standard error; else the end of
+/// `fitted ± 2·se` nearest `stated`, clamped into `bounds`, rounded
+/// towards `fitted` to a hundredth of the standard error's decade (−0.828
+/// for −0.8296 with a standard error of 0.317): a value that reads as
+/// written in the file's header and on a `--hold` option, still inside
+/// the interval.
+pub(crate) fn held_value(stated: f64, fitted: f64, se: Option<f64>, bounds: (f64, f64)) -> f64 {
+    match (standard_errors_away(stated, fitted, se), se) {
+        (Some(z), Some(se)) if z > LEAN_STANDARD_ERRORS => {
+            let reach = LEAN_STANDARD_ERRORS * se;
+            let edge = fitted + reach.copysign(stated - fitted);
+            let step = 10f64.powf(se.log10().floor() - 2.0);
+            let towards = if edge > fitted { f64::floor } else { f64::ceil };
+            let rounded = towards(edge / step) * step;
+            // The rounding's last bit, read back through `{}`.
+            let rounded: f64 = format!("{rounded:.12e}").parse().unwrap_or(rounded);
+            rounded.clamp(bounds.0.min(bounds.1), bounds.1.max(bounds.0))
+        }
+        _ => stated,
+    }
+}
 
 /// How many standard errors `stated` lies from the free fit's `fitted`
 /// (`None` without a finite, positive standard error).
@@ -174,43 +289,244 @@ pub(crate) fn standard_errors_away(stated: f64, fitted: f64, se: Option<f64>) ->
         .map(|s| (stated - fitted).abs() / s)
 }
 
-/// The clause a held line of parameter `name` ends with when its stated
-/// value lies more than [`LEAN_STANDARD_ERRORS`] from the free fit
-/// (`away`, [`standard_errors_away`]); empty otherwise.
-pub(crate) fn lean_clause(name: &str, away: Option<f64>) -> String {
+/// Where a held value stands, as its line says it: `held` against the
+/// `stated` value (named by `what`, "the model's start value") and how
+/// many standard errors the stated value lay from the free fit (`away`,
+/// [`standard_errors_away`]).
+pub(crate) fn held_at(what: &str, stated: f64, held: f64, away: Option<f64>) -> String {
+    // The stated value as the user would give it back with `--hold`.
+    let stated_text = exact(stated);
     match away {
-        Some(z) if z > LEAN_STANDARD_ERRORS => format!(
-            "; the data lean against that value: it lies {z:.1} standard errors from the free fit, outside the ±{LEAN_STANDARD_ERRORS:.0} the data allow (to hold it at a value of your own, give --hold {name}=VALUE)"
+        // Moved off the stated value: to the nearest the data allow.
+        Some(z) if held != stated => format!(
+            "held at {}, the end of the free fit's ±{LEAN_STANDARD_ERRORS:.0} standard errors nearest {what} {stated_text} (which lies {z:.1} standard errors from the free fit, where the data would not put it)",
+            rounded(held, 5)
         ),
-        _ => String::new(),
+        Some(z) if z > LEAN_STANDARD_ERRORS => format!(
+            "held at {what} {stated_text}, which lies {z:.1} standard errors from the free fit, outside the ±{LEAN_STANDARD_ERRORS:.0} the data allow"
+        ),
+        Some(z) => format!(
+            "held at {what} {stated_text}, {z:.1} standard errors from the free fit (within the ±{LEAN_STANDARD_ERRORS:.0} the data allow)"
+        ),
+        None => format!("held at {what} {stated_text}"),
+    }
+}
+
+/// The clause a held line of parameter `name` ends with when the value
+/// held is not its stated one, or is one the data lean against (more than
+/// [`LEAN_STANDARD_ERRORS`] from the free fit, `away`): the option that
+/// holds it where the user says; empty otherwise.
+pub(crate) fn lean_clause(name: &str, stated: f64, held: f64, away: Option<f64>) -> String {
+    if held != stated || away.is_some_and(|z| z > LEAN_STANDARD_ERRORS) {
+        format!("; to hold it at a value of your own, give --hold {name}=VALUE")
+    } else {
+        String::new()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::optim::bounded::BoundedLm;
+    use crate::optim::stats;
+    use nalgebra::DMatrix;
 
-    /// PAC89's aligning c9 on the Hoosier file: held at its start value
-    /// −1.3329 where the free fit gave −0.1947 ± 0.317.
+    /// Within two standard errors of the free fit the stated value is
+    /// held; beyond, the end of the ±2 nearest it, clamped into bounds;
+    /// without a standard error, the stated value.
     #[test]
-    fn a_stated_value_more_than_two_standard_errors_out_is_said_to_be_leaned_against() {
+    fn a_held_value_is_the_stated_one_or_the_nearest_the_data_allow() {
+        let wide = (-10.0, 10.0);
+        // PAC89's lateral a7 on the Hoosier file: 0.009 standard errors.
+        assert_eq!(held_value(0.77394, 0.9957, Some(24.4), wide), 0.77394);
+        assert_eq!(held_value(3.0, 1.0, Some(1.0), wide), 3.0);
+        // PAC89's aligning c9: stated −1.3329, free −0.1947 ± 0.317.
+        // Its edge −0.8287, rounded towards the free fit to 0.001.
+        assert_eq!(held_value(-1.3329, -0.1947, Some(0.317), wide), -0.828);
+        // UniTire's aligning c9: stated 0.3, free 0.0002232 ± 0.00111, edge
+        // 0.0024432.
+        assert_eq!(held_value(0.3, 0.0002232, Some(0.00111), wide), 0.00244);
+        // The edge past a bound is the bound.
+        assert_eq!(held_value(5.0, 1.0, Some(1.0), (0.0, 2.5)), 2.5);
+        assert_eq!(held_value(-5.0, 1.0, Some(1.0), (0.0, 2.5)), 0.0);
+        // No standard error, or a useless one: the stated value.
+        assert_eq!(held_value(3.0, 1.0, None, wide), 3.0);
+        assert_eq!(held_value(3.0, 1.0, Some(0.0), wide), 3.0);
+        assert_eq!(standard_errors_away(3.0, 1.0, Some(f64::NAN)), None);
+    }
+
+    /// The guard is what one parameter 2.25 standard errors off costs,
+    /// `½·2.25²·s²` with `s² = 2·cost/dof`, or σ rising by 5 %.
+    #[test]
+    fn the_guard_is_a_quarter_standard_error_past_the_edge_or_a_twentieth_of_sigma() {
+        // cost 0.5 on 2 residuals, 1 free: s² = 1.
+        assert!((guard(0.5, 2, 1) - 0.5 * 2.25 * 2.25).abs() < 1e-12);
+        // cost 50 on 110 residuals, 10 free: s² = 1, but σ rising by 5 %
+        // costs more, 50·(1.05² − 1).
+        assert!((guard(50.0, 110, 10) - 5.125).abs() < 1e-9);
+        // At least one degree of freedom.
+        assert!((guard(1.0, 3, 5) - 2.0 * 0.5 * 2.25 * 2.25).abs() < 1e-12);
+    }
+
+    /// A straight line `a + b·x` through noisy points, with parameter
+    /// `held` (if any) held at its value.
+    struct Line {
+        x: Vec<f64>,
+        y: Vec<f64>,
+        held: Option<(usize, f64)>,
+    }
+
+    impl Line {
+        fn full(&self, p: &[f64]) -> [f64; 2] {
+            match self.held {
+                Some((0, v)) => [v, p[0]],
+                Some((_, v)) => [p[0], v],
+                None => [p[0], p[1]],
+            }
+        }
+    }
+
+    impl Residuals for Line {
+        fn count(&self) -> usize {
+            self.x.len()
+        }
+        fn residuals(&self, p: &[f64], out: &mut [f64]) {
+            let [a, b] = self.full(p);
+            for ((o, x), y) in out.iter_mut().zip(&self.x).zip(&self.y) {
+                *o = a + b * x - y;
+            }
+        }
+    }
+
+    /// The line's free fit: its problem, optimum and standard errors.
+    fn line() -> (Line, Vec<f64>, Vec<Option<f64>>) {
+        let x: Vec<f64> = (0..40).map(|i| f64::from(i) / 20.0).collect();
+        let y = x
+            .iter()
+            .enumerate()
+            .map(|(i, x)| 1.0 + 0.5 * x + 0.05 * (3.7 * i as f64).sin())
+            .collect();
+        let line = Line { x, y, held: None };
+        // The least-squares line, in closed form.
+        let n = line.count() as f64;
+        let (mx, my) = (
+            line.x.iter().sum::<f64>() / n,
+            line.y.iter().sum::<f64>() / n,
+        );
+        let sxy: f64 = line
+            .x
+            .iter()
+            .zip(&line.y)
+            .map(|(x, y)| (x - mx) * (y - my))
+            .sum();
+        let sxx: f64 = line.x.iter().map(|x| (x - mx) * (x - mx)).sum();
+        let b = sxy / sxx;
+        let p = vec![my - b * mx, b];
+        let j = DMatrix::from_fn(line.count(), 2, |i, c| if c == 0 { 1.0 } else { line.x[i] });
+        let c = stats::covariance(&j, 2.0 * line.cost(&p)).unwrap();
+        let se = vec![Some(c[(0, 0)].sqrt()), Some(c[(1, 1)].sqrt())];
+        (line, p, se)
+    }
+
+    /// One round of holds on the line, each parameter's stated value
+    /// `stated`, within `bounds`; a parameter `known` false has no
+    /// standard error (as along a singular direction).
+    fn round(
+        stated: [f64; 2],
+        bounds: [(f64, f64); 2],
+        known: [bool; 2],
+        candidates: &[usize],
+    ) -> Spared<Line> {
+        let (line, p, se) = line();
+        let se: Vec<Option<f64>> = se.iter().zip(known).map(|(s, k)| s.filter(|_| k)).collect();
+        let fit = HoldFit {
+            problem: &line,
+            p: &p,
+            std_errors: &se,
+            bounds: &bounds,
+            clamp_starts: true,
+            tie: TieBreak::LeastDetermined,
+            guarded: true,
+        };
+        let ways = HoldWays {
+            without: |k: usize, v: f64| Line {
+                x: line.x.clone(),
+                y: line.y.clone(),
+                held: Some((k, v)),
+            },
+            stated: |k: usize| stated[k],
+            compensating: |k: usize, dv: f64| {
+                let mut d = vec![0.0; 2];
+                d[k] = dv;
+                d
+            },
+            refit: |sub: &Line, x: &[f64], b: &[(f64, f64)]| {
+                BoundedLm::default().minimize(sub, x, b)
+            },
+        };
+        spare(&fit, candidates, &ways)
+    }
+
+    /// A stated value far out is held at the edge of the ±2 standard
+    /// errors, which costs `2s²` on a line and passes the guard; the same
+    /// value clamped by a bound ten standard errors out costs `50s²` and
+    /// is refused, as is one held where stated for want of a standard
+    /// error, leaving the parameter free; one within the ±2 is held where
+    /// stated.
+    #[test]
+    fn a_hold_the_data_reject_is_refused_and_one_they_allow_kept() {
+        let (line, p, se) = line();
+        let (sa, sb) = (se[0].unwrap(), se[1].unwrap());
+        let wide = [(-100.0, 100.0); 2];
+        let s2 = 2.0 * line.cost(&p) / (line.count() - 2) as f64;
+        let edge = round([p[0] - 100.0 * sa, 0.0], wide, [true; 2], &[0]);
+        let kept = edge.kept.as_ref().expect("the edge hold is kept");
+        // At the edge, rounded towards the fit by at most a hundredth of
+        // a standard error: z in [1.99, 2], a rise of ½z²s².
+        let inside = kept.value - (p[0] - 2.0 * sa);
+        assert!((0.0..=0.01 * sa).contains(&inside), "{inside}");
+        let rise = kept.cost - line.cost(&p);
+        assert!((1.98..=2.0 + 1e-6).contains(&(rise / s2)), "{}", rise / s2);
+        assert!(edge.refused.is_empty());
+        // Clamped ten standard errors out: refused, and nothing kept.
+        let narrow = [(p[0] + 10.0 * sa, 100.0), (-100.0, 100.0)];
+        let clamped = round([100.0, 0.0], narrow, [true; 2], &[0]);
+        assert!(clamped.kept.is_none() && clamped.refused == vec![0]);
+        // Held where stated, far out, for want of a standard error:
+        // refused; the slope, stated one standard error off, is held where
+        // stated.
+        let both = round([p[0] + 100.0 * sa, p[1] + sb], wide, [false, true], &[0, 1]);
+        assert_eq!(both.refused, vec![0]);
+        let kept = both.kept.expect("the slope's hold is kept");
+        assert_eq!((kept.k, kept.value), (1, p[1] + sb));
+    }
+
+    /// A held line says the value held and the stated one, and the option
+    /// that holds another when they differ.
+    #[test]
+    fn a_held_line_says_the_value_held_and_the_stated_one() {
+        let start = "the model's start value";
         let away = standard_errors_away(-1.3329, -0.1947, Some(0.317));
         assert!((away.unwrap() - 3.5905).abs() < 1e-3, "{away:?}");
+        let held = held_value(-1.3329, -0.1947, Some(0.317), (-10.0, 10.0));
         assert_eq!(
-            lean_clause("c9", away),
-            "; the data lean against that value: it lies 3.6 standard errors from the free fit, outside the ±2 the data allow (to hold it at a value of your own, give --hold c9=VALUE)"
-        );
-        // Within two standard errors, or without one, nothing is said.
-        assert_eq!(
-            lean_clause("a7", standard_errors_away(0.77394, 0.9957, Some(24.4))),
-            ""
+            held_at(start, -1.3329, held, away),
+            "held at -0.828, the end of the free fit's ±2 standard errors nearest the model's start value -1.3329 (which lies 3.6 standard errors from the free fit, where the data would not put it)"
         );
         assert_eq!(
-            lean_clause("x", standard_errors_away(3.0, 1.0, Some(1.0))),
-            ""
+            lean_clause("c9", -1.3329, held, away),
+            "; to hold it at a value of your own, give --hold c9=VALUE"
         );
-        assert_eq!(standard_errors_away(3.0, 1.0, None), None);
-        assert_eq!(standard_errors_away(3.0, 1.0, Some(0.0)), None);
-        assert_eq!(lean_clause("x", None), "");
+        let away = standard_errors_away(0.0, 0.003344, Some(0.0107));
+        assert_eq!(
+            held_at(start, 0.0, 0.0, away),
+            "held at the model's start value 0, 0.3 standard errors from the free fit (within the ±2 the data allow)"
+        );
+        assert_eq!(lean_clause("c6", 0.0, 0.0, away), "");
+        assert_eq!(
+            held_at(start, 10.0, 10.0, None),
+            "held at the model's start value 10"
+        );
+        assert_eq!(lean_clause("c10", 10.0, 10.0, None), "");
     }
 }

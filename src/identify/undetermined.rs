@@ -14,8 +14,10 @@
 //! with the largest relative standard error are tried: each held at its
 //! stated value with the rest refitted from the optimum (the configured
 //! local polish, Levenberg–Marquardt for `--local none`: no new swarm),
-//! and the hold that raises the cost least is kept; this repeats until no
-//! free parameter is flagged. Holds whose costs differ by less than half
+//! and the hold that raises the cost least is kept, unless it raises the
+//! cost past the guard of `spare.rs` (twice the residual variance), when
+//! the parameter is left free with its warning; this repeats until no
+//! free parameter is flagged or left to try. Holds whose costs differ by less than half
 //! a residual variance (the data cannot tell them apart) go to the one
 //! with the largest relative standard error, the least determined: the
 //! staged fit gives them to the coefficient latest in its stage's order,
@@ -28,15 +30,15 @@
 //! template), with a value given with `--hold` or by PAC89's curvature
 //! rule set there already and so never free here. Two parameters that
 //! trade along one near-null direction thus lose the one the fit can best
-//! spare, and the other is determined again. A stated value more than
-//! two standard errors from the free fit is said to be one the data lean
-//! against (`spare.rs`, [`HeldFor`]'s words).
+//! spare, and the other is determined again. A held line says the value
+//! held, the stated value and how many standard errors that lay from the
+//! free fit (`spare.rs`, [`HeldFor`]'s words).
 //!
 //! The trying and choosing of holds is the staged fit's own code
 //! (`spare.rs`); this module builds the channel's problems and refits.
 
 use super::parameters::{parameter_reports, EFFECT_FLOOR};
-use super::spare::{self, candidates, standard_errors_away, HoldFit, HoldWays, TieBreak, Tried};
+use super::spare::{self, candidates, standard_errors_away, HoldFit, HoldWays, Spared, TieBreak};
 use super::{curves_of, polish, sigma_of, Fit, FitProblem, FitSettings, HeldFor};
 use super::{data::Condition, LocalMethod};
 use crate::optim::bounded::BoundedLm;
@@ -134,35 +136,46 @@ pub(crate) fn hold_undetermined(
     let stated = channel.parameters(start);
     let bounds = channel.bounds(start);
     let mut held: Vec<(usize, HeldFor)> = Vec::new();
+    // Parameters (full index) whose hold the guard refused: left free,
+    // with their warning, and not tried again (`spare.rs`).
+    let mut refused: Vec<usize> = Vec::new();
     let mut evaluations = 0;
     while p.len() > 1 {
         let spread = Spread::at(&problem, &p);
         if spread.covariance.is_none() {
             break;
         }
-        let Some(t) = spare(
+        let round = spare(
             &problem,
             &p,
             &spread,
-            &stated,
-            &bounds,
+            &Stated {
+                values: &stated,
+                bounds: &bounds,
+                refused: &refused,
+            },
             settings.local,
-            &mut evaluations,
-        ) else {
-            break;
+        );
+        evaluations += round.evaluations;
+        let Some(t) = round.kept else {
+            if round.refused.is_empty() {
+                break;
+            }
+            refused.extend(round.refused.iter().map(|&k| problem.free[k]));
+            continue;
         };
+        refused.extend(round.refused.iter().map(|&k| problem.free[k]));
         let i = problem.free[t.k];
+        let se = spread.std_error(t.k);
         held.push((
             i,
             HeldFor::Undetermined {
                 fitted: p[t.k],
-                std_error: spread.std_error(t.k),
-                effect_percent: spread.std_error(t.k).map(|_| 100.0 * spread.effect[t.k]),
-                standard_errors_away: standard_errors_away(
-                    stated[i],
-                    p[t.k],
-                    spread.std_error(t.k),
-                ),
+                std_error: se,
+                effect_percent: se.map(|_| 100.0 * spread.effect[t.k]),
+                stated: stated[i],
+                held_at: t.value,
+                standard_errors_away: standard_errors_away(stated[i], p[t.k], se),
             },
         ));
         free[i] = false;
@@ -201,19 +214,26 @@ pub(crate) fn hold_undetermined(
     }
 }
 
-/// The flagged parameter of `problem` at `p` whose hold at its `stated`
-/// value (the channel's full vector) the fit can best spare, with the
-/// rest refitted within `bounds` (the channel's); `None` when none is
-/// flagged (module notes; the rule's core is `spare.rs`).
+/// What the holds of a channel start from: the stated `values` and the
+/// search `bounds` of its full vector, and the parameters (full index)
+/// whose hold the guard refused.
+struct Stated<'a> {
+    values: &'a [f64],
+    bounds: &'a [(f64, f64)],
+    refused: &'a [usize],
+}
+
+/// The flagged parameter of `problem` at `p` whose hold (at the value
+/// `spare.rs` gives from its stated one) the fit can best spare, with the
+/// rest refitted within their bounds, and the holds the guard refused
+/// (module notes; the rule's core is `spare.rs`).
 fn spare(
     problem: &FitProblem,
     p: &[f64],
     spread: &Spread,
-    stated: &[f64],
-    bounds: &[(f64, f64)],
+    stated: &Stated,
     local: LocalMethod,
-    evaluations: &mut usize,
-) -> Option<Tried<FitProblem>> {
+) -> Spared<FitProblem> {
     let relative = |k: usize| {
         spread
             .std_error(k)
@@ -223,30 +243,32 @@ fn spare(
     // where they leave it free: its standard error means nothing there,
     // and its warning says so (`parameters.rs`).
     let on_bound = |k: usize| {
-        let (lo, hi) = bounds[problem.free[k]];
+        let (lo, hi) = stated.bounds[problem.free[k]];
         let w = hi - lo;
         p[k] <= lo + 1e-6 * w || p[k] >= hi - 1e-6 * w
     };
     let flagged: Vec<usize> = (0..p.len())
         .filter(|&k| spread.flagged(k, p[k]) && !on_bound(k))
+        .filter(|&k| !stated.refused.contains(&problem.free[k]))
         .collect();
-    let free_bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| bounds[i]).collect();
+    let free_bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| stated.bounds[i]).collect();
+    let std_errors: Vec<Option<f64>> = (0..p.len()).map(|k| spread.std_error(k)).collect();
     let fit = HoldFit {
         problem,
         p,
+        std_errors: &std_errors,
         bounds: &free_bounds,
         clamp_starts: false,
         tie: TieBreak::LeastDetermined,
+        guarded: true,
     };
     let ways = HoldWays {
         without: |k: usize, value: f64| problem.holding(p, k, value),
-        stated: |k: usize| stated[problem.free[k]],
+        stated: |k: usize| stated.values[problem.free[k]],
         compensating: |k: usize, dv: f64| spread.compensating(k, dv),
         refit: |sub: &FitProblem, x: &[f64], b: &[(f64, f64)]| refit(sub, x, b, local),
     };
-    let (tried, n) = spare::spare(&fit, &candidates(flagged, relative), &ways);
-    *evaluations += n;
-    tried
+    spare::spare(&fit, &candidates(flagged, relative), &ways)
 }
 
 /// The refit of `problem` from `x` within `bounds`: the fit's own polish,

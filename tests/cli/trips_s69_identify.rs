@@ -1,5 +1,7 @@
 //! What a user still tripped on in `identify`: a parameter held as
-//! undetermined at a stated value the data lean against, unsaid; a later
+//! undetermined at a stated value the data reject (UniTire's aligning c9
+//! at its start value 0.3, 270 standard errors from the free fit), then
+//! said but still held there; a later
 //! channel's held lines printed in the lateral force's block, with the
 //! block's name repeated in its note; a two-stage line whose stage 2
 //! percentage said nothing of what it is; a rig file in degrees refused
@@ -32,12 +34,12 @@ fn one_level(rig: &Path, model: &str, out: &Path) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
-/// The held lines of `text` that say the data lean against the value,
-/// each with its parameter's name; every one says how far and names the
-/// option that chooses another value for that parameter.
-fn leaning(text: &str) -> Vec<(String, f64)> {
+/// The held lines of `text` whose value is not the stated one but the
+/// nearest the data allow, each with its parameter's name; every one
+/// names the option that holds a value of the user's own.
+fn moved(text: &str) -> Vec<String> {
     text.lines()
-        .filter(|l| l.contains("the data lean against that value"))
+        .filter(|l| l.contains("the end of the free fit's ±2 standard errors nearest"))
         .map(|l| {
             let name = l
                 .split("held: ")
@@ -46,27 +48,29 @@ fn leaning(text: &str) -> Vec<(String, f64)> {
                 .split(" = ")
                 .next()
                 .unwrap();
-            let away: f64 = l
-                .split("it lies ")
-                .nth(1)
-                .and_then(|r| r.split(' ').next())
-                .and_then(|v| v.parse().ok())
-                .unwrap_or_else(|| panic!("no distance in {l}"));
-            assert!(away > 2.0, "{l}");
             assert!(l.contains(&format!("--hold {name}=VALUE")), "{l}");
-            (name.to_string(), away)
+            name.to_string()
         })
         .collect()
 }
 
-/// UniTire's aligning c9, held at its start value 0.3 where the free fit
-/// gave 0.0002 ± 0.0011: the held line, the file's header and the report
-/// say how many standard errors away it lies and how to choose another;
-/// the aligning moment's held lines sit in its block, after its σ line,
-/// and its note names c3, c9 without the block's prefix.
+/// The most UniTire's aligning σ may rise by its holds on the Hoosier
+/// file's 83.4 kPa, 0° level, in points of %: measured +0.066 (9.667 →
+/// 9.733 %, c3, c4, c6, c10 held at their start values; c9's hold at the
+/// end of its ±2 standard errors nearest its start value 0.3 refused by
+/// the guard, which had held it at 0.3 for 25.073 %).
+const UNITIRE_ALIGNING_RISE: f64 = 0.2;
+
+/// UniTire's aligning c9, stated 0.3 where the free fit gave 0.0002 ±
+/// 0.0011, is no longer held where the data reject it: no held value lies
+/// more than two standard errors from the free fit, each held line (on the
+/// terminal and in the file's header) says the value held and the start
+/// value, the report keeps both, and the aligning σ barely rises; the
+/// aligning moment's held lines sit in its block, after its σ line, and
+/// its note names the parameters without the block's prefix.
 #[test]
-fn a_start_value_the_data_lean_against_is_said_with_the_aligning_block() {
-    let Some(rig) = hoosier("a_start_value_the_data_lean_against_is_said_with_the_aligning_block")
+fn a_held_value_is_one_the_data_allow_and_said_with_the_aligning_block() {
+    let Some(rig) = hoosier("a_held_value_is_one_the_data_allow_and_said_with_the_aligning_block")
     else {
         return;
     };
@@ -74,20 +78,44 @@ fn a_start_value_the_data_lean_against_is_said_with_the_aligning_block() {
     let out = dir.path().join("u.toml");
     let text = one_level(&rig, "unitire", &out);
     let file = fs::read_to_string(&out).unwrap();
-    let said = leaning(&text);
-    assert!(!said.is_empty(), "no held value leaned against: {text}");
-    assert_eq!(leaning(&file), said, "{file}");
+    assert_eq!(moved(&file), moved(&text), "{file}");
     let report = read_json(&out.with_extension("report.json"));
-    for (name, away) in &said {
-        let held = report["held"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|h| h["name"] == name.as_str())
-            .unwrap_or_else(|| panic!("{name} not in the report's held list"));
-        let json = held["standard_errors_away"].as_f64().unwrap();
-        assert!((json - away).abs() <= 0.05 + 1e-3 * away, "{held}");
+    let held: Vec<&serde_json::Value> = report["held"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|h| h["why"] == "undetermined")
+        .collect();
+    assert!(!held.is_empty(), "{text}");
+    for h in &held {
+        let (name, value) = (h["name"].as_str().unwrap(), h["value"].as_f64().unwrap());
+        let (fitted, stated) = (h["fitted"].as_f64().unwrap(), h["stated"].as_f64().unwrap());
+        assert_eq!(h["held_at"].as_f64(), Some(value), "{h}");
+        if let Some(se) = h["std_error"].as_f64() {
+            assert!((value - fitted).abs() <= 2.0 * se * (1.0 + 1e-9), "{h}");
+        }
+        for said in [&text, &file] {
+            let line = said
+                .lines()
+                .find(|l| l.contains(&format!("held: {name} = ")))
+                .unwrap_or_else(|| panic!("no held line of {name}: {said}"));
+            assert!(
+                line.contains(&format!("held at the model's start value {stated}"))
+                    || (line.contains(&format!("nearest the model's start value {stated} "))
+                        && moved(line) == [name]),
+                "{line}"
+            );
+        }
     }
+    let aligning = &report["aligning"];
+    let (sigma, free) = (
+        aligning["sigma_percent"].as_f64().unwrap(),
+        aligning["free_sigma_percent"].as_f64().unwrap(),
+    );
+    assert!(
+        sigma < free + UNITIRE_ALIGNING_RISE,
+        "{sigma} against {free}"
+    );
     // The aligning block: its σ line, then its held lines and note.
     let at = |needle: &str| {
         text.find(needle)
@@ -101,7 +129,7 @@ fn a_start_value_the_data_lean_against_is_said_with_the_aligning_block() {
     );
     let note = text
         .lines()
-        .find(|l| l.contains("held at the model's start values, as the data"))
+        .find(|l| l.contains("held at the model's start values") && l.contains("as the data"))
         .unwrap();
     assert!(
         note.starts_with("  aligning moment: c") && !note.contains("aligning.c"),
@@ -156,12 +184,12 @@ fn pac89s_two_stage_line_says_what_stage_2_is_and_held_lines_sit_with_their_chan
 }
 
 /// The staged Magic Formula fit alike: a coefficient the data do not
-/// determine, held at a template's value far from the free fit, is said
-/// to be one the data lean against, with `--hold` to choose another, on
+/// determine, its template value far from the free fit, is held where the
+/// data allow, and its line says the value held and the template's, on
 /// the terminal, in the `.tir`'s header and in the report.
 #[test]
-fn a_staged_fit_says_a_template_value_the_data_lean_against() {
-    let Some(rig) = hoosier("a_staged_fit_says_a_template_value_the_data_lean_against") else {
+fn a_staged_fit_says_the_value_held_and_the_template_value() {
+    let Some(rig) = hoosier("a_staged_fit_says_the_value_held_and_the_template_value") else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -205,11 +233,23 @@ fn a_staged_fit_says_a_template_value_the_data_lean_against() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8_lossy(&o.stdout).into_owned();
-    let said = leaning(&text);
-    assert!(!said.is_empty(), "no held value leaned against: {text}");
-    assert_eq!(leaning(&fs::read_to_string(&out).unwrap()), said);
+    let held: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("not identifiable from these data"))
+        .collect();
+    assert!(!held.is_empty(), "{text}");
+    for l in &held {
+        assert!(
+            l.contains("held at the template's value ")
+                || l.contains("standard errors nearest the template's value "),
+            "{l}"
+        );
+    }
+    assert_eq!(moved(&fs::read_to_string(&out).unwrap()), moved(&text));
     let report = fs::read_to_string(out.with_extension("report.json")).unwrap();
-    assert!(report.contains("\"standard_errors_away\""), "{report}");
+    for key in ["\"standard_errors_away\"", "\"stated\"", "\"held_at\""] {
+        assert!(report.contains(key), "{report}");
+    }
 }
 
 /// A rig file whose slip angles are in degrees is refused in one line

@@ -40,7 +40,8 @@ use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
 use crate::format::readable;
 use crate::identify::spare::{
-    candidates, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, TieBreak, Tried,
+    candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
+    TieBreak, Tried,
 };
 use crate::optim::bounded::BoundedLm;
 use crate::optim::local::LocalResult;
@@ -100,25 +101,34 @@ pub enum HoldReason {
         std_error: Option<f64>,
         /// One standard error's effect on the stage's channel, % of its RMS.
         effect_percent: f64,
-        /// Where the value it is held at comes from.
+        /// Where its stated value comes from.
         source: HoldSource,
-        /// How many standard errors the value held lies from `fitted`
-        /// (`None` without a standard error); past 2 the data lean
-        /// against it, and its line says so (`spare.rs`).
+        /// Its stated value (the template's or the book's).
+        stated: f64,
+        /// The value held: `stated`, or the end of `fitted ± 2` standard
+        /// errors nearest it where `stated` lies beyond (`spare.rs`).
+        held_at: f64,
+        /// How many standard errors `stated` lies from `fitted` (`None`
+        /// without a standard error).
         standard_errors_away: Option<f64>,
     },
 }
 
 impl HoldReason {
     /// The reason as the held line of coefficient `name` says it: its
-    /// words, and for a value the data lean against, by how far and the
-    /// option that chooses another.
+    /// words, and for a value held off its stated one, the option that
+    /// holds it where the user says (`spare.rs`).
     pub fn said(&self, name: &str) -> String {
         match self {
             HoldReason::NotIdentifiable {
+                stated,
+                held_at,
                 standard_errors_away,
                 ..
-            } => format!("{self}{}", lean_clause(name, *standard_errors_away)),
+            } => format!(
+                "{self}{}",
+                lean_clause(name, *stated, *held_at, *standard_errors_away)
+            ),
             _ => self.to_string(),
         }
     }
@@ -146,20 +156,34 @@ impl fmt::Display for HoldReason {
                 std_error: Some(se),
                 effect_percent,
                 source,
-                ..
+                stated,
+                held_at: held,
+                standard_errors_away,
             } => write!(
                 f,
                 "not identifiable from these data when fitted ({} ± {}; one \
                  standard error of it alone moves the fit by {effect_percent:.1} % of the \
-                 channel's RMS, which the other parameters' trade-off undoes): held at the \
-                 {source}",
+                 channel's RMS, which the other parameters' trade-off undoes): {}",
                 readable(*fitted, 5),
-                readable(*se, 4)
+                readable(*se, 4),
+                held_at(
+                    &format!("the {source}"),
+                    *stated,
+                    *held,
+                    *standard_errors_away
+                )
             ),
-            HoldReason::NotIdentifiable { fitted, source, .. } => write!(
+            HoldReason::NotIdentifiable {
+                fitted,
+                source,
+                stated,
+                held_at: held,
+                ..
+            } => write!(
                 f,
-                "the data do not move it (it stood at {}): held at the {source}",
-                readable(*fitted, 5)
+                "the data do not move it (it stood at {}): {}",
+                readable(*fitted, 5),
+                held_at(&format!("the {source}"), *stated, *held, None)
             ),
         }
     }
@@ -308,6 +332,9 @@ pub(super) fn hold_undetermined(
     evaluations: &mut usize,
 ) -> Vec<(&'static str, f64, HoldReason)> {
     let mut held = Vec::new();
+    // Coefficients whose hold the guard refused: left free, with their
+    // warning, and not tried again (`spare.rs`).
+    let mut refused: Vec<&str> = Vec::new();
     let lm = BoundedLm {
         iterations,
         tolerance: 1e-12,
@@ -319,7 +346,7 @@ pub(super) fn hold_undetermined(
             u.std_error[k].map_or(f64::INFINITY, |s| s / fit.p[k].abs().max(f64::MIN_POSITIVE))
         };
         let flagged: Vec<usize> = (0..fit.p.len())
-            .filter(|&k| u.flagged(k, fit.p[k]))
+            .filter(|&k| u.flagged(k, fit.p[k]) && !refused.contains(&fit.problem.names[k]))
             .collect();
         // The stated values up front: the holds are tried side by side.
         let values: Vec<f64> = fit.problem.names.iter().map(|n| stated(n).0).collect();
@@ -345,48 +372,74 @@ pub(super) fn hold_undetermined(
         let holding = HoldFit {
             problem,
             p,
+            std_errors: &u.std_error,
             bounds: &fit.bounds,
             clamp_starts: true,
             tie: TieBreak::LatestInOrder,
+            guarded: false,
         };
-        let (tried, n) = spare(&holding, &candidates(flagged, relative), &ways);
+        let Spared {
+            kept,
+            refused: now_refused,
+            evaluations: n,
+        } = spare(&holding, &candidates(flagged, relative), &ways);
         *evaluations += n;
-        let Some(Tried {
-            k,
-            problem,
-            p: mut refitted,
-            cost,
-        }) = tried
-        else {
-            break;
+        refused.extend(now_refused.iter().map(|&k| fit.problem.names[k]));
+        let Some(tried) = kept else {
+            if now_refused.is_empty() {
+                break;
+            }
+            continue;
         };
-        let mut needs = fit.needs.clone();
-        needs.remove(k);
-        fit.starts.remove(k);
-        fit.bounds.remove(k);
-        let fresh = refit(&problem, &needs, &fit.starts, &fit.bounds);
-        *evaluations += fresh.evaluations;
-        if fresh.cost.is_finite() && fresh.cost < cost {
-            refitted = fresh.params;
-        }
+        let k = tried.k;
         let name = fit.problem.names[k];
         let (value, source) = stated(name);
         held.push((
             name,
-            value,
+            tried.value,
             HoldReason::NotIdentifiable {
                 fitted: fit.p[k],
                 std_error: u.std_error[k],
                 effect_percent: 100.0 * u.effect[k],
                 source,
+                stated: value,
+                held_at: tried.value,
                 standard_errors_away: standard_errors_away(value, fit.p[k], u.std_error[k]),
             },
         ));
-        fit.problem = problem;
-        fit.needs = needs;
-        fit.p = refitted;
+        keep(fit, tried, refit, evaluations);
     }
     held
+}
+
+/// `fit` with the hold `tried` kept: its problem, and of its refit from
+/// the optimum and the stage's own fit of it from its start values
+/// (`refit`) the better (a warm start that jumped one coefficient can
+/// stall where a fresh one does not). Adds the residual evaluations to
+/// `evaluations`.
+fn keep<'a>(
+    fit: &mut StageFit<'a>,
+    tried: Tried<StageProblem<'a>>,
+    refit: &Refit,
+    evaluations: &mut usize,
+) {
+    let Tried {
+        k,
+        problem,
+        p: mut refitted,
+        cost,
+        ..
+    } = tried;
+    fit.needs.remove(k);
+    fit.starts.remove(k);
+    fit.bounds.remove(k);
+    let fresh = refit(&problem, &fit.needs, &fit.starts, &fit.bounds);
+    *evaluations += fresh.evaluations;
+    if fresh.cost.is_finite() && fresh.cost < cost {
+        refitted = fresh.params;
+    }
+    fit.problem = problem;
+    fit.p = refitted;
 }
 
 #[cfg(test)]
@@ -443,27 +496,38 @@ mod tests {
             std_error: Some(2.049),
             effect_percent: 715.1,
             source: HoldSource::PacejkaBook,
+            stated: 0.0,
+            held_at: 0.0,
             standard_errors_away: Some(0.049),
         };
-        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default");
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 the data allow)");
     }
 
     /// A stated value more than two standard errors from the fitted one
-    /// is said to be leaned against, naming `--hold` for that coefficient;
-    /// within two, the line is the reason alone.
+    /// is not held: the end of the ±2 nearest it is, and the line says both
+    /// values, how far the stated one lay and the option that holds
+    /// another; within two, the stated value is held and the line is the
+    /// reason alone.
     #[test]
-    fn a_held_line_says_when_the_data_lean_against_the_stated_value() {
-        let rule = |away| HoldReason::NotIdentifiable {
-            fitted: 0.0009574,
-            std_error: Some(0.002192),
-            effect_percent: 9.2,
-            source: HoldSource::Template,
-            standard_errors_away: away,
+    fn a_held_line_says_the_value_held_and_the_stated_one() {
+        use crate::identify::spare::held_value;
+        let rule = |stated: f64| {
+            let (fitted, se) = (0.0009574, Some(0.002192));
+            HoldReason::NotIdentifiable {
+                fitted,
+                std_error: se,
+                effect_percent: 9.2,
+                source: HoldSource::Template,
+                stated,
+                held_at: held_value(stated, fitted, se, (-1.0, 1.0)),
+                standard_errors_away: standard_errors_away(stated, fitted, se),
+            }
         };
-        let far = rule(Some(37.93)).said("QDZ1");
-        assert!(far.starts_with(&rule(None).to_string()), "{far}");
-        assert!(far.ends_with("held at the template's value; the data lean against that value: it lies 37.9 standard errors from the free fit, outside the ±2 the data allow (to hold it at a value of your own, give --hold QDZ1=VALUE)"), "{far}");
-        assert_eq!(rule(Some(1.9)).said("QDZ1"), rule(Some(1.9)).to_string());
+        let far = rule(0.084).said("QDZ1");
+        assert!(far.ends_with("held at 0.00534, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit, where the data would not put it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
+        let near = rule(0.004);
+        assert_eq!(near.said("QDZ1"), near.to_string());
+        assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 the data allow)"), "{near}");
         assert_eq!(HoldReason::Given.said("PKY4"), "given with --hold");
     }
 }

@@ -151,24 +151,47 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
 }
 
 /// The note of a fit that held parameters the data do not determine:
-/// which, and its σ with them held against fitted free.
+/// which, where (the model's start values, or for a start value the data
+/// reject the nearest value they allow), and its σ with them held against
+/// fitted free.
 pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
     let free = f.free_sigma_percent?;
-    let names: Vec<&str> = f
+    let held: Vec<(&str, bool)> = f
         .parameters
         .iter()
-        .filter(|p| matches!(p.held, Some(HeldFor::Undetermined { .. })))
+        .filter_map(|p| match p.held {
+            Some(HeldFor::Undetermined {
+                stated, held_at, ..
+            }) => Some((p, held_at != stated)),
+            _ => None,
+        })
         // Inside its own block a parameter goes without the block's
         // prefix (UniTire's `aligning.c3` is `c3` after "aligning
         // moment:"); the held lines keep the name --hold takes.
-        .map(|p| p.name.rsplit_once('.').map_or(p.name.as_str(), |(_, n)| n))
+        .map(|(p, moved)| {
+            let name = p.name.rsplit_once('.').map_or(p.name.as_str(), |(_, n)| n);
+            (name, moved)
+        })
         .collect();
+    let names: Vec<&str> = held.iter().map(|h| h.0).collect();
+    let one = names.len() == 1;
+    let at = if held.iter().any(|h| h.1) {
+        format!(
+            "held at the model's start {} or, where the data reject {}, the nearest value they allow",
+            if one { "value" } else { "values" },
+            if one { "it" } else { "one" },
+        )
+    } else {
+        format!(
+            "held at the model's start {}",
+            if one { "value" } else { "values" }
+        )
+    };
     Some(Note::said(format!(
-        "{}: {} held at the model's start {}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free",
+        "{}: {} {at}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free",
         f.channel.quantity(),
         names.join(", "),
-        if names.len() == 1 { "value" } else { "values" },
-        if names.len() == 1 { "it" } else { "them" },
+        if one { "it" } else { "them" },
         fixed(f.sigma_percent, 3),
         fixed(free, 3)
     )))

@@ -251,17 +251,10 @@ pub enum ParamReason {
         name: String,
     },
     /// A channel uncertainty stated under `[channels]` at least the
-    /// channel's RMS signal over the runs (its unit's): the channel would
-    /// carry nothing.
-    #[error("is at least the channel's RMS signal over the runs ({} {unit}): a channel trusted no better than its whole motion carries nothing into any fit; a sensor of this kind is good to about {} {unit} (leave the key out for the tool's estimate from the channel's own scatter, or leave the column out of the runs to leave the channel out)", crate::format::rounded(*signal, 3), super::number::Num(*floor))]
-    UncertaintyBeyondSignal {
-        /// The channel's RMS signal over every run, its unit.
-        signal: f64,
-        /// The channel's unit.
-        unit: &'static str,
-        /// The floor of a sensor of its kind, its unit.
-        floor: f64,
-    },
+    /// channel's RMS signal over the runs and ten times an estimated
+    /// output's: the channel would carry nothing.
+    #[error("is at least the channel's RMS signal over the runs ({} {u}) and more than {} {u}, ten times what even an estimated output of this kind is good to: a channel trusted no better than its whole motion carries nothing into any fit; a sensor of this kind is good to about {} {u} (leave the key out for the tool's estimate from the channel's own scatter, or leave the column out of the runs to leave the channel out)", crate::format::rounded(.0.signal, 3), super::number::Num(.0.estimated), super::number::Num(.0.floor), u = .0.unit)]
+    UncertaintyBeyondSignal(Box<BeyondSignal>),
     /// A `[tyres]` table that names no single source of tyres.
     #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
     TyreSource,
@@ -520,4 +513,19 @@ impl std::fmt::Display for ScheduleColumn {
             ScheduleColumn::Speed => "speed",
         })
     }
+}
+
+/// What [`ParamReason::UncertaintyBeyondSignal`] says, boxed: the channel's
+/// RMS signal, its unit, a sensor's floor and ten times an estimated
+/// output's uncertainty (the channel's unit).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BeyondSignal {
+    /// The channel's RMS signal over every run.
+    pub signal: f64,
+    /// The channel's unit.
+    pub unit: &'static str,
+    /// The floor of a sensor of its kind.
+    pub floor: f64,
+    /// Ten times an estimated output's uncertainty.
+    pub estimated: f64,
 }

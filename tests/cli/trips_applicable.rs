@@ -57,9 +57,15 @@ fn simulate_says_when_its_step_steer_is_a_slide_a_spin_or_a_crawl() {
         "{said}"
     );
     let warnings = read_json(&out.join("metrics.json"))["warnings"].clone();
-    // The slide and the spin, each axle past its peak, and the response
-    // not settled in the steady window.
-    assert_eq!(warnings.as_array().map(Vec::len), Some(5), "{warnings}");
+    // The slide and the spin, each axle past its peak, the response not
+    // settled in the steady window, and the friction limit it ends at.
+    assert_eq!(warnings.as_array().map(Vec::len), Some(6), "{warnings}");
+    assert!(
+        warnings
+            .to_string()
+            .contains("the car turns at its friction limit"),
+        "{warnings}"
+    );
     assert!(
         warnings
             .to_string()

@@ -88,12 +88,20 @@ pub fn stated_of(c: Channel, stated: &StatedUncertainty) -> Option<f64> {
     }
 }
 
-/// A stated uncertainty at least the channel's RMS `signal` on the runs:
-/// a channel trusted no better than its whole motion would carry nothing
-/// into any fit and no gap of it could rise above noise, so it is a slip
-/// (a unit, a digit), refused where it is read. False without a signal.
-pub fn beyond_signal(stated: f64, signal: f64) -> bool {
-    signal > 0.0 && stated >= signal
+/// How many times the uncertainty of an estimated output of its channel
+/// ([`ESTIMATED`]) a stated uncertainty may be before, beyond the
+/// channel's whole signal too, it is refused ([`beyond_signal`]).
+pub const ESTIMATED_REACH: f64 = 10.0;
+
+/// A stated uncertainty (channel `c`) at least the channel's RMS `signal`
+/// on the runs and [`ESTIMATED_REACH`] times what even an estimated output
+/// of its kind is good to: no sensor or estimator is that poor, so it is a
+/// slip (a unit, a digit), refused where it is read. Either alone is not:
+/// a light car's sideslip (RMS 0.0033 rad on the slow oval) is smaller
+/// than an estimator's 0.005 rad and still carries what it measures. False
+/// without a signal.
+pub fn beyond_signal(c: Channel, stated: f64, signal: f64) -> bool {
+    signal > 0.0 && stated >= signal && stated > ESTIMATED_REACH * ESTIMATED[c.index()]
 }
 
 /// How many times a channel's high-frequency scatter may exceed its

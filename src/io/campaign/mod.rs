@@ -38,9 +38,12 @@ pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings, StatedUncertainty};
 use crate::diagnose::effects::{EffectKind, RollModel};
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::model::scale::{beyond_signal, signal_rms, stated_of, SENSOR_FLOOR};
+use crate::diagnose::model::scale::{
+    beyond_signal, signal_rms, stated_of, ESTIMATED, ESTIMATED_REACH, SENSOR_FLOOR,
+};
 use crate::error::{
-    named, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError, ParamReason,
+    named, BeyondSignal, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError,
+    ParamReason,
 };
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
@@ -255,12 +258,13 @@ fn check_stated(
             continue;
         };
         let signal = rms[ch.index()];
-        if beyond_signal(s, signal) {
-            let reason = ParamReason::UncertaintyBeyondSignal {
+        if beyond_signal(ch, s, signal) {
+            let reason = ParamReason::UncertaintyBeyondSignal(Box::new(BeyondSignal {
                 signal,
                 unit: ch.unit(),
                 floor: SENSOR_FLOOR[ch.index()],
-            };
+                estimated: ESTIMATED_REACH * ESTIMATED[ch.index()],
+            }));
             return Err(param_error(
                 src,
                 Some("channels"),

@@ -150,11 +150,10 @@ fn windows_said(m: &StepMetrics, s: &MetricSettings, t: &[f64], t_end: f64) -> V
             crate::format::fixed(m.yaw_rate_response_time, 3)
         ));
     }
-    let mut dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-    if dt.is_empty() {
+    if t.len() < 2 {
         return said;
     }
-    let dt = crate::measured::clean::median(&mut dt);
+    let dt = crate::measured::clean::median_interval(t);
     for (name, w) in [("initial", s.pre_window), ("steady", s.steady_window)] {
         if w < 2.0 * dt {
             said.push(format!(

@@ -462,9 +462,7 @@ pub(crate) fn step_metrics(
         });
     }
     // The stated low-pass, when one is asked for and the sampling allows it.
-    let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-    dts.sort_by(f64::total_cmp);
-    let dt = dts[dts.len() / 2];
+    let dt = crate::measured::clean::median_interval(t);
     let filter_hz = s.filter_hz.filter(|f| *f > 0.0 && *f < 0.4 / dt);
     let filtered = |x: &[f64]| match filter_hz {
         Some(f) => zero_phase_low_pass(x, dt, f),

@@ -52,9 +52,7 @@ pub(crate) fn check_step_shape(
     let raw_noise = noise_deviation(steer) / m.steer_step.abs();
     let (steer, noise) = match m.filter_hz {
         Some(f) => {
-            let mut dts: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-            dts.sort_by(f64::total_cmp);
-            let dt = dts[dts.len() / 2];
+            let dt = crate::measured::clean::median_interval(t);
             (
                 zero_phase_low_pass(steer, dt, f),
                 raw_noise * noise_gain(dt, f),

@@ -245,8 +245,9 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
     Ok(())
 }
 
-/// Refuses a channel uncertainty under `[channels]` no smaller than the
-/// channel's RMS signal over the `runs` ([`beyond_signal`]).
+/// Refuses a channel uncertainty under `[channels]` beyond both the
+/// channel's RMS signal over the `runs` and ten times an estimated
+/// output's ([`beyond_signal`]).
 fn check_stated(
     src: &TomlSource,
     stated: &StatedUncertainty,
@@ -281,10 +282,8 @@ fn check_stated(
 fn rate_note(rate: f64, runs: &[crate::measured::MeasuredRun]) -> Option<String> {
     let highest = runs
         .iter()
-        .filter_map(|r| {
-            let mut dt: Vec<f64> = r.t.windows(2).map(|w| w[1] - w[0]).collect();
-            (!dt.is_empty()).then(|| 1.0 / crate::measured::clean::median(&mut dt))
-        })
+        .filter(|r| r.t.len() > 1)
+        .map(|r| 1.0 / crate::measured::clean::median_interval(&r.t))
         .fold(0.0_f64, f64::max);
     (highest > 0.0 && rate > 1.01 * highest).then(|| {
         format!(

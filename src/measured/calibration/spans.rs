@@ -6,19 +6,13 @@
 //! dropout. Indices are the run's samples; spans are `[lo, hi)`.
 
 use super::report::{Criteria, RejectedStraight, Rejection};
-use crate::measured::clean::{median, GAP_INTERVALS};
+use crate::measured::clean::{median, median_interval, GAP_INTERVALS};
 use crate::measured::MeasuredRun;
-
-/// The median sample interval of `t`, s.
-fn interval(t: &[f64]) -> f64 {
-    let mut dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-    median(&mut dt)
-}
 
 /// The run's pieces `[lo, hi)` between its time gaps (steps longer than
 /// [`GAP_INTERVALS`] median intervals).
 fn gapless(t: &[f64]) -> Vec<(usize, usize)> {
-    let dt = interval(t);
+    let dt = median_interval(t);
     let mut out = Vec::new();
     let mut lo = 0;
     for i in 1..t.len() {
@@ -50,7 +44,7 @@ fn running_median(x: &[f64], h: usize) -> Vec<f64> {
 pub(super) fn smoothed(run: &MeasuredRun, x: &[f64], window: f64) -> Vec<f64> {
     let mut out = Vec::with_capacity(x.len());
     for (lo, hi) in gapless(&run.t) {
-        let dt = interval(&run.t[lo..hi]);
+        let dt = median_interval(&run.t[lo..hi]);
         let h = if dt > 0.0 {
             ((0.5 * window / dt).round() as usize).max(1)
         } else {

@@ -19,6 +19,14 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
+/// The median (upper) interval between successive times `t`, s; 0 with
+/// fewer than two times. The sampling a run's windows, filters and gaps
+/// are judged by.
+pub(crate) fn median_interval(t: &[f64]) -> f64 {
+    let mut dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    median(&mut dt)
+}
+
 /// The nearest-rank `p`-quantile of `sorted` (ascending); None when empty.
 pub(crate) fn quantile(sorted: &[f64], p: f64) -> Option<f64> {
     let last = sorted.len().checked_sub(1)?;

@@ -4,7 +4,7 @@
 //! entry points for a diagnosis, a single replay and the metrics. Times in
 //! s, speeds in m/s.
 
-use super::glitches::{median, repair, treat_glitches};
+use super::glitches::{repair, treat_glitches};
 use super::held::treat_held;
 use super::report::{
     CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
@@ -71,8 +71,7 @@ pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRu
 
 /// The index ranges `[lo, hi)` between time gaps of a run, listing the gaps.
 fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, usize)> {
-    let mut dt: Vec<f64> = run.t.windows(2).map(|w| w[1] - w[0]).collect();
-    let med = median(&mut dt);
+    let med = super::median_interval(&run.t);
     let mut bounds = vec![0];
     for i in 1..run.t.len() {
         if run.t[i] - run.t[i - 1] > GAP_INTERVALS * med {

@@ -100,7 +100,7 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
         InputProblem::TirValue(e) => (Some(&e.key), e.value.number()),
         InputProblem::TimeNotIncreasing { value, .. } => (Some("t"), Some(*value)),
         InputProblem::SteerBeyondQuarterTurn { value, .. } => (Some("steer"), Some(*value)),
-        InputProblem::NegativeLoad { value } => (Some("fz"), Some(*value)),
+        InputProblem::NegativeLoad { value, .. } => (Some("fz"), Some(*value)),
         InputProblem::NonPositivePressure { value } => (Some("pressure"), Some(*value)),
         InputProblem::AngleInDegrees { column, value, .. } => (Some(column), Some(*value)),
         InputProblem::WrongSign { channel, slope, .. } => {

@@ -208,10 +208,13 @@ pub enum InputProblem {
         p99: f64,
     },
     /// A negative vertical load.
-    #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md)", Num(*value))]
+    #[error("column `fz`: {} N is negative (loads are positive in FORMATS.md){}", Num(*value), if *every { "; every load of the file is: a rig whose z axis points down (SAE's axes) logs them so; negate the column" } else { "" })]
     NegativeLoad {
         /// The load, N.
         value: f64,
+        /// Whether every load of the file is negative (a sign convention,
+        /// not a glitch).
+        every: bool,
     },
     /// A non-positive inflation pressure.
     #[error("column `pressure`: {} Pa is not a positive pressure", Num(*value))]

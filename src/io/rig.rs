@@ -162,11 +162,16 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     // Every sample no tyre test holds, refused together with the cells
     // that are no numbers: a user fixing the file learns of them all at
     // once. (A cell that is no finite number is said as such alone.)
+    // Every load negative is a convention (SAE's z axis points down), and
+    // said so; one negative among positive loads is a bad sample.
+    let every = fz.iter().filter(|v| v.is_finite()).all(|v| *v < 0.0);
     errors.extend(
         fz.iter()
             .enumerate()
             .filter(|(_, v)| v.is_finite() && **v < 0.0)
-            .map(|(i, v)| c.error_at(path, i, "fz", InputProblem::NegativeLoad { value: *v })),
+            .map(|(i, &value)| {
+                c.error_at(path, i, "fz", InputProblem::NegativeLoad { value, every })
+            }),
     );
     if let Some(speed) = c.get("speed") {
         errors.extend(

@@ -186,10 +186,29 @@ fn the_banked_ovals_bank_is_named_through_an_estimated_sideslip_on_three_seeds()
         let offset = parameter(&d, "bank_profile.offset");
         assert!((scale - 1.0).abs() < 0.1, "seed {seed}: scale {scale}");
         assert!(offset.abs() < 0.03, "seed {seed}: offset {offset} rad");
+        // A state estimator's sideslip: smooth (a quarter of a sensor's
+        // scatter) and wrong at low frequency. Trusted to its scatter it
+        // decided every fit; trusted as an estimate (0.005 rad) the bank
+        // the runs log is named, at its logged scale.
+        let beta = &d["gap"]["noise"][1];
+        assert_eq!(beta["channel"], "beta");
+        assert_eq!(beta["source"], "estimated", "seed {seed}: {beta}");
+        assert!(beta["scatter"].as_f64().unwrap() < 0.00085, "{beta}");
         assert!(
-            stdout.contains("an estimated output's"),
+            stdout.contains("beta 0.0050 rad (an estimated output's: its scatter"),
             "seed {seed}: the sideslip's floor is not said: {stdout}"
         );
+        // The runs stay far below the limit (|ay| about 1.3 m/s²): the
+        // peak friction is held at the road class's centre, and said so.
+        let axles = &d["base"]["axles"];
+        assert_eq!(axles["parameters"][2]["held"], true, "{axles}");
+        assert!(stdout.contains("peak friction held at 0.92"), "{stdout}");
+        // Fitted with the bank, the axles are a road tyre's.
+        let row = ranked(&d, "bank_profile");
+        for a in &row["axles"].as_array().unwrap()[..2] {
+            let k = a["value"].as_f64().unwrap();
+            assert!((8.0..35.0).contains(&k), "seed {seed}: {a}");
+        }
     }
 }
 

@@ -2,10 +2,11 @@
 //! trusted uncertainties, as a user states them in a campaign
 //! (`[tyres] class`, `cornering`, `friction`; `[channels]`) and reads them
 //! in the report: the classes' ranges against public tyre files, the peak
-//! friction held where the runs never approach it, an estimated sideslip
-//! trusted as an estimate, and the errors a wrong table gets.
+//! friction held where the runs never approach it, and the errors a wrong
+//! table gets. An estimated sideslip trusted as an estimate, with the
+//! peak friction held, is checked on the banked oval's analogue on three
+//! seeds (`analogue_verdicts.rs`).
 
-use super::programmes::parameter;
 use super::*;
 use handling::tyre::TyreModel;
 use std::fs;
@@ -60,52 +61,6 @@ fn tables(tyres: &str, channels: &str, effects: &str) -> String {
     format!(
         "effects = [{effects}]\nmax_effects = 1\n\n[tyres]\n{tyres}\n\n[channels]\n{channels}\n"
     )
-}
-
-#[test]
-fn an_estimated_sideslip_is_trusted_as_an_estimate_and_the_logged_bank_is_named_on_three_seeds() {
-    // A state estimator's sideslip: smooth (a quarter of a sensor's
-    // scatter) and wrong at low frequency. Trusted to its scatter it
-    // decided every fit; trusted as an estimate (0.005 rad) the bank the
-    // runs log is named, at its logged scale.
-    let dir = tempfile::tempdir().unwrap();
-    for seed in ["1", "2", "3"] {
-        let c = synth_extended(
-            dir.path(),
-            "slow-oval-estimated-beta",
-            "bank_profile",
-            seed,
-            "effects = [\"bank_profile\", \"road_bank\", \"sensor_bias\"]\nmax_effects = 1\n",
-        );
-        let (stdout, d) = diagnose_campaign(&c);
-        assert!(
-            stdout.contains("verdict: bank_profile explains the gap"),
-            "seed {seed}: {stdout}"
-        );
-        let scale = parameter(&d, "bank_profile.scale");
-        // Measured 0.954, 0.886, 0.928 on seeds 1–3 (the release before
-        // fitted 0.81 on seed 1, with axles that peak at 0.04°).
-        assert!((scale - 1.0).abs() < 0.15, "seed {seed}: scale {scale}");
-        let beta = &d["gap"]["noise"][1];
-        assert_eq!(beta["channel"], "beta");
-        assert_eq!(beta["source"], "estimated", "seed {seed}: {beta}");
-        assert!(beta["scatter"].as_f64().unwrap() < 0.00085, "{beta}");
-        assert!(
-            stdout.contains("beta 0.0050 rad (an estimated output's: its scatter"),
-            "{stdout}"
-        );
-        // The runs stay far below the limit (|ay| about 1.3 m/s²): the
-        // peak friction is held at the road class's centre, and said so.
-        let axles = &d["base"]["axles"];
-        assert_eq!(axles["parameters"][2]["held"], true, "{axles}");
-        assert!(stdout.contains("peak friction held at 0.92"), "{stdout}");
-        // Fitted with the bank, the axles are a road tyre's.
-        let row = ranked(&d, "bank_profile");
-        for a in &row["axles"].as_array().unwrap()[..2] {
-            let k = a["value"].as_f64().unwrap();
-            assert!((8.0..35.0).contains(&k), "seed {seed}: {a}");
-        }
-    }
 }
 
 #[test]

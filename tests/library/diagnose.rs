@@ -3,34 +3,13 @@
 //! effects are reported as confounded, a seed reproduces its numbers, and
 //! a roll damped unlike the campaign states is fitted with its camber.
 
-/// Diagnoses a synthetic campaign with `truth` withheld (library API).
-fn diagnose_synthetic(
-    truth: &[handling::diagnose::effects::EffectKind],
-    seed: u64,
-) -> handling::diagnose::Diagnosis {
-    use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
-    let s = generate(&SynthSpec {
-        effects: truth.iter().map(|e| (*e, truth_values(*e))).collect(),
-        seed,
-        noise: Noise::default(),
-        programme: Default::default(),
-    });
-    let settings = handling::diagnose::DiagnoseSettings {
-        seed,
-        ..Default::default()
-    };
-    let c = s.campaign(
-        handling::diagnose::effects::EffectKind::ALL.to_vec(),
-        settings,
-    );
-    handling::diagnose::diagnose(&c, None).unwrap()
-}
+use super::{diagnosed, diagnosed_afresh};
 
 #[test]
 fn no_effect_gives_an_empty_verdict_and_a_pair_is_found_together() {
     use handling::diagnose::effects::EffectKind;
     // Only measurement noise and the tyre's model-form error: no gap.
-    let d = diagnose_synthetic(&[], 4);
+    let d = diagnosed(&[], 4, true, &[]);
     assert!(d.verdict.effects().is_empty(), "{}", d.verdict.statement());
     assert!(!d.gap.significant);
     assert_eq!(
@@ -40,7 +19,8 @@ fn no_effect_gives_an_empty_verdict_and_a_pair_is_found_together() {
     assert!(d.verdict.statement().starts_with("no significant gap"));
     // A tyre lag and sensor offsets together: each alone explains less than
     // the acceptance share, the pair nearly all of it.
-    let d = diagnose_synthetic(&[EffectKind::RelaxationLength, EffectKind::SensorBias], 4);
+    let pair = [EffectKind::RelaxationLength, EffectKind::SensorBias];
+    let d = diagnosed(&pair, 4, true, &[]);
     let mut found = d.verdict.effects().to_vec();
     found.sort();
     let mut withheld = [EffectKind::RelaxationLength, EffectKind::SensorBias];
@@ -66,7 +46,7 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
     // Steering compliance and a softer front axle are the same thing in the
     // linear range: named, and reported as confounded with the test that
     // separates them.
-    let d = diagnose_synthetic(&[EffectKind::SteeringCompliance], 5);
+    let d = diagnosed_afresh(&[EffectKind::SteeringCompliance], 5, true, &[]);
     assert_eq!(
         d.verdict.effects(),
         [EffectKind::SteeringCompliance],
@@ -82,7 +62,7 @@ fn look_alike_effects_are_reported_as_confounded_and_runs_reproduce() {
     assert!((c - 0.003).abs() < 0.0003, "{c} rad/kN");
     // Reproducible: the same seed gives the same numbers (compared as text:
     // an unidentifiable parameter's standard error is NaN).
-    let again = diagnose_synthetic(&[EffectKind::SteeringCompliance], 5);
+    let again = diagnosed_afresh(&[EffectKind::SteeringCompliance], 5, true, &[]);
     assert_eq!(format!("{:?}", again.ranking), format!("{:?}", d.ranking));
     assert_eq!(format!("{:?}", again.verdict), format!("{:?}", d.verdict));
 }

@@ -6,31 +6,10 @@
 //! every candidate: the single effects against the base model, the sets the
 //! greedy additions screened against the set they extend.
 
+use super::diagnosed;
 use handling::diagnose::effects::{same_effects, EffectKind};
 use handling::diagnose::report::Screened;
-use handling::diagnose::{diagnose, DiagnoseSettings, Diagnosis};
-use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
-
-/// A campaign with `truth` withheld, diagnosed against every effect but
-/// `hidden` with screening on or off.
-fn diagnosed(truth: &[EffectKind], seed: u64, screening: bool, hidden: &[EffectKind]) -> Diagnosis {
-    let s = generate(&SynthSpec {
-        effects: truth.iter().map(|e| (*e, truth_values(*e))).collect(),
-        seed,
-        noise: Noise::default(),
-        programme: Default::default(),
-    });
-    let settings = DiagnoseSettings {
-        seed,
-        screening,
-        ..Default::default()
-    };
-    let candidates = EffectKind::ALL
-        .into_iter()
-        .filter(|e| !hidden.contains(e))
-        .collect();
-    diagnose(&s.campaign(candidates, settings), None).unwrap()
-}
+use handling::diagnose::Diagnosis;
 
 /// Checks one campaign; returns the number of single effects screened and
 /// of sets the greedy additions screened.

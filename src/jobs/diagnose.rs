@@ -15,7 +15,7 @@ use crate::error::Error;
 use crate::format::fixed;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
-use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};
+use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style, MEASURED_DOTS};
 use crate::report::progress::Progress;
 use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
 use serde::Serialize;
@@ -490,19 +490,10 @@ fn overlays(d: &Diagnosis) -> Figure {
             if *ch == Channel::Beta && o.measured.len() > 2 {
                 continue;
             }
-            let mut series = vec![
-                Series::line("measured", &o.t, m, 7).styled(Style::Points(1)),
-                Series::line("base model", &o.t, observed_channel(&o.base, *ch), 1)
-                    .styled(Style::Dashed),
-            ];
-            if !d.verdict.effects().is_empty() {
-                series.push(Series::line(
-                    &format!("with {}", joined(d.verdict.effects(), " + ")),
-                    &o.t,
-                    observed_channel(&o.after, *ch),
-                    2,
-                ));
-            }
+            let label = format!("with {}", joined(d.verdict.effects(), " + "));
+            let after = (!d.verdict.effects().is_empty())
+                .then(|| (label.as_str(), observed_channel(&o.after, *ch)));
+            let series = overlay_series(&o.t, m, observed_channel(&o.base, *ch), after);
             panels.push(Panel {
                 title: format!("{name}: {} (held out)", quantity(*ch)),
                 x_label: "t, s".into(),
@@ -519,6 +510,23 @@ fn overlays(d: &Diagnosis) -> Figure {
         width: 1400,
         row_height: 280,
     }
+}
+
+/// One overlay panel's series: the base model dashed, the model with the
+/// verdict's effects (its label and trace) solid, and the measured dots
+/// last, over both lines (drawn first, the lines hid them).
+fn overlay_series(
+    t: &[f64],
+    measured: &[f64],
+    base: &[f64],
+    after: Option<(&str, &[f64])>,
+) -> Vec<Series> {
+    let mut series = vec![Series::line("base model", t, base, 1).styled(Style::Dashed)];
+    if let Some((label, y)) = after {
+        series.push(Series::line(label, t, y, 2));
+    }
+    series.push(Series::line("measured", t, measured, 7).styled(MEASURED_DOTS));
+    series
 }
 
 #[cfg(test)]

@@ -11,7 +11,7 @@
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
 pub use super::series::LABEL_PX;
-pub use super::series::{palette, Marker, Series, Shape, Style, INK};
+pub use super::series::{palette, Marker, Series, Shape, Style, INK, MEASURED_DOTS};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
 use plotters::coord::types::RangedCoordf64;

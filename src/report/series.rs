@@ -27,6 +27,11 @@ pub enum Style {
     Heat(f64, f64),
 }
 
+/// How measured samples are drawn beside a model's lines: dots, the last
+/// series of their panel so that they lie over the lines (a dashed line
+/// through noisy samples reads as a smear; dots under a line are hidden).
+pub const MEASURED_DOTS: Style = Style::Points(2);
+
 /// The shape of a marker.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shape {

@@ -20,7 +20,7 @@ use crate::metrics::applicability::{
     applicability_with_grip, schedule_applicability, step_rate_applicability, Grip, Overshoot,
 };
 use crate::metrics::{simulated_step_metrics, StepMetrics};
-use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::plot::{Figure, Panel, Series, MEASURED_DOTS};
 use crate::report::{
     refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
 };
@@ -260,7 +260,9 @@ impl SimulateReport {
 }
 
 /// Steer, yaw rate, lateral acceleration and sideslip against time, with a
-/// replayed run's measurements dashed.
+/// replayed run's measurements as dots over the model's line (a dashed
+/// line through noisy samples reads as a smear, and under the line they
+/// cannot be seen).
 fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -> Figure {
     let deg = |v: &[f64]| v.iter().map(|x| x.to_degrees()).collect::<Vec<_>>();
     let panel = |title: &str, y_label: &str, label: &str, y: &[f64]| Panel {
@@ -295,7 +297,7 @@ fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -
         let k = usize::from(speed_varies);
         let add = |p: &mut Panel, y: &[f64]| {
             p.series
-                .push(Series::line("measured", &run.t, y, 1).styled(Style::Dashed));
+                .push(Series::line("measured", &run.t, y, 1).styled(MEASURED_DOTS));
         };
         add(&mut panels[1 + k], &deg(&run.yaw_rate));
         if let Some(ay) = &run.ay {
@@ -306,4 +308,53 @@ fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -
         }
     }
     Figure::stack(panels)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::plot::Style;
+
+    /// A replayed run's samples are dots drawn last in each response panel
+    /// (over the model's line), in every channel the run logs.
+    #[test]
+    fn measured_samples_are_dots_over_the_models_line() {
+        let t = vec![0.0, 0.1, 0.2];
+        let h = TimeHistory {
+            t: t.clone(),
+            steer: vec![0.0; 3],
+            speed: vec![20.0; 3],
+            yaw_rate: vec![0.0, 0.1, 0.2],
+            ay: vec![0.0, 1.0, 2.0],
+            beta: vec![0.0; 3],
+            ..TimeHistory::default()
+        };
+        let run = MeasuredRun {
+            path: "run.csv".into(),
+            t,
+            speed: vec![20.0; 3],
+            steer: vec![0.0; 3],
+            yaw_rate: vec![0.0, 0.11, 0.19],
+            ay: Some(vec![0.0, 1.1, 1.9]),
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let f = history_figure("replay", &h, Some(&run));
+        let last: Vec<(&str, Style)> = f
+            .panels
+            .iter()
+            .map(|p| {
+                let s = p.series.last().unwrap();
+                (s.label.as_str(), s.style)
+            })
+            .collect();
+        assert_eq!(last[1], ("measured", MEASURED_DOTS));
+        assert_eq!(last[2], ("measured", MEASURED_DOTS));
+        // No sideslip logged: the panel holds the model alone.
+        assert_eq!(last[3], ("model", Style::Line));
+        assert_eq!(f.panels.iter().map(|p| p.series.len()).sum::<usize>(), 6);
+    }
 }

@@ -248,9 +248,6 @@ struct Driven<'a> {
     /// The model's numbers on this road ([`VehicleModel::scalars`]):
     /// the same at every evaluation, built once.
     scalars: ModelScalars<f64>,
-    /// The last sampled inputs and their index: RK4's two mid-stages share
-    /// a sample, and its last stage is the next step's first.
-    sampled: Option<(usize, Inputs)>,
     /// One load-transfer seed per stage of a fixed-step method: stage j of
     /// step n is predicted from stage j of steps n − 1 and n − 2, which sit
     /// at evenly spaced times. The adaptive method uses the first only.
@@ -273,7 +270,6 @@ impl<'a> Driven<'a> {
             source,
             friction,
             scalars: model.scalars(friction),
-            sampled: None,
             seeds: [LoadTransferSeed::default(); 4],
             stage: None,
             history: [(f64::NAN, 0.0); 2],
@@ -283,7 +279,10 @@ impl<'a> Driven<'a> {
         }
     }
 
-    fn inputs(&mut self, t: f64) -> Inputs {
+    // Not cached between stages (RK4's mid-stages share a sample): copying
+    // the cached inputs back out stalled on store forwarding and cost four
+    // times the six loads it saved (profiled).
+    fn inputs(&self, t: f64) -> Inputs {
         match self.source {
             Source::Manoeuvre(m) => manoeuvre_inputs(m, t, self.friction),
             Source::Sampled(d) => {
@@ -291,15 +290,7 @@ impl<'a> Driven<'a> {
                     Some((i, j)) => d.method.index(i, j),
                     None => ((t - d.start) / (0.5 * d.step)).round().max(0.0) as usize,
                 };
-                let k = k.min(d.steer.len() - 1);
-                match self.sampled {
-                    Some((last, inp)) if last == k => inp,
-                    _ => {
-                        let inp = d.inputs_at(k, self.friction);
-                        self.sampled = Some((k, inp));
-                        inp
-                    }
-                }
+                d.inputs_at(k.min(d.steer.len() - 1), self.friction)
             }
         }
     }

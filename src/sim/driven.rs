@@ -16,7 +16,9 @@ use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::measured::derivative::{speed_derivative, speed_derivative_at};
-use crate::vehicle::{Inputs, LoadTransferSeed, Outputs, State, StateVector, VehicleModel};
+use crate::vehicle::{
+    Inputs, LoadTransferSeed, ModelScalars, Outputs, State, StateVector, VehicleModel,
+};
 
 /// A fixed-grid method of a replay.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -243,6 +245,9 @@ struct Driven<'a> {
     model: &'a VehicleModel,
     source: Source<'a>,
     friction: f64,
+    /// The model's numbers on this road ([`VehicleModel::scalars`]):
+    /// the same at every evaluation, built once.
+    scalars: ModelScalars<f64>,
     /// One load-transfer seed per stage of a fixed-step method: stage j of
     /// step n is predicted from stage j of steps n − 1 and n − 2, which sit
     /// at evenly spaced times. The adaptive method uses the first only.
@@ -264,6 +269,7 @@ impl<'a> Driven<'a> {
             model,
             source,
             friction,
+            scalars: model.scalars(friction),
             seeds: [LoadTransferSeed::default(); 4],
             stage: None,
             history: [(f64::NAN, 0.0); 2],
@@ -273,6 +279,9 @@ impl<'a> Driven<'a> {
         }
     }
 
+    // Not cached between stages (RK4's mid-stages share a sample): copying
+    // the cached inputs back out stalled on store forwarding and cost four
+    // times the six loads it saved (profiled).
     fn inputs(&self, t: f64) -> Inputs {
         match self.source {
             Source::Manoeuvre(m) => manoeuvre_inputs(m, t, self.friction),
@@ -322,14 +331,20 @@ impl<const N: usize> OdeSystem<N> for Driven<'_> {
                 ay: [self.last.1.ay; 3],
                 slope: self.seeds[0].slope,
             };
-            let (dx, o) = self.model.rates(&full, &inp, &mut seed, f64::INFINITY);
+            let (dx, o) = self
+                .model
+                .rates_in(&self.scalars, &full, &inp, &mut seed, f64::INFINITY);
             self.load_evaluations += u64::from(o.load_iterations);
             return std::array::from_fn(|i| dx[i]);
         }
         let j = self.seed(t);
-        let (dx, o) = self
-            .model
-            .rates(&full, &inp, &mut self.seeds[j], self.load_tolerance);
+        let (dx, o) = self.model.rates_in(
+            &self.scalars,
+            &full,
+            &inp,
+            &mut self.seeds[j],
+            self.load_tolerance,
+        );
         if self.stage.is_none() {
             let [(t1, a1), _] = self.history;
             self.history = [(t, o.ay), (t1, a1)];

@@ -69,15 +69,29 @@ impl VehicleModel {
     /// (front, rear) at sideslip `beta` and yaw rate `r`, speed `u` (already
     /// held at [`MIN_SPEED`]).
     fn kinematic_slip<T: Scalar>(&self, beta: T, r: T, u: f64, steer: [T; 2]) -> (T, T) {
+        let vy = self.lateral_velocity(beta, u);
+        self.kinematic_slip_at(beta, vy, r, u, steer)
+    }
+
+    /// The lateral velocity `tan β · u` (m/s) the exact kinematics reads,
+    /// in its slip angles and its sideslip rate alike: the right-hand side
+    /// takes one tangent for both. Zero, unread, in the small-angle form.
+    fn lateral_velocity<T: Scalar>(&self, beta: T, u: f64) -> T {
+        match self.options.kinematics {
+            Kinematics::Exact => beta.tan() * u,
+            Kinematics::SmallAngle => T::from(0.0),
+        }
+    }
+
+    /// [`VehicleModel::kinematic_slip`] with the lateral velocity `v`
+    /// ([`VehicleModel::lateral_velocity`] of `beta`) already taken.
+    fn kinematic_slip_at<T: Scalar>(&self, beta: T, v: T, r: T, u: f64, steer: [T; 2]) -> (T, T) {
         let (a, b) = (self.vehicle.a, self.vehicle.b);
         match self.options.kinematics {
-            Kinematics::Exact => {
-                let v = beta.tan() * u;
-                (
-                    steer[0] - ((v + r * a) / u).atan(),
-                    steer[1] - ((v - r * b) / u).atan(),
-                )
-            }
+            Kinematics::Exact => (
+                steer[0] - ((v + r * a) / u).atan(),
+                steer[1] - ((v - r * b) / u).atan(),
+            ),
             Kinematics::SmallAngle => (steer[0] - beta - r * a / u, steer[1] - beta + r * b / u),
         }
     }
@@ -188,12 +202,25 @@ impl VehicleModel {
         seed: &mut LoadTransferSeed,
         tolerance: f64,
     ) -> (StateVector, Outputs) {
-        let sc = self.scalars(inp.friction);
+        self.rates_in(&self.scalars(inp.friction), x, inp, seed, tolerance)
+    }
+
+    /// [`VehicleModel::rates`] with the model's numbers `sc` already built
+    /// ([`VehicleModel::scalars`] of `inp.friction`): an integrator, whose
+    /// road does not change, builds them once per run, not once per stage.
+    pub(crate) fn rates_in(
+        &self,
+        sc: &ModelScalars<f64>,
+        x: &StateVector,
+        inp: &Inputs,
+        seed: &mut LoadTransferSeed,
+        tolerance: f64,
+    ) -> (StateVector, Outputs) {
         let tyres = PlainTyres {
             tyres: [&self.front, &self.rear],
         };
         let solve = LoadSolve::Solved(seed, tolerance);
-        let o = self.rates_of(&sc, &tyres, x, inp, inp.steer, solve);
+        let o = self.rates_of(sc, &tyres, x, inp, inp.steer, solve);
         let outputs = Outputs {
             beta_rate: o.dx[0],
             yaw_acceleration: o.dx[1],
@@ -228,7 +255,8 @@ impl VehicleModel {
         let u = inp.speed.max(MIN_SPEED);
         let (beta, r, phi) = (x[0], x[1], x[4]);
         let steer = [steer + e.roll_steer[0] * phi, e.roll_steer[1] * phi];
-        let (kin_f, kin_r) = self.kinematic_slip(beta, r, u, steer);
+        let vy = self.lateral_velocity(beta, u);
+        let (kin_f, kin_r) = self.kinematic_slip_at(beta, vy, r, u, steer);
         let lagged = e.lagged();
         let alpha_rear = if lagged { x[3] } else { kin_r };
         let balance = self.balance(sc, tyres, inp, (steer[0], phi), [x[2], kin_f, alpha_rear]);
@@ -258,7 +286,6 @@ impl VehicleModel {
         let ay_path = ay - self.bank_acceleration_of(sc, inp.bank);
         let beta_rate = match self.options.kinematics {
             Kinematics::Exact => {
-                let vy = beta.tan() * u;
                 let vy_dot = ay_path - r * u;
                 (vy_dot * u - vy * inp.speed_rate) / (vy * vy + u * u)
             }

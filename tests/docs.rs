@@ -33,6 +33,10 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "support/folders.rs"]
+mod folders;
+use folders::copy_folder;
+
 /// The book's figures: (image in `docs/src/images`, the page whose quoted
 /// commands make it, the file they write, relative to the page's scratch
 /// folder).
@@ -107,20 +111,6 @@ fn every_book_image_is_made_by_a_quoted_command_and_shown() {
 /// Repository folders a quoted command may read.
 const INPUTS: &[&str] = &["scenarios", "tyres", "campaigns", "docs", "tests/fixtures"];
 
-/// Copies the folder `from` into `to`, recursively.
-fn copy_dir(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            fs::copy(entry.path(), target).unwrap();
-        }
-    }
-}
-
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
@@ -176,7 +166,7 @@ fn quoted_commands_run_as_written() {
         .unwrap();
         let scratch = work.path().join(format!("{name}.in"));
         for dir in INPUTS {
-            copy_dir(&root().join(dir), &scratch.join(dir));
+            copy_folder(&root().join(dir), &scratch.join(dir));
         }
         cases.case(&copy);
         copies.push((page, copy));

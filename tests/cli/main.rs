@@ -5,6 +5,13 @@ pub(crate) use std::fs;
 pub(crate) use std::path::{Path, PathBuf};
 pub(crate) use std::process::{Command, Output};
 
+#[path = "../support/folders.rs"]
+mod folders;
+#[path = "../support/memo.rs"]
+mod memo;
+use folders::copy_folder;
+use memo::Memo;
+
 pub(crate) fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_handling"))
 }
@@ -375,10 +382,9 @@ pub(crate) fn synth_campaign(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
 /// into this test run's own scratch folder (one generation per distinct
 /// argument list, however many tests ask at once).
 fn synthesised(args: &[&str]) -> PathBuf {
-    use std::collections::BTreeMap;
     use std::sync::atomic::{AtomicUsize, Ordering};
-    use std::sync::{Arc, Mutex, OnceLock};
-    static MADE: Mutex<BTreeMap<Vec<String>, Arc<OnceLock<PathBuf>>>> = Mutex::new(BTreeMap::new());
+    use std::sync::OnceLock;
+    static MADE: Memo<Vec<String>, PathBuf> = Memo::new();
     static ROOT: OnceLock<PathBuf> = OnceLock::new();
     static NEXT: AtomicUsize = AtomicUsize::new(0);
     let root = ROOT.get_or_init(|| {
@@ -391,13 +397,7 @@ fn synthesised(args: &[&str]) -> PathBuf {
         root
     });
     let key: Vec<String> = args.iter().map(|a| a.to_string()).collect();
-    let cell = MADE
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .entry(key)
-        .or_default()
-        .clone();
-    cell.get_or_init(|| {
+    MADE.get(key, || {
         let out = root.join(NEXT.fetch_add(1, Ordering::Relaxed).to_string());
         let mut all = vec!["synth"];
         all.extend_from_slice(args);
@@ -406,21 +406,6 @@ fn synthesised(args: &[&str]) -> PathBuf {
         assert!(o.status.success(), "{}", stderr(&o));
         out
     })
-    .clone()
-}
-
-/// Copies folder `from` (files and sub-folders) to a new folder `to`.
-fn copy_folder(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_folder(&entry.path(), &target);
-        } else {
-            fs::copy(entry.path(), target).unwrap();
-        }
-    }
 }
 
 /// A synthetic campaign of `programme` with `effects` withheld on noise

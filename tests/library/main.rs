@@ -7,9 +7,11 @@
 use handling::diagnose::effects::EffectKind;
 use handling::diagnose::{diagnose, DiagnoseSettings, Diagnosis};
 use handling::proving_ground::{generate, truth_values, Noise, SynthSpec};
-use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Arc;
+
+#[path = "../support/memo.rs"]
+mod memo;
 
 /// The repository root.
 pub(crate) fn root() -> PathBuf {
@@ -54,16 +56,11 @@ pub(crate) fn diagnosed(
     hidden: &[EffectKind],
 ) -> Arc<Diagnosis> {
     type Key = (Vec<EffectKind>, u64, bool, Vec<EffectKind>);
-    static MADE: Mutex<BTreeMap<Key, Arc<OnceLock<Arc<Diagnosis>>>>> = Mutex::new(BTreeMap::new());
+    static MADE: memo::Memo<Key, Arc<Diagnosis>> = memo::Memo::new();
     let key = (truth.to_vec(), seed, screening, hidden.to_vec());
-    let cell = MADE
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .entry(key)
-        .or_default()
-        .clone();
-    cell.get_or_init(|| Arc::new(diagnosed_afresh(truth, seed, screening, hidden)))
-        .clone()
+    MADE.get(key, || {
+        Arc::new(diagnosed_afresh(truth, seed, screening, hidden))
+    })
 }
 
 mod derivatives;

@@ -192,6 +192,17 @@ pub(crate) fn fails_cleanly(command: &str, input: &Path, dir: &Path) -> String {
     stderr(&o)
 }
 
+/// The entries of an identify report's `held` list held because the data
+/// do not determine them (`why = "undetermined"`).
+pub(crate) fn undetermined_holds(report: &serde_json::Value) -> Vec<&serde_json::Value> {
+    report["held"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|h| h["why"] == "undetermined")
+        .collect()
+}
+
 /// Runs `identify rig --model model --out out`.
 pub(crate) fn identify_to(rig: &Path, model: &str, out: &Path) -> Output {
     run(&[

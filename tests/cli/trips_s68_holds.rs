@@ -31,12 +31,7 @@ fn pac89_on_the_hoosier_file_holds_what_the_data_do_not_determine() {
     let (text, out) = (&fit.stdout, &fit.tyre);
     let file = fs::read_to_string(out).unwrap();
     let report = read_json(&out.with_extension("report.json"));
-    let held: Vec<&serde_json::Value> = report["held"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|h| h["why"] == "undetermined")
-        .collect();
+    let held = undetermined_holds(&report);
     let names: Vec<&str> = held.iter().map(|h| h["name"].as_str().unwrap()).collect();
     // The curvature's constant term, free beside `a6 = 0` of the curvature
     // rule (never held twice), and the aligning terms the data leave open.

@@ -80,12 +80,7 @@ fn a_held_value_is_one_the_data_allow_and_said_with_the_aligning_block() {
     let file = fs::read_to_string(&out).unwrap();
     assert_eq!(moved(&file), moved(&text), "{file}");
     let report = read_json(&out.with_extension("report.json"));
-    let held: Vec<&serde_json::Value> = report["held"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|h| h["why"] == "undetermined")
-        .collect();
+    let held = undetermined_holds(&report);
     assert!(!held.is_empty(), "{text}");
     for h in &held {
         let (name, value) = (h["name"].as_str().unwrap(), h["value"].as_f64().unwrap());

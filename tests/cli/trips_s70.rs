@@ -154,14 +154,7 @@ fn rig_forces_a_thousand_times_too_small_are_refused_as_kilonewtons() {
         }));
         let rig = dir.path().join(format!("rig_{scale}.csv"));
         fs::write(&rig, out.join("\n") + "\n").unwrap();
-        let o = run(&[
-            "identify",
-            rig.to_str().unwrap(),
-            "--model",
-            "magic-simple",
-            "--out",
-            dir.path().join("t.toml").to_str().unwrap(),
-        ]);
+        let o = identify_to(&rig, "magic-simple", &dir.path().join("t.toml"));
         assert!(!o.status.success());
         let e = stderr(&o);
         assert!(e.contains(&format!("rig_{scale}.csv:")), "{e}");

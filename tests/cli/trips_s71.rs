@@ -24,15 +24,7 @@ fn a_rig_file_whose_loads_are_all_negative_is_told_to_negate_the_column() {
         let rig = dir.path().join(format!("{name}.csv"));
         fs::write(&rig, format!("{header}\n{}\n", body.join("\n"))).unwrap();
         let out = dir.path().join(format!("{name}.toml"));
-        let o = run(&[
-            "identify",
-            rig.to_str().unwrap(),
-            "--model",
-            "magic-simple",
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        let e = refused(&o, &out);
+        let e = refused(&identify_to(&rig, "magic-simple", &out), &out);
         let first = if every { 2 } else { 6 };
         assert!(
             e.contains(&format!("{name}.csv:{first}:1: column `fz`: -")),

@@ -6,7 +6,9 @@
 //! those of `gap_map.png` and `overlays.png`, drawn inline as SVG.
 
 use crate::diagnose::effects::{joined, Bound};
-use crate::diagnose::report::{words, ChannelChange, Part, Ranked, Reduction, Shrinkage};
+use crate::diagnose::report::{
+    words, ChannelChange, Evidence, Parsimony, Part, Ranked, Reduction, Shrinkage, Verdict,
+};
 use crate::diagnose::Diagnosis;
 use crate::error::Error;
 use crate::report::html::{Cell, Page};
@@ -266,13 +268,14 @@ fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> 
         Cell::Number(format!("{} of {}", r.folds_converged, r.folds)),
         Cell::Text(params.join("; ")),
         Cell::Text(words::rank_warnings(&r.warnings).unwrap_or_default()),
-        Cell::Text(verdict_role(r, verdict, d.gap.noise_level)),
+        Cell::Text(verdict_role(r, verdict, d)),
     ]
 }
 
 /// The verdict column: the verdict's row, and why a row that scores better
-/// than the verdict is not it.
-fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> String {
+/// than the verdict is not it, counted as the rule counts (a parameter no
+/// channel responds to is not counted; an idle one is, and is named).
+fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, d: &Diagnosis) -> String {
     let Some(v) = verdict else {
         return String::new();
     };
@@ -282,8 +285,9 @@ fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> Strin
     if r.heldout_error_after >= v.heldout_error_after {
         return String::new();
     }
-    let margin = (v.heldout_error_after - r.heldout_error_after) / noise_level;
-    let (n, m) = (r.parameters.len(), v.parameters.len());
+    let margin = (v.heldout_error_after - r.heldout_error_after) / d.gap.noise_level;
+    let counted = |x: &Ranked| x.parameters.iter().filter(|p| !p.unseen).count();
+    let (n, m) = (counted(r), counted(v));
     let pressed = |x: &Ranked| {
         x.parameters
             .iter()
@@ -294,14 +298,34 @@ fn verdict_role(r: &Ranked, verdict: Option<&Ranked>, noise_level: f64) -> Strin
             "J lower by {margin:.3} × the noise level, but only with a parameter on its \
              search bound: the verdict, inside its ranges, is taken"
         )
+    } else if let Some(c) = parsimony_over(r, d) {
+        let idle: Vec<&str> = c.idle.iter().map(|p| p.name.as_str()).collect();
+        format!(
+            "J lower by {margin:.3} × the noise level only, leaving {} idle (off, or not \
+             told from off): with it counted, {n} effect parameters to the verdict's {m}, \
+             and the simpler is taken",
+            idle.join(", ")
+        )
     } else if n > m {
         format!(
-            "J lower by {margin:.3} × the noise level only, with {n} parameters to the \
-             verdict's {m}: the simpler is taken"
+            "J lower by {margin:.3} × the noise level only, with {n} effect parameters to \
+             the verdict's {m}: the simpler is taken"
         )
     } else {
         format!("J lower by {margin:.3} × the noise level; not taken: see the verdict")
     }
+}
+
+/// The verdict's parsimony evidence about the look-alike `r`, if that is
+/// why `r` is not the verdict.
+fn parsimony_over<'a>(r: &Ranked, d: &'a Diagnosis) -> Option<&'a Parsimony> {
+    let Verdict::Explained(e) = &d.verdict else {
+        return None;
+    };
+    e.evidence.iter().find_map(|x| match x {
+        Evidence::ChosenForParsimony(c) if c.effects == r.effects => Some(c),
+        _ => None,
+    })
 }
 
 /// Before and after per channel over all held-out samples.

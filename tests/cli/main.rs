@@ -366,6 +366,8 @@ mod trips_s69_identify;
 mod trips_s69_metrics;
 mod trips_s70;
 mod trips_s71;
+mod trips_s72;
+mod trips_s72_tyre;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -73,6 +73,16 @@ fn a_verdict_taken_for_parsimony_over_a_lookalike_that_removes_more_says_so() {
         "{line}"
     );
     assert!(page.contains(said), "the page does not say it");
+    // The ranking's verdict column counts as the rule counts, the idle
+    // lag named and counted (it read "2 parameters to the verdict's 1"
+    // with nothing said of the held lag).
+    assert!(
+        page.contains(
+            "leaving steer_path.lag idle (off, or not told from off): with it counted, \
+             2 effect parameters to the verdict&#39;s 1, and the simpler is taken"
+        ),
+        "the ranking does not say why steer_path is not the verdict"
+    );
 }
 
 /// `sensor_delay+steer_path` reported `steer_path.delay = 5.056e-3 ±

@@ -73,8 +73,8 @@ pub struct SynthArgs {
     /// Effects to switch on, comma-separated (`none` for none).
     #[arg(long, value_delimiter = ',', default_value = "none", value_parser = EffectName::from_str)]
     effects: Vec<EffectName>,
-    /// Noise seed.
-    #[arg(long, default_value_t = 1)]
+    /// Noise seed (a whole number of 0 or more).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = super::whole_number)]
     seed: u64,
     /// The model that plays the car: `augmented` (the diagnosis's own
     /// model) or `four-wheel` (an independent four-wheel model with roll

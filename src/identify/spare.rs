@@ -306,7 +306,7 @@ pub(crate) fn held_at(what: &str, stated: f64, held: f64, away: Option<f64>) -> 
             "held at {what} {stated_text}, which lies {z:.1} standard errors from the free fit, outside the ±{LEAN_STANDARD_ERRORS:.0} the data allow"
         ),
         Some(z) => format!(
-            "held at {what} {stated_text}, {z:.1} standard errors from the free fit (within the ±{LEAN_STANDARD_ERRORS:.0} the data allow)"
+            "held at {what} {stated_text}, {z:.1} standard errors from the free fit (within the ±{LEAN_STANDARD_ERRORS:.0} standard errors the data allow)"
         ),
         None => format!("held at {what} {stated_text}"),
     }
@@ -520,7 +520,7 @@ mod tests {
         let away = standard_errors_away(0.0, 0.003344, Some(0.0107));
         assert_eq!(
             held_at(start, 0.0, 0.0, away),
-            "held at the model's start value 0, 0.3 standard errors from the free fit (within the ±2 the data allow)"
+            "held at the model's start value 0, 0.3 standard errors from the free fit (within the ±2 standard errors the data allow)"
         );
         assert_eq!(lean_clause("c6", 0.0, 0.0, away), "");
         assert_eq!(

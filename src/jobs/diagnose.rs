@@ -512,20 +512,23 @@ fn overlays(d: &Diagnosis) -> Figure {
     }
 }
 
-/// One overlay panel's series: the base model dashed, the model with the
-/// verdict's effects (its label and trace) solid, and the measured dots
-/// last, over both lines (drawn first, the lines hid them).
+/// One overlay panel's series: the measured dots first, then the base
+/// model dashed and the model with the verdict's effects (its label and
+/// trace) solid over them, as the tyre fits draw a model over its data
+/// (drawn last, the dots hid the lines wherever they agree).
 fn overlay_series(
     t: &[f64],
     measured: &[f64],
     base: &[f64],
     after: Option<(&str, &[f64])>,
 ) -> Vec<Series> {
-    let mut series = vec![Series::line("base model", t, base, 1).styled(Style::Dashed)];
+    let mut series = vec![
+        Series::line("measured", t, measured, 7).styled(MEASURED_DOTS),
+        Series::line("base model", t, base, 1).styled(Style::Dashed),
+    ];
     if let Some((label, y)) = after {
         series.push(Series::line(label, t, y, 2));
     }
-    series.push(Series::line("measured", t, measured, 7).styled(MEASURED_DOTS));
     series
 }
 

@@ -84,19 +84,20 @@ fn a_reduction_that_rounds_to_zero_has_no_sign() {
 /// An overlay's measured samples are dots drawn last, over the base
 /// model's dashed line and the verdict's solid one.
 #[test]
-fn overlay_measurements_are_dots_over_the_model_lines() {
+fn overlay_model_lines_are_drawn_over_the_measured_dots() {
     let t = [0.0, 0.1];
     let with = overlay_series(&t, &[1.0, 2.0], &[0.9, 1.8], Some(("with x", &[1.0, 2.1])));
     let drawn: Vec<(&str, Style)> = with.iter().map(|s| (s.label.as_str(), s.style)).collect();
     assert_eq!(
         drawn,
         [
+            ("measured", MEASURED_DOTS),
             ("base model", Style::Dashed),
-            ("with x", Style::Line),
-            ("measured", MEASURED_DOTS)
+            ("with x", Style::Line)
         ]
     );
     let without = overlay_series(&t, &[1.0, 2.0], &[0.9, 1.8], None);
-    assert_eq!(without.last().unwrap().style, MEASURED_DOTS);
+    assert_eq!(without[0].style, MEASURED_DOTS);
+    assert_eq!(without.last().unwrap().style, Style::Dashed);
     assert_eq!(without.len(), 2);
 }

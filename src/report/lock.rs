@@ -45,9 +45,11 @@ fn age(file: &Path) -> f64 {
 }
 
 /// The process id a lock's bytes name: a decimal number, blanks around
-/// it allowed.
+/// it allowed, above 0 (0 is the kernel's scheduler, never a run: a lock
+/// holding it names no process).
 fn process_named(bytes: &[u8]) -> Option<u32> {
-    std::str::from_utf8(bytes).ok()?.trim().parse().ok()
+    let pid: u32 = std::str::from_utf8(bytes).ok()?.trim().parse().ok()?;
+    (pid > 0).then_some(pid)
 }
 
 /// What a lock that names no process holds, as its take-over note says:
@@ -407,6 +409,8 @@ mod tests {
         assert_eq!(nameless(b""), "is empty");
         assert_eq!(nameless(b"   \n"), "holds only blanks (4 characters)");
         assert_eq!(nameless(b"garbage\n"), "names no process (7 characters)");
+        assert_eq!(process_named(b"0\n"), None);
+        assert_eq!(process_named(b" 42\n"), Some(42));
         assert_eq!(
             nameless(&[0xff, 0xfe]),
             "names no process (2 bytes that are not text)"
@@ -415,7 +419,7 @@ mod tests {
 
     #[test]
     fn a_lock_that_names_no_process_is_taken_over_once_old() {
-        for text in ["", "\n", "garbage\n", "\u{0}\u{0}"] {
+        for text in ["", "\n", "garbage\n", "\u{0}\u{0}", "0\n"] {
             let dir = tempfile::tempdir().unwrap();
             let file = dir.path().join(LOCK_FILE);
             fs::write(&file, text).unwrap();

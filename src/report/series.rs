@@ -27,9 +27,10 @@ pub enum Style {
     Heat(f64, f64),
 }
 
-/// How measured samples are drawn beside a model's lines: dots, the last
-/// series of their panel so that they lie over the lines (a dashed line
-/// through noisy samples reads as a smear; dots under a line are hidden).
+/// How measured samples are drawn beside a model's lines: dots (a dashed
+/// line through noisy samples reads as a smear), the first series of their
+/// panel, so that the model's lines are drawn over them as a fit is drawn
+/// over its data (dots drawn last hid the lines wherever they agree).
 pub const MEASURED_DOTS: Style = Style::Points(2);
 
 /// The shape of a marker.

@@ -500,7 +500,7 @@ mod tests {
             held_at: 0.0,
             standard_errors_away: Some(0.049),
         };
-        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 the data allow)");
+        assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 standard errors the data allow)");
     }
 
     /// A stated value more than two standard errors from the fitted one
@@ -527,7 +527,7 @@ mod tests {
         assert!(far.ends_with("held at 0.00534, the end of the free fit's ±2 standard errors nearest the template's value 0.084 (which lies 37.9 standard errors from the free fit, where the data would not put it); to hold it at a value of your own, give --hold QDZ1=VALUE"), "{far}");
         let near = rule(0.004);
         assert_eq!(near.said("QDZ1"), near.to_string());
-        assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 the data allow)"), "{near}");
+        assert!(near.to_string().ends_with("held at the template's value 0.004, 1.4 standard errors from the free fit (within the ±2 standard errors the data allow)"), "{near}");
         assert_eq!(HoldReason::Given.said("PKY4"), "given with --hold");
     }
 }

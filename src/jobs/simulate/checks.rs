@@ -235,9 +235,10 @@ fn steady_at_limit(h: &TimeHistory, mu: [f64; 2], road: f64) -> Option<String> {
     let used = grip_used(h, mu, k);
     (used.is_finite() && used >= AT_LIMIT).then(|| {
         format!(
-            "at the end of the step the busier axle uses {} % of its grip (steady ay {} m/s² on a road of friction {}): the car turns at its friction limit, so the response times, the yaw-rate gain and Er describe that limit, not the car's handling; a smaller step, or a road with more grip, measures handling",
+            "at the end of the step the busier axle uses {} % of its grip (ay {} m/s² at the last row, t = {} s, on a road of friction {}; the metrics' steady ay is the mean of the steady window): the car turns at its friction limit, so the response times, the yaw-rate gain and Er describe that limit, not the car's handling; a smaller step, or a road with more grip, measures handling",
             crate::format::fixed(100.0 * used, 0),
             crate::format::rounded(h.ay[k].abs(), 3),
+            crate::format::rounded(h.t[k], 3),
             crate::error::Num(road)
         )
     })

@@ -296,8 +296,11 @@ fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -
     if let Some(run) = measured {
         let k = usize::from(speed_varies);
         let add = |p: &mut Panel, y: &[f64]| {
-            p.series
-                .push(Series::line("measured", &run.t, y, 1).styled(MEASURED_DOTS));
+            // First, so the model's line is drawn over the samples.
+            p.series.insert(
+                0,
+                Series::line("measured", &run.t, y, 1).styled(MEASURED_DOTS),
+            );
         };
         add(&mut panels[1 + k], &deg(&run.yaw_rate));
         if let Some(ay) = &run.ay {
@@ -318,7 +321,7 @@ mod tests {
     /// A replayed run's samples are dots drawn last in each response panel
     /// (over the model's line), in every channel the run logs.
     #[test]
-    fn measured_samples_are_dots_over_the_models_line() {
+    fn the_models_line_is_drawn_over_the_measured_dots() {
         let t = vec![0.0, 0.1, 0.2];
         let h = TimeHistory {
             t: t.clone(),
@@ -343,18 +346,21 @@ mod tests {
             masked: Vec::new(),
         };
         let f = history_figure("replay", &h, Some(&run));
-        let last: Vec<(&str, Style)> = f
+        let drawn: Vec<Vec<(&str, Style)>> = f
             .panels
             .iter()
             .map(|p| {
-                let s = p.series.last().unwrap();
-                (s.label.as_str(), s.style)
+                p.series
+                    .iter()
+                    .map(|s| (s.label.as_str(), s.style))
+                    .collect()
             })
             .collect();
-        assert_eq!(last[1], ("measured", MEASURED_DOTS));
-        assert_eq!(last[2], ("measured", MEASURED_DOTS));
+        let over = [("measured", MEASURED_DOTS), ("model", Style::Line)];
+        assert_eq!(drawn[1], over);
+        assert_eq!(drawn[2], over);
         // No sideslip logged: the panel holds the model alone.
-        assert_eq!(last[3], ("model", Style::Line));
+        assert_eq!(drawn[3], [("model", Style::Line)]);
         assert_eq!(f.panels.iter().map(|p| p.series.len()).sum::<usize>(), 6);
     }
 }

@@ -8,6 +8,7 @@ use crate::diagnose::base::identify::{
 };
 use crate::diagnose::base::prior::{PriorReport, Tempering};
 use crate::diagnose::base::TyreSource;
+use crate::diagnose::campaign::prior::Z95;
 use crate::diagnose::report::BaseReport;
 
 /// Reasons axles are no tyre, joined by "; ".
@@ -93,7 +94,7 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
             let digits = if v.unit == "-" { 3 } else { 1 };
             if v.held {
                 return format!(
-                    "{} {:.digits$} (held at the prior's centre)",
+                    "{} {:.digits$} (held at the prior's centre, the geometric mean of its range)",
                     v.name, v.value
                 );
             }
@@ -115,6 +116,12 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
         })
         .collect()
 }
+
+/// Standard deviations (in `ln x`) from the prior's centre beyond which a
+/// fitted axle characteristic within the 95 % range is said to lie near
+/// its edge: the outer quarter of each half of the range (1.5 of 1.96 σ),
+/// where the prior, not the runs alone, may have put it.
+pub const NEAR_EDGE: f64 = 1.5;
 
 /// The prior the axles were fitted against, the friction rule, and where
 /// the axles lie on it.
@@ -142,18 +149,34 @@ pub fn prior_line(p: &PriorReport) -> String {
         )
     } else {
         format!(
-            "peak friction held at {:.2}: the runs reach |ay| {:.1} m/s² (99.5th percentile), below {:.1} m/s² (0.8 of the lowest grip), so they do not show it",
+            "peak friction held at {:.2} (the geometric mean of its range): the runs reach |ay| {:.1} m/s² (99.5th percentile), below {:.1} m/s² (0.8 of the lowest grip), so they do not show it",
             rule.value, rule.ay, rule.threshold
         )
     };
     let names = ["front", "rear", "peak friction"];
-    let outside: Vec<String> = p
+    // A held friction is where the prior put it: only fitted ones are
+    // placed on it. One within the range but near its end is said so: at
+    // −1.95 σ "within it" read as agreement where the prior held it back.
+    let fitted = p
         .against
         .iter()
         .zip(names)
-        .filter(|(x, _)| !x.within)
-        .map(|(x, n)| format!("{n} {:.3} is outside it ({:+.1} σ)", x.value, x.z))
+        .take(if rule.free { 3 } else { 2 });
+    let placed: Vec<String> = fitted
+        .filter(|(x, _)| !x.within || x.z.abs() >= NEAR_EDGE)
+        .map(|(x, n)| {
+            let place = if x.within {
+                "lies near its edge"
+            } else {
+                "is outside it"
+            };
+            format!(
+                "{n} {:.3} {place} ({:+.2} σ; the range ends at ±{Z95:.2} σ)",
+                x.value, x.z
+            )
+        })
         .collect();
+    let outside = placed;
     format!(
         "prior {class}: cornering coefficient {:.0}–{:.0} 1/rad, peak friction {:.2}–{:.2} (95 % ranges); {friction}; {}; {}",
         a.cornering[0],
@@ -162,7 +185,7 @@ pub fn prior_line(p: &PriorReport) -> String {
         a.friction[1],
         tempering(&p.tempering),
         if outside.is_empty() {
-            "the axles lie within it".to_string()
+            format!("the axles lie within it, inside ±{NEAR_EDGE} σ of its centre")
         } else {
             outside.join(", ")
         }

@@ -545,4 +545,60 @@ fn a_gap_the_verdict_leaves_above_noise_is_said_to_be_a_further_cause() {
         verdict_warning(&w),
         "what it leaves is still a gap: held-out error 1.366, above 1.3 × the noise level 1.000, so the other 16.0 % of the gap is a further cause (an effect outside the library, or the base model's own form), not noise"
     );
+    // The sentence it goes with says "most of the gap", not "the gap"
+    // (Putnam's 53.1 % read "explains the gap" above "the other 46.9 %
+    // of the gap is a further cause").
+    let mut v = explained(84.0);
+    if let Verdict::Explained(e) = &mut v {
+        e.warnings = vec![w];
+    }
+    assert!(
+        statement(&v).starts_with(
+            "sensor_delay+relaxation_length explains most of the gap: held-out error 3.628 → 1.073"
+        ),
+        "{}",
+        statement(&v)
+    );
+}
+
+#[test]
+fn an_axle_within_the_prior_but_near_its_edge_is_said_to_lie_there() {
+    use crate::diagnose::base::prior::{AgainstPrior, FrictionRule, PriorReport, Tempering};
+    use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
+    let prior = AxlePrior::of(TyreClass::RacingSlick);
+    let report = |front: f64| PriorReport {
+        prior,
+        // The runs reach 6 m/s², below 0.8 of the lowest grip: the peak
+        // friction is held at the centre, not placed on the prior.
+        friction_rule: FrictionRule::new(&prior, 6.0),
+        against: [
+            AgainstPrior::new(front, prior.cornering),
+            AgainstPrior::new(24.5, prior.cornering),
+            AgainstPrior::new(AxlePrior::centre(prior.friction), prior.friction),
+        ],
+        tempering: Tempering::NONE,
+    };
+    // Putnam's front, 12.0 on the racing slicks' 12–50 1/rad: z = −1.96,
+    // "within" by a hair; 24.5 is at the centre.
+    let edge = prior_line(&report(12.05));
+    assert!(
+        edge.contains("front 12.050 lies near its edge (-1.9"),
+        "{edge}"
+    );
+    assert!(!edge.contains("rear"), "{edge}");
+    assert!(!edge.contains("lie within it"), "{edge}");
+    let outside = prior_line(&report(11.0));
+    assert!(
+        outside.contains("front 11.000 is outside it (-2."),
+        "{outside}"
+    );
+    let centre = prior_line(&report(24.0));
+    assert!(
+        centre.ends_with("the axles lie within it, inside ±1.5 σ of its centre"),
+        "{centre}"
+    );
+    assert!(
+        centre.contains("peak friction held at 1.47 (the geometric mean of its range)"),
+        "{centre}"
+    );
 }

@@ -79,3 +79,65 @@ fn the_at_the_limit_warning_names_the_last_rows_ay_not_a_second_steady_ay() {
     );
     assert!((num(t) - col("t")).abs() < 1e-2, "{warning}");
 }
+
+/// PAC89 on one level of the Hoosier file wrote its two-stage result, yet
+/// said `held: a6 = 0.0456…: … held at the model's start value -0.02103`
+/// with the file's `a[6] = 0.0457`: the direct fit's holds were carried
+/// onto a result that fitted those parameters. Every hold the report and
+/// the terminal state is the file's value.
+#[test]
+fn a_pac89_two_stage_result_writes_the_values_its_held_lines_state() {
+    let Some(rig) = shared_data(
+        "a_pac89_two_stage_result_writes_the_values_its_held_lines_state",
+        "tyre_ttc_hoosier_43075/cornering.csv",
+    ) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("pac.toml");
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "pac89",
+        "--pressure",
+        "83400",
+        "--camber",
+        "0",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let report = read_json(&dir.path().join("pac.report.json"));
+    assert_eq!(report["written"], "two-stage", "{text}");
+    let file: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    let written = |name: &str| -> f64 {
+        let (block, k) = name.split_at(1);
+        file[block][k.parse::<usize>().unwrap()].as_float().unwrap()
+    };
+    let held = report["held"].as_array().unwrap();
+    assert!(held.len() >= 3, "{report}");
+    for h in held {
+        let name = h["name"].as_str().unwrap();
+        let value = h["value"].as_f64().unwrap();
+        assert_eq!(written(name), value, "{h}");
+        if h["why"] == "undetermined" {
+            assert_eq!(h["held_at"].as_f64().unwrap(), value, "{h}");
+        }
+        let line = text
+            .lines()
+            .find(|l| l.starts_with("  held: ") && l.contains(&format!("{name} = ")))
+            .unwrap_or_else(|| panic!("no held line for {name}: {text}"));
+        let said: f64 = line
+            .split(&format!("{name} = "))
+            .nth(1)
+            .unwrap()
+            .split([':', ','])
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert_eq!(said, value, "{line}");
+    }
+}

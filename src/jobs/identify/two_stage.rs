@@ -14,7 +14,7 @@ use super::{on_data, Options, SwarmReport};
 use crate::error::Error;
 use crate::identify::data::Point;
 use crate::identify::pac89_two_stage::{self, TwoStage};
-use crate::identify::{fit_report_of, hold_undetermined, sigma, Channel, FitSettings};
+use crate::identify::{fit_report_of, hold_undetermined, sigma, Channel, Fit, FitSettings, HeldFor};
 use crate::tyre::{Pac89, Tyre};
 use serde::Serialize;
 
@@ -75,7 +75,16 @@ pub(super) fn two_stage(
     let written = if s < direct_sigma_percent {
         // The report says what the file holds: the two-stage result's
         // parameters, standard errors and curves.
-        let fit = fit_report_of(tyre, Channel::LateralForce, &r.conditions, &r.fit);
+        // Compared free, reported free: what the direct fit held because
+        // it left it undetermined is the two-stage result's own to fit
+        // (its value, not the direct fit's hold, is in the file), and the
+        // rule then holds what this result leaves undetermined.
+        let fit = fit_report_of(
+            tyre,
+            Channel::LateralForce,
+            &r.conditions,
+            &undetermined_freed(&r.fit),
+        );
         r.fit = hold_undetermined(fit, start, &r.conditions, settings);
         r.tyre = r.fit.tyre.clone();
         Written::TwoStage
@@ -89,4 +98,19 @@ pub(super) fn two_stage(
         direct_sigma_percent,
     });
     Ok(())
+}
+
+/// `fit` with the parameters it held because it left them undetermined
+/// freed again (their hold records and warnings dropped); the others held
+/// as they were (a camber term without camber levels).
+fn undetermined_freed(fit: &Fit) -> Fit {
+    let mut free = fit.clone();
+    for p in &mut free.parameters {
+        if matches!(p.held, Some(HeldFor::Undetermined { .. })) {
+            p.free = true;
+            p.held = None;
+            p.warning = None;
+        }
+    }
+    free
 }

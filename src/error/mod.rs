@@ -42,7 +42,7 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
-pub use reason::{BeyondSignal, Limit, ParamReason, ScheduleColumn, DYNAMIC_INDEX};
+pub use reason::{BeyondSignal, Limit, ParamReason, PerLoad, ScheduleColumn, DYNAMIC_INDEX};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;

@@ -123,6 +123,11 @@ pub enum ParamReason {
         /// The load it is reached at, kN.
         fz: f64,
     },
+    /// A tyre's cornering stiffness per unit of its own load below any
+    /// tyre's ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): in N/deg,
+    /// the value given said converted. Boxed: the error stays small.
+    #[error("{}", cornering_per_load(.0))]
+    CorneringPerLoad(Box<PerLoad>),
     /// Outside the range `(lo, hi]`, for the reason `why`.
     #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {
@@ -453,9 +458,13 @@ pub enum Limit {
     /// A tyre's cornering stiffness, N/rad.
     #[error("no tyre's cornering stiffness reaches 2e6 N/rad (a car tyre's is 5e4–1.5e5, a truck tyre's about 3e5); the key is in N/rad, per wheel: check the unit")]
     CorneringStiffness,
-    /// A tyre's cornering stiffness below any tyre's: in N/deg.
-    #[error("no tyre's cornering stiffness is below 900 N/rad (a bicycle tyre's is about 5e3, a car tyre's 5e4–1.5e5); the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 (500 N/deg is 28648 N/rad)")]
-    CorneringStiffnessInDegrees,
+    /// A tyre's cornering stiffness below any tyre's: in N/deg, the value
+    /// `given` said converted.
+    #[error("no tyre's cornering stiffness is below 900 N/rad (a bicycle tyre's is about 5e3, a car tyre's 5e4–1.5e5); the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 ({} N/deg is {} N/rad)", super::number::Num(*given), crate::format::rounded(given.to_degrees(), 5))]
+    CorneringStiffnessInDegrees {
+        /// The value given, N/rad as read.
+        given: f64,
+    },
     /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too
     /// small: in kN/deg.
     #[error("PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg (the model's slip angle is in degrees, its force in N), so |a3| bounds it: no tyre's is below 15 N/deg (900 N/rad; a car tyre's a3 is 1000–3000 N/deg): is the value in kN/deg? multiply it by 1000")]
@@ -528,4 +537,42 @@ pub struct BeyondSignal {
     pub floor: f64,
     /// Ten times an estimated output's uncertainty.
     pub estimated: f64,
+}
+
+/// What [`ParamReason::CorneringPerLoad`] says, boxed: the stiffness per
+/// unit load, the load it is taken at and the least of any tyre.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PerLoad {
+    /// Stiffness over load, 1/rad.
+    pub per_load: f64,
+    /// The key of the load.
+    pub load_key: &'static str,
+    /// The load, N.
+    pub load: f64,
+    /// Whether the load is the model's default, which a file stating none
+    /// is read at.
+    pub default: bool,
+    /// The least of any tyre, 1/rad.
+    pub min: f64,
+}
+
+/// The message of [`ParamReason::CorneringPerLoad`]: the stiffness per
+/// unit load at the load it is taken at, the floor with the tyres it lies
+/// below, and the N/deg slip with the value given converted.
+fn cornering_per_load(r: &PerLoad) -> String {
+    let given = r.per_load * r.load;
+    format!(
+        "over the tyre's {} = {} N{} that is {} N/rad per N (Cα/Fz), below any tyre's {} (a car tyre's is about 5–45 at its nominal load, a truck's or tractor's about 7, Pacejka's book tyre's 12.0 at 4 kN): the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 ({} N/deg is {} N/rad, {} N/rad per N)",
+        r.load_key,
+        crate::format::rounded(r.load, 6),
+        match r.default {
+            true => " (the model's default where a file states none)",
+            false => "",
+        },
+        crate::format::readable(r.per_load, 3),
+        super::number::Num(r.min),
+        super::number::Num(given),
+        crate::format::rounded(given.to_degrees(), 5),
+        crate::format::readable(r.per_load.to_degrees(), 3)
+    )
 }

@@ -203,18 +203,31 @@ impl ModelParameters for Gim {
         // The inherent check above (inherent methods take precedence).
         Gim::validate(self)
     }
+    /// Each key's size, then the stiffness per unit of the reference
+    /// load (once that load is a tyre's): a car tyre's N/deg figure (1000)
+    /// passes the floor of any tyre's stiffness, not that of its load's.
     fn check_sizes(&self) -> Result<(), ParamError> {
         super::sizes::cornering_stiffness("cornering_stiffness", self.cornering_stiffness)?;
         super::sizes::contact_length("contact_length", self.contact_length)?;
         super::sizes::friction("friction", self.friction)?;
-        super::sizes::tyre_load("reference_load", self.reference_load)
+        super::sizes::tyre_load("reference_load", self.reference_load)?;
+        // The stiffness holds at the reference load; a file that states
+        // none is read at the default, a car wheel's 4 kN.
+        let load = (
+            "reference_load",
+            self.reference_load,
+            self.reference_load == default_reference_load(),
+        );
+        super::sizes::cornering_per_load("cornering_stiffness", self.cornering_stiffness, load)
     }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
     }
     /// Around its `reference_load` where the stiffness depends on the
     /// load; a stiffness that does not (`load_exponent = 0`, Wang &
-    /// Liang's) holds at no load in particular.
+    /// Liang's) holds at no load in particular (`tyre-eval` takes the
+    /// `reference_load` a file states as the tyre's load there:
+    /// `jobs/tyre_eval/model_loads.rs`).
     fn load_range(&self) -> Option<LoadRange> {
         Some(if self.load_exponent == 0.0 {
             LoadRange::any_tyre(<Self as Model>::NAME)

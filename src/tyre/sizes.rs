@@ -7,7 +7,7 @@
 //! narrower) is refused. Units: SI, as the models hold them (N, m, N/rad,
 //! Pa); a Magic Formula file's values after its `[UNITS]` are applied.
 
-use crate::error::{Limit, ParamError, ParamReason};
+use crate::error::{Limit, ParamError, ParamReason, PerLoad};
 use crate::tyre::mf::MfCoefficients;
 
 /// The longest contact patch, m (a car tyre's is 0.1–0.25 m, a truck's
@@ -23,6 +23,22 @@ pub const MAX_CORNERING_STIFFNESS: f64 = 2e6;
 /// lands below or near it. Under the fits' box (1e3), so that no fitted
 /// tyre is refused.
 pub const MIN_CORNERING_STIFFNESS: f64 = 900.0;
+
+/// The least cornering stiffness per unit of a tyre's own load, `Cα/Fz`
+/// at its stated (reference or rated) load, 1/rad. Pacejka's example car
+/// tyre, a 205/60R15 (*Tyre and Vehicle Dynamics*, 2012; MFeval's public
+/// `PacejkaBook_Defaults.tir`), has 12.0 at its FNOMIN of 4 kN; Gillespie
+/// (*Fundamentals of Vehicle Dynamics*, 1992, pp. 347–355) gives 0.08–0.18
+/// per degree for bias-ply and 0.11–0.19 for radial car tyres (4.6–10.9
+/// 1/rad); the public `.tir` files evaluated at their FNOMIN (the fixtures
+/// and the public MFeval and Simscape sets) lie between 6.7 (a 430/50R38
+/// tyre at 30 kN) and 44 (car tyres), up to 61 at a quarter of it. A
+/// stiffness typed in N/deg is 57.3 times too small: 0.08–1.07 there. The
+/// floor lies between, three times below the softest tyre's and above
+/// every N/deg figure of those files. Below the fits' box only where the
+/// box's lowest stiffness (1e3 N/rad) meets a load above 667 N, where a
+/// fitted stiffness at the box's floor is no tyre's either.
+pub const MIN_CORNERING_PER_LOAD: f64 = 1.5;
 
 /// The least |`a3`| of a PAC89 file, N/deg: `a3` bounds its lateral
 /// curve's cornering stiffness `BCD = a3·sin(2·atan(Fz/a4))` (PAC89's
@@ -75,10 +91,10 @@ pub(crate) fn contact_length(key: &str, v: f64) -> Result<(), ParamError> {
 }
 
 /// A cornering stiffness, N/rad: a small positive one is said as the
-/// N/deg it likely is.
+/// N/deg it likely is, with the value given converted.
 pub(crate) fn cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
     let why = match v > 0.0 && v <= MIN_CORNERING_STIFFNESS {
-        true => Limit::CorneringStiffnessInDegrees,
+        true => Limit::CorneringStiffnessInDegrees { given: v },
         false => Limit::CorneringStiffness,
     };
     ParamError::in_range(
@@ -88,6 +104,35 @@ pub(crate) fn cornering_stiffness(key: &str, v: f64) -> Result<(), ParamError> {
         MAX_CORNERING_STIFFNESS,
         why,
     )
+}
+
+/// A cornering stiffness `v` (N/rad, the key `key`) at the tyre's own
+/// load (N, its key, and whether it is the model's default) per unit of
+/// that load, at least
+/// [`MIN_CORNERING_PER_LOAD`]: one below is said as the N/deg it likely
+/// is, with the value given converted. (Above the floor of any tyre,
+/// [`cornering_stiffness`], a car tyre's N/deg figure still passes: 1000
+/// N/deg read as 1000 N/rad is 0.25 per N of a 4 kN load.)
+pub(crate) fn cornering_per_load(
+    key: &str,
+    v: f64,
+    (load_key, load, default): (&'static str, f64, bool),
+) -> Result<(), ParamError> {
+    let per_load = v / load;
+    match per_load >= MIN_CORNERING_PER_LOAD {
+        true => Ok(()),
+        false => Err(ParamError::new(
+            key,
+            v,
+            ParamReason::CorneringPerLoad(Box::new(PerLoad {
+                per_load,
+                load_key,
+                load,
+                default,
+                min: MIN_CORNERING_PER_LOAD,
+            })),
+        )),
+    }
 }
 
 /// PAC89's `a3`, N/deg, by its size (`a3` and `a4` may both be negative,

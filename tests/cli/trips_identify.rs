@@ -334,7 +334,8 @@ fn an_mf_tir_states_the_command_that_repeats_its_fit() {
 
 /// `--hold friction=50` was fitted and written, and `tyre-eval` then
 /// refused the file; a stiffness held at 1 N/rad drove the contact length
-/// to thousands of metres, written alike.
+/// to thousands of metres, written alike. (A stiffness of 1000 N/rad, a
+/// car tyre's N/deg figure, is now refused as held.)
 #[test]
 fn no_file_is_written_that_the_tyre_reader_refuses() {
     let dir = scratch(&[("rig.csv", &rig(1.0))]);
@@ -357,6 +358,14 @@ fn no_file_is_written_that_the_tyre_reader_refuses() {
             "m.tir",
             "`FNOMIN` = 4: must lie in (100, 100000]: a tyre carries 100 N",
         ),
+        // A car tyre's N/deg figure, 0.25 N/rad per N of the load the hold
+        // is checked at.
+        (
+            "gim",
+            "cornering_stiffness=1000",
+            "k.toml",
+            "`cornering_stiffness` = 1000: over the tyre's reference_load = 4000 N",
+        ),
     ];
     for (model, hold, out, said) in cases {
         let out = dir.path().join(out);
@@ -371,14 +380,17 @@ fn no_file_is_written_that_the_tyre_reader_refuses() {
     // Values within the limits that drive another past them. The
     // stiffness alone no longer does: the fit holds `friction_decay`, which
     // these data do not determine, and its refit keeps the contact length
-    // within 1 m (`identify/undetermined.rs`); with the load exponent held
-    // too, it still goes to 2.8 m.
+    // within 1 m (`identify/undetermined.rs`); with the softest stiffness
+    // the reader takes at this load, the load exponent and a low friction
+    // held too, it goes to 2 m.
     let out = dir.path().join("k.toml");
     let args = [
         "--hold",
-        "cornering_stiffness=1000",
+        "cornering_stiffness=6000",
         "--hold",
         "load_exponent=1.5",
+        "--hold",
+        "friction=0.2",
     ];
     let e = refused(&identify_with(dir.path(), "gim", &args, &out), &out);
     assert!(

@@ -203,8 +203,9 @@ fn a_loaded_radius_above_the_free_radius_is_said() {
     // Below the free radius up to 100 kN, past it at 1 MN (MFeval's).
     assert!(rl[0] < 0.2332 && rl[1] < 0.2332 && rl[2] > 2.0, "{rl:?}");
     assert!(
-        said.contains("warning: 1 of 3 points on the road with a loaded radius rl above the free radius UNLOADED_RADIUS = 0.2332 m")
-            && said.contains("the first at line 4, fz = 999999 N, rl = 2.386 m"),
+        said.contains("warning: 1 of 3 points on the road with a loaded radius rl above the free radius at their speed")
+            && said.contains("their load, far past the loads the file is made for")
+            && said.contains("the first at line 4, fz = 999999 N, kappa = 0, speed = 16.7 m/s: rl = 2.386 m"),
         "{said}"
     );
 }

@@ -4,7 +4,9 @@
 //! Formula, and its loaded radius `rl`, m, for a 6.1/6.2 file with a
 //! vertical model: on every row, the free radius at zero or negative load)
 //! out. A point at zero or negative load has its wheel off the road: no
-//! force, for every model, and those points counted. A load the vertical
+//! force, for every model, and those points counted; a file whose every
+//! load is negative is refused, each load at its cell, as a rig logged in
+//! SAE's axes (`physical.rs`, as `identify` says it). A load the vertical
 //! model carries at no loaded radius above 0 (limit checks off, a 100 kN
 //! load on an FSAE tyre) is refused at its row: MFeval's closed form gives
 //! a radius of 0 or below there. A Magic Formula tyre is evaluated in one of MFeval's modes
@@ -38,7 +40,8 @@
 //! reach; (`friction.rs`) a resultant `√(fx² + fy²)` beyond the tyre's
 //! friction and a model that does not couple `fx` and `fy` at combined
 //! slip (UniTire, PAC89); (`standstill.rs`) a Magic Formula `mz` at zero
-//! speed, its residual torque alone.
+//! speed, its residual torque alone; (`radius.rs`) a loaded radius above
+//! the free radius at the point's speed, with what drives it.
 
 mod camber;
 mod checks;
@@ -100,8 +103,9 @@ pub struct TyreEvalReport {
     /// The points outside the loads a TOML tyre's model is meant for, by
     /// side (`model_loads.rs`).
     pub loads_left: Vec<LoadsLeft>,
-    /// Points whose loaded radius exceeds the free radius (`radius.rs`).
-    pub radius_above_free: Option<radius::RadiusAboveFree>,
+    /// Points whose loaded radius exceeds the free radius at their speed,
+    /// by what drives it (`radius.rs`).
+    pub radius_above_free: Vec<radius::RadiusAboveFree>,
     /// Points at a positive load below a Magic Formula file's floor (its
     /// `FZMIN`, else a share of `FNOMIN`) that the ranges do not say.
     pub light_load: Option<LightLoad>,
@@ -244,7 +248,8 @@ fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointCol
 /// What a Magic Formula tyre adds to the evaluation: its mode, its points
 /// outside the file's ranges, and its loaded radius at every point (where
 /// it has a vertical model), with the points whose load it carries at no
-/// radius. All empty for another model.
+/// radius, and those whose radius exceeds the free radius at their speed.
+/// All empty for another model.
 #[derive(Default)]
 struct MfExtras {
     mode: Option<u32>,
@@ -252,6 +257,7 @@ struct MfExtras {
     ranges_left: Vec<ranges::RangeLeft>,
     loaded_radius: Option<Vec<f64>>,
     not_carried: Vec<not_carried::NotCarriedAt>,
+    radius_above_free: Vec<radius::RadiusAboveFree>,
 }
 
 /// The [`MfExtras`] of `tyre` at the points `p`.
@@ -287,12 +293,16 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
             })
             .collect()
     });
+    let radius_above_free = loaded_radius
+        .as_deref()
+        .map_or_else(Vec::new, |rl| radius::above_free(t, rl, &inputs, lines));
     MfExtras {
         mode: Some(t.mode().use_mode()),
         clamped,
         ranges_left: ranges::ranges_left(t, &inputs, lines),
         loaded_radius,
         not_carried,
+        radius_above_free,
     }
 }
 
@@ -376,11 +386,11 @@ pub fn run(
     let at_rest = standstill::at_rest(&tyre, &given, &f, &file.lines);
     let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
     let fx_at_zero_slip = zero_slip::fx_at_zero_slip(&tyre, &given, &f, &file.lines);
-    let extras = magic_formula_extras(&tyre, &given, &file.lines);
+    let mut extras = magic_formula_extras(&tyre, &given, &file.lines);
     let light_load = light_load::light_load(&tyre, fz, &file.lines);
-    let radius_above_free =
-        radius::above_free(&tyre, extras.loaded_radius.as_deref(), fz, &file.lines);
-    let loads_left = model_loads::loads_left(&tyre, fitted_ranges.as_ref(), fz, &file.lines);
+    let radius_above_free = std::mem::take(&mut extras.radius_above_free);
+    let loads_left =
+        model_loads::loads_left((&tyre, tyre_path), fitted_ranges.as_ref(), fz, &file.lines);
     let camber_read = !unread.iter().any(|u| u.column == "camber");
     let steep_camber = camber::steep_camber(
         &tyre,

@@ -8,12 +8,16 @@
 //! full force at 1e-300 N). A tyre fitted to rig data whose
 //! `[fitted_ranges]` give the load is held to those instead (said with
 //! the other fitted ranges), and a Magic Formula file to its own ranges.
-//! Loads in N.
+//! A Gim file whose stiffness does not depend on the load (`load_exponent
+//! = 0`) but which states its `reference_load` is held to a multiple of
+//! that, as the other models are to theirs; one that states none, to the
+//! loads of any tyre. Loads in N.
 
 use crate::format::{plural, readable, rounded};
 use crate::io::fitted_ranges::FittedRanges;
 use crate::tyre::{LoadRange, Tyre};
 use serde::Serialize;
+use std::path::Path;
 
 /// The points on one side of the model's load range.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -30,11 +34,29 @@ pub struct LoadsLeft {
     pub first_value: f64,
 }
 
+/// The load range of a Gim tyre of file `path` whose stiffness holds at
+/// any load, where the file states its `reference_load`: the model's own
+/// range ([`crate::tyre::ModelParameters::load_range`]) is any tyre's
+/// there, as the load has a default the file may not have meant (a car
+/// wheel's 4 kN on a truck tyre), but a load stated is the tyre's.
+fn stated_gim_load(tyre: &Tyre, path: &Path) -> Option<LoadRange> {
+    let Tyre::Gim(g) = tyre else {
+        return None;
+    };
+    let text = std::fs::read_to_string(path).ok()?;
+    let stated = text
+        .parse::<toml::Table>()
+        .ok()?
+        .contains_key("reference_load");
+    (g.load_exponent == 0.0 && stated)
+        .then(|| LoadRange::of_nominal("reference_load", g.reference_load))
+}
+
 /// The points of load `fz` (at file lines `lines`) outside the load range
-/// of `tyre`'s model, below it first; none where the model states no
-/// range or the tyre's `fitted` ranges give the load.
+/// of `tyre`'s model (of file `path`), below it first; none where the
+/// model states no range or the tyre's `fitted` ranges give the load.
 pub(crate) fn loads_left(
-    tyre: &Tyre,
+    (tyre, path): (&Tyre, &Path),
     fitted: Option<&FittedRanges>,
     fz: &[f64],
     lines: &[usize],
@@ -42,7 +64,7 @@ pub(crate) fn loads_left(
     if fitted.is_some_and(|r| r.fz.is_some()) {
         return Vec::new();
     }
-    let Some(range) = tyre.load_range() else {
+    let Some(range) = stated_gim_load(tyre, path).or_else(|| tyre.load_range()) else {
         return Vec::new();
     };
     [true, false]

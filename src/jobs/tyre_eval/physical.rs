@@ -2,7 +2,10 @@
 //! value outside it is no tyre's state (a load beyond ±1 MN, a slip ratio
 //! beyond ±10, an angle beyond ±90°, said as degrees where it reads as an
 //! angle in degrees, a speed beyond 300 m/s or below 0, a pressure above
-//! 5 MPa), and is refused at its cell before anything is evaluated.
+//! 5 MPa), and is refused at its cell before anything is evaluated; and a
+//! file whose every load is negative, each load at its cell, as `identify`
+//! refuses a rig file's (a point at zero or negative load among positive
+//! ones is a wheel off the road, evaluated with no force).
 
 use crate::error::InputProblem;
 use std::f64::consts::FRAC_PI_2;
@@ -49,11 +52,18 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
 ];
 
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
-/// range, and a speed within it below 0: its row and the problem.
+/// range, a speed within it below 0, and every load of a column of
+/// negative loads: its row and the problem.
 pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProblem)> {
     let Some(&(column, lo, hi, unit, why)) = PHYSICAL.iter().find(|p| p.0 == name) else {
         return Vec::new();
     };
+    // Every load below 0 is a sign convention, not wheels off the road: a
+    // rig whose z axis points down (SAE's, TTC's) logs them so, and
+    // evaluating them would write all-zero forces and exit 0. Said as
+    // `identify` says it of a rig file (`io/rig.rs`).
+    let finite = || values.iter().filter(|v| v.is_finite());
+    let every = name == "fz" && finite().count() > 0 && finite().all(|v| *v < 0.0);
     let refused = |(i, &value): (usize, &f64)| {
         let problem = if name == "speed" && value < 0.0 {
             // A slip angle within ±90° already says the wheel rolls
@@ -74,6 +84,8 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
                 unit,
                 why,
             }
+        } else if every {
+            InputProblem::NegativeLoad { value, every }
         } else {
             return None;
         };

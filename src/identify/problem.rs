@@ -190,6 +190,10 @@ impl FitProblem {
         // fill disjoint stretches of it, then one transpose.
         let n = p.len();
         let mut jt = DMatrix::zeros(n, self.points.len());
+        if n == 0 {
+            // Everything held: no column, and no chunk of zero width.
+            return jt.transpose();
+        }
         jt.as_mut_slice()
             .par_chunks_mut(n * CHUNK)
             .zip(self.points.par_chunks(CHUNK))

@@ -19,6 +19,7 @@ use crate::optim::Pso;
 use crate::tyre::pac89::{CurveCoefficients, Pac89, Pac89Form};
 use crate::tyre::Tyre;
 use nalgebra::{DMatrix, DVector};
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// Stage-1 result of one condition.
@@ -168,43 +169,51 @@ pub fn identify(conditions: &[Condition], settings: &FitSettings) -> Result<TwoS
 }
 
 /// Stage 1: B, C, D, E, Sh, Sv of each condition's curve by PSO + LM (the
-/// swarm's seed advanced by the condition's index).
+/// swarm's seed advanced by the condition's index). The conditions' fits
+/// are independent (each its own seed, its own serial swarm), so they run
+/// side by side and are collected in the conditions' order: the same
+/// results as one after another.
 fn stage1(conditions: &[Condition], pso: &Pso) -> Vec<Stage1> {
-    let mut stage1 = Vec::new();
-    for (k, c) in conditions.iter().enumerate() {
-        let ymax = c
-            .points
-            .iter()
-            .map(|q| q.fy().abs())
-            .fold(0.0, f64::max)
-            .max(1.0);
-        let bounds = [
-            (0.01, 3.0),
-            (1.0, 2.0),
-            (0.5 * ymax, 2.0 * ymax),
-            (-5.0, 1.0),
-            (-2.0, 2.0),
-            (-0.2 * ymax, 0.2 * ymax),
-        ];
-        let p = fit(
-            &Curve(&c.points),
-            &bounds,
-            &Pso {
-                seed: pso.seed.wrapping_add(k as u64),
-                ..*pso
-            },
-        );
-        let coefficients = [p[0], p[1], p[2], p[3], p[4], p[5]];
-        let cost = Curve(&c.points).cost(&p);
-        let y2: f64 = c.points.iter().map(|q| q.fy() * q.fy()).sum();
-        stage1.push(Stage1 {
-            fz_kn: c.fz / 1000.0,
-            camber_deg: c.camber.to_degrees(),
-            coefficients,
-            sigma_percent: 100.0 * (2.0 * cost / y2).sqrt(),
-        });
+    conditions
+        .par_iter()
+        .enumerate()
+        .map(|(k, c)| stage1_of(c, k, pso))
+        .collect()
+}
+
+/// Stage 1 of condition `c`, the `k`-th.
+fn stage1_of(c: &Condition, k: usize, pso: &Pso) -> Stage1 {
+    let ymax = c
+        .points
+        .iter()
+        .map(|q| q.fy().abs())
+        .fold(0.0, f64::max)
+        .max(1.0);
+    let bounds = [
+        (0.01, 3.0),
+        (1.0, 2.0),
+        (0.5 * ymax, 2.0 * ymax),
+        (-5.0, 1.0),
+        (-2.0, 2.0),
+        (-0.2 * ymax, 0.2 * ymax),
+    ];
+    let p = fit(
+        &Curve(&c.points),
+        &bounds,
+        &Pso {
+            seed: pso.seed.wrapping_add(k as u64),
+            ..*pso
+        },
+    );
+    let coefficients = [p[0], p[1], p[2], p[3], p[4], p[5]];
+    let cost = Curve(&c.points).cost(&p);
+    let y2: f64 = c.points.iter().map(|q| q.fy() * q.fy()).sum();
+    Stage1 {
+        fz_kn: c.fz / 1000.0,
+        camber_deg: c.camber.to_degrees(),
+        coefficients,
+        sigma_percent: 100.0 * (2.0 * cost / y2).sqrt(),
     }
-    stage1
 }
 
 /// Stage 2: the Adams coefficients a0..a13 from the stage-1 curves (camber

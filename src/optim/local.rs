@@ -49,6 +49,13 @@ pub trait Residuals: Sync {
         n
     }
 
+    /// Whether [`Residuals::jacobian`] reads its `r0` (differences do; an
+    /// exact Jacobian need not): where it does not, the polish does not
+    /// evaluate the residuals again to pass them.
+    fn jacobian_reads_residuals(&self) -> bool {
+        true
+    }
+
     /// ½·Σ e² at `p` (Zhang & Li's (2017) objective ε).
     fn cost(&self, p: &[f64]) -> f64 {
         let mut r = vec![0.0; self.count()];
@@ -164,8 +171,12 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Adapter<'_> {
             .then(|| DVector::from_vec(r))
     }
     fn jacobian(&self) -> Option<DMatrix<f64>> {
-        let mut r = vec![0.0; self.problem.count()];
-        self.problem.residuals(self.p.as_slice(), &mut r);
+        // The crate gives no residuals with its call for the Jacobian.
+        let mut r = Vec::new();
+        if self.problem.jacobian_reads_residuals() {
+            r.resize(self.problem.count(), 0.0);
+            self.problem.residuals(self.p.as_slice(), &mut r);
+        }
         let p = self.p.as_slice();
         let j = self.problem.jacobian(p, &r, &unbounded(p.len()));
         j.iter().all(|v| v.is_finite()).then_some(j)

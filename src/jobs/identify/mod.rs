@@ -465,8 +465,15 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     } else {
         0
     };
-    let fit = fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
-        .map_err(on_data(o, None))?;
+    // The two-stage identification fits every coefficient: with a
+    // coefficient held with --hold it is not run (the summary says so).
+    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
+        && first == Channel::LateralForce
+        && o.hold.is_empty();
+    let (fit, stages) = two_stage::beside_direct(asks_two_stage, &conditions, &settings, || {
+        fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
+    });
+    let fit = fit.map_err(on_data(o, None))?;
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         file: String::new(),
@@ -492,14 +499,11 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_conditions: Vec::new(),
         lock,
     };
-    // The two-stage identification fits every coefficient: with a
-    // coefficient held with --hold it is not run (the summary says so).
-    // It runs beside the rule that holds what the data do not determine:
-    // the two free fits are compared, and the rule then holds what the
-    // one written leaves undetermined (`two_stage.rs`).
-    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage;
-    if asks_two_stage && first == Channel::LateralForce && o.hold.is_empty() {
-        two_stage::two_stage(o, &mut r, &tyre0, &settings)?;
+    // The two-stage result runs beside the rule that holds what the data
+    // do not determine: the two free fits are compared, and the rule then
+    // holds what the one written leaves undetermined (`two_stage.rs`).
+    if let Some(stages) = stages {
+        two_stage::two_stage(o, &mut r, &tyre0, &settings, stages)?;
     }
     if let Tyre::Pac89(_) = r.tyre {
         curvature_hold::hold_curvature(o, &mut r, &tyre0, &settings)?;

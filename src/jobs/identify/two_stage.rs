@@ -11,10 +11,12 @@
 //! its model file).
 
 use super::{on_data, Options, SwarmReport};
-use crate::error::Error;
-use crate::identify::data::Point;
+use crate::error::{Error, FitError};
+use crate::identify::data::{Condition, Point};
 use crate::identify::pac89_two_stage::{self, TwoStage};
-use crate::identify::{fit_report_of, hold_undetermined, sigma, Channel, Fit, FitSettings, HeldFor};
+use crate::identify::{
+    fit_report_of, hold_undetermined, sigma, Channel, Fit, FitSettings, HeldFor,
+};
 use crate::tyre::{Pac89, Tyre};
 use serde::Serialize;
 
@@ -48,17 +50,38 @@ pub struct TwoStageReport {
     pub direct_sigma_percent: f64,
 }
 
-/// PAC89: Zhang et al.'s (2021) two-stage identification beside the direct
-/// fit; the better of the two becomes the tyre, its undetermined
-/// parameters held at `start`'s values (module notes).
+/// The direct fit (`direct`) and, when `asks`, Zhang et al.'s (2021) two
+/// stages on `conditions`, side by side: neither reads the other, and the
+/// direct fit's polish leaves a core idle while it factors its Jacobian
+/// (serial in the `levenberg-marquardt` crate), which the stages fill.
+/// Each is computed as it would be alone, so the results do not depend on
+/// the overlap.
+pub(super) fn beside_direct<F>(
+    asks: bool,
+    conditions: &[Condition],
+    settings: &FitSettings,
+    direct: F,
+) -> (Result<Fit, Error>, Option<Result<TwoStage, FitError>>)
+where
+    F: FnOnce() -> Result<Fit, Error> + Send,
+{
+    rayon::join(direct, || {
+        asks.then(|| pac89_two_stage::identify(conditions, settings))
+    })
+}
+
+/// PAC89: Zhang et al.'s (2021) two-stage identification (`stages`, from
+/// [`beside_direct`]) beside the direct fit; the better of the two becomes
+/// the tyre, its undetermined parameters held at `start`'s values (module
+/// notes).
 pub(super) fn two_stage(
     o: &Options,
     r: &mut SwarmReport,
     start: &Tyre,
     settings: &FitSettings,
+    stages: Result<TwoStage, FitError>,
 ) -> Result<(), Error> {
-    let stages = pac89_two_stage::identify(&r.conditions, settings)
-        .map_err(|e| on_data(o, None)(e.into()))?;
+    let stages = stages.map_err(|e| on_data(o, None)(e.into()))?;
     let all: Vec<Point> = r
         .conditions
         .iter()
@@ -74,8 +97,7 @@ pub(super) fn two_stage(
     let direct_sigma_percent = r.fit.free_sigma_percent.unwrap_or(r.fit.sigma_percent);
     let written = if s < direct_sigma_percent {
         // The report says what the file holds: the two-stage result's
-        // parameters, standard errors and curves.
-        // Compared free, reported free: what the direct fit held because
+        // parameters, standard errors and curves. Compared free, reported free: what the direct fit held because
         // it left it undetermined is the two-stage result's own to fit
         // (its value, not the direct fit's hold, is in the file), and the
         // rule then holds what this result leaves undetermined.

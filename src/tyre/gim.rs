@@ -160,8 +160,18 @@ impl Parameterised for Gim {
         self.friction_decay = p[3];
         self.load_exponent = p[4];
     }
+    /// The stiffness from the least per unit of the reference load any
+    /// tyre has ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): a fit
+    /// below it would write a file the tyre readers refuse.
     fn bounds(&self) -> Vec<(f64, f64)> {
-        vec![(1e3, 5e5), (0.02, 0.5), (0.1, 3.0), (0.0, 1.0), (0.0, 1.5)]
+        let least = (crate::tyre::sizes::MIN_CORNERING_PER_LOAD * self.reference_load).max(1e3);
+        vec![
+            (least, 5e5),
+            (0.02, 0.5),
+            (0.1, 3.0),
+            (0.0, 1.0),
+            (0.0, 1.5),
+        ]
     }
 }
 

@@ -206,8 +206,21 @@ fn real_hoosier_rig_data_fits_within_a_few_percent() {
     // Seed 1 writes the two-stage result (its σ a hair below the direct's).
     assert_eq!(report["written"], "two-stage");
     let t = &report["two_stage"];
-    assert_eq!(sigma, t["polished_overall_sigma_percent"].as_f64().unwrap());
-    assert!(sigma < t["direct_sigma_percent"].as_f64().unwrap());
+    // Chosen free against the direct fit's free σ; written with what it
+    // leaves undetermined held, as the direct fit would be.
+    let polished = t["polished_overall_sigma_percent"].as_f64().unwrap();
+    assert!(polished < t["direct_sigma_percent"].as_f64().unwrap());
+    if undetermined_holds(&report).is_empty() {
+        assert_eq!(sigma, polished);
+    } else {
+        assert!(sigma > polished, "{sigma} {polished}");
+        assert!(
+            stdout.contains(&format!(
+                "σ {sigma:.3} % held against {polished:.3} % fitted free"
+            )),
+            "{stdout}"
+        );
+    }
     assert!(
         stdout.contains(&format!("  σ {sigma:.3} % (PSO alone")),
         "{stdout}"

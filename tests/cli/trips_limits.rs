@@ -31,9 +31,16 @@ fn a_gim_fit_keeps_its_parameters_in_their_box_and_says_one_on_its_bound() {
     let o = identify_to(&dir.path().join("rig.csv"), "gim", &out);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
+    // On its bound 0, to rounding (the swarm's box starts the stiffness
+    // at the least any tyre has per unit load since stop 72; the polish
+    // ends 1e-15 off the bound).
+    let line = said
+        .lines()
+        .find(|l| l.starts_with("  warning: friction_decay = "))
+        .unwrap_or_else(|| panic!("no friction_decay warning: {said}"));
     assert!(
-        said.contains("warning: friction_decay = 0: on its search bound (0 to 1): the fit would take it beyond; the value is the bound, not a fit"),
-        "{said}"
+        line.ends_with(": on its search bound (0 to 1): the fit would take it beyond; the value is the bound, not a fit"),
+        "{line}"
     );
     let report = read_json(&out.with_extension("report.json"));
     for p in report["parameters"].as_array().unwrap() {
@@ -45,7 +52,8 @@ fn a_gim_fit_keeps_its_parameters_in_their_box_and_says_one_on_its_bound() {
         assert!(lo <= v && v <= hi, "{p}");
     }
     let tyre: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
-    assert_eq!(tyre["friction_decay"].as_float(), Some(0.0), "{tyre}");
+    let decay = tyre["friction_decay"].as_float().unwrap();
+    assert!((0.0..1e-12).contains(&decay), "{tyre}");
     // The file written is one the tool reads.
     let e = run(&[
         "tyre-eval",

@@ -149,15 +149,6 @@ impl Explained {
         self.reduction_percent < EXPLAINS_MOST
     }
 
-    /// Whether what the effects leave is itself a gap
-    /// ([`VerdictWarning::GapRemains`]): they explain most of the gap, not
-    /// all of it, and the sentence says so.
-    pub fn gap_remains(&self) -> bool {
-        self.warnings
-            .iter()
-            .any(|w| matches!(w, VerdictWarning::GapRemains { .. }))
-    }
-
     /// The channels whose gap the effects leave ([`ChannelLeft`]).
     pub fn channels_left(&self) -> Vec<Channel> {
         self.warnings

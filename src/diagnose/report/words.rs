@@ -27,7 +27,7 @@ pub use warnings::verdict_warning;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
     ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
-    Refused, Unseen, Verdict, SIGNIFICANT_NOISE_FLOORS,
+    Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -45,6 +45,7 @@ pub fn statement(v: &Verdict) -> String {
     match v {
         Verdict::Explained(e) => {
             let left: Vec<&str> = e.channels_left().iter().map(|c| c.name()).collect();
+            let remains = |w: &VerdictWarning| matches!(w, VerdictWarning::GapRemains { .. });
             let head = format!(
                 "{} explains {}the gap{}: held-out error {:.3} → {:.3} (noise level {:.3}), {:.1} % of the gap above noise removed",
                 joined(&e.effects, "+"),
@@ -53,7 +54,7 @@ pub fn statement(v: &Verdict) -> String {
                 // further cause" read as a contradiction.
                 if e.partial() {
                     "part of "
-                } else if e.gap_remains() {
+                } else if e.warnings.iter().any(remains) {
                     "most of "
                 } else {
                     ""
@@ -534,5 +535,7 @@ mod evidence_tests;
 mod lookalike_tests;
 #[cfg(test)]
 mod parameter_tests;
+#[cfg(test)]
+mod prior_tests;
 #[cfg(test)]
 mod tests;

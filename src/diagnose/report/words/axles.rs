@@ -162,7 +162,7 @@ pub fn prior_line(p: &PriorReport) -> String {
         .iter()
         .zip(names)
         .take(if rule.free { 3 } else { 2 });
-    let placed: Vec<String> = fitted
+    let outside: Vec<String> = fitted
         .filter(|(x, _)| !x.within || x.z.abs() >= NEAR_EDGE)
         .map(|(x, n)| {
             let place = if x.within {
@@ -176,7 +176,6 @@ pub fn prior_line(p: &PriorReport) -> String {
             )
         })
         .collect();
-    let outside = placed;
     format!(
         "prior {class}: cornering coefficient {:.0}–{:.0} 1/rad, peak friction {:.2}–{:.2} (95 % ranges); {friction}; {}; {}",
         a.cornering[0],

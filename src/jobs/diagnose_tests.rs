@@ -81,7 +81,7 @@ fn a_reduction_that_rounds_to_zero_has_no_sign() {
     assert_eq!(cells, "     -1.2 %     12.3 %");
 }
 
-/// An overlay's measured samples are dots drawn last, over the base
+/// An overlay's measured samples are dots drawn first, under the base
 /// model's dashed line and the verdict's solid one.
 #[test]
 fn overlay_model_lines_are_drawn_over_the_measured_dots() {

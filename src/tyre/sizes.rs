@@ -35,9 +35,9 @@ pub const MIN_CORNERING_STIFFNESS: f64 = 900.0;
 /// tyre at 30 kN) and 44 (car tyres), up to 61 at a quarter of it. A
 /// stiffness typed in N/deg is 57.3 times too small: 0.08–1.07 there. The
 /// floor lies between, three times below the softest tyre's and above
-/// every N/deg figure of those files. Below the fits' box only where the
-/// box's lowest stiffness (1e3 N/rad) meets a load above 667 N, where a
-/// fitted stiffness at the box's floor is no tyre's either.
+/// every N/deg figure of those files. A Gim fit's box starts at it
+/// ([`crate::tyre::Parameterised::bounds`]), so `identify` writes no
+/// stiffness the readers refuse.
 pub const MIN_CORNERING_PER_LOAD: f64 = 1.5;
 
 /// The least |`a3`| of a PAC89 file, N/deg: `a3` bounds its lateral

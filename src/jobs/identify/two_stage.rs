@@ -97,10 +97,11 @@ pub(super) fn two_stage(
     let direct_sigma_percent = r.fit.free_sigma_percent.unwrap_or(r.fit.sigma_percent);
     let written = if s < direct_sigma_percent {
         // The report says what the file holds: the two-stage result's
-        // parameters, standard errors and curves. Compared free, reported free: what the direct fit held because
-        // it left it undetermined is the two-stage result's own to fit
-        // (its value, not the direct fit's hold, is in the file), and the
-        // rule then holds what this result leaves undetermined.
+        // parameters, standard errors and curves. Compared free, reported
+        // free: what the direct fit held because it left it undetermined
+        // is the two-stage result's own to fit (its value, not the direct
+        // fit's hold, is in the file), and the rule then holds what this
+        // result leaves undetermined.
         let fit = fit_report_of(
             tyre,
             Channel::LateralForce,

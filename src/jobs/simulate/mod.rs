@@ -260,9 +260,9 @@ impl SimulateReport {
 }
 
 /// Steer, yaw rate, lateral acceleration and sideslip against time, with a
-/// replayed run's measurements as dots over the model's line (a dashed
-/// line through noisy samples reads as a smear, and under the line they
-/// cannot be seen).
+/// replayed run's measurements as dots under the model's line (a dashed
+/// line through noisy samples reads as a smear; drawn over the line, the
+/// dots hid it).
 fn history_figure(name: &str, h: &TimeHistory, measured: Option<&MeasuredRun>) -> Figure {
     let deg = |v: &[f64]| v.iter().map(|x| x.to_degrees()).collect::<Vec<_>>();
     let panel = |title: &str, y_label: &str, label: &str, y: &[f64]| Panel {
@@ -318,8 +318,8 @@ mod tests {
     use super::*;
     use crate::report::plot::Style;
 
-    /// A replayed run's samples are dots drawn last in each response panel
-    /// (over the model's line), in every channel the run logs.
+    /// A replayed run's samples are dots drawn first in each response
+    /// panel (under the model's line), in every channel the run logs.
     #[test]
     fn the_models_line_is_drawn_over_the_measured_dots() {
         let t = vec![0.0, 0.1, 0.2];

@@ -90,6 +90,44 @@ impl FittedRanges {
     }
 }
 
+/// The share of a range's span a value may lie past either end and still
+/// be read as within it: a rig holds its load and slip angle to about 1 %
+/// of their sweep (a load logged 0.5 N, a slip angle 0.03° past the data's
+/// end is a point of the data, not an extrapolation).
+pub const SLACK: f64 = 0.01;
+
+/// Whether `v` lies past `[lo, hi]` by more than [`SLACK`] of its span:
+/// `Some(true)` below, `Some(false)` above, `None` within.
+pub fn past(range: [f64; 2], v: f64) -> Option<bool> {
+    past_by(range, v, SLACK)
+}
+
+/// Whether `v` lies past `[lo, hi]` by more than `share` of its span
+/// ([`past`]).
+fn past_by([lo, hi]: [f64; 2], v: f64, share: f64) -> Option<bool> {
+    let slack = share * (hi - lo);
+    match (v < lo - slack, v > hi + slack) {
+        (true, _) => Some(true),
+        (_, true) => Some(false),
+        _ => None,
+    }
+}
+
+/// A range a point leaves ([`FittedRanges::left`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RangeLeft {
+    /// The key (`fz`, `alpha`, `kappa`, `camber`, `pressure`).
+    pub key: &'static str,
+    /// Its unit (N, rad, Pa; empty for the slip ratio).
+    pub unit: &'static str,
+    /// The range, `[low, high]`.
+    pub range: [f64; 2],
+    /// The point's value.
+    pub value: f64,
+    /// It lies below the range (else above).
+    pub below: bool,
+}
+
 /// One point's inputs, as the ranges read them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RangePoint {
@@ -125,16 +163,53 @@ impl FittedRanges {
         ]
     }
 
-    /// Whether `p` lies outside a range (a load at or below 0, off the
-    /// road, is never counted: no tyre model gives a force there).
+    /// Whether `p` lies outside a range by more than [`SLACK`] of its span
+    /// (a load at or below 0, off the road, is never counted: no tyre
+    /// model gives a force there).
     pub fn outside(&self, p: &RangePoint) -> bool {
-        let out = |r: Option<[f64; 2]>, v: f64| r.is_some_and(|[lo, hi]| v < lo || v > hi);
-        p.fz > 0.0
-            && (out(self.fz, p.fz)
-                || out(self.alpha, p.alpha)
-                || out(self.kappa, p.kappa)
-                || out(self.camber, p.camber)
-                || p.pressure.is_some_and(|v| out(self.pressure, v)))
+        !self.left(p).is_empty()
+    }
+
+    /// The ranges `p` lies past by more than [`SLACK`] of their span, in
+    /// key order: the key, its unit, the range, the value and whether it
+    /// lies below (else above). None for a load at or below 0.
+    pub fn left(&self, p: &RangePoint) -> Vec<RangeLeft> {
+        self.left_by(p, SLACK)
+    }
+
+    /// Whether `p` (on the road) lies past some range's end at all, by
+    /// [`SLACK`] of its span or less included.
+    pub fn past_an_end(&self, p: &RangePoint) -> bool {
+        !self.left_by(p, 0.0).is_empty()
+    }
+
+    /// [`Self::left`] with `share` of a span as the slack.
+    fn left_by(&self, p: &RangePoint, share: f64) -> Vec<RangeLeft> {
+        if p.fz <= 0.0 {
+            return Vec::new();
+        }
+        let values = [
+            Some(p.fz),
+            Some(p.alpha),
+            Some(p.kappa),
+            Some(p.camber),
+            p.pressure,
+        ];
+        self.named()
+            .into_iter()
+            .zip(values)
+            .filter_map(|((key, unit, range), value)| {
+                let (range, value) = (range?, value?);
+                let below = past_by(range, value, share)?;
+                Some(RangeLeft {
+                    key,
+                    unit,
+                    range,
+                    value,
+                    below,
+                })
+            })
+            .collect()
     }
 
     /// `fz 474 to 2768 N, alpha -0.1693 to 0.1692 rad, …`.
@@ -292,8 +367,18 @@ mod tests {
         };
         // kappa and camber have no range: not checked.
         assert!(!r.outside(&p));
-        assert!(r.outside(&RangePoint { fz: 3001.0, ..p }));
+        // Past an end by at most 1 % of the span: within the data.
+        assert!(!r.outside(&RangePoint { fz: 3025.0, ..p }));
+        assert!(r.outside(&RangePoint { fz: 3026.0, ..p }));
+        assert!(!r.outside(&RangePoint { alpha: -0.204, ..p }));
         assert!(r.outside(&RangePoint { alpha: -0.21, ..p }));
+        let left = r.left(&RangePoint {
+            alpha: -0.21,
+            pressure: Some(120e3),
+            ..p
+        });
+        let keys: Vec<_> = left.iter().map(|l| (l.key, l.value, l.below)).collect();
+        assert_eq!(keys, [("alpha", -0.21, true), ("pressure", 120e3, false)]);
         assert!(r.outside(&RangePoint {
             pressure: Some(120e3),
             ..p

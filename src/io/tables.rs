@@ -91,6 +91,28 @@ pub fn load_tyre_with_ranges(path: &Path) -> Result<(Tyre, Option<FittedRanges>)
     Ok((tyre, ranges))
 }
 
+/// Reads a tyre file as [`load_tyre_with_ranges`] does, for an axle whose
+/// wheels each carry `wheel_load` (N) standing still: a tyre with no load
+/// of its own is checked at that one ([`Tyre::check_on_wheel`]), the error
+/// at its key in its file.
+pub(crate) fn load_axle_tyre(
+    path: &Path,
+    wheel_load: f64,
+) -> Result<(Tyre, Option<FittedRanges>), InputError> {
+    let (tyre, ranges) = load_tyre_with_ranges(path)?;
+    if let Err(e) = tyre.check_on_wheel(wheel_load) {
+        let (src, _) = super::fitted_ranges::split(&TomlSource::read(path)?)?;
+        return Err(param_error(&src, None, e));
+    }
+    Ok((tyre, ranges))
+}
+
+/// The static load on each wheel of the front and of the rear axle, N.
+pub(crate) fn static_wheel_loads(vehicle: &Vehicle) -> (f64, f64) {
+    let (front, rear) = vehicle.static_axle_loads();
+    (0.5 * front, 0.5 * rear)
+}
+
 /// Checks a `[vehicle]` table.
 pub(crate) fn check_vehicle(src: &TomlSource, vehicle: &Vehicle) -> Result<(), InputError> {
     vehicle
@@ -145,8 +167,9 @@ pub(crate) fn resolve_model(
     if tyres.rear.is_some() {
         src.referenced_file("tyres.rear", &rear_path)?;
     }
-    let (mut front, front_ranges) = load_tyre_with_ranges(&front_path)?;
-    let (mut rear, rear_ranges) = load_tyre_with_ranges(&rear_path)?;
+    let (front_load, rear_load) = static_wheel_loads(vehicle);
+    let (mut front, front_ranges) = load_axle_tyre(&front_path, front_load)?;
+    let (mut rear, rear_ranges) = load_axle_tyre(&rear_path, rear_load)?;
     apply_tyre_mode(src, "tyres.mode", tyres.mode, &mut [&mut front, &mut rear])?;
     let mut model = VehicleModel::new(vehicle.clone(), front, rear);
     model.options = options;

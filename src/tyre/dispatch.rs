@@ -132,6 +132,12 @@ impl Tyre {
         self.as_model().check_sizes()
     }
 
+    /// Checks the parameters against the static load on each wheel of its
+    /// axle, N ([`ModelParameters::check_on_wheel`]).
+    pub fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
+        self.as_model().check_on_wheel(wheel_load)
+    }
+
     /// Which parameters a lateral-force fit can identify from data with
     /// `loads` distinct loads and `cambers` distinct cambers: the rest stay
     /// at their start values ([`ModelParameters::lateral_free`]).

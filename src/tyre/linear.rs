@@ -109,6 +109,13 @@ impl ModelParameters for Linear {
         super::sizes::cornering_stiffness("cornering_stiffness", self.cornering_stiffness)?;
         super::sizes::trail("pneumatic_trail", self.pneumatic_trail)
     }
+    /// Its stiffness per unit of the wheel's static load, at least any
+    /// tyre's ([`super::sizes::cornering_per_load`]): 1000 typed for a car
+    /// tyre's 1000 N/deg gave 50 N of force at 4 kN.
+    fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
+        let load = (super::sizes::STATIC_WHEEL_LOAD, wheel_load, false);
+        super::sizes::cornering_per_load("cornering_stiffness", self.cornering_stiffness, load)
+    }
     fn scale_cornering_stiffness(&mut self, k: f64) {
         self.cornering_stiffness *= k;
     }

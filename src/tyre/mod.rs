@@ -347,6 +347,16 @@ pub trait ModelParameters: TyreModel + Parameterised {
         Ok(())
     }
 
+    /// Checks the parameters against the load standing on each wheel of
+    /// the axle it is fitted to, N: a model whose force does not depend on
+    /// the load (the linear tyre) has no load of its own for
+    /// [`Self::check_sizes`] to take its stiffness per unit load at, so a
+    /// car tyre's N/deg figure typed in N/rad is caught only here.
+    fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
+        let _ = wheel_load;
+        Ok(())
+    }
+
     /// Multiplies the cornering stiffness by `k` while the friction limit
     /// stays: the parameter(s) the stiffness is proportional to are scaled.
     fn scale_cornering_stiffness(&mut self, k: f64);

@@ -135,6 +135,11 @@ pub(crate) fn cornering_per_load(
     }
 }
 
+/// The load [`cornering_per_load`] takes a tyre's stiffness at where the
+/// tyre has no load of its own: the vehicle's, standing still.
+pub(crate) const STATIC_WHEEL_LOAD: &str =
+    "static load on each wheel of its axle (from the vehicle's mass, a and b)";
+
 /// PAC89's `a3`, N/deg, by its size (`a3` and `a4` may both be negative,
 /// [`crate::tyre::ModelParameters::canonicalise`]): one below
 /// [`MIN_PAC89_A3`] is said as the kN/deg it likely is.

@@ -295,7 +295,8 @@ fn tyre_eval_says_what_the_model_does_not_read_and_where_it_extrapolates() {
     for w in [
         "warning: this gim tyre does not respond to `camber`: its forces and moments are the same at any value (1 point with camber ≠ 0, evaluated as at 0); its model does not read it, or its coefficients give it no effect",
         "warning: this gim tyre does not respond to `pressure`: its forces and moments are the same at any value (the pressure given at 3 points ignored); its model does not read it, or its coefficients give it no effect",
-        "warning: 2 of 3 points outside the ranges of the rig data the tyre was fitted to (fz 2000 to 6000 N, alpha -0.2000 to 0.2000 rad; its [fitted_ranges]): evaluated by extrapolation",
+        "warning: 1 of 3 points above the rig data's fz = 6000 N the tyre was fitted to (its [fitted_ranges]: 2000 to 6000 N): evaluated by extrapolation, the farthest at 9000 N, 75.0 % of the range's span past its end; the first at line 3, fz = 9000 N",
+        "warning: 1 of 3 points below the rig data's alpha = -0.2000 rad the tyre was fitted to (its [fitted_ranges]: -0.2000 to 0.2000 rad): evaluated by extrapolation, the farthest at -0.3 rad, 25.0 % of the range's span past its end; the first at line 4, alpha = -0.3 rad",
     ] {
         assert!(e.contains(w), "{w}\n{e}");
     }
@@ -304,7 +305,11 @@ fn tyre_eval_says_what_the_model_does_not_read_and_where_it_extrapolates() {
     // A hand-written tyre states no ranges: no point is counted.
     let o = eval(&root().join("tyres/gim.toml"), "e2.csv");
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(!stderr(&o).contains("outside the ranges"), "{}", stderr(&o));
+    assert!(
+        !stderr(&o).contains("the tyre was fitted to"),
+        "{}",
+        stderr(&o)
+    );
     // A reversed range is refused at its element.
     fs::write(
         dir.path().join("bad.toml"),

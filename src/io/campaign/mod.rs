@@ -32,7 +32,9 @@ mod runs;
 
 use super::paths::beside;
 use super::rig::read_rig;
-use super::tables::{apply_tyre_mode, check_road, check_vehicle, load_tyre, Road};
+use super::tables::{
+    apply_tyre_mode, check_road, check_vehicle, load_axle_tyre, static_wheel_loads, Road,
+};
 use super::toml_file::{param_error, TomlSource};
 pub use crate::diagnose::campaign::prior::{AxlePrior, TyreClass};
 pub use crate::diagnose::campaign::{BaseTyres, Campaign, DiagnoseSettings, StatedUncertainty};
@@ -412,7 +414,9 @@ fn base_tyres(
             let t = beside(base, t);
             inputs.push(t.clone());
             src.referenced_file("tyres.file", &t)?;
-            let mut t = load_tyre(&t)?;
+            // One file on both axles: checked at the heavier wheel.
+            let (front, rear) = static_wheel_loads(&f.vehicle);
+            let mut t = load_axle_tyre(&t, front.max(rear))?.0;
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut t])?;
             return Ok(BaseTyres::Given(Box::new(t.clone()), Box::new(t)));
         }
@@ -421,7 +425,8 @@ fn base_tyres(
             inputs.extend([fr.clone(), re.clone()]);
             src.referenced_file("tyres.front", &fr)?;
             src.referenced_file("tyres.rear", &re)?;
-            let (mut f, mut r) = (load_tyre(&fr)?, load_tyre(&re)?);
+            let (front, rear) = static_wheel_loads(&f.vehicle);
+            let (mut f, mut r) = (load_axle_tyre(&fr, front)?.0, load_axle_tyre(&re, rear)?.0);
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;
             return Ok(BaseTyres::Given(Box::new(f), Box::new(r)));
         }

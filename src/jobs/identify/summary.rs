@@ -110,7 +110,11 @@ impl SwarmReport {
                 crate::format::readable(h.free_sigma_percent, 4)
             ));
         }
-        out.extend(super::notes::large_sigma(&self.fit).map(|n| n.line(" ")));
+        out.extend(
+            super::notes::sigma_notes(&self.fit)
+                .iter()
+                .map(|n| n.line(" ")),
+        );
         if let Some(mz) = &self.aligning {
             out.push(format!(
                 "  aligning moment: σ {:.3} % (PSO alone {:.3} %), RMS {} N·m, {:.2} s",

@@ -35,7 +35,7 @@
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
-use crate::io::fitted_ranges::{FittedRanges, RangePoint};
+use crate::io::fitted_ranges::{past, FittedRanges, RangePoint};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
@@ -444,7 +444,7 @@ fn beyond_fitted(
     }
     // What left the ranges: the extent of the values beyond their own
     // range, over the rows outside.
-    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|[a, b]| v < a || v > b);
+    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|r| past(r, v).is_some());
     let extent = |x: &mut dyn Iterator<Item = f64>| {
         x.fold(None, |e: Option<(f64, f64)>, v| {
             Some(e.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))

@@ -30,7 +30,7 @@
 //! What the evaluation cannot stand behind is said, not dropped: an input
 //! column the model does not read (`unread.rs`: a Gim tyre's camber), and
 //! the points beyond the ranges of the rig data a TOML tyre was fitted to
-//! (its `[fitted_ranges]`, which `identify` writes), evaluated by
+//! (its `[fitted_ranges]`, which `identify` writes: `fitted.rs`), evaluated by
 //! extrapolation, or else beyond the loads its model is meant for
 //! (`model_loads.rs`), and a slip stiffness that changes sign inside the loads
 //! evaluated (`stiffness.rs`: the public `FSAE_Defaults.tir`'s at 1625 N),
@@ -45,6 +45,7 @@
 
 mod camber;
 mod checks;
+mod fitted;
 mod friction;
 mod light_load;
 mod model_loads;
@@ -71,7 +72,7 @@ pub use stiffness::{AgainstSlip, SignChange};
 pub use unread::Unread;
 
 use crate::error::{Error, InputProblem};
-use crate::io::fitted_ranges::{FittedRanges, RangePoint};
+use crate::io::fitted_ranges::FittedRanges;
 use crate::io::load_tyre_with_ranges;
 use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
@@ -143,8 +144,9 @@ pub struct TyreEvalReport {
     /// The ranges of the rig data a TOML tyre was fitted to (its
     /// `[fitted_ranges]`; `None`: the file states none).
     pub fitted_ranges: Option<FittedRanges>,
-    /// Points beyond those ranges, evaluated by extrapolation.
-    pub beyond_fitted: usize,
+    /// The points beyond those ranges, evaluated by extrapolation, range
+    /// by range (`fitted.rs`).
+    pub beyond_fitted: fitted::BeyondFitted,
     /// The slip stiffnesses that change sign inside the loads evaluated.
     #[serde(skip)]
     pub sign_changes: Vec<SignChange>,
@@ -379,7 +381,9 @@ pub fn run(
     let unread = unread::unread(&tyre, &given, &f);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
-    let beyond_fitted = fitted_ranges.as_ref().map_or(0, |r| beyond(r, &given));
+    let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
+        fitted::beyond(r, [fz, kappa, alpha, camber], &p, &file.lines)
+    });
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
@@ -459,22 +463,6 @@ pub fn run(
     })
 }
 
-/// The points of `p` outside the ranges `r`.
-fn beyond(r: &FittedRanges, p: &unread::Points) -> usize {
-    let [fz, kappa, alpha, camber, _] = p.columns;
-    (0..fz.len())
-        .filter(|&i| {
-            r.outside(&RangePoint {
-                fz: fz[i],
-                alpha: alpha[i],
-                kappa: kappa[i],
-                camber: camber[i],
-                pressure: p.pressure.get(i).copied(),
-            })
-        })
-        .count()
-}
-
 impl TyreEvalReport {
     /// What the evaluation cannot stand behind: the columns the model does
     /// not read, and the points beyond the ranges the tyre was fitted to.
@@ -523,14 +511,7 @@ impl TyreEvalReport {
                 .iter()
                 .map(|c| c.line(self.model, self.count)),
         );
-        if let (Some(r), n @ 1..) = (&self.fitted_ranges, self.beyond_fitted) {
-            out.push(format!(
-                "{} of {} outside the ranges of the rig data the tyre was fitted to ({}; its [fitted_ranges]): evaluated by extrapolation",
-                n,
-                crate::format::plural(self.count, "point", "points"),
-                r.text()
-            ));
-        }
+        out.extend(self.beyond_fitted.ranges.iter().map(|f| f.line(self.count)));
         out
     }
 

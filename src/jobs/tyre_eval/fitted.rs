@@ -1,0 +1,158 @@
+//! The points past the ranges of the rig data a TOML tyre was fitted to
+//! (its `[fitted_ranges]`, which `identify` writes), range by range and
+//! side by side: how many, the farthest and by how much of the range's
+//! span, and the first one's line and value. Units as the file holds
+//! them: N, rad, Pa. A point past an end by at most
+//! [`crate::io::fitted_ranges::SLACK`] of the span is read as within the
+//! data (a rig holds its load and slip angle to about that); such points
+//! are counted apart, not warned of: one count over every range alone
+//! said "2 of 3 points outside" for a load 0.5 N past the data's end.
+
+use crate::format::{plural, readable, rounded};
+use crate::io::fitted_ranges::{FittedRanges, RangePoint};
+use serde::Serialize;
+
+/// One side of one fitted range some points lie past.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FittedLeft {
+    /// The range's key (`fz`, `alpha`, `kappa`, `camber`, `pressure`).
+    pub key: &'static str,
+    /// Its unit.
+    #[serde(skip)]
+    pub unit: &'static str,
+    /// The range, `[low, high]`.
+    pub range: [f64; 2],
+    /// The points lie below it (else above).
+    pub below: bool,
+    /// How many.
+    pub points: usize,
+    /// The farthest value past the end.
+    pub farthest: f64,
+    /// The first such point's line in the points file (1-based) and value.
+    pub first_line: usize,
+    /// The first such point's value.
+    pub first_value: f64,
+}
+
+/// What the points do against a tyre's fitted ranges.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct BeyondFitted {
+    /// The points past some range by more than the slack, evaluated by
+    /// extrapolation.
+    pub points: usize,
+    /// The points past an end by no more than the slack (read as within).
+    pub within_slack: usize,
+    /// The ranges left, in key order, below before above.
+    pub ranges: Vec<FittedLeft>,
+}
+
+/// The points `[fz, kappa, alpha, camber]` (with their pressures, where
+/// given) at file lines `lines` against the ranges `r`.
+pub(crate) fn beyond(
+    r: &FittedRanges,
+    [fz, kappa, alpha, camber]: [&[f64]; 4],
+    pressure: &[f64],
+    lines: &[usize],
+) -> BeyondFitted {
+    let mut out = BeyondFitted::default();
+    for i in 0..fz.len() {
+        let p = RangePoint {
+            fz: fz[i],
+            alpha: alpha[i],
+            kappa: kappa[i],
+            camber: camber[i],
+            pressure: pressure.get(i).copied(),
+        };
+        let left = r.left(&p);
+        if left.is_empty() {
+            out.within_slack += usize::from(r.past_an_end(&p));
+            continue;
+        }
+        out.points += 1;
+        for l in left {
+            let same = |f: &&mut FittedLeft| f.key == l.key && f.below == l.below;
+            match out.ranges.iter_mut().find(same) {
+                Some(f) => {
+                    f.points += 1;
+                    let further = if l.below {
+                        l.value < f.farthest
+                    } else {
+                        l.value > f.farthest
+                    };
+                    if further {
+                        f.farthest = l.value;
+                    }
+                }
+                None => out.ranges.push(FittedLeft {
+                    key: l.key,
+                    unit: l.unit,
+                    range: l.range,
+                    below: l.below,
+                    points: 1,
+                    farthest: l.value,
+                    first_line: lines.get(i).copied().unwrap_or(0),
+                    first_value: l.value,
+                }),
+            }
+        }
+    }
+    let order = ["fz", "alpha", "kappa", "camber", "pressure"];
+    let rank = |f: &FittedLeft| (order.iter().position(|k| *k == f.key), !f.below);
+    out.ranges.sort_by_key(rank);
+    out
+}
+
+impl FittedLeft {
+    /// The range in words, of `count` points.
+    pub fn line(&self, count: usize) -> String {
+        let unit = match self.unit {
+            "" => String::new(),
+            u => format!(" {u}"),
+        };
+        let [lo, hi] = self.range;
+        let (side, end) = match self.below {
+            true => ("below", lo),
+            false => ("above", hi),
+        };
+        let share = (self.farthest - end).abs() / (hi - lo);
+        format!(
+            "{} of {} {side} the rig data's {} = {}{unit} the tyre was fitted to (its [fitted_ranges]: {} to {}{unit}): evaluated by extrapolation, the farthest at {}{unit}, {} % of the range's span past its end; the first at line {}, {} = {}{unit}",
+            self.points,
+            plural(count, "point", "points"),
+            self.key,
+            readable(end, 4),
+            readable(lo, 4),
+            readable(hi, 4),
+            rounded(self.farthest, 6),
+            readable(100.0 * share, 3),
+            self.first_line,
+            self.key,
+            rounded(self.first_value, 6)
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Four points: inside, 0.5 N past the top load (within 1 % of the
+    /// span), 500 N past it, and at 0 N (off the road: never counted).
+    #[test]
+    fn points_within_the_slack_are_counted_apart_from_those_past_it() {
+        let r = FittedRanges {
+            fz: Some([2000.0, 6000.0]),
+            ..Default::default()
+        };
+        let fz = [4000.0, 6000.5, 6500.0, 0.0];
+        let zeros = [0.0; 4];
+        let b = beyond(&r, [&fz, &zeros, &zeros, &zeros], &[], &[2, 3, 4, 5]);
+        assert_eq!((b.points, b.within_slack), (1, 1));
+        let f = &b.ranges[0];
+        assert_eq!(
+            (f.key, f.below, f.points, f.first_line),
+            ("fz", false, 1, 4)
+        );
+        assert_eq!(f.farthest, 6500.0);
+    }
+}

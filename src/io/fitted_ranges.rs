@@ -96,16 +96,12 @@ impl FittedRanges {
 /// end is a point of the data, not an extrapolation).
 pub const SLACK: f64 = 0.01;
 
-/// Whether `v` lies past `[lo, hi]` by more than [`SLACK`] of its span:
-/// `Some(true)` below, `Some(false)` above, `None` within.
-pub fn past(range: [f64; 2], v: f64) -> Option<bool> {
-    past_by(range, v, SLACK)
-}
-
 /// Whether `v` lies past `[lo, hi]` by more than `share` of its span
-/// ([`past`]).
-fn past_by([lo, hi]: [f64; 2], v: f64, share: f64) -> Option<bool> {
-    let slack = share * (hi - lo);
+/// (a range open at one end, a `.tir`'s without `FZMIN`, has no slack):
+/// `Some(true)` below, `Some(false)` above, `None` within.
+pub fn past_by([lo, hi]: [f64; 2], v: f64, share: f64) -> Option<bool> {
+    let span = hi - lo;
+    let slack = if span.is_finite() { share * span } else { 0.0 };
     match (v < lo - slack, v > hi + slack) {
         (true, _) => Some(true),
         (_, true) => Some(false),
@@ -163,11 +159,12 @@ impl FittedRanges {
         ]
     }
 
-    /// Whether `p` lies outside a range by more than [`SLACK`] of its span
+    /// Whether `p` lies outside a range by more than `share` of its span
     /// (a load at or below 0, off the road, is never counted: no tyre
-    /// model gives a force there).
-    pub fn outside(&self, p: &RangePoint) -> bool {
-        !self.left(p).is_empty()
+    /// model gives a force there): [`SLACK`] for the ranges of rig data,
+    /// 0 for a `.tir`'s validity ranges, at whose ends the model clamps.
+    pub fn outside(&self, p: &RangePoint, share: f64) -> bool {
+        !self.left_by(p, share).is_empty()
     }
 
     /// The ranges `p` lies past by more than [`SLACK`] of their span, in
@@ -184,7 +181,7 @@ impl FittedRanges {
     }
 
     /// [`Self::left`] with `share` of a span as the slack.
-    fn left_by(&self, p: &RangePoint, share: f64) -> Vec<RangeLeft> {
+    pub fn left_by(&self, p: &RangePoint, share: f64) -> Vec<RangeLeft> {
         if p.fz <= 0.0 {
             return Vec::new();
         }
@@ -366,12 +363,13 @@ mod tests {
             pressure: None,
         };
         // kappa and camber have no range: not checked.
-        assert!(!r.outside(&p));
+        assert!(!r.outside(&p, SLACK));
         // Past an end by at most 1 % of the span: within the data.
-        assert!(!r.outside(&RangePoint { fz: 3025.0, ..p }));
-        assert!(r.outside(&RangePoint { fz: 3026.0, ..p }));
-        assert!(!r.outside(&RangePoint { alpha: -0.204, ..p }));
-        assert!(r.outside(&RangePoint { alpha: -0.21, ..p }));
+        assert!(!r.outside(&RangePoint { fz: 3025.0, ..p }, SLACK));
+        assert!(r.outside(&RangePoint { fz: 3025.0, ..p }, 0.0));
+        assert!(r.outside(&RangePoint { fz: 3026.0, ..p }, SLACK));
+        assert!(!r.outside(&RangePoint { alpha: -0.204, ..p }, SLACK));
+        assert!(r.outside(&RangePoint { alpha: -0.21, ..p }, SLACK));
         let left = r.left(&RangePoint {
             alpha: -0.21,
             pressure: Some(120e3),
@@ -379,11 +377,14 @@ mod tests {
         });
         let keys: Vec<_> = left.iter().map(|l| (l.key, l.value, l.below)).collect();
         assert_eq!(keys, [("alpha", -0.21, true), ("pressure", 120e3, false)]);
-        assert!(r.outside(&RangePoint {
-            pressure: Some(120e3),
-            ..p
-        }));
-        assert!(!r.outside(&RangePoint { fz: 0.0, ..p }));
+        assert!(r.outside(
+            &RangePoint {
+                pressure: Some(120e3),
+                ..p
+            },
+            SLACK
+        ));
+        assert!(!r.outside(&RangePoint { fz: 0.0, ..p }, 0.0));
         assert_eq!(
             r.text(),
             "fz 500.0 to 3000 N, alpha -0.2000 to 0.2000 rad, pressure 80000 to 100000 Pa"

@@ -127,6 +127,8 @@ pub enum Overshoot {
     Sideslip(f64),
     /// A measured run without `beta`: nothing tells the two apart.
     NoSideslip,
+    /// Tyres with no friction limit (linear ones): no grip to lose.
+    NoGripLimit,
 }
 
 /// [`applicability`] for tyres that grip to `grip` on this road (`μ·g`,
@@ -200,6 +202,9 @@ fn overshoot_words(percent: f64, speed: Option<f64>, evidence: Option<Overshoot>
         Some(Overshoot::Sideslip(beta)) if beta <= SLIDING_SIDESLIP => format!(
             "the yaw rate overshoots its steady value by {percent:.0} % with the sideslip within ±{:.1}° throughout, short of the 10° of a sliding car: no spin, but a lightly damped response (the yaw damping falls with speed{at}); {ringing}",
             beta.to_degrees()
+        ),
+        Some(Overshoot::NoGripLimit) => format!(
+            "the yaw rate overshoots its steady value by {percent:.0} % on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response (the yaw damping falls with speed{at}, and soft tyres lower it); {ringing}"
         ),
         Some(Overshoot::NoSideslip) => format!(
             "{spin}; or, at speed, a lightly damped response that never left the tyres' linear range: the run has no `beta` to tell them apart"

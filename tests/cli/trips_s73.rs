@@ -151,3 +151,27 @@ fn a_condition_the_fit_misses_beside_others_it_follows_is_warned_of() {
         String::from_utf8_lossy(&o.stdout)
     );
 }
+
+/// On linear tyres (no friction limit) a yaw rate overshooting by more
+/// than 100 % was said to be "a car losing and regaining grip or
+/// spinning": they have no grip to lose.
+#[test]
+fn an_overshoot_on_tyres_without_a_friction_limit_is_no_spin() {
+    let soft = "model = \"linear\"\ncornering_stiffness = 7000\n";
+    let fast = STEP.replace("speed = 22.2222", "speed = 40.0");
+    let dir = scenario(VEHICLE, soft, &fast);
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.contains("yaw-rate overshoot           136.9"), "{said}");
+    assert!(
+        said.contains("% on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response"),
+        "{said}"
+    );
+    assert!(!said.contains("spinning"), "{said}");
+}

@@ -35,7 +35,7 @@
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
-use crate::io::fitted_ranges::{past, FittedRanges, RangePoint};
+use crate::io::fitted_ranges::{past_by, FittedRanges, RangePoint, SLACK};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
@@ -173,6 +173,16 @@ pub(super) fn axle_friction(sc: &Scenario) -> Option<[f64; 2]> {
     let f = sc.model.front.friction_coefficient(0.5 * front, mu);
     let r = sc.model.rear.friction_coefficient(0.5 * rear, mu);
     (f.is_finite() && r.is_finite() && f > 0.0 && r > 0.0).then_some([f, r])
+}
+
+/// Whether neither axle's tyre has a friction limit (linear tyres): a
+/// yaw rate that overshoots on them is no car losing grip.
+pub(super) fn gripless(sc: &Scenario) -> bool {
+    let (front, rear) = sc.model.vehicle.static_axle_loads();
+    let mu = sc.integrator.friction;
+    let f = sc.model.front.friction_coefficient(0.5 * front, mu);
+    let r = sc.model.rear.friction_coefficient(0.5 * rear, mu);
+    f == f64::INFINITY && r == f64::INFINITY
 }
 
 /// The share of its grip the busier axle uses at row `k`: its lateral
@@ -429,6 +439,12 @@ fn beyond_fitted(
         ("rear", [&h.fz[2], &h.fz[3]], &h.alpha_rear)
     };
     let pressure = source.pressure();
+    // Rig data's ends are read with their scatter; a `.tir`'s are where
+    // the model clamps.
+    let share = match source {
+        RangeSource::Fitted => SLACK,
+        RangeSource::Tir { .. } => 0.0,
+    };
     let point = |fz: f64, alpha: f64| RangePoint {
         fz,
         alpha,
@@ -437,14 +453,18 @@ fn beyond_fitted(
         pressure: pressure.map(|p| p.0),
     };
     let rows: Vec<usize> = (0..h.len())
-        .filter(|&i| wheels.iter().any(|fz| r.outside(&point(fz[i], alpha[i]))))
+        .filter(|&i| {
+            wheels
+                .iter()
+                .any(|fz| r.outside(&point(fz[i], alpha[i]), share))
+        })
         .collect();
     if rows.is_empty() {
         return None;
     }
     // What left the ranges: the extent of the values beyond their own
     // range, over the rows outside.
-    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|r| past(r, v).is_some());
+    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|r| past_by(r, v, share).is_some());
     let extent = |x: &mut dyn Iterator<Item = f64>| {
         x.fold(None, |e: Option<(f64, f64)>, v| {
             Some(e.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))

@@ -140,7 +140,10 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             m,
             Some(sc.manoeuvre.speed(0.0)),
             grip.map(Grip::Tyres),
-            peak_share.map(Overshoot::GripUsed),
+            match peak_share {
+                Some(share) => Some(Overshoot::GripUsed(share)),
+                None => checks::gripless(&sc).then_some(Overshoot::NoGripLimit),
+            },
         )
     });
     warnings.extend(metrics.as_ref().and_then(StepMetrics::settling_warning));

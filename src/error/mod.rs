@@ -46,7 +46,9 @@ pub use reason::{BeyondSignal, Limit, ParamReason, PerLoad, ScheduleColumn, DYNA
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;
-pub use units::{PressureMeant, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP};
+pub use units::{
+    PressureMeant, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
+};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

@@ -223,6 +223,19 @@ pub enum UnitSlip {
         /// The file's median load, N.
         median: f64,
     },
+    /// A rig aligning moment more than [`MAX_RIG_ARM`] times its load: an
+    /// arm no tyre has (a moment in N·mm, or a spike).
+    #[error("column `mz`: {} N·m at fz {} N is {} m times the load, where a tyre's aligning moment is its pneumatic trail (a few centimetres) times a force within about twice the load: no tyre passes {MAX_RIG_ARM} m × (fz + a twentieth of the file's median load, {} N) = {} N·m; `mz` is in N·m (FORMATS.md): {}", Num(*value), Num(*fz), Num(*arm), Num(*median), Num(MAX_RIG_ARM * (fz + 0.05 * median)), arm_hint(*arm))]
+    RigMomentAboveLoad {
+        /// The moment, N·m.
+        value: f64,
+        /// The sample's load, N.
+        fz: f64,
+        /// The moment over that load plus a twentieth of the median, m.
+        arm: f64,
+        /// The file's median load, N.
+        median: f64,
+    },
     /// A rig column whose largest force, over a sweep that reaches
     /// `slip` (rad or slip ratio), is below [`MIN_RIG_GRIP`] of its load:
     /// forces in kN beside loads in N, or a column scaled down.
@@ -238,6 +251,22 @@ pub enum UnitSlip {
         slip: f64,
     },
 }
+
+/// The question a rig aligning moment of `arm` (m of its load) ends on:
+/// N·mm where a thousandth of it is a tyre's.
+fn arm_hint(arm: f64) -> &'static str {
+    if arm / 1000.0 <= MAX_RIG_ARM {
+        "is the column in N·mm? divide it by 1000"
+    } else {
+        "a spike of the logger, or a row in another unit?"
+    }
+}
+
+/// The largest aligning moment per unit load a rig sample may hold, m:
+/// `mz = t·fy` with a pneumatic trail `t` of a few centimetres (at most
+/// 0.25 m on any tyre, [`crate::tyre::sizes::MAX_TRAIL`] is twice that)
+/// and `|fy|` within twice the load; the Hoosier file's largest is 0.04 m.
+pub const MAX_RIG_ARM: f64 = 0.5;
 
 /// The question a rig force of `share` of its load ends on: kN where a
 /// thousand times it is a tyre's grip.

@@ -266,6 +266,9 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         errors.extend(check_friction(path, &c, column, values, &fz, median));
     }
     refuse_all(path, errors)?;
+    if let Some(mz) = &mz {
+        super::rig_rows::refuse_moments_beyond_any_arm(path, &c, mz, &fz, median)?;
+    }
     let sweeps = [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())];
     for (column, sweep) in sweeps {
         if let Some((slip, force)) = sweep {

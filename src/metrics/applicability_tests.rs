@@ -99,7 +99,10 @@ fn an_overshoot_beyond_a_spins_is_judged_by_the_grip_used_or_the_sideslip() {
         "{w:?}"
     );
     let w = said(Some(Overshoot::NoGripLimit));
-    assert!(w[0].contains("on tyres with no friction limit (linear): no grip to lose, no spin"), "{w:?}");
+    assert!(
+        w[0].contains("on tyres with no friction limit (linear): no grip to lose, no spin"),
+        "{w:?}"
+    );
     assert!(!w[0].contains("spinning"), "{w:?}");
     let w = said(Some(Overshoot::Sideslip(2.2_f64.to_radians())));
     assert!(

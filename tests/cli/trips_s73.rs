@@ -168,10 +168,46 @@ fn an_overshoot_on_tyres_without_a_friction_limit_is_no_spin() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
-    assert!(said.contains("yaw-rate overshoot           136.9"), "{said}");
+    assert!(
+        said.contains("yaw-rate overshoot           136.9"),
+        "{said}"
+    );
     assert!(
         said.contains("% on tyres with no friction limit (linear): no grip to lose, no spin, but a lightly damped linear response"),
         "{said}"
     );
     assert!(!said.contains("spinning"), "{said}");
+}
+
+/// The Hoosier file's `mz` multiplied by 1000 (N·mm) was fitted to a tyre
+/// whose trail is 25 m, written without a word, and `tyre-eval` then gave
+/// 34,578 N·m beside 1,338 N of force. A moment beyond 0.5 m times its
+/// load is refused at its row, N·mm named; the same file in N·m is read.
+#[test]
+fn an_aligning_moment_in_newton_millimetres_is_refused_at_its_row() {
+    let in_nm = super::trips_identify::rig(1.0);
+    let mut in_nmm = String::from("fz,alpha,fy,mz\n");
+    // The 2 kN sweep: at 6 kN a moment in N·mm passes 1e5, refused as
+    // beyond any rig's whatever the load.
+    for line in in_nm.lines().skip(1).filter(|l| l.starts_with("2000,")) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        in_nmm += &format!("{},{},{},{}\n", v[0], v[1], v[2], 1000.0 * v[3]);
+    }
+    let dir = scratch(&[("rig.csv", &in_nmm)]);
+    let out = dir.path().join("t.toml");
+    let o = super::trips_identify::identify_with(dir.path(), "pac89", &[], &out);
+    let e = refused(&o, &out);
+    // The first row: 2000 N at -0.2 rad, mz -39.9 N·m.
+    assert!(
+        e.contains("rig.csv:2:4: column `mz`: -39885.7 N·m at fz 2000 N is 18.9932 m times the load"),
+        "{e}"
+    );
+    assert!(
+        e.contains("is the column in N·mm? divide it by 1000"),
+        "{e}"
+    );
+    let dir = scratch(&[("rig.csv", &in_nm)]);
+    let o =
+        super::trips_identify::identify_with(dir.path(), "gim", &[], &dir.path().join("t.toml"));
+    assert!(o.status.success(), "{}", stderr(&o));
 }

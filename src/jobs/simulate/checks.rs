@@ -464,7 +464,8 @@ fn beyond_fitted(
     }
     // What left the ranges: the extent of the values beyond their own
     // range, over the rows outside.
-    let out_of = |range: Option<[f64; 2]>, v: f64| range.is_some_and(|r| past_by(r, v, share).is_some());
+    let out_of =
+        |range: Option<[f64; 2]>, v: f64| range.is_some_and(|r| past_by(r, v, share).is_some());
     let extent = |x: &mut dyn Iterator<Item = f64>| {
         x.fold(None, |e: Option<(f64, f64)>, v| {
             Some(e.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))

@@ -465,6 +465,16 @@ pub enum Limit {
         /// The value given, N/rad as read.
         given: f64,
     },
+    /// A simplified Magic Formula's stiffness per unit load `B·C·D`
+    /// (1/rad) below any tyre's
+    /// ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): `B` per degree.
+    #[error("the model's cornering stiffness per unit load is B·C·D = {} 1/rad, below any tyre's {} (a car tyre's is about 5–45): B is per radian: is it per degree? multiply it by 57.3 (B = {} per degree is {} per radian)", crate::format::readable(*.per_load, 3), super::number::Num(crate::tyre::sizes::MIN_CORNERING_PER_LOAD), super::number::Num(*.b), crate::format::rounded(b.to_degrees(), 5))]
+    MagicSimplePerDegree {
+        /// B·C·D, 1/rad as read.
+        per_load: f64,
+        /// B as read.
+        b: f64,
+    },
     /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too
     /// small: in kN/deg.
     #[error("PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg (the model's slip angle is in degrees, its force in N), so |a3| bounds it: no tyre's is below 15 N/deg (900 N/rad; a car tyre's a3 is 1000–3000 N/deg): is the value in kN/deg? multiply it by 1000")]

@@ -93,18 +93,32 @@ pub fn load_tyre_with_ranges(path: &Path) -> Result<(Tyre, Option<FittedRanges>)
 
 /// Reads a tyre file as [`load_tyre_with_ranges`] does, for an axle whose
 /// wheels each carry `wheel_load` (N) standing still: a tyre with no load
-/// of its own is checked at that one ([`Tyre::check_on_wheel`]), the error
+/// of its own is checked at that one ([`Tyre::check_at_load`]), the error
 /// at its key in its file.
 pub(crate) fn load_axle_tyre(
     path: &Path,
     wheel_load: f64,
 ) -> Result<(Tyre, Option<FittedRanges>), InputError> {
     let (tyre, ranges) = load_tyre_with_ranges(path)?;
-    if let Err(e) = tyre.check_on_wheel(wheel_load) {
-        let (src, _) = super::fitted_ranges::split(&TomlSource::read(path)?)?;
-        return Err(param_error(&src, None, e));
-    }
+    let load = (crate::tyre::sizes::STATIC_WHEEL_LOAD, wheel_load);
+    check_tyre_at_load(path, &tyre, load)?;
     Ok((tyre, ranges))
+}
+
+/// Checks the tyre of file `path` at a load it is used at
+/// ([`Tyre::check_at_load`]), the error at its key in its file.
+pub(crate) fn check_tyre_at_load(
+    path: &Path,
+    tyre: &Tyre,
+    load: crate::tyre::LoadNamed,
+) -> Result<(), InputError> {
+    match tyre.check_at_load(load) {
+        Ok(()) => Ok(()),
+        Err(e) => {
+            let (src, _) = super::fitted_ranges::split(&TomlSource::read(path)?)?;
+            Err(param_error(&src, None, e))
+        }
+    }
 }
 
 /// The static load on each wheel of the front and of the rear axle, N.

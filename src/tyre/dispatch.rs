@@ -132,10 +132,10 @@ impl Tyre {
         self.as_model().check_sizes()
     }
 
-    /// Checks the parameters against the static load on each wheel of its
-    /// axle, N ([`ModelParameters::check_on_wheel`]).
-    pub fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
-        self.as_model().check_on_wheel(wheel_load)
+    /// Checks the parameters against a load it is used at, N, with what
+    /// that load is ([`ModelParameters::check_at_load`]).
+    pub fn check_at_load(&self, load: super::LoadNamed) -> Result<(), ParamError> {
+        self.as_model().check_at_load(load)
     }
 
     /// Which parameters a lateral-force fit can identify from data with

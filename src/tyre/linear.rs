@@ -10,7 +10,7 @@
 //! Hoosier rig file).
 
 use super::{
-    LateralForceOf, LoadRange, Model, ModelParameters, Parameterised, SlipOf, SlipState,
+    LateralForceOf, LoadNamed, LoadRange, Model, ModelParameters, Parameterised, SlipOf, SlipState,
     TyreForces, TyreModel,
 };
 use crate::error::ParamError;
@@ -112,8 +112,8 @@ impl ModelParameters for Linear {
     /// Its stiffness per unit of the wheel's static load, at least any
     /// tyre's ([`super::sizes::cornering_per_load`]): 1000 typed for a car
     /// tyre's 1000 N/deg gave 50 N of force at 4 kN.
-    fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
-        let load = (super::sizes::STATIC_WHEEL_LOAD, wheel_load, false);
+    fn check_at_load(&self, load: LoadNamed) -> Result<(), ParamError> {
+        let load = (load.0, load.1, false);
         super::sizes::cornering_per_load("cornering_stiffness", self.cornering_stiffness, load)
     }
     fn scale_cornering_stiffness(&mut self, k: f64) {

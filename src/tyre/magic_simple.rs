@@ -111,6 +111,28 @@ impl ModelParameters for MagicSimple {
         // The inherent check above (inherent methods take precedence).
         MagicSimple::validate(self)
     }
+    /// The stiffness per unit load `B·C·D` at least any tyre's
+    /// ([`super::sizes::MIN_CORNERING_PER_LOAD`]): `B` typed per degree
+    /// (0.17 for 10 per radian) gave 0.23.
+    fn check_sizes(&self) -> Result<(), ParamError> {
+        let per_load = self.b * self.c * self.d;
+        let min = super::sizes::MIN_CORNERING_PER_LOAD;
+        match per_load >= min {
+            true => Ok(()),
+            false => Err(ParamError::new(
+                "b",
+                self.b,
+                crate::error::ParamReason::OutOfRange {
+                    lo: min / (self.c * self.d),
+                    hi: f64::INFINITY,
+                    why: crate::error::Limit::MagicSimplePerDegree {
+                        per_load,
+                        b: self.b,
+                    },
+                },
+            )),
+        }
+    }
     /// The stiffness `B·C·D·μ·Fz` is proportional to B; the peak `D·μ·Fz`
     /// does not depend on it.
     fn scale_cornering_stiffness(&mut self, k: f64) {

@@ -324,6 +324,9 @@ pub enum Block {
     Longitudinal,
 }
 
+/// A load a tyre is used at, N, with what it is in words.
+pub type LoadNamed = (&'static str, f64);
+
 /// What a tyre model knows about its own parameters beyond the forces: its
 /// checks, its parameter blocks with their bounds and which of them rig
 /// data can identify, its canonical form and how its cornering stiffness
@@ -347,13 +350,14 @@ pub trait ModelParameters: TyreModel + Parameterised {
         Ok(())
     }
 
-    /// Checks the parameters against the load standing on each wheel of
-    /// the axle it is fitted to, N: a model whose force does not depend on
-    /// the load (the linear tyre) has no load of its own for
-    /// [`Self::check_sizes`] to take its stiffness per unit load at, so a
-    /// car tyre's N/deg figure typed in N/rad is caught only here.
-    fn check_on_wheel(&self, wheel_load: f64) -> Result<(), ParamError> {
-        let _ = wheel_load;
+    /// Checks the parameters against a load the tyre is used at, N, named
+    /// by what it is (a vehicle's static wheel load, a points file's median
+    /// load): a model whose force does not depend on the load (the linear
+    /// tyre) has no load of its own for [`Self::check_sizes`] to take its
+    /// stiffness per unit load at, so a car tyre's N/deg figure typed in
+    /// N/rad is caught only here.
+    fn check_at_load(&self, load: LoadNamed) -> Result<(), ParamError> {
+        let _ = load;
         Ok(())
     }
 

@@ -140,6 +140,9 @@ pub(crate) fn cornering_per_load(
 pub(crate) const STATIC_WHEEL_LOAD: &str =
     "static load on each wheel of its axle (from the vehicle's mass, a and b)";
 
+/// The load a points file evaluates a tyre with no load of its own at.
+pub(crate) const POINTS_MEDIAN_LOAD: &str = "median load of the points evaluated";
+
 /// PAC89's `a3`, N/deg, by its size (`a3` and `a4` may both be negative,
 /// [`crate::tyre::ModelParameters::canonicalise`]): one below
 /// [`MIN_PAC89_A3`] is said as the kN/deg it likely is.

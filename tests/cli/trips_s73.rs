@@ -199,7 +199,9 @@ fn an_aligning_moment_in_newton_millimetres_is_refused_at_its_row() {
     let e = refused(&o, &out);
     // The first row: 2000 N at -0.2 rad, mz -39.9 N·m.
     assert!(
-        e.contains("rig.csv:2:4: column `mz`: -39885.7 N·m at fz 2000 N is 18.9932 m times the load"),
+        e.contains(
+            "rig.csv:2:4: column `mz`: -39885.7 N·m at fz 2000 N is 18.9932 m times the load"
+        ),
         "{e}"
     );
     assert!(
@@ -210,4 +212,58 @@ fn an_aligning_moment_in_newton_millimetres_is_refused_at_its_row() {
     let o =
         super::trips_identify::identify_with(dir.path(), "gim", &[], &dir.path().join("t.toml"));
     assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// `tyre-eval` of a linear tyre at `cornering_stiffness = 1000` (N/deg
+/// typed) gave 50 N at 4 kN silently, where `simulate` refuses it; a
+/// simplified Magic Formula with `b = 0.1745` (10 per radian typed per
+/// degree, B·C·D = 0.23 per unit load) ran in both. The linear tyre is
+/// checked at the points' median load, the simplified Magic Formula by
+/// its own B·C·D wherever it is read.
+#[test]
+fn tyre_eval_refuses_a_stiffness_per_degree_as_simulate_does() {
+    let points =
+        "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n2000,0,0.05,0,16.7\n6000,0,0.05,0,16.7\n";
+    let linear = "model = \"linear\"\ncornering_stiffness = 1000.0\n";
+    let simple = "model = \"magic-simple\"\nb = 0.1745\nc = 1.3\n";
+    let dir = scratch(&[("l.toml", linear), ("m.toml", simple), ("p.csv", points)]);
+    let eval = |tyre: &str| {
+        bin()
+            .args(["tyre-eval", tyre, "p.csv", "--out", "e.csv"])
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    let e = refused(&eval("l.toml"), &dir.path().join("e.csv"));
+    assert!(
+        e.contains("l.toml:2:23: `cornering_stiffness` = 1000: over the tyre's median load of the points evaluated = 4000 N that is 0.250 N/rad per N"),
+        "{e}"
+    );
+    let e = refused(&eval("m.toml"), &dir.path().join("e.csv"));
+    assert!(
+        e.contains("m.toml:2:5: `b` = 0.1745: must be greater than 1.15385: the model's cornering stiffness per unit load is B·C·D = 0.227 1/rad"),
+        "{e}"
+    );
+    assert!(
+        e.contains("(B = 0.1745 per degree is 9.9981 per radian)"),
+        "{e}"
+    );
+    let dir = scenario(VEHICLE, simple, STEP);
+    assert!(simulate_err(dir.path()).contains("`b` = 0.1745: must be greater than 1.15385"));
+    // The repository's own tyres are read.
+    for tyre in ["linear.toml", "magic_simple.toml"] {
+        let dir = scratch(&[("p.csv", points)]);
+        let o = bin()
+            .args([
+                "tyre-eval",
+                root().join("tyres").join(tyre).to_str().unwrap(),
+                "p.csv",
+                "--out",
+                "e.csv",
+            ])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{tyre}: {}", stderr(&o));
+    }
 }

@@ -78,6 +78,7 @@ use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
 use crate::report::{refuse_overwrite, write_columns};
 use crate::tyre::mf::MfInput;
+use crate::tyre::sizes::POINTS_MEDIAN_LOAD;
 use crate::tyre::PointForces;
 use crate::tyre::Tyre;
 use serde::Serialize;
@@ -376,6 +377,15 @@ pub fn run(
         pressure: &p,
     };
     let [fz, kappa, alpha, camber, speed] = given.columns;
+    // A tyre with no load of its own (linear) is checked at the points'.
+    let mut on_road: Vec<f64> = fz.iter().copied().filter(|f| *f > 0.0).collect();
+    if !on_road.is_empty() {
+        let load = (
+            POINTS_MEDIAN_LOAD,
+            crate::measured::clean::median(&mut on_road),
+        );
+        crate::io::check_tyre_at_load(tyre_path, &tyre, load)?;
+    }
     let f = tyre.evaluate_points(fz, kappa, alpha, camber, speed, &p);
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);

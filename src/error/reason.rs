@@ -465,6 +465,15 @@ pub enum Limit {
         /// The value given, N/rad as read.
         given: f64,
     },
+    /// A `.tir` file's `FZMAX` below its own `FNOMIN`, or `FZMIN` above
+    /// it: a range that leaves out the file's nominal load (one end in kN).
+    #[error("the load range FZMIN to FZMAX leaves out the file's own nominal load, FNOMIN = {} N, at which its coefficients are stated: {}", super::number::Num(*.fnomin), if *.max { "is FZMAX in kN? multiply it by 1000" } else { "is FZMIN in another unit than FNOMIN?" })]
+    MfLoadRangeWithoutNominal {
+        /// FNOMIN, N.
+        fnomin: f64,
+        /// The end is FZMAX (else FZMIN).
+        max: bool,
+    },
     /// A simplified Magic Formula's stiffness per unit load `B·C·D`
     /// (1/rad) below any tyre's
     /// ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): `B` per degree.

@@ -267,3 +267,39 @@ fn tyre_eval_refuses_a_stiffness_per_degree_as_simulate_does() {
         assert!(o.status.success(), "{tyre}: {}", stderr(&o));
     }
 }
+
+/// The MF 6.1 sample with `FZMAX = 18` (kN typed) evaluated a 4000 N
+/// point at 18 N, saying only that it lay above FZMAX. A load range that
+/// leaves out the file's own FNOMIN is refused at its line.
+#[test]
+fn a_tir_whose_load_range_leaves_out_its_nominal_load_is_refused_at_its_line() {
+    let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
+        .unwrap();
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n";
+    for (key, value, said) in [
+        ("FZMAX", "18", "`FZMAX`: 18 must be greater than 6752: the load range FZMIN to FZMAX leaves out the file's own nominal load, FNOMIN = 6752 N, at which its coefficients are stated: is FZMAX in kN? multiply it by 1000"),
+        ("FZMIN", "9000", "`FZMIN`: 9000 must lie in [0, 6752]: the load range FZMIN to FZMAX leaves out the file's own nominal load"),
+    ] {
+        let mut line_no = 0;
+        let edited: String = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| match l.split_whitespace().next() {
+                Some(k) if k == key => {
+                    line_no = i + 1;
+                    format!("{key} = {value}\n")
+                }
+                _ => format!("{l}\n"),
+            })
+            .collect();
+        let dir = scratch(&[("t.tir", &edited), ("p.csv", points)]);
+        let o = bin()
+            .args(["tyre-eval", "t.tir", "p.csv", "--out", "e.csv"])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let e = refused(&o, &dir.path().join("e.csv"));
+        let at = format!("t.tir:{line_no}:");
+        assert!(e.contains(&at) && e.contains(said), "{at} {said}\n{e}");
+    }
+}

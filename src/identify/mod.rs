@@ -144,6 +144,11 @@ pub struct ParameterReport {
     pub bounds: (f64, f64),
     /// Warning, if any.
     pub warning: Option<String>,
+    /// What the data leave of it unsettled where the fit hardly feels it
+    /// (a standard error past the value, an effect under 1 % of the
+    /// channel's RMS): said, not warned of.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
 /// The outcome of a fit.

@@ -39,6 +39,7 @@ pub(super) fn parameter_reports(
             effect_percent: None,
             bounds: (lo, hi),
             warning: None,
+            note: None,
         };
         if free[i] {
             let se = covariance
@@ -47,19 +48,23 @@ pub(super) fn parameter_reports(
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             rep.effect_percent = se.map(|_| 100.0 * spread.effect[k]);
-            rep.warning = warning(name, values[i], (lo, hi), se, &traded).map(|w| {
-                // A standard error past the value that the fit hardly
-                // feels is said as such: the rule that holds what the data
-                // do not determine passes it by (`undetermined.rs`).
-                let floor = 100.0 * EFFECT_FLOOR;
-                match rep.effect_percent {
-                    Some(e) if e < floor && se.is_some_and(|s| s > values[i].abs()) => format!(
-                        "{w}, but one standard error of it alone moves the fit by only {} % of the channel's RMS (under the {floor} % that would have it held): what it leaves unsettled the fit hardly shows",
+            rep.warning = warning(name, values[i], (lo, hi), se, &traded);
+            // A standard error past the value that the fit hardly feels
+            // is said as such, not warned of: the rule that holds what the
+            // data do not determine passes it by (`undetermined.rs`), and
+            // the staged Magic Formula fit does not flag it either.
+            let floor = 100.0 * EFFECT_FLOOR;
+            let inside = (lo..=hi).contains(&values[i]);
+            if let (Some(e), Some(s)) = (rep.effect_percent, se) {
+                if e < floor && s > values[i].abs() && inside && rep.warning.is_some() {
+                    rep.warning = None;
+                    rep.note = Some(format!(
+                        "its standard error {} is larger than its value, but one standard error of it alone moves the fit by only {} % of the channel's RMS (under the {floor} % that would have it held): left free, as what it leaves unsettled the fit hardly shows",
+                        readable(s, 3),
                         crate::format::decimals_or_digits(e, 1, 2)
-                    ),
-                    _ => w,
+                    ));
                 }
-            });
+            }
             k += 1;
         }
         parameters.push(rep);

@@ -279,14 +279,15 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
         .collect()
 }
 
-/// The warning on one fitted parameter, with its value.
+/// The warning on one fitted parameter, with its value, or else its
+/// note ([`ParameterReport::note`]), said.
 pub(crate) fn parameter_warning(p: &ParameterReport) -> Option<Note> {
-    let w = p.warning.as_deref()?;
-    Some(Note::warned(format!(
-        "{} = {}: {w}",
-        p.name,
-        crate::format::rounded(p.value, 4)
-    )))
+    let value = crate::format::rounded(p.value, 4);
+    match (p.warning.as_deref(), p.note.as_deref()) {
+        (Some(w), _) => Some(Note::warned(format!("{} = {value}: {w}", p.name))),
+        (None, Some(n)) => Some(Note::said(format!("{} = {value}: {n}", p.name))),
+        (None, None) => None,
+    }
 }
 
 impl SwarmReport {

@@ -303,3 +303,47 @@ fn a_tir_whose_load_range_leaves_out_its_nominal_load_is_refused_at_its_line() {
         assert!(e.contains(&at) && e.contains(said), "{at} {said}\n{e}");
     }
 }
+
+/// A Gim tyre evaluated past full sliding (α 0.3 and −0.5 rad at 4 kN)
+/// gives `mz` = 0 by its brush model, and `tyre-eval` said "the tyre has
+/// no aligning moment; its mz is not a prediction" of a tyre that gives
+/// 37.9 N·m at 0.05 rad. Zeros the tyre gives some of at small slip are
+/// its prediction; a file with no moment at all is still said.
+#[test]
+fn a_gim_tyres_zero_moment_past_full_sliding_is_its_prediction_not_a_missing_output() {
+    let slide = "fz,kappa,alpha,camber,speed\n4000,0,0.3,0,16.7\n4000,0,-0.5,0,16.7\n";
+    let dir = scratch(&[("p.csv", slide)]);
+    let gim = root().join("tyres/gim.toml");
+    let o = bin()
+        .args([
+            "tyre-eval",
+            gim.to_str().unwrap(),
+            "p.csv",
+            "--out",
+            "e.csv",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("no aligning moment"), "{}", stderr(&o));
+    let written = fs::read_to_string(dir.path().join("e.csv")).unwrap();
+    assert!(
+        written.contains("4000,0,0.3,0,16.7,0,4000,0\n"),
+        "{written}"
+    );
+    // A linear tyre with no trail gives none anywhere: said.
+    let lin = "model = \"linear\"\ncornering_stiffness = 60000\n";
+    let dir = scratch(&[("p.csv", slide), ("l.toml", lin)]);
+    let o = bin()
+        .args(["tyre-eval", "l.toml", "p.csv", "--out", "e.csv"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("mz = 0: the tyre has no aligning moment"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -251,8 +251,10 @@ impl ZeroOutput {
 
 /// The outputs `tyre` gives none of at the points `p` (outputs `f`): each
 /// exactly 0 at every point where a tyre that has it gives some, and at
-/// one at least. A slip ratio the model does not read (`unread`) is said
-/// there instead.
+/// one at least, and 0 too where [`gives_none`] looks (a Gim tyre's `mz`
+/// is 0 past full sliding by its brush model, a prediction, and it gives
+/// some at small slip: not said). A slip ratio the model does not read
+/// (`unread`) is said there instead.
 pub(crate) fn zero_outputs(
     tyre: &Tyre,
     p: &Points,
@@ -263,7 +265,7 @@ pub(crate) fn zero_outputs(
     [Output::Fx, Output::Mx, Output::My, Output::Mz]
         .into_iter()
         .filter(|o| !(*o == Output::Fx && kappa_unread))
-        .filter_map(|o| zero_output(o, tyre, p, f))
+        .filter_map(|o| zero_output(o, tyre, p, f).filter(|_| gives_none(tyre, o).is_some()))
         .collect()
 }
 

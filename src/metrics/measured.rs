@@ -234,6 +234,31 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
     }
 }
 
+/// Below this steady `r·l/(u·δ)` of a step, with [`LONGEST_WHEELBASE`],
+/// the step's yaw-rate gain is said as a steer likely larger than the
+/// road wheels': 0.19 of a neutral car's on a 2.7 m car, an understeer no
+/// car has below its limit (a 15:1 steering-wheel angle gives 0.12; the
+/// run's refusal below [`STEER_IN_DEGREES`] is kept for what no wheelbase
+/// explains).
+pub const SMALL_STEADY_GAIN: f64 = 0.35;
+
+/// The warning on a step whose steady yaw-rate gain at median speed `u`
+/// (m/s) is below [`SMALL_STEADY_GAIN`] of a neutral car's of the longest
+/// wheelbase: `diagnose`, which knows the car, refuses such a run.
+fn small_gain(m: &StepMetrics, u: f64) -> Option<String> {
+    let gain = m.yaw_rate_gain;
+    let ratio = gain * LONGEST_WHEELBASE / u;
+    (ratio > 0.0 && ratio < SMALL_STEADY_GAIN).then(|| {
+        format!(
+            "the steady yaw-rate gain, {} 1/s at {} m/s, is {} of a neutral car's even with a {LONGEST_WHEELBASE} m wheelbase ({} on a 2.7 m car): no car understeers so far below its limit; is `steer` a steering-wheel angle (divide it by the steering ratio) or in degrees? The metrics take it as the road-wheel angle in radians",
+            crate::format::readable(gain, 4),
+            crate::format::readable(u, 3),
+            crate::format::readable(ratio, 2),
+            crate::format::readable(ratio * 2.7 / LONGEST_WHEELBASE, 2)
+        )
+    })
+}
+
 /// Refuses a run whose steer the yaw rate it gives contradicts
 /// ([`steer_problem`], the vehicle's wheelbase not known). `diagnose`,
 /// which knows the car's wheelbase, also notes a yaw rate above three
@@ -461,6 +486,7 @@ pub fn measured_step_metrics(
         largest_sideslip,
     ));
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
+    warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
     warnings.extend(metrics.settling_warning());
     warnings.extend(filled_steady(&piece, settings.steady_window));
     if metrics.ay_steady.is_none() {

@@ -347,3 +347,45 @@ fn a_gim_tyres_zero_moment_past_full_sliding_is_its_prediction_not_a_missing_out
         stderr(&o)
     );
 }
+
+/// A synthetic 60 km/h step with its steer multiplied by 15 (a
+/// steering-wheel angle) was measured as a 17.8° road-wheel step of yaw
+/// gain 0.387 1/s without a word, where `diagnose` refuses the same run:
+/// `metrics` does not know the car, and at its longest wheelbase (5 m)
+/// the ratio, 0.12, passed the 0.1 that refuses a run. The step's steady
+/// gain below 0.35 of a neutral car's is now warned of; the run as
+/// logged is not.
+#[test]
+fn metrics_warns_of_a_steady_gain_no_car_has_as_a_steering_wheel_angle() {
+    let dir = tempfile::tempdir().unwrap();
+    let campaign = synth_campaign(dir.path(), "c", &["--seed", "1"]);
+    let run = campaign.join("runs/step_060kph_2ms2.csv");
+    let text = fs::read_to_string(&run).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let steer = header.split(',').position(|c| c == "steer").unwrap();
+    let mut wheel = format!("{header}\n");
+    for l in lines {
+        let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+        cells[steer] = format!("{}", 15.0 * cells[steer].parse::<f64>().unwrap());
+        wheel += &(cells.join(",") + "\n");
+    }
+    let x15 = dir.path().join("x15.csv");
+    fs::write(&x15, wheel).unwrap();
+    let said = |p: &Path| {
+        let o = run_metrics(p);
+        assert!(o.status.success(), "{}", stderr(&o));
+        String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o)
+    };
+    let w = said(&x15);
+    assert!(
+        w.contains("warning: the steady yaw-rate gain, 0.3870 1/s at 16.7 m/s, is 0.12 of a neutral car's even with a 5 m wheelbase"),
+        "{w}"
+    );
+    assert!(w.contains("is `steer` a steering-wheel angle"), "{w}");
+    assert!(!said(&run).contains("steady yaw-rate gain,"));
+}
+
+fn run_metrics(p: &Path) -> Output {
+    run(&["metrics", p.to_str().unwrap()])
+}

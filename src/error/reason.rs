@@ -427,7 +427,7 @@ pub enum Limit {
     #[error("tyres give a car at most about 15 m/s² (μ ≈ 1.5) of braking or driving")]
     MaxAx,
     /// The least overshoot a step's maximum must reach, % of the step.
-    #[error("a car's step response overshoots its steady state by far less than 100 %; a threshold beyond takes no maximum as an overshoot")]
+    #[error("the threshold is there to pass over the filter's and the noise's ringing (a few %); a well-damped car's step overshoots by tens of % (the standards' steps), and one beyond 100 % is warned of as a spin or a very lightly damped response, so a threshold beyond it would hide every overshoot worth measuring")]
     MinOvershoot,
     /// A parameter held at a value the user gives.
     #[error("no tyre model's parameter, in its file's units, lies beyond ±1e6 (a stiffness in N/rad of the largest tyres is below it); a value there stalls the fit")]

@@ -300,6 +300,9 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     let dir = campaign_folder(&v, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
     let e = fails_cleanly("diagnose", &dir.path().join("vehicle.toml"), dir.path());
     assert!(e.contains("a.csv is listed twice"), "{e}");
+    // At the second entry's line and column.
+    let at = format!("vehicle.toml:{}:24: the run ", VEHICLE.lines().count() + 3);
+    assert!(e.contains(&at), "{at}\n{e}");
     // A runs folder without a run says so.
     let dir = campaign_folder(VEHICLE, &[("notes.txt", String::from("no runs here"))]);
     let e = campaign_err(dir.path());

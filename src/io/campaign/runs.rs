@@ -116,13 +116,15 @@ pub(super) fn run_files(
             _ => p == q,
         };
         if let Some(q) = files[..i].iter().find(|q| same(q)) {
-            return Err(file_error(
-                file,
-                InputProblem::RunListedTwice {
-                    run: p.clone(),
-                    also: q.clone(),
-                },
-            ));
+            let problem = InputProblem::RunListedTwice {
+                run: p.clone(),
+                also: q.clone(),
+            };
+            // At its entry in `[runs] files` (the folder's files come after).
+            return Err(match i < run_spec.files.len() {
+                true => src.problem_at_key(&format!("runs.files[{i}]"), problem),
+                false => file_error(file, problem),
+            });
         }
     }
     if files.is_empty() {

@@ -477,12 +477,10 @@ pub enum Limit {
     /// A simplified Magic Formula's stiffness per unit load `B·C·D`
     /// (1/rad) below any tyre's
     /// ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): `B` per degree.
-    #[error("the model's cornering stiffness per unit load is B·C·D = {} 1/rad, below any tyre's {} (a car tyre's is about 5–45): B is per radian: is it per degree? multiply it by 57.3 (B = {} per degree is {} per radian)", crate::format::readable(*.per_load, 3), super::number::Num(crate::tyre::sizes::MIN_CORNERING_PER_LOAD), super::number::Num(*.b), crate::format::rounded(b.to_degrees(), 5))]
+    #[error("the model's cornering stiffness per unit load is B·C·D = {} 1/rad, below any tyre's {} (a car tyre's is about 5–45): B is per radian: is it per degree? multiply it by 57.3", crate::format::readable(*.per_load, 3), super::number::Num(crate::tyre::sizes::MIN_CORNERING_PER_LOAD))]
     MagicSimplePerDegree {
         /// B·C·D, 1/rad as read.
         per_load: f64,
-        /// B as read.
-        b: f64,
     },
     /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too
     /// small: in kN/deg.

@@ -125,10 +125,7 @@ impl ModelParameters for MagicSimple {
                 crate::error::ParamReason::OutOfRange {
                     lo: min / (self.c * self.d),
                     hi: f64::INFINITY,
-                    why: crate::error::Limit::MagicSimplePerDegree {
-                        per_load,
-                        b: self.b,
-                    },
+                    why: crate::error::Limit::MagicSimplePerDegree { per_load },
                 },
             )),
         }

@@ -283,6 +283,13 @@ pub enum InputProblem {
         /// The free radius, m.
         free: f64,
     },
+    /// A rig slip ratio beyond ±1 (a locked wheel is −1; rigs sweep to
+    /// about ±0.3): a column in percent.
+    #[error("column `kappa`: {} is beyond ±1 (a locked wheel's slip ratio is −1; a rig sweeps to about ±0.3): the slip ratio is a fraction (FORMATS.md); is the column in percent? divide it by 100", Num(*value))]
+    SlipRatioInPercent {
+        /// The slip ratio as read.
+        value: f64,
+    },
     /// An angle beyond what a tyre test in radians reaches.
     #[error("column `{column}`: {} rad is beyond ±{:.0}°: angles are in radians (FORMATS.md); is the column in degrees?", Num(*value), limit.to_degrees())]
     AngleInDegrees {

@@ -41,6 +41,7 @@ impl InputProblem {
             InputProblem::LoadNotCarried { .. } => "LoadNotCarried",
             InputProblem::PressureCarriesNoLoad { .. } => "PressureCarriesNoLoad",
             InputProblem::AngleInDegrees { .. } => "AngleInDegrees",
+            InputProblem::SlipRatioInPercent { .. } => "SlipRatioInPercent",
             InputProblem::NoSweep { .. } => "NoSweep",
             InputProblem::NoLateral => "NoLateral",
             InputProblem::NoLongitudinal => "NoLongitudinal",

@@ -465,19 +465,16 @@ pub enum Limit {
         /// The value given, N/rad as read.
         given: f64,
     },
-    /// A `.tir` file's `FZMAX` below its own `FNOMIN`, or `FZMIN` above
-    /// it: a range that leaves out the file's nominal load (one end in kN).
-    #[error("the load range FZMIN to FZMAX leaves out the file's own nominal load, FNOMIN = {} N, at which its coefficients are stated: {}", super::number::Num(*.fnomin), if *.max { "is FZMAX in kN? multiply it by 1000" } else { "is FZMIN in another unit than FNOMIN?" })]
-    MfLoadRangeWithoutNominal {
+    /// A `.tir` file's `FZMAX` below any tyre's largest load: in kN.
+    #[error("no tyre's largest load is below 100 N (a bicycle's), and this file's nominal load is FNOMIN = {} N: loads are in N after the file's [UNITS]: is FZMAX in kN? multiply it by 1000", super::number::Num(*.fnomin))]
+    MfFzmaxInKn {
         /// FNOMIN, N.
         fnomin: f64,
-        /// The end is FZMAX (else FZMIN).
-        max: bool,
     },
     /// A simplified Magic Formula's stiffness per unit load `B·C·D`
     /// (1/rad) below any tyre's
     /// ([`crate::tyre::sizes::MIN_CORNERING_PER_LOAD`]): `B` per degree.
-    #[error("the model's cornering stiffness per unit load is B·C·D = {} 1/rad, below any tyre's {} (a car tyre's is about 5–45): B is per radian: is it per degree? multiply it by 57.3", crate::format::readable(*.per_load, 3), super::number::Num(crate::tyre::sizes::MIN_CORNERING_PER_LOAD))]
+    #[error("the model's cornering stiffness per unit load is B·C·D = {} 1/rad, below any tyre's (a car tyre's is about 5–45, the softest truck tyre's about 7): B is per radian: is it per degree? multiply it by 57.3 (or is D, the peak friction, far below a road's?)", crate::format::readable(*.per_load, 3))]
     MagicSimplePerDegree {
         /// B·C·D, 1/rad as read.
         per_load: f64,

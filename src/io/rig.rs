@@ -229,6 +229,20 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             c.error_at(path, i, name, problem)
         }));
     }
+    // A slip ratio in percent reads as one past a locked wheel's.
+    let kappa = longitudinal
+        .as_ref()
+        .map(|l| l.0.as_slice())
+        .unwrap_or_default();
+    errors.extend(
+        kappa
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.abs() > 1.0)
+            .map(|(i, &value)| {
+                c.error_at(path, i, "kappa", InputProblem::SlipRatioInPercent { value })
+            }),
+    );
     let mz = c.take_optional("mz");
     let sized = [
         ("fz", Some(&fz), MAX_RIG_FORCE, "N"),

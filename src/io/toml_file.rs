@@ -564,12 +564,6 @@ impl TomlSource {
         }
     }
 
-    /// An error `problem` at key `key` of this file (`runs.files[1]`), or
-    /// of the whole file where the key is not written.
-    pub(crate) fn problem_at_key(&self, key: &str, problem: InputProblem) -> InputError {
-        self.located(self.key_span(key), problem)
-    }
-
     /// The line and column of byte `pos`.
     fn location(&self, pos: usize) -> Location {
         let (line, column) = line_col(&self.text, pos);
@@ -577,7 +571,7 @@ impl TomlSource {
     }
 
     /// An error at `span` of this file, or of the whole file without one.
-    fn located(&self, span: Option<Span>, problem: InputProblem) -> InputError {
+    pub(crate) fn located(&self, span: Option<Span>, problem: InputProblem) -> InputError {
         InputError::Invalid {
             path: self.path.clone(),
             at: span.map(|s| self.location(s.start)),

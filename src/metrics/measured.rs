@@ -236,21 +236,29 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
 
 /// Below this steady `r·l/(u·δ)` of a step, with [`LONGEST_WHEELBASE`],
 /// the step's yaw-rate gain is said as a steer likely larger than the
-/// road wheels': 0.19 of a neutral car's on a 2.7 m car, an understeer no
-/// car has below its limit (a 15:1 steering-wheel angle gives 0.12; the
+/// road wheels': 0.08 of a neutral car's on a 2.7 m car, an understeer
+/// gradient of about 11 times the car's `l/u²` (a linear car at 5°/g and
+/// 160 km/h gives 0.24; a 15:1 steering-wheel angle at 60 km/h 0.12; the
 /// run's refusal below [`STEER_IN_DEGREES`] is kept for what no wheelbase
 /// explains).
-pub const SMALL_STEADY_GAIN: f64 = 0.35;
+pub const SMALL_STEADY_GAIN: f64 = 0.15;
+
+/// The steady lateral acceleration below which a step is judged by its
+/// gain ([`SMALL_STEADY_GAIN`]), m/s²: ISO 7401's 4 m/s², below the limit
+/// where a ploughing car's gain falls with its front grip.
+pub const SMALL_GAIN_AY: f64 = 4.0;
 
 /// The warning on a step whose steady yaw-rate gain at median speed `u`
 /// (m/s) is below [`SMALL_STEADY_GAIN`] of a neutral car's of the longest
-/// wheelbase: `diagnose`, which knows the car, refuses such a run.
+/// wheelbase, at a steady lateral acceleration below [`SMALL_GAIN_AY`]:
+/// `diagnose`, which knows the car, refuses such a run.
 fn small_gain(m: &StepMetrics, u: f64) -> Option<String> {
     let gain = m.yaw_rate_gain;
     let ratio = gain * LONGEST_WHEELBASE / u;
-    (ratio > 0.0 && ratio < SMALL_STEADY_GAIN).then(|| {
+    let gentle = m.ay_steady.is_some_and(|ay| ay.abs() < SMALL_GAIN_AY);
+    (gentle && ratio > 0.0 && ratio < SMALL_STEADY_GAIN).then(|| {
         format!(
-            "the steady yaw-rate gain, {} 1/s at {} m/s, is {} of a neutral car's even with a {LONGEST_WHEELBASE} m wheelbase ({} on a 2.7 m car): no car understeers so far below its limit; is `steer` a steering-wheel angle (divide it by the steering ratio) or in degrees? The metrics take it as the road-wheel angle in radians",
+            "the steady yaw-rate gain, {} 1/s at {} m/s, is {} of a neutral car's even with a {LONGEST_WHEELBASE} m wheelbase ({} on a 2.7 m car): no car understeers so much at a steady ay under {SMALL_GAIN_AY} m/s²; is `steer` a steering-wheel angle (divide it by the steering ratio) or in degrees? The metrics take it as the road-wheel angle in radians",
             crate::format::readable(gain, 4),
             crate::format::readable(u, 3),
             crate::format::readable(ratio, 2),

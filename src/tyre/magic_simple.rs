@@ -115,6 +115,8 @@ impl ModelParameters for MagicSimple {
     /// ([`super::sizes::MIN_CORNERING_PER_LOAD`]): `B` typed per degree
     /// (0.17 for 10 per radian) gave 0.23.
     fn check_sizes(&self) -> Result<(), ParamError> {
+        // D is the peak friction: 100 gave 227 kN at 4 kN.
+        super::sizes::friction("d", self.d)?;
         let per_load = self.b * self.c * self.d;
         let min = super::sizes::MIN_CORNERING_PER_LOAD;
         match per_load >= min {

@@ -237,36 +237,6 @@ pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
     Ok(())
 }
 
-/// A `.tir`'s `FZMIN`…`FZMAX` (N) holds its `FNOMIN` (N): every public
-/// file's does (FZMAX 2–3 times FNOMIN); one end in kN leaves it out.
-pub(crate) fn load_range_holds_nominal(
-    limits: &crate::tyre::mf::MfLimits,
-    fnomin: f64,
-) -> Result<(), ParamError> {
-    let why = |max| Limit::MfLoadRangeWithoutNominal { fnomin, max };
-    if let Some(v) = limits.fz_max.filter(|v| *v < fnomin) {
-        let reason = ParamReason::OutOfRange {
-            lo: fnomin,
-            hi: f64::INFINITY,
-            why: why(true),
-        };
-        return Err(ParamError::new("FZMAX", v, reason));
-    }
-    match limits.fz_min.filter(|v| *v > fnomin) {
-        Some(v) => Err(ParamError::new(
-            "FZMIN",
-            v,
-            ParamReason::OutOfRange {
-                // Said as "lie in [0, FNOMIN]".
-                lo: -f64::MIN_POSITIVE,
-                hi: fnomin,
-                why: why(false),
-            },
-        )),
-        None => Ok(()),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -266,39 +266,42 @@ fn tyre_eval_refuses_a_stiffness_per_degree_as_simulate_does() {
 }
 
 /// The MF 6.1 sample with `FZMAX = 18` (kN typed) evaluated a 4000 N
-/// point at 18 N, saying only that it lay above FZMAX. A load range that
-/// leaves out the file's own FNOMIN is refused at its line.
+/// point at 18 N, saying only that it lay above FZMAX. A `FZMAX` below
+/// any tyre's largest load (100 N) is refused at its line; one below
+/// FNOMIN alone is not (a staged fit from a template keeps its FNOMIN).
 #[test]
-fn a_tir_whose_load_range_leaves_out_its_nominal_load_is_refused_at_its_line() {
+fn a_tir_whose_fzmax_is_in_kilonewtons_is_refused_at_its_line() {
     let text = fs::read_to_string(root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir"))
         .unwrap();
     let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n";
-    for (key, value, said) in [
-        ("FZMAX", "18", "`FZMAX`: 18 must be greater than 6752: the load range FZMIN to FZMAX leaves out the file's own nominal load, FNOMIN = 6752 N, at which its coefficients are stated: is FZMAX in kN? multiply it by 1000"),
-        ("FZMIN", "9000", "`FZMIN`: 9000 must lie in [0, 6752]: the load range FZMIN to FZMAX leaves out the file's own nominal load"),
-    ] {
-        let mut line_no = 0;
-        let edited: String = text
-            .lines()
+    let mut line_no = 0;
+    let with = |value: &str, line_no: &mut usize| -> String {
+        text.lines()
             .enumerate()
             .map(|(i, l)| match l.split_whitespace().next() {
-                Some(k) if k == key => {
-                    line_no = i + 1;
-                    format!("{key} = {value}\n")
+                Some("FZMAX") => {
+                    *line_no = i + 1;
+                    format!("FZMAX = {value}\n")
                 }
                 _ => format!("{l}\n"),
             })
-            .collect();
-        let dir = scratch(&[("t.tir", &edited), ("p.csv", points)]);
+            .collect()
+    };
+    let eval = |tir: &str| {
+        let dir = scratch(&[("t.tir", tir), ("p.csv", points)]);
         let o = bin()
             .args(["tyre-eval", "t.tir", "p.csv", "--out", "e.csv"])
             .current_dir(dir.path())
             .output()
             .unwrap();
-        let e = refused(&o, &dir.path().join("e.csv"));
-        let at = format!("t.tir:{line_no}:");
-        assert!(e.contains(&at) && e.contains(said), "{at} {said}\n{e}");
-    }
+        (o, dir)
+    };
+    let (o, dir) = eval(&with("18", &mut line_no));
+    let e = refused(&o, &dir.path().join("e.csv"));
+    let said = format!("t.tir:{line_no}:9: `FZMAX`: 18 must be greater than 100: no tyre's largest load is below 100 N (a bicycle's), and this file's nominal load is FNOMIN = 6752 N: loads are in N after the file's [UNITS]: is FZMAX in kN? multiply it by 1000");
+    assert!(e.contains(&said), "{said}\n{e}");
+    let (o, _dir) = eval(&with("2000", &mut line_no));
+    assert!(o.status.success(), "{}", stderr(&o));
 }
 
 /// A Gim tyre evaluated past full sliding (α 0.3 and −0.5 rad at 4 kN)
@@ -385,4 +388,63 @@ fn metrics_warns_of_a_steady_gain_no_car_has_as_a_steering_wheel_angle() {
 
 fn run_metrics(p: &Path) -> Output {
     run(&["metrics", p.to_str().unwrap()])
+}
+
+/// A second look (helper-76): the steering-wheel warning fired on a
+/// linear car of 5°/g understeer at 160 km/h (ratio 0.24) and a
+/// ploughing car at its limit; a simplified Magic Formula's `d = 100`
+/// gave 227 kN at 4 kN; a rig's slip ratio in percent was fitted.
+#[test]
+fn a_second_look_at_the_gain_warning_the_peak_friction_and_a_slip_ratio_in_percent() {
+    // The understeering linear car, simulated then measured.
+    let front = "model = \"linear\"\ncornering_stiffness = 36000\n";
+    let rear = "model = \"linear\"\ncornering_stiffness = 80000\n";
+    let step = "[manoeuvre]\nkind = \"step-steer\"\nspeed = 44.4\nsteer = 0.01\n";
+    let sc = format!("{VEHICLE}\n[tyres]\nfront = \"f.toml\"\nrear = \"r.toml\"\n\n{step}");
+    let dir = scratch(&[("scenario.toml", &sc), ("f.toml", front), ("r.toml", rear)]);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("scenario.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_metrics(&out.join("history.csv"));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o);
+    assert!(!said.contains("steering-wheel angle"), "{said}");
+
+    // D, the peak friction, past any road's.
+    let d100 = "model = \"magic-simple\"\nb = 10\nc = 1.3\nd = 100\n";
+    let dir = scratch(&[
+        ("m.toml", d100),
+        ("p.csv", "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n"),
+    ]);
+    let o = bin()
+        .args(["tyre-eval", "m.toml", "p.csv", "--out", "e.csv"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let e = refused(&o, &dir.path().join("e.csv"));
+    assert!(e.contains("m.toml:4:5: `d` = 100"), "{e}");
+
+    // A longitudinal rig file in percent of slip.
+    let mut rig = String::from("fz,kappa,fx\n");
+    for fz in [2000.0, 4000.0] {
+        for k in -10..=10 {
+            let kappa = 0.02 * f64::from(k);
+            let fx = fz * (1.6 * (14.0 * kappa).atan()).sin();
+            rig += &format!("{fz},{},{fx:.2}\n", 100.0 * kappa);
+        }
+    }
+    let dir = scratch(&[("rig.csv", &rig)]);
+    let out = dir.path().join("t.toml");
+    let o = super::trips_identify::identify_with(dir.path(), "pac89", &[], &out);
+    let e = refused(&o, &out);
+    assert!(
+        e.contains("rig.csv:2:2: column `kappa`: -20 is beyond ±1")
+            && e.contains("is the column in percent? divide it by 100"),
+        "{e}"
+    );
 }

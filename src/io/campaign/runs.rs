@@ -122,7 +122,7 @@ pub(super) fn run_files(
             };
             // At its entry in `[runs] files` (the folder's files come after).
             return Err(match i < run_spec.files.len() {
-                true => src.problem_at_key(&format!("runs.files[{i}]"), problem),
+                true => src.located(src.key_span(&format!("runs.files[{i}]")), problem),
                 false => file_error(file, problem),
             });
         }

@@ -459,11 +459,11 @@ impl ModelParameters for MagicFormula {
         // The inherent check above (inherent methods take precedence).
         MagicFormula::validate(self)
     }
-    /// The coefficients' sizes, then the load range against FNOMIN: a
-    /// `FZMAX = 18` (kN) clamped every load to 18 N.
+    /// The coefficients' sizes, then `FZMAX`'s: `FZMAX = 18` (kN)
+    /// clamped every load to 18 N.
     fn check_sizes(&self) -> Result<(), ParamError> {
         crate::tyre::sizes::magic_formula(&self.coefficients)?;
-        crate::tyre::sizes::load_range_holds_nominal(&self.limits, self.coefficients.FNOMIN)
+        self.limits.fz_max_in_newtons(self.coefficients.FNOMIN)
     }
     /// `Kyα` is proportional to its scaling factor `λ_Kyα`.
     fn scale_cornering_stiffness(&mut self, k: f64) {

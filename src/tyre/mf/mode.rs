@@ -19,7 +19,7 @@
 //! mirrored). Units: N, rad, Pa.
 
 use super::{AlphaStar, MagicFormula};
-use crate::error::{ModeDigit, ModeError};
+use crate::error::{ModeDigit, ModeError, ParamError};
 use serde::{Deserialize, Serialize};
 
 /// One of MFeval's `useMode` settings the crate evaluates.
@@ -119,6 +119,29 @@ pub struct MfLimits {
     pub pressure_min: Option<f64>,
     /// `PRESMAX`, Pa.
     pub pressure_max: Option<f64>,
+}
+
+impl MfLimits {
+    /// Ok unless `FZMAX` lies below any tyre's largest load (100 N): a
+    /// file's `FZMAX = 18`, typed in kN, clamped every load to 18 N. (A
+    /// `FZMAX` below `FNOMIN` alone is no slip: a staged fit from a
+    /// template keeps the template's `FNOMIN` above the loads it had.)
+    pub(crate) fn fz_max_in_newtons(&self, fnomin: f64) -> Result<(), ParamError> {
+        use crate::error::{Limit, ParamReason};
+        let least = crate::tyre::sizes::TYRE_LOAD.0;
+        match self.fz_max.filter(|v| *v < least) {
+            Some(v) => Err(ParamError::new(
+                "FZMAX",
+                v,
+                ParamReason::OutOfRange {
+                    lo: least,
+                    hi: f64::INFINITY,
+                    why: Limit::MfFzmaxInKn { fnomin },
+                },
+            )),
+            None => Ok(()),
+        }
+    }
 }
 
 /// `x` saturated to `[lo, hi]` (either bound may be absent).

@@ -29,12 +29,7 @@ fn a_linear_tyres_stiffness_in_n_per_degree_is_refused_at_the_cars_wheel_load() 
         &fs::read_to_string(root().join("tyres/linear.toml")).unwrap(),
         STEP,
     );
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let o = simulate_in(dir.path());
     assert!(o.status.success(), "{}", stderr(&o));
 
     // A campaign's one tyre file is checked at the heavier wheel (the
@@ -76,11 +71,7 @@ fn a_point_a_hair_past_the_fitted_ranges_is_not_an_extrapolation() {
                   6041,0,0.1,0,20\n\
                   6500,0,0.1,0,20\n";
     let dir = scratch(&[("t.toml", &tyre), ("p.csv", points)]);
-    let o = bin()
-        .args(["tyre-eval", "t.toml", "p.csv", "--out", "e.csv"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let o = tyre_eval_in(dir.path(), "t.toml");
     assert!(o.status.success(), "{}", stderr(&o));
     let e = stderr(&o);
     let above = "warning: 2 of 4 points above the rig data's fz = 6000 N the tyre was fitted to (its [fitted_ranges]: 2000 to 6000 N): evaluated by extrapolation, the farthest at 6500 N, 12.5 % of the range's span past its end; the first at line 4, fz = 6041 N";
@@ -160,12 +151,7 @@ fn an_overshoot_on_tyres_without_a_friction_limit_is_no_spin() {
     let soft = "model = \"linear\"\ncornering_stiffness = 7000\n";
     let fast = STEP.replace("speed = 22.2222", "speed = 40.0");
     let dir = scenario(VEHICLE, soft, &fast);
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let o = simulate_in(dir.path());
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
     assert!(
@@ -227,19 +213,18 @@ fn tyre_eval_refuses_a_stiffness_per_degree_as_simulate_does() {
     let linear = "model = \"linear\"\ncornering_stiffness = 1000.0\n";
     let simple = "model = \"magic-simple\"\nb = 0.1745\nc = 1.3\n";
     let dir = scratch(&[("l.toml", linear), ("m.toml", simple), ("p.csv", points)]);
-    let eval = |tyre: &str| {
-        bin()
-            .args(["tyre-eval", tyre, "p.csv", "--out", "e.csv"])
-            .current_dir(dir.path())
-            .output()
-            .unwrap()
-    };
-    let e = refused(&eval("l.toml"), &dir.path().join("e.csv"));
+    let e = refused(
+        &tyre_eval_in(dir.path(), "l.toml"),
+        &dir.path().join("e.csv"),
+    );
     assert!(
         e.contains("l.toml:2:23: `cornering_stiffness` = 1000: over the tyre's median load of the points evaluated = 4000 N that is 0.250 N/rad per N"),
         "{e}"
     );
-    let e = refused(&eval("m.toml"), &dir.path().join("e.csv"));
+    let e = refused(
+        &tyre_eval_in(dir.path(), "m.toml"),
+        &dir.path().join("e.csv"),
+    );
     assert!(
         e.contains("m.toml:2:5: `b` = 0.1745: must be greater than 1.15385: the model's cornering stiffness per unit load is B·C·D = 0.227 1/rad"),
         "{e}"
@@ -250,17 +235,10 @@ fn tyre_eval_refuses_a_stiffness_per_degree_as_simulate_does() {
     // The repository's own tyres are read.
     for tyre in ["linear.toml", "magic_simple.toml"] {
         let dir = scratch(&[("p.csv", points)]);
-        let o = bin()
-            .args([
-                "tyre-eval",
-                root().join("tyres").join(tyre).to_str().unwrap(),
-                "p.csv",
-                "--out",
-                "e.csv",
-            ])
-            .current_dir(dir.path())
-            .output()
-            .unwrap();
+        let o = tyre_eval_in(
+            dir.path(),
+            root().join("tyres").join(tyre).to_str().unwrap(),
+        );
         assert!(o.status.success(), "{tyre}: {}", stderr(&o));
     }
 }
@@ -289,11 +267,7 @@ fn a_tir_whose_fzmax_is_in_kilonewtons_is_refused_at_its_line() {
     };
     let eval = |tir: &str| {
         let dir = scratch(&[("t.tir", tir), ("p.csv", points)]);
-        let o = bin()
-            .args(["tyre-eval", "t.tir", "p.csv", "--out", "e.csv"])
-            .current_dir(dir.path())
-            .output()
-            .unwrap();
+        let o = tyre_eval_in(dir.path(), "t.tir");
         (o, dir)
     };
     let (o, dir) = eval(&with("18", &mut line_no));
@@ -314,17 +288,7 @@ fn a_gim_tyres_zero_moment_past_full_sliding_is_its_prediction_not_a_missing_out
     let slide = "fz,kappa,alpha,camber,speed\n4000,0,0.3,0,16.7\n4000,0,-0.5,0,16.7\n";
     let dir = scratch(&[("p.csv", slide)]);
     let gim = root().join("tyres/gim.toml");
-    let o = bin()
-        .args([
-            "tyre-eval",
-            gim.to_str().unwrap(),
-            "p.csv",
-            "--out",
-            "e.csv",
-        ])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let o = tyre_eval_in(dir.path(), gim.to_str().unwrap());
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!stderr(&o).contains("no aligning moment"), "{}", stderr(&o));
     let written = fs::read_to_string(dir.path().join("e.csv")).unwrap();
@@ -335,11 +299,7 @@ fn a_gim_tyres_zero_moment_past_full_sliding_is_its_prediction_not_a_missing_out
     // A linear tyre with no trail gives none anywhere: said.
     let lin = "model = \"linear\"\ncornering_stiffness = 60000\n";
     let dir = scratch(&[("p.csv", slide), ("l.toml", lin)]);
-    let o = bin()
-        .args(["tyre-eval", "l.toml", "p.csv", "--out", "e.csv"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let o = tyre_eval_in(dir.path(), "l.toml");
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(
         stderr(&o).contains("mz = 0: the tyre has no aligning moment"),
@@ -403,12 +363,7 @@ fn a_second_look_at_the_gain_warning_the_peak_friction_and_a_slip_ratio_in_perce
     let sc = format!("{VEHICLE}\n[tyres]\nfront = \"f.toml\"\nrear = \"r.toml\"\n\n{step}");
     let dir = scratch(&[("scenario.toml", &sc), ("f.toml", front), ("r.toml", rear)]);
     let out = dir.path().join("out");
-    let o = run(&[
-        "simulate",
-        dir.path().join("scenario.toml").to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = simulate_in(dir.path());
     assert!(o.status.success(), "{}", stderr(&o));
     let o = run_metrics(&out.join("history.csv"));
     assert!(o.status.success(), "{}", stderr(&o));
@@ -421,11 +376,7 @@ fn a_second_look_at_the_gain_warning_the_peak_friction_and_a_slip_ratio_in_perce
         ("m.toml", d100),
         ("p.csv", "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,16.7\n"),
     ]);
-    let o = bin()
-        .args(["tyre-eval", "m.toml", "p.csv", "--out", "e.csv"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let o = tyre_eval_in(dir.path(), "m.toml");
     let e = refused(&o, &dir.path().join("e.csv"));
     assert!(e.contains("m.toml:4:5: `d` = 100"), "{e}");
 
@@ -447,4 +398,25 @@ fn a_second_look_at_the_gain_warning_the_peak_friction_and_a_slip_ratio_in_perce
             && e.contains("is the column in percent? divide it by 100"),
         "{e}"
     );
+}
+
+/// Runs `tyre-eval tyre p.csv --out e.csv` in `dir`.
+fn tyre_eval_in(dir: &Path, tyre: &str) -> Output {
+    bin()
+        .args(["tyre-eval", tyre, "p.csv", "--out", "e.csv"])
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+/// Runs `simulate dir/scenario.toml --out dir/out`.
+fn simulate_in(dir: &Path) -> Output {
+    let scenario = dir.join("scenario.toml");
+    let out = dir.join("out");
+    run(&[
+        "simulate",
+        scenario.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
 }

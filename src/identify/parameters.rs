@@ -49,27 +49,47 @@ pub(super) fn parameter_reports(
             rep.std_error = se;
             rep.effect_percent = se.map(|_| 100.0 * spread.effect[k]);
             rep.warning = warning(name, values[i], (lo, hi), se, &traded);
-            // A standard error past the value that the fit hardly feels
-            // is said as such, not warned of: the rule that holds what the
-            // data do not determine passes it by (`undetermined.rs`), and
-            // the staged Magic Formula fit does not flag it either.
-            let floor = 100.0 * EFFECT_FLOOR;
-            let inside = (lo..=hi).contains(&values[i]);
-            if let (Some(e), Some(s)) = (rep.effect_percent, se) {
-                if e < floor && s > values[i].abs() && inside && rep.warning.is_some() {
-                    rep.warning = None;
-                    rep.note = Some(format!(
-                        "its standard error {} is larger than its value, but one standard error of it alone moves the fit by only {} % of the channel's RMS (under the {floor} % that would have it held): left free, as what it leaves unsettled the fit hardly shows",
-                        readable(s, 3),
-                        crate::format::decimals_or_digits(e, 1, 2)
-                    ));
-                }
-            }
+            hardly_felt(&mut rep);
             k += 1;
         }
         parameters.push(rep);
     }
     parameters
+}
+
+/// A warned parameter `rep` whose standard error passes its value but
+/// moves the fit by under [`EFFECT_FLOOR`] of the channel's RMS: inside
+/// its box, said as a note, not warned of (the rule that holds what the
+/// data do not determine passes it by, `undetermined.rs`, and the staged
+/// Magic Formula fit does not flag it either); past its box, the warning
+/// stands with the effect added.
+fn hardly_felt(rep: &mut ParameterReport) {
+    let floor = 100.0 * EFFECT_FLOOR;
+    let (Some(e), Some(s)) = (rep.effect_percent, rep.std_error) else {
+        return;
+    };
+    if e >= floor || s <= rep.value.abs() {
+        return;
+    }
+    let effect = format!(
+        "one standard error of it alone moves the fit by only {} % of the channel's RMS (under the {floor} % that would have it held)",
+        crate::format::decimals_or_digits(e, 1, 2)
+    );
+    let (lo, hi) = rep.bounds;
+    match (rep.warning.take(), (lo..=hi).contains(&rep.value)) {
+        (Some(_), true) => {
+            rep.note = Some(format!(
+                "its standard error {} is larger than its value, but {effect}: left free, as what it leaves unsettled the fit hardly shows",
+                readable(s, 3)
+            ));
+        }
+        (Some(w), false) => {
+            rep.warning = Some(format!(
+                "{w}, but {effect}: what it leaves unsettled the fit hardly shows"
+            ));
+        }
+        (None, _) => {}
+    }
 }
 
 /// The free parameters of `channel` that the covariance leaves without a

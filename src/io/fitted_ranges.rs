@@ -174,12 +174,6 @@ impl FittedRanges {
         self.left_by(p, SLACK)
     }
 
-    /// Whether `p` (on the road) lies past some range's end at all, by
-    /// [`SLACK`] of its span or less included.
-    pub fn past_an_end(&self, p: &RangePoint) -> bool {
-        !self.left_by(p, 0.0).is_empty()
-    }
-
     /// [`Self::left`] with `share` of a span as the slack.
     pub fn left_by(&self, p: &RangePoint, share: f64) -> Vec<RangeLeft> {
         if p.fz <= 0.0 {

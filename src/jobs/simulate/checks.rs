@@ -165,24 +165,27 @@ fn largest_beyond(x: &[f64], limit: f64) -> Option<(f64, usize, usize)> {
 }
 
 /// The peak friction coefficient of the front and rear tyres at static
-/// load on this road (friction scale included), where both have one (a
-/// linear tyre has no limit).
-pub(super) fn axle_friction(sc: &Scenario) -> Option<[f64; 2]> {
+/// load on this road (friction scale included); infinite for a tyre with
+/// no limit (linear).
+fn static_friction(sc: &Scenario) -> [f64; 2] {
     let (front, rear) = sc.model.vehicle.static_axle_loads();
     let mu = sc.integrator.friction;
-    let f = sc.model.front.friction_coefficient(0.5 * front, mu);
-    let r = sc.model.rear.friction_coefficient(0.5 * rear, mu);
+    [
+        sc.model.front.friction_coefficient(0.5 * front, mu),
+        sc.model.rear.friction_coefficient(0.5 * rear, mu),
+    ]
+}
+
+/// [`static_friction`] where both tyres have one.
+pub(super) fn axle_friction(sc: &Scenario) -> Option<[f64; 2]> {
+    let [f, r] = static_friction(sc);
     (f.is_finite() && r.is_finite() && f > 0.0 && r > 0.0).then_some([f, r])
 }
 
 /// Whether neither axle's tyre has a friction limit (linear tyres): a
 /// yaw rate that overshoots on them is no car losing grip.
 pub(super) fn gripless(sc: &Scenario) -> bool {
-    let (front, rear) = sc.model.vehicle.static_axle_loads();
-    let mu = sc.integrator.friction;
-    let f = sc.model.front.friction_coefficient(0.5 * front, mu);
-    let r = sc.model.rear.friction_coefficient(0.5 * rear, mu);
-    f == f64::INFINITY && r == f64::INFINITY
+    static_friction(sc) == [f64::INFINITY; 2]
 }
 
 /// The share of its grip the busier axle uses at row `k`: its lateral

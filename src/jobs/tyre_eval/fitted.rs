@@ -65,7 +65,8 @@ pub(crate) fn beyond(
         };
         let left = r.left(&p);
         if left.is_empty() {
-            out.within_slack += usize::from(r.past_an_end(&p));
+            // Past an end at all, by no more than the slack.
+            out.within_slack += usize::from(r.outside(&p, 0.0));
             continue;
         }
         out.points += 1;

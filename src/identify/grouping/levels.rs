@@ -161,7 +161,7 @@ pub fn levels(variable: Variable, values: &[f64], resolution: f64) -> Levels {
     let mut start = 0;
     for i in 1..=sorted.len() {
         if i == sorted.len() || sorted[i] - sorted[i - 1] > separation {
-            split_valleys(&sorted[start..i], separation, &mut out);
+            split_valleys(&sorted[start..i], separation, resolution, &mut out);
             start = i;
         }
     }
@@ -189,7 +189,7 @@ fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
 }
 
 /// Splits one gap-separated group at density valleys and records its levels.
-fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
+fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Levels) {
     let (lo, hi) = (group[0], group[group.len() - 1]);
     let push = |out: &mut Levels, part: &[f64]| {
         if part.len() < 3 {
@@ -204,7 +204,12 @@ fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
         }
     };
     if hi - lo <= 8.0 * separation {
-        push(out, group);
+        let parts = split_own_scale(group, resolution);
+        let kept: usize = parts.iter().map(|r| r.len()).sum();
+        out.transition_samples += group.len() - kept;
+        for r in parts {
+            push(out, &group[r]);
+        }
         return;
     }
     let nb = ((hi - lo) / separation).ceil() as usize;
@@ -228,6 +233,67 @@ fn split_valleys(group: &[f64], separation: f64, out: &mut Levels) {
         push(out, &group[i..j]);
         i = j;
     }
+}
+
+/// Bins across a group no wider than eight separations when its valleys
+/// are looked for on its own scale.
+const OWN_SCALE_BINS: usize = 32;
+/// Share of a group's samples each side of a valley must hold for the
+/// valley to split it on its own scale.
+const OWN_SCALE_MODE: f64 = 0.05;
+
+/// Splits `group` (sorted, spanning at most eight separations) at empty
+/// valleys of its own histogram, `OWN_SCALE_BINS` bins across it: a rig's
+/// load varies with slip along a sweep by ±150 N, and a file keeping every
+/// fourth row makes consecutive samples differ by that much, so the noise
+/// read from them (53 N for the Hoosier file, 16 N at full rate) sets a
+/// separation that joins its five loads 560 N apart into one group. Two
+/// levels stay apart where a run of bins below the valley count lies
+/// at least `resolution` wide (no gap of a quantised channel's steps) lies
+/// between parts each holding `OWN_SCALE_MODE` of the group; the valley's
+/// samples are transitions, a level's tails stay with it (a single level,
+/// however noisy, has no interior valley and is kept whole). Returns the
+/// parts as index ranges of `group`.
+fn split_own_scale(group: &[f64], resolution: f64) -> Vec<std::ops::Range<usize>> {
+    let (lo, hi) = (group[0], group[group.len() - 1]);
+    let keep = (group.len() / 100).max(3);
+    if hi <= lo || group.len() < 2 * OWN_SCALE_BINS {
+        return vec![0..group.len()];
+    }
+    let width = (hi - lo) / OWN_SCALE_BINS as f64;
+    let bin = |v: f64| (((v - lo) / width) as usize).min(OWN_SCALE_BINS - 1);
+    let mut counts = [0usize; OWN_SCALE_BINS];
+    for &v in group {
+        counts[bin(v)] += 1;
+    }
+    // Valleys: maximal runs of sparse bins with dense bins on both sides.
+    let dense: Vec<usize> = (0..OWN_SCALE_BINS).filter(|&b| counts[b] >= keep).collect();
+    let valleys: Vec<(usize, usize)> = dense
+        .windows(2)
+        .filter(|w| (w[1] - w[0] - 1) as f64 * width >= resolution)
+        .map(|w| (w[0] + 1, w[1] - 1))
+        .collect();
+    // Cut only where each side of every cut keeps a mode's share.
+    let least = (OWN_SCALE_MODE * group.len() as f64).ceil() as usize;
+    let mut cuts: Vec<(usize, usize)> = Vec::new();
+    let mut since = 0;
+    for &(a, b) in &valleys {
+        let before: usize = counts[since..a].iter().sum();
+        let after: usize = counts[b + 1..].iter().sum();
+        if before >= least && after >= least {
+            cuts.push((a, b));
+            since = b + 1;
+        }
+    }
+    let mut parts = Vec::with_capacity(cuts.len() + 1);
+    let mut start = 0;
+    for &(a, b) in &cuts {
+        let end = start + group[start..].partition_point(|&v| bin(v) < a);
+        parts.push(start..end);
+        start = end + group[end..].partition_point(|&v| bin(v) <= b);
+    }
+    parts.push(start..group.len());
+    parts
 }
 
 #[cfg(test)]

@@ -16,7 +16,12 @@
 //!   whenever the data separate them. A group wider than `8·max(resolution,
 //!   6 σ)` is then split at density valleys (a histogram of bins of that
 //!   width; bins holding less than 1 % of the group are *transitions*), so a
-//!   ramp between two levels does not merge them. A level is kept whatever
+//!   ramp between two levels does not merge them. A narrower group is split
+//!   on its own scale (32 bins across it) where a valley at least the
+//!   resolution wide lies between parts each holding 5 % of it: a file
+//!   keeping every fourth row of a rig's sweep makes consecutive loads
+//!   differ by the load's travel with slip, and the noise read from them
+//!   would otherwise join levels 560 N apart. A level is kept whatever
 //!   its share of the file; fewer than three samples apart from the rest are
 //!   not a level but ramp or isolated samples, counted as transitions.
 //! - **Selection** of one load, pressure or camber level: an error when the

@@ -396,4 +396,70 @@ mod tests {
             l.levels.iter().map(|q| q.samples).sum::<usize>() + l.transition_samples;
         assert_eq!(accounted, v.len());
     }
+
+    /// A rig's sweep: five loads 560 N apart, each carried through slip
+    /// sweeps that move it ±150 N (consecutive samples about 16 N apart, as
+    /// on the Hoosier file), 40-sample ramps between them; then the same
+    /// file keeping every 2nd to 16th row. Every rate finds the five loads
+    /// (keeping every 4th merged them into one: its consecutive samples,
+    /// about 60 N apart, read as noise).
+    #[test]
+    fn a_sweep_kept_every_few_rows_still_finds_its_loads() {
+        let mut rng = 7u64;
+        let mut noise = || {
+            rng = rng
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((rng >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 20.0
+        };
+        let loads = [534.0, 1095.0, 1656.0, 2193.0, 2751.0];
+        let mut v = Vec::new();
+        for (k, f) in loads.iter().enumerate() {
+            for i in 0..6000 {
+                let sweep = (i as f64 * 0.15).sin();
+                v.push(f + 150.0 * (sweep.abs() - std::f64::consts::FRAC_1_SQRT_2) + noise());
+            }
+            if let Some(next) = loads.get(k + 1) {
+                v.extend((0..40).map(|i| f + (next - f) * f64::from(i) / 40.0));
+            }
+        }
+        for every in [1, 2, 4, 8, 16] {
+            let kept: Vec<f64> = v.iter().step_by(every).copied().collect();
+            let l = levels(Variable::Load, &kept, 10.0);
+            let got = nominals(&l);
+            assert_eq!(got.len(), 5, "every {every}: {got:?}");
+            for (g, want) in got.iter().zip(loads) {
+                assert!((g - want).abs() < 15.0, "every {every}: {got:?}");
+            }
+            let accounted: usize =
+                l.levels.iter().map(|q| q.samples).sum::<usize>() + l.transition_samples;
+            assert_eq!(accounted, kept.len());
+            // The ramps and the sparse tails of the levels, no more.
+            assert!(
+                l.transition_samples * 50 < kept.len(),
+                "every {every}: {}",
+                l.transition_samples
+            );
+        }
+    }
+
+    /// A camber held at one level and logged in steps of 0.01°: the empty
+    /// bins between its steps are narrower than the 0.1° resolution, so it
+    /// stays one level (split on its own scale it read as −0.01° and 0.00°,
+    /// or 1.58°, 1.59° and 1.60°); two levels 0.3° apart are two.
+    #[test]
+    fn a_quantised_level_is_not_split_at_its_steps() {
+        let step = 0.01f64.to_radians();
+        let one: Vec<f64> = (0..3000)
+            .map(|i| step * f64::from([-2, -1, -1, 0, 0, 0, 0, 1, 1, 2][i % 10]))
+            .collect();
+        let l = levels(Variable::Camber, &one, 0.1f64.to_radians());
+        assert_eq!(l.levels.len(), 1, "{:?}", l.levels);
+        assert_eq!(l.transition_samples, 0);
+        let two: Vec<f64> = (0..3000)
+            .map(|i| one[i] + if i % 2 == 0 { 0.0 } else { 0.3f64.to_radians() })
+            .collect();
+        let l = levels(Variable::Camber, &two, 0.1f64.to_radians());
+        assert_eq!(l.levels.len(), 2, "{:?}", l.levels);
+    }
 }

@@ -118,9 +118,11 @@ pub enum UnitSlip {
         limit: f64,
     },
     /// A speed whose product with the yaw rate is about 3.6 times the
-    /// lateral acceleration: in km/h.
-    #[error("column `speed`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (1/3.6 = 0.278): is `speed` in km/h? divide it by 3.6 (FORMATS.md: m/s)", Num(*value), fixed(*median, 3), plural(*samples, "sample", "samples"), Num(*turning))]
+    /// lateral acceleration: in km/h (or 2.237 times: in mph).
+    #[error("column `speed`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (1/{} = {}): is `speed` in {}? divide it by {} (FORMATS.md: m/s)", Num(*value), fixed(*median, 3), plural(*samples, "sample", "samples"), Num(*turning), unit.per_m_s(), fixed(1.0 / unit.per_m_s(), 3), unit.name(), unit.per_m_s())]
     SpeedInKmh {
+        /// The unit the ratio points to.
+        unit: SpeedUnit,
         /// The speed at the first turning sample, as read.
         value: f64,
         /// Median of ay/(speed·yaw_rate) over the turning samples.
@@ -369,5 +371,31 @@ fn in_ms(step: f64) -> String {
         )
     } else {
         String::new()
+    }
+}
+
+/// A unit a logger writes a speed in besides m/s.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpeedUnit {
+    /// Kilometres per hour.
+    Kmh,
+    /// Miles per hour (US and UK loggers, the TTC rig's own channels).
+    Mph,
+}
+
+impl SpeedUnit {
+    /// Its name as a user writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpeedUnit::Kmh => "km/h",
+            SpeedUnit::Mph => "mph",
+        }
+    }
+    /// The unit's value of 1 m/s (the divisor back to m/s).
+    pub fn per_m_s(self) -> f64 {
+        match self {
+            SpeedUnit::Kmh => 3.6,
+            SpeedUnit::Mph => 2.23694,
+        }
     }
 }

@@ -6,7 +6,7 @@
 //! median time step.
 
 use super::columns::Columns;
-use crate::error::{InputError, UnitSlip};
+use crate::error::{InputError, SpeedUnit, UnitSlip};
 use crate::measured::clean::{median, quantile};
 use std::path::Path;
 
@@ -55,6 +55,10 @@ const AY_IN_G: (f64, f64) = (0.05, 0.2);
 /// The band of ay/(speed·yaw_rate) of a speed in km/h (1/3.6 = 0.28,
 /// within a factor of 1.4), where a car's is near 1 on a flat road.
 const SPEED_IN_KMH: (f64, f64) = (0.2, 0.4);
+
+/// The band of ay/(speed·yaw_rate) of a speed in mph (1/2.237 = 0.447,
+/// from the km/h band's top to a factor of 1.34 above).
+const SPEED_IN_MPH: (f64, f64) = (0.4, 0.6);
 
 /// The band of ay/(speed·yaw_rate) of a yaw rate in deg/s (π/180 =
 /// 0.0175, within a factor of 1.7), where a car's is near 1 on a flat road.
@@ -133,9 +137,16 @@ pub(super) fn check_ay(
         let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
         inside as f64 >= AY_IN_G_SHARE * q.len() as f64
     };
-    let (in_g, in_kmh, in_deg) = (holds(AY_IN_G), holds(SPEED_IN_KMH), holds(YAW_IN_DEG));
+    let (in_g, in_deg) = (holds(AY_IN_G), holds(YAW_IN_DEG));
+    let speed_unit = if holds(SPEED_IN_KMH) {
+        Some(SpeedUnit::Kmh)
+    } else if holds(SPEED_IN_MPH) {
+        Some(SpeedUnit::Mph)
+    } else {
+        None
+    };
     let too_small = holds(YAW_TOO_SMALL);
-    if !in_g && !in_kmh && !in_deg && !too_small {
+    if !in_g && speed_unit.is_none() && !in_deg && !too_small {
         return Ok(());
     }
     let m = median(&mut q);
@@ -160,11 +171,12 @@ pub(super) fn check_ay(
         };
         return Err(c.error_at(path, i, "yaw_rate", slip.into()));
     }
-    if in_kmh {
+    if let Some(unit) = speed_unit {
         // ay and yaw rate agree with each other's units (checked above and
-        // by their sizes); speed × yaw rate 3.6 times ay is a speed in
-        // km/h whose values stay below any car's top speed in m/s.
+        // by their sizes); speed × yaw rate 3.6 (2.237) times ay is a speed
+        // in km/h (mph) whose values stay below any car's top speed in m/s.
         let slip = UnitSlip::SpeedInKmh {
+            unit,
             value: speed[i],
             median: m,
             samples: turning.len(),

@@ -80,6 +80,23 @@ fn a_speed_in_km_h_below_any_cars_top_speed_in_m_s_is_refused_by_ay_against_spee
     assert!(metrics(&p, &[]).0);
 }
 
+/// A speed in mph (a US logger's, the TTC rig's own channel) was read as
+/// m/s and the run's ay then blamed on "the accelerometer or the gyro":
+/// speed × yaw rate 2.237 times ay is the same slip as km/h's 3.6.
+#[test]
+fn a_speed_in_mph_is_refused_by_ay_against_speed_times_yaw_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = logged(dir.path(), |r| r[1] *= 2.23694);
+    let (ok, _, e) = metrics(&p, &[]);
+    assert!(!ok);
+    assert!(
+        e.contains("column `speed`: 49.7")
+            && e.contains("(1/2.23694 = 0.447): is `speed` in mph? divide it by 2.23694"),
+        "{e}"
+    );
+    assert!(!e.contains("km/h"), "{e}");
+}
+
 #[test]
 fn a_sideslip_in_degrees_is_refused_and_measured_once_declared() {
     let dir = tempfile::tempdir().unwrap();

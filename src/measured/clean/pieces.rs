@@ -308,6 +308,16 @@ mod tests {
         assert_eq!(rep.slow[0].samples, 1000);
         assert_eq!(rep.slow[1].kind, SlowKind::Crawl);
         assert_eq!(rep.counts.time_gap, 1);
+        // Said as a gap with its ends, not as a time stamp of its length.
+        let said = rep.summary(5).join("\n");
+        let gap = rep.glitches.iter().find(|g| g.kind == GlitchKind::TimeGap).unwrap();
+        let line = format!(
+            "time_gap in {}: no samples for 1.01 s (t {:.3} → {:.3} s), split",
+            gap.run,
+            gap.t,
+            gap.t + 1.01
+        );
+        assert!(said.contains(&line), "{said}");
         assert_eq!(rep.counts.zero_read, 1);
         assert_eq!(rep.counts.spike, 1);
         assert_eq!(

@@ -126,6 +126,32 @@ fn short(v: f64) -> String {
     format!("{}", (v * scale).round() / scale)
 }
 
+/// A glitch as the terminal says it. A time gap's value is its length,
+/// said as one with its ends ("t 86.04" read as a time stamp).
+fn glitch_line(g: &Glitch) -> String {
+    if g.kind == GlitchKind::TimeGap {
+        return format!(
+            "{} in {}: no samples for {} s (t {:.3} → {:.3} s), {}",
+            g.kind.name(),
+            g.run,
+            short(g.value),
+            g.t,
+            g.t + g.value,
+            g.treatment.name()
+        );
+    }
+    format!(
+        "{} at {:.3} s in {}: {} {} ({}, {})",
+        g.kind.name(),
+        g.t,
+        g.run,
+        g.channel.name(),
+        short(g.value),
+        plural(g.samples, "sample", "samples"),
+        g.treatment.name()
+    )
+}
+
 /// What was done about a glitch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -338,18 +364,7 @@ impl CleaningReport {
                 plural(h.samples, "held sample", "held samples")
             ));
         }
-        for g in self.glitches.iter().take(first) {
-            out.push(format!(
-                "{} at {:.3} s in {}: {} {} ({}, {})",
-                g.kind.name(),
-                g.t,
-                g.run,
-                g.channel.name(),
-                short(g.value),
-                plural(g.samples, "sample", "samples"),
-                g.treatment.name()
-            ));
-        }
+        out.extend(self.glitches.iter().take(first).map(glitch_line));
         if self.glitches.len() > first {
             out.push(format!(
                 "… and {} more (every one in the JSON report)",

@@ -78,7 +78,7 @@ pub enum InputError {
         problem: Box<InputProblem>,
     },
     /// A CSV file without a column the reader needs.
-    #[error("{path}:{line}:1: missing required column `{name}` (the header has: {}){}{}", header.join(", "), meant.as_ref().map_or(String::new(), |m| format!("; header column `{m}`: did you mean `{name}`?")), separator_hint(header))]
+    #[error("{path}:{line}:{}: missing required column `{name}` (the header has: {}){}{}", meant.as_ref().map_or(1, |m| m.0), header.join(", "), meant.as_ref().map_or(String::new(), |(c, m)| format!("; header column {c}, `{m}`: did you mean `{name}`?")), separator_hint(header))]
     MissingColumn {
         /// The file.
         path: PathBuf,
@@ -88,8 +88,9 @@ pub enum InputError {
         name: String,
         /// The header's columns.
         header: Vec<String>,
-        /// The header column that likely means it (`yawrate`, `time`).
-        meant: Option<String>,
+        /// The header column that likely means it (`yawrate`, `time`),
+        /// with its 1-based position.
+        meant: Option<(usize, String)>,
     },
     /// A CSV row that the CSV reader cannot read.
     #[error("{path}:{line}:1: malformed CSV row: {detail}")]
@@ -285,12 +286,14 @@ impl InputError {
     /// The place in the file, where known.
     pub fn location(&self) -> Option<Location> {
         match self {
-            InputError::MissingColumn { line, .. } | InputError::MalformedRow { line, .. } => {
-                Some(Location {
-                    line: *line,
-                    column: 1,
-                })
-            }
+            InputError::MissingColumn { line, meant, .. } => Some(Location {
+                line: *line,
+                column: meant.as_ref().map_or(1, |m| m.0),
+            }),
+            InputError::MalformedRow { line, .. } => Some(Location {
+                line: *line,
+                column: 1,
+            }),
             InputError::Cell { line, column, .. } => Some(Location {
                 line: *line,
                 column: *column,

@@ -117,6 +117,30 @@ fn not_utf8(bytes: &[u8], e: &csv::Error) -> Option<BadByte> {
 /// Long names of the time column that a logger writes.
 const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
 
+/// The channel names of the Tire Test Consortium's rig files (and loggers
+/// that copy them), lower-cased, and the column each means here: `SA` is
+/// no slip of spelling of `alpha`, so a header of them was refused one
+/// column at a time or, `SA` unnamed, as "no lateral data". Their units
+/// (degrees, kPa, km/h, SAE axes) are said by the checks of the values
+/// once renamed.
+const RIG_NAMES: [(&str, &str); 6] = [
+    ("et", "t"),
+    ("sa", "alpha"),
+    ("sl", "kappa"),
+    ("ia", "camber"),
+    ("p", "pressure"),
+    ("v", "speed"),
+];
+
+/// The column a header's rig channel name means ([`RIG_NAMES`]), by its
+/// first word (`SA_deg`, `P [kPa]`), where `among` holds it.
+fn rig_name<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
+    let lower = h.to_lowercase();
+    let first = lower.split(['_', '-', ' ', '[', '(']).next()?;
+    let (_, ours) = RIG_NAMES.iter().find(|(rig, _)| *rig == first)?;
+    among.iter().copied().find(|n| n == ours)
+}
+
 /// The header column that likely means the missing `name`: one that is no
 /// known column and a slip of spelling away from it (`yawrate`, `Yaw_Rate`,
 /// [`crate::format::nearest_name`]), or the time under a long name; of
@@ -128,17 +152,35 @@ fn meant(
     headers: &csv::StringRecord,
     required: &[&str],
     optional: &[&str],
-) -> Option<String> {
+) -> Option<(usize, String)> {
     let time = |h: &str| name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str());
+    // The name in capitals (`FZ`), then with a unit after it (`FZ_kN`),
+    // then the nearest spelling: `MZ` is one letter from `fz` in capitals
+    // but means `mz`, and was named for `fz` where `FZ_kN` stood.
+    let rank = |h: &str| {
+        let lower = h.to_lowercase();
+        if time(h) || lower == name {
+            0
+        } else if lower.split(['_', '-', ' ', '[', '(']).next() == Some(name) {
+            1
+        } else {
+            2 + crate::format::edit_distance(&lower, name)
+        }
+    };
     headers
         .iter()
-        .filter(|h| !required.contains(h) && !optional.contains(h))
-        .filter(|h| crate::format::nearest_name(h, &[name]).is_some() || time(h))
-        .min_by_key(|h| match time(h) {
-            true => 0,
-            false => crate::format::edit_distance(h, name),
+        .enumerate()
+        .filter(|(_, h)| !required.contains(h) && !optional.contains(h))
+        .filter(|(_, h)| {
+            crate::format::nearest_name(h, &[name]).is_some()
+                || time(h)
+                || rig_name(h, &[name]).is_some()
         })
-        .map(str::to_string)
+        .min_by_key(|(_, h)| match rig_name(h, &[name]) {
+            Some(_) => 1,
+            None => rank(h),
+        })
+        .map(|(i, h)| (i + 1, h.to_string()))
 }
 
 /// A header column that reads as a slip of spelling of an optional column
@@ -169,7 +211,7 @@ fn slips(header: &[String], optional: &[&str], known: &[&str]) -> Vec<Slip> {
         .enumerate()
         .filter(|(_, h)| !known.contains(&h.as_str()) && !optional.contains(&h.as_str()))
         .filter_map(|(i, h)| {
-            let meant = crate::format::nearest_name(h, &absent)?;
+            let meant = crate::format::nearest_name(h, &absent).or_else(|| rig_name(h, &absent))?;
             Some(Slip {
                 found: h.clone(),
                 meant: meant.to_string(),
@@ -338,7 +380,7 @@ fn read_layout(
     let taken: Vec<String> = missing
         .iter()
         .filter_map(|e| match e {
-            InputError::MissingColumn { meant, .. } => meant.clone(),
+            InputError::MissingColumn { meant, .. } => meant.as_ref().map(|m| m.1.clone()),
             _ => None,
         })
         .collect();

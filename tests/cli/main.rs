@@ -24,6 +24,11 @@ pub(crate) fn run(args: &[&str]) -> Output {
     bin().args(args).current_dir(root()).output().expect("runs")
 }
 
+/// Runs the binary in `dir`.
+pub(crate) fn run_in(dir: &Path, args: &[&str]) -> Output {
+    bin().args(args).current_dir(dir).output().unwrap()
+}
+
 /// Says on the terminal that a test skipped itself: written to the process's
 /// stderr directly, past the test harness's capture of `eprintln!`.
 fn skipped(test: &str, missing: &Path) {

@@ -163,11 +163,6 @@ fn metrics_refuses_a_speed_no_car_reaches_at_its_cell() {
     );
 }
 
-/// Runs the binary in `dir`.
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    bin().args(args).current_dir(dir).output().unwrap()
-}
-
 /// `2.049e0` for 2.049, `RMS 0.0 N` for a fit to exact data.
 #[test]
 fn identify_prints_numbers_without_e0_or_a_zero_rms() {
@@ -249,13 +244,14 @@ fn an_empty_csv_is_said_empty_and_a_misspelt_column_gets_the_name_meant() {
     let e = said("time.csv");
     assert!(
         e.contains("missing required column `t`")
-            && e.contains("header column `time`: did you mean `t`?"),
+            && e.contains("header column 1, `time`: did you mean `t`?"),
         "{e}"
     );
     let e = said("yaw.csv");
     assert!(
         e.contains("missing required column `yaw_rate`")
-            && e.contains("header column `yawrate`: did you mean `yaw_rate`?"),
+            && e.contains("yaw.csv:1:4: missing")
+            && e.contains("header column 4, `yawrate`: did you mean `yaw_rate`?"),
         "{e}"
     );
 }

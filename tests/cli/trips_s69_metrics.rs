@@ -94,9 +94,13 @@ fn a_header_with_units_in_brackets_is_refused_naming_every_column_to_rename() {
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
     assert!(e.contains("units.csv: 5 places refused"), "{e}");
-    for (found, meant) in [("t [s]", "t"), ("yaw_rate [rad/s]", "yaw_rate")] {
+    for (column, found, meant) in [(1, "t [s]", "t"), (4, "yaw_rate [rad/s]", "yaw_rate")] {
         assert!(
-            e.contains(&format!("header column `{found}`: did you mean `{meant}`?")),
+            e.contains(&format!(
+                "units.csv:1:{column}: missing required column `{meant}`"
+            )) && e.contains(&format!(
+                "header column {column}, `{found}`: did you mean `{meant}`?"
+            )),
             "{e}"
         );
     }
@@ -121,7 +125,7 @@ fn a_capitalised_header_names_the_nearest_column_for_each_missing_one() {
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
     assert!(
-        e.contains("missing required column `steer` (the header has: T, Speed, Steer, Yaw_Rate, Ay); header column `Steer`: did you mean `steer`?"),
+        e.contains("caps.csv:1:3: missing required column `steer` (the header has: T, Speed, Steer, Yaw_Rate, Ay); header column 3, `Steer`: did you mean `steer`?"),
         "{e}"
     );
     assert!(!e.contains("`Speed`: did you mean `steer`"), "{e}");

@@ -58,3 +58,41 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
         assert!(sigma < 3.5, "every {every}: σ {sigma} %");
     }
 }
+
+/// A rig file with the Tire Test Consortium's channel names and units in
+/// the header (`Fy_N,SA_deg,FZ_kN,MZ,P,t`): the missing `fz` was said to
+/// be meant by `MZ` (one letter from it in capitals) at column 1, and
+/// `SA_deg` and `P` were not named. Each column is now named for what it
+/// means, at its own column: a name in capitals or with a unit after it
+/// before a near spelling, and the rig's `SA`, `IA`, `P`, `V` for
+/// `alpha`, `camber`, `pressure`, `speed`.
+#[test]
+fn a_rig_header_in_the_ttc_names_is_refused_naming_what_each_column_means() {
+    let dir = scratch(&[
+        ("units.csv", "Fy_N,SA_deg,FZ_kN,MZ,P,t\n100,1,2,3,83,0\n"),
+        ("ttc.csv", "ET,FZ,SA,IA,P,V,FY,MZ\n0,-2000,1,0,83,40,100,3\n"),
+    ]);
+    let e = stderr(&run_in(dir.path(), &["identify", "units.csv", "--model", "gim"]));
+    for said in [
+        "units.csv:1:3: missing required column `fz` (the header has: Fy_N, SA_deg, FZ_kN, MZ, P, t); header column 3, `FZ_kN`: did you mean `fz`?",
+        "units.csv:1:2: column `SA_deg` is not one this command reads: did you mean `alpha`?",
+        "units.csv:1:4: column `MZ` is not one this command reads: did you mean `mz`?",
+        "units.csv:1:5: column `P` is not one this command reads: did you mean `pressure`?",
+    ] {
+        assert!(e.contains(said), "{said}\n{e}");
+    }
+    let e = stderr(&run_in(dir.path(), &["identify", "ttc.csv", "--model", "gim"]));
+    for (column, found, meant) in [
+        (3, "SA", "alpha"),
+        (4, "IA", "camber"),
+        (5, "P", "pressure"),
+        (6, "V", "speed"),
+        (7, "FY", "fy"),
+    ] {
+        let said = format!(
+            "ttc.csv:1:{column}: column `{found}` is not one this command reads: did you mean `{meant}`?"
+        );
+        assert!(e.contains(&said), "{said}\n{e}");
+    }
+    assert!(e.contains("ttc.csv:1:2: missing required column `fz`"), "{e}");
+}

@@ -152,15 +152,22 @@ pub fn applicability_with_grip(
             u.abs()
         ));
     }
+    // A simulation's channels share one clock, and its tyres are known.
+    let simulated = matches!(grip, Some(Grip::Tyres(_)))
+        || matches!(
+            overshoot,
+            Some(Overshoot::GripUsed(_) | Overshoot::NoGripLimit)
+        );
     for (name, time) in [
         ("yaw rate", Some(m.yaw_rate_response_time)),
         ("lateral acceleration", m.ay_response_time),
     ] {
         if let Some(t) = time.filter(|t| *t <= 0.0) {
             out.push(format!(
-                "the {name} reaches 90 % of its step {} s before the steer reaches half of its own (response time {} s): a response that leads the steer is a crawl's geometry or a record whose channels are not aligned in time, not the lag GB/T 6323 and ISO 7401 measure",
+                "the {name} reaches 90 % of its step {} s before the steer reaches half of its own (response time {} s): {}, not the lag GB/T 6323 and ISO 7401 measure",
                 crate::format::significant(-t, 2),
-                crate::format::significant(t, 2)
+                crate::format::significant(t, 2),
+                leading_cause(simulated, speed)
             ));
         }
     }
@@ -185,6 +192,20 @@ pub fn applicability_with_grip(
         out.push(overshoot_words(percent, speed, overshoot));
     }
     out
+}
+
+/// Why a response leads the steer. A measured one: a crawl's geometry or
+/// channels not aligned in time. A simulated one faster than a crawl has
+/// one clock: its steady value lies far below its peak, the tyres' force
+/// falling past its peak (a `.tir` whose `PCY1` was typed ten times over
+/// turned its force around at 11° and was blamed on a logger).
+fn leading_cause(simulated: bool, speed: Option<f64>) -> &'static str {
+    let crawl = speed.is_some_and(|u| u.abs() < CRAWL_SPEED);
+    match (simulated, crawl) {
+        (_, true) => "a response that leads the steer is a crawl's geometry",
+        (true, false) => "in a simulation, whose channels share one clock, a response that leads the steer settles far below its peak: the tyres' force falls past its peak within the step's slip (check their curve with `tyre-eval`), and the response time measures that fall",
+        (false, false) => "a response that leads the steer is a crawl's geometry or a record whose channels are not aligned in time",
+    }
 }
 
 /// The warning on a yaw-rate overshoot of `percent` beyond

@@ -265,3 +265,29 @@ fn a_yaw_rate_noise_of_zero_is_said_as_none_and_a_tiny_one_with_its_digits() {
     };
     assert_eq!(some.yaw_rate_noise_text(), "1.23 % of the step");
 }
+
+/// A response leading the steer: a measured run's at speed is blamed on
+/// its channels' alignment, a simulation's (one clock, its tyres known)
+/// on the tyres' force falling past its peak, a crawl's on its geometry.
+#[test]
+fn a_leading_response_is_blamed_on_the_logger_only_where_there_is_one() {
+    let leading = StepMetrics {
+        yaw_rate_response_time: -0.008,
+        ..moderate()
+    };
+    let measured = applicability_measured(&leading, Some(22.2), Some(0.01)).join("\n");
+    assert!(measured.contains("response time -0.0080 s"), "{measured}");
+    assert!(measured.contains("not aligned in time"), "{measured}");
+    for simulated in [
+        applicability_with_grip(&leading, Some(22.2), Some(Grip::Tyres(9.8)), None),
+        applicability_with_grip(&leading, Some(22.2), None, Some(Overshoot::NoGripLimit)),
+    ] {
+        let said = simulated.join("\n");
+        assert!(said.contains("in a simulation, whose channels share one clock"), "{said}");
+        assert!(said.contains("check their curve with `tyre-eval`"), "{said}");
+        assert!(!said.contains("aligned"), "{said}");
+    }
+    let crawl = applicability_with_grip(&leading, Some(2.0), Some(Grip::Tyres(9.8)), None);
+    let said = crawl.join("\n");
+    assert!(said.contains("a response that leads the steer is a crawl's geometry, not"), "{said}");
+}

@@ -47,8 +47,7 @@ pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{
-    SpeedUnit,
-    PressureMeant, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
+    PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
 };
 
 /// The library's error: why a job (a command of the binary, or any public

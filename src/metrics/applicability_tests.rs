@@ -283,11 +283,20 @@ fn a_leading_response_is_blamed_on_the_logger_only_where_there_is_one() {
         applicability_with_grip(&leading, Some(22.2), None, Some(Overshoot::NoGripLimit)),
     ] {
         let said = simulated.join("\n");
-        assert!(said.contains("in a simulation, whose channels share one clock"), "{said}");
-        assert!(said.contains("check their curve with `tyre-eval`"), "{said}");
+        assert!(
+            said.contains("in a simulation, whose channels share one clock"),
+            "{said}"
+        );
+        assert!(
+            said.contains("check their curve with `tyre-eval`"),
+            "{said}"
+        );
         assert!(!said.contains("aligned"), "{said}");
     }
     let crawl = applicability_with_grip(&leading, Some(2.0), Some(Grip::Tyres(9.8)), None);
     let said = crawl.join("\n");
-    assert!(said.contains("a response that leads the steer is a crawl's geometry, not"), "{said}");
+    assert!(
+        said.contains("a response that leads the steer is a crawl's geometry, not"),
+        "{said}"
+    );
 }

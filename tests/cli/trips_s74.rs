@@ -70,9 +70,15 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
 fn a_rig_header_in_the_ttc_names_is_refused_naming_what_each_column_means() {
     let dir = scratch(&[
         ("units.csv", "Fy_N,SA_deg,FZ_kN,MZ,P,t\n100,1,2,3,83,0\n"),
-        ("ttc.csv", "ET,FZ,SA,IA,P,V,FY,MZ\n0,-2000,1,0,83,40,100,3\n"),
+        (
+            "ttc.csv",
+            "ET,FZ,SA,IA,P,V,FY,MZ\n0,-2000,1,0,83,40,100,3\n",
+        ),
     ]);
-    let e = stderr(&run_in(dir.path(), &["identify", "units.csv", "--model", "gim"]));
+    let e = stderr(&run_in(
+        dir.path(),
+        &["identify", "units.csv", "--model", "gim"],
+    ));
     for said in [
         "units.csv:1:3: missing required column `fz` (the header has: Fy_N, SA_deg, FZ_kN, MZ, P, t); header column 3, `FZ_kN`: did you mean `fz`?",
         "units.csv:1:2: column `SA_deg` is not one this command reads: did you mean `alpha`?",
@@ -81,7 +87,10 @@ fn a_rig_header_in_the_ttc_names_is_refused_naming_what_each_column_means() {
     ] {
         assert!(e.contains(said), "{said}\n{e}");
     }
-    let e = stderr(&run_in(dir.path(), &["identify", "ttc.csv", "--model", "gim"]));
+    let e = stderr(&run_in(
+        dir.path(),
+        &["identify", "ttc.csv", "--model", "gim"],
+    ));
     for (column, found, meant) in [
         (3, "SA", "alpha"),
         (4, "IA", "camber"),
@@ -94,5 +103,52 @@ fn a_rig_header_in_the_ttc_names_is_refused_naming_what_each_column_means() {
         );
         assert!(e.contains(&said), "{said}\n{e}");
     }
-    assert!(e.contains("ttc.csv:1:2: missing required column `fz`"), "{e}");
+    assert!(
+        e.contains("ttc.csv:1:2: missing required column `fz`"),
+        "{e}"
+    );
+}
+
+/// `tyre-eval` at slip ratios 5, 10 and −3 (a column in percent) wrote
+/// the saturated tail of the curve without a word; they are now counted
+/// with the first one's line and the farthest value, and the percent
+/// asked about. ±1 (a locked wheel, one spun to twice the road speed) is
+/// not.
+#[test]
+fn slip_ratios_past_a_locked_wheel_are_warned_of_at_their_line() {
+    let points = "fz,kappa,alpha,camber,speed\n4000,0.05,0,0,16.7\n4000,5,0,0,16.7\n4000,10,0,0,16.7\n4000,-3,0,0,16.7\n4000,-1,0,0,16.7\n";
+    let dir = scratch(&[("p.csv", points)]);
+    let tyre = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let o = run_in(
+        dir.path(),
+        &[
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            "p.csv",
+            "--out",
+            "f.csv",
+        ],
+    );
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert!(
+        e.contains(
+            "3 points of 5 at a slip ratio beyond ±1 (the first at line 3, κ = 5; the farthest 10)"
+        ) && e.contains("is the column in percent? divide it by 100"),
+        "{e}"
+    );
+    let fine = "fz,kappa,alpha,camber,speed\n4000,0.05,0,0,16.7\n4000,-1,0,0,16.7\n";
+    fs::write(dir.path().join("q.csv"), fine).unwrap();
+    let o = run_in(
+        dir.path(),
+        &[
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            "q.csv",
+            "--out",
+            "g.csv",
+        ],
+    );
+    assert!(o.status.success());
+    assert!(!stderr(&o).contains("beyond ±1"), "{}", stderr(&o));
 }

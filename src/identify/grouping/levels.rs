@@ -258,7 +258,8 @@ fn split_own_scale(group: &[f64], resolution: f64) -> Vec<std::ops::Range<usize>
     let (lo, hi) = (group[0], group[group.len() - 1]);
     let keep = (group.len() / 100).max(3);
     if hi <= lo || group.len() < 2 * OWN_SCALE_BINS {
-        return vec![0..group.len()];
+        let whole = 0..group.len();
+        return vec![whole];
     }
     let width = (hi - lo) / OWN_SCALE_BINS as f64;
     let bin = |v: f64| (((v - lo) / width) as usize).min(OWN_SCALE_BINS - 1);

@@ -55,6 +55,7 @@ mod physical;
 mod pressure;
 mod radius;
 mod ranges;
+mod slip_ratio;
 mod standstill;
 mod stiffness;
 mod unread;
@@ -123,6 +124,8 @@ pub struct TyreEvalReport {
     pub zero_outputs: Vec<ZeroOutput>,
     /// Points faster than a Magic Formula `my`'s speed terms reach.
     pub beyond_my_speed: Option<BeyondMySpeed>,
+    /// Points at a slip ratio beyond ±1, of a model that reads it.
+    pub slip_past_lock: Option<slip_ratio::SlipPastLock>,
     /// Points whose `√(fx² + fy²)` exceeds the tyre's `μ·Fz` by more than
     /// [`FRICTION_TOLERANCE`].
     pub beyond_friction: Option<BeyondFriction>,
@@ -396,6 +399,11 @@ pub fn run(
     });
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
+    let slip_past_lock = if unread.iter().any(|u| u.column == "kappa") {
+        None
+    } else {
+        slip_ratio::past_lock(kappa, &file.lines)
+    };
     let (beyond_friction, uncoupled) = friction::friction(&tyre, &given, &f);
     let at_rest = standstill::at_rest(&tyre, &given, &f, &file.lines);
     let standstill_mz = standstill::standstill_mz(&tyre, &given, &f);
@@ -458,6 +466,7 @@ pub fn run(
         off_road,
         zero_outputs,
         beyond_my_speed,
+        slip_past_lock,
         beyond_friction,
         fx_at_zero_slip,
         uncoupled,
@@ -494,6 +503,7 @@ impl TyreEvalReport {
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
+        out.extend(self.slip_past_lock.iter().map(|k| k.line(self.count)));
         out.extend(self.fx_at_zero_slip.iter().map(|z| z.line(self.count)));
         out.extend(
             self.uncoupled

@@ -310,7 +310,11 @@ mod tests {
         assert_eq!(rep.counts.time_gap, 1);
         // Said as a gap with its ends, not as a time stamp of its length.
         let said = rep.summary(5).join("\n");
-        let gap = rep.glitches.iter().find(|g| g.kind == GlitchKind::TimeGap).unwrap();
+        let gap = rep
+            .glitches
+            .iter()
+            .find(|g| g.kind == GlitchKind::TimeGap)
+            .unwrap();
         let line = format!(
             "time_gap in {}: no samples for 1.01 s (t {:.3} → {:.3} s), split",
             gap.run,

@@ -5,6 +5,10 @@
 
 use super::options::{ModeError, OptionsError};
 use thiserror::Error;
+use tir::{declared_unit, pure_curve, tyre_pressure};
+pub use tir::{DeclaredUnit, PureCurve};
+
+mod tir;
 
 /// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
 /// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
@@ -128,6 +132,16 @@ pub enum ParamReason {
     /// the value given said converted. Boxed: the error stays small.
     #[error("{}", cornering_per_load(.0))]
     CorneringPerLoad(Box<PerLoad>),
+    /// A `.tir` value outside any tyre's `(lo, hi]` once converted by the
+    /// unit its file's `[UNITS]` declares, but within as written: the
+    /// declaration is the slip. Boxed: the error stays small.
+    #[error("{}", declared_unit(.0))]
+    TirDeclaredUnit(Box<DeclaredUnit>),
+    /// A `.tir` file's own pure-slip force curve beyond any tyre's: a peak
+    /// friction above [`crate::tyre::sizes::MAX_FRICTION`], or a force
+    /// that turns against its slip. Boxed: the error stays small.
+    #[error("{}", pure_curve(.0))]
+    MfPureCurve(Box<PureCurve>),
     /// Outside the range `(lo, hi]`, for the reason `why`.
     #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {
@@ -514,6 +528,22 @@ pub enum Limit {
     /// A Magic Formula stiffness (N/m) or pressure (Pa).
     #[error("a tyre's vertical stiffness (N/m) and pressures (Pa) lie below 1e8 in SI (2e6 N/m, 1e6 Pa at most): check the value against the file's [UNITS]")]
     MfDimensional,
+    /// A Magic Formula file's inflation pressure (`NOMPRES`, `INFLPRES`),
+    /// Pa, outside any tyre's: `given` as read, `unit` the index in
+    /// [`Limit::PRESSURE_UNITS`] of the unit it likely is in, `nominal`
+    /// whether the key is `NOMPRES`, `apart` whether the other key lies
+    /// that unit's factor above it.
+    #[error("{}", tyre_pressure(*given, *unit, *nominal, *apart))]
+    TyrePressure {
+        /// The value as read, Pa.
+        given: f64,
+        /// The likely unit's index in [`Limit::PRESSURE_UNITS`].
+        unit: Option<u8>,
+        /// The key is `NOMPRES` (else `INFLPRES`).
+        nominal: bool,
+        /// The other pressure key is about the unit's factor above it.
+        apart: bool,
+    },
 }
 
 /// A column of a schedule manoeuvre; it displays as its key under

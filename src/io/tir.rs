@@ -13,8 +13,14 @@
 //! `CAMMIN`/`CAMMAX`, `PRESMIN`/`PRESMAX`) are read for MFeval's limit
 //! checks ([`crate::tyre::mf::MfMode`]), loads and pressures converted.
 //!
-//! A value no tyre has (`FNOMIN` in kN, a radius in mm, a coefficient of
-//! 1e30) is refused at its line ([`crate::tyre::sizes`]).
+//! A value no tyre has (`FNOMIN` in kN, a radius in mm, a pressure in kPa,
+//! a coefficient of 1e30) is refused at its line ([`crate::tyre::sizes`]);
+//! where it is a tyre's as written but not once converted by the file's
+//! `[UNITS]`, the refusal names that `[UNITS]` line (`units.rs`). A file
+//! read as a tyre (not as a fit's template) has its own pure-slip curves
+//! judged too: a peak friction above 5, or a force that turns against its
+//! slip, is refused at the coefficient most likely at fault
+//! (`tyre/mf/pure_curves.rs`).
 //!
 //! Writing starts from the file that was read and replaces only the values
 //! the model holds (in the file's own units), so comments, sections and
@@ -60,34 +66,6 @@ pub struct TirDocument {
     pub path: PathBuf,
     /// Each line's text and, for `KEY = value` lines, the entry.
     pub lines: Vec<(String, Option<TirEntry>)>,
-}
-
-/// Unit factors to SI of a file's `[UNITS]` section.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Units {
-    length: f64,
-    force: f64,
-    time: f64,
-    pressure: Option<f64>,
-}
-
-impl Units {
-    fn factor(&self, key: &str) -> f64 {
-        match key {
-            "FNOMIN" | "FZMIN" | "FZMAX" => self.force,
-            "UNLOADED_RADIUS" | "WIDTH" => self.length,
-            "VERTICAL_STIFFNESS" => self.force / self.length,
-            "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => self.force,
-            // Q_CAM1·Rl and Q_CAM2·Rl² are numbers.
-            "Q_CAM1" => 1.0 / self.length,
-            "Q_CAM2" => 1.0 / (self.length * self.length),
-            "LONGVL" | "VXLOW" => self.length / self.time,
-            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self
-                .pressure
-                .unwrap_or(self.force / (self.length * self.length)),
-            _ => 1.0,
-        }
-    }
 }
 
 impl TirDocument {
@@ -200,78 +178,16 @@ impl TirDocument {
         InputError::problem_at(&self.path, line, column, problem)
     }
 
-    fn units(&self) -> Result<Units, InputError> {
-        let pick =
-            |key: &'static str, table: &[(&[&str], f64)]| -> Result<Option<f64>, InputError> {
-                let Some((line, name)) = self.text(key) else {
-                    return Ok(None);
-                };
-                let name = name.replace(' ', "_");
-                table
-                    .iter()
-                    .find(|(names, _)| names.contains(&name.as_str()))
-                    .map(|(_, f)| Some(*f))
-                    .ok_or_else(|| self.at(line, InputProblem::TirUnknownUnit { key, unit: name }))
-            };
-        let length = pick(
-            "LENGTH",
-            &[
-                (&["meter", "metre", "m", "meters"], 1.0),
-                (&["mm", "millimeter", "millimetre"], 1e-3),
-                (&["cm", "centimeter", "centimetre"], 1e-2),
-                (&["km", "kilometer"], 1e3),
-                (&["inch", "in"], 0.0254),
-                (&["foot", "feet", "ft"], 0.3048),
-            ],
-        )?
-        .unwrap_or(1.0);
-        let force = pick(
-            "FORCE",
-            &[
-                (&["newton", "n", "newtons"], 1.0),
-                (&["kn", "kilonewton", "kilo_newton"], 1e3),
-                (&["pound_force", "lbf", "pound"], 4.448_221_615_260_5),
-                (&["kg_force", "kgf"], 9.806_65),
-            ],
-        )?
-        .unwrap_or(1.0);
-        let time = pick(
-            "TIME",
-            &[
-                (&["second", "sec", "s", "seconds"], 1.0),
-                (&["millisecond", "ms"], 1e-3),
-                (&["minute", "min"], 60.0),
-                (&["hour", "h"], 3600.0),
-            ],
-        )?
-        .unwrap_or(1.0);
-        let pressure = pick(
-            "PRESSURE",
-            &[
-                (&["pascal", "pa", "n/m2", "n/m^2"], 1.0),
-                (&["kpa", "kilopascal"], 1e3),
-                (&["mpa", "megapascal"], 1e6),
-                (&["bar"], 1e5),
-                (&["psi"], 6_894.757_293_168),
-            ],
-        )?;
-        if let Some((line, a)) = self.text("ANGLE") {
-            if !["radians", "radian", "rad"].contains(&a.as_str()) {
-                return Err(self.at(line, InputProblem::TirAngleNotRadians { unit: a }));
-            }
-        }
-        Ok(Units {
-            length,
-            force,
-            time,
-            pressure,
-        })
-    }
-
     /// The Magic Formula tyre of this file, in SI.
     pub fn magic_formula(&self) -> Result<MagicFormula, InputError> {
         self.core_coefficients(true)?;
-        self.template()
+        let tyre = self.template()?;
+        // The curves of the forces the file describes (a template's are
+        // the fit's to set, so only a tyre read to be used is judged).
+        let (lateral, longitudinal) = (self.get("PDY1").is_some(), self.get("PDX1").is_some());
+        tyre.check_pure_curves(lateral, longitudinal)
+            .map_err(|e| self.value_error(e))?;
+        Ok(tyre)
     }
 
     /// The Magic Formula tyre of this file as a template of a fit: its
@@ -348,15 +264,20 @@ impl TirDocument {
         };
         tyre.validate()
             .and_then(|()| ModelParameters::check_sizes(&tyre))
-            .map_err(|e| match self.get(&e.key) {
-                Some((line, _)) => self.at(line, InputProblem::TirValue(e)),
-                None => InputError::Value {
-                    path: self.path.clone(),
-                    at: None,
-                    source: e,
-                },
-            })?;
+            .map_err(|e| self.value_error(self.declared_slip(&tyre, &units, e)))?;
         Ok(tyre)
+    }
+
+    /// `e` at the line of its key, or at the file where it has none.
+    fn value_error(&self, e: crate::error::ParamError) -> InputError {
+        match self.get(&e.key) {
+            Some((line, _)) => self.at(line, InputProblem::TirValue(e)),
+            None => InputError::Value {
+                path: self.path.clone(),
+                at: None,
+                source: e,
+            },
+        }
     }
 
     /// The file's text with the values of `tyre` in place of the ones read
@@ -440,13 +361,7 @@ pub(crate) fn write_new(tyre: &MagicFormula) -> String {
     for k in MfCoefficients::NAMES {
         s.push_str(&format!("{k:<25} = {}\n", exact(c.get(k).unwrap_or(0.0))));
     }
-    let si = Units {
-        length: 1.0,
-        force: 1.0,
-        time: 1.0,
-        pressure: None,
-    };
-    s.push_str(&ranges::range_sections(&tyre.limits, si, &|_| false));
+    s.push_str(&ranges::range_sections(&tyre.limits, Units::SI, &|_| false));
     s
 }
 
@@ -581,6 +496,9 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 
 mod core;
 mod ranges;
+mod units;
+
+use units::Units;
 
 #[cfg(test)]
 mod tests;

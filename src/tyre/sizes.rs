@@ -73,6 +73,11 @@ pub const MAX_TRAIL: f64 = 0.5;
 /// truck's below 2 m.
 pub const UNLOADED_RADIUS: (f64, f64) = (0.05, 2.0);
 
+/// A tyre's inflation pressure, Pa: a kart's is about 60 kPa, a car's
+/// 200–300 kPa, a truck's 600–900 kPa, a track bicycle's up to 1.4 MPa.
+/// A pressure in kPa, bar or psi read as Pa (220, 2.2, 32) lands far below.
+pub const TYRE_PRESSURE: (f64, f64) = (1e4, 2e6);
+
 /// The largest |coefficient| of a Magic Formula file, in SI: its
 /// dimensionless coefficients stay within about ±2,000 in published
 /// files (RBY4 of some reaches 1,747).
@@ -225,6 +230,8 @@ pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
         hi,
         Limit::UnloadedRadius,
     )?;
+    tyre_pressure("NOMPRES", c.NOMPRES, c.INFLPRES)?;
+    tyre_pressure("INFLPRES", c.INFLPRES, c.NOMPRES)?;
     for name in MfCoefficients::NAMES {
         let v = c.get(name).unwrap_or(0.0);
         let (max, why) = if MF_DIMENSIONAL.contains(name) {
@@ -235,6 +242,46 @@ pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
         ParamError::in_range(name, v, -max, max, why)?;
     }
     Ok(())
+}
+
+/// A Magic Formula file's pressure `v` at `key` (`NOMPRES` or
+/// `INFLPRES`; 0 is none, the pressure terms off), Pa, beside the file's
+/// other pressure `other`: outside [`TYRE_PRESSURE`] it is refused with
+/// the unit it likely is in. That is the unit the other key says, where
+/// the other is a tyre's pressure and lies that unit's factor (±15 %)
+/// above it (220 beside 220000: kPa); else the one that lands it nearest
+/// a car tyre's 250 kPa among the tyres' pressures (2.2: bar, not psi's
+/// 15 kPa; 32: psi, not kPa's 32 kPa).
+pub(crate) fn tyre_pressure(key: &str, v: f64, other: f64) -> Result<(), ParamError> {
+    let (lo, hi) = TYRE_PRESSURE;
+    if v <= 0.0 || (v > lo && v <= hi) || !v.is_finite() {
+        return Ok(());
+    }
+    let units = Limit::PRESSURE_UNITS;
+    let lands = |pa: f64| v * pa > lo && v * pa <= hi;
+    let apart = (other > lo && other <= hi)
+        .then(|| (0..units.len()).find(|&i| (other / (v * units[i].1) - 1.0).abs() <= 0.15))
+        .flatten();
+    let nearest = || {
+        (0..units.len())
+            .filter(|&i| lands(units[i].1))
+            .min_by(|&i, &j| {
+                let off = |k: usize| (v * units[k].1 / 2.5e5).ln().abs();
+                off(i).total_cmp(&off(j))
+            })
+    };
+    let unit = apart.or_else(nearest);
+    let why = Limit::TyrePressure {
+        given: v,
+        unit: unit.map(|i| i as u8),
+        nominal: key == "NOMPRES",
+        apart: apart.is_some(),
+    };
+    Err(ParamError::new(
+        key,
+        v,
+        ParamReason::OutOfRange { lo, hi, why },
+    ))
 }
 
 #[cfg(test)]
@@ -266,6 +313,42 @@ mod tests {
         assert!(e.contains(&stated), "{e}");
         let e = pac89_peak_stiffness(1e9, 500.0).unwrap_err().to_string();
         assert!(e.contains("at Fz = 100 kN"), "{e}");
+    }
+
+    /// A pressure in kPa, bar or psi read as Pa is refused with the unit
+    /// that the other pressure key says (its factor apart), else the one
+    /// nearest a car tyre's; 0 (no pressure) and every tyre's pass.
+    #[test]
+    fn a_tyre_pressure_in_another_unit_is_refused_with_that_unit() {
+        let unit = |v: f64, other: f64| match tyre_pressure("NOMPRES", v, other) {
+            Ok(()) => None,
+            Err(e) => match e.reason {
+                ParamReason::OutOfRange {
+                    why: Limit::TyrePressure { unit, apart, .. },
+                    ..
+                } => Some((unit.map(|u| Limit::PRESSURE_UNITS[u as usize].0), apart)),
+                other => panic!("{other:?}"),
+            },
+        };
+        for ok in [0.0, 60e3, 220e3, 1.4e6] {
+            assert_eq!(unit(ok, 220e3), None, "{ok}");
+        }
+        assert_eq!(unit(220.0, 220e3), Some((Some("kPa"), true)));
+        assert_eq!(unit(2.2, 220e3), Some((Some("bar"), true)));
+        assert_eq!(unit(32.0, 220632.0), Some((Some("psi"), true)));
+        // Alone: the reading nearest 250 kPa (2.2 bar, not 15 kPa in psi).
+        assert_eq!(unit(2.2, 0.0), Some((Some("bar"), false)));
+        assert_eq!(unit(32.0, 0.0), Some((Some("psi"), false)));
+        assert_eq!(unit(5e6, 0.0), Some((None, false)));
+        let e = tyre_pressure("INFLPRES", 220.0, 220e3)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains(
+                "is it in kPa? (220 kPa is 220000 Pa); the file's NOMPRES is about 1000 times it"
+            ),
+            "{e}"
+        );
     }
 
     /// `a3`'s sign is a side's: −5 is refused as +5 is, −20 passes as +20

@@ -194,3 +194,54 @@ fn vertical_force_from_deflection_and_rolling_radius_agree_with_mfeval() {
         assert_eq!(n, 324);
     }
 }
+
+/// A value that is no tyre's once converted by the file's declared unit
+/// but is one as written in SI is said as the `[UNITS]` slip, with that
+/// line and unit; one that is no tyre's either way keeps its own hint.
+#[test]
+fn a_units_declaration_the_values_do_not_follow_is_named_at_its_line() {
+    let p = Path::new("u.tir");
+    let read = |text: &str| {
+        TirDocument::parse(p, text)
+            .unwrap()
+            .magic_formula()
+            .unwrap_err()
+            .to_string()
+    };
+    let e = read(&SMALL.replace("FNOMIN = 4.0", "FNOMIN = 4000"));
+    assert!(
+        e.starts_with("u.tir:11:10: `FNOMIN`: 4000000 is the 4000 written here read in kN, as the file's [UNITS] FORCE at line 3 declares: outside any tyre's (100, 100000] N"),
+        "{e}"
+    );
+    let e = read(&SMALL.replace("UNLOADED_RADIUS = 313", "UNLOADED_RADIUS = 0.313"));
+    assert!(
+        e.starts_with("u.tir:9:19: `UNLOADED_RADIUS`: 0.000313 is the 0.313 written here read in mm, as the file's [UNITS] LENGTH at line 2 declares"),
+        "{e}"
+    );
+    assert!(
+        e.contains("(LENGTH = 'meter' reads them as written)"),
+        "{e}"
+    );
+    // 4e6 written is no tyre's load in N either: the load's own hint.
+    let e = read(&SMALL.replace("FNOMIN = 4.0", "FNOMIN = 4000000"));
+    assert!(
+        e.contains("is the value in kN?") && !e.contains("[UNITS] FORCE at line"),
+        "{e}"
+    );
+    // Pressures under a declared PRESSURE, and a pressure in kPa under Pa.
+    let kpa =
+        SMALL.replace("FORCE = 'kN'\n", "FORCE = 'kN'\nPRESSURE = 'kpa'\n") + "NOMPRES = 220000\n";
+    let e = read(&kpa);
+    assert!(
+        e.starts_with("u.tir:20:11: `NOMPRES`: 220000000 is the 220000 written here read in kPa, as the file's [UNITS] PRESSURE at line 4 declares: outside any tyre's (10000, 2000000] Pa"),
+        "{e}"
+    );
+    let pa =
+        SMALL.replace("FORCE = 'kN'\n", "FORCE = 'kN'\nPRESSURE = 'pascal'\n") + "NOMPRES = 220\n";
+    let e = read(&pa);
+    assert!(
+        e.starts_with("u.tir:20:11: `NOMPRES`: 220 must lie in (10000, 2000000]"),
+        "{e}"
+    );
+    assert!(e.contains("is it in kPa? (220 kPa is 220000 Pa)"), "{e}");
+}

@@ -91,6 +91,7 @@ mod formulae;
 mod kernels;
 mod lateral_of;
 mod mode;
+mod pure_curves;
 mod slip;
 mod version;
 pub mod vertical;

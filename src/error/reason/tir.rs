@@ -1,0 +1,207 @@
+//! The texts of the `.tir` reader's refusals ([`Limit::TyrePressure`],
+//! [`ParamReason::TirDeclaredUnit`], [`ParamReason::MfPureCurve`]) and the
+//! boxed values they are built from, apart from the other reasons so that
+//! `reason.rs` stays readable.
+
+use super::{Limit, ParamReason};
+
+impl Limit {
+    /// The units a pressure written as Pa is likely in, and their Pa.
+    pub(crate) const PRESSURE_UNITS: [(&'static str, f64); 4] = [
+        ("kPa", 1e3),
+        ("bar", 1e5),
+        ("psi", 6_894.757_293_168),
+        ("MPa", 1e6),
+    ];
+}
+
+/// The message of [`Limit::TyrePressure`]: the tyres' pressures, and the
+/// unit the value is likely in with it converted.
+pub(super) fn tyre_pressure(given: f64, unit: Option<u8>, nominal: bool, apart: bool) -> String {
+    let (key, other) = match nominal {
+        true => ("NOMPRES", "INFLPRES"),
+        false => ("INFLPRES", "NOMPRES"),
+    };
+    let mut s = format!("a tyre's inflation pressure is 10 kPa to 2 MPa (a kart's about 60 kPa, a car's 200–300 kPa, a track bicycle's up to 1.4 MPa); {key} is in Pa after the file's [UNITS]");
+    match unit.and_then(|u| Limit::PRESSURE_UNITS.get(u as usize)) {
+        Some((name, pa)) => {
+            s += &format!(
+                ": is it in {name}? ({} {name} is {} Pa)",
+                crate::error::Num(given),
+                crate::format::rounded(given * pa, 6)
+            );
+            if apart {
+                s += &format!(
+                    "; the file's {other} is about {} times it: the two are in different units",
+                    crate::format::rounded(*pa, 4)
+                );
+            }
+        }
+        None => s += ": check the value and the file's [UNITS] PRESSURE",
+    }
+    s
+}
+
+/// What [`ParamReason::TirDeclaredUnit`] says, boxed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeclaredUnit {
+    /// The value as the file writes it.
+    pub written: f64,
+    /// The line of the `[UNITS]` key that declares the unit.
+    pub line: usize,
+    /// That key (`FORCE`, `LENGTH`, `PRESSURE`).
+    pub key: &'static str,
+    /// The unit it declares (`kN`, `mm`).
+    pub unit: &'static str,
+    /// The range of any tyre, SI, `(lo, hi]`.
+    pub range: (f64, f64),
+}
+
+impl ParamReason {
+    /// [`ParamReason::TirDeclaredUnit`] of the value `written` read in the
+    /// `unit` that `[UNITS]` key `key` declares at `line`.
+    pub(crate) fn tir_declared_unit(
+        written: f64,
+        line: usize,
+        (key, unit): (&'static str, &'static str),
+        range: (f64, f64),
+    ) -> Self {
+        ParamReason::TirDeclaredUnit(Box::new(DeclaredUnit {
+            written,
+            line,
+            key,
+            unit,
+            range,
+        }))
+    }
+}
+
+/// The message of [`ParamReason::TirDeclaredUnit`]: the declaration that
+/// makes the value no tyre's, and the value as written, a tyre's in SI.
+pub(super) fn declared_unit(d: &DeclaredUnit) -> String {
+    let (si, word) = match d.key {
+        "FORCE" => ("N", "'newton'"),
+        "LENGTH" => ("m", "'meter'"),
+        _ => ("Pa", "'pascal'"),
+    };
+    let (lo, hi) = d.range;
+    let range = match hi.is_finite() {
+        true => format!("({}, {}]", crate::error::Num(lo), crate::error::Num(hi)),
+        false => format!("above {}", crate::error::Num(lo)),
+    };
+    format!(
+        "is the {} written here read in {}, as the file's [UNITS] {} at line {} declares: outside any tyre's {range} {si}; read in {si}, as written, it is a tyre's: are the file's values in {si}, and line {} the slip? ({} = {word} reads them as written)",
+        crate::error::Num(d.written),
+        d.unit,
+        d.key,
+        d.line,
+        d.line,
+        d.key,
+    )
+}
+
+/// What [`ParamReason::MfPureCurve`] says, boxed: where a `.tir` file's
+/// pure-slip curve goes beyond any tyre's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PureCurve {
+    /// The lateral force over the slip angle (else the longitudinal over
+    /// the slip ratio).
+    pub lateral: bool,
+    /// The coefficient named (the error's key).
+    pub key: &'static str,
+    /// |F|/Fz at the point for a peak, else the force there, N.
+    pub at: f64,
+    /// The curve turns against its slip (else its peak is too high).
+    pub reversal: bool,
+    /// The load, N.
+    pub load: f64,
+    /// The slip angle (rad) or ratio.
+    pub slip: f64,
+    /// The shape factor C (`PCY1·LCY`, `PCX1·LCX`).
+    pub shape: f64,
+    /// The speed evaluated at (`LONGVL`), m/s.
+    pub speed: f64,
+}
+
+/// The message of [`ParamReason::MfPureCurve`].
+pub(super) fn pure_curve(p: &PureCurve) -> String {
+    use crate::format::{readable, rounded};
+    let (f, a, slip, axis) = match p.lateral {
+        true => (
+            "Fy",
+            'Y',
+            format!(
+                "α = {} rad ({}°)",
+                readable(p.slip, 3),
+                readable(p.slip.to_degrees(), 3)
+            ),
+            "lateral",
+        ),
+        false => (
+            "Fx",
+            'X',
+            format!("κ = {}", readable(p.slip, 3)),
+            "longitudinal",
+        ),
+    };
+    let head = format!(
+        "the file's pure {axis} force (at zero {}, no camber, LONGVL = {} m/s)",
+        if p.lateral {
+            "slip ratio"
+        } else {
+            "slip angle"
+        },
+        rounded(p.speed, 4)
+    );
+    let at = format!("at Fz = {} N and {slip}", rounded(p.load, 5));
+    if !p.reversal {
+        let why = match p.key {
+            k if k.starts_with("LMU") => format!("{k} scales the peak friction (1 as fitted)"),
+            k if k.ends_with('2') => format!("{k} is the peak friction's change with load"),
+            k => format!("{k} is the peak friction μ{} at FNOMIN (a road or racing tyre's is about 0.8–1.8; some published defaults reach 3)", a.to_ascii_lowercase()),
+        };
+        return format!(
+            "makes {head} reach |{f}|/Fz = {} {at}, beyond the friction 5 no tyre reaches (racing slicks about 1.8; a TOML tyre's limit): {why}: check it",
+            readable(p.at, 3)
+        );
+    }
+    let why = match p.shape > 2.0 {
+        true => format!(
+            "the shape factor C = PC{a}1·LC{a} = {} lies above 2, past which a Magic Formula's force turns around after its peak (a tyre's C is about 1.1–1.9)",
+            readable(p.shape, 4)
+        ),
+        false => format!(
+            "the shape factor C = PC{a}1·LC{a} = {} does not turn it (C ≤ 2): the curvature (PE{a}1…) or the shifts (PH{a}…, PV{a}…) do; check {}",
+            readable(p.shape, 4),
+            p.key
+        ),
+    };
+    format!(
+        "turns {head} against its slip: {f} = {} N {at}, where smaller slips of that sign give a force of the other sign: {why}",
+        readable(p.at, 3)
+    )
+}
+
+impl ParamReason {
+    /// [`ParamReason::MfPureCurve`]: the `lateral` (else longitudinal)
+    /// curve, the coefficient `key` named, what is wrong `at` the point
+    /// (|F|/Fz of a peak, the force of a `reversal`), the point's load and
+    /// slip, the shape factor C and the speed.
+    pub(crate) fn mf_pure_curve(
+        (lateral, key): (bool, &'static str),
+        (at, reversal): (f64, bool),
+        (load, slip): (f64, f64),
+        (shape, speed): (f64, f64),
+    ) -> Self {
+        ParamReason::MfPureCurve(Box::new(PureCurve {
+            lateral,
+            key,
+            at,
+            reversal,
+            load,
+            slip,
+            shape,
+            speed,
+        }))
+    }
+}

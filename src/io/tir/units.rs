@@ -1,0 +1,190 @@
+//! The `[UNITS]` of a `.tir` file: the factor to SI of each dimensional
+//! key the model reads (`FORCE`, `LENGTH`, `TIME`, `PRESSURE`; a file
+//! without `PRESSURE` has its pressures in `FORCE/LENGTH²`), and where a
+//! unit other than SI is declared, so that a value that is no tyre's once
+//! converted but is one as written is said as the `[UNITS]` slip it is
+//! (values in N under `FORCE = 'kilonewton'`), not as a value in the
+//! wrong unit at its own line.
+
+use super::TirDocument;
+use crate::error::{InputError, InputProblem, ParamError, ParamReason};
+use crate::tyre::mf::MagicFormula;
+use crate::tyre::ModelParameters;
+
+/// Where a `[UNITS]` key declares a unit other than SI: the key, its line
+/// and the unit's usual name.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Declared {
+    key: &'static str,
+    line: usize,
+    unit: &'static str,
+}
+
+/// Unit factors to SI of a file's `[UNITS]` section.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Units {
+    length: f64,
+    force: f64,
+    time: f64,
+    pressure: Option<f64>,
+    /// The declarations of force, length and pressure other than SI.
+    declared: [Option<Declared>; 3],
+}
+
+/// A `[UNITS]` key's table: the names a file may give a unit, its factor
+/// to SI and its usual name.
+type Table = [(&'static [&'static str], f64, &'static str)];
+
+impl Units {
+    /// SI throughout (a fresh file).
+    pub(super) const SI: Units = Units {
+        length: 1.0,
+        force: 1.0,
+        time: 1.0,
+        pressure: None,
+        declared: [None; 3],
+    };
+
+    pub(super) fn factor(&self, key: &str) -> f64 {
+        match key {
+            "FNOMIN" | "FZMIN" | "FZMAX" => self.force,
+            "UNLOADED_RADIUS" | "WIDTH" => self.length,
+            "VERTICAL_STIFFNESS" => self.force / self.length,
+            "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => self.force,
+            // Q_CAM1·Rl and Q_CAM2·Rl² are numbers.
+            "Q_CAM1" => 1.0 / self.length,
+            "Q_CAM2" => 1.0 / (self.length * self.length),
+            "LONGVL" | "VXLOW" => self.length / self.time,
+            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self
+                .pressure
+                .unwrap_or(self.force / (self.length * self.length)),
+            _ => 1.0,
+        }
+    }
+
+    /// The one declaration other than SI that converts `key`'s value
+    /// (none for a key converted by two, or by none).
+    fn declaration(&self, key: &str) -> Option<Declared> {
+        match key {
+            "FNOMIN" | "FZMIN" | "FZMAX" | "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => self.declared[0],
+            "UNLOADED_RADIUS" | "WIDTH" => self.declared[1],
+            // A pressure without PRESSURE is in FORCE/LENGTH², two lines.
+            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self.declared[2],
+            _ => None,
+        }
+    }
+}
+
+impl TirDocument {
+    /// The unit of `[UNITS]` key `key` by `table`: its factor, and where it
+    /// is other than SI, its declaration; `None` when the file gives none.
+    fn unit(
+        &self,
+        key: &'static str,
+        table: &Table,
+    ) -> Result<Option<(f64, Option<Declared>)>, InputError> {
+        let Some((line, name)) = self.text(key) else {
+            return Ok(None);
+        };
+        let name = name.replace(' ', "_");
+        let (_, factor, unit) = table
+            .iter()
+            .find(|(names, _, _)| names.contains(&name.as_str()))
+            .ok_or_else(|| self.at(line, InputProblem::TirUnknownUnit { key, unit: name }))?;
+        let declared = (*factor != 1.0).then_some(Declared { key, line, unit });
+        Ok(Some((*factor, declared)))
+    }
+
+    pub(super) fn units(&self) -> Result<Units, InputError> {
+        let (length, at_length) = self
+            .unit(
+                "LENGTH",
+                &[
+                    (&["meter", "metre", "m", "meters"], 1.0, "m"),
+                    (&["mm", "millimeter", "millimetre"], 1e-3, "mm"),
+                    (&["cm", "centimeter", "centimetre"], 1e-2, "cm"),
+                    (&["km", "kilometer"], 1e3, "km"),
+                    (&["inch", "in"], 0.0254, "inches"),
+                    (&["foot", "feet", "ft"], 0.3048, "feet"),
+                ],
+            )?
+            .unwrap_or((1.0, None));
+        let (force, at_force) = self
+            .unit(
+                "FORCE",
+                &[
+                    (&["newton", "n", "newtons"], 1.0, "N"),
+                    (&["kn", "kilonewton", "kilo_newton"], 1e3, "kN"),
+                    (&["pound_force", "lbf", "pound"], 4.448_221_615_260_5, "lbf"),
+                    (&["kg_force", "kgf"], 9.806_65, "kgf"),
+                ],
+            )?
+            .unwrap_or((1.0, None));
+        let (time, _) = self
+            .unit(
+                "TIME",
+                &[
+                    (&["second", "sec", "s", "seconds"], 1.0, "s"),
+                    (&["millisecond", "ms"], 1e-3, "ms"),
+                    (&["minute", "min"], 60.0, "minutes"),
+                    (&["hour", "h"], 3600.0, "hours"),
+                ],
+            )?
+            .unwrap_or((1.0, None));
+        let pressure = self.unit(
+            "PRESSURE",
+            &[
+                (&["pascal", "pa", "n/m2", "n/m^2"], 1.0, "Pa"),
+                (&["kpa", "kilopascal"], 1e3, "kPa"),
+                (&["mpa", "megapascal"], 1e6, "MPa"),
+                (&["bar"], 1e5, "bar"),
+                (&["psi"], 6_894.757_293_168, "psi"),
+            ],
+        )?;
+        if let Some((line, a)) = self.text("ANGLE") {
+            if !["radians", "radian", "rad"].contains(&a.as_str()) {
+                return Err(self.at(line, InputProblem::TirAngleNotRadians { unit: a }));
+            }
+        }
+        Ok(Units {
+            length,
+            force,
+            time,
+            pressure: pressure.map(|p| p.0),
+            declared: [at_force, at_length, pressure.and_then(|p| p.1)],
+        })
+    }
+
+    /// `e`, a refusal of `tyre`'s value at `e.key` that is out of its
+    /// range, said as the `[UNITS]` slip it is where the key's unit is
+    /// declared other than SI and the value as written passes the checks
+    /// of its key read in SI (values in N under `FORCE = 'kilonewton'`,
+    /// in metres under `LENGTH = 'mm'`); else `e` as it is (a file that
+    /// declares metres and writes millimetres keeps the value's own hint).
+    pub(super) fn declared_slip(
+        &self,
+        tyre: &MagicFormula,
+        units: &Units,
+        e: ParamError,
+    ) -> ParamError {
+        let (Some(d), Some(v), ParamReason::OutOfRange { lo, hi, .. }) =
+            (units.declaration(&e.key), e.value.number(), &e.reason)
+        else {
+            return e;
+        };
+        let written = v / units.factor(&e.key);
+        let mut as_written = tyre.clone();
+        if !as_written.coefficients.set(&e.key, written) {
+            as_written.limits.set(&e.key, written);
+        }
+        let still = as_written
+            .validate()
+            .and_then(|()| ModelParameters::check_sizes(&as_written))
+            .is_err_and(|f| f.key == e.key);
+        if still {
+            return e;
+        }
+        let reason = ParamReason::tir_declared_unit(written, d.line, (d.key, d.unit), (*lo, *hi));
+        ParamError::new(&e.key, v, reason)
+    }
+}

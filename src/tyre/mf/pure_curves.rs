@@ -1,0 +1,290 @@
+//! A Magic Formula tyre's own pure-slip curves, judged where a `.tir` file
+//! is read: a coefficient ten times too large (`PDY1 = 8.784` for 0.8784,
+//! `PCY1 = 13.332` for 1.3332) passes every size check, yet gives a force
+//! no tyre gives (μ ≈ 6.3 at α = 0.5 rad), or one that turns against its
+//! slip well inside the file's own slip range. The TOML tyres are refused
+//! beyond a friction of [`MAX_FRICTION`]; the same limit holds here.
+//!
+//! Each curve is the pure-slip force (the other slip, camber and the
+//! pressure at the file's own, at `LONGVL`) at three loads: `FNOMIN` and the
+//! ends of `FZMIN..FZMAX` clipped to a quarter and twice `FNOMIN` (a
+//! Magic Formula's load terms are fitted around its nominal load; far
+//! outside, a published file's μ rises past any tyre's, e.g. a negative
+//! `PDY2` towards zero load). The slips: α over (0, min(ALPMAX, 30°)] and
+//! [max(ALPMIN, −30°), 0), κ over (0, min(KPUMAX, 1)] and
+//! [max(KPUMIN, −1), 0), on a grid of [`POINTS`] per side. Units: SI, rad.
+
+use super::{MagicFormula, MfCoefficients};
+use crate::error::{ParamError, ParamReason};
+use crate::tyre::sizes::MAX_FRICTION;
+
+/// Grid points on each side of a curve.
+const POINTS: usize = 600;
+
+/// The largest slip angle judged, rad (30°): beyond a rig's sweep and any
+/// car's, where a file's curve is extrapolation.
+const MAX_ALPHA: f64 = std::f64::consts::FRAC_PI_6;
+
+/// The largest |slip ratio| judged (a locked wheel).
+const MAX_KAPPA: f64 = 1.0;
+
+/// A force against its slip counts as turned once it passes this share of
+/// the load, after the curve has passed it on its own side: smaller ones
+/// are the shifts' (`SVy`, `SHy`: a few per cent of the load at most),
+/// not a turn.
+const TURN: f64 = 0.05;
+
+/// What a scan found wrong, at a load and slip.
+struct Fault {
+    /// |F|/Fz of a peak, or the force (N) of a turn.
+    at: f64,
+    reversal: bool,
+    load: f64,
+    slip: f64,
+}
+
+/// The coefficient names of a channel: peak, its scale, its load
+/// dependence, shape, the shape's scale, curvature.
+struct Names {
+    peak: &'static str,
+    scale: &'static str,
+    per_load: &'static str,
+    shape: &'static str,
+    shape_scale: &'static str,
+    curvature: &'static str,
+}
+
+const LATERAL: Names = Names {
+    peak: "PDY1",
+    scale: "LMUY",
+    per_load: "PDY2",
+    shape: "PCY1",
+    shape_scale: "LCY",
+    curvature: "PEY1",
+};
+
+const LONGITUDINAL: Names = Names {
+    peak: "PDX1",
+    scale: "LMUX",
+    per_load: "PDX2",
+    shape: "PCX1",
+    shape_scale: "LCX",
+    curvature: "PEX1",
+};
+
+impl MagicFormula {
+    /// Ok when the pure lateral curve (`lateral`) and the pure longitudinal
+    /// curve (`longitudinal`) stay within any tyre's: a peak |F|/Fz of at
+    /// most [`MAX_FRICTION`], and no force that turns against its slip by
+    /// more than [`TURN`] of the load. Else the coefficient most likely at
+    /// fault, with the load and slip where it shows.
+    pub(crate) fn check_pure_curves(
+        &self,
+        lateral: bool,
+        longitudinal: bool,
+    ) -> Result<(), ParamError> {
+        for (judged, is_lateral) in [(lateral, true), (longitudinal, false)] {
+            if !judged {
+                continue;
+            }
+            let faults: Vec<Fault> = self
+                .judged_loads()
+                .iter()
+                .filter_map(|&fz| self.scan(is_lateral, fz))
+                .collect();
+            // A too-high peak first: it names the peak coefficient, which
+            // is the clearer slip when both show.
+            let worst = faults
+                .iter()
+                .filter(|f| !f.reversal)
+                .max_by(|a, b| a.at.total_cmp(&b.at));
+            if let Some(f) = worst.or_else(|| faults.first()) {
+                return Err(self.curve_error(is_lateral, f));
+            }
+        }
+        Ok(())
+    }
+
+    /// `FNOMIN` and the ends of the file's load range clipped to a quarter
+    /// and twice `FNOMIN`, N.
+    fn judged_loads(&self) -> [f64; 3] {
+        let fnomin = self.coefficients.FNOMIN;
+        let hi = self
+            .limits
+            .fz_max
+            .unwrap_or(f64::INFINITY)
+            .min(2.0 * fnomin);
+        let lo = self.limits.fz_min.unwrap_or(0.0).max(0.25 * fnomin).min(hi);
+        [lo, fnomin.clamp(lo, hi), hi]
+    }
+
+    /// The first fault of the pure curve at load `fz`: a peak beyond
+    /// [`MAX_FRICTION`] (the highest), else a turn against the slip.
+    fn scan(&self, lateral: bool, fz: f64) -> Option<Fault> {
+        let (lo_key, hi_key, max) = match lateral {
+            true => ("ALPMIN", "ALPMAX", MAX_ALPHA),
+            false => ("KPUMIN", "KPUMAX", MAX_KAPPA),
+        };
+        let speed = self.coefficients.LONGVL;
+        let at = self.at_load(fz, None, 0.0);
+        let force = |x: f64| match lateral {
+            true => at.forces(0.0, x, speed).fy,
+            false => at.forces(x, 0.0, speed).fx,
+        };
+        // The side a small slip pushes to (the stiffness's sign).
+        let own = (force(1e-4) - force(-1e-4)).signum();
+        let ends = [
+            (1.0, self.limits.get(hi_key).unwrap_or(max).min(max)),
+            (-1.0, (-self.limits.get(lo_key).unwrap_or(-max)).min(max)),
+        ];
+        let mut peak: Option<Fault> = None;
+        let mut turn: Option<Fault> = None;
+        for (side, end) in ends.into_iter().filter(|(_, end)| *end > 0.0) {
+            let mut passed = false;
+            for i in 1..=POINTS {
+                let x = side * end * i as f64 / POINTS as f64;
+                let f = force(x);
+                let ratio = f.abs() / fz;
+                if ratio > MAX_FRICTION && peak.as_ref().is_none_or(|p| ratio > p.at) {
+                    peak = Some(Fault {
+                        at: ratio,
+                        reversal: false,
+                        load: fz,
+                        slip: x,
+                    });
+                }
+                let along = side * own * f;
+                passed |= along > TURN * fz;
+                if passed && along < -TURN * fz && turn.is_none() && own != 0.0 {
+                    turn = Some(Fault {
+                        at: f,
+                        reversal: true,
+                        load: fz,
+                        slip: x,
+                    });
+                }
+            }
+        }
+        peak.or(turn)
+    }
+
+    /// The refusal of fault `f` of the `lateral` (else longitudinal) curve,
+    /// at the coefficient most likely at fault.
+    fn curve_error(&self, lateral: bool, f: &Fault) -> ParamError {
+        let c = &self.coefficients;
+        let n = match lateral {
+            true => LATERAL,
+            false => LONGITUDINAL,
+        };
+        let get = |k: &str| c.get(k).unwrap_or(0.0);
+        let shape = get(n.shape) * get(n.shape_scale);
+        let key = match f.reversal {
+            true => most_likely_shape(&n, shape, get(n.shape)),
+            false => most_likely_peak(c, &n, f.load),
+        };
+        let reason = ParamReason::mf_pure_curve(
+            (lateral, key),
+            (f.at, f.reversal),
+            (f.load, f.slip),
+            (shape, c.LONGVL),
+        );
+        ParamError::new(key, get(key), reason)
+    }
+}
+
+/// The coefficient a peak beyond any tyre's is most likely due to: the
+/// peak itself where it alone is beyond, its scale far from the 1 a fit
+/// leaves, the load term where it carries the peak there; else the peak.
+fn most_likely_peak(c: &MfCoefficients, n: &Names, fz: f64) -> &'static str {
+    let get = |k: &str| c.get(k).unwrap_or(0.0);
+    let fz0 = c.FNOMIN * c.LFZO;
+    let dfz = (fz - fz0) / fz0;
+    if get(n.peak).abs() > MAX_FRICTION {
+        n.peak
+    } else if get(n.scale).abs() > 2.0 {
+        n.scale
+    } else if (get(n.peak) + get(n.per_load) * dfz).abs() > MAX_FRICTION {
+        n.per_load
+    } else {
+        n.peak
+    }
+}
+
+/// The coefficient a turn against the slip is most likely due to: with
+/// C = PC?1·LC? above 2 (past which `sin(C·atan(B·x))` turns negative), the
+/// one of the two beyond 2; else the curvature.
+fn most_likely_shape(n: &Names, shape: f64, pc1: f64) -> &'static str {
+    match (shape.abs() > 2.0, pc1.abs() > 2.0) {
+        (true, true) => n.shape,
+        (true, false) => n.shape_scale,
+        (false, _) => n.curvature,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The MF 6.1 sample of the fixtures, as read, before its curves are
+    /// judged.
+    fn sample() -> MagicFormula {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/fixtures/tir/MagicFormula61_Parameters.tir"
+        );
+        crate::io::tir::TirDocument::read(std::path::Path::new(path))
+            .and_then(|d| d.template())
+            .unwrap()
+    }
+
+    fn refused(edit: impl Fn(&mut MfCoefficients)) -> ParamError {
+        let mut t = sample();
+        edit(&mut t.coefficients);
+        t.check_pure_curves(true, true).unwrap_err()
+    }
+
+    #[test]
+    fn a_published_tyres_curves_pass_and_the_loads_are_clipped_about_fnomin() {
+        let t = sample();
+        assert!(t.check_pure_curves(true, true).is_ok());
+        // FZMIN = 0 and FZMAX = 18000 around FNOMIN = 6752: a quarter and
+        // twice FNOMIN.
+        assert_eq!(t.judged_loads(), [1688.0, 6752.0, 13504.0]);
+    }
+
+    /// Each slip is named by the coefficient that makes it: the peak, its
+    /// scale, the shape and its scale, lateral and longitudinal.
+    #[test]
+    fn the_coefficient_at_fault_is_named() {
+        let key = |e: ParamError| (e.key.clone(), e.to_string());
+        let (k, e) = key(refused(|c| c.PDY1 *= 10.0));
+        assert_eq!(k, "PDY1");
+        assert!(e.contains("reach |Fy|/Fz = "), "{e}");
+        assert_eq!(key(refused(|c| c.LMUY = 8.0)).0, "LMUY");
+        let (k, e) = key(refused(|c| c.PCY1 *= 10.0));
+        assert_eq!(k, "PCY1");
+        assert!(e.contains("C = PCY1·LCY = 14.76 lies above 2"), "{e}");
+        assert_eq!(key(refused(|c| c.LCY = 10.0)).0, "LCY");
+        assert_eq!(key(refused(|c| c.PDX1 *= 10.0)).0, "PDX1");
+        assert_eq!(key(refused(|c| c.PCX1 *= 10.0)).0, "PCX1");
+        // A longitudinal block the file does not describe is not judged.
+        let mut t = sample();
+        t.coefficients.PDX1 *= 10.0;
+        assert!(t.check_pure_curves(true, false).is_ok());
+    }
+
+    /// The limit is the TOML tyres' friction 5: a peak just under passes,
+    /// just over is refused (PDY1 alone sets μy at FNOMIN here: the
+    /// sample's PDY2 lowers it above FNOMIN, raises it below).
+    #[test]
+    fn the_peak_limit_is_the_toml_tyres_friction() {
+        let peak = |pdy1: f64| {
+            let mut t = sample();
+            t.coefficients.PDY1 = pdy1;
+            t.check_pure_curves(true, false)
+        };
+        assert!(peak(4.0).is_ok());
+        let e = peak(5.5).unwrap_err().to_string();
+        assert!(e.contains("beyond the friction 5"), "{e}");
+    }
+}

@@ -9,8 +9,9 @@ use std::fs;
 /// ±150 N, so consecutive rows of the thinned file differ by 31–53 N, read
 /// as noise, and the separation it set joined the five loads into three
 /// (every 2nd row) or one (every 4th, refused: "the data has 1: 1677 N").
-/// Each rate now finds the full file's five loads, within 3 N of their
-/// nominals, and fits them as the full file does.
+/// Each rate, from whichever row it starts, now finds the full file's five
+/// loads, within 5 N of their nominals, and fits them as the full file
+/// does.
 #[test]
 fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
     let test = "a_rig_file_kept_every_few_rows_keeps_its_loads_apart";
@@ -22,11 +23,13 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
     let header = lines.next().unwrap();
     let rows: Vec<&str> = lines.collect();
     let dir = tempfile::tempdir().unwrap();
-    for every in [2, 4, 8] {
-        let kept: Vec<&str> = rows.iter().step_by(every).copied().collect();
-        let file = dir.path().join(format!("every_{every}.csv"));
+    // Every 8th row from the 4th (or 6th, 8th) split the lightest load
+    // off and merged the other four into one at 2142 N.
+    for (every, from) in [(2, 0), (4, 0), (8, 0), (8, 3), (8, 5), (8, 7)] {
+        let kept: Vec<&str> = rows.iter().skip(from).step_by(every).copied().collect();
+        let file = dir.path().join(format!("every_{every}_from_{from}.csv"));
         fs::write(&file, format!("{header}\n{}\n", kept.join("\n"))).unwrap();
-        let out = dir.path().join(format!("every_{every}.toml"));
+        let out = dir.path().join(format!("every_{every}_from_{from}.toml"));
         let o = run(&[
             "identify",
             file.to_str().unwrap(),
@@ -39,6 +42,7 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
             "--out",
             out.to_str().unwrap(),
         ]);
+        let every = format!("{every} from {from}");
         assert!(o.status.success(), "every {every}: {}", stderr(&o));
         let report = read_json(&out.with_extension("report.json"));
         let loads = &report["grouping"]["levels"][0];
@@ -51,7 +55,7 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
             .collect();
         assert_eq!(nominals.len(), 5, "every {every}: {nominals:?}");
         for (got, full) in nominals.iter().zip([534.0, 1095.0, 1656.0, 2193.0, 2751.0]) {
-            assert!((got - full).abs() < 3.0, "every {every}: {nominals:?}");
+            assert!((got - full).abs() < 5.0, "every {every}: {nominals:?}");
         }
         assert_eq!(report["curves"].as_array().unwrap().len(), 5);
         let sigma = report["sigma_percent"].as_f64().unwrap();

@@ -191,25 +191,8 @@ fn spread_within(sorted: &[f64], resolution: f64) -> f64 {
 /// Splits one gap-separated group at density valleys and records its levels.
 fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Levels) {
     let (lo, hi) = (group[0], group[group.len() - 1]);
-    let push = |out: &mut Levels, part: &[f64]| {
-        if part.len() < 3 {
-            out.transition_samples += part.len();
-        } else {
-            out.levels.push(Level {
-                lo: part[0],
-                hi: part[part.len() - 1],
-                nominal: median(part),
-                samples: part.len(),
-            });
-        }
-    };
     if hi - lo <= 8.0 * separation {
-        let parts = split_own_scale(group, resolution);
-        let kept: usize = parts.iter().map(|r| r.len()).sum();
-        out.transition_samples += group.len() - kept;
-        for r in parts {
-            push(out, &group[r]);
-        }
+        push_own_scale(group, resolution, out);
         return;
     }
     let nb = ((hi - lo) / separation).ceil() as usize;
@@ -230,8 +213,34 @@ fn split_valleys(group: &[f64], separation: f64, resolution: f64, out: &mut Leve
         while j < group.len() && counts[bin(group[j])] >= keep {
             j += 1;
         }
-        push(out, &group[i..j]);
+        // Bins a separation wide see no valley narrower than one: the
+        // part is looked at on its own scale too (the Hoosier file kept
+        // every 8th row from its 4th split its lightest load off here and
+        // kept the other four as one).
+        push_own_scale(&group[i..j], resolution, out);
         i = j;
+    }
+}
+
+/// Records the levels of `part` split on its own scale
+/// ([`split_own_scale`]); a part of fewer than three samples is ramp or
+/// isolated samples, counted as transitions.
+fn push_own_scale(part: &[f64], resolution: f64, out: &mut Levels) {
+    let ranges = split_own_scale(part, resolution);
+    let kept: usize = ranges.iter().map(|r| r.len()).sum();
+    out.transition_samples += part.len() - kept;
+    for r in ranges {
+        let level = &part[r];
+        if level.len() < 3 {
+            out.transition_samples += level.len();
+        } else {
+            out.levels.push(Level {
+                lo: level[0],
+                hi: level[level.len() - 1],
+                nominal: median(level),
+                samples: level.len(),
+            });
+        }
     }
 }
 
@@ -242,8 +251,7 @@ const OWN_SCALE_BINS: usize = 32;
 /// valley to split it on its own scale.
 const OWN_SCALE_MODE: f64 = 0.05;
 
-/// Splits `group` (sorted, spanning at most eight separations) at empty
-/// valleys of its own histogram, `OWN_SCALE_BINS` bins across it: a rig's
+/// Splits `group` (sorted) at empty valleys of its own histogram, `OWN_SCALE_BINS` bins across it: a rig's
 /// load varies with slip along a sweep by ±150 N, and a file keeping every
 /// fourth row makes consecutive samples differ by that much, so the noise
 /// read from them (53 N for the Hoosier file, 16 N at full rate) sets a
@@ -424,13 +432,19 @@ mod tests {
                 v.extend((0..40).map(|i| f + (next - f) * f64::from(i) / 40.0));
             }
         }
-        for every in [1, 2, 4, 8, 16] {
-            let kept: Vec<f64> = v.iter().step_by(every).copied().collect();
+        // From every row the thinning may start at: which rows are kept
+        // decided it (every 8th from the 4th merged four loads).
+        let thinned = [1, 2, 4, 8, 16]
+            .into_iter()
+            .flat_map(|every| (0..every).map(move |from| (every, from)));
+        for (every, from) in thinned {
+            let kept: Vec<f64> = v.iter().skip(from).step_by(every).copied().collect();
             let l = levels(Variable::Load, &kept, 10.0);
             let got = nominals(&l);
-            assert_eq!(got.len(), 5, "every {every}: {got:?}");
+            let at = format!("every {every} from {from}: {got:?}");
+            assert_eq!(got.len(), 5, "{at}");
             for (g, want) in got.iter().zip(loads) {
-                assert!((g - want).abs() < 15.0, "every {every}: {got:?}");
+                assert!((g - want).abs() < 15.0, "{at}");
             }
             let accounted: usize =
                 l.levels.iter().map(|q| q.samples).sum::<usize>() + l.transition_samples;
@@ -438,7 +452,7 @@ mod tests {
             // The ramps and the sparse tails of the levels, no more.
             assert!(
                 l.transition_samples * 50 < kept.len(),
-                "every {every}: {}",
+                "{at}: {}",
                 l.transition_samples
             );
         }

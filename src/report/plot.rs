@@ -11,6 +11,10 @@
 
 pub use super::colour::{colormap, ColourScale, ScaleKind};
 pub use super::series::LABEL_PX;
+
+/// The size of a panel's title, px, where it fits the panel's width (a
+/// longer one is set smaller, down to 11 px).
+const TITLE_PX: u32 = 16;
 pub use super::series::{palette, Marker, Series, Shape, Style, INK, MEASURED_DOTS};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
@@ -237,6 +241,24 @@ where
     DB::ErrorType: 'static,
 {
     let keyed = panel.keyed();
+    // The title over the whole panel, key column included, at a size that
+    // fits it: centred over the chart alone, a long one ran off the
+    // image's left edge in a grid's first column.
+    let titled;
+    let area = if panel.title.is_empty() {
+        area
+    } else {
+        let room = area.dim_in_pixel().0.saturating_sub(16);
+        let size = (11..=TITLE_PX)
+            .rev()
+            .find(|px| {
+                area.estimate_text_size(&panel.title, &("sans-serif", *px).into_text_style(area))
+                    .is_ok_and(|(w, _)| w <= room)
+            })
+            .unwrap_or(11);
+        titled = area.titled(&panel.title, ("sans-serif", size))?;
+        &titled
+    };
     let width = area.dim_in_pixel().0 as i32;
     // The key beside the chart, or below it when the panel is too narrow
     // to give up a column.
@@ -256,7 +278,6 @@ where
         y: (y0, y1),
     } = panel.axes();
     let mut chart = ChartBuilder::on(&plot)
-        .caption(&panel.title, ("sans-serif", 16))
         .margin(8)
         .x_label_area_size(36)
         .y_label_area_size(64)
@@ -388,201 +409,5 @@ where
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The numbers of attribute `attr` of every `<tag` element of an SVG.
-    fn attrs(svg: &str, tag: &str, attr: &str) -> Vec<f64> {
-        svg.split(&format!("<{tag} "))
-            .skip(1)
-            .filter_map(|e| {
-                let e = format!(" {e}");
-                let at = e.find(&format!(" {attr}=\""))? + attr.len() + 3;
-                e[at..].split('"').next()?.parse().ok()
-            })
-            .collect()
-    }
-
-    /// (x, content) of every `<text>` element of an SVG.
-    fn texts(svg: &str) -> Vec<(f64, String)> {
-        svg.split("<text ")
-            .skip(1)
-            .filter_map(|e| {
-                let x = attrs(&format!("<text {e}"), "text", "x").first().copied()?;
-                let body = e.split_once('>')?.1.split("</text>").next()?;
-                Some((x, body.trim().to_string()))
-            })
-            .collect()
-    }
-
-    /// One panel `width` px wide: `n` measured points and a model line.
-    fn measured_and_model(n: u32, width: u32) -> Figure {
-        let x: Vec<f64> = (0..n).map(f64::from).collect();
-        Figure {
-            width,
-            ..Figure::stack(vec![Panel {
-                series: vec![
-                    Series::line("measured", &x, &x, 0).styled(Style::Points(2)),
-                    Series::line("base model", &x, &x, 1),
-                ],
-                ..Panel::default()
-            }])
-        }
-    }
-
-    #[test]
-    fn the_key_sits_beside_the_data_never_over_it() {
-        let fig = measured_and_model(50, 900);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let edge = f64::from(900 - SIDE);
-        let circles = attrs(&svg, "circle", "cx");
-        // Every data point left of the key's column, the key's swatch in it.
-        assert_eq!(circles.iter().filter(|&&c| c < edge).count(), 50);
-        assert_eq!(circles.iter().filter(|&&c| c >= edge).count(), 1);
-        let labels: Vec<(f64, String)> = texts(&svg)
-            .into_iter()
-            .filter(|(_, t)| t == "measured" || t == "base model")
-            .collect();
-        assert_eq!(labels.len(), 2, "{svg}");
-        assert!(labels.iter().all(|(x, _)| *x >= edge), "{labels:?}");
-    }
-
-    #[test]
-    fn stacked_panels_share_one_time_axis_whether_or_not_they_have_a_key() {
-        // A steer without a key above a yaw rate with one (simulate's
-        // response.png): t = 10 s falls at one x in both.
-        let t: Vec<f64> = (0..=10).map(f64::from).collect();
-        let y: Vec<f64> = t.iter().map(|t| 0.05 * t).collect();
-        let panel = |label: &str| Panel {
-            series: vec![Series::line(label, &t, &y, 0)],
-            x_range: Some((0.0, 10.0)),
-            ..Panel::default()
-        };
-        let fig = Figure::stack(vec![panel(""), panel("model")]);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let tens: Vec<f64> = texts(&svg)
-            .into_iter()
-            .filter(|(_, t)| t == "10")
-            .map(|(x, _)| x)
-            .collect();
-        assert_eq!(tens.len(), 2, "{svg}");
-        assert!((tens[0] - tens[1]).abs() < 0.5, "{tens:?}");
-        // Alone, an unkeyed panel takes the whole width.
-        let alone = Figure::stack(vec![panel("")])
-            .svg(Path::new("t.svg"))
-            .unwrap();
-        let ten = texts(&alone)
-            .into_iter()
-            .find(|(_, t)| t == "10")
-            .unwrap()
-            .0;
-        assert!(ten > tens[0] + 0.5 * f64::from(SIDE), "{ten} {tens:?}");
-    }
-
-    #[test]
-    fn tick_labels_are_written_as_a_reader_writes_numbers() {
-        assert_eq!(tick_label(-30.0, 20.0), "-30");
-        assert_eq!(tick_label(10000.0, 20000.0), "10000");
-        assert_eq!(tick_label(2.5, 20.0), "2.5");
-        assert_eq!(tick_label(0.30000000000000004, 1.0), "0.3");
-        assert_eq!(tick_label(0.025, 0.1), "0.025");
-        assert_eq!(tick_label(-1e-17, 2.0), "0");
-        assert_eq!(tick_label(1.5e-4, 1e-3), "0.00015");
-    }
-
-    #[test]
-    fn no_axis_tick_of_a_drawn_figure_ends_in_a_lone_zero_decimal() {
-        // Axes over −30..30 deg and −10000..10000 N: plotters' own labels
-        // would read `-30.0` and `10000.0`.
-        let x = [-30.0, 0.0, 30.0];
-        let fig = Figure::stack(vec![Panel {
-            series: vec![Series::line("", &x, &[-10000.0, 0.0, 10000.0], 0)],
-            x_range: Some((-30.0, 30.0)),
-            y_range: Some((-10000.0, 10000.0)),
-            ..Panel::default()
-        }]);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let ticks: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
-        for t in ["-30", "0", "30", "-10000", "10000"] {
-            assert!(ticks.iter().any(|s| s == t), "{t} missing from {ticks:?}");
-        }
-        assert!(
-            ticks.iter().all(|t| !t.ends_with(".0")),
-            "a tick ends in .0: {ticks:?}"
-        );
-    }
-
-    #[test]
-    fn the_axes_drawn_are_the_fixed_ranges_or_the_datas_with_a_margin() {
-        let p = Panel {
-            series: vec![Series::line("", &[0.0, 10.0], &[-1.0, 3.0], 0)],
-            ..Panel::default()
-        };
-        assert_eq!(
-            p.axes(),
-            Axes {
-                x: (-0.5, 10.5),
-                y: (-1.2, 3.2)
-            }
-        );
-        let fixed = Panel {
-            y_range: Some((0.0, 1.0)),
-            ..p
-        };
-        assert_eq!(fixed.axes().y, (0.0, 1.0));
-        // 13 px labels on a 1000 px figure print at 6.3 pt at 170 mm.
-        let f = Figure::stack(vec![]);
-        assert!((f.printed_label_points() - 6.26).abs() < 0.01);
-    }
-
-    #[test]
-    fn a_heat_map_has_a_colour_bar_with_its_unit_scale_ticks_and_missing_cells() {
-        let (x, y) = (vec![0.0, 1.0, 0.0, 1.0], vec![0.0, 0.0, 1.0, 1.0]);
-        let values = vec![1.0, 10.0, 100.0, f64::NAN];
-        let fig = Figure::stack(vec![Panel {
-            series: vec![Series::heat(&x, &y, values, (1.0, 1.0), "TB [s·deg]")],
-            ..Panel::default()
-        }]);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let texts: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
-        for text in [
-            "TB [s·deg]",
-            "log scale",
-            "1.000",
-            "10.0",
-            "100",
-            "no value",
-        ] {
-            assert!(
-                texts.iter().any(|t| t == text),
-                "{text} missing from {texts:?}"
-            );
-        }
-    }
-
-    #[test]
-    fn a_narrow_panel_keeps_its_key_below_the_chart() {
-        let fig = measured_and_model(20, 320);
-        let svg = fig.svg(Path::new("test.svg")).unwrap();
-        let lowest = attrs(&svg, "circle", "cy")
-            .into_iter()
-            .take(20)
-            .fold(f64::NEG_INFINITY, f64::max);
-        for label in ["measured", "base model"] {
-            let y: Vec<f64> = svg
-                .split("<text ")
-                .skip(1)
-                .filter(|e| {
-                    let body = e.split_once('>').map_or("", |b| b.1);
-                    body.split("</text>").next().map(str::trim) == Some(label)
-                })
-                .filter_map(|e| attrs(&format!("<text {e}"), "text", "y").first().copied())
-                .collect();
-            assert!(!y.is_empty(), "{label} missing from a 320 px panel");
-            assert!(
-                y.iter().all(|&y| y > lowest),
-                "{label} at {y:?}, data down to {lowest}"
-            );
-        }
-    }
-}
+#[path = "plot_tests.rs"]
+mod tests;

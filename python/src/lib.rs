@@ -142,7 +142,7 @@ fn unit_slip_key_value(u: &UnitSlip) -> (Option<&str>, Option<f64>) {
             (Some("pressure"), Some(*value))
         }
         UnitSlip::SpeedBeyondAnyCar { value, .. }
-        | UnitSlip::SpeedInKmh { value, .. }
+        | UnitSlip::SpeedPerHour { value, .. }
         | UnitSlip::SpeedBackwards { value, .. } => (Some("speed"), Some(*value)),
         UnitSlip::BetaInDegrees { value, .. } | UnitSlip::BetaDeclaredInDegrees { value, .. } => {
             (Some("beta"), Some(*value))

@@ -120,7 +120,7 @@ pub enum UnitSlip {
     /// A speed whose product with the yaw rate is about 3.6 times the
     /// lateral acceleration: in km/h (or 2.237 times: in mph).
     #[error("column `speed`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (1/{} = {}): is `speed` in {}? divide it by {} (FORMATS.md: m/s)", Num(*value), fixed(*median, 3), plural(*samples, "sample", "samples"), Num(*turning), unit.per_m_s(), fixed(1.0 / unit.per_m_s(), 3), unit.name(), unit.per_m_s())]
-    SpeedInKmh {
+    SpeedPerHour {
         /// The unit the ratio points to.
         unit: SpeedUnit,
         /// The speed at the first turning sample, as read.

@@ -132,11 +132,21 @@ const RIG_NAMES: [(&str, &str); 6] = [
     ("v", "speed"),
 ];
 
-/// The column a header's rig channel name means ([`RIG_NAMES`]), by its
-/// first word (`SA_deg`, `P [kPa]`), where `among` holds it.
-fn rig_name<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
+/// A header's name lower-cased, without a unit written after it
+/// (`FZ_kN`, `SA_deg`, `P [kPa]`: `fz`, `sa`, `p`).
+fn first_word(h: &str) -> String {
     let lower = h.to_lowercase();
-    let first = lower.split(['_', '-', ' ', '[', '(']).next()?;
+    lower
+        .split(['_', '-', ' ', '[', '('])
+        .next()
+        .unwrap_or_default()
+        .to_string()
+}
+
+/// The column a header's rig channel name means ([`RIG_NAMES`]), by its
+/// [`first_word`], where `among` holds it.
+fn rig_name<'a>(h: &str, among: &[&'a str]) -> Option<&'a str> {
+    let first = first_word(h);
     let (_, ours) = RIG_NAMES.iter().find(|(rig, _)| *rig == first)?;
     among.iter().copied().find(|n| n == ours)
 }
@@ -154,14 +164,15 @@ fn meant(
     optional: &[&str],
 ) -> Option<(usize, String)> {
     let time = |h: &str| name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str());
-    // The name in capitals (`FZ`), then with a unit after it (`FZ_kN`),
-    // then the nearest spelling: `MZ` is one letter from `fz` in capitals
-    // but means `mz`, and was named for `fz` where `FZ_kN` stood.
+    // The name in capitals (`FZ`), then with a unit after it (`FZ_kN`) or
+    // as a rig's channel (`SA`), then the nearest spelling: `MZ` is one
+    // letter from `fz` in capitals but means `mz`, and was named for `fz`
+    // where `FZ_kN` stood.
     let rank = |h: &str| {
         let lower = h.to_lowercase();
         if time(h) || lower == name {
             0
-        } else if lower.split(['_', '-', ' ', '[', '(']).next() == Some(name) {
+        } else if first_word(h) == name || rig_name(h, &[name]).is_some() {
             1
         } else {
             2 + crate::format::edit_distance(&lower, name)
@@ -176,10 +187,7 @@ fn meant(
                 || time(h)
                 || rig_name(h, &[name]).is_some()
         })
-        .min_by_key(|(_, h)| match rig_name(h, &[name]) {
-            Some(_) => 1,
-            None => rank(h),
-        })
+        .min_by_key(|(_, h)| rank(h))
         .map(|(i, h)| (i + 1, h.to_string()))
 }
 

@@ -175,7 +175,7 @@ pub(super) fn check_ay(
         // ay and yaw rate agree with each other's units (checked above and
         // by their sizes); speed × yaw rate 3.6 (2.237) times ay is a speed
         // in km/h (mph) whose values stay below any car's top speed in m/s.
-        let slip = UnitSlip::SpeedInKmh {
+        let slip = UnitSlip::SpeedPerHour {
             unit,
             value: speed[i],
             median: m,

@@ -21,7 +21,12 @@ fn csv(header: &str, rows: &[Vec<f64>]) -> String {
 
 /// Runs `identify` on `file` in `dir` with `extra` flags; returns the
 /// report and stdout, or panics with stderr.
-fn identify(dir: &Path, file: &str, model: &str, extra: &[&str]) -> (serde_json::Value, String) {
+pub(super) fn identify(
+    dir: &Path,
+    file: &str,
+    model: &str,
+    extra: &[&str],
+) -> (serde_json::Value, String) {
     let out = dir.join("fit.toml");
     let data = dir.join(file);
     let mut args = vec![
@@ -38,6 +43,18 @@ fn identify(dir: &Path, file: &str, model: &str, extra: &[&str]) -> (serde_json:
     let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
     crate::identify::assert_tidy_output(&stdout);
     (read_json(&dir.join("fit.report.json")), stdout)
+}
+
+/// The nominal loads of a fit's report, ascending.
+pub(super) fn load_nominals(report: &serde_json::Value) -> Vec<f64> {
+    let loads = &report["grouping"]["levels"][0];
+    assert_eq!(loads["variable"], "load");
+    loads["levels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["nominal"].as_f64().unwrap())
+        .collect()
 }
 
 fn lateral_rows(loads: &[f64], alphas: &[f64]) -> Vec<Vec<f64>> {
@@ -164,14 +181,7 @@ fn close_bicycle_tyre_loads_stay_four_levels() {
     }
     let dir = scratch(&[("rig.csv", &csv("fz,alpha,fy", &rows))]);
     let (report, stdout) = identify(dir.path(), "rig.csv", "pac89", &[]);
-    let loads = &report["grouping"]["levels"][0];
-    assert_eq!(loads["variable"], "load");
-    let nominal: Vec<f64> = loads["levels"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|l| l["nominal"].as_f64().unwrap())
-        .collect();
+    let nominal = load_nominals(&report);
     assert_eq!(nominal.len(), 4, "{stdout}");
     for (n, want) in nominal.iter().zip([340.0, 390.0, 440.0, 490.0]) {
         assert!((n - want).abs() < 2.0, "{nominal:?}");

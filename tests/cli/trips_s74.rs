@@ -27,32 +27,17 @@ fn a_rig_file_kept_every_few_rows_keeps_its_loads_apart() {
     // off and merged the other four into one at 2142 N.
     for (every, from) in [(2, 0), (4, 0), (8, 0), (8, 3), (8, 5), (8, 7)] {
         let kept: Vec<&str> = rows.iter().skip(from).step_by(every).copied().collect();
-        let file = dir.path().join(format!("every_{every}_from_{from}.csv"));
-        fs::write(&file, format!("{header}\n{}\n", kept.join("\n"))).unwrap();
-        let out = dir.path().join(format!("every_{every}_from_{from}.toml"));
-        let o = run(&[
-            "identify",
-            file.to_str().unwrap(),
-            "--model",
-            "pac89",
-            "--pressure",
-            "83000",
-            "--camber",
-            "0",
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let sub = dir.path().join(format!("every_{every}_from_{from}"));
+        fs::create_dir(&sub).unwrap();
+        fs::write(
+            sub.join("rig.csv"),
+            format!("{header}\n{}\n", kept.join("\n")),
+        )
+        .unwrap();
+        let extra = ["--pressure", "83000", "--camber", "0"];
+        let (report, _) = super::rig_layouts::identify(&sub, "rig.csv", "pac89", &extra);
         let every = format!("{every} from {from}");
-        assert!(o.status.success(), "every {every}: {}", stderr(&o));
-        let report = read_json(&out.with_extension("report.json"));
-        let loads = &report["grouping"]["levels"][0];
-        assert_eq!(loads["variable"], "load");
-        let nominals: Vec<f64> = loads["levels"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|l| l["nominal"].as_f64().unwrap())
-            .collect();
+        let nominals = super::rig_layouts::load_nominals(&report);
         assert_eq!(nominals.len(), 5, "every {every}: {nominals:?}");
         for (got, full) in nominals.iter().zip([534.0, 1095.0, 1656.0, 2193.0, 2751.0]) {
             assert!((got - full).abs() < 5.0, "every {every}: {nominals:?}");

@@ -244,21 +244,22 @@ fn push_own_scale(part: &[f64], resolution: f64, out: &mut Levels) {
     }
 }
 
-/// Bins across a group no wider than eight separations when its valleys
-/// are looked for on its own scale.
+/// Bins across a group (or a part the separation-wide bins found) when
+/// its valleys are looked for on its own scale.
 const OWN_SCALE_BINS: usize = 32;
 /// Share of a group's samples each side of a valley must hold for the
 /// valley to split it on its own scale.
 const OWN_SCALE_MODE: f64 = 0.05;
 
-/// Splits `group` (sorted) at empty valleys of its own histogram, `OWN_SCALE_BINS` bins across it: a rig's
-/// load varies with slip along a sweep by ±150 N, and a file keeping every
-/// fourth row makes consecutive samples differ by that much, so the noise
-/// read from them (53 N for the Hoosier file, 16 N at full rate) sets a
-/// separation that joins its five loads 560 N apart into one group. Two
-/// levels stay apart where a run of bins below the valley count lies
-/// at least `resolution` wide (no gap of a quantised channel's steps) lies
-/// between parts each holding `OWN_SCALE_MODE` of the group; the valley's
+/// Splits `group` (sorted) at empty valleys of its own histogram,
+/// [`OWN_SCALE_BINS`] bins across it: a rig's load varies with slip along
+/// a sweep by ±150 N, and a file keeping every fourth row makes
+/// consecutive samples differ by that much, so the noise read from them
+/// (53 N for the Hoosier file, 16 N at full rate) sets a separation that
+/// joins its five loads 560 N apart into one group. Two levels stay apart
+/// where a run of bins below the valley count, at least `resolution` wide
+/// (no gap of a quantised channel's steps), lies between parts each
+/// holding [`OWN_SCALE_MODE`] of the group; the valley's
 /// samples are transitions, a level's tails stay with it (a single level,
 /// however noisy, has no interior valley and is kept whole). Returns the
 /// parts as index ranges of `group`.

@@ -261,7 +261,7 @@ pub(crate) fn zero_outputs(
     f: &[PointForces],
     unread: &[Unread],
 ) -> Vec<ZeroOutput> {
-    let kappa_unread = unread.iter().any(|u| u.column == "kappa");
+    let kappa_unread = super::unread::is_unread(unread, "kappa");
     [Output::Fx, Output::Mx, Output::My, Output::Mz]
         .into_iter()
         .filter(|o| !(*o == Output::Fx && kappa_unread))

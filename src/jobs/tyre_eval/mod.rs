@@ -399,7 +399,7 @@ pub fn run(
     });
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
-    let slip_past_lock = if unread.iter().any(|u| u.column == "kappa") {
+    let slip_past_lock = if unread::is_unread(&unread, "kappa") {
         None
     } else {
         slip_ratio::past_lock(kappa, &file.lines)
@@ -413,7 +413,7 @@ pub fn run(
     let radius_above_free = std::mem::take(&mut extras.radius_above_free);
     let loads_left =
         model_loads::loads_left((&tyre, tyre_path), fitted_ranges.as_ref(), fz, &file.lines);
-    let camber_read = !unread.iter().any(|u| u.column == "camber");
+    let camber_read = !unread::is_unread(&unread, "camber");
     let steep_camber = camber::steep_camber(
         &tyre,
         fitted_ranges.as_ref(),

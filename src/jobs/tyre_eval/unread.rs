@@ -61,6 +61,11 @@ pub(crate) struct Points<'a> {
 /// it is changed to.
 type Probe = (&'static str, usize, fn(f64) -> f64);
 
+/// Whether `column` is among the columns the model does not read.
+pub(crate) fn is_unread(unread: &[Unread], column: &str) -> bool {
+    unread.iter().any(|u| u.column == column)
+}
+
 /// The columns of `p` that `tyre` does not read, given its outputs `f`
 /// at them.
 pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> {

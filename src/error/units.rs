@@ -132,6 +132,23 @@ pub enum UnitSlip {
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
     },
+    /// A speed whose change is about 3.6 (2.237) times what `ax`
+    /// integrates to: in km/h (mph), judged where the run has no `ay`.
+    #[error("column `speed`: {} where `ax` integrated over {} of {} s in which the speed changes by {} or more is a median {} of that change, where a car's longitudinal acceleration integrates to its change of speed (1/{} = {}): is `speed` in {}? divide it by {} (FORMATS.md: m/s)", Num(*value), plural(*stretches, "stretch", "stretches"), Num(*span), Num(*change), fixed(*median, 3), unit.per_m_s(), fixed(1.0 / unit.per_m_s(), 3), unit.name(), unit.per_m_s())]
+    SpeedPerHourByAx {
+        /// The unit the ratio points to.
+        unit: SpeedUnit,
+        /// The speed at the first stretch judged, as read.
+        value: f64,
+        /// Median of ∫ax dt / Δspeed over the stretches.
+        median: f64,
+        /// Stretches judged.
+        stretches: usize,
+        /// Their length, s.
+        span: f64,
+        /// The least speed change of a stretch judged, as read.
+        change: f64,
+    },
     /// A yaw rate whose speed × yaw rate is 57 times the lateral
     /// acceleration: in deg/s, below the size check's limit.
     #[error("column `yaw_rate`: {} where `ay` is a median {} of speed × yaw_rate over {} turning at |speed × yaw_rate| ≥ {} m/s², where a car's lateral acceleration is about speed × yaw_rate (π/180 = 0.0175): is `yaw_rate` in deg/s? Convert it, or say so: `degrees = [\"yaw_rate\"]` under [runs] in a campaign or a replay's [manoeuvre], `--degrees yaw_rate` to `metrics`", Num(*value), fixed(*median, 4), plural(*samples, "sample", "samples"), Num(*turning))]

@@ -7,7 +7,7 @@
 use super::columns::{read_columns_with_slips, Layout, Slip};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
-    check_time_step, check_yaw_rate,
+    check_speed_by_ax, check_time_step, check_yaw_rate,
 };
 use crate::error::{InputError, InputProblem};
 use crate::measured::MeasuredRun;
@@ -257,8 +257,13 @@ fn read_run_lacking(
     let (speed, yaw_rate, ay) = (c.take("speed"), c.take("yaw_rate"), c.take_optional("ay"));
     check_speed(path, &c, &speed)?;
     check_yaw_rate(path, &c, &yaw_rate)?;
-    if let Some(ay) = &ay {
-        check_ay(path, &c, &speed, &yaw_rate, ay)?;
+    let ax = c.take_optional("ax");
+    match (&ay, &ax) {
+        (Some(ay), _) => check_ay(path, &c, &speed, &yaw_rate, ay)?,
+        // No lateral accelerometer to judge the speed's unit by: the
+        // longitudinal one, against the speed's change.
+        (None, Some(ax)) => check_speed_by_ax(path, &c, &t, &speed, ax)?,
+        (None, None) => {}
     }
     let (roll, bank) = (c.take_optional("roll"), c.take_optional("bank"));
     let beta = c.take_optional("beta");
@@ -283,7 +288,7 @@ fn read_run_lacking(
         beta,
         roll,
         bank,
-        ax: c.take_optional("ax"),
+        ax,
         masked: Vec::new(),
     };
     Ok((run, RunHeader { unread, slips }, absent))

@@ -368,3 +368,73 @@ pub(super) fn check_roll_or_bank(
     };
     Err(c.error_at(path, i, column, slip.into()))
 }
+
+/// The stretch over which `ax` is integrated against the speed's change, s
+/// (long against an accelerometer's noise and a speed's quantisation).
+const AX_SPAN: f64 = 0.5;
+
+/// The least speed change over a stretch judged, m/s (|ax| of about
+/// 1 m/s² for [`AX_SPAN`]: well above the noise of either channel).
+const AX_CHANGE: f64 = 0.5;
+
+/// Refuses a speed whose change is 3.6 (2.237) times what `ax` integrates
+/// to over the same stretches: in km/h (mph). The run's own check where it
+/// has no `ay` to judge the speed by ([`check_ay`]): over the stretches of
+/// [`AX_SPAN`] s (at least 50, from every sample, at 5 m/s or more) where
+/// the speed changes by [`AX_CHANGE`] or more, the ratio ∫ax dt / Δspeed is
+/// near 1 for a speed in m/s, and in the bands of [`check_ay`] for one per
+/// hour.
+pub(super) fn check_speed_by_ax(
+    path: &Path,
+    c: &Columns,
+    t: &[f64],
+    speed: &[f64],
+    ax: &[f64],
+) -> Result<(), InputError> {
+    let n = t.len();
+    let mut q = Vec::new();
+    let mut first = None;
+    let mut k = 0;
+    for i in 0..n {
+        while k < n && t[k] - t[i] < AX_SPAN {
+            k += 1;
+        }
+        if k >= n {
+            break;
+        }
+        let du = speed[k] - speed[i];
+        if speed[i] < MOVING || du.abs() < AX_CHANGE {
+            continue;
+        }
+        let integral: f64 = (i..k)
+            .map(|j| 0.5 * (ax[j] + ax[j + 1]) * (t[j + 1] - t[j]))
+            .sum();
+        first.get_or_insert(i);
+        q.push(integral / du);
+    }
+    if q.len() < TURNING_SAMPLES {
+        return Ok(());
+    }
+    let holds = |(lo, hi): (f64, f64)| {
+        let inside = q.iter().filter(|v| (lo..=hi).contains(*v)).count();
+        inside as f64 >= AY_IN_G_SHARE * q.len() as f64
+    };
+    let unit = if holds(SPEED_IN_KMH) {
+        SpeedUnit::Kmh
+    } else if holds(SPEED_IN_MPH) {
+        SpeedUnit::Mph
+    } else {
+        return Ok(());
+    };
+    let i = first.unwrap_or(0);
+    let stretches = q.len();
+    let slip = UnitSlip::SpeedPerHourByAx {
+        unit,
+        value: speed[i],
+        median: median(&mut q),
+        stretches,
+        span: AX_SPAN,
+        change: AX_CHANGE,
+    };
+    Err(c.error_at(path, i, "speed", slip.into()))
+}

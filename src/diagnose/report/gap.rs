@@ -21,7 +21,12 @@
 //! ten samples, else the first-difference estimate `std(Δx)/√2` (an upper
 //! bound for smooth signals). A gap is significant when the RMS residual
 //! exceeds three noise floors (and 1e-6 of the signal, for noise-free data),
-//! so "no significant gap" is a possible answer.
+//! so "no significant gap" is a possible answer. That whole-run test alone
+//! is `significant`, the one `diagnose`'s verdicts read; beside it
+//! ([`scan`]) the sliding window that carries the most evidence of a gap,
+//! the bias against its standard error and the time shift between the
+//! simulated and the measured channel, which the words and
+//! `gap_found` add.
 //! Units: SI, rad; times in s.
 
 use crate::diagnose::model::channels::Channel;
@@ -31,6 +36,11 @@ use crate::diagnose::report::parts::{
 };
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
+
+mod said;
+mod scan;
+use said::{verdict, Found, Said};
+pub use scan::WindowGap;
 
 /// The residual over a part of the run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -75,16 +85,32 @@ pub struct ChannelGap {
     /// Lag-1 autocorrelation of the residual (`null` for a constant one).
     #[serde(serialize_with = "crate::report::finite_or_null")]
     pub lag1_autocorrelation: f64,
-    /// Largest |correlation| of the residual with the steer over lags 0–1 s.
+    /// Largest |correlation| of the residual with the steer over lags 0–1 s
+    /// (how much the residual looks like the steer input: not a time shift).
     pub input_correlation: f64,
-    /// The lag of that largest correlation, s.
+    /// The lag of that largest correlation, s: the steer that earlier
+    /// resembles the residual most.
     pub input_correlation_lag: f64,
+    /// How much later the measurement runs than the simulation, s
+    /// (`measured(t) ≈ simulated(t − time_shift)`; negative: it leads);
+    /// `null` where the two correlate below 0.9 at every shift within 1 s.
+    pub time_shift: Option<f64>,
+    /// The sliding window of [`scan::WINDOW`] s with the most evidence of a gap
+    /// (`null` on a run shorter than one window).
+    pub worst_window: Option<WindowGap>,
+    /// Standard error of the bias (the residual's autocorrelation counted).
+    pub bias_standard_error: f64,
+    /// The bias beyond [`scan::BIAS_STANDARD_ERRORS`] standard errors.
+    pub bias_significant: bool,
     /// By time window.
     pub windows: Vec<PartGap>,
     /// By regime.
     pub regimes: Vec<PartGap>,
-    /// RMS above three noise floors.
+    /// RMS above three noise floors (the whole run; what `diagnose`'s
+    /// verdicts read).
     pub significant: bool,
+    /// A gap by any test: the whole run's RMS, a window's, or the bias.
+    pub gap_found: bool,
     /// The finding in words.
     pub verdict: String,
 }
@@ -230,6 +256,7 @@ pub fn trusted_channel_gap(
     // regime only: its "first 0.5 s of the input" would be a time picked
     // by a steering correction.
     let timed = timed_from_an_input(t, steer);
+    let pre: Vec<f64> = win[0].1.iter().map(|&i| e[i]).collect();
     let windows: Vec<PartGap> = win
         .into_iter()
         .filter(|w| timed && !w.1.is_empty())
@@ -242,52 +269,39 @@ pub fn trusted_channel_gap(
     // Noise-free data (a simulation replayed) have a zero floor: a residual
     // below 1e-6 of the signal is numerical, not a gap.
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
-    let significant = above_noise(rms, noise_floor) && rms > 1e-6 * signal;
-    let verdict = if !significant {
-        format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})")
-    } else {
-        let worst = |v: &[PartGap]| {
-            v.iter()
-                .filter(|p| p.samples >= 5)
-                .max_by(|a, b| a.rms.total_cmp(&b.rms))
-                .map(|p| p.name)
-        };
-        // A channel that is all but empty has a zero floor and no
-        // magnitude or phase: said in words, never as NaN or a 300-digit
-        // ratio.
-        let floors = rms / noise_floor;
-        let floors = if floors.is_finite() && floors < 1e6 {
-            format!("{floors:.1} noise floors")
-        } else {
-            "a noise floor of zero: the measured channel is all but constant".to_string()
-        };
-        let or_undefined = |v: f64, text: String| {
-            if v.is_finite() {
-                text
-            } else {
-                "undefined".to_string()
-            }
-        };
-        let mut s = format!(
-            "gap: RMS {rms:.4} {unit} ({floors}), bias {} {unit}; Sprague–Geers magnitude error {}, phase error {} (0 in phase, 1 opposed)",
-            crate::format::fixed(mean(&e), 4),
-            or_undefined(magnitude_error, format!("{:+.1} %", 100.0 * magnitude_error)),
-            or_undefined(phase_error, format!("{phase_error:.3}")),
-        );
-        if let Some(w) = worst(&windows) {
-            s += &format!("; largest in the window '{w}'");
-        }
-        if let Some(r) = worst(&regimes) {
-            s += &format!(", regime '{r}'");
-        }
-        let l1 = correlation(&e, &e, 1);
-        if rho.abs() > 0.5 {
-            s += &format!("; the residual follows the steer (ρ = {rho:.2} at {:.2} s): a dynamic error (gain, lag or stiffness)", lag as f64 * dt);
-        } else if l1 > 0.9 {
-            s += "; the residual is slow and smooth: a model error rather than noise";
-        }
-        s
+    let resolved = rms > 1e-6 * signal;
+    let significant = above_noise(rms, noise_floor) && resolved;
+    // The noise's autocorrelation from the residual before the input
+    // where it has a stretch of it (the model's error then is nil), else
+    // the whole residual's (a slow error counted as noise: conservative).
+    let tau = scan::correlation_time(if pre.len() >= 20 { &pre } else { &e });
+    // The floor's own sample count: the window before the input it is the
+    // scatter of, else the whole run (its second differences); a stated
+    // floor is known better, and counted so, conservatively.
+    let floor_samples = if pre.len() >= 10 { pre.len() } else { n };
+    let window = scan::worst_window(t, &e, noise_floor, tau, floor_samples, resolved);
+    let bias = scan::bias_test(&e, noise_floor, resolved);
+    let time_shift = scan::time_shift(dt, measured, simulated);
+    let found = Found {
+        whole: significant,
+        window: window.as_ref().filter(|w| w.significant),
+        bias,
     };
+    let verdict = verdict(&Said {
+        unit,
+        rms,
+        noise_floor,
+        e: &e,
+        windows: &windows,
+        regimes: &regimes,
+        sg: (magnitude_error, phase_error),
+        steer: (rho, lag as f64 * dt),
+        found: &found,
+        worst: window.as_ref(),
+        time_shift,
+        dt,
+    });
+    let gap_found = found.any();
     ChannelGap {
         channel,
         unit,
@@ -302,9 +316,14 @@ pub fn trusted_channel_gap(
         lag1_autocorrelation: correlation(&e, &e, 1),
         input_correlation: rho,
         input_correlation_lag: lag as f64 * dt,
+        time_shift,
+        bias_standard_error: bias.standard_error,
+        bias_significant: bias.significant,
+        worst_window: window,
         windows,
         regimes,
         significant,
+        gap_found,
         verdict,
     }
 }

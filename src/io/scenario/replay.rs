@@ -1,7 +1,9 @@
 //! A scenario's replay of a measured run (`[manoeuvre] kind = "replay"`):
 //! the run file read as `FORMATS.md` gives it (SI, rad, ISO 8855), its
 //! angle columns in degrees where the scenario says so, cleaned of
-//! standstills and glitches, and replayed from its first unmasked sample.
+//! standstills and glitches, and replayed from its first unmasked sample,
+//! its initial yaw rate and sideslip a robust line through the first
+//! [`INITIAL_STRETCH`] s ([`initial_value`]).
 
 use crate::error::{InputError, InputProblem, ParamError};
 use crate::io::toml_file::{param_error, TomlSource};
@@ -74,10 +76,11 @@ pub(super) fn resolve(
             },
         )
     })?;
-    // A masked first sample is a glitch, not the initial state.
-    let first = (0..run.t.len())
-        .find(|i| !run.masked.contains(i))
-        .unwrap_or(0);
+    // A masked sample is a glitch, not the initial state.
+    let start: Vec<usize> = (0..run.t.len())
+        .filter(|i| !run.masked.contains(i))
+        .collect();
+    let start = if start.is_empty() { vec![0] } else { start };
     Ok(ResolvedReplay {
         replay: Replay {
             t: run.t.clone(),
@@ -85,10 +88,84 @@ pub(super) fn resolve(
             speed: run.speed.clone(),
         },
         initial: State {
-            beta: run.beta.as_ref().map_or(0.0, |b| b[first]),
-            yaw_rate: run.yaw_rate[first],
+            beta: run
+                .beta
+                .as_ref()
+                .map_or(0.0, |b| initial_value(&run.t, b, &start)),
+            yaw_rate: initial_value(&run.t, &run.yaw_rate, &start),
         },
         run,
         cleaning,
     })
+}
+
+/// The stretch at a replay's start its initial yaw rate and sideslip are
+/// estimated over, s: long enough to average a sensor's noise (10–20
+/// samples at 50–100 Hz), short against a yaw response (0.1–0.3 s).
+pub const INITIAL_STRETCH: f64 = 0.2;
+
+/// The value of `x` at the first of the samples `idx` (unmasked, in time
+/// order), from a robust line through those within [`INITIAL_STRETCH`] s
+/// of it (at least three): the Theil–Sen slope (the median of the slopes
+/// between pairs) and the median of `x − slope·(t − t₀)`. One noisy or
+/// wild first sample sets off no transient, and a run that starts turning
+/// starts on its trend, not on a stretch's mean. The first sample itself
+/// where fewer than three fall within the stretch.
+pub fn initial_value(t: &[f64], x: &[f64], idx: &[usize]) -> f64 {
+    let i0 = idx[0];
+    let near: Vec<usize> = idx
+        .iter()
+        .copied()
+        .take_while(|&i| t[i] - t[i0] <= INITIAL_STRETCH + 1e-9)
+        .collect();
+    if near.len() < 3 {
+        return x[i0];
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        let n = v.len();
+        if n % 2 == 1 {
+            v[n / 2]
+        } else {
+            0.5 * (v[n / 2 - 1] + v[n / 2])
+        }
+    };
+    let mut slopes = Vec::new();
+    for (a, &i) in near.iter().enumerate() {
+        for &k in &near[a + 1..] {
+            if t[k] > t[i] {
+                slopes.push((x[k] - x[i]) / (t[k] - t[i]));
+            }
+        }
+    }
+    let slope = if slopes.is_empty() {
+        0.0
+    } else {
+        median(slopes)
+    };
+    median(
+        near.iter()
+            .map(|&i| x[i] - slope * (t[i] - t[i0]))
+            .collect(),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_wild_first_sample_does_not_set_the_initial_value() {
+        let t: Vec<f64> = (0..50).map(|i| 0.01 * i as f64).collect();
+        let idx: Vec<usize> = (0..50).collect();
+        // A yaw rate rising at 0.1 rad/s² from 0.05, its first sample off
+        // by 0.02: the line's value at the start, not the sample.
+        let mut x: Vec<f64> = t.iter().map(|&t| 0.05 + 0.1 * t).collect();
+        x[0] += 0.02;
+        assert!((initial_value(&t, &x, &idx) - 0.05).abs() < 1e-9);
+        // A masked first sample: the line at the first unmasked one.
+        assert!((initial_value(&t, &x, &idx[1..]) - 0.051).abs() < 1e-9);
+        // Two samples: the first.
+        assert_eq!(initial_value(&t[..2], &x[..2], &[0, 1]), x[0]);
+    }
 }

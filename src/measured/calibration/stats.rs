@@ -80,7 +80,7 @@ pub(super) fn without_glitches(v: &[f64]) -> Option<(Vec<f64>, usize)> {
 
 /// The integrated autocorrelation time of `x` about `mean`, in samples,
 /// within `[1, n]`.
-pub(super) fn integrated_time(x: &[f64], mean: f64) -> f64 {
+pub(crate) fn integrated_time(x: &[f64], mean: f64) -> f64 {
     let n = x.len();
     let d: Vec<f64> = x.iter().map(|v| v - mean).collect();
     let c0 = d.iter().map(|v| v * v).sum::<f64>() / n as f64;

@@ -1,0 +1,193 @@
+//! A channel's gap in words: the whole run's RMS against three noise
+//! floors, then what it hides (a window's gap, a bias of many standard
+//! errors), the time shift, and how much the residual looks like the steer
+//! (worded as a likeness, not a lag). Numbers in the channel's unit.
+
+use super::scan::{BiasTest, WindowGap, BIAS_STANDARD_ERRORS, FALSE_ALARM, WINDOW};
+use super::{correlation, mean, PartGap};
+
+/// Which tests found a gap.
+pub(super) struct Found<'a> {
+    /// The whole run's RMS beyond three noise floors.
+    pub whole: bool,
+    /// The significant window, if any.
+    pub window: Option<&'a WindowGap>,
+    /// The bias against its standard error.
+    pub bias: BiasTest,
+}
+
+impl Found<'_> {
+    /// A gap by any test.
+    pub fn any(&self) -> bool {
+        self.whole || self.window.is_some() || self.bias.significant
+    }
+}
+
+/// What the words are made of.
+pub(super) struct Said<'a> {
+    pub unit: &'static str,
+    pub rms: f64,
+    pub noise_floor: f64,
+    /// The residual.
+    pub e: &'a [f64],
+    pub windows: &'a [PartGap],
+    pub regimes: &'a [PartGap],
+    /// Sprague–Geers magnitude and phase errors.
+    pub sg: (f64, f64),
+    /// The residual's largest correlation with the steer and its lag, s.
+    pub steer: (f64, f64),
+    pub found: &'a Found<'a>,
+    /// The window with the most evidence, significant or not.
+    pub worst: Option<&'a WindowGap>,
+    pub time_shift: Option<f64>,
+    /// Sample interval, s.
+    pub dt: f64,
+}
+
+/// A window's or bias's numbers as the words give them.
+fn window_words(w: &WindowGap, unit: &str) -> String {
+    format!(
+        "RMS {:.4} {unit} ({:.1} noise floors) from t = {:.2} s to {:.2} s, where pure noise exceeds {:.1} noise floors in any of the run's {} windows of {WINDOW} s only once in {:.0} runs",
+        w.rms,
+        w.noise_floors,
+        w.start,
+        w.end,
+        w.threshold_noise_floors,
+        w.windows_tested,
+        1.0 / FALSE_ALARM
+    )
+}
+
+fn bias_words(bias: f64, b: &BiasTest, unit: &str) -> String {
+    format!(
+        "{} {unit} ({:.1} standard errors of {:.2e} {unit}, over {:.0} effective samples)",
+        crate::format::fixed(bias, 4),
+        b.standard_errors,
+        b.standard_error,
+        b.effective_samples
+    )
+}
+
+/// The verdict of one channel.
+pub(super) fn verdict(s: &Said) -> String {
+    let Said {
+        unit,
+        rms,
+        noise_floor,
+        found,
+        ..
+    } = *s;
+    let bias = mean(s.e);
+    let mut out = if found.whole {
+        whole_gap(s)
+    } else if found.any() {
+        let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit} within three noise floors, {noise_floor:.4} {unit}), but");
+        let mut parts = Vec::new();
+        if let Some(w) = found.window {
+            parts.push(format!(" a gap in one stretch: {}", window_words(w, unit)));
+        }
+        if found.bias.significant {
+            parts.push(format!(
+                " a bias of {}, beyond {BIAS_STANDARD_ERRORS} standard errors",
+                bias_words(bias, &found.bias, unit)
+            ));
+        }
+        v += &parts.join("; and");
+        v
+    } else {
+        let mut v = format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})");
+        match s.worst {
+            Some(w) if w.threshold_noise_floors.is_finite() => {
+                v += &format!(
+                    "; no stretch either (the largest {WINDOW} s window {:.1} noise floors, below {:.1})",
+                    w.noise_floors, w.threshold_noise_floors
+                );
+            }
+            // A slow residual over a short run leaves the floor's estimate
+            // too few effective samples for a threshold.
+            Some(w) => {
+                v += &format!(
+                    "; no stretch judged (the largest {WINDOW} s window {:.1} noise floors, but the residual is too slow for the run's length to set a threshold)",
+                    w.noise_floors
+                );
+            }
+            None => {}
+        }
+        v += &format!("; bias {}", bias_words(bias, &found.bias, unit));
+        v
+    };
+    if found.whole {
+        if let Some(w) = found.window {
+            out += &format!("; the most in one stretch: {}", window_words(w, unit));
+        }
+        if found.bias.significant {
+            out += &format!(
+                "; the bias is {:.1} standard errors of {:.2e} {unit}",
+                found.bias.standard_errors, found.bias.standard_error
+            );
+        }
+    }
+    if let Some(shift) = s.time_shift.filter(|x| x.abs() >= s.dt) {
+        let (way, by) = if shift > 0.0 {
+            ("lags", shift)
+        } else {
+            ("leads", -shift)
+        };
+        out += &format!("; the measurement {way} the simulation by {by:.2} s (the simulated channel shifted by {shift:+.2} s in time matches it best)");
+    }
+    if found.any() {
+        let (rho, lag) = s.steer;
+        if rho.abs() > 0.5 {
+            out += &format!("; the residual resembles the steer input (correlation {rho:.2} with the steer {lag:.2} s earlier: a residual shaped like the input, not a time shift): a dynamic error (gain, lag or stiffness)");
+        } else if correlation(s.e, s.e, 1) > 0.9 {
+            out += "; the residual is slow and smooth: a model error rather than noise";
+        }
+    }
+    out
+}
+
+/// The words of a gap over the whole run: its size, Sprague–Geers, and
+/// where it is largest.
+fn whole_gap(s: &Said) -> String {
+    let Said {
+        unit,
+        rms,
+        noise_floor,
+        ..
+    } = *s;
+    let (magnitude_error, phase_error) = s.sg;
+    let worst = |v: &[PartGap]| {
+        v.iter()
+            .filter(|p| p.samples >= 5)
+            .max_by(|a, b| a.rms.total_cmp(&b.rms))
+            .map(|p| p.name)
+    };
+    // A channel that is all but empty has a zero floor and no magnitude or
+    // phase: said in words, never as NaN or a 300-digit ratio.
+    let floors = rms / noise_floor;
+    let floors = if floors.is_finite() && floors < 1e6 {
+        format!("{floors:.1} noise floors")
+    } else {
+        "a noise floor of zero: the measured channel is all but constant".to_string()
+    };
+    let or_undefined = |v: f64, text: String| {
+        if v.is_finite() {
+            text
+        } else {
+            "undefined".to_string()
+        }
+    };
+    let mut out = format!(
+        "gap: RMS {rms:.4} {unit} ({floors}), bias {} {unit}; Sprague–Geers magnitude error {}, phase error {} (0 in phase, 1 opposed)",
+        crate::format::fixed(mean(s.e), 4),
+        or_undefined(magnitude_error, format!("{:+.1} %", 100.0 * magnitude_error)),
+        or_undefined(phase_error, format!("{phase_error:.3}")),
+    );
+    if let Some(w) = worst(s.windows) {
+        out += &format!("; largest in the window '{w}'");
+    }
+    if let Some(r) = worst(s.regimes) {
+        out += &format!(", regime '{r}'");
+    }
+    out
+}

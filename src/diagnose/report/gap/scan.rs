@@ -1,0 +1,332 @@
+//! What a whole-run RMS hides: a gap confined to a short stretch (a lagged
+//! step diluted by its steady part), a persistent bias below three noise
+//! floors but many standard errors of a mean, and a time shift between the
+//! simulated and measured channel (the shift, not the residual's likeness
+//! to the steer, says "the measurement lags by 0.10 s").
+//!
+//! - Sliding windows of [`WINDOW`] s, every half window: a window's mean
+//!   square residual over the noise floor's square is, under pure noise, F
+//!   with the window's effective sample count (its samples over the noise's
+//!   integrated autocorrelation time) and the floor's (the samples it was
+//!   estimated from, likewise: a floor estimated low by chance must not
+//!   make noise a gap); Paulson's approximation to its quantile; each window is
+//!   tested at [`FALSE_ALARM`] over the number of windows (Bonferroni), so
+//!   a record of pure noise shows a local gap in at most about one run in a
+//!   hundred, however long.
+//! - The bias against its standard error `max(floor, sd(e))·√(τ/n)`, τ the
+//!   residual's integrated autocorrelation time (Sokal's window, as the
+//!   calibration's means use): significant beyond
+//!   [`BIAS_STANDARD_ERRORS`].
+//! - The time shift: the lag of the largest correlation of the measured
+//!   channel with the simulated one over ±[`MAX_SHIFT`] s, refined between
+//!   samples by a parabola through the peak and its neighbours; only where
+//!   that correlation reaches [`SHIFT_CORRELATION`] (a channel with a
+//!   response well above its noise). Positive: the measurement lags the
+//!   simulation, `measured(t) ≈ simulated(t − shift)`.
+//!
+//! Units: the channel's own; times in s.
+
+use crate::measured::calibration::stats::integrated_time;
+use serde::Serialize;
+
+/// Length of the sliding windows, s: a yaw or lateral response rises in
+/// 0.1–0.3 s, so a lag or a transient error lives within about half a
+/// second.
+pub const WINDOW: f64 = 0.5;
+
+/// The chance that pure noise shows a local gap in any window of a run.
+pub const FALSE_ALARM: f64 = 0.01;
+
+/// Standard errors of the mean beyond which a bias is significant (a
+/// normal tail of 6e-5 on both sides: rare on pure noise even with the
+/// autocorrelation time estimated).
+pub const BIAS_STANDARD_ERRORS: f64 = 4.0;
+
+/// The least correlation of the measured channel with the shifted
+/// simulated one for a time shift to be stated.
+pub const SHIFT_CORRELATION: f64 = 0.9;
+
+/// The largest time shift searched, s.
+pub const MAX_SHIFT: f64 = 1.0;
+
+/// The sliding window that carries the most evidence of a gap.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WindowGap {
+    /// Its start, s (the run's time).
+    pub start: f64,
+    /// Its end, s.
+    pub end: f64,
+    /// Samples in it.
+    pub samples: usize,
+    /// RMS residual over it.
+    pub rms: f64,
+    /// That RMS in noise floors.
+    pub noise_floors: f64,
+    /// The RMS in noise floors that pure noise exceeds in no window of the
+    /// run with a chance above [`FALSE_ALARM`].
+    pub threshold_noise_floors: f64,
+    /// Windows tested.
+    pub windows_tested: usize,
+    /// Its RMS above the threshold.
+    pub significant: bool,
+}
+
+/// A bias tested against its standard error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BiasTest {
+    /// Standard error of the mean residual.
+    pub standard_error: f64,
+    /// |bias| in standard errors.
+    pub standard_errors: f64,
+    /// Effective samples (samples over the autocorrelation time).
+    pub effective_samples: f64,
+    /// Beyond [`BIAS_STANDARD_ERRORS`].
+    pub significant: bool,
+}
+
+/// The upper-tail standard normal quantile: `z` with `P(Z > z) = p`
+/// (bisection on the complementary error function).
+fn upper_normal_quantile(p: f64) -> f64 {
+    let tail = |z: f64| 0.5 * erfc(z / std::f64::consts::SQRT_2);
+    let (mut lo, mut hi) = (-10.0, 40.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if tail(mid) > p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The quantile of F(`k1`, `k2`) at the upper normal quantile `z`
+/// (Paulson 1942: the cube roots of the two χ²'s over their degrees of
+/// freedom are nearly normal, as Wilson & Hilferty found); infinite where
+/// `k2` is too small for it.
+fn f_quantile(k1: f64, k2: f64, z: f64) -> f64 {
+    let (a, b) = (2.0 / (9.0 * k1), 2.0 / (9.0 * k2));
+    let den = (1.0 - b).powi(2) - z * z * b;
+    let disc = b * (1.0 - a).powi(2) + a * (1.0 - b).powi(2) - z * z * a * b;
+    if den <= 0.0 || disc < 0.0 {
+        return f64::INFINITY;
+    }
+    ((((1.0 - a) * (1.0 - b) + z * disc.sqrt()) / den).max(0.0)).powi(3)
+}
+
+/// The complementary error function (Chebyshev fit, fractional error below
+/// 1.2e-7 everywhere; Press et al., *Numerical Recipes*, §6.2).
+fn erfc(x: f64) -> f64 {
+    let z = x.abs();
+    let t = 1.0 / (1.0 + 0.5 * z);
+    let poly = -z * z - 1.265_512_23
+        + t * (1.000_023_68
+            + t * (0.374_091_96
+                + t * (0.096_784_18
+                    + t * (-0.186_288_06
+                        + t * (0.278_868_07
+                            + t * (-1.135_203_98
+                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
+    let r = t * poly.exp();
+    if x >= 0.0 {
+        r
+    } else {
+        2.0 - r
+    }
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+/// The integrated autocorrelation time of `x` about its mean, samples
+/// (1 for white noise; 1 for fewer than four samples).
+pub(super) fn correlation_time(x: &[f64]) -> f64 {
+    integrated_time(x, mean(x))
+}
+
+/// The sliding window of the residual `e` at times `t` whose RMS is the
+/// most noise floors above its threshold, the noise's autocorrelation time
+/// `tau` samples and the floor estimated from `floor_samples` samples (its
+/// effective count `floor_samples/tau`); `resolved` false (noise-free data: a zero floor) makes
+/// no window significant. None on a run shorter than one window.
+pub(super) fn worst_window(
+    t: &[f64],
+    e: &[f64],
+    floor: f64,
+    tau: f64,
+    floor_samples: usize,
+    resolved: bool,
+) -> Option<WindowGap> {
+    let tau = tau.max(1.0);
+    let k2 = (floor_samples as f64 / tau).max(1.0);
+    let (t0, t1) = (t[0], t[t.len() - 1]);
+    let starts: Vec<f64> = (0..)
+        .map(|j| t0 + 0.5 * WINDOW * j as f64)
+        .take_while(|s| s + WINDOW <= t1 + 1e-9)
+        .collect();
+    let m = starts.len();
+    let z = upper_normal_quantile(FALSE_ALARM / m.max(1) as f64);
+    starts
+        .into_iter()
+        .filter_map(|start| {
+            let end = start + WINDOW;
+            let v: Vec<f64> = (0..t.len())
+                .filter(|&i| t[i] >= start && t[i] < end)
+                .map(|i| e[i])
+                .collect();
+            if v.len() < 3 {
+                return None;
+            }
+            let rms = (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
+            let k = (v.len() as f64 / tau).max(1.0);
+            let threshold = f_quantile(k, k2, z).sqrt();
+            let floors = rms / floor;
+            Some(WindowGap {
+                start,
+                end,
+                samples: v.len(),
+                rms,
+                noise_floors: floors,
+                threshold_noise_floors: threshold,
+                windows_tested: m,
+                significant: resolved && floors > threshold,
+            })
+        })
+        .max_by(|a, b| {
+            let ratio = |w: &WindowGap| w.noise_floors / w.threshold_noise_floors;
+            ratio(a).total_cmp(&ratio(b))
+        })
+}
+
+/// The residual `e`'s mean against its standard error, the noise floor
+/// `floor` the least scatter it is judged with.
+pub(super) fn bias_test(e: &[f64], floor: f64, resolved: bool) -> BiasTest {
+    let n = e.len().max(1) as f64;
+    let m = mean(e);
+    let var = e.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / n;
+    let tau = correlation_time(e);
+    let standard_error = (var.max(floor * floor) * tau / n).sqrt();
+    let standard_errors = m.abs() / standard_error;
+    BiasTest {
+        standard_error,
+        standard_errors,
+        effective_samples: n / tau,
+        significant: resolved && standard_errors > BIAS_STANDARD_ERRORS,
+    }
+}
+
+/// Pearson correlation of `a[i]` with `b[i − k]` (k of either sign) over
+/// their overlap.
+fn lagged_correlation(a: &[f64], b: &[f64], k: isize) -> f64 {
+    let n = a.len();
+    let l = k.unsigned_abs();
+    if l + 3 > n {
+        return f64::NAN;
+    }
+    let (x, y) = if k >= 0 {
+        (&a[l..], &b[..n - l])
+    } else {
+        (&a[..n - l], &b[l..])
+    };
+    let (mx, my) = (mean(x), mean(y));
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for (p, q) in x.iter().zip(y) {
+        sxy += (p - mx) * (q - my);
+        sxx += (p - mx) * (p - mx);
+        syy += (q - my) * (q - my);
+    }
+    if sxx <= 0.0 || syy <= 0.0 {
+        f64::NAN
+    } else {
+        sxy / (sxx * syy).sqrt()
+    }
+}
+
+/// The time shift of `measured` behind `simulated`, s (positive: the
+/// measurement lags), sampled every `dt` s; None where the best
+/// correlation is below [`SHIFT_CORRELATION`] or lies at the search's edge.
+pub(super) fn time_shift(dt: f64, measured: &[f64], simulated: &[f64]) -> Option<f64> {
+    let n = measured.len();
+    if n < 8 || dt <= 0.0 {
+        return None;
+    }
+    let most = ((MAX_SHIFT / dt).round() as isize).min(n as isize / 4);
+    let rho: Vec<f64> = (-most..=most)
+        .map(|k| lagged_correlation(measured, simulated, k))
+        .collect();
+    let (best, &peak) = rho
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.is_finite())
+        .max_by(|a, b| a.1.total_cmp(b.1))?;
+    if peak < SHIFT_CORRELATION || best == 0 || best + 1 == rho.len() {
+        return None;
+    }
+    let (a, c) = (rho[best - 1], rho[best + 1]);
+    let curvature = a - 2.0 * peak + c;
+    let offset = if curvature < 0.0 {
+        (0.5 * (a - c) / curvature).clamp(-0.5, 0.5)
+    } else {
+        0.0
+    };
+    Some((best as f64 - most as f64 + offset) * dt)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_normal_tail_quantiles_match_the_tables() {
+        for (p, z) in [(0.05, 1.644_854), (0.01, 2.326_348), (1e-4, 3.719_016)] {
+            assert!((upper_normal_quantile(p) - z).abs() < 1e-4, "{p}");
+        }
+    }
+
+    #[test]
+    fn the_f_quantiles_match_the_tables_and_tend_to_chi_square() {
+        // F₀.₉₉(50, 100) = 1.735, F₀.₉₉(10, 20) = 3.368 (tables).
+        let z = upper_normal_quantile(0.01);
+        assert!((f_quantile(50.0, 100.0, z) / 1.735 - 1.0).abs() < 0.01);
+        assert!((f_quantile(10.0, 20.0, z) / 3.368 - 1.0).abs() < 0.02);
+        // A floor known exactly: χ²₀.₉₉(50)/50 = 76.154/50.
+        assert!((f_quantile(50.0, 1e12, z) / (76.154 / 50.0) - 1.0).abs() < 0.005);
+    }
+
+    #[test]
+    fn pure_noise_shows_a_local_gap_in_about_one_run_in_a_hundred() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        let t: Vec<f64> = (0..1000).map(|i| 0.01 * i as f64).collect();
+        let mut alarms = 0;
+        for _ in 0..400 {
+            let e: Vec<f64> = t
+                .iter()
+                .map(|_| crate::optim::stats::gauss(&mut rng))
+                .collect();
+            // The floor estimated from the first 100 samples, as before an input.
+            let pre = &e[..100];
+            let floor = (pre.iter().map(|x| x * x).sum::<f64>() / 100.0).sqrt();
+            let w = worst_window(&t, &e, floor, 1.0, 100, true).unwrap();
+            alarms += usize::from(w.significant);
+        }
+        assert!(alarms <= 10, "{alarms} of 400");
+    }
+
+    #[test]
+    fn a_smooth_step_delayed_by_a_tenth_of_a_second_reads_that_shift() {
+        let dt = 0.01;
+        let step = |x: f64| 1.0 - (-(x - 1.0).max(0.0) / 0.15).exp();
+        let t: Vec<f64> = (0..600).map(|i| i as f64 * dt).collect();
+        let sim: Vec<f64> = t.iter().map(|&x| step(x)).collect();
+        for shift in [0.1, -0.043, 0.237] {
+            let meas: Vec<f64> = t.iter().map(|&x| step(x - shift)).collect();
+            let s = time_shift(dt, &meas, &sim).unwrap();
+            assert!((s - shift).abs() < 0.2 * dt, "{shift}: {s}");
+        }
+        // Nothing to align: noise alone.
+        let flat = vec![0.0; 600];
+        assert_eq!(time_shift(dt, &flat, &sim), None);
+    }
+}

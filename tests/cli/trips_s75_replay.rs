@@ -1,4 +1,4 @@
-//! A replayed run's gap read as a user reads it (issue 41): a tenth of a
+//! A replayed run's gap read as a user reads it: a tenth of a
 //! second's lag that the whole-run RMS dilutes, a sideslip bias below three
 //! noise floors but many standard errors, a noisy first sample, and a speed
 //! in mph where the run has no `ay` to judge it by.

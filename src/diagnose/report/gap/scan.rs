@@ -87,7 +87,7 @@ pub struct BiasTest {
 /// The upper-tail standard normal quantile: `z` with `P(Z > z) = p`
 /// (bisection on the complementary error function).
 fn upper_normal_quantile(p: f64) -> f64 {
-    let tail = |z: f64| 0.5 * erfc(z / std::f64::consts::SQRT_2);
+    let tail = |z: f64| 0.5 * libm::erfc(z / std::f64::consts::SQRT_2);
     let (mut lo, mut hi) = (-10.0, 40.0);
     for _ in 0..100 {
         let mid = 0.5 * (lo + hi);
@@ -112,27 +112,6 @@ fn f_quantile(k1: f64, k2: f64, z: f64) -> f64 {
         return f64::INFINITY;
     }
     ((((1.0 - a) * (1.0 - b) + z * disc.sqrt()) / den).max(0.0)).powi(3)
-}
-
-/// The complementary error function (Chebyshev fit, fractional error below
-/// 1.2e-7 everywhere; Press et al., *Numerical Recipes*, §6.2).
-fn erfc(x: f64) -> f64 {
-    let z = x.abs();
-    let t = 1.0 / (1.0 + 0.5 * z);
-    let poly = -z * z - 1.265_512_23
-        + t * (1.000_023_68
-            + t * (0.374_091_96
-                + t * (0.096_784_18
-                    + t * (-0.186_288_06
-                        + t * (0.278_868_07
-                            + t * (-1.135_203_98
-                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
-    let r = t * poly.exp();
-    if x >= 0.0 {
-        r
-    } else {
-        2.0 - r
-    }
 }
 
 fn mean(v: &[f64]) -> f64 {
@@ -171,10 +150,8 @@ pub(super) fn worst_window(
         .into_iter()
         .filter_map(|start| {
             let end = start + WINDOW;
-            let v: Vec<f64> = (0..t.len())
-                .filter(|&i| t[i] >= start && t[i] < end)
-                .map(|i| e[i])
-                .collect();
+            // The times are sorted: the window is a slice, found by bisection.
+            let v = &e[t.partition_point(|&x| x < start)..t.partition_point(|&x| x < end)];
             if v.len() < 3 {
                 return None;
             }

@@ -303,6 +303,15 @@ fn diagnose_refuses_bad_campaigns_clearly() {
     // At the second entry's line and column.
     let at = format!("vehicle.toml:{}:24: the run ", VEHICLE.lines().count() + 3);
     assert!(e.contains(&at), "{at}\n{e}");
+    // Listed in `files` and found again in `dir`: at the `files` entry.
+    let v = format!("{VEHICLE}\n[runs]\nfiles = [\"runs/a.csv\"]\ndir = \"runs\"\n");
+    let dir = campaign_folder(&v, &[("a.csv", run_csv(100.0, 6.0, true, None))]);
+    let e = fails_cleanly("diagnose", &dir.path().join("vehicle.toml"), dir.path());
+    let at = format!("vehicle.toml:{}:10: the run ", VEHICLE.lines().count() + 3);
+    assert!(
+        e.contains("a.csv is listed twice") && e.contains(&at),
+        "{at}\n{e}"
+    );
     // A runs folder without a run says so.
     let dir = campaign_folder(VEHICLE, &[("notes.txt", String::from("no runs here"))]);
     let e = campaign_err(dir.path());

@@ -120,10 +120,18 @@ pub(super) fn run_files(
                 run: p.clone(),
                 also: q.clone(),
             };
-            // At its entry in `[runs] files` (the folder's files come after).
-            return Err(match i < run_spec.files.len() {
-                true => src.located(src.key_span(&format!("runs.files[{i}]")), problem),
-                false => file_error(file, problem),
+            // At its entry in `[runs] files`: the second listing where both
+            // are there, else the first, which `dir` finds again (the
+            // folder's files come after the list).
+            let listed = run_spec.files.len();
+            let at = if i < listed {
+                Some(i)
+            } else {
+                files[..listed].iter().position(|q| same(q))
+            };
+            return Err(match at {
+                Some(k) => src.located(src.key_span(&format!("runs.files[{k}]")), problem),
+                None => file_error(file, problem),
             });
         }
     }

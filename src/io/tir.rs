@@ -17,7 +17,7 @@
 //! a coefficient of 1e30) is refused at its line ([`crate::tyre::sizes`]);
 //! where it is a tyre's as written but not once converted by the file's
 //! `[UNITS]`, the refusal names that `[UNITS]` line (`units.rs`). A file
-//! read as a tyre (not as a fit's template) has its own pure-slip curves
+//! read as a tyre or as a fit's template has its own pure-slip curves
 //! judged too: a peak friction above 5, or a force that turns against its
 //! slip, is refused at the coefficient most likely at fault
 //! (`tyre/mf/pure_curves.rs`).
@@ -190,6 +190,18 @@ impl TirDocument {
         Ok(tyre)
     }
 
+    /// The Magic Formula tyre of this file as a fit's template
+    /// ([`Self::template`]), with the pure curves of the forces it
+    /// describes judged as a tyre's are: a template's coefficients start
+    /// the fit, and a block no stage fits is written as the template has it.
+    pub fn fit_template(&self) -> Result<MagicFormula, InputError> {
+        let tyre = self.template()?;
+        let (lateral, longitudinal) = (self.get("PDY1").is_some(), self.get("PDX1").is_some());
+        tyre.check_pure_curves(lateral, longitudinal)
+            .map_err(|e| self.value_error(e))?;
+        Ok(tyre)
+    }
+
     /// The Magic Formula tyre of this file as a template of a fit: its
     /// constants, and coefficients that may be none (a fit sets them); the
     /// core coefficients of each force it does describe must be there.
@@ -265,6 +277,7 @@ impl TirDocument {
         tyre.validate()
             .and_then(|()| ModelParameters::check_sizes(&tyre))
             .map_err(|e| self.value_error(self.declared_slip(&tyre, &units, e)))?;
+        self.loads_against_nominal(&tyre, &units)?;
         Ok(tyre)
     }
 
@@ -499,6 +512,7 @@ mod ranges;
 mod units;
 
 use units::Units;
+pub use units::LOAD_OVER_NOMINAL;
 
 #[cfg(test)]
 mod tests;

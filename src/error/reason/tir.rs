@@ -49,7 +49,8 @@ pub(super) fn tyre_pressure(given: f64, unit: Option<u8>, nominal: bool, apart: 
 pub(super) fn unloaded_radius(given: f64) -> String {
     use crate::format::{exact, rounded};
     let head = "a tyre's unloaded radius is 0.05–2 m (a kart's about 0.13 m, a car's about 0.3 m), in m after the file's [UNITS] LENGTH";
-    let (lo, hi) = crate::tyre::sizes::UNLOADED_RADIUS;
+    // `tyre::sizes::UNLOADED_RADIUS` (a lower layer may not import it).
+    let (lo, hi) = (0.05, 2.0);
     let lands = |v: f64| v > lo && v <= hi;
     if given > hi {
         let hint = [
@@ -93,16 +94,19 @@ pub struct LoadOffNominal {
     pub fnomin: f64,
     /// The value over `FNOMIN`.
     pub ratio: f64,
+    /// The shares of `FNOMIN` a tyre's load range lies within.
+    pub range: (f64, f64),
 }
 
 impl ParamReason {
     /// [`ParamReason::TirLoadOffNominal`] of the value `written` in `unit`
-    /// (`factor` N), beside `FNOMIN` `fnomin` (same unit), `ratio` times it.
+    /// (`factor` N), beside `FNOMIN` `fnomin` (same unit), `ratio` times
+    /// it, outside the shares `range` of it a tyre's load range lies in.
     pub(crate) fn tir_load_off_nominal(
         written: f64,
         (unit, factor): (&'static str, f64),
-        fnomin: f64,
-        ratio: f64,
+        (fnomin, ratio): (f64, f64),
+        range: (f64, f64),
     ) -> Self {
         ParamReason::TirLoadOffNominal(Box::new(LoadOffNominal {
             written,
@@ -110,6 +114,7 @@ impl ParamReason {
             factor,
             fnomin,
             ratio,
+            range,
         }))
     }
 }
@@ -118,7 +123,7 @@ impl ParamReason {
 /// declared unit, the factor off `FNOMIN`, and the unit it is likely in.
 pub(super) fn load_off_nominal(d: &LoadOffNominal) -> String {
     use crate::format::{exact, rounded};
-    let (lo, hi) = crate::io::tir::LOAD_OVER_NOMINAL;
+    let (lo, hi) = d.range;
     let head = format!(
         "is {} {} as the file's [UNITS] FORCE reads it, {} times its FNOMIN = {} {}: a tyre's validity range of loads lies within {lo} to {hi} times its nominal load (published files: FZMAX 2–3 times FNOMIN)",
         exact(d.written),

@@ -113,8 +113,8 @@ impl TirDocument {
             let reason = ParamReason::tir_load_off_nominal(
                 v / factor,
                 (unit, factor),
-                fnomin / factor,
-                ratio,
+                (fnomin / factor, ratio),
+                (lo, hi),
             );
             let e = ParamError::new(key, v / factor, reason);
             return Err(self.at(line, InputProblem::TirValue(e)));

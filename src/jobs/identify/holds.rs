@@ -137,7 +137,7 @@ pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
             format!(
                 "{mark} held: {} = {}: {}\n",
                 h.name,
-                exact(h.value),
+                value_text(h),
                 h.reason.said(&h.name)
             )
         })

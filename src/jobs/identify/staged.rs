@@ -49,8 +49,9 @@ pub struct StagedJob {
     pub curvature_above_one: Vec<super::curvature::CurvatureExcess>,
     /// The written tyre's pure curve beyond any tyre's (a peak |F|/Fz
     /// above 5, or a force turning against its slip), which `tyre-eval`
-    /// and `simulate` refuse: said, and the file written all the same.
-    pub pure_curve_warning: Option<String>,
+    /// and `simulate` refuse: said, and the file written all the same;
+    /// first, a template's such curve.
+    pub pure_curve_warning: Vec<String>,
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
@@ -201,9 +202,17 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     )?;
     let lock = super::output_lock(o)?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
-    // A template's curves are judged as a tyre's: its coefficients start
-    // the fit, and those of a block no stage fits are written as they are.
-    let template_tyre = template.as_ref().map(|d| d.fit_template()).transpose()?;
+    let template_tyre = template.as_ref().map(|d| d.template()).transpose()?;
+    // A template's curves are judged as a tyre's, and warned of: the fit
+    // sets the coefficients it starts from (a block no stage fits is
+    // written as the template has it, and said again below).
+    let template_warning = template
+        .as_ref()
+        .zip(template_tyre.as_ref())
+        .and_then(|(d, t)| d.curve_refusal(t))
+        .map(|e| {
+            format!("the template's curves are no tyre's: {e}; its coefficients only start the fit")
+        });
     let data = read_rig(&o.data)?;
     let default_speed = template_tyre
         .as_ref()
@@ -294,7 +303,10 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // A fitted curve beyond any tyre's is written, marked, not refused: a
     // long fit is not lost, and the readers refuse the file with the
     // same numbers.
-    let pure_curve_warning = pure_curve_warning(&written);
+    let pure_curve_warning: Vec<String> = template_warning
+        .into_iter()
+        .chain(pure_curve_warning(&written))
+        .collect();
     let curvature = curvature
         + &pure_curve_warning
             .iter()

@@ -7,8 +7,8 @@ use super::options::{ModeError, OptionsError};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 use thiserror::Error;
-use tir::{declared_unit, pure_curve, tyre_pressure};
-pub use tir::{DeclaredUnit, PureCurve};
+use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
+pub use tir::{DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod boxed;
 mod tir;
@@ -145,6 +145,10 @@ pub enum ParamReason {
     /// that turns against its slip. Boxed: the error stays small.
     #[error("{}", pure_curve(.0))]
     MfPureCurve(Box<PureCurve>),
+    /// A `.tir` file's load key (`FZMIN`, `FZMAX`) a unit's factor off
+    /// its `FNOMIN`. Boxed: the error stays small.
+    #[error("{}", load_off_nominal(.0))]
+    TirLoadOffNominal(Box<LoadOffNominal>),
     /// Outside the range `(lo, hi]`, for the reason `why`.
     #[error("must {}: {why}", super::number::range(*.lo, *.hi))]
     OutOfRange {
@@ -522,9 +526,13 @@ pub enum Limit {
     /// A pneumatic trail, m.
     #[error("a tyre's pneumatic trail is a few centimetres; the key is in metres: is the value in millimetres? (30 mm is 0.03)")]
     PneumaticTrail,
-    /// A Magic Formula file's unloaded radius, m.
-    #[error("a tyre's unloaded radius is 0.05–2 m (a kart's about 0.13 m, a car's about 0.3 m): check the value against the file's [UNITS] LENGTH (millimetres written with LENGTH = 'meter'?)")]
-    UnloadedRadius,
+    /// A Magic Formula file's unloaded radius `given`, m, and the unit
+    /// slip its direction says.
+    #[error("{}", unloaded_radius(*given))]
+    UnloadedRadius {
+        /// The radius as read, m.
+        given: f64,
+    },
     /// A Magic Formula coefficient, dimensionless.
     #[error("no coefficient of a published Magic Formula file reaches ±1e6 (their dimensionless coefficients stay within about ±2,000): a value beyond is no tyre's")]
     MfCoefficient,

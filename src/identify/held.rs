@@ -159,7 +159,7 @@ impl fmt::Display for ConstantFrom {
             ConstantFrom::MedianLoad => "the median load of the data, rounded to 10 N",
             ConstantFrom::MedianPressure => "the median pressure of the data, rounded to 100 Pa",
             ConstantFrom::NoPressure => "no `pressure` column, so 0 (the pressure terms off)",
-            ConstantFrom::MedianSpeed => "the median rig speed of the data, rounded to 0.1 m/s",
+            ConstantFrom::MedianSpeed => "the median rig speed of the data, read in m/s and rounded to 0.1 m/s (a `speed` column in km/h is read 3.6 times too fast: convert it to m/s)",
             ConstantFrom::DefaultSpeed => "no `speed` column, so the default",
             ConstantFrom::DefaultRadius => {
                 "a default, as rig forces do not measure the radius (give --template with your tyre's)"

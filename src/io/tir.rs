@@ -17,8 +17,8 @@
 //! a coefficient of 1e30) is refused at its line ([`crate::tyre::sizes`]);
 //! where it is a tyre's as written but not once converted by the file's
 //! `[UNITS]`, the refusal names that `[UNITS]` line (`units.rs`). A file
-//! read as a tyre (not as a fit's template) has its own pure-slip curves
-//! judged too: a peak friction above 5, or a force that turns against its
+//! read as a tyre has its own pure-slip curves judged too (a fit's
+//! template is warned of, [`TirDocument::curve_refusal`]): a peak friction above 5, or a force that turns against its
 //! slip, is refused at the coefficient most likely at fault
 //! (`tyre/mf/pure_curves.rs`).
 //!
@@ -190,6 +190,17 @@ impl TirDocument {
         Ok(tyre)
     }
 
+    /// The refusal a tyre read from this file as `tyre` would meet for its
+    /// pure curves (of the forces the file describes), as text with the
+    /// file and line, or `None`: a fit's template is warned of, not
+    /// refused, as the fit sets the coefficients it starts from (a block no
+    /// stage fits is written as the template has it, and said again then).
+    pub fn curve_refusal(&self, tyre: &MagicFormula) -> Option<String> {
+        let (lateral, longitudinal) = (self.get("PDY1").is_some(), self.get("PDX1").is_some());
+        let e = tyre.check_pure_curves(lateral, longitudinal).err()?;
+        Some(self.value_error(e).to_string())
+    }
+
     /// The Magic Formula tyre of this file as a template of a fit: its
     /// constants, and coefficients that may be none (a fit sets them); the
     /// core coefficients of each force it does describe must be there.
@@ -265,6 +276,7 @@ impl TirDocument {
         tyre.validate()
             .and_then(|()| ModelParameters::check_sizes(&tyre))
             .map_err(|e| self.value_error(self.declared_slip(&tyre, &units, e)))?;
+        self.loads_against_nominal(&tyre, &units)?;
         Ok(tyre)
     }
 
@@ -499,6 +511,7 @@ mod ranges;
 mod units;
 
 use units::Units;
+pub use units::LOAD_OVER_NOMINAL;
 
 #[cfg(test)]
 mod tests;

@@ -87,8 +87,16 @@ impl Parameterised for MagicSimple {
         self.c = p[1];
         self.d = p[2];
     }
+    /// A tyre's: the shape factor `C` at least 1 (below, the sine never
+    /// reaches its peak and `B`, `C`, `D` trade along a ridge; a car tyre's
+    /// lateral C is 1.3–1.6, Pacejka 2012, §4.3), the peak friction `D`
+    /// at least 0.5 (no tyre on a rig's dry surface peaks lower), and `B`
+    /// at least 3, so that the cornering stiffness per unit load `B·C·D`
+    /// is at least [`super::sizes::MIN_CORNERING_PER_LOAD`] (1.5 /rad; car
+    /// tyres 5–30, Pacejka 2012): the old box's corner, 1·0.5·0.1 = 0.05
+    /// /rad, was no tyre, and a fit landing there was refused when read.
     fn bounds(&self) -> Vec<(f64, f64)> {
-        vec![(1.0, 60.0), (0.5, 2.0), (0.1, 4.0)]
+        vec![(3.0, 60.0), (1.0, 2.0), (0.5, 4.0)]
     }
 }
 

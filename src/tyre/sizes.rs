@@ -228,7 +228,9 @@ pub(crate) fn magic_formula(c: &MfCoefficients) -> Result<(), ParamError> {
         c.UNLOADED_RADIUS,
         lo,
         hi,
-        Limit::UnloadedRadius,
+        Limit::UnloadedRadius {
+            given: c.UNLOADED_RADIUS,
+        },
     )?;
     tyre_pressure("NOMPRES", c.NOMPRES, c.INFLPRES)?;
     tyre_pressure("INFLPRES", c.INFLPRES, c.NOMPRES)?;

@@ -75,7 +75,7 @@ pub(super) fn the_book_quotes_the_hoosier_mf61_fit_as_the_terminal_prints_it(
         "{file}"
     );
     assert!(
-        text.contains("held: LONGVL = 11.2: no --template: the median rig speed of the data, rounded to 0.1 m/s"),
+        text.contains("held: LONGVL = 11.2 m/s (40.3 km/h): no --template: the median rig speed of the data, read in m/s and rounded to 0.1 m/s"),
         "{text}"
     );
     // The longitudinal block: not fitted, and no force in the file.

@@ -377,6 +377,7 @@ mod trips_s73;
 mod trips_s74;
 mod trips_s74_tir;
 mod trips_s75_replay;
+mod trips_s75_tir;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -370,8 +370,13 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
             if p["held"]["why"] == "not-identifiable" {
                 assert_eq!(p["held"]["source"], "pacejka-book", "{p}");
                 held.push(p["name"].as_str().unwrap().to_string());
+                // One stopped at its physical bound is said there.
+                let why = match p["held"]["at_bound"].is_array() {
+                    true => "stopped at its",
+                    false => "not identifiable",
+                };
                 let said = format!(
-                    "held: {} = {}: not identifiable",
+                    "held: {} = {}: {why}",
                     p["name"].as_str().unwrap(),
                     p["value"].as_f64().unwrap()
                 );

@@ -223,7 +223,7 @@ fn a_units_line_the_values_do_not_follow_is_named() {
     let e = eval_refused(&mm);
     let said = format!("t.tir:{radius}:28: `UNLOADED_RADIUS`: 0.00035 is the 0.35 written here read in mm, as the file's [UNITS] LENGTH at line {units} declares: outside any tyre's (0.05, 2] m");
     assert!(e.contains(&said), "{said}\n{e}");
-    assert!(!e.contains("millimetres written with LENGTH"), "{e}");
+    assert!(!e.contains("written with LENGTH = 'meter'"), "{e}");
 
     // Millimetres under 'meter': the radius's own hint, as before.
     let (in_mm, radius) = with(&t, "UNLOADED_RADIUS", "350");
@@ -235,7 +235,9 @@ fn a_units_line_the_values_do_not_follow_is_named() {
         "{e}"
     );
     assert!(
-        e.contains("(millimetres written with LENGTH = 'meter'?)"),
+        e.contains(
+            "is it in millimetres, written with LENGTH = 'meter'? (350 millimetres is 0.35 m)"
+        ),
         "{e}"
     );
 }

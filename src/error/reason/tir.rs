@@ -42,6 +42,122 @@ pub(super) fn tyre_pressure(given: f64, unit: Option<u8>, nominal: bool, apart: 
     s
 }
 
+/// The message of [`Limit::UnloadedRadius`]: a radius too large is most
+/// likely millimetres (else centimetres, inches) read as metres, one too
+/// small metres read under a smaller `[UNITS] LENGTH` (or divided twice):
+/// the hint follows the direction, with the value converted.
+pub(super) fn unloaded_radius(given: f64) -> String {
+    use crate::format::{exact, rounded};
+    let head = "a tyre's unloaded radius is 0.05–2 m (a kart's about 0.13 m, a car's about 0.3 m), in m after the file's [UNITS] LENGTH";
+    // `tyre::sizes::UNLOADED_RADIUS` (a lower layer may not import it).
+    let (lo, hi) = (0.05, 2.0);
+    let lands = |v: f64| v > lo && v <= hi;
+    if given > hi {
+        let hint = [
+            ("millimetres", 1e-3),
+            ("centimetres", 1e-2),
+            ("inches", 0.0254),
+        ]
+        .into_iter()
+        .find(|(_, f)| lands(given * f));
+        return match hint {
+            Some((unit, f)) => format!(
+                "{head}: too large for metres: is it in {unit}, written with LENGTH = 'meter'? ({} {unit} is {} m)",
+                exact(given),
+                rounded(given * f, 4)
+            ),
+            None => format!("{head}: too large for any tyre in metres, millimetres or inches: check the value"),
+        };
+    }
+    if given > 0.0 && lands(given * 1e3) {
+        return format!(
+            "{head}: too small: {} m is {} mm; as metres it would be {} m, a tyre's: is a value in metres read under LENGTH = 'mm' (or converted to metres twice)?",
+            exact(given),
+            rounded(given * 1e3, 4),
+            rounded(given * 1e3, 4)
+        );
+    }
+    format!("{head}: check the value and the file's [UNITS] LENGTH")
+}
+
+/// What [`ParamReason::TirLoadOffNominal`] says, boxed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadOffNominal {
+    /// The value as the file writes it.
+    pub written: f64,
+    /// The force unit it is read in (`N`, `kN`, …: the file's `[UNITS]`
+    /// FORCE, `N` where it gives none).
+    pub unit: &'static str,
+    /// That unit in N.
+    pub factor: f64,
+    /// `FNOMIN` as written, same unit.
+    pub fnomin: f64,
+    /// The value over `FNOMIN`.
+    pub ratio: f64,
+    /// The shares of `FNOMIN` a tyre's load range lies within.
+    pub range: (f64, f64),
+}
+
+impl ParamReason {
+    /// [`ParamReason::TirLoadOffNominal`] of the value `written` in `unit`
+    /// (`factor` N), beside `FNOMIN` `fnomin` (same unit), `ratio` times
+    /// it, outside the shares `range` of it a tyre's load range lies in.
+    pub(crate) fn tir_load_off_nominal(
+        written: f64,
+        (unit, factor): (&'static str, f64),
+        (fnomin, ratio): (f64, f64),
+        range: (f64, f64),
+    ) -> Self {
+        ParamReason::TirLoadOffNominal(Box::new(LoadOffNominal {
+            written,
+            unit,
+            factor,
+            fnomin,
+            ratio,
+            range,
+        }))
+    }
+}
+
+/// The message of [`ParamReason::TirLoadOffNominal`]: the value, the
+/// declared unit, the factor off `FNOMIN`, and the unit it is likely in.
+pub(super) fn load_off_nominal(d: &LoadOffNominal) -> String {
+    use crate::format::{exact, rounded};
+    let (lo, hi) = d.range;
+    let head = format!(
+        "is {} {} as the file's [UNITS] FORCE reads it, {} times its FNOMIN = {} {}: a tyre's validity range of loads lies within {lo} to {hi} times its nominal load (published files: FZMAX 2–3 times FNOMIN)",
+        exact(d.written),
+        d.unit,
+        rounded(d.ratio, 3),
+        exact(d.fnomin),
+        d.unit,
+    );
+    // The force unit the value as written is likely in: the one that puts
+    // it nearest FNOMIN's own range.
+    let units = [
+        ("N", 1.0),
+        ("kN", 1e3),
+        ("lbf", 4.448_221_615_260_5),
+        ("kgf", 9.806_65),
+    ];
+    let likely = units
+        .into_iter()
+        .filter(|(_, f)| *f != d.factor)
+        .map(|(u, f)| (u, f, d.ratio * f / d.factor))
+        .filter(|(_, _, r)| *r >= lo && *r <= hi)
+        .min_by(|a, b| a.2.ln().abs().total_cmp(&b.2.ln().abs()));
+    match likely {
+        Some((u, f, r)) => format!(
+            "{head}: is it written in {u}? ({} {u} is {} {}, {} times FNOMIN)",
+            exact(d.written),
+            rounded(d.written * f / d.factor, 4),
+            d.unit,
+            rounded(r, 3)
+        ),
+        None => format!("{head}: check the value and FNOMIN"),
+    }
+}
+
 /// What [`ParamReason::TirDeclaredUnit`] says, boxed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeclaredUnit {

@@ -38,7 +38,7 @@
 use super::params::{Need, HELD};
 use super::problem::StageProblem;
 use super::uncertainty::uncertainty;
-use crate::format::readable;
+use crate::format::{exact, readable};
 use crate::identify::spare::{
     candidates, held_at, lean_clause, spare, standard_errors_away, HoldFit, HoldWays, Spared,
     TieBreak, Tried,
@@ -111,7 +111,24 @@ pub enum HoldReason {
         /// How many standard errors `stated` lies from `fitted` (`None`
         /// without a standard error).
         standard_errors_away: Option<f64>,
+        /// The bound of its physical box `fitted` stood at, and the box
+        /// (`None`: inside it). There the data push it beyond, and its
+        /// standard error and effect, taken as if the box were not there,
+        /// mean nothing (PKY4 at 0.1001 of 0.1..5 on the Hoosier file was
+        /// said to move the fit by 723 %).
+        at_bound: Option<(f64, (f64, f64))>,
     },
+}
+
+/// The bound of `(lo, hi)` that `v` stands at, within 1e-3 of the box's
+/// width: a fit that ends there was stopped by it (the projected step
+/// creeps towards a bound it presses on, so a strict test would miss it).
+pub(super) fn near_bound(v: f64, (lo, hi): (f64, f64)) -> Option<(f64, (f64, f64))> {
+    let width = hi - lo;
+    [lo, hi]
+        .into_iter()
+        .find(|b| width.is_finite() && (v - b).abs() <= 1e-3 * width)
+        .map(|b| (b, (lo, hi)))
 }
 
 impl HoldReason {
@@ -137,6 +154,23 @@ impl HoldReason {
 impl fmt::Display for HoldReason {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            HoldReason::NotIdentifiable {
+                fitted,
+                source,
+                stated,
+                held_at: held,
+                at_bound: Some((bound, (lo, hi))),
+                ..
+            } => write!(
+                f,
+                "stopped at its {} bound {} when fitted ({}; its physical box {} to {}): the data would take it beyond, so they do not determine it, and a standard error taken there means nothing: {}",
+                if bound == lo { "lower" } else { "upper" },
+                exact(*bound),
+                readable(*fitted, 5),
+                exact(*lo),
+                exact(*hi),
+                held_at(&format!("the {source}"), *stated, *held, None)
+            ),
             HoldReason::Levels { need, have } => {
                 let why: Vec<String> = need
                     .iter()
@@ -159,6 +193,7 @@ impl fmt::Display for HoldReason {
                 stated,
                 held_at: held,
                 standard_errors_away,
+                ..
             } => write!(
                 f,
                 "not identifiable from these data when fitted ({} ± {}; one \
@@ -405,6 +440,7 @@ pub(super) fn hold_undetermined(
                 stated: value,
                 held_at: tried.value,
                 standard_errors_away: standard_errors_away(value, fit.p[k], u.std_error[k]),
+                at_bound: near_bound(fit.p[k], fit.bounds[k]),
             },
         ));
         keep(fit, tried, refit, evaluations);
@@ -499,8 +535,24 @@ mod tests {
             stated: 0.0,
             held_at: 0.0,
             standard_errors_away: Some(0.049),
+            at_bound: None,
         };
         assert_eq!(rule.to_string(), "not identifiable from these data when fitted (0.10066 ± 2.049; one standard error of it alone moves the fit by 715.1 % of the channel's RMS, which the other parameters' trade-off undoes): held at the Pacejka 2012 book default 0, 0.0 standard errors from the free fit (within the ±2 standard errors the data allow)");
+        // PKY4 of the Hoosier fit at 0.10014 of its box 0.1..5: said at
+        // its bound, without the standard error's effect (723 %).
+        assert_eq!(near_bound(0.10014, (0.1, 5.0)), Some((0.1, (0.1, 5.0))));
+        assert_eq!(near_bound(0.2, (0.1, 5.0)), None);
+        let at = HoldReason::NotIdentifiable {
+            fitted: 0.10014,
+            std_error: Some(2.06),
+            effect_percent: 722.7,
+            source: HoldSource::PacejkaBook,
+            stated: 2.0,
+            held_at: 2.0,
+            standard_errors_away: Some(0.9),
+            at_bound: near_bound(0.10014, (0.1, 5.0)),
+        };
+        assert_eq!(at.to_string(), "stopped at its lower bound 0.1 when fitted (0.10014; its physical box 0.1 to 5): the data would take it beyond, so they do not determine it, and a standard error taken there means nothing: held at the Pacejka 2012 book default 2");
     }
 
     /// A stated value more than two standard errors from the fitted one
@@ -521,6 +573,7 @@ mod tests {
                 stated,
                 held_at: held_value(stated, fitted, se, (-1.0, 1.0)),
                 standard_errors_away: standard_errors_away(stated, fitted, se),
+                at_bound: None,
             }
         };
         let far = rule(0.084).said("QDZ1");

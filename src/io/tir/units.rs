@@ -45,6 +45,11 @@ impl Units {
         declared: [None; 3],
     };
 
+    /// The force unit values are read in: its usual name and N.
+    fn force_unit(&self) -> (&'static str, f64) {
+        (self.declared[0].map_or("N", |d| d.unit), self.force)
+    }
+
     pub(super) fn factor(&self, key: &str) -> f64 {
         match key {
             "FNOMIN" | "FZMIN" | "FZMAX" => self.force,
@@ -75,7 +80,48 @@ impl Units {
     }
 }
 
+/// The share of `FNOMIN` a `.tir`'s load range (`FZMIN`, `FZMAX`) lies
+/// within: published files' `FZMAX` is 2–3.4 times it (all thirteen public
+/// files and the fixtures), their `FZMIN` 0 or at least 1/300 of it; a load
+/// written in N under `FORCE = 'kN'` (or in kN under N) lies 1000 times
+/// off, beyond.
+pub const LOAD_OVER_NOMINAL: (f64, f64) = (1e-3, 20.0);
+
 impl TirDocument {
+    /// Ok when the file's load range (`FZMIN`, `FZMAX`, SI in `tyre`) lies
+    /// within [`LOAD_OVER_NOMINAL`] of its `FNOMIN` (0 is no floor): a
+    /// `FZMAX = 8000` (N) beside `FNOMIN = 4` under `FORCE = 'kN'` passes
+    /// every size check (8 MN is only a range) yet is no tyre's; refused
+    /// at the key's line with the value, the unit it is read in, and the
+    /// factor it lies off `FNOMIN`.
+    pub(super) fn loads_against_nominal(
+        &self,
+        tyre: &MagicFormula,
+        units: &Units,
+    ) -> Result<(), InputError> {
+        let fnomin = tyre.coefficients.FNOMIN;
+        let (lo, hi) = LOAD_OVER_NOMINAL;
+        for key in ["FZMIN", "FZMAX"] {
+            let (Some(v), Some((line, _))) = (tyre.limits.get(key), self.get(key)) else {
+                continue;
+            };
+            let ratio = v / fnomin;
+            if ratio == 0.0 || (lo..=hi).contains(&ratio) {
+                continue;
+            }
+            let (unit, factor) = units.force_unit();
+            let reason = ParamReason::tir_load_off_nominal(
+                v / factor,
+                (unit, factor),
+                (fnomin / factor, ratio),
+                (lo, hi),
+            );
+            let e = ParamError::new(key, v / factor, reason);
+            return Err(self.at(line, InputProblem::TirValue(e)));
+        }
+        Ok(())
+    }
+
     /// The unit of `[UNITS]` key `key` by `table`: its factor, and where it
     /// is other than SI, its declaration; `None` when the file gives none.
     fn unit(

@@ -69,7 +69,7 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
         let values: Vec<String> = held
             .iter()
             .filter(|h| h.reason == why)
-            .map(|h| format!("{} = {}", h.name, exact(h.value)))
+            .map(|h| format!("{} = {}", h.name, value_text(h)))
             .collect();
         // An undetermined parameter's reason is its own (its fitted
         // value), so `said` names the one parameter of its line.
@@ -86,6 +86,20 @@ pub(crate) fn held_lines(held: &[Held]) -> Vec<String> {
         )
     }));
     out
+}
+
+/// A held value as the terminal says it: `LONGVL` with its km/h too, so
+/// that a rig's speed column in km/h (40 for a TTC rig's 40 km/h, read as
+/// 40 m/s) shows as the 144 km/h it became.
+fn value_text(h: &Held) -> String {
+    match h.name.as_str() {
+        "LONGVL" => format!(
+            "{} m/s ({} km/h)",
+            exact(h.value),
+            crate::format::readable(h.value * 3.6, 3)
+        ),
+        _ => exact(h.value),
+    }
 }
 
 /// The parameters of `fits` held for another reason than `--hold` (the
@@ -123,7 +137,7 @@ pub(crate) fn held_file_lines(held: &[Held], mark: &str) -> String {
             format!(
                 "{mark} held: {} = {}: {}\n",
                 h.name,
-                exact(h.value),
+                value_text(h),
                 h.reason.said(&h.name)
             )
         })

@@ -47,6 +47,11 @@ pub struct StagedJob {
     /// The curvatures `Ey`, `Ex` of the written file above 1 over the
     /// fitted data, each where it is largest (none: none is).
     pub curvature_above_one: Vec<super::curvature::CurvatureExcess>,
+    /// The written tyre's pure curve beyond any tyre's (a peak |F|/Fz
+    /// above 5, or a force turning against its slip), which `tyre-eval`
+    /// and `simulate` refuse: said, and the file written all the same;
+    /// first, a template's such curve.
+    pub pure_curve_warning: Vec<String>,
     /// The .tir text written.
     #[serde(skip)]
     pub tir: String,
@@ -93,9 +98,27 @@ impl StagedJob {
                 .iter()
                 .map(|e| format!("  warning: {}", e.line())),
         );
+        out.extend(
+            self.pure_curve_warning
+                .iter()
+                .map(|w| format!("  warning: {w}")),
+        );
         out.extend(self.unfitted.iter().map(|l| format!("  {l}")));
         out
     }
+}
+
+/// The warning of a fitted tyre whose pure curves (of the forces it has:
+/// `PDY1`, `PDX1` not 0) go beyond any tyre's, with the numbers, or `None`.
+fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
+    let c = &t.coefficients;
+    let e = t.check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0).err()?;
+    Some(format!(
+        "the fitted `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: refit with --hold, or check the data",
+        e.key,
+        exact(c.get(&e.key).unwrap_or(f64::NAN)),
+        e.reason
+    ))
 }
 
 /// The terminal's lines of each stage of `report` (indented as the
@@ -180,6 +203,16 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let lock = super::output_lock(o)?;
     let template = o.template.as_deref().map(TirDocument::read).transpose()?;
     let template_tyre = template.as_ref().map(|d| d.template()).transpose()?;
+    // A template's curves are judged as a tyre's, and warned of: the fit
+    // sets the coefficients it starts from (a block no stage fits is
+    // written as the template has it, and said again below).
+    let template_warning = template
+        .as_ref()
+        .zip(template_tyre.as_ref())
+        .and_then(|(d, t)| d.curve_refusal(t))
+        .map(|e| {
+            format!("the template's curves are no tyre's: {e}; its coefficients only start the fit")
+        });
     let data = read_rig(&o.data)?;
     let default_speed = template_tyre
         .as_ref()
@@ -267,6 +300,18 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .iter()
         .map(|e| format!("$ warning: {}\n", e.line()))
         .collect();
+    // A fitted curve beyond any tyre's is written, marked, not refused: a
+    // long fit is not lost, and the readers refuse the file with the
+    // same numbers.
+    let pure_curve_warning: Vec<String> = template_warning
+        .into_iter()
+        .chain(pure_curve_warning(&written))
+        .collect();
+    let curvature = curvature
+        + &pure_curve_warning
+            .iter()
+            .map(|w| format!("$ warning: {w}\n"))
+            .collect::<String>();
     let tir = held_comment(o)
         + &super::ranges::tir_comment(&spans, o.template.is_some())
         + &unfitted
@@ -277,7 +322,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         + &stages
         + &curvature
         + &crate::io::tir::tir_text(&written, template.as_ref())?;
-    let read_back = crate::io::tir::read_tir_text("<written .tir>", &tir)?;
+    let read_back = TirDocument::parse(std::path::Path::new("<written .tir>"), &tir)?.template()?;
     let back = mf_staged::round_trip_difference(&id.tyre, &read_back, &prepared.rows);
     if back > 1e-9 {
         return Err(FitError::RoundTrip { difference: back }.into());
@@ -292,6 +337,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         sigma_pooled,
         round_trip_relative_difference: back,
         curvature_above_one,
+        pure_curve_warning,
         figure,
         tir,
         unfitted,

@@ -40,6 +40,19 @@ pub const PEAK_SLIP_ANGLE: (f64, usize) = (std::f64::consts::PI / 6.0, 60);
 /// 0.01 steps (the peaks lie at 0.05–0.3).
 pub const PEAK_SLIP_RATIO: (f64, usize) = (1.0, 100);
 
+/// Where a `.tir` tyre's pure curves peak above any tyre's on a road or
+/// rig ([`crate::tyre::mf::WARN_FRICTION`], below the refusal at 5): a
+/// published file (`FSAE_Defaults.tir`, 3.4 at light load) is read, and
+/// the number said. Only the forces the file describes are judged.
+pub(crate) fn peak_of(tyre: &Tyre) -> Option<crate::tyre::mf::PeakFriction> {
+    let Tyre::MagicFormula(t) = tyre else {
+        return None;
+    };
+    let c = &t.coefficients;
+    let described = (c.PDY1 != 0.0, c.PDX1 != 0.0);
+    t.peak_friction(described, crate::tyre::mf::WARN_FRICTION)
+}
+
 /// Points whose horizontal force exceeds the tyre's friction.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BeyondFriction {

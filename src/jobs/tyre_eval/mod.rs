@@ -156,6 +156,10 @@ pub struct TyreEvalReport {
     pub sign_changes: Vec<SignChange>,
     /// Points whose slip stiffness at their own conditions is negative.
     pub against_slip: Vec<AgainstSlip>,
+    /// A `.tir`'s pure-curve peak |F|/Fz above any tyre's on a road or
+    /// rig (`tyre::mf::WARN_FRICTION`), said as a warning.
+    #[serde(skip)]
+    pub peak_friction: Option<crate::tyre::mf::PeakFriction>,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -452,6 +456,7 @@ pub fn run(
         .filter(|h| !h.is_empty() && !columns.iter().any(|(n, _)| n == h))
         .collect();
     Ok(TyreEvalReport {
+        peak_friction: friction::peak_of(&tyre),
         not_written,
         points: points.display().to_string(),
         count,
@@ -487,18 +492,8 @@ impl TyreEvalReport {
     /// not read, and the points beyond the ranges the tyre was fitted to.
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
-        if !self.not_written.is_empty() {
-            out.push(format!(
-                "the points file's column{} {} not carried to the output: tyre-eval reads fz, kappa, alpha, camber, speed and pressure and writes them with the tyre's outputs",
-                if self.not_written.len() == 1 { "" } else { "s" },
-                self.not_written
-                    .iter()
-                    .map(|c| format!("`{c}`"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-                    + if self.not_written.len() == 1 { " is" } else { " are" }
-            ));
-        }
+        out.extend(self.peak_friction.iter().map(|p| p.to_string()));
+        out.extend(unread::not_written_line(&self.not_written));
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));

@@ -121,6 +121,24 @@ pub(crate) fn unread(tyre: &Tyre, p: &Points, f: &[PointForces]) -> Vec<Unread> 
     out
 }
 
+/// The warning of the points file's columns `tyre-eval` neither reads nor
+/// writes (`not_written`), if any.
+pub(crate) fn not_written_line(not_written: &[String]) -> Option<String> {
+    if not_written.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "the points file's column{} {} not carried to the output: tyre-eval reads fz, kappa, alpha, camber, speed and pressure and writes them with the tyre's outputs",
+        if not_written.len() == 1 { "" } else { "s" },
+        not_written
+            .iter()
+            .map(|c| format!("`{c}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+            + if not_written.len() == 1 { " is" } else { " are" }
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

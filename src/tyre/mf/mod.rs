@@ -92,6 +92,8 @@ mod kernels;
 mod lateral_of;
 mod mode;
 mod pure_curves;
+pub use pure_curves::PeakFriction;
+pub(crate) use pure_curves::WARN_FRICTION;
 mod slip;
 mod version;
 pub mod vertical;

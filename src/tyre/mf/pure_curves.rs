@@ -35,12 +35,56 @@ const MAX_KAPPA: f64 = 1.0;
 const TURN: f64 = 0.05;
 
 /// What a scan found wrong, at a load and slip.
+#[derive(Clone, Copy)]
 struct Fault {
     /// |F|/Fz of a peak, or the force (N) of a turn.
     at: f64,
     reversal: bool,
     load: f64,
     slip: f64,
+}
+
+/// Where a tyre's pure curve peaks highest ([`MagicFormula::peak_friction`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PeakFriction {
+    /// The lateral curve (else the longitudinal).
+    pub lateral: bool,
+    /// |F|/Fz there.
+    pub ratio: f64,
+    /// The load, N.
+    pub load: f64,
+    /// The slip angle (rad) or ratio.
+    pub slip: f64,
+}
+
+/// The peak |F|/Fz above which reading a `.tir` warns: racing slicks
+/// reach about 1.8 on a rig, road tyres 1.0–1.3; published defaults
+/// (`FSAE_Defaults.tir`, 3.4 at light load) go beyond, and are public
+/// files, so they are read and the number said.
+pub(crate) const WARN_FRICTION: f64 = 2.5;
+
+impl std::fmt::Display for PeakFriction {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use crate::format::{readable, rounded};
+        let (force, slip) = match self.lateral {
+            true => (
+                "|Fy|/Fz",
+                format!(
+                    "slip angle {} rad ({}°)",
+                    readable(self.slip, 3),
+                    readable(self.slip.to_degrees(), 3)
+                ),
+            ),
+            false => ("|Fx|/Fz", format!("slip ratio {}", readable(self.slip, 3))),
+        };
+        write!(
+            f,
+            "the file's pure {} force peaks at {force} = {} (at Fz = {} N, {slip}), above the {WARN_FRICTION} of any tyre on a road or rig (racing slicks about 1.8): its forces there are the file's, not a tyre's",
+            if self.lateral { "lateral" } else { "longitudinal" },
+            readable(self.ratio, 3),
+            rounded(self.load, 5),
+        )
+    }
 }
 
 /// The coefficient names of a channel: peak, its scale, its load
@@ -90,7 +134,10 @@ impl MagicFormula {
             let faults: Vec<Fault> = self
                 .judged_loads()
                 .iter()
-                .filter_map(|&fz| self.scan(is_lateral, fz))
+                .filter_map(|&fz| {
+                    let (peak, turn, _) = self.scan(is_lateral, fz);
+                    peak.or(turn)
+                })
                 .collect();
             // A too-high peak first: it names the peak coefficient, which
             // is the clearer slip when both show.
@@ -103,6 +150,35 @@ impl MagicFormula {
             }
         }
         Ok(())
+    }
+
+    /// The highest |F|/Fz of the pure lateral (`lateral`) and longitudinal
+    /// (`longitudinal`) curves over the loads and slips
+    /// [`Self::check_pure_curves`] judges, where it lies above `above`:
+    /// the curve (lateral or not), |F|/Fz, the load (N) and the slip
+    /// (rad, or the ratio). A published file may reach 3 (its μ rising
+    /// towards light load); a warning says it with these numbers.
+    pub(crate) fn peak_friction(
+        &self,
+        (lateral, longitudinal): (bool, bool),
+        above: f64,
+    ) -> Option<PeakFriction> {
+        [(lateral, true), (longitudinal, false)]
+            .into_iter()
+            .filter(|(judged, _)| *judged)
+            .flat_map(|(_, is_lateral)| {
+                self.judged_loads()
+                    .into_iter()
+                    .filter_map(move |fz| self.scan(is_lateral, fz).2.map(|f| (is_lateral, f)))
+            })
+            .filter(|(_, f)| f.at > above)
+            .max_by(|a, b| a.1.at.total_cmp(&b.1.at))
+            .map(|(lateral, f)| PeakFriction {
+                lateral,
+                ratio: f.at,
+                load: f.load,
+                slip: f.slip,
+            })
     }
 
     /// `FNOMIN` and the ends of the file's load range clipped to a quarter
@@ -118,9 +194,10 @@ impl MagicFormula {
         [lo, fnomin.clamp(lo, hi), hi]
     }
 
-    /// The first fault of the pure curve at load `fz`: a peak beyond
-    /// [`MAX_FRICTION`] (the highest), else a turn against the slip.
-    fn scan(&self, lateral: bool, fz: f64) -> Option<Fault> {
+    /// The pure curve at load `fz`: its peak beyond [`MAX_FRICTION`] (the
+    /// highest), its first turn against the slip, and its highest |F|/Fz
+    /// whatever its size.
+    fn scan(&self, lateral: bool, fz: f64) -> (Option<Fault>, Option<Fault>, Option<Fault>) {
         let (lo_key, hi_key, max) = match lateral {
             true => ("ALPMIN", "ALPMAX", MAX_ALPHA),
             false => ("KPUMIN", "KPUMAX", MAX_KAPPA),
@@ -137,16 +214,16 @@ impl MagicFormula {
             (1.0, self.limits.get(hi_key).unwrap_or(max).min(max)),
             (-1.0, (-self.limits.get(lo_key).unwrap_or(-max)).min(max)),
         ];
-        let mut peak: Option<Fault> = None;
         let mut turn: Option<Fault> = None;
+        let mut top: Option<Fault> = None;
         for (side, end) in ends.into_iter().filter(|(_, end)| *end > 0.0) {
             let mut passed = false;
             for i in 1..=POINTS {
                 let x = side * end * i as f64 / POINTS as f64;
                 let f = force(x);
                 let ratio = f.abs() / fz;
-                if ratio > MAX_FRICTION && peak.as_ref().is_none_or(|p| ratio > p.at) {
-                    peak = Some(Fault {
+                if top.as_ref().is_none_or(|p| ratio > p.at) {
+                    top = Some(Fault {
                         at: ratio,
                         reversal: false,
                         load: fz,
@@ -165,7 +242,7 @@ impl MagicFormula {
                 }
             }
         }
-        peak.or(turn)
+        (top.filter(|p| p.at > MAX_FRICTION), turn, top)
     }
 
     /// The refusal of fault `f` of the `lateral` (else longitudinal) curve,

@@ -35,7 +35,12 @@ fn not_identifiable(dir: &Path, data: &Path, iterations: &str) -> Vec<String> {
     );
     let mut held: Vec<String> = text
         .lines()
-        .filter(|l| l.contains("not identifiable from these data"))
+        // Held for want of data: not identifiable where it stood, or
+        // stopped at a bound the data would take it past.
+        .filter(|l| {
+            l.contains("not identifiable from these data")
+                || l.contains("so they do not determine it")
+        })
         .filter_map(|l| l.split("held: ").nth(1))
         .map(|l| l.split(' ').next().unwrap().to_string())
         .collect();

@@ -376,6 +376,7 @@ mod trips_s72_tyre;
 mod trips_s73;
 mod trips_s74;
 mod trips_s74_tir;
+mod trips_s75_sim;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -22,22 +22,36 @@ fn angle(v: f64) -> String {
 
 /// The sentence of [`MetricsError::NoStep`] in plain terms: where the
 /// steer stays, or how little it moves, against the step it needs.
-fn no_step(initial: f64, steady: f64, min: f64) -> String {
+fn no_step(initial: f64, steady: f64, min: f64, pre_window: f64) -> String {
     let change = steady - initial;
+    // Wheels already turned at the first sample and held: a record cut
+    // after its step (or a steady turn), whose straight running is gone.
+    let turned = match initial.abs() >= min && change.abs() < min {
+        true => format!(
+            "; the wheels are already turned by {} in the initial window: a record that starts \
+             during or after its step holds no straight running before it, and the metrics \
+             measure a step from the steer held straight for `pre_window` = {} s before it: \
+             start the record at least {} s before the steer moves",
+            angle(initial),
+            Num(pre_window),
+            Num(pre_window)
+        ),
+        false => String::new(),
+    };
     if !change.is_finite() {
         return "no steer step: the steer is not a number in the initial or steady window".into();
     }
     if change.abs() < 1e-9 {
         return format!(
             "no steer step: the steer stays at {} from the initial window to the steady one; \
-             a step steer needs a change of at least {}",
+             a step steer needs a change of at least {}{turned}",
             angle(initial),
             angle(min)
         );
     }
     format!(
         "no steer step: the steer goes from {} in the initial window to {} in the steady one, \
-         a change of {}, less than the {} a step steer needs",
+         a change of {}, less than the {} a step steer needs{turned}",
         angle(initial),
         angle(steady),
         angle(change),
@@ -66,7 +80,7 @@ pub enum MetricsError {
     },
     /// No steer step in the record: the steer's means in the initial and
     /// steady windows, rad, and the least change that is a step.
-    #[error("{}", no_step(*initial, *steady, *min))]
+    #[error("{}", no_step(*initial, *steady, *min, *pre_window))]
     NoStep {
         /// Mean steer in the initial window, rad.
         initial: f64,
@@ -74,6 +88,9 @@ pub enum MetricsError {
         steady: f64,
         /// The smallest change that counts as a step, rad.
         min: f64,
+        /// The initial window, s: how long the steer must be held before
+        /// the step.
+        pre_window: f64,
     },
     /// The steer does not cross half its step after the initial window.
     #[error("the steer never crosses half its step between the initial and steady windows")]
@@ -94,6 +111,37 @@ pub enum MetricsError {
         from: f64,
         /// Its end, s.
         to: f64,
+    },
+    /// The steer moves within [`MIN_STRAIGHT`] of the record's first
+    /// sample: the record starts during (or just before) the step, with no
+    /// straight running to measure it from.
+    #[error("the record starts during its step: the steer moves by more than 5 % of its step at {moved:.3} s, {} s after the record's first sample at {from:.3} s, so the record holds no steady straight running before the step (at least {} s is needed to read one); the metrics measure the step from the steer held for `pre_window` = {} s before it: start the record at least {} s before the steer moves (at {} s or earlier)", crate::format::rounded(moved - from, 3), Num(MIN_STRAIGHT), Num(*pre_window), Num(*pre_window), crate::format::rounded(moved - pre_window, 3))]
+    StartsInStep {
+        /// Where the steer first is 5 % of its step off its initial value, s.
+        moved: f64,
+        /// The record's first sample, s.
+        from: f64,
+        /// The initial window asked for, s.
+        pre_window: f64,
+    },
+    /// A record whose steer is no step steer at all (a log of driving):
+    /// it reverses more often than a step and its return do.
+    #[error("no step steer in this record: the steer spans {}, from {} to {}, and reverses {reversals} times by more than {} (a quarter of that span, or eight times the sensor's noise), and holds within {} for at most {} s (from {} s); a step steer is a steer held, changed once quickly and held again (a step and its return reverse once): cut one such stretch out of the log to measure it", angle(hi - lo), angle(*lo), angle(*hi), angle(*swing), angle(*band), fixed(*longest, 2), fixed(*longest_from, 2))]
+    NoStepSteer {
+        /// The least steer, rad.
+        lo: f64,
+        /// The largest steer, rad.
+        hi: f64,
+        /// How many times the steer turns back by more than `swing`.
+        reversals: usize,
+        /// The least change a reversal counts, rad.
+        swing: f64,
+        /// The longest time the steer stays within `band`, s.
+        longest: f64,
+        /// Where that stretch starts, s.
+        longest_from: f64,
+        /// The width of a held steer, rad.
+        band: f64,
     },
     /// The steer still moves inside the steady window: the steady values
     /// would mix the step in (a window that reaches back over the step).
@@ -136,6 +184,11 @@ pub enum MetricsError {
         time: f64,
     },
 }
+
+/// The least straight running before a step that the metrics read, s: in
+/// less, the initial means stand on a handful of samples (10 at 100 Hz),
+/// and a record that starts within it starts in the step.
+pub const MIN_STRAIGHT: f64 = 0.1;
 
 /// The band a step steer's normalised steer stays in once it has reached
 /// 90 % of its step (a driver's hand wobbles by far less than half a step).

@@ -34,7 +34,7 @@ pub use fit::{
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};
-pub use metrics::{MetricsError, HELD_STEP};
+pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};
 pub(crate) use number::hundredths_down;
 pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
@@ -42,7 +42,9 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
-pub use reason::{BeyondSignal, Limit, ParamReason, PerLoad, ScheduleColumn, DYNAMIC_INDEX};
+pub use reason::{
+    BeyondSignal, Limit, ParamReason, PerLoad, ScheduleColumn, SlowSteer, Waveform, DYNAMIC_INDEX,
+};
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;
 use thiserror::Error;

@@ -6,19 +6,24 @@
 use super::options::{ModeError, OptionsError};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
+pub use slow_steer::{SlowSteer, Waveform};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
 pub use tir::{DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod boxed;
+mod slow_steer;
 mod tir;
 
-/// Range of the dynamic index `Iz/(m·a·b)`: road vehicles lie at about
-/// 0.8–1.2, and no rigid vehicle far outside this range (its radius of
-/// gyration would be a tenth, or three times, of its axles' distance from
-/// the centre of gravity). Outside it, mass or inertia is in the wrong unit
-/// (g, kg·mm², slug).
-pub const DYNAMIC_INDEX: (f64, f64) = (0.1, 10.0);
+/// Range of the dynamic index `k²/(a·b) = Iz/(m·a·b)`: road cars lie at
+/// about 0.8–1.2 (Milliken & Milliken 1995), a racing car with its masses
+/// near the centre at 0.6 (the Putnam log's Dallara, 0.59), a long bus or
+/// a car with a heavy overhang at about 1.5. The bounds leave room beyond
+/// both: 0.4 is a radius of gyration of 0.63·√(a·b), every mass within
+/// two thirds of the axles' reach; 2.5 is 1.6·√(a·b), masses beyond the
+/// bumpers. Outside them the inertia is a slip: a digit (10× too large
+/// reads 8–12), or a unit (g, kg·cm², slug).
+pub const DYNAMIC_INDEX: (f64, f64) = (0.4, 2.5);
 
 /// The size of a row of `history.csv` as written, bytes (14 columns of
 /// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
@@ -46,6 +51,10 @@ pub enum ParamReason {
         /// The smallest step the metrics take as one, rad.
         min: f64,
     },
+    /// A sine or sweep so slow against its run that its steer stays below
+    /// the smallest step the metrics take as one ([`SlowSteer`]).
+    #[error("{0}")]
+    SlowSteer(Box<SlowSteer>),
     /// A steer frequency the recorded rows cannot resolve: rows every
     /// `step` s sample at no more than twice the frequency (Nyquist; at
     /// exactly twice they can fall on the zero crossings), so the written
@@ -184,7 +193,7 @@ pub enum ParamReason {
     },
     /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
     /// ([`DYNAMIC_INDEX`]).
-    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road vehicles about 0.8–1.2); check the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1)]
+    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road cars about 0.8–1.2, Milliken & Milliken); at an index of 1 the yaw inertia would be mass·a·b = {} kg·m²: check the value for a slipped digit and the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1, crate::format::significant(mass * ab, 4))]
     DynamicIndex {
         /// The index of the values given.
         index: f64,

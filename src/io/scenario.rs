@@ -5,7 +5,7 @@
 //! speeds in m/s.
 
 use super::fitted_ranges::FittedRanges;
-use super::limits::{frequency, road_wheel_steer, speed, MAX_ROAD_WHEEL_STEER};
+use super::limits::{frequency, road_wheel_steer, speed};
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
 use super::tables::{check_road, check_vehicle, resolve_model, ResolvedModel};
@@ -18,6 +18,7 @@ use crate::metrics::MetricSettings;
 use crate::metrics::MIN_STEP;
 use crate::sim::{Integrator, Method, MethodName, Tolerances};
 use crate::vehicle::{ModelOptions, State, Vehicle, VehicleModel};
+use reach::{ramp_reach, steers};
 pub use replay::ReplaySpec;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -467,41 +468,6 @@ fn windows_beyond_record(src: &TomlSource, s: &MetricSettings, end: f64) -> Inpu
     param_error(src, Some("metrics"), e)
 }
 
-/// The steer a ramp reaches by its `end`, within ±[`MAX_ROAD_WHEEL_STEER`],
-/// refused at `rate` naming that steer: the rate itself may be sound and
-/// the run too long. Degrees are suggested only for a rate that passes the
-/// limit within a second, which no ramp in rad/s of a road wheel does.
-fn ramp_reach(r: &RampSteer) -> Result<(), ParamError> {
-    let reached = r.rate * (r.end - r.start);
-    if road_wheel_steer("rate", reached).is_ok() {
-        return Ok(());
-    }
-    Err(ParamError::new(
-        "rate",
-        r.rate,
-        ParamReason::RampReach {
-            reached,
-            end: r.end,
-            in_degrees: r.rate.abs() > MAX_ROAD_WHEEL_STEER,
-        },
-    ))
-}
-
-/// A manoeuvre that steers the road wheels by at most `reached`, rad,
-/// refused at `key` (written as `v`) below the smallest step the metrics
-/// take as one: a sine of amplitude 0 or a ramp of rate 0 ran as straight
-/// running without a word, answering nothing the file asked.
-fn steers(key: &str, v: f64, reached: f64) -> Result<(), ParamError> {
-    if reached.abs() >= MIN_STEP {
-        return Ok(());
-    }
-    let reason = ParamReason::NoSteer {
-        reached: reached.abs(),
-        min: MIN_STEP,
-    };
-    Err(ParamError::new(key, v, reason))
-}
-
 /// A steer of frequency `frequency` (the key `key`) the rows every `step`
 /// s resolve: sampled more than twice a period (Nyquist; at exactly twice
 /// the rows can fall on its zero crossings and write a sine as zeros).
@@ -538,6 +504,7 @@ fn other_manoeuvre(
             check(src, resolved("frequency", s.frequency, step))?;
             check(src, road_wheel_steer("amplitude", s.amplitude))?;
             check(src, steers("amplitude", s.amplitude, s.amplitude))?;
+            check(src, reach::sine_reach(s))?;
             Manoeuvre::Sine(*s)
         }
         ManoeuvreSpec::Sweep(s) => {
@@ -557,6 +524,7 @@ fn other_manoeuvre(
                 ("f_end", s.f_end)
             };
             check(src, resolved(key, highest, step))?;
+            check(src, reach::sweep_reach(s, key))?;
             Manoeuvre::Sweep(*s)
         }
         ManoeuvreSpec::Schedule(s) => {
@@ -573,6 +541,7 @@ fn other_manoeuvre(
     })
 }
 
+mod reach;
 mod replay;
 mod step_steer;
 

@@ -203,6 +203,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
             initial: d0,
             steady: ds,
             min: MIN_STEP,
+            pre_window: s.pre_window,
         });
     }
     for (step, name) in [(r_step, "yaw rate"), (a_step, "lateral acceleration")] {

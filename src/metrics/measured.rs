@@ -8,7 +8,7 @@
 //! reported and checked against ISO 7401, which asks for at most 0.15 s.
 //! Units: SI, rad, s.
 
-use super::step_shape::{check_step_shape, last_crossing};
+use super::step_shape::{check_steer_is_a_step, check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
@@ -415,17 +415,20 @@ pub fn measured_step_metrics(
         &mut cleaning,
         |piece| {
             let p = fill_masked(piece);
-            step_metrics(
-                &p.t,
-                &p.steer,
-                &p.yaw_rate,
-                p.ay.as_deref(),
-                p.beta.as_deref(),
-                settings,
-            )
-            .and_then(|m| check_step_shape(&p.t, &p.steer, &m, settings).map(|()| m))
-            .map(|m| (m, p))
-            .map_err(PieceRefusal::NoStepMetrics)
+            check_steer_is_a_step(&p.t, &p.steer)
+                .and_then(|()| {
+                    step_metrics(
+                        &p.t,
+                        &p.steer,
+                        &p.yaw_rate,
+                        p.ay.as_deref(),
+                        p.beta.as_deref(),
+                        settings,
+                    )
+                })
+                .and_then(|m| check_step_shape(&p.t, &p.steer, &m, settings).map(|()| m))
+                .map(|m| (m, p))
+                .map_err(PieceRefusal::NoStepMetrics)
         },
     );
     let Some((piece, (metrics, filled))) = found else {

@@ -476,6 +476,7 @@ pub(crate) fn step_metrics(
         initial: window_mean(t, &steer_f, t[0], t[0] + s.pre_window).0,
         steady: window_mean(t, &steer_f, t[n - 1] - s.steady_window, t[n - 1]).0,
         min: MIN_STEP,
+        pre_window: s.pre_window,
     };
     let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| no_step())?;
     if d.steady.abs() < MIN_STEP {

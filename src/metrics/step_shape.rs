@@ -5,11 +5,13 @@
 //! reached 90 % of it (else it is a sweep or a sine, whose "step" is the
 //! difference of two windows' means), and risen within [`MAX_RISE`] (else
 //! it is a ramp, whose response times are those of a car following its
-//! input, about zero).
+//! input, about zero); and, before any of that, whether the record's steer
+//! is a step at all ([`check_steer_is_a_step`]): a log of driving reverses
+//! its steer again and again, and its windows' "step" is a step of nothing.
 
 use super::{first_crossing, noise_deviation, noise_gain, window_mean, zero_phase_low_pass};
 use super::{MetricSettings, StepMetrics};
-use crate::error::{MetricsError, HELD_STEP};
+use crate::error::{MetricsError, HELD_STEP, MIN_STRAIGHT};
 
 /// The share of the step by which the steer has left its initial value
 /// (the onset of the total-variance window).
@@ -85,6 +87,14 @@ pub(crate) fn check_step_shape(
     match (moved, not_held) {
         // Neither held before nor after: no step at all (a log of driving).
         (Some(moved), Some((_, time, _))) => Err(MetricsError::NeverHeld { moved, time }),
+        // Moved within a tenth of a second of the first sample: no
+        // straight running to shorten the window to (it advised a "0.01 s"
+        // initial window for a record cut at its step).
+        (Some(moved), None) if moved - from < MIN_STRAIGHT => Err(MetricsError::StartsInStep {
+            moved,
+            from,
+            pre_window: s.pre_window,
+        }),
         (Some(moved), None) => Err(MetricsError::StepInInitialWindow { moved, from, to }),
         (None, Some((reached, time, share))) => Err(MetricsError::SteerNotHeld {
             reached,
@@ -144,5 +154,153 @@ fn check_steady_window(
             from,
             to,
         }),
+    }
+}
+
+/// The least swing of the steer, as a share of its span, that counts as a
+/// reversal: a driver's wobble on a held step is far less, a step and its
+/// return swing by all of it.
+const REVERSAL_SHARE: f64 = 0.25;
+
+/// The least swing counted as a reversal, in the steer sensor's white-noise
+/// deviations: neighbours of such noise differ by 8σ (5.7 deviations of
+/// their difference) about once in 10⁸ samples.
+const REVERSAL_NOISE: f64 = 8.0;
+
+/// The band of a held steer, as a share of its span (the evidence's
+/// longest steady stretch).
+const HELD_SHARE: f64 = 0.1;
+
+/// The most reversals a step-steer record makes: one, a step and its
+/// return (`metrics` measures the first of several held steps itself).
+const MAX_REVERSALS: usize = 1;
+
+/// Refuses a record whose steer reverses more than [`MAX_REVERSALS`]
+/// times by more than a quarter of its span (or [`REVERSAL_NOISE`] of
+/// its noise): no step steer (a log of driving, a sine, a sweep), said with
+/// its span, reversals and longest steady stretch instead of a "step"
+/// that the windows' means made up (a racing log's was "377 % of it").
+pub(crate) fn check_steer_is_a_step(t: &[f64], steer: &[f64]) -> Result<(), MetricsError> {
+    let (lo, hi) = steer
+        .iter()
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let span = hi - lo;
+    if span.is_nan() || span <= 0.0 || t.len() != steer.len() {
+        return Ok(());
+    }
+    let noise = noise_deviation(steer);
+    let swing = (REVERSAL_SHARE * span).max(REVERSAL_NOISE * noise);
+    let reversals = reversals(steer, swing);
+    if reversals <= MAX_REVERSALS {
+        return Ok(());
+    }
+    let band = (HELD_SHARE * span).max(NOISE_DEVIATIONS * noise);
+    let (longest, longest_from) = longest_held(t, steer, band);
+    Err(MetricsError::NoStepSteer {
+        lo,
+        hi,
+        reversals,
+        swing,
+        longest,
+        longest_from,
+        band,
+    })
+}
+
+/// How many times `x` turns back by more than `swing` from its last
+/// extreme (a hysteresis: noise smaller than `swing` turns nothing).
+fn reversals(x: &[f64], swing: f64) -> usize {
+    let mut x = x.iter().copied().filter(|v| v.is_finite());
+    let Some(first) = x.next() else {
+        return 0;
+    };
+    // The direction (0 until the first swing), the extreme since the last
+    // turn, and the range before the first swing.
+    let (mut dir, mut extreme, mut lo, mut hi, mut n) = (0.0, first, first, first, 0);
+    for v in x {
+        if dir == 0.0 {
+            (lo, hi) = (lo.min(v), hi.max(v));
+            if v - lo > swing || hi - v > swing {
+                (dir, extreme) = (if v - lo > swing { 1.0 } else { -1.0 }, v);
+            }
+        } else if dir * (v - extreme) > 0.0 {
+            extreme = v;
+        } else if dir * (extreme - v) > swing {
+            (dir, extreme, n) = (-dir, v, n + 1);
+        }
+    }
+    n
+}
+
+/// The longest stretch over which `x` stays within a band `band` wide:
+/// its length and start, s (two pointers, the window's extremes kept in
+/// monotonic queues).
+fn longest_held(t: &[f64], x: &[f64], band: f64) -> (f64, f64) {
+    use std::collections::VecDeque;
+    let (mut lows, mut highs) = (VecDeque::<usize>::new(), VecDeque::<usize>::new());
+    let (mut left, mut best) = (0, (0.0, t.first().copied().unwrap_or(0.0)));
+    for right in 0..x.len() {
+        while lows.back().is_some_and(|&i| x[i] >= x[right]) {
+            lows.pop_back();
+        }
+        lows.push_back(right);
+        while highs.back().is_some_and(|&i| x[i] <= x[right]) {
+            highs.pop_back();
+        }
+        highs.push_back(right);
+        while x[highs[0]] - x[lows[0]] > band {
+            left += 1;
+            while lows[0] < left {
+                lows.pop_front();
+            }
+            while highs[0] < left {
+                highs.pop_front();
+            }
+        }
+        if t[right] - t[left] > best.0 {
+            best = (t[right] - t[left], t[left]);
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A step and its return turn once; a sine of five periods ten times;
+    /// noise below the swing, never.
+    #[test]
+    fn reversals_are_counted_past_the_swing_only() {
+        let t: Vec<f64> = (0..1000).map(|i| 0.01 * f64::from(i)).collect();
+        let step_back: Vec<f64> = t
+            .iter()
+            .map(|&t| f64::from(u8::from((2.0..6.0).contains(&t))))
+            .collect();
+        assert_eq!(reversals(&step_back, 0.25), 1);
+        let sine: Vec<f64> = t
+            .iter()
+            .map(|t| (std::f64::consts::TAU * 0.5 * t).sin())
+            .collect();
+        assert_eq!(reversals(&sine, 0.5), 10);
+        let wobble: Vec<f64> = t
+            .iter()
+            .enumerate()
+            .map(|(i, _)| 0.1 * f64::from(i as u8 % 2))
+            .collect();
+        assert_eq!(reversals(&wobble, 0.25), 0);
+        assert!(check_steer_is_a_step(&t, &step_back).is_ok());
+        let Err(MetricsError::NoStepSteer {
+            reversals, longest, ..
+        }) = check_steer_is_a_step(&t, &sine)
+        else {
+            panic!("a sine is no step steer");
+        };
+        assert_eq!(reversals, 10);
+        // Within a tenth of its span of 2 about a crest: 2·acos(0.8)/π s.
+        assert!((longest - 0.41).abs() < 0.02, "{longest}");
     }
 }

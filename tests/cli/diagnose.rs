@@ -247,7 +247,7 @@ fn diagnose_refuses_bad_campaigns_clearly() {
         (
             "yaw_inertia = 2315.0",
             "yaw_inertia = 23150000.0",
-            "vehicle.toml:3:15: `vehicle.yaw_inertia` = 23150000: with mass = 1530 kg it gives a radius of gyration √(yaw_inertia/mass) of 123 m, against √(a·b) = 1.36 m from the axles: yaw_inertia / (mass·a·b) = 8162, outside 0.1–10",
+            "vehicle.toml:3:15: `vehicle.yaw_inertia` = 23150000: with mass = 1530 kg it gives a radius of gyration √(yaw_inertia/mass) of 123 m, against √(a·b) = 1.36 m from the axles: yaw_inertia / (mass·a·b) = 8162, outside 0.4–2.5",
         ),
         (
             "mass = 1530.0",

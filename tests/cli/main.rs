@@ -378,6 +378,7 @@ mod trips_s74;
 mod trips_s74_tir;
 mod trips_s75_replay;
 mod trips_s75_tir;
+mod trips_s75_sim;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

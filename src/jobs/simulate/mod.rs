@@ -5,6 +5,7 @@
 //! the scenario's words do not say ([`checks`]).
 
 mod checks;
+mod transient;
 
 use super::metrics::{metric_lines, UNITS};
 use crate::diagnose::campaign::StatedUncertainty;
@@ -260,7 +261,12 @@ impl SimulateReport {
         if let Some(r) = &self.replay {
             write_json_sorted(&files[3], r)?;
         }
-        history_figure(&self.scenario, &self.history, self.measured.as_ref()).save(&files[2])
+        let mut figure = history_figure(&self.scenario, &self.history, self.measured.as_ref());
+        // A step's transient, not a pixel column of a long run.
+        if let Some(m) = &self.metrics {
+            transient::focus(&mut figure, &self.history, m.time_zero);
+        }
+        figure.save(&files[2])
     }
 }
 

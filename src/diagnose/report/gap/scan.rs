@@ -60,10 +60,13 @@ pub struct WindowGap {
     pub samples: usize,
     /// RMS residual over it.
     pub rms: f64,
-    /// That RMS in noise floors.
+    /// That RMS in noise floors (`null` on a zero floor).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub noise_floors: f64,
     /// The RMS in noise floors that pure noise exceeds in no window of the
-    /// run with a chance above [`FALSE_ALARM`].
+    /// run with a chance above [`FALSE_ALARM`] (`null` where the floor
+    /// rests on too few effective samples to set one).
+    #[serde(serialize_with = "crate::report::finite_or_null")]
     pub threshold_noise_floors: f64,
     /// Windows tested.
     pub windows_tested: usize,

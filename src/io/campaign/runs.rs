@@ -127,7 +127,7 @@ pub(super) fn run_files(
             let at = if i < listed {
                 Some(i)
             } else {
-                files[..listed].iter().position(|q| same(q))
+                files[..listed].iter().position(same)
             };
             return Err(match at {
                 Some(k) => src.located(src.key_span(&format!("runs.files[{k}]")), problem),

@@ -13,7 +13,7 @@ pub mod rig;
 pub(crate) mod rig_rows;
 mod run;
 mod run_units;
-pub use run_units::MAX_SPEED;
+pub use run_units::{unchecked_speed_unit, MAX_SPEED};
 pub mod scenario;
 mod schedule;
 pub mod study;

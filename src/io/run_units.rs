@@ -438,3 +438,25 @@ pub(super) fn check_speed_by_ax(
     };
     Err(c.error_at(path, i, "speed", slip.into()))
 }
+
+/// A run with neither accelerometer channel: its speed's unit is
+/// judged by `ay` against speed × yaw rate, or by `ax` against the speed's
+/// change, and this one offers neither (said by `simulate`'s replay,
+/// `metrics` and `diagnose`), so a speed in km/h or mph below
+/// any car's top speed in m/s passes unseen. Said with the speeds read.
+pub fn unchecked_speed_unit(run: &crate::measured::MeasuredRun) -> Option<String> {
+    if run.ay.is_some() || run.ax.is_some() || run.speed.is_empty() {
+        return None;
+    }
+    let mut u = run.speed.clone();
+    u.sort_by(f64::total_cmp);
+    let median = u[u.len() / 2];
+    Some(format!(
+        "the speed's unit could not be checked: {} has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change); its speed runs {}–{} with a median of {} — read as m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
+        run.path.display(),
+        crate::format::significant(u[0], 3),
+        crate::format::significant(u[u.len() - 1], 3),
+        crate::format::significant(median, 3),
+        crate::format::significant(3.6 * median, 3),
+    ))
+}

@@ -78,6 +78,7 @@ pub fn run_with_degrees(
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
     let mut dead = leave_out_dead_channels(&mut run)?;
     dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
+    dead.extend(crate::io::unchecked_speed_unit(&run));
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
         Ok(m) => (run, m),
         Err(e) => {

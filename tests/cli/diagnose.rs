@@ -485,6 +485,21 @@ fn diagnose_handles_mixed_rates_gaps_and_missing_channels() {
         .unwrap();
     assert_eq!(b["channels"].as_array().unwrap().len(), 1);
     assert_eq!(b["channels"][0]["channel"], "yaw_rate");
+    // Without either accelerometer, a speed in mph would pass unseen: said
+    // of that run alone, in `diagnose` and in `metrics`.
+    let unchecked = "the speed's unit could not be checked: ";
+    let said: Vec<&str> = stdout.lines().filter(|l| l.contains(unchecked)).collect();
+    assert!(
+        said.len() == 1 && said[0].contains("b_40hz_no_ay.csv has neither `ay`"),
+        "{stdout}"
+    );
+    let run = dir.path().join("runs").join("b_40hz_no_ay.csv");
+    let o = run_in(dir.path(), &["metrics", run.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&o.stdout).to_string() + &stderr(&o);
+    assert!(
+        o.status.success() && text.contains(unchecked) && text.contains("its speed runs 20.0–20.0"),
+        "{text}"
+    );
 }
 
 #[test]

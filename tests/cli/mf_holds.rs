@@ -39,7 +39,7 @@ fn not_identifiable(dir: &Path, data: &Path, iterations: &str) -> Vec<String> {
         // stopped at a bound the data would take it past.
         .filter(|l| {
             l.contains("not identifiable from these data")
-                || l.contains("so they do not determine it")
+                || l.contains("so they give it no physical value")
         })
         .filter_map(|l| l.split("held: ").nth(1))
         .map(|l| l.split(' ').next().unwrap().to_string())

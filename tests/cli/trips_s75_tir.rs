@@ -179,4 +179,23 @@ fn a_parameter_at_its_bound_is_said_at_its_bound() {
         text.contains("held: LONGVL = 11.2 m/s (40.3 km/h)"),
         "{text}"
     );
+    // The report says what the terminal says: at its bound, with no
+    // standard error or effect taken through it.
+    let report = read_json(&dir.path().join("h.report.json"));
+    let pky4 = report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|s| s["parameters"].as_array().unwrap())
+        .find(|p| p["name"] == "PKY4")
+        .unwrap()["held"]
+        .clone();
+    assert_eq!(
+        pky4["at_bound"],
+        serde_json::json!([0.1, [0.1, 5.0]]),
+        "{pky4}"
+    );
+    for key in ["std_error", "effect_percent", "standard_errors_away"] {
+        assert!(pky4[key].is_null(), "{key}: {pky4}");
+    }
 }

@@ -271,10 +271,9 @@ pub fn trusted_channel_gap(
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let resolved = rms > 1e-6 * signal;
     let significant = above_noise(rms, noise_floor) && resolved;
-    // The noise's autocorrelation from the residual before the input
-    // where it has a stretch of it (the model's error then is nil), else
-    // the whole residual's (a slow error counted as noise: conservative).
-    let tau = scan::correlation_time(if pre.len() >= 20 { &pre } else { &e });
+    // The noise's autocorrelation from the residual's fast part: its slow
+    // part is the model's error or the replay's start, not noise.
+    let tau = scan::noise_time(t, &e);
     // The floor's own sample count: the window before the input it is the
     // scatter of, else the whole run (its second differences); a stated
     // floor is known better, and counted so, conservatively.

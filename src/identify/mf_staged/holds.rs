@@ -99,7 +99,9 @@ pub enum HoldReason {
         fitted: f64,
         /// Its standard error there (`None`: the data do not move it).
         std_error: Option<f64>,
-        /// One standard error's effect on the stage's channel, % of its RMS.
+        /// One standard error's effect on the stage's channel, % of its RMS
+        /// (`null` at a bound, where it means nothing).
+        #[serde(serialize_with = "crate::report::finite_or_null")]
         effect_percent: f64,
         /// Where its stated value comes from.
         source: HoldSource,
@@ -163,7 +165,7 @@ impl fmt::Display for HoldReason {
                 ..
             } => write!(
                 f,
-                "stopped at its {} bound {} when fitted ({}; its physical box {} to {}): the data would take it beyond, so they do not determine it, and a standard error taken there means nothing: {}",
+                "stopped at its {} bound {} when fitted ({}; its physical box {} to {}): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing: {}",
                 if bound == lo { "lower" } else { "upper" },
                 exact(*bound),
                 readable(*fitted, 5),
@@ -429,18 +431,25 @@ pub(super) fn hold_undetermined(
         let k = tried.k;
         let name = fit.problem.names[k];
         let (value, source) = stated(name);
+        // At a bound the standard error and its effect are taken as if the
+        // box were not there: not reported (null in the report too).
+        let at_bound = near_bound(fit.p[k], fit.bounds[k]);
+        let std_error = u.std_error[k].filter(|_| at_bound.is_none());
         held.push((
             name,
             tried.value,
             HoldReason::NotIdentifiable {
                 fitted: fit.p[k],
-                std_error: u.std_error[k],
-                effect_percent: 100.0 * u.effect[k],
+                std_error,
+                effect_percent: match at_bound {
+                    None => 100.0 * u.effect[k],
+                    Some(_) => f64::NAN,
+                },
                 source,
                 stated: value,
                 held_at: tried.value,
-                standard_errors_away: standard_errors_away(value, fit.p[k], u.std_error[k]),
-                at_bound: near_bound(fit.p[k], fit.bounds[k]),
+                standard_errors_away: standard_errors_away(value, fit.p[k], std_error),
+                at_bound,
             },
         ));
         keep(fit, tried, refit, evaluations);
@@ -552,7 +561,7 @@ mod tests {
             standard_errors_away: Some(0.9),
             at_bound: near_bound(0.10014, (0.1, 5.0)),
         };
-        assert_eq!(at.to_string(), "stopped at its lower bound 0.1 when fitted (0.10014; its physical box 0.1 to 5): the data would take it beyond, so they do not determine it, and a standard error taken there means nothing: held at the Pacejka 2012 book default 2");
+        assert_eq!(at.to_string(), "stopped at its lower bound 0.1 when fitted (0.10014; its physical box 0.1 to 5): the best fit to these data lies outside the physical box, so they give it no physical value, and a standard error taken at the bound means nothing: held at the Pacejka 2012 book default 2");
     }
 
     /// A stated value more than two standard errors from the fitted one

@@ -189,6 +189,7 @@ pub(super) fn read_runs(
         check_live_channels(&run)?;
         let declared = degrees.contains(&AngleColumn::Steer);
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
+        notes.extend(crate::io::unchecked_speed_unit(&run));
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());

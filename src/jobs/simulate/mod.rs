@@ -169,8 +169,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     }
     let mut said = checks::checks(&sc, h);
     warnings.extend(said.warnings);
-    said.notes
-        .extend(sc.measured.as_ref().and_then(unchecked_speed_unit));
+    said.notes.extend(
+        sc.measured
+            .as_ref()
+            .and_then(crate::io::unchecked_speed_unit),
+    );
     let replay = sc.measured.as_ref().map(|run| {
         // The floors `diagnose` would trust this run's channels to, by its
         // own rule: a run's scatter alone trusts a state estimator's smooth
@@ -268,27 +271,6 @@ impl SimulateReport {
         }
         figure.save(&files[2])
     }
-}
-
-/// A replayed run with neither accelerometer channel: its speed's unit is
-/// judged by `ay` against speed × yaw rate, or by `ax` against the speed's
-/// change, and this one offers neither, so a speed in km/h or mph below
-/// any car's top speed in m/s passes unseen. Said with the speeds read.
-fn unchecked_speed_unit(run: &MeasuredRun) -> Option<String> {
-    if run.ay.is_some() || run.ax.is_some() || run.speed.is_empty() {
-        return None;
-    }
-    let mut u = run.speed.clone();
-    u.sort_by(f64::total_cmp);
-    let median = u[u.len() / 2];
-    Some(format!(
-        "the speed's unit could not be checked: {} has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change); its speed runs {}–{} with a median of {} — read as m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
-        run.path.display(),
-        crate::format::significant(u[0], 3),
-        crate::format::significant(u[u.len() - 1], 3),
-        crate::format::significant(median, 3),
-        crate::format::significant(3.6 * median, 3),
-    ))
 }
 
 /// Steer, yaw rate, lateral acceleration and sideslip against time, with a

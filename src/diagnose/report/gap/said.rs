@@ -127,7 +127,8 @@ pub(super) fn verdict(s: &Said) -> String {
             );
         }
     }
-    if let Some(shift) = s.time_shift.filter(|x| x.abs() >= s.dt) {
+    let shifted = s.time_shift.filter(|x| x.abs() >= s.dt);
+    if let Some(shift) = shifted {
         let (way, by) = if shift > 0.0 {
             ("lags", shift)
         } else {
@@ -137,7 +138,9 @@ pub(super) fn verdict(s: &Said) -> String {
     }
     if found.any() {
         let (rho, lag) = s.steer;
-        if rho.abs() > 0.5 {
+        // A time shift explains a residual shaped like the input's
+        // derivative: saying "not a time shift" beside it contradicts it.
+        if rho.abs() > 0.5 && shifted.is_none() {
             out += &format!("; the residual resembles the steer input (correlation {rho:.2} with the steer {lag:.2} s earlier: a residual shaped like the input, not a time shift): a dynamic error (gain, lag or stiffness)");
         } else if correlation(s.e, s.e, 1) > 0.9 {
             out += "; the residual is slow and smooth: a model error rather than noise";

@@ -78,7 +78,7 @@ pub fn run_with_degrees(
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
     let mut dead = leave_out_dead_channels(&mut run)?;
     dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
-    dead.extend(crate::io::unchecked_speed_unit(&run));
+    let unchecked = crate::io::unchecked_speed_unit(&run);
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
         Ok(m) => (run, m),
         Err(e) => {
@@ -99,6 +99,9 @@ pub fn run_with_degrees(
         m.warnings.retain(|w| w != NO_AY);
         m.warnings.splice(0..0, dead);
     }
+    // After "no `ay`", which it follows from (and which a dead-channel
+    // warning replaces: this one must not).
+    m.warnings.extend(unchecked);
     // Settings the run cannot honour are said, not dropped.
     if let (Some(f), None) = (settings.filter_hz, m.metrics.filter_hz) {
         m.warnings.push(format!(

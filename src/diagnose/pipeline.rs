@@ -454,6 +454,7 @@ fn run(
     Ok(Diagnosis {
         campaign: c.name.clone(),
         source: c.source.clone(),
+        source_absolute: None,
         seed: set.seed,
         derivatives: set.derivatives,
         runs: ctx.runs.iter().map(|r| r.name.clone()).collect(),

@@ -198,10 +198,12 @@ pub enum DiagnosisError {
         fitted: Vec<String>,
     },
     /// The campaign a diagnosis names, not found from here.
-    #[error("{}: the campaign {} names is not found from here (a relative path is read from where `diagnose` ran): give it with --campaign", campaign.display(), diagnosis.display())]
+    #[error("{}: the campaign {} names is not found from here (a relative path is read from where `diagnose` ran){}: give it with --campaign", campaign.display(), diagnosis.display(), absolute.as_ref().map_or_else(String::new, |a| format!(", nor at {}, where it was then", a.display())))]
     CampaignNotFound {
         /// The campaign's path as the diagnosis wrote it.
         campaign: PathBuf,
+        /// Its absolute path when the diagnosis was written, if known.
+        absolute: Option<PathBuf>,
         /// The diagnosis file.
         diagnosis: PathBuf,
     },

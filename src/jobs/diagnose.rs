@@ -65,10 +65,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     );
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &campaign.inputs)?;
     let lock = OutputLock::acquire(&out_dir)?;
-    let diagnosis = {
+    let mut diagnosis = {
         let progress = Progress::start("diagnose", work_units(&campaign));
         crate::diagnose::diagnose(&campaign, Some(progress.counter()))?
     };
+    diagnosis.source_absolute = std::fs::canonicalize(&campaign.source).ok();
     Ok(DiagnoseReport {
         // The candidates fitted (those the runs can show): every one is
         // ranked or screened.

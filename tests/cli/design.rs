@@ -310,8 +310,23 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
         ) && e.contains("so it has no held-out fit to design with; it cross-validated: "),
         "{e}"
     );
-    // From another folder its relative campaign is not found: said, with
-    // the option that gives it; given, the design runs.
+    // From another folder its relative campaign is found where it was
+    // when diagnosed (the diagnosis keeps its absolute path too).
+    assert!(
+        d["source_absolute"].as_str().unwrap().ends_with("/wide"),
+        "{d}"
+    );
+    let o = run(&[
+        "design",
+        wide.to_str().unwrap(),
+        "--out",
+        dir.path().join("w0").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Moved since, it is not found: said, with both paths and the option
+    // that gives it; given, the design runs.
+    let moved = dir.path().join("wide_moved");
+    fs::rename(&camp, &moved).unwrap();
     let o = run(&[
         "design",
         wide.to_str().unwrap(),
@@ -321,9 +336,11 @@ fn a_design_asks_for_candidates_the_diagnosis_fitted() {
     let e = stderr(&o);
     assert!(
         e.contains("wide: the campaign ")
-            && e.contains("is not found from here (a relative path is read from where `diagnose` ran): give it with --campaign"),
+            && e.contains("is not found from here (a relative path is read from where `diagnose` ran), nor at ")
+            && e.contains("/wide, where it was then: give it with --campaign"),
         "{e}"
     );
+    let camp = moved;
     let o = run(&[
         "design",
         wide.to_str().unwrap(),

@@ -220,6 +220,10 @@ pub struct Diagnosis {
     /// The campaign's file or folder, as given (`handling design` reads it
     /// back).
     pub source: std::path::PathBuf,
+    /// The same, absolute, where the job that wrote the diagnosis could
+    /// resolve it: `handling design` run from another folder finds the
+    /// campaign by it when `source` is relative to where `diagnose` ran.
+    pub source_absolute: Option<std::path::PathBuf>,
     /// Seed of every random search.
     pub seed: u64,
     /// How the fits took their Jacobians (`[diagnose] derivatives`).

@@ -16,6 +16,8 @@ use std::path::{Path, PathBuf};
 struct DiagnosisFile {
     source: PathBuf,
     #[serde(default)]
+    source_absolute: Option<PathBuf>,
+    #[serde(default)]
     runs: Vec<PathBuf>,
     base: BaseFile,
     gap: GapFile,
@@ -135,6 +137,9 @@ fn candidate(path: &Path, c: &CandidateFile) -> Result<FittedCandidate, Error> {
 pub struct Diagnosed {
     /// The campaign it read (a file or folder, as named then).
     pub source: PathBuf,
+    /// The same made absolute when it was written (older diagnoses have
+    /// none).
+    pub source_absolute: Option<PathBuf>,
     /// The runs it diagnosed, as named then.
     pub runs: Vec<PathBuf>,
 }
@@ -199,6 +204,7 @@ pub fn read_diagnosis(dir: &Path) -> Result<(Fitted, Diagnosed), Error> {
         fitted,
         Diagnosed {
             source: f.source,
+            source_absolute: f.source_absolute,
             runs: f.runs,
         },
     ))

@@ -70,20 +70,14 @@ pub fn run(
     out: Option<&Path>,
 ) -> Result<DesignReport, Error> {
     request.validate()?;
-    let (fitted, Diagnosed { source, runs }) = read_diagnosis(dir)?;
+    let (fitted, diagnosed) = read_diagnosis(dir)?;
+    let runs = &diagnosed.runs;
     let campaign_path = match campaign {
         Some(p) => p.to_path_buf(),
-        None if !source.exists() => {
-            return Err(DesignError::CampaignNotFound {
-                campaign: source,
-                diagnosis: dir.join("diagnosis.json"),
-            }
-            .into())
-        }
-        None => source,
+        None => diagnosed_campaign(&diagnosed, dir)?,
     };
     let c = load_campaign(&campaign_path)?;
-    same_runs(&c, &campaign_path, &runs, &dir.join("diagnosis.json"))?;
+    same_runs(&c, &campaign_path, runs, &dir.join("diagnosis.json"))?;
     let out_dir = out.map_or_else(|| dir.join("design"), Path::to_path_buf);
     let mut inputs = c.inputs.clone();
     inputs.push(dir.join("diagnosis.json"));
@@ -141,6 +135,22 @@ pub fn run(
 /// Ok when campaign `c` (read from `path`) holds every run the diagnosis
 /// read (`runs`, by file name): a design replays the candidates as fitted
 /// to those runs, and its limits are theirs.
+/// The campaign the diagnosis in `dir` read: its path as given where that
+/// is found from here (relative paths are read from where `diagnose` ran),
+/// else its absolute path as written then.
+fn diagnosed_campaign(d: &Diagnosed, dir: &Path) -> Result<PathBuf, Error> {
+    match &d.source_absolute {
+        _ if d.source.exists() => Ok(d.source.clone()),
+        Some(a) if a.exists() => Ok(a.clone()),
+        _ => Err(DesignError::CampaignNotFound {
+            campaign: d.source.clone(),
+            absolute: d.source_absolute.clone(),
+            diagnosis: dir.join("diagnosis.json"),
+        }
+        .into()),
+    }
+}
+
 fn same_runs(c: &Campaign, path: &Path, runs: &[PathBuf], diagnosis: &Path) -> Result<(), Error> {
     let have: std::collections::HashSet<_> =
         c.runs.iter().filter_map(|r| r.path.file_name()).collect();

@@ -302,6 +302,16 @@ pub enum ParamReason {
     /// large payload here, so that an error stays small to return.
     #[error(transparent)]
     Name(Box<OptionsError>),
+    /// A Magic Formula 5.2 / 6.1 / 6.2 named as a campaign's rig model:
+    /// those are fitted in stages by `identify` and read as `.tir` files,
+    /// not fitted by the diagnosis's swarm.
+    #[error("`{model}` is no model the diagnosis fits to rig data (one of {}): the Magic Formula is fitted in stages by `handling identify <rig> --model mf61 --out base.tir` (or mf62), and its .tir given as `[tyres] file = \"base.tir\"` (or `front` and `rear`)", fitted.join(", "))]
+    StagedMagicFormula {
+        /// The name given.
+        model: String,
+        /// The models the diagnosis fits to rig data.
+        fitted: Vec<&'static str>,
+    },
     /// An MFeval `useMode` code that cannot be used.
     #[error(transparent)]
     Mode(Box<ModeError>),

@@ -444,6 +444,22 @@ fn base_tyres(
         }
     };
     let name = spec.model.as_deref().unwrap_or("pac89");
+    // A Magic Formula named here is a .tir fitted by `identify`: say how
+    // (a fresh user's guess, answered with a list it is not on).
+    if ["mf52", "mf61", "mf62"].contains(
+        &name
+            .to_ascii_lowercase()
+            .replace(['.', '_', '-'], "")
+            .as_str(),
+    ) {
+        return Err(src.value_error(&ParamError::without_value(
+            "tyres.model",
+            ParamReason::StagedMagicFormula {
+                model: name.to_string(),
+                fitted: swarm_models().iter().map(|m| m.as_str()).collect(),
+            },
+        )));
+    }
     // The rig fit starts a swarm, which the staged Magic Formula does not.
     let model = named(
         &swarm_models(),

@@ -137,6 +137,9 @@ pub enum ParamReason {
     /// the value given said converted. Boxed: the error stays small.
     #[error("{}", cornering_per_load(.0))]
     CorneringPerLoad(Box<PerLoad>),
+    /// A `.tir` pressure with no `[UNITS] PRESSURE` line, no tyre's.
+    #[error("{}", pressure_no_line(.0))]
+    TirPressureNoLine(Box<NoPressureLine>),
     /// A `.tir` cornering stiffness per unit load beyond any tyre's.
     #[error("{}", tir_per_load(.0))]
     TirCorneringPerLoad(Box<TirPerLoad>),
@@ -544,9 +547,6 @@ pub enum Limit {
         /// The radius as read, m.
         given: f64,
     },
-    /// A `.tir` pressure with no `[UNITS] PRESSURE` line, no tyre's.
-    #[error("{}", pressure_no_line(.0))]
-    TyrePressureNoUnitsLine(NoPressureLine),
     /// A Magic Formula coefficient, dimensionless.
     #[error("no coefficient of a published Magic Formula file reaches ±1e6 (their dimensionless coefficients stay within about ±2,000): a value beyond is no tyre's")]
     MfCoefficient,

@@ -1,5 +1,5 @@
-//! What a fresh user tripped on in `.tir` files and vehicle files (issue
-//! 41), run as a user runs the tool: a `PKY1` ten times a tyre's, unit
+//! What a fresh user tripped on in `.tir` files and vehicle files,
+//! run as a user runs the tool: a `PKY1` ten times a tyre's, unit
 //! messages that quoted a converted value without its `[UNITS]` line or
 //! blamed a `PRESSURE` line the file lacks, hints that proposed a unit
 //! where a slipped digit fits, a `cg_height` ten times too low, a `mass`

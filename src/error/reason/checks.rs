@@ -1,7 +1,7 @@
-//! The texts of the refusals added for issue 41's input slips: a `.tir`
+//! The texts of the refusals of some input slips a fresh user met: a `.tir`
 //! cornering stiffness per unit load beyond any tyre's
 //! ([`ParamReason::TirCorneringPerLoad`]), a `.tir` pressure read without a
-//! `[UNITS] PRESSURE` line ([`super::Limit::TyrePressureNoUnitsLine`]), and the
+//! `[UNITS] PRESSURE` line ([`ParamReason::TirPressureNoLine`]), and the
 //! vehicle's centre of gravity too low for its track
 //! ([`ParamReason::CgTooLow`]) or mass a digit off
 //! ([`ParamReason::MassDigit`]); each with the boxed values it is built
@@ -83,11 +83,11 @@ pub(super) fn tir_per_load(p: &TirPerLoad) -> String {
     }
 }
 
-/// What [`super::Limit::TyrePressureNoUnitsLine`] says: a `.tir` file's
+/// What [`ParamReason::TirPressureNoLine`] says, boxed: a `.tir` file's
 /// pressure at `key` read in `FORCE/LENGTH²` (the units' names, `pa` Pa
 /// each) for want of a `[UNITS] PRESSURE` line, outside any tyre's with no
 /// other unit it is likely in.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct NoPressureLine {
     /// The key (`NOMPRES`, `INFLPRES`).
     pub key: &'static str,
@@ -95,9 +95,11 @@ pub struct NoPressureLine {
     pub units: (&'static str, &'static str),
     /// That unit in Pa.
     pub pa: f64,
+    /// The range of any tyre's, Pa, `(lo, hi]`.
+    pub range: (f64, f64),
 }
 
-/// The message of [`super::Limit::TyrePressureNoUnitsLine`]: the unit the
+/// The message of [`ParamReason::TirPressureNoLine`]: the unit the
 /// pressure is read in, and that the `PRESSURE` line is missing.
 pub(super) fn pressure_no_line(p: &NoPressureLine) -> String {
     let (force, length) = p.units;
@@ -106,7 +108,8 @@ pub(super) fn pressure_no_line(p: &NoPressureLine) -> String {
         false => format!("{} Pa each", rounded(p.pa, 4)),
     };
     format!(
-        "a tyre's inflation pressure is 10 kPa to 2 MPa (a kart's about 60 kPa, a car's 200–300 kPa, a track bicycle's up to 1.4 MPa); the file's [UNITS] has no PRESSURE line, so {} is read in FORCE/LENGTH², {force}/{length}² ({each}): check the value, or add the PRESSURE line of the unit it is written in (PRESSURE = 'pascal', 'kpa', 'bar', 'psi')",
+        "must {}: a tyre's inflation pressure is 10 kPa to 2 MPa (a kart's about 60 kPa, a car's 200–300 kPa, a track bicycle's up to 1.4 MPa); the file's [UNITS] has no PRESSURE line, so {} is read in FORCE/LENGTH², {force}/{length}² ({each}): check the value, or add the PRESSURE line of the unit it is written in (PRESSURE = 'pascal', 'kpa', 'bar', 'psi')",
+        crate::error::range(p.range.0, p.range.1),
         p.key
     )
 }

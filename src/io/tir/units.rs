@@ -286,11 +286,12 @@ fn no_pressure_line(units: &Units, e: ParamError) -> ParamError {
     if units.pressure.is_some() {
         return e;
     }
-    let why = Limit::TyrePressureNoUnitsLine(NoPressureLine {
+    let reason = ParamReason::TirPressureNoLine(Box::new(NoPressureLine {
         key,
         units: units.force_and_length(),
         pa: units.factor(key),
-    });
+        range: (lo, hi),
+    }));
     let v = e.value.number().unwrap_or(f64::NAN);
-    ParamError::new(key, v, ParamReason::OutOfRange { lo, hi, why })
+    ParamError::new(key, v, reason)
 }

@@ -6,24 +6,17 @@
 use super::options::{ModeError, OptionsError};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
+use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
+pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
 pub use slow_steer::{SlowSteer, Waveform};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
-pub use tir::{DeclaredUnit, LoadOffNominal, PureCurve};
+pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod boxed;
+mod checks;
 mod slow_steer;
 mod tir;
-
-/// Range of the dynamic index `k²/(a·b) = Iz/(m·a·b)`: road cars lie at
-/// about 0.8–1.2 (Milliken & Milliken 1995), a racing car with its masses
-/// near the centre at 0.6 (the Putnam log's Dallara, 0.59), a long bus or
-/// a car with a heavy overhang at about 1.5. The bounds leave room beyond
-/// both: 0.4 is a radius of gyration of 0.63·√(a·b), every mass within
-/// two thirds of the axles' reach; 2.5 is 1.6·√(a·b), masses beyond the
-/// bumpers. Outside them the inertia is a slip: a digit (10× too large
-/// reads 8–12), or a unit (g, kg·cm², slug).
-pub const DYNAMIC_INDEX: (f64, f64) = (0.4, 2.5);
 
 /// The size of a row of `history.csv` as written, bytes (14 columns of
 /// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
@@ -144,6 +137,18 @@ pub enum ParamReason {
     /// the value given said converted. Boxed: the error stays small.
     #[error("{}", cornering_per_load(.0))]
     CorneringPerLoad(Box<PerLoad>),
+    /// A `.tir` pressure with no `[UNITS] PRESSURE` line, no tyre's.
+    #[error("{}", pressure_no_line(.0))]
+    TirPressureNoLine(Box<NoPressureLine>),
+    /// A `.tir` cornering stiffness per unit load beyond any tyre's.
+    #[error("{}", tir_per_load(.0))]
+    TirCorneringPerLoad(Box<TirPerLoad>),
+    /// A vehicle's mass a digit off (mass per footprint and dynamic index).
+    #[error("{}", mass_digit(.0))]
+    MassDigit(Box<MassDigit>),
+    /// A centre of gravity below any vehicle's for its track.
+    #[error("{}", cg_too_low(.0))]
+    CgTooLow(Box<CgTooLow>),
     /// A `.tir` value outside any tyre's `(lo, hi]` once converted by the
     /// unit its file's `[UNITS]` declares, but within as written: the
     /// declaration is the slip. Boxed: the error stays small.
@@ -193,7 +198,7 @@ pub enum ParamReason {
     },
     /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
     /// ([`DYNAMIC_INDEX`]).
-    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road cars about 0.8–1.2, Milliken & Milliken); at an index of 1 the yaw inertia would be mass·a·b = {} kg·m²: check the value for a slipped digit and the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::significant((index * ab).sqrt(), 3), crate::format::significant(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1, crate::format::significant(mass * ab, 4))]
+    #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road cars about 0.8–1.2, Milliken & Milliken); at an index of 1 the yaw inertia would be mass·a·b = {} kg·m²: check the value for a slipped digit and the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::readable((index * ab).sqrt(), 3), crate::format::readable(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1, crate::format::readable(mass * ab, 4))]
     DynamicIndex {
         /// The index of the values given.
         index: f64,

@@ -187,6 +187,7 @@ impl TirDocument {
         let (lateral, longitudinal) = (self.get("PDY1").is_some(), self.get("PDX1").is_some());
         tyre.check_pure_curves(lateral, longitudinal)
             .map_err(|e| self.value_error(e))?;
+        self.cornering_at_nominal(&tyre)?;
         Ok(tyre)
     }
 
@@ -508,8 +509,10 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 
 mod core;
 mod ranges;
+mod stiffness;
 mod units;
 
+pub use stiffness::MAX_CORNERING_PER_LOAD;
 use units::Units;
 pub use units::LOAD_OVER_NOMINAL;
 

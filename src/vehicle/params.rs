@@ -4,7 +4,7 @@
 //! to the front and rear axle.
 
 use crate::constants::G;
-use crate::error::{ParamError, ParamReason, DYNAMIC_INDEX};
+use crate::error::{CgTooLow, MassDigit, ParamError, ParamReason, DYNAMIC_INDEX};
 use serde::{Deserialize, Serialize};
 
 /// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
@@ -64,6 +64,23 @@ const MASS_CHECK_WHEELBASE: f64 = 1.0;
 /// for 0.55).
 const MIN_TIP_OVER: f64 = 0.3;
 
+/// Largest static stability factor `track/(2·cg_height)`, g: road cars
+/// have 1.0–1.5 (NHTSA's rollover ratings: passenger cars 1.2–1.5, SUVs
+/// 1.0–1.3), the lowest racing cars about 2.5–3 (a Formula 1 car's centre
+/// of gravity some 0.3 m up on a 1.6 m track; a kart's 0.2–0.25 m on
+/// 1.2 m; the Putnam Dallara here 0.3 m on 1.55 m: 2.6). Above 5 the height
+/// is a digit off (0.055 m for a sedan's 0.55 gives 14) or in another unit.
+const MAX_TIP_OVER: f64 = 5.0;
+
+/// A vehicle's mass per m² of its footprint (wheelbase × mean track),
+/// kg/m², from makers' figures: a kart with its driver about 130, a
+/// Formula 1 or Formula Student car 130–160, road cars 250–600 (a small
+/// car 900 kg on 2.4 × 1.45 m, a large SUV 3 t on 3 × 1.7 m), a city bus
+/// about 1400, a two-axle lorry 1300–1800. Only a dynamic index out of
+/// range consults it, to say whether the mass (ten times off lands it
+/// beyond, 3550 for a car) or the yaw inertia holds the slip.
+const MASS_PER_FOOTPRINT: (f64, f64) = (50.0, 2000.0);
+
 /// Range of a track over the wheelbase (the refusal's words state it):
 /// road cars about 0.55–0.65, a
 /// Formula Student car 0.8, a kart 1.1, a long truck or bus 0.3. A track
@@ -114,7 +131,58 @@ impl Vehicle {
             };
             return Err(ParamError::new("cg_height", self.cg_height, reason));
         }
+        if tips_at > MAX_TIP_OVER {
+            let reason = ParamReason::CgTooLow(Box::new(CgTooLow {
+                cg_height: self.cg_height,
+                track,
+                max: MAX_TIP_OVER,
+                min: MIN_TIP_OVER,
+            }));
+            return Err(ParamError::new("cg_height", self.cg_height, reason));
+        }
         Ok(())
+    }
+
+    /// The dynamic index `Iz/(m·a·b)` within [`DYNAMIC_INDEX`]; outside,
+    /// refused at `mass` where the mass is the likelier slip (its mass per
+    /// footprint is beyond any vehicle's, [`MASS_PER_FOOTPRINT`], and ten
+    /// times more or less puts both it and the index within theirs: the
+    /// index alone cannot tell a mass ten times off from an inertia ten
+    /// times off the other way), else at `yaw_inertia`.
+    fn plausible_index(&self) -> Result<(), ParamError> {
+        let ab = self.a * self.b;
+        let index = |mass: f64| self.yaw_inertia / (mass * ab);
+        let within = |v: f64, (lo, hi): (f64, f64)| (lo..=hi).contains(&v);
+        if within(index(self.mass), DYNAMIC_INDEX) {
+            return Ok(());
+        }
+        let footprint = (self.wheelbase(), 0.5 * (self.track_front + self.track_rear));
+        let per_area = |mass: f64| mass / (footprint.0 * footprint.1);
+        let likely = [10.0, 0.1]
+            .into_iter()
+            .map(|f| f * self.mass)
+            .find(|&m| within(index(m), DYNAMIC_INDEX) && within(per_area(m), MASS_PER_FOOTPRINT));
+        if let Some(likely) = likely.filter(|_| !within(per_area(self.mass), MASS_PER_FOOTPRINT)) {
+            let reason = ParamReason::MassDigit(Box::new(MassDigit {
+                mass: self.mass,
+                likely,
+                yaw_inertia: self.yaw_inertia,
+                ab,
+                footprint,
+                per_area: MASS_PER_FOOTPRINT,
+                index: DYNAMIC_INDEX,
+            }));
+            return Err(ParamError::new("mass", self.mass, reason));
+        }
+        Err(ParamError::new(
+            "yaw_inertia",
+            self.yaw_inertia,
+            ParamReason::DynamicIndex {
+                index: index(self.mass),
+                mass: self.mass,
+                ab,
+            },
+        ))
     }
 
     /// Checks every value for physical sense; the error names the key.
@@ -166,18 +234,7 @@ impl Vehicle {
         // not the height's) and before the dynamic index (a mass in tonnes
         // is the mass's, not the inertia's).
         self.plausible_mass_and_cg()?;
-        let index = self.yaw_inertia / (self.mass * self.a * self.b);
-        if !(DYNAMIC_INDEX.0..=DYNAMIC_INDEX.1).contains(&index) {
-            return Err(ParamError::new(
-                "yaw_inertia",
-                self.yaw_inertia,
-                ParamReason::DynamicIndex {
-                    index,
-                    mass: self.mass,
-                    ab: self.a * self.b,
-                },
-            ));
-        }
+        self.plausible_index()?;
         if let Some(l) = self.wheelbase {
             ParamError::positive("wheelbase", l)?;
             if (l - self.wheelbase()).abs() > WHEELBASE_TOLERANCE {

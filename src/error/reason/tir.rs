@@ -42,42 +42,54 @@ pub(super) fn tyre_pressure(given: f64, unit: Option<u8>, nominal: bool, apart: 
     s
 }
 
-/// The message of [`Limit::UnloadedRadius`]: a radius too large is most
-/// likely millimetres (else centimetres, inches) read as metres, one too
-/// small metres read under a smaller `[UNITS] LENGTH` (or divided twice):
-/// the hint follows the direction, with the value converted.
+/// The message of [`Limit::UnloadedRadius`]: a radius too large is read
+/// as millimetres, centimetres or inches written as metres, or a digit
+/// slipped (3.1 m for 0.31); one too small as metres read under a smaller
+/// `[UNITS] LENGTH` (or divided twice), or a digit slipped (0.031 m): of
+/// the readings that land it on a tyre's, the hint gives the one nearest
+/// a car tyre's 0.3 m (logarithmically), with the value converted.
 pub(super) fn unloaded_radius(given: f64) -> String {
     use crate::format::{exact, rounded};
     let head = "a tyre's unloaded radius is 0.05–2 m (a kart's about 0.13 m, a car's about 0.3 m), in m after the file's [UNITS] LENGTH";
     // `tyre::sizes::UNLOADED_RADIUS` (a lower layer may not import it).
     let (lo, hi) = (0.05, 2.0);
     let lands = |v: f64| v > lo && v <= hi;
-    if given > hi {
-        let hint = [
-            ("millimetres", 1e-3),
-            ("centimetres", 1e-2),
-            ("inches", 0.0254),
-        ]
-        .into_iter()
-        .find(|(_, f)| lands(given * f));
-        return match hint {
-            Some((unit, f)) => format!(
-                "{head}: too large for metres: is it in {unit}, written with LENGTH = 'meter'? ({} {unit} is {} m)",
-                exact(given),
-                rounded(given * f, 4)
-            ),
-            None => format!("{head}: too large for any tyre in metres, millimetres or inches: check the value"),
-        };
+    // (reading, factor to the radius it gives): `None` is a digit.
+    let readings: &[(Option<&str>, f64)] = match given > hi {
+        true => &[
+            (Some("millimetres"), 1e-3),
+            (Some("centimetres"), 1e-2),
+            (Some("inches"), 0.0254),
+            (None, 0.1),
+        ],
+        false => &[(Some("millimetres"), 1e3), (None, 10.0)],
+    };
+    let best = readings
+        .iter()
+        .filter(|(_, f)| given > 0.0 && lands(given * f))
+        .min_by(|a, b| {
+            let off = |f: f64| (given * f / 0.3).ln().abs();
+            off(a.1).total_cmp(&off(b.1))
+        });
+    let (large, v) = (given > hi, exact(given));
+    match best {
+        Some((None, f)) => format!(
+            "{head}: too {} for any tyre: is a digit slipped? {} m is a tyre's radius",
+            if large { "large" } else { "small" },
+            rounded(given * f, 4)
+        ),
+        Some((Some(unit), f)) if large => format!(
+            "{head}: too large for metres: is it in {unit}, written with LENGTH = 'meter'? ({v} {unit} is {} m)",
+            rounded(given * f, 4)
+        ),
+        Some((Some(_), f)) => format!(
+            "{head}: too small: {v} m is {} mm; as metres it would be {} m, a tyre's: is a value in metres read under LENGTH = 'mm' (or converted to metres twice)?",
+            rounded(given * f, 4),
+            rounded(given * f, 4)
+        ),
+        None if large => format!("{head}: too large for any tyre in metres, millimetres or inches, or with a digit slipped: check the value"),
+        None => format!("{head}: check the value and the file's [UNITS] LENGTH"),
     }
-    if given > 0.0 && lands(given * 1e3) {
-        return format!(
-            "{head}: too small: {} m is {} mm; as metres it would be {} m, a tyre's: is a value in metres read under LENGTH = 'mm' (or converted to metres twice)?",
-            exact(given),
-            rounded(given * 1e3, 4),
-            rounded(given * 1e3, 4)
-        );
-    }
-    format!("{head}: check the value and the file's [UNITS] LENGTH")
 }
 
 /// What [`ParamReason::TirLoadOffNominal`] says, boxed.
@@ -96,6 +108,8 @@ pub struct LoadOffNominal {
     pub ratio: f64,
     /// The shares of `FNOMIN` a tyre's load range lies within.
     pub range: (f64, f64),
+    /// The key is `FZMAX` (else `FZMIN`).
+    pub max: bool,
 }
 
 impl ParamReason {
@@ -106,7 +120,7 @@ impl ParamReason {
         written: f64,
         (unit, factor): (&'static str, f64),
         (fnomin, ratio): (f64, f64),
-        range: (f64, f64),
+        (range, max): ((f64, f64), bool),
     ) -> Self {
         ParamReason::TirLoadOffNominal(Box::new(LoadOffNominal {
             written,
@@ -115,6 +129,7 @@ impl ParamReason {
             fnomin,
             ratio,
             range,
+            max,
         }))
     }
 }
@@ -132,25 +147,39 @@ pub(super) fn load_off_nominal(d: &LoadOffNominal) -> String {
         exact(d.fnomin),
         d.unit,
     );
-    // The force unit the value as written is likely in: the one that puts
-    // it nearest FNOMIN's own range.
+    // The reading of the value as written that makes it the load range's
+    // end it is: FZMAX at or above FNOMIN, FZMIN at or below it, nearest
+    // the published files' share (FZMAX 2.5 times FNOMIN, FZMIN a 40th):
+    // another force unit, or a digit slipped in the file's own.
     let units = [
         ("N", 1.0),
         ("kN", 1e3),
         ("lbf", 4.448_221_615_260_5),
         ("kgf", 9.806_65),
     ];
+    let (band, aim) = match d.max {
+        true => ((1.0, hi), 2.5),
+        false => ((lo, 1.0), 0.025),
+    };
     let likely = units
         .into_iter()
         .filter(|(_, f)| *f != d.factor)
-        .map(|(u, f)| (u, f, d.ratio * f / d.factor))
-        .filter(|(_, _, r)| *r >= lo && *r <= hi)
-        .min_by(|a, b| a.2.ln().abs().total_cmp(&b.2.ln().abs()));
+        .map(|(u, f)| (Some(u), f / d.factor))
+        .chain([(None, 10.0), (None, 0.1)])
+        .map(|(u, f)| (u, f, d.ratio * f))
+        .filter(|(_, _, r)| *r >= band.0 && *r <= band.1)
+        .min_by(|a, b| (a.2 / aim).ln().abs().total_cmp(&(b.2 / aim).ln().abs()));
     match likely {
-        Some((u, f, r)) => format!(
+        Some((Some(u), f, r)) => format!(
             "{head}: is it written in {u}? ({} {u} is {} {}, {} times FNOMIN)",
             exact(d.written),
-            rounded(d.written * f / d.factor, 4),
+            rounded(d.written * f, 4),
+            d.unit,
+            rounded(r, 3)
+        ),
+        Some((None, f, r)) => format!(
+            "{head}: is a digit slipped? {} {} would be {} times FNOMIN",
+            rounded(d.written * f, 4),
             d.unit,
             rounded(r, 3)
         ),
@@ -171,6 +200,22 @@ pub struct DeclaredUnit {
     pub unit: &'static str,
     /// The range of any tyre, SI, `(lo, hi]`.
     pub range: (f64, f64),
+    /// How the value's unit follows from the declared one.
+    pub how: DeclaredHow,
+}
+
+/// How a value's unit follows from a declared one ([`DeclaredUnit::how`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeclaredHow {
+    /// The key's SI unit (`N`, `m`, `Pa`, `N/m`).
+    pub si: &'static str,
+    /// What stands before and after the declared unit in the value's
+    /// (`("", "/m")` for kN/m, `("N/", "²")` for N/mm²), or nothing.
+    pub around: (&'static str, &'static str),
+    /// The value's unit in SI.
+    pub factor: f64,
+    /// A pressure read in `FORCE/LENGTH²`: the file has no `PRESSURE` line.
+    pub no_pressure_line: bool,
 }
 
 impl ParamReason {
@@ -181,6 +226,7 @@ impl ParamReason {
         line: usize,
         (key, unit): (&'static str, &'static str),
         range: (f64, f64),
+        how: DeclaredHow,
     ) -> Self {
         ParamReason::TirDeclaredUnit(Box::new(DeclaredUnit {
             written,
@@ -188,6 +234,7 @@ impl ParamReason {
             key,
             unit,
             range,
+            how,
         }))
     }
 }
@@ -195,24 +242,46 @@ impl ParamReason {
 /// The message of [`ParamReason::TirDeclaredUnit`]: the declaration that
 /// makes the value no tyre's, and the value as written, a tyre's in SI.
 pub(super) fn declared_unit(d: &DeclaredUnit) -> String {
-    let (si, word) = match d.key {
-        "FORCE" => ("N", "'newton'"),
-        "LENGTH" => ("m", "'meter'"),
-        _ => ("Pa", "'pascal'"),
+    let word = match d.key {
+        "FORCE" => "'newton'",
+        "LENGTH" => "'meter'",
+        _ => "'pascal'",
     };
+    let h = d.how;
+    let si = h.si;
     let (lo, hi) = d.range;
-    let range = match hi.is_finite() {
-        true => format!("({}, {}]", crate::error::Num(lo), crate::error::Num(hi)),
-        false => format!("above {}", crate::error::Num(lo)),
+    let range = match (hi.is_finite(), lo == -hi) {
+        (true, true) => format!("±{}", crate::format::readable(hi, 3)),
+        (true, false) => format!("({}, {}]", crate::error::Num(lo), crate::error::Num(hi)),
+        (false, _) => format!("above {}", crate::error::Num(lo)),
+    };
+    // A unit built on the declared one says its factor (kN/m is 1000 N/m).
+    let unit = match h.around {
+        ("", "") => d.unit.to_string(),
+        (before, after) => format!(
+            "{before}{}{after} ({} {si} each)",
+            d.unit,
+            crate::format::rounded(h.factor, 6)
+        ),
+    };
+    let (declares, fix) = match h.no_pressure_line {
+        true => (
+            " with no PRESSURE line (pressures are then read in FORCE/LENGTH²)".to_string(),
+            "add PRESSURE = 'pascal' to [UNITS] (it reads them as written)".to_string(),
+        ),
+        false => (
+            String::new(),
+            format!(
+                "are the file's values in {si}, and line {} the slip? ({} = {word} reads them as written)",
+                d.line, d.key
+            ),
+        ),
     };
     format!(
-        "is the {} written here read in {}, as the file's [UNITS] {} at line {} declares: outside any tyre's {range} {si}; read in {si}, as written, it is a tyre's: are the file's values in {si}, and line {} the slip? ({} = {word} reads them as written)",
+        "is the {} written here read in {unit}, as the file's [UNITS] {} at line {} declares{declares}: outside any tyre's {range} {si}; read in {si}, as written, it is a tyre's: {fix}",
         crate::error::Num(d.written),
-        d.unit,
         d.key,
         d.line,
-        d.line,
-        d.key,
     )
 }
 

@@ -7,7 +7,9 @@
 //! wrong unit at its own line.
 
 use super::TirDocument;
-use crate::error::{InputError, InputProblem, ParamError, ParamReason};
+use crate::error::{
+    DeclaredHow, InputError, InputProblem, Limit, NoPressureLine, ParamError, ParamReason,
+};
 use crate::tyre::mf::MagicFormula;
 use crate::tyre::ModelParameters;
 
@@ -68,15 +70,43 @@ impl Units {
     }
 
     /// The one declaration other than SI that converts `key`'s value
-    /// (none for a key converted by two, or by none).
-    fn declaration(&self, key: &str) -> Option<Declared> {
+    /// (none for a key converted by two, or by none), and how the key's
+    /// unit follows from it: a stiffness is FORCE/LENGTH, and so is a
+    /// pressure (per LENGTH²) where the file has no `PRESSURE` line.
+    fn declaration(&self, key: &str) -> Option<(Declared, DeclaredHow)> {
+        let how = |si, (before, after), no_pressure_line| DeclaredHow {
+            si,
+            around: (before, after),
+            factor: self.factor(key),
+            no_pressure_line,
+        };
+        // The one of FORCE and LENGTH declared other than SI, and what the
+        // other puts around it (kN/m, N/mm, kN/m², N/mm²).
+        let one = |over: &'static str, squared: &'static str| match self.declared[..2] {
+            [Some(f), None] => Some((f, ("", over))),
+            [None, Some(l)] => Some((l, ("N/", squared))),
+            _ => None,
+        };
         match key {
-            "FNOMIN" | "FZMIN" | "FZMAX" | "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => self.declared[0],
-            "UNLOADED_RADIUS" | "WIDTH" => self.declared[1],
-            // A pressure without PRESSURE is in FORCE/LENGTH², two lines.
-            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => self.declared[2],
+            "FNOMIN" | "FZMIN" | "FZMAX" | "Q_FYS1" | "Q_FYS2" | "Q_FYS3" => {
+                self.declared[0].map(|d| (d, how("N", ("", ""), false)))
+            }
+            "UNLOADED_RADIUS" | "WIDTH" => self.declared[1].map(|d| (d, how("m", ("", ""), false))),
+            "VERTICAL_STIFFNESS" => one("/m", "").map(|(d, a)| (d, how("N/m", a, false))),
+            "NOMPRES" | "INFLPRES" | "PRESMIN" | "PRESMAX" => match self.pressure {
+                Some(_) => self.declared[2].map(|d| (d, how("Pa", ("", ""), false))),
+                None => one("/m²", "²").map(|(d, a)| (d, how("Pa", a, true))),
+            },
             _ => None,
         }
+    }
+
+    /// The names of the force and length units values are read in.
+    fn force_and_length(&self) -> (&'static str, &'static str) {
+        (
+            self.declared[0].map_or("N", |d| d.unit),
+            self.declared[1].map_or("m", |d| d.unit),
+        )
     }
 }
 
@@ -114,7 +144,7 @@ impl TirDocument {
                 v / factor,
                 (unit, factor),
                 (fnomin / factor, ratio),
-                (lo, hi),
+                ((lo, hi), key == "FZMAX"),
             );
             let e = ParamError::new(key, v / factor, reason);
             return Err(self.at(line, InputProblem::TirValue(e)));
@@ -213,10 +243,10 @@ impl TirDocument {
         units: &Units,
         e: ParamError,
     ) -> ParamError {
-        let (Some(d), Some(v), ParamReason::OutOfRange { lo, hi, .. }) =
+        let (Some((d, how)), Some(v), ParamReason::OutOfRange { lo, hi, .. }) =
             (units.declaration(&e.key), e.value.number(), &e.reason)
         else {
-            return e;
+            return no_pressure_line(units, e);
         };
         let written = v / units.factor(&e.key);
         let mut as_written = tyre.clone();
@@ -228,9 +258,40 @@ impl TirDocument {
             .and_then(|()| ModelParameters::check_sizes(&as_written))
             .is_err_and(|f| f.key == e.key);
         if still {
-            return e;
+            return no_pressure_line(units, e);
         }
-        let reason = ParamReason::tir_declared_unit(written, d.line, (d.key, d.unit), (*lo, *hi));
+        let reason =
+            ParamReason::tir_declared_unit(written, d.line, (d.key, d.unit), (*lo, *hi), how);
         ParamError::new(&e.key, v, reason)
     }
+}
+
+/// `e`, a pressure refused with no unit it is likely in, said as read in
+/// `FORCE/LENGTH²` for want of a `[UNITS] PRESSURE` line where the file
+/// has none (the refusal's own words blame that line); else `e`.
+fn no_pressure_line(units: &Units, e: ParamError) -> ParamError {
+    let ParamReason::OutOfRange {
+        lo,
+        hi,
+        why: Limit::TyrePressure { unit: None, .. },
+    } = e.reason
+    else {
+        return e;
+    };
+    let key = match e.key.as_str() {
+        "NOMPRES" => "NOMPRES",
+        "INFLPRES" => "INFLPRES",
+        _ => return e,
+    };
+    if units.pressure.is_some() {
+        return e;
+    }
+    let reason = ParamReason::TirPressureNoLine(Box::new(NoPressureLine {
+        key,
+        units: units.force_and_length(),
+        pa: units.factor(key),
+        range: (lo, hi),
+    }));
+    let v = e.value.number().unwrap_or(f64::NAN);
+    ParamError::new(key, v, reason)
 }

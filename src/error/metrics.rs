@@ -3,7 +3,7 @@
 //! steer in rad.
 
 use super::number::Num;
-use super::reason::{angle, compared};
+use super::reason::{angle, compared, compared_like};
 use crate::format::fixed;
 use thiserror::Error;
 
@@ -36,13 +36,15 @@ fn no_step(initial: f64, steady: f64, min: f64, pre_window: f64) -> String {
             angle(min)
         );
     }
-    // The change by its size: the sentence says from where to where.
+    // The change by its size (the sentence says from where to where), and
+    // every angle of the sentence with the digits that set it apart from
+    // the least step: the steady steer of a run from 0 is the change.
+    let like = |v: f64| compared_like(v, change.abs(), min);
+    let (from, to) = (like(initial), like(steady));
     let (change, min) = compared(change.abs(), min);
     format!(
-        "no steer step: the steer goes from {} in the initial window to {} in the steady one, \
-         a change of {change}, less than the {min} a step steer needs{turned}",
-        angle(initial),
-        angle(steady),
+        "no steer step: the steer goes from {from} in the initial window to {to} in the steady \
+         one, a change of {change}, less than the {min} a step steer needs{turned}",
     )
 }
 

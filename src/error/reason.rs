@@ -4,7 +4,7 @@
 //! kind. Units as the key's (SI unless the key names another).
 
 use super::options::{ModeError, OptionsError};
-pub(crate) use angles::{angle, compared};
+pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 pub use slow_steer::{SlowSteer, Waveform};

@@ -180,7 +180,7 @@ fn compared_angles_print_apart_and_every_angle_in_one_format() {
     fs::write(&tiny, csv).unwrap();
     let e = stderr(&run(&["metrics", tiny.to_str().unwrap()]));
     assert!(
-        e.contains("a change of 0.00015 rad (0.009°), less than the 0.00017 rad (0.010°) a step steer needs"),
+        e.contains("the steer goes from 0 rad (0.000°) in the initial window to 0.00015 rad (0.009°) in the steady one, a change of 0.00015 rad (0.009°), less than the 0.00017 rad (0.010°) a step steer needs"),
         "{e}"
     );
     let sine = "kind = \"sine\"\nspeed = 20.0\namplitude = 0.01\nfrequency = 0.0001\nstart = 0.0\nend = 10.0\n";

@@ -39,6 +39,21 @@ pub(crate) fn angle(v: f64) -> String {
 /// so they read side by side: a sentence saying one is below the other
 /// never prints two equal numbers.
 pub(crate) fn compared(a: f64, b: f64) -> (String, String) {
+    let (digits, decimals) = places(a, b);
+    (written(a, digits, decimals), written(b, digits, decimals))
+}
+
+/// `v` with the digits and decimals [`compared`] writes `a` and `b` with:
+/// an angle of the same sentence (the steady steer beside the change it
+/// equals) in the same format as the pair.
+pub(crate) fn compared_like(v: f64, a: f64, b: f64) -> String {
+    let (digits, decimals) = places(a, b);
+    written(v, digits, decimals)
+}
+
+/// The significant digits (rad) and decimals (degrees) that set `a` and
+/// `b` apart, at least [`angle`]'s.
+fn places(a: f64, b: f64) -> (usize, usize) {
     // Apart in rad, and in degrees with neither nonzero angle written as
     // zero degrees (0.000063 rad read "0.00°" beside "0.01°").
     let zero =
@@ -63,7 +78,7 @@ pub(crate) fn compared(a: f64, b: f64) -> (String, String) {
     while decimals < MAX_DIGITS && !differ(digits, decimals).1 {
         decimals += 1;
     }
-    (written(a, digits, decimals), written(b, digits, decimals))
+    (digits, decimals)
 }
 
 #[cfg(test)]

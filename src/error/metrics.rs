@@ -3,22 +3,9 @@
 //! steer in rad.
 
 use super::number::Num;
-use crate::format::{fixed, significant};
+use super::reason::{angle, compared, compared_like};
+use crate::format::fixed;
 use thiserror::Error;
-
-/// An angle in rad with its value in degrees: "0.0017 rad (0.10°)".
-/// A steer below 1e-9 rad is a mean of rounding (a sweep's mean of
-/// 7.2e-16 rad) and is written 0; one below 1e-5 rad, far below any
-/// sensor's resolution, in exponent form, not with sixteen zeros.
-fn angle(v: f64) -> String {
-    let v = if v.abs() < 1e-9 { 0.0 } else { v };
-    let rad = if v != 0.0 && v.abs() < 1e-5 {
-        format!("{v:.1e}")
-    } else {
-        significant(v, 2)
-    };
-    format!("{rad} rad ({}°)", fixed(v.to_degrees(), 2))
-}
 
 /// The sentence of [`MetricsError::NoStep`] in plain terms: where the
 /// steer stays, or how little it moves, against the step it needs.
@@ -49,13 +36,34 @@ fn no_step(initial: f64, steady: f64, min: f64, pre_window: f64) -> String {
             angle(min)
         );
     }
+    // The change by its size (the sentence says from where to where), and
+    // every angle of the sentence with the digits that set it apart from
+    // the least step: the steady steer of a run from 0 is the change.
+    let like = |v: f64| compared_like(v, change.abs(), min);
+    let (from, to) = (like(initial), like(steady));
+    let (change, min) = compared(change.abs(), min);
     format!(
-        "no steer step: the steer goes from {} in the initial window to {} in the steady one, \
-         a change of {}, less than the {} a step steer needs{turned}",
+        "no steer step: the steer goes from {from} in the initial window to {to} in the steady \
+         one, a change of {change}, less than the {min} a step steer needs{turned}",
+    )
+}
+
+/// The sentence of [`MetricsError::SteerPulse`]: the pulse by its size,
+/// start and duration, and why a held step is what the metrics read.
+fn pulse(initial: f64, size: f64, start: f64, duration: f64, steady: f64, window: f64) -> String {
+    format!(
+        "no steer step: the steer is a pulse, not a step: a pulse of {} from {}, from {} s for \
+         {} s (times at half its size), back to {} in the steady window; the step-steer metrics \
+         (GB/T 6323 / ISO 7401 step input) read the response to a steer held after its step (its \
+         steady gains, and the times to reach 90 % of them), which a pulse never holds: hold the \
+         steer after the step to the record's end, at least the last `steady_window` = {} s; a \
+         pulse input is read for its frequency response, which these metrics do not compute",
+        angle(size),
         angle(initial),
+        fixed(start, 2),
+        fixed(duration, 2),
         angle(steady),
-        angle(change),
-        angle(min)
+        Num(window)
     )
 }
 
@@ -91,6 +99,23 @@ pub enum MetricsError {
         /// The initial window, s: how long the steer must be held before
         /// the step.
         pre_window: f64,
+    },
+    /// No held step: the steer leaves its initial value by a step's worth
+    /// and comes back before the steady window (a pulse). Rad, s.
+    #[error("{}", pulse(*initial, *size, *start, *duration, *steady, *steady_window))]
+    SteerPulse {
+        /// Mean steer in the initial window, rad.
+        initial: f64,
+        /// The largest departure from it, signed, rad.
+        size: f64,
+        /// Where the steer first passes half of that, s.
+        start: f64,
+        /// How long it stays beyond half of it, s.
+        duration: f64,
+        /// Mean steer in the steady window, rad.
+        steady: f64,
+        /// The steady window, s.
+        steady_window: f64,
     },
     /// The steer does not cross half its step after the initial window.
     #[error("the steer never crosses half its step between the initial and steady windows")]

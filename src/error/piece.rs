@@ -32,6 +32,16 @@ pub enum PieceRefusal {
     /// Another piece of the run was used (a single use takes one).
     #[error("another piece was used")]
     AnotherPieceUsed,
+    /// A replay's piece whose steer stays within `span` (less than `min`,
+    /// a step's worth) while another piece of the run moves it: the piece
+    /// that moves it is replayed, the longest otherwise. Rad.
+    #[error("its steer stays within {} rad (less than the {} rad of a step) while another piece moves it, and that piece is replayed; to replay this one, cut the run file to its span", crate::format::readable(*span, 2), crate::format::readable(*min, 2))]
+    SteerHeld {
+        /// The steer's range in the piece, rad.
+        span: f64,
+        /// The least range that moves the steer, rad.
+        min: f64,
+    },
     /// The piece gives no step-steer metrics.
     #[error("no step-steer metrics ({0})")]
     NoStepMetrics(MetricsError),
@@ -55,7 +65,9 @@ pub(super) fn no_steer_step(pieces: &[RefusedPiece], gaps: &[(f64, f64)]) -> Str
                 format!("no step-steer metrics (the run, {t_start:.2}–{t_end:.2} s, is too short)")
             }
             PieceRefusal::NoStepMetrics(_) => reason.to_string(),
-            PieceRefusal::AnotherPieceUsed => format!("no step-steer metrics ({reason})"),
+            PieceRefusal::AnotherPieceUsed | PieceRefusal::SteerHeld { .. } => {
+                format!("no step-steer metrics ({reason})")
+            }
         };
     }
     let each: Vec<String> = pieces

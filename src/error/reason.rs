@@ -4,6 +4,7 @@
 //! kind. Units as the key's (SI unless the key names another).
 
 use super::options::{ModeError, OptionsError};
+pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
@@ -13,6 +14,7 @@ use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
 pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 
+mod angles;
 mod boxed;
 mod checks;
 mod slow_steer;
@@ -30,14 +32,14 @@ pub enum ParamReason {
     #[error("must be a finite number")]
     NotFinite,
     /// A step steer without a step, rad.
-    #[error("a step steer needs a steer step of at least {min:.5} rad ({:.2}°) from straight running", min.to_degrees())]
+    #[error("a step steer needs a steer step of at least {} from straight running", angle(*min))]
     NoSteerStep {
         /// The smallest step the metrics take as one, rad.
         min: f64,
     },
     /// A ramp, sine or sweep whose steer stays below the smallest step the
     /// metrics take as one: straight running, nothing to respond to. Rad.
-    #[error("the road wheels steer at most {} rad ({}°), less than the {min:.5} rad ({:.2}°) a manoeuvre must steer: the car would run straight, with no response to show", super::number::Num(*reached), crate::format::fixed(reached.to_degrees(), 2), min.to_degrees())]
+    #[error("the road wheels steer at most {}, less than the {} a manoeuvre must steer: the car would run straight, with no response to show", compared(*reached, *min).0, compared(*reached, *min).1)]
     NoSteer {
         /// The largest steer the manoeuvre reaches, rad.
         reached: f64,

@@ -55,6 +55,7 @@ pub(crate) mod continuous;
 pub const MIN_FILTER_HZ: f64 = 1.0;
 pub mod measured;
 mod peak;
+mod pulse;
 pub mod simulated;
 mod step_shape;
 
@@ -472,12 +473,7 @@ pub(crate) fn step_metrics(
     let (steer_f, yaw_rate_f) = (filtered(steer), filtered(yaw_rate));
     let ay_f = ay.map(filtered);
     let beta_f = beta.map(filtered);
-    let no_step = || MetricsError::NoStep {
-        initial: window_mean(t, &steer_f, t[0], t[0] + s.pre_window).0,
-        steady: window_mean(t, &steer_f, t[n - 1] - s.steady_window, t[n - 1]).0,
-        min: MIN_STEP,
-        pre_window: s.pre_window,
-    };
+    let no_step = || pulse::no_step(t, steer, &steer_f, s);
     let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| no_step())?;
     if d.steady.abs() < MIN_STEP {
         return Err(no_step());

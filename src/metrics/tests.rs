@@ -105,7 +105,7 @@ fn refuses_records_without_a_step() {
         .map(|&x| if x > 1.0 { 1e-4 } else { 0.0 })
         .collect();
     let e = step_metrics(&t, &small, &z, Some(&z), None, &MetricSettings::default()).unwrap_err();
-    assert_eq!(e.to_string(), "no steer step: the steer goes from 0 rad (0.00°) in the initial window to 0.00010 rad (0.01°) in the steady one, a change of 0.00010 rad (0.01°), less than the 0.00017 rad (0.01°) a step steer needs");
+    assert_eq!(e.to_string(), "no steer step: the steer goes from 0 rad (0.000°) in the initial window to 0.00010 rad (0.006°) in the steady one, a change of 0.00010 rad (0.006°), less than the 0.00017 rad (0.010°) a step steer needs");
     // A mean of rounding is written 0, not 8.2e-16 nor with zeros.
     let rounding: Vec<f64> = small.iter().map(|s| s + 8.2e-16).collect();
     let e = step_metrics(
@@ -119,7 +119,7 @@ fn refuses_records_without_a_step() {
     .unwrap_err();
     assert!(
         e.to_string()
-            .contains("goes from 0 rad (0.00°) in the initial window"),
+            .contains("goes from 0 rad (0.000°) in the initial window"),
         "{e}"
     );
     let e = step_metrics(

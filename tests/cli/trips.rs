@@ -87,7 +87,7 @@ fn metrics_of_a_run_without_a_step_say_what_the_steer_does() {
     let e = fails(&["metrics", dir.path().join("tiny.csv").to_str().unwrap()]);
     assert!(
         e.contains(
-            "a change of 0.00010 rad (0.01°), less than the 0.00017 rad (0.01°) a step steer needs"
+            "a change of 0.00010 rad (0.006°), less than the 0.00017 rad (0.010°) a step steer needs"
         ),
         "{e}"
     );

@@ -27,7 +27,7 @@ fn a_sine_too_slow_to_steer_within_its_run_is_refused_with_its_period() {
     let path = sedan_with(dir.path(), "slow", sine);
     let e = fails_cleanly("simulate", &path, dir.path());
     for said in [
-        "slow.toml:23:13: `manoeuvre.frequency` = 0.0001: a sine of `frequency` = 0.0001 Hz has a period of 10000 s against a run of 10 s (`start` = 0 s to `end` = 10 s): within it the steer reaches only 0.000110 rad (0.006°) of its `amplitude` = 0.0175 rad (1.003°)",
+        "slow.toml:23:13: `manoeuvre.frequency` = 0.0001: a sine of `frequency` = 0.0001 Hz has a period of 10000 s against a run of 10 s (`start` = 0 s to `end` = 10 s): within it the steer reaches only 0.00011 rad (0.006°), 0.63 % of its `amplitude` = 0.0175 rad (1.00°), less than the 0.00017 rad (0.010°) a manoeuvre must steer",
         "the car would run straight",
         "(`frequency` ≥ 0.025 Hz): is the frequency in Hz?",
     ] {

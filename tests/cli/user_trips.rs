@@ -160,7 +160,7 @@ fn a_manoeuvre_that_steers_nothing_is_refused_at_its_key() {
             // From the default start, 1 s: 3 s of ramp.
             "kind = \"ramp-steer\"\nspeed = 20.0\nrate = 1e-5\nend = 4.0\n",
             "rate",
-            "`manoeuvre.rate` = 1e-5: the road wheels steer at most 3e-5 rad (0.00°), less than the 0.00017 rad (0.01°)".to_string(),
+            "`manoeuvre.rate` = 1e-5: the road wheels steer at most 0.000030 rad (0.002°), less than the 0.00017 rad (0.010°)".to_string(),
         ),
     ] {
         let dir = scenario(VEHICLE, GIM, &format!("[manoeuvre]\n{manoeuvre}"));

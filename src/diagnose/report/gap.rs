@@ -158,24 +158,15 @@ fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
-/// Correlation of `a[i]` with `b[i − lag]`.
+/// Correlation of `a[i]` with `b[i − lag]`: the gap scan's Pearson
+/// correlation at that lag, 0 where it has none (an overlap under three
+/// samples, or a constant series).
 fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
-    let n = a.len();
-    if lag + 2 > n {
-        return 0.0;
-    }
-    let (x, y) = (&a[lag..], &b[..n - lag]);
-    let (mx, my) = (mean(x), mean(y));
-    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
-    for (p, q) in x.iter().zip(y) {
-        sxy += (p - mx) * (q - my);
-        sxx += (p - mx) * (p - mx);
-        syy += (q - my) * (q - my);
-    }
-    if sxx <= 0.0 || syy <= 0.0 {
+    let rho = scan::lagged_correlation(a, b, lag as isize);
+    if rho.is_nan() {
         0.0
     } else {
-        sxy / (sxx * syy).sqrt()
+        rho
     }
 }
 

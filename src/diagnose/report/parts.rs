@@ -212,15 +212,7 @@ pub(crate) fn second_difference_scatter(x: &[f64]) -> f64 {
         return f64::NAN;
     }
     let mut d: Vec<f64> = x.windows(3).map(|w| w[2] - 2.0 * w[1] + w[0]).collect();
-    let median = |v: &mut [f64]| {
-        v.sort_by(f64::total_cmp);
-        let n = v.len();
-        if n % 2 == 1 {
-            v[n / 2]
-        } else {
-            0.5 * (v[n / 2 - 1] + v[n / 2])
-        }
-    };
+    let median = crate::measured::clean::midpoint_median;
     let m = median(&mut d);
     let mut dev: Vec<f64> = d.iter().map(|v| (v - m).abs()).collect();
     1.4826 * median(&mut dev) / 6f64.sqrt()

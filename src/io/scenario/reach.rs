@@ -2,7 +2,8 @@
 //! against what a road wheel can do and what the metrics take as a steer:
 //! a ramp's reach by its `end`, and the largest |steer| a sine or sweep
 //! reaches before the run ends (a sine of 0.0001 Hz over 10 s steered
-//! 1.1e-4 rad of its 0.0175 rad and ran straight without a word).
+//! 1.1e-4 rad of its 0.0175 rad and ran straight without a word), and
+//! against its own amplitude (0.001 Hz over 10 s reached 6 % of it).
 //! Rad, s, Hz.
 
 use super::super::limits::{road_wheel_steer, MAX_ROAD_WHEEL_STEER};
@@ -57,11 +58,19 @@ fn largest_steer(amplitude: f64, phase: f64) -> f64 {
     }
 }
 
+/// The least share of its amplitude a sine or sweep must reach within its
+/// run. A run that holds less than a tenth of a quarter period (0.0016 Hz
+/// over 10 s) steers a slow ramp: 0.001 Hz over 10 s reached 6 % of its
+/// 0.1 rad and ran without a word, a frequency most likely written in
+/// mHz or a period for a frequency.
+pub(crate) const MIN_REACH_SHARE: f64 = 0.1;
+
 /// [`SlowSteer`] at `key` (written as `v`) where the largest steer within
 /// the run is below [`MIN_STEP`] while the amplitude is not (an amplitude
-/// below it is [`steers`]'s to refuse).
+/// below it is [`steers`]'s to refuse), or below [`MIN_REACH_SHARE`] of
+/// the amplitude.
 fn slow(key: &str, v: f64, s: SlowSteer) -> Result<(), ParamError> {
-    if s.reached >= MIN_STEP {
+    if s.reached >= MIN_STEP && s.reached >= MIN_REACH_SHARE * s.amplitude.abs() {
         return Ok(());
     }
     Err(ParamError::new(key, v, ParamReason::SlowSteer(Box::new(s))))
@@ -84,6 +93,7 @@ pub(super) fn sine_reach(s: &SineSteer) -> Result<(), ParamError> {
             amplitude: s.amplitude,
             reached: largest_steer(s.amplitude, phase),
             min: MIN_STEP,
+            min_share: MIN_REACH_SHARE,
         },
     )
 }
@@ -107,6 +117,7 @@ pub(super) fn sweep_reach(s: &SweepSteer, key: &str) -> Result<(), ParamError> {
             amplitude: s.amplitude,
             reached: largest_steer(s.amplitude, phase),
             min: MIN_STEP,
+            min_share: MIN_REACH_SHARE,
         },
     )
 }

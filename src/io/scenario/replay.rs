@@ -5,12 +5,13 @@
 //! its initial yaw rate and sideslip a robust line through the first
 //! [`INITIAL_STRETCH`] s ([`initial_value`]).
 
-use crate::error::{InputError, InputProblem, ParamError};
+use crate::error::{InputError, InputProblem, ParamError, PieceRefusal};
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, DeclaredBy, MeasuredRun};
 use crate::manoeuvre::Replay;
-use crate::measured::clean::{clean_single, CleanSettings, CleaningReport};
+use crate::measured::clean::{clean_run, clean_single_with, CleanSettings, CleaningReport};
 use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
+use crate::metrics::MIN_STEP;
 use crate::vehicle::State;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -66,7 +67,7 @@ pub(super) fn resolve(
             return Err(InputError::problem(run_path, p));
         }
     }
-    let run = clean_single(read, &settings, &mut cleaning).ok_or_else(|| {
+    let run = replayed_piece(read, &settings, &mut cleaning).ok_or_else(|| {
         InputError::problem(
             run_path,
             InputProblem::NoMovingSamples {
@@ -99,6 +100,43 @@ pub(super) fn resolve(
     })
 }
 
+/// The steer's range over `run`, rad.
+fn steer_span(run: &MeasuredRun) -> f64 {
+    let (lo, hi) = run
+        .steer
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &d| {
+            (lo.min(d), hi.max(d))
+        });
+    hi - lo
+}
+
+/// The piece of `read` a replay takes: the longest whose steer moves by a
+/// step's worth ([`MIN_STEP`]) where any does, else the longest. A run
+/// split by a time gap into a short piece holding its step and a longer
+/// one held straight replayed the held one, which tests nothing of the
+/// response; the other pieces are listed as dropped, with why.
+fn replayed_piece(
+    read: MeasuredRun,
+    settings: &CleanSettings,
+    cleaning: &mut CleaningReport,
+) -> Option<MeasuredRun> {
+    let mut probe = CleaningReport::new(settings.min_speed);
+    let pieces = clean_run(read.clone(), settings, &mut probe);
+    let any_moves = pieces.iter().any(|p| steer_span(p) >= MIN_STEP);
+    let fits = |p: &MeasuredRun| {
+        let span = steer_span(p);
+        match any_moves && span < MIN_STEP {
+            true => Err(PieceRefusal::SteerHeld {
+                span,
+                min: MIN_STEP,
+            }),
+            false => Ok(()),
+        }
+    };
+    clean_single_with(read, settings, cleaning, fits).map(|(p, ())| p)
+}
+
 /// The stretch at a replay's start its initial yaw rate and sideslip are
 /// estimated over, s: long enough to average a sensor's noise (10–20
 /// samples at 50–100 Hz), short against a yaw response (0.1–0.3 s).
@@ -121,15 +159,7 @@ pub fn initial_value(t: &[f64], x: &[f64], idx: &[usize]) -> f64 {
     if near.len() < 3 {
         return x[i0];
     }
-    let median = |mut v: Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        let n = v.len();
-        if n % 2 == 1 {
-            v[n / 2]
-        } else {
-            0.5 * (v[n / 2 - 1] + v[n / 2])
-        }
-    };
+    let median = |mut v: Vec<f64>| crate::measured::clean::midpoint_median(&mut v);
     let mut slopes = Vec::new();
     for (a, &i) in near.iter().enumerate() {
         for &k in &near[a + 1..] {

@@ -33,6 +33,9 @@
 //!   off, extrapolates. A range with one end given is said as `≥ X` or
 //!   `≤ X`.
 //!
+//! - **a `.tir` whose pure curves peak beyond any tyre's** (|F|/Fz above
+//!   2.5), as `tyre-eval` says it.
+//!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
 use crate::io::fitted_ranges::{past_by, FittedRanges, RangePoint, SLACK};
@@ -74,6 +77,7 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said.warnings.extend(axle_sliding(h));
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
+    said.warnings.extend(tir_friction(sc));
     said.warnings.extend(variance_window(sc));
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
@@ -92,6 +96,23 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         }
     }
     said
+}
+
+/// A `.tir` whose pure curves peak above
+/// [`WARN_FRICTION`](crate::tyre::mf::WARN_FRICTION) (2.5), warned as
+/// `tyre-eval` warns of it: `simulate` ran the public `FSAE_Defaults.tir`
+/// (3.37 at 250 N) without a word. One line for both axles where they
+/// share the file's peak.
+fn tir_friction(sc: &Scenario) -> Vec<String> {
+    let [front, rear] = [&sc.model.front, &sc.model.rear]
+        .map(|t| crate::jobs::tyre_eval::peak_of(t).map(|p| p.to_string()));
+    match (front, rear) {
+        (Some(f), Some(r)) if f == r => vec![format!("the front and rear tyres' .tir: {f}")],
+        (f, r) => [("front", f), ("rear", r)]
+            .into_iter()
+            .filter_map(|(axle, p)| p.map(|p| format!("the {axle} tyres' .tir: {p}")))
+            .collect(),
+    }
 }
 
 /// Share of the asked steady lateral acceleration by which a step sized

@@ -12,7 +12,7 @@ use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
 use crate::diagnose::report::trust::channel_trust;
 use crate::diagnose::report::{words, ChannelNoise};
-use crate::error::Error;
+use crate::error::{Error, PieceRefusal};
 use crate::io::load_scenario;
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
@@ -203,6 +203,28 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     })
 }
 
+/// The piece a replay took where the run had others, said by its span and
+/// samples and why it was taken: the dropped pieces' lines alone ("another
+/// piece was used") left the reader to work out which.
+fn replayed_piece(c: &CleaningReport) -> Option<String> {
+    let p = c.pieces.first().filter(|_| !c.dropped_pieces.is_empty())?;
+    let held = c
+        .dropped_pieces
+        .iter()
+        .any(|d| matches!(d.reason, Some(PieceRefusal::SteerHeld { .. })));
+    let why = match held {
+        true => "the longest piece that moves the steer (a longer one holds it)",
+        false => "the longest piece",
+    };
+    Some(format!(
+        "  cleaning: replayed piece {} ({:.2}–{:.2} s, {}): {why}",
+        p.name,
+        p.t_start,
+        p.t_end,
+        crate::format::plural(p.samples, "sample", "samples")
+    ))
+}
+
 impl SimulateReport {
     /// The report in lines of text.
     pub fn summary(&self) -> Vec<String> {
@@ -234,6 +256,7 @@ impl SimulateReport {
         if let Some(r) = &self.replay {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
+            out.extend(r.cleaning.as_ref().and_then(replayed_piece));
             out.push(format!("  {}", words::channels_trusted(&r.noise)));
             out.extend(
                 r.channels

@@ -47,6 +47,7 @@ mod camber;
 mod checks;
 mod fitted;
 mod friction;
+pub(crate) use friction::peak_of;
 mod light_load;
 mod model_loads;
 mod not_carried;

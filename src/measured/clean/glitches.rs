@@ -19,6 +19,22 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
+/// The median of `v`, the mean of its two middle values for an even
+/// count (where [`median`] takes the upper one), sorted in place; NaN when
+/// empty. The estimate a robust line or scatter is built on, which must
+/// not lean to one side of a pair.
+pub(crate) fn midpoint_median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    match n % 2 {
+        1 => v[n / 2],
+        _ => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+    }
+}
+
 /// The median (upper) interval between successive times `t`, s; 0 with
 /// fewer than two times. The sampling a run's windows, filters and gaps
 /// are judged by.

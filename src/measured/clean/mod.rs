@@ -53,7 +53,7 @@ mod report;
 mod test_signals;
 
 pub use glitches::treat_glitches;
-pub(crate) use glitches::{median, median_interval, quantile};
+pub(crate) use glitches::{median, median_interval, midpoint_median, quantile};
 pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{

@@ -232,7 +232,7 @@ pub(super) fn bias_test(e: &[f64], floor: f64, resolved: bool) -> BiasTest {
 
 /// Pearson correlation of `a[i]` with `b[i − k]` (k of either sign) over
 /// their overlap.
-fn lagged_correlation(a: &[f64], b: &[f64], k: isize) -> f64 {
+pub(super) fn lagged_correlation(a: &[f64], b: &[f64], k: isize) -> f64 {
     let n = a.len();
     let l = k.unsigned_abs();
     if l + 3 > n {

@@ -9,6 +9,7 @@ use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
+pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
@@ -17,6 +18,7 @@ pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 mod angles;
 mod boxed;
 mod checks;
+mod schedule;
 mod slow_steer;
 mod tir;
 
@@ -581,26 +583,4 @@ pub enum Limit {
         /// The other pressure key is about the unit's factor above it.
         apart: bool,
     },
-}
-
-/// A column of a schedule manoeuvre; it displays as its key under
-/// `[manoeuvre]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ScheduleColumn {
-    /// The breakpoint times.
-    T,
-    /// The steers.
-    Steer,
-    /// The speeds.
-    Speed,
-}
-
-impl std::fmt::Display for ScheduleColumn {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(match self {
-            ScheduleColumn::T => "t",
-            ScheduleColumn::Steer => "steer",
-            ScheduleColumn::Speed => "speed",
-        })
-    }
 }

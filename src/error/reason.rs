@@ -11,6 +11,7 @@ use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
 pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
+pub use staged::StagedMagicFormula;
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
 pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
@@ -20,6 +21,7 @@ mod boxed;
 mod checks;
 mod schedule;
 mod slow_steer;
+mod staged;
 mod tir;
 
 /// The size of a row of `history.csv` as written, bytes (14 columns of
@@ -311,16 +313,9 @@ pub enum ParamReason {
     /// large payload here, so that an error stays small to return.
     #[error(transparent)]
     Name(Box<OptionsError>),
-    /// A Magic Formula 5.2 / 6.1 / 6.2 named as a campaign's rig model:
-    /// those are fitted in stages by `identify` and read as `.tir` files,
-    /// not fitted by the diagnosis's swarm.
-    #[error("`{model}` is no model the diagnosis fits to rig data (one of {}): the Magic Formula is fitted in stages by `handling identify <rig> --model mf61 --out base.tir` (or mf62), and its .tir given as `[tyres] file = \"base.tir\"` (or `front` and `rear`)", fitted.join(", "))]
-    StagedMagicFormula {
-        /// The name given.
-        model: String,
-        /// The models the diagnosis fits to rig data.
-        fitted: Vec<&'static str>,
-    },
+    /// A Magic Formula named as a campaign's rig model.
+    #[error(transparent)]
+    StagedMagicFormula(Box<StagedMagicFormula>),
     /// An MFeval `useMode` code that cannot be used.
     #[error(transparent)]
     Mode(Box<ModeError>),

@@ -45,7 +45,7 @@ use crate::diagnose::model::scale::{
 };
 use crate::error::{
     named, BeyondSignal, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError,
-    ParamReason,
+    ParamReason, StagedMagicFormula,
 };
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
@@ -454,10 +454,10 @@ fn base_tyres(
     ) {
         return Err(src.value_error(&ParamError::without_value(
             "tyres.model",
-            ParamReason::StagedMagicFormula {
+            ParamReason::StagedMagicFormula(Box::new(StagedMagicFormula {
                 model: name.to_string(),
                 fitted: swarm_models().iter().map(|m| m.as_str()).collect(),
-            },
+            })),
         )));
     }
     // The rig fit starts a swarm, which the staged Magic Formula does not.

@@ -379,6 +379,7 @@ mod trips_s74_tir;
 mod trips_s75_replay;
 mod trips_s75_sim;
 mod trips_s75_tir;
+mod trips_s76_identify;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

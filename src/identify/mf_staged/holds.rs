@@ -189,6 +189,21 @@ impl fmt::Display for HoldReason {
             HoldReason::Given => f.write_str("given with --hold"),
             HoldReason::NotIdentifiable {
                 fitted,
+                std_error: Some(_),
+                effect_percent,
+                source,
+                stated,
+                held_at: held,
+                ..
+            } if undetermined_at_all(*effect_percent) => write!(
+                f,
+                "not identifiable from these data when fitted: not determined at all (it stood at {}, and its standard error reaches beyond any value it could take, one of them alone moving the fit by more than {} times the channel's RMS, which the other parameters' trade-off undoes): {}",
+                readable(*fitted, 5),
+                ABSURD_EFFECT_PERCENT / 100.0,
+                held_at(&format!("the {source}"), *stated, *held, None)
+            ),
+            HoldReason::NotIdentifiable {
+                fitted,
                 std_error: Some(se),
                 effect_percent,
                 source,
@@ -224,6 +239,18 @@ impl fmt::Display for HoldReason {
             ),
         }
     }
+}
+
+/// The effect of one standard error, % of the channel's RMS, past which
+/// its digits say nothing (PKX3's "0.23756 ± 27256 … 196581.1 %" on
+/// combined-slip data): the parameter is said not determined at all.
+const ABSURD_EFFECT_PERCENT: f64 = 1000.0;
+
+/// Whether the standard error of a parameter, whose effect on the fit is
+/// `effect_percent`, is beyond any meaning: past
+/// [`ABSURD_EFFECT_PERCENT`].
+fn undetermined_at_all(effect_percent: f64) -> bool {
+    effect_percent >= ABSURD_EFFECT_PERCENT
 }
 
 /// Why a coefficient no stage fits is held: each said for its own
@@ -406,10 +433,17 @@ pub(super) fn hold_undetermined(
             compensating: |k: usize, dv: f64| u.compensating(k, dv),
             refit: |sub: &StageProblem, x: &[f64], b: &[(f64, f64)]| lm.minimize(sub, x, b),
         };
+        // A standard error taken at a bound means nothing: a parameter
+        // stopped there is held at its stated value, as its line says, not
+        // at the end of ±2 of them (QBZ1 was said held at the template's
+        // 11.692 and written as 2.98, twice a meaningless error off 0).
+        let std_errors: Vec<Option<f64>> = (0..p.len())
+            .map(|k| u.std_error[k].filter(|_| near_bound(p[k], fit.bounds[k]).is_none()))
+            .collect();
         let holding = HoldFit {
             problem,
             p,
-            std_errors: &u.std_error,
+            std_errors: &std_errors,
             bounds: &fit.bounds,
             clamp_starts: true,
             tie: TieBreak::LatestInOrder,

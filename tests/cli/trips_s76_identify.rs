@@ -1,5 +1,5 @@
 //! What a fresh-eyes check of `identify` and `tyre-eval` found after stop
-//! 75 (issue 41), run as a user runs the tool: a force written against its
+//! 75, run as a user runs the tool: a force written against its
 //! slip in silence, a lateral block no fit ran on left unsaid, a held line
 //! whose value is not the one written, a template's nominal pressure
 //! outside the data's, a longitudinal sweep refused for its `fy` column

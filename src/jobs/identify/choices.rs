@@ -86,7 +86,7 @@ impl std::str::FromStr for IdentifyModel {
             .chars()
             .filter(|c| c.is_ascii_alphanumeric())
             .collect();
-        if ["mf52", "mf5", "magicformula52", "pac2002"].contains(&bare.as_str()) {
+        if ["mf52", "mf5", "magicformula52"].contains(&bare.as_str()) {
             return Err(Error::Options(OptionsError::VersionNotFitted {
                 given: s.to_string(),
                 version: "5.2",

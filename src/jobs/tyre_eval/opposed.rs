@@ -98,6 +98,15 @@ impl Opposed {
     }
 }
 
+/// One force against its slip: its column, the slips, how it is read
+/// from a point's forces, and the forces at zero slip.
+type Side<'a> = (
+    &'static str,
+    &'a [f64],
+    fn(&PointForces) -> f64,
+    &'a [PointForces],
+);
+
 /// Whether point `i` of `p` lies inside `tyre`'s own ranges.
 fn inside(tyre: &Tyre, ranges: Option<&FittedRanges>, p: &Points, i: usize) -> bool {
     let [fz, kappa, alpha, camber, speed] = p.columns;
@@ -150,12 +159,7 @@ pub(crate) fn opposed(
     };
     let lateral = tyre.evaluate_points(fz, kappa, &zero, camber, speed, p.pressure);
     let longitudinal = tyre.evaluate_points(fz, &zero, alpha, camber, speed, p.pressure);
-    let sides: [(
-        &'static str,
-        &[f64],
-        fn(&PointForces) -> f64,
-        &[PointForces],
-    ); 2] = [
+    let sides: [Side; 2] = [
         ("fy", alpha, |x| x.fy, &lateral),
         ("fx", kappa, |x| x.fx, &longitudinal),
     ];

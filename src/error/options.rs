@@ -142,6 +142,20 @@ pub enum OptionsError {
     /// An MFeval `useMode` code that cannot be used.
     #[error("--mode: {0}")]
     Mode(#[from] ModeError),
+    /// A Magic Formula version the tool reads from a `.tir` but
+    /// `identify` does not fit (5.2: its staged fit writes 6.1 or 6.2).
+    #[error(
+        "--model {given}: Magic Formula {version} is a version `tyre-eval` and `simulate` read from a .tir, but `identify` does not fit it (its staged fit writes MF 6.1 or 6.2 files): give --model mf61, the nearest; the models it fits: {}",
+        known.join(", ")
+    )]
+    VersionNotFitted {
+        /// The name given.
+        given: String,
+        /// The version it names (`5.2`).
+        version: &'static str,
+        /// The models `identify` fits.
+        known: Vec<&'static str>,
+    },
     /// A local polish that is not one of the methods.
     #[error("unknown local method `{given}`{}: lm, gn or none", crate::format::did_you_mean(given, &["lm", "gn", "none"]))]
     UnknownLocalMethod {

@@ -258,7 +258,7 @@ pub enum UnitSlip {
     /// A rig column whose largest force, over a sweep that reaches
     /// `slip` (rad or slip ratio), is below [`MIN_RIG_GRIP`] of its load:
     /// forces in kN beside loads in N, or a column scaled down.
-    #[error("column `{column}`: its largest force, {} N at fz {} N, is {} of the load over a sweep reaching a slip of {}, where every tyre makes more than {MIN_RIG_GRIP} of its load: {}", Num(*value), Num(*fz), Num((value / fz).abs()), Num(*slip), grip_hint((value / fz).abs()))]
+    #[error("column `{column}`: its largest force, {} N at fz {} N, is {} of the load over a sweep reaching {}, where every tyre makes more than {MIN_RIG_GRIP} of its load: {}", Num(*value), Num(*fz), crate::format::readable((value / fz).abs(), 3), sweep_reach(column, *slip), grip_hint((value / fz).abs()))]
     RigForcesBelowGrip {
         /// The column (`fy`, `fx`).
         column: &'static str,
@@ -269,6 +269,20 @@ pub enum UnitSlip {
         /// The largest slip the sweep reaches (rad, or slip ratio).
         slip: f64,
     },
+}
+
+/// The slip a sweep of `column` reaches, with its unit: a slip angle in
+/// rad and degrees (`fy`), a slip ratio (`fx`), to 3 digits.
+fn sweep_reach(column: &str, slip: f64) -> String {
+    let n = |v: f64| crate::format::readable(v, 3);
+    match column {
+        "fx" => format!("a slip ratio of {}", n(slip)),
+        _ => format!(
+            "a slip angle of {} rad ({}°)",
+            n(slip),
+            n(slip.to_degrees())
+        ),
+    }
 }
 
 /// The question a rig aligning moment of `arm` (m of its load) ends on:

@@ -382,6 +382,7 @@ mod trips_s75_tir;
 mod trips_s76_input;
 mod trips_s76_lead;
 mod trips_s76_sim;
+mod trips_s76_identify;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -1,4 +1,4 @@
-//! Fresh-eyes round 4 (issue 41), what the lead mended: a campaign's rig
+//! What a new user tripped on, mended: a campaign's rig
 //! model named as a Magic Formula is answered with how such a fit is made
 //! and given.
 

@@ -73,10 +73,12 @@ impl ErrorSpread {
         );
         let loads = match (lo, hi) {
             (Some(lo), Some(hi)) if hi.sigma_percent >= 2.0 * lo.sigma_percent => Some(format!(
-                "by load, σ {:.1} % at {} to {:.1} % at {}",
-                lo.sigma_percent,
+                "by load, σ {} % at {} to {} % at {}",
+                // Two digits where one decimal shows none (a noise-free
+                // fit's 0.012 %, not 0.0 %).
+                crate::format::decimals_or_digits(lo.sigma_percent, 1, 2),
                 load(lo.fz),
-                hi.sigma_percent,
+                crate::format::decimals_or_digits(hi.sigma_percent, 1, 2),
                 load(hi.fz)
             )),
             _ => None,

@@ -79,6 +79,20 @@ impl std::fmt::Display for IdentifyModel {
 impl std::str::FromStr for IdentifyModel {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self, Error> {
+        // `mf52` is a version the readers take, not a misspelt `mf62`:
+        // said as such, with the models that are fitted.
+        let bare: String = s
+            .to_ascii_lowercase()
+            .chars()
+            .filter(|c| c.is_ascii_alphanumeric())
+            .collect();
+        if ["mf52", "mf5", "magicformula52"].contains(&bare.as_str()) {
+            return Err(Error::Options(OptionsError::VersionNotFitted {
+                given: s.to_string(),
+                version: "5.2",
+                known: Self::names(),
+            }));
+        }
         named(&Self::all(), IdentifyModel::as_str, NameKind::TyreModel, s).map_err(Error::Options)
     }
 }

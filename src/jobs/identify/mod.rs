@@ -19,6 +19,7 @@ pub use curvature_hold::CurvatureHeld;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
 mod linear_window;
+mod nompres;
 pub use linear_window::LinearWindow;
 mod notes;
 pub use notes::Note;
@@ -28,6 +29,7 @@ mod summary;
 mod written;
 use outputs::{output_lock, outputs};
 mod figures;
+mod flat_alpha;
 mod holds;
 pub use holds::Held;
 use holds::{held_by_fits, holds_of};
@@ -235,6 +237,8 @@ pub struct SwarmReport {
     /// level pooled into a model without terms for it, a parameter not
     /// identified.
     pub notes: Vec<Note>,
+    /// The lateral columns set aside at `alpha` 0 throughout, said.
+    pub flat_alpha: Option<String>,
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -373,7 +377,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     // What the data do not determine is held, not written where the
     // optimiser left it (`identify/undetermined.rs`).
     settings.hold_undetermined = true;
-    let data = read_rig(&o.data)?;
+    let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
         return Err(FitError::NoLateralData {
             data: o.data.clone(),
@@ -489,6 +493,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         recorded: o.recorded(),
         held: Vec::new(),
         notes: Vec::new(),
+        flat_alpha,
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),

@@ -139,15 +139,48 @@ pub(crate) fn outlying_conditions(f: &Fit) -> Option<Note> {
         .collect();
     (!out.is_empty()).then(|| {
         Note::warned(format!(
-            "the {} misses {} at {}: more than {OUTLYING_RATIO} times the median condition's σ, {} % over the {n} conditions; the {} model's laws of load, camber and pressure do not carry its curve there (the σ over all points, weighted to the large forces, hides it): see its panel in the figure before relying on the tyre near {}",
+            "the {} misses {} at {}: more than {OUTLYING_RATIO} times the median condition's σ, {} % over the {n} conditions; {} (the σ over all points, weighted to the large forces, hides it): see its panel in the figure before relying on the tyre near {}",
             f.channel.quantity(),
             if out.len() == 1 { "one condition" } else { "conditions" },
             out.join("; "),
             fixed(median, 2),
-            f.model,
+            not_carried(f),
             if out.len() == 1 { "it" } else { "them" }
         ))
     })
+}
+
+/// Why a model misses a condition, by the laws it has: those of load,
+/// camber and pressure that move its forces (found by behaviour, as the
+/// pooled-levels warning finds them) do not carry its curve there; a
+/// model with none (a linear tyre's `C·α`) has one curve for every
+/// condition, and is not said to have laws it lacks.
+fn not_carried(f: &Fit) -> String {
+    let forces = |fz: f64, camber: f64, pressure: f64| {
+        let p = f
+            .tyre
+            .evaluate_points(&[fz], &[0.02], &[0.02], &[camber], &[10.0], &[pressure]);
+        (p[0].fx, p[0].fy, p[0].mz)
+    };
+    let base = forces(2000.0, 0.0, 2e5);
+    let laws: Vec<&str> = [
+        ("load", forces(4000.0, 0.0, 2e5)),
+        ("camber", forces(2000.0, 0.05, 2e5)),
+        ("pressure", forces(2000.0, 0.0, 2.5e5)),
+    ]
+    .into_iter()
+    .filter(|(_, moved)| *moved != base)
+    .map(|(law, _)| law)
+    .collect();
+    let model = f.model;
+    match laws.as_slice() {
+        [] => format!("the {model} model has no law of load, camber or pressure (one curve for every condition): it cannot follow them"),
+        [one] => format!("the {model} model's law of {one} does not carry its curve there"),
+        [first @ .., last] => format!(
+            "the {model} model's laws of {} and {last} do not carry its curve there",
+            first.join(", ")
+        ),
+    }
 }
 
 /// The warnings on a fitted channel's σ: as a whole
@@ -174,17 +207,29 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
     use crate::identify::Channel;
     let lateral = r.fit.channel == Channel::LateralForce;
     let blocks = [
-        ("lateral", "lateral force", "alpha/fy", !lateral),
+        (
+            "lateral",
+            "lateral force",
+            match r.flat_alpha {
+                // Columns there, set aside: alpha 0 throughout.
+                Some(_) => "alpha is 0 throughout",
+                None => "no alpha/fy columns in the data",
+            },
+            !lateral,
+        ),
         (
             "aligning moment",
             "aligning moment",
-            "mz",
+            match r.flat_alpha {
+                Some(_) => "alpha is 0 throughout",
+                None => "no mz columns in the data",
+            },
             r.aligning.is_none() && !r.tyre.aligning_names().is_empty(),
         ),
         (
             "longitudinal",
             "longitudinal force",
-            "kappa/fx",
+            "no kappa/fx columns in the data",
             lateral && r.longitudinal.is_none() && !r.tyre.longitudinal_names().is_empty(),
         ),
     ];
@@ -207,7 +252,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
                 )
             };
             Note::said(format!(
-                "no {data} data: the file's {quantity} coefficients are not fitted (no {columns} columns in the data): {what}"
+                "no {data} data: the file's {quantity} coefficients are not fitted ({columns}): {what}"
             ))
         })
         .collect()
@@ -300,7 +345,9 @@ impl SwarmReport {
             ("pressures", "pressure", o.pressure, self.pressures_pooled),
             ("cambers", "camber", o.camber, self.cambers_pooled),
         ];
-        pooled
+        // The lateral columns set aside first: what was fitted at all.
+        let flat = self.flat_alpha.iter().cloned();
+        flat.chain(pooled
             .into_iter()
             .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
             .map(|(levels, option, _, n)| {
@@ -308,7 +355,7 @@ impl SwarmReport {
                     "{n} {levels} pooled into one {} fit, which has no {option} terms: select one with --{option}",
                     o.model
                 )
-            })
+            }))
             .collect()
     }
 

@@ -303,9 +303,14 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // A fitted curve beyond any tyre's is written, marked, not refused: a
     // long fit is not lost, and the readers refuse the file with the
     // same numbers.
+    // With them, a template's nominal pressure outside the data's, whose
+    // pressure terms the fit can only extrapolate to.
+    let nompres =
+        super::nompres::nompres_outside(&written, &prepared.rows, o.template.is_some(), &o.hold);
     let pure_curve_warning: Vec<String> = template_warning
         .into_iter()
         .chain(pure_curve_warning(&written))
+        .chain(nompres)
         .collect();
     let curvature = curvature
         + &pure_curve_warning
@@ -363,7 +368,7 @@ fn held_comment(o: &Options) -> String {
 
 /// The blocks the fit wrote without data, one line each: where the pure
 /// Fx stage had no rows (a cornering-only rig file), the longitudinal
-/// force; where the Mx or My stage had none (no `mx`, `my` columns), the
+/// force; where the pure Fy stage was skipped, the lateral force; where the Mx or My stage had none (no `mx`, `my` columns), the
 /// overturning or rolling resistance moment. Each says that its
 /// coefficients are the template's (`template`) or the defaults', and
 /// what the written tyre `t` then gives: without a template none (the
@@ -378,7 +383,12 @@ pub(super) fn unfitted_blocks(
     use crate::jobs::tyre_eval::Output;
     use mf_staged::Stage;
     let tyre = crate::tyre::Tyre::MagicFormula(Box::new(t.clone()));
+    // A lateral block without a fit is said too: data with only combined
+    // slip (`comb_noisy.csv`, 12 pure lateral rows for 12 parameters)
+    // leave it at the defaults' PDY1 = PKY1 = 0, a tyre that does not
+    // corner, which no engineer takes for a fit unless it is said.
     let blocks = [
+        (Stage::PureFy, Output::Fy, "pure lateral", "lateral force"),
         (
             Stage::PureFx,
             Output::Fx,

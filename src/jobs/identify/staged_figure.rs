@@ -336,7 +336,7 @@ fn panel(
     let x_label = key.x.axis().to_string();
     if rows.is_empty() {
         return Panel {
-            title: key.title("no rows"),
+            title: key.title("no points"),
             x_label,
             y_label: channel(st).into(),
             ..Panel::default()
@@ -380,7 +380,9 @@ fn panel(
         title: key.title(&format!(
             "σ {} %, {}",
             fixed(sigma, 2),
-            plural(rows.len(), "row", "rows")
+            // "points", as the terminal counts a stage's rows and the
+            // swarm figures their points: one word for both.
+            plural(rows.len(), "point", "points")
         )),
         x_label,
         y_label: channel(st).into(),

@@ -158,7 +158,7 @@ fn each_panel_reads_its_own_sigma_and_its_stages_slip_with_units() {
         let y2: f64 = at.iter().map(|r| r.fy * r.fy).sum();
         let sigma = fixed(100.0 * (e2 / y2).sqrt(), 2);
         assert!(
-            titles[k].contains(&format!("σ {sigma} %, 82 rows")),
+            titles[k].contains(&format!("σ {sigma} %, 82 points")),
             "{} lacks σ {sigma} %",
             titles[k]
         );
@@ -222,7 +222,10 @@ fn several_pressures_are_the_columns_of_the_grid() {
     assert!(fig.panels[1]
         .title
         .starts_with("pure Fy, γ 0.00°, 220.0 kPa: σ"));
-    assert_eq!(fig.panels[5].title, "pure Fy, γ 2.86°, 260.0 kPa: no rows");
+    assert_eq!(
+        fig.panels[5].title,
+        "pure Fy, γ 2.86°, 260.0 kPa: no points"
+    );
 }
 
 /// Rows of a wheel-moment rig at one load and camber: a pure slip-angle
@@ -302,7 +305,7 @@ fn a_moment_stage_draws_each_pure_sweep_against_its_own_slip_and_every_key_fits_
             .filter(|s| s.style == Style::Points(3))
             .map(|s| s.x.len())
             .sum();
-        assert!(p.title.ends_with(&format!("{drawn} rows")), "{}", p.title);
+        assert!(p.title.ends_with(&format!("{drawn} points")), "{}", p.title);
     }
     // The grid's slip ratios and the pure slip-angle sweep's κ = 0: 12
     // lines; the pure slip-ratio sweep a line of its own.

@@ -2,6 +2,7 @@
 //!
 //! - a force or moment of exactly 0 at every point where a tyre that has
 //!   it gives some ([`ZeroOutput`]): `fx` at a slip ratio other than 0,
+//!   `fy` at a slip angle other than 0,
 //!   `mx` with a lateral force or a camber, `my` at a speed other than 0,
 //!   each at a positive load. The tyre has none of it at all: a `.tir`
 //!   with `PDX1 = 0` or `PKX1 = 0`, or with its `QSX` or `QSY` block all 0,
@@ -74,6 +75,9 @@ pub(crate) fn resolved_my(tyre: &Tyre, fz: &[f64], my: Vec<f64>) -> Vec<f64> {
 pub enum Output {
     /// The longitudinal force.
     Fx,
+    /// The lateral force (a Magic Formula file `identify` wrote from data
+    /// with no pure lateral rows, `PDY1 = PKY1 = 0`).
+    Fy,
     /// The overturning moment (Magic Formula only).
     Mx,
     /// The rolling resistance moment (Magic Formula only).
@@ -88,6 +92,7 @@ impl Output {
     pub fn column(self) -> &'static str {
         match self {
             Output::Fx => "fx",
+            Output::Fy => "fy",
             Output::Mx => "mx",
             Output::My => "my",
             Output::Mz => "mz",
@@ -98,6 +103,7 @@ impl Output {
     pub(crate) fn what(self) -> &'static str {
         match self {
             Output::Fx => "longitudinal force",
+            Output::Fy => "lateral force",
             Output::Mx => "overturning moment",
             Output::My => "rolling resistance moment",
             Output::Mz => "aligning moment",
@@ -108,6 +114,7 @@ impl Output {
     pub(crate) fn block(self) -> &'static str {
         match self {
             Output::Fx => "longitudinal",
+            Output::Fy => "lateral",
             Output::Mx => "overturning moment",
             Output::My => "rolling resistance",
             Output::Mz => "aligning moment",
@@ -119,6 +126,7 @@ impl Output {
     pub(crate) fn anywhere(self) -> &'static str {
         match self {
             Output::Fx => "at any slip ratio",
+            Output::Fy => "at any slip angle",
             Output::Mx => "at any lateral force or camber",
             Output::My => "at any speed",
             Output::Mz => "at any slip angle",
@@ -129,6 +137,7 @@ impl Output {
     fn where_given(self) -> &'static str {
         match self {
             Output::Fx => "kappa ≠ 0",
+            Output::Fy => "alpha ≠ 0",
             Output::Mx => "fy or camber ≠ 0",
             Output::My => "speed ≠ 0",
             Output::Mz => "alpha ≠ 0",
@@ -145,6 +154,7 @@ impl Output {
         fz[i] > 0.0
             && match self {
                 Output::Fx => kappa[i] != 0.0,
+                Output::Fy => p.columns[2][i] != 0.0,
                 Output::Mx => fy != 0.0 || camber[i] != 0.0,
                 Output::My => speed[i] != 0.0,
                 Output::Mz => p.columns[2][i] != 0.0,
@@ -155,6 +165,7 @@ impl Output {
     fn of(self, f: &PointForces) -> Option<f64> {
         match self {
             Output::Fx => Some(f.fx),
+            Output::Fy => Some(f.fy),
             Output::Mx => f.mx,
             Output::My => f.my,
             Output::Mz => Some(f.mz),
@@ -167,6 +178,7 @@ impl Output {
     fn coefficients(self) -> &'static [&'static str] {
         match self {
             Output::Fx => &["PDX1", "PKX1"],
+            Output::Fy => &["PDY1", "PKY1"],
             Output::Mx => &[
                 "QSX1", "QSX2", "QSX3", "QSX4", "QSX5", "QSX6", "QSX7", "QSX8", "QSX9", "QSX10",
                 "QSX11", "QSX12", "QSX13", "QSX14",
@@ -262,7 +274,7 @@ pub(crate) fn zero_outputs(
     unread: &[Unread],
 ) -> Vec<ZeroOutput> {
     let kappa_unread = super::unread::is_unread(unread, "kappa");
-    [Output::Fx, Output::Mx, Output::My, Output::Mz]
+    [Output::Fx, Output::Fy, Output::Mx, Output::My, Output::Mz]
         .into_iter()
         .filter(|o| !(*o == Output::Fx && kappa_unread))
         .filter_map(|o| zero_output(o, tyre, p, f).filter(|_| gives_none(tyre, o).is_some()))

@@ -51,6 +51,7 @@ pub(crate) use friction::peak_of;
 mod light_load;
 mod model_loads;
 mod not_carried;
+mod opposed;
 mod order;
 mod physical;
 mod pressure;
@@ -157,6 +158,8 @@ pub struct TyreEvalReport {
     pub sign_changes: Vec<SignChange>,
     /// Points whose slip stiffness at their own conditions is negative.
     pub against_slip: Vec<AgainstSlip>,
+    /// Points whose `fy` or `fx` opposes its slip inside the ranges.
+    pub opposed: Vec<opposed::Opposed>,
     /// A `.tir`'s pure-curve peak |F|/Fz above any tyre's on a road or
     /// rig (`tyre::mf::WARN_FRICTION`), said as a warning.
     #[serde(skip)]
@@ -403,6 +406,7 @@ pub fn run(
         fitted::beyond(r, [fz, kappa, alpha, camber], &p, &file.lines)
     });
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
+    let opposed = opposed::opposed(&tyre, fitted_ranges.as_ref(), &given, &f, &file.lines);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
     let slip_past_lock = if unread::is_unread(&unread, "kappa") {
         None
@@ -481,6 +485,7 @@ pub fn run(
         unread,
         sign_changes,
         against_slip,
+        opposed,
         fitted_ranges,
         beyond_fitted,
         columns,
@@ -497,6 +502,7 @@ impl TyreEvalReport {
         out.extend(unread::not_written_line(&self.not_written));
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
+        out.extend(self.opposed.iter().map(|o| o.line(self.count)));
         out.extend(self.zero_outputs.iter().map(|z| z.line(self.count)));
         out.extend(self.beyond_my_speed.iter().map(|b| b.line(self.count)));
         out.extend(self.slip_past_lock.iter().map(|k| k.line(self.count)));

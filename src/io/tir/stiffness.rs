@@ -46,7 +46,11 @@ impl TirDocument {
         let x = (fz / fz0p) / c.PKY2;
         let kya = c.PKY1 * fz0p * (c.PKY4 * x.atan()).sin() * c.LKY;
         let per_load = (kya / fz).abs();
+        // No stiffness at all is a file with no lateral force (`PKY1 = 0`,
+        // as `identify` writes a block no lateral data shaped): said by
+        // the evaluations' checks (fy = 0 at a slip), not a slipped digit.
         if !per_load.is_finite()
+            || per_load == 0.0
             || (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&per_load)
         {
             return Ok(());

@@ -11,6 +11,7 @@ use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
 
+mod filter_speed;
 mod steps;
 
 /// The units of the metric reports.
@@ -117,6 +118,10 @@ pub fn run_with_degrees(
         settings.variance_window.min(piece),
     ));
     m.warnings.extend(peak_moved_by_noise(&m.metrics));
+    m.warnings.extend(filter_speed::filter_measures_itself(
+        &m.metrics,
+        crate::measured::clean::median_interval(&clock),
+    ));
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),
         units: UNITS,

@@ -34,7 +34,8 @@
 //!   `≤ X`.
 //!
 //! - **a `.tir` whose pure curves peak beyond any tyre's** (|F|/Fz above
-//!   2.5), as `tyre-eval` says it.
+//!   2.5), as `tyre-eval` says it, and one whose `FNOMIN` is far from the
+//!   car's wheel loads ([`super::nominal_load`]).
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
@@ -78,6 +79,8 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
     said.warnings.extend(tir_friction(sc));
+    said.warnings
+        .extend(super::nominal_load::far_from_nominal(sc));
     said.warnings.extend(variance_window(sc));
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {

@@ -5,6 +5,7 @@
 //! the scenario's words do not say ([`checks`]).
 
 mod checks;
+mod nominal_load;
 mod transient;
 
 use super::metrics::{metric_lines, UNITS};

@@ -1,0 +1,76 @@
+//! A stated low-pass (`--filter-hz`) slow enough to measure itself: the
+//! zero-phase Butterworth the metrics read the run through has a step
+//! response of its own, and where its rise time is a fair share of the
+//! car's response time the metrics (response and peak times, the total
+//! variances, E_r) describe the filter as much as the car. The book refuses
+//! a cutoff at or below 1 Hz outright; above it the run decides, so it is
+//! said with the numbers. Units: s, Hz.
+
+use crate::metrics::{zero_phase_low_pass, StepMetrics};
+
+/// Share of the yaw rate's response time the filter's own 10–90 % rise
+/// time may reach unsaid. Measured on the bundled PAC89 sedan step
+/// (`scenarios/step_gbt6323_pac89.toml`, noise-free, E_r 0.0236 s at
+/// 20 Hz): at 10 Hz the rise is 27 % of the response and E_r moves 1.3 %;
+/// at 5 Hz 54 % and 11 %; at 3 Hz 83 % and 27 %; at 2 Hz 108 % and 43 %.
+/// From half, the filter moves the metrics by a tenth or more.
+pub(super) const FILTER_RISE_SHARE: f64 = 0.5;
+
+/// The 10–90 % rise time, s, of the zero-phase low-pass at `cutoff_hz`
+/// applied to a unit step sampled every `dt` s.
+fn rise_time(dt: f64, cutoff_hz: f64) -> f64 {
+    // Long enough either side for the filter to settle (its impulse
+    // response decays within a few periods of the cutoff).
+    let half = (4.0 / (cutoff_hz * dt)).ceil() as usize + 2;
+    let step: Vec<f64> = (0..2 * half)
+        .map(|i| f64::from(u8::from(i >= half)))
+        .collect();
+    let y = zero_phase_low_pass(&step, dt, cutoff_hz);
+    let crossing = |level: f64| {
+        let i = y.iter().position(|&v| v >= level)?;
+        let (a, b) = (y[i.checked_sub(1)?], y[i]);
+        Some((i as f64 - 1.0 + (level - a) / (b - a)) * dt)
+    };
+    match (crossing(0.1), crossing(0.9)) {
+        (Some(lo), Some(hi)) => hi - lo,
+        _ => 0.0,
+    }
+}
+
+/// The warning where the filter `m` was read through rises in more than
+/// [`FILTER_RISE_SHARE`] of the yaw rate's response time, with the least
+/// cutoff that keeps it within (the rise time scales as 1/cutoff).
+pub(super) fn filter_measures_itself(m: &StepMetrics, dt: f64) -> Option<String> {
+    let f = m.filter_hz?;
+    let response = m.yaw_rate_response_time;
+    let rise = rise_time(dt, f);
+    let share = rise / response;
+    (response > 0.0 && share > FILTER_RISE_SHARE).then(|| {
+        let least = f * share / FILTER_RISE_SHARE;
+        format!(
+            "the low-pass at {} Hz rises (10–90 %) in {} s, {} % of the yaw rate's response time of {} s: the response and peak times, the total variances and E_r measure the filter as much as the car; a cutoff of {} Hz or more keeps its rise within {} % (or filter less and accept more noise)",
+            crate::error::Num(f),
+            crate::format::significant(rise, 2),
+            crate::format::fixed(100.0 * share, 0),
+            crate::format::significant(response, 3),
+            crate::format::significant(least, 2),
+            crate::format::fixed(100.0 * FILTER_RISE_SHARE, 0),
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_rise_time_falls_as_the_cutoff_rises_and_matches_a_fourth_order_butterworth() {
+        // Forward and backward through a second-order Butterworth: the
+        // squared magnitude 1/(1 + (f/fc)⁴), zero phase. Its rise scales
+        // as 1/fc (the sampling fine against both), about 0.45/fc: between
+        // a first-order lag's 0.35/fc and a moving mean's 0.8 periods.
+        let (r2, r4) = (rise_time(1e-3, 2.0), rise_time(1e-3, 4.0));
+        assert!((r2 / r4 - 2.0).abs() < 0.02, "{r2} {r4}");
+        assert!((0.40..0.50).contains(&(r2 * 2.0)), "{r2}");
+    }
+}

@@ -1,0 +1,58 @@
+//! A `.tir` on a car whose wheels carry a load far from the file's own
+//! nominal one (`FNOMIN`): a Magic Formula's coefficients describe the
+//! tyre about that load (its stiffness, peak and shape are written as
+//! changes from it, `dfz = (Fz − FNOMIN)/FNOMIN`), so a truck tyre's file
+//! on a sedan (30 kN nominal, 3–4 kN a wheel) runs inside the file's load
+//! range yet far from any load it was measured at, and the run is not that
+//! car's. Said by `simulate` with the static wheel loads. Units: N.
+
+use crate::io::Scenario;
+use crate::tyre::Tyre;
+
+/// The band of a static wheel load over the file's `FNOMIN` a tyre is
+/// chosen for: a road car's wheel carries 0.6–1.2 of its tyre's nominal
+/// load (FNOMIN is chosen near the rated service load, e.g. 4 kN for a
+/// sedan tyre at 3–4.5 kN a wheel), a racing car's 0.4–1.5 with its fuel
+/// and downforce. Beyond a factor of three either way the file belongs to
+/// another class of vehicle (a 30 kN truck tyre at 3 kN: 0.1).
+pub(super) const NOMINAL_SHARE: (f64, f64) = (1.0 / 3.0, 3.0);
+
+/// One warning per axle whose `.tir` has an `FNOMIN` the car's static wheel
+/// loads lie beyond [`NOMINAL_SHARE`] of (one line for both axles where
+/// they share the file and the share).
+pub(super) fn far_from_nominal(sc: &Scenario) -> Vec<String> {
+    let (front, rear) = sc.model.vehicle.static_axle_loads();
+    let axles = [
+        ("front", &sc.model.front, front),
+        ("rear", &sc.model.rear, rear),
+    ];
+    let said: Vec<(&str, String)> = axles
+        .into_iter()
+        .filter_map(|(axle, tyre, load)| {
+            let Tyre::MagicFormula(t) = tyre else {
+                return None;
+            };
+            let nominal = t.coefficients.FNOMIN;
+            let wheel = 0.5 * load;
+            let share = wheel / nominal;
+            (!(NOMINAL_SHARE.0..=NOMINAL_SHARE.1).contains(&share)).then(|| {
+                (
+                    axle,
+                    format!(
+                        "its wheels carry {} N each standing still, {} times the file's FNOMIN = {} N: a Magic Formula describes its tyre about that load, so this is a tyre for another class of vehicle (a car's wheel carries about 0.6–1.2 of its tyre's FNOMIN), and the run is not this car on its own tyres",
+                        crate::format::significant(wheel, 4),
+                        crate::format::fixed(share, 2),
+                        crate::format::exact(nominal),
+                    ),
+                )
+            })
+        })
+        .collect();
+    match said.as_slice() {
+        [(_, f), (_, r)] if f == r => vec![format!("the front and rear tyres' .tir: {f}")],
+        _ => said
+            .into_iter()
+            .map(|(axle, s)| format!("the {axle} tyres' .tir: {s}"))
+            .collect(),
+    }
+}

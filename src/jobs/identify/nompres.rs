@@ -27,6 +27,11 @@ pub(super) fn nompres_outside(
     }
     let mut p: Vec<f64> = rows.iter().filter_map(|r| r.pressure).collect();
     p.retain(|v| v.is_finite());
+    if p.is_empty() {
+        // Rows without pressures: nothing to set NOMPRES to (and no
+        // median to index).
+        return None;
+    }
     p.sort_by(f64::total_cmp);
     // The file's PRESMIN–PRESMAX (every sample of the levels fitted),
     // else the rows' own span.

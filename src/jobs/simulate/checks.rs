@@ -79,8 +79,8 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
     said.warnings.extend(tir_friction(sc));
-    said.warnings
-        .extend(super::nominal_load::far_from_nominal(sc));
+    let [front, rear] = super::nominal_load::far_from_nominal(sc);
+    said.warnings.extend(per_axle_tir(front, rear));
     said.warnings.extend(variance_window(sc));
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
@@ -109,6 +109,12 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
 fn tir_friction(sc: &Scenario) -> Vec<String> {
     let [front, rear] = [&sc.model.front, &sc.model.rear]
         .map(|t| crate::jobs::tyre_eval::peak_of(t).map(|p| p.to_string()));
+    per_axle_tir(front, rear)
+}
+
+/// What is said of each axle's `.tir` (`None`: nothing), one line for both
+/// where they say the same.
+fn per_axle_tir(front: Option<String>, rear: Option<String>) -> Vec<String> {
     match (front, rear) {
         (Some(f), Some(r)) if f == r => vec![format!("the front and rear tyres' .tir: {f}")],
         (f, r) => [("front", f), ("rear", r)]

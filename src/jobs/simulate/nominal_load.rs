@@ -17,42 +17,25 @@ use crate::tyre::Tyre;
 /// another class of vehicle (a 30 kN truck tyre at 3 kN: 0.1).
 pub(super) const NOMINAL_SHARE: (f64, f64) = (1.0 / 3.0, 3.0);
 
-/// One warning per axle whose `.tir` has an `FNOMIN` the car's static wheel
-/// loads lie beyond [`NOMINAL_SHARE`] of (one line for both axles where
-/// they share the file and the share).
-pub(super) fn far_from_nominal(sc: &Scenario) -> Vec<String> {
+/// What to say of each axle (front, rear) whose `.tir` has an `FNOMIN`
+/// the car's static wheel loads lie beyond [`NOMINAL_SHARE`] of (`checks`
+/// words it per axle, one line for both where they say the same).
+pub(super) fn far_from_nominal(sc: &Scenario) -> [Option<String>; 2] {
     let (front, rear) = sc.model.vehicle.static_axle_loads();
-    let axles = [
-        ("front", &sc.model.front, front),
-        ("rear", &sc.model.rear, rear),
-    ];
-    let said: Vec<(&str, String)> = axles
-        .into_iter()
-        .filter_map(|(axle, tyre, load)| {
-            let Tyre::MagicFormula(t) = tyre else {
-                return None;
-            };
-            let nominal = t.coefficients.FNOMIN;
-            let wheel = 0.5 * load;
-            let share = wheel / nominal;
-            (!(NOMINAL_SHARE.0..=NOMINAL_SHARE.1).contains(&share)).then(|| {
-                (
-                    axle,
-                    format!(
-                        "its wheels carry {} N each standing still, {} times the file's FNOMIN = {} N: a Magic Formula describes its tyre about that load, so this is a tyre for another class of vehicle (a car's wheel carries about 0.6–1.2 of its tyre's FNOMIN), and the run is not this car on its own tyres",
-                        crate::format::significant(wheel, 4),
-                        crate::format::fixed(share, 2),
-                        crate::format::exact(nominal),
-                    ),
-                )
-            })
+    [(&sc.model.front, front), (&sc.model.rear, rear)].map(|(tyre, load)| {
+        let Tyre::MagicFormula(t) = tyre else {
+            return None;
+        };
+        let nominal = t.coefficients.FNOMIN;
+        let wheel = 0.5 * load;
+        let share = wheel / nominal;
+        (!(NOMINAL_SHARE.0..=NOMINAL_SHARE.1).contains(&share)).then(|| {
+            format!(
+                "its wheels carry {} N each standing still, {} times the file's FNOMIN = {} N: a Magic Formula describes its tyre about that load, so this is a tyre for another class of vehicle (a car's wheel carries about 0.6–1.2 of its tyre's FNOMIN), and the run is not this car on its own tyres",
+                crate::format::significant(wheel, 4),
+                crate::format::fixed(share, 2),
+                crate::format::exact(nominal),
+            )
         })
-        .collect();
-    match said.as_slice() {
-        [(_, f), (_, r)] if f == r => vec![format!("the front and rear tyres' .tir: {f}")],
-        _ => said
-            .into_iter()
-            .map(|(axle, s)| format!("the {axle} tyres' .tir: {s}"))
-            .collect(),
-    }
+    })
 }

@@ -117,6 +117,7 @@ fn problem_key_value(p: &InputProblem) -> (Option<&str>, Option<f64>) {
         InputProblem::NonFiniteOutput { output, .. } => (Some(output), None),
         InputProblem::LoadNotCarried { fz, .. } => (Some("fz"), Some(*fz)),
         InputProblem::DeadChannel { channel, value, .. } => (Some(channel), Some(*value)),
+        InputProblem::DeadSteer { value, .. } => (Some("steer"), Some(*value)),
         InputProblem::UnitSlip(u) => unit_slip_key_value(u),
         _ => (None, None),
     }

@@ -68,7 +68,7 @@ use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
 use crate::diagnose::verdict::search::{confounded_with, in_set, lookalikes_alone, search, Search};
-use crate::error::Error;
+use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
 use crate::measured::road::{RoadGeometry, SensorOffsets};
@@ -359,6 +359,21 @@ fn run(
 ) -> Result<Diagnosis, Error> {
     let timing = Some(recorder);
     let set = &c.settings;
+    let (effects, visibility) = visible_effects(c);
+    if effects.is_empty() && !c.effects.is_empty() {
+        let unseen = visibility
+            .iter()
+            .filter_map(|n| match n {
+                Note::NotACandidate { effect, lacks } => Some((effect.name().to_string(), *lacks)),
+                _ => None,
+            })
+            .collect();
+        return Err(DiagnosisError::NoCandidateSeen {
+            campaign: c.source.clone(),
+            unseen,
+        }
+        .into());
+    }
     let (runs, folds, pso) = prepare(c);
     let Trust {
         noise,
@@ -386,7 +401,7 @@ fn run(
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
     let significant = rules::significant(j0, jn);
-    let (effects, mut notes) = visible_effects(c);
+    let mut notes = visibility;
     notes.extend(grid_note(&ctx, set.step));
     notes.extend(noise_unmeasured(c, &noise).map(|channel| Note::UncertaintyUnused { channel }));
     notes.extend(noise.iter().filter_map(below_scatter));

@@ -5,6 +5,7 @@
 
 use super::{Error, Variable};
 use crate::format::plural;
+use serde::Serialize;
 use std::path::PathBuf;
 use thiserror::Error as ThisError;
 
@@ -154,6 +155,31 @@ impl FitError {
     }
 }
 
+/// What runs lack for a candidate effect to show in them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Unseen {
+    /// A longitudinal acceleration above `threshold` (m/s²).
+    LongitudinalAcceleration {
+        /// m/s².
+        threshold: f64,
+    },
+    /// A bank channel.
+    BankChannel,
+}
+
+impl std::fmt::Display for Unseen {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unseen::LongitudinalAcceleration { threshold } => write!(
+                f,
+                "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
+            ),
+            Unseen::BankChannel => f.write_str("no run has a bank channel"),
+        }
+    }
+}
+
 /// Why the diagnosis of a campaign could not be made.
 #[derive(Debug, ThisError)]
 #[non_exhaustive]
@@ -171,6 +197,15 @@ pub enum DiagnosisError {
         rig: PathBuf,
         /// Why the fit failed.
         source: Box<Error>,
+    },
+    /// A campaign whose every candidate effect needs what no run shows: a
+    /// verdict would say "outside the library" with nothing tried.
+    #[error("{}: none of the candidate effects its `[diagnose] effects` names can show in its runs: {}; a diagnosis would try nothing and call the gap outside the library: name a candidate the runs can show (or leave `[diagnose] effects` out for the whole library), or add runs that show these", campaign.display(), unseen.iter().map(|(e, u)| format!("{e}: {u}")).collect::<Vec<_>>().join("; "))]
+    NoCandidateSeen {
+        /// The campaign.
+        campaign: PathBuf,
+        /// Each candidate named, by name, and what the runs lack for it.
+        unseen: Vec<(String, Unseen)>,
     },
     /// A design asked of a diagnosis that names no confounded set.
     #[error("the diagnosis names no confounded effects: ask for the candidates to separate (`--effects a,b`)")]

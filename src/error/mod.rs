@@ -29,7 +29,7 @@ mod units;
 
 pub use duplicate::DuplicateAt;
 pub use fit::{
-    DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip,
+    DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};

@@ -411,6 +411,17 @@ pub enum InputProblem {
         /// The column it likely means.
         meant: Box<str>,
     },
+    /// A steer that holds one value over a whole run while the car turns
+    /// (both ways, or at all on a zero steer): a dead or unplugged steer
+    /// sensor, whose run a replay would drive straight.
+    #[error("channel `steer` holds one value ({}) over the whole run while the yaw rate turns the car (its neutral steer r·l/u reaches {} rad at speed): a dead or unplugged steer sensor; a replay of it drives {}: fix the log or leave the run out", Num(*value), Num(*neutral), if *value == 0.0 { "straight" } else { "one constant steer" })]
+    DeadSteer {
+        /// The value the steer holds, rad.
+        value: f64,
+        /// The neutral steer `r·l/u` of largest size at speed (5th or 95th
+        /// percentile), rad.
+        neutral: f64,
+    },
     /// A response channel that holds one value over a whole run: a dead
     /// or unplugged sensor, to which no model can be fitted (its noise
     /// floor is zero, every gap infinitely significant).

@@ -56,6 +56,7 @@ impl InputProblem {
             InputProblem::NoRuns { .. } => "NoRuns",
             InputProblem::NoVehicleFile => "NoVehicleFile",
             InputProblem::DeadChannel { .. } => "DeadChannel",
+            InputProblem::DeadSteer { .. } => "DeadSteer",
             InputProblem::Duplicate { .. } => "Duplicate",
             InputProblem::Misspelled { .. } => "Misspelled",
             InputProblem::YawAgainstSteer { .. } => "YawAgainstSteer",

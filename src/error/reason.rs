@@ -408,6 +408,18 @@ pub enum Limit {
     /// A steering compliance, rad/N.
     #[error("no steering system loses more than 0.1 rad (5.7°) of road-wheel steer per kN of front axle force (1e-4 rad/N); the scenario key is in rad/N (0.003 rad/kN, the diagnosis's unit, is 3e-6 rad/N)")]
     SteeringCompliance,
+    /// An aerodynamic down-force coefficient per axle, N per (m/s)².
+    #[error("a Formula 1 car's down-force is about 2.7 N per (m/s)² in all (½·ρ·C_L·A with C_L·A ≈ 4.5 m²), a road car's lift a few tenths below 0; the key is k in N per (m/s)² of one axle (a down-force F in N at a speed u is k = F/u²)")]
+    AeroLoad,
+    /// A roll gradient, rad per m/s².
+    #[error("a car rolls 2–8°/g (0.0036–0.014 rad per m/s²), a soft SUV about 10°/g; the key is in rad per m/s² (4°/g is 0.0071), and 0.05 (28°/g) is beyond any car's")]
+    RollGradient,
+    /// A share of the rigid-body longitudinal load transfer.
+    #[error("1 is the rigid body's transfer m·ax·h/l (anti-dive and anti-squat geometry lower it); 3 times it would lift the rear axle off under 0.3 g of braking on a car with its centre of gravity at mid-wheelbase and h/l = 0.2")]
+    LongitudinalLoadTransfer,
+    /// A share of the longitudinal force the tyres carry.
+    #[error("1 is all of m·ax carried through the tyres' friction circles (drag and rolling resistance add a little when driving); 3 times it is no car's")]
+    LongitudinalForceShare,
     /// A slip-angle bin, degrees.
     #[error("a slip-angle bin wider than 2° averages the curve's rise to its peak away (a rig sweeps to about 12°, the peak lies at 3–8°); 0 keeps every sample")]
     SlipAngleBin,

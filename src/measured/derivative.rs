@@ -84,6 +84,8 @@ fn slope_at_sample(t: &[f64], speed: &[f64], k: usize) -> f64 {
 /// [`speed_derivative`] linearly interpolated at time `x` (clamped to the
 /// run), computed from the two samples around `x` alone: what a replay
 /// evaluated at arbitrary times (an adaptive integrator's stages) reads.
+/// Between samples at least [`SPARSE_SEGMENT`] apart it is the straight
+/// line's slope between them.
 pub(crate) fn speed_derivative_at(t: &[f64], speed: &[f64], x: f64) -> f64 {
     assert_eq!(t.len(), speed.len(), "one speed per time");
     let n = t.len();
@@ -98,8 +100,21 @@ pub(crate) fn speed_derivative_at(t: &[f64], speed: &[f64], x: f64) -> f64 {
     if k >= n {
         return at(n - 1);
     }
+    let span = t[k] - t[k - 1];
+    if span >= SPARSE_SEGMENT {
+        // Samples this far apart are a drive's breakpoints (a schedule, a
+        // designed run), between which the speed is linear by definition:
+        // its slope is exact there, where a window of one or two samples
+        // would give zero or smear a braking into the straights beside it.
+        return (speed[k] - speed[k - 1]) / span;
+    }
     crate::manoeuvre::interpolate(&t[k - 1..=k], &[at(k - 1), at(k)], x)
 }
+
+/// Sample interval from which [`speed_derivative_at`] takes the segment's
+/// own slope, s: half the window, below which a window holds three samples
+/// at least (a log at 4 Hz or faster is smoothed).
+const SPARSE_SEGMENT: f64 = 0.5 * SPEED_DERIVATIVE_WINDOW;
 
 /// Slope at `t0` of the least-squares quadratic through (`t`, `u`), in
 /// coordinates centred on (`t0`, `u0`) and scaled by the window's span for
@@ -220,6 +235,26 @@ mod tests {
         for k in 25..t.len() - 25 {
             assert!((a[k] - gain * (w * t[k]).cos()).abs() < 1e-9, "t {}", t[k]);
         }
+    }
+
+    #[test]
+    fn a_schedules_breakpoints_give_each_segments_own_slope() {
+        // 25 m/s, braking to 15 m/s over 1.2–4 s, then held: the speed is
+        // linear between breakpoints, so du/dt is each segment's slope.
+        let t = [0.0, 1.0, 1.2, 4.0, 6.0];
+        let u = [25.0, 25.0, 25.0, 15.0, 15.0];
+        let braking = -10.0 / 2.8;
+        for (x, want) in [(0.5, 0.0), (1.5, braking), (3.9, braking), (5.0, 0.0)] {
+            let a = speed_derivative_at(&t, &u, x);
+            assert!((a - want).abs() < 1e-12, "at {x} s: {a} against {want}");
+        }
+        // A dense log keeps the smoothed derivative: a constant
+        // deceleration is still exact, a sample's noise is not followed.
+        let t: Vec<f64> = (0..300).map(|k| k as f64 * 0.01).collect();
+        let mut u: Vec<f64> = t.iter().map(|&x| 20.0 - 3.0 * x).collect();
+        assert!((speed_derivative_at(&t, &u, 1.505) + 3.0).abs() < 1e-9);
+        u[150] += 0.03;
+        assert!((speed_derivative_at(&t, &u, 1.505) + 3.0).abs() < 0.1);
     }
 
     #[test]

@@ -81,7 +81,8 @@ fn held(t: &[f64], steer: &[f64]) -> Vec<bool> {
 /// understeering car, somewhat above 1 for an oversteering one). None for
 /// a run that neither steers nor turns (95th percentiles of |δ| and of the
 /// neutral steer `|r|·l/u` both below 0.01 rad: a straight run whose steer
-/// sensor sits a few milliradians off shows no gain) or with fewer than 50
+/// sensor sits a few milliradians off shows no gain; one turning by
+/// [`GENTLE`] is judged whatever its steer) or with fewer than 50
 /// such samples. A run that turns on a steer below 0.01 rad (a radian
 /// steer divided by 57 once more) is judged on its steered samples alike,
 /// so that its ratio, far above 1, is seen. `metrics` and `diagnose` judge
@@ -98,10 +99,17 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         .map(|i| (run.yaw_rate[i] * wheelbase / run.speed[i]).abs())
         .collect();
     neutral.sort_by(f64::total_cmp);
-    let turns = quantile(&neutral, 0.95)? >= 0.01;
+    let neutral_p95 = quantile(&neutral, 0.95)?;
+    let turns = neutral_p95 >= 0.01;
+    // A gentle run (an ISO 7401 step at 100 km/h and 2 m/s² steers
+    // 0.008 rad) that turns by 5 mrad of neutral steer is judged too,
+    // whatever its steer (divided by 57, it is 0.00014 rad): a straight run
+    // with a steer sensor a few milliradians off does not turn.
+    let gentle = p95 > 0.0 && neutral_p95 >= GENTLE;
     let steered = match (p95 >= 0.01, turns) {
         (true, _) => (0.3 * p95).max(0.005),
         (false, true) if p95 > 0.0 => 0.3 * p95,
+        _ if gentle => 0.3 * p95,
         _ => return None,
     };
     let held = held(&run.t, &run.steer);
@@ -129,6 +137,35 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         with_steer,
         against,
         one_value: crate::measured::one_value(&yaw),
+    })
+}
+
+/// The neutral steer `r·l/u` (95th percentile at speed, rad) from which a
+/// run below 0.01 rad is still judged by [`yaw_per_neutral`].
+const GENTLE: f64 = 0.005;
+
+/// A steer that holds one value over the whole run while the car turns,
+/// judged by the neutral steer `r·l/u` at speed (at least `min_speed` and
+/// 5 m/s) with `wheelbase`: beyond 0.01 rad either way on a zero steer, or
+/// both ways (5th and 95th percentiles) on any other value — no car turns
+/// both ways on one steer, nor on none on a flat road. A dead steer sensor,
+/// refused by `diagnose` and a replay as a dead yaw rate is.
+pub fn dead_steer(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<InputProblem> {
+    let value = crate::measured::one_value(&run.steer)?;
+    let mut neutral: Vec<f64> = (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
+        .map(|i| run.yaw_rate[i] * wheelbase / run.speed[i])
+        .filter(|q| q.is_finite())
+        .collect();
+    neutral.sort_by(f64::total_cmp);
+    let (lo, hi) = (quantile(&neutral, 0.05)?, quantile(&neutral, 0.95)?);
+    let turns = match value == 0.0 {
+        true => lo.abs().max(hi.abs()) >= 0.01,
+        false => lo <= -0.01 && hi >= 0.01,
+    };
+    turns.then_some(InputProblem::DeadSteer {
+        value,
+        neutral: if hi.abs() >= lo.abs() { hi } else { lo },
     })
 }
 

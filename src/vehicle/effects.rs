@@ -73,6 +73,15 @@ pub const MIN_RELAXATION_LENGTH: f64 = 1e-3;
 /// passenger car's 4°/g, rad per m/s².
 pub const PASSENGER_CAR_ROLL_GRADIENT: f64 = 4f64.to_radians() / crate::constants::G;
 
+/// The largest roll gradient a scenario may give, rad per m/s² (28°/g,
+/// beyond any car's; [`Limit::RollGradient`]).
+pub const MAX_ROLL_GRADIENT: f64 = 0.05;
+
+/// The largest down-force coefficient of one axle a scenario may give, N
+/// per (m/s)²: twice the diagnosis's search bound (6), four times a
+/// Formula 1 car's whole down-force ([`Limit::AeroLoad`]).
+pub const MAX_AERO_LOAD: f64 = 12.0;
+
 /// Roll degree of freedom used by roll steer and roll camber: a second-order
 /// response of the body roll φ to lateral acceleration,
 /// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
@@ -97,7 +106,13 @@ pub struct RollModel<T = f64> {
 impl RollModel {
     /// Checks the values for physical sense; the error names the key.
     pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::non_negative("gradient", self.gradient)?;
+        ParamError::in_range(
+            "gradient",
+            self.gradient,
+            -f64::MIN_POSITIVE,
+            MAX_ROLL_GRADIENT,
+            Limit::RollGradient,
+        )?;
         ParamError::positive("frequency", self.frequency)?;
         ParamError::positive("damping", self.damping)
     }
@@ -314,8 +329,11 @@ impl Effects {
             sensors,
             steer_path,
         } = self;
-        ParamError::non_negative("aero_load[0]", aero_load[0])?;
-        ParamError::non_negative("aero_load[1]", aero_load[1])?;
+        for (i, k) in aero_load.iter().enumerate() {
+            let key = format!("aero_load[{i}]");
+            ParamError::non_negative(&key, *k)?;
+            ParamError::in_range(&key, *k, -f64::MIN_POSITIVE, MAX_AERO_LOAD, Limit::AeroLoad)?;
+        }
         ParamError::in_range("road_bank", road_bank.abs(), -1.0, 0.5, Limit::RoadBank)?;
         ParamError::finite("bank_profile_scale", *bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", *relaxation_length)?;
@@ -339,7 +357,13 @@ impl Effects {
         for (i, v) in cornering_stiffness_scale.iter().enumerate() {
             ParamError::positive(&format!("cornering_stiffness_scale[{i}]"), *v)?;
         }
-        ParamError::finite("longitudinal_load_transfer", *longitudinal_load_transfer)?;
+        ParamError::in_range(
+            "longitudinal_load_transfer",
+            *longitudinal_load_transfer,
+            -f64::MIN_POSITIVE,
+            3.0,
+            Limit::LongitudinalLoadTransfer,
+        )?;
         if let Some(c) = combined_slip {
             for (key, v) in [
                 ("drive_front_share", c.drive_front_share),
@@ -351,8 +375,14 @@ impl Effects {
                     );
                 }
             }
-            ParamError::non_negative("force_share", c.force_share)
-                .map_err(|e| e.within("combined_slip"))?;
+            ParamError::in_range(
+                "force_share",
+                c.force_share,
+                -f64::MIN_POSITIVE,
+                3.0,
+                Limit::LongitudinalForceShare,
+            )
+            .map_err(|e| e.within("combined_slip"))?;
         }
         roll.validate().map_err(|e| e.within("roll"))?;
         // Not read from files: set by the diagnosis within its bounds.

@@ -387,18 +387,7 @@ pub enum Note {
     },
 }
 
-/// What runs lack for an effect to show in them.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Unseen {
-    /// A longitudinal acceleration above `threshold` (m/s²).
-    LongitudinalAcceleration {
-        /// m/s².
-        threshold: f64,
-    },
-    /// A bank channel.
-    BankChannel,
-}
+pub use crate::error::Unseen;
 
 /// A finding on where the base model's gap lies.
 #[derive(Debug, Clone, PartialEq, Serialize)]

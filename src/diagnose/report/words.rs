@@ -27,7 +27,7 @@ pub use warnings::verdict_warning;
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::report::outcome::{
     ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
-    Refused, Unseen, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
+    Refused, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
 use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
 use crate::format::signed;
@@ -346,13 +346,7 @@ pub fn note(n: &Note) -> String {
     match n {
         Note::Campaign { text } => text.clone(),
         Note::NotACandidate { effect, lacks } => {
-            let why = match lacks {
-                Unseen::LongitudinalAcceleration { threshold } => format!(
-                    "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
-                ),
-                Unseen::BankChannel => "no run has a bank channel".into(),
-            };
-            format!("{}: not a candidate: {why}", effect.name())
+            format!("{}: not a candidate: {lacks}", effect.name())
         }
         Note::BankOnlyInYawRate { runs, of } => format!(
             "bank_profile: {runs} of {of} runs have a bank channel but neither sideslip nor ay: there the bank shows only in the yaw rate, which the axles identified from the runs can take up; a sideslip or ay channel separates them"

@@ -15,7 +15,7 @@ use crate::measured::clean::{
     MIN_RUN_SECONDS,
 };
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
+use crate::metrics::measured::{dead_steer, steer_problem, yaw_per_neutral, Wheelbase};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -187,6 +187,9 @@ pub(super) fn read_runs(
         }
         check_length(&run)?;
         check_live_channels(&run)?;
+        if let Some(problem) = dead_steer(&run, wheelbase, min_speed) {
+            return Err(file_error(&run.path, problem));
+        }
         let declared = degrees.contains(&AngleColumn::Steer);
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
         notes.extend(crate::io::unchecked_speed_unit(&run));

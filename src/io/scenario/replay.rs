@@ -10,7 +10,7 @@ use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, DeclaredBy, MeasuredRun};
 use crate::manoeuvre::Replay;
 use crate::measured::clean::{clean_run, clean_single_with, CleanSettings, CleaningReport};
-use crate::metrics::measured::{steer_problem, yaw_per_neutral, Wheelbase};
+use crate::metrics::measured::{dead_steer, steer_problem, yaw_per_neutral, Wheelbase};
 use crate::metrics::MIN_STEP;
 use crate::vehicle::State;
 use serde::Deserialize;
@@ -62,6 +62,9 @@ pub(super) fn resolve(
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
     let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)?;
+    if let Some(p) = dead_steer(&read, wheelbase, r.min_speed) {
+        return Err(InputError::problem(run_path, p));
+    }
     if let Some(y) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
         if let Some(p) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
             return Err(InputError::problem(run_path, p));

@@ -3,6 +3,7 @@
 //! are located by looking the key path up in the document's spans.
 
 mod home;
+pub(crate) mod vehicle_keys;
 
 use crate::error::{InputError, InputProblem, Location, ParamError, PathFound};
 use home::Reparse;
@@ -32,9 +33,8 @@ pub(crate) fn line_col(text: &str, pos: usize) -> (usize, usize) {
     let line = before.matches('\n').count() + 1;
     let col = before
         .rfind('\n')
-        .map_or(before.len(), |i| before.len() - i - 1)
-        + 1;
-    (line, col)
+        .map_or(before.len(), |i| before.len() - i - 1);
+    (line, col + 1)
 }
 
 /// serde's `unknown variant `x`, expected one of `a`, `b`` (or `unknown
@@ -243,7 +243,13 @@ impl TomlSource {
             let e = toml::from_str::<T>(text).err()?;
             Some(e.message().trim().to_string())
         };
-        toml::from_str(&self.text).map_err(|e| self.toml_error(&e, &reparse))
+        // `[vehicle]` keys no vehicle reads set aside (`vehicle_keys`).
+        let blanked = self.without_unread_vehicle_keys().map(|text| Self {
+            path: self.path.clone(),
+            text,
+        });
+        let this = blanked.as_ref().unwrap_or(self);
+        toml::from_str(&this.text).map_err(|e| this.toml_error(&e, &reparse))
     }
 
     fn toml_error(&self, e: &toml::de::Error, reparse: &Reparse) -> InputError {

@@ -141,6 +141,8 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         &mut inputs,
     )?;
     notes.splice(0..0, folder_notes);
+    let unread = src.unread_vehicle_keys().into_iter().map(|u| u.note(&file));
+    notes.splice(0..0, unread);
     check_stated(&src, &f.channels, &runs)?;
     let stated_rate = src.key_span("diagnose.sample_rate").is_some();
     notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));

@@ -9,6 +9,7 @@ use crate::diagnose::report::outcome::VerdictWarning;
 use crate::diagnose::report::outcome::{Explained, NoSignificantGap, OutsideLibrary};
 use crate::diagnose::report::ParameterValue;
 use crate::diagnose::report::Part;
+use crate::diagnose::report::Unseen;
 
 pub(super) fn explained(reduction_percent: f64) -> Verdict {
     Verdict::Explained(Explained {

@@ -1,5 +1,5 @@
 //! What a fresh user tripped on in `.tir` files, `tyre-eval` and
-//! `identify` (issue 41, round 4), run as a user runs the tool: a public
+//! `identify` (a fresh user's fourth round), run as a user runs the tool: a public
 //! `.tir` whose longitudinal slip stiffness turns negative inside its own
 //! load range, said only per point; a Magic Formula fit outside any
 //! tyre's cornering stiffness written without a word (and then refused by

@@ -159,8 +159,7 @@ pub struct TyreEvalReport {
     #[serde(skip)]
     pub longitudinal_turn: Option<crate::io::tir::LongitudinalTurn>,
     /// The slip stiffnesses that change sign inside the loads evaluated
-    /// (the longitudinal one left to `longitudinal_turn` where that says
-    /// it).
+    /// (the points' loads, where `longitudinal_turn` says the file's).
     #[serde(skip)]
     pub sign_changes: Vec<SignChange>,
     /// Points whose slip stiffness at their own conditions is negative.
@@ -321,10 +320,7 @@ pub fn run(
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);
     let longitudinal_turn = crate::io::tir::longitudinal_turn(tyre_path);
-    let mut sign_changes = stiffness::sign_changes(&tyre, fz);
-    if longitudinal_turn.is_some() {
-        sign_changes.retain(|c| c.stiffness != "longitudinal slip");
-    }
+    let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
     let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
         fitted::beyond(r, [fz, kappa, alpha, camber], &p, &file.lines)

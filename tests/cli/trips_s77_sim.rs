@@ -65,3 +65,74 @@ fn a_tyre_with_no_lateral_force_is_refused_naming_the_file_and_the_force() {
         assert!(!e.contains("lateral_acceleration"), "{e}");
     }
 }
+
+/// `simulate` the bundled sedan's 1° step with rows every `step` s into
+/// `dir/<name>`; the history's path.
+fn sedan_history(dir: &Path, name: &str, step: f64) -> PathBuf {
+    let text = bundled_scenario("sedan_step.toml");
+    let path = dir.join(format!("{name}.toml"));
+    fs::write(&path, format!("{text}\n[simulation]\nstep = {step}\n")).unwrap();
+    let out = dir.join(name);
+    succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    out.join("history.csv")
+}
+
+/// `metrics` on a run with neither `ay` nor `ax` said "its speed runs
+/// 22.2–22.2 with a median of 22.2": speeds without their unit.
+#[test]
+fn metrics_says_the_unit_of_the_speeds_it_could_not_check() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path(), "sedan", 0.01);
+    let text = fs::read_to_string(&history).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let keep = ["t", "speed", "steer", "yaw_rate", "beta"];
+    let cols: Vec<usize> = keep
+        .iter()
+        .map(|k| header.iter().position(|h| h == k).unwrap())
+        .collect();
+    let rows: Vec<String> = text
+        .lines()
+        .map(|l| {
+            let v: Vec<&str> = l.split(',').collect();
+            cols.iter().map(|&i| v[i]).collect::<Vec<_>>().join(",")
+        })
+        .collect();
+    let run = dir.path().join("no_ay.csv");
+    fs::write(&run, rows.join("\n") + "\n").unwrap();
+    let o = run_in(dir.path(), &["metrics", "no_ay.csv"]);
+    let said = format!("{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+    assert!(
+        said.contains(
+            "read as m/s, its speed runs 22.2–22.2 m/s with a median of 22.2 m/s (80.0 km/h)"
+        ),
+        "{said}"
+    );
+}
+
+/// `metrics` on a 20 Hz log read its peak time at a sample (0.400 s
+/// against 0.435 s at 1 kHz) without a word on the grid, and on a noisy
+/// one blamed the noise for it. The resolution, ±half a sample interval,
+/// is said; a 1 kHz run says none.
+#[test]
+fn metrics_says_the_peak_time_resolution_of_a_coarse_log() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path(), "coarse", 0.05);
+    let o = run(&["metrics", history.to_str().unwrap(), "--filter-hz", "0"]);
+    let said = format!("{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+    for line in [
+        "yaw-rate peak time           0.4500 s",
+        "the yaw-rate peak time, 0.450 s, is a sample of a 20.0 Hz log (the peak is not interpolated between samples): it is resolved to ±0.025 s, half the 0.0500 s sample interval (5.6 % of it), and TB with it",
+    ] {
+        assert!(said.contains(line), "{line}\n{said}");
+    }
+    assert!(!said.contains("flat within the noise"), "{said}");
+    let fine = sedan_history(dir.path(), "fine", 0.001);
+    let o = run(&["metrics", fine.to_str().unwrap(), "--filter-hz", "0"]);
+    let said = format!("{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+    assert!(!said.contains("is a sample of a"), "{said}");
+}

@@ -1,9 +1,9 @@
-//! What a fresh user tripped on in round 4 (issue 41) in `simulate`,
-//! `metrics` and `diagnose`, run as a user runs the tool: a tyre with no
+//! What a fresh user tripped on in `simulate`,
+//! `metrics`, run as a user runs the tool: a tyre with no
 //! lateral force refused under a key the scenario does not have, a
 //! vehicle that tips over at 0.31 g or is twice as wide as it is long run
-//! without a word, speeds said without their unit, a 20 Hz log's peak
-//! time blamed on noise, and the replay's start drawn as a gap.
+//! without a word, speeds said without their unit, and a 20 Hz log's peak
+//! time blamed on noise.
 
 use super::*;
 

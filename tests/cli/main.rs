@@ -401,6 +401,7 @@ mod trips_s76_input;
 mod trips_s76_lead;
 mod trips_s76_sim;
 mod trips_s77_tyre;
+mod trips_s77_sim;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

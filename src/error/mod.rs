@@ -43,8 +43,8 @@ pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
 pub use reason::{
-    BeyondSignal, CgTooLow, DeclaredHow, Limit, MassDigit, NoPressureLine, ParamReason, PerLoad,
-    ScheduleColumn, SlowSteer, StagedMagicFormula, Waveform, DYNAMIC_INDEX,
+    BeyondSignal, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce, NoPressureLine,
+    ParamReason, PerLoad, ScheduleColumn, SlowSteer, StagedMagicFormula, Waveform, DYNAMIC_INDEX,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;

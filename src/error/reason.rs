@@ -9,6 +9,8 @@ use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
+use no_grip::no_lateral_force;
+pub use no_grip::NoLateralForce;
 pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
 pub use staged::StagedMagicFormula;
@@ -19,6 +21,7 @@ pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 mod angles;
 mod boxed;
 mod checks;
+mod no_grip;
 mod schedule;
 mod slow_steer;
 mod staged;
@@ -155,6 +158,9 @@ pub enum ParamReason {
     /// A centre of gravity below any vehicle's for its track.
     #[error("{}", cg_too_low(.0))]
     CgTooLow(Box<CgTooLow>),
+    /// A tyre that makes no lateral force at the car's wheel load.
+    #[error("{}", no_lateral_force(.0))]
+    NoLateralForce(Box<NoLateralForce>),
     /// A `.tir` value outside any tyre's `(lo, hi]` once converted by the
     /// unit its file's `[UNITS]` declares, but within as written: the
     /// declaration is the slip. Boxed: the error stays small.

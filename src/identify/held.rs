@@ -7,7 +7,7 @@
 
 use super::problem::Channel;
 use super::spare::{held_at, lean_clause};
-use crate::format::{plural, readable};
+use crate::format::{exact, plural, readable};
 use crate::tyre::Tyre;
 use serde::Serialize;
 use std::fmt;
@@ -67,7 +67,7 @@ pub enum HeldFor {
 }
 
 /// Where a `.tir` constant written without a template comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ConstantFrom {
     /// The median load of the data (`FNOMIN`).
@@ -82,6 +82,16 @@ pub enum ConstantFrom {
     DefaultSpeed,
     /// The default radius: rig forces do not measure it (`UNLOADED_RADIUS`).
     DefaultRadius,
+    /// The median pressure of the data, rounded to 100 Pa, in place of a
+    /// template's `NOMPRES` outside the data's pressures (`NOMPRES`).
+    OutsideData {
+        /// The template's `NOMPRES`, Pa.
+        template: f64,
+        /// The data's lowest pressure, Pa.
+        lo: f64,
+        /// The data's highest pressure, Pa.
+        hi: f64,
+    },
 }
 
 impl fmt::Display for HeldFor {
@@ -128,6 +138,10 @@ impl fmt::Display for HeldFor {
                 readable(*fitted, 4),
                 held_at(START, *stated, *held, None)
             ),
+            // (set in place of a template's, not for want of one)
+            HeldFor::Constant {
+                from: from @ ConstantFrom::OutsideData { .. },
+            } => write!(f, "{from}"),
             HeldFor::Constant { from } => write!(f, "no --template: {from}"),
         }
     }
@@ -155,7 +169,7 @@ impl HeldFor {
 
 impl fmt::Display for ConstantFrom {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
+        let fixed = match self {
             ConstantFrom::MedianLoad => "the median load of the data, rounded to 10 N",
             ConstantFrom::MedianPressure => "the median pressure of the data, rounded to 100 Pa",
             ConstantFrom::NoPressure => "no `pressure` column, so 0 (the pressure terms off)",
@@ -164,7 +178,21 @@ impl fmt::Display for ConstantFrom {
             ConstantFrom::DefaultRadius => {
                 "a default, as rig forces do not measure the radius (give --template with your tyre's)"
             }
-        })
+            ConstantFrom::OutsideData { template, lo, hi } => {
+                let (t, lo, hi) = (exact(*template), exact(*lo), exact(*hi));
+                return write!(
+                    f,
+                    "the median pressure of the data, rounded to 100 Pa, in place of the \
+                     template's {t} Pa, which lies outside the data's {lo} to {hi} Pa: the \
+                     pressure terms are polynomials in dpi = (p − NOMPRES)/NOMPRES, and about \
+                     the template's the fit would carry the peak friction in them, fitted at the \
+                     data's dpi only and reaching {t} Pa by extrapolation (the blocks these data \
+                     do not fit keep the template's coefficients, read about this pressure); to \
+                     keep the template's, give --hold NOMPRES={t}"
+                );
+            }
+        };
+        f.write_str(fixed)
     }
 }
 

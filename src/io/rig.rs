@@ -350,12 +350,7 @@ pub(crate) fn load_in_kn(fz: &[f64], judged: impl Fn(f64) -> bool) -> Option<(us
     Some((i, slip))
 }
 
-/// The pressures a pneumatic tyre is inflated to, Pa, where the file
-/// names no tyre's: a racing slick's 55 kPa (8 psi) to a truck's 900 kPa,
-/// rounded outwards. A median that lands here in one of kPa, bar and psi
-/// (in that order) is said in it: 83 reads as 83 kPa, 2.2 as 2.2 bar, 30
-/// as 30 psi.
-pub(crate) const INFLATION: Known = ([50e3, 1e6], "a pneumatic tyre's inflation pressures");
+pub(crate) use super::rig_rows::INFLATION;
 
 /// Where the positive pressures of `p` have a median below
 /// [`MIN_MEDIAN_PRESSURE`]: the first positive pressure below it and why

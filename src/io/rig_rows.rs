@@ -14,6 +14,13 @@ use std::path::Path;
 /// Pressures (Pa) and what they are.
 pub(crate) type Known = ([f64; 2], &'static str);
 
+/// The pressures a pneumatic tyre is inflated to, Pa, where the file
+/// names no tyre's: a racing slick's 55 kPa (8 psi) to a truck's 900 kPa,
+/// rounded outwards. A median that lands here in one of kPa, bar and psi
+/// (in that order) is said in it: 83 reads as 83 kPa, 2.2 as 2.2 bar, 30
+/// as 30 psi.
+pub(crate) const INFLATION: Known = ([50e3, 1e6], "a pneumatic tyre's inflation pressures");
+
 /// Refuses every positive pressure of `p` below [`MIN_MEDIAN_PRESSURE`]
 /// at its cell of `file` (the points file `path`), each with the reading
 /// in kPa, bar or psi that lands among the pressures `known` (of the
@@ -39,7 +46,10 @@ pub(crate) fn refuse_rows_not_in_pa(
                 value,
                 median,
                 limit: MIN_MEDIAN_PRESSURE,
-                meant: meant(value, known),
+                // Where no unit lands it among the tyre's own pressures (2.2
+                // bar is 220 kPa, above an FSAE file's PRESMAX), the unit
+                // that lands it among any pneumatic tyre's is still said.
+                meant: meant(value, known).or_else(|| meant(value, INFLATION)),
             };
             file.error_at(path, i, "pressure", slip.into())
         })

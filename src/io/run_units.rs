@@ -452,7 +452,7 @@ pub fn unchecked_speed_unit(run: &crate::measured::MeasuredRun) -> Option<String
     u.sort_by(f64::total_cmp);
     let median = u[u.len() / 2];
     Some(format!(
-        "the speed's unit could not be checked: {} has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change); its speed runs {}–{} with a median of {} — read as m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
+        "the speed's unit could not be checked: {} has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change); read as m/s, its speed runs {}–{} m/s with a median of {} m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
         run.path.display(),
         crate::format::significant(u[0], 3),
         crate::format::significant(u[u.len() - 1], 3),

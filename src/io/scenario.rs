@@ -236,6 +236,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         files: tyre_files,
         fitted_ranges,
     } = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
+    no_grip::lateral_force_made(src, &model, &f.tyres)?;
     check_road(src, &f.road)?;
     f.metrics
         .validate()
@@ -541,6 +542,7 @@ fn other_manoeuvre(
     })
 }
 
+mod no_grip;
 mod reach;
 mod replay;
 mod step_steer;

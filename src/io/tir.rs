@@ -508,11 +508,13 @@ pub fn read_tir_text(name: &str, text: &str) -> Result<MagicFormula, InputError>
 }
 
 mod core;
+mod long_stiffness;
 mod ranges;
 mod stiffness;
 mod units;
 
-pub use stiffness::MAX_CORNERING_PER_LOAD;
+pub use long_stiffness::{longitudinal_turn, LongitudinalTurn};
+pub use stiffness::{cornering_per_load, MAX_CORNERING_PER_LOAD};
 use units::Units;
 pub use units::LOAD_OVER_NOMINAL;
 

@@ -88,6 +88,22 @@ const MASS_PER_FOOTPRINT: (f64, f64) = (50.0, 2000.0);
 /// (a track of 1 µm lifts a wheel at any turn; 10 m has no vehicle).
 const TRACK_TO_WHEELBASE: (f64, f64) = (0.15, 2.0);
 
+/// Least static stability factor `track/(2·cg_height)` of a road
+/// vehicle, g, below which `simulate` warns (NHTSA's rollover ratings:
+/// passenger cars 1.2–1.5, SUVs and vans 1.0–1.3; heavy trucks and buses
+/// lower, a loaded tanker down to 0.35, which the refusal at
+/// [`MIN_TIP_OVER`] leaves in). Below 0.8 g the vehicle tips over within
+/// a dry road's grip: possible for a laden truck, a slip for a car.
+pub const WARN_TIP_OVER: f64 = 0.8;
+
+/// Largest track over wheelbase of a vehicle, above which `simulate`
+/// warns: road cars about 0.5–0.75 (a small car 1.4 m on 2.4 m, 0.58), a
+/// Formula Student car 0.8, a kart up to about 1.3 (CIK: a wheelbase of
+/// 1.01–1.07 m, an overall width of at most 1.4 m). Up to the refusal at
+/// 2 the track is a value no vehicle has (5.5 m on a sedan's 2.78 m
+/// wheelbase ran silently).
+pub const WARN_TRACK_TO_WHEELBASE: f64 = 1.4;
+
 impl Vehicle {
     /// Wheelbase l = a + b, m.
     pub fn wheelbase(&self) -> f64 {
@@ -183,6 +199,44 @@ impl Vehicle {
                 ab,
             },
         ))
+    }
+
+    /// What is possible but unlike a road vehicle: a static stability
+    /// factor below [`WARN_TIP_OVER`] (the car rolls over below it) or a
+    /// track over wheelbase above [`WARN_TRACK_TO_WHEELBASE`], each said
+    /// with its numbers and the range of vehicles. The values beyond any
+    /// vehicle's are refused by [`Vehicle::validate`].
+    pub fn unlikely(&self) -> Vec<String> {
+        let mut said = Vec::new();
+        let track = self.track_front.min(self.track_rear);
+        let tips_at = track / (2.0 * self.cg_height);
+        if tips_at < WARN_TIP_OVER {
+            said.push(format!(
+                "the static stability factor track/(2·cg_height) = {}/(2·{}) is {} g: the car rolls over at {} m/s² of lateral acceleration, where a road car holds 1.0–1.5 g (NHTSA's rollover ratings) and only a laden heavy truck or bus is below {} g; the 2-DOF model does not roll over (a wheel lifting is said), so check cg_height and the track",
+                crate::error::Num(track),
+                crate::error::Num(self.cg_height),
+                crate::format::readable(tips_at, 2),
+                crate::format::readable(tips_at * G, 2),
+                WARN_TIP_OVER,
+            ));
+        }
+        let l = self.wheelbase();
+        let (key, t) = match self.track_rear > self.track_front {
+            true => ("track_rear", self.track_rear),
+            false => ("track_front", self.track_front),
+        };
+        {
+            if t / l > WARN_TRACK_TO_WHEELBASE {
+                said.push(format!(
+                    "{key} = {} m on a wheelbase a + b = {} m gives track/wheelbase = {}, wider than any vehicle's {} (road cars 0.5–0.75, a kart up to about 1.3): check the track, and a and b",
+                    crate::error::Num(t),
+                    crate::format::rounded(l, 4),
+                    crate::format::readable(t / l, 3),
+                    WARN_TRACK_TO_WHEELBASE,
+                ));
+            }
+        }
+        said
     }
 
     /// Checks every value for physical sense; the error names the key.

@@ -497,7 +497,9 @@ fn diagnose_handles_mixed_rates_gaps_and_missing_channels() {
     let o = run_in(dir.path(), &["metrics", run.to_str().unwrap()]);
     let text = String::from_utf8_lossy(&o.stdout).to_string() + &stderr(&o);
     assert!(
-        o.status.success() && text.contains(unchecked) && text.contains("its speed runs 20.0–20.0"),
+        o.status.success()
+            && text.contains(unchecked)
+            && text.contains("its speed runs 20.0–20.0 m/s"),
         "{text}"
     );
 }

@@ -88,6 +88,15 @@ fn data_file(
     if path.is_file() {
         return Some(path);
     }
+    // A path that is there but no file (a folder named where its file was
+    // meant) is the test's mistake, not missing data: refused on every
+    // run, not skipped where the data sets are absent.
+    if path.exists() {
+        panic!(
+            "{test}: {} exists but is not a file (a folder?): name a file of the public data sets",
+            path.display()
+        );
+    }
     match on_missing_data(ci) {
         MissingData::Fail => panic!(
             "{test}: {} is absent and CI is set: under CI the public data sets must be present",
@@ -134,6 +143,14 @@ fn missing_data_skips_outside_ci_and_fails_under_it() {
         message.contains("absent.csv is absent and CI is set"),
         "{message}"
     );
+    // A folder where a file is named: refused in CI or not.
+    std::fs::create_dir(dir.path().join("folder")).unwrap();
+    for ci in [None, ci] {
+        let failed = std::panic::catch_unwind(|| data_file(dir.path(), "folder", "t", ci));
+        let message = failed.expect_err("a folder is refused");
+        let message = message.downcast_ref::<String>().unwrap();
+        assert!(message.contains("exists but is not a file"), "{message}");
+    }
 }
 
 /// Runs the binary with `args`, asserts it succeeds; its stdout.
@@ -384,6 +401,8 @@ mod trips_s76_input;
 mod trips_s76_lead;
 mod trips_s76_sim;
 mod trips_s77_lead;
+mod trips_s77_tyre;
+mod trips_s77_sim;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

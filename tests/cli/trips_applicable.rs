@@ -233,14 +233,16 @@ fn a_pressure_in_kpa_or_bar_is_refused_at_its_cell() {
         out.to_str().unwrap(),
     ]);
     let e = refused(&o, &out);
-    assert!(
-        e.contains(
-            "p.csv:2:6: column `pressure`: 2.2 Pa, in a file whose median pressure is 2.3 Pa"
-        ) && e.contains(
-            "is the column in bar? its median, 2.3 bar, is 230000 Pa, within the file's PRESMIN to PRESMAX (200000 to 400000 Pa): multiply the column by 100000"
-        ),
-        "{e}"
-    );
+    // Each cell in its own unit: 2.2 and 2.3 bar, 220 kPa (not the
+    // column by its median in bar, which made 220 a 22 MPa pressure).
+    for (cell, meant) in [
+        ("p.csv:2:6", "did you mean 220000 Pa (2.2 bar), within the file's PRESMIN to PRESMAX (200000 to 400000 Pa)?"),
+        ("p.csv:3:6", "did you mean 220000 Pa (220 kPa), within the file's PRESMIN to PRESMAX (200000 to 400000 Pa)?"),
+        ("p.csv:4:6", "did you mean 230000 Pa (2.3 bar)"),
+    ] {
+        let line = e.lines().find(|l| l.contains(cell)).unwrap_or_else(|| panic!("{cell}: {e}"));
+        assert!(line.contains(meant), "{line}");
+    }
     // Rig data in kPa, likewise, before any fit.
     let mut rig = String::from("fz,alpha,fy,pressure\n");
     for k in -5..=5 {

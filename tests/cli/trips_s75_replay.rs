@@ -284,7 +284,7 @@ fn a_speed_in_mph_is_refused_by_ax_where_the_run_has_no_ay_and_said_unchecked_wi
     assert!(
         said.contains("note: the speed's unit could not be checked")
             && said.contains("neither `ay`")
-            && said.contains("its speed runs 22.4–55.9"),
+            && said.contains("its speed runs 22.4–55.9 m/s"),
         "{said}"
     );
 }

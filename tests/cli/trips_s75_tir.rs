@@ -106,7 +106,7 @@ fn a_public_file_with_friction_above_2_5_is_warned_of() {
     };
     let (e, ok) = eval(&fs::read_to_string(p).unwrap());
     assert!(ok, "{e}");
-    assert!(e.contains("warning: the file's pure lateral force peaks at |Fy|/Fz = 3.37 (at Fz = 250 N, slip angle 0.256 rad (14.7°))"), "{e}");
+    assert!(e.contains("warning: the file's pure lateral force peaks at |Fy|/Fz = 3.37 at Fz = 250 N and slip angle 0.256 rad, 14.7°, above"), "{e}");
     let car = shared_data(
         "a_public_file_with_friction_above_2_5_is_warned_of",
         "tir_public/car205_60R19.tir",

@@ -224,7 +224,7 @@ fn a_magic_formula_version_the_tool_reads_but_does_not_fit_is_said_so() {
 /// the template's value 11.692" and wrote 2.98; and kept the template's
 /// NOMPRES = 220 kPa while the data's pressures are 68–99 kPa, in
 /// silence. Every held line's value is the one written, and a template's
-/// nominal pressure outside the data's is warned of, with what to do.
+/// nominal pressure outside the data's is replaced by theirs, said.
 #[test]
 fn a_template_fit_writes_its_held_values_and_warns_of_its_nominal_pressure() {
     let test = "a_template_fit_writes_its_held_values_and_warns_of_its_nominal_pressure";
@@ -278,12 +278,24 @@ fn a_template_fit_writes_its_held_values_and_warns_of_its_nominal_pressure() {
         assert_eq!(written(name), value, "{l}");
     }
     assert!(template_holds > 0, "{s}");
+    // The template's NOMPRES (220 kPa) lies outside the data's 68–99 kPa:
+    // the fit is made about the data's median pressure, said, and the
+    // peak friction is no longer carried by the pressure terms (the old
+    // fit: PDY1 on its bound 0.05, PPY3 = −25.9).
+    let nompres = s
+        .lines()
+        .find(|l| l.trim_start().starts_with("held: NOMPRES = 83400: "))
+        .unwrap_or_else(|| panic!("NOMPRES not set to the data's median: {s}"));
     assert!(
-        s.contains(
-            "warning: the template's NOMPRES = 220000 Pa lies outside the data's pressures ("
-        ) && s.contains("give --hold NOMPRES="),
-        "{s}"
+        nompres.contains("in place of the template's 220000 Pa")
+            && nompres.contains("67840 to 99200 Pa")
+            && nompres.contains("give --hold NOMPRES=220000")
+            && !nompres.contains("no --template"),
+        "{nompres}"
     );
+    assert_eq!(written("NOMPRES"), 83400.0);
+    assert!(written("PDY1") > 0.1, "PDY1 on its bound: {s}");
+    assert!(written("PPY3").abs() < 5.0, "PPY3 = {}", written("PPY3"));
 }
 
 /// A linear fit of the Hoosier file (no load, camber or pressure terms)

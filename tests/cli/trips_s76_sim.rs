@@ -212,7 +212,7 @@ fn simulate_warns_of_a_tir_beyond_any_tyres_friction_as_tyre_eval_does() {
             "fz,kappa,alpha,camber,speed\n1000,0,0.05,0,20\n",
         ),
     ]);
-    let peak = "the file's pure lateral force peaks at |Fy|/Fz = 3.37 (at Fz = 250 N";
+    let peak = "the file's pure lateral force peaks at |Fy|/Fz = 3.37 at Fz = 250 N and slip angle";
     let o = run_in(
         dir.path(),
         &[

@@ -40,41 +40,46 @@ impl TirDocument {
         if self.get("PKY1").is_none() {
             return Ok(());
         }
-        let c = &tyre.coefficients;
-        let fz = c.FNOMIN;
-        let fz0p = c.FNOMIN * c.LFZO;
-        let x = (fz / fz0p) / c.PKY2;
-        let kya = c.PKY1 * fz0p * (c.PKY4 * x.atan()).sin() * c.LKY;
-        let per_load = (kya / fz).abs();
-        // No stiffness at all is a file with no lateral force (`PKY1 = 0`,
-        // as `identify` writes a block no lateral data shaped): said by
-        // the evaluations' checks (fy = 0 at a slip), not a slipped digit.
-        if !per_load.is_finite()
-            || per_load == 0.0
-            || (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&per_load)
-        {
-            return Ok(());
-        }
-        // The slip whose undoing lands it nearest a typical tyre: a digit
-        // either way, or a stiffness written per degree (57.3 times small).
-        let hint = [
-            (0.1, false),
-            (10.0, false),
-            (180.0 / std::f64::consts::PI, true),
-        ]
-        .into_iter()
-        .filter(|(f, _)| {
-            (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&(per_load * f))
-        })
-        .min_by(|a, b| {
-            let off = |f: f64| (per_load * f / TYPICAL_PER_LOAD).ln().abs();
-            off(a.0).total_cmp(&off(b.0))
-        });
-        let reason = ParamReason::tir_cornering_per_load(
-            (kya.abs(), fz, per_load),
-            (MIN_CORNERING_PER_LOAD, MAX_CORNERING_PER_LOAD),
-            hint.map(|(f, degrees)| (c.PKY1 * f, per_load * f, degrees)),
-        );
-        Err(self.value_error(ParamError::new("PKY1", c.PKY1, reason)))
+        cornering_per_load(tyre).map_or(Ok(()), |e| Err(self.value_error(e)))
     }
+}
+
+/// The refusal [`TirDocument::cornering_at_nominal`] gives a file of
+/// `tyre`, at `PKY1`, without the file: what `identify` says of a fit
+/// before it writes it (the readers refuse the file with these numbers).
+pub fn cornering_per_load(tyre: &MagicFormula) -> Option<ParamError> {
+    let c = &tyre.coefficients;
+    let fz = c.FNOMIN;
+    let fz0p = c.FNOMIN * c.LFZO;
+    let x = (fz / fz0p) / c.PKY2;
+    let kya = c.PKY1 * fz0p * (c.PKY4 * x.atan()).sin() * c.LKY;
+    let per_load = (kya / fz).abs();
+    // No stiffness at all is a file with no lateral force (`PKY1 = 0`,
+    // as `identify` writes a block no lateral data shaped): said by
+    // the evaluations' checks (fy = 0 at a slip), not a slipped digit.
+    if !per_load.is_finite()
+        || per_load == 0.0
+        || (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&per_load)
+    {
+        return None;
+    }
+    // The slip whose undoing lands it nearest a typical tyre: a digit
+    // either way, or a stiffness written per degree (57.3 times small).
+    let hint = [
+        (0.1, false),
+        (10.0, false),
+        (180.0 / std::f64::consts::PI, true),
+    ]
+    .into_iter()
+    .filter(|(f, _)| (MIN_CORNERING_PER_LOAD..=MAX_CORNERING_PER_LOAD).contains(&(per_load * f)))
+    .min_by(|a, b| {
+        let off = |f: f64| (per_load * f / TYPICAL_PER_LOAD).ln().abs();
+        off(a.0).total_cmp(&off(b.0))
+    });
+    let reason = ParamReason::tir_cornering_per_load(
+        (kya.abs(), fz, per_load),
+        (MIN_CORNERING_PER_LOAD, MAX_CORNERING_PER_LOAD),
+        hint.map(|(f, degrees)| (c.PKY1 * f, per_load * f, degrees)),
+    );
+    Some(ParamError::new("PKY1", c.PKY1, reason))
 }

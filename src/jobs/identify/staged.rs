@@ -112,7 +112,16 @@ impl StagedJob {
 /// `PDY1`, `PDX1` not 0) go beyond any tyre's, with the numbers, or `None`.
 fn pure_curve_warning(t: &MagicFormula) -> Option<String> {
     let c = &t.coefficients;
-    let e = t.check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0).err()?;
+    // The cornering stiffness per unit load at FNOMIN is judged after the
+    // curves, as the readers judge it: a fit outside 1.5–100 1/rad is
+    // written and warned of, not refused, as a curve beyond any tyre's is
+    // (a long fit is not lost, the data or their units may be what to
+    // fix, and the file shows what the fit found); every reader refuses
+    // the file with the same numbers, so nothing runs on it unseen.
+    let e = t
+        .check_pure_curves(c.PDY1 != 0.0, c.PDX1 != 0.0)
+        .err()
+        .or_else(|| crate::io::tir::cornering_per_load(t))?;
     Some(format!(
         "the fitted `{}` = {}: {}; the file is written as fitted, but tyre-eval and simulate refuse it: refit with --hold, or check the data",
         e.key,
@@ -238,6 +247,11 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t
     });
+    // A template's NOMPRES outside the data's pressures is replaced by
+    // theirs (`nompres.rs`), held as a `--hold` would hold it.
+    let recentred = super::nompres::recentred(template_tyre.as_ref(), &prepared.rows, &o.hold);
+    let mut given = o.hold.clone();
+    given.extend(recentred.iter().map(|h| (h.name.clone(), h.value)));
     let settings = mf_staged::Settings {
         version: fit.version,
         start: match o.start {
@@ -251,7 +265,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         template: template_tyre,
         max_iterations: o.max_iterations,
         holding: Holding {
-            given: o.hold.clone(),
+            given,
             // The coefficients the template file gives: a parameter the
             // data do not determine is held at the template's value then.
             template_keys: template.as_ref().map_or(Vec::new(), |d| {
@@ -277,6 +291,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     crate::tyre::ModelParameters::check_sizes(&id.tyre)
         .map_err(|source| FitError::BeyondAnyTyre { source })?;
     let mut held = super::holds::holds_of(o, &given_names(o));
+    held.extend(recentred);
     if o.template.is_none() {
         held.extend(constants_held(&id.tyre, &data, o));
     }
@@ -303,14 +318,9 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     // A fitted curve beyond any tyre's is written, marked, not refused: a
     // long fit is not lost, and the readers refuse the file with the
     // same numbers.
-    // With them, a template's nominal pressure outside the data's, whose
-    // pressure terms the fit can only extrapolate to.
-    let nompres =
-        super::nompres::nompres_outside(&written, &prepared.rows, o.template.is_some(), &o.hold);
     let pure_curve_warning: Vec<String> = template_warning
         .into_iter()
         .chain(pure_curve_warning(&written))
-        .chain(nompres)
         .collect();
     let curvature = curvature
         + &pure_curve_warning

@@ -54,6 +54,7 @@ mod not_carried;
 mod opposed;
 mod order;
 mod physical;
+mod points;
 mod pressure;
 mod radius;
 mod ranges;
@@ -77,13 +78,13 @@ pub use unread::Unread;
 use crate::error::{Error, InputProblem};
 use crate::io::fitted_ranges::FittedRanges;
 use crate::io::load_tyre_with_ranges;
-use crate::io::rig::{load_in_kn, pressure_not_in_pa};
 use crate::io::tir::set_tyre_mode;
 use crate::report::{refuse_overwrite, write_columns};
 use crate::tyre::mf::MfInput;
 use crate::tyre::sizes::POINTS_MEDIAN_LOAD;
 use crate::tyre::PointForces;
 use crate::tyre::Tyre;
+use points::{read_points, PointColumns};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -153,7 +154,12 @@ pub struct TyreEvalReport {
     /// The points beyond those ranges, evaluated by extrapolation, range
     /// by range (`fitted.rs`).
     pub beyond_fitted: fitted::BeyondFitted,
-    /// The slip stiffnesses that change sign inside the loads evaluated.
+    /// A `.tir`'s longitudinal slip stiffness negative inside its own
+    /// load range, found when the file is read, whatever the points.
+    #[serde(skip)]
+    pub longitudinal_turn: Option<crate::io::tir::LongitudinalTurn>,
+    /// The slip stiffnesses that change sign inside the loads evaluated
+    /// (the points' loads, where `longitudinal_turn` says the file's).
     #[serde(skip)]
     pub sign_changes: Vec<SignChange>,
     /// Points whose slip stiffness at their own conditions is negative.
@@ -170,93 +176,6 @@ pub struct TyreEvalReport {
     /// The output file.
     #[serde(skip)]
     pub out: PathBuf,
-}
-
-/// The points file's columns, checked: `fz, kappa, alpha, camber,
-/// speed` in that order, the pressures where given, and the file's
-/// columns for errors found later.
-struct PointColumns {
-    file: crate::io::Columns,
-    inputs: Vec<(&'static str, Vec<f64>)>,
-    pressure: Option<Vec<f64>>,
-}
-
-/// Reads the points of `points`, refusing a value no tyre is evaluated
-/// at (every one, in row order), a pressure not positive or not in Pa
-/// (a row's read against the pressures `known` of the tyre) and loads in
-/// kN, each at its cell.
-fn read_points(points: &Path, known: Option<pressure::Known>) -> Result<PointColumns, Error> {
-    // The cells that are no finite numbers are said with the values no
-    // tyre is evaluated at, in one run.
-    let layout = crate::io::Layout {
-        required: &["fz", "kappa", "alpha", "camber", "speed"],
-        optional: &["pressure"],
-        also_read: Some(&[]),
-    };
-    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(points, layout)?;
-    let pressure = c.take_optional("pressure");
-    let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
-        .into_iter()
-        .map(|n| (n, c.take(n)))
-        .collect();
-    let given = inputs
-        .iter()
-        .map(|(n, v)| (*n, v))
-        .chain(pressure.as_ref().map(|p| ("pressure", p)));
-    // Every point no tyre is evaluated at, in row order (then column).
-    let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
-        .enumerate()
-        .flat_map(|(k, (name, values))| {
-            physical::not_physical(name, values)
-                .into_iter()
-                .map(move |(i, problem)| (i, k, name, problem))
-        })
-        .collect();
-    // A pressure at or below zero is said as such, with the rest.
-    if let Some(p) = &pressure {
-        refused.retain(|(i, _, name, _)| *name != "pressure" || p[*i] > 0.0);
-        refused.extend(
-            p.iter()
-                .enumerate()
-                .filter(|(_, v)| v.is_finite() && **v <= 0.0)
-                .map(|(i, &value)| {
-                    (
-                        i,
-                        5,
-                        "pressure",
-                        InputProblem::NonPositivePressure { value },
-                    )
-                }),
-        );
-    }
-    let mut errors: Vec<crate::error::InputError> = refused
-        .into_iter()
-        .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
-        .collect();
-    errors.extend(bad_cells);
-    if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
-        return Err(e.into());
-    }
-    // A pressure written in kPa, bar or psi (a .tir clamps it to its
-    // range without a word of the unit).
-    if let Some((i, slip)) = pressure
-        .as_deref()
-        .and_then(|p| pressure_not_in_pa(p, known))
-    {
-        return Err(c.error_at(points, i, "pressure", slip.into()).into());
-    }
-    if let Some(p) = &pressure {
-        pressure::refuse_rows_not_in_pa(points, &c, p, known)?;
-    }
-    // A car's loads written in kN; the points off the road do not count.
-    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
-        return Err(c.error_at(points, i, "fz", slip.into()).into());
-    }
-    Ok(PointColumns {
-        file: c,
-        inputs,
-        pressure,
-    })
 }
 
 /// What a Magic Formula tyre adds to the evaluation: its mode, its points
@@ -400,6 +319,7 @@ pub fn run(
     let f = tyre.evaluate_points(fz, kappa, alpha, camber, speed, &p);
     let count = fz.len();
     let unread = unread::unread(&tyre, &given, &f);
+    let longitudinal_turn = crate::io::tir::longitudinal_turn(tyre_path);
     let sign_changes = stiffness::sign_changes(&tyre, fz);
     let against_slip = stiffness::against_slip(&tyre, &given, &file.lines);
     let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
@@ -483,6 +403,7 @@ pub fn run(
         at_rest,
         standstill_mz,
         unread,
+        longitudinal_turn,
         sign_changes,
         against_slip,
         opposed,
@@ -500,6 +421,7 @@ impl TyreEvalReport {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
         out.extend(self.peak_friction.iter().map(|p| p.to_string()));
         out.extend(unread::not_written_line(&self.not_written));
+        out.extend(self.longitudinal_turn.iter().map(|t| t.to_string()));
         out.extend(self.sign_changes.iter().map(SignChange::line));
         out.extend(self.against_slip.iter().map(|a| a.line(self.count)));
         out.extend(self.opposed.iter().map(|o| o.line(self.count)));

@@ -8,7 +8,10 @@
 //! at where one does, as `identify` answers a level requested in another
 //! unit (`crate::error::LevelSlip`).
 
+use crate::error::MIN_MEDIAN_PRESSURE;
 use crate::io::fitted_ranges::FittedRanges;
+use crate::io::rig::INFLATION;
+use crate::io::rig_rows::meant;
 pub(super) use crate::io::rig_rows::{refuse_rows_not_in_pa, Known};
 use crate::tyre::Tyre;
 
@@ -29,4 +32,24 @@ pub(super) fn tyre_pressures(tyre: &Tyre, fitted: Option<&FittedRanges>) -> Opti
     }
     let fitted = fitted.and_then(|r| r.pressure)?;
     Some((fitted, "the pressures the tyre was fitted to"))
+}
+
+/// Whether the pressures of `p` below [`MIN_MEDIAN_PRESSURE`] read in
+/// more than one unit (the first of kPa, bar and psi that lands each among
+/// the pressures `known`, else a pneumatic tyre's): 2.2 and 220 are
+/// 2.2 bar and 220 kPa, which one unit for the column cannot say.
+pub(super) fn mixed_units(p: &[f64], known: Option<Known>) -> bool {
+    let mut units = p
+        .iter()
+        .filter(|v| **v > 0.0 && **v < MIN_MEDIAN_PRESSURE)
+        .map(|&v| {
+            known
+                .and_then(|k| meant(v, k))
+                .or_else(|| meant(v, INFLATION))
+                .map(|m| m.unit)
+        });
+    let Some(first) = units.next() else {
+        return false;
+    };
+    units.any(|u| u != first)
 }

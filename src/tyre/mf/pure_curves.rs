@@ -70,7 +70,7 @@ impl std::fmt::Display for PeakFriction {
             true => (
                 "|Fy|/Fz",
                 format!(
-                    "slip angle {} rad ({}°)",
+                    "slip angle {} rad, {}°",
                     readable(self.slip, 3),
                     readable(self.slip.to_degrees(), 3)
                 ),
@@ -79,7 +79,7 @@ impl std::fmt::Display for PeakFriction {
         };
         write!(
             f,
-            "the file's pure {} force peaks at {force} = {} (at Fz = {} N, {slip}), above the {WARN_FRICTION} of any tyre on a road or rig (racing slicks about 1.8): its forces there are the file's, not a tyre's",
+            "the file's pure {} force peaks at {force} = {} at Fz = {} N and {slip}, above the {WARN_FRICTION} of any tyre on a road or rig (racing slicks about 1.8): its forces there are the file's, not a tyre's",
             if self.lateral { "lateral" } else { "longitudinal" },
             readable(self.ratio, 3),
             rounded(self.load, 5),

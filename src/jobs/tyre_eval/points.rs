@@ -1,0 +1,106 @@
+//! The points file of `tyre-eval`, read and checked before anything is
+//! evaluated: its five input columns and optional `pressure`, every value
+//! no tyre is evaluated at refused at its cell in one run (`physical.rs`),
+//! a pressure not in Pa (each implausible cell with the unit it likely
+//! reads in: `pressure.rs`) and loads in kN.
+
+use super::{physical, pressure};
+use crate::error::{Error, InputProblem};
+use crate::io::rig::{load_in_kn, pressure_not_in_pa};
+use std::path::Path;
+
+/// The points file's columns, checked: `fz, kappa, alpha, camber,
+/// speed` in that order, the pressures where given, and the file's
+/// columns for errors found later.
+pub(super) struct PointColumns {
+    pub(super) file: crate::io::Columns,
+    pub(super) inputs: Vec<(&'static str, Vec<f64>)>,
+    pub(super) pressure: Option<Vec<f64>>,
+}
+
+/// Reads the points of `points`, refusing a value no tyre is evaluated
+/// at (every one, in row order), a pressure not positive or not in Pa
+/// (a row's read against the pressures `known` of the tyre) and loads in
+/// kN, each at its cell.
+pub(super) fn read_points(
+    points: &Path,
+    known: Option<pressure::Known>,
+) -> Result<PointColumns, Error> {
+    // The cells that are no finite numbers are said with the values no
+    // tyre is evaluated at, in one run.
+    let layout = crate::io::Layout {
+        required: &["fz", "kappa", "alpha", "camber", "speed"],
+        optional: &["pressure"],
+        also_read: Some(&[]),
+    };
+    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(points, layout)?;
+    let pressure = c.take_optional("pressure");
+    let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
+        .into_iter()
+        .map(|n| (n, c.take(n)))
+        .collect();
+    let given = inputs
+        .iter()
+        .map(|(n, v)| (*n, v))
+        .chain(pressure.as_ref().map(|p| ("pressure", p)));
+    // Every point no tyre is evaluated at, in row order (then column).
+    let mut refused: Vec<(usize, usize, &str, InputProblem)> = given
+        .enumerate()
+        .flat_map(|(k, (name, values))| {
+            physical::not_physical(name, values)
+                .into_iter()
+                .map(move |(i, problem)| (i, k, name, problem))
+        })
+        .collect();
+    // A pressure at or below zero is said as such, with the rest.
+    if let Some(p) = &pressure {
+        refused.retain(|(i, _, name, _)| *name != "pressure" || p[*i] > 0.0);
+        refused.extend(
+            p.iter()
+                .enumerate()
+                .filter(|(_, v)| v.is_finite() && **v <= 0.0)
+                .map(|(i, &value)| {
+                    (
+                        i,
+                        5,
+                        "pressure",
+                        InputProblem::NonPositivePressure { value },
+                    )
+                }),
+        );
+    }
+    let mut errors: Vec<crate::error::InputError> = refused
+        .into_iter()
+        .map(|(i, _, name, problem)| c.error_at(points, i, name, problem))
+        .collect();
+    errors.extend(bad_cells);
+    if let Some(e) = crate::error::InputError::all_in_file_order(points, errors) {
+        return Err(e.into());
+    }
+    // A pressure written in kPa, bar or psi (a .tir clamps it to its
+    // range without a word of the unit).
+    // One unit for the whole column is said once, by its median; cells
+    // in different units (2.2 in bar beside 220 in kPa) each with its own.
+    let mixed = pressure
+        .as_deref()
+        .is_some_and(|p| pressure::mixed_units(p, known));
+    if let Some((i, slip)) = pressure
+        .as_deref()
+        .filter(|_| !mixed)
+        .and_then(|p| pressure_not_in_pa(p, known))
+    {
+        return Err(c.error_at(points, i, "pressure", slip.into()).into());
+    }
+    if let Some(p) = &pressure {
+        pressure::refuse_rows_not_in_pa(points, &c, p, known)?;
+    }
+    // A car's loads written in kN; the points off the road do not count.
+    if let Some((i, slip)) = load_in_kn(&inputs[0].1, |fz| fz > 0.0) {
+        return Err(c.error_at(points, i, "fz", slip.into()).into());
+    }
+    Ok(PointColumns {
+        file: c,
+        inputs,
+        pressure,
+    })
+}

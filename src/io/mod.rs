@@ -32,4 +32,5 @@ pub use run::{
 pub use scenario::{load_scenario, load_tyre, Scenario, ScenarioFile};
 pub(crate) use tables::check_tyre_at_load;
 pub use tables::load_tyre_with_ranges;
+pub use toml_file::vehicle_keys::UnreadKey;
 pub use toml_file::{load_toml, param_error, TomlSource};

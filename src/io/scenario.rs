@@ -181,6 +181,8 @@ pub struct Scenario {
     /// The steady lateral acceleration a step steer was sized for
     /// (`lateral_acceleration`), m/s²; None for any other amplitude.
     pub asked_ay: Option<f64>,
+    /// `[vehicle]` keys the tool does not read, set aside.
+    pub unread: Vec<crate::io::toml_file::vehicle_keys::UnreadKey>,
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end
@@ -304,6 +306,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         cleaning,
         fitted_ranges,
         asked_ay,
+        unread: src.unread_vehicle_keys(),
     })
 }
 

@@ -141,7 +141,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         &mut inputs,
     )?;
     notes.splice(0..0, folder_notes);
-    let unread = src.unread_vehicle_keys().into_iter().map(|u| u.note(&file));
+    let unread = src.unread_vehicle_keys().into_iter().map(|u| u.note());
     notes.splice(0..0, unread);
     check_stated(&src, &f.channels, &runs)?;
     let stated_rate = src.key_span("diagnose.sample_rate").is_some();

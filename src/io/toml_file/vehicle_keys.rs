@@ -28,6 +28,8 @@ pub(crate) const VEHICLE_KEYS: &[&str] = &[
 /// A `[vehicle]` key the tool does not read, set aside.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct UnreadKey {
+    /// The file.
+    pub file: std::path::PathBuf,
     /// The key.
     pub key: String,
     /// Its line in the file, 1-based.
@@ -35,11 +37,11 @@ pub struct UnreadKey {
 }
 
 impl UnreadKey {
-    /// What a reader says of it, in `file`.
-    pub fn note(&self, file: &std::path::Path) -> String {
+    /// What a reader says of it.
+    pub fn note(&self) -> String {
         format!(
             "{}:{}: [vehicle] `{}` is no key this tool reads (FORMATS.md allows more): set aside, not used",
-            file.display(),
+            self.file.display(),
             self.line,
             self.key
         )
@@ -71,6 +73,7 @@ impl TomlSource {
                 let end = item.span()?.end;
                 let line = line_col(&self.text, start).0;
                 let unread = UnreadKey {
+                    file: self.path.clone(),
                     key: k.to_string(),
                     line,
                 };

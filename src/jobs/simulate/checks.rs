@@ -68,6 +68,7 @@ pub(super) struct Said {
 /// Everything this module says about scenario `sc` and its history `h`.
 pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     let mut said = Said::default();
+    said.notes.extend(sc.unread.iter().map(|u| u.note()));
     said.warnings.extend(sc.model.vehicle.unlikely());
     straight_running(sc, &mut said);
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {

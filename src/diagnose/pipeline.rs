@@ -150,6 +150,7 @@ fn below_scatter(n: &ChannelNoise) -> Option<Note> {
             channel: n.channel,
             stated: n.noise_floor,
             scatter: n.scatter,
+            weighted: n.scale,
         },
     )
 }

@@ -384,6 +384,10 @@ pub enum Note {
         stated: f64,
         /// The scatter measured (median over runs), the channel's unit.
         scatter: f64,
+        /// The scale the fits weigh the channel by, the channel's unit: the
+        /// stated uncertainty, or a share of its RMS signal where that is
+        /// larger ([`crate::diagnose::model::scale::SIGNAL_SHARE`]).
+        weighted: f64,
     },
 }
 

@@ -122,6 +122,22 @@ fn not_identifiable(n: &NotIdentifiable) -> String {
     )
 }
 
+/// What a share `percent` of the gap removed says: none where it rounds
+/// to 0 or below (not "removes -0.0 %" or "removes -0.5 %"), with how
+/// much larger it leaves the gap where it does.
+fn removal(percent: f64) -> String {
+    if percent >= 0.05 {
+        format!("removes {percent:.1} % of it")
+    } else if percent > -0.05 {
+        "removes none of it".into()
+    } else {
+        format!(
+            "removes none of it (it leaves the held-out gap {:.1} % larger)",
+            -percent
+        )
+    }
+}
+
 /// A gap no candidate is accepted for. Where the best removes less than
 /// the acceptance share and fails nothing else, no candidate explains it:
 /// a model-form error outside the library, and the sentence adds any
@@ -138,8 +154,8 @@ fn outside(o: &OutsideLibrary) -> String {
     let name = joined(&best.effects, "+");
     if let [Refusal::BelowAcceptance { threshold_percent }] = best.why[..] {
         return format!(
-            "{gap} that no candidate effect explains: the best, {name}, removes {:.1} % of it (acceptance needs {threshold_percent:.0} %) — a model-form error outside the library",
-            best.reduction_percent
+            "{gap} that no candidate effect explains: the best, {name}, {} (acceptance needs {threshold_percent:.0} %) — a model-form error outside the library",
+            removal(best.reduction_percent)
         );
     }
     // Below the share and failing more: the share once, then the rest
@@ -149,15 +165,15 @@ fn outside(o: &OutsideLibrary) -> String {
     if best.why.iter().any(below) {
         let rest: Vec<String> = best.why.iter().filter(|r| !below(r)).map(refusal).collect();
         return format!(
-            "{gap} that no candidate effect explains: the best, {name}, removes {:.1} % of it, less than the {:.0} % acceptance needs, and besides {} — a model-form error outside the library",
-            best.reduction_percent,
+            "{gap} that no candidate effect explains: the best, {name}, {}, less than the {:.0} % acceptance needs, and besides {} — a model-form error outside the library",
+            removal(best.reduction_percent),
             o.threshold_percent,
             rest.join("; ")
         );
     }
     format!(
-        "{gap} for which no candidate effect is accepted: the best, {name}, removes {:.1} % of it (acceptance needs {:.0} %) but is refused: {} — no verdict from the library",
-        best.reduction_percent,
+        "{gap} for which no candidate effect is accepted: the best, {name}, {} (acceptance needs {:.0} %) but is refused: {} — no verdict from the library",
+        removal(best.reduction_percent),
         o.threshold_percent,
         refusals(best)
     )
@@ -359,14 +375,28 @@ pub fn note(n: &Note) -> String {
             channel,
             stated,
             scatter,
-        } => format!(
-            "[channels] {} = {} {u}: the channel scatters by {} {u} from sample to sample, {} times what is stated; it is weighted as stated and may dominate every fit (state at least its scatter, or leave the key out for the tool's estimate)",
-            channel.name(),
-            crate::error::Num(*stated),
-            crate::format::rounded(*scatter, 2),
-            crate::format::rounded(scatter / stated, 2),
-            u = channel.unit(),
-        ),
+            weighted,
+        } => {
+            let u = channel.unit();
+            // A scale floored by the signal's share is not what is stated:
+            // the note must not say the weight it does not use.
+            let weight = if *weighted > stated * (1.0 + 1e-9) {
+                format!(
+                    "it is weighted by {} {u} instead, {} % of the channel's RMS signal (the least any channel is weighted by), and may still dominate every fit",
+                    crate::format::rounded(*weighted, 2),
+                    crate::diagnose::model::scale::SIGNAL_SHARE * 100.0
+                )
+            } else {
+                "it is weighted as stated and may dominate every fit".into()
+            };
+            format!(
+                "[channels] {} = {} {u}: the channel scatters by {} {u} from sample to sample, {} times what is stated; {weight} (state at least its scatter, or leave the key out for the tool's estimate)",
+                channel.name(),
+                crate::error::Num(*stated),
+                crate::format::rounded(*scatter, 2),
+                crate::format::rounded(scatter / stated, 2),
+            )
+        }
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),

@@ -93,10 +93,10 @@ impl TomlSource {
             .collect()
     }
 
-    /// The text with every unread `[vehicle]` key's `key = value` blanked
-    /// (spaces, newlines kept: every byte where it was); None when there is
-    /// none.
-    pub(super) fn without_unread_vehicle_keys(&self) -> Option<String> {
+    /// The file with every unread `[vehicle]` key's `key = value` blanked
+    /// in its text (spaces, newlines kept: every byte where it was); None
+    /// when there is none.
+    pub(super) fn without_unread_vehicle_keys(&self) -> Option<TomlSource> {
         let spans = self.unread_vehicle_spans();
         if spans.is_empty() {
             return None;
@@ -111,7 +111,11 @@ impl TomlSource {
         }
         // Only ASCII bytes of whole `key = value` runs were replaced, each
         // byte of a multi-byte character by a space: still UTF-8.
-        String::from_utf8(bytes).ok()
+        let text = String::from_utf8(bytes).ok()?;
+        Some(TomlSource {
+            path: self.path.clone(),
+            text,
+        })
     }
 }
 
@@ -155,7 +159,7 @@ mod tests {
         let unread = src.unread_vehicle_keys();
         let keys: Vec<(&str, usize)> = unread.iter().map(|u| (u.key.as_str(), u.line)).collect();
         assert_eq!(keys, [("roll_stiffness", 9), ("notes", 10)]);
-        let blanked = src.without_unread_vehicle_keys().unwrap();
+        let blanked = src.without_unread_vehicle_keys().unwrap().text;
         assert_eq!(blanked.len(), text.len());
         assert_eq!(blanked.lines().count(), text.lines().count());
         assert!(!blanked.contains("roll_stiffness") && !blanked.contains("\"a\""));

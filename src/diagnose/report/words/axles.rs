@@ -92,6 +92,12 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
         .iter()
         .map(|v| {
             let digits = if v.unit == "-" { 3 } else { 1 };
+            // A dimensionless value (peak friction) is written without a
+            // unit, not with "-" ("1.129 ± 0.122 -;").
+            let unit = match v.unit {
+                "-" => String::new(),
+                u => format!(" {u}"),
+            };
             if v.held {
                 return format!(
                     "{} {:.digits$} (held at the prior's centre, the geometric mean of its range)",
@@ -105,13 +111,12 @@ pub fn axle_values(parameters: &[AxleValue]) -> Vec<String> {
                     1,
                 ),
                 None if v.std_error.is_finite() => format!(
-                    "{} {:.digits$} ± {} {}",
+                    "{} {:.digits$} ± {}{unit}",
                     v.name,
                     v.value,
                     super::std_error(v.std_error),
-                    v.unit
                 ),
-                None => format!("{} {:.digits$} {} (not pinned)", v.name, v.value, v.unit),
+                None => format!("{} {:.digits$}{unit} (not pinned)", v.name, v.value),
             }
         })
         .collect()

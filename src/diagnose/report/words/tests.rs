@@ -591,3 +591,24 @@ fn a_stated_uncertainty_below_the_signal_floor_is_not_said_to_weigh_as_stated() 
     );
     assert!(note(1e-6).contains("it is weighted as stated"));
 }
+
+#[test]
+fn a_dimensionless_axle_value_is_written_without_a_unit() {
+    use crate::diagnose::base::identify::AxleValue;
+    let value = |name, unit, value, std_error| AxleValue {
+        name,
+        unit,
+        value,
+        std_error,
+        limit: None,
+        held: false,
+    };
+    let said = axle_values(&[
+        value("peak friction", "-", 1.129, 0.122),
+        value("front cornering coefficient", "1/rad", 12.04, 2.51),
+        value("peak friction", "-", 1.129, f64::NAN),
+    ]);
+    assert_eq!(said[0], "peak friction 1.129 ± 0.122");
+    assert!(said[1].ends_with(" 1/rad"), "{}", said[1]);
+    assert_eq!(said[2], "peak friction 1.129 (not pinned)");
+}

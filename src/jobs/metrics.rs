@@ -11,7 +11,7 @@ use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
 
-mod filter_speed;
+pub(super) mod filter_speed;
 mod steps;
 
 /// The units of the metric reports.

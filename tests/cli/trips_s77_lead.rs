@@ -303,3 +303,33 @@ fn a_vehicle_key_formats_allows_is_set_aside_and_said_and_a_slip_is_refused() {
         "{e}"
     );
 }
+
+/// `[metrics] filter_hz = 3` in a step-steer scenario moved E_r from 0.0495
+/// to 0.0393 s without a word, where `metrics` on the same history warns
+/// that the filter measures itself (fresh-eyes round 5).
+#[test]
+fn simulate_warns_of_a_low_pass_slow_enough_to_measure_itself() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = fs::read_to_string(root().join("scenarios/step_gbt6323_pac89.toml"))
+        .unwrap()
+        .replace(
+            "\"../tyres/pac89_adams_example.toml\"",
+            &format!(
+                "\"{}\"",
+                root().join("tyres/pac89_adams_example.toml").display()
+            ),
+        );
+    for (hz, warned) in [(3.0, true), (20.0, false)] {
+        let file = format!("f{hz}.toml");
+        fs::write(
+            dir.path().join(&file),
+            format!("{scenario}\n[metrics]\nfilter_hz = {hz:.1}\n"),
+        )
+        .unwrap();
+        let o = run_in(dir.path(), &["simulate", &file, "--out", &format!("o{hz}")]);
+        let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+        assert!(o.status.success(), "{said}");
+        let says = said.contains(&format!("the low-pass at {hz} Hz rises (10–90 %) in"));
+        assert_eq!(says, warned, "{hz} Hz: {said}");
+    }
+}

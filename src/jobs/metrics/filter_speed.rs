@@ -40,7 +40,7 @@ fn rise_time(dt: f64, cutoff_hz: f64) -> f64 {
 /// The warning where the filter `m` was read through rises in more than
 /// [`FILTER_RISE_SHARE`] of the yaw rate's response time, with the least
 /// cutoff that keeps it within (the rise time scales as 1/cutoff).
-pub(super) fn filter_measures_itself(m: &StepMetrics, dt: f64) -> Option<String> {
+pub(crate) fn filter_measures_itself(m: &StepMetrics, dt: f64) -> Option<String> {
     let f = m.filter_hz?;
     let response = m.yaw_rate_response_time;
     let rise = rise_time(dt, f);

@@ -149,6 +149,13 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         )
     });
     warnings.extend(metrics.as_ref().and_then(StepMetrics::settling_warning));
+    // A `[metrics] filter_hz` slow enough to measure itself, said as
+    // `metrics` says it of a log (its rows every step).
+    warnings.extend(
+        metrics.as_ref().and_then(|m| {
+            super::metrics::filter_speed::filter_measures_itself(m, sc.integrator.step)
+        }),
+    );
     // A step no steering can drive (an instant one, at rise_time = 0).
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));

@@ -244,7 +244,7 @@ impl TomlSource {
             Some(e.message().trim().to_string())
         };
         // `[vehicle]` keys no vehicle reads set aside (`vehicle_keys`).
-        let blanked = self.without_unread_vehicle_keys();
+        let blanked = self.without_unread_vehicle_keys(&reparse);
         let this = blanked.as_ref().unwrap_or(self);
         toml::from_str(&this.text).map_err(|e| this.toml_error(&e, &reparse))
     }

@@ -55,10 +55,25 @@ const FILES: [&str; 4] = [
     "report.html",
 ];
 
+/// What `simulate` says of a car's `.tir` files, said of a campaign's
+/// given tyre files too: a peak friction no tyre has, a nominal load of
+/// another class of vehicle.
+fn given_tyre_notes(c: &crate::diagnose::Campaign) -> Vec<String> {
+    use crate::jobs::simulate::{checks, nominal_load};
+    let crate::diagnose::campaign::BaseTyres::Given(f, r) = &c.tyres else {
+        return Vec::new();
+    };
+    let mut notes = checks::tir_friction_of([f, r]);
+    let [front, rear] = nominal_load::far_from_nominal_of(&c.vehicle, [f, r]);
+    notes.extend(checks::per_axle_tir(front, rear));
+    notes
+}
+
 /// Diagnoses the campaign at `path`; `out` is the output folder (default
 /// `out/<campaign name>`), checked against the inputs first.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
-    let campaign = load_campaign(path)?;
+    let mut campaign = load_campaign(path)?;
+    campaign.notes.extend(given_tyre_notes(&campaign));
     let out_dir = out.map_or_else(
         || PathBuf::from("out").join(&campaign.name),
         Path::to_path_buf,

@@ -333,3 +333,43 @@ fn simulate_warns_of_a_low_pass_slow_enough_to_measure_itself() {
         assert_eq!(says, warned, "{hz} Hz: {said}");
     }
 }
+
+/// A campaign on a truck's `.tir` (FNOMIN 30 kN under a 1530 kg sedan)
+/// was diagnosed as "outside the library" without the word `simulate`
+/// says of the same file (fresh-eyes round 5): the campaign's notes now
+/// say it.
+#[test]
+fn a_campaign_on_a_tyre_for_another_class_of_vehicle_says_so() {
+    let test = "a_campaign_on_a_tyre_for_another_class_of_vehicle_says_so";
+    let Some(tir) = shared_data(test, "tir_public/Truck_430_50R38.tir") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let camp = synth_campaign(dir.path(), "camp", &["--seed", "1"]);
+    let path = camp.join("vehicle.toml");
+    let v = fs::read_to_string(&path).unwrap();
+    let given = v
+        .replace(
+            "rig = \"tyre_rig.csv\"\nmodel = \"pac89\"\n",
+            &format!("file = \"{}\"\n", tir.display()),
+        )
+        .replace("[diagnose]\n", "[diagnose]\neffects = [\"sensor_delay\"]\n");
+    assert!(given.contains("Truck_430"), "{given}");
+    fs::write(&path, given).unwrap();
+    let out = dir.path().join("d");
+    let o = run(&[
+        "diagnose",
+        camp.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    let json = fs::read_to_string(out.join("diagnosis.json")).unwrap();
+    assert!(
+        json.contains("the front tyres' .tir: its wheels carry 4507 N each standing still, 0.15 times the file's FNOMIN = 30000 N")
+            && json.contains("the rear tyres' .tir: its wheels carry 2995 N")
+            && json.contains("a tyre for another class of vehicle"),
+        "{json}"
+    );
+}

@@ -382,7 +382,7 @@ pub fn note(n: &Note) -> String {
             // the note must not say the weight it does not use.
             let weight = if *weighted > stated * (1.0 + 1e-9) {
                 format!(
-                    "it is weighted by {} {u} instead, {} % of the channel's RMS signal (the least any channel is weighted by), and may still dominate every fit",
+                    "it is weighted by {} {u} instead, {} % of the channel's RMS signal (the least any channel is weighted by)",
                     crate::format::rounded(*weighted, 2),
                     crate::diagnose::model::scale::SIGNAL_SHARE * 100.0
                 )
@@ -561,5 +561,7 @@ mod lookalike_tests;
 mod parameter_tests;
 #[cfg(test)]
 mod prior_tests;
+#[cfg(test)]
+mod small_tests;
 #[cfg(test)]
 mod tests;

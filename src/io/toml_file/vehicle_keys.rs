@@ -8,6 +8,7 @@
 //! is in the file — and the reader reports it (a campaign's notes,
 //! `simulate`'s warnings): nothing a file says is dropped unsaid.
 
+use super::home::{belongs, Reparse};
 use super::{line_col, TomlSource};
 
 /// The keys of `[vehicle]` the tool reads ([`crate::vehicle::Vehicle`]'s
@@ -95,9 +96,13 @@ impl TomlSource {
 
     /// The file with every unread `[vehicle]` key's `key = value` blanked
     /// in its text (spaces, newlines kept: every byte where it was); None
-    /// when there is none.
-    pub(super) fn without_unread_vehicle_keys(&self) -> Option<TomlSource> {
-        let spans = self.unread_vehicle_spans();
+    /// when there is none. A key another table of the file reads (`speed`,
+    /// a manoeuvre's) is left for the parse to refuse with the table it
+    /// belongs in (`reparse` reads the file as its type).
+    pub(super) fn without_unread_vehicle_keys(&self, reparse: &Reparse) -> Option<TomlSource> {
+        let mut spans = self.unread_vehicle_spans();
+        spans
+            .retain(|(u, _)| belongs(&self.text, &format!("vehicle.{}", u.key), reparse).is_none());
         if spans.is_empty() {
             return None;
         }
@@ -159,7 +164,8 @@ mod tests {
         let unread = src.unread_vehicle_keys();
         let keys: Vec<(&str, usize)> = unread.iter().map(|u| (u.key.as_str(), u.line)).collect();
         assert_eq!(keys, [("roll_stiffness", 9), ("notes", 10)]);
-        let blanked = src.without_unread_vehicle_keys().unwrap().text;
+        let none = |_: &str| None;
+        let blanked = src.without_unread_vehicle_keys(&none).unwrap().text;
         assert_eq!(blanked.len(), text.len());
         assert_eq!(blanked.lines().count(), text.lines().count());
         assert!(!blanked.contains("roll_stiffness") && !blanked.contains("\"a\""));
@@ -170,7 +176,9 @@ mod tests {
 
     #[test]
     fn a_file_without_unread_keys_is_parsed_as_written() {
-        assert!(source(SEDAN).without_unread_vehicle_keys().is_none());
+        assert!(source(SEDAN)
+            .without_unread_vehicle_keys(&|_| None)
+            .is_none());
         assert!(source("[vehicle\nmass = 1")
             .unread_vehicle_keys()
             .is_empty());

@@ -109,14 +109,18 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
 /// (3.37 at 250 N) without a word. One line for both axles where they
 /// share the file's peak.
 fn tir_friction(sc: &Scenario) -> Vec<String> {
-    let [front, rear] = [&sc.model.front, &sc.model.rear]
-        .map(|t| crate::jobs::tyre_eval::peak_of(t).map(|p| p.to_string()));
+    tir_friction_of([&sc.model.front, &sc.model.rear])
+}
+
+/// [`tir_friction`] of a front and a rear tyre (a campaign's given files).
+pub(crate) fn tir_friction_of(tyres: [&Tyre; 2]) -> Vec<String> {
+    let [front, rear] = tyres.map(|t| crate::jobs::tyre_eval::peak_of(t).map(|p| p.to_string()));
     per_axle_tir(front, rear)
 }
 
 /// What is said of each axle's `.tir` (`None`: nothing), one line for both
 /// where they say the same.
-fn per_axle_tir(front: Option<String>, rear: Option<String>) -> Vec<String> {
+pub(crate) fn per_axle_tir(front: Option<String>, rear: Option<String>) -> Vec<String> {
     match (front, rear) {
         (Some(f), Some(r)) if f == r => vec![format!("the front and rear tyres' .tir: {f}")],
         (f, r) => [("front", f), ("rear", r)]

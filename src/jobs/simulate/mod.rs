@@ -4,8 +4,8 @@
 //! the run disagree (`gap.json`) out; beside them, what the run is that
 //! the scenario's words do not say ([`checks`]).
 
-mod checks;
-mod nominal_load;
+pub(crate) mod checks;
+pub(crate) mod nominal_load;
 mod transient;
 
 use super::metrics::{metric_lines, UNITS};

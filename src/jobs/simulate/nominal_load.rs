@@ -8,6 +8,7 @@
 
 use crate::io::Scenario;
 use crate::tyre::Tyre;
+use crate::vehicle::Vehicle;
 
 /// The band of a static wheel load over the file's `FNOMIN` a tyre is
 /// chosen for: a road car's wheel carries 0.6–1.2 of its tyre's nominal
@@ -21,8 +22,14 @@ pub(super) const NOMINAL_SHARE: (f64, f64) = (1.0 / 3.0, 3.0);
 /// the car's static wheel loads lie beyond [`NOMINAL_SHARE`] of (`checks`
 /// words it per axle, one line for both where they say the same).
 pub(super) fn far_from_nominal(sc: &Scenario) -> [Option<String>; 2] {
-    let (front, rear) = sc.model.vehicle.static_axle_loads();
-    [(&sc.model.front, front), (&sc.model.rear, rear)].map(|(tyre, load)| {
+    far_from_nominal_of(&sc.model.vehicle, [&sc.model.front, &sc.model.rear])
+}
+
+/// [`far_from_nominal`] of a vehicle on its front and rear tyres (a
+/// campaign's given tyre files, which `diagnose` says the same of).
+pub(crate) fn far_from_nominal_of(vehicle: &Vehicle, [f, r]: [&Tyre; 2]) -> [Option<String>; 2] {
+    let (front, rear) = vehicle.static_axle_loads();
+    [(f, front), (r, rear)].map(|(tyre, load)| {
         let Tyre::MagicFormula(t) = tyre else {
             return None;
         };

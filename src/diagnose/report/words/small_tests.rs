@@ -1,0 +1,55 @@
+//! The words of small outcomes: shares removed, stated weights, axle
+//! values without a unit.
+
+use super::*;
+
+#[test]
+fn a_share_removed_at_or_below_zero_is_said_as_none() {
+    assert_eq!(removal(30.04), "removes 30.0 % of it");
+    assert_eq!(removal(-0.0), "removes none of it");
+    assert_eq!(removal(0.04), "removes none of it");
+    assert_eq!(
+        removal(-0.5),
+        "removes none of it (it leaves the held-out gap 0.5 % larger)"
+    );
+}
+
+#[test]
+fn a_stated_uncertainty_below_the_signal_floor_is_not_said_to_weigh_as_stated() {
+    let note = |weighted| {
+        note(&Note::UncertaintyBelowScatter {
+            channel: crate::diagnose::model::channels::Channel::Beta,
+            stated: 1e-6,
+            scatter: 3.2e-4,
+            weighted,
+        })
+    };
+    let floored = note(3.22e-4);
+    assert!(
+        floored.contains("it is weighted by 0.00032 rad instead, 2 % of the channel's RMS signal")
+            && !floored.contains("weighted as stated"),
+        "{floored}"
+    );
+    assert!(note(1e-6).contains("it is weighted as stated"));
+}
+
+#[test]
+fn a_dimensionless_axle_value_is_written_without_a_unit() {
+    use crate::diagnose::base::identify::AxleValue;
+    let value = |name, unit, value, std_error| AxleValue {
+        name,
+        unit,
+        value,
+        std_error,
+        limit: None,
+        held: false,
+    };
+    let said = axle_values(&[
+        value("peak friction", "-", 1.129, 0.122),
+        value("front cornering coefficient", "1/rad", 12.04, 2.51),
+        value("peak friction", "-", 1.129, f64::NAN),
+    ]);
+    assert_eq!(said[0], "peak friction 1.129 ± 0.122");
+    assert!(said[1].ends_with(" 1/rad"), "{}", said[1]);
+    assert_eq!(said[2], "peak friction 1.129 (not pinned)");
+}

@@ -55,7 +55,7 @@ pub use crate::diagnose::report::{
 use crate::diagnose::report::{CalibrationSource, Confounded, GapFinding, InSet, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
-use crate::diagnose::campaign::Campaign;
+use crate::diagnose::campaign::{Campaign, StatedFriction};
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
@@ -459,6 +459,12 @@ fn run(
         &base_no_tyre,
         &calibrated,
     );
+    if let Verdict::NotIdentifiable(n) = &mut verdict {
+        n.road_friction = c.friction_at.map(|line| StatedFriction {
+            value: c.friction,
+            line,
+        });
+    }
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {
         e.confounded_with = lookalikes_alone(&singles, &confounded, found.start, &base);

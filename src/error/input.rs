@@ -166,6 +166,19 @@ pub enum InputError {
         /// The folder.
         path: PathBuf,
     },
+    /// Two campaigns of a batch folder whose output folders would be one:
+    /// a folder and a `.toml` file of the same stem.
+    #[error("{path}: the campaigns `{first}` and `{second}` would both write to `{stem}/` of the output folder: rename one")]
+    CampaignStemTwice {
+        /// The batch folder.
+        path: PathBuf,
+        /// The first campaign's name in the folder.
+        first: String,
+        /// The second's.
+        second: String,
+        /// The stem they share.
+        stem: String,
+    },
     /// Several places of one file refused at once, in file order (built by
     /// [`InputError::all_of`]): a user mends them in one pass rather than
     /// one per run.
@@ -279,6 +292,7 @@ impl InputError {
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
             | InputError::NoCampaign { path }
+            | InputError::CampaignStemTwice { path, .. }
             | InputError::Several { path, .. } => path,
         }
     }

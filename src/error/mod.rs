@@ -7,6 +7,7 @@
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
+mod campaign_file;
 mod duplicate;
 mod fit;
 mod input;
@@ -27,6 +28,7 @@ mod steady;
 mod tests;
 mod units;
 
+pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
@@ -43,8 +45,9 @@ pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
 pub use reason::{
-    BeyondSignal, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce, NoPressureLine,
-    ParamReason, PerLoad, ScheduleColumn, SlowSteer, StagedMagicFormula, Waveform, DYNAMIC_INDEX,
+    BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, GivenTyres, Limit, MassDigit,
+    NoLateralForce, NoPressureLine, ParamReason, PerLoad, ScheduleColumn, SlowSteer,
+    StagedMagicFormula, TyreSourceError, Waveform, DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;

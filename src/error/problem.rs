@@ -534,6 +534,9 @@ pub enum InputProblem {
         /// The speed threshold, m/s.
         min_speed: f64,
     },
+    /// A campaign file that is no campaign, or lists its runs by a glob.
+    #[error(transparent)]
+    Campaign(Box<super::CampaignFileProblem>),
 }
 
 /// Where [`InputProblem::MissingFile`]'s path was read from: a relative

@@ -28,6 +28,7 @@ impl InputProblem {
             InputProblem::TirMissingKey { .. } => "TirMissingKey",
             InputProblem::TirCoefficientsMissing { .. } => "TirCoefficientsMissing",
             InputProblem::TirValue(_) => "TirValue",
+            InputProblem::Campaign(_) => "Campaign",
             InputProblem::NotAShard { .. } => "NotAShard",
             InputProblem::TimeNotIncreasing { .. } => "TimeNotIncreasing",
             InputProblem::TooFewSamples => "TooFewSamples",

@@ -7,19 +7,21 @@ use super::options::{ModeError, OptionsError};
 pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
+pub use campaign::{CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
 use no_grip::no_lateral_force;
 pub use no_grip::NoLateralForce;
 pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
-pub use staged::StagedMagicFormula;
+pub use staged::{GivenTyres, StagedMagicFormula, TyreSourceError};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
 pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod angles;
 mod boxed;
+mod campaign;
 mod checks;
 mod no_grip;
 mod schedule;
@@ -322,6 +324,9 @@ pub enum ParamReason {
     /// A Magic Formula named as a campaign's rig model.
     #[error(transparent)]
     StagedMagicFormula(Box<StagedMagicFormula>),
+    /// A campaign's key wrong for its campaign ([`CampaignReason`]).
+    #[error(transparent)]
+    Campaign(Box<CampaignReason>),
     /// An MFeval `useMode` code that cannot be used.
     #[error(transparent)]
     Mode(Box<ModeError>),

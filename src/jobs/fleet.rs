@@ -97,12 +97,35 @@ pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
         }
         .into());
     }
+    // `z/` and `z.toml` would write one output folder, `z/`.
+    let mut stems: Vec<(String, String)> = out.iter().map(|p| (stem_of(p), name_of(p))).collect();
+    stems.sort();
+    if let Some(w) = stems.windows(2).find(|w| w[0].0 == w[1].0) {
+        return Err(InputError::CampaignStemTwice {
+            path: dir.to_path_buf(),
+            first: w[0].1.clone(),
+            second: w[1].1.clone(),
+            stem: w[0].0.clone(),
+        }
+        .into());
+    }
     Ok(out)
 }
 
 fn name_of(p: &Path) -> String {
     p.file_name()
         .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+}
+
+/// A campaign's output folder name: a folder's name, a file's stem
+/// (`out/a/`, not `out/a.toml/`, a folder named as a file).
+fn stem_of(p: &Path) -> String {
+    if p.is_dir() {
+        name_of(p)
+    } else {
+        p.file_stem()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+    }
 }
 
 /// Diagnoses every campaign of `dir` (or shard `shard`'s) into
@@ -133,8 +156,8 @@ pub fn run_batch(
     let mut rows = Vec::new();
     for &i in &owned {
         let name = name_of(&all[i]);
-        let done =
-            diagnose::run(&all[i], Some(&out_dir.join(&name))).and_then(|r| r.write().map(|()| r));
+        let to = out_dir.join(stem_of(&all[i]));
+        let done = diagnose::run(&all[i], Some(&to)).and_then(|r| r.write().map(|()| r));
         match done {
             Ok(r) => {
                 rows.push(row_of(&name, &r));
@@ -376,8 +399,9 @@ impl FleetReport {
     pub fn summary(&self) -> Vec<String> {
         let failed = self.campaigns.iter().filter(|r| r.failed).count();
         let mut out = vec![format!(
-            "fleet: {} ({failed} failed)",
-            plural(self.campaigns.len(), "campaign", "campaigns")
+            "fleet: {}: {} diagnosed, {failed} failed",
+            plural(self.campaigns.len(), "campaign", "campaigns"),
+            self.campaigns.len() - failed
         )];
         for r in &self.campaigns {
             out.push(if r.failed {

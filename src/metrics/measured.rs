@@ -94,19 +94,19 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
     let mut size: Vec<f64> = at_speed.iter().map(|&i| run.steer[i].abs()).collect();
     size.sort_by(f64::total_cmp);
     let p95 = quantile(&size, 0.95)?;
-    let mut neutral: Vec<f64> = (0..run.t.len())
-        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
-        .map(|i| (run.yaw_rate[i] * wheelbase / run.speed[i]).abs())
+    let mut neutral: Vec<f64> = neutral_at_speed(run, wheelbase, min_speed)
+        .iter()
+        .map(|q| q.abs())
         .collect();
     neutral.sort_by(f64::total_cmp);
     let neutral_p95 = quantile(&neutral, 0.95)?;
-    let turns = neutral_p95 >= 0.01;
+    let turns = neutral_p95 >= TURN;
     // A gentle run (an ISO 7401 step at 100 km/h and 2 m/s² steers
     // 0.008 rad) that turns by 5 mrad of neutral steer is judged too,
     // whatever its steer (divided by 57, it is 0.00014 rad): a straight run
     // with a steer sensor a few milliradians off does not turn.
     let gentle = p95 > 0.0 && neutral_p95 >= GENTLE;
-    let steered = match (p95 >= 0.01, turns) {
+    let steered = match (p95 >= TURN, turns) {
         (true, _) => (0.3 * p95).max(0.005),
         (false, true) if p95 > 0.0 => 0.3 * p95,
         _ if gentle => 0.3 * p95,
@@ -119,7 +119,7 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         .map(|i| {
             (
                 i,
-                run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]),
+                neutral_steer(run.yaw_rate[i], wheelbase, run.speed[i]) / run.steer[i],
             )
         })
         .filter(|(_, q)| q.is_finite())
@@ -141,8 +141,29 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
 }
 
 /// The neutral steer `r·l/u` (95th percentile at speed, rad) from which a
-/// run below 0.01 rad is still judged by [`yaw_per_neutral`].
+/// run below [`TURN`] is still judged by [`yaw_per_neutral`].
 const GENTLE: f64 = 0.005;
+
+/// A steer or neutral steer from which a run turns, rad: a straight run's
+/// steer sensor sits a few milliradians off, and its yaw rate's noise and
+/// drift make a neutral steer of a few milliradians.
+pub const TURN: f64 = 0.01;
+
+/// The steer a neutral car (no under- or oversteer) needs for yaw rate
+/// `yaw_rate` (rad/s) at speed `speed` (m/s) on `wheelbase` (m): `r·l/u`,
+/// rad (Ackermann, small angles). A run's steer is judged against it.
+pub fn neutral_steer(yaw_rate: f64, wheelbase: f64, speed: f64) -> f64 {
+    yaw_rate * wheelbase / speed
+}
+
+/// The neutral steer of each sample of `run` at speed (at least
+/// `min_speed` and 5 m/s), rad, in time order.
+fn neutral_at_speed(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Vec<f64> {
+    (0..run.t.len())
+        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
+        .map(|i| neutral_steer(run.yaw_rate[i], wheelbase, run.speed[i]))
+        .collect()
+}
 
 /// A steer that holds one value over the whole run while the car turns,
 /// judged by the neutral steer `r·l/u` at speed (at least `min_speed` and
@@ -152,16 +173,15 @@ const GENTLE: f64 = 0.005;
 /// refused by `diagnose` and a replay as a dead yaw rate is.
 pub fn dead_steer(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<InputProblem> {
     let value = crate::measured::one_value(&run.steer)?;
-    let mut neutral: Vec<f64> = (0..run.t.len())
-        .filter(|&i| run.speed[i] >= min_speed.max(5.0))
-        .map(|i| run.yaw_rate[i] * wheelbase / run.speed[i])
+    let mut neutral: Vec<f64> = neutral_at_speed(run, wheelbase, min_speed)
+        .into_iter()
         .filter(|q| q.is_finite())
         .collect();
     neutral.sort_by(f64::total_cmp);
     let (lo, hi) = (quantile(&neutral, 0.05)?, quantile(&neutral, 0.95)?);
     let turns = match value == 0.0 {
-        true => lo.abs().max(hi.abs()) >= 0.01,
-        false => lo <= -0.01 && hi >= 0.01,
+        true => lo.abs().max(hi.abs()) >= TURN,
+        false => lo <= -TURN && hi >= TURN,
     };
     turns.then_some(InputProblem::DeadSteer {
         value,

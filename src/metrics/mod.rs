@@ -46,6 +46,7 @@
 
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
+use settling::{settled, settled_within_noise, sideslip_scale, SETTLED_SPREAD};
 
 pub mod applicability;
 pub(crate) mod continuous;
@@ -56,6 +57,7 @@ pub const MIN_FILTER_HZ: f64 = 1.0;
 pub mod measured;
 mod peak;
 mod pulse;
+mod settling;
 pub mod simulated;
 mod step_shape;
 
@@ -309,6 +311,8 @@ struct Normalised {
     spread: f64,
     /// White-noise deviation of the raw normalised signal.
     noise: f64,
+    /// Samples in the shorter of the initial and steady windows.
+    samples: usize,
 }
 
 /// White-noise deviation of `x`, from the median absolute difference of
@@ -347,6 +351,9 @@ fn normalise(
     let sd0 = noise_deviation(raw);
     let (xs, sd) = window_mean(t, x, t_last - s.steady_window, t_last);
     let step = xs - x0;
+    let in_window = |from: f64, to: f64| t.iter().filter(|&&v| v >= from && v <= to).count();
+    let samples =
+        in_window(t_first, t_first + s.pre_window).min(in_window(t_last - s.steady_window, t_last));
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
@@ -355,30 +362,8 @@ fn normalise(
         steady: step,
         spread: sd / step.abs(),
         noise: sd0 / step.abs(),
+        samples,
     })
-}
-
-/// The spread about the steady value, relative to the step, beyond which
-/// a response has not settled.
-const SETTLED_SPREAD: f64 = 0.02;
-
-/// The scale a sideslip's spread is judged on, rad: its step `beta_step`,
-/// or the steer step `steer_step` where that is larger (a sideslip that
-/// barely changes, near the speed where it changes sign, is not judged
-/// against its own near-zero step). A car sliding at its grip limit keeps
-/// its yaw rate and lateral acceleration while its sideslip grows: only
-/// the sideslip shows that it has not settled.
-fn sideslip_scale(beta_step: f64, steer_step: f64) -> f64 {
-    beta_step.abs().max(steer_step.abs())
-}
-
-/// Whether a response whose steady window spreads by `spread` (relative to
-/// the step) has settled, given the white noise `noise` left in it after
-/// the filter (relative alike): the spread beyond the noise, `√(spread² −
-/// noise²)`, within [`SETTLED_SPREAD`]. Unfiltered, a gyro's noise of 3 %
-/// of the step is no motion.
-fn settled(spread: f64, noise: f64) -> bool {
-    (spread * spread - noise * noise).max(0.0).sqrt() < SETTLED_SPREAD
 }
 
 /// ∫ (a − b)² dt over [from, to] (trapezoid, partial end intervals
@@ -548,8 +533,9 @@ pub(crate) fn step_metrics(
         yaw_rate_total_variance: e_r,
         ay_total_variance: e_ay,
         er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
-        settled: settled(r.spread, r_noise)
-            && a.as_ref().is_none_or(|a| settled(a.spread, gain * a.noise))
+        settled: settled_within_noise(&r, r_noise)
+            && a.as_ref()
+                .is_none_or(|a| settled_within_noise(a, gain * a.noise))
             && beta_settled,
         yaw_rate_noise: r_noise,
         yaw_rate_peak_threshold: threshold * 100.0,

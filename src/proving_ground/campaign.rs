@@ -76,6 +76,7 @@ impl Synthetic {
             inputs: Vec::new(),
             vehicle: self.vehicle.clone(),
             friction: 1.0,
+            friction_at: None,
             tyres,
             prior: Default::default(),
             uncertainty: Default::default(),

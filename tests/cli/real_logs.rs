@@ -605,6 +605,7 @@ fn a_sideslip_logged_at_10_hz_in_a_100_hz_log_is_interpolated_between_updates() 
     assert_eq!(held.len(), 1, "{held:?}");
     assert_eq!(held[0]["channel"], "beta");
     assert_eq!(held[0]["every"], 10);
+    assert!((held[0]["log_rate"].as_f64().unwrap() - 100.0).abs() < 1e-9);
     // 1201 samples, 121 updates (the last at 12 s, held for none): 120
     // holds of 9 samples interpolated.
     assert_eq!(held[0]["samples"], 120 * 9);
@@ -612,7 +613,7 @@ fn a_sideslip_logged_at_10_hz_in_a_100_hz_log_is_interpolated_between_updates() 
     assert!(
         stdout.contains("held: beta in ")
             && stdout
-                .contains("updates every 10 samples (10.0 Hz): 1080 held samples interpolated"),
+                .contains("updates every 10 samples of the 100 Hz log (every 0.1 s, 10 Hz): 1080 held samples interpolated"),
         "{stdout}"
     );
     // Nothing else taken for a glitch.

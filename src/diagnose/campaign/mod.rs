@@ -84,6 +84,16 @@ pub struct StatedUncertainty {
     pub beta: Option<f64>,
 }
 
+/// A road friction a campaign states, and the line it is stated on: a
+/// scale on the tyres' grip that a verdict on the axles names.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StatedFriction {
+    /// The road friction scale.
+    pub value: f64,
+    /// Its line in the campaign file.
+    pub line: usize,
+}
+
 /// Where the base model's tyres come from.
 #[derive(Debug, Clone)]
 pub enum BaseTyres {
@@ -115,6 +125,9 @@ pub struct Campaign {
     pub vehicle: Vehicle,
     /// Road friction scale.
     pub friction: f64,
+    /// The line of the campaign file that states `[road] friction` (None:
+    /// not stated, 1.0), for the verdicts that name it.
+    pub friction_at: Option<usize>,
     /// The base tyres.
     pub tyres: BaseTyres,
     /// The prior of axle characteristics identified from the runs (used

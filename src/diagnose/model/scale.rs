@@ -5,7 +5,7 @@
 //! A channel's weight in a fit is `1/s²`. Estimated from the channel's
 //! high-frequency scatter alone (the standard deviation before the first
 //! input, or the robust second differences where that window holds motion,
-//! else the first differences over √2: [`crate::diagnose::report::parts`]),
+//! else the robust second differences: [`crate::diagnose::report::parts`]),
 //! a *smooth* channel — a
 //! state estimator's sideslip, a filtered yaw rate — looks ten times more
 //! precise than a gyro and drowns the other channels, though its real

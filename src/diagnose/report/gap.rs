@@ -126,7 +126,13 @@ pub enum NoiseSource {
     /// input holds motion.
     #[serde(rename = "robust second differences (the window before the input holds motion)")]
     SecondDifferences,
-    /// `std(Δx)/√2` over the whole record: an upper bound for a smooth signal.
+    /// `1.4826·MAD(Δ²x)/√6` over the whole record: no window before the
+    /// input.
+    #[serde(rename = "robust second differences (no window before the input)")]
+    NoWindow,
+    /// `std(Δx)/√2` over the whole record: an upper bound for a smooth
+    /// signal (too few samples for the second differences, or a channel
+    /// whose second differences are mostly zero).
     #[serde(rename = "first differences (an upper bound)")]
     FirstDifferences,
     /// The uncertainty the diagnosis trusts the channel to (stated, or its
@@ -232,6 +238,7 @@ pub fn trusted_channel_gap(
         _ => match scatter_by(&win[0].1, measured) {
             (s, Scatter::BeforeInput) => (s, NoiseSource::BeforeInput),
             (s, Scatter::SecondDifferences) => (s, NoiseSource::SecondDifferences),
+            (s, Scatter::NoWindow) => (s, NoiseSource::NoWindow),
             (s, Scatter::FirstDifferences) => (s, NoiseSource::FirstDifferences),
         },
     };

@@ -7,6 +7,7 @@
 
 use crate::diagnose::base::identify::{AxleIdentification, NoTyre};
 use crate::diagnose::base::TyreSource;
+use crate::diagnose::campaign::StatedFriction;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::report::outcome::{
     Closest, Evidence, GapFinding, Note, RankWarning, Refused, Verdict, VerdictKind, VerdictWarning,
@@ -40,6 +41,7 @@ enum Details<'a> {
         no_tyre: &'a [NoTyre],
         threshold_percent: f64,
         closest: &'a [Closest],
+        road_friction: Option<&'a StatedFriction>,
     },
     OutsideLibrary {
         refused: Option<&'a Refused>,
@@ -95,6 +97,7 @@ impl Serialize for Verdict {
                     no_tyre: &n.no_tyre,
                     threshold_percent: n.threshold_percent,
                     closest: &n.closest,
+                    road_friction: n.road_friction.as_ref(),
                 },
             ),
             Verdict::OutsideLibrary(o) => (

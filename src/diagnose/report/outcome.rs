@@ -187,6 +187,8 @@ pub struct NotIdentifiable {
     /// them, are a tyre, best held-out first: what the base's fingerprint
     /// may come from, though none removes enough of the gap.
     pub closest: Vec<Closest>,
+    /// The road friction the campaign states, which trades off with them.
+    pub road_friction: Option<crate::diagnose::campaign::StatedFriction>,
 }
 
 /// A candidate whose jointly fitted axles are a tyre, and the share of the

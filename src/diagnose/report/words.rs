@@ -113,8 +113,17 @@ fn not_identifiable(n: &NotIdentifiable) -> String {
             each.join(", ")
         )
     };
+    // A stated road friction scales the grip the axles are identified
+    // with: one off the truth bends them, and the user can check it.
+    let road = n.road_friction.map_or(String::new(), |r| {
+        format!(
+            "; the campaign states `[road] friction = {}` (line {}), a scale on the grip that trades off with the axles' peak friction identified from the runs: a road friction off the truth bends them out of any tyre's range (check it, or leave it out for 1)",
+            crate::format::exact(r.value),
+            r.line
+        )
+    });
     format!(
-        "the base model is not identifiable from these runs: {}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {:.3}, noise level {:.3}), so there is no model-form verdict; {closest}",
+        "the base model is not identifiable from these runs: {}; no candidate effect fitted with it gives axles that are a tyre and removes {:.0} % of the gap (held-out error {:.3}, noise level {:.3}), so there is no model-form verdict; {closest}{road}",
         no_tyre_list(&n.no_tyre),
         n.threshold_percent,
         n.heldout_error,
@@ -409,23 +418,22 @@ pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
     format!("channels trusted to: {}", each.join("; "))
 }
 
-/// How far a channel is trusted, and why.
+/// How far a channel is trusted, and why, each number with its unit and
+/// in digits that show it ([`rms`]: a stated 1e-6 rad is not "0.0000").
 pub fn channel_trust(n: &ChannelNoise) -> String {
+    let u = n.unit;
     let why = match n.source {
         ScaleSource::Stated => "stated".to_string(),
         ScaleSource::Scatter => "its scatter".to_string(),
-        ScaleSource::SensorFloor => format!("its sensor type's floor; scatter {:.2e}", n.scatter),
+        ScaleSource::SensorFloor => {
+            format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
+        }
         ScaleSource::Estimated => format!(
-            "an estimated output's: its scatter {:.2e} is below any sensor's",
-            n.scatter
+            "an estimated output's: its scatter {} {u} is below any sensor's",
+            rms(n.scatter)
         ),
     };
-    format!(
-        "{} {:.4} {} ({why})",
-        n.channel.name(),
-        n.noise_floor,
-        n.unit
-    )
+    format!("{} {} {u} ({why})", n.channel.name(), rms(n.noise_floor))
 }
 
 /// The heading of the findings on the gap: where it lies, or, when the

@@ -89,6 +89,8 @@ pub(crate) fn verdict(
             noise_level,
             no_tyre: base_no_tyre.to_vec(),
             threshold_percent: 100.0 * ACCEPT,
+            // Named by the pipeline, which has the campaign.
+            road_friction: None,
             closest: closest(
                 order
                     .iter()

@@ -28,6 +28,8 @@
 //! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
 //! finds, reads, checks and cleans its runs.
 
+mod glob;
+mod kind;
 mod runs;
 
 use super::paths::beside;
@@ -44,8 +46,8 @@ use crate::diagnose::model::scale::{
     beyond_signal, signal_rms, stated_of, ESTIMATED, ESTIMATED_REACH, SENSOR_FLOOR,
 };
 use crate::error::{
-    named, BeyondSignal, InputError, InputProblem, Limit, NameKind, OptionsError, ParamError,
-    ParamReason, StagedMagicFormula,
+    named, BeyondSignal, CampaignReason, GivenTyres, InputError, InputProblem, Limit, NameKind,
+    OptionsError, ParamError, ParamReason, StagedMagicFormula, TyreSourceError,
 };
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
@@ -114,7 +116,9 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         return Err(file_error(path, InputProblem::NoVehicleFile));
     }
     let src = TomlSource::read(&file)?;
-    let f: CampaignFile = src.parse()?;
+    let f: CampaignFile = src
+        .parse()
+        .map_err(|e| kind::named_kind(&file, &src.text, e))?;
     let base = file.parent().unwrap_or(Path::new(".")).to_path_buf();
     validate(&src, &f)?;
     let effects = candidate_effects(&src, &f.diagnose)?;
@@ -173,6 +177,9 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         inputs,
         vehicle: f.vehicle,
         friction: f.road.friction,
+        friction_at: src
+            .key_span("road.friction")
+            .map(|s| super::toml_file::line_col(&src.text, s.start).0),
         tyres,
         prior,
         uncertainty: f.channels,
@@ -215,6 +222,16 @@ fn validate(src: &TomlSource, f: &CampaignFile) -> Result<(), InputError> {
             )
         })
         .and_then(|_| ParamError::non_negative("min_speed", s.min_speed))
+        .and_then(|_| match s.min_speed > crate::error::MAX_MIN_SPEED {
+            true => Err(ParamError::new(
+                "min_speed",
+                s.min_speed,
+                ParamReason::Campaign(Box::new(CampaignReason::MinSpeedAbsurd {
+                    min_speed: s.min_speed,
+                })),
+            )),
+            false => Ok(()),
+        })
         .and_then(|_| {
             ParamError::in_range(
                 "max_effects",
@@ -400,6 +417,28 @@ fn axle_prior(
     Ok(prior)
 }
 
+/// A `[tyres] model` refused where there is no rig data to fit it to (tyre
+/// files, or none; `rig_found` a campaign folder's `tyre_rig.csv`): the
+/// name would be passed over in silence.
+fn model_without_rig(src: &TomlSource, spec: &TyreSpec, rig_found: bool) -> Result<(), InputError> {
+    let files = spec.file.is_some() || spec.front.is_some() || spec.rear.is_some();
+    let (Some(model), None) = (&spec.model, &spec.rig) else {
+        return Ok(());
+    };
+    let given = match (files, rig_found) {
+        (true, _) => GivenTyres::Files,
+        (false, false) => GivenTyres::Nothing,
+        (false, true) => return Ok(()),
+    };
+    Err(src.value_error(&ParamError::without_value(
+        "tyres.model",
+        ParamReason::Campaign(Box::new(CampaignReason::ModelWithoutRig(TyreSourceError {
+            model: model.clone(),
+            given,
+        }))),
+    )))
+}
+
 /// Where the base tyres come from: tyre files, rig data (read here) with
 /// the model to fit, or nothing (axles identified from the runs).
 fn base_tyres(
@@ -411,6 +450,7 @@ fn base_tyres(
 ) -> Result<BaseTyres, InputError> {
     let spec = f.tyres.clone().unwrap_or_default();
     let rig_default = base.join("tyre_rig.csv");
+    model_without_rig(src, &spec, folder && rig_default.is_file())?;
     let rig = match (&spec.file, &spec.front, &spec.rear, &spec.rig) {
         (Some(t), None, None, None) => {
             let t = beside(base, t);

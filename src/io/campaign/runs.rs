@@ -53,6 +53,7 @@ pub(super) fn run_files(
 ) -> Result<Vec<PathBuf>, InputError> {
     let file = &src.path;
     let run_spec = runs.cloned().unwrap_or_default();
+    super::glob::refuse_globs(src, &run_spec.files, base)?;
     let mut files: Vec<PathBuf> = run_spec.files.iter().map(|p| beside(base, p)).collect();
     for p in &files {
         src.referenced_file("runs.files", p)?;

@@ -97,6 +97,7 @@ pub fn treat_held(run: &mut MeasuredRun, report: &mut CleaningReport) {
             channel: ch,
             every,
             update_rate: (starts.len() - 1) as f64 / span,
+            log_rate: 1.0 / super::median_interval(&t),
             samples,
         });
     }

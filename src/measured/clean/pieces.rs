@@ -91,6 +91,33 @@ fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, us
     bounds.windows(2).map(|w| (w[0], w[1])).collect()
 }
 
+/// The longest run of samples above the slow threshold, inside a slow
+/// span, that joins the span: a speed flickering across the threshold at
+/// a standstill or crawl (a wheel-speed sensor's noise, a GPS speed's
+/// jitter) would otherwise cut the span into many, each with a moving
+/// "piece" of a sample or two between them.
+pub const FLICKER_SAMPLES: usize = 2;
+
+/// Which samples are slow: below `min_speed`, and the runs of at most
+/// [`FLICKER_SAMPLES`] samples at or above it that lie between slow ones.
+fn slow_samples(speed: &[f64], min_speed: f64) -> Vec<bool> {
+    let mut slow: Vec<bool> = speed.iter().map(|&u| u < min_speed).collect();
+    let mut i = 0;
+    while i < slow.len() {
+        if slow[i] {
+            i += 1;
+            continue;
+        }
+        let j = (i..slow.len()).find(|&k| slow[k]).unwrap_or(slow.len());
+        // Between two slow samples (not at the part's ends) and short.
+        if i > 0 && j < slow.len() && j - i <= FLICKER_SAMPLES {
+            slow[i..j].iter_mut().for_each(|s| *s = true);
+        }
+        i = j;
+    }
+    slow
+}
+
 fn long_enough(run: &MeasuredRun, s: &CleanSettings) -> bool {
     let n = run.t.len();
     n >= s.min_piece_samples.max(2) && run.t[n - 1] - run.t[0] >= s.min_piece_seconds
@@ -120,11 +147,12 @@ pub fn clean_run(
         treat_held(&mut part, report);
         treat_glitches(&mut part, settings.min_speed, report);
         let n = part.t.len();
+        let slow_at = slow_samples(&part.speed, settings.min_speed);
         let mut i = 0;
         while i < n {
-            let slow = part.speed[i] < settings.min_speed;
+            let slow = slow_at[i];
             let mut j = i;
-            while j < n && (part.speed[j] < settings.min_speed) == slow {
+            while j < n && slow_at[j] == slow {
                 j += 1;
             }
             if slow {
@@ -333,5 +361,38 @@ mod tests {
         let last = &pieces[2];
         assert_eq!(last.masked.len(), 1);
         assert!((last.t[last.masked[0]] - 46.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_speed_flickering_across_the_threshold_joins_the_standstill() {
+        // Driving to 20 s, a 10 s standstill at 4.9 m/s whose speed pokes
+        // above 5 m/s for one sample in fifty and for two in a hundred,
+        // then driving: one slow span, the flicker in it.
+        let mut r = run(4000, 0.01, |x| {
+            if (20.0..30.0).contains(&x) {
+                4.9
+            } else {
+                20.0
+            }
+        });
+        for k in (2050..2950).step_by(50) {
+            r.speed[k] = 5.1;
+        }
+        for k in (2075..2950).step_by(100) {
+            r.speed[k] = 5.2;
+            r.speed[k + 1] = 5.2;
+        }
+        let mut rep = CleaningReport::new(5.0);
+        let pieces = clean_run(r.clone(), &CleanSettings::diagnosis(5.0), &mut rep);
+        assert_eq!(rep.slow.len(), 1, "{:?}", rep.slow);
+        assert_eq!(rep.slow[0].samples, 1000);
+        assert!(rep.dropped_pieces.is_empty(), "{:?}", rep.dropped_pieces);
+        assert_eq!(pieces.len(), 2);
+        // Three samples above it are motion: the span splits there.
+        r.speed[2500..2503].iter_mut().for_each(|u| *u = 5.2);
+        let mut rep = CleaningReport::new(5.0);
+        clean_run(r, &CleanSettings::diagnosis(5.0), &mut rep);
+        assert_eq!(rep.slow.len(), 2, "{:?}", rep.slow);
+        assert_eq!(rep.dropped_pieces.len(), 1);
     }
 }

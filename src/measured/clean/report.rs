@@ -222,6 +222,8 @@ pub struct HeldChannel {
     pub every: usize,
     /// Updates per second, Hz.
     pub update_rate: f64,
+    /// Samples per second of the log it is held in, Hz.
+    pub log_rate: f64,
     /// Held samples interpolated.
     pub samples: usize,
 }
@@ -355,12 +357,16 @@ impl CleaningReport {
     pub fn summary(&self, first: usize) -> Vec<String> {
         let mut out = vec![self.counts_line()];
         for h in &self.held {
+            // The hold in samples alone reads as a rate of its own ("every
+            // 2 samples (431.8 Hz)"): said against the log's rate, in time.
             out.push(format!(
-                "held: {} in {} updates every {} ({:.1} Hz): {} interpolated between its updates",
+                "held: {} in {} updates every {} of the {} Hz log (every {} s, {} Hz): {} interpolated between its updates",
                 h.channel.name(),
                 h.run,
                 plural(h.every, "sample", "samples"),
-                h.update_rate,
+                crate::format::rounded(h.log_rate, 3),
+                crate::format::rounded(1.0 / h.update_rate, 2),
+                crate::format::rounded(h.update_rate, 3),
                 plural(h.samples, "held sample", "held samples")
             ));
         }
@@ -373,14 +379,15 @@ impl CleaningReport {
         }
         for s in self.slow.iter().take(first) {
             out.push(format!(
-                "{} {:.2}–{:.2} s in {} ({}, up to {:.2} m/s) excluded",
+                "{} {:.2}–{:.2} s in {} ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
                 s.kind.name(),
                 s.t_start,
                 s.t_end,
                 s.run,
                 plural(s.samples, "sample", "samples"),
-                // Truncated: a span below 5 m/s must not read "up to 5.00".
-                (s.max_speed * 100.0).floor() / 100.0
+                // Truncated: a span below 5 m/s must not read "at most 5.00".
+                (s.max_speed * 100.0).floor() / 100.0,
+                crate::format::rounded(self.min_speed, 4)
             ));
         }
         if self.slow.len() > first {

@@ -53,3 +53,35 @@ fn a_dimensionless_axle_value_is_written_without_a_unit() {
     assert!(said[1].ends_with(" 1/rad"), "{}", said[1]);
     assert_eq!(said[2], "peak friction 1.129 (not pinned)");
 }
+
+#[test]
+fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_units() {
+    use crate::diagnose::model::channels::Channel;
+    let trust = |noise_floor, source, scatter| {
+        channel_trust(&ChannelNoise {
+            channel: Channel::Beta,
+            unit: "rad",
+            noise_floor,
+            scale: noise_floor,
+            source,
+            scatter,
+            runs: 2,
+        })
+    };
+    assert_eq!(
+        trust(1e-6, ScaleSource::Stated, 2e-4),
+        "beta 1e-6 rad (stated)"
+    );
+    assert_eq!(
+        trust(0.004, ScaleSource::Stated, 2e-4),
+        "beta 0.0040 rad (stated)"
+    );
+    assert_eq!(
+        trust(0.0017, ScaleSource::SensorFloor, 0.00041),
+        "beta 0.0017 rad (its sensor type's floor; scatter 0.00041 rad)"
+    );
+    assert_eq!(
+        trust(0.005, ScaleSource::Estimated, 2.3e-5),
+        "beta 0.0050 rad (an estimated output's: its scatter 2.3e-5 rad is below any sensor's)"
+    );
+}

@@ -206,6 +206,7 @@ fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
         ],
         threshold_percent: 30.0,
         closest: Vec::new(),
+        road_friction: None,
     });
     assert_eq!(
         statement(&v),
@@ -231,6 +232,22 @@ fn the_base_that_is_no_tyre_is_said_with_its_reasons() {
     });
     assert!(
         statement(&v).ends_with("so there is no model-form verdict; the candidates that make the axles a tyre, fitted jointly, come closest: sensor_bias+steer_path (removes 21.4 %), roll_steer (removes 8.0 %)"),
+        "{}",
+        statement(&v)
+    );
+    // A road friction the campaign states is named with its line.
+    let Verdict::NotIdentifiable(n) = v else {
+        unreachable!()
+    };
+    let v = Verdict::NotIdentifiable(crate::diagnose::report::NotIdentifiable {
+        road_friction: Some(crate::diagnose::campaign::StatedFriction {
+            value: 0.6,
+            line: 7,
+        }),
+        ..n
+    });
+    assert!(
+        statement(&v).ends_with("roll_steer (removes 8.0 %); the campaign states `[road] friction = 0.6` (line 7), a scale on the grip that trades off with the axles' peak friction identified from the runs: a road friction off the truth bends them out of any tyre's range (check it, or leave it out for 1)"),
         "{}",
         statement(&v)
     );

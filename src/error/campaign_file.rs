@@ -1,0 +1,72 @@
+//! What makes a file given to `diagnose` no campaign a user meant: a glob
+//! in `[runs] files` (read as a name, not a pattern), or a file of another
+//! kind (a measured run, a `.tir`, a scenario) given in the campaign's
+//! place. Each says what the file is and what to give instead.
+
+use thiserror::Error;
+
+/// The kind of file given to `diagnose` in a campaign's place.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NotCampaignKind {
+    /// A CSV file: a measured run or rig data.
+    Csv,
+    /// A Magic Formula tyre property file.
+    Tir,
+    /// A scenario (a TOML file with a `[manoeuvre]`), which `simulate` runs.
+    Scenario,
+    /// A file not named `.toml` whose text is no TOML.
+    NotToml,
+}
+
+/// A problem of a campaign file as a whole.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum CampaignFileProblem {
+    /// A wildcard in a `[runs] files` entry: the list names files as
+    /// written, no file is named so, and `dir` reads a folder's runs.
+    #[error("`runs.files` = \"{pattern}\": the list names files as written, not a pattern (no file is named so): to read every *.csv of a folder, give it as `dir = \"{}\"` instead", folder_of(pattern))]
+    RunsGlob {
+        /// The entry as written.
+        pattern: Box<str>,
+    },
+    /// A file of another kind given as the campaign.
+    #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(*kind))]
+    NotACampaign {
+        /// What the file is.
+        kind: NotCampaignKind,
+    },
+}
+
+/// What a file of `kind` is, in words.
+fn what(kind: NotCampaignKind) -> &'static str {
+    match kind {
+        NotCampaignKind::Csv => "this is a CSV file (a measured run or rig data), not a campaign: list it under the campaign's [runs] files, or put it in its runs/ folder",
+        NotCampaignKind::Tir => "this is a tyre property file (.tir), not a campaign: give it under the campaign's [tyres] file (or front and rear)",
+        NotCampaignKind::Scenario => "this is a scenario (it has a [manoeuvre]), which `handling simulate` runs, not a campaign",
+        NotCampaignKind::NotToml => "this file is neither named .toml nor TOML, so not a campaign",
+    }
+}
+
+/// The folder part of a glob pattern (`runs` of `runs/*.csv`; `.` for a
+/// bare `*.csv`).
+fn folder_of(pattern: &str) -> &str {
+    let cut = pattern
+        .find(['*', '?', '['])
+        .map_or(pattern, |i| &pattern[..i]);
+    match cut.rfind(['/', '\\']) {
+        Some(0) => "/",
+        Some(i) => &cut[..i],
+        None => ".",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_glob_is_answered_with_its_folder() {
+        assert_eq!(folder_of("runs/*.csv"), "runs");
+        assert_eq!(folder_of("*.csv"), ".");
+        assert_eq!(folder_of("logs/day1/run?.csv"), "logs/day1");
+    }
+}

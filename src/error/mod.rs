@@ -44,10 +44,11 @@ pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
+pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
-    BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, GivenTyres, Limit, MassDigit,
-    NoLateralForce, NoPressureLine, ParamReason, PerLoad, ScheduleColumn, SlowSteer,
-    StagedMagicFormula, TyreSourceError, Waveform, DYNAMIC_INDEX, MAX_MIN_SPEED,
+    BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce,
+    NoPressureLine, ParamReason, PerLoad, ScheduleColumn, SlowSteer, Waveform, DYNAMIC_INDEX,
+    MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use steady::NoSteadyState;

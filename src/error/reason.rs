@@ -14,14 +14,13 @@ use no_grip::no_lateral_force;
 pub use no_grip::NoLateralForce;
 pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
-pub use staged::{GivenTyres, StagedMagicFormula, TyreSourceError};
 use thiserror::Error;
 use tir::{declared_unit, load_off_nominal, pure_curve, tyre_pressure, unloaded_radius};
 pub use tir::{DeclaredHow, DeclaredUnit, LoadOffNominal, PureCurve};
 
 mod angles;
 mod boxed;
-mod campaign;
+pub(super) mod campaign;
 mod checks;
 mod no_grip;
 mod schedule;
@@ -321,9 +320,6 @@ pub enum ParamReason {
     /// large payload here, so that an error stays small to return.
     #[error(transparent)]
     Name(Box<OptionsError>),
-    /// A Magic Formula named as a campaign's rig model.
-    #[error(transparent)]
-    StagedMagicFormula(Box<StagedMagicFormula>),
     /// A campaign's key wrong for its campaign ([`CampaignReason`]).
     #[error(transparent)]
     Campaign(Box<CampaignReason>),

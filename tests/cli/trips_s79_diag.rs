@@ -2,9 +2,10 @@
 //! as a user runs the tool: a tyre model named with no rig data to fit it
 //! to passed over in silence, a stated uncertainty of 1e-6 printed as
 //! "0.0000", a held channel's rate said in samples alone, batch outputs
-//! named `a.toml/`, a glob in `[runs] files` answered "does not exist", and
-//! a CSV, a `.tir` or a scenario given as a campaign answered with the TOML
-//! reader's words.
+//! named `a.toml/`, a glob in `[runs] files` answered "does not exist", a
+//! CSV, a `.tir` or a scenario given as a campaign answered with the TOML
+//! reader's words, `min_speed = 200` taken, and a segment's noise floor
+//! taken from its turning.
 
 use super::*;
 
@@ -232,5 +233,20 @@ fn an_absurd_min_speed_is_refused_at_its_line() {
     assert!(
         e.contains("s.toml:14:13: `diagnose.min_speed` = 200: is above 100 m/s (360 km/h), faster than any car's handling log: every sample would be excluded as slow; the key is in m/s (is it in km/h? 200 km/h is 55.6 m/s)"),
         "{e}"
+    );
+}
+
+/// The slow oval's 20 s segments have no quiet window before an input:
+/// their yaw-rate scatter was the first differences' deviation over √2,
+/// which holds the laps' own turning (trusted to 0.0034 rad/s); the robust
+/// second differences see the gyro's noise alone.
+#[test]
+fn a_segment_without_a_window_takes_its_noise_from_the_second_differences() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "oval", &["--programme", "slow-oval"]);
+    let (stdout, _) = diagnose(&c);
+    assert!(
+        stdout.contains("channels trusted to: yaw_rate 0.0030 rad/s (its scatter); beta 0.0020 rad (its scatter)"),
+        "{stdout}"
     );
 }

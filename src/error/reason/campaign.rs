@@ -1,8 +1,9 @@
-//! Why a campaign's key is wrong for the campaign it is in: a tyre model
+//! Why a campaign's key is wrong for the campaign it is in: a Magic
+//! Formula named as the rig model ([`StagedMagicFormula`]), a tyre model
 //! named with no rig data to fit it to ([`TyreSourceError`]), a
 //! `min_speed` no car is measured above. Speeds in m/s.
 
-use super::staged::TyreSourceError;
+pub use super::staged::{GivenTyres, StagedMagicFormula, TyreSourceError};
 use thiserror::Error;
 
 /// The highest `[diagnose] min_speed` taken, m/s (360 km/h): no car's
@@ -13,6 +14,9 @@ pub const MAX_MIN_SPEED: f64 = 100.0;
 /// Why a campaign's key is wrong for its campaign.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CampaignReason {
+    /// A Magic Formula named as a campaign's rig model.
+    #[error(transparent)]
+    StagedMagicFormula(StagedMagicFormula),
     /// A `[tyres] model` with no rig data to fit it to.
     #[error(transparent)]
     ModelWithoutRig(TyreSourceError),

@@ -496,10 +496,12 @@ fn base_tyres(
     ) {
         return Err(src.value_error(&ParamError::without_value(
             "tyres.model",
-            ParamReason::StagedMagicFormula(Box::new(StagedMagicFormula {
-                model: name.to_string(),
-                fitted: swarm_models().iter().map(|m| m.as_str()).collect(),
-            })),
+            ParamReason::Campaign(Box::new(CampaignReason::StagedMagicFormula(
+                StagedMagicFormula {
+                    model: name.to_string(),
+                    fitted: swarm_models().iter().map(|m| m.as_str()).collect(),
+                },
+            ))),
         )));
     }
     // The rig fit starts a swarm, which the staged Magic Formula does not.

@@ -206,7 +206,17 @@ fn held_by_design(fit: &Fit, name: &str) -> bool {
 pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
     use crate::identify::Channel;
     let lateral = r.fit.channel == Channel::LateralForce;
-    let blocks = [
+    // Columns there without a sweep: an `fx` at kappa 0 beside a
+    // cornering test.
+    let no_kappa_sweep = match r.set_aside.kappa_reach {
+        Some(reach) => format!(
+            "no longitudinal-slip sweep: |kappa| reaches {} on the rows at alpha = 0, below the {} a sweep must reach",
+            readable(reach, 3),
+            crate::identify::pure::MIN_KAPPA_SWEEP
+        ),
+        None => "no kappa/fx columns in the data".into(),
+    };
+    let blocks: [(&str, &str, &str, bool); 3] = [
         (
             "lateral",
             "lateral force",
@@ -229,7 +239,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
         (
             "longitudinal",
             "longitudinal force",
-            "no kappa/fx columns in the data",
+            &no_kappa_sweep,
             lateral && r.longitudinal.is_none() && !r.tyre.longitudinal_names().is_empty(),
         ),
     ];
@@ -345,8 +355,10 @@ impl SwarmReport {
             ("pressures", "pressure", o.pressure, self.pressures_pooled),
             ("cambers", "camber", o.camber, self.cambers_pooled),
         ];
-        // The lateral columns set aside first: what was fitted at all.
-        let flat = self.flat_alpha.iter().cloned();
+        // The lateral columns set aside first: what was fitted at all;
+        // then the rows of combined slip.
+        let combined = self.set_aside.combined_line(&o.model.to_string());
+        let flat = self.flat_alpha.iter().cloned().chain(combined);
         flat.chain(pooled
             .into_iter()
             .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)

@@ -241,6 +241,9 @@ pub struct SwarmReport {
     pub flat_alpha: Option<String>,
     /// The rows of combined slip left out, and the slip ratios reached.
     pub set_aside: crate::identify::pure::SetAside,
+    /// The extremes of the samples' slip angle and slip ratio fitted.
+    #[serde(skip)]
+    pub sample_slips: [Option<(f64, f64)>; 2],
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -501,6 +504,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         notes: Vec::new(),
         flat_alpha,
         set_aside,
+        sample_slips: [None; 2],
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
@@ -511,6 +515,11 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_conditions: Vec::new(),
         lock,
     };
+    let first_data = match first {
+        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&lateral),
+        _ => &lateral,
+    };
+    ranges::set_first_sample_slips(&mut r, first_data);
     // The two-stage result runs beside the rule that holds what the data
     // do not determine: the two free fits are compared, and the rule then
     // holds what the one written leaves undetermined (`two_stage.rs`).
@@ -550,6 +559,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .map_err(on_data(o, Some("longitudinal force")))?;
         r.tyre = fx.tyre.clone();
         r.longitudinal = Some(fx);
+        let (levels, inf) = (&g.report.levels, f64::INFINITY);
+        r.sample_slips[1] = ranges::sample_slips(view, SlipAxis::Ratio, levels, &g.conditions, inf);
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
     }

@@ -300,6 +300,12 @@ pub enum StageRows {
     /// Combined Mz.
     #[error("no rows with longitudinal slip (|κ| above 1e-3) and a measured `mz`")]
     LongitudinalSlipMz,
+    /// Combined Fy or Mz on rows with longitudinal slip all at α = 0.
+    #[error("no combined-slip rows with a measured `{column}` (both |κ| and |α| above 1e-3): the rows with longitudinal slip are all at α = 0, where the combined coefficients cannot be told from the pure ones")]
+    OnlyPureLongitudinal {
+        /// The channel's column: `fy` or `mz`.
+        column: &'static str,
+    },
     /// Mx.
     #[error("no rows with a measured `mx`: `mx` is fitted only from a rig file with `mx`, `kappa` and `fx` columns, whose samples are its rows (a file without `kappa` and `fx` is averaged into slip-angle bins of `fy` and `mz`, and its `mx` left out); to fit it, give `mx` in a file with `kappa` and `fx` (on a cornering sweep, `kappa` = 0 and the rig's measured `fx`)")]
     Mx,

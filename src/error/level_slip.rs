@@ -40,7 +40,9 @@ pub(super) fn requested(variable: Variable, v: f64) -> String {
     match variable {
         Variable::Load => format!("{si} N"),
         Variable::Camber => format!("{si} rad ({shown})"),
-        Variable::Pressure => format!("{si} Pa ({shown})"),
+        // Three significant digits in kPa: 12 Pa is 0.012 kPa, not the
+        // level lines' "0.0 kPa".
+        Variable::Pressure => format!("{si} Pa ({} kPa)", crate::format::rounded(v / 1e3, 3)),
     }
 }
 
@@ -60,9 +62,14 @@ pub(super) fn unit_slip(variable: Variable, requested: f64, slip: &Option<LevelS
         Some(level) => format!(", which selects the {} level?", variable.display(level)),
         None => "? no level lies near that either".into(),
     };
+    // A pressure converted from psi to whole pascals (12 psi is 82737 Pa,
+    // not 82737.084): finer than any rig's pressure reading.
+    let meant = match variable {
+        Variable::Pressure => crate::format::fixed(s.meant, 0),
+        _ => super::number::number(s.meant),
+    };
     format!(
-        "; the value is read in {si}: did you mean {} {si} ({}{gap}{}){selects}",
-        super::number::number(s.meant),
+        "; the value is read in {si}: did you mean {meant} {si} ({}{gap}{}){selects}",
         super::number::number(requested),
         s.unit,
     )

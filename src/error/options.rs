@@ -222,7 +222,7 @@ pub enum OptionsError {
     /// `--hold` of a name that is none of the model's fitted parameters.
     #[error(
         "--hold `{given}`: not a parameter of the {model} model{}: its parameters are {}",
-        crate::format::did_you_mean(given, &known.iter().map(String::as_str).collect::<Vec<_>>()),
+        hold_meant(given, known),
         known.join(", ")
     )]
     UnknownHold {
@@ -401,4 +401,27 @@ pub enum ModeError {
         /// The tyre's model.
         model: String,
     },
+}
+
+/// The `did you mean` of a `--hold` name: every parameter whose name
+/// within its block is `given` (UniTire's `p3` is `lateral.p3` and
+/// `longitudinal.p3`: a block-qualified name is asked for), else the
+/// nearest name ([`crate::format::did_you_mean`]).
+fn hold_meant(given: &str, known: &[String]) -> String {
+    let in_block: Vec<String> = known
+        .iter()
+        .filter(|k| k.rsplit_once('.').is_some_and(|(_, n)| n == given))
+        .map(|k| format!("`{k}`"))
+        .collect();
+    match in_block.as_slice() {
+        [] => crate::format::did_you_mean(
+            given,
+            &known.iter().map(String::as_str).collect::<Vec<_>>(),
+        ),
+        [one] => format!(" (did you mean {one}? a parameter is named with its block)"),
+        [first @ .., last] => format!(
+            " (did you mean {} or {last}? a parameter is named with its block)",
+            first.join(", ")
+        ),
+    }
 }

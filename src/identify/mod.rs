@@ -31,6 +31,7 @@ use parameters::parameter_reports;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;
 mod problem;
+pub mod pure;
 mod spare;
 mod undetermined;
 pub(crate) use undetermined::hold_undetermined;

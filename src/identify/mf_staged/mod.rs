@@ -35,6 +35,8 @@
 //! stages take every row with longitudinal slip, the pure longitudinal
 //! ones included: at α = 0, `Fy = Gyκ·Fy0(0) + SVyκ` is what pins the
 //! κ-induced side force `SVyκ`, and `Mz` carries `s·Fx` ([`Stage::takes`]).
+//! Without a single combined row they are skipped (`stages.rs`): the α = 0
+//! rows alone fitted `RBY1` = 27386 to an `fy` of zeros.
 //! A stage whose columns or rows are missing is skipped and says why; it
 //! is not an error.
 //!

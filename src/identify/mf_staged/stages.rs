@@ -143,6 +143,24 @@ fn skip_reason(stage: Stage, rows: usize, free: usize) -> SkipReason {
     })
 }
 
+/// Why a combined `Fy` or `Mz` stage is not fitted whose rows with
+/// longitudinal slip are all at α = 0 (pure braking and driving): there
+/// `Gyκ·Fy0(0) + SVyκ` is all the stage sees, and a fit of its fifteen
+/// coefficients to it wrote `RBY1` = 27386 from an `fy` of zeros. Those
+/// rows pin `SVyκ` beside combined rows; without any they are no
+/// combined-slip test.
+fn only_pure_longitudinal(stage: Stage, rows: &[&MfRow]) -> Option<SkipReason> {
+    let column = match stage {
+        Stage::CombinedFy => "fy",
+        Stage::CombinedMz => "mz",
+        _ => return None,
+    };
+    let combined = rows.iter().any(|r| r.alpha.abs() > super::PURE_TOL);
+    (!rows.is_empty() && !combined).then_some(SkipReason::NoRows(StageRows::OnlyPureLongitudinal {
+        column,
+    }))
+}
+
 /// The base tyre with the free parameters at their start values, and
 /// those values.
 fn start_values(
@@ -216,6 +234,9 @@ pub(super) fn run_stage(
             held_reason(name, *need, have).is_none() && run.holding.given(name).is_none()
         })
         .collect();
+    if let Some(why) = only_pure_longitudinal(stage, rows) {
+        return StageReport::skipped(stage, why);
+    }
     if rows.len() <= free.len() + 5 {
         return StageReport::skipped(stage, skip_reason(stage, rows.len(), free.len()));
     }

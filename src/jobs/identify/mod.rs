@@ -239,6 +239,11 @@ pub struct SwarmReport {
     pub notes: Vec<Note>,
     /// The lateral columns set aside at `alpha` 0 throughout, said.
     pub flat_alpha: Option<String>,
+    /// The rows of combined slip left out, and the slip ratios reached.
+    pub set_aside: crate::identify::pure::SetAside,
+    /// The extremes of the samples' slip angle and slip ratio fitted.
+    #[serde(skip)]
+    pub sample_slips: [Option<(f64, f64)>; 2],
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -378,6 +383,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     // optimiser left it (`identify/undetermined.rs`).
     settings.hold_undetermined = true;
     let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
+    // Each force is fitted to its pure slip (`identify/pure.rs`).
+    let (lateral, long_view, set_aside) = crate::identify::pure::split(&data);
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
         return Err(FitError::NoLateralData {
             data: o.data.clone(),
@@ -393,11 +400,13 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         kappa_bin: o.kappa_bin,
         ..Grouping::default()
     };
-    let long_view = data.longitudinal_view();
-    let (first, grouped) = match (&long_view, data.has_lateral()) {
+    // After a lateral fit, an `fx` without a slip-ratio sweep is no
+    // longitudinal test: not fitted, and said so.
+    let long_view = long_view.filter(|_| set_aside.has_kappa_sweep() || !lateral.has_lateral());
+    let (first, grouped) = match (&long_view, lateral.has_lateral()) {
         (_, true) => (
             Channel::LateralForce,
-            group(&o.data, &data, &grouping, SlipAxis::Angle)?,
+            group(&o.data, &lateral, &grouping, SlipAxis::Angle)?,
         ),
         (Some(view), false) => (
             Channel::LongitudinalForce,
@@ -494,6 +503,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         held: Vec::new(),
         notes: Vec::new(),
         flat_alpha,
+        set_aside,
+        sample_slips: [None; 2],
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),
@@ -504,6 +515,11 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         longitudinal_conditions: Vec::new(),
         lock,
     };
+    let first_data = match first {
+        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&lateral),
+        _ => &lateral,
+    };
+    ranges::set_first_sample_slips(&mut r, first_data);
     // The two-stage result runs beside the rule that holds what the data
     // do not determine: the two free fits are compared, and the rule then
     // holds what the one written leaves undetermined (`two_stage.rs`).
@@ -543,6 +559,8 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .map_err(on_data(o, Some("longitudinal force")))?;
         r.tyre = fx.tyre.clone();
         r.longitudinal = Some(fx);
+        let (levels, inf) = (&g.report.levels, f64::INFINITY);
+        r.sample_slips[1] = ranges::sample_slips(view, SlipAxis::Ratio, levels, &g.conditions, inf);
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
     }
@@ -561,7 +579,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         &fits.into_iter().flatten().collect::<Vec<_>>(),
         &r.tyre,
     ));
-    finite_fits(&r).map_err(on_data(o, None))?;
+    written::finite_fits(&r).map_err(on_data(o, None))?;
     r.pac89_reversal = match (&r.tyre, r.fit.channel) {
         (Tyre::Pac89(p), Channel::LateralForce) => {
             curvature::pac89_reversal(p, &ranges::fitted_spans(&r))
@@ -574,21 +592,4 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         .collect();
     r.file = written::tyre_file_text(&r, &o.output_path())?;
     Ok(r)
-}
-
-/// Refuses fits whose σ or a parameter is not a finite number (data that
-/// no model reproduces): no such value is written.
-fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
-    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
-    for f in fits.into_iter().flatten() {
-        let sigma = (format!("{} σ", f.channel.quantity()), f.sigma_percent);
-        let values = f.parameters.iter().map(|p| (p.name.clone(), p.value));
-        if let Some((quantity, value)) = std::iter::once(sigma)
-            .chain(values)
-            .find(|(_, v)| !v.is_finite())
-        {
-            return Err(FitError::NonFiniteResult { quantity, value }.into());
-        }
-    }
-    Ok(())
 }

@@ -206,7 +206,17 @@ fn held_by_design(fit: &Fit, name: &str) -> bool {
 pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
     use crate::identify::Channel;
     let lateral = r.fit.channel == Channel::LateralForce;
-    let blocks = [
+    // Columns there without a sweep: an `fx` at kappa 0 beside a
+    // cornering test.
+    let no_kappa_sweep = match r.set_aside.kappa_reach {
+        Some(reach) => format!(
+            "no longitudinal-slip sweep: |kappa| reaches {} on the rows at alpha = 0, below the {} a sweep must reach",
+            readable(reach, 3),
+            crate::identify::pure::MIN_KAPPA_SWEEP
+        ),
+        None => "no kappa/fx columns in the data".into(),
+    };
+    let blocks: [(&str, &str, &str, bool); 3] = [
         (
             "lateral",
             "lateral force",
@@ -229,7 +239,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
         (
             "longitudinal",
             "longitudinal force",
-            "no kappa/fx columns in the data",
+            &no_kappa_sweep,
             lateral && r.longitudinal.is_none() && !r.tyre.longitudinal_names().is_empty(),
         ),
     ];
@@ -345,8 +355,15 @@ impl SwarmReport {
             ("pressures", "pressure", o.pressure, self.pressures_pooled),
             ("cambers", "camber", o.camber, self.cambers_pooled),
         ];
-        // The lateral columns set aside first: what was fitted at all.
-        let flat = self.flat_alpha.iter().cloned();
+        // The lateral columns set aside first: what was fitted at all;
+        // then the rows of combined slip.
+        let combined = self.set_aside.combined_line(&o.model.to_string());
+        let flat = self
+            .flat_alpha
+            .iter()
+            .cloned()
+            .chain(combined)
+            .chain(coverage_warning(self));
         flat.chain(pooled
             .into_iter()
             .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
@@ -386,4 +403,52 @@ impl SwarmReport {
 /// said as held, on the terminal and in the header alike, never warned of.
 pub(crate) fn held_as_given(p: &ParameterReport, hold: &[(String, f64)]) -> bool {
     !p.free && hold.iter().any(|(h, _)| *h == p.name)
+}
+
+/// Points per free parameter below which a fit is warned of as too few
+/// data: five, so that each parameter rests on more points than a
+/// curve's handful (a fit of three parameters to five points matches
+/// them exactly and says nothing of the tyre between or beyond).
+pub(crate) const MIN_POINTS_PER_PARAMETER: usize = 5;
+
+/// The slip angle a cornering sweep must reach, rad (4°), for a model
+/// with a force peak to be fitted beyond its slope: a car tyre's lateral
+/// force peaks at 4–8°, and below it friction and curvature are only
+/// extrapolated. A linear tyre, fitted to its window, is not judged.
+pub(crate) const MIN_PEAK_ALPHA: f64 = 0.0698;
+
+/// The warning of a first fit on too few or too narrow data: fewer than
+/// [`MIN_POINTS_PER_PARAMETER`] points per free parameter, or (a
+/// cornering fit of a model with a peak) slip angles within
+/// [`MIN_PEAK_ALPHA`].
+fn coverage_warning(r: &SwarmReport) -> Option<String> {
+    let f = &r.fit;
+    let points: usize = f.curves.iter().map(|c| c.points).sum();
+    let free = f.parameters.iter().filter(|p| p.free).count();
+    let mut said = Vec::new();
+    if points < MIN_POINTS_PER_PARAMETER * free {
+        said.push(format!(
+            "{} for {} free parameters, fewer than the {MIN_POINTS_PER_PARAMETER} per parameter a fit needs to rest on the data rather than match them",
+            crate::format::plural(points, "point", "points"),
+            free
+        ));
+    }
+    let reach = r.sample_slips[0].map(|(lo, hi)| lo.abs().max(hi.abs()));
+    let linear = r.linear_window.is_some();
+    if let (Some(reach), false) = (reach, linear) {
+        if reach < MIN_PEAK_ALPHA {
+            said.push(format!(
+                "|alpha| reaches {} rad ({}°) only, below the {MIN_PEAK_ALPHA} rad (4°) past which a tyre's lateral force peaks: its friction and curvature are extrapolated, not fitted",
+                crate::format::rounded(reach, 3),
+                crate::format::rounded(reach.to_degrees(), 3)
+            ));
+        }
+    }
+    (!said.is_empty()).then(|| {
+        format!(
+            "the data are too few or too narrow for the {} fit: {}; do not rely on the tyre beyond the points",
+            f.channel.quantity(),
+            said.join("; ")
+        )
+    })
 }

@@ -7,7 +7,8 @@
 //! longitudinal force off), and the comment says so.
 
 use crate::format::readable;
-use crate::identify::data::{Condition, Sweep};
+use crate::identify::data::{Condition, RigData, Sweep};
+use crate::identify::grouping::SlipAxis;
 use crate::identify::grouping::{Levels, Variable};
 use crate::identify::mf_staged::MfRow;
 use crate::io::fitted_ranges::FittedRanges;
@@ -172,7 +173,74 @@ pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
         .chain(&r.longitudinal_grouping)
         .flat_map(|g| &g.levels)
         .collect();
-    widened_to_levels(condition_spans(&conditions), &levels, &conditions)
+    let mut spans = widened_to_levels(condition_spans(&conditions), &levels, &conditions);
+    // The slips as the samples reached them, not as their bins' means.
+    for s in &mut spans {
+        let reached = match s.name {
+            "alpha" => r.sample_slips[0],
+            "kappa" => r.sample_slips[1],
+            _ => None,
+        };
+        if let Some((lo, hi)) = reached {
+            (s.lo, s.hi) = (s.lo.min(lo), s.hi.max(hi));
+        }
+    }
+    spans
+}
+
+/// Sets the slips the samples `d` of `r`'s first fit reach
+/// ([`sample_slips`]; a linear tyre's within its window).
+pub(crate) fn set_first_sample_slips(r: &mut super::SwarmReport, d: &RigData) {
+    use crate::identify::Channel;
+    let (axis, k) = match r.fit.channel {
+        Channel::LongitudinalForce => (SlipAxis::Ratio, 1),
+        _ => (SlipAxis::Angle, 0),
+    };
+    let window = r
+        .linear_window
+        .as_ref()
+        .map_or(f64::INFINITY, |w| w.max_abs_alpha_deg.to_radians());
+    r.sample_slips[k] = sample_slips(d, axis, &r.grouping.levels, &r.conditions, window);
+}
+
+/// The smallest and largest slip along `axis` of the samples of `d`
+/// with a measured force that lie in the levels (`levels`, a
+/// grouping's) of the `conditions` fitted, within `max_abs` of zero (a
+/// linear tyre's window): the range the data cover, where the fitted
+/// points are means over slip bins (the Hoosier file's ±0.2094395 rad
+/// written as ±0.208567).
+pub(crate) fn sample_slips(
+    d: &RigData,
+    axis: SlipAxis,
+    levels: &[Levels],
+    conditions: &[Condition],
+    max_abs: f64,
+) -> Option<(f64, f64)> {
+    let (slip, force) = match axis {
+        SlipAxis::Angle => (&d.alpha, &d.fy),
+        SlipAxis::Ratio => d.longitudinal.as_ref().map(|(k, f)| (k, f))?,
+    };
+    let used = |variable: Variable, v: f64, of: fn(&Condition) -> Option<f64>| {
+        levels
+            .iter()
+            .filter(|l| l.variable == variable)
+            .flat_map(|l| &l.levels)
+            .filter(|q| conditions.iter().any(|c| of(c) == Some(q.nominal)))
+            .any(|q| (q.lo..=q.hi).contains(&v))
+    };
+    let pressure_used = |i: usize| {
+        d.pressure
+            .as_ref()
+            .is_none_or(|p| used(Variable::Pressure, p[i], |c| c.pressure))
+    };
+    let within = (0..d.len()).filter(|&i| {
+        force[i].is_finite()
+            && slip[i].abs() <= max_abs
+            && used(Variable::Load, d.fz[i], |c| Some(c.fz))
+            && used(Variable::Camber, d.camber[i], |c| Some(c.camber))
+            && pressure_used(i)
+    });
+    Span::of("slip", "", within.map(|i| slip[i])).map(|s| (s.lo, s.hi))
 }
 
 /// `spans` widened to the samples of the levels the conditions were

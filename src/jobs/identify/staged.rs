@@ -400,6 +400,12 @@ pub(super) fn unfitted_blocks(
     let blocks = [
         (Stage::PureFy, Output::Fy, "pure lateral", "lateral force"),
         (
+            Stage::PureMz,
+            Output::Mz,
+            "aligning moment",
+            "aligning moment",
+        ),
+        (
             Stage::PureFx,
             Output::Fx,
             "longitudinal",
@@ -439,6 +445,66 @@ pub(super) fn unfitted_blocks(
             };
             Some(format!(
                 "no {data} data: the {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
+            ))
+        })
+        .chain(combined_unfitted(report, from, t))
+        .collect()
+}
+
+/// The combined-slip blocks the fit wrote without data (the stages
+/// skipped for want of combined-slip rows), one line each: their
+/// coefficients are `from`, and what the written tyre `t` then does
+/// under combined slip (at `FNOMIN`, α = 0.1 rad against 0, κ = 0.1
+/// against 0): the defaults' `RBX1 = RBY1 = 0` leave each force as its
+/// pure one, which reads as a tyre that loses no grip under combined
+/// slip unless it is said.
+fn combined_unfitted(report: &StagedReport, from: &str, t: &MagicFormula) -> Vec<String> {
+    use mf_staged::Stage;
+    let fz = t.coefficients.FNOMIN;
+    let tyre = crate::tyre::Tyre::MagicFormula(Box::new(t.clone()));
+    let at = |kappa: f64, alpha: f64| {
+        tyre.evaluate_points(
+            &[fz],
+            &[kappa],
+            &[alpha],
+            &[0.0],
+            &[t.coefficients.LONGVL],
+            &[],
+        )[0]
+    };
+    let blocks = [
+        (
+            Stage::CombinedFx,
+            "longitudinal force (RBX*, RCX1, REX*, RHX1)",
+            "longitudinal force does not fall with slip angle",
+            at(0.1, 0.1).fx == at(0.1, 0.0).fx,
+        ),
+        (
+            Stage::CombinedFy,
+            "lateral force (RBY*, RCY1, REY*, RHY*, RVY*)",
+            "lateral force does not fall with slip ratio",
+            at(0.1, 0.1).fy == at(0.0, 0.1).fy,
+        ),
+        (
+            Stage::CombinedMz,
+            "aligning moment (SSZ*)",
+            "aligning moment has no arm of the longitudinal force",
+            at(0.1, 0.1).mz == at(0.0, 0.1).mz,
+        ),
+    ];
+    blocks
+        .into_iter()
+        .filter_map(|(stage, block, pure, is_pure)| {
+            let skipped = report.stages.iter().find(|s| s.stage == stage)?;
+            let why = skipped.skipped.as_ref()?;
+            let gives = if is_pure {
+                format!("the written file's {pure} (its pure curve under combined slip)")
+            } else {
+                let short = block.split(" (").next().unwrap_or(block);
+                format!("the written file's {short} under combined slip is theirs, not these data's")
+            };
+            Some(format!(
+                "no combined-slip data: the combined {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
             ))
         })
         .collect()

@@ -75,3 +75,20 @@ fn read_back(path: &Path, text: &str) -> Result<Result<(), ParamError>, Error> {
     let tyre: Tyre = src.parse()?;
     Ok(tyre.validate().and_then(|()| tyre.check_sizes()))
 }
+
+/// Refuses fits whose σ or a parameter is not a finite number (data that
+/// no model reproduces): no such value is written.
+pub(super) fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
+    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
+    for f in fits.into_iter().flatten() {
+        let sigma = (format!("{} σ", f.channel.quantity()), f.sigma_percent);
+        let values = f.parameters.iter().map(|p| (p.name.clone(), p.value));
+        if let Some((quantity, value)) = std::iter::once(sigma)
+            .chain(values)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(FitError::NonFiniteResult { quantity, value }.into());
+        }
+    }
+    Ok(())
+}

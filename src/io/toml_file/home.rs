@@ -43,8 +43,14 @@ pub(super) fn belongs(text: &str, path: &str, reparse: &Reparse) -> Option<Strin
         None => (table, None),
     };
     let beside = known(parent);
-    // A key of the parent's own, written inside one of its tables.
-    if own.is_some() && beside.iter().any(|k| k == key) {
+    // A key of the parent's own, written inside one of its tables; not
+    // where the parent's key of that name is a table itself (`roll` under
+    // `[channels]` is no `[roll]` model written in the wrong place).
+    let own_table = |k: &str| {
+        let at: Vec<&str> = parent.iter().copied().chain([k]).collect();
+        known_keys(text, &parts, &at, reparse).is_some()
+    };
+    if own.is_some() && beside.iter().any(|k| k == key) && !own_table(key) {
         homes.push(name(parent));
     }
     let mut siblings: Vec<(String, Vec<String>)> = Vec::new();
@@ -215,6 +221,15 @@ mod tests {
             ),
             None
         );
+    }
+
+    /// `[channels] roll` was sent "before the first [table]" because the
+    /// campaign has a `[roll]` table: a key named like one of the parent's
+    /// tables is no key of the parent's.
+    #[test]
+    fn a_key_named_like_a_table_of_the_parent_is_not_sent_there() {
+        let said = belongs("[model]\nsimulation = 1\n", "model.simulation", &reparse);
+        assert_eq!(said, None);
     }
 
     #[test]

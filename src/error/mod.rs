@@ -8,6 +8,7 @@
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
 mod duplicate;
+mod effect_limit;
 mod fit;
 mod input;
 mod level_slip;
@@ -22,12 +23,14 @@ mod problem_name;
 mod reason;
 mod rig;
 mod rig_sign;
+mod scenario_file;
 mod steady;
 #[cfg(test)]
 mod tests;
 mod units;
 
 pub use duplicate::DuplicateAt;
+pub use effect_limit::EffectLimit;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
@@ -47,6 +50,7 @@ pub use reason::{
     ParamReason, PerLoad, ScheduleColumn, SlowSteer, StagedMagicFormula, Waveform, DYNAMIC_INDEX,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use scenario_file::{FileKind, ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{

@@ -534,6 +534,9 @@ pub enum InputProblem {
         /// The speed threshold, m/s.
         min_speed: f64,
     },
+    /// A scenario file refused as a whole or at a table (boxed).
+    #[error("{0}")]
+    Scenario(Box<super::ScenarioProblem>),
 }
 
 /// Where [`InputProblem::MissingFile`]'s path was read from: a relative

@@ -403,6 +403,7 @@ mod trips_s76_sim;
 mod trips_s77_lead;
 mod trips_s77_sim;
 mod trips_s77_tyre;
+mod trips_s79_sim;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -240,11 +240,11 @@ mod tests {
             repetitions: None,
             worth: Some(worth(expected, uncertainty, campaign)),
             peak_ay: 1.0,
-            manoeuvre: crate::manoeuvre::Manoeuvre::Replay(crate::manoeuvre::Replay {
-                t: vec![0.0, 1.0],
-                steer: vec![0.0; 2],
-                speed: vec![20.0; 2],
-            }),
+            manoeuvre: crate::manoeuvre::Manoeuvre::Replay(crate::manoeuvre::Replay::of_inputs(
+                vec![0.0, 1.0],
+                vec![0.0; 2],
+                vec![20.0; 2],
+            )),
         };
         let none = recommendation(&[scored(3.1, 9.5, 7.5), scored(2.0, 8.0, 7.5)], 7.5);
         assert_eq!(

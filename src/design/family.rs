@@ -151,11 +151,11 @@ const SAMPLE: f64 = 0.02;
 
 /// A schedule from its breakpoints.
 fn schedule(points: Vec<(f64, f64, f64)>) -> Manoeuvre {
-    Manoeuvre::Replay(Replay {
-        t: points.iter().map(|p| p.0).collect(),
-        steer: points.iter().map(|p| p.1).collect(),
-        speed: points.iter().map(|p| p.2).collect(),
-    })
+    Manoeuvre::Replay(Replay::of_inputs(
+        points.iter().map(|p| p.0).collect(),
+        points.iter().map(|p| p.1).collect(),
+        points.iter().map(|p| p.2).collect(),
+    ))
 }
 
 /// The steer that holds lateral acceleration `ay` at `speed` on `model`

@@ -9,6 +9,7 @@
 
 mod campaign_file;
 mod duplicate;
+mod effect_limit;
 mod fit;
 mod input;
 mod level_slip;
@@ -23,6 +24,7 @@ mod problem_name;
 mod reason;
 mod rig;
 mod rig_sign;
+mod scenario_file;
 mod steady;
 #[cfg(test)]
 mod tests;
@@ -30,6 +32,7 @@ mod units;
 
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
+pub use effect_limit::EffectLimit;
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
@@ -51,6 +54,7 @@ pub use reason::{
     MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use scenario_file::{FileKind, ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{

@@ -537,6 +537,9 @@ pub enum InputProblem {
     /// A campaign file that is no campaign, or lists its runs by a glob.
     #[error(transparent)]
     Campaign(Box<super::CampaignFileProblem>),
+    /// A scenario file refused as a whole or at a table (boxed).
+    #[error("{0}")]
+    Scenario(Box<super::ScenarioProblem>),
 }
 
 /// Where [`InputProblem::MissingFile`]'s path was read from: a relative

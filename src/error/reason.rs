@@ -6,7 +6,7 @@
 use super::options::{ModeError, OptionsError};
 pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
-pub use boxed::{BeyondSignal, PerLoad};
+pub use boxed::{BeyondSignal, PerLoad, HISTORY_ROW_BYTES};
 pub use campaign::{CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
@@ -27,10 +27,6 @@ mod schedule;
 mod slow_steer;
 mod staged;
 mod tir;
-
-/// The size of a row of `history.csv` as written, bytes (14 columns of
-/// about 20 characters): the size [`ParamReason::TooManyRows`] quotes.
-pub const HISTORY_ROW_BYTES: f64 = 280.0;
 
 /// Why a parameter value is wrong.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -406,6 +402,9 @@ pub enum ParamReason {
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[non_exhaustive]
 pub enum Limit {
+    /// An effect's number ([`super::EffectLimit`]).
+    #[error("{0}")]
+    Effect(super::EffectLimit),
     /// The simplified Magic Formula's shape factor C.
     #[error("a shape factor outside (0, 2] has no physical meaning")]
     ShapeFactor,

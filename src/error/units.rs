@@ -108,7 +108,7 @@ pub enum UnitSlip {
     /// A forward speed beyond any car's over more than 1 % of the run, or
     /// one sample beyond any vehicle's at all (no logger's glitch of a
     /// car's speed reads 1e308).
-    #[error("column `speed`: {} m/s is beyond {} m/s ({} km/h), which no car's speed reaches (the run's 99th percentile of |speed| is {} m/s): `speed` is the forward speed in m/s (FORMATS.md); is the column in km/h (divide it by 3.6) or another unit?", Num(*value), Num(*limit), fixed(limit * 3.6, 0), Num(*p99))]
+    #[error("column `speed`: {} m/s is beyond {} m/s ({} km/h), which no car's speed reaches (the run's 99th percentile of |speed| is {} m/s): `speed` is the forward speed in m/s (FORMATS.md); is the column in km/h (divide it by 3.6) or another unit?", apart(*value, *limit), Num(*limit), fixed(limit * 3.6, 0), apart(*p99, *limit))]
     SpeedBeyondAnyCar {
         /// The first speed beyond the limit, as read.
         value: f64,
@@ -379,6 +379,13 @@ fn column_meant(median: f64, meant: &Option<PressureMeant>) -> String {
         None => "is the column in kPa (multiply it by 1000), bar (by 100000) or psi (by 6895)?"
             .into(),
     }
+}
+
+/// A speed `v` refused against `limit`, m/s, to the digits that tell it
+/// from the limit: a 99th percentile of 150.0000004 m/s read "150 m/s" at
+/// six digits, a value that looks legal beside a limit of 150 m/s.
+fn apart(v: f64, limit: f64) -> String {
+    super::number::numbers_apart(v, &[limit]).0
 }
 
 /// `x` to three significant digits, as a message shows a number.

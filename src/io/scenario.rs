@@ -183,6 +183,9 @@ pub struct Scenario {
     pub asked_ay: Option<f64>,
     /// `[vehicle]` keys the tool does not read, set aside.
     pub unread: Vec<crate::io::toml_file::vehicle_keys::UnreadKey>,
+    /// What reading the scenario found to say: a replayed run's bank
+    /// applied, a table the manoeuvre does not read.
+    pub remarks: Vec<crate::error::ScenarioRemark>,
 }
 
 /// The checks every timed manoeuvre shares: a speed on a road and an end
@@ -205,9 +208,18 @@ fn check(src: &TomlSource, r: Result<(), ParamError>) -> Result<(), InputError> 
 }
 
 /// Reads, validates and resolves a scenario file.
+/// A file of another kind (a CSV, a `.tir`, a tyre file, a report, a
+/// binary file) is refused as what it is ([`layout::other_kind`]).
 pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
-    let src = TomlSource::read(path)?;
-    let f: ScenarioFile = src.parse()?;
+    let read = TomlSource::read(path).and_then(|src| {
+        layout::check(&src)?;
+        let f: ScenarioFile = src.parse()?;
+        Ok((f, src))
+    });
+    let (f, src) = read.map_err(|e| match e {
+        InputError::Io { .. } => e,
+        e => layout::other_kind(path).unwrap_or(e),
+    })?;
     resolve_scenario(&f, &src)
 }
 
@@ -234,7 +246,7 @@ pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError>
 pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
     let ResolvedModel {
-        model,
+        mut model,
         files: tyre_files,
         fitted_ranges,
     } = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
@@ -255,6 +267,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         friction: f.road.friction,
         method,
     };
+    let mut remarks = Vec::new();
     let Resolved {
         manoeuvre,
         initial,
@@ -267,6 +280,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
             let run_path = beside(dir, &r.run);
             let r = replay::resolve(src, r, &run_path, model.vehicle.wheelbase())?;
             inputs.push(run_path);
+            remarks.extend(remarks::apply_bank(src, &r.run, &mut model));
             Resolved {
                 manoeuvre: Manoeuvre::Replay(r.replay),
                 initial: r.initial,
@@ -278,6 +292,8 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         spec => Resolved::from(other_manoeuvre(src, spec, f.simulation.step)?),
     };
     check_windows(src, &f.metrics, &manoeuvre)?;
+    let kind = remarks::kind_name(&f.manoeuvre);
+    remarks.extend(remarks::metrics_unused(src, &manoeuvre, kind));
     let duration = manoeuvre.end_time() - manoeuvre.start_time();
     // Intervals, not rows: the least step the refusal suggests then runs
     // (a hair of slack for its rounding).
@@ -307,6 +323,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         fitted_ranges,
         asked_ay,
         unread: src.unread_vehicle_keys(),
+        remarks,
     })
 }
 
@@ -533,11 +550,11 @@ fn other_manoeuvre(
         }
         ManoeuvreSpec::Schedule(s) => {
             check(src, super::schedule::check(s))?;
-            Manoeuvre::Replay(Replay {
-                t: s.t.clone(),
-                steer: s.steer.clone(),
-                speed: s.speed.clone(),
-            })
+            Manoeuvre::Replay(Replay::of_inputs(
+                s.t.clone(),
+                s.steer.clone(),
+                s.speed.clone(),
+            ))
         }
         ManoeuvreSpec::StepSteer(_) | ManoeuvreSpec::Replay(_) => {
             unreachable!("resolved by their own functions")
@@ -545,8 +562,10 @@ fn other_manoeuvre(
     })
 }
 
+mod layout;
 mod no_grip;
 mod reach;
+mod remarks;
 mod replay;
 mod step_steer;
 

@@ -85,7 +85,8 @@ pub struct SweepSteer {
     pub end: f64,
 }
 
-/// A measured run's steer and speed, replayed by linear interpolation.
+/// A measured run's steer and speed, replayed by linear interpolation,
+/// with its longitudinal acceleration and road bank where it logs them.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Replay {
     /// Sample times, s, strictly increasing.
@@ -94,9 +95,37 @@ pub struct Replay {
     pub steer: Vec<f64>,
     /// Speed, m/s.
     pub speed: Vec<f64>,
+    /// Measured longitudinal acceleration, m/s² (None: the speed's
+    /// smoothed derivative stands in, as in `diagnose`'s replays).
+    pub ax: Option<Vec<f64>>,
+    /// Measured road bank, rad, positive with the road's left edge higher
+    /// (None: a flat road, or the scenario's constant `road_bank`).
+    pub bank: Option<Vec<f64>>,
 }
 
 impl Replay {
+    /// Steer and speed at times `t`, with no measured acceleration or bank
+    /// (a schedule, a designed manoeuvre).
+    pub fn of_inputs(t: Vec<f64>, steer: Vec<f64>, speed: Vec<f64>) -> Self {
+        Self {
+            t,
+            steer,
+            speed,
+            ax: None,
+            bank: None,
+        }
+    }
+
+    /// The measured longitudinal acceleration at `t`, m/s², where logged.
+    pub(crate) fn ax_at(&self, t: f64) -> Option<f64> {
+        self.ax.as_ref().map(|ax| self.interp(ax, t))
+    }
+
+    /// The measured road bank at `t`, rad (0 where not logged).
+    pub(crate) fn bank_at(&self, t: f64) -> f64 {
+        self.bank.as_ref().map_or(0.0, |b| self.interp(b, t))
+    }
+
     /// Index `i` with `t[i] ≤ t < t[i+1]`, clamped to the ends.
     fn segment(&self, t: f64) -> usize {
         let n = self.t.len();
@@ -361,11 +390,11 @@ mod tests {
 
     #[test]
     fn replay_interpolates_and_differentiates_speed() {
-        let m = Manoeuvre::Replay(Replay {
-            t: vec![0.0, 1.0, 3.0],
-            steer: vec![0.0, 0.1, 0.3],
-            speed: vec![10.0, 12.0, 12.0],
-        });
+        let m = Manoeuvre::Replay(Replay::of_inputs(
+            vec![0.0, 1.0, 3.0],
+            vec![0.0, 0.1, 0.3],
+            vec![10.0, 12.0, 12.0],
+        ));
         assert!((m.steer(2.0) - 0.2).abs() < 1e-15);
         assert_eq!(m.steer(-1.0), 0.0);
         assert!((m.speed(0.5) - 11.0).abs() < 1e-15);

@@ -35,11 +35,11 @@ pub(super) struct LoggedInputs {
 impl LoggedInputs {
     /// The steer and speed as a replay manoeuvre.
     pub(super) fn manoeuvre(&self) -> Manoeuvre {
-        Manoeuvre::Replay(crate::manoeuvre::Replay {
-            t: self.t.clone(),
-            steer: self.steer.clone(),
-            speed: self.speed.clone(),
-        })
+        Manoeuvre::Replay(crate::manoeuvre::Replay::of_inputs(
+            self.t.clone(),
+            self.steer.clone(),
+            self.speed.clone(),
+        ))
     }
 }
 /// Logging rate of the logged programmes, Hz.

@@ -88,7 +88,7 @@ impl Drive {
         let start = m.start_time();
         let steps = ((m.end_time() - start) / step).round().max(1.0) as usize;
         let times = Self::sample_times(method, start, step, steps);
-        Self {
+        let drive = Self {
             method,
             step,
             start,
@@ -98,6 +98,13 @@ impl Drive {
             speed_rate: times.iter().map(|&t| m.speed_rate(t)).collect(),
             ax: Vec::new(),
             bank: Vec::new(),
+        };
+        // A replay's own measured channels, as a simulation reads them.
+        match m {
+            Manoeuvre::Replay(r) if r.ax.is_some() || r.bank.is_some() => {
+                drive.with_channels(&r.t, r.ax.as_deref(), r.bank.as_deref())
+            }
+            _ => drive,
         }
     }
 
@@ -137,11 +144,11 @@ impl Drive {
     /// interpolated speed the replay follows.
     pub fn replay(t: &[f64], steer: &[f64], speed: &[f64], step: f64, method: FixedStep) -> Self {
         let drive = Self::for_method(
-            &Manoeuvre::Replay(Replay {
-                t: t.to_vec(),
-                steer: steer.to_vec(),
-                speed: speed.to_vec(),
-            }),
+            &Manoeuvre::Replay(Replay::of_inputs(
+                t.to_vec(),
+                steer.to_vec(),
+                speed.to_vec(),
+            )),
             step,
             method,
         );
@@ -211,14 +218,20 @@ impl Drive {
 }
 
 /// The inputs of manoeuvre `m` at time `t` on a road of friction
-/// `friction`. The longitudinal acceleration is du/dt, a replayed run's
-/// smoothed
-/// ([`speed_derivative_at`], as [`Drive::replay`] samples it).
+/// `friction`. The longitudinal acceleration is du/dt; a replayed run's is
+/// its measured `ax` where it logs one, else its speed's smoothed
+/// derivative ([`speed_derivative_at`], as [`Drive::replay`] samples it),
+/// and its road bank its measured `bank` (as [`Drive::with_channels`]
+/// gives `diagnose`'s replays both).
 pub(super) fn manoeuvre_inputs(m: &Manoeuvre, t: f64, friction: f64) -> Inputs {
     let speed_rate = m.speed_rate(t);
-    let ax = match m {
-        Manoeuvre::Replay(r) => speed_derivative_at(&r.t, &r.speed, t),
-        _ => speed_rate,
+    let (ax, bank) = match m {
+        Manoeuvre::Replay(r) => (
+            r.ax_at(t)
+                .unwrap_or_else(|| speed_derivative_at(&r.t, &r.speed, t)),
+            r.bank_at(t),
+        ),
+        _ => (speed_rate, 0.0),
     };
     Inputs {
         steer: m.steer(t),
@@ -226,7 +239,7 @@ pub(super) fn manoeuvre_inputs(m: &Manoeuvre, t: f64, friction: f64) -> Inputs {
         speed_rate,
         friction,
         ax,
-        bank: 0.0,
+        bank,
     }
 }
 
@@ -521,13 +534,28 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> (TimeHistory, Option<DenseSolution<2>>) {
+        let (hist, sol, _) = self.run_dopri5_work(model, manoeuvre, x0, tol);
+        (hist, sol)
+    }
+
+    /// [`Integrator::run_dopri5`] with the work of the integration, of the
+    /// full state too (a lag or roll effect's six states): its report said
+    /// "RK4" for a Dormand–Prince run it had no dense (β, r) solution of.
+    pub(super) fn run_dopri5_work(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        tol: &Tolerances,
+    ) -> (TimeHistory, Option<DenseSolution<2>>, ode::Stats) {
         let x = self.initial(model, manoeuvre, x0);
         if model.options.effects.extra_states() {
-            let (hist, _) = self.dopri5_n::<6>(model, manoeuvre, x, tol);
-            (hist, None)
+            let (hist, sol) = self.dopri5_n::<6>(model, manoeuvre, x, tol);
+            (hist, None, sol.stats)
         } else {
             let (hist, sol) = self.dopri5_n::<2>(model, manoeuvre, head(&x), tol);
-            (hist, Some(sol))
+            let stats = sol.stats;
+            (hist, Some(sol), stats)
         }
     }
 

@@ -302,12 +302,15 @@ pub struct Simulation {
     /// The continuous solution (Dormand–Prince with the (β, r) state only:
     /// with extra states the metrics are measured on the rows).
     pub dense: Option<DenseSolution<2>>,
+    /// The work of an adaptive integration (None for RK4), of the full
+    /// state where there is no dense (β, r) solution.
+    pub work: Option<Stats>,
 }
 
 impl Simulation {
     /// Work of the adaptive integration (None for RK4).
     pub fn stats(&self) -> Option<Stats> {
-        self.dense.as_ref().map(|d| d.stats)
+        self.work
     }
 }
 
@@ -333,10 +336,15 @@ impl Integrator {
             Method::Rk4 => Simulation {
                 history: self.run_rk4(model, manoeuvre, x0),
                 dense: None,
+                work: None,
             },
             Method::Dopri5(tol) => {
-                let (history, dense) = self.run_dopri5(model, manoeuvre, x0, &tol);
-                Simulation { history, dense }
+                let (history, dense, work) = self.run_dopri5_work(model, manoeuvre, x0, &tol);
+                Simulation {
+                    history,
+                    dense,
+                    work: Some(work),
+                }
             }
         }
     }

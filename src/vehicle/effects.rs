@@ -59,7 +59,7 @@
 
 pub use super::sensors::Sensors;
 pub use super::steer_path::SteerPath;
-use crate::error::{Limit, ParamError, ParamReason};
+use crate::error::{EffectLimit, Limit, ParamError, ParamReason};
 use crate::scalar::{off, Scalar};
 use serde::{Deserialize, Serialize};
 
@@ -114,7 +114,22 @@ impl RollModel {
             Limit::RollGradient,
         )?;
         ParamError::positive("frequency", self.frequency)?;
-        ParamError::positive("damping", self.damping)
+        let effect = |why| Limit::Effect(why);
+        ParamError::in_range(
+            "frequency",
+            self.frequency,
+            0.0,
+            10.0,
+            effect(EffectLimit::RollFrequency),
+        )?;
+        ParamError::positive("damping", self.damping)?;
+        ParamError::in_range(
+            "damping",
+            self.damping,
+            0.0,
+            5.0,
+            effect(EffectLimit::RollDamping),
+        )
     }
 }
 
@@ -337,6 +352,16 @@ impl Effects {
         ParamError::in_range("road_bank", road_bank.abs(), -1.0, 0.5, Limit::RoadBank)?;
         ParamError::finite("bank_profile_scale", *bank_profile_scale)?;
         ParamError::non_negative("relaxation_length", *relaxation_length)?;
+        let limit = |key: &str, v: f64, lo: f64, hi: f64, why| {
+            ParamError::in_range(key, v, lo, hi, Limit::Effect(why))
+        };
+        limit(
+            "relaxation_length",
+            *relaxation_length,
+            -f64::MIN_POSITIVE,
+            3.0,
+            EffectLimit::RelaxationLength,
+        )?;
         ParamError::finite("steering_compliance", *steering_compliance)?;
         // Far above any car's (1e-6 to 3e-5 rad/N), the steer lost to the
         // force exceeds the steer given and the compliance solve has no
@@ -349,13 +374,17 @@ impl Effects {
             Limit::SteeringCompliance,
         )?;
         for (i, v) in roll_steer.iter().enumerate() {
-            ParamError::finite(&format!("roll_steer[{i}]"), *v)?;
+            let key = format!("roll_steer[{i}]");
+            limit(&key, *v, -1.0, 1.0, EffectLimit::RollSteer)?;
         }
         for (i, v) in roll_camber.iter().enumerate() {
-            ParamError::finite(&format!("roll_camber[{i}]"), *v)?;
+            let key = format!("roll_camber[{i}]");
+            limit(&key, *v, -10.0, 10.0, EffectLimit::RollCamber)?;
         }
         for (i, v) in cornering_stiffness_scale.iter().enumerate() {
-            ParamError::positive(&format!("cornering_stiffness_scale[{i}]"), *v)?;
+            let key = format!("cornering_stiffness_scale[{i}]");
+            ParamError::positive(&key, *v)?;
+            limit(&key, *v, 0.2, 5.0, EffectLimit::CorneringStiffnessScale)?;
         }
         ParamError::in_range(
             "longitudinal_load_transfer",

@@ -405,6 +405,7 @@ mod trips_s77_sim;
 mod trips_s77_tyre;
 mod trips_s79_diag;
 mod trips_s79_lead;
+mod trips_s79_sim;
 mod trips_s79_tyre;
 mod trips_simulate;
 mod trips_units;

@@ -87,9 +87,9 @@ pub(super) fn resolve(
     let start = if start.is_empty() { vec![0] } else { start };
     Ok(ResolvedReplay {
         replay: Replay {
-            t: run.t.clone(),
-            steer: run.steer.clone(),
-            speed: run.speed.clone(),
+            ax: run.ax.clone(),
+            bank: run.bank.clone(),
+            ..Replay::of_inputs(run.t.clone(), run.steer.clone(), run.speed.clone())
         },
         initial: State {
             beta: run

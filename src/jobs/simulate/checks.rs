@@ -69,6 +69,12 @@ pub(super) struct Said {
 pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     let mut said = Said::default();
     said.notes.extend(sc.unread.iter().map(|u| u.note()));
+    for r in &sc.remarks {
+        match r.is_note() {
+            true => said.notes.push(r.to_string()),
+            false => said.warnings.push(r.to_string()),
+        }
+    }
     said.warnings.extend(sc.model.vehicle.unlikely());
     straight_running(sc, &mut said);
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {

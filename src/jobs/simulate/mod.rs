@@ -7,6 +7,7 @@
 pub(crate) mod checks;
 pub(crate) mod nominal_load;
 mod transient;
+mod unfitted;
 
 use super::metrics::{metric_lines, UNITS};
 use crate::diagnose::campaign::StatedUncertainty;
@@ -177,6 +178,15 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     }
     let mut said = checks::checks(&sc, h);
     warnings.extend(said.warnings);
+    warnings.extend(unfitted::longitudinal_only(&sc));
+    // A `.tir` whose longitudinal slip stiffness turns negative inside its
+    // own load range, said as `tyre-eval` says it (once per file).
+    let mut tirs: Vec<&PathBuf> = sc.inputs.iter().collect();
+    tirs.dedup();
+    warnings.extend(
+        tirs.into_iter()
+            .filter_map(|p| crate::io::tir::longitudinal_turn(p).map(|t| t.to_string())),
+    );
     said.notes.extend(
         sc.measured
             .as_ref()

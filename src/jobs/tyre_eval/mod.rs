@@ -49,6 +49,7 @@ mod fitted;
 mod friction;
 pub(crate) use friction::peak_of;
 mod light_load;
+mod meant;
 mod model_loads;
 mod not_carried;
 mod opposed;
@@ -109,6 +110,9 @@ pub struct TyreEvalReport {
     /// The points outside the loads a TOML tyre's model is meant for, by
     /// side (`model_loads.rs`).
     pub loads_left: Vec<LoadsLeft>,
+    /// Points a linear tyre is not meant for (`meant.rs`): a slip angle
+    /// beyond its line's reach, a load its stiffness is no road tyre's at.
+    pub not_meant: Vec<meant::NotMeant>,
     /// Points whose loaded radius exceeds the free radius at their speed,
     /// by what drives it (`radius.rs`).
     pub radius_above_free: Vec<radius::RadiusAboveFree>,
@@ -342,6 +346,7 @@ pub fn run(
     let radius_above_free = std::mem::take(&mut extras.radius_above_free);
     let loads_left =
         model_loads::loads_left((&tyre, tyre_path), fitted_ranges.as_ref(), fz, &file.lines);
+    let not_meant = meant::not_meant(&tyre, fz, alpha, &file.lines);
     let camber_read = !unread::is_unread(&unread, "camber");
     let steep_camber = camber::steep_camber(
         &tyre,
@@ -390,6 +395,7 @@ pub fn run(
         clamped,
         ranges_left,
         loads_left,
+        not_meant,
         radius_above_free,
         light_load,
         steep_camber,
@@ -448,6 +454,7 @@ impl TyreEvalReport {
                 .iter()
                 .map(|l| l.line(self.count, self.model)),
         );
+        out.extend(self.not_meant.iter().map(|m| m.line(self.count)));
         out.extend(self.light_load.iter().map(|l| l.line(self.count)));
         out.extend(self.radius_above_free.iter().map(|r| r.line(self.count)));
         out.extend(

@@ -1,0 +1,158 @@
+//! What is wrong with a scenario file beyond one key's value, and what
+//! `simulate` says of a table it reads and sets aside: the wrong kind of
+//! file given as a scenario (a run or rig CSV, a `.tir`, a tyre TOML, a
+//! JSON report, a binary file), the two names of the integration table
+//! (`[simulation]`, `[integrator]`) both written, an effect of the
+//! measurement (a sensor's delay, the steer path) among the car's
+//! `[model.effects]`, a diagnosis effect's name where the scenario has
+//! its own key, and `[metrics]` under a manoeuvre that has no step-steer
+//! metrics. The file, line and column come from the caller's
+//! [`crate::error::InputError`]; the sentences are made here.
+
+use std::fmt;
+
+/// What a file given as a scenario is instead.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FileKind {
+    /// A measured run (`FORMATS.md`: `t`, `speed`, `steer`, `yaw_rate`).
+    RunCsv,
+    /// Tyre rig data (`fz` with `alpha` or `kappa`).
+    RigCsv,
+    /// Another CSV file; its header's first column.
+    Csv {
+        /// The header's first column.
+        first: Box<str>,
+    },
+    /// A Magic Formula `.tir` file.
+    Tir,
+    /// A tyre parameter file of the project (`model = "…"`).
+    TyreToml {
+        /// Its `model`.
+        model: Box<str>,
+    },
+    /// A JSON file (a report `handling` writes: `diagnosis.json`,
+    /// `metrics.json`, `gap.json`).
+    Json,
+    /// Not text: a NUL byte at this byte offset.
+    Binary {
+        /// Byte offset of the first NUL.
+        at: usize,
+    },
+}
+
+/// Why a scenario file is refused as a whole or at a table.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ScenarioProblem {
+    /// The file is not a scenario.
+    NotAScenario(FileKind),
+    /// `[simulation]` and `[integrator]` both given: they are one table
+    /// under two names. `first` is the earlier's name and line.
+    TwoIntegrationTables {
+        /// The earlier table's name and line.
+        first: (&'static str, usize),
+        /// The later table's name (where the error is).
+        second: &'static str,
+    },
+    /// An effect of the measurement system in `[model.effects]`: only
+    /// `diagnose` models a measurement.
+    MeasurementEffect {
+        /// The key as written.
+        key: Box<str>,
+    },
+    /// A diagnosis effect's name in `[model.effects]` whose number a
+    /// scenario gives under another key.
+    EffectElsewhere {
+        /// The key as written.
+        key: Box<str>,
+        /// Where the scenario takes it.
+        home: &'static str,
+    },
+}
+
+impl fmt::Display for FileKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FileKind::RunCsv => f.write_str("is a measured run (a CSV with `t`, `speed`, `steer`, `yaw_rate`), not a scenario: replay it from a scenario's `[manoeuvre] kind = \"replay\"` with `run = \"<this file>\"`, or measure it with `handling metrics`"),
+            FileKind::RigCsv => f.write_str("is tyre rig data (a CSV with `fz` and `alpha` or `kappa`), not a scenario: fit a tyre to it with `handling identify`, and give the tyre file it writes as `[tyres] front = \"…\"` in a scenario"),
+            FileKind::Csv { first } => write!(f, "is a CSV file (its header starts with `{first}`), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
+            FileKind::Tir => f.write_str("is a .tir tyre file, not a scenario: give it as `[tyres] front = \"<this file>\"` in a scenario"),
+            FileKind::TyreToml { model } => write!(f, "is a tyre file (`model = \"{model}\"`), not a scenario: give it as `[tyres] front = \"<this file>\"` in a scenario"),
+            FileKind::Json => f.write_str("is a JSON file (a report `handling` writes: diagnosis.json, metrics.json, gap.json), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
+            FileKind::Binary { at } => write!(f, "is not a text file (a NUL byte at byte {at}), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
+        }
+    }
+}
+
+impl fmt::Display for ScenarioProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
+            ScenarioProblem::TwoIntegrationTables { first: (name, line), second } => write!(
+                f,
+                "[{second}] and [{name}] (line {line}) are one table under two names (the method, step and tolerances of the integration): give one of them"
+            ),
+            ScenarioProblem::MeasurementEffect { key } => write!(
+                f,
+                "`model.effects.{key}` is a property of the measurement (the sensors and the steer they log), not of the car: a scenario simulates the car alone; `{key}` belongs to `handling diagnose`, which fits it to measured runs (a campaign's `[diagnose] effects`)"
+            ),
+            ScenarioProblem::EffectElsewhere { key, home } => write!(
+                f,
+                "`{key}` is the name of a `diagnose` effect; a scenario sets it as {home}"
+            ),
+        }
+    }
+}
+
+/// What `simulate` says of a scenario as it reads it: a table the run
+/// does not use (a warning), a measured channel it applies (a note).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ScenarioRemark {
+    /// `[metrics]` under a manoeuvre with no step-steer metrics.
+    MetricsUnused {
+        /// The table's line.
+        line: usize,
+        /// The manoeuvre's kind as the file names it.
+        kind: &'static str,
+    },
+    /// A replayed run's `bank` column applied as measured, the scenario
+    /// giving no `bank_profile_scale`. Rad.
+    BankApplied {
+        /// The smallest and largest bank of the run, rad.
+        range: [f64; 2],
+    },
+}
+
+impl ScenarioRemark {
+    /// A fact of the run (a note), not a doubt about it (a warning).
+    pub fn is_note(&self) -> bool {
+        matches!(self, ScenarioRemark::BankApplied { .. })
+    }
+}
+
+impl fmt::Display for ScenarioRemark {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ScenarioRemark::MetricsUnused { line, kind } => write!(
+                f,
+                "[metrics] (line {line}) is ignored: its windows and filter set the step-steer metrics, and a {kind} has none (measure its history with `handling metrics` if it holds a step)"
+            ),
+            ScenarioRemark::BankApplied { range: [lo, hi] } => {
+                let angle = |a: f64| {
+                    format!(
+                        "{} rad ({}°)",
+                        super::number::Num(a),
+                        crate::format::fixed(a.to_degrees(), 2)
+                    )
+                };
+                let bank = match lo == hi {
+                    true => angle(*lo),
+                    false => format!("{} to {}", angle(*lo), angle(*hi)),
+                };
+                write!(
+                    f,
+                    "the run's `bank` column (road bank {bank}) is the road the replay drives, as measured (`bank_profile_scale` = 1: gravity's g·sin(bank) across the car); give `[model.effects] bank_profile_scale = 0` for a flat road"
+                )
+            }
+        }
+    }
+}

@@ -1,0 +1,154 @@
+//! A scenario file's layout, checked before its tables are deserialised:
+//! a file of another kind given as a scenario (a run or rig CSV, a `.tir`,
+//! a tyre TOML, a JSON report, a binary file), named as what it is instead
+//! of the TOML parser's first complaint; `[simulation]` and `[integrator]`
+//! both written (one table under two names: serde's "duplicate field" at
+//! line 1 named neither); and the names of `diagnose`'s effects in
+//! `[model.effects]`: those of the measurement (sensors, the steer path),
+//! which a scenario of the car alone has no place for, and those a
+//! scenario sets under another key (`[road] friction`, `[vehicle]
+//! yaw_inertia`, …), pointed there.
+
+use crate::error::{FileKind, InputError, InputProblem, ScenarioProblem};
+use crate::io::toml_file::TomlSource;
+use std::path::Path;
+
+/// `diagnose`'s effects of the measurement, not of the car.
+const MEASUREMENT: [&str; 5] = [
+    "sensor_delay",
+    "sensor_bias",
+    "accelerometer_roll",
+    "accelerometer_position",
+    "steer_path",
+];
+
+/// `diagnose`'s effects whose numbers a scenario gives under another key.
+const ELSEWHERE: [(&str, &str); 6] = [
+    ("cornering_stiffness", "`[model.effects] cornering_stiffness_scale = [front, rear]` (a scale on each axle's slip)"),
+    ("bank_profile", "`[model.effects] bank_profile_scale` (the share of a replayed run's measured `bank`) and `road_bank` (a constant bank, rad)"),
+    ("road_friction", "`[road] friction` (a scale on the tyres' own friction)"),
+    ("friction_scale", "`[road] friction` (a scale on the tyres' own friction)"),
+    ("yaw_inertia", "`[vehicle] yaw_inertia` (kg·m²)"),
+    ("load_transfer_distribution", "`[vehicle] load_transfer_front_share` (the front axle's share of the lateral load transfer)"),
+];
+
+/// The layout checks of a scenario's text `src`.
+pub(super) fn check(src: &TomlSource) -> Result<(), InputError> {
+    let Ok(doc) = toml_edit::ImDocument::parse(src.text.as_str()) else {
+        return Ok(());
+    };
+    integration_tables(src, doc.as_table())?;
+    effect_keys(src, doc.as_table())
+}
+
+/// `[simulation]` and `[integrator]` both: refused at the later one.
+fn integration_tables(src: &TomlSource, root: &toml_edit::Table) -> Result<(), InputError> {
+    let names = ["simulation", "integrator"];
+    let mut at: Vec<(usize, &'static str)> = names
+        .iter()
+        .filter(|n| root.contains_key(n))
+        .filter_map(|&n| Some((src.key_span(n)?.start, n)))
+        .collect();
+    if at.len() < 2 {
+        return Ok(());
+    }
+    at.sort();
+    let line = crate::io::toml_file::line_col(&src.text, at[0].0).0;
+    let problem = ScenarioProblem::TwoIntegrationTables {
+        first: (at[0].1, line),
+        second: at[1].1,
+    };
+    let span = src.key_span(at[1].1);
+    Err(src.located(span, InputProblem::Scenario(Box::new(problem))))
+}
+
+/// A `diagnose` effect's name among `[model.effects]`' keys.
+fn effect_keys(src: &TomlSource, root: &toml_edit::Table) -> Result<(), InputError> {
+    let Some(effects) = root
+        .get("model")
+        .and_then(|m| m.as_table_like())
+        .and_then(|m| m.get("effects"))
+        .and_then(|e| e.as_table_like())
+    else {
+        return Ok(());
+    };
+    for (key, _) in effects.iter() {
+        let problem = if MEASUREMENT.contains(&key) {
+            ScenarioProblem::MeasurementEffect { key: key.into() }
+        } else if let Some((_, home)) = ELSEWHERE.iter().find(|(k, _)| *k == key) {
+            ScenarioProblem::EffectElsewhere {
+                key: key.into(),
+                home,
+            }
+        } else {
+            continue;
+        };
+        let span = src.key_span(&format!("model.effects.{key}"));
+        return Err(src.located(span, InputProblem::Scenario(Box::new(problem))));
+    }
+    Ok(())
+}
+
+/// The error for the file at `path` when it is of another kind than a
+/// scenario; None for a file that may be one (its own error stands).
+pub(super) fn other_kind(path: &Path) -> Option<InputError> {
+    let kind = file_kind(path)?;
+    let problem = InputProblem::Scenario(Box::new(ScenarioProblem::NotAScenario(kind)));
+    Some(InputError::problem(path, problem))
+}
+
+/// What the file at `path` is, where it is plainly not a scenario.
+fn file_kind(path: &Path) -> Option<FileKind> {
+    let bytes = std::fs::read(path).ok()?;
+    let head = &bytes[..bytes.len().min(8192)];
+    if let Some(at) = head.iter().position(|&b| b == 0) {
+        return Some(FileKind::Binary { at });
+    }
+    let text = String::from_utf8_lossy(&bytes);
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    // The first line that is neither blank nor a comment (a scenario's
+    // opening comment may hold a comma).
+    let first = text
+        .lines()
+        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .unwrap_or("");
+    if ext == "tir" || text.lines().any(|l| l.trim_start().starts_with("[MODEL]")) {
+        return Some(FileKind::Tir);
+    }
+    if ext == "json" || first.trim_start().starts_with('{') {
+        return Some(FileKind::Json);
+    }
+    let header = ext != "toml" && first.contains(',') && !first.contains(['=', '[']);
+    if ext == "csv" || header {
+        return Some(csv_kind(first));
+    }
+    let table: toml::Table = text.parse().ok()?;
+    let model = table.get("model")?.as_str()?;
+    let scenario = ["vehicle", "manoeuvre", "tyres"]
+        .iter()
+        .any(|k| table.contains_key(*k));
+    (!scenario).then(|| FileKind::TyreToml {
+        model: model.into(),
+    })
+}
+
+/// A CSV file by its header `first`: a run, rig data, or another.
+fn csv_kind(first: &str) -> FileKind {
+    let columns: Vec<String> = first
+        .split(',')
+        .map(|c| c.trim().trim_matches('"').to_ascii_lowercase())
+        .collect();
+    let has = |c: &str| columns.iter().any(|x| x == c);
+    if has("t") && has("speed") && has("steer") {
+        FileKind::RunCsv
+    } else if has("fz") && (has("alpha") || has("kappa")) {
+        FileKind::RigCsv
+    } else {
+        FileKind::Csv {
+            first: columns.first().cloned().unwrap_or_default().into(),
+        }
+    }
+}

@@ -21,7 +21,9 @@ fn a_channel_named_like_a_table_of_the_campaign_is_sent_nowhere() {
     fs::write(&file, format!("{text}\n[channels]\nroll = 0.01\n")).unwrap();
     let e = fails_cleanly("diagnose", &camp, dir.path());
     assert!(
-        e.contains("`channels.roll`: unknown field `roll`, expected one of `yaw_rate`, `ay`, `beta`"),
+        e.contains(
+            "`channels.roll`: unknown field `roll`, expected one of `yaw_rate`, `ay`, `beta`"
+        ),
         "{e}"
     );
     assert!(!e.contains("belongs"), "{e}");

@@ -12,6 +12,9 @@ use thiserror::Error;
 /// Which effect's range a value left.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
 pub enum EffectLimit {
+    /// The share of a replayed run's measured bank the road has.
+    #[error("the share of a logged bank the road has lies in 0 to 2 (1: as measured, 0: a flat road; the diagnosis searches -0.5 to 2): beyond, the log's bank is not that road's (a wrong unit or sign: is the `bank` column in degrees?)")]
+    BankProfileScale,
     /// Camber thrust per wheel load per rad of roll.
     #[error("camber thrust beyond ±10 of the wheel load per rad of body roll is no car's (a tyre's camber stiffness is about 1 per rad of camber, and a wheel cambers by about its body's roll); the diagnosis searches ±8")]
     RollCamber,

@@ -52,7 +52,7 @@ fn messages_read_as_the_text_they_replace() {
         separation: 5e3,
         slip: None,
     };
-    assert_eq!(level.to_string(), "no pressure level near the requested 250000 Pa (250.0 kPa) (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
+    assert_eq!(level.to_string(), "no pressure level near the requested 250000 Pa (250 kPa) (levels: 200.0 kPa, 220.0 kPa; a level holds values within 5.0 kPa of its range)");
     // A load in kN, a camber in degrees, where the option takes SI: the
     // request as typed, then the conversion and the level it selects.
     let kn = InputProblem::NoLevelNear {

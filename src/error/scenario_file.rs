@@ -114,18 +114,24 @@ pub enum ScenarioRemark {
         /// The manoeuvre's kind as the file names it.
         kind: &'static str,
     },
-    /// A replayed run's `bank` column applied as measured, the scenario
-    /// giving no `bank_profile_scale`. Rad.
-    BankApplied {
+    /// A replayed run's `bank` column left out, the scenario giving no
+    /// `bank_profile_scale`. Rad.
+    BankNotApplied {
         /// The smallest and largest bank of the run, rad.
         range: [f64; 2],
+    },
+    /// `bank_profile_scale` given (at `line`) for a run with no `bank`
+    /// column.
+    BankScaleWithoutBank {
+        /// The key's line.
+        line: usize,
     },
 }
 
 impl ScenarioRemark {
     /// A fact of the run (a note), not a doubt about it (a warning).
     pub fn is_note(&self) -> bool {
-        matches!(self, ScenarioRemark::BankApplied { .. })
+        matches!(self, ScenarioRemark::BankNotApplied { .. })
     }
 }
 
@@ -136,7 +142,7 @@ impl fmt::Display for ScenarioRemark {
                 f,
                 "[metrics] (line {line}) is ignored: its windows and filter set the step-steer metrics, and a {kind} has none (measure its history with `handling metrics` if it holds a step)"
             ),
-            ScenarioRemark::BankApplied { range: [lo, hi] } => {
+            ScenarioRemark::BankNotApplied { range: [lo, hi] } => {
                 let angle = |a: f64| {
                     format!(
                         "{} rad ({}°)",
@@ -150,9 +156,13 @@ impl fmt::Display for ScenarioRemark {
                 };
                 write!(
                     f,
-                    "the run's `bank` column (road bank {bank}) is the road the replay drives, as measured (`bank_profile_scale` = 1: gravity's g·sin(bank) across the car); give `[model.effects] bank_profile_scale = 0` for a flat road"
+                    "the run's `bank` column (road bank {bank}) does not act on the replay: the road is flat, as in `diagnose`'s base model, where whether the car felt a logged bank is the `bank_profile` effect's to fit; give `[model.effects] bank_profile_scale = 1` to drive on it as measured (gravity's g·sin(bank) across the car)"
                 )
             }
+            ScenarioRemark::BankScaleWithoutBank { line } => write!(
+                f,
+                "`model.effects.bank_profile_scale` (line {line}) acts on nothing: it scales a replayed run's `bank` column, and this run has none (a constant bank is `road_bank`)"
+            ),
         }
     }
 }

@@ -246,7 +246,7 @@ pub fn vehicle_from_text(path: &Path, text: &str) -> Result<Vehicle, InputError>
 pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Scenario, InputError> {
     let path = src.path.as_path();
     let ResolvedModel {
-        mut model,
+        model,
         files: tyre_files,
         fitted_ranges,
     } = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
@@ -280,7 +280,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
             let run_path = beside(dir, &r.run);
             let r = replay::resolve(src, r, &run_path, model.vehicle.wheelbase())?;
             inputs.push(run_path);
-            remarks.extend(remarks::apply_bank(src, &r.run, &mut model));
+            remarks.extend(remarks::bank_remark(src, &r.run));
             Resolved {
                 manoeuvre: Manoeuvre::Replay(r.replay),
                 initial: r.initial,

@@ -82,6 +82,9 @@ pub const MAX_ROLL_GRADIENT: f64 = 0.05;
 /// Formula 1 car's whole down-force ([`Limit::AeroLoad`]).
 pub const MAX_AERO_LOAD: f64 = 12.0;
 
+/// The steepest road bank, rad (29°): steeper is no road.
+pub const MAX_ROAD_BANK: f64 = 0.5;
+
 /// Roll degree of freedom used by roll steer and roll camber: a second-order
 /// response of the body roll φ to lateral acceleration,
 /// `φ̈ = ω²·(k·ay − φ) − 2ζω·φ̇`.
@@ -349,12 +352,24 @@ impl Effects {
             ParamError::non_negative(&key, *k)?;
             ParamError::in_range(&key, *k, -f64::MIN_POSITIVE, MAX_AERO_LOAD, Limit::AeroLoad)?;
         }
-        ParamError::in_range("road_bank", road_bank.abs(), -1.0, 0.5, Limit::RoadBank)?;
-        ParamError::finite("bank_profile_scale", *bank_profile_scale)?;
+        ParamError::finite("road_bank", *road_bank)?;
+        if road_bank.abs() > MAX_ROAD_BANK {
+            // Said with its sign: the range is symmetric, the value as written.
+            let (lo, hi, why) = (-MAX_ROAD_BANK, MAX_ROAD_BANK, Limit::RoadBank);
+            let reason = ParamReason::OutOfRange { lo, hi, why };
+            return Err(ParamError::new("road_bank", *road_bank, reason));
+        }
         ParamError::non_negative("relaxation_length", *relaxation_length)?;
         let limit = |key: &str, v: f64, lo: f64, hi: f64, why| {
             ParamError::in_range(key, v, lo, hi, Limit::Effect(why))
         };
+        limit(
+            "bank_profile_scale",
+            *bank_profile_scale,
+            -f64::MIN_POSITIVE,
+            2.0,
+            EffectLimit::BankProfileScale,
+        )?;
         limit(
             "relaxation_length",
             *relaxation_length,

@@ -94,12 +94,27 @@ fn a_replay_reads_the_logs_ax() {
 fn a_replay_drives_on_the_logs_bank() {
     let dir = tempfile::tempdir().unwrap();
     straight_run(dir.path(), 12.0, &[("bank", 0.05)]);
-    let path = sedan(dir.path(), "banked", REPLAY);
-    let said = simulated(&path, dir.path());
+    // Without a scale the bank is said and left out (a logger's bank the
+    // car may not have felt is `diagnose`'s `bank_profile` to fit).
+    let flat = sedan(dir.path(), "flat", REPLAY);
+    let said = simulated(&flat, dir.path());
     assert!(
-        said.contains("note: the run's `bank` column (road bank 0.05 rad (2.86°)) is the road the replay drives, as measured"),
+        said.contains("note: the run's `bank` column (road bank 0.05 rad (2.86°)) does not act on the replay: the road is flat"),
         "{said}"
     );
+    let history = dir.path().join("out/history.csv");
+    let (ay, u, r) = (
+        column(&history, "ay"),
+        column(&history, "speed"),
+        column(&history, "yaw_rate"),
+    );
+    let k = ay.len() - 1;
+    assert!((ay[k] - u[k] * r[k]).abs() < 1e-3, "{}", ay[k] - u[k] * r[k]);
+    fs::remove_dir_all(dir.path().join("out")).unwrap();
+    let rest = format!("{REPLAY}\n[model.effects]\nbank_profile_scale = 1.0\n");
+    let path = sedan(dir.path(), "banked", &rest);
+    let said = simulated(&path, dir.path());
+    assert!(!said.contains("`bank` column"), "{said}");
     let history = dir.path().join("out/history.csv");
     let (ay, u, r) = (
         column(&history, "ay"),
@@ -322,9 +337,27 @@ fn effect_numbers_beyond_any_car_are_refused_with_their_range() {
         ("scale", "cornering_stiffness_scale = [1e6, 1]\n", "`model.effects.cornering_stiffness_scale[0]` = 1000000: must lie in (0.2, 5]: a scale on an axle's cornering stiffness outside 0.2 to 5 is another tyre"),
         ("steer", "roll_steer = [5, 0]\n", "`model.effects.roll_steer[0]` = 5: must lie within ±1: roll steer beyond ±1 rad"),
         ("roll", "roll_steer = [0.1, 0]\n[model.effects.roll]\nfrequency = 500\n", "`model.effects.roll.frequency` = 500: must lie in (0, 10]: a body's roll natural frequency is 1–3 Hz"),
+        // The sign was dropped ("= 0.9: must lie in (-1, 0.5]").
+        ("bank", "road_bank = -0.9\n", "bank.toml:19:13: `model.effects.road_bank` = -0.9: must lie within ±0.5: a bank steeper than 0.5 rad (29°) is not a road"),
+        ("share", "bank_profile_scale = 5\n", "`model.effects.bank_profile_scale` = 5: must lie in [0, 2]: the share of a logged bank the road has lies in 0 to 2"),
     ] {
         let path = sedan(dir.path(), name, &format!("{STEP}\n[model.effects]\n{effects}"));
         let e = fails_cleanly("simulate", &path, dir.path());
         assert!(e.contains(said), "{said}\n{e}");
     }
+}
+
+/// A `bank_profile_scale` for a replayed run without a `bank` column was
+/// taken without a word, acting on nothing.
+#[test]
+fn a_bank_scale_for_a_run_without_bank_is_said_to_act_on_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    straight_run(dir.path(), 2.0, &[]);
+    let rest = format!("{REPLAY}\n[model.effects]\nbank_profile_scale = 0.5\n");
+    let path = sedan(dir.path(), "nobank", &rest);
+    let said = simulated(&path, dir.path());
+    assert!(
+        said.contains("warning: `model.effects.bank_profile_scale` (line 18) acts on nothing: it scales a replayed run's `bank` column, and this run has none"),
+        "{said}"
+    );
 }

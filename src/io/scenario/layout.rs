@@ -9,28 +9,45 @@
 //! scenario sets under another key (`[road] friction`, `[vehicle]
 //! yaw_inertia`, …), pointed there.
 
+use crate::diagnose::effects::EffectKind;
 use crate::error::{FileKind, InputError, InputProblem, ScenarioProblem};
 use crate::io::toml_file::TomlSource;
 use std::path::Path;
 
-/// `diagnose`'s effects of the measurement, not of the car.
-const MEASUREMENT: [&str; 5] = [
-    "sensor_delay",
-    "sensor_bias",
-    "accelerometer_roll",
-    "accelerometer_position",
-    "steer_path",
+/// `diagnose`'s effects of the measurement, not of the car (named from
+/// the effect library, so a renamed effect cannot leave this list behind).
+const MEASUREMENT: [EffectKind; 5] = [
+    EffectKind::SensorDelay,
+    EffectKind::SensorBias,
+    EffectKind::AccelerometerRoll,
+    EffectKind::AccelerometerPosition,
+    EffectKind::SteerPath,
 ];
 
 /// `diagnose`'s effects whose numbers a scenario gives under another key.
-const ELSEWHERE: [(&str, &str); 6] = [
-    ("cornering_stiffness", "`[model.effects] cornering_stiffness_scale = [front, rear]` (a scale on each axle's slip)"),
-    ("bank_profile", "`[model.effects] bank_profile_scale` (the share of a replayed run's measured `bank`) and `road_bank` (a constant bank, rad)"),
-    ("road_friction", "`[road] friction` (a scale on the tyres' own friction)"),
-    ("friction_scale", "`[road] friction` (a scale on the tyres' own friction)"),
-    ("yaw_inertia", "`[vehicle] yaw_inertia` (kg·m²)"),
-    ("load_transfer_distribution", "`[vehicle] load_transfer_front_share` (the front axle's share of the lateral load transfer)"),
+const ELSEWHERE: [(EffectKind, &str); 5] = [
+    (EffectKind::CorneringStiffness, "`[model.effects] cornering_stiffness_scale = [front, rear]` (a scale on each axle's slip)"),
+    (EffectKind::BankProfile, "`[model.effects] bank_profile_scale` (the share of a replayed run's measured `bank`) and `road_bank` (a constant bank, rad)"),
+    (EffectKind::RoadFriction, FRICTION),
+    (EffectKind::YawInertia, "`[vehicle] yaw_inertia` (kg·m²)"),
+    (EffectKind::LoadTransferDistribution, "`[vehicle] load_transfer_front_share` (the front axle's share of the lateral load transfer)"),
 ];
+
+/// Where a scenario sets the road's friction (also the answer to
+/// `road_friction`'s parameter name, `friction_scale`, written as a key).
+const FRICTION: &str = "`[road] friction` (a scale on the tyres' own friction)";
+
+/// Where `key` of `[model.effects]` belongs when it names one of
+/// `diagnose`'s effects a scenario takes elsewhere.
+fn elsewhere(key: &str) -> Option<&'static str> {
+    if key == "friction_scale" {
+        return Some(FRICTION);
+    }
+    ELSEWHERE
+        .iter()
+        .find(|(e, _)| e.name() == key)
+        .map(|(_, home)| *home)
+}
 
 /// The layout checks of a scenario's text `src`.
 pub(super) fn check(src: &TomlSource) -> Result<(), InputError> {
@@ -73,9 +90,9 @@ fn effect_keys(src: &TomlSource, root: &toml_edit::Table) -> Result<(), InputErr
         return Ok(());
     };
     for (key, _) in effects.iter() {
-        let problem = if MEASUREMENT.contains(&key) {
+        let problem = if MEASUREMENT.iter().any(|e| e.name() == key) {
             ScenarioProblem::MeasurementEffect { key: key.into() }
-        } else if let Some((_, home)) = ELSEWHERE.iter().find(|(k, _)| *k == key) {
+        } else if let Some(home) = elsewhere(key) {
             ScenarioProblem::EffectElsewhere {
                 key: key.into(),
                 home,

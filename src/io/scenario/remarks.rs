@@ -1,15 +1,13 @@
 //! What `simulate` says of a scenario as it reads it
-//! ([`ScenarioRemark`]): a replayed run's `bank` column applied as the
-//! road it was driven on (the scenario giving no `bank_profile_scale`, the
-//! measured bank at scale 1, as `diagnose`'s bank-profile effect means
-//! it), and a `[metrics]` table under a manoeuvre with no step-steer
+//! ([`ScenarioRemark`]): a replayed run's `bank` column that does not act
+//! (the scenario giving no `bank_profile_scale`: the road is flat, as in
+//! `diagnose`'s base model) or a scale with no bank column to act on, and a `[metrics]` table under a manoeuvre with no step-steer
 //! metrics, which the run sets aside (said with its line).
 
 use crate::error::ScenarioRemark;
 use crate::io::toml_file::TomlSource;
 use crate::io::MeasuredRun;
 use crate::manoeuvre::Manoeuvre;
-use crate::vehicle::VehicleModel;
 
 /// The `kind` of a manoeuvre as a scenario writes it.
 pub(super) fn kind_name(spec: &super::ManoeuvreSpec) -> &'static str {
@@ -27,25 +25,28 @@ pub(super) fn kind_name(spec: &super::ManoeuvreSpec) -> &'static str {
 /// The key that scales a measured bank profile.
 const BANK_SCALE_KEY: &str = "model.effects.bank_profile_scale";
 
-/// A replay of `run` on `model`: where the run logs a `bank` and the
-/// scenario `src` gives no `bank_profile_scale`, the road is the run's
-/// bank as measured (scale 1), said as a note.
-pub(super) fn apply_bank(
-    src: &TomlSource,
-    run: &MeasuredRun,
-    model: &mut VehicleModel,
-) -> Option<ScenarioRemark> {
-    let bank = run.bank.as_ref()?;
-    if src.key_span(BANK_SCALE_KEY).is_some() {
+/// A replay of `run`: a `bank` column the scenario `src` gives no
+/// `bank_profile_scale` for is said and left out (the base model drives a
+/// flat road, as `diagnose`'s base does: whether the car felt the logged
+/// bank, and how much of it, is its `bank_profile` effect's to fit); a
+/// `bank_profile_scale` given for a run with no `bank` column acts on
+/// nothing, and is said.
+pub(super) fn bank_remark(src: &TomlSource, run: &MeasuredRun) -> Option<ScenarioRemark> {
+    let given = src.key_span(BANK_SCALE_KEY);
+    let Some(bank) = run.bank.as_ref() else {
+        let span = given?;
+        let (line, _) = crate::io::toml_file::line_col(&src.text, span.start);
+        return Some(ScenarioRemark::BankScaleWithoutBank { line });
+    };
+    if given.is_some() {
         return None;
     }
-    model.options.effects.bank_profile_scale = 1.0;
     let range = bank
         .iter()
         .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &b| {
             [lo.min(b), hi.max(b)]
         });
-    Some(ScenarioRemark::BankApplied { range })
+    Some(ScenarioRemark::BankNotApplied { range })
 }
 
 /// A `[metrics]` table in `src` that manoeuvre `m` does not read: only a

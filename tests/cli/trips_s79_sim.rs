@@ -109,7 +109,11 @@ fn a_replay_drives_on_the_logs_bank() {
         column(&history, "yaw_rate"),
     );
     let k = ay.len() - 1;
-    assert!((ay[k] - u[k] * r[k]).abs() < 1e-3, "{}", ay[k] - u[k] * r[k]);
+    assert!(
+        (ay[k] - u[k] * r[k]).abs() < 1e-3,
+        "{}",
+        ay[k] - u[k] * r[k]
+    );
     fs::remove_dir_all(dir.path().join("out")).unwrap();
     let rest = format!("{REPLAY}\n[model.effects]\nbank_profile_scale = 1.0\n");
     let path = sedan(dir.path(), "banked", &rest);

@@ -225,3 +225,46 @@ fn a_run_selected_twice_names_both_entries_where_they_are() {
         "{e}"
     );
 }
+
+/// A yaw-rate offset of -4.6e-5 ± 1.4e-4 rad/s at a standstill was said
+/// "-0.0000 ± 0.0001 rad/s", an offset below zero the digits do not show:
+/// a value that rounds to zero at its standard error's digit is 0.
+#[test]
+fn an_offset_within_its_error_of_zero_is_said_without_a_sign() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "so", &["--programme", "slow-oval"]);
+    // The standstill's yaw-rate offset is 5.4e-5 rad/s as synthesised:
+    // 1e-4 less makes it -4.6e-5, within its ± 1.4e-4 of zero.
+    for e in fs::read_dir(c.join("runs")).unwrap() {
+        let p = e.unwrap().path();
+        let text = fs::read_to_string(&p).unwrap();
+        let mut lines = text.lines();
+        let head = lines.next().unwrap();
+        let r = head.split(',').position(|h| h == "yaw_rate").unwrap();
+        let mut out = format!("{head}\n");
+        for l in lines {
+            let mut v: Vec<String> = l.split(',').map(str::to_string).collect();
+            let y: f64 = v[r].parse().unwrap();
+            v[r] = format!("{}", y - 1e-4);
+            out.push_str(&v.join(","));
+            out.push('\n');
+        }
+        fs::write(&p, out).unwrap();
+    }
+    // One candidate keeps the run short; synth's vehicle.toml ends in its
+    // [diagnose] table.
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    fs::write(&v, format!("{text}effects = [\"sensor_bias\"]\n")).unwrap();
+    let (stdout, d) = diagnose(&c);
+    let mean = d["calibration"]["channels"][0]["standstill"]["mean"]
+        .as_f64()
+        .unwrap();
+    assert!((-5e-5..-4e-5).contains(&mean), "{mean}");
+    assert!(
+        stdout
+            .contains("calibration: yaw_rate offset 0.0000 ± 0.0001 rad/s at 1 standstill (18 s)"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("-0.0000"), "{stdout}");
+}

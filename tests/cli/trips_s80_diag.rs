@@ -1,4 +1,4 @@
-//! What a fresh user tripped on in `diagnose` (issue 41, round 7), run as
+//! What a fresh user tripped on in `diagnose`, run as
 //! a user runs the tool: a logged roll left out of the gap in silence;
 //! `--batch` handed a campaign folder (two "failed" campaigns, exit 0) or
 //! a file ("Not a directory"), and a fleet whose count took failures for

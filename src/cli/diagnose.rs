@@ -47,6 +47,9 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
                     json.display(),
                     html.display()
                 );
+                if let Some(e) = f.all_failed(&a.campaign) {
+                    return Err(e.into());
+                }
             }
             BatchOutcome::Shard(s) => super::print(&s.summary()),
         }

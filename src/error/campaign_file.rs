@@ -23,11 +23,18 @@ pub enum NotCampaignKind {
 pub enum CampaignFileProblem {
     /// A wildcard in a `[runs] files` entry: the list names files as
     /// written, no file is named so, and `dir` reads a folder's runs.
-    #[error("`runs.files` = \"{pattern}\": the list names files as written, not a pattern (no file is named so): to read every *.csv of a folder, give it as `dir = \"{}\"` instead", folder_of(pattern))]
+    #[error("`runs.files` = \"{pattern}\": the list names files as written, not a pattern (no file is named so): {}", super::runs_selection::instead(folder, found, false))]
     RunsGlob {
         /// The entry as written.
         pattern: Box<str>,
+        /// Its folder part, as written ([`folder_of`]).
+        folder: Box<str>,
+        /// What it matches.
+        found: super::GlobMatch,
     },
+    /// What `[runs]` or `--batch` selects wrongly.
+    #[error(transparent)]
+    Selection(super::SelectionProblem),
     /// A file of another kind given as the campaign.
     #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(*kind))]
     NotACampaign {
@@ -48,7 +55,7 @@ fn what(kind: NotCampaignKind) -> &'static str {
 
 /// The folder part of a glob pattern (`runs` of `runs/*.csv`; `.` for a
 /// bare `*.csv`).
-fn folder_of(pattern: &str) -> &str {
+pub(crate) fn folder_of(pattern: &str) -> &str {
     let cut = pattern
         .find(['*', '?', '['])
         .map_or(pattern, |i| &pattern[..i]);

@@ -24,12 +24,14 @@ mod problem_name;
 mod reason;
 mod rig;
 mod rig_sign;
+mod runs_selection;
 mod scenario_file;
 mod steady;
 #[cfg(test)]
 mod tests;
 mod units;
 
+pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
 pub use effect_limit::EffectLimit;
@@ -54,6 +56,7 @@ pub use reason::{
     MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{FileKind, ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 use thiserror::Error;

@@ -13,7 +13,9 @@ use super::shard::{
 };
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::VerdictKind;
-use crate::error::{Error, InputError, OptionsError};
+use crate::error::{
+    CampaignFileProblem, Error, InputError, InputProblem, OptionsError, SelectionProblem,
+};
 use crate::report::html::{Cell, Page};
 use crate::report::{write_csv, write_json, OutputLock};
 use serde::{Deserialize, Serialize};
@@ -112,6 +114,28 @@ pub fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, Error> {
     Ok(out)
 }
 
+/// Refuses a file or a campaign folder given as the batch folder: it
+/// would be read as a batch of its own entries, each failing.
+fn refuse_one_campaign(dir: &Path) -> Result<(), Error> {
+    let problem = if dir.is_file() {
+        SelectionProblem::BatchOfAFile {
+            path: dir.to_path_buf(),
+        }
+    } else if dir.join("vehicle.toml").is_file() && dir.join("runs").is_dir() {
+        SelectionProblem::BatchOfOneCampaign {
+            path: dir.to_path_buf(),
+        }
+    } else {
+        return Ok(());
+    };
+    Err(selection_error(dir, problem))
+}
+
+fn selection_error(path: &Path, problem: SelectionProblem) -> Error {
+    let problem = InputProblem::Campaign(Box::new(CampaignFileProblem::Selection(problem)));
+    InputError::problem(path, problem).into()
+}
+
 fn name_of(p: &Path) -> String {
     p.file_name()
         .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
@@ -136,6 +160,7 @@ pub fn run_batch(
     out: Option<&Path>,
     shard: Option<Shard>,
 ) -> Result<(Vec<DiagnoseReport>, BatchOutcome), Error> {
+    refuse_one_campaign(dir)?;
     let all = campaigns(dir)?;
     let out_dir = out.map_or_else(
         || PathBuf::from("out").join(name_of(dir)),
@@ -360,7 +385,7 @@ impl FleetReport {
                 ]
             })
             .collect();
-        let n = self.campaigns.len();
+        let n = self.diagnosed();
         let recurring: Vec<Vec<Cell>> = self
             .recurring
             .iter()
@@ -389,19 +414,45 @@ impl FleetReport {
         );
         p.section("recurring", "Recurring effects").table(
             "recurring-table",
-            &["effect", "in the verdict of", "best single candidate in"],
+            &[
+                "effect",
+                "in the verdict of (campaigns diagnosed)",
+                "best single candidate in",
+            ],
             &recurring,
         );
         p
     }
 
+    /// The campaigns diagnosed (not failed).
+    pub fn diagnosed(&self) -> usize {
+        self.campaigns.iter().filter(|r| !r.failed).count()
+    }
+
+    /// The error of batch folder `batch` when none of its campaigns was
+    /// diagnosed (after its table, which lists why, is written): a run
+    /// that diagnosed nothing does not end as a success.
+    pub fn all_failed(&self, batch: &Path) -> Option<Error> {
+        (self.diagnosed() == 0).then(|| {
+            let problem = SelectionProblem::BatchAllFailed {
+                count: self.campaigns.len(),
+                table: self.outputs()[0].clone(),
+            };
+            selection_error(batch, problem)
+        })
+    }
+
     /// The table in lines of text.
     pub fn summary(&self) -> Vec<String> {
-        let failed = self.campaigns.iter().filter(|r| r.failed).count();
+        let (n, diagnosed) = (self.campaigns.len(), self.diagnosed());
+        let failed = match n - diagnosed {
+            0 => String::new(),
+            1 => ", 1 failed (its reason below)".into(),
+            f => format!(", {f} failed (each one's reason below)"),
+        };
         let mut out = vec![format!(
-            "fleet: {}: {} diagnosed, {failed} failed",
-            plural(self.campaigns.len(), "campaign", "campaigns"),
-            self.campaigns.len() - failed
+            "fleet: {diagnosed} of {} diagnosed{failed}",
+            plural(n, "campaign", "campaigns")
         )];
         for r in &self.campaigns {
             out.push(if r.failed {
@@ -421,10 +472,11 @@ impl FleetReport {
                 )
             });
         }
-        let n = self.campaigns.len();
+        // Out of the campaigns diagnosed: a failed one has no verdict.
+        let n = diagnosed;
         for e in &self.recurring {
             out.push(format!(
-                "  {}: in the verdict of {} of {n} campaigns, the best single candidate in {} of {n}",
+                "  {}: in the verdict of {} of {n} diagnosed campaigns, the best single candidate in {} of {n}",
                 e.effect.name(),
                 e.verdicts,
                 e.best

@@ -136,7 +136,7 @@ fn a_batch_names_each_output_by_its_stem_and_counts_the_diagnosed() {
         out.to_str().unwrap(),
     ]);
     assert!(
-        said.contains("fleet: 2 campaigns: 2 diagnosed, 0 failed"),
+        said.contains("fleet: 2 of 2 campaigns diagnosed\n"),
         "{said}"
     );
     assert!(out.join("a/diagnosis.json").is_file());

@@ -545,7 +545,8 @@ pub fn value(v: f64) -> String {
     if v != 0.0 && v.abs() < 0.01 {
         crate::format::readable(v, 4)
     } else {
-        format!("{v:.4}")
+        // `+ 0.0` writes a negative zero as 0.0000, not -0.0000.
+        format!("{:.4}", v + 0.0)
     }
 }
 

@@ -5,7 +5,7 @@
 //! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
-use crate::error::{InputError, InputProblem};
+use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
 use crate::io::{read_run_declared, AngleColumn};
@@ -58,6 +58,7 @@ pub(super) fn run_files(
     for p in &files {
         src.referenced_file("runs.files", p)?;
     }
+    super::glob::refuse_dir_glob(src, run_spec.dir.as_ref(), base)?;
     if let Some(d) = &run_spec.dir {
         src.referenced_folder("runs.dir", &beside(base, d))?;
     }
@@ -111,30 +112,29 @@ pub(super) fn run_files(
         files.extend(found);
     }
     // A run listed twice would be held out and trained on at once.
-    for (i, p) in files.iter().enumerate() {
-        let same = |q: &PathBuf| match (p.canonicalize(), q.canonicalize()) {
-            (Ok(a), Ok(b)) => a == b,
-            _ => p == q,
+    let listed = run_spec.files.len();
+    if let Some((first, second)) = selected_twice(&files) {
+        let at = |k: usize| match k < listed {
+            true => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
+            false => entry(
+                src,
+                "runs.dir",
+                run_spec.dir.as_deref().unwrap_or(Path::new("")),
+            ),
         };
-        if let Some(q) = files[..i].iter().find(|q| same(q)) {
-            let problem = InputProblem::RunListedTwice {
-                run: p.clone(),
-                also: q.clone(),
-            };
-            // At its entry in `[runs] files`: the second listing where both
-            // are there, else the first, which `dir` finds again (the
-            // folder's files come after the list).
-            let listed = run_spec.files.len();
-            let at = if i < listed {
-                Some(i)
-            } else {
-                files[..listed].iter().position(same)
-            };
-            return Err(match at {
-                Some(k) => src.located(src.key_span(&format!("runs.files[{k}]")), problem),
-                None => file_error(file, problem),
-            });
-        }
+        let problem = SelectionProblem::SelectedTwice {
+            run: files[second].clone(),
+            first: at(first),
+            second: at(second),
+        };
+        // At its entry in `[runs] files`: the second listing where both
+        // are there, else the first, which `dir` finds again (the
+        // folder's files come after the list).
+        let k = if second < listed { second } else { first };
+        return Err(src.located(
+            src.key_span(&format!("runs.files[{k}]")),
+            InputProblem::Campaign(Box::new(CampaignFileProblem::Selection(problem))),
+        ));
     }
     if files.is_empty() {
         // The vehicle file of a campaign folder, passed for the folder.
@@ -148,6 +148,38 @@ pub(super) fn run_files(
         return Err(file_error(file, InputProblem::NoRuns { campaign_folder }));
     }
     Ok(files)
+}
+
+/// The first pair of indices of `files` that name one file (the same file
+/// however spelt), in order.
+fn selected_twice(files: &[PathBuf]) -> Option<(usize, usize)> {
+    let same = |p: &PathBuf, q: &PathBuf| match (p.canonicalize(), q.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => p == q,
+    };
+    (0..files.len()).find_map(|i| {
+        files[..i]
+            .iter()
+            .position(|q| same(&files[i], q))
+            .map(|k| (k, i))
+    })
+}
+
+/// The `[runs]` entry at `key`, written `value`, with its place in the
+/// file: "`runs.files[0]` = "runs/a.csv" (c.toml:12:10)".
+fn entry(src: &TomlSource, key: &str, value: &Path) -> String {
+    let place = src.key_span(key).map_or_else(
+        || src.path.display().to_string(),
+        |s| {
+            let (line, column) = crate::io::toml_file::line_col(&src.text, s.start);
+            format!("{}:{line}:{column}", src.path.display())
+        },
+    );
+    let reads = match key {
+        "runs.dir" => ", which reads every *.csv of the folder",
+        _ => "",
+    };
+    format!("`{key}` = \"{}\" ({place}){reads}", value.display())
 }
 
 /// The runs read: the pieces to replay, notes on what was done, the
@@ -243,6 +275,7 @@ pub(super) fn read_runs(
     if let Some(seg) = segment.filter(|_| !was_cut && !runs.is_empty()) {
         notes.push(uncut_note(seg, longest));
     }
+    notes.extend(unscored_roll(&raw, degrees.contains(&AngleColumn::Roll)));
     for (column, lacking, first) in absent {
         if lacking.len() == files.len() {
             return Err(first);
@@ -267,6 +300,24 @@ fn uncut_note(segment: f64, longest: f64) -> String {
         crate::error::Num(segment),
         crate::format::fixed(longest, 1)
     )
+}
+
+/// The note of a logged roll channel (`declared` in degrees under
+/// `[runs]`): read, and converted where declared, but no channel of the
+/// gap, which says so rather than leave it out in silence.
+fn unscored_roll(raw: &[MeasuredRun], declared: bool) -> Option<String> {
+    let with = raw.iter().filter(|r| r.roll.is_some()).count();
+    let unit = match declared {
+        true => ", converted from the degrees `degrees` under [runs] declares",
+        false => "",
+    };
+    (with > 0).then(|| {
+        format!(
+            "roll: logged in {with} of {} run{}{unit}, not scored: the gap is the yaw rate's, ay's and beta's alone, and the logged roll is compared with nothing, so the roll dynamics (the campaign's [roll], and roll.frequency and roll.damping where a candidate fits them) are judged only by what they do to those channels",
+            raw.len(),
+            if raw.len() == 1 { "" } else { "s" }
+        )
+    })
 }
 
 /// The steer judged against the yaw rate it gives where it is held

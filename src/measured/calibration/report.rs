@@ -329,10 +329,17 @@ fn digits(error: f64) -> usize {
     }
 }
 
-/// `value ± error` to the error's first significant digit.
+/// `value ± error` to the error's first significant digit; a value that
+/// rounds to zero there is written 0, without the sign of a digit it does
+/// not show ("-0.0000 ± 0.0002" read as an offset below zero).
 fn plus_minus(value: f64, error: f64) -> String {
     let d = digits(error);
-    format!("{value:.d$} ± {error:.d$}")
+    let v = format!("{value:.d$}");
+    let v = match v.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => v,
+    };
+    format!("{v} ± {error:.d$}")
 }
 
 impl ChannelCalibration {

@@ -10,6 +10,7 @@
 mod campaign_file;
 mod duplicate;
 mod effect_limit;
+mod file_kind;
 mod fit;
 mod input;
 mod level_slip;
@@ -17,6 +18,7 @@ mod metrics;
 mod number;
 mod options;
 mod output;
+mod path_found;
 mod param;
 mod piece;
 mod problem;
@@ -46,7 +48,9 @@ pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, Shar
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
 pub use piece::{PieceRefusal, RefusedPiece};
-pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
+pub use file_kind::{FileKind, KindProblem, Wanted};
+pub use path_found::PathFound;
+pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
     BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce,
@@ -54,7 +58,7 @@ pub use reason::{
     MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
-pub use scenario_file::{FileKind, ScenarioProblem, ScenarioRemark};
+pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{

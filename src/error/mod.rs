@@ -18,8 +18,8 @@ mod metrics;
 mod number;
 mod options;
 mod output;
-mod path_found;
 mod param;
+mod path_found;
 mod piece;
 mod problem;
 mod problem_name;
@@ -35,6 +35,7 @@ mod units;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
 pub use effect_limit::EffectLimit;
+pub use file_kind::{FileKind, KindProblem, Wanted};
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
@@ -47,9 +48,8 @@ pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
-pub use piece::{PieceRefusal, RefusedPiece};
-pub use file_kind::{FileKind, KindProblem, Wanted};
 pub use path_found::PathFound;
+pub use piece::{PieceRefusal, RefusedPiece};
 pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{

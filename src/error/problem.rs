@@ -17,9 +17,9 @@ use super::rig_sign::wrong_sign;
 pub use super::rig_sign::{RigChannel, SmallSlipSlope};
 use super::units::UnitSlip;
 use super::ParamError;
+use super::PathFound;
 use crate::format::{plural, significant};
 use std::path::PathBuf;
-use super::PathFound;
 use thiserror::Error;
 
 /// `v` beside the end of `lo..=hi` it passes, each with its unit and the

@@ -115,12 +115,12 @@ fn wanted(required: &[&str]) -> Option<Wanted> {
 pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
     let wanted = wanted(required)?;
     let kind = recognise(path)?;
-    let fits = match (&kind, wanted) {
-        (FileKind::Csv { .. }, _) => true,
-        (FileKind::RunCsv | FileKind::HistoryCsv, Wanted::Run) => true,
-        (FileKind::RigCsv, Wanted::Tyre) => true,
-        _ => false,
-    };
+    let fits = matches!(
+        (&kind, wanted),
+        (FileKind::Csv { .. }, _)
+            | (FileKind::RunCsv | FileKind::HistoryCsv, Wanted::Run)
+            | (FileKind::RigCsv, Wanted::Tyre)
+    );
     if fits {
         return None;
     }

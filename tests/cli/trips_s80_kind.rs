@@ -76,9 +76,18 @@ fn a_scenario_given_as_a_csv_is_named_as_a_scenario() {
     let out = out.to_str().unwrap();
     let gim = root().join("tyres/gim.toml");
     for (args, wanted) in [
-        (vec!["metrics", sc], "a vehicle run (a CSV with `t`, `speed`, `steer`, `yaw_rate`)"),
-        (vec!["identify", sc, "--model", "pac89", "--out", out], "tyre data (a CSV with `fz` and `alpha` or `kappa`)"),
-        (vec!["tyre-eval", gim.to_str().unwrap(), sc, "--out", out], "tyre data (a CSV with `fz` and `alpha` or `kappa`)"),
+        (
+            vec!["metrics", sc],
+            "a vehicle run (a CSV with `t`, `speed`, `steer`, `yaw_rate`)",
+        ),
+        (
+            vec!["identify", sc, "--model", "pac89", "--out", out],
+            "tyre data (a CSV with `fz` and `alpha` or `kappa`)",
+        ),
+        (
+            vec!["tyre-eval", gim.to_str().unwrap(), sc, "--out", out],
+            "tyre data (a CSV with `fz` and `alpha` or `kappa`)",
+        ),
     ] {
         let e = error_of(&args);
         let said = format!("sedan_step.toml: this is a scenario (a TOML file with [manoeuvre]), not {wanted}: `handling simulate` runs it");
@@ -94,7 +103,10 @@ fn a_folder_is_named_as_a_folder() {
     let dir = scratch(&[("vehicle.toml", VEHICLE)]);
     let scenarios = root().join("scenarios");
     let e = fails_cleanly("simulate", &scenarios, dir.path());
-    assert!(e.contains("scenarios: the file is a folder, not a scenario: give one of its files"), "{e}");
+    assert!(
+        e.contains("scenarios: the file is a folder, not a scenario: give one of its files"),
+        "{e}"
+    );
     let e = error_of(&["metrics", scenarios.to_str().unwrap()]);
     assert!(e.contains("scenarios: this is a folder, not a vehicle run (a CSV with `t`, `speed`, `steer`, `yaw_rate`): give one of its files"), "{e}");
     assert!(!e.contains("Is a directory"), "{e}");
@@ -141,7 +153,8 @@ fn table_hints_know_the_kind_of_file() {
     let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
     assert!(e.contains("c.toml:16:2: `model`: unknown field `model` (a campaign has no [model] table, which is a scenario's: `handling diagnose` builds its base model from [vehicle], [tyres] and [roll], and the effects it tries are named in `[diagnose] effects = [\"…\"]`, their sizes fitted to the runs)"), "{e}");
     assert!(!e.contains("it belongs in [tyres]"), "{e}");
-    let sc = bundled_scenario("sedan_step.toml").replace("[tyres]\n", "[tyres]\nmodel = \"pac89\"\n");
+    let sc =
+        bundled_scenario("sedan_step.toml").replace("[tyres]\n", "[tyres]\nmodel = \"pac89\"\n");
     fs::write(dir.path().join("s.toml"), sc).unwrap();
     let e = fails_cleanly("simulate", &dir.path().join("s.toml"), dir.path());
     assert!(e.contains("`tyres.model`: unknown field `model` (a scenario's tyre model is its tyre file's: `[tyres] front = \"<tyre file>\"` (and `rear`), whose own `model = \"…\"` names it, or a .tir file; `mode` is a .tir's MFeval useMode, and `model` with `rig` is a campaign's)"), "{e}");
@@ -154,7 +167,9 @@ fn table_hints_know_the_kind_of_file() {
 #[test]
 fn a_degrees_column_no_run_has_is_refused_at_the_key() {
     let dir = scratch(&[("a.csv", LOG), ("b.csv", LOG)]);
-    let camp = format!("{VEHICLE}\n[runs]\nfiles = [\"a.csv\", \"b.csv\"]\ndegrees = [\"roll\", \"bank\"]\n");
+    let camp = format!(
+        "{VEHICLE}\n[runs]\nfiles = [\"a.csv\", \"b.csv\"]\ndegrees = [\"roll\", \"bank\"]\n"
+    );
     fs::write(dir.path().join("c.toml"), camp).unwrap();
     let e = fails_cleanly("diagnose", &dir.path().join("c.toml"), dir.path());
     assert!(e.contains("c.toml:12:20: `bank` is declared in degrees, and none of the 2 run files has it: the angle columns the runs have are steer, yaw_rate, beta, roll (`degrees` takes steer, yaw_rate, beta, roll, bank); leave `bank` out"), "{e}");

@@ -15,7 +15,9 @@ fn kind_of(path: &Path, text: &str) -> Option<NotCampaignKind> {
         Some(FileKind::Campaign | FileKind::Folder { .. }) => None,
         Some(kind) => Some(NotCampaignKind::Seen(kind)),
         None => {
-            let toml = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml"));
+            let toml = path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
             (!toml && text.parse::<toml::Table>().is_err()).then_some(NotCampaignKind::NotToml)
         }
     }

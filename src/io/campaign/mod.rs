@@ -139,10 +139,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     degrees::check_declared(&src, declared, &files)?;
     let (runs, mut notes, cleaning, calibration) = read_runs(
         &files,
-        (
-            f.runs.as_ref().and_then(|r| r.segment),
-            declared,
-        ),
+        (f.runs.as_ref().and_then(|r| r.segment), declared),
         f.diagnose.min_speed,
         f.vehicle.wheelbase(),
         &mut inputs,

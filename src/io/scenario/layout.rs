@@ -113,4 +113,3 @@ pub(super) fn other_kind(path: &Path) -> Option<InputError> {
     let problem = InputProblem::Scenario(Box::new(ScenarioProblem::NotAScenario(kind)));
     Some(InputError::problem(path, problem))
 }
-

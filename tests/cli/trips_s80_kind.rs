@@ -1,4 +1,4 @@
-//! Fresh-eyes round 7 (issue 41), files of the wrong kind and hints that
+//! What a fresh user tripped on: files of the wrong kind and hints that
 //! sent the user to the wrong place: a tyre rig CSV given as a run (its
 //! `fy` answered "did you mean `ay`?"), a run given as rig data (`ax` as
 //! `fx`), a scenario given to `metrics`, `identify` or `tyre-eval`, a

@@ -3,17 +3,14 @@
 //! kind (a measured run, a `.tir`, a scenario) given in the campaign's
 //! place. Each says what the file is and what to give instead.
 
+use super::FileKind;
 use thiserror::Error;
 
 /// The kind of file given to `diagnose` in a campaign's place.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum NotCampaignKind {
-    /// A CSV file: a measured run or rig data.
-    Csv,
-    /// A Magic Formula tyre property file.
-    Tir,
-    /// A scenario (a TOML file with a `[manoeuvre]`), which `simulate` runs.
-    Scenario,
+    /// A file recognised as another kind ([`FileKind`]).
+    Seen(FileKind),
     /// A file not named `.toml` whose text is no TOML.
     NotToml,
 }
@@ -36,7 +33,7 @@ pub enum CampaignFileProblem {
     #[error(transparent)]
     Selection(super::SelectionProblem),
     /// A file of another kind given as the campaign.
-    #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(*kind))]
+    #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(kind))]
     NotACampaign {
         /// What the file is.
         kind: NotCampaignKind,
@@ -44,12 +41,19 @@ pub enum CampaignFileProblem {
 }
 
 /// What a file of `kind` is, in words.
-fn what(kind: NotCampaignKind) -> &'static str {
-    match kind {
-        NotCampaignKind::Csv => "this is a CSV file (a measured run or rig data), not a campaign: list it under the campaign's [runs] files, or put it in its runs/ folder",
-        NotCampaignKind::Tir => "this is a tyre property file (.tir), not a campaign: give it under the campaign's [tyres] file (or front and rear)",
-        NotCampaignKind::Scenario => "this is a scenario (it has a [manoeuvre]), which `handling simulate` runs, not a campaign",
-        NotCampaignKind::NotToml => "this file is neither named .toml nor TOML, so not a campaign",
+fn what(kind: &NotCampaignKind) -> String {
+    let seen = match kind {
+        NotCampaignKind::Seen(seen) => seen,
+        NotCampaignKind::NotToml => {
+            return "this file is neither named .toml nor TOML, so not a campaign".into()
+        }
+    };
+    match seen {
+        FileKind::RunCsv | FileKind::Csv { .. } => "this is a CSV file (a measured run or rig data), not a campaign: list it under the campaign's [runs] files, or put it in its runs/ folder".into(),
+        FileKind::RigCsv => "this is a tyre rig file (a CSV with `fz` and `alpha` or `kappa`), not a campaign: give it as the campaign's `[tyres] rig = \"<this file>\"` (or as tyre_rig.csv in a campaign folder); `handling identify` fits a tyre to it".into(),
+        FileKind::Tir => "this is a tyre property file (.tir), not a campaign: give it under the campaign's [tyres] file (or front and rear)".into(),
+        FileKind::Scenario => "this is a scenario (it has a [manoeuvre]), which `handling simulate` runs, not a campaign".into(),
+        other => format!("this is {}, not a campaign: {}", other.what(), other.reader()),
     }
 }
 

@@ -10,6 +10,7 @@
 mod campaign_file;
 mod duplicate;
 mod effect_limit;
+mod file_kind;
 mod fit;
 mod input;
 mod level_slip;
@@ -18,6 +19,7 @@ mod number;
 mod options;
 mod output;
 mod param;
+mod path_found;
 mod piece;
 mod problem;
 mod problem_name;
@@ -35,6 +37,7 @@ pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
 pub use effect_limit::EffectLimit;
+pub use file_kind::{FileKind, KindProblem, Wanted};
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
@@ -47,8 +50,9 @@ pub use number::{number, range, Num};
 pub use options::{MergeInput, ModeDigit, ModeError, NameKind, OptionsError, ShardField};
 pub use output::{OutputError, WriteStep};
 pub use param::{ParamError, ParamValue};
+pub use path_found::PathFound;
 pub use piece::{PieceRefusal, RefusedPiece};
-pub use problem::{InputProblem, PathFound, RigChannel, SmallSlipSlope};
+pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
     BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce,
@@ -57,7 +61,7 @@ pub use reason::{
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use runs_selection::{GlobMatch, SelectionProblem};
-pub use scenario_file::{FileKind, ScenarioProblem, ScenarioRemark};
+pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 use thiserror::Error;
 pub use units::{

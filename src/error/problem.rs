@@ -17,6 +17,7 @@ use super::rig_sign::wrong_sign;
 pub use super::rig_sign::{RigChannel, SmallSlipSlope};
 use super::units::UnitSlip;
 use super::ParamError;
+use super::PathFound;
 use crate::format::{plural, significant};
 use std::path::PathBuf;
 use thiserror::Error;
@@ -540,6 +541,10 @@ pub enum InputProblem {
     /// A scenario file refused as a whole or at a table (boxed).
     #[error("{0}")]
     Scenario(Box<super::ScenarioProblem>),
+    /// A file of another kind than the reader's, or a key naming what
+    /// no file given has (boxed).
+    #[error("{0}")]
+    Kind(Box<super::KindProblem>),
 }
 
 /// Where [`InputProblem::MissingFile`]'s path was read from: a relative
@@ -561,27 +566,6 @@ fn read_from(written: Option<&str>, base: &std::path::Path) -> String {
             "relative paths are read from {folder}, the folder of {}",
             base.display()
         ),
-    }
-}
-
-/// What a path a key names leads to, when it is not what the key wants.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PathFound {
-    /// Nothing.
-    Nothing,
-    /// A folder where a file was wanted.
-    FolderNotFile,
-    /// A file where a folder was wanted.
-    FileNotFolder,
-}
-
-impl PathFound {
-    fn describe(self) -> &'static str {
-        match self {
-            PathFound::Nothing => "which does not exist",
-            PathFound::FolderNotFile => "which is a folder, not a file",
-            PathFound::FileNotFolder => "which is a file, not a folder",
-        }
     }
 }
 

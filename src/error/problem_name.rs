@@ -69,6 +69,7 @@ impl InputProblem {
             InputProblem::UnitSlip(_) => "UnitSlip",
             InputProblem::RunTooShort { .. } => "RunTooShort",
             InputProblem::TooFewRuns { .. } => "TooFewRuns",
+            InputProblem::Kind(_) => "Kind",
             InputProblem::Scenario(_) => "Scenario",
         }
     }

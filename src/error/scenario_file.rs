@@ -9,36 +9,8 @@
 //! metrics. The file, line and column come from the caller's
 //! [`crate::error::InputError`]; the sentences are made here.
 
+use super::FileKind;
 use std::fmt;
-
-/// What a file given as a scenario is instead.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum FileKind {
-    /// A measured run (`FORMATS.md`: `t`, `speed`, `steer`, `yaw_rate`).
-    RunCsv,
-    /// Tyre rig data (`fz` with `alpha` or `kappa`).
-    RigCsv,
-    /// Another CSV file; its header's first column.
-    Csv {
-        /// The header's first column.
-        first: Box<str>,
-    },
-    /// A Magic Formula `.tir` file.
-    Tir,
-    /// A tyre parameter file of the project (`model = "…"`).
-    TyreToml {
-        /// Its `model`.
-        model: Box<str>,
-    },
-    /// A JSON file (a report `handling` writes: `diagnosis.json`,
-    /// `metrics.json`, `gap.json`).
-    Json,
-    /// Not text: a NUL byte at this byte offset.
-    Binary {
-        /// Byte offset of the first NUL.
-        at: usize,
-    },
-}
 
 /// Why a scenario file is refused as a whole or at a table.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -79,6 +51,10 @@ impl fmt::Display for FileKind {
             FileKind::TyreToml { model } => write!(f, "is a tyre file (`model = \"{model}\"`), not a scenario: give it as `[tyres] front = \"<this file>\"` in a scenario"),
             FileKind::Json => f.write_str("is a JSON file (a report `handling` writes: diagnosis.json, metrics.json, gap.json), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
             FileKind::Binary { at } => write!(f, "is not a text file (a NUL byte at byte {at}), not a scenario: a scenario is a TOML file with [vehicle], [tyres] and [manoeuvre] tables"),
+            FileKind::HistoryCsv => f.write_str("is a simulation history (history.csv, which `handling simulate` writes), not a scenario: measure it with `handling metrics`"),
+            FileKind::Scenario | FileKind::Campaign | FileKind::Sweep | FileKind::Study | FileKind::Folder { .. } => {
+                write!(f, "is {}, not a scenario: {}", self.what(), self.reader())
+            }
         }
     }
 }

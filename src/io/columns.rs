@@ -319,9 +319,12 @@ fn read_layout(
     } = layout;
     let file_err = |problem| InputError::problem(path, problem);
     // Read whole to find each record's true line (see [`line_of`]).
-    let bytes = std::fs::read(path).map_err(|source| InputError::Io {
-        path: path.to_path_buf(),
-        source,
+    let bytes = std::fs::read(path).map_err(|source| {
+        // A folder named as one, not as the OS's "Is a directory".
+        crate::io::file_kind::not_wanted(path, required).unwrap_or(InputError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
     })?;
     // Nothing to name a column in: said as such, not as a missing `t`.
     if bytes.iter().all(u8::is_ascii_whitespace) {
@@ -413,6 +416,12 @@ fn read_layout(
         missing.truncate(1);
     }
     if !missing.is_empty() {
+        // A file of another kind (rig data given as a run, a scenario as
+        // rig data) is named as such: its columns read as slips of the
+        // wanted ones (a rig's `fy` for a run's `ay`) would mislead.
+        if let Some(e) = crate::io::file_kind::not_wanted(path, required) {
+            return Err(e);
+        }
         missing.append(&mut bad);
         // A file refused for its header says every column to rename in
         // that one run, the slips a reader would only have warned of too

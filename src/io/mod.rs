@@ -6,6 +6,7 @@
 
 pub mod campaign;
 mod columns;
+pub(crate) mod file_kind;
 pub mod fitted_ranges;
 mod limits;
 pub mod paths;

@@ -217,7 +217,9 @@ pub fn load_scenario(path: &Path) -> Result<Scenario, InputError> {
         Ok((f, src))
     });
     let (f, src) = read.map_err(|e| match e {
-        InputError::Io { .. } => e,
+        // A folder is named as one (a campaign's, which `diagnose`
+        // reads), not as the OS's "Is a directory".
+        InputError::Io { .. } if !path.is_dir() => e,
         e => layout::other_kind(path).unwrap_or(e),
     })?;
     resolve_scenario(&f, &src)

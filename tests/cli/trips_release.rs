@@ -163,9 +163,10 @@ fn a_campaigns_degrees_column_is_said_where_a_file_lacks_it_and_refused_where_al
     );
     let dir = campaign("\"roll\", \"bank\"");
     let e = fails_cleanly("diagnose", dir.path(), dir.path());
+    // Refused at the key, not at the first run's header.
     assert!(
-        e.contains(
-            "a.csv:1:1: `degrees` under [runs] names `bank`, a column this file does not have"
+        e.contains("vehicle.toml:") && e.contains(
+            ": `bank` is declared in degrees, and none of the 2 run files has it: the angle columns the runs have are steer, yaw_rate"
         ),
         "{e}"
     );

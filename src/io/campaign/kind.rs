@@ -1,32 +1,25 @@
 //! A file of another kind given to `diagnose` as its campaign — a measured
-//! run's CSV, a `.tir`, a scenario — named as what it is, where the TOML
+//! run's CSV, rig data, a `.tir` or tyre file, a scenario, a sweep — named as what it is, where the TOML
 //! reader would say only "expected `.`, `=`" or "unknown field
 //! `manoeuvre`". Judged only once the campaign fails to read, so a
 //! campaign is never refused for its name.
 
-use crate::error::{CampaignFileProblem, InputError, InputProblem, NotCampaignKind};
+use crate::error::{CampaignFileProblem, FileKind, InputError, InputProblem, NotCampaignKind};
 use std::path::Path;
 
 /// What the file at `path` (text `text`) is, when it is clearly no
-/// campaign: a CSV or `.tir` by its name, a scenario by its `[manoeuvre]`
-/// (and no `[runs]`), any other file not named `.toml` whose text is no
-/// TOML.
+/// campaign ([`crate::io::file_kind::recognise`]), or any other file not
+/// named `.toml` whose text is no TOML.
 fn kind_of(path: &Path, text: &str) -> Option<NotCampaignKind> {
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let table = text.parse::<toml::Table>().ok();
-    match ext.as_deref() {
-        Some("csv") => Some(NotCampaignKind::Csv),
-        Some("tir") => Some(NotCampaignKind::Tir),
-        _ if table
-            .as_ref()
-            .is_some_and(|t| t.contains_key("manoeuvre") && !t.contains_key("runs")) =>
-        {
-            Some(NotCampaignKind::Scenario)
+    match crate::io::file_kind::recognise(path) {
+        Some(FileKind::Campaign | FileKind::Folder { .. }) => None,
+        Some(kind) => Some(NotCampaignKind::Seen(kind)),
+        None => {
+            let toml = path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
+            (!toml && text.parse::<toml::Table>().is_err()).then_some(NotCampaignKind::NotToml)
         }
-        Some("toml") => None,
-        _ => table.is_none().then_some(NotCampaignKind::NotToml),
     }
 }
 

@@ -28,6 +28,7 @@
 //! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
 //! finds, reads, checks and cleans its runs.
 
+mod degrees;
 mod glob;
 mod kind;
 mod runs;
@@ -134,12 +135,11 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         folder,
         &mut folder_notes,
     )?;
+    let declared = f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]);
+    degrees::check_declared(&src, declared, &files)?;
     let (runs, mut notes, cleaning, calibration) = read_runs(
         &files,
-        (
-            f.runs.as_ref().and_then(|r| r.segment),
-            f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]),
-        ),
+        (f.runs.as_ref().and_then(|r| r.segment), declared),
         f.diagnose.min_speed,
         f.vehicle.wheelbase(),
         &mut inputs,

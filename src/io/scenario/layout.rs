@@ -109,63 +109,7 @@ fn effect_keys(src: &TomlSource, root: &toml_edit::Table) -> Result<(), InputErr
 /// The error for the file at `path` when it is of another kind than a
 /// scenario; None for a file that may be one (its own error stands).
 pub(super) fn other_kind(path: &Path) -> Option<InputError> {
-    let kind = file_kind(path)?;
+    let kind = crate::io::file_kind::recognise(path).filter(|k| *k != FileKind::Scenario)?;
     let problem = InputProblem::Scenario(Box::new(ScenarioProblem::NotAScenario(kind)));
     Some(InputError::problem(path, problem))
-}
-
-/// What the file at `path` is, where it is plainly not a scenario.
-fn file_kind(path: &Path) -> Option<FileKind> {
-    let bytes = std::fs::read(path).ok()?;
-    let head = &bytes[..bytes.len().min(8192)];
-    if let Some(at) = head.iter().position(|&b| b == 0) {
-        return Some(FileKind::Binary { at });
-    }
-    let text = String::from_utf8_lossy(&bytes);
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
-    // The first line that is neither blank nor a comment (a scenario's
-    // opening comment may hold a comma).
-    let first = text
-        .lines()
-        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-        .unwrap_or("");
-    if ext == "tir" || text.lines().any(|l| l.trim_start().starts_with("[MODEL]")) {
-        return Some(FileKind::Tir);
-    }
-    if ext == "json" || first.trim_start().starts_with('{') {
-        return Some(FileKind::Json);
-    }
-    let header = ext != "toml" && first.contains(',') && !first.contains(['=', '[']);
-    if ext == "csv" || header {
-        return Some(csv_kind(first));
-    }
-    let table: toml::Table = text.parse().ok()?;
-    let model = table.get("model")?.as_str()?;
-    let scenario = ["vehicle", "manoeuvre", "tyres"]
-        .iter()
-        .any(|k| table.contains_key(*k));
-    (!scenario).then(|| FileKind::TyreToml {
-        model: model.into(),
-    })
-}
-
-/// A CSV file by its header `first`: a run, rig data, or another.
-fn csv_kind(first: &str) -> FileKind {
-    let columns: Vec<String> = first
-        .split(',')
-        .map(|c| c.trim().trim_matches('"').to_ascii_lowercase())
-        .collect();
-    let has = |c: &str| columns.iter().any(|x| x == c);
-    if has("t") && has("speed") && has("steer") {
-        FileKind::RunCsv
-    } else if has("fz") && (has("alpha") || has("kappa")) {
-        FileKind::RigCsv
-    } else {
-        FileKind::Csv {
-            first: columns.first().cloned().unwrap_or_default().into(),
-        }
-    }
 }

@@ -5,6 +5,8 @@
 //! the file again with a key no table has put in it: serde refuses that
 //! key with the table's list.
 
+mod foreign;
+
 use toml_edit::{DocumentMut, TableLike};
 
 /// A key name no table of any file has.
@@ -37,6 +39,18 @@ pub(super) fn belongs(text: &str, path: &str, reparse: &Reparse) -> Option<Strin
     }
     let (key, table) = parts.split_last()?;
     let known = |at: &[&str]| known_keys(text, &parts, at, reparse).unwrap_or_default();
+    if let Some(clause) = foreign::clause(path, &known(&[])) {
+        return Some(clause.to_string());
+    }
+    // A table written where none is known (`[model.effects]`) is sent
+    // only to a table that knows a table of its name, not to a key of
+    // that name holding a value (a campaign's `[tyres] model`).
+    let written_table = is_table(text, &parts);
+    let fits = |at: &[&str]| {
+        let mut at = at.to_vec();
+        at.push(key);
+        !written_table || known_keys(text, &parts, &at, reparse).is_some()
+    };
     let mut homes = Vec::new();
     let (parent, own) = match table.split_last() {
         Some((own, parent)) => (parent, Some(*own)),
@@ -57,7 +71,7 @@ pub(super) fn belongs(text: &str, path: &str, reparse: &Reparse) -> Option<Strin
     for sibling in beside.into_iter().filter(|s| Some(s.as_str()) != own) {
         let at: Vec<&str> = parent.iter().copied().chain([sibling.as_str()]).collect();
         let keys = known(&at);
-        if keys.iter().any(|k| k == key) {
+        if keys.iter().any(|k| k == key) && fits(&at) {
             siblings.push((sibling, keys));
         }
     }
@@ -77,6 +91,21 @@ pub(super) fn belongs(text: &str, path: &str, reparse: &Reparse) -> Option<Strin
         }
     }
     (!homes.is_empty()).then(|| format!(" (it belongs {})", homes.join(" or ")))
+}
+
+/// Whether the item at `parts` of `text` is a table.
+fn is_table(text: &str, parts: &[&str]) -> bool {
+    let Ok(doc) = text.parse::<DocumentMut>() else {
+        return false;
+    };
+    let mut item = doc.as_item();
+    for p in parts {
+        match item.get(p) {
+            Some(i) => item = i,
+            None => return false,
+        }
+    }
+    item.is_table_like()
 }
 
 /// A table's place in words: `in [model.effects]`, or the top level.

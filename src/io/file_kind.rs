@@ -1,0 +1,146 @@
+//! What a file handed to a command is, recognised in one place for every
+//! reader (a scenario's, a campaign's, the CSV readers'): by its name, its
+//! first bytes, a CSV's header or a TOML file's tables. Asked only once a
+//! file fails to read as what the command wants, so a file is never
+//! refused for its name; each reader says the kind in its own words
+//! ([`crate::error::FileKind`]).
+
+use crate::error::{FileKind, InputError, InputProblem, KindProblem, Wanted};
+use std::path::Path;
+
+/// What the file or folder at `path` is, where it can be told: `None` for
+/// a file that reads as nothing known (its reader's own error stands).
+pub(crate) fn recognise(path: &Path) -> Option<FileKind> {
+    if path.is_dir() {
+        let campaign = path.join("vehicle.toml").is_file();
+        return Some(FileKind::Folder { campaign });
+    }
+    let bytes = std::fs::read(path).ok()?;
+    let head = &bytes[..bytes.len().min(8192)];
+    if let Some(at) = head.iter().position(|&b| b == 0) {
+        return Some(FileKind::Binary { at });
+    }
+    let text = String::from_utf8_lossy(&bytes);
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    // The first line that is neither blank nor a comment (a scenario's
+    // opening comment may hold a comma).
+    let first = text
+        .lines()
+        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .unwrap_or("");
+    if ext == "tir" || text.lines().any(|l| l.trim_start().starts_with("[MODEL]")) {
+        return Some(FileKind::Tir);
+    }
+    if ext == "json" || first.trim_start().starts_with('{') {
+        return Some(FileKind::Json);
+    }
+    let header = ext != "toml" && first.contains(',') && !first.contains(['=', '[']);
+    if ext == "csv" || header {
+        return Some(csv_kind(first));
+    }
+    toml_kind(&text.parse().ok()?)
+}
+
+/// A TOML file by its tables: a study (`[stiffness]`) or sweep
+/// (`[sweep]`), a campaign (`[runs]`, `[diagnose]`), before a scenario
+/// (a study has a `[manoeuvre]` too), a tyre file (a `model` name and
+/// no vehicle).
+fn toml_kind(table: &toml::Table) -> Option<FileKind> {
+    let has = |k: &str| table.get(k).is_some_and(toml::Value::is_table);
+    if has("stiffness") {
+        return Some(FileKind::Study);
+    }
+    if has("sweep") {
+        return Some(FileKind::Sweep);
+    }
+    if has("runs") || has("diagnose") {
+        return Some(FileKind::Campaign);
+    }
+    if has("manoeuvre") {
+        return Some(FileKind::Scenario);
+    }
+    let model = table.get("model")?.as_str()?;
+    let vehicle = ["vehicle", "tyres"].iter().any(|k| table.contains_key(*k));
+    (!vehicle).then(|| FileKind::TyreToml {
+        model: model.into(),
+    })
+}
+
+/// The columns of a CSV header line, trimmed, unquoted, lower case.
+fn header_columns(first: &str) -> Vec<String> {
+    first
+        .split(',')
+        .map(|c| c.trim().trim_matches('"').to_ascii_lowercase())
+        .collect()
+}
+
+/// A CSV file by its header `first`: a simulation history, a run, rig
+/// data, or another.
+pub(crate) fn csv_kind(first: &str) -> FileKind {
+    let columns = header_columns(first);
+    let has = |c: &str| columns.iter().any(|x| x == c);
+    if has("t") && has("steer") && has("fy_front") && has("alpha_front") {
+        FileKind::HistoryCsv
+    } else if has("t") && has("speed") && has("steer") {
+        FileKind::RunCsv
+    } else if has("fz") && (has("alpha") || has("kappa")) {
+        FileKind::RigCsv
+    } else {
+        FileKind::Csv {
+            first: columns.first().cloned().unwrap_or_default().into(),
+        }
+    }
+}
+
+/// What a CSV reader requiring `required` wants: tyre data where it needs
+/// `fz`, a run where it needs `steer` or `yaw_rate`.
+fn wanted(required: &[&str]) -> Option<Wanted> {
+    if required.contains(&"fz") {
+        Some(Wanted::Tyre)
+    } else if required.iter().any(|c| ["steer", "yaw_rate"].contains(c)) {
+        Some(Wanted::Run)
+    } else {
+        None
+    }
+}
+
+/// The refusal of the file at `path`, given to a CSV reader requiring
+/// `required` and lacking some of them, where it is plainly of another
+/// kind (rig data given as a run, a run or a scenario as rig data, a
+/// folder): one sentence naming the kind and its command, in place of a
+/// complaint per column; `None` where the file may be what was wanted.
+pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
+    let wanted = wanted(required)?;
+    let kind = recognise(path)?;
+    let fits = matches!(
+        (&kind, wanted),
+        (FileKind::Csv { .. }, _)
+            | (FileKind::RunCsv | FileKind::HistoryCsv, Wanted::Run)
+            | (FileKind::RigCsv, Wanted::Tyre)
+    );
+    if fits {
+        return None;
+    }
+    let columns = match kind {
+        FileKind::RunCsv | FileKind::HistoryCsv | FileKind::RigCsv => {
+            let text = std::fs::read_to_string(path).ok()?;
+            let first = text
+                .lines()
+                .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))?;
+            first.split(',').map(|c| c.trim().to_string()).collect()
+        }
+        _ => Vec::new(),
+    };
+    let problem = KindProblem::NotWanted {
+        kind,
+        wanted,
+        columns,
+    };
+    Some(InputError::problem(
+        path,
+        InputProblem::Kind(Box::new(problem)),
+    ))
+}

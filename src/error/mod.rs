@@ -13,6 +13,7 @@ mod effect_limit;
 mod fit;
 mod input;
 mod level_slip;
+mod long_replay;
 mod metrics;
 mod number;
 mod options;
@@ -39,6 +40,7 @@ pub use fit::{
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};
+pub use long_replay::LongReplay;
 pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};
 pub(crate) use number::hundredths_down;
 pub use number::{number, range, Num};

@@ -6,6 +6,7 @@
 
 pub(crate) mod checks;
 pub(crate) mod nominal_load;
+mod straight;
 mod transient;
 mod unfitted;
 

@@ -1,0 +1,135 @@
+//! What `simulate`, a scenario and `synth` said wrongly or not at all
+//! (session 80, fresh-eyes round 7): a banked road's trim blamed on the
+//! tyres' conicity, a `bank_profile_scale` under a step steer, a replay's
+//! `ax` in g or reversed, the `[integrator]` table's key named as
+//! `simulation`, a replay too long for a history cited at a `step` the
+//! file does not write, `synth --drive` dropping a replay's bank and
+//! `--effects none,…`, and effects that act on nothing.
+
+use super::*;
+
+/// The sedan of `VEHICLE` on the bundled linear tyre, with `rest` after
+/// its `[tyres]` table, written to `dir/<name>.toml`.
+fn sedan(dir: &Path, name: &str, rest: &str) -> PathBuf {
+    let tyre = root().join("tyres/linear.toml");
+    let path = dir.join(format!("{name}.toml"));
+    let text = format!(
+        "{VEHICLE}\n[tyres]\nfront = \"{}\"\n\n{rest}",
+        tyre.display()
+    );
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// A 1° step steer at 80 km/h from t = 1 s to 6 s.
+const STEP_STEER: &str = "[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\nstart = 1.0\nrise_time = 0.1\nend = 6.0\n";
+
+const REPLAY: &str = "[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n";
+
+/// Runs `simulate path --out dir/out`; its stdout.
+fn simulated(path: &Path, dir: &Path) -> String {
+    let out = dir.join("out");
+    succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
+/// A step steer on a road banked 0.05 rad on linear tyres (no force at
+/// zero slip) said that "the tyres make lateral force at zero slip
+/// (conicity, ply steer)": the trim is the bank's, g·sin(0.05) =
+/// 9.80665 × 0.04998 = 0.490 m/s² across the car.
+#[test]
+fn a_banked_roads_trim_is_the_banks_not_the_tyres() {
+    let dir = tempfile::tempdir().unwrap();
+    let rest = format!("{STEP_STEER}\n[model.effects]\nroad_bank = 0.05\n");
+    let path = sedan(dir.path(), "banked", &rest);
+    let said = simulated(&path, dir.path());
+    assert!(
+        said.contains("note: the road is banked 0.05 rad (2.86°, `road_bank`): gravity pulls the car toward its lower edge with g·sin(bank) = 0.490 m/s², which the tyres hold: straight running needs a steer of"),
+        "{said}"
+    );
+    assert!(!said.contains("conicity"), "{said}");
+}
+
+/// The bundled PAC89 step on a banked road: both causes named, the
+/// tyres' share as on the flat road (-0.019°, the bundled example's).
+#[test]
+fn a_banked_road_under_tyres_with_conicity_names_both() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = bundled_scenario("step_gbt6323_pac89.toml");
+    let path = dir.path().join("banked.toml");
+    fs::write(
+        &path,
+        format!("{text}\n[model.effects]\nroad_bank = -0.03\n"),
+    )
+    .unwrap();
+    let said = simulated(&path, dir.path());
+    assert!(
+        said.contains("the road is banked -0.03 rad (-1.72°, `road_bank`): gravity pulls the car toward its lower edge with g·sin(bank) = 0.294 m/s², which the tyres hold, and the tyres make lateral force at zero slip (conicity, ply steer), which alone need -0.019° of steer on a flat road"),
+        "{said}"
+    );
+}
+
+/// `bank_profile_scale` under a step steer acted on nothing, silently.
+#[test]
+fn a_bank_profile_scale_under_a_step_steer_is_said_to_act_on_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let rest = format!("{STEP_STEER}\n[model.effects]\nbank_profile_scale = 1.0\n");
+    let path = sedan(dir.path(), "step", &rest);
+    let said = simulated(&path, dir.path());
+    assert!(
+        said.contains("warning: `model.effects.bank_profile_scale` (line 22) acts on nothing: it scales a replayed run's `bank` column, and a step-steer replays no run (a constant bank is `road_bank`)"),
+        "{said}"
+    );
+}
+
+/// `[integrator] method = "rk4"` with `rtol`: the key was named
+/// `simulation.rtol`, without a line.
+#[test]
+fn a_tolerance_with_rk4_is_refused_at_its_key_as_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let rest = format!("{STEP_STEER}\n[integrator]\nmethod = \"rk4\"\nrtol = 1e-6\n");
+    let path = sedan(dir.path(), "scenario", &rest);
+    let err = simulate_err(dir.path());
+    let file = path.display();
+    assert!(
+        err.contains(&format!(
+            "{file}:23:8: `integrator.rtol` = 1e-6: tolerances apply to method = \"dopri5\""
+        )),
+        "{err}"
+    );
+}
+
+/// A 2400 s log at 25 Hz (60001 samples) replayed at the default row
+/// interval: refused at `simulation.step`, a key the file does not
+/// write. Now at `run`, with the limit and what to do.
+#[test]
+fn a_long_replay_is_refused_at_its_run_with_what_to_do() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,speed,steer,yaw_rate,ay\n");
+    for i in 0..=60_000 {
+        let t = i as f64 * 0.04;
+        let d = 0.01 * (0.5 * t).sin();
+        text += &format!(
+            "{t:.2},20,{d:.6},{:.6},{:.6}\n",
+            d * 20.0 / 2.78,
+            d * 400.0 / 2.78
+        );
+    }
+    fs::write(dir.path().join("run.csv"), text).unwrap();
+    let path = sedan(dir.path(), "scenario", REPLAY);
+    let err = simulate_err(dir.path());
+    let file = path.display();
+    assert!(
+        err.contains(&format!("{file}:15:7: the replayed run lasts 2400 s (60001 samples): its history, a row every 0.001 s (the default row interval; this scenario sets none), would have 2400000 rows (about 0.67 GB of history.csv), beyond the 2000000 a history holds; cut the run into pieces of at most 2000 s")),
+        "{err}"
+    );
+    assert!(
+        err.contains("`step = 0.0012` (s) or more under [simulation]"),
+        "{err}"
+    );
+    assert!(!err.contains("simulation.step"), "{err}");
+}

@@ -133,3 +133,31 @@ fn a_long_replay_is_refused_at_its_run_with_what_to_do() {
     );
     assert!(!err.contains("simulation.step"), "{err}");
 }
+
+/// A relaxation length of 0.5 mm (below the 1 mm where the lag is
+/// switched off) and a longitudinal load transfer under a step steer at a
+/// constant 22.22 m/s did nothing, silently.
+#[test]
+fn effects_that_act_on_nothing_are_said_with_their_numbers() {
+    let dir = tempfile::tempdir().unwrap();
+    let effects = "[model.effects]\nrelaxation_length = 0.0005\nlongitudinal_load_transfer = 1\n";
+    let path = sedan(dir.path(), "idle", &format!("{STEP_STEER}\n{effects}"));
+    let said = simulated(&path, dir.path());
+    assert!(
+        said.contains("warning: `model.effects.relaxation_length` = 0.0005 m acts on nothing: below 0.001 m (1 mm"),
+        "{said}"
+    );
+    assert!(
+        said.contains("warning: `model.effects.longitudinal_load_transfer` = 1 acts on nothing: it acts with the longitudinal acceleration ax, and this run holds its speed at 22.22 m/s throughout (ax = 0, and no `ax` is logged)"),
+        "{said}"
+    );
+    // A lag of 1 mm or more acts: not said.
+    let path = sedan(
+        dir.path(),
+        "lag",
+        &format!("{STEP_STEER}\n[model.effects]\nrelaxation_length = 0.3\n"),
+    );
+    fs::remove_dir_all(dir.path().join("out")).unwrap();
+    let said = simulated(&path, dir.path());
+    assert!(!said.contains("acts on nothing"), "{said}");
+}

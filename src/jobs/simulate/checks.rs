@@ -68,6 +68,7 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     }
     said.warnings.extend(sc.model.vehicle.unlikely());
     super::straight::straight_running(sc, &mut said);
+    said.warnings.extend(super::idle_effects::idle_effects(sc));
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
         said.warnings.extend(sliding(h, axle_friction(sc)));
     } else if let Some(mu) = axle_friction(sc) {

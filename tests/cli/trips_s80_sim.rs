@@ -161,3 +161,87 @@ fn effects_that_act_on_nothing_are_said_with_their_numbers() {
     let said = simulated(&path, dir.path());
     assert!(!said.contains("acts on nothing"), "{said}");
 }
+
+/// A straight run of 10 s at 25 Hz braking from 30 m/s at 1 m/s² on a
+/// road banked −0.2 rad, its accelerometer reading ax = −1.3 m/s² (a
+/// downhill grade's share on top), written to `dir/run.csv`.
+fn banked_braking(dir: &Path) {
+    let mut text = String::from("t,speed,steer,yaw_rate,ay,ax,bank\n");
+    for i in 0..=250 {
+        let t = i as f64 * 0.04;
+        text += &format!("{t},{},0,0,0,-1.3,-0.2\n", 30.0 - t);
+    }
+    fs::write(dir.join("run.csv"), text).unwrap();
+}
+
+/// The mean of the column `name` of the CSV file `path`.
+fn mean_of(path: &Path, name: &str) -> f64 {
+    let text = fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let k = header.iter().position(|h| *h == name).unwrap();
+    let v: Vec<f64> = lines
+        .map(|l| l.split(',').nth(k).unwrap().parse().unwrap())
+        .collect();
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+/// `synth --drive` of a replay logged the run's bank as 0 and its ax as
+/// the speed's derivative: now the replay's own (−0.2 rad, −1.3 m/s²,
+/// within the logger's noise), and where the programme logs neither
+/// (handling), said to be dropped.
+#[test]
+fn synth_drive_keeps_a_replays_bank_and_ax_or_says_they_are_dropped() {
+    let dir = tempfile::tempdir().unwrap();
+    banked_braking(dir.path());
+    let replay = sedan(dir.path(), "replay", REPLAY);
+    let drive = |programme: &str, out: &str| {
+        succeeds(&[
+            "synth",
+            "--programme",
+            programme,
+            "--seed",
+            "2",
+            "--out",
+            dir.path().join(out).to_str().unwrap(),
+            "--drive",
+            replay.to_str().unwrap(),
+        ])
+    };
+    let said = drive("oval", "oval");
+    assert!(!said.contains("dropped"), "{said}");
+    let run = dir.path().join("oval/runs/replay.csv");
+    let (bank, ax) = (mean_of(&run, "bank"), mean_of(&run, "ax"));
+    assert!((bank + 0.2).abs() < 0.005, "bank {bank}");
+    assert!((ax + 1.3).abs() < 0.05, "ax {ax}");
+    let said = drive("handling", "handling");
+    assert!(
+        said.contains("replay.toml: the replayed run's `bank` column (up to 0.200 rad, 11.46°) is dropped: the handling programme logs no bank, and its truth does not drive on it"),
+        "{said}"
+    );
+    assert!(
+        said.contains("replay.toml: the replayed run's `ax` column is dropped: the handling programme logs no ax"),
+        "{said}"
+    );
+}
+
+/// `synth --effects none,sensor_delay` ran with the delay on.
+#[test]
+fn synth_refuses_none_with_effects() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("c");
+    let o = run(&[
+        "synth",
+        "--effects",
+        "none,sensor_delay",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(!out.exists());
+    assert!(
+        stderr(&o).contains("--effects names `none` (a truth with no effect on) together with `sensor_delay`: give `none` alone, or the effects alone (`--effects sensor_delay`)"),
+        "{}",
+        stderr(&o)
+    );
+}

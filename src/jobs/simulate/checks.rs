@@ -67,7 +67,11 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         }
     }
     said.warnings.extend(sc.model.vehicle.unlikely());
-    super::straight::straight_running(sc, &mut said);
+    match super::straight::straight_running(sc) {
+        Some(super::straight::Straight::Note(n)) => said.notes.push(n),
+        Some(super::straight::Straight::Warning(w)) => said.warnings.push(w),
+        None => {}
+    }
     said.warnings.extend(super::idle_effects::idle_effects(sc));
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
         said.warnings.extend(sliding(h, axle_friction(sc)));

@@ -10,7 +10,6 @@
 //!
 //! Units: rad, m/s²; printed in degrees where a driver reads them.
 
-use super::checks::Said;
 use crate::constants::G;
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
@@ -49,37 +48,44 @@ fn cause(sc: &Scenario, speed: f64, steer: f64, beta: f64) -> Option<String> {
     }
 }
 
+/// What is said of straight running: a fact of the run, or a doubt.
+pub(super) enum Straight {
+    /// A step steer's trim, where the run starts.
+    Note(String),
+    /// The drift of an input that starts from zero steer.
+    Warning(String),
+}
+
 /// The step steer's trim as a note; for any other input that starts from
 /// zero steer, the drift as a warning.
-pub(super) fn straight_running(sc: &Scenario, said: &mut Said) {
+pub(super) fn straight_running(sc: &Scenario) -> Option<Straight> {
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         if let Some(why) = cause(sc, s.speed, s.trim, sc.initial.beta) {
-            said.notes.push(format!(
+            return Some(Straight::Note(format!(
                 "{why}: straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)",
                 s.trim.to_degrees(),
                 sc.initial.beta.to_degrees(),
                 s.amplitude.to_degrees()
-            ));
+            )));
         }
-        return;
+        return None;
     }
     // A replay of a measured run starts from the measured state.
     if sc.measured.is_some() {
-        return;
+        return None;
     }
     let speed = sc.manoeuvre.speed(sc.manoeuvre.start_time());
     let Ok(trim) =
         sc.model
             .steady_state_for_lateral_acceleration(speed, sc.integrator.friction, 0.0)
     else {
-        return;
+        return None;
     };
-    if let Some(why) = cause(sc, speed, trim.steer, trim.beta) {
-        said.warnings.push(format!(
+    let why = cause(sc, speed, trim.steer, trim.beta)?;
+    Some(Straight::Warning(format!(
             "{why}: straight running at {speed:.1} m/s needs a steer of {:.3}° and a sideslip of {:.3}°, but this input starts from zero steer and sideslip, so the car drifts from the start; add the {:.3}° to the steer to start straight",
             trim.steer.to_degrees(),
             trim.beta.to_degrees(),
             trim.steer.to_degrees()
-        ));
-    }
+    )))
 }

@@ -112,6 +112,9 @@ pub fn synth(a: SynthArgs) -> Result<()> {
     let mut r = synth::run(&a.effects, a.seed, a.truth, a.programme, &a.out)?;
     r.drive(&a.drive)?;
     r.write()?;
+    for n in &r.notes {
+        say!("note: {n}");
+    }
     say!("{}", r.wrote());
     Ok(())
 }

@@ -184,6 +184,9 @@ pub enum OptionsError {
         /// The effect.
         effect: &'static str,
     },
+    /// `synth --effects` naming `none` with effects.
+    #[error("{0}")]
+    NoneWithEffects(super::NoneWithEffects),
     /// A model asked of the swarm fit that only its staged fit identifies.
     #[error("the {model} model is identified by its staged fit ({})", fits.join(" or "))]
     StagedFitOnly {

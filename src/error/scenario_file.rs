@@ -13,7 +13,7 @@ use super::FileKind;
 use std::fmt;
 
 /// Why a scenario file is refused as a whole or at a table.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum ScenarioProblem {
     /// The file is not a scenario.
     NotAScenario(FileKind),
@@ -39,6 +39,8 @@ pub enum ScenarioProblem {
         /// Where the scenario takes it.
         home: &'static str,
     },
+    /// A replayed run too long for a history at the default row interval.
+    LongReplay(super::LongReplay),
 }
 
 impl fmt::Display for FileKind {
@@ -63,6 +65,7 @@ impl fmt::Display for ScenarioProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
+            ScenarioProblem::LongReplay(r) => r.fmt(f),
             ScenarioProblem::TwoIntegrationTables { first: (name, line), second } => write!(
                 f,
                 "[{second}] and [{name}] (line {line}) are one table under two names (the method, step and tolerances of the integration): give one of them"
@@ -97,10 +100,12 @@ pub enum ScenarioRemark {
         range: [f64; 2],
     },
     /// `bank_profile_scale` given (at `line`) for a run with no `bank`
-    /// column.
+    /// column, or under a manoeuvre that replays no run.
     BankScaleWithoutBank {
         /// The key's line.
         line: usize,
+        /// The manoeuvre's kind as the file names it.
+        kind: &'static str,
     },
 }
 
@@ -135,10 +140,16 @@ impl fmt::Display for ScenarioRemark {
                     "the run's `bank` column (road bank {bank}) does not act on the replay: the road is flat, as in `diagnose`'s base model, where whether the car felt a logged bank is the `bank_profile` effect's to fit; give `[model.effects] bank_profile_scale = 1` to drive on it as measured (gravity's g·sin(bank) across the car)"
                 )
             }
-            ScenarioRemark::BankScaleWithoutBank { line } => write!(
-                f,
-                "`model.effects.bank_profile_scale` (line {line}) acts on nothing: it scales a replayed run's `bank` column, and this run has none (a constant bank is `road_bank`)"
-            ),
+            ScenarioRemark::BankScaleWithoutBank { line, kind } => {
+                let none = match *kind {
+                    "replay" => "this run has none".to_string(),
+                    kind => format!("a {kind} replays no run"),
+                };
+                write!(
+                    f,
+                    "`model.effects.bank_profile_scale` (line {line}) acts on nothing: it scales a replayed run's `bank` column, and {none} (a constant bank is `road_bank`)"
+                )
+            }
         }
     }
 }

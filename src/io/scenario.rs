@@ -48,10 +48,7 @@ pub struct SimulationSettings {
     pub max_step: Option<f64>,
 }
 
-/// The most rows (after the first) a history holds: a run ten times longer than an hour of
-/// logging at 1 kHz would need a step the user meant; beyond, a slip of
-/// the step (1e-6 s for 1e-3) writes gigabytes.
-pub const MAX_ROWS: f64 = 2.0e6;
+pub use rows::MAX_ROWS;
 
 fn default_step() -> f64 {
     Integrator::default().step
@@ -260,7 +257,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
     let method = f
         .simulation
         .method()
-        .map_err(|e| param_error(src, Some("simulation"), e))?;
+        .map_err(|e| param_error(src, Some(rows::integration_table(src)), e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut inputs = vec![path.to_path_buf()];
     inputs.extend(tyre_files);
@@ -296,18 +293,10 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
     check_windows(src, &f.metrics, &manoeuvre)?;
     let kind = remarks::kind_name(&f.manoeuvre);
     remarks.extend(remarks::metrics_unused(src, &manoeuvre, kind));
-    let duration = manoeuvre.end_time() - manoeuvre.start_time();
-    // Intervals, not rows: the least step the refusal suggests then runs
-    // (a hair of slack for its rounding).
-    if duration / f.simulation.step > MAX_ROWS * (1.0 + 1e-9) {
-        let reason = ParamReason::TooManyRows {
-            step: f.simulation.step,
-            duration,
-            max_rows: MAX_ROWS,
-        };
-        let e = ParamError::new("step", f.simulation.step, reason);
-        return Err(param_error(src, Some("simulation"), e));
+    if measured.is_none() {
+        remarks.extend(remarks::bank_scale_unused(src, kind));
     }
+    rows::check(src, &f.simulation, &manoeuvre, measured.as_ref())?;
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
             .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
@@ -569,6 +558,7 @@ mod no_grip;
 mod reach;
 mod remarks;
 mod replay;
+mod rows;
 mod step_steer;
 
 #[cfg(test)]

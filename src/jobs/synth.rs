@@ -5,7 +5,7 @@
 //! no half-written campaign, and an existing folder is never written over.
 
 use crate::diagnose::effects::EffectKind;
-use crate::error::{Error, NameKind, OptionsError, OutputError, WriteStep};
+use crate::error::{Error, NameKind, NoneWithEffects, OptionsError, OutputError, WriteStep};
 use crate::measured::MeasuredRun;
 use crate::proving_ground::{
     drive, generate_with, DrivenRun, Noise, Programme, SynthSpec, Synthetic, Truth,
@@ -66,6 +66,9 @@ pub struct SynthReport {
     pub seed: u64,
     /// Of the runs, those driven from scenario files (`--drive`).
     pub driven: usize,
+    /// What the driven runs leave out of a replayed run (its `bank` or
+    /// `ax` where the programme logs none).
+    pub notes: Vec<String>,
     /// The campaign.
     #[serde(skip)]
     pub campaign: Synthetic,
@@ -81,6 +84,10 @@ pub fn run(
     out: &Path,
 ) -> Result<SynthReport, Error> {
     let kinds = effects.iter().filter_map(|e| e.0);
+    if effects.iter().any(|e| e.0.is_none()) && kinds.clone().next().is_some() {
+        let with = kinds.map(|k| k.name()).collect();
+        return Err(OptionsError::NoneWithEffects(NoneWithEffects { with }).into());
+    }
     let mut spec = SynthSpec {
         effects: Vec::new(),
         seed,
@@ -112,6 +119,7 @@ pub fn run(
     let s = generate_with(&spec, truth)?;
     Ok(SynthReport {
         driven: 0,
+        notes: Vec::new(),
         out: out.to_path_buf(),
         runs: s.runs.len(),
         truth,
@@ -147,6 +155,11 @@ impl SynthReport {
                 }
                 .into());
             }
+            self.notes.extend(crate::proving_ground::dropped_channels(
+                self.programme,
+                p,
+                &sc.manoeuvre,
+            ));
             runs.push(DrivenRun {
                 name,
                 manoeuvre: sc.manoeuvre,

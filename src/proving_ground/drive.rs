@@ -99,13 +99,30 @@ fn driven_run(models: &TruthModels, spec: &SynthSpec, truth: Truth, r: &DrivenRu
         Programme::SlowOvalEstimatedBeta => Some(estimator::estimated(&times, &beta, &mut rng)),
         _ => Some(with_noise(&beta, n.beta, &mut rng)),
     };
+    // A replay's own `ax` and `bank` are what its car felt (the truth's
+    // drive reads them): logged as the programme logs its channels.
+    let replay = match m {
+        Manoeuvre::Replay(r) => Some(r),
+        _ => None,
+    };
     let ax = p.logged().then(|| {
-        let rate: Vec<f64> = times.iter().map(|&t| m.speed_rate(t)).collect();
+        let rate: Vec<f64> = times
+            .iter()
+            .map(|&t| {
+                replay
+                    .and_then(|r| r.ax_at(t))
+                    .unwrap_or_else(|| m.speed_rate(t))
+            })
+            .collect();
         with_noise(&rate, AX_NOISE, &mut rng)
     });
-    let bank = p
-        .logs_bank()
-        .then(|| with_noise(&vec![0.0; times.len()], BANK_NOISE, &mut rng));
+    let bank = p.logs_bank().then(|| {
+        let bank: Vec<f64> = times
+            .iter()
+            .map(|&t| replay.map_or(0.0, |r| r.bank_at(t)))
+            .collect();
+        with_noise(&bank, BANK_NOISE, &mut rng)
+    });
     MeasuredRun {
         path: PathBuf::from(format!("{}.csv", r.name)),
         speed: times.iter().map(|&t| m.speed(t)).collect(),
@@ -119,6 +136,38 @@ fn driven_run(models: &TruthModels, spec: &SynthSpec, truth: Truth, r: &DrivenRu
         masked: Vec::new(),
         t: times,
     }
+}
+
+/// What a driven run of `programme` leaves out of the replay `m` of the
+/// scenario `path`: its `bank` where the programme logs none (its truth
+/// then drives a flat road), its `ax` where the programme logs none.
+pub fn dropped_channels(
+    programme: Programme,
+    path: &std::path::Path,
+    m: &Manoeuvre,
+) -> Vec<String> {
+    let Manoeuvre::Replay(r) = m else {
+        return Vec::new();
+    };
+    let mut said = Vec::new();
+    if let Some(b) = r.bank.as_ref().filter(|_| !programme.logs_bank()) {
+        let largest = b.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        said.push(format!(
+            "{}: the replayed run's `bank` column (up to {} rad, {}°) is dropped: the {} programme logs no bank, and its truth does not drive on it; drive it with a programme that logs one (`--programme oval`, `road-course`, `slow-oval`) to keep it",
+            path.display(),
+            crate::format::significant(largest, 3),
+            crate::format::fixed(largest.to_degrees(), 2),
+            programme.name()
+        ));
+    }
+    if r.ax.is_some() && !programme.logged() {
+        said.push(format!(
+            "{}: the replayed run's `ax` column is dropped: the {} programme logs no ax; drive it with a programme that logs one (`--programme oval`, `road-course`, `slow-oval`) to keep it",
+            path.display(),
+            programme.name()
+        ));
+    }
+    said
 }
 
 /// Mixed into the seed of the driven runs' noise (a constant with many

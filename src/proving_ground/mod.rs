@@ -80,7 +80,7 @@ mod programme;
 mod truth;
 mod winding;
 
-pub use drive::{drive, DrivenRun};
+pub use drive::{drive, dropped_channels, DrivenRun};
 use driver::LoggedInputs;
 pub use programme::Programme;
 use programme::{handling_programme, logged_runs, truth_downforce, truth_vehicle};

@@ -36,7 +36,10 @@ pub(super) fn bank_remark(src: &TomlSource, run: &MeasuredRun) -> Option<Scenari
     let Some(bank) = run.bank.as_ref() else {
         let span = given?;
         let (line, _) = crate::io::toml_file::line_col(&src.text, span.start);
-        return Some(ScenarioRemark::BankScaleWithoutBank { line });
+        return Some(ScenarioRemark::BankScaleWithoutBank {
+            line,
+            kind: "replay",
+        });
     };
     if given.is_some() {
         return None;
@@ -47,6 +50,14 @@ pub(super) fn bank_remark(src: &TomlSource, run: &MeasuredRun) -> Option<Scenari
             [lo.min(b), hi.max(b)]
         });
     Some(ScenarioRemark::BankNotApplied { range })
+}
+
+/// A `bank_profile_scale` in `src` under a manoeuvre of `kind` that
+/// replays no run: there is no logged bank for it to scale.
+pub(super) fn bank_scale_unused(src: &TomlSource, kind: &'static str) -> Option<ScenarioRemark> {
+    let span = src.key_span(BANK_SCALE_KEY)?;
+    let (line, _) = crate::io::toml_file::line_col(&src.text, span.start);
+    Some(ScenarioRemark::BankScaleWithoutBank { line, kind })
 }
 
 /// A `[metrics]` table in `src` that manoeuvre `m` does not read: only a

@@ -2,12 +2,8 @@
 //! scenario's words suggest, for every manoeuvre (the step steer's metrics
 //! have their own, [`crate::metrics::applicability`]):
 //!
-//! - **straight running with tyres that make force at zero slip**
-//!   (conicity, ply steer: a Magic Formula's `SHY`/`SVY` shifts). A step
-//!   steer starts from the steer and sideslip that hold the car straight
-//!   (its `trim`), said as a note; a ramp, sine, sweep or schedule starts
-//!   from zero steer and sideslip, so the car drifts from the start, said
-//!   as a warning with the trim it would need.
+//! - **straight running that needs a steer** ([`super::straight`]): on
+//!   tyres that make force at zero slip or on a banked road.
 //! - **a slide**: a sideslip beyond
 //!   [`SLIDING_SIDESLIP`](crate::metrics::applicability::SLIDING_SIDESLIP)
 //!   (10°) anywhere in a ramp, sine, sweep or schedule, where the tyres
@@ -52,11 +48,6 @@ use std::f64::consts::TAU;
 /// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
 pub(crate) const SLIDING_SLIP: f64 = 15.0 * std::f64::consts::PI / 180.0;
 
-/// The straight-running steer or sideslip below which tyres are taken to
-/// make no force at zero slip, rad (0.006°, below the smallest steer step
-/// the metrics take, 0.01°).
-const TRIM: f64 = 1e-4;
-
 /// What `simulate` says: notes (facts of the run) and warnings (where the
 /// run is not what its words suggest).
 #[derive(Debug, Default)]
@@ -76,7 +67,12 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         }
     }
     said.warnings.extend(sc.model.vehicle.unlikely());
-    straight_running(sc, &mut said);
+    match super::straight::straight_running(sc) {
+        Some(super::straight::Straight::Note(n)) => said.notes.push(n),
+        Some(super::straight::Straight::Warning(w)) => said.warnings.push(w),
+        None => {}
+    }
+    said.warnings.extend(super::idle_effects::idle_effects(sc));
     if !matches!(sc.manoeuvre, Manoeuvre::StepSteer(_)) {
         said.warnings.extend(sliding(h, axle_friction(sc)));
     } else if let Some(mu) = axle_friction(sc) {
@@ -158,41 +154,6 @@ pub(super) fn asked_ay_missed(asked: f64, reached: Option<f64>) -> Option<String
             crate::format::exact(asked)
         )
     })
-}
-
-/// The step steer's trim as a note; for any other input that starts from
-/// zero steer, the drift as a warning.
-fn straight_running(sc: &Scenario, said: &mut Said) {
-    if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
-        if s.trim.abs() > TRIM || sc.initial.beta.abs() > TRIM {
-            said.notes.push(format!(
-                "the tyres make lateral force at zero slip (conicity, ply steer): straight running needs a steer of {:.3}° and a sideslip of {:.3}°; the run starts there, the {:.3}° step is added to that steer, and the metrics measure changes from there (the steady sideslip is its change)",
-                s.trim.to_degrees(),
-                sc.initial.beta.to_degrees(),
-                s.amplitude.to_degrees()
-            ));
-        }
-        return;
-    }
-    // A replay of a measured run starts from the measured state.
-    if sc.measured.is_some() {
-        return;
-    }
-    let speed = sc.manoeuvre.speed(sc.manoeuvre.start_time());
-    let Ok(trim) =
-        sc.model
-            .steady_state_for_lateral_acceleration(speed, sc.integrator.friction, 0.0)
-    else {
-        return;
-    };
-    if trim.steer.abs() > TRIM || trim.beta.abs() > TRIM {
-        said.warnings.push(format!(
-            "the tyres make lateral force at zero slip (conicity, ply steer): straight running at {speed:.1} m/s needs a steer of {:.3}° and a sideslip of {:.3}°, but this input starts from zero steer and sideslip, so the car drifts from the start; add the {:.3}° to the steer to start straight",
-            trim.steer.to_degrees(),
-            trim.beta.to_degrees(),
-            trim.steer.to_degrees()
-        ));
-    }
 }
 
 /// Where `x` goes beyond `limit` in magnitude: its largest value, the

@@ -5,7 +5,9 @@
 //! the scenario's words do not say ([`checks`]).
 
 pub(crate) mod checks;
+mod idle_effects;
 pub(crate) mod nominal_load;
+mod straight;
 mod transient;
 mod unfitted;
 

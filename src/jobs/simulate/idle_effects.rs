@@ -1,0 +1,63 @@
+//! Effects a scenario switches on that act on nothing in its run, warned
+//! with their numbers: a `relaxation_length` above 0 but below
+//! [`MIN_RELAXATION_LENGTH`] (1 mm, where the tyres' lag is switched off),
+//! and the effects of the longitudinal acceleration
+//! (`longitudinal_load_transfer`, `combined_slip`) under a manoeuvre whose
+//! speed never changes and that logs no `ax`: they scale `ax`, which is 0
+//! throughout. Units: m, m/s².
+
+use crate::io::Scenario;
+use crate::manoeuvre::Manoeuvre;
+use crate::vehicle::MIN_RELAXATION_LENGTH;
+
+/// The warnings of this module for scenario `sc`.
+pub(super) fn idle_effects(sc: &Scenario) -> Vec<String> {
+    let e = &sc.model.options.effects;
+    let mut said = Vec::new();
+    if e.relaxation_length > 0.0 && e.relaxation_length < MIN_RELAXATION_LENGTH {
+        said.push(format!(
+            "`model.effects.relaxation_length` = {} m acts on nothing: below {} m (1 mm, 50 µs of lag at 20 m/s, far below what a run resolves) the tyres' lag is switched off, and the slip angles follow their kinematic values at once; give {} m or more for a lag (a car tyre's is a few tenths of a metre), or 0",
+            crate::format::exact(e.relaxation_length),
+            crate::format::exact(MIN_RELAXATION_LENGTH),
+            crate::format::exact(MIN_RELAXATION_LENGTH)
+        ));
+    }
+    let mut by_ax = Vec::new();
+    if e.longitudinal_load_transfer != 0.0 {
+        by_ax.push(format!(
+            "`model.effects.longitudinal_load_transfer` = {}",
+            crate::format::exact(e.longitudinal_load_transfer)
+        ));
+    }
+    if e.combined_slip.is_some() {
+        by_ax.push("`model.effects.combined_slip`".to_string());
+    }
+    if by_ax.is_empty() {
+        return said;
+    }
+    if let Some(speed) = constant_speed(sc) {
+        said.push(format!(
+            "{} {} on nothing: {} with the longitudinal acceleration ax, and this run holds its speed at {} m/s throughout (ax = 0, and no `ax` is logged); drive a speed change (a replay or a schedule whose speed changes) for {} to act",
+            by_ax.join(" and "),
+            if by_ax.len() > 1 { "act" } else { "acts" },
+            if by_ax.len() > 1 { "they act" } else { "it acts" },
+            crate::format::significant(speed, 4),
+            if by_ax.len() > 1 { "them" } else { "it" }
+        ));
+    }
+    said
+}
+
+/// The run's speed, m/s, where it never changes and no `ax` is logged
+/// (None: the speed changes, or a replay logs `ax`).
+fn constant_speed(sc: &Scenario) -> Option<f64> {
+    let m = &sc.manoeuvre;
+    let first = m.speed(m.start_time());
+    match m {
+        Manoeuvre::Replay(r) => {
+            let same = r.speed.iter().all(|&u| u == first);
+            (r.ax.is_none() && same).then_some(first)
+        }
+        _ => Some(first),
+    }
+}

@@ -107,6 +107,9 @@ pub enum FitError {
         /// The rig data.
         data: PathBuf,
     },
+    /// Rig data of combined-slip rows only, for a pure-slip fit.
+    #[error(transparent)]
+    OnlyCombined(#[from] super::OnlyCombined),
     /// Rig data in which the grouping found no test condition.
     #[error("{}: no test condition found in the data ({grouping})", data.display())]
     NoCondition {

@@ -214,7 +214,13 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
             readable(reach, 3),
             crate::identify::pure::MIN_KAPPA_SWEEP
         ),
-        None => "no kappa/fx columns in the data".into(),
+        None => match r.set_aside.missing_column {
+            Some(column) => format!(
+                "no `{column}` column in the data (its `{}` alone is no longitudinal test)",
+                if column == "kappa" { "fx" } else { "kappa" }
+            ),
+            None => "no kappa/fx columns in the data".into(),
+        },
     };
     let blocks: [(&str, &str, &str, bool); 3] = [
         (

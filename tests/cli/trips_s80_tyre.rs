@@ -135,3 +135,84 @@ fn a_file_of_combined_slip_only_is_refused_with_its_rows_counted() {
         assert!(!err.contains("0 samples"), "{model}: {err}");
     }
 }
+
+/// A cornering sweep at κ = 0 and combined rows at κ = 0.05 and 0.1, no
+/// braking/driving sweep at α = 0 (the pure `Fx` stage skipped): the
+/// combined `Mz` stage was still fitted on a longitudinal force of zero
+/// (`PDX1` = `PKX1` = 0), without a word. It is skipped and said so.
+#[test]
+fn the_combined_mz_stage_is_skipped_where_the_longitudinal_force_is_not_fitted() {
+    let mut csv = String::from("fz,alpha,kappa,fy,fx,mz\n");
+    for fz in [2000.0, 4000.0, 6000.0_f64] {
+        for i in -48..=48 {
+            let a = (0.25 * f64::from(i)).to_radians();
+            let mz = 0.03 * fy(a, fz) * (2.0 * (6.0 * a).atan()).cos();
+            csv += &format!("{fz},{a:.7},0,{:.3},0,{mz:.4}\n", fy(a, fz));
+            for k in [0.05, 0.1_f64] {
+                let g = (5.0 * k).atan().cos();
+                let fx = 20.0 * fz * k * (3.0 * a).atan().cos();
+                csv += &format!(
+                    "{fz},{a:.7},{k},{:.3},{fx:.3},{:.4}\n",
+                    g * fy(a, fz),
+                    g * mz
+                );
+            }
+        }
+    }
+    let dir = scratch(&[("mixed.csv", &csv)]);
+    let o = run_in(
+        dir.path(),
+        &["identify", "mixed.csv", "--model", "mf61", "--out", "m.tir"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    for line in [
+        "  pure Fx      skipped: 9 rows for 14 parameters: at least 20 are needed",
+        "  combined Mz  skipped: it builds on the pure Fx stage, which was skipped",
+    ] {
+        assert!(said.contains(line), "{line} not in {said}");
+    }
+    assert!(!said.contains("cannot fit"), "{said}");
+    let report = read_json(&dir.path().join("m.report.json"));
+    let stages = report["stages"].as_array().unwrap();
+    let mz = stages.iter().find(|s| s["stage"] == "CombinedMz").unwrap();
+    assert_eq!(
+        mz["skipped"],
+        "it builds on the pure Fx stage, which was skipped"
+    );
+}
+
+/// A fit whose σ is over half its channel's RMS (an `fy` that swings
+/// with slip angle as no tyre's does) and one of 13 points for 7 free
+/// parameters: written by `identify --model mf61` without a word. Both
+/// warned of, on the terminal and in the .tir.
+#[test]
+fn a_staged_fit_far_off_or_on_too_few_points_is_warned_of() {
+    let mut wild = String::from("fz,alpha,fy\n");
+    for fz in [2000.0, 4000.0, 6000.0_f64] {
+        for i in -48..=48 {
+            let a = (0.25 * f64::from(i)).to_radians();
+            wild += &format!("{fz},{a:.7},{:.3}\n", fz * (30.0 * a).cos());
+        }
+    }
+    let mut few = String::from("fz,alpha,fy\n");
+    for i in -6..=6 {
+        let a = (1.5 * f64::from(i)).to_radians();
+        few += &format!("3000,{a:.7},{:.3}\n", fy(a, 3000.0));
+    }
+    let dir = scratch(&[("wild.csv", &wild), ("few.csv", &few)]);
+    for (name, line) in [
+        ("wild", "    warning: σ 89 %, above 50 %: the fit does not reproduce the measured `fy` (its error is over half the channel's RMS); its coefficients are no model of these data"),
+        ("few", "    warning: 13 points for 7 free parameters, fewer than the 5 per parameter a fit needs to rest on the data rather than match them; do not rely on the tyre beyond the points"),
+    ] {
+        let o = run_in(
+            dir.path(),
+            &["identify", &format!("{name}.csv"), "--model", "mf61", "--out", &format!("{name}.tir")],
+        );
+        assert!(o.status.success(), "{}", stderr(&o));
+        let said = String::from_utf8_lossy(&o.stdout);
+        assert!(said.contains(line), "{name}: {line} not in {said}");
+        let tir = fs::read_to_string(dir.path().join(format!("{name}.tir"))).unwrap();
+        assert!(tir.contains(&format!("$ {}", line.trim_start())), "{name}: {tir}");
+    }
+}

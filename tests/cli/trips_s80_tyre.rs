@@ -175,7 +175,7 @@ fn the_combined_mz_stage_is_skipped_where_the_longitudinal_force_is_not_fitted()
     assert!(!said.contains("cannot fit"), "{said}");
     let report = read_json(&dir.path().join("m.report.json"));
     let stages = report["stages"].as_array().unwrap();
-    let mz = stages.iter().find(|s| s["stage"] == "CombinedMz").unwrap();
+    let mz = stages.iter().find(|s| s["stage"] == "combined-mz").unwrap();
     assert_eq!(
         mz["skipped"],
         "it builds on the pure Fx stage, which was skipped"
@@ -215,4 +215,36 @@ fn a_staged_fit_far_off_or_on_too_few_points_is_warned_of() {
         let tir = fs::read_to_string(dir.path().join(format!("{name}.tir"))).unwrap();
         assert!(tir.contains(&format!("$ {}", line.trim_start())), "{name}: {tir}");
     }
+}
+
+/// A cornering sweep and five slip ratios per load at α = 0: PAC89 fitted
+/// its 11 longitudinal parameters to 18 points without a word (the
+/// coverage warning judged the lateral fit only). Warned of, on the
+/// terminal and in the file.
+#[test]
+fn a_pac89_longitudinal_block_on_too_few_points_is_warned_of() {
+    let mut csv = String::from("fz,alpha,kappa,fy,fx\n");
+    for fz in [2000.0, 4000.0, 6000.0_f64] {
+        for i in -48..=48 {
+            let a = (0.25 * f64::from(i)).to_radians();
+            csv += &format!("{fz},{a:.7},0,{:.3},0\n", fy(a, fz));
+        }
+        for k in [-0.1, -0.05, 0.02, 0.05, 0.1_f64] {
+            let x = 20.0 * k / (1.6 * 1.2);
+            let fx = 1.2 * fz * (1.6 * (x - 0.2 * (x - x.atan())).atan()).sin();
+            csv += &format!("{fz},0,{k},0,{fx:.3}\n");
+        }
+    }
+    let dir = scratch(&[("lon.csv", &csv)]);
+    let out = dir.path().join("p.toml");
+    let o = identify_to(&dir.path().join("lon.csv"), "pac89", &out);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let line = "the data are too few for the longitudinal force fit: 18 points for 11 free parameters, fewer than the 5 per parameter a fit needs to rest on the data rather than match them; do not rely on the tyre beyond the points";
+    assert!(
+        stderr(&o).contains(&format!("warning: {line}")),
+        "{}",
+        stderr(&o)
+    );
+    let file = fs::read_to_string(&out).unwrap();
+    assert!(file.contains(&format!("# warning: {line}")), "{file}");
 }

@@ -102,7 +102,7 @@ fn a_longitudinal_column_without_its_pair_is_named() {
     ]);
     for (file, missing, there) in [("fx", "kappa", "fx"), ("kappa", "fx", "kappa")] {
         let out = dir.path().join(format!("{file}.toml"));
-        let o = identify_to(&dir.path().join(format!("{file}.csv")), "gim", &out);
+        let o = identify_to(&dir.path().join(format!("{file}.csv")), "pac89", &out);
         assert!(o.status.success(), "{}", stderr(&o));
         let said = String::from_utf8_lossy(&o.stdout);
         let line = format!("not fitted (no `{missing}` column in the data (its `{there}` alone is no longitudinal test))");

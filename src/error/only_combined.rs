@@ -9,8 +9,7 @@ use std::path::PathBuf;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error(
     "{}: no pure-slip rows to fit: all {rows} rows of the file are combined slip (|alpha| > {tol} rad and |kappa| > {tol}), set aside: the {model} model is fitted to pure slip only (its lateral force at kappa = 0, its longitudinal force at alpha = 0); give a cornering sweep at kappa = 0 or a braking/driving sweep at alpha = 0",
-    data.display(),
-    tol = crate::identify::mf_staged::PURE_TOL
+    data.display()
 )]
 pub struct OnlyCombined {
     /// The rig data.
@@ -19,4 +18,6 @@ pub struct OnlyCombined {
     pub rows: usize,
     /// The model asked for.
     pub model: &'static str,
+    /// The slip above which a row's slip is not pure (rad for α, and κ).
+    pub tol: f64,
 }

@@ -1,5 +1,5 @@
-//! What a new user tripped on in `identify` and `tyre-eval`, round 80
-//! (issue 41), run from files as a user runs the tool.
+//! What a new user tripped on in `identify` and `tyre-eval`, round 80,
+//! run from files as a user runs the tool.
 
 use super::*;
 

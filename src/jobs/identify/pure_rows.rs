@@ -25,6 +25,7 @@ pub(super) fn pure_rows(
             data: path.to_path_buf(),
             rows: set_aside.rows,
             model,
+            tol: crate::identify::mf_staged::PURE_TOL,
         }
         .into());
     }

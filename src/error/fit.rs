@@ -107,6 +107,9 @@ pub enum FitError {
         /// The rig data.
         data: PathBuf,
     },
+    /// Rig data of combined-slip rows only, for a pure-slip fit.
+    #[error(transparent)]
+    OnlyCombined(#[from] super::OnlyCombined),
     /// Rig data in which the grouping found no test condition.
     #[error("{}: no test condition found in the data ({grouping})", data.display())]
     NoCondition {
@@ -321,8 +324,10 @@ pub enum SkipReason {
     /// The data have none of the stage's rows.
     #[error("{0}")]
     NoRows(StageRows),
-    /// Fewer rows than the stage's free parameters need.
-    #[error("{} cannot fit {}", plural(*rows, "row", "rows"), plural(*free, "parameter", "parameters"))]
+    /// Fewer rows than the stage's free parameters need: more than five
+    /// beyond their count, so that the fit has residuals left to judge it
+    /// by ("13 rows cannot fit 8 parameters" read as a miscount).
+    #[error("{} for {}: at least {} are needed", plural(*rows, "row", "rows"), plural(*free, "parameter", "parameters"), free + 6)]
     TooFewRows {
         /// Rows the stage has.
         rows: usize,

@@ -34,6 +34,10 @@ pub struct SetAside {
     /// The largest |κ| of the pure longitudinal rows (`None`: no
     /// `kappa`/`fx` columns).
     pub kappa_reach: Option<f64>,
+    /// The column of the pair `kappa`, `fx` the file lacks where it has
+    /// the other (set by the reader of the file, which knows its header).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub missing_column: Option<&'static str>,
 }
 
 impl SetAside {
@@ -74,6 +78,7 @@ pub fn split(d: &RigData) -> (RigData, Option<RigData>, SetAside) {
                 .filter(|&i| pure_a(i) && k[i].is_finite())
                 .fold(0.0_f64, |m, i| m.max(k[i].abs()))
         }),
+        missing_column: None,
     };
     (lateral, longitudinal, set_aside)
 }

@@ -101,8 +101,10 @@
 //! `holds.rs` what a parameter is held at and why; `paper_lm.rs` the
 //! paper's own LM.
 
+mod fit_warnings;
 mod holds;
 mod paper_lm;
+pub use fit_warnings::{LARGE_SIGMA_PERCENT, MIN_POINTS_PER_PARAMETER};
 mod params;
 mod problem;
 mod sigma;
@@ -456,19 +458,19 @@ pub fn identify_with(
     };
     let mut reports: Vec<StageReport> = Vec::new();
     for stage in Stage::ALL {
-        if let Some(need) = stage.needs() {
-            if reports
+        let skipped = |need: &&Stage| {
+            reports
                 .iter()
-                .any(|r| r.stage == need && r.skipped.is_some())
-            {
-                reports.push(StageReport::skipped(
-                    stage,
-                    SkipReason::BuildsOnSkipped {
-                        stage: need.label(),
-                    },
-                ));
-                continue;
-            }
+                .any(|r| r.stage == **need && r.skipped.is_some())
+        };
+        if let Some(need) = stage.needs().iter().find(skipped) {
+            reports.push(StageReport::skipped(
+                stage,
+                SkipReason::BuildsOnSkipped {
+                    stage: need.label(),
+                },
+            ));
+            continue;
         }
         let sel: Vec<&MfRow> = rows.iter().filter(|r| stage.takes(r)).collect();
         let rep = run_stage(stage, &mut tyre, &sel, &run);
@@ -513,6 +515,7 @@ pub fn identify_with(
         r.sigma_percent = sigma_percent;
         r.rms = rms;
         r.error_spread = Some(spread::error_spread(r.stage, &tyre, &sel));
+        r.warnings.extend(fit_warnings::fit_warnings(r));
     }
     Ok(Identified {
         report: StagedReport {

@@ -72,6 +72,17 @@ impl Stage {
         }
     }
 
+    /// The rig file's column of this stage's channel.
+    pub fn column(self) -> &'static str {
+        match self {
+            Stage::PureFx | Stage::CombinedFx => "fx",
+            Stage::PureFy | Stage::CombinedFy => "fy",
+            Stage::PureMz | Stage::CombinedMz => "mz",
+            Stage::Mx => "mx",
+            Stage::My => "my",
+        }
+    }
+
     /// The unit of this stage's channel.
     pub fn unit(self) -> &'static str {
         match self {
@@ -125,14 +136,23 @@ impl Stage {
             }
     }
 
-    /// The stage whose parameters this one builds on.
-    pub(super) fn needs(self) -> Option<Stage> {
+    /// The stages whose parameters this one builds on: a stage run on
+    /// another's defaults fits its own coefficients to that stage's error.
+    /// The combined `Mz` takes the longitudinal force twice, in `s·Fx` and
+    /// in the equivalent slip angle's `Kxκ/Kyα·κ`, and the combined `Fy`
+    /// in `t·Fy'`: on a file without a longitudinal sweep (`PDX1` =
+    /// `PKX1` = 0) it fitted `SSZ1` to a wrong-signed moment at σ 138 %.
+    pub(super) fn needs(self) -> &'static [Stage] {
         match self {
-            Stage::PureFx | Stage::PureFy => None,
-            Stage::PureMz | Stage::CombinedFy | Stage::Mx => Some(Stage::PureFy),
-            Stage::CombinedFx => Some(Stage::PureFx),
-            Stage::CombinedMz => Some(Stage::PureMz),
-            Stage::My => None,
+            Stage::PureFx | Stage::PureFy | Stage::My => &[],
+            Stage::PureMz | Stage::CombinedFy | Stage::Mx => &[Stage::PureFy],
+            Stage::CombinedFx => &[Stage::PureFx],
+            Stage::CombinedMz => &[
+                Stage::PureMz,
+                Stage::PureFx,
+                Stage::CombinedFx,
+                Stage::CombinedFy,
+            ],
         }
     }
 

@@ -24,6 +24,7 @@ pub use linear_window::LinearWindow;
 mod notes;
 pub use notes::Note;
 mod outputs;
+mod pure_rows;
 mod ranges;
 mod summary;
 mod written;
@@ -384,7 +385,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     settings.hold_undetermined = true;
     let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
     // Each force is fitted to its pure slip (`identify/pure.rs`).
-    let (lateral, long_view, set_aside) = crate::identify::pure::split(&data);
+    let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
         return Err(FitError::NoLateralData {
             data: o.data.clone(),

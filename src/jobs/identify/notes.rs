@@ -214,7 +214,13 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
             readable(reach, 3),
             crate::identify::pure::MIN_KAPPA_SWEEP
         ),
-        None => "no kappa/fx columns in the data".into(),
+        None => match r.set_aside.missing_column {
+            Some(column) => format!(
+                "no `{column}` column in the data (its `{}` alone is no longitudinal test)",
+                if column == "kappa" { "fx" } else { "kappa" }
+            ),
+            None => "no kappa/fx columns in the data".into(),
+        },
     };
     let blocks: [(&str, &str, &str, bool); 3] = [
         (
@@ -363,7 +369,8 @@ impl SwarmReport {
             .iter()
             .cloned()
             .chain(combined)
-            .chain(coverage_warning(self));
+            .chain(coverage_warning(self))
+            .chain(block_coverage_warnings(self));
         flat.chain(pooled
             .into_iter()
             .filter(|(_, _, selected, n)| selected.is_none() && *n > 1)
@@ -417,22 +424,45 @@ pub(crate) const MIN_POINTS_PER_PARAMETER: usize = 5;
 /// extrapolated. A linear tyre, fitted to its window, is not judged.
 pub(crate) const MIN_PEAK_ALPHA: f64 = 0.0698;
 
+/// The "N points for M free parameters" of a fit `f` with fewer than
+/// [`MIN_POINTS_PER_PARAMETER`] points per free parameter.
+fn too_few(f: &Fit) -> Option<String> {
+    let points: usize = f.curves.iter().map(|c| c.points).sum();
+    let free = f.parameters.iter().filter(|p| p.free).count();
+    (points < MIN_POINTS_PER_PARAMETER * free).then(|| {
+        format!(
+            "{} for {} free parameters, fewer than the {MIN_POINTS_PER_PARAMETER} per parameter a fit needs to rest on the data rather than match them",
+            crate::format::plural(points, "point", "points"),
+            free
+        )
+    })
+}
+
+/// The warnings of the fits after the first (the aligning moment's, the
+/// longitudinal force's) on too few points: a PAC89 longitudinal block of
+/// 11 parameters was fitted to 18 points without a word.
+fn block_coverage_warnings(r: &SwarmReport) -> Vec<String> {
+    [&r.aligning, &r.longitudinal]
+        .into_iter()
+        .flatten()
+        .filter_map(|f| {
+            too_few(f).map(|few| {
+                format!(
+                    "the data are too few for the {} fit: {few}; do not rely on the tyre beyond the points",
+                    f.channel.quantity()
+                )
+            })
+        })
+        .collect()
+}
+
 /// The warning of a first fit on too few or too narrow data: fewer than
 /// [`MIN_POINTS_PER_PARAMETER`] points per free parameter, or (a
 /// cornering fit of a model with a peak) slip angles within
 /// [`MIN_PEAK_ALPHA`].
 fn coverage_warning(r: &SwarmReport) -> Option<String> {
     let f = &r.fit;
-    let points: usize = f.curves.iter().map(|c| c.points).sum();
-    let free = f.parameters.iter().filter(|p| p.free).count();
-    let mut said = Vec::new();
-    if points < MIN_POINTS_PER_PARAMETER * free {
-        said.push(format!(
-            "{} for {} free parameters, fewer than the {MIN_POINTS_PER_PARAMETER} per parameter a fit needs to rest on the data rather than match them",
-            crate::format::plural(points, "point", "points"),
-            free
-        ));
-    }
+    let mut said: Vec<String> = too_few(f).into_iter().collect();
     let reach = r.sample_slips[0].map(|(lo, hi)| lo.abs().max(hi.abs()));
     let linear = r.linear_window.is_some();
     if let (Some(reach), false) = (reach, linear) {

@@ -1,22 +1,21 @@
 //! A load far below any a tyre was measured at, counted and said: a Magic
-//! Formula point at a positive load below a stated floor is evaluated at
-//! the load given (its forces, about `μ·Fz`, are then next to nothing: a
-//! load of 1e-300 N gives an `fy` of 4e-302 N), so a load that small is
-//! more likely a slip of the data (a gap filled with zeros and noise, a
-//! wheel lifting) than a state of the tyre, and the user is told which
-//! points are there.
+//! Formula point at a positive load below a hundredth of `FNOMIN`
+//! ([`LIGHT_LOAD_SHARE`]) is evaluated at the load given (its forces,
+//! about `μ·Fz`, are then a hundredth or less of those at `FNOMIN`: a load
+//! of 1e-300 N gives an `fy` of 4e-302 N), so a load that small is more
+//! likely a slip of the data (a gap filled with zeros and noise, a wheel
+//! lifting) than a state of the tyre, and the user is told which points
+//! are there.
 //!
-//! The floor is the file's `FZMIN` where it gives one above 0. A file
-//! that gives none, or `FZMIN = 0` (the public MF 6.1 / 6.2 samples),
-//! states no floor, and [`LIGHT_LOAD_SHARE`] of `FNOMIN` is taken: a tyre
-//! rig's lightest loads are a tenth of `FNOMIN` or more (the public
-//! Hoosier cornering data's lightest 405 N against the 2750 N of its MF 6.1
-//! fit, 15 %), so 1 % is an order of
-//! magnitude below any load a Magic Formula's load terms were fitted at,
-//! and above the noise of a load cell reading a wheel off the ground.
-//! Where the limit checks are on and `FZMIN` is given, the points below it
-//! are already among the ranges left (`ranges.rs`) and are not said twice.
-//! Loads in N.
+//! A tyre rig's lightest loads are a tenth of `FNOMIN` or more (the
+//! public Hoosier cornering data's lightest 405 N against the 2750 N of
+//! its MF 6.1 fit, 15 %), so 1 % is an order of magnitude below any load
+//! a Magic Formula's load terms were fitted at, and above the noise of a
+//! load cell reading a wheel off the ground. The file's `FZMIN` is not
+//! the floor: 99 N under an `FZMIN` of 100 N gives 63 N of `fy` at 0.05
+//! rad, no "next to nothing". A point below a positive `FZMIN` is said by
+//! the ranges (`ranges.rs`, limit checks on or off), once, and is left out
+//! here. Loads in N.
 
 use crate::format::{plural, readable, rounded};
 use crate::tyre::Tyre;
@@ -26,23 +25,11 @@ use serde::Serialize;
 /// file states no `FZMIN` above 0.
 pub const LIGHT_LOAD_SHARE: f64 = 0.01;
 
-/// Where the floor of the loads said comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum LoadFloor {
-    /// The file's `FZMIN` (its limit checks off: the ranges do not say it).
-    Fzmin,
-    /// [`LIGHT_LOAD_SHARE`] of the file's `FNOMIN` (no `FZMIN` above 0).
-    ShareOfFnomin,
-}
-
 /// The points at a positive load below the floor.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LightLoad {
-    /// The floor, N.
+    /// The floor, [`LIGHT_LOAD_SHARE`] of `FNOMIN`, N.
     pub floor: f64,
-    /// Where it comes from.
-    pub source: LoadFloor,
     /// The file's `FNOMIN`, N.
     pub fnomin: f64,
     /// Points below it.
@@ -56,29 +43,21 @@ pub struct LightLoad {
 }
 
 /// The points of load `fz` (at file lines `lines`) that a Magic Formula
-/// `tyre` evaluates below its floor; `None` for another model, where
-/// there are none, or where the file's ranges already say them.
+/// `tyre` evaluates below its floor and the ranges do not say (below a
+/// positive `FZMIN`); `None` for another model or where there are none.
 pub(crate) fn light_load(tyre: &Tyre, fz: &[f64], lines: &[usize]) -> Option<LightLoad> {
     let Tyre::MagicFormula(t) = tyre else {
         return None;
     };
     let fnomin = t.coefficients.FNOMIN;
-    let said_by_ranges = t
-        .input_ranges()
-        .iter()
-        .any(|r| r.column == "fz" && r.lo.is_some_and(|lo| lo > 0.0));
-    let (floor, source) = match t.limits.fz_min.filter(|m| *m > 0.0) {
-        Some(_) if said_by_ranges => return None,
-        Some(m) => (m, LoadFloor::Fzmin),
-        None => (LIGHT_LOAD_SHARE * fnomin, LoadFloor::ShareOfFnomin),
-    };
+    let floor = LIGHT_LOAD_SHARE * fnomin;
+    let fz_min = t.limits.fz_min.filter(|m| *m > 0.0).unwrap_or(0.0);
     let below: Vec<usize> = (0..fz.len())
-        .filter(|&i| fz[i] > 0.0 && fz[i] < floor)
+        .filter(|&i| fz[i] > 0.0 && fz[i] < floor && fz[i] >= fz_min)
         .collect();
     let first = *below.first()?;
     Some(LightLoad {
         floor,
-        source,
         fnomin,
         points: below.len(),
         first_line: lines.get(first).copied().unwrap_or(0),
@@ -90,22 +69,13 @@ pub(crate) fn light_load(tyre: &Tyre, fz: &[f64], lines: &[usize]) -> Option<Lig
 impl LightLoad {
     /// The points in words, of `count` points.
     pub fn line(&self, count: usize) -> String {
-        let floor = match self.source {
-            LoadFloor::Fzmin => format!(
-                "the file's FZMIN = {} N; its limit checks are off",
-                rounded(self.floor, 4)
-            ),
-            LoadFloor::ShareOfFnomin => format!(
-                "{} % of FNOMIN = {} N: the file states no FZMIN above 0",
-                rounded(100.0 * LIGHT_LOAD_SHARE, 2),
-                rounded(self.fnomin, 4)
-            ),
-        };
         format!(
-            "{} of {} at a load above 0 but below {} N ({floor}), the lightest {} N: evaluated at the load given, where the forces are next to nothing; a load that small is no state of a tyre on the road but a wheel lifting or a slip of the data; the first at line {}, fz = {} N",
+            "{} of {} at a load above 0 but below {} N ({} % of FNOMIN = {} N), the lightest {} N: evaluated at the load given, where the forces, about μ·Fz, are a hundredth or less of those at FNOMIN; a load that small is no state of a tyre on the road but a wheel lifting or a slip of the data; the first at line {}, fz = {} N",
             self.points,
             plural(count, "point", "points"),
             rounded(self.floor, 4),
+            rounded(100.0 * LIGHT_LOAD_SHARE, 2),
+            rounded(self.fnomin, 4),
             readable(self.lightest, 3),
             self.first_line,
             readable(self.first_value, 3)
@@ -129,7 +99,7 @@ mod tests {
     }
 
     #[test]
-    fn a_load_below_a_hundredth_of_fnomin_is_said_where_no_fzmin_is_given() {
+    fn a_load_below_a_hundredth_of_fnomin_is_said() {
         let t = sample(None);
         let fnomin = match &t {
             Tyre::MagicFormula(m) => m.coefficients.FNOMIN,
@@ -137,10 +107,7 @@ mod tests {
         };
         let fz = [4000.0, 1e-300, 0.0, 0.5 * LIGHT_LOAD_SHARE * fnomin];
         let l = light_load(&t, &fz, &[2, 3, 4, 5]).expect("said");
-        assert_eq!(
-            (l.points, l.first_line, l.source),
-            (2, 3, LoadFloor::ShareOfFnomin)
-        );
+        assert_eq!((l.points, l.first_line), (2, 3));
         assert_eq!(l.lightest, 1e-300);
         let s = l.line(4);
         assert!(
@@ -156,17 +123,15 @@ mod tests {
         assert!(light_load(&t, &[4000.0, 0.0, -1.0], &[2, 3, 4]).is_none());
     }
 
+    /// Below a positive `FZMIN` the ranges say the points, with the limit
+    /// checks on or off; between it and the floor, the light load does.
     #[test]
-    fn a_load_below_fzmin_is_left_to_the_ranges_where_the_limit_checks_say_it() {
-        let t = sample(Some(100.0));
-        assert!(light_load(&t, &[50.0], &[2]).is_none());
-        let Tyre::MagicFormula(mut m) = t else {
-            unreachable!()
-        };
-        let mut mode = m.mode();
-        mode.limit_checks = false;
-        m.set_mode(mode);
-        let l = light_load(&Tyre::MagicFormula(m), &[50.0], &[2]).expect("said");
-        assert_eq!((l.floor, l.source), (100.0, LoadFloor::Fzmin));
+    fn a_load_below_fzmin_is_left_to_the_ranges() {
+        let t = sample(Some(30.0));
+        assert!(light_load(&t, &[20.0], &[2]).is_none());
+        let l = light_load(&t, &[20.0, 50.0], &[2, 3]).expect("said");
+        assert_eq!((l.points, l.first_line), (1, 3));
+        // 99 N under an FZMIN of 100 N is no light load (the floor 67.52 N).
+        assert!(light_load(&sample(Some(100.0)), &[99.0], &[2]).is_none());
     }
 }

@@ -69,7 +69,7 @@ pub use camber::{SteepCamber, STEEP_CAMBER};
 pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
-pub use light_load::{LightLoad, LoadFloor, LIGHT_LOAD_SHARE};
+pub use light_load::{LightLoad, LIGHT_LOAD_SHARE};
 pub use model_loads::LoadsLeft;
 pub use physical::PHYSICAL;
 pub use standstill::{AtRest, StandstillMz, STANDSTILL};
@@ -103,8 +103,11 @@ pub struct TyreEvalReport {
     pub mode: Option<u32>,
     /// Points outside the `.tir` file's ranges of load, slip, camber or
     /// pressure, evaluated at the ranges' ends (limit checks on; 0
-    /// otherwise).
+    /// otherwise); a point only below `FZMIN` is not among them.
     pub clamped: usize,
+    /// Points outside no range but `FZMIN`'s, with the limit checks on:
+    /// their forces evaluated at the load given, not at `FZMIN`.
+    pub below_fzmin: usize,
     /// The ranges those points leave, each with its count and first point.
     pub ranges_left: Vec<ranges::RangeLeft>,
     /// The points outside the loads a TOML tyre's model is meant for, by
@@ -191,6 +194,7 @@ pub struct TyreEvalReport {
 struct MfExtras {
     mode: Option<u32>,
     clamped: usize,
+    below_fzmin: usize,
     ranges_left: Vec<ranges::RangeLeft>,
     loaded_radius: Option<Vec<f64>>,
     not_carried: Vec<not_carried::NotCarriedAt>,
@@ -213,7 +217,18 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
             pressure: p.pressure.get(i).copied(),
         })
         .collect();
-    let clamped = inputs.iter().filter(|q| t.is_clamped(q)).count();
+    // MFeval holds a point to every range's end but `FZMIN`'s, below
+    // which the forces are taken at the load given: such a point is not
+    // said as evaluated at the ranges' ends.
+    let only_below_fzmin = |q: &MfInput| {
+        let left = t.ranges_left(q);
+        !left.is_empty()
+            && left
+                .iter()
+                .all(|(r, x)| r.column == "fz" && r.lo.is_some_and(|lo| *x < lo))
+    };
+    let below_fzmin = inputs.iter().filter(|q| only_below_fzmin(q)).count();
+    let clamped = inputs.iter().filter(|q| t.is_clamped(q)).count() - below_fzmin;
     let mut not_carried = Vec::new();
     // The loaded radius, on every row, where the file has a vertical
     // model (6.1, 6.2): the free radius off the road.
@@ -236,6 +251,7 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
     MfExtras {
         mode: Some(t.mode().use_mode()),
         clamped,
+        below_fzmin,
         ranges_left: ranges::ranges_left(t, &inputs, lines),
         loaded_radius,
         not_carried,
@@ -358,6 +374,7 @@ pub fn run(
     );
     not_carried::refuse_not_carried(points, &file, &extras.not_carried)?;
     let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
+    let below_fzmin = extras.below_fzmin;
     // Every model gives no force off the road: said for each, not only
     // where a loaded radius is written.
     let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
@@ -393,6 +410,7 @@ pub fn run(
         model: tyre.model_name(),
         mode,
         clamped,
+        below_fzmin,
         ranges_left,
         loads_left,
         not_meant,
@@ -475,34 +493,47 @@ impl TyreEvalReport {
         write_columns(&self.out, &cols)
     }
 
+    /// The points held at the file's ranges' ends, said in the closing
+    /// line. MFeval takes the rolling resistance and the loaded radius at
+    /// the load given, not the one saturated to FZMAX: said, or a 1 MN
+    /// point's `my` or `rl` reads as one evaluated at the file's range.
+    fn held_at_ends(&self) -> String {
+        if self.clamped == 0 {
+            return String::new();
+        }
+        let given: Vec<String> = ["my", "rl"]
+            .into_iter()
+            .filter(|k| self.columns.iter().any(|(n, _)| n == k))
+            .map(|k| format!("`{k}`"))
+            .collect();
+        format!(
+            "; {} of them outside the file's ranges of load, slip, camber or pressure, evaluated at the ranges' ends{}",
+            self.clamped,
+            match given.is_empty() {
+                false => format!(" ({} at the load given, as MFeval does)", given.join(" and ")),
+                true => String::new(),
+            }
+        )
+    }
+
+    /// The points below `FZMIN` only, said in the closing line as the
+    /// ranges' warning says them: at the load given, not at the range's end.
+    fn at_load_given(&self) -> String {
+        match self.below_fzmin {
+            0 => String::new(),
+            n => format!("; {n} of them below FZMIN only, their forces evaluated at the load given (MFeval does not raise a load to FZMIN)"),
+        }
+    }
+
     /// The closing line (with the mode and the points evaluated at the
     /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
-            // MFeval takes the rolling resistance and the loaded radius at
-            // the load given, not the one saturated to FZMAX: said, or a
-            // 1 MN point's `my` or `rl` reads as one evaluated at the
-            // file's range.
-            Some(m) if self.clamped > 0 => {
-                let given: Vec<String> = ["my", "rl"]
-                    .into_iter()
-                    .filter(|k| self.columns.iter().any(|(n, _)| n == k))
-                    .map(|k| format!("`{k}`"))
-                    .collect();
-                format!(
-                    " in MFeval mode {m}; {} of them outside the file's ranges of load, slip, \
-                     camber or pressure, evaluated at the ranges' ends{}",
-                    self.clamped,
-                    match given.is_empty() {
-                        false => format!(
-                            " ({} at the load given, as MFeval does)",
-                            given.join(" and ")
-                        ),
-                        true => String::new(),
-                    }
-                )
-            }
-            Some(m) => format!(" in MFeval mode {m}"),
+            Some(m) => format!(
+                " in MFeval mode {m}{}{}",
+                self.held_at_ends(),
+                self.at_load_given()
+            ),
             None => String::new(),
         };
         let rl = match self.columns.iter().any(|(n, _)| *n == "rl") {

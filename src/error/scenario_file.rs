@@ -107,6 +107,17 @@ pub enum ScenarioRemark {
         /// The manoeuvre's kind as the file names it.
         kind: &'static str,
     },
+    /// A replayed run's `ax` whose unit or sign its speed contradicts.
+    /// `Δu ≈ slope·∫ax dt` over its windows: a slope near g reads `ax` in
+    /// g, a negative one reversed (`measured::ax_agreement`).
+    AxAgainstSpeed {
+        /// Slope of the change of speed on the integral of `ax`.
+        slope: f64,
+        /// Their correlation over the windows.
+        correlation: f64,
+        /// Windows counted.
+        windows: usize,
+    },
 }
 
 impl ScenarioRemark {
@@ -148,6 +159,26 @@ impl fmt::Display for ScenarioRemark {
                 write!(
                     f,
                     "`model.effects.bank_profile_scale` (line {line}) acts on nothing: it scales a replayed run's `bank` column, and {none} (a constant bank is `road_bank`)"
+                )
+            }
+            ScenarioRemark::AxAgainstSpeed {
+                slope,
+                correlation,
+                windows,
+            } => {
+                let (says, fix) = match *slope < 0.0 {
+                    false => ("reads in g, not m/s²", "multiply the column by 9.81"),
+                    true => (
+                        "is positive rearward, not forward (ISO 8855)",
+                        "change its sign",
+                    ),
+                };
+                write!(
+                    f,
+                    "the run's `ax` {says}: over its {} one-second windows whose speed changes by more than 0.5 m/s, the change of speed is {} × the integral of `ax` (1 where they agree; correlation {}); the replay takes `ax` as m/s² forward for its longitudinal load transfer: {fix}",
+                    windows,
+                    crate::format::fixed(*slope, 2),
+                    crate::format::fixed(*correlation, 2),
                 )
             }
         }

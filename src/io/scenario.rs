@@ -280,6 +280,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
             let r = replay::resolve(src, r, &run_path, model.vehicle.wheelbase())?;
             inputs.push(run_path);
             remarks.extend(remarks::bank_remark(src, &r.run));
+            remarks.extend(remarks::ax_remark(&r.run));
             Resolved {
                 manoeuvre: Manoeuvre::Replay(r.replay),
                 initial: r.initial,

@@ -8,6 +8,7 @@
 //! radians, ISO 8855 signs. `io` reads files into these; nothing here reads
 //! a file.
 
+pub mod ax_agreement;
 pub mod calibration;
 pub mod clean;
 pub(crate) mod derivative;

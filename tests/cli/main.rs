@@ -409,6 +409,7 @@ mod trips_s79_sim;
 mod trips_s79_tyre;
 mod trips_s80_diag;
 mod trips_s80_kind;
+mod trips_s80_lead;
 mod trips_s80_sim;
 mod trips_s80_tyre;
 mod trips_simulate;

@@ -1,13 +1,15 @@
 //! What `simulate` says of a scenario as it reads it
 //! ([`ScenarioRemark`]): a replayed run's `bank` column that does not act
 //! (the scenario giving no `bank_profile_scale`: the road is flat, as in
-//! `diagnose`'s base model) or a scale with no bank column to act on, and a `[metrics]` table under a manoeuvre with no step-steer
+//! `diagnose`'s base model) or a scale with no bank column to act on, an
+//! `ax` column its speed says is in g or reversed, and a `[metrics]` table under a manoeuvre with no step-steer
 //! metrics, which the run sets aside (said with its line).
 
 use crate::error::ScenarioRemark;
 use crate::io::toml_file::TomlSource;
 use crate::io::MeasuredRun;
 use crate::manoeuvre::Manoeuvre;
+use crate::measured::ax_agreement::AxAgreement;
 
 /// The `kind` of a manoeuvre as a scenario writes it.
 pub(super) fn kind_name(spec: &super::ManoeuvreSpec) -> &'static str {
@@ -50,6 +52,18 @@ pub(super) fn bank_remark(src: &TomlSource, run: &MeasuredRun) -> Option<Scenari
             [lo.min(b), hi.max(b)]
         });
     Some(ScenarioRemark::BankNotApplied { range })
+}
+
+/// A replayed run's `ax` that its speed says is in g or reversed
+/// ([`AxAgreement`]).
+pub(super) fn ax_remark(run: &MeasuredRun) -> Option<ScenarioRemark> {
+    let agreement = AxAgreement::of(&run.t, &run.speed, run.ax.as_deref()?)?;
+    agreement.reading()?;
+    Some(ScenarioRemark::AxAgainstSpeed {
+        slope: agreement.slope,
+        correlation: agreement.correlation,
+        windows: agreement.windows,
+    })
 }
 
 /// A `bank_profile_scale` in `src` under a manoeuvre of `kind` that

@@ -41,6 +41,12 @@ pub enum ScenarioProblem {
     },
     /// A replayed run too long for a history at the default row interval.
     LongReplay(super::LongReplay),
+    /// A `name` that is no folder name: `simulate` writes into
+    /// `out/<name>` where no `--out` is given.
+    NameNotAFolder {
+        /// The name as written.
+        name: Box<str>,
+    },
 }
 
 impl fmt::Display for FileKind {
@@ -66,6 +72,10 @@ impl fmt::Display for ScenarioProblem {
         match self {
             ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
             ScenarioProblem::LongReplay(r) => r.fmt(f),
+            ScenarioProblem::NameNotAFolder { name } => write!(
+                f,
+                "`name` = {name:?} is no folder name: `simulate` writes the run into `out/<name>` where no `--out` is given, so a name is one folder's name, not empty, without `/` or `\\`, and not `.` or `..`"
+            ),
             ScenarioProblem::TwoIntegrationTables { first: (name, line), second } => write!(
                 f,
                 "[{second}] and [{name}] (line {line}) are one table under two names (the method, step and tolerances of the integration): give one of them"

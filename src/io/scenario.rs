@@ -12,7 +12,7 @@ use super::tables::{check_road, check_vehicle, resolve_model, ResolvedModel};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::MeasuredRun;
-use crate::error::{InputError, Limit, ParamError, ParamReason};
+use crate::error::{InputError, InputProblem, Limit, ParamError, ParamReason, ScenarioProblem};
 use crate::manoeuvre::{Manoeuvre, RampSteer, Replay, SineSteer, StepSteer, SweepSteer};
 use crate::metrics::MetricSettings;
 use crate::metrics::MIN_STEP;
@@ -298,6 +298,11 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         remarks.extend(remarks::bank_scale_unused(src, kind));
     }
     rows::check(src, &f.simulation, &manoeuvre, measured.as_ref())?;
+    if let Some(name) = f.name.as_deref().filter(|n| !is_folder_name(n)) {
+        let problem = ScenarioProblem::NameNotAFolder { name: name.into() };
+        let span = src.key_span("name");
+        return Err(src.located(span, InputProblem::Scenario(Box::new(problem))));
+    }
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()
             .map_or("scenario".into(), |s| s.to_string_lossy().into_owned())
@@ -552,6 +557,11 @@ fn other_manoeuvre(
             unreachable!("resolved by their own functions")
         }
     })
+}
+
+/// A name `out/<name>` keeps inside `out/`: one path component.
+fn is_folder_name(name: &str) -> bool {
+    !(name.trim().is_empty() || name.contains(['/', '\\']) || name == "." || name == "..")
 }
 
 mod layout;

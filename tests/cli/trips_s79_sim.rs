@@ -11,7 +11,7 @@ use super::*;
 
 /// The sedan of `VEHICLE` on the bundled linear tyre, with `rest` after
 /// its `[tyres]` table, written to `dir/<name>.toml`.
-fn sedan(dir: &Path, name: &str, rest: &str) -> PathBuf {
+pub(super) fn sedan(dir: &Path, name: &str, rest: &str) -> PathBuf {
     let tyre = root().join("tyres/linear.toml");
     let path = dir.join(format!("{name}.toml"));
     let text = format!(
@@ -41,7 +41,7 @@ fn straight_run(dir: &Path, seconds: f64, extra: &[(&str, f64)]) {
     fs::write(dir.join("run.csv"), text).unwrap();
 }
 
-const REPLAY: &str = "[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n";
+pub(super) const REPLAY: &str = "[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n";
 
 /// The history's column `name`.
 fn column(history: &Path, name: &str) -> Vec<f64> {
@@ -55,7 +55,7 @@ fn column(history: &Path, name: &str) -> Vec<f64> {
 }
 
 /// Runs `simulate path --out dir/out`; its stdout.
-fn simulated(path: &Path, dir: &Path) -> String {
+pub(super) fn simulated(path: &Path, dir: &Path) -> String {
     let out = dir.join("out");
     succeeds(&[
         "simulate",

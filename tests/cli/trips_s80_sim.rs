@@ -6,36 +6,11 @@
 //! file does not write, `synth --drive` dropping a replay's bank and
 //! `--effects none,…`, and effects that act on nothing.
 
+use super::trips_s79_sim::{sedan, simulated, REPLAY};
 use super::*;
-
-/// The sedan of `VEHICLE` on the bundled linear tyre, with `rest` after
-/// its `[tyres]` table, written to `dir/<name>.toml`.
-fn sedan(dir: &Path, name: &str, rest: &str) -> PathBuf {
-    let tyre = root().join("tyres/linear.toml");
-    let path = dir.join(format!("{name}.toml"));
-    let text = format!(
-        "{VEHICLE}\n[tyres]\nfront = \"{}\"\n\n{rest}",
-        tyre.display()
-    );
-    fs::write(&path, text).unwrap();
-    path
-}
 
 /// A 1° step steer at 80 km/h from t = 1 s to 6 s.
 const STEP_STEER: &str = "[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nsteer = 0.0174533\nstart = 1.0\nrise_time = 0.1\nend = 6.0\n";
-
-const REPLAY: &str = "[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n";
-
-/// Runs `simulate path --out dir/out`; its stdout.
-fn simulated(path: &Path, dir: &Path) -> String {
-    let out = dir.join("out");
-    succeeds(&[
-        "simulate",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-}
 
 /// A step steer on a road banked 0.05 rad on linear tyres (no force at
 /// zero slip) said that "the tyres make lateral force at zero slip

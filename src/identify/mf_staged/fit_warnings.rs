@@ -11,8 +11,11 @@ use super::StageReport;
 /// channel's shape wrong, not its detail.
 pub const LARGE_SIGMA_PERCENT: f64 = 50.0;
 
-/// Points per free parameter below which a stage is warned of as fitted
-/// on too few data, as the swarm fits are (`jobs/identify/notes.rs`).
+/// Points per free parameter below which a fit is warned of as too few
+/// data, a staged fit's stage here and the swarm fits' blocks in
+/// `jobs/identify/notes.rs`: five, so that each parameter rests on more
+/// points than a curve's handful (a fit of three parameters to five points
+/// matches them exactly and says nothing of the tyre between or beyond).
 pub const MIN_POINTS_PER_PARAMETER: usize = 5;
 
 /// The warnings of the fitted stage `r`, its σ the final tyre's.

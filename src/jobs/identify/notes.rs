@@ -13,6 +13,7 @@
 
 use super::SwarmReport;
 use crate::format::{fixed, readable};
+use crate::identify::mf_staged::MIN_POINTS_PER_PARAMETER;
 use crate::identify::{Fit, HeldFor, ParameterReport};
 use crate::jobs::tyre_eval::{gives_none, Output};
 use serde::Serialize;
@@ -411,12 +412,6 @@ impl SwarmReport {
 pub(crate) fn held_as_given(p: &ParameterReport, hold: &[(String, f64)]) -> bool {
     !p.free && hold.iter().any(|(h, _)| *h == p.name)
 }
-
-/// Points per free parameter below which a fit is warned of as too few
-/// data: five, so that each parameter rests on more points than a
-/// curve's handful (a fit of three parameters to five points matches
-/// them exactly and says nothing of the tyre between or beyond).
-pub(crate) const MIN_POINTS_PER_PARAMETER: usize = 5;
 
 /// The slip angle a cornering sweep must reach, rad (4°), for a model
 /// with a force peak to be fitted beyond its slope: a car tyre's lateral

@@ -329,110 +329,91 @@ impl Effects {
     /// Checks the values for physical sense (the keys of a scenario's
     /// `[model.effects]` first, in its order); the error names the key.
     pub fn validate(&self) -> Result<(), ParamError> {
-        let Effects {
-            aero_load,
-            road_bank,
-            bank_profile_scale,
-            relaxation_length,
-            steering_compliance,
-            roll_steer,
-            roll_camber,
-            cornering_stiffness_scale,
-            roll,
-            longitudinal_load_transfer,
-            combined_slip,
-            yaw_inertia_scale,
-            friction_scale,
-            transfer_share,
-            sensors,
-            steer_path,
-        } = self;
-        for (i, k) in aero_load.iter().enumerate() {
+        self.validate_road()?;
+        self.validate_axles()?;
+        if let Some(c) = &self.combined_slip {
+            c.validate()?;
+        }
+        self.roll.validate().map_err(|e| e.within("roll"))?;
+        self.validate_scales_and_sensors()
+    }
+
+    /// The road's and the aerodynamics' keys: aero load, bank, bank scale.
+    fn validate_road(&self) -> Result<(), ParamError> {
+        for (i, k) in self.aero_load.iter().enumerate() {
             let key = format!("aero_load[{i}]");
             ParamError::non_negative(&key, *k)?;
             ParamError::in_range(&key, *k, -f64::MIN_POSITIVE, MAX_AERO_LOAD, Limit::AeroLoad)?;
         }
-        ParamError::finite("road_bank", *road_bank)?;
+        let road_bank = self.road_bank;
+        ParamError::finite("road_bank", road_bank)?;
         if road_bank.abs() > MAX_ROAD_BANK {
             // Said with its sign: the range is symmetric, the value as written.
             let (lo, hi, why) = (-MAX_ROAD_BANK, MAX_ROAD_BANK, Limit::RoadBank);
             let reason = ParamReason::OutOfRange { lo, hi, why };
-            return Err(ParamError::new("road_bank", *road_bank, reason));
+            return Err(ParamError::new("road_bank", road_bank, reason));
         }
-        ParamError::non_negative("relaxation_length", *relaxation_length)?;
-        let limit = |key: &str, v: f64, lo: f64, hi: f64, why| {
-            ParamError::in_range(key, v, lo, hi, Limit::Effect(why))
-        };
-        limit(
+        ParamError::non_negative("relaxation_length", self.relaxation_length)?;
+        effect_limit(
             "bank_profile_scale",
-            *bank_profile_scale,
+            self.bank_profile_scale,
             -f64::MIN_POSITIVE,
             2.0,
             EffectLimit::BankProfileScale,
-        )?;
-        limit(
+        )
+    }
+
+    /// The tyres' and the steering's keys: relaxation length, compliance,
+    /// roll steer and camber, stiffness scales, longitudinal transfer.
+    fn validate_axles(&self) -> Result<(), ParamError> {
+        effect_limit(
             "relaxation_length",
-            *relaxation_length,
+            self.relaxation_length,
             -f64::MIN_POSITIVE,
             3.0,
             EffectLimit::RelaxationLength,
         )?;
-        ParamError::finite("steering_compliance", *steering_compliance)?;
+        let compliance = self.steering_compliance;
+        ParamError::finite("steering_compliance", compliance)?;
         // Far above any car's (1e-6 to 3e-5 rad/N), the steer lost to the
         // force exceeds the steer given and the compliance solve has no
         // physical root: a value in rad/kN is refused, not integrated.
         ParamError::in_range(
             "steering_compliance",
-            steering_compliance.abs(),
+            compliance.abs(),
             -1e-12,
             1e-4,
             Limit::SteeringCompliance,
         )?;
-        for (i, v) in roll_steer.iter().enumerate() {
+        for (i, v) in self.roll_steer.iter().enumerate() {
             let key = format!("roll_steer[{i}]");
-            limit(&key, *v, -1.0, 1.0, EffectLimit::RollSteer)?;
+            effect_limit(&key, *v, -1.0, 1.0, EffectLimit::RollSteer)?;
         }
-        for (i, v) in roll_camber.iter().enumerate() {
+        for (i, v) in self.roll_camber.iter().enumerate() {
             let key = format!("roll_camber[{i}]");
-            limit(&key, *v, -10.0, 10.0, EffectLimit::RollCamber)?;
+            effect_limit(&key, *v, -10.0, 10.0, EffectLimit::RollCamber)?;
         }
-        for (i, v) in cornering_stiffness_scale.iter().enumerate() {
+        for (i, v) in self.cornering_stiffness_scale.iter().enumerate() {
             let key = format!("cornering_stiffness_scale[{i}]");
             ParamError::positive(&key, *v)?;
-            limit(&key, *v, 0.2, 5.0, EffectLimit::CorneringStiffnessScale)?;
+            effect_limit(&key, *v, 0.2, 5.0, EffectLimit::CorneringStiffnessScale)?;
         }
         ParamError::in_range(
             "longitudinal_load_transfer",
-            *longitudinal_load_transfer,
+            self.longitudinal_load_transfer,
             -f64::MIN_POSITIVE,
             3.0,
             Limit::LongitudinalLoadTransfer,
-        )?;
-        if let Some(c) = combined_slip {
-            for (key, v) in [
-                ("drive_front_share", c.drive_front_share),
-                ("brake_front_share", c.brake_front_share),
-            ] {
-                if !(0.0..=1.0).contains(&v) {
-                    return Err(
-                        ParamError::new(key, v, ParamReason::ForceShare).within("combined_slip")
-                    );
-                }
-            }
-            ParamError::in_range(
-                "force_share",
-                c.force_share,
-                -f64::MIN_POSITIVE,
-                3.0,
-                Limit::LongitudinalForceShare,
-            )
-            .map_err(|e| e.within("combined_slip"))?;
-        }
-        roll.validate().map_err(|e| e.within("roll"))?;
+        )
+    }
+
+    /// The diagnosis's scales, the load-transfer share, the sensors and
+    /// the steer path.
+    fn validate_scales_and_sensors(&self) -> Result<(), ParamError> {
         // Not read from files: set by the diagnosis within its bounds.
-        ParamError::positive("yaw_inertia_scale", *yaw_inertia_scale)?;
-        ParamError::positive("friction_scale", *friction_scale)?;
-        if let Some(chi) = *transfer_share {
+        ParamError::positive("yaw_inertia_scale", self.yaw_inertia_scale)?;
+        ParamError::positive("friction_scale", self.friction_scale)?;
+        if let Some(chi) = self.transfer_share {
             if !(0.0..=1.0).contains(&chi) {
                 return Err(ParamError::new(
                     "transfer_share",
@@ -441,6 +422,7 @@ impl Effects {
                 ));
             }
         }
+        let sensors = &self.sensors;
         ParamError::non_negative("sensors.delay", sensors.delay)?;
         for (key, v) in [
             ("yaw_rate_bias", sensors.yaw_rate_bias),
@@ -451,8 +433,9 @@ impl Effects {
         ] {
             ParamError::finite(key, v).map_err(|e| e.within("sensors"))?;
         }
-        ParamError::non_negative("delay", steer_path.delay).map_err(|e| e.within("steer_path"))?;
-        ParamError::non_negative("lag", steer_path.lag).map_err(|e| e.within("steer_path"))
+        let path = &self.steer_path;
+        ParamError::non_negative("delay", path.delay).map_err(|e| e.within("steer_path"))?;
+        ParamError::non_negative("lag", path.lag).map_err(|e| e.within("steer_path"))
     }
 
     /// True when body roll feeds back into the forces (roll steer or roll
@@ -535,4 +518,35 @@ impl<T: Scalar> Effects<T> {
     pub fn lagged(&self) -> bool {
         self.relaxation_length.re() >= MIN_RELAXATION_LENGTH
     }
+}
+
+impl CombinedSlip {
+    /// The force shares within [0, 1] and the force share within [0, 3];
+    /// the error names the key within `combined_slip`.
+    fn validate(&self) -> Result<(), ParamError> {
+        for (key, v) in [
+            ("drive_front_share", self.drive_front_share),
+            ("brake_front_share", self.brake_front_share),
+        ] {
+            if !(0.0..=1.0).contains(&v) {
+                return Err(
+                    ParamError::new(key, v, ParamReason::ForceShare).within("combined_slip")
+                );
+            }
+        }
+        ParamError::in_range(
+            "force_share",
+            self.force_share,
+            -f64::MIN_POSITIVE,
+            3.0,
+            Limit::LongitudinalForceShare,
+        )
+        .map_err(|e| e.within("combined_slip"))
+    }
+}
+
+/// An effect's key `key` at `v` within `[lo, hi]`, refused with the
+/// effect's reason `why`.
+fn effect_limit(key: &str, v: f64, lo: f64, hi: f64, why: EffectLimit) -> Result<(), ParamError> {
+    ParamError::in_range(key, v, lo, hi, Limit::Effect(why))
 }

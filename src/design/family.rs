@@ -162,9 +162,7 @@ fn schedule(points: Vec<(f64, f64, f64)>) -> Manoeuvre {
 /// (None beyond its limit).
 fn steer_for(model: &Augmented, speed: f64, ay: f64) -> Option<f64> {
     let m = &model.model;
-    let trim = m
-        .steady_state_for_lateral_acceleration(speed, model.friction, 0.0)
-        .ok()?;
+    let trim = m.straight_running(speed, model.friction).ok()?;
     let s = m
         .steady_state_for_lateral_acceleration(speed, model.friction, ay)
         .ok()?;

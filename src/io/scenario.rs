@@ -348,8 +348,8 @@ impl From<Manoeuvre> for Resolved {
 
 /// A step steer: timing checked (ISO 7401's rise time), the amplitude
 /// from `steer` or from the steady `lateral_acceleration` it must reach, the
-/// start at straight running (the steer and sideslip that give zero lateral
-/// acceleration, non-zero only for tyres with offsets).
+/// start at straight running (the steer and sideslip that give zero yaw
+/// rate, non-zero only for tyres with offsets or on a banked road).
 fn step_steer(
     src: &TomlSource,
     s: &StepSteerSpec,
@@ -393,7 +393,8 @@ fn step_steer(
                 )
             })
     };
-    let trim = solve(0.0)?;
+    // Straight running: zero yaw rate, the tyres holding the bank's pull.
+    let trim = solve(model.bank_acceleration())?;
     // A step steer needs a step the metrics can measure, and one a road
     // wheel can make: refused at the key that asks for it.
     let step = |key: &str, v: f64, d: f64| {

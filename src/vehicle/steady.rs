@@ -170,6 +170,19 @@ impl VehicleModel {
         })
     }
 
+    /// Straight running at `speed` on a road of `friction`: the steer and
+    /// sideslip that hold the yaw rate at zero. On a flat road the tyres
+    /// then make no net force (unless they make force at zero slip); on a
+    /// road banked by θ they hold the car against gravity's pull down the
+    /// bank, so the accelerometer reads `ay = g·sin θ`, not zero.
+    pub(crate) fn straight_running(
+        &self,
+        speed: f64,
+        friction: f64,
+    ) -> Result<SteadyState, NoSteadyState> {
+        self.steady_state_for_lateral_acceleration(speed, friction, self.bank_acceleration())
+    }
+
     /// The steady state of the model that holds lateral acceleration `ay`
     /// at `speed` on a road of `friction`, or, where none does, the
     /// largest that one does (by bisection between 0 and `ay`).

@@ -38,7 +38,7 @@ fn cause(sc: &Scenario, speed: f64, steer: f64, beta: f64) -> Option<String> {
     );
     let mut flat: VehicleModel = sc.model.clone();
     flat.options.effects.road_bank = 0.0;
-    let on_flat = flat.steady_state_for_lateral_acceleration(speed, sc.integrator.friction, 0.0);
+    let on_flat = flat.straight_running(speed, sc.integrator.friction);
     match on_flat {
         Ok(t) if t.steer.abs() > TRIM || t.beta.abs() > TRIM => Some(format!(
             "{banked}, and {conicity}, which alone need {:.3}° of steer on a flat road",
@@ -75,10 +75,7 @@ pub(super) fn straight_running(sc: &Scenario) -> Option<Straight> {
         return None;
     }
     let speed = sc.manoeuvre.speed(sc.manoeuvre.start_time());
-    let Ok(trim) =
-        sc.model
-            .steady_state_for_lateral_acceleration(speed, sc.integrator.friction, 0.0)
-    else {
+    let Ok(trim) = sc.model.straight_running(speed, sc.integrator.friction) else {
         return None;
     };
     let why = cause(sc, speed, trim.steer, trim.beta)?;

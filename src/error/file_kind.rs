@@ -40,6 +40,8 @@ pub enum FileKind {
     /// A JSON file (a report `handling` writes: `diagnosis.json`,
     /// `metrics.json`, `gap.json`).
     Json,
+    /// A file of a known binary format (an image, a PDF, an archive).
+    Foreign(super::ForeignFormat),
     /// Not text: a NUL byte at this byte offset.
     Binary {
         /// Byte offset of the first NUL.
@@ -70,6 +72,7 @@ impl FileKind {
             FileKind::Study => "a stiffness study (a TOML file with [stiffness])".into(),
             FileKind::Json => "a JSON report (diagnosis.json, metrics.json, gap.json)".into(),
             FileKind::Binary { at } => format!("not a text file (a NUL byte at byte {at})"),
+            FileKind::Foreign(format) => format.what().into(),
             FileKind::Folder { campaign: true } => {
                 "a campaign folder (vehicle.toml and runs/*.csv)".into()
             }
@@ -90,7 +93,7 @@ impl FileKind {
             FileKind::Sweep => "`handling equilibria` reads it",
             FileKind::Study => "`handling study` reads it",
             FileKind::Json => "`handling` writes it, and no command reads it",
-            FileKind::Binary { .. } => "no command reads it",
+            FileKind::Binary { .. } | FileKind::Foreign(_) => "no command reads it",
             FileKind::Folder { campaign: false } => "give one of its files",
         }
     }

@@ -12,6 +12,7 @@ mod duplicate;
 mod effect_limit;
 mod file_kind;
 mod fit;
+mod foreign_format;
 mod input;
 mod level_slip;
 mod long_replay;
@@ -44,6 +45,7 @@ pub use file_kind::{FileKind, KindProblem, Wanted};
 pub use fit::{
     DesignError, DiagnosisError, FitError, SampleAccount, SkipReason, StageRows, StageSkip, Unseen,
 };
+pub use foreign_format::ForeignFormat;
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};

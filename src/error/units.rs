@@ -399,13 +399,21 @@ fn rate(step: f64) -> String {
 }
 
 /// The question a step of that size raises: milliseconds, when read so
-/// it is a logger's rate (5 Hz to 10 kHz).
+/// it is a logger's rate (5 Hz to 10 kHz), else microseconds, when read
+/// so it is one (a step of 200 to 200 000: 5 Hz to 5 kHz; 10 000 µs is
+/// 100 Hz).
 fn in_ms(step: f64) -> String {
     if (0.1..=200.0).contains(&step) {
         format!(
             "; is `t` in milliseconds ({} ms: {} Hz)? divide it by 1000",
             Num(step),
             three(1000.0 / step)
+        )
+    } else if (200.0..=200_000.0).contains(&step) {
+        format!(
+            "; is `t` in microseconds ({} µs: {} Hz)? divide it by 1000000",
+            Num(step),
+            three(1e6 / step)
         )
     } else {
         String::new()

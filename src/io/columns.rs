@@ -117,6 +117,19 @@ fn not_utf8(bytes: &[u8], e: &csv::Error) -> Option<BadByte> {
 /// Long names of the time column that a logger writes.
 const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
 
+/// Symbols of the textbooks that loggers and exports write for a run's
+/// columns, and the column each stands for: `r` for the yaw rate and `δ`
+/// (`delta`) for the road-wheel steer. Hinted at (a did-you-mean), never
+/// taken silently: a `delta` may be the handwheel's angle, which a run does
+/// not log (FORMATS.md: the road wheels').
+const SYMBOLS: [(&str, &str); 2] = [("r", "yaw_rate"), ("delta", "steer")];
+
+/// Whether the header's `h` is a textbook symbol of the column `name`.
+fn symbol_of(h: &str, name: &str) -> bool {
+    let lower = h.to_lowercase();
+    SYMBOLS.iter().any(|(s, n)| *s == lower && *n == name)
+}
+
 /// The channel names of the Tire Test Consortium's rig files (and loggers
 /// that copy them), lower-cased, and the column each means here: `SA` is
 /// no slip of spelling of `alpha`, so a header of them was refused one
@@ -172,7 +185,7 @@ fn meant(
         let lower = h.to_lowercase();
         if time(h) || lower == name {
             0
-        } else if first_word(h) == name || rig_name(h, &[name]).is_some() {
+        } else if first_word(h) == name || rig_name(h, &[name]).is_some() || symbol_of(h, name) {
             1
         } else {
             2 + crate::format::edit_distance(&lower, name)
@@ -186,6 +199,7 @@ fn meant(
             crate::format::nearest_name(h, &[name]).is_some()
                 || time(h)
                 || rig_name(h, &[name]).is_some()
+                || symbol_of(h, name)
         })
         .min_by_key(|(_, h)| rank(h))
         .map(|(i, h)| (i + 1, h.to_string()))
@@ -340,6 +354,15 @@ fn read_layout(
     let headers = rdr
         .headers()
         .map_err(|e| match not_utf8(&bytes, &e) {
+            // An image or archive is named as one, not asked whether it
+            // was saved as Latin-1.
+            Some(_) if crate::error::ForeignFormat::of(&bytes).is_some() => {
+                crate::io::file_kind::not_wanted(path, required).unwrap_or_else(|| {
+                    file_err(InputProblem::Header {
+                        detail: e.to_string(),
+                    })
+                })
+            }
             Some(at) => InputError::problem_at(
                 path,
                 at.line,

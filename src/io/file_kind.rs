@@ -17,6 +17,9 @@ pub(crate) fn recognise(path: &Path) -> Option<FileKind> {
     }
     let bytes = std::fs::read(path).ok()?;
     let head = &bytes[..bytes.len().min(8192)];
+    if let Some(format) = crate::error::ForeignFormat::of(head) {
+        return Some(FileKind::Foreign(format));
+    }
     if let Some(at) = head.iter().position(|&b| b == 0) {
         return Some(FileKind::Binary { at });
     }

@@ -444,15 +444,26 @@ pub(super) fn check_speed_by_ax(
 /// change, and this one offers neither (said by `simulate`'s replay,
 /// `metrics` and `diagnose`), so a speed in km/h or mph below
 /// any car's top speed in m/s passes unseen. Said with the speeds read.
+///
+/// An `ay` that holds one value over the whole run (a dead sensor) checks
+/// nothing either, and is said as present but dead, not as absent.
 pub fn unchecked_speed_unit(run: &crate::measured::MeasuredRun) -> Option<String> {
-    if run.ay.is_some() || run.ax.is_some() || run.speed.is_empty() {
+    let dead_ay = run.ay.as_deref().and_then(crate::measured::one_value);
+    if (run.ay.is_some() && dead_ay.is_none()) || run.ax.is_some() || run.speed.is_empty() {
         return None;
     }
+    let lacks = match dead_ay {
+        Some(v) => format!(
+            "has an `ay` column, but it holds one value ({}) over the whole run, a dead sensor that cannot be judged against speed × yaw_rate, and no `ax` (judged against the speed's change)",
+            crate::error::Num(v)
+        ),
+        None => "has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change)".into(),
+    };
     let mut u = run.speed.clone();
     u.sort_by(f64::total_cmp);
     let median = u[u.len() / 2];
     Some(format!(
-        "the speed's unit could not be checked: {} has neither `ay` (judged against speed × yaw_rate) nor `ax` (against the speed's change); read as m/s, its speed runs {}–{} m/s with a median of {} m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
+        "the speed's unit could not be checked: {} {lacks}; read as m/s, its speed runs {}–{} m/s with a median of {} m/s ({} km/h); a column in km/h or mph would read 3.6 or 2.24 times too fast here",
         run.path.display(),
         crate::format::significant(u[0], 3),
         crate::format::significant(u[u.len() - 1], 3),

@@ -77,9 +77,10 @@ pub fn run_with_degrees(
     ParamError::finite("min_speed", min_speed)?;
     let (mut run, header) =
         read_run_reading(path, (degrees, DeclaredBy::MetricsOption), &METRIC_CHANNELS)?;
+    // Before a dead `ay` is left out: it is said as dead, not as absent.
+    let unchecked = crate::io::unchecked_speed_unit(&run);
     let mut dead = leave_out_dead_channels(&mut run)?;
     dead.extend(header.slips.iter().map(|s| slip_warning(path, s)));
-    let unchecked = crate::io::unchecked_speed_unit(&run);
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
         Ok(m) => (run, m),
         Err(e) => {
@@ -92,7 +93,7 @@ pub fn run_with_degrees(
     // An `ay` that disagrees with u·r is measured again without it.
     if let Some(w) = m.ay_disagreement() {
         run.ay = None;
-        m = measured_step_metrics(run, min_speed, settings)?;
+        m = measured_step_metrics(run.clone(), min_speed, settings)?;
         dead.push(w);
     }
     if !dead.is_empty() {
@@ -119,9 +120,20 @@ pub fn run_with_degrees(
     ));
     let dt = crate::measured::clean::median_interval(&clock);
     m.warnings.extend(peak_time_said(&m.metrics, dt));
-    m.warnings.extend(filter_speed::filter_measures_itself(
+    // A cutoff suggested is measured through, so that following it is
+    // not warned of again.
+    let response_at = |f: f64| {
+        let at = MetricSettings {
+            filter_hz: Some(f),
+            ..*settings
+        };
+        let m = measured_step_metrics(run.clone(), min_speed, &at).ok()?;
+        Some(m.metrics.yaw_rate_response_time)
+    };
+    m.warnings.extend(filter_speed::filter_measures_itself_with(
         &m.metrics,
-        crate::measured::clean::median_interval(&clock),
+        dt,
+        &response_at,
     ));
     Ok(MeasuredMetricsReport {
         scenario: path.display().to_string(),

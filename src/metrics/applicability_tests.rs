@@ -20,6 +20,7 @@ fn moderate() -> StepMetrics {
         ay_total_variance: Some(0.2),
         er: Some(0.3),
         settled: true,
+        settling: Default::default(),
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: 1.0,
         yaw_rate_filter_ringing: 0.0,

@@ -269,6 +269,11 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         settled: [r_spread, a_spread, b_spread]
             .iter()
             .all(|&spread| spread < super::SETTLED_SPREAD),
+        settling: super::ChannelSettling {
+            yaw_rate: super::Settling::of_spread(r_spread),
+            ay: Some(super::Settling::of_spread(a_spread)),
+            beta: Some(super::Settling::of_spread(b_spread)),
+        },
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: threshold * 100.0,
         // Unfiltered: no ringing of a filter.

@@ -556,6 +556,7 @@ pub fn measured_step_metrics(
     warnings.extend(super::applicability::varying_speed(&speeds, rising));
     warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
     warnings.extend(metrics.settling_warning());
+    warnings.extend(metrics.settling.not_judged_warnings());
     warnings.extend(filled_steady(&piece, settings.steady_window));
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());

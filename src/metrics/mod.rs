@@ -46,7 +46,8 @@
 
 pub use crate::error::MetricsError;
 use serde::{Deserialize, Serialize};
-use settling::{settled, settled_within_noise, sideslip_scale, SETTLED_SPREAD};
+use settling::{sideslip_scale, verdict, SETTLED_SPREAD};
+pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
 
 pub mod applicability;
 pub(crate) mod continuous;
@@ -218,8 +219,12 @@ pub struct StepMetrics {
     /// Er = e1·E_r + e2·E_ay, s (`None` for a run without `ay`).
     pub er: Option<f64>,
     /// Whether yaw rate and ay are steady in the steady window (standard
-    /// deviation below 2 % of the step).
+    /// deviation below 2 % of the step); a channel not judged
+    /// ([`Settling::NotJudged`]) does not unsettle it.
     pub settled: bool,
+    /// The verdict on each channel's steady window.
+    #[serde(default)]
+    pub settling: ChannelSettling,
     /// Noise of the normalised yaw rate in the initial window (after the
     /// filter), as a share of the step.
     pub yaw_rate_noise: f64,
@@ -252,13 +257,17 @@ impl StepMetrics {
     /// The warning of a response that has not settled in the steady window
     /// (`settled` false), for the report's `warnings`: in the typed report,
     /// so that `--json`, `metrics.json` and the terminal say the same.
+    /// Names the channels that have not settled, each with its spread.
     pub fn settling_warning(&self) -> Option<String> {
-        (!self.settled).then(|| {
-            format!(
-                "the response has not settled in the steady window (the yaw rate, lateral acceleration or sideslip spreads by more than {} % of its step beyond its noise; at its grip limit a car can hold its yaw rate and lateral acceleration while its sideslip grows)",
-                crate::error::Num(100.0 * SETTLED_SPREAD)
-            )
-        })
+        match self.settled {
+            true => None,
+            false => self.settling.not_settled_warning().or_else(|| {
+                Some(format!(
+                    "the response has not settled in the steady window (it spreads by more than {} % of its step beyond its noise)",
+                    crate::error::Num(100.0 * SETTLED_SPREAD)
+                ))
+            }),
+        }
     }
 
     /// The yaw-rate noise as the terminal says it, % of the step: two
@@ -505,10 +514,14 @@ pub(crate) fn step_metrics(
         .as_ref()
         .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));
     // The sideslip's spread and noise on the scale of [`sideslip_scale`].
-    let beta_settled = beta_n.flatten().is_none_or(|nb| {
-        let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, d.steady);
-        settled(nb.spread * to_scale, gain * nb.noise * to_scale)
-    });
+    let settling = ChannelSettling {
+        yaw_rate: verdict(&r, r_noise, 1.0),
+        ay: a.as_ref().map(|a| verdict(a, gain * a.noise, 1.0)),
+        beta: beta_n.flatten().map(|nb| {
+            let to_scale = nb.steady.abs() / sideslip_scale(nb.steady, d.steady);
+            verdict(&nb, gain * nb.noise, to_scale)
+        }),
+    };
     let tb = match (peak_time, beta_steady) {
         (Some(tp), Some(b)) => Some(tp * b.abs().to_degrees()),
         _ => None,
@@ -533,10 +546,8 @@ pub(crate) fn step_metrics(
         yaw_rate_total_variance: e_r,
         ay_total_variance: e_ay,
         er: e_ay.map(|e_ay| s.e1 * e_r + s.e2 * e_ay),
-        settled: settled_within_noise(&r, r_noise)
-            && a.as_ref()
-                .is_none_or(|a| settled_within_noise(a, gain * a.noise))
-            && beta_settled,
+        settled: settling.settled(),
+        settling,
         yaw_rate_noise: r_noise,
         yaw_rate_peak_threshold: threshold * 100.0,
         yaw_rate_filter_ringing: ringing * 100.0,

@@ -218,7 +218,8 @@ fn the_wrong_kind_of_file_is_named_as_what_it_is() {
         ("tyre.tir", tir.as_bytes(), "is a .tir tyre file, not a scenario: give it as `[tyres] front = \"<this file>\"` in a scenario"),
         ("tyre.toml", b"model = \"linear\"\ncornering_stiffness = 57296.0\n", "is a tyre file (`model = \"linear\"`), not a scenario: give it as `[tyres] front = \"<this file>\"` in a scenario"),
         ("diagnosis.json", b"{\"verdict\": 1}\n", "is a JSON file (a report `handling` writes: diagnosis.json, metrics.json, gap.json), not a scenario"),
-        ("scenario.toml", b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR", "is not a text file (a NUL byte at byte 8), not a scenario"),
+        // A PNG's first bytes name it (session 81), before its NUL at byte 8.
+        ("scenario.toml", b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR", "is a PNG image, not a scenario: no command reads it"),
     ];
     for (name, bytes, said) in files {
         let path = dir.path().join(name);

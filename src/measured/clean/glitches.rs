@@ -204,7 +204,8 @@ fn spikes(x: &[f64], tt: f64, flagged: &mut [bool], out: &mut Vec<Found>) {
             let (a, b) = (x[i - 1], x[i + 1]);
             let s = (x[i] - a).signum() == (x[i] - b).signum()
                 && (x[i] - a).abs() > 0.5 * tt
-                && (x[i] - b).abs() > 0.5 * tt;
+                && (x[i] - b).abs() > 0.5 * tt
+                && bends_back(x, i);
             (a, b, 0.5 * (a + b), s)
         };
         let r = x[i] - pred;
@@ -217,6 +218,17 @@ fn spikes(x: &[f64], tt: f64, flagged: &mut [bool], out: &mut Vec<Found>) {
             });
         }
     }
+}
+
+/// Whether the neighbours of sample `i` bend back against its own bend:
+/// a one-sample excursion `h` gives second differences `h, −2h, h`
+/// there, while a smooth hump sampled coarsely (a step's sideslip at
+/// 25 Hz) bends one way over all three. True where a side lacks a second
+/// neighbour.
+fn bends_back(x: &[f64], i: usize) -> bool {
+    let bend = |k: usize| x[k - 1] - 2.0 * x[k] + x[k + 1];
+    let own = bend(i);
+    (i < 2 || bend(i - 1) * own < 0.0) && (i + 2 >= x.len() || bend(i + 1) * own < 0.0)
 }
 
 /// A hold that runs to the end of the record (a sensor that stopped

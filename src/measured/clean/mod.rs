@@ -17,8 +17,10 @@
 //!     beyond T, all with one sign;
 //!   - isolated spike: a sample beyond T from the line through its two
 //!     neighbours, on the same side of both, while the neighbours agree with
-//!     each other better than with it (a step has one side only; a peak of a
-//!     smooth signal stays well inside T);
+//!     each other better than with it, and its neighbours bend back
+//!     against its own bend (a step has one side only; a peak of a smooth
+//!     signal stays well inside T, and one sampled coarsely, a step's
+//!     sideslip hump at 25 Hz, bends one way over three samples);
 //!   - stuck value: a value held exactly for at least [`MIN_STUCK`] samples
 //!     where the chance of such a hold, `n·p0^(L−1)` with p0 the channel's
 //!     share of zero differences, is below 1e-3 (a quantised or noise-free

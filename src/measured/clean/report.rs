@@ -152,6 +152,112 @@ fn glitch_line(g: &Glitch) -> String {
     )
 }
 
+/// The most alike items in a row said one by one: from this many on they
+/// are said in one line, with their count and first and last times.
+const SAID_ONE_BY_ONE: usize = 2;
+
+/// The lines of `items`, each with the count of items it says: a row of
+/// more than [`SAID_ONE_BY_ONE`] items alike by `key` in one line (`many`),
+/// the others one by one (`one`).
+fn said_in_rows<T, K: PartialEq>(
+    items: &[T],
+    key: impl Fn(&T) -> K,
+    one: impl Fn(&T) -> String,
+    many: impl Fn(&[T]) -> String,
+) -> Vec<(String, usize)> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for i in 1..=items.len() {
+        if i < items.len() && key(&items[i]) == key(&items[start]) {
+            continue;
+        }
+        let row = &items[start..i];
+        match row.len() > SAID_ONE_BY_ONE {
+            true => out.push((many(row), row.len())),
+            false => out.extend(row.iter().map(|g| (one(g), 1))),
+        }
+        start = i;
+    }
+    out
+}
+
+/// Alike glitches in a row (one run, kind, channel and treatment) in one
+/// line: their count, the first and the last.
+fn glitches_line(row: &[Glitch]) -> String {
+    let (g, last) = (&row[0], &row[row.len() - 1]);
+    if g.kind == GlitchKind::TimeGap {
+        let (lo, hi) = row.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), g| {
+            (lo.min(g.value), hi.max(g.value))
+        });
+        let (lo, hi) = (short(lo), short(hi));
+        let length = match hi == lo {
+            true => lo,
+            false => format!("{lo}–{hi}"),
+        };
+        return format!(
+            "{} in {}: {} time gaps of {} s, the first t {:.3} → {:.3} s, the last t {:.3} → {:.3} s (every one in the JSON report), {}",
+            g.kind.name(),
+            g.run,
+            row.len(),
+            length,
+            g.t,
+            g.t + g.value,
+            last.t,
+            last.t + last.value,
+            g.treatment.name()
+        );
+    }
+    let samples: usize = row.iter().map(|g| g.samples).sum();
+    format!(
+        "{} in {}: {} {} times, the first at {:.3} s ({}), the last at {:.3} s ({}) ({}, {})",
+        g.kind.name(),
+        g.run,
+        g.channel.name(),
+        row.len(),
+        g.t,
+        short(g.value),
+        last.t,
+        short(last.value),
+        plural(samples, "sample", "samples"),
+        g.treatment.name()
+    )
+}
+
+/// A slow span as the terminal says it.
+fn slow_line(s: &SlowSpan, min_speed: f64) -> String {
+    format!(
+        "{} {:.2}–{:.2} s in {} ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
+        s.kind.name(),
+        s.t_start,
+        s.t_end,
+        s.run,
+        plural(s.samples, "sample", "samples"),
+        // Truncated: a span below 5 m/s must not read "at most 5.00".
+        (s.max_speed * 100.0).floor() / 100.0,
+        crate::format::rounded(min_speed, 4)
+    )
+}
+
+/// Alike slow spans in a row (one run and kind) in one line.
+fn slows_line(row: &[SlowSpan], min_speed: f64) -> String {
+    let (s, last) = (&row[0], &row[row.len() - 1]);
+    let samples: usize = row.iter().map(|s| s.samples).sum();
+    let top = row.iter().fold(0.0_f64, |m, s| m.max(s.max_speed));
+    format!(
+        "{} in {}: {} spans, the first {:.2}–{:.2} s, the last {:.2}–{:.2} s ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
+        s.kind.name(),
+        s.run,
+        row.len(),
+        s.t_start,
+        s.t_end,
+        last.t_start,
+        last.t_end,
+        plural(samples, "sample", "samples"),
+        (top * 100.0).floor() / 100.0,
+        crate::format::rounded(min_speed, 4)
+    )
+}
+
 /// What was done about a glitch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -370,30 +476,28 @@ impl CleaningReport {
                 plural(h.samples, "held sample", "held samples")
             ));
         }
-        out.extend(self.glitches.iter().take(first).map(glitch_line));
-        if self.glitches.len() > first {
+        // Alike glitches in a row (a 10 Hz standstill logged before 100 Hz
+        // driving: a time gap at every sample) are said in one line each.
+        let key = |g: &Glitch| (g.run.clone(), g.kind, g.channel, g.treatment);
+        let glitches = said_in_rows(&self.glitches, key, glitch_line, glitches_line);
+        out.extend(glitches.iter().take(first).map(|(l, _)| l.clone()));
+        let more: usize = glitches.iter().skip(first).map(|(_, n)| n).sum();
+        if more > 0 {
             out.push(format!(
                 "… and {} more (every one in the JSON report)",
-                plural(self.glitches.len() - first, "glitch", "glitches")
+                plural(more, "glitch", "glitches")
             ));
         }
-        for s in self.slow.iter().take(first) {
-            out.push(format!(
-                "{} {:.2}–{:.2} s in {} ({}, at most {:.2} m/s, below min_speed = {} m/s) excluded",
-                s.kind.name(),
-                s.t_start,
-                s.t_end,
-                s.run,
-                plural(s.samples, "sample", "samples"),
-                // Truncated: a span below 5 m/s must not read "at most 5.00".
-                (s.max_speed * 100.0).floor() / 100.0,
-                crate::format::rounded(self.min_speed, 4)
-            ));
-        }
-        if self.slow.len() > first {
+        let slow_line = |s: &SlowSpan| slow_line(s, self.min_speed);
+        let slows_line = |r: &[SlowSpan]| slows_line(r, self.min_speed);
+        let key = |s: &SlowSpan| (s.run.clone(), s.kind);
+        let slow = said_in_rows(&self.slow, key, slow_line, slows_line);
+        out.extend(slow.iter().take(first).map(|(l, _)| l.clone()));
+        let more: usize = slow.iter().skip(first).map(|(_, n)| n).sum();
+        if more > 0 {
             out.push(format!(
                 "… and {} more",
-                plural(self.slow.len() - first, "slow span", "slow spans")
+                plural(more, "slow span", "slow spans")
             ));
         }
         for p in self.dropped_pieces.iter().take(first) {

@@ -347,7 +347,7 @@ pub enum InputProblem {
     #[error("a pressure was requested but the file has no `pressure` column")]
     NoPressureColumn,
     /// A camber other than 0 requested from a file without cambers.
-    #[error("camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0)", camber.to_degrees())]
+    #[error("camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0){}", camber.to_degrees(), super::level_slip::no_column_slip(super::rig::Variable::Camber, *camber))]
     NoCamberColumn {
         /// The requested camber, rad.
         camber: f64,

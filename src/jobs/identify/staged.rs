@@ -243,6 +243,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         Some(g) => super::ranges::widened_to_reached_levels(spans, &g.levels),
         None => spans,
     };
+    let spans = super::ranges::widened_to_sample_slips(spans, &data);
     let template_tyre = template_tyre.map(|mut t| {
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t

@@ -263,7 +263,7 @@ pub enum InputProblem {
     PointsAsTyre,
     /// A load a Magic Formula file's vertical model carries at no loaded
     /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
-    #[error("fz = {} N is more than the tyre's vertical model carries: {} N at a deflection of its whole free radius ({} m), so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), significant(*most, 4), significant(*free, 4))]
+    #[error("fz = {} N is more than the tyre's vertical model carries: {}, so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), super::carried::at_most(*most, *free))]
     LoadNotCarried {
         /// The load, N.
         fz: f64,

@@ -162,7 +162,11 @@ pub(crate) fn not_a_tyre(path: &Path, points: &[&str]) -> Option<InputError> {
     };
     match &kind {
         FileKind::Tir | FileKind::TyreToml { .. } => None,
-        FileKind::RigCsv | FileKind::Csv { .. } if first_line(path).is_some_and(|f| is_points(&f)) => None,
+        FileKind::RigCsv | FileKind::Csv { .. }
+            if first_line(path).is_some_and(|f| is_points(&f)) =>
+        {
+            None
+        }
         _ => Some(refusal(path, kind, Wanted::TyreFile)),
     }
 }

@@ -7,9 +7,9 @@
 
 use super::{on_data, ranges, Options, SwarmReport};
 use crate::error::Error;
+use crate::identify::data::RigData;
 use crate::identify::grouping::{group, Grouping, SlipAxis};
 use crate::identify::{fit_channel_holding, Channel, FitSettings};
-use crate::identify::data::RigData;
 
 /// What the later channels are fitted from.
 pub(super) struct Inputs<'a> {

@@ -31,6 +31,7 @@ mod written;
 use outputs::{output_lock, outputs};
 mod figures;
 mod flat_alpha;
+mod force_scale;
 mod further;
 mod holds;
 pub use holds::Held;
@@ -243,6 +244,9 @@ pub struct SwarmReport {
     pub flat_alpha: Option<String>,
     /// The rows of combined slip left out, and the slip ratios reached.
     pub set_aside: crate::identify::pure::SetAside,
+    /// The rig's forces far too small for their loads (`force_scale.rs`).
+    #[serde(skip)]
+    pub small_forces: Vec<String>,
     /// The extremes of the samples' slip angle and slip ratio fitted.
     #[serde(skip)]
     pub sample_slips: [Option<(f64, f64)>; 2],
@@ -372,7 +376,10 @@ pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
 }
 
 /// A failure of a fit to the data of `o`, of `channel` where named.
-pub(super) fn on_data<'a>(o: &'a Options, channel: Option<&'static str>) -> impl Fn(Error) -> Error + 'a {
+pub(super) fn on_data<'a>(
+    o: &'a Options,
+    channel: Option<&'static str>,
+) -> impl Fn(Error) -> Error + 'a {
     move |e| FitError::in_data(&o.data, channel, e).into()
 }
 
@@ -506,6 +513,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         notes: Vec::new(),
         flat_alpha,
         set_aside,
+        small_forces: force_scale::small_forces(&data),
         sample_slips: [None; 2],
         grouping: grouped.report,
         longitudinal_grouping: None,

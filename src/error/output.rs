@@ -193,21 +193,27 @@ impl OutputError {
     }
 
     /// Refuses a file `path` to be written as `extension` whose name has
-    /// another extension (none is taken as the user's choice); `stem`
-    /// says what it holds.
+    /// the extension of another format the tool reads or writes (`.tir`,
+    /// `.toml`, `.json`, `.png`, `.svg`: a CSV under it would be taken for
+    /// one); another name (`forces.out`, none) is the user's choice.
+    /// `stem` says what it holds.
     pub fn unless_extension(
         path: &std::path::Path,
         stem: &'static str,
         extension: &'static str,
     ) -> Result<(), OutputError> {
+        const OTHER_FORMATS: [&str; 5] = ["tir", "toml", "json", "png", "svg"];
         let given = path.extension().map(|e| e.to_string_lossy().to_string());
+        let other = |g: &str| OTHER_FORMATS.iter().any(|f| g.eq_ignore_ascii_case(f));
         match given {
-            Some(g) if !g.eq_ignore_ascii_case(extension) => Err(OutputError::NotOfExtension {
-                path: path.to_path_buf(),
-                stem,
-                extension,
-                given: g,
-            }),
+            Some(g) if other(&g) && !g.eq_ignore_ascii_case(extension) => {
+                Err(OutputError::NotOfExtension {
+                    path: path.to_path_buf(),
+                    stem,
+                    extension,
+                    given: g,
+                })
+            }
             _ => Ok(()),
         }
     }

@@ -172,15 +172,18 @@ pub(crate) fn not_a_tyre(path: &Path, points: &[&str]) -> Option<InputError> {
 }
 
 /// The refusal of a tyre rig file given as `tyre-eval`'s points that lacks
-/// some of their columns `points` (a rig's `fy` is no input, its missing
-/// `speed` no slip): said as a rig file, which `identify` reads.
+/// some of their columns `points` and has a measured force (`fy`, `fx`,
+/// `mz`, which points do not need): said as a rig file, which `identify`
+/// reads. A points file with a column misspelt keeps its column errors.
 pub(crate) fn rig_as_points(path: &Path, points: &[&str]) -> Option<InputError> {
     if recognise(path)? != FileKind::RigCsv {
         return None;
     }
     let columns = header_columns(&first_line(path)?);
-    let lacking = points.iter().any(|c| !columns.iter().any(|x| x == c));
-    lacking.then(|| refusal(path, FileKind::RigCsv, Wanted::Points))
+    let has = |c: &str| columns.iter().any(|x| x == c);
+    let lacking = points.iter().any(|c| !has(c));
+    let measured = ["fy", "fx", "mz"].iter().any(|c| has(c));
+    (lacking && measured).then(|| refusal(path, FileKind::RigCsv, Wanted::Points))
 }
 
 /// The first line of the file at `path` that is neither blank nor a

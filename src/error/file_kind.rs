@@ -107,6 +107,10 @@ pub enum Wanted {
     /// Tyre data (`identify`'s rig data, a campaign's rig, `tyre-eval`'s
     /// points).
     Tyre,
+    /// A tyre file (`tyre-eval`'s tyre, a `.tir` or a TOML tyre).
+    TyreFile,
+    /// `tyre-eval`'s points (`fz`, `kappa`, `alpha`, `camber`, `speed`).
+    Points,
 }
 
 impl Wanted {
@@ -114,6 +118,8 @@ impl Wanted {
         match self {
             Wanted::Run => "a vehicle run (a CSV with `t`, `speed`, `steer`, `yaw_rate`)",
             Wanted::Tyre => "tyre data (a CSV with `fz` and `alpha` or `kappa`)",
+            Wanted::TyreFile => "a tyre file (a .tir, or a TOML file with `model = \"…\"`, which `handling identify` writes), which `handling tyre-eval <tyre> <points>` takes first",
+            Wanted::Points => "the points `handling tyre-eval <tyre> <points>` evaluates (a CSV with `fz`, `kappa`, `alpha`, `camber`, `speed`)",
         }
     }
 }

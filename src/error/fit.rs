@@ -69,8 +69,15 @@ pub enum FitError {
     },
     /// No stage of a staged identification had the rows it needs; each
     /// stage's reason.
-    #[error("no stage could be fitted ({})", joined(.0))]
-    NoStageFitted(Vec<StageSkip>),
+    #[error("no stage could be fitted ({}){}", joined(skips), combined_set_aside(*rows, *combined))]
+    NoStageFitted {
+        /// Each stage's reason.
+        skips: Vec<StageSkip>,
+        /// The rows of the file.
+        rows: usize,
+        /// Those of combined slip (both |κ| and |α| above 1e-3).
+        combined: usize,
+    },
     /// A written tyre file that does not reproduce the fitted forces.
     #[error("the written .tir does not reproduce the fitted forces (relative difference {difference:.2e})")]
     RoundTrip {
@@ -272,6 +279,19 @@ pub enum DiagnosisError {
 }
 
 /// `a; b; c`.
+/// The rows of combined slip a fit with no stage set aside, counted: the
+/// combined stages build on the pure ones, which have no rows of them.
+fn combined_set_aside(rows: usize, combined: usize) -> String {
+    match combined {
+        0 => String::new(),
+        n => format!(
+            ": {n} of its {} {} of combined slip (both |κ| and |α| above 1e-3), set aside for the combined stages, which build on the pure ones; give rows at κ = 0 (a cornering sweep) or α = 0 (a braking or driving sweep) for those",
+            plural(rows, "row", "rows"),
+            if n == 1 { "is" } else { "are" }
+        ),
+    }
+}
+
 fn joined(skips: &[StageSkip]) -> String {
     skips
         .iter()

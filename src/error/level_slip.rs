@@ -74,3 +74,17 @@ pub(super) fn unit_slip(variable: Variable, requested: f64, slip: &Option<LevelS
         s.unit,
     )
 }
+
+/// The question whether a request of `variable` for a file without its
+/// column was written in another unit, where the request is no tyre
+/// test's in the option's (`--camber 2`, 114.59°): the hint a request
+/// between a file's levels gets, naming no level (the file has none).
+pub(super) fn no_column_slip(variable: Variable, requested: f64) -> String {
+    let (unit, factor) = unit_slips(variable)[0];
+    let slip = variable.implausible(requested).then_some(LevelSlip {
+        meant: requested * factor,
+        unit,
+        level: None,
+    });
+    unit_slip(variable, requested, &slip)
+}

@@ -8,6 +8,7 @@
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
 mod campaign_file;
+mod carried;
 mod duplicate;
 mod effect_limit;
 mod file_kind;

@@ -60,6 +60,19 @@ pub enum OutputError {
         /// The extension the file takes.
         extension: &'static str,
     },
+    /// A file to write named with another format's extension than the
+    /// one it is written in (`tyre-eval --out forces.tir`, a CSV).
+    #[error("{}: {stem} are written as a .{extension} file, not .{given} (a .{extension} text under this name would not read back as a .{given}); name it {}", path.display(), path.with_extension(extension).display())]
+    NotOfExtension {
+        /// The output.
+        path: PathBuf,
+        /// What the file holds (`tyre-eval's forces`).
+        stem: &'static str,
+        /// The extension the file takes.
+        extension: &'static str,
+        /// The extension given.
+        given: String,
+    },
     /// A file named with another format's extension.
     #[error("{}: the {model} model is written as a .{expected} file, not .{given} (a .{expected} text under this name would not read back)", path.display())]
     Extension {
@@ -179,6 +192,32 @@ impl OutputError {
         }
     }
 
+    /// Refuses a file `path` to be written as `extension` whose name has
+    /// the extension of another format the tool reads or writes (`.tir`,
+    /// `.toml`, `.json`, `.png`, `.svg`: a CSV under it would be taken for
+    /// one); another name (`forces.out`, none) is the user's choice.
+    /// `stem` says what it holds.
+    pub fn unless_extension(
+        path: &std::path::Path,
+        stem: &'static str,
+        extension: &'static str,
+    ) -> Result<(), OutputError> {
+        const OTHER_FORMATS: [&str; 5] = ["tir", "toml", "json", "png", "svg"];
+        let given = path.extension().map(|e| e.to_string_lossy().to_string());
+        let other = |g: &str| OTHER_FORMATS.iter().any(|f| g.eq_ignore_ascii_case(f));
+        match given {
+            Some(g) if other(&g) && !g.eq_ignore_ascii_case(extension) => {
+                Err(OutputError::NotOfExtension {
+                    path: path.to_path_buf(),
+                    stem,
+                    extension,
+                    given: g,
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+
     /// The output.
     pub fn path(&self) -> &std::path::Path {
         match self {
@@ -187,6 +226,7 @@ impl OutputError {
             | OutputError::NotAFolder { path, .. }
             | OutputError::IsAFolder { path, .. }
             | OutputError::Extension { path, .. }
+            | OutputError::NotOfExtension { path, .. }
             | OutputError::Io { path, .. }
             | OutputError::Encode { path, .. }
             | OutputError::Tyre { path, .. }

@@ -263,7 +263,7 @@ pub enum InputProblem {
     PointsAsTyre,
     /// A load a Magic Formula file's vertical model carries at no loaded
     /// radius above 0 (the limit checks off, or beyond the file's FZMAX).
-    #[error("fz = {} N is more than the tyre's vertical model carries: {} N at a deflection of its whole free radius ({} m), so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), significant(*most, 4), significant(*free, 4))]
+    #[error("fz = {} N is more than the tyre's vertical model carries: {}, so no loaded radius `rl` is physical there (the limit checks, mode 1xx, hold the load at the file's FZMAX)", Num(*fz), super::carried::at_most(*most, *free))]
     LoadNotCarried {
         /// The load, N.
         fz: f64,
@@ -347,7 +347,7 @@ pub enum InputProblem {
     #[error("a pressure was requested but the file has no `pressure` column")]
     NoPressureColumn,
     /// A camber other than 0 requested from a file without cambers.
-    #[error("camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0)", camber.to_degrees())]
+    #[error("camber {:.2}° was requested but the file has no `camber` column (its samples are at camber 0){}", camber.to_degrees(), super::level_slip::no_column_slip(super::rig::Variable::Camber, *camber))]
     NoCamberColumn {
         /// The requested camber, rad.
         camber: f64,

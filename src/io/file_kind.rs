@@ -127,12 +127,19 @@ pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
     if fits {
         return None;
     }
+    Some(refusal(path, kind, wanted))
+}
+
+/// The refusal of the file at `path`, of `kind`, where `wanted` was
+/// wanted: the kind and its command, with a CSV's header.
+fn refusal(path: &Path, kind: FileKind, wanted: Wanted) -> InputError {
     let columns = match kind {
         FileKind::RunCsv | FileKind::HistoryCsv | FileKind::RigCsv => {
-            let text = std::fs::read_to_string(path).ok()?;
+            let text = std::fs::read_to_string(path).unwrap_or_default();
             let first = text
                 .lines()
-                .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))?;
+                .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+                .unwrap_or("");
             first.split(',').map(|c| c.trim().to_string()).collect()
         }
         _ => Vec::new(),
@@ -142,8 +149,52 @@ pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
         wanted,
         columns,
     };
-    Some(InputError::problem(
-        path,
-        InputProblem::Kind(Box::new(problem)),
-    ))
+    InputError::problem(path, InputProblem::Kind(Box::new(problem)))
+}
+
+/// The refusal of the file or folder at `path` given as a tyre file
+/// (`tyre-eval`'s tyre) where it is plainly of another kind (a scenario,
+/// a campaign, a study, a history, a run, a folder); `None` where it may
+/// be a tyre file, or is a CSV of `tyre-eval`'s points (`points`: the
+/// arguments' order is then the likelier slip, said by the caller).
+pub(crate) fn not_a_tyre(path: &Path, points: &[&str]) -> Option<InputError> {
+    let kind = recognise(path)?;
+    let is_points = |first: &str| {
+        let columns = header_columns(first);
+        points.iter().all(|c| columns.iter().any(|x| x == c))
+    };
+    match &kind {
+        FileKind::Tir | FileKind::TyreToml { .. } => None,
+        FileKind::RigCsv | FileKind::Csv { .. }
+            if first_line(path).is_some_and(|f| is_points(&f)) =>
+        {
+            None
+        }
+        _ => Some(refusal(path, kind, Wanted::TyreFile)),
+    }
+}
+
+/// The refusal of a tyre rig file given as `tyre-eval`'s points that lacks
+/// some of their columns `points` and has a measured force (`fy`, `fx`,
+/// `mz`, which points do not need): said as a rig file, which `identify`
+/// reads. A points file with a column misspelt keeps its column errors.
+pub(crate) fn rig_as_points(path: &Path, points: &[&str]) -> Option<InputError> {
+    if recognise(path)? != FileKind::RigCsv {
+        return None;
+    }
+    let columns = header_columns(&first_line(path)?);
+    let has = |c: &str| columns.iter().any(|x| x == c);
+    let lacking = points.iter().any(|c| !has(c));
+    let measured = ["fy", "fx", "mz"].iter().any(|c| has(c));
+    (lacking && measured).then(|| refusal(path, FileKind::RigCsv, Wanted::Points))
+}
+
+/// The first line of the file at `path` that is neither blank nor a
+/// comment.
+fn first_line(path: &Path) -> Option<String> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let first = text
+        .lines()
+        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))?;
+    Some(first.to_string())
 }

@@ -486,7 +486,15 @@ pub fn identify_with(
                 })
             })
             .collect();
-        return Err(FitError::NoStageFitted(why));
+        let combined = rows
+            .iter()
+            .filter(|r| r.kappa.abs() > 1e-3 && r.alpha.abs() > 1e-3)
+            .count();
+        return Err(FitError::NoStageFitted {
+            skips: why,
+            rows: rows.len(),
+            combined,
+        });
     }
     // Report the sign-blind coefficients in one conventional sign.
     let c = &mut tyre.coefficients;

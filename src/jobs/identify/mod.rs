@@ -31,6 +31,8 @@ mod written;
 use outputs::{output_lock, outputs};
 mod figures;
 mod flat_alpha;
+mod force_scale;
+mod further;
 mod holds;
 pub use holds::Held;
 use holds::{held_by_fits, holds_of};
@@ -242,6 +244,9 @@ pub struct SwarmReport {
     pub flat_alpha: Option<String>,
     /// The rows of combined slip left out, and the slip ratios reached.
     pub set_aside: crate::identify::pure::SetAside,
+    /// The rig's forces far too small for their loads (`force_scale.rs`).
+    #[serde(skip)]
+    pub small_forces: Vec<String>,
     /// The extremes of the samples' slip angle and slip ratio fitted.
     #[serde(skip)]
     pub sample_slips: [Option<(f64, f64)>; 2],
@@ -371,7 +376,10 @@ pub fn run(o: &Options) -> Result<IdentifyReport, Error> {
 }
 
 /// A failure of a fit to the data of `o`, of `channel` where named.
-fn on_data<'a>(o: &'a Options, channel: Option<&'static str>) -> impl Fn(Error) -> Error + 'a {
+pub(super) fn on_data<'a>(
+    o: &'a Options,
+    channel: Option<&'static str>,
+) -> impl Fn(Error) -> Error + 'a {
     move |e| FitError::in_data(&o.data, channel, e).into()
 }
 
@@ -505,6 +513,7 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
         notes: Vec::new(),
         flat_alpha,
         set_aside,
+        small_forces: force_scale::small_forces(&data),
         sample_slips: [None; 2],
         grouping: grouped.report,
         longitudinal_grouping: None,
@@ -530,41 +539,17 @@ fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
     if let Tyre::Pac89(_) = r.tyre {
         curvature_hold::hold_curvature(o, &mut r, &tyre0, &settings)?;
     }
-    // The aligning moment, where the data have it and the model has one,
-    // with the lateral parameters just fitted held.
-    if first == Channel::LateralForce && data.mz.is_some() && !r.tyre.aligning_names().is_empty() {
-        let mz = fit_channel_holding(
-            &r.tyre,
-            Channel::AligningMoment,
-            &r.conditions,
-            &settings,
-            &o.hold,
-        )
-        .map_err(on_data(o, Some("aligning moment")))?;
-        r.tyre = mz.tyre.clone();
-        r.aligning = Some(mz);
-    }
-    // The longitudinal force, where the data have it and the model has one,
-    // with the same pressure and camber selection as the lateral data.
-    if let (Some(view), true, Channel::LateralForce) =
-        (&long_view, !r.tyre.longitudinal_names().is_empty(), first)
-    {
-        let g = group(&o.data, view, &grouping, SlipAxis::Ratio)?;
-        let fx = fit_channel_holding(
-            &r.tyre,
-            Channel::LongitudinalForce,
-            &g.conditions,
-            &settings,
-            &o.hold,
-        )
-        .map_err(on_data(o, Some("longitudinal force")))?;
-        r.tyre = fx.tyre.clone();
-        r.longitudinal = Some(fx);
-        let (levels, inf) = (&g.report.levels, f64::INFINITY);
-        r.sample_slips[1] = ranges::sample_slips(view, SlipAxis::Ratio, levels, &g.conditions, inf);
-        r.longitudinal_conditions = g.conditions;
-        r.longitudinal_grouping = Some(g.report);
-    }
+    further::aligning_and_longitudinal(
+        o,
+        &mut r,
+        further::Inputs {
+            first,
+            has_mz: data.mz.is_some(),
+            long_view: long_view.as_ref(),
+            grouping: &grouping,
+            settings: &settings,
+        },
+    )?;
     if let Some(w) = r.linear_window.as_mut() {
         w.pneumatic_trail = linear_window::trail(&r.conditions);
         linear_window::set_trail(&mut r.tyre, w.pneumatic_trail.unwrap_or(0.0));

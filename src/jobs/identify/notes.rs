@@ -366,9 +366,10 @@ impl SwarmReport {
         // then the rows of combined slip.
         let combined = self.set_aside.combined_line(&o.model.to_string());
         let flat = self
-            .flat_alpha
+            .small_forces
             .iter()
             .cloned()
+            .chain(self.flat_alpha.iter().cloned())
             .chain(combined)
             .chain(coverage_warning(self))
             .chain(block_coverage_warnings(self));

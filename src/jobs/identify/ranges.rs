@@ -173,12 +173,20 @@ pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
         .chain(&r.longitudinal_grouping)
         .flat_map(|g| &g.levels)
         .collect();
-    let mut spans = widened_to_levels(condition_spans(&conditions), &levels, &conditions);
-    // The slips as the samples reached them, not as their bins' means.
+    let spans = widened_to_levels(condition_spans(&conditions), &levels, &conditions);
+    widened_to_slips(spans, r.sample_slips)
+}
+
+/// `spans` with their slip angle and slip ratio widened to `reached`
+/// (`[alpha, kappa]`, the samples' extremes): the slips as the samples
+/// reached them, not as their bins' means — one rule for the swarm fits and
+/// the staged Magic Formula fit, so that `pac89` and `mf61` state the same
+/// range of one file.
+fn widened_to_slips(mut spans: Vec<Span>, reached: [Option<(f64, f64)>; 2]) -> Vec<Span> {
     for s in &mut spans {
         let reached = match s.name {
-            "alpha" => r.sample_slips[0],
-            "kappa" => r.sample_slips[1],
+            "alpha" => reached[0],
+            "kappa" => reached[1],
             _ => None,
         };
         if let Some((lo, hi)) = reached {
@@ -186,6 +194,30 @@ pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
         }
     }
     spans
+}
+
+/// `spans` of the staged fit's rows (means over slip-angle bins) with their
+/// slips widened to those of the samples of `d` inside the spans' load,
+/// camber and pressure ([`slip_extremes`]): the Hoosier file's samples
+/// reach 0.17026 rad where its bins' means reach 0.16956, and a `.tir`
+/// whose `ALPMAX` is the latter saturates its own rig's extreme samples.
+pub(crate) fn widened_to_sample_slips(spans: Vec<Span>, d: &RigData) -> Vec<Span> {
+    let inside = |name: &str, v: f64| {
+        spans
+            .iter()
+            .find(|s| s.name == name)
+            .is_none_or(|s| (s.lo..=s.hi).contains(&v))
+    };
+    let keep = |i: usize| {
+        inside("fz", d.fz[i])
+            && inside("camber", d.camber[i])
+            && d.pressure.as_ref().is_none_or(|p| inside("pressure", p[i]))
+    };
+    let reached = [
+        slip_extremes(d, SlipAxis::Angle, f64::INFINITY, &keep),
+        slip_extremes(d, SlipAxis::Ratio, f64::INFINITY, &keep),
+    ];
+    widened_to_slips(spans, reached)
 }
 
 /// Sets the slips the samples `d` of `r`'s first fit reach
@@ -216,10 +248,6 @@ pub(crate) fn sample_slips(
     conditions: &[Condition],
     max_abs: f64,
 ) -> Option<(f64, f64)> {
-    let (slip, force) = match axis {
-        SlipAxis::Angle => (&d.alpha, &d.fy),
-        SlipAxis::Ratio => d.longitudinal.as_ref().map(|(k, f)| (k, f))?,
-    };
     let used = |variable: Variable, v: f64, of: fn(&Condition) -> Option<f64>| {
         levels
             .iter()
@@ -233,13 +261,29 @@ pub(crate) fn sample_slips(
             .as_ref()
             .is_none_or(|p| used(Variable::Pressure, p[i], |c| c.pressure))
     };
-    let within = (0..d.len()).filter(|&i| {
-        force[i].is_finite()
-            && slip[i].abs() <= max_abs
-            && used(Variable::Load, d.fz[i], |c| Some(c.fz))
+    let keep = |i: usize| {
+        used(Variable::Load, d.fz[i], |c| Some(c.fz))
             && used(Variable::Camber, d.camber[i], |c| Some(c.camber))
             && pressure_used(i)
-    });
+    };
+    slip_extremes(d, axis, max_abs, &keep)
+}
+
+/// The smallest and largest slip along `axis` of the samples of `d` with
+/// a measured force, within `max_abs` of zero, that `keep` keeps (by
+/// index): the range the data cover, shared by every fit's stated ranges.
+fn slip_extremes(
+    d: &RigData,
+    axis: SlipAxis,
+    max_abs: f64,
+    keep: &dyn Fn(usize) -> bool,
+) -> Option<(f64, f64)> {
+    let (slip, force) = match axis {
+        SlipAxis::Angle => (&d.alpha, &d.fy),
+        SlipAxis::Ratio => d.longitudinal.as_ref().map(|(k, f)| (k, f))?,
+    };
+    let within =
+        (0..d.len()).filter(|&i| force[i].is_finite() && slip[i].abs() <= max_abs && keep(i));
     Span::of("slip", "", within.map(|i| slip[i])).map(|s| (s.lo, s.hi))
 }
 

@@ -243,6 +243,7 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         Some(g) => super::ranges::widened_to_reached_levels(spans, &g.levels),
         None => spans,
     };
+    let spans = super::ranges::widened_to_sample_slips(spans, &data);
     let template_tyre = template_tyre.map(|mut t| {
         t.limits = super::ranges::mf_limits(&spans, t.side, t.limits);
         t
@@ -297,7 +298,8 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     }
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
-    let unfitted = unfitted_blocks(&id.report, o.template.is_some(), &written);
+    let combined = prepared.rows.iter().filter(|r| is_combined(r)).count();
+    let unfitted = unfitted_blocks(&id.report, o.template.is_some(), &written, combined);
     let named = prepared
         .account
         .thinning
@@ -389,6 +391,7 @@ pub(super) fn unfitted_blocks(
     report: &StagedReport,
     template: bool,
     t: &MagicFormula,
+    combined_rows: usize,
 ) -> Vec<String> {
     use crate::jobs::tyre_eval::Output;
     use mf_staged::Stage;
@@ -447,7 +450,7 @@ pub(super) fn unfitted_blocks(
                 "no {data} data: the {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
             ))
         })
-        .chain(combined_unfitted(report, from, t))
+        .chain(combined_unfitted(report, from, t, combined_rows))
         .collect()
 }
 
@@ -458,7 +461,12 @@ pub(super) fn unfitted_blocks(
 /// against 0): the defaults' `RBX1 = RBY1 = 0` leave each force as its
 /// pure one, which reads as a tyre that loses no grip under combined
 /// slip unless it is said.
-fn combined_unfitted(report: &StagedReport, from: &str, t: &MagicFormula) -> Vec<String> {
+fn combined_unfitted(
+    report: &StagedReport,
+    from: &str,
+    t: &MagicFormula,
+    combined_rows: usize,
+) -> Vec<String> {
     use mf_staged::Stage;
     let fz = t.coefficients.FNOMIN;
     let tyre = crate::tyre::Tyre::MagicFormula(Box::new(t.clone()));
@@ -503,11 +511,25 @@ fn combined_unfitted(report: &StagedReport, from: &str, t: &MagicFormula) -> Vec
                 let short = block.split(" (").next().unwrap_or(block);
                 format!("the written file's {short} under combined slip is theirs, not these data's")
             };
+            // A file with combined rows is not said to have none (its
+            // stage skipped for the pure stage it builds on).
+            let heading = match (why, combined_rows) {
+                (crate::error::SkipReason::BuildsOnSkipped { .. }, n) if n > 0 => {
+                    format!("{} without the pure stage", plural(n, "combined-slip row", "combined-slip rows"))
+                }
+                _ => "no combined-slip data".to_string(),
+            };
             Some(format!(
-                "no combined-slip data: the combined {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
+                "{heading}: the combined {block} block is not fitted ({why}): its coefficients are {from}; {gives}"
             ))
         })
         .collect()
+}
+
+/// A row of combined slip: both |κ| and |α| above 1e-3, as the combined
+/// stages take them.
+fn is_combined(r: &mf_staged::MfRow) -> bool {
+    r.kappa.abs() > 1e-3 && r.alpha.abs() > 1e-3
 }
 
 /// The names given with `--hold`: a given value is set before the stages

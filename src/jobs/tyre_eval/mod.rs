@@ -62,6 +62,7 @@ mod ranges;
 mod slip_ratio;
 mod standstill;
 mod stiffness;
+mod unfitted_lateral;
 mod unread;
 mod zero_slip;
 
@@ -161,6 +162,9 @@ pub struct TyreEvalReport {
     /// The points beyond those ranges, evaluated by extrapolation, range
     /// by range (`fitted.rs`).
     pub beyond_fitted: fitted::BeyondFitted,
+    /// Points given a lateral force by a tyre fitted to longitudinal data
+    /// only (`unfitted_lateral.rs`).
+    pub unfitted_lateral: Option<unfitted_lateral::UnfittedLateral>,
     /// A `.tir`'s longitudinal slip stiffness negative inside its own
     /// load range, found when the file is read, whatever the points.
     #[serde(skip)]
@@ -308,6 +312,7 @@ pub fn run(
 ) -> Result<TyreEvalReport, Error> {
     refuse_overwrite(out, &[tyre_path.to_path_buf(), points.to_path_buf()])?;
     crate::error::OutputError::unless_a_file(out, "forces", "csv")?;
+    crate::error::OutputError::unless_extension(out, "tyre-eval's forces", "csv")?;
     order::refuse_points_as_tyre(tyre_path)?;
     let (mut tyre, fitted_ranges) = load_tyre_with_ranges(tyre_path)?;
     if let Some(code) = mode {
@@ -345,6 +350,8 @@ pub fn run(
     let beyond_fitted = fitted_ranges.as_ref().map_or_else(Default::default, |r| {
         fitted::beyond(r, [fz, kappa, alpha, camber], &p, &file.lines)
     });
+    let unfitted_lateral =
+        unfitted_lateral::unfitted_lateral(fitted_ranges.as_ref(), alpha, camber, &file.lines);
     let zero_outputs = checks::zero_outputs(&tyre, &given, &f, &unread);
     let opposed = opposed::opposed(&tyre, fitted_ranges.as_ref(), &given, &f, &file.lines);
     let beyond_my_speed = checks::beyond_my_speed(&tyre, &given);
@@ -433,6 +440,7 @@ pub fn run(
         opposed,
         fitted_ranges,
         beyond_fitted,
+        unfitted_lateral,
         columns,
         out: out.to_path_buf(),
     })
@@ -443,6 +451,7 @@ impl TyreEvalReport {
     /// not read, and the points beyond the ranges the tyre was fitted to.
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
+        out.extend(self.unfitted_lateral.iter().map(|u| u.line(self.count)));
         out.extend(self.peak_friction.iter().map(|p| p.to_string()));
         out.extend(unread::not_written_line(&self.not_written));
         out.extend(self.longitudinal_turn.iter().map(|t| t.to_string()));

@@ -11,6 +11,12 @@ use std::path::Path;
 /// `fz` among comma- or semicolon-separated columns and holding no `=`
 /// or `[` of a TOML file.
 pub(crate) fn refuse_points_as_tyre(tyre: &Path) -> Result<(), InputError> {
+    // A file plainly of another kind (a scenario, a history, a folder) is
+    // named as what it is, with the command that reads it.
+    let points = ["fz", "kappa", "alpha", "camber", "speed"];
+    if let Some(e) = crate::io::file_kind::not_a_tyre(tyre, &points) {
+        return Err(e);
+    }
     let ext = tyre.extension().and_then(|e| e.to_str()).unwrap_or("");
     if ext.eq_ignore_ascii_case("tir") || ext.eq_ignore_ascii_case("toml") {
         return Ok(());

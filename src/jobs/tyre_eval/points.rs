@@ -33,7 +33,15 @@ pub(super) fn read_points(
         optional: &["pressure"],
         also_read: Some(&[]),
     };
-    let (mut c, bad_cells) = crate::io::read_columns_with_bad_cells(points, layout)?;
+    // A rig file given as points is said as one (not column by column).
+    let (mut c, bad_cells) =
+        crate::io::read_columns_with_bad_cells(points, layout).map_err(|e| {
+            crate::io::file_kind::rig_as_points(
+                points,
+                &["fz", "kappa", "alpha", "camber", "speed"],
+            )
+            .unwrap_or(e)
+        })?;
     let pressure = c.take_optional("pressure");
     let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()

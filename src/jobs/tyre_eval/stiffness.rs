@@ -73,6 +73,9 @@ pub struct AgainstSlip {
     /// every other warning of `tyre-eval` names a point), and its load (N),
     /// camber (rad) and pressure (Pa; 0 where the points give none).
     pub first: (usize, [f64; 3]),
+    /// The file's `FZMAX` (N), where some of the points lie above it and
+    /// the limit checks evaluate them there, not at their own load.
+    pub held_at_fz_max: Option<f64>,
 }
 
 impl AgainstSlip {
@@ -85,14 +88,24 @@ impl AgainstSlip {
         } else {
             String::new()
         };
+        // A load above FZMAX is evaluated at FZMAX, not at its own.
+        let (load, fz_text) = match self.held_at_fz_max {
+            Some(m) => (
+                format!("load (at the file's FZMAX = {} N where above it)", n(m)),
+                match fz > m {
+                    true => format!("{} N given, evaluated at {} N", n(fz), n(m)),
+                    false => format!("{} N", n(fz)),
+                },
+            ),
+            None => ("own load".to_string(), format!("{} N", n(fz))),
+        };
         format!(
-            "{} of {} {} a negative {} stiffness at {} own load, camber, pressure and speed (the first at line {line}: fz = {} N, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are what the file's coefficients give where they describe no tyre (inside the file's ranges or not)",
+            "{} of {} {} a negative {} stiffness at {} {load}, camber, pressure and speed (the first at line {line}: fz = {fz_text}, camber = {} rad{at_pressure}): there the force opposes the slip (ISO 8855: a positive slip gives a positive force), and the values written there are what the file's coefficients give where they describe no tyre (inside the file's ranges or not)",
             self.points,
             crate::format::plural(count, "point", "points"),
             if self.points == 1 { "has" } else { "have" },
             self.stiffness,
             if self.points == 1 { "its" } else { "their" },
-            n(fz),
             n(camber),
         )
     }
@@ -103,7 +116,13 @@ impl AgainstSlip {
 /// point's own conditions; a stiffness within 1e-6 of the largest found is
 /// no sign (a model without that force).
 pub(crate) fn against_slip(tyre: &Tyre, p: &Points, lines: &[usize]) -> Vec<AgainstSlip> {
-    let [fz, _, _, camber, speed] = p.columns;
+    let [fz, kappa, alpha, camber, speed] = p.columns;
+    // The load the forces are evaluated at: a Magic Formula tyre with its
+    // limit checks on holds a load above FZMAX there.
+    let fz_max = match tyre {
+        Tyre::MagicFormula(t) if t.options.limit_checks => t.limits.fz_max,
+        _ => None,
+    };
     let n = fz.len();
     let zero = vec![0.0; n];
     let at = |s: f64| vec![s; n];
@@ -124,16 +143,19 @@ pub(crate) fn against_slip(tyre: &Tyre, p: &Points, lines: &[usize]) -> Vec<Agai
         eval(&zero, &at(SLIP)).iter().map(|f| f.fy).collect(),
         eval(&zero, &at(-SLIP)).iter().map(|f| f.fy).collect(),
     );
-    [("longitudinal slip", kx), ("cornering", ky)]
+    // A point at zero slip of the kind has no slip for the force to
+    // oppose (FSAE_Defaults.tir's points at kappa = 0 above 1625 N).
+    [("longitudinal slip", kx, kappa), ("cornering", ky, alpha)]
         .into_iter()
-        .filter_map(|(stiffness, k)| {
+        .filter_map(|(stiffness, k, slip)| {
             let scale = k
                 .iter()
                 .filter(|v| v.is_finite())
                 .fold(0.0_f64, |m, v| m.max(v.abs()));
             let against: Vec<usize> = (0..n)
-                .filter(|&i| fz[i] > 0.0 && k[i] < -1e-6 * scale)
+                .filter(|&i| fz[i] > 0.0 && slip[i] != 0.0 && k[i] < -1e-6 * scale)
                 .collect();
+            let held_at_fz_max = fz_max.filter(|m| against.iter().any(|&i| fz[i] > *m));
             let &i = against.first()?;
             let pressure = p.pressure.get(i).copied().unwrap_or(0.0);
             Some(AgainstSlip {
@@ -143,6 +165,7 @@ pub(crate) fn against_slip(tyre: &Tyre, p: &Points, lines: &[usize]) -> Vec<Agai
                     lines.get(i).copied().unwrap_or(i + 2),
                     [fz[i], camber[i], pressure],
                 ),
+                held_at_fz_max,
             })
         })
         .collect()

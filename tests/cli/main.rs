@@ -412,6 +412,7 @@ mod trips_s80_kind;
 mod trips_s80_lead;
 mod trips_s80_sim;
 mod trips_s80_tyre;
+mod trips_s81_diag;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -9,7 +9,7 @@ use crate::format::readable;
 /// Runs whose yaw rate is far smaller than a neutral car's for their
 /// steer (a steer in degrees or a steering-wheel angle), of a campaign.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}", if self.runs.len() == self.of { format!("all {} runs", self.of) } else { format!("{} of the {} runs", self.runs.len(), self.of) }, self.runs.iter().map(|(run, m)| format!("{run} ({}× smaller, median r·l/(u·δ) = {})", readable(1.0 / m, 2), readable(*m, 3))).collect::<Vec<_>>().join(", "), self.advice())]
+#[error("the yaw rate is far smaller than a neutral car's for the steer in {}: {}: is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio)? {}", format!("{} of the {} runs", self.runs.len(), self.of), self.runs.iter().map(|(run, m)| format!("{run} ({}× smaller, median r·l/(u·δ) = {})", readable(1.0 / m, 2), readable(*m, 3))).collect::<Vec<_>>().join(", "), self.advice())]
 pub struct SteerInDegreesRuns {
     /// Each run that reads so (its file) and its median r·l/(u·δ).
     pub runs: Vec<(String, f64)>,
@@ -18,12 +18,10 @@ pub struct SteerInDegreesRuns {
 }
 
 impl SteerInDegreesRuns {
-    /// What to do: one key for all runs, or a fix in the files of some.
+    /// What to do: a fix in the files of the runs in degrees (when all
+    /// runs are, the run's own refusal advises `degrees`).
     fn advice(&self) -> String {
-        let rest = self.of - self.runs.len();
-        if rest == 0 {
-            return "A steer in degrees in every run is declared once: `degrees = [\"steer\"]` under [runs], which converts every run's steer".into();
-        }
+        let rest = self.of.saturating_sub(self.runs.len());
         format!(
             "The other {} not (their steer is in radians, as it should be), and `degrees = [\"steer\"]` under [runs] would convert every run's steer, theirs too (a campaign has no per-run unit): convert the steer of {} to radians in {} (× π/180 = 0.0174533 from degrees), or leave {} out of the campaign",
             crate::format::plural(rest, "run does", "runs do"),

@@ -195,3 +195,94 @@ fn rig_data_given_as_a_tyre_file_is_named_at_its_key() {
         "{e}"
     );
 }
+
+/// `merge` of a fleet's shards whose every campaign failed exited 0 (only
+/// `diagnose --batch` checked): it fails after writing the table, with
+/// the count, as the batch does.
+#[test]
+fn a_merge_that_diagnosed_nothing_fails_with_the_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let batch = dir.path().join("batch");
+    fs::create_dir_all(&batch).unwrap();
+    // Two campaigns whose runs do not exist.
+    for name in ["a", "b"] {
+        let sedan = "[vehicle]\nmass = 1530\nyaw_inertia = 2315\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n";
+        let text = format!("{sedan}[runs]\ndir = \"nowhere\"\n");
+        fs::write(batch.join(format!("{name}.toml")), text).unwrap();
+    }
+    let shards = dir.path().join("shards");
+    for k in ["1/2", "2/2"] {
+        let o = run(&[
+            "diagnose",
+            "--batch",
+            batch.to_str().unwrap(),
+            "--shard",
+            k,
+            "--out",
+            shards.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let out = dir.path().join("merged");
+    let files: Vec<String> = (1..=2)
+        .map(|k| {
+            shards
+                .join(format!("shard-{k}-of-2.json"))
+                .display()
+                .to_string()
+        })
+        .collect();
+    let o = run(&[
+        "merge",
+        &files[0],
+        &files[1],
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success(), "a merge that diagnosed nothing failed");
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("fleet: 0 of 2 campaigns diagnosed, 2 failed (each one's reason below)"),
+        "{said}"
+    );
+    let table = out.join("fleet.csv");
+    let e = stderr(&o);
+    assert!(
+        e.contains(&format!("{}: none of its 2 campaigns could be diagnosed (each one's reason is listed above and in {}): no fleet to compare", out.display(), table.display())),
+        "{e}"
+    );
+    assert!(table.is_file());
+}
+
+/// A run's `ax` written in g was read as m/s² by `diagnose` in silence
+/// (only a `simulate` replay checked it against the speed's change): a
+/// note names the run, with the slope of the speed's change on `∫ax dt`.
+#[test]
+fn an_ax_in_g_is_said_per_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &["--programme", "oval", "--seed", "1"]);
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    fs::write(&v, format!("{text}effects = [\"sensor_bias\"]\n")).unwrap();
+    let mut names: Vec<String> = fs::read_dir(c.join("runs"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    let first = names[0].clone();
+    rewrite(&c, "ax", &|n| n == first, &|v| v / 9.81);
+    let (stdout, _) = diagnose(&c);
+    let notes: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.contains("`ax` reads in g"))
+        .collect();
+    assert_eq!(notes.len(), 1, "{stdout}");
+    assert!(notes[0].starts_with("  note: "), "{stdout}");
+    assert!(
+        notes[0].contains(&format!(
+            "runs/{first}: `ax` reads in g, not m/s²: over its "
+        )),
+        "{stdout}"
+    );
+    assert!(notes[0].contains("the diagnosis takes `ax` as m/s² forward for its longitudinal effects and load transfer: multiply the column by 9.81"), "{stdout}");
+}

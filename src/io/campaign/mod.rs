@@ -28,6 +28,7 @@
 //! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
 //! finds, reads, checks and cleans its runs.
 
+mod ax_check;
 mod degrees;
 mod glob;
 mod kind;

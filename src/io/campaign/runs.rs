@@ -230,17 +230,15 @@ pub(super) fn read_runs(
             if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
                 let first = (run.path.display().to_string(), m);
                 let later = &files[i + 1..];
-                return Err(runs_in_degrees(
-                    first,
-                    later,
-                    files.len(),
-                    wheelbase,
-                    min_speed,
-                ));
+                let some = runs_in_degrees(first, later, files.len(), wheelbase, min_speed);
+                if let Some(e) = some {
+                    return Err(e);
+                }
             }
         }
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
         notes.extend(crate::io::unchecked_speed_unit(&run));
+        notes.extend(super::ax_check::ax_note(&run));
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -414,14 +412,15 @@ fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option
 /// and median `r·l/(u·δ)`) has a steer in degrees, with every `later` file
 /// that has one too (read again here, only on this way out): the runs
 /// before it were judged right, so `degrees` under [runs], which converts
-/// every run, is advised only if all runs read so.
+/// every run, is wrong for them; `None` where all runs read so (the run's
+/// own refusal, as `metrics` words it, advises `degrees` then).
 fn runs_in_degrees(
     first: (String, f64),
     later: &[PathBuf],
     of: usize,
     wheelbase: f64,
     min_speed: f64,
-) -> InputError {
+) -> Option<InputError> {
     let path = PathBuf::from(&first.0);
     let mut runs = vec![first];
     for p in later {
@@ -432,11 +431,14 @@ fn runs_in_degrees(
             runs.push((run.path.display().to_string(), m));
         }
     }
+    if runs.len() == of {
+        return None;
+    }
     let problem = crate::error::SteerInDegreesRuns { runs, of };
-    file_error(
+    Some(file_error(
         &path,
         InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),
-    )
+    ))
 }
 
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the

@@ -162,7 +162,13 @@ impl fmt::Display for KindProblem {
                 written,
                 kind,
                 campaign,
-            } => f.write_str(&super::not_a_tyre::said(key, written, kind, *campaign)),
+            } => {
+                let rig = matches!(kind, FileKind::RigCsv);
+                let kind = (rig, kind.what(), kind.reader());
+                let said =
+                    super::not_a_tyre::said(key, written, (kind.0, &kind.1, kind.2), *campaign);
+                f.write_str(&said)
+            }
             KindProblem::NotWanted {
                 kind,
                 wanted,

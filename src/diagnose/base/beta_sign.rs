@@ -14,7 +14,6 @@
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
-use crate::diagnose::report::gap::scored_samples;
 use crate::error::BetaAgainstModel;
 use crate::measured::MeasuredRun;
 use rayon::prelude::*;
@@ -36,7 +35,12 @@ const SWING: f64 = 0.003;
 /// sign); `None` without a `beta` channel or a swing of the replayed β.
 fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<Sums> {
     let beta = run.beta.as_ref()?;
-    let idx = scored_samples(run);
+    // The samples the gap scores: all but the masked (logger glitches).
+    let mut keep = vec![true; run.t.len()];
+    for &i in &run.masked {
+        keep[i] = false;
+    }
+    let idx: Vec<usize> = (0..run.t.len()).filter(|&i| keep[i]).collect();
     if idx.len() < 10 {
         return None;
     }

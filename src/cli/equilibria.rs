@@ -76,6 +76,11 @@ pub fn merge(a: MergeArgs) -> Result<()> {
                 json.display(),
                 html.display()
             );
+            // As `diagnose --batch` ends: a merge that diagnosed nothing
+            // does not end as a success.
+            if let Some(e) = r.all_failed(&r.out_dir) {
+                return Err(e.into());
+            }
         }
     }
     Ok(())

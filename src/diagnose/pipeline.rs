@@ -386,6 +386,12 @@ fn run(
         p.fetch_add(1, Ordering::Relaxed);
     }
 
+    crate::diagnose::base::beta_sign::check(c, &bases.all).map_err(|source| {
+        DiagnosisError::BetaAgainstModel {
+            campaign: c.source.clone(),
+            source,
+        }
+    })?;
     let run_gaps = base_gaps(c, &bases.all, &floors);
     let calibrated = calibrated(c);
     let ctx = Context {

@@ -32,6 +32,12 @@ pub enum CampaignFileProblem {
     /// What `[runs]` or `--batch` selects wrongly.
     #[error(transparent)]
     Selection(super::SelectionProblem),
+    /// `min_speed` above the top speed of all runs but at most one.
+    #[error(transparent)]
+    MinSpeedRemoved(super::MinSpeedRemoved),
+    /// Some or all runs with a steer far larger than their yaw rate.
+    #[error(transparent)]
+    SteerInDegreesRuns(super::SteerInDegreesRuns),
     /// A file of another kind given as the campaign.
     #[error("{}: `handling diagnose` reads a campaign, a TOML file with [vehicle] and [runs] (or a folder with vehicle.toml and runs/*.csv; see FORMATS.md)", what(kind))]
     NotACampaign {

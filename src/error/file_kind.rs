@@ -150,11 +150,34 @@ pub enum KindProblem {
         /// Every value `degrees` takes.
         allowed: Vec<&'static str>,
     },
+    /// A tyre file key (`[tyres] front`) naming a file of another kind.
+    NotATyre {
+        /// The key's dotted path.
+        key: String,
+        /// Its value as written.
+        written: String,
+        /// What the file is.
+        kind: FileKind,
+        /// Whether the key is a campaign's (which takes rig data itself).
+        campaign: bool,
+    },
 }
 
 impl fmt::Display for KindProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            KindProblem::NotATyre {
+                key,
+                written,
+                kind,
+                campaign,
+            } => {
+                let rig = matches!(kind, FileKind::RigCsv);
+                let kind = (rig, kind.what(), kind.reader());
+                let said =
+                    super::not_a_tyre::said(key, written, (kind.0, &kind.1, kind.2), *campaign);
+                f.write_str(&said)
+            }
             KindProblem::NotWanted {
                 kind,
                 wanted,

@@ -217,6 +217,14 @@ pub enum DiagnosisError {
         /// Each candidate named, by name, and what the runs lack for it.
         unseen: Vec<(String, Unseen)>,
     },
+    /// A measured sideslip that moves against the base model's.
+    #[error("{}: {source}", campaign.display())]
+    BetaAgainstModel {
+        /// The campaign.
+        campaign: PathBuf,
+        /// The runs.
+        source: super::BetaAgainstModel,
+    },
     /// A design asked of a diagnosis that names no confounded set.
     #[error("the diagnosis names no confounded effects: ask for the candidates to separate (`--effects a,b`)")]
     NothingConfounded,

@@ -7,6 +7,7 @@
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
+mod beta_sign;
 mod campaign_file;
 mod carried;
 mod duplicate;
@@ -18,7 +19,9 @@ mod input;
 mod level_slip;
 mod long_replay;
 mod metrics;
+mod min_speed;
 mod none_with;
+mod not_a_tyre;
 mod number;
 mod only_combined;
 mod options;
@@ -34,10 +37,12 @@ mod rig_sign;
 mod runs_selection;
 mod scenario_file;
 mod steady;
+mod steer_runs;
 #[cfg(test)]
 mod tests;
 mod units;
 
+pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
 pub use duplicate::DuplicateAt;
@@ -52,6 +57,7 @@ pub use input::{CellProblem, InputError, Location};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use long_replay::LongReplay;
 pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};
+pub use min_speed::MinSpeedRemoved;
 pub use none_with::NoneWithEffects;
 pub(crate) use number::hundredths_down;
 pub use number::{number, range, Num};
@@ -72,6 +78,7 @@ pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
+pub use steer_runs::SteerInDegreesRuns;
 use thiserror::Error;
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,

@@ -177,9 +177,9 @@ pub(crate) fn resolve_model(
     let dir = src.path.parent().unwrap_or(Path::new("."));
     let front_path = beside(dir, &tyres.front);
     let rear_path = beside(dir, tyres.rear.as_ref().unwrap_or(&tyres.front));
-    src.referenced_file("tyres.front", &front_path)?;
+    src.referenced_tyre("tyres.front", &front_path, false)?;
     if tyres.rear.is_some() {
-        src.referenced_file("tyres.rear", &rear_path)?;
+        src.referenced_tyre("tyres.rear", &rear_path, false)?;
     }
     let (front_load, rear_load) = static_wheel_loads(vehicle);
     let (mut front, front_ranges) = load_axle_tyre(&front_path, front_load)?;

@@ -3,9 +3,10 @@
 //! are located by looking the key path up in the document's spans.
 
 mod home;
+mod referenced;
 pub(crate) mod vehicle_keys;
 
-use crate::error::{InputError, InputProblem, Location, ParamError, PathFound};
+use crate::error::{InputError, InputProblem, Location, ParamError};
 use home::Reparse;
 use serde::de::DeserializeOwned;
 use std::path::{Path, PathBuf};
@@ -514,48 +515,6 @@ impl TomlSource {
             let inside = within.as_ref().is_none_or(|w| w.contains(&at.start));
             inside.then(|| (path.to_string(), at))
         })
-    }
-
-    /// The file `path` that the value of `key_path` names, checked to
-    /// exist and be a file: when it is not, an error at that key naming the
-    /// value and the path it resolved to (a relative path is read from the
-    /// TOML file's folder).
-    pub(crate) fn referenced_file(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
-        self.referenced(key_path, path, false)
-    }
-
-    /// [`Self::referenced_file`] for a folder.
-    pub(crate) fn referenced_folder(&self, key_path: &str, path: &Path) -> Result<(), InputError> {
-        self.referenced(key_path, path, true)
-    }
-
-    fn referenced(&self, key_path: &str, path: &Path, folder: bool) -> Result<(), InputError> {
-        let found = match (path.exists(), path.is_dir(), folder) {
-            (true, true, true) | (true, false, false) => return Ok(()),
-            (false, ..) => PathFound::Nothing,
-            (true, true, false) => PathFound::FolderNotFile,
-            (true, false, true) => PathFound::FileNotFolder,
-        };
-        // The path as written (a key holding one string) beside the path
-        // it resolved to, made absolute: a path relative to the working
-        // directory read as one relative to the file's folder.
-        let span = self.key_span(key_path);
-        let written = span
-            .clone()
-            .and_then(|s| self.text.get(s))
-            .and_then(|t| t.parse::<toml_edit::Value>().ok())
-            .and_then(|v| v.as_str().map(Box::from));
-        let problem = InputProblem::MissingFile {
-            key: key_path.to_string(),
-            written,
-            target: super::paths::normalised(
-                &std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf()),
-            )
-            .into_boxed_path(),
-            base: self.path.clone().into_boxed_path(),
-            found,
-        };
-        Err(self.located(span, problem))
     }
 
     /// A located error for a value that failed validation.

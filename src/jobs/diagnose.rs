@@ -175,8 +175,8 @@ impl DiagnoseReport {
             // A long log cut into pieces has a line per piece: the rest
             // are in the JSON report and on the page.
             out.push(format!(
-                "  road: … and {} runs more (every one in the JSON report)",
-                road.len() - ROAD_LINES
+                "  road: … and {} more (every one in the JSON report)",
+                crate::format::plural(road.len() - ROAD_LINES, "run", "runs")
             ));
         }
         out.extend(findings(d));
@@ -221,7 +221,12 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         "effect", "J after", "held out", "in sample", "ΔBIC"
     ));
     for r in d.ranking.iter().chain(d.combinations.iter()) {
-        let p: Vec<String> = r.parameters.iter().map(words::parameter).collect();
+        let removes = matches!(d.reductions(r)[0], Reduction::Percent(_));
+        let p: Vec<String> = r
+            .parameters
+            .iter()
+            .map(|p| words::parameter_of(p, removes))
+            .collect();
         out.push(format!(
             "  {:<w$} {:>8.3} {} {:>12}  {}",
             r.effect,

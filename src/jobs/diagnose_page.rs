@@ -40,11 +40,15 @@ pub fn page(
     p.paragraph(
         "",
         &format!(
-            "{} runs from {}, {} candidate effects, {} folds, seed {}{}.",
-            inputs.runs,
+            "{} from {}, {}, {}, seed {}{}.",
+            crate::format::plural(inputs.runs, "run", "runs"),
             crate::format::plural(inputs.run_files, "file", "files"),
-            d.ranking.len() + d.screened_singles().count(),
-            d.folds,
+            crate::format::plural(
+                d.ranking.len() + d.screened_singles().count(),
+                "candidate effect",
+                "candidate effects"
+            ),
+            crate::format::plural(d.folds, "fold", "folds"),
             d.seed,
             match d.derivatives {
                 crate::optim::local::Derivatives::Exact => ", exact Jacobians",
@@ -253,7 +257,12 @@ fn ranking(p: &mut Page, d: &Diagnosis) {
 }
 
 fn ranked_row(r: &Ranked, d: &Diagnosis, verdict: Option<&Ranked>) -> Vec<Cell> {
-    let params: Vec<String> = r.parameters.iter().map(words::parameter).collect();
+    let removes = matches!(d.reductions(r)[0], Reduction::Percent(_));
+    let params: Vec<String> = r
+        .parameters
+        .iter()
+        .map(|p| words::parameter_of(p, removes))
+        .collect();
     // The terminal's rule ([`Diagnosis::reductions`]), so the two agree.
     let [held_out, in_sample] = d.reductions(r).map(|x| match x {
         Reduction::WithinNoise => Cell::Text(words::reduction(x)),

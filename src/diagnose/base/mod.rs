@@ -7,6 +7,7 @@
 //! campaign's `[roll]` is the base models' roll
 //! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
+pub(crate) mod beta_sign;
 pub(crate) mod identify;
 pub(crate) mod no_tyre;
 pub mod prior;

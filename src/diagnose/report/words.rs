@@ -21,7 +21,7 @@ pub use evidence::evidence;
 pub use gap::band_lines;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
-pub use parameters::parameter;
+pub use parameters::{parameter, parameter_of};
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};

@@ -28,6 +28,7 @@
 //! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
 //! finds, reads, checks and cleans its runs.
 
+mod ax_check;
 mod degrees;
 mod glob;
 mod kind;
@@ -47,8 +48,8 @@ use crate::diagnose::model::scale::{
     beyond_signal, signal_rms, stated_of, ESTIMATED, ESTIMATED_REACH, SENSOR_FLOOR,
 };
 use crate::error::{
-    named, BeyondSignal, CampaignReason, GivenTyres, InputError, InputProblem, Limit, NameKind,
-    OptionsError, ParamError, ParamReason, StagedMagicFormula, TyreSourceError,
+    named, BeyondSignal, CampaignFileProblem, CampaignReason, GivenTyres, InputError, InputProblem,
+    Limit, NameKind, OptionsError, ParamError, ParamReason, StagedMagicFormula, TyreSourceError,
 };
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
@@ -137,7 +138,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     )?;
     let declared = f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]);
     degrees::check_declared(&src, declared, &files)?;
-    let (runs, mut notes, cleaning, calibration) = read_runs(
+    let (runs, mut notes, cleaning, calibration, top_speeds) = read_runs(
         &files,
         (f.runs.as_ref().and_then(|r| r.segment), declared),
         f.diagnose.min_speed,
@@ -151,6 +152,12 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     let stated_rate = src.key_span("diagnose.sample_rate").is_some();
     notes.extend(rate_note(f.diagnose.sample_rate, &runs).filter(|_| stated_rate));
     if runs.len() < 2 {
+        let stated = src.key_span("diagnose.min_speed");
+        let min_speed = f.diagnose.min_speed;
+        if let Some(p) = runs::min_speed_removed(min_speed, stated.is_some(), &top_speeds) {
+            let p = CampaignFileProblem::MinSpeedRemoved(p);
+            return Err(src.located(stated, InputProblem::Campaign(Box::new(p))));
+        }
         return Err(file_error(
             &file,
             InputProblem::TooFewRuns {
@@ -455,7 +462,7 @@ fn base_tyres(
         (Some(t), None, None, None) => {
             let t = beside(base, t);
             inputs.push(t.clone());
-            src.referenced_file("tyres.file", &t)?;
+            src.referenced_tyre("tyres.file", &t, true)?;
             // One file on both axles: checked at the heavier wheel.
             let (front, rear) = static_wheel_loads(&f.vehicle);
             let mut t = load_axle_tyre(&t, front.max(rear))?.0;
@@ -465,8 +472,8 @@ fn base_tyres(
         (None, Some(fr), Some(re), None) => {
             let (fr, re) = (beside(base, fr), beside(base, re));
             inputs.extend([fr.clone(), re.clone()]);
-            src.referenced_file("tyres.front", &fr)?;
-            src.referenced_file("tyres.rear", &re)?;
+            src.referenced_tyre("tyres.front", &fr, true)?;
+            src.referenced_tyre("tyres.rear", &re, true)?;
             let (front, rear) = static_wheel_loads(&f.vehicle);
             let (mut f, mut r) = (load_axle_tyre(&fr, front)?.0, load_axle_tyre(&re, rear)?.0);
             apply_tyre_mode(src, "tyres.mode", spec.mode, &mut [&mut f, &mut r])?;

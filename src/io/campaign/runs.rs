@@ -183,12 +183,14 @@ fn entry(src: &TomlSource, key: &str, value: &Path) -> String {
 }
 
 /// The runs read: the pieces to replay, notes on what was done, the
-/// cleaning report and the calibration of the raw runs.
+/// cleaning report, the calibration of the raw runs and each run file's
+/// top speed (m/s, for a `min_speed` that removes them).
 pub(super) type ReadRuns = (
     Vec<MeasuredRun>,
     Vec<String>,
     CleaningReport,
     CalibrationReport,
+    Vec<(String, f64)>,
 );
 
 /// Reads, checks, calibrates and cleans every run, cut into segments if
@@ -210,7 +212,7 @@ pub(super) fn read_runs(
     // is refused, as `metrics` and a replay refuse it.
     let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
     let (mut longest, mut was_cut) = (0.0_f64, false);
-    for p in files {
+    for (i, p) in files.iter().enumerate() {
         let (run, lacks) = read_run_declared(p, degrees)?;
         for (a, e) in lacks {
             match absent.iter_mut().find(|x| x.0 == a) {
@@ -224,8 +226,19 @@ pub(super) fn read_runs(
             return Err(file_error(&run.path, problem));
         }
         let declared = degrees.contains(&AngleColumn::Steer);
+        if files.len() > 1 && !declared {
+            if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
+                let first = (run.path.display().to_string(), m);
+                let later = &files[i + 1..];
+                let some = runs_in_degrees(first, later, files.len(), wheelbase, min_speed);
+                if let Some(e) = some {
+                    return Err(e);
+                }
+            }
+        }
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
         notes.extend(crate::io::unchecked_speed_unit(&run));
+        notes.extend(super::ax_check::ax_note(&run));
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -288,7 +301,37 @@ pub(super) fn read_runs(
             lacking.join(", ")
         ));
     }
-    Ok((runs, notes, cleaning, calibrate(&raw)))
+    let top_speeds = raw
+        .iter()
+        .map(|r| {
+            let top = r.speed.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            (r.path.display().to_string(), top)
+        })
+        .collect();
+    Ok((runs, notes, cleaning, calibrate(&raw), top_speeds))
+}
+
+/// The refusal of a `min_speed` (m/s, `stated` or the default) above the
+/// `top` speed of all runs but at most one, with a threshold that keeps
+/// every run: half the slowest run's top speed, at most the default.
+pub(super) fn min_speed_removed(
+    min_speed: f64,
+    stated: bool,
+    top: &[(String, f64)],
+) -> Option<crate::error::MinSpeedRemoved> {
+    let removed = top.iter().filter(|(_, v)| *v < min_speed).count();
+    if removed == 0 || top.len() - removed >= 2 {
+        return None;
+    }
+    let slowest = top.iter().map(|(_, v)| *v).fold(f64::INFINITY, f64::min);
+    let half = (5.0 * slowest).floor() / 10.0;
+    Some(crate::error::MinSpeedRemoved {
+        min_speed,
+        stated,
+        runs: top.to_vec(),
+        removed,
+        suggested: half.min(crate::measured::clean::DEFAULT_MIN_SPEED),
+    })
 }
 
 /// The note of a `segment` (s) that cut no piece, the `longest` lasting
@@ -352,6 +395,50 @@ fn steer_against_yaw(
             run.path.display()
         )
     }))
+}
+
+/// The median `r·l/(u·δ)` of a run whose steer is far larger than its yaw
+/// rate ([`InputProblem::SteerAboveYaw`]: in degrees, or a steering-wheel
+/// angle).
+fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<f64> {
+    let y = yaw_per_neutral(run, wheelbase, min_speed)?;
+    match steer_problem(&y, Wheelbase::Known(wheelbase))? {
+        InputProblem::SteerAboveYaw { median, .. } => Some(median),
+        _ => None,
+    }
+}
+
+/// The refusal of a campaign of `of` run files whose run `first` (its file
+/// and median `r·l/(u·δ)`) has a steer in degrees, with every `later` file
+/// that has one too (read again here, only on this way out): the runs
+/// before it were judged right, so `degrees` under [runs], which converts
+/// every run, is wrong for them; `None` where all runs read so (the run's
+/// own refusal, as `metrics` words it, advises `degrees` then).
+fn runs_in_degrees(
+    first: (String, f64),
+    later: &[PathBuf],
+    of: usize,
+    wheelbase: f64,
+    min_speed: f64,
+) -> Option<InputError> {
+    let path = PathBuf::from(&first.0);
+    let mut runs = vec![first];
+    for p in later {
+        let Ok((run, _)) = read_run_declared(p, &[]) else {
+            continue;
+        };
+        if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
+            runs.push((run.path.display().to_string(), m));
+        }
+    }
+    if runs.len() == of {
+        return None;
+    }
+    let problem = crate::error::SteerInDegreesRuns { runs, of };
+    Some(file_error(
+        &path,
+        InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),
+    ))
 }
 
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the

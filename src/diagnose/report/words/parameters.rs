@@ -20,6 +20,15 @@ use crate::diagnose::report::ParameterValue;
 /// error that the fold refits' jackknife exceeds several times over is said
 /// to understate ([`ParameterValue::understated`]).
 pub fn parameter(p: &ParameterValue) -> String {
+    parameter_of(p, true)
+}
+
+/// A fitted parameter in words ([`parameter`]), of a candidate that
+/// `removes` a share of a significant gap or not (a gap within noise): where it
+/// does not, a fold scatter beyond the standard error is no disagreement of
+/// the runs beyond their noise to claim (a no-effect campaign's candidates
+/// fit noise), only a standard error that understates.
+pub fn parameter_of(p: &ParameterValue, removes: bool) -> String {
     // A dimensionless parameter (unit `-`) is written without a unit.
     let unit = match p.unit {
         "rad/kN" => format!(" rad/kN ({} rad/N)", value(p.value * 1e-3)),
@@ -57,6 +66,16 @@ pub fn parameter(p: &ParameterValue) -> String {
             match p.fold_std_error.filter(|_| p.understated()) {
                 // The runs of equal information: the standard error is
                 // what their noise moves the folds by.
+                Some(j) if !removes => format!(
+                    "{said} (the fold refits scatter ± {}, {:.0}× {}: the standard error understates its uncertainty, of a value fitted where the effect removes nothing significant)",
+                    std_error(j),
+                    j / yardstick,
+                    if yardstick <= p.std_error {
+                        "it".to_string()
+                    } else {
+                        format!("the ± {} the runs' noise alone moves them by", std_error(yardstick))
+                    }
+                ),
                 Some(j) if yardstick <= p.std_error => format!(
                     "{said} (the fold refits scatter ± {}, {:.0}× it: the runs disagree beyond their noise, which the standard error does not cover)",
                     std_error(j),

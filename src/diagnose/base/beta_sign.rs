@@ -1,0 +1,115 @@
+//! A sideslip logged in the other sign convention, found against the base
+//! model before any candidate is fitted. The yaw rate's sign is judged
+//! against the steer when the runs are read (`io::campaign::runs`); the
+//! sideslip's has no such kinematic test: at the CG β = b·r/u − α_r turns
+//! with the yaw rate at low speed and against it above the car's
+//! "tangent speed", so its sign relation to r depends on the tyres. The
+//! base model knows them: its replayed β follows the measured one (in a
+//! turn at speed both negative for a left turn, ISO 8855) however wrong
+//! its size. A measured β that moves against it over the runs — their
+//! pooled correlation below [`AGAINST`] — is negated: fitted, it makes the gap
+//! a sign slip that no effect explains ("outside the library", β carrying
+//! most of the error). Units: SI, rad.
+
+use crate::diagnose::campaign::Campaign;
+use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::Augmented;
+use crate::error::BetaAgainstModel;
+use crate::measured::MeasuredRun;
+use rayon::prelude::*;
+
+/// Below this correlation of a run's measured sideslip with the base
+/// model's, the run's `beta` is taken as negated: a real sideslip sensor
+/// or estimator follows even a poor model's β in sign (the shape of a
+/// step, a ramp or a turn is the car's), noise and a wrong size only
+/// weaken the correlation towards 0, never reverse it.
+pub(crate) const AGAINST: f64 = -0.5;
+
+/// The replayed sideslip must swing at least this much (centred RMS, rad)
+/// over a run for its correlation to say anything: a straight run's β is
+/// noise about an offset.
+const SWING: f64 = 0.003;
+
+/// The centred sums of run `run`'s measured β against `base`'s replayed β
+/// over its scored samples, each centred on its own mean (an offset is no
+/// sign); `None` without a `beta` channel or a swing of the replayed β.
+fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<Sums> {
+    let beta = run.beta.as_ref()?;
+    // The samples the gap scores: all but the masked (logger glitches).
+    let mut keep = vec![true; run.t.len()];
+    for &i in &run.masked {
+        keep[i] = false;
+    }
+    let idx: Vec<usize> = (0..run.t.len()).filter(|&i| keep[i]).collect();
+    if idx.len() < 10 {
+        return None;
+    }
+    let history = Prepared::new(run, step, f64::INFINITY).replay(base);
+    let sim: Vec<f64> = idx
+        .iter()
+        .map(|&i| crate::manoeuvre::interpolate(&history.t, &history.beta, run.t[i]))
+        .collect();
+    let measured: Vec<f64> = idx.iter().map(|&i| beta[i]).collect();
+    let n = measured.len();
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (ms, mm) = (mean(&sim), mean(&measured));
+    let mut s = Sums {
+        n,
+        ..Sums::default()
+    };
+    for (x, y) in sim.iter().zip(&measured) {
+        let (x, y) = (x - ms, y - mm);
+        s.xy += x * y;
+        s.xx += x * x;
+        s.yy += y * y;
+    }
+    let swing = (s.xx / n as f64).sqrt();
+    (swing >= SWING && s.yy > 0.0 && swing.is_finite()).then_some(s)
+}
+
+/// Centred sums of products of the model's β (x) and the measured (y).
+#[derive(Debug, Clone, Copy, Default)]
+struct Sums {
+    n: usize,
+    xy: f64,
+    xx: f64,
+    yy: f64,
+}
+
+impl Sums {
+    fn correlation(&self) -> f64 {
+        self.xy / (self.xx * self.yy).sqrt()
+    }
+}
+
+/// Refuses a campaign whose measured β moves against the base model's over
+/// all its runs (their pooled correlation below [`AGAINST`]), naming each
+/// run against with its own correlation. A single run against is no sign
+/// slip (a real log's segment where the model misses a transient may
+/// reach −0.8): a logger's convention is the same in every run of it.
+pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<(), BetaAgainstModel> {
+    let judged: Vec<(String, Sums)> = c
+        .runs
+        .par_iter()
+        .filter_map(|r| sums(base, r, c.settings.step).map(|s| (r.path.display().to_string(), s)))
+        .collect();
+    let all = judged.iter().fold(Sums::default(), |a, (_, s)| Sums {
+        n: a.n + s.n,
+        xy: a.xy + s.xy,
+        xx: a.xx + s.xx,
+        yy: a.yy + s.yy,
+    });
+    if judged.is_empty() || all.correlation() >= AGAINST {
+        return Ok(());
+    }
+    Err(BetaAgainstModel {
+        correlation: all.correlation(),
+        samples: all.n,
+        against: judged
+            .iter()
+            .map(|(run, s)| (run.clone(), s.correlation(), s.n))
+            .filter(|(_, k, _)| *k < 0.0)
+            .collect(),
+        judged: judged.len(),
+    })
+}

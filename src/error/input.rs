@@ -154,6 +154,19 @@ pub enum InputError {
         /// What the reader expected and found.
         detail: String,
     },
+    /// A study's RBF network with fewer training pairs that reached a
+    /// steady state (an Er) than it needs.
+    #[error("{path}: the [rbf] network has {usable} of its {training} training pairs with an Er (the others reached no steady state: they spun, or the run failed), and it needs at least {min}: widen the pairs' range toward stiffer axles, or lengthen the run")]
+    TooFewRbfPairs {
+        /// The study file.
+        path: PathBuf,
+        /// Training pairs with an Er.
+        usable: usize,
+        /// Training pairs.
+        training: usize,
+        /// The least it needs.
+        min: usize,
+    },
     /// A study that names nothing to simulate.
     #[error("{path}: nothing to simulate: give a [stiffness] map or [rbf] pairs")]
     NothingToSimulate {
@@ -291,6 +304,7 @@ impl InputError {
             | InputError::Value { path, .. }
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
+            | InputError::TooFewRbfPairs { path, .. }
             | InputError::NoCampaign { path }
             | InputError::CampaignStemTwice { path, .. }
             | InputError::Several { path, .. } => path,

@@ -41,6 +41,7 @@ mod steer_runs;
 #[cfg(test)]
 mod tests;
 mod units;
+mod unstable_step;
 
 pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
@@ -83,6 +84,7 @@ use thiserror::Error;
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
 };
+pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

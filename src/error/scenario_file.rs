@@ -41,6 +41,8 @@ pub enum ScenarioProblem {
     },
     /// A replayed run too long for a history at the default row interval.
     LongReplay(super::LongReplay),
+    /// An RK4 step beyond the method's stability limit for the model.
+    UnstableStep(super::UnstableStep),
     /// A `name` that is no folder name: `simulate` writes into
     /// `out/<name>` where no `--out` is given.
     NameNotAFolder {
@@ -72,6 +74,7 @@ impl fmt::Display for ScenarioProblem {
         match self {
             ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
             ScenarioProblem::LongReplay(r) => r.fmt(f),
+            ScenarioProblem::UnstableStep(u) => u.fmt(f),
             ScenarioProblem::NameNotAFolder { name } => write!(
                 f,
                 "`name` = {name:?} is no folder name: `simulate` writes the run into `out/<name>` where no `--out` is given, so a name is one folder's name, not empty, without `/` or `\\`, and not `.` or `..`"

@@ -298,6 +298,14 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         remarks.extend(remarks::bank_scale_unused(src, kind));
     }
     rows::check(src, &f.simulation, &manoeuvre, measured.as_ref())?;
+    stability::check(
+        src,
+        &f.simulation,
+        method,
+        &model,
+        f.road.friction,
+        &manoeuvre,
+    )?;
     if let Some(name) = f.name.as_deref().filter(|n| !is_folder_name(n)) {
         let problem = ScenarioProblem::NameNotAFolder { name: name.into() };
         let span = src.key_span("name");
@@ -571,6 +579,7 @@ mod reach;
 mod remarks;
 mod replay;
 mod rows;
+mod stability;
 mod step_steer;
 
 #[cfg(test)]

@@ -51,3 +51,43 @@ fn a_banked_step_steer_starts_straight_with_the_tyres_holding_the_bank() {
     }
     assert_eq!(before_step, 1000, "rows before the step at 1 ms");
 }
+
+/// An RK4 step past the method's stability limit for a lagged model: the
+/// run blew up (angles of 1e162 rad, NaN rows) and exited 0. Refused at
+/// the step with the fastest rate and a step that is stable.
+#[test]
+fn an_rk4_step_beyond_its_stability_limit_is_refused_at_the_step() {
+    let text = bundled_scenario("sedan_step.toml").replace(
+        "[manoeuvre]",
+        "[model.effects]\nrelaxation_length = 0.3\n\n[integrator]\nmethod = \"rk4\"\nstep = 0.05\n\n[manoeuvre]",
+    );
+    let dir = scratch(&[("rk4.toml", &text)]);
+    let out = dir.path().join("out");
+    let o = run(&[
+        "simulate",
+        dir.path().join("rk4.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = refused(&o, &out);
+    // u/σ = 22.2222/0.3 = 74.07 1/s; h·ρ = 3.70 > 2.785; 2.5/74.07 = 0.034 s.
+    let line = text.lines().position(|l| l == "step = 0.05").unwrap() + 1;
+    assert!(
+        err.contains(&format!(
+            "rk4.toml:{line}:8: RK4 at a fixed step of 0.05 s is unstable"
+        )),
+        "{err}"
+    );
+    assert!(err.contains("decays at 74.07 1/s at 22.2 m/s (the tyres' lag, u/σ with `relaxation_length` = 0.3 m), so h·ρ = 3.7"), "{err}");
+    assert!(err.contains("use a step of at most 0.034 s"), "{err}");
+    // The step it suggests runs.
+    let stable = text.replace("step = 0.05", "step = 0.034");
+    fs::write(dir.path().join("rk4.toml"), stable).unwrap();
+    let ran = succeeds(&[
+        "simulate",
+        dir.path().join("rk4.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!ran.contains("NaN"), "{ran}");
+}

@@ -79,6 +79,11 @@ class StepMetrics:
     """Er = e1·E_r + e2·E_ay, s (None without ``ay``)."""
     settled: bool
     """Whether yaw rate and ay are steady in the steady window."""
+    settling: Dict[str, Any]
+    """The verdict on each channel's steady window (``yaw_rate``, ``ay``,
+    ``beta``; None for a channel not recorded): ``{"verdict": "settled"}``,
+    ``"not_settled"`` with its spread, or ``"not_judged"`` where the
+    channel's step is within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""
     yaw_rate_peak_threshold: float

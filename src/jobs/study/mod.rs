@@ -10,8 +10,9 @@ use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
 
 mod figures;
 mod numbers;
+mod rbf_fit;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
-use crate::io::study::{load_study, Inverse, RbfInput, StudyInput};
+use crate::io::study::{load_study, Inverse, StudyInput};
 use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
 };
@@ -320,7 +321,9 @@ impl Job {
         };
         let pairs = samples[self.grid.len()..].to_vec();
         let k = unit.to_si();
-        let net = input.rbf.as_ref().map(|r| train(st, r, &pairs, k, unit));
+        let net = (input.rbf.as_ref())
+            .map(|r| rbf_fit::train(st, r, &pairs, k, unit, &sc.inputs[0]))
+            .transpose()?;
         let inverse = input
             .inverse
             .as_ref()
@@ -344,79 +347,6 @@ impl Job {
             lock,
         })
     }
-}
-
-/// Wang & Liang's RBF network Er → (k1, k2), trained on all pairs but the
-/// validation ones and checked by re-simulating its answers.
-fn train(
-    st: &Study,
-    r: &RbfInput,
-    pairs: &[Sample],
-    k: f64,
-    unit: StiffnessUnit,
-) -> (Rbf, RbfReport) {
-    let er: Vec<f64> = pairs.iter().map(|s| Metric::Er.of_sample(s)).collect();
-    let train: Vec<usize> = (0..pairs.len())
-        .filter(|i| !r.validation.contains(i) && er[*i].is_finite())
-        .collect();
-    let net = Rbf::train(
-        &train.iter().map(|&i| er[i]).collect::<Vec<_>>(),
-        &train
-            .iter()
-            .map(|&i| vec![pairs[i].k_front, pairs[i].k_rear])
-            .collect::<Vec<_>>(),
-        r.spread,
-    );
-    let misfit = train
-        .iter()
-        .map(|&i| {
-            let p = net.predict(er[i]);
-            ((p[0] - pairs[i].k_front) / k)
-                .abs()
-                .max(((p[1] - pairs[i].k_rear) / k).abs())
-        })
-        .fold(0.0, f64::max);
-    let validation = r
-        .validation
-        .iter()
-        .map(|&i| {
-            let p = net.predict(er[i]);
-            let er_sim = st.er(p[0], p[1]);
-            Validation {
-                er_target: er[i],
-                k_front_true: pairs[i].k_front / k,
-                k_rear_true: pairs[i].k_rear / k,
-                k_front_predicted: p[0] / k,
-                k_rear_predicted: p[1] / k,
-                er_resimulated: er_sim,
-                error_percent: 100.0 * (er_sim - er[i]) / er[i],
-            }
-        })
-        .collect();
-    // The network's answer over its training range of Er, for rbf.png.
-    let (lo, hi) = train
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &i| {
-            (a.min(er[i]), b.max(er[i]))
-        });
-    let prediction = (0..200)
-        .filter(|_| hi > lo)
-        .map(|j| {
-            let e = lo + (hi - lo) * f64::from(j) / 199.0;
-            let p = net.predict(e);
-            [e, p[0] / k, p[1] / k]
-        })
-        .collect();
-    let report = RbfReport {
-        spread: r.spread,
-        training_pairs: train.len(),
-        condition_number: net.condition,
-        largest_training_misfit: misfit,
-        validation,
-        unit,
-        prediction,
-    };
-    (net, report)
 }
 
 /// The inverse queries on the map: each target's region with the

@@ -3,7 +3,9 @@
 //! ignored; a missing required column, a non-numeric cell, a NaN or an
 //! infinite value is an error naming the file, the line and the column.
 
-use crate::error::{one_column_separator, CellProblem, DuplicateAt, InputError, InputProblem};
+mod records;
+
+use crate::error::{one_column_separator, DuplicateAt, InputError, InputProblem};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -326,15 +328,37 @@ fn read_layout(
     layout: Layout,
     refuse_slips: bool,
 ) -> Result<(Columns, Vec<InputError>, Vec<Slip>), InputError> {
-    let Layout {
-        required,
-        optional,
-        also_read,
-    } = layout;
-    let file_err = |problem| InputError::problem(path, problem);
     // Read whole to find each record's true line (see [`line_of`]).
+    let bytes = read_bytes(path, layout.required)?;
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(bytes.as_slice());
+    let headers = read_header(path, &bytes, &mut rdr, layout.required)?;
+    let mut out = Columns {
+        header: headers.iter().map(str::to_string).collect(),
+        header_line: headers.position().map_or(0, |p| line_of(&bytes, p)).max(1),
+        ..Columns::default()
+    };
+    let (wanted, missing) = match_header(path, &headers, out.header_line, &layout)?;
+    let (mut bad, slipped) = header_refusals(path, &out, missing, &layout, refuse_slips)?;
+    for (i, name) in &wanted {
+        out.data.insert(name.clone(), Vec::new());
+        out.positions.insert(name.clone(), i + 1);
+    }
+    records::read_records(path, &bytes, &headers, rdr, &wanted, &mut out, &mut bad)?;
+    if out.is_empty() {
+        return Err(InputError::NoRows {
+            path: path.to_path_buf(),
+        });
+    }
+    Ok((out, bad, slipped))
+}
+
+/// The file's bytes; a folder named as one (not as the OS's "Is a
+/// directory") and a file of only white space refused.
+fn read_bytes(path: &Path, required: &[&str]) -> Result<Vec<u8>, InputError> {
     let bytes = std::fs::read(path).map_err(|source| {
-        // A folder named as one, not as the OS's "Is a directory".
         crate::io::file_kind::not_wanted(path, required).unwrap_or(InputError::Io {
             path: path.to_path_buf(),
             source,
@@ -346,22 +370,31 @@ fn read_layout(
             path: path.to_path_buf(),
         });
     }
-    let line_at = |p: Option<&csv::Position>| p.map_or(0, |p| line_of(&bytes, p));
-    let mut rdr = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .from_reader(bytes.as_slice());
-    let headers = rdr
-        .headers()
-        .map_err(|e| match not_utf8(&bytes, &e) {
-            // An image or archive is named as one, not asked whether it
-            // was saved as Latin-1.
-            Some(_) if crate::error::ForeignFormat::of(&bytes).is_some() => {
-                crate::io::file_kind::not_wanted(path, required).unwrap_or_else(|| {
-                    file_err(InputProblem::Header {
-                        detail: e.to_string(),
-                    })
-                })
+    Ok(bytes)
+}
+
+/// The header record; a byte that is not UTF-8 in it refused at its line
+/// and column, an image or archive named as one (not asked whether it was
+/// saved as Latin-1).
+fn read_header(
+    path: &Path,
+    bytes: &[u8],
+    rdr: &mut csv::Reader<&[u8]>,
+    required: &[&str],
+) -> Result<csv::StringRecord, InputError> {
+    let file_err = |e: &csv::Error| {
+        InputError::problem(
+            path,
+            InputProblem::Header {
+                detail: e.to_string(),
+            },
+        )
+    };
+    rdr.headers()
+        .cloned()
+        .map_err(|e| match not_utf8(bytes, &e) {
+            Some(_) if crate::error::ForeignFormat::of(bytes).is_some() => {
+                crate::io::file_kind::not_wanted(path, required).unwrap_or_else(|| file_err(&e))
             }
             Some(at) => InputError::problem_at(
                 path,
@@ -369,22 +402,33 @@ fn read_layout(
                 at.column,
                 InputProblem::NotUtf8 { byte: at.byte },
             ),
-            None => file_err(InputProblem::Header {
-                detail: e.to_string(),
-            }),
-        })?
-        .clone();
-    let mut wanted: Vec<(usize, String)> = Vec::new();
+            None => file_err(&e),
+        })
+}
+
+/// The wanted columns a header has: each one's 0-based position and name.
+type Wanted = Vec<(usize, String)>;
+
+/// The header's position of each wanted column (`required`, then
+/// `optional`) present, and the refusals of the required ones missing; a
+/// column named twice refused at once: which one holds the signal is for
+/// the user (a second would be dropped silently).
+fn match_header(
+    path: &Path,
+    headers: &csv::StringRecord,
+    header_line: usize,
+    layout: &Layout,
+) -> Result<(Wanted, Vec<InputError>), InputError> {
+    let (required, optional) = (layout.required, layout.optional);
+    let mut wanted: Wanted = Vec::new();
     let mut missing: Vec<InputError> = Vec::new();
     for name in required.iter().chain(optional) {
         match headers.iter().position(|h| h == *name) {
             Some(i) => {
-                // A second column of the same name would be dropped
-                // silently: which one holds the signal is for the user.
                 if let Some(j) = headers.iter().skip(i + 1).position(|h| h == *name) {
                     return Err(InputError::problem_at(
                         path,
-                        line_at(headers.position()).max(1),
+                        header_line,
                         i + j + 2,
                         InputProblem::Duplicate {
                             name: name.to_string(),
@@ -396,19 +440,27 @@ fn read_layout(
             }
             None if required.contains(name) => missing.push(InputError::MissingColumn {
                 path: path.to_path_buf(),
-                line: line_at(headers.position()).max(1),
+                line: header_line,
                 name: name.to_string(),
                 header: headers.iter().map(str::to_string).collect(),
-                meant: meant(name, &headers, required, optional),
+                meant: meant(name, headers, required, optional),
             }),
             None => {}
         }
     }
-    let mut out = Columns {
-        header: headers.iter().map(str::to_string).collect(),
-        header_line: line_at(headers.position()).max(1),
-        ..Columns::default()
-    };
+    Ok((wanted, missing))
+}
+
+/// What the header alone decides: the slips of column names (refused
+/// where `refuse_slips`, else returned apart) and, where a required column
+/// is `missing`, the file refused with every column to rename at once.
+fn header_refusals(
+    path: &Path,
+    out: &Columns,
+    mut missing: Vec<InputError>,
+    layout: &Layout,
+    refuse_slips: bool,
+) -> Result<(Vec<InputError>, Vec<Slip>), InputError> {
     // A header column already said to mean a missing required one (`Fz`
     // for `fz`) is not also said to mean an optional one (`mz`).
     let taken: Vec<String> = missing
@@ -418,18 +470,19 @@ fn read_layout(
             _ => None,
         })
         .collect();
-    let mut slipped: Vec<Slip> = also_read.map_or_else(Vec::new, |also| {
-        let known: Vec<&str> = required
+    let mut slipped: Vec<Slip> = layout.also_read.map_or_else(Vec::new, |also| {
+        let known: Vec<&str> = layout
+            .required
             .iter()
             .chain(also)
             .copied()
             .chain(taken.iter().map(String::as_str))
             .collect();
-        slips(&out.header, optional, &known)
+        slips(&out.header, layout.optional, &known)
     });
+    let line = out.header_line;
     let mut bad: Vec<InputError> = Vec::new();
     if refuse_slips {
-        let line = out.header_line;
         bad.extend(slipped.drain(..).map(|s| refusal(path, line, s)));
     }
     // A header of one column holding `;` or tabs is one problem, said once
@@ -438,128 +491,22 @@ fn read_layout(
     if one_column_separator(&out.header).is_some() {
         missing.truncate(1);
     }
-    if !missing.is_empty() {
-        // A file of another kind (rig data given as a run, a scenario as
-        // rig data) is named as such: its columns read as slips of the
-        // wanted ones (a rig's `fy` for a run's `ay`) would mislead.
-        if let Some(e) = crate::io::file_kind::not_wanted(path, required) {
-            return Err(e);
-        }
-        missing.append(&mut bad);
-        // A file refused for its header says every column to rename in
-        // that one run, the slips a reader would only have warned of too
-        // (`ay [m/s^2]` beside `t [s]`).
-        let line = out.header_line;
-        missing.extend(slipped.iter().cloned().map(|s| refusal(path, line, s)));
-        if let Some(e) = InputError::all_in_file_order(path, missing) {
-            return Err(e);
-        }
+    if missing.is_empty() {
+        return Ok((bad, slipped));
     }
-    for (i, name) in &wanted {
-        out.data.insert(name.clone(), Vec::new());
-        out.positions.insert(name.clone(), i + 1);
+    // A file of another kind (rig data given as a run, a scenario as rig
+    // data) is named as such: its columns read as slips of the wanted ones
+    // (a rig's `fy` for a run's `ay`) would mislead.
+    if let Some(e) = crate::io::file_kind::not_wanted(path, layout.required) {
+        return Err(e);
     }
-    for rec in rdr.records() {
-        let rec = rec.map_err(|e| {
-            if let Some(at) = not_utf8(&bytes, &e) {
-                return InputError::Cell {
-                    path: path.to_path_buf(),
-                    line: at.line,
-                    column: at.column,
-                    name: headers.get(at.column - 1).unwrap_or("").to_string(),
-                    cell: String::new(),
-                    problem: CellProblem::NotUtf8 { byte: at.byte },
-                };
-            }
-            let line = line_at(e.position());
-            // The reader's own message repeats its line, one short in a
-            // CRLF file: only what is wrong is kept.
-            let detail = match e.kind() {
-                csv::ErrorKind::UnequalLengths {
-                    expected_len, len, ..
-                } => format!(
-                    "found a record with {len} fields, but the previous record has {expected_len}"
-                ),
-                _ => e.to_string(),
-            };
-            InputError::MalformedRow {
-                path: path.to_path_buf(),
-                line,
-                detail,
-            }
-        })?;
-        let line = line_at(rec.position());
-        if out.lines.is_empty() {
-            if let Some(e) = units_row(path, line, &rec, &wanted) {
-                bad.push(e);
-                for (_, name) in &wanted {
-                    out.data
-                        .get_mut(name)
-                        .expect("inserted above")
-                        .push(f64::NAN);
-                }
-                out.lines.push(line);
-                continue;
-            }
-        }
-        for (idx, name) in &wanted {
-            let cell = rec.get(*idx).unwrap_or("");
-            let at = |problem| InputError::Cell {
-                path: path.to_path_buf(),
-                line,
-                column: idx + 1,
-                name: name.clone(),
-                cell: cell.to_string(),
-                problem,
-            };
-            // Every bad cell is said, not only the first: a user fixing a
-            // file learns of them all at once.
-            let v = match cell.parse::<f64>() {
-                Err(_) => {
-                    bad.push(at(CellProblem::NotANumber));
-                    f64::NAN
-                }
-                Ok(v) if !v.is_finite() => {
-                    bad.push(at(CellProblem::NotFinite));
-                    v
-                }
-                Ok(v) => v,
-            };
-            out.data.get_mut(name).expect("inserted above").push(v);
-        }
-        out.lines.push(line);
+    missing.append(&mut bad);
+    // A file refused for its header says every column to rename in that
+    // one run, the slips a reader would only have warned of too (`ay
+    // [m/s^2]` beside `t [s]`).
+    missing.extend(slipped.iter().cloned().map(|s| refusal(path, line, s)));
+    match InputError::all_in_file_order(path, missing) {
+        Some(e) => Err(e),
+        None => Ok((Vec::new(), slipped)),
     }
-    if out.is_empty() {
-        return Err(InputError::NoRows {
-            path: path.to_path_buf(),
-        });
-    }
-    Ok((out, bad, slipped))
-}
-
-/// The first row under the header read as a row of units (`s, m/s, rad`):
-/// no cell read is empty or a number, and there are two or more; one
-/// refusal for the row, not one per cell.
-fn units_row(
-    path: &Path,
-    line: usize,
-    rec: &csv::StringRecord,
-    wanted: &[(usize, String)],
-) -> Option<InputError> {
-    let cells: Vec<&str> = wanted
-        .iter()
-        .map(|(i, _)| rec.get(*i).unwrap_or("").trim())
-        .collect();
-    let words = cells.len() >= 2
-        && cells
-            .iter()
-            .all(|c| !c.is_empty() && c.parse::<f64>().is_err());
-    words.then(|| InputError::Cell {
-        path: path.to_path_buf(),
-        line,
-        column: wanted[0].0 + 1,
-        name: wanted[0].1.clone(),
-        cell: cells.join(", "),
-        problem: CellProblem::UnitsRow,
-    })
 }

@@ -9,8 +9,7 @@
 //! ([`crate::identify::mf_staged`]) and written as a .tir ([`staged`]).
 
 use crate::identify::data::Condition;
-use crate::identify::grouping::{group, Grouping, GroupingReport, SlipAxis, Variable};
-use crate::io::rig::read_rig;
+use crate::identify::grouping::GroupingReport;
 mod choices;
 mod curvature;
 pub use curvature::{Curvature, CurvatureExcess, Pac89Reversal};
@@ -35,23 +34,24 @@ mod force_scale;
 mod further;
 mod holds;
 pub use holds::Held;
-use holds::{held_by_fits, holds_of};
 mod staged;
 mod two_stage;
 pub use two_stage::{TwoStageReport, Written};
 mod staged_figure;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
-use crate::identify::{fit_channel_holding, start_tyre_of, Channel, Fit, FitSettings};
+use crate::identify::{start_tyre_of, Fit};
 use crate::report::plot::Figure;
-use crate::report::{refuse_overwrites, write_bytes, write_json_sorted, OutputLock};
+use crate::report::{write_bytes, write_json_sorted, OutputLock};
 use crate::tyre::mf::MfCoefficients;
-use crate::tyre::{Identification, ModelName, SlipState, Tyre};
+use crate::tyre::Tyre;
 pub use choices::{IdentifyModel, Polish, StartArg};
 use serde::Serialize;
 use staged::run_staged;
+mod swarm;
 pub use staged::StagedJob;
 use std::path::PathBuf;
+use swarm::run_swarm;
 
 /// What `identify` is asked to do. The fields are public for struct
 /// literals (the command line, Python); [`run`] checks them first
@@ -381,201 +381,4 @@ pub(super) fn on_data<'a>(
     channel: Option<&'static str>,
 ) -> impl Fn(Error) -> Error + 'a {
     move |e| FitError::in_data(&o.data, channel, e).into()
-}
-
-/// The swarm fit of `model`: the first channel, PAC89's two stages, the
-/// aligning moment and the longitudinal force.
-fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
-    let mut settings = FitSettings::new(o.seed);
-    settings.local = o.local.into();
-    // What the data do not determine is held, not written where the
-    // optimiser left it (`identify/undetermined.rs`).
-    settings.hold_undetermined = true;
-    let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
-    // Each force is fitted to its pure slip (`identify/pure.rs`).
-    let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
-    if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
-        return Err(FitError::NoLateralData {
-            data: o.data.clone(),
-            model: model.as_str(),
-        }
-        .into());
-    }
-    let grouping = Grouping {
-        load: o.load,
-        pressure: o.pressure,
-        camber: o.camber,
-        alpha_bin: o.alpha_bin_deg.to_radians(),
-        kappa_bin: o.kappa_bin,
-        ..Grouping::default()
-    };
-    // After a lateral fit, an `fx` without a slip-ratio sweep is no
-    // longitudinal test: not fitted, and said so.
-    let long_view = long_view.filter(|_| set_aside.has_kappa_sweep() || !lateral.has_lateral());
-    let (first, grouped) = match (&long_view, lateral.has_lateral()) {
-        (_, true) => (
-            Channel::LateralForce,
-            group(&o.data, &lateral, &grouping, SlipAxis::Angle)?,
-        ),
-        (Some(view), false) => (
-            Channel::LongitudinalForce,
-            group(&o.data, view, &grouping, SlipAxis::Ratio)?,
-        ),
-        (None, false) => {
-            return Err(FitError::NoData {
-                data: o.data.clone(),
-            }
-            .into())
-        }
-    };
-    let mut conditions = grouped.conditions;
-    // A linear tyre is fitted to small slip only (a line through saturated
-    // data is a secant).
-    let mut window = None;
-    if model.as_str() == "linear" && first == Channel::LateralForce {
-        let smallest = linear_window::smallest_slip(&conditions);
-        let (kept, w) = linear_window::windowed(conditions);
-        if kept.is_empty() && w.points_left_out > 0 {
-            return Err(FitError::NoSmallSlip {
-                data: o.data.clone(),
-                window_deg: w.max_abs_alpha_deg,
-                points: w.points_left_out,
-                smallest_deg: smallest.to_degrees(),
-            }
-            .into());
-        }
-        conditions = kept;
-        window = Some(w);
-    }
-    if conditions.is_empty() {
-        return Err(FitError::NoCondition {
-            data: o.data.clone(),
-            grouping: grouped.report.account(),
-        }
-        .into());
-    }
-    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
-    loads.sort_by(f64::total_cmp);
-    let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
-    refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
-    let lock = output_lock(o)?;
-    // The models fitted here have no pressure terms: several pressures
-    // pooled into one parameter set blur their differences into the fit.
-    let levels_of = |v: Variable| {
-        grouped
-            .report
-            .levels
-            .iter()
-            .find(|l| l.variable == v)
-            .map_or(0, |l| l.levels.len())
-    };
-    let pressures_pooled = levels_of(Variable::Pressure);
-    // A model whose lateral fit frees nothing more with more cambers has
-    // no camber terms: pooled cambers blur into it alike.
-    let many = 1000;
-    let camber_terms = tyre0.lateral_free(many, many) != tyre0.lateral_free(many, 1);
-    let cambers_pooled = if camber_terms {
-        0
-    } else {
-        levels_of(Variable::Camber)
-    };
-    // A model whose force is the same at two loads (a linear tyre's
-    // C·α) has no load terms: pooled loads blur into its one stiffness.
-    let at = |fz| tyre0.point_forces(&SlipState::lateral(0.02, fz), None).fy;
-    let loads_pooled = if at(1000.0) == at(3000.0) {
-        levels_of(Variable::Load)
-    } else {
-        0
-    };
-    // The two-stage identification fits every coefficient: with a
-    // coefficient held with --hold it is not run (the summary says so).
-    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
-        && first == Channel::LateralForce
-        && o.hold.is_empty();
-    let (fit, stages) = two_stage::beside_direct(asks_two_stage, &conditions, &settings, || {
-        fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
-    });
-    let fit = fit.map_err(on_data(o, None))?;
-    let mut r = SwarmReport {
-        tyre: fit.tyre.clone(),
-        file: String::new(),
-        fit,
-        two_stage: None,
-        pac89_reversal: None,
-        curvature_held: None,
-        written: None,
-        linear_window: window,
-        aligning: None,
-        longitudinal: None,
-        data: o.data.display().to_string(),
-        recorded: o.recorded(),
-        held: Vec::new(),
-        notes: Vec::new(),
-        flat_alpha,
-        set_aside,
-        small_forces: force_scale::small_forces(&data),
-        sample_slips: [None; 2],
-        grouping: grouped.report,
-        longitudinal_grouping: None,
-        options: o.clone(),
-        loads_pooled,
-        pressures_pooled,
-        cambers_pooled,
-        conditions,
-        longitudinal_conditions: Vec::new(),
-        lock,
-    };
-    let first_data = match first {
-        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&lateral),
-        _ => &lateral,
-    };
-    ranges::set_first_sample_slips(&mut r, first_data);
-    // The two-stage result runs beside the rule that holds what the data
-    // do not determine: the two free fits are compared, and the rule then
-    // holds what the one written leaves undetermined (`two_stage.rs`).
-    if let Some(stages) = stages {
-        two_stage::two_stage(o, &mut r, &tyre0, &settings, stages)?;
-    }
-    if let Tyre::Pac89(_) = r.tyre {
-        curvature_hold::hold_curvature(o, &mut r, &tyre0, &settings)?;
-    }
-    further::aligning_and_longitudinal(
-        o,
-        &mut r,
-        further::Inputs {
-            first,
-            has_mz: data.mz.is_some(),
-            long_view: long_view.as_ref(),
-            grouping: &grouping,
-            settings: &settings,
-        },
-    )?;
-    if let Some(w) = r.linear_window.as_mut() {
-        w.pneumatic_trail = linear_window::trail(&r.conditions);
-        linear_window::set_trail(&mut r.tyre, w.pneumatic_trail.unwrap_or(0.0));
-    }
-    let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
-        .into_iter()
-        .flatten()
-        .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
-        .collect();
-    r.held = holds_of(o, &fitted);
-    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
-    r.held.extend(held_by_fits(
-        &fits.into_iter().flatten().collect::<Vec<_>>(),
-        &r.tyre,
-    ));
-    written::finite_fits(&r).map_err(on_data(o, None))?;
-    r.pac89_reversal = match (&r.tyre, r.fit.channel) {
-        (Tyre::Pac89(p), Channel::LateralForce) => {
-            curvature::pac89_reversal(p, &ranges::fitted_spans(&r))
-        }
-        _ => None,
-    };
-    r.notes = notes::notes(&r)
-        .into_iter()
-        .chain(r.warning_notes())
-        .collect();
-    r.file = written::tyre_file_text(&r, &o.output_path())?;
-    Ok(r)
 }

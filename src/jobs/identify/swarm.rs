@@ -1,0 +1,279 @@
+//! `identify` of the models fitted by a swarm and a local polish (Zhang &
+//! Li (2017), Zhang et al. (2021)): the first channel (lateral force, or
+//! the longitudinal force of a file without lateral data) grouped into
+//! conditions and fitted, PAC89's two stages beside it, then the aligning
+//! moment and the longitudinal force where the data and the model have
+//! them. Forces in N, slips in rad, as the rig file gives them (SI).
+
+use super::holds::{held_by_fits, holds_of};
+use super::{
+    curvature, curvature_hold, flat_alpha, force_scale, further, linear_window, notes, on_data,
+    output_lock, outputs, pure_rows, ranges, two_stage, written, LinearWindow, Options,
+    SwarmReport,
+};
+use crate::error::{Error, FitError};
+use crate::identify::data::Condition;
+use crate::identify::data::RigData;
+use crate::identify::grouping::{group, Grouped, Grouping, SlipAxis, Variable};
+use crate::identify::pac89_two_stage::TwoStage;
+use crate::identify::{fit_channel_holding, start_tyre_of, Channel, FitSettings};
+use crate::io::rig::read_rig;
+use crate::report::refuse_overwrites;
+use crate::tyre::{Identification, ModelName, SlipState, Tyre};
+
+/// The swarm fit of `model`: the first channel, PAC89's two stages, the
+/// aligning moment and the longitudinal force.
+pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Error> {
+    let mut settings = FitSettings::new(o.seed);
+    settings.local = o.local.into();
+    // What the data do not determine is held, not written where the
+    // optimiser left it (`identify/undetermined.rs`).
+    settings.hold_undetermined = true;
+    let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
+    // Each force is fitted to its pure slip (`identify/pure.rs`).
+    let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
+    if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
+        return Err(FitError::NoLateralData {
+            data: o.data.clone(),
+            model: model.as_str(),
+        }
+        .into());
+    }
+    let grouping = grouping_of(o);
+    // After a lateral fit, an `fx` without a slip-ratio sweep is no
+    // longitudinal test: not fitted, and said so.
+    let long_view = long_view.filter(|_| set_aside.has_kappa_sweep() || !lateral.has_lateral());
+    let (first, grouped) = first_channel(o, &lateral, long_view.as_ref(), &grouping)?;
+    let (conditions, window) = fitted_conditions(o, model, first, &grouped)?;
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.sort_by(f64::total_cmp);
+    let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
+    refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
+    let lock = output_lock(o)?;
+    let pooled = Pooled::of(&tyre0, &grouped);
+    // The two-stage identification fits every coefficient: with a
+    // coefficient held with --hold it is not run (the summary says so).
+    let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
+        && first == Channel::LateralForce
+        && o.hold.is_empty();
+    let (fit, stages) = two_stage::beside_direct(asks_two_stage, &conditions, &settings, || {
+        fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
+    });
+    let fit = fit.map_err(on_data(o, None))?;
+    let mut r = SwarmReport {
+        tyre: fit.tyre.clone(),
+        file: String::new(),
+        fit,
+        two_stage: None,
+        pac89_reversal: None,
+        curvature_held: None,
+        written: None,
+        linear_window: window,
+        aligning: None,
+        longitudinal: None,
+        data: o.data.display().to_string(),
+        recorded: o.recorded(),
+        held: Vec::new(),
+        notes: Vec::new(),
+        flat_alpha,
+        set_aside,
+        small_forces: force_scale::small_forces(&data),
+        sample_slips: [None; 2],
+        grouping: grouped.report,
+        longitudinal_grouping: None,
+        options: o.clone(),
+        loads_pooled: pooled.loads,
+        pressures_pooled: pooled.pressures,
+        cambers_pooled: pooled.cambers,
+        conditions,
+        longitudinal_conditions: Vec::new(),
+        lock,
+    };
+    let first_data = match first {
+        Channel::LongitudinalForce => long_view.as_ref().unwrap_or(&lateral),
+        _ => &lateral,
+    };
+    ranges::set_first_sample_slips(&mut r, first_data);
+    let inputs = further::Inputs {
+        first,
+        has_mz: data.mz.is_some(),
+        long_view: long_view.as_ref(),
+        grouping: &grouping,
+        settings: &settings,
+    };
+    later_fits(o, &mut r, &tyre0, stages, inputs)?;
+    finish(o, &mut r)?;
+    Ok(r)
+}
+
+/// The fits after the first channel's direct one: PAC89's two stages
+/// beside it (the two free fits compared, then what the one written leaves
+/// undetermined held, `two_stage.rs`), PAC89's curvature held where it
+/// reverses, the aligning moment and the longitudinal force.
+fn later_fits(
+    o: &Options,
+    r: &mut SwarmReport,
+    tyre0: &Tyre,
+    stages: Option<Result<TwoStage, FitError>>,
+    inputs: further::Inputs,
+) -> Result<(), Error> {
+    if let Some(stages) = stages {
+        two_stage::two_stage(o, r, tyre0, inputs.settings, stages)?;
+    }
+    if let Tyre::Pac89(_) = r.tyre {
+        curvature_hold::hold_curvature(o, r, tyre0, inputs.settings)?;
+    }
+    further::aligning_and_longitudinal(o, r, inputs)
+}
+
+/// The grouping the options ask for (load, pressure, camber selected;
+/// the slip bins).
+fn grouping_of(o: &Options) -> Grouping {
+    Grouping {
+        load: o.load,
+        pressure: o.pressure,
+        camber: o.camber,
+        alpha_bin: o.alpha_bin_deg.to_radians(),
+        kappa_bin: o.kappa_bin,
+        ..Grouping::default()
+    }
+}
+
+/// The channel fitted first and its data grouped into conditions: the
+/// lateral force where the file has it, else the longitudinal force.
+fn first_channel(
+    o: &Options,
+    lateral: &RigData,
+    long_view: Option<&RigData>,
+    grouping: &Grouping,
+) -> Result<(Channel, Grouped), Error> {
+    Ok(match (long_view, lateral.has_lateral()) {
+        (_, true) => (
+            Channel::LateralForce,
+            group(&o.data, lateral, grouping, SlipAxis::Angle)?,
+        ),
+        (Some(view), false) => (
+            Channel::LongitudinalForce,
+            group(&o.data, view, grouping, SlipAxis::Ratio)?,
+        ),
+        (None, false) => {
+            return Err(FitError::NoData {
+                data: o.data.clone(),
+            }
+            .into())
+        }
+    })
+}
+
+/// The conditions the first channel is fitted to: a linear tyre's lateral
+/// force to small slip only (a line through saturated data is a secant),
+/// with the window it was cut to; none left is refused.
+fn fitted_conditions(
+    o: &Options,
+    model: ModelName,
+    first: Channel,
+    grouped: &Grouped,
+) -> Result<(Vec<Condition>, Option<LinearWindow>), Error> {
+    let mut conditions = grouped.conditions.clone();
+    let mut window = None;
+    if model.as_str() == "linear" && first == Channel::LateralForce {
+        let smallest = linear_window::smallest_slip(&conditions);
+        let (kept, w) = linear_window::windowed(conditions);
+        if kept.is_empty() && w.points_left_out > 0 {
+            return Err(FitError::NoSmallSlip {
+                data: o.data.clone(),
+                window_deg: w.max_abs_alpha_deg,
+                points: w.points_left_out,
+                smallest_deg: smallest.to_degrees(),
+            }
+            .into());
+        }
+        conditions = kept;
+        window = Some(w);
+    }
+    if conditions.is_empty() {
+        return Err(FitError::NoCondition {
+            data: o.data.clone(),
+            grouping: grouped.report.account(),
+        }
+        .into());
+    }
+    Ok((conditions, window))
+}
+
+/// The levels of load, pressure and camber pooled into one parameter set
+/// by a model without terms for them (0: not pooled, or the model has
+/// them): their differences blur into the fit.
+struct Pooled {
+    loads: usize,
+    pressures: usize,
+    cambers: usize,
+}
+
+impl Pooled {
+    fn of(tyre0: &Tyre, grouped: &Grouped) -> Self {
+        let levels_of = |v: Variable| {
+            grouped
+                .report
+                .levels
+                .iter()
+                .find(|l| l.variable == v)
+                .map_or(0, |l| l.levels.len())
+        };
+        // A model whose lateral fit frees nothing more with more cambers
+        // has no camber terms.
+        let many = 1000;
+        let camber_terms = tyre0.lateral_free(many, many) != tyre0.lateral_free(many, 1);
+        // A model whose force is the same at two loads (a linear tyre's
+        // C·α) has no load terms.
+        let at = |fz| tyre0.point_forces(&SlipState::lateral(0.02, fz), None).fy;
+        Pooled {
+            // The models fitted here have no pressure terms.
+            pressures: levels_of(Variable::Pressure),
+            cambers: if camber_terms {
+                0
+            } else {
+                levels_of(Variable::Camber)
+            },
+            loads: if at(1000.0) == at(3000.0) {
+                levels_of(Variable::Load)
+            } else {
+                0
+            },
+        }
+    }
+}
+
+/// After the fits: a linear tyre's trail, the coefficients held (by
+/// `--hold` and by the fits), every fitted value checked finite, PAC89's
+/// reversal of its curve, the notes and the tyre file's text.
+fn finish(o: &Options, r: &mut SwarmReport) -> Result<(), Error> {
+    if let Some(w) = r.linear_window.as_mut() {
+        w.pneumatic_trail = linear_window::trail(&r.conditions);
+        linear_window::set_trail(&mut r.tyre, w.pneumatic_trail.unwrap_or(0.0));
+    }
+    let fitted: Vec<String> = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()]
+        .into_iter()
+        .flatten()
+        .flat_map(|f| f.parameters.iter().map(|p| p.name.clone()))
+        .collect();
+    r.held = holds_of(o, &fitted);
+    let fits = [Some(&r.fit), r.aligning.as_ref(), r.longitudinal.as_ref()];
+    r.held.extend(held_by_fits(
+        &fits.into_iter().flatten().collect::<Vec<_>>(),
+        &r.tyre,
+    ));
+    written::finite_fits(r).map_err(on_data(o, None))?;
+    r.pac89_reversal = match (&r.tyre, r.fit.channel) {
+        (Tyre::Pac89(p), Channel::LateralForce) => {
+            curvature::pac89_reversal(p, &ranges::fitted_spans(r))
+        }
+        _ => None,
+    };
+    r.notes = notes::notes(r)
+        .into_iter()
+        .chain(r.warning_notes())
+        .collect();
+    r.file = written::tyre_file_text(r, &o.output_path())?;
+    Ok(())
+}

@@ -52,10 +52,10 @@ pub use crate::diagnose::report::{
     BaseReport, ChannelNoise, Diagnosis, GapReport, Overlay, PartAxis, Ranked, RunGap, Shrinkage,
     Verdict,
 };
-use crate::diagnose::report::{CalibrationSource, Confounded, GapFinding, InSet, Note, Unseen};
+use crate::diagnose::report::{CalibrationSource, GapFinding, Note, Unseen};
 
 use crate::diagnose::base::{base_models, Bases, TyreSource};
-use crate::diagnose::campaign::{Campaign, StatedFriction};
+use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::{EffectKind, Needs};
 use crate::diagnose::model::channels::{Channel, ChannelErrors};
 use crate::diagnose::model::{Augmented, Observed};
@@ -63,17 +63,19 @@ use crate::diagnose::report::summary::{base_run_gap, gap_summary, parts_table};
 use crate::diagnose::report::trust::{channel_trust, Trust};
 use crate::diagnose::timing::{Recorder, Timing};
 use crate::diagnose::verdict::baseline::baseline;
-use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{prepare, Calibrated, Context, Scored, MAX_FOLDS};
 use crate::diagnose::verdict::screening::singles;
-use crate::diagnose::verdict::search::{confounded_with, in_set, lookalikes_alone, search, Search};
+use crate::diagnose::verdict::search::search;
 use crate::error::{DiagnosisError, Error};
 use crate::identify::grouping::GroupingReport;
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
 use crate::measured::road::{RoadGeometry, SensorOffsets};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+mod conclusion;
+use conclusion::{conclude, with_rows, Concluded};
 
 /// Work units reported to the progress counter for a campaign.
 pub fn work_units(c: &Campaign) -> usize {
@@ -352,14 +354,40 @@ pub fn diagnose_timed(c: &Campaign) -> Result<(Diagnosis, Timing), Error> {
     Ok((d, t))
 }
 
-/// The diagnosis, its phases timed by `recorder`.
-fn run(
+/// The notes of a diagnosis: the campaign's own (as read) first, then the
+/// candidates the runs cannot see (`visibility`), the replay grid, the
+/// channel uncertainties stated but unused or below the runs' scatter.
+fn notes_of(
     c: &Campaign,
-    progress: Option<&AtomicUsize>,
-    recorder: &Recorder,
-) -> Result<Diagnosis, Error> {
-    let timing = Some(recorder);
-    let set = &c.settings;
+    visibility: Vec<Note>,
+    ctx: &Context,
+    noise: &[ChannelNoise],
+) -> Vec<Note> {
+    let mut notes: Vec<Note> = c
+        .notes
+        .iter()
+        .map(|text| Note::Campaign { text: text.clone() })
+        .collect();
+    notes.extend(visibility);
+    notes.extend(grid_note(ctx, c.settings.step));
+    notes.extend(noise_unmeasured(c, noise).map(|channel| Note::UncertaintyUnused { channel }));
+    notes.extend(noise.iter().filter_map(below_scatter));
+    notes
+}
+
+/// Each replayed piece's road: bank and grade as logged or derived, with
+/// the sensor offsets the standstills and straights measured removed.
+fn roads(c: &Campaign, ctx: &Context) -> Vec<RoadGeometry> {
+    c.runs
+        .iter()
+        .zip(&ctx.runs)
+        .map(|(m, r)| RoadGeometry::of(&r.name, m, offsets(&ctx.calibrated)))
+        .collect()
+}
+
+/// The candidates the runs can see and the notes on those they cannot; a
+/// campaign whose every candidate is unseen is refused with what each lacks.
+fn candidates_seen(c: &Campaign) -> Result<(Vec<EffectKind>, Vec<Note>), Error> {
     let (effects, visibility) = visible_effects(c);
     if effects.is_empty() && !c.effects.is_empty() {
         let unseen = visibility
@@ -375,6 +403,18 @@ fn run(
         }
         .into());
     }
+    Ok((effects, visibility))
+}
+
+/// The diagnosis, its phases timed by `recorder`.
+fn run(
+    c: &Campaign,
+    progress: Option<&AtomicUsize>,
+    recorder: &Recorder,
+) -> Result<Diagnosis, Error> {
+    let timing = Some(recorder);
+    let set = &c.settings;
+    let (effects, visibility) = candidates_seen(c)?;
     let (runs, folds, pso) = prepare(c);
     let Trust {
         noise,
@@ -386,11 +426,10 @@ fn run(
         p.fetch_add(1, Ordering::Relaxed);
     }
 
+    // A sideslip in the other sign convention is refused before any fit.
     crate::diagnose::base::beta_sign::check(c, &bases.all).map_err(|source| {
-        DiagnosisError::BetaAgainstModel {
-            campaign: c.source.clone(),
-            source,
-        }
+        let campaign = c.source.clone();
+        DiagnosisError::BetaAgainstModel { campaign, source }
     })?;
     let run_gaps = base_gaps(c, &bases.all, &floors);
     let calibrated = calibrated(c);
@@ -408,42 +447,19 @@ fn run(
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
     let significant = rules::significant(j0, jn);
-    let mut notes = visibility;
-    notes.extend(grid_note(&ctx, set.step));
-    notes.extend(noise_unmeasured(c, &noise).map(|channel| Note::UncertaintyUnused { channel }));
-    notes.extend(noise.iter().filter_map(below_scatter));
-    let read = c
-        .notes
-        .iter()
-        .map(|text| Note::Campaign { text: text.clone() });
-    notes.splice(0..0, read);
+    let notes = notes_of(c, visibility, &ctx, &noise);
     let (singles, order, screened, screened_rows) =
         singles(&ctx, &effects, &base, set.screening, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();
 
-    let found = if significant {
+    // Without a significant gap nothing is searched.
+    let found = significant.then(|| {
         let all: Vec<usize> = order.iter().chain(&screened).copied().collect();
-        search(
-            &ctx,
-            &singles,
-            (&order, &all),
-            &base,
-            (set.max_effects, set.screening),
-        )
-    } else {
-        Search::default()
-    };
+        let limits = (set.max_effects, set.screening);
+        search(&ctx, &singles, (&order, &all), &base, limits)
+    });
+    let found = found.unwrap_or_default();
     let chosen = found.chosen.as_ref();
-    let mut confounded = chosen.map_or_else(Vec::new, |sc| {
-        confounded_with(sc, &singles, &found.lookalikes, &base)
-    });
-    // A set's look-alikes fitted in it: their rows join the combinations,
-    // and those the set tells apart are confounded no longer.
-    let swapped = chosen.map_or_else(Vec::new, |sc| {
-        in_set(&ctx, sc, &singles, &confounded, &base, &found.combinations)
-    });
-    told_apart(&mut confounded, &swapped);
-
     // Before and after on held-out runs, per channel, window and regime.
     let (base_obs, after_obs) = before_after(&ctx, chosen);
     let shrinkage = parts_table(&c.runs, &ctx.runs, &base_obs, &after_obs, &floors);
@@ -451,31 +467,18 @@ fn run(
     // the verdict's (base replays again would write after = before, which
     // says the verdict changed nothing).
     let parts = shrinkage.clone();
-    let base_no_tyre = bases
-        .identification
-        .as_ref()
-        .map_or_else(Vec::new, |i| i.no_tyre.clone());
-    let ranked = (&singles[..], &order[..]);
-    let mut verdict = verdict(
+    let Concluded {
+        verdict,
+        confounded,
+        swapped,
+    } = conclude(
+        &ctx,
+        c,
         &found,
-        ranked,
-        &base,
-        significant,
+        (&singles[..], &order[..]),
+        (&base, significant),
         &shrinkage,
-        &base_no_tyre,
-        &calibrated,
     );
-    if let Verdict::NotIdentifiable(n) = &mut verdict {
-        n.road_friction = c.friction_at.map(|line| StatedFriction {
-            value: c.friction,
-            line,
-        });
-    }
-    // The verdict is one of its look-alikes until a test separates them.
-    if let Verdict::Explained(e) = &mut verdict {
-        e.confounded_with = lookalikes_alone(&singles, &confounded, found.start, &base);
-        e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
-    }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     findings.extend(dominant(&base.heldout, &scales));
@@ -490,12 +493,7 @@ fn run(
         notes,
         cleaning: c.cleaning.clone(),
         calibration: c.calibration.clone(),
-        road: c
-            .runs
-            .iter()
-            .zip(&ctx.runs)
-            .map(|(m, r)| RoadGeometry::of(&r.name, m, offsets(&calibrated)))
-            .collect(),
+        road: roads(c, &ctx),
         base: base_report(&bases, tyre_source, rig_grouping),
         gap: GapReport {
             significant,
@@ -515,63 +513,4 @@ fn run(
         overlays,
         timing: recorder.timing(),
     })
-}
-
-/// `rows` with the rows of the look-alikes fitted in the verdict's set
-/// ([`in_set`]) that are not among them, ordered by held-out error.
-fn with_rows(mut rows: Vec<Ranked>, swapped: &[(InSet, Option<Ranked>)]) -> Vec<Ranked> {
-    rows.extend(swapped.iter().filter_map(|(_, r)| r.clone()));
-    rows.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
-    rows
-}
-
-/// Drops from `confounded` the look-alikes the verdict's set tells apart
-/// ([`in_set`]: fitted in its first effect's place, the set does clearly
-/// worse), and the group where one effect is left.
-fn told_apart(confounded: &mut Vec<Confounded>, swapped: &[(InSet, Option<Ranked>)]) {
-    let apart: Vec<EffectKind> = swapped
-        .iter()
-        .filter(|(s, _)| !s.confounded)
-        .map(|(s, _)| s.effects[0])
-        .collect();
-    for c in confounded.iter_mut() {
-        let keep: Vec<bool> = c.effects.iter().map(|e| !apart.contains(e)).collect();
-        let mut k = keep.iter();
-        c.effects.retain(|_| *k.next().unwrap_or(&true));
-        let mut k = keep.iter();
-        c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
-    }
-    confounded.retain(|c| c.effects.len() > 1);
-}
-
-#[cfg(test)]
-mod told_apart_tests {
-    use super::*;
-    use EffectKind::{AeroLoad as A, RoadFriction as F, SensorBias as B, SteerPath as S};
-
-    #[test]
-    fn a_look_alike_the_set_tells_apart_is_confounded_no_longer() {
-        let row = |effects: Vec<EffectKind>, confounded| {
-            let s = InSet {
-                effects,
-                reduction_percent: 50.0,
-                gap: 1.0,
-                window: crate::diagnose::verdict::rules::window(1.0, 1.0),
-                confounded,
-            };
-            (s, None)
-        };
-        let group = || Confounded {
-            effects: vec![A, S, F],
-            reduction_percent: vec![90.0, 89.0, 88.0],
-        };
-        let mut c = vec![group()];
-        told_apart(&mut c, &[row(vec![S, B], true), row(vec![F, B], false)]);
-        assert_eq!(c[0].effects, [A, S]);
-        assert_eq!(c[0].reduction_percent, [90.0, 89.0]);
-        // Every look-alike told apart: no group is left.
-        let mut c = vec![group()];
-        told_apart(&mut c, &[row(vec![S, B], false), row(vec![F, B], false)]);
-        assert!(c.is_empty());
-    }
 }

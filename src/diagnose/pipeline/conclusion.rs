@@ -1,0 +1,133 @@
+//! The diagnosis's conclusion once the search has run: the verdict's
+//! look-alikes (confounded where the runs do not tell them apart, unless
+//! the verdict's set, fitted with one in its first effect's place, does
+//! clearly worse), and the verdict made from the search, the ranked
+//! singles and the held-out shrinkage ([`crate::diagnose::verdict::conclude`]).
+
+use crate::diagnose::campaign::{Campaign, StatedFriction};
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::report::{Confounded, InSet, Ranked, Shrinkage, Verdict};
+use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::conclude::verdict;
+use crate::diagnose::verdict::score::{Context, Scored};
+use crate::diagnose::verdict::search::{confounded_with, in_set, lookalikes_alone, Search};
+
+/// The verdict, the groups of look-alikes it is confounded with, and the
+/// look-alikes fitted in its set ([`in_set`]) with their rows.
+pub(super) struct Concluded {
+    pub(super) verdict: Verdict,
+    pub(super) confounded: Vec<Confounded>,
+    pub(super) swapped: Vec<(InSet, Option<Ranked>)>,
+}
+
+/// The conclusion of a search `found` over the `singles` (cross-validated
+/// ones best first, `order`) against the base model `base` (`significant`:
+/// its gap is above noise), with the verdict's held-out `shrinkage`.
+pub(super) fn conclude(
+    ctx: &Context,
+    c: &Campaign,
+    found: &Search,
+    (singles, order): (&[Scored], &[usize]),
+    (base, significant): (&Baseline, bool),
+    shrinkage: &[Shrinkage],
+) -> Concluded {
+    let chosen = found.chosen.as_ref();
+    let mut confounded = chosen.map_or_else(Vec::new, |sc| {
+        confounded_with(sc, singles, &found.lookalikes, base)
+    });
+    // A set's look-alikes fitted in it: their rows join the combinations,
+    // and those the set tells apart are confounded no longer.
+    let swapped = chosen.map_or_else(Vec::new, |sc| {
+        in_set(ctx, sc, singles, &confounded, base, &found.combinations)
+    });
+    told_apart(&mut confounded, &swapped);
+    let base_no_tyre = ctx
+        .bases
+        .identification
+        .as_ref()
+        .map_or_else(Vec::new, |i| i.no_tyre.clone());
+    let mut verdict = verdict(
+        found,
+        (singles, order),
+        base,
+        significant,
+        shrinkage,
+        &base_no_tyre,
+        &ctx.calibrated,
+    );
+    if let Verdict::NotIdentifiable(n) = &mut verdict {
+        n.road_friction = c.friction_at.map(|line| StatedFriction {
+            value: c.friction,
+            line,
+        });
+    }
+    // The verdict is one of its look-alikes until a test separates them.
+    if let Verdict::Explained(e) = &mut verdict {
+        e.confounded_with = lookalikes_alone(singles, &confounded, found.start, base);
+        e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
+    }
+    Concluded {
+        verdict,
+        confounded,
+        swapped,
+    }
+}
+
+/// `rows` with the rows of the look-alikes fitted in the verdict's set
+/// ([`in_set`]) that are not among them, ordered by held-out error.
+pub(super) fn with_rows(mut rows: Vec<Ranked>, swapped: &[(InSet, Option<Ranked>)]) -> Vec<Ranked> {
+    rows.extend(swapped.iter().filter_map(|(_, r)| r.clone()));
+    rows.sort_by(|a, b| a.heldout_error_after.total_cmp(&b.heldout_error_after));
+    rows
+}
+
+/// Drops from `confounded` the look-alikes the verdict's set tells apart
+/// ([`in_set`]: fitted in its first effect's place, the set does clearly
+/// worse), and the group where one effect is left.
+fn told_apart(confounded: &mut Vec<Confounded>, swapped: &[(InSet, Option<Ranked>)]) {
+    let apart: Vec<EffectKind> = swapped
+        .iter()
+        .filter(|(s, _)| !s.confounded)
+        .map(|(s, _)| s.effects[0])
+        .collect();
+    for c in confounded.iter_mut() {
+        let keep: Vec<bool> = c.effects.iter().map(|e| !apart.contains(e)).collect();
+        let mut k = keep.iter();
+        c.effects.retain(|_| *k.next().unwrap_or(&true));
+        let mut k = keep.iter();
+        c.reduction_percent.retain(|_| *k.next().unwrap_or(&true));
+    }
+    confounded.retain(|c| c.effects.len() > 1);
+}
+
+#[cfg(test)]
+mod told_apart_tests {
+    use super::*;
+    use EffectKind::{AeroLoad as A, RoadFriction as F, SensorBias as B, SteerPath as S};
+
+    #[test]
+    fn a_look_alike_the_set_tells_apart_is_confounded_no_longer() {
+        let row = |effects: Vec<EffectKind>, confounded| {
+            let s = InSet {
+                effects,
+                reduction_percent: 50.0,
+                gap: 1.0,
+                window: crate::diagnose::verdict::rules::window(1.0, 1.0),
+                confounded,
+            };
+            (s, None)
+        };
+        let group = || Confounded {
+            effects: vec![A, S, F],
+            reduction_percent: vec![90.0, 89.0, 88.0],
+        };
+        let mut c = vec![group()];
+        told_apart(&mut c, &[row(vec![S, B], true), row(vec![F, B], false)]);
+        assert_eq!(c[0].effects, [A, S]);
+        assert_eq!(c[0].reduction_percent, [90.0, 89.0]);
+        // Every look-alike told apart: no group is left.
+        let mut c = vec![group()];
+        told_apart(&mut c, &[row(vec![S, B], false), row(vec![F, B], false)]);
+        assert!(c.is_empty());
+    }
+}

@@ -332,7 +332,7 @@ pub enum ParamReason {
     #[error("a cornering stiffness must be positive")]
     StiffnessNotPositive,
     /// A validation index beyond the RBF's pairs.
-    #[error("only {pairs} pairs")]
+    #[error("no such pair: an index counts from 0 in the order `[rbf] front` × `rear_offsets` makes the pairs (each offset in turn, rear ≤ `rear_max`), and they are {pairs}: {}", if *pairs == 0 { "no index is valid".to_string() } else { format!("an index lies in 0–{}", pairs - 1) })]
     TooFewPairs {
         /// The pairs there are.
         pairs: usize,

@@ -43,6 +43,8 @@ pub enum ScenarioProblem {
     LongReplay(super::LongReplay),
     /// An RK4 step beyond the method's stability limit for the model.
     UnstableStep(super::UnstableStep),
+    /// A study's cornering stiffness in the other unit than its `unit`.
+    StiffnessUnit(super::StiffnessSlip),
     /// A `name` that is no folder name: `simulate` writes into
     /// `out/<name>` where no `--out` is given.
     NameNotAFolder {
@@ -75,6 +77,7 @@ impl fmt::Display for ScenarioProblem {
             ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
             ScenarioProblem::LongReplay(r) => r.fmt(f),
             ScenarioProblem::UnstableStep(u) => u.fmt(f),
+            ScenarioProblem::StiffnessUnit(s) => s.fmt(f),
             ScenarioProblem::NameNotAFolder { name } => write!(
                 f,
                 "`name` = {name:?} is no folder name: `simulate` writes the run into `out/<name>` where no `--out` is given, so a name is one folder's name, not empty, without `/` or `\\`, and not `.` or `..`"

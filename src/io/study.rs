@@ -8,7 +8,10 @@ use super::scenario::{
     resolve_scenario, ManoeuvreSpec, Road, Scenario, ScenarioFile, SimulationSettings, TyreRefs,
 };
 use super::toml_file::{param_error, TomlSource};
-use crate::error::{InputError, ParamError, ParamReason};
+use crate::error::{
+    InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessSlip,
+    LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS,
+};
 use crate::metrics::MetricSettings;
 use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};
@@ -217,9 +220,12 @@ pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
             ParamError::without_value("stiffness.unit", ParamReason::Name(Box::new(e))),
         )
     })?;
+    let (sf, sr) = scenario.model.vehicle.static_axle_loads();
     let values = Values {
         src: &src,
         to_si: unit.to_si(),
+        unit: unit.as_str(),
+        loads: (0.5 * sf, 0.5 * sr),
     };
     let (front, rear) = match &f.stiffness {
         Some(s) => (
@@ -280,6 +286,11 @@ struct Values<'a> {
     src: &'a TomlSource,
     /// N/rad per file unit.
     to_si: f64,
+    /// The file's unit, for messages.
+    unit: &'static str,
+    /// Each axle's tyre's static load (front, rear), N: what a tyre's
+    /// stiffness is judged against ([`StiffnessSlip`]).
+    loads: (f64, f64),
 }
 
 impl Values<'_> {
@@ -291,6 +302,35 @@ impl Values<'_> {
     fn stiffness(&self, key: &str, axis: &Axis) -> Result<Vec<f64>, InputError> {
         let v = self.in_file_unit(key, axis)?;
         Ok(v.iter().map(|x| x * self.to_si).collect())
+    }
+
+    /// Refuses a value of `values` (file unit) at `key` that no tyre on
+    /// `key`'s axle has in the file's unit: one written in the other unit.
+    fn tyre_like(&self, key: &str, values: &[f64]) -> Result<(), InputError> {
+        let rear = key.ends_with("rear");
+        let (axle, load) = match rear {
+            true => ("rear", self.loads.1),
+            false => ("front", self.loads.0),
+        };
+        let slip = values
+            .iter()
+            .map(|&value| StiffnessSlip {
+                key: key.into(),
+                value,
+                unit: self.unit,
+                to_si: self.to_si,
+                axle,
+                load,
+            })
+            .find(|s| !(LEAST_LOAD_STIFFNESS..=MOST_LOAD_STIFFNESS).contains(&s.per_load()));
+        match slip {
+            Some(slip) if load > 0.0 => {
+                let problem =
+                    InputProblem::Scenario(Box::new(ScenarioProblem::StiffnessUnit(slip)));
+                Err(self.src.located(self.src.key_span(key), problem))
+            }
+            _ => Ok(()),
+        }
     }
 
     /// The stiffness values of `axis` in the file's unit, checked.
@@ -307,6 +347,7 @@ impl Values<'_> {
         if let Some(&x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
             return Err(self.error(ParamError::new(key, x, ParamReason::StiffnessNotPositive)));
         }
+        self.tyre_like(key, &v)?;
         Ok(v)
     }
 
@@ -359,6 +400,9 @@ impl Values<'_> {
                 })
                 .collect()
         };
+        let reference = inv.reference;
+        self.tyre_like("inverse.reference.front", &[reference.front])?;
+        self.tyre_like("inverse.reference.rear", &[reference.rear])?;
         Ok(Inverse {
             targets: typed("inverse.targets", &inv.targets)?,
             constraints: typed("inverse.constraints", &inv.constraints)?,

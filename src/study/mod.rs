@@ -13,6 +13,9 @@
 
 pub(crate) mod inverse;
 pub(crate) mod rbf;
+pub(crate) mod response;
+
+pub use response::{NotHandling, Response};
 
 use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;
@@ -77,12 +80,10 @@ impl Study {
         }
     }
 
-    /// Er of one combination (NaN without a steady state).
+    /// Er of one combination (NaN where the response is no handling
+    /// response, [`Response`]).
     pub fn er(&self, k_front: f64, k_rear: f64) -> f64 {
-        self.evaluate(k_front, k_rear)
-            .metrics
-            .and_then(|m| m.er)
-            .unwrap_or(f64::NAN)
+        Metric::Er.of_sample(&self.evaluate(k_front, k_rear))
     }
 
     /// Simulates every combination in parallel; `progress` counts them.
@@ -176,10 +177,13 @@ impl Metric {
         }
     }
 
-    /// The metric of a sample, NaN where it has none (the cells of maps and
-    /// tables).
+    /// The metric of a sample, NaN where it has none or where its response
+    /// is no handling response ([`Response`]: a sliding or diverging car's
+    /// numbers are not its handling) — the cells of maps and tables.
     pub(crate) fn of_sample(self, s: &Sample) -> f64 {
-        s.metrics.and_then(|m| self.of(&m)).unwrap_or(f64::NAN)
+        s.handling_metrics()
+            .and_then(|m| self.of(&m))
+            .unwrap_or(f64::NAN)
     }
 }
 

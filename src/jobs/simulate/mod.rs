@@ -93,14 +93,13 @@ struct MetricsFile<'a> {
     units: &'static str,
     #[serde(flatten)]
     metrics: &'a StepMetrics,
-    /// Intervals with a wheel off the ground (simulated runs only).
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    /// Intervals with a wheel off the ground (simulated runs only). Every
+    /// key is written, empty lists too: a reader tells "none" from "not
+    /// computed" only by a key that is always there.
     lift_offs: &'a [LiftOff],
     /// Facts of the run the scenario does not state (a trim).
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
     notes: &'a [String],
     /// Where the metrics do not describe a handling response.
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
     warnings: &'a [String],
 }
 

@@ -6,18 +6,19 @@
 
 use crate::study::inverse::{best_on_curve, distance, Map};
 use crate::study::rbf::Rbf;
-use crate::study::{Metric, Sample, StiffnessUnit, Study, METRICS};
+use crate::study::{Metric, NotHandling, Sample, StiffnessUnit, Study};
 
 mod figures;
 mod numbers;
 mod rbf_fit;
+mod table;
 use crate::error::{Error, InputError, MergeInput, OptionsError};
 use crate::io::study::{load_study, Inverse, StudyInput};
 use crate::jobs::shard::{
     input_copies, read_shards, write_shard, Shard, ShardFile, ShardJob, ShardReport,
 };
 use crate::report::progress::Progress;
-use crate::report::{refuse_overwrites, write_csv, write_json_sorted, OutputLock};
+use crate::report::{refuse_overwrites, write_json_sorted, OutputLock};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -37,6 +38,15 @@ pub struct StudySummary {
     pub unit: StiffnessUnit,
     /// Combinations whose response has no steady state.
     pub without_steady_state: usize,
+    /// Combinations whose steady sideslip passes 10°: sliding, no handling
+    /// response (their metrics are left out).
+    pub sliding: usize,
+    /// Combinations (not sliding) whose response has not settled by the
+    /// end of the step: no handling response (their metrics are left out).
+    pub not_settled: usize,
+    /// The largest steady sideslip of the sliding ones, rad (printed).
+    #[serde(skip)]
+    pub largest_sideslip: Option<f64>,
 }
 
 /// One held-out pair: its Er, the network's answer, and that answer's Er
@@ -320,6 +330,7 @@ impl Job {
             samples: samples[..self.grid.len()].to_vec(),
         };
         let pairs = samples[self.grid.len()..].to_vec();
+        let not_handling = NotHandling::count(&samples);
         let k = unit.to_si();
         let net = (input.rbf.as_ref())
             .map(|r| rbf_fit::train(st, r, &pairs, k, unit, &sc.inputs[0]))
@@ -335,7 +346,10 @@ impl Job {
                 seconds,
                 study: sc.name.clone(),
                 unit,
-                without_steady_state: samples.iter().filter(|s| s.metrics.is_none()).count(),
+                without_steady_state: not_handling.without_steady_state,
+                sliding: not_handling.sliding,
+                not_settled: not_handling.not_settled,
+                largest_sideslip: not_handling.largest_sideslip,
             },
             rbf: net.map(|n| n.1),
             inverse,
@@ -430,6 +444,7 @@ impl StudyReport {
                 s.combinations, s.seconds
             ),
         ];
+        out.extend(table::not_handling_line(s));
         if let Some(r) = &self.rbf {
             out.push(format!(
                 "  RBF (spread {} s): trained on {} pairs, condition number {:.2e}, largest training misfit {:.3} {u}",
@@ -462,18 +477,7 @@ impl StudyReport {
     pub fn write(&self) -> Result<(), Error> {
         let files = FILES.map(|f| self.out_dir.join(f));
         let u = self.summary.unit;
-        let k = u.to_si();
-        let name = u.as_str().replace('/', "_per_");
-        let (kf, kr) = (format!("k_front_{name}"), format!("k_rear_{name}"));
-        let mut header = vec![kf.as_str(), kr.as_str(), "k_front", "k_rear"];
-        header.extend(METRICS);
-        let rows = self.samples.iter().map(|x| {
-            [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
-                .into_iter()
-                .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
-                .map(numbers::csv_number)
-        });
-        write_csv(&files[0], &header, rows)?;
+        table::write(&files[0], &self.samples, u)?;
         if let Some(r) = &self.rbf {
             write_json_sorted(&files[2], r)?;
             figures::rbf_pairs(&self.pairs, r, u).save(&files[3])?;

@@ -1,0 +1,132 @@
+//! `study.csv`: one row per combination, every metric a column. A cell with
+//! no value is empty — never `NaN`, which half the readers of a CSV take for
+//! a number — and the row's `response` and `note` say why: a response that
+//! is no handling response ([`crate::study::Response`]) has every metric empty, a handling
+//! response without a yaw-rate peak has no peak time and no TB.
+
+use super::numbers::csv_number;
+use super::StudySummary;
+use crate::error::Error;
+use crate::metrics::StepMetrics;
+use crate::report::write_csv;
+use crate::study::{Metric, Sample, StiffnessUnit, METRICS};
+use std::path::Path;
+
+/// Writes `samples` to `path`, stiffness in `unit` and in N/rad.
+pub(super) fn write(path: &Path, samples: &[Sample], unit: StiffnessUnit) -> Result<(), Error> {
+    let k = unit.to_si();
+    let name = unit.as_str().replace('/', "_per_");
+    let (kf, kr) = (format!("k_front_{name}"), format!("k_rear_{name}"));
+    let mut header = vec![kf.as_str(), kr.as_str(), "k_front", "k_rear"];
+    header.extend(METRICS);
+    header.extend(["response", "note"]);
+    let rows = samples.iter().map(|x| {
+        let response = x.response();
+        let note = match (response.note(), x.handling_metrics()) {
+            (Some(n), _) => n,
+            (None, Some(m)) => empty_cells(&m),
+            (None, None) => String::new(),
+        };
+        [x.k_front / k, x.k_rear / k, x.k_front, x.k_rear]
+            .into_iter()
+            .chain(Metric::ALL.iter().map(|m| m.of_sample(x)))
+            .map(cell)
+            .chain([response.word().to_string(), note])
+    });
+    write_csv(path, &header, rows)
+}
+
+/// A number's cell: empty where it has none.
+fn cell(v: f64) -> String {
+    if v.is_finite() {
+        csv_number(v)
+    } else {
+        String::new()
+    }
+}
+
+/// Why a handling response's empty cells are empty: the metrics it lacks
+/// and the reason (no yaw-rate peak above the steady value, no lateral
+/// acceleration, no sideslip). Empty when it has every metric.
+fn empty_cells(m: &StepMetrics) -> String {
+    let empty: Vec<&str> = Metric::ALL
+        .iter()
+        .filter(|metric| metric.of(m).is_none())
+        .map(|metric| metric.name())
+        .collect();
+    if empty.is_empty() {
+        return String::new();
+    }
+    let mut why = Vec::new();
+    if m.yaw_rate_peak_time.is_none() {
+        why.push("the yaw rate has no peak above its steady value (0 % overshoot)");
+    }
+    if m.ay_steady.is_none() {
+        why.push("no lateral acceleration");
+    }
+    if m.beta_steady.is_none() {
+        why.push("no sideslip");
+    }
+    format!("{} empty: {}", empty.join(", "), why.join("; "))
+}
+
+/// The terminal's line on the combinations that are no handling response,
+/// where there are any.
+pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
+    let total = s.sliding + s.not_settled + s.without_steady_state;
+    if total == 0 {
+        return None;
+    }
+    let mut kinds = Vec::new();
+    if s.sliding > 0 {
+        let most = s
+            .largest_sideslip
+            .map_or_else(String::new, |b| format!(", up to {:.1}°", b.to_degrees()));
+        kinds.push(format!(
+            "{} slide (steady sideslip beyond 10°{most})",
+            s.sliding
+        ));
+    }
+    if s.not_settled > 0 {
+        kinds.push(format!(
+            "{} do not settle by the end of the step (diverging from a steady turn, as an oversteering car past its critical speed does)",
+            s.not_settled
+        ));
+    }
+    if s.without_steady_state > 0 {
+        kinds.push(format!("{} have no steady state", s.without_steady_state));
+    }
+    Some(format!(
+        "  {total} of {} combinations are no handling response: {}; their metrics are left out of the maps, the network and the inverse (empty in study.csv, `response` says why)",
+        s.combinations,
+        kinds.join(", ")
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cell_without_a_value_is_empty_not_nan() {
+        assert_eq!(cell(f64::NAN), "");
+        assert_eq!(cell(f64::INFINITY), "");
+        assert_eq!(cell(700.0), "700");
+    }
+
+    #[test]
+    fn the_line_counts_each_kind() {
+        let s = StudySummary {
+            combinations: 47,
+            seconds: 1.0,
+            study: "s".into(),
+            unit: StiffnessUnit::NPerDeg,
+            without_steady_state: 0,
+            sliding: 6,
+            not_settled: 1,
+            largest_sideslip: Some(-1.0),
+        };
+        let line = not_handling_line(&s).unwrap();
+        assert!(line.starts_with("  7 of 47 combinations are no handling response: 6 slide (steady sideslip beyond 10°, up to -57.3°), 1 do not settle"), "{line}");
+    }
+}

@@ -1,0 +1,127 @@
+//! Whether a map point's step response is a handling response at all. An
+//! oversteering combination past its critical speed does not settle to a
+//! steady turn: its yaw rate grows until the tyres saturate and the car
+//! slides or spins. Its "steady" values are wherever the run happened to end,
+//! and its yaw rate, never peaking above a steady value, reads as 0 %
+//! overshoot: the best-looking number of the map for the worst car. Such a
+//! point is flagged, counted and left out of the maps, the network and the
+//! inverse, as [`crate::metrics::applicability`] says of a single run.
+
+use super::Sample;
+use crate::metrics::applicability::SLIDING_SIDESLIP;
+use crate::metrics::StepMetrics;
+use serde::Serialize;
+
+/// What a combination's step response is.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Response {
+    /// A handling response: settled, below the tyres' limit.
+    Handling,
+    /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°): the car
+    /// slides past its grip. Carries the sideslip, rad.
+    Sliding(f64),
+    /// The response has not settled by the end of the step (the yaw rate,
+    /// lateral acceleration or sideslip still moving: a car diverging
+    /// from its steady turn).
+    NotSettled,
+    /// No steady state the metrics could measure at all.
+    NoSteadyState,
+}
+
+impl Response {
+    /// The response of a run with metrics `m` (`None`: none measured).
+    pub fn of(m: Option<&StepMetrics>) -> Self {
+        let Some(m) = m else {
+            return Response::NoSteadyState;
+        };
+        match m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
+            Some(beta) => Response::Sliding(beta),
+            None if !m.settled => Response::NotSettled,
+            None => Response::Handling,
+        }
+    }
+
+    /// Whether the metrics describe handling.
+    pub fn is_handling(self) -> bool {
+        self == Response::Handling
+    }
+
+    /// The word of `study.csv`'s `response` column.
+    pub fn word(self) -> &'static str {
+        match self {
+            Response::Handling => "handling",
+            Response::Sliding(_) => "sliding",
+            Response::NotSettled => "not_settled",
+            Response::NoSteadyState => "no_steady_state",
+        }
+    }
+
+    /// Why the metrics of a response that is no handling response are left
+    /// empty (`study.csv`'s `note`); `None` for a handling response.
+    pub fn note(self) -> Option<String> {
+        match self {
+            Response::Handling => None,
+            Response::Sliding(beta) => Some(format!(
+                "steady sideslip {:.1} deg, beyond 10 deg: the car slides past its grip; no handling response, metrics left empty",
+                beta.to_degrees()
+            )),
+            Response::NotSettled => Some(
+                "not settled by the end of the step (the car diverges from a steady turn); no handling response, metrics left empty"
+                    .into(),
+            ),
+            Response::NoSteadyState => Some("no steady state; metrics left empty".into()),
+        }
+    }
+}
+
+impl Sample {
+    /// What this combination's response is.
+    pub fn response(&self) -> Response {
+        Response::of(self.metrics.as_ref())
+    }
+
+    /// The metrics where they describe a handling response ([`Response`]).
+    pub fn handling_metrics(&self) -> Option<StepMetrics> {
+        self.metrics.filter(|_| self.response().is_handling())
+    }
+}
+
+/// How many of a set of samples are no handling response, by kind.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct NotHandling {
+    /// Sliding (steady sideslip beyond 10°).
+    pub sliding: usize,
+    /// Not settled by the end of the step (and not sliding).
+    pub not_settled: usize,
+    /// Without a steady state.
+    pub without_steady_state: usize,
+    /// The largest steady sideslip of the sliding ones, rad (signed).
+    pub largest_sideslip: Option<f64>,
+}
+
+impl NotHandling {
+    /// The counts over `samples`.
+    pub fn count<'a>(samples: impl IntoIterator<Item = &'a Sample>) -> Self {
+        let mut n = NotHandling::default();
+        for s in samples {
+            match s.response() {
+                Response::Handling => {}
+                Response::Sliding(beta) => {
+                    n.sliding += 1;
+                    if n.largest_sideslip.is_none_or(|b: f64| beta.abs() > b.abs()) {
+                        n.largest_sideslip = Some(beta);
+                    }
+                }
+                Response::NotSettled => n.not_settled += 1,
+                Response::NoSteadyState => n.without_steady_state += 1,
+            }
+        }
+        n
+    }
+
+    /// All of them.
+    pub fn total(&self) -> usize {
+        self.sliding + self.not_settled + self.without_steady_state
+    }
+}

@@ -26,6 +26,7 @@ use crate::metrics::applicability::{
 };
 use crate::metrics::{simulated_step_metrics, StepMetrics};
 use crate::report::plot::{Figure, Panel, Series, MEASURED_DOTS};
+use crate::report::stale::{leftovers, Leftovers, OwnSet};
 use crate::report::{
     refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
 };
@@ -84,6 +85,9 @@ pub struct SimulateReport {
     /// The output folder, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,
+    /// What the folder held of an earlier run: removed once written.
+    #[serde(skip)]
+    pub leftovers: Leftovers,
 }
 
 /// `metrics.json`.
@@ -105,6 +109,13 @@ struct MetricsFile<'a> {
 }
 
 const FILES: [&str; 4] = ["history.csv", "metrics.json", "response.png", "gap.json"];
+
+/// `simulate`'s outputs, as [`crate::report::stale`] finds an earlier
+/// run's.
+const OWN: OwnSet = OwnSet {
+    names: &FILES,
+    families: &[],
+};
 
 /// Simulates the scenario of the file `path`; `out` is the output folder
 /// (default `out/<scenario name>`), checked against the inputs first.
@@ -181,6 +192,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     let mut said = checks::checks(&sc, h);
     warnings.extend(said.warnings);
     warnings.extend(unfitted::longitudinal_only(&sc));
+    warnings.extend(unfitted::tir_lateral_unfitted(&sc));
     // A `.tir` whose longitudinal slip stiffness turns negative inside its
     // own load range, said as `tyre-eval` says it (once per file).
     let mut tirs: Vec<&PathBuf> = sc.inputs.iter().collect();
@@ -206,6 +218,19 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             cleaning: sc.cleaning.clone(),
         }
     });
+    // The files this run writes: the history and figure always, the
+    // metrics of a step steer, the gap of a replayed run.
+    let written: Vec<PathBuf> = [
+        Some(FILES[0]),
+        metrics.is_some().then_some(FILES[1]),
+        Some(FILES[2]),
+        replay.is_some().then_some(FILES[3]),
+    ]
+    .into_iter()
+    .flatten()
+    .map(|f| out_dir.join(f))
+    .collect();
+    let leftovers = leftovers(&out_dir, &OWN, &written);
     Ok(SimulateReport {
         integration,
         tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
@@ -220,6 +245,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         scenario: sc.name,
         out_dir,
         lock,
+        leftovers,
     })
 }
 
@@ -284,6 +310,12 @@ impl SimulateReport {
                     .map(|g| format!("  {}: {}", g.channel.name(), g.verdict)),
             );
         }
+        out.extend(
+            self.leftovers
+                .lines("simulate")
+                .into_iter()
+                .map(|l| format!("  {l}")),
+        );
         out
     }
 
@@ -312,7 +344,8 @@ impl SimulateReport {
         if let Some(m) = &self.metrics {
             transient::focus(&mut figure, &self.history, m.time_zero);
         }
-        figure.save(&files[2])
+        figure.save(&files[2])?;
+        self.leftovers.remove()
     }
 }
 

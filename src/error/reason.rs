@@ -562,7 +562,7 @@ pub enum Limit {
     )]
     TyreFriction,
     /// A road's friction, a scale on the tyres' own.
-    #[error("the road's friction scales the tyres' own (1 = as measured on the rig, 0.1–0.3 on ice; at 0 no tyre grips and no car steers); no road grips three times a tyre's rig surface: above 3, is it a speed or a percentage?")]
+    #[error("the road's friction scales the tyres' own (1 = as measured on the rig, 0.1–0.3 on ice); no road grips three times a tyre's rig surface: is it a speed or a percentage?")]
     RoadFriction,
     /// A pneumatic trail, m.
     #[error("a tyre's pneumatic trail is a few centimetres; the key is in metres: is the value in millimetres? (30 mm is 0.03)")]

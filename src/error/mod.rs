@@ -32,6 +32,7 @@ mod piece;
 mod problem;
 mod problem_name;
 mod reason;
+mod replay_run;
 mod rig;
 mod rig_sign;
 mod runs_selection;
@@ -76,6 +77,7 @@ pub use reason::{
     NoPressureLine, ParamReason, PerLoad, ScheduleColumn, SlowSteer, Waveform, DYNAMIC_INDEX,
     MAX_MIN_SPEED,
 };
+pub use replay_run::ReplayRunProblem;
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
 pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};

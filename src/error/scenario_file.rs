@@ -41,6 +41,8 @@ pub enum ScenarioProblem {
     },
     /// A replayed run too long for a history at the default row interval.
     LongReplay(super::LongReplay),
+    /// A replayed run refused for what the scenario's keys mend.
+    ReplayRun(super::ReplayRunProblem),
     /// An RK4 step beyond the method's stability limit for the model.
     UnstableStep(super::UnstableStep),
     /// A study's cornering stiffness in the other unit than its `unit`.
@@ -76,6 +78,7 @@ impl fmt::Display for ScenarioProblem {
         match self {
             ScenarioProblem::NotAScenario(kind) => write!(f, "the file {kind}"),
             ScenarioProblem::LongReplay(r) => r.fmt(f),
+            ScenarioProblem::ReplayRun(r) => r.fmt(f),
             ScenarioProblem::UnstableStep(u) => u.fmt(f),
             ScenarioProblem::StiffnessUnit(s) => s.fmt(f),
             ScenarioProblem::NameNotAFolder { name } => write!(

@@ -164,13 +164,14 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
             ("steer", Some("rad")) | ("speed", Some("m/s")) => 1.0,
             ("steer", Some("deg")) => std::f64::consts::PI / 180.0,
             ("speed", Some("km/h")) => 1.0 / 3.6,
+            // At the `unit` key, quoting the text (a unit is no number:
+            // `= NaN` quoted none the user wrote).
             (_, Some(u)) => {
-                return Err(err(
-                    f64::NAN,
-                    ParamReason::UnknownSweepUnit {
-                        unit: u.to_string(),
-                    },
-                ))
+                let why = ParamReason::UnknownSweepUnit {
+                    unit: u.to_string(),
+                };
+                let e = ParamError::without_value(&format!("{key}.unit"), why);
+                return Err(param_error(src, None, e));
             }
         })
     };
@@ -192,7 +193,12 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         }
     };
     if given.is_empty() {
-        return Err(err(f64::NAN, ParamReason::NoValues));
+        let at = match v {
+            Values::Units(_) => format!("{key}.values"),
+            _ => key.clone(),
+        };
+        let e = ParamError::without_value(&at, ParamReason::NoValues);
+        return Err(param_error(src, None, e));
     }
     for &x in &given {
         // The steer keeps to the road-wheel limit every manoeuvre keeps to

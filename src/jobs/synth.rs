@@ -155,6 +155,7 @@ impl SynthReport {
                 }
                 .into());
             }
+            self.notes.extend(unused_road(p, &sc));
             self.notes.extend(crate::proving_ground::dropped_channels(
                 self.programme,
                 p,
@@ -207,6 +208,32 @@ impl SynthReport {
             self.out.display()
         )
     }
+}
+
+/// What of the road of the scenario `sc` (file `path`) a driven run does
+/// not use: the truth drives the programme's road with its own grip (flat
+/// but for a replay's logged bank), as it drives the programme's runs;
+/// only the manoeuvre is driven. Said where the scenario gives another, which was dropped
+/// without a word.
+fn unused_road(path: &Path, sc: &crate::io::Scenario) -> Vec<String> {
+    use crate::error::Num;
+    let friction = sc.integrator.friction;
+    let bank = sc.model.options.effects.road_bank;
+    let mut given = Vec::new();
+    if friction != 1.0 {
+        given.push(format!("friction {} (`[road] friction`)", Num(friction)));
+    }
+    if bank != 0.0 {
+        given.push(format!("bank {} rad (`road_bank`)", Num(bank)));
+    }
+    if given.is_empty() {
+        return Vec::new();
+    }
+    vec![format!(
+        "{}: the scenario's road, {}, is not used: the truth drives the manoeuvre on the programme's road, as it drives the programme's runs (its grip the truth's own, flat but for a replay's logged bank): only the scenario's manoeuvre is taken",
+        path.display(),
+        given.join(" and ")
+    )]
 }
 
 /// The campaign's files in `dir`.

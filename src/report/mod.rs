@@ -15,6 +15,7 @@ pub mod plot;
 pub mod progress;
 pub mod series;
 pub mod stability;
+pub mod stale;
 
 pub use lock::OutputLock;
 

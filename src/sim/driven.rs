@@ -12,13 +12,17 @@
 //! left out (zero) of the 2-state system, where they do not feed back.
 //! Units: SI, rad.
 
+mod system;
+
 use super::ode::{self, DenseSolution, OdeSystem, Tolerances, W_NODES, W_PROBE, W_TIME_PROBE};
+use super::progress::Counted;
 use super::{load_tolerance, Integrator, TimeHistory};
 use crate::manoeuvre::{interpolate, Manoeuvre, Replay};
 use crate::measured::derivative::{speed_derivative, speed_derivative_at};
 use crate::vehicle::{
     Inputs, LoadTransferSeed, ModelScalars, Outputs, State, StateVector, VehicleModel,
 };
+use std::sync::atomic::AtomicUsize;
 
 /// A fixed-grid method of a replay.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -274,6 +278,8 @@ struct Driven<'a> {
     load_evaluations: u64,
     /// The inputs and outputs of the last evaluation.
     last: (Inputs, Outputs),
+    /// Where a run shows its progress (`simulate` on a terminal).
+    progress: Option<Counted<'a>>,
 }
 
 impl<'a> Driven<'a> {
@@ -289,6 +295,7 @@ impl<'a> Driven<'a> {
             load_tolerance: tolerance,
             load_evaluations: 0,
             last: (Inputs::steady(0.0, 0.0, friction), Outputs::default()),
+            progress: None,
         }
     }
 
@@ -326,64 +333,6 @@ impl<'a> Driven<'a> {
         };
         self.seeds[0].ay = [pred; 3];
         0
-    }
-}
-
-impl<const N: usize> OdeSystem<N> for Driven<'_> {
-    fn derivatives(&mut self, t: f64, x: &[f64; N]) -> [f64; N] {
-        let inp = self.inputs(t);
-        let mut full: StateVector = [0.0; 6];
-        full[..N].copy_from_slice(x);
-        if matches!(self.stage, Some((_, W_PROBE | W_TIME_PROBE))) {
-            // A Jacobian or time probe: at the wheel loads of the step's own
-            // solution, not solved again (one evaluation; and a solve, exact
-            // only to its tolerance, would put that tolerance over the
-            // probe's small step into W, unsmooth in a fit's parameters);
-            // the stages' seeds and the record left alone.
-            let mut seed = LoadTransferSeed {
-                ay: [self.last.1.ay; 3],
-                slope: self.seeds[0].slope,
-            };
-            let (dx, o) = self
-                .model
-                .rates_in(&self.scalars, &full, &inp, &mut seed, f64::INFINITY);
-            self.load_evaluations += u64::from(o.load_iterations);
-            return std::array::from_fn(|i| dx[i]);
-        }
-        let j = self.seed(t);
-        let (dx, o) = self.model.rates_in(
-            &self.scalars,
-            &full,
-            &inp,
-            &mut self.seeds[j],
-            self.load_tolerance,
-        );
-        if self.stage.is_none() {
-            let [(t1, a1), _] = self.history;
-            self.history = [(t, o.ay), (t1, a1)];
-        }
-        self.load_evaluations += u64::from(o.load_iterations);
-        self.last = (inp, o);
-        std::array::from_fn(|i| dx[i])
-    }
-
-    fn rk4_stage(&mut self, step: usize, stage: usize) {
-        self.stage = Some((step, stage));
-    }
-
-    fn w_stage(&mut self, step: usize, stage: usize) {
-        self.stage = Some((step, stage));
-    }
-
-    /// (β, r) always; the lagged slip angles and the roll states only when
-    /// the model integrates them.
-    fn implicit_states(&self) -> [bool; N] {
-        let e = &self.model.options.effects;
-        std::array::from_fn(|i| match i {
-            0 | 1 => true,
-            2 | 3 => e.lagged(),
-            _ => e.uses_roll(),
-        })
     }
 }
 
@@ -452,12 +401,14 @@ impl Integrator {
         model: &VehicleModel,
         manoeuvre: &Manoeuvre,
         x0: State,
+        progress: Option<&AtomicUsize>,
     ) -> TimeHistory {
         let h = self.step;
         let t0 = manoeuvre.start_time();
         let n = ((manoeuvre.end_time() - t0) / h).round().max(0.0) as usize;
         let tol = crate::vehicle::LOAD_TOLERANCE;
         let mut sys = Driven::new(model, Source::Manoeuvre(manoeuvre), self.friction, tol);
+        sys.progress = progress.map(|c| Counted::new(c, t0, h, 0));
         let x = self.initial(model, manoeuvre, x0);
         if model.options.effects.extra_states() {
             run_rk4::<6>(&mut sys, t0, h, n, x)
@@ -534,7 +485,7 @@ impl Integrator {
         x0: State,
         tol: &Tolerances,
     ) -> (TimeHistory, Option<DenseSolution<2>>) {
-        let (hist, sol, _) = self.run_dopri5_work(model, manoeuvre, x0, tol);
+        let (hist, sol, _) = self.run_dopri5_work(model, manoeuvre, x0, tol, None);
         (hist, sol)
     }
 
@@ -547,13 +498,14 @@ impl Integrator {
         manoeuvre: &Manoeuvre,
         x0: State,
         tol: &Tolerances,
+        progress: Option<&AtomicUsize>,
     ) -> (TimeHistory, Option<DenseSolution<2>>, ode::Stats) {
         let x = self.initial(model, manoeuvre, x0);
         if model.options.effects.extra_states() {
-            let (hist, sol) = self.dopri5_n::<6>(model, manoeuvre, x, tol);
+            let (hist, sol) = self.dopri5_n::<6>(model, manoeuvre, x, tol, progress);
             (hist, None, sol.stats)
         } else {
-            let (hist, sol) = self.dopri5_n::<2>(model, manoeuvre, head(&x), tol);
+            let (hist, sol) = self.dopri5_n::<2>(model, manoeuvre, head(&x), tol, progress);
             let stats = sol.stats;
             (hist, Some(sol), stats)
         }
@@ -565,13 +517,16 @@ impl Integrator {
         manoeuvre: &Manoeuvre,
         x0: [f64; N],
         tol: &Tolerances,
+        progress: Option<&AtomicUsize>,
     ) -> (TimeHistory, DenseSolution<N>) {
         let load_tol = load_tolerance(tol);
         let source = Source::Manoeuvre(manoeuvre);
         let mut sys = Driven::new(model, source, self.friction, load_tol);
         let (t0, t1) = (manoeuvre.start_time(), manoeuvre.end_time());
-        let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
         let n = ((t1 - t0) / self.step).round().max(0.0) as usize;
+        // The integration counts the first n, the rows the next n.
+        sys.progress = progress.map(|c| Counted::new(c, t0, self.step, 0));
+        let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
         let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
         let times: Vec<f64> = (0..=n)
             .map(|i| (t0 + i as f64 * self.step).min(t1))
@@ -582,6 +537,7 @@ impl Integrator {
         // solve started from the previous row's.
         let mut rows = Driven::new(model, source, self.friction, load_tol);
         rows.stage = Some((0, 0));
+        rows.progress = progress.map(|c| Counted::new(c, t0, self.step, n));
         for (&t, x) in times.iter().zip(&states) {
             OdeSystem::<N>::derivatives(&mut rows, t, x);
             record(&mut hist, &rows, t, x);

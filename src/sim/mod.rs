@@ -28,6 +28,7 @@
 
 mod driven;
 pub mod ode;
+mod progress;
 pub mod tangent;
 
 use driven::manoeuvre_inputs;
@@ -324,7 +325,7 @@ impl Integrator {
     /// every `step`.
     pub fn run(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> TimeHistory {
         match self.method {
-            Method::Rk4 => self.run_rk4(model, manoeuvre, x0),
+            Method::Rk4 => self.run_rk4(model, manoeuvre, x0, None),
             Method::Dopri5(tol) => self.run_dopri5(model, manoeuvre, x0, &tol).0,
         }
     }
@@ -332,14 +333,39 @@ impl Integrator {
     /// Simulates `manoeuvre` from `x0`: the rows and, under Dormand–Prince,
     /// the dense solution.
     pub fn simulate(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> Simulation {
+        self.simulate_counted(model, manoeuvre, x0, None)
+    }
+
+    /// The work units of [`Integrator::simulate_counted`] on `manoeuvre`:
+    /// its rows, twice under Dormand–Prince (the integration, then the
+    /// rows evaluated at its dense output).
+    pub fn work_units(&self, manoeuvre: &Manoeuvre) -> usize {
+        let span = manoeuvre.end_time() - manoeuvre.start_time();
+        let rows = (span / self.step).round().max(0.0) as usize;
+        match self.method {
+            Method::Rk4 => rows,
+            Method::Dopri5(_) => 2 * rows,
+        }
+    }
+
+    /// [`Integrator::simulate`], counting its work into `progress` as it
+    /// goes ([`Integrator::work_units`] in all).
+    pub fn simulate_counted(
+        &self,
+        model: &VehicleModel,
+        manoeuvre: &Manoeuvre,
+        x0: State,
+        progress: Option<&std::sync::atomic::AtomicUsize>,
+    ) -> Simulation {
         match self.method {
             Method::Rk4 => Simulation {
-                history: self.run_rk4(model, manoeuvre, x0),
+                history: self.run_rk4(model, manoeuvre, x0, progress),
                 dense: None,
                 work: None,
             },
             Method::Dopri5(tol) => {
-                let (history, dense, work) = self.run_dopri5_work(model, manoeuvre, x0, &tol);
+                let (history, dense, work) =
+                    self.run_dopri5_work(model, manoeuvre, x0, &tol, progress);
                 Simulation {
                     history,
                     dense,

@@ -126,7 +126,7 @@ fn a_degrees_column_the_file_does_not_have_is_refused_with_its_columns() {
     linear_tyre(dir.path());
     let e = simulate_err(dir.path());
     assert!(
-        e.contains("run.csv:1:1: `degrees` under [manoeuvre] names `roll`, a column this file does not have"),
+        e.contains("scenario.toml:17:12: `manoeuvre.degrees` names `roll`, a column the run run.csv does not have"),
         "{e}"
     );
 }

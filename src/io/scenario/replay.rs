@@ -5,7 +5,9 @@
 //! its initial yaw rate and sideslip a robust line through the first
 //! [`INITIAL_STRETCH`] s ([`initial_value`]).
 
-use crate::error::{InputError, InputProblem, ParamError, PieceRefusal};
+use crate::error::{
+    InputError, InputProblem, ParamError, PieceRefusal, ReplayRunProblem, ScenarioProblem,
+};
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::io::{read_run_with, AngleColumn, DeclaredBy, MeasuredRun};
 use crate::manoeuvre::Replay;
@@ -61,24 +63,44 @@ pub(super) fn resolve(
     let settings = CleanSettings::single(r.min_speed);
     let mut cleaning = CleaningReport::new(r.min_speed);
     src.referenced_file("manoeuvre.run", run_path)?;
-    let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)?;
+    let read = read_run_with(run_path, &r.degrees, DeclaredBy::ReplayManoeuvre)
+        .map_err(|e| at_degrees(src, r, e))?;
     if let Some(p) = dead_steer(&read, wheelbase, r.min_speed) {
         return Err(InputError::problem(run_path, p));
     }
     if let Some(y) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
-        if let Some(p) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
-            return Err(InputError::problem(run_path, p));
+        match steer_problem(&y, Wheelbase::Known(wheelbase)) {
+            Some(InputProblem::SteerAboveYaw {
+                median, samples, ..
+            }) => {
+                let p = ReplayRunProblem::SteerAboveYaw {
+                    run: r.run.display().to_string().into(),
+                    median,
+                    samples,
+                };
+                return Err(at_key(src, "manoeuvre.run", p));
+            }
+            Some(p) => return Err(InputError::problem(run_path, p)),
+            None => {}
         }
     }
+    let top = read.speed.iter().copied().fold(0.0, f64::max);
     let run = replayed_piece(read, &settings, &mut cleaning).ok_or_else(|| {
-        InputError::problem(
-            run_path,
-            InputProblem::NoMovingSamples {
-                min_speed: r.min_speed,
-                slow: cleaning.samples_slow,
-                read: cleaning.samples_read,
-            },
-        )
+        let stated = src.key_span("manoeuvre.min_speed").is_some();
+        let p = ReplayRunProblem::TooSlow {
+            run: r.run.display().to_string().into(),
+            min_speed: r.min_speed,
+            stated,
+            slow: cleaning.samples_slow,
+            read: cleaning.samples_read,
+            top,
+        };
+        let key = if stated {
+            "manoeuvre.min_speed"
+        } else {
+            "manoeuvre.run"
+        };
+        at_key(src, key, p)
     })?;
     // A masked sample is a glitch, not the initial state.
     let start: Vec<usize> = (0..run.t.len())
@@ -101,6 +123,34 @@ pub(super) fn resolve(
         run,
         cleaning,
     })
+}
+
+/// `p` at the scenario's key `key`.
+fn at_key(src: &TomlSource, key: &str, p: ReplayRunProblem) -> InputError {
+    let problem = InputProblem::Scenario(Box::new(ScenarioProblem::ReplayRun(p)));
+    src.located(src.key_span(key), problem)
+}
+
+/// A `degrees` entry the run lacks, refused at that entry of the
+/// scenario (the run's header has no place for what it does not hold);
+/// other errors as they are.
+fn at_degrees(src: &TomlSource, r: &ReplaySpec, e: InputError) -> InputError {
+    let InputError::Invalid { problem, .. } = &e else {
+        return e;
+    };
+    let InputProblem::DegreesColumnAbsent { column, header, .. } = problem.as_ref() else {
+        return e;
+    };
+    let k = r.degrees.iter().position(|c| c.name() == *column);
+    let key = k.map_or("manoeuvre.degrees".into(), |k| {
+        format!("manoeuvre.degrees[{k}]")
+    });
+    let p = ReplayRunProblem::DegreesAbsent {
+        run: r.run.display().to_string().into(),
+        column,
+        header: header.clone(),
+    };
+    at_key(src, &key, p)
 }
 
 /// The steer's range over `run`, rad.

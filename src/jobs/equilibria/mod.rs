@@ -5,6 +5,7 @@
 //! the figures (`figures.rs`).
 
 mod figures;
+mod outputs;
 
 use crate::equilibria::bifurcation::Bifurcation;
 use crate::equilibria::pso::{Fitness, PsoSearch};
@@ -76,6 +77,9 @@ pub struct EquilibriaReport {
     /// files into one folder at once).
     #[serde(skip)]
     pub lock: OutputLock,
+    /// What the folder held of an earlier run: removed once written.
+    #[serde(skip)]
+    pub leftovers: crate::report::stale::Leftovers,
 }
 
 const FILES: [&str; 4] = [
@@ -215,13 +219,16 @@ fn report(
         conditions_with_continua: res.points.iter().filter(|p| !p.continua.is_empty()).count(),
         bifurcations: res.bifurcations.clone(),
     };
-    EquilibriaReport {
+    let mut r = EquilibriaReport {
         summary,
         result: res,
         sweep: sw,
         out_dir,
         lock,
-    }
+        leftovers: Default::default(),
+    };
+    r.leftovers = crate::report::stale::leftovers(&r.out_dir, &outputs::OWN, &r.outputs());
+    r
 }
 
 impl EquilibriaReport {
@@ -295,6 +302,12 @@ impl EquilibriaReport {
                 if b.verified { "verified" } else { "NOT verified" }
             ));
         }
+        out.extend(
+            self.leftovers
+                .lines("equilibria")
+                .into_iter()
+                .map(|l| format!("  {l}")),
+        );
         out
     }
 
@@ -324,7 +337,7 @@ impl EquilibriaReport {
                 figures::phase_portrait(&sw.model, c, &sw.search_box, &eqs, &file)?;
             }
         }
-        Ok(())
+        self.leftovers.remove()
     }
 }
 

@@ -32,3 +32,40 @@ pub(super) fn longitudinal_only(sc: &Scenario) -> Vec<String> {
             .collect(),
     }
 }
+
+/// What `identify` writes into a `.tir` whose lateral force block it had
+/// no pure lateral data for (its coefficients then the template's or the
+/// defaults'): a `$` comment line starting so.
+const TIR_LATERAL_UNFITTED: &str = "$ no pure lateral data: the lateral force block is not fitted";
+
+/// The warnings of scenario `sc`'s `.tir` files that say their lateral
+/// force block is not fitted (once per file): a `.tir` carries no
+/// `[fitted_ranges]`, and a template's lateral block (an `FSAE_Defaults`)
+/// reads as any tyre's.
+pub(super) fn tir_lateral_unfitted(sc: &Scenario) -> Vec<String> {
+    let mut files: Vec<&std::path::PathBuf> = sc
+        .inputs
+        .iter()
+        .skip(1)
+        .filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("tir")))
+        .collect();
+    files.sort();
+    files.dedup();
+    files
+        .into_iter()
+        .filter_map(|p| {
+            let text = std::fs::read(p).ok()?;
+            let text = String::from_utf8_lossy(&text);
+            let (k, line) = text
+                .lines()
+                .enumerate()
+                .find(|(_, l)| l.trim_start().starts_with(TIR_LATERAL_UNFITTED))?;
+            let said = line.trim_start().trim_start_matches('$').trim();
+            Some(format!(
+                "{}:{}: the file says its lateral force block was never fitted to data (\"{said}\"): the 2-DOF model steers on the lateral force alone, so this run's response rests on coefficients no measurement set; fit the tyre to cornering data (`identify` on a file with `alpha` and `fy`)",
+                p.display(),
+                k + 1
+            ))
+        })
+        .collect()
+}

@@ -1,0 +1,91 @@
+//! A replay scenario's run refused for what the scenario's own keys
+//! mend: its `[manoeuvre] min_speed` above the run's speeds, a steer the
+//! run logs in degrees (`[manoeuvre] degrees`), a `degrees` entry naming a
+//! column the run lacks. The refusals of the run read alone name
+//! `metrics --min-speed` and `metrics --degrees`, which a scenario has
+//! not; these name the scenario's keys and stand at them. m/s, rad.
+
+use super::Num;
+use std::fmt;
+
+/// What is wrong, and the run file it is about.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ReplayRunProblem {
+    /// No two successive samples at or above `min_speed`.
+    TooSlow {
+        /// The run file, as the scenario names it.
+        run: Box<str>,
+        /// The replay's lowest speed, m/s.
+        min_speed: f64,
+        /// Whether the scenario states it (else the default).
+        stated: bool,
+        /// Samples below it, and samples read.
+        slow: usize,
+        /// Samples read.
+        read: usize,
+        /// The run's top speed, m/s.
+        top: f64,
+    },
+    /// A steer far larger than the yaw rate it gives: in degrees, or a
+    /// steering-wheel angle.
+    SteerAboveYaw {
+        /// The run file.
+        run: Box<str>,
+        /// Median of r·l/(u·δ) over the steered samples.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+    },
+    /// A `degrees` entry naming a column the run does not have.
+    DegreesAbsent {
+        /// The run file.
+        run: Box<str>,
+        /// The column declared.
+        column: &'static str,
+        /// The run's columns.
+        header: Vec<String>,
+    },
+}
+
+impl fmt::Display for ReplayRunProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReplayRunProblem::TooSlow { run, min_speed, stated, slow, read, top } => {
+                let default = if *stated { "" } else { " (the default)" };
+                write!(
+                    f,
+                    "the run {run} has no two successive samples at or above the replay's min_speed = {} m/s{default} ({slow} of {read} samples below it; its top speed is {} m/s): ",
+                    Num(*min_speed),
+                    crate::format::readable(*top, 3)
+                )?;
+                match *top > 0.0 {
+                    true => write!(
+                        f,
+                        "set `min_speed` under [manoeuvre] below its top speed to replay it (a crawl's slip angles are large and its response no handling's)"
+                    ),
+                    false => f.write_str("the run stands still throughout: there is nothing to replay"),
+                }
+            }
+            ReplayRunProblem::SteerAboveYaw { run, median, samples } => write!(
+                f,
+                "the run {run}: the yaw rate is {} than a neutral car's for this steer (median r·l/(u·δ) = {median:.3} over {samples} steered samples): is `steer` in degrees (57×) or a steering-wheel angle (divide by the steering ratio), or `yaw_rate` declared in degrees while it was in rad/s? The steer is the road-wheel angle in radians; a column the run logs in degrees is declared so in this scenario: `degrees = [\"steer\"]` under [manoeuvre]",
+                match *median > 0.0 {
+                    true => format!("{}× smaller", crate::format::readable(1.0 / median, 2)),
+                    false => "far smaller".into(),
+                }
+            ),
+            ReplayRunProblem::DegreesAbsent { run, column, header } => {
+                write!(
+                    f,
+                    "`manoeuvre.degrees` names `{column}`, a column the run {run} does not have (its columns: {})",
+                    header.join(", ")
+                )?;
+                let names: Vec<&str> = header.iter().map(String::as_str).collect();
+                match crate::format::nearest_name(column, &names) {
+                    Some(k) => write!(f, "; did you mean `{k}`? Rename the run's column to `{column}`"),
+                    None => f.write_str("; leave it out, or name a column the run has"),
+                }
+            }
+        }
+    }
+}

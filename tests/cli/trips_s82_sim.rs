@@ -220,6 +220,10 @@ fn a_tir_whose_lateral_block_identify_did_not_fit_is_warned_of() {
 #[test]
 fn a_long_simulation_shows_its_progress_on_a_terminal() {
     if Command::new("script").arg("--version").output().is_err() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI is set but `script` is missing: install Debian's `bsdutils` (.ci/run does)"
+        );
         eprintln!("SKIPPED a_long_simulation_shows_its_progress_on_a_terminal: no `script` to give the run a terminal");
         return;
     }

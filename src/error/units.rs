@@ -50,6 +50,20 @@ pub enum UnitSlip {
         /// The least |speed × yaw_rate| of a turning sample, m/s².
         turning: f64,
     },
+    /// A lateral acceleration about 3.281 times speed × yaw rate: in ft/s².
+    #[error("column `ay`: {} where speed × yaw_rate is {} m/s²: over {} turning at |speed × yaw_rate| ≥ {} m/s², `ay` is a median {} of it, where a car's lateral acceleration is about speed × yaw_rate (1 m = 3.281 ft): is `ay` in ft/s²? multiply it by 0.3048 (FORMATS.md: m/s²)", Num(*value), significant(*expected, 3), plural(*samples, "sample", "samples"), Num(*turning), fixed(*median, 3))]
+    AyInFeet {
+        /// The row's `ay`, as read.
+        value: f64,
+        /// The row's speed × yaw rate, m/s².
+        expected: f64,
+        /// The median of ay/(speed·yaw_rate) over the turning samples.
+        median: f64,
+        /// The turning samples.
+        samples: usize,
+        /// The least |speed × yaw_rate| of a turning sample, m/s².
+        turning: f64,
+    },
     /// A median time step no handling run is logged at.
     #[error("column `t`: the median time step is {} ({}), coarser than any handling run is logged at (at most {} s, {} Hz): `t` is in seconds (FORMATS.md){}", Num(*step), rate(*step), Num(*limit), Num(1.0 / limit), in_ms(*step))]
     TimeStep {

@@ -52,6 +52,11 @@ const TURNING_SAMPLES: usize = 50;
 /// factor of 2), where a car's is near 1 on a flat road.
 const AY_IN_G: (f64, f64) = (0.05, 0.2);
 
+/// The band of ay/(speed·yaw_rate) of `ay` in ft/s² (3.281, within a
+/// factor of 1.25), where a car's is near 1 on a flat road: a bank or a
+/// sideslip rate moves single samples, not 80 % of them, this far.
+const AY_IN_FEET: (f64, f64) = (2.6, 4.1);
+
 /// The band of ay/(speed·yaw_rate) of a speed in km/h (1/3.6 = 0.28,
 /// within a factor of 1.4), where a car's is near 1 on a flat road.
 const SPEED_IN_KMH: (f64, f64) = (0.2, 0.4);
@@ -138,6 +143,7 @@ pub(super) fn check_ay(
         inside as f64 >= AY_IN_G_SHARE * q.len() as f64
     };
     let (in_g, in_deg) = (holds(AY_IN_G), holds(YAW_IN_DEG));
+    let in_feet = holds(AY_IN_FEET);
     let speed_unit = if holds(SPEED_IN_KMH) {
         Some(SpeedUnit::Kmh)
     } else if holds(SPEED_IN_MPH) {
@@ -146,7 +152,7 @@ pub(super) fn check_ay(
         None
     };
     let too_small = holds(YAW_TOO_SMALL);
-    if !in_g && speed_unit.is_none() && !in_deg && !too_small {
+    if !in_g && !in_feet && speed_unit.is_none() && !in_deg && !too_small {
         return Ok(());
     }
     let m = median(&mut q);
@@ -183,6 +189,16 @@ pub(super) fn check_ay(
             turning: TURNING,
         };
         return Err(c.error_at(path, i, "speed", slip.into()));
+    }
+    if in_feet {
+        let slip = UnitSlip::AyInFeet {
+            value: ay[i],
+            expected: speed[i] * r[i],
+            median: m,
+            samples: turning.len(),
+            turning: TURNING,
+        };
+        return Err(c.error_at(path, i, "ay", slip.into()));
     }
     let slip = UnitSlip::AyInG {
         value: ay[i],

@@ -368,8 +368,21 @@ fn peak_moved_by_noise(m: &StepMetrics) -> Option<String> {
         Some(_) => " and TB with it",
         None => "",
     };
+    // The overshoot is the same sample's height: the noise moves it too.
+    let overshoot = match m.yaw_rate_overshoot.zip(m.yaw_rate_overshoot_spread) {
+        Some((o, sd)) => format!(
+            ", and the overshoot, {} %, by ±{} points",
+            crate::format::fixed(o, 2),
+            crate::format::fixed(sd, 1)
+        ),
+        None => String::new(),
+    };
+    let also = match overshoot.is_empty() {
+        true => "",
+        false => ", and the overshoot",
+    };
     Some(format!(
-        "the yaw-rate peak is flat within the noise ({}): in {draws} copies of the run with its noise added again (seed {}) the peak time, {} s, moves by ±{} s ({} %, one standard deviation){lost}; read the peak time{tb} as uncertain by that much (an upper estimate: a copy carries the noise twice), or filter harder (--filter-hz) or log a quieter gyro",
+        "the yaw-rate peak is flat within the noise ({}): in {draws} copies of the run with its noise added again (seed {}) the peak time, {} s, moves by ±{} s ({} %, one standard deviation){overshoot}{lost}; read the peak time{tb}{also} as uncertain by that much (an upper estimate: a copy carries the noise twice), or filter harder (--filter-hz) or log a quieter gyro",
         m.yaw_rate_noise_text(),
         crate::metrics::PEAK_SEED,
         crate::format::readable(tp, 3),

@@ -30,38 +30,48 @@ pub const DRAWS: usize = 32;
 pub const SEED: u64 = 6323;
 
 /// The index of the peak of `v` from time `from` on: the highest sample of
-/// the first stretch above `level` (the first overshoot), where it is a
+/// the first stretch above `level` (the first overshoot; it ends where `v`
+/// falls to `level − dip` or below, so that a dip of the noise alone does
+/// not cut it short and leave the rising flank's top as the peak), where it is a
 /// local maximum; none where that highest sample is the record's last. The
 /// highest of the stretch, not its first local maximum: on a noisy record
 /// the first sample that noise lifts above the level and its neighbours
 /// stands on the rising flank (10 % noise made a 0.435 s peak 0.298 s),
 /// where the stretch's highest is the overshoot's top. On a smooth record
 /// the two are one.
-pub(super) fn peak_index(t: &[f64], v: &[f64], from: f64, level: f64) -> Option<usize> {
+pub(super) fn peak_index(
+    t: &[f64],
+    v: &[f64],
+    from: f64,
+    (level, dip): (f64, f64),
+) -> Option<usize> {
     let n = v.len();
     let first = (0..n).find(|&i| t[i] >= from && v[i] > level)?;
-    let end = (first..n).find(|&i| v[i] <= level).unwrap_or(n);
+    let end = (first..n).find(|&i| v[i] <= level - dip).unwrap_or(n);
     let top = (first..end).max_by(|&a, &b| v[a].total_cmp(&v[b]).then(b.cmp(&a)))?;
     (top > 0 && top + 1 < n && v[top] >= v[top - 1] && v[top] > v[top + 1]).then_some(top)
 }
 
 /// How far noise moves a peak: the peak time's standard deviation over
-/// the copies that find one (s), and the share of copies that do.
+/// the copies that find one (s), the overshoot's (share of the step), and
+/// the share of copies that do.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct PeakSpread {
     /// Standard deviation of the peak times found, s.
     pub sd: f64,
+    /// Standard deviation of the overshoots found, share of the step.
+    pub overshoot_sd: f64,
     /// Share of the copies that find a peak.
     pub found: f64,
 }
 
 /// The [`PeakSpread`] of the peak of `v` (filtered r̂ at times `t`) found
-/// from `from` above `level`, with white noise of deviation `noise` (raw,
+/// from `from` above `level` (with its `dip`), with white noise of deviation `noise` (raw,
 /// share of the step) added before `filter`. `None` without noise.
 pub(super) fn peak_spread(
     t: &[f64],
     v: &[f64],
-    (from, level): (f64, f64),
+    (from, level): (f64, (f64, f64)),
     noise: f64,
     filter: &dyn Fn(&[f64]) -> Vec<f64>,
 ) -> Option<PeakSpread> {
@@ -71,6 +81,7 @@ pub(super) fn peak_spread(
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(SEED);
     let mut z = vec![0.0; v.len()];
     let mut times = Vec::with_capacity(DRAWS);
+    let mut heights = Vec::with_capacity(DRAWS);
     for _ in 0..DRAWS {
         z.iter_mut()
             .for_each(|x| *x = noise * crate::optim::stats::gauss(&mut rng));
@@ -78,15 +89,21 @@ pub(super) fn peak_spread(
         let copy: Vec<f64> = v.iter().zip(filter(&z)).map(|(a, b)| a + b).collect();
         if let Some(i) = peak_index(t, &copy, from, level) {
             times.push(t[i]);
+            heights.push(copy[i]);
         }
     }
-    let found = times.len() as f64 / DRAWS as f64;
-    let mean = times.iter().sum::<f64>() / times.len().max(1) as f64;
-    let var = times.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / times.len().max(2) as f64;
     Some(PeakSpread {
-        sd: var.sqrt(),
-        found,
+        sd: deviation(&times),
+        overshoot_sd: deviation(&heights),
+        found: times.len() as f64 / DRAWS as f64,
     })
+}
+
+/// The standard deviation of `x` (over n; 0 for fewer than two).
+fn deviation(x: &[f64]) -> f64 {
+    let mean = x.iter().sum::<f64>() / x.len().max(1) as f64;
+    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / x.len().max(2) as f64;
+    var.sqrt()
 }
 
 #[cfg(test)]
@@ -116,14 +133,20 @@ mod tests {
     fn a_flat_peak_moves_with_noise_and_a_sharp_one_does_not() {
         let filter = |x: &[f64]| super::super::zero_phase_low_pass(x, 0.01, 10.0);
         let (t, sharp) = response(0.36);
-        let i = peak_index(&t, &sharp, 0.0, 1.05).unwrap();
-        let s = peak_spread(&t, &sharp, (0.0, 1.05), 0.01, &filter).unwrap();
+        let i = peak_index(&t, &sharp, 0.0, (1.05, 0.0)).unwrap();
+        let s = peak_spread(&t, &sharp, (0.0, (1.05, 0.0)), 0.01, &filter).unwrap();
         assert!(s.sd < 0.03 * t[i] && s.found == 1.0, "{s:?} of {}", t[i]);
         let (t, flat) = response(0.78);
-        let i = peak_index(&t, &flat, 0.0, 1.01).unwrap();
-        let f = peak_spread(&t, &flat, (0.0, 1.01), 0.01, &filter).unwrap();
+        let i = peak_index(&t, &flat, 0.0, (1.01, 0.0)).unwrap();
+        let f = peak_spread(&t, &flat, (0.0, (1.01, 0.0)), 0.01, &filter).unwrap();
         assert!(f.sd > 0.05 * t[i] || f.found < 0.75, "{f:?} of {}", t[i]);
-        assert_eq!(Some(f), peak_spread(&t, &flat, (0.0, 1.01), 0.01, &filter));
-        assert_eq!(None, peak_spread(&t, &flat, (0.0, 1.01), 0.0, &filter));
+        assert_eq!(
+            Some(f),
+            peak_spread(&t, &flat, (0.0, (1.01, 0.0)), 0.01, &filter)
+        );
+        assert_eq!(
+            None,
+            peak_spread(&t, &flat, (0.0, (1.01, 0.0)), 0.0, &filter)
+        );
     }
 }

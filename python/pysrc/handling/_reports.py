@@ -99,6 +99,9 @@ class StepMetrics:
     without noise; an upper estimate)."""
     yaw_rate_peak_found_share: Optional[float]
     """The share of those noisy copies that find a peak at all."""
+    yaw_rate_overshoot_spread: Optional[float]
+    """How far the run's own noise moves the overshoot: its standard
+    deviation over the same copies, percentage points (an upper estimate)."""
 
     @classmethod
     def from_dict(cls, d: Dict[str, Any]) -> "StepMetrics":

@@ -68,6 +68,15 @@ fn bias_words(bias: f64, b: &BiasTest, unit: &str) -> String {
     )
 }
 
+/// The noise floor and the line three of them draw: the bracket once held
+/// only the floor, which read as if the RMS sat at the threshold.
+fn floors_words(noise_floor: f64, unit: &str) -> String {
+    format!(
+        "noise floor {noise_floor:.4} {unit}, 3× = {:.4} {unit}",
+        3.0 * noise_floor
+    )
+}
+
 /// The verdict of one channel.
 pub(super) fn verdict(s: &Said) -> String {
     let Said {
@@ -81,7 +90,7 @@ pub(super) fn verdict(s: &Said) -> String {
     let mut out = if found.whole {
         whole_gap(s)
     } else if found.any() {
-        let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit} within three noise floors, {noise_floor:.4} {unit}), but");
+        let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit}, within three noise floors: {}), but", floors_words(noise_floor, unit));
         let mut parts = Vec::new();
         if let Some(w) = found.window {
             parts.push(format!(" a gap in one stretch: {}", window_words(w, unit)));
@@ -95,7 +104,10 @@ pub(super) fn verdict(s: &Said) -> String {
         v += &parts.join("; and");
         v
     } else {
-        let mut v = format!("no significant gap: RMS {rms:.4} {unit} within three noise floors ({noise_floor:.4} {unit})");
+        let mut v = format!(
+            "no significant gap: RMS {rms:.4} {unit}, within three noise floors ({})",
+            floors_words(noise_floor, unit)
+        );
         match s.worst {
             Some(w) if w.threshold_noise_floors.is_finite() => {
                 v += &format!(

@@ -1,0 +1,62 @@
+//! Fresh-eyes round 9 on `equilibria` and the scenario/sweep TOML checks:
+//! the stability of a model with a tyre lag is the full state's (β, r and
+//! the lagged slip angles), not the (β, r) model's.
+
+use super::*;
+
+/// The bundled speed sweep cut to steer 0.1 rad at 20 m/s, with `effects`
+/// (a `[model.effects]` table's lines, or nothing) before `[sweep]`.
+fn speed_sweep(effects: &str) -> String {
+    let text = bundled_scenario("equilibria_speed.toml");
+    let text = text.replace(
+        "speed = { from = 30.0, to = 120.0, step = 10.0, unit = \"km/h\" }",
+        "speed = 20.0",
+    );
+    text.replace("[sweep]", &format!("{effects}[sweep]"))
+}
+
+/// The high-yaw equilibrium's row of equilibria.csv (r > 0.35 rad/s):
+/// kind and leading eigenvalue (re, im).
+fn high_yaw_row(dir: &Path, sweep: &str) -> (String, f64, f64) {
+    fs::write(dir.join("sweep.toml"), sweep).unwrap();
+    let out = dir.join("out");
+    succeeds(&[
+        "equilibria",
+        dir.join("sweep.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let csv = fs::read_to_string(out.join("equilibria.csv")).unwrap();
+    let row: Vec<String> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(str::to_string).collect::<Vec<_>>())
+        .find(|f| f[4].parse::<f64>().unwrap() > 0.35)
+        .expect("the high-yaw equilibrium");
+    (
+        row[5].clone(),
+        row[6].parse().unwrap(),
+        row[7].parse().unwrap(),
+    )
+}
+
+/// (7) A relaxation length of 3 m at 20 m/s (lag rate u/σ = 6.7 1/s, slow
+/// against the axles') turns the high-yaw stable focus into an unstable
+/// one; the old binary gave the model without the lag's stability.
+#[test]
+fn a_tyre_lag_turns_a_stable_focus_unstable() {
+    let dir = tempfile::tempdir().unwrap();
+    let (kind, re, im) = high_yaw_row(dir.path(), &speed_sweep(""));
+    assert_eq!(kind, "stable-focus");
+    assert!(
+        (re + 0.004495).abs() < 1e-5 && (im - 0.64747).abs() < 1e-4,
+        "{re} {im}"
+    );
+    let lagged = speed_sweep("[model.effects]\nrelaxation_length = 3.0\n\n");
+    let (kind, re, im) = high_yaw_row(dir.path(), &lagged);
+    assert_eq!(kind, "unstable-focus");
+    assert!(
+        (re - 0.026441).abs() < 1e-5 && (im - 0.64439).abs() < 1e-4,
+        "{re} {im}"
+    );
+}

@@ -38,6 +38,7 @@ mod runs_selection;
 mod scenario_file;
 mod steady;
 mod steer_runs;
+mod sweep_limit;
 #[cfg(test)]
 mod tests;
 mod units;
@@ -80,6 +81,7 @@ pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 pub use steer_runs::SteerInDegreesRuns;
+pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
 use thiserror::Error;
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,

@@ -60,3 +60,68 @@ fn a_tyre_lag_turns_a_stable_focus_unstable() {
         "{re} {im}"
     );
 }
+
+/// The bundled steer sweep with `line` replacing the line starting with
+/// `start` (or appended where `start` is empty); its error.
+fn steer_sweep_error(start: &str, line: &str) -> String {
+    let text = bundled_scenario("equilibria_steer.toml");
+    let text = if start.is_empty() {
+        format!("{text}\n{line}\n")
+    } else {
+        text.lines()
+            .map(|l| if l.starts_with(start) { line } else { l })
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let dir = scratch(&[("sweep.toml", &text)]);
+    fails_cleanly("equilibria", &dir.path().join("sweep.toml"), dir.path())
+}
+
+/// (9) A speed of 1000 m/s (or km/h), a friction of 50 and `beta_max = 30`
+/// (degrees) are refused at their keys with the rule and the likely slip;
+/// the old binary ran them.
+#[test]
+fn absurd_sweep_values_are_refused_at_their_keys() {
+    let e = steer_sweep_error("speed =", "speed = [20.0, 1000.0]");
+    assert!(
+        e.contains("sweep.toml:28:9: `sweep.speed` = 1000: must lie in (0.5, 150]: the model evaluates no speed below 0.5 m/s"),
+        "{e}"
+    );
+    let e = steer_sweep_error("speed =", "speed = { values = [1000.0], unit = \"km/h\" }");
+    assert!(
+        e.contains("`sweep.speed` = 1000: must lie in (1.8, 540]"),
+        "{e}"
+    );
+    let e = steer_sweep_error("friction =", "friction = 50.0");
+    assert!(
+        e.contains("sweep.toml:27:12: `sweep.friction` = 50: must lie in (0, 3]: the road's friction scales the tyres' own"),
+        "{e}"
+    );
+    let e = steer_sweep_error("", "[box]\nbeta_max = 30\nyaw_rate_max = 1.0");
+    assert!(
+        e.contains("`box.beta_max` = 30: must lie in (0, 1.5708]: a sideslip beyond ±90° (1.5708 rad) is a car running backward, where the model has no equilibrium; the key is in rad: did you mean 0.5236 rad (30°)?"),
+        "{e}"
+    );
+}
+
+/// (9) A `[box]` with one key takes the other's default; it failed with
+/// "missing field `yaw_rate_max`".
+#[test]
+fn a_box_with_one_key_takes_the_others_default() {
+    let text = format!(
+        "{}\n[box]\nbeta_max = 0.5\n",
+        bundled_scenario("equilibria_steer.toml")
+    );
+    let dir = scratch(&[("sweep.toml", &text)]);
+    let out = dir.path().join("out");
+    let said = succeeds(&[
+        "equilibria",
+        dir.path().join("sweep.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        said.contains("box |β| ≤ 0.500 rad, |r| ≤ 0.484 rad/s"),
+        "{said}"
+    );
+}

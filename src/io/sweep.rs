@@ -3,6 +3,7 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
+use super::file_kind::not_this_toml;
 use super::limits::{road_wheel_steer, road_wheel_steer_degrees, MAX_SPEED};
 use super::tables::{resolve_model, ResolvedModel, TyreRefs, MAX_ROAD_FRICTION};
 use super::toml_file::{line_col, param_error, TomlSource};
@@ -10,8 +11,8 @@ use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
+use crate::error::{FileKind, SweepLimit, Wanted, MAX_BOX_SIDESLIP};
 use crate::error::{InputError, Limit, Location, ParamError, ParamReason};
-use crate::error::{SweepLimit, MAX_BOX_SIDESLIP};
 use crate::tyre::TyreModel;
 use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, MIN_SPEED};
 use serde::Deserialize;
@@ -286,7 +287,11 @@ fn search_box(
 /// Reads and validates a sweep file.
 pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     let src = TomlSource::read(path)?;
-    let f: SweepFile = src.parse()?;
+    // A file of another kind is named as such, not by its first key the
+    // sweep does not know.
+    let f: SweepFile = src
+        .parse()
+        .map_err(|e| not_this_toml(path, Wanted::Sweep, &[FileKind::Sweep]).unwrap_or(e))?;
     let ResolvedModel {
         model,
         files: [front_path, rear_path],

@@ -125,3 +125,59 @@ fn a_box_with_one_key_takes_the_others_default() {
         "{said}"
     );
 }
+
+/// (10) A campaign, a run CSV, a history, a `.tir` and a tyre file given
+/// to `equilibria` or `study` are named as what they are, with the
+/// command that reads them; the old binary gave the parser's complaint
+/// about their first key or line (`unknown field `rig``, `expected `.`,
+/// `=``).
+#[test]
+fn files_of_another_kind_given_to_equilibria_or_study_are_named() {
+    let dir = scratch(&[
+        ("log.csv", "t,speed,steer,yaw_rate\n0,20,0,0\n0.01,20,0,0\n"),
+        (
+            "history.csv",
+            "t,steer,speed,beta,yaw_rate,ay,alpha_front,alpha_rear,fy_front,fy_rear\n0,0,20,0,0,0,0,0,0,0\n",
+        ),
+        ("car.tir", "[MODEL]\nFITTYP = 61\n"),
+    ]);
+    let campaign = root().join("campaigns/delays.toml");
+    let tyre = root().join("tyres/gim.toml");
+    let cases = [
+        (
+            campaign,
+            "this is a campaign (a TOML file with [runs] or [diagnose]), not ",
+            ": `handling diagnose` reads it",
+        ),
+        (
+            dir.path().join("log.csv"),
+            "this is a measured vehicle run (columns t, speed, steer, yaw_rate), not ",
+            ": `handling metrics` measures it",
+        ),
+        (
+            dir.path().join("history.csv"),
+            "this is a simulation history (history.csv, which `handling simulate` writes)",
+            ": `handling metrics` measures it",
+        ),
+        (
+            dir.path().join("car.tir"),
+            "this is a Magic Formula tyre property file (.tir), not ",
+            ": `handling tyre-eval` reads it",
+        ),
+        (
+            tyre,
+            "this is a tyre file (`model = \"gim\"`), not ",
+            ": `handling tyre-eval` reads it",
+        ),
+    ];
+    for (file, is, reader) in cases {
+        for (command, wanted) in [
+            ("equilibria", "an equilibrium sweep (a TOML file with [vehicle], [tyres] and [sweep]), which `handling equilibria` reads"),
+            ("study", "a stiffness study (a TOML file with [vehicle], [tyres], [manoeuvre] and [stiffness] or [rbf]), which `handling study` reads"),
+        ] {
+            let e = fails_cleanly(command, &file, dir.path());
+            assert!(e.contains(is) && e.contains(wanted) && e.contains(reader), "{command}: {e}");
+            assert!(!e.contains("unknown field") && !e.contains("expected `.`"), "{e}");
+        }
+    }
+}

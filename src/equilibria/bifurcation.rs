@@ -210,7 +210,7 @@ fn fold_at(
     near.sort_by(|x, y| (x - merge).abs().total_cmp(&(y - merge).abs()));
     let kind_at = |ar: f64| {
         let q = red_c.at(ar);
-        stability::classify(model, &check, [q.beta, q.yaw_rate]).kind
+        lagged::classify(model, &check, [q.beta, q.yaw_rate]).kind
     };
     let kinds = match near.as_slice() {
         [x, y, ..] => [kind_at(*x), kind_at(*y)],
@@ -302,7 +302,7 @@ fn hopf(
         let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
         let cm = axis.with(a, pm);
         let xm = polish(model, &cm, x0)?;
-        let t = stability::classify(model, &cm, xm).eigenvalues[0].0;
+        let t = lagged::classify(model, &cm, xm).eigenvalues[0].0;
         if t * ta > 0.0 {
             pa = pm;
             xa = xm;

@@ -157,7 +157,14 @@ pub(crate) fn from_jacobian(j: [[f64; N]; N]) -> Stability {
     }
 }
 
-/// Stability of the equilibrium at `x` in the full state.
+/// Stability of the equilibrium at `x` in the model's full state: the
+/// (β, r) Jacobian's ([`super::stability::classify`]), or with a tyre lag
+/// the 4×4 Jacobian's of (β, r) and the lagged slip angles: the same
+/// equilibrium, not the same stability.
 pub(crate) fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
-    from_jacobian(jacobian(model, c, x))
+    if model.options.effects.lagged() {
+        from_jacobian(jacobian(model, c, x))
+    } else {
+        super::stability::classify(model, c, x)
+    }
 }

@@ -214,7 +214,7 @@ pub(crate) fn describe(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Equi
     Equilibrium {
         beta: x[0],
         yaw_rate: x[1],
-        stability: stability::classify(model, c, x),
+        stability: lagged::classify(model, c, x),
         residual: r[0].abs().max(r[1].abs()),
         alpha_rear,
     }

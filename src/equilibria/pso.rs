@@ -224,7 +224,7 @@ pub fn search(
         ..SearchStats::default()
     };
     let index = |x: &[f64; 2]| {
-        if super::stability::classify_reduced(model, c, *x).determinant >= 0.0 {
+        if super::stability::classify(model, c, *x).determinant >= 0.0 {
             1
         } else {
             -1

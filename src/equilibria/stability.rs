@@ -1,9 +1,9 @@
 //! Local stability of an equilibrium from the eigenvalues of the 2×2
 //! Jacobian ∂(β̇, ṙ)/∂(β, r) (with a tyre lag, of the 4×4 Jacobian of the
-//! full state: [`super::lagged`]): exact from one evaluation of the right-hand
-//! side in dual numbers (the model's effects lifted into them, the state
-//! seeded) where the tyres have a generic force, else central differences
-//! (step 1e-7 scaled).
+//! full state: the `lagged` module, which imports this one): exact from one
+//! evaluation of the right-hand side in dual numbers (the model's effects
+//! lifted into them, the state seeded) where the tyres have a generic
+//! force, else central differences (step 1e-7 scaled).
 
 use super::{residual, Condition};
 use crate::report::stability::Class;
@@ -178,21 +178,10 @@ pub(crate) fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
     }
 }
 
-/// Stability of the equilibrium at `x` in the model's full state: the
-/// (β, r) Jacobian's, or with a tyre lag the 4×4 Jacobian's of (β, r) and
-/// the lagged slip angles ([`super::lagged`]): the same equilibrium, not the
-/// same stability.
-pub(crate) fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
-    if model.options.effects.lagged() {
-        super::lagged::classify(model, c, x)
-    } else {
-        classify_reduced(model, c, x)
-    }
-}
-
 /// Stability of the equilibrium at `x` in (β, r) alone, the lag states (if
 /// any) held at the kinematic slip angles: the phase plane's, whose index
-/// (sign det J) is the full model's.
-pub(crate) fn classify_reduced(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
+/// (sign det J) is the full model's (`lagged::classify` takes the
+/// lag states into account).
+pub(crate) fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
     from_jacobian(jacobian(model, c, x))
 }

@@ -537,9 +537,12 @@ fn a_tyre_lag_turns_a_stable_focus_unstable_as_the_full_model_integrated_shows()
         .map(|e| [e.beta, e.yaw_rate])
         .find(|x| x[1] > 0.35)
         .expect("the high-yaw equilibrium");
-    assert_eq!(stability::classify(&m, &c, x).kind, Kind::StableFocus);
+    assert_eq!(
+        crate::equilibria::lagged::classify(&m, &c, x).kind,
+        Kind::StableFocus
+    );
     m.options.effects.relaxation_length = 3.0;
-    let s = stability::classify(&m, &c, x);
+    let s = crate::equilibria::lagged::classify(&m, &c, x);
     assert_eq!(s.kind, Kind::UnstableFocus);
     let growth = s.eigenvalues[0].0;
     assert!(growth > 0.02 && growth < 0.04, "{growth}");

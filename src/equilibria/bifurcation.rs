@@ -14,10 +14,14 @@
 //!   must be tiny. Two equilibria that merely approach each other never
 //!   change the count and are not called a fold.
 //! - Hopf: an equilibrium continued between neighbouring conditions whose
-//!   Jacobian trace changes sign while det J > 0; bisected with Newton
-//!   continuation to trace = 0 and checked the same way.
+//!   leading eigenvalue's real part (the Jacobian trace's sign in (β, r))
+//!   changes sign while det J > 0; bisected with Newton continuation to
+//!   zero and checked the same way. With a tyre lag the eigenvalues are the
+//!   full state's ([`super::lagged`]), so a Hopf point the lag brings is
+//!   found too.
 
 use super::exact;
+use super::lagged;
 use super::stability::{self, Kind};
 use super::{distance, polish, residual, Condition, Equilibrium};
 use crate::vehicle::VehicleModel;
@@ -104,7 +108,8 @@ pub struct Bifurcation {
     pub yaw_rate: f64,
     /// max(|β̇|, |ṙ|) at the point.
     pub residual: f64,
-    /// det J/|J|² (fold) or trace J/|J| (Hopf) at the point.
+    /// det J/|J|² (fold) or 2·Re λ/|J| of the leading pair (Hopf; trace
+    /// J/|J| without a tyre lag) at the point.
     pub criterion: f64,
     /// Kinds of the two equilibria that meet (fold) or of the branch before
     /// and after (Hopf).
@@ -205,7 +210,7 @@ fn fold_at(
     near.sort_by(|x, y| (x - merge).abs().total_cmp(&(y - merge).abs()));
     let kind_at = |ar: f64| {
         let q = red_c.at(ar);
-        stability::classify(model, &check, [q.beta, q.yaw_rate]).kind
+        lagged::classify(model, &check, [q.beta, q.yaw_rate]).kind
     };
     let kinds = match near.as_slice() {
         [x, y, ..] => [kind_at(*x), kind_at(*y)],
@@ -287,14 +292,17 @@ fn hopf(
 ) -> Option<Bifurcation> {
     let (mut pa, mut pb) = (axis.get(a), axis.get(b));
     let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
-    let ta = ea.stability.trace;
+    // The leading eigenvalue's real part: its sign is the trace's for the
+    // (β, r) Jacobian at det J > 0, and it is what crosses zero at a Hopf
+    // point of the full state with a tyre lag.
+    let ta = ea.stability.eigenvalues[0].0;
     let tol = 1e-12 * (pa - pb).abs().max(1e-12);
     while (pa - pb).abs() > tol {
         let pm = 0.5 * (pa + pb);
         let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
         let cm = axis.with(a, pm);
         let xm = polish(model, &cm, x0)?;
-        let t = stability::classify(model, &cm, xm).trace;
+        let t = lagged::classify(model, &cm, xm).eigenvalues[0].0;
         if t * ta > 0.0 {
             pa = pm;
             xa = xm;
@@ -305,9 +313,17 @@ fn hopf(
     }
     let at = axis.with(a, pa);
     let f = residual(model, &at, xa);
-    let j = stability::jacobian(model, &at, xa);
-    let s = stability::from_jacobian(j);
-    let crit = s.trace / jacobian_scale(&j);
+    let (s, scale) = if model.options.effects.lagged() {
+        let j = lagged::jacobian(model, &at, xa);
+        let scale = j.iter().flatten().fold(1e-300, |m: f64, v| m.max(v.abs()));
+        (lagged::from_jacobian(j), scale)
+    } else {
+        let j = stability::jacobian(model, &at, xa);
+        (stability::from_jacobian(j), jacobian_scale(&j))
+    };
+    // Twice the leading pair's real part: the trace of the (β, r) Jacobian
+    // at a complex pair.
+    let crit = 2.0 * s.eigenvalues[0].0 / scale;
     let res = f[0].abs().max(f[1].abs());
     Some(Bifurcation {
         kind: BifurcationKind::Hopf,
@@ -342,7 +358,7 @@ pub(crate) fn locate(
                 if close
                     && sx.determinant > 0.0
                     && sy.determinant > 0.0
-                    && sx.trace * sy.trace < 0.0
+                    && sx.eigenvalues[0].0 * sy.eigenvalues[0].0 < 0.0
                 {
                     out.extend(hopf(model, axis, ca, x, cb, y));
                 }

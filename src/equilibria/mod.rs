@@ -11,7 +11,8 @@
 //!   by the rear slip angle and finds all roots of one scalar function by a
 //!   sign scan plus Brent's method.
 //!
-//! [`stability`] classifies each equilibrium from the Jacobian's eigenvalues;
+//! [`stability`] classifies each equilibrium from the Jacobian's eigenvalues
+//! (with a tyre lag, the full state's: [`lagged`]);
 //! [`bifurcation`] locates folds (saddle-node) and Hopf points along a sweep;
 //! [`phase`] traces the phase plane (trajectories, separatrices) the
 //! figures of the equilibria job draw.
@@ -19,6 +20,7 @@
 
 pub(crate) mod bifurcation;
 pub mod exact;
+pub(crate) mod lagged;
 pub(crate) mod phase;
 pub mod pso;
 pub(crate) mod stability;
@@ -212,7 +214,7 @@ pub(crate) fn describe(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Equi
     Equilibrium {
         beta: x[0],
         yaw_rate: x[1],
-        stability: stability::classify(model, c, x),
+        stability: lagged::classify(model, c, x),
         residual: r[0].abs().max(r[1].abs()),
         alpha_rear,
     }

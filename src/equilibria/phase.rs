@@ -179,10 +179,13 @@ pub(crate) fn separatrices(
             .filter(|o| *o != x)
             .collect();
         let j = stability::jacobian(model, c, x);
+        // The plane's own eigenvalues: with a tyre lag the equilibrium's
+        // are the full state's, whose leading two need not be these.
+        let ev = stability::from_jacobian(j).eigenvalues;
         let mut branches = Vec::with_capacity(4);
         for (lambda, dir, manifold) in [
-            (e.stability.eigenvalues[1].0, -1.0, Manifold::Stable),
-            (e.stability.eigenvalues[0].0, 1.0, Manifold::Unstable),
+            (ev[1].0, -1.0, Manifold::Stable),
+            (ev[0].0, 1.0, Manifold::Unstable),
         ] {
             let v = eigenvector(j, lambda, scale);
             for side in [-1.0, 1.0] {

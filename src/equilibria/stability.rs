@@ -1,8 +1,9 @@
 //! Local stability of an equilibrium from the eigenvalues of the 2×2
-//! Jacobian ∂(β̇, ṙ)/∂(β, r): exact from one evaluation of the right-hand
-//! side in dual numbers (the model's effects lifted into them, the state
-//! seeded) where the tyres have a generic force, else central differences
-//! (step 1e-7 scaled).
+//! Jacobian ∂(β̇, ṙ)/∂(β, r) (with a tyre lag, of the 4×4 Jacobian of the
+//! full state: the `lagged` module, which imports this one): exact from one
+//! evaluation of the right-hand side in dual numbers (the model's effects
+//! lifted into them, the state seeded) where the tyres have a generic
+//! force, else central differences (step 1e-7 scaled).
 
 use super::{residual, Condition};
 use crate::report::stability::Class;
@@ -63,11 +64,13 @@ impl Kind {
 pub struct Stability {
     /// Kind.
     pub kind: Kind,
-    /// Eigenvalues (re, im), the one with the larger real part first.
+    /// Eigenvalues (re, im), the one with the larger real part first (with
+    /// a tyre lag: the two of the four with the largest real parts).
     pub eigenvalues: [(f64, f64); 2],
     /// Trace of the Jacobian, 1/s.
     pub trace: f64,
-    /// Determinant of the Jacobian, 1/s².
+    /// Determinant of the Jacobian, 1/s² (1/s⁴ with a tyre lag; its sign,
+    /// the index, is the same either way).
     pub determinant: f64,
 }
 
@@ -175,7 +178,10 @@ pub(crate) fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
     }
 }
 
-/// Stability of the equilibrium at `x`.
+/// Stability of the equilibrium at `x` in (β, r) alone, the lag states (if
+/// any) held at the kinematic slip angles: the phase plane's, whose index
+/// (sign det J) is the full model's (`lagged::classify` takes the
+/// lag states into account).
 pub(crate) fn classify(model: &VehicleModel, c: &Condition, x: [f64; 2]) -> Stability {
     from_jacobian(jacobian(model, c, x))
 }

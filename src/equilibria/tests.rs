@@ -491,3 +491,86 @@ fn the_exact_stability_jacobian_equals_central_differences() {
         }
     }
 }
+
+#[test]
+fn the_lagged_jacobian_equals_central_differences_of_the_full_state() {
+    use crate::equilibria::lagged;
+    use crate::tyre::Pac89;
+    for (tyre, lt) in [
+        (Tyre::MagicSimple(MagicSimple::new(10.0, 1.3)), false),
+        (Tyre::Pac89(Pac89::adams_example()), true),
+    ] {
+        let mut m = equilibria_model(lt);
+        (m.front, m.rear) = (tyre.clone(), tyre.clone());
+        m.options.effects.relaxation_length = 3.0;
+        for (steer, x) in [(0.02, [-0.01, 0.2]), (0.1, [-0.2, 0.45])] {
+            let c = cond(steer, 0.8, 54.0);
+            let exact = lagged::exact_jacobian(&m, &c, x).expect("generic tyres");
+            let diff = lagged::difference_jacobian(&m, &c, x);
+            let scale = exact.iter().flatten().fold(0.0_f64, |a, v| a.max(v.abs()));
+            for i in 0..4 {
+                for k in 0..4 {
+                    let e = (exact[i][k] - diff[i][k]).abs() / scale;
+                    assert!(e < 1e-6, "{tyre:?} δ {steer}: [{i}][{k}] {e:e}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_tyre_lag_turns_a_stable_focus_unstable_as_the_full_model_integrated_shows() {
+    // Steer 0.1 rad, μ 0.8, 20 m/s: the high-yaw equilibrium is a stable
+    // focus of (β, r); with σ = 3 m the lag's rate u/σ = 6.7 1/s is slow
+    // enough to turn it into an unstable focus. Integrating the full
+    // 6-state model from a small disturbance (RK4, 1 ms) shows the growth
+    // at the leading eigenvalue's real part, independent of the Jacobian.
+    use crate::vehicle::{Inputs, LoadTransferSeed, State};
+    let c = Condition {
+        steer: 0.1,
+        friction: 0.8,
+        speed: 20.0,
+    };
+    let mut m = equilibria_model(false);
+    let x = exact::solve(&m, &c)
+        .into_iter()
+        .map(|e| [e.beta, e.yaw_rate])
+        .find(|x| x[1] > 0.35)
+        .expect("the high-yaw equilibrium");
+    assert_eq!(
+        crate::equilibria::lagged::classify(&m, &c, x).kind,
+        Kind::StableFocus
+    );
+    m.options.effects.relaxation_length = 3.0;
+    let s = crate::equilibria::lagged::classify(&m, &c, x);
+    assert_eq!(s.kind, Kind::UnstableFocus);
+    let growth = s.eigenvalues[0].0;
+    assert!(growth > 0.02 && growth < 0.04, "{growth}");
+    let inp = Inputs::steady(c.steer, c.speed, c.friction);
+    let state = State {
+        beta: x[0],
+        yaw_rate: x[1],
+    };
+    let mut q = m.quasi_static_state(&state, &inp);
+    q[0] += 1e-5;
+    let f = |q: &[f64; 6]| m.rates(q, &inp, &mut LoadTransferSeed::default(), 1e-12).0;
+    let h = 1e-3;
+    // Envelope of |β − β*| over [t, t + 20 s] (the period is ~10 s).
+    let mut peaks = Vec::new();
+    let mut peak = 0.0_f64;
+    for n in 1..=120_000 {
+        let k1 = f(&q);
+        let k2 = f(&std::array::from_fn(|i| q[i] + 0.5 * h * k1[i]));
+        let k3 = f(&std::array::from_fn(|i| q[i] + 0.5 * h * k2[i]));
+        let k4 = f(&std::array::from_fn(|i| q[i] + h * k3[i]));
+        q = std::array::from_fn(|i| q[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        peak = peak.max((q[0] - x[0]).abs());
+        if n % 20_000 == 0 {
+            peaks.push(peak);
+            peak = 0.0;
+        }
+    }
+    // From 40–60 s to 100–120 s: 60 s at the leading rate.
+    let measured = (peaks[5] / peaks[2]).ln() / 60.0;
+    assert_relative_eq!(measured, growth, max_relative = 0.1);
+}

@@ -111,6 +111,10 @@ pub enum Wanted {
     TyreFile,
     /// `tyre-eval`'s points (`fz`, `kappa`, `alpha`, `camber`, `speed`).
     Points,
+    /// An equilibrium sweep (`equilibria`'s).
+    Sweep,
+    /// A stiffness study (`study`'s).
+    Study,
 }
 
 impl Wanted {
@@ -120,6 +124,8 @@ impl Wanted {
             Wanted::Tyre => "tyre data (a CSV with `fz` and `alpha` or `kappa`)",
             Wanted::TyreFile => "a tyre file (a .tir, or a TOML file with `model = \"…\"`, which `handling identify` writes), which `handling tyre-eval <tyre> <points>` takes first",
             Wanted::Points => "the points `handling tyre-eval <tyre> <points>` evaluates (a CSV with `fz`, `kappa`, `alpha`, `camber`, `speed`)",
+            Wanted::Sweep => "an equilibrium sweep (a TOML file with [vehicle], [tyres] and [sweep]), which `handling equilibria` reads",
+            Wanted::Study => "a stiffness study (a TOML file with [vehicle], [tyres], [manoeuvre] and [stiffness] or [rbf]), which `handling study` reads",
         }
     }
 }

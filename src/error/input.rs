@@ -141,6 +141,21 @@ pub enum InputError {
         /// The key (dotted), its value and why it is wrong.
         source: ParamError,
     },
+    /// An equilibrium sweep's value beyond its physical range
+    /// ([`super::SweepLimit`]), at its key's place.
+    #[error("{}: `{key}` = {}: {why}", place(path, at), super::Num(*value))]
+    Sweep {
+        /// The file.
+        path: PathBuf,
+        /// The key's place.
+        at: Option<Location>,
+        /// The key, dotted.
+        key: String,
+        /// The value as read.
+        value: f64,
+        /// The range it left.
+        why: super::SweepLimit,
+    },
     /// A value of the wrong type or shape for its key (the TOML reader's
     /// own description of what it expected).
     #[error("{}: `{key}`: {detail}", place(path, at))]
@@ -302,6 +317,7 @@ impl InputError {
             | InputError::NoRows { path }
             | InputError::EmptyFile { path }
             | InputError::Value { path, .. }
+            | InputError::Sweep { path, .. }
             | InputError::Key { path, .. }
             | InputError::NothingToSimulate { path }
             | InputError::TooFewRbfPairs { path, .. }
@@ -327,6 +343,7 @@ impl InputError {
                 column: *column,
             }),
             InputError::Value { at, .. }
+            | InputError::Sweep { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,
             InputError::Several { errors, .. } => errors.first().and_then(|e| e.0.location()),

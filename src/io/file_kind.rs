@@ -130,6 +130,16 @@ pub(crate) fn not_wanted(path: &Path, required: &[&str]) -> Option<InputError> {
     Some(refusal(path, kind, wanted))
 }
 
+/// The refusal of the file or folder at `path` given to a reader of
+/// TOML files of `wanted`'s kind (`equilibria`'s sweep, `study`'s study)
+/// that failed to read it, where it is plainly of another kind (a
+/// campaign, a run or history CSV, a `.tir`, a tyre file); `None` where it
+/// may be one of `own` (its reader's own error stands).
+pub(crate) fn not_this_toml(path: &Path, wanted: Wanted, own: &[FileKind]) -> Option<InputError> {
+    let kind = recognise(path)?;
+    (!own.contains(&kind)).then(|| refusal(path, kind, wanted))
+}
+
 /// The refusal of the file at `path`, of `kind`, where `wanted` was
 /// wanted: the kind and its command, with a CSV's header.
 fn refusal(path: &Path, kind: FileKind, wanted: Wanted) -> InputError {

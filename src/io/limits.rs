@@ -30,7 +30,7 @@ pub(super) fn road_wheel_steer_degrees(key: &str, steer: f64) -> Result<(), Para
 }
 
 /// The fastest manoeuvre, m/s ([`Limit::ManoeuvreSpeed`]).
-const MAX_SPEED: f64 = 150.0;
+pub(crate) const MAX_SPEED: f64 = 150.0;
 
 /// The fastest steer frequency, Hz ([`Limit::SteerFrequency`]): a sine of
 /// 1 MHz asked 20 million integration steps before it was refused.

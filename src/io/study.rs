@@ -8,10 +8,14 @@ use super::scenario::{
     resolve_scenario, ManoeuvreSpec, Road, Scenario, ScenarioFile, SimulationSettings, TyreRefs,
 };
 use super::toml_file::{param_error, TomlSource};
+<<<<<<< HEAD
 use crate::error::{
     InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessSlip,
     LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS,
 };
+=======
+use crate::error::{FileKind, InputError, ParamError, ParamReason, Wanted};
+>>>>>>> s82-eq
 use crate::metrics::MetricSettings;
 use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};
@@ -210,7 +214,13 @@ pub struct StudyInput {
 /// Reads and validates a study file.
 pub fn load_study(path: &Path) -> Result<StudyInput, InputError> {
     let src = TomlSource::read(path)?;
-    let f: StudyFile = src.parse()?;
+    // A file of another kind is named as such, not by its first key the
+    // study does not know (a study with [rbf] pairs only reads as a
+    // scenario, whose error is then the study's own).
+    let own = [FileKind::Study, FileKind::Scenario];
+    let f: StudyFile = src
+        .parse()
+        .map_err(|e| super::file_kind::not_this_toml(path, Wanted::Study, &own).unwrap_or(e))?;
     let scenario = scenario_of(&f, &src)?;
     let unit_name = f.stiffness.as_ref().map_or("N/deg", |s| s.unit.as_str());
     let unit: StiffnessUnit = unit_name.parse().map_err(|e| {

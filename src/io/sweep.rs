@@ -3,16 +3,18 @@
 //! PSO settings and report options. Values are SI unless a `unit` says
 //! otherwise (`deg`, `km/h`), converted on reading.
 
-use super::limits::{road_wheel_steer, road_wheel_steer_degrees};
-use super::tables::{resolve_model, ResolvedModel, TyreRefs};
-use super::toml_file::{param_error, TomlSource};
+use super::file_kind::not_this_toml;
+use super::limits::{road_wheel_steer, road_wheel_steer_degrees, MAX_SPEED};
+use super::tables::{resolve_model, ResolvedModel, TyreRefs, MAX_ROAD_FRICTION};
+use super::toml_file::{line_col, param_error, TomlSource};
 use crate::constants::G;
 use crate::equilibria::pso::PsoSearch;
 use crate::equilibria::sweep::Grid;
 use crate::equilibria::{Condition, SearchBox};
-use crate::error::{InputError, ParamError, ParamReason};
+use crate::error::{FileKind, SweepLimit, Wanted, MAX_BOX_SIDESLIP};
+use crate::error::{InputError, Limit, Location, ParamError, ParamReason};
 use crate::tyre::TyreModel;
-use crate::vehicle::{ModelOptions, Vehicle, VehicleModel};
+use crate::vehicle::{ModelOptions, Vehicle, VehicleModel, MIN_SPEED};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -103,6 +105,18 @@ impl Default for ReportSpec {
     }
 }
 
+/// A sweep file's `[box]`: either key may be left to its default.
+#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxSpec {
+    /// |β| limit, rad (default 0.6).
+    #[serde(default)]
+    pub beta_max: Option<f64>,
+    /// |r| limit, rad/s (default 1.2·μ_peak·μ·g/u_min).
+    #[serde(default)]
+    pub yaw_rate_max: Option<f64>,
+}
+
 /// A sweep file.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -124,7 +138,7 @@ pub struct SweepFile {
     pub sweep: SweepAxes,
     /// Search box (default: |β| ≤ 0.6 rad, |r| ≤ 1.2·μ_peak·μ·g/u_min).
     #[serde(default, rename = "box")]
-    pub search_box: Option<SearchBox>,
+    pub search_box: Option<BoxSpec>,
     /// PSO search settings.
     #[serde(default)]
     pub pso: PsoSearch,
@@ -204,10 +218,16 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         // The steer keeps to the road-wheel limit every manoeuvre keeps to
         // (`simulate`'s), with its words, said in the unit the file gives
         // it in; friction and speed are positive.
+        // The speed keeps to a manoeuvre's range, in the unit given; the
+        // friction to a road's (`[road] friction`'s).
         let checked = match axis {
             "steer" if k != 1.0 => road_wheel_steer_degrees(&key, x),
             "steer" => road_wheel_steer(&key, x),
-            _ => ParamError::positive(&key, x),
+            "speed" => {
+                let (lo, hi) = (MIN_SPEED / k, MAX_SPEED / k);
+                ParamError::in_range(&key, x, lo, hi, Limit::ManoeuvreSpeed)
+            }
+            _ => ParamError::in_range(&key, x, 0.0, MAX_ROAD_FRICTION, Limit::RoadFriction),
         };
         checked.map_err(|e| param_error(src, None, e))?;
     }
@@ -229,10 +249,55 @@ fn equilibrium_effects(src: &TomlSource, e: &crate::vehicle::Effects) -> Result<
     }
 }
 
+/// The search box: each key as the file gives it (checked), else its
+/// default (|β| ≤ 0.6 rad, |r| ≤ 1.2·μ_peak·μ·g/u_min).
+fn search_box(
+    src: &TomlSource,
+    model: &VehicleModel,
+    grid: &Grid,
+    b: BoxSpec,
+) -> Result<SearchBox, InputError> {
+    if let Some(beta) = b.beta_max {
+        ParamError::positive("beta_max", beta).map_err(|e| param_error(src, Some("box"), e))?;
+        if beta > MAX_BOX_SIDESLIP {
+            let key = "box.beta_max";
+            return Err(InputError::Sweep {
+                path: src.path.clone(),
+                at: src.key_span(key).map(|s| {
+                    let (line, column) = line_col(&src.text, s.start);
+                    Location { line, column }
+                }),
+                key: key.into(),
+                value: beta,
+                why: SweepLimit::Sideslip { given: beta },
+            });
+        }
+    }
+    if let Some(r) = b.yaw_rate_max {
+        ParamError::positive("yaw_rate_max", r).map_err(|e| param_error(src, Some("box"), e))?;
+    }
+    let yaw_rate_max = b.yaw_rate_max.unwrap_or_else(|| {
+        let (sf, sr) = model.vehicle.static_axle_loads();
+        let peak = |t: &crate::tyre::Tyre, fz: f64| t.peak_lateral_force(fz, 1.0) / fz;
+        let mu_peak = peak(&model.front, 0.5 * sf).max(peak(&model.rear, 0.5 * sr));
+        let fmax = grid.friction.iter().copied().fold(0.0, f64::max);
+        let umin = grid.speed.iter().copied().fold(f64::INFINITY, f64::min);
+        1.2 * mu_peak * fmax * G / umin
+    });
+    Ok(SearchBox {
+        beta_max: b.beta_max.unwrap_or(0.6),
+        yaw_rate_max,
+    })
+}
+
 /// Reads and validates a sweep file.
 pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
     let src = TomlSource::read(path)?;
-    let f: SweepFile = src.parse()?;
+    // A file of another kind is named as such, not by its first key the
+    // sweep does not know.
+    let f: SweepFile = src
+        .parse()
+        .map_err(|e| not_this_toml(path, Wanted::Sweep, &[FileKind::Sweep]).unwrap_or(e))?;
     let ResolvedModel {
         model,
         files: [front_path, rear_path],
@@ -244,26 +309,7 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
         friction: expand(&f.sweep.friction, "friction", &src)?,
         speed: expand(&f.sweep.speed, "speed", &src)?,
     };
-    let search_box = match f.search_box {
-        Some(b) => {
-            ParamError::positive("beta_max", b.beta_max)
-                .map_err(|e| param_error(&src, Some("box"), e))?;
-            ParamError::positive("yaw_rate_max", b.yaw_rate_max)
-                .map_err(|e| param_error(&src, Some("box"), e))?;
-            b
-        }
-        None => {
-            let (sf, sr) = model.vehicle.static_axle_loads();
-            let peak = |t: &crate::tyre::Tyre, fz: f64| t.peak_lateral_force(fz, 1.0) / fz;
-            let mu_peak = peak(&model.front, 0.5 * sf).max(peak(&model.rear, 0.5 * sr));
-            let fmax = grid.friction.iter().copied().fold(0.0, f64::max);
-            let umin = grid.speed.iter().copied().fold(f64::INFINITY, f64::min);
-            SearchBox {
-                beta_max: 0.6,
-                yaw_rate_max: 1.2 * mu_peak * fmax * G / umin,
-            }
-        }
-    };
+    let search_box = search_box(&src, &model, &grid, f.search_box.unwrap_or_default())?;
     let portraits = if f.report.phase_portraits.is_empty() {
         let first = Condition {
             steer: grid.steer[0],

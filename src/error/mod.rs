@@ -39,11 +39,8 @@ mod runs_selection;
 mod scenario_file;
 mod steady;
 mod steer_runs;
-<<<<<<< HEAD
 mod stiffness_unit;
-=======
 mod sweep_limit;
->>>>>>> s82-eq
 #[cfg(test)]
 mod tests;
 mod units;
@@ -87,11 +84,8 @@ pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;
 pub use steer_runs::SteerInDegreesRuns;
-<<<<<<< HEAD
 pub use stiffness_unit::{StiffnessSlip, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS};
-=======
 pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
->>>>>>> s82-eq
 use thiserror::Error;
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,

@@ -8,14 +8,10 @@ use super::scenario::{
     resolve_scenario, ManoeuvreSpec, Road, Scenario, ScenarioFile, SimulationSettings, TyreRefs,
 };
 use super::toml_file::{param_error, TomlSource};
-<<<<<<< HEAD
 use crate::error::{
-    InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessSlip,
-    LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS,
+    FileKind, InputError, InputProblem, ParamError, ParamReason, ScenarioProblem, StiffnessSlip,
+    Wanted, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS,
 };
-=======
-use crate::error::{FileKind, InputError, ParamError, ParamReason, Wanted};
->>>>>>> s82-eq
 use crate::metrics::MetricSettings;
 use crate::study::{Metric, StiffnessUnit, Target};
 use crate::vehicle::{ModelOptions, Vehicle};

@@ -33,6 +33,8 @@ mod problem;
 mod problem_name;
 mod reason;
 mod rig;
+mod rig_load_lbf;
+mod rig_moment_knm;
 mod rig_sign;
 mod runs_selection;
 mod scenario_file;
@@ -76,6 +78,8 @@ pub use reason::{
     MAX_MIN_SPEED,
 };
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use rig_load_lbf::{RigLoadInLbf, LBF_SLIP, MAX_MEDIAN_GRIP};
+pub use rig_moment_knm::{RigMomentInKnm, MIN_RIG_ARM};
 pub use runs_selection::{GlobMatch, SelectionProblem};
 pub use scenario_file::{ScenarioProblem, ScenarioRemark};
 pub use steady::NoSteadyState;

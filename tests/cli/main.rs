@@ -416,6 +416,7 @@ mod trips_s81_diag;
 mod trips_s81_lead;
 mod trips_s81_metr;
 mod trips_s81_tyre;
+mod trips_s82_idf;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -273,7 +273,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
                 "no {data} data: the file's {quantity} coefficients are not fitted ({columns}): {what}"
             ))
         })
-        .chain(unused)
+        .chain(unused.into_iter().map(Note::said))
         .collect()
 }
 

@@ -4,7 +4,6 @@
 //! file with `mx` and `my` nothing of them (no swarm model fits the wheel
 //! moments; the staged Magic Formula does).
 
-use super::notes::Note;
 use super::SwarmReport;
 use crate::identify::data::RigData;
 
@@ -33,7 +32,7 @@ impl Measured {
 /// The notes on the measured columns `r`'s fits left out: `mz` where no
 /// aligning moment was fitted (nor a linear tyre's trail taken from it),
 /// `mx` and `my` always.
-pub(super) fn unused_notes(r: &SwarmReport) -> Vec<Note> {
+pub(super) fn unused_notes(r: &SwarmReport) -> Vec<String> {
     let m = r.measured;
     let model = &r.options.model;
     let trail = r.linear_window.as_ref().and_then(|w| w.pneumatic_trail);
@@ -53,10 +52,10 @@ pub(super) fn unused_notes(r: &SwarmReport) -> Vec<Note> {
     .into_iter()
     .filter(|(n, _, _)| *n > 0)
     .map(|(n, column, why)| {
-        Note::said(format!(
+        format!(
             "{why}: {} of `{column}` not fitted",
             crate::format::plural(n, "value", "values")
-        ))
+        )
     })
     .collect()
 }

@@ -283,6 +283,12 @@ pub enum UnitSlip {
         /// The largest slip the sweep reaches (rad, or slip ratio).
         slip: f64,
     },
+    /// Loads in lbf beside forces in N (`rig_load_lbf.rs`).
+    #[error(transparent)]
+    RigLoadInLbf(#[from] super::rig_load_lbf::RigLoadInLbf),
+    /// An aligning moment in kN·m (`rig_moment_knm.rs`).
+    #[error(transparent)]
+    RigMomentInKnm(#[from] super::rig_moment_knm::RigMomentInKnm),
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

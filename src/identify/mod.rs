@@ -26,6 +26,7 @@
 pub mod data;
 pub mod grouping;
 mod held;
+pub mod lifted;
 mod parameters;
 use parameters::parameter_reports;
 pub mod mf_staged;

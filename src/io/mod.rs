@@ -12,6 +12,7 @@ mod limits;
 pub mod paths;
 pub mod rig;
 pub(crate) mod rig_rows;
+mod rig_scale;
 mod run;
 mod run_units;
 pub use run_units::{unchecked_speed_unit, MAX_SPEED};

@@ -268,6 +268,14 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     refuse_all(path, errors)?;
     check_load_unit(path, &c, &fz)?;
     super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
+    // Before each sample's force is judged against its load: loads in lbf
+    // make every force look too large, and are said as what they are.
+    for (column, sweep) in [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())] {
+        let sweep = sweep.map(|(s, f)| (s.as_slice(), f.as_slice()));
+        sweep.map_or(Ok(()), |s| {
+            super::rig_scale::refuse_loads_in_lbf(path, &c, column, s, &fz)
+        })?;
+    }
     // After the loads' units: a lone cell in kN makes its force look a
     // hundred times the load, and is said as what it is.
     let median = crate::measured::clean::median(&mut fz.clone());
@@ -282,6 +290,8 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
     refuse_all(path, errors)?;
     if let Some(mz) = &mz {
         super::rig_rows::refuse_moments_beyond_any_arm(path, &c, mz, &fz, median)?;
+        let alpha = lateral.as_ref().map_or(&[][..], |l| l.0.as_slice());
+        super::rig_scale::refuse_moments_in_knm(path, &c, alpha, mz, &fz)?;
     }
     let sweeps = [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())];
     for (column, sweep) in sweeps {

@@ -417,6 +417,7 @@ mod trips_s81_lead;
 mod trips_s81_metr;
 mod trips_s81_tyre;
 mod trips_s82_eq;
+mod trips_s82_idf;
 mod trips_s82_met;
 mod trips_s82_sim;
 mod trips_s82_study;

@@ -289,6 +289,9 @@ class Identification(_Report):
     """RMS of the fit's residual, N (swarm fits)."""
     parameters: Optional[List[Dict[str, Any]]]
     """The fitted parameters with their standard errors (swarm fits)."""
+    lifted: Optional[Dict[str, Any]]
+    """The samples at a load near zero set aside (a lifted wheel: ``samples``,
+    ``of``, ``below`` N, ``median_load`` N; swarm fits; None without any)."""
     _raw: Dict[str, Any] = _json_field()
 
     @classmethod

@@ -17,6 +17,11 @@ use serde::Serialize;
 /// The outer band: rows with |slip| beyond this share of the largest.
 const OUTER: f64 = 0.9;
 
+/// The σ below which a stage's fit is at round-off and no line places its
+/// error, %: a millionth of a percent, ten thousand times below a rig's
+/// noise (0.01 % and more); a noise-free file's fit reads 1e-14 %.
+pub const ROUND_OFF_PERCENT: f64 = 1e-6;
+
 /// Loads within this of each other are one level, N.
 const LOAD_GAP: f64 = 200.0;
 
@@ -57,6 +62,22 @@ impl ErrorSpread {
         self.outer_error_percent >= 2.0 * self.outer_rows_percent
     }
 
+    /// Whether every load level's σ is below [`ROUND_OFF_PERCENT`] (a
+    /// stage without levels: its σ within the band's edge).
+    pub fn at_round_off(&self) -> bool {
+        let top = self
+            .by_load
+            .iter()
+            .map(|l| l.sigma_percent)
+            .fold(f64::NAN, f64::max);
+        let top = if top.is_nan() {
+            self.sigma_inner_percent
+        } else {
+            top
+        };
+        top < ROUND_OFF_PERCENT
+    }
+
     /// One line on where the error lies, or `None` when it is spread
     /// evenly (neither the sweeps' ends nor a load level lead it).
     pub fn line(&self) -> Option<String> {
@@ -66,6 +87,11 @@ impl ErrorSpread {
     /// [`ErrorSpread::line`] with each load level spelt by `load` (the
     /// terminal's name of the level, [`crate::identify::grouping::level_label`]).
     pub fn line_naming(&self, load: &dyn Fn(f64) -> String) -> Option<String> {
+        // A fit at round-off has no error to place: its shares and
+        // ratios are of noise in the last digits.
+        if self.at_round_off() {
+            return None;
+        }
         let by = |a: &&LoadSigma, b: &&LoadSigma| a.sigma_percent.total_cmp(&b.sigma_percent);
         let (lo, hi) = (
             self.by_load.iter().min_by(by),

@@ -36,7 +36,9 @@ mod holds;
 pub use holds::Held;
 mod staged;
 mod two_stage;
+mod unused_columns;
 pub use two_stage::{TwoStageReport, Written};
+pub use unused_columns::Measured;
 mod staged_figure;
 
 use crate::error::{Error, FitError, Limit, NameKind, OptionsError, ParamError};
@@ -242,6 +244,13 @@ pub struct SwarmReport {
     pub notes: Vec<Note>,
     /// The lateral columns set aside at `alpha` 0 throughout, said.
     pub flat_alpha: Option<String>,
+    /// The samples at a lifted wheel's load set aside (`identify/lifted.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lifted: Option<crate::identify::lifted::Lifted>,
+    /// The file's measured `mz`, `mx`, `my`, counted for the notes on
+    /// those no fit took (`unused_columns.rs`).
+    #[serde(skip)]
+    pub measured: Measured,
     /// The rows of combined slip left out, and the slip ratios reached.
     pub set_aside: crate::identify::pure::SetAside,
     /// The rig's forces far too small for their loads (`force_scale.rs`).
@@ -381,4 +390,12 @@ pub(super) fn on_data<'a>(
     channel: Option<&'static str>,
 ) -> impl Fn(Error) -> Error + 'a {
     move |e| FitError::in_data(&o.data, channel, e).into()
+}
+
+/// The rig file of `o` and its wheel moments, without a lifted wheel's
+/// samples, and what was set aside (`identify/lifted.rs`).
+fn read_lifted(o: &Options) -> Result<crate::identify::lifted::Stripped, Error> {
+    let d = crate::io::rig::read_rig(&o.data)?;
+    let moments = crate::io::rig::read_rig_moments(&o.data)?;
+    Ok(crate::identify::lifted::without_lifted_moments(d, moments))
 }

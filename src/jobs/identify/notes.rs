@@ -32,7 +32,7 @@ pub struct Note {
 }
 
 impl Note {
-    fn said(text: String) -> Self {
+    pub(crate) fn said(text: String) -> Self {
         Note {
             text,
             warning: false,
@@ -250,6 +250,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
             lateral && r.longitudinal.is_none() && !r.tyre.longitudinal_names().is_empty(),
         ),
     ];
+    let unused = super::unused_columns::unused_notes(r);
     blocks
         .into_iter()
         .filter(|b| b.3)
@@ -272,6 +273,7 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
                 "no {data} data: the file's {quantity} coefficients are not fitted ({columns}): {what}"
             ))
         })
+        .chain(unused.into_iter().map(Note::said))
         .collect()
 }
 
@@ -335,6 +337,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
                 .flat_map(|f| later_fit_notes(r, f)),
         )
         .chain(sigma_notes(&r.fit))
+        .chain(r.lifted.map(|l| Note::said(l.line())))
         .chain(unfitted_notes(r))
         .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))
         .chain(r.pac89_reversal.map(|x| Note::warned(x.line())))

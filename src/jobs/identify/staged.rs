@@ -14,7 +14,6 @@ use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
 use crate::identify::{ConstantFrom, HeldFor};
-use crate::io::rig::{read_rig, read_rig_moments};
 use crate::io::tir::TirDocument;
 use crate::jobs::tyre_eval::gives_none;
 use crate::report::plot::Figure;
@@ -222,11 +221,11 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
         .map(|e| {
             format!("the template's curves are no tyre's: {e}; its coefficients only start the fit")
         });
-    let data = read_rig(&o.data)?;
+    // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
+    let (data, moments, lifted) = super::read_lifted(o)?;
     let default_speed = template_tyre
         .as_ref()
         .map_or(16.7, |t| t.coefficients.LONGVL);
-    let moments = read_rig_moments(&o.data)?;
     let prepared = mf_staged::prepare(
         &o.data,
         &data,
@@ -299,7 +298,13 @@ pub(super) fn run_staged(o: &Options, fit: StagedFit) -> Result<StagedJob, Error
     let mut written = id.tyre.clone();
     written.limits = super::ranges::mf_limits(&spans, written.side, written.limits);
     let combined = prepared.rows.iter().filter(|r| is_combined(r)).count();
-    let unfitted = unfitted_blocks(&id.report, o.template.is_some(), &written, combined);
+    let mut unfitted: Vec<String> = lifted.iter().map(|l| l.line()).collect();
+    unfitted.extend(unfitted_blocks(
+        &id.report,
+        o.template.is_some(),
+        &written,
+        combined,
+    ));
     let named = prepared
         .account
         .thinning

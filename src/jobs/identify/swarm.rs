@@ -15,9 +15,10 @@ use crate::error::{Error, FitError};
 use crate::identify::data::Condition;
 use crate::identify::data::RigData;
 use crate::identify::grouping::{group, Grouped, Grouping, SlipAxis, Variable};
+use crate::identify::lifted::without_lifted;
 use crate::identify::pac89_two_stage::TwoStage;
 use crate::identify::{fit_channel_holding, start_tyre_of, Channel, FitSettings};
-use crate::io::rig::read_rig;
+use crate::io::rig::{read_rig, read_rig_moments};
 use crate::report::refuse_overwrites;
 use crate::tyre::{Identification, ModelName, SlipState, Tyre};
 
@@ -29,7 +30,11 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     // What the data do not determine is held, not written where the
     // optimiser left it (`identify/undetermined.rs`).
     settings.hold_undetermined = true;
-    let (data, flat_alpha) = flat_alpha::without_flat_lateral(read_rig(&o.data)?);
+    // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
+    let read = read_rig(&o.data)?;
+    let measured = super::Measured::of(&read, &read_rig_moments(&o.data)?);
+    let (data, lifted) = without_lifted(read);
+    let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
     // Each force is fitted to its pure slip (`identify/pure.rs`).
     let (lateral, long_view, set_aside) = pure_rows::pure_rows(&data, &o.data, model.as_str())?;
     if !data.has_lateral() && start_tyre_of(model, 1.0)?.longitudinal_names().is_empty() {
@@ -76,6 +81,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         held: Vec::new(),
         notes: Vec::new(),
         flat_alpha,
+        lifted,
+        measured,
         set_aside,
         small_forces: force_scale::small_forces(&data),
         sample_slips: [None; 2],

@@ -1,0 +1,61 @@
+//! Measured columns a swarm fit does not fit, said with their counts: a
+//! magic-simple fit of the Hoosier rig file said nothing of its 59,965
+//! values of `mz` (the model has no aligning moment), and a PAC89 fit of a
+//! file with `mx` and `my` nothing of them (no swarm model fits the wheel
+//! moments; the staged Magic Formula does).
+
+use super::SwarmReport;
+use crate::identify::data::RigData;
+
+/// The finite values of the file's `mz`, `mx` and `my` (0: no column).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Measured {
+    mz: usize,
+    mx: usize,
+    my: usize,
+}
+
+impl Measured {
+    /// The counts of `data` (the file's rows) and its wheel moments read
+    /// beside (`mx`, `my`).
+    pub(super) fn of(data: &RigData, moments: &[Option<Vec<f64>>; 2]) -> Self {
+        let finite =
+            |v: Option<&Vec<f64>>| v.map_or(0, |v| v.iter().filter(|x| x.is_finite()).count());
+        Measured {
+            mz: finite(data.mz.as_ref()),
+            mx: finite(moments[0].as_ref()),
+            my: finite(moments[1].as_ref()),
+        }
+    }
+}
+
+/// The notes on the measured columns `r`'s fits left out: `mz` where no
+/// aligning moment was fitted (nor a linear tyre's trail taken from it),
+/// `mx` and `my` always.
+pub(super) fn unused_notes(r: &SwarmReport) -> Vec<String> {
+    let m = r.measured;
+    let model = &r.options.model;
+    let trail = r.linear_window.as_ref().and_then(|w| w.pneumatic_trail);
+    // Alpha 0 throughout: `mz` is said with the lateral columns set aside.
+    let mz_left = r.aligning.is_none() && trail.is_none() && r.flat_alpha.is_none();
+    let no_aligning = r.tyre.aligning_names().is_empty();
+    let mz_why = match no_aligning {
+        true => format!("the {model} model has no aligning moment"),
+        false => format!("the {model} fit's aligning moment was not fitted"),
+    };
+    let moments = format!("the {model} model has no wheel moments (the staged Magic Formula, --model mf61 or mf62, fits `mx` and `my`)");
+    [
+        (m.mz * usize::from(mz_left), "mz", mz_why),
+        (m.mx, "mx", moments.clone()),
+        (m.my, "my", moments),
+    ]
+    .into_iter()
+    .filter(|(n, _, _)| *n > 0)
+    .map(|(n, column, why)| {
+        format!(
+            "{why}: {} of `{column}` not fitted",
+            crate::format::plural(n, "value", "values")
+        )
+    })
+    .collect()
+}

@@ -220,7 +220,10 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         // it in; friction and speed are positive.
         // The speed keeps to a manoeuvre's range, in the unit given; the
         // friction to a road's (`[road] friction`'s).
+        // A speed or friction at or below zero is said as such, not as
+        // a value beyond the top of its range.
         let checked = match axis {
+            "speed" | "friction" if x <= 0.0 => ParamError::positive(&key, x),
             "steer" if k != 1.0 => road_wheel_steer_degrees(&key, x),
             "steer" => road_wheel_steer(&key, x),
             "speed" => {

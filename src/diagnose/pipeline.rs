@@ -75,6 +75,7 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod conclusion;
+mod rig_notes;
 use conclusion::{conclude, with_rows, Concluded};
 
 /// Work units reported to the progress counter for a campaign.
@@ -447,7 +448,8 @@ fn run(
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);
     let significant = rules::significant(j0, jn);
-    let notes = notes_of(c, visibility, &ctx, &noise);
+    let mut notes = notes_of(c, visibility, &ctx, &noise);
+    notes.extend(rig_notes::rig_notes(c, &tyre_source, rig_grouping.as_ref()));
     let (singles, order, screened, screened_rows) =
         singles(&ctx, &effects, &base, set.screening, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();

@@ -28,6 +28,7 @@ pub mod grouping;
 mod held;
 pub mod lifted;
 mod parameters;
+pub mod pooled;
 use parameters::parameter_reports;
 pub mod mf_staged;
 pub(crate) mod pac89_two_stage;

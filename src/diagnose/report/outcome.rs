@@ -391,6 +391,24 @@ pub enum Note {
         /// larger ([`crate::diagnose::model::scale::SIGNAL_SHARE`]).
         weighted: f64,
     },
+    /// Rig data whose wheel loads do not reach the car's static wheel
+    /// loads: the base tyre fitted to them is extrapolated there.
+    RigLoadsShort {
+        /// The rig data's least and largest wheel load, N.
+        rig: [f64; 2],
+        /// The car's least and largest static wheel load, N.
+        car: [f64; 2],
+    },
+    /// Levels of the rig data pooled into one fit of a model without
+    /// terms for them: the base tyre is their blend.
+    RigLevelsPooled {
+        /// The variable whose levels are pooled.
+        variable: crate::identify::grouping::Variable,
+        /// How many levels.
+        levels: usize,
+        /// The model fitted.
+        model: crate::tyre::ModelName,
+    },
 }
 
 pub use crate::error::Unseen;

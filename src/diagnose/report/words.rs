@@ -14,6 +14,7 @@ mod gap;
 mod lookalikes;
 mod parameters;
 mod warnings;
+use crate::identify::grouping::Variable;
 pub use axles::{
     axle_values, axles_line, limit_meaning, no_tyre, no_tyre_list, prior_line, tyre_source,
 };
@@ -409,6 +410,29 @@ pub fn note(n: &Note) -> String {
         Note::StiffReplay { step, runs, of } => format!(
             "replay method: the base model is too stiff for RK4 at the {step} s step on {runs} of {of} runs, replayed by the linearly implicit ROS34PW2 at that step"
         ),
+        Note::RigLoadsShort { rig, car } => format!(
+            "the rig data's wheel loads span {:.0}–{:.0} N and the car's static wheel loads are {:.0}–{:.0} N ({:.2}× the rig's {}): the base tyre fitted to them is extrapolated to the car's loads, so a gap may be the tyre's rather than an unmodelled effect's (rig data at the car's loads, or tyre files under [tyres], close it)",
+            rig[0],
+            rig[1],
+            car[0],
+            car[1],
+            if car[1] > rig[1] { car[1] / rig[1] } else { car[0] / rig[0] },
+            if car[1] > rig[1] { "largest" } else { "least" },
+        ),
+        Note::RigLevelsPooled {
+            variable,
+            levels,
+            model,
+        } => {
+            let what = match variable {
+                Variable::Load => "load",
+                Variable::Camber => "camber",
+                Variable::Pressure => "pressure",
+            };
+            format!(
+                "{levels} {what} levels of the rig data pooled into one {model} fit, which has no {what} terms: the base tyre is their blend (rig data at the car's {what} alone would be the car's tyre)"
+            )
+        }
     }
 }
 

@@ -14,13 +14,14 @@ use super::{
 use crate::error::{Error, FitError};
 use crate::identify::data::Condition;
 use crate::identify::data::RigData;
-use crate::identify::grouping::{group, Grouped, Grouping, SlipAxis, Variable};
+use crate::identify::grouping::{group, Grouped, Grouping, SlipAxis};
 use crate::identify::lifted::without_lifted;
 use crate::identify::pac89_two_stage::TwoStage;
+use crate::identify::pooled::Pooled;
 use crate::identify::{fit_channel_holding, start_tyre_of, Channel, FitSettings};
 use crate::io::rig::{read_rig, read_rig_moments};
 use crate::report::refuse_overwrites;
-use crate::tyre::{Identification, ModelName, SlipState, Tyre};
+use crate::tyre::{Identification, ModelName, Tyre};
 
 /// The swarm fit of `model`: the first channel, PAC89's two stages, the
 /// aligning moment and the longitudinal force.
@@ -55,7 +56,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;
-    let pooled = Pooled::of(&tyre0, &grouped);
+    let pooled = Pooled::of(&tyre0, &grouped.report);
     // The two-stage identification fits every coefficient: with a
     // coefficient held with --hold it is not run (the summary says so).
     let asks_two_stage = model.identification() == Identification::SwarmAndTwoStage
@@ -206,49 +207,6 @@ fn fitted_conditions(
         .into());
     }
     Ok((conditions, window))
-}
-
-/// The levels of load, pressure and camber pooled into one parameter set
-/// by a model without terms for them (0: not pooled, or the model has
-/// them): their differences blur into the fit.
-struct Pooled {
-    loads: usize,
-    pressures: usize,
-    cambers: usize,
-}
-
-impl Pooled {
-    fn of(tyre0: &Tyre, grouped: &Grouped) -> Self {
-        let levels_of = |v: Variable| {
-            grouped
-                .report
-                .levels
-                .iter()
-                .find(|l| l.variable == v)
-                .map_or(0, |l| l.levels.len())
-        };
-        // A model whose lateral fit frees nothing more with more cambers
-        // has no camber terms.
-        let many = 1000;
-        let camber_terms = tyre0.lateral_free(many, many) != tyre0.lateral_free(many, 1);
-        // A model whose force is the same at two loads (a linear tyre's
-        // C·α) has no load terms.
-        let at = |fz| tyre0.point_forces(&SlipState::lateral(0.02, fz), None).fy;
-        Pooled {
-            // The models fitted here have no pressure terms.
-            pressures: levels_of(Variable::Pressure),
-            cambers: if camber_terms {
-                0
-            } else {
-                levels_of(Variable::Camber)
-            },
-            loads: if at(1000.0) == at(3000.0) {
-                levels_of(Variable::Load)
-            } else {
-                0
-            },
-        }
-    }
 }
 
 /// After the fits: a linear tyre's trail, the coefficients held (by

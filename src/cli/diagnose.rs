@@ -60,11 +60,12 @@ pub fn diagnose(a: DiagnoseArgs) -> Result<()> {
     super::print(&r.summary());
     let f = r.outputs();
     say!(
-        "diagnosed in {}; wrote {}, {}, {}, {}",
+        "diagnosed in {}; wrote {}, {}, {}, {}, {}",
         r.time_spent(),
         f[0].display(),
         f[1].display(),
         f[2].display(),
+        f[4].display(),
         f[3].display()
     );
     Ok(())

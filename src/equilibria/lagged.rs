@@ -14,7 +14,7 @@
 //! refuses roll steer and roll camber, without which roll does not feed
 //! back into (β, r) and its mode (always damped) is decoupled.
 
-use super::stability::{Kind, Stability};
+use super::stability::{jacobian_scale, Kind, Stability};
 use super::Condition;
 use crate::scalar::Scalar;
 use crate::vehicle::wheels::ParamTyres;
@@ -119,12 +119,7 @@ pub(crate) fn from_jacobian(j: [[f64; N]; N]) -> Stability {
         .map(|z| (z.re, z.im))
         .collect();
     ev.sort_by(|a, b| b.0.total_cmp(&a.0).then(b.1.total_cmp(&a.1)));
-    let scale = j
-        .iter()
-        .flatten()
-        .map(|v| v.abs())
-        .fold(0.0, f64::max)
-        .max(1e-300);
+    let scale = jacobian_scale(&j);
     let lead = ev[0];
     let focus = lead.1 != 0.0;
     let unstable = ev.iter().filter(|(re, _)| *re > 0.0).count();

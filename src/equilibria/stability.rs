@@ -133,6 +133,17 @@ pub(crate) fn difference_jacobian(
     j
 }
 
+/// The scale the relative thresholds of a Jacobian's classification
+/// take: its largest |entry|, floored at 1e-300 so that a zero Jacobian
+/// divides by no zero (2×2 here, 4×4 in `lagged.rs`).
+pub(crate) fn jacobian_scale<const N: usize>(j: &[[f64; N]; N]) -> f64 {
+    j.iter()
+        .flatten()
+        .map(|v| v.abs())
+        .fold(0.0, f64::max)
+        .max(1e-300)
+}
+
 /// Classifies a 2×2 Jacobian.
 pub(crate) fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
     let tr = j[0][0] + j[1][1];
@@ -147,12 +158,7 @@ pub(crate) fn from_jacobian(j: [[f64; 2]; 2]) -> Stability {
     };
     // Relative thresholds: a determinant or trace this close to zero is
     // numerically a bifurcation point.
-    let scale = j
-        .iter()
-        .flatten()
-        .map(|v| v.abs())
-        .fold(0.0, f64::max)
-        .max(1e-300);
+    let scale = jacobian_scale(&j);
     let kind = if det.abs() <= 1e-10 * scale * scale {
         Kind::Degenerate
     } else if det < 0.0 {

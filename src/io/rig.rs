@@ -1,7 +1,7 @@
 //! Tyre rig files (`docs/FORMATS.md`): a CSV with the load `fz` and a
 //! lateral sweep (`alpha`, `fy`, optionally `mz`), a longitudinal sweep
 //! (`kappa`, `fx`) or both, plus optional `camber`, `pressure` and `speed`,
-//! and the wheel moments `mx`, `my` ([`read_rig_moments`]).
+//! and the wheel moments `mx`, `my` ([`read_rig_with_moments`]).
 //! Read into [`RigData`] with every error located in the file; the data's
 //! sense is checked here (positive loads in N, not kN, angles in radians, the signs of
 //! the forces and the aligning moment at small slip).
@@ -10,7 +10,6 @@
 //! `tyre/mod.rs` (a positive slip angle gives a positive `fy`).
 
 use super::columns::Columns;
-use super::read_columns;
 use super::rig_rows::Known;
 use crate::error::{
     InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP,
@@ -24,8 +23,13 @@ use std::path::Path;
 /// measured: `mx` (overturning moment) and `my` (rolling-resistance
 /// moment), N·m, ISO-W axes of a left tyre (`mx` positive about the
 /// forward axis, `my` negative while rolling forward).
-pub(crate) fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], InputError> {
-    let mut c = read_columns(path, &["fz"], &["mx", "my"])?;
+pub(crate) type Moments = [Option<Vec<f64>>; 2];
+
+/// Reads rig data as [`read_rig`] does and, in the same read, its wheel
+/// moments ([`Moments`]), each beyond [`MAX_RIG_MOMENT`] refused at its row
+/// once the rig data are read.
+pub(crate) fn read_rig_with_moments(path: &Path) -> Result<(RigData, Moments), InputError> {
+    let (d, mut c) = read_rig_columns(path, &["mx", "my"])?;
     let (mx, my) = (c.take_optional("mx"), c.take_optional("my"));
     let mut errors = check_size(path, &c, "mx", mx.as_deref(), MAX_RIG_MOMENT, "N·m");
     errors.extend(check_size(
@@ -37,7 +41,7 @@ pub(crate) fn read_rig_moments(path: &Path) -> Result<[Option<Vec<f64>>; 2], Inp
         "N·m",
     ));
     refuse_all(path, errors)?;
-    Ok([mx, my])
+    Ok((d, [mx, my]))
 }
 
 /// The largest force a rig file may hold, N: 1 MN, three times an airliner
@@ -148,13 +152,20 @@ fn refuse_all(path: &Path, errors: Vec<InputError>) -> Result<(), InputError> {
 /// Reads rig data: lateral (`alpha`, `fy`) and/or longitudinal (`kappa`,
 /// `fx`) sweeps; a file with neither pair is refused.
 pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
+    read_rig_columns(path, &[]).map(|(d, _)| d)
+}
+
+/// [`read_rig`], and the columns with the `moments` of them read besides
+/// (for [`read_rig_with_moments`]) left to take.
+fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns), InputError> {
     const OPTIONAL: [&str; 8] = [
         "alpha", "fy", "mz", "camber", "pressure", "speed", "kappa", "fx",
     ];
-    // The wheel moments are read beside ([`read_rig_moments`]).
+    let optional: Vec<&str> = OPTIONAL.iter().chain(moments).copied().collect();
+    // The wheel moments are known names, read only where asked for.
     let layout = super::columns::Layout {
         required: &["fz"],
-        optional: &OPTIONAL,
+        optional: &optional,
         also_read: Some(&["mx", "my"]),
     };
     let (mut c, mut errors) = super::columns::read_columns_with_bad_cells(path, layout)?;
@@ -309,7 +320,7 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
             .map(|(k, f)| (k.as_slice(), f.as_slice())),
     )?;
     let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
-    Ok(RigData {
+    let d = RigData {
         camber_measured: camber.is_some(),
         camber: camber.unwrap_or_else(|| vec![0.0; n]),
         mz,
@@ -330,7 +341,8 @@ pub fn read_rig(path: &Path) -> Result<RigData, InputError> {
         fz,
         alpha,
         fy,
-    })
+    };
+    Ok((d, c))
 }
 
 /// The least median load and pressure of a tyre test: defined beside the

@@ -6,16 +6,17 @@
 //! (`overlays.png`), and all of it on one self-contained page to share
 //! (`report.html`, [`super::diagnose_page`]).
 
+use super::diagnose_overlays::{overlay_figure, overlay_panels, write_overlays_csv};
 use crate::diagnose::effects::{joined, EffectKind};
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::pipeline::{observed_channel, work_units, Diagnosis, PartAxis};
+use crate::diagnose::pipeline::{work_units, Diagnosis, PartAxis};
 use crate::diagnose::report::outcome::SIGNIFICANT_NOISE_FLOORS;
 use crate::diagnose::report::{words, GapFinding, Part, Reduction, Verdict};
 use crate::error::Error;
 use crate::format::fixed;
 use crate::io::campaign::load_campaign;
 use crate::optim::local::Derivatives;
-use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style, MEASURED_DOTS};
+use crate::report::plot::{Figure, Marker, Panel, Series, Shape, Style};
 use crate::report::progress::Progress;
 use crate::report::{create_dir, refuse_overwrites, write_json, OutputLock};
 use serde::Serialize;
@@ -48,11 +49,12 @@ pub struct DiagnoseReport {
     pub lock: OutputLock,
 }
 
-const FILES: [&str; 4] = [
+const FILES: [&str; 5] = [
     "diagnosis.json",
     "gap_map.png",
     "overlays.png",
     "report.html",
+    "overlays.csv",
 ];
 
 /// What `simulate` says of a car's `.tir` files, said of a campaign's
@@ -100,7 +102,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
 
 impl DiagnoseReport {
     /// The output files.
-    pub fn outputs(&self) -> [PathBuf; 4] {
+    pub fn outputs(&self) -> [PathBuf; 5] {
         FILES.map(|f| self.out_dir.join(f))
     }
 
@@ -110,9 +112,11 @@ impl DiagnoseReport {
         let files = self.outputs();
         create_dir(&self.out_dir)?;
         write_json(&files[0], &self.diagnosis)?;
-        let (gap, over) = (gap_map(&self.diagnosis), overlays(&self.diagnosis));
+        let panels = overlay_panels(&self.diagnosis);
+        let (gap, over) = (gap_map(&self.diagnosis), overlay_figure(&panels, quantity));
         gap.save(&files[1])?;
         over.save(&files[2])?;
+        write_overlays_csv(&files[4], &panels)?;
         let inputs = super::diagnose_page::Inputs {
             runs: self.runs,
             run_files: self.run_files,
@@ -497,60 +501,6 @@ fn symbol(ch: Channel) -> &'static str {
         Channel::Ay => "lateral acceleration a_y",
         Channel::Beta => "sideslip β",
     }
-}
-
-/// Measured, base and augmented held-out replays of the three runs with the
-/// largest base-model gap.
-fn overlays(d: &Diagnosis) -> Figure {
-    let mut panels = Vec::new();
-    for o in d.overlays.iter().take(3) {
-        let name = Path::new(&o.run)
-            .file_name()
-            .map_or(o.run.clone(), |s| s.to_string_lossy().into_owned());
-        for (ch, m) in &o.measured {
-            if *ch == Channel::Beta && o.measured.len() > 2 {
-                continue;
-            }
-            let label = format!("with {}", joined(d.verdict.effects(), " + "));
-            let after = (!d.verdict.effects().is_empty())
-                .then(|| (label.as_str(), observed_channel(&o.after, *ch)));
-            let series = overlay_series(&o.t, m, observed_channel(&o.base, *ch), after);
-            panels.push(Panel {
-                title: format!("{name}: {} (held out)", quantity(*ch)),
-                x_label: "t, s".into(),
-                y_label: quantity(*ch),
-                series,
-                x_range: None,
-                y_range: None,
-            });
-        }
-    }
-    Figure {
-        panels,
-        columns: 2,
-        width: 1400,
-        row_height: 280,
-    }
-}
-
-/// One overlay panel's series: the measured dots first, then the base
-/// model dashed and the model with the verdict's effects (its label and
-/// trace) solid over them, as the tyre fits draw a model over its data
-/// (drawn last, the dots hid the lines wherever they agree).
-fn overlay_series(
-    t: &[f64],
-    measured: &[f64],
-    base: &[f64],
-    after: Option<(&str, &[f64])>,
-) -> Vec<Series> {
-    let mut series = vec![
-        Series::line("measured", t, measured, 7).styled(MEASURED_DOTS),
-        Series::line("base model", t, base, 1).styled(Style::Dashed),
-    ];
-    if let Some((label, y)) = after {
-        series.push(Series::line(label, t, y, 2));
-    }
-    series
 }
 
 #[cfg(test)]

@@ -80,24 +80,3 @@ fn a_reduction_that_rounds_to_zero_has_no_sign() {
     let cells = reduction_cells([Reduction::Percent(-1.25), Reduction::Percent(12.34)]);
     assert_eq!(cells, "     -1.2 %     12.3 %");
 }
-
-/// An overlay's measured samples are dots drawn first, under the base
-/// model's dashed line and the verdict's solid one.
-#[test]
-fn overlay_model_lines_are_drawn_over_the_measured_dots() {
-    let t = [0.0, 0.1];
-    let with = overlay_series(&t, &[1.0, 2.0], &[0.9, 1.8], Some(("with x", &[1.0, 2.1])));
-    let drawn: Vec<(&str, Style)> = with.iter().map(|s| (s.label.as_str(), s.style)).collect();
-    assert_eq!(
-        drawn,
-        [
-            ("measured", MEASURED_DOTS),
-            ("base model", Style::Dashed),
-            ("with x", Style::Line)
-        ]
-    );
-    let without = overlay_series(&t, &[1.0, 2.0], &[0.9, 1.8], None);
-    assert_eq!(without[0].style, MEASURED_DOTS);
-    assert_eq!(without.last().unwrap().style, Style::Dashed);
-    assert_eq!(without.len(), 2);
-}

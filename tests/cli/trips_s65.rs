@@ -4,28 +4,8 @@
 //! gravity that tips the car over, a missing path, an initial window over
 //! the step.
 
+use super::sedan_runs::{sedan, sedan_history};
 use super::*;
-
-/// The bundled sedan step steer (1° at 1.0–1.1 s, to 6 s) in `dir`, with
-/// `extra` appended to its text.
-pub(super) fn sedan(dir: &Path, extra: &str) -> PathBuf {
-    let path = dir.join("sedan_step.toml");
-    fs::write(&path, bundled_scenario("sedan_step.toml") + extra).unwrap();
-    path
-}
-
-/// The sedan's history, simulated into `dir/run`.
-pub(super) fn sedan_history(dir: &Path) -> PathBuf {
-    let sc = sedan(dir, "");
-    let out = dir.join("run");
-    succeeds(&[
-        "simulate",
-        sc.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    out.join("history.csv")
-}
 
 /// `metrics <history> --filter-hz 0 --steady-window <window>`.
 fn metrics_with_window(history: &Path, window: &str) -> Output {

@@ -14,7 +14,7 @@ pub(super) struct Sedan {
 
 impl Sedan {
     pub(super) fn simulated(dir: &Path) -> Self {
-        let text = fs::read_to_string(super::trips_s65::sedan_history(dir)).unwrap();
+        let text = fs::read_to_string(super::sedan_runs::sedan_history(dir)).unwrap();
         let mut lines = text.lines();
         let header = lines
             .next()

@@ -338,7 +338,7 @@ fn a_negative_seed_and_a_wrong_wheelbase_are_said_as_what_they_are() {
 #[test]
 fn metrics_says_a_column_that_is_a_slip_of_a_channel_it_reads() {
     let dir = tempfile::tempdir().unwrap();
-    let history = fs::read_to_string(super::trips_s65::sedan_history(dir.path())).unwrap();
+    let history = fs::read_to_string(super::sedan_runs::sedan_history(dir.path())).unwrap();
     let header = history.lines().next().unwrap();
     assert!(header.contains(",beta,"), "{header}");
     let slipped = history.replacen(",beta,", ",bta,", 1);

@@ -10,7 +10,7 @@ use super::*;
 pub(super) fn sedan_on(friction: Option<f64>) -> (String, serde_json::Value) {
     let road = friction.map_or(String::new(), |mu| format!("\n[road]\nfriction = {mu}\n"));
     let dir = tempfile::tempdir().unwrap();
-    let scenario = super::trips_s65::sedan(dir.path(), &road);
+    let scenario = super::sedan_runs::sedan(dir.path(), &road);
     let out = dir.path().join("out");
     let said = succeeds(&[
         "simulate",

@@ -6,6 +6,7 @@
 //! `ay` said to be absent, a time in µs without a hint, and `r` and
 //! `delta` without a did-you-mean.
 
+use super::sedan_runs::{run_text, sedan_history};
 use super::*;
 
 /// The stdout and stderr of `args`, which must succeed.
@@ -20,41 +21,6 @@ fn refusal(args: &[&str]) -> String {
     let o = run(args);
     assert!(!o.status.success(), "expected a refusal: {args:?}");
     stderr(&o)
-}
-
-/// The bundled sedan's step simulated into `dir/sim`: its `history.csv`
-/// (1 kHz, noise-free).
-fn sedan_history(dir: &Path) -> PathBuf {
-    let sc = dir.join("sedan.toml");
-    fs::write(&sc, bundled_scenario("sedan_step.toml")).unwrap();
-    let out = dir.join("sim");
-    succeeds(&[
-        "simulate",
-        sc.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    out.join("history.csv")
-}
-
-/// The run columns of `history` (a CSV with a header) at every `every`-th
-/// row, as `t,speed,steer,yaw_rate,ay,beta`.
-fn resampled(history: &Path, every: usize) -> String {
-    let text = fs::read_to_string(history).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let wanted = ["t", "speed", "steer", "yaw_rate", "ay", "beta"];
-    let at: Vec<usize> = wanted
-        .iter()
-        .map(|w| header.iter().position(|h| h == w).unwrap())
-        .collect();
-    let mut out = wanted.join(",") + "\n";
-    for line in lines.step_by(every) {
-        let cells: Vec<&str> = line.split(',').collect();
-        let row: Vec<&str> = at.iter().map(|&i| cells[i]).collect();
-        out += &(row.join(",") + "\n");
-    }
-    out
 }
 
 /// Synth's 60 km/h step (seed 2): its sideslip moves 0.0031 rad under a
@@ -124,7 +90,7 @@ fn a_coarsely_sampled_sideslip_hump_is_no_spike_and_a_spike_still_is() {
     let dir = tempfile::tempdir().unwrap();
     let history = sedan_history(dir.path());
     let run_csv = dir.path().join("step25.csv");
-    fs::write(&run_csv, resampled(&history, 40)).unwrap();
+    fs::write(&run_csv, run_text(&history, 40, None)).unwrap();
     let (j, _) = metrics_json(&run_csv);
     assert_eq!(j["cleaning"]["counts"]["spike"], 0, "{}", j["cleaning"]);
     assert_eq!(j["cleaning"]["samples_masked"], 0, "{}", j["cleaning"]);

@@ -4,79 +4,8 @@
 //! spread; `ay` in ft/s² said only to "disagree"; a replay's "within three
 //! noise floors (0.0021 rad/s)" whose bracket held one floor.
 
+use super::sedan_runs::{run_file, sedan_history, Noisy};
 use super::*;
-
-/// xorshift64* with Box–Muller: the same noise on every machine, so a
-/// run file the test writes is the same every time.
-struct Noise(u64);
-
-impl Noise {
-    fn new(seed: u64) -> Self {
-        Noise(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15).wrapping_add(1))
-    }
-    fn uniform(&mut self) -> f64 {
-        let mut x = self.0;
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        self.0 = x;
-        ((x.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 + 0.5) / 2f64.powi(53)
-    }
-    fn gauss(&mut self) -> f64 {
-        let (u1, u2) = (self.uniform(), self.uniform());
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-    }
-}
-
-/// The bundled sedan's 1° step at 80 km/h simulated into `dir/sim`: its
-/// `history.csv` (1 kHz, noise-free).
-fn sedan_history(dir: &Path) -> PathBuf {
-    let sc = dir.join("sedan.toml");
-    fs::write(&sc, bundled_scenario("sedan_step.toml")).unwrap();
-    let out = dir.join("sim");
-    succeeds(&[
-        "simulate",
-        sc.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    out.join("history.csv")
-}
-
-/// `history`'s run columns at every `every`-th row, with white noise of
-/// deviation `yaw` (rad/s) on the yaw rate and `ay` (m/s²) on the lateral
-/// acceleration (seed `seed`), and `ay` times `ay_gain`, written to `to`.
-fn run_file(
-    history: &Path,
-    every: usize,
-    (yaw, ay): (f64, f64),
-    seed: u64,
-    ay_gain: f64,
-    to: &Path,
-) {
-    let text = fs::read_to_string(history).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let (t, u, d, r, a, b) = (
-        col("t"),
-        col("speed"),
-        col("steer"),
-        col("yaw_rate"),
-        col("ay"),
-        col("beta"),
-    );
-    let mut noise = Noise::new(seed);
-    let mut out = String::from("t,speed,steer,yaw_rate,ay,beta\n");
-    for line in lines.step_by(every) {
-        let c: Vec<&str> = line.split(',').collect();
-        let num = |i: usize| c[i].parse::<f64>().unwrap();
-        let yr = num(r) + yaw * noise.gauss();
-        let lat = (num(a) + ay * noise.gauss()) * ay_gain;
-        out += &format!("{},{},{},{yr},{lat},{}\n", c[t], c[u], c[d], c[b]);
-    }
-    fs::write(to, out).unwrap();
-}
 
 /// A 200 Hz copy of the sedan's step with a gyro noise of 0.0055 rad/s
 /// (the tester's nz_6.csv: 2.4 % of the step after the 10 Hz low-pass).
@@ -92,14 +21,34 @@ fn a_noise_dip_does_not_cut_the_overshoot_and_its_spread_is_said() {
     let dir = tempfile::tempdir().unwrap();
     let history = sedan_history(dir.path());
     let clean = dir.path().join("clean.csv");
-    run_file(&history, 5, (0.0, 0.0), 1, 1.0, &clean);
+    run_file(
+        &history,
+        5,
+        Noisy {
+            yaw: 0.0,
+            ay: 0.0,
+            seed: 1,
+            ay_gain: 1.0,
+        },
+        &clean,
+    );
     let (j, _) = metrics_json(&clean);
     let overshoot = j["yaw_rate_overshoot"].as_f64().unwrap();
     let peak = j["yaw_rate_peak_time"].as_f64().unwrap();
     assert!((overshoot - 16.90).abs() < 0.005, "{overshoot}");
     assert!((peak - 0.435).abs() < 1e-9, "{peak}");
     let noisy = dir.path().join("noisy.csv");
-    run_file(&history, 5, (0.0055, 0.1), 10, 1.0, &noisy);
+    run_file(
+        &history,
+        5,
+        Noisy {
+            yaw: 0.0055,
+            ay: 0.1,
+            seed: 10,
+            ay_gain: 1.0,
+        },
+        &noisy,
+    );
     let (j, warnings) = metrics_json(&noisy);
     let overshoot = j["yaw_rate_overshoot"].as_f64().unwrap();
     assert!((overshoot - 19.47).abs() < 0.005, "{overshoot}");
@@ -120,7 +69,17 @@ fn ay_in_feet_per_second_squared_is_named() {
     let dir = tempfile::tempdir().unwrap();
     let history = sedan_history(dir.path());
     let feet = dir.path().join("feet.csv");
-    run_file(&history, 10, (0.0, 0.0), 1, 1.0 / 0.3048, &feet);
+    run_file(
+        &history,
+        10,
+        Noisy {
+            yaw: 0.0,
+            ay: 0.0,
+            seed: 1,
+            ay_gain: 1.0 / 0.3048,
+        },
+        &feet,
+    );
     let o = run(&["metrics", feet.to_str().unwrap()]);
     assert!(!o.status.success());
     let e = stderr(&o);
@@ -141,7 +100,17 @@ fn a_replay_gap_names_the_floor_and_three_of_them() {
     let dir = tempfile::tempdir().unwrap();
     let history = sedan_history(dir.path());
     let noisy = dir.path().join("noisy.csv");
-    run_file(&history, 5, (0.0055, 0.1), 10, 1.0, &noisy);
+    run_file(
+        &history,
+        5,
+        Noisy {
+            yaw: 0.0055,
+            ay: 0.1,
+            seed: 10,
+            ay_gain: 1.0,
+        },
+        &noisy,
+    );
     let tyres = root().join("tyres");
     let scenario = dir.path().join("replay.toml");
     let text = bundled_scenario("sedan_step.toml");

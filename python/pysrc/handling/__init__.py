@@ -949,7 +949,8 @@ def diagnose(campaign: PathLike, out: Optional[PathLike] = None) -> Diagnosis:
     """The sim-to-real gap of a campaign (TOML file or folder), as
     ``handling diagnose``: a :class:`Diagnosis` (``verdict``, ``ranking``;
     ``to_dict()``: diagnosis.json's content). With
-    ``out`` diagnosis.json, gap_map.png and overlays.png are written."""
+    ``out`` diagnosis.json, gap_map.png, overlays.png (its data in
+    overlays.csv) and report.html are written."""
     return Diagnosis.from_dict(json.loads(_handling.diagnose(_path(campaign), _opt_path(out))))
 
 

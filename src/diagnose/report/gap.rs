@@ -40,6 +40,7 @@ use serde::Serialize;
 mod said;
 mod scan;
 use said::{verdict, Found, Said};
+pub use scan::scored_from;
 pub use scan::WindowGap;
 
 /// The residual over a part of the run.

@@ -14,7 +14,8 @@ pub struct Level {
     pub lo: f64,
     /// Largest value in it.
     pub hi: f64,
-    /// Median of its samples: the condition's nominal value.
+    /// Median of its samples: the level's nominal value (a condition's is
+    /// of the samples fitted there, `fitted.rs`).
     pub nominal: f64,
     /// Samples in it.
     pub samples: usize,
@@ -124,7 +125,9 @@ pub fn level_label(named: &[Levels], variable: Variable, v: f64) -> String {
     variable.display(v)
 }
 
-fn median(sorted: &[f64]) -> f64 {
+/// The median of `sorted` (the mean of its two middle values for an
+/// even count).
+pub(super) fn median(sorted: &[f64]) -> f64 {
     let n = sorted.len();
     if n % 2 == 1 {
         sorted[n / 2]

@@ -41,6 +41,7 @@
 //! Layout: `levels.rs` finds the levels of one variable; this file selects
 //! and groups the samples into conditions and thins them into fit points.
 
+mod fitted;
 pub(crate) mod levels;
 
 pub use super::data::SlipAxis;
@@ -355,8 +356,7 @@ pub fn group(
         .map(|p| levels(Variable::Pressure, p, g.pressure_resolution));
     let selection = selection(&refuse, d, g, &loads, &cambers, pressures.as_ref())?;
     // (load, camber, pressure) level indices and the samples there.
-    type Key = (usize, usize, Option<usize>);
-    let mut groups: Vec<(Key, Vec<usize>)> = Vec::new();
+    let mut groups: Vec<(fitted::Key, Vec<usize>)> = Vec::new();
     let (mut transitions, mut not_selected) = (0, 0);
     for i in 0..d.len() {
         let p_val = d.pressure.as_ref().map(|p| p[i]);
@@ -394,14 +394,18 @@ pub fn group(
             .iter()
             .any(|v| (v / asked).abs() >= RESOLVED_BINS);
     let bin = if below_resolution { 0.0 } else { asked };
+    let nominals = fitted::Nominals::of(d, &groups);
     let conditions: Vec<Condition> = groups
         .into_iter()
-        .map(|((l, c, p), idx)| Condition {
-            fz: loads.levels[l].nominal,
-            camber: cambers.levels[c].nominal,
-            pressure: p.and_then(|k| pressures.as_ref().map(|ps| ps.levels[k].nominal)),
-            samples: idx.len(),
-            points: thin(d, &columns, &idx, bin, g.default_speed),
+        .map(|(key, idx)| {
+            let (fz, camber, pressure) = nominals.at(key);
+            Condition {
+                fz,
+                camber,
+                pressure,
+                samples: idx.len(),
+                points: thin(d, &columns, &idx, bin, g.default_speed),
+            }
         })
         .collect();
     let selected = selection.record(g, [Some(&loads), Some(&cambers), pressures.as_ref()]);

@@ -395,7 +395,6 @@ pub(super) fn on_data<'a>(
 /// The rig file of `o` and its wheel moments, without a lifted wheel's
 /// samples, and what was set aside (`identify/lifted.rs`).
 fn read_lifted(o: &Options) -> Result<crate::identify::lifted::Stripped, Error> {
-    let d = crate::io::rig::read_rig(&o.data)?;
-    let moments = crate::io::rig::read_rig_moments(&o.data)?;
+    let (d, moments) = crate::io::rig::read_rig_with_moments(&o.data)?;
     Ok(crate::identify::lifted::without_lifted_moments(d, moments))
 }

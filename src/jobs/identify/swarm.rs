@@ -19,7 +19,7 @@ use crate::identify::lifted::without_lifted;
 use crate::identify::pac89_two_stage::TwoStage;
 use crate::identify::pooled::Pooled;
 use crate::identify::{fit_channel_holding, start_tyre_of, Channel, FitSettings};
-use crate::io::rig::{read_rig, read_rig_moments};
+use crate::io::rig::read_rig_with_moments;
 use crate::report::refuse_overwrites;
 use crate::tyre::{Identification, ModelName, Tyre};
 
@@ -32,8 +32,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     // optimiser left it (`identify/undetermined.rs`).
     settings.hold_undetermined = true;
     // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
-    let read = read_rig(&o.data)?;
-    let measured = super::Measured::of(&read, &read_rig_moments(&o.data)?);
+    let (read, moments) = read_rig_with_moments(&o.data)?;
+    let measured = super::Measured::of(&read, &moments);
     let (data, lifted) = without_lifted(read);
     let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
     // Each force is fitted to its pure slip (`identify/pure.rs`).

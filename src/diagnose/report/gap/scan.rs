@@ -35,6 +35,18 @@ use serde::Serialize;
 /// second.
 pub const WINDOW: f64 = 0.5;
 
+/// The half windows into a replay where the scan's first window starts:
+/// one whole [`WINDOW`], the replay's own start transient left out.
+const FIRST_HALF_WINDOW: usize = 2;
+
+/// Where the scored span of a replay that starts at `t0` begins, s: the
+/// start of the scan's first window ([`worst_window`]). The overlays draw
+/// their model lines from there, so the figure leaves out what the scan
+/// leaves out.
+pub fn scored_from(t0: f64) -> f64 {
+    t0 + 0.5 * WINDOW * FIRST_HALF_WINDOW as f64
+}
+
 /// The chance that pure noise shows a local gap in any window of a run.
 pub const FALSE_ALARM: f64 = 0.01;
 
@@ -177,7 +189,7 @@ pub(super) fn worst_window(
     // initial state it estimates from noisy samples, a transient of the
     // replay, not of the model (a clean sedan replay's ay read "a gap in
     // one stretch: 1.5 noise floors from t = 0.00 s").
-    let starts: Vec<f64> = (2..)
+    let starts: Vec<f64> = (FIRST_HALF_WINDOW..)
         .map(|j| t0 + 0.5 * WINDOW * j as f64)
         .take_while(|s| s + WINDOW <= t1 + 1e-9)
         .collect();

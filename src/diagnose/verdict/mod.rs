@@ -12,6 +12,7 @@ pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
 pub mod rules;
+pub(crate) mod restricted;
 pub(crate) mod score;
 pub(crate) mod screening;
 pub(crate) mod search;

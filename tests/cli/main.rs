@@ -355,6 +355,7 @@ mod proving_ground;
 mod real_logs;
 mod report_html;
 mod rig_layouts;
+mod restricted_screen;
 mod scenarios;
 mod set_search;
 mod shards;

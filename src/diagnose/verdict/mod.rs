@@ -11,8 +11,8 @@
 pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
-pub mod rules;
 pub(crate) mod restricted;
+pub mod rules;
 pub(crate) mod score;
 pub(crate) mod screening;
 pub(crate) mod search;

@@ -37,13 +37,13 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{
     ACCEPT, ALTERNATIVE_STARTS, CONFOUNDED, CONFOUNDED_NOISE, DISAGREEMENT, PARSIMONY, PROMISING,
     SIGNIFICANT,
 };
-use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
 use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
 use rayon::prelude::*;

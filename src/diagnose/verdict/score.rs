@@ -77,8 +77,7 @@ pub(crate) struct Context<'a> {
 pub(crate) type Calibrated = [Option<(f64, f64, CalibrationSource)>; 3];
 
 /// A candidate whose global stage is done ([`Context::started`]), its
-/// polish not yet: the setting, where the polish starts and how the
-/// global stage searched.
+/// polish not yet: the setting, the polish's start, how it was searched.
 pub(crate) struct Started<'a> {
     pub(crate) setting: Setting<'a>,
     pub(crate) start: Vec<f64>,
@@ -167,10 +166,8 @@ impl<'a> Context<'a> {
     }
 
     /// A candidate's global stage ([`Context::start`]) from `starts`, its
-    /// swarm seeded by `salt`: where its polish ([`Context::polish`])
-    /// starts. The greedy additions take it first for a restricted fit
-    /// (`crate::diagnose::verdict::restricted`), and polish it only where
-    /// that cannot screen the step.
+    /// swarm seeded by `salt`: where its polish ([`Context::polish`]) and a
+    /// restricted fit (`crate::diagnose::verdict::restricted`) start.
     pub(crate) fn started(
         &self,
         kinds: Vec<EffectKind>,

@@ -354,6 +354,7 @@ mod programmes;
 mod proving_ground;
 mod real_logs;
 mod report_html;
+mod restricted_screen;
 mod rig_layouts;
 mod scenarios;
 mod sedan_runs;

@@ -41,6 +41,12 @@ pub const PARSIMONY: f64 = 0.1;
 /// Percentage points by which a candidate's held-out reduction may exceed
 /// its in-sample one and the screening still hold.
 pub const SCREEN_MARGIN: f64 = 10.0;
+/// Percentage points by which a set's restricted fit (the effect it adds
+/// fitted alone beside the current set held,
+/// [`crate::diagnose::verdict::restricted`]) must stay below the full
+/// fits' screen for its greedy step to be screened without polishing:
+/// several times what refitting the current set beside it was seen to add.
+pub const RESTRICTED_MARGIN: f64 = 10.0;
 
 /// Standard errors of the all-run fit beyond which a fold's refit has
 /// landed far from it. Leaving one of `k` folds out moves a determined
@@ -139,6 +145,15 @@ pub fn disagrees(insample_percent: f64, heldout_percent: f64) -> bool {
 /// [`SCREEN_MARGIN`] points more held out would stay below [`ACCEPT`].
 pub fn screened(insample_percent: f64) -> bool {
     insample_percent + SCREEN_MARGIN < 100.0 * ACCEPT
+}
+
+/// Whether a greedy step's set whose restricted fit removes
+/// `insample_percent` of the in-sample gap the current set leaves is
+/// screened without its full fit: [`RESTRICTED_MARGIN`] points more by
+/// refitting the current set beside it would still be screened
+/// ([`screened`]).
+pub fn screened_restricted(insample_percent: f64) -> bool {
+    screened(insample_percent + RESTRICTED_MARGIN)
 }
 
 /// Whether a screened single is cross-validated after all: its least

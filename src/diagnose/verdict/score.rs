@@ -76,6 +76,14 @@ pub(crate) struct Context<'a> {
 /// straights), with its standard error ([`crate::measured::calibration`]).
 pub(crate) type Calibrated = [Option<(f64, f64, CalibrationSource)>; 3];
 
+/// A candidate whose global stage is done ([`Context::started`]), its
+/// polish not yet: the setting, the polish's start, how it was searched.
+pub(crate) struct Started<'a> {
+    pub(crate) setting: Setting<'a>,
+    pub(crate) start: Vec<f64>,
+    pub(crate) global: GlobalSearch,
+}
+
 /// A candidate fitted on all runs, not yet cross-validated: its
 /// setting, its fit (with the optimum's linearisation the fold refits
 /// start from) and its errors on all runs.
@@ -154,15 +162,50 @@ impl<'a> Context<'a> {
         starts: &[Vec<f64>],
         salt: u64,
     ) -> Fitted<'a> {
+        self.polish(self.started(kinds, starts, salt))
+    }
+
+    /// A candidate's global stage ([`Context::start`]) from `starts`, its
+    /// swarm seeded by `salt`: where its polish ([`Context::polish`]) and a
+    /// restricted fit (`crate::diagnose::verdict::restricted`) start.
+    pub(crate) fn started(
+        &self,
+        kinds: Vec<EffectKind>,
+        starts: &[Vec<f64>],
+        salt: u64,
+    ) -> Started<'a> {
         let s = Setting::new(self.bases, kinds);
         let stamps = self.timing.map(|_| Stamps::default());
+        let t0 = Instant::now();
         let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior, s.bounds());
         let pso = Pso {
             seed: self.pso.seed ^ salt.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             ..self.pso
         };
-        let t0 = Instant::now();
         let (start, global) = self.start(&problem, &s, starts, &pso);
+        drop(problem);
+        if let (Some(rec), Some(st)) = (self.timing, &stamps) {
+            rec.add(Phase::CandidateSearch, t0.elapsed(), st.count());
+        }
+        Started {
+            setting: s,
+            start,
+            global,
+        }
+    }
+
+    /// The polish of a candidate whose global stage is done (`started`):
+    /// Levenberg–Marquardt on all runs, undetermined parameters held, and
+    /// its errors on all runs.
+    pub(crate) fn polish(&self, started: Started<'a>) -> Fitted<'a> {
+        let Started {
+            setting: s,
+            start,
+            global,
+        } = started;
+        let stamps = self.timing.map(|_| Stamps::default());
+        let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior, s.bounds());
+        let mark = (Instant::now(), 0);
         // The prior weighed against the evidence the runs carry about this
         // candidate (`crate::diagnose::fit::tempering`): its residuals at the
         // global stage's best, so that a candidate that leaves white noise
@@ -173,13 +216,11 @@ impl<'a> Context<'a> {
             .prior
             .map(|rows| rows.tempered(problem.tempering(&start).prior_weight));
         let problem = problem.with_prior(prior);
-        let mark = (Instant::now(), stamps.as_ref().map_or(0, Stamps::count));
         let free = fit_first_order(&problem, &start, Some(&s.off()));
         let (full, linearised_at, bounds) =
             self.hold_undetermined(&s, prior, stamps.as_ref(), free);
         let full = FitOutcome { global, ..full };
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
-            rec.add(Phase::CandidateSearch, mark.0 - t0, mark.1);
             let phases = [
                 Phase::CandidatePolish,
                 Phase::CandidateJacobian,

@@ -37,13 +37,14 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{
     ACCEPT, ALTERNATIVE_STARTS, CONFOUNDED, CONFOUNDED_NOISE, DISAGREEMENT, PARSIMONY, PROMISING,
     SIGNIFICANT,
 };
-use crate::diagnose::verdict::score::{Context, Fitted, Scored};
+use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
 use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
 use rayon::prelude::*;
 
@@ -296,7 +297,17 @@ fn greedy(
             .map(|&i| singles[i].kinds[0])
             .filter(|e| !current.kinds.contains(e))
             .collect();
-        let fitted = extensions(ctx, singles, base, &current, &tries);
+        let started = extensions(ctx, singles, base, &current, &tries);
+        // The restricted fits first: where they screen the step, the sets'
+        // polish is spared (`restricted`).
+        if screening {
+            let restricted: Vec<Scored> = started.par_iter().map(|s| ctx.restricted(s)).collect();
+            if let Some(rows) = screened_restricted(ctx, base, &current, &restricted) {
+                out.screened.extend(rows);
+                break;
+            }
+        }
+        let fitted: Vec<Fitted> = started.into_par_iter().map(|s| ctx.polish(s)).collect();
         if let Some(rows) = screened_additions(ctx, base, &current, &fitted, screening) {
             out.screened.extend(rows);
             break;
@@ -330,8 +341,8 @@ fn greedy(
     (current, simpler)
 }
 
-/// The sets of `current` plus each effect of `tries`, fitted on all runs.
-/// Each set's seed is that of the effect added (its name's, not its place
+/// The sets of `current` plus each effect of `tries`, their global stage on
+/// all runs done ([`Context::started`]). Each set's seed is that of the effect added (its name's, not its place
 /// in the ranking, which screening shortens), one apart from its single
 /// fit's.
 fn extensions<'a>(
@@ -340,7 +351,7 @@ fn extensions<'a>(
     base: &Baseline,
     current: &Scored,
     tries: &[EffectKind],
-) -> Vec<Fitted<'a>> {
+) -> Vec<Started<'a>> {
     tries
         .par_iter()
         .map(|e| {
@@ -357,7 +368,7 @@ fn extensions<'a>(
             own[axles.clone()].copy_from_slice(&single.full.params[axles]);
             let added = alone(&layout, &ctx.off(&current.kinds), *e, &single.full.params);
             let starts = [members, extended, own, added];
-            ctx.fit_all(kinds, &starts, e.seed().wrapping_add(1))
+            ctx.started(kinds, &starts, e.seed().wrapping_add(1))
         })
         .collect()
 }

@@ -81,6 +81,21 @@ fn a_single_is_screened_below_30_percent_less_the_10_point_margin() {
 }
 
 #[test]
+fn a_greedy_step_is_screened_by_restricted_fits_only_ten_points_below_the_screen() {
+    // The full fits' screen is below 20 %; the restricted fits', 10 % (the
+    // racing log's full fits removed at most 1.5 points more than them).
+    assert!(screened_restricted(9.9));
+    assert!(!screened_restricted(10.0));
+    assert!(!screened_restricted(15.0));
+    assert!(screened(15.0));
+    // Whatever the restricted fits screen, the full fits would too, with
+    // the margin to spare.
+    for x in [-5.0, 0.0, 5.0, 9.99] {
+        assert!(screened_restricted(x) && screened(x + RESTRICTED_MARGIN - 1e-9));
+    }
+}
+
+#[test]
 fn a_screened_single_is_cross_validated_where_the_search_could_read_it() {
     // Best cross-validated 2.0; best whose axles are a tyre 2.5; J_n 1.
     assert!(reaches(2.0, false, 2.0, 2.5, 1.0));

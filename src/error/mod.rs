@@ -93,10 +93,10 @@ pub use steer_runs::SteerInDegreesRuns;
 pub use stiffness_unit::{StiffnessSlip, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS};
 pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
 use thiserror::Error;
+pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
 };
-pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
 pub use vehicle_limit::{VehicleLimit, MAX_STEERING_RATIO, MIN_STEERING_RATIO};
 

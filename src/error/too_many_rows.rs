@@ -77,7 +77,12 @@ mod tests {
     #[test]
     fn one_interval_over_the_limit_is_counted_whole() {
         let said = over(6.0, 6.0 / 2_000_001.0, 2e6);
-        assert!(said.starts_with("makes 2000002 rows (about 300 MB of history.csv), 1 more than the 2000001"), "{said}");
+        assert!(
+            said.starts_with(
+                "makes 2000002 rows (about 300 MB of history.csv), 1 more than the 2000001"
+            ),
+            "{said}"
+        );
         assert_eq!(rows(6.0, 1e-3), 6001.0);
     }
 }

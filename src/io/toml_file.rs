@@ -332,7 +332,9 @@ impl TomlSource {
             .collect::<Vec<_>>()
             .join("; ");
         // A number written with a decimal comma stops at the comma.
-        let comma = e.span().and_then(|s| decimal_comma::hint(&self.text, s.start));
+        let comma = e
+            .span()
+            .and_then(|s| decimal_comma::hint(&self.text, s.start));
         if let Some(hint) = comma.filter(|_| message == "expected newline, `#`") {
             return hint;
         }

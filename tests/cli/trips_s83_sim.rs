@@ -26,12 +26,18 @@ fn refused(vehicle: &str, rest: &str) -> String {
 
 #[test]
 fn an_effects_key_under_model_or_road_is_sent_to_model_effects() {
-    let said = refused(VEHICLE, &format!("{STEP_6S}\n[model]\nrelaxation_length = 0.5\n"));
+    let said = refused(
+        VEHICLE,
+        &format!("{STEP_6S}\n[model]\nrelaxation_length = 0.5\n"),
+    );
     assert!(
         said.contains("scenario.toml:22:1: `model.relaxation_length`: unknown field `relaxation_length` (it belongs in [model.effects]), expected"),
         "{said}"
     );
-    let said = refused(VEHICLE, &format!("{STEP_6S}\n[road]\nfriction = 1.0\nroad_bank = 0.05\n"));
+    let said = refused(
+        VEHICLE,
+        &format!("{STEP_6S}\n[road]\nfriction = 1.0\nroad_bank = 0.05\n"),
+    );
     assert!(
         said.contains("scenario.toml:23:1: `road.road_bank`: unknown field `road_bank` (it belongs in [model.effects]), expected `friction`"),
         "{said}"
@@ -39,11 +45,16 @@ fn an_effects_key_under_model_or_road_is_sent_to_model_effects() {
     // The name the diagnosis gives the effect, said with the key.
     let said = refused(VEHICLE, &format!("{STEP_6S}\n[road]\nbank = 0.05\n"));
     assert!(
-        said.contains("`road.bank`: unknown field `bank` (it belongs in [model.effects], as `road_bank`)"),
+        said.contains(
+            "`road.bank`: unknown field `bank` (it belongs in [model.effects], as `road_bank`)"
+        ),
         "{said}"
     );
     // A sensor's effect has no table in a scenario: said why.
-    let said = refused(VEHICLE, &format!("{STEP_6S}\n[model]\nsensor_delay = 0.05\n"));
+    let said = refused(
+        VEHICLE,
+        &format!("{STEP_6S}\n[model]\nsensor_delay = 0.05\n"),
+    );
     assert!(
         said.contains("(`sensor_delay` is an effect of the measurement (the sensors and the steer they log), not of the car"),
         "{said}"
@@ -66,7 +77,10 @@ fn a_road_of_no_friction_is_said_not_positive() {
     for v in ["0", "0.0", "-0.5"] {
         let said = refused(VEHICLE, &format!("{STEP_6S}\n[road]\nfriction = {v}\n"));
         assert!(
-            said.contains(&format!("scenario.toml:22:12: `road.friction` = {}: must be positive", v.trim_end_matches(".0"))),
+            said.contains(&format!(
+                "scenario.toml:22:12: `road.friction` = {}: must be positive",
+                v.trim_end_matches(".0")
+            )),
             "{said}"
         );
         assert!(!said.contains("percentage"), "{said}");
@@ -80,7 +94,9 @@ fn a_share_just_below_ten_percent_is_said_below_it() {
     let sine = "[manoeuvre]\nkind = \"sine\"\nspeed = 20.0\namplitude = 0.1\nfrequency = 0.0015942\nstart = 0.0\nend = 10.0\n";
     let said = refused(VEHICLE, sine);
     assert!(
-        said.contains("9.9999 % of its `amplitude` = 0.1 rad (5.73°), less than the 10 % a sine must reach"),
+        said.contains(
+            "9.9999 % of its `amplitude` = 0.1 rad (5.73°), less than the 10 % a sine must reach"
+        ),
         "{said}"
     );
 }
@@ -95,24 +111,38 @@ fn quoted_size(said: &str) -> f64 {
 #[test]
 fn the_quoted_history_size_is_the_written_ones() {
     // Refused at 2.5e-6 s: 2,400,001 rows, the size quoted for them.
-    let said = refused(VEHICLE, &format!("{STEP_6S}\n[simulation]\nstep = 2.5e-6\n"));
+    let said = refused(
+        VEHICLE,
+        &format!("{STEP_6S}\n[simulation]\nstep = 2.5e-6\n"),
+    );
     assert!(said.contains("makes 2400001 rows (about "), "{said}");
     let per_row_quoted = quoted_size(&said) / 2_400_001.0;
     // Written at 1e-3 s: 6001 rows.
     let dir = sedan(VEHICLE, STEP_6S);
     let out = dir.path().join("out");
     let sc = dir.path().join("scenario.toml");
-    succeeds(&["simulate", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    succeeds(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     let written = fs::metadata(out.join("history.csv")).unwrap().len() as f64;
     let per_row_written = written / 6001.0;
     let ratio = per_row_quoted / per_row_written;
-    assert!((0.8..=1.2).contains(&ratio), "quoted {per_row_quoted} B/row, written {per_row_written}: {said}");
+    assert!(
+        (0.8..=1.2).contains(&ratio),
+        "quoted {per_row_quoted} B/row, written {per_row_written}: {said}"
+    );
 }
 
 #[test]
 fn one_row_over_the_limit_is_counted_whole_with_the_key_to_change() {
     // 6 s / 2.9999985e-6 s = 2,000,001 steps: 2,000,002 rows.
-    let said = refused(VEHICLE, &format!("{STEP_6S}\n[simulation]\nstep = 2.9999985e-6\n"));
+    let said = refused(
+        VEHICLE,
+        &format!("{STEP_6S}\n[simulation]\nstep = 2.9999985e-6\n"),
+    );
     assert!(
         said.contains("scenario.toml:22:8: `simulation.step` = 2.9999985e-6: the run lasts 6 s: a row every 2.9999985e-6 s ([simulation] step) makes 2000002 rows (about 300 MB of history.csv), 1 more than the 2000001 a history holds (a first row and 2000000 steps after it); set `step` under [simulation] to at least 3e-6 s, or shorten the run (the manoeuvre's `end`)"),
         "{said}"
@@ -124,11 +154,19 @@ fn a_decimal_comma_is_said_with_the_point_to_write() {
     let vehicle = VEHICLE.replace("mass = 1530.0", "mass = 1530,0   # kg");
     let said = refused(&vehicle, STEP_6S);
     assert!(
-        said.contains("scenario.toml:2:12: `vehicle.mass`: `1530,0`: a decimal comma? write 1530.0"),
+        said.contains(
+            "scenario.toml:2:12: `vehicle.mass`: `1530,0`: a decimal comma? write 1530.0"
+        ),
         "{said}"
     );
-    let said = refused(VEHICLE, &STEP_6S.replace("steer = 0.0174533", "steer = 0,0174533"));
-    assert!(said.contains("`manoeuvre.steer`: `0,0174533`: a decimal comma? write 0.0174533"), "{said}");
+    let said = refused(
+        VEHICLE,
+        &STEP_6S.replace("steer = 0.0174533", "steer = 0,0174533"),
+    );
+    assert!(
+        said.contains("`manoeuvre.steer`: `0,0174533`: a decimal comma? write 0.0174533"),
+        "{said}"
+    );
 }
 
 #[test]
@@ -146,6 +184,11 @@ fn a_steering_ratio_outside_one_to_a_hundred_is_refused_at_its_line() {
         let dir = sedan(&format!("{VEHICLE}steering_ratio = {v}\n"), STEP_6S);
         let sc = dir.path().join("scenario.toml");
         let out = dir.path().join("out");
-        succeeds(&["simulate", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        succeeds(&[
+            "simulate",
+            sc.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
     }
 }

@@ -18,7 +18,9 @@ pub(super) fn hint(text: &str, pos: usize) -> Option<String> {
     }
     let after = text.get(pos..)?.strip_prefix(',')?;
     let line = after.lines().next().unwrap_or("");
-    let end = line.find(|c: char| !c.is_ascii_digit()).unwrap_or(line.len());
+    let end = line
+        .find(|c: char| !c.is_ascii_digit())
+        .unwrap_or(line.len());
     let (fraction, rest) = line.split_at(end);
     let rest = rest.trim();
     if fraction.is_empty() || !(rest.is_empty() || rest.starts_with('#')) {

@@ -33,7 +33,11 @@ const DEPTH: usize = 3;
 /// of the file's type anywhere that know its key (or the key it is
 /// another name of, said as `(it belongs in [model.effects], as
 /// `road_bank`)`); else, for an effect's name, the file kind's answer.
-pub(in crate::io::toml_file) fn clause(text: &str, path: &str, reparse: &Reparse) -> Option<String> {
+pub(in crate::io::toml_file) fn clause(
+    text: &str,
+    path: &str,
+    reparse: &Reparse,
+) -> Option<String> {
     let parts: Vec<&str> = path.split('.').collect();
     if parts.iter().any(|p| p.contains('[')) || super::is_table(text, &parts) {
         return None;
@@ -55,7 +59,9 @@ pub(in crate::io::toml_file) fn clause(text: &str, path: &str, reparse: &Reparse
             top.clone_from(&keys);
         }
         if at_str.as_slice() != own
-            && keys.iter().any(|k| k == meant) && !is_table_key(text, &parts, &at_str, meant, reparse) {
+            && keys.iter().any(|k| k == meant)
+            && !is_table_key(text, &parts, &at_str, meant, reparse)
+        {
             homes.push(at.clone());
         }
         if at.len() < DEPTH {
@@ -67,7 +73,10 @@ pub(in crate::io::toml_file) fn clause(text: &str, path: &str, reparse: &Reparse
         }
     }
     homes.sort();
-    let alias = (meant != *key).then(|| format!(", as `{meant}`")).unwrap_or_default();
+    let alias = match meant != *key {
+        true => format!(", as `{meant}`"),
+        false => String::new(),
+    };
     if !homes.is_empty() {
         let said: Vec<String> = homes
             .iter()

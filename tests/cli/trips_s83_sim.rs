@@ -1,4 +1,4 @@
-//! What a user still tripped on in `simulate` (session 83, issue 41): an
+//! What a user still tripped on in `simulate` (session 83, a fresh user's report): an
 //! effect's key under `[model]` or `[road]` refused without the table it
 //! belongs in, a road of no friction asked whether it was a speed, a share
 //! of 9.9999 % said as "10.0 %, less than the 10 %", a history's size

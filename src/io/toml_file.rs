@@ -300,8 +300,14 @@ impl TomlSource {
         let Some((name, rest)) = refused else {
             return message;
         };
-        let clause = home::belongs(&self.text, path, reparse)
-            .or_else(|| home::anywhere::clause(&self.text, path, reparse));
+        // A key serde already answers with a name of its own table (a
+        // sine's `steer`: `amplitude`) is no key of another table's.
+        let suggested = rest.starts_with(" (did you mean");
+        let clause = home::belongs(&self.text, path, reparse).or_else(|| {
+            (!suggested)
+                .then(|| home::anywhere::clause(&self.text, path, reparse))
+                .flatten()
+        });
         let Some(clause) = clause else {
             return message;
         };

@@ -24,16 +24,13 @@ pub struct LongReplay {
 
 impl fmt::Display for LongReplay {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let rows = self.duration / self.step;
         write!(
             f,
-            "the replayed run lasts {} s ({} samples): its history, a row every {} s (the default row interval; this scenario sets none), would have {} rows (about {} GB of history.csv), beyond the {} a history holds; cut the run into pieces of at most {} s, each replayed by its own scenario, or write its history coarser: `step = {}` (s) or more under [simulation] in this scenario (resampling the log does not help: the history's rows follow the step, not the log's rate)",
+            "the replayed run lasts {} s ({} samples): its history, a row every {} s (the default row interval; this scenario sets none), {}; cut the run into pieces of at most {} s, each replayed by its own scenario, or write its history coarser: `step = {}` (s) or more under [simulation] in this scenario (resampling the log does not help: the history's rows follow the step, not the log's rate)",
             Num(self.duration),
             self.samples,
             Num(self.step),
-            rounded(rows + 1.0, 3),
-            rounded(super::reason::HISTORY_ROW_BYTES * rows / 1e9, 2),
-            rounded(self.max_rows, 3),
+            super::too_many_rows::over(self.duration, self.step, self.max_rows),
             rounded(self.max_rows * self.step, 3),
             rounded_up(self.duration / self.max_rows, 2)
         )

@@ -45,8 +45,10 @@ mod stiffness_unit;
 mod sweep_limit;
 #[cfg(test)]
 mod tests;
+mod too_many_rows;
 mod units;
 mod unstable_step;
+mod vehicle_limit;
 
 pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
@@ -91,10 +93,12 @@ pub use steer_runs::SteerInDegreesRuns;
 pub use stiffness_unit::{StiffnessSlip, LEAST_LOAD_STIFFNESS, MOST_LOAD_STIFFNESS};
 pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
 use thiserror::Error;
+pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use units::{
     PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
 };
 pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
+pub use vehicle_limit::{VehicleLimit, MAX_STEERING_RATIO, MIN_STEERING_RATIO};
 
 /// The library's error: why a job (a command of the binary, or any public
 /// function that reads, fits or writes) could not be done. Its message is

@@ -6,7 +6,7 @@
 use super::options::{ModeError, OptionsError};
 pub(crate) use angles::{angle, compared, compared_like};
 use boxed::cornering_per_load;
-pub use boxed::{BeyondSignal, PerLoad, HISTORY_ROW_BYTES};
+pub use boxed::{BeyondSignal, PerLoad};
 pub use campaign::{CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
@@ -65,18 +65,12 @@ pub enum ParamReason {
         /// The highest steer frequency, Hz.
         frequency: f64,
     },
-    /// A run whose rows every `step` s would make a history beyond
-    /// `max_rows` rows: gigabytes of `history.csv` that no one asked for
-    /// in those words (its size quoted at [`HISTORY_ROW_BYTES`]). s.
-    #[error("the run lasts {} s: rows every {step} s ([simulation] step) make {} rows (about {} GB of history.csv), beyond the {} a history holds; set step to at least {} s, or shorten the run", super::number::Num(*duration), crate::format::rounded(*duration / *step + 1.0, 3), crate::format::rounded(HISTORY_ROW_BYTES * *duration / *step / 1e9, 2), crate::format::rounded(*max_rows, 3), crate::format::rounded_up(*duration / *max_rows, 2))]
-    TooManyRows {
-        /// The recorded rows' interval, s.
-        step: f64,
-        /// The run's length, s.
-        duration: f64,
-        /// The most rows (after the first) a history holds.
-        max_rows: f64,
-    },
+    /// A run whose history would pass the rows a history holds.
+    #[error("{0}")]
+    TooManyRows(Box<super::TooManyRows>),
+    /// A `[vehicle]` key outside its physical range.
+    #[error("{0}")]
+    VehicleRange(super::VehicleLimit),
     /// Metric windows that do not fit in a step steer's record (0 to its
     /// `end`), s: the initial window at its start, the steady at its end.
     #[error("the initial and steady windows together (`pre_window` = {} s + `steady_window` = {} s) do not fit in the record, 0 to `end` = {} s: shorten the window or lengthen the manoeuvre's `end`", super::number::Num(*pre_window), super::number::Num(*steady_window), super::number::Num(*end))]

@@ -8,7 +8,7 @@ use super::fitted_ranges::FittedRanges;
 use super::limits::{frequency, road_wheel_steer, speed};
 use super::paths::beside;
 pub use super::schedule::ScheduleSpec;
-use super::tables::{check_road, check_vehicle, resolve_model, ResolvedModel};
+use super::tables::{check_vehicle, resolve_model, ResolvedModel};
 pub use super::tables::{load_tyre, Road, TyreRefs};
 use super::toml_file::{param_error, TomlSource};
 use super::MeasuredRun;
@@ -250,7 +250,7 @@ pub(crate) fn resolve_scenario(f: &ScenarioFile, src: &TomlSource) -> Result<Sce
         fitted_ranges,
     } = resolve_model(src, &f.vehicle, &f.tyres, f.model)?;
     no_grip::lateral_force_made(src, &model, &f.tyres)?;
-    check_road(src, &f.road)?;
+    no_grip::road(src, &f.road)?;
     f.metrics
         .validate()
         .map_err(|e| param_error(src, Some("metrics"), e))?;
@@ -573,7 +573,7 @@ fn is_folder_name(name: &str) -> bool {
     !(name.trim().is_empty() || name.contains(['/', '\\']) || name == "." || name == "..")
 }
 
-mod layout;
+pub(crate) mod layout;
 mod no_grip;
 mod reach;
 mod remarks;

@@ -2,6 +2,7 @@
 //! with toml's own span, value errors found after parsing (a negative mass)
 //! are located by looking the key path up in the document's spans.
 
+mod decimal_comma;
 mod home;
 mod referenced;
 pub(crate) mod vehicle_keys;
@@ -299,7 +300,15 @@ impl TomlSource {
         let Some((name, rest)) = refused else {
             return message;
         };
-        let Some(clause) = home::belongs(&self.text, path, reparse) else {
+        // A key serde already answers with a name of its own table (a
+        // sine's `steer`: `amplitude`) is no key of another table's.
+        let suggested = rest.starts_with(" (did you mean");
+        let clause = home::belongs(&self.text, path, reparse).or_else(|| {
+            (!suggested)
+                .then(|| home::anywhere::clause(&self.text, path, reparse))
+                .flatten()
+        });
+        let Some(clause) = clause else {
             return message;
         };
         let tail = rest.find(", expected").map_or("", |i| &rest[i..]);
@@ -328,6 +337,13 @@ impl TomlSource {
             .filter(|l| !l.is_empty())
             .collect::<Vec<_>>()
             .join("; ");
+        // A number written with a decimal comma stops at the comma.
+        let comma = e
+            .span()
+            .and_then(|s| decimal_comma::hint(&self.text, s.start));
+        if let Some(hint) = comma.filter(|_| message == "expected newline, `#`") {
+            return hint;
+        }
         let message = suggest_variant(&message);
         // serde calls a TOML date a map: say what the reader wrote.
         let message = match message.strip_prefix("invalid type: map, ") {

@@ -4,7 +4,10 @@
 //! to the front and rear axle.
 
 use crate::constants::G;
-use crate::error::{CgTooLow, MassDigit, ParamError, ParamReason, DYNAMIC_INDEX};
+use crate::error::{
+    CgTooLow, MassDigit, ParamError, ParamReason, VehicleLimit, DYNAMIC_INDEX, MAX_STEERING_RATIO,
+    MIN_STEERING_RATIO,
+};
 use serde::{Deserialize, Serialize};
 
 /// Vehicle parameters. Unknown keys are refused, so a misspelt key is an error.
@@ -313,6 +316,11 @@ impl Vehicle {
         }
         if let Some(r) = self.steering_ratio {
             ParamError::positive("steering_ratio", r)?;
+            // Not used by the model, but read: 1e9 is a slip, not a car.
+            if !(MIN_STEERING_RATIO..=MAX_STEERING_RATIO).contains(&r) {
+                let reason = ParamReason::VehicleRange(VehicleLimit::SteeringRatio);
+                return Err(ParamError::new("steering_ratio", r, reason));
+            }
         }
         Ok(())
     }

@@ -99,7 +99,7 @@ fn a_long_replay_is_refused_at_its_run_with_what_to_do() {
     let err = simulate_err(dir.path());
     let file = path.display();
     assert!(
-        err.contains(&format!("{file}:15:7: the replayed run lasts 2400 s (60001 samples): its history, a row every 0.001 s (the default row interval; this scenario sets none), would have 2400000 rows (about 0.67 GB of history.csv), beyond the 2000000 a history holds; cut the run into pieces of at most 2000 s")),
+        err.contains(&format!("{file}:15:7: the replayed run lasts 2400 s (60001 samples): its history, a row every 0.001 s (the default row interval; this scenario sets none), makes 2400001 rows (about 360 MB of history.csv), 400000 more than the 2000001 a history holds (a first row and 2000000 steps after it); cut the run into pieces of at most 2000 s")),
         "{err}"
     );
     assert!(

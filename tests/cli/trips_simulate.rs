@@ -145,7 +145,7 @@ fn a_run_of_millions_of_rows_is_refused_at_its_step_with_the_least_step_that_fit
     assert!(!dir.path().join("out").exists(), "nothing written");
     assert!(err.contains("scenario.toml:22:"), "{err}");
     assert!(
-        err.contains("the run lasts 3000 s: rows every 0.001 s ([simulation] step) make 3000000 rows (about 0.84 GB of history.csv), beyond the 2000000 a history holds; set step to at least 0.0015 s, or shorten the run"),
+        err.contains("the run lasts 3000 s: a row every 0.001 s ([simulation] step) makes 3000001 rows (about 450 MB of history.csv), 1000000 more than the 2000001 a history holds (a first row and 2000000 steps after it); set `step` under [simulation] to at least 0.0015 s, or shorten the run (the manoeuvre's `end`)"),
         "{err}"
     );
     // At that step it runs.

@@ -1,11 +1,6 @@
 //! The boxed payloads of [`super::ParamReason`]'s larger kinds and the
 //! messages built from them (kept apart so the kinds' list stays short).
 
-/// The size of a row of `history.csv` as written, bytes (14 columns of
-/// about 20 characters): the size [`super::ParamReason::TooManyRows`]
-/// quotes in its message.
-pub const HISTORY_ROW_BYTES: f64 = 280.0;
-
 /// What [`ParamReason::UncertaintyBeyondSignal`] says, boxed: the channel's
 /// RMS signal, its unit, a sensor's floor and ten times an estimated
 /// output's uncertainty (the channel's unit).

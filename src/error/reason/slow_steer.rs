@@ -97,12 +97,12 @@ impl fmt::Display for SlowSteer {
         let share = self.reached / amplitude;
         let why = if self.reached < self.min {
             let (reached, min) = compared(self.reached, self.min);
-            format!("{reached}, {}, less than the {min} a manoeuvre must steer, so the car would run straight, with no response to show", of_amplitude(share, self.amplitude))
+            format!("{reached}, {}, less than the {min} a manoeuvre must steer, so the car would run straight, with no response to show", of_amplitude(significant(100.0 * share, 2), self.amplitude))
         } else {
             format!(
                 "{}, {}, less than the {} % a {} must reach to be one: the steer is a slow ramp, not the waveform asked for",
                 angle(self.reached),
-                of_amplitude(share, self.amplitude),
+                of_amplitude(below(share, self.min_share), self.amplitude),
                 rounded(100.0 * self.min_share, 3),
                 match self.waveform {
                     Waveform::Sine => "sine",
@@ -124,13 +124,25 @@ impl fmt::Display for SlowSteer {
     }
 }
 
-/// "6.3 % of its `amplitude` = 0.1 rad (5.73°)": a share with the
-/// amplitude as the file writes it (its key's value, not re-rounded).
-fn of_amplitude(share: f64, amplitude: f64) -> String {
+/// "6.3 % of its `amplitude` = 0.1 rad (5.73°)": a share (in percent,
+/// as written) with the amplitude as the file writes it (its key's value,
+/// not re-rounded).
+fn of_amplitude(share: String, amplitude: f64) -> String {
     format!(
-        "{} % of its `amplitude` = {} rad ({}°)",
-        significant(100.0 * share, 2),
+        "{share} % of its `amplitude` = {} rad ({}°)",
         Num(amplitude),
         fixed(amplitude.to_degrees(), 2)
     )
+}
+
+/// `share`, below `limit` (shares of one), in percent with the digits
+/// that show it below: 0.09999 of an amplitude was said as "10.0 %, less
+/// than the 10 %"; now "9.999 %".
+fn below(share: f64, limit: f64) -> String {
+    let digits = (2..=8).find(|&d| {
+        significant(100.0 * share, d)
+            .parse::<f64>()
+            .is_ok_and(|s| s < 100.0 * limit)
+    });
+    significant(100.0 * share, digits.unwrap_or(8))
 }

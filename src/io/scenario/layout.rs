@@ -16,7 +16,7 @@ use std::path::Path;
 
 /// `diagnose`'s effects of the measurement, not of the car (named from
 /// the effect library, so a renamed effect cannot leave this list behind).
-const MEASUREMENT: [EffectKind; 5] = [
+pub(crate) const MEASUREMENT: [EffectKind; 5] = [
     EffectKind::SensorDelay,
     EffectKind::SensorBias,
     EffectKind::AccelerometerRoll,

@@ -5,7 +5,7 @@
 //! key the scenario does not have. Units: N, rad.
 
 use crate::error::{InputError, NoLateralForce, ParamError};
-use crate::io::tables::{static_wheel_loads, TyreRefs};
+use crate::io::tables::{check_road, static_wheel_loads, Road, TyreRefs};
 use crate::io::toml_file::{param_error, TomlSource};
 use crate::tyre::{SlipState, Tyre, TyreModel};
 use crate::vehicle::VehicleModel;
@@ -21,6 +21,17 @@ const POINTS: usize = 30;
 /// as none: a tyre on ice makes 0.05–0.1 of its load. (A `.tir` with
 /// `PDY1 = 0` keeps ±0.8 % of its load from `PDY2` off its nominal load.)
 const NO_FORCE: f64 = 0.02;
+
+/// Checks `[road]`: a friction at or below zero (a road with no grip) is
+/// said as not positive, not as beyond the range's top ("a speed or a
+/// percentage?", which fits 150, not 0), as `equilibria`'s sweep says it.
+pub(crate) fn road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
+    if road.friction <= 0.0 {
+        let e = ParamError::positive("friction", road.friction).unwrap_err();
+        return Err(param_error(src, Some("road"), e));
+    }
+    check_road(src, road)
+}
 
 /// Refuses the first axle whose tyres make no lateral force at its static
 /// wheel load, at `tyres.front` (or `tyres.rear` where the rear names its

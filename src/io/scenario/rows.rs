@@ -6,7 +6,7 @@
 
 use super::SimulationSettings;
 use crate::error::{
-    InputError, InputProblem, LongReplay, ParamError, ParamReason, ScenarioProblem,
+    InputError, InputProblem, LongReplay, ParamError, ParamReason, ScenarioProblem, TooManyRows,
 };
 use crate::io::toml_file::{line_col, param_error, TomlSource};
 use crate::manoeuvre::Manoeuvre;
@@ -53,11 +53,12 @@ pub(super) fn check(
         let problem = InputProblem::Scenario(Box::new(ScenarioProblem::LongReplay(long)));
         return Err(InputError::problem_at(&src.path, line, column, problem));
     }
-    let reason = ParamReason::TooManyRows {
+    let reason = ParamReason::TooManyRows(Box::new(TooManyRows {
         step: s.step,
         duration,
         max_rows: MAX_ROWS,
-    };
+        table,
+    }));
     let e = ParamError::new("step", s.step, reason);
     Err(param_error(src, Some(table), e))
 }

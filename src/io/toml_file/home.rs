@@ -5,6 +5,7 @@
 //! the file again with a key no table has put in it: serde refuses that
 //! key with the table's list.
 
+pub(super) mod anywhere;
 mod foreign;
 
 use toml_edit::{DocumentMut, TableLike};
@@ -133,9 +134,11 @@ fn edited(
         t = t.get_mut(p)?.as_table_like_mut()?;
     }
     t.remove(key)?;
+    // A table the file does not write (`[model]` of a scenario without
+    // one) is made, so that the tables under it can be asked too.
     let mut t: &mut dyn TableLike = doc.as_table_mut();
     for p in parent {
-        t = t.get_mut(p)?.as_table_like_mut()?;
+        t = table_in(t, p)?;
     }
     edit(t)?;
     Some(doc.to_string())

@@ -421,6 +421,7 @@ mod trips_s82_idf;
 mod trips_s82_met;
 mod trips_s82_sim;
 mod trips_s82_study;
+mod trips_s83_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

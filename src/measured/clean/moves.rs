@@ -1,7 +1,8 @@
 //! How a channel moves over a stretch of samples: the statistics a logger
 //! hold (a stuck value) is judged against in `glitches.rs` — its zero
 //! differences, mean first and second differences — and the chance of
-//! such a hold. Units: the channel's own.
+//! such a hold — and whether the channel moves there by more than its
+//! resolution ([`beyond_resolution`]). Units: the channel's own.
 
 /// How a channel moves over a stretch of samples, the statistics a hold
 /// is judged against: zero differences, differences, Σ|Δx|, Σ|Δ²x| and
@@ -69,4 +70,33 @@ impl Moves {
         let p0 = self.zeros as f64 / self.count.max(1) as f64;
         (n as f64) * p0.powi(len as i32 - 1)
     }
+}
+
+/// Share of the differences beside a hold that must exceed the channel's
+/// resolution step for the hold to be a stuck sensor's.
+const BEYOND_RESOLUTION_SHARE: f64 = 0.5;
+
+/// Whether `x` moves over samples `from..to` (glitched ones skipped) by
+/// more than its resolution on at least [`BEYOND_RESOLUTION_SHARE`] of
+/// the differences: by more than 1.5 times the smallest non-zero
+/// difference there (the step of its last written digit or of its
+/// quantisation). A channel with noise or motion of several steps does;
+/// a settled noise-free response creeping by its last digit (a
+/// simulation written to 9 significant digits) or a quantised channel
+/// dithering by one count does not, and holds values by nature.
+pub(super) fn beyond_resolution(x: &[f64], flagged: &[bool], from: usize, to: usize) -> bool {
+    let d: Vec<f64> = (from + 1..to)
+        .filter(|&k| !flagged[k] && !flagged[k - 1])
+        .map(|k| (x[k] - x[k - 1]).abs())
+        .collect();
+    let step = d
+        .iter()
+        .copied()
+        .filter(|v| *v > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if !step.is_finite() {
+        return false;
+    }
+    let beyond = d.iter().filter(|&&v| v > 1.5 * step).count();
+    beyond as f64 >= BEYOND_RESOLUTION_SHARE * d.len() as f64
 }

@@ -82,8 +82,10 @@ pub enum InputError {
     MissingColumn {
         /// The file.
         path: PathBuf,
-        /// 1-based line of the header.
-        line: usize,
+        /// 1-based line of the header (u32: with [`Self::MissingColumn`]'s
+        /// `header_below` it fits where one usize did, and the error stays
+        /// small).
+        line: u32,
         /// The column.
         name: String,
         /// The header's columns.
@@ -93,7 +95,7 @@ pub enum InputError {
         meant: Option<(usize, String)>,
         /// A 1-based line further down that names the column: the header
         /// under lines of metadata (a MoTeC export's).
-        header_below: Option<usize>,
+        header_below: Option<std::num::NonZeroU32>,
     },
     /// A CSV row that the CSV reader cannot read.
     #[error("{path}:{line}:1: malformed CSV row: {detail}")]
@@ -334,7 +336,7 @@ impl InputError {
     pub fn location(&self) -> Option<Location> {
         match self {
             InputError::MissingColumn { line, meant, .. } => Some(Location {
-                line: *line,
+                line: *line as usize,
                 column: meant.as_ref().map_or(1, |m| m.0),
             }),
             InputError::MalformedRow { line, .. } => Some(Location {
@@ -421,7 +423,7 @@ fn separator_hint(header: &[String]) -> String {
 }
 
 /// The hint of a header further down, under lines of metadata.
-fn below_hint(line: Option<usize>) -> String {
+fn below_hint(line: Option<std::num::NonZeroU32>) -> String {
     line.map_or(String::new(), |l| {
         format!("; line {l} names it: the header is further down, under lines of metadata (a logger's export, as MoTeC's): start each line above it with `#` (a comment line, skipped) or delete them")
     })

@@ -417,7 +417,11 @@ fn read_header(
 /// The first line after `header_line` (1-based, among the next 100) whose
 /// comma-separated cells name the column `name` (unquoted, any case; `t`
 /// also as `time`): a header under lines of metadata.
-fn header_further_down(bytes: &[u8], header_line: usize, name: &str) -> Option<usize> {
+fn header_further_down(
+    bytes: &[u8],
+    header_line: usize,
+    name: &str,
+) -> Option<std::num::NonZeroU32> {
     let text = String::from_utf8_lossy(bytes);
     text.lines()
         .enumerate()
@@ -429,7 +433,7 @@ fn header_further_down(bytes: &[u8], header_line: usize, name: &str) -> Option<u
                 c.eq_ignore_ascii_case(name) || (name == "t" && c.eq_ignore_ascii_case("time"))
             })
         })
-        .map(|(i, _)| i + 1)
+        .and_then(|(i, _)| std::num::NonZeroU32::new(u32::try_from(i + 1).ok()?))
 }
 
 /// The wanted columns a header has: each one's 0-based position and name.
@@ -466,7 +470,7 @@ fn match_header(
             }
             None if required.contains(name) => missing.push(InputError::MissingColumn {
                 path: path.to_path_buf(),
-                line: header_line,
+                line: u32::try_from(header_line).unwrap_or(u32::MAX),
                 name: name.to_string(),
                 header: headers.iter().map(str::to_string).collect(),
                 meant: meant(name, headers, required, optional),

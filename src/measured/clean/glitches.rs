@@ -402,3 +402,57 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
 #[cfg(test)]
 #[path = "glitches_tests.rs"]
 mod tests;
+
+/// A test on a synthetic run (kept here: the layer check reads a test
+/// file of its own as the module's imports).
+#[cfg(test)]
+mod sweep_tests {
+    use super::super::report::RunChannel;
+    use super::super::test_signals::no_slow;
+    use super::super::{clean_runs, CleanSettings};
+    use super::*;
+
+    #[test]
+    fn a_zero_read_of_a_sweep_is_found_below_the_spike_threshold() {
+        // A frequency sweep's yaw rate moves a lot between samples, so the
+        // spike threshold (10 robust spreads of the differences) exceeds
+        // many of its values; an exact 0 amid unquantised samples of one
+        // sign is still a zero read.
+        use crate::proving_ground::{generate, Noise, SynthSpec};
+        let s = generate(&SynthSpec {
+            effects: Vec::new(),
+            seed: 3,
+            noise: Noise::default(),
+            programme: Default::default(),
+        });
+        let mut run = s
+            .runs
+            .iter()
+            .find(|r| r.path.to_string_lossy().contains("sweep"))
+            .expect("a sweep run")
+            .clone();
+        let sc = scale(&run.yaw_rate, &no_slow(run.t.len()));
+        // A sample well away from 0 but inside the spike threshold, with
+        // neighbours of its sign.
+        let i = (2..run.t.len() - 2)
+            .find(|&i| {
+                let v = run.yaw_rate[i];
+                v.abs() > 0.5 * sc.threshold
+                    && v.abs() < sc.threshold
+                    && (i - 2..=i + 2).all(|k| {
+                        run.yaw_rate[k].signum() == v.signum()
+                            && run.yaw_rate[k].abs() > 0.5 * sc.threshold
+                    })
+            })
+            .expect("a sample inside the spike threshold");
+        run.yaw_rate[i] = 0.0;
+        let (_, rep) = clean_runs(vec![run.clone()], &CleanSettings::default());
+        assert!(
+            rep.glitches.iter().any(|g| g.kind == GlitchKind::ZeroRead
+                && g.channel == RunChannel::YawRate
+                && g.t == run.t[i]),
+            "{:?}",
+            rep.glitches
+        );
+    }
+}

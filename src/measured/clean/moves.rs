@@ -78,9 +78,9 @@ const BEYOND_RESOLUTION_SHARE: f64 = 0.5;
 
 /// Whether `x` moves over samples `from..to` (glitched ones skipped) by
 /// more than its resolution on at least [`BEYOND_RESOLUTION_SHARE`] of
-/// the differences: by more than 1.5 times the smallest non-zero
+/// the differences — by more than 1.5 times the smallest non-zero
 /// difference there (the step of its last written digit or of its
-/// quantisation). A channel with noise or motion of several steps does;
+/// quantisation) — or holds on fewer than [`HOLDING_SHARE`] of them. A channel with noise or motion of several steps does;
 /// a settled noise-free response creeping by its last digit (a
 /// simulation written to 9 significant digits) or a quantised channel
 /// dithering by one count does not, and holds values by nature.
@@ -97,6 +97,17 @@ pub(super) fn beyond_resolution(x: &[f64], flagged: &[bool], from: usize, to: us
     if !step.is_finite() {
         return false;
     }
-    let beyond = d.iter().filter(|&&v| v > 1.5 * step).count();
-    beyond as f64 >= BEYOND_RESOLUTION_SHARE * d.len() as f64
+    // At its resolution: holding or moving by about one step, and holding
+    // on a tenth of the samples at least (a channel moving steadily, a
+    // sweep's, changes on every sample by alike amounts, all near the
+    // smallest, and is no settled one).
+    let zeros = d.iter().filter(|&&v| v == 0.0).count();
+    let within = d.iter().filter(|&&v| v <= 1.5 * step).count();
+    let at_resolution = zeros as f64 >= HOLDING_SHARE * d.len() as f64
+        && within as f64 > (1.0 - BEYOND_RESOLUTION_SHARE) * d.len() as f64;
+    !at_resolution
 }
+
+/// Least share of zero differences beside a hold for the channel to be
+/// at its resolution there.
+const HOLDING_SHARE: f64 = 0.1;

@@ -5,7 +5,7 @@
 use thiserror::Error;
 
 /// The first appearance of a name given twice.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
 pub enum DuplicateAt {
     /// A 1-based column of the header.
     #[error("column {0}")]
@@ -13,4 +13,13 @@ pub enum DuplicateAt {
     /// A 1-based line of the file.
     #[error("line {0}")]
     Line(usize),
+    /// A 1-based line of the file, in another section: a reader takes the
+    /// key from one section only, and the other's value is lost.
+    #[error("line {line}, in section [{section}]: a parameter belongs to one section")]
+    LineInSection {
+        /// The line.
+        line: usize,
+        /// Its section.
+        section: String,
+    },
 }

@@ -78,12 +78,14 @@ pub enum InputError {
         problem: Box<InputProblem>,
     },
     /// A CSV file without a column the reader needs.
-    #[error("{path}:{line}:{}: missing required column `{name}` (the header has: {}){}{}", meant.as_ref().map_or(1, |m| m.0), header.join(", "), meant.as_ref().map_or(String::new(), |(c, m)| format!("; header column {c}, `{m}`: did you mean `{name}`?")), separator_hint(header))]
+    #[error("{path}:{line}:{}: missing required column `{name}` (the header has: {}){}{}{}", meant.as_ref().map_or(1, |m| m.0), header.join(", "), meant.as_ref().map_or(String::new(), |(c, m)| format!("; header column {c}, `{m}`: did you mean `{name}`?")), separator_hint(header), below_hint(*header_below))]
     MissingColumn {
         /// The file.
         path: PathBuf,
-        /// 1-based line of the header.
-        line: usize,
+        /// 1-based line of the header (u32: with [`Self::MissingColumn`]'s
+        /// `header_below` it fits where one usize did, and the error stays
+        /// small).
+        line: u32,
         /// The column.
         name: String,
         /// The header's columns.
@@ -91,6 +93,9 @@ pub enum InputError {
         /// The header column that likely means it (`yawrate`, `time`),
         /// with its 1-based position.
         meant: Option<(usize, String)>,
+        /// A 1-based line further down that names the column: the header
+        /// under lines of metadata (a MoTeC export's).
+        header_below: Option<std::num::NonZeroU32>,
     },
     /// A CSV row that the CSV reader cannot read.
     #[error("{path}:{line}:1: malformed CSV row: {detail}")]
@@ -331,7 +336,7 @@ impl InputError {
     pub fn location(&self) -> Option<Location> {
         match self {
             InputError::MissingColumn { line, meant, .. } => Some(Location {
-                line: *line,
+                line: *line as usize,
                 column: meant.as_ref().map_or(1, |m| m.0),
             }),
             InputError::MalformedRow { line, .. } => Some(Location {
@@ -414,5 +419,12 @@ pub(crate) fn one_column_separator(header: &[String]) -> Option<&'static str> {
 fn separator_hint(header: &[String]) -> String {
     one_column_separator(header).map_or(String::new(), |name| {
         format!("; the header is one column separated by {name}: the file must be comma-separated with a decimal point (export it as CSV with `,` between values and `.` in numbers)")
+    })
+}
+
+/// The hint of a header further down, under lines of metadata.
+fn below_hint(line: Option<std::num::NonZeroU32>) -> String {
+    line.map_or(String::new(), |l| {
+        format!("; line {l} names it: the header is further down, under lines of metadata (a logger's export, as MoTeC's): start each line above it with `#` (a comment line, skipped) or delete them")
     })
 }

@@ -340,7 +340,15 @@ fn read_layout(
         header_line: headers.position().map_or(0, |p| line_of(&bytes, p)).max(1),
         ..Columns::default()
     };
-    let (wanted, missing) = match_header(path, &headers, out.header_line, &layout)?;
+    let (wanted, mut missing) = match_header(path, &headers, out.header_line, &layout)?;
+    for e in &mut missing {
+        if let InputError::MissingColumn {
+            name, header_below, ..
+        } = e
+        {
+            *header_below = header_further_down(&bytes, out.header_line, name);
+        }
+    }
     let (mut bad, slipped) = header_refusals(path, &out, missing, &layout, refuse_slips)?;
     for (i, name) in &wanted {
         out.data.insert(name.clone(), Vec::new());
@@ -406,6 +414,28 @@ fn read_header(
         })
 }
 
+/// The first line after `header_line` (1-based, among the next 100) whose
+/// comma-separated cells name the column `name` (unquoted, any case; `t`
+/// also as `time`): a header under lines of metadata.
+fn header_further_down(
+    bytes: &[u8],
+    header_line: usize,
+    name: &str,
+) -> Option<std::num::NonZeroU32> {
+    let text = String::from_utf8_lossy(bytes);
+    text.lines()
+        .enumerate()
+        .skip(header_line)
+        .take(100)
+        .find(|(_, l)| {
+            l.split(',').any(|c| {
+                let c = c.trim().trim_matches('"');
+                c.eq_ignore_ascii_case(name) || (name == "t" && c.eq_ignore_ascii_case("time"))
+            })
+        })
+        .and_then(|(i, _)| std::num::NonZeroU32::new(u32::try_from(i + 1).ok()?))
+}
+
 /// The wanted columns a header has: each one's 0-based position and name.
 type Wanted = Vec<(usize, String)>;
 
@@ -440,10 +470,11 @@ fn match_header(
             }
             None if required.contains(name) => missing.push(InputError::MissingColumn {
                 path: path.to_path_buf(),
-                line: header_line,
+                line: u32::try_from(header_line).unwrap_or(u32::MAX),
                 name: name.to_string(),
                 header: headers.iter().map(str::to_string).collect(),
                 meant: meant(name, headers, required, optional),
+                header_below: None,
             }),
             None => {}
         }

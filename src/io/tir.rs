@@ -74,6 +74,7 @@ impl TirDocument {
         let mut section = String::new();
         let mut lines = Vec::new();
         let mut seen = std::collections::HashMap::new();
+        let mut elsewhere = std::collections::HashMap::new();
         for (i, raw) in text.lines().enumerate() {
             let trimmed = raw.trim_start();
             let entry = if trimmed.is_empty()
@@ -110,6 +111,34 @@ impl TirDocument {
                             name: e.key,
                             first: DuplicateAt::Line(*first),
                         },
+                    ));
+                }
+                // The same key with another value in another section: a
+                // reader takes it from one of them and the other's value
+                // is lost. [UNITS] names units (its MASS = 'kg' is no
+                // mass), so its keys are not parameters.
+                if e.section != "UNITS" {
+                    if let Some((first, sec, _)) = elsewhere
+                        .get(&e.key)
+                        .filter(|(_, s, v): &&(usize, String, _)| *s != e.section && *v != e.value)
+                    {
+                        return Err(InputError::problem_at(
+                            path,
+                            i + 1,
+                            raw.len() - trimmed.len() + 1,
+                            InputProblem::Duplicate {
+                                name: e.key,
+                                first: DuplicateAt::LineInSection {
+                                    line: *first,
+                                    section: sec.clone(),
+                                },
+                            },
+                        ));
+                    }
+                    elsewhere.entry(e.key.clone()).or_insert((
+                        i + 1,
+                        e.section.clone(),
+                        e.value.clone(),
                     ));
                 }
                 seen.insert(key, (i + 1, e.value.clone()));

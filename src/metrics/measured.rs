@@ -558,6 +558,7 @@ pub fn measured_step_metrics(
     warnings.extend(metrics.settling_warning());
     warnings.extend(metrics.settling.not_judged_warnings());
     warnings.extend(filled_steady(&piece, settings.steady_window));
+    warnings.extend(super::beta_sign::against_kinematics(&piece));
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());
     }

@@ -55,10 +55,13 @@ pub(crate) mod continuous;
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
 pub const MIN_FILTER_HZ: f64 = 1.0;
+mod beta_sign;
 pub mod measured;
+mod noise;
 mod peak;
 mod pulse;
 mod settling;
+use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
 
@@ -332,30 +335,6 @@ struct Normalised {
     noise: f64,
     /// Samples in the shorter of the initial and steady windows.
     samples: usize,
-}
-
-/// White-noise deviation of `x`, from the median absolute difference of
-/// neighbours (insensitive to the step and to slow trends).
-fn noise_deviation(x: &[f64]) -> f64 {
-    let mut d: Vec<f64> = x.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
-    if d.len() < 5 {
-        return 0.0;
-    }
-    d.sort_by(f64::total_cmp);
-    d[d.len() / 2] / (0.6745 * std::f64::consts::SQRT_2)
-}
-
-/// √Σh² of the zero-phase low-pass: the deviation of white noise after it
-/// relative to before.
-fn noise_gain(dt: f64, cutoff_hz: f64) -> f64 {
-    let n = (20.0 / (cutoff_hz * dt)).ceil() as usize + 1;
-    let mut x = vec![0.0; 2 * n + 1];
-    x[n] = 1.0;
-    zero_phase_low_pass(&x, dt, cutoff_hz)
-        .iter()
-        .map(|h| h * h)
-        .sum::<f64>()
-        .sqrt()
 }
 
 fn normalise(

@@ -2,9 +2,17 @@
 //! that leaves straight running and comes back between the metrics'
 //! windows is a pulse (a step and its return within half a second), named
 //! with its size, start and duration. "The steer stays at 0 rad" was true
-//! of its windows and said nothing of the pulse between them. Rad, s.
+//! of its windows and said nothing of the pulse between them. A departure
+//! within [`PULSE_NOISES`] deviations of the steer's noise is the noise's,
+//! no pulse: a record whose wheels are turned from its start, with a noisy
+//! steer, is said so, not as a pulse of its noise. Rad, s.
 
-use super::{window_mean, MetricSettings, MetricsError, MIN_STEP};
+use super::{noise_deviation, window_mean, MetricSettings, MetricsError, MIN_STEP};
+
+/// Deviations of the raw steer's noise a departure must pass to be a
+/// pulse: the largest of a few thousand samples of white noise lies
+/// about 3.5 deviations out.
+const PULSE_NOISES: f64 = 5.0;
 
 /// A steer pulse: where it stands beyond half its largest departure from
 /// the initial steer. S.
@@ -30,11 +38,11 @@ pub(super) fn no_step(t: &[f64], raw: &[f64], steer: &[f64], s: &MetricSettings)
     let initial = window_mean(t, steer, t[0], t[0] + s.pre_window).0;
     let steady_from = t[n - 1] - s.steady_window;
     let steady = window_mean(t, steer, steady_from, t[n - 1]).0;
+    let least = MIN_STEP.max(PULSE_NOISES * noise_deviation(raw));
     match pulse(
         t,
         steer,
-        initial,
-        steady,
+        (initial, steady, least),
         (t[0] + s.pre_window, steady_from),
     ) {
         Some(p) => MetricsError::SteerPulse {
@@ -58,14 +66,14 @@ pub(super) fn no_step(t: &[f64], raw: &[f64], steer: &[f64], s: &MetricSettings)
 }
 
 /// The pulse between the windows `(from, to)`: the largest departure of
-/// the steer from `initial` there, where it is a step's worth
-/// ([`MIN_STEP`]) and the steady steer is back within half of it (a
-/// change the size of the departure is a step, said otherwise).
+/// the steer from `initial` there, where it is at least `least` (a step's
+/// worth, [`MIN_STEP`], and beyond the noise) and the `steady` steer is
+/// back within half of it (a change the size of the departure is a step,
+/// said otherwise).
 fn pulse(
     t: &[f64],
     steer: &[f64],
-    initial: f64,
-    steady: f64,
+    (initial, steady, least): (f64, f64, f64),
     (from, to): (f64, f64),
 ) -> Option<Pulse> {
     let inside: Vec<usize> = (0..t.len()).filter(|&i| t[i] > from && t[i] < to).collect();
@@ -75,7 +83,7 @@ fn pulse(
             .total_cmp(&(steer[b] - initial).abs())
     })?;
     let size = steer[peak] - initial;
-    if !size.is_finite() || size.abs() < MIN_STEP || (steady - initial).abs() > 0.5 * size.abs() {
+    if !size.is_finite() || size.abs() < least || (steady - initial).abs() > 0.5 * size.abs() {
         return None;
     }
     // Beyond half its size: the samples on either side of the peak that

@@ -425,6 +425,7 @@ mod trips_s82_sim;
 mod trips_s82_study;
 mod trips_s83_diag;
 mod trips_s83_lead;
+mod trips_s83_met;
 mod trips_s83_sim;
 mod trips_simulate;
 mod trips_units;

@@ -121,12 +121,17 @@ fn units_row(
         && cells
             .iter()
             .all(|c| !c.is_empty() && c.parse::<f64>().is_err());
+    // Quoted as the file has it, in its own column order (the wanted
+    // columns are in the tool's).
+    let mut own: Vec<(usize, &str)> = wanted.iter().map(|(i, _)| *i).zip(cells).collect();
+    own.sort_by_key(|(i, _)| *i);
+    let quoted: Vec<&str> = own.iter().map(|(_, c)| *c).collect();
     words.then(|| InputError::Cell {
         path: path.to_path_buf(),
         line,
         column: wanted[0].0 + 1,
         name: wanted[0].1.clone(),
-        cell: cells.join(", "),
+        cell: quoted.join(", "),
         problem: CellProblem::UnitsRow,
     })
 }

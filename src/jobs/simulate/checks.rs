@@ -362,7 +362,7 @@ impl RangeSource {
             ),
             RangeSource::Tir { held: true, .. } => (
                 "their .tir's validity ranges",
-                "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated at the ranges' ends (MFeval's limit checks: the force stays that of the range's end, however far beyond)",
+                "its *_RANGE sections; each wheel at zero slip ratio and camber, as the 2-DOF model evaluates it), evaluated at the ranges' ends, a load below FZMIN excepted (MFeval's limit checks: the force stays that of the range's end, however far beyond; a load below FZMIN is not raised to it, its force is evaluated at the load given)",
             ),
             RangeSource::Tir { held: false, .. } => (
                 "their .tir's validity ranges",

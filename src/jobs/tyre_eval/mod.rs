@@ -18,7 +18,7 @@
 //! A point no tyre is evaluated at is refused, by file, line, column and
 //! value, before anything is evaluated ([`PHYSICAL`]): a load beyond
 //! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
-//! road speed), a slip or camber angle beyond ±90° (said as degrees where
+//! road speed), a slip angle beyond ±90° or a camber beyond ±45° (said as degrees where
 //! it reads as an angle in degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
 //! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
 //! forwards, so the speed is its size (a Magic Formula's own sign of the

@@ -1,14 +1,15 @@
 //! The range each input of `tyre-eval` must lie in ([`PHYSICAL`]): a
 //! value outside it is no tyre's state (a load beyond ±1 MN, a slip ratio
-//! beyond ±10, an angle beyond ±90°, said as degrees where it reads as an
-//! angle in degrees, a speed beyond 300 m/s or below 0, a pressure above
+//! beyond ±10, a slip angle beyond ±90° or a camber beyond ±45° (as
+//! `identify` refuses a rig's: 1.2 meant as degrees reads as 69°), said as
+//! degrees where it reads as an angle in degrees, a speed beyond 300 m/s or below 0, a pressure above
 //! 5 MPa), and is refused at its cell before anything is evaluated; and a
 //! file whose every load is negative, each load at its cell, as `identify`
 //! refuses a rig file's (a point at zero or negative load among positive
 //! ones is a wheel off the road, evaluated with no force).
 
 use crate::error::InputProblem;
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
 /// The range each input column of `tyre-eval` must lie in: (column, low
 /// end, high end, unit, what the ends are). Ends included.
@@ -30,10 +31,10 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
     (
         "camber",
-        -FRAC_PI_2,
-        FRAC_PI_2,
+        -FRAC_PI_4,
+        FRAC_PI_4,
         "rad",
-        "±90°: a wheel on its side",
+        "±45°: beyond any road wheel's camber, as `identify` refuses a rig's",
     ),
     (
         "speed",

@@ -24,7 +24,20 @@
 //!   - stuck value: a value held exactly for at least [`MIN_STUCK`] samples
 //!     where the chance of such a hold, `n·p0^(L−1)` with p0 the channel's
 //!     share of zero differences, is below 1e-3 (a quantised or noise-free
-//!     channel holds values by nature and is never called stuck).
+//!     channel holds values by nature and is never called stuck), and
+//!     only where the channel beside the hold moves by more than its
+//!     resolution (1.5 times its smallest non-zero difference there) on at
+//!     least half its samples. What separates a stuck logger from a
+//!     settled response is the noise: a logger that stops updating cuts a
+//!     channel that was moving by several steps of its resolution on every
+//!     sample; a settled noise-free response (a simulation written to 9
+//!     significant digits) creeps to its value by its last digit, and a
+//!     quantised channel whose noise is below its step dithers by one
+//!     count, and both then hold for as long as the response stays within
+//!     a step — no stuck sensor;
+//!   - the noise of a quantised channel (more than 1 % of its successive
+//!     samples equal) is at least its step/√12, so `σ_d` is at least
+//!     step/√6: a sample one count from its neighbours is no spike.
 //! - Inputs that drive the replay (steer, speed) are repaired by linear
 //!   interpolation in time across the glitch, so the replay is not kicked;
 //!   in response channels (yaw rate, ay, beta) the sample is masked: left out

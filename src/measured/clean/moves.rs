@@ -1,7 +1,8 @@
 //! How a channel moves over a stretch of samples: the statistics a logger
 //! hold (a stuck value) is judged against in `glitches.rs` — its zero
 //! differences, mean first and second differences — and the chance of
-//! such a hold. Units: the channel's own.
+//! such a hold — and whether the channel moves there by more than its
+//! resolution ([`beyond_resolution`]). Units: the channel's own.
 
 /// How a channel moves over a stretch of samples, the statistics a hold
 /// is judged against: zero differences, differences, Σ|Δx|, Σ|Δ²x| and
@@ -70,3 +71,43 @@ impl Moves {
         (n as f64) * p0.powi(len as i32 - 1)
     }
 }
+
+/// Share of the differences beside a hold that must exceed the channel's
+/// resolution step for the hold to be a stuck sensor's.
+const BEYOND_RESOLUTION_SHARE: f64 = 0.5;
+
+/// Whether `x` moves over samples `from..to` (glitched ones skipped) by
+/// more than its resolution on at least [`BEYOND_RESOLUTION_SHARE`] of
+/// the differences — by more than 1.5 times the smallest non-zero
+/// difference there (the step of its last written digit or of its
+/// quantisation) — or holds on fewer than [`HOLDING_SHARE`] of them. A channel with noise or motion of several steps does;
+/// a settled noise-free response creeping by its last digit (a
+/// simulation written to 9 significant digits) or a quantised channel
+/// dithering by one count does not, and holds values by nature.
+pub(super) fn beyond_resolution(x: &[f64], flagged: &[bool], from: usize, to: usize) -> bool {
+    let d: Vec<f64> = (from + 1..to)
+        .filter(|&k| !flagged[k] && !flagged[k - 1])
+        .map(|k| (x[k] - x[k - 1]).abs())
+        .collect();
+    let step = d
+        .iter()
+        .copied()
+        .filter(|v| *v > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if !step.is_finite() {
+        return false;
+    }
+    // At its resolution: holding or moving by about one step, and holding
+    // on a tenth of the samples at least (a channel moving steadily, a
+    // sweep's, changes on every sample by alike amounts, all near the
+    // smallest, and is no settled one).
+    let zeros = d.iter().filter(|&&v| v == 0.0).count();
+    let within = d.iter().filter(|&&v| v <= 1.5 * step).count();
+    let at_resolution = zeros as f64 >= HOLDING_SHARE * d.len() as f64
+        && within as f64 > (1.0 - BEYOND_RESOLUTION_SHARE) * d.len() as f64;
+    !at_resolution
+}
+
+/// Least share of zero differences beside a hold for the channel to be
+/// at its resolution there.
+const HOLDING_SHARE: f64 = 0.1;

@@ -1,0 +1,84 @@
+//! A sideslip logged in the other sign convention, found from the run's
+//! own lateral channels. On a flat road a body-fixed accelerometer reads
+//! `a_y = u·(β̇ + r)` (ISO 8855, small β, steady speed), so the sideslip's
+//! rate is `β̇ = a_y/u − r`: a measured β whose rate moves against it —
+//! their correlation over the run below [`AGAINST`] — turns the other way
+//! from the car, and its steady sideslip reads with the wrong sign (at
+//! speed a left turn's β is negative). As the diagnosis refuses a sideslip
+//! that moves against its base model's (a sensor's noise and a wrong size
+//! weaken a correlation towards 0, never reverse it), the metrics say so.
+//! Both rates are smoothed over [`HALF_WIDTH`] each side (β̇ by the
+//! difference across the window, `a_y/u − r` by its mean there), masked
+//! samples and crawls left out. Units: SI, rad.
+
+use crate::measured::MeasuredRun;
+
+/// Below this correlation of β̇ with `a_y/u − r` the sideslip is taken as
+/// logged in the other sign convention (the diagnosis's threshold for a
+/// β against its base model's).
+pub(crate) const AGAINST: f64 = -0.5;
+
+/// Half the window the rates are smoothed over, s.
+const HALF_WIDTH: f64 = 0.05;
+
+/// Least swing of `a_y/u − r` from its mean, rad/s, for the correlation
+/// to say anything: a straight run's is noise about the sensors' offsets
+/// (0.05 m/s² of `a_y` noise at 22 m/s, smoothed, about 0.0002 rad/s); a
+/// 1° step at 80 km/h swings it by 0.019 rad/s.
+const SWING: f64 = 0.005;
+
+/// Slowest sample judged, m/s: `a_y/u` grows without bound at a crawl.
+const MIN_SPEED: f64 = 5.0;
+
+/// The correlation of β̇ with `a_y/u − r` over `run` (`None` without `ay`
+/// or `beta`, or without a swing of the kinematic rate).
+fn correlation(run: &MeasuredRun) -> Option<f64> {
+    let (ay, beta) = (run.ay.as_ref()?, run.beta.as_ref()?);
+    let t = &run.t;
+    let n = t.len();
+    let mut masked = vec![false; n];
+    run.masked.iter().for_each(|&i| masked[i] = true);
+    let dt = crate::measured::clean::median_interval(t);
+    let w = ((HALF_WIDTH / dt).round() as usize).max(1);
+    let usable = |i: usize| !masked[i] && run.speed[i] >= MIN_SPEED;
+    let pairs: Vec<(f64, f64)> = (w..n.saturating_sub(w))
+        .filter(|&i| (i - w..=i + w).all(usable))
+        .map(|i| {
+            let rate = (beta[i + w] - beta[i - w]) / (t[i + w] - t[i - w]);
+            let kin = (i - w..=i + w)
+                .map(|k| ay[k] / run.speed[k] - run.yaw_rate[k])
+                .sum::<f64>()
+                / (2 * w + 1) as f64;
+            (rate, kin)
+        })
+        .filter(|(a, b)| a.is_finite() && b.is_finite())
+        .collect();
+    if pairs.len() < 10 {
+        return None;
+    }
+    let m = pairs.len() as f64;
+    let (mx, my) = pairs
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / m, b + y / m));
+    let (mut xy, mut xx, mut yy) = (0.0, 0.0, 0.0);
+    for (x, y) in &pairs {
+        xy += (x - mx) * (y - my);
+        xx += (x - mx) * (x - mx);
+        yy += (y - my) * (y - my);
+    }
+    let swing = pairs
+        .iter()
+        .fold(0.0_f64, |a, (_, y)| a.max((y - my).abs()));
+    (swing >= SWING && xx > 0.0).then(|| xy / (xx * yy).sqrt())
+}
+
+/// The warning of a run whose sideslip turns against its lateral
+/// kinematics, with the correlation.
+pub(crate) fn against_kinematics(run: &MeasuredRun) -> Option<String> {
+    let k = correlation(run)?;
+    (k < AGAINST).then(|| {
+        format!(
+            "the sideslip turns against the car: its rate correlates at {k:.2} with ay/u − r (β̇ = ay/u − r on a flat road, ISO 8855; below {AGAINST} it is taken as reversed, as the diagnosis refuses a β against its model's): `beta` is logged in the other sign convention (FORMATS.md: at speed a left turn's β is negative)? Negate the column; the steady sideslip and the metrics read from β carry the wrong sign"
+        )
+    })
+}

@@ -1,4 +1,4 @@
-//! Fresh-eyes round 11 (issue 41), fixed by the lead: a diagnosis whose
+//! Fresh-eyes round 11, fixed by the lead: a diagnosis whose
 //! base tyre is fitted to rig data of another car's tyre says so.
 
 use crate::{diagnose_campaign, shared_data, synth_extended};

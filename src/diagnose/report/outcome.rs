@@ -334,84 +334,9 @@ pub struct ChannelLeft {
     pub acceptance_percent: f64,
 }
 
-/// A note on the inputs.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Note {
-    /// A note of the campaign reader (a file it left out, a steer that
-    /// looks too small), in its own words.
-    Campaign {
-        /// The note.
-        text: String,
-    },
-    /// An effect the runs cannot show, left out of the candidates.
-    NotACandidate {
-        /// The effect.
-        effect: EffectKind,
-        /// What the runs lack.
-        lacks: Unseen,
-    },
-    /// Runs with a bank channel but neither sideslip nor ay, on axles
-    /// identified from the runs: the bank shows only in the yaw rate.
-    BankOnlyInYawRate {
-        /// Such runs.
-        runs: usize,
-        /// All runs.
-        of: usize,
-    },
-    /// Runs the base model is too stiff to replay by RK4 at the step,
-    /// replayed by ROS34PW2.
-    StiffReplay {
-        /// The replay step, s.
-        step: f64,
-        /// Such runs.
-        runs: usize,
-        /// All runs.
-        of: usize,
-    },
-    /// An uncertainty stated under `[channels]` for a channel no run
-    /// measures: unused.
-    UncertaintyUnused {
-        /// The channel.
-        channel: Channel,
-    },
-    /// An uncertainty stated under `[channels]` that the channel's own
-    /// high-frequency scatter exceeds more than
-    /// [`crate::diagnose::model::scale::SCATTER_EXCESS`] times: the
-    /// channel is weighted past what its record shows.
-    UncertaintyBelowScatter {
-        /// The channel.
-        channel: Channel,
-        /// The stated uncertainty, the channel's unit.
-        stated: f64,
-        /// The scatter measured (median over runs), the channel's unit.
-        scatter: f64,
-        /// The scale the fits weigh the channel by, the channel's unit: the
-        /// stated uncertainty, or a share of its RMS signal where that is
-        /// larger ([`crate::diagnose::model::scale::SIGNAL_SHARE`]).
-        weighted: f64,
-    },
-    /// Rig data whose wheel loads do not reach the car's static wheel
-    /// loads: the base tyre fitted to them is extrapolated there.
-    RigLoadsShort {
-        /// The rig data's least and largest wheel load, N.
-        rig: [f64; 2],
-        /// The car's least and largest static wheel load, N.
-        car: [f64; 2],
-    },
-    /// Levels of the rig data pooled into one fit of a model without
-    /// terms for them: the base tyre is their blend.
-    RigLevelsPooled {
-        /// The variable whose levels are pooled.
-        variable: crate::identify::grouping::Variable,
-        /// How many levels.
-        levels: usize,
-        /// The model fitted.
-        model: crate::tyre::ModelName,
-    },
-}
-
+mod note;
 pub use crate::error::Unseen;
+pub use note::Note;
 
 /// A finding on where the base model's gap lies.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -45,7 +45,9 @@ fn simulate_counts_the_rows_beyond_a_tirs_own_ranges() {
         assert_eq!(words[0], words[2], "{line}");
         assert!(line.contains("(fz 0 to 2000 N, "), "{line}");
         assert!(
-            line.contains("evaluated at the ranges' ends (MFeval's limit checks"),
+            line.contains(
+                "evaluated at the ranges' ends, a load below FZMIN excepted (MFeval's limit checks"
+            ),
             "{line}"
         );
         assert!(line.contains("there, wheel loads "), "{line}");

@@ -141,15 +141,16 @@ fn a_pac89_a3_is_refused_by_its_magnitude_and_its_peak_with_the_load_it_peaks_at
     assert!(o.status.success(), "{}", stderr(&o));
 }
 
-/// A PAC89 camber of 1.5 rad (86°) gave fy = 2.3·fz without a word: a
-/// model with no camber range (a .tir's CAMMIN/CAMMAX) now says the points
-/// steeper than 20°, with the force the steepest gives. The same points
+/// A PAC89 camber of 1.5 rad (86°) gave fy = 2.3·fz without a word; beyond
+/// 45° it is now refused as degrees (`trips_s83_met`). A model with no
+/// camber range (a .tir's CAMMIN/CAMMAX) says the points steeper than 20°
+/// and within 45°, with the force the steepest gives. The same points
 /// within 20° say nothing.
 #[test]
 fn tyre_eval_says_a_camber_steeper_than_any_tyre_test_of_a_model_without_a_camber_range() {
     let dir = tempfile::tempdir().unwrap();
     let tyre = root().join("tyres/pac89_adams_example.toml");
-    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0.1,20\n4000,0,0.05,1.5,20\n4000,0,0.05,-0.4,20\n";
+    let points = "fz,kappa,alpha,camber,speed\n4000,0,0.05,0.1,20\n4000,0,0.05,0.7,20\n4000,0,0.05,-0.4,20\n";
     let (o, written) = super::tyre_eval::eval(dir.path(), &tyre, points, &[]);
     let e = stderr(&o);
     assert!(o.status.success() && !written.is_empty(), "{e}");
@@ -158,10 +159,10 @@ fn tyre_eval_says_a_camber_steeper_than_any_tyre_test_of_a_model_without_a_cambe
         "{e}"
     );
     assert!(
-        e.contains("the steepest, 85.9° at line 3, gives fy = 2.31·fz"),
+        e.contains("the steepest, 40.1° at line 3, gives fy = 1.57·fz"),
         "{e}"
     );
-    let gentle = points.replace(",1.5,", ",0.3,").replace(",-0.4,", ",-0.2,");
+    let gentle = points.replace(",0.7,", ",0.3,").replace(",-0.4,", ",-0.2,");
     let (o, _) = super::tyre_eval::eval(dir.path(), &tyre, &gentle, &[]);
     assert!(
         o.status.success() && !stderr(&o).contains("steeper"),

@@ -14,8 +14,11 @@
 use crate::measured::MeasuredRun;
 
 /// Below this correlation of β̇ with `a_y/u − r` the sideslip is taken as
-/// logged in the other sign convention (the diagnosis's threshold for a
-/// β against its base model's).
+/// logged in the other sign convention; the diagnosis takes a β against
+/// its base model's by the same threshold. A real sideslip sensor or
+/// estimator follows the car in sign (the shape of a step, a ramp or a
+/// turn is the car's): noise and a wrong size only weaken the
+/// correlation towards 0, never reverse it.
 pub(crate) const AGAINST: f64 = -0.5;
 
 /// Half the window the rates are smoothed over, s.

@@ -55,7 +55,7 @@ pub(crate) mod continuous;
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
 pub const MIN_FILTER_HZ: f64 = 1.0;
-mod beta_sign;
+pub(crate) mod beta_sign;
 pub mod measured;
 mod noise;
 mod peak;

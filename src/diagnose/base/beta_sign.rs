@@ -19,11 +19,9 @@ use crate::measured::MeasuredRun;
 use rayon::prelude::*;
 
 /// Below this correlation of a run's measured sideslip with the base
-/// model's, the run's `beta` is taken as negated: a real sideslip sensor
-/// or estimator follows even a poor model's β in sign (the shape of a
-/// step, a ramp or a turn is the car's), noise and a wrong size only
-/// weaken the correlation towards 0, never reverse it.
-pub(crate) const AGAINST: f64 = -0.5;
+/// model's, the run's `beta` is taken as negated: the threshold `metrics`
+/// judges a β against the run's lateral kinematics by, one rule for both.
+pub(crate) use crate::metrics::beta_sign::AGAINST;
 
 /// The replayed sideslip must swing at least this much (centred RMS, rad)
 /// over a run for its correlation to say anything: a straight run's β is

@@ -80,6 +80,7 @@ pub mod proving_ground;
 pub mod report;
 pub mod scalar;
 pub mod sim;
+pub mod stats;
 pub mod study;
 pub mod tyre;
 pub mod vehicle;

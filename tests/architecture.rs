@@ -573,7 +573,7 @@ fn without_tests(code: &str) -> String {
 /// library cannot name it. The same list, with what each layer owns, is in
 /// the book's architecture chapter (`docs/src/architecture.md`).
 const LAYERS: &[&[&str]] = &[
-    &["constants", "format", "scalar"],
+    &["constants", "format", "scalar", "stats"],
     &["error"],
     &["tyre", "optim", "manoeuvre", "report"],
     &["vehicle", "measured"],

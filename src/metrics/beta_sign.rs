@@ -12,6 +12,7 @@
 //! samples and crawls left out. Units: SI, rad.
 
 use crate::measured::MeasuredRun;
+use crate::stats::CentredSums;
 
 /// Below this correlation of β̇ with `a_y/u − r` the sideslip is taken as
 /// logged in the other sign convention; the diagnosis takes a β against
@@ -59,20 +60,14 @@ fn correlation(run: &MeasuredRun) -> Option<f64> {
     if pairs.len() < 10 {
         return None;
     }
-    let m = pairs.len() as f64;
-    let (mx, my) = pairs
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / m, b + y / m));
-    let (mut xy, mut xx, mut yy) = (0.0, 0.0, 0.0);
-    for (x, y) in &pairs {
-        xy += (x - mx) * (y - my);
-        xx += (x - mx) * (x - mx);
-        yy += (y - my) * (y - my);
+    let (rates, kinematic): (Vec<f64>, Vec<f64>) = pairs.into_iter().unzip();
+    let s = CentredSums::of(&rates, &kinematic);
+    let my = kinematic.iter().sum::<f64>() / kinematic.len() as f64;
+    let swing = kinematic.iter().fold(0.0_f64, |a, y| a.max((y - my).abs()));
+    if swing < SWING {
+        return None;
     }
-    let swing = pairs
-        .iter()
-        .fold(0.0_f64, |a, (_, y)| a.max((y - my).abs()));
-    (swing >= SWING && xx > 0.0).then(|| xy / (xx * yy).sqrt())
+    s.correlation()
 }
 
 /// The warning of a run whose sideslip turns against its lateral

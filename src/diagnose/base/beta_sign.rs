@@ -16,6 +16,7 @@ use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
 use crate::error::BetaAgainstModel;
 use crate::measured::MeasuredRun;
+use crate::stats::CentredSums;
 use rayon::prelude::*;
 
 /// Below this correlation of a run's measured sideslip with the base
@@ -31,7 +32,7 @@ const SWING: f64 = 0.003;
 /// The centred sums of run `run`'s measured β against `base`'s replayed β
 /// over its scored samples, each centred on its own mean (an offset is no
 /// sign); `None` without a `beta` channel or a swing of the replayed β.
-fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<Sums> {
+fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<CentredSums> {
     let beta = run.beta.as_ref()?;
     // The samples the gap scores: all but the masked (logger glitches).
     let mut keep = vec![true; run.t.len()];
@@ -48,36 +49,9 @@ fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<Sums> {
         .map(|&i| crate::manoeuvre::interpolate(&history.t, &history.beta, run.t[i]))
         .collect();
     let measured: Vec<f64> = idx.iter().map(|&i| beta[i]).collect();
-    let n = measured.len();
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let (ms, mm) = (mean(&sim), mean(&measured));
-    let mut s = Sums {
-        n,
-        ..Sums::default()
-    };
-    for (x, y) in sim.iter().zip(&measured) {
-        let (x, y) = (x - ms, y - mm);
-        s.xy += x * y;
-        s.xx += x * x;
-        s.yy += y * y;
-    }
-    let swing = (s.xx / n as f64).sqrt();
+    let s = CentredSums::of(&sim, &measured);
+    let swing = s.x_rms();
     (swing >= SWING && s.yy > 0.0 && swing.is_finite()).then_some(s)
-}
-
-/// Centred sums of products of the model's β (x) and the measured (y).
-#[derive(Debug, Clone, Copy, Default)]
-struct Sums {
-    n: usize,
-    xy: f64,
-    xx: f64,
-    yy: f64,
-}
-
-impl Sums {
-    fn correlation(&self) -> f64 {
-        self.xy / (self.xx * self.yy).sqrt()
-    }
 }
 
 /// Refuses a campaign whose measured β moves against the base model's over
@@ -86,26 +60,24 @@ impl Sums {
 /// slip (a real log's segment where the model misses a transient may
 /// reach −0.8): a logger's convention is the same in every run of it.
 pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<(), BetaAgainstModel> {
-    let judged: Vec<(String, Sums)> = c
+    let judged: Vec<(String, CentredSums)> = c
         .runs
         .par_iter()
         .filter_map(|r| sums(base, r, c.settings.step).map(|s| (r.path.display().to_string(), s)))
         .collect();
-    let all = judged.iter().fold(Sums::default(), |a, (_, s)| Sums {
-        n: a.n + s.n,
-        xy: a.xy + s.xy,
-        xx: a.xx + s.xx,
-        yy: a.yy + s.yy,
-    });
-    if judged.is_empty() || all.correlation() >= AGAINST {
-        return Ok(());
-    }
+    let all = judged
+        .iter()
+        .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s));
+    let pooled = match all.correlation() {
+        Some(k) if k < AGAINST => k,
+        _ => return Ok(()),
+    };
     Err(BetaAgainstModel {
-        correlation: all.correlation(),
+        correlation: pooled,
         samples: all.n,
         against: judged
             .iter()
-            .map(|(run, s)| (run.clone(), s.correlation(), s.n))
+            .filter_map(|(run, s)| Some((run.clone(), s.correlation()?, s.n)))
             .filter(|(_, k, _)| *k < 0.0)
             .collect(),
         judged: judged.len(),

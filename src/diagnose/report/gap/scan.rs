@@ -28,6 +28,7 @@
 //! Units: the channel's own; times in s.
 
 use crate::measured::calibration::stats::integrated_time;
+use crate::stats::CentredSums;
 use serde::Serialize;
 
 /// Length of the sliding windows, s: a yaw or lateral response rises in
@@ -255,18 +256,7 @@ pub(super) fn lagged_correlation(a: &[f64], b: &[f64], k: isize) -> f64 {
     } else {
         (&a[..n - l], &b[l..])
     };
-    let (mx, my) = (mean(x), mean(y));
-    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
-    for (p, q) in x.iter().zip(y) {
-        sxy += (p - mx) * (q - my);
-        sxx += (p - mx) * (p - mx);
-        syy += (q - my) * (q - my);
-    }
-    if sxx <= 0.0 || syy <= 0.0 {
-        f64::NAN
-    } else {
-        sxy / (sxx * syy).sqrt()
-    }
+    CentredSums::of(x, y).correlation().unwrap_or(f64::NAN)
 }
 
 /// The time shift of `measured` behind `simulated`, s (positive: the

@@ -1,0 +1,109 @@
+//! Sample statistics the crate's checks share: the centred sums of a pair of
+//! series and their Pearson correlation. Dimensionless; a series' units
+//! cancel in the correlation.
+//!
+//! Sums, not the correlation alone, are what is kept: runs judged one by one
+//! pool by adding their sums (each centred on its own means, so an offset
+//! between runs is no correlation), which a mean of correlations would
+//! weight wrongly.
+
+/// The centred sums of products of two series `x` and `y` over `n` pairs,
+/// each centred on its own mean.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CentredSums {
+    /// Pairs summed.
+    pub n: usize,
+    /// Σ (x − x̄)(y − ȳ).
+    pub xy: f64,
+    /// Σ (x − x̄)².
+    pub xx: f64,
+    /// Σ (y − ȳ)².
+    pub yy: f64,
+}
+
+impl CentredSums {
+    /// The sums of the pairs `(x[i], y[i])` (the shorter length counts).
+    pub fn of(x: &[f64], y: &[f64]) -> Self {
+        let n = x.len().min(y.len());
+        let (x, y) = (&x[..n], &y[..n]);
+        let mean = |v: &[f64]| v.iter().sum::<f64>() / n.max(1) as f64;
+        let (mx, my) = (mean(x), mean(y));
+        let mut s = CentredSums {
+            n,
+            ..Self::default()
+        };
+        for (p, q) in x.iter().zip(y) {
+            let (p, q) = (p - mx, q - my);
+            s.xy += p * q;
+            s.xx += p * p;
+            s.yy += q * q;
+        }
+        s
+    }
+
+    /// The sums of both sets of pairs together, each kept centred on its
+    /// own means (the within-set sums of a pooled correlation).
+    pub fn pooled(self, other: Self) -> Self {
+        CentredSums {
+            n: self.n + other.n,
+            xy: self.xy + other.xy,
+            xx: self.xx + other.xx,
+            yy: self.yy + other.yy,
+        }
+    }
+
+    /// Pearson's correlation, `None` where either series is constant (or
+    /// there are no pairs).
+    pub fn correlation(&self) -> Option<f64> {
+        (self.xx > 0.0 && self.yy > 0.0).then(|| self.xy / (self.xx * self.yy).sqrt())
+    }
+
+    /// The centred RMS of `x` (its swing about its mean).
+    pub fn x_rms(&self) -> f64 {
+        (self.xx / self.n.max(1) as f64).sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_correlates_fully_and_its_mirror_against() {
+        let x = [1.0, 2.0, 4.0, 7.0];
+        let up: Vec<f64> = x.iter().map(|v| 3.0 * v - 2.0).collect();
+        let down: Vec<f64> = x.iter().map(|v| -0.5 * v + 9.0).collect();
+        assert!((CentredSums::of(&x, &up).correlation().unwrap() - 1.0).abs() < 1e-15);
+        assert!((CentredSums::of(&x, &down).correlation().unwrap() + 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_known_correlation_and_swing_by_hand() {
+        // x̄ = 2, ȳ = 3: Σxy = (−1)(−1) + 0·1 + 1·0 = 1, Σxx = 2, Σyy = 2.
+        let s = CentredSums::of(&[1.0, 2.0, 3.0], &[2.0, 4.0, 3.0]);
+        assert_eq!((s.n, s.xy, s.xx, s.yy), (3, 1.0, 2.0, 2.0));
+        assert!((s.correlation().unwrap() - 0.5).abs() < 1e-15);
+        assert!((s.x_rms() - (2.0_f64 / 3.0).sqrt()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_constant_series_has_no_correlation() {
+        assert_eq!(
+            CentredSums::of(&[1.0, 1.0, 1.0], &[0.0, 1.0, 2.0]).correlation(),
+            None
+        );
+        assert_eq!(CentredSums::default().correlation(), None);
+    }
+
+    #[test]
+    fn pooling_keeps_each_set_on_its_own_means() {
+        // Two runs moving together but offset from each other by 100: the
+        // pooled within-run correlation is 1, whereas the offset alone would
+        // dominate one concatenated correlation.
+        let a = CentredSums::of(&[0.0, 1.0, 2.0], &[0.0, 1.0, 2.0]);
+        let b = CentredSums::of(&[100.0, 101.0, 102.0], &[-100.0, -99.0, -98.0]);
+        let p = a.pooled(b);
+        assert_eq!(p.n, 6);
+        assert!((p.correlation().unwrap() - 1.0).abs() < 1e-15);
+    }
+}

@@ -79,6 +79,47 @@ pub struct ChannelScale {
     pub scatter: f64,
 }
 
+/// How far, as a factor either side, a channel's scatter may lie from the
+/// line between a sensor and an estimated output ([`SMOOTH_SHARE`] of the
+/// sensor floor) and still be read as near it. The scatter is a sample
+/// statistic: on the Putnam log the yaw rate's is 0.0010 rad/s over the
+/// whole log (0.59 of the gyro floor: a sensor) and 0.00072 rad/s over one
+/// 60 s stretch of it (0.42: an estimated output), which moves the
+/// channel's trust threefold; a sideslip with white noise of 0.0005 rad
+/// reads 0.00045 (0.26: an estimated output, trusted to 0.005 rad), the
+/// same with 0.0009 rad reads 0.00092 (0.54: a sensor, trusted to
+/// 0.0017 rad). Scatter alone cannot tell a quiet sensor from a smooth
+/// estimator, so between a quarter and the whole of the floor the report
+/// says the reading is near the line and asks for the channel's
+/// uncertainty.
+pub const NEAR_THE_LINE: f64 = 2.0;
+
+/// Which side of the line between a sensor and an estimated output a
+/// scatter of channel `c` falls: true for an estimated output's (below
+/// [`SMOOTH_SHARE`] of its sensor floor, or not a number).
+pub fn reads_as_estimated(c: Channel, scatter: f64) -> bool {
+    scatter.is_nan() || scatter < SMOOTH_SHARE * SENSOR_FLOOR[c.index()]
+}
+
+/// The scatter of channel `c` as a share of its sensor type's floor, where
+/// an unstated channel's trust hangs on a reading near the line between a
+/// sensor and an estimated output: its scatter within [`NEAR_THE_LINE`] of
+/// it, or `other_side` runs of the campaign reading the other way alone.
+/// `None` where the trust is stated or clear.
+pub fn near_the_line(
+    c: Channel,
+    source: ScaleSource,
+    scatter: f64,
+    other_side: usize,
+) -> Option<f64> {
+    if source == ScaleSource::Stated || !scatter.is_finite() {
+        return None;
+    }
+    let share = scatter / SENSOR_FLOOR[c.index()];
+    let near = share > SMOOTH_SHARE / NEAR_THE_LINE && share < SMOOTH_SHARE * NEAR_THE_LINE;
+    (near || other_side > 0).then_some(share)
+}
+
 /// The uncertainty the user `stated` for channel `c`, if any.
 pub fn stated_of(c: Channel, stated: &StatedUncertainty) -> Option<f64> {
     match c {
@@ -124,9 +165,7 @@ pub fn channel_scale(
     let (uncertainty, source) = match stated_of(c, stated) {
         Some(s) => (s, ScaleSource::Stated),
         // A scatter that is not a number (no samples) is no sensor's either.
-        None if scatter.is_nan() || scatter < SMOOTH_SHARE * SENSOR_FLOOR[i] => {
-            (ESTIMATED[i], ScaleSource::Estimated)
-        }
+        None if reads_as_estimated(c, scatter) => (ESTIMATED[i], ScaleSource::Estimated),
         None if scatter >= SENSOR_FLOOR[i] => (scatter, ScaleSource::Scatter),
         None => (SENSOR_FLOOR[i], ScaleSource::SensorFloor),
     };
@@ -195,6 +234,38 @@ mod tests {
         assert_eq!((c.uncertainty, c.source), (0.003, ScaleSource::Scatter));
         let c = channel_scale(Channel::Ay, &NONE, 0.015, 1.0);
         assert_eq!((c.uncertainty, c.source), (0.02, ScaleSource::SensorFloor));
+    }
+
+    #[test]
+    fn a_scatter_near_the_line_between_sensor_and_estimate_is_said_to_be() {
+        let yaw = Channel::YawRate;
+        // Putnam's yaw rate: 0.0010 rad/s over the log, 0.00072 over 60 s.
+        let whole = channel_scale(yaw, &NONE, 0.0010, 0.1);
+        let piece = channel_scale(yaw, &NONE, 0.00072, 0.1);
+        assert_eq!(
+            (whole.source, piece.source),
+            (ScaleSource::SensorFloor, ScaleSource::Estimated)
+        );
+        let share = near_the_line(yaw, whole.source, 0.0010, 0).unwrap();
+        assert!((share - 0.0010 / 0.0017).abs() < 1e-12);
+        assert!(near_the_line(yaw, piece.source, 0.00072, 0).is_some());
+        // A quieter sideslip read as an estimate, a noisier as a sensor:
+        // both near the line.
+        assert!(near_the_line(Channel::Beta, ScaleSource::Estimated, 0.00045, 0).is_some());
+        assert!(near_the_line(Channel::Beta, ScaleSource::SensorFloor, 0.00092, 0).is_some());
+        // Clear readings: a gyro at its floor, an estimator's 0.0002 rad.
+        assert_eq!(
+            near_the_line(yaw, ScaleSource::SensorFloor, 0.0017, 0),
+            None
+        );
+        assert_eq!(
+            near_the_line(Channel::Beta, ScaleSource::Estimated, 0.0002, 0),
+            None
+        );
+        // ... unless runs read alone fall on the other side.
+        assert!(near_the_line(yaw, ScaleSource::SensorFloor, 0.0017, 2).is_some());
+        // A stated uncertainty is the user's: never near any line.
+        assert_eq!(near_the_line(yaw, ScaleSource::Stated, 0.0010, 5), None);
     }
 
     #[test]

@@ -159,6 +159,10 @@ pub struct ChannelNoise {
     pub scatter: f64,
     /// Runs measuring it.
     pub runs: usize,
+    /// Runs whose own scatter, read alone, falls on the other side of the
+    /// line between a sensor and an estimated output than the median's
+    /// ([`crate::diagnose::model::scale::near_the_line`]).
+    pub other_side: usize,
 }
 
 /// The gap of one run with the base model.

@@ -12,7 +12,7 @@
 
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::model::scale::{channel_scale, signal_rms};
+use crate::diagnose::model::scale::{channel_scale, reads_as_estimated, signal_rms};
 use crate::diagnose::report::summary::run_scatter;
 use crate::diagnose::report::ChannelNoise;
 use crate::measured::clean::median;
@@ -47,7 +47,13 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
                 .collect();
             (!scatter.is_empty()).then(|| {
                 let runs = scatter.len();
+                let each = scatter.clone();
                 let scatter = median(&mut scatter);
+                let side = reads_as_estimated(ch, scatter);
+                let other_side = each
+                    .iter()
+                    .filter(|&&s| reads_as_estimated(ch, s) != side)
+                    .count();
                 let trust = channel_scale(ch, stated, scatter, rms[ch.index()]);
                 scales[ch.index()] = trust.scale;
                 floors[ch.index()] = trust.uncertainty;
@@ -59,6 +65,7 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
                     source: trust.source,
                     scatter: trust.scatter,
                     runs,
+                    other_side,
                 }
             })
         })

@@ -13,6 +13,7 @@ mod evidence;
 mod gap;
 mod lookalikes;
 mod parameters;
+mod trust;
 mod warnings;
 use crate::identify::grouping::Variable;
 pub use axles::{
@@ -23,6 +24,7 @@ pub use gap::band_lines;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
+pub use trust::{channel_trust, channels_trusted};
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};
@@ -434,30 +436,6 @@ pub fn note(n: &Note) -> String {
             )
         }
     }
-}
-
-/// How far every measured channel is trusted, in one line.
-pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
-    let each: Vec<String> = noise.iter().map(channel_trust).collect();
-    format!("channels trusted to: {}", each.join("; "))
-}
-
-/// How far a channel is trusted, and why, each number with its unit and
-/// in digits that show it ([`rms`]: a stated 1e-6 rad is not "0.0000").
-pub fn channel_trust(n: &ChannelNoise) -> String {
-    let u = n.unit;
-    let why = match n.source {
-        ScaleSource::Stated => "stated".to_string(),
-        ScaleSource::Scatter => "its scatter".to_string(),
-        ScaleSource::SensorFloor => {
-            format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
-        }
-        ScaleSource::Estimated => format!(
-            "an estimated output's: its scatter {} {u} is below any sensor's",
-            rms(n.scatter)
-        ),
-    };
-    format!("{} {} {u} ({why})", n.channel.name(), rms(n.noise_floor))
 }
 
 /// The heading of the findings on the gap: where it lies, or, when the

@@ -66,6 +66,7 @@ fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_unit
             source,
             scatter,
             runs: 2,
+            other_side: 0,
         })
     };
     assert_eq!(
@@ -83,5 +84,26 @@ fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_unit
     assert_eq!(
         trust(0.005, ScaleSource::Estimated, 2.3e-5),
         "beta 0.0050 rad (an estimated output's: its scatter 2.3e-5 rad is below any sensor's)"
+    );
+}
+
+#[test]
+fn a_channel_read_near_the_line_between_sensor_and_estimate_says_so_and_how_to_settle_it() {
+    use crate::diagnose::model::channels::Channel;
+    // Putnam's whole log: the yaw rate at 0.59 of the gyro floor, a sensor,
+    // with 7 of its 23 pieces reading alone as an estimated output.
+    let said = channel_trust(&ChannelNoise {
+        channel: Channel::YawRate,
+        unit: "rad/s",
+        noise_floor: 0.0017,
+        scale: 0.0027,
+        source: ScaleSource::SensorFloor,
+        scatter: 0.0010,
+        runs: 23,
+        other_side: 7,
+    });
+    assert_eq!(
+        said,
+        "yaw_rate 0.0017 rad/s (its sensor type's floor; scatter 0.0010 rad/s; near the line between a sensor and an estimated output: its scatter is 0.59 of its sensor type's floor, the line at 0.5; 7 of its 23 runs read alone fall on the side of an estimated output; read as a sensor, a shorter or calmer stretch may read it as an estimated output: where you know which it is, state its uncertainty under [channels])"
     );
 }

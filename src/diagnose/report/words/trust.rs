@@ -1,0 +1,64 @@
+//! How far each measured channel is trusted, in words: the number, where
+//! it comes from (stated, scatter, a sensor type's floor, an estimated
+//! output's) and, where the reading that chose between a sensor and an
+//! estimated output lies near its line, that it does (the rule:
+//! [`crate::diagnose::model::scale`]). Units: each channel's own.
+
+use super::rms;
+use crate::diagnose::model::scale::{near_the_line, SMOOTH_SHARE};
+use crate::diagnose::report::{ChannelNoise, ScaleSource};
+
+/// How far every measured channel is trusted, in one line.
+pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
+    let each: Vec<String> = noise.iter().map(channel_trust).collect();
+    format!("channels trusted to: {}", each.join("; "))
+}
+
+/// How far a channel is trusted, and why, each number with its unit and
+/// in digits that show it ([`rms`]: a stated 1e-6 rad is not "0.0000").
+pub fn channel_trust(n: &ChannelNoise) -> String {
+    let u = n.unit;
+    let why = match n.source {
+        ScaleSource::Stated => "stated".to_string(),
+        ScaleSource::Scatter => "its scatter".to_string(),
+        ScaleSource::SensorFloor => {
+            format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
+        }
+        ScaleSource::Estimated => format!(
+            "an estimated output's: its scatter {} {u} is below any sensor's",
+            rms(n.scatter)
+        ),
+    };
+    let near = near_the_line(n.channel, n.source, n.scatter, n.other_side)
+        .map(|share| near_line(n, share))
+        .unwrap_or_default();
+    format!(
+        "{} {} {u} ({why}{near})",
+        n.channel.name(),
+        rms(n.noise_floor)
+    )
+}
+
+/// What a user should know of a channel whose trust hangs on a reading
+/// near the line between a sensor and an estimated output: which way it
+/// went, how near, and how to settle it.
+fn near_line(n: &ChannelNoise, share: f64) -> String {
+    let (this, other) = if n.source == ScaleSource::Estimated {
+        ("an estimated output", "a sensor")
+    } else {
+        ("a sensor", "an estimated output")
+    };
+    let runs = if n.other_side > 0 {
+        format!(
+            "; {} of its {} runs read alone fall on the side of {other}",
+            n.other_side, n.runs
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "; near the line between a sensor and an estimated output: its scatter is {} of its sensor type's floor, the line at {}{runs}; read as {this}, a shorter or calmer stretch may read it as {other}: where you know which it is, state its uncertainty under [channels]",
+        crate::format::rounded(share, 2),
+        SMOOTH_SHARE,
+    )
+}

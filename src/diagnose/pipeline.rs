@@ -428,10 +428,11 @@ fn run(
     }
 
     // A sideslip in the other sign convention is refused before any fit.
-    crate::diagnose::base::beta_sign::check(c, &bases.all).map_err(|source| {
-        let campaign = c.source.clone();
-        DiagnosisError::BetaAgainstModel { campaign, source }
-    })?;
+    let beta_against =
+        crate::diagnose::base::beta_sign::check(c, &bases.all).map_err(|source| {
+            let campaign = c.source.clone();
+            DiagnosisError::BetaAgainstModel { campaign, source }
+        })?;
     let run_gaps = base_gaps(c, &bases.all, &floors);
     let calibrated = calibrated(c);
     let ctx = Context {
@@ -450,6 +451,11 @@ fn run(
     let significant = rules::significant(j0, jn);
     let mut notes = notes_of(c, visibility, &ctx, &noise);
     notes.extend(rig_notes::rig_notes(c, &tyre_source, rig_grouping.as_ref()));
+    notes.extend(beta_against.into_iter().map(|f| Note::BetaAgainstInFile {
+        file: f.file,
+        correlation: f.correlation,
+        samples: f.samples,
+    }));
     let (singles, order, screened, screened_rows) =
         singles(&ctx, &effects, &base, set.screening, significant);
     let ranking: Vec<Ranked> = order.iter().map(|&i| base.rank(&singles[i])).collect();

@@ -99,3 +99,87 @@ fn a_sideslip_whose_scatter_reads_near_the_sensor_estimate_line_says_so_either_w
         "{quiet}"
     );
 }
+
+/// Negates column `name` of the CSV file at `path` (its header names it).
+fn negate_column(path: &std::path::Path, name: &str) {
+    let text = fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let k = header.split(',').position(|c| c == name).unwrap();
+    let mut out = format!("{header}\n");
+    for l in lines {
+        let cells: Vec<String> = l
+            .split(',')
+            .enumerate()
+            .map(|(i, c)| {
+                if i == k {
+                    format!("{}", -c.parse::<f64>().unwrap())
+                } else {
+                    c.to_string()
+                }
+            })
+            .collect();
+        out += &(cells.join(",") + "\n");
+    }
+    fs::write(path, out).unwrap();
+}
+
+/// One file of a campaign logged with its sideslip in the other sign
+/// convention, the others right: the pooled check passes (it refuses only
+/// a campaign against its model as a whole), and nothing said which file
+/// (`metrics` on the file alone says so). Now a note names it.
+#[test]
+fn one_file_whose_sideslip_moves_against_the_model_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = crate::synth_extended(
+        dir.path(),
+        "handling",
+        "sensor_delay",
+        "1",
+        "effects = [\"sensor_delay\"]\n",
+    );
+    negate_column(&c.join("runs/step_100kph_6ms2.csv"), "beta");
+    let (stdout, d) = crate::diagnose_campaign(&c);
+    let notes: Vec<&serde_json::Value> = d["note_details"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|n| n["kind"] == "beta_against_in_file")
+        .collect();
+    assert_eq!(notes.len(), 1, "{}", d["notes"]);
+    assert!(
+        notes[0]["file"]
+            .as_str()
+            .unwrap()
+            .ends_with("step_100kph_6ms2.csv"),
+        "{}",
+        notes[0]
+    );
+    assert!(
+        notes[0]["correlation"].as_f64().unwrap() < -0.9,
+        "{}",
+        notes[0]
+    );
+    assert!(
+        stdout.contains("step_100kph_6ms2.csv moves against the base model's (correlation -0.9"),
+        "{stdout}"
+    );
+    // The campaign as synthesised has no such note.
+    let clean = crate::synth_extended(
+        dir.path(),
+        "handling",
+        "sensor_delay",
+        "2",
+        "effects = [\"sensor_delay\"]\n",
+    );
+    let (_, d) = crate::diagnose_campaign(&clean);
+    assert!(
+        !d["note_details"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|n| n["kind"] == "beta_against_in_file"),
+        "{}",
+        d["notes"]
+    );
+}

@@ -10,6 +10,12 @@
 //! pooled correlation below [`AGAINST`] — is negated: fitted, it makes the gap
 //! a sign slip that no effect explains ("outside the library", β carrying
 //! most of the error). Units: SI, rad.
+//!
+//! Over the runs together the sideslip may move with the model and one
+//! file's against it (a logger set up differently for one session): such a
+//! file is named ([`FileAgainst`]), its pieces pooled (a piece of a long log
+//! where the model misses a transient may reach −0.8 alone; a file's sign
+//! convention is the same throughout).
 
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::replay::Prepared;
@@ -54,12 +60,27 @@ fn sums(base: &Augmented, run: &MeasuredRun, step: f64) -> Option<CentredSums> {
     (swing >= SWING && s.yy > 0.0 && swing.is_finite()).then_some(s)
 }
 
+/// A file whose measured β moves against the base model's (its runs'
+/// pooled correlation below [`AGAINST`]) where the campaign's as a whole
+/// does not.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FileAgainst {
+    /// The file.
+    pub file: String,
+    /// Its runs' pooled correlation with the base model's β.
+    pub correlation: f64,
+    /// The samples judged.
+    pub samples: usize,
+}
+
 /// Refuses a campaign whose measured β moves against the base model's over
 /// all its runs (their pooled correlation below [`AGAINST`]), naming each
 /// run against with its own correlation. A single run against is no sign
 /// slip (a real log's segment where the model misses a transient may
 /// reach −0.8): a logger's convention is the same in every run of it.
-pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<(), BetaAgainstModel> {
+/// Otherwise returns the files against it ([`FileAgainst`]), where the
+/// runs come from more than one file.
+pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, BetaAgainstModel> {
     let judged: Vec<(String, CentredSums)> = c
         .runs
         .par_iter()
@@ -70,7 +91,7 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<(), BetaAgainstMod
         .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s));
     let pooled = match all.correlation() {
         Some(k) if k < AGAINST => k,
-        _ => return Ok(()),
+        _ => return Ok(files_against(&judged)),
     };
     Err(BetaAgainstModel {
         correlation: pooled,
@@ -82,4 +103,66 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<(), BetaAgainstMod
             .collect(),
         judged: judged.len(),
     })
+}
+
+/// The files whose runs' pooled β correlation is below [`AGAINST`], where
+/// `judged` (per run: its file and sums) spans more than one file.
+fn files_against(judged: &[(String, CentredSums)]) -> Vec<FileAgainst> {
+    let mut files: Vec<(String, CentredSums)> = Vec::new();
+    for (file, s) in judged {
+        match files.iter_mut().find(|(f, _)| f == file) {
+            Some((_, sums)) => *sums = sums.pooled(*s),
+            None => files.push((file.clone(), *s)),
+        }
+    }
+    if files.len() < 2 {
+        return Vec::new();
+    }
+    files
+        .into_iter()
+        .filter_map(|(file, s)| {
+            let k = s.correlation()?;
+            (k < AGAINST).then_some(FileAgainst {
+                file,
+                correlation: k,
+                samples: s.n,
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sums(k: f64) -> CentredSums {
+        let x = [0.0, 1.0, 2.0, 3.0];
+        let y: Vec<f64> = x.iter().map(|v| k * v).collect();
+        CentredSums::of(&x, &y)
+    }
+
+    #[test]
+    fn one_file_against_the_others_is_named_with_its_pieces_pooled() {
+        let judged = vec![
+            ("a.csv".to_string(), sums(1.0)),
+            ("b.csv".to_string(), sums(-1.0)),
+            ("b.csv".to_string(), sums(-2.0)),
+            ("c.csv".to_string(), sums(1.0)),
+        ];
+        let against = files_against(&judged);
+        assert_eq!(against.len(), 1);
+        assert_eq!(against[0].file, "b.csv");
+        assert_eq!(against[0].samples, 8);
+        assert!((against[0].correlation + 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn pieces_of_one_file_are_never_named_against_each_other() {
+        // A long log's pieces: one against alone, the file as a whole with.
+        let judged = vec![
+            ("log.csv".to_string(), sums(1.0)),
+            ("log.csv".to_string(), sums(-1.0)),
+        ];
+        assert!(files_against(&judged).is_empty());
+    }
 }

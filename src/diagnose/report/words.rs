@@ -32,7 +32,7 @@ use crate::diagnose::report::outcome::{
     ChannelChange, GapFinding, NotIdentifiable, Note, OutsideLibrary, RankWarning, Refusal,
     Refused, Verdict, VerdictWarning, SIGNIFICANT_NOISE_FLOORS,
 };
-use crate::diagnose::report::{ChannelNoise, Confounded, Reduction, ScaleSource, Shrinkage};
+use crate::diagnose::report::{Confounded, Reduction, Shrinkage};
 use crate::format::signed;
 
 impl Verdict {
@@ -435,6 +435,13 @@ pub fn note(n: &Note) -> String {
                 "{levels} {what} levels of the rig data pooled into one {model} fit, which has no {what} terms: the base tyre is their blend (rig data at the car's {what} alone would be the car's tyre)"
             )
         }
+        Note::BetaAgainstInFile {
+            file,
+            correlation,
+            samples,
+        } => format!(
+            "beta of {file} moves against the base model's (correlation {correlation:.2} over {samples} samples) while the other files' move with it: logged in the other sign convention in that file (ISO 8855: negative in a left turn at speed; `metrics` on the file says so where it has ay), or stretches the model misses; scored as logged"
+        ),
     }
 }
 

@@ -84,4 +84,16 @@ pub enum Note {
         /// The model fitted.
         model: crate::tyre::ModelName,
     },
+    /// A file whose measured sideslip moves against the base model's
+    /// where the campaign's runs together move with it: a logger set up in
+    /// the other sign convention for that file, or stretches the model
+    /// misses.
+    BetaAgainstInFile {
+        /// The file.
+        file: String,
+        /// Its runs' pooled correlation with the base model's β.
+        correlation: f64,
+        /// Samples judged.
+        samples: usize,
+    },
 }

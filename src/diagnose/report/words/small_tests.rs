@@ -2,6 +2,7 @@
 //! values without a unit.
 
 use super::*;
+use crate::diagnose::report::{ChannelNoise, ScaleSource};
 
 #[test]
 fn a_share_removed_at_or_below_zero_is_said_as_none() {

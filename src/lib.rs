@@ -21,6 +21,7 @@
 //! | physical constants (standard gravity) | [`constants`] |
 //! | numbers as messages print them | [`format`] |
 //! | the scalar the models are written in: `f64`, or a dual number for exact derivatives | [`scalar`] |
+//! | sample statistics the checks share: centred sums and Pearson correlation, pooled over runs | [`stats`] |
 //! | the library's one error type, by kind (input, parameter, options, fit, metrics, diagnosis, output) | [`error`] |
 //! | tyre models (one file each, one registry), their parameter vectors and `.tir` coefficients | [`tyre`] |
 //! | PSO variants, Levenberg–Marquardt (bounded, with exact or difference Jacobians), modified Gauss–Newton, standard errors | [`optim`] |

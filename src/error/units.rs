@@ -289,6 +289,9 @@ pub enum UnitSlip {
     /// An aligning moment in kN·m (`rig_moment_knm.rs`).
     #[error(transparent)]
     RigMomentInKnm(#[from] super::rig_moment_knm::RigMomentInKnm),
+    /// Slip angles in degrees under a linear fit (`slip_degrees.rs`).
+    #[error(transparent)]
+    SlipAngleInDegrees(#[from] super::slip_degrees::SlipAngleInDegrees),
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

@@ -5,7 +5,7 @@
 
 use super::{Channel, ParameterReport, Spread};
 use crate::format::{readable, rounded};
-use crate::tyre::Tyre;
+use crate::tyre::{Parameterised, Tyre};
 use nalgebra::DMatrix;
 
 /// The fraction of the channel's RMS one standard error must move it by
@@ -26,6 +26,11 @@ pub(super) fn parameter_reports(
     let all_bounds = channel.bounds(start);
     let values = channel.parameters(tyre);
     let traded = undetermined_names(start, channel, free, covariance);
+    // Only the lateral block's vector carries the model's physical floors.
+    let floors = match channel {
+        Channel::LateralForce => start.physical_floors(),
+        _ => Vec::new(),
+    };
     let mut k = 0;
     let mut parameters = Vec::new();
     for (i, name) in channel.names(start).iter().enumerate() {
@@ -48,13 +53,43 @@ pub(super) fn parameter_reports(
                 .map(|v| v.max(0.0).sqrt());
             rep.std_error = se;
             rep.effect_percent = se.map(|_| 100.0 * spread.effect[k]);
-            rep.warning = warning(name, values[i], (lo, hi), se, &traded);
-            hardly_felt(&mut rep);
+            let floor = floors.get(i).copied().flatten();
+            match floor.filter(|_| on_floor(values[i], (lo, hi), spread.pull[k])) {
+                Some(why) => rep.note = Some(at_floor(lo, why)),
+                None => {
+                    rep.warning = warning(name, values[i], (lo, hi), se, &traded);
+                    hardly_felt(&mut rep);
+                }
+            }
             k += 1;
         }
         parameters.push(rep);
     }
     parameters
+}
+
+/// The share of a parameter's box within which a value stands on a
+/// physical limit, as `diagnose` takes it (its `LIMIT_RESOLUTION`): no
+/// fit resolves a decay of 1e-17 from none.
+const LIMIT_RESOLUTION: f64 = 1e-4;
+
+/// Whether `v` in its box `(lo, hi)`, whose lower end is a physical
+/// limit, stands on it as a fit: within [`LIMIT_RESOLUTION`] of it, and
+/// the data's own step from it (`pull`, [`Spread::pull`]) not past it by
+/// more (a GIM decay on rig data whose friction rises with slip is pulled
+/// below 0: stopped there, still said as on its bound, not a fit).
+fn on_floor(v: f64, (lo, hi): (f64, f64), pull: f64) -> bool {
+    let near = LIMIT_RESOLUTION * (hi - lo);
+    v >= lo && v - lo <= near && v + pull >= lo - near
+}
+
+/// The note on a parameter at its physical limit `lo`, `why` beyond it
+/// is no tyre.
+fn at_floor(lo: f64, why: &str) -> String {
+    format!(
+        "at its physical limit {} ({why}): the data fit best there and do not pull it past; a fit, not a search stopped",
+        rounded(lo, 6)
+    )
 }
 
 /// A warned parameter `rep` whose standard error passes its value but

@@ -55,6 +55,10 @@ pub(super) struct Spread {
     /// One standard error's effect, alone, as a fraction of the measured
     /// values' norm (NaN without a standard error).
     pub(super) effect: Vec<f64>,
+    /// The Gauss–Newton step of each free parameter alone, the others
+    /// held (`−Jₖ·e/‖Jₖ‖²`, 0 where the data do not see it): where the
+    /// data pull a value on a bound.
+    pub(super) pull: Vec<f64>,
 }
 
 impl Spread {
@@ -77,7 +81,24 @@ impl Spread {
                 j.column(k).norm() * se / y
             })
             .collect();
-        Self { covariance, effect }
+        let pull = (0..p.len())
+            .map(|k| {
+                let (g, h) = res
+                    .iter()
+                    .zip(j.column(k).iter())
+                    .fold((0.0, 0.0), |(g, h), (e, d)| (g + e * d, h + d * d));
+                if h > 0.0 {
+                    -g / h
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        Self {
+            covariance,
+            effect,
+            pull,
+        }
     }
 
     /// The standard error of free parameter `k` (`None`: none).

@@ -41,6 +41,7 @@ fn a_parameter_is_flagged_by_its_standard_error_and_its_effect_or_by_having_none
             f64::NAN
         ])),
         effect: vec![0.05, 0.005, 0.5, f64::NAN],
+        pull: vec![0.0; 4],
     };
     // ±2 on 1.5, moving the fit by 5 %: not determined.
     assert!(spread.flagged(0, 1.5));
@@ -57,6 +58,7 @@ fn a_parameter_is_flagged_by_its_standard_error_and_its_effect_or_by_having_none
     let traded = Spread {
         covariance: Some(c),
         effect: vec![0.1, 0.1],
+        pull: vec![0.0; 2],
     };
     assert_eq!(traded.compensating(0, 2.0), vec![2.0, -1.0]);
 }

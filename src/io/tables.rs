@@ -140,6 +140,13 @@ pub(crate) const MAX_ROAD_FRICTION: f64 = 3.0;
 
 /// Checks a `[road]` table.
 pub(crate) fn check_road(src: &TomlSource, road: &Road) -> Result<(), InputError> {
+    // A road with no grip is said as not positive, not as beyond the
+    // range's top ("a speed or a percentage?", which fits 150, not 0): in a
+    // campaign as in a scenario.
+    if road.friction <= 0.0 {
+        let e = ParamError::positive("friction", road.friction).unwrap_err();
+        return Err(param_error(src, Some("road"), e));
+    }
     ParamError::in_range(
         "friction",
         road.friction,

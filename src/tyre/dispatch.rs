@@ -268,6 +268,9 @@ impl Parameterised for Tyre {
     fn bounds(&self) -> Vec<(f64, f64)> {
         self.as_model().bounds()
     }
+    fn physical_floors(&self) -> Vec<Option<&'static str>> {
+        self.as_model().physical_floors()
+    }
 }
 
 impl TyreModel for Tyre {

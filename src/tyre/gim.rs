@@ -173,6 +173,18 @@ impl Parameterised for Gim {
             (0.0, 1.5),
         ]
     }
+    /// A decay below 0 is a friction that rises with slip without end
+    /// (`μ0/(1 + A_s·s)` past a pole); an exponent below 0 a stiffness
+    /// that falls with load, infinite at no load.
+    fn physical_floors(&self) -> Vec<Option<&'static str>> {
+        vec![
+            None,
+            None,
+            None,
+            Some("a smaller decay is a friction that rises with slip"),
+            Some("a smaller exponent is a stiffness that falls with load, infinite at none"),
+        ]
+    }
 }
 
 impl LateralForceOf for Gim {

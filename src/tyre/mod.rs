@@ -312,6 +312,14 @@ pub trait Parameterised {
     fn set_parameters(&mut self, p: &[f64]);
     /// Plausible search box (lower, upper) for each parameter.
     fn bounds(&self) -> Vec<(f64, f64)>;
+    /// For each parameter whose box's lower end is a physical limit (no
+    /// tyre lies beyond it, as a decay below 0), why; `None` where the
+    /// lower end only bounds the search. A fit on such a limit that the
+    /// data do not pull past is a fit there, not a search stopped
+    /// (`identify/parameters.rs`).
+    fn physical_floors(&self) -> Vec<Option<&'static str>> {
+        vec![None; self.parameter_names().len()]
+    }
 }
 
 /// A parameter block beyond the lateral force (which is the model's

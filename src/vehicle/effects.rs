@@ -222,6 +222,7 @@ impl Default for CombinedSlip {
 pub struct Effects<T = f64> {
     /// Aerodynamic down-force per axle (front, rear), N per (m/s)²: each
     /// wheel of the axle carries half of `k·u²` on top of its static load.
+    #[serde(deserialize_with = "super::pair::front_rear")]
     pub aero_load: [T; 2],
     /// Road bank angle θ, rad, positive when the road's left edge is higher:
     /// gravity then pulls the car to the right with `m·g·sin θ`, the static
@@ -237,12 +238,15 @@ pub struct Effects<T = f64> {
     /// Steer lost per front axle force, rad/N.
     pub steering_compliance: T,
     /// Roll steer (front, rear), rad of axle steer per rad of roll.
+    #[serde(deserialize_with = "super::pair::front_rear")]
     pub roll_steer: [T; 2],
     /// Camber thrust per roll (front, rear): lateral force per wheel load
     /// per rad of roll.
+    #[serde(deserialize_with = "super::pair::front_rear")]
     pub roll_camber: [T; 2],
     /// Scale on the slip angle each axle's tyre sees (front, rear): the
     /// cornering stiffness scaled, the peak force kept.
+    #[serde(deserialize_with = "super::pair::front_rear")]
     pub cornering_stiffness_scale: [T; 2],
     /// The body's roll response (drives roll steer and roll camber).
     pub roll: RollModel<T>,

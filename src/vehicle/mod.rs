@@ -40,6 +40,7 @@ mod balance;
 mod effects;
 mod equilibrium;
 mod loads;
+mod pair;
 mod params;
 mod rates;
 pub mod scalar;

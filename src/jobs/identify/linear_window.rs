@@ -27,6 +27,9 @@ pub struct LinearWindow {
     pub points_left_out: usize,
     /// The pneumatic trail fitted in the window, m (`None`: no `mz`, held at 0).
     pub pneumatic_trail: Option<f64>,
+    /// The loads of the conditions left with fewer than two points in the
+    /// window, so not fitted, N.
+    pub loads_left_out: Vec<f64>,
 }
 
 impl LinearWindow {
@@ -39,9 +42,21 @@ impl LinearWindow {
             ),
             None => "pneumatic_trail held at 0 (no mz data)".into(),
         };
+        let conditions = match self.loads_left_out.len() {
+            0 => String::new(),
+            n => format!(
+                "; {} with fewer than two points in it left out, at Fz {} N",
+                crate::format::plural(n, "condition", "conditions"),
+                self.loads_left_out
+                    .iter()
+                    .map(|f| format!("{f:.0}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
         vec![
             format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates)",
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates{conditions})",
                 self.max_abs_alpha_deg, self.points_fitted, self.points_left_out
             ),
             format!("{mark} {trail}"),
@@ -50,24 +65,25 @@ impl LinearWindow {
 }
 
 /// `conditions` kept to the window (a condition left with fewer than two
-/// points dropped), and the window's account (no trail yet).
+/// points dropped, its load said: two of a file's loads vanished without
+/// a word), and the window's account (no trail yet).
 pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWindow) {
     let max = WINDOW_DEG.to_radians();
     let total: usize = conditions.iter().map(|c| c.points.len()).sum();
-    let kept: Vec<Condition> = conditions
+    let (kept, left): (Vec<Condition>, Vec<Condition>) = conditions
         .into_iter()
         .map(|mut c| {
             c.points.retain(|p| p.slip().abs() <= max);
             c
         })
-        .filter(|c| c.points.len() >= 2)
-        .collect();
+        .partition(|c| c.points.len() >= 2);
     let fitted: usize = kept.iter().map(|c| c.points.len()).sum();
     let w = LinearWindow {
         max_abs_alpha_deg: WINDOW_DEG,
         points_fitted: fitted,
         points_left_out: total - fitted,
         pneumatic_trail: None,
+        loads_left_out: left.iter().map(|c| c.fz).collect(),
     };
     (kept, w)
 }
@@ -101,4 +117,41 @@ pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
     if let Tyre::Linear(l) = tyre {
         l.pneumatic_trail = t;
     }
+}
+
+/// Refuses a linear fit `tyre` to `conditions` (the window's) whose
+/// stiffness per unit of their median load is below any tyre's while the
+/// file's slip angles `alpha` reach beyond any rig's sweep in radians:
+/// the column in degrees (`error/slip_degrees.rs`).
+pub(crate) fn refuse_degrees(
+    data: &std::path::Path,
+    tyre: &Tyre,
+    conditions: &[Condition],
+    alpha: &[f64],
+) -> Result<(), crate::error::Error> {
+    use crate::error::{InputError, InputProblem, SlipAngleInDegrees, UnitSlip};
+    use crate::tyre::sizes::MIN_CORNERING_PER_LOAD;
+    let Tyre::Linear(l) = tyre else {
+        return Ok(());
+    };
+    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
+    loads.sort_by(f64::total_cmp);
+    let Some(&load) = loads.get(loads.len() / 2) else {
+        return Ok(());
+    };
+    let reach = alpha
+        .iter()
+        .filter(|a| a.is_finite())
+        .fold(0.0_f64, |m, a| m.max(a.abs()));
+    let stiffness = l.cornering_stiffness;
+    if stiffness / load >= MIN_CORNERING_PER_LOAD || reach <= crate::error::MAX_RIG_SLIP_ANGLE {
+        return Ok(());
+    }
+    let slip = SlipAngleInDegrees {
+        stiffness,
+        load,
+        reach,
+        least: MIN_CORNERING_PER_LOAD,
+    };
+    Err(InputError::problem(data, InputProblem::from(UnitSlip::from(slip))).into())
 }

@@ -34,6 +34,9 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     // A lifted wheel's samples are no test condition (`identify/lifted.rs`).
     let (read, moments) = read_rig_with_moments(&o.data)?;
     let measured = super::Measured::of(&read, &moments);
+    // The rows a selection keeps, to count what it leaves unfitted there.
+    let selecting = o.load.is_some() || o.pressure.is_some() || o.camber.is_some();
+    let whole = selecting.then(|| read.clone());
     let (data, lifted) = without_lifted(read);
     let (data, flat_alpha) = flat_alpha::without_flat_lateral(data);
     // Each force is fitted to its pure slip (`identify/pure.rs`).
@@ -51,6 +54,10 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     let long_view = long_view.filter(|_| set_aside.has_kappa_sweep() || !lateral.has_lateral());
     let (first, grouped) = first_channel(o, &lateral, long_view.as_ref(), &grouping)?;
     let (conditions, window) = fitted_conditions(o, model, first, &grouped)?;
+    let measured = match &whole {
+        Some(whole) => measured.of_rows(whole, &moments, &grouped.report.selected),
+        None => measured,
+    };
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.sort_by(f64::total_cmp);
     let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
@@ -66,6 +73,9 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
     });
     let fit = fit.map_err(on_data(o, None))?;
+    if window.is_some() {
+        linear_window::refuse_degrees(&o.data, &fit.tyre, &conditions, &lateral.alpha)?;
+    }
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         file: String::new(),

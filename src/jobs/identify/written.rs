@@ -27,6 +27,7 @@ pub(super) fn tyre_file_text(r: &SwarmReport, path: &Path) -> Result<String, Err
         path: path.to_path_buf(),
         source: e,
     })?;
+    let tyre = tiny_in_scientific(&tyre);
     let header = format!(
         "# Identified by `{}`: sigma {:.3} %.\n",
         r.options.command(),
@@ -91,4 +92,44 @@ pub(super) fn finite_fits(r: &SwarmReport) -> Result<(), Error> {
         }
     }
     Ok(())
+}
+
+/// The smallest magnitude written in decimals; below it, in scientific
+/// notation.
+const SMALLEST_DECIMAL: f64 = 1e-6;
+
+/// `text` (a tyre's `key = value` lines) with every value below
+/// [`SMALLEST_DECIMAL`] but 0 written in scientific notation: the TOML
+/// writer spells a float in decimals, and a GIM decay fitted to 2.7e-17
+/// came out as `0.0000000000000000271`, read as a typing slip. The value
+/// is the same double either way.
+fn tiny_in_scientific(text: &str) -> String {
+    text.lines()
+        .map(|line| {
+            let tiny = line.split_once(" = ").and_then(|(key, value)| {
+                let v: f64 = value.parse().ok()?;
+                (v != 0.0 && v.abs() < SMALLEST_DECIMAL).then(|| format!("{key} = {v:e}"))
+            });
+            tiny.unwrap_or_else(|| line.to_string()) + "\n"
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tiny_value_is_written_in_scientific_and_the_rest_as_they_were() {
+        let text = "model = \"gim\"\nfriction_decay = 0.000000000000000012209966040030408\nfriction = 1.0\nload_exponent = 0.0\n";
+        assert_eq!(
+            tiny_in_scientific(text),
+            "model = \"gim\"\nfriction_decay = 1.2209966040030408e-17\nfriction = 1.0\nload_exponent = 0.0\n"
+        );
+        let back: toml::Value = toml::from_str(&tiny_in_scientific(text)).unwrap();
+        assert_eq!(
+            back["friction_decay"].as_float(),
+            Some(1.2209966040030408e-17)
+        );
+    }
 }

@@ -11,6 +11,7 @@
 pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
+pub(crate) mod extend;
 pub(crate) mod restricted;
 pub mod rules;
 pub(crate) mod score;

@@ -1,0 +1,47 @@
+//! What `simulate` and `metrics` said of runs they should not have
+//! measured as they did (session 84): an oversteering car stepped above
+//! its critical speed reported as a slide past a grip its linear tyres do
+//! not have, with a steady state it never reaches.
+
+use super::*;
+
+/// An oversteering sedan (CG 1.59 m behind the front axle of 2.78, equal
+/// linear tyres of 57,296 N/rad per wheel) stepped at `speed` m/s.
+fn oversteering(dir: &Path, speed: f64) -> PathBuf {
+    let tyre = root().join("tyres/linear.toml");
+    let path = dir.join("over.toml");
+    let text = format!(
+        "name = \"over\"\n\n[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.59\nb = 1.19\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n\n[tyres]\nfront = \"{t}\"\nrear = \"{t}\"\n\n[manoeuvre]\nkind = \"step-steer\"\nspeed = {speed}\nsteer = 0.0174533\nstart = 1.0\nrise_time = 0.1\nend = 3.5\n\n[model]\nkinematics = \"small-angle\"\nload_transfer = false\n",
+        t = tyre.display()
+    );
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// At 45 m/s, above the critical speed √(−l/K) = 38.0 m/s (K = (m/l)·
+/// (b − a)/C = −0.00192 rad/(m/s²)), the response diverges: `simulate`
+/// printed a yaw-rate gain of 135.9 1/s and a steady sideslip of −31.8°
+/// as a car "sliding, past its grip" (linear tyres have none) and wrote
+/// them to metrics.json. It now says the car is unstable above its
+/// critical speed, naming both speeds and K, and gives no metrics.
+#[test]
+fn an_oversteering_step_above_the_critical_speed_is_said_unstable() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = oversteering(dir.path(), 45.0);
+    let out = dir.path().join("out");
+    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(
+        said.contains("the car oversteers (understeer gradient K = -0.00192 rad/(m/s²), -1.08 deg/g, from the tyres' cornering stiffness at static load) and the step is at 45.0 m/s, above its critical speed √(−l/K) = 38.0 m/s: its straight running is unstable there, the response diverges instead of settling"),
+        "{said}"
+    );
+    assert!(!said.contains("past its grip"), "{said}");
+    assert!(!said.contains("yaw-rate gain"), "{said}");
+    assert!(!out.join("metrics.json").exists());
+    assert!(out.join("history.csv").exists());
+    // Below the critical speed the same car settles and is measured.
+    let path = oversteering(dir.path(), 30.0);
+    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(said.contains("yaw-rate gain"), "{said}");
+    assert!(!said.contains("critical speed"), "{said}");
+    assert!(out.join("metrics.json").exists());
+}

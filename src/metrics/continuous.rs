@@ -237,7 +237,11 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         ay: Some(super::Settling::of_window(a_spread, of(1, a0, a_step))),
         beta: Some(super::Settling::of_window(
             b_spread,
-            of(2, b0, super::sideslip_scale(bs - b0, d_step).copysign(bs - b0)),
+            of(
+                2,
+                b0,
+                super::sideslip_scale(bs - b0, d_step).copysign(bs - b0),
+            ),
         )),
     };
     let dn = |x: &Sample| (x.steer - d0) / d_step;

@@ -34,7 +34,12 @@ fn an_oversteering_step_above_the_critical_speed_is_said_unstable() {
     let dir = tempfile::tempdir().unwrap();
     let path = oversteering(dir.path(), 45.0);
     let out = dir.path().join("out");
-    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let said = succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(
         said.contains("the car oversteers (understeer gradient K = -0.00192 rad/(m/s²), -1.08 deg/g, from the tyres' cornering stiffness at static load) and the step is at 45.0 m/s, above its critical speed √(−l/K) = 38.0 m/s: its straight running is unstable there, the response diverges instead of settling"),
         "{said}"
@@ -45,7 +50,12 @@ fn an_oversteering_step_above_the_critical_speed_is_said_unstable() {
     assert!(out.join("history.csv").exists());
     // Below the critical speed the same car settles and is measured.
     let path = oversteering(dir.path(), 30.0);
-    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let said = succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(said.contains("yaw-rate gain"), "{said}");
     assert!(!said.contains("critical speed"), "{said}");
     assert!(out.join("metrics.json").exists());
@@ -63,10 +73,18 @@ fn a_response_still_drifting_in_its_steady_window_is_not_settled() {
     let dir = tempfile::tempdir().unwrap();
     let path = oversteering_step(dir.path(), 35.0, 0.005, 8.0);
     let out = dir.path().join("out");
-    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
-    assert!(said.contains("yaw-rate gain               75.3180 1/s"), "{said}");
+    let said = succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(
-        said.contains("the response has not settled in the steady window: the yaw rate is still drifting: the trend across its steady window heads 8.9 % of its step beyond its steady value, more than 1 %"),
+        said.contains("yaw-rate gain               75.3180 1/s"),
+        "{said}"
+    );
+    assert!(
+        said.contains("the response has not settled in the steady window: the yaw rate is still drifting: the trend across its steady window heads 8.9 % of its step beyond its steady value, more than 2 %"),
         "{said}"
     );
     let m = read_json(&out.join("metrics.json"));
@@ -75,14 +93,104 @@ fn a_response_still_drifting_in_its_steady_window_is_not_settled() {
     let drift = m["settling"]["yaw_rate"]["drift"].as_f64().unwrap();
     assert!((drift - 0.089).abs() < 0.001, "{drift}");
     let history = out.join("history.csv");
-    let said = succeeds(&["metrics", history.to_str().unwrap()]);
+    let o = run(&["metrics", history.to_str().unwrap()]);
+    let said = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
     assert!(
-        said.contains("the yaw rate is still drifting: the trend across its steady window heads 8.8 % of its step beyond its steady value"),
+        said.contains("the yaw rate is still drifting: the trend across its steady window heads 8.8 % of its step beyond its steady value, more than 2 %"),
         "{said}"
     );
     // At 30 m/s the slow mode has died out by the window: settled.
     let path = oversteering_step(dir.path(), 30.0, 0.005, 8.0);
-    let said = succeeds(&["simulate", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let said = succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(!said.contains("not settled"), "{said}");
     assert_eq!(read_json(&out.join("metrics.json"))["settled"], true);
+}
+
+/// A logged step steer at 100 Hz over 8 s (a first-order yaw rate), its
+/// time from `origin` s, written to `dir/<name>.csv`.
+fn logged_step(dir: &Path, name: &str, origin: f64) {
+    let mut text = String::from("t,speed,steer,yaw_rate,ay\n");
+    for i in 0..=800 {
+        let t = i as f64 * 0.01;
+        let steer = 0.0174533 * ((t - 1.0) / 0.1).clamp(0.0, 1.0);
+        let r = if t < 1.0 {
+            0.0
+        } else {
+            0.17 * (1.0 - (-(t - 1.0) / 0.2).exp())
+        };
+        text += &format!("{:?},22.2,{steer},{r},{}\n", origin + t, 22.2 * r);
+    }
+    fs::write(dir.join(format!("{name}.csv")), text).unwrap();
+}
+
+/// The Dormand–Prince counts and the first two rows' times of a replay of
+/// `dir/<name>.csv` by the bundled sedan, and `metrics` of its history.
+fn replayed(dir: &Path, name: &str) -> (String, Vec<String>, String) {
+    let scenario = bundled_scenario("sedan_step.toml");
+    let vehicle = scenario.split("[manoeuvre]").next().unwrap();
+    let vehicle = vehicle.replace("\"../tyres/", &format!("\"{}/tyres/", root().display()));
+    let path = dir.join(format!("{name}.toml"));
+    fs::write(
+        &path,
+        format!("{vehicle}[manoeuvre]\nkind = \"replay\"\nrun = \"{name}.csv\"\n"),
+    )
+    .unwrap();
+    let out = dir.join(format!("out_{name}"));
+    let said = succeeds(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let counts = said
+        .split(": ")
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .to_string();
+    let history = out.join("history.csv");
+    let text = fs::read_to_string(&history).unwrap();
+    let times = text
+        .lines()
+        .skip(1)
+        .take(2)
+        .map(|l| l.split(',').next().unwrap().to_string())
+        .collect();
+    let o = run(&["metrics", history.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let metrics = String::from_utf8_lossy(&o.stdout).to_string();
+    (counts, times, metrics)
+}
+
+/// A log on Unix-epoch time (1.69e9 s) was integrated in absolute time:
+/// 1787 steps with 20 rejected against 1623 with none from zero (an f64
+/// resolves 2.4e-7 s there), and its history.csv wrote t to nine digits,
+/// every row `1.69e9`, which `metrics` refused as non-increasing. It is
+/// now integrated from the run's start and its time written with the
+/// digits its steps need: the same counts, the same metrics.
+#[test]
+fn a_replay_on_unix_epoch_time_integrates_and_measures_as_from_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    logged_step(dir.path(), "zero", 0.0);
+    logged_step(dir.path(), "epoch", 1.69e9);
+    let (counts0, times0, metrics0) = replayed(dir.path(), "zero");
+    let (counts, times, metrics) = replayed(dir.path(), "epoch");
+    assert_eq!(counts, counts0);
+    assert!(counts.contains("(0 rejected"), "{counts}");
+    assert_eq!(times0, ["0", "0.001"]);
+    assert_eq!(times, ["1.69e9", "1.690000000001e9"]);
+    let gain = |m: &str| {
+        m.lines()
+            .find(|l| l.contains("yaw-rate gain"))
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(gain(&metrics), gain(&metrics0));
 }

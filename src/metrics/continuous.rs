@@ -223,27 +223,6 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
     let r_spread = (vr / s.steady_window).sqrt() / r_step.abs();
     let a_spread = (va / s.steady_window).sqrt() / a_step.abs();
     let b_spread = (vb / s.steady_window).sqrt() / super::sideslip_scale(bs - b0, d_step);
-    // The steady window's thirds, each a share of its channel's step from
-    // the initial value: their trend tells a drift its spread misses.
-    let third = s.steady_window / 3.0;
-    let thirds: [[f64; 3]; 3] = std::array::from_fn(|k| {
-        let from = steady.0 + k as f64 * third;
-        mean(rec, (from, from + third))
-    })
-    .map(|[_, r, a, b]| [r, a, b]);
-    let of = |c: usize, x0: f64, scale: f64| thirds.map(|m| (m[c] - x0) / scale);
-    let settling = super::ChannelSettling {
-        yaw_rate: super::Settling::of_window(r_spread, of(0, r0, r_step)),
-        ay: Some(super::Settling::of_window(a_spread, of(1, a0, a_step))),
-        beta: Some(super::Settling::of_window(
-            b_spread,
-            of(
-                2,
-                b0,
-                super::sideslip_scale(bs - b0, d_step).copysign(bs - b0),
-            ),
-        )),
-    };
     let dn = |x: &Sample| (x.steer - d0) / d_step;
     let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
     let an = |x: &Sample| (x.ay - a0) / a_step;
@@ -287,8 +266,14 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_total_variance: e_r,
         ay_total_variance: Some(e_ay),
         er: Some(s.e1 * e_r + s.e2 * e_ay),
-        settled: settling.settled(),
-        settling,
+        settled: [r_spread, a_spread, b_spread]
+            .iter()
+            .all(|&spread| spread < super::SETTLED_SPREAD),
+        settling: super::ChannelSettling {
+            yaw_rate: super::Settling::of_spread(r_spread),
+            ay: Some(super::Settling::of_spread(a_spread)),
+            beta: Some(super::Settling::of_spread(b_spread)),
+        },
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: threshold * 100.0,
         // Unfiltered: no ringing of a filter.

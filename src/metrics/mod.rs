@@ -335,10 +335,6 @@ struct Normalised {
     noise: f64,
     /// Samples in the shorter of the initial and steady windows.
     samples: usize,
-    /// Samples in the steady window.
-    steady_samples: usize,
-    /// The means of the steady window's three thirds, normalised.
-    thirds: [f64; 3],
 }
 
 fn normalise(
@@ -359,14 +355,7 @@ fn normalise(
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
-    let third = s.steady_window / 3.0;
-    let thirds = std::array::from_fn(|k| {
-        let from = t_last - s.steady_window + k as f64 * third;
-        (window_mean(t, x, from, from + third).0 - x0) / step
-    });
     Ok(Normalised {
-        steady_samples: in_window(t_last - s.steady_window, t_last),
-        thirds,
         values: x.iter().map(|v| (v - x0) / step).collect(),
         steady: step,
         spread: sd / step.abs(),

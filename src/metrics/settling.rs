@@ -6,14 +6,6 @@
 //! judged at all: its steady window's spread is its noise's, whatever the
 //! car does (a synthetic 60 km/h step's sideslip moves 0.0033 rad under a
 //! noise of 0.0019 rad).
-//!
-//! A spread alone misses a slow drift: a window on a straight slope
-//! spreads by only `Δ/√12` of the change Δ across it, and a car near its
-//! critical speed (slow eigenvalue −0.41 1/s) moves on past the window.
-//! So the trend is judged too: the means of the window's three thirds, a
-//! decay's geometric steps extrapolated to where the channel heads
-//! ([`drift`]); a channel heading more than [`SETTLED_DRIFT`] of its step
-//! from its quoted steady value is still drifting.
 
 use super::Normalised;
 use serde::{Deserialize, Serialize};
@@ -21,15 +13,6 @@ use serde::{Deserialize, Serialize};
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
 pub(super) const SETTLED_SPREAD: f64 = 0.02;
-
-/// How far a channel may still head from its steady value (the window's
-/// mean), relative to the step, for it to have settled: the spread's own
-/// tolerance ([`SETTLED_SPREAD`]). The extrapolation ([`drift`]) is exact
-/// for one slow mode but overstates a decay that quickens (two modes): a
-/// bundled study's sedan on 300/220 N/deg, its sideslip 0.6 % from where
-/// it settles, extrapolates to 1.3 %; a tolerance of 1 % would have called
-/// it (and synth's noisy 60 km/h step) unsettled.
-pub(super) const SETTLED_DRIFT: f64 = SETTLED_SPREAD;
 
 /// The noise deviations (of the raw channel) a step must exceed for its
 /// settling to be judged: within them the step itself is uncertain by a
@@ -49,13 +32,6 @@ pub enum Settling {
         /// The spread beyond the noise, a share of the step (of the
         /// sideslip's scale, [`sideslip_scale`]).
         beyond: f64,
-    },
-    /// Spread within [`SETTLED_SPREAD`], but still heading `drift` (a
-    /// share of its step, signed) from its steady value ([`drift`]).
-    Drifting {
-        /// Where the trend across the window heads, less the window's
-        /// mean, a share of the step (of the sideslip's scale).
-        drift: f64,
     },
     /// Its step is within [`JUDGED_NOISES`] of its noise: not judged.
     NotJudged {
@@ -78,14 +54,11 @@ pub struct ChannelSettling {
 }
 
 impl Settling {
-    /// A noise-free record's verdict from its spread and its window's
-    /// thirds ([`drift`]), both shares of the step.
-    pub(super) fn of_window(spread: f64, thirds: [f64; 3]) -> Self {
-        let drift = drift(thirds, 0.0);
-        match (spread < SETTLED_SPREAD, drift.abs() < SETTLED_DRIFT) {
-            (false, _) => Settling::NotSettled { beyond: spread },
-            (true, false) => Settling::Drifting { drift },
-            (true, true) => Settling::Settled,
+    /// A noise-free record's verdict from its spread (a share of the step).
+    pub(super) fn of_spread(spread: f64) -> Self {
+        match spread < SETTLED_SPREAD {
+            true => Settling::Settled,
+            false => Settling::NotSettled { beyond: spread },
         }
     }
 }
@@ -93,8 +66,7 @@ impl Settling {
 impl ChannelSettling {
     /// Whether no channel judged has failed to settle.
     pub fn settled(&self) -> bool {
-        let ok =
-            |s: &Settling| !matches!(s, Settling::NotSettled { .. } | Settling::Drifting { .. });
+        let ok = |s: &Settling| !matches!(s, Settling::NotSettled { .. });
         ok(&self.yaw_rate) && self.ay.iter().all(ok) && self.beta.iter().all(ok)
     }
 
@@ -121,27 +93,9 @@ impl ChannelSettling {
                 _ => None,
             })
             .collect();
-        let drifting: Vec<String> = named
-            .iter()
-            .filter_map(|(name, _, s)| match s {
-                Settling::Drifting { drift } => Some(format!(
-                    "the {name} is still drifting: the trend across its steady window heads {} % of its step {} its steady value, more than {} %",
-                    crate::format::significant(100.0 * drift.abs(), 2),
-                    if *drift > 0.0 { "beyond" } else { "short of" },
-                    crate::error::Num(100.0 * SETTLED_DRIFT)
-                )),
-                _ => None,
-            })
-            .collect();
         if failed.is_empty() {
-            return (!drifting.is_empty()).then(|| {
-                format!(
-                    "the response has not settled in the steady window: {}; its steady values are not yet the steady state's (a longer run settles it)",
-                    drifting.join("; ")
-                )
-            });
+            return None;
         }
-        let drifting: String = drifting.iter().map(|d| format!("; {d}")).collect();
         let held = |s: &Settling| matches!(s, Settling::Settled);
         let grip = matches!(self.beta, Some(Settling::NotSettled { .. }))
             && held(&self.yaw_rate)
@@ -151,7 +105,7 @@ impl ChannelSettling {
             false => "",
         };
         Some(format!(
-            "the response has not settled in the steady window: {}, more than {} %{grip}{drifting}",
+            "the response has not settled in the steady window: {}, more than {} %{grip}",
             failed.join(", "),
             crate::error::Num(100.0 * SETTLED_SPREAD)
         ))
@@ -214,34 +168,8 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
     }
     let band = 2.0 * n.noise * to_scale * (2.0 / n.samples.max(1) as f64).sqrt();
     let beyond = beyond_noise(n.spread * to_scale, noise * to_scale);
-    if !(beyond < SETTLED_SPREAD || beyond < band) {
-        return Settling::NotSettled { beyond };
-    }
-    // Two thirds' means, each of a third of the window's samples, differ
-    // by noise alone within two deviations of their difference.
-    let thirds_band = 2.0 * n.noise * (6.0 / n.steady_samples.max(1) as f64).sqrt();
-    let drift = drift(n.thirds, thirds_band) * to_scale;
-    match drift.abs() < SETTLED_DRIFT || drift.abs() < thirds_band * to_scale {
+    match beyond < SETTLED_SPREAD || beyond < band {
         true => Settling::Settled,
-        false => Settling::Drifting { drift },
-    }
-}
-
-/// Where a channel heads from its steady value, from the means of its
-/// steady window's three thirds (`thirds`, shares of the step; the window's
-/// mean is theirs): a decay `e^(−λt)` moves each third by the same ratio
-/// `q` of the move before, so it has `d₂·q/(1 − q)` left to go beyond the
-/// last third (Aitken's extrapolation; `d₁`, `d₂` the two moves). Where
-/// the moves do not shrink one way (growing, turning, or the first within
-/// `band` of the noise), the change across the window, last third less
-/// first, is what is known of it.
-pub(super) fn drift(thirds: [f64; 3], band: f64) -> f64 {
-    let [m1, m2, m3] = thirds;
-    let mean = (m1 + m2 + m3) / 3.0;
-    let (d1, d2) = (m2 - m1, m3 - m2);
-    let q = d2 / d1;
-    match d1.abs() > band && q > 0.0 && q < 1.0 {
-        true => m3 + d2 * q / (1.0 - q) - mean,
-        false => m3 - m1,
+        false => Settling::NotSettled { beyond },
     }
 }

@@ -82,8 +82,7 @@ class StepMetrics:
     settling: Dict[str, Any]
     """The verdict on each channel's steady window (``yaw_rate``, ``ay``,
     ``beta``; None for a channel not recorded): ``{"verdict": "settled"}``,
-    ``"not_settled"`` with its spread, ``"drifting"`` with its ``drift``
-    (where its trend heads, share of the step), or ``"not_judged"`` where the
+    ``"not_settled"`` with its spread, or ``"not_judged"`` where the
     channel's step is within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""

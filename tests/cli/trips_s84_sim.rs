@@ -99,7 +99,7 @@ fn replayed(dir: &Path, name: &str) -> (String, Vec<String>, String) {
     ]);
     let counts = said
         .split(": ")
-        .nth(1)
+        .nth(2)
         .unwrap()
         .split(',')
         .next()

@@ -174,14 +174,46 @@ pub fn write_columns_to(
         .into());
     }
     let header: Vec<&str> = columns.iter().map(|c| c.0).collect();
+    // The time keeps its steps: `digits` relative to the run's span, not
+    // to its origin (a log on Unix-epoch time, 1.69e9 s, written to nine
+    // digits had its 1 ms rows collapse to duplicates).
+    let digits: Vec<Option<usize>> = columns
+        .iter()
+        .map(|(name, v)| match *name == "t" {
+            true => digits.map(|d| time_digits(v, d)),
+            false => digits,
+        })
+        .collect();
     // The shortest text that reads back the same (no value of hundreds of
     // digits, 1e-300, no `-0`), or the digits the values carry.
-    let text = move |v: f64| match digits {
+    let text = move |v: f64, digits: Option<usize>| match digits {
         Some(d) => crate::format::carried(v, d),
         None => crate::format::exact(v),
     };
-    let rows = (0..n).map(move |i| columns.iter().map(move |c| text(c.1[i])));
+    let digits = &digits;
+    let rows = (0..n).map(move |i| {
+        columns
+            .iter()
+            .zip(digits)
+            .map(move |(c, d)| text(c.1[i], *d))
+    });
     write_csv(path, &header, rows)
+}
+
+/// The significant digits a time column `t` needs to carry `digits` of
+/// its span: as many more as its largest |t| has decades over the span
+/// (none for a run from zero), at most 17 (all an f64 has).
+fn time_digits(t: &[f64], digits: usize) -> usize {
+    let (lo, hi) = t
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    let (span, largest) = (hi - lo, lo.abs().max(hi.abs()));
+    if !(span > 0.0 && largest > span) {
+        return digits;
+    }
+    (digits + (largest / span).log10().ceil() as usize).min(17)
 }
 
 /// Refuses, before any work, when `out` is one of `inputs` (compared after

@@ -35,7 +35,7 @@ use driven::manoeuvre_inputs;
 pub use driven::{Drive, FixedStep};
 pub use ode::{DenseSolution, OdeSystem, Stats, Tolerances};
 
-use crate::manoeuvre::Manoeuvre;
+use crate::manoeuvre::{Manoeuvre, Replay};
 use crate::vehicle::{Inputs, Outputs, State, VehicleModel};
 
 /// A recorded simulation: one column per signal, one row per time step.
@@ -324,6 +324,11 @@ impl Integrator {
     /// Simulates `manoeuvre` from `x0` over its duration, recording a row
     /// every `step`.
     pub fn run(&self, model: &VehicleModel, manoeuvre: &Manoeuvre, x0: State) -> TimeHistory {
+        if let Some((origin, from_zero)) = from_origin(manoeuvre) {
+            let mut h = self.run(model, &from_zero, x0);
+            h.t.iter_mut().for_each(|t| *t += origin);
+            return h;
+        }
         match self.method {
             Method::Rk4 => self.run_rk4(model, manoeuvre, x0, None),
             Method::Dopri5(tol) => self.run_dopri5(model, manoeuvre, x0, &tol).0,
@@ -357,6 +362,12 @@ impl Integrator {
         x0: State,
         progress: Option<&std::sync::atomic::AtomicUsize>,
     ) -> Simulation {
+        if let Some((origin, from_zero)) = from_origin(manoeuvre) {
+            let mut sim = self.simulate_counted(model, &from_zero, x0, progress);
+            sim.history.t.iter_mut().for_each(|t| *t += origin);
+            sim.dense = sim.dense.map(|d| d.shifted(origin));
+            return sim;
+        }
         match self.method {
             Method::Rk4 => Simulation {
                 history: self.run_rk4(model, manoeuvre, x0, progress),
@@ -373,5 +384,22 @@ impl Integrator {
                 }
             }
         }
+    }
+}
+
+/// A replay whose time does not start at zero, moved to start there, with
+/// its origin, s: integrated in time from the run's start, so that a log
+/// on Unix-epoch time (1.69e9 s) is stepped as the same log from zero is
+/// (at 1.69e9 s an f64 resolves only 2.4e-7 s, and the step-size control
+/// rejected steps it would not have). The history is told in the log's
+/// own time.
+fn from_origin(manoeuvre: &Manoeuvre) -> Option<(f64, Manoeuvre)> {
+    match manoeuvre {
+        Manoeuvre::Replay(r) if r.t.first().is_some_and(|t| *t != 0.0) => {
+            let origin = r.t[0];
+            let t = r.t.iter().map(|t| t - origin).collect();
+            Some((origin, Manoeuvre::Replay(Replay { t, ..r.clone() })))
+        }
+        _ => None,
     }
 }

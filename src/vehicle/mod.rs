@@ -236,6 +236,15 @@ impl VehicleModel {
         f.max(r)
     }
 
+    /// The critical speed `√(−l/K)` of an oversteering car (K < 0,
+    /// [`Self::understeer_gradient`]), m/s: above it the linearised car's
+    /// straight running is unstable, and a step steer's response diverges
+    /// instead of settling. None for a car that does not oversteer.
+    pub fn critical_speed(&self) -> Option<f64> {
+        let k = self.understeer_gradient();
+        (k < 0.0).then(|| (-self.vehicle.wheelbase() / k).sqrt())
+    }
+
     /// Textbook steady-state yaw-rate gain r/δ = u/(l + K·u²) of the linear
     /// bicycle model, 1/s.
     pub fn linear_yaw_rate_gain(&self, speed: f64) -> f64 {

@@ -5,6 +5,7 @@
 //! the scenario's words do not say ([`checks`]).
 
 pub(crate) mod checks;
+mod critical;
 mod idle_effects;
 pub(crate) mod nominal_load;
 mod straight;
@@ -157,6 +158,15 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         ),
         _ => None,
     };
+    // An oversteering car stepped above its critical speed diverges: on
+    // linear tyres always, on others where the run did not settle; its
+    // "steady" values are no steady state's, so none are given.
+    let unstable = match &sc.manoeuvre {
+        Manoeuvre::StepSteer(s) => critical::above_critical(&sc.model, s.speed),
+        _ => None,
+    }
+    .filter(|_| checks::gripless(&sc) || metrics.as_ref().is_some_and(|m| !m.settled));
+    let metrics = metrics.filter(|_| unstable.is_none());
     // The tyres' grip on this road (the lower axle's): a sideslip with
     // the tyres far below it is a slow car's turn, not a slide.
     let friction = checks::axle_friction(&sc);
@@ -175,6 +185,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             },
         )
     });
+    warnings.extend(unstable.map(|u| u.to_string()));
     warnings.extend(metrics.as_ref().and_then(StepMetrics::settling_warning));
     // A `[metrics] filter_hz` slow enough to measure itself, said as
     // `metrics` says it of a log (its rows every step).

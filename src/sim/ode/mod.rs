@@ -149,6 +149,12 @@ impl<const N: usize> DenseSolution<N> {
     pub fn end(&self) -> f64 {
         self.segments.last().map_or(f64::NAN, |s| s.t0 + s.h)
     }
+    /// The solution with its times moved by `dt`, s (one integrated from
+    /// a run's start, told in its own time).
+    pub(crate) fn shifted(mut self, dt: f64) -> Self {
+        self.segments.iter_mut().for_each(|s| s.t0 += dt);
+        self
+    }
     /// Accepted step boundaries (start, every step end).
     pub(crate) fn step_times(&self) -> impl Iterator<Item = f64> + '_ {
         self.segments

@@ -3,9 +3,9 @@
 //! remaining effect added, their starts, and their global stages.
 
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::score::{Context, Scored, Started};
+use crate::diagnose::verdict::search::alone;
 use rayon::prelude::*;
 
 /// A set a greedy step tries: its effects, the starts of its global stage
@@ -53,25 +53,4 @@ pub(super) fn extensions<'a>(ctx: &Context<'a>, sets: Vec<SetStarts>) -> Vec<Sta
     sets.into_par_iter()
         .map(|(kinds, starts, salt)| ctx.started(kinds, &starts, salt))
         .collect()
-}
-
-/// The start of the set of `layout` (the current set's) with `added`
-/// appended at the added effect's own single fit `single`, the current
-/// set's effects off (`off`, its off vector): the set contains that
-/// single, and a fit started only from the current set's basin can stop
-/// short of its optimum. Where the current set was taken for parsimony
-/// over a twin of the added effect (a sensor delay over a steer path
-/// whose lag is idle), the set's fit otherwise ends between the two
-/// delays, each undetermined yet well inside its range, and fits the runs
-/// worse than the single it contains. Axle characteristics and roll
-/// dynamics the added effect fits are its own.
-pub(super) fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec<f64> {
-    let mut start = layout.combined(off, added, single);
-    let one = Layout::new(&[added], layout.axle);
-    start[layout.axles()].copy_from_slice(&single[one.axles()]);
-    let set = Layout::new(&[layout.kinds.as_slice(), &[added]].concat(), layout.axle);
-    if !one.roll().is_empty() {
-        start[set.roll()].copy_from_slice(&single[one.roll()]);
-    }
-    start
 }

@@ -31,15 +31,12 @@
 //! [`crate::diagnose::pipeline`] for the overview).
 
 use crate::diagnose::effects::{joined, set_of, EffectKind};
-#[cfg(test)]
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
-#[cfg(test)]
-use crate::diagnose::verdict::extend::alone;
 use crate::diagnose::verdict::extend::{extension_starts, extensions};
 use crate::diagnose::verdict::restricted::{prescreened, screened_restricted};
 use crate::diagnose::verdict::rules::{self, Candidate};
@@ -354,6 +351,27 @@ fn greedy(
         current = next;
     }
     (current, simpler)
+}
+
+/// The start of the set of `layout` (the current set's) with `added`
+/// appended at the added effect's own single fit `single`, the current
+/// set's effects off (`off`, its off vector): the set contains that
+/// single, and a fit started only from the current set's basin can stop
+/// short of its optimum. Where the current set was taken for parsimony
+/// over a twin of the added effect (a sensor delay over a steer path
+/// whose lag is idle), the set's fit otherwise ends between the two
+/// delays, each undetermined yet well inside its range, and fits the runs
+/// worse than the single it contains. Axle characteristics and roll
+/// dynamics the added effect fits are its own.
+pub(super) fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec<f64> {
+    let mut start = layout.combined(off, added, single);
+    let one = Layout::new(&[added], layout.axle);
+    start[layout.axles()].copy_from_slice(&single[one.axles()]);
+    let set = Layout::new(&[layout.kinds.as_slice(), &[added]].concat(), layout.axle);
+    if !one.roll().is_empty() {
+        start[set.roll()].copy_from_slice(&single[one.roll()]);
+    }
+    start
 }
 
 /// The accepted first effect's look-alikes, less those the verdict took in

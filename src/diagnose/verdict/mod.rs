@@ -11,7 +11,6 @@
 pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
-pub(crate) mod extend;
 pub(crate) mod restricted;
 pub mod rules;
 pub(crate) mod score;

@@ -40,30 +40,13 @@
 //! The screened rows then report the restricted fits (in-sample error,
 //! share of what the current set leaves, ΔBIC): a lower bound on what the
 //! sets remove, as the rows say.
-//!
-//! Before any global stage. The sets' global stages cost more than their
-//! restricted fits (on the racing log a third of the diagnosis's replays).
-//! So the restricted fits run first from each set's best start alone
-//! ([`prescreened`]: the current set at its fit, the added effect at its
-//! single fit or off — where the global stage itself starts), no global
-//! stage: where they screen the step, its rows report them (their global
-//! search none) and no global stage runs. Where they do not, the global
-//! stages run and the step is screened or polished from them as above,
-//! as before. A restricted fit from the global stage's best reaches at
-//! most as low as one from the start it searched from, bar a basin the
-//! search found and the start's polish missed; the ten points of
-//! [`RESTRICTED_MARGIN`] cover that too.
 
-use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::problem::Problem;
-use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::fit::{FitOutcome, FIT_TOLERANCE};
 use crate::diagnose::model::channels::ChannelErrors;
 use crate::diagnose::report::Screened;
 use crate::diagnose::timing::{Phase, Stamps};
 use crate::diagnose::verdict::baseline::Baseline;
-use crate::diagnose::verdict::candidate::Setting;
-use crate::diagnose::verdict::extend::SetStarts;
 use crate::diagnose::verdict::rules;
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{ACCEPT, RESTRICTED_MARGIN, SCREEN_MARGIN};
@@ -72,8 +55,6 @@ use crate::diagnose::verdict::score::{searched_from, Context, Scored, Started};
 use crate::diagnose::verdict::screening::screened_additions;
 use crate::diagnose::verdict::screening::screened_row;
 use crate::optim::bounded::{BoundedLm, Jacobians};
-use crate::optim::local::Residuals;
-use rayon::prelude::*;
 use std::time::Instant;
 
 /// Iteration budget of a restricted fit: its one to four parameters start
@@ -145,48 +126,6 @@ impl Context<'_> {
             prior_weight: None,
         }
     }
-}
-
-impl<'a> Context<'a> {
-    /// A set's start without a global stage: the lowest in cost of `starts`
-    /// (those [`Context::started`] searches from), its global search none.
-    pub(crate) fn unsearched(&self, kinds: Vec<EffectKind>, starts: &[Vec<f64>]) -> Started<'a> {
-        let s = Setting::new(self.bases, kinds);
-        let stamps = self.timing.map(|_| Stamps::default());
-        let t0 = Instant::now();
-        let problem = self.all_runs(&s, stamps.as_ref(), self.bases.prior, s.bounds());
-        let start = starts
-            .iter()
-            .map(|p| (problem.cost(p), p))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or_else(|| s.off(), |(_, p)| p.clone());
-        drop(problem);
-        if let (Some(rec), Some(st)) = (self.timing, &stamps) {
-            rec.add(Phase::CandidateSearch, t0.elapsed(), st.count());
-        }
-        Started {
-            setting: s,
-            start,
-            global: GlobalSearch::None,
-        }
-    }
-}
-
-/// The greedy step's screening by restricted fits from the sets' starts,
-/// before their global stages ([`Context::unsearched`]): the screened
-/// rows where [`screened_restricted`] screens the step, else None (the
-/// global stages are to run).
-pub(crate) fn prescreened(
-    ctx: &Context,
-    base: &Baseline,
-    current: &Scored,
-    sets: &[SetStarts],
-) -> Option<Vec<Screened>> {
-    let restricted: Vec<Scored> = sets
-        .par_iter()
-        .map(|(kinds, starts, _)| ctx.restricted(&ctx.unsearched(kinds.clone(), starts)))
-        .collect();
-    screened_restricted(ctx, base, current, &restricted)
 }
 
 /// The greedy step's screening by restricted fits (`restricted`, one per

@@ -294,7 +294,7 @@ impl<'a> Context<'a> {
     /// The problem of fitting setting `s` on all runs with the prior's rows
     /// `prior`, its evaluations stamped on `stamps`: the same for a fit and
     /// for the second derivatives its cross-validation takes later.
-    pub(crate) fn all_runs<'s>(
+    fn all_runs<'s>(
         &'s self,
         s: &'s Setting,
         stamps: Option<&'s Stamps>,

@@ -37,15 +37,14 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
-use crate::diagnose::verdict::extend::{extension_starts, extensions};
-use crate::diagnose::verdict::restricted::{prescreened, screened_restricted};
+use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{
     ACCEPT, ALTERNATIVE_STARTS, CONFOUNDED, CONFOUNDED_NOISE, DISAGREEMENT, PARSIMONY, PROMISING,
     SIGNIFICANT,
 };
-use crate::diagnose::verdict::score::{Context, Fitted, Scored};
+use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
 use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
 use rayon::prelude::*;
 
@@ -298,20 +297,9 @@ fn greedy(
             .map(|&i| singles[i].kinds[0])
             .filter(|e| !current.kinds.contains(e))
             .collect();
-        let sets = extension_starts(ctx, singles, base, &current, &tries);
-        // The restricted fits from the sets' starts first: where they
-        // screen the step, the sets' global stages are spared too
-        // (`prescreened`).
-        if let Some(rows) = screening
-            .then(|| prescreened(ctx, base, &current, &sets))
-            .flatten()
-        {
-            out.screened.extend(rows);
-            break;
-        }
-        let started = extensions(ctx, sets);
-        // The restricted fits from the global stages' best: where they
-        // screen the step, the sets' polish is spared (`restricted`).
+        let started = extensions(ctx, singles, base, &current, &tries);
+        // The restricted fits first: where they screen the step, the sets'
+        // polish is spared (`restricted`).
         if screening {
             let restricted: Vec<Scored> = started.par_iter().map(|s| ctx.restricted(s)).collect();
             if let Some(rows) = screened_restricted(ctx, base, &current, &restricted) {
@@ -353,6 +341,38 @@ fn greedy(
     (current, simpler)
 }
 
+/// The sets of `current` plus each effect of `tries`, their global stage on
+/// all runs done ([`Context::started`]). Each set's seed is that of the effect added (its name's, not its place
+/// in the ranking, which screening shortens), one apart from its single
+/// fit's.
+fn extensions<'a>(
+    ctx: &Context<'a>,
+    singles: &[Scored],
+    base: &Baseline,
+    current: &Scored,
+    tries: &[EffectKind],
+) -> Vec<Started<'a>> {
+    tries
+        .par_iter()
+        .map(|e| {
+            let mut kinds = current.kinds.clone();
+            kinds.push(*e);
+            let single = singles.iter().find(|s| s.kinds[0] == *e).expect("scored");
+            let layout = base.layout(&current.kinds);
+            let members = layout.combined(&current.full.params, *e, &single.full.params);
+            let extended = layout.combined(&current.full.params, *e, &ctx.off(&[*e]));
+            // Each member's own optimum: the axles the added effect
+            // fitted alone want can differ from the current set's.
+            let mut own = members.clone();
+            let axles = layout.axles();
+            own[axles.clone()].copy_from_slice(&single.full.params[axles]);
+            let added = alone(&layout, &ctx.off(&current.kinds), *e, &single.full.params);
+            let starts = [members, extended, own, added];
+            ctx.started(kinds, &starts, e.seed().wrapping_add(1))
+        })
+        .collect()
+}
+
 /// The start of the set of `layout` (the current set's) with `added`
 /// appended at the added effect's own single fit `single`, the current
 /// set's effects off (`off`, its off vector): the set contains that
@@ -363,7 +383,7 @@ fn greedy(
 /// delays, each undetermined yet well inside its range, and fits the runs
 /// worse than the single it contains. Axle characteristics and roll
 /// dynamics the added effect fits are its own.
-pub(super) fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec<f64> {
+fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec<f64> {
     let mut start = layout.combined(off, added, single);
     let one = Layout::new(&[added], layout.axle);
     start[layout.axles()].copy_from_slice(&single[one.axles()]);

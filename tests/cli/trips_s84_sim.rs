@@ -1,5 +1,5 @@
 //! What `simulate` and `metrics` said of runs they should not have
-//! measured as they did (session 84): an oversteering car stepped above
+//! measured as they did: an oversteering car stepped above
 //! its critical speed reported as a slide past a grip its linear tyres do
 //! not have, with a steady state it never reaches.
 

@@ -153,7 +153,8 @@ mod tests {
         assert_eq!(against.len(), 1);
         assert_eq!(against[0].file, "b.csv");
         assert_eq!(against[0].samples, 8);
-        assert!((against[0].correlation + 1.0).abs() < 1e-12);
+        // Pooled: Σxy = −5 − 10, Σxx = 5 + 5, Σyy = 5 + 20: −15/√250.
+        assert!((against[0].correlation + 3.0 / 10f64.sqrt()).abs() < 1e-12);
     }
 
     #[test]

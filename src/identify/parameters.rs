@@ -5,6 +5,7 @@
 
 use super::{Channel, ParameterReport, Spread};
 use crate::format::{readable, rounded};
+use crate::optim::bounded::LIMIT_RESOLUTION;
 use crate::tyre::{Parameterised, Tyre};
 use nalgebra::DMatrix;
 
@@ -67,11 +68,6 @@ pub(super) fn parameter_reports(
     }
     parameters
 }
-
-/// The share of a parameter's box within which a value stands on a
-/// physical limit, as `diagnose` takes it (its `LIMIT_RESOLUTION`): no
-/// fit resolves a decay of 1e-17 from none.
-const LIMIT_RESOLUTION: f64 = 1e-4;
 
 /// Whether `v` in its box `(lo, hi)`, whose lower end is a physical
 /// limit, stands on it as a fit: within [`LIMIT_RESOLUTION`] of it, and

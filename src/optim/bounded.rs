@@ -73,6 +73,12 @@ impl Default for BoundedLm {
 /// Levenberg–Marquardt tail turn little from one to the next.
 pub const SECANT_STEPS: usize = 4;
 
+/// A fitted value within this share of its parameter's range from a
+/// physical limit stands on it: no data resolve the difference (a steer
+/// lag of a few microseconds is no lag, a tyre's friction decay of 1e-17
+/// none). `identify` and `diagnose` judge their fits by it.
+pub const LIMIT_RESOLUTION: f64 = 1e-4;
+
 /// Share of the decrease its model predicted below which a step taken on
 /// an updated Jacobian calls for a fresh one.
 const SECANT_RATIO: f64 = 0.25;

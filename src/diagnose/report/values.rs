@@ -92,10 +92,10 @@ pub fn jackknife(values: &[f64]) -> Option<f64> {
 }
 
 /// A value within this share of its parameter's range from a physical
-/// limit stands on it: no run resolves the difference (a steer lag of a
-/// few microseconds is no lag). A search bound is where a fit pressed
-/// against it stops, exactly ([`Parameter::bound_at`]).
-pub const LIMIT_RESOLUTION: f64 = 1e-4;
+/// limit stands on it ([`crate::optim::bounded::LIMIT_RESOLUTION`]). A
+/// search bound is where a fit pressed against it stops, exactly
+/// ([`Parameter::bound_at`]).
+pub use crate::optim::bounded::LIMIT_RESOLUTION;
 
 impl ParameterValue {
     /// Parameter `q` of the effect group `group` fitted to `value` with

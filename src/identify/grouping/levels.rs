@@ -21,6 +21,13 @@ pub struct Level {
     pub samples: usize,
 }
 
+impl Level {
+    /// Whether `v` lies in the level's range of samples.
+    pub fn holds(&self, v: f64) -> bool {
+        v >= self.lo && v <= self.hi
+    }
+}
+
 /// The levels of one variable and what did not belong to any.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Levels {
@@ -40,7 +47,7 @@ pub struct Levels {
 impl Levels {
     /// The level holding `v`.
     pub(super) fn find(&self, v: f64) -> Option<usize> {
-        self.levels.iter().position(|l| v >= l.lo && v <= l.hi)
+        self.levels.iter().position(|l| l.holds(v))
     }
     /// The level a requested value selects: the one whose band (its range
     /// widened by the separation) holds it, nearest nominal first.

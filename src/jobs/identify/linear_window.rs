@@ -119,24 +119,19 @@ pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
     }
 }
 
-/// Refuses a linear fit `tyre` to `conditions` (the window's) whose
-/// stiffness per unit of their median load is below any tyre's while the
-/// file's slip angles `alpha` reach beyond any rig's sweep in radians:
-/// the column in degrees (`error/slip_degrees.rs`).
+/// Refuses a linear fit `tyre` whose stiffness per unit of `load` (the
+/// median of the window's conditions' loads) is below any tyre's while
+/// the file's slip angles `alpha` reach beyond any rig's sweep in
+/// radians: the column in degrees (`error/slip_degrees.rs`).
 pub(crate) fn refuse_degrees(
     data: &std::path::Path,
     tyre: &Tyre,
-    conditions: &[Condition],
+    load: f64,
     alpha: &[f64],
 ) -> Result<(), crate::error::Error> {
     use crate::error::{InputError, InputProblem, SlipAngleInDegrees, UnitSlip};
     use crate::tyre::sizes::MIN_CORNERING_PER_LOAD;
     let Tyre::Linear(l) = tyre else {
-        return Ok(());
-    };
-    let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
-    loads.sort_by(f64::total_cmp);
-    let Some(&load) = loads.get(loads.len() / 2) else {
         return Ok(());
     };
     let reach = alpha

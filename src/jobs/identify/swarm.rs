@@ -60,7 +60,8 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     };
     let mut loads: Vec<f64> = conditions.iter().map(|c| c.fz).collect();
     loads.sort_by(f64::total_cmp);
-    let tyre0 = start_tyre_of(model, loads[loads.len() / 2])?;
+    let median_load = loads[loads.len() / 2];
+    let tyre0 = start_tyre_of(model, median_load)?;
     refuse_overwrites(&outputs(o, true), std::slice::from_ref(&o.data))?;
     let lock = output_lock(o)?;
     let pooled = Pooled::of(&tyre0, &grouped.report);
@@ -74,7 +75,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
     });
     let fit = fit.map_err(on_data(o, None))?;
     if window.is_some() {
-        linear_window::refuse_degrees(&o.data, &fit.tyre, &conditions, &lateral.alpha)?;
+        linear_window::refuse_degrees(&o.data, &fit.tyre, median_load, &lateral.alpha)?;
     }
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),

@@ -58,7 +58,7 @@ impl Measured {
         let kept = |i: &usize| {
             selected
                 .iter()
-                .all(|s| value(s.variable, *i).is_some_and(|v| v >= s.level.lo && v <= s.level.hi))
+                .all(|s| value(s.variable, *i).is_some_and(|v| s.level.holds(v)))
         };
         let rows: Vec<usize> = (0..data.len()).filter(kept).collect();
         let finite = |v: Option<&Vec<f64>>| {

@@ -220,9 +220,26 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
             (x.beta - bs).powi(2),
         ]
     });
+    // The means over sixths of the steady window and of the window before
+    // it (within the record), each channel's normalised by its step, for
+    // where its trend heads.
+    let from = (t_last - 2.0 * s.steady_window).max(t_first);
+    let w = (t_last - from) / super::settling::TREND_PARTS as f64;
+    let parts: [[f64; 4]; super::settling::TREND_PARTS] = std::array::from_fn(|k| {
+        let a = from + k as f64 * w;
+        mean(rec, (a, a + w))
+    });
+    let trend = |i: usize, x0: f64, step: f64| {
+        super::settling::trend_of_parts(parts.map(|m| (m[i] - x0) / step), 0.0)
+    };
+    let b_scale = super::sideslip_scale(bs - b0, d_step);
+    let b_trend = trend(3, b0, bs - b0).map(|tr| super::settling::Trend {
+        heads: tr.heads * ((bs - b0) / b_scale).abs(),
+        ..tr
+    });
     let r_spread = (vr / s.steady_window).sqrt() / r_step.abs();
     let a_spread = (va / s.steady_window).sqrt() / a_step.abs();
-    let b_spread = (vb / s.steady_window).sqrt() / super::sideslip_scale(bs - b0, d_step);
+    let b_spread = (vb / s.steady_window).sqrt() / b_scale;
     let dn = |x: &Sample| (x.steer - d0) / d_step;
     let rn = |x: &Sample| (x.yaw_rate - r0) / r_step;
     let an = |x: &Sample| (x.ay - a0) / a_step;
@@ -251,6 +268,11 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         let d = dn(x);
         [(d - rn(x)).powi(2), (d - an(x)).powi(2)]
     });
+    let settling = super::ChannelSettling {
+        yaw_rate: super::Settling::of_spread(r_spread, trend(1, r0, r_step)),
+        ay: Some(super::Settling::of_spread(a_spread, trend(2, a0, a_step))),
+        beta: Some(super::Settling::of_spread(b_spread, b_trend)),
+    };
     Ok(StepMetrics {
         steer_step: d_step,
         time_zero: t0,
@@ -266,14 +288,8 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         yaw_rate_total_variance: e_r,
         ay_total_variance: Some(e_ay),
         er: Some(s.e1 * e_r + s.e2 * e_ay),
-        settled: [r_spread, a_spread, b_spread]
-            .iter()
-            .all(|&spread| spread < super::SETTLED_SPREAD),
-        settling: super::ChannelSettling {
-            yaw_rate: super::Settling::of_spread(r_spread),
-            ay: Some(super::Settling::of_spread(a_spread)),
-            beta: Some(super::Settling::of_spread(b_spread)),
-        },
+        settled: settling.settled(),
+        settling,
         yaw_rate_noise: 0.0,
         yaw_rate_peak_threshold: threshold * 100.0,
         // Unfiltered: no ringing of a filter.

@@ -335,6 +335,8 @@ struct Normalised {
     noise: f64,
     /// Samples in the shorter of the initial and steady windows.
     samples: usize,
+    /// Where the steady window's trend heads ([`settling::trend`]).
+    trend: Option<settling::Trend>,
 }
 
 fn normalise(
@@ -355,12 +357,17 @@ fn normalise(
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
+    let values: Vec<f64> = x.iter().map(|v| (v - x0) / step).collect();
+    let noise = sd0 / step.abs();
+    let from = (t_last - 2.0 * s.steady_window).max(t_first);
+    let trend = settling::trend(t, &values, from, t_last, noise);
     Ok(Normalised {
-        values: x.iter().map(|v| (v - x0) / step).collect(),
+        values,
         steady: step,
         spread: sd / step.abs(),
-        noise: sd0 / step.abs(),
+        noise,
         samples,
+        trend,
     })
 }
 

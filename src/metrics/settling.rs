@@ -2,6 +2,11 @@
 //! about the steady value beyond its white noise, within 2 % of the step,
 //! or within what the noise leaves unknown of the step itself (a noisy
 //! short log). Spreads and noises relative to the step (dimensionless).
+//! A slow response can sit within that spread while still heading away
+//! from its window's mean (an oversteering car near its critical speed
+//! creeps towards a yaw rate 9 % above the window's): the window's trend,
+//! its thirds' means extrapolated as a geometric approach, must also stay
+//! within 2 % of the step ([`SETTLED_DRIFT`]).
 //! A channel whose step is within a few of its noise deviations is not
 //! judged at all: its steady window's spread is its noise's, whatever the
 //! car does (a synthetic 60 km/h step's sideslip moves 0.0033 rad under a
@@ -13,6 +18,11 @@ use serde::{Deserialize, Serialize};
 /// The spread about the steady value, relative to the step, beyond which
 /// a response has not settled.
 pub(super) const SETTLED_SPREAD: f64 = 0.02;
+
+/// How far, as a share of the step, the trend across the steady window may
+/// still head beyond the window's mean: the spread's own tolerance, so a
+/// response is judged settled by one measure of "within 2 %".
+pub(super) const SETTLED_DRIFT: f64 = SETTLED_SPREAD;
 
 /// The noise deviations (of the raw channel) a step must exceed for its
 /// settling to be judged: within them the step itself is uncertain by a
@@ -32,6 +42,18 @@ pub enum Settling {
         /// The spread beyond the noise, a share of the step (of the
         /// sideslip's scale, [`sideslip_scale`]).
         beyond: f64,
+    },
+    /// Within its spread, but its trend across the steady window heads
+    /// `heads` (a share of its step) beyond the window's mean, more than
+    /// [`SETTLED_DRIFT`].
+    Drifting {
+        /// Where the trend heads beyond the window's mean, a share of the
+        /// step (of the sideslip's scale, [`sideslip_scale`]).
+        heads: f64,
+        /// Whether the trend slows across the window (a geometric approach
+        /// to a steady value); false where it holds or grows (a car
+        /// leaving its steady turn).
+        converging: bool,
     },
     /// Its step is within [`JUDGED_NOISES`] of its noise: not judged.
     NotJudged {
@@ -54,11 +76,15 @@ pub struct ChannelSettling {
 }
 
 impl Settling {
-    /// A noise-free record's verdict from its spread (a share of the step).
-    pub(super) fn of_spread(spread: f64) -> Self {
-        match spread < SETTLED_SPREAD {
-            true => Settling::Settled,
-            false => Settling::NotSettled { beyond: spread },
+    /// A noise-free record's verdict from its spread (a share of the step)
+    /// and its steady window's trend.
+    pub(super) fn of_spread(spread: f64, trend: Option<Trend>) -> Self {
+        match (spread < SETTLED_SPREAD, trend) {
+            (false, _) => Settling::NotSettled { beyond: spread },
+            (true, Some(Trend { heads, converging })) if heads >= SETTLED_DRIFT => {
+                Settling::Drifting { heads, converging }
+            }
+            (true, _) => Settling::Settled,
         }
     }
 }
@@ -66,8 +92,30 @@ impl Settling {
 impl ChannelSettling {
     /// Whether no channel judged has failed to settle.
     pub fn settled(&self) -> bool {
-        let ok = |s: &Settling| !matches!(s, Settling::NotSettled { .. });
+        let ok =
+            |s: &Settling| !matches!(s, Settling::NotSettled { .. } | Settling::Drifting { .. });
         ok(&self.yaw_rate) && self.ay.iter().all(ok) && self.beta.iter().all(ok)
+    }
+
+    /// Whether every channel that has not settled is only still
+    /// converging to its steady value (none spreads, none drifts away): a
+    /// slow response whose metrics a longer step would settle, not a car
+    /// leaving its steady turn. The largest share still to go, if so.
+    pub fn only_converging(&self) -> Option<f64> {
+        let mut most: Option<f64> = None;
+        for (_, _, s) in self.named() {
+            match s {
+                Settling::NotSettled { .. } => return None,
+                Settling::Drifting {
+                    converging: false, ..
+                } => return None,
+                Settling::Drifting { heads, .. } => {
+                    most = Some(most.map_or(heads, |m| m.max(heads)))
+                }
+                Settling::Settled | Settling::NotJudged { .. } => {}
+            }
+        }
+        most
     }
 
     /// Each channel with its name and unit.
@@ -89,6 +137,11 @@ impl ChannelSettling {
                 Settling::NotSettled { beyond } => Some(format!(
                     "the {name} spreads by {} % of its step beyond its noise",
                     crate::format::significant(100.0 * beyond, 2)
+                )),
+                Settling::Drifting { heads, converging } => Some(format!(
+                    "the {name} is still {}: the trend across its steady window heads {} % of its step beyond its steady value",
+                    if *converging { "settling" } else { "drifting" },
+                    crate::format::significant(100.0 * heads, 2)
                 )),
                 _ => None,
             })
@@ -168,8 +221,201 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
     }
     let band = 2.0 * n.noise * to_scale * (2.0 / n.samples.max(1) as f64).sqrt();
     let beyond = beyond_noise(n.spread * to_scale, noise * to_scale);
-    match beyond < SETTLED_SPREAD || beyond < band {
-        true => Settling::Settled,
-        false => Settling::NotSettled { beyond },
+    if beyond >= SETTLED_SPREAD && beyond >= band {
+        return Settling::NotSettled { beyond };
+    }
+    match n.trend {
+        Some(Trend { heads, converging }) if heads * to_scale >= SETTLED_DRIFT => {
+            Settling::Drifting {
+                heads: heads * to_scale,
+                converging,
+            }
+        }
+        _ => Settling::Settled,
+    }
+}
+
+/// Where a steady window's trend heads, relative to the step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Trend {
+    /// How far beyond the window's mean the trend heads (a share of the
+    /// step, ≥ 0).
+    pub heads: f64,
+    /// Whether it slows across the window.
+    pub converging: bool,
+}
+
+/// The trend of the normalised response `x` (steady value 1 over the
+/// steady window) at times `t`, over [`TREND_PARTS`] equal parts of the
+/// span from `from` (a steady window before the steady window) to `to`
+/// (the record's end), `noise` the raw noise deviation relative to the
+/// step ([`trend_of_parts`]).
+pub(super) fn trend(t: &[f64], x: &[f64], from: f64, to: f64, noise: f64) -> Option<Trend> {
+    let part = (to - from) / TREND_PARTS as f64;
+    let mut sums = [(0.0, 0usize); TREND_PARTS];
+    for (ti, xi) in t.iter().zip(x) {
+        if *ti >= from && *ti <= to {
+            let k = (((ti - from) / part) as usize).min(TREND_PARTS - 1);
+            sums[k].0 += xi;
+            sums[k].1 += 1;
+        }
+    }
+    if sums.iter().any(|s| s.1 == 0) {
+        return None;
+    }
+    // A part's mean is uncertain by σ/√n; two parts' difference by √2 as much.
+    let fewest = sums.iter().map(|s| s.1).min().unwrap_or(1) as f64;
+    trend_of_parts(
+        sums.map(|(s, n)| s / n as f64),
+        noise * (2.0 / fewest).sqrt(),
+    )
+}
+
+/// The parts a trend is read over: sixths of the steady window and of the
+/// window before it.
+pub(super) const TREND_PARTS: usize = 12;
+
+/// Where the trend of a normalised response (steady value 1 over its
+/// steady window) heads, from the means of [`TREND_PARTS`] equal parts
+/// spanning the steady window and the window before it; `deviation` is
+/// the uncertainty of the difference of two parts' means (0 for a
+/// noise-free simulation, where a change below 10⁻⁶ of the step is
+/// rounding).
+///
+/// A trend is one only where every part moves the same way, each by more
+/// than three deviations, over both windows: a ringing response turns back
+/// within them (the spread's to judge), and noise turns a flat one back
+/// and forth. The steady window's thirds' means m₁, m₂, m₃ of a geometric
+/// approach x = L − c·qᵗ form a geometric sequence whose limit is
+/// L = m₃ + d₂·q/(1 − q), with d₁ = m₂ − m₁, d₂ = m₃ − m₂, q = d₂/d₁ < 1; a
+/// trend that does not slow (q ≥ 1) heads at least a window's change
+/// beyond its last third.
+pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Option<Trend> {
+    let significant = (3.0 * deviation).max(1e-6);
+    let rising = parts[1] > parts[0];
+    let moves = parts.windows(2).map(|w| w[1] - w[0]);
+    if moves
+        .into_iter()
+        .any(|d| (d > 0.0) != rising || d.abs() < significant)
+    {
+        return None;
+    }
+    let last = &parts[TREND_PARTS / 2..];
+    let [m1, m2, m3] = [0, 2, 4].map(|k| 0.5 * (last[k] + last[k + 1]));
+    let (d1, d2) = (m2 - m1, m3 - m2);
+    if d2.abs() >= d1.abs() {
+        return Some(Trend {
+            heads: (m3 - 1.0).abs() + (m3 - m1).abs(),
+            converging: false,
+        });
+    }
+    let q = d2 / d1;
+    Some(Trend {
+        heads: (m3 + d2 * q / (1.0 - q) - 1.0).abs(),
+        converging: true,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The means over [`TREND_PARTS`] parts of [0, 2] of `x(t)`, normalised
+    /// so that the last half's mean is 1 (as a steady window's is).
+    fn parts(x: impl Fn(f64) -> f64) -> [f64; TREND_PARTS] {
+        let n = 400;
+        let w = 2.0 / TREND_PARTS as f64;
+        let raw: [f64; TREND_PARTS] = std::array::from_fn(|k| {
+            (0..n)
+                .map(|i| x(w * (k as f64 + (i as f64 + 0.5) / n as f64)))
+                .sum::<f64>()
+                / n as f64
+        });
+        let steady = raw[TREND_PARTS / 2..].iter().sum::<f64>() / (TREND_PARTS / 2) as f64;
+        raw.map(|m| m / steady)
+    }
+
+    #[test]
+    fn a_geometric_approach_heads_to_its_limit() {
+        // x = L − c·e^(−t/τ): the limit relative to the last window's mean.
+        let (limit, c, tau) = (1.0, 0.3, 0.8);
+        let x = |t: f64| limit - c * (-(t + 2.0) / tau).exp();
+        let p = parts(x);
+        let steady = {
+            let n = 4000;
+            (0..n)
+                .map(|i| x(1.0 + (i as f64 + 0.5) / n as f64))
+                .sum::<f64>()
+                / n as f64
+        };
+        let trend = trend_of_parts(p, 0.0).unwrap();
+        assert!(trend.converging);
+        let expected = limit / steady - 1.0;
+        assert!(
+            (trend.heads - expected).abs() < 1e-3 * expected,
+            "{} vs {expected}",
+            trend.heads
+        );
+    }
+
+    #[test]
+    fn ringing_that_turns_back_is_no_trend() {
+        // A decaying oscillation of period 1.5 s: monotone over one window
+        // at times, never over two.
+        let x =
+            |t: f64| 1.0 + 0.05 * (-t / 3.0).exp() * (2.0 * std::f64::consts::PI * t / 1.5).cos();
+        for shift in [0.0, 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4] {
+            assert_eq!(
+                trend_of_parts(parts(|t| x(t + shift)), 0.0),
+                None,
+                "{shift}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_change_within_the_noise_is_no_trend() {
+        let p = parts(|t| 1.0 + 0.01 * t);
+        // Each part moves by 0.01 · 2/12 of the step: within three deviations of 0.0006.
+        assert_eq!(trend_of_parts(p, 0.0006), None);
+        assert!(trend_of_parts(p, 0.0005).is_some());
+    }
+
+    #[test]
+    fn a_trend_that_does_not_slow_is_not_converging() {
+        let trend = trend_of_parts(parts(|t| 1.0 + 0.05 * t * t), 0.0).unwrap();
+        assert!(!trend.converging);
+        assert!(trend.heads > 0.05, "{}", trend.heads);
+    }
+
+    #[test]
+    fn a_settled_spread_with_a_trend_beyond_the_drift_is_drifting() {
+        let trend = Trend {
+            heads: 0.089,
+            converging: true,
+        };
+        assert_eq!(
+            Settling::of_spread(0.01, Some(trend)),
+            Settling::Drifting {
+                heads: 0.089,
+                converging: true
+            }
+        );
+        let small = Trend {
+            heads: 0.5 * SETTLED_DRIFT,
+            converging: true,
+        };
+        assert_eq!(Settling::of_spread(0.01, Some(small)), Settling::Settled);
+        assert_eq!(
+            Settling::of_spread(0.03, Some(trend)),
+            Settling::NotSettled { beyond: 0.03 }
+        );
+        let channels = ChannelSettling {
+            yaw_rate: Settling::of_spread(0.01, Some(trend)),
+            ay: Some(Settling::Settled),
+            beta: None,
+        };
+        assert!(!channels.settled());
+        assert_eq!(channels.only_converging(), Some(0.089));
     }
 }

@@ -6,6 +6,10 @@
 //! overshoot: the best-looking number of the map for the worst car. Such a
 //! point is flagged, counted and left out of the maps, the network and the
 //! inverse, as [`crate::metrics::applicability`] says of a single run.
+//! A slow response that is still converging at the step's end (its trend
+//! heads a little further, but slows: no divergence) is a handling
+//! response whose steady values are a little short: it stays in the maps,
+//! flagged, and a longer step settles it.
 
 use super::Sample;
 use crate::metrics::applicability::SLIDING_SIDESLIP;
@@ -18,6 +22,9 @@ use serde::Serialize;
 pub enum Response {
     /// A handling response: settled, below the tyres' limit.
     Handling,
+    /// A handling response still converging at the step's end: its steady
+    /// values head a share (carried) of their step further. Kept in the maps.
+    StillSettling(f64),
     /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°): the car
     /// slides past its grip. Carries the sideslip, rad.
     Sliding(f64),
@@ -37,20 +44,23 @@ impl Response {
         };
         match m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
             Some(beta) => Response::Sliding(beta),
-            None if !m.settled => Response::NotSettled,
+            None if !m.settled => match m.settling.only_converging() {
+                Some(heads) => Response::StillSettling(heads),
+                None => Response::NotSettled,
+            },
             None => Response::Handling,
         }
     }
 
     /// Whether the metrics describe handling.
     pub fn is_handling(self) -> bool {
-        self == Response::Handling
+        matches!(self, Response::Handling | Response::StillSettling(_))
     }
 
     /// The word of `study.csv`'s `response` column.
     pub fn word(self) -> &'static str {
         match self {
-            Response::Handling => "handling",
+            Response::Handling | Response::StillSettling(_) => "handling",
             Response::Sliding(_) => "sliding",
             Response::NotSettled => "not_settled",
             Response::NoSteadyState => "no_steady_state",
@@ -58,10 +68,15 @@ impl Response {
     }
 
     /// Why the metrics of a response that is no handling response are left
-    /// empty (`study.csv`'s `note`); `None` for a handling response.
+    /// empty, or how far a response still settling has to go
+    /// (`study.csv`'s `note`); `None` for a settled handling response.
     pub fn note(self) -> Option<String> {
         match self {
             Response::Handling => None,
+            Response::StillSettling(heads) => Some(format!(
+                "still settling at the end of the step: a steady value heads {} % of its step further; metrics kept, a longer step settles them",
+                crate::format::significant(100.0 * heads, 2)
+            )),
             Response::Sliding(beta) => Some(format!(
                 "steady sideslip {:.1} deg, beyond 10 deg: the car slides past its grip; no handling response, metrics left empty",
                 beta.to_degrees()
@@ -96,6 +111,9 @@ pub struct NotHandling {
     pub not_settled: usize,
     /// Without a steady state.
     pub without_steady_state: usize,
+    /// Handling responses still converging at the step's end (kept; not
+    /// in the total of those left out).
+    pub still_settling: usize,
     /// The largest steady sideslip of the sliding ones, rad (signed).
     pub largest_sideslip: Option<f64>,
 }
@@ -107,6 +125,7 @@ impl NotHandling {
         for s in samples {
             match s.response() {
                 Response::Handling => {}
+                Response::StillSettling(_) => n.still_settling += 1,
                 Response::Sliding(beta) => {
                     n.sliding += 1;
                     if n.largest_sideslip.is_none_or(|b: f64| beta.abs() > b.abs()) {

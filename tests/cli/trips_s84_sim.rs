@@ -12,7 +12,7 @@ fn oversteering(dir: &Path, speed: f64) -> PathBuf {
 }
 
 /// [`oversteering`] with a step of `steer` rad ending at `end` s.
-fn oversteering_step(dir: &Path, speed: f64, steer: f64, end: f64) -> PathBuf {
+pub(super) fn oversteering_step(dir: &Path, speed: f64, steer: f64, end: f64) -> PathBuf {
     let tyre = root().join("tyres/linear.toml");
     let path = dir.join("over.toml");
     let text = format!(

@@ -82,8 +82,10 @@ class StepMetrics:
     settling: Dict[str, Any]
     """The verdict on each channel's steady window (``yaw_rate``, ``ay``,
     ``beta``; None for a channel not recorded): ``{"verdict": "settled"}``,
-    ``"not_settled"`` with its spread, or ``"not_judged"`` where the
-    channel's step is within a few noise deviations."""
+    ``"not_settled"`` with its spread, ``"drifting"`` with where its
+    trend heads (``heads``, share of the step) and whether it slows
+    (``converging``), or ``"not_judged"`` where the channel's step is
+    within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""
     yaw_rate_peak_threshold: float

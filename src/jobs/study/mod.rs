@@ -44,6 +44,10 @@ pub struct StudySummary {
     /// Combinations (not sliding) whose response has not settled by the
     /// end of the step: no handling response (their metrics are left out).
     pub not_settled: usize,
+    /// Combinations still converging at the end of the step (a slow
+    /// response): kept in the maps as handling responses, flagged in
+    /// study.csv's `note`.
+    pub still_settling: usize,
     /// The largest steady sideslip of the sliding ones, rad (printed).
     #[serde(skip)]
     pub largest_sideslip: Option<f64>,
@@ -349,6 +353,7 @@ impl Job {
                 without_steady_state: not_handling.without_steady_state,
                 sliding: not_handling.sliding,
                 not_settled: not_handling.not_settled,
+                still_settling: not_handling.still_settling,
                 largest_sideslip: not_handling.largest_sideslip,
             },
             rbf: net.map(|n| n.1),
@@ -445,6 +450,7 @@ impl StudyReport {
             ),
         ];
         out.extend(table::not_handling_line(s));
+        out.extend(table::still_settling_line(s));
         if let Some(r) = &self.rbf {
             out.push(format!(
                 "  RBF (spread {} s): trained on {} pairs, condition number {:.2e}, largest training misfit {:.3} {u}",

@@ -103,6 +103,18 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
     ))
 }
 
+/// The terminal's line on the combinations still converging at the end
+/// of the step, where there are any: kept, but their steady values are a
+/// little short of where a longer step would take them.
+pub(super) fn still_settling_line(s: &StudySummary) -> Option<String> {
+    (s.still_settling > 0).then(|| {
+        format!(
+            "  still settling at the end of the step: {} of {} combinations (slow, converging responses; kept in the maps, their steady values a little short: study.csv's `note` says how far; a longer step settles them)",
+            s.still_settling, s.combinations
+        )
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -124,6 +136,7 @@ mod tests {
             without_steady_state: 0,
             sliding: 6,
             not_settled: 1,
+            still_settling: 0,
             largest_sideslip: Some(-1.0),
         };
         let line = not_handling_line(&s).unwrap();

@@ -1,5 +1,6 @@
 //! What a campaign's `[runs]` selects wrongly (a wildcard where a file or
 //! folder is named, one run selected by two entries) and what
+//! a run selected again as a copy of its file, and what
 //! `diagnose --batch` is handed wrongly (a file, a folder that is itself one
 //! campaign) or cannot do (no campaign of the folder diagnosed). Each says
 //! what to write instead, with the same selection.
@@ -54,6 +55,18 @@ pub enum SelectionProblem {
         /// The second.
         second: String,
     },
+    /// A run whose file is a byte-for-byte copy of another selected run's.
+    #[error("the run {} is a copy of {} (the same bytes), {}: held out, a copy is scored on the samples its twin was fitted on, so it counts the same evidence twice; select one of them", run.display(), copy_of.display(), selected_by(first, second))]
+    CopiedRun {
+        /// The copy (the later of the two).
+        run: PathBuf,
+        /// The run it copies.
+        copy_of: PathBuf,
+        /// The entry that selects the run it copies, with its place.
+        first: String,
+        /// The entry that selects the copy, with its place.
+        second: String,
+    },
     /// A file given to `--batch`.
     #[error("--batch reads a folder of campaigns (its sub-folders and .toml files), and this is a file: drop --batch to diagnose it, `handling diagnose {}`", path.display())]
     BatchOfAFile {
@@ -77,6 +90,15 @@ pub enum SelectionProblem {
         /// The fleet table that lists the reasons.
         table: PathBuf,
     },
+}
+
+/// Which `[runs]` entries select two runs: both by one (a folder), or each
+/// by its own.
+fn selected_by(first: &str, second: &str) -> String {
+    match first == second {
+        true => format!("both selected by {first}"),
+        false => format!("selected by {first} and by {second}"),
+    }
 }
 
 /// What to write instead of a wildcard in `[runs]` (`dir` when `in_dir`),

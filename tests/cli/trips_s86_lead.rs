@@ -105,3 +105,38 @@ fn a_study_keeps_a_combination_still_settling_and_says_how_far_it_has_to_go() {
     let rbf = read_json(&out.join("rbf.json"));
     assert_eq!(rbf["training_pairs"], 9, "{rbf}");
 }
+
+/// A run saved again under another name in the runs folder: held out, the
+/// copy was scored on the samples its twin was fitted on, a verdict's
+/// held-out evidence counted twice. Refused at `[runs]`, naming both.
+#[test]
+fn a_byte_for_byte_copy_of_a_run_is_refused_as_the_same_run_twice() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &[]);
+    let runs = c.join("runs");
+    let mut names: Vec<String> = fs::read_dir(&runs)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".csv"))
+        .collect();
+    names.sort();
+    let original = &names[1];
+    fs::copy(runs.join(original), runs.join("zz_copy.csv")).unwrap();
+    let o = run(&[
+        "diagnose",
+        c.to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("zz_copy.csv is a copy of ") && e.contains(original.as_str()),
+        "{e}"
+    );
+    assert!(
+        e.contains("counts the same evidence twice; select one of them"),
+        "{e}"
+    );
+    assert!(!dir.path().join("out").exists());
+}

@@ -29,6 +29,7 @@
 //! finds, reads, checks and cleans its runs.
 
 mod ax_check;
+mod copies;
 mod degrees;
 mod glob;
 mod kind;

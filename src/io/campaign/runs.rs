@@ -111,28 +111,47 @@ pub(super) fn run_files(
         }
         files.extend(found);
     }
-    // A run listed twice would be held out and trained on at once.
+    // A run listed twice, or a copy of one, would be held out and trained
+    // on at once.
     let listed = run_spec.files.len();
-    if let Some((first, second)) = selected_twice(&files) {
-        let at = |k: usize| match k < listed {
-            true => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
-            false => entry(
-                src,
-                "runs.dir",
-                run_spec.dir.as_deref().unwrap_or(Path::new("")),
-            ),
-        };
+    let at = |k: usize| match k < listed {
+        true => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
+        false => entry(
+            src,
+            "runs.dir",
+            run_spec.dir.as_deref().unwrap_or(Path::new("")),
+        ),
+    };
+    let twice = selected_twice(&files).map(|(first, second)| {
         let problem = SelectionProblem::SelectedTwice {
             run: files[second].clone(),
             first: at(first),
             second: at(second),
         };
+        (first, second, problem)
+    });
+    let twice = twice.or_else(|| {
+        super::copies::copied_run(&files).map(|(first, second)| {
+            let problem = SelectionProblem::CopiedRun {
+                run: files[second].clone(),
+                copy_of: files[first].clone(),
+                first: at(first),
+                second: at(second),
+            };
+            (first, second, problem)
+        })
+    });
+    if let Some((first, second, problem)) = twice {
         // At its entry in `[runs] files`: the second listing where both
         // are there, else the first, which `dir` finds again (the
         // folder's files come after the list).
         let k = if second < listed { second } else { first };
+        let span = match k < listed {
+            true => src.key_span(&format!("runs.files[{k}]")),
+            false => src.key_span("runs.dir"),
+        };
         return Err(src.located(
-            src.key_span(&format!("runs.files[{k}]")),
+            span,
             InputProblem::Campaign(Box::new(CampaignFileProblem::Selection(problem))),
         ));
     }

@@ -214,13 +214,33 @@ fn run_csv(rate: f64, seconds: f64, with_ay: bool, gap: Option<f64>) -> String {
     s
 }
 
+/// A campaign folder of `vehicle` and `runs`. A run given the text of an
+/// earlier one is written one sample longer (its last row again, a step
+/// later): a byte-for-byte copy of a run is refused as the same run twice.
 fn campaign_folder(vehicle: &str, runs: &[(&str, String)]) -> tempfile::TempDir {
     let dir = scratch(&[("vehicle.toml", vehicle)]);
     fs::create_dir(dir.path().join("runs")).unwrap();
+    let mut written: Vec<String> = Vec::new();
     for (name, text) in runs {
-        fs::write(dir.path().join("runs").join(name), text).unwrap();
+        let mut text = text.clone();
+        while written.contains(&text) {
+            text = one_sample_longer(&text);
+        }
+        fs::write(dir.path().join("runs").join(name), &text).unwrap();
+        written.push(text);
     }
     dir
+}
+
+/// `text` (a run CSV, time first) with its last row repeated one time step
+/// later.
+fn one_sample_longer(text: &str) -> String {
+    let rows: Vec<&str> = text.lines().collect();
+    let t = |row: &str| -> f64 { row.split(',').next().unwrap().parse().unwrap() };
+    let (last, before) = (rows[rows.len() - 1], rows[rows.len() - 2]);
+    let next = t(last) + (t(last) - t(before));
+    let rest = &last[last.find(',').unwrap()..];
+    format!("{}{next:.4}{rest}\n", text)
 }
 
 #[test]

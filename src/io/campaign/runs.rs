@@ -114,13 +114,10 @@ pub(super) fn run_files(
     // A run listed twice, or a copy of one, would be held out and trained
     // on at once.
     let listed = run_spec.files.len();
-    let at = |k: usize| match k < listed {
-        true => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
-        false => entry(
-            src,
-            "runs.dir",
-            run_spec.dir.as_deref().unwrap_or(Path::new("")),
-        ),
+    let at = |k: usize| match (k < listed, &run_spec.dir) {
+        (true, _) => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
+        (false, Some(d)) => entry(src, "runs.dir", d),
+        (false, None) => "the campaign folder's `runs/`".to_string(),
     };
     let twice = selected_twice(&files).map(|(first, second)| {
         let problem = SelectionProblem::SelectedTwice {

@@ -202,7 +202,15 @@ fn first_of_several(
 ) -> Option<(MeasuredRun, MeasuredMetrics, String)> {
     let (at, cut) = steps::several_steps(&run)?;
     let first = crate::measured::clean::slice(&run, 0, cut, "");
-    let m = measured_step_metrics(first.clone(), min_speed, settings).ok()?;
+    let mut m = measured_step_metrics(first.clone(), min_speed, settings).ok()?;
+    // The rest is read too: counted and listed with its reason, not lost.
+    let rest = crate::measured::clean::slice(&run, cut, run.t.len(), "");
+    m.cleaning.set_aside(
+        &rest,
+        crate::error::PieceRefusal::LaterSteps {
+            at: at[1..].to_vec(),
+        },
+    );
     let times: Vec<String> = at.iter().map(|t| format!("{t:.2} s")).collect();
     let said = format!(
         "{}: the run holds {} steer steps (at {}): the first is measured, on the run up to {:.2} s, before the second; cut the log into one run per step to measure the others",

@@ -64,6 +64,7 @@ mod inject;
 mod moves;
 mod pieces;
 mod report;
+mod settled;
 #[cfg(test)]
 mod test_signals;
 

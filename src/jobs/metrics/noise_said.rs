@@ -23,11 +23,7 @@ fn added(noise: f64, window: f64) -> f64 {
 /// The warnings of the total variances of `m` a tenth or more of which
 /// is noise over `window` s: `E_r`'s, `E_ay`'s, and Er's with what each
 /// channel adds to it through its weight (`weights`, e1 and e2).
-pub(super) fn noise_in_variance(
-    m: &StepMetrics,
-    window: f64,
-    (e1, e2): (f64, f64),
-) -> Vec<String> {
+pub(super) fn noise_in_variance(m: &StepMetrics, window: f64, (e1, e2): (f64, f64)) -> Vec<String> {
     let mut said = Vec::new();
     let add_r = added(m.yaw_rate_noise, window);
     let e_r = m.yaw_rate_total_variance;

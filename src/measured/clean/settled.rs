@@ -63,7 +63,11 @@ fn steady(y: &[f64], start: usize, end: usize) -> bool {
         let to = (from + third).min(end);
         y[from..to].iter().sum::<f64>() / (to - from) as f64
     };
-    let means = [mean(start), mean(start + (end - start - third) / 2), mean(end - third)];
+    let means = [
+        mean(start),
+        mean(start + (end - start - third) / 2),
+        mean(end - third),
+    ];
     let (lo, hi) = means
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| {
@@ -99,7 +103,9 @@ mod tests {
     #[test]
     fn a_settled_hold_is_released_and_a_frozen_one_is_not() {
         let (r, ay) = (settle(120, 0.09), settle(120, 2.0));
-        let start = (1..120).find(|&i| ay[i..].iter().all(|v| *v == ay[i])).unwrap();
+        let start = (1..120)
+            .find(|&i| ay[i..].iter().all(|v| *v == ay[i]))
+            .unwrap();
         assert!(start < 100, "{start}");
         assert!(settled_hold(&ay, start, 120 - start, &[&r]));
         // Frozen at 0.3 s, in the rise, while the yaw rate still moves.

@@ -19,8 +19,6 @@
 //!
 //! Units: each channel's own; shares are fractions of a range.
 
-use super::glitches::quantile;
-
 /// Differences before a hold, the one onto it included, judged for a
 /// smooth approach.
 const APPROACH: usize = 3;
@@ -36,11 +34,16 @@ const APPROACH_SHARE: f64 = 1e-3;
 /// 50 samples, well under the move of a transient.
 const STEADY_SHARE: f64 = 0.05;
 
-/// The 1–99 % range of `x`.
+/// The 1–99 % range of `x` (nearest rank, as the glitch thresholds'
+/// range; computed here so that `glitches.rs`, which asks this file, is
+/// not asked back).
 fn range(x: &[f64]) -> f64 {
     let mut s = x.to_vec();
     s.sort_by(f64::total_cmp);
-    let q = |p: f64| quantile(&s, p).unwrap_or(0.0);
+    let Some(last) = s.len().checked_sub(1) else {
+        return 0.0;
+    };
+    let q = |p: f64| s[(last as f64 * p).round() as usize];
     q(0.99) - q(0.01)
 }
 

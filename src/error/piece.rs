@@ -42,6 +42,14 @@ pub enum PieceRefusal {
         /// The least range that moves the steer, rad.
         min: f64,
     },
+    /// The part of a run after its first steer step, holding the later
+    /// steps (a return, a step on a step) that start at `at`, s: the
+    /// metrics read the first step alone.
+    #[error("it holds {} (at {}): the metrics read the first step", if at.len() == 1 { "a later steer step" } else { "later steer steps" }, at.iter().map(|t| format!("{t:.2} s")).collect::<Vec<_>>().join(", "))]
+    LaterSteps {
+        /// The later steps' times, s.
+        at: Vec<f64>,
+    },
     /// The piece gives no step-steer metrics.
     #[error("no step-steer metrics ({0})")]
     NoStepMetrics(MetricsError),
@@ -65,7 +73,9 @@ pub(super) fn no_steer_step(pieces: &[RefusedPiece], gaps: &[(f64, f64)]) -> Str
                 format!("no step-steer metrics (the run, {t_start:.2}–{t_end:.2} s, is too short)")
             }
             PieceRefusal::NoStepMetrics(_) => reason.to_string(),
-            PieceRefusal::AnotherPieceUsed | PieceRefusal::SteerHeld { .. } => {
+            PieceRefusal::AnotherPieceUsed
+            | PieceRefusal::SteerHeld { .. }
+            | PieceRefusal::LaterSteps { .. } => {
                 format!("no step-steer metrics ({reason})")
             }
         };

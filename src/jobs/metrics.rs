@@ -12,6 +12,7 @@ use serde::Serialize;
 use std::path::Path;
 
 pub(super) mod filter_speed;
+mod noise_said;
 mod steps;
 
 /// The units of the metric reports.
@@ -114,9 +115,10 @@ pub fn run_with_degrees(
     let piece = m.t_end - m.t_start;
     m.warnings
         .extend(windows_said(&m.metrics, settings, &clock, m.t_end));
-    m.warnings.extend(noise_in_variance(
+    m.warnings.extend(noise_said::noise_in_variance(
         &m.metrics,
         settings.variance_window.min(piece),
+        (settings.e1, settings.e2),
     ));
     let dt = crate::measured::clean::median_interval(&clock);
     m.warnings.extend(peak_time_said(&m.metrics, dt));
@@ -202,7 +204,15 @@ fn first_of_several(
 ) -> Option<(MeasuredRun, MeasuredMetrics, String)> {
     let (at, cut) = steps::several_steps(&run)?;
     let first = crate::measured::clean::slice(&run, 0, cut, "");
-    let m = measured_step_metrics(first.clone(), min_speed, settings).ok()?;
+    let mut m = measured_step_metrics(first.clone(), min_speed, settings).ok()?;
+    // The rest is read too: counted and listed with its reason, not lost.
+    let rest = crate::measured::clean::slice(&run, cut, run.t.len(), "");
+    m.cleaning.set_aside(
+        &rest,
+        crate::error::PieceRefusal::LaterSteps {
+            at: at[1..].to_vec(),
+        },
+    );
     let times: Vec<String> = at.iter().map(|t| format!("{t:.2} s")).collect();
     let said = format!(
         "{}: the run holds {} steer steps (at {}): the first is measured, on the run up to {:.2} s, before the second; cut the log into one run per step to measure the others",
@@ -267,30 +277,6 @@ fn leave_out_dead_channels(run: &mut MeasuredRun) -> Result<Vec<String>, Error> 
         ));
     }
     Ok(warnings)
-}
-
-/// The warning of a yaw-rate total variance a tenth or more of which is
-/// the noise's: white noise of deviation σ (after the filter, a share of
-/// the step) adds `W·σ²` to `E_r = ∫(δ̂ − r̂)² dt` over a window `W`, in
-/// expectation, whatever its correlation; a noise of a tenth of the step
-/// over 4 s adds 0.04 s, the size of a car's `E_r`. One run scatters about
-/// it by as much (the noise of the initial and steady means that
-/// normalise the response, and the noise's product with the response
-/// error): the figure is a bias, not a correction of the run.
-fn noise_in_variance(m: &StepMetrics, window: f64) -> Option<String> {
-    let added = window * m.yaw_rate_noise.powi(2);
-    let e = m.yaw_rate_total_variance;
-    (added > 0.0 && added >= 0.1 * e).then(|| {
-        format!(
-            "the yaw-rate noise ({}) adds about {} s to E_r ({} s) over its {} s window, on average (white noise adds its variance times the window; one run scatters about that by as much): E_r and Er read high by that much (e1 times it for Er), E_r − {} = {} s is the estimate without it; filter harder (--filter-hz) or log a quieter gyro",
-            m.yaw_rate_noise_text(),
-            crate::format::readable(added, 3),
-            crate::format::readable(e, 4),
-            crate::error::Num(window),
-            crate::format::readable(added, 3),
-            crate::format::readable(e - added, 3),
-        )
-    })
 }
 
 /// The share of the peak time by which noise must move it to be said: a

@@ -22,6 +22,7 @@ fn moderate() -> StepMetrics {
         settled: true,
         settling: Default::default(),
         yaw_rate_noise: 0.0,
+        ay_noise: Some(0.0),
         yaw_rate_peak_threshold: 1.0,
         yaw_rate_filter_ringing: 0.0,
         filter_hz: None,

@@ -291,6 +291,7 @@ pub fn step_metrics_continuous<R: ContinuousRecord + ?Sized>(
         settled: settling.settled(),
         settling,
         yaw_rate_noise: 0.0,
+        ay_noise: Some(0.0),
         yaw_rate_peak_threshold: threshold * 100.0,
         // Unfiltered: no ringing of a filter.
         yaw_rate_filter_ringing: 0.0,

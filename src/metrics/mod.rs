@@ -237,6 +237,11 @@ pub struct StepMetrics {
     /// Noise of the normalised yaw rate in the initial window (after the
     /// filter), as a share of the step.
     pub yaw_rate_noise: f64,
+    /// Noise of the normalised lateral acceleration (after the filter), as
+    /// a share of its step, as `yaw_rate_noise` is the yaw rate's: it adds
+    /// to `E_ay` and through it to Er (`None` for a run without `ay`).
+    #[serde(default)]
+    pub ay_noise: Option<f64>,
     /// The overshoot a maximum needed to be a peak, % of the step: the
     /// largest of `min_overshoot`, five noise deviations, twice the
     /// steady scatter and [`Self::yaw_rate_filter_ringing`].
@@ -546,6 +551,7 @@ pub(crate) fn step_metrics(
         settled: settling.settled(),
         settling,
         yaw_rate_noise: r_noise,
+        ay_noise: a.as_ref().map(|a| gain * a.noise),
         yaw_rate_peak_threshold: threshold * 100.0,
         yaw_rate_filter_ringing: ringing * 100.0,
         filter_hz,

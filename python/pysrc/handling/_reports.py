@@ -88,6 +88,9 @@ class StepMetrics:
     within a few noise deviations."""
     yaw_rate_noise: float
     """Noise of the normalised yaw rate in the initial window, share of the step."""
+    ay_noise: Optional[float]
+    """Noise of the normalised ``ay`` (after the filter), share of its step
+    (None without ``ay``): it adds to E_ay and Er as the yaw rate's to E_r."""
     yaw_rate_peak_threshold: float
     """The overshoot a maximum needed to be a peak, % of the step."""
     yaw_rate_filter_ringing: float

@@ -6,7 +6,8 @@
 //! unit; times in s.
 
 use super::moves::{beyond_resolution, Moves};
-use super::report::{CleaningReport, Glitch, GlitchKind, Treatment};
+use super::report::{CleaningReport, Glitch, GlitchKind, RunChannel, Treatment};
+use super::settled::settled_hold;
 use super::{MAX_ZERO_RUN, MIN_STUCK, RANGE_FLOOR, SEARCHED, SPIKE_MADS, STUCK_CONTEXT};
 use crate::measured::MeasuredRun;
 
@@ -349,6 +350,9 @@ pub(super) fn repair(t: &[f64], x: &mut [f64], bad: &[bool]) {
     }
 }
 
+/// The response channels a settled hold is judged against.
+const RESPONSES: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta];
+
 /// Finds the glitches of one run (a piece between time gaps), repairs its
 /// inputs, masks its responses, and lists what it found in `report`.
 pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
@@ -361,7 +365,19 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
     }
     for ch in SEARCHED {
         let Some(x) = ch.of(run) else { continue };
-        let found = detect(x, &slow);
+        let mut found = detect(x, &slow);
+        // A response's hold that is its settled value, the other responses
+        // steady with it, is no stuck sensor (`settled.rs`).
+        if !ch.is_input() {
+            let others: Vec<&[f64]> = RESPONSES
+                .iter()
+                .filter(|&&o| o != ch)
+                .filter_map(|o| o.of(run).map(Vec::as_slice))
+                .collect();
+            found.retain(|f| {
+                f.kind != GlitchKind::Stuck || !settled_hold(x, f.start, f.len, &others)
+            });
+        }
         if found.is_empty() {
             continue;
         }

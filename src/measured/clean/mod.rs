@@ -34,7 +34,9 @@
 //!     significant digits) creeps to its value by its last digit, and a
 //!     quantised channel whose noise is below its step dithers by one
 //!     count, and both then hold for as long as the response stays within
-//!     a step — no stuck sensor;
+//!     a step — no stuck sensor; nor is a response channel's hold that
+//!     it approached smoothly while the other responses are steady over
+//!     it (`settled.rs`: a noise-free step logged at 20 Hz);
 //!   - the noise of a quantised channel (more than 1 % of its successive
 //!     samples equal) is at least its step/√12, so `σ_d` is at least
 //!     step/√6: a sample one count from its neighbours is no spike.
@@ -64,6 +66,7 @@ mod inject;
 mod moves;
 mod pieces;
 mod report;
+mod settled;
 #[cfg(test)]
 mod test_signals;
 

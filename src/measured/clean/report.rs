@@ -411,11 +411,27 @@ pub struct CleaningReport {
     pub slow: Vec<SlowSpan>,
     /// Pieces replayed.
     pub pieces: Vec<Piece>,
-    /// Pieces dropped as too short.
+    /// Pieces dropped (too short, another used, later steps), each with
+    /// its reason.
     pub dropped_pieces: Vec<Piece>,
 }
 
 impl CleaningReport {
+    /// Lists `part`, a part of the run read but not cleaned nor used, as a
+    /// dropped piece for `reason`: its samples are counted as read and as
+    /// dropped, so that nothing read goes unsaid.
+    pub fn set_aside(&mut self, part: &MeasuredRun, reason: PieceRefusal) {
+        let Some(piece) = Piece::kept(part) else {
+            return;
+        };
+        self.samples_read += piece.samples;
+        self.samples_in_dropped_pieces += piece.samples;
+        self.dropped_pieces.push(Piece {
+            reason: Some(reason),
+            ..piece
+        });
+    }
+
     /// An empty report for runs cleaned at `min_speed`.
     pub fn new(min_speed: f64) -> Self {
         Self {

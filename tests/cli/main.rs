@@ -428,6 +428,7 @@ mod trips_s83_lead;
 mod trips_s83_met;
 mod trips_s83_sim;
 mod trips_s84_idn;
+mod trips_s86_idn;
 mod trips_s84_lead;
 mod trips_s84_sim;
 mod trips_simulate;

@@ -45,3 +45,77 @@ fn the_fitted_ranges_span_every_sample_fitted() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!stderr(&o).contains("extrapolation"), "{}", stderr(&o));
 }
+
+/// A condition's line named the 1656 N level by the median of the
+/// samples fitted there, "Fz 1640 N", below "fz levels: … 1656 N" and
+/// "the 1656 N level selected": one level, two names.
+#[test]
+fn a_load_level_has_one_name_in_every_line() {
+    let test = "a_load_level_has_one_name_in_every_line";
+    let Some(rig) = shared_data(test, "tyre_ttc_hoosier_43075/cornering.csv") else {
+        return;
+    };
+    let dir = scratch(&[]);
+    let out = dir.path().join("ms.toml");
+    let said = hoosier_at_1656(&rig, &out);
+    assert!(said.contains("fz levels: 534 N (11246), 1095 N (11247), 1656 N (11243), 2193 N (11242), 2751 N (14987)"), "{said}");
+    assert!(said.contains("the 1656 N level selected"), "{said}");
+    assert!(
+        said.contains("    Fz    1656 N, camber  0.00°, pressure 83.4 kPa:"),
+        "{said}"
+    );
+    assert!(!said.contains("1640 N"), "{said}");
+}
+
+/// Exact MF 6.1 pure sweeps (`tyre-eval` of a public `.tir`: slip angle
+/// at κ = 0 and slip ratio at α = 0, three loads) fitted back: the pooled
+/// line gave `mz` σ 93.0 % over every sample, the pure longitudinal ones
+/// whose moment only the skipped combined Mz stage fits among them; over
+/// the rows its pure stage fits it is 0.089 %, and the 120 others are
+/// counted and named.
+#[test]
+fn the_pooled_sigma_of_a_channel_is_over_the_rows_its_stages_fit() {
+    let test = "the_pooled_sigma_of_a_channel_is_over_the_rows_its_stages_fit";
+    let Some(tir) = shared_data(test, "tir_public/MagicFormula61_Paramerters.tir") else {
+        return;
+    };
+    let mut points = String::from("fz,kappa,alpha,camber,speed\n");
+    for fz in [2000, 4000, 6000] {
+        for i in -30..=30 {
+            points += &format!("{fz},0,{:.4},0,16.7\n", f64::from(i) * 0.01);
+        }
+        for i in (-20..=20).filter(|i| *i != 0) {
+            points += &format!("{fz},{:.4},0,0,16.7\n", f64::from(i) * 0.01);
+        }
+    }
+    let dir = scratch(&[("pts.csv", &points)]);
+    let tir = tir.to_str().unwrap();
+    let o = run_in(dir.path(), &["tyre-eval", tir, "pts.csv", "--out", "ev.csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_in(
+        dir.path(),
+        &["identify", "ev.csv", "--model", "mf61", "--out", "fit.tir"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("σ pooled over the 303 raw samples' rows the fitted stages take: "),
+        "{said}"
+    );
+    assert!(
+        said.contains("mz 0.089 %, RMS error 0.022 N·m, 120 samples left out (rows of combined Mz, not fitted)"),
+        "{said}"
+    );
+    let report = read_json(&dir.path().join("fit.report.json"));
+    let mz = report["sigma_pooled"]["channels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["channel"] == "mz")
+        .unwrap()
+        .clone();
+    assert_eq!(mz["samples"], 183, "{mz}");
+    assert_eq!(mz["left_out"]["samples"], 120, "{mz}");
+    assert_eq!(mz["left_out"]["stages"][0], "combined Mz", "{mz}");
+    assert!(mz["sigma_percent"].as_f64().unwrap() < 0.1, "{mz}");
+}

@@ -41,7 +41,10 @@ fn the_fitted_ranges_span_every_sample_fitted() {
     let text = fs::read_to_string(&out).unwrap();
     assert!(text.contains("\nfz = [1503.0, 1795.0]\n"), "{text}");
     assert!(text.contains("fz 1503 to 1795 N"), "{text}");
-    let o = run_in(dir.path(), &["tyre-eval", "ms.toml", "p.csv", "--out", "e.csv"]);
+    let o = run_in(
+        dir.path(),
+        &["tyre-eval", "ms.toml", "p.csv", "--out", "e.csv"],
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!stderr(&o).contains("extrapolation"), "{}", stderr(&o));
 }
@@ -90,7 +93,10 @@ fn the_pooled_sigma_of_a_channel_is_over_the_rows_its_stages_fit() {
     }
     let dir = scratch(&[("pts.csv", &points)]);
     let tir = tir.to_str().unwrap();
-    let o = run_in(dir.path(), &["tyre-eval", tir, "pts.csv", "--out", "ev.csv"]);
+    let o = run_in(
+        dir.path(),
+        &["tyre-eval", tir, "pts.csv", "--out", "ev.csv"],
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let o = run_in(
         dir.path(),
@@ -118,4 +124,28 @@ fn the_pooled_sigma_of_a_channel_is_over_the_rows_its_stages_fit() {
     assert_eq!(mz["left_out"]["samples"], 120, "{mz}");
     assert_eq!(mz["left_out"]["stages"][0], "combined Mz", "{mz}");
     assert!(mz["sigma_percent"].as_f64().unwrap() < 0.1, "{mz}");
+}
+
+/// A step steer sized for a steady 8.5 m/s² on a car whose rollover
+/// threshold g·t/(2h) is 8.445 m/s² (narrower track 1.55 m, cg 0.9 m up)
+/// was simulated as if it stayed on four wheels; it is refused at its key,
+/// and 8.4 m/s² below the threshold still runs.
+#[test]
+fn a_steady_lateral_acceleration_beyond_rollover_is_refused_at_its_key() {
+    let vehicle = "[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.11\nb = 1.67\ntrack_front = 1.6\ntrack_rear = 1.55\ncg_height = 0.9\n";
+    let tyre = format!("{GIM}friction = 1.3\n");
+    let step = |ay: &str| {
+        format!("[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nlateral_acceleration = {ay}\n")
+    };
+    for ay in ["8.5", "-8.5"] {
+        let dir = scenario(vehicle, &tyre, &step(ay));
+        let e = simulate_err(dir.path());
+        assert!(
+            e.contains(&format!("scenario.toml:16:24: `manoeuvre.lateral_acceleration` = {ay}: at or beyond the rollover threshold g·t/(2h) = 9.80665 × 1.55 / (2 × 0.9) = 8.445 m/s² (0.861 g; t the narrower track, h the cg_height)")),
+            "{e}"
+        );
+    }
+    let dir = scenario(vehicle, &tyre, &step("8.4"));
+    let o = run_in(dir.path(), &["simulate", "scenario.toml", "--out", "out"]);
+    assert!(o.status.success(), "{}", stderr(&o));
 }

@@ -89,7 +89,10 @@ impl PooledSigma {
         // Samples some channel's fitted stages do not take are named at
         // that channel: the pool is not over all of them then.
         let over = if self.channels.iter().any(|c| c.left_out.is_some()) {
-            format!("the {} raw samples' rows the fitted stages take", self.samples)
+            format!(
+                "the {} raw samples' rows the fitted stages take",
+                self.samples
+            )
         } else {
             format!("all {} raw samples", self.samples)
         };

@@ -6,8 +6,8 @@
 //! a panel, the key opening with what is measured (points) and what
 //! fitted (lines), the lines drawn over every load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
-use super::staged_figure::{key_entries, level_colour, MEASURED};
 use super::level_names::LevelNames;
+use super::staged_figure::{key_entries, level_colour, MEASURED};
 use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
@@ -30,7 +30,12 @@ pub(super) fn fit_figure(r: &SwarmReport) -> Figure {
     } else if r.longitudinal.is_some() {
         channels.push((Channel::LongitudinalForce, &r.longitudinal_conditions));
     }
-    figure(&r.options.model.to_string(), &r.tyre, &channels, &r.level_names())
+    figure(
+        &r.options.model.to_string(),
+        &r.tyre,
+        &channels,
+        &r.level_names(),
+    )
 }
 
 /// The figure of `tyre` fitted as `model` on each channel's conditions
@@ -176,12 +181,7 @@ fn panel(
             .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        lines.push(Series::line(
-            &names.load(c.fz),
-            &xd,
-            &ys,
-            colour,
-        ));
+        lines.push(Series::line(&names.load(c.fz), &xd, &ys, colour));
     }
     series.extend(lines);
     let sigma = if y2 > 0.0 {

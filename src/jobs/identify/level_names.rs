@@ -75,7 +75,8 @@ mod tests {
         let loads = levels(Variable::Load, &[fz, vec![2751.0; 40]].concat(), 10.0);
         let p = levels(Variable::Pressure, &[69_650.0, 69_700.0, 69_750.0], 1000.0);
         let named = [loads.clone(), p];
-        let level_label = |named: &[Levels], variable, v| LevelNames::of(named, &[]).name(variable, v);
+        let level_label =
+            |named: &[Levels], variable, v| LevelNames::of(named, &[]).name(variable, v);
         let terminal = Variable::Load.display(loads.levels[0].nominal);
         assert_eq!(terminal, "534 N");
         assert_eq!(level_label(&named, Variable::Load, 532.2), terminal);

@@ -127,9 +127,9 @@ pub(crate) fn outlying_conditions(f: &Fit, names: &LevelNames) -> Option<Note> {
         .iter()
         .filter(|c| c.sigma_percent > limit)
         .map(|c| {
-            let pressure = c
-                .pressure
-                .map_or(String::new(), |p| format!(", pressure {}", names.pressure(p)));
+            let pressure = c.pressure.map_or(String::new(), |p| {
+                format!(", pressure {}", names.pressure(p))
+            });
             format!(
                 "Fz {}, camber {}{pressure} (σ {} %)",
                 names.load(c.fz),

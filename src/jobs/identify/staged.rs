@@ -5,11 +5,11 @@
 //! template's constants and layout kept) that is read back and checked to
 //! reproduce the fitted forces.
 
+use super::level_names::LevelNames;
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::format::{exact, plural};
 use crate::identify::data::RigData;
-use super::level_names::LevelNames;
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };

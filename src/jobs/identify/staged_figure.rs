@@ -148,7 +148,10 @@ fn as_named(values: Vec<f64>, variable: Variable, named: &[Named]) -> Vec<f64> {
     match named.iter().find(|l| l.variable == variable) {
         Some(_) => {
             let names = super::level_names::LevelNames::of(named, &[]);
-            values.into_iter().map(|v| names.nominal(variable, v)).collect()
+            values
+                .into_iter()
+                .map(|v| names.nominal(variable, v))
+                .collect()
         }
         None => values,
     }

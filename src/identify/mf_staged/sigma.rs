@@ -106,6 +106,10 @@ impl ChannelSigma {
         let rms = rms_text(self.rms, channel_unit(self.channel));
         let left = self.left_out.as_ref().map_or(String::new(), LeftOut::text);
         match (self.fitted, self.sigma_percent) {
+            (true, None) if self.samples == 0 => format!(
+                "{} not in the pool: every sample of it left out{left}",
+                self.channel
+            ),
             (false, _) => format!(
                 "{} not fitted (its stage was skipped): no σ, left out of the pool",
                 self.channel
@@ -303,7 +307,9 @@ mod tests {
             limits: Default::default(),
             coefficients: MfCoefficients::default(),
         };
-        let rows: Vec<MfRow> = [0.02, 0.05, 0.1]
+        // Slip angles within the pure tolerance: the pure Fx stage takes
+        // the rows' `fx` (it takes no row at a slip angle).
+        let rows: Vec<MfRow> = [0.0002, 0.0005, 0.0009]
             .iter()
             .map(|&alpha| MfRow {
                 fz: 4000.0,

@@ -135,7 +135,9 @@ fn a_steady_lateral_acceleration_beyond_rollover_is_refused_at_its_key() {
     let vehicle = "[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.11\nb = 1.67\ntrack_front = 1.6\ntrack_rear = 1.55\ncg_height = 0.9\n";
     let tyre = format!("{GIM}friction = 1.3\n");
     let step = |ay: &str| {
-        format!("[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nlateral_acceleration = {ay}\n")
+        format!(
+            "[manoeuvre]\nkind = \"step-steer\"\nspeed = 22.2222\nlateral_acceleration = {ay}\n"
+        )
     };
     for ay in ["8.5", "-8.5"] {
         let dir = scenario(vehicle, &tyre, &step(ay));

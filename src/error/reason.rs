@@ -12,6 +12,8 @@ use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
 pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
 use no_grip::no_lateral_force;
 pub use no_grip::NoLateralForce;
+use rollover::beyond_rollover;
+pub use rollover::Rollover;
 pub use schedule::ScheduleColumn;
 pub use slow_steer::{SlowSteer, Waveform};
 use thiserror::Error;
@@ -23,6 +25,7 @@ mod boxed;
 pub(super) mod campaign;
 mod checks;
 mod no_grip;
+mod rollover;
 mod schedule;
 mod slow_steer;
 mod staged;
@@ -220,6 +223,9 @@ pub enum ParamReason {
         /// The wheelbase, m.
         wheelbase: f64,
     },
+    /// A steady lateral acceleration at or beyond the car's rollover threshold.
+    #[error("{}", beyond_rollover(.0))]
+    BeyondRollover(Box<Rollover>),
     /// A centre of gravity so high that the car tips over standing.
     #[error("the car would tip over at {} g of lateral acceleration (track/(2·cg_height) on the narrower track, {} m), below {} g, where even a loaded tanker truck holds about 0.35 g (cars 1.0–1.5 g): the rule asks for a cg_height of at most track/(2·0.3) = {} m; is it in another unit, or another key's value?", crate::format::significant(*tips_at, 2), super::number::Num(*track), super::number::Num(*min), crate::format::significant(track / (2.0 * min), 3))]
     TipsOver {

@@ -23,7 +23,7 @@ pub use replay::ReplaySpec;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 pub use step_steer::StepSteerSpec;
-use step_steer::{Amplitude, MAX_RAMP_TIME};
+use step_steer::{steady_ay, Amplitude, MAX_RAMP_TIME};
 
 /// Integration settings (`[simulation]`, or `[integrator]`): the method,
 /// the interval of the recorded rows, and Dormand–Prince's tolerances.
@@ -422,7 +422,7 @@ fn step_steer(
             (d, None)
         }
         Amplitude::LateralAcceleration(ay) => {
-            check(src, ParamError::finite("lateral_acceleration", ay))?;
+            check(src, steady_ay(ay, model))?;
             let d = solve(ay)?.steer - trim.steer;
             check(src, step("lateral_acceleration", ay, d))?;
             (d, Some(ay))

@@ -432,6 +432,7 @@ mod trips_s84_lead;
 mod trips_s84_sim;
 mod trips_s86_lead;
 mod trips_s86_met;
+mod trips_s86_idn;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -606,12 +606,20 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
         }
     }
     // One σ: pooled over every raw sample and channel, as recomputed here
-    // from the written file through tyre-eval.
+    // from the written file through tyre-eval, each channel over the rows
+    // its stages take: every stage ran, and only `fx` at a slip angle
+    // without slip ratio is no stage's (pure Fx takes α = 0, combined Fx
+    // both slips).
     let (fh, fitted) = eval(&d.join("fit.tir"), &d.join("points.csv"), &d.join("fr.csv"));
     let (rh, rig) = table(&d.join("rig.csv"));
-    let (mut e2, mut y2) = (0.0, 0.0);
+    let (mut e2, mut y2, mut left) = (0.0, 0.0, 0);
     for (f, r) in fitted.iter().zip(&rig) {
+        let pure = |c: &str| r[at(&rh, c)].abs() <= 1e-3;
         for c in channels {
+            if c == "fx" && !pure("alpha") && pure("kappa") {
+                left += 1;
+                continue;
+            }
             e2 += (f[at(&fh, c)] - r[at(&rh, c)]).powi(2);
             y2 += r[at(&rh, c)].powi(2);
         }
@@ -619,6 +627,9 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
     let pooled = &report["sigma_pooled"];
     assert_eq!(pooled["samples"], rig.len());
     assert_eq!(pooled["channels"].as_array().unwrap().len(), 5);
+    assert_eq!(pooled["channels"][0]["channel"], "fx");
+    let fx_left = &pooled["channels"][0]["left_out"];
+    assert_eq!(fx_left["samples"].as_u64().unwrap_or(0), left, "{fx_left}");
     let reported = pooled["sigma_percent"].as_f64().unwrap();
     let again = 100.0 * (e2 / y2).sqrt();
     assert!(

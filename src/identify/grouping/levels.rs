@@ -117,19 +117,14 @@ impl Levels {
     /// or the value itself outside every band: what the terminal names
     /// that level, so that a figure or a line on the fit names it alike.
     pub fn named(&self, v: f64) -> f64 {
-        self.select(v).map_or(v, |k| self.levels[k].nominal)
+        self.nominal_of(v).unwrap_or(v)
     }
-}
 
-/// `v` of `variable` as the terminal names its level: the nominal of the
-/// level of `named` (a grouping's levels) it belongs to, spelt by
-/// [`Variable::display`].
-pub fn level_label(named: &[Levels], variable: Variable, v: f64) -> String {
-    let v = named
-        .iter()
-        .find(|l| l.variable == variable)
-        .map_or(v, |l| l.named(v));
-    variable.display(v)
+    /// The nominal of the level whose band holds `v` ([`Levels::select`]),
+    /// `None` outside every band.
+    pub fn nominal_of(&self, v: f64) -> Option<f64> {
+        self.select(v).map(|k| self.levels[k].nominal)
+    }
 }
 
 /// The median of `sorted` (the mean of its two middle values for an
@@ -322,30 +317,6 @@ mod tests {
 
     fn nominals(l: &Levels) -> Vec<f64> {
         l.levels.iter().map(|q| q.nominal).collect()
-    }
-
-    #[test]
-    fn a_value_of_a_level_is_labelled_with_its_nominal_as_the_terminal_prints_it() {
-        // The TTC file's lightest load: raw samples about 534 N whose
-        // thinned rows average 532 N; and its 69.7 kPa pressure.
-        let fz: Vec<f64> = (0..40).map(|i| 530.0 + 0.2 * f64::from(i)).collect();
-        let loads = levels(Variable::Load, &[fz, vec![2751.0; 40]].concat(), 10.0);
-        let p = levels(Variable::Pressure, &[69_650.0, 69_700.0, 69_750.0], 1000.0);
-        let named = [loads.clone(), p];
-        let terminal = Variable::Load.display(loads.levels[0].nominal);
-        assert_eq!(terminal, "534 N");
-        assert_eq!(level_label(&named, Variable::Load, 532.2), terminal);
-        assert_eq!(level_label(&named, Variable::Load, 2754.0), "2751 N");
-        assert_eq!(
-            level_label(&named, Variable::Pressure, 69_712.0),
-            "69.7 kPa"
-        );
-        // Outside every level, or without the grouping, the value itself.
-        assert_eq!(level_label(&named, Variable::Load, 1500.0), "1500 N");
-        assert_eq!(
-            level_label(&[], Variable::Camber, 1.59f64.to_radians()),
-            "1.59°"
-        );
     }
 
     #[test]

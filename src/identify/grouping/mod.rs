@@ -45,7 +45,7 @@ mod fitted;
 pub(crate) mod levels;
 
 pub use super::data::SlipAxis;
-pub use levels::{level_label, levels, Level, Levels, Variable};
+pub use levels::{levels, Level, Levels, Variable};
 
 use super::data::{Condition, RigData, RigPoint};
 use crate::error::{InputError, InputProblem, SampleAccount};

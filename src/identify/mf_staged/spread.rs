@@ -85,7 +85,7 @@ impl ErrorSpread {
     }
 
     /// [`ErrorSpread::line`] with each load level spelt by `load` (the
-    /// terminal's name of the level, [`crate::identify::grouping::level_label`]).
+    /// terminal's name of the level, `jobs/identify/level_names.rs`).
     pub fn line_naming(&self, load: &dyn Fn(f64) -> String) -> Option<String> {
         // A fit at round-off has no error to place: its shares and
         // ratios are of noise in the last digits.

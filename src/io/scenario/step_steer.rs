@@ -3,6 +3,7 @@
 
 use crate::error::{InputError, ParamError, ParamReason};
 use crate::io::toml_file::{param_error, TomlSource};
+use crate::vehicle::VehicleModel;
 use serde::Deserialize;
 
 /// Step steer as written in a file: the amplitude is either a steer angle or
@@ -76,5 +77,23 @@ impl StepSteerSpec {
             }
         };
         Err(param_error(src, Some("manoeuvre"), e))
+    }
+}
+
+/// A steady `lateral_acceleration`: finite, and one the car holds on four
+/// wheels: at or beyond its rollover threshold g·t/(2h) it is refused at
+/// its key ([`crate::error::Rollover`]), as the 2-DOF model would simulate
+/// it as if the inner wheels stayed down.
+pub(super) fn steady_ay(ay: f64, model: &VehicleModel) -> Result<(), ParamError> {
+    ParamError::finite("lateral_acceleration", ay)?;
+    let v = &model.vehicle;
+    let r = crate::error::Rollover::of(v.track_front, v.track_rear, v.cg_height);
+    match r.reached_by(ay) {
+        true => Err(ParamError::new(
+            "lateral_acceleration",
+            ay,
+            ParamReason::from(r),
+        )),
+        false => Ok(()),
     }
 }

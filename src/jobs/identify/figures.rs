@@ -6,11 +6,11 @@
 //! a panel, the key opening with what is measured (points) and what
 //! fitted (lines), the lines drawn over every load's points. The staged Magic Formula fit's is in `staged_figure.rs`.
 
+use super::level_names::LevelNames;
 use super::staged_figure::{key_entries, level_colour, MEASURED};
 use super::SwarmReport;
 use crate::format::{fixed, plural};
 use crate::identify::data::{Condition, Point, SlipAxis};
-use crate::identify::grouping::Variable;
 use crate::identify::Channel;
 use crate::report::plot::{Figure, Panel, Series, Style};
 use crate::tyre::Tyre;
@@ -30,12 +30,22 @@ pub(super) fn fit_figure(r: &SwarmReport) -> Figure {
     } else if r.longitudinal.is_some() {
         channels.push((Channel::LongitudinalForce, &r.longitudinal_conditions));
     }
-    figure(&r.options.model.to_string(), &r.tyre, &channels)
+    figure(
+        &r.options.model.to_string(),
+        &r.tyre,
+        &channels,
+        &r.level_names(),
+    )
 }
 
 /// The figure of `tyre` fitted as `model` on each channel's conditions
 /// (module notes): a column per pressure level.
-fn figure(model: &str, tyre: &Tyre, channels: &[(Channel, &[Condition])]) -> Figure {
+fn figure(
+    model: &str,
+    tyre: &Tyre,
+    channels: &[(Channel, &[Condition])],
+    names: &LevelNames,
+) -> Figure {
     let mut panels = Vec::new();
     let mut columns = 1;
     for &(ch, conds) in channels {
@@ -49,7 +59,7 @@ fn figure(model: &str, tyre: &Tyre, channels: &[(Channel, &[Condition])]) -> Fig
                     .iter()
                     .filter(|c| (c.camber - g).abs() < 1e-3 && same_pressure(c.pressure, p))
                     .collect();
-                panels.push(panel(model, tyre, ch, &at, g, p));
+                panels.push(panel(model, tyre, ch, &at, (g, p), names));
             }
         }
     }
@@ -88,18 +98,14 @@ fn same_pressure(a: Option<f64>, b: Option<f64>) -> bool {
 fn title(
     model: &str,
     ch: Channel,
-    camber: f64,
-    pressure: Option<f64>,
+    (camber, pressure): (f64, Option<f64>),
+    names: &LevelNames,
     sigma: f64,
     n: usize,
 ) -> String {
-    let mut t = format!(
-        "{model} {}, γ {}",
-        ch.quantity(),
-        Variable::Camber.display(camber)
-    );
+    let mut t = format!("{model} {}, γ {}", ch.quantity(), names.camber(camber));
     if let Some(p) = pressure {
-        t += &format!(", {}", Variable::Pressure.display(p));
+        t += &format!(", {}", names.pressure(p));
     }
     format!(
         "{t}: σ {} %, {}",
@@ -115,8 +121,8 @@ fn panel(
     tyre: &Tyre,
     ch: Channel,
     conditions: &[&Condition],
-    camber: f64,
-    pressure: Option<f64>,
+    at: (f64, Option<f64>),
+    names: &LevelNames,
 ) -> Panel {
     let slip = |v: f64| {
         if ch == Channel::LongitudinalForce {
@@ -175,12 +181,7 @@ fn panel(
             .map(|a| ch.model(tyre, &Point::unmeasured(axis, *a, c.fz, c.camber, speed)))
             .collect();
         let xd: Vec<f64> = xs.iter().map(|a| slip(*a)).collect();
-        lines.push(Series::line(
-            &Variable::Load.display(c.fz),
-            &xd,
-            &ys,
-            colour,
-        ));
+        lines.push(Series::line(&names.load(c.fz), &xd, &ys, colour));
     }
     series.extend(lines);
     let sigma = if y2 > 0.0 {
@@ -189,7 +190,7 @@ fn panel(
         f64::NAN
     };
     Panel {
-        title: title(model, ch, camber, pressure, sigma, n),
+        title: title(model, ch, at, names, sigma, n),
         x_label: if ch == Channel::LongitudinalForce {
             "slip ratio [%]".into()
         } else {

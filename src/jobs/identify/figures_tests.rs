@@ -38,7 +38,12 @@ fn conditions() -> (Tyre, Vec<Condition>) {
 #[test]
 fn a_panel_per_pressure_titled_with_its_own_sigma_and_the_terminals_levels() {
     let (tyre, conds) = conditions();
-    let fig = figure("pac89", &tyre, &[(Channel::LateralForce, &conds)]);
+    let fig = figure(
+        "pac89",
+        &tyre,
+        &[(Channel::LateralForce, &conds)],
+        &LevelNames::default(),
+    );
     assert_eq!(
         fig.panels.len(),
         3,
@@ -94,6 +99,7 @@ fn the_y_axis_spans_the_data_and_the_fit_is_a_line_over_each_loads_points() {
             (Channel::LateralForce, &conds),
             (Channel::AligningMoment, &conds),
         ],
+        &LevelNames::default(),
     );
     assert_eq!(fig.panels.len(), 6, "a panel per channel and pressure");
     assert!(fig.panels[3..].iter().all(|p| p.y_label == "Mz [N·m]"));

@@ -69,7 +69,10 @@ pub(super) fn aligning_and_longitudinal(
         r.tyre = fx.tyre.clone();
         r.longitudinal = Some(fx);
         let (levels, inf) = (&g.report.levels, f64::INFINITY);
-        r.sample_slips[1] = ranges::sample_slips(view, SlipAxis::Ratio, levels, &g.conditions, inf);
+        let (slips, spans) =
+            ranges::sample_reach(view, SlipAxis::Ratio, levels, &g.conditions, inf);
+        r.sample_slips[1] = slips;
+        r.sample_spans = ranges::union(&r.sample_spans, &spans);
         r.longitudinal_conditions = g.conditions;
         r.longitudinal_grouping = Some(g.report);
     }

@@ -17,6 +17,7 @@ mod curvature_hold;
 pub use curvature_hold::CurvatureHeld;
 mod command;
 pub use command::{RecordedHold, RecordedOptions};
+mod level_names;
 mod linear_window;
 mod nompres;
 pub use linear_window::LinearWindow;
@@ -259,6 +260,10 @@ pub struct SwarmReport {
     /// The extremes of the samples' slip angle and slip ratio fitted.
     #[serde(skip)]
     pub sample_slips: [Option<(f64, f64)>; 2],
+    /// The spans of the load, camber and pressure of the samples fitted
+    /// (every channel's): the ranges the written file states.
+    #[serde(skip)]
+    pub(crate) sample_spans: Vec<ranges::Span>,
     /// Where every sample went.
     pub grouping: GroupingReport,
     /// The same for the longitudinal data fitted after a lateral fit.
@@ -295,6 +300,18 @@ pub struct SwarmReport {
     /// The outputs, held for this run until the report is dropped.
     #[serde(skip)]
     pub lock: OutputLock,
+}
+
+impl SwarmReport {
+    /// The names of the levels of its data, lateral and longitudinal
+    /// (`level_names.rs`).
+    pub(crate) fn level_names(&self) -> level_names::LevelNames<'_> {
+        let more = self
+            .longitudinal_grouping
+            .as_ref()
+            .map_or(&[][..], |g| &g.levels[..]);
+        level_names::LevelNames::of(&self.grouping.levels, more)
+    }
 }
 
 impl IdentifyReport {

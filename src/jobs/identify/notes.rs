@@ -11,6 +11,7 @@
 //! and, for a channel whose parameters the data did not all determine,
 //! which were held and its σ before and after (`identify/undetermined.rs`).
 
+use super::level_names::LevelNames;
 use super::SwarmReport;
 use crate::format::{fixed, readable};
 use crate::identify::mf_staged::MIN_POINTS_PER_PARAMETER;
@@ -76,7 +77,7 @@ pub(crate) fn later_fit_notes(r: &SwarmReport, f: &Fit) -> Vec<Note> {
             ))
         })
         .collect();
-    notes.extend(sigma_notes(f));
+    notes.extend(sigma_notes(f, &r.level_names()));
     notes
 }
 
@@ -112,8 +113,7 @@ pub(crate) const OUTLYING_FLOOR_PERCENT: f64 = 5.0;
 /// [`OUTLYING_FLOOR_PERCENT`]: the model's laws of load, camber and
 /// pressure do not carry its curve to them, which the σ over all points
 /// (weighted to the heavy loads' large forces) hides.
-pub(crate) fn outlying_conditions(f: &Fit) -> Option<Note> {
-    use crate::identify::grouping::Variable;
+pub(crate) fn outlying_conditions(f: &Fit, names: &LevelNames) -> Option<Note> {
     if f.curves.len() < 3 {
         return None;
     }
@@ -128,12 +128,12 @@ pub(crate) fn outlying_conditions(f: &Fit) -> Option<Note> {
         .filter(|c| c.sigma_percent > limit)
         .map(|c| {
             let pressure = c.pressure.map_or(String::new(), |p| {
-                format!(", pressure {}", Variable::Pressure.display(p))
+                format!(", pressure {}", names.pressure(p))
             });
             format!(
                 "Fz {}, camber {}{pressure} (σ {} %)",
-                Variable::Load.display(c.fz),
-                Variable::Camber.display(c.camber),
+                names.load(c.fz),
+                names.camber(c.camber),
                 fixed(c.sigma_percent, 1)
             )
         })
@@ -187,10 +187,10 @@ fn not_carried(f: &Fit) -> String {
 /// The warnings on a fitted channel's σ: as a whole
 /// ([`large_sigma`]), and condition by condition
 /// ([`outlying_conditions`]).
-pub(crate) fn sigma_notes(f: &Fit) -> Vec<Note> {
+pub(crate) fn sigma_notes(f: &Fit, names: &LevelNames) -> Vec<Note> {
     large_sigma(f)
         .into_iter()
-        .chain(outlying_conditions(f))
+        .chain(outlying_conditions(f, names))
         .collect()
 }
 
@@ -336,7 +336,7 @@ pub(crate) fn notes(r: &SwarmReport) -> Vec<Note> {
                 .flatten()
                 .flat_map(|f| later_fit_notes(r, f)),
         )
-        .chain(sigma_notes(&r.fit))
+        .chain(sigma_notes(&r.fit, &r.level_names()))
         .chain(r.lifted.map(|l| Note::said(l.line())))
         .chain(unfitted_notes(r))
         .chain(r.curvature_held.as_ref().map(|x| Note::said(x.line())))

@@ -160,8 +160,9 @@ pub(crate) fn condition_spans(conditions: &[Condition]) -> Vec<Span> {
 }
 
 /// The spans of every condition a swarm fit ran on (lateral and
-/// longitudinal), widened to the levels they were grouped at: what the
-/// written file's header states as fitted.
+/// longitudinal), widened to the samples fitted there
+/// ([`SwarmReport::sample_spans`](super::SwarmReport)): what the written
+/// file's header and `[fitted_ranges]` state as fitted.
 pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
     let conditions: Vec<_> = r
         .conditions
@@ -169,12 +170,18 @@ pub(crate) fn fitted_spans(r: &super::SwarmReport) -> Vec<Span> {
         .chain(&r.longitudinal_conditions)
         .cloned()
         .collect();
-    let levels: Vec<_> = std::iter::once(&r.grouping)
-        .chain(&r.longitudinal_grouping)
-        .flat_map(|g| &g.levels)
-        .collect();
-    let spans = widened_to_levels(condition_spans(&conditions), &levels, &conditions);
+    let spans = widened_to(condition_spans(&conditions), &r.sample_spans);
     widened_to_slips(spans, r.sample_slips)
+}
+
+/// `spans` each widened to the span of the same name in `reached`.
+fn widened_to(mut spans: Vec<Span>, reached: &[Span]) -> Vec<Span> {
+    for s in &mut spans {
+        if let Some(r) = reached.iter().find(|r| r.name == s.name) {
+            (s.lo, s.hi) = (s.lo.min(r.lo), s.hi.max(r.hi));
+        }
+    }
+    spans
 }
 
 /// `spans` with their slip angle and slip ratio widened to `reached`
@@ -220,8 +227,8 @@ pub(crate) fn widened_to_sample_slips(spans: Vec<Span>, d: &RigData) -> Vec<Span
     widened_to_slips(spans, reached)
 }
 
-/// Sets the slips the samples `d` of `r`'s first fit reach
-/// ([`sample_slips`]; a linear tyre's within its window).
+/// Sets the slips, loads, cambers and pressures the samples `d` of `r`'s
+/// first fit reach ([`sample_reach`]; a linear tyre's within its window).
 pub(crate) fn set_first_sample_slips(r: &mut super::SwarmReport, d: &RigData) {
     use crate::identify::Channel;
     let (axis, k) = match r.fit.channel {
@@ -232,41 +239,78 @@ pub(crate) fn set_first_sample_slips(r: &mut super::SwarmReport, d: &RigData) {
         .linear_window
         .as_ref()
         .map_or(f64::INFINITY, |w| w.max_abs_alpha_deg.to_radians());
-    r.sample_slips[k] = sample_slips(d, axis, &r.grouping.levels, &r.conditions, window);
+    let (slips, spans) = sample_reach(d, axis, &r.grouping.levels, &r.conditions, window);
+    r.sample_slips[k] = slips;
+    r.sample_spans = union(&r.sample_spans, &spans);
 }
 
-/// The smallest and largest slip along `axis` of the samples of `d`
-/// with a measured force that lie in the levels (`levels`, a
-/// grouping's) of the `conditions` fitted, within `max_abs` of zero (a
-/// linear tyre's window): the range the data cover, where the fitted
-/// points are means over slip bins (the Hoosier file's ±0.2094395 rad
-/// written as ±0.208567).
-pub(crate) fn sample_slips(
+/// The spans of `a` and `b` joined name by name.
+pub(crate) fn union(a: &[Span], b: &[Span]) -> Vec<Span> {
+    let mut out = a.to_vec();
+    for s in b {
+        match out.iter_mut().find(|o| o.name == s.name) {
+            Some(o) => (o.lo, o.hi) = (o.lo.min(s.lo), o.hi.max(s.hi)),
+            None => out.push(*s),
+        }
+    }
+    out
+}
+
+/// The level index of `v` among `levels`' levels of `variable` (`None`
+/// without such levels: every value alike).
+fn level_of(levels: &[Levels], variable: Variable, v: Option<f64>) -> Option<usize> {
+    let l = levels.iter().find(|l| l.variable == variable)?;
+    let v = v?;
+    l.levels.iter().position(|q| q.holds(v))
+}
+
+/// What the samples of `d` fitted in `conditions` (grouped at `levels`)
+/// reach, within `max_abs` of zero slip along `axis` (a linear tyre's
+/// window): the smallest and largest slip, and the spans of their load,
+/// camber and pressure. A sample is fitted when its load, camber and
+/// pressure levels are those of a condition (a condition's nominal is the
+/// median of its samples, inside its levels): the samples, not the
+/// conditions' points, which are means over slip bins (the Hoosier
+/// file's 1656 N level at 0° and 83.4 kPa: samples 1503 to 1795 N, its
+/// points' means 1601 to 1681 N), nor every sample of the levels (1474 to
+/// 1823 N at every camber and pressure).
+pub(crate) fn sample_reach(
     d: &RigData,
     axis: SlipAxis,
     levels: &[Levels],
     conditions: &[Condition],
     max_abs: f64,
-) -> Option<(f64, f64)> {
-    let used = |variable: Variable, v: f64, of: fn(&Condition) -> Option<f64>| {
-        levels
-            .iter()
-            .filter(|l| l.variable == variable)
-            .flat_map(|l| &l.levels)
-            .filter(|q| conditions.iter().any(|c| of(c) == Some(q.nominal)))
-            .any(|q| (q.lo..=q.hi).contains(&v))
+) -> (Option<(f64, f64)>, Vec<Span>) {
+    let key = |fz: f64, camber: f64, pressure: Option<f64>| {
+        (
+            level_of(levels, Variable::Load, Some(fz)),
+            level_of(levels, Variable::Camber, Some(camber)),
+            level_of(levels, Variable::Pressure, pressure),
+        )
     };
-    let pressure_used = |i: usize| {
-        d.pressure
-            .as_ref()
-            .is_none_or(|p| used(Variable::Pressure, p[i], |c| c.pressure))
+    let keys: Vec<_> = conditions
+        .iter()
+        .map(|c| key(c.fz, c.camber, c.pressure))
+        .collect();
+    let pressure = |i: usize| d.pressure.as_ref().map(|p| p[i]);
+    let keep = |i: usize| keys.contains(&key(d.fz[i], d.camber[i], pressure(i)));
+    let slips = slip_extremes(d, axis, max_abs, &keep);
+    let (slip, force) = match axis {
+        SlipAxis::Angle => (&d.alpha, &d.fy),
+        SlipAxis::Ratio => match d.longitudinal.as_ref() {
+            Some((k, f)) => (k, f),
+            None => return (slips, Vec::new()),
+        },
     };
-    let keep = |i: usize| {
-        used(Variable::Load, d.fz[i], |c| Some(c.fz))
-            && used(Variable::Camber, d.camber[i], |c| Some(c.camber))
-            && pressure_used(i)
-    };
-    slip_extremes(d, axis, max_abs, &keep)
+    let fitted: Vec<usize> = (0..d.len())
+        .filter(|&i| force[i].is_finite() && slip[i].abs() <= max_abs && keep(i))
+        .collect();
+    let spans = [
+        Span::of("fz", "N", fitted.iter().map(|&i| d.fz[i])),
+        Span::of("camber", "rad", fitted.iter().map(|&i| d.camber[i])),
+        Span::of("pressure", "Pa", fitted.iter().filter_map(|&i| pressure(i))),
+    ];
+    (slips, spans.into_iter().flatten().collect())
 }
 
 /// The smallest and largest slip along `axis` of the samples of `d` with
@@ -285,35 +329,6 @@ fn slip_extremes(
     let within =
         (0..d.len()).filter(|&i| force[i].is_finite() && slip[i].abs() <= max_abs && keep(i));
     Span::of("slip", "", within.map(|i| slip[i])).map(|s| (s.lo, s.hi))
-}
-
-/// `spans` widened to the samples of the levels the conditions were
-/// grouped at (`levels`, a grouping's): a condition's points are means of
-/// its samples, so their load ranges over 1601–1681 N where the level's
-/// samples ran from 1474 to 1823 N, every one of them measured.
-pub(crate) fn widened_to_levels(
-    mut spans: Vec<Span>,
-    levels: &[&Levels],
-    conditions: &[Condition],
-) -> Vec<Span> {
-    for s in &mut spans {
-        let (variable, of): (Variable, fn(&Condition) -> Option<f64>) = match s.name {
-            "fz" => (Variable::Load, |c| Some(c.fz)),
-            "camber" => (Variable::Camber, |c| Some(c.camber)),
-            "pressure" => (Variable::Pressure, |c| c.pressure),
-            _ => continue,
-        };
-        let used = levels
-            .iter()
-            .filter(|l| l.variable == variable)
-            .flat_map(|l| &l.levels)
-            .filter(|q| conditions.iter().any(|c| of(c) == Some(q.nominal)));
-        for q in used {
-            s.lo = s.lo.min(q.lo);
-            s.hi = s.hi.max(q.hi);
-        }
-    }
-    spans
 }
 
 /// `spans` of thinned rows (means over slip-angle bins) widened to the

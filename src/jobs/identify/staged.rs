@@ -5,11 +5,11 @@
 //! template's constants and layout kept) that is read back and checked to
 //! reproduce the fitted forces.
 
+use super::level_names::LevelNames;
 use super::{Options, StartArg};
 use crate::error::{Error, FitError, OptionsError};
 use crate::format::{exact, plural};
 use crate::identify::data::RigData;
-use crate::identify::grouping::{level_label, Variable};
 use crate::identify::mf_staged::{
     self, rms_text, HoldReason, Holding, PooledSigma, RowAccount, StagedReport, StartScheme,
 };
@@ -164,7 +164,8 @@ fn stage_lines(
                 }
             )),
         }
-        let load = |fz: f64| level_label(named, Variable::Load, fz);
+        let names = LevelNames::of(named, &[]);
+        let load = |fz: f64| names.load(fz);
         if let Some(line) = s.error_spread.as_ref().and_then(|e| e.line_naming(&load)) {
             out.push(format!("    where the error lies: {line}"));
         }

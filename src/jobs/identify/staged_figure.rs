@@ -146,7 +146,13 @@ struct Levels {
 /// its thinned rows average to).
 fn as_named(values: Vec<f64>, variable: Variable, named: &[Named]) -> Vec<f64> {
     match named.iter().find(|l| l.variable == variable) {
-        Some(l) => values.into_iter().map(|v| l.named(v)).collect(),
+        Some(_) => {
+            let names = super::level_names::LevelNames::of(named, &[]);
+            values
+                .into_iter()
+                .map(|v| names.nominal(variable, v))
+                .collect()
+        }
         None => values,
     }
 }

@@ -6,7 +6,6 @@ use super::holds::{held_lines, Held};
 use super::notes::{held_as_given, later_fit_notes, undetermined_note, unfitted_notes};
 use super::{SwarmReport, Written};
 use crate::format::{decimals_or_digits, distinct};
-use crate::identify::grouping::Variable;
 use crate::identify::{Fit, HeldFor};
 use crate::tyre::Identification;
 
@@ -59,14 +58,14 @@ impl SwarmReport {
             f.evaluations,
             f.seconds
         ));
+        let names = self.level_names();
         for c in &f.curves {
-            // Levels as the grouping's lines and the figure spell them.
+            // Levels as the grouping's lines and the figure name them.
             out.push(format!(
                 "    Fz {:>9}, camber {:>6}, pressure {}: {:>4} points, σ {:.3} %, RMS {} N",
-                Variable::Load.display(c.fz),
-                Variable::Camber.display(c.camber),
-                c.pressure
-                    .map_or("—".into(), |p| Variable::Pressure.display(p)),
+                names.load(c.fz),
+                names.camber(c.camber),
+                c.pressure.map_or("—".into(), |p| names.pressure(p)),
                 c.points,
                 c.sigma_percent,
                 decimals_or_digits(c.rms, 1, 3)
@@ -112,7 +111,7 @@ impl SwarmReport {
             ));
         }
         out.extend(
-            super::notes::sigma_notes(&self.fit)
+            super::notes::sigma_notes(&self.fit, &self.level_names())
                 .iter()
                 .map(|n| n.line(" ")),
         );

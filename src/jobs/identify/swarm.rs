@@ -98,6 +98,7 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         set_aside,
         small_forces: force_scale::small_forces(&data),
         sample_slips: [None; 2],
+        sample_spans: Vec::new(),
         grouping: grouped.report,
         longitudinal_grouping: None,
         options: o.clone(),

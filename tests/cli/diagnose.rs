@@ -232,17 +232,6 @@ fn campaign_folder(vehicle: &str, runs: &[(&str, String)]) -> tempfile::TempDir 
     dir
 }
 
-/// `text` (a run CSV, time first) with its last row repeated one time step
-/// later.
-fn one_sample_longer(text: &str) -> String {
-    let rows: Vec<&str> = text.lines().collect();
-    let t = |row: &str| -> f64 { row.split(',').next().unwrap().parse().unwrap() };
-    let (last, before) = (rows[rows.len() - 1], rows[rows.len() - 2]);
-    let next = t(last) + (t(last) - t(before));
-    let rest = &last[last.find(',').unwrap()..];
-    format!("{}{next:.4}{rest}\n", text)
-}
-
 #[test]
 fn diagnose_refuses_bad_campaigns_clearly() {
     // A vehicle file missing a key.

@@ -430,9 +430,9 @@ mod trips_s83_sim;
 mod trips_s84_idn;
 mod trips_s84_lead;
 mod trips_s84_sim;
+mod trips_s86_idn;
 mod trips_s86_lead;
 mod trips_s86_met;
-mod trips_s86_idn;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;
@@ -553,4 +553,15 @@ pub(crate) fn metrics_json(run_csv: &Path) -> (serde_json::Value, Vec<String>) {
         .map(|w| w.as_str().unwrap().to_string())
         .collect();
     (j, warnings)
+}
+
+/// `text` (a run CSV, time first) with its last row repeated one time step
+/// later.
+pub(crate) fn one_sample_longer(text: &str) -> String {
+    let rows: Vec<&str> = text.lines().collect();
+    let t = |row: &str| -> f64 { row.split(',').next().unwrap().parse().unwrap() };
+    let (last, before) = (rows[rows.len() - 1], rows[rows.len() - 2]);
+    let next = t(last) + (t(last) - t(before));
+    let rest = &last[last.find(',').unwrap()..];
+    format!("{}{next:.4}{rest}\n", text)
 }

@@ -13,13 +13,8 @@ use crate::trips_run_units::metrics;
 /// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and the
 /// sideslip of a state estimator, smooth to its last digit.
 fn estimator_run() -> String {
-    estimator_run_to(600)
-}
-
-/// [`estimator_run`] to sample `last` (600: 6 s).
-fn estimator_run_to(last: i32) -> String {
     let mut s = String::from("t,speed,steer,yaw_rate,beta\n");
-    for i in 0..=last {
+    for i in 0..=600 {
         let t = f64::from(i) / 100.0;
         let on = t > 1.0;
         let r = if on {
@@ -51,10 +46,11 @@ fn a_replay_trusts_each_channel_as_diagnose_does_and_says_why() {
     linear_tyre(dir.path());
     fs::create_dir(dir.path().join("runs")).unwrap();
     // Held-out scoring needs two runs: the same run twice, whose median
-    // scatter is its own (the second a sample longer: a byte-for-byte copy
-    // of a run is refused).
-    for (name, last) in [("a.csv", 600), ("b.csv", 601)] {
-        fs::write(dir.path().join("runs").join(name), estimator_run_to(last)).unwrap();
+    // scatter is its own (the second with its speed written `20.0`: a
+    // byte-for-byte copy of a run is refused).
+    let twin = estimator_run().replace(",20,", ",20.0,");
+    for (name, text) in [("a.csv", estimator_run()), ("b.csv", twin)] {
+        fs::write(dir.path().join("runs").join(name), text).unwrap();
     }
     let sc = format!(
         "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"runs/a.csv\"\n"

@@ -166,7 +166,8 @@ fn table_hints_know_the_kind_of_file() {
 /// the runs have and every value the key takes.
 #[test]
 fn a_degrees_column_no_run_has_is_refused_at_the_key() {
-    let dir = scratch(&[("a.csv", LOG), ("b.csv", LOG)]);
+    // The second run a sample longer: a copy of a run is refused.
+    let dir = scratch(&[("a.csv", LOG), ("b.csv", &one_sample_longer(LOG))]);
     let camp = format!(
         "{VEHICLE}\n[runs]\nfiles = [\"a.csv\", \"b.csv\"]\ndegrees = [\"roll\", \"bank\"]\n"
     );

@@ -140,3 +140,60 @@ fn a_byte_for_byte_copy_of_a_run_is_refused_as_the_same_run_twice() {
     );
     assert!(!dir.path().join("out").exists());
 }
+
+/// A spike masked in a piece that is dropped afterwards (the log's second
+/// piece, after a time gap, where the metrics measure the first) reached
+/// no fit or score: it was said "masked" alone, as if it had been.
+#[test]
+fn a_glitch_in_a_dropped_piece_is_said_masked_then_dropped_with_its_piece() {
+    let dir = tempfile::tempdir().unwrap();
+    let sim = dir.path().join("sim");
+    succeeds(&[
+        "simulate",
+        "scenarios/step_gbt6323_pac89.toml",
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    let history = fs::read_to_string(sim.join("history.csv")).unwrap();
+    let header: Vec<&str> = history.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let mut log = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+    // 100 Hz, a gap over 4.0–4.5 s, a deterministic scatter, and a spike
+    // of 0.5 rad/s in the yaw rate at 4.8 s.
+    for (i, line) in history.lines().skip(1).enumerate().step_by(10) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let t = v[col("t")];
+        if (4.0..4.5).contains(&t) {
+            continue;
+        }
+        let u = |k: f64| ((i as f64 * 12.9898 + k).sin() * 43758.5453).fract();
+        let spike = if (t - 4.8).abs() < 1e-9 { 0.5 } else { 0.0 };
+        log += &format!(
+            "{t:.2},{},{},{:.6},{:.5},{:.6}\n",
+            v[col("speed")],
+            v[col("steer")],
+            v[col("yaw_rate")] + 0.004 * u(0.0) + spike,
+            v[col("ay")] + 0.1 * u(1.0),
+            v[col("beta")] + 0.001 * u(2.0),
+        );
+    }
+    let path = dir.path().join("gap_spike.csv");
+    fs::write(&path, log).unwrap();
+    let o = run(&["metrics", path.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = stderr(&o);
+    assert!(
+        said.contains("glitches: 0 zero reads, 1 spike, 0 stuck values, 1 time gap (0 input samples repaired, 0 response samples masked)"),
+        "{said}"
+    );
+    assert!(
+        said.contains("spike at 4.800 s in ")
+            && said.contains("(1 sample, masked, then dropped with its piece ")
+            && said.contains("gap_spike.csv#2)"),
+        "{said}"
+    );
+    assert!(
+        said.contains("gap_spike.csv#2 (4.50–6.00 s, 151 samples) dropped: another piece was used"),
+        "{said}"
+    );
+}

@@ -398,6 +398,7 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
                 } else {
                     Treatment::Masked
                 },
+                dropped_with: None,
             });
         }
         if ch.is_input() {

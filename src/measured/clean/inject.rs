@@ -76,6 +76,7 @@ pub fn inject_glitches(run: &mut MeasuredRun, seed: u64) -> Vec<Glitch> {
             } else {
                 Treatment::Masked
             },
+            dropped_with: None,
         });
     }
     out.sort_by(|a, b| a.t.total_cmp(&b.t));

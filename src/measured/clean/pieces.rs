@@ -84,6 +84,7 @@ fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, us
                 value: run.t[i] - run.t[i - 1],
                 samples: 0,
                 treatment: Treatment::Split,
+                dropped_with: None,
             });
         }
     }
@@ -189,10 +190,7 @@ pub fn clean_run(
             report.pieces.push(piece_of(&piece, None));
             out.push(piece);
         } else {
-            report.samples_in_dropped_pieces += piece.t.len();
-            report
-                .dropped_pieces
-                .push(piece_of(&piece, Some(PieceRefusal::TooShort)));
+            report.drop_piece(&name, piece_of(&piece, Some(PieceRefusal::TooShort)));
         }
     }
     out
@@ -233,6 +231,7 @@ pub fn clean_single_with<T>(
     mut fits: impl FnMut(&MeasuredRun) -> Result<T, PieceRefusal>,
 ) -> Option<(MeasuredRun, T)> {
     let first = report.pieces.len();
+    let file = run.path.display().to_string();
     let pieces = clean_run(run, settings, report);
     report.pieces.truncate(first);
     let mut order: Vec<usize> = (0..pieces.len()).collect();
@@ -256,8 +255,7 @@ pub fn clean_single_with<T>(
         let reason = reasons[k].take().unwrap_or(PieceRefusal::AnotherPieceUsed);
         report.samples_kept -= p.t.len();
         report.samples_masked -= p.masked.len();
-        report.samples_in_dropped_pieces += p.t.len();
-        report.dropped_pieces.push(piece_of(p, Some(reason)));
+        report.drop_piece(&file, piece_of(p, Some(reason)));
     }
     let (k, v) = chosen?;
     pieces.into_iter().nth(k).map(|p| (p, v))

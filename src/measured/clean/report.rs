@@ -126,6 +126,18 @@ fn short(v: f64) -> String {
     format!("{}", (v * scale).round() / scale)
 }
 
+/// What was done with a glitch, as the terminal says it: its treatment,
+/// and the piece it went with where that piece was dropped.
+fn treated(g: &Glitch) -> String {
+    match &g.dropped_with {
+        Some(piece) => format!(
+            "{}, then dropped with its piece {piece}",
+            g.treatment.name()
+        ),
+        None => g.treatment.name().to_string(),
+    }
+}
+
 /// A glitch as the terminal says it. A time gap's value is its length,
 /// said as one with its ends ("t 86.04" read as a time stamp).
 fn glitch_line(g: &Glitch) -> String {
@@ -137,7 +149,7 @@ fn glitch_line(g: &Glitch) -> String {
             short(g.value),
             g.t,
             g.t + g.value,
-            g.treatment.name()
+            treated(g)
         );
     }
     format!(
@@ -148,7 +160,7 @@ fn glitch_line(g: &Glitch) -> String {
         g.channel.name(),
         short(g.value),
         plural(g.samples, "sample", "samples"),
-        g.treatment.name()
+        treated(g)
     )
 }
 
@@ -204,7 +216,7 @@ fn glitches_line(row: &[Glitch]) -> String {
             g.t + g.value,
             last.t,
             last.t + last.value,
-            g.treatment.name()
+            treated(g)
         );
     }
     let samples: usize = row.iter().map(|g| g.samples).sum();
@@ -219,7 +231,7 @@ fn glitches_line(row: &[Glitch]) -> String {
         last.t,
         short(last.value),
         plural(samples, "sample", "samples"),
-        g.treatment.name()
+        treated(g)
     )
 }
 
@@ -287,6 +299,11 @@ pub struct Glitch {
     pub samples: usize,
     /// What was done.
     pub treatment: Treatment,
+    /// The piece it was in, where that piece was dropped after the glitch
+    /// was treated (too short, another piece used): its treatment then
+    /// reached no fit or score.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dropped_with: Option<String>,
 }
 
 /// Why a slow span was excluded.
@@ -417,6 +434,22 @@ pub struct CleaningReport {
 }
 
 impl CleaningReport {
+    /// Lists `piece` of the file `file` as dropped, and marks the glitches
+    /// treated in it (every one of the file within its span but a time
+    /// gap, which is where pieces part) as dropped with it: a glitch is
+    /// counted once, said with what became of it.
+    pub(super) fn drop_piece(&mut self, file: &str, piece: Piece) {
+        for g in &mut self.glitches {
+            let inside = g.t >= piece.t_start && g.t <= piece.t_end;
+            if g.run == file && inside && g.kind != GlitchKind::TimeGap && g.dropped_with.is_none()
+            {
+                g.dropped_with = Some(piece.name.clone());
+            }
+        }
+        self.samples_in_dropped_pieces += piece.samples;
+        self.dropped_pieces.push(piece);
+    }
+
     /// Lists `part`, a part of the run read but not cleaned nor used, as a
     /// dropped piece for `reason`: its samples are counted as read and as
     /// dropped, so that nothing read goes unsaid.
@@ -494,7 +527,10 @@ impl CleaningReport {
         }
         // Alike glitches in a row (a 10 Hz standstill logged before 100 Hz
         // driving: a time gap at every sample) are said in one line each.
-        let key = |g: &Glitch| (g.run.clone(), g.kind, g.channel, g.treatment);
+        let key = |g: &Glitch| {
+            let dropped = g.dropped_with.clone();
+            (g.run.clone(), g.kind, g.channel, g.treatment, dropped)
+        };
         let glitches = said_in_rows(&self.glitches, key, glitch_line, glitches_line);
         out.extend(glitches.iter().take(first).map(|(l, _)| l.clone()));
         let more: usize = glitches.iter().skip(first).map(|(_, n)| n).sum();

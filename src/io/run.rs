@@ -5,6 +5,7 @@
 //! column ([`super::run_units`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::run_slope::{check_slope, Lateral};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
     check_speed_by_ax, check_time_step, check_yaw_rate,
@@ -277,6 +278,18 @@ fn read_run_lacking(
         if declared.contains(&AngleColumn::Beta) {
             check_beta_declared(path, &c, &speed, &yaw_rate, beta)?;
         }
+    }
+    if let Some(ay) = &ay {
+        // Over the whole run, where single samples scatter on a transient.
+        let lateral = Lateral {
+            t: &t,
+            speed: &speed,
+            yaw_rate: &yaw_rate,
+            ay,
+            beta: beta.as_deref(),
+            bank: bank.as_deref(),
+        };
+        check_slope(path, &c, &lateral)?;
     }
     let run = MeasuredRun {
         path: path.to_path_buf(),

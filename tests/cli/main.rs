@@ -431,6 +431,7 @@ mod trips_s84_idn;
 mod trips_s84_lead;
 mod trips_s84_sim;
 mod trips_s86_lead;
+mod trips_s86_units;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -109,3 +109,18 @@ fn swapped_words(unit: SlopeUnit, swapped: f64, with_beta: bool) -> String {
         )
     }
 }
+
+/// A `beta` column whose changes are about 100 times the sideslip its
+/// run's kinematics gives (β̇ = a_y/u − r on a flat road): in percent of a
+/// radian, where degrees would be 57.3 times. Judged by
+/// `io/run_slope.rs`'s `beta_factor`.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error("column `beta`: {} as read, and over the run's half-second means its changes are {}× what ∫(ay/speed − yaw_rate) dt gives (R² {}), where a sideslip in radians is about 1×, in degrees 57.3×, in percent of a radian 100× (this check reads 97–121× for percent, 55–69× for degrees): is `beta` in percent? divide it by 100 (FORMATS.md: rad)", Num(*value), fixed(*factor, 0), fixed(*r2, 2))]
+pub struct BetaInPercent {
+    /// The sideslip at the first moving sample, as read.
+    pub value: f64,
+    /// The fitted factor of `beta` over the kinematic sideslip.
+    pub factor: f64,
+    /// The fit's R².
+    pub r2: f64,
+}

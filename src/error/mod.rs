@@ -64,7 +64,7 @@ pub use fit::{
 pub use foreign_format::ForeignFormat;
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
-pub use lateral_slope::{LateralSlope, SlopeUnit};
+pub use lateral_slope::{BetaInPercent, LateralSlope, SlopeUnit};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use long_replay::LongReplay;
 pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};

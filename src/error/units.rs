@@ -296,6 +296,9 @@ pub enum UnitSlip {
     /// factor (`lateral_slope.rs`).
     #[error(transparent)]
     LateralSlope(#[from] super::lateral_slope::LateralSlope),
+    /// A sideslip in percent of a radian (`lateral_slope.rs`).
+    #[error(transparent)]
+    BetaInPercent(#[from] super::lateral_slope::BetaInPercent),
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

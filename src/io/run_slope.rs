@@ -37,7 +37,7 @@
 
 use super::columns::Columns;
 use crate::constants::G;
-use crate::error::{InputError, LateralSlope, SlopeUnit, UnitSlip};
+use crate::error::{BetaInPercent, InputError, LateralSlope, SlopeUnit, UnitSlip};
 use std::path::Path;
 
 /// Length of the stretches averaged, s: long against the lag between
@@ -199,4 +199,85 @@ pub(super) fn check_slope(path: &Path, cols: &Columns, c: &Lateral) -> Result<()
         }
         None => Ok(()),
     }
+}
+
+/// The least sideslip change a pair of means judged for
+/// [`beta_factor`] carries, rad (0.3°: above a sideslip sensor's noise
+/// over a mean, and what a step steer's transient moves).
+const BETA_CHANGE: f64 = 0.003;
+
+/// The factor a `beta` column is of the sideslip its run's kinematics
+/// gives, and the fit's R²: the change of `beta`'s half-second means
+/// regressed (through the origin) on `∫(ay/u − r) dt` between them (β̇ =
+/// a_y/u − r on a flat road, ISO 8855), over the pairs of moving means
+/// whose kinematic change passes [`BETA_CHANGE`]. Near 1 in radians, 57.3
+/// in degrees, 100 in percent of a radian; None with fewer than
+/// [`MIN_BINS`] such pairs.
+pub(super) fn beta_factor(c: &Lateral, beta: &[f64]) -> Option<(f64, f64)> {
+    let n = c.t.len();
+    let mut means: Vec<(f64, f64, f64)> = Vec::new();
+    let mut i = 0;
+    while i < n {
+        let mut j = i;
+        while j < n && c.t[j] - c.t[i] < BIN_SECONDS {
+            j += 1;
+        }
+        let m = (j - i) as f64;
+        let u = c.speed[i..j].iter().sum::<f64>() / m;
+        let rate: f64 = (i..j)
+            .map(|k| c.ay[k] / c.speed[k] - c.yaw_rate[k])
+            .sum::<f64>()
+            / m;
+        let b = beta[i..j].iter().sum::<f64>() / m;
+        let t = c.t[i..j].iter().sum::<f64>() / m;
+        let moving = c.speed[i..j].iter().all(|v| *v >= MOVING);
+        means.push(
+            if moving && u.is_finite() && b.is_finite() && rate.is_finite() {
+                (t, rate, b)
+            } else {
+                (t, f64::NAN, f64::NAN)
+            },
+        );
+        i = j;
+    }
+    let pairs: Vec<(f64, f64)> = means
+        .windows(2)
+        .map(|w| (0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0), w[1].2 - w[0].2))
+        .filter(|(x, y)| x.is_finite() && y.is_finite() && x.abs() >= BETA_CHANGE)
+        .collect();
+    (pairs.len() >= BETA_PAIRS).then(|| fit(pairs.into_iter()))
+}
+
+/// The fewest pairs of means [`beta_factor`] fits: a step steer's
+/// sideslip moves across one or two of them.
+const BETA_PAIRS: usize = 2;
+
+/// The factors of [`beta_factor`] that say percent of a radian (100×;
+/// it reads 97–121× on synth's steps in percent, 55–69× in degrees).
+const BETA_IN_PERCENT: (f64, f64) = (80.0, 160.0);
+
+/// The least R² of [`beta_factor`]'s fit that is judged.
+const BETA_R2: f64 = 0.7;
+
+/// Refuses a `beta` in percent of a radian ([`BETA_IN_PERCENT`]), at the
+/// first moving sample; degrees are named by `run_units`'s checks.
+pub(super) fn check_beta_percent(
+    path: &Path,
+    cols: &Columns,
+    c: &Lateral,
+    beta: &[f64],
+) -> Result<(), InputError> {
+    let Some((factor, r2)) = beta_factor(c, beta) else {
+        return Ok(());
+    };
+    if r2 < BETA_R2 || !(BETA_IN_PERCENT.0..=BETA_IN_PERCENT.1).contains(&factor) {
+        return Ok(());
+    }
+    let i = c.speed.iter().position(|u| *u >= MOVING).unwrap_or(0);
+    let slip = BetaInPercent {
+        value: beta[i],
+        factor,
+        r2,
+    };
+    Err(cols.error_at(path, i, "beta", UnitSlip::from(slip).into()))
 }

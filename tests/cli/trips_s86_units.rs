@@ -126,3 +126,30 @@ fn a_sweep_with_ay_in_g_is_refused_and_in_si_units_is_read() {
     assert!(said.contains("no step-steer metrics"), "{said}");
     assert!(!said.contains("half-second means"), "{said}");
 }
+
+/// A step steer's `beta` in percent of a radian (100×) was named as in
+/// degrees (57.3×); its changes against ∫(ay/speed − yaw_rate) dt say 115×:
+/// now named percent.
+#[test]
+fn a_step_steers_beta_in_percent_is_named_percent_not_degrees() {
+    let dir = tempfile::tempdir().unwrap();
+    let pct = rewritten(
+        dir.path(),
+        "step_100kph_2ms2",
+        0.0,
+        "beta",
+        100.0,
+        "pct.csv",
+    );
+    let (read, said) = metrics_on(&pct);
+    assert!(!read, "{said}");
+    assert!(said.contains("pct.csv:2:6: column `beta`:"), "{said}");
+    assert!(
+        said.contains("its changes are 115× what ∫(ay/speed − yaw_rate) dt gives"),
+        "{said}"
+    );
+    assert!(
+        said.contains("is `beta` in percent? divide it by 100"),
+        "{said}"
+    );
+}

@@ -16,6 +16,7 @@ mod file_kind;
 mod fit;
 mod foreign_format;
 mod input;
+mod lateral_slope;
 mod level_slip;
 mod long_replay;
 mod metrics;
@@ -63,6 +64,7 @@ pub use fit::{
 pub use foreign_format::ForeignFormat;
 pub(crate) use input::one_column_separator;
 pub use input::{CellProblem, InputError, Location};
+pub use lateral_slope::{BetaInPercent, LateralSlope, SlopeUnit};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use long_replay::LongReplay;
 pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};

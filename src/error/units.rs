@@ -292,6 +292,13 @@ pub enum UnitSlip {
     /// Slip angles in degrees under a linear fit (`slip_degrees.rs`).
     #[error(transparent)]
     SlipAngleInDegrees(#[from] super::slip_degrees::SlipAngleInDegrees),
+    /// A run's `ay` against its speed and yaw rate off by a unit's
+    /// factor (`lateral_slope.rs`).
+    #[error(transparent)]
+    LateralSlope(#[from] super::lateral_slope::LateralSlope),
+    /// A sideslip in percent of a radian (`lateral_slope.rs`).
+    #[error(transparent)]
+    BetaInPercent(#[from] super::lateral_slope::BetaInPercent),
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

@@ -5,6 +5,7 @@
 //! column ([`super::run_units`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::run_slope::{check_beta_percent, check_slope, Lateral};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
     check_speed_by_ax, check_time_step, check_yaw_rate,
@@ -267,6 +268,18 @@ fn read_run_lacking(
     }
     let (roll, bank) = (c.take_optional("roll"), c.take_optional("bank"));
     let beta = c.take_optional("beta");
+    if let (Some(ay), Some(beta)) = (&ay, &beta) {
+        // Before the size checks, which would name degrees.
+        let lateral = Lateral {
+            t: &t,
+            speed: &speed,
+            yaw_rate: &yaw_rate,
+            ay,
+            beta: None,
+            bank: None,
+        };
+        check_beta_percent(path, &c, &lateral, beta)?;
+    }
     for (column, v) in [("roll", &roll), ("bank", &bank), ("beta", &beta)] {
         if let Some(v) = v {
             check_roll_or_bank(path, &c, column, v)?;
@@ -277,6 +290,18 @@ fn read_run_lacking(
         if declared.contains(&AngleColumn::Beta) {
             check_beta_declared(path, &c, &speed, &yaw_rate, beta)?;
         }
+    }
+    if let Some(ay) = &ay {
+        // Over the whole run, where single samples scatter on a transient.
+        let lateral = Lateral {
+            t: &t,
+            speed: &speed,
+            yaw_rate: &yaw_rate,
+            ay,
+            beta: beta.as_deref(),
+            bank: bank.as_deref(),
+        };
+        check_slope(path, &c, &lateral)?;
     }
     let run = MeasuredRun {
         path: path.to_path_buf(),

@@ -52,6 +52,11 @@ pub(crate) const SMOOTHING_SECONDS: f64 = 1.0;
 /// degrees), wheel slip in a wheel-speed signal.
 pub const PLAUSIBLE_GRADE: f64 = 0.09967;
 
+/// Steepest bank an estimate is read as a road's, rad (35°; Talladega's
+/// 33° is the steepest racing bank): beyond it, a unit slip or a wrong
+/// sign in `a_y`, `u` or `r`; warned of, not used.
+pub const PLAUSIBLE_BANK: f64 = 0.6109;
+
 /// Where a road angle comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -183,6 +188,11 @@ impl RoadGeometry {
             _ => String::new(),
         };
         let caveat = match p.source {
+            AngleSource::LateralKinematics | AngleSource::LateralKinematicsWithSideslip
+                if p.p05.abs().max(p.p95.abs()) > PLAUSIBLE_BANK =>
+            {
+                " (warning: steeper than any road's 35°: more likely a unit slip or a wrong sign in ay, speed or yaw_rate than a bank; reported, not used)"
+            }
             AngleSource::LateralKinematics => {
                 " (no beta column: the sideslip's rate v̇ is left out, so a corner's entry and exit read as bank)"
             }
@@ -425,6 +435,16 @@ mod tests {
     }
 
     /// A flat road read by an accelerometer mounted with an offset of
+    #[test] // A speed in km/h reads as a bank past any road's.
+    fn a_bank_past_any_road_is_warned_of_as_a_unit_slip() {
+        let (mut r, _) = run();
+        r.speed.iter_mut().for_each(|u| *u *= 3.6);
+        let line = RoadGeometry::of("kmh", &r, SensorOffsets::default()).line();
+        let line = line.unwrap();
+        assert!(line.starts_with("kmh: bank estimated from ay − u·r -90.0°"));
+        assert!(line.contains("(warning: steeper than any road's 35°: more likely a unit"));
+    }
+
     /// −0.6 m/s² and a gyro reading 0.005 rad/s high: −3.6° of bank
     /// without the offsets, none with them.
     #[test]

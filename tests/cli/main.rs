@@ -433,6 +433,7 @@ mod trips_s84_sim;
 mod trips_s86_idn;
 mod trips_s86_lead;
 mod trips_s86_met;
+mod trips_s86_units;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -5,8 +5,10 @@
 //! 50); along more it is the crate's particle swarm ([`swarm`]: PSO over
 //! the box of each parameter, one particle at the start, stopped once its
 //! best has settled). Either evaluates the start too, so a fit is never
-//! worse than the model it starts from; the parameters before `held` (the
-//! axle characteristics of a candidate) keep their values in the start.
+//! worse than the model it starts from; the parameters outside the range
+//! searched (the axle characteristics of a candidate; a set's members but
+//! the one it adds, and the roll dynamics its members fitted) keep their
+//! values in the start.
 //! Units are the parameters' own; the cost is the problem's scaled
 //! ½·Σ e².
 
@@ -15,6 +17,7 @@ use crate::diagnose::fit::GlobalSearch;
 use crate::diagnose::model::Augmented;
 use crate::optim::local::Residuals;
 use crate::optim::pso::Pso;
+use std::ops::Range;
 
 /// Cells per parameter of the grid stage, by the number of parameters
 /// searched (one, two); a wider search keeps the swarm. Nine cells put a
@@ -25,8 +28,8 @@ use crate::optim::pso::Pso;
 /// give the swarm's verdicts, held-out errors and fitted values.
 pub const GRID_CELLS: [usize; 2] = [9, 5];
 
-/// The global stage of a fit over every parameter but the first `held`
-/// (kept at their values in `start`): a grid ([`grid`]) along one or two
+/// The global stage of a fit over the parameters in `searched` (the rest
+/// kept at their values in `start`): a grid ([`grid`]) along one or two
 /// parameters, the swarm ([`swarm`]) along more; its best point (never
 /// worse than `start`) and how it searched.
 // The diagnosis's fits take [`global_best`] (the cost too); this stays for
@@ -36,9 +39,9 @@ pub fn global_search<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
-    held: usize,
+    searched: Range<usize>,
 ) -> (Vec<f64>, GlobalSearch) {
-    let (p, _, global) = global_best(problem, start, pso, held);
+    let (p, _, global) = global_best(problem, start, pso, searched);
     (p, global)
 }
 
@@ -50,14 +53,14 @@ pub fn global_best<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
-    held: usize,
+    searched: Range<usize>,
 ) -> (Vec<f64>, Option<f64>, GlobalSearch) {
-    let searched = problem.bounds.len().saturating_sub(held);
-    match searched {
+    let searched = searched.start.min(problem.bounds.len())..searched.end.min(problem.bounds.len());
+    match searched.len() {
         0 => (problem.clamp(start), None, GlobalSearch::None),
-        1 | 2 => {
-            let per_parameter = GRID_CELLS[searched - 1];
-            let (p, cost, points) = grid(problem, start, held, per_parameter);
+        n @ (1 | 2) => {
+            let per_parameter = GRID_CELLS[n - 1];
+            let (p, cost, points) = grid(problem, start, searched, per_parameter);
             let global = GlobalSearch::Grid {
                 per_parameter,
                 points,
@@ -65,33 +68,33 @@ pub fn global_best<F: Fn(&[f64]) -> Augmented + Sync>(
             (p, Some(cost), global)
         }
         _ => {
-            let (p, cost, evaluations) = swarm(problem, start, pso, held);
+            let (p, cost, evaluations) = swarm(problem, start, pso, searched);
             (p, Some(cost), GlobalSearch::Swarm { evaluations })
         }
     }
 }
 
 /// The grid stage: the cost at the centres of `cells` equal cells along
-/// each parameter but the first `held` (the product of them) and at
+/// each parameter in `searched` (the product of them) and at
 /// `start`; the lowest of them, its cost and the replays made (a point
 /// is replayed only until it is known not to be lower than the best so
 /// far, [`Residuals::cost_below`]).
 fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
-    held: usize,
+    searched: Range<usize>,
     cells: usize,
 ) -> (Vec<f64>, f64, usize) {
     let p0 = problem.clamp(start);
-    let d = p0.len().saturating_sub(held);
+    let d = searched.len();
     let mut best = (problem.cost(&p0), p0.clone());
     problem.keep_last();
     let total = cells.pow(d as u32);
     let mut q = p0.clone();
     for index in 0..total {
         let mut rest = index;
-        for (k, slot) in q[held..].iter_mut().enumerate() {
-            let (lo, hi) = problem.bounds[held + k];
+        for (k, slot) in q[searched.clone()].iter_mut().enumerate() {
+            let (lo, hi) = problem.bounds[searched.start + k];
             *slot = lo + ((rest % cells) as f64 + 0.5) * (hi - lo) / cells as f64;
             rest /= cells;
         }
@@ -107,8 +110,8 @@ fn grid<F: Fn(&[f64]) -> Augmented + Sync>(
     (best.1, best.0, total + 1)
 }
 
-/// The swarm search of a fit: PSO over the bounds of every parameter but
-/// the first `held` (kept at their values in `start`; at least one is
+/// The swarm search of a fit: PSO over the bounds of the parameters in
+/// `searched` (the rest kept at their values in `start`; at least one is
 /// searched, [`global_search`] sees to it), one particle at `start`; its
 /// best point, its cost and the evaluations made (each replayed only until
 /// it is known not to be below its particle's best,
@@ -117,12 +120,12 @@ fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     start: &[f64],
     pso: &Pso,
-    held: usize,
+    searched: Range<usize>,
 ) -> (Vec<f64>, f64, usize) {
     let p0 = problem.clamp(start);
     let full = |q: &[f64]| {
-        let mut p = p0[..held].to_vec();
-        p.extend_from_slice(q);
+        let mut p = p0.clone();
+        p[searched.clone()].copy_from_slice(q);
         p
     };
     // The lowest cost so far, whose replays the problem keeps: the swarm's
@@ -138,8 +141,8 @@ fn swarm<F: Fn(&[f64]) -> Augmented + Sync>(
             }
             c
         },
-        &problem.bounds[held..],
-        &[p0[held..].to_vec()],
+        &problem.bounds[searched.clone()],
+        &[p0[searched.clone()].to_vec()],
     );
     (full(&r.best), r.value, r.evaluations)
 }
@@ -200,7 +203,7 @@ mod tests {
         let problem = problem(&runs, &[B, B]);
         let best_fit = optimum(&problem);
         let start = [35.0, 35.0];
-        let (best, _, points) = grid(&problem, &start, 0, 5);
+        let (best, _, points) = grid(&problem, &start, 0..2, 5);
         assert_eq!(points, 26);
         // The lowest of the 25 cell centres 2 + (i + ½)·7.6.
         let centre = |i: usize| 2.0 + (i as f64 + 0.5) * 7.6;
@@ -225,12 +228,12 @@ mod tests {
         let problem = problem(&runs, &[B, B]);
         // At the optimum no cell is better.
         let at = optimum(&problem);
-        let (best, _, points) = grid(&problem, &at, 0, 9);
+        let (best, _, points) = grid(&problem, &at, 0..2, 9);
         assert_eq!((best, points), (at.clone(), 82));
         // The front held at the optimum's: the best of the rear's nine
         // cells is the centre nearest its optimum (2 + 2.5·38/9 = 12.56,
         // the third).
-        let (best, _, points) = grid(&problem, &[at[0], 35.0], 1, 9);
+        let (best, _, points) = grid(&problem, &[at[0], 35.0], 1..2, 9);
         assert_eq!(points, 10);
         assert_eq!(best[0], at[0]);
         assert!(
@@ -251,7 +254,9 @@ mod tests {
             ..Pso::default()
         };
         let start = [20.0, 20.0, 1.0];
-        let stage = |p: &Problem<_>, held| global_search(p, &start[..p.bounds.len()], &pso, held).1;
+        let stage = |p: &Problem<_>, held: usize| {
+            global_search(p, &start[..p.bounds.len()], &pso, held..p.bounds.len()).1
+        };
         assert_eq!(
             stage(&two, 0),
             GlobalSearch::Grid {
@@ -274,5 +279,16 @@ mod tests {
             stage(&three, 1),
             GlobalSearch::Grid { points: 26, .. }
         ));
+        // A range that leaves a tail held (a set's roll dynamics) grids
+        // the parameters inside it only, and keeps the tail's values.
+        let (best, global) = global_search(&three, &[20.0, 20.0, 1.3], &pso, 0..1);
+        assert_eq!(
+            global,
+            GlobalSearch::Grid {
+                per_parameter: 9,
+                points: 10
+            }
+        );
+        assert_eq!(best[1..], [20.0, 1.3]);
     }
 }

@@ -458,7 +458,7 @@ impl<'a> Context<'a> {
             .map_or_else(|| s.off(), |(_, p)| p.clone());
         // The global stage's best was replayed and kept: its cost as found
         // (the same number a replay would give) where it was evaluated.
-        let (p, cost, global) = global_best(problem, &from, pso, held);
+        let (p, cost, global) = global_best(problem, &from, pso, global_stage(&s.layout));
         let cost = cost
             .filter(|c| c.is_finite())
             .unwrap_or_else(|| problem.cost(&p));
@@ -562,16 +562,29 @@ pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
     (runs, folds, pso)
 }
 
-/// Where the global stage of a fit of `layout` starts searching: after the
-/// axle characteristics for a single effect (its own parameters and roll
-/// dynamics are searched); for a combination, at the added (last) effect,
-/// so that only its parameters and the roll dynamics after them are
-/// searched. A combination's starts already carry the current set at its
-/// own fit and the added effect at its single fit, with the current set's
-/// effects off beside it (`search::extensions`): what is left unknown is
-/// where the added effect sits beside the set, a grid along its one or two
-/// parameters where a swarm over every effect parameter of the set made
-/// about 45 replays for the same optimum (the book's measured history).
+/// The parameters a candidate's global stage searches: a single's after
+/// the axle characteristics (its own and the roll dynamics of a roll
+/// effect); a set's only the added effect's own one to three. A
+/// combination's starts already carry the current set at its own fit and
+/// the added effect at its single fit, with the current set's effects off
+/// beside it (`search::extensions`), and the roll dynamics as its members
+/// fitted them: what is left unknown is where the added effect sits beside
+/// the set, a grid along its one or two parameters (the polish frees them
+/// all). A swarm over them and the roll dynamics spent 90–130 replays
+/// where a roll effect was in the set; over every effect parameter of the
+/// set, about 45 for the same optimum (the book's measured history).
+pub(crate) fn global_stage(layout: &Layout) -> std::ops::Range<usize> {
+    match layout.kinds.len() {
+        0 | 1 => layout.axle_count()..layout.roll().end,
+        n => layout.effect(n - 1),
+    }
+}
+
+/// Where the restricted fit of a set ([`Context::restricted`]) starts
+/// freeing parameters: after the axle characteristics for a single effect;
+/// for a combination, at the added (last) effect, so that its parameters
+/// and the roll dynamics after them are fitted with the members before it
+/// held.
 pub(crate) fn searched_from(layout: &Layout) -> usize {
     match layout.kinds.len() {
         0 | 1 => layout.axle_count(),
@@ -595,5 +608,20 @@ mod tests {
         assert_eq!(set.effect(1), axles + 2..axles + 3);
         let set = Layout::new(&[SensorDelay, SteerPath, RelaxationLength], false);
         assert_eq!(searched_from(&set), 3);
+    }
+
+    #[test]
+    fn a_sets_global_stage_holds_the_roll_dynamics_its_members_fitted() {
+        use EffectKind::RollSteer;
+        let single = Layout::new(&[RollSteer], true);
+        assert_eq!(
+            global_stage(&single),
+            single.axle_count()..single.roll().end
+        );
+        assert!(global_stage(&single).contains(&single.roll().start));
+        let set = Layout::new(&[RollSteer, SteerPath], true);
+        assert_eq!(global_stage(&set), set.effect(1));
+        assert_eq!(global_stage(&set).len(), 2);
+        assert!(!global_stage(&set).contains(&set.roll().start));
     }
 }

@@ -74,6 +74,37 @@ impl Layout {
         start..start + self.kinds[i].parameters().len()
     }
 
+    /// The parameters a candidate's global stage searches: a single's after
+    /// the axle characteristics (its own and the roll dynamics of a roll
+    /// effect); a set's only the added (last) effect's own one to three. A
+    /// combination's starts already carry the current set at its own fit
+    /// and the added effect at its single fit, with the current set's
+    /// effects off beside it (`search::extensions`), and the roll dynamics
+    /// as its members fitted them: what is left unknown is where the added
+    /// effect sits beside the set, a grid along its one or two parameters
+    /// (the polish frees them all). A swarm over them and the roll dynamics
+    /// spent 90–130 replays where a roll effect was in the set; over every
+    /// effect parameter of the set, about 45 for the same optimum (the
+    /// book's measured history).
+    pub fn global_stage(&self) -> Range<usize> {
+        match self.kinds.len() {
+            0 | 1 => self.axle_count()..self.roll().end,
+            n => self.effect(n - 1),
+        }
+    }
+
+    /// Where a set's restricted fit (Levenberg–Marquardt with the members
+    /// before the added effect held) starts freeing parameters: after the
+    /// axle characteristics for a single effect; for a combination, at the
+    /// added (last) effect, so that its parameters and the roll dynamics
+    /// after them are fitted.
+    pub fn restricted_from(&self) -> usize {
+        match self.kinds.len() {
+            0 | 1 => self.axle_count(),
+            n => self.effect(n - 1).start,
+        }
+    }
+
     /// Where the roll dynamics are (empty when not fitted).
     pub fn roll(&self) -> Range<usize> {
         let end = self.effects().end;
@@ -170,5 +201,34 @@ mod tests {
         let q2 = [0.6, 0.6, 0.6, 0.02];
         let start = Layout::new(&[RollSteer], true).combined(&p2, RoadBank, &q2);
         assert_eq!(start, [0.5, 0.5, 0.5, -0.1, 0.1, 0.02, 1.5, 0.5]);
+    }
+
+    #[test]
+    fn a_single_searches_after_the_axles_and_a_set_only_the_effect_it_adds() {
+        use EffectKind::{RelaxationLength, SensorDelay, SteerPath};
+        let axles = Layout::new(&[SteerPath], true).axle_count();
+        assert_eq!(Layout::new(&[SteerPath], true).restricted_from(), axles);
+        assert_eq!(Layout::new(&[SteerPath], false).restricted_from(), 0);
+        // The steer path's delay and lag come first; the sensor delay after.
+        let set = Layout::new(&[SteerPath, SensorDelay], true);
+        assert_eq!(set.restricted_from(), axles + 2);
+        assert_eq!(set.global_stage(), axles + 2..axles + 3);
+        let set = Layout::new(&[SensorDelay, SteerPath, RelaxationLength], false);
+        assert_eq!(set.restricted_from(), 3);
+    }
+
+    #[test]
+    fn a_sets_global_stage_holds_the_roll_dynamics_its_members_fitted() {
+        use EffectKind::{RollSteer, SteerPath};
+        let single = Layout::new(&[RollSteer], true);
+        assert_eq!(
+            single.global_stage(),
+            single.axle_count()..single.roll().end
+        );
+        assert!(single.global_stage().contains(&single.roll().start));
+        let set = Layout::new(&[RollSteer, SteerPath], true);
+        assert_eq!(set.global_stage(), set.effect(1));
+        assert_eq!(set.global_stage().len(), 2);
+        assert!(!set.global_stage().contains(&set.roll().start));
     }
 }

@@ -50,7 +50,7 @@ use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules;
 #[cfg(doc)]
 use crate::diagnose::verdict::rules::{ACCEPT, RESTRICTED_MARGIN, SCREEN_MARGIN};
-use crate::diagnose::verdict::score::{searched_from, Context, Scored, Started};
+use crate::diagnose::verdict::score::{Context, Scored, Started};
 #[cfg(doc)]
 use crate::diagnose::verdict::screening::screened_additions;
 use crate::diagnose::verdict::screening::screened_row;
@@ -64,12 +64,12 @@ pub const RESTRICTED_ITERATIONS: usize = 20;
 impl Context<'_> {
     /// The restricted fit of a set whose global stage is done (`started`):
     /// Levenberg–Marquardt along the parameters its global stage searched
-    /// ([`searched_from`] on), the rest held at the start, on all runs
+    /// ([`crate::diagnose::fit::layout::Layout::restricted_from`] on), the rest held at the start, on all runs
     /// (the data's residuals: the prior's rows weigh only the axles, held
     /// here). The set as scored without its folds.
     pub(crate) fn restricted(&self, started: &Started) -> Scored {
         let s = &started.setting;
-        let held = searched_from(&s.layout);
+        let held = s.layout.restricted_from();
         let at = &started.start;
         let stamps = self.timing.map(|_| Stamps::default());
         let t0 = Instant::now();

@@ -14,7 +14,6 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::effects::EffectKind;
 use crate::diagnose::fit::fold_noise::{fold_noise_factors, held_rows};
 use crate::diagnose::fit::global::global_best;
-use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::refit::{refit, training_rows};
 use crate::diagnose::fit::{
@@ -430,7 +429,7 @@ impl<'a> Context<'a> {
     /// The start of a candidate's polish and how its global stage searched:
     /// the lowest cost of `starts` and of the global stage from the best of
     /// them (from the effect off without them) over the parameters
-    /// [`searched_from`] leaves free ([`global_best`]: a grid along one or
+    /// [`crate::diagnose::fit::layout::Layout::global_stage`] leaves free ([`global_best`]: a grid along one or
     /// two parameters, a swarm with one particle at that point along more).
     /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
@@ -444,7 +443,7 @@ impl<'a> Context<'a> {
         starts: &[Vec<f64>],
         pso: &Pso,
     ) -> (Vec<f64>, GlobalSearch) {
-        let held = searched_from(&s.layout);
+        let held = s.layout.restricted_from();
         let mut tried: Vec<(f64, Vec<f64>)> = starts
             .iter()
             .map(|p| (problem.cost(p), p.clone()))
@@ -458,7 +457,7 @@ impl<'a> Context<'a> {
             .map_or_else(|| s.off(), |(_, p)| p.clone());
         // The global stage's best was replayed and kept: its cost as found
         // (the same number a replay would give) where it was evaluated.
-        let (p, cost, global) = global_best(problem, &from, pso, global_stage(&s.layout));
+        let (p, cost, global) = global_best(problem, &from, pso, s.layout.global_stage());
         let cost = cost
             .filter(|c| c.is_finite())
             .unwrap_or_else(|| problem.cost(&p));
@@ -560,68 +559,4 @@ pub(crate) fn prepare(c: &Campaign) -> (Vec<Prepared>, Vec<Vec<usize>>, Pso) {
         ..Pso::default()
     };
     (runs, folds, pso)
-}
-
-/// The parameters a candidate's global stage searches: a single's after
-/// the axle characteristics (its own and the roll dynamics of a roll
-/// effect); a set's only the added effect's own one to three. A
-/// combination's starts already carry the current set at its own fit and
-/// the added effect at its single fit, with the current set's effects off
-/// beside it (`search::extensions`), and the roll dynamics as its members
-/// fitted them: what is left unknown is where the added effect sits beside
-/// the set, a grid along its one or two parameters (the polish frees them
-/// all). A swarm over them and the roll dynamics spent 90–130 replays
-/// where a roll effect was in the set; over every effect parameter of the
-/// set, about 45 for the same optimum (the book's measured history).
-pub(crate) fn global_stage(layout: &Layout) -> std::ops::Range<usize> {
-    match layout.kinds.len() {
-        0 | 1 => layout.axle_count()..layout.roll().end,
-        n => layout.effect(n - 1),
-    }
-}
-
-/// Where the restricted fit of a set ([`Context::restricted`]) starts
-/// freeing parameters: after the axle characteristics for a single effect;
-/// for a combination, at the added (last) effect, so that its parameters
-/// and the roll dynamics after them are fitted with the members before it
-/// held.
-pub(crate) fn searched_from(layout: &Layout) -> usize {
-    match layout.kinds.len() {
-        0 | 1 => layout.axle_count(),
-        n => layout.effect(n - 1).start,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use EffectKind::{RelaxationLength, SensorDelay, SteerPath};
-
-    #[test]
-    fn a_single_searches_after_the_axles_and_a_set_only_the_effect_it_adds() {
-        let axles = Layout::new(&[SteerPath], true).axle_count();
-        assert_eq!(searched_from(&Layout::new(&[SteerPath], true)), axles);
-        assert_eq!(searched_from(&Layout::new(&[SteerPath], false)), 0);
-        // The steer path's delay and lag come first; the sensor delay after.
-        let set = Layout::new(&[SteerPath, SensorDelay], true);
-        assert_eq!(searched_from(&set), axles + 2);
-        assert_eq!(set.effect(1), axles + 2..axles + 3);
-        let set = Layout::new(&[SensorDelay, SteerPath, RelaxationLength], false);
-        assert_eq!(searched_from(&set), 3);
-    }
-
-    #[test]
-    fn a_sets_global_stage_holds_the_roll_dynamics_its_members_fitted() {
-        use EffectKind::RollSteer;
-        let single = Layout::new(&[RollSteer], true);
-        assert_eq!(
-            global_stage(&single),
-            single.axle_count()..single.roll().end
-        );
-        assert!(global_stage(&single).contains(&single.roll().start));
-        let set = Layout::new(&[RollSteer, SteerPath], true);
-        assert_eq!(global_stage(&set), set.effect(1));
-        assert_eq!(global_stage(&set).len(), 2);
-        assert!(!global_stage(&set).contains(&set.roll().start));
-    }
 }

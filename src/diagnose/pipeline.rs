@@ -229,6 +229,15 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
             .any(|a| a.abs() > VISIBLE_AX)
     });
     let banked = c.runs.iter().any(|r| r.bank.is_some());
+    // Linear base tyres have no limit for a friction scale to lower.
+    let linear = |t: &crate::tyre::Tyre| matches!(t, crate::tyre::Tyre::Linear(_));
+    let linear_base = match &c.tyres {
+        crate::diagnose::campaign::BaseTyres::Given(f, r) => linear(f) && linear(r),
+        crate::diagnose::campaign::BaseTyres::Rig { model, .. } => {
+            *model == crate::tyre::ModelName::Linear
+        }
+        crate::diagnose::campaign::BaseTyres::FromRuns => false,
+    };
     let mut notes = Vec::new();
     let effects = c
         .effects
@@ -242,6 +251,7 @@ fn visible_effects(c: &Campaign) -> (Vec<EffectKind>, Vec<Note>) {
                     }
                 }
                 Needs::BankChannel if !banked => Unseen::BankChannel,
+                Needs::FrictionLimit if linear_base => Unseen::FrictionLimit,
                 _ => return true,
             };
             notes.push(Note::NotACandidate { effect: *e, lacks });

@@ -176,6 +176,8 @@ pub enum Unseen {
     },
     /// A bank channel.
     BankChannel,
+    /// Base tyres with a friction limit (the base model's are linear).
+    FrictionLimit,
 }
 
 impl std::fmt::Display for Unseen {
@@ -186,6 +188,9 @@ impl std::fmt::Display for Unseen {
                 "no run has a longitudinal acceleration above {threshold} m/s² (an ax channel or a changing speed)"
             ),
             Unseen::BankChannel => f.write_str("no run has a bank channel"),
+            Unseen::FrictionLimit => f.write_str(
+                "the base model's tyres are linear, with no friction limit for a friction scale to lower: its fit would hold it at 1 whatever the runs show (give tyres with a limit, rig data or none, for axles identified from the runs)",
+            ),
         }
     }
 }

@@ -83,7 +83,8 @@ impl Truth {
             // longitudinal and bank-profile effects; the logged ones can
             // (the bank profile where they log the bank).
             Truth::Augmented => match kind.needs() {
-                Needs::Nothing => true,
+                // The proving ground's UniTire truth and PAC89 base saturate.
+                Needs::Nothing | Needs::FrictionLimit => true,
                 Needs::LongitudinalAcceleration => programme.logged(),
                 Needs::BankChannel => programme.logs_bank(),
             }

@@ -197,3 +197,55 @@ fn a_glitch_in_a_dropped_piece_is_said_masked_then_dropped_with_its_piece() {
         "{said}"
     );
 }
+
+/// `road_friction` on linear base tyres: a friction scale moves a linear
+/// tyre's force nowhere, so its fit sat at 1, "held at its off value: no
+/// measured channel responds to it", and the verdict named it "the best"
+/// candidate, removing none of the gap. It is now no candidate, and why.
+#[test]
+fn road_friction_on_linear_base_tyres_is_no_candidate_and_says_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(dir.path(), "c", &[]);
+    fs::write(
+        c.join("linear.toml"),
+        "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+    )
+    .unwrap();
+    let vehicle = fs::read_to_string(c.join("vehicle.toml")).unwrap();
+    let linear = vehicle.replace(
+        "rig = \"tyre_rig.csv\"\nmodel = \"pac89\"",
+        "file = \"linear.toml\"",
+    );
+    assert_ne!(linear, vehicle, "{vehicle}");
+    let why = "road_friction: not a candidate: the base model's tyres are linear, with no friction limit for a friction scale to lower";
+    fs::write(
+        c.join("vehicle.toml"),
+        format!("{linear}effects = [\"road_friction\", \"sensor_delay\"]\n"),
+    )
+    .unwrap();
+    let (said, d) = diagnose_to(&c, &dir.path().join("out"));
+    assert!(said.contains(why), "{said}");
+    let ranked: Vec<&serde_json::Value> = d["ranking"].as_array().unwrap().iter().collect();
+    assert!(
+        ranked
+            .iter()
+            .all(|r| r["effects"] != serde_json::json!(["road_friction"])),
+        "{}",
+        d["ranking"]
+    );
+    assert!(!said.contains("the best, road_friction"), "{said}");
+    // Alone, it leaves nothing to try: refused, saying why.
+    fs::write(
+        c.join("vehicle.toml"),
+        format!("{linear}effects = [\"road_friction\"]\n"),
+    )
+    .unwrap();
+    let second = dir.path().join("second");
+    fs::create_dir(&second).unwrap();
+    let e = fails_cleanly("diagnose", &c, &second);
+    assert!(
+        e.contains("none of the candidate effects")
+            && e.contains("the base model's tyres are linear"),
+        "{e}"
+    );
+}

@@ -163,7 +163,7 @@ impl Effect for RoadFriction {
     const PARAMETERS: &'static [Parameter] = &[par("friction_scale", "-", 1.0, 0.3, 1.5)];
     const SIGNATURE: &'static str =
         "no change in the linear range, a lower limit: a ramp steer to the limit";
-    const NEEDS: Needs = Needs::Nothing;
+    const NEEDS: Needs = Needs::FrictionLimit;
     const USES_ROLL: bool = false;
     const TRUTH: &'static [f64] = &[0.75];
     /// A scale on the campaign's road friction.

@@ -69,6 +69,9 @@ pub enum Needs {
     LongitudinalAcceleration,
     /// A `bank` channel.
     BankChannel,
+    /// Base tyres with a friction limit: a friction scale moves a linear
+    /// tyre's force nowhere.
+    FrictionLimit,
 }
 
 /// A parameter of an effect.

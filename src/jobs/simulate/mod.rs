@@ -18,7 +18,7 @@ use crate::diagnose::report::gap::{run_gap, ChannelGap};
 use crate::diagnose::report::trust::channel_trust;
 use crate::diagnose::report::{words, ChannelNoise};
 use crate::error::{Error, PieceRefusal};
-use crate::io::load_scenario;
+use crate::io::{load_scenario, Scenario};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
@@ -32,7 +32,7 @@ use crate::report::stale::{leftovers, Leftovers, OwnSet};
 use crate::report::{
     refuse_overwrites, write_columns_to, write_json, write_json_sorted, OutputLock,
 };
-use crate::sim::{LiftOff, Method, TimeHistory, Wheel};
+use crate::sim::{LiftOff, Method, Simulation, TimeHistory, Wheel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -142,13 +142,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
             .simulate_counted(&sc.model, &sc.manoeuvre, sc.initial, counter)
     };
     let h = &sim.history;
-    let integration = match (sc.integrator.method, sim.stats()) {
-        (Method::Dopri5(tol), Some(st)) => format!(
-            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
-            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
-        ),
-        _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
-    };
+    let integration = integration_words(&sc, &sim);
     let metrics = match sc.manoeuvre {
         // From the dense output under Dormand–Prince (events located to
         // the tolerance), from the rows under RK4.
@@ -167,81 +161,11 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
     }
     .filter(|_| checks::gripless(&sc) || metrics.as_ref().is_some_and(|m| !m.settled));
     let metrics = metrics.filter(|_| unstable.is_none());
-    // The tyres' grip on this road (the lower axle's): a sideslip with
-    // the tyres far below it is a slow car's turn, not a slide.
-    let friction = checks::axle_friction(&sc);
-    let grip = friction.map(|[f, r]| f.min(r) * crate::constants::G);
-    // The most of its grip either axle uses: a large overshoot far below
-    // it is a lightly damped response, not a spin.
-    let peak_share = friction.map(|mu| checks::peak_grip_used(h, mu));
-    let mut warnings = metrics.as_ref().map_or_else(Vec::new, |m| {
-        applicability_with_grip(
-            m,
-            Some(sc.manoeuvre.speed(0.0)),
-            grip.map(Grip::Tyres),
-            match peak_share {
-                Some(share) => Some(Overshoot::GripUsed(share)),
-                None => checks::gripless(&sc).then_some(Overshoot::NoGripLimit),
-            },
-        )
-    });
+    let mut warnings = applicability(&sc, h, metrics.as_ref());
     warnings.extend(unstable.map(|u| u.to_string()));
-    warnings.extend(metrics.as_ref().and_then(StepMetrics::settling_warning));
-    // A `[metrics] filter_hz` slow enough to measure itself, said as
-    // `metrics` says it of a log (its rows every step).
-    warnings.extend(
-        metrics.as_ref().and_then(|m| {
-            super::metrics::filter_speed::filter_measures_itself(m, sc.integrator.step)
-        }),
-    );
-    // A step no steering can drive (an instant one, at rise_time = 0).
-    if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
-        warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));
-    }
-    // A step sized for a steady lateral acceleration that settles at
-    // another.
-    if let (Some(asked), Some(m)) = (sc.asked_ay, &metrics) {
-        warnings.extend(checks::asked_ay_missed(asked, m.ay_steady));
-    }
-    // A schedule (a replay of no measured run) is a speed someone wrote:
-    // held to what a car on this road can drive.
-    if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {
-        warnings.extend(schedule_applicability(
-            &r.t,
-            &r.steer,
-            &r.speed,
-            sc.integrator.friction,
-        ));
-    }
-    let mut said = checks::checks(&sc, h);
-    warnings.extend(said.warnings);
-    warnings.extend(unfitted::longitudinal_only(&sc));
-    warnings.extend(unfitted::tir_lateral_unfitted(&sc));
-    // A `.tir` whose longitudinal slip stiffness turns negative inside its
-    // own load range, said as `tyre-eval` says it (once per file).
-    let mut tirs: Vec<&PathBuf> = sc.inputs.iter().collect();
-    tirs.dedup();
-    warnings.extend(
-        tirs.into_iter()
-            .filter_map(|p| crate::io::tir::longitudinal_turn(p).map(|t| t.to_string())),
-    );
-    said.notes.extend(
-        sc.measured
-            .as_ref()
-            .and_then(crate::io::unchecked_speed_unit),
-    );
-    let replay = sc.measured.as_ref().map(|run| {
-        // The floors `diagnose` would trust this run's channels to, by its
-        // own rule: a run's scatter alone trusts a state estimator's smooth
-        // output, or a quiet gyro, beyond any sensor of its type.
-        let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
-        ReplayGap {
-            run: run.path.display().to_string(),
-            channels: run_gap(run, h, &trust.floors),
-            noise: trust.noise,
-            cleaning: sc.cleaning.clone(),
-        }
-    });
+    warnings.extend(step_warnings(&sc, metrics.as_ref()));
+    let said = run_checks(&sc, h, &mut warnings);
+    let replay = sc.measured.as_ref().map(|run| replay_gap(&sc, run, h));
     // The files this run writes: the history and figure always, the
     // metrics of a step steer, the gap of a replayed run.
     let written: Vec<PathBuf> = [
@@ -260,7 +184,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         tyres: [sc.model.front.model_name(), sc.model.rear.model_name()],
         friction: sc.integrator.friction,
         metrics,
-        notes: said.notes,
+        notes: said,
         warnings,
         lift_offs: h.lift_offs(),
         replay,
@@ -271,6 +195,116 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         lock,
         leftovers,
     })
+}
+
+/// The integration in words: method, tolerances, steps and work.
+fn integration_words(sc: &Scenario, sim: &Simulation) -> String {
+    let h = &sim.history;
+    match (sc.integrator.method, sim.stats()) {
+        (Method::Dopri5(tol), Some(st)) => format!(
+            "Dormand–Prince 5(4), rtol {:e}, atol {:e}: {} steps ({} rejected, {} evaluations, {} tyre-set evaluations), rows every {} s",
+            tol.rtol, tol.atol, st.accepted, st.rejected, st.evaluations, h.load_evaluations, sc.integrator.step
+        ),
+        _ => format!("RK4, {} steps of {} s", h.len() - 1, sc.integrator.step),
+    }
+}
+
+/// Where a step's metrics describe something other than a handling
+/// response: a slide, a spin, a crawl ([`applicability_with_grip`]).
+fn applicability(sc: &Scenario, h: &TimeHistory, metrics: Option<&StepMetrics>) -> Vec<String> {
+    // The tyres' grip on this road (the lower axle's): a sideslip with
+    // the tyres far below it is a slow car's turn, not a slide.
+    let friction = checks::axle_friction(sc);
+    let grip = friction.map(|[f, r]| f.min(r) * crate::constants::G);
+    // The most of its grip either axle uses: a large overshoot far below
+    // it is a lightly damped response, not a spin.
+    let peak_share = friction.map(|mu| checks::peak_grip_used(h, mu));
+    metrics.map_or_else(Vec::new, |m| {
+        applicability_with_grip(
+            m,
+            Some(sc.manoeuvre.speed(0.0)),
+            grip.map(Grip::Tyres),
+            match peak_share {
+                Some(share) => Some(Overshoot::GripUsed(share)),
+                None => checks::gripless(sc).then_some(Overshoot::NoGripLimit),
+            },
+        )
+    })
+}
+
+/// What the manoeuvre and its metrics say of themselves: a step still
+/// settling, a filter that measures itself, a step no steering drives, a
+/// steady ay asked and missed, a schedule no car on this road drives.
+fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
+    let mut warnings: Vec<String> = metrics
+        .and_then(StepMetrics::settling_warning)
+        .into_iter()
+        .collect();
+    // A `[metrics] filter_hz` slow enough to measure itself, said as
+    // `metrics` says it of a log (its rows every step).
+    warnings.extend(
+        metrics.and_then(|m| {
+            super::metrics::filter_speed::filter_measures_itself(m, sc.integrator.step)
+        }),
+    );
+    // A step no steering can drive (an instant one, at rise_time = 0).
+    if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
+        warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));
+    }
+    // A step sized for a steady lateral acceleration that settles at
+    // another.
+    if let (Some(asked), Some(m)) = (sc.asked_ay, metrics) {
+        warnings.extend(checks::asked_ay_missed(asked, m.ay_steady));
+    }
+    // A schedule (a replay of no measured run) is a speed someone wrote:
+    // held to what a car on this road can drive.
+    if let (Manoeuvre::Replay(r), None) = (&sc.manoeuvre, &sc.measured) {
+        warnings.extend(schedule_applicability(
+            &r.t,
+            &r.steer,
+            &r.speed,
+            sc.integrator.friction,
+        ));
+    }
+    warnings
+}
+
+/// The run against its input's words ([`checks::checks`]), tyres used
+/// outside what they were fitted to, and a `.tir` whose longitudinal slip
+/// stiffness turns negative inside its own load range (said as
+/// `tyre-eval` says it, once per file): the warnings join `warnings`, the
+/// notes are returned.
+fn run_checks(sc: &Scenario, h: &TimeHistory, warnings: &mut Vec<String>) -> Vec<String> {
+    let mut said = checks::checks(sc, h);
+    warnings.append(&mut said.warnings);
+    warnings.extend(unfitted::longitudinal_only(sc));
+    warnings.extend(unfitted::tir_lateral_unfitted(sc));
+    let mut tirs: Vec<&PathBuf> = sc.inputs.iter().collect();
+    tirs.dedup();
+    warnings.extend(
+        tirs.into_iter()
+            .filter_map(|p| crate::io::tir::longitudinal_turn(p).map(|t| t.to_string())),
+    );
+    said.notes.extend(
+        sc.measured
+            .as_ref()
+            .and_then(crate::io::unchecked_speed_unit),
+    );
+    said.notes
+}
+
+/// A replayed run's gap, channel by channel, against the floors `diagnose`
+/// would trust its channels to by its own rule: a run's scatter alone
+/// trusts a state estimator's smooth output, or a quiet gyro, beyond any
+/// sensor of its type.
+fn replay_gap(sc: &Scenario, run: &MeasuredRun, h: &TimeHistory) -> ReplayGap {
+    let trust = channel_trust(std::slice::from_ref(run), &StatedUncertainty::default());
+    ReplayGap {
+        run: run.path.display().to_string(),
+        channels: run_gap(run, h, &trust.floors),
+        noise: trust.noise,
+        cleaning: sc.cleaning.clone(),
+    }
 }
 
 /// The piece a replay took where the run had others, said by its span and

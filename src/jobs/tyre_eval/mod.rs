@@ -45,6 +45,7 @@
 
 mod camber;
 mod checks;
+mod columns;
 mod fitted;
 mod friction;
 pub(crate) use friction::peak_of;
@@ -77,15 +78,15 @@ pub use standstill::{AtRest, StandstillMz, STANDSTILL};
 pub use stiffness::{AgainstSlip, SignChange};
 pub use unread::Unread;
 
-use crate::error::{Error, InputProblem};
+use crate::error::Error;
 use crate::io::fitted_ranges::FittedRanges;
 use crate::io::load_tyre_with_ranges;
 use crate::io::tir::set_tyre_mode;
 use crate::report::{refuse_overwrite, write_columns};
 use crate::tyre::mf::MfInput;
 use crate::tyre::sizes::POINTS_MEDIAN_LOAD;
-use crate::tyre::PointForces;
 use crate::tyre::Tyre;
+use columns::Outputs;
 use points::{read_points, PointColumns};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -263,44 +264,6 @@ fn magic_formula_extras(tyre: &Tyre, p: &unread::Points, lines: &[usize]) -> MfE
     }
 }
 
-/// Refuses the points where the model gave a non-finite output (`columns`
-/// past the five inputs), at the point's row and the load's column.
-fn refuse_non_finite(
-    points: &Path,
-    file: &crate::io::Columns,
-    columns: &[(&'static str, Vec<f64>)],
-    model: &'static str,
-) -> Result<(), Error> {
-    let mut bad: Vec<(usize, &str)> = columns
-        .iter()
-        .skip(5)
-        .flat_map(|(output, values)| {
-            let rows = values.iter().enumerate().filter(|(_, v)| !v.is_finite());
-            rows.map(move |(i, _)| (i, *output))
-        })
-        .collect();
-    bad.sort_by_key(|(i, _)| *i);
-    bad.dedup_by_key(|(i, _)| *i);
-    let errors = bad
-        .into_iter()
-        .map(|(i, output)| {
-            // A positive load whose square underflows is the cause, said.
-            let fz = columns[0].1[i];
-            let tiny_load = (fz > 0.0 && fz * fz < f64::MIN_POSITIVE).then_some(fz);
-            let problem = InputProblem::NonFiniteOutput {
-                model,
-                output,
-                tiny_load,
-            };
-            file.error_at(points, i, "fz", problem)
-        })
-        .collect();
-    match crate::error::InputError::all_of(points, errors) {
-        Some(e) => Err(e.into()),
-        None => Ok(()),
-    }
-}
-
 /// Evaluates the tyre of `tyre_path` at the points of `points`, for the
 /// output file `out` (never one of the inputs); `mode` is MFeval's
 /// `useMode` for a Magic Formula tyre (`None`: 121).
@@ -385,30 +348,16 @@ pub fn run(
     // Every model gives no force off the road: said for each, not only
     // where a loaded radius is written.
     let off_road = fz.iter().filter(|fz| **fz <= 0.0).count();
-    let mut columns = std::mem::take(&mut inputs);
-    columns.extend(pressure.map(|p| ("pressure", p)));
-    let of = |g: fn(&PointForces) -> f64| f.iter().map(g).collect::<Vec<_>>();
-    columns.extend([
-        ("fx", of(|x| x.fx)),
-        ("fy", of(|x| x.fy)),
-        ("mz", of(|x| x.mz)),
-    ]);
-    if tyre.has_wheel_moments() {
-        columns.push(("mx", of(|x| x.mx.unwrap_or(f64::NAN))));
-        let my = of(|x| x.my.unwrap_or(f64::NAN));
-        columns.push(("my", checks::resolved_my(&tyre, &columns[0].1, my)));
-    }
-    columns.extend(extras.loaded_radius.map(|rl| ("rl", rl)));
+    let outputs = Outputs {
+        inputs: std::mem::take(&mut inputs),
+        pressure,
+        forces: &f,
+        loaded_radius: extras.loaded_radius,
+    };
+    let columns = columns::columns(&tyre, outputs);
     // (The first five columns are the inputs, checked when read.)
-    refuse_non_finite(points, &file, &columns, tyre.model_name())?;
-    // The points file's other columns (a label, a measured force) are not
-    // evaluated and not written: named, not dropped silently.
-    let not_written: Vec<String> = file
-        .header
-        .iter()
-        .map(|h| h.trim().to_string())
-        .filter(|h| !h.is_empty() && !columns.iter().any(|(n, _)| n == h))
-        .collect();
+    columns::refuse_non_finite(points, &file, &columns, tyre.model_name())?;
+    let not_written = columns::not_written(&file, &columns);
     Ok(TyreEvalReport {
         peak_friction: friction::peak_of(&tyre),
         not_written,

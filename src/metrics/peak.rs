@@ -49,7 +49,13 @@ pub(super) fn peak_index(
     let first = (0..n).find(|&i| t[i] >= from && v[i] > level)?;
     let end = (first..n).find(|&i| v[i] <= level - dip).unwrap_or(n);
     let top = (first..end).max_by(|&a, &b| v[a].total_cmp(&v[b]).then(b.cmp(&a)))?;
-    (top > 0 && top + 1 < n && v[top] >= v[top - 1] && v[top] > v[top + 1]).then_some(top)
+    // A quantised record (a logger's resolution) holds its maximum over
+    // several equal samples: the flat top is one maximum, its time the
+    // middle of it (the earlier of two middles), where a smooth response
+    // under the quantisation peaks; a top only falling ends it.
+    let last = (top..n).take_while(|&i| v[i] == v[top]).last()?;
+    let middle = top + (last - top) / 2;
+    (top > 0 && last + 1 < n && v[top] >= v[top - 1] && v[top] > v[last + 1]).then_some(middle)
 }
 
 /// How far noise moves a peak: the peak time's standard deviation over
@@ -123,6 +129,32 @@ mod tests {
             })
             .collect();
         (t, v)
+    }
+
+    /// A yaw rate logged at a resolution of 0.001 rad/s holds its maximum
+    /// over four equal samples: still one peak, at the middle of the flat
+    /// top (the earlier middle), not "no overshoot" (a 17 % overshoot was
+    /// lost so); a flat top that runs to the record's end is none.
+    #[test]
+    fn a_flat_quantised_top_is_one_peak_at_its_middle() {
+        let (t, v) = response(0.5);
+        let q: Vec<f64> = v.iter().map(|x| (x * 8.0).round() / 8.0).collect();
+        let smooth = peak_index(&t, &v, 0.0, (1.05, 0.0)).unwrap();
+        let top = q.iter().cloned().fold(f64::MIN, f64::max);
+        let flat: Vec<usize> = (0..q.len()).filter(|&i| q[i] == top).collect();
+        assert!(flat.len() >= 4, "{flat:?}");
+        let i = peak_index(&t, &q, 0.0, (1.05, 0.0)).unwrap();
+        assert_eq!(i, flat[0] + (flat[flat.len() - 1] - flat[0]) / 2);
+        assert!(
+            (t[i] - t[smooth]).abs() <= 0.5 * (flat.len() as f64) * 0.01,
+            "{} {}",
+            t[i],
+            t[smooth]
+        );
+        let mut rising = q.clone();
+        let n = rising.len();
+        rising[flat[0]..].iter_mut().for_each(|x| *x = top);
+        assert_eq!(peak_index(&t, &rising[..n], 0.0, (1.05, 0.0)), None);
     }
 
     /// Filtered as `metrics` filters a run (10 Hz), a sharp peak (30 %

@@ -585,6 +585,15 @@ fn real_racing_log_is_diagnosed_with_axle_characteristics_from_the_runs() {
         .map(|n| n["channel"].as_str().unwrap())
         .collect();
     assert_eq!(noise, ["yaw_rate", "beta"]);
+    // One log cut into 23 segments is one file: a segment whose sideslip
+    // moves against the model's alone is no file in another convention
+    // (the bundled campaign named `putnam_run4_2.csv[22]`, correlation
+    // -0.84, "logged in the other sign convention in that file").
+    let notes = d["note_details"].as_array().unwrap();
+    assert!(
+        notes.iter().all(|n| n["kind"] != "beta_against_in_file"),
+        "{notes:?}"
+    );
     // A 2-DOF model of a racing car driven hard does not match to the noise.
     assert!(d["gap"]["significant"].as_bool().unwrap());
     // Both candidates are cross-validated.

@@ -21,6 +21,7 @@ use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
 use crate::error::BetaAgainstModel;
+use crate::measured::clean::source_file;
 use crate::measured::MeasuredRun;
 use crate::stats::CentredSums;
 use rayon::prelude::*;
@@ -109,10 +110,12 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, 
 /// `judged` (per run: its file and sums) spans more than one file.
 fn files_against(judged: &[(String, CentredSums)]) -> Vec<FileAgainst> {
     let mut files: Vec<(String, CentredSums)> = Vec::new();
-    for (file, s) in judged {
-        match files.iter_mut().find(|(f, _)| f == file) {
+    for (run, s) in judged {
+        // A piece (`#2`) or a segment (`[22]`) is judged with its file.
+        let file = source_file(std::path::Path::new(run));
+        match files.iter_mut().find(|(f, _)| *f == file) {
             Some((_, sums)) => *sums = sums.pooled(*s),
-            None => files.push((file.clone(), *s)),
+            None => files.push((file, *s)),
         }
     }
     if files.len() < 2 {
@@ -145,8 +148,8 @@ mod tests {
     fn one_file_against_the_others_is_named_with_its_pieces_pooled() {
         let judged = vec![
             ("a.csv".to_string(), sums(1.0)),
-            ("b.csv".to_string(), sums(-1.0)),
-            ("b.csv".to_string(), sums(-2.0)),
+            ("b.csv#1".to_string(), sums(-1.0)),
+            ("b.csv#2[1]".to_string(), sums(-2.0)),
             ("c.csv".to_string(), sums(1.0)),
         ];
         let against = files_against(&judged);
@@ -161,8 +164,9 @@ mod tests {
     fn pieces_of_one_file_are_never_named_against_each_other() {
         // A long log's pieces: one against alone, the file as a whole with.
         let judged = vec![
-            ("log.csv".to_string(), sums(1.0)),
-            ("log.csv".to_string(), sums(-1.0)),
+            ("log.csv[1]".to_string(), sums(1.0)),
+            ("log.csv[2]".to_string(), sums(1.0)),
+            ("log.csv[3]".to_string(), sums(-1.0)),
         ];
         assert!(files_against(&judged).is_empty());
     }

@@ -76,7 +76,7 @@ pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{
     clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked,
-    segments, slice,
+    segments, slice, source_file,
 };
 pub use report::{
     CleaningReport, Glitch, GlitchCounts, GlitchKind, HeldChannel, Piece, RunChannel, SlowKind,

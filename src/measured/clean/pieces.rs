@@ -40,6 +40,30 @@ pub fn segments(run: MeasuredRun, length: f64) -> Vec<MeasuredRun> {
     out
 }
 
+/// The file a run was read from: its path without the labels cleaning
+/// appends to a piece (`#2`, a stretch between gaps or standstills) and to
+/// a segment of a long piece (`[3]`), in any number: `run.csv#2[3]` is of
+/// `run.csv`. A file's own name ending in such a label would lose it too;
+/// the labels are only ever compared between runs of one campaign.
+pub fn source_file(path: &std::path::Path) -> String {
+    let mut name = path.display().to_string();
+    loop {
+        let cut = if let Some(head) = name.strip_suffix(']') {
+            head.rfind('[').filter(|&i| {
+                i + 1 < head.len() && head[i + 1..].bytes().all(|b| b.is_ascii_digit())
+            })
+        } else {
+            name.rfind('#').filter(|&i| {
+                i + 1 < name.len() && name[i + 1..].bytes().all(|b| b.is_ascii_digit())
+            })
+        };
+        match cut {
+            Some(i) => name.truncate(i),
+            None => return name,
+        }
+    }
+}
+
 /// The rows `lo..hi` of a run, named with `label` appended to its path.
 pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRun {
     let cut = |v: &Vec<f64>| v[lo..hi].to_vec();
@@ -307,6 +331,19 @@ pub fn fill_masked(run: &MeasuredRun) -> MeasuredRun {
 mod tests {
     use super::super::test_signals::run;
     use super::*;
+
+    #[test]
+    fn a_piece_and_its_segments_name_the_file_they_were_cut_from() {
+        let file = |p: &str| source_file(std::path::Path::new(p));
+        assert_eq!(file("logs/run.csv"), "logs/run.csv");
+        assert_eq!(file("logs/run.csv#2"), "logs/run.csv");
+        assert_eq!(file("logs/run.csv[22]"), "logs/run.csv");
+        assert_eq!(file("logs/run.csv#2[3]"), "logs/run.csv");
+        // Not a label: a bracket or hash without a number after it.
+        assert_eq!(file("logs/run[a].csv"), "logs/run[a].csv");
+        assert_eq!(file("logs/run#"), "logs/run#");
+        assert_eq!(file("logs/run[]"), "logs/run[]");
+    }
 
     #[test]
     fn a_standstill_splits_the_run_and_inputs_are_repaired_responses_masked() {

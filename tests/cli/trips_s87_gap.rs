@@ -189,3 +189,40 @@ fn the_gap_map_draws_each_run_at_its_own_speed_inside_a_band() {
         assert!((level - speed).abs() < 1e-9, "{band}");
     }
 }
+
+/// A run saved again with CRLF line endings (a copy opened and saved on
+/// Windows) differs from its twin in every line's bytes and was not
+/// refused: the runs are now compared as read, not as bytes.
+#[test]
+fn a_copy_of_a_run_saved_with_crlf_line_endings_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = crate::synth_campaign(dir.path(), "c", &[]);
+    let runs = c.join("runs");
+    let original = runs.join("step_060kph_2ms2.csv");
+    let text = fs::read_to_string(&original).unwrap();
+    assert!(!text.contains('\r'));
+    let crlf = text.replace('\n', "\r\n");
+    fs::write(runs.join("zz_copy.csv"), &crlf).unwrap();
+    let out = dir.path().join("out");
+    let o = run(&[
+        "diagnose",
+        c.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success(), "a CRLF copy was diagnosed");
+    let e = stderr(&o);
+    assert!(
+        e.contains(&format!(
+            "the run {} is a copy of {} (the same samples), ",
+            runs.join("zz_copy.csv").display(),
+            original.display()
+        )),
+        "{e}"
+    );
+    assert!(
+        e.contains("counts the same evidence twice; select one of them"),
+        "{e}"
+    );
+    assert!(!out.exists());
+}

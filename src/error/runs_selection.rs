@@ -55,8 +55,9 @@ pub enum SelectionProblem {
         /// The second.
         second: String,
     },
-    /// A run whose file is a byte-for-byte copy of another selected run's.
-    #[error("the run {} is a copy of {} (the same bytes), {}: held out, a copy is scored on the samples its twin was fitted on, so it counts the same evidence twice; select one of them", run.display(), copy_of.display(), selected_by(first, second))]
+    /// A run whose file holds the samples of another selected run's (a
+    /// copy, byte for byte or with other line endings or number formats).
+    #[error("the run {} is a copy of {} (the same samples), {}: held out, a copy is scored on the samples its twin was fitted on, so it counts the same evidence twice; select one of them", run.display(), copy_of.display(), selected_by(first, second))]
     CopiedRun {
         /// The copy (the later of the two).
         run: PathBuf,

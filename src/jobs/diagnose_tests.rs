@@ -18,6 +18,7 @@ fn the_gap_map_is_three_panels_legible_in_print() {
                     x,
                     before: b,
                     after: a,
+                    runs: vec![(x - 0.75, b + 0.5), (x + 0.25, b - 0.5)],
                 });
             }
         }
@@ -31,7 +32,12 @@ fn the_gap_map_is_three_panels_legible_in_print() {
     );
     let time = &fig.panels[0];
     assert_eq!(time.title, "Held-out gap by time window");
-    let labels: Vec<&str> = time.series.iter().map(|s| s.label.as_str()).collect();
+    let labels: Vec<&str> = time
+        .series
+        .iter()
+        .map(|s| s.label.as_str())
+        .filter(|l| !l.is_empty())
+        .collect();
     assert_eq!(
         labels,
         [
@@ -44,13 +50,23 @@ fn the_gap_map_is_three_panels_legible_in_print() {
             "3 × noise floor"
         ]
     );
-    assert_eq!(time.axes().x, (0.5, 2.5));
-    // The windows are points, not a line; the bands a joined profile.
+    // Over every part and run: the first run 0.75 before the first
+    // part, half a unit of margin.
+    assert_eq!(time.axes().x, (-0.25, 2.75));
+    // The windows are points, not a line; the bands a joined profile; each
+    // run's share a dot without a key, drawn over its channel's pools at
+    // its own level.
     for (panel, joined) in fig.panels.iter().zip([false, true, true]) {
-        for s in &panel.series[..6] {
+        for s in panel.series.iter().filter(|s| !s.label.is_empty()).take(6) {
             let points = matches!(s.style, Style::Points(_));
             assert_eq!(points, !joined, "{}: {:?}", panel.title, s.style);
         }
+        let runs = &panel.series[2];
+        assert_eq!((runs.label.as_str(), runs.style), ("", Style::Points(2)));
+        assert_eq!(
+            (runs.x.clone(), runs.y.clone()),
+            (vec![0.25, 1.25, 1.25, 2.25], vec![5.5, 4.5, 4.5, 3.5])
+        );
     }
     assert_eq!(quantity(Channel::YawRate), "yaw rate r, rad/s");
     assert_eq!(quantity(Channel::Ay), "lateral acceleration a_y, m/s²");
@@ -58,13 +74,16 @@ fn the_gap_map_is_three_panels_legible_in_print() {
     // Without a verdict: the base model alone, and no report name
     // (yaw_rate, ay, beta) in a label.
     let base = gap_figure(&[], &points, true);
-    assert_eq!(base.panels[1].series.len(), 4);
+    assert_eq!(base.panels[1].series.len(), 7);
     // Runs without ay are banded by u·r: the axis says so.
     assert_eq!(
         base.panels[1].x_label,
-        "|a_y| band centre (u·r where a run has no a_y), m/s²"
+        "|a_y| (u·r where a run has no a_y), m/s²: each band at its samples' mean (dots: each run's)"
     );
-    assert_eq!(fig.panels[1].x_label, "|a_y| band centre, m/s²");
+    assert_eq!(
+        fig.panels[1].x_label,
+        "|a_y|, m/s²: each band at its samples' mean (dots: each run's)"
+    );
     for s in &base.panels[1].series {
         for ch in Channel::ALL {
             assert!(!s.label.contains(ch.name()), "{}", s.label);

@@ -32,7 +32,7 @@
 use crate::diagnose::model::channels::Channel;
 use crate::diagnose::report::outcome::above_noise;
 use crate::diagnose::report::parts::{
-    regime_samples, scatter_by, timed_from_an_input, window_samples, Part, Scatter,
+    regime_samples, scatter_by, timed_from_an_input, window_samples, Levels, Part, Scatter,
 };
 use crate::manoeuvre::interpolate;
 use serde::Serialize;
@@ -50,6 +50,10 @@ pub struct PartGap {
     pub name: Part,
     /// Samples in it.
     pub samples: usize,
+    /// Its samples' mean level on its axis: time after the input starts
+    /// (s), |ay| (m/s²) or speed (m/s), where the gap map draws it
+    /// ([`Levels::mean`]; `null` for all samples).
+    pub mean_level: Option<f64>,
     /// RMS residual.
     pub rms: f64,
     /// Mean residual (simulated − measured).
@@ -177,11 +181,12 @@ fn correlation(a: &[f64], b: &[f64], lag: usize) -> f64 {
     }
 }
 
-fn part(name: Part, idx: &[usize], e: &[f64]) -> PartGap {
+fn part(name: Part, idx: &[usize], e: &[f64], levels: &Levels) -> PartGap {
     let v: Vec<f64> = idx.iter().map(|&i| e[i]).collect();
     PartGap {
         name,
         samples: v.len(),
+        mean_level: levels.mean(name, idx),
         rms: (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt(),
         bias: mean(&v),
     }
@@ -256,14 +261,15 @@ pub fn trusted_channel_gap(
     // by a steering correction.
     let timed = timed_from_an_input(t, steer);
     let pre: Vec<f64> = win[0].1.iter().map(|&i| e[i]).collect();
+    let levels = Levels::new(t, steer, ay, speed);
     let windows: Vec<PartGap> = win
         .into_iter()
         .filter(|w| timed && !w.1.is_empty())
-        .map(|(name, idx)| part(name, &idx, &e))
+        .map(|(name, idx)| part(name, &idx, &e, &levels))
         .collect();
     let regimes: Vec<PartGap> = regime_samples(ay, speed)
         .into_iter()
-        .map(|(name, idx)| part(name, &idx, &e))
+        .map(|(name, idx)| part(name, &idx, &e, &levels))
         .collect();
     // Noise-free data (a simulation replayed) have a zero floor: a residual
     // below 1e-6 of the signal is numerical, not a gap.

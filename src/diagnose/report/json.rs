@@ -218,6 +218,8 @@ struct ShrinkageJson<'a> {
     noise_floor: f64,
     reduction_percent: Option<f64>,
     change: ChangeKind,
+    mean_level: Option<f64>,
+    runs: &'a [crate::diagnose::report::RunPart],
 }
 
 /// A part's before and after with the rule the terminal and the page say
@@ -239,6 +241,8 @@ impl Serialize for Shrinkage {
             noise_floor: self.noise_floor,
             reduction_percent,
             change,
+            mean_level: self.mean_level,
+            runs: &self.runs,
         }
         .serialize(s)
     }

@@ -34,7 +34,7 @@ pub use crate::diagnose::report::outcome::{
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{
-    jackknife, ParameterValue, Reduction, Shrinkage, LIMIT_RESOLUTION, UNDERSTATED,
+    jackknife, ParameterValue, Reduction, RunPart, Shrinkage, LIMIT_RESOLUTION, UNDERSTATED,
 };
 use crate::diagnose::timing::Timing;
 use crate::identify::grouping::GroupingReport;

@@ -475,6 +475,8 @@ mod tests {
                 after,
                 noise_floor,
             ),
+            mean_level: None,
+            runs: Vec::new(),
         }
     }
 

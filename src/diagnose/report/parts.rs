@@ -36,8 +36,10 @@ impl Window {
         }
     }
 
-    /// Where the gap map draws it: the window's centre, s after the input
-    /// starts (the open ends half a second before and a second after).
+    /// Its place in time order: the window's centre, s after the input
+    /// starts (the open ends half a second before and a second after). The
+    /// gap map draws a window at its samples' mean time instead
+    /// ([`Levels::mean`]).
     pub fn centre(self) -> f64 {
         match self {
             Window::BeforeInput => -0.5,
@@ -120,23 +122,60 @@ impl Part {
         }
     }
 
-    /// Where the gap map draws it: its axis and position (a window's
-    /// centre, a band's centre, or one above the lower edge of an open
-    /// band). `None` for [`Part::All`].
-    pub fn position(&self) -> Option<(PartAxis, f64)> {
-        let centre = |lo: f64, hi: f64| {
-            if hi.is_finite() {
-                0.5 * (lo + hi)
-            } else {
-                lo + 1.0
-            }
-        };
-        match *self {
+    /// The axis of the gap map it lies on; `None` for [`Part::All`].
+    pub fn axis(&self) -> Option<PartAxis> {
+        match self {
             Part::All => None,
-            Part::Window(w) => Some((PartAxis::Time, w.centre())),
-            Part::Ay { lo, hi } => Some((PartAxis::Ay, centre(lo, hi))),
-            Part::Speed { lo, hi } => Some((PartAxis::Speed, centre(lo, hi))),
+            Part::Window(_) => Some(PartAxis::Time),
+            Part::Ay { .. } => Some(PartAxis::Ay),
+            Part::Speed { .. } => Some(PartAxis::Speed),
         }
+    }
+}
+
+/// Where a record's samples lie on each axis of the gap map: their time
+/// after the input starts (s), their |ay| (m/s²) and their speed (m/s). A
+/// part is drawn at its samples' mean level ([`Levels::mean`]), not at its
+/// band's centre: runs at 12 and at 18 m/s share the band 10–20 m/s, and
+/// the map must show where in it the gap grows.
+#[derive(Debug, Clone, Copy)]
+pub struct Levels<'a> {
+    t: &'a [f64],
+    /// When the input starts, s ([`input_start`]; the record's end where
+    /// there is none, as [`window_samples`] splits it).
+    start: f64,
+    ay: &'a [f64],
+    speed: &'a [f64],
+}
+
+impl<'a> Levels<'a> {
+    /// The levels of a record: sample times, steer (for the input's start),
+    /// the lateral acceleration the regimes read and the speed.
+    pub fn new(t: &'a [f64], steer: &[f64], ay: &'a [f64], speed: &'a [f64]) -> Self {
+        let start = input_start(t, steer).unwrap_or(t[t.len() - 1]);
+        Self {
+            t,
+            start,
+            ay,
+            speed,
+        }
+    }
+
+    /// Sample `i`'s level on `axis`.
+    pub fn at(&self, axis: PartAxis, i: usize) -> f64 {
+        match axis {
+            PartAxis::Time => self.t[i] - self.start,
+            PartAxis::Ay => self.ay[i].abs(),
+            PartAxis::Speed => self.speed[i],
+        }
+    }
+
+    /// The mean level of samples `idx` on `part`'s axis; `None` for
+    /// [`Part::All`] or no samples.
+    pub fn mean(&self, part: Part, idx: &[usize]) -> Option<f64> {
+        let axis = part.axis()?;
+        (!idx.is_empty())
+            .then(|| idx.iter().map(|&i| self.at(axis, i)).sum::<f64>() / idx.len() as f64)
     }
 }
 
@@ -344,7 +383,19 @@ mod tests {
                 hi: f64::INFINITY
             }
         );
-        assert_eq!(parts[8].position(), Some((PartAxis::Ay, 9.0)));
+        assert_eq!(parts[8].axis(), Some(PartAxis::Ay));
+        // Each part's mean level on its axis: the speed band 0–10 m/s
+        // holds t < 2.5 s, speeds 5–9.98 m/s, mean 7.49, not the band's
+        // centre 5;
+        // the |ay| band ≥ 8 holds |ay| 8–11.99, mean 9.995; the window
+        // before the input its times 1 s before to 0.01 s before it.
+        let levels = Levels::new(&t, &steer, &ay, &speed);
+        let level =
+            |k: usize| levels.mean(parts[k], &windows.iter().chain(&regimes).nth(k).unwrap().1);
+        assert!((level(9).unwrap() - 7.49).abs() < 1e-9, "{:?}", level(9));
+        assert!((level(8).unwrap() - 9.995).abs() < 1e-9, "{:?}", level(8));
+        assert!((level(0).unwrap() + 0.505).abs() < 1e-9, "{:?}", level(0));
+        assert_eq!(levels.mean(Part::All, &[0, 1]), None);
         assert_eq!(parts[8].label(), "|ay| ≥ 8 m/s²");
         assert_eq!(parts[9], Part::Speed { lo: 0.0, hi: 10.0 });
         assert_eq!(parts[9].label(), "speed 0–10 m/s");

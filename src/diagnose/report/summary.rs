@@ -11,7 +11,7 @@ use crate::diagnose::model::{Augmented, Observed};
 use crate::diagnose::report::gap::{channel_gap, regime_acceleration, run_gap, PartGap, Record};
 use crate::diagnose::report::outcome::{above_noise, GapFinding};
 use crate::diagnose::report::values::SteadyOffset;
-use crate::diagnose::report::{Part, RunGap, Shrinkage};
+use crate::diagnose::report::{Part, RunGap, RunPart, Shrinkage};
 use crate::manoeuvre::interpolate;
 use crate::measured::MeasuredRun;
 
@@ -62,7 +62,83 @@ pub(crate) fn run_scatter(run: &MeasuredRun) -> [Option<(f64, f64)>; 3] {
     })
 }
 
-/// Held-out RMS before/after pooled over runs per channel, window and regime.
+/// One run's held-out RMS before and after in every part of channel `ch`
+/// (all samples, its time windows, its regimes), with their samples and
+/// mean levels: `measured` against the base model's `before` and the
+/// verdict's `after`, at the record's times.
+fn run_parts(
+    run: &str,
+    rec: &Record,
+    ch: Channel,
+    measured: &[f64],
+    [before, after]: [&[f64]; 2],
+) -> Vec<(Part, RunPart)> {
+    let gb = channel_gap(ch, rec, measured, before);
+    let ga = channel_gap(ch, rec, measured, after);
+    let all = |g: &crate::diagnose::report::gap::ChannelGap| PartGap {
+        name: Part::All,
+        samples: measured.len(),
+        mean_level: None,
+        rms: g.rms,
+        bias: g.bias,
+    };
+    let (all_b, all_a) = (all(&gb), all(&ga));
+    let pb = std::iter::once(&all_b)
+        .chain(gb.windows.iter())
+        .chain(gb.regimes.iter());
+    let pa = std::iter::once(&all_a)
+        .chain(ga.windows.iter())
+        .chain(ga.regimes.iter());
+    pb.zip(pa)
+        .map(|(b, a)| {
+            let share = RunPart {
+                run: run.to_string(),
+                samples: b.samples,
+                mean_level: b.mean_level,
+                before: b.rms,
+                after: a.rms,
+            };
+            (b.name, share)
+        })
+        .collect()
+}
+
+/// A part's runs pooled: the RMS over all their samples, and their mean
+/// level, each run weighted by its samples.
+fn pooled(channel: Channel, part: Part, runs: Vec<RunPart>, noise_floor: f64) -> Shrinkage {
+    let samples: usize = runs.iter().map(|r| r.samples).sum();
+    let n = samples as f64;
+    let mean_square = |f: fn(&RunPart) -> f64| {
+        runs.iter()
+            .map(|r| f(r) * f(r) * r.samples as f64)
+            .sum::<f64>()
+            / n
+    };
+    let (before, after) = (
+        mean_square(|r| r.before).sqrt(),
+        mean_square(|r| r.after).sqrt(),
+    );
+    // None for all samples: no run has a level there.
+    let mean_level = runs
+        .iter()
+        .map(|r| r.mean_level.map(|l| l * r.samples as f64))
+        .sum::<Option<f64>>()
+        .map(|sum| sum / n);
+    Shrinkage {
+        channel,
+        part,
+        samples,
+        before,
+        after,
+        noise_floor,
+        reduction_percent: reduction(before, after, noise_floor),
+        mean_level,
+        runs,
+    }
+}
+
+/// Held-out RMS before/after pooled over runs per channel, window and
+/// regime, each part with its runs' shares ([`RunPart`]).
 pub(crate) fn parts_table(
     runs: &[MeasuredRun],
     prepared: &[Prepared],
@@ -70,8 +146,8 @@ pub(crate) fn parts_table(
     after: &[Observed],
     floors: &[f64; 3],
 ) -> Vec<Shrinkage> {
-    // (channel, part) → (Σ before², Σ after², n)
-    let mut acc: Vec<(Channel, Part, f64, f64, usize)> = Vec::new();
+    // (channel, part) → each run's share.
+    let mut acc: Vec<(Channel, Part, Vec<RunPart>)> = Vec::new();
     for (i, p) in prepared.iter().enumerate() {
         let run = &runs[i];
         let at = |v: &[f64]| -> Vec<f64> {
@@ -87,61 +163,26 @@ pub(crate) fn parts_table(
             speed: &speed,
         };
         for (ch, m) in &p.measured {
-            let gb = channel_gap(*ch, &rec, m, observed_channel(&before[i], *ch));
-            let ga = channel_gap(*ch, &rec, m, observed_channel(&after[i], *ch));
-            let all_b = PartGap {
-                name: Part::All,
-                samples: m.len(),
-                rms: gb.rms,
-                bias: gb.bias,
-            };
-            let all_a = PartGap {
-                rms: ga.rms,
-                ..all_b.clone()
-            };
-            let pb = std::iter::once(&all_b)
-                .chain(gb.windows.iter())
-                .chain(gb.regimes.iter());
-            let pa = std::iter::once(&all_a)
-                .chain(ga.windows.iter())
-                .chain(ga.regimes.iter());
-            for (b, a) in pb.zip(pa) {
-                let n = b.samples as f64;
-                let part = b.name;
+            let models = [before, after].map(|o| observed_channel(&o[i], *ch));
+            for (part, share) in run_parts(&p.name, &rec, *ch, m, models) {
                 match acc.iter_mut().find(|x| x.0 == *ch && x.1 == part) {
-                    Some(x) => {
-                        x.2 += b.rms * b.rms * n;
-                        x.3 += a.rms * a.rms * n;
-                        x.4 += b.samples;
-                    }
-                    None => acc.push((*ch, part, b.rms * b.rms * n, a.rms * a.rms * n, b.samples)),
+                    Some(x) => x.2.push(share),
+                    None => acc.push((*ch, part, vec![share])),
                 }
             }
         }
     }
     // Pooled in the order the runs showed them: listed in the parts' own.
     acc.sort_by(|a, b| {
-        let key = |x: &(Channel, Part, f64, f64, usize)| (x.0.index(), x.1.order());
-        let (ka, kb) = (key(a), key(b));
-        ka.0.cmp(&kb.0)
-            .then(ka.1 .0.cmp(&kb.1 .0))
-            .then(ka.1 .1.total_cmp(&kb.1 .1))
+        let (ka, kb) = (a.1.order(), b.1.order());
+        a.0.index()
+            .cmp(&b.0.index())
+            .then(ka.0.cmp(&kb.0))
+            .then(ka.1.total_cmp(&kb.1))
     });
     acc.into_iter()
-        .filter(|x| x.4 > 0)
-        .map(|(ch, part, b2, a2, n)| {
-            let (before, after) = ((b2 / n as f64).sqrt(), (a2 / n as f64).sqrt());
-            let nf = floors[ch.index()];
-            Shrinkage {
-                channel: ch,
-                part,
-                samples: n,
-                before,
-                after,
-                noise_floor: nf,
-                reduction_percent: reduction(before, after, nf),
-            }
-        })
+        .filter(|x| x.2.iter().any(|r| r.samples > 0))
+        .map(|(ch, part, shares)| pooled(ch, part, shares, floors[ch.index()]))
         .collect()
 }
 

@@ -301,4 +301,30 @@ pub struct Shrinkage {
     pub noise_floor: f64,
     /// Share of the gap above noise removed, %.
     pub reduction_percent: f64,
+    /// Its samples' mean level on its axis, over every run: time after
+    /// the input starts (s), |ay| (m/s²) or speed (m/s), where the gap map
+    /// draws the part (None for all samples). A band groups the table; its
+    /// samples lie where they lie in it.
+    pub mean_level: Option<f64>,
+    /// Each run's share of the part, in the campaign's order (runs with
+    /// no sample in it left out).
+    pub runs: Vec<RunPart>,
+}
+
+/// One run's share of a [`Shrinkage`] row: its samples in the part, where
+/// they lie on the part's axis, and its held-out RMS before and after the
+/// verdict's effects (the gap map draws each run at its own level).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunPart {
+    /// The run.
+    pub run: String,
+    /// Its samples in the part.
+    pub samples: usize,
+    /// Their mean level on the part's axis (as
+    /// [`Shrinkage::mean_level`]; `null` for all samples).
+    pub mean_level: Option<f64>,
+    /// Held-out RMS with the base model.
+    pub before: f64,
+    /// Held-out RMS with the verdict's effects.
+    pub after: f64,
 }

@@ -454,6 +454,8 @@ mod tests {
             after,
             noise_floor: floor,
             reduction_percent: crate::diagnose::model::channels::reduction(before, after, floor),
+            mean_level: None,
+            runs: Vec::new(),
         }
     }
 

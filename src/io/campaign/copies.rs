@@ -1,51 +1,83 @@
-//! Runs a campaign selects twice under two names: a file copied byte for
-//! byte (`run_2.csv` saved again as `run_2_copy.csv`). Held out, the copy
-//! is scored on the very samples its twin was fitted on, so a candidate's
-//! held-out gain is its in-sample gain again: evidence counted twice. A
-//! copy is refused at its `[runs]` entry, as the same file listed twice is
-//! ([`super::runs`]). Files are compared by their bytes (a hash first, then
-//! the bytes of the pairs it matches).
+//! Runs a campaign selects twice under two names: a file copied
+//! (`run_2.csv` saved again as `run_2_copy.csv`, byte for byte or with
+//! other line endings or number formats). Held out, the copy is scored on
+//! the very samples its twin was fitted on, so a candidate's held-out gain
+//! is its in-sample gain again: evidence counted twice. A copy is refused
+//! at its `[runs]` entry, as the same file listed twice is
+//! ([`super::runs`]). Runs are compared as read (every column, the path
+//! aside), each file read once: the bytes are not compared, so a copy
+//! saved with CRLF line endings or `20.0` for `20` is the copy it is.
 
-use std::collections::hash_map::DefaultHasher;
-use std::hash::{Hash, Hasher};
-use std::path::PathBuf;
+use crate::measured::MeasuredRun;
 
-/// The first pair of indices of `files` whose contents are the same bytes,
-/// in order (a file that cannot be read is left to the reading, which says
-/// why).
-pub(super) fn copied_run(files: &[PathBuf]) -> Option<(usize, usize)> {
-    let mut seen: Vec<(u64, usize, Vec<u8>)> = Vec::new();
-    for (i, f) in files.iter().enumerate() {
-        let Ok(bytes) = std::fs::read(f) else {
-            continue;
-        };
-        let mut h = DefaultHasher::new();
-        bytes.hash(&mut h);
-        let hash = h.finish();
-        if let Some((_, k, _)) = seen.iter().find(|(g, _, b)| *g == hash && *b == bytes) {
-            return Some((*k, i));
-        }
-        seen.push((hash, i, bytes));
-    }
-    None
+/// Whether two runs as read hold the same samples: every column equal,
+/// whatever their files' bytes (the path aside). Written out field by
+/// field, so that a column added to [`MeasuredRun`] must be added here.
+pub(super) fn same_samples(a: &MeasuredRun, b: &MeasuredRun) -> bool {
+    let MeasuredRun {
+        path: _,
+        t,
+        speed,
+        steer,
+        yaw_rate,
+        ay,
+        beta,
+        roll,
+        bank,
+        ax,
+        masked,
+    } = a;
+    // The times first: runs of other lengths or rates differ there.
+    *t == b.t
+        && *steer == b.steer
+        && *yaw_rate == b.yaw_rate
+        && *speed == b.speed
+        && *ay == b.ay
+        && *beta == b.beta
+        && *roll == b.roll
+        && *bank == b.bank
+        && *ax == b.ax
+        && *masked == b.masked
+}
+
+/// The earlier run of `read` whose samples `run` repeats, if any.
+pub(super) fn copied_from(read: &[MeasuredRun], run: &MeasuredRun) -> Option<usize> {
+    read.iter().position(|r| same_samples(r, run))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn run(steer: f64) -> MeasuredRun {
+        MeasuredRun {
+            path: "a.csv".into(),
+            t: vec![0.0, 0.01],
+            speed: vec![20.0; 2],
+            steer: vec![steer; 2],
+            yaw_rate: vec![0.0; 2],
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        }
+    }
+
     #[test]
-    fn a_copy_is_found_and_a_file_differing_by_one_byte_is_not() {
-        let dir = tempfile::tempdir().unwrap();
-        let write = |name: &str, text: &str| {
-            let p = dir.path().join(name);
-            std::fs::write(&p, text).unwrap();
-            p
+    fn a_copy_is_found_under_another_name_and_a_run_differing_by_one_sample_is_not() {
+        let (a, b) = (run(0.01), run(0.02));
+        let copy = MeasuredRun {
+            path: "c.csv".into(),
+            ..a.clone()
         };
-        let a = write("a.csv", "t,steer\n0,0.01\n");
-        let b = write("b.csv", "t,steer\n0,0.02\n");
-        let c = write("c.csv", "t,steer\n0,0.01\n");
-        assert_eq!(copied_run(&[a.clone(), b.clone()]), None);
-        assert_eq!(copied_run(&[a, b, c]), Some((0, 2)));
+        assert_eq!(copied_from(&[a.clone(), b.clone()], &copy), Some(0));
+        assert_eq!(copied_from(std::slice::from_ref(&b), &copy), None);
+        let with_ay = MeasuredRun {
+            ay: Some(vec![0.0; 2]),
+            ..copy
+        };
+        assert_eq!(copied_from(&[a, b], &with_ay), None);
     }
 }

@@ -139,12 +139,14 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     )?;
     let declared = f.runs.as_ref().map_or(&[][..], |r| &r.degrees[..]);
     degrees::check_declared(&src, declared, &files)?;
+    let copied = |first, second| runs::refuse_copy(&src, f.runs.as_ref(), &files, (first, second));
     let (runs, mut notes, cleaning, calibration, top_speeds) = read_runs(
         &files,
         (f.runs.as_ref().and_then(|r| r.segment), declared),
         f.diagnose.min_speed,
         f.vehicle.wheelbase(),
         &mut inputs,
+        &copied,
     )?;
     notes.splice(0..0, folder_notes);
     let unread = src.unread_vehicle_keys().into_iter().map(|u| u.note());

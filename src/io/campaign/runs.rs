@@ -111,45 +111,18 @@ pub(super) fn run_files(
         }
         files.extend(found);
     }
-    // A run listed twice, or a copy of one, would be held out and trained
-    // on at once.
-    let listed = run_spec.files.len();
-    let at = |k: usize| match (k < listed, &run_spec.dir) {
-        (true, _) => entry(src, &format!("runs.files[{k}]"), &run_spec.files[k]),
-        (false, Some(d)) => entry(src, "runs.dir", d),
-        (false, None) => "the campaign folder's `runs/`".to_string(),
-    };
-    let twice = selected_twice(&files).map(|(first, second)| {
-        let problem = SelectionProblem::SelectedTwice {
-            run: files[second].clone(),
-            first: at(first),
-            second: at(second),
-        };
-        (first, second, problem)
-    });
-    let twice = twice.or_else(|| {
-        super::copies::copied_run(&files).map(|(first, second)| {
-            let problem = SelectionProblem::CopiedRun {
+    // A run listed twice would be held out and trained on at once (a copy
+    // of one too: [`read_runs`] refuses it, having read both).
+    if let Some((first, second)) = selected_twice(&files) {
+        return Err(refuse_pair(
+            src,
+            Some(&run_spec),
+            (first, second),
+            |a, b| SelectionProblem::SelectedTwice {
                 run: files[second].clone(),
-                copy_of: files[first].clone(),
-                first: at(first),
-                second: at(second),
-            };
-            (first, second, problem)
-        })
-    });
-    if let Some((first, second, problem)) = twice {
-        // At its entry in `[runs] files`: the second listing where both
-        // are there, else the first, which `dir` finds again (the
-        // folder's files come after the list).
-        let k = if second < listed { second } else { first };
-        let span = match k < listed {
-            true => src.key_span(&format!("runs.files[{k}]")),
-            false => src.key_span("runs.dir"),
-        };
-        return Err(src.located(
-            span,
-            InputProblem::Campaign(Box::new(CampaignFileProblem::Selection(problem))),
+                first: a,
+                second: b,
+            },
         ));
     }
     if files.is_empty() {
@@ -178,6 +151,55 @@ fn selected_twice(files: &[PathBuf]) -> Option<(usize, usize)> {
             .iter()
             .position(|q| same(&files[i], q))
             .map(|k| (k, i))
+    })
+}
+
+/// The refusal of runs `first` and `second` of the selection (indices into
+/// the files [`run_files`] returns of `spec`), `problem` made of the
+/// entries that select them, with their places; located at the entry in
+/// `[runs] files`: the second listing where both are there, else the
+/// first, which `dir` finds again (the folder's files come after the list).
+fn refuse_pair(
+    src: &TomlSource,
+    spec: Option<&RunSpec>,
+    (first, second): (usize, usize),
+    problem: impl FnOnce(String, String) -> SelectionProblem,
+) -> InputError {
+    let default = RunSpec::default();
+    let spec = spec.unwrap_or(&default);
+    let listed = spec.files.len();
+    let at = |k: usize| match (k < listed, &spec.dir) {
+        (true, _) => entry(src, &format!("runs.files[{k}]"), &spec.files[k]),
+        (false, Some(d)) => entry(src, "runs.dir", d),
+        (false, None) => "the campaign folder's `runs/`".to_string(),
+    };
+    let problem = problem(at(first), at(second));
+    let k = if second < listed { second } else { first };
+    let span = match k < listed {
+        true => src.key_span(&format!("runs.files[{k}]")),
+        false => src.key_span("runs.dir"),
+    };
+    src.located(
+        span,
+        InputProblem::Campaign(Box::new(CampaignFileProblem::Selection(problem))),
+    )
+}
+
+/// The refusal of run `second` of `files` (selected by `spec`), whose
+/// samples are run `first`'s: a copy under another name.
+pub(super) fn refuse_copy(
+    src: &TomlSource,
+    spec: Option<&RunSpec>,
+    files: &[PathBuf],
+    (first, second): (usize, usize),
+) -> InputError {
+    refuse_pair(src, spec, (first, second), |a, b| {
+        SelectionProblem::CopiedRun {
+            run: files[second].clone(),
+            copy_of: files[first].clone(),
+            first: a,
+            second: b,
+        }
     })
 }
 
@@ -210,13 +232,15 @@ pub(super) type ReadRuns = (
 );
 
 /// Reads, checks, calibrates and cleans every run, cut into segments if
-/// asked.
+/// asked; a run whose samples an earlier one holds is refused by
+/// `copied(earlier, run)` ([`refuse_copy`]).
 pub(super) fn read_runs(
     files: &[PathBuf],
     (segment, degrees): (Option<f64>, &[AngleColumn]),
     min_speed: f64,
     wheelbase: f64,
     inputs: &mut Vec<PathBuf>,
+    copied: &dyn Fn(usize, usize) -> InputError,
 ) -> Result<ReadRuns, InputError> {
     let mut raw = Vec::new();
     let mut runs = Vec::new();
@@ -230,6 +254,11 @@ pub(super) fn read_runs(
     let (mut longest, mut was_cut) = (0.0_f64, false);
     for (i, p) in files.iter().enumerate() {
         let (run, lacks) = read_run_declared(p, degrees)?;
+        // Every earlier run passed the checks below: a copy of one would
+        // too, and be held out on the samples its twin is fitted on.
+        if let Some(k) = super::copies::copied_from(&raw, &run) {
+            return Err(copied(k, i));
+        }
         for (a, e) in lacks {
             match absent.iter_mut().find(|x| x.0 == a) {
                 Some(x) => x.1.push(p.display().to_string()),

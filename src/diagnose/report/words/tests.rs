@@ -454,6 +454,8 @@ fn a_channel_within_noise_is_said_so_on_the_terminal_as_on_the_page() {
         after: 0.0022,
         noise_floor: 0.0020,
         reduction_percent: -43.0,
+        mean_level: None,
+        runs: Vec::new(),
     };
     assert_eq!(
         channel_change(&s),

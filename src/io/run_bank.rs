@@ -27,6 +27,9 @@
 //! degrees of a degree or less, and is refused with the same question: the
 //! two are one mean apart at most g·sin 1° = 0.17 m/s².
 //!
+//! Not judged: fewer than [`MIN_BINS`] means, or an `ay` that holds one
+//! value throughout (a dead channel written as 0 tells no bank).
+//!
 //! **Steep.** No road is banked beyond [`STEEPEST_BANK`] (35°; Daytona's
 //! banking is 31°, Talladega's 33°): a bank beyond it in radians is said
 //! in a note, where the size check leaves it.
@@ -101,8 +104,11 @@ pub(super) fn check_bank_degrees(
     c: &Lateral,
     bank: &[f64],
 ) -> Result<(), InputError> {
+    // An `ay` that holds one value (a dead or unlogged channel written as
+    // 0) says nothing of the bank.
+    let held = c.ay.iter().all(|a| *a == c.ay[0]);
     let bins = residuals(c, bank);
-    if bins.len() < MIN_BINS {
+    if held || bins.len() < MIN_BINS {
         return Ok(());
     }
     let implied = |scale: f64| {

@@ -256,3 +256,78 @@ fn a_bank_steeper_than_any_road_is_said() {
         .unwrap();
     assert!((ay - OFFSETS[1]).abs() < 0.01, "{}", d["calibration"]);
 }
+
+#[test]
+fn an_uncertainty_stated_far_above_the_channels_scatter_is_said_and_the_verdict_rests_on_it() {
+    // The runs scatter by 0.002 rad/s, 0.05 m/s² and 0.001 rad; stated
+    // 0.04, 1.0 and 0.02: 20 times each. The user may, but the gap within
+    // noise is then the statement's, and the report says so.
+    let runs = [
+        ("a.csv", banked_log(9, 0.0, 0.0, true)),
+        ("b.csv", banked_log(10, 0.0, 0.0, true)),
+    ];
+    let dir = campaign(&runs);
+    let v = format!(
+        "{VEHICLE}\n[tyres]\nfile = \"tyre.toml\"\n\n[channels]\nyaw_rate = 0.04\nay = 1.0\nbeta = 0.02\n\n[diagnose]\neffects = [\"sensor_bias\"]\n"
+    );
+    fs::write(dir.path().join("vehicle.toml"), v).unwrap();
+    let (stdout, d) = diagnose(dir.path());
+    assert_eq!(
+        d["verdict"]["kind"], "no_significant_gap",
+        "{}",
+        d["verdict"]
+    );
+    let resting = d["verdict"]["resting_on"].as_array().unwrap();
+    let names: Vec<&str> = resting
+        .iter()
+        .map(|e| e["channel"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["yaw_rate", "ay", "beta"], "{resting:?}");
+    // The scatter the tool measures is the noise put in: 20 times, to the
+    // estimate's own spread.
+    for e in resting {
+        let times = e["times"].as_f64().unwrap();
+        assert!((times / 20.0 - 1.0).abs() < 0.1, "{e}");
+        assert_eq!(e["estimated"], false, "{e}");
+    }
+    // In the noise table and the notes too, typed.
+    let noise = d["gap"]["noise"].as_array().unwrap();
+    assert!(noise
+        .iter()
+        .all(|n| n["stated_excess"]["times"].as_f64().unwrap() > 10.0));
+    let notes: Vec<&serde_json::Value> = d["note_details"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{d}"))
+        .iter()
+        .filter(|n| n["kind"] == "uncertainty_above_own")
+        .collect();
+    assert_eq!(notes.len(), 3, "{}", d["note_details"]);
+    assert_eq!(notes[0]["channel"], "yaw_rate");
+    assert_eq!(notes[0]["stated"], 0.04);
+    // On the terminal: the note, the trust line and the verdict.
+    let note = stdout
+        .lines()
+        .find(|l| l.contains("note: [channels] yaw_rate = 0.04 rad/s: the stated uncertainty is"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(
+        note.contains("× the channel's own scatter, 0.00")
+            && note
+                .ends_with("a gap below it is called insignificant only because of the statement"),
+        "{note}"
+    );
+    let trust = stdout
+        .lines()
+        .find(|l| l.starts_with("channels trusted to:"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(trust.contains("yaw_rate 0.0400 rad/s (stated; "), "{trust}");
+    let verdict = stdout
+        .lines()
+        .find(|l| l.contains("no significant gap: held-out error"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(
+        verdict.contains(
+            "; this rests on the uncertainty stated under [channels] for yaw_rate, 0.0400 rad/s, "
+        ),
+        "{verdict}"
+    );
+}

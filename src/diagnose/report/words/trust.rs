@@ -5,7 +5,7 @@
 //! [`crate::diagnose::model::scale`]). Units: each channel's own.
 
 use super::rms;
-use crate::diagnose::model::scale::{near_the_line, SMOOTH_SHARE};
+use crate::diagnose::model::scale::{near_the_line, StatedExcess, SMOOTH_SHARE};
 use crate::diagnose::report::{ChannelNoise, ScaleSource};
 
 /// How far every measured channel is trusted, in one line.
@@ -19,7 +19,10 @@ pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
 pub fn channel_trust(n: &ChannelNoise) -> String {
     let u = n.unit;
     let why = match n.source {
-        ScaleSource::Stated => "stated".to_string(),
+        ScaleSource::Stated => match &n.stated_excess {
+            Some(e) => format!("stated; {}", stated_excess(e)),
+            None => "stated".to_string(),
+        },
         ScaleSource::Scatter => "its scatter".to_string(),
         ScaleSource::SensorFloor => {
             format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
@@ -60,5 +63,23 @@ fn near_line(n: &ChannelNoise, share: f64) -> String {
         "; near the line between a sensor and an estimated output: its scatter is {} of its sensor type's floor, the line at {}{runs}; read as {this}, a shorter or calmer stretch may read it as {other}: where you know which it is, state its uncertainty under [channels]",
         crate::format::rounded(share, 2),
         SMOOTH_SHARE,
+    )
+}
+
+/// A stated uncertainty far above what its channel shows
+/// ([`StatedExcess`]): how far, and what follows.
+pub fn stated_excess(e: &StatedExcess) -> String {
+    let u = e.channel.unit();
+    let own = if e.estimated {
+        format!(
+            "an estimated output's uncertainty, {} {u} (its scatter is below any sensor's)",
+            rms(e.own)
+        )
+    } else {
+        format!("the channel's own scatter, {} {u}", rms(e.own))
+    };
+    format!(
+        "{:.0}× {own}: a gap below it is called insignificant only because of the statement",
+        e.times
     )
 }

@@ -1,5 +1,5 @@
-//! Session 87, issue 41 ("What a user still trips on"), the calibration and
-//! the units of measured runs: a 1 Hz slalom is no calibration straight; a
+//! What a user still tripped on in the calibration and the units of
+//! measured runs: a 1 Hz slalom is no calibration straight; a
 //! `[channels]` uncertainty far above the channel's own scatter is said; a
 //! bank column in degrees is refused.
 

@@ -86,22 +86,7 @@ pub fn statement(v: &Verdict) -> String {
                 _ => head,
             }
         }
-        Verdict::NoSignificantGap(n) => {
-            let mut v = format!(
-                "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
-                n.heldout_error, n.threshold, n.noise_level
-            );
-            for e in &n.resting_on {
-                v += &format!(
-                    "; this rests on the uncertainty stated under [channels] for {}, {} {}, {}",
-                    e.channel.name(),
-                    rms(e.stated),
-                    e.channel.unit(),
-                    trust::stated_excess(e)
-                );
-            }
-            v
-        }
+        Verdict::NoSignificantGap(n) => trust::no_gap(n),
         Verdict::NotIdentifiable(n) => not_identifiable(n),
         Verdict::OutsideLibrary(o) => outside(o),
     }
@@ -395,13 +380,7 @@ pub fn note(n: &Note) -> String {
             "[channels] {}: no run measures this channel, so its stated uncertainty is not used",
             channel.name()
         ),
-        Note::UncertaintyAboveOwn(e) => format!(
-            "[channels] {} = {} {}: the stated uncertainty is {}",
-            e.channel.name(),
-            crate::error::Num(e.stated),
-            e.channel.unit(),
-            trust::stated_excess(e)
-        ),
+        Note::UncertaintyAboveOwn(e) => trust::excess_note(e),
         Note::UncertaintyBelowScatter {
             channel,
             stated,

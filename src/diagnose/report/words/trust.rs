@@ -6,7 +6,7 @@
 
 use super::rms;
 use crate::diagnose::model::scale::{near_the_line, StatedExcess, SMOOTH_SHARE};
-use crate::diagnose::report::{ChannelNoise, ScaleSource};
+use crate::diagnose::report::{ChannelNoise, NoSignificantGap, ScaleSource};
 
 /// How far every measured channel is trusted, in one line.
 pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
@@ -82,4 +82,34 @@ pub fn stated_excess(e: &StatedExcess) -> String {
         "{:.0}× {own}: a gap below it is called insignificant only because of the statement",
         e.times
     )
+}
+
+/// The note of an uncertainty stated far above what its channel shows.
+pub fn excess_note(e: &StatedExcess) -> String {
+    format!(
+        "[channels] {} = {} {}: the stated uncertainty is {}",
+        e.channel.name(),
+        crate::error::Num(e.stated),
+        e.channel.unit(),
+        stated_excess(e)
+    )
+}
+
+/// A verdict of no significant gap, with the stated uncertainties it
+/// rests on ([`StatedExcess`]).
+pub fn no_gap(n: &NoSignificantGap) -> String {
+    let mut v = format!(
+        "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
+        n.heldout_error, n.threshold, n.noise_level
+    );
+    for e in &n.resting_on {
+        v += &format!(
+            "; this rests on the uncertainty stated under [channels] for {}, {} {}, {}",
+            e.channel.name(),
+            rms(e.stated),
+            e.channel.unit(),
+            stated_excess(e)
+        );
+    }
+    v
 }

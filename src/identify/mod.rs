@@ -174,6 +174,12 @@ pub struct Fit {
     /// held, % (`None`: none was).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub free_sigma_percent: Option<f64>,
+    /// σ overall of the free fit from the swarm's start, %, where the
+    /// held fit beat it and the free fit restarted from the held fit's
+    /// optimum went lower still (`free_sigma_percent` is then the
+    /// restart's; `None`: the swarm's start won, or nothing was held).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub free_swarm_sigma_percent: Option<f64>,
     /// RMS error overall, N.
     pub rms: f64,
     /// Per condition.
@@ -323,6 +329,7 @@ pub(crate) fn fit_channel_holding(
         sigma_percent: s,
         sigma_pso_percent: found.sigma_pso,
         free_sigma_percent: None,
+        free_swarm_sigma_percent: None,
         rms,
         curves,
         parameters,
@@ -399,6 +406,7 @@ pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], lik
         rms,
         covariance: spread.covariance,
         free_sigma_percent: None,
+        free_swarm_sigma_percent: None,
         tyre,
         ..like.clone()
     }

@@ -435,6 +435,7 @@ mod trips_s86_lead;
 mod trips_s86_met;
 mod trips_s86_perf;
 mod trips_s86_units;
+mod trips_s87_idn;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -140,3 +140,94 @@ fn the_hoosier_unitire_fit_restarts_its_free_fit_from_the_held_optimum() {
     let sigma = report["sigma_percent"].as_f64().unwrap();
     assert!(sigma < 4.79, "{sigma}\n{said}");
 }
+
+/// Rig rows of the bundled linear tyre (57 296 N/rad, no saturation) at
+/// four loads, ±0.2 rad, as `tyre-eval` writes them, in `dir`.
+fn linear_rig(dir: &Path) -> PathBuf {
+    let mut points = String::from("fz,kappa,alpha,camber,speed\n");
+    for fz in [2500, 4000, 5500, 7000] {
+        for i in -60..=60 {
+            points += &format!("{fz},0,{},0,20\n", f64::from(i) * 0.2 / 60.0);
+        }
+    }
+    fs::write(dir.join("lin_pts.csv"), points).unwrap();
+    let tyre = root().join("tyres/linear.toml");
+    let o = run_in(
+        dir,
+        &[
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            "lin_pts.csv",
+            "--out",
+            "lin.csv",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    dir.join("lin.csv")
+}
+
+/// `identify --model linear` on the rows of a linear tyre said its window
+/// left 312 points out "where the force saturates", of a force that never
+/// does. The points beyond the window follow its line here, so the window
+/// is not needed: every point is fitted, and the line says why.
+#[test]
+fn a_linear_fit_of_a_force_that_never_saturates_fits_every_point() {
+    let dir = tempfile::tempdir().unwrap();
+    let rig = linear_rig(dir.path());
+    let out = dir.path().join("lin_fit.toml");
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "linear",
+        "--load",
+        "4000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(!said.contains("saturates"), "{said}");
+    assert!(said.contains("  linear window: not needed: in the 1 condition judged the points beyond |alpha| = 2 deg follow the line through those within it"), "{said}");
+    assert!(said.contains("all 93 points are fitted\n"), "{said}");
+    let report = read_json(&dir.path().join("lin_fit.report.json"));
+    let w = &report["linear_window"];
+    assert_eq!(w["points_left_out"], 0, "{w}");
+    assert_eq!(w["points_fitted"], 93, "{w}");
+    assert_eq!(w["beyond"]["beyond_window"], "follow_line", "{w}");
+    let tyre: toml::Value = toml::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    let c = tyre["cornering_stiffness"].as_float().unwrap();
+    assert!((c / 57296.0 - 1.0).abs() < 1e-6, "{c}");
+    // The range written is the data's, ±0.2 rad, not the window's ±2°.
+    let text = fs::read_to_string(&out).unwrap();
+    assert!(text.contains("alpha = [-0.2, 0.2]"), "{text}");
+}
+
+/// The same fit on a tyre that saturates (the bundled UniTire's rows)
+/// keeps its window, and says by how much the points beyond depart.
+#[test]
+fn a_linear_fit_of_a_saturating_force_keeps_its_window_and_says_the_departure() {
+    let dir = tempfile::tempdir().unwrap();
+    let rig = noisy_unitire(dir.path());
+    let out = dir.path().join("lin_fit.toml");
+    let o = run(&[
+        "identify",
+        rig.to_str().unwrap(),
+        "--model",
+        "linear",
+        "--load",
+        "4000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(said.contains("  linear window: fitted to |alpha| <= 2 deg only (15 points; 78 points with larger |alpha| left out, where the force saturates: in 1 of the 1 condition judged they depart from the window's line by up to "), "{said}");
+    let report = read_json(&dir.path().join("lin_fit.report.json"));
+    let w = &report["linear_window"];
+    assert_eq!(w["beyond"]["beyond_window"], "saturates", "{w}");
+    assert!(
+        w["beyond"]["departure_percent"].as_f64().unwrap() > 20.0,
+        "{w}"
+    );
+}

@@ -231,3 +231,60 @@ fn a_linear_fit_of_a_saturating_force_keeps_its_window_and_says_the_departure() 
         "{w}"
     );
 }
+
+/// `noisy_unitire`'s rows with their header rewritten by `header`, as
+/// `name` in `dir`.
+fn with_header(dir: &Path, name: &str, header: &str, scale_mz: f64) -> PathBuf {
+    let rig = fs::read_to_string(noisy_unitire(dir)).unwrap();
+    let mut text = format!("{header}\n");
+    for line in rig.lines().skip(1) {
+        let mut v: Vec<String> = line.split(',').map(String::from).collect();
+        // In N·mm the heaviest loads' moments pass the reader's 1e5 N·m.
+        if scale_mz > 1.0 && v[0].parse::<f64>().unwrap() > 5000.0 {
+            continue;
+        }
+        let mz: f64 = v[4].parse().unwrap();
+        v[4] = format!("{}", mz * scale_mz);
+        text += &(v.join(",") + "\n");
+    }
+    let path = dir.join(name);
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// A rig file whose `fy` and `mz` columns were exchanged was asked "is the
+/// column in N·mm? divide it by 1000", which would have fitted a force as
+/// a moment. The `mz` column holds forces of the load's size and `fy`
+/// values a trail's share of them: said as swapped, both columns named,
+/// at the file's line and column; a moment in N·mm is still asked so.
+#[test]
+fn rig_fy_and_mz_columns_exchanged_are_said_swapped_not_in_n_mm() {
+    let dir = tempfile::tempdir().unwrap();
+    let swapped = with_header(dir.path(), "swapped.csv", "fz,alpha,camber,mz,fy", 1.0);
+    let out = dir.path().join("s.toml");
+    let e = refused(&identify_to(&swapped, "unitire", &out), &out);
+    assert!(!e.contains("N·mm? divide"), "{e}");
+    assert!(e.contains("swapped.csv:"), "{e}");
+    assert!(e.contains(":4: column `mz`: "), "{e}");
+    assert!(e.contains("times the load, a lateral force's size, and the `fy` column (column 5) beside it holds values "), "{e}");
+    assert!(
+        e.contains("the columns `fy` and `mz` look swapped: exchange their names in the header"),
+        "{e}"
+    );
+    let trail: f64 = e
+        .split("a pneumatic trail of ")
+        .nth(1)
+        .and_then(|t| t.split(" mm").next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{e}"));
+    assert!((5.0..=60.0).contains(&trail), "{trail}: {e}");
+    // The same rows with `mz` in N·mm: still asked about N·mm.
+    let mm = with_header(dir.path(), "mm.csv", "fz,alpha,camber,fy,mz", 1000.0);
+    let out = dir.path().join("m.toml");
+    let e = refused(&identify_to(&mm, "unitire", &out), &out);
+    assert!(
+        e.contains("is the column in N·mm? divide it by 1000"),
+        "{e}"
+    );
+    assert!(!e.contains("swapped"), "{e}");
+}

@@ -1,4 +1,4 @@
-//! What a fresh user still tripped on in `identify` (issue 41): a fit
+//! What a fresh user still tripped on in `identify`: a fit
 //! with a parameter held that ended below the same fit with it free, a
 //! linear window said to leave out "where the force saturates" on data
 //! that never saturate, and rig `fy` and `mz` columns exchanged asked
@@ -57,7 +57,7 @@ fn noisy_unitire(dir: &Path) -> PathBuf {
 /// Each fit of `report` (the first channel, the aligning moment) that
 /// held a parameter: its σ held and its σ free.
 fn held_and_free(report: &serde_json::Value) -> Vec<(f64, f64)> {
-    [&report, &report["aligning"]]
+    [report, &report["aligning"]]
         .into_iter()
         .filter_map(|f| {
             Some((

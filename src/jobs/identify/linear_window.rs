@@ -76,7 +76,7 @@ pub enum Beyond {
     /// window is kept.
     NotJudged,
     /// No point lies beyond the window.
-    NothingBeyond,
+    NoPointPast,
 }
 
 /// How many times a condition's noise within the window its points beyond
@@ -133,7 +133,7 @@ impl LinearWindow {
                 crate::format::plural(judged, "condition", "conditions"),
                 crate::format::readable(departure_percent, 2)
             ),
-            Beyond::NotJudged | Beyond::NothingBeyond => format!(
+            Beyond::NotJudged | Beyond::NoPointPast => format!(
                 "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out{}{conditions})",
                 self.max_abs_alpha_deg,
                 self.points_fitted,
@@ -201,7 +201,7 @@ fn judged(conditions: &[Condition], max: f64) -> Beyond {
     let largest = departures.iter().map(|d| d.0).fold(0.0, f64::max);
     let n = departures.iter().filter(|d| d.1).count();
     match (beyond, departures.len(), n) {
-        (false, _, _) => Beyond::NothingBeyond,
+        (false, _, _) => Beyond::NoPointPast,
         (true, 0, _) => Beyond::NotJudged,
         (true, judged, 0) => Beyond::FollowLine {
             departure_percent: 100.0 * largest,

@@ -269,6 +269,24 @@ pub enum UnitSlip {
         /// The file's median load, N.
         median: f64,
     },
+    /// Rig `fy` and `mz` columns exchanged: the `mz` column holds forces of
+    /// a tyre's lateral force's size against the load, the `fy` column
+    /// values a pneumatic trail's share of them (`io/rig_rows.rs`).
+    #[error("column `mz`: {} at fz {} N is {} times the load, a lateral force's size, and the `fy` column (column {fy_column}) beside it holds values {} m times `mz`'s (their 90th percentiles of |value|, {} and {}): a pneumatic trail of {} mm, an aligning moment's size; the columns `fy` and `mz` look swapped: exchange their names in the header (FORMATS.md: `fy` in N, `mz` in N·m). A moment in N·mm would leave `fy` a force of its load's size", Num(*value), Num(*fz), crate::format::readable((value / fz).abs(), 3), crate::format::readable(*ratio, 2), significant(*fy_p90, 3), significant(*mz_p90, 3), crate::format::readable(1000.0 * ratio, 2))]
+    RigFyMzSwapped {
+        /// The `mz` column's largest |value| (a force), as read.
+        value: f64,
+        /// That row's load, N.
+        fz: f64,
+        /// The `fy` column's 90th percentile of |value|.
+        fy_p90: f64,
+        /// The `mz` column's 90th percentile of |value|.
+        mz_p90: f64,
+        /// `fy_p90 / mz_p90`, m if `fy` held the moment.
+        ratio: f64,
+        /// The `fy` column's position in the header (1-based).
+        fy_column: usize,
+    },
     /// A rig column whose largest force, over a sweep that reaches
     /// `slip` (rad or slip ratio), is below [`MIN_RIG_GRIP`] of its load:
     /// forces in kN beside loads in N, or a column scaled down.

@@ -4,15 +4,14 @@
 //! local least-squares method polishes it (Levenberg–Marquardt by default, or
 //! Zhang & Li's (2017) modified Gauss–Newton). Residual metric (Zhang & Li (2017)):
 //! `σ = sqrt(Σ(F_sim − F_test)²/Σ F_test²)·100 %` per condition and overall.
-//! Standard errors come from the Jacobian at the optimum,
-//! `cov = s²·(JᵀJ)⁻¹` with `s² = Σe²/(m − n)`; a parameter on its bound or
-//! with a standard error larger than itself is flagged.
+//! Standard errors come from the Jacobian at the optimum, `cov = s²·(JᵀJ)⁻¹`
+//! with `s² = Σe²/(m − n)`; a parameter on its bound or with a standard
+//! error larger than itself is flagged.
 //!
 //! The lateral force of every model is fitted first; then, where the data
 //! have `mz` and the model an aligning moment, its aligning parameters with
 //! the lateral ones held. The parameters the data cannot identify stay at
-//! their start values
-//! ([`crate::tyre::Tyre::lateral_free`]); with
+//! their start values ([`crate::tyre::Tyre::lateral_free`]); with
 //! [`FitSettings::hold_undetermined`] (as `identify` fits), those the data
 //! do not determine when fitted are held at the model's start values and
 //! the rest refitted (`undetermined.rs`). Units: SI inside; the models'
@@ -139,8 +138,7 @@ pub struct ParameterReport {
     pub held: Option<HeldFor>,
     /// Approximate standard error.
     pub std_error: Option<f64>,
-    /// One standard error's effect on the channel, alone, % of the
-    /// channel's RMS over the points (`‖∂F/∂p‖·se/‖F‖`).
+    /// One standard error's effect alone, % of the channel's RMS (`‖∂F/∂p‖·se/‖F‖`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub effect_percent: Option<f64>,
     /// Search bounds.
@@ -170,10 +168,12 @@ pub struct Fit {
     pub sigma_percent: f64,
     /// σ overall after PSO alone, %.
     pub sigma_pso_percent: f64,
-    /// σ overall before the parameters the data do not determine were
-    /// held, % (`None`: none was).
+    /// σ overall before the undetermined parameters were held, % (or none).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub free_sigma_percent: Option<f64>,
+    /// σ free from the swarm's start, %, where a restart won (`undetermined.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub free_swarm_sigma_percent: Option<f64>,
     /// RMS error overall, N.
     pub rms: f64,
     /// Per condition.
@@ -323,6 +323,7 @@ pub(crate) fn fit_channel_holding(
         sigma_percent: s,
         sigma_pso_percent: found.sigma_pso,
         free_sigma_percent: None,
+        free_swarm_sigma_percent: None,
         rms,
         curves,
         parameters,
@@ -399,6 +400,7 @@ pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], lik
         rms,
         covariance: spread.covariance,
         free_sigma_percent: None,
+        free_swarm_sigma_percent: None,
         tyre,
         ..like.clone()
     }

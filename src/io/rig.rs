@@ -300,6 +300,12 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
     }
     refuse_all(path, errors)?;
     if let Some(mz) = &mz {
+        // Before the moment's arm: `fy` and `mz` exchanged give an arm
+        // of N·mm's size, and are said as what they are.
+        if let Some((alpha, fy)) = &lateral {
+            let sweep = (alpha.as_slice(), fy.as_slice());
+            super::rig_rows::refuse_swapped_fy_mz(path, &c, sweep, mz, &fz, median)?;
+        }
         super::rig_rows::refuse_moments_beyond_any_arm(path, &c, mz, &fz, median)?;
         let alpha = lateral.as_ref().map_or(&[][..], |l| l.0.as_slice());
         super::rig_scale::refuse_moments_in_knm(path, &c, alpha, mz, &fz)?;

@@ -4,7 +4,9 @@
 //! N. A whole column so written is refused by its median (`super::rig`);
 //! one cell among others passes that, and would be held at a `.tir`'s
 //! range or counted as a sample between levels: refused here at its
-//! cell, with the reading that lands among the column's values.
+//! cell, with the reading that lands among the column's values. Rig
+//! `fy` and `mz` columns exchanged are refused as such, not as an `mz` in
+//! N·mm (`refuse_swapped_fy_mz`).
 
 use super::Columns;
 use crate::error::{unit_slips, InputError, PressureMeant, UnitSlip, Variable};
@@ -126,4 +128,75 @@ pub(crate) fn refuse_moments_beyond_any_arm(
         })
         .collect();
     InputError::all_of(path, errors).map_or(Ok(()), Err)
+}
+
+/// The least share of the median load the `mz` column's 90th percentile
+/// must reach to be read as a lateral force: a sweep past
+/// [`SWAP_SWEEP`] reaches 0.3–1.8 of the load on any tyre.
+const SWAP_FORCE_SHARE: f64 = 0.2;
+
+/// The most share of the median load the `fy` column's 90th percentile
+/// may reach to be read as a moment: a pneumatic trail (0.005–0.1 m)
+/// times a force within twice the load is below 0.1 of it in N·m per N.
+const SWAP_MOMENT_SHARE: f64 = 0.1;
+
+/// The pneumatic trails (m) the `fy` column's size over the `mz` column's
+/// must land among: 5 to 150 mm (a car tyre's is 20–60 mm).
+const SWAP_TRAILS: [f64; 2] = [0.005, 0.15];
+
+/// The slip angle a sweep must reach for the sizes to be judged, rad
+/// (3°: past the linear range, where the force is a share of the load).
+const SWAP_SWEEP: f64 = 0.05;
+
+/// Refuses rig data whose `fy` and `mz` columns look exchanged: the `mz`
+/// column as large against the load as a lateral force
+/// ([`SWAP_FORCE_SHARE`]), the `fy` column as small as a moment
+/// ([`SWAP_MOMENT_SHARE`]), and their ratio a pneumatic trail
+/// ([`SWAP_TRAILS`]), over a sweep past [`SWAP_SWEEP`]. Said at the `mz`
+/// column's largest value, naming both columns: read as a moment in N·mm
+/// the `mz` column was asked to be divided by 1000, which leaves a force
+/// fitted as a moment and a moment as a force.
+pub(crate) fn refuse_swapped_fy_mz(
+    path: &Path,
+    file: &Columns,
+    (alpha, fy): (&[f64], &[f64]),
+    mz: &[f64],
+    fz: &[f64],
+    median: f64,
+) -> Result<(), InputError> {
+    let rows: Vec<usize> = (0..fz.len())
+        .filter(|&i| fz[i] > 0.0 && fy[i].is_finite() && mz[i].is_finite())
+        .collect();
+    let reach = rows.iter().map(|&i| alpha[i].abs()).fold(0.0, f64::max);
+    if rows.is_empty() || reach < SWAP_SWEEP || median <= 0.0 {
+        return Ok(());
+    }
+    let p90 = |v: &[f64]| {
+        let mut a: Vec<f64> = rows.iter().map(|&i| v[i].abs()).collect();
+        a.sort_by(f64::total_cmp);
+        a[(a.len() - 1) * 9 / 10]
+    };
+    let (fy_p90, mz_p90) = (p90(fy), p90(mz));
+    let ratio = fy_p90 / mz_p90.max(f64::MIN_POSITIVE);
+    let swapped = mz_p90 >= SWAP_FORCE_SHARE * median
+        && fy_p90 <= SWAP_MOMENT_SHARE * median
+        && (SWAP_TRAILS[0]..=SWAP_TRAILS[1]).contains(&ratio);
+    if !swapped {
+        return Ok(());
+    }
+    let Some(&i) = rows
+        .iter()
+        .max_by(|&&a, &&b| mz[a].abs().total_cmp(&mz[b].abs()))
+    else {
+        return Ok(());
+    };
+    let slip = UnitSlip::RigFyMzSwapped {
+        value: mz[i],
+        fz: fz[i],
+        fy_p90,
+        mz_p90,
+        ratio,
+        fy_column: file.column("fy"),
+    };
+    Err(file.error_at(path, i, "mz", slip.into()))
 }

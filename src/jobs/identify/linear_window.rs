@@ -5,9 +5,23 @@
 //! |α| ≤ [`WINDOW_DEG`] — a rule of this program, chosen as the range
 //! where a passenger-car or racing tyre's lateral force stays close to
 //! its slope at zero slip — and says how many points it left out. Its
-//! pneumatic trail is fitted in the same window when the data have `mz`
+//! pneumatic trail is fitted on the same points when the data have `mz`
 //! (`t_p` = the ratio of the slopes of Mz and Fy on α, as
 //! [`crate::tyre::Linear`] writes `Mz = t_p·Fy`), or said held at 0.
+//!
+//! The window is cut only where the data leave their line: each
+//! condition's points within it give a line `Fy = a + c·α` (least
+//! squares, with an offset for ply steer and conicity) and its noise (the
+//! residuals' standard deviation); the condition *saturates* where its
+//! points beyond the window depart from that line by more than
+//! [`NOISE_MULTIPLE`] times that noise and [`DEPARTURE_SHARE`] of the
+//! line's force there (RMS over those points). Where no condition does
+//! (data of a linear tyre, or a sweep that stays in the tyre's linear
+//! range), the window is not needed, every point is fitted and the line
+//! says so: "where the force saturates" was said of data that never do.
+//! A condition with fewer than [`JUDGED_POINTS`] points in the window
+//! cannot be judged; where none can, the window is kept and the line says
+//! it was not judged.
 
 use crate::identify::data::Condition;
 use crate::tyre::Tyre;
@@ -30,7 +44,56 @@ pub struct LinearWindow {
     /// The loads of the conditions left with fewer than two points in the
     /// window, so not fitted, N.
     pub loads_left_out: Vec<f64>,
+    /// Whether the points beyond the window depart from its line (module
+    /// notes): the window cut, or not needed.
+    pub beyond: Beyond,
 }
+
+/// What the points beyond a linear fit's window do (module notes).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "beyond_window", rename_all = "snake_case")]
+pub enum Beyond {
+    /// Some condition's points depart from the window's line: the window
+    /// is cut there.
+    Saturates {
+        /// The largest departure of a condition, RMS over its points
+        /// beyond, % of the line's force there.
+        departure_percent: f64,
+        /// The conditions that depart, of those judged.
+        conditions: usize,
+        /// The conditions judged.
+        judged: usize,
+    },
+    /// No condition's points depart: every point fitted.
+    FollowLine {
+        /// The largest departure of a condition, RMS over its points
+        /// beyond, % of the line's force there.
+        departure_percent: f64,
+        /// The conditions judged.
+        judged: usize,
+    },
+    /// No condition has enough points in the window to be judged: the
+    /// window is kept.
+    NotJudged,
+    /// No point lies beyond the window.
+    NoPointPast,
+}
+
+/// How many times a condition's noise within the window its points beyond
+/// must depart from the window's line by to saturate: three standard
+/// deviations, past what the noise and the line's own uncertainty
+/// carried to larger slip give.
+pub(crate) const NOISE_MULTIPLE: f64 = 3.0;
+
+/// The share of the line's force (RMS over the points beyond) the points
+/// beyond must depart by to saturate: 2 %, a tyre's force at twice its
+/// linear range falls 10–30 % below its line (the Hoosier file's at 4°
+/// by about 20 %); the rounding of a file's digits does not.
+pub(crate) const DEPARTURE_SHARE: f64 = 0.02;
+
+/// The least points within the window of a condition judged: a line and
+/// its noise need three.
+pub(crate) const JUDGED_POINTS: usize = 3;
 
 impl LinearWindow {
     /// The lines said on the terminal (`mark` `" "`) and in the file's
@@ -38,7 +101,7 @@ impl LinearWindow {
     pub(crate) fn lines(&self, mark: &str) -> Vec<String> {
         let trail = match self.pneumatic_trail {
             Some(t) => format!(
-                "pneumatic_trail = {t:.5} m fitted to mz in the same window (the ratio of the slopes of mz and fy on alpha)"
+                "pneumatic_trail = {t:.5} m fitted to mz on the same points (the ratio of the slopes of mz and fy on alpha)"
             ),
             None => "pneumatic_trail held at 0 (no mz data)".into(),
         };
@@ -54,13 +117,34 @@ impl LinearWindow {
                     .join(", ")
             ),
         };
-        vec![
-            format!(
-                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates{conditions})",
-                self.max_abs_alpha_deg, self.points_fitted, self.points_left_out
+        let window = match self.beyond {
+            Beyond::FollowLine { departure_percent, judged } => format!(
+                "{mark} linear window: not needed: in {} the points beyond |alpha| = {WINDOW_DEG} deg follow the line through those within it (they depart from it by at most {} % RMS, within {NOISE_MULTIPLE} times the noise or {} % of the force): the force does not saturate in these data, and all {} points are fitted",
+                match judged { 1 => "the 1 condition judged".to_string(), n => format!("each of the {n} conditions judged") },
+                crate::format::readable(departure_percent, 2),
+                100.0 * DEPARTURE_SHARE,
+                self.points_fitted
             ),
-            format!("{mark} {trail}"),
-        ]
+            Beyond::Saturates { departure_percent, conditions: n, judged } => format!(
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out, where the force saturates: in {n} of the {} judged they depart from the window's line by up to {} % RMS, beyond its noise{conditions})",
+                self.max_abs_alpha_deg,
+                self.points_fitted,
+                self.points_left_out,
+                crate::format::plural(judged, "condition", "conditions"),
+                crate::format::readable(departure_percent, 2)
+            ),
+            Beyond::NotJudged | Beyond::NoPointPast => format!(
+                "{mark} linear window: fitted to |alpha| <= {} deg only ({} points; {} points with larger |alpha| left out{}{conditions})",
+                self.max_abs_alpha_deg,
+                self.points_fitted,
+                self.points_left_out,
+                match self.beyond {
+                    Beyond::NotJudged => format!(": no condition has {JUDGED_POINTS} points within the window to tell whether the force departs from its line beyond it"),
+                    _ => String::new(),
+                }
+            ),
+        };
+        vec![window, format!("{mark} {trail}")]
     }
 }
 
@@ -70,6 +154,20 @@ impl LinearWindow {
 pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWindow) {
     let max = WINDOW_DEG.to_radians();
     let total: usize = conditions.iter().map(|c| c.points.len()).sum();
+    let beyond = judged(&conditions, max);
+    if let Beyond::FollowLine { .. } = beyond {
+        // The data never leave their line: every point is the line's.
+        let reach = largest_slip(&conditions);
+        let w = LinearWindow {
+            max_abs_alpha_deg: reach.to_degrees(),
+            points_fitted: total,
+            points_left_out: 0,
+            pneumatic_trail: None,
+            loads_left_out: Vec::new(),
+            beyond,
+        };
+        return (conditions, w);
+    }
     let (kept, left): (Vec<Condition>, Vec<Condition>) = conditions
         .into_iter()
         .map(|mut c| {
@@ -84,8 +182,89 @@ pub(crate) fn windowed(conditions: Vec<Condition>) -> (Vec<Condition>, LinearWin
         points_left_out: total - fitted,
         pneumatic_trail: None,
         loads_left_out: left.iter().map(|c| c.fz).collect(),
+        beyond,
     };
     (kept, w)
+}
+
+/// Whether the points of `conditions` beyond `max` (rad) depart from
+/// their condition's line within it (module notes).
+fn judged(conditions: &[Condition], max: f64) -> Beyond {
+    let departures: Vec<(f64, bool)> = conditions
+        .iter()
+        .filter_map(|c| departure(c, max))
+        .collect();
+    let beyond = conditions
+        .iter()
+        .flat_map(|c| &c.points)
+        .any(|p| p.slip().abs() > max);
+    let largest = departures.iter().map(|d| d.0).fold(0.0, f64::max);
+    let n = departures.iter().filter(|d| d.1).count();
+    match (beyond, departures.len(), n) {
+        (false, _, _) => Beyond::NoPointPast,
+        (true, 0, _) => Beyond::NotJudged,
+        (true, judged, 0) => Beyond::FollowLine {
+            departure_percent: 100.0 * largest,
+            judged,
+        },
+        (true, judged, conditions) => Beyond::Saturates {
+            departure_percent: 100.0 * largest,
+            conditions,
+            judged,
+        },
+    }
+}
+
+/// The departure of condition `c`'s points beyond `max` (rad) from the
+/// line through its points within it, as a share of the line's force
+/// there (RMS), and whether it saturates; `None` where it has fewer than
+/// [`JUDGED_POINTS`] within or none beyond.
+fn departure(c: &Condition, max: f64) -> Option<(f64, bool)> {
+    let pairs = |inside: bool| -> Vec<(f64, f64)> {
+        c.points
+            .iter()
+            .filter(|p| (p.slip().abs() <= max) == inside && p.fy().is_finite())
+            .map(|p| (p.slip(), p.fy()))
+            .collect()
+    };
+    let (within, outside) = (pairs(true), pairs(false));
+    if within.len() < JUDGED_POINTS || outside.is_empty() {
+        return None;
+    }
+    let m = within.len() as f64;
+    let (ma, mf) = within
+        .iter()
+        .fold((0.0, 0.0), |(a, f), (x, y)| (a + x / m, f + y / m));
+    let (sxx, sxy) = within.iter().fold((0.0, 0.0), |(xx, xy), (x, y)| {
+        (xx + (x - ma) * (x - ma), xy + (x - ma) * (y - mf))
+    });
+    if sxx <= 0.0 {
+        return None;
+    }
+    let slope = sxy / sxx;
+    let line = |x: f64| mf + slope * (x - ma);
+    let rss: f64 = within.iter().map(|(x, y)| (y - line(*x)).powi(2)).sum();
+    let noise = (rss / (m - 2.0)).sqrt();
+    let rms = |v: &mut dyn Iterator<Item = f64>| {
+        let (s, n) = v.fold((0.0, 0.0), |(s, n), e| (s + e * e, n + 1.0));
+        (s / n).sqrt()
+    };
+    let off = rms(&mut outside.iter().map(|(x, y)| y - line(*x)));
+    let force = rms(&mut outside.iter().map(|(x, _)| line(*x)));
+    let share = off / force.max(f64::MIN_POSITIVE);
+    Some((
+        share,
+        off > NOISE_MULTIPLE * noise && share > DEPARTURE_SHARE,
+    ))
+}
+
+/// The largest |α| of the points of `conditions`, rad (0 without points).
+fn largest_slip(conditions: &[Condition]) -> f64 {
+    conditions
+        .iter()
+        .flat_map(|c| &c.points)
+        .map(|p| p.slip().abs())
+        .fold(0.0, f64::max)
 }
 
 /// The smallest |α| of the points of `conditions`, rad (infinite

@@ -282,7 +282,18 @@ pub(crate) fn unfitted_notes(r: &SwarmReport) -> Vec<Note> {
 /// reject the nearest value they allow), and its σ with them held against
 /// fitted free.
 pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
-    let free = f.free_sigma_percent?;
+    let Some(free) = f.free_sigma_percent else {
+        // A restart that left nothing to hold: the fit written is the
+        // free one, polished from the held fit's optimum.
+        return f.free_swarm_sigma_percent.map(|swarm| {
+            Note::said(format!(
+                "{}: σ {} % fitted free, restarted from the optimum of the fit with what the data seemed not to determine held, which had beaten the free fit from the swarm's start (σ {} %); from there the data determine every parameter, and none is held",
+                f.channel.quantity(),
+                fixed(f.sigma_percent, 3),
+                fixed(swarm, 3)
+            ))
+        });
+    };
     let held: Vec<(&str, bool)> = f
         .parameters
         .iter()
@@ -314,8 +325,16 @@ pub(crate) fn undetermined_note(f: &Fit) -> Option<Note> {
             if one { "value" } else { "values" }
         )
     };
+    // Where the held fit had beaten the free fit from the swarm's start,
+    // the free fit was restarted from the held optimum: both said.
+    let restart = f.free_swarm_sigma_percent.map_or(String::new(), |swarm| {
+        let (swarm, held, _) = crate::format::distinct(swarm, f.sigma_percent, 3, 6);
+        format!(
+            " (restarted from the held fit's optimum: from the swarm's start the free fit had stopped at {swarm} %, above the held fit's {held} %)"
+        )
+    });
     Some(Note::said(format!(
-        "{}: {} {at}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free",
+        "{}: {} {at}, as the data do not determine {} (the held lines say how far): σ {} % held against {} % fitted free{restart}",
         f.channel.quantity(),
         names.join(", "),
         if one { "it" } else { "them" },

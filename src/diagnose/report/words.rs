@@ -86,7 +86,10 @@ pub fn statement(v: &Verdict) -> String {
                 _ => head,
             }
         }
-        Verdict::NoSignificantGap(n) => trust::no_gap(n),
+        Verdict::NoSignificantGap(n) => format!(
+            "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
+            n.heldout_error, n.threshold, n.noise_level
+        ),
         Verdict::NotIdentifiable(n) => not_identifiable(n),
         Verdict::OutsideLibrary(o) => outside(o),
     }
@@ -380,7 +383,6 @@ pub fn note(n: &Note) -> String {
             "[channels] {}: no run measures this channel, so its stated uncertainty is not used",
             channel.name()
         ),
-        Note::UncertaintyAboveOwn(e) => trust::excess_note(e),
         Note::UncertaintyBelowScatter {
             channel,
             stated,

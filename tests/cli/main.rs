@@ -435,15 +435,9 @@ mod trips_s86_lead;
 mod trips_s86_met;
 mod trips_s86_perf;
 mod trips_s86_units;
-<<<<<<< HEAD
-mod trips_s87_cal;
 mod trips_s87_gap;
 mod trips_s87_idn;
 mod trips_s87_lead;
-=======
-mod trips_s87_lead;
-mod trips_s87_gap;
->>>>>>> parent of bcc1e4a (Merge s87-cal)
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

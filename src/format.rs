@@ -188,15 +188,55 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
     back[b.len()]
 }
 
+/// Names vehicle-dynamics engineers also give a known name, and that name:
+/// spelling cannot find them (`tyre_lag` is nine edits from
+/// `relaxation_length`, the length of the first-order tyre lag).
+/// Asked only where the name it stands for is among the known ones.
+const ALSO_CALLED: &[(&str, &str)] = &[
+    ("tyre_lag", "relaxation_length"),
+    ("tire_lag", "relaxation_length"),
+    ("slip_lag", "relaxation_length"),
+    ("tyre_relaxation", "relaxation_length"),
+    ("steer_lag", "steer_path"),
+    ("steering_lag", "steer_path"),
+    ("steer_delay", "steer_path"),
+    ("actuator_lag", "steer_path"),
+    ("sensor_offset", "sensor_bias"),
+    ("sensor_offsets", "sensor_bias"),
+    ("latency", "sensor_delay"),
+    ("sensor_latency", "sensor_delay"),
+    ("time_delay", "sensor_delay"),
+    ("downforce", "aero_load"),
+    ("aero_downforce", "aero_load"),
+    ("friction", "road_friction"),
+    ("mu", "road_friction"),
+    ("steering_stiffness", "steering_compliance"),
+    ("camber_thrust", "roll_camber"),
+    ("sine_steer", "sine"),
+    ("chirp", "sweep"),
+    ("frequency_sweep", "sweep"),
+];
+
 /// The known name nearest `given`, when it is near enough to be what was
-/// meant: one edit away in a name of three characters or more (a slip);
-/// else the one known name that holds every
-/// word of `given` (`slick` for `racing_slick`) or whose every word
-/// `given` holds (`sine-steer` for `sine`), words split at `_`, `-` and
-/// spaces; else at most one edit per three characters of the longer name
-/// (`3·d ≤ n + 1`), so a slip or two in a long name is caught and an
-/// unrelated short word is not; the first of equally near names.
+/// meant: another name engineers give it ([`ALSO_CALLED`]); one edit away
+/// in a name of three characters or more (a slip); else the one known
+/// name that holds every word of `given` (`slick` for `racing_slick`) or
+/// whose every word `given` holds (`sine-steer` for `sine`), words split
+/// at `_`, `-` and spaces, names that differ only in their separators
+/// (`step-steer`, `step_steer`) counted as one, and none where the word
+/// is several names' (`steer`); else at most one edit
+/// per three characters of the longer name (`3·d ≤ n + 1`), so a slip or
+/// two in a long name is caught and an unrelated short word is not; the
+/// first of equally near names.
 pub fn nearest_name<'a>(given: &str, known: &[&'a str]) -> Option<&'a str> {
+    let plain = |s: &str| s.to_lowercase().replace(['-', ' '], "_");
+    let also = ALSO_CALLED
+        .iter()
+        .filter(|(other, _)| *other == plain(given))
+        .find_map(|(_, name)| known.iter().find(|k| plain(k) == plain(name)));
+    if let Some(k) = also {
+        return Some(k);
+    }
     let closest = known
         .iter()
         .map(|k| (edit_distance(given, k), *k))
@@ -224,8 +264,13 @@ pub fn nearest_name<'a>(given: &str, known: &[&'a str]) -> Option<&'a str> {
         })
         .copied()
         .collect();
-    if let [one] = sharing[..] {
-        return Some(one);
+    // A word several names share names none of them, and spelling must
+    // not then pick a stranger (`steer` is no slip of `sweep`).
+    if let Some((first, rest)) = sharing.split_first() {
+        return rest
+            .iter()
+            .all(|k| plain(k) == plain(first))
+            .then_some(*first);
     }
     closest
         .filter(|(d, k)| 3 * d <= given.chars().count().max(k.chars().count()) + 1)
@@ -286,6 +331,31 @@ mod tests {
         assert_eq!(nearest_name("wheel", &classes), None);
         // One edit between one-letter names is another name, not a slip.
         assert_eq!(nearest_name("x", &["y", "z"]), None);
+        // A name spelt two ways is one name: a word of it suggests it,
+        // and its words in another order too.
+        let kinds = [
+            "step-steer",
+            "step_steer",
+            "ramp-steer",
+            "ramp_steer",
+            "sine",
+            "sweep",
+        ];
+        assert_eq!(nearest_name("step", &kinds), Some("step-steer"));
+        assert_eq!(nearest_name("steer-step", &kinds), Some("step-steer"));
+        assert_eq!(nearest_name("ramp", &kinds), Some("ramp-steer"));
+        assert_eq!(nearest_name("steer", &kinds), None);
+        // What engineers also call a name, where spelling cannot find it.
+        let effects = ["relaxation_length", "sensor_delay", "steer_path"];
+        assert_eq!(
+            nearest_name("tyre_lag", &effects),
+            Some("relaxation_length")
+        );
+        assert_eq!(
+            nearest_name("Tire-Lag", &effects),
+            Some("relaxation_length")
+        );
+        assert_eq!(nearest_name("tyre_lag", &["sensor_delay"]), None);
         assert_eq!(nearest_name("fy", &["fx", "mz"]), Some("fx"));
     }
 

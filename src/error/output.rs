@@ -50,6 +50,15 @@ pub enum OutputError {
         /// The folder.
         path: PathBuf,
     },
+    /// An output folder that is the folder a campaign reads its runs from:
+    /// the next diagnosis would read the written `overlays.csv` as a run.
+    #[error("{}: is the folder this campaign reads its runs from (each *.csv in it is a run), so the next diagnosis would read this one's overlays.csv as a run; write the diagnosis elsewhere (without --out it goes to {})", path.display(), default.display())]
+    IntoRunsFolder {
+        /// The output folder.
+        path: PathBuf,
+        /// Where the diagnosis goes without `--out`.
+        default: PathBuf,
+    },
     /// A file to write named by a folder that exists.
     #[error("{}: is a folder; name the file to write in it (e.g. {})", path.display(), path.join(format!("{stem}.{extension}")).display())]
     IsAFolder {
@@ -222,6 +231,7 @@ impl OutputError {
     pub fn path(&self) -> &std::path::Path {
         match self {
             OutputError::Overwrite { path }
+            | OutputError::IntoRunsFolder { path, .. }
             | OutputError::CampaignExists { path }
             | OutputError::NotAFolder { path, .. }
             | OutputError::IsAFolder { path, .. }

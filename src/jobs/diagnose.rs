@@ -71,15 +71,28 @@ fn given_tyre_notes(c: &crate::diagnose::Campaign) -> Vec<String> {
     notes
 }
 
+/// Refuses an output folder that is the campaign's folder of runs
+/// (compared after resolving links; one not yet made is none).
+fn refuse_runs_folder(out: &Path, runs: Option<&Path>, default: PathBuf) -> Result<(), Error> {
+    let canon = |p: &Path| std::fs::canonicalize(p).ok();
+    match (canon(out), runs.and_then(canon)) {
+        (Some(o), Some(r)) if o == r => Err(crate::error::OutputError::IntoRunsFolder {
+            path: out.to_path_buf(),
+            default,
+        }
+        .into()),
+        _ => Ok(()),
+    }
+}
+
 /// Diagnoses the campaign at `path`; `out` is the output folder (default
 /// `out/<campaign name>`), checked against the inputs first.
 pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
     let mut campaign = load_campaign(path)?;
     campaign.notes.extend(given_tyre_notes(&campaign));
-    let out_dir = out.map_or_else(
-        || PathBuf::from("out").join(&campaign.name),
-        Path::to_path_buf,
-    );
+    let default = PathBuf::from("out").join(&campaign.name);
+    let out_dir = out.map_or_else(|| default.clone(), Path::to_path_buf);
+    refuse_runs_folder(&out_dir, campaign.runs_folder.as_deref(), default)?;
     refuse_overwrites(&FILES.map(|f| out_dir.join(f)), &campaign.inputs)?;
     let lock = OutputLock::acquire(&out_dir)?;
     let mut diagnosis = {

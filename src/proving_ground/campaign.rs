@@ -74,6 +74,7 @@ impl Synthetic {
         Campaign {
             name: self.name(),
             inputs: Vec::new(),
+            runs_folder: None,
             vehicle: self.vehicle.clone(),
             friction: 1.0,
             friction_at: None,

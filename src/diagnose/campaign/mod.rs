@@ -121,6 +121,10 @@ pub struct Campaign {
     pub source: PathBuf,
     /// Every input file read (so outputs never overwrite one).
     pub inputs: Vec<PathBuf>,
+    /// The folder whose every `*.csv` is a run (`[runs] dir`, or a
+    /// campaign folder's `runs/`), if the runs are read so: no output may
+    /// be written into it, or the next diagnosis reads it as a run.
+    pub runs_folder: Option<PathBuf>,
     /// Mass and geometry.
     pub vehicle: Vehicle,
     /// Road friction scale.

@@ -185,6 +185,7 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         name,
         source: path.to_path_buf(),
         inputs,
+        runs_folder: runs_folder(f.runs.as_ref(), &base, path, folder),
         vehicle: f.vehicle,
         friction: f.road.friction,
         friction_at: src
@@ -202,6 +203,17 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         cleaning,
         calibration,
     })
+}
+
+/// The folder whose every `*.csv` is read as a run, as [`run_files`]
+/// lists them: `[runs] dir`, or a campaign folder's `runs/` where no
+/// files are listed.
+fn runs_folder(runs: Option<&RunSpec>, base: &Path, path: &Path, folder: bool) -> Option<PathBuf> {
+    match runs {
+        Some(RunSpec { dir: Some(d), .. }) => Some(beside(base, d)),
+        Some(r) if !r.files.is_empty() => None,
+        _ => folder.then(|| path.join("runs")),
+    }
 }
 
 /// The lowest rate of the fits' residuals, Hz ([`Limit::ResidualRate`]).

@@ -1,0 +1,159 @@
+//! What a fresh user tripped on (round 14), fixed by the lead: a diagnosis
+//! written into the folder its runs are read from, and names that got no
+//! "did you mean" (a manoeuvre kind by one word of it, an effect by the
+//! name engineers also give it).
+
+use super::*;
+
+/// `handling diagnose c8 --out c8/runs` was accepted: the diagnosis wrote
+/// `overlays.csv` among the runs and the next diagnosis of the same
+/// campaign failed on it, reading its `run` header as "a header further
+/// down". The folder of runs is refused as an output, named with where the
+/// diagnosis goes without `--out`, before anything is written; another
+/// folder is still taken.
+#[test]
+fn a_diagnosis_is_not_written_into_the_folder_its_runs_are_read_from() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(
+        dir.path(),
+        "c8",
+        &["--effects", "sensor_delay", "--seed", "1"],
+    );
+    let runs = c.join("runs");
+    let before = fs::read_dir(&runs).unwrap().count();
+    for out in [runs.clone(), runs.join("..").join("runs")] {
+        let o = run(&[
+            "diagnose",
+            c.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success(), "{}", stderr(&o));
+        let e = stderr(&o);
+        assert!(
+            e.contains("is the folder this campaign reads its runs from")
+                && e.contains(&format!(
+                    "without --out it goes to {}",
+                    Path::new("out").join("c8").display()
+                )),
+            "{e}"
+        );
+    }
+    assert_eq!(
+        fs::read_dir(&runs).unwrap().count(),
+        before,
+        "written into runs/"
+    );
+    let elsewhere = dir.path().join("d");
+    let o = run(&[
+        "diagnose",
+        c.to_str().unwrap(),
+        "--out",
+        elsewhere.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(elsewhere.join("overlays.csv").is_file());
+}
+
+/// The bundled step scenario with its manoeuvre's `kind` replaced.
+fn scenario_of_kind(dir: &Path, kind: &str) -> PathBuf {
+    let text = fs::read_to_string(root().join("scenarios/step_gbt6323_pac89.toml")).unwrap();
+    assert!(text.contains("kind = \"step-steer\""));
+    let p = dir.join(format!("{kind}.toml"));
+    let tyres = root().join("tyres");
+    let text = text
+        .replace("kind = \"step-steer\"", &format!("kind = \"{kind}\""))
+        .replace("../tyres", tyres.to_str().unwrap());
+    fs::write(&p, text).unwrap();
+    p
+}
+
+/// `kind = "step"` was answered "did you mean `sweep`?" (two edits), and
+/// `ramp` and `steer-step` got no suggestion: each word of `step-steer`
+/// matched both of its spellings (`step-steer`, `step_steer`), which made
+/// it ambiguous. A name spelt two ways is one name now; a word several
+/// names share (`steer`) suggests none rather than a stranger.
+#[test]
+fn a_manoeuvre_kind_named_by_one_of_its_words_is_answered_with_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    for (given, meant) in [
+        ("step", Some("step-steer")),
+        ("ramp", Some("ramp-steer")),
+        ("steer-step", Some("step-steer")),
+        ("steer", None),
+    ] {
+        let p = scenario_of_kind(dir.path(), given);
+        let out = dir.path().join(format!("out-{given}"));
+        let o = run(&[
+            "simulate",
+            p.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success());
+        let e = stderr(&o);
+        assert!(e.contains(&format!("unknown variant `{given}`")), "{e}");
+        match meant {
+            Some(m) => assert!(
+                e.contains(&format!("(did you mean `{m}`?)")),
+                "{given}: {e}"
+            ),
+            None => assert!(!e.contains("did you mean"), "{given}: {e}"),
+        }
+    }
+}
+
+/// `--effects tyre_lag` listed the nineteen effects without a suggestion:
+/// spelling cannot find `relaxation_length` (the length of the tyre's
+/// first-order lag). Names engineers also give an effect are answered
+/// with it, on the command line and in a campaign file alike.
+#[test]
+fn an_effect_asked_for_by_another_name_engineers_use_is_suggested() {
+    let dir = tempfile::tempdir().unwrap();
+    for (given, meant) in [
+        ("tyre_lag", "relaxation_length"),
+        ("tire-lag", "relaxation_length"),
+        ("latency", "sensor_delay"),
+        ("downforce", "aero_load"),
+    ] {
+        let out = dir.path().join(given);
+        let o = run(&[
+            "synth",
+            "--effects",
+            given,
+            "--seed",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success());
+        let e = stderr(&o);
+        assert!(
+            e.contains(&format!(
+                "unknown effect `{given}` (did you mean `{meant}`?)"
+            )),
+            "{e}"
+        );
+        assert!(!out.exists());
+    }
+    let c = synth_campaign(
+        dir.path(),
+        "c",
+        &["--effects", "sensor_delay", "--seed", "1"],
+    );
+    let v = c.join("vehicle.toml");
+    let text = fs::read_to_string(&v).unwrap();
+    fs::write(&v, text + "effects = [\"tyre_lag\"]\n").unwrap();
+    let o = run(&[
+        "diagnose",
+        c.to_str().unwrap(),
+        "--out",
+        dir.path().join("d").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("(did you mean `relaxation_length`?)"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -36,7 +36,8 @@ fn a_reduction_within_noise_reads_the_same_on_terminal_and_page() {
 }
 
 /// `shrinkage` wrote −73 % for a part whose gap is noise before and after;
-/// `gap.parts` wrote after = before although the verdict changed them.
+/// `gap.parts` wrote after = before although the verdict changed them
+/// (now not written: the same rows as `shrinkage`).
 #[test]
 fn a_part_within_noise_has_no_percentage_and_the_gap_parts_have_the_verdicts_after() {
     let dir = tempfile::tempdir().unwrap();
@@ -57,12 +58,10 @@ fn a_part_within_noise_has_no_percentage_and_the_gap_parts_have_the_verdicts_aft
         }
     }
     assert!(within > 0, "no part within noise: {rows:?}");
-    let parts = d["gap"]["parts"].as_array().unwrap();
-    assert_eq!(
-        parts, rows,
-        "the gap's parts are the verdict's before and after"
-    );
-    assert!(parts.iter().any(|p| p["after"] != p["before"]), "{parts:?}");
+    // The rows are written once (`gap.parts` repeated them, a third of
+    // the file twice over), with the verdict's after.
+    assert!(d["gap"].get("parts").is_none(), "{}", d["gap"]);
+    assert!(rows.iter().any(|p| p["after"] != p["before"]), "{rows:?}");
 }
 
 /// A pair was fitted in both orders and listed twice

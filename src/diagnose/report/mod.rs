@@ -189,7 +189,10 @@ pub struct GapReport {
     pub noise: Vec<ChannelNoise>,
     /// Per channel, window and regime over all runs: the base model's
     /// held-out replays before, the verdict's after (the same rows as
-    /// [`Diagnosis::shrinkage`]; after = before without a verdict).
+    /// [`Diagnosis::shrinkage`]; after = before without a verdict). Not
+    /// written: the JSON holds them once, as `shrinkage` (they were a
+    /// third of an 8-run campaign's file twice over).
+    #[serde(skip)]
     pub parts: Vec<Shrinkage>,
     /// Per run.
     pub runs: Vec<RunGap>,

@@ -222,6 +222,14 @@ fn findings(d: &Diagnosis) -> Vec<String> {
             .map(|f| format!("  {}", words::finding(f)))
             .chain(bands.into_iter().map(|l| format!("  {l}"))),
     );
+    out.extend(candidate_lines(d));
+    out.extend(verdict_lines(d));
+    out
+}
+
+/// The candidates' table on held-out runs, then the screened ones.
+fn candidate_lines(d: &Diagnosis) -> Vec<String> {
+    let mut out = Vec::new();
     out.push(format!(
         "candidates on held-out runs ({} folds; J before {:.3}, noise level {:.3}):",
         d.folds, d.gap.heldout_error, d.gap.noise_level
@@ -257,6 +265,13 @@ fn findings(d: &Diagnosis) -> Vec<String> {
         }
     }
     out.extend(screened_lines(d));
+    out
+}
+
+/// The verdict, what it stands on, its warnings, the confounded sets and
+/// the held-out change per channel.
+fn verdict_lines(d: &Diagnosis) -> Vec<String> {
+    let mut out = Vec::new();
     out.push(format!("verdict: {}", d.verdict.statement()));
     // The verdict's own axles where they were refitted with it (no tyre
     // data): the base's line above is not what the verdict stands on.

@@ -56,6 +56,40 @@ pub fn page(
             }
         ),
     );
+    verdict(&mut p, d);
+    if !d.notes.is_empty() {
+        let notes: Vec<String> = d.notes.iter().map(words::note).collect();
+        p.section("notes", "Notes on the inputs").lines(&notes);
+    }
+    let mut findings = vec![words::channels_trusted(&d.gap.noise)];
+    findings.extend(d.gap.findings.iter().map(words::finding));
+    let heading = words::gap_heading(&d.gap.findings);
+    let heading = heading[..1].to_uppercase() + &heading[1..];
+    p.section("gap", &heading).lines(&findings);
+    p.figure(
+        "gap-map",
+        gap_map,
+        "Held-out RMS over the noise floor per channel, against the time window, the \
+         lateral-acceleration level and the speed band; dashed: 3 × the noise floor.",
+        path,
+    )?;
+    base(&mut p, d);
+    ranking(&mut p, d);
+    shrinkage(&mut p, d);
+    p.figure(
+        "overlays",
+        overlays,
+        "Held-out replays of the runs with the largest base-model gap: measured (grey points), \
+         base model (dashed), with the verdict's effects (solid).",
+        path,
+    )?;
+    road_and_cleaning(&mut p, d);
+    Ok(p)
+}
+
+/// The verdict, what was fitted with it, its warnings and evidence, and
+/// the confounded sets with the tests that separate them.
+fn verdict(p: &mut Page, d: &Diagnosis) {
     p.section("verdict", "Verdict")
         .paragraph("verdict", &d.verdict.statement());
     if !d.verdict.parameters().is_empty() {
@@ -105,34 +139,6 @@ pub fn page(
         let tests: Vec<String> = c.effects.iter().map(|e| words::signatures(&[*e])).collect();
         p.lines(&tests);
     }
-    if !d.notes.is_empty() {
-        let notes: Vec<String> = d.notes.iter().map(words::note).collect();
-        p.section("notes", "Notes on the inputs").lines(&notes);
-    }
-    let mut findings = vec![words::channels_trusted(&d.gap.noise)];
-    findings.extend(d.gap.findings.iter().map(words::finding));
-    let heading = words::gap_heading(&d.gap.findings);
-    let heading = heading[..1].to_uppercase() + &heading[1..];
-    p.section("gap", &heading).lines(&findings);
-    p.figure(
-        "gap-map",
-        gap_map,
-        "Held-out RMS over the noise floor per channel, against the time window, the \
-         lateral-acceleration level and the speed band; dashed: 3 × the noise floor.",
-        path,
-    )?;
-    base(&mut p, d);
-    ranking(&mut p, d);
-    shrinkage(&mut p, d);
-    p.figure(
-        "overlays",
-        overlays,
-        "Held-out replays of the runs with the largest base-model gap: measured (grey points), \
-         base model (dashed), with the verdict's effects (solid).",
-        path,
-    )?;
-    road_and_cleaning(&mut p, d);
-    Ok(p)
 }
 
 /// The base model and, when the axles were identified from the runs, their

@@ -226,51 +226,18 @@ pub fn trusted_channel_gap(
     simulated: &[f64],
     trusted: Option<f64>,
 ) -> ChannelGap {
-    let Record {
-        t,
-        steer,
-        ay,
-        speed,
-    } = *rec;
+    let (t, steer) = (rec.t, rec.steer);
     let n = t.len();
     let e: Vec<f64> = (0..n).map(|i| simulated[i] - measured[i]).collect();
     let unit = channel.unit();
     let win = window_samples(t, steer);
-    // The campaign's trusted uncertainty where it has one: a run's own
-    // scatter is a state estimator's smoothness or a hand-driven run's
-    // unquiet start, not what the channel can be trusted to.
-    let (noise_floor, noise_source) = match trusted {
-        Some(f) if f > 0.0 => (f, NoiseSource::Trusted),
-        _ => match scatter_by(&win[0].1, measured) {
-            (s, Scatter::BeforeInput) => (s, NoiseSource::BeforeInput),
-            (s, Scatter::SecondDifferences) => (s, NoiseSource::SecondDifferences),
-            (s, Scatter::NoWindow) => (s, NoiseSource::NoWindow),
-            (s, Scatter::FirstDifferences) => (s, NoiseSource::FirstDifferences),
-        },
-    };
+    let (noise_floor, noise_source) = floor_of(trusted, &win[0].1, measured);
     let rms = (e.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
     let (magnitude_error, phase_error, comprehensive_error) = sprague_geers(t, simulated, measured);
     let dt = (t[n - 1] - t[0]) / (n - 1).max(1) as f64;
-    let max_lag = ((1.0 / dt).round() as usize).min(n / 2);
-    let (lag, rho) = (0..=max_lag)
-        .map(|l| (l, correlation(&e, steer, l)))
-        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
-        .unwrap_or((0, 0.0));
-    // A run with no input to time from (a piece of a lap) is split by
-    // regime only: its "first 0.5 s of the input" would be a time picked
-    // by a steering correction.
-    let timed = timed_from_an_input(t, steer);
-    let pre: Vec<f64> = win[0].1.iter().map(|&i| e[i]).collect();
-    let levels = Levels::new(t, steer, ay, speed);
-    let windows: Vec<PartGap> = win
-        .into_iter()
-        .filter(|w| timed && !w.1.is_empty())
-        .map(|(name, idx)| part(name, &idx, &e, &levels))
-        .collect();
-    let regimes: Vec<PartGap> = regime_samples(ay, speed)
-        .into_iter()
-        .map(|(name, idx)| part(name, &idx, &e, &levels))
-        .collect();
+    let (lag, rho) = steer_correlation(&e, steer, dt);
+    let pre_samples = win[0].1.len();
+    let (windows, regimes) = parts_of(rec, win, &e);
     // Noise-free data (a simulation replayed) have a zero floor: a residual
     // below 1e-6 of the signal is numerical, not a gap.
     let signal = (measured.iter().map(|x| x * x).sum::<f64>() / n.max(1) as f64).sqrt();
@@ -282,7 +249,7 @@ pub fn trusted_channel_gap(
     // The floor's own sample count: the window before the input it is the
     // scatter of, else the whole run (its second differences); a stated
     // floor is known better, and counted so, conservatively.
-    let floor_samples = if pre.len() >= 10 { pre.len() } else { n };
+    let floor_samples = if pre_samples >= 10 { pre_samples } else { n };
     let window = scan::worst_window(t, &e, noise_floor, tau, floor_samples, resolved);
     let bias = scan::bias_test(&e, noise_floor, resolved);
     let time_shift = scan::time_shift(dt, measured, simulated);
@@ -330,6 +297,52 @@ pub fn trusted_channel_gap(
         gap_found,
         verdict,
     }
+}
+
+/// The error `e` in the record's time windows and its regimes. A run with
+/// no input to time from (a piece of a lap) is split by regime only: its
+/// "first 0.5 s of the input" would be a time picked by a steering
+/// correction.
+fn parts_of(rec: &Record, win: Vec<(Part, Vec<usize>)>, e: &[f64]) -> (Vec<PartGap>, Vec<PartGap>) {
+    let timed = timed_from_an_input(rec.t, rec.steer);
+    let levels = Levels::new(rec.t, rec.steer, rec.ay, rec.speed);
+    let windows = win
+        .into_iter()
+        .filter(|w| timed && !w.1.is_empty())
+        .map(|(name, idx)| part(name, &idx, e, &levels))
+        .collect();
+    let regimes = regime_samples(rec.ay, rec.speed)
+        .into_iter()
+        .map(|(name, idx)| part(name, &idx, e, &levels))
+        .collect();
+    (windows, regimes)
+}
+
+/// The noise floor and where it comes from: the campaign's trusted
+/// uncertainty where it has one (a run's own scatter is a state
+/// estimator's smoothness or a hand-driven run's unquiet start, not what
+/// the channel can be trusted to), else the scatter of `measured` before
+/// the input (`before`, its samples) or of its differences.
+fn floor_of(trusted: Option<f64>, before: &[usize], measured: &[f64]) -> (f64, NoiseSource) {
+    match trusted {
+        Some(f) if f > 0.0 => (f, NoiseSource::Trusted),
+        _ => match scatter_by(before, measured) {
+            (s, Scatter::BeforeInput) => (s, NoiseSource::BeforeInput),
+            (s, Scatter::SecondDifferences) => (s, NoiseSource::SecondDifferences),
+            (s, Scatter::NoWindow) => (s, NoiseSource::NoWindow),
+            (s, Scatter::FirstDifferences) => (s, NoiseSource::FirstDifferences),
+        },
+    }
+}
+
+/// The lag (samples, up to 1 s and half the run) at which the error `e`
+/// correlates most with the steer, and that correlation.
+fn steer_correlation(e: &[f64], steer: &[f64], dt: f64) -> (usize, f64) {
+    let max_lag = ((1.0 / dt).round() as usize).min(e.len() / 2);
+    (0..=max_lag)
+        .map(|l| (l, correlation(e, steer, l)))
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .unwrap_or((0, 0.0))
 }
 
 /// The lateral acceleration that defines a run's regimes: measured, or u·r

@@ -15,7 +15,9 @@
 //! file's against it (a logger set up differently for one session): such a
 //! file is named ([`FileAgainst`]), its pieces pooled (a piece of a long log
 //! where the model misses a transient may reach −0.8 alone; a file's sign
-//! convention is the same throughout).
+//! convention is the same throughout), and refused where its correlation
+//! is a sign slip's ([`SLIP`]): scored as logged, one run's negated β
+//! carried 70 % of the gap and sank a right verdict.
 
 use crate::diagnose::campaign::Campaign;
 use crate::diagnose::model::replay::Prepared;
@@ -90,20 +92,63 @@ pub(crate) fn check(c: &Campaign, base: &Augmented) -> Result<Vec<FileAgainst>, 
     let all = judged
         .iter()
         .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s));
+    let against = |file: Option<&str>| {
+        judged
+            .iter()
+            .filter(|(run, _)| file.is_none_or(|f| source_file(std::path::Path::new(run)) == f))
+            .filter_map(|(run, s)| Some((run.clone(), s.correlation()?, s.n)))
+            .filter(|(_, k, _)| *k < 0.0)
+            .collect()
+    };
     let pooled = match all.correlation() {
         Some(k) if k < AGAINST => k,
-        _ => return Ok(files_against(&judged)),
+        _ => {
+            let files = files_against(&judged);
+            return match files.iter().find(|f| is_slip(f)) {
+                Some(f) => Err(BetaAgainstModel {
+                    correlation: f.correlation,
+                    samples: f.samples,
+                    against: against(Some(&f.file)),
+                    judged: judged.len(),
+                    others: Some((f.file.clone(), others_of(&judged, &f.file))),
+                }),
+                None => Ok(files),
+            };
+        }
     };
     Err(BetaAgainstModel {
         correlation: pooled,
         samples: all.n,
-        against: judged
-            .iter()
-            .filter_map(|(run, s)| Some((run.clone(), s.correlation()?, s.n)))
-            .filter(|(_, k, _)| *k < 0.0)
-            .collect(),
+        against: against(None),
         judged: judged.len(),
+        others: None,
     })
+}
+
+/// Below this correlation, over at least [`SLIP_SAMPLES`] samples, one
+/// file's β against the model while the others' move with it is a sign
+/// slip, refused as the whole campaign's is: a stretch the model misses
+/// weakens a correlation, it does not reverse a whole file's to −0.9
+/// (the blind tester's run with β negated: −0.99 over 601 samples; the
+/// Putnam log's worst segment, −0.84, is a piece of one file).
+const SLIP: f64 = -0.9;
+
+/// The samples a file's correlation must rest on to be a [`SLIP`].
+const SLIP_SAMPLES: usize = 200;
+
+/// Whether file `f`, against the others, is a sign slip.
+fn is_slip(f: &FileAgainst) -> bool {
+    f.correlation < SLIP && f.samples >= SLIP_SAMPLES
+}
+
+/// The pooled correlation of the runs not from `file`.
+fn others_of(judged: &[(String, CentredSums)], file: &str) -> f64 {
+    judged
+        .iter()
+        .filter(|(run, _)| source_file(std::path::Path::new(run)) != file)
+        .fold(CentredSums::default(), |a, (_, s)| a.pooled(*s))
+        .correlation()
+        .unwrap_or(f64::NAN)
 }
 
 /// The files whose runs' pooled β correlation is below [`AGAINST`], where
@@ -169,5 +214,26 @@ mod tests {
             ("log.csv[3]".to_string(), sums(-1.0)),
         ];
         assert!(files_against(&judged).is_empty());
+    }
+
+    #[test]
+    fn a_file_against_the_others_is_a_sign_slip_only_when_nearly_reversed_over_many_samples() {
+        let f = |correlation, samples| FileAgainst {
+            file: "b.csv".into(),
+            correlation,
+            samples,
+        };
+        assert!(is_slip(&f(-0.99, 601)));
+        // A weaker reversal is a stretch the model misses: named, not refused.
+        assert!(!is_slip(&f(-0.84, 5000)));
+        // Too few samples to tell.
+        assert!(!is_slip(&f(-0.99, 150)));
+        let judged = vec![
+            ("a.csv".to_string(), sums(1.0)),
+            ("b.csv".to_string(), sums(-1.0)),
+            ("c.csv".to_string(), sums(2.0)),
+        ];
+        // Pooled: Σxy = 5 + 10, Σxx = 5 + 5, Σyy = 5 + 20: 15/√250.
+        assert!((others_of(&judged, "b.csv") - 3.0 / 10f64.sqrt()).abs() < 1e-12);
     }
 }

@@ -7,6 +7,7 @@
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
+mod bank_degrees;
 mod beta_sign;
 mod campaign_file;
 mod carried;
@@ -52,6 +53,7 @@ mod units;
 mod unstable_step;
 mod vehicle_limit;
 
+pub use bank_degrees::BankInDegrees;
 pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};

@@ -317,6 +317,9 @@ pub enum UnitSlip {
     /// A sideslip in percent of a radian (`lateral_slope.rs`).
     #[error(transparent)]
     BetaInPercent(#[from] super::lateral_slope::BetaInPercent),
+    /// A road bank in degrees (`bank_degrees.rs`).
+    #[error(transparent)]
+    BankInDegrees(#[from] super::bank_degrees::BankInDegrees),
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

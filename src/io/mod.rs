@@ -14,6 +14,8 @@ pub mod rig;
 pub(crate) mod rig_rows;
 mod rig_scale;
 mod run;
+mod run_bank;
+pub use run_bank::steep_bank;
 mod run_slope;
 mod run_units;
 pub use run_units::{unchecked_speed_unit, MAX_SPEED};

@@ -5,6 +5,7 @@
 //! column ([`super::run_units`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::run_bank::check_bank_degrees;
 use super::run_slope::{check_beta_percent, check_slope, Lateral};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
@@ -301,6 +302,10 @@ fn read_run_lacking(
             beta: beta.as_deref(),
             bank: bank.as_deref(),
         };
+        // Before the slope, which a bank in degrees distorts.
+        if let Some(bank) = &bank {
+            check_bank_degrees(path, &c, &lateral, bank)?;
+        }
         check_slope(path, &c, &lateral)?;
     }
     let run = MeasuredRun {

@@ -435,6 +435,7 @@ mod trips_s86_lead;
 mod trips_s86_met;
 mod trips_s86_perf;
 mod trips_s86_units;
+mod trips_s87_cal;
 mod trips_s87_gap;
 mod trips_s87_idn;
 mod trips_s87_lead;

@@ -101,7 +101,8 @@ pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
 use thiserror::Error;
 pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use units::{
-    PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
+    AyReversed, PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP,
+    MIN_RIG_SLIP,
 };
 pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
 pub use vehicle_limit::{VehicleLimit, MAX_STEERING_RATIO, MIN_STEERING_RATIO};

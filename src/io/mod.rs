@@ -14,6 +14,7 @@ pub mod rig;
 pub(crate) mod rig_rows;
 mod rig_scale;
 mod run;
+mod run_ay_sign;
 mod run_bank;
 pub use run_bank::steep_bank;
 mod run_slope;

@@ -5,6 +5,7 @@
 //! column ([`super::run_units`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::run_ay_sign::check_ay_sign;
 use super::run_bank::check_bank_degrees;
 use super::run_slope::{check_beta_percent, check_slope, Lateral};
 use super::run_units::{
@@ -274,6 +275,7 @@ fn read_run_lacking(
         let lateral = Lateral {
             t: &t,
             speed: &speed,
+            steer: &steer,
             yaw_rate: &yaw_rate,
             ay,
             beta: None,
@@ -297,11 +299,15 @@ fn read_run_lacking(
         let lateral = Lateral {
             t: &t,
             speed: &speed,
+            steer: &steer,
             yaw_rate: &yaw_rate,
             ay,
             beta: beta.as_deref(),
             bank: bank.as_deref(),
         };
+        // Before the bank and the slope, which an `ay` of the other sign
+        // distorts.
+        check_ay_sign(path, &c, &lateral)?;
         // Before the slope, which a bank in degrees distorts.
         if let Some(bank) = &bank {
             check_bank_degrees(path, &c, &lateral, bank)?;

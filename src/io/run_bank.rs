@@ -10,22 +10,40 @@
 //! calibration took g·sin(0.5) = 4.7 m/s² out of `ay` and called what was
 //! left (−4.4 m/s²) the accelerometer's offset.
 //!
-//! **Rule.** Over the run's [`BIN_SECONDS`] s means (parked and moving
+//! **Rule.** The offset `b_ay` is one number for the run; the bank's
+//! term need not be all of `g·sin θ`: the logged bank acts on the car with
+//! a share (`bank_profile_scale`, 0 to 2, `docs/src/conventions.md`), 0
+//! where the road under the car is not the logged one. That is the
+//! proving ground's control (`synth --programme oval` without
+//! `bank_profile`: the truth drives a flat track, `ay` = u·r, while the
+//! logger records the 20° banking) and a common log fault
+//! (`calibration/bank.rs`: "the logged bank does not act on the car"). Over
+//! the run's 0.5 s means ([`stretches`]: parked and moving
 //! alike; the β term where the run has `beta`), the residual `e = ay −
-//! u·r − d(u·β)/dt` is the bank's term plus the offset (and the tilt of
-//! the body's roll). Each reading of the column implies an offset, the
-//! median of `e − g·sin θ` with θ read in radians or in degrees. A reading
-//! in radians that implies an offset beyond
-//! [`PLAUSIBLE_AY_OFFSET`] (g·sin 6°, `calibration/bank.rs`) where the
-//! reading in degrees implies one within it is refused: "is the column in
-//! degrees?". Where the bank varies enough that its term would show in
-//! degrees (a standard deviation of g·θ·π/180 over the means of at least
-//! [`BANK_SPREAD`]), `e` is also fitted on g·θ as read with an intercept
-//! and the slope named in the refusal (π/180 in degrees, 1 in radians).
-//! A logged bank that the car does not feel (`calibration/bank.rs`'s "not
-//! acting") over most of the run implies the same offsets as one in
-//! degrees of a degree or less, and is refused with the same question: the
-//! two are one mean apart at most g·sin 1° = 0.17 m/s².
+//! u·r − d(u·β)/dt` is then `b_ay + s·g·sin θ` (and the tilt of the body's
+//! roll). Two cases:
+//!
+//! - **The bank varies**: the standard deviation of `g·sin θ` (θ read in
+//!   radians) over the means is [`BANK_VARIES`] or more, more than any
+//!   offset could stand for. The share and the offset are then two numbers
+//!   the means tell apart, and the diagnosis (`bank_profile`) and the
+//!   calibration's standstills (as logged, not acting, reversed) judge
+//!   them; the unit is not: a share of π/180 (the column in degrees) is
+//!   one of 0 within the fit's error, since the size check of `run_units`
+//!   leaves |θ| ≤ 1 as read, whose `g·θ·π/180` stays under 0.17 m/s². Not
+//!   judged here. (A median over the means, as this check once took, reads
+//!   the oval's banked turns, +3.2 m/s², as the offset.)
+//! - **The bank holds** (a spread below [`BANK_VARIES`]): the share and
+//!   the offset are one level, and the level judges. Each reading of the
+//!   column implies an offset, the median of `e − g·sin θ` with θ read in
+//!   radians or in degrees. A reading in radians that implies an offset
+//!   beyond [`PLAUSIBLE_AY_OFFSET`] (g·sin 6°, `calibration/bank.rs`) where
+//!   the reading in degrees implies one within it is refused: "is the
+//!   column in degrees?" A held bank the car does not feel implies the
+//!   same offsets as one in degrees of a degree or less (they are one mean
+//!   apart at most g·sin 1° = 0.17 m/s²), and the refusal says that too:
+//!   such a column is not this road's, and the calibration's straights
+//!   would take its `g·sin θ` out of `ay` as an offset.
 //!
 //! Not judged: fewer than [`MIN_BINS`] means, or an `ay` that holds one
 //! value throughout (a dead channel written as 0 tells no bank).
@@ -37,7 +55,7 @@
 //! Units: SI, rad.
 
 use super::columns::Columns;
-use super::run_slope::{Lateral, BIN_SECONDS, MIN_BINS};
+use super::run_slope::{stretches, Lateral, MIN_BINS};
 use crate::constants::G;
 use crate::error::{BankInDegrees, InputError, UnitSlip};
 use crate::measured::calibration::PLAUSIBLE_AY_OFFSET;
@@ -45,59 +63,45 @@ use crate::measured::clean::median;
 use crate::measured::MeasuredRun;
 use std::path::Path;
 
-/// The least standard deviation of g·θ·π/180 (the bank's term, were the
-/// column in degrees) over the means for the slope to be fitted, m/s².
-pub const BANK_SPREAD: f64 = 0.1;
+/// The least standard deviation of `g·sin θ` (θ read in radians) over the
+/// means at which the bank's share of `ay` is told apart from the offset,
+/// m/s²: [`PLAUSIBLE_AY_OFFSET`], beyond what any offset stands for.
+pub const BANK_VARIES: f64 = PLAUSIBLE_AY_OFFSET;
 
 /// The steepest road bank, rad (35°).
 pub const STEEPEST_BANK: f64 = 0.61;
 
-/// Each half-second mean's residual `e` and bank as read.
-fn residuals(c: &Lateral, bank: &[f64]) -> Vec<(f64, f64)> {
-    let n = c.t.len();
-    let v: Option<Vec<f64>> = c
-        .beta
-        .map(|b| b.iter().zip(c.speed).map(|(b, u)| u * b.tan()).collect());
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < n {
-        let mut j = i;
-        while j < n && c.t[j] - c.t[i] < BIN_SECONDS {
-            j += 1;
-        }
-        let m = (j - i) as f64;
-        let mean = |f: &dyn Fn(usize) -> f64| (i..j).map(f).sum::<f64>() / m;
-        let v_dot = match &v {
-            Some(v) if j - i >= 2 => (v[j - 1] - v[i]) / (c.t[j - 1] - c.t[i]),
-            Some(_) => f64::NAN,
-            None => 0.0,
-        };
-        let e = mean(&|k| c.ay[k] - c.speed[k] * c.yaw_rate[k]) - v_dot;
-        let b = mean(&|k| bank[k]);
-        if e.is_finite() && b.is_finite() {
-            out.push((e, b));
-        }
-        i = j;
-    }
-    out
+/// One mean's residual `e` (m/s²), its bank as read (rad) and `g·sin θ`
+/// with θ in radians (m/s²).
+struct Residual {
+    e: f64,
+    bank: f64,
+    term: f64,
 }
 
-/// The slope of `e` on g·θ with an intercept, where the bank's term in
-/// degrees would vary by [`BANK_SPREAD`] or more.
-fn bank_slope(bins: &[(f64, f64)]) -> Option<f64> {
+/// Each half-second mean's residual, where it is finite.
+fn residuals(c: &Lateral) -> Vec<Residual> {
+    stretches(c)
+        .into_iter()
+        .map(|s| Residual {
+            e: s.ay - s.speed_yaw - s.v_dot,
+            bank: s.bank,
+            term: s.bank_term,
+        })
+        .filter(|r| r.e.is_finite() && r.bank.is_finite() && r.term.is_finite())
+        .collect()
+}
+
+/// The standard deviation of `g·sin θ` over the means, m/s².
+fn spread(bins: &[Residual]) -> f64 {
     let n = bins.len() as f64;
-    let (me, mb) = bins
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (e, t)| (a + e / n, b + G * t / n));
-    let sxx: f64 = bins.iter().map(|(_, t)| (G * t - mb).powi(2)).sum();
-    let sxy: f64 = bins.iter().map(|(e, t)| (G * t - mb) * (e - me)).sum();
-    let spread = (sxx / n).sqrt() * std::f64::consts::PI / 180.0;
-    (spread >= BANK_SPREAD).then(|| sxy / sxx)
+    let mean = bins.iter().map(|r| r.term).sum::<f64>() / n;
+    (bins.iter().map(|r| (r.term - mean).powi(2)).sum::<f64>() / n).sqrt()
 }
 
-/// Refuses a `bank` whose term `ay` shows in degrees, not radians (the
-/// rule above), at the first sample where the two readings differ by more
-/// than [`PLAUSIBLE_AY_OFFSET`].
+/// Refuses a held `bank` whose term `ay` shows in degrees, not radians
+/// (the rule above), at the first sample where the two readings differ by
+/// more than [`PLAUSIBLE_AY_OFFSET`].
 pub(super) fn check_bank_degrees(
     path: &Path,
     cols: &Columns,
@@ -107,18 +111,21 @@ pub(super) fn check_bank_degrees(
     // An `ay` that holds one value (a dead or unlogged channel written as
     // 0) says nothing of the bank.
     let held = c.ay.iter().all(|a| *a == c.ay[0]);
-    let bins = residuals(c, bank);
+    let bins = residuals(c);
     if held || bins.len() < MIN_BINS {
         return Ok(());
     }
-    let implied = |scale: f64| {
-        let mut o: Vec<f64> = bins
-            .iter()
-            .map(|(e, b)| e - G * (b * scale).sin())
-            .collect();
-        median(&mut o)
-    };
-    let (as_radians, as_degrees) = (implied(1.0), implied(std::f64::consts::PI / 180.0));
+    // A varying bank's share is measured, not assumed (the rule above).
+    let spread = spread(&bins);
+    if spread >= BANK_VARIES {
+        return Ok(());
+    }
+    let mut as_radians: Vec<f64> = bins.iter().map(|r| r.e - r.term).collect();
+    let mut as_degrees: Vec<f64> = bins
+        .iter()
+        .map(|r| r.e - G * r.bank.to_radians().sin())
+        .collect();
+    let (as_radians, as_degrees) = (median(&mut as_radians), median(&mut as_degrees));
     if as_radians.abs() <= PLAUSIBLE_AY_OFFSET || as_degrees.abs() > PLAUSIBLE_AY_OFFSET {
         return Ok(());
     }
@@ -131,7 +138,8 @@ pub(super) fn check_bank_degrees(
         as_radians,
         as_degrees,
         plausible: PLAUSIBLE_AY_OFFSET,
-        slope: bank_slope(&bins),
+        spread,
+        varies: BANK_VARIES,
         bins: bins.len(),
         with_beta: c.beta.is_some(),
     };

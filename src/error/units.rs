@@ -331,11 +331,13 @@ pub enum UnitSlip {
 /// positive turning left: a left turn pushes the car left). Judged by
 /// `io/run_ay_sign.rs`. Units: m/s².
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
-#[error("column `ay`: {} where speed × yaw_rate is {} m/s²: over {bins} half-second means of the run turning at speed (R² {}), `ay` regressed on speed × yaw_rate{}{} has a slope of {}, where a car's is about +1 (between {} and {}): `ay` is positive to the left and `yaw_rate` turning left (ISO 8855, FORMATS.md), and a car turning left is pushed to the left; `steer` turns with `yaw_rate`, so this `ay` is logged in the other sign (an accelerometer mounted the other way round, or a logger's y axis to the right): negate the column", Num(*value), fixed(*expected, 2), fixed(*r2, 3), if *with_beta { " + d(speed·beta)/dt" } else { "" }, bank_words(*with_bank), fixed(*slope, 3), Num(range.0), Num(range.1))]
+#[error("column `ay`: {} where speed × yaw_rate{} is {} m/s²: over {bins} half-second means of the run turning at speed (R² {}), `ay` regressed on speed × yaw_rate{}{} has a slope of {}, where a car's is about +1 (between {} and {}): `ay` is positive to the left and `yaw_rate` turning left (ISO 8855, FORMATS.md), and a car turning left is pushed to the left; `steer` turns with `yaw_rate`, so this `ay` is logged in the other sign (an accelerometer mounted the other way round, or a logger's y axis to the right): negate the column", Num(*value), if *with_bank == Some(true) { " + g·sin(bank)" } else { "" }, fixed(*expected, 2), fixed(*r2, 3), if *with_beta { " + d(speed·beta)/dt" } else { "" }, bank_words(*with_bank), fixed(*slope, 3), Num(range.0), Num(range.1))]
 pub struct AyReversed {
-    /// `ay` at the row named (the first turning mean's first), as read.
+    /// `ay` at the row named (the first of the turning mean whose
+    /// regressor is largest), as read.
     pub value: f64,
-    /// speed × yaw rate at that row, m/s².
+    /// speed × yaw rate (+ g·sin(bank) where the fit takes it) at that
+    /// row, m/s².
     pub expected: f64,
     /// The fitted slope of `ay` on the kinematic lateral acceleration
     /// (through the origin).

@@ -22,11 +22,12 @@
 //!   [`SI_RANGE`], with R² at least [`MIN_R2`] says `ay` and `u·r` oppose;
 //!   where the steer turns with the yaw rate over those means (Σ δ·u·r >
 //!   0), `ay` is the one reversed, and the run is refused at the `ay`
-//!   column of the first turning mean's first sample, with the slope. (A
-//!   steer turning with `ay`, against the yaw rate, points at the yaw rate
-//!   or the steer: the campaign's steer check names that.) A run in ISO
-//!   signs fits near +1 (0.6–1.6 with an unmeasured bank or the body's
-//!   roll), so the bands are 1.2 apart.
+//!   column of the first sample of the turning mean whose regressor is
+//!   largest (the clearest), with the slope. (A steer turning with `ay`,
+//!   against the yaw rate, points at the yaw rate or the steer: the
+//!   campaign's steer check names that.) A run in ISO signs fits near +1
+//!   (0.6–1.6 with an unmeasured bank or the body's roll), so the bands
+//!   are 1.2 apart.
 //!
 //! Not judged: fewer than [`MIN_BINS`] turning means, or an R² below
 //! [`MIN_R2`] (left to the diagnosis, as the slope check leaves them).
@@ -35,6 +36,7 @@
 
 use super::columns::Columns;
 use super::run_slope::{fit, stretches, Lateral, Stretch, MIN_BINS, MIN_R2, SI_RANGE};
+use crate::constants::G;
 use crate::error::{AyReversed, InputError, UnitSlip};
 use std::path::Path;
 
@@ -81,10 +83,16 @@ pub(super) fn ay_reversed(c: &Lateral) -> Option<(usize, AyReversed)> {
     if bins.iter().map(|s| s.steer * s.speed_yaw).sum::<f64>() <= 0.0 {
         return None;
     }
-    let row = bins[0].first;
+    // The clearest mean: the largest regressor.
+    let regressor = |s: &Stretch| s.speed_yaw + s.v_dot + share * s.bank_term;
+    let clearest = bins
+        .iter()
+        .max_by(|a, b| regressor(a).abs().total_cmp(&regressor(b).abs()))?;
+    let row = clearest.first;
+    let bank_term = c.bank.map_or(0.0, |b| share * G * b[row].sin());
     let slip = AyReversed {
         value: c.ay[row],
-        expected: c.speed[row] * c.yaw_rate[row],
+        expected: c.speed[row] * c.yaw_rate[row] + bank_term,
         slope,
         r2,
         bins: bins.len(),

@@ -439,6 +439,7 @@ mod trips_s87_cal;
 mod trips_s87_gap;
 mod trips_s87_idn;
 mod trips_s87_lead;
+mod trips_s88_cal;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -2,7 +2,8 @@
 //! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs. A
 //! channel whose size says it is in another unit (a time in ms, a steer in
 //! degrees, a yaw rate in deg/s, `ay` in g or ft/s², a speed in km/h) is refused at its
-//! column ([`super::run_units`]).
+//! column ([`super::run_units`]), as is an `ay` of the other sign
+//! ([`super::run_ay_sign`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
 use super::run_ay_sign::check_ay_sign;

@@ -34,6 +34,10 @@
 //! factor: a dead sensor, another axis; the cleaning and the diagnosis
 //! judge those). A slope outside every band (0.35–0.37, 0.54–0.6, …) is
 //! not a unit and is left to them too.
+//!
+//! The means themselves ([`stretches`]) are the ones every lateral check
+//! of a run reads: this slope, the sign of `ay` (`run_ay_sign.rs`) and the
+//! unit of `bank` (`run_bank.rs`).
 
 use super::columns::Columns;
 use crate::constants::G;

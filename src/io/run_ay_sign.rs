@@ -118,7 +118,7 @@ mod tests {
     /// A run at 20 m/s weaving with r = 0.2·sin(t) rad/s, `ay` = k·u·r,
     /// on a bank of `bank` rad in the turns that the car feels with
     /// `felt` of it; 10 Hz.
-    fn run(k: f64, bank: f64, felt: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>) {
+    fn run(k: f64, bank: f64, felt: f64) -> [Vec<f64>; 5] {
         let t: Vec<f64> = (0..600).map(|i| i as f64 * 0.1).collect();
         let u = vec![20.0; t.len()];
         let r: Vec<f64> = t.iter().map(|t| 0.2 * t.sin()).collect();
@@ -131,7 +131,7 @@ mod tests {
             .zip(&b)
             .map(|(r, b)| k * (20.0 * r + felt * crate::constants::G * b.sin()))
             .collect();
-        (t, u, r, ay, b)
+        [t, u, r, ay, b]
     }
 
     fn judged(k: f64, bank: f64, felt: f64, logged: bool) -> Option<AyReversed> {
@@ -141,7 +141,7 @@ mod tests {
     /// [`judged`] with the yaw rate logged times `yaw` (the steer follows
     /// the car's own).
     fn judged_yaw(k: f64, yaw: f64, bank: f64, felt: f64, logged: bool) -> Option<AyReversed> {
-        let (t, u, r, ay, b) = run(k, bank, felt);
+        let [t, u, r, ay, b] = run(k, bank, felt);
         let steer: Vec<f64> = r.iter().map(|r| 0.15 * r).collect();
         let r: Vec<f64> = r.iter().map(|r| yaw * r).collect();
         let c = Lateral {

@@ -383,6 +383,11 @@ fn notes_of(
     notes.extend(grid_note(ctx, c.settings.step));
     notes.extend(noise_unmeasured(c, noise).map(|channel| Note::UncertaintyUnused { channel }));
     notes.extend(noise.iter().filter_map(below_scatter));
+    notes.extend(
+        noise
+            .iter()
+            .filter_map(|n| n.stated_excess.map(Note::UncertaintyAboveOwn)),
+    );
     notes
 }
 
@@ -486,7 +491,7 @@ fn run(
     // says the verdict changed nothing).
     let parts = shrinkage.clone();
     let Concluded {
-        verdict,
+        mut verdict,
         confounded,
         swapped,
     } = conclude(
@@ -497,6 +502,11 @@ fn run(
         (&base, significant),
         &shrinkage,
     );
+    // A gap within noise that only an uncertainty stated far above its
+    // channel's scatter makes so says it.
+    if let Verdict::NoSignificantGap(n) = &mut verdict {
+        n.resting_on = noise.iter().filter_map(|n| n.stated_excess).collect();
+    }
     let overlays = overlays(&ctx, &base_obs, &after_obs);
     let mut findings = gap_findings(c, &run_gaps, &parts, significant, j0, jn);
     findings.extend(dominant(&base.heldout, &scales));

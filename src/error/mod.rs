@@ -7,6 +7,7 @@
 //! ([`MetricsError`]), the diagnosis's errors ([`DiagnosisError`]) and the
 //! output errors ([`OutputError`]). Every message is complete on its own.
 
+mod bank_degrees;
 mod beta_sign;
 mod campaign_file;
 mod carried;
@@ -52,6 +53,7 @@ mod units;
 mod unstable_step;
 mod vehicle_limit;
 
+pub use bank_degrees::BankInDegrees;
 pub use beta_sign::BetaAgainstModel;
 pub(crate) use campaign_file::folder_of;
 pub use campaign_file::{CampaignFileProblem, NotCampaignKind};
@@ -99,7 +101,8 @@ pub use sweep_limit::{SweepLimit, MAX_BOX_SIDESLIP};
 use thiserror::Error;
 pub use too_many_rows::{TooManyRows, HISTORY_ROW_BYTES};
 pub use units::{
-    PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP, MIN_RIG_SLIP,
+    AyReversed, PressureMeant, SpeedUnit, UnitSlip, MAX_RIG_ARM, MAX_RIG_FRICTION, MIN_RIG_GRIP,
+    MIN_RIG_SLIP,
 };
 pub use unstable_step::{UnstableStep, RK4_STABILITY_LIMIT};
 pub use vehicle_limit::{VehicleLimit, MAX_STEERING_RATIO, MIN_STEERING_RATIO};

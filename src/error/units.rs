@@ -317,6 +317,52 @@ pub enum UnitSlip {
     /// A sideslip in percent of a radian (`lateral_slope.rs`).
     #[error(transparent)]
     BetaInPercent(#[from] super::lateral_slope::BetaInPercent),
+    /// A road bank in degrees (`bank_degrees.rs`).
+    #[error(transparent)]
+    BankInDegrees(#[from] super::bank_degrees::BankInDegrees),
+    /// A lateral acceleration logged in the other sign ([`AyReversed`]).
+    #[error(transparent)]
+    AyReversed(#[from] AyReversed),
+}
+
+/// A run's `ay` logged in the other sign: over its turning half-second
+/// means `ay` is about −1 times the kinematic lateral acceleration `u·r +
+/// d(u·β)/dt (+ g·sin bank)`, where ISO 8855 gives +1 (y to the left, yaw
+/// positive turning left: a left turn pushes the car left). Judged by
+/// `io/run_ay_sign.rs`. Units: m/s².
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error("column `ay`: {} where speed × yaw_rate{} is {} m/s²: over {bins} half-second means of the run turning at speed (R² {}), `ay` regressed on speed × yaw_rate{}{} has a slope of {}, where a car's is about +1 (between {} and {}): `ay` is positive to the left and `yaw_rate` turning left (ISO 8855, FORMATS.md), and a car turning left is pushed to the left; `steer` turns with `yaw_rate`, so this `ay` is logged in the other sign (an accelerometer mounted the other way round, or a logger's y axis to the right): negate the column", Num(*value), if *with_bank == Some(true) { " + g·sin(bank)" } else { "" }, fixed(*expected, 2), fixed(*r2, 3), if *with_beta { " + d(speed·beta)/dt" } else { "" }, bank_words(*with_bank), fixed(*slope, 3), Num(range.0), Num(range.1))]
+pub struct AyReversed {
+    /// `ay` at the row named (the first of the turning mean whose
+    /// regressor is largest), as read.
+    pub value: f64,
+    /// speed × yaw rate (+ g·sin(bank) where the fit takes it) at that
+    /// row, m/s².
+    pub expected: f64,
+    /// The fitted slope of `ay` on the kinematic lateral acceleration
+    /// (through the origin).
+    pub slope: f64,
+    /// The fit's R² (through the origin).
+    pub r2: f64,
+    /// The turning means fitted.
+    pub bins: usize,
+    /// Whether the d(u·β)/dt term was in the regressor (a `beta` column).
+    pub with_beta: bool,
+    /// With a `bank` column, whether its g·sin(bank) was in the regressor
+    /// (the better fit: the car feels the logged bank) or left out (it
+    /// does not); None without one.
+    pub with_bank: Option<bool>,
+    /// The slopes of a run in SI units and ISO signs.
+    pub range: (f64, f64),
+}
+
+/// The bank's part of the regressor's words.
+fn bank_words(with_bank: Option<bool>) -> &'static str {
+    match with_bank {
+        Some(true) => " + g·sin(bank)",
+        Some(false) => " (the logged bank left out: `ay` fits better without it)",
+        None => "",
+    }
 }
 
 /// The slip a sweep of `column` reaches, with its unit: a slip angle in

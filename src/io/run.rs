@@ -2,9 +2,12 @@
 //! ay, beta, roll, bank, ax optional. SI units, radians, ISO 8855 signs. A
 //! channel whose size says it is in another unit (a time in ms, a steer in
 //! degrees, a yaw rate in deg/s, `ay` in g or ft/s², a speed in km/h) is refused at its
-//! column ([`super::run_units`]).
+//! column ([`super::run_units`]), as is an `ay` of the other sign
+//! ([`super::run_ay_sign`]).
 
 use super::columns::{read_columns_with_slips, Layout, Slip};
+use super::run_ay_sign::check_ay_sign;
+use super::run_bank::check_bank_degrees;
 use super::run_slope::{check_beta_percent, check_slope, Lateral};
 use super::run_units::{
     beyond, check_ay, check_beta, check_beta_declared, check_roll_or_bank, check_speed,
@@ -273,6 +276,7 @@ fn read_run_lacking(
         let lateral = Lateral {
             t: &t,
             speed: &speed,
+            steer: &steer,
             yaw_rate: &yaw_rate,
             ay,
             beta: None,
@@ -296,11 +300,19 @@ fn read_run_lacking(
         let lateral = Lateral {
             t: &t,
             speed: &speed,
+            steer: &steer,
             yaw_rate: &yaw_rate,
             ay,
             beta: beta.as_deref(),
             bank: bank.as_deref(),
         };
+        // Before the bank and the slope, which an `ay` of the other sign
+        // distorts.
+        check_ay_sign(path, &c, &lateral)?;
+        // Before the slope, which a bank in degrees distorts.
+        if let Some(bank) = &bank {
+            check_bank_degrees(path, &c, &lateral, bank)?;
+        }
         check_slope(path, &c, &lateral)?;
     }
     let run = MeasuredRun {

@@ -34,6 +34,10 @@
 //! factor: a dead sensor, another axis; the cleaning and the diagnosis
 //! judge those). A slope outside every band (0.35–0.37, 0.54–0.6, …) is
 //! not a unit and is left to them too.
+//!
+//! The means themselves ([`stretches`]) are the ones every lateral check
+//! of a run reads: this slope, the sign of `ay` (`run_ay_sign.rs`) and the
+//! unit of `bank` (`run_bank.rs`).
 
 use super::columns::Columns;
 use crate::constants::G;
@@ -79,6 +83,8 @@ pub(super) struct Lateral<'a> {
     pub t: &'a [f64],
     /// Forward speed, m/s.
     pub speed: &'a [f64],
+    /// Road-wheel steer, rad.
+    pub steer: &'a [f64],
     /// Yaw rate, rad/s.
     pub yaw_rate: &'a [f64],
     /// Lateral acceleration, m/s².
@@ -89,9 +95,85 @@ pub(super) struct Lateral<'a> {
     pub bank: Option<&'a [f64]>,
 }
 
-/// One stretch's means: the kinematic lateral acceleration, `ay`, the
-/// yaw rate, the kinematic lateral acceleration with `ay` read as the yaw
-/// rate, and its first sample.
+/// One [`BIN_SECONDS`] s stretch's means, the one averaging every
+/// lateral check of a run reads ([`stretches`]): NaN samples are left out
+/// of each mean.
+pub(super) struct Stretch {
+    /// The stretch's first sample.
+    pub first: usize,
+    /// Forward speed, m/s.
+    pub speed: f64,
+    /// Road-wheel steer, rad.
+    pub steer: f64,
+    /// speed × yaw rate, m/s².
+    pub speed_yaw: f64,
+    /// d(u·β)/dt, the change of u·tan β over the stretch over its
+    /// duration, m/s²: 0 without `beta`, NaN on a one-sample stretch.
+    pub v_dot: f64,
+    /// Lateral acceleration as read, m/s².
+    pub ay: f64,
+    /// Yaw rate, rad/s.
+    pub yaw_rate: f64,
+    /// speed × `ay` as read (`ay` taken for the yaw rate), m²/s³.
+    pub speed_ay: f64,
+    /// Road bank as read, rad (NaN without `bank`).
+    pub bank: f64,
+    /// g·sin(bank) with the bank read in radians, m/s² (0 without `bank`).
+    pub bank_term: f64,
+}
+
+impl Stretch {
+    /// Whether the car turns at speed here: [`MOVING`] m/s or more and
+    /// |u·r| at least [`TURNING`] m/s².
+    pub fn turning(&self) -> bool {
+        self.speed >= MOVING && self.speed_yaw.abs() >= TURNING
+    }
+}
+
+/// The run's consecutive [`BIN_SECONDS`] s stretches, parked and moving
+/// alike, each with its means.
+pub(super) fn stretches(c: &Lateral) -> Vec<Stretch> {
+    let n = c.t.len();
+    let v: Option<Vec<f64>> = c
+        .beta
+        .map(|b| b.iter().zip(c.speed).map(|(b, u)| u * b.tan()).collect());
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < n {
+        let mut j = i;
+        while j < n && c.t[j] - c.t[i] < BIN_SECONDS {
+            j += 1;
+        }
+        let mean = |f: &dyn Fn(usize) -> f64| {
+            let kept: Vec<f64> = (i..j).map(f).filter(|x| x.is_finite()).collect();
+            kept.iter().sum::<f64>() / kept.len() as f64
+        };
+        // The mean of d(u·β)/dt over the stretch: its change over it.
+        let v_dot = match &v {
+            Some(v) if j - i >= 2 => (v[j - 1] - v[i]) / (c.t[j - 1] - c.t[i]),
+            Some(_) => f64::NAN,
+            None => 0.0,
+        };
+        out.push(Stretch {
+            first: i,
+            speed: mean(&|k| c.speed[k]),
+            steer: mean(&|k| c.steer[k]),
+            speed_yaw: mean(&|k| c.speed[k] * c.yaw_rate[k]),
+            v_dot,
+            ay: mean(&|k| c.ay[k]),
+            yaw_rate: mean(&|k| c.yaw_rate[k]),
+            speed_ay: mean(&|k| c.speed[k] * c.ay[k]),
+            bank: c.bank.map_or(f64::NAN, |b| mean(&|k| b[k])),
+            bank_term: c.bank.map_or(0.0, |b| mean(&|k| G * b[k].sin())),
+        });
+        i = j;
+    }
+    out
+}
+
+/// One turning stretch's means for the slope: the kinematic lateral
+/// acceleration, `ay`, the yaw rate, the kinematic lateral acceleration
+/// with `ay` read as the yaw rate, and its first sample.
 struct Bin {
     kinematic: f64,
     ay: f64,
@@ -114,46 +196,20 @@ pub(super) fn fit(pairs: impl Iterator<Item = (f64, f64)>) -> (f64, f64) {
     (k, 1.0 - sse / yy)
 }
 
-/// The turning stretches' means; NaN samples are left out of a mean.
+/// The turning stretches' means for the slope.
 fn bins(c: &Lateral) -> Vec<Bin> {
-    let n = c.t.len();
-    let v: Option<Vec<f64>> = c
-        .beta
-        .map(|b| b.iter().zip(c.speed).map(|(b, u)| u * b.tan()).collect());
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < n {
-        let mut j = i;
-        while j < n && c.t[j] - c.t[i] < BIN_SECONDS {
-            j += 1;
-        }
-        let mean = |f: &dyn Fn(usize) -> f64| {
-            let kept: Vec<f64> = (i..j).map(f).filter(|x| x.is_finite()).collect();
-            kept.iter().sum::<f64>() / kept.len() as f64
-        };
-        let u = mean(&|k| c.speed[k]);
-        let ur = mean(&|k| c.speed[k] * c.yaw_rate[k]);
-        // The mean of d(u·β)/dt over the stretch: its change over it.
-        let v_dot = match &v {
-            Some(v) if j - i >= 2 => (v[j - 1] - v[i]) / (c.t[j - 1] - c.t[i]),
-            Some(_) => f64::NAN,
-            None => 0.0,
-        };
-        let bank = c.bank.map_or(0.0, |b| mean(&|k| G * b[k].sin()));
-        let bin = Bin {
-            kinematic: ur + v_dot + bank,
-            ay: mean(&|k| c.ay[k]),
-            yaw_rate: mean(&|k| c.yaw_rate[k]),
-            speed_ay: mean(&|k| c.speed[k] * c.ay[k]) + v_dot + bank,
-            first: i,
-        };
-        let finite = bin.kinematic.is_finite() && bin.ay.is_finite() && bin.speed_ay.is_finite();
-        if u >= MOVING && ur.abs() >= TURNING && finite {
-            out.push(bin);
-        }
-        i = j;
-    }
-    out
+    stretches(c)
+        .into_iter()
+        .filter(Stretch::turning)
+        .map(|s| Bin {
+            kinematic: s.speed_yaw + s.v_dot + s.bank_term,
+            ay: s.ay,
+            yaw_rate: s.yaw_rate,
+            speed_ay: s.speed_ay + s.v_dot + s.bank_term,
+            first: s.first,
+        })
+        .filter(|b| b.kinematic.is_finite() && b.ay.is_finite() && b.speed_ay.is_finite())
+        .collect()
 }
 
 /// The slope's verdict, None where it is not judged or names no unit.

@@ -153,6 +153,67 @@ pub fn beyond_signal(c: Channel, stated: f64, signal: f64) -> bool {
 /// on short runs.
 pub const SCATTER_EXCESS: f64 = 3.0;
 
+/// How many times what a channel shows of itself ([`own_uncertainty`]) a
+/// stated uncertainty may be before the report says so: a floor that high
+/// makes a gap the data would show insignificant by the statement alone
+/// (a steady yaw-rate gain 1.8 dB off read "no significant gap" beside a
+/// yaw-rate uncertainty stated 16 times the gyro's scatter). The user may
+/// state it (an estimator's error is at low frequency, where no scatter
+/// sees it); the report says it.
+pub const STATED_EXCESS: f64 = 10.0;
+
+/// What channel `c` shows of its own uncertainty: its high-frequency
+/// `scatter` where that reads as a sensor's, an estimated output's
+/// uncertainty ([`ESTIMATED`]) where it reads as an estimated output (a
+/// smooth channel's scatter says nothing of its error).
+pub fn own_uncertainty(c: Channel, scatter: f64) -> f64 {
+    if reads_as_estimated(c, scatter) {
+        ESTIMATED[c.index()]
+    } else {
+        scatter
+    }
+}
+
+/// A stated uncertainty more than [`STATED_EXCESS`] times what its channel
+/// shows of itself.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StatedExcess {
+    /// The channel.
+    pub channel: Channel,
+    /// The uncertainty stated under `[channels]`, the channel's unit.
+    pub stated: f64,
+    /// What the channel shows ([`own_uncertainty`]), the channel's unit.
+    pub own: f64,
+    /// Whether `own` is an estimated output's uncertainty (the channel is
+    /// smoother than any sensor), not its scatter.
+    pub estimated: bool,
+    /// `stated / own`.
+    pub times: f64,
+}
+
+/// The excess of an uncertainty `stated` for channel `c` (of `source`)
+/// over what its `scatter` shows, where beyond [`STATED_EXCESS`]; None for
+/// an unstated channel or one without a scatter.
+pub fn stated_excess(
+    c: Channel,
+    source: ScaleSource,
+    stated: f64,
+    scatter: f64,
+) -> Option<StatedExcess> {
+    if source != ScaleSource::Stated || !scatter.is_finite() {
+        return None;
+    }
+    let own = own_uncertainty(c, scatter);
+    let times = stated / own;
+    (own > 0.0 && times > STATED_EXCESS).then_some(StatedExcess {
+        channel: c,
+        stated,
+        own,
+        estimated: reads_as_estimated(c, scatter),
+        times,
+    })
+}
+
 /// The uncertainty and scale of channel `c` (module doc) from what the
 /// user `stated`, its measured `scatter` and its RMS `signal`.
 pub fn channel_scale(
@@ -266,6 +327,26 @@ mod tests {
         assert!(near_the_line(yaw, ScaleSource::SensorFloor, 0.0017, 2).is_some());
         // A stated uncertainty is the user's: never near any line.
         assert_eq!(near_the_line(yaw, ScaleSource::Stated, 0.0010, 5), None);
+    }
+
+    #[test]
+    fn a_stated_uncertainty_far_above_the_channels_own_is_an_excess() {
+        let yaw = Channel::YawRate;
+        // A gyro scattering 0.0025 rad/s, stated 0.04: 16 times.
+        let e = stated_excess(yaw, ScaleSource::Stated, 0.04, 0.0025).unwrap();
+        assert!((e.times - 16.0).abs() < 1e-12 && !e.estimated, "{e:?}");
+        // Ten times is within the rule; unstated is never an excess.
+        assert_eq!(stated_excess(yaw, ScaleSource::Stated, 0.025, 0.0025), None);
+        assert_eq!(stated_excess(yaw, ScaleSource::Scatter, 0.04, 0.0025), None);
+        // An estimator's smooth sideslip (scatter 0.0002 rad) stated at
+        // 0.005 rad, an estimate's uncertainty: no excess, though it is 25
+        // times the scatter; 0.06 rad is 12 times an estimate's.
+        assert_eq!(
+            stated_excess(Channel::Beta, ScaleSource::Stated, 0.005, 0.0002),
+            None
+        );
+        let e = stated_excess(Channel::Beta, ScaleSource::Stated, 0.06, 0.0002).unwrap();
+        assert!(e.estimated && (e.times - 12.0).abs() < 1e-12, "{e:?}");
     }
 
     #[test]

@@ -36,6 +36,7 @@ enum Details<'a> {
     },
     NoSignificantGap {
         threshold: f64,
+        resting_on: &'a [crate::diagnose::model::scale::StatedExcess],
     },
     NotIdentifiable {
         no_tyre: &'a [NoTyre],
@@ -88,6 +89,7 @@ impl Serialize for Verdict {
                 n.noise_level,
                 Details::NoSignificantGap {
                     threshold: n.threshold,
+                    resting_on: &n.resting_on,
                 },
             ),
             Verdict::NotIdentifiable(n) => (

@@ -163,6 +163,11 @@ pub struct ChannelNoise {
     /// line between a sensor and an estimated output than the median's
     /// ([`crate::diagnose::model::scale::near_the_line`]).
     pub other_side: usize,
+    /// A stated uncertainty more than
+    /// [`crate::diagnose::model::scale::STATED_EXCESS`] times what the
+    /// channel shows of itself: a gap below it is insignificant by the
+    /// statement, not by the data.
+    pub stated_excess: Option<crate::diagnose::model::scale::StatedExcess>,
 }
 
 /// The gap of one run with the base model.

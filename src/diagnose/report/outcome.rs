@@ -170,6 +170,10 @@ pub struct NoSignificantGap {
     pub noise_level: f64,
     /// The multiple of the noise level a gap must exceed.
     pub threshold: f64,
+    /// The channels whose uncertainty, stated under `[channels]`, is more
+    /// than [`crate::diagnose::model::scale::STATED_EXCESS`] times what
+    /// they show of themselves: the verdict rests on those statements.
+    pub resting_on: Vec<crate::diagnose::model::scale::StatedExcess>,
 }
 
 /// A base model that is no tyre, and no candidate that makes it one.

@@ -12,7 +12,7 @@
 
 use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::model::channels::Channel;
-use crate::diagnose::model::scale::{channel_scale, reads_as_estimated, signal_rms};
+use crate::diagnose::model::scale::{channel_scale, reads_as_estimated, signal_rms, stated_excess};
 use crate::diagnose::report::summary::run_scatter;
 use crate::diagnose::report::ChannelNoise;
 use crate::measured::clean::median;
@@ -66,6 +66,7 @@ pub fn channel_trust(runs: &[MeasuredRun], stated: &StatedUncertainty) -> Trust 
                     scatter: trust.scatter,
                     runs,
                     other_side,
+                    stated_excess: stated_excess(ch, trust.source, trust.uncertainty, scatter),
                 }
             })
         })

@@ -86,10 +86,7 @@ pub fn statement(v: &Verdict) -> String {
                 _ => head,
             }
         }
-        Verdict::NoSignificantGap(n) => format!(
-            "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
-            n.heldout_error, n.threshold, n.noise_level
-        ),
+        Verdict::NoSignificantGap(n) => trust::no_gap(n),
         Verdict::NotIdentifiable(n) => not_identifiable(n),
         Verdict::OutsideLibrary(o) => outside(o),
     }
@@ -383,6 +380,7 @@ pub fn note(n: &Note) -> String {
             "[channels] {}: no run measures this channel, so its stated uncertainty is not used",
             channel.name()
         ),
+        Note::UncertaintyAboveOwn(e) => trust::excess_note(e),
         Note::UncertaintyBelowScatter {
             channel,
             stated,

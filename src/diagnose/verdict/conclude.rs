@@ -83,6 +83,8 @@ pub(crate) fn verdict(
             heldout_error,
             noise_level,
             threshold: SIGNIFICANT,
+            // Named by the pipeline, which has the channels' trust.
+            resting_on: Vec::new(),
         }),
         (VerdictKind::NotIdentifiable, _) => Verdict::NotIdentifiable(NotIdentifiable {
             heldout_error,

@@ -283,6 +283,7 @@ pub(super) fn read_runs(
         }
         notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
         notes.extend(crate::io::unchecked_speed_unit(&run));
+        notes.extend(crate::io::steep_bank(&run));
         notes.extend(super::ax_check::ax_note(&run));
         inputs.push(p.clone());
         let name = run.path.display().to_string();

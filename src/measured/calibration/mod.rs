@@ -39,7 +39,12 @@
 //! running median has a standard deviation above
 //! [`STRAIGHT_YAW_VARIATION`] (weaving) or whose speed changes by more than
 //! [`STRAIGHT_SPEED_VARIATION`] of its mean is refused, and listed with the
-//! reason.
+//! reason. So is a candidate whose raw steer or yaw rate swings: the
+//! running medians hide a swing as fast as their window (a 1 Hz slalom's
+//! 1 s medians are near 0), so the raw samples' RMS about the straight-line
+//! steer and about the yaw reference, with the channel's white noise
+//! (estimated from successive differences) taken out in quadrature, must
+//! stay within the same [`STRAIGHT_STEER`] and [`STRAIGHT_YAW_RATE`].
 //!
 //! **Means.** Per span and channel: masked samples and glitches (beyond
 //! five robust deviations of the span's median) left out, the mean of the

@@ -150,6 +150,23 @@ pub enum Rejection {
         /// The limit, rad/s.
         limit: f64,
     },
+    /// The steer itself swings (its running median does not: a slalom as
+    /// fast as the median's window).
+    SteerSwings {
+        /// RMS of the raw steer about the straight-line steer, its noise
+        /// taken out, rad.
+        rms: f64,
+        /// The limit (the straight's steer band), rad.
+        limit: f64,
+    },
+    /// The yaw rate itself swings.
+    YawRateSwings {
+        /// RMS of the raw yaw rate about the standstills' offset, its noise
+        /// taken out, rad/s.
+        rms: f64,
+        /// The limit (the straight's yaw-rate band), rad/s.
+        limit: f64,
+    },
     /// The speed changes.
     SpeedVaries {
         /// (max − min)/mean of its running median.
@@ -166,6 +183,14 @@ impl Rejection {
             Rejection::YawRateVaries { std, limit } => {
                 format!("the yaw rate varies by {std:.4} rad/s (limit {limit:.4})")
             }
+            Rejection::SteerSwings { rms, limit } => format!(
+                "the steer swings by {rms:.4} rad RMS beyond its noise (limit {limit:.4}; \
+                 its 1 s medians hide it)"
+            ),
+            Rejection::YawRateSwings { rms, limit } => format!(
+                "the yaw rate swings by {rms:.4} rad/s RMS beyond its noise (limit {limit:.4}; \
+                 its 1 s medians hide it)"
+            ),
             Rejection::SpeedVaries { share, limit } => format!(
                 "the speed varies by {:.0} % (limit {:.0} %)",
                 100.0 * share,

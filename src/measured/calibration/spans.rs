@@ -148,7 +148,8 @@ pub(super) fn straights(
     let mut kept = Vec::new();
     let mut refused = Vec::new();
     for (lo, hi) in stretches(&run.t, &ok, c.straight_trim, c.straight_seconds) {
-        let reasons = whole_span(&u[lo..hi], &r[lo..hi], c);
+        let mut reasons = whole_span(&u[lo..hi], &r[lo..hi], c);
+        reasons.extend(swings(run, (lo, hi), yaw_reference, d0, c));
         if reasons.is_empty() {
             kept.push((lo, hi));
         } else {
@@ -185,6 +186,70 @@ fn whole_span(u: &[f64], r: &[f64], c: &Criteria) -> Vec<Rejection> {
         out.push(Rejection::SpeedVaries {
             share,
             limit: c.straight_speed_variation,
+        });
+    }
+    out
+}
+
+/// The root-mean-square of the raw samples of `x` over `[lo, hi)` of `run`
+/// (masked samples and glitches left out) about `reference`, less the
+/// channel's white noise in quadrature: what the signal itself does. The
+/// noise is estimated from successive differences (`1.4826·MAD/√2`): a
+/// white noise shows in full there, a swing slower than a few samples
+/// barely (a 1 Hz sine at 100 Hz moves 6 % of its amplitude per sample).
+/// An autocorrelated noise shows less in the differences and counts
+/// partly as signal: the limit then holds the noise and the signal
+/// together, the conservative side.
+fn swing(run: &MeasuredRun, x: &[f64], (lo, hi): (usize, usize), reference: f64) -> f64 {
+    let live: Vec<f64> = (lo..hi)
+        .filter(|i| run.masked.binary_search(i).is_err())
+        .map(|i| x[i])
+        .collect();
+    let Some((kept, _)) = super::stats::without_glitches(&live) else {
+        // One value throughout: no swing beyond its distance from the
+        // reference.
+        return live.first().map_or(0.0, |v| (v - reference).abs());
+    };
+    let mut steps: Vec<f64> = kept.windows(2).map(|w| w[1] - w[0]).collect();
+    let noise = match steps.len() {
+        0 => 0.0,
+        _ => {
+            let m = median(&mut steps.clone());
+            let mut dev: Vec<f64> = steps.iter_mut().map(|d| (*d - m).abs()).collect();
+            1.4826 * median(&mut dev) / std::f64::consts::SQRT_2
+        }
+    };
+    let ms = kept.iter().map(|v| (v - reference).powi(2)).sum::<f64>() / kept.len() as f64;
+    (ms - noise * noise).max(0.0).sqrt()
+}
+
+/// The raw-sample tests of a candidate straight `span` of `run`: the
+/// running medians hide a swing as fast as their window (a 1 Hz slalom's
+/// steer and yaw rate have medians near 0 over 1 s), so the steer and the
+/// yaw rate themselves, beyond their noise ([`swing`]), must stay within
+/// the same bands as the medians: [`Criteria::straight_steer`] of the
+/// straight-line steer `d0`, [`Criteria::straight_yaw_rate`] of
+/// `yaw_reference`.
+fn swings(
+    run: &MeasuredRun,
+    span: (usize, usize),
+    yaw_reference: f64,
+    d0: f64,
+    c: &Criteria,
+) -> Vec<Rejection> {
+    let mut out = Vec::new();
+    let steer = swing(run, &run.steer, span, d0);
+    if steer > c.straight_steer {
+        out.push(Rejection::SteerSwings {
+            rms: steer,
+            limit: c.straight_steer,
+        });
+    }
+    let yaw = swing(run, &run.yaw_rate, span, yaw_reference);
+    if yaw > c.straight_yaw_rate {
+        out.push(Rejection::YawRateSwings {
+            rms: yaw,
+            limit: c.straight_yaw_rate,
         });
     }
     out

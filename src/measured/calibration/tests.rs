@@ -398,3 +398,48 @@ fn a_gated_channel_holds_no_offset_and_masked_samples_are_left_out() {
     assert_eq!(s.channels[0].outliers, 0);
     assert!(c.channel(RunChannel::YawRate).is_none());
 }
+
+#[test]
+fn a_one_hertz_slalom_is_no_straight_though_its_medians_are_flat() {
+    // 20 s parked, 5 s off to 15 m/s, 40 s of a 1 Hz slalom (steer ±0.02
+    // rad, yaw rate ±0.1 rad/s), 5 s to a stop, 20 s parked. The 1 s
+    // running medians of a 1 Hz sine are near 0: every per-sample and
+    // running-median test passes; the raw swing (0.014 rad, 0.07 rad/s RMS)
+    // does not.
+    let w = std::f64::consts::TAU;
+    let truth = |t: f64| match t {
+        t if t < 20.0 => Truth::default(),
+        t if t < 25.0 => Truth {
+            speed: 3.0 * (t - 20.0),
+            ax: 3.0,
+            ..Truth::default()
+        },
+        t if t < 65.0 => Truth {
+            speed: 15.0,
+            yaw_rate: 0.1 * (w * t).sin(),
+            steer: 0.02 * (w * t).sin(),
+            ..Truth::default()
+        },
+        t if t < 70.0 => Truth {
+            speed: 15.0 - 3.0 * (t - 65.0),
+            ax: -3.0,
+            ..Truth::default()
+        },
+        _ => Truth::default(),
+    };
+    let r = calibrate(&[run(90.0, &truth, SENSORS, 11)]);
+    assert_eq!(span_count(&r, SpanKind::Standstill), 2, "{:?}", r.spans);
+    assert_eq!(span_count(&r, SpanKind::Straight), 0, "{:?}", r.spans);
+    assert_eq!(r.rejected.len(), 1, "{:?}", r.rejected);
+    let slalom = &r.rejected[0];
+    assert!(slalom.t_start > 25.0 && slalom.t_end < 65.0, "{slalom:?}");
+    let (steer, yaw) = match slalom.reasons[..] {
+        [Rejection::SteerSwings { rms: s, .. }, Rejection::YawRateSwings { rms: y, .. }] => (s, y),
+        _ => panic!("{slalom:?}"),
+    };
+    assert!((steer / (0.02 / 2f64.sqrt()) - 1.0).abs() < 0.05, "{steer}");
+    assert!((yaw / (0.1 / 2f64.sqrt()) - 1.0).abs() < 0.05, "{yaw}");
+    // No straight offset: beta, measured on straights only, has none.
+    assert!(r.channel(RunChannel::Beta).is_none());
+    assert!(r.channel(RunChannel::YawRate).unwrap().straight.is_none());
+}

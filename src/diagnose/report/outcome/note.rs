@@ -66,6 +66,11 @@ pub enum Note {
         /// larger ([`crate::diagnose::model::scale::SIGNAL_SHARE`]).
         weighted: f64,
     },
+    /// An uncertainty stated under `[channels]` more than
+    /// [`crate::diagnose::model::scale::STATED_EXCESS`] times what the
+    /// channel shows of itself: a gap below it is insignificant by the
+    /// statement.
+    UncertaintyAboveOwn(crate::diagnose::model::scale::StatedExcess),
     /// Rig data whose wheel loads do not reach the car's static wheel
     /// loads: the base tyre fitted to them is extrapolated there.
     RigLoadsShort {

@@ -68,6 +68,7 @@ fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_unit
             scatter,
             runs: 2,
             other_side: 0,
+            stated_excess: None,
         })
     };
     assert_eq!(
@@ -102,9 +103,32 @@ fn a_channel_read_near_the_line_between_sensor_and_estimate_says_so_and_how_to_s
         scatter: 0.0010,
         runs: 23,
         other_side: 7,
+        stated_excess: None,
     });
     assert_eq!(
         said,
         "yaw_rate 0.0017 rad/s (its sensor type's floor; scatter 0.0010 rad/s; near the line between a sensor and an estimated output: its scatter is 0.59 of its sensor type's floor, the line at 0.5; 7 of its 23 runs read alone fall on the side of an estimated output; read as a sensor, a shorter or calmer stretch may read it as an estimated output: where you know which it is, state its uncertainty under [channels])"
+    );
+}
+
+#[test]
+fn a_stated_uncertainty_far_above_the_channels_scatter_is_said_where_it_is_trusted() {
+    use crate::diagnose::model::channels::Channel;
+    use crate::diagnose::model::scale::stated_excess;
+    let excess = stated_excess(Channel::YawRate, ScaleSource::Stated, 0.04, 0.0025);
+    let said = channel_trust(&ChannelNoise {
+        channel: Channel::YawRate,
+        unit: "rad/s",
+        noise_floor: 0.04,
+        scale: 0.04,
+        source: ScaleSource::Stated,
+        scatter: 0.0025,
+        runs: 2,
+        other_side: 0,
+        stated_excess: excess,
+    });
+    assert_eq!(
+        said,
+        "yaw_rate 0.0400 rad/s (stated; 16× the channel's own scatter, 0.0025 rad/s: a gap below it is called insignificant only because of the statement)"
     );
 }

@@ -88,12 +88,30 @@ fn no_gap_names_its_threshold() {
         heldout_error: 1.05,
         noise_level: 0.95,
         threshold: 1.3,
+        resting_on: Vec::new(),
     });
     assert_eq!(
         statement(&v),
         "no significant gap: held-out error 1.050 is within 1.3 × the noise level 0.950"
     );
     assert_eq!(v.kind().name(), "no_significant_gap");
+    // Resting on an uncertainty stated far above the channel's scatter.
+    let excess = crate::diagnose::model::scale::stated_excess(
+        crate::diagnose::model::channels::Channel::YawRate,
+        crate::diagnose::report::ScaleSource::Stated,
+        0.04,
+        0.0025,
+    );
+    let v = Verdict::NoSignificantGap(NoSignificantGap {
+        heldout_error: 1.05,
+        noise_level: 0.95,
+        threshold: 1.3,
+        resting_on: excess.into_iter().collect(),
+    });
+    assert_eq!(
+        statement(&v),
+        "no significant gap: held-out error 1.050 is within 1.3 × the noise level 0.950; this rests on the uncertainty stated under [channels] for yaw_rate, 0.0400 rad/s, 16× the channel's own scatter, 0.0025 rad/s: a gap below it is called insignificant only because of the statement"
+    );
 }
 
 fn peak() -> NoTyre {

@@ -5,8 +5,8 @@
 //! [`crate::diagnose::model::scale`]). Units: each channel's own.
 
 use super::rms;
-use crate::diagnose::model::scale::{near_the_line, SMOOTH_SHARE};
-use crate::diagnose::report::{ChannelNoise, ScaleSource};
+use crate::diagnose::model::scale::{near_the_line, StatedExcess, SMOOTH_SHARE};
+use crate::diagnose::report::{ChannelNoise, NoSignificantGap, ScaleSource};
 
 /// How far every measured channel is trusted, in one line.
 pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
@@ -19,7 +19,10 @@ pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
 pub fn channel_trust(n: &ChannelNoise) -> String {
     let u = n.unit;
     let why = match n.source {
-        ScaleSource::Stated => "stated".to_string(),
+        ScaleSource::Stated => match &n.stated_excess {
+            Some(e) => format!("stated; {}", stated_excess(e)),
+            None => "stated".to_string(),
+        },
         ScaleSource::Scatter => "its scatter".to_string(),
         ScaleSource::SensorFloor => {
             format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
@@ -61,4 +64,52 @@ fn near_line(n: &ChannelNoise, share: f64) -> String {
         crate::format::rounded(share, 2),
         SMOOTH_SHARE,
     )
+}
+
+/// A stated uncertainty far above what its channel shows
+/// ([`StatedExcess`]): how far, and what follows.
+pub fn stated_excess(e: &StatedExcess) -> String {
+    let u = e.channel.unit();
+    let own = if e.estimated {
+        format!(
+            "an estimated output's uncertainty, {} {u} (its scatter is below any sensor's)",
+            rms(e.own)
+        )
+    } else {
+        format!("the channel's own scatter, {} {u}", rms(e.own))
+    };
+    format!(
+        "{:.0}× {own}: a gap below it is called insignificant only because of the statement",
+        e.times
+    )
+}
+
+/// The note of an uncertainty stated far above what its channel shows.
+pub fn excess_note(e: &StatedExcess) -> String {
+    format!(
+        "[channels] {} = {} {}: the stated uncertainty is {}",
+        e.channel.name(),
+        crate::error::Num(e.stated),
+        e.channel.unit(),
+        stated_excess(e)
+    )
+}
+
+/// A verdict of no significant gap, with the stated uncertainties it
+/// rests on ([`StatedExcess`]).
+pub fn no_gap(n: &NoSignificantGap) -> String {
+    let mut v = format!(
+        "no significant gap: held-out error {:.3} is within {} × the noise level {:.3}",
+        n.heldout_error, n.threshold, n.noise_level
+    );
+    for e in &n.resting_on {
+        v += &format!(
+            "; this rests on the uncertainty stated under [channels] for {}, {} {}, {}",
+            e.channel.name(),
+            rms(e.stated),
+            e.channel.unit(),
+            stated_excess(e)
+        );
+    }
+    v
 }

@@ -55,3 +55,38 @@ fn a_sweep_in_radians_far_past_its_peak_is_not_taken_for_degrees() {
     let o = identify_to(&dir.path().join("rad.csv"), "gim", &out);
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+/// A points file carrying measured `fy` and `mz` came out with both
+/// replaced by the model's values under the same names, without a word:
+/// now the measured columns are kept under their names, the model's
+/// written as `fx_model`, `fy_model`, `mz_model`, and each measured
+/// channel compared with the model's.
+#[test]
+fn tyre_eval_keeps_measured_columns_and_compares_the_model_with_them() {
+    let points = "fz,kappa,alpha,camber,speed,fy,mz\n\
+                  4000,0,0.02,0,20,1100,30\n\
+                  4000,0,0.05,0,20,2500,50\n\
+                  4000,0,-0.05,0,20,-2500,-50\n";
+    let dir = scratch(&[("pts.csv", points)]);
+    let tyre = root().join("tyres/unitire.toml");
+    let o = run_in(
+        dir.path(),
+        &["tyre-eval", tyre.to_str().unwrap(), "pts.csv", "--out", "o.csv"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    for line in [
+        "the points file's measured `fy`, `mz` kept under their names; the model's outputs written as `fx_model`, `fy_model`, `mz_model`",
+        "`fy` model − measured over 3 points: mean -20.69 N, RMS 41.18 N (1.93 % of the measured RMS 2138 N), largest -62.07 N at line 2",
+        "`mz` model − measured over 3 points: mean 3.554 N·m, RMS 10.47 N·m (23.6 % of the measured RMS 44.35 N·m), largest 10.66 N·m at line 2",
+    ] {
+        assert!(said.contains(line), "{line}\n{said}");
+    }
+    let out = fs::read_to_string(dir.path().join("o.csv")).unwrap();
+    let mut rows = out.lines();
+    assert_eq!(
+        rows.next(),
+        Some("fz,kappa,alpha,camber,speed,fy,mz,fx_model,fy_model,mz_model")
+    );
+    assert!(rows.next().unwrap().starts_with("4000,0,0.02,0,20,1100,30,0,1037.92"));
+}

@@ -90,3 +90,59 @@ fn tyre_eval_keeps_measured_columns_and_compares_the_model_with_them() {
     );
     assert!(rows.next().unwrap().starts_with("4000,0,0.02,0,20,1100,30,0,1037.92"));
 }
+
+/// `identify --out fit.csv` wrote a TOML tyre file under `.csv`, which
+/// `tyre-eval` then refused as a CSV: refused before any fit, naming the
+/// flag, its value and the name to give.
+#[test]
+fn identify_refuses_an_out_extension_other_than_its_format() {
+    let dir = scratch(&[("rad.csv", &rig_rows(false, 1.2, 0.1, 0.005))]);
+    let out = dir.path().join("fit.csv");
+    let o = identify_to(&dir.path().join("rad.csv"), "linear", &out);
+    let e = refused(&o, &out);
+    let at = out.display();
+    let named = dir.path().join("fit.toml");
+    assert!(
+        e.contains(&format!("{at}: the linear model is written as a .toml file, not .csv (`--out {at}` names the tyre file; a .toml text under this name would not read back as a .csv): name it {}", named.display())),
+        "{e}"
+    );
+}
+
+/// Exact MF 6.1 pure sweeps (slip angle at κ = 0, slip ratio at α = 0)
+/// fitted back by mf61: the pooled line called the pure longitudinal rows
+/// of `fy` "rows of combined Fy"; now they are named by their slip, with
+/// the stage that would take them.
+#[test]
+fn left_out_rows_are_named_by_their_slip_content() {
+    let mut points = String::from("fz,kappa,alpha,camber,speed\n");
+    for fz in [2000, 4000, 6000] {
+        for i in -30..=30 {
+            points += &format!("{fz},0,{:.4},0,16.7\n", f64::from(i) * 0.01);
+        }
+        for i in (-20..=20).filter(|i| *i != 0) {
+            points += &format!("{fz},{:.4},0,0,16.7\n", f64::from(i) * 0.01);
+        }
+    }
+    let dir = scratch(&[("pts.csv", &points)]);
+    let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
+    let o = run_in(
+        dir.path(),
+        &["tyre-eval", tir.to_str().unwrap(), "pts.csv", "--out", "ev.csv"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_in(
+        dir.path(),
+        &["identify", "ev.csv", "--model", "mf61", "--out", "fit.tir"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("120 samples left out (rows of pure longitudinal slip (α = 0), the combined Fy stage's, not fitted); mz "),
+        "{said}"
+    );
+    assert!(
+        said.contains("180 samples left out (rows of pure lateral slip (κ = 0), which no stage of the channel takes); fy "),
+        "{said}"
+    );
+    assert!(!said.contains("rows of combined"), "{said}");
+}

@@ -146,3 +146,30 @@ fn left_out_rows_are_named_by_their_slip_content() {
     );
     assert!(!said.contains("rows of combined"), "{said}");
 }
+
+/// The height of the PNG `path` (its IHDR), px.
+fn png_height(path: &Path) -> u32 {
+    let png = fs::read(path).unwrap();
+    u32::from_be_bytes(png[20..24].try_into().unwrap())
+}
+
+/// A `--model linear` fit's figure had no aligning-moment panel though
+/// its trail is fitted to `mz`: the file with `mz` now draws two rows of
+/// panels (Fy, Mz), the same file without `mz` one.
+#[test]
+fn a_linear_fit_figure_has_an_mz_panel_when_the_trail_is_fitted() {
+    let with = rig_rows(false, 1.2, 0.03, 0.002);
+    let without: String = with
+        .lines()
+        .map(|l| l.rsplit_once(',').unwrap().0.to_string() + "\n")
+        .collect();
+    let dir = scratch(&[("with.csv", &with), ("without.csv", &without)]);
+    let height = |name: &str| {
+        let out = dir.path().join(format!("{name}.toml"));
+        let o = identify_to(&dir.path().join(format!("{name}.csv")), "linear", &out);
+        assert!(o.status.success(), "{}", stderr(&o));
+        png_height(&dir.path().join(format!("{name}.png")))
+    };
+    let (one, two) = (height("without"), height("with"));
+    assert_eq!(two, 2 * one, "{one} px without mz, {two} px with");
+}

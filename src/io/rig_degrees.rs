@@ -23,8 +23,7 @@
 
 use super::columns::Columns;
 use crate::error::{
-    InputError, InputProblem, SlipAngleInDegrees, UnitSlip, MAX_RIG_SLIP_ANGLE,
-    MOST_LOAD_STIFFNESS,
+    InputError, InputProblem, SlipAngleInDegrees, UnitSlip, MAX_RIG_SLIP_ANGLE, MOST_LOAD_STIFFNESS,
 };
 use crate::tyre::sizes::MIN_CORNERING_PER_LOAD;
 use std::path::Path;
@@ -52,7 +51,10 @@ fn slope(pairs: &[(f64, f64)]) -> Option<(f64, f64)> {
     let sxx: f64 = pairs.iter().map(|p| (p.0 - mx).powi(2)).sum();
     let sxy: f64 = pairs.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     let s = sxy / sxx;
-    let rss: f64 = pairs.iter().map(|p| (p.1 - my - s * (p.0 - mx)).powi(2)).sum();
+    let rss: f64 = pairs
+        .iter()
+        .map(|p| (p.1 - my - s * (p.0 - mx)).powi(2))
+        .sum();
     Some((s, (rss / (m - 2.0) / sxx).sqrt()))
 }
 
@@ -86,7 +88,9 @@ pub(super) fn refuse_alpha_in_degrees(
         return Ok(());
     };
     let per_deg = s.to_degrees();
-    if s <= STANDARD_ERRORS * se || !(MIN_CORNERING_PER_LOAD..=MOST_LOAD_STIFFNESS).contains(&per_deg) {
+    if s <= STANDARD_ERRORS * se
+        || !(MIN_CORNERING_PER_LOAD..=MOST_LOAD_STIFFNESS).contains(&per_deg)
+    {
         return Ok(());
     }
     let near = within(SMALL_SLIP);

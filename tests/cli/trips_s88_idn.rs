@@ -16,7 +16,11 @@ fn rig_rows(degrees: bool, mu: f64, reach: f64, step: f64) -> String {
     for fz in [2000.0, 4000.0, 6000.0] {
         for i in -n..=n {
             let written = f64::from(i) * step;
-            let alpha = if degrees { written.to_radians() } else { written };
+            let alpha = if degrees {
+                written.to_radians()
+            } else {
+                written
+            };
             let c = 15.0 * fz * (1.0 - fz / 20000.0);
             let fy = fz * mu * (1.4 * (c / (mu * 1.4 * fz) * alpha).atan()).sin();
             s += &format!("{fz},{written:.4},{fy:.3},{:.3}\n", 0.03 * fy);
@@ -71,7 +75,13 @@ fn tyre_eval_keeps_measured_columns_and_compares_the_model_with_them() {
     let tyre = root().join("tyres/unitire.toml");
     let o = run_in(
         dir.path(),
-        &["tyre-eval", tyre.to_str().unwrap(), "pts.csv", "--out", "o.csv"],
+        &[
+            "tyre-eval",
+            tyre.to_str().unwrap(),
+            "pts.csv",
+            "--out",
+            "o.csv",
+        ],
     );
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
@@ -88,7 +98,10 @@ fn tyre_eval_keeps_measured_columns_and_compares_the_model_with_them() {
         rows.next(),
         Some("fz,kappa,alpha,camber,speed,fy,mz,fx_model,fy_model,mz_model")
     );
-    assert!(rows.next().unwrap().starts_with("4000,0,0.02,0,20,1100,30,0,1037.92"));
+    assert!(rows
+        .next()
+        .unwrap()
+        .starts_with("4000,0,0.02,0,20,1100,30,0,1037.92"));
 }
 
 /// `identify --out fit.csv` wrote a TOML tyre file under `.csv`, which
@@ -127,7 +140,13 @@ fn left_out_rows_are_named_by_their_slip_content() {
     let tir = root().join("tests/fixtures/tir/MagicFormula61_Parameters.tir");
     let o = run_in(
         dir.path(),
-        &["tyre-eval", tir.to_str().unwrap(), "pts.csv", "--out", "ev.csv"],
+        &[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            "pts.csv",
+            "--out",
+            "ev.csv",
+        ],
     );
     assert!(o.status.success(), "{}", stderr(&o));
     let o = run_in(

@@ -107,7 +107,10 @@ impl LeftOut {
         let whose = if self.stages.is_empty() {
             format!("{rows}, which no stage of the channel takes")
         } else {
-            format!("{rows}, the {} stage's, not fitted", self.stages.join(" and "))
+            format!(
+                "{rows}, the {} stage's, not fitted",
+                self.stages.join(" and ")
+            )
         };
         format!(
             ", {} left out ({whose})",

@@ -25,15 +25,13 @@ impl Options {
             // Any other extension (`x.csv`) names a file the readers take
             // for another format: a TOML tyre under `.csv` is refused by
             // `tyre-eval` as a CSV.
-            Some(given) if given != expected => {
-                Err(OutputError::Extension {
-                    path: out.clone(),
-                    model: self.model.to_string(),
-                    expected,
-                    given,
-                }
-                .into())
+            Some(given) if given != expected => Err(OutputError::Extension {
+                path: out.clone(),
+                model: self.model.to_string(),
+                expected,
+                given,
             }
+            .into()),
             _ => Ok(()),
         }
     }

@@ -80,7 +80,11 @@ impl MeasuredDifference {
     /// "fy: model − measured over 120 points: mean 12.3 N, RMS 45.6 N
     /// (3.41 % of the measured RMS 1337 N), largest -150 N at line 57".
     pub fn line(&self) -> String {
-        let unit = if self.channel.starts_with('f') { "N" } else { "N·m" };
+        let unit = if self.channel.starts_with('f') {
+            "N"
+        } else {
+            "N·m"
+        };
         let n = |v: f64| crate::format::readable(v, 4);
         let share = match self.measured_rms > 0.0 {
             true => format!(
@@ -112,7 +116,11 @@ pub(super) fn kept_line(
         return None;
     }
     let quoted = |names: Vec<&str>| -> String {
-        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+        names
+            .iter()
+            .map(|n| format!("`{n}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
     let kept = quoted(measured.iter().map(|(n, _)| *n).collect());
     let model = quoted(

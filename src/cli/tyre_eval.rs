@@ -29,6 +29,9 @@ pub fn tyre_eval(a: TyreEvalArgs) -> Result<()> {
         eprintln!("warning: {w}");
     }
     r.write()?;
+    for line in r.measured_lines() {
+        say!("{line}");
+    }
     say!("{}", r.wrote());
     Ok(())
 }

@@ -83,7 +83,7 @@ pub enum OutputError {
         given: String,
     },
     /// A file named with another format's extension.
-    #[error("{}: the {model} model is written as a .{expected} file, not .{given} (a .{expected} text under this name would not read back)", path.display())]
+    #[error("{}: the {model} model is written as a .{expected} file, not .{given} (`--out {}` names the tyre file; a .{expected} text under this name would not read back as a .{given}): name it {}", path.display(), path.display(), path.with_extension(expected).display())]
     Extension {
         /// The output.
         path: PathBuf,

@@ -382,27 +382,11 @@ pub(super) fn curves_of(
 pub fn fit_report_of(tyre: Tyre, channel: Channel, conditions: &[Condition], like: &Fit) -> Fit {
     let free: Vec<bool> = like.parameters.iter().map(|p| p.free).collect();
     let problem = FitProblem::for_channel(&tyre, channel, &free, conditions);
-    let all = channel.parameters(&tyre);
-    let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
-    let spread = Spread::at(&problem, &p);
-    let mut parameters = parameter_reports(&tyre, &tyre, channel, &free, &spread);
-    for (p, was) in parameters.iter_mut().zip(&like.parameters) {
-        if !was.free {
-            p.held = was.held;
-            p.warning = was.warning.clone();
-        }
-    }
-    let (s, rms) = sigma_of(channel, &tyre, &problem.points);
+    let start = tyre.clone();
     Fit {
-        curves: curves_of(channel, &tyre, conditions),
-        parameters,
-        sigma_percent: s,
-        rms,
-        covariance: spread.covariance,
         free_sigma_percent: None,
         free_swarm_sigma_percent: None,
-        tyre,
-        ..like.clone()
+        ..parameters::fit_carrying_holds(tyre, &start, &problem, conditions, like)
     }
 }
 

@@ -208,6 +208,42 @@ fn warning(
     }
 }
 
+/// A fit of `tyre` (fitted to `problem`, `from`'s free parameters free)
+/// carrying `from`'s holds: each parameter's value and standard error
+/// from the Jacobian at `tyre` (reported against `start`'s bounds), those
+/// `from` held held alike with their words, its σ, RMS and curves over
+/// `conditions`; the rest (seed, work, swarm σ) `from`'s.
+pub(super) fn fit_carrying_holds(
+    tyre: Tyre,
+    start: &Tyre,
+    problem: &super::FitProblem,
+    conditions: &[super::data::Condition],
+    from: &super::Fit,
+) -> super::Fit {
+    let channel = problem.channel;
+    let mask: Vec<bool> = from.parameters.iter().map(|p| p.free).collect();
+    let all = channel.parameters(&tyre);
+    let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
+    let spread = Spread::at(problem, &p);
+    let mut parameters = parameter_reports(start, &tyre, channel, &mask, &spread);
+    for (new, old) in parameters.iter_mut().zip(&from.parameters) {
+        if !old.free {
+            new.held = old.held;
+            new.warning.clone_from(&old.warning);
+        }
+    }
+    let (sigma_percent, rms) = super::sigma_of(channel, &tyre, &problem.points);
+    super::Fit {
+        curves: super::curves_of(channel, &tyre, conditions),
+        parameters,
+        sigma_percent,
+        rms,
+        covariance: spread.covariance,
+        tyre,
+        ..from.clone()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

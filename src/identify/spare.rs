@@ -289,6 +289,18 @@ pub(crate) fn standard_errors_away(stated: f64, fitted: f64, se: Option<f64>) ->
         .map(|s| (stated - fitted).abs() / s)
 }
 
+/// `z` standard errors to one decimal, or to as many more as keep its
+/// side of [`LEAN_STANDARD_ERRORS`]: 2.04 beyond the limit is not said as
+/// "2.0", the limit itself (up to six decimals; then the limit's side is
+/// said by the sentence around it).
+pub(crate) fn z_text(z: f64) -> String {
+    let side = |v: f64| v.partial_cmp(&LEAN_STANDARD_ERRORS);
+    (1..=6)
+        .map(|d| format!("{z:.d$}"))
+        .find(|t| t.parse::<f64>().ok().and_then(side) == side(z))
+        .unwrap_or_else(|| format!("{z:.6}"))
+}
+
 /// Where a held value stands, as its line says it: `held` against the
 /// `stated` value (named by `what`, "the model's start value") and how
 /// many standard errors the stated value lay from the free fit (`away`,
@@ -299,14 +311,17 @@ pub(crate) fn held_at(what: &str, stated: f64, held: f64, away: Option<f64>) -> 
     match away {
         // Moved off the stated value: to the nearest the data allow.
         Some(z) if held != stated => format!(
-            "held at {}, the end of the free fit's ±{LEAN_STANDARD_ERRORS:.0} standard errors nearest {what} {stated_text} (which lies {z:.1} standard errors from the free fit, where the data would not put it)",
-            rounded(held, 5)
+            "held at {}, the end of the free fit's ±{LEAN_STANDARD_ERRORS:.0} standard errors nearest {what} {stated_text} (which lies {} standard errors from the free fit, where the data would not put it)",
+            rounded(held, 5),
+            z_text(z)
         ),
         Some(z) if z > LEAN_STANDARD_ERRORS => format!(
-            "held at {what} {stated_text}, which lies {z:.1} standard errors from the free fit, outside the ±{LEAN_STANDARD_ERRORS:.0} the data allow"
+            "held at {what} {stated_text}, which lies {} standard errors from the free fit, outside the ±{LEAN_STANDARD_ERRORS:.0} the data allow",
+            z_text(z)
         ),
         Some(z) => format!(
-            "held at {what} {stated_text}, {z:.1} standard errors from the free fit (within the ±{LEAN_STANDARD_ERRORS:.0} standard errors the data allow)"
+            "held at {what} {stated_text}, {} standard errors from the free fit (within the ±{LEAN_STANDARD_ERRORS:.0} standard errors the data allow)",
+            z_text(z)
         ),
         None => format!("held at {what} {stated_text}"),
     }
@@ -334,6 +349,23 @@ mod tests {
     /// Within two standard errors of the free fit the stated value is
     /// held; beyond, the end of the ±2 nearest it, clamped into bounds;
     /// without a standard error, the stated value.
+    /// A value just past or short of the ±2 limit is not printed as
+    /// the limit: "2.04" outside, "1.96" within; others to one decimal.
+    #[test]
+    fn standard_errors_at_the_limit_keep_their_side_in_print() {
+        assert_eq!(z_text(2.04), "2.04");
+        assert_eq!(z_text(1.96), "1.96");
+        assert_eq!(z_text(2.0004), "2.0004");
+        assert_eq!(z_text(2.0), "2.0");
+        assert_eq!(z_text(3.62), "3.6");
+        assert_eq!(z_text(0.04), "0.0");
+        let line = held_at("the model's start value", 1.0, 1.0, Some(2.04));
+        assert!(
+            line.contains("which lies 2.04 standard errors from the free fit, outside the ±2"),
+            "{line}"
+        );
+    }
+
     #[test]
     fn a_held_value_is_the_stated_one_or_the_nearest_the_data_allow() {
         let wide = (-10.0, 10.0);

@@ -211,27 +211,10 @@ fn restarted(
     let bounds: Vec<(f64, f64)> = problem.free.iter().map(|&i| all_bounds[i]).collect();
     let l = refit(&problem, &x, &bounds, settings.local);
     let tyre = problem.tyre(&l.params).canonical();
-    let all = channel.parameters(&tyre);
-    let p: Vec<f64> = problem.free.iter().map(|&i| all[i]).collect();
-    let spread = Spread::at(&problem, &p);
-    let mut parameters = parameter_reports(start, &tyre, channel, &mask, &spread);
-    for (new, old) in parameters.iter_mut().zip(&free.parameters) {
-        if !old.free {
-            new.held = old.held;
-            new.warning.clone_from(&old.warning);
-        }
-    }
-    let (s, rms) = sigma_of(channel, &tyre, &problem.points);
     Fit {
-        curves: curves_of(channel, &tyre, conditions),
-        parameters,
-        sigma_percent: s,
-        rms,
         evaluations: held.evaluations + l.evaluations,
         seconds: held.seconds + t0.elapsed().as_secs_f64(),
-        covariance: spread.covariance,
-        tyre,
-        ..free.clone()
+        ..super::parameters::fit_carrying_holds(tyre, start, &problem, conditions, free)
     }
 }
 

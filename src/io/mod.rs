@@ -11,6 +11,7 @@ pub mod fitted_ranges;
 mod limits;
 pub mod paths;
 pub mod rig;
+mod rig_degrees;
 pub(crate) mod rig_rows;
 mod rig_scale;
 mod run;

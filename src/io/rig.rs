@@ -310,6 +310,10 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
         let alpha = lateral.as_ref().map_or(&[][..], |l| l.0.as_slice());
         super::rig_scale::refuse_moments_in_knm(path, &c, alpha, mz, &fz)?;
     }
+    if let Some((alpha, fy)) = &lateral {
+        let kappa = longitudinal.as_ref().map(|l| l.0.as_slice());
+        super::rig_degrees::refuse_alpha_in_degrees(path, &c, (alpha, fy), kappa, &fz)?;
+    }
     let sweeps = [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())];
     for (column, sweep) in sweeps {
         if let Some((slip, force)) = sweep {

@@ -109,7 +109,7 @@ fn the_pooled_sigma_of_a_channel_is_over_the_rows_its_stages_fit() {
         "{said}"
     );
     assert!(
-        said.contains("mz 0.089 %, RMS error 0.022 N·m, 120 samples left out (rows of combined Mz, not fitted)"),
+        said.contains("mz 0.089 %, RMS error 0.022 N·m, 120 samples left out (rows of pure longitudinal slip (α = 0), the combined Mz stage's, not fitted)"),
         "{said}"
     );
     let report = read_json(&dir.path().join("fit.report.json"));

@@ -47,15 +47,70 @@ pub struct LeftOut {
     /// The stages of the channel, not fitted, that would take them
     /// (`combined Mz`); empty when none would.
     pub stages: Vec<&'static str>,
+    /// The samples by their slip content (a combined stage takes the pure
+    /// longitudinal rows too: they are named as what they are).
+    pub slips: Vec<(RowSlip, usize)>,
+}
+
+/// A row's slip content, within [`super::PURE_TOL`] of zero.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RowSlip {
+    /// α ≠ 0, κ = 0.
+    PureLateral,
+    /// α = 0, κ ≠ 0.
+    PureLongitudinal,
+    /// α ≠ 0 and κ ≠ 0.
+    Combined,
+    /// α = 0 and κ = 0.
+    Zero,
+}
+
+impl RowSlip {
+    /// The slip content of row `r`.
+    fn of(r: &MfRow) -> RowSlip {
+        let a = r.alpha.abs() > super::PURE_TOL;
+        let k = r.kappa.abs() > super::PURE_TOL;
+        match (a, k) {
+            (true, false) => RowSlip::PureLateral,
+            (false, true) => RowSlip::PureLongitudinal,
+            (true, true) => RowSlip::Combined,
+            (false, false) => RowSlip::Zero,
+        }
+    }
+
+    /// A name people read.
+    fn label(self) -> &'static str {
+        match self {
+            RowSlip::PureLateral => "pure lateral slip (κ = 0)",
+            RowSlip::PureLongitudinal => "pure longitudinal slip (α = 0)",
+            RowSlip::Combined => "combined slip (α and κ ≠ 0)",
+            RowSlip::Zero => "zero slip",
+        }
+    }
 }
 
 impl LeftOut {
-    /// `; 1200 samples left out (the skipped combined Mz stage's rows)`.
+    /// `, 120 samples left out (rows of pure longitudinal slip (α = 0),
+    /// the combined Mz stage's, not fitted)`.
     fn text(&self) -> String {
+        let rows = match &self.slips[..] {
+            [(slip, _)] => format!("rows of {}", slip.label()),
+            slips => {
+                let each: Vec<String> = slips
+                    .iter()
+                    .map(|(slip, n)| format!("{n} of {}", slip.label()))
+                    .collect();
+                format!("rows: {}", each.join(", "))
+            }
+        };
         let whose = if self.stages.is_empty() {
-            "rows no stage of the channel takes".to_string()
+            format!("{rows}, which no stage of the channel takes")
         } else {
-            format!("rows of {}, not fitted", self.stages.join(" and "))
+            format!(
+                "{rows}, the {} stage's, not fitted",
+                self.stages.join(" and ")
+            )
         };
         format!(
             ", {} left out ({whose})",
@@ -181,6 +236,7 @@ pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow], fitted: &[Stage]) -> Po
     let is_fitted = |k: usize| fitted.iter().any(|&s| channel_of(s) == k);
     // The stages of each channel not fitted that take a row left out.
     let mut whose: [Vec<&'static str>; 5] = Default::default();
+    let mut slips: [Vec<(RowSlip, usize)>; 5] = Default::default();
     for r in rows {
         let o = tyre.evaluate(&r.input());
         let pairs = [
@@ -197,6 +253,11 @@ pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow], fitted: &[Stage]) -> Po
             let taken = fitted.iter().any(|&s| channel_of(s) == k && s.takes(r));
             if is_fitted(k) && !taken {
                 left[k] += 1;
+                let slip = RowSlip::of(r);
+                match slips[k].iter_mut().find(|(s, _)| *s == slip) {
+                    Some((_, n)) => *n += 1,
+                    None => slips[k].push((slip, 1)),
+                }
                 let takers = Stage::ALL
                     .into_iter()
                     .filter(|&s| channel_of(s) == k && !fitted.contains(&s) && s.takes(r));
@@ -229,6 +290,7 @@ pub fn pooled_sigma(tyre: &MagicFormula, rows: &[MfRow], fitted: &[Stage]) -> Po
             left_out: (left[k] > 0).then(|| LeftOut {
                 samples: left[k],
                 stages: whose[k].clone(),
+                slips: slips[k].clone(),
             }),
         })
         .collect();

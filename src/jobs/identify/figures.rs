@@ -22,7 +22,10 @@ pub(super) fn fit_figure(r: &SwarmReport) -> Figure {
     if first == Channel::LateralForce {
         channels.push((Channel::LateralForce, &r.conditions));
     }
-    if r.aligning.is_some() {
+    // A linear tyre's trail is fitted to `mz` too (over the window's
+    // points), and drawn as the other fits are.
+    let trail = r.linear_window.as_ref().and_then(|w| w.pneumatic_trail);
+    if r.aligning.is_some() || trail.is_some() {
         channels.push((Channel::AligningMoment, &r.conditions));
     }
     if first == Channel::LongitudinalForce {

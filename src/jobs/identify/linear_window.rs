@@ -297,35 +297,3 @@ pub(crate) fn set_trail(tyre: &mut Tyre, t: f64) {
         l.pneumatic_trail = t;
     }
 }
-
-/// Refuses a linear fit `tyre` whose stiffness per unit of `load` (the
-/// median of the window's conditions' loads) is below any tyre's while
-/// the file's slip angles `alpha` reach beyond any rig's sweep in
-/// radians: the column in degrees (`error/slip_degrees.rs`).
-pub(crate) fn refuse_degrees(
-    data: &std::path::Path,
-    tyre: &Tyre,
-    load: f64,
-    alpha: &[f64],
-) -> Result<(), crate::error::Error> {
-    use crate::error::{InputError, InputProblem, SlipAngleInDegrees, UnitSlip};
-    use crate::tyre::sizes::MIN_CORNERING_PER_LOAD;
-    let Tyre::Linear(l) = tyre else {
-        return Ok(());
-    };
-    let reach = alpha
-        .iter()
-        .filter(|a| a.is_finite())
-        .fold(0.0_f64, |m, a| m.max(a.abs()));
-    let stiffness = l.cornering_stiffness;
-    if stiffness / load >= MIN_CORNERING_PER_LOAD || reach <= crate::error::MAX_RIG_SLIP_ANGLE {
-        return Ok(());
-    }
-    let slip = SlipAngleInDegrees {
-        stiffness,
-        load,
-        reach,
-        least: MIN_CORNERING_PER_LOAD,
-    };
-    Err(InputError::problem(data, InputProblem::from(UnitSlip::from(slip))).into())
-}

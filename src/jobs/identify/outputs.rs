@@ -1,7 +1,7 @@
 //! Where `identify` writes: the tyre file (`--out`, else
 //! `out/<data stem>_<model>.toml`, `.tir` for the Magic Formula), its
 //! `.report.json` and figure beside it, checked before any fit (a folder
-//! or another format's extension named as the file is refused), and the
+//! or any extension but the format's named as the file is refused), and the
 //! lock that keeps two fits from writing them at once.
 
 use super::Options;
@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 impl Options {
     /// Ok when `out` can name the tyre file: not a folder, and with the
-    /// extension of the model's format (or none).
+    /// extension of the model's format (`.toml`, `.tir`) or none.
     pub(super) fn validate_out(&self) -> Result<(), Error> {
         let Some(out) = &self.out else {
             return Ok(());
@@ -22,15 +22,16 @@ impl Options {
             .extension()
             .map(|e| e.to_string_lossy().to_ascii_lowercase())
         {
-            Some(given) if given != expected && (given == "toml" || given == "tir") => {
-                Err(OutputError::Extension {
-                    path: out.clone(),
-                    model: self.model.to_string(),
-                    expected,
-                    given,
-                }
-                .into())
+            // Any other extension (`x.csv`) names a file the readers take
+            // for another format: a TOML tyre under `.csv` is refused by
+            // `tyre-eval` as a CSV.
+            Some(given) if given != expected => Err(OutputError::Extension {
+                path: out.clone(),
+                model: self.model.to_string(),
+                expected,
+                given,
             }
+            .into()),
             _ => Ok(()),
         }
     }

@@ -74,9 +74,6 @@ pub(super) fn run_swarm(o: &Options, model: ModelName) -> Result<SwarmReport, Er
         fit_channel_holding(&tyre0, first, &conditions, &settings, &o.hold)
     });
     let fit = fit.map_err(on_data(o, None))?;
-    if window.is_some() {
-        linear_window::refuse_degrees(&o.data, &fit.tyre, median_load, &lateral.alpha)?;
-    }
     let mut r = SwarmReport {
         tyre: fit.tyre.clone(),
         file: String::new(),

@@ -17,13 +17,19 @@ pub(super) struct Outputs<'a> {
     pub(super) pressure: Option<Vec<f64>>,
     pub(super) forces: &'a [PointForces],
     pub(super) loaded_radius: Option<Vec<f64>>,
+    pub(super) measured: Vec<(&'static str, Vec<f64>)>,
 }
 
 /// The columns written, in order: inputs, pressure, fx, fy, mz, then mx
-/// and my (a model with wheel moments), then rl.
+/// and my (a model with wheel moments), then rl; with measured outputs
+/// in the points file, those after the pressure under their own names and
+/// the model's named `fx_model`, … (`measured.rs`).
 pub(super) fn columns(tyre: &Tyre, o: Outputs) -> Vec<(&'static str, Vec<f64>)> {
     let mut columns = o.inputs;
     columns.extend(o.pressure.map(|p| ("pressure", p)));
+    let renamed = !o.measured.is_empty();
+    let first_model = columns.len() + o.measured.len();
+    columns.extend(o.measured);
     let of = |g: fn(&PointForces) -> f64| o.forces.iter().map(g).collect::<Vec<_>>();
     columns.extend([
         ("fx", of(|x| x.fx)),
@@ -36,6 +42,11 @@ pub(super) fn columns(tyre: &Tyre, o: Outputs) -> Vec<(&'static str, Vec<f64>)> 
         columns.push(("my", checks::resolved_my(tyre, &columns[0].1, my)));
     }
     columns.extend(o.loaded_radius.map(|rl| ("rl", rl)));
+    if renamed {
+        for (name, _) in &mut columns[first_model..] {
+            *name = super::measured::model_name(name);
+        }
+    }
     columns
 }
 

@@ -51,6 +51,7 @@ mod friction;
 pub(crate) use friction::peak_of;
 mod light_load;
 mod meant;
+mod measured;
 mod model_loads;
 mod not_carried;
 mod opposed;
@@ -72,6 +73,7 @@ pub(crate) use checks::gives_none;
 pub use checks::{BeyondMySpeed, Output, ZeroOutput, MY_RESOLUTION, MY_SPEED_TERMS};
 pub use friction::{BeyondFriction, Uncoupled, FRICTION_TOLERANCE};
 pub use light_load::{LightLoad, LIGHT_LOAD_SHARE};
+pub use measured::MeasuredDifference;
 pub use model_loads::LoadsLeft;
 pub use physical::PHYSICAL;
 pub use standstill::{AtRest, StandstillMz, STANDSTILL};
@@ -182,6 +184,12 @@ pub struct TyreEvalReport {
     /// rig (`tyre::mf::WARN_FRICTION`), said as a warning.
     #[serde(skip)]
     pub peak_friction: Option<crate::tyre::mf::PeakFriction>,
+    /// The measured outputs the points file carries, kept in the output
+    /// beside the model's (`measured.rs`), each against the model's.
+    pub measured: Vec<MeasuredDifference>,
+    /// The line naming the measured columns kept and the model's names.
+    #[serde(skip)]
+    pub kept: Option<String>,
     /// Output columns, named, in file order.
     #[serde(skip)]
     pub columns: Vec<(&'static str, Vec<f64>)>,
@@ -285,6 +293,7 @@ pub fn run(
         file,
         mut inputs,
         pressure,
+        measured,
     } = read_points(
         points,
         pressure::tyre_pressures(&tyre, fitted_ranges.as_ref()),
@@ -353,12 +362,17 @@ pub fn run(
         pressure,
         forces: &f,
         loaded_radius: extras.loaded_radius,
+        measured: measured.clone(),
     };
     let columns = columns::columns(&tyre, outputs);
+    let kept = measured::kept_line(&measured, &columns);
+    let measured = measured::differences(&measured, &columns, &columns[0].1, &file.lines);
     // (The first five columns are the inputs, checked when read.)
     columns::refuse_non_finite(points, &file, &columns, tyre.model_name())?;
     let not_written = columns::not_written(&file, &columns);
     Ok(TyreEvalReport {
+        measured,
+        kept,
         peak_friction: friction::peak_of(&tyre),
         not_written,
         points: points.display().to_string(),
@@ -442,6 +456,23 @@ impl TyreEvalReport {
         out
     }
 
+    /// The model's column of `name` as written: `fy_model` beside a
+    /// measured `fy`'s kept columns (`measured.rs`), else `name`.
+    fn model_column(&self, name: &'static str) -> &'static str {
+        match self.kept {
+            Some(_) => measured::model_name(name),
+            None => name,
+        }
+    }
+
+    /// The measured columns kept and each against the model's, said
+    /// before the closing line.
+    pub fn measured_lines(&self) -> Vec<String> {
+        let mut out: Vec<String> = self.kept.iter().cloned().collect();
+        out.extend(self.measured.iter().map(MeasuredDifference::line));
+        out
+    }
+
     /// Writes the output CSV.
     pub fn write(&self) -> Result<(), Error> {
         let cols: Vec<(&str, &[f64])> = self.columns.iter().map(|(n, v)| (*n, &v[..])).collect();
@@ -461,6 +492,7 @@ impl TyreEvalReport {
         }
         let given: Vec<String> = ["my", "rl"]
             .into_iter()
+            .map(|k| self.model_column(k))
             .filter(|k| self.columns.iter().any(|(n, _)| n == k))
             .map(|k| format!("`{k}`"))
             .collect();
@@ -494,9 +526,10 @@ impl TyreEvalReport {
             ),
             None => String::new(),
         };
-        let rl = match self.columns.iter().any(|(n, _)| *n == "rl") {
-            true => ", `rl` the free radius",
-            false => "",
+        let rl = self.model_column("rl");
+        let rl = match self.columns.iter().any(|(n, _)| *n == rl) {
+            true => format!(", `{rl}` the free radius"),
+            false => String::new(),
         };
         let off_road = match self.off_road {
             0 => String::new(),

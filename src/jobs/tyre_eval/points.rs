@@ -16,6 +16,9 @@ pub(super) struct PointColumns {
     pub(super) file: crate::io::Columns,
     pub(super) inputs: Vec<(&'static str, Vec<f64>)>,
     pub(super) pressure: Option<Vec<f64>>,
+    /// The measured outputs the file carries (`fx`, `fy`, `mz`, `mx`,
+    /// `my`), in that order, kept beside the model's (`measured.rs`).
+    pub(super) measured: Vec<(&'static str, Vec<f64>)>,
 }
 
 /// Reads the points of `points`, refusing a value no tyre is evaluated
@@ -30,7 +33,7 @@ pub(super) fn read_points(
     // tyre is evaluated at, in one run.
     let layout = crate::io::Layout {
         required: &["fz", "kappa", "alpha", "camber", "speed"],
-        optional: &["pressure"],
+        optional: &["pressure", "fx", "fy", "mz", "mx", "my"],
         also_read: Some(&[]),
     };
     // A rig file given as points is said as one (not column by column).
@@ -43,6 +46,10 @@ pub(super) fn read_points(
             .unwrap_or(e)
         })?;
     let pressure = c.take_optional("pressure");
+    let measured = super::measured::MEASURED
+        .into_iter()
+        .filter_map(|n| c.take_optional(n).map(|v| (n, v)))
+        .collect();
     let inputs: Vec<(&'static str, Vec<f64>)> = ["fz", "kappa", "alpha", "camber", "speed"]
         .into_iter()
         .map(|n| (n, c.take(n)))
@@ -110,5 +117,6 @@ pub(super) fn read_points(
         file: c,
         inputs,
         pressure,
+        measured,
     })
 }

@@ -438,6 +438,7 @@ mod trips_s86_units;
 mod trips_s87_gap;
 mod trips_s87_idn;
 mod trips_s87_lead;
+mod trips_s88_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -86,3 +86,137 @@ fn a_replay_refused_for_its_degrees_names_the_degrees_key() {
         );
     }
 }
+
+/// The bundled sedan step on linear tyres (the file `tyre`, both axles),
+/// each wheel at its static load (`load_transfer = false`), with `edit`
+/// applied to the scenario's text: what `simulate` prints (its table
+/// and warnings, and stderr).
+fn linear_sedan(dir: &Path, tyre: &str, edit: &dyn Fn(String) -> String) -> String {
+    let t = dir.join("linear.toml");
+    fs::write(&t, tyre).unwrap();
+    let tyres = root().join("tyres");
+    let base = bundled_scenario("sedan_step.toml")
+        .replace(
+            tyres.join("gim_sedan_front.toml").to_str().unwrap(),
+            t.to_str().unwrap(),
+        )
+        .replace(
+            tyres.join("gim_sedan_rear.toml").to_str().unwrap(),
+            t.to_str().unwrap(),
+        )
+        .replace(
+            "[manoeuvre]",
+            "[model]\nload_transfer = false\n\n[manoeuvre]",
+        );
+    let sc = dir.join("linear_sedan.toml");
+    fs::write(&sc, edit(base)).unwrap();
+    let o = run(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    String::from_utf8_lossy(&o.stdout).into_owned() + &stderr(&o)
+}
+
+/// A linear tyre fitted at 2000–4000 N, on the sedan's 4507 N front
+/// wheels: `simulate` warned "6001 of 6001 rows take the front tyres
+/// outside the ranges … there, wheel loads 4507 to 4507 N". A linear
+/// tyre's force has no load term: no load is extrapolated, nothing said;
+/// its slip-angle range is still held to.
+#[test]
+fn a_linear_tyre_has_no_load_range_to_extrapolate() {
+    let dir = tempfile::tempdir().unwrap();
+    let tyre = "model = \"linear\"\ncornering_stiffness = 57296.0\n\n[fitted_ranges]\nfz = [2000.0, 4000.0]\nalpha = [-0.1, 0.1]\n";
+    let e = linear_sedan(dir.path(), tyre, &|s| s);
+    assert!(!e.contains("wheel load"), "{e}");
+    assert!(!e.contains("outside the ranges"), "{e}");
+    // At 0.3 rad the slip angles leave the fitted ±0.1 rad: said, with
+    // no load range.
+    let e = linear_sedan(dir.path(), tyre, &|s| {
+        s.replace("steer = 0.0174533", "steer = 0.3")
+    });
+    assert!(
+        e.contains(
+            "outside the ranges of the rig data they were fitted to (alpha -0.1000 to 0.1000 rad;"
+        ),
+        "{e}"
+    );
+    assert!(!e.contains("wheel load"), "{e}");
+}
+
+/// A Gim tyre fitted at 2000–4000 N on the same wheels: its loads are
+/// extrapolated, and the one load it runs at (no load transfer) was said
+/// as a range, "wheel loads 4507 to 4507 N"; now "a wheel load of 4507 N".
+#[test]
+fn one_load_beyond_the_fitted_range_is_said_as_one_load() {
+    let dir = tempfile::tempdir().unwrap();
+    let gim = fs::read_to_string(root().join("tyres/gim_sedan_front.toml")).unwrap();
+    let tyre = format!("{gim}\n[fitted_ranges]\nfz = [2000.0, 4000.0]\n");
+    let e = linear_sedan(dir.path(), &tyre, &|s| s);
+    assert!(e.contains("there, a wheel load of 4507 N"), "{e}");
+    assert!(!e.contains("4507 to 4507"), "{e}");
+}
+
+/// The sedan's 0.5 rad step on linear tyres: `simulate` said "the front
+/// axle slides … past the peak of any tyre's curve" of a tyre with no
+/// peak, and nothing of its 5.5 g steady lateral acceleration. Now the
+/// axles run "beyond the linear tyre's range of validity", and "the
+/// lateral acceleration reaches 5.52 g" beyond the 1.5 g any tyre gives.
+#[test]
+fn a_linear_tyre_never_slides_and_its_impossible_lateral_acceleration_is_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let tyre = fs::read_to_string(root().join("tyres/linear.toml")).unwrap();
+    let e = linear_sedan(dir.path(), &tyre, &|s| {
+        s.replace("steer = 0.0174533", "steer = 0.5")
+    });
+    assert!(!e.contains("slides"), "{e}");
+    assert!(!e.contains("the car is sliding"), "{e}");
+    for axle in ["front", "rear"] {
+        assert!(
+            e.contains(&format!(
+                "the {axle} axle runs beyond the linear tyre's range of validity"
+            )),
+            "{e}"
+        );
+    }
+    assert!(
+        e.contains("the lateral acceleration reaches 5.52 g (54.1 m/s²)")
+            && e.contains("is 5.49 g at the end of the run")
+            && e.contains("beyond the 1.5 g any tyre gives"),
+        "{e}"
+    );
+}
+
+/// An oversteering car on linear tyres (rear 20 kN/rad) stepped above its
+/// critical speed, small-angle kinematics, to 6.5 s: its rear slip angle
+/// was printed as "reaches 203.7°". Slip angles are now said within
+/// (−180°, 180°].
+#[test]
+fn slip_angles_are_said_within_half_a_turn() {
+    let dir = tempfile::tempdir().unwrap();
+    let soft = dir.path().join("soft.toml");
+    fs::write(&soft, "model = \"linear\"\ncornering_stiffness = 20000.0\n").unwrap();
+    let tyre = fs::read_to_string(root().join("tyres/linear.toml")).unwrap();
+    let e = linear_sedan(dir.path(), &tyre, &|s| {
+        let rear = s.rfind("rear = ").unwrap();
+        let end = rear + s[rear..].find('\n').unwrap();
+        format!("{}rear = \"{}\"{}", &s[..rear], soft.display(), &s[end..])
+            .replace(
+                "load_transfer = false",
+                "load_transfer = false\nkinematics = \"small-angle\"",
+            )
+            .replace("end = 6.0", "end = 6.5")
+    });
+    let said: Vec<f64> = e
+        .split("slip angle reaches ")
+        .skip(1)
+        .map(|s| s[..s.find('°').unwrap()].parse().unwrap())
+        .collect();
+    assert_eq!(said.len(), 2, "{e}");
+    assert!(
+        said.iter().all(|a| *a > -180.0 && *a <= 180.0),
+        "{said:?}: {e}"
+    );
+}

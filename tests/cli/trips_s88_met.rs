@@ -220,3 +220,69 @@ fn slip_angles_are_said_within_half_a_turn() {
         "{said:?}: {e}"
     );
 }
+
+/// The sedan's step at 100 Hz with its speed as `speed(t)` (m/s) written
+/// to `dir/name`.
+fn with_speed(dir: &Path, name: &str, speed: &dyn Fn(f64) -> f64) -> PathBuf {
+    let history = sedan_history(dir);
+    let mut out = String::new();
+    for (k, line) in run_text(&history, 10, None).lines().enumerate() {
+        let mut cells: Vec<String> = line.split(',').map(String::from).collect();
+        if k > 0 {
+            cells[1] = speed(cells[0].parse().unwrap()).to_string();
+        }
+        out += &(cells.join(",") + "\n");
+    }
+    let path = dir.join(name);
+    fs::write(&path, out).unwrap();
+    path
+}
+
+/// A run whose speed rose from 10 m/s in its first 0.5 s and was held at
+/// 22.2 m/s from there, 0.5 s before the steer's onset: `metrics` warned
+/// "the speed rises over the measured piece, between 17.33 and 22.22 m/s".
+/// The response the metrics measure runs at one speed: no warning.
+#[test]
+fn a_run_up_before_the_step_is_no_speed_change_of_the_response() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = with_speed(dir.path(), "runup.csv", &|t| {
+        if t < 0.5 {
+            10.0 + (22.2222 - 10.0) * t / 0.5
+        } else {
+            22.2222
+        }
+    });
+    let (_, warnings) = metrics_json(&p);
+    assert!(
+        !warnings.iter().any(|w| w.contains("speed rises")),
+        "{warnings:?}"
+    );
+    // A speed that rises over the response is still said.
+    let p = with_speed(dir.path(), "rising.csv", &|t| 20.0 + 0.8 * t);
+    let (_, warnings) = metrics_json(&p);
+    assert!(
+        warnings.iter().any(|w| w.starts_with("the speed rises over the measured piece")),
+        "{warnings:?}"
+    );
+}
+
+/// A log that starts from rest and climbs 0→5 m/s in 0.2 s: its slow span
+/// was counted as "1 standstill span" ("standstill 0.00–0.19 s … at most
+/// 4.75 m/s"). It stood below 0.5 m/s on 2 of its 20 samples: a crawl.
+#[test]
+fn a_climb_from_rest_is_a_crawl_not_a_standstill() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = with_speed(dir.path(), "climb.csv", &|t| {
+        if t < 0.2 {
+            25.0 * t
+        } else if t < 0.5 {
+            5.0 + (22.2222 - 5.0) * (t - 0.2) / 0.3
+        } else {
+            22.2222
+        }
+    });
+    let (j, _) = metrics_json(&p);
+    let slow = j["cleaning"]["slow"].as_array().unwrap();
+    assert_eq!(slow.len(), 1, "{}", j["cleaning"]);
+    assert_eq!(slow[0]["kind"], "crawl", "{}", j["cleaning"]);
+}

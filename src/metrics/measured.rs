@@ -478,8 +478,8 @@ fn measured_speed_varies(
         .collect();
     let tenth = (read.len() / 10).max(1);
     let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
-    let rising = mean(&read[read.len().saturating_sub(tenth)..])
-        >= mean(&read[..tenth.min(read.len())]);
+    let rising =
+        mean(&read[read.len().saturating_sub(tenth)..]) >= mean(&read[..tenth.min(read.len())]);
     let mut sorted = read;
     sorted.sort_by(f64::total_cmp);
     super::applicability::varying_speed(&sorted, rising)

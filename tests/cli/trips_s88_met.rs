@@ -261,7 +261,9 @@ fn a_run_up_before_the_step_is_no_speed_change_of_the_response() {
     let p = with_speed(dir.path(), "rising.csv", &|t| 20.0 + 0.8 * t);
     let (_, warnings) = metrics_json(&p);
     assert!(
-        warnings.iter().any(|w| w.starts_with("the speed rises over the measured piece")),
+        warnings
+            .iter()
+            .any(|w| w.starts_with("the speed rises over the measured piece")),
         "{warnings:?}"
     );
 }

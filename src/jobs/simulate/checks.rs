@@ -9,7 +9,8 @@
 //!   (10°) anywhere in a ramp, sine, sweep or schedule, where the tyres
 //!   use at least [`KINEMATIC_GRIP`] of their grip (below it the sideslip
 //!   is a slow car's turn, said as such); and in any
-//!   manoeuvre an axle's slip angle beyond [`SLIDING_SLIP`] (15°), past the
+//!   manoeuvre an axle's slip angle beyond
+//!   [`SLIDING_SLIP`](super::limits::SLIDING_SLIP) (15°), past the
 //!   peak of any road or racing tyre's curve (3–10°): a front axle
 //!   ploughing on with the body barely turned, which the sideslip misses.
 //! - **a car on two wheels**: both wheels of one side off the ground at
@@ -44,10 +45,6 @@ use crate::sim::TimeHistory;
 use crate::tyre::mf::{MagicFormula, TyreSide};
 use crate::tyre::{Tyre, TyreModel};
 use std::f64::consts::TAU;
-
-/// The axle slip angle beyond which the axle slides, rad (15°): past the
-/// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
-pub(crate) const SLIDING_SLIP: f64 = 15.0 * std::f64::consts::PI / 180.0;
 
 /// What `simulate` says: notes (facts of the run) and warnings (where the
 /// run is not what its words suggest).

@@ -10,11 +10,14 @@
 //! `α = δ − β − a·r/u` of a spinning car runs past a turn. Units: rad,
 //! m/s², N; printed in degrees and g.
 
-use super::checks::SLIDING_SLIP;
 use crate::constants::G;
 use crate::io::Scenario;
 use crate::sim::TimeHistory;
 use std::f64::consts::{PI, TAU};
+
+/// The axle slip angle beyond which the axle slides, rad (15°): past the
+/// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
+pub(crate) const SLIDING_SLIP: f64 = 15.0 * PI / 180.0;
 
 /// The most lateral acceleration any tyre gives, in g of the car's load
 /// on the road (its weight plus down-force): a racing slick's friction on

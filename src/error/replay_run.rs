@@ -36,6 +36,19 @@ pub enum ReplayRunProblem {
         /// The steered samples.
         samples: usize,
     },
+    /// A `degrees` entry naming a steer or yaw rate the run logs in
+    /// radians: the yaw rate then reads 57× off a neutral car's for its
+    /// steer (smaller for a yaw rate, larger for a steer).
+    DeclaredInDegrees {
+        /// The run file.
+        run: Box<str>,
+        /// The column declared (`steer` or `yaw_rate`).
+        column: &'static str,
+        /// Median of r·l/(u·δ) over the steered samples, as declared.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+    },
     /// A `degrees` entry naming a column the run does not have.
     DegreesAbsent {
         /// The run file.
@@ -74,6 +87,21 @@ impl fmt::Display for ReplayRunProblem {
                     false => "far smaller".into(),
                 }
             ),
+            ReplayRunProblem::DeclaredInDegrees { run, column, median, samples } => {
+                let (what, unit) = match *column {
+                    "steer" => ("a steer in radians read as degrees makes it 57× larger", "radians"),
+                    _ => ("a yaw rate in rad/s read as deg/s makes it 57× smaller", "rad/s"),
+                };
+                write!(
+                    f,
+                    "`manoeuvre.degrees` declares `{column}` in degrees: so read, the run {run}'s yaw rate is {} a neutral car's for its steer (median r·l/(u·δ) = {} over {samples} steered samples), as {what}: the run logs `{column}` in {unit}; take `\"{column}\"` out of `degrees` under [manoeuvre]",
+                    match *median < 1.0 {
+                        true => format!("{}× smaller than", crate::format::significant(1.0 / median.max(1e-9), 2)),
+                        false => format!("{}×", crate::format::significant(*median, 2)),
+                    },
+                    crate::format::significant(*median, 3)
+                )
+            }
             ReplayRunProblem::DegreesAbsent { run, column, header } => {
                 write!(
                     f,

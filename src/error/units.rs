@@ -187,6 +187,23 @@ pub enum UnitSlip {
         /// Turning samples judged.
         samples: usize,
     },
+    /// A steer or yaw rate declared in degrees that was in radians, as the
+    /// yaw rate against the steer says (r·l/(u·δ) 57× off a neutral car's:
+    /// a yaw rate in rad/s read as deg/s is 57× smaller, a steer in
+    /// radians read as degrees 57× smaller, its yaw rate 57× larger).
+    #[error("column `{column}`, declared in degrees by {declared}: so read, the yaw rate is {} a neutral car's for this steer (median r·l/(u·δ) = {} over {samples} steered samples{}), as {} makes it 57× {}: the column is in {} (FORMATS.md); leave out {declared}", if *median < 1.0 { format!("{}× smaller than", significant(1.0 / median.max(1e-9), 2)) } else { format!("{}×", significant(*median, 2)) }, significant(*median, 3), wheelbase.map_or(String::new(), |l| format!(", with l = {} m, {} any car's wheelbase", Num(l), if *median < 1.0 { "longer than" } else { "shorter than" })), if *column == "steer" { "a steer in radians read as degrees" } else { "a yaw rate in rad/s read as deg/s" }, if *column == "steer" { "larger" } else { "smaller" }, if *column == "steer" { "radians" } else { "rad/s" })]
+    DeclaredInDegrees {
+        /// The column declared (`steer` or `yaw_rate`).
+        column: &'static str,
+        /// The declaration, as the user wrote it (`` `--degrees steer` ``).
+        declared: &'static str,
+        /// Median of r·l/(u·δ) over the steered samples.
+        median: f64,
+        /// The steered samples.
+        samples: usize,
+        /// The wheelbase l taken when the vehicle's is not known, m.
+        wheelbase: Option<f64>,
+    },
     /// A sideslip declared in degrees that was in radians.
     #[error("column `beta`: {} as read, declared in degrees, is a median {} of what a car turning as this one does shows (3 m × yaw_rate/speed + 0.1 rad per g of speed × yaw_rate) over {}: a car's is 0.08–0.5 of it, so the column was already in radians; drop `beta` from the columns declared in degrees", Num(*value), fixed(*median, 4), plural(*samples, "turning sample", "turning samples"))]
     BetaDeclaredInDegrees {

@@ -11,6 +11,7 @@ use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
 
+mod declared;
 pub(super) mod filter_speed;
 mod noise_said;
 mod steps;
@@ -85,6 +86,7 @@ pub fn run_with_degrees(
     let (mut run, mut m) = match measured_step_metrics(run.clone(), min_speed, settings) {
         Ok(m) => (run, m),
         Err(e) => {
+            let e = declared::name_declaration(e, degrees);
             let (run, m, said) = first_of_several(run, min_speed, settings).ok_or(e)?;
             dead.push(said);
             (run, m)

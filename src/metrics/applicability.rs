@@ -176,7 +176,13 @@ pub fn applicability_with_grip(
         let share = grip
             .zip(m.ay_steady)
             .map(|(g, ay)| (ay.abs() / g.accel(), g));
+        let gripless = matches!(overshoot, Some(Overshoot::NoGripLimit));
         out.push(match (share.filter(|s| s.0 < KINEMATIC_GRIP), speed) {
+            // Linear tyres have no grip to slide past.
+            _ if gripless => format!(
+                "the steady sideslip is {:.1}°, beyond 10°: on linear tyres, which have no peak and never slide, a turn this tight takes slip angles beyond a linear tyre's range of validity (a real tyre's force peaks at 3–10°), and the step-steer metrics describe no car (a smaller steer step measures the handling)",
+                beta.to_degrees()
+            ),
             (Some((share, g)), Some(u)) => format!(
                 "the steady sideslip is {:.1}°, beyond 10°, {}",
                 beta.to_degrees(),

@@ -457,6 +457,34 @@ fn filled_steady(piece: &MeasuredRun, window: f64) -> Option<String> {
     })
 }
 
+/// The warning of a speed that changes over the response the metrics
+/// measure in `piece`: from `pre_window` before the steer's time zero to
+/// the piece's end. A run-up before it (the initial window reads the
+/// straight running, whose yaw rate and ay are zero at any speed) mixes
+/// no speeds into a response. Which way the speed went: the last tenth
+/// of those samples against their first.
+fn measured_speed_varies(
+    piece: &MeasuredRun,
+    m: &StepMetrics,
+    settings: &MetricSettings,
+) -> Option<String> {
+    let from = m.time_zero - settings.pre_window;
+    let read: Vec<f64> = piece
+        .t
+        .iter()
+        .zip(&piece.speed)
+        .filter(|(t, u)| **t >= from && u.is_finite())
+        .map(|(_, u)| *u)
+        .collect();
+    let tenth = (read.len() / 10).max(1);
+    let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
+    let rising =
+        mean(&read[read.len().saturating_sub(tenth)..]) >= mean(&read[..tenth.min(read.len())]);
+    let mut sorted = read;
+    sorted.sort_by(f64::total_cmp);
+    super::applicability::varying_speed(&sorted, rising)
+}
+
 /// Cleans `run`, finds the piece with a steer step and measures it.
 pub fn measured_step_metrics(
     run: MeasuredRun,
@@ -534,12 +562,6 @@ pub fn measured_step_metrics(
         .copied()
         .filter(|u| u.is_finite())
         .collect();
-    // Which way the speed went, while the speeds are in time order: the
-    // last tenth of the piece against its first.
-    let tenth = (speeds.len() / 10).max(1);
-    let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
-    let rising = mean(&speeds[speeds.len().saturating_sub(tenth)..])
-        >= mean(&speeds[..tenth.min(speeds.len())]);
     speeds.sort_by(f64::total_cmp);
     let speed = speeds.get(speeds.len() / 2).copied();
     // The largest |β| the piece logs: a spinning car's passes a slide's.
@@ -553,7 +575,7 @@ pub fn measured_step_metrics(
         speed,
         largest_sideslip,
     ));
-    warnings.extend(super::applicability::varying_speed(&speeds, rising));
+    warnings.extend(measured_speed_varies(&piece, &metrics, settings));
     warnings.extend(speed.and_then(|u| small_gain(&metrics, u)));
     warnings.extend(metrics.settling_warning());
     warnings.extend(metrics.settling.not_judged_warnings());

@@ -442,6 +442,7 @@ mod trips_s87_lead;
 mod trips_s88_cal;
 mod trips_s88_idn;
 mod trips_s88_lead;
+mod trips_s88_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -329,19 +329,16 @@ fn a_steer_declared_in_degrees_that_was_in_radians_is_refused_as_a_yaw_rate_no_c
         e.contains("the yaw rate is ")
             && e.contains("× a neutral car's for this steer")
             && e.contains("with l = 1 m, shorter than any car's wheelbase")
-            && e.contains("was a column declared in degrees already in radians?"),
+            && e.contains("leave out `--degrees steer`"),
         "{e}"
     );
     // Read as logged, the same run is measured.
     assert!(metrics(&p, &[]).0);
-    // A yaw rate declared in deg/s that was in rad/s: the steer's message
-    // names that too.
+    // A yaw rate declared in deg/s that was in rad/s: the message names
+    // that declaration.
     let (ok, _, e) = metrics(&p, &["--degrees", "yaw_rate"]);
     assert!(!ok);
-    assert!(
-        e.contains("or `yaw_rate` declared in degrees while it was in rad/s?"),
-        "{e}"
-    );
+    assert!(e.contains("leave out `--degrees yaw_rate`"), "{e}");
 }
 
 #[test]
@@ -418,9 +415,10 @@ fn a_replay_whose_steer_is_declared_in_degrees_but_was_in_radians_is_refused() {
     assert!(!o.status.success());
     let e = stderr(&o);
     assert!(
-        e.contains("run.csv: the yaw rate is ")
-            && e.contains("× a neutral car's for this steer")
-            && e.contains("was a column declared in degrees already in radians?"),
+        e.contains("replay.toml:")
+            && e.contains("the run run.csv's yaw rate is ")
+            && e.contains("× a neutral car's for its steer")
+            && e.contains("take `\"steer\"` out of `degrees` under [manoeuvre]"),
         "{e}"
     );
 }

@@ -69,7 +69,11 @@ pub(super) fn resolve(
         return Err(InputError::problem(run_path, p));
     }
     if let Some(y) = yaw_per_neutral(&read, wheelbase, r.min_speed) {
-        match steer_problem(&y, Wheelbase::Known(wheelbase)) {
+        let problem = steer_problem(&y, Wheelbase::Known(wheelbase));
+        if let Some(e) = problem.as_ref().and_then(|p| declared_wrong(src, r, p)) {
+            return Err(e);
+        }
+        match problem {
             Some(InputProblem::SteerAboveYaw {
                 median, samples, ..
             }) => {
@@ -129,6 +133,30 @@ pub(super) fn resolve(
 fn at_key(src: &TomlSource, key: &str, p: ReplayRunProblem) -> InputError {
     let problem = InputProblem::Scenario(Box::new(ScenarioProblem::ReplayRun(p)));
     src.located(src.key_span(key), problem)
+}
+
+/// A yaw rate 57× off a neutral car's for the steer ([`steer_problem`])
+/// where `degrees` declares the culprit (a yaw rate read 57× small, a
+/// steer whose yaw rate reads 57× large), refused at that entry of the
+/// scenario: it, not the run, is what to mend.
+fn declared_wrong(src: &TomlSource, r: &ReplaySpec, p: &InputProblem) -> Option<InputError> {
+    let (column, median, samples) = match *p {
+        InputProblem::SteerAboveYaw {
+            median, samples, ..
+        } => (AngleColumn::YawRate, median, samples),
+        InputProblem::YawAboveSteer {
+            median, samples, ..
+        } => (AngleColumn::Steer, median, samples),
+        _ => return None,
+    };
+    let k = r.degrees.iter().position(|c| *c == column)?;
+    let p = ReplayRunProblem::DeclaredInDegrees {
+        run: r.run.display().to_string().into(),
+        column: column.name(),
+        median,
+        samples,
+    };
+    Some(at_key(src, &format!("manoeuvre.degrees[{k}]"), p))
 }
 
 /// A `degrees` entry the run lacks, refused at that entry of the

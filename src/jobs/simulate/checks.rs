@@ -9,7 +9,8 @@
 //!   (10°) anywhere in a ramp, sine, sweep or schedule, where the tyres
 //!   use at least [`KINEMATIC_GRIP`] of their grip (below it the sideslip
 //!   is a slow car's turn, said as such); and in any
-//!   manoeuvre an axle's slip angle beyond [`SLIDING_SLIP`] (15°), past the
+//!   manoeuvre an axle's slip angle beyond
+//!   [`SLIDING_SLIP`](super::limits::SLIDING_SLIP) (15°), past the
 //!   peak of any road or racing tyre's curve (3–10°): a front axle
 //!   ploughing on with the body barely turned, which the sideslip misses.
 //! - **a car on two wheels**: both wheels of one side off the ground at
@@ -35,6 +36,7 @@
 //!
 //! Units: rad, rad/s, N, s; printed in degrees where a driver reads them.
 
+use super::limits::wrapped;
 use crate::io::fitted_ranges::{past_by, FittedRanges, RangePoint, SLACK};
 use crate::io::Scenario;
 use crate::manoeuvre::Manoeuvre;
@@ -43,10 +45,6 @@ use crate::sim::TimeHistory;
 use crate::tyre::mf::{MagicFormula, TyreSide};
 use crate::tyre::{Tyre, TyreModel};
 use std::f64::consts::TAU;
-
-/// The axle slip angle beyond which the axle slides, rad (15°): past the
-/// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
-pub(crate) const SLIDING_SLIP: f64 = 15.0 * std::f64::consts::PI / 180.0;
 
 /// What `simulate` says: notes (facts of the run) and warnings (where the
 /// run is not what its words suggest).
@@ -79,20 +77,24 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         said.warnings
             .extend(steady_at_limit(h, mu, sc.integrator.friction));
     }
-    said.warnings.extend(axle_sliding(h));
+    said.warnings
+        .extend(super::limits::axle_sliding(h, static_friction(sc)));
+    said.warnings.extend(super::limits::beyond_any_tyre(sc, h));
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
     said.warnings.extend(tir_friction(sc));
     let [front, rear] = super::nominal_load::far_from_nominal(sc);
     said.warnings.extend(per_axle_tir(front, rear));
     said.warnings.extend(variance_window(sc));
+    let tyres = [&sc.model.front, &sc.model.rear];
     for (axle, ranges) in sc.fitted_ranges.iter().enumerate() {
         if let Some(r) = ranges {
+            let r = load_free(r, tyres[axle]);
             said.warnings
-                .extend(beyond_fitted(axle, r, RangeSource::Fitted, h));
+                .extend(beyond_fitted(axle, &r, RangeSource::Fitted, h));
         }
     }
-    for (axle, tyre) in [&sc.model.front, &sc.model.rear].into_iter().enumerate() {
+    for (axle, tyre) in tyres.into_iter().enumerate() {
         if let Tyre::MagicFormula(t) = tyre {
             let source = RangeSource::Tir {
                 held: t.options.limit_checks,
@@ -103,6 +105,17 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
         }
     }
     said
+}
+
+/// `r` without its load range where `tyre` is linear: its force
+/// `C_α·α` has no load term, so a wheel load beyond the loads it was
+/// fitted at extrapolates nothing.
+fn load_free(r: &FittedRanges, tyre: &Tyre) -> FittedRanges {
+    let mut r = *r;
+    if matches!(tyre, Tyre::Linear(_)) {
+        r.fz = None;
+    }
+    r
 }
 
 /// A `.tir` whose pure curves peak above
@@ -260,23 +273,6 @@ fn steady_at_limit(h: &TimeHistory, mu: [f64; 2], road: f64) -> Option<String> {
     })
 }
 
-/// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest,
-/// when, and from when.
-fn axle_sliding(h: &TimeHistory) -> Vec<String> {
-    [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
-        .into_iter()
-        .filter_map(|(axle, alpha)| {
-            let (a, i, from) = largest_beyond(alpha, SLIDING_SLIP)?;
-            Some(format!(
-                "the {axle} axle's slip angle reaches {:.1}° at t = {:.2} s (beyond 15° from t = {:.2} s), past the peak of any tyre's curve: the {axle} axle slides, and the response is no handling response",
-                a.to_degrees(),
-                h.t[i],
-                h.t[from]
-            ))
-        })
-        .collect()
-}
-
 /// Both wheels of one side off the ground at the same row: the first such
 /// row.
 fn on_two_wheels(h: &TimeHistory) -> Option<String> {
@@ -421,6 +417,7 @@ fn ranges_text(r: &FittedRanges) -> String {
         .filter_map(|(name, unit, range)| {
             let [lo, hi] = range?;
             Some(match (lo.is_finite(), hi.is_finite()) {
+                (true, true) if n(lo) == n(hi) => format!("{name} {}{unit} only", n(lo)),
                 (true, true) => format!("{name} {} to {}{unit}", n(lo), n(hi)),
                 (true, false) => format!("{name} ≥ {}{unit}", n(lo)),
                 (false, true) => format!("{name} ≤ {}{unit}", n(hi)),
@@ -462,7 +459,7 @@ fn beyond_fitted(
         .filter(|&i| {
             wheels
                 .iter()
-                .any(|fz| r.outside(&point(fz[i], alpha[i]), share))
+                .any(|fz| r.outside(&point(fz[i], wrapped(alpha[i])), share))
         })
         .collect();
     if rows.is_empty() {
@@ -480,19 +477,25 @@ fn beyond_fitted(
     let mut what = Vec::new();
     let loads = rows.iter().flat_map(|&i| wheels.iter().map(move |w| w[i]));
     if let Some((lo, hi)) = extent(&mut loads.filter(|&v| v > 0.0 && out_of(r.fz, v))) {
-        what.push(format!("wheel loads {lo:.0} to {hi:.0} N"));
+        what.push(match format!("{lo:.0}") == format!("{hi:.0}") {
+            true => format!("a wheel load of {lo:.0} N"),
+            false => format!("wheel loads {lo:.0} to {hi:.0} N"),
+        });
     }
     if let Some((lo, hi)) = extent(
         &mut rows
             .iter()
-            .map(|&i| alpha[i])
+            .map(|&i| wrapped(alpha[i]))
             .filter(|&v| out_of(r.alpha, v)),
     ) {
-        what.push(format!(
-            "slip angles {lo:.4} to {hi:.4} rad ({:.2}° to {:.2}°)",
-            lo.to_degrees(),
-            hi.to_degrees()
-        ));
+        what.push(match format!("{lo:.4}") == format!("{hi:.4}") {
+            true => format!("a slip angle of {lo:.4} rad ({:.2}°)", lo.to_degrees()),
+            false => format!(
+                "slip angles {lo:.4} to {hi:.4} rad ({:.2}° to {:.2}°)",
+                lo.to_degrees(),
+                hi.to_degrees()
+            ),
+        });
     }
     if out_of(r.kappa, 0.0) {
         what.push("a slip ratio of 0".into());

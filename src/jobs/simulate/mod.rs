@@ -7,6 +7,7 @@
 pub(crate) mod checks;
 mod critical;
 mod idle_effects;
+mod limits;
 pub(crate) mod nominal_load;
 mod straight;
 mod transient;

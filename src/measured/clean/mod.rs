@@ -44,8 +44,9 @@
 //!   interpolation in time across the glitch, so the replay is not kicked;
 //!   in response channels (yaw rate, ay, beta) the sample is masked: left out
 //!   of fits and scores.
-//! - Samples slower than `min_speed` (a standstill when the car stops in
-//!   the span, below [`STANDSTILL_SPEED`]; else a crawl) are excluded: the model is a
+//! - Samples slower than `min_speed` (a standstill when the car stands,
+//!   below [`STANDSTILL_SPEED`], over at least half the span; else a crawl,
+//!   a climb from rest among them) are excluded: the model is a
 //!   driving model, and at a standstill its output chatters on sensor noise.
 //!   The moving pieces they leave are replayed separately; in a diagnosis
 //!   pieces shorter than [`MIN_RUN_SECONDS`] or [`MIN_RUN_SAMPLES`] are

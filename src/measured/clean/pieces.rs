@@ -182,7 +182,12 @@ pub fn clean_run(
             }
             if slow {
                 let max_speed = part.speed[i..j].iter().copied().fold(f64::MIN, f64::max);
-                let min_speed = part.speed[i..j].iter().copied().fold(f64::MAX, f64::min);
+                // Stopped for at least half the span: a climb from rest
+                // through the crawl speeds is a crawl, not a standstill.
+                let stopped = part.speed[i..j]
+                    .iter()
+                    .filter(|u| u.abs() < STANDSTILL_SPEED)
+                    .count();
                 report.samples_slow += j - i;
                 report.slow.push(SlowSpan {
                     run: name.clone(),
@@ -190,7 +195,7 @@ pub fn clean_run(
                     t_end: part.t[j - 1],
                     samples: j - i,
                     max_speed,
-                    kind: if min_speed < STANDSTILL_SPEED {
+                    kind: if 2 * stopped >= j - i {
                         SlowKind::Standstill
                     } else {
                         SlowKind::Crawl

@@ -310,9 +310,10 @@ pub struct Glitch {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SlowKind {
-    /// The car stopped in it (below 0.5 m/s at some sample).
+    /// The car stood in it (below 0.5 m/s over at least half its samples).
     Standstill,
-    /// The car crawled below the minimum speed without stopping.
+    /// The car moved below the minimum speed for most of the span: a
+    /// crawl, or a climb from rest.
     Crawl,
 }
 

@@ -1,0 +1,124 @@
+//! What no tyre gives, said by `simulate` of the run: an axle's slip angle
+//! beyond [`SLIDING_SLIP`] (15°), past the peak of any road or racing
+//! tyre's curve, said as a slide on a tyre with a friction limit and as
+//! beyond the range of validity on a linear tyre (whose `C_α·α` has no
+//! peak and never slides, but holds only at small slip angles); and a
+//! lateral acceleration beyond [`ANY_TYRE_AY`] g of the car's weight plus
+//! its down-force (a racing slick on a dry road reaches about 1.5 g
+//! without down-force), which a linear tyre gives at any steer. Slip
+//! angles are printed wrapped to (−180°, 180°]: the small-angle model's
+//! `α = δ − β − a·r/u` of a spinning car runs past a turn. Units: rad,
+//! m/s², N; printed in degrees and g.
+
+use crate::constants::G;
+use crate::io::Scenario;
+use crate::sim::TimeHistory;
+use std::f64::consts::{PI, TAU};
+
+/// The axle slip angle beyond which the axle slides, rad (15°): past the
+/// peak of road tyres (3–8°) and racing slicks (6–10°) alike.
+pub(crate) const SLIDING_SLIP: f64 = 15.0 * PI / 180.0;
+
+/// The most lateral acceleration any tyre gives, in g of the car's load
+/// on the road (its weight plus down-force): a racing slick's friction on
+/// a dry road is about 1.5–1.7, a road tyre's 0.9–1.1.
+pub(super) const ANY_TYRE_AY: f64 = 1.5;
+
+/// `a` (rad) wrapped to (−π, π].
+pub(super) fn wrapped(a: f64) -> f64 {
+    let w = a - TAU * ((a + PI) / TAU).floor();
+    // `floor` puts an odd multiple of π at −π: the interval is open there.
+    if w <= -PI {
+        w + TAU
+    } else {
+        w
+    }
+}
+
+/// A wrapped angle `a` (rad) in degrees to 0.1°, a turn's −180.0° (the
+/// rounding of −179.96°) said as 180.0°: the interval is (−180°, 180°].
+fn degrees(a: f64) -> String {
+    match format!("{:.1}", a.to_degrees()) {
+        s if s == "-180.0" => "180.0".into(),
+        s => s,
+    }
+}
+
+/// Each axle whose slip angle goes beyond [`SLIDING_SLIP`]: its largest
+/// (wrapped), when, and from when; `friction` is each axle's peak
+/// friction coefficient, infinite for a tyre with no limit (linear).
+pub(super) fn axle_sliding(h: &TimeHistory, friction: [f64; 2]) -> Vec<String> {
+    [("front", &h.alpha_front), ("rear", &h.alpha_rear)]
+        .into_iter()
+        .zip(friction)
+        .filter_map(|((axle, alpha), mu)| {
+            let from = alpha.iter().position(|v| wrapped(*v).abs() > SLIDING_SLIP)?;
+            let (i, a) = alpha
+                .iter()
+                .map(|v| wrapped(*v))
+                .enumerate()
+                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
+            let reach = format!(
+                "the {axle} axle's slip angle reaches {}° at t = {:.2} s (beyond 15° from t = {:.2} s)",
+                degrees(a),
+                h.t[i],
+                h.t[from]
+            );
+            Some(match mu.is_finite() {
+                true => format!(
+                    "{reach}, past the peak of any tyre's curve: the {axle} axle slides, and the response is no handling response"
+                ),
+                false => format!(
+                    "{reach}: its tyres are linear, with no peak, and never slide, but a linear tyre's force C_α·α holds at small slip angles only (a real tyre's peaks at 3–10°): the {axle} axle runs beyond the linear tyre's range of validity, and the response there is no car's"
+                ),
+            })
+        })
+        .collect()
+}
+
+/// The largest |ay| of the run where it is beyond [`ANY_TYRE_AY`] g of the
+/// car's load on the road at that row (the history's four wheel loads,
+/// down-force included), with the last row's: a steady lateral
+/// acceleration no tyre gives.
+pub(super) fn beyond_any_tyre(sc: &Scenario, h: &TimeHistory) -> Option<String> {
+    let mass = sc.model.vehicle.mass;
+    let limit = |k: usize| {
+        let load: f64 = h.fz.iter().map(|w| w[k]).sum();
+        ANY_TYRE_AY * load.max(mass * G) / mass
+    };
+    let (k, ay) =
+        h.ay.iter()
+            .enumerate()
+            .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
+    (ay.abs() > limit(k)).then(|| {
+        let last = h.len() - 1;
+        format!(
+            "the lateral acceleration reaches {} g ({} m/s²) at t = {:.2} s and is {} g at the end of the run (t = {:.2} s): beyond the {ANY_TYRE_AY} g any tyre gives (a racing slick on a dry road; a road tyre gives about 1 g), of the car's weight{}: the tyres are driven far past any tyre's grip, and the run describes no car",
+            crate::format::fixed(ay.abs() / G, 2),
+            crate::format::rounded(ay.abs(), 3),
+            h.t[k],
+            crate::format::fixed(h.ay[last].abs() / G, 2),
+            h.t[last],
+            match limit(k) > ANY_TYRE_AY * G * (1.0 + 1e-9) {
+                true => " and its down-force",
+                false => "",
+            }
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn angles_wrap_into_the_half_open_turn() {
+        let deg = |d: f64| d.to_radians();
+        assert!((wrapped(deg(194.3)) - deg(-165.7)).abs() < 1e-12);
+        assert!((wrapped(deg(-194.3)) - deg(165.7)).abs() < 1e-12);
+        assert_eq!(wrapped(PI), PI);
+        assert!((wrapped(-PI) - PI).abs() < 1e-12);
+        assert!((wrapped(deg(28.3)) - deg(28.3)).abs() < 1e-15);
+        assert!((wrapped(deg(540.0)) - PI).abs() < 1e-12);
+    }
+}

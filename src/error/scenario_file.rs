@@ -45,6 +45,16 @@ pub enum ScenarioProblem {
     ReplayRun(super::ReplayRunProblem),
     /// An RK4 step beyond the method's stability limit for the model.
     UnstableStep(super::UnstableStep),
+    /// An error-controlled integration that spent its step budget before
+    /// the manoeuvre's end.
+    Stalled {
+        /// Where it stopped, s.
+        at: f64,
+        /// The manoeuvre's end, s.
+        end: f64,
+        /// The steps it took.
+        steps: usize,
+    },
     /// A study's cornering stiffness in the other unit than its `unit`.
     StiffnessUnit(super::StiffnessSlip),
     /// A `name` that is no folder name: `simulate` writes into
@@ -80,6 +90,10 @@ impl fmt::Display for ScenarioProblem {
             ScenarioProblem::LongReplay(r) => r.fmt(f),
             ScenarioProblem::ReplayRun(r) => r.fmt(f),
             ScenarioProblem::UnstableStep(u) => u.fmt(f),
+            ScenarioProblem::Stalled { at, end, steps } => write!(
+                f,
+                "the integration (Dormand–Prince) stalled at t = {at:.3} s of {end:.3} s: {steps} steps, its step driven towards zero by a model that is not smooth there (a wheel lifting off under load transfer, or forces far beyond any tyre's: linear tyres at a large steer); nothing is written. A smaller manoeuvre keeps the car in the model's range; `method = \"rk4\"` with a fixed `step` runs through and its rows show where the run leaves it"
+            ),
             ScenarioProblem::StiffnessUnit(s) => s.fmt(f),
             ScenarioProblem::NameNotAFolder { name } => write!(
                 f,

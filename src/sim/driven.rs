@@ -528,8 +528,12 @@ impl Integrator {
         sys.progress = progress.map(|c| Counted::new(c, t0, self.step, 0));
         let sol = ode::dopri5(&mut sys, t0, t1, x0, &manoeuvre.breakpoints(), tol);
         let mut hist = TimeHistory::with_capacity(n + 1, N > 4);
+        // A stalled integration's rows end where it stopped: beyond, the
+        // dense output would be its last step's polynomial extrapolated.
+        let end = if sol.stats.stalled { sol.end() } else { t1 };
         let times: Vec<f64> = (0..=n)
             .map(|i| (t0 + i as f64 * self.step).min(t1))
+            .filter(|&t| t <= end)
             .collect();
         let mut states = Vec::new();
         sol.states_into(&times, &mut states);

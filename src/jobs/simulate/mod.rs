@@ -18,7 +18,7 @@ use crate::diagnose::campaign::StatedUncertainty;
 use crate::diagnose::report::gap::{run_gap, ChannelGap};
 use crate::diagnose::report::trust::channel_trust;
 use crate::diagnose::report::{words, ChannelNoise};
-use crate::error::{Error, PieceRefusal};
+use crate::error::{Error, InputError, InputProblem, PieceRefusal, ScenarioProblem};
 use crate::io::{load_scenario, Scenario};
 use crate::manoeuvre::Manoeuvre;
 use crate::measured::clean::CleaningReport;
@@ -125,6 +125,20 @@ const OWN: OwnSet = OwnSet {
     families: &[],
 };
 
+/// Refuses a run whose integration stalled before the manoeuvre's end
+/// ([`crate::sim::ode::step_budget`]): its history would end there.
+fn refuse_stalled(path: &Path, sc: &Scenario, sim: &Simulation) -> Result<(), Error> {
+    let Some(w) = sim.work.filter(|w| w.stalled) else {
+        return Ok(());
+    };
+    let problem = ScenarioProblem::Stalled {
+        at: sim.history.t.last().copied().unwrap_or(f64::NAN),
+        end: sc.manoeuvre.end_time(),
+        steps: w.accepted + w.rejected,
+    };
+    Err(InputError::problem(path, InputProblem::Scenario(Box::new(problem))).into())
+}
+
 /// Simulates the scenario of the file `path`; `out` is the output folder
 /// (default `out/<scenario name>`), checked against the inputs first.
 /// Everything is computed before anything is written
@@ -142,6 +156,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<SimulateReport, Error> {
         sc.integrator
             .simulate_counted(&sc.model, &sc.manoeuvre, sc.initial, counter)
     };
+    refuse_stalled(path, &sc, &sim)?;
     let h = &sim.history;
     let integration = integration_words(&sc, &sim);
     let metrics = match sc.manoeuvre {

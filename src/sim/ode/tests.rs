@@ -280,3 +280,37 @@ fn rosenbrock_w_follows_a_very_stiff_solution_where_rk4_explodes() {
     // The stage nodes are the published ones' sums.
     assert!((W_NODES[2] - 0.731_579_957_788_852_4).abs() < 1e-15);
 }
+
+/// ẋ = −sign(x): from 1 the state reaches 0 at t = 1 and then chatters
+/// about it, a right-hand side with no smooth solution to follow, as a
+/// wheel lifting and landing under load transfer gives.
+struct Chatter;
+
+impl OdeSystem<1> for Chatter {
+    fn derivatives(&mut self, _t: f64, x: &[f64; 1]) -> [f64; 1] {
+        [-x[0].signum()]
+    }
+}
+
+#[test]
+fn an_integration_that_cannot_follow_its_model_stops_at_its_step_budget() {
+    let tol = Tolerances::default();
+    let sol = dopri5(&mut Chatter, 0.0, 3.0, [1.0], &[], &tol);
+    assert!(sol.stats.stalled, "{:?}", sol.stats);
+    assert_eq!(
+        sol.stats.accepted + sol.stats.rejected,
+        step_budget(3.0, &tol)
+    );
+    // It stopped near the switch, having followed the smooth part.
+    assert!(sol.end() >= 1.0 - 1e-6 && sol.end() < 3.0, "{}", sol.end());
+    assert!((sol.state(0.5)[0] - 0.5).abs() < 1e-9);
+    // A smooth run spends a small share of the budget and is not stalled.
+    let mut o = Oscillator {
+        omega: 12.0,
+        zeta: 0.3,
+        calls: 0,
+    };
+    let smooth = dopri5(&mut o, 0.0, 3.0, [1.0, 0.0], &[], &tol);
+    assert!(!smooth.stats.stalled);
+    assert!(smooth.stats.accepted < step_budget(3.0, &tol) / 100);
+}

@@ -436,12 +436,15 @@ pub enum InputProblem {
         required: bool,
     },
     /// A run whose yaw rate turns against its steer.
-    #[error("the yaw rate turns against the steer (median r·l/(u·δ) = {median:.2} over {samples} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; is `steer` or `yaw_rate` in another sign convention? negate it")]
+    #[error("the yaw rate turns against the steer (median r·l/(u·δ) = {median:.2} over {samples} steered samples): FORMATS.md's ISO 8855 signs give a positive yaw rate for a positive (left) steer; {}", reversed_channel(*ay_with_steer))]
     YawAgainstSteer {
         /// Median of r·l/(u·δ) over the steered samples.
         median: f64,
         /// The steered samples.
         samples: usize,
+        /// The share of them whose `ay` turns with the steer, where the
+        /// run has `ay`.
+        ay_with_steer: Option<f64>,
     },
     /// A yaw rate that does not follow the steer: it turns with it on no
     /// more samples than against it, or holds one value wherever the steer
@@ -572,3 +575,14 @@ fn read_from(written: Option<&str>, base: &std::path::Path) -> String {
 #[cfg(test)]
 #[path = "problem_tests.rs"]
 mod tests;
+
+/// Which channel a yaw rate against the steer is in, by the run's `ay`
+/// (`ay = u·r` in a steady turn): with the steer on 80 % of the steered
+/// samples or more, the yaw rate; against it on as many, the steer.
+fn reversed_channel(ay_with_steer: Option<f64>) -> String {
+    match ay_with_steer {
+        Some(w) if w >= 0.8 => format!("the run's `ay` turns with the steer on {:.0} % of them: `yaw_rate` is in the other sign convention; negate it", 100.0 * w),
+        Some(w) if w <= 0.2 => format!("the run's `ay` turns with the yaw rate, against the steer on {:.0} % of them: `steer` is in the other sign convention; negate it", 100.0 * (1.0 - w)),
+        _ => "is `steer` or `yaw_rate` in another sign convention? negate it".to_string(),
+    }
+}

@@ -137,6 +137,7 @@ pub fn yaw_per_neutral(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Opt
         with_steer,
         against,
         one_value: crate::measured::one_value(&yaw),
+        ay_with_steer: YawPerNeutral::ay_with_steer(run, &samples),
     })
 }
 
@@ -189,22 +190,7 @@ pub fn dead_steer(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<I
     })
 }
 
-/// A run's yaw rate against a neutral car's where its steer is held
-/// ([`yaw_per_neutral`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct YawPerNeutral {
-    /// The median of `r·l/(u·δ)`.
-    pub median: f64,
-    /// The held steered samples it is taken over.
-    pub samples: usize,
-    /// Their share whose yaw rate turns with the steer (`r·δ > 0`).
-    pub with_steer: f64,
-    /// Their share whose yaw rate turns against it (`r·δ < 0`).
-    pub against: f64,
-    /// The one value the yaw rate holds over all of them, if it holds one
-    /// (a sensor frozen after the step), rad/s.
-    pub one_value: Option<f64>,
-}
+pub use super::yaw_per_neutral::YawPerNeutral;
 
 /// The share of held steered samples a yaw rate must turn on one side of
 /// the steer to follow it: a steer in degrees or a steering-wheel angle
@@ -259,7 +245,11 @@ pub fn steer_problem(y: &YawPerNeutral, wheelbase: Wheelbase) -> Option<InputPro
         ),
     };
     let units = if median < -STEER_IN_DEGREES {
-        Some(InputProblem::YawAgainstSteer { median, samples })
+        Some(InputProblem::YawAgainstSteer {
+            median,
+            samples,
+            ay_with_steer: y.ay_with_steer,
+        })
     } else if median < STEER_IN_DEGREES {
         Some(InputProblem::SteerAboveYaw {
             median,

@@ -198,3 +198,65 @@ fn a_run_the_integrator_cannot_follow_is_refused_where_it_stalls_not_run_for_eve
     );
     assert!(!out.join("history.csv").exists());
 }
+
+/// `text` (a run file's) with column `k` (0-based) negated, or dropped.
+fn column_edited(text: &str, k: usize, drop: bool) -> String {
+    let mut out = String::new();
+    for (row, line) in text.lines().enumerate() {
+        let mut cells: Vec<String> = line.split(',').map(String::from).collect();
+        if drop {
+            cells.remove(k);
+        } else if row > 0 {
+            cells[k] = format!("{}", -cells[k].parse::<f64>().unwrap());
+        }
+        out += &(cells.join(",") + "\n");
+    }
+    out
+}
+
+/// A yaw rate against the steer was answered "is `steer` or `yaw_rate` in
+/// another sign convention?" even where the run's `ay` says which: in a
+/// steady turn ay = u·r, so an `ay` with the steer makes the yaw rate the
+/// reversed channel, and one with the yaw rate the steer. Without `ay` the
+/// question stays.
+#[test]
+fn a_yaw_rate_against_the_steer_is_blamed_on_the_channel_ay_disagrees_with() {
+    use super::sedan_runs::{run_text, sedan_history};
+    let dir = tempfile::tempdir().unwrap();
+    let history = sedan_history(dir.path());
+    let text = run_text(&history, 20, None);
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
+    let cases = [
+        (
+            "yaw.csv",
+            column_edited(&text, col("yaw_rate"), false),
+            "`yaw_rate` is in the other sign convention; negate it",
+        ),
+        (
+            "steer.csv",
+            column_edited(&text, col("steer"), false),
+            "`steer` is in the other sign convention; negate it",
+        ),
+        (
+            "no_ay.csv",
+            column_edited(
+                &column_edited(&text, col("yaw_rate"), false),
+                col("ay"),
+                true,
+            ),
+            "is `steer` or `yaw_rate` in another sign convention? negate it",
+        ),
+    ];
+    for (name, body, said) in cases {
+        let p = dir.path().join(name);
+        fs::write(&p, body).unwrap();
+        let o = run(&["metrics", p.to_str().unwrap()]);
+        assert!(!o.status.success(), "{name}");
+        let e = stderr(&o);
+        assert!(
+            e.contains("the yaw rate turns against the steer") && e.contains(said),
+            "{name}: {e}"
+        );
+    }
+}

@@ -184,14 +184,17 @@ pub enum OutputError {
 
 impl OutputError {
     /// [`OutputError::IsAFolder`] where the file to write, `path`, names a
-    /// folder that exists (`stem.extension` the name offered in it), checked
-    /// before the job's work rather than at the rename after it.
+    /// folder: one that exists, or any path written with a trailing `/`
+    /// (`stem.extension` the name offered in it), checked before the job's
+    /// work rather than at the rename after it ("Not a directory").
     pub fn unless_a_file(
         path: &std::path::Path,
         stem: &'static str,
         extension: &'static str,
     ) -> Result<(), OutputError> {
-        match path.is_dir() {
+        let written = path.as_os_str().to_string_lossy();
+        let as_folder = written.ends_with('/') || written.ends_with(std::path::MAIN_SEPARATOR);
+        match path.is_dir() || as_folder {
             true => Err(OutputError::IsAFolder {
                 path: path.to_path_buf(),
                 stem,

@@ -260,3 +260,44 @@ fn a_yaw_rate_against_the_steer_is_blamed_on_the_channel_ay_disagrees_with() {
         );
     }
 }
+
+/// `tyre-eval … --out outdir/` (a folder not yet made, written as one)
+/// ended after the evaluation with "cannot move into place: Not a
+/// directory (os error 20)"; `identify` likewise. A path written with a
+/// trailing `/` names a folder, refused before the work as an existing
+/// folder is, with the file to name in it.
+#[test]
+fn an_output_file_written_as_a_folder_is_refused_before_the_work() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = format!("{}/outdir/", dir.path().display());
+    let o = run(&[
+        "tyre-eval",
+        "tyres/pac89_adams_example.toml",
+        "docs/examples/tyre_points.csv",
+        "--out",
+        &out,
+    ]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains(&format!(
+            "{out}: is a folder; name the file to write in it (e.g. {out}forces.csv)"
+        )) || e.contains(&format!(
+            "{out}: is a folder; name the file to write in it (e.g. {}/outdir/forces.csv)",
+            dir.path().display()
+        )),
+        "{e}"
+    );
+    let o = run(&[
+        "identify",
+        "docs/examples/tyre_points.csv",
+        "--model",
+        "pac89",
+        "--out",
+        &out,
+    ]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(e.contains(&format!("{out}: is a folder")), "{e}");
+    assert!(!dir.path().join("outdir").exists());
+}

@@ -301,3 +301,41 @@ fn an_output_file_written_as_a_folder_is_refused_before_the_work() {
     assert!(e.contains(&format!("{out}: is a folder")), "{e}");
     assert!(!dir.path().join("outdir").exists());
 }
+
+/// A right-side `.tir` (`TYRESIDE = 'RIGHT'`, the public MF 6.1 file) is
+/// evaluated mirrored into a left tyre, as the book says; a tester who
+/// evaluated the file's equations by hand for a right tyre got −158.0 N at
+/// zero slip where `tyre-eval` wrote +158.0 N, with no word of the
+/// mirroring. It is said now; a left file gets no such line.
+#[test]
+fn a_right_side_tir_is_said_to_be_evaluated_mirrored() {
+    let test = "a_right_side_tir_is_said_to_be_evaluated_mirrored";
+    let (Some(right), Some(left)) = (
+        shared_data(test, "tir_public/MagicFormula61_Paramerters.tir"),
+        shared_data(test, "tir_public/car205_60R19.tir"),
+    ) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("points.csv");
+    fs::write(
+        &points,
+        "fz,kappa,alpha,camber,speed\n4000,0,0,0,16.7\n4000,0,0.05,0,16.7\n",
+    )
+    .unwrap();
+    let said = "the file's TYRESIDE is 'RIGHT': the tyre is evaluated mirrored into a left one";
+    for (tir, mirrored) in [(right, true), (left, false)] {
+        let out = dir.path().join("f.csv");
+        let o = run(&[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            points.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let e = stderr(&o);
+        assert!(o.status.success(), "{e}");
+        let all = String::from_utf8_lossy(&o.stdout).into_owned() + &e;
+        assert_eq!(all.contains(said), mirrored, "{}: {all}", tir.display());
+    }
+}

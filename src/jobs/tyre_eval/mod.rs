@@ -102,9 +102,6 @@ pub struct TyreEvalReport {
     pub count: usize,
     /// The tyre model.
     pub model: &'static str,
-    /// A `.tir` of `TYRESIDE = 'RIGHT'`, evaluated mirrored into a left
-    /// tyre: said, as its forces are not the file's own equations'.
-    pub mirrored: bool,
     /// MFeval's `useMode` the Magic Formula was evaluated in (`None` for
     /// other models).
     pub mode: Option<u32>,
@@ -381,7 +378,6 @@ pub fn run(
         points: points.display().to_string(),
         count,
         model: tyre.model_name(),
-        mirrored: matches!(&tyre, crate::tyre::Tyre::MagicFormula(m) if m.side == crate::tyre::mf::TyreSide::Right),
         mode,
         clamped,
         below_fzmin,
@@ -418,9 +414,6 @@ impl TyreEvalReport {
     /// not read, and the points beyond the ranges the tyre was fitted to.
     pub fn warnings(&self) -> Vec<String> {
         let mut out: Vec<String> = self.unread.iter().map(|u| u.line(self.model)).collect();
-        if self.mirrored {
-            out.insert(0, "the file's TYRESIDE is 'RIGHT': the tyre is evaluated mirrored into a left one (its camber and slip angle taken in the left tyre's signs), as the book's Magic Formula chapter says; the forces written are that tyre's, not the file's equations evaluated as written".into());
-        }
         out.extend(self.unfitted_lateral.iter().map(|u| u.line(self.count)));
         out.extend(self.peak_friction.iter().map(|p| p.to_string()));
         out.extend(unread::not_written_line(&self.not_written));

@@ -205,9 +205,9 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
     })
 }
 
-/// The folder whose every `*.csv` is read as a run, as [`run_files`]
-/// lists them: `[runs] dir`, or a campaign folder's `runs/` where no
-/// files are listed.
+/// The folder whose every `*.csv` is read as a run (by [`run_files`],
+/// and kept on the campaign so no output is written into it): `[runs]
+/// dir`, or a campaign folder's `runs/` where no files are listed.
 fn runs_folder(runs: Option<&RunSpec>, base: &Path, path: &Path, folder: bool) -> Option<PathBuf> {
     match runs {
         Some(RunSpec { dir: Some(d), .. }) => Some(beside(base, d)),

@@ -62,12 +62,7 @@ pub(super) fn run_files(
     if let Some(d) = &run_spec.dir {
         src.referenced_folder("runs.dir", &beside(base, d))?;
     }
-    let dir = run_spec
-        .dir
-        .as_ref()
-        .map(|d| beside(base, d))
-        .or_else(|| (folder && files.is_empty()).then(|| path.join("runs")));
-    if let Some(d) = dir {
+    if let Some(d) = super::runs_folder(runs, base, path, folder) {
         let entries = std::fs::read_dir(&d).map_err(|source| InputError::Io {
             path: d.clone(),
             source,

@@ -65,7 +65,13 @@ fn a_right_side_tir_says_on_its_closing_line_that_it_is_mirrored() {
     // At zero slip (the first point) the right file's fy is the opposite
     // of the left's, not zero: what the tester's hand value showed.
     assert!(r[0][at(head, "fy")].abs() > 10.0, "{:?}", r[0]);
-    for (name, sign) in [("fx", 1.0), ("fy", -1.0), ("mz", -1.0), ("mx", -1.0), ("my", 1.0)] {
+    for (name, sign) in [
+        ("fx", 1.0),
+        ("fy", -1.0),
+        ("mz", -1.0),
+        ("mx", -1.0),
+        ("my", 1.0),
+    ] {
         let c = at(head, name);
         for (a, b) in r.iter().zip(l) {
             assert!(
@@ -82,7 +88,7 @@ fn a_right_side_tir_says_on_its_closing_line_that_it_is_mirrored() {
 /// within ±45°, so no degrees question was asked, and a Magic Formula
 /// file then held it to its `CAMMAX` with a range warning (no word of
 /// the unit). A column whose every camber other than 0 is steeper than
-/// 15° (no car tyre's, in radians) is asked as degrees now, each such cell
+/// 20° (no car tyre's, in radians) is asked as degrees now, each such cell
 /// at its file, line and column with its value; a column with a car's
 /// camber (0.1 rad) beside a steep one is in radians, and evaluated.
 #[test]
@@ -90,7 +96,7 @@ fn a_camber_column_in_degrees_within_45_radians_is_asked_as_degrees() {
     let dir = scratch(&[
         (
             "deg.csv",
-            "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n4000,0,0.05,0.5,20\n4000,0,0.05,-0.3,20\n",
+            "fz,kappa,alpha,camber,speed\n4000,0,0.05,0,20\n4000,0,0.05,0.5,20\n4000,0,0.05,-0.4,20\n",
         ),
         (
             "rad.csv",
@@ -101,20 +107,32 @@ fn a_camber_column_in_degrees_within_45_radians_is_asked_as_degrees() {
     let out = dir.path().join("f.csv");
     let o = run_in(
         dir.path(),
-        &["tyre-eval", tir.to_str().unwrap(), "deg.csv", "--out", "f.csv"],
+        &[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            "deg.csv",
+            "--out",
+            "f.csv",
+        ],
     );
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
-    for (cell, value) in [("deg.csv:3:4", "0.5"), ("deg.csv:4:4", "-0.3")] {
+    for (cell, value) in [("deg.csv:3:4", "0.5"), ("deg.csv:4:4", "-0.4")] {
         assert!(
-            e.contains(&format!("{cell}: column `camber`: {value} rad is beyond ±15°: angles are in radians (FORMATS.md); is the column in degrees?")),
+            e.contains(&format!("{cell}: column `camber`: {value} rad is beyond ±20°: angles are in radians (FORMATS.md); is the column in degrees?")),
             "{e}"
         );
     }
     assert!(!out.exists());
     let o = run_in(
         dir.path(),
-        &["tyre-eval", tir.to_str().unwrap(), "rad.csv", "--out", "f.csv"],
+        &[
+            "tyre-eval",
+            tir.to_str().unwrap(),
+            "rad.csv",
+            "--out",
+            "f.csv",
+        ],
     );
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(out.exists());
@@ -139,7 +157,9 @@ fn a_rig_files_units_row_is_quoted_with_its_first_cell() {
     let dir = scratch(&[("rig.csv", &rig)]);
     let o = run_in(
         dir.path(),
-        &["identify", "rig.csv", "--model", "linear", "--out", "t.toml"],
+        &[
+            "identify", "rig.csv", "--model", "linear", "--out", "t.toml",
+        ],
     );
     let e = stderr(&o);
     assert!(!o.status.success(), "{e}");
@@ -147,4 +167,32 @@ fn a_rig_files_units_row_is_quoted_with_its_first_cell() {
         e.contains("rig.csv:2:2: column `fz`: no cell of this row is a number (`s, N, rad, rad, N, Nm, Pa, m/s`): a row of units under the header?"),
         "{e}"
     );
+}
+
+/// The gap map's small dots (each run's share, base model) had no key and
+/// looked like the verdict's discs. Each channel's are keyed now, in every
+/// panel (report.html's drawing of `gap_map.png`).
+#[test]
+fn the_gap_maps_run_dots_have_a_key_of_their_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let c = synth_campaign(
+        dir.path(),
+        "c",
+        &["--effects", "sensor_delay", "--seed", "1"],
+    );
+    let out = dir.path().join("d");
+    diagnose_to(&c, &out);
+    let page = fs::read_to_string(out.join("report.html")).unwrap();
+    // The key wraps a long entry over lines: the drawn texts, joined.
+    let texts: Vec<&str> = page
+        .split('>')
+        .filter_map(|t| t.split('<').next())
+        .map(str::trim)
+        .filter(|t| !t.is_empty())
+        .collect();
+    let page = texts.join(" ");
+    for ch in ["yaw rate r", "lateral acceleration a_y", "sideslip β"] {
+        let key = format!("{ch}, each run, base model");
+        assert_eq!(page.matches(&key).count(), 3, "{key}");
+    }
 }

@@ -422,7 +422,14 @@ fn a_load_condition_is_named_by_its_rounded_nominal_in_every_panel() {
     let mut rows = Vec::new();
     for fz in [3999.0, 6002.0] {
         for i in -20..=20 {
-            rows.push(row(&t, fz, 0.0, (0.5 * f64::from(i)).to_radians(), 0.0, 0.0));
+            rows.push(row(
+                &t,
+                fz,
+                0.0,
+                (0.5 * f64::from(i)).to_radians(),
+                0.0,
+                0.0,
+            ));
         }
     }
     for a in [3f64.to_radians(), 8f64.to_radians()] {
@@ -444,7 +451,11 @@ fn a_load_condition_is_named_by_its_rounded_nominal_in_every_panel() {
         "{combined:?}"
     );
     for p in &fig.panels {
-        let said = p.series.iter().map(|s| s.label.as_str()).chain([p.title.as_str()]);
+        let said = p
+            .series
+            .iter()
+            .map(|s| s.label.as_str())
+            .chain([p.title.as_str()]);
         for l in said {
             assert!(!l.contains("3999") && !l.contains("4001"), "{l}");
         }

@@ -20,7 +20,7 @@
 //! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
 //! road speed), a slip angle beyond ±90° or a camber beyond ±45° (said as degrees where
 //! it reads as an angle in degrees, and a camber column whose every tilt is
-//! steeper than 15° asked as degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
+//! steeper than 20° asked as degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
 //! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
 //! forwards, so the speed is its size (a Magic Formula's own sign of the
 //! speed, which flips its `fy` and `my`, stays inside its model), and a

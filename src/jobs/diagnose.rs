@@ -438,8 +438,8 @@ const GAP_MAP_WIDTH: u32 = 640;
 
 /// One channel's series on one axis of the gap map: the parts pooled with
 /// the base model (dotted, rings) and with the verdict's `effects` (solid,
-/// discs), then each run's share with the base model (dots, no key: the
-/// axis label names them). `pts` sorted by level.
+/// discs), then each run's share with the base model (small dots, keyed
+/// apart from the verdict's discs). `pts` sorted by level.
 fn channel_series(
     ch: Channel,
     colour: usize,
@@ -485,8 +485,17 @@ fn channel_series(
         );
     }
     // Over the pooled marks: a run whose level is the pool's shows as a
-    // dot inside its ring.
-    out.push(Series::line("", &run_x, &run_y, colour).styled(Style::Points(2)));
+    // dot inside its ring. Keyed, so that a run's small dot is not read as
+    // the verdict's disc.
+    out.push(
+        Series::line(
+            &format!("{name}, each run, base model"),
+            &run_x,
+            &run_y,
+            colour,
+        )
+        .styled(Style::Points(2)),
+    );
     out
 }
 
@@ -555,7 +564,8 @@ fn gap_figure(effects: &[EffectKind], points: &[GapPoint], without_ay: bool) -> 
         panels,
         columns: 1,
         width: GAP_MAP_WIDTH,
-        row_height: 360,
+        // Room for the key's ten entries, each run's among them.
+        row_height: 400,
     }
 }
 

@@ -43,10 +43,13 @@ fn the_gap_map_is_three_panels_legible_in_print() {
         [
             "yaw rate r, base model",
             "yaw rate r, with sensor_delay",
+            "yaw rate r, each run, base model",
             "lateral acceleration a_y, base model",
             "lateral acceleration a_y, with sensor_delay",
+            "lateral acceleration a_y, each run, base model",
             "sideslip β, base model",
             "sideslip β, with sensor_delay",
+            "sideslip β, each run, base model",
             "3 × noise floor"
         ]
     );
@@ -54,15 +57,19 @@ fn the_gap_map_is_three_panels_legible_in_print() {
     // part, half a unit of margin.
     assert_eq!(time.axes().x, (-0.25, 2.75));
     // The windows are points, not a line; the bands a joined profile; each
-    // run's share a dot without a key, drawn over its channel's pools at
-    // its own level.
+    // run's share a small dot, keyed apart from the verdict's discs, drawn
+    // over its channel's pools at its own level.
     for (panel, joined) in fig.panels.iter().zip([false, true, true]) {
-        for s in panel.series.iter().filter(|s| !s.label.is_empty()).take(6) {
+        let pooled = panel.series.iter().filter(|s| s.marker.is_some());
+        for s in pooled {
             let points = matches!(s.style, Style::Points(_));
             assert_eq!(points, !joined, "{}: {:?}", panel.title, s.style);
         }
         let runs = &panel.series[2];
-        assert_eq!((runs.label.as_str(), runs.style), ("", Style::Points(2)));
+        assert_eq!(
+            (runs.label.as_str(), runs.style, runs.marker),
+            ("yaw rate r, each run, base model", Style::Points(2), None)
+        );
         assert_eq!(
             (runs.x.clone(), runs.y.clone()),
             (vec![0.25, 1.25, 1.25, 2.25], vec![5.5, 4.5, 4.5, 3.5])

@@ -121,11 +121,10 @@ fn units_row(
         && cells
             .iter()
             .all(|c| !c.is_empty() && c.parse::<f64>().is_err());
-    // Quoted as the file has it, in its own column order (the wanted
-    // columns are in the tool's).
-    let mut own: Vec<(usize, &str)> = wanted.iter().map(|(i, _)| *i).zip(cells).collect();
-    own.sort_by_key(|(i, _)| *i);
-    let quoted: Vec<&str> = own.iter().map(|(_, c)| *c).collect();
+    // Quoted as the file has it: every cell, in its own column order (the
+    // wanted columns are in the tool's, and a column the tool does not
+    // read, a rig's `t` first, would be left out of the quote).
+    let quoted: Vec<&str> = rec.iter().map(str::trim).collect();
     words.then(|| InputError::Cell {
         path: path.to_path_buf(),
         line,

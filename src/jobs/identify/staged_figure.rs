@@ -144,6 +144,11 @@ struct Levels {
 /// by the nominal of the grouping's level whose band holds it: the
 /// figure then names a level as the terminal does (534 N, not the 532 N
 /// its thinned rows average to).
+///
+/// Loads of rows not grouped (a file whose samples are its rows) are
+/// named by their nominal, the mean rounded to [`LOAD_NOMINAL`]: a rig
+/// holds a set load to a few newtons, and one condition whose rows a stage
+/// averages to 3999 N and another to 4001 N is one 4000 N condition.
 fn as_named(values: Vec<f64>, variable: Variable, named: &[Named]) -> Vec<f64> {
     match named.iter().find(|l| l.variable == variable) {
         Some(_) => {
@@ -153,9 +158,17 @@ fn as_named(values: Vec<f64>, variable: Variable, named: &[Named]) -> Vec<f64> {
                 .map(|v| names.nominal(variable, v))
                 .collect()
         }
+        None if variable == Variable::Load => values
+            .into_iter()
+            .map(|v| (v / LOAD_NOMINAL).round() * LOAD_NOMINAL)
+            .collect(),
         None => values,
     }
 }
+
+/// The step a load level's nominal is rounded to where the rows were
+/// not grouped, N: as `identify` rounds `FNOMIN` (the median load).
+const LOAD_NOMINAL: f64 = 10.0;
 
 impl Levels {
     fn of(rows: &[&MfRow], other: Slip, named: &[Named]) -> Self {

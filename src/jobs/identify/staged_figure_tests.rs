@@ -411,3 +411,53 @@ fn combined_lateral_sweeps_are_not_stretched_by_the_pure_longitudinal_ones() {
     assert!(combined.0 >= -12.0 && combined.1 <= 12.0, "{combined:?}");
     assert!(zero.0 <= -99.0 && zero.1 >= 99.0, "{zero:?}");
 }
+
+/// Rows not grouped (the samples are the rows) whose one 4000 N condition
+/// a stage averages to 3999 N and another to 4001 N: every panel names it
+/// 4000 N (the figure read "3999 N" in the pure Fy key and "Fz 4001 N" in
+/// the combined titles).
+#[test]
+fn a_load_condition_is_named_by_its_rounded_nominal_in_every_panel() {
+    let t = tyre();
+    let mut rows = Vec::new();
+    for fz in [3999.0, 6002.0] {
+        for i in -20..=20 {
+            rows.push(row(
+                &t,
+                fz,
+                0.0,
+                (0.5 * f64::from(i)).to_radians(),
+                0.0,
+                0.0,
+            ));
+        }
+    }
+    for a in [3f64.to_radians(), 8f64.to_radians()] {
+        for i in (-10..=10).filter(|&i| i != 0) {
+            rows.push(row(&t, 4001.0, 0.02 * f64::from(i), a, 0.0, 0.0));
+        }
+    }
+    let fig = staged_figure(&t, &[Stage::PureFy, Stage::CombinedFx], &rows, &[]);
+    let labels: Vec<&str> = fig.panels[0]
+        .series
+        .iter()
+        .map(|s| s.label.as_str())
+        .filter(|l| l.ends_with(" N"))
+        .collect();
+    assert_eq!(labels, ["4000 N", "6000 N"]);
+    let combined: Vec<&str> = fig.panels[1..].iter().map(|p| p.title.as_str()).collect();
+    assert!(
+        combined.iter().any(|t| t.contains("Fz 4000 N")),
+        "{combined:?}"
+    );
+    for p in &fig.panels {
+        let said = p
+            .series
+            .iter()
+            .map(|s| s.label.as_str())
+            .chain([p.title.as_str()]);
+        for l in said {
+            assert!(!l.contains("3999") && !l.contains("4001"), "{l}");
+        }
+    }
+}

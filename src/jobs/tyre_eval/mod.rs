@@ -19,7 +19,8 @@
 //! value, before anything is evaluated ([`PHYSICAL`]): a load beyond
 //! ±1 MN, a slip ratio beyond ±10 (a wheel spinning at eleven times the
 //! road speed), a slip angle beyond ±90° or a camber beyond ±45° (said as degrees where
-//! it reads as an angle in degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
+//! it reads as an angle in degrees, and a camber column whose every tilt is
+//! steeper than 20° asked as degrees), a speed beyond 300 m/s, a pressure above 5 MPa; and a negative speed: the points
 //! speak ISO 8855, whose slip angle within ±90° is a wheel rolling
 //! forwards, so the speed is its size (a Magic Formula's own sign of the
 //! speed, which flips its `fy` and `my`, stays inside its model), and a
@@ -85,7 +86,7 @@ use crate::io::fitted_ranges::FittedRanges;
 use crate::io::load_tyre_with_ranges;
 use crate::io::tir::set_tyre_mode;
 use crate::report::{refuse_overwrite, write_columns};
-use crate::tyre::mf::MfInput;
+use crate::tyre::mf::{MfInput, TyreSide};
 use crate::tyre::sizes::POINTS_MEDIAN_LOAD;
 use crate::tyre::Tyre;
 use columns::Outputs;
@@ -105,6 +106,13 @@ pub struct TyreEvalReport {
     /// MFeval's `useMode` the Magic Formula was evaluated in (`None` for
     /// other models).
     pub mode: Option<u32>,
+    /// A Magic Formula file's `TYRESIDE` (`None` for other models).
+    pub tyre_side: Option<TyreSide>,
+    /// Whether the file (`TYRESIDE = 'RIGHT'`) was mirrored into a left
+    /// tyre: its equations evaluated at −`alpha`, −`camber` and `fy`, `mz`,
+    /// `mx` negated (`tyre::mf`'s module docs). MFeval applies no
+    /// `TYRESIDE`: its outputs for such a file are the unmirrored ones.
+    pub mirrored: bool,
     /// Points outside the `.tir` file's ranges of load, slip, camber or
     /// pressure, evaluated at the ranges' ends (limit checks on; 0
     /// otherwise); a point only below `FZMIN` is not among them.
@@ -352,6 +360,10 @@ pub fn run(
         &file.lines,
     );
     not_carried::refuse_not_carried(points, &file, &extras.not_carried)?;
+    let tyre_side = match &tyre {
+        Tyre::MagicFormula(m) => Some(m.side),
+        _ => None,
+    };
     let (mode, clamped, ranges_left) = (extras.mode, extras.clamped, extras.ranges_left);
     let below_fzmin = extras.below_fzmin;
     // Every model gives no force off the road: said for each, not only
@@ -379,6 +391,8 @@ pub fn run(
         count,
         model: tyre.model_name(),
         mode,
+        tyre_side,
+        mirrored: tyre_side == Some(TyreSide::Right),
         clamped,
         below_fzmin,
         ranges_left,
@@ -515,14 +529,25 @@ impl TyreEvalReport {
         }
     }
 
+    /// A right-side file's mirroring, said in the closing line: a hand
+    /// evaluation of the file's equations (or MFeval's, which applies no
+    /// `TYRESIDE`) gives the opposite `fy` at zero slip.
+    fn mirrored_clause(&self) -> &'static str {
+        match self.mirrored {
+            true => "; the file's TYRESIDE is 'RIGHT': evaluated mirrored into a left tyre, as every tyre here (its equations at −alpha and −camber, with fy, mz and mx negated; MFeval applies no TYRESIDE)",
+            false => "",
+        }
+    }
+
     /// The closing line (with the mode and the points evaluated at the
     /// file's limits, for a Magic Formula).
     pub fn wrote(&self) -> String {
         let mode = match self.mode {
             Some(m) => format!(
-                " in MFeval mode {m}{}{}",
+                " in MFeval mode {m}{}{}{}",
                 self.held_at_ends(),
-                self.at_load_given()
+                self.at_load_given(),
+                self.mirrored_clause()
             ),
             None => String::new(),
         };

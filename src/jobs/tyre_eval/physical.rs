@@ -7,7 +7,18 @@
 //! file whose every load is negative, each load at its cell, as `identify`
 //! refuses a rig file's (a point at zero or negative load among positive
 //! ones is a wheel off the road, evaluated with no force).
+//!
+//! A camber column in degrees whose values stay within ±45° read in
+//! radians (0.5 meant as 0.5° reads as 28.6°) passes the range: it is asked
+//! as degrees, each cell beyond [`STEEP_CAMBER`] (20°) refused, where every
+//! camber of the column other than 0 lies beyond it — no car tyre is
+//! tested only at cambers steeper than any public `.tir`'s range (the
+//! steepest, `CAMMAX` 0.264 rad = 15.1°; MFeval's reference points just
+//! past it, 16.8°, are evaluated). A column with a camber of a car's size
+//! beside steeper ones is in radians: its steep points are evaluated and
+//! said (`camber.rs`, and a `.tir`'s ranges).
 
+use super::camber::STEEP_CAMBER;
 use crate::error::InputProblem;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
@@ -52,6 +63,14 @@ pub const PHYSICAL: [(&str, f64, f64, &str, &str); 6] = [
     ),
 ];
 
+/// Whether a camber column reads as degrees: some camber other than 0,
+/// and every one beyond [`STEEP_CAMBER`] (20°) read in radians.
+fn camber_in_degrees(values: &[f64]) -> bool {
+    let mut tilted = values.iter().filter(|v| v.is_finite() && **v != 0.0);
+    let first = tilted.next();
+    first.is_some_and(|v| v.abs() > STEEP_CAMBER) && tilted.all(|v| v.abs() > STEEP_CAMBER)
+}
+
 /// Every value of `values` (column `name`) outside its [`PHYSICAL`]
 /// range, a speed within it below 0, and every load of a column of
 /// negative loads: its row and the problem.
@@ -65,6 +84,7 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
     // `identify` says it of a rig file (`io/rig.rs`).
     let finite = || values.iter().filter(|v| v.is_finite());
     let every = name == "fz" && finite().count() > 0 && finite().all(|v| *v < 0.0);
+    let camber_degrees = name == "camber" && camber_in_degrees(values);
     let refused = |(i, &value): (usize, &f64)| {
         let problem = if name == "speed" && value < 0.0 {
             // A slip angle within ±90° already says the wheel rolls
@@ -75,6 +95,12 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
                 column,
                 value,
                 limit: hi,
+            }
+        } else if camber_degrees && (STEEP_CAMBER..=hi).contains(&value.abs()) {
+            InputProblem::AngleInDegrees {
+                column,
+                value,
+                limit: STEEP_CAMBER,
             }
         } else if !(lo..=hi).contains(&value) {
             InputProblem::NotPhysical {
@@ -107,4 +133,26 @@ pub(super) fn not_physical(name: &str, values: &[f64]) -> Vec<(usize, InputProbl
 fn in_degrees(value: f64, limit: f64) -> bool {
     let v = value.abs();
     v > limit + 1f64.to_radians() && v.to_radians() <= limit
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 0.5 and −0.4 beside 0 read as degrees; beside 0.1 (5.7°, a car's
+    /// camber) they are steep cambers in radians; 0.3 rad (17°, just past
+    /// a `.tir`'s range) alone, too.
+    #[test]
+    fn a_camber_column_reads_as_degrees_only_where_no_camber_is_a_cars() {
+        let asked = not_physical("camber", &[0.0, 0.5, -0.4]);
+        assert_eq!(asked.len(), 2, "{asked:?}");
+        assert!(matches!(
+            asked[0],
+            (1, InputProblem::AngleInDegrees { value: 0.5, .. })
+        ));
+        assert!(not_physical("camber", &[0.1, 0.5, -0.4]).is_empty());
+        assert!(not_physical("camber", &[0.0, 0.3, -0.3]).is_empty());
+        assert!(not_physical("camber", &[0.0, 0.0]).is_empty());
+        assert!(not_physical("alpha", &[0.0, 0.5]).is_empty());
+    }
 }

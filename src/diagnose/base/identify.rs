@@ -235,11 +235,9 @@ pub fn axle_grid_best<F: Fn(&[f64]) -> Augmented + Sync>(
             Some((b, _, _)) if *b > 0.0 => problem.cost_below(&p, *b),
             _ => problem.cost(&p),
         };
-        let lower = best.as_ref().is_none_or(|(b, k, _)| {
-            c.total_cmp(b)
-                .then_with(|| order.cmp(k))
-                .is_lt()
-        });
+        let lower = best
+            .as_ref()
+            .is_none_or(|(b, k, _)| c.total_cmp(b).then_with(|| order.cmp(k)).is_lt());
         if lower {
             problem.keep_last();
             best = Some((c, order, p));

@@ -236,10 +236,7 @@ impl Prepared {
             .into_iter()
             .find_map(|slot| {
                 let entry = slot.lock().unwrap_or_else(|e| e.into_inner());
-                entry
-                    .as_ref()
-                    .filter(|l| l.matches(model, start))
-                    .cloned()
+                entry.as_ref().filter(|l| l.matches(model, start)).cloned()
             })
             .or_else(|| shared.and_then(|(s, i)| s.find(i, model, start)));
         if let Some(l) = found {
@@ -348,7 +345,10 @@ const SHARED_ROWS: usize = 1_500_000;
 pub(crate) struct SharedReplays {
     /// Each shared set of replays (one slot per run, None where that run
     /// was not replayed), oldest first, and the rows they hold.
-    sets: Mutex<(std::collections::VecDeque<Vec<Option<Arc<LastReplay>>>>, usize)>,
+    sets: Mutex<(
+        std::collections::VecDeque<Vec<Option<Arc<LastReplay>>>>,
+        usize,
+    )>,
 }
 
 impl SharedReplays {

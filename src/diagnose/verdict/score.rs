@@ -442,8 +442,8 @@ impl<'a> Context<'a> {
     /// The start of a candidate's polish and how its global stage searched:
     /// the lowest cost of `starts` and of the global stage from the best of
     /// them (from the effect off without them) over the parameters
-    /// [`crate::diagnose::fit::layout::Layout::global_stage`] leaves free ([`global_best`]: a grid along one or
-    /// two parameters, a swarm with one particle at that point along more).
+    /// [`crate::diagnose::fit::layout::Layout::global_stage`] leaves free ([`global_best`]: a grid along one to
+    /// three parameters, a swarm with one particle at that point along more).
     /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
     /// grid is rerun at the global stage's effect values and, for an effect that

@@ -343,13 +343,13 @@ const SHARED_ROWS: usize = 1_500_000;
 /// oldest dropped first.
 #[derive(Default)]
 pub(crate) struct SharedReplays {
-    /// Each shared set of replays (one slot per run, None where that run
-    /// was not replayed), oldest first, and the rows they hold.
-    sets: Mutex<(
-        std::collections::VecDeque<Vec<Option<Arc<LastReplay>>>>,
-        usize,
-    )>,
+    /// Each shared set of replays, oldest first, and the rows they hold.
+    sets: Mutex<(std::collections::VecDeque<SharedSet>, usize)>,
 }
+
+/// One shared set of replays: one slot per run, None where that run was
+/// not replayed (or is shared already).
+type SharedSet = Vec<Option<Arc<LastReplay>>>;
 
 impl SharedReplays {
     /// Run `i`'s replay of `model` from `start`, if shared.
@@ -366,7 +366,7 @@ impl SharedReplays {
     /// Shares the last replays of `caches` (one per run, in the campaign's
     /// order), those already shared left out.
     pub(crate) fn share(&self, caches: &[ReplayCache]) {
-        let mut set: Vec<Option<Arc<LastReplay>>> = caches
+        let mut set: SharedSet = caches
             .iter()
             .map(|c| c.last.lock().unwrap_or_else(|e| e.into_inner()).clone())
             .collect();

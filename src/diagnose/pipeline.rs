@@ -463,6 +463,7 @@ fn run(
         progress,
         timing,
         derivatives: c.settings.derivatives,
+        shared: Default::default(),
     };
     let base = baseline(&ctx, &floors);
     let (j0, jn) = (base.j0, base.jn);

@@ -242,6 +242,12 @@ impl Pac89 {
 
     /// Lateral force with friction scaling applied to a curve.
     fn scaled(curve: CurveCoefficients, mu: f64, x: f64) -> f64 {
+        // The road's own friction (μ = 1, every replay but a road-friction
+        // candidate's) scales nothing: x/1 and x·1 are x exactly, so the
+        // division is left out, not the value changed.
+        if mu == 1.0 {
+            return magic_formula(curve.b, curve.c, curve.d, curve.e, x + curve.sh) + curve.sv;
+        }
         let k = if mu > 0.0 { mu } else { return 0.0 };
         magic_formula(curve.b / k, curve.c, curve.d * k, curve.e, x + curve.sh) + curve.sv * k
     }

@@ -129,7 +129,8 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
         assert!(top[key].is_number(), "{key}");
     }
     // The delay's one parameter is searched on a grid of nine cells (and
-    // the start); the three sensor offsets by a swarm.
+    // the start); the three sensor offsets on a grid of 3 × 3 × 3 (and
+    // the start); a roll effect with the roll dynamics (four) by a swarm.
     assert_eq!(
         top["global_search"],
         serde_json::json!({"kind": "grid", "per_parameter": 9, "points": 10})
@@ -141,8 +142,20 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
         .chain(d["ranking"].as_array().unwrap())
         .find(|r| r["effect"] == "sensor_bias")
         .expect("sensor_bias fitted");
-    assert_eq!(bias["global_search"]["kind"], "swarm", "{bias}");
-    assert!(bias["global_search"]["evaluations"].as_u64().unwrap() >= 10);
+    assert_eq!(
+        bias["global_search"],
+        serde_json::json!({"kind": "grid", "per_parameter": 3, "points": 28}),
+        "{bias}"
+    );
+    let roll = d["screened"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .chain(d["ranking"].as_array().unwrap())
+        .find(|r| r["effect"] == "roll_steer")
+        .expect("roll_steer fitted");
+    assert_eq!(roll["global_search"]["kind"], "swarm", "{roll}");
+    assert!(roll["global_search"]["evaluations"].as_u64().unwrap() >= 10);
     assert!(d["gap"]["significant"].as_bool().unwrap());
     assert!(d["confounded"].is_array());
     // Where the time went: wall and CPU seconds, threads, the phases; the

@@ -196,6 +196,56 @@ pub fn axle_grid<F: Fn(&[f64]) -> Augmented + Sync>(
     scored
 }
 
+/// The first of [`axle_grid`]'s points in its order (the lowest cost,
+/// the earlier grid point where two tie), with its cost, for a caller that
+/// needs only that: the same point and cost for a fraction of the
+/// replays. The points are replayed one after another from the grid point
+/// nearest `near` (the front and rear shares a start has) outwards, each
+/// only until its runs show it is not below the best so far
+/// ([`Residuals::cost_below`], which decides as the whole cost would; a
+/// point that ties is replayed whole): most of the grid lies far from the
+/// basin and is dropped after a run or two. The best's replays are kept
+/// ([`Residuals::keep_last`]). None for an empty grid.
+pub fn axle_grid_best<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    tail: &[f64],
+    near: &[f64],
+) -> Option<(f64, Vec<f64>)> {
+    let friction_share = problem.grid_friction(GRID_FRICTION);
+    let index = |x: f64| {
+        GRID.iter()
+            .enumerate()
+            .min_by(|a, b| (a.1 - x).abs().total_cmp(&(b.1 - x).abs()))
+            .map_or(0, |(k, _)| k) as i64
+    };
+    let centre = [near.first(), near.get(1)].map(|x| x.map_or(0, |&x| index(x)));
+    let n = GRID.len();
+    // (front, rear) grid indices in axle_grid's order, nearest the centre
+    // first (that order among equals).
+    let mut cells: Vec<(usize, usize)> = (0..n).flat_map(|f| (0..n).map(move |r| (f, r))).collect();
+    cells.sort_by_key(|&(f, r)| (f as i64 - centre[0]).abs() + (r as i64 - centre[1]).abs());
+    let mut best: Option<(f64, usize, Vec<f64>)> = None;
+    for (f, r) in cells {
+        let mut p = vec![GRID[f], GRID[r], friction_share];
+        p.extend_from_slice(tail);
+        let order = f * n + r;
+        // A best of zero cost would stop a tie at its first run: replayed
+        // whole then.
+        let c = match &best {
+            Some((b, _, _)) if *b > 0.0 => problem.cost_below(&p, *b),
+            _ => problem.cost(&p),
+        };
+        let lower = best
+            .as_ref()
+            .is_none_or(|(b, k, _)| c.total_cmp(b).then_with(|| order.cmp(k)).is_lt());
+        if lower {
+            problem.keep_last();
+            best = Some((c, order, p));
+        }
+    }
+    best.map(|(c, _, p)| (c, p))
+}
+
 /// Grid points of distinct basins: the best, then the next best that are
 /// not a grid neighbour of one already taken, up to `n`.
 fn distinct(scored: &[(f64, Vec<f64>)], n: usize) -> Vec<Vec<f64>> {

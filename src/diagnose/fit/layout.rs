@@ -81,7 +81,7 @@ impl Layout {
     /// and the added effect at its single fit, with the current set's
     /// effects off beside it (`search::extensions`), and the roll dynamics
     /// as its members fitted them: what is left unknown is where the added
-    /// effect sits beside the set, a grid along its one or two parameters
+    /// effect sits beside the set, a grid along its one to three parameters
     /// (the polish frees them all). A swarm over them and the roll dynamics
     /// spent 90–130 replays where a roll effect was in the set; over every
     /// effect parameter of the set, about 45 for the same optimum (the

@@ -20,7 +20,7 @@ use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::fit::prior_rows::PriorRows;
 use crate::diagnose::fit::tempering::Tempering;
 use crate::diagnose::model::channels::ChannelErrors;
-use crate::diagnose::model::replay::{Prepared, ReplayCache};
+use crate::diagnose::model::replay::{Prepared, ReplayCache, SharedReplays};
 use crate::diagnose::model::Augmented;
 use crate::optim::local::{inward_jacobian, Derivatives, Residuals};
 use crate::vehicle::Effects;
@@ -54,6 +54,9 @@ pub struct Problem<'a, F: Fn(&[f64]) -> Augmented + Sync> {
     layout: Option<(Layout, Effects)>,
     /// The prior's rows on the axle characteristics, after the data's.
     prior: Option<PriorRows>,
+    /// Replays shared with the diagnosis's other problems on all runs
+    /// ([`Problem::with_shared`]).
+    shared: Option<&'a SharedReplays>,
 }
 
 impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
@@ -76,6 +79,23 @@ impl<'a, F: Fn(&[f64]) -> Augmented + Sync> Problem<'a, F> {
             run_costs,
             layout: None,
             prior: None,
+            shared: None,
+        }
+    }
+
+    /// The same problem reading and sharing replays in `shared`, whose
+    /// slots are the campaign's runs in order: the problem's runs must be
+    /// all of them, in that order (a fit on all runs).
+    pub(crate) fn with_shared(mut self, shared: &'a SharedReplays) -> Self {
+        self.shared = Some(shared);
+        self
+    }
+
+    /// Shares the last replay of every run with the diagnosis's other
+    /// problems on all runs (nothing without [`Problem::with_shared`]).
+    pub(crate) fn share_last(&self) {
+        if let Some(shared) = self.shared {
+            shared.share(&self.last);
         }
     }
 
@@ -298,7 +318,7 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
             let i = order[k];
             let (run, cache) = (self.runs[i], &self.last[i]);
             let mut piece = pieces[i].lock().unwrap_or_else(|e| e.into_inner());
-            let obs = run.observe_reusing(&model, cache);
+            let obs = run.observe_reusing(&model, cache, self.shared.map(|s| (s, i)));
             run.write_residuals(&obs, &self.scales, &mut piece);
             let c = 0.5 * piece.iter().map(|e| e * e).sum::<f64>();
             let mut s = spent.lock().unwrap_or_else(|e| e.into_inner());
@@ -337,8 +357,9 @@ impl<F: Fn(&[f64]) -> Augmented + Sync> Problem<'_, F> {
     pub(crate) fn errors(&self, p: &[f64]) -> ChannelErrors {
         let model = (self.build)(&self.clamp(p));
         let mut e = ChannelErrors::default();
-        for (r, cache) in self.runs.iter().zip(&self.last) {
-            e.add(&r.errors_of(&r.observe_reusing(&model, cache)));
+        for (i, (r, cache)) in self.runs.iter().zip(&self.last).enumerate() {
+            let shared = self.shared.map(|s| (s, i));
+            e.add(&r.errors_of(&r.observe_reusing(&model, cache, shared)));
         }
         e
     }

@@ -222,15 +222,23 @@ impl Prepared {
     /// only in its sensors (a sensor delay, gain or accelerometer position,
     /// whose start state is the same) integrates the same history, so only
     /// the sensors are applied again.
-    pub(crate) fn observe_reusing(&self, model: &Augmented, cache: &ReplayCache) -> Observed {
+    /// Where it finds none there, it looks in `shared` (if any): the
+    /// replays of this run (its index `.1` in the campaign's runs) that
+    /// every problem of a diagnosis on all runs shares ([`SharedReplays`]).
+    pub(crate) fn observe_reusing(
+        &self,
+        model: &Augmented,
+        cache: &ReplayCache,
+        shared: Option<(&SharedReplays, usize)>,
+    ) -> Observed {
         let start = self.start_of(model);
-        let found = [&cache.last, &cache.kept].into_iter().find_map(|slot| {
-            let entry = slot.lock().unwrap_or_else(|e| e.into_inner());
-            entry
-                .as_ref()
-                .filter(|l| l.start == start && l.model.same_dynamics(model))
-                .cloned()
-        });
+        let found = [&cache.last, &cache.kept]
+            .into_iter()
+            .find_map(|slot| {
+                let entry = slot.lock().unwrap_or_else(|e| e.into_inner());
+                entry.as_ref().filter(|l| l.matches(model, start)).cloned()
+            })
+            .or_else(|| shared.and_then(|(s, i)| s.find(i, model, start)));
         if let Some(l) = found {
             let observed = model.observe(&l.history, &self.times);
             // The last slot holds the latest evaluation's replay, reused or
@@ -308,6 +316,89 @@ pub(crate) struct LastReplay {
     model: Augmented,
     start: (f64, f64),
     history: TimeHistory,
+}
+
+impl LastReplay {
+    /// Whether `model` from `start` integrates this same history: the same
+    /// start and the same dynamics (the sensors aside).
+    fn matches(&self, model: &Augmented, start: (f64, f64)) -> bool {
+        self.start == start && self.model.same_dynamics(model)
+    }
+}
+
+/// Rows of replayed history (every run's together) that a
+/// [`SharedReplays`] holds at most: about 170 MB at the 14 columns of a
+/// [`TimeHistory`], some sixty replays of a 460 s log at 50 Hz, a score of
+/// a 600 s one at 100 Hz. The oldest go first.
+const SHARED_ROWS: usize = 1_500_000;
+
+/// Replays of every run of a campaign that the problems of one diagnosis
+/// on all runs share: a model the diagnosis replays in many fits (the
+/// base, which every single's global stage starts from; a candidate's
+/// optimum, which the sets that extend it start from; a global stage's
+/// best, where its polish starts) is integrated once, not once per
+/// problem. A replay is found by its model's dynamics and start state
+/// ([`Prepared::observe_reusing`]), so what is read is what a replay would
+/// integrate, bit for bit. Held until [`SHARED_ROWS`] is reached, the
+/// oldest dropped first.
+#[derive(Default)]
+pub(crate) struct SharedReplays {
+    /// Each shared set of replays, oldest first, and the rows they hold.
+    sets: Mutex<(std::collections::VecDeque<SharedSet>, usize)>,
+}
+
+/// One shared set of replays: one slot per run, None where that run was
+/// not replayed (or is shared already).
+type SharedSet = Vec<Option<Arc<LastReplay>>>;
+
+impl SharedReplays {
+    /// Run `i`'s replay of `model` from `start`, if shared.
+    fn find(&self, i: usize, model: &Augmented, start: (f64, f64)) -> Option<Arc<LastReplay>> {
+        let sets = self.sets.lock().unwrap_or_else(|e| e.into_inner());
+        sets.0
+            .iter()
+            .rev()
+            .filter_map(|set| set.get(i).and_then(Option::as_ref))
+            .find(|l| l.matches(model, start))
+            .cloned()
+    }
+
+    /// Shares the last replays of `caches` (one per run, in the campaign's
+    /// order), those already shared left out.
+    pub(crate) fn share(&self, caches: &[ReplayCache]) {
+        let mut set: SharedSet = caches
+            .iter()
+            .map(|c| c.last.lock().unwrap_or_else(|e| e.into_inner()).clone())
+            .collect();
+        let mut sets = self.sets.lock().unwrap_or_else(|e| e.into_inner());
+        for (i, slot) in set.iter_mut().enumerate() {
+            let known = slot.as_ref().is_some_and(|l| {
+                sets.0
+                    .iter()
+                    .filter_map(|s| s.get(i).and_then(Option::as_ref))
+                    .any(|k| Arc::ptr_eq(k, l) || k.matches(&l.model, l.start))
+            });
+            if known {
+                *slot = None;
+            }
+        }
+        let rows = rows_of(&set);
+        if rows == 0 {
+            return;
+        }
+        sets.0.push_back(set);
+        sets.1 += rows;
+        while sets.1 > SHARED_ROWS && sets.0.len() > 1 {
+            if let Some(old) = sets.0.pop_front() {
+                sets.1 -= rows_of(&old);
+            }
+        }
+    }
+}
+
+/// Rows of history a shared set holds.
+fn rows_of(set: &[Option<Arc<LastReplay>>]) -> usize {
+    set.iter().flatten().map(|l| l.history.len()).sum()
 }
 
 /// A run's replays a problem may reuse: the last one made (or reused) and

@@ -92,8 +92,8 @@ pub struct Ranked {
     pub bic: f64,
     /// BIC minus the base model's (negative: better).
     pub delta_bic: f64,
-    /// How the all-run fit's global stage searched (a grid along one or
-    /// two parameters, a swarm along more).
+    /// How the all-run fit's global stage searched (a grid along one to
+    /// three parameters, a swarm along more).
     pub global_search: GlobalSearch,
 }
 

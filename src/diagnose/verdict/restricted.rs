@@ -88,7 +88,10 @@ impl Context<'_> {
             self.runs.iter().collect(),
             self.scales,
             s.bounds()[held..].to_vec(),
-        );
+        )
+        // Its start is the global stage's best, whose replays the global
+        // stage shared ([`Context::started`]).
+        .with_shared(&self.shared);
         let lm = BoundedLm {
             iterations: RESTRICTED_ITERATIONS,
             tolerance: FIT_TOLERANCE,

@@ -7,7 +7,7 @@
 //! base model of all runs or of the fold
 //! ([`crate::diagnose::fit::layout::Layout::model`]).
 
-use crate::diagnose::base::identify::axle_grid;
+use crate::diagnose::base::identify::axle_grid_best;
 use crate::diagnose::base::prior::PriorRows;
 use crate::diagnose::base::Bases;
 use crate::diagnose::campaign::Campaign;
@@ -20,7 +20,7 @@ use crate::diagnose::fit::{
     complete_curvature, fit_first_order, hold_stands, pinned, to_hold, FitOutcome, GlobalSearch,
 };
 use crate::diagnose::model::channels::ChannelErrors;
-use crate::diagnose::model::replay::Prepared;
+use crate::diagnose::model::replay::{Prepared, SharedReplays};
 use crate::diagnose::model::Augmented;
 use crate::diagnose::model::Observed;
 use crate::diagnose::report::CalibrationSource;
@@ -69,6 +69,10 @@ pub(crate) struct Context<'a> {
     /// The sensor offsets the runs' standstills and straights measured: a
     /// start of the sensor offsets' fit.
     pub(crate) calibrated: Calibrated,
+    /// Replays the fits on all runs share: the base model's, each
+    /// candidate's optimum and each global stage's best
+    /// ([`SharedReplays`]).
+    pub(crate) shared: SharedReplays,
 }
 
 /// Each response channel's offset measured on the runs' standstills (else
@@ -182,6 +186,12 @@ impl<'a> Context<'a> {
             ..self.pso
         };
         let (start, global) = self.start(&problem, &s, starts, &pso);
+        // The polish (or restricted fit) starts there on a problem of its
+        // own: the start's replay is shared, not integrated again (the
+        // global stage kept it where it was its best, else it is replayed
+        // here, as the polish would).
+        problem.cost(&start);
+        problem.share_last();
         drop(problem);
         if let (Some(rec), Some(st)) = (self.timing, &stamps) {
             rec.add(Phase::CandidateSearch, t0.elapsed(), st.count());
@@ -231,8 +241,10 @@ impl<'a> Context<'a> {
             record_split(rec, st, mark, (linear, 0), phases);
         }
         // The optimum was just replayed (its linearisation's residuals):
-        // its errors come from the problem's kept replays.
+        // its errors come from the problem's kept replays, which are
+        // shared: the sets that extend this candidate start from it.
         let insample = problem.errors(&full.params);
+        problem.share_last();
         drop(problem);
         self.tick();
         Fitted {
@@ -313,6 +325,7 @@ impl<'a> Context<'a> {
         )
         .with_layout(s.layout.clone(), &self.bases.all, self.derivatives)
         .with_prior(prior)
+        .with_shared(&self.shared)
     }
 
     /// `fitted`'s all-run fit with the second derivatives of its
@@ -429,8 +442,8 @@ impl<'a> Context<'a> {
     /// The start of a candidate's polish and how its global stage searched:
     /// the lowest cost of `starts` and of the global stage from the best of
     /// them (from the effect off without them) over the parameters
-    /// [`crate::diagnose::fit::layout::Layout::global_stage`] leaves free ([`global_best`]: a grid along one or
-    /// two parameters, a swarm with one particle at that point along more).
+    /// [`crate::diagnose::fit::layout::Layout::global_stage`] leaves free ([`global_best`]: a grid along one to
+    /// three parameters, a swarm with one particle at that point along more).
     /// Where the axle characteristics are fitted, the start must be
     /// consistent with the candidate rather than with the base: the axle
     /// grid is rerun at the global stage's effect values and, for an effect that
@@ -444,10 +457,23 @@ impl<'a> Context<'a> {
         pso: &Pso,
     ) -> (Vec<f64>, GlobalSearch) {
         let held = s.layout.restricted_from();
-        let mut tried: Vec<(f64, Vec<f64>)> = starts
-            .iter()
-            .map(|p| (problem.cost(p), p.clone()))
-            .collect();
+        // Each start replayed, the lowest so far kept: the global stage
+        // starts from it without replaying it again.
+        let mut tried: Vec<(f64, Vec<f64>)> = Vec::with_capacity(starts.len() + 3);
+        for p in starts {
+            let c = problem.cost(p);
+            if tried.iter().all(|(t, _)| c < *t) {
+                problem.keep_last();
+            }
+            tried.push((c, p.clone()));
+        }
+        // A single's global stage starts from the effect off, the base
+        // model every single shares: replayed once for them all.
+        let off_cost = starts.is_empty().then(|| {
+            let c = problem.cost(&s.off());
+            problem.share_last();
+            c
+        });
         // A single's global stage starts from the effect off; a
         // combination's from its best start, along the added effect's own
         // parameters (the current set's stay at that start's values).
@@ -481,14 +507,15 @@ impl<'a> Context<'a> {
         // base's own again), and at the input as logged; a combination's
         // starts already carry each member's axles.
         if let (true, [kind]) = (s.layout.axle, s.kinds()) {
-            let off = problem.cost(&s.off());
+            let off = off_cost.unwrap_or_else(|| problem.cost(&s.off()));
             let (cost, p) = tried
                 .iter()
                 .min_by(|a, b| a.0.total_cmp(&b.0))
                 .expect("the global stage's best is tried");
+            let near = p[..held].to_vec();
             let gained = (*cost < (1.0 - REGRID_GAIN) * off).then(|| p[held..].to_vec());
             for tail in gained.into_iter().chain(as_logged(*kind)) {
-                tried.extend(axle_grid(problem, &tail).into_iter().take(1));
+                tried.extend(axle_grid_best(problem, &tail, &near));
             }
         }
         let best = tried

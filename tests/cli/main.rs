@@ -443,6 +443,7 @@ mod trips_s88_cal;
 mod trips_s88_idn;
 mod trips_s88_lead;
 mod trips_s88_met;
+mod trips_s89_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

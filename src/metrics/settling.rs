@@ -478,6 +478,7 @@ mod tests {
         let trend = Trend {
             heads: 0.089,
             converging: true,
+            rising: true,
         };
         assert_eq!(
             Settling::of_spread(0.01, Some(trend)),
@@ -486,11 +487,25 @@ mod tests {
                 converging: true
             }
         );
+        // Within the drift but beyond a tenth of a percent: approaching;
+        // within that, settled.
         let small = Trend {
             heads: 0.5 * SETTLED_DRIFT,
             converging: true,
+            rising: true,
         };
-        assert_eq!(Settling::of_spread(0.01, Some(small)), Settling::Settled);
+        assert_eq!(
+            Settling::of_spread(0.01, Some(small)),
+            Settling::Approaching {
+                heads: 0.5 * SETTLED_DRIFT,
+                rising: true
+            }
+        );
+        let tiny = Trend {
+            heads: 0.5 * APPROACH_SAID,
+            ..small
+        };
+        assert_eq!(Settling::of_spread(0.01, Some(tiny)), Settling::Settled);
         assert_eq!(
             Settling::of_spread(0.03, Some(trend)),
             Settling::NotSettled { beyond: 0.03 }

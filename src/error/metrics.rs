@@ -168,6 +168,19 @@ pub enum MetricsError {
         /// The width of a held steer, rad.
         band: f64,
     },
+    /// A record too short for its steady window: the window, the record's
+    /// last `--steady-window` seconds, starts before the steer has reached
+    /// its step, so its means mix the step (and the time before it) in.
+    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so a `--steady-window` of at most {} s starts after it; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), super::hundredths_down(to - settles), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
+    ShortForSteadyWindow {
+        /// From when on the steer stays within 5 % of its step of its held
+        /// value, s.
+        settles: f64,
+        /// The steady window's start, s.
+        from: f64,
+        /// Its end (the record's), s.
+        to: f64,
+    },
     /// The steer still moves inside the steady window: the steady values
     /// would mix the step in (a window that reaches back over the step).
     #[error("the steer moves by more than 5 % of its step inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values: {}; the steady values would mix the step in", Num(to - from), settles.map_or("it does not settle within 5 % of its held value before the record ends".to_string(), |t| format!("it settles within 5 % of its held value only at {t:.2} s, so a `--steady-window` of at most {} s starts after it", super::hundredths_down(to - t))))]

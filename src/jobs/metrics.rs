@@ -11,6 +11,7 @@ use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
 
+mod coarse;
 mod declared;
 pub(super) mod filter_speed;
 mod noise_said;
@@ -124,6 +125,8 @@ pub fn run_with_degrees(
     ));
     let dt = crate::measured::clean::median_interval(&clock);
     m.warnings.extend(peak_time_said(&m.metrics, dt));
+    m.warnings
+        .extend(coarse::coarse_said(&m.metrics, dt, m.steer_rise_time));
     // A cutoff suggested is measured through, so that following it is
     // not warned of again.
     let response_at = |f: f64| {

@@ -279,7 +279,7 @@ impl StepMetrics {
     /// Names the channels that have not settled, each with its spread.
     pub fn settling_warning(&self) -> Option<String> {
         match self.settled {
-            true => None,
+            true => self.settling.approaching_warning(self.yaw_rate_gain),
             false => self.settling.not_settled_warning().or_else(|| {
                 Some(format!(
                     "the response has not settled in the steady window (it spreads by more than {} % of its step beyond its noise)",

@@ -7,6 +7,11 @@
 //! creeps towards a yaw rate 9 % above the window's): the window's trend,
 //! its thirds' means extrapolated as a geometric approach, must also stay
 //! within 2 % of the step ([`SETTLED_DRIFT`]).
+//! A response settled by both that still trends, monotone across the
+//! steady window and the one before it, by [`APPROACH_SAID`] or more (a
+//! near-critical car's slow mode, time constant about 1 s, still rising
+//! 6 s after its step: its gain 0.15 % short of the closed form) is said to
+//! be approaching its steady value, with where its trend heads.
 //! A channel whose step is within a few of its noise deviations is not
 //! judged at all: its steady window's spread is its noise's, whatever the
 //! car does (a synthetic 60 km/h step's sideslip moves 0.0033 rad under a
@@ -23,6 +28,12 @@ pub(super) const SETTLED_SPREAD: f64 = 0.02;
 /// still head beyond the window's mean: the spread's own tolerance, so a
 /// response is judged settled by one measure of "within 2 %".
 pub(super) const SETTLED_DRIFT: f64 = SETTLED_SPREAD;
+
+/// How far, as a share of the step, a settled response's trend may still
+/// head beyond its steady window's mean unsaid: a tenth of a percent, so
+/// that a steady value printed to four decimals and 0.15 % short of the
+/// steady state (a slow mode still rising) is not given as reached.
+pub(super) const APPROACH_SAID: f64 = 0.001;
 
 /// The noise deviations (of the raw channel) a step must exceed for its
 /// settling to be judged: within them the step itself is uncertain by a
@@ -55,6 +66,16 @@ pub enum Settling {
         /// leaving its steady turn).
         converging: bool,
     },
+    /// Settled, but its trend across the steady window still heads `heads`
+    /// (a share of its step, at least [`APPROACH_SAID`]) beyond the
+    /// window's mean: its steady value not yet reached by about that much.
+    Approaching {
+        /// Where the trend heads beyond the window's mean, a share of the
+        /// step (of the sideslip's scale).
+        heads: f64,
+        /// Whether it heads above the window's mean (on the step's scale).
+        rising: bool,
+    },
     /// Its step is within [`JUDGED_NOISES`] of its noise: not judged.
     NotJudged {
         /// The step, in the channel's unit (rad/s, m/s², rad).
@@ -81,10 +102,13 @@ impl Settling {
     pub(super) fn of_spread(spread: f64, trend: Option<Trend>) -> Self {
         match (spread < SETTLED_SPREAD, trend) {
             (false, _) => Settling::NotSettled { beyond: spread },
-            (true, Some(Trend { heads, converging })) if heads >= SETTLED_DRIFT => {
-                Settling::Drifting { heads, converging }
-            }
-            (true, _) => Settling::Settled,
+            (
+                true,
+                Some(Trend {
+                    heads, converging, ..
+                }),
+            ) if heads >= SETTLED_DRIFT => Settling::Drifting { heads, converging },
+            (true, trend) => approaching(trend, 1.0),
         }
     }
 }
@@ -112,7 +136,7 @@ impl ChannelSettling {
                 Settling::Drifting { heads, .. } => {
                     most = Some(most.map_or(heads, |m| m.max(heads)))
                 }
-                Settling::Settled | Settling::NotJudged { .. } => {}
+                Settling::Settled | Settling::Approaching { .. } | Settling::NotJudged { .. } => {}
             }
         }
         most
@@ -161,6 +185,47 @@ impl ChannelSettling {
             "the response has not settled in the steady window: {}, more than {} %{grip}",
             failed.join(", "),
             crate::error::Num(100.0 * SETTLED_SPREAD)
+        ))
+    }
+
+    /// The warning of the channels settled but still approaching their
+    /// steady values ([`Settling::Approaching`]), each with where its trend
+    /// heads; with the yaw-rate `gain` (1/s) it heads to where the yaw
+    /// rate approaches.
+    pub fn approaching_warning(&self, gain: f64) -> Option<String> {
+        let mut yaw = None;
+        let each: Vec<String> = self
+            .named()
+            .into_iter()
+            .filter_map(|(name, _, s)| match s {
+                Settling::Approaching { heads, rising } => {
+                    if name == "yaw rate" {
+                        yaw = Some(if rising { 1.0 + heads } else { 1.0 - heads });
+                    }
+                    Some(format!(
+                        "the {name} still {} across its steady window, its trend heading {} % of its step {} the window's mean",
+                        if rising { "grows" } else { "falls back" },
+                        crate::format::significant(100.0 * heads, 2),
+                        if rising { "beyond" } else { "back below" },
+                    ))
+                }
+                _ => None,
+            })
+            .collect();
+        if each.is_empty() {
+            return None;
+        }
+        let gain = yaw.map_or(String::new(), |to| {
+            format!(
+                " (the yaw-rate gain {} 1/s heads to about {} 1/s)",
+                crate::format::fixed(gain, 4),
+                crate::format::significant(gain * to, 4)
+            )
+        });
+        Some(format!(
+            "the response is settled (within {} % of its step) but has not reached its steady state: {}; the steady values are short of it by about as much{gain}: a longer record, or a later steady window, reads them closer",
+            crate::error::Num(100.0 * SETTLED_SPREAD),
+            each.join(", ")
         ))
     }
 
@@ -225,10 +290,25 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
         return Settling::NotSettled { beyond };
     }
     match n.trend {
-        Some(Trend { heads, converging }) if heads * to_scale >= SETTLED_DRIFT => {
-            Settling::Drifting {
+        Some(Trend {
+            heads, converging, ..
+        }) if heads * to_scale >= SETTLED_DRIFT => Settling::Drifting {
+            heads: heads * to_scale,
+            converging,
+        },
+        trend => approaching(trend, to_scale),
+    }
+}
+
+/// The verdict on a response settled by its spread and drift whose
+/// `trend` (taken to `to_scale` times the step) still heads
+/// [`APPROACH_SAID`] or more beyond its window's mean: approaching.
+fn approaching(trend: Option<Trend>, to_scale: f64) -> Settling {
+    match trend {
+        Some(Trend { heads, rising, .. }) if heads * to_scale >= APPROACH_SAID => {
+            Settling::Approaching {
                 heads: heads * to_scale,
-                converging,
+                rising,
             }
         }
         _ => Settling::Settled,
@@ -243,6 +323,9 @@ pub(super) struct Trend {
     pub heads: f64,
     /// Whether it slows across the window.
     pub converging: bool,
+    /// Whether it rises (on the step's scale: its limit above the
+    /// window's mean).
+    pub rising: bool,
 }
 
 /// The trend of the normalised response `x` (steady value 1 over the
@@ -307,12 +390,14 @@ pub(super) fn trend_of_parts(parts: [f64; TREND_PARTS], deviation: f64) -> Optio
         return Some(Trend {
             heads: (m3 - 1.0).abs() + (m3 - m1).abs(),
             converging: false,
+            rising,
         });
     }
     let q = d2 / d1;
     Some(Trend {
         heads: (m3 + d2 * q / (1.0 - q) - 1.0).abs(),
         converging: true,
+        rising,
     })
 }
 
@@ -393,6 +478,7 @@ mod tests {
         let trend = Trend {
             heads: 0.089,
             converging: true,
+            rising: true,
         };
         assert_eq!(
             Settling::of_spread(0.01, Some(trend)),
@@ -401,11 +487,25 @@ mod tests {
                 converging: true
             }
         );
+        // Within the drift but beyond a tenth of a percent: approaching;
+        // within that, settled.
         let small = Trend {
             heads: 0.5 * SETTLED_DRIFT,
             converging: true,
+            rising: true,
         };
-        assert_eq!(Settling::of_spread(0.01, Some(small)), Settling::Settled);
+        assert_eq!(
+            Settling::of_spread(0.01, Some(small)),
+            Settling::Approaching {
+                heads: 0.5 * SETTLED_DRIFT,
+                rising: true
+            }
+        );
+        let tiny = Trend {
+            heads: 0.5 * APPROACH_SAID,
+            ..small
+        };
+        assert_eq!(Settling::of_spread(0.01, Some(tiny)), Settling::Settled);
         assert_eq!(
             Settling::of_spread(0.03, Some(trend)),
             Settling::NotSettled { beyond: 0.03 }

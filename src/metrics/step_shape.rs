@@ -96,11 +96,16 @@ pub(crate) fn check_step_shape(
             pre_window: s.pre_window,
         }),
         (Some(moved), None) => Err(MetricsError::StepInInitialWindow { moved, from, to }),
-        (None, Some((reached, time, share))) => Err(MetricsError::SteerNotHeld {
+        // A steady window reaching back over the step reads a wrong step,
+        // and the steer "leaves" it: the record is short, not the steer.
+        (None, Some((reached, time, share))) => Err(short_for_steady_window(
+            t, &steer, d0, onset, s,
+        )
+        .unwrap_or(MetricsError::SteerNotHeld {
             reached,
             time,
             share,
-        }),
+        })),
         (None, None) => {
             let t90 = first_crossing(t, &d, 0.9, from);
             let t10 = t90.and_then(|b| last_crossing(t, &d, 0.1, 1.0, b));
@@ -116,12 +121,67 @@ pub(crate) fn check_step_shape(
     }
 }
 
+/// Where the steer settles at its step, with `d0` its initial value and
+/// `onset` the band as a share of the step: the index where it first
+/// comes within the band of its held value (the median of the steer once
+/// it has crossed half of its change to the record's end: the steady
+/// window's mean is pulled by the step itself) and the time from which it
+/// stays within it (none: not before the record's end). None where the
+/// steer never crosses half of its change.
+fn settling_of_steer(
+    t: &[f64],
+    steer: &[f64],
+    d0: f64,
+    onset: f64,
+) -> Option<(usize, Option<f64>)> {
+    let end = steer[steer.len() - 1];
+    let half = d0 + 0.5 * (end - d0);
+    let sign = (end - d0).signum();
+    let reached = steer.iter().position(|x| sign * (x - half) >= 0.0)?;
+    let mut after = steer[reached..].to_vec();
+    after.sort_by(f64::total_cmp);
+    let held = after[after.len() / 2];
+    let band = onset * (held - d0).abs();
+    let first_in = (reached..t.len())
+        .find(|&i| (steer[i] - held).abs() <= band)
+        .unwrap_or(t.len() - 1);
+    let last_off = (reached..t.len())
+        .rev()
+        .find(|&i| (steer[i] - held).abs() > band);
+    let settles = match last_off {
+        None => Some(t[reached]),
+        Some(i) => t.get(i + 1).copied(),
+    };
+    Some((first_in, settles))
+}
+
+/// A record too short for its steady window (the record's last
+/// `steady_window` seconds start before the steer first reaches its held
+/// value: the window holds the step itself), else None. Such a window
+/// reads a step of the windows' means that the steer then seems to leave
+/// ("165 % of it"): said as the record's length, not blamed on the steer.
+fn short_for_steady_window(
+    t: &[f64],
+    steer: &[f64],
+    d0: f64,
+    onset: f64,
+    s: &MetricSettings,
+) -> Option<MetricsError> {
+    let (from, to) = (t[t.len() - 1] - s.steady_window, t[t.len() - 1]);
+    let (first_in, settles) = settling_of_steer(t, steer, d0, onset)?;
+    (t[first_in] > from).then(|| MetricsError::ShortForSteadyWindow {
+        settles: settles.unwrap_or(to),
+        from,
+        to,
+    })
+}
+
 /// The initial window's test mirrored: the steer (filtered as the metrics
 /// were) must stay within 5 % of its step of its held value over the
 /// steady window, else the steady means mix the step in (a window that
-/// reaches back over it reads a smaller step and hides the overshoot).
-/// The held value is the median of the steer once it has crossed half of
-/// its change, not the steady window's mean, which the step itself pulls.
+/// reaches back over it reads a smaller step and hides the overshoot; a
+/// window that starts before the steer reaches its step is a record too
+/// short for it: [`short_for_steady_window`]).
 fn check_steady_window(
     t: &[f64],
     steer: &[f64],
@@ -129,31 +189,17 @@ fn check_steady_window(
     onset: f64,
     s: &MetricSettings,
 ) -> Result<(), MetricsError> {
+    if let Some(short) = short_for_steady_window(t, steer, d0, onset, s) {
+        return Err(short);
+    }
     let (from, to) = (t[t.len() - 1] - s.steady_window, t[t.len() - 1]);
-    let end = steer[steer.len() - 1];
-    let half = d0 + 0.5 * (end - d0);
-    let sign = (end - d0).signum();
-    let Some(reached) = steer.iter().position(|x| sign * (x - half) >= 0.0) else {
+    let Some((_, settles)) = settling_of_steer(t, steer, d0, onset) else {
         return Ok(());
     };
-    let mut after = steer[reached..].to_vec();
-    after.sort_by(f64::total_cmp);
-    let held = after[after.len() / 2];
-    let band = onset * (held - d0).abs();
-    let last_off = (reached..t.len())
-        .rev()
-        .find(|&i| (steer[i] - held).abs() > band);
-    let first_off = (0..t.len()).find(|&i| t[i] >= from && (steer[i] - held).abs() > band);
+    let first_off = (0..t.len()).find(|&i| t[i] >= from && settles.is_none_or(|x| t[i] < x));
     match first_off {
         None => Ok(()),
-        Some(_) => Err(MetricsError::StepInSteadyWindow {
-            settles: match last_off {
-                None => Some(t[reached]),
-                Some(i) => t.get(i + 1).copied(),
-            },
-            from,
-            to,
-        }),
+        Some(_) => Err(MetricsError::StepInSteadyWindow { settles, from, to }),
     }
 }
 

@@ -444,6 +444,7 @@ mod trips_s88_idn;
 mod trips_s88_lead;
 mod trips_s88_met;
 mod trips_s89_lead;
+mod trips_s89_met;
 mod trips_s89_perf;
 mod trips_s89_tyre;
 mod trips_simulate;

@@ -12,10 +12,12 @@
 //! error (the estimator's lag, drift and model) is at low frequency where
 //! the scatter does not see it. So the uncertainty is, in order:
 //! 1. the one the user states for the channel (`[channels]`);
-//! 2. for a channel whose scatter is below [`SMOOTH_SHARE`] of its sensor
-//!    type's floor — no sensor of that type is that quiet, so the channel is
-//!    a filtered or estimated output — the floor of an estimated output
-//!    ([`ESTIMATED`]);
+//! 2. for a channel whose scatter is below its line ([`smooth_line`]) — for
+//!    a sideslip [`SMOOTH_SHARE`] of its sensor type's floor (no slip sensor
+//!    is that quiet, so the channel is an estimator's output); for a yaw
+//!    rate or ay, measured by a gyro and an accelerometer, not estimated,
+//!    [`QUIET_SENSOR_SHARE`] of it (quieter than any sensor: noise-free or
+//!    smoothed data) — the floor of an estimated output ([`ESTIMATED`]);
 //! 3. else the scatter, at least the sensor type's floor ([`SENSOR_FLOOR`]).
 //!
 //! The scale of the fits is that uncertainty, at least 2 % of the
@@ -43,6 +45,25 @@ pub const SENSOR_FLOOR: [f64; 3] = [0.0017, 0.02, 0.0017];
 /// A channel whose scatter is below this share of its sensor floor is a
 /// filtered or estimated output, not a sensor's.
 pub const SMOOTH_SHARE: f64 = 0.5;
+
+/// A yaw rate or ay (a gyro's, an accelerometer's: measured, not the
+/// output of an estimator) whose scatter is below this share of its sensor
+/// floor is smoother than any sensor: noise-free or smoothed data. Between
+/// it and the floor it is a quiet sensor (a fibre-optic gyro scatters
+/// about 0.0002 rad/s at 100 Hz, 0.12 of the floor; a gyro of 0.0005 rad/s
+/// read as an estimated output was trusted to 0.005 rad/s, and a 20 %
+/// cornering-stiffness error, 17 of its noise levels, read as no gap).
+pub const QUIET_SENSOR_SHARE: f64 = 0.05;
+
+/// The share of its sensor type's floor below which channel `c`'s scatter
+/// reads as an estimated output: [`SMOOTH_SHARE`] for a sideslip (usually
+/// an estimator's), [`QUIET_SENSOR_SHARE`] for a yaw rate or ay.
+pub fn smooth_line(c: Channel) -> f64 {
+    match c {
+        Channel::Beta => SMOOTH_SHARE,
+        Channel::YawRate | Channel::Ay => QUIET_SENSOR_SHARE,
+    }
+}
 
 /// The uncertainty of an estimated (smooth) output of each channel.
 pub const ESTIMATED: [f64; 3] = [0.005, 0.1, 0.005];
@@ -80,25 +101,21 @@ pub struct ChannelScale {
 }
 
 /// How far, as a factor either side, a channel's scatter may lie from the
-/// line between a sensor and an estimated output ([`SMOOTH_SHARE`] of the
+/// line between a sensor and an estimated output ([`smooth_line`] of the
 /// sensor floor) and still be read as near it. The scatter is a sample
-/// statistic: on the Putnam log the yaw rate's is 0.0010 rad/s over the
-/// whole log (0.59 of the gyro floor: a sensor) and 0.00072 rad/s over one
-/// 60 s stretch of it (0.42: an estimated output), which moves the
-/// channel's trust threefold; a sideslip with white noise of 0.0005 rad
-/// reads 0.00045 (0.26: an estimated output, trusted to 0.005 rad), the
-/// same with 0.0009 rad reads 0.00092 (0.54: a sensor, trusted to
-/// 0.0017 rad). Scatter alone cannot tell a quiet sensor from a smooth
-/// estimator, so between a quarter and the whole of the floor the report
-/// says the reading is near the line and asks for the channel's
-/// uncertainty.
+/// statistic: a sideslip with white noise of 0.0005 rad reads 0.00045
+/// (0.26: an estimated output, trusted to 0.005 rad), the same with
+/// 0.0009 rad reads 0.00092 (0.54: a sensor, trusted to 0.0017 rad).
+/// Scatter alone cannot tell a quiet sensor from a smooth estimator, so
+/// between half and twice the line the report says the reading is near
+/// it and asks for the channel's uncertainty.
 pub const NEAR_THE_LINE: f64 = 2.0;
 
 /// Which side of the line between a sensor and an estimated output a
 /// scatter of channel `c` falls: true for an estimated output's (below
-/// [`SMOOTH_SHARE`] of its sensor floor, or not a number).
+/// its [`smooth_line`] share of its sensor floor, or not a number).
 pub fn reads_as_estimated(c: Channel, scatter: f64) -> bool {
-    scatter.is_nan() || scatter < SMOOTH_SHARE * SENSOR_FLOOR[c.index()]
+    scatter.is_nan() || scatter < smooth_line(c) * SENSOR_FLOOR[c.index()]
 }
 
 /// The scatter of channel `c` as a share of its sensor type's floor, where
@@ -116,7 +133,8 @@ pub fn near_the_line(
         return None;
     }
     let share = scatter / SENSOR_FLOOR[c.index()];
-    let near = share > SMOOTH_SHARE / NEAR_THE_LINE && share < SMOOTH_SHARE * NEAR_THE_LINE;
+    let line = smooth_line(c);
+    let near = share > line / NEAR_THE_LINE && share < line * NEAR_THE_LINE;
     (near || other_side > 0).then_some(share)
 }
 
@@ -300,18 +318,26 @@ mod tests {
     #[test]
     fn a_scatter_near_the_line_between_sensor_and_estimate_is_said_to_be() {
         let yaw = Channel::YawRate;
-        // Putnam's yaw rate: 0.0010 rad/s over the log, 0.00072 over 60 s.
-        let whole = channel_scale(yaw, &NONE, 0.0010, 0.1);
-        let piece = channel_scale(yaw, &NONE, 0.00072, 0.1);
-        assert_eq!(
-            (whole.source, piece.source),
-            (ScaleSource::SensorFloor, ScaleSource::Estimated)
-        );
-        let share = near_the_line(yaw, whole.source, 0.0010, 0).unwrap();
-        assert!((share - 0.0010 / 0.0017).abs() < 1e-12);
-        assert!(near_the_line(yaw, piece.source, 0.00072, 0).is_some());
+        // Putnam's yaw rate: 0.0010 rad/s over the log, 0.00072 over 60 s;
+        // a quiet gyro of 0.0005 rad/s: all sensors, far from the yaw
+        // rate's line (0.05 of the floor), trusted to the gyro floor.
+        for s in [0.0010, 0.00072, 0.00047] {
+            let c = channel_scale(yaw, &NONE, s, 0.1);
+            assert_eq!(
+                (c.uncertainty, c.source),
+                (0.0017, ScaleSource::SensorFloor)
+            );
+            assert_eq!(near_the_line(yaw, c.source, s, 0), None);
+        }
+        // Smoother than any gyro: near the line at 0.00012 (0.07), an
+        // estimated output at 0.00005 (0.03).
+        assert!(near_the_line(yaw, ScaleSource::SensorFloor, 0.00012, 0).is_some());
+        let c = channel_scale(yaw, &NONE, 0.00005, 0.1);
+        assert_eq!(c.source, ScaleSource::Estimated);
         // A quieter sideslip read as an estimate, a noisier as a sensor:
-        // both near the line.
+        // both near the line (0.5 of the slip sensor's floor).
+        let quiet = channel_scale(Channel::Beta, &NONE, 0.00045, 0.02);
+        assert_eq!(quiet.source, ScaleSource::Estimated);
         assert!(near_the_line(Channel::Beta, ScaleSource::Estimated, 0.00045, 0).is_some());
         assert!(near_the_line(Channel::Beta, ScaleSource::SensorFloor, 0.00092, 0).is_some());
         // Clear readings: a gyro at its floor, an estimator's 0.0002 rad.

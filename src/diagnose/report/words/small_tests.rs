@@ -92,22 +92,39 @@ fn a_tiny_stated_uncertainty_and_the_scatter_are_said_with_their_digits_and_unit
 #[test]
 fn a_channel_read_near_the_line_between_sensor_and_estimate_says_so_and_how_to_settle_it() {
     use crate::diagnose::model::channels::Channel;
-    // Putnam's whole log: the yaw rate at 0.59 of the gyro floor, a sensor,
-    // with 7 of its 23 pieces reading alone as an estimated output.
+    // A sideslip at 0.54 of the slip sensor's floor, a sensor, with 7 of
+    // its 23 runs reading alone as an estimated output.
     let said = channel_trust(&ChannelNoise {
-        channel: Channel::YawRate,
-        unit: "rad/s",
+        channel: Channel::Beta,
+        unit: "rad",
         noise_floor: 0.0017,
         scale: 0.0027,
         source: ScaleSource::SensorFloor,
-        scatter: 0.0010,
+        scatter: 0.00092,
         runs: 23,
         other_side: 7,
         stated_excess: None,
     });
     assert_eq!(
         said,
-        "yaw_rate 0.0017 rad/s (its sensor type's floor; scatter 0.0010 rad/s; near the line between a sensor and an estimated output: its scatter is 0.59 of its sensor type's floor, the line at 0.5; 7 of its 23 runs read alone fall on the side of an estimated output; read as a sensor, a shorter or calmer stretch may read it as an estimated output: where you know which it is, state its uncertainty under [channels])"
+        "beta 0.0017 rad (its sensor type's floor; scatter 0.00092 rad; near the line between a sensor and an estimated output: its scatter is 0.54 of its sensor type's floor, the line at 0.5; 7 of its 23 runs read alone fall on the side of an estimated output; read as a sensor, a shorter or calmer stretch may read it as an estimated output: where you know which it is, state its uncertainty under [channels])"
+    );
+    // A quiet gyro (0.28 of its floor) is a sensor, far from its line
+    // (0.05 of the floor: a yaw rate is measured, not estimated).
+    let said = channel_trust(&ChannelNoise {
+        channel: Channel::YawRate,
+        unit: "rad/s",
+        noise_floor: 0.0017,
+        scale: 0.0027,
+        source: ScaleSource::SensorFloor,
+        scatter: 0.00047,
+        runs: 1,
+        other_side: 0,
+        stated_excess: None,
+    });
+    assert_eq!(
+        said,
+        "yaw_rate 0.0017 rad/s (its sensor type's floor; scatter 0.00047 rad/s, a quiet gyro's (a yaw rate is measured, not an estimator's output))"
     );
 }
 

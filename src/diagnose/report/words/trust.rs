@@ -5,7 +5,7 @@
 //! [`crate::diagnose::model::scale`]). Units: each channel's own.
 
 use super::rms;
-use crate::diagnose::model::scale::{near_the_line, StatedExcess, SMOOTH_SHARE};
+use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
 use crate::diagnose::report::{ChannelNoise, NoSignificantGap, ScaleSource};
 
 /// How far every measured channel is trusted, in one line.
@@ -24,9 +24,11 @@ pub fn channel_trust(n: &ChannelNoise) -> String {
             None => "stated".to_string(),
         },
         ScaleSource::Scatter => "its scatter".to_string(),
-        ScaleSource::SensorFloor => {
-            format!("its sensor type's floor; scatter {} {u}", rms(n.scatter))
-        }
+        ScaleSource::SensorFloor => format!(
+            "its sensor type's floor; scatter {} {u}{}",
+            rms(n.scatter),
+            quiet_sensor(n)
+        ),
         ScaleSource::Estimated => format!(
             "an estimated output's: its scatter {} {u} is below any sensor's",
             rms(n.scatter)
@@ -40,6 +42,22 @@ pub fn channel_trust(n: &ChannelNoise) -> String {
         n.channel.name(),
         rms(n.noise_floor)
     )
+}
+
+/// Why a sensor channel quieter than a sideslip would be read as an
+/// estimated output is trusted to its sensor type's floor
+/// ([`crate::diagnose::model::scale::smooth_line`]); empty otherwise.
+fn quiet_sensor(n: &ChannelNoise) -> &'static str {
+    use crate::diagnose::model::channels::Channel;
+    use crate::diagnose::model::scale::{SENSOR_FLOOR, SMOOTH_SHARE};
+    if n.scatter >= SMOOTH_SHARE * SENSOR_FLOOR[n.channel.index()] {
+        return "";
+    }
+    match n.channel {
+        Channel::YawRate => ", a quiet gyro's (a yaw rate is measured, not an estimator's output)",
+        Channel::Ay => ", a quiet accelerometer's (ay is measured, not an estimator's output)",
+        Channel::Beta => "",
+    }
 }
 
 /// What a user should know of a channel whose trust hangs on a reading
@@ -62,7 +80,7 @@ fn near_line(n: &ChannelNoise, share: f64) -> String {
     format!(
         "; near the line between a sensor and an estimated output: its scatter is {} of its sensor type's floor, the line at {}{runs}; read as {this}, a shorter or calmer stretch may read it as {other}: where you know which it is, state its uncertainty under [channels]",
         crate::format::rounded(share, 2),
-        SMOOTH_SHARE,
+        smooth_line(n.channel),
     )
 }
 

@@ -135,25 +135,13 @@ fn synth_then_diagnose_names_the_withheld_effect_and_shrinks_the_gap() {
         top["global_search"],
         serde_json::json!({"kind": "grid", "per_parameter": 9, "points": 10})
     );
-    let bias = d["screened"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .chain(d["ranking"].as_array().unwrap())
-        .find(|r| r["effect"] == "sensor_bias")
-        .expect("sensor_bias fitted");
+    let bias = fitted_row(&d, "sensor_bias");
     assert_eq!(
         bias["global_search"],
         serde_json::json!({"kind": "grid", "per_parameter": 3, "points": 28}),
         "{bias}"
     );
-    let roll = d["screened"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .chain(d["ranking"].as_array().unwrap())
-        .find(|r| r["effect"] == "roll_steer")
-        .expect("roll_steer fitted");
+    let roll = fitted_row(&d, "roll_steer");
     assert_eq!(roll["global_search"]["kind"], "swarm", "{roll}");
     assert!(roll["global_search"]["evaluations"].as_u64().unwrap() >= 10);
     assert!(d["gap"]["significant"].as_bool().unwrap());

@@ -46,20 +46,6 @@ fn tyre_eval(tyre: &Path, points: &Path, out: &Path) -> Output {
     ])
 }
 
-fn read_out(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = fs::read_to_string(p).unwrap();
-    let mut lines = text.lines();
-    let head = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
-    (head, rows)
-}
-
-fn col(head: &[String], name: &str) -> usize {
-    head.iter().position(|h| h == name).unwrap()
-}
-
 #[test]
 fn tyre_eval_matches_the_closed_form_and_converts_units() {
     let alphas = [-0.4, -0.1, -0.01, 0.0, 0.003, 0.05, 0.2, 0.6];
@@ -78,7 +64,7 @@ fn tyre_eval_matches_the_closed_form_and_converts_units() {
         &out,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let (head, got) = read_out(&out);
+    let (head, got) = numeric_csv(&out);
     assert_eq!(
         head,
         ["fz", "kappa", "alpha", "camber", "speed", "fx", "fy", "mz", "mx", "my"]
@@ -86,7 +72,7 @@ fn tyre_eval_matches_the_closed_form_and_converts_units() {
     assert_eq!(got.len(), rows.len());
     for (r, g) in rows.iter().zip(&got) {
         let want = closed_form_fy(r.0, r.2);
-        let fy = g[col(&head, "fy")];
+        let fy = g[column(&head, "fy")];
         assert!(
             (fy - want).abs() <= 1e-9 * want.abs() + 1e-9,
             "fz {} alpha {}: {fy} vs {want}",
@@ -118,7 +104,7 @@ fn right_side_file_is_the_mirror_image() {
         let out = dir.path().join(format!("{tyre}-{pts}.out"));
         let o = tyre_eval(&dir.path().join(tyre), &dir.path().join(pts), &out);
         assert!(o.status.success(), "{}", stderr(&o));
-        read_out(&out)
+        numeric_csv(&out)
     };
     let (head, left) = eval("left.tir", "p.csv");
     let (_, right) = eval("right.tir", "m.csv");
@@ -130,7 +116,7 @@ fn right_side_file_is_the_mirror_image() {
             ("mx", -1.0),
             ("my", 1.0),
         ] {
-            let i = col(&head, name);
+            let i = column(&head, name);
             assert!(
                 (l[i] - sign * r[i]).abs() <= 1e-9 * l[i].abs().max(1.0),
                 "{name}: {} vs {}",
@@ -138,7 +124,7 @@ fn right_side_file_is_the_mirror_image() {
                 r[i]
             );
         }
-        assert!(left.iter().any(|l| l[col(&head, "fy")].abs() > 100.0));
+        assert!(left.iter().any(|l| l[column(&head, "fy")].abs() > 100.0));
     }
 }
 
@@ -165,12 +151,12 @@ fn public_tir_files_load_and_combined_force_stays_below_pure() {
         let out = dir.path().join("f.csv");
         let o = tyre_eval(&tir, &dir.path().join("p.csv"), &out);
         assert!(o.status.success(), "{v}: {}", stderr(&o));
-        let (head, got) = read_out(&out);
+        let (head, got) = numeric_csv(&out);
         // Beyond small slip angles (where the κ-induced shift SVyκ may add
         // a few newtons), slip in the other direction only takes force away
         // (or none: Chrono's Sedan file has no lateral combined-slip
         // coefficients, so its weight Gyκ is 1).
-        let fy = col(&head, "fy");
+        let fy = column(&head, "fy");
         for chunk in got.chunks(3) {
             let pure = chunk[0][fy].abs();
             assert!(pure > 50.0, "{v}: no lateral force {pure}");
@@ -327,7 +313,7 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
         let tir = root().join(format!("tests/fixtures/tir/{tir}.tir"));
         let o = tyre_eval(&tir, &dir.path().join("points.csv"), &out);
         assert!(o.status.success(), "{}", stderr(&o));
-        let (head, got) = read_out(&out);
+        let (head, got) = numeric_csv(&out);
         let mirror = if right { -1.0 } else { 1.0 };
         let mut cambered_mz = 0;
         for (r, g) in rows.iter().zip(&got) {
@@ -338,7 +324,7 @@ fn tyre_eval_agrees_with_mfeval_on_public_files() {
                 ("mx", 9, mirror),
                 ("my", 10, 1.0),
             ] {
-                let (want, have) = (sign * r[i], g[col(&head, name)]);
+                let (want, have) = (sign * r[i], g[column(&head, name)]);
                 assert!(
                     (have - want).abs() <= 1e-6 * want.abs() + 1e-6 * fnomin,
                     "{v} {name} at {r:?}: {have} vs {want}"
@@ -451,7 +437,7 @@ fn tyre_eval_modes_agree_with_mfeval_past_the_limits() {
                 mode < 200.0,
                 "{said}"
             );
-            let (head, got) = read_out(&out);
+            let (head, got) = numeric_csv(&out);
             for (r, g) in sel.iter().zip(&got) {
                 for (name, i, sign, scale) in [
                     ("fx", 7, 1.0, fnomin),
@@ -460,7 +446,7 @@ fn tyre_eval_modes_agree_with_mfeval_past_the_limits() {
                     ("mx", 10, mirror, fnomin * r0),
                     ("my", 11, 1.0, fnomin * r0),
                 ] {
-                    let (want, have) = (sign * r[i], g[col(&head, name)]);
+                    let (want, have) = (sign * r[i], g[column(&head, name)]);
                     assert!(
                         (have - want).abs() <= 1e-6 * scale,
                         "{v} mode {mode} {name} at {r:?}: {have} vs {want}"

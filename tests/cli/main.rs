@@ -544,6 +544,35 @@ pub(crate) fn ranked<'a>(d: &'a serde_json::Value, effect: &str) -> &'a serde_js
         .unwrap_or_else(|| panic!("{effect} is not ranked"))
 }
 
+/// The row of `effect` in a diagnosis's ranking or its screened rows.
+pub(crate) fn fitted_row<'a>(d: &'a serde_json::Value, effect: &str) -> &'a serde_json::Value {
+    d["ranking"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .chain(d["screened"].as_array().unwrap())
+        .find(|r| r["effect"] == effect)
+        .unwrap_or_else(|| panic!("{effect} not fitted"))
+}
+
+/// The index of column `name` in a header.
+pub(crate) fn column(head: &[String], name: &str) -> usize {
+    head.iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name}"))
+}
+
+/// A numeric CSV's header and rows.
+pub(crate) fn numeric_csv(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = fs::read_to_string(p).unwrap();
+    let mut lines = text.lines();
+    let head = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    (head, rows)
+}
+
 /// The effects a diagnosis's verdict names.
 pub(crate) fn verdict_of(d: &serde_json::Value) -> Vec<String> {
     d["verdict"]["effects"]

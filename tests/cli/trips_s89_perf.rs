@@ -16,13 +16,7 @@ fn three_sensor_offsets_are_started_from_a_grid_and_still_recovered() {
     let dir = tempfile::tempdir().unwrap();
     let candidates = "\"sensor_bias\", \"sensor_delay\", \"yaw_inertia\"";
     let (stdout, d, _) = narrowed(dir.path(), "sensor_bias", candidates);
-    let bias = d["ranking"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .chain(d["screened"].as_array().unwrap())
-        .find(|r| r["effect"] == "sensor_bias")
-        .expect("sensor_bias fitted");
+    let bias = crate::fitted_row(&d, "sensor_bias");
     assert_eq!(
         bias["global_search"],
         serde_json::json!({"kind": "grid", "per_parameter": 3, "points": 28}),

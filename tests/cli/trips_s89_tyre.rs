@@ -1,25 +1,9 @@
-//! What a fresh user tripped on (rounds 13 and 15), in `tyre-eval` and in
-//! `identify`'s reading of a rig file: a right-side `.tir` mirrored without
-//! a word, a camber in degrees read as radians, a units row quoted without
-//! its first cell, rig rows dropped without their counts per reason.
+//! What a fresh user tripped on (round 15), in `tyre-eval`, in `identify`'s
+//! reading of a rig file and in `diagnose`'s gap map: a right-side `.tir`
+//! mirrored without a word, a camber in degrees read as radians, a units
+//! row quoted without its first cell, run dots drawn like the verdict's.
 
 use super::*;
-
-/// The output CSV of `tyre-eval`: its header and rows.
-fn forces(out: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = fs::read_to_string(out).unwrap();
-    let mut lines = text.lines();
-    let head = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
-    (head, rows)
-}
-
-/// The column `name` of a header.
-fn at(head: &[String], name: &str) -> usize {
-    head.iter().position(|h| h == name).unwrap()
-}
 
 /// A right-side `.tir` (`TYRESIDE = 'RIGHT'`, MFeval's public MF 6.1 file)
 /// is evaluated mirrored into a left tyre. A tester who evaluated the
@@ -59,12 +43,12 @@ fn a_right_side_tir_says_on_its_closing_line_that_it_is_mirrored() {
         let said_out = String::from_utf8_lossy(&o.stdout).into_owned();
         assert_eq!(said_out.contains(said), mirrored, "{tir}: {said_out}");
         assert!(!stderr(&o).contains("TYRESIDE"), "{}", stderr(&o));
-        outs.push(forces(&out));
+        outs.push(numeric_csv(&out));
     }
     let ((head, r), (_, l)) = (&outs[0], &outs[1]);
     // At zero slip (the first point) the right file's fy is the opposite
     // of the left's, not zero: what the tester's hand value showed.
-    assert!(r[0][at(head, "fy")].abs() > 10.0, "{:?}", r[0]);
+    assert!(r[0][column(head, "fy")].abs() > 10.0, "{:?}", r[0]);
     for (name, sign) in [
         ("fx", 1.0),
         ("fy", -1.0),
@@ -72,7 +56,7 @@ fn a_right_side_tir_says_on_its_closing_line_that_it_is_mirrored() {
         ("mx", -1.0),
         ("my", 1.0),
     ] {
-        let c = at(head, name);
+        let c = column(head, name);
         for (a, b) in r.iter().zip(l) {
             assert!(
                 (a[c] - sign * b[c]).abs() <= 1e-9 * b[c].abs().max(1.0),

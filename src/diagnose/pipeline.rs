@@ -448,9 +448,6 @@ fn run(
             let campaign = c.source.clone();
             DiagnosisError::BetaAgainstModel { campaign, source }
         })?;
-    if bases.axle.is_none() {
-        crate::diagnose::base::geometry::check(c, &bases.all, &runs, (&floors, &scales))?;
-    }
     let run_gaps = base_gaps(c, &bases.all, &floors);
     let calibrated = calibrated(c);
     let ctx = Context {

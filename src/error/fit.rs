@@ -230,30 +230,6 @@ pub enum DiagnosisError {
         /// The runs.
         source: super::BetaAgainstModel,
     },
-    /// The vehicle file's `a` and `b` the runs contradict: exchanged, the
-    /// base model replays them far better.
-    #[error(
-        "{at}: [vehicle] a = {a} m and b = {b} m look exchanged: with them exchanged (the tyres as they are) \
-         the base model's error on the runs falls from {given:.3} to {exchanged:.3} (noise level {noise:.3}), \
-         {removes:.0} % of its gap above noise removed before any effect is fitted; `a` is the distance from \
-         the centre of gravity to the front axle, `b` to the rear (if they are right, the tyres are not this car's)"
-    )]
-    AxleDistancesExchanged {
-        /// The campaign file and line stating `a` (or the campaign).
-        at: String,
-        /// The file's `a`, m.
-        a: f64,
-        /// The file's `b`, m.
-        b: f64,
-        /// Combined error J of the base model as given.
-        given: f64,
-        /// The same with `a` and `b` exchanged.
-        exchanged: f64,
-        /// J of the noise alone.
-        noise: f64,
-        /// The share (%) of the gap above noise the exchange removes.
-        removes: f64,
-    },
     /// A design asked of a diagnosis that names no confounded set.
     #[error("the diagnosis names no confounded effects: ask for the candidates to separate (`--effects a,b`)")]
     NothingConfounded,

@@ -78,7 +78,6 @@ impl Synthetic {
             vehicle: self.vehicle.clone(),
             friction: 1.0,
             friction_at: None,
-            a_at: None,
             tyres,
             prior: Default::default(),
             uncertainty: Default::default(),

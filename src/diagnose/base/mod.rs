@@ -8,7 +8,6 @@
 //! ([`crate::vehicle::Effects::roll`]). Units: SI, rad.
 
 pub(crate) mod beta_sign;
-pub(crate) mod geometry;
 pub(crate) mod identify;
 pub(crate) mod no_tyre;
 pub mod prior;

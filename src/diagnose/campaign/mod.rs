@@ -132,9 +132,6 @@ pub struct Campaign {
     /// The line of the campaign file that states `[road] friction` (None:
     /// not stated, 1.0), for the verdicts that name it.
     pub friction_at: Option<usize>,
-    /// Where the campaign file states `[vehicle] a` (file, line), for a
-    /// refusal that names it (None: not read from a file).
-    pub a_at: Option<(PathBuf, usize)>,
     /// The base tyres.
     pub tyres: BaseTyres,
     /// The prior of axle characteristics identified from the runs (used

@@ -191,12 +191,6 @@ pub fn load_campaign(path: &Path) -> Result<Campaign, InputError> {
         friction_at: src
             .key_span("road.friction")
             .map(|s| super::toml_file::line_col(&src.text, s.start).0),
-        a_at: src.key_span("vehicle.a").map(|s| {
-            (
-                file.clone(),
-                super::toml_file::line_col(&src.text, s.start).0,
-            )
-        }),
         tyres,
         prior,
         uncertainty: f.channels,

@@ -50,21 +50,6 @@ fn rig_points() -> String {
     s
 }
 
-/// A CSV as a header and rows of numbers.
-fn table(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = fs::read_to_string(p).unwrap();
-    let mut lines = text.lines();
-    let head = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
-    (head, rows)
-}
-
-fn at(head: &[String], name: &str) -> usize {
-    head.iter().position(|h| h == name).unwrap()
-}
-
 /// Writes `rig.csv` (the truth's forces with 1 % multiplicative Gaussian
 /// noise, fixed seed) and `clean.csv` (without noise) into `dir`.
 fn synthesise(dir: &Path) {
@@ -77,20 +62,21 @@ fn synthesise(dir: &Path) {
         dir.join("clean.csv").to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let (head, rows) = table(&dir.join("clean.csv"));
+    let (head, rows) = numeric_csv(&dir.join("clean.csv"));
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
     let mut s = String::from("fz,kappa,alpha,camber,speed,fx,fy,mz\n");
     for r in &rows {
-        let mut noisy =
-            |c: &str| r[at(&head, c)] * (1.0 + 0.01 * handling::identify::data::gauss(&mut rng));
+        let mut noisy = |c: &str| {
+            r[column(&head, c)] * (1.0 + 0.01 * handling::identify::data::gauss(&mut rng))
+        };
         let (fx, fy, mz) = (noisy("fx"), noisy("fy"), noisy("mz"));
         s += &format!(
             "{},{},{},{},{},{fx},{fy},{mz}\n",
-            r[at(&head, "fz")],
-            r[at(&head, "kappa")],
-            r[at(&head, "alpha")],
-            r[at(&head, "camber")],
-            r[at(&head, "speed")]
+            r[column(&head, "fz")],
+            r[column(&head, "kappa")],
+            r[column(&head, "alpha")],
+            r[column(&head, "camber")],
+            r[column(&head, "speed")]
         );
     }
     fs::write(dir.join("rig.csv"), s).unwrap();
@@ -163,15 +149,15 @@ fn mf61_staged_identification_beats_the_papers_residuals_and_writes_a_tir_that_r
         dir.path().join("fitted.csv").to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let (fh, fitted) = table(&dir.path().join("fitted.csv"));
-    let (rh, rig) = table(&dir.path().join("rig.csv"));
+    let (fh, fitted) = numeric_csv(&dir.path().join("fitted.csv"));
+    let (rh, rig) = numeric_csv(&dir.path().join("rig.csv"));
     let sigma_of = |ch: &str, keep: &dyn Fn(f64, f64) -> bool| {
         let (mut e2, mut y2) = (0.0, 0.0);
         for (f, r) in fitted.iter().zip(&rig) {
-            if keep(r[at(&rh, "kappa")].abs(), r[at(&rh, "alpha")].abs()) {
-                let e = f[at(&fh, ch)] - r[at(&rh, ch)];
+            if keep(r[column(&rh, "kappa")].abs(), r[column(&rh, "alpha")].abs()) {
+                let e = f[column(&fh, ch)] - r[column(&rh, ch)];
                 e2 += e * e;
-                y2 += r[at(&rh, ch)].powi(2);
+                y2 += r[column(&rh, ch)].powi(2);
             }
         }
         100.0 * (e2 / y2).sqrt()
@@ -198,17 +184,17 @@ fn mf61_staged_identification_beats_the_papers_residuals_and_writes_a_tir_that_r
     }
     // A file with only lateral columns: the longitudinal and combined stages
     // are skipped and reported, the lateral ones fitted.
-    let (h, rows) = table(&dir.path().join("rig.csv"));
+    let (h, rows) = numeric_csv(&dir.path().join("rig.csv"));
     let mut lateral = String::from("fz,alpha,camber,speed,fy,mz\n");
-    for r in rows.iter().filter(|r| r[at(&h, "kappa")] == 0.0) {
+    for r in rows.iter().filter(|r| r[column(&h, "kappa")] == 0.0) {
         lateral += &format!(
             "{},{},{},{},{},{}\n",
-            r[at(&h, "fz")],
-            r[at(&h, "alpha")],
-            r[at(&h, "camber")],
-            r[at(&h, "speed")],
-            r[at(&h, "fy")],
-            r[at(&h, "mz")]
+            r[column(&h, "fz")],
+            r[column(&h, "alpha")],
+            r[column(&h, "camber")],
+            r[column(&h, "speed")],
+            r[column(&h, "fy")],
+            r[column(&h, "mz")]
         );
     }
     fs::write(dir.path().join("lateral.csv"), lateral).unwrap();
@@ -389,16 +375,16 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
     // The Mz stage says what limits it.
     assert!(text.contains("where the error lies:"), "{text}");
     // σ on every raw sample through the written file.
-    let (h, rows) = table(&data);
+    let (h, rows) = numeric_csv(&data);
     let mut pts = String::from("fz,kappa,alpha,camber,speed,pressure\n");
     for r in &rows {
         pts += &format!(
             "{},0,{},{},{},{}\n",
-            r[at(&h, "fz")],
-            r[at(&h, "alpha")],
-            r[at(&h, "camber")],
-            r[at(&h, "speed")],
-            r[at(&h, "pressure")]
+            r[column(&h, "fz")],
+            r[column(&h, "alpha")],
+            r[column(&h, "camber")],
+            r[column(&h, "speed")],
+            r[column(&h, "pressure")]
         );
     }
     fs::write(dir.path().join("points.csv"), pts).unwrap();
@@ -410,13 +396,13 @@ fn mf61_fits_the_real_hoosier_rig_data_over_all_pressures_and_cambers() {
         dir.path().join("forces.csv").to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let (fh, forces) = table(&dir.path().join("forces.csv"));
+    let (fh, forces) = numeric_csv(&dir.path().join("forces.csv"));
     let (mut e2, mut y2) = ([0.0; 2], [0.0; 2]);
     for (f, r) in forces.iter().zip(&rows) {
         for (k, ch) in ["fy", "mz"].iter().enumerate() {
-            let e = f[at(&fh, ch)] - r[at(&h, ch)];
+            let e = f[column(&fh, ch)] - r[column(&h, ch)];
             e2[k] += e * e;
-            y2[k] += r[at(&h, ch)].powi(2);
+            y2[k] += r[column(&h, ch)].powi(2);
         }
     }
     let n = rows.len() as f64;
@@ -513,8 +499,8 @@ fn mf61_refuses_combined_slip_rig_data_with_fx_reversed() {
     // identification's reader, on the rows near zero slip in both.
     let dir = tempfile::tempdir().unwrap();
     synthesise(dir.path());
-    let (h, rows) = table(&dir.path().join("rig.csv"));
-    let fx = at(&h, "fx");
+    let (h, rows) = numeric_csv(&dir.path().join("rig.csv"));
+    let fx = column(&h, "fx");
     let mut s = format!("{}\n", h.join(","));
     for r in &rows {
         let cells: Vec<String> = r
@@ -563,7 +549,7 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
             out.to_str().unwrap(),
         ]);
         assert!(o.status.success(), "{}", stderr(&o));
-        table(out)
+        numeric_csv(out)
     };
     let (head, rows) = eval(&root().join(TRUTH), &d.join("points.csv"), &clean);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(2);
@@ -571,11 +557,11 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
     let mut s = String::from("fz,kappa,alpha,camber,speed,fx,fy,mz,mx,my\n");
     for r in &rows {
         s += &["fz", "kappa", "alpha", "camber", "speed"]
-            .map(|c| r[at(&head, c)].to_string())
+            .map(|c| r[column(&head, c)].to_string())
             .join(",");
         for c in channels {
             let g = handling::identify::data::gauss(&mut rng);
-            s += &format!(",{}", r[at(&head, c)] * (1.0 + 0.01 * g));
+            s += &format!(",{}", r[column(&head, c)] * (1.0 + 0.01 * g));
         }
         s += "\n";
     }
@@ -611,17 +597,17 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
     // without slip ratio is no stage's (pure Fx takes α = 0, combined Fx
     // both slips).
     let (fh, fitted) = eval(&d.join("fit.tir"), &d.join("points.csv"), &d.join("fr.csv"));
-    let (rh, rig) = table(&d.join("rig.csv"));
+    let (rh, rig) = numeric_csv(&d.join("rig.csv"));
     let (mut e2, mut y2, mut left) = (0.0, 0.0, 0);
     for (f, r) in fitted.iter().zip(&rig) {
-        let pure = |c: &str| r[at(&rh, c)].abs() <= 1e-3;
+        let pure = |c: &str| r[column(&rh, c)].abs() <= 1e-3;
         for c in channels {
             if c == "fx" && !pure("alpha") && pure("kappa") {
                 left += 1;
                 continue;
             }
-            e2 += (f[at(&fh, c)] - r[at(&rh, c)]).powi(2);
-            y2 += r[at(&rh, c)].powi(2);
+            e2 += (f[column(&fh, c)] - r[column(&rh, c)]).powi(2);
+            y2 += r[column(&rh, c)].powi(2);
         }
     }
     let pooled = &report["sigma_pooled"];
@@ -660,8 +646,8 @@ fn mf61_fits_the_wheel_moments_and_combined_mz_from_rig_moments() {
     ] {
         let (mut e2, mut y2) = (0.0, 0.0);
         for (t, f) in truth.iter().zip(&fit) {
-            let y = t[at(&th, c)];
-            e2 += (f[at(&fh, c)] - y).powi(2);
+            let y = t[column(&th, c)];
+            e2 += (f[column(&fh, c)] - y).powi(2);
             y2 += y * y;
         }
         let rel = (e2 / y2).sqrt();

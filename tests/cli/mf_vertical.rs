@@ -18,10 +18,6 @@ fn reference(name: &str) -> (Vec<String>, Vec<Vec<f64>>) {
     (head, rows)
 }
 
-fn at(head: &[String], name: &str) -> usize {
-    head.iter().position(|h| h == name).unwrap()
-}
-
 /// `rl` through `tyre-eval` for the reference points of `name` (a right-side
 /// file: α and γ mirrored into the crate's convention, as the modes test).
 fn tyre_eval_rl(tir: &str, head: &[String], rows: &[Vec<f64>]) -> Vec<f64> {
@@ -29,12 +25,12 @@ fn tyre_eval_rl(tir: &str, head: &[String], rows: &[Vec<f64>]) -> Vec<f64> {
     for r in rows {
         pts += &format!(
             "{},{},{},{},{},{}\n",
-            r[at(head, "fz")],
-            r[at(head, "kappa")],
-            r[at(head, "alpha_iso")],
-            -r[at(head, "camber_iso")],
-            r[at(head, "speed")],
-            r[at(head, "pressure")]
+            r[column(head, "fz")],
+            r[column(head, "kappa")],
+            r[column(head, "alpha_iso")],
+            -r[column(head, "camber_iso")],
+            r[column(head, "speed")],
+            r[column(head, "pressure")]
         );
     }
     let dir = tempfile::tempdir().unwrap();
@@ -70,7 +66,7 @@ fn loaded_radius_of_mf62_and_mf61_files_equals_mfevals_to_a_millionth_of_r0() {
         let got = tyre_eval_rl(tir, &head, &rows);
         let mut worst: f64 = 0.0;
         for (r, g) in rows.iter().zip(&got) {
-            let want = r[at(&head, "rl")];
+            let want = r[column(&head, "rl")];
             worst = worst.max((g - want).abs());
             assert!(
                 (g - want).abs() <= 1e-6 * r0,
@@ -91,6 +87,6 @@ fn loaded_radius_of_mf62_and_mf61_files_equals_mfevals_to_a_millionth_of_r0() {
     // MF 6.1: MFeval's own closed form is the same root.
     let (head, rows) = reference("vertical_mf61");
     for r in &rows {
-        assert!((r[at(&head, "rl")] - r[at(&head, "rl_mfeval")]).abs() < 1e-12);
+        assert!((r[column(&head, "rl")] - r[column(&head, "rl_mfeval")]).abs() < 1e-12);
     }
 }

@@ -281,6 +281,7 @@ fn read_run_lacking(
             ay,
             beta: None,
             bank: None,
+            means: Default::default(),
         };
         check_beta_percent(path, &c, &lateral, beta)?;
     }
@@ -305,6 +306,7 @@ fn read_run_lacking(
             ay,
             beta: beta.as_deref(),
             bank: bank.as_deref(),
+            means: Default::default(),
         };
         // Before the bank and the slope, which an `ay` of the other sign
         // distorts.

@@ -152,6 +152,7 @@ mod tests {
             ay: &ay,
             beta: None,
             bank: logged.then_some(&b[..]),
+            means: Default::default(),
         };
         ay_reversed(&c).map(|(_, s)| s)
     }

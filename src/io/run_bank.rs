@@ -82,7 +82,7 @@ struct Residual {
 /// Each half-second mean's residual, where it is finite.
 fn residuals(c: &Lateral) -> Vec<Residual> {
     stretches(c)
-        .into_iter()
+        .iter()
         .map(|s| Residual {
             e: s.ay - s.speed_yaw - s.v_dot,
             bank: s.bank,

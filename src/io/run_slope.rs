@@ -93,6 +93,9 @@ pub(super) struct Lateral<'a> {
     pub beta: Option<&'a [f64]>,
     /// Road bank, rad.
     pub bank: Option<&'a [f64]>,
+    /// Its [`stretches`], made once for the checks that read them (`ay`'s
+    /// sign, the bank's unit, the slope).
+    pub means: std::cell::OnceCell<Vec<Stretch>>,
 }
 
 /// One [`BIN_SECONDS`] s stretch's means, the one averaging every
@@ -131,8 +134,13 @@ impl Stretch {
 }
 
 /// The run's consecutive [`BIN_SECONDS`] s stretches, parked and moving
-/// alike, each with its means.
-pub(super) fn stretches(c: &Lateral) -> Vec<Stretch> {
+/// alike, each with its means: made on the first call, kept on `c`.
+pub(super) fn stretches<'c>(c: &'c Lateral) -> &'c [Stretch] {
+    c.means.get_or_init(|| stretch_means(c))
+}
+
+/// [`stretches`], made.
+fn stretch_means(c: &Lateral) -> Vec<Stretch> {
     let n = c.t.len();
     let v: Option<Vec<f64>> = c
         .beta
@@ -199,8 +207,8 @@ pub(super) fn fit(pairs: impl Iterator<Item = (f64, f64)>) -> (f64, f64) {
 /// The turning stretches' means for the slope.
 fn bins(c: &Lateral) -> Vec<Bin> {
     stretches(c)
-        .into_iter()
-        .filter(Stretch::turning)
+        .iter()
+        .filter(|s| s.turning())
         .map(|s| Bin {
             kinematic: s.speed_yaw + s.v_dot + s.bank_term,
             ay: s.ay,

@@ -152,7 +152,10 @@ fn stage_lines(
                 s.sigma_percent,
                 s.sigma_start_percent,
                 if s.paper_sigma_percent.is_finite() {
-                    format!("; Wei et al. 2010: {:.2} %", s.paper_sigma_percent)
+                    format!(
+                        "; Wei et al. 2010 reached {:.2} % on their own rig data",
+                        s.paper_sigma_percent
+                    )
                 } else {
                     String::new()
                 },

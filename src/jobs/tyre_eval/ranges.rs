@@ -39,6 +39,10 @@ pub struct RangeLeft {
     /// Below `FZMIN` of a file whose rolling resistance does not depend on
     /// the load (`QSY7 = 0`): its `my` at the first such point, N·m.
     pub load_free_my: Option<f64>,
+    /// A camber range every tilted point leaves, each of which read in
+    /// degrees lies inside it: the column reads as degrees (0.5 meant as
+    /// 0.5° is 28.6° in radians, where `physical.rs` asks only past 20°).
+    pub degrees_inside: bool,
 }
 
 /// The ranges of `tyre` the points `inputs` (at file lines `lines`) leave,
@@ -64,6 +68,8 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
                     load_free_my: (below && range.column == "fz")
                         .then(|| load_free_my(tyre, q))
                         .flatten(),
+                    degrees_inside: range.column == "camber"
+                        && camber_reads_as_degrees(tyre, inputs),
                 }),
             }
         }
@@ -72,6 +78,26 @@ pub fn ranges_left(tyre: &MagicFormula, inputs: &[MfInput], lines: &[usize]) -> 
     let order = |r: &RangeLeft| all.iter().position(|a| a.keys == r.range.keys);
     out.sort_by_key(|r| (order(r), !r.below));
     out
+}
+
+/// Whether every point of `inputs` at a camber other than 0 leaves the
+/// file's camber range and each, read in degrees, lies inside it: a column
+/// of small cambers in degrees (0.3, 0.5, 2) evaluated at `CAMMAX` without
+/// a word on its unit otherwise.
+fn camber_reads_as_degrees(tyre: &MagicFormula, inputs: &[MfInput]) -> bool {
+    let leaves = |q: &MfInput| {
+        let camber = |(r, _): &(InputRange, f64)| r.column == "camber";
+        tyre.file_ranges_left(q).iter().any(camber)
+    };
+    let mut tilted = inputs.iter().filter(|q| q.camber != 0.0).peekable();
+    tilted.peek().is_some()
+        && tilted.all(|q| {
+            let degrees = MfInput {
+                camber: q.camber.to_radians(),
+                ..*q
+            };
+            leaves(q) && !leaves(&degrees)
+        })
 }
 
 /// What a Magic Formula evaluates below `FZMIN`.
@@ -120,8 +146,12 @@ impl RangeLeft {
             ("fz", true) => (self.below_fzmin(), String::new()),
             _ => ("evaluated at that end".to_string(), format!(" given, evaluated at {}{unit}", end(bound))),
         };
+        let degrees = match self.degrees_inside {
+            true => "; every camber of the points other than 0 lies outside the range, and read in degrees every one lies inside it: angles are in radians (FORMATS.md); is the column in degrees?",
+            false => "",
+        };
         format!(
-            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}{at}",
+            "{} of {} {side} {key} = {}{unit}{} (the file's range {} to {}): {evaluated}; the first at line {}, {} = {}{unit}{at}{degrees}",
             self.points,
             plural(count, "point", "points"),
             end(bound),

@@ -228,6 +228,22 @@ pub enum InputError {
         /// How many places the rules not shown refused.
         more: usize,
     },
+    /// Runs of a campaign refused, every run checked before any was
+    /// refused (built by [`InputError::runs_refused`]): a campaign of eight
+    /// runs with three bad ones is mended in one pass. Grouped as
+    /// [`InputError::Several`] groups places.
+    #[error("{} of {of} runs refused, in run order:{}{}", errors.iter().map(|e| e.1).sum::<usize>() + more, errors.iter().map(|(e, n)| format!("\n  {e}{}", alike_runs(*n))).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    RunsRefused {
+        /// The first refused run's file.
+        path: PathBuf,
+        /// The runs of the campaign.
+        of: usize,
+        /// The refusals, in run order, each with how many runs it stands
+        /// for (as [`InputError::Several`]'s).
+        errors: Vec<(InputError, usize)>,
+        /// How many runs the rules not shown refused.
+        more: usize,
+    },
 }
 
 /// The places an [`InputError::Several`] lists before it counts the rest.
@@ -261,39 +277,29 @@ impl InputError {
         }
     }
 
+    /// The refusals of a campaign's runs (in run order, of `of` runs) as
+    /// one: none, the one, or [`InputError::RunsRefused`].
+    pub(crate) fn runs_refused(mut errors: Vec<InputError>, of: usize) -> Option<Self> {
+        if errors.len() < 2 {
+            return errors.pop();
+        }
+        let path = errors[0].path().to_path_buf();
+        let (errors, more) = grouped(errors);
+        Some(InputError::RunsRefused {
+            path,
+            of,
+            errors,
+            more,
+        })
+    }
+
     /// The errors of `path` (in file order) as one: none, the one, or
     /// [`InputError::Several`] listing the first [`SEVERAL_SHOWN`].
     pub(crate) fn all_of(path: &std::path::Path, mut errors: Vec<InputError>) -> Option<Self> {
         if errors.len() < 2 {
             return errors.pop();
         }
-        // A rule that refuses more than SAID_EACH places is one line at
-        // its first, with its count (a column in degrees); a few places
-        // of one rule are each said, to be mended one by one.
-        let mut counts: Vec<(Rule, usize)> = Vec::new();
-        for e in &errors {
-            let rule = e.rule();
-            match counts.iter_mut().find(|(r, _)| *r == rule) {
-                Some(r) => r.1 += 1,
-                None => counts.push((rule, 1)),
-            }
-        }
-        let count = |e: &InputError| {
-            let rule = e.rule();
-            counts.iter().find(|(r, _)| *r == rule).map_or(1, |r| r.1)
-        };
-        let mut shown: Vec<(InputError, usize)> = Vec::new();
-        for e in errors {
-            let n = count(&e);
-            if n <= SAID_EACH {
-                shown.push((e, 1));
-            } else if !shown.iter().any(|(f, _)| f.rule() == e.rule()) {
-                shown.push((e, n));
-            }
-        }
-        let more = shown.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
-        shown.truncate(SEVERAL_SHOWN);
-        let errors = shown;
+        let (errors, more) = grouped(errors);
         Some(InputError::Several {
             path: path.to_path_buf(),
             errors,
@@ -328,7 +334,8 @@ impl InputError {
             | InputError::TooFewRbfPairs { path, .. }
             | InputError::NoCampaign { path }
             | InputError::CampaignStemTwice { path, .. }
-            | InputError::Several { path, .. } => path,
+            | InputError::Several { path, .. }
+            | InputError::RunsRefused { path, .. } => path,
         }
     }
 
@@ -351,9 +358,53 @@ impl InputError {
             | InputError::Sweep { at, .. }
             | InputError::Key { at, .. }
             | InputError::Invalid { at, .. } => *at,
-            InputError::Several { errors, .. } => errors.first().and_then(|e| e.0.location()),
+            InputError::Several { errors, .. } | InputError::RunsRefused { errors, .. } => {
+                errors.first().and_then(|e| e.0.location())
+            }
             _ => None,
         }
+    }
+}
+
+/// `errors` grouped by rule, in their order: a rule that refuses more
+/// than [`SAID_EACH`] places is one entry at its first with its count, a
+/// few places of one rule each an entry; the first [`SEVERAL_SHOWN`]
+/// entries, and how many places the rest stand for.
+fn grouped(errors: Vec<InputError>) -> (Vec<(InputError, usize)>, usize) {
+    // A rule that refuses more than SAID_EACH places is one line at
+    // its first, with its count (a column in degrees); a few places
+    // of one rule are each said, to be mended one by one.
+    let mut counts: Vec<(Rule, usize)> = Vec::new();
+    for e in &errors {
+        let rule = e.rule();
+        match counts.iter_mut().find(|(r, _)| *r == rule) {
+            Some(r) => r.1 += 1,
+            None => counts.push((rule, 1)),
+        }
+    }
+    let count = |e: &InputError| {
+        let rule = e.rule();
+        counts.iter().find(|(r, _)| *r == rule).map_or(1, |r| r.1)
+    };
+    let mut shown: Vec<(InputError, usize)> = Vec::new();
+    for e in errors {
+        let n = count(&e);
+        if n <= SAID_EACH {
+            shown.push((e, 1));
+        } else if !shown.iter().any(|(f, _)| f.rule() == e.rule()) {
+            shown.push((e, n));
+        }
+    }
+    let more = shown.iter().skip(SEVERAL_SHOWN).map(|r| r.1).sum();
+    shown.truncate(SEVERAL_SHOWN);
+    (shown, more)
+}
+
+/// What a rule's first run adds when the rule refused `n` runs.
+fn alike_runs(n: usize) -> String {
+    match n {
+        1 => String::new(),
+        _ => format!(" (the first of {n} runs refused alike)"),
     }
 }
 

@@ -99,3 +99,75 @@ fn the_papers_sigma_is_said_as_theirs_on_their_data() {
     );
     assert!(!said.contains("Wei et al. 2010: "), "{said}");
 }
+
+/// A campaign with two bad runs was refused at the first, and only after
+/// mending it did the user learn of the second. Every run is now checked
+/// before any is refused: a run cut to 0.58 s and one whose gyro logs 0
+/// throughout are both said, in run order, with the count of runs; one bad
+/// run alone is refused as before, in its own words.
+#[test]
+fn every_refused_run_of_a_campaign_is_said_at_once() {
+    let dir = scratch(&[]);
+    let camp = synth_campaign(
+        dir.path(),
+        "bad",
+        &["--effects", "sensor_delay", "--seed", "1"],
+    );
+    let mut files: Vec<PathBuf> = fs::read_dir(camp.join("runs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    let short = fs::read_to_string(&files[0]).unwrap();
+    let cut: String = short.lines().take(60).map(|l| format!("{l}\n")).collect();
+    fs::write(&files[0], cut).unwrap();
+    let out = dir.path().join("d");
+    let o = run(&[
+        "diagnose",
+        camp.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let one = stderr(&o);
+    assert!(
+        one.contains("the run is 0.58 s long with 59 samples"),
+        "{one}"
+    );
+    assert!(!one.contains("runs refused"), "{one}");
+    let dead = fs::read_to_string(&files[2]).unwrap();
+    let mut lines = dead.lines();
+    let head = lines.next().unwrap();
+    let yaw = head.split(',').position(|c| c == "yaw_rate").unwrap();
+    let mut zeroed = format!("{head}\n");
+    for l in lines {
+        let mut cells: Vec<&str> = l.split(',').collect();
+        cells[yaw] = "0";
+        zeroed.push_str(&cells.join(","));
+        zeroed.push('\n');
+    }
+    fs::write(&files[2], zeroed).unwrap();
+    let o = run(&[
+        "diagnose",
+        camp.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let both = stderr(&o);
+    let listed: Vec<&str> = both.lines().collect();
+    assert_eq!(
+        listed[0], "error: 2 of 8 runs refused, in run order:",
+        "{both}"
+    );
+    let name = |p: &PathBuf| p.file_name().unwrap().to_string_lossy().into_owned();
+    assert!(
+        listed[1].contains(&name(&files[0])) && listed[1].contains("0.58 s long"),
+        "{both}"
+    );
+    assert!(
+        listed[2].contains(&name(&files[2]))
+            && listed[2].contains("channel `yaw_rate` holds one value (0)"),
+        "{both}"
+    );
+}

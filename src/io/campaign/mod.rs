@@ -33,6 +33,7 @@ mod copies;
 mod degrees;
 mod glob;
 mod kind;
+mod run_checks;
 mod runs;
 
 use super::paths::beside;

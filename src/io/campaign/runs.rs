@@ -5,17 +5,16 @@
 //! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
+use super::run_checks::{checked_run, RunContext, RunRefusal};
 use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
-use crate::io::{read_run_declared, AngleColumn};
+use crate::io::AngleColumn;
 use crate::measured::calibration::{calibrate, CalibrationReport};
 use crate::measured::clean::{
-    clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece, MIN_RUN_SAMPLES,
-    MIN_RUN_SECONDS,
+    clean_run, segments, CleanSettings, CleaningReport, GlitchKind, Piece,
 };
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{dead_steer, steer_problem, yaw_per_neutral, Wheelbase};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -247,39 +246,31 @@ pub(super) fn read_runs(
     // is refused, as `metrics` and a replay refuse it.
     let mut absent: Vec<(AngleColumn, Vec<String>, InputError)> = Vec::new();
     let (mut longest, mut was_cut) = (0.0_f64, false);
+    // Every run is checked before any is refused: a campaign of eight runs
+    // with three bad ones is mended in one pass, not three.
+    let mut refused = Vec::new();
     for (i, p) in files.iter().enumerate() {
-        let (run, lacks) = read_run_declared(p, degrees)?;
-        // Every earlier run passed the checks below: a copy of one would
-        // too, and be held out on the samples its twin is fitted on.
-        if let Some(k) = super::copies::copied_from(&raw, &run) {
-            return Err(copied(k, i));
-        }
+        let ctx = RunContext {
+            files,
+            degrees,
+            wheelbase,
+            min_speed,
+        };
+        let (run, lacks, run_notes) = match checked_run(&ctx, i, &raw, copied) {
+            Ok(checked) => checked,
+            Err(RunRefusal::Run(e)) => {
+                refused.push(e);
+                continue;
+            }
+            Err(RunRefusal::Campaign(e)) => return Err(e),
+        };
         for (a, e) in lacks {
             match absent.iter_mut().find(|x| x.0 == a) {
                 Some(x) => x.1.push(p.display().to_string()),
                 None => absent.push((a, vec![p.display().to_string()], e)),
             }
         }
-        check_length(&run)?;
-        check_live_channels(&run)?;
-        if let Some(problem) = dead_steer(&run, wheelbase, min_speed) {
-            return Err(file_error(&run.path, problem));
-        }
-        let declared = degrees.contains(&AngleColumn::Steer);
-        if files.len() > 1 && !declared {
-            if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
-                let first = (run.path.display().to_string(), m);
-                let later = &files[i + 1..];
-                let some = runs_in_degrees(first, later, files.len(), wheelbase, min_speed);
-                if let Some(e) = some {
-                    return Err(e);
-                }
-            }
-        }
-        notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared)?);
-        notes.extend(crate::io::unchecked_speed_unit(&run));
-        notes.extend(crate::io::steep_bank(&run));
-        notes.extend(super::ax_check::ax_note(&run));
+        notes.extend(run_notes);
         inputs.push(p.clone());
         let name = run.path.display().to_string();
         let (listed, kept) = (cleaning.glitches.len(), cleaning.pieces.len());
@@ -325,6 +316,9 @@ pub(super) fn read_runs(
                 None => runs.push(piece),
             }
         }
+    }
+    if let Some(e) = InputError::runs_refused(refused, files.len()) {
+        return Err(e);
     }
     if let Some(seg) = segment.filter(|_| !was_cut && !runs.is_empty()) {
         notes.push(uncut_note(seg, longest));
@@ -404,113 +398,9 @@ fn unscored_roll(raw: &[MeasuredRun], declared: bool) -> Option<String> {
     })
 }
 
-/// The steer judged against the yaw rate it gives where it is held
-/// ([`yaw_per_neutral`]), by the rule `metrics` applies too
-/// ([`steer_problem`]) with the campaign's wheelbase, as a replay judges
-/// its run: a yaw rate turning against the steer (another sign
-/// convention), far smaller than a neutral car's (a steer in degrees or a
-/// steering-wheel angle) or far larger is refused; one above 3 a neutral
-/// car's (a steer too small, or a wrong wheelbase) is noted, and the note
-/// asks whether a steer `declared` in degrees under `[runs]` was in
-/// radians.
-fn steer_against_yaw(
-    run: &MeasuredRun,
-    wheelbase: f64,
-    min_speed: f64,
-    declared: bool,
-) -> Result<Option<String>, InputError> {
-    let Some(y) = yaw_per_neutral(run, wheelbase, min_speed) else {
-        return Ok(None);
-    };
-    let (m, n) = (y.median, y.samples);
-    if let Some(problem) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
-        return Err(file_error(&run.path, problem));
-    }
-    let ask = match declared {
-        true => " `steer` is declared in degrees under [runs]: was it already in radians?",
-        false => "",
-    };
-    Ok((m > 3.0).then(|| {
-        format!(
-            "{}: the yaw rate is {m:.1}× a neutral car's for this steer (median r·l/(u·δ) over {n} held steered samples): is `steer` the road-wheel angle in radians, and the wheelbase right?{ask}",
-            run.path.display()
-        )
-    }))
-}
-
-/// The median `r·l/(u·δ)` of a run whose steer is far larger than its yaw
-/// rate ([`InputProblem::SteerAboveYaw`]: in degrees, or a steering-wheel
-/// angle).
-fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<f64> {
-    let y = yaw_per_neutral(run, wheelbase, min_speed)?;
-    match steer_problem(&y, Wheelbase::Known(wheelbase))? {
-        InputProblem::SteerAboveYaw { median, .. } => Some(median),
-        _ => None,
-    }
-}
-
-/// The refusal of a campaign of `of` run files whose run `first` (its file
-/// and median `r·l/(u·δ)`) has a steer in degrees, with every `later` file
-/// that has one too (read again here, only on this way out): the runs
-/// before it were judged right, so `degrees` under [runs], which converts
-/// every run, is wrong for them; `None` where all runs read so (the run's
-/// own refusal, as `metrics` words it, advises `degrees` then).
-fn runs_in_degrees(
-    first: (String, f64),
-    later: &[PathBuf],
-    of: usize,
-    wheelbase: f64,
-    min_speed: f64,
-) -> Option<InputError> {
-    let path = PathBuf::from(&first.0);
-    let mut runs = vec![first];
-    for p in later {
-        let Ok((run, _)) = read_run_declared(p, &[]) else {
-            continue;
-        };
-        if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
-            runs.push((run.path.display().to_string(), m));
-        }
-    }
-    if runs.len() == of {
-        return None;
-    }
-    let problem = crate::error::SteerInDegreesRuns { runs, of };
-    Some(file_error(
-        &path,
-        InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),
-    ))
-}
-
-/// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the
-/// whole run (a dead sensor logging zeros, [`MeasuredRun::dead_channels`]):
-/// its noise floor would be zero and any gap to it infinitely significant.
-fn check_live_channels(run: &MeasuredRun) -> Result<(), InputError> {
-    match run.dead_channels().first() {
-        Some(d) => Err(file_error(&run.path, d.problem())),
-        None => Ok(()),
-    }
-}
-
-fn check_length(run: &MeasuredRun) -> Result<(), InputError> {
-    let n = run.t.len();
-    let span = run.t[n - 1] - run.t[0];
-    if span < MIN_RUN_SECONDS || n < MIN_RUN_SAMPLES {
-        return Err(file_error(
-            &run.path,
-            InputProblem::RunTooShort {
-                span,
-                samples: n,
-                min_span: MIN_RUN_SECONDS,
-                min_samples: MIN_RUN_SAMPLES,
-            },
-        ));
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::run_checks::steer_against_yaw;
     use super::*;
 
     fn run(t: Vec<f64>) -> MeasuredRun {

@@ -26,7 +26,8 @@
 //! own sample times). Units: SI, rad.
 //!
 //! Layout: this file reads the campaign's tables and its tyres; `runs.rs`
-//! finds, reads, checks and cleans its runs.
+//! finds, reads and cleans its runs, each checked by `run_checks.rs`
+//! (every run checked before any is refused).
 
 mod ax_check;
 mod copies;

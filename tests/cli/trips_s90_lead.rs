@@ -122,14 +122,17 @@ fn every_refused_run_of_a_campaign_is_said_at_once() {
     let cut: String = short.lines().take(60).map(|l| format!("{l}\n")).collect();
     fs::write(&files[0], cut).unwrap();
     let out = dir.path().join("d");
-    let o = run(&[
-        "diagnose",
-        camp.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    let one = stderr(&o);
+    let refused = || {
+        let o = run(&[
+            "diagnose",
+            camp.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success());
+        stderr(&o)
+    };
+    let one = refused();
     assert!(
         one.contains("the run is 0.58 s long with 59 samples"),
         "{one}"
@@ -147,14 +150,7 @@ fn every_refused_run_of_a_campaign_is_said_at_once() {
         zeroed.push('\n');
     }
     fs::write(&files[2], zeroed).unwrap();
-    let o = run(&[
-        "diagnose",
-        camp.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    let both = stderr(&o);
+    let both = refused();
     let listed: Vec<&str> = both.lines().collect();
     assert_eq!(
         listed[0], "error: 2 of 8 runs refused, in run order:",

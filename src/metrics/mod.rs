@@ -64,6 +64,7 @@ mod settling;
 use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
+mod variance_said;
 mod yaw_per_neutral;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};

@@ -354,6 +354,7 @@ pub struct MeasuredMetrics {
 }
 
 mod ay_check;
+mod steady_advice;
 pub(crate) use ay_check::AY_METRICS;
 pub use ay_check::{AyCheck, AY_CHECKED_FROM, AY_CHECK_SAMPLES, AY_DISAGREES};
 
@@ -481,7 +482,11 @@ pub fn measured_step_metrics(
                         settings,
                     )
                 })
-                .and_then(|m| check_step_shape(&p.t, &p.steer, &m, settings).map(|()| m))
+                .and_then(|m| {
+                    check_step_shape(&p.t, &p.steer, &m, settings)
+                        .map(|()| m)
+                        .map_err(|e| steady_advice::with_advice(e, &p, settings))
+                })
                 .map(|m| (m, p))
                 .map_err(PieceRefusal::NoStepMetrics)
         },

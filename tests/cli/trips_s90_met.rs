@@ -136,7 +136,7 @@ fn a_log_too_coarse_to_check_ay_says_so_instead_of_blaming_the_sensor() {
     let (j, w) = measured(&csv, &["--pre-window", "0.05"]);
     assert!(!w.contains("disagrees"), "{w}");
     assert!(
-        w.contains("`ay` is not checked against the speed times the yaw rate (at a steady state ay = u·r): the check reads samples the logger measured (none the cleaning masked), and the initial window holds 1 before the steer's onset (0.00–0.05 s) and the steady window 11 (8.00–9.00 s), fewer than 2 in one of them"),
+        w.contains("`ay` is not checked against the speed times the yaw rate (at a steady state ay = u·r): the check reads samples the logger measured (none the cleaning masked), and the initial window holds 1 before the step (0.00–0.05 s) and the steady window 11 (8.00–9.00 s), fewer than 2 in one of them"),
         "{w}"
     );
     assert!(j["ay_steady"].as_f64().is_some(), "{j}");

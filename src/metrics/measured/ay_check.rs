@@ -6,7 +6,7 @@
 //! metrics are then left out, not read from it.
 //!
 //! Both changes are read from samples the logger measured: the initial
-//! window's samples before the steer leaves its initial value, and the
+//! window's samples before the step (its time zero), and the
 //! steady window's, none of them masked by the cleaning (a masked sample is
 //! filled from its neighbours, and a masked initial window from the first
 //! sample after the step: a 10 Hz log's correct 1.40 m/s² step of `ay`
@@ -48,12 +48,12 @@ pub(crate) struct AyBasis {
     ay: f64,
     /// The steady change of the yaw rate, rad/s.
     yaw_rate: f64,
-    /// The initial window's measured samples before the steer's onset.
+    /// The initial window's measured samples before the step.
     before: usize,
     /// The steady window's measured samples.
     after: usize,
-    /// The initial window read, s: its start and the steer's onset (or
-    /// the window's end).
+    /// The initial window read, s: its start and its end or the step's
+    /// time zero, the earlier.
     before_span: (f64, f64),
     /// The steady window, s.
     after_span: (f64, f64),
@@ -92,12 +92,10 @@ pub(crate) fn ay_basis(
     for &i in &piece.masked {
         masked[i] = true;
     }
-    // The steer's onset: where it first leaves its first value by 5 % of
-    // its step (the metrics check it held over the initial window).
-    let d0 = piece.steer[0];
-    let onset = (0..t.len())
-        .find(|&i| (piece.steer[i] - d0).abs() > 0.05 * m.steer_step.abs())
-        .map_or(last, |i| t[i]);
+    // Before the step: ahead of the steer's half-way point, time zero
+    // (the metrics check the steer held over the initial window, to its
+    // noise; a first sample's noise is no onset).
+    let onset = m.time_zero;
     let window_end = first + s.pre_window;
     let before: Vec<usize> = (0..t.len())
         .filter(|&i| !masked[i] && t[i] <= window_end && t[i] < onset)
@@ -127,7 +125,7 @@ pub(crate) fn ay_check(b: &AyBasis, u: f64, piece: &str) -> AyCheck {
     }
     if few {
         return AyCheck::Unchecked(format!(
-            "{piece}: `ay` is not checked against the speed times the yaw rate (at a steady state ay = u·r): the check reads samples the logger measured (none the cleaning masked), and the initial window holds {} before the steer's onset ({}–{} s) and the steady window {} ({}–{} s), fewer than {AY_CHECK_SAMPLES} in one of them; the ay metrics are given unchecked: log faster or widen the window (--pre-window, --steady-window) to check them",
+            "{piece}: `ay` is not checked against the speed times the yaw rate (at a steady state ay = u·r): the check reads samples the logger measured (none the cleaning masked), and the initial window holds {} before the step ({}–{} s) and the steady window {} ({}–{} s), fewer than {AY_CHECK_SAMPLES} in one of them; the ay metrics are given unchecked: log faster or widen the window (--pre-window, --steady-window) to check them",
             b.before,
             crate::format::fixed(b.before_span.0, 2),
             crate::format::fixed(b.before_span.1, 2),

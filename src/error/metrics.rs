@@ -171,8 +171,10 @@ pub enum MetricsError {
     /// A record too short for its steady window: the window, the record's
     /// last `--steady-window` seconds, starts before the steer has reached
     /// its step, so its means mix the step (and the time before it) in.
-    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so a `--steady-window` of at most {} s starts after it; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), super::hundredths_down(to - settles), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
+    #[error("the record is too short for its steady window: the step lies inside the steady window ({from:.2}–{to:.2} s, `--steady-window` = {} s) whose means are the steady values; the steer settles within 5 % of its held value only at {settles:.2} s, so {}; the record holds the step for {} s, and a {} s steady window needs it held to {} s at least (a record {} s longer)", Num(to - from), advice.words(to - settles), fixed(to - settles, 2), Num(to - from), fixed(settles + (to - from), 2), fixed(settles - from, 2))]
     ShortForSteadyWindow {
+        /// Which shorter window, if any, reads a settled response.
+        advice: SteadyAdvice,
         /// From when on the steer stays within 5 % of its step of its held
         /// value, s.
         settles: f64,
@@ -231,3 +233,46 @@ pub const MIN_STRAIGHT: f64 = 0.1;
 /// The band a step steer's normalised steer stays in once it has reached
 /// 90 % of its step (a driver's hand wobbles by far less than half a step).
 pub const HELD_STEP: (f64, f64) = (0.5, 1.5);
+
+/// What a record too short for its steady window is advised
+/// ([`MetricsError::ShortForSteadyWindow`]): a window that starts after the
+/// steer settles is not enough, for the response may still be moving in
+/// it (a linear car's record ending 0.6 s after its step, advised "at most
+/// 0.58 s", read a yaw-rate gain 7 % low, not settled).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SteadyAdvice {
+    /// Not tried: only the steer's bound is known.
+    SteerOnly,
+    /// The longest window tried, at most the steer's bound, whose response
+    /// settles (every channel judged within 2 % of its step, and not still
+    /// approaching it), s.
+    Settled(f64),
+    /// No window tried, from `shortest` s (the yaw rate's response time,
+    /// or two sample intervals) to the steer's bound, reads a settled
+    /// response: the record ends before its steady state.
+    NoneSettles {
+        /// The shortest window tried, s.
+        shortest: f64,
+    },
+}
+
+impl SteadyAdvice {
+    /// The advice's words, the steer held for `held` s before the record
+    /// ends.
+    pub(crate) fn words(&self, held: f64) -> String {
+        let most = super::hundredths_down(held);
+        match *self {
+            Self::SteerOnly => {
+                format!("a `--steady-window` of at most {most} s starts after it")
+            }
+            Self::Settled(w) => format!(
+                "a `--steady-window` of at most {most} s starts after it, and one of {} s reads a settled response",
+                super::hundredths_down(w)
+            ),
+            Self::NoneSettles { shortest } => format!(
+                "a steady window must start after it, and none from {} s to {most} s reads a settled response (every channel within 2 % of its step and no longer approaching it): the record ends before the car reaches its steady state, and a gain read from it is no steady-state gain; record the step held longer",
+                crate::format::fixed(shortest, 2)
+            ),
+        }
+    }
+}

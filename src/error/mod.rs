@@ -69,7 +69,7 @@ pub use input::{CellProblem, InputError, Location};
 pub use lateral_slope::{BetaInPercent, LateralSlope, SlopeUnit};
 pub use level_slip::{unit_slips, LevelSlip};
 pub use long_replay::LongReplay;
-pub use metrics::{MetricsError, HELD_STEP, MIN_STRAIGHT};
+pub use metrics::{MetricsError, SteadyAdvice, HELD_STEP, MIN_STRAIGHT};
 pub use min_speed::MinSpeedRemoved;
 pub use none_with::NoneWithEffects;
 pub(crate) use number::hundredths_down;

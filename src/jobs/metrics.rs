@@ -6,7 +6,9 @@ use crate::error::{Error, ParamError};
 use crate::io::{read_run_reading, AngleColumn, DeclaredBy, Slip};
 use crate::measured::clean::CleaningReport;
 use crate::measured::MeasuredRun;
-use crate::metrics::measured::{measured_step_metrics, MeasuredMetrics, AY_METRICS, NO_AY};
+use crate::metrics::measured::{
+    measured_step_metrics, AyCheck, MeasuredMetrics, AY_METRICS, NO_AY,
+};
 use crate::metrics::{MetricSettings, StepMetrics};
 use serde::Serialize;
 use std::path::Path;
@@ -94,11 +96,16 @@ pub fn run_with_degrees(
         }
     };
     let clock = run.t.clone();
-    // An `ay` that disagrees with u·r is measured again without it.
-    if let Some(w) = m.ay_disagreement() {
-        run.ay = None;
-        m = measured_step_metrics(run.clone(), min_speed, settings)?;
-        dead.push(w);
+    // An `ay` that disagrees with u·r is measured again without it; one
+    // the run cannot check is kept, and said.
+    match m.ay_check() {
+        AyCheck::Agrees => {}
+        AyCheck::Disagrees(w) => {
+            run.ay = None;
+            m = measured_step_metrics(run.clone(), min_speed, settings)?;
+            dead.push(w);
+        }
+        AyCheck::Unchecked(w) => m.warnings.push(w),
     }
     if !dead.is_empty() {
         // A dead `ay`'s warning says more than that the run has none.
@@ -172,13 +179,7 @@ fn windows_said(m: &StepMetrics, s: &MetricSettings, t: &[f64], t_end: f64) -> V
             crate::format::fixed(t_end, 2)
         ));
     }
-    if window < m.yaw_rate_response_time {
-        said.push(format!(
-            "the total-variance window, {} s, ends before the yaw rate responds (its response time is {} s): E_r, E_ay and Er measure only the start of the response; the default is 4 s",
-            crate::error::Num(window),
-            crate::format::fixed(m.yaw_rate_response_time, 3)
-        ));
-    }
+    said.extend(m.variance_window_before_response(window));
     if t.len() < 2 {
         return said;
     }

@@ -348,45 +348,26 @@ pub struct MeasuredMetrics {
     pub cleaning: CleaningReport,
     /// The piece's median speed, m/s.
     pub speed: Option<f64>,
+    /// What the check of `ay` against `u·r` reads ([`Self::ay_check`]).
+    #[serde(skip)]
+    pub(crate) ay_basis: Option<ay_check::AyBasis>,
 }
 
-/// The share of `u·Δr` by which a steady `Δay` may differ from it before
-/// the accelerometer is said to disagree with the gyro: at a steady state
-/// `ay = u·r` (ISO 8855, `β̇ = 0`), over a step the bank's constant
-/// `g·sin θ` cancels, and a slowly changing speed moves it by a few
-/// percent, so half is a sensor fault (a dead accelerometer logging
-/// noise, a gain in g, a channel of another axis), not a car.
-pub const AY_DISAGREES: f64 = 0.5;
-
-/// The metrics a run without a usable `ay` leaves out, as the warnings
-/// name them.
-pub(crate) const AY_METRICS: &str = "ay response time, steady ay, E_ay and Er";
-
-/// The smallest `|u·Δr|` the check judges, m/s²: below it an
-/// accelerometer's noise and offset drift are of its size.
-pub const AY_CHECKED_FROM: f64 = 0.5;
+mod ay_check;
+mod steady_advice;
+pub(crate) use ay_check::AY_METRICS;
+pub use ay_check::{AyCheck, AY_CHECKED_FROM, AY_CHECK_SAMPLES, AY_DISAGREES};
 
 impl MeasuredMetrics {
-    /// The warning that the steady change of `ay` disagrees with the speed
-    /// times the steady change of the yaw rate (`None`: it agrees, or one of
-    /// them is missing or too small to judge).
-    pub fn ay_disagreement(&self) -> Option<String> {
-        let (ay, u) = (self.metrics.ay_steady?, self.speed?);
-        let expected = u * self.metrics.yaw_rate_steady;
-        if expected.abs() < AY_CHECKED_FROM
-            || (ay - expected).abs() <= AY_DISAGREES * expected.abs()
-        {
-            return None;
+    /// The check of `ay` against the speed times the yaw rate
+    /// ([`ay_check`]): it agrees (or is missing or too small to judge),
+    /// disagrees (the ay metrics are then left out), or the run holds too
+    /// few measured samples to compare.
+    pub fn ay_check(&self) -> AyCheck {
+        match (&self.ay_basis, self.speed) {
+            (Some(b), Some(u)) => ay_check::ay_check(b, u, &self.piece),
+            _ => AyCheck::Agrees,
         }
-        Some(format!(
-            "{}: the steady change of `ay` ({} m/s²) disagrees with the speed times that of the yaw rate ({} m/s × {} rad/s = {} m/s²) by more than {} %: at a steady state ay = u·r, so the accelerometer or the gyro is wrong (a dead accelerometer logging noise, a gain, unit or sign, another axis); the ay metrics ({AY_METRICS}) are left out (null in --json), not read from it",
-            self.piece,
-            crate::format::readable(ay, 3),
-            crate::format::readable(u, 3),
-            crate::format::readable(self.metrics.yaw_rate_steady, 3),
-            crate::format::readable(expected, 3),
-            crate::format::fixed(100.0 * AY_DISAGREES, 0)
-        ))
     }
 }
 
@@ -501,7 +482,11 @@ pub fn measured_step_metrics(
                         settings,
                     )
                 })
-                .and_then(|m| check_step_shape(&p.t, &p.steer, &m, settings).map(|()| m))
+                .and_then(|m| {
+                    check_step_shape(&p.t, &p.steer, &m, settings)
+                        .map(|()| m)
+                        .map_err(|e| steady_advice::with_advice(e, &p, settings))
+                })
                 .map(|m| (m, p))
                 .map_err(PieceRefusal::NoStepMetrics)
         },
@@ -574,6 +559,7 @@ pub fn measured_step_metrics(
     if metrics.ay_steady.is_none() {
         warnings.push(NO_AY.into());
     }
+    let ay_basis = ay_check::ay_basis(&piece, &metrics, settings);
     Ok(MeasuredMetrics {
         metrics,
         piece: piece.path.display().to_string(),
@@ -583,5 +569,6 @@ pub fn measured_step_metrics(
         warnings,
         cleaning,
         speed,
+        ay_basis,
     })
 }

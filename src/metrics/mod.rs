@@ -64,6 +64,7 @@ mod settling;
 use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
+mod variance_said;
 mod yaw_per_neutral;
 
 pub use continuous::{step_metrics_continuous, ContinuousRecord, Sample};
@@ -280,7 +281,7 @@ impl StepMetrics {
     pub fn settling_warning(&self) -> Option<String> {
         match self.settled {
             true => self.settling.approaching_warning(self.yaw_rate_gain),
-            false => self.settling.not_settled_warning().or_else(|| {
+            false => self.settling.not_settled_warning(self.yaw_rate_gain).or_else(|| {
                 Some(format!(
                     "the response has not settled in the steady window (it spreads by more than {} % of its step beyond its noise)",
                     crate::error::Num(100.0 * SETTLED_SPREAD)

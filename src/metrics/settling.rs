@@ -152,8 +152,10 @@ impl ChannelSettling {
 
     /// The warning of the channels that have not settled, each named with
     /// its spread; the grip limit is named only where the sideslip alone
-    /// moves while the yaw rate and lateral acceleration hold.
-    pub fn not_settled_warning(&self) -> Option<String> {
+    /// moves while the yaw rate and lateral acceleration hold; a yaw rate
+    /// that has not settled makes the yaw-rate `gain` (1/s) no
+    /// steady-state gain, said with how far it may be off.
+    pub fn not_settled_warning(&self, gain: f64) -> Option<String> {
         let named = self.named();
         let failed: Vec<String> = named
             .iter()
@@ -181,8 +183,22 @@ impl ChannelSettling {
             true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while its sideslip grows",
             false => "",
         };
+        // The yaw rate's spread or trend, a share of its step, is how far
+        // the gain read from the window's mean may be off its steady state.
+        let off = match self.yaw_rate {
+            Settling::NotSettled { beyond } => Some(beyond),
+            Settling::Drifting { heads, .. } => Some(heads),
+            _ => None,
+        };
+        let gain = off.map_or(String::new(), |off| {
+            format!(
+                "; the yaw-rate gain, {} 1/s, is no steady-state gain: read over a window its yaw rate still moves in, it may be off by up to about {} % (a longer record, held until the response settles, reads it)",
+                crate::format::fixed(gain, 4),
+                crate::format::significant(100.0 * off, 2)
+            )
+        });
         Some(format!(
-            "the response has not settled in the steady window: {}, more than {} %{grip}",
+            "the response has not settled in the steady window: {}, more than {} %{grip}{gain}",
             failed.join(", "),
             crate::error::Num(100.0 * SETTLED_SPREAD)
         ))

@@ -170,6 +170,7 @@ fn short_for_steady_window(
     let (from, to) = (t[t.len() - 1] - s.steady_window, t[t.len() - 1]);
     let (first_in, settles) = settling_of_steer(t, steer, d0, onset)?;
     (t[first_in] > from).then(|| MetricsError::ShortForSteadyWindow {
+        advice: crate::error::SteadyAdvice::SteerOnly,
         settles: settles.unwrap_or(to),
         from,
         to,

@@ -263,6 +263,11 @@ fn step_warnings(sc: &Scenario, metrics: Option<&StepMetrics>) -> Vec<String> {
             super::metrics::filter_speed::filter_measures_itself(m, sc.integrator.step)
         }),
     );
+    // A total-variance window shorter than the response, said as
+    // `metrics` says it of a log.
+    warnings.extend(
+        metrics.and_then(|m| m.variance_window_before_response(sc.metrics.variance_window)),
+    );
     // A step no steering can drive (an instant one, at rise_time = 0).
     if let Manoeuvre::StepSteer(s) = &sc.manoeuvre {
         warnings.extend(step_rate_applicability(s.amplitude, s.rise_time));

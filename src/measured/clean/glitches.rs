@@ -353,6 +353,21 @@ pub(super) fn repair(t: &[f64], x: &mut [f64], bad: &[bool]) {
 /// The response channels a settled hold is judged against.
 const RESPONSES: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta];
 
+/// Whether a response's zero run `f` opens the record and ends where a
+/// steer held exactly over it changes: the response read 0 before the
+/// steer moved (a noise-free record's straight running before an instant
+/// step: its ay jumps with the steer, 10 zeros at 10 Hz), not a dropout.
+/// Masked, it was filled with the first sample after the step, and the
+/// step of `ay` read 0.652 m/s² for 1.40. A logger's noisy steer is never
+/// held exactly, so a noisy log's leading zeros stay zero reads.
+fn zero_before_steer(steer: &[f64], f: &Found) -> bool {
+    let end = f.start + f.len;
+    f.start == 0
+        && end < steer.len()
+        && steer[..end].iter().all(|&d| d == steer[0])
+        && steer[end] != steer[end - 1]
+}
+
 /// Finds the glitches of one run (a piece between time gaps), repairs its
 /// inputs, masks its responses, and lists what it found in `report`.
 pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
@@ -377,6 +392,7 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
             found.retain(|f| {
                 f.kind != GlitchKind::Stuck || !settled_hold(x, f.start, f.len, &others)
             });
+            found.retain(|f| f.kind != GlitchKind::ZeroRead || !zero_before_steer(&run.steer, f));
         }
         if found.is_empty() {
             continue;

@@ -338,7 +338,7 @@ impl VehicleModel {
             // Without compliance the wheel's steer, hence the projection,
             // does not depend on the force: one cosine per evaluation.
             fixed_projection: projection(exact_kinematics, steer),
-            inv_mass: 1.0 / self.vehicle.mass,
+            inv_mass: sc.loads.inv_mass,
             road,
             exact_kinematics,
             transfer: self.options.load_transfer,

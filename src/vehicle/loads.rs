@@ -209,7 +209,7 @@ impl VehicleModel {
         bank: f64,
     ) -> LoadSplit<T> {
         let v = &self.vehicle;
-        let (sf, sr) = v.static_axle_loads();
+        let (sf, sr) = sc.loads.static_axle;
         let (mut sf, mut sr) = (T::from(sf), T::from(sr));
         let e = &sc.effects;
         let bank = e.bank(bank);
@@ -231,12 +231,7 @@ impl VehicleModel {
             sr += d;
         }
         let (kf, kr) = if self.options.load_transfer {
-            let chi = sc.transfer_share;
-            let k = v.mass * v.cg_height;
-            (
-                chi * k / v.track_front,
-                (T::from(1.0) - chi) * k / v.track_rear,
-            )
+            sc.loads.transfer
         } else {
             (T::from(0.0), T::from(0.0))
         };
@@ -245,7 +240,7 @@ impl VehicleModel {
             rear: sr * 0.5,
             kf,
             kr,
-            front_to_rear: v.track_front / v.track_rear,
+            front_to_rear: sc.loads.front_to_rear,
         }
     }
 

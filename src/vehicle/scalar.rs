@@ -27,6 +27,23 @@ pub struct ModelScalars<T> {
     /// acceleration and a compliant front axle's slip angle (unused in
     /// plain numbers).
     pub directions: [usize; 2],
+    /// The wheel-load numbers that do not change within a run, computed
+    /// once here, not at every right-hand side (the same operations, so
+    /// the same values to the bit).
+    pub(crate) loads: LoadConstants<T>,
+}
+
+/// The wheel-load numbers of [`super::VehicleModel::load_split_of`] and
+/// the force balance that depend only on the vehicle and the transfer
+/// share: static axle loads (N), lateral transfer per m/s² on each axle
+/// (N per m/s², used with load transfer on), the track ratio and 1/m
+/// (1/kg).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LoadConstants<T> {
+    pub(crate) static_axle: (f64, f64),
+    pub(crate) transfer: (T, T),
+    pub(crate) front_to_rear: f64,
+    pub(crate) inv_mass: f64,
 }
 
 impl VehicleModel {
@@ -45,14 +62,26 @@ impl VehicleModel {
         directions: [usize; 2],
     ) -> ModelScalars<T> {
         let v = &self.vehicle;
+        let transfer_share = effects
+            .transfer_share
+            .unwrap_or_else(|| T::from(v.front_transfer_share()));
+        let k = v.mass * v.cg_height;
+        let loads = LoadConstants {
+            static_axle: v.static_axle_loads(),
+            transfer: (
+                transfer_share * k / v.track_front,
+                (T::from(1.0) - transfer_share) * k / v.track_rear,
+            ),
+            front_to_rear: v.track_front / v.track_rear,
+            inv_mass: 1.0 / v.mass,
+        };
         ModelScalars {
             yaw_inertia: effects.yaw_inertia_scale * v.yaw_inertia,
-            transfer_share: effects
-                .transfer_share
-                .unwrap_or_else(|| T::from(v.front_transfer_share())),
+            transfer_share,
             friction: effects.friction_scale * friction,
             effects,
             directions,
+            loads,
         }
     }
 }

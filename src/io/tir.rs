@@ -318,6 +318,7 @@ impl TirDocument {
                 path: self.path.clone(),
                 at: None,
                 source: e,
+                also: Vec::new(),
             },
         }
     }

@@ -178,7 +178,7 @@ impl ChannelSettling {
             && held(&self.yaw_rate)
             && self.ay.iter().all(held);
         let grip = match grip {
-            true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while its sideslip grows",
+            true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while the magnitude of its sideslip |β| grows",
             false => "",
         };
         Some(format!(

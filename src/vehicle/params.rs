@@ -301,6 +301,7 @@ impl Vehicle {
                     ParamReason::WheelbaseMismatch {
                         a: self.a,
                         b: self.b,
+                        wheelbase: l,
                     },
                 ));
             }

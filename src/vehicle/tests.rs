@@ -227,7 +227,7 @@ fn vehicle_validation_names_the_key() {
     v.wheelbase = Some(2.9);
     let e = v.validate().unwrap_err();
     assert_eq!(e.key, "wheelbase");
-    let crate::error::ParamReason::WheelbaseMismatch { a, b } = e.reason else {
+    let crate::error::ParamReason::WheelbaseMismatch { a, b, .. } = e.reason else {
         panic!("{e}");
     };
     assert_eq!((a, b), (v.a, v.b));

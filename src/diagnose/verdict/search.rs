@@ -16,7 +16,8 @@
 //! only part of the gap are found together; the set must then pass as a
 //! whole). While the set found leaves a gap above [`SIGNIFICANT`]·J_n, the
 //! search starts again from up to [`ALTERNATIVE_STARTS`] look-alikes of the
-//! best single. Effects that also pass and leave a gap above noise within
+//! best single; with no verdict yet, from the pairs of [`super::pairs`].
+//! Effects that also pass and leave a gap above noise within
 //! [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n of the accepted one's G are
 //! reported as confounded with it, with the experiment that would separate
 //! them. Each of these rules is a pure function in
@@ -37,6 +38,7 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::pairs::paired;
 use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -161,7 +163,15 @@ pub(crate) fn search(
             (current, simpler) = (other, other_simpler);
         }
     }
-    let total = reduction(base.j0, current.heldout.combined(&scales), jn);
+    let mut total = reduction(base.j0, current.heldout.combined(&scales), jn);
+    // No verdict: the truth can be a pair without the best single.
+    if !rules::accepted(total, current.full.bic(), base.bic0()) {
+        if let Some((pair, over)) = paired(ctx, singles, all, base, &mut out) {
+            (current, simpler) = greedy(ctx, singles, all, base, limits, &pair, &mut out);
+            simpler.splice(0..0, over);
+            total = reduction(base.j0, current.heldout.combined(&scales), jn);
+        }
+    }
     if rules::accepted(total, current.full.bic(), base.bic0()) {
         out.chosen = Some(current);
         out.simpler = simpler;
@@ -284,7 +294,6 @@ fn greedy(
     let (scales, jn) = (base.scales(), base.jn);
     let mut current = start.clone();
     let mut simpler = Vec::new();
-    // Greedy: add the effect that best closes what is left.
     while current.kinds.len() < max_effects {
         let jc = current.heldout.combined(&scales);
         if !rules::significant(jc, jn) {
@@ -345,7 +354,7 @@ fn greedy(
 /// all runs done ([`Context::started`]). Each set's seed is that of the effect added (its name's, not its place
 /// in the ranking, which screening shortens), one apart from its single
 /// fit's.
-fn extensions<'a>(
+pub(super) fn extensions<'a>(
     ctx: &Context<'a>,
     singles: &[Scored],
     base: &Baseline,

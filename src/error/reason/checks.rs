@@ -4,7 +4,8 @@
 //! `[UNITS] PRESSURE` line ([`ParamReason::TirPressureNoLine`]), and the
 //! vehicle's centre of gravity too low for its track
 //! ([`ParamReason::CgTooLow`]) or mass a digit off
-//! ([`ParamReason::MassDigit`]); each with the boxed values it is built
+//! ([`ParamReason::MassDigit`]), or its wheelbase not a + b
+//! ([`ParamReason::WheelbaseMismatch`]); each with the values it is built
 //! from. Numbers are printed with a few significant digits
 //! ([`crate::format::rounded`]: no number with hundreds of digits).
 
@@ -38,6 +39,15 @@ pub struct TirPerLoad {
 }
 
 impl ParamReason {
+    /// The other keys of the same table the reason compares the value
+    /// with: the reader says where each is ([`crate::error::InputError::Value`]).
+    pub fn read_with(&self) -> &'static [&'static str] {
+        match self {
+            ParamReason::WheelbaseMismatch { .. } => &["a", "b"],
+            _ => &[],
+        }
+    }
+
     /// [`ParamReason::TirCorneringPerLoad`]: the `stiffness` (N/rad) at
     /// `load` (N), `per_load` of it, outside `range`, and the `hint`.
     pub(crate) fn tir_cornering_per_load(
@@ -192,4 +202,20 @@ pub(super) fn cg_too_low(c: &CgTooLow) -> String {
         ),
         false => format!("{head}: is it in another unit, or another key's value?"),
     }
+}
+
+/// [`ParamReason::WheelbaseMismatch`]: `a` + `b` against the `wheelbase`
+/// given (m), their difference in mm.
+pub(super) fn wheelbase_mismatch(a: f64, b: f64, wheelbase: f64) -> String {
+    let sum = a + b;
+    let mm = 1000.0 * (wheelbase - sum);
+    format!(
+        "the wheelbase is {} m and a + b = {} + {} = {} m: it is {} mm {} than a + b, and the two must agree to 1 mm (the wheelbase is the distance a + b between the axles); correct `a`, `b` or `wheelbase`, or leave `wheelbase` out",
+        rounded(wheelbase, 6),
+        rounded(a, 6),
+        rounded(b, 6),
+        rounded(sum, 6),
+        rounded(mm.abs(), 3),
+        if mm > 0.0 { "longer" } else { "shorter" },
+    )
 }

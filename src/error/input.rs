@@ -24,19 +24,6 @@ fn place(path: &std::path::Path, at: &Option<Location>) -> String {
     }
 }
 
-/// The places of the other keys a value was compared with, as
-/// ` (`vehicle.a` at path:7:1, …)`; nothing without one.
-fn also_at(path: &std::path::Path, also: &[(String, Location)]) -> String {
-    if also.is_empty() {
-        return String::new();
-    }
-    let at: Vec<String> = also
-        .iter()
-        .map(|(key, l)| format!("`{key}` at {}", place(path, &Some(*l))))
-        .collect();
-    format!(" ({})", at.join(", "))
-}
-
 /// What is wrong with a CSV cell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CellProblem {
@@ -149,9 +136,8 @@ pub enum InputError {
         path: PathBuf,
     },
     /// A value in the file that is not physical: the parameter error, at
-    /// its key's place where the key is found, and the places of the other
-    /// keys its reason compares it with ([`super::ParamReason::read_with`]).
-    #[error("{}: {source}{}", place(path, at), also_at(path, also))]
+    /// its key's place where the key is found.
+    #[error("{}: {source}", place(path, at))]
     Value {
         /// The file.
         path: PathBuf,
@@ -159,8 +145,6 @@ pub enum InputError {
         at: Option<Location>,
         /// The key (dotted), its value and why it is wrong.
         source: ParamError,
-        /// The other keys the reason reads (dotted) and their places.
-        also: Vec<(String, Location)>,
     },
     /// An equilibrium sweep's value beyond its physical range
     /// ([`super::SweepLimit`]), at its key's place.

@@ -9,7 +9,7 @@ use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 pub use campaign::{CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
-pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
+pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, Wheelbase, DYNAMIC_INDEX};
 use no_grip::no_lateral_force;
 pub use no_grip::NoLateralForce;
 use rollover::beyond_rollover;
@@ -237,15 +237,8 @@ pub enum ParamReason {
         min: f64,
     },
     /// A wheelbase that is not a + b (to 1 mm).
-    #[error("{}", checks::wheelbase_mismatch(*a, *b, *wheelbase))]
-    WheelbaseMismatch {
-        /// Centre of gravity to front axle, m.
-        a: f64,
-        /// Centre of gravity to rear axle, m.
-        b: f64,
-        /// The wheelbase as given, m.
-        wheelbase: f64,
-    },
+    #[error("{}", checks::wheelbase_mismatch(.0))]
+    WheelbaseMismatch(Box<Wheelbase>),
     /// A share of the lateral load transfer outside [0, 1].
     #[error("a share of the load transfer must lie in [0, 1]")]
     TransferShare,

@@ -58,7 +58,6 @@ fn a_negative_mass_in_a_scenario_is_an_input_error_naming_key_and_value() {
             path,
             at: Some(at),
             source,
-            ..
         }) => {
             assert_eq!(path, &p);
             assert_eq!(source.key, "vehicle.mass");

@@ -318,7 +318,6 @@ impl TirDocument {
                 path: self.path.clone(),
                 at: None,
                 source: e,
-                also: Vec::new(),
             },
         }
     }

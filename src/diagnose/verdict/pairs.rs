@@ -25,11 +25,22 @@
 
 use crate::diagnose::effects::{set_of, EffectKind};
 use crate::diagnose::model::channels::reduction;
+use crate::diagnose::report::Ranked;
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, Candidate, PAIRED};
-use crate::diagnose::verdict::score::{Context, Fitted, Scored};
-use crate::diagnose::verdict::search::{extensions, Search, Simpler};
+use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
 use rayon::prelude::*;
+
+/// A candidate the search passed over for a simpler one within the
+/// parsimony window ([`rules::simpler_than`]), and the one it took.
+#[derive(Clone)]
+pub(crate) struct Simpler {
+    /// Passed over: it leaves a parameter idle.
+    pub(crate) over: Scored,
+    /// Taken in its place: fewer parameters, within [`rules::PARSIMONY`]
+    /// noise levels of its held-out error.
+    pub(crate) taken: Scored,
+}
 
 /// Of `all` (indices into `singles`, cross-validated and screened), the
 /// [`PAIRED`] that remove most of the in-sample gap and lower the BIC,
@@ -59,19 +70,22 @@ fn untried(best: &[EffectKind], tried: &[Vec<EffectKind>]) -> Vec<(usize, usize)
     pairs
 }
 
-/// The untried pairs of the best singles in sample, fitted, cross-validated
-/// and added to `out.combinations`; the one to take ([`rules::pick`]) where
+/// The untried pairs of the best singles in sample (`all` indexing
+/// `singles`), each started by `extend` (the greedy step's starts of a
+/// single extended by an effect), fitted, cross-validated and added to
+/// `combinations` (the search's rows so far, read for the sets tried); the
+/// one to take ([`rules::pick`]) where
 /// it passes as a whole against the base model, with the pair it was taken
 /// over for parsimony ([`rules::simpler_than`]), if any.
-pub(crate) fn paired(
-    ctx: &Context,
-    singles: &[Scored],
-    all: &[usize],
+pub(crate) fn paired<'a>(
+    ctx: &Context<'a>,
+    (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
-    out: &mut Search,
+    combinations: &mut Vec<Ranked>,
+    extend: impl Fn(&Scored, EffectKind) -> Vec<Started<'a>> + Sync,
 ) -> Option<(Scored, Option<Simpler>)> {
     let best = best_in_sample(singles, all, base);
-    let tried: Vec<Vec<EffectKind>> = out.combinations.iter().map(|r| r.effects.clone()).collect();
+    let tried: Vec<Vec<EffectKind>> = combinations.iter().map(|r| r.effects.clone()).collect();
     let kinds: Vec<EffectKind> = best.iter().map(|&i| singles[i].kinds[0]).collect();
     let pairs = untried(&kinds, &tried);
     if pairs.is_empty() {
@@ -79,7 +93,7 @@ pub(crate) fn paired(
     }
     let fitted: Vec<Fitted> = pairs
         .par_iter()
-        .flat_map(|&(a, b)| extensions(ctx, singles, base, &singles[best[a]], &[kinds[b]]))
+        .flat_map(|&(a, b)| extend(&singles[best[a]], kinds[b]))
         .map(|s| ctx.polish(s))
         .collect();
     let scales = base.scales();
@@ -89,8 +103,7 @@ pub(crate) fn paired(
             .combined(&scales)
             .total_cmp(&b.heldout.combined(&scales))
     });
-    out.combinations
-        .extend(scored.iter().map(|sc| base.rank(sc)));
+    combinations.extend(scored.iter().map(|sc| base.rank(sc)));
     let ranked: Vec<Candidate> = scored.iter().map(|sc| base.candidate(sc)).collect();
     let k = rules::pick(&ranked, base.jn)?;
     let over = rules::simpler_than(&ranked, base.jn).map(|t| scored[t].clone());

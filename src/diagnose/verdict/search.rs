@@ -38,7 +38,7 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
-use crate::diagnose::verdict::pairs::paired;
+use crate::diagnose::verdict::pairs::{paired, Simpler};
 use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -73,17 +73,6 @@ pub(crate) struct Search {
     /// Where a set was accepted, each candidate its search passed over for
     /// a simpler one on the way to it (the start, then each added effect).
     pub(crate) simpler: Vec<Simpler>,
-}
-
-/// A candidate the search passed over for a simpler one within the
-/// parsimony window ([`rules::simpler_than`]), and the one it took.
-#[derive(Clone)]
-pub(crate) struct Simpler {
-    /// Passed over: it leaves a parameter idle.
-    pub(crate) over: Scored,
-    /// Taken in its place: fewer parameters, within [`rules::PARSIMONY`]
-    /// noise levels of its held-out error.
-    pub(crate) taken: Scored,
 }
 
 /// The verdict's search: the best single (`order` ranks the
@@ -166,7 +155,9 @@ pub(crate) fn search(
     let mut total = reduction(base.j0, current.heldout.combined(&scales), jn);
     // No verdict: the truth can be a pair without the best single.
     if !rules::accepted(total, current.full.bic(), base.bic0()) {
-        if let Some((pair, over)) = paired(ctx, singles, all, base, &mut out) {
+        let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
+        let rows = &mut out.combinations;
+        if let Some((pair, over)) = paired(ctx, (singles, all), base, rows, extend) {
             (current, simpler) = greedy(ctx, singles, all, base, limits, &pair, &mut out);
             simpler.splice(0..0, over);
             total = reduction(base.j0, current.heldout.combined(&scales), jn);
@@ -354,7 +345,7 @@ fn greedy(
 /// all runs done ([`Context::started`]). Each set's seed is that of the effect added (its name's, not its place
 /// in the ranking, which screening shortens), one apart from its single
 /// fit's.
-pub(super) fn extensions<'a>(
+fn extensions<'a>(
     ctx: &Context<'a>,
     singles: &[Scored],
     base: &Baseline,

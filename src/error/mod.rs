@@ -84,7 +84,7 @@ pub use problem::{InputProblem, RigChannel, SmallSlipSlope};
 pub use reason::campaign::{GivenTyres, StagedMagicFormula, TyreSourceError};
 pub use reason::{
     BeyondSignal, CampaignReason, CgTooLow, DeclaredHow, Limit, MassDigit, NoLateralForce,
-    NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn, SlowSteer, Waveform,
+    NoPressureLine, ParamReason, PerLoad, Rollover, ScheduleColumn, SlowSteer, Waveform, Wheelbase,
     DYNAMIC_INDEX, MAX_MIN_SPEED,
 };
 pub use replay_run::ReplayRunProblem;

@@ -9,7 +9,7 @@ use boxed::cornering_per_load;
 pub use boxed::{BeyondSignal, PerLoad};
 pub use campaign::{CampaignReason, MAX_MIN_SPEED};
 use checks::{cg_too_low, mass_digit, pressure_no_line, tir_per_load};
-pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, DYNAMIC_INDEX};
+pub use checks::{CgTooLow, MassDigit, NoPressureLine, TirPerLoad, Wheelbase, DYNAMIC_INDEX};
 use no_grip::no_lateral_force;
 pub use no_grip::NoLateralForce;
 use rollover::beyond_rollover;
@@ -237,13 +237,8 @@ pub enum ParamReason {
         min: f64,
     },
     /// A wheelbase that is not a + b (to 1 mm).
-    #[error("a + b = {a} + {b} = {:.4} m differs from the wheelbase by more than 1 mm", a + b)]
-    WheelbaseMismatch {
-        /// Centre of gravity to front axle, m.
-        a: f64,
-        /// Centre of gravity to rear axle, m.
-        b: f64,
-    },
+    #[error("{}", checks::wheelbase_mismatch(.0))]
+    WheelbaseMismatch(Box<Wheelbase>),
     /// A share of the lateral load transfer outside [0, 1].
     #[error("a share of the load transfer must lie in [0, 1]")]
     TransferShare,
@@ -280,8 +275,7 @@ pub enum ParamReason {
     /// A tolerance given for the fixed-step RK4.
     #[error("tolerances apply to method = \"dopri5\"; RK4 has a fixed `step`")]
     ToleranceWithRk4,
-    /// A lateral acceleration no steady state holds at the speed.
-    /// (Boxed: the error enum stays as small as its other variants.)
+    /// A lateral acceleration no steady state holds at the speed (boxed).
     #[error("{0}")]
     NoSteadyState(Box<super::NoSteadyState>),
     /// A step steer given both of its amplitudes.
@@ -307,8 +301,7 @@ pub enum ParamReason {
     /// A `[tyres]` table that names no single source of tyres.
     #[error("give either `file`, or `front` and `rear`, or `rig` (with an optional `model`)")]
     TyreSource,
-    /// A prior of the axles (`class`, `cornering`, `friction`) beside tyre
-    /// files or rig data, which leave no axles to identify.
+    /// A prior of the axles beside tyre files or rig data (no axles to identify).
     #[error("a prior of the axles (`class`, `cornering`, `friction`) applies only without tyre files or rig data, when the diagnosis identifies the axles from the runs")]
     PriorWithTyres,
     /// A name that is no member of its closed set (a model, a unit, a

@@ -533,12 +533,28 @@ impl TomlSource {
         })
     }
 
-    /// A located error for a value that failed validation.
+    /// A located error for a value that failed validation, with the
+    /// places of the keys beside it its reason compares it with.
     pub(crate) fn value_error(&self, e: &ParamError) -> InputError {
+        let table = e.key.rsplit_once('.').map(|(t, _)| format!("{t}."));
+        let places = (e.reason.read_with().iter())
+            .map(|k| format!("{}{k}", table.as_deref().unwrap_or("")))
+            .filter_map(|k| {
+                let l = self.location(self.key_span(&k)?.start);
+                Some(format!(
+                    "`{k}` at {}:{}:{}",
+                    self.path.display(),
+                    l.line,
+                    l.column
+                ))
+            })
+            .collect();
+        let mut source = e.clone();
+        source.reason = source.reason.placed(places);
         InputError::Value {
             path: self.path.clone(),
             at: self.key_span(&e.key).map(|s| self.location(s.start)),
-            source: e.clone(),
+            source,
         }
     }
 

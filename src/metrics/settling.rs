@@ -180,7 +180,7 @@ impl ChannelSettling {
             && held(&self.yaw_rate)
             && self.ay.iter().all(held);
         let grip = match grip {
-            true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while its sideslip grows",
+            true => "; the yaw rate and lateral acceleration have settled: at its grip limit a car can hold them while the magnitude of its sideslip |β| grows",
             false => "",
         };
         // The yaw rate's spread or trend, a share of its step, is how far

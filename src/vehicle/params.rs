@@ -298,10 +298,12 @@ impl Vehicle {
                 return Err(ParamError::new(
                     "wheelbase",
                     l,
-                    ParamReason::WheelbaseMismatch {
+                    ParamReason::WheelbaseMismatch(Box::new(crate::error::Wheelbase {
                         a: self.a,
                         b: self.b,
-                    },
+                        wheelbase: l,
+                        places: Vec::new(),
+                    })),
                 ));
             }
         }

@@ -227,10 +227,10 @@ fn vehicle_validation_names_the_key() {
     v.wheelbase = Some(2.9);
     let e = v.validate().unwrap_err();
     assert_eq!(e.key, "wheelbase");
-    let crate::error::ParamReason::WheelbaseMismatch { a, b } = e.reason else {
+    let crate::error::ParamReason::WheelbaseMismatch(w) = e.reason else {
         panic!("{e}");
     };
-    assert_eq!((a, b), (v.a, v.b));
+    assert_eq!((w.a, w.b), (v.a, v.b));
     let mut v = sedan();
     v.wheelbase = Some(2.7805);
     assert!(v.validate().is_ok());

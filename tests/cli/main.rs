@@ -447,6 +447,7 @@ mod trips_s89_lead;
 mod trips_s89_met;
 mod trips_s89_perf;
 mod trips_s89_tyre;
+mod trips_s90_diag;
 mod trips_s90_lead;
 mod trips_s90_met;
 mod trips_simulate;

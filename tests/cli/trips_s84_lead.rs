@@ -73,7 +73,7 @@ fn a_sideslip_whose_scatter_reads_near_the_sensor_estimate_line_says_so_either_w
         "{quiet}"
     );
     assert!(
-        beta.contains("read as an estimated output, a shorter or calmer stretch may read it as a sensor: where you know which it is, state its uncertainty under [channels])"),
+        beta.contains("read as an estimated output, a shorter or calmer stretch may read it as a sensor: where you know it is a sensor, read its gap against a sensor's floor"),
         "{quiet}"
     );
     // σ 0.00092 rad: 0.54 of the floor, above the line: a sensor at its

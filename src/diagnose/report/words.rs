@@ -24,7 +24,7 @@ pub use gap::band_lines;
 pub use lookalikes::window;
 use lookalikes::{alone, in_set};
 pub use parameters::{parameter, parameter_of};
-pub use trust::{channel_trust, channels_trusted};
+pub use trust::{channel_trust, channels_trusted, channels_trusted_for, Reader};
 pub use warnings::verdict_warning;
 
 use crate::diagnose::effects::{joined, EffectKind};

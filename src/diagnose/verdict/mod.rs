@@ -3,7 +3,7 @@
 //! noise and an effect's reduction of it) against the base model's scores
 //! (`baseline`), the singles and the greedy additions' sets screened
 //! before their cross-validation (`screening`), and the search for the set of
-//! effects that explains the gap (`search`), the rules all three apply as
+//! effects that explains the gap (`search`, and `pairs` where it reaches no verdict), the rules all three apply as
 //! pure functions (`rules`, with their thresholds), and the verdict's case
 //! from what the search found (`conclude`).
 //! Units: SI, rad; held-out errors J dimensionless.
@@ -11,6 +11,7 @@
 pub(crate) mod baseline;
 pub(crate) mod candidate;
 pub(crate) mod conclude;
+pub(crate) mod pairs;
 pub(crate) mod restricted;
 pub mod rules;
 pub(crate) mod score;

@@ -34,6 +34,10 @@ pub const DISAGREEMENT: f64 = 25.0;
 /// Look-alikes of the best single the verdict's search also starts from
 /// while the set found leaves a significant gap.
 pub const ALTERNATIVE_STARTS: usize = 2;
+/// Singles, the best in sample, whose pairs the search also tries where
+/// the search from the best single on held-out runs reaches no verdict
+/// ([`crate::diagnose::verdict::pairs`]).
+pub const PAIRED: usize = 4;
 /// Held-out error, in noise levels, by which a candidate that leaves a
 /// parameter idle must beat a simpler one (fewer parameters) to be
 /// preferred to it.
@@ -107,6 +111,14 @@ pub fn accepted(reduction_percent: f64, bic: f64, bic_before: f64) -> bool {
 /// [`PROMISING`] and a lower BIC (it can be half of a pair).
 pub fn promising(reduction_percent: f64, delta_bic: f64) -> bool {
     reduction_percent >= 100.0 * PROMISING && delta_bic < 0.0
+}
+
+/// Whether a single whose all-run fit removes `insample_percent` of the
+/// in-sample gap with a BIC `delta_bic` from the base's can be half of a
+/// pair of the best singles in sample ([`PAIRED`]): it removes something
+/// and lowers the BIC.
+pub fn pairable(insample_percent: f64, delta_bic: f64) -> bool {
+    insample_percent > 0.0 && delta_bic < 0.0
 }
 
 /// Whether a single of held-out reduction `reduction_percent` and gap

@@ -16,7 +16,8 @@
 //! only part of the gap are found together; the set must then pass as a
 //! whole). While the set found leaves a gap above [`SIGNIFICANT`]·J_n, the
 //! search starts again from up to [`ALTERNATIVE_STARTS`] look-alikes of the
-//! best single. Effects that also pass and leave a gap above noise within
+//! best single; with no verdict yet, from the pairs of [`super::pairs`].
+//! Effects that also pass and leave a gap above noise within
 //! [`CONFOUNDED`]·G + [`CONFOUNDED_NOISE`]·J_n of the accepted one's G are
 //! reported as confounded with it, with the experiment that would separate
 //! them. Each of these rules is a pure function in
@@ -37,6 +38,7 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
+use crate::diagnose::verdict::pairs::{paired, Simpler};
 use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -71,17 +73,6 @@ pub(crate) struct Search {
     /// Where a set was accepted, each candidate its search passed over for
     /// a simpler one on the way to it (the start, then each added effect).
     pub(crate) simpler: Vec<Simpler>,
-}
-
-/// A candidate the search passed over for a simpler one within the
-/// parsimony window ([`rules::simpler_than`]), and the one it took.
-#[derive(Clone)]
-pub(crate) struct Simpler {
-    /// Passed over: it leaves a parameter idle.
-    pub(crate) over: Scored,
-    /// Taken in its place: fewer parameters, within [`rules::PARSIMONY`]
-    /// noise levels of its held-out error.
-    pub(crate) taken: Scored,
 }
 
 /// The verdict's search: the best single (`order` ranks the
@@ -161,7 +152,17 @@ pub(crate) fn search(
             (current, simpler) = (other, other_simpler);
         }
     }
-    let total = reduction(base.j0, current.heldout.combined(&scales), jn);
+    let mut total = reduction(base.j0, current.heldout.combined(&scales), jn);
+    // No verdict: the truth can be a pair without the best single.
+    if !rules::accepted(total, current.full.bic(), base.bic0()) {
+        let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
+        let rows = &mut out.combinations;
+        if let Some((pair, over)) = paired(ctx, (singles, all), base, rows, extend) {
+            (current, simpler) = greedy(ctx, singles, all, base, limits, &pair, &mut out);
+            simpler.splice(0..0, over);
+            total = reduction(base.j0, current.heldout.combined(&scales), jn);
+        }
+    }
     if rules::accepted(total, current.full.bic(), base.bic0()) {
         out.chosen = Some(current);
         out.simpler = simpler;
@@ -284,7 +285,6 @@ fn greedy(
     let (scales, jn) = (base.scales(), base.jn);
     let mut current = start.clone();
     let mut simpler = Vec::new();
-    // Greedy: add the effect that best closes what is left.
     while current.kinds.len() < max_effects {
         let jc = current.heldout.combined(&scales);
         if !rules::significant(jc, jn) {

@@ -4,7 +4,8 @@
 //! `[UNITS] PRESSURE` line ([`ParamReason::TirPressureNoLine`]), and the
 //! vehicle's centre of gravity too low for its track
 //! ([`ParamReason::CgTooLow`]) or mass a digit off
-//! ([`ParamReason::MassDigit`]); each with the boxed values it is built
+//! ([`ParamReason::MassDigit`]), or its wheelbase not a + b
+//! ([`ParamReason::WheelbaseMismatch`]); each with the values it is built
 //! from. Numbers are printed with a few significant digits
 //! ([`crate::format::rounded`]: no number with hundreds of digits).
 
@@ -37,7 +38,39 @@ pub struct TirPerLoad {
     pub hint: Option<(f64, f64, bool)>,
 }
 
+/// What [`ParamReason::WheelbaseMismatch`] says, boxed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Wheelbase {
+    /// Centre of gravity to front axle, m.
+    pub a: f64,
+    /// Centre of gravity to rear axle, m.
+    pub b: f64,
+    /// The wheelbase as given, m.
+    pub wheelbase: f64,
+    /// Where the file reader found `a` and `b` (`` `vehicle.a` at
+    /// path:line:column``); empty where not read from a file.
+    pub places: Vec<String>,
+}
+
 impl ParamReason {
+    /// The other keys of the same table the reason compares the value
+    /// with: a file's reader says where each is ([`Self::placed`]).
+    pub fn read_with(&self) -> &'static [&'static str] {
+        match self {
+            ParamReason::WheelbaseMismatch(_) => &["a", "b"],
+            _ => &[],
+        }
+    }
+
+    /// The reason with the places of its [`Self::read_with`] keys, as a
+    /// file's reader found them.
+    pub fn placed(mut self, places: Vec<String>) -> Self {
+        if let ParamReason::WheelbaseMismatch(w) = &mut self {
+            w.places = places;
+        }
+        self
+    }
+
     /// [`ParamReason::TirCorneringPerLoad`]: the `stiffness` (N/rad) at
     /// `load` (N), `per_load` of it, outside `range`, and the `hint`.
     pub(crate) fn tir_cornering_per_load(
@@ -192,4 +225,28 @@ pub(super) fn cg_too_low(c: &CgTooLow) -> String {
         ),
         false => format!("{head}: is it in another unit, or another key's value?"),
     }
+}
+
+/// [`ParamReason::WheelbaseMismatch`]: `a` + `b` against the `wheelbase`
+/// given (m), their difference in mm, and where `a` and `b` are.
+pub(super) fn wheelbase_mismatch(w: &Wheelbase) -> String {
+    let Wheelbase {
+        a, b, wheelbase, ..
+    } = *w;
+    let places = if w.places.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", w.places.join(", "))
+    };
+    let sum = a + b;
+    let mm = 1000.0 * (wheelbase - sum);
+    format!(
+        "the wheelbase is {} m and a + b = {} + {} = {} m{places}: it is {} mm {} than a + b, and the two must agree to 1 mm (the wheelbase is the distance a + b between the axles); correct `a`, `b` or `wheelbase`, or leave `wheelbase` out",
+        rounded(wheelbase, 6),
+        rounded(a, 6),
+        rounded(b, 6),
+        rounded(sum, 6),
+        rounded(mm.abs(), 3),
+        if mm > 0.0 { "longer" } else { "shorter" },
+    )
 }

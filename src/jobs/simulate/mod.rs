@@ -382,7 +382,10 @@ impl SimulateReport {
             let cleaning = r.cleaning.iter().flat_map(|c| c.summary(5));
             out.extend(cleaning.map(|l| format!("  cleaning: {l}")));
             out.extend(r.cleaning.as_ref().and_then(replayed_piece));
-            out.push(format!("  {}", words::channels_trusted(&r.noise)));
+            out.push(format!(
+                "  {}",
+                words::channels_trusted_for(&r.noise, words::Reader::Replay)
+            ));
             out.extend(
                 r.channels
                     .iter()

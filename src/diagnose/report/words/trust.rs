@@ -8,15 +8,38 @@ use super::rms;
 use crate::diagnose::model::scale::{near_the_line, smooth_line, StatedExcess};
 use crate::diagnose::report::{ChannelNoise, NoSignificantGap, ScaleSource};
 
+/// Who reads the channels' trust, for what a user can do where a
+/// channel's reading lies near the line between a sensor and an
+/// estimated output.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reader {
+    /// A diagnosis: its campaign file states an uncertainty under
+    /// `[channels]`.
+    Diagnosis,
+    /// A replay (`simulate` with a measured run): no file states one, so
+    /// the words give the floor the other reading would take.
+    Replay,
+}
+
 /// How far every measured channel is trusted, in one line.
 pub fn channels_trusted(noise: &[ChannelNoise]) -> String {
-    let each: Vec<String> = noise.iter().map(channel_trust).collect();
+    channels_trusted_for(noise, Reader::Diagnosis)
+}
+
+/// [`channels_trusted`], its advice for `reader`.
+pub fn channels_trusted_for(noise: &[ChannelNoise], reader: Reader) -> String {
+    let each: Vec<String> = noise.iter().map(|n| trust_for(n, reader)).collect();
     format!("channels trusted to: {}", each.join("; "))
 }
 
 /// How far a channel is trusted, and why, each number with its unit and
 /// in digits that show it ([`rms`]: a stated 1e-6 rad is not "0.0000").
 pub fn channel_trust(n: &ChannelNoise) -> String {
+    trust_for(n, Reader::Diagnosis)
+}
+
+/// [`channel_trust`], its advice for `reader`.
+fn trust_for(n: &ChannelNoise, reader: Reader) -> String {
     let u = n.unit;
     let why = match n.source {
         ScaleSource::Stated => match &n.stated_excess {
@@ -35,7 +58,7 @@ pub fn channel_trust(n: &ChannelNoise) -> String {
         ),
     };
     let near = near_the_line(n.channel, n.source, n.scatter, n.other_side)
-        .map(|share| near_line(n, share))
+        .map(|share| near_line(n, share, reader))
         .unwrap_or_default();
     format!(
         "{} {} {u} ({why}{near})",
@@ -63,11 +86,28 @@ fn quiet_sensor(n: &ChannelNoise) -> &'static str {
 /// What a user should know of a channel whose trust hangs on a reading
 /// near the line between a sensor and an estimated output: which way it
 /// went, how near, and how to settle it.
-fn near_line(n: &ChannelNoise, share: f64) -> String {
-    let (this, other) = if n.source == ScaleSource::Estimated {
-        ("an estimated output", "a sensor")
+fn near_line(n: &ChannelNoise, share: f64, reader: Reader) -> String {
+    use crate::diagnose::model::scale::{ESTIMATED, SENSOR_FLOOR};
+    let i = n.channel.index();
+    // The other reading's floor: a sensor's type floor (its scatter, below
+    // the line, is under it), or an estimated output's uncertainty.
+    let (this, other, other_floor) = if n.source == ScaleSource::Estimated {
+        (
+            "an estimated output",
+            "a sensor",
+            SENSOR_FLOOR[i].max(n.scatter),
+        )
     } else {
-        ("a sensor", "an estimated output")
+        ("a sensor", "an estimated output", ESTIMATED[i])
+    };
+    let settle = match reader {
+        Reader::Diagnosis => "where you know which it is, state its uncertainty under [channels]".to_string(),
+        Reader::Replay => format!(
+            "where you know it is {other}, read its gap against {other}'s floor, {} {u}, in place of {} {u} (`diagnose` takes it stated under a campaign's [channels])",
+            rms(other_floor),
+            rms(n.noise_floor),
+            u = n.unit,
+        ),
     };
     let runs = if n.other_side > 0 {
         format!(
@@ -78,7 +118,7 @@ fn near_line(n: &ChannelNoise, share: f64) -> String {
         String::new()
     };
     format!(
-        "; near the line between a sensor and an estimated output: its scatter is {} of its sensor type's floor, the line at {}{runs}; read as {this}, a shorter or calmer stretch may read it as {other}: where you know which it is, state its uncertainty under [channels]",
+        "; near the line between a sensor and an estimated output: its scatter is {} of its sensor type's floor, the line at {}{runs}; read as {this}, a shorter or calmer stretch may read it as {other}: {settle}",
         crate::format::rounded(share, 2),
         smooth_line(n.channel),
     )

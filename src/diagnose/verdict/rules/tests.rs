@@ -38,6 +38,17 @@ fn the_greedy_search_starts_from_a_best_single_that_removes_10_percent() {
 }
 
 #[test]
+fn a_single_pairs_with_the_best_in_sample_where_it_removes_something_and_lowers_the_bic() {
+    assert!(pairable(0.1, -1.0));
+    assert!(pairable(5.1, -473.0));
+    assert!(!pairable(0.0, -1.0));
+    assert!(!pairable(-2.0, -1.0));
+    assert!(!pairable(5.0, 0.0));
+    assert!(!pairable(5.0, 8.0));
+    assert_eq!(PAIRED, 4);
+}
+
+#[test]
 fn a_lookalike_passes_and_leaves_a_gap_within_1_5_g_plus_a_quarter_noise_level() {
     // Best's gap above noise 1, noise level 1: the limit is 1.75.
     assert!(lookalike(30.0, 1.7499, 1.0, 1.0));

@@ -10,7 +10,7 @@ use super::*;
 /// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and a
 /// sideslip with a deterministic scatter uniform in ±`beta_noise` rad
 /// (σ = `beta_noise`/√3).
-fn step_run(beta_noise: f64) -> String {
+pub(crate) fn step_run(beta_noise: f64) -> String {
     let mut s = String::from("t,speed,steer,yaw_rate,beta\n");
     for i in 0..=600 {
         let t = f64::from(i) / 100.0;

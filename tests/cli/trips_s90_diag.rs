@@ -88,39 +88,16 @@ fn a_wheelbase_that_is_not_a_plus_b_is_refused_with_the_difference_and_the_place
     );
 }
 
-/// A logged step at 100 Hz for 6 s (0.02 rad at 1 s, 20 m/s, first-order
-/// yaw response): a gyro's yaw rate with 4 mrad/s of scatter, and a
-/// sideslip with a deterministic scatter uniform in ±0.0008 rad (σ 0.00046
-/// rad: 0.27 of the slip sensor's floor, near the line at 0.5, read as an
-/// estimated output).
-fn quiet_beta_run() -> String {
-    let mut s = String::from("t,speed,steer,yaw_rate,beta\n");
-    for i in 0..=600 {
-        let t = f64::from(i) / 100.0;
-        let on = t > 1.0;
-        let r = if on {
-            0.2 * (1.0 - (-(t - 1.0) / 0.15).exp())
-        } else {
-            0.0
-        };
-        let u = |k: f64| 2.0 * ((f64::from(i) * k).sin() * 43758.5453).fract().abs() - 1.0;
-        let steer = if on { 0.02 } else { 0.0 };
-        s += &format!(
-            "{t:.2},20,{steer},{:.6},{:.7}\n",
-            r + 0.007 * u(12.9898),
-            -0.05 * r + 0.0008 * u(78.233)
-        );
-    }
-    s
-}
-
 /// Before: a replay (`simulate` with `kind = "replay"`) said of a sideslip
 /// near the sensor/estimate line "where you know which it is, state its
 /// uncertainty under [channels]": a scenario has no `[channels]`. Now it
-/// gives the floor the other reading takes, to read the gap against.
+/// gives the floor the other reading takes, to read the gap against. The
+/// run is `trips_s84_lead`'s logged step with a sideslip scattered ±0.0008
+/// rad (0.27 of the slip sensor's floor: near the line at 0.5, read as an
+/// estimated output).
 #[test]
 fn a_replay_near_the_sensor_estimate_line_gives_the_other_floor_not_a_table_it_lacks() {
-    let dir = scratch(&[("run.csv", &quiet_beta_run())]);
+    let dir = scratch(&[("run.csv", &super::trips_s84_lead::step_run(0.0008))]);
     linear_tyre(dir.path());
     let sc = format!(
         "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n"

@@ -24,6 +24,10 @@ pub(super) struct RunContext<'a> {
     pub wheelbase: f64,
     /// Below this speed samples are excluded, m/s.
     pub min_speed: f64,
+    /// No run before this one was refused: a steer in degrees is then
+    /// judged against runs whose steer read in radians (a campaign-wide
+    /// refusal), else refused with the run alone.
+    pub none_refused: bool,
 }
 
 /// Why a run was not taken.
@@ -61,7 +65,7 @@ pub(super) fn checked_run(
         return Err(alone(file_error(&run.path, problem)));
     }
     let declared = ctx.degrees.contains(&AngleColumn::Steer);
-    if ctx.files.len() > 1 && !declared {
+    if ctx.files.len() > 1 && !declared && ctx.none_refused {
         if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
             let first = (run.path.display().to_string(), m);
             let later = &ctx.files[i + 1..];

@@ -255,6 +255,7 @@ pub(super) fn read_runs(
             degrees,
             wheelbase,
             min_speed,
+            none_refused: refused.is_empty(),
         };
         let (run, lacks, run_notes) = match checked_run(&ctx, i, &raw, copied) {
             Ok(checked) => checked,

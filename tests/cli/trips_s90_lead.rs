@@ -167,3 +167,35 @@ fn every_refused_run_of_a_campaign_is_said_at_once() {
         "{both}"
     );
 }
+
+/// A noise-free 7 Hz log whose sample lands on an instant step: the yaw
+/// rate reads 0 at the step's own sample (it starts from 0), so its leading
+/// zeros run one sample past the steer's change. They were masked as a
+/// zero read and filled, and the yaw-rate gain read 0.796 for 5.604 with
+/// no warning (fresh-eyes round 17). Zeros ending at the steer's change or
+/// one sample after it are the straight running before the step.
+#[test]
+fn leading_zeros_through_the_steps_own_sample_are_no_zero_read() {
+    let mut log = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+    for i in 0..43 {
+        let t = 1.0 + f64::from(i - 7) / 7.0;
+        let (steer, r) = match t >= 1.0 {
+            true => (0.01, 0.056 * (1.0 - (-(t - 1.0) / 0.15).exp())),
+            false => (0.0, 0.0),
+        };
+        log += &format!("{t:.6},25,{steer},{r:.9},{:.9},0\n", 25.0 * r);
+    }
+    let dir = scratch(&[("step.csv", &log)]);
+    let o = run_in(dir.path(), &["metrics", "step.csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let all = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+    assert!(all.contains("glitches: 0 zero reads"), "{all}");
+    let gain: f64 = all
+        .lines()
+        .find(|l| l.trim_start().starts_with("yaw-rate gain"))
+        .and_then(|l| l.split_whitespace().nth(2))
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{all}"));
+    // 0.056 (1 − e^(−5/0.15)) / 0.01 = 5.6 to 1e-14.
+    assert!((gain - 5.6).abs() < 1e-3, "{gain}: {all}");
+}

@@ -360,12 +360,18 @@ const RESPONSES: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChan
 /// Masked, it was filled with the first sample after the step, and the
 /// step of `ay` read 0.652 m/s² for 1.40. A logger's noisy steer is never
 /// held exactly, so a noisy log's leading zeros stay zero reads.
+///
+/// The zeros may end at the steer's change or one sample after it: a yaw
+/// rate starts from 0 at the step's own sample (it is continuous) and ay
+/// jumps with the steer, so a sample landing on the step reads 0 in the
+/// one and not in the other (a 7 Hz log's gain read 86 % low with the
+/// yaw rate's eight leading zeros masked).
 fn zero_before_steer(steer: &[f64], f: &Found) -> bool {
     let end = f.start + f.len;
-    f.start == 0
-        && end < steer.len()
-        && steer[..end].iter().all(|&d| d == steer[0])
-        && steer[end] != steer[end - 1]
+    let Some(change) = steer.iter().position(|&d| d != steer[0]) else {
+        return false;
+    };
+    f.start == 0 && end < steer.len() && (change == end || change + 1 == end)
 }
 
 /// Finds the glitches of one run (a piece between time gaps), repairs its

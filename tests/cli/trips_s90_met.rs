@@ -237,3 +237,48 @@ fn simulate_says_a_variance_window_shorter_than_the_response() {
         "{w}"
     );
 }
+
+/// A total-variance window between the yaw rate's response (0.158 s) and
+/// ay's (0.342 s) cut E_ay 27 % short without a word (fresh-eyes round
+/// 17: 0.2 s read E_ay 0.0311 s for 0.0428): `simulate` now says it ends
+/// before ay responds. And a coarse log's response-time advice names a
+/// rate at which the response spans two intervals: rounded to the nearest
+/// Hz, 0.178 s gave "11 Hz", where it spans 1.96.
+#[test]
+fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_are_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let history = tester_step(dir.path(), 0.0, "variance_window = 0.25\n");
+    let metrics = read_json(&dir.path().join("sim").join("metrics.json")).to_string();
+    assert!(
+        metrics.contains("the total-variance window, 0.25 s, ends before ay responds (its response time is 0.342 s)"),
+        "{metrics}"
+    );
+    assert!(
+        !metrics.contains("ends before the yaw rate responds"),
+        "{metrics}"
+    );
+    let mut advised = 0;
+    for (every, name) in [(100, "r10.csv"), (80, "r12.csv")] {
+        let csv = logged(&history, every, 9.0, |a| a, dir.path(), name);
+        let (_, w) = measured(&csv, &[]);
+        let Some(said) = w.split("the yaw-rate response time, ").nth(1) else {
+            continue;
+        };
+        let t: f64 = said.split(' ').next().unwrap().parse().unwrap();
+        let hz: f64 = said
+            .split("log at ")
+            .nth(1)
+            .and_then(|s| s.split(' ').next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| panic!("{w}"));
+        assert!(
+            t * hz >= 2.0,
+            "{name}: {t} s at {hz} Hz spans {}: {w}",
+            t * hz
+        );
+        assert!(
+            t * (hz - 1.0) < 2.0,
+            "{name}: {hz} Hz is not the least: {w}"
+        );
+    }
+}

@@ -172,7 +172,8 @@ pub fn coarse_said(m: &StepMetrics, dt: f64, steer_rise: f64) -> Vec<String> {
             crate::format::rounded(t / dt, 2),
             measured_at(kind, row),
             range(row.response),
-            crate::format::readable(RESPONSE_INTERVALS / t, 2)
+            // Up, not to the nearest: 0.178 s at 11 Hz still spans 1.96.
+            (RESPONSE_INTERVALS / t).ceil()
         ));
     }
     // The median interval of a log may read a hair under its period.

@@ -33,7 +33,11 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
         VerdictWarning::OnSearchBound { parameters } => {
             let each: Vec<String> = parameters
                 .iter()
-                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
+                .map(|p| match p.unit {
+                    // A ratio's unit is written `-`: said without one.
+                    "" | "-" => format!("{} = {:.4}", p.name, p.value),
+                    unit => format!("{} = {:.4} {unit}", p.name, p.value),
+                })
                 .collect();
             format!(
                 "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",

@@ -57,8 +57,9 @@ use crate::error::{
 pub use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::tyre::{swarm_models, ModelName};
 use crate::vehicle::Vehicle;
+use run_checks::file_error;
 pub use runs::RunSpec;
-use runs::{file_error, read_runs, run_files};
+use runs::{read_runs, run_files};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 

@@ -6,13 +6,17 @@
 //! campaign (runs in degrees where others are in radians) ends the
 //! reading.
 
-use super::runs::file_error;
 use crate::error::{CampaignFileProblem, InputError, InputProblem};
 use crate::io::{read_run_declared, AngleColumn};
 use crate::measured::clean::{MIN_RUN_SAMPLES, MIN_RUN_SECONDS};
 use crate::measured::MeasuredRun;
 use crate::metrics::measured::{dead_steer, steer_problem, yaw_per_neutral, Wheelbase};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+/// An error about a whole file (the campaign's, a run's).
+pub(super) fn file_error(path: &Path, problem: InputProblem) -> InputError {
+    InputError::problem(path, problem)
+}
 
 /// What the checks of one run read of the campaign.
 pub(super) struct RunContext<'a> {

@@ -5,7 +5,7 @@
 //! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
-use super::run_checks::{checked_run, RunContext, RunRefusal};
+use super::run_checks::{checked_run, file_error, RunContext, RunRefusal};
 use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
@@ -33,11 +33,6 @@ pub struct RunSpec {
     /// converted to radians on reading: a logger's unit, stated once.
     #[serde(default)]
     pub degrees: Vec<AngleColumn>,
-}
-
-/// An error about a whole file (the campaign's, a run's).
-pub(super) fn file_error(path: &Path, problem: InputProblem) -> InputError {
-    InputError::problem(path, problem)
 }
 
 /// The run files: `[runs] files` and the `*.csv` of `[runs] dir` (of

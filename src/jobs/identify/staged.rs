@@ -151,14 +151,11 @@ fn stage_lines(
                 s.parameters.iter().filter(|p| p.free).count(),
                 s.sigma_percent,
                 s.sigma_start_percent,
-                if s.paper_sigma_percent.is_finite() {
-                    format!(
-                        "; Wei et al. 2010 reached {:.2} % on their own rig data",
-                        s.paper_sigma_percent
-                    )
-                } else {
-                    String::new()
-                },
+                Some(s.paper_sigma_percent)
+                    .filter(|p| p.is_finite())
+                    .map_or(String::new(), |p| format!(
+                        "; Wei et al. 2010 reached {p:.2} % on their own rig data"
+                    )),
                 rms_text(s.rms, s.stage.unit()),
                 if timed {
                     format!(", {:.2} s", s.seconds)

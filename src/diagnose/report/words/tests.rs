@@ -568,15 +568,6 @@ fn a_verdict_parameter_on_its_search_bound_is_called_a_bound_not_a_measurement()
     let w = verdict_warning(&two);
     assert!(w.contains("on their search bound"), "{w}");
     assert!(w.contains("their values are a bound"), "{w}");
-    // A ratio (unit `-`) is said without a unit, not "1.5000 -".
-    let ratio = VerdictWarning::OnSearchBound {
-        parameters: vec![fitted("roll.damping", "-", 1.5, Some(Bound::Search))],
-    };
-    assert!(
-        verdict_warning(&ratio).starts_with("roll.damping = 1.5000 on its search bound"),
-        "{}",
-        verdict_warning(&ratio)
-    );
 }
 
 #[test]

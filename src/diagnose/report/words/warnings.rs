@@ -57,3 +57,22 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
         ),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::effects::Bound;
+
+    /// A ratio (unit `-`) is said without a unit, not "1.5000 -".
+    #[test]
+    fn a_ratio_on_its_search_bound_is_said_without_a_unit() {
+        let ratio = super::super::tests::fitted("roll.damping", "-", 1.5, Some(Bound::Search));
+        let w = verdict_warning(&VerdictWarning::OnSearchBound {
+            parameters: vec![ratio],
+        });
+        assert!(
+            w.starts_with("roll.damping = 1.5000 on its search bound"),
+            "{w}"
+        );
+    }
+}

@@ -257,6 +257,10 @@ fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_ar
         !metrics.contains("ends before the yaw rate responds"),
         "{metrics}"
     );
+    // The ramped step (0.1 s): at 10 Hz an instant one reads its response
+    // time past two intervals.
+    let ramped = tempfile::tempdir().unwrap();
+    let history = tester_step(ramped.path(), 0.1, "");
     let mut advised = 0;
     for (every, name) in [(100, "r10.csv"), (80, "r12.csv")] {
         let csv = logged(&history, every, 9.0, |a| a, dir.path(), name);
@@ -282,6 +286,6 @@ fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_ar
         );
         advised += 1;
     }
-    // 0.158 s spans 1.6 intervals at 10 Hz (12.5 Hz reads it near 2).
+    // 0.171 s spans 1.7 intervals at 10 Hz (12.5 Hz reads it near 2).
     assert!(advised >= 1);
 }

@@ -247,7 +247,7 @@ fn simulate_says_a_variance_window_shorter_than_the_response() {
 #[test]
 fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_are_said() {
     let dir = tempfile::tempdir().unwrap();
-    let history = tester_step(dir.path(), 0.0, "variance_window = 0.25\n");
+    tester_step(dir.path(), 0.0, "variance_window = 0.25\n");
     let metrics = read_json(&dir.path().join("sim").join("metrics.json")).to_string();
     assert!(
         metrics.contains("the total-variance window, 0.25 s, ends before ay responds (its response time is 0.342 s)"),

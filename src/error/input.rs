@@ -215,7 +215,7 @@ pub enum InputError {
     /// Several places of one file refused at once, in file order (built by
     /// [`InputError::all_of`]): a user mends them in one pass rather than
     /// one per run.
-    #[error("{path}: {} places refused, in file order:{}{}", errors.iter().map(|e| e.1).sum::<usize>() + more, errors.iter().map(|(e, n)| format!("\n  {e}{}", alike(*n))).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    #[error("{path}: {} places refused, in file order:{}", errors.iter().map(|e| e.1).sum::<usize>() + more, listed(errors, *more, "places"))]
     Several {
         /// The file.
         path: PathBuf,
@@ -232,7 +232,7 @@ pub enum InputError {
     /// refused (built by [`InputError::runs_refused`]): a campaign of eight
     /// runs with three bad ones is mended in one pass. Grouped as
     /// [`InputError::Several`] groups places.
-    #[error("{} of {of} runs refused, in run order:{}{}", errors.iter().map(|e| e.1).sum::<usize>() + more, errors.iter().map(|(e, n)| format!("\n  {e}{}", alike_runs(*n))).collect::<String>(), if *more > 0 { format!("\n  and {more} more") } else { String::new() })]
+    #[error("{} of {of} runs refused, in run order:{}", errors.iter().map(|e| e.1).sum::<usize>() + more, listed(errors, *more, "runs"))]
     RunsRefused {
         /// The first refused run's file.
         path: PathBuf,
@@ -400,20 +400,22 @@ fn grouped(errors: Vec<InputError>) -> (Vec<(InputError, usize)>, usize) {
     (shown, more)
 }
 
-/// What a rule's first run adds when the rule refused `n` runs.
-fn alike_runs(n: usize) -> String {
-    match n {
-        1 => String::new(),
-        _ => format!(" (the first of {n} runs refused alike)"),
+/// The refusals of an [`InputError::Several`] or
+/// [`InputError::RunsRefused`], one line each: a rule's first with how many
+/// `what` (places, runs) it refused alike, and how many the rules not shown
+/// refused.
+fn listed(errors: &[(InputError, usize)], more: usize, what: &str) -> String {
+    let mut out = String::new();
+    for (e, n) in errors {
+        out += &match n {
+            1 => format!("\n  {e}"),
+            _ => format!("\n  {e} (the first of {n} {what} refused alike)"),
+        };
     }
-}
-
-/// What a rule's first place adds when the rule refused `n` places.
-fn alike(n: usize) -> String {
-    match n {
-        1 => String::new(),
-        _ => format!(" (the first of {n} places refused alike)"),
+    if more > 0 {
+        out += &format!("\n  and {more} more");
     }
+    out
 }
 
 /// The rule an error breaks, as [`InputError::all_of`] groups them: its

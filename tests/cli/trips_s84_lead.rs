@@ -32,7 +32,7 @@ pub(crate) fn step_run(beta_noise: f64) -> String {
 }
 
 /// The `channels trusted to:` line of a `simulate` replay of `run`.
-fn trust_line(run_csv: &str) -> String {
+pub(crate) fn trust_line(run_csv: &str) -> String {
     let dir = scratch(&[("run.csv", run_csv)]);
     linear_tyre(dir.path());
     let sc = format!(

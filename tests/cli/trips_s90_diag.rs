@@ -68,14 +68,7 @@ fn a_wheelbase_that_is_not_a_plus_b_is_refused_with_the_difference_and_the_place
     let c = edited_campaign(dir.path(), "b = 1.67\n", "b = 1.67\nwheelbase = 2.87\n");
     let text = fs::read_to_string(c.join("vehicle.toml")).unwrap();
     let line = |key: &str| 1 + text.lines().position(|l| l.starts_with(key)).unwrap();
-    let o = run(&[
-        "diagnose",
-        c.to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    let e = stderr(&o);
+    let e = fails_cleanly("diagnose", &c, dir.path());
     let file = c.join("vehicle.toml").display().to_string();
     assert!(
         e.contains(&format!(
@@ -97,24 +90,8 @@ fn a_wheelbase_that_is_not_a_plus_b_is_refused_with_the_difference_and_the_place
 /// estimated output).
 #[test]
 fn a_replay_near_the_sensor_estimate_line_gives_the_other_floor_not_a_table_it_lacks() {
-    let dir = scratch(&[("run.csv", &super::trips_s84_lead::step_run(0.0008))]);
-    linear_tyre(dir.path());
-    let sc = format!(
-        "name = \"replay\"\n{VEHICLE}\n[tyres]\nfront = \"tyre.toml\"\n\n[manoeuvre]\nkind = \"replay\"\nrun = \"run.csv\"\n"
-    );
-    fs::write(dir.path().join("replay.toml"), sc).unwrap();
-    let o = run(&[
-        "simulate",
-        dir.path().join("replay.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("sim").to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let said = String::from_utf8_lossy(&o.stdout).to_string();
-    let line = said
-        .lines()
-        .find(|l| l.contains("channels trusted to:"))
-        .unwrap_or_else(|| panic!("{said}"));
+    use super::trips_s84_lead::{step_run, trust_line};
+    let line = trust_line(&step_run(0.0008));
     assert!(
         !line.contains("state its uncertainty under [channels]"),
         "{line}"

@@ -121,17 +121,7 @@ fn every_refused_run_of_a_campaign_is_said_at_once() {
     let short = fs::read_to_string(&files[0]).unwrap();
     let cut: String = short.lines().take(60).map(|l| format!("{l}\n")).collect();
     fs::write(&files[0], cut).unwrap();
-    let out = dir.path().join("d");
-    let refused = || {
-        let o = run(&[
-            "diagnose",
-            camp.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        assert!(!o.status.success());
-        stderr(&o)
-    };
+    let refused = || fails_cleanly("diagnose", &camp, dir.path());
     let one = refused();
     assert!(
         one.contains("the run is 0.58 s long with 59 samples"),

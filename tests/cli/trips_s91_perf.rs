@@ -1,4 +1,4 @@
-//! Issue 40 (performance): the replays a diagnosis spends on the 8-run
+//! Performance: the replays a diagnosis spends on the 8-run
 //! campaign of the `diagnose` bench (`handling synth --effects
 //! sensor_delay --seed 1`, diagnosed against the whole library). A polish
 //! whose last Jacobian was differenced at its optimum hands it to the

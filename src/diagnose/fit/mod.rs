@@ -12,8 +12,6 @@
 pub(crate) mod fold_noise;
 pub(crate) mod global;
 pub(crate) mod layout;
-#[cfg(test)]
-mod linearised_tests;
 pub(crate) mod prior_rows;
 pub(crate) mod problem;
 pub(crate) mod refit;

@@ -235,6 +235,9 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
 ) -> (FitOutcome, Option<Vec<f64>>) {
     let mut evaluations = 0;
     let p0 = problem.clamp(start);
+    // The polish's last Jacobian where it was differenced at the optimum:
+    // the linearisation's own (the same replays, the same numbers).
+    let mut last_jacobian = None;
     let (params, cost, converged) = if start.is_empty() {
         (Vec::new(), problem.cost(&[]), true)
     } else {
@@ -252,12 +255,13 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
             Polish::LevenbergMarquardt => Jacobians::Secant,
             Polish::Refit => Jacobians::Every,
         };
-        let lm = BoundedLm {
+        let (lm, jacobian) = BoundedLm {
             iterations,
             tolerance: FIT_TOLERANCE,
             jacobians,
         }
-        .minimize(problem, &p0, &problem.bounds);
+        .minimize_linearised(problem, &p0, &problem.bounds);
+        last_jacobian = jacobian;
         evaluations += lm.evaluations;
         // The polish accepts only steps that lower the cost (and returns its
         // start when its cost is not finite): it ends no worse than it began.
@@ -271,8 +275,11 @@ fn fit_with<F: Fn(&[f64]) -> Augmented + Sync>(
     let at = (polish == Polish::LevenbergMarquardt && !params.is_empty()).then(|| params.clone());
     let (std_errors, robust_std_errors, linear) = match polish {
         Polish::LevenbergMarquardt if !params.is_empty() => {
-            let linear = linearise_with(problem, &params, second);
-            evaluations += problem.jacobian_evaluations(params.len()) + 1;
+            if last_jacobian.is_none() {
+                evaluations += problem.jacobian_evaluations(params.len());
+            }
+            let linear = linearise_with(problem, &params, second, last_jacobian);
+            evaluations += 1;
             // A parameter the data cannot see (an accelerometer offset of a
             // run set without ay) is wherever the swarm left it: report its
             // off value (the effect off), which fits as well.
@@ -423,7 +430,7 @@ pub(super) fn linearise<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
 ) -> Linearisation {
-    linearise_with(problem, p, true)
+    linearise_with(problem, p, true, None)
 }
 
 /// The standard errors of the fit linearised as `linear` (its Jacobian's
@@ -461,15 +468,19 @@ fn robust_std_errors<F: Fn(&[f64]) -> Augmented + Sync>(
 }
 
 /// [`linearise`], the second derivatives left out (no columns) unless
-/// `second`.
+/// `second`, the Jacobian `known` where given (taken at `p` within the
+/// problem's bounds: the polish's last).
 fn linearise_with<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     p: &[f64],
     second: bool,
+    known: Option<DMatrix<f64>>,
 ) -> Linearisation {
+    // The optimum's replays are kept (the polish's accepted step): its
+    // residuals cost no integration, and leave it the problem's last.
     let mut r = vec![0.0; problem.count()];
     problem.residuals(p, &mut r);
-    let jacobian = problem.jacobian(p, &r, &problem.bounds);
+    let jacobian = known.unwrap_or_else(|| problem.jacobian(p, &r, &problem.bounds));
     let curvature = if second {
         curvature(problem, p, &r)
     } else {

@@ -1,0 +1,95 @@
+//! Session 91, lead: fresh-eyes round 17's item (10), a campaign-wide
+//! refusal of runs with the steer in degrees, said beside the other runs'
+//! refusals in one pass.
+
+use super::*;
+
+/// Rewrites column `name` of the run files of `c` (a campaign folder)
+/// whose names pass `which`, by `f`.
+fn rewrite(c: &Path, name: &str, which: &dyn Fn(&str) -> bool, f: &dyn Fn(f64) -> f64) {
+    for e in fs::read_dir(c.join("runs")).unwrap() {
+        let p = e.unwrap().path();
+        if !which(&p.file_name().unwrap().to_string_lossy()) {
+            continue;
+        }
+        let text = fs::read_to_string(&p).unwrap();
+        let mut lines = text.lines();
+        let head = lines.next().unwrap();
+        let k = head.split(',').position(|h| h == name).unwrap();
+        let mut out = format!("{head}\n");
+        for l in lines {
+            let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+            cells[k] = format!("{}", f(cells[k].parse().unwrap()));
+            out.push_str(&cells.join(","));
+            out.push('\n');
+        }
+        fs::write(&p, out).unwrap();
+    }
+}
+
+/// Two runs of eight with the steer in degrees and a third cut to 0.58 s:
+/// the steer-in-degrees refusal ended the reading, and the short run was
+/// said only once the user had converted the two (fresh-eyes round 17).
+/// Now one pass says all three runs: the two in degrees as one refusal
+/// naming both (with the advice to convert their files, `degrees` under
+/// [runs] being wrong for the others), the short one in its own words, in
+/// run order.
+#[test]
+fn runs_in_degrees_among_runs_in_radians_are_said_beside_the_other_refusals() {
+    let dir = scratch(&[]);
+    let camp = synth_campaign(dir.path(), "deg", &["--effects", "none", "--seed", "1"]);
+    rewrite(
+        &camp,
+        "steer",
+        &|n| n.starts_with("step_100kph"),
+        &f64::to_degrees,
+    );
+    let mut files: Vec<PathBuf> = fs::read_dir(camp.join("runs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    let short = files
+        .iter()
+        .find(|p| p.ends_with("ramp_080kph.csv"))
+        .unwrap();
+    let text = fs::read_to_string(short).unwrap();
+    let cut: String = text.lines().take(60).map(|l| format!("{l}\n")).collect();
+    fs::write(short, cut).unwrap();
+    let e = fails_cleanly("diagnose", &camp, dir.path());
+    let lines: Vec<&str> = e.lines().collect();
+    assert_eq!(lines[0], "error: 3 of 8 runs refused, in run order:", "{e}");
+    assert_eq!(lines.len(), 3, "{e}");
+    assert!(
+        lines[1].contains("ramp_080kph.csv") && lines[1].contains("the run is 0.58 s long"),
+        "{e}"
+    );
+    assert!(
+        lines[2].contains("for the steer in 2 of the 8 runs:")
+            && lines[2].contains("step_100kph_2ms2.csv (62× smaller")
+            && lines[2].contains("step_100kph_6ms2.csv (65× smaller")
+            && lines[2].contains("convert the steer of these runs to radians in their files"),
+        "{e}"
+    );
+    assert!(!e.contains("(the first of"), "{e}");
+}
+
+/// Every run of a campaign with the steer in degrees: no run's steer
+/// reads as radians against its yaw rate, so each is refused in its own
+/// words, which advise `degrees` under [runs] (one line for the five steps
+/// alike; two runs steer beyond ±90° read in radians, and the sine sweep,
+/// without a held steer, cannot be judged against its yaw rate).
+#[test]
+fn a_campaign_all_in_degrees_is_advised_to_declare_them() {
+    let dir = scratch(&[]);
+    let camp = synth_campaign(dir.path(), "all", &["--effects", "none", "--seed", "1"]);
+    rewrite(&camp, "steer", &|_| true, &f64::to_degrees);
+    let e = fails_cleanly("diagnose", &camp, dir.path());
+    assert!(
+        e.starts_with("error: 7 of 8 runs refused, in run order:\n"),
+        "{e}"
+    );
+    assert!(e.contains("(the first of 5 runs refused alike)"), "{e}");
+    assert!(e.contains("is beyond ±90°"), "{e}");
+    assert!(!e.contains("The other"), "{e}");
+}

@@ -93,3 +93,40 @@ fn a_campaign_all_in_degrees_is_advised_to_declare_them() {
     assert!(e.contains("is beyond ±90°"), "{e}");
     assert!(!e.contains("The other"), "{e}");
 }
+
+/// `synth --drive a.toml,b.toml` was read as one file named
+/// "a.toml,b.toml" ("cannot read"), while `--effects` takes commas
+/// (fresh-eyes round 18). The files are now split at commas: the same
+/// scenario twice is refused as a repeat, which it could only be if both
+/// were read.
+#[test]
+fn drive_takes_scenario_files_separated_by_commas() {
+    let dir = scratch(&[]);
+    let text = fs::read_to_string(root().join("scenarios/step_gbt6323_gim.toml"))
+        .unwrap()
+        .replace("../tyres/", &format!("{}/tyres/", root().display()));
+    let again = dir.path().join("again.toml");
+    fs::write(&again, &text).unwrap();
+    let both = format!("{},{}", again.display(), again.display());
+    let out = dir.path().join("never");
+    let o = run(&[
+        "synth",
+        "--effects",
+        "sensor_delay",
+        "--seed",
+        "2",
+        "--drive",
+        &both,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains(
+            "the campaign already has a run named `again` (driven from an earlier --drive file)"
+        ),
+        "{e}"
+    );
+    assert!(!out.exists());
+}

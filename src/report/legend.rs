@@ -20,14 +20,19 @@ pub(super) fn draw<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let mut y = 40;
-    for s in series.iter().filter(|s| !s.label.is_empty()) {
-        swatch(side, s, y)?;
-        // Long labels wrap onto a second line rather than run off the image.
-        for (k, line) in wrap(&s.label, 22).iter().enumerate() {
-            side.draw(&Text::new(line.clone(), (38, y - 7 + k as i32 * 15), FONT))?;
+    let keyed = series.iter().filter(|s| !s.label.is_empty());
+    let (at, mut y) = side_layout(series);
+    for (s, top) in keyed.zip(at) {
+        swatch(side, s, top)?;
+        // Long labels wrap onto lines of their own rather than run off
+        // the image.
+        for (k, line) in wrap(&s.label, WRAP).iter().enumerate() {
+            side.draw(&Text::new(
+                line.clone(),
+                (38, top - 7 + k as i32 * LINE),
+                FONT,
+            ))?;
         }
-        y += ROW + 15 * (wrap(&s.label, 22).len() as i32 - 1);
     }
     for s in series {
         if let (Style::Heat(..), Some(scale)) = (s.style, &s.scale) {
@@ -35,6 +40,41 @@ where
         }
     }
     Ok(())
+}
+
+/// Characters of a label's line in a key beside a chart.
+const WRAP: usize = 22;
+/// Height of a wrapped label's further lines, px.
+const LINE: i32 = 15;
+/// Top of the first entry of a key beside a chart, px.
+const SIDE_TOP: i32 = 40;
+
+/// Where the entries of a key beside a chart go: the y of each labelled
+/// series' swatch, px from the top of its column, each entry as tall as its
+/// wrapped label; and the y below the last. The one layout [`draw`] draws
+/// and [`side_height`] measures, so that a figure can make its rows tall
+/// enough for the key (a three-effect verdict's wrapped labels ran past
+/// the panel and the last entry was drawn over the one before).
+pub(super) fn side_layout(series: &[Series]) -> (Vec<i32>, i32) {
+    let mut y = SIDE_TOP;
+    let mut at = Vec::new();
+    for s in series.iter().filter(|s| !s.label.is_empty()) {
+        at.push(y);
+        y += ROW + LINE * (wrap(&s.label, WRAP).len() as i32 - 1);
+    }
+    (at, y)
+}
+
+/// Height a key of `series` beside a chart takes from the top of its
+/// column, px: its entries and a margin below the last (a colour bar fits
+/// itself to the room left).
+pub(super) fn side_height(series: &[Series]) -> i32 {
+    let (at, bottom) = side_layout(series);
+    if at.is_empty() {
+        0
+    } else {
+        bottom + ROW / 2
+    }
 }
 
 /// Where the entries of a key laid out below a chart `width` px wide go:
@@ -294,5 +334,27 @@ mod tests {
         assert_eq!(tick(12.345), "12.3");
         assert_eq!(tick(1234.4), "1234");
         assert_eq!(tick(1.5e-4), "1.50e-4");
+    }
+
+    #[test]
+    fn a_key_beside_a_chart_gives_each_wrapped_label_its_own_lines() {
+        use crate::report::series::Series;
+        let entry = |label: &str| Series::line(label, &[0.0], &[0.0], 0);
+        let series = [
+            entry("yaw rate r, base model"),
+            entry("yaw rate r, with load_transfer_distribution + roll_camber + accelerometer_position"),
+            entry(""),
+            entry("3 × noise floor"),
+        ];
+        // One line, four lines (20 + 3·15 px), one line; the unlabelled
+        // series has no entry.
+        let (at, bottom) = side_layout(&series);
+        assert_eq!(at, [40, 60, 125]);
+        assert_eq!(bottom, 145);
+        assert_eq!(side_height(&series), 155);
+        assert_eq!(side_height(&[entry("")]), 0);
+        // Each entry starts below the previous one's last line.
+        let lines = wrap(&series[1].label, WRAP).len() as i32;
+        assert!(at[2] - 7 >= at[1] - 7 + (lines - 1) * LINE + LINE);
     }
 }

@@ -15,6 +15,9 @@ pub use super::series::LABEL_PX;
 /// The size of a panel's title, px, where it fits the panel's width (a
 /// longer one is set smaller, down to 11 px).
 const TITLE_PX: u32 = 16;
+/// Height a panel's title takes above its chart and key, px: the title at
+/// [`TITLE_PX`] and plotters' padding around it, with room to spare.
+const TITLE_ROOM: i32 = TITLE_PX as i32 + 14;
 pub use super::series::{palette, Marker, Series, Shape, Style, INK, MEASURED_DOTS};
 use super::series::{NO_VALUE, SIDE};
 use crate::error::{Error, OutputError};
@@ -171,7 +174,27 @@ impl Figure {
     /// Width and height of the image, px.
     fn size(&self) -> (u32, u32) {
         let rows = self.panels.len().div_ceil(self.columns).max(1);
-        (self.width, self.row_height * rows as u32)
+        (self.width, self.row_px() * rows as u32)
+    }
+
+    /// Height of one row as drawn, px: [`Figure::row_height`], or more
+    /// where a panel's key beside its chart needs it below the panel's
+    /// title ([`super::legend::side_height`]), so that no key runs past its
+    /// panel (a three-effect verdict's gap map ran its key off the image
+    /// and drew its last entry over the one before).
+    pub fn row_px(&self) -> u32 {
+        let beside = self.width / self.columns.max(1) as u32 > 2 * SIDE as u32;
+        let keys = self
+            .panels
+            .iter()
+            .filter(|_| beside)
+            .map(|p| {
+                let title = if p.title.is_empty() { 0 } else { TITLE_ROOM };
+                title + super::legend::side_height(&p.series)
+            })
+            .max()
+            .unwrap_or(0);
+        self.row_height.max(keys.max(0) as u32)
     }
 
     /// Draws into an RGB buffer and writes it as a PNG with a palette

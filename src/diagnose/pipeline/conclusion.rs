@@ -6,7 +6,9 @@
 
 use crate::diagnose::campaign::{Campaign, StatedFriction};
 use crate::diagnose::effects::EffectKind;
-use crate::diagnose::report::{Confounded, InSet, Ranked, Shrinkage, Verdict};
+use crate::diagnose::report::{
+    Confounded, Evidence, InSet, MassAlike, ParameterValue, Ranked, Shrinkage, Verdict,
+};
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::score::{Context, Scored};
@@ -63,6 +65,7 @@ pub(super) fn conclude(
     }
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {
+        e.evidence.extend(mass_alike(&e.parameters, c));
         e.confounded_with = lookalikes_alone(singles, &confounded, found.start, base);
         e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
     }
@@ -71,6 +74,24 @@ pub(super) fn conclude(
         confounded,
         swapped,
     }
+}
+
+/// Where a verdict's `parameters` scale the yaw inertia, the vehicle mass
+/// that fits the runs the same ([`MassAlike`]): the user checks the
+/// vehicle file's mass as well as its yaw inertia.
+fn mass_alike(parameters: &[ParameterValue], c: &Campaign) -> Option<Evidence> {
+    let name = format!("{}.scale", EffectKind::YawInertia.name());
+    let scale = parameters.iter().find(|p| p.name == name)?.value;
+    let v = &c.vehicle;
+    (scale > 0.0).then(|| {
+        Evidence::MassAlike(MassAlike {
+            scale,
+            yaw_inertia: v.yaw_inertia,
+            yaw_inertia_fitted: v.yaw_inertia * scale,
+            mass: v.mass,
+            mass_alike: v.mass / scale,
+        })
+    })
 }
 
 /// `rows` with the rows of the look-alikes fitted in the verdict's set

@@ -54,6 +54,65 @@ pub enum Evidence {
     /// A look-alike that leaves less of the gap but leaves a parameter
     /// idle, passed over for a simpler candidate ([`Parsimony`]).
     ChosenForParsimony(Parsimony),
+    /// A verdict the greedy search did not reach: from the best single on
+    /// held-out runs (and its look-alikes) it stopped with no verdict, and
+    /// the search that reached it started from a pair of the best singles
+    /// in sample ([`crate::diagnose::verdict::pairs`]).
+    PairsFallback(PairsFallback),
+    /// A yaw inertia in the verdict, and the vehicle mass that would fit
+    /// the runs the same ([`MassAlike`]).
+    MassAlike(MassAlike),
+}
+
+/// A verdict's yaw inertia scale `s`, and the vehicle mass that would fit
+/// the runs the same. With the axles' cornering stiffness about
+/// proportional to their loads, a mass `k` times the car's scales the
+/// loads, and with them the axle forces, by `k`: the lateral balance
+/// `m·ay = Fy,f + Fy,r` cancels it, the yaw balance `Iz·dr/dt = a·Fy,f −
+/// b·Fy,r` does not, so it reads as the yaw inertia scaled by `k`. The
+/// runs cannot tell a yaw inertia `s` times the file's from a mass `1/s`
+/// times it. Masses in kg, inertias in kg·m².
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MassAlike {
+    /// The fitted `yaw_inertia.scale`.
+    pub scale: f64,
+    /// The vehicle file's yaw inertia, kg·m².
+    pub yaw_inertia: f64,
+    /// The yaw inertia the scale gives, kg·m².
+    pub yaw_inertia_fitted: f64,
+    /// The vehicle file's mass, kg.
+    pub mass: f64,
+    /// The mass that fits the runs the same with the file's yaw inertia,
+    /// `mass / scale`, kg.
+    pub mass_alike: f64,
+}
+
+/// How a verdict reached by the pairs of the best singles in sample came
+/// about: the greedy search's start and the set it ended on, refused, and
+/// the pair that passed in its place. Reductions are held-out shares of
+/// the gap above noise, %.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairsFallback {
+    /// The best single on held-out runs, where the greedy search started.
+    pub start: EffectKind,
+    /// Share of the gap it removes, %.
+    pub start_reduction_percent: f64,
+    /// The set the greedy search ended on, refused.
+    pub ended: Vec<EffectKind>,
+    /// Share of the gap it removes, %.
+    pub ended_reduction_percent: f64,
+    /// Share a set must remove to be accepted (with a lower BIC), %.
+    pub threshold_percent: f64,
+    /// The best singles in sample whose pairs were formed, best first.
+    pub paired_from: Vec<EffectKind>,
+    /// The pair that passed and started the search that reached the
+    /// verdict.
+    pub pair: Vec<EffectKind>,
+    /// Share of the gap it removes, %.
+    pub pair_reduction_percent: f64,
+    /// The start, where the pair leaves it out: the best single on
+    /// held-out runs passed over.
+    pub passed_over: Option<EffectKind>,
 }
 
 /// A look-alike that leaves less of the gap, but leaves a parameter idle

@@ -28,9 +28,9 @@ use crate::diagnose::model::Observed;
 use crate::diagnose::report::gap::ChannelGap;
 pub use crate::diagnose::report::outcome::{
     above_noise, CalibrationSource, ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence,
-    Explained, GapFinding, InSet, Lookalike, Lookalikes, NoSignificantGap, NotIdentifiable, Note,
-    OutsideLibrary, Parsimony, RankWarning, Refusal, Refused, Unseen, Verdict, VerdictKind,
-    VerdictWarning, Window,
+    Explained, GapFinding, InSet, Lookalike, Lookalikes, MassAlike, NoSignificantGap,
+    NotIdentifiable, Note, OutsideLibrary, PairsFallback, Parsimony, RankWarning, Refusal, Refused,
+    Unseen, Verdict, VerdictKind, VerdictWarning, Window,
 };
 pub use crate::diagnose::report::parts::{Part, PartAxis};
 pub use crate::diagnose::report::values::{

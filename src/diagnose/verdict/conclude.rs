@@ -15,8 +15,8 @@ use crate::diagnose::report::above_noise;
 use crate::diagnose::report::outcome::{CALIBRATION_AGREES, EXPLAINS_MOST};
 use crate::diagnose::report::{
     ChannelChange, ChannelLeft, ChannelWorsened, Closest, Evidence, Explained, NoSignificantGap,
-    NotIdentifiable, OutsideLibrary, ParameterValue, Parsimony, Part, RankWarning, Ranked,
-    Shrinkage, Verdict, VerdictKind, VerdictWarning,
+    NotIdentifiable, OutsideLibrary, PairsFallback, ParameterValue, Parsimony, Part, RankWarning,
+    Ranked, Shrinkage, Verdict, VerdictKind, VerdictWarning,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::rules::{self, ACCEPT, SIGNIFICANT};
@@ -64,6 +64,7 @@ pub(crate) fn verdict(
                 });
             }
             evidence.extend(chosen_over(found, singles, base, &r.effects));
+            evidence.extend(fallback(found, singles, base));
             Verdict::Explained(Explained {
                 evidence,
                 effects: r.effects,
@@ -170,6 +171,27 @@ fn chosen_over(
         }));
     }
     out
+}
+
+/// Where the verdict was reached from a pair of the best singles in
+/// sample: the greedy search's start and the set it ended on, the pair,
+/// and the start where the pair leaves it out.
+fn fallback(found: &Search, singles: &[Scored], base: &Baseline) -> Option<Evidence> {
+    let (f, start) = (found.fallback.as_ref()?, found.start?);
+    let start = base.rank(&singles[start]);
+    let (ended, pair) = (base.rank(&f.ended), base.rank(&f.pair));
+    let first = start.effects[0];
+    Some(Evidence::PairsFallback(PairsFallback {
+        start: first,
+        start_reduction_percent: start.reduction_percent,
+        ended: ended.effects,
+        ended_reduction_percent: ended.reduction_percent,
+        threshold_percent: 100.0 * ACCEPT,
+        paired_from: f.from.clone(),
+        passed_over: (!pair.effects.contains(&first)).then_some(first),
+        pair: pair.effects,
+        pair_reduction_percent: pair.reduction_percent,
+    }))
 }
 
 /// The gap a verdict that explains most of it (`ranked`) leaves above the

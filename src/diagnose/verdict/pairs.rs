@@ -42,6 +42,20 @@ pub(crate) struct Simpler {
     pub(crate) taken: Scored,
 }
 
+/// Where the verdict came from the pairs of the best singles in sample:
+/// the set the greedy search from the best single (and its look-alikes)
+/// ended on with no verdict, the pair taken, and the singles paired.
+#[derive(Clone)]
+pub(crate) struct Fallback {
+    /// The set the greedy search ended on, refused.
+    pub(crate) ended: Scored,
+    /// The pair that passed and started the search that reached the
+    /// verdict.
+    pub(crate) pair: Scored,
+    /// The best singles in sample whose pairs were formed, best first.
+    pub(crate) from: Vec<EffectKind>,
+}
+
 /// Of `all` (indices into `singles`, cross-validated and screened), the
 /// [`PAIRED`] that remove most of the in-sample gap and lower the BIC,
 /// best first.
@@ -76,14 +90,15 @@ fn untried(best: &[EffectKind], tried: &[Vec<EffectKind>]) -> Vec<(usize, usize)
 /// `combinations` (the search's rows so far, read for the sets tried); the
 /// one to take ([`rules::pick`]) where
 /// it passes as a whole against the base model, with the pair it was taken
-/// over for parsimony ([`rules::simpler_than`]), if any.
+/// over for parsimony ([`rules::simpler_than`]), if any, and the best
+/// singles in sample whose pairs were formed, best first.
 pub(crate) fn paired<'a>(
     ctx: &Context<'a>,
     (singles, all): (&[Scored], &[usize]),
     base: &Baseline,
     combinations: &mut Vec<Ranked>,
     extend: impl Fn(&Scored, EffectKind) -> Vec<Started<'a>> + Sync,
-) -> Option<(Scored, Option<Simpler>)> {
+) -> Option<(Scored, Option<Simpler>, Vec<EffectKind>)> {
     let best = best_in_sample(singles, all, base);
     let tried: Vec<Vec<EffectKind>> = combinations.iter().map(|r| r.effects.clone()).collect();
     let kinds: Vec<EffectKind> = best.iter().map(|&i| singles[i].kinds[0]).collect();
@@ -113,7 +128,7 @@ pub(crate) fn paired<'a>(
         over,
         taken: pair.clone(),
     });
-    rules::accepted(total, pair.full.bic(), base.bic0()).then_some((pair, over))
+    rules::accepted(total, pair.full.bic(), base.bic0()).then_some((pair, over, kinds))
 }
 
 #[cfg(test)]

@@ -38,7 +38,7 @@ use crate::diagnose::report::{
     Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
-use crate::diagnose::verdict::pairs::{paired, Simpler};
+use crate::diagnose::verdict::pairs::{paired, Fallback, Simpler};
 use crate::diagnose::verdict::restricted::screened_restricted;
 use crate::diagnose::verdict::rules::{self, Candidate};
 #[cfg(doc)]
@@ -73,6 +73,9 @@ pub(crate) struct Search {
     /// Where a set was accepted, each candidate its search passed over for
     /// a simpler one on the way to it (the start, then each added effect).
     pub(crate) simpler: Vec<Simpler>,
+    /// Where the greedy search ended with no verdict and a pair of the
+    /// best singles in sample ([`paired`]) started the one that reached it.
+    pub(crate) fallback: Option<Fallback>,
 }
 
 /// The verdict's search: the best single (`order` ranks the
@@ -157,7 +160,12 @@ pub(crate) fn search(
     if !rules::accepted(total, current.full.bic(), base.bic0()) {
         let extend = |s: &Scored, e| extensions(ctx, singles, base, s, &[e]);
         let rows = &mut out.combinations;
-        if let Some((pair, over)) = paired(ctx, (singles, all), base, rows, extend) {
+        if let Some((pair, over, from)) = paired(ctx, (singles, all), base, rows, extend) {
+            out.fallback = Some(Fallback {
+                ended: current.clone(),
+                pair: pair.clone(),
+                from,
+            });
             (current, simpler) = greedy(ctx, singles, all, base, limits, &pair, &mut out);
             simpler.splice(0..0, over);
             total = reduction(base.j0, current.heldout.combined(&scales), jn);
@@ -168,6 +176,7 @@ pub(crate) fn search(
         out.simpler = simpler;
     } else {
         out.ended = Some(base.refused(&current, None, None));
+        out.fallback = None;
     }
     let chosen = out.chosen.as_ref().map(|c| c.kinds.as_slice());
     one_row_per_set(&mut out.combinations, chosen);

@@ -7,7 +7,9 @@
 
 use super::{no_tyre_list, parameter, std_error};
 use crate::diagnose::effects::joined;
-use crate::diagnose::report::outcome::{CalibrationSource, Evidence, Parsimony};
+use crate::diagnose::report::outcome::{
+    CalibrationSource, Evidence, MassAlike, PairsFallback, Parsimony,
+};
 
 /// What the runs show beside a verdict's fit, in one line.
 pub fn evidence(e: &Evidence) -> String {
@@ -50,7 +52,48 @@ pub fn evidence(e: &Evidence) -> String {
             )
         }
         Evidence::ChosenForParsimony(c) => parsimony(c),
+        Evidence::PairsFallback(f) => fallback(f),
+        Evidence::MassAlike(m) => mass_alike(m),
     }
+}
+
+/// A verdict reached from a pair of the best singles in sample, where the
+/// greedy search stopped with no verdict: on its start alone (no effect
+/// added removed the acceptance share of what it leaves) or on a set
+/// refused as a whole.
+fn fallback(f: &PairsFallback) -> String {
+    let (start, t) = (f.start.name(), f.threshold_percent);
+    let ended = if f.ended == [f.start] {
+        format!("{start} removes {:.1} % alone, and no effect added to it removed {t:.0} % of what it leaves", f.start_reduction_percent)
+    } else {
+        format!(
+            "it ended on {}, which removes {:.1} %, refused",
+            joined(&f.ended, "+"),
+            f.ended_reduction_percent
+        )
+    };
+    let passed = f.passed_over.map_or_else(String::new, |e| {
+        format!(
+            ", passing over {}, the best single on held-out runs",
+            e.name()
+        )
+    });
+    format!(
+        "reached by the pairs fallback, not the greedy search: the greedy search from the best single on held-out runs, {start} ({:.1} %), stopped with no verdict ({ended}; a verdict must remove {t:.0} % and lower the BIC); the pair {} ({:.1} %) came from the pairs of the best singles in sample ({}){passed}, and the verdict is the set the search from that pair reached",
+        f.start_reduction_percent,
+        joined(&f.pair, "+"),
+        f.pair_reduction_percent,
+        joined(&f.paired_from, ", "),
+    )
+}
+
+/// A yaw inertia in the verdict, and the mass that fits the runs the same.
+fn mass_alike(m: &MassAlike) -> String {
+    let s = m.scale;
+    format!(
+        "the yaw inertia or the mass: yaw_inertia.scale = {s:.3} makes the car's yaw inertia {:.0} × {s:.3} = {:.0} kg·m², and a vehicle.mass of {:.0} / {s:.3} = {:.0} kg in place of the file's {:.0} kg would look the same in the runs: with the axles' cornering stiffness about proportional to their loads, a wrong mass scales the loads and with them the axle forces, which the lateral balance cancels and the yaw balance does not, so the runs cannot tell it from a wrong yaw inertia; check vehicle.mass (weigh the car) as well as vehicle.yaw_inertia",
+        m.yaw_inertia, m.yaw_inertia_fitted, m.mass, m.mass_alike, m.mass,
+    )
 }
 
 /// The verdict (or the set its search started from or extended) taken for

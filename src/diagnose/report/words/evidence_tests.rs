@@ -56,3 +56,38 @@ fn a_set_taken_for_parsimony_is_named_with_its_counts_and_a_parameter_left_unnam
         "{s}"
     );
 }
+
+/// A verdict reached by the pairs fallback (`synth --effects sensor_delay
+/// --seed 1`, its yaw inertia 1.5× the car's): the start it stopped on,
+/// the pair and the singles it came from, the start passed over.
+#[test]
+fn a_verdict_of_the_pairs_fallback_says_where_the_greedy_search_stopped() {
+    use crate::diagnose::report::PairsFallback;
+    use EffectKind::{RelaxationLength as R, SensorDelay as D, YawInertia as I};
+    let mut f = PairsFallback {
+        start: R,
+        start_reduction_percent: 28.6,
+        ended: vec![R],
+        ended_reduction_percent: 28.6,
+        threshold_percent: 30.0,
+        paired_from: vec![R, D, I],
+        pair: vec![D, I],
+        pair_reduction_percent: 83.8,
+        passed_over: Some(R),
+    };
+    let s = evidence(&Evidence::PairsFallback(f.clone()));
+    assert!(s.starts_with("reached by the pairs fallback, not the greedy search: the greedy search from the best single on held-out runs, relaxation_length (28.6 %), stopped with no verdict (relaxation_length removes 28.6 % alone, and no effect added to it removed 30 % of what it leaves; a verdict must remove 30 % and lower the BIC); the pair sensor_delay+yaw_inertia (83.8 %) came from the pairs of the best singles in sample (relaxation_length, sensor_delay, yaw_inertia), passing over relaxation_length, the best single on held-out runs"), "{s}");
+    // Ended on a set refused as a whole; the pair keeps the start.
+    f.ended = vec![R, I];
+    f.ended_reduction_percent = 27.0;
+    f.pair = vec![R, D];
+    f.passed_over = None;
+    let s = evidence(&Evidence::PairsFallback(f));
+    assert!(
+        s.contains(
+            "(it ended on relaxation_length+yaw_inertia, which removes 27.0 %, refused; a verdict"
+        ),
+        "{s}"
+    );
+    assert!(!s.contains("passing over"), "{s}");
+}

@@ -130,3 +130,57 @@ fn drive_takes_scenario_files_separated_by_commas() {
     );
     assert!(!out.exists());
 }
+
+/// A rig file whose `fz` and `fy` headers are exchanged: each negative
+/// "load" was refused as a bad sample ("-2577.65 N is negative … (the
+/// first of 963 places)") with no word of the swap (fresh-eyes round 18).
+/// Now one refusal at the first negative load asks for the swap, with the
+/// count and both columns' ranges; a few negative loads among positive
+/// ones are still refused each as before.
+#[test]
+fn a_rig_file_with_fz_and_fy_exchanged_is_asked_to_swap_them() {
+    let mut swapped = String::from("alpha,fy,fz\n");
+    let mut glitch = String::from("alpha,fz,fy\n");
+    for (k, load) in [2000.0_f64, 4000.0].iter().enumerate() {
+        for i in 0..41 {
+            let alpha = (f64::from(i) - 20.0) * 0.005;
+            let fy = -1.1 * load * (12.0 * alpha).atan() * 2.0 / std::f64::consts::PI;
+            swapped += &format!("{alpha},{load},{fy}\n");
+            let fz = if k == 0 && i == 3 { -load } else { *load };
+            glitch += &format!("{alpha},{fz},{fy}\n");
+        }
+    }
+    let dir = scratch(&[("swapped.csv", &swapped), ("glitch.csv", &glitch)]);
+    let rig = dir.path().join("swapped.csv");
+    let out = dir.path().join("never.toml");
+    let args = |rig: &Path| {
+        vec![
+            "identify".to_string(),
+            rig.display().to_string(),
+            "--model".into(),
+            "linear".into(),
+            "--out".into(),
+            out.display().to_string(),
+        ]
+    };
+    let o = run(&args(&rig).iter().map(String::as_str).collect::<Vec<_>>());
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains(":23:3: columns `fz` and `fy` look exchanged: `fz` changes sign (40 of its 82 samples negative, from -2453.95 to 2453.95 N)")
+            && e.contains("while `fy` is positive throughout (from 2000 to 4000 N)")
+            && e.contains("swap the two names in the header"),
+        "{e}"
+    );
+    assert_eq!(e.lines().count(), 1, "{e}");
+    let o = run(&args(&dir.path().join("glitch.csv"))
+        .iter()
+        .map(String::as_str)
+        .collect::<Vec<_>>());
+    let e = stderr(&o);
+    assert!(
+        e.contains("column `fz`: -2000 N is negative (loads are positive in FORMATS.md)"),
+        "{e}"
+    );
+    assert!(!e.contains("exchanged") && !out.exists(), "{e}");
+}

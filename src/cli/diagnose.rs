@@ -103,8 +103,9 @@ pub struct SynthArgs {
     #[arg(long)]
     out: PathBuf,
     /// Scenario files (`handling design` writes them) whose manoeuvres the
-    /// truth drives as further runs, named after the files.
-    #[arg(long)]
+    /// truth drives as further runs, named after the files: repeat it, or
+    /// separate the files with commas, as `--effects` takes its names.
+    #[arg(long, value_delimiter = ',')]
     drive: Vec<PathBuf>,
 }
 

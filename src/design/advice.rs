@@ -131,11 +131,14 @@ pub fn advised(effect: EffectKind) -> Result<&'static [Kind], Missing> {
         // levels at one speed).
         "relaxation_length" => &[Step, Sweep, LaneChange],
         "load_transfer_distribution" | "aero_load" | "cornering_stiffness" => &[Step],
-        // Steady turns at one lateral acceleration and several speeds (the
-        // family's open with one), or compared with u·r.
-        "steering_compliance" | "accelerometer_roll" => STEADY_TURNS,
+        // Steady turns compared with u·r.
+        "accelerometer_roll" => STEADY_TURNS,
+        // The limit, where the force it follows saturates, and a step,
+        // where the roll it does not follow lags.
+        "steering_compliance" => &[Ramp, Step],
         "roll_steer" | "roll_camber" | "road_friction" => &[Ramp],
-        "yaw_inertia" | "sensor_delay" => &[Sweep],
+        "yaw_inertia" => &[Sweep],
+        "sensor_delay" => &[Sweep, Step],
         "accelerometer_position" => &[Sweep, BrakeInTurn, AccelerateInTurn, ConstantRadius],
         "longitudinal_load_transfer" => &[BrakeInTurn, AccelerateInTurn],
         "combined_slip" => &[BrakeInTurn],

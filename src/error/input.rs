@@ -232,10 +232,13 @@ pub enum InputError {
     /// refused (built by [`InputError::runs_refused`]): a campaign of eight
     /// runs with three bad ones is mended in one pass. Grouped as
     /// [`InputError::Several`] groups places.
-    #[error("{} of {of} runs refused, in run order:{}", errors.iter().map(|e| e.1).sum::<usize>() + more, listed(errors, *more, "runs"))]
+    #[error("{refused} of {of} runs refused, in run order:{}", listed(errors, *more, "runs"))]
     RunsRefused {
         /// The first refused run's file.
         path: PathBuf,
+        /// The runs refused: one refusal may name several (runs with the
+        /// steer in degrees among runs in radians).
+        refused: usize,
         /// The runs of the campaign.
         of: usize,
         /// The refusals, in run order, each with how many runs it stands
@@ -277,9 +280,14 @@ impl InputError {
         }
     }
 
-    /// The refusals of a campaign's runs (in run order, of `of` runs) as
-    /// one: none, the one, or [`InputError::RunsRefused`].
-    pub(crate) fn runs_refused(mut errors: Vec<InputError>, of: usize) -> Option<Self> {
+    /// The refusals of a campaign's runs (in run order, standing for
+    /// `refused` of its `of` runs) as one: none, the one, or
+    /// [`InputError::RunsRefused`].
+    pub(crate) fn runs_refused(
+        mut errors: Vec<InputError>,
+        refused: usize,
+        of: usize,
+    ) -> Option<Self> {
         if errors.len() < 2 {
             return errors.pop();
         }
@@ -287,6 +295,7 @@ impl InputError {
         let (errors, more) = grouped(errors);
         Some(InputError::RunsRefused {
             path,
+            refused,
             of,
             errors,
             more,

@@ -36,6 +36,7 @@ mod problem_name;
 mod reason;
 mod replay_run;
 mod rig;
+mod rig_exchanged;
 mod rig_load_lbf;
 mod rig_moment_knm;
 mod rig_sign;
@@ -89,6 +90,7 @@ pub use reason::{
 };
 pub use replay_run::ReplayRunProblem;
 pub use rig::{Variable, MIN_MEDIAN_LOAD, MIN_MEDIAN_PRESSURE};
+pub use rig_exchanged::{LoadAndForceExchanged, EXCHANGED_SHARE};
 pub use rig_load_lbf::{RigLoadInLbf, LBF_SLIP, MAX_MEDIAN_GRIP};
 pub use rig_moment_knm::{RigMomentInKnm, MIN_RIG_ARM};
 pub use runs_selection::{GlobMatch, SelectionProblem};

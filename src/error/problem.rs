@@ -217,6 +217,9 @@ pub enum InputProblem {
         /// not a glitch).
         every: bool,
     },
+    /// `fz` and `fy` exchanged (`rig_exchanged.rs`).
+    #[error(transparent)]
+    LoadAndForceExchanged(#[from] super::rig_exchanged::LoadAndForceExchanged),
     /// A non-positive inflation pressure.
     #[error("column `pressure`: {} Pa is not a positive pressure", Num(*value))]
     NonPositivePressure {

@@ -34,6 +34,7 @@ impl InputProblem {
             InputProblem::TooFewSamples => "TooFewSamples",
             InputProblem::SteerBeyondQuarterTurn { .. } => "SteerBeyondQuarterTurn",
             InputProblem::NegativeLoad { .. } => "NegativeLoad",
+            InputProblem::LoadAndForceExchanged(_) => "LoadAndForceExchanged",
             InputProblem::NonPositivePressure { .. } => "NonPositivePressure",
             InputProblem::NegativeSpeed { .. } => "NegativeSpeed",
             InputProblem::NotPhysical { .. } => "NotPhysical",

@@ -12,6 +12,7 @@ mod limits;
 pub mod paths;
 pub mod rig;
 mod rig_degrees;
+mod rig_exchanged;
 pub(crate) mod rig_rows;
 mod rig_scale;
 mod run;

@@ -175,15 +175,7 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
     // once. (A cell that is no finite number is said as such alone.)
     // Every load negative is a convention (SAE's z axis points down), and
     // said so; one negative among positive loads is a bad sample.
-    let every = fz.iter().filter(|v| v.is_finite()).all(|v| *v < 0.0);
-    errors.extend(
-        fz.iter()
-            .enumerate()
-            .filter(|(_, v)| v.is_finite() && **v < 0.0)
-            .map(|(i, &value)| {
-                c.error_at(path, i, "fz", InputProblem::NegativeLoad { value, every })
-            }),
-    );
+    errors.extend(super::rig_exchanged::negative_loads(path, &c, &fz));
     if let Some(speed) = c.get("speed") {
         errors.extend(
             speed

@@ -87,7 +87,10 @@ impl Effect for SteeringCompliance {
     const NAME: &'static str = "steering_compliance";
     const PARAMETERS: &'static [Parameter] =
         &[par("steer_per_front_force", "rad/kN", 0.0, -0.02, 0.05)];
-    const SIGNATURE: &'static str = "understeer that grows with front axle force, not with roll: compare steady turns at one lateral acceleration and different speeds";
+    /// At one lateral acceleration the front axle force (m·ay·b/l), and
+    /// with it the steer lost, is the same at every speed: speed does not
+    /// separate it (fresh-eyes round 18 followed that advice in vain).
+    const SIGNATURE: &'static str = "a steer lost in proportion to the front axle force, at once and the same at every speed for one lateral acceleration (in the linear range a lower front cornering stiffness does the same; a roll steer follows the roll, late by the roll mode; near the limit the force saturates and so does the steer lost): a ramp steer to the limit, and a steer step";
     const NEEDS: Needs = Needs::Nothing;
     const USES_ROLL: bool = false;
     const TRUTH: &'static [f64] = &[0.003];
@@ -219,7 +222,10 @@ impl Effect for YawInertia {
 impl Effect for SensorDelay {
     const NAME: &'static str = "sensor_delay";
     const PARAMETERS: &'static [Parameter] = &[par("delay", "s", 0.0, 0.0, 0.3).floor()];
-    const SIGNATURE: &'static str = "a lag independent of speed and of frequency-dependent dynamics (phase ∝ frequency): a sweep at two speeds";
+    /// At one speed a delay of every sensor and a dead time in the steer
+    /// path give the same responses: speed tells it from a relaxation
+    /// length, and only a speed change at a held steer from a steer path.
+    const SIGNATURE: &'static str = "every response channel late alike, by a time independent of speed (phase ∝ frequency), where a relaxation length's lag σ/u shrinks with speed and a lag in the steer path delays only what the steer causes, not the response to a speed change at a held steer (a small difference within ordinary accelerations): a sweep or steps at two speeds";
     const NEEDS: Needs = Needs::Nothing;
     const USES_ROLL: bool = false;
     const TRUTH: &'static [f64] = &[0.05];

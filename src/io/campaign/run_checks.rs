@@ -2,9 +2,8 @@
 //! enough, no dead channel, a steer that moves, and the steer's sign and
 //! unit judged against the yaw rate it gives (ISO 8855 signs; SI, rad). A
 //! run that fails is refused by itself and the others are still checked,
-//! so that every refused run is said at once; a refusal about the whole
-//! campaign (runs in degrees where others are in radians) ends the
-//! reading.
+//! so that every refused run is said at once, runs in degrees among runs
+//! in radians as one refusal naming them all.
 
 use crate::error::{CampaignFileProblem, InputError, InputProblem};
 use crate::io::{read_run_declared, AngleColumn};
@@ -28,33 +27,48 @@ pub(super) struct RunContext<'a> {
     pub wheelbase: f64,
     /// Below this speed samples are excluded, m/s.
     pub min_speed: f64,
-    /// No run before this one was refused: a steer in degrees is then
-    /// judged against runs whose steer read in radians (a campaign-wide
-    /// refusal), else refused with the run alone.
-    pub none_refused: bool,
 }
 
 /// Why a run was not taken.
 pub(super) enum RunRefusal {
-    /// The run alone: the others are still checked.
+    /// Refused before its steer's unit was judged.
     Run(InputError),
-    /// The campaign as a whole: reading ends.
-    Campaign(InputError),
+    /// Its steer judged against its yaw rate reads as radians, and the
+    /// run was refused after.
+    Judged(InputError),
+    /// Its steer reads in degrees (or as a steering-wheel angle) where
+    /// none is declared so: a refusal of the campaign where other runs
+    /// read in radians ([`in_degrees_refusal`]), else the run's own.
+    InDegrees(SteerInDegrees),
+}
+
+/// A run whose yaw rate is far smaller than a neutral car's for its steer.
+pub(super) struct SteerInDegrees {
+    /// The run's file, as said.
+    pub run: String,
+    /// Its median `r·l/(u·δ)`.
+    pub median: f64,
+    /// Its refusal where no run reads in radians, advising `degrees`.
+    pub own: InputError,
 }
 
 /// A declared angle column a run lacks, with its refusal were no run to
 /// have it.
 type Lacking = Vec<(AngleColumn, InputError)>;
 
+/// A run taken: the run, the declared columns it lacks, its notes and
+/// whether its steer was judged against its yaw rate (held steered
+/// samples) and read as radians.
+pub(super) type Checked = (MeasuredRun, Lacking, Vec<String>, bool);
+
 /// Run `i` of `ctx.files` read and checked against the runs taken before it
-/// (`raw`, for copies; `copied(earlier, i)` words one): the run, the
-/// declared columns it lacks and its notes.
+/// (`raw`, for copies; `copied(earlier, i)` words one).
 pub(super) fn checked_run(
     ctx: &RunContext,
     i: usize,
     raw: &[MeasuredRun],
     copied: &dyn Fn(usize, usize) -> InputError,
-) -> Result<(MeasuredRun, Lacking, Vec<String>), RunRefusal> {
+) -> Result<Checked, RunRefusal> {
     let (wheelbase, min_speed) = (ctx.wheelbase, ctx.min_speed);
     let (run, lacks) = read_run_declared(&ctx.files[i], ctx.degrees).map_err(RunRefusal::Run)?;
     // Every earlier run passed the checks below: a copy of one would
@@ -69,22 +83,66 @@ pub(super) fn checked_run(
         return Err(alone(file_error(&run.path, problem)));
     }
     let declared = ctx.degrees.contains(&AngleColumn::Steer);
-    if ctx.files.len() > 1 && !declared && ctx.none_refused {
-        if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
-            let first = (run.path.display().to_string(), m);
-            let later = &ctx.files[i + 1..];
-            let some = runs_in_degrees(first, later, ctx.files.len(), wheelbase, min_speed);
-            if let Some(e) = some {
-                return Err(RunRefusal::Campaign(e));
-            }
+    // Where other runs read in radians, `degrees` under [runs] is the
+    // wrong advice for a run in degrees: the campaign decides its words.
+    let in_degrees = match ctx.files.len() > 1 && !declared {
+        true => steer_in_degrees(&run, wheelbase, min_speed),
+        false => None,
+    };
+    let judged = steer_against_yaw(&run, wheelbase, min_speed, declared);
+    let note = match (judged, in_degrees) {
+        (Err(own), Some(median)) => {
+            let run = run.path.display().to_string();
+            return Err(RunRefusal::InDegrees(SteerInDegrees { run, median, own }));
         }
-    }
+        (judged, _) => judged.map_err(|e| match yaw_per_neutral(&run, wheelbase, min_speed) {
+            Some(_) => RunRefusal::Judged(e),
+            None => RunRefusal::Run(e),
+        })?,
+    };
+    let radians = yaw_per_neutral(&run, wheelbase, min_speed).is_some();
     let mut notes: Vec<String> = Vec::new();
-    notes.extend(steer_against_yaw(&run, wheelbase, min_speed, declared).map_err(alone)?);
+    notes.extend(note);
     notes.extend(crate::io::unchecked_speed_unit(&run));
     notes.extend(crate::io::steep_bank(&run));
     notes.extend(super::ax_check::ax_note(&run));
-    Ok((run, lacks, notes))
+    Ok((run, lacks, notes, radians))
+}
+
+/// The refusals of a campaign's runs in run order (`refused`, each with
+/// its run's index) with its runs whose steer reads in degrees: where
+/// `judged_radians` runs read in radians, `degrees = ["steer"]` under
+/// [runs], which converts every run, is wrong for those, and the runs in
+/// degrees are one refusal at the first of them naming them all; where
+/// none does, each its own refusal (advising `degrees`). Returns the
+/// refusals and how many runs they stand for.
+pub(super) fn in_degrees_refusal(
+    mut refused: Vec<(usize, InputError)>,
+    in_degrees: Vec<(usize, SteerInDegrees)>,
+    judged_radians: usize,
+    of: usize,
+) -> (Vec<InputError>, usize) {
+    let runs = refused.len() + in_degrees.len();
+    match (in_degrees.first(), judged_radians) {
+        (None, _) => {}
+        (Some(_), 0) => refused.extend(in_degrees.into_iter().map(|(i, d)| (i, d.own))),
+        (Some((first, d)), _) => {
+            let path = PathBuf::from(&d.run);
+            let first = *first;
+            let runs = in_degrees
+                .into_iter()
+                .map(|(_, d)| (d.run, d.median))
+                .collect();
+            let problem = crate::error::SteerInDegreesRuns { runs, of };
+            let e = file_error(
+                &path,
+                InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),
+            );
+            refused.push((first, e));
+        }
+    }
+    refused.sort_by_key(|(i, _)| *i);
+    (refused.into_iter().map(|(_, e)| e).collect(), runs)
 }
 
 /// The steer judged against the yaw rate it gives where it is held
@@ -130,39 +188,6 @@ fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option
         InputProblem::SteerAboveYaw { median, .. } => Some(median),
         _ => None,
     }
-}
-
-/// The refusal of a campaign of `of` run files whose run `first` (its file
-/// and median `r·l/(u·δ)`) has a steer in degrees, with every `later` file
-/// that has one too (read again here, only on this way out): the runs
-/// before it were judged right, so `degrees` under [runs], which converts
-/// every run, is wrong for them; `None` where all runs read so (the run's
-/// own refusal, as `metrics` words it, advises `degrees` then).
-fn runs_in_degrees(
-    first: (String, f64),
-    later: &[PathBuf],
-    of: usize,
-    wheelbase: f64,
-    min_speed: f64,
-) -> Option<InputError> {
-    let path = PathBuf::from(&first.0);
-    let mut runs = vec![first];
-    for p in later {
-        let Ok((run, _)) = read_run_declared(p, &[]) else {
-            continue;
-        };
-        if let Some(m) = steer_in_degrees(&run, wheelbase, min_speed) {
-            runs.push((run.path.display().to_string(), m));
-        }
-    }
-    if runs.len() == of {
-        return None;
-    }
-    let problem = crate::error::SteerInDegreesRuns { runs, of };
-    Some(file_error(
-        &path,
-        InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),
-    ))
 }
 
 /// Refuses a run whose yaw rate, `ay` or `beta` holds one value over the

@@ -5,7 +5,7 @@
 //! straights as read ([`crate::measured::calibration`]) and cleaned
 //! ([`crate::measured::clean`]), cut into segments if asked. Units: SI, rad.
 
-use super::run_checks::{checked_run, file_error, RunContext, RunRefusal};
+use super::run_checks::{checked_run, file_error, in_degrees_refusal, RunContext, RunRefusal};
 use crate::error::{CampaignFileProblem, InputError, InputProblem, SelectionProblem};
 use crate::io::paths::beside;
 use crate::io::toml_file::TomlSource;
@@ -243,23 +243,29 @@ pub(super) fn read_runs(
     let (mut longest, mut was_cut) = (0.0_f64, false);
     // Every run is checked before any is refused: a campaign of eight runs
     // with three bad ones is mended in one pass, not three.
-    let mut refused = Vec::new();
+    let (mut refused, mut in_degrees, mut radians) = (Vec::new(), Vec::new(), 0);
+    let ctx = RunContext {
+        files,
+        degrees,
+        wheelbase,
+        min_speed,
+    };
     for (i, p) in files.iter().enumerate() {
-        let ctx = RunContext {
-            files,
-            degrees,
-            wheelbase,
-            min_speed,
-            none_refused: refused.is_empty(),
-        };
-        let (run, lacks, run_notes) = match checked_run(&ctx, i, &raw, copied) {
+        let (run, lacks, run_notes, judged) = match checked_run(&ctx, i, &raw, copied) {
             Ok(checked) => checked,
-            Err(RunRefusal::Run(e)) => {
-                refused.push(e);
+            Err(refusal) => {
+                match refusal {
+                    RunRefusal::Run(e) => refused.push((i, e)),
+                    RunRefusal::Judged(e) => {
+                        refused.push((i, e));
+                        radians += 1;
+                    }
+                    RunRefusal::InDegrees(d) => in_degrees.push((i, d)),
+                }
                 continue;
             }
-            Err(RunRefusal::Campaign(e)) => return Err(e),
         };
+        radians += usize::from(judged);
         for (a, e) in lacks {
             match absent.iter_mut().find(|x| x.0 == a) {
                 Some(x) => x.1.push(p.display().to_string()),
@@ -313,7 +319,8 @@ pub(super) fn read_runs(
             }
         }
     }
-    if let Some(e) = InputError::runs_refused(refused, files.len()) {
+    let (refused, count) = in_degrees_refusal(refused, in_degrees, radians, files.len());
+    if let Some(e) = InputError::runs_refused(refused, count, files.len()) {
         return Err(e);
     }
     if let Some(seg) = segment.filter(|_| !was_cut && !runs.is_empty()) {

@@ -6,7 +6,7 @@
 
 use crate::equilibria::bifurcation::{Axis, Bifurcation};
 use crate::equilibria::phase::{self, Manifold};
-use crate::equilibria::sweep::{axis_lines, SweepResult};
+use crate::equilibria::sweep::{axis_lines, Grid, SweepResult};
 use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
 use crate::error::Error;
 use crate::report::branches::{self, At};
@@ -50,6 +50,44 @@ const BRANCH_GAP: f64 = 0.35;
 /// branch that ends there (branches move fast near a fold).
 const FOLD_GAP: f64 = 0.8;
 
+/// The other swept parameters' values along the line drawn (the grid's
+/// first), in display units, with how many each sweeps: a branch diagram
+/// of a two-axis sweep is one slice of it, and says which
+/// (`stability_map.png` holds the whole grid). Empty for a one-axis sweep.
+fn slice(grid: &Grid, axis: Axis, c: &Condition) -> String {
+    let held: Vec<String> = grid
+        .varying()
+        .into_iter()
+        .filter(|&a| a != axis)
+        .map(|a| {
+            let n = match a {
+                Axis::Steer => grid.steer.len(),
+                Axis::Friction => grid.friction.len(),
+                Axis::Speed => grid.speed.len(),
+            };
+            let unit = axis_label(a)
+                .split('[')
+                .nth(1)
+                .unwrap_or("]")
+                .trim_end_matches(']');
+            let unit = if unit == "-" {
+                String::new()
+            } else {
+                format!(" {unit}")
+            };
+            format!(
+                "{} {}{unit} (the first of {n})",
+                a.name(),
+                (display(a, a.get(c)) * 1e6).round() / 1e6
+            )
+        })
+        .collect();
+    match held.is_empty() {
+        true => String::new(),
+        false => format!(", at {}", held.join(", ")),
+    }
+}
+
 /// β and r of the equilibria against the swept parameter, along the first
 /// line of `axis`: equilibria of one branch joined (nearest neighbours in
 /// the box-scaled plane, [`branches::link`]), each segment and point in the
@@ -62,8 +100,12 @@ pub fn branch_diagram(
     path: &Path,
 ) -> Result<(), Error> {
     let line = &axis_lines(&res.grid, axis)[0];
+    let held = slice(&res.grid, axis, &res.points[line[0]].condition);
     let mut beta = Panel {
-        title: format!("steering equilibria: sideslip against {}", axis.name()),
+        title: format!(
+            "steering equilibria: sideslip against {}{held}",
+            axis.name()
+        ),
         x_label: axis_label(axis).into(),
         y_label: "β_e [deg]".into(),
         ..Panel::default()
@@ -357,4 +399,39 @@ pub fn stability_map(
         row_height: 700,
     }
     .save(path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A two-axis sweep's branch diagram names the slice it draws
+    /// (fresh-eyes round 18: the steer of the slice drawn was said
+    /// nowhere); a one-axis sweep's title has nothing to add.
+    #[test]
+    fn a_branch_diagram_of_a_two_axis_sweep_names_its_slice() {
+        let grid = Grid {
+            steer: vec![0.0, 0.01],
+            friction: vec![1.0],
+            speed: vec![30.0, 31.0, 32.0],
+        };
+        let c = Condition {
+            steer: 0.0,
+            friction: 1.0,
+            speed: 30.0,
+        };
+        assert_eq!(
+            slice(&grid, Axis::Speed, &c),
+            ", at steer 0 deg (the first of 2)"
+        );
+        assert_eq!(
+            slice(&grid, Axis::Steer, &c),
+            ", at speed 108 km/h (the first of 3)"
+        );
+        let one = Grid {
+            steer: vec![0.0],
+            ..grid
+        };
+        assert_eq!(slice(&one, Axis::Speed, &c), "");
+    }
 }

@@ -44,10 +44,7 @@ pub fn evidence(e: &Evidence) -> String {
             reduction_percent,
             pressed,
         } => {
-            let at: Vec<String> = pressed
-                .iter()
-                .map(|p| format!("{} = {:.4} {}", p.name, p.value, p.unit))
-                .collect();
+            let at: Vec<String> = pressed.iter().map(super::parameters::on_bound).collect();
             format!(
                 "chosen over a look-alike pressed on its search range: {}, which removes {reduction_percent:.1} %, but only with {} at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges",
                 joined(effects, "+"),

@@ -8,6 +8,15 @@ use super::{std_error, value};
 use crate::diagnose::effects::Bound;
 use crate::diagnose::report::ParameterValue;
 
+/// A parameter on the end of its search range, to four decimals: its
+/// name, value and unit (a ratio's unit, `-`, not written).
+pub(super) fn on_bound(p: &ParameterValue) -> String {
+    match p.unit {
+        "" | "-" => format!("{} = {:.4}", p.name, p.value),
+        unit => format!("{} = {:.4} {unit}", p.name, p.value),
+    }
+}
+
 /// A fitted parameter in words: its value, unit and standard error; or
 /// the bound it stands on — a search bound (the data would take it
 /// further) or a physical limit (a length, a share, a load that would be

@@ -31,14 +31,7 @@ pub fn verdict_warning(w: &VerdictWarning) -> String {
             c.acceptance_percent
         ),
         VerdictWarning::OnSearchBound { parameters } => {
-            let each: Vec<String> = parameters
-                .iter()
-                .map(|p| match p.unit {
-                    // A ratio's unit is written `-`: said without one.
-                    "" | "-" => format!("{} = {:.4}", p.name, p.value),
-                    unit => format!("{} = {:.4} {unit}", p.name, p.value),
-                })
-                .collect();
+            let each: Vec<String> = parameters.iter().map(super::parameters::on_bound).collect();
             format!(
                 "{} on {} search bound: the data would take {} further, so {} a bound on the effect's size, not a measurement of it",
                 each.join(", "),

@@ -39,7 +39,7 @@ pub(super) enum RunRefusal {
     /// Its steer reads in degrees (or as a steering-wheel angle) where
     /// none is declared so: a refusal of the campaign where other runs
     /// read in radians ([`in_degrees_refusal`]), else the run's own.
-    InDegrees(SteerInDegrees),
+    InDegrees(Box<SteerInDegrees>),
 }
 
 /// A run whose yaw rate is far smaller than a neutral car's for its steer.
@@ -93,7 +93,11 @@ pub(super) fn checked_run(
     let note = match (judged, in_degrees) {
         (Err(own), Some(median)) => {
             let run = run.path.display().to_string();
-            return Err(RunRefusal::InDegrees(SteerInDegrees { run, median, own }));
+            return Err(RunRefusal::InDegrees(Box::new(SteerInDegrees {
+                run,
+                median,
+                own,
+            })));
         }
         (judged, _) => judged.map_err(|e| match yaw_per_neutral(&run, wheelbase, min_speed) {
             Some(_) => RunRefusal::Judged(e),
@@ -118,7 +122,7 @@ pub(super) fn checked_run(
 /// refusals and how many runs they stand for.
 pub(super) fn in_degrees_refusal(
     mut refused: Vec<(usize, InputError)>,
-    in_degrees: Vec<(usize, SteerInDegrees)>,
+    in_degrees: Vec<(usize, Box<SteerInDegrees>)>,
     judged_radians: usize,
     of: usize,
 ) -> (Vec<InputError>, usize) {

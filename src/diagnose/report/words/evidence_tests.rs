@@ -91,3 +91,21 @@ fn a_verdict_of_the_pairs_fallback_says_where_the_greedy_search_stopped() {
     );
     assert!(!s.contains("passing over"), "{s}");
 }
+
+/// A ratio (unit `-`) on its search bound in the look-alike line is said
+/// without a unit (fresh-eyes round 18 read
+/// "road_friction.friction_scale = 1.5000 -").
+#[test]
+fn a_ratio_pressed_on_its_bound_is_said_without_a_unit() {
+    let ratio = Evidence::LookalikePressed {
+        effects: vec![EffectKind::RoadFriction],
+        reduction_percent: 40.0,
+        pressed: vec![fitted(
+            "road_friction.friction_scale",
+            "-",
+            1.5,
+            Some(Bound::Search),
+        )],
+    };
+    assert!(evidence(&ratio).contains("only with road_friction.friction_scale = 1.5000 at the end"));
+}

@@ -351,19 +351,6 @@ fn a_lookalike_passed_over_for_its_search_bound_is_named_with_the_value_it_neede
         evidence(&e),
         "chosen over a look-alike pressed on its search range: sensor_delay, which removes 54.3 %, but only with sensor_delay.delay = 0.3000 s at the end of the range searched; an effect that explains the gap only at the end of its plausible range stands in for something else, where the verdict, within the confounding window of it, explains the gap from inside its ranges"
     );
-    // A ratio (unit `-`) on its bound is said without a unit (fresh-eyes
-    // round 18 read "road_friction.friction_scale = 1.5000 -").
-    let ratio = Evidence::LookalikePressed {
-        effects: vec![EffectKind::RoadFriction],
-        reduction_percent: 40.0,
-        pressed: vec![fitted(
-            "road_friction.friction_scale",
-            "-",
-            1.5,
-            Some(Bound::Search),
-        )],
-    };
-    assert!(evidence(&ratio).contains("only with road_friction.friction_scale = 1.5000 at the end"));
     let r = Refusal::PressedOnSearchBound {
         inside: Box::new(Refused {
             effects: vec![EffectKind::SteerPath],

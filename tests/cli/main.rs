@@ -450,6 +450,7 @@ mod trips_s89_tyre;
 mod trips_s90_diag;
 mod trips_s90_lead;
 mod trips_s90_met;
+mod trips_s91_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

@@ -62,6 +62,7 @@ mod noise;
 mod peak;
 mod pulse;
 mod settling;
+mod steady_inside;
 use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
@@ -345,6 +346,8 @@ struct Normalised {
     samples: usize,
     /// Where the steady window's trend heads ([`settling::trend`]).
     trend: Option<settling::Trend>,
+    /// How it moves inside the steady window ([`steady_inside::Inside`]).
+    inside: steady_inside::Inside,
 }
 
 /// `x` (raw: `raw`) normalised from its mean over the initial window,
@@ -363,15 +366,13 @@ fn normalise(
     let (xs, sd) = window_mean(t, x, t_last - s.steady_window, t_last);
     let step = xs - x0;
     let in_window = |from: f64, to: f64| t.iter().filter(|&&v| v >= from && v <= to).count();
-    let samples =
-        in_window(t_first, pre_end).min(in_window(t_last - s.steady_window, t_last));
+    let samples = in_window(t_first, pre_end).min(in_window(t_last - s.steady_window, t_last));
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
     let values: Vec<f64> = x.iter().map(|v| (v - x0) / step).collect();
     let noise = sd0 / step.abs();
-    let from = (t_last - 2.0 * s.steady_window).max(t_first);
-    let trend = settling::trend(t, &values, from, t_last, noise);
+    let (trend, inside) = steady_inside::steady_reading(t, &values, s.steady_window, t_last, noise);
     Ok(Normalised {
         values,
         steady: step,
@@ -379,6 +380,7 @@ fn normalise(
         noise,
         samples,
         trend,
+        inside,
     })
 }
 

@@ -1,8 +1,7 @@
 //! How a measured response moves inside its steady window, read where
 //! the trend over the steady window and the one before it finds none: a
 //! response that turns inside the window (an overshoot not decayed) has
-//! not settled, whatever its spread; and the trend over the steady window
-//! alone, for a record too short for two windows. Shares of the step
+//! not settled, whatever its spread. Shares of the step
 //! (dimensionless); times in s.
 
 use super::settling::{trend, Trend, TREND_PARTS};
@@ -25,9 +24,8 @@ pub(crate) struct Inside {
 }
 
 /// The trend of the normalised response `x` over its steady window
-/// (`window` s to the record's end `to`) and the one before it, else over
-/// the steady window alone (a record too short for two windows of a
-/// settled response), and how it moves inside the steady window
+/// (`window` s to the record's end `to`) and the one before it, and how
+/// it moves inside the steady window
 /// ([`Inside`]), `noise` the raw noise deviation relative to the step.
 pub(super) fn steady_reading(
     t: &[f64],
@@ -37,8 +35,10 @@ pub(super) fn steady_reading(
     noise: f64,
 ) -> (Option<Trend>, Inside) {
     let from = (to - 2.0 * window).max(t[0]);
-    let trend = trend(t, x, from, to, noise).or_else(|| trend(t, x, to - window, to, noise));
-    (trend, inside(t, x, to - window, to, noise))
+    (
+        trend(t, x, from, to, noise),
+        inside(t, x, to - window, to, noise),
+    )
 }
 
 /// How `x` moves inside [from, to] ([`Inside`]), from the means of

@@ -192,8 +192,7 @@ fn gain_and_bound(csv: &Path, w: &str) -> (f64, f64) {
 /// it decays (its spread 1.2 % of the step), and the gain read 4.4 % high
 /// with the yaw rate called settled. Now the window's turn is read: the
 /// gain is said to be no steady-state gain, off by up to about its
-/// window's range (4.2 % for 4.4 %); a 0.2 s window, on the decay alone,
-/// is said still settling, its gain (3.6 % high) no steady-state gain.
+/// window's range (4.2 % for 4.4 %).
 #[test]
 fn a_stated_steady_window_on_an_overshoot_is_said_to_read_no_steady_gain() {
     let dir = tempfile::tempdir().unwrap();
@@ -217,11 +216,5 @@ fn a_stated_steady_window_on_an_overshoot_is_said_to_read_no_steady_gain() {
     assert!(
         bound >= 0.9 * off && bound <= 1.5 * off,
         "{bound} % for {off} %"
-    );
-    // On the decay alone the trend is read, and the gain said as none.
-    let (gain, bound) = gain_and_bound(&csv, "0.2");
-    assert!(
-        gain / 5.60416 - 1.0 > 0.03 && bound >= 2.0,
-        "{gain} {bound}"
     );
 }

@@ -65,7 +65,7 @@ pub enum UnitSlip {
         turning: f64,
     },
     /// A median time step no handling run is logged at.
-    #[error("column `t`: the median time step is {} ({}), coarser than any handling run is logged at (at most {} s, {} Hz): `t` is in seconds (FORMATS.md){}", Num(*step), rate(*step), Num(*limit), Num(1.0 / limit), in_ms(*step))]
+    #[error("column `t`: the median time step is {} ({}), coarser than any handling run is logged at (at most {} s, {} Hz): `t` is in seconds (FORMATS.md){}", apart(*step, *limit), rate(*step), Num(*limit), Num(1.0 / limit), in_ms(*step))]
     TimeStep {
         /// The median step, as read.
         step: f64,
@@ -510,11 +510,13 @@ fn rate(step: f64) -> String {
 }
 
 /// The question a step of that size raises: milliseconds, when read so
-/// it is a logger's rate (5 Hz to 10 kHz), else microseconds, when read
+/// it is a rate a handling run is logged at (a step of 1 to 200: 1 kHz to
+/// 5 Hz; a step of 0.2 to 1 is a log of 1 to 5 Hz, which read in ms would
+/// be 1 to 5 kHz, so no unit is suggested), else microseconds, when read
 /// so it is one (a step of 200 to 200 000: 5 Hz to 5 kHz; 10 000 µs is
 /// 100 Hz).
 fn in_ms(step: f64) -> String {
-    if (0.1..=200.0).contains(&step) {
+    if (1.0..=200.0).contains(&step) {
         format!(
             "; is `t` in milliseconds ({} ms: {} Hz)? divide it by 1000",
             Num(step),

@@ -12,7 +12,8 @@ use super::step_shape::{check_steer_is_a_step, check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
-    clean_single_with, fill_masked, median, quantile, CleanSettings, CleaningReport, GlitchKind,
+    clean_single_reported, fill_masked_by_channel, median, quantile, CleanSettings, CleaningReport,
+    GlitchKind,
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;
@@ -385,12 +386,13 @@ fn crossing(t: &[f64], x: &[f64], level: f64, sign: f64, from: f64) -> Option<f6
 /// last crossing of 10 % before the first of 90 %, since a noisy steer
 /// crosses 10 % back and forth before the step (a sensor's noise of 3 %
 /// of the step read a 0.08 s ramp as 0.23 s from its first crossing).
-fn steer_rise(run: &MeasuredRun, m: &StepMetrics, pre_window: f64) -> f64 {
+fn steer_rise(run: &MeasuredRun, m: &StepMetrics, settings: &MetricSettings) -> f64 {
+    let pre_end = super::initial::initial_end(&run.t, &run.steer, settings);
     let pre: Vec<f64> = run
         .t
         .iter()
         .zip(&run.steer)
-        .filter(|(t, _)| **t <= run.t[0] + pre_window)
+        .filter(|(t, _)| **t <= pre_end)
         .map(|(_, d)| *d)
         .collect();
     let base = pre.iter().sum::<f64>() / pre.len().max(1) as f64;
@@ -465,12 +467,12 @@ pub fn measured_step_metrics(
     check_steer_units(&run, min_speed)?;
     let path = run.path.clone();
     let mut cleaning = CleaningReport::new(min_speed);
-    let found = clean_single_with(
+    let found = clean_single_reported(
         run,
         &CleanSettings::single(min_speed),
         &mut cleaning,
-        |piece| {
-            let p = fill_masked(piece);
+        |piece, found| {
+            let p = fill_masked_by_channel(piece, &found.glitches);
             check_steer_is_a_step(&p.t, &p.steer)
                 .and_then(|()| {
                     step_metrics(
@@ -523,7 +525,7 @@ pub fn measured_step_metrics(
         };
         return Err(InputError::problem(&path, problem));
     };
-    let steer_rise_time = steer_rise(&filled, &metrics, settings.pre_window);
+    let steer_rise_time = steer_rise(&filled, &metrics, settings);
     let mut warnings = Vec::new();
     if steer_rise_time > ISO_7401_RISE {
         warnings.push(format!(

@@ -56,11 +56,13 @@ pub(crate) mod continuous;
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
 pub const MIN_FILTER_HZ: f64 = 1.0;
 pub(crate) mod beta_sign;
+pub(crate) mod initial;
 pub mod measured;
 mod noise;
 mod peak;
 mod pulse;
 mod settling;
+mod steady_inside;
 use noise::{noise_deviation, noise_gain};
 pub mod simulated;
 mod step_shape;
@@ -344,30 +346,33 @@ struct Normalised {
     samples: usize,
     /// Where the steady window's trend heads ([`settling::trend`]).
     trend: Option<settling::Trend>,
+    /// How it moves inside the steady window ([`steady_inside::Inside`]).
+    inside: steady_inside::Inside,
 }
 
+/// `x` (raw: `raw`) normalised from its mean over the initial window,
+/// ending at `pre_end` ([`initial::initial_end`]), to its mean over the
+/// steady window.
 fn normalise(
     t: &[f64],
-    raw: &[f64],
-    x: &[f64],
+    (raw, x): (&[f64], &[f64]),
+    pre_end: f64,
     s: &MetricSettings,
     name: &'static str,
 ) -> Result<Normalised, MetricsError> {
     let (t_first, t_last) = (t[0], t[t.len() - 1]);
-    let (x0, _) = window_mean(t, x, t_first, t_first + s.pre_window);
+    let (x0, _) = window_mean(t, x, t_first, pre_end);
     let sd0 = noise_deviation(raw);
     let (xs, sd) = window_mean(t, x, t_last - s.steady_window, t_last);
     let step = xs - x0;
     let in_window = |from: f64, to: f64| t.iter().filter(|&&v| v >= from && v <= to).count();
-    let samples =
-        in_window(t_first, t_first + s.pre_window).min(in_window(t_last - s.steady_window, t_last));
+    let samples = in_window(t_first, pre_end).min(in_window(t_last - s.steady_window, t_last));
     if step == 0.0 || !step.is_finite() {
         return Err(MetricsError::NoResponse(name));
     }
     let values: Vec<f64> = x.iter().map(|v| (v - x0) / step).collect();
     let noise = sd0 / step.abs();
-    let from = (t_last - 2.0 * s.steady_window).max(t_first);
-    let trend = settling::trend(t, &values, from, t_last, noise);
+    let (trend, inside) = steady_inside::steady_reading(t, &values, s.steady_window, t_last, noise);
     Ok(Normalised {
         values,
         steady: step,
@@ -375,6 +380,7 @@ fn normalise(
         noise,
         samples,
         trend,
+        inside,
     })
 }
 
@@ -471,13 +477,14 @@ pub(crate) fn step_metrics(
     let ay_f = ay.map(filtered);
     let beta_f = beta.map(filtered);
     let no_step = || pulse::no_step(t, steer, &steer_f, s);
-    let d = normalise(t, steer, &steer_f, s, "steer").map_err(|_| no_step())?;
+    let pre_end = initial::initial_end(t, steer, s);
+    let d = normalise(t, (steer, &steer_f), pre_end, s, "steer").map_err(|_| no_step())?;
     if d.steady.abs() < MIN_STEP {
         return Err(no_step());
     }
-    let r = normalise(t, yaw_rate, &yaw_rate_f, s, "yaw rate")?;
+    let r = normalise(t, (yaw_rate, &yaw_rate_f), pre_end, s, "yaw rate")?;
     let a = match (ay, ay_f.as_deref()) {
-        (Some(raw), Some(f)) => Some(normalise(t, raw, f, s, "lateral acceleration")?),
+        (Some(raw), Some(f)) => Some(normalise(t, (raw, f), pre_end, s, "lateral acceleration")?),
         _ => None,
     };
     let r_noise = gain * r.noise;
@@ -513,7 +520,7 @@ pub(crate) fn step_metrics(
     let spread = peak_at.and(peak::peak_spread(t, v, (tr, level), r.noise, &filtered));
     let beta_n = beta
         .zip(beta_f.as_deref())
-        .map(|(raw, b)| normalise(t, raw, b, s, "sideslip").ok());
+        .map(|(raw, b)| normalise(t, (raw, b), pre_end, s, "sideslip").ok());
     let beta_steady = beta_n
         .as_ref()
         .map(|nb| nb.as_ref().map_or(0.0, |nb| nb.steady));

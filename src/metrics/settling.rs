@@ -301,7 +301,15 @@ pub(super) fn verdict(n: &Normalised, noise: f64, to_scale: f64) -> Settling {
         };
     }
     let band = 2.0 * n.noise * to_scale * (2.0 / n.samples.max(1) as f64).sqrt();
-    let beyond = beyond_noise(n.spread * to_scale, noise * to_scale);
+    let mut beyond = beyond_noise(n.spread * to_scale, noise * to_scale);
+    // A response whose spread passes but that turns inside its window by
+    // more than the spread allows (an overshoot not decayed) has not
+    // settled, and its window's mean may be off by about the window's
+    // range (a spread that fails already bounds it: a window holding the
+    // rise ranges over most of the step).
+    if beyond < SETTLED_SPREAD && n.inside.peak * to_scale >= SETTLED_SPREAD {
+        beyond = beyond.max(SETTLED_SPREAD).max(n.inside.range * to_scale);
+    }
     if beyond >= SETTLED_SPREAD && beyond >= band {
         return Settling::NotSettled { beyond };
     }

@@ -452,6 +452,7 @@ mod trips_s90_lead;
 mod trips_s90_met;
 mod trips_s91_diag;
 mod trips_s91_lead;
+mod trips_s91_met;
 mod trips_s91_perf;
 mod trips_simulate;
 mod trips_units;

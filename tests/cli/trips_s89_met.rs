@@ -226,7 +226,7 @@ fn what_the_sample_interval_limits_is_said() {
     let coarse = logged_step(dir.path(), 0.1, 143);
     assert!(
         coarse.contains(
-            "the yaw-rate response time, 0.167 s, spans 1.2 sample intervals of a 6.99 Hz log"
+            "the yaw-rate response time, 0.140 s, spans 0.98 sample intervals of a 6.99 Hz log"
         ),
         "{coarse}"
     );

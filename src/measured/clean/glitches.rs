@@ -374,6 +374,43 @@ fn zero_before_steer(steer: &[f64], f: &Found) -> bool {
     f.start == 0 && end < steer.len() && (change == end || change + 1 == end)
 }
 
+/// Whether a response's one-sample excursion `f` is the response to a
+/// steer step: the steer moves by more than `floor`
+/// ([`steer_step_floor`]) over the samples from two before it to one
+/// after (a step between the excursion's neighbours, or just before the
+/// earlier one). A coarse log samples a fast response once on its way
+/// (an instant step's sideslip at 10 Hz: 0 at the step's sample, +0.00057
+/// rad 0.1 s later, −0.00089 rad the next, its physical jump and turn)
+/// and that sample bends back like a spike; masked, the sideslip's
+/// initial response was read away. A glitch on the step's own samples
+/// cannot be told from the response there, and is left in it.
+fn at_steer_step(steer: &[f64], floor: f64, f: &Found) -> bool {
+    let lo = f.start.saturating_sub(2);
+    let hi = (f.start + f.len + 1).min(steer.len());
+    let near = &steer[lo..hi];
+    let max = near.iter().copied().fold(f64::MIN, f64::max);
+    let min = near.iter().copied().fold(f64::MAX, f64::min);
+    max - min > floor
+}
+
+/// How far the steer must move over three intervals to be a step: half
+/// its 1–99 % range (a step steer's range is its step; a sweep or a
+/// slalom crosses half its range in three samples only where the log
+/// barely resolves it), and beyond its noise ([`SPIKE_MADS`] robust
+/// spreads of its differences). The spike threshold's quantisation floor
+/// is not used: a noise-free step steer holds its values, which reads as
+/// a quantum of the whole step.
+fn steer_step_floor(steer: &[f64]) -> f64 {
+    let mut s = steer.to_vec();
+    s.sort_by(f64::total_cmp);
+    let range = quantile(&s, 0.99).unwrap_or(0.0) - quantile(&s, 0.01).unwrap_or(0.0);
+    let mut d: Vec<f64> = steer.windows(2).map(|w| w[1] - w[0]).collect();
+    let md = median(&mut d);
+    let mut dev: Vec<f64> = d.iter().map(|v| (v - md).abs()).collect();
+    let sigma = 1.4826 * median(&mut dev);
+    (0.5 * range).max(SPIKE_MADS * sigma).max(1e-12)
+}
+
 /// Finds the glitches of one run (a piece between time gaps), repairs its
 /// inputs, masks its responses, and lists what it found in `report`.
 pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
@@ -399,6 +436,8 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
                 f.kind != GlitchKind::Stuck || !settled_hold(x, f.start, f.len, &others)
             });
             found.retain(|f| f.kind != GlitchKind::ZeroRead || !zero_before_steer(&run.steer, f));
+            let step = steer_step_floor(&run.steer);
+            found.retain(|f| f.kind != GlitchKind::Spike || !at_steer_step(&run.steer, step, f));
         }
         if found.is_empty() {
             continue;

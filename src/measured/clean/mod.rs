@@ -76,8 +76,8 @@ pub(crate) use glitches::{median, median_interval, midpoint_median, quantile};
 pub use held::treat_held;
 pub use inject::inject_glitches;
 pub use pieces::{
-    clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_with, fill_masked,
-    segments, slice, source_file,
+    clean_for_metrics, clean_run, clean_runs, clean_single, clean_single_reported,
+    clean_single_with, fill_masked, fill_masked_by_channel, segments, slice, source_file,
 };
 pub use report::{
     CleaningReport, Glitch, GlitchCounts, GlitchKind, HeldChannel, Piece, RunChannel, SlowKind,

@@ -12,7 +12,7 @@ use super::report::{
 use super::{CleanSettings, GAP_INTERVALS, STANDSTILL_SPEED};
 use crate::error::PieceRefusal;
 use crate::measured::MeasuredRun;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Cuts a run into pieces of `length` seconds, labelled `[1]`, `[2]`, …
 /// (a campaign's `[runs] segment`): the last one joins its predecessor
@@ -259,6 +259,18 @@ pub fn clean_single_with<T>(
     report: &mut CleaningReport,
     mut fits: impl FnMut(&MeasuredRun) -> Result<T, PieceRefusal>,
 ) -> Option<(MeasuredRun, T)> {
+    clean_single_reported(run, settings, report, |p, _| fits(p))
+}
+
+/// [`clean_single_with`] whose `fits` also reads the cleaning found so far
+/// (the glitches of the run, to fill each channel at its own:
+/// [`fill_masked_by_channel`]).
+pub fn clean_single_reported<T>(
+    run: MeasuredRun,
+    settings: &CleanSettings,
+    report: &mut CleaningReport,
+    mut fits: impl FnMut(&MeasuredRun, &CleaningReport) -> Result<T, PieceRefusal>,
+) -> Option<(MeasuredRun, T)> {
     let first = report.pieces.len();
     let file = run.path.display().to_string();
     let pieces = clean_run(run, settings, report);
@@ -268,7 +280,7 @@ pub fn clean_single_with<T>(
     let mut reasons: Vec<Option<PieceRefusal>> = vec![None; pieces.len()];
     let mut chosen = None;
     for &k in &order {
-        match fits(&pieces[k]) {
+        match fits(&pieces[k], report) {
             Ok(v) => {
                 chosen = Some((k, v));
                 break;
@@ -326,6 +338,48 @@ pub fn fill_masked(run: &MeasuredRun) -> MeasuredRun {
     for ch in [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta] {
         if let Some(x) = ch.of_mut(&mut out) {
             repair(&t, x, &bad);
+        }
+    }
+    out.masked.clear();
+    out
+}
+
+/// The run with each response channel interpolated across its own masked
+/// glitches (listed in `glitches`), the mask cleared: a spike of `beta`
+/// leaves the yaw rate and `ay` of its sample as measured (filled in
+/// every channel, the yaw rate of a 10 Hz step read its sample at 1.1 s
+/// from its neighbours where only `beta` had a spike). A masked sample
+/// no listed glitch of this piece accounts for (one that began before
+/// the piece) is filled in every channel, as [`fill_masked`] does.
+pub fn fill_masked_by_channel(run: &MeasuredRun, glitches: &[Glitch]) -> MeasuredRun {
+    const RESPONSES: [RunChannel; 3] = [RunChannel::YawRate, RunChannel::Ay, RunChannel::Beta];
+    let n = run.t.len();
+    let file = source_file(&run.path);
+    let mut bad = vec![vec![false; n]; RESPONSES.len()];
+    let mut covered = vec![false; n];
+    let own = glitches
+        .iter()
+        .filter(|g| g.treatment == Treatment::Masked && source_file(Path::new(&g.run)) == file);
+    for g in own {
+        let Some(c) = RESPONSES.iter().position(|&c| c == g.channel) else {
+            continue;
+        };
+        let i = run.t.partition_point(|&t| t < g.t);
+        if i == n || run.t[i] != g.t {
+            continue;
+        }
+        for k in i..(i + g.samples).min(n) {
+            bad[c][k] = true;
+            covered[k] = true;
+        }
+    }
+    for &i in run.masked.iter().filter(|&&i| !covered[i]) {
+        bad.iter_mut().for_each(|b| b[i] = true);
+    }
+    let mut out = run.clone();
+    for (c, ch) in RESPONSES.iter().enumerate() {
+        if let Some(x) = ch.of_mut(&mut out) {
+            repair(&run.t, x, &bad[c]);
         }
     }
     out.masked.clear();

@@ -96,7 +96,7 @@ pub(crate) fn ay_basis(
     // (the metrics check the steer held over the initial window, to its
     // noise; a first sample's noise is no onset).
     let onset = m.time_zero;
-    let window_end = first + s.pre_window;
+    let window_end = crate::metrics::initial::initial_end(t, &piece.steer, s);
     let before: Vec<usize> = (0..t.len())
         .filter(|&i| !masked[i] && t[i] <= window_end && t[i] < onset)
         .collect();

@@ -71,11 +71,10 @@ fn design_recommends_no_manoeuvre_within_its_uncertainty_and_ranks_the_diagnosis
         )),
         "{text}"
     );
-    // The diagnosis's advice (steady turns at one lateral acceleration
-    // and several speeds; steps at two speeds) is in the family and
-    // ranked.
+    // The diagnosis's advice (a ramp to the limit and a steer step; steps
+    // at two speeds) is in the family and ranked.
     assert!(
-        text.contains("  the diagnosis advises to separate steering_compliance by steady turns then braking or steady turns then accelerating or a constant-radius turn (the best, "),
+        text.contains("  the diagnosis advises to separate steering_compliance by a ramp or steps (the best, "),
         "{text}"
     );
     assert!(

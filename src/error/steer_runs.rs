@@ -15,16 +15,18 @@ pub struct SteerInDegreesRuns {
     pub runs: Vec<(String, f64)>,
     /// The campaign's run files.
     pub of: usize,
+    /// The runs whose steer, judged against their yaw rate, reads in
+    /// radians (others were refused before, or hold no steer to judge).
+    pub radians: usize,
 }
 
 impl SteerInDegreesRuns {
     /// What to do: a fix in the files of the runs in degrees (when all
     /// runs are, the run's own refusal advises `degrees`).
     fn advice(&self) -> String {
-        let rest = self.of.saturating_sub(self.runs.len());
         format!(
-            "The other {} not (their steer is in radians, as it should be), and `degrees = [\"steer\"]` under [runs] would convert every run's steer, theirs too (a campaign has no per-run unit): convert the steer of {} to radians in {} (× π/180 = 0.0174533 from degrees), or leave {} out of the campaign",
-            crate::format::plural(rest, "run does", "runs do"),
+            "{} not (their steer, judged against their yaw rate, is in radians, as it should be), and `degrees = [\"steer\"]` under [runs] would convert every run's steer, theirs too (a campaign has no per-run unit): convert the steer of {} to radians in {} (× π/180 = 0.0174533 from degrees), or leave {} out of the campaign",
+            crate::format::plural(self.radians, "run does", "runs do"),
             if self.runs.len() == 1 { "this run" } else { "these runs" },
             if self.runs.len() == 1 { "its file" } else { "their files" },
             if self.runs.len() == 1 { "it" } else { "them" },

@@ -358,6 +358,19 @@ pub(super) struct Trend {
 /// (the record's end), `noise` the raw noise deviation relative to the
 /// step ([`trend_of_parts`]).
 pub(super) fn trend(t: &[f64], x: &[f64], from: f64, to: f64, noise: f64) -> Option<Trend> {
+    let (means, deviation) = part_means(t, x, (from, to), noise)?;
+    trend_of_parts(means, deviation)
+}
+
+/// The means of `x` over [`TREND_PARTS`] equal parts of [from, to] (times
+/// `t`), with the deviation of two parts' difference for a raw noise
+/// deviation `noise`; none where a part holds no sample.
+pub(super) fn part_means(
+    t: &[f64],
+    x: &[f64],
+    (from, to): (f64, f64),
+    noise: f64,
+) -> Option<([f64; TREND_PARTS], f64)> {
     let part = (to - from) / TREND_PARTS as f64;
     let mut sums = [(0.0, 0usize); TREND_PARTS];
     for (ti, xi) in t.iter().zip(x) {
@@ -372,10 +385,10 @@ pub(super) fn trend(t: &[f64], x: &[f64], from: f64, to: f64, noise: f64) -> Opt
     }
     // A part's mean is uncertain by σ/√n; two parts' difference by √2 as much.
     let fewest = sums.iter().map(|s| s.1).min().unwrap_or(1) as f64;
-    trend_of_parts(
+    Some((
         sums.map(|(s, n)| s / n as f64),
         noise * (2.0 / fewest).sqrt(),
-    )
+    ))
 }
 
 /// The parts a trend is read over: sixths of the steady window and of the

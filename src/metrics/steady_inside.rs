@@ -4,7 +4,7 @@
 //! not settled, whatever its spread. Shares of the step
 //! (dimensionless); times in s.
 
-use super::settling::{trend, Trend, TREND_PARTS};
+use super::settling::{part_means, trend, Trend, TREND_PARTS};
 
 /// How a steady window's response moves inside it, relative to the step:
 /// read where the trend over two windows finds none (a record ending
@@ -45,21 +45,10 @@ pub(super) fn steady_reading(
 /// [`TREND_PARTS`] equal parts less three deviations of two parts'
 /// difference; none where a part holds no sample.
 fn inside(t: &[f64], x: &[f64], from: f64, to: f64, noise: f64) -> Inside {
-    let part = (to - from) / TREND_PARTS as f64;
-    let mut sums = [(0.0, 0usize); TREND_PARTS];
-    for (ti, xi) in t.iter().zip(x) {
-        if *ti >= from && *ti <= to {
-            let k = (((ti - from) / part) as usize).min(TREND_PARTS - 1);
-            sums[k].0 += xi;
-            sums[k].1 += 1;
-        }
-    }
-    if sums.iter().any(|s| s.1 == 0) {
+    let Some((m, deviation)) = part_means(t, x, (from, to), noise) else {
         return Inside::default();
-    }
-    let fewest = sums.iter().map(|s| s.1).min().unwrap_or(1) as f64;
-    let sig = 3.0 * noise * (2.0 / fewest).sqrt();
-    let m = sums.map(|(s, n)| s / n as f64);
+    };
+    let sig = 3.0 * deviation;
     let (lo, hi) = m
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(*v), b.max(*v)));

@@ -11,7 +11,7 @@ use super::*;
 /// 57 296 N/rad per wheel, no load transfer) stepped by 0.01 rad at
 /// 25 m/s at 1 s over `rise_time` s, to 9 s, with `metrics` lines added
 /// under `[metrics]`: simulated at 1 kHz in `dir`, its history.
-fn tester_step(dir: &Path, rise_time: f64, metrics: &str) -> PathBuf {
+pub(crate) fn tester_step(dir: &Path, rise_time: f64, metrics: &str) -> PathBuf {
     fs::write(
         dir.join("linear.toml"),
         "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n",

@@ -7,29 +7,10 @@
 
 use super::*;
 
-/// The tester's linear car (1530 kg, 2315 kg·m², a = 1.11 m, b = 1.67 m,
-/// 57 296 N/rad per wheel, no load transfer) stepped by 0.01 rad at
-/// 25 m/s at 1 s over `rise_time` s, to 9 s: simulated at 1 kHz in `dir`,
-/// its history.
+/// The tester's linear car stepped by 0.01 rad at 25 m/s at 1 s over
+/// `rise_time` s ([`crate::trips_s90_met::tester_step`]), its history.
 fn tester_step(dir: &Path, rise_time: f64) -> PathBuf {
-    fs::write(
-        dir.join("linear.toml"),
-        "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n",
-    )
-    .unwrap();
-    let scenario = format!(
-        "name = \"lin\"\n[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n[tyres]\nfront = \"linear.toml\"\n[model]\nkinematics = \"small-angle\"\nload_transfer = false\n[manoeuvre]\nkind = \"step-steer\"\nspeed = 25.0\nsteer = 0.01\nstart = 1.0\nrise_time = {rise_time}\nend = 9.0\n[simulation]\nstep = 0.001\n"
-    );
-    let path = dir.join("lin.toml");
-    fs::write(&path, scenario).unwrap();
-    let out = dir.join("sim");
-    succeeds(&[
-        "simulate",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    out.join("history.csv")
+    crate::trips_s90_met::tester_step(dir, rise_time, "")
 }
 
 /// `history` (1 kHz) logged every `every` ms from row `from` (ms) on, its

@@ -137,7 +137,11 @@ pub(super) fn in_degrees_refusal(
                 .into_iter()
                 .map(|(_, d)| (d.run, d.median))
                 .collect();
-            let problem = crate::error::SteerInDegreesRuns { runs, of };
+            let problem = crate::error::SteerInDegreesRuns {
+                runs,
+                of,
+                radians: judged_radians,
+            };
             let e = file_error(
                 &path,
                 InputProblem::Campaign(Box::new(CampaignFileProblem::SteerInDegreesRuns(problem))),

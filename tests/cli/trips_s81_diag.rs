@@ -19,7 +19,7 @@ fn campaign(dir: &Path, effects: &str) -> PathBuf {
 
 /// Rewrites column `name` of every run of campaign folder `c` whose file
 /// name passes `which` by `f`.
-fn rewrite(c: &Path, name: &str, which: &dyn Fn(&str) -> bool, f: &dyn Fn(f64) -> f64) {
+pub(crate) fn rewrite(c: &Path, name: &str, which: &dyn Fn(&str) -> bool, f: &dyn Fn(f64) -> f64) {
     for e in fs::read_dir(c.join("runs")).unwrap() {
         let p = e.unwrap().path();
         if !which(&p.file_name().unwrap().to_string_lossy()) {

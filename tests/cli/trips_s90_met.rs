@@ -63,7 +63,7 @@ fn logged(
 }
 
 /// `metrics` on `csv` with `args`: its JSON report and warnings.
-fn measured(csv: &Path, args: &[&str]) -> (serde_json::Value, String) {
+pub(crate) fn measured(csv: &Path, args: &[&str]) -> (serde_json::Value, String) {
     let mut all = vec!["metrics", csv.to_str().unwrap(), "--json"];
     all.extend(args);
     let o = run(&all);

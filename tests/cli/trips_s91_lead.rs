@@ -4,28 +4,7 @@
 
 use super::*;
 
-/// Rewrites column `name` of the run files of `c` (a campaign folder)
-/// whose names pass `which`, by `f`.
-fn rewrite(c: &Path, name: &str, which: &dyn Fn(&str) -> bool, f: &dyn Fn(f64) -> f64) {
-    for e in fs::read_dir(c.join("runs")).unwrap() {
-        let p = e.unwrap().path();
-        if !which(&p.file_name().unwrap().to_string_lossy()) {
-            continue;
-        }
-        let text = fs::read_to_string(&p).unwrap();
-        let mut lines = text.lines();
-        let head = lines.next().unwrap();
-        let k = head.split(',').position(|h| h == name).unwrap();
-        let mut out = format!("{head}\n");
-        for l in lines {
-            let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-            cells[k] = format!("{}", f(cells[k].parse().unwrap()));
-            out.push_str(&cells.join(","));
-            out.push('\n');
-        }
-        fs::write(&p, out).unwrap();
-    }
-}
+use crate::trips_s81_diag::rewrite;
 
 /// Two runs of eight with the steer in degrees and a third cut to 0.58 s:
 /// the steer-in-degrees refusal ended the reading, and the short run was

@@ -40,16 +40,7 @@ fn logged(
     path
 }
 
-/// `metrics` on `csv` with `args`: its JSON report and warnings.
-fn measured(csv: &Path, args: &[&str]) -> (serde_json::Value, String) {
-    let mut all = vec!["metrics", csv.to_str().unwrap(), "--json"];
-    all.extend(args);
-    let o = run(&all);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let w = j["warnings"].to_string();
-    (j, w)
-}
+use crate::trips_s90_met::measured;
 
 /// The number `key` of a metrics report.
 fn num(j: &serde_json::Value, key: &str) -> f64 {

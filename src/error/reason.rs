@@ -257,9 +257,15 @@ pub enum ParamReason {
         /// The unit as written.
         unit: String,
     },
-    /// A range without a positive step or with its end before its start.
-    #[error("a range needs step > 0 and to ≥ from")]
-    BadRange,
+    /// A range's step that is not positive.
+    #[error("a range's step must be positive: it runs upward from `from` to `to`")]
+    RangeStepNotPositive,
+    /// A range's end below its start.
+    #[error("below `from` ({from}): a range runs upward from `from` to `to` (swap them)")]
+    RangeEndBeforeStart {
+        /// The range's start, as written.
+        from: f64,
+    },
     /// A range or list of more than a million values.
     #[error("more than a million values")]
     TooManyValues,

@@ -11,6 +11,7 @@ pub mod fitted_ranges;
 mod limits;
 pub mod paths;
 pub mod rig;
+mod rig_checks;
 mod rig_degrees;
 mod rig_exchanged;
 pub(crate) mod rig_rows;

@@ -10,13 +10,13 @@
 //! `tyre/mod.rs` (a positive slip angle gives a positive `fy`).
 
 use super::columns::Columns;
-use super::rig_rows::Known;
-use crate::error::{
-    InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip, MAX_RIG_FRICTION, MIN_RIG_GRIP,
-    MIN_RIG_SLIP,
+use super::rig_checks::{
+    check_friction, check_grip, check_size, negative_speeds, sample_errors, take_sweeps, Taken,
 };
+pub use super::rig_checks::{MAX_RIG_FORCE, MAX_RIG_MOMENT};
+use super::rig_rows::Known;
+use crate::error::{InputError, InputProblem, RigChannel, SmallSlipSlope, UnitSlip};
 use crate::identify::data::RigData;
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 use std::path::Path;
 
 /// The wheel moments of a rig file, one per sample in file order, if
@@ -42,106 +42,6 @@ pub(crate) fn read_rig_with_moments(path: &Path) -> Result<(RigData, Moments), I
     ));
     refuse_all(path, errors)?;
     Ok((d, [mx, my]))
-}
-
-/// The largest force a rig file may hold, N: 1 MN, three times an airliner
-/// tyre's load; a force scaled by 1e300 is no tyre's and would leave a
-/// fit of NaN.
-pub const MAX_RIG_FORCE: f64 = 1e6;
-
-/// The largest moment a rig file may hold, N·m (1 MN at 0.1 m).
-pub const MAX_RIG_MOMENT: f64 = 1e5;
-
-/// Every value of `column` beyond ±`limit`, refused at its row.
-fn check_size(
-    path: &Path,
-    c: &Columns,
-    column: &'static str,
-    values: Option<&[f64]>,
-    limit: f64,
-    unit: &'static str,
-) -> Vec<InputError> {
-    let values = values.unwrap_or_default();
-    let beyond = values
-        .iter()
-        .enumerate()
-        .filter(|(_, x)| x.is_finite() && x.abs() > limit);
-    beyond
-        .map(|(i, &value)| {
-            let slip = crate::error::UnitSlip::RigBeyondAnyTyre {
-                column,
-                value,
-                limit,
-                unit,
-            };
-            c.error_at(path, i, column, slip.into())
-        })
-        .collect()
-}
-
-/// Every sample of force `column` above [`MAX_RIG_FRICTION`] times its
-/// load (plus a twentieth of the `median` load), refused at its row; a
-/// sample refused for its size or its load's sign is not said twice.
-fn check_friction(
-    path: &Path,
-    c: &Columns,
-    column: &'static str,
-    values: Option<&[f64]>,
-    fz: &[f64],
-    median: f64,
-) -> Vec<InputError> {
-    let values = values.unwrap_or_default();
-    let above = values
-        .iter()
-        .zip(fz)
-        .enumerate()
-        // A negative or oversized load, or an oversized force, is refused
-        // as such already.
-        .filter(|(_, (f, z))| (0.0..=MAX_RIG_FORCE).contains(*z) && f.abs() <= MAX_RIG_FORCE)
-        .filter(|(_, (f, z))| f.abs() > MAX_RIG_FRICTION * (*z + 0.05 * median));
-    above
-        .map(|(i, (&value, &fz))| {
-            let slip = crate::error::UnitSlip::RigForceAboveLoad {
-                column,
-                value,
-                fz,
-                median,
-            };
-            c.error_at(path, i, column, slip.into())
-        })
-        .collect()
-}
-
-/// Refuses a sweep (`slip`, `force`) reaching [`MIN_RIG_SLIP`] whose
-/// largest force is below [`MIN_RIG_GRIP`] of its load, at that row: a
-/// force column in kN beside loads in N fitted to a tyre of friction 0.001
-/// and was written as a good fit.
-fn check_grip(
-    path: &Path,
-    c: &Columns,
-    column: &'static str,
-    (slip, force): (&[f64], &[f64]),
-    fz: &[f64],
-) -> Result<(), InputError> {
-    let reach = slip
-        .iter()
-        .filter(|s| s.is_finite())
-        .fold(0.0_f64, |m, s| m.max(s.abs()));
-    let share = |i: usize| (force[i] / fz[i]).abs();
-    let on_road = (0..force.len()).filter(|&i| fz[i] > 0.0 && force[i].is_finite());
-    let Some(i) = on_road.max_by(|&a, &b| share(a).total_cmp(&share(b))) else {
-        return Ok(());
-    };
-    if reach < MIN_RIG_SLIP || share(i) >= MIN_RIG_GRIP {
-        return Ok(());
-    }
-    let slip = crate::error::UnitSlip::RigForcesBelowGrip {
-        column,
-        value: force[i],
-        fz: fz[i],
-        slip: reach,
-    };
-    Err(c.error_at(path, i, column, slip.into()))
 }
 
 /// Refuses `errors` together, in file order, if any.
@@ -176,168 +76,30 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
     // Every load negative is a convention (SAE's z axis points down), and
     // said so; one negative among positive loads is a bad sample.
     errors.extend(super::rig_exchanged::negative_loads(path, &c, &fz));
-    if let Some(speed) = c.get("speed") {
-        errors.extend(
-            speed
-                .iter()
-                .enumerate()
-                .filter(|(_, v)| v.is_finite() && **v < 0.0)
-                .map(|(i, &value)| {
-                    c.error_at(path, i, "speed", InputProblem::NegativeSpeed { value })
-                }),
-        );
-    }
+    errors.extend(negative_speeds(path, &c));
+    let taken = take_sweeps(path, &mut c, fz, &mut errors)?;
+    errors.extend(sample_errors(path, &c, &taken));
+    refuse_all(path, errors)?;
+    check_units(path, &c, &taken)?;
+    check_shapes(path, &c, &taken)?;
+    let pressure = match c.take_optional("pressure") {
+        Some(p) => Some(checked_pressure(path, &c, p)?),
+        None => None,
+    };
+    let Taken {
+        fz,
+        lateral,
+        longitudinal,
+        camber,
+        mz,
+    } = taken;
     let n = fz.len();
-    let lateral = match (c.take_optional("alpha"), c.take_optional("fy")) {
-        (Some(a), Some(f)) => Some((a, f)),
-        _ => None,
-    };
-    let longitudinal = match (c.take_optional("kappa"), c.take_optional("fx")) {
-        (Some(k), Some(f)) => Some((k, f)),
-        _ => None,
-    };
-    if lateral.is_none() && longitudinal.is_none() {
-        // With the header's slips of spelling (`Fy` for `fy`) and the bad
-        // cells, in one run.
-        let no_sweep = || {
-            InputError::problem(
-                path,
-                InputProblem::NoSweep {
-                    header: c.header.clone(),
-                },
-            )
-        };
-        errors.push(no_sweep());
-        return Err(InputError::all_in_file_order(path, errors).unwrap_or_else(no_sweep));
-    }
-    let camber = c.take_optional("camber");
-    // Angles in degrees are the commonest slip of a hand-made file: a slip
-    // angle past ±90° or a camber past ±45° is not a tyre test in radians.
-    let angles = [
-        ("alpha", lateral.as_ref().map(|l| &l.0), FRAC_PI_2),
-        ("camber", camber.as_ref(), FRAC_PI_4),
-    ];
-    for (name, values, limit) in angles {
-        let Some(values) = values else { continue };
-        let beyond = values
-            .iter()
-            .enumerate()
-            .filter(|(_, v)| v.is_finite() && v.abs() > limit);
-        errors.extend(beyond.map(|(i, &value)| {
-            let problem = InputProblem::AngleInDegrees {
-                column: name,
-                value,
-                limit,
-            };
-            c.error_at(path, i, name, problem)
-        }));
-    }
-    // A slip ratio in percent reads as one past a locked wheel's.
-    let kappa = longitudinal
-        .as_ref()
-        .map(|l| l.0.as_slice())
-        .unwrap_or_default();
-    errors.extend(
-        kappa
-            .iter()
-            .enumerate()
-            .filter(|(_, v)| v.abs() > 1.0)
-            .map(|(i, &value)| {
-                c.error_at(path, i, "kappa", InputProblem::SlipRatioInPercent { value })
-            }),
-    );
-    let mz = c.take_optional("mz");
-    let sized = [
-        ("fz", Some(&fz), MAX_RIG_FORCE, "N"),
-        ("fy", lateral.as_ref().map(|l| &l.1), MAX_RIG_FORCE, "N"),
-        (
-            "fx",
-            longitudinal.as_ref().map(|l| &l.1),
-            MAX_RIG_FORCE,
-            "N",
-        ),
-        ("mz", mz.as_ref(), MAX_RIG_MOMENT, "N·m"),
-    ];
-    for (column, values, limit, unit) in sized {
-        errors.extend(check_size(
-            path,
-            &c,
-            column,
-            values.map(Vec::as_slice),
-            limit,
-            unit,
-        ));
-    }
-    refuse_all(path, errors)?;
-    check_load_unit(path, &c, &fz)?;
-    super::rig_rows::refuse_loads_in_kn(path, &c, &fz)?;
-    // Before each sample's force is judged against its load: loads in lbf
-    // make every force look too large, and are said as what they are.
-    for (column, sweep) in [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())] {
-        let sweep = sweep.map(|(s, f)| (s.as_slice(), f.as_slice()));
-        sweep.map_or(Ok(()), |s| {
-            super::rig_scale::refuse_loads_in_lbf(path, &c, column, s, &fz)
-        })?;
-    }
-    // After the loads' units: a lone cell in kN makes its force look a
-    // hundred times the load, and is said as what it is.
-    let median = crate::measured::clean::median(&mut fz.clone());
-    let forces = [
-        ("fy", lateral.as_ref().map(|l| l.1.as_slice())),
-        ("fx", longitudinal.as_ref().map(|l| l.1.as_slice())),
-    ];
-    let mut errors = Vec::new();
-    for (column, values) in forces {
-        errors.extend(check_friction(path, &c, column, values, &fz, median));
-    }
-    refuse_all(path, errors)?;
-    if let Some(mz) = &mz {
-        // Before the moment's arm: `fy` and `mz` exchanged give an arm
-        // of N·mm's size, and are said as what they are.
-        if let Some((alpha, fy)) = &lateral {
-            let sweep = (alpha.as_slice(), fy.as_slice());
-            super::rig_rows::refuse_swapped_fy_mz(path, &c, sweep, mz, &fz, median)?;
-        }
-        super::rig_rows::refuse_moments_beyond_any_arm(path, &c, mz, &fz, median)?;
-        let alpha = lateral.as_ref().map_or(&[][..], |l| l.0.as_slice());
-        super::rig_scale::refuse_moments_in_knm(path, &c, alpha, mz, &fz)?;
-    }
-    if let Some((alpha, fy)) = &lateral {
-        let kappa = longitudinal.as_ref().map(|l| l.0.as_slice());
-        super::rig_degrees::refuse_alpha_in_degrees(path, &c, (alpha, fy), kappa, &fz)?;
-    }
-    let sweeps = [("fy", lateral.as_ref()), ("fx", longitudinal.as_ref())];
-    for (column, sweep) in sweeps {
-        if let Some((slip, force)) = sweep {
-            check_grip(path, &c, column, (slip, force), &fz)?;
-        }
-    }
-    check_signs(
-        path,
-        &c,
-        lateral.as_ref().map(|(a, f)| (a.as_slice(), f.as_slice())),
-        mz.as_deref(),
-        longitudinal
-            .as_ref()
-            .map(|(k, f)| (k.as_slice(), f.as_slice())),
-    )?;
     let (alpha, fy) = lateral.unwrap_or_else(|| (vec![0.0; n], vec![f64::NAN; n]));
     let d = RigData {
         camber_measured: camber.is_some(),
         camber: camber.unwrap_or_else(|| vec![0.0; n]),
         mz,
-        pressure: match c.take_optional("pressure") {
-            Some(p) => {
-                if let Some((i, slip)) = pressure_not_in_pa(&p, None) {
-                    return Err(c.error_at(path, i, "pressure", slip.into()));
-                }
-                // One cell in kPa among Pa: refused at it, not dropped as
-                // a sample between levels.
-                super::rig_rows::refuse_rows_not_in_pa(path, &c, &p, None)?;
-                Some(p)
-            }
-            None => None,
-        },
+        pressure,
         speed: c.take_optional("speed"),
         longitudinal,
         fz,
@@ -345,6 +107,71 @@ fn read_rig_columns(path: &Path, moments: &[&str]) -> Result<(RigData, Columns),
         fy,
     };
     Ok((d, c))
+}
+
+/// The units the columns were written in: loads in kN or lbf, a lone force
+/// in kN, moments exchanged with forces or in kN·m, slip angles in degrees.
+fn check_units(path: &Path, c: &Columns, t: &Taken) -> Result<(), InputError> {
+    let fz = &t.fz;
+    check_load_unit(path, c, fz)?;
+    super::rig_rows::refuse_loads_in_kn(path, c, fz)?;
+    // Before each sample's force is judged against its load: loads in lbf
+    // make every force look too large, and are said as what they are.
+    for (column, sweep) in [("fy", t.lateral()), ("fx", t.longitudinal())] {
+        sweep.map_or(Ok(()), |s| {
+            super::rig_scale::refuse_loads_in_lbf(path, c, column, s, fz)
+        })?;
+    }
+    // After the loads' units: a lone cell in kN makes its force look a
+    // hundred times the load, and is said as what it is.
+    let median = crate::measured::clean::median(&mut fz.clone());
+    let forces = [
+        ("fy", t.lateral().map(|l| l.1)),
+        ("fx", t.longitudinal().map(|l| l.1)),
+    ];
+    let mut errors = Vec::new();
+    for (column, values) in forces {
+        errors.extend(check_friction(path, c, column, values, fz, median));
+    }
+    refuse_all(path, errors)?;
+    if let Some(mz) = &t.mz {
+        // Before the moment's arm: `fy` and `mz` exchanged give an arm
+        // of N·mm's size, and are said as what they are.
+        if let Some(sweep) = t.lateral() {
+            super::rig_rows::refuse_swapped_fy_mz(path, c, sweep, mz, fz, median)?;
+        }
+        super::rig_rows::refuse_moments_beyond_any_arm(path, c, mz, fz, median)?;
+        let alpha = t.lateral().map_or(&[][..], |l| l.0);
+        super::rig_scale::refuse_moments_in_knm(path, c, alpha, mz, fz)?;
+    }
+    if let Some((alpha, fy)) = &t.lateral {
+        let kappa = t.longitudinal().map(|l| l.0);
+        super::rig_degrees::refuse_alpha_in_degrees(path, c, (alpha, fy), kappa, fz)?;
+    }
+    Ok(())
+}
+
+/// The sweeps' shapes: grip no tyre has, and the signs of the curves.
+fn check_shapes(path: &Path, c: &Columns, t: &Taken) -> Result<(), InputError> {
+    let sweeps = [("fy", t.lateral.as_ref()), ("fx", t.longitudinal.as_ref())];
+    for (column, sweep) in sweeps {
+        if let Some((slip, force)) = sweep {
+            check_grip(path, c, column, (slip, force), &t.fz)?;
+        }
+    }
+    check_signs(path, c, t.lateral(), t.mz.as_deref(), t.longitudinal())
+}
+
+/// A pressure column in pascals, or its refusal at the first cell in
+/// another unit.
+fn checked_pressure(path: &Path, c: &Columns, p: Vec<f64>) -> Result<Vec<f64>, InputError> {
+    if let Some((i, slip)) = pressure_not_in_pa(&p, None) {
+        return Err(c.error_at(path, i, "pressure", slip.into()));
+    }
+    // One cell in kPa among Pa: refused at it, not dropped as a sample
+    // between levels.
+    super::rig_rows::refuse_rows_not_in_pa(path, c, &p, None)?;
+    Ok(p)
 }
 
 /// The least median load and pressure of a tyre test: defined beside the

@@ -196,8 +196,17 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
         Values::Units(l) => (l.values.clone(), scale(&l.unit)?),
         Values::Range(r) => {
             let k = scale(&r.unit)?;
-            if r.step.is_nan() || r.step <= 0.0 || r.to.is_nan() || r.to < r.from {
-                return Err(err(r.step, ParamReason::BadRange));
+            // Each at its own key, with its own value.
+            let at = |field: &str, value: f64, why: ParamReason| {
+                let e = ParamError::new(&format!("{key}.{field}"), value, why);
+                param_error(src, None, e)
+            };
+            if r.step.is_nan() || r.step <= 0.0 {
+                return Err(at("step", r.step, ParamReason::RangeStepNotPositive));
+            }
+            if r.to.is_nan() || r.to < r.from {
+                let why = ParamReason::RangeEndBeforeStart { from: r.from };
+                return Err(at("to", r.to, why));
             }
             let n = ((r.to - r.from) / r.step + 1e-9).floor() as usize;
             if n > 1_000_000 {

@@ -82,10 +82,17 @@ pub(crate) fn distance(a: (f64, f64), reference: (f64, f64)) -> f64 {
     ((a.0 - reference.0) / reference.0).hypot((a.1 - reference.1) / reference.1)
 }
 
-/// The rear stiffness that gives Er = `target` at front stiffness `kf`, by
-/// secant iteration from `kr0` (simulations); `None` if it does not converge.
-pub(crate) fn solve_rear(study: &Study, kf: f64, kr0: f64, target: f64, tol: f64) -> Option<f64> {
-    let f = |kr: f64| study.er(kf, kr) - target;
+/// The rear stiffness that gives `metric` = `target` at front stiffness
+/// `kf`, by secant iteration from `kr0` (simulations); `None` if it does not
+/// converge.
+pub(crate) fn solve_rear(
+    study: &Study,
+    metric: Metric,
+    kf: f64,
+    kr0: f64,
+    (target, tol): (f64, f64),
+) -> Option<f64> {
+    let f = |kr: f64| study.value(metric, kf, kr) - target;
     let (mut x0, mut x1) = (kr0, kr0 * 1.02);
     let (mut f0, mut f1) = (f(x0), f(x1));
     for _ in 0..30 {
@@ -107,12 +114,13 @@ pub(crate) fn solve_rear(study: &Study, kf: f64, kr0: f64, target: f64, tol: f64
     None
 }
 
-/// The best combination on the Er = `target` curve: closest to `reference`.
-/// Starts from the closest curve point of the map and refines over k1 within
-/// ± `span` by golden-section search with k2 solved by simulation.
-/// Returns (k1, k2, Er simulated there).
+/// The best combination on the `metric` = `target` curve: closest to
+/// `reference`. Starts from the closest curve point of the map and refines
+/// over k1 within ± `span` by golden-section search with k2 solved by
+/// simulation. Returns (k1, k2, the metric simulated there).
 pub(crate) fn best_on_curve(
     study: &Study,
+    metric: Metric,
     curve: &[(f64, f64)],
     reference: (f64, f64),
     target: f64,
@@ -123,9 +131,10 @@ pub(crate) fn best_on_curve(
         .min_by(|a, b| distance(**a, reference).total_cmp(&distance(**b, reference)))?;
     let tol = 1e-6 * target.abs().max(1e-9);
     let cost = |kf: f64| {
-        solve_rear(study, kf, start.1, target, tol).map_or((f64::INFINITY, f64::NAN), |kr| {
-            (distance((kf, kr), reference), kr)
-        })
+        solve_rear(study, metric, kf, start.1, (target, tol))
+            .map_or((f64::INFINITY, f64::NAN), |kr| {
+                (distance((kf, kr), reference), kr)
+            })
     };
     let (mut lo, mut hi) = (start.0 - span, start.0 + span);
     let g = 0.5 * (5f64.sqrt() - 1.0);
@@ -139,5 +148,5 @@ pub(crate) fn best_on_curve(
     }
     let kf = 0.5 * (lo + hi);
     let (d, kr) = cost(kf);
-    d.is_finite().then(|| (kf, kr, study.er(kf, kr)))
+    d.is_finite().then(|| (kf, kr, study.value(metric, kf, kr)))
 }

@@ -83,7 +83,13 @@ impl Study {
     /// Er of one combination (NaN where the response is no handling
     /// response, [`Response`]).
     pub fn er(&self, k_front: f64, k_rear: f64) -> f64 {
-        Metric::Er.of_sample(&self.evaluate(k_front, k_rear))
+        self.value(Metric::Er, k_front, k_rear)
+    }
+
+    /// `metric` of one combination (NaN where the response is no handling
+    /// response, [`Response`]).
+    pub fn value(&self, metric: Metric, k_front: f64, k_rear: f64) -> f64 {
+        metric.of_sample(&self.evaluate(k_front, k_rear))
     }
 
     /// Simulates every combination in parallel; `progress` counts them.

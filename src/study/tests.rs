@@ -90,12 +90,13 @@ fn inverse_answers_resimulate_to_the_target() {
         assert!((e - target).abs() < 0.01 * target, "{p:?}: {e}");
     }
     // The solved rear stiffness meets the target to the solver's tolerance.
-    let kr = solve_rear(&st, 450.0 * DEG, 500.0 * DEG, target, 1e-7).unwrap();
+    let kr = solve_rear(&st, Metric::Er, 450.0 * DEG, 500.0 * DEG, (target, 1e-7)).unwrap();
     assert!((st.er(450.0 * DEG, kr) - target).abs() <= 1e-7);
     // The refined best point is on the curve and no farther from the
     // reference than any interpolated curve point.
     let reference = (500.0 * DEG, 540.0 * DEG);
-    let (kf, kr, e) = best_on_curve(&st, &curve, reference, target, 100.0 * DEG).unwrap();
+    let (kf, kr, e) =
+        best_on_curve(&st, Metric::Er, &curve, reference, target, 100.0 * DEG).unwrap();
     assert!((e - target).abs() <= 1e-6 * target);
     let best_curve = curve
         .iter()

@@ -82,7 +82,7 @@ fn wang_liang_study_writes_map_rbf_and_inverse() {
     let inv: serde_json::Value = read_json(&out.path().join("inverse.json"));
     for t in inv["targets"].as_array().unwrap() {
         let target = t["target"].as_f64().unwrap();
-        let er = t["best"]["er_resimulated"].as_f64().unwrap();
+        let er = t["best"]["resimulated"].as_f64().unwrap();
         assert!((er - target).abs() <= 1e-5 * target, "{er} vs {target}");
     }
     assert!(fs::metadata(out.path().join("maps.png")).unwrap().len() > 10_000);

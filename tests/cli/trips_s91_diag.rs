@@ -134,7 +134,7 @@ fn a_yaw_inertia_in_a_verdict_names_the_mass_that_would_look_the_same() {
 }
 
 /// The RGB pixels of the PNG `path`, its width and height.
-fn png_pixels(path: &Path) -> (Vec<u8>, usize, usize) {
+pub(crate) fn png_pixels(path: &Path) -> (Vec<u8>, usize, usize) {
     let mut decoder = png::Decoder::new(fs::File::open(path).unwrap());
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
     let mut reader = decoder.read_info().unwrap();

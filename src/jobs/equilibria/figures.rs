@@ -11,6 +11,7 @@ use crate::equilibria::{Condition, Equilibrium, Kind, SearchBox};
 use crate::error::Error;
 use crate::report::branches::{self, At};
 use crate::report::plot::{Figure, Panel, Series, Style};
+use crate::report::series::INK;
 use crate::report::stability::{self, Class};
 use crate::vehicle::VehicleModel;
 use std::path::Path;
@@ -241,6 +242,7 @@ pub fn phase_portrait(
         }
     }
     series.extend(separatrices(model, c, bx, eqs));
+    series.extend(searched(search));
     series.extend(equilibrium_markers(eqs, bx));
     let panel = Panel {
         title: format!(
@@ -262,6 +264,19 @@ pub fn phase_portrait(
         row_height: 800,
     }
     .save(path)
+}
+
+/// The search box's yaw-rate bounds as dashed lines across the portrait,
+/// named once in the key: the portrait draws twice its range, and beyond
+/// them no equilibrium was searched for.
+fn searched(search: &SearchBox) -> [Series; 2] {
+    let b = search.beta_max.to_degrees();
+    let r = search.yaw_rate_max.to_degrees();
+    let label = format!("equilibria searched within |r| ≤ {r:.1} deg/s");
+    [r, -r].map(|y| {
+        let label = if y > 0.0 { label.as_str() } else { "" };
+        Series::line(label, &[-b, b], &[y, y], INK).styled(Style::Dashed)
+    })
 }
 
 /// The vector field as unit arrows in box-scaled units on a 21 × 21 grid.

@@ -264,6 +264,12 @@ impl EquilibriaReport {
                 }
             ),
         ];
+        let unlimited = crate::jobs::simulate::unlimited::friction_ignored;
+        if let Some(note) = unlimited(&sw.model, &sw.grid.friction) {
+            out.push(format!(
+                "  note: {note}, so every friction of the sweep gives the same equilibria"
+            ));
+        }
         if s.conditions_with_continua > 0 {
             out.push(format!(
                 "  {} a continuum of equilibria (both axles sliding at constant force: \

@@ -83,6 +83,11 @@ pub(super) fn checks(sc: &Scenario, h: &TimeHistory) -> Said {
     said.warnings.extend(on_two_wheels(h));
     said.warnings.extend(steer_rate(&sc.manoeuvre));
     said.warnings.extend(tir_friction(sc));
+    said.warnings.extend(super::unlimited::run_beyond_road(
+        &sc.model,
+        sc.integrator.friction,
+        &h.ay,
+    ));
     let [front, rear] = super::nominal_load::far_from_nominal(sc);
     said.warnings.extend(per_axle_tir(front, rear));
     said.warnings.extend(variance_window(sc));

@@ -12,6 +12,7 @@ pub(crate) mod nominal_load;
 mod straight;
 mod transient;
 mod unfitted;
+pub(crate) mod unlimited;
 
 use super::metrics::{metric_lines, UNITS};
 use crate::diagnose::campaign::StatedUncertainty;

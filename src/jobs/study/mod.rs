@@ -101,8 +101,8 @@ pub struct BestAnswer {
     pub k_front: f64,
     /// Rear stiffness.
     pub k_rear: f64,
-    /// Er there, simulated, s.
-    pub er_resimulated: f64,
+    /// The target's metric there, simulated (its unit: `study.csv`'s).
+    pub resimulated: f64,
     /// Relative distance to the current tyres.
     pub distance_to_reference: f64,
 }
@@ -122,14 +122,16 @@ pub struct RbfAnswer {
     pub distance_to_reference: f64,
 }
 
-/// What an Er target has beyond a region: its curve and best points.
+/// What a target has beyond a region: its curve, the best point on it and,
+/// for Er with a network, the network's answer.
 #[derive(Debug, Clone, Serialize)]
-pub struct ErAnswer {
+pub struct CurveAnswer {
     /// The iso-curve on the map.
     pub curve: Vec<[f64; 2]>,
     /// The best combination on it (`None`: not reached on the map).
     pub best: Option<BestAnswer>,
-    /// The network's answer, with a network.
+    /// The network's answer, for an Er target with a network (Wang &
+    /// Liang's network maps Er alone).
     pub rbf: Option<RbfAnswer>,
 }
 
@@ -144,9 +146,9 @@ pub struct TargetReport {
     pub tolerance: f64,
     /// Map points that meet it and every constraint.
     pub region: Vec<[f64; 2]>,
-    /// Er targets: the curve and the best points.
+    /// The curve and the best points.
     #[serde(flatten)]
-    pub er: Option<ErAnswer>,
+    pub curve: CurveAnswer,
 }
 
 /// `inverse.json`.
@@ -388,39 +390,39 @@ fn answer(
         let mut all = vec![t];
         all.extend(constraints.iter().copied());
         let region = map.region(&all).iter().map(per_unit).collect();
-        let er = (t.metric == Metric::Er).then(|| {
-            let curve = map.iso_curve(t.metric, t.value);
-            let span = 2.0 * (input.front[1] - input.front[0]);
-            let best =
-                best_on_curve(st, &curve, reference, t.value, span).map(|(kf, kr, e)| BestAnswer {
+        let curve = map.iso_curve(t.metric, t.value);
+        let span = 2.0 * (input.front[1] - input.front[0]);
+        let best =
+            best_on_curve(st, t.metric, &curve, reference, t.value, span).map(|(kf, kr, e)| {
+                BestAnswer {
                     k_front: kf / k,
                     k_rear: kr / k,
-                    er_resimulated: e,
+                    resimulated: e,
                     distance_to_reference: distance((kf, kr), reference),
-                });
-            let rbf = net.map(|net| {
-                let p = net.predict(t.value);
-                let e = st.er(p[0], p[1]);
-                RbfAnswer {
-                    k_front: p[0] / k,
-                    k_rear: p[1] / k,
-                    er_resimulated: e,
-                    error_percent: 100.0 * (e - t.value) / t.value,
-                    distance_to_reference: distance((p[0], p[1]), reference),
                 }
             });
-            ErAnswer {
-                curve: curve.iter().map(per_unit).collect(),
-                best,
-                rbf,
+        let rbf = net.filter(|_| t.metric == Metric::Er).map(|net| {
+            let p = net.predict(t.value);
+            let e = st.er(p[0], p[1]);
+            RbfAnswer {
+                k_front: p[0] / k,
+                k_rear: p[1] / k,
+                er_resimulated: e,
+                error_percent: 100.0 * (e - t.value) / t.value,
+                distance_to_reference: distance((p[0], p[1]), reference),
             }
         });
+        let curve = CurveAnswer {
+            curve: curve.iter().map(per_unit).collect(),
+            best,
+            rbf,
+        };
         targets.push(TargetReport {
             metric: t.metric,
             target: t.value,
             tolerance: t.tolerance,
             region,
-            er,
+            curve,
         });
     }
     Ok(InverseReport {
@@ -492,8 +494,8 @@ impl StudyReport {
         if let Some(inv) = &self.inverse {
             write_json_sorted(&files[4], inv)?;
             for t in &inv.targets {
-                if let Some(er) = &t.er {
-                    curves.push((t.target, &er.curve[..]));
+                if t.metric == Metric::Er {
+                    curves.push((t.target, &t.curve.curve[..]));
                 }
             }
         }
@@ -506,29 +508,42 @@ impl StudyReport {
 
 /// The lines of one answered target.
 fn target_lines(t: &TargetReport, reference: [f64; 2], u: StiffnessUnit) -> Vec<String> {
+    let n = t.region.len();
     let mut out = vec![format!(
-        "  {} = {} ± {}: {} map points meet it and every constraint",
+        "  {} = {} ± {}: {n} map {} every constraint",
         t.metric,
         t.target,
         t.tolerance,
-        t.region.len()
+        if n == 1 {
+            "point meets it and"
+        } else {
+            "points meet it and"
+        },
     )];
-    let Some(er) = &t.er else {
-        return out;
+    // Er keeps the paper's name; the other metrics their column's.
+    let name = match t.metric {
+        Metric::Er => "Er".to_string(),
+        m => m.to_string(),
     };
+    let er = &t.curve;
     out.push(match &er.best {
         Some(b) => format!(
-            "  Er = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with Er {:.6} (re-simulated), distance {:.3}",
+            "  {name} = {}: a curve of {} map points; closest to ({:.0}, {:.0}) {u}: ({:.1}, {:.1}) with {name} {:.6} (re-simulated), distance {:.3}",
             t.target,
             er.curve.len(),
             reference[0],
             reference[1],
             b.k_front,
             b.k_rear,
-            b.er_resimulated,
+            b.resimulated,
             b.distance_to_reference
         ),
-        None => format!("  Er = {}: not reached on the map", t.target),
+        None if er.curve.is_empty() => format!("  {name} = {}: not reached on the map", t.target),
+        None => format!(
+            "  {name} = {}: a curve of {} map points, but no point on it re-simulates to the target (the secant in the rear stiffness did not converge from the map's closest point)",
+            t.target,
+            er.curve.len()
+        ),
     });
     if let Some(r) = &er.rbf {
         out.push(format!(

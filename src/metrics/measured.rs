@@ -12,9 +12,8 @@ use super::step_shape::{check_steer_is_a_step, check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
 use crate::error::{InputError, InputProblem, PieceRefusal, RefusedPiece};
 use crate::measured::clean::{
-    clean_single_reported, fill_masked_by_channel, median, median_interval, quantile, CleanSettings,
-    CleaningReport,
-    GlitchKind,
+    clean_single_reported, fill_masked_by_channel, median, median_interval, quantile,
+    CleanSettings, CleaningReport, GlitchKind,
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;

@@ -64,8 +64,15 @@ fn a_7_hz_logs_steer_held_at_zero_before_its_step_is_no_zero_read() {
     let (j, w) = measured(&csv, &[]);
     let gain = j["yaw_rate_gain"].as_f64().unwrap();
     let exact = closed_form_gain();
-    assert!((gain / exact - 1.0).abs() < 0.002, "{gain} against {exact}: {w}");
-    assert!(j["cleaning"]["glitches"].as_array().unwrap().is_empty(), "{}", j["cleaning"]);
+    assert!(
+        (gain / exact - 1.0).abs() < 0.002,
+        "{gain} against {exact}: {w}"
+    );
+    assert!(
+        j["cleaning"]["glitches"].as_array().unwrap().is_empty(),
+        "{}",
+        j["cleaning"]
+    );
 }
 
 /// The 12.5 Hz ramped step's E_r was quoted "from −10 % to +13 %" from
@@ -121,5 +128,8 @@ fn slow_logs_say_what_their_rate_cannot_resolve_whatever_the_placing() {
             w[at.saturating_sub(30)..at].to_string()
         })
         .collect();
-    assert!(advice.iter().all(|a| a.ends_with("log at 50 Hz ")), "{advice:?}");
+    assert!(
+        advice.iter().all(|a| a.ends_with("log at 50 Hz ")),
+        "{advice:?}"
+    );
 }

@@ -136,7 +136,8 @@ const RESPONSE_WITHIN: f64 = 10.0;
 /// log was told "log at 9 Hz or faster" at one placing and "at 11 Hz" at
 /// the next, and at 10 Hz an instant step still reads −23 … +40 %).
 fn finer(kind: &StepKind, hz: f64) -> String {
-    let within = |b: &&Bias| b.response.0.abs() <= RESPONSE_WITHIN && b.response.1.abs() <= RESPONSE_WITHIN;
+    let within =
+        |b: &&Bias| b.response.0.abs() <= RESPONSE_WITHIN && b.response.1.abs() <= RESPONSE_WITHIN;
     match kind.rows.iter().rev().find(within) {
         Some(b) if b.hz > hz * (1.0 + 1e-3) => format!(
             "log at {} Hz or faster to read it finer (the {} read it {} there)",

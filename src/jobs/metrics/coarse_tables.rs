@@ -41,7 +41,10 @@ fn scenario(dir: &Path, rise_time: f64) -> std::path::PathBuf {
 fn span(reads: &[f64], exact: f64) -> (f64, f64) {
     let pc = |x: f64| (100.0 * (x / exact - 1.0)).round() + 0.0;
     let lo = reads.iter().map(|&x| pc(x)).fold(f64::INFINITY, f64::min);
-    let hi = reads.iter().map(|&x| pc(x)).fold(f64::NEG_INFINITY, f64::max);
+    let hi = reads
+        .iter()
+        .map(|&x| pc(x))
+        .fold(f64::NEG_INFINITY, f64::max);
     (lo, hi)
 }
 
@@ -76,11 +79,7 @@ fn measured(kind: &StepKind, rise_time: f64) -> Vec<Bias> {
             let mut t = (p as f64 + 0.5) / PLACINGS as f64 * dt;
             while t <= 9.0 {
                 let c = [&h.steer, &h.speed, &h.beta, &h.yaw_rate, &h.ay].map(|x| at(x, t));
-                let _ = writeln!(
-                    csv,
-                    "{:.6},{},{},{},{},{}",
-                    t, c[0], c[1], c[2], c[3], c[4]
-                );
+                let _ = writeln!(csv, "{:.6},{},{},{},{},{}", t, c[0], c[1], c[2], c[3], c[4]);
                 t += dt;
             }
             let path = dir.path().join(format!("log_{}_{p}.csv", row.hz));

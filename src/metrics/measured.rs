@@ -322,7 +322,10 @@ fn small_gain(m: &StepMetrics, u: f64) -> Option<String> {
 fn check_steer_units(run: &MeasuredRun, min_speed: f64) -> Result<(), InputError> {
     let wheelbase = Wheelbase::Unknown;
     let Some(y) = yaw_per_neutral(run, wheelbase.for_median(), min_speed) else {
-        return Ok(());
+        return match super::moving_steer::steer_in_degrees(run, min_speed) {
+            Some(problem) => Err(InputError::problem(&run.path, problem)),
+            None => Ok(()),
+        };
     };
     match steer_problem(&y, wheelbase) {
         Some(problem) => Err(InputError::problem(&run.path, problem)),

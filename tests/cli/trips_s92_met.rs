@@ -133,3 +133,48 @@ fn slow_logs_say_what_their_rate_cannot_resolve_whatever_the_placing() {
         "{advice:?}"
     );
 }
+
+/// A frequency sweep of ±1° of road-wheel steer at 80 km/h (0.2 to 2 Hz),
+/// its yaw rate 5.6 × the steer 0.05 s late, with the steer column in
+/// degrees (or in radians), written to `dir/name`.
+fn sweep(dir: &Path, name: &str, degrees: bool) -> PathBuf {
+    let mut out = String::from("t,speed,steer,yaw_rate\n");
+    let phase = |t: f64| 2.0 * std::f64::consts::PI * (0.2 * t + 0.045 * t * t);
+    for k in 0..=2000 {
+        let t = k as f64 * 0.01;
+        let steer = |t: f64| 1f64.to_radians() * phase(t).sin();
+        let logged = if degrees {
+            steer(t).to_degrees()
+        } else {
+            steer(t)
+        };
+        out.push_str(&format!(
+            "{t:.2},22.2222,{logged},{}\n",
+            5.6 * steer(t - 0.05)
+        ));
+    }
+    let path = dir.join(name);
+    fs::write(&path, out).unwrap();
+    path
+}
+
+/// A sweep whose steer is in degrees (±1° read as ±1 rad, 57°) was
+/// refused only as "no step steer in this record", never asked about its
+/// units: the steer-units check judges held steer, and a sweep holds
+/// none. Now a moving steer beyond 0.5 rad whose yaw rate is far below a
+/// neutral car's gets the refusal a step in degrees gets; the same sweep
+/// in radians does not.
+#[test]
+fn a_sweep_with_its_steer_in_degrees_is_asked_about_its_units() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = sweep(dir.path(), "sweep_deg.csv", true);
+    let o = run(&["metrics", csv.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!o.status.success(), "{e}");
+    assert!(e.contains("is `steer` in degrees (57×)"), "{e}");
+    assert!(e.contains("`metrics --degrees steer`"), "{e}");
+    let csv = sweep(dir.path(), "sweep_rad.csv", false);
+    let o = run(&["metrics", csv.to_str().unwrap()]);
+    let e = stderr(&o);
+    assert!(!e.contains("in degrees (57×)"), "{e}");
+}

@@ -4,13 +4,13 @@
 //! such a run by, and `metrics` refused a sweep spanning 117° only as "no
 //! step steer", never asking about its units. Judged by the median of
 //! `r·l/(u·δ)` where the steer is large (at least half its 99th
-//! percentile), against the same [`STEER_IN_DEGREES`] as a held steer:
+//! percentile), against the same limit as a held steer (`measured.rs`'s
+//! `STEER_IN_DEGREES`, 0.1, with its longest wheelbase, 5 m):
 //! in degrees a car's ratio is 57× smaller (0.003–0.02), where in radians
 //! the yaw rate lags the steer by well under a quarter period near its
 //! peaks up to a few hertz, and the ratio stays near the car's gain.
 //! Units: SI, rad.
 
-use super::measured::{neutral_steer, LONGEST_WHEELBASE, STEER_IN_DEGREES};
 use crate::error::InputProblem;
 use crate::measured::clean::{midpoint_median, quantile};
 use crate::measured::MeasuredRun;
@@ -21,10 +21,15 @@ pub const ROAD_WHEEL_MOST: f64 = 0.5;
 
 /// The refusal of a run at speed (at least `min_speed` and 5 m/s) whose
 /// steer's 99th percentile of |δ| passes [`ROAD_WHEEL_MOST`] and whose
-/// `r·l/(u·δ)` (l = [`LONGEST_WHEELBASE`], so that no car's is refused)
-/// has a median within ±[`STEER_IN_DEGREES`] over the samples steered by
-/// at least half that percentile: the refusal a step in degrees gets.
-pub fn steer_in_degrees(run: &MeasuredRun, min_speed: f64) -> Option<InputProblem> {
+/// `r·l/(u·δ)` (`l` = `wheelbase`, m: the longest a car has, so that no
+/// car's is refused) has a median within ±`limit` over the samples steered
+/// by at least half that percentile: the refusal a step in degrees gets.
+pub fn steer_in_degrees(
+    run: &MeasuredRun,
+    min_speed: f64,
+    wheelbase: f64,
+    limit: f64,
+) -> Option<InputProblem> {
     let at_speed: Vec<usize> = (0..run.t.len())
         .filter(|&i| run.speed[i] >= min_speed.max(5.0) && run.steer[i].is_finite())
         .collect();
@@ -37,14 +42,14 @@ pub fn steer_in_degrees(run: &MeasuredRun, min_speed: f64) -> Option<InputProble
     let mut q: Vec<f64> = at_speed
         .iter()
         .filter(|&&i| run.steer[i].abs() >= 0.5 * p99)
-        .map(|&i| neutral_steer(run.yaw_rate[i], LONGEST_WHEELBASE, run.speed[i]) / run.steer[i])
+        .map(|&i| run.yaw_rate[i] * wheelbase / (run.speed[i] * run.steer[i]))
         .filter(|q| q.is_finite())
         .collect();
     let samples = q.len();
     let median = midpoint_median(&mut q);
-    (median.abs() < STEER_IN_DEGREES).then_some(InputProblem::SteerAboveYaw {
+    (median.abs() < limit).then_some(InputProblem::SteerAboveYaw {
         median,
         samples,
-        assumed_wheelbase: Some(LONGEST_WHEELBASE),
+        assumed_wheelbase: Some(wheelbase),
     })
 }

@@ -58,6 +58,7 @@ pub const MIN_FILTER_HZ: f64 = 1.0;
 pub(crate) mod beta_sign;
 pub(crate) mod initial;
 pub mod measured;
+mod moving_steer;
 mod noise;
 mod peak;
 mod pulse;

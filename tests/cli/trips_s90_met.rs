@@ -155,13 +155,13 @@ fn the_sample_intervals_bias_is_quoted_for_the_step_the_log_holds() {
     let (_, w) = measured(&csv, &[]);
     assert!(!w.contains("within 10 % at 12.5 Hz"), "{w}");
     assert!(
-        w.contains("E_r, E_ay and Er are integrals over samples 0.08 s apart (12.5 Hz), of a step faster than one interval: they are biased by where the samples fall on the step (the linear car's 0.01 rad instant step at 25 m/s (closed form: yaw-rate response time 0.158 s, E_r 0.0442 s, E_ay 0.0476 s), logged at 12.5 Hz with the step at ten placings between samples, read E_r from −61 % to +109 % and E_ay from −17 % to +15 %)"),
+        w.contains("E_r, E_ay and Er are integrals over samples 0.08 s apart (12.5 Hz), of a step faster than one interval: they are biased by where the samples fall on the step (the linear car's 0.01 rad instant step at 25 m/s (closed form: yaw-rate response time 0.158 s, E_r 0.0442 s, E_ay 0.0476 s), logged at 12.5 Hz with the step at 200 placings between samples, read E_r from −67 % to +109 % and E_ay from −21 % to +15 %)"),
         "{w}"
     );
     let csv = logged(&instant, 100, 9.0, |a| a, dir.path(), "lin_10hz.csv");
     let (_, w) = measured(&csv, &[]);
     assert!(
-        w.contains("logged at 10 Hz with the step at ten placings between samples, read its yaw-rate response time from −19 % to +47 % of the closed form"),
+        w.contains("logged at 10 Hz with the step at 200 placings between samples, read its yaw-rate response time from −23 % to +40 % of the closed form"),
         "{w}"
     );
     // A step ramped over 0.15 s, which a 12.5 Hz log resolves: the ramp's
@@ -175,7 +175,7 @@ fn the_sample_intervals_bias_is_quoted_for_the_step_the_log_holds() {
         w.contains("(12.5 Hz), a log of 12.5 Hz or slower: they are biased by where the samples fall on the step (the linear car's 0.01 rad step ramped over 0.1 s at 25 m/s"),
         "{w}"
     );
-    assert!(w.contains("read E_r from −10 % to +13 %"), "{w}");
+    assert!(w.contains("read E_r from −10 % to +17 %"), "{w}");
 }
 
 /// A record ending 0.6 s after an instant step was advised "a
@@ -243,7 +243,10 @@ fn simulate_says_a_variance_window_shorter_than_the_response() {
 /// 17: 0.2 s read E_ay 0.0311 s for 0.0428): `simulate` now says it ends
 /// before ay responds. And a coarse log's response-time advice names a
 /// rate at which the response spans two intervals: rounded to the nearest
-/// Hz, 0.178 s gave "11 Hz", where it spans 1.96.
+/// Hz, 0.178 s gave "11 Hz", where it spans 1.96. (Session 92: the rate
+/// is the bias table's that reads the response time within 10 %, no
+/// longer the least that spans two intervals, which moved with the
+/// placing of the step.)
 #[test]
 fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_are_said() {
     let dir = tempfile::tempdir().unwrap();
@@ -279,10 +282,6 @@ fn a_variance_window_before_ay_responds_and_a_rate_that_resolves_the_response_ar
             t * hz >= 2.0,
             "{name}: {t} s at {hz} Hz spans {}: {w}",
             t * hz
-        );
-        assert!(
-            t * (hz - 1.0) < 2.0,
-            "{name}: {hz} Hz is not the least: {w}"
         );
         advised += 1;
     }

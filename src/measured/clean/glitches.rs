@@ -67,6 +67,9 @@ const ZERO_MADS: f64 = 4.0;
 /// Share of exactly repeated successive samples above which a channel is
 /// quantised.
 const QUANTISED_SHARE: f64 = 0.01;
+/// Differences below this share of a channel's largest magnitude are the
+/// rounding of its values (a double holds about 16 digits), no quantum.
+const ROUNDING: f64 = 1e-12;
 
 /// The detection thresholds of the channel `x`, from its samples outside
 /// the slow spans `slow` (from all when every sample is slow): a parked
@@ -86,11 +89,17 @@ pub(super) fn scale(x: &[f64], slow: &[bool]) -> Scale {
     // Repeats other than the zeros themselves.
     let repeats = x.windows(2).filter(|w| w[0] == w[1] && w[0] != 0.0).count();
     let quantised = repeats as f64 > QUANTISED_SHARE * d.len().max(1) as f64;
-    // A quantised channel's step: its smallest non-zero difference.
+    // A quantised channel's step: its smallest difference beyond the
+    // rounding of its values. A held value written back from an
+    // interpolation differs by an ulp (0.0174533 and 0.017453299999999998
+    // in a log resampled to 7 Hz): taken as the quantum, that 3e-18 made
+    // the threshold the range floor alone, and the steer's straight
+    // running before its step a zero read.
+    let ulps = ROUNDING * x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let step = d
         .iter()
         .map(|v| v.abs())
-        .filter(|v| *v > 0.0)
+        .filter(|v| *v > ulps)
         .fold(f64::INFINITY, f64::min);
     let md = median(&mut d);
     let mut dev: Vec<f64> = d.iter().map(|v| (v - md).abs()).collect();
@@ -424,6 +433,16 @@ pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut Cleani
     for ch in SEARCHED {
         let Some(x) = ch.of(run) else { continue };
         let mut found = detect(x, &slow);
+        // A steer that opens the record at exactly 0 is the wheels held straight
+        // before the manoeuvre, not a zero read: a
+        // record starts in straight running, a dropout there has no earlier
+        // sample to be told from it by, and repaired, the zeros took the step's
+        // value and the record began turned (a 7 Hz log's 0.1° first ramp
+        // sample held from the start, and its yaw-rate gain read 53.96 where the
+        // closed form is 5.409).
+        if ch == RunChannel::Steer {
+            found.retain(|f| f.kind != GlitchKind::ZeroRead || f.start > 0);
+        }
         // A response's hold that is its settled value, the other responses
         // steady with it, is no stuck sensor (`settled.rs`).
         if !ch.is_input() {

@@ -9,6 +9,7 @@
 //! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
 //! model ([`FitOutcome::bic`]).
 
+pub(crate) mod fold_check;
 pub(crate) mod fold_noise;
 pub(crate) mod global;
 pub(crate) mod layout;

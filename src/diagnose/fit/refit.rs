@@ -6,6 +6,7 @@
 //! all-run residuals. The counts of replays quoted below were measured on
 //! the Putnam racing log (`campaigns/putnam.toml`). Units: SI, rad.
 
+use crate::diagnose::fit::fold_check::refit_checked;
 use crate::diagnose::fit::fold_noise::run_rows;
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::{fit, pair_index, FitOutcome, GlobalSearch, Polish};
@@ -151,8 +152,18 @@ pub(crate) fn training_rows(
 /// Where the model has not converged within [`REFIT_MODEL_STEPS`] replays,
 /// or cannot go on, Levenberg–Marquardt (fresh Jacobians) goes on from
 /// there within its budget. Without a linearisation (`full` not polished)
-/// it is Levenberg–Marquardt from `full`.
+/// it is Levenberg–Marquardt from `full`. Checked against its start
+/// ([`refit_checked`]): one that ends above it is put back there.
 pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    full: &FitOutcome,
+    rows: &[std::ops::Range<usize>],
+) -> FitOutcome {
+    refit_checked(problem, full, rows).0
+}
+
+/// [`refit`]'s descent, unchecked.
+pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     full: &FitOutcome,
     rows: &[std::ops::Range<usize>],

@@ -1,6 +1,6 @@
-//! The check of a cross-validation fold's refit against where it started. of the fold refits per parameter. A fold refit
-//! ([`refit`](crate::diagnose::fit::refit::refit)) starts from the all-run fit; it is a descent, so it must
-//! end with a training cost (`½·Σ e²` of the fold's scaled training
+//! The check of a cross-validation fold's refit against where it started.
+//! A fold refit ([`refit`](crate::diagnose::fit::refit::refit)) starts
+//! from the all-run fit; it is a descent, so it must end with a training cost (`½·Σ e²` of the fold's scaled training
 //! residuals and the prior's rows, dimensionless) no higher than the cost
 //! of the all-run parameters on the same training runs. One that ends
 //! higher has failed as a fit (a refit that wandered to a worse local

@@ -72,7 +72,8 @@ fn against_start<F: Fn(&[f64]) -> Augmented + Sync>(
 ) -> (FitOutcome, FoldRefit) {
     // The refit reports its data cost; the descent lowers data and prior.
     let end = out.cost + problem.prior_cost(&out.params);
-    let put_back = !(end <= start_cost * (1.0 + WORSE));
+    // A cost that is not a number is no descent either.
+    let put_back = end.is_nan() || end > start_cost * (1.0 + WORSE);
     if put_back {
         out.params = full.params.clone();
         out.cost = start_cost - problem.prior_cost(&full.params);

@@ -10,6 +10,8 @@
 //! model ([`FitOutcome::bic`]).
 
 pub(crate) mod fold_check;
+#[cfg(test)]
+mod fold_check_tests;
 pub(crate) mod fold_noise;
 pub(crate) mod global;
 pub(crate) mod layout;

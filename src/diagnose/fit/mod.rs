@@ -9,6 +9,9 @@
 //! by the Bayesian information criterion (Schwarz 1978) of a Gaussian error
 //! model ([`FitOutcome::bic`]).
 
+pub(crate) mod fold_check;
+#[cfg(test)]
+mod fold_check_tests;
 pub(crate) mod fold_noise;
 pub(crate) mod global;
 pub(crate) mod layout;

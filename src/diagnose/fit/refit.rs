@@ -6,10 +6,10 @@
 //! all-run residuals. The counts of replays quoted below were measured on
 //! the Putnam racing log (`campaigns/putnam.toml`). Units: SI, rad.
 
-use crate::diagnose::fit::fold_noise::run_rows;
+pub(crate) use crate::diagnose::fit::fold_check::training_rows;
+use crate::diagnose::fit::fold_check::{against_start, start_cost, FoldRefit};
 use crate::diagnose::fit::problem::Problem;
 use crate::diagnose::fit::{fit, pair_index, FitOutcome, GlobalSearch, Polish};
-use crate::diagnose::model::replay::Prepared;
 use crate::diagnose::model::Augmented;
 use crate::optim::bounded::ProjectedModel;
 use crate::optim::local::Residuals;
@@ -113,23 +113,6 @@ const REFIT_MODEL_REJECTIONS: usize = 8;
 /// model alone (3 rejections, 20 steps) took 3,597.
 const REFIT_RELINEARISATIONS: usize = 4;
 
-/// The residual rows of a fold's training runs (all but `held_out`) in the
-/// all-run problem, whose rows follow the runs' order, then its `prior`
-/// rows (the axle characteristics' prior, [`Problem::with_prior`]), which
-/// every fold shares.
-pub(crate) fn training_rows(
-    runs: &[Prepared],
-    held_out: &[usize],
-    prior: usize,
-) -> Vec<std::ops::Range<usize>> {
-    let mut rows = run_rows(runs, |i| !held_out.contains(&i));
-    if prior > 0 {
-        let all: usize = runs.iter().map(Prepared::count).sum();
-        rows.push(all..all + prior);
-    }
-    rows
-}
-
 /// Refits `problem` (the training runs of a fold, whose residual rows are
 /// `rows` of the all-run problem's) from the all-run fit `full`. The
 /// optimum moves little when one run of several leaves, so the all-run
@@ -151,8 +134,28 @@ pub(crate) fn training_rows(
 /// Where the model has not converged within [`REFIT_MODEL_STEPS`] replays,
 /// or cannot go on, Levenberg–Marquardt (fresh Jacobians) goes on from
 /// there within its budget. Without a linearisation (`full` not polished)
-/// it is Levenberg–Marquardt from `full`.
+/// it is Levenberg–Marquardt from `full`. Checked against its start
+/// ([`refit_checked`]): one that ends above it is put back there.
 pub fn refit<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    full: &FitOutcome,
+    rows: &[std::ops::Range<usize>],
+) -> FitOutcome {
+    refit_checked(problem, full, rows).0
+}
+
+/// [`refit`] and its check against its start ([`FoldRefit`]).
+pub fn refit_checked<F: Fn(&[f64]) -> Augmented + Sync>(
+    problem: &Problem<F>,
+    full: &FitOutcome,
+    rows: &[std::ops::Range<usize>],
+) -> (FitOutcome, FoldRefit) {
+    let start = start_cost(problem, full, rows);
+    against_start(problem, full, start, descend(problem, full, rows))
+}
+
+/// [`refit`]'s descent, unchecked.
+pub(super) fn descend<F: Fn(&[f64]) -> Augmented + Sync>(
     problem: &Problem<F>,
     full: &FitOutcome,
     rows: &[std::ops::Range<usize>],
@@ -257,6 +260,7 @@ pub(super) mod tests {
     use super::*;
     use crate::diagnose::fit::{hold_stands, linearise, pinned, to_hold};
     use crate::diagnose::model::replay::tests::sine_run;
+    use crate::diagnose::model::replay::Prepared;
     use crate::manoeuvre::SineSteer;
     use crate::tyre::{Pac89, Tyre};
     use crate::vehicle::{Vehicle, VehicleModel};

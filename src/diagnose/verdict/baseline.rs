@@ -117,7 +117,11 @@ impl Baseline {
         let row = self.rank(sc).parameters;
         let idle = idle_parameters(sc, &layout);
         let effect = |i: usize| (0..sc.kinds.len()).find(|&k| layout.effect(k).contains(&i));
-        let params: Vec<_> = sc.kinds.iter().flat_map(|e| e.parameters().iter()).collect();
+        let params: Vec<_> = sc
+            .kinds
+            .iter()
+            .flat_map(|e| e.parameters().iter())
+            .collect();
         let distance = |i: usize| {
             let (v, se, off) = (sc.full.params[i], sc.full.std_errors[i], params[i - at].off);
             if v == off || !(se > 0.0) {
@@ -126,7 +130,8 @@ impl Baseline {
                 (v - off).abs() / se
             }
         };
-        let each: Vec<(Option<usize>, f64)> = idle.iter().map(|&i| (effect(i), distance(i))).collect();
+        let each: Vec<(Option<usize>, f64)> =
+            idle.iter().map(|&i| (effect(i), distance(i))).collect();
         idle.iter()
             .zip(named_idle(&each))
             .filter(|(_, named)| *named)
@@ -370,7 +375,10 @@ mod named_idle_tests {
     fn of_two_idle_parameters_of_one_effect_the_nearest_off_is_named() {
         let delay = 0.0496 / 0.0621;
         let lag = 6.423e-5 / 0.0622;
-        assert_eq!(named_idle(&[(Some(0), delay), (Some(0), lag)]), [false, true]);
+        assert_eq!(
+            named_idle(&[(Some(0), delay), (Some(0), lag)]),
+            [false, true]
+        );
         // Each effect its own: one idle parameter of another is named.
         let each = [(Some(0), delay), (Some(0), lag), (Some(1), 1.5)];
         assert_eq!(named_idle(&each), [false, true, true]);

@@ -264,7 +264,9 @@ pub fn simpler_than(ranked: &[Candidate], jn: f64) -> Option<usize> {
 /// the pairs fallback would have taken (a sensor delay beside it) read the
 /// same.
 pub fn simpler_twin(chosen: Candidate, twins: &[Candidate], jn: f64) -> Option<usize> {
-    let all: Vec<Candidate> = std::iter::once(chosen).chain(twins.iter().copied()).collect();
+    let all: Vec<Candidate> = std::iter::once(chosen)
+        .chain(twins.iter().copied())
+        .collect();
     let order = best_first(&all.iter().map(|c| c.heldout).collect::<Vec<f64>>());
     let ranked: Vec<Candidate> = order.iter().map(|&i| all[i]).collect();
     let over = simpler_than(&ranked, jn)?;

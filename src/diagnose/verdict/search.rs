@@ -47,8 +47,8 @@ use crate::diagnose::verdict::rules::{
     SIGNIFICANT,
 };
 use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
-use crate::diagnose::verdict::twins::simpler_twin;
 use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
+use crate::diagnose::verdict::twins::simpler_twin;
 use rayon::prelude::*;
 
 /// What the search for a verdict found.

@@ -79,8 +79,7 @@ pub(crate) fn simpler_twin(ctx: &Context, singles: &[Scored], base: &Baseline, o
             Some(ctx.score(kinds, &[start], other.seed().wrapping_add(2)))
         })
         .collect();
-    out.combinations
-        .extend(twins.iter().map(|t| base.rank(t)));
+    out.combinations.extend(twins.iter().map(|t| base.rank(t)));
     let ranked: Vec<rules::Candidate> = twins.iter().map(|t| base.candidate(t)).collect();
     let Some(k) = rules::simpler_twin(base.candidate(&chosen), &ranked, base.jn) else {
         return;
@@ -139,4 +138,3 @@ pub(crate) fn in_set(
         })
         .collect()
 }
-

@@ -55,7 +55,10 @@ pub(super) fn swept_per_neutral(
         .collect();
     let lag = best_lag(&run.t, &run.steer, &q, &at_speed);
     let (mut ratio, mut with, mut against) = (Vec::new(), 0usize, 0usize);
-    for &i in at_speed.iter().filter(|&&i| run.steer[i].abs() >= 0.3 * p95) {
+    for &i in at_speed
+        .iter()
+        .filter(|&&i| run.steer[i].abs() >= 0.3 * p95)
+    {
         let Some(&r) = q.get(i + lag) else { continue };
         let x = r / run.steer[i];
         if x.is_finite() {
@@ -85,7 +88,11 @@ pub(super) fn swept_per_neutral(
 fn best_lag(t: &[f64], steer: &[f64], q: &[f64], at: &[usize]) -> usize {
     let mut steps: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
     steps.sort_by(f64::total_cmp);
-    let dt = steps.get(steps.len() / 2).copied().unwrap_or(0.01).max(1e-4);
+    let dt = steps
+        .get(steps.len() / 2)
+        .copied()
+        .unwrap_or(0.01)
+        .max(1e-4);
     let max = (MAX_LAG / dt).round() as usize;
     let score = |k: usize| -> f64 {
         at.iter()

@@ -7,8 +7,8 @@
 //! errors are dimensionless, reductions in percent.
 
 use crate::diagnose::effects::{joined, same_effects, EffectKind};
-use crate::diagnose::report::Evidence;
 use crate::diagnose::report::outcome::{Explained, InSet, Lookalikes, Window};
+use crate::diagnose::report::Evidence;
 
 /// A confounding window with its terms: `1.5 × 0.310 + 0.25 × 0.941 =
 /// 0.700` (gaps above noise, dimensionless), so that a look-alike that

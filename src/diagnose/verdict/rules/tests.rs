@@ -436,16 +436,31 @@ fn the_verdicts_set_gives_way_to_a_simpler_twin_within_the_parsimony_window() {
     // The same numbers ranked as the pairs fallback ranks them: the same.
     assert_eq!(pick(&[set, twin], 0.941), Some(1));
     // Just past the window (1.063 + 0.0941 = 1.1571): the set stays.
-    assert_eq!(simpler_twin(set, &[cand(1.158, 2, false, false)], 0.941), None);
-    assert_eq!(simpler_twin(set, &[cand(1.157, 2, false, false)], 0.941), Some(0));
+    assert_eq!(
+        simpler_twin(set, &[cand(1.158, 2, false, false)], 0.941),
+        None
+    );
+    assert_eq!(
+        simpler_twin(set, &[cand(1.157, 2, false, false)], 0.941),
+        Some(0)
+    );
     // A set that leaves nothing idle stays, even beside a better twin:
     // the twin is a look-alike, not the rule's to take.
     let busy = cand(1.063, 3, false, false);
-    assert_eq!(simpler_twin(busy, &[cand(1.0, 2, false, false)], 0.941), None);
+    assert_eq!(
+        simpler_twin(busy, &[cand(1.0, 2, false, false)], 0.941),
+        None
+    );
     // A twin with as many parameters is no simpler.
-    assert_eq!(simpler_twin(set, &[cand(1.080, 3, false, false)], 0.941), None);
+    assert_eq!(
+        simpler_twin(set, &[cand(1.080, 3, false, false)], 0.941),
+        None
+    );
     // A twin whose axles are no tyre is never taken.
-    assert_eq!(simpler_twin(set, &[cand(1.080, 2, false, true)], 0.941), None);
+    assert_eq!(
+        simpler_twin(set, &[cand(1.080, 2, false, true)], 0.941),
+        None
+    );
     // Of several, the one with the fewest parameters (an index into the
     // twins, whatever their order).
     let twins = [cand(1.10, 2, false, false), cand(1.09, 1, false, false)];

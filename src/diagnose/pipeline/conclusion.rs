@@ -12,8 +12,8 @@ use crate::diagnose::report::{
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::score::{Context, Scored};
-use crate::diagnose::verdict::search::{confounded_with, lookalikes_alone, Search};
-use crate::diagnose::verdict::twins::in_set;
+use crate::diagnose::verdict::search::{lookalikes_alone, Search};
+use crate::diagnose::verdict::twins::{confounded_with, in_set};
 
 /// The verdict, the groups of look-alikes it is confounded with, and the
 /// look-alikes fitted in its set ([`in_set`]) with their rows.

@@ -124,7 +124,7 @@ impl Baseline {
             .collect();
         let distance = |i: usize| {
             let (v, se, off) = (sc.full.params[i], sc.full.std_errors[i], params[i - at].off);
-            if v == off || !(se > 0.0) {
+            if v == off || se.is_nan() || se <= 0.0 {
                 0.0
             } else {
                 (v - off).abs() / se

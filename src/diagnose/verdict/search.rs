@@ -177,9 +177,16 @@ pub(crate) fn search(
         }
     }
     if rules::accepted(total, current.full.bic(), base.bic0()) {
-        out.chosen = Some(current);
         out.simpler = simpler;
-        simpler_twin(ctx, singles, base, &mut out);
+        let rows = &mut out.combinations;
+        match simpler_twin(ctx, (singles, &out.lookalikes), base, &current, rows) {
+            Some((twin, over)) => {
+                out.grown_from = Some(current.kinds[0]);
+                out.simpler.push(over);
+                out.chosen = Some(twin);
+            }
+            None => out.chosen = Some(current),
+        }
     } else {
         out.ended = Some(base.refused(&current, None, None));
         out.fallback = None;
@@ -407,43 +414,6 @@ fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec
         start[set.roll()].copy_from_slice(&single[one.roll()]);
     }
     start
-}
-
-/// The accepted first effect's look-alikes, less those the verdict took in
-/// as well (the report words the experiment that separates them); where the
-/// set took a twin's place ([`simpler_twin`]), the single it was grown
-/// from (`grown_from`) comes second, before the look-alikes.
-pub(crate) fn confounded_with(
-    chosen: &Scored,
-    singles: &[Scored],
-    (lookalikes, grown_from): (&[usize], Option<EffectKind>),
-    base: &Baseline,
-) -> Vec<Confounded> {
-    let single = |e: EffectKind| singles.iter().find(|x| x.kinds[0] == e);
-    let first = single(chosen.kinds[0]).expect("the verdict starts from a scored single");
-    // A set that took a twin's place for parsimony ([`simpler_twin`]) is
-    // confounded with the single it was grown from first of all.
-    let grown = grown_from.and_then(single);
-    let members: Vec<&Scored> = std::iter::once(first)
-        .chain(grown)
-        .chain(lookalikes.iter().map(|&i| &singles[i]))
-        .filter(|x| x.kinds[0] == chosen.kinds[0] || !chosen.kinds.contains(&x.kinds[0]))
-        .fold(Vec::new(), |mut v, x| {
-            if !v.iter().any(|m: &&Scored| m.kinds[0] == x.kinds[0]) {
-                v.push(x);
-            }
-            v
-        });
-    if members.len() < 2 {
-        return Vec::new();
-    }
-    vec![Confounded {
-        effects: members.iter().map(|x| x.kinds[0]).collect(),
-        reduction_percent: members
-            .iter()
-            .map(|x| base.rank(x).reduction_percent)
-            .collect(),
-    }]
 }
 
 /// The look-alikes alone the verdict is confounded with (the first group

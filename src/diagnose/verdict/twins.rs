@@ -24,7 +24,6 @@ use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::pairs::Simpler;
 use crate::diagnose::verdict::rules;
 use crate::diagnose::verdict::score::{Context, Scored};
-use crate::diagnose::verdict::search::{confounded_with, Search};
 use rayon::prelude::*;
 
 /// The start of the `chosen` set's twin `kinds` (a look-alike in its first
@@ -53,43 +52,78 @@ fn twin_kinds(chosen: &Scored, other: EffectKind) -> Vec<EffectKind> {
     kinds
 }
 
-/// Where the search's accepted set (`out.chosen`, of more than one effect)
-/// leaves a parameter idle, its twins fitted and cross-validated (their
-/// rows join `out.combinations`), and the one the parsimony rule takes
-/// over it ([`rules::simpler_twin`]) made the verdict: the set passed over
-/// joins `out.simpler` and its first effect is `out.grown_from`. A set
-/// that leaves nothing idle is left as it is, and nothing more is fitted.
-pub(crate) fn simpler_twin(ctx: &Context, singles: &[Scored], base: &Baseline, out: &mut Search) {
-    let Some(chosen) = out.chosen.clone() else {
-        return;
-    };
-    if chosen.kinds.len() < 2 || !base.candidate(&chosen).idle {
-        return;
+/// Where the search's accepted set `chosen` (of more than one effect)
+/// leaves a parameter idle, its twins (of the search's `lookalikes` of
+/// the start, indices into `singles`) fitted and cross-validated (their
+/// rows join `rows`), and the one the parsimony rule takes over it
+/// ([`rules::simpler_twin`]) with the set it passed over. A set that
+/// leaves nothing idle is left as it is, and nothing more is fitted.
+pub(crate) fn simpler_twin(
+    ctx: &Context,
+    (singles, lookalikes): (&[Scored], &[usize]),
+    base: &Baseline,
+    chosen: &Scored,
+    rows: &mut Vec<Ranked>,
+) -> Option<(Scored, Simpler)> {
+    if chosen.kinds.len() < 2 || !base.candidate(chosen).idle {
+        return None;
     }
-    let confounded = confounded_with(&chosen, singles, (&out.lookalikes, None), base);
-    let Some(group) = confounded.first() else {
-        return;
-    };
+    let confounded = confounded_with(chosen, singles, (lookalikes, None), base);
+    let group = confounded.first()?;
     let twins: Vec<Scored> = group.effects[1..]
         .par_iter()
         .filter_map(|&other| {
-            let kinds = twin_kinds(&chosen, other);
-            let start = twin_start(&chosen, &kinds, singles, base)?;
+            let kinds = twin_kinds(chosen, other);
+            let start = twin_start(chosen, &kinds, singles, base)?;
             // in_set's salt: the twin fitted here is the one it reads.
             Some(ctx.score(kinds, &[start], other.seed().wrapping_add(2)))
         })
         .collect();
-    out.combinations.extend(twins.iter().map(|t| base.rank(t)));
+    rows.extend(twins.iter().map(|t| base.rank(t)));
     let ranked: Vec<rules::Candidate> = twins.iter().map(|t| base.candidate(t)).collect();
-    let Some(k) = rules::simpler_twin(base.candidate(&chosen), &ranked, base.jn) else {
-        return;
-    };
-    out.grown_from = Some(chosen.kinds[0]);
-    out.simpler.push(Simpler {
-        over: chosen,
+    let k = rules::simpler_twin(base.candidate(chosen), &ranked, base.jn)?;
+    let over = Simpler {
+        over: chosen.clone(),
         taken: twins[k].clone(),
-    });
-    out.chosen = Some(twins[k].clone());
+    };
+    Some((twins[k].clone(), over))
+}
+
+/// The accepted first effect's look-alikes, less those the verdict took in
+/// as well (the report words the experiment that separates them); where the
+/// set took a twin's place ([`simpler_twin`]), the single it was grown
+/// from (`grown_from`) comes second, before the look-alikes.
+pub(crate) fn confounded_with(
+    chosen: &Scored,
+    singles: &[Scored],
+    (lookalikes, grown_from): (&[usize], Option<EffectKind>),
+    base: &Baseline,
+) -> Vec<Confounded> {
+    let single = |e: EffectKind| singles.iter().find(|x| x.kinds[0] == e);
+    let first = single(chosen.kinds[0]).expect("the verdict starts from a scored single");
+    // A set that took a twin's place for parsimony ([`simpler_twin`]) is
+    // confounded with the single it was grown from first of all.
+    let grown = grown_from.and_then(single);
+    let members: Vec<&Scored> = std::iter::once(first)
+        .chain(grown)
+        .chain(lookalikes.iter().map(|&i| &singles[i]))
+        .filter(|x| x.kinds[0] == chosen.kinds[0] || !chosen.kinds.contains(&x.kinds[0]))
+        .fold(Vec::new(), |mut v, x| {
+            if !v.iter().any(|m: &&Scored| m.kinds[0] == x.kinds[0]) {
+                v.push(x);
+            }
+            v
+        });
+    if members.len() < 2 {
+        return Vec::new();
+    }
+    vec![Confounded {
+        effects: members.iter().map(|x| x.kinds[0]).collect(),
+        reduction_percent: members
+            .iter()
+            .map(|x| base.rank(x).reduction_percent)
+            .collect(),
+    }]
 }
 
 /// Each look-alike of the `chosen` set's first effect (`confounded`, as

@@ -124,28 +124,30 @@ pub enum Missing {
 /// diagnosis advises to separate `effect` by (its signature), or why the
 /// family has none.
 pub fn advised(effect: EffectKind) -> Result<&'static [Kind], Missing> {
+    use EffectKind as E;
     use Kind::*;
     const STEADY_TURNS: &[Kind] = &[BrakeInTurn, AccelerateInTurn, ConstantRadius];
-    Ok(match effect.name() {
+    // Every effect named: a new one fails to compile until its test is
+    // said here (a name string's typo fell to "no test" silently).
+    Ok(match effect {
         // Runs at two speeds; steps at two speeds (one level, or two
         // levels at one speed).
-        "relaxation_length" => &[Step, Sweep, LaneChange],
-        "load_transfer_distribution" | "aero_load" | "cornering_stiffness" => &[Step],
+        E::RelaxationLength => &[Step, Sweep, LaneChange],
+        E::LoadTransferDistribution | E::AeroLoad | E::CorneringStiffness => &[Step],
         // Steady turns compared with u·r.
-        "accelerometer_roll" => STEADY_TURNS,
+        E::AccelerometerRoll => STEADY_TURNS,
         // The limit, where the force it follows saturates, and a step,
         // where the roll it does not follow lags.
-        "steering_compliance" => &[Ramp, Step],
-        "roll_steer" | "roll_camber" | "road_friction" => &[Ramp],
-        "yaw_inertia" => &[Sweep],
-        "sensor_delay" => &[Sweep, Step],
-        "accelerometer_position" => &[Sweep, BrakeInTurn, AccelerateInTurn, ConstantRadius],
-        "longitudinal_load_transfer" => &[BrakeInTurn, AccelerateInTurn],
-        "combined_slip" => &[BrakeInTurn],
-        "steer_path" => &[Step, SpeedChange],
-        "road_bank" | "sensor_bias" => return Err(Missing::StraightBothWays),
-        "bank_profile" => return Err(Missing::BankedCorner),
-        _ => &[],
+        E::SteeringCompliance => &[Ramp, Step],
+        E::RollSteer | E::RollCamber | E::RoadFriction => &[Ramp],
+        E::YawInertia => &[Sweep],
+        E::SensorDelay => &[Sweep, Step],
+        E::AccelerometerPosition => &[Sweep, BrakeInTurn, AccelerateInTurn, ConstantRadius],
+        E::LongitudinalLoadTransfer => &[BrakeInTurn, AccelerateInTurn],
+        E::CombinedSlip => &[BrakeInTurn],
+        E::SteerPath => &[Step, SpeedChange],
+        E::RoadBank | E::SensorBias => return Err(Missing::StraightBothWays),
+        E::BankProfile => return Err(Missing::BankedCorner),
     })
 }
 

@@ -454,6 +454,7 @@ mod trips_s91_diag;
 mod trips_s91_lead;
 mod trips_s91_met;
 mod trips_s91_perf;
+mod trips_s92_diag;
 mod trips_s92_lead;
 mod trips_s92_met;
 mod trips_simulate;

@@ -12,7 +12,8 @@ use crate::diagnose::report::{
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::conclude::verdict;
 use crate::diagnose::verdict::score::{Context, Scored};
-use crate::diagnose::verdict::search::{confounded_with, in_set, lookalikes_alone, Search};
+use crate::diagnose::verdict::search::{lookalikes_alone, Search};
+use crate::diagnose::verdict::twins::{confounded_with, in_set};
 
 /// The verdict, the groups of look-alikes it is confounded with, and the
 /// look-alikes fitted in its set ([`in_set`]) with their rows.
@@ -35,7 +36,7 @@ pub(super) fn conclude(
 ) -> Concluded {
     let chosen = found.chosen.as_ref();
     let mut confounded = chosen.map_or_else(Vec::new, |sc| {
-        confounded_with(sc, singles, &found.lookalikes, base)
+        confounded_with(sc, singles, (&found.lookalikes, found.grown_from), base)
     });
     // A set's look-alikes fitted in it: their rows join the combinations,
     // and those the set tells apart are confounded no longer.
@@ -66,7 +67,13 @@ pub(super) fn conclude(
     // The verdict is one of its look-alikes until a test separates them.
     if let Verdict::Explained(e) = &mut verdict {
         e.evidence.extend(mass_alike(&e.parameters, c));
-        e.confounded_with = lookalikes_alone(singles, &confounded, found.start, base);
+        // A set that took its twin's place: the window is its own first
+        // single's, the single it was grown from a look-alike of it.
+        let start = match (found.grown_from, chosen) {
+            (Some(_), Some(sc)) => singles.iter().position(|s| s.kinds[0] == sc.kinds[0]),
+            _ => found.start,
+        };
+        e.confounded_with = lookalikes_alone(singles, &confounded, start, base);
         e.in_set = swapped.iter().map(|(s, _)| s.clone()).collect();
     }
     Concluded {

@@ -115,9 +115,27 @@ impl Baseline {
         let layout = self.layout(&sc.kinds);
         let at = layout.effects().start;
         let row = self.rank(sc).parameters;
-        idle_parameters(sc, &layout)
-            .into_iter()
-            .filter_map(|i| row.get(i - at).cloned())
+        let idle = idle_parameters(sc, &layout);
+        let effect = |i: usize| (0..sc.kinds.len()).find(|&k| layout.effect(k).contains(&i));
+        let params: Vec<_> = sc
+            .kinds
+            .iter()
+            .flat_map(|e| e.parameters().iter())
+            .collect();
+        let distance = |i: usize| {
+            let (v, se, off) = (sc.full.params[i], sc.full.std_errors[i], params[i - at].off);
+            if v == off || se.is_nan() || se <= 0.0 {
+                0.0
+            } else {
+                (v - off).abs() / se
+            }
+        };
+        let each: Vec<(Option<usize>, f64)> =
+            idle.iter().map(|&i| (effect(i), distance(i))).collect();
+        idle.iter()
+            .zip(named_idle(&each))
+            .filter(|(_, named)| *named)
+            .filter_map(|(&i, _)| row.get(i - at).cloned())
             .collect()
     }
 
@@ -319,6 +337,23 @@ fn idle_parameters(sc: &Scored, layout: &Layout) -> Vec<usize> {
     idle.map(|(_, i)| i).collect()
 }
 
+/// Of a fit's idle parameters (each its effect and its distance from off
+/// in standard errors, 0 at off), those the words name idle: per effect,
+/// the nearest off. Two parameters of one effect that trade against each
+/// other (a steer path's delay and lag) are each within two standard
+/// errors of off while their sum is determined: the one at off (the lag at
+/// 6e-5 s, 0.001 standard errors) is idle, the other (the delay at
+/// 0.0496 ± 0.0621 s) carries the effect and is not.
+fn named_idle(idle: &[(Option<usize>, f64)]) -> Vec<bool> {
+    idle.iter()
+        .map(|&(effect, d)| {
+            idle.iter()
+                .filter(|(e, _)| *e == effect)
+                .all(|&(_, other)| d <= other)
+        })
+        .collect()
+}
+
 /// Whether one of a fit's effect parameters (not the roll dynamics, whose
 /// damping a roll effect presses on its bound where the runs barely roll)
 /// lies on the end of its search range ([`Bound::Search`]).
@@ -327,4 +362,27 @@ fn pressed(sc: &Scored, layout: &Layout) -> bool {
     params
         .zip(layout.effects())
         .any(|(q, i)| q.bound_at(sc.full.params[i]) == Some(Bound::Search))
+}
+
+#[cfg(test)]
+mod named_idle_tests {
+    use super::named_idle;
+
+    /// Round 19's campaign yi: steer_path.delay = 0.0496 ± 0.0621 s (0.80
+    /// standard errors) and steer_path.lag = 6.4e-5 ± 0.0622 s (0.001),
+    /// both within two of off: only the lag is named idle.
+    #[test]
+    fn of_two_idle_parameters_of_one_effect_the_nearest_off_is_named() {
+        let delay = 0.0496 / 0.0621;
+        let lag = 6.423e-5 / 0.0622;
+        assert_eq!(
+            named_idle(&[(Some(0), delay), (Some(0), lag)]),
+            [false, true]
+        );
+        // Each effect its own: one idle parameter of another is named.
+        let each = [(Some(0), delay), (Some(0), lag), (Some(1), 1.5)];
+        assert_eq!(named_idle(&each), [false, true, true]);
+        // Both at off: both named.
+        assert_eq!(named_idle(&[(Some(0), 0.0), (Some(0), 0.0)]), [true, true]);
+    }
 }

@@ -4,7 +4,8 @@
 //! (`baseline`), the singles and the greedy additions' sets screened
 //! before their cross-validation (`screening`), and the search for the set of
 //! effects that explains the gap (`search`, and `pairs` where it reaches no verdict), the rules all three apply as
-//! pure functions (`rules`, with their thresholds), and the verdict's case
+//! pure functions (`rules`, with their thresholds; `twins` lets them read the
+//! verdict's set against its look-alikes in its first effect's place), and the verdict's case
 //! from what the search found (`conclude`).
 //! Units: SI, rad; held-out errors J dimensionless.
 
@@ -17,3 +18,4 @@ pub mod rules;
 pub(crate) mod score;
 pub(crate) mod screening;
 pub(crate) mod search;
+pub(crate) mod twins;

@@ -251,6 +251,29 @@ pub fn simpler_than(ranked: &[Candidate], jn: f64) -> Option<usize> {
     pick(ranked, jn).filter(|&k| k != top).map(|_| top)
 }
 
+/// The parsimony rule read over a verdict's set (`chosen`) and its twins
+/// (`twins`: the set with a look-alike of its first effect in that
+/// effect's place), as the greedy step, the pairs and the singles read it
+/// ([`pick`], [`simpler_than`]) over the sets they fit: the twin taken (an
+/// index into `twins`) where the rule passes the set over for it, i.e.
+/// where the set leaves a parameter idle and the twin has fewer parameters
+/// within [`PARSIMONY`] noise levels of it. A twin that merely does better
+/// changes nothing (it stays a look-alike, confounded or told apart): only
+/// the rule's own reason moves the verdict, so the set the greedy search
+/// grew (a steer path with its lag idle beside a yaw inertia) and the set
+/// the pairs fallback would have taken (a sensor delay beside it) read the
+/// same.
+pub fn simpler_twin(chosen: Candidate, twins: &[Candidate], jn: f64) -> Option<usize> {
+    let all: Vec<Candidate> = std::iter::once(chosen)
+        .chain(twins.iter().copied())
+        .collect();
+    let order = best_first(&all.iter().map(|c| c.heldout).collect::<Vec<f64>>());
+    let ranked: Vec<Candidate> = order.iter().map(|&i| all[i]).collect();
+    let over = simpler_than(&ranked, jn)?;
+    let taken = order[pick(&ranked, jn)?];
+    (order[over] == 0 && taken != 0).then(|| taken - 1)
+}
+
 /// The candidates whose axles are a tyre (indices into `ranked`, in its
 /// order).
 fn tyres(ranked: &[Candidate]) -> Vec<usize> {

@@ -35,7 +35,7 @@ use crate::diagnose::effects::{joined, set_of, EffectKind};
 use crate::diagnose::fit::layout::Layout;
 use crate::diagnose::model::channels::{gap_above, reduction};
 use crate::diagnose::report::{
-    Confounded, InSet, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
+    Confounded, Lookalike, Lookalikes, RankWarning, Ranked, Refused, Screened,
 };
 use crate::diagnose::verdict::baseline::Baseline;
 use crate::diagnose::verdict::pairs::{paired, Fallback, Simpler};
@@ -48,6 +48,7 @@ use crate::diagnose::verdict::rules::{
 };
 use crate::diagnose::verdict::score::{Context, Fitted, Scored, Started};
 use crate::diagnose::verdict::screening::{one_screened_row_per_set, screened_additions};
+use crate::diagnose::verdict::twins::simpler_twin;
 use rayon::prelude::*;
 
 /// What the search for a verdict found.
@@ -76,6 +77,10 @@ pub(crate) struct Search {
     /// Where the greedy search ended with no verdict and a pair of the
     /// best singles in sample ([`paired`]) started the one that reached it.
     pub(crate) fallback: Option<Fallback>,
+    /// Where the accepted set gave way to a simpler twin (a look-alike in
+    /// its first effect's place, [`simpler_twin`]): the single it had been
+    /// grown from.
+    pub(crate) grown_from: Option<EffectKind>,
 }
 
 /// The verdict's search: the best single (`order` ranks the
@@ -172,8 +177,16 @@ pub(crate) fn search(
         }
     }
     if rules::accepted(total, current.full.bic(), base.bic0()) {
-        out.chosen = Some(current);
         out.simpler = simpler;
+        let rows = &mut out.combinations;
+        match simpler_twin(ctx, (singles, &out.lookalikes), base, &current, rows) {
+            Some((twin, over)) => {
+                out.grown_from = Some(current.kinds[0]);
+                out.simpler.push(over);
+                out.chosen = Some(twin);
+            }
+            None => out.chosen = Some(current),
+        }
     } else {
         out.ended = Some(base.refused(&current, None, None));
         out.fallback = None;
@@ -403,38 +416,6 @@ fn alone(layout: &Layout, off: &[f64], added: EffectKind, single: &[f64]) -> Vec
     start
 }
 
-/// The accepted first effect's look-alikes, less those the verdict took in
-/// as well (the report words the experiment that separates them).
-pub(crate) fn confounded_with(
-    chosen: &Scored,
-    singles: &[Scored],
-    lookalikes: &[usize],
-    base: &Baseline,
-) -> Vec<Confounded> {
-    let first = singles
-        .iter()
-        .find(|x| x.kinds[0] == chosen.kinds[0])
-        .expect("the verdict starts from a scored single");
-    let members: Vec<&Scored> = std::iter::once(first)
-        .chain(
-            lookalikes
-                .iter()
-                .map(|&i| &singles[i])
-                .filter(|x| !chosen.kinds.contains(&x.kinds[0])),
-        )
-        .collect();
-    if members.len() < 2 {
-        return Vec::new();
-    }
-    vec![Confounded {
-        effects: members.iter().map(|x| x.kinds[0]).collect(),
-        reduction_percent: members
-            .iter()
-            .map(|x| base.rank(x).reduction_percent)
-            .collect(),
-    }]
-}
-
 /// The look-alikes alone the verdict is confounded with (the first group
 /// of `confounded`, less its first member, the verdict's own first
 /// effect), each with its reduction and gap above noise, and the window of
@@ -472,60 +453,6 @@ pub(crate) fn lookalikes_alone(
         window: rules::window(gap, base.jn),
         members,
     })
-}
-
-/// Each look-alike of the `chosen` set's first effect (`confounded`, as
-/// [`confounded_with`] gives them) fitted and cross-validated in the set
-/// in its place, where the set has more than one effect: the singles'
-/// likeness says nothing of the set's, which no search fitted (the search
-/// starts again from a look-alike only while a significant gap is left).
-/// Started from the look-alike's single fit with each other member's
-/// added ([`crate::diagnose::fit::layout::Layout::combined`]); a set the
-/// search already cross-validated (`tried`) is read, not fitted again.
-/// Returns each as [`InSet`] and its report row where it is new.
-pub(crate) fn in_set(
-    ctx: &Context,
-    chosen: &Scored,
-    singles: &[Scored],
-    confounded: &[Confounded],
-    base: &Baseline,
-    tried: &[Ranked],
-) -> Vec<(InSet, Option<Ranked>)> {
-    let (Some(c), true) = (confounded.first(), chosen.kinds.len() > 1) else {
-        return Vec::new();
-    };
-    let single = |e: EffectKind| singles.iter().find(|s| s.kinds[0] == e);
-    let g_chosen = gap_above(chosen.heldout.combined(&base.scales()), base.jn);
-    c.effects[1..]
-        .par_iter()
-        .filter_map(|&other| {
-            let mut kinds = vec![other];
-            kinds.extend_from_slice(&chosen.kinds[1..]);
-            let known = tried.iter().find(|r| set_of(&r.effects) == set_of(&kinds));
-            let (r, new) = match known {
-                Some(r) => (r.clone(), false),
-                None => {
-                    let mut start = single(other)?.full.params.clone();
-                    for (k, &e) in chosen.kinds[1..].iter().enumerate() {
-                        start =
-                            base.layout(&kinds[..=k])
-                                .combined(&start, e, &single(e)?.full.params);
-                    }
-                    let salt = other.seed().wrapping_add(2);
-                    (base.rank(&ctx.score(kinds.clone(), &[start], salt)), true)
-                }
-            };
-            let gap = gap_above(r.heldout_error_after, base.jn);
-            let row = InSet {
-                effects: kinds,
-                reduction_percent: r.reduction_percent,
-                gap,
-                window: rules::window(g_chosen, base.jn),
-                confounded: rules::lookalike(r.reduction_percent, gap, g_chosen, base.jn),
-            };
-            Some((row, new.then_some(r)))
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -36,6 +36,7 @@ mod glob;
 mod kind;
 mod run_checks;
 mod runs;
+mod swept;
 
 use super::paths::beside;
 use super::rig::read_rig;

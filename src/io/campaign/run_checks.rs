@@ -169,7 +169,11 @@ pub(super) fn steer_against_yaw(
     declared: bool,
 ) -> Result<Option<String>, InputError> {
     let Some(y) = yaw_per_neutral(run, wheelbase, min_speed) else {
-        return Ok(None);
+        // No held steer: a sweep's steer is judged for a unit slip too.
+        return match super::swept::swept_in_degrees(run, wheelbase, min_speed) {
+            Some((problem, _)) => Err(file_error(&run.path, problem)),
+            None => Ok(None),
+        };
     };
     let (m, n) = (y.median, y.samples);
     if let Some(problem) = steer_problem(&y, Wheelbase::Known(wheelbase)) {
@@ -191,7 +195,9 @@ pub(super) fn steer_against_yaw(
 /// rate ([`InputProblem::SteerAboveYaw`]: in degrees, or a steering-wheel
 /// angle).
 fn steer_in_degrees(run: &MeasuredRun, wheelbase: f64, min_speed: f64) -> Option<f64> {
-    let y = yaw_per_neutral(run, wheelbase, min_speed)?;
+    let Some(y) = yaw_per_neutral(run, wheelbase, min_speed) else {
+        return super::swept::swept_in_degrees(run, wheelbase, min_speed).map(|(_, m)| m);
+    };
     match steer_problem(&y, Wheelbase::Known(wheelbase))? {
         InputProblem::SteerAboveYaw { median, .. } => Some(median),
         _ => None,

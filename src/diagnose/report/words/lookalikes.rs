@@ -6,8 +6,9 @@
 //! 50 % against the verdict's 74 % can lie in the window. Gaps and held-out
 //! errors are dimensionless, reductions in percent.
 
-use crate::diagnose::effects::{joined, EffectKind};
+use crate::diagnose::effects::{joined, same_effects, EffectKind};
 use crate::diagnose::report::outcome::{Explained, InSet, Lookalikes, Window};
+use crate::diagnose::report::Evidence;
 
 /// A confounding window with its terms: `1.5 × 0.310 + 0.25 × 0.941 =
 /// 0.700` (gaps above noise, dimensionless), so that a look-alike that
@@ -79,10 +80,25 @@ pub(super) fn in_set(head: String, e: &Explained, first: EffectKind) -> String {
     };
     let set = joined(&e.effects, "+");
     let mut out = head;
+    // The set took the place of a twin for parsimony: the single the set
+    // was grown from is the twin's first effect, not its own.
+    let grown = alike.iter().find(|s| {
+        e.evidence.iter().any(
+            |v| matches!(v, Evidence::ChosenForParsimony(p) if same_effects(&p.effects, &s.effects)),
+        )
+    });
+    let whose = match grown {
+        Some(g) => format!(
+            "{} is the single the set was grown from, and {} took its place by the parsimony rule below",
+            g.effects[0].name(),
+            first.name()
+        ),
+        None => "the single the set was grown from".to_string(),
+    };
     if let Some(w) = alike.first().map(|s| &s.window) {
         let (who, one) = names(&alike);
         out += &format!(
-            "; but {who} in place of {} (the single the set was grown from): {}, against {set}'s {:.1} % ({:.3}): within the set's confounding window, {}, so the runs do not tell {} apart (confounded)",
+            "; but {who} in place of {} ({whose}): {}, against {set}'s {:.1} % ({:.3}): within the set's confounding window, {}, so the runs do not tell {} apart (confounded)",
             first.name(),
             each(&alike),
             e.reduction_percent,

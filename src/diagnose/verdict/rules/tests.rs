@@ -422,3 +422,51 @@ fn a_fold_is_far_beyond_three_standard_errors_of_the_all_run_fit() {
         Some(2)
     );
 }
+
+/// Campaign yi of round 19 (sensor delay 0.05 s, yaw inertia 1.5× low):
+/// the greedy search grew steer_path+yaw_inertia (held-out 1.063, 3
+/// parameters, the lag idle), its twin sensor_delay+yaw_inertia reads
+/// 1.080 with 2: within 0.1 noise levels (0.941), the rule takes the
+/// twin, as the pairs fallback took it in campaign yi2.
+#[test]
+fn the_verdicts_set_gives_way_to_a_simpler_twin_within_the_parsimony_window() {
+    let set = cand(1.063, 3, true, false);
+    let twin = cand(1.080, 2, false, false);
+    assert_eq!(simpler_twin(set, &[twin], 0.941), Some(0));
+    // The same numbers ranked as the pairs fallback ranks them: the same.
+    assert_eq!(pick(&[set, twin], 0.941), Some(1));
+    // Just past the window (1.063 + 0.0941 = 1.1571): the set stays.
+    assert_eq!(
+        simpler_twin(set, &[cand(1.158, 2, false, false)], 0.941),
+        None
+    );
+    assert_eq!(
+        simpler_twin(set, &[cand(1.157, 2, false, false)], 0.941),
+        Some(0)
+    );
+    // A set that leaves nothing idle stays, even beside a better twin:
+    // the twin is a look-alike, not the rule's to take.
+    let busy = cand(1.063, 3, false, false);
+    assert_eq!(
+        simpler_twin(busy, &[cand(1.0, 2, false, false)], 0.941),
+        None
+    );
+    // A twin with as many parameters is no simpler.
+    assert_eq!(
+        simpler_twin(set, &[cand(1.080, 3, false, false)], 0.941),
+        None
+    );
+    // A twin whose axles are no tyre is never taken.
+    assert_eq!(
+        simpler_twin(set, &[cand(1.080, 2, false, true)], 0.941),
+        None
+    );
+    // Of several, the one with the fewest parameters (an index into the
+    // twins, whatever their order).
+    let twins = [cand(1.10, 2, false, false), cand(1.09, 1, false, false)];
+    assert_eq!(simpler_twin(set, &twins, 0.941), Some(1));
+    // An idle twin better than the set: the set is not passed over by the
+    // rule (the twin is), so nothing changes.
+    let idle_better = cand(1.0, 3, true, false);
+    assert_eq!(simpler_twin(busy, &[idle_better], 0.941), None);
+}

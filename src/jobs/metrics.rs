@@ -15,6 +15,7 @@ use std::path::Path;
 
 mod coarse;
 mod declared;
+mod exchanged;
 pub(super) mod filter_speed;
 mod noise_said;
 mod steps;
@@ -96,6 +97,7 @@ pub fn run_with_degrees(
         }
     };
     let clock = run.t.clone();
+    let swapped = exchanged::exchanged(&run, m.metrics.yaw_rate_response_time);
     // An `ay` that disagrees with u·r is measured again without it; one
     // the run cannot check is kept, and said.
     match m.ay_check() {
@@ -112,6 +114,8 @@ pub fn run_with_degrees(
         m.warnings.retain(|w| w != NO_AY);
         m.warnings.splice(0..0, dead);
     }
+    // First: every other warning reads the steer as logged.
+    m.warnings.splice(0..0, swapped);
     // After "no `ay`", which it follows from (and which a dead-channel
     // warning replaces: this one must not).
     m.warnings.extend(unchecked);

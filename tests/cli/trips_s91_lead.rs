@@ -60,8 +60,9 @@ fn runs_in_degrees_among_runs_in_radians_are_said_beside_the_other_refusals() {
 /// Every run of a campaign with the steer in degrees: no run's steer
 /// reads as radians against its yaw rate, so each is refused in its own
 /// words, which advise `degrees` under [runs] (one line for the five steps
-/// alike; two runs steer beyond ±90° read in radians, and the sine sweep,
-/// without a held steer, cannot be judged against its yaw rate).
+/// alike; two runs steer beyond ±90° read in radians). Since session 92
+/// the sine sweep, without a held steer, is judged by its lagged yaw rate
+/// too, and refused alike: 8 of 8, the first of 6 alike.
 #[test]
 fn a_campaign_all_in_degrees_is_advised_to_declare_them() {
     let dir = scratch(&[]);
@@ -69,10 +70,10 @@ fn a_campaign_all_in_degrees_is_advised_to_declare_them() {
     rewrite(&camp, "steer", &|_| true, &f64::to_degrees);
     let e = fails_cleanly("diagnose", &camp, dir.path());
     assert!(
-        e.starts_with("error: 7 of 8 runs refused, in run order:\n"),
+        e.starts_with("error: 8 of 8 runs refused, in run order:\n"),
         "{e}"
     );
-    assert!(e.contains("(the first of 5 runs refused alike)"), "{e}");
+    assert!(e.contains("(the first of 6 runs refused alike)"), "{e}");
     assert!(e.contains("is beyond ±90°"), "{e}");
     assert!(!e.contains("The other"), "{e}");
 }

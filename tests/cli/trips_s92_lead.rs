@@ -228,3 +228,54 @@ fn a_backwards_sweep_range_is_refused_at_its_end() {
         stderr(&o)
     );
 }
+
+/// Before: a log with its `steer` and `beta` columns exchanged was
+/// measured as it came (round 18: steady sideslip 1.0000°, gain −22.9 1/s
+/// on a car of gain +5.4). Now the warning leads with the exchange, from
+/// `beta`'s step read as a steer: at 15 m/s the linear car's gain is
+/// u/(l·(1 + K·u²)) = 4.431 1/s, so the yaw rate follows it with r/(u·δ)
+/// = 0.295 1/m, while the true sideslip, (b/l − m·a·u²/(l²·C_r))/(1 +
+/// K·u²) = 0.139 of the steer, read as the steer gives 2.125 1/m, above
+/// any car's.
+#[test]
+fn a_log_with_steer_and_beta_exchanged_is_said_to_look_so() {
+    let dir = scratch(&[(
+        "linear.toml",
+        "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n",
+    )]);
+    let scenario = format!(
+        "name = \"lin15\"\n{}[manoeuvre]\nkind = \"step-steer\"\nspeed = 15.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 9.0\n[simulation]\nstep = 0.001\n",
+        SEDAN.replace("tyre.toml", "linear.toml")
+    );
+    fs::write(dir.path().join("lin.toml"), scenario).unwrap();
+    let o = run_in(dir.path(), &["simulate", "lin.toml", "--out", "sim"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = fs::read_to_string(dir.path().join("sim/history.csv")).unwrap();
+    let write = |name: &str, swap: bool| {
+        let mut out = String::from("t,speed,steer,yaw_rate,ay,beta\n");
+        // History columns: t, steer, speed, beta, yaw_rate, ay; every
+        // 10 ms.
+        for line in text.lines().skip(1).step_by(10) {
+            let c: Vec<&str> = line.split(',').collect();
+            let (steer, beta) = if swap { (c[3], c[1]) } else { (c[1], c[3]) };
+            out.push_str(&format!(
+                "{},{},{steer},{},{},{beta}\n",
+                c[0], c[2], c[4], c[5]
+            ));
+        }
+        let path = dir.path().join(name);
+        fs::write(&path, out).unwrap();
+        path
+    };
+    let (_, w) = super::trips_s90_met::measured(&write("swapped.csv", true), &[]);
+    assert!(
+        w.starts_with("[\"`steer` and `beta` look exchanged: `steer` steps by 0.0014 rad, and the yaw rate answers it with r/(u·δ) = 2.125 1/m, no car's"),
+        "{w}"
+    );
+    assert!(w.contains("while `beta` steps by 0.0100 rad"), "{w}");
+    assert!(w.contains("r/(u·β) = 0.295 1/m"), "{w}");
+    let (j, w) = super::trips_s90_met::measured(&write("right.csv", false), &[]);
+    assert!(!w.contains("exchanged"), "{w}");
+    let gain = j["yaw_rate_gain"].as_f64().unwrap();
+    assert!((gain - 4.431).abs() < 2e-3, "{gain}");
+}

@@ -145,7 +145,12 @@ fn finer(kind: &StepKind, hz: f64) -> String {
             kind.name,
             range(b.response)
         ),
-        _ => "the log's rate reads it as finely as the table measures".to_string(),
+        Some(_) => format!(
+            "at this rate the table's logs read it within {RESPONSE_WITHIN} % at every placing of the step"
+        ),
+        None => format!(
+            "no rate of the table reads it within {RESPONSE_WITHIN} % at every placing of the step"
+        ),
     }
 }
 

@@ -10,7 +10,7 @@ use super::*;
 
 /// `synth --effects sensor_delay --seed 1`, its vehicle file's `from`
 /// line replaced by `to`.
-fn edited_campaign(dir: &Path, from: &str, to: &str) -> PathBuf {
+pub(crate) fn edited_campaign(dir: &Path, from: &str, to: &str) -> PathBuf {
     let c = synth_campaign(dir, "c", &["--effects", "sensor_delay", "--seed", "1"]);
     let v = c.join("vehicle.toml");
     let text = fs::read_to_string(&v).unwrap();

@@ -5,16 +5,7 @@
 
 use super::*;
 
-/// `synth --effects sensor_delay --seed 1`, its vehicle file's `from`
-/// line replaced by `to`.
-fn edited_campaign(dir: &Path, from: &str, to: &str) -> PathBuf {
-    let c = synth_campaign(dir, "c", &["--effects", "sensor_delay", "--seed", "1"]);
-    let v = c.join("vehicle.toml");
-    let text = fs::read_to_string(&v).unwrap();
-    assert!(text.contains(from), "{text}");
-    fs::write(&v, text.replace(from, to)).unwrap();
-    c
-}
+use super::trips_s90_diag::edited_campaign;
 
 /// The `verdict.evidence` entries of `kind`.
 fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {

@@ -5,17 +5,7 @@
 
 use super::*;
 
-/// `synth --effects sensor_delay --seed 1` (truth: a 0.05 s sensor delay,
-/// yaw inertia 2315 kg·m²), its vehicle file's `from` line replaced by
-/// `to`.
-fn edited_campaign(dir: &Path, from: &str, to: &str) -> PathBuf {
-    let c = synth_campaign(dir, "c", &["--effects", "sensor_delay", "--seed", "1"]);
-    let v = c.join("vehicle.toml");
-    let text = fs::read_to_string(&v).unwrap();
-    assert!(text.contains(from), "{text}");
-    fs::write(&v, text.replace(from, to)).unwrap();
-    c
-}
+use super::trips_s90_diag::edited_campaign;
 
 /// Before (round 19's campaign yi, the vehicle file's yaw inertia 1543
 /// where the truth is 2315): "steer_path+yaw_inertia explains the gap"

@@ -9,7 +9,7 @@
 use super::*;
 
 /// The verdict's evidence of `kind`.
-fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {
+pub(crate) fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {
     d["verdict"]["evidence"]
         .as_array()
         .unwrap()

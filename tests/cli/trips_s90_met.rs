@@ -12,13 +12,18 @@ use super::*;
 /// 25 m/s at 1 s over `rise_time` s, to 9 s, with `metrics` lines added
 /// under `[metrics]`: simulated at 1 kHz in `dir`, its history.
 pub(crate) fn tester_step(dir: &Path, rise_time: f64, metrics: &str) -> PathBuf {
+    tester_step_at(dir, 25.0, rise_time, metrics)
+}
+
+/// [`tester_step`] at `speed` m/s.
+pub(crate) fn tester_step_at(dir: &Path, speed: f64, rise_time: f64, metrics: &str) -> PathBuf {
     fs::write(
         dir.join("linear.toml"),
         "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n",
     )
     .unwrap();
     let scenario = format!(
-        "name = \"lin\"\n[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n[tyres]\nfront = \"linear.toml\"\n[model]\nkinematics = \"small-angle\"\nload_transfer = false\n[manoeuvre]\nkind = \"step-steer\"\nspeed = 25.0\nsteer = 0.01\nstart = 1.0\nrise_time = {rise_time}\nend = 9.0\n[simulation]\nstep = 0.001\n[metrics]\n{metrics}"
+        "name = \"lin\"\n[vehicle]\nmass = 1530.0\nyaw_inertia = 2315.0\na = 1.11\nb = 1.67\ntrack_front = 1.55\ntrack_rear = 1.55\ncg_height = 0.55\n[tyres]\nfront = \"linear.toml\"\n[model]\nkinematics = \"small-angle\"\nload_transfer = false\n[manoeuvre]\nkind = \"step-steer\"\nspeed = {speed:?}\nsteer = 0.01\nstart = 1.0\nrise_time = {rise_time}\nend = 9.0\n[simulation]\nstep = 0.001\n[metrics]\n{metrics}"
     );
     let path = dir.join("lin.toml");
     fs::write(&path, scenario).unwrap();

@@ -5,17 +5,8 @@
 
 use super::*;
 
+use super::trips_s63::evidence;
 use super::trips_s90_diag::edited_campaign;
-
-/// The `verdict.evidence` entries of `kind`.
-fn evidence<'a>(d: &'a serde_json::Value, kind: &str) -> Vec<&'a serde_json::Value> {
-    d["verdict"]["evidence"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|e| e["kind"] == kind)
-        .collect()
-}
 
 /// Before: a yaw inertia 1.5× the car's beside a sensor delay gave
 /// "sensor_delay+yaw_inertia explains the gap" with nothing saying the

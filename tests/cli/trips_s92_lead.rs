@@ -239,18 +239,9 @@ fn a_backwards_sweep_range_is_refused_at_its_end() {
 /// any car's.
 #[test]
 fn a_log_with_steer_and_beta_exchanged_is_said_to_look_so() {
-    let dir = scratch(&[(
-        "linear.toml",
-        "model = \"linear\"\ncornering_stiffness = 57296.0\npneumatic_trail = 0.03\n",
-    )]);
-    let scenario = format!(
-        "name = \"lin15\"\n{}[manoeuvre]\nkind = \"step-steer\"\nspeed = 15.0\nsteer = 0.01\nstart = 1.0\nrise_time = 0.1\nend = 9.0\n[simulation]\nstep = 0.001\n",
-        SEDAN.replace("tyre.toml", "linear.toml")
-    );
-    fs::write(dir.path().join("lin.toml"), scenario).unwrap();
-    let o = run_in(dir.path(), &["simulate", "lin.toml", "--out", "sim"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = fs::read_to_string(dir.path().join("sim/history.csv")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let history = super::trips_s90_met::tester_step_at(dir.path(), 15.0, 0.1, "");
+    let text = fs::read_to_string(history).unwrap();
     let write = |name: &str, swap: bool| {
         let mut out = String::from("t,speed,steer,yaw_rate,ay,beta\n");
         // History columns: t, steer, speed, beta, yaw_rate, ay; every

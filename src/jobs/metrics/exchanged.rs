@@ -28,9 +28,9 @@ fn ends(x: &[f64]) -> (f64, f64) {
     (mean(&x[..n]), mean(&x[x.len() - n..]))
 }
 
-/// The first time `x` passes `share` of its step from its start level.
-fn crossing(t: &[f64], x: &[f64], share: f64) -> Option<f64> {
-    let (a, b) = ends(x);
+/// The first time `x` passes `share` of its step from its start level
+/// `a` to its end level `b` ([`ends`]).
+fn crossing(t: &[f64], x: &[f64], (a, b): (f64, f64), share: f64) -> Option<f64> {
     let level = a + share * (b - a);
     let k = x
         .iter()
@@ -46,8 +46,7 @@ pub(super) fn exchanged(run: &MeasuredRun, response_time: f64) -> Option<String>
     if run.t.len() < 20 {
         return None;
     }
-    let (r0, r1) = ends(&run.yaw_rate);
-    let (b0, b1) = ends(beta);
+    let ((r0, r1), (b0, b1)) = (ends(&run.yaw_rate), ends(beta));
     let (s0, s1) = ends(&run.steer);
     let (dr, db, ds) = (r1 - r0, b1 - b0, s1 - s0);
     let u = run.speed.iter().sum::<f64>() / run.speed.len() as f64;
@@ -57,7 +56,8 @@ pub(super) fn exchanged(run: &MeasuredRun, response_time: f64) -> Option<String>
     if !steer_no_car || db.abs() <= ds.abs() {
         return None;
     }
-    let lag = crossing(&run.t, &run.yaw_rate, 0.9)? - crossing(&run.t, beta, 0.5)?;
+    let lag =
+        crossing(&run.t, &run.yaw_rate, (r0, r1), 0.9)? - crossing(&run.t, beta, (b0, b1), 0.5)?;
     let car = (CAR_RATIO.0..=CAR_RATIO.1).contains(&ratio);
     (car && lag > 0.0 && lag <= LONGEST_LAG).then(|| {
         format!(

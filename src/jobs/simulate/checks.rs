@@ -43,7 +43,7 @@ use crate::manoeuvre::Manoeuvre;
 use crate::metrics::applicability::{kinematic_turn, KINEMATIC_GRIP, SLIDING_SIDESLIP, STEER_RATE};
 use crate::sim::TimeHistory;
 use crate::tyre::mf::{MagicFormula, TyreSide};
-use crate::tyre::{Tyre, TyreModel};
+use crate::tyre::Tyre;
 use std::f64::consts::TAU;
 
 /// What `simulate` says: notes (facts of the run) and warnings (where the
@@ -189,12 +189,7 @@ fn largest_beyond(x: &[f64], limit: f64) -> Option<(f64, usize, usize)> {
 /// load on this road (friction scale included); infinite for a tyre with
 /// no limit (linear).
 fn static_friction(sc: &Scenario) -> [f64; 2] {
-    let (front, rear) = sc.model.vehicle.static_axle_loads();
-    let mu = sc.integrator.friction;
-    [
-        sc.model.front.friction_coefficient(0.5 * front, mu),
-        sc.model.rear.friction_coefficient(0.5 * rear, mu),
-    ]
+    super::unlimited::static_friction(&sc.model, sc.integrator.friction)
 }
 
 /// [`static_friction`] where both tyres have one.

@@ -11,15 +11,21 @@ use crate::constants::G;
 use crate::tyre::TyreModel;
 use crate::vehicle::VehicleModel;
 
+/// The peak friction coefficient of the front and rear tyres at static
+/// load on a road of friction `mu` (the friction scale); infinite for a
+/// tyre with no limit (linear).
+pub(crate) fn static_friction(model: &VehicleModel, mu: f64) -> [f64; 2] {
+    let (front, rear) = model.vehicle.static_axle_loads();
+    [
+        model.front.friction_coefficient(0.5 * front, mu),
+        model.rear.friction_coefficient(0.5 * rear, mu),
+    ]
+}
+
 /// Which axles' tyres have no friction limit, in words ("the front and
 /// rear tyres"), or `None` where both have one.
 pub(crate) fn unlimited_tyres(model: &VehicleModel) -> Option<&'static str> {
-    let (front, rear) = model.vehicle.static_axle_loads();
-    let unlimited = [
-        model.front.friction_coefficient(0.5 * front, 1.0),
-        model.rear.friction_coefficient(0.5 * rear, 1.0),
-    ]
-    .map(|mu| mu.is_infinite());
+    let unlimited = static_friction(model, 1.0).map(|mu| mu.is_infinite());
     match unlimited {
         [true, true] => Some("the front and rear tyres are"),
         [true, false] => Some("the front tyres are"),

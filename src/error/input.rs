@@ -42,11 +42,26 @@ pub enum CellProblem {
     },
 }
 
+/// `cell` with its one comma made a point, where that reads as a number
+/// and the comma is a decimal one (digits on both sides: `0,05`, `-1,5`;
+/// not a thousands separator's `1,000`, which a decimal point would make
+/// one, not a thousand).
+fn decimal_comma(cell: &str) -> Option<String> {
+    let (whole, fraction) = cell.split_once(',')?;
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let unsigned = whole.strip_prefix(['-', '+']).unwrap_or(whole);
+    let thousands = fraction.len() == 3 && unsigned != "0";
+    (digits(unsigned) && digits(fraction) && !thousands).then(|| format!("{whole}.{fraction}"))
+}
+
 impl CellProblem {
     fn describe(self, cell: &str) -> String {
         match self {
             CellProblem::NotANumber if cell.is_empty() => "empty cell: a number is needed".into(),
-            CellProblem::NotANumber => format!("`{cell}` is not a number"),
+            CellProblem::NotANumber => match decimal_comma(cell) {
+                Some(point) => format!("`{cell}` is not a number: a decimal comma? write {point} (a CSV number takes a decimal point)"),
+                None => format!("`{cell}` is not a number"),
+            },
             CellProblem::NotFinite => format!("{cell} is not a finite value"),
             CellProblem::UnitsRow => format!("no cell of this row is a number (`{cell}`): a row of units under the header? Delete it: the columns hold numbers in the units FORMATS.md gives them"),
             CellProblem::NotUtf8 { byte } => InputProblem::NotUtf8 { byte }.to_string(),

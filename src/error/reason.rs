@@ -202,8 +202,7 @@ pub enum ParamReason {
         /// The rear axle's, m.
         b: f64,
     },
-    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have
-    /// ([`DYNAMIC_INDEX`]).
+    /// A dynamic index `Iz/(m·a·b)` outside what a rigid vehicle can have ([`DYNAMIC_INDEX`]).
     #[error("with mass = {} kg it gives a radius of gyration √(yaw_inertia/mass) of {} m, against √(a·b) = {} m from the axles: yaw_inertia / (mass·a·b) = {}, outside {}–{} (road cars about 0.8–1.2, Milliken & Milliken); at an index of 1 the yaw inertia would be mass·a·b = {} kg·m²: check the value for a slipped digit and the units of mass and yaw_inertia (kg, kg·m²)", super::number::Num(*mass), crate::format::readable((index * ab).sqrt(), 3), crate::format::readable(ab.sqrt(), 3), crate::format::rounded(*index, 3), DYNAMIC_INDEX.0, DYNAMIC_INDEX.1, crate::format::readable(mass * ab, 4))]
     DynamicIndex {
         /// The index of the values given.
@@ -275,6 +274,12 @@ pub enum ParamReason {
     /// A stiffness axis whose step or count gives no value.
     #[error("no values (a step or count that gives none?)")]
     NoValuesFromRange,
+    /// A `{ from, to, count }` axis whose count of 1 cannot hold both ends (from, to).
+    #[error("a count of 1 cannot hold both `from` ({0}) and `to` ({1}): give a count of 2 or more, or the one value as a list")]
+    CountOfOneTwoEnds(f64, f64),
+    /// A value a map axis gives twice.
+    #[error("is given twice on this axis: every map point with it would be computed twice (give each value once)")]
+    RepeatedValue,
     /// An effect the equilibrium analysis does not model.
     #[error("not modelled by the equilibrium analysis (it has aero_load, road_bank and relaxation_length): switch it off or scale the tyre files")]
     NotInEquilibrium,
@@ -443,12 +448,10 @@ pub enum Limit {
     /// The upper end of a prior's 95 % range.
     #[error("a range's upper end must lie above its lower end")]
     PriorRange,
-    /// A prior's cornering coefficients beyond what the axle
-    /// identification represents.
+    /// A prior's cornering coefficients beyond what the axle identification represents.
     #[error("the axles identified from the runs have cornering coefficients of 0.4–4000 1/rad (a softer or stiffer axle is no tyre)")]
     PriorCornering,
-    /// A prior's peak friction beyond what the axle identification
-    /// represents.
+    /// A prior's peak friction beyond what the axle identification represents.
     #[error("the axles identified from the runs have a peak friction of 0.11–9")]
     PriorFriction,
     /// The particles of each effect fit's swarm.
@@ -519,8 +522,7 @@ pub enum Limit {
     /// A tyre's cornering stiffness, N/rad.
     #[error("no tyre's cornering stiffness reaches 2e6 N/rad (a car tyre's is 5e4–1.5e5, a truck tyre's about 3e5); the key is in N/rad, per wheel: check the unit")]
     CorneringStiffness,
-    /// A tyre's cornering stiffness below any tyre's: in N/deg, the value
-    /// `given` said converted.
+    /// A tyre's cornering stiffness below any tyre's: in N/deg, the value `given` said converted.
     #[error("no tyre's cornering stiffness is below 900 N/rad (a bicycle tyre's is about 5e3, a car tyre's 5e4–1.5e5); the key is in N/rad, per wheel: is the value in N/deg? multiply it by 57.3 ({} N/deg is {} N/rad)", super::number::Num(*given), crate::format::rounded(given.to_degrees(), 5))]
     CorneringStiffnessInDegrees {
         /// The value given, N/rad as read.
@@ -540,12 +542,10 @@ pub enum Limit {
         /// B·C·D, 1/rad as read.
         per_load: f64,
     },
-    /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too
-    /// small: in kN/deg.
+    /// A PAC89 file's largest cornering stiffness `a3` (N/deg), too small: in kN/deg.
     #[error("PAC89's cornering stiffness is BCD = a3·sin(2·atan(Fz/a4)), in N/deg (the model's slip angle is in degrees, its force in N), so |a3| bounds it: no tyre's is below 15 N/deg (900 N/rad; a car tyre's a3 is 1000–3000 N/deg): is the value in kN/deg? multiply it by 1000")]
     Pac89CorneringStiffnessInKn,
-    /// A UniTire file's cornering stiffness per unit load `p3`, too small:
-    /// per degree.
+    /// A UniTire file's cornering stiffness per unit load `p3`, too small: per degree.
     #[error("UniTire's cornering stiffness is K = Fz·(p3 + p4·Fzn + p5·Fzn²) per unit tan α, so p3 (`p[2]`) is K/Fz at light load, 10–25 for a road or racing tyre: no tyre's is below 0.9: are p3, p4 and p5 per degree? multiply them by 57.3")]
     UniTireCorneringStiffness,
     /// A UniTire file's longitudinal slip stiffness per unit load `p3`, too
@@ -566,8 +566,7 @@ pub enum Limit {
     /// A pneumatic trail, m.
     #[error("a tyre's pneumatic trail is a few centimetres; the key is in metres: is the value in millimetres? (30 mm is 0.03)")]
     PneumaticTrail,
-    /// A Magic Formula file's unloaded radius `given`, m, and the unit
-    /// slip its direction says.
+    /// A Magic Formula file's unloaded radius `given`, m, and the unit slip its direction says.
     #[error("{}", unloaded_radius(*given))]
     UnloadedRadius {
         /// The radius as read, m.

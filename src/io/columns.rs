@@ -80,9 +80,32 @@ impl Columns {
 /// line at its `\n`, and in a CRLF file a record ends at the `\r`: the next
 /// record's position then sits on the `\n` not yet counted, one line short
 /// (a NaN on line 3 was reported on line 2, a bad first row on the header's).
+///
+/// The reader's position of a record may also sit before the comment and
+/// blank lines it skipped to reach it (seen on a file's last record: a bad
+/// cell on line 805 was reported on line 803): those lines are stepped
+/// over to the record's own.
 fn line_of(bytes: &[u8], p: &csv::Position) -> usize {
-    let uncounted = bytes.get(p.byte() as usize) == Some(&b'\n');
-    p.line() as usize + usize::from(uncounted)
+    let mut at = p.byte() as usize;
+    let mut line = p.line() as usize;
+    if bytes.get(at) == Some(&b'\n') {
+        line += 1;
+        at += 1;
+    }
+    loop {
+        let skipped = match bytes.get(at) {
+            Some(b'\r') if bytes.get(at + 1) == Some(&b'\n') => 2,
+            Some(b'\n' | b'\r') => 1,
+            Some(b'#') => match bytes[at..].iter().position(|&b| b == b'\n') {
+                Some(end) => end + 1,
+                None => break,
+            },
+            _ => break,
+        };
+        at += skipped;
+        line += 1;
+    }
+    line
 }
 
 /// Where the CSV reader found a byte that is not UTF-8: the byte, its
@@ -116,8 +139,18 @@ fn not_utf8(bytes: &[u8], e: &csv::Error) -> Option<BadByte> {
     })
 }
 
-/// Long names of the time column that a logger writes.
-const TIME_NAMES: [&str; 4] = ["time", "timestamp", "time_s", "t_s"];
+/// Long names of the time column that a logger writes, in English and in
+/// the German and French of European loggers' exports (`Zeit`, `temps`),
+/// matched with a unit after them too (`Time [s]`).
+const TIME_NAMES: [&str; 7] = [
+    "time",
+    "timestamp",
+    "time_s",
+    "t_s",
+    "elapsed",
+    "zeit",
+    "temps",
+];
 
 /// Symbols of the textbooks that loggers and exports write for a run's
 /// columns, and the column each stands for: `r` for the yaw rate and `δ`
@@ -178,7 +211,11 @@ fn meant(
     required: &[&str],
     optional: &[&str],
 ) -> Option<(usize, String)> {
-    let time = |h: &str| name == "t" && TIME_NAMES.contains(&h.to_lowercase().as_str());
+    let time = |h: &str| {
+        name == "t"
+            && (TIME_NAMES.contains(&h.to_lowercase().as_str())
+                || TIME_NAMES.contains(&first_word(h).as_str()))
+    };
     // The name in capitals (`FZ`), then with a unit after it (`FZ_kN`) or
     // as a rig's channel (`SA`), then the nearest spelling: `MZ` is one
     // letter from `fz` in capitals but means `mz`, and was named for `fz`

@@ -344,6 +344,17 @@ impl Values<'_> {
         let v = axis.values().ok_or_else(|| {
             self.error(ParamError::without_value(key, ParamReason::TooManyValues))
         })?;
+        if let Axis::Count { from, to, count: 1 } = *axis {
+            let why = ParamReason::CountOfOneTwoEnds(from, to);
+            return Err(self.error(ParamError::without_value(&format!("{key}.count"), why)));
+        }
+        if let Some((i, &x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x)) {
+            let at = match axis {
+                Axis::List(_) => format!("{key}[{i}]"),
+                _ => key.to_string(),
+            };
+            return Err(self.error(ParamError::new(&at, x, ParamReason::RepeatedValue)));
+        }
         if v.is_empty() {
             return Err(self.error(ParamError::without_value(
                 key,
@@ -406,6 +417,14 @@ impl Values<'_> {
                 })
                 .collect()
         };
+        // A tolerance is a half-width: one below zero met no map point
+        // and was said as "er = 0.13 ± -0.005: 0 map points meet it".
+        for (list, v) in [("targets", &inv.targets), ("constraints", &inv.constraints)] {
+            for (i, t) in v.iter().enumerate() {
+                let key = format!("inverse.{list}[{i}].tolerance");
+                ParamError::positive(&key, t.tolerance).map_err(|e| self.error(e))?;
+            }
+        }
         let reference = inv.reference;
         self.tyre_like("inverse.reference.front", &[reference.front])?;
         self.tyre_like("inverse.reference.rear", &[reference.rear])?;

@@ -246,6 +246,47 @@ fn expand(v: &Values, axis: &str, src: &TomlSource) -> Result<Vec<f64>, InputErr
     Ok(given.into_iter().map(|x| x * k).collect())
 }
 
+/// The conditions of the `[report] phase_portraits` entries, each value
+/// checked as a sweep's is (in SI: an entry has no unit key), at its own
+/// key: a portrait at a negative speed or at 30 rad of steer was drawn.
+fn portrait_conditions(
+    src: &TomlSource,
+    specs: &[PortraitSpec],
+) -> Result<Vec<Condition>, InputError> {
+    specs
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let key = |name: &str| format!("report.phase_portraits[{i}].{name}");
+            let speed = &key("speed");
+            let friction = &key("friction");
+            let checked = road_wheel_steer(&key("steer"), p.steer)
+                .and_then(|()| match p.speed {
+                    x if x <= 0.0 => ParamError::positive(speed, x),
+                    x => {
+                        ParamError::in_range(speed, x, MIN_SPEED, MAX_SPEED, Limit::ManoeuvreSpeed)
+                    }
+                })
+                .and_then(|()| match p.friction {
+                    x if x <= 0.0 => ParamError::positive(friction, x),
+                    x => ParamError::in_range(
+                        friction,
+                        x,
+                        0.0,
+                        MAX_ROAD_FRICTION,
+                        Limit::RoadFriction,
+                    ),
+                });
+            checked.map_err(|e| param_error(src, None, e))?;
+            Ok(Condition {
+                steer: p.steer,
+                friction: p.friction,
+                speed: p.speed,
+            })
+        })
+        .collect()
+}
+
 /// Refuses effects the equilibrium analysis does not model: its residual
 /// ([`VehicleModel::equilibrium_residual`]) has the papers' model with aero
 /// load and bank; the effects it leaves out are the model's to name
@@ -339,15 +380,7 @@ pub fn load_sweep(path: &Path) -> Result<Sweep, InputError> {
             vec![first, last]
         }
     } else {
-        f.report
-            .phase_portraits
-            .iter()
-            .map(|p| Condition {
-                steer: p.steer,
-                friction: p.friction,
-                speed: p.speed,
-            })
-            .collect()
+        portrait_conditions(&src, &f.report.phase_portraits)?
     };
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()

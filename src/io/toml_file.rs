@@ -488,10 +488,10 @@ impl TomlSource {
         walk(doc.as_table(), "", visit)
     }
 
-    /// Byte span of the value at dotted `key_path` (`vehicle.mass`), of
-    /// an element of an array (`lateral.p[3]`), or of the key where its
-    /// value is a table: an error points at what is wrong, as toml's own
-    /// errors of type do.
+    /// Byte span of the value at dotted `key_path` (`vehicle.mass`), of an
+    /// array's element or its table's key (`p[3]`, `portraits[1].speed`),
+    /// or of the key where its value is a table: an error points at what
+    /// is wrong, as toml's own errors of type do.
     pub(crate) fn key_span(&self, key_path: &str) -> Option<Span> {
         let doc = toml_edit::ImDocument::parse(self.text.as_str()).ok()?;
         let mut table: &dyn toml_edit::TableLike = doc.as_table();
@@ -515,7 +515,16 @@ impl TomlSource {
                     .or_else(|| key.span())
                     .or_else(|| item.span());
             }
-            table = item.as_table_like()?;
+            // An element of an array of tables (`[[a]]` or `a = [{ … }]`):
+            // `report.phase_portraits[1].speed`.
+            table = match (index, item) {
+                (Some(k), toml_edit::Item::ArrayOfTables(a)) => a.get(k)?,
+                (Some(k), toml_edit::Item::Value(toml_edit::Value::Array(a))) => {
+                    a.get(k)?.as_inline_table()?
+                }
+                (Some(_), _) => return None,
+                (None, _) => item.as_table_like()?,
+            };
         }
         None
     }

@@ -199,9 +199,14 @@ impl LateralForceOf for Gim {
         // e^0 is 1 exactly: at n = 0 the value is K's, bit for bit.
         let k = stiffness * ((s.fz / self.reference_load).ln() * exponent).exp();
         let t = safe_tan_of(s.alpha);
-        // As in [`Gim::cornering`]: zero at no slip whatever θ.
+        // As in [`Gim::cornering`]: zero at no slip whatever θ, with the
+        // slope there, K·tan α (μFz·3θ|t| to first order: the decay of
+        // friction with slip is second order). Returning a constant zero
+        // would drop the derivative, and with it the stiffness of straight
+        // running from every exact Jacobian (equilibria's stability at
+        // β = r = 0 read "degenerate").
         if t == 0.0 {
-            return zero;
+            return k * t;
         }
         let mu = friction * s.mu_scale / (decay * t.abs() + 1.0);
         if mu <= 0.0 {

@@ -208,6 +208,16 @@ pub struct CgTooLow {
 /// ten times the value's where that is a vehicle's.
 pub(super) fn cg_too_low(c: &CgTooLow) -> String {
     let (h, track, max) = (c.cg_height, c.track, c.max);
+    // A height of 0 has no stability factor to quote (it is infinite): the
+    // centre of gravity on the road, which no vehicle's is.
+    if h == 0.0 {
+        return format!(
+            "a cg_height of 0 puts the centre of gravity on the road, which no vehicle's is (and makes its static stability factor track/(2·cg_height) infinite): the rule asks for a cg_height of at least track/(2·{}) = {} m on the narrower track ({} m)",
+            rounded(max, 3),
+            rounded(track / (2.0 * max), 3),
+            rounded(track, 4),
+        );
+    }
     let tips_at = track / (2.0 * h);
     let head = format!(
         "the static stability factor track/(2·cg_height) on the narrower track ({} m) is {} g, above {} g, more than any vehicle's (a road car's is 1.0–1.5 g, NHTSA; a Formula 1 car's or a kart's about 2.5–3): the rule asks for a cg_height of at least track/(2·{max}) = {} m",

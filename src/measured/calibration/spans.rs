@@ -6,24 +6,8 @@
 //! dropout. Indices are the run's samples; spans are `[lo, hi)`.
 
 use super::report::{Criteria, RejectedStraight, Rejection};
-use crate::measured::clean::{median, median_interval, GAP_INTERVALS};
+use crate::measured::clean::{gapless, median, median_interval};
 use crate::measured::MeasuredRun;
-
-/// The run's pieces `[lo, hi)` between its time gaps (steps longer than
-/// [`GAP_INTERVALS`] median intervals).
-fn gapless(t: &[f64]) -> Vec<(usize, usize)> {
-    let dt = median_interval(t);
-    let mut out = Vec::new();
-    let mut lo = 0;
-    for i in 1..t.len() {
-        if t[i] - t[i - 1] > GAP_INTERVALS * dt {
-            out.push((lo, i));
-            lo = i;
-        }
-    }
-    out.push((lo, t.len()));
-    out
-}
 
 /// Centred running median of `x` over `2h + 1` samples (fewer at the ends).
 fn running_median(x: &[f64], h: usize) -> Vec<f64> {

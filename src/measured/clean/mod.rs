@@ -2,8 +2,9 @@
 //! and the glitches of real loggers (`FORMATS.md`), found, treated and
 //! listed before any replay or score.
 //!
-//! - Time gaps longer than five median sample intervals split a run (a
-//!   replay cannot bridge a dropout).
+//! - Time gaps split a run (a replay cannot bridge a dropout): an interval
+//!   longer than five times the median interval on each side of it
+//!   (`gaps.rs`; a change of the logger's rate is no gap).
 //! - Glitches are found on every sample of the driving and response channels
 //!   (steer, speed; yaw rate, ay, beta) with robust statistics of the
 //!   channel itself. Its scale is `σ_d = 1.4826·MAD(Δx)`, the robust spread
@@ -58,9 +59,10 @@
 //!
 //! Layout: this file holds the thresholds and the settings; `report.rs` the
 //! report types; `glitches.rs` the detection and treatment of glitches in
-//! one channel; `pieces.rs` the time gaps, slow spans and pieces, and the
+//! one channel; `gaps.rs` the time gaps; `pieces.rs` the slow spans and pieces, and the
 //! cleaning entry points; `inject.rs` glitches injected for tests.
 
+mod gaps;
 mod glitches;
 mod held;
 mod inject;
@@ -71,6 +73,7 @@ mod settled;
 #[cfg(test)]
 mod test_signals;
 
+pub(crate) use gaps::gapless;
 pub use glitches::treat_glitches;
 pub(crate) use glitches::{median, median_interval, midpoint_median, quantile};
 pub use held::treat_held;
@@ -115,7 +118,7 @@ pub(crate) const MAX_ZERO_RUN: usize = 10;
 pub(crate) const MIN_STUCK: usize = 5;
 /// Samples on each side of a hold that show how the channel moves there.
 pub(crate) const STUCK_CONTEXT: usize = 10;
-/// A time gap: this many median sample intervals.
+/// A time gap: this many of the median sample intervals around it.
 pub(crate) const GAP_INTERVALS: f64 = 5.0;
 
 /// Cleaning settings.

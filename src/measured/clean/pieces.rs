@@ -9,7 +9,7 @@ use super::held::treat_held;
 use super::report::{
     CleaningReport, Glitch, GlitchKind, Piece, RunChannel, SlowKind, SlowSpan, Treatment,
 };
-use super::{CleanSettings, GAP_INTERVALS, STANDSTILL_SPEED};
+use super::{CleanSettings, STANDSTILL_SPEED};
 use crate::error::PieceRefusal;
 use crate::measured::MeasuredRun;
 use std::path::{Path, PathBuf};
@@ -93,27 +93,23 @@ pub fn slice(run: &MeasuredRun, lo: usize, hi: usize, label: &str) -> MeasuredRu
     }
 }
 
-/// The index ranges `[lo, hi)` between time gaps of a run, listing the gaps.
+/// The index ranges `[lo, hi)` between time gaps of a run
+/// ([`super::gaps`]), listing the gaps.
 fn split_times(run: &MeasuredRun, report: &mut CleaningReport) -> Vec<(usize, usize)> {
-    let med = super::median_interval(&run.t);
-    let mut bounds = vec![0];
-    for i in 1..run.t.len() {
-        if run.t[i] - run.t[i - 1] > GAP_INTERVALS * med {
-            bounds.push(i);
-            report.push_glitch(Glitch {
-                run: run.path.display().to_string(),
-                t: run.t[i - 1],
-                channel: RunChannel::T,
-                kind: GlitchKind::TimeGap,
-                value: run.t[i] - run.t[i - 1],
-                samples: 0,
-                treatment: Treatment::Split,
-                dropped_with: None,
-            });
-        }
+    let pieces = super::gapless(&run.t);
+    for &(_, i) in &pieces[..pieces.len() - 1] {
+        report.push_glitch(Glitch {
+            run: run.path.display().to_string(),
+            t: run.t[i - 1],
+            channel: RunChannel::T,
+            kind: GlitchKind::TimeGap,
+            value: run.t[i] - run.t[i - 1],
+            samples: 0,
+            treatment: Treatment::Split,
+            dropped_with: None,
+        });
     }
-    bounds.push(run.t.len());
-    bounds.windows(2).map(|w| (w[0], w[1])).collect()
+    pieces
 }
 
 /// The longest run of samples above the slow threshold, inside a slow

@@ -58,6 +58,23 @@ fn window_words(w: &WindowGap, unit: &str) -> String {
     )
 }
 
+/// A significant window said as a stretch, or, where at least half the
+/// run's windows are beyond their threshold, as a gap along the run (a
+/// uniform offset read "a gap in one stretch" from its worst window while
+/// 29 of 29 windows exceeded theirs).
+fn stretch_words(w: &WindowGap, unit: &str) -> String {
+    if 2 * w.windows_significant >= w.windows_tested.max(1) {
+        format!(
+            " a gap along the run, not in one stretch: {} of its {} windows of {WINDOW} s lie beyond what pure noise reaches (the largest: {})",
+            w.windows_significant,
+            w.windows_tested,
+            window_words(w, unit)
+        )
+    } else {
+        format!(" a gap in one stretch: {}", window_words(w, unit))
+    }
+}
+
 fn bias_words(bias: f64, b: &BiasTest, unit: &str) -> String {
     format!(
         "{} {unit} ({:.1} standard errors of {:.2e} {unit}, over {:.0} effective samples)",
@@ -93,7 +110,7 @@ pub(super) fn verdict(s: &Said) -> String {
         let mut v = format!("no significant gap over the whole run (RMS {rms:.4} {unit}, within three noise floors: {}), but", floors_words(noise_floor, unit));
         let mut parts = Vec::new();
         if let Some(w) = found.window {
-            parts.push(format!(" a gap in one stretch: {}", window_words(w, unit)));
+            parts.push(stretch_words(w, unit));
         }
         if found.bias.significant {
             parts.push(format!(

@@ -84,6 +84,9 @@ pub struct WindowGap {
     pub threshold_noise_floors: f64,
     /// Windows tested.
     pub windows_tested: usize,
+    /// Windows whose RMS is above their threshold: all or most of them is
+    /// a gap along the run (an offset), not in one stretch.
+    pub windows_significant: usize,
     /// Its RMS above the threshold.
     pub significant: bool,
 }
@@ -196,7 +199,7 @@ pub(super) fn worst_window(
         .collect();
     let m = starts.len();
     let z = upper_normal_quantile(FALSE_ALARM / m.max(1) as f64);
-    starts
+    let windows: Vec<WindowGap> = starts
         .into_iter()
         .filter_map(|start| {
             let end = start + WINDOW;
@@ -217,12 +220,21 @@ pub(super) fn worst_window(
                 noise_floors: floors,
                 threshold_noise_floors: threshold,
                 windows_tested: m,
+                windows_significant: 0,
                 significant: resolved && floors > threshold,
             })
         })
+        .collect();
+    let windows_significant = windows.iter().filter(|w| w.significant).count();
+    windows
+        .into_iter()
         .max_by(|a, b| {
             let ratio = |w: &WindowGap| w.noise_floors / w.threshold_noise_floors;
             ratio(a).total_cmp(&ratio(b))
+        })
+        .map(|w| WindowGap {
+            windows_significant,
+            ..w
         })
 }
 

@@ -73,3 +73,52 @@ fn a_linear_study_calls_the_points_past_the_critical_speed_unstable_not_sliding(
         "{said}"
     );
 }
+
+/// A speed sweep of an oversteering car on linear tyres (front 60, rear
+/// 30 kN/rad per wheel) at zero steer: its straight running goes from
+/// stable node to saddle at √(−l/K) = 33.198 m/s, with one equilibrium all
+/// along. The crossing is located and reported — the terminal, the CSV and
+/// summary.json — within 0.1 % of the closed form.
+#[test]
+fn an_equilibria_speed_sweep_reports_the_critical_speed_of_the_closed_form() {
+    let sweep = format!(
+        "name = \"lin_speed\"\n{VEHICLE}[tyres]\nfront = \"front.toml\"\nrear = \"rear.toml\"\n\
+         [model]\nkinematics = \"small-angle\"\nload_transfer = false\n\
+         [sweep]\nsteer = 0.0\nfriction = 1.0\nspeed = {{ from = 20.0, to = 45.0, step = 5.0 }}\n[pso]\nseed = 1\n"
+    );
+    let dir = scratch(&[
+        ("sweep.toml", &sweep),
+        ("front.toml", "model = \"linear\"\ncornering_stiffness = 60000.0\n"),
+        ("rear.toml", "model = \"linear\"\ncornering_stiffness = 30000.0\n"),
+    ]);
+    let o = run_in(dir.path(), &["equilibria", "sweep.toml", "--out", "out"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    let (m, a, b): (f64, f64, f64) = (1530.0, 1.11, 1.67);
+    let l = a + b;
+    let k = m / l * (b / 120_000.0 - a / 60_000.0);
+    let closed = (-l / k).sqrt();
+    assert!((closed - 33.198).abs() < 1e-3, "{closed}");
+    let out = dir.path().join("out");
+    let summary = read_json(&out.join("summary.json"));
+    let found: Vec<&serde_json::Value> = summary["bifurcations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|b| b["kind"] == "zero-eigenvalue" && b["axis"] == "speed")
+        .collect();
+    assert_eq!(found.len(), 1, "{summary}");
+    let u = found[0]["at"]["speed"].as_f64().unwrap();
+    assert!((u - closed).abs() < 1e-3 * closed, "{u} against {closed}");
+    assert_eq!(found[0]["kinds"], serde_json::json!(["stable-node", "saddle"]));
+    let c = summary["critical_speed_closed_form"].as_f64().unwrap();
+    assert!((c - closed).abs() < 1e-9 * closed, "{c}");
+    let csv = fs::read_to_string(out.join("bifurcations.csv")).unwrap();
+    let row = csv.lines().find(|r| r.starts_with("zero-eigenvalue,speed,")).expect(&csv);
+    let speed: f64 = row.split(',').nth(4).unwrap().parse().unwrap();
+    assert!((speed - closed).abs() < 1e-3 * closed, "{row}");
+    assert!(
+        said.contains(&format!("critical speed {closed:.4} m/s ({:.2} km/h): an eigenvalue crosses zero, stable-node below, saddle above", 3.6 * closed)),
+        "{said}"
+    );
+}

@@ -88,8 +88,14 @@ fn an_equilibria_speed_sweep_reports_the_critical_speed_of_the_closed_form() {
     );
     let dir = scratch(&[
         ("sweep.toml", &sweep),
-        ("front.toml", "model = \"linear\"\ncornering_stiffness = 60000.0\n"),
-        ("rear.toml", "model = \"linear\"\ncornering_stiffness = 30000.0\n"),
+        (
+            "front.toml",
+            "model = \"linear\"\ncornering_stiffness = 60000.0\n",
+        ),
+        (
+            "rear.toml",
+            "model = \"linear\"\ncornering_stiffness = 30000.0\n",
+        ),
     ]);
     let o = run_in(dir.path(), &["equilibria", "sweep.toml", "--out", "out"]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -110,11 +116,17 @@ fn an_equilibria_speed_sweep_reports_the_critical_speed_of_the_closed_form() {
     assert_eq!(found.len(), 1, "{summary}");
     let u = found[0]["at"]["speed"].as_f64().unwrap();
     assert!((u - closed).abs() < 1e-3 * closed, "{u} against {closed}");
-    assert_eq!(found[0]["kinds"], serde_json::json!(["stable-node", "saddle"]));
+    assert_eq!(
+        found[0]["kinds"],
+        serde_json::json!(["stable-node", "saddle"])
+    );
     let c = summary["critical_speed_closed_form"].as_f64().unwrap();
     assert!((c - closed).abs() < 1e-9 * closed, "{c}");
     let csv = fs::read_to_string(out.join("bifurcations.csv")).unwrap();
-    let row = csv.lines().find(|r| r.starts_with("zero-eigenvalue,speed,")).expect(&csv);
+    let row = csv
+        .lines()
+        .find(|r| r.starts_with("zero-eigenvalue,speed,"))
+        .expect(&csv);
     let speed: f64 = row.split(',').nth(4).unwrap().parse().unwrap();
     assert!((speed - closed).abs() < 1e-3 * closed, "{row}");
     assert!(

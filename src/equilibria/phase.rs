@@ -230,7 +230,7 @@ pub(crate) fn arrowhead(points: &[[f64; 2]], bx: &SearchBox) -> Option<Arrowhead
     let (a, b) = (points[i - 1], points[i]);
     let d = [(b[0] - a[0]) / s[0], (b[1] - a[1]) / s[1]];
     let n = d[0].hypot(d[1]);
-    if !(n > 0.0) {
+    if n.is_nan() || n <= 0.0 {
         return None;
     }
     let (u, v) = ([d[0] / n, d[1] / n], [-d[1] / n, d[0] / n]);

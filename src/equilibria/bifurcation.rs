@@ -19,6 +19,12 @@
 //!   zero and checked the same way. With a tyre lag the eigenvalues are the
 //!   full state's ([`super::lagged`]), so a Hopf point the lag brings is
 //!   found too.
+//! - Zero eigenvalue: an equilibrium continued between neighbouring
+//!   conditions whose det J changes sign with no change in the count (the
+//!   straight-running car past its critical speed, where on linear tyres
+//!   the one equilibrium stays at (0, 0) and goes from node to saddle);
+//!   bisected with Newton continuation to det J = 0 and checked the same
+//!   way. Along speed this is the critical speed.
 
 use super::exact;
 use super::lagged;
@@ -80,6 +86,11 @@ pub enum BifurcationKind {
     Pitchfork,
     /// Hopf.
     Hopf,
+    /// A real eigenvalue of a continued equilibrium crosses zero with no
+    /// change in the count of equilibria (det J changes sign on the
+    /// branch): along speed, the straight-running car's critical speed,
+    /// √(−l/K) on linear tyres (Genta 1997; Milliken & Milliken 1995).
+    ZeroEigenvalue,
 }
 
 impl BifurcationKind {
@@ -89,6 +100,7 @@ impl BifurcationKind {
             BifurcationKind::Fold => "fold",
             BifurcationKind::Pitchfork => "pitchfork",
             BifurcationKind::Hopf => "hopf",
+            BifurcationKind::ZeroEigenvalue => "zero-eigenvalue",
         }
     }
 }
@@ -338,7 +350,52 @@ fn hopf(
     })
 }
 
-/// Every fold and Hopf point along a line of conditions ordered by `axis`,
+/// Locates where det J of the branch from `ea` at `a` to `eb` at `b`
+/// crosses zero (a real eigenvalue through zero; the count unchanged).
+fn zero_eigenvalue(
+    model: &VehicleModel,
+    axis: Axis,
+    a: &Condition,
+    ea: &Equilibrium,
+    b: &Condition,
+    eb: &Equilibrium,
+) -> Option<Bifurcation> {
+    let (mut pa, mut pb) = (axis.get(a), axis.get(b));
+    let (mut xa, mut xb) = ([ea.beta, ea.yaw_rate], [eb.beta, eb.yaw_rate]);
+    let da = ea.stability.determinant;
+    let tol = 1e-12 * (pa - pb).abs().max(1e-12);
+    while (pa - pb).abs() > tol {
+        let pm = 0.5 * (pa + pb);
+        let x0 = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
+        let cm = axis.with(a, pm);
+        let xm = polish(model, &cm, x0)?;
+        if lagged::classify(model, &cm, xm).determinant * da > 0.0 {
+            (pa, xa) = (pm, xm);
+        } else {
+            (pb, xb) = (pm, xm);
+        }
+    }
+    let p = 0.5 * (pa + pb);
+    let at = axis.with(a, p);
+    let x = polish(model, &at, xa).unwrap_or(xa);
+    let f = residual(model, &at, x);
+    let j = stability::jacobian(model, &at, x);
+    let det = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) / jacobian_scale(&j).powi(2);
+    let res = f[0].abs().max(f[1].abs());
+    Some(Bifurcation {
+        kind: BifurcationKind::ZeroEigenvalue,
+        axis,
+        at,
+        beta: x[0],
+        yaw_rate: x[1],
+        residual: res,
+        criterion: det,
+        kinds: [ea.stability.kind, eb.stability.kind],
+        verified: res <= 1e-8 && det.abs() <= 1e-6,
+    })
+}
+
+/// Every fold, Hopf and zero-eigenvalue point along a line of conditions ordered by `axis`,
 /// given the exact equilibria at each (all of them, not box-limited).
 pub(crate) fn locate(
     model: &VehicleModel,
@@ -355,7 +412,9 @@ pub(crate) fn locate(
             for (x, y) in ea.iter().zip(eb) {
                 let close = distance([x.beta, x.yaw_rate], [y.beta, y.yaw_rate], [0.1, 0.1]) < 1.0;
                 let (sx, sy) = (x.stability, y.stability);
-                if close
+                if close && sx.determinant * sy.determinant < 0.0 {
+                    out.extend(zero_eigenvalue(model, axis, ca, x, cb, y));
+                } else if close
                     && sx.determinant > 0.0
                     && sy.determinant > 0.0
                     && sx.eigenvalues[0].0 * sy.eigenvalues[0].0 < 0.0

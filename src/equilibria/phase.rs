@@ -203,6 +203,44 @@ pub(crate) fn separatrices(
     out
 }
 
+/// Length of an arrowhead along the flow, in box half-widths.
+pub const ARROW_LENGTH: f64 = 0.05;
+
+/// An arrowhead on an orbit: its tip and two barbs, (β, r) in rad, rad/s;
+/// the tip lies on the orbit, the barbs behind it, so that it points the
+/// way the orbit runs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arrowhead {
+    /// The tip, on the orbit.
+    pub tip: [f64; 2],
+    /// The two barbs, [`ARROW_LENGTH`] behind the tip and half as far to
+    /// either side.
+    pub barbs: [[f64; 2]; 2],
+}
+
+/// The arrowhead at the middle of an orbit traced along the flow
+/// ([`orbit`] with `direction` +1: the direction of increasing time), or
+/// `None` for an orbit too short to carry one (a start next to a node).
+pub(crate) fn arrowhead(points: &[[f64; 2]], bx: &SearchBox) -> Option<Arrowhead> {
+    if points.len() < 8 {
+        return None;
+    }
+    let s = bx.scale();
+    let i = points.len() / 2;
+    let (a, b) = (points[i - 1], points[i]);
+    let d = [(b[0] - a[0]) / s[0], (b[1] - a[1]) / s[1]];
+    let n = d[0].hypot(d[1]);
+    if n.is_nan() || n <= 0.0 {
+        return None;
+    }
+    let (u, v) = ([d[0] / n, d[1] / n], [-d[1] / n, d[0] / n]);
+    let barb = |side: f64| [0, 1].map(|k| b[k] + s[k] * ARROW_LENGTH * (-u[k] + 0.5 * side * v[k]));
+    Some(Arrowhead {
+        tip: b,
+        barbs: [barb(1.0), barb(-1.0)],
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -212,6 +250,49 @@ mod tests {
     /// How far inside the box a point lies: 0 on its edge, 1 at its centre.
     fn depth(bx: &SearchBox, x: [f64; 2]) -> f64 {
         1.0 - (x[0].abs() / bx.beta_max).max(x[1].abs() / bx.yaw_rate_max)
+    }
+
+    /// Every trajectory of the portrait's grid of starts carries its
+    /// arrowhead pointing the way the field flows there: from the barbs'
+    /// midpoint to the tip along +f (increasing time), never against it.
+    #[test]
+    fn a_trajectorys_arrowhead_points_along_the_flow() {
+        let m = equilibria_model(false);
+        let c = Condition {
+            steer: 0.05,
+            friction: 0.8,
+            speed: 70.0 / 3.6,
+        };
+        let bx = SearchBox {
+            beta_max: 0.6,
+            yaw_rate_max: 2.0 * 0.968,
+        };
+        let ends: Vec<[f64; 2]> = exact::solve(&m, &c)
+            .iter()
+            .map(|e| [e.beta, e.yaw_rate])
+            .collect();
+        let s = bx.scale();
+        let mut drawn = 0;
+        for i in 0..7 {
+            for k in 0..7 {
+                let o = orbit(&m, &c, &bx, grid_point(&bx, 7, i, k), 1.0, 0.01, &ends);
+                let Some(a) = arrowhead(&o, &bx) else {
+                    continue;
+                };
+                drawn += 1;
+                assert!(o.contains(&a.tip));
+                let back = [0, 1].map(|j| 0.5 * (a.barbs[0][j] + a.barbs[1][j]));
+                let along = [0, 1].map(|j| (a.tip[j] - back[j]) / s[j]);
+                let f = residual(&m, &c, a.tip);
+                let fs = [f[0] / s[0], f[1] / s[1]];
+                let cos = (along[0] * fs[0] + along[1] * fs[1])
+                    / (along[0].hypot(along[1]) * fs[0].hypot(fs[1]));
+                assert!(cos > 0.99, "arrow {a:?} against the field {f:?}: cos {cos}");
+                let len = along[0].hypot(along[1]);
+                assert!((len - ARROW_LENGTH).abs() < 1e-9, "{len}");
+            }
+        }
+        assert!(drawn >= 40, "{drawn} of 49 trajectories carry an arrowhead");
     }
 
     #[test]

@@ -21,6 +21,7 @@ use crate::error::{named, NameKind, OptionsError};
 use crate::manoeuvre::Manoeuvre;
 use crate::metrics::{step_metrics, MetricSettings, StepMetrics};
 use crate::sim::Integrator;
+use crate::tyre::{Tyre, TyreModel};
 use crate::vehicle::{State, VehicleModel};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -48,6 +49,17 @@ pub struct Sample {
     pub k_rear: f64,
     /// Its metrics (`None` when the response has no steady state).
     pub metrics: Option<StepMetrics>,
+    /// Where neither axle's tyre has a friction limit and the combination
+    /// oversteers past its critical speed: (critical speed √(−l/K), the
+    /// step's speed), m/s. The linear car's steady turn is then unstable
+    /// (Genta 1997; Milliken & Milliken 1995) and its response diverges
+    /// with no grip limit to stop it: [`Response::Unstable`].
+    #[serde(default)]
+    pub unstable: Option<(f64, f64)>,
+    /// Neither axle's tyre has a friction limit (linear): a large sideslip
+    /// is then no slide past a grip ([`Response::LargeSideslip`]).
+    #[serde(default)]
+    pub unlimited: bool,
 }
 
 impl Study {
@@ -77,7 +89,34 @@ impl Study {
             k_front,
             k_rear,
             metrics,
+            unstable: self.unstable(&m),
+            unlimited: self.unlimited(&m),
         }
+    }
+
+    /// Whether neither of `m`'s axles' tyres has a friction limit.
+    fn unlimited(&self, m: &VehicleModel) -> bool {
+        let (front, rear) = m.vehicle.static_axle_loads();
+        let mu = self.integrator.friction;
+        let unlimited = |t: &Tyre, fz: f64| t.friction_coefficient(0.5 * fz, mu).is_infinite();
+        unlimited(&m.front, front) && unlimited(&m.rear, rear)
+    }
+
+    /// (critical speed, step speed), m/s, where `m`'s tyres have no
+    /// friction limit on either axle and the step runs above the critical
+    /// speed ([`Sample::unstable`]). With a limit on an axle the car
+    /// finds the limit instead, and its response says what happened there.
+    fn unstable(&self, m: &VehicleModel) -> Option<(f64, f64)> {
+        if !self.unlimited(m) {
+            return None;
+        }
+        let u_crit = m.critical_speed()?;
+        let mn = &self.manoeuvre;
+        let speed = [mn.start_time(), mn.end_time()]
+            .map(|t| mn.speed(t))
+            .into_iter()
+            .fold(0.0_f64, f64::max);
+        (speed > u_crit).then_some((u_crit, speed))
     }
 
     /// Er of one combination (NaN where the response is no handling

@@ -6,6 +6,10 @@
 //! overshoot: the best-looking number of the map for the worst car. Such a
 //! point is flagged, counted and left out of the maps, the network and the
 //! inverse, as [`crate::metrics::applicability`] says of a single run.
+//! On tyres with no friction limit (linear) there is no grip to slide past:
+//! a point past its critical speed √(−l/K) (Genta 1997; Milliken & Milliken
+//! 1995) is unstable, decided by that closed form and said with both
+//! speeds, whatever sideslip the run happened to reach.
 //! A slow response that is still converging at the step's end (its trend
 //! heads a little further, but slows: no divergence) is a handling
 //! response whose steady values are a little short: it stays in the maps,
@@ -25,9 +29,20 @@ pub enum Response {
     /// A handling response still converging at the step's end: its steady
     /// values head a share (carried) of their step further. Kept in the maps.
     StillSettling(f64),
-    /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°): the car
-    /// slides past its grip. Carries the sideslip, rad.
+    /// Tyres with no friction limit on an oversteering car above its
+    /// critical speed √(−l/K): the steady turn is unstable and the response
+    /// diverges, with no grip to slide past. Carries (critical speed, the
+    /// step's speed), m/s.
+    Unstable(f64, f64),
+    /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°) on tyres with
+    /// a friction limit: the car slides past its grip. Carries the
+    /// sideslip, rad.
     Sliding(f64),
+    /// The steady sideslip passes [`SLIDING_SIDESLIP`] (10°) on tyres with
+    /// no friction limit, below the critical speed: a steady turn, but at a
+    /// sideslip far outside the range where a linear tyre stands for a real
+    /// one (Pacejka 2012, §1.3). Carries the sideslip, rad.
+    LargeSideslip(f64),
     /// The response has not settled by the end of the step (the yaw rate,
     /// lateral acceleration or sideslip still moving: a car diverging
     /// from its steady turn).
@@ -37,12 +52,18 @@ pub enum Response {
 }
 
 impl Response {
-    /// The response of a run with metrics `m` (`None`: none measured).
-    pub fn of(m: Option<&StepMetrics>) -> Self {
+    /// The response of a run with metrics `m` (`None`: none measured);
+    /// `unstable` is [`Sample::unstable`], decided by the closed form
+    /// before anything the run measured.
+    pub fn of(m: Option<&StepMetrics>, unstable: Option<(f64, f64)>, unlimited: bool) -> Self {
+        if let Some((critical, speed)) = unstable {
+            return Response::Unstable(critical, speed);
+        }
         let Some(m) = m else {
             return Response::NoSteadyState;
         };
         match m.beta_steady.filter(|b| b.abs() > SLIDING_SIDESLIP) {
+            Some(beta) if unlimited => Response::LargeSideslip(beta),
             Some(beta) => Response::Sliding(beta),
             None if !m.settled => match m.settling.only_converging() {
                 Some(heads) => Response::StillSettling(heads),
@@ -61,7 +82,9 @@ impl Response {
     pub fn word(self) -> &'static str {
         match self {
             Response::Handling | Response::StillSettling(_) => "handling",
+            Response::Unstable(..) => "unstable",
             Response::Sliding(_) => "sliding",
+            Response::LargeSideslip(_) => "large_sideslip",
             Response::NotSettled => "not_settled",
             Response::NoSteadyState => "no_steady_state",
         }
@@ -77,8 +100,15 @@ impl Response {
                 "still settling at the end of the step: a steady value heads {} % of its step further; metrics kept, a longer step settles them",
                 crate::format::significant(100.0 * heads, 2)
             )),
+            Response::Unstable(critical, speed) => Some(format!(
+                "unstable: oversteering (K < 0) at {speed:.2} m/s, past its critical speed sqrt(-l/K) = {critical:.2} m/s; the tyres have no friction limit, so the response diverges without bound; no handling response, metrics left empty"
+            )),
             Response::Sliding(beta) => Some(format!(
                 "steady sideslip {:.1} deg, beyond 10 deg: the car slides past its grip; no handling response, metrics left empty",
+                beta.to_degrees()
+            )),
+            Response::LargeSideslip(beta) => Some(format!(
+                "steady sideslip {:.1} deg, beyond 10 deg, on tyres with no friction limit: far outside the range where a linear tyre stands for a real one; no handling response, metrics left empty",
                 beta.to_degrees()
             )),
             Response::NotSettled => Some(
@@ -93,7 +123,7 @@ impl Response {
 impl Sample {
     /// What this combination's response is.
     pub fn response(&self) -> Response {
-        Response::of(self.metrics.as_ref())
+        Response::of(self.metrics.as_ref(), self.unstable, self.unlimited)
     }
 
     /// The metrics where they describe a handling response ([`Response`]).
@@ -105,6 +135,12 @@ impl Sample {
 /// How many of a set of samples are no handling response, by kind.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct NotHandling {
+    /// Unstable past their critical speed, on tyres with no friction limit.
+    pub unstable: usize,
+    /// The lowest critical speed of the unstable ones, m/s.
+    pub lowest_critical_speed: Option<f64>,
+    /// Beyond 10° of steady sideslip on tyres with no friction limit.
+    pub large_sideslip: usize,
     /// Sliding (steady sideslip beyond 10°).
     pub sliding: usize,
     /// Not settled by the end of the step (and not sliding).
@@ -126,12 +162,20 @@ impl NotHandling {
             match s.response() {
                 Response::Handling => {}
                 Response::StillSettling(_) => n.still_settling += 1,
+                Response::Unstable(critical, _) => {
+                    n.unstable += 1;
+                    let low = n
+                        .lowest_critical_speed
+                        .map_or(critical, |c| c.min(critical));
+                    n.lowest_critical_speed = Some(low);
+                }
                 Response::Sliding(beta) => {
                     n.sliding += 1;
                     if n.largest_sideslip.is_none_or(|b: f64| beta.abs() > b.abs()) {
                         n.largest_sideslip = Some(beta);
                     }
                 }
+                Response::LargeSideslip(_) => n.large_sideslip += 1,
                 Response::NotSettled => n.not_settled += 1,
                 Response::NoSteadyState => n.without_steady_state += 1,
             }
@@ -141,6 +185,10 @@ impl NotHandling {
 
     /// All of them.
     pub fn total(&self) -> usize {
-        self.sliding + self.not_settled + self.without_steady_state
+        self.unstable
+            + self.sliding
+            + self.large_sideslip
+            + self.not_settled
+            + self.without_steady_state
     }
 }

@@ -1,6 +1,6 @@
 //! PNG figures of equilibrium sweeps: branch diagrams (stable solid,
 //! unstable dashed, folds marked), phase portraits (vector field,
-//! trajectories, equilibria, saddle separatrices, computed in
+//! trajectories with arrowheads in the direction of flow, equilibria, saddle separatrices, computed in
 //! [`crate::equilibria::phase`]) and stability maps over two swept
 //! parameters. Angles are drawn in degrees, speeds in km/h, for reading.
 
@@ -233,14 +233,18 @@ pub fn phase_portrait(
     // Trajectories from a grid of starts, each to a node or out of the box.
     let ends: Vec<[f64; 2]> = eqs.iter().map(|e| [e.beta, e.yaw_rate]).collect();
     let m = 7;
+    let mut heads = Vec::new();
     for i in 0..m {
         for k in 0..m {
             let x0 = phase::grid_point(bx, m, i, k);
-            let (tx, ty) = in_degrees(&phase::orbit(model, c, bx, x0, 1.0, 0.01, &ends));
+            let orbit = phase::orbit(model, c, bx, x0, 1.0, 0.01, &ends);
+            let (tx, ty) = in_degrees(&orbit);
             let label = if i + k == 0 { "trajectories" } else { "" };
             series.push(Series::line(label, &tx, &ty, stability::TRAJECTORY));
+            heads.extend(phase::arrowhead(&orbit, bx));
         }
     }
+    series.push(arrowheads(&heads));
     series.extend(separatrices(model, c, bx, eqs));
     series.extend(searched(search));
     series.extend(equilibrium_markers(eqs, bx));
@@ -264,6 +268,17 @@ pub fn phase_portrait(
         row_height: 800,
     }
     .save(path)
+}
+
+/// The trajectories' arrowheads (direction of increasing time), two
+/// segments each from the barbs to the tip, in the trajectories' colour.
+fn arrowheads(heads: &[phase::Arrowhead]) -> Series {
+    let points: Vec<[f64; 2]> = heads
+        .iter()
+        .flat_map(|a| [a.barbs[0], a.tip, a.barbs[1], a.tip])
+        .collect();
+    let (x, y) = in_degrees(&points);
+    Series::line("", &x, &y, stability::TRAJECTORY).styled(Style::Segments)
 }
 
 /// The search box's yaw-rate bounds as dashed lines across the portrait,

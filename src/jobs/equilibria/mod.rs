@@ -56,6 +56,11 @@ pub struct EquilibriaSummary {
     pub conditions_with_continua: usize,
     /// Bifurcations located.
     pub bifurcations: Vec<Bifurcation>,
+    /// The closed-form critical speed √(−l/K) of the linear bicycle model
+    /// (Genta 1997), m/s, where neither axle's tyre has a friction limit
+    /// and the car oversteers (K < 0); null otherwise. A zero-eigenvalue
+    /// point along speed is checked against it.
+    pub critical_speed_closed_form: Option<f64>,
 }
 
 /// The report of `equilibria`.
@@ -218,6 +223,7 @@ fn report(
         equilibria_in_box_histogram: counts,
         conditions_with_continua: res.points.iter().filter(|p| !p.continua.is_empty()).count(),
         bifurcations: res.bifurcations.clone(),
+        critical_speed_closed_form: linear_critical_speed(&sw.model),
     };
     let mut r = EquilibriaReport {
         summary,
@@ -307,6 +313,7 @@ impl EquilibriaReport {
                 b.criterion,
                 if b.verified { "verified" } else { "NOT verified" }
             ));
+            out.extend(critical_speed_line(b, s.critical_speed_closed_form));
         }
         out.extend(
             self.leftovers
@@ -409,6 +416,39 @@ const BIFURCATIONS_HEADER: [&str; 12] = [
     "kind_b",
     "verified",
 ];
+
+/// The closed-form critical speed where both axles' tyres have no friction
+/// limit ([`EquilibriaSummary::critical_speed_closed_form`]).
+fn linear_critical_speed(model: &crate::vehicle::VehicleModel) -> Option<f64> {
+    let unlimited = crate::jobs::simulate::unlimited::static_friction(model, 1.0);
+    if unlimited.iter().all(|mu| mu.is_infinite()) {
+        model.critical_speed()
+    } else {
+        None
+    }
+}
+
+/// The line under a zero-eigenvalue point along speed: the critical speed,
+/// in km/h too, and the closed form where it applies.
+fn critical_speed_line(b: &Bifurcation, closed_form: Option<f64>) -> Option<String> {
+    use crate::equilibria::bifurcation::{Axis, BifurcationKind};
+    if b.axis != Axis::Speed || b.kind != BifurcationKind::ZeroEigenvalue {
+        return None;
+    }
+    let u = b.at.speed;
+    let against = closed_form.map_or_else(String::new, |c| {
+        format!(
+            "; closed form sqrt(-l/K) of these linear tyres {c:.4} m/s ({:+.2e} %)",
+            100.0 * (u - c) / c
+        )
+    });
+    Some(format!(
+        "    critical speed {u:.4} m/s ({:.2} km/h): an eigenvalue crosses zero, {} below, {} above{against}",
+        3.6 * u,
+        b.kinds[0].name(),
+        b.kinds[1].name()
+    ))
+}
 
 /// One row per bifurcation.
 fn bifurcation_rows(r: &SweepResult) -> impl Iterator<Item = Vec<String>> + '_ {

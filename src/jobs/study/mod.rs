@@ -38,7 +38,18 @@ pub struct StudySummary {
     pub unit: StiffnessUnit,
     /// Combinations whose response has no steady state.
     pub without_steady_state: usize,
-    /// Combinations whose steady sideslip passes 10°: sliding, no handling
+    /// Combinations on tyres with no friction limit that oversteer past
+    /// their critical speed √(−l/K): unstable, no handling response (their
+    /// metrics are left out).
+    pub unstable: usize,
+    /// The lowest critical speed of the unstable ones, m/s.
+    pub lowest_critical_speed: Option<f64>,
+    /// Combinations whose steady sideslip passes 10° on tyres with no
+    /// friction limit (below their critical speed): far outside a linear
+    /// tyre's range, no handling response (their metrics are left out).
+    pub large_sideslip: usize,
+    /// Combinations whose steady sideslip passes 10° on tyres with a
+    /// friction limit: sliding, no handling
     /// response (their metrics are left out).
     pub sliding: usize,
     /// Combinations (not sliding) whose response has not settled by the
@@ -353,7 +364,10 @@ impl Job {
                 study: sc.name.clone(),
                 unit,
                 without_steady_state: not_handling.without_steady_state,
+                unstable: not_handling.unstable,
+                lowest_critical_speed: not_handling.lowest_critical_speed,
                 sliding: not_handling.sliding,
+                large_sideslip: not_handling.large_sideslip,
                 not_settled: not_handling.not_settled,
                 still_settling: not_handling.still_settling,
                 largest_sideslip: not_handling.largest_sideslip,

@@ -73,11 +73,20 @@ fn empty_cells(m: &StepMetrics) -> String {
 /// The terminal's line on the combinations that are no handling response,
 /// where there are any.
 pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
-    let total = s.sliding + s.not_settled + s.without_steady_state;
+    let total = s.unstable + s.sliding + s.large_sideslip + s.not_settled + s.without_steady_state;
     if total == 0 {
         return None;
     }
     let mut kinds = Vec::new();
+    if s.unstable > 0 {
+        let lowest = s
+            .lowest_critical_speed
+            .map_or_else(String::new, |u| format!(", the lowest {u:.2} m/s"));
+        kinds.push(format!(
+            "{} are unstable: they oversteer (K < 0) past their critical speed sqrt(-l/K){lowest}, on tyres with no friction limit, so the response diverges",
+            s.unstable
+        ));
+    }
     if s.sliding > 0 {
         let most = s
             .largest_sideslip
@@ -85,6 +94,12 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
         kinds.push(format!(
             "{} slide (steady sideslip beyond 10°{most})",
             s.sliding
+        ));
+    }
+    if s.large_sideslip > 0 {
+        kinds.push(format!(
+            "{} turn at a steady sideslip beyond 10° on tyres with no friction limit (far outside a linear tyre's range)",
+            s.large_sideslip
         ));
     }
     if s.not_settled > 0 {
@@ -134,7 +149,10 @@ mod tests {
             study: "s".into(),
             unit: StiffnessUnit::NPerDeg,
             without_steady_state: 0,
+            unstable: 0,
+            lowest_critical_speed: None,
             sliding: 6,
+            large_sideslip: 0,
             not_settled: 1,
             still_settling: 0,
             largest_sideslip: Some(-1.0),

@@ -27,6 +27,7 @@ pub mod calibration;
 pub mod candidates;
 pub mod evidence;
 pub mod family;
+pub mod lacking;
 mod request;
 pub mod separation;
 

@@ -100,6 +100,7 @@ pub fn run(path: &Path, out: Option<&Path>) -> Result<DiagnoseReport, Error> {
         crate::diagnose::diagnose(&campaign, Some(progress.counter()))?
     };
     diagnosis.source_absolute = std::fs::canonicalize(&campaign.source).ok();
+    crate::design::lacking::fill(&campaign, &mut diagnosis);
     Ok(DiagnoseReport {
         // The candidates fitted (those the runs can show): every one is
         // ranked or screened.
@@ -295,9 +296,12 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     );
     out.extend(d.confounded.iter().map(|c| {
         format!(
-            "confounded: {} — separate them with {}",
+            "confounded: {} — {}",
             joined(&c.effects, ", "),
-            words::separating_test(c)
+            c.separating_runs.as_ref().map_or_else(
+                || format!("separate them with {}", words::separating_test(c)),
+                |s| s.words()
+            )
         )
     }));
     if !d.verdict.effects().is_empty() {

@@ -131,12 +131,21 @@ fn verdict(p: &mut Page, d: &Diagnosis) {
             "warning",
             &format!(
                 "Confounded: the runs do not tell {} apart (their held-out gaps lie \
-                 within the confounding window the verdict states). A test that shows one \
-                 of these signatures separates them:",
-                joined(&c.effects, " and ")
+                 within the confounding window the verdict states). {}",
+                joined(&c.effects, " and "),
+                if c.separating_runs.is_some() {
+                    "What separates them:"
+                } else {
+                    "A test that shows one of these signatures separates them:"
+                }
             ),
         );
-        let tests: Vec<String> = c.effects.iter().map(|e| words::signatures(&[*e])).collect();
+        // On a base with no friction limit the signatures' tests at the
+        // limit separate nothing: what the replays separate instead.
+        let tests: Vec<String> = match &c.separating_runs {
+            Some(s) => vec![s.words()],
+            None => c.effects.iter().map(|e| words::signatures(&[*e])).collect(),
+        };
         p.lines(&tests);
     }
 }

@@ -148,6 +148,7 @@ mod told_apart_tests {
         let group = || Confounded {
             effects: vec![A, S, F],
             reduction_percent: vec![90.0, 89.0, 88.0],
+            separating_runs: None,
         };
         let mut c = vec![group()];
         told_apart(&mut c, &[row(vec![S, B], true), row(vec![F, B], false)]);

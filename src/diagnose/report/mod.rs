@@ -12,6 +12,7 @@ mod lookalike;
 pub mod outcome;
 pub(crate) mod parts;
 mod rank_warning;
+pub mod separating;
 pub(crate) mod summary;
 pub(crate) mod trust;
 mod values;
@@ -138,6 +139,11 @@ pub struct Confounded {
     pub effects: Vec<EffectKind>,
     /// Their reductions, %.
     pub reduction_percent: Vec<f64>,
+    /// On a base with no friction limit, what the design's replays of the
+    /// fitted candidates separate them by instead of the signatures'
+    /// tests (filled in by the `diagnose` job; None elsewhere).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub separating_runs: Option<separating::SeparatingRuns>,
 }
 
 /// Noise floor and scale of a channel.

@@ -123,6 +123,7 @@ pub(crate) fn confounded_with(
             .iter()
             .map(|x| base.rank(x).reduction_percent)
             .collect(),
+        separating_runs: None,
     }]
 }
 

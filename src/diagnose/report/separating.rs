@@ -1,0 +1,178 @@
+//! What separates confounded effects on a base model with no friction
+//! limit, as the design's replays measure it.
+//!
+//! Each effect's signature names the test that shows it (a ramp steer to
+//! the limit, steps at two speeds, …). On a base whose tyres are linear
+//! (`Fy = C·α`, no friction limit: Pacejka 2012, §1.3) or whose identified
+//! peak friction was held at its prior (the runs never approach the
+//! limit), nothing saturates in the base's replays, so a test "to the
+//! limit" separates nothing there; and a signature may name runs the
+//! campaign already has. Instead the fitted candidates are replayed on the
+//! manoeuvres of the design's family the campaign has not driven
+//! (`crate::design`, filled in by the `diagnose` job), and the one whose
+//! predicted responses differ most is advised, with the channel where they
+//! differ most.
+//!
+//! Units: separations D in noise floors (`crate::design::separation`);
+//! speeds m/s; a channel's difference in its own unit (rad/s, m/s², rad).
+
+use crate::diagnose::effects::EffectKind;
+use crate::diagnose::model::channels::Channel;
+use crate::diagnose::report::BaseReport;
+use crate::tyre::TyreModel;
+use serde::Serialize;
+
+/// Why the base model has no friction limit the runs' replays reach.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NoLimit {
+    /// Its tyres (given files) are linear.
+    LinearTyres,
+    /// Its axles were identified from runs that never approach the limit:
+    /// the peak friction was held at its prior's value.
+    FrictionHeld,
+}
+
+impl NoLimit {
+    /// Why `base` has no friction limit, or None where it has one.
+    pub fn of(base: &BaseReport) -> Option<Self> {
+        // Any load: a linear tyre's friction coefficient is infinite at all.
+        let unlimited = |t: &crate::tyre::Tyre| t.friction_coefficient(4000.0, 1.0).is_infinite();
+        if unlimited(&base.front) || unlimited(&base.rear) {
+            return Some(Self::LinearTyres);
+        }
+        let held = base
+            .axles
+            .as_ref()
+            .is_some_and(|a| a.parameters.iter().any(|p| p.held));
+        held.then_some(Self::FrictionHeld)
+    }
+
+    /// In words, as a reason.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::LinearTyres => {
+                "the base model's tyres are linear, with no friction limit, so a test at the limit separates nothing on it"
+            }
+            Self::FrictionHeld => {
+                "the base model's peak friction is held at its prior (the runs never approach the limit), so what a test at the limit shows is not known on it"
+            }
+        }
+    }
+}
+
+/// The manoeuvre the campaign lacks that separates two candidates most.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LackingRun {
+    /// Its name (`handling design` writes a scenario file of it).
+    pub name: String,
+    /// What the driver does.
+    pub description: String,
+    /// The separation D of the two candidates' predicted responses.
+    pub separation: f64,
+    /// The channel whose part of D is largest.
+    pub channel: Channel,
+    /// That channel's part of D (its own sum of squares, rooted).
+    pub channel_separation: f64,
+    /// The largest |difference| of the two predictions in that channel,
+    /// its unit.
+    pub peak_difference: f64,
+    /// Its noise floor, its unit.
+    pub noise_floor: f64,
+    /// The manoeuvre's kind in words, plural ("sweeps").
+    pub kind: String,
+    /// The speed it is driven at, m/s.
+    pub speed: f64,
+    /// The speeds of the campaign's runs of that kind, m/s (empty: the
+    /// campaign has none of that kind).
+    pub campaign_speeds: Vec<f64>,
+}
+
+/// What separates the reference from one look-alike.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairRun {
+    /// The reference (the verdict's effect).
+    pub reference: EffectKind,
+    /// The look-alike.
+    pub other: EffectKind,
+    /// The best manoeuvre the campaign lacks, when it separates them by
+    /// more than a noise floor.
+    pub best: Option<LackingRun>,
+    /// The largest separation of any manoeuvre the campaign lacks (NaN:
+    /// none replayed).
+    pub largest: f64,
+    /// Manoeuvres of the family replayed (those the campaign lacks,
+    /// within the limits).
+    pub replayed: usize,
+}
+
+/// The separating runs of a confounded set on a base without a limit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SeparatingRuns {
+    /// Why the signatures' tests do not apply.
+    pub no_limit: NoLimit,
+    /// One per look-alike.
+    pub pairs: Vec<PairRun>,
+}
+
+fn kmh(speeds: &[f64]) -> String {
+    let v: Vec<String> = speeds.iter().map(|u| format!("{:.0}", u * 3.6)).collect();
+    format!("{} km/h", v.join(", "))
+}
+
+/// One pair's advice, in words.
+fn pair_words(p: &PairRun) -> String {
+    let (a, b) = (p.reference.name(), p.other.name());
+    let Some(r) = &p.best else {
+        let largest = if p.largest.is_finite() {
+            format!("at most D = {:.1}", p.largest)
+        } else {
+            "none could be replayed".to_string()
+        };
+        return format!(
+            "{a} from {b}: none of the {} separates them by a noise floor ({largest}): on this base model they predict the same responses",
+            p.replayed
+        );
+    };
+    let has = if r.campaign_speeds.is_empty() {
+        format!("the campaign has no {}", r.kind)
+    } else {
+        format!(
+            "the campaign's {} are at {}",
+            r.kind,
+            kmh(&r.campaign_speeds)
+        )
+    };
+    let unit = r.channel.unit();
+    format!(
+        "{a} from {b}: {} ({}; {has}): their predicted responses differ by D = {:.1} noise floors, most in {} (D = {:.1} of it; up to {} {unit} apart, its noise floor {} {unit})",
+        r.description,
+        r.name,
+        r.separation,
+        r.channel.name(),
+        r.channel_separation,
+        crate::format::readable(r.peak_difference, 3),
+        crate::format::readable(r.noise_floor, 3),
+    )
+}
+
+impl SeparatingRuns {
+    /// The advice, in words: why the signatures do not apply, then each
+    /// pair's run.
+    pub fn words(&self) -> String {
+        let pairs: Vec<String> = self.pairs.iter().map(pair_words).collect();
+        let remedy = if self.pairs.iter().any(|p| p.best.is_none()) {
+            match self.no_limit {
+                NoLimit::LinearTyres => "; tyres with a friction limit (rig data) give the base the saturation a test at the limit needs",
+                NoLimit::FrictionHeld => "; runs nearer the limit let the diagnosis identify the peak friction a test at the limit needs",
+            }
+        } else {
+            ""
+        };
+        format!(
+            "{}; the candidates as fitted, replayed on the manoeuvres of the design's family the campaign has not driven (a kind at a speed it has no run of), predict: {}{remedy}",
+            self.no_limit.words(),
+            pairs.join("; ")
+        )
+    }
+}

@@ -457,6 +457,7 @@ mod trips_s91_perf;
 mod trips_s92_diag;
 mod trips_s92_lead;
 mod trips_s92_met;
+mod trips_s93_met;
 mod trips_simulate;
 mod trips_units;
 mod tyre_eval;

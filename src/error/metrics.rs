@@ -126,6 +126,19 @@ pub enum MetricsError {
     /// A response never reaches 90 % of its steady value.
     #[error("the {0} never reaches 90 % of its steady-state value")]
     NoCrossing(&'static str),
+    /// The response grows away from every steady value as exp(λ·t): an
+    /// unstable car, with no steady state to measure.
+    #[error("the {channel} diverges after the step: over {from:.2}–{to:.2} s it grows as exp(t/τ), its growth rate fitted from the log λ = {} 1/s (time constant τ = 1/λ = {} s, doubling every {} s), not towards a steady value: an unstable car (one that oversteers, above its critical speed √(−l/K)) has no steady state, so no steady-state gain, response times, peak, E_r, E_ay or Er are given; a step below the critical speed measures the car's handling", crate::format::significant(*rate, 3), crate::format::significant(1.0 / rate, 3), crate::format::significant(std::f64::consts::LN_2 / rate, 3))]
+    Diverges {
+        /// The channel that diverges.
+        channel: &'static str,
+        /// Its growth rate λ, 1/s.
+        rate: f64,
+        /// The stretch it was fitted on, s.
+        from: f64,
+        /// Its end, s.
+        to: f64,
+    },
     /// The steer leaves its initial value inside the initial window: the
     /// record starts too close to the step to read the initial values.
     #[error("the steer moves by more than 5 % of its step at {moved:.2} s, inside the initial window ({from:.2}–{to:.2} s) whose means are the initial values: the record starts too close to the step; a step-steer record needs the steer held for `pre_window` = {} s before the step; one of at most {} s ends before it moves", Num(to - from), super::hundredths_down(moved - from + 1e-11))]

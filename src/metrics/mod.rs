@@ -51,6 +51,7 @@ pub use settling::{ChannelSettling, Settling, JUDGED_NOISES};
 
 pub mod applicability;
 pub(crate) mod continuous;
+mod divergence;
 
 /// The lowest low-pass cut-off the metrics take, Hz (exclusive): below it
 /// the filter is slower than the response ([`crate::error::Limit::FilterCutoff`]).
@@ -494,6 +495,10 @@ pub(crate) fn step_metrics(
     // time zero: at a crawl the lateral acceleration (through v̇) leads the
     // steer's half-way point, and a search from t₀ would find t₀ itself.
     let onset = first_crossing(t, &d.values, 0.05, t[0]).unwrap_or(t0);
+    // A yaw rate growing exponentially once the steer is held: refused.
+    let held = first_crossing(t, &d.values, 0.9, onset).unwrap_or(onset);
+    let sd_r = noise_deviation(yaw_rate);
+    divergence::refuse(t, &yaw_rate_f, held, sd_r, r.steady)?;
     let tr =
         first_crossing(t, &r.values, 0.9, onset).ok_or(MetricsError::NoCrossing("yaw rate"))?;
     let ta = match &a {

@@ -13,7 +13,7 @@ use std::fs;
 /// yaw_rate, ay) resampled at `hz` from `t0` s by linear interpolation as
 /// the tester's `resamp.py` does (`x0·(1 − w) + x1·w`, which writes a held
 /// steer back with an ulp of jitter), to 9 s, written to `dir/name`.
-fn resampled(history: &Path, hz: f64, t0: f64, dir: &Path, name: &str) -> PathBuf {
+pub(crate) fn resampled(history: &Path, hz: f64, t0: f64, dir: &Path, name: &str) -> PathBuf {
     let text = fs::read_to_string(history).unwrap();
     let rows: Vec<Vec<f64>> = text
         .lines()

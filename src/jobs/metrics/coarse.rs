@@ -129,18 +129,59 @@ fn range(r: Range) -> String {
 /// response time at every placing: the rate advised to read it finer.
 const RESPONSE_WITHIN: f64 = 10.0;
 
+/// The ramp of [`RAMPED`], s: a log whose sample interval is as long can
+/// not tell it from an instant step, for at some placings the whole ramp
+/// falls between two samples (at 10 Hz, 46 of 200 placings read its rise
+/// under one interval, as an instant step's), and at others a sample on
+/// it reads a rise an instant step never shows only by chance.
+const RAMP: f64 = 0.1;
+
+/// The slowest rate of `kind`'s table that reads the response time within
+/// [`RESPONSE_WITHIN`] at every placing (none: no rate does).
+fn within(kind: &StepKind) -> Option<&Bias> {
+    let ok =
+        |b: &&Bias| b.response.0.abs() <= RESPONSE_WITHIN && b.response.1.abs() <= RESPONSE_WITHIN;
+    kind.rows.iter().rev().find(ok)
+}
+
+/// The step whose table the advice of a log at `hz` is read from: `kind`,
+/// the shape its steer reads; but a log too coarse to tell [`RAMPED`] from
+/// [`INSTANT`] (its interval as long as the ramp) reads one or the other by
+/// where its samples fall, so it is advised by the stricter of the two
+/// (the one that needs the faster log), the same at every placing, and
+/// says so.
+fn advised_kind(kind: &StepKind, hz: f64) -> (&StepKind, Option<String>) {
+    if 1.0 / hz < RAMP * (1.0 - 1e-6) {
+        return (kind, None);
+    }
+    let need = |k: &StepKind| within(k).map_or(f64::INFINITY, |b| b.hz);
+    let stricter = match need(&INSTANT) >= need(&RAMPED) {
+        true => &INSTANT,
+        false => &RAMPED,
+    };
+    let note = format!(
+        "; a {} Hz log cannot tell a step ramped over {RAMP} s from an instant one (at some placings the whole ramp falls between two samples), so the advice is the stricter one, the {}'s",
+        crate::format::rounded(hz, 3),
+        stricter.name
+    );
+    (stricter, Some(note))
+}
+
 /// The rate advice for a response time of a log at `hz` holding a step
 /// of `kind`: the slowest rate of the table that reads it within
 /// [`RESPONSE_WITHIN`] at every placing. From the step and the table, not
 /// from the time read: that moves with where the samples fall (a 7 Hz
 /// log was told "log at 9 Hz or faster" at one placing and "at 11 Hz" at
-/// the next, and at 10 Hz an instant step still reads −23 … +40 %).
+/// the next, and at 10 Hz an instant step still reads −23 … +40 %); and
+/// on a log too coarse to tell the tables' steps apart, from the stricter
+/// ([`advised_kind`]: a 10 Hz log of the ramped step was advised 12.5 Hz
+/// at one placing and 50 Hz at the next).
 fn finer(kind: &StepKind, hz: f64) -> String {
-    let within =
-        |b: &&Bias| b.response.0.abs() <= RESPONSE_WITHIN && b.response.1.abs() <= RESPONSE_WITHIN;
-    match kind.rows.iter().rev().find(within) {
+    let (kind, note) = advised_kind(kind, hz);
+    let note = note.unwrap_or_default();
+    match within(kind) {
         Some(b) if b.hz > hz * (1.0 + 1e-3) => format!(
-            "log at {} Hz or faster to read it finer (the {} read it {} there)",
+            "log at {} Hz or faster to read it finer (the {} read it {} there){note}",
             b.hz,
             kind.name,
             range(b.response)
@@ -149,7 +190,7 @@ fn finer(kind: &StepKind, hz: f64) -> String {
             "at this rate the table's logs read it within {RESPONSE_WITHIN} % at every placing of the step"
         ),
         None => format!(
-            "no rate of the table reads it within {RESPONSE_WITHIN} % at every placing of the step"
+            "no rate of the table reads it within {RESPONSE_WITHIN} % at every placing of the step{note}"
         ),
     }
 }

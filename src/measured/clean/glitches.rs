@@ -420,11 +420,37 @@ fn steer_step_floor(steer: &[f64]) -> f64 {
     (0.5 * range).max(SPIKE_MADS * sigma).max(1e-12)
 }
 
+/// Repairs the speed's zero reads no car can drive
+/// ([`super::speed_dropout`]) and lists them in `report`: before the
+/// slow samples are read, where such a sample would be a standstill.
+fn speed_dropouts(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
+    let found = super::speed_dropout::impossible_zeros(&run.t, &run.speed, min_speed);
+    let mut bad = vec![false; run.t.len()];
+    for &(start, len) in &found {
+        bad[start..start + len].iter_mut().for_each(|b| *b = true);
+        report.samples_repaired += len;
+        report.push_glitch(Glitch {
+            run: run.path.display().to_string(),
+            t: run.t[start],
+            channel: RunChannel::Speed,
+            kind: GlitchKind::ZeroRead,
+            value: 0.0,
+            samples: len,
+            treatment: Treatment::Repaired,
+            dropped_with: None,
+        });
+    }
+    if !found.is_empty() {
+        repair(&run.t, &mut run.speed, &bad);
+    }
+}
+
 /// Finds the glitches of one run (a piece between time gaps), repairs its
 /// inputs, masks its responses, and lists what it found in `report`.
 pub fn treat_glitches(run: &mut MeasuredRun, min_speed: f64, report: &mut CleaningReport) {
     let name = run.path.display().to_string();
     let n = run.t.len();
+    speed_dropouts(run, min_speed, report);
     let slow: Vec<bool> = run.speed.iter().map(|v| *v < min_speed).collect();
     let mut masked = vec![false; n];
     for &i in &run.masked {

@@ -41,6 +41,11 @@
 //!   - the noise of a quantised channel (more than 1 % of its successive
 //!     samples equal) is at least its step/√12, so `σ_d` is at least
 //!     step/√6: a sample one count from its neighbours is no spike.
+//!   - a speed read as exactly 0 for at most [`MAX_ZERO_RUN`] samples
+//!     between samples at `min_speed` or faster, from which no car could
+//!     have stopped within one interval nor started again within one
+//!     (beyond 1.5 g both ways, `speed_dropout.rs`), is a zero read too,
+//!     found before the slow spans, which it would otherwise split;
 //! - Inputs that drive the replay (steer, speed) are repaired by linear
 //!   interpolation in time across the glitch, so the replay is not kicked;
 //!   in response channels (yaw rate, ay, beta) the sample is masked: left out
@@ -70,6 +75,7 @@ mod moves;
 mod pieces;
 mod report;
 mod settled;
+mod speed_dropout;
 #[cfg(test)]
 mod test_signals;
 

@@ -112,7 +112,7 @@ impl Response {
                 beta.to_degrees()
             )),
             Response::NotSettled => Some(
-                "not settled by the end of the step (the car diverges from a steady turn); no handling response, metrics left empty"
+                "not settled by the end of the step (a response slower than the step is long, or one that diverges from a steady turn: a longer step tells them apart); no handling response, metrics left empty"
                     .into(),
             ),
             Response::NoSteadyState => Some("no steady state; metrics left empty".into()),

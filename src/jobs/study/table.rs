@@ -104,7 +104,7 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
     }
     if s.not_settled > 0 {
         kinds.push(format!(
-            "{} do not settle by the end of the step (diverging from a steady turn, as an oversteering car past its critical speed does)",
+            "{} do not settle by the end of the step (slower than the step is long, or diverging from a steady turn: a longer step tells them apart)",
             s.not_settled
         ));
     }

@@ -204,7 +204,7 @@ pub(crate) fn separatrices(
 }
 
 /// Length of an arrowhead along the flow, in box half-widths.
-pub const ARROW_LENGTH: f64 = 0.05;
+pub const ARROW_LENGTH: f64 = 0.08;
 
 /// An arrowhead on an orbit: its tip and two barbs, (β, r) in rad, rad/s;
 /// the tip lies on the orbit, the barbs behind it, so that it points the

@@ -270,15 +270,19 @@ pub fn phase_portrait(
     .save(path)
 }
 
+/// Palette index of the arrowheads: the trajectories' hue, dark (in their
+/// own light colour, one pixel wide, they could not be seen).
+const ARROWHEAD: usize = 0;
+
 /// The trajectories' arrowheads (direction of increasing time), two
-/// segments each from the barbs to the tip, in the trajectories' colour.
+/// segments each from the barbs to the tip.
 fn arrowheads(heads: &[phase::Arrowhead]) -> Series {
     let points: Vec<[f64; 2]> = heads
         .iter()
         .flat_map(|a| [a.barbs[0], a.tip, a.barbs[1], a.tip])
         .collect();
     let (x, y) = in_degrees(&points);
-    Series::line("", &x, &y, stability::TRAJECTORY).styled(Style::Segments)
+    Series::line("", &x, &y, ARROWHEAD).styled(Style::Segments)
 }
 
 /// The search box's yaw-rate bounds as dashed lines across the portrait,

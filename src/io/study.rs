@@ -59,6 +59,7 @@ impl Axis {
                 (0..=n as usize).map(|i| from + i as f64 * step).collect()
             }
             Axis::Count { count, .. } if *count as f64 > MAX => return None,
+            Axis::Count { from, to, count: 1 } if from == to => vec![*from],
             Axis::Count { from, to, count } if *count >= 2 => (0..*count)
                 .map(|i| from + (to - from) * i as f64 / (*count - 1) as f64)
                 .collect(),
@@ -345,8 +346,10 @@ impl Values<'_> {
             self.error(ParamError::without_value(key, ParamReason::TooManyValues))
         })?;
         if let Axis::Count { from, to, count: 1 } = *axis {
-            let why = ParamReason::CountOfOneTwoEnds(from, to);
-            return Err(self.error(ParamError::without_value(&format!("{key}.count"), why)));
+            if from != to {
+                let why = ParamReason::CountOfOneTwoEnds(from, to);
+                return Err(self.error(ParamError::without_value(&format!("{key}.count"), why)));
+            }
         }
         if let Some((i, &x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x)) {
             let at = match axis {

@@ -1,12 +1,11 @@
 //! Step-steer metrics of a measured run as a logger wrote it: the run is
 //! cleaned ([`crate::measured::clean`]: standstills, crawling and glitches),
 //! and of its moving pieces, longest first, the first that holds a steer
-//! step is measured ([`step_metrics`]): a step held still before it over the
-//! initial window and held after it (not a sweep: [`check_step_shape`]); the others are listed with the reason
-//! they were left out. A run without `ay` gets the yaw-rate metrics (the
-//! lateral-acceleration ones are `None`). The steer's 10–90 % rise time is
-//! reported and checked against ISO 7401, which asks for at most 0.15 s.
-//! Units: SI, rad, s.
+//! step is measured ([`step_metrics`], on one uniform grid: `uniform.rs`): a
+//! step held still over the initial window and after (not a sweep:
+//! [`check_step_shape`]); the others are listed with why they were left
+//! out. A run without `ay` gets the yaw-rate metrics only. The steer's
+//! 10–90 % rise is checked against ISO 7401's 0.15 s. Units: SI, rad, s.
 
 use super::step_shape::{check_steer_is_a_step, check_step_shape, last_crossing};
 use super::{step_metrics, MetricSettings, StepMetrics};
@@ -17,7 +16,6 @@ use crate::measured::clean::{
 };
 use crate::measured::MeasuredRun;
 use serde::Serialize;
-
 /// ISO 7401's limit on the steer's 10–90 % rise, s.
 pub(crate) const ISO_7401_RISE: f64 = 0.15;
 
@@ -362,6 +360,7 @@ pub struct MeasuredMetrics {
 
 mod ay_check;
 mod steady_advice;
+mod uniform;
 pub(crate) use ay_check::AY_METRICS;
 pub use ay_check::{AyCheck, AY_CHECKED_FROM, AY_CHECK_SAMPLES, AY_DISAGREES};
 
@@ -478,7 +477,7 @@ pub fn measured_step_metrics(
         &CleanSettings::single(min_speed),
         &mut cleaning,
         |piece, found| {
-            let p = fill_masked_by_channel(piece, &found.glitches);
+            let p = uniform::uniform(fill_masked_by_channel(piece, &found.glitches));
             check_steer_is_a_step(&p.t, &p.steer)
                 .and_then(|()| {
                     step_metrics(
@@ -533,6 +532,7 @@ pub fn measured_step_metrics(
     };
     let steer_rise_time = steer_rise(&filled, &metrics, settings);
     let mut warnings = Vec::new();
+    warnings.extend(uniform::said(&piece.t));
     warnings.extend(rise_said(steer_rise_time, median_interval(&piece.t)));
     // The piece's median speed: a crawl is said, as a slide is.
     let mut speeds: Vec<f64> = piece

@@ -82,9 +82,17 @@ pub(super) fn not_handling_line(s: &StudySummary) -> Option<String> {
         let lowest = s
             .lowest_critical_speed
             .map_or_else(String::new, |u| format!(", the lowest {u:.2} m/s"));
+        let (are, they, speed) = match s.unstable {
+            1 => ("1 is", "it oversteers", "its critical speed"),
+            _ => ("", "they oversteer", "their critical speed"),
+        };
+        let count = if are.is_empty() {
+            format!("{} are", s.unstable)
+        } else {
+            are.to_string()
+        };
         kinds.push(format!(
-            "{} are unstable: they oversteer (K < 0) past their critical speed sqrt(-l/K){lowest}, on tyres with no friction limit, so the response diverges",
-            s.unstable
+            "{count} unstable: {they} (K < 0) past {speed} sqrt(-l/K){lowest}, on tyres with no friction limit, so the response diverges"
         ));
     }
     if s.sliding > 0 {

@@ -1,0 +1,131 @@
+//! A measured piece whose logger changed its rate (`FORMATS.md` allows a
+//! varying rate) is put on one uniform grid before its metrics: the
+//! low-pass filter and the windows are designed for one sample interval,
+//! and at the median interval of a log at 100 Hz, then 1000 Hz, the filter
+//! ran ten times too slow over the first part (a response time of 0.261 s
+//! read for 0.132 s, without a word). The grid is the piece's finest
+//! local interval; each channel is interpolated linearly between samples,
+//! which adds no information to the slower part and keeps the faster part's.
+//! A rate is a change when the local median intervals (over
+//! [`LOCAL`] intervals each side) differ by more than a factor [`CHANGE`]:
+//! a logger's jitter, even ±3 ms at 100 Hz, moves them by less. Times in s.
+
+use crate::measured::clean::median;
+use crate::measured::MeasuredRun;
+
+/// Intervals on each side of one whose median is its local interval.
+const LOCAL: usize = 5;
+
+/// Ratio of the longest to the shortest local interval above which the
+/// rate is said to change.
+const CHANGE: f64 = 2.0;
+
+/// The shortest and longest local intervals of `t`, where they differ by
+/// more than [`CHANGE`].
+fn rate_change(t: &[f64]) -> Option<(f64, f64)> {
+    let dt: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut buf = Vec::with_capacity(2 * LOCAL + 1);
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0_f64);
+    for k in 0..dt.len() {
+        buf.clear();
+        buf.extend_from_slice(&dt[k.saturating_sub(LOCAL)..(k + LOCAL + 1).min(dt.len())]);
+        let m = median(&mut buf);
+        (lo, hi) = (lo.min(m), hi.max(m));
+    }
+    (lo > 0.0 && hi > CHANGE * lo).then_some((lo, hi))
+}
+
+/// What [`uniform`] did to a piece of times `t`, said: nothing where its
+/// rate does not change.
+pub(super) fn said(t: &[f64]) -> Option<String> {
+    let (lo, hi) = rate_change(t)?;
+    Some(format!(
+        "the log's rate changes within the piece (from {:.0} Hz to {:.0} Hz): its samples are interpolated linearly onto one {:.0} Hz grid for the filter, the windows and the metrics",
+        1.0 / hi,
+        1.0 / lo,
+        1.0 / lo
+    ))
+}
+
+/// `p` on a uniform grid at its shortest local interval, where its rate
+/// changes; else `p` itself.
+pub(super) fn uniform(p: MeasuredRun) -> MeasuredRun {
+    let Some((dt, _)) = rate_change(&p.t) else {
+        return p;
+    };
+    let (t0, t1) = (p.t[0], p.t[p.t.len() - 1]);
+    let n = ((t1 - t0) / dt + 1e-9).floor() as usize;
+    let grid: Vec<f64> = (0..=n).map(|i| t0 + i as f64 * dt).collect();
+    let at = |x: &[f64]| -> Vec<f64> {
+        grid.iter()
+            .map(|&t| {
+                let j = p.t.partition_point(|&s| s <= t).clamp(1, p.t.len() - 1);
+                let (ta, tb) = (p.t[j - 1], p.t[j]);
+                let w = ((t - ta) / (tb - ta)).clamp(0.0, 1.0);
+                x[j - 1] + w * (x[j] - x[j - 1])
+            })
+            .collect()
+    };
+    let opt = |x: &Option<Vec<f64>>| x.as_deref().map(at);
+    MeasuredRun {
+        path: p.path.clone(),
+        speed: at(&p.speed),
+        steer: at(&p.steer),
+        yaw_rate: at(&p.yaw_rate),
+        ay: opt(&p.ay),
+        beta: opt(&p.beta),
+        roll: opt(&p.roll),
+        bank: opt(&p.bank),
+        ax: opt(&p.ax),
+        // The masked samples were filled before.
+        masked: Vec::new(),
+        t: grid,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rate_that_changes_is_found_and_jitter_is_not() {
+        let mut t: Vec<f64> = (0..200).map(|i| f64::from(i) * 0.01).collect();
+        t.extend((1..=1000).map(|i| 1.99 + f64::from(i) * 0.001));
+        let (lo, hi) = rate_change(&t).unwrap();
+        assert!(
+            (lo - 0.001).abs() < 1e-9 && (hi - 0.01).abs() < 1e-9,
+            "{lo} {hi}"
+        );
+        // ±3 ms of jitter on a 100 Hz log: no change.
+        let jittered: Vec<f64> = (0..500)
+            .map(|i| f64::from(i) * 0.01 + 0.003 * (f64::from(i) * 2.39).sin())
+            .collect();
+        assert_eq!(rate_change(&jittered), None);
+    }
+
+    #[test]
+    fn a_line_is_resampled_onto_the_finest_grid_exactly() {
+        let mut t: Vec<f64> = (0..100).map(|i| f64::from(i) * 0.05).collect();
+        t.extend((1..=500).map(|i| 4.95 + f64::from(i) * 0.005));
+        let line: Vec<f64> = t.iter().map(|t| 2.0 * t + 1.0).collect();
+        let run = MeasuredRun {
+            path: "x.csv".into(),
+            t: t.clone(),
+            speed: vec![20.0; t.len()],
+            steer: line.clone(),
+            yaw_rate: line.clone(),
+            ay: None,
+            beta: None,
+            roll: None,
+            bank: None,
+            ax: None,
+            masked: Vec::new(),
+        };
+        let u = uniform(run);
+        assert_eq!(u.t.len(), 1491);
+        for (t, r) in u.t.iter().zip(&u.yaw_rate) {
+            assert!((r - (2.0 * t + 1.0)).abs() < 1e-9, "{t} {r}");
+        }
+        assert!(u.t.windows(2).all(|w| ((w[1] - w[0]) - 0.005).abs() < 1e-9));
+    }
+}

@@ -68,6 +68,20 @@ impl Axis {
     }
 }
 
+/// The first value of `v` that an earlier one repeats, with its index:
+/// sorted once (an axis may hold up to a million values), not compared
+/// pairwise.
+fn repeated(v: &[f64]) -> Option<(usize, f64)> {
+    let mut order: Vec<usize> = (0..v.len()).collect();
+    order.sort_by(|&a, &b| v[a].total_cmp(&v[b]).then(a.cmp(&b)));
+    order
+        .windows(2)
+        .filter(|w| v[w[0]] == v[w[1]])
+        .map(|w| w[1])
+        .min()
+        .map(|i| (i, v[i]))
+}
+
 /// The map grid.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -351,7 +365,7 @@ impl Values<'_> {
                 return Err(self.error(ParamError::without_value(&format!("{key}.count"), why)));
             }
         }
-        if let Some((i, &x)) = v.iter().enumerate().find(|(i, x)| v[..*i].contains(x)) {
+        if let Some((i, x)) = repeated(&v) {
             let at = match axis {
                 Axis::List(_) => format!("{key}[{i}]"),
                 _ => key.to_string(),
